@@ -1,0 +1,253 @@
+//! Bounding-sphere hierarchy (BSH) over light range spheres (talk: "Build
+//! Bounding Sphere Hierarchy", "Improving tree traversal & shading").
+//!
+//! - **Build** once over [`LightBound`]s. Split rule: top-down, each node's
+//!   lights are split at the *median* of their centres along the longest axis
+//!   of the centres' bounding box (a balanced binary tree, depth
+//!   `⌈log₂ n⌉`, one light per leaf). The order of the centres, not the
+//!   radii, decides the tree, so it stays valid when the radii change.
+//! - **Refit** every frame/pass for new random ranges in O(n): leaves become
+//!   `(c, R + r)`; each inner node the (f32-conservative) union of its two
+//!   children, visited in reverse pre-order (children before parents).
+//! - **Layout**: a flat array in depth-first pre-order. Each [`BshNode`] has
+//!   `child` (its first child, [`BSH_NONE`] for leaves) and `next` (the node
+//!   after its subtree, [`BSH_NONE`] at the end), so traversal is the talk's
+//!   stackless loop:
+//!   `i = 0; while i != NONE { if hit(i) { if leaf { visit; i = next } else { i = child } } else { i = next } }`.
+//! - **Queries** return exactly the lights whose own range sphere passes the
+//!   test (leaf test = brute-force test), because every inner sphere
+//!   contains its children in f32 (see [`crate::sphere`]).
+
+use crate::light::LightBound;
+use crate::sphere::{Aabb, Sphere};
+use crate::wgsl::*;
+use crate::BshError;
+use alloc::vec::Vec;
+use glam::Vec3;
+
+crate::shared! {
+    /// "No node" / "no light" marker in [`BshNode`] links.
+    pub const BSH_NONE: u32 = 4294967295;
+
+    /// One node of the flat hierarchy; 32 bytes, the same layout in Rust
+    /// (`#[repr(C)]`) and WGSL storage buffers.
+    pub struct BshNode {
+        /// Bounding-sphere centre.
+        pub center: vec3f,
+        /// Bounding-sphere radius (may be +∞).
+        pub radius: f32,
+        /// First child (always `self + 1`), or `BSH_NONE` for a leaf.
+        pub child: u32,
+        /// Next node after this subtree in pre-order, or `BSH_NONE`.
+        pub next: u32,
+        /// Light index for a leaf, `BSH_NONE` for an inner node.
+        pub light: u32,
+        /// Padding to 32 bytes.
+        pub pad: u32,
+    }
+}
+
+/// Bounding-sphere hierarchy; see the module docs.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Bsh {
+    nodes: Vec<BshNode>,
+    bounds: Vec<LightBound>,
+}
+
+impl Bsh {
+    /// Builds the tree over `bounds` (one per light, in light order). Every
+    /// centre must be finite and every extent finite and `≥ 0`; such input is
+    /// rejected here, before it can reach the tree. Leaf radii start at the
+    /// extents (random range 0) until [`Bsh::refit`].
+    pub fn build(bounds: &[LightBound]) -> Result<Self, BshError> {
+        if bounds.len() >= BSH_NONE as usize / 2 {
+            return Err(BshError::TooManyLights(bounds.len()));
+        }
+        for (i, b) in bounds.iter().enumerate() {
+            if !b.center.is_finite() {
+                return Err(BshError::NonFiniteCenter(i));
+            }
+            if !(b.extent.is_finite() && b.extent >= 0.0) {
+                return Err(BshError::BadExtent(i, b.extent));
+            }
+        }
+        let mut bsh = Bsh { nodes: Vec::with_capacity(2 * bounds.len()), bounds: bounds.to_vec() };
+        if !bounds.is_empty() {
+            let mut idx: Vec<u32> = (0..bounds.len() as u32).collect();
+            bsh.emit(&mut idx, BSH_NONE);
+        }
+        bsh.refit_with(|_| 0.0);
+        Ok(bsh)
+    }
+
+    /// Emits the subtree over `idx` in pre-order; `next` is the link to
+    /// store in the subtree's root.
+    fn emit(&mut self, idx: &mut [u32], next: u32) {
+        let me = self.nodes.len() as u32;
+        if idx.len() == 1 {
+            let c = self.bounds[idx[0] as usize].center;
+            self.nodes.push(BshNode { center: c, radius: 0.0, child: BSH_NONE, next, light: idx[0], pad: 0 });
+            return;
+        }
+        self.nodes.push(BshNode { center: Vec3::ZERO, radius: 0.0, child: me + 1, next, light: BSH_NONE, pad: 0 });
+        let b = idx.iter().fold(Aabb::EMPTY, |b, &i| b.grow(self.bounds[i as usize].center));
+        let ext = b.max - b.min;
+        let axis = if ext.x >= ext.y && ext.x >= ext.z { 0 } else if ext.y >= ext.z { 1 } else { 2 };
+        let mid = idx.len() / 2;
+        let bounds = &self.bounds;
+        idx.select_nth_unstable_by(mid, |&a, &b| {
+            bounds[a as usize].center[axis].total_cmp(&bounds[b as usize].center[axis])
+        });
+        let (left, right) = idx.split_at_mut(mid);
+        // The right child's index is known only after the left subtree:
+        // a subtree over m lights has 2m − 1 nodes.
+        let right_root = me + 1 + (2 * left.len() as u32 - 1);
+        self.emit(left, right_root);
+        self.emit(right, next);
+    }
+
+    /// Refits every sphere for new squared random ranges, one per light
+    /// (`r2[i]` for light `i`, as from [`crate::range::random_range2`]).
+    /// O(n). `r2` must have one finite-or-+∞, non-negative value per light.
+    pub fn refit(&mut self, r2: &[f32]) -> Result<(), BshError> {
+        if r2.len() != self.bounds.len() {
+            return Err(BshError::RangeCount { expected: self.bounds.len(), got: r2.len() });
+        }
+        if let Some(i) = r2.iter().position(|r| !(*r >= 0.0)) {
+            return Err(BshError::BadRange(i, r2[i]));
+        }
+        self.refit_with(|i| r2[i]);
+        Ok(())
+    }
+
+    fn refit_with(&mut self, r2: impl Fn(usize) -> f32) {
+        for i in (0..self.nodes.len()).rev() {
+            let n = self.nodes[i];
+            let s = if n.child == BSH_NONE {
+                self.bounds[n.light as usize].range_sphere(r2(n.light as usize))
+            } else {
+                let l = self.nodes[n.child as usize];
+                let r = self.nodes[l.next as usize];
+                Sphere::new(l.center, l.radius).union(&Sphere::new(r.center, r.radius))
+            };
+            self.nodes[i].center = s.center;
+            self.nodes[i].radius = s.radius;
+        }
+    }
+
+    /// The flat node array (pre-order; upload as-is to the GPU).
+    pub fn nodes(&self) -> &[BshNode] {
+        &self.nodes
+    }
+
+    /// Number of lights.
+    pub fn len(&self) -> usize {
+        self.bounds.len()
+    }
+
+    /// `true` when built over no light.
+    pub fn is_empty(&self) -> bool {
+        self.bounds.is_empty()
+    }
+
+    /// The current range sphere of light `i` (as its leaf holds it).
+    pub fn light_sphere(&self, i: usize) -> Option<Sphere> {
+        self.nodes.iter().find(|n| n.light == i as u32).map(|n| Sphere::new(n.center, n.radius))
+    }
+
+    /// The talk's stackless traversal: calls `visit(light)` for every leaf
+    /// whose sphere passes `hit`, testing inner nodes with the same `hit`
+    /// (which must be monotone: a sphere containing one that passes, passes).
+    pub fn traverse(&self, mut hit: impl FnMut(Vec3, f32) -> bool, mut visit: impl FnMut(u32)) {
+        let mut i = if self.nodes.is_empty() { BSH_NONE } else { 0 };
+        while i != BSH_NONE {
+            let n = &self.nodes[i as usize];
+            if hit(n.center, n.radius) {
+                if n.child == BSH_NONE {
+                    visit(n.light);
+                    i = n.next;
+                } else {
+                    i = n.child;
+                }
+            } else {
+                i = n.next;
+            }
+        }
+    }
+
+    /// Lights whose range sphere contains `x`.
+    pub fn for_each_containing(&self, x: Vec3, visit: impl FnMut(u32)) {
+        self.traverse(|c, r| crate::sphere::sphere_contains_point(c, r, x), visit);
+    }
+
+    /// Lights whose range sphere overlaps sphere `s`.
+    pub fn for_each_overlapping_sphere(&self, s: Sphere, visit: impl FnMut(u32)) {
+        self.traverse(|c, r| crate::sphere::sphere_overlaps_sphere(c, r, s.center, s.radius), visit);
+    }
+
+    /// Lights whose range sphere overlaps box `b`.
+    pub fn for_each_overlapping_aabb(&self, b: Aabb, visit: impl FnMut(u32)) {
+        self.traverse(|c, r| crate::sphere::sphere_overlaps_aabb(c, r, b.min, b.max), visit);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pt(x: f32, y: f32, z: f32) -> LightBound {
+        LightBound { center: Vec3::new(x, y, z), extent: 0.0 }
+    }
+
+    #[test]
+    fn links_form_preorder() {
+        let b: Vec<_> = (0..7).map(|i| pt(i as f32, 0.0, 0.0)).collect();
+        let t = Bsh::build(&b).unwrap();
+        let n = t.nodes();
+        assert_eq!(n.len(), 13);
+        assert_eq!(n[0].next, BSH_NONE);
+        for (i, node) in n.iter().enumerate() {
+            if node.child != BSH_NONE {
+                assert_eq!(node.child, i as u32 + 1);
+                assert_eq!(node.light, BSH_NONE);
+            } else {
+                assert!(node.light < 7);
+            }
+        }
+        // Every light appears in exactly one leaf.
+        let mut seen = [0; 7];
+        for node in n.iter().filter(|n| n.child == BSH_NONE) {
+            seen[node.light as usize] += 1;
+        }
+        assert_eq!(seen, [1; 7]);
+    }
+
+    #[test]
+    fn empty_and_single() {
+        let t = Bsh::build(&[]).unwrap();
+        let mut hits = 0;
+        t.for_each_containing(Vec3::ZERO, |_| hits += 1);
+        assert_eq!(hits, 0);
+        let mut t = Bsh::build(&[pt(1.0, 2.0, 3.0)]).unwrap();
+        t.refit(&[4.0]).unwrap();
+        let mut got = Vec::new();
+        t.for_each_containing(Vec3::new(1.0, 2.0, 4.5), |i| got.push(i));
+        assert_eq!(got, [0]);
+        got.clear();
+        t.for_each_containing(Vec3::new(1.0, 2.0, 5.5), |i| got.push(i));
+        assert!(got.is_empty());
+    }
+
+    #[test]
+    fn rejects_bad_input() {
+        assert_eq!(Bsh::build(&[pt(f32::NAN, 0.0, 0.0)]), Err(BshError::NonFiniteCenter(0)));
+        assert_eq!(Bsh::build(&[pt(0.0, 0.0, 0.0), pt(f32::INFINITY, 0.0, 0.0)]), Err(BshError::NonFiniteCenter(1)));
+        let neg = LightBound { center: Vec3::ZERO, extent: -1.0 };
+        assert!(matches!(Bsh::build(&[neg]), Err(BshError::BadExtent(0, _))));
+        let mut t = Bsh::build(&[pt(0.0, 0.0, 0.0)]).unwrap();
+        assert!(t.refit(&[]).is_err());
+        assert!(t.refit(&[f32::NAN]).is_err());
+        assert!(t.refit(&[-1.0]).is_err());
+        assert!(t.refit(&[f32::INFINITY]).is_ok());
+    }
+}

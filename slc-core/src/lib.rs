@@ -1,0 +1,194 @@
+//! # slc-core
+//!
+//! The math of *stochastic light culling* (Tokuyoshi & Harada, "Stochastic
+//! Light Culling", JCGT 5(1), 2016), written once: `#![no_std]` + `alloc`,
+//! glam with `libm`, `rand_core`. Both slc backends (rayon CPU, wgpu GPU) and
+//! engines that embed slc call this crate; the GPU gets the very same
+//! functions as WGSL text ([`wgsl::library`]).
+//!
+//! | module | holds |
+//! |---|---|
+//! | [`range`] | RR probability `min(r_t²/d², 1)`, error-bound threshold range, random range `r_t²/(1−ξ)`, keep test, `1/p` weight |
+//! | [`xi`] | one ξ per light per frame/pass, from a `rand_core::RngCore` or a hash |
+//! | [`light`] | point, VPL, spot, IES and triangle lights: peak intensity, intensity toward a direction, range-sphere bound |
+//! | [`ies`] | LM-63 parser and bilinear candela lookup with all horizontal symmetries |
+//! | [`sphere`] | minimal spheres (triangle, point set), sphere union, sphere–point/sphere/AABB tests |
+//! | [`bsh`] | bounding-sphere hierarchy: build, O(n) refit, stackless `child`/`next` traversal |
+//! | [`reservoir`] | k-slot Algorithm R and a weighted variant |
+//! | [`estimator`] | SLC, clamped-range and unculled sums at one shading point |
+//! | [`wgsl`] | the shared-code macro, WGSL built-ins in Rust, the assembled WGSL library |
+//!
+//! ```
+//! use slc_core::range::{RangeParams, random_range2, slc_keep, slc_weight};
+//! use glam::Vec3;
+//!
+//! // A light of peak intensity 10 W/sr, error bound 0.01, exposure 1.
+//! let params = RangeParams::new(0.01, 1.0).unwrap();
+//! let rt2 = params.threshold_range2(Vec3::splat(10.0));
+//! // Its random range for ξ = 0.75 is twice as far as r_t (r² = 4 r_t²).
+//! let r2 = random_range2(rt2, 0.75);
+//! assert!((r2 / rt2 - 4.0).abs() < 1e-6);
+//! // A point at d² = 2 r_t² is kept and weighted by 1/p = d²/r_t² = 2.
+//! let d2 = 2.0 * rt2;
+//! assert!(slc_keep(r2, d2));
+//! assert!((slc_weight(rt2, d2) - 2.0).abs() < 1e-6);
+//! ```
+#![no_std]
+#![deny(missing_docs)]
+
+extern crate alloc;
+
+#[macro_use]
+pub mod wgsl;
+
+pub mod bsh;
+pub mod estimator;
+pub mod ies;
+pub mod light;
+pub mod range;
+pub mod reservoir;
+pub mod sphere;
+pub mod xi;
+
+pub use glam;
+
+use thiserror::Error;
+
+/// Invalid range settings or random numbers.
+#[derive(Clone, Copy, Debug, PartialEq, Error)]
+pub enum RangeError {
+    /// ε must be finite and `> 0`.
+    #[error("error bound must be finite and > 0, got {0}")]
+    ErrorBound(f32),
+    /// E must be finite and `> 0`.
+    #[error("exposure must be finite and > 0, got {0}")]
+    Exposure(f32),
+    /// α must be finite and `> 0`.
+    #[error("alpha must be finite and > 0, got {0}")]
+    Alpha(f32),
+    /// ξ must lie in `[0, 1)`.
+    #[error("xi must lie in [0, 1), got {0}")]
+    Xi(f32),
+}
+
+/// Invalid light parameters.
+#[derive(Clone, Copy, Debug, PartialEq, Error)]
+pub enum LightError {
+    /// NaN or ±∞ in a field.
+    #[error("light {field} is not finite")]
+    NonFinite {
+        /// The field.
+        field: &'static str,
+    },
+    /// A negative intensity, flux or radiance channel.
+    #[error("light {field} has a negative channel")]
+    Negative {
+        /// The field.
+        field: &'static str,
+    },
+    /// A direction of zero length.
+    #[error("light {field} has zero length")]
+    ZeroDirection {
+        /// The field.
+        field: &'static str,
+    },
+    /// Spot cone half-angles outside `0 ≤ inner ≤ outer ≤ π`.
+    #[error("spot cone angles must satisfy 0 <= inner <= outer <= pi, got inner {inner}, outer {outer}")]
+    ConeAngles {
+        /// Inner half-angle (radians).
+        inner: f32,
+        /// Outer half-angle (radians).
+        outer: f32,
+    },
+    /// A triangle emitter with zero area (repeated or collinear vertices).
+    #[error("triangle light has zero area (repeated or collinear vertices)")]
+    DegenerateTriangle,
+    /// An IES profile that is not type C.
+    #[error("IES photometric type {0:?} is not supported for lights (type C only)")]
+    UnsupportedPhotometry(ies::PhotometricType),
+}
+
+/// Invalid input to the bounding-sphere hierarchy.
+#[derive(Clone, Copy, Debug, PartialEq, Error)]
+pub enum BshError {
+    /// Light `i` has a NaN or infinite centre.
+    #[error("light {0} has a non-finite centre")]
+    NonFiniteCenter(usize),
+    /// Light `i` has a negative or non-finite extent.
+    #[error("light {0} has an invalid extent {1} (must be finite and >= 0)")]
+    BadExtent(usize, f32),
+    /// Light `i` has a negative or NaN squared range.
+    #[error("light {0} has an invalid squared range {1} (must be >= 0 or +inf)")]
+    BadRange(usize, f32),
+    /// Refit with the wrong number of ranges.
+    #[error("refit needs {expected} ranges, got {got}")]
+    RangeCount {
+        /// Lights in the tree.
+        expected: usize,
+        /// Ranges given.
+        got: usize,
+    },
+    /// More lights than 32-bit links can address.
+    #[error("{0} lights exceed the hierarchy's 32-bit index space")]
+    TooManyLights(usize),
+}
+
+/// An LM-63 parse error with the (1-based) line it was found on.
+#[derive(Clone, Debug, PartialEq, Error)]
+#[error("IES line {line}: {kind}")]
+pub struct IesError {
+    /// 1-based line number.
+    pub line: usize,
+    /// What went wrong.
+    pub kind: IesErrorKind,
+}
+
+/// What went wrong while parsing an LM-63 file.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum IesErrorKind {
+    /// No `TILT=` line.
+    #[error("no TILT= line")]
+    MissingTilt,
+    /// The file ended early.
+    #[error("file ends before the {expected}")]
+    UnexpectedEnd {
+        /// What was expected.
+        expected: &'static str,
+    },
+    /// A token that is not a finite number.
+    #[error("{field}: '{token}' is not a finite number")]
+    BadNumber {
+        /// The field.
+        field: &'static str,
+        /// The token.
+        token: alloc::string::String,
+    },
+    /// A number outside its allowed range.
+    #[error("{field}: {value} is out of range")]
+    OutOfRange {
+        /// The field.
+        field: &'static str,
+        /// The value.
+        value: f32,
+    },
+    /// Angles not strictly increasing.
+    #[error("{field} are not strictly increasing")]
+    NotIncreasing {
+        /// The field.
+        field: &'static str,
+    },
+    /// A type C horizontal range that matches no LM-63 symmetry.
+    #[error("type C horizontal angles {first}..{last} match no LM-63 symmetry (0, 0-90, 0-180, 90-270, 0-360)")]
+    HorizontalRange {
+        /// First angle.
+        first: f32,
+        /// Last angle.
+        last: f32,
+    },
+    /// More candela values than [`ies::MAX_VALUES`].
+    #[error("{values} candela values exceed the limit")]
+    TooLarge {
+        /// Values requested.
+        values: usize,
+    },
+}

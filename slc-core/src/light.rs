@@ -1,0 +1,444 @@
+//! Light types and their bounds (DESIGN.md §1 "Light types"; talk: "Variety
+//! of light types", "Area light bound").
+//!
+//! Every light gives its RGB peak radiant intensity `I_max` (what sets its
+//! threshold range), its RGB intensity toward a unit direction `w` (pointing
+//! from the light to the receiver), and its [`LightBound`]: a centre and an
+//! extent `R` such that the light's range sphere for random range `r` is
+//! centred there with radius `R + r` (points: `R = 0`; triangles: `R` is the
+//! radius of the triangle's minimal sphere).
+
+use crate::ies::IesProfile;
+use crate::sphere::Sphere;
+use crate::wgsl::*;
+use crate::LightError;
+use alloc::sync::Arc;
+use glam::Vec3;
+
+crate::shared! {
+    /// 1/π.
+    pub const INV_PI: f32 = 0.3183098861837907;
+
+    /// Smallest squared distance used in the `1/d²` fall-off (1 µm² in scene
+    /// metres): the point-light singularity at `d = 0` gives a large finite
+    /// value instead of ∞ on both backends.
+    pub const MIN_D2: f32 = 0.000000000001;
+
+    /// Inverse-square fall-off `1 / max(d², MIN_D2)`.
+    pub fn inverse_square(d2: f32) -> f32 {
+        return 1.0 / max(d2, MIN_D2);
+    }
+
+    /// VPL cosine lobe per unit flux: `I(w)/Φ = max(n·w, 0)/π`, so
+    /// `I_max = Φ/π` (Keller 1997; DESIGN.md §1).
+    pub fn vpl_lobe(n: vec3f, w: vec3f) -> f32 {
+        return max(dot(n, w), 0.0) * INV_PI;
+    }
+
+    /// Spot fall-off: `smoothstep(cos_outer, cos_inner, cos θ)`, a hard edge
+    /// when the two cones coincide.
+    pub fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
+        if cos_inner <= cos_outer {
+            return select(0.0, 1.0, cos_theta >= cos_outer);
+        }
+        let t: f32 = saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
+        return t * t * (3.0 - 2.0 * t);
+    }
+
+    /// Lambertian emitter per unit radiance: `I(w)/L = A · max(n·w, 0)`, so
+    /// `I_max = L·A`.
+    pub fn triangle_lobe(n: vec3f, area: f32, w: vec3f) -> f32 {
+        return area * max(dot(n, w), 0.0);
+    }
+
+    /// Uniform point on triangle (a, b, c) from `u1, u2 ∈ [0, 1)`:
+    /// barycentrics `(1 − √u₁, u₂√u₁)` (pbrt-v3 §13.6.5); pdf = 1/area.
+    pub fn triangle_sample(a: vec3f, b: vec3f, c: vec3f, u1: f32, u2: f32) -> vec3f {
+        let su: f32 = sqrt(u1);
+        let b0: f32 = 1.0 - su;
+        let b1: f32 = u2 * su;
+        return a * b0 + b * b1 + c * (1.0 - b0 - b1);
+    }
+
+    /// Converts an area pdf at `y` to a solid-angle pdf at `x`:
+    /// `pdf_ω = pdf_A · d² / |cos θ_y|` (0 when the emitter is seen edge-on).
+    pub fn area_to_solid_angle_pdf(pdf_area: f32, d2: f32, cos_light: f32) -> f32 {
+        let c: f32 = abs(cos_light);
+        if c <= 0.0 {
+            return 0.0;
+        }
+        return pdf_area * d2 / c;
+    }
+}
+
+/// Centre and extent of a light: its range sphere for random range `r` is
+/// `(center, extent + r)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightBound {
+    /// Sphere centre.
+    pub center: Vec3,
+    /// `R ≥ 0`: 0 for point-like lights, the minimal-sphere radius for
+    /// triangles.
+    pub extent: f32,
+}
+
+impl LightBound {
+    /// The range sphere `(c, R + √r²)` for squared random range `r2`.
+    pub fn range_sphere(&self, r2: f32) -> Sphere {
+        Sphere::new(self.center, self.extent + sqrt(r2))
+    }
+}
+
+fn check_point(field: &'static str, v: Vec3) -> Result<Vec3, LightError> {
+    if v.is_finite() { Ok(v) } else { Err(LightError::NonFinite { field }) }
+}
+
+fn check_rgb(field: &'static str, v: Vec3) -> Result<Vec3, LightError> {
+    if !v.is_finite() {
+        return Err(LightError::NonFinite { field });
+    }
+    if v.min_element() < 0.0 {
+        return Err(LightError::Negative { field });
+    }
+    Ok(v)
+}
+
+fn check_dir(field: &'static str, v: Vec3) -> Result<Vec3, LightError> {
+    check_point(field, v)?;
+    let len = v.length();
+    if !(len > 0.0 && len.is_finite()) {
+        return Err(LightError::ZeroDirection { field });
+    }
+    Ok(v / len)
+}
+
+/// Isotropic point light: `I(w) = I`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PointLight {
+    position: Vec3,
+    intensity: Vec3,
+}
+
+impl PointLight {
+    /// Position (finite) and RGB intensity (finite, ≥ 0).
+    pub fn new(position: Vec3, intensity: Vec3) -> Result<Self, LightError> {
+        Ok(Self { position: check_point("position", position)?, intensity: check_rgb("intensity", intensity)? })
+    }
+    /// Position.
+    pub fn position(&self) -> Vec3 {
+        self.position
+    }
+}
+
+/// Virtual point light: `I(w) = (Φ/π) max(n·w, 0)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vpl {
+    position: Vec3,
+    normal: Vec3,
+    flux: Vec3,
+}
+
+impl Vpl {
+    /// Position, surface normal (normalised here) and RGB flux Φ.
+    pub fn new(position: Vec3, normal: Vec3, flux: Vec3) -> Result<Self, LightError> {
+        Ok(Self {
+            position: check_point("position", position)?,
+            normal: check_dir("normal", normal)?,
+            flux: check_rgb("flux", flux)?,
+        })
+    }
+    /// Position.
+    pub fn position(&self) -> Vec3 {
+        self.position
+    }
+    /// Unit normal.
+    pub fn normal(&self) -> Vec3 {
+        self.normal
+    }
+    /// RGB flux.
+    pub fn flux(&self) -> Vec3 {
+        self.flux
+    }
+}
+
+/// Spot light: `I(w) = I₀ · smoothstep(cos θ_outer, cos θ_inner, d·w)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpotLight {
+    position: Vec3,
+    direction: Vec3,
+    intensity: Vec3,
+    cos_outer: f32,
+    cos_inner: f32,
+}
+
+impl SpotLight {
+    /// Position, axis direction (normalised here), RGB peak intensity `I₀`,
+    /// and the half-angles in radians of the full-intensity cone `inner` and
+    /// of the cut-off cone `outer`, with `0 ≤ inner ≤ outer ≤ π`.
+    pub fn new(position: Vec3, direction: Vec3, intensity: Vec3, inner: f32, outer: f32) -> Result<Self, LightError> {
+        if !(inner.is_finite() && outer.is_finite() && 0.0 <= inner && inner <= outer && outer <= core::f32::consts::PI) {
+            return Err(LightError::ConeAngles { inner, outer });
+        }
+        Ok(Self {
+            position: check_point("position", position)?,
+            direction: check_dir("direction", direction)?,
+            intensity: check_rgb("intensity", intensity)?,
+            cos_outer: libm::cosf(outer),
+            cos_inner: libm::cosf(inner),
+        })
+    }
+    /// Position.
+    pub fn position(&self) -> Vec3 {
+        self.position
+    }
+}
+
+/// IES (LM-63) light: tabulated candela, bilinear lookup (see [`crate::ies`]).
+///
+/// Frame: photometric vertical angle γ = 0 points along `nadir`; the
+/// horizontal angle C = 0 lies along `reference` (made perpendicular to
+/// `nadir` here) and C grows counter-clockwise seen from above, i.e. towards
+/// `reference × nadir`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct IesLight {
+    position: Vec3,
+    nadir: Vec3,
+    reference: Vec3,
+    tint: Vec3,
+    profile: Arc<IesProfile>,
+}
+
+impl IesLight {
+    /// Position, nadir and reference directions, an RGB `tint` that scales
+    /// the candela values (colour and units), and a parsed profile (type C).
+    pub fn new(position: Vec3, nadir: Vec3, reference: Vec3, tint: Vec3, profile: Arc<IesProfile>) -> Result<Self, LightError> {
+        let nadir = check_dir("nadir", nadir)?;
+        let reference = check_dir("reference", reference - nadir * nadir.dot(reference))
+            .map_err(|_| LightError::ZeroDirection { field: "reference (parallel to nadir)" })?;
+        if !profile.is_type_c() {
+            return Err(LightError::UnsupportedPhotometry(profile.photometric_type()));
+        }
+        Ok(Self { position: check_point("position", position)?, nadir, reference, tint: check_rgb("tint", tint)?, profile })
+    }
+    /// Position.
+    pub fn position(&self) -> Vec3 {
+        self.position
+    }
+    /// The profile.
+    pub fn profile(&self) -> &IesProfile {
+        &self.profile
+    }
+    /// Candela toward unit direction `w` (no tint).
+    pub fn candela(&self, w: Vec3) -> f32 {
+        let side = self.reference.cross(self.nadir);
+        crate::ies::ies_candela_dir(self.profile.table(), 0, dot(w, self.nadir), dot(w, self.reference), dot(w, side))
+    }
+}
+
+/// One-sided Lambertian triangle emitter with radiance `L`: `I(w) = L·A·max(n·w, 0)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TriangleLight {
+    v: [Vec3; 3],
+    radiance: Vec3,
+    normal: Vec3,
+    area: f32,
+    bound: LightBound,
+}
+
+impl TriangleLight {
+    /// Vertices (counter-clockwise seen from the emitting side) and RGB
+    /// radiance. Zero-area triangles (repeated or collinear vertices) are
+    /// rejected: they emit nothing and have no normal.
+    pub fn new(a: Vec3, b: Vec3, c: Vec3, radiance: Vec3) -> Result<Self, LightError> {
+        for (f, p) in [("vertex 0", a), ("vertex 1", b), ("vertex 2", c)] {
+            check_point(f, p)?;
+        }
+        let radiance = check_rgb("radiance", radiance)?;
+        let n = (b - a).cross(c - a);
+        let len = n.length();
+        let area = 0.5 * len;
+        if !(area > 0.0 && area.is_finite()) {
+            return Err(LightError::DegenerateTriangle);
+        }
+        let s = Sphere::of_triangle(a, b, c);
+        Ok(Self { v: [a, b, c], radiance, normal: n / len, area, bound: LightBound { center: s.center, extent: s.radius } })
+    }
+    /// Vertices.
+    pub fn vertices(&self) -> [Vec3; 3] {
+        self.v
+    }
+    /// Unit normal.
+    pub fn normal(&self) -> Vec3 {
+        self.normal
+    }
+    /// Area.
+    pub fn area(&self) -> f32 {
+        self.area
+    }
+    /// RGB radiance.
+    pub fn radiance(&self) -> Vec3 {
+        self.radiance
+    }
+    /// Uniform point on the triangle ([`triangle_sample`]); its area pdf is `1/area`.
+    pub fn sample(&self, u1: f32, u2: f32) -> Vec3 {
+        triangle_sample(self.v[0], self.v[1], self.v[2], u1, u2)
+    }
+}
+
+/// Any light slc culls.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Light {
+    /// Point light.
+    Point(PointLight),
+    /// Virtual point light.
+    Vpl(Vpl),
+    /// Spot light.
+    Spot(SpotLight),
+    /// IES light.
+    Ies(IesLight),
+    /// Triangle emitter.
+    Triangle(TriangleLight),
+}
+
+impl Light {
+    /// RGB peak radiant intensity `I_max` per channel: point `I`, VPL `Φ/π`,
+    /// spot `I₀`, IES max candela × tint, triangle `L·A`.
+    pub fn peak(&self) -> Vec3 {
+        match self {
+            Light::Point(l) => l.intensity,
+            Light::Vpl(l) => l.flux * INV_PI,
+            Light::Spot(l) => l.intensity,
+            Light::Ies(l) => l.tint * l.profile.max_candela(),
+            Light::Triangle(l) => l.radiance * l.area,
+        }
+    }
+
+    /// RGB radiant intensity toward unit direction `w` (from the light).
+    pub fn intensity(&self, w: Vec3) -> Vec3 {
+        match self {
+            Light::Point(l) => l.intensity,
+            Light::Vpl(l) => l.flux * vpl_lobe(l.normal, w),
+            Light::Spot(l) => l.intensity * spot_falloff(dot(l.direction, w), l.cos_outer, l.cos_inner),
+            Light::Ies(l) => l.tint * l.candela(w),
+            Light::Triangle(l) => l.radiance * triangle_lobe(l.normal, l.area, w),
+        }
+    }
+
+    /// Centre and extent of the range sphere.
+    pub fn bound(&self) -> LightBound {
+        let point = |p: Vec3| LightBound { center: p, extent: 0.0 };
+        match self {
+            Light::Point(l) => point(l.position),
+            Light::Vpl(l) => point(l.position),
+            Light::Spot(l) => point(l.position),
+            Light::Ies(l) => point(l.position),
+            Light::Triangle(l) => l.bound,
+        }
+    }
+
+    /// Irradiance-like point contribution `I(w)/d²` at `x` for point-like
+    /// lights, with `w` and `d²` measured from the light's position (the
+    /// triangle's bound centre for triangles; path tracers sample a point
+    /// instead). Returns `(contribution, d²)`; at `d = 0` the direction is
+    /// taken as zero (no NaN) and the fall-off is capped by [`MIN_D2`].
+    pub fn contribution_at(&self, x: Vec3) -> (Vec3, f32) {
+        let v = x - self.bound().center;
+        let d2 = dot(v, v);
+        let w = if d2 > 0.0 { v / sqrt(d2) } else { Vec3::ZERO };
+        (self.intensity(w) * inverse_square(d2), d2)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn vpl_peak_and_lobe() {
+        let l = Light::Vpl(Vpl::new(Vec3::ZERO, Vec3::Z * 2.0, Vec3::new(3.0, 6.0, 9.0)).unwrap());
+        assert!((l.peak() - Vec3::new(3.0, 6.0, 9.0) / core::f32::consts::PI).length() < 1e-6);
+        assert!((l.intensity(Vec3::Z) - l.peak()).length() < 1e-6);
+        let w = Vec3::new(1.0, 0.0, 1.0).normalize();
+        assert!((l.intensity(w) - l.peak() * w.z).length() < 1e-6);
+        assert_eq!(l.intensity(-Vec3::Z), Vec3::ZERO);
+    }
+
+    #[test]
+    fn spot_falloff_shape() {
+        let (inner, outer) = (0.2f32, 0.5f32);
+        let s = SpotLight::new(Vec3::ZERO, -Vec3::Y, Vec3::ONE, inner, outer).unwrap();
+        let l = Light::Spot(s);
+        assert_eq!(l.intensity(-Vec3::Y), Vec3::ONE);
+        let at = |a: f32| l.intensity(Vec3::new(libm::sinf(a), -libm::cosf(a), 0.0)).x;
+        assert_eq!(at(0.19), 1.0);
+        assert_eq!(at(0.51), 0.0);
+        let mid = at(0.35);
+        assert!(mid > 0.0 && mid < 1.0);
+        assert!(at(0.3) > at(0.4));
+        assert!(SpotLight::new(Vec3::ZERO, Vec3::Y, Vec3::ONE, 0.6, 0.5).is_err());
+        assert!(SpotLight::new(Vec3::ZERO, Vec3::ZERO, Vec3::ONE, 0.1, 0.5).is_err());
+    }
+
+    #[test]
+    fn triangle_peak_bound_and_lobe() {
+        let t = TriangleLight::new(Vec3::ZERO, Vec3::X * 2.0, Vec3::Y * 2.0, Vec3::new(1.0, 2.0, 3.0)).unwrap();
+        assert_eq!(t.area(), 2.0);
+        assert_eq!(t.normal(), Vec3::Z);
+        let l = Light::Triangle(t);
+        assert_eq!(l.peak(), Vec3::new(2.0, 4.0, 6.0));
+        assert_eq!(l.intensity(-Vec3::Z), Vec3::ZERO);
+        // Right triangle: minimal sphere on the hypotenuse.
+        let b = l.bound();
+        assert!((b.center - Vec3::new(1.0, 1.0, 0.0)).length() < 1e-6);
+        assert!((b.extent - 2f32.sqrt()).abs() < 1e-5);
+        // Talk: radius R + r.
+        let s = b.range_sphere(9.0);
+        assert!((s.radius - (2f32.sqrt() + 3.0)).abs() < 1e-5);
+    }
+
+    #[test]
+    fn triangle_samples_lie_on_triangle() {
+        let t = TriangleLight::new(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::ONE).unwrap();
+        for i in 0..16 {
+            for j in 0..16 {
+                let p = t.sample(i as f32 / 16.0, j as f32 / 16.0);
+                assert!(p.x >= -1e-6 && p.y >= -1e-6 && p.x + p.y <= 1.0 + 1e-6 && p.z == 0.0);
+            }
+        }
+    }
+
+    #[test]
+    fn degenerate_triangles_are_errors() {
+        let e = Vec3::ONE;
+        assert_eq!(TriangleLight::new(Vec3::ZERO, Vec3::ZERO, Vec3::X, e), Err(LightError::DegenerateTriangle));
+        assert_eq!(TriangleLight::new(Vec3::ZERO, Vec3::X, Vec3::X * 2.0, e), Err(LightError::DegenerateTriangle));
+        assert!(TriangleLight::new(Vec3::ZERO, Vec3::X, Vec3::Y, -e).is_err());
+        assert!(TriangleLight::new(Vec3::NAN, Vec3::X, Vec3::Y, e).is_err());
+    }
+
+    #[test]
+    fn bad_inputs_are_typed_errors() {
+        assert!(PointLight::new(Vec3::new(f32::NAN, 0.0, 0.0), Vec3::ONE).is_err());
+        assert!(PointLight::new(Vec3::ZERO, Vec3::new(-1.0, 0.0, 0.0)).is_err());
+        assert!(PointLight::new(Vec3::ZERO, Vec3::splat(f32::INFINITY)).is_err());
+        assert!(Vpl::new(Vec3::ZERO, Vec3::ZERO, Vec3::ONE).is_err());
+        assert!(PointLight::new(Vec3::ZERO, Vec3::splat(f32::MAX)).is_ok());
+    }
+
+    #[test]
+    fn contribution_at_zero_distance_is_finite() {
+        let l = Light::Vpl(Vpl::new(Vec3::ZERO, Vec3::Z, Vec3::ONE).unwrap());
+        let (c, d2) = l.contribution_at(Vec3::ZERO);
+        assert_eq!(d2, 0.0);
+        assert!(c.is_finite());
+        let p = Light::Point(PointLight::new(Vec3::ZERO, Vec3::ONE).unwrap());
+        let (c, _) = p.contribution_at(Vec3::ZERO);
+        assert!(c.is_finite() && c.x == 1.0 / MIN_D2);
+    }
+
+    #[test]
+    fn solid_angle_pdf() {
+        assert_eq!(area_to_solid_angle_pdf(0.5, 4.0, -0.5), 4.0);
+        assert_eq!(area_to_solid_angle_pdf(0.5, 4.0, 0.0), 0.0);
+    }
+}

@@ -1,0 +1,218 @@
+//! Reservoir sampling of in-range lights (talk: "Reservoir sampling
+//! [Vitter85]"; DESIGN.md §1). The GPU cannot store every light a traversal
+//! finds, so it streams them through `k` slots.
+//!
+//! - [`Reservoir`]: Vitter's Algorithm R. After `n` candidates every one is
+//!   held with probability `min(k/n, 1)`, so weighting each held light by
+//!   `max(n/k, 1)` keeps the sum unbiased.
+//! - [`WeightedReservoir`]: `k` independent one-slot weighted reservoirs
+//!   (Chao 1982). Each slot holds candidate `i` with probability `wᵢ/W`;
+//!   a held light's weight is `W/(k·wᵢ)` (beyond the paper).
+//!
+//! Random input is two 32-bit words per candidate; the index draw uses 64
+//! bits so its bias is below `n/2⁶⁴` even for `n` near `u32::MAX`.
+
+use crate::wgsl::*;
+
+crate::shared! {
+    /// High 32 bits of the 64-bit product `a · b`, from 16-bit halves (no
+    /// 64-bit integers in WGSL; no intermediate overflows).
+    pub fn mul_hi_u32(a: u32, b: u32) -> u32 {
+        let a_lo: u32 = a & 65535;
+        let a_hi: u32 = a >> 16;
+        let b_lo: u32 = b & 65535;
+        let b_hi: u32 = b >> 16;
+        let ll: u32 = a_lo * b_lo;
+        let lh: u32 = a_lo * b_hi;
+        let hl: u32 = a_hi * b_lo;
+        let hh: u32 = a_hi * b_hi;
+        let mid: u32 = (ll >> 16) + (lh & 65535) + (hl & 65535);
+        return hh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+    }
+
+    /// `⌊(hi·2³² + lo) · n / 2⁶⁴⌋`: a uniform index in `[0, n)` from 64
+    /// random bits, with bias below `n/2⁶⁴`.
+    pub fn uniform_index(n: u32, hi: u32, lo: u32) -> u32 {
+        let p_lo: u32 = mul_lo_u32(hi, n);
+        let p_hi: u32 = mul_hi_u32(hi, n);
+        let carry_in: u32 = mul_hi_u32(lo, n);
+        if p_lo > 4294967295 - carry_in {
+            return p_hi + 1;
+        }
+        return p_hi;
+    }
+
+    /// Algorithm R: where the `n`-th candidate (counting from 1) goes in a
+    /// `k`-slot reservoir: slot `n − 1` while filling, then a uniform
+    /// `j ∈ [0, n)` replaces slot `j` if `j < k`; returns `k` to discard.
+    pub fn reservoir_slot(n: u32, k: u32, hi: u32, lo: u32) -> u32 {
+        if n <= k {
+            return n - 1;
+        }
+        let j: u32 = uniform_index(n, hi, lo);
+        if j < k {
+            return j;
+        }
+        return k;
+    }
+
+    /// Weight of each held light after `n` candidates: `max(n/k, 1)`.
+    pub fn reservoir_weight(n: u32, k: u32) -> f32 {
+        return max(to_f32(n) / to_f32(k), 1.0);
+    }
+
+    /// Weighted one-slot reservoir: the candidate with weight `w` replaces the
+    /// held one iff `u · W < w`, `W` the running weight sum including `w`,
+    /// `u ∈ [0, 1)`; so it is held at the end with probability `w/W_final`.
+    pub fn weighted_replace(w: f32, w_sum: f32, u: f32) -> bool {
+        return u * w_sum < w;
+    }
+}
+
+/// Algorithm R with `K` slots.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Reservoir<const K: usize> {
+    slots: [u32; K],
+    n: u32,
+}
+
+impl<const K: usize> Default for Reservoir<K> {
+    fn default() -> Self {
+        Self { slots: [0; K], n: 0 }
+    }
+}
+
+impl<const K: usize> Reservoir<K> {
+    const K32: u32 = {
+        assert!(K > 0 && K < u32::MAX as usize);
+        K as u32
+    };
+
+    /// An empty reservoir.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Offers `item` with 64 random bits `(hi, lo)`. After `u32::MAX`
+    /// candidates the count saturates and further items are ignored.
+    pub fn push(&mut self, item: u32, hi: u32, lo: u32) {
+        let Some(n) = self.n.checked_add(1) else { return };
+        self.n = n;
+        let s = reservoir_slot(n, Self::K32, hi, lo);
+        if s < Self::K32 {
+            self.slots[s as usize] = item;
+        }
+    }
+
+    /// Candidates seen.
+    pub fn seen(&self) -> u32 {
+        self.n
+    }
+
+    /// The held items (`min(n, K)` of them).
+    pub fn picks(&self) -> &[u32] {
+        &self.slots[..(self.n as usize).min(K)]
+    }
+
+    /// Weight of each held item, `max(n/K, 1)`.
+    pub fn weight(&self) -> f32 {
+        reservoir_weight(self.n, Self::K32)
+    }
+}
+
+/// `K` independent one-slot weighted reservoirs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WeightedReservoir<const K: usize> {
+    slots: [(u32, f32); K],
+    w_sum: f32,
+}
+
+impl<const K: usize> Default for WeightedReservoir<K> {
+    fn default() -> Self {
+        Self { slots: [(0, 0.0); K], w_sum: 0.0 }
+    }
+}
+
+impl<const K: usize> WeightedReservoir<K> {
+    /// An empty reservoir.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Offers `item` with importance `w` (finite, `> 0`; others are ignored)
+    /// and one uniform `u[s] ∈ [0, 1)` per slot.
+    pub fn push(&mut self, item: u32, w: f32, u: &[f32; K]) {
+        if !(w > 0.0 && w.is_finite()) {
+            return;
+        }
+        self.w_sum += w;
+        for (slot, &u) in self.slots.iter_mut().zip(u) {
+            if weighted_replace(w, self.w_sum, u) {
+                *slot = (item, w);
+            }
+        }
+    }
+
+    /// Sum of offered weights `W`.
+    pub fn total_weight(&self) -> f32 {
+        self.w_sum
+    }
+
+    /// Each slot's item and its weight `W/(K·wᵢ)`; empty before any push.
+    pub fn picks(&self) -> impl Iterator<Item = (u32, f32)> + '_ {
+        let w = self.w_sum;
+        let k = K as f32;
+        self.slots.iter().filter(move |_| w > 0.0).map(move |&(i, wi)| (i, w / (k * wi)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mul_hi_matches_u64() {
+        let vals = [0u32, 1, 2, 65535, 65536, 0x1234_5678, 0xdead_beef, u32::MAX - 1, u32::MAX];
+        for &a in &vals {
+            for &b in &vals {
+                assert_eq!(mul_hi_u32(a, b), ((a as u64 * b as u64) >> 32) as u32, "{a} {b}");
+            }
+        }
+    }
+
+    #[test]
+    fn uniform_index_matches_u128_reference() {
+        let ns = [1u32, 2, 3, 1000, 1 << 24, u32::MAX - 1, u32::MAX];
+        let bits = [(0u32, 0u32), (u32::MAX, u32::MAX), (0x8000_0000, 0), (0x1234_5678, 0x9abc_def0), (u32::MAX, 0)];
+        for &n in &ns {
+            for &(hi, lo) in &bits {
+                let r = (((hi as u128) << 32 | lo as u128) * n as u128 >> 64) as u32;
+                let j = uniform_index(n, hi, lo);
+                assert_eq!(j, r, "n {n} hi {hi} lo {lo}");
+                assert!(j < n);
+            }
+        }
+    }
+
+    #[test]
+    fn n_near_u32_max() {
+        // The slot draw stays in range and the weight is finite.
+        let n = u32::MAX;
+        assert_eq!(reservoir_slot(n, 8, u32::MAX, u32::MAX), 8);
+        assert_eq!(reservoir_slot(n, 8, 0, 0), 0);
+        let w = reservoir_weight(n, 8);
+        assert!((w as f64 - n as f64 / 8.0).abs() / (n as f64 / 8.0) < 1e-7);
+        // P(j < k) = k/n to within 2^-64·n relative.
+        let k = 8u32;
+        let threshold_hi = ((k as u128) << 64).div_ceil(n as u128) >> 32;
+        assert!(uniform_index(n, threshold_hi as u32 - 1, u32::MAX) < k);
+        assert!(uniform_index(n, threshold_hi as u32 + 1, 0) >= k);
+        let mut r = Reservoir::<2>::new();
+        r.n = u32::MAX - 1;
+        r.push(7, 0, 0);
+        assert_eq!(r.seen(), u32::MAX);
+        r.push(9, 0, 0);
+        assert_eq!(r.seen(), u32::MAX);
+        assert_eq!(r.picks(), &[7, 0]);
+    }
+}
