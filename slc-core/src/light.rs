@@ -35,6 +35,17 @@ crate::shared! {
         return max(dot(n, w), 0.0) * INV_PI;
     }
 
+    /// VPL transfer per unit flux: the irradiance at a receiver with unit
+    /// normal `n_x` from a VPL with unit normal `n_l`, `v = x − p` the vector
+    /// from the VPL to the receiver:
+    /// `E/Φ = max(n_l·v, 0) · max(−n_x·v, 0) / (π · m²)`, `m = max(|v|², d²_min)`,
+    /// i.e. `(1/π) cos θ_l cos θ_x / d²` for `d² ≥ d²_min` (no square root),
+    /// smoothly reduced to 0 inside the clamp distance (no singularity).
+    pub fn vpl_transfer(n_l: vec3f, n_x: vec3f, v: vec3f, min_d2: f32) -> f32 {
+        let m: f32 = max(dot(v, v), min_d2);
+        return max(dot(n_l, v), 0.0) * max(-dot(n_x, v), 0.0) * INV_PI / (m * m);
+    }
+
     /// Spot fall-off: `smoothstep(cos_outer, cos_inner, cos θ)`, a hard edge
     /// when the two cones coincide.
     pub fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
@@ -434,6 +445,20 @@ mod tests {
         let p = Light::Point(PointLight::new(Vec3::ZERO, Vec3::ONE).unwrap());
         let (c, _) = p.contribution_at(Vec3::ZERO);
         assert!(c.is_finite() && c.x == 1.0 / MIN_D2);
+    }
+
+    #[test]
+    fn vpl_transfer_matches_cosines_over_d2() {
+        let nl = Vec3::Y;
+        let nx = -Vec3::Y;
+        let v = Vec3::new(0.3, 2.0, 0.0);
+        let d2 = v.length_squared();
+        let w = v / d2.sqrt();
+        let expect = w.y * w.y / (core::f32::consts::PI * d2);
+        assert!((vpl_transfer(nl, nx, v, 1e-4) - expect).abs() < 1e-7);
+        assert_eq!(vpl_transfer(nl, nx, Vec3::ZERO, 1e-4), 0.0);
+        assert_eq!(vpl_transfer(nl, nx, -v, 1e-4), 0.0);
+        assert!(vpl_transfer(nl, nx, Vec3::Y * 1e-3, 1e-4).is_finite());
     }
 
     #[test]

@@ -81,11 +81,11 @@ pub trait WgslScalar: Copy {
 impl WgslScalar for f32 {
     #[inline]
     fn wmin(self, o: Self) -> Self {
-        libm::fminf(self, o)
+        f32::min(self, o)
     }
     #[inline]
     fn wmax(self, o: Self) -> Self {
-        libm::fmaxf(self, o)
+        f32::max(self, o)
     }
 }
 impl WgslScalar for u32 {

@@ -42,6 +42,7 @@ fn library_validates_with_naga() {
         "sphere_overlaps_aabb",
         "inverse_square",
         "vpl_lobe",
+        "vpl_transfer",
         "spot_falloff",
         "triangle_lobe",
         "triangle_sample",

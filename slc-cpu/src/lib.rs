@@ -1,46 +1,74 @@
 //! # slc-cpu
 //!
-//! The CPU backend of slc (rayon). **Status: filled by the VPL and
-//! path-tracing issues.** It will hold both applications of the paper on the
-//! CPU: real-time indirect illumination with 65,536 VPLs (reflective shadow
-//! map, 8×8 interleaved sampling, tiled culling, bilateral denoise) and
-//! progressive path tracing with thousands of point/spot/IES/triangle lights
-//! (bounding-sphere hierarchy, MIS), with EXR output.
+//! The CPU backend of slc (rayon): the paper's applications on the CPU.
 //!
-//! Today it offers the parallel building block both need: SLC sums at many
-//! shading points at once, using slc-core's estimator.
+//! - [`vpl`]: real-time indirect illumination with VPLs (reflective shadow
+//!   map, 8×8 interleaved sampling, tiled stochastic light culling,
+//!   cross-bilateral denoise), with the clamped-range and unculled baselines
+//!   and the all-VPL reference.
+//! - [`scene`], [`geometry`], [`gbuffer`], [`image`]: scenes (OBJ+MTL or the
+//!   built-in Cornell box), BVH ray casting, G-buffer, EXR/PNG output.
+//!
+//! The progressive path tracer (application B) is the subject of a later
+//! issue and not here yet.
 //!
 //! ```
-//! use slc_core::glam::Vec3;
-//! use slc_core::light::{Light, PointLight};
-//! use slc_core::range::RangeParams;
+//! use slc_cpu::scene::Scene;
+//! use slc_cpu::vpl::{VplContext, VplMethod, VplSettings};
 //!
-//! let lights = vec![Light::Point(PointLight::new(Vec3::ZERO, Vec3::ONE).unwrap())];
-//! let points = vec![Vec3::new(0.0, 0.0, 1.0)];
-//! let params = RangeParams::new(0.01, 1.0).unwrap();
-//! let out = slc_cpu::shade_points(&lights, &[0.5], &params, &points);
-//! assert!((out[0].value.x - 1.0).abs() < 1e-6);
+//! let ctx = VplContext::new(&Scene::cornell_box(), 64, 64, 32, None).unwrap();
+//! let frame = ctx.render(&VplSettings { method: VplMethod::Slc, ..Default::default() }).unwrap();
+//! assert!(frame.image.is_finite() && frame.image.mean() > 0.0);
 //! ```
 #![deny(missing_docs)]
 
-use slc_core::estimator::{Estimate, Seen, slc_sum};
-use slc_core::glam::Vec3;
-use slc_core::light::Light;
-use slc_core::range::{RangeParams, random_range2};
+pub mod gbuffer;
+pub mod geometry;
+pub mod image;
+pub mod reference;
+pub mod scene;
+pub mod vpl;
 
-/// SLC estimate of `Σ I(w)/d²` at every point in `points`, one ξ per light
-/// (`xi[i]` for `lights[i]`), in parallel over points.
-pub fn shade_points(lights: &[Light], xi: &[f32], params: &RangeParams, points: &[Vec3]) -> Vec<Estimate> {
-    let rt2: Vec<f32> = lights.iter().map(|l| params.threshold_range2(l.peak())).collect();
-    let r2: Vec<f32> = rt2.iter().zip(xi).map(|(&rt2, &xi)| random_range2(rt2, xi)).collect();
-    points
-        .iter()
-        .map(|&x| {
-            slc_sum(
-                0..lights.len(),
-                |&i| Seen { d2: (x - lights[i].bound().center).length_squared(), rt2: rt2[i], r2: r2[i] },
-                |&i| lights[i].contribution_at(x).0,
-            )
-        })
-        .collect()
+use thiserror::Error;
+
+/// A scene that cannot be loaded or used.
+#[derive(Debug, Error, PartialEq)]
+pub enum SceneError {
+    /// The file could not be read.
+    #[error("cannot read {0}: {1}")]
+    Io(String, String),
+    /// The OBJ/MTL could not be parsed.
+    #[error("invalid OBJ/MTL {0}: {1}")]
+    Obj(String, String),
+    /// No triangles.
+    #[error("the scene has no triangles")]
+    Empty,
+    /// A vertex with NaN or ±∞.
+    #[error("triangle {0} has a non-finite vertex")]
+    NonFiniteVertex(usize),
+    /// Another invalid value.
+    #[error("invalid scene: {0}")]
+    Invalid(String),
 }
+
+/// Invalid render settings.
+#[derive(Debug, Error, PartialEq)]
+pub enum RenderError {
+    /// Scene problem.
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    /// Image size out of range.
+    #[error("image size {0}x{1} must be within 1..=16384 on each side")]
+    Size(u32, u32),
+    /// VPL count that is not the square of a multiple of 8.
+    #[error("{0} VPLs: the count must be s*s for s a multiple of 8 up to 4096 (e.g. 4096, 16384, 65536, 262144)")]
+    VplCount(u64),
+    /// Another bad setting.
+    #[error("invalid setting: {0}")]
+    Setting(String),
+}
+
+/// An image that could not be written or read.
+#[derive(Debug, Error, PartialEq)]
+#[error("cannot write or read image {0}: {1}")]
+pub struct OutputError(pub String, pub String);

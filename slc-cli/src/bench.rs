@@ -1,0 +1,146 @@
+//! `slc bench`: speed against error. Runs `none`, `slc` over a sweep of
+//! error bounds and `clamp` over a sweep of ranges, measures RMSE of each
+//! against the (cached) reference, and writes JSON (and optionally CSV).
+
+use crate::SceneArgs;
+use clap::Args;
+use indicatif::{ProgressBar, ProgressStyle};
+use serde::Serialize;
+use slc_cpu::reference::vpl_reference;
+use slc_cpu::vpl::{VplFrame, VplMethod, VplSettings};
+use std::path::PathBuf;
+
+#[derive(Args)]
+pub struct BenchArgs {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// Error bounds ε swept for `slc`.
+    #[arg(long, value_delimiter = ',', default_values_t = [0.0005f32, 0.001, 0.002, 0.004, 0.008, 0.016])]
+    error_bounds: Vec<f32>,
+    /// Ranges R swept for `clamp` (scene units).
+    #[arg(long, value_delimiter = ',', default_values_t = [0.025f32, 0.05, 0.075, 0.1, 0.15, 0.2, 0.3])]
+    ranges: Vec<f32>,
+    /// Runs per configuration; the fastest shading time is reported.
+    #[arg(long, default_value_t = 3)]
+    repeat: u32,
+    /// Seed of the per-light random numbers.
+    #[arg(long, default_value_t = 1)]
+    seed: u32,
+    /// Where reference images are cached.
+    #[arg(long, default_value = ".slc-cache")]
+    cache_dir: PathBuf,
+    /// JSON report.
+    #[arg(long)]
+    json: PathBuf,
+    /// Also write the runs as CSV.
+    #[arg(long)]
+    csv: Option<PathBuf>,
+}
+
+#[derive(Serialize)]
+struct Run {
+    method: &'static str,
+    param: Option<f32>,
+    shading_ms: f64,
+    total_ms: f64,
+    rmse: f64,
+    lights_per_pixel: f64,
+    kept_per_pixel: f64,
+    evaluations_per_second: f64,
+}
+
+#[derive(Serialize)]
+struct Report {
+    app: &'static str,
+    backend: &'static str,
+    scene: String,
+    width: u32,
+    height: u32,
+    lights: usize,
+    timing: &'static str,
+    threads: usize,
+    reference_from_cache: bool,
+    runs: Vec<Run>,
+}
+
+pub fn run(a: BenchArgs) -> Result<(), String> {
+    let ctx = a.scene.context()?;
+    let mut configs: Vec<(VplMethod, Option<f32>)> = vec![(VplMethod::None, None)];
+    configs.extend(a.error_bounds.iter().map(|&e| (VplMethod::Slc, Some(e))));
+    configs.extend(a.ranges.iter().map(|&r| (VplMethod::Clamp, Some(r))));
+    let bar = ProgressBar::new(configs.len() as u64 + 1);
+    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} {msg}").map_err(|e| e.to_string())?);
+    bar.set_message("reference (all VPLs at every pixel)");
+    let (reference, cached) = vpl_reference(&ctx, Some(&a.cache_dir)).map_err(|e| e.to_string())?;
+    bar.inc(1);
+    let mut runs = Vec::new();
+    for (method, param) in configs {
+        bar.set_message(format!("{} {}", method.name(), param.map_or(String::new(), |p| p.to_string())));
+        let settings = VplSettings {
+            method,
+            error_bound: if method == VplMethod::Slc { param.unwrap_or(0.0) } else { VplSettings::default().error_bound },
+            range: if method == VplMethod::Clamp { param.unwrap_or(0.0) } else { VplSettings::default().range },
+            exposure: a.scene.exposure,
+            seed: a.seed,
+            tile: a.scene.tile,
+            ..VplSettings::default()
+        };
+        let mut best: Option<VplFrame> = None;
+        for _ in 0..a.repeat.max(1) {
+            let f = ctx.render(&settings).map_err(|e| e.to_string())?;
+            if best.as_ref().is_none_or(|b| f.stats.shading_ms < b.stats.shading_ms) {
+                best = Some(f);
+            }
+        }
+        let f = best.expect("at least one run");
+        runs.push(Run {
+            method: method.name(),
+            param,
+            shading_ms: f.stats.shading_ms,
+            total_ms: f.stats.total_ms,
+            rmse: f.image.rmse(&reference),
+            lights_per_pixel: f.stats.lights_per_pixel,
+            kept_per_pixel: f.stats.kept_per_pixel,
+            evaluations_per_second: f.stats.evaluations as f64 / (f.stats.shading_ms * 1e-3),
+        });
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    let report = Report {
+        app: "vpl",
+        backend: "cpu",
+        scene: ctx.scene().name.clone(),
+        width: a.scene.width,
+        height: a.scene.height,
+        lights: ctx.vpls().len(),
+        timing: "wall clock, fastest of --repeat runs",
+        threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
+        reference_from_cache: cached,
+        runs,
+    };
+    let json = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;
+    std::fs::write(&a.json, json).map_err(|e| format!("cannot write {}: {e}", a.json.display()))?;
+    if let Some(csv) = &a.csv {
+        let mut s = String::from("method,param,shading_ms,total_ms,rmse,lights_per_pixel,kept_per_pixel,evaluations_per_second\n");
+        for r in &report.runs {
+            s += &format!("{},{},{:.4},{:.4},{:.6},{:.3},{:.3},{:.4e}\n", r.method, r.param.map_or(String::new(), |p| p.to_string()), r.shading_ms, r.total_ms, r.rmse, r.lights_per_pixel, r.kept_per_pixel, r.evaluations_per_second);
+        }
+        std::fs::write(csv, s).map_err(|e| format!("cannot write {}: {e}", csv.display()))?;
+    }
+    println!("{} {}x{}, {} VPLs, {} threads (reference {})", report.scene, report.width, report.height, report.lights, report.threads, if cached { "from cache" } else { "rendered" });
+    println!("{:<8} {:>8} {:>11} {:>10} {:>9} {:>9} {:>9} {:>10}", "method", "param", "shading ms", "total ms", "rmse", "lights/px", "kept/px", "evals/s");
+    for r in &report.runs {
+        println!(
+            "{:<8} {:>8} {:>11.2} {:>10.2} {:>9.5} {:>9.1} {:>9.1} {:>10.3e}",
+            r.method,
+            r.param.map_or("-".into(), |p| p.to_string()),
+            r.shading_ms,
+            r.total_ms,
+            r.rmse,
+            r.lights_per_pixel,
+            r.kept_per_pixel,
+            r.evaluations_per_second
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,25 @@
+//! Renders frames of the built-in Cornell box with one method and prints the
+//! timings: `cargo run --release -p slc-cpu --example vpl_frame -- slc 512 10`.
+
+use slc_cpu::scene::Scene;
+use slc_cpu::vpl::{VplContext, VplMethod, VplSettings};
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let method = match args.get(1).map(String::as_str) {
+        Some("none") => VplMethod::None,
+        Some("clamp") => VplMethod::Clamp,
+        Some("reference") => VplMethod::Reference,
+        _ => VplMethod::Slc,
+    };
+    let size: u32 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(512);
+    let frames: u32 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(5);
+    let ctx = VplContext::new(&Scene::cornell_box(), size, size, 256, None).expect("valid scene");
+    for frame in 0..frames {
+        let f = ctx.render(&VplSettings { method, frame, ..Default::default() }).expect("valid settings");
+        println!(
+            "frame {frame}: shading {:.2} ms, denoise {:.2} ms, {:.1} lights/px, {:.1} kept/px",
+            f.stats.shading_ms, f.stats.denoise_ms, f.stats.lights_per_pixel, f.stats.kept_per_pixel
+        );
+    }
+}

@@ -1,0 +1,75 @@
+//! Ray casting against the scene's triangles through obvhs's compressed
+//! wide BVH (CWBVH; works with glam, maintained, fast on the CPU). Used for
+//! the G-buffer, the reflective shadow map and shadow rays.
+
+use glam::{Vec3, Vec3A};
+use obvhs::BvhBuildParams;
+use obvhs::cwbvh::CwBvh;
+use obvhs::cwbvh::builder::build_cwbvh_from_tris;
+use obvhs::ray::{Ray, RayHit};
+use obvhs::triangle::Triangle;
+use std::time::Duration;
+
+/// A closest hit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit {
+    /// Ray parameter (distance for unit directions).
+    pub t: f32,
+    /// Index of the triangle in the scene.
+    pub triangle: u32,
+}
+
+/// The scene's triangles in a BVH.
+pub struct Geometry {
+    tris: Vec<Triangle>,
+    normals: Vec<Vec3>,
+    bvh: CwBvh,
+}
+
+impl Geometry {
+    /// Builds the BVH over `triangles`.
+    pub fn new(triangles: &[[Vec3; 3]]) -> Self {
+        let tris: Vec<Triangle> =
+            triangles.iter().map(|t| Triangle { v0: t[0].into(), v1: t[1].into(), v2: t[2].into() }).collect();
+        let normals = triangles.iter().map(|t| (t[1] - t[0]).cross(t[2] - t[0]).normalize_or_zero()).collect();
+        let bvh = build_cwbvh_from_tris(&tris, BvhBuildParams::medium_build(), &mut Duration::default());
+        Geometry { tris, normals, bvh }
+    }
+
+    /// Closest hit along `origin + t·dir`, `t ∈ (t_min, t_max)`.
+    pub fn intersect(&self, origin: Vec3, dir: Vec3, t_min: f32, t_max: f32) -> Option<Hit> {
+        if self.tris.is_empty() {
+            return None;
+        }
+        let ray = Ray::new(Vec3A::from(origin), Vec3A::from(dir), t_min, t_max);
+        let mut hit = RayHit::none();
+        let idx = &self.bvh.primitive_indices;
+        if self.bvh.ray_traverse(ray, &mut hit, |r, id| self.tris[idx[id] as usize].intersect(r)) {
+            Some(Hit { t: hit.t, triangle: idx[hit.primitive_id as usize] })
+        } else {
+            None
+        }
+    }
+
+    /// `true` when the open segment from `a` to `b` hits a triangle (a
+    /// relative epsilon keeps the end points' own surfaces out).
+    pub fn occluded(&self, a: Vec3, b: Vec3) -> bool {
+        if self.tris.is_empty() {
+            return false;
+        }
+        let d = b - a;
+        let len = d.length();
+        if !(len > 0.0) {
+            return false;
+        }
+        let eps = 1e-4 * len;
+        let ray = Ray::new(Vec3A::from(a), Vec3A::from(d / len), eps, len - eps);
+        let idx = &self.bvh.primitive_indices;
+        !self.bvh.ray_traverse_miss(ray, |r, id| self.tris[idx[id] as usize].intersect(r))
+    }
+
+    /// Geometric unit normal of triangle `i` (from its winding).
+    pub fn normal(&self, i: u32) -> Vec3 {
+        self.normals[i as usize]
+    }
+}

@@ -1,0 +1,91 @@
+//! Reference images cached on disk by a hash of the scene and settings, so
+//! benchmarks do not recompute the (expensive) ground truth.
+
+use crate::image::Image;
+use crate::vpl::{VplContext, VplMethod, VplSettings};
+use crate::{OutputError, RenderError};
+use glam::Vec3;
+use std::path::{Path, PathBuf};
+
+/// Bumped when the reference renderer changes meaning.
+const VERSION: u64 = 1;
+
+/// FNV-1a, 64 bit.
+fn fnv(bytes: &[u8], mut h: u64) -> u64 {
+    for &b in bytes {
+        h ^= b as u64;
+        h = h.wrapping_mul(0x100_0000_01b3);
+    }
+    h
+}
+
+/// Hash of everything the VPL reference depends on.
+pub fn vpl_reference_key(ctx: &VplContext) -> u64 {
+    let s = ctx.scene();
+    let mut h = fnv(&VERSION.to_le_bytes(), 0xcbf2_9ce4_8422_2325);
+    for t in &s.triangles {
+        for v in t {
+            h = fnv(bytemuck::cast_slice(&v.to_array()), h);
+        }
+    }
+    h = fnv(bytemuck::cast_slice(&s.material_of), h);
+    let text = format!("{:?}{:?}{:?}", s.materials, s.camera, s.primary);
+    h = fnv(text.as_bytes(), h);
+    let gb = ctx.gbuffer();
+    for x in [gb.width, gb.height, ctx.vpls().size, ctx.min_d2().to_bits()] {
+        h = fnv(&x.to_le_bytes(), h);
+    }
+    h
+}
+
+/// The VPL reference image of `ctx`: read from `cache_dir` when present,
+/// else rendered and stored there (`cache_dir = None` disables caching).
+/// Returns the image and whether it came from the cache.
+pub fn vpl_reference(ctx: &VplContext, cache_dir: Option<&Path>) -> Result<(Image, bool), RenderError> {
+    let path = cache_dir.map(|d| d.join(format!("vpl-reference-{:016x}.bin", vpl_reference_key(ctx))));
+    if let Some(p) = &path {
+        if let Some(img) = read_raw(p) {
+            if (img.width, img.height) == (ctx.gbuffer().width, ctx.gbuffer().height) {
+                return Ok((img, true));
+            }
+        }
+    }
+    let frame = ctx.render(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() })?;
+    if let Some(p) = &path {
+        write_raw(p, &frame.image).map_err(|e| RenderError::Setting(e.to_string()))?;
+    }
+    Ok((frame.image, false))
+}
+
+fn read_raw(path: &Path) -> Option<Image> {
+    let bytes = std::fs::read(path).ok()?;
+    let (head, body) = bytes.split_at_checked(8)?;
+    let w = u32::from_le_bytes(head[0..4].try_into().ok()?);
+    let h = u32::from_le_bytes(head[4..8].try_into().ok()?);
+    if body.len() != w as usize * h as usize * 12 {
+        return None;
+    }
+    let data = body.chunks_exact(12).map(|c| {
+        let f = |k: usize| f32::from_le_bytes(c[k..k + 4].try_into().expect("4 bytes"));
+        Vec3::new(f(0), f(4), f(8))
+    });
+    Some(Image { width: w, height: h, data: data.collect() })
+}
+
+fn write_raw(path: &Path, img: &Image) -> Result<(), OutputError> {
+    let err = |e: std::io::Error| OutputError(path.display().to_string(), e.to_string());
+    if let Some(d) = path.parent() {
+        std::fs::create_dir_all(d).map_err(err)?;
+    }
+    let mut bytes = Vec::with_capacity(8 + img.data.len() * 12);
+    bytes.extend(img.width.to_le_bytes());
+    bytes.extend(img.height.to_le_bytes());
+    for p in &img.data {
+        for c in p.to_array() {
+            bytes.extend(c.to_le_bytes());
+        }
+    }
+    let tmp = PathBuf::from(format!("{}.tmp{}", path.display(), std::process::id()));
+    std::fs::write(&tmp, bytes).map_err(err)?;
+    std::fs::rename(&tmp, path).map_err(err)
+}

@@ -1,0 +1,105 @@
+//! Reflective shadow map (Dachsbacher & Stamminger 2005): every texel of a
+//! map rendered from the primary light becomes a VPL at the surface it sees,
+//! with the flux that surface reflects.
+
+use crate::geometry::Geometry;
+use crate::scene::{PrimaryLight, Scene};
+use glam::Vec3;
+use rayon::prelude::*;
+use slc_core::light::Light;
+
+/// VPLs in structure-of-arrays form, one per RSM texel (row-major), so
+/// `index = ty · size + tx`. Texels that see nothing, or lie outside the spot
+/// cone, are VPLs of zero flux (never kept by SLC, zero contribution).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Vpls {
+    /// RSM resolution (`size²` VPLs).
+    pub size: u32,
+    /// Positions.
+    pub position: Vec<Vec3>,
+    /// Unit normals (facing the light).
+    pub normal: Vec<Vec3>,
+    /// Reflected RGB flux Φ (W).
+    pub flux: Vec<Vec3>,
+}
+
+impl Vpls {
+    /// Number of VPLs.
+    pub fn len(&self) -> usize {
+        self.position.len()
+    }
+    /// `true` when there are none.
+    pub fn is_empty(&self) -> bool {
+        self.position.is_empty()
+    }
+}
+
+/// Renders the `size × size` RSM of the scene's primary light.
+pub fn reflective_shadow_map(scene: &Scene, geo: &Geometry, size: u32) -> Vpls {
+    let n = size as usize * size as usize;
+    let res = size as f32;
+    let diag = scene.diagonal();
+    let texels: Vec<(Vec3, Vec3, Vec3)> = match scene.primary {
+        PrimaryLight::Spot { position, direction, outer, .. } => {
+            let spot = Light::Spot(scene.primary.spot().expect("validated scene"));
+            let helper = if direction.y.abs() < 0.9 { Vec3::Y } else { Vec3::X };
+            let r = direction.cross(helper).normalize();
+            let u = r.cross(direction);
+            let tan = outer.tan();
+            let texel_area = (2.0 * tan / res).powi(2);
+            (0..n)
+                .into_par_iter()
+                .map(|i| {
+                    let (tx, ty) = ((i % size as usize) as f32, (i / size as usize) as f32);
+                    let s = (2.0 * (tx + 0.5) / res - 1.0) * tan;
+                    let t = (2.0 * (ty + 0.5) / res - 1.0) * tan;
+                    let q = 1.0 + s * s + t * t;
+                    let dir = (direction + r * s + u * t) / q.sqrt();
+                    // Solid angle of the texel on the image plane at distance 1.
+                    let d_omega = texel_area / (q * q.sqrt());
+                    hit_texel(scene, geo, position, dir, spot.intensity(dir) * d_omega, diag)
+                })
+                .collect()
+        }
+        PrimaryLight::Directional { direction, irradiance } => {
+            let d = direction.normalize();
+            let helper = if d.y.abs() < 0.9 { Vec3::Y } else { Vec3::X };
+            let r = d.cross(helper).normalize();
+            let u = r.cross(d);
+            let (lo, hi) = scene.bounds();
+            let c = (lo + hi) * 0.5;
+            let half = 0.5 * (hi - lo).length();
+            let texel = 2.0 * half / res;
+            (0..n)
+                .into_par_iter()
+                .map(|i| {
+                    let (tx, ty) = ((i % size as usize) as f32, (i / size as usize) as f32);
+                    let o = c + r * ((tx + 0.5) * texel - half) + u * ((ty + 0.5) * texel - half) - d * (2.0 * half);
+                    hit_texel(scene, geo, o, d, irradiance * texel * texel, diag)
+                })
+                .collect()
+        }
+    };
+    Vpls {
+        size,
+        position: texels.iter().map(|t| t.0).collect(),
+        normal: texels.iter().map(|t| t.1).collect(),
+        flux: texels.iter().map(|t| t.2).collect(),
+    }
+}
+
+/// The VPL a texel makes: its hit point, normal toward the light, and the
+/// incident flux times the surface albedo.
+fn hit_texel(scene: &Scene, geo: &Geometry, origin: Vec3, dir: Vec3, incident: Vec3, diag: f32) -> (Vec3, Vec3, Vec3) {
+    match geo.intersect(origin, dir, 1e-5 * diag, f32::INFINITY) {
+        Some(h) => {
+            let mut n = geo.normal(h.triangle);
+            if n.dot(dir) > 0.0 {
+                n = -n;
+            }
+            let albedo = scene.materials[scene.material_of[h.triangle as usize] as usize].albedo;
+            (origin + dir * h.t, n, incident * albedo)
+        }
+        None => (origin, -dir, Vec3::ZERO),
+    }
+}

@@ -1,0 +1,198 @@
+//! The shading loop: irradiance at a receiver from a list of VPLs, in
+//! structure-of-arrays form so the loop runs on SIMD lanes.
+//!
+//! Every formula comes from slc-core: the VPL transfer
+//! ([`slc_core::light::vpl_transfer`]), the keep test
+//! ([`slc_core::range::slc_keep`]) and the `1/p` weight
+//! ([`slc_core::range::slc_weight`]).
+
+use glam::Vec3;
+use slc_core::light::vpl_transfer;
+use slc_core::range::{slc_keep, slc_weight};
+use slc_core::sphere::sphere_overlaps_aabb;
+
+/// How a light list is evaluated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Cull {
+    /// Stochastic light culling: keep iff `d² < r²`, weight `1/p`.
+    Slc,
+    /// Clamped range: keep iff `d² < R²`, no reweighting (biased).
+    Clamp,
+    /// Every light counts.
+    None,
+}
+
+/// A list of VPLs in SoA layout (one entry per light, same index in every
+/// array). `rt2`/`r2` hold `r_t²` and `r²` for [`Cull::Slc`] and `R²` in
+/// `r2` for [`Cull::Clamp`].
+#[derive(Clone, Debug, Default)]
+pub struct LightList {
+    pub(crate) px: Vec<f32>,
+    pub(crate) py: Vec<f32>,
+    pub(crate) pz: Vec<f32>,
+    pub(crate) nx: Vec<f32>,
+    pub(crate) ny: Vec<f32>,
+    pub(crate) nz: Vec<f32>,
+    pub(crate) fr: Vec<f32>,
+    pub(crate) fg: Vec<f32>,
+    pub(crate) fb: Vec<f32>,
+    pub(crate) rt2: Vec<f32>,
+    pub(crate) r2: Vec<f32>,
+    pub(crate) radius: Vec<f32>,
+}
+
+impl LightList {
+    /// Empties the list, keeping its memory.
+    pub fn clear(&mut self) {
+        for v in [
+            &mut self.px, &mut self.py, &mut self.pz, &mut self.nx, &mut self.ny, &mut self.nz, &mut self.fr,
+            &mut self.fg, &mut self.fb, &mut self.rt2, &mut self.r2, &mut self.radius,
+        ] {
+            v.clear();
+        }
+    }
+
+    /// Appends one light; its culling sphere has radius `√r2`.
+    pub fn push(&mut self, p: Vec3, n: Vec3, flux: Vec3, rt2: f32, r2: f32) {
+        self.radius.push(r2.sqrt());
+        self.px.push(p.x);
+        self.py.push(p.y);
+        self.pz.push(p.z);
+        self.nx.push(n.x);
+        self.ny.push(n.y);
+        self.nz.push(n.z);
+        self.fr.push(flux.x);
+        self.fg.push(flux.y);
+        self.fb.push(flux.z);
+        self.rt2.push(rt2);
+        self.r2.push(r2);
+    }
+
+    /// Tile culling: replaces `out` with the lights whose range sphere
+    /// `(p, √r²)` overlaps the box `[lo, hi]`
+    /// ([`slc_core::sphere::sphere_overlaps_aabb`]). The test runs
+    /// branch-free over all lights, then each array is gathered in one pass.
+    pub fn cull_into(&self, lo: Vec3, hi: Vec3, hits: &mut Vec<u32>, out: &mut LightList) {
+        let n = self.len();
+        let (px, py, pz, radius) = (&self.px[..n], &self.py[..n], &self.pz[..n], &self.radius[..n]);
+        hits.clear();
+        for (j, (((&x, &y), &z), &r)) in px.iter().zip(py).zip(pz).zip(radius).enumerate() {
+            // Branch-free append: write the index, advance only on a hit.
+            let hit = sphere_overlaps_aabb(Vec3::new(x, y, z), r, lo, hi);
+            hits.push(j as u32);
+            if !hit {
+                hits.pop();
+            }
+        }
+        let gather = |dst: &mut Vec<f32>, src: &[f32]| {
+            dst.clear();
+            dst.extend(hits.iter().map(|&j| src[j as usize]));
+        };
+        gather(&mut out.px, &self.px);
+        gather(&mut out.py, &self.py);
+        gather(&mut out.pz, &self.pz);
+        gather(&mut out.nx, &self.nx);
+        gather(&mut out.ny, &self.ny);
+        gather(&mut out.nz, &self.nz);
+        gather(&mut out.fr, &self.fr);
+        gather(&mut out.fg, &self.fg);
+        gather(&mut out.fb, &self.fb);
+        gather(&mut out.rt2, &self.rt2);
+        gather(&mut out.r2, &self.r2);
+        gather(&mut out.radius, &self.radius);
+    }
+
+    /// Number of lights.
+    pub fn len(&self) -> usize {
+        self.px.len()
+    }
+
+    /// `true` when empty.
+    pub fn is_empty(&self) -> bool {
+        self.px.is_empty()
+    }
+}
+
+/// SIMD lanes of the shading loop.
+const LANES: usize = 8;
+
+/// Irradiance at `x` (unit normal `n`) from every light of `list` under
+/// `cull`, and the number of lights that passed the keep test.
+#[inline(never)]
+pub fn shade(list: &LightList, x: Vec3, n: Vec3, min_d2: f32, cull: Cull) -> (Vec3, u32) {
+    match cull {
+        Cull::Slc => shade_impl::<0>(list, x, n, min_d2),
+        Cull::Clamp => shade_impl::<1>(list, x, n, min_d2),
+        Cull::None => shade_impl::<2>(list, x, n, min_d2),
+    }
+}
+
+/// One light's weighted transfer and keep flag (0 or 1) at `x`.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn term<const MODE: u8>(p: Vec3, nl: Vec3, rt2: f32, r2: f32, x: Vec3, n: Vec3, min_d2: f32) -> (f32, f32) {
+    let v = x - p;
+    let t = vpl_transfer(nl, n, v, min_d2);
+    let d2 = v.x * v.x + v.y * v.y + v.z * v.z;
+    match MODE {
+        0 => {
+            // Both evaluated unconditionally so the loop stays branch-free
+            // (the keep test is a coin flip per light: branches mispredict).
+            let keep = slc_keep(r2, d2);
+            let w = t * slc_weight(rt2, d2);
+            (if keep { w } else { 0.0 }, if keep { 1.0 } else { 0.0 })
+        }
+        1 => {
+            let keep = d2 < r2;
+            (if keep { t } else { 0.0 }, if keep { 1.0 } else { 0.0 })
+        }
+        _ => (t, 1.0),
+    }
+}
+
+/// `LANES` consecutive entries of one SoA array.
+#[inline(always)]
+fn lanes(a: &[f32], base: usize) -> &[f32; LANES] {
+    a[base..base + LANES].try_into().expect("chunk of LANES")
+}
+
+#[inline(always)]
+fn shade_impl<const MODE: u8>(list: &LightList, x: Vec3, n: Vec3, min_d2: f32) -> (Vec3, u32) {
+    let len = list.len();
+    let (mut r, mut g, mut b, mut k) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
+    let full = len / LANES * LANES;
+    let mut base = 0;
+    while base < full {
+        let (px, py, pz) = (lanes(&list.px, base), lanes(&list.py, base), lanes(&list.pz, base));
+        let (nx, ny, nz) = (lanes(&list.nx, base), lanes(&list.ny, base), lanes(&list.nz, base));
+        let (fr, fg, fb) = (lanes(&list.fr, base), lanes(&list.fg, base), lanes(&list.fb, base));
+        let (rt2, r2) = (lanes(&list.rt2, base), lanes(&list.r2, base));
+        for l in 0..LANES {
+            let (w, kept) = term::<MODE>(
+                Vec3::new(px[l], py[l], pz[l]),
+                Vec3::new(nx[l], ny[l], nz[l]),
+                rt2[l],
+                r2[l],
+                x,
+                n,
+                min_d2,
+            );
+            r[l] += fr[l] * w;
+            g[l] += fg[l] * w;
+            b[l] += fb[l] * w;
+            k[l] += kept;
+        }
+        base += LANES;
+    }
+    for j in full..len {
+        let p = Vec3::new(list.px[j], list.py[j], list.pz[j]);
+        let nl = Vec3::new(list.nx[j], list.ny[j], list.nz[j]);
+        let (w, kept) = term::<MODE>(p, nl, list.rt2[j], list.r2[j], x, n, min_d2);
+        r[0] += list.fr[j] * w;
+        g[0] += list.fg[j] * w;
+        b[0] += list.fb[j] * w;
+        k[0] += kept;
+    }
+    let sum = |a: [f32; LANES]| a.iter().sum::<f32>();
+    (Vec3::new(sum(r), sum(g), sum(b)), sum(k) as u32)
+}
