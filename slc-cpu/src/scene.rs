@@ -253,16 +253,12 @@ impl Scene {
         })
         .map_err(|e| SceneError::Obj(path.display().to_string(), e.to_string()))?;
         let mats = mats.map_err(|e| SceneError::Obj(path.display().to_string(), format!("material library: {e}")))?;
-        let parse3 = |s: &str| -> Option<Vec3> {
-            let v: Vec<f32> = s.split_whitespace().take(3).map(|t| t.parse().ok()).collect::<Option<_>>()?;
-            (v.len() == 3).then(|| Vec3::new(v[0], v[1], v[2]))
-        };
         let mut materials: Vec<Material> = mats
             .iter()
             .map(|m| {
                 let kd = m.diffuse.map(Vec3::from).unwrap_or(Vec3::splat(0.8));
-                let ke = m.unknown_param.get("Ke").and_then(|s| parse3(s)).unwrap_or(Vec3::ZERO);
-                Material { albedo: kd.clamp(Vec3::ZERO, Vec3::ONE), emission: ke }
+                let ke = m.emissive.map(Vec3::from).unwrap_or(Vec3::ZERO);
+                Material { albedo: kd, emission: ke }
             })
             .collect();
         let default_mat = materials.len() as u32;

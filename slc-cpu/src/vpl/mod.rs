@@ -75,6 +75,11 @@ pub struct VplSettings {
     pub tile: u32,
     /// Apply the cross-bilateral filter (interleaved methods).
     pub denoise: bool,
+    /// Give every light this ξ instead of the hashed per-light one. Not an
+    /// estimator on its own: averaging frames over a grid of ξ values is
+    /// quadrature of the expectation over ξ (how the tests prove the
+    /// pipeline unbiased). Must lie in `[0, 1)`.
+    pub fixed_xi: Option<f32>,
 }
 
 impl Default for VplSettings {
@@ -88,6 +93,7 @@ impl Default for VplSettings {
             frame: 0,
             tile: 4,
             denoise: true,
+            fixed_xi: None,
         }
     }
 }
@@ -96,7 +102,7 @@ impl Default for VplSettings {
 pub const PERIOD: u32 = 8;
 
 /// Super-tile size in tiles for the first culling level.
-pub const SUPER: usize = 4;
+pub const SUPER: usize = 2;
 
 /// Timings (milliseconds) and work counts of one frame.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -202,6 +208,9 @@ impl VplContext {
         if s.method == VplMethod::Clamp && !(s.range.is_finite() && s.range > 0.0) {
             return Err(RenderError::Setting(format!("clamp range {} must be finite and > 0", s.range)));
         }
+        if let Some(x) = s.fixed_xi {
+            slc_core::range::Xi::new(x).map_err(|e| RenderError::Setting(e.to_string()))?;
+        }
         if s.tile == 0 {
             return Err(RenderError::Setting("tile size must be > 0".into()));
         }
@@ -270,21 +279,27 @@ impl VplContext {
                 let (sx, sy) = (sub % p, sub / p);
                 // The subset's VPLs (flux ×64) with their ranges, once per frame.
                 let mut all = LightList::default();
-                for ty in (sy..size).step_by(p) {
-                    for tx in (sx..size).step_by(p) {
-                        let i = ty * size + tx;
-                        let flux = v.flux[i] * scale;
-                        let (rt2, r2) = match cull {
-                            Cull::Slc => {
-                                let rt2 = params.threshold_range2(flux * INV_PI);
-                                (rt2, random_range2(rt2, xi_for(s.seed, s.frame, i as u32)))
-                            }
-                            Cull::Clamp => (0.0, s.range * s.range),
-                            Cull::None => (f32::INFINITY, f32::INFINITY),
-                        };
-                        all.push(v.position[i], v.normal[i], flux, rt2, r2);
+                // Subset texels in 4×4 blocks, so each CHUNK of 16 consecutive
+                // lights is a small patch of the RSM (spatially coherent).
+                let m = size / p;
+                for by in (0..m).step_by(4) {
+                    for bx in (0..m).step_by(4) {
+                        for (u, v_) in (0..16).map(|k| (bx + k % 4, by + k / 4)).filter(|&(u, v_)| u < m && v_ < m) {
+                            let i = (sy + v_ * p) * size + sx + u * p;
+                            let flux = v.flux[i] * scale;
+                            let (rt2, r2) = match cull {
+                                Cull::Slc => {
+                                    let rt2 = params.threshold_range2(flux * INV_PI);
+                                    (rt2, random_range2(rt2, s.fixed_xi.unwrap_or_else(|| xi_for(s.seed, s.frame, i as u32))))
+                                }
+                                Cull::Clamp => (0.0, s.range * s.range),
+                                Cull::None => (f32::INFINITY, f32::INFINITY),
+                            };
+                            all.push(v.position[i], v.normal[i], flux, rt2, r2);
+                        }
                     }
                 }
+                all.build_chunks();
                 let (sw, sh) = ((w + p - 1 - sx) / p, (h + p - 1 - sy) / p);
                 let mut out = Vec::with_capacity(sw * sh);
                 let (mut coarse, mut fine) = (LightList::default(), LightList::default());
@@ -319,7 +334,7 @@ impl VplContext {
                                 continue;
                             }
                             let (lo, hi) = bounds(&pixels);
-                            all.cull_into(lo, hi, &mut hits, &mut coarse);
+                            all.cull_chunked_into(lo, hi, &mut hits, &mut coarse);
                         }
                         for ty in (by..by1).step_by(tile) {
                             for tx in (bx..bx1).step_by(tile) {

@@ -39,7 +39,13 @@ pub struct LightList {
     pub(crate) rt2: Vec<f32>,
     pub(crate) r2: Vec<f32>,
     pub(crate) radius: Vec<f32>,
+    /// Per chunk of [`CHUNK`] consecutive lights: the box holding their
+    /// range spheres (empty until [`LightList::build_chunks`]).
+    chunks: Vec<(Vec3, Vec3)>,
 }
+
+/// Lights per chunk in [`LightList::cull_chunked_into`].
+pub const CHUNK: usize = 16;
 
 impl LightList {
     /// Empties the list, keeping its memory.
@@ -50,11 +56,14 @@ impl LightList {
         ] {
             v.clear();
         }
+        self.chunks.clear();
     }
 
-    /// Appends one light; its culling sphere has radius `√r2`.
+    /// Appends one light; its culling sphere has radius `√r²`, rounded up
+    /// by 2⁻²⁰ relative so that `d² < r²` implies `d ≤ radius` in f32 (tile
+    /// culling never drops a light the per-pixel test would keep).
     pub fn push(&mut self, p: Vec3, n: Vec3, flux: Vec3, rt2: f32, r2: f32) {
-        self.radius.push(r2.sqrt());
+        self.radius.push(r2.sqrt() * (1.0 + 1.0 / 1_048_576.0));
         self.px.push(p.x);
         self.py.push(p.y);
         self.pz.push(p.z);
@@ -68,6 +77,40 @@ impl LightList {
         self.r2.push(r2);
     }
 
+    /// Computes the box of every chunk of [`CHUNK`] consecutive lights'
+    /// range spheres (`centre ± r` per light), for [`LightList::cull_chunked_into`].
+    pub fn build_chunks(&mut self) {
+        self.chunks.clear();
+        for c in (0..self.len()).step_by(CHUNK) {
+            let mut lo = Vec3::INFINITY;
+            let mut hi = Vec3::NEG_INFINITY;
+            for j in c..(c + CHUNK).min(self.len()) {
+                let p = Vec3::new(self.px[j], self.py[j], self.pz[j]);
+                lo = lo.min(p - self.radius[j]);
+                hi = hi.max(p + self.radius[j]);
+            }
+            self.chunks.push((lo, hi));
+        }
+    }
+
+    /// [`LightList::cull_into`] that first skips every chunk whose box misses
+    /// `[lo, hi]`; the result is the same set (the chunk box contains its
+    /// lights' spheres). Needs [`LightList::build_chunks`].
+    pub fn cull_chunked_into(&self, lo: Vec3, hi: Vec3, hits: &mut Vec<u32>, out: &mut LightList) {
+        hits.clear();
+        for (c, &(clo, chi)) in self.chunks.iter().enumerate() {
+            if clo.cmple(hi).all() && lo.cmple(chi).all() {
+                for j in c * CHUNK..((c + 1) * CHUNK).min(self.len()) {
+                    let p = Vec3::new(self.px[j], self.py[j], self.pz[j]);
+                    if sphere_overlaps_aabb(p, self.radius[j], lo, hi) {
+                        hits.push(j as u32);
+                    }
+                }
+            }
+        }
+        self.gather_into(hits, out);
+    }
+
     /// Tile culling: replaces `out` with the lights whose range sphere
     /// `(p, √r²)` overlaps the box `[lo, hi]`
     /// ([`slc_core::sphere::sphere_overlaps_aabb`]). The test runs
@@ -76,14 +119,20 @@ impl LightList {
         let n = self.len();
         let (px, py, pz, radius) = (&self.px[..n], &self.py[..n], &self.pz[..n], &self.radius[..n]);
         hits.clear();
+        hits.resize(n + 1, 0);
+        let mut k = 0;
         for (j, (((&x, &y), &z), &r)) in px.iter().zip(py).zip(pz).zip(radius).enumerate() {
-            // Branch-free append: write the index, advance only on a hit.
-            let hit = sphere_overlaps_aabb(Vec3::new(x, y, z), r, lo, hi);
-            hits.push(j as u32);
-            if !hit {
-                hits.pop();
-            }
+            // Branch-free compaction: always write, advance only on a hit.
+            hits[k.min(n)] = j as u32;
+            k += sphere_overlaps_aabb(Vec3::new(x, y, z), r, lo, hi) as usize;
         }
+        hits.truncate(k);
+        self.gather_into(hits, out);
+    }
+
+    /// Replaces `out` with the entries `hits` of this list.
+    fn gather_into(&self, hits: &[u32], out: &mut LightList) {
+        out.chunks.clear();
         let gather = |dst: &mut Vec<f32>, src: &[f32]| {
             dst.clear();
             dst.extend(hits.iter().map(|&j| src[j as usize]));

@@ -1,0 +1,167 @@
+//! Integration tests of the VPL application on small images.
+
+use glam::Vec3;
+use slc_cpu::SceneError;
+use slc_cpu::scene::Scene;
+use slc_cpu::vpl::{VplContext, VplMethod, VplSettings};
+use std::path::PathBuf;
+
+fn settings(method: VplMethod, frame: u32) -> VplSettings {
+    VplSettings { method, frame, denoise: false, error_bound: 0.01, ..VplSettings::default() }
+}
+
+/// E_ξ[SLC image] = unculled image, per pixel, through the real pipeline
+/// (tile culling included), by stratified quadrature over ξ: without denoise
+/// each pixel is a sum of per-light terms gᵢ(ξᵢ), so averaging frames in
+/// which every light gets the j-th stratum midpoint is the midpoint rule for
+/// every light at once. gᵢ is fᵢ/pᵢ on an interval ending at ξ = 1 and 0
+/// elsewhere, so each light's error is at most 2 strata × fᵢ/pᵢ / M, and
+/// Σᵢ fᵢ/pᵢ is the frame with every light kept (ξ → 1). Deterministic.
+#[test]
+fn slc_expectation_equals_unculled_per_pixel() {
+    let ctx = VplContext::new(&Scene::cornell_box(), 32, 32, 32, None).unwrap();
+    let fixed = |x: f32| VplSettings { fixed_xi: Some(x), ..settings(VplMethod::Slc, 0) };
+    let none = ctx.render(&settings(VplMethod::None, 0)).unwrap().image;
+    let all_kept = ctx.render(&fixed(slc_core::range::Xi::MAX.get())).unwrap().image;
+    const M: usize = 512;
+    let mut mean = vec![glam::DVec3::ZERO; none.data.len()];
+    for j in 0..M {
+        let img = ctx.render(&fixed((j as f32 + 0.5) / M as f32)).unwrap().image;
+        for (m, v) in mean.iter_mut().zip(&img.data) {
+            *m += v.as_dvec3() / M as f64;
+        }
+    }
+    let mut culled_somewhere = false;
+    for i in 0..mean.len() {
+        let truth = none.data[i].as_dvec3();
+        let bound = all_kept.data[i].as_dvec3() * (2.0 / M as f64) + truth.abs() * 1e-5 + 1e-9;
+        culled_somewhere |= (all_kept.data[i].as_dvec3() - truth).max_element() > 1e-3 * truth.max_element();
+        for c in 0..3 {
+            assert!((mean[i][c] - truth[c]).abs() <= bound[c], "pixel {i} channel {c}: E[slc] {} vs unculled {} (bound {})", mean[i][c], truth[c], bound[c]);
+        }
+    }
+    assert!(culled_somewhere, "the error bound culled nothing: the test would be vacuous");
+}
+
+/// Monte Carlo over seeds: the image mean of S independent SLC frames
+/// converges to the unculled image's mean, |mean − truth| ≤ 5 σ̂/√S with σ̂
+/// the sample standard deviation of the per-frame image means (about a
+/// thousand pixels of a thousand independent lights each, so the CLT holds).
+#[test]
+fn slc_mean_over_seeds_converges_to_unculled() {
+    let ctx = VplContext::new(&Scene::cornell_box(), 32, 32, 32, None).unwrap();
+    let truth = ctx.render(&settings(VplMethod::None, 0)).unwrap().image.mean();
+    const S: u32 = 256;
+    let means: Vec<f64> = (0..S).map(|f| {
+        let img = ctx.render(&settings(VplMethod::Slc, f)).unwrap().image;
+        assert!(img.is_finite());
+        img.mean()
+    }).collect();
+    let m = means.iter().sum::<f64>() / S as f64;
+    let var = means.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (S as f64 - 1.0);
+    assert!(var > 0.0, "frames do not vary: culling not exercised");
+    let bound = 5.0 * (var / S as f64).sqrt();
+    assert!((m - truth).abs() <= bound, "mean over seeds {m} vs unculled {truth} (5σ bound {bound})");
+}
+
+/// Clamped ranges drop distant lights without reweighting: the image is
+/// strictly darker than the unculled one (the bias SLC removes), while SLC's
+/// single frame is not systematically darker.
+#[test]
+fn clamped_ranges_darken() {
+    let ctx = VplContext::new(&Scene::cornell_box(), 48, 48, 32, None).unwrap();
+    let none = ctx.render(&settings(VplMethod::None, 0)).unwrap().image;
+    let clamp = ctx.render(&VplSettings { range: 0.1, ..settings(VplMethod::Clamp, 0) }).unwrap().image;
+    let direct_only = ctx.render(&VplSettings { range: 1e-6, ..settings(VplMethod::Clamp, 0) }).unwrap().image;
+    let indirect = |img: &slc_cpu::image::Image| img.mean() - direct_only.mean();
+    assert!(indirect(&none) > 0.0);
+    assert!(indirect(&clamp) < 0.8 * indirect(&none), "clamp {} vs none {}", indirect(&clamp), indirect(&none));
+    // Pixel-wise: clamp never exceeds none (it only removes terms).
+    for (c, n) in clamp.data.iter().zip(&none.data) {
+        assert!(c.cmple(*n + Vec3::splat(1e-6)).all());
+    }
+}
+
+#[test]
+fn reference_and_interleaved_images_agree_in_mean() {
+    // Interleaving with flux ×64 is itself unbiased: the image means agree.
+    let ctx = VplContext::new(&Scene::cornell_box(), 64, 64, 64, None).unwrap();
+    let reference = ctx.render(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() }).unwrap();
+    let none = ctx.render(&settings(VplMethod::None, 0)).unwrap();
+    let (a, b) = (reference.image.mean(), none.image.mean());
+    assert!((a - b).abs() < 0.02 * a, "reference {a} vs interleaved {b}");
+    assert_eq!(reference.stats.lights_per_pixel, 4096.0);
+    assert_eq!(none.stats.lights_per_pixel, 64.0);
+}
+
+fn shared(rel: &str) -> Option<PathBuf> {
+    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data").join(rel);
+    if p.exists() {
+        return Some(p);
+    }
+    assert!(std::env::var_os("CI").is_none(), "{} is missing in CI", p.display());
+    eprintln!("skipping: {} not found", p.display());
+    None
+}
+
+#[test]
+fn shared_cornell_obj_loads_and_renders() {
+    let Some(path) = shared("scenes/cornell-box/CornellBox-Original.obj") else { return };
+    let scene = Scene::load_obj(&path).unwrap();
+    // 5 walls + 2 boxes + light, quads split in two.
+    assert_eq!(scene.triangles.len(), 36);
+    let emissive = scene.material_of.iter().filter(|&&m| scene.materials[m as usize].emission.max_element() > 0.0).count();
+    assert_eq!(emissive, 2, "the light quad's Ke must be read");
+    let ctx = VplContext::new(&scene, 48, 48, 32, None).unwrap();
+    let f = ctx.render(&VplSettings::default()).unwrap();
+    assert!(f.image.is_finite());
+    assert!(f.image.mean() > 0.01, "image is black: {}", f.image.mean());
+}
+
+#[test]
+fn bad_obj_and_mtl_input_are_typed_errors() {
+    let dir = std::env::temp_dir().join(format!("slc-bad-obj-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let write = |name: &str, text: &str| {
+        let p = dir.join(name);
+        std::fs::write(&p, text).unwrap();
+        p
+    };
+    assert!(matches!(Scene::load_obj(&dir.join("missing.obj")), Err(SceneError::Io(..))));
+    assert!(matches!(Scene::load_obj(&write("empty.obj", "# nothing\n")), Err(SceneError::Empty)));
+    assert!(matches!(Scene::load_obj(&write("nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")), Err(SceneError::NonFiniteVertex(0))));
+    assert!(matches!(Scene::load_obj(&write("idx.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n")), Err(SceneError::Obj(..))));
+    write("neg.mtl", "newmtl m\nKd 0.5 0.5 0.5\nKe -1 0 0\n");
+    assert!(matches!(
+        Scene::load_obj(&write("neg.obj", "mtllib neg.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n")),
+        Err(SceneError::Invalid(_))
+    ));
+    for e in [SceneError::Empty, SceneError::NonFiniteVertex(3)] {
+        assert!(!e.to_string().is_empty());
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn bad_settings_are_typed_errors() {
+    let scene = Scene::cornell_box();
+    assert!(VplContext::new(&scene, 0, 10, 32, None).is_err());
+    assert!(VplContext::new(&scene, 10, 10, 30, None).is_err());
+    assert!(VplContext::new(&scene, 10, 10, 32, Some(f32::NAN)).is_err());
+    let ctx = VplContext::new(&scene, 16, 16, 16, None).unwrap();
+    for bad in [0.0, -1.0, f32::NAN, f32::INFINITY] {
+        assert!(ctx.render(&VplSettings { error_bound: bad, ..VplSettings::default() }).is_err());
+        assert!(ctx.render(&VplSettings { method: VplMethod::Clamp, range: bad, ..VplSettings::default() }).is_err());
+    }
+    assert!(ctx.render(&VplSettings { tile: 0, ..VplSettings::default() }).is_err());
+}
+
+#[test]
+fn renders_are_deterministic_per_seed() {
+    let ctx = VplContext::new(&Scene::cornell_box(), 40, 24, 32, None).unwrap();
+    let a = ctx.render(&VplSettings { seed: 7, ..VplSettings::default() }).unwrap().image;
+    let b = ctx.render(&VplSettings { seed: 7, ..VplSettings::default() }).unwrap().image;
+    let c = ctx.render(&VplSettings { seed: 8, ..VplSettings::default() }).unwrap().image;
+    assert_eq!(a, b);
+    assert_ne!(a, c);
+}
