@@ -171,18 +171,25 @@ impl Sphere {
     /// result is infinite.
     pub fn union(&self, o: &Sphere) -> Sphere {
         let d = (o.center - self.center).length();
-        if self.radius >= d + o.radius {
+        let scale = |r: f32, c: Vec3| (r + c.abs().max_element()) * PAD;
+        // One contains the other with a clear margin: return it unchanged.
+        if self.radius >= d + o.radius + scale(self.radius, self.center) {
             return *self;
         }
-        if o.radius >= d + self.radius {
+        if o.radius >= d + self.radius + scale(o.radius, o.center) {
             return *o;
+        }
+        // Nearly nested: the larger one, grown to hold the other in f32.
+        if (self.radius - o.radius).abs() >= d {
+            let (big, small) = if self.radius >= o.radius { (self, o) } else { (o, self) };
+            let r = big.radius.max(d + small.radius);
+            return Sphere { center: big.center, radius: r + scale(r, big.center) };
         }
         let r = 0.5 * (d + self.radius + o.radius);
         // d > |r1 − r2| ≥ 0 here, so the division is safe.
         let center = self.center + (o.center - self.center) * ((r - self.radius) / d);
         let r = r.max((center - self.center).length() + self.radius).max((center - o.center).length() + o.radius);
-        let scale = r + center.abs().max_element();
-        Sphere { center, radius: r + scale * PAD }
+        Sphere { center, radius: r + scale(r, center) }
     }
 }
 
