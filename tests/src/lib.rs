@@ -9,7 +9,11 @@
 //! cases on the GPU. GPU tests skip with a one-line reason without an
 //! adapter, and fail instead when `SLC_REQUIRE_GPU=1` (as in CI).
 //!
+//! The property the parity tests check on both backends, shown on the CPU:
+//! a light at `d² = 1.5` with `r_t² = 1` survives for `ξ = 0.5` (`r² = 2`).
+//!
 //! ```
-//! // Nothing to run yet; the crate builds so the workspace layout is final.
+//! use slc_core::range::{random_range2, slc_keep};
+//! assert!(slc_keep(random_range2(1.0, 0.5), 1.5));
 //! ```
 #![deny(missing_docs)]
