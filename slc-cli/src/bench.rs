@@ -5,7 +5,7 @@
 use crate::SceneArgs;
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use slc_cpu::reference::vpl_reference;
 use slc_cpu::vpl::{VplFrame, VplMethod, VplSettings};
 use std::path::PathBuf;
@@ -35,43 +35,67 @@ pub struct BenchArgs {
     /// Also write the runs as CSV.
     #[arg(long)]
     csv: Option<PathBuf>,
+    /// Also plot RMSE against shading time (.svg or .png).
+    #[arg(long)]
+    plot: Option<PathBuf>,
 }
 
-#[derive(Serialize)]
-struct Run {
-    method: &'static str,
-    param: Option<f32>,
-    shading_ms: f64,
-    total_ms: f64,
-    rmse: f64,
-    lights_per_pixel: f64,
-    kept_per_pixel: f64,
-    evaluations_per_second: f64,
+/// One configuration's measurements.
+#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
+pub struct Run {
+    /// `slc`, `clamp` or `none`.
+    pub method: String,
+    /// Error bound ε (slc) or range R (clamp).
+    pub param: Option<f32>,
+    /// Culling and shading time (ms).
+    pub shading_ms: f64,
+    /// Whole frame (ms): G-buffer, RSM, direct, shading, denoise.
+    pub total_ms: f64,
+    /// RMSE of the final image against the reference.
+    pub rmse: f64,
+    /// Lights in the tile lists per shaded pixel (work of the loop).
+    pub lights_per_pixel: f64,
+    /// Lights kept by the roulette per shaded pixel.
+    pub kept_per_pixel: f64,
+    /// Loop evaluations per second of shading time (culling included).
+    pub evaluations_per_second: f64,
 }
 
-#[derive(Serialize)]
-struct Report {
-    app: &'static str,
-    backend: &'static str,
-    scene: String,
-    width: u32,
-    height: u32,
-    lights: usize,
-    timing: &'static str,
-    threads: usize,
-    reference_from_cache: bool,
-    runs: Vec<Run>,
+/// The JSON written by `slc bench`.
+#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
+pub struct Report {
+    /// Application (`vpl`).
+    pub app: String,
+    /// Backend (`cpu`).
+    pub backend: String,
+    /// Scene name.
+    pub scene: String,
+    /// Image width.
+    pub width: u32,
+    /// Image height.
+    pub height: u32,
+    /// Number of lights (VPLs).
+    pub lights: usize,
+    /// How times were taken.
+    pub timing: String,
+    /// Worker threads.
+    pub threads: usize,
+    /// Whether the reference came from the cache.
+    pub reference_from_cache: bool,
+    /// One entry per configuration.
+    pub runs: Vec<Run>,
 }
 
 pub fn run(a: BenchArgs) -> Result<(), String> {
-    let ctx = a.scene.context()?;
+    let loaded = a.scene.load()?;
+    let ctx = &loaded.ctx;
     let mut configs: Vec<(VplMethod, Option<f32>)> = vec![(VplMethod::None, None)];
     configs.extend(a.error_bounds.iter().map(|&e| (VplMethod::Slc, Some(e))));
     configs.extend(a.ranges.iter().map(|&r| (VplMethod::Clamp, Some(r))));
     let bar = ProgressBar::new(configs.len() as u64 + 1);
     bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} {msg}").map_err(|e| e.to_string())?);
     bar.set_message("reference (all VPLs at every pixel)");
-    let (reference, cached) = vpl_reference(&ctx, Some(&a.cache_dir)).map_err(|e| e.to_string())?;
+    let (reference, cached) = vpl_reference(ctx, Some(&a.cache_dir)).map_err(|e| e.to_string())?;
     bar.inc(1);
     let mut runs = Vec::new();
     for (method, param) in configs {
@@ -80,7 +104,7 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
             method,
             error_bound: if method == VplMethod::Slc { param.unwrap_or(0.0) } else { VplSettings::default().error_bound },
             range: if method == VplMethod::Clamp { param.unwrap_or(0.0) } else { VplSettings::default().range },
-            exposure: a.scene.exposure,
+            exposure: loaded.exposure,
             seed: a.seed,
             tile: a.scene.tile,
             ..VplSettings::default()
@@ -94,7 +118,7 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
         }
         let f = best.expect("at least one run");
         runs.push(Run {
-            method: method.name(),
+            method: method.name().to_string(),
             param,
             shading_ms: f.stats.shading_ms,
             total_ms: f.stats.total_ms,
@@ -107,13 +131,13 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
     }
     bar.finish_and_clear();
     let report = Report {
-        app: "vpl",
-        backend: "cpu",
+        app: "vpl".into(),
+        backend: "cpu".into(),
         scene: ctx.scene().name.clone(),
-        width: a.scene.width,
-        height: a.scene.height,
+        width: loaded.width,
+        height: loaded.height,
         lights: ctx.vpls().len(),
-        timing: "wall clock, fastest of --repeat runs",
+        timing: "wall clock, fastest of --repeat runs".into(),
         threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
         reference_from_cache: cached,
         runs,
@@ -121,11 +145,10 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
     let json = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;
     std::fs::write(&a.json, json).map_err(|e| format!("cannot write {}: {e}", a.json.display()))?;
     if let Some(csv) = &a.csv {
-        let mut s = String::from("method,param,shading_ms,total_ms,rmse,lights_per_pixel,kept_per_pixel,evaluations_per_second\n");
-        for r in &report.runs {
-            s += &format!("{},{},{:.4},{:.4},{:.6},{:.3},{:.3},{:.4e}\n", r.method, r.param.map_or(String::new(), |p| p.to_string()), r.shading_ms, r.total_ms, r.rmse, r.lights_per_pixel, r.kept_per_pixel, r.evaluations_per_second);
-        }
-        std::fs::write(csv, s).map_err(|e| format!("cannot write {}: {e}", csv.display()))?;
+        std::fs::write(csv, to_csv(&report)).map_err(|e| format!("cannot write {}: {e}", csv.display()))?;
+    }
+    if let Some(plot) = &a.plot {
+        crate::plot::speed_vs_error(&report, plot)?;
     }
     println!("{} {}x{}, {} VPLs, {} threads (reference {})", report.scene, report.width, report.height, report.lights, report.threads, if cached { "from cache" } else { "rendered" });
     println!("{:<8} {:>8} {:>11} {:>10} {:>9} {:>9} {:>9} {:>10}", "method", "param", "shading ms", "total ms", "rmse", "lights/px", "kept/px", "evals/s");
@@ -143,4 +166,23 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
         );
     }
     Ok(())
+}
+
+/// The runs as CSV, one line per configuration.
+pub fn to_csv(report: &Report) -> String {
+    let mut s = String::from("method,param,shading_ms,total_ms,rmse,lights_per_pixel,kept_per_pixel,evaluations_per_second\n");
+    for r in &report.runs {
+        s += &format!(
+            "{},{},{:.4},{:.4},{:.6},{:.3},{:.3},{:.4e}\n",
+            r.method,
+            r.param.map_or(String::new(), |p| p.to_string()),
+            r.shading_ms,
+            r.total_ms,
+            r.rmse,
+            r.lights_per_pixel,
+            r.kept_per_pixel,
+            r.evaluations_per_second
+        );
+    }
+    s
 }

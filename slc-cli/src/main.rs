@@ -6,10 +6,13 @@
 //! interleaved image.
 
 mod bench;
+mod diff;
+mod plot;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use slc_cpu::image::Image;
 use slc_cpu::scene::Scene;
+use slc_cpu::scene_file::{RenderSettings, SceneFile};
 use slc_cpu::vpl::{VplContext, VplMethod, VplSettings};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -32,6 +35,19 @@ enum Command {
     Ies {
         /// The .ies file.
         file: PathBuf,
+        /// Write a polar candela plot (.svg or .png).
+        #[arg(long)]
+        plot: Option<PathBuf>,
+    },
+    /// Compare two EXR images: RMSE, relative RMSE, max difference, NaN/inf.
+    Diff(diff::DiffArgs),
+    /// Plot a `slc bench` JSON report again (.svg or .png).
+    Plot {
+        /// The JSON written by `slc bench --json`.
+        json: PathBuf,
+        /// Output plot.
+        #[arg(long)]
+        out: PathBuf,
     },
 }
 
@@ -68,7 +84,8 @@ impl From<Method> for VplMethod {
     }
 }
 
-/// Scene and image options shared by render and bench.
+/// Scene and image options shared by render and bench. Values resolve as:
+/// command-line flag, else the scene file's `[render]`, else the default.
 #[derive(Args, Clone, Debug)]
 pub struct SceneArgs {
     /// Application.
@@ -77,21 +94,21 @@ pub struct SceneArgs {
     /// Backend.
     #[arg(long, value_enum, default_value = "cpu")]
     pub backend: Backend,
-    /// `cornell` (built in) or a path to an OBJ file (with its MTL).
+    /// `cornell` (built in), an OBJ file (with its MTL), or a TOML scene file.
     #[arg(long, default_value = "cornell")]
     pub scene: String,
-    /// Image width.
-    #[arg(long, default_value_t = 512)]
-    pub width: u32,
-    /// Image height.
-    #[arg(long, default_value_t = 512)]
-    pub height: u32,
-    /// Number of VPLs: s·s with s a multiple of 8 (4096, 16384, 65536, 262144).
-    #[arg(long, default_value_t = 65536)]
-    pub vpls: u64,
-    /// Exposure E (used by the error bound and the PNG preview).
-    #[arg(long, default_value_t = 1.0)]
-    pub exposure: f32,
+    /// Image width [default: 512].
+    #[arg(long)]
+    pub width: Option<u32>,
+    /// Image height [default: 512].
+    #[arg(long)]
+    pub height: Option<u32>,
+    /// Number of VPLs: s·s with s a multiple of 8 (4096, 16384, 65536, 262144) [default: 65536].
+    #[arg(long)]
+    pub vpls: Option<u64>,
+    /// Exposure E, used by the error bound and the PNG preview [default: 1].
+    #[arg(long)]
+    pub exposure: Option<f32>,
     /// Clamp distance of the VPL fall-off (default: 1% of the scene diagonal).
     #[arg(long)]
     pub min_distance: Option<f32>,
@@ -100,19 +117,41 @@ pub struct SceneArgs {
     pub tile: u32,
 }
 
+/// A scene ready to render, with its resolved settings.
+pub struct Loaded {
+    /// Shared buffers of the VPL application.
+    pub ctx: VplContext,
+    /// Image width.
+    pub width: u32,
+    /// Image height.
+    pub height: u32,
+    /// Exposure.
+    pub exposure: f32,
+    /// The scene file's `[render]` (empty for built-in and OBJ scenes).
+    pub file: RenderSettings,
+}
+
 impl SceneArgs {
     /// Loads the scene and builds the shared VPL context.
-    pub fn context(&self) -> Result<VplContext, String> {
-        let scene = if self.scene == "cornell" {
-            Scene::cornell_box()
+    pub fn load(&self) -> Result<Loaded, String> {
+        let (scene, file) = if self.scene == "cornell" {
+            (Scene::cornell_box(), RenderSettings::default())
+        } else if self.scene.ends_with(".toml") {
+            let f = SceneFile::load(Path::new(&self.scene)).map_err(|e| e.to_string())?;
+            (f.scene, f.render)
         } else {
-            Scene::load_obj(Path::new(&self.scene)).map_err(|e| e.to_string())?
+            (Scene::load_obj(Path::new(&self.scene)).map_err(|e| e.to_string())?, RenderSettings::default())
         };
-        let s = (self.vpls as f64).sqrt() as u64;
-        if s * s != self.vpls {
-            return Err(slc_cpu::RenderError::VplCount(self.vpls).to_string());
+        let width = self.width.or(file.width).unwrap_or(512);
+        let height = self.height.or(file.height).unwrap_or(512);
+        let vpls = self.vpls.or(file.vpls).unwrap_or(65536);
+        let exposure = self.exposure.or(file.exposure).unwrap_or(1.0);
+        let s = (vpls as f64).sqrt() as u64;
+        if s * s != vpls || s > u32::MAX as u64 {
+            return Err(slc_cpu::RenderError::VplCount(vpls).to_string());
         }
-        VplContext::new(&scene, self.width, self.height, s as u32, self.min_distance).map_err(|e| e.to_string())
+        let ctx = VplContext::new(&scene, width, height, s as u32, self.min_distance).map_err(|e| e.to_string())?;
+        Ok(Loaded { ctx, width, height, exposure, file })
     }
 }
 
@@ -120,18 +159,19 @@ impl SceneArgs {
 struct RenderArgs {
     #[command(flatten)]
     scene: SceneArgs,
-    /// Light culling method.
-    #[arg(long, value_enum, default_value = "slc")]
-    method: Method,
-    /// SLC error bound ε (max standard deviation one light adds to a pixel).
-    #[arg(long, default_value_t = VplSettings::default().error_bound)]
-    error_bound: f32,
-    /// Clamp range R (scene units) for --method clamp.
-    #[arg(long, default_value_t = VplSettings::default().range)]
-    range: f32,
-    /// Seed of the per-light random numbers.
-    #[arg(long, default_value_t = 1)]
-    seed: u32,
+    /// Light culling method [default: slc].
+    #[arg(long, value_enum)]
+    method: Option<Method>,
+    /// SLC error bound ε, the largest standard deviation one light may add
+    /// to a pixel [default: 0.008].
+    #[arg(long)]
+    error_bound: Option<f32>,
+    /// Clamp range R (scene units) for --method clamp [default: 0.1].
+    #[arg(long)]
+    range: Option<f32>,
+    /// Seed of the per-light random numbers [default: 1].
+    #[arg(long)]
+    seed: Option<u32>,
     /// Skip the cross-bilateral filter.
     #[arg(long)]
     no_denoise: bool,
@@ -147,7 +187,9 @@ fn main() -> ExitCode {
         None => Err("no command".to_string()),
         Some(Command::Render(a)) => render(a),
         Some(Command::Bench(a)) => bench::run(a),
-        Some(Command::Ies { file }) => ies(&file),
+        Some(Command::Ies { file, plot }) => ies(&file, plot.as_deref()),
+        Some(Command::Diff(a)) => diff::run(a),
+        Some(Command::Plot { json, out }) => replot(&json, &out),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -160,21 +202,33 @@ fn main() -> ExitCode {
 
 fn render(a: RenderArgs) -> Result<(), String> {
     let t0 = Instant::now();
-    let ctx = a.scene.context()?;
+    let loaded = a.scene.load()?;
+    let (ctx, f) = (&loaded.ctx, &loaded.file);
+    let method = match a.method {
+        Some(m) => m.into(),
+        None => match f.method.as_deref() {
+            None | Some("slc") => VplMethod::Slc,
+            Some("clamp") => VplMethod::Clamp,
+            Some("none") => VplMethod::None,
+            Some("reference") => VplMethod::Reference,
+            Some(m) => return Err(format!("scene file [render] method '{m}' is not one of slc, clamp, none, reference")),
+        },
+    };
+    let d = VplSettings::default();
     let settings = VplSettings {
-        method: a.method.into(),
-        error_bound: a.error_bound,
-        range: a.range,
-        exposure: a.scene.exposure,
-        seed: a.seed,
+        method,
+        error_bound: a.error_bound.or(f.error_bound).unwrap_or(d.error_bound),
+        range: a.range.or(f.range).unwrap_or(d.range),
+        exposure: loaded.exposure,
+        seed: a.seed.or(f.seed).unwrap_or(d.seed),
         denoise: !a.no_denoise,
         tile: a.scene.tile,
-        ..VplSettings::default()
+        ..d
     };
     let frame = ctx.render(&settings).map_err(|e| e.to_string())?;
-    write_outputs(&frame.image, &a.out, a.scene.exposure)?;
+    write_outputs(&frame.image, &a.out, loaded.exposure)?;
     let st = frame.stats;
-    println!("slc render: {} {}x{}, {} VPLs, method {}", ctx.scene().name, a.scene.width, a.scene.height, st.vpls, settings.method.name());
+    println!("slc render: {} {}x{}, {} VPLs, method {}", ctx.scene().name, loaded.width, loaded.height, st.vpls, settings.method.name());
     println!("  time        {:.1} ms total, {:.1} ms shading (G-buffer {:.1}, RSM {:.1}, direct {:.1}, denoise {:.1})", st.total_ms, st.shading_ms, st.gbuffer_ms, st.rsm_ms, st.direct_ms, st.denoise_ms);
     println!("  lights/px   {:.1} tested, {:.1} kept", st.lights_per_pixel, st.kept_per_pixel);
     if settings.method != VplMethod::None && settings.method != VplMethod::Reference {
@@ -196,7 +250,15 @@ pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> Result<(), Strin
     img.write_png(&out.with_extension("png"), exposure).map_err(|e| e.to_string())
 }
 
-fn ies(path: &Path) -> Result<(), String> {
+fn replot(json: &Path, out: &Path) -> Result<(), String> {
+    let text = std::fs::read_to_string(json).map_err(|e| format!("cannot read {}: {e}", json.display()))?;
+    let report: bench::Report = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", json.display()))?;
+    plot::speed_vs_error(&report, out)?;
+    println!("wrote {}", out.display());
+    Ok(())
+}
+
+fn ies(path: &Path, plot_path: Option<&Path>) -> Result<(), String> {
     let bytes = std::fs::read(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
     let p = slc_core::ies::IesProfile::parse_bytes(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
     println!("{}", path.display());
@@ -215,5 +277,10 @@ fn ies(path: &Path) -> Result<(), String> {
     println!("  horizontal angles   {} from {} to {}", p.horizontal.len(), p.horizontal[0], p.horizontal[p.horizontal.len() - 1]);
     println!("  peak candela        {:.1} cd", p.max_candela());
     println!("  total flux          {:.1} lm (integrated from the table)", p.total_flux());
+    if let Some(out) = plot_path {
+        let name = path.file_name().map_or(String::new(), |n| n.to_string_lossy().into_owned());
+        plot::ies_polar(&p, &format!("{name}: candela, peak {:.0} cd", p.max_candela()), out)?;
+        println!("  plot                {}", out.display());
+    }
     Ok(())
 }

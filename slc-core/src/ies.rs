@@ -303,11 +303,10 @@ impl IesProfile {
                 let v = rest.trim_start().strip_prefix('=').unwrap_or(rest).trim();
                 break (n, v);
             }
-            if format != IesFormat::Lm63_1986 && l.starts_with('[') {
-                if let Some(end) = l.find(']') {
+            if format != IesFormat::Lm63_1986 && l.starts_with('[')
+                && let Some(end) = l.find(']') {
                     keywords.push((l[1..end].to_string(), l[end + 1..].trim().to_string()));
                 }
-            }
         };
         let mut toks = Vec::new();
         let mut last_line = tilt_line;

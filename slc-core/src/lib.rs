@@ -35,6 +35,8 @@
 //! ```
 #![no_std]
 #![deny(missing_docs)]
+// `!(x > 0.0)` is how the validators reject NaN along with the bad range.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 extern crate alloc;
 

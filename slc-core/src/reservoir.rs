@@ -186,7 +186,7 @@ mod tests {
         let bits = [(0u32, 0u32), (u32::MAX, u32::MAX), (0x8000_0000, 0), (0x1234_5678, 0x9abc_def0), (u32::MAX, 0)];
         for &n in &ns {
             for &(hi, lo) in &bits {
-                let r = (((hi as u128) << 32 | lo as u128) * n as u128 >> 64) as u32;
+                let r = ((((hi as u128) << 32 | lo as u128) * n as u128) >> 64) as u32;
                 let j = uniform_index(n, hi, lo);
                 assert_eq!(j, r, "n {n} hi {hi} lo {lo}");
                 assert!(j < n);

@@ -200,7 +200,10 @@ macro_rules! shared {
     };
     (@acc [$($w:expr),*]
         $(#[$m:meta])* pub const $name:ident : $ty:ty = $val:expr ; $($rest:tt)*) => {
-        $(#[$m])* pub const $name: $ty = $val;
+        // WGSL has no `core::f32::consts`: constants are written as literals.
+        $(#[$m])*
+        #[allow(clippy::approx_constant, clippy::excessive_precision)]
+        pub const $name: $ty = $val;
         $crate::shared!(@acc [$($w,)* stringify!(const $name: $ty = $val;)] $($rest)*);
     };
     (@acc [$($w:expr),*]

@@ -239,13 +239,11 @@ proptest! {
             let (c, r) = ((pts[i].as_dvec3() + pts[j].as_dvec3()) * 0.5, (pts[i].as_dvec3() - pts[j].as_dvec3()).length() * 0.5);
             if holds(c, r) { best = best.min(r); }
             for k in j + 1..n {
-                if let Some((c, r)) = circle3(pts[i].as_dvec3(), pts[j].as_dvec3(), pts[k].as_dvec3()) {
-                    if holds(c, r) { best = best.min(r); }
-                }
+                if let Some((c, r)) = circle3(pts[i].as_dvec3(), pts[j].as_dvec3(), pts[k].as_dvec3())
+                    && holds(c, r) { best = best.min(r); }
                 for l in k + 1..n {
-                    if let Some((c, r)) = sphere4(pts[i].as_dvec3(), pts[j].as_dvec3(), pts[k].as_dvec3(), pts[l].as_dvec3()) {
-                        if holds(c, r) { best = best.min(r); }
-                    }
+                    if let Some((c, r)) = sphere4(pts[i].as_dvec3(), pts[j].as_dvec3(), pts[k].as_dvec3(), pts[l].as_dvec3())
+                        && holds(c, r) { best = best.min(r); }
                 }
             }
         }}

@@ -66,16 +66,21 @@ impl Image {
     /// Writes an 8-bit sRGB PNG preview: `exposure · L`, then Reinhard-style
     /// `x/(1+x)` per channel scaled so that 1.0 maps near white, then sRGB.
     pub fn write_png(&self, path: &Path, exposure: f32) -> Result<(), OutputError> {
-        let err = |e: String| OutputError(path.display().to_string(), e);
-        let file = std::fs::File::create(path).map_err(|e| err(e.to_string()))?;
-        let mut enc = png::Encoder::new(std::io::BufWriter::new(file), self.width, self.height);
-        enc.set_color(png::ColorType::Rgb);
-        enc.set_depth(png::BitDepth::Eight);
-        let mut writer = enc.write_header().map_err(|e| err(e.to_string()))?;
         let bytes: Vec<u8> = self.data.iter().flat_map(|p| tonemap(*p * exposure)).collect();
-        writer.write_image_data(&bytes).map_err(|e| err(e.to_string()))?;
-        writer.finish().map_err(|e| err(e.to_string()))
+        write_rgb8_png(path, self.width, self.height, &bytes)
     }
+}
+
+/// Writes 8-bit RGB bytes (`width × height × 3`, row-major) as a PNG.
+pub fn write_rgb8_png(path: &Path, width: u32, height: u32, bytes: &[u8]) -> Result<(), OutputError> {
+    let err = |e: String| OutputError(path.display().to_string(), e);
+    let file = std::fs::File::create(path).map_err(|e| err(e.to_string()))?;
+    let mut enc = png::Encoder::new(std::io::BufWriter::new(file), width, height);
+    enc.set_color(png::ColorType::Rgb);
+    enc.set_depth(png::BitDepth::Eight);
+    let mut writer = enc.write_header().map_err(|e| err(e.to_string()))?;
+    writer.write_image_data(bytes).map_err(|e| err(e.to_string()))?;
+    writer.finish().map_err(|e| err(e.to_string()))
 }
 
 /// Display mapping used by the PNG previews.

@@ -21,12 +21,15 @@
 //! assert!(frame.image.is_finite() && frame.image.mean() > 0.0);
 //! ```
 #![deny(missing_docs)]
+// `!(x > 0.0)` is how the validators reject NaN along with the bad range.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod gbuffer;
 pub mod geometry;
 pub mod image;
 pub mod reference;
 pub mod scene;
+pub mod scene_file;
 pub mod vpl;
 
 use thiserror::Error;
@@ -49,6 +52,9 @@ pub enum SceneError {
     /// Another invalid value.
     #[error("invalid scene: {0}")]
     Invalid(String),
+    /// A scene file that does not parse or holds a bad value.
+    #[error("scene file {0}: {1}")]
+    File(String, String),
 }
 
 /// Invalid render settings.

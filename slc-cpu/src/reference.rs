@@ -43,13 +43,11 @@ pub fn vpl_reference_key(ctx: &VplContext) -> u64 {
 /// Returns the image and whether it came from the cache.
 pub fn vpl_reference(ctx: &VplContext, cache_dir: Option<&Path>) -> Result<(Image, bool), RenderError> {
     let path = cache_dir.map(|d| d.join(format!("vpl-reference-{:016x}.bin", vpl_reference_key(ctx))));
-    if let Some(p) = &path {
-        if let Some(img) = read_raw(p) {
-            if (img.width, img.height) == (ctx.gbuffer().width, ctx.gbuffer().height) {
+    if let Some(p) = &path
+        && let Some(img) = read_raw(p)
+            && (img.width, img.height) == (ctx.gbuffer().width, ctx.gbuffer().height) {
                 return Ok((img, true));
             }
-        }
-    }
     let frame = ctx.render(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() })?;
     if let Some(p) = &path {
         write_raw(p, &frame.image).map_err(|e| RenderError::Setting(e.to_string()))?;

@@ -86,7 +86,7 @@ impl Default for VplSettings {
     fn default() -> Self {
         VplSettings {
             method: VplMethod::Slc,
-            error_bound: 0.002,
+            error_bound: 0.008,
             range: 0.1,
             exposure: 1.0,
             seed: 1,
@@ -159,7 +159,7 @@ impl VplContext {
         if !(1..=16384).contains(&width) || !(1..=16384).contains(&height) {
             return Err(RenderError::Size(width, height));
         }
-        if rsm_size == 0 || rsm_size % PERIOD != 0 || rsm_size > 4096 {
+        if rsm_size == 0 || !rsm_size.is_multiple_of(PERIOD) || rsm_size > 4096 {
             return Err(RenderError::VplCount((rsm_size as u64).pow(2)));
         }
         let min_distance = min_distance.unwrap_or(0.01 * scene.diagonal());
@@ -273,7 +273,9 @@ impl VplContext {
         };
         let (w, h) = (gb.width as usize, gb.height as usize);
         let tile = s.tile as usize;
-        let results: Vec<(Vec<(usize, Vec3)>, u64, u64)> = (0..subsets)
+        // Per subset: (pixel, irradiance) pairs, loop evaluations, kept lights.
+        type SubsetResult = (Vec<(usize, Vec3)>, u64, u64);
+        let results: Vec<SubsetResult> = (0..subsets)
             .into_par_iter()
             .map(|sub| {
                 let (sx, sy) = (sub % p, sub / p);

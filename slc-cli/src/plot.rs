@@ -1,0 +1,225 @@
+//! Plots with plotters: speed against error for `slc bench`, the polar
+//! candela curve for `slc ies`. `.svg` or `.png` by the file's extension;
+//! PNG text uses the Ubuntu font bundled by `epaint_default_fonts`, so no
+//! system font is needed.
+
+use crate::bench::Report;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::path::Path;
+use std::sync::Once;
+
+fn register_font() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        // Registration fails only for unparsable font data, which a bundled
+        // font is not; the SVG backend never needs it.
+        let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, epaint_default_fonts::UBUNTU_LIGHT);
+    });
+}
+
+/// Draws with `draw` onto an SVG or PNG of `size` chosen by `path`'s extension.
+fn with_backend(
+    path: &Path,
+    size: (u32, u32),
+    draw: impl FnOnce(&DrawingArea<SVGBackend<'_>, Shift>) -> Result<(), String>,
+    draw_png: impl FnOnce(&DrawingArea<BitMapBackend<'_>, Shift>) -> Result<(), String>,
+) -> Result<(), String> {
+    // Both backends measure text with the registered font.
+    register_font();
+    match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
+        Some("svg") => {
+            let root = SVGBackend::new(path, size).into_drawing_area();
+            draw(&root)?;
+            root.present().map_err(|e| format!("cannot write {}: {e}", path.display()))
+        }
+        Some("png") => {
+            let root = BitMapBackend::new(path, size).into_drawing_area();
+            draw_png(&root)?;
+            root.present().map_err(|e| format!("cannot write {}: {e}", path.display()))
+        }
+        _ => Err(format!("plot file {} must end in .svg or .png", path.display())),
+    }
+}
+
+/// Colour of each method in every plot.
+pub fn method_color(method: &str) -> RGBColor {
+    match method {
+        "slc" => RGBColor(31, 119, 180),
+        "clamp" => RGBColor(214, 39, 40),
+        "none" => RGBColor(40, 40, 40),
+        "reference" => RGBColor(120, 120, 120),
+        _ => RGBColor(44, 160, 44),
+    }
+}
+
+/// Points of `pts` (time, error) not beaten by a faster-and-better point,
+/// sorted by time.
+pub fn pareto_front(pts: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let mut v: Vec<(f64, f64)> = pts.to_vec();
+    v.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let mut front: Vec<(f64, f64)> = Vec::new();
+    for p in v {
+        if front.last().is_none_or(|l| p.1 < l.1) {
+            front.push(p);
+        }
+    }
+    front
+}
+
+/// RMSE (log) against shading time (log), one point per run, each method's
+/// Pareto front joined by a line.
+pub fn speed_vs_error(report: &Report, path: &Path) -> Result<(), String> {
+    with_backend(path, (960, 640), |a| speed_vs_error_on(report, a), |a| speed_vs_error_on(report, a))
+}
+
+fn speed_vs_error_on<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
+    let err = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    root.fill(&WHITE).map_err(err)?;
+    let runs: Vec<_> = report.runs.iter().filter(|r| r.rmse > 0.0 && r.shading_ms > 0.0).collect();
+    if runs.is_empty() {
+        return Err("no run with positive RMSE and time to plot".into());
+    }
+    let (tmin, tmax) = runs.iter().fold((f64::MAX, 0.0f64), |(a, b), r| (a.min(r.shading_ms), b.max(r.shading_ms)));
+    let (emin, emax) = runs.iter().fold((f64::MAX, 0.0f64), |(a, b), r| (a.min(r.rmse), b.max(r.rmse)));
+    let title = format!(
+        "Speed vs error: {} {}x{}, {} lights, {} backend",
+        report.scene, report.width, report.height, report.lights, report.backend
+    );
+    let mut chart = ChartBuilder::on(root)
+        .caption(title, ("sans-serif", 24))
+        .margin(16)
+        .x_label_area_size(48)
+        .y_label_area_size(72)
+        // log10 of both on linear axes: evenly spaced, always-labelled ticks.
+        .build_cartesian_2d((tmin / 1.4).log10()..(tmax * 1.4).log10(), (emin / 1.4).log10()..(emax * 1.4).log10())
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc("shading time (ms, log scale)")
+        .y_desc("RMSE vs reference (log scale)")
+        .label_style(("sans-serif", 16))
+        .axis_desc_style(("sans-serif", 18))
+        .x_labels(12)
+        .y_labels(12)
+        .x_label_formatter(&|v| {
+            let t = 10f64.powf(*v);
+            if t < 10.0 { format!("{t:.2}") } else { format!("{t:.0}") }
+        })
+        .y_label_formatter(&|v| format!("{:.1e}", 10f64.powf(*v)))
+        .draw()
+        .map_err(err)?;
+    let mut methods: Vec<&str> = runs.iter().map(|r| r.method.as_str()).collect();
+    methods.dedup();
+    methods.sort();
+    methods.dedup();
+    for m in methods {
+        let color = method_color(m);
+        let pts: Vec<(f64, f64)> =
+            runs.iter().filter(|r| r.method == m).map(|r| (r.shading_ms.log10(), r.rmse.log10())).collect();
+        let front = pareto_front(&pts);
+        chart
+            .draw_series(LineSeries::new(front, color.stroke_width(2)))
+            .map_err(err)?
+            .label(m.to_string())
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
+        chart.draw_series(pts.iter().map(|&p| Circle::new(p, 5, color.filled()))).map_err(err)?;
+        chart
+            .draw_series(runs.iter().filter(|r| r.method == m && r.param.is_some()).map(|r| {
+                Text::new(
+                    format!("{}", r.param.unwrap_or_default()),
+                    ((r.shading_ms * 1.02).log10(), (r.rmse * 1.06).log10()),
+                    ("sans-serif", 13).into_font().color(&color),
+                )
+            }))
+            .map_err(err)?;
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 18))
+        .position(SeriesLabelPosition::UpperRight)
+        .draw()
+        .map_err(err)?;
+    Ok(())
+}
+
+/// Polar candela plot of an IES profile: the C = 0°/180° and C = 90°/270°
+/// planes, γ = 0° (nadir) pointing down, rings of equal candela.
+pub fn ies_polar(p: &slc_core::ies::IesProfile, title: &str, path: &Path) -> Result<(), String> {
+    with_backend(path, (720, 760), |a| ies_polar_on(p, title, a), |a| ies_polar_on(p, title, a))
+}
+
+fn ies_polar_on<DB: DrawingBackend>(p: &slc_core::ies::IesProfile, title: &str, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
+    let err = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    root.fill(&WHITE).map_err(err)?;
+    let peak = (p.max_candela() as f64).max(1e-9);
+    let mut chart = ChartBuilder::on(root)
+        .caption(title, ("sans-serif", 22))
+        .margin(20)
+        .build_cartesian_2d(-1.15..1.15, -1.15..1.15)
+        .map_err(err)?;
+    // Rings at 25%, 50%, 75%, 100% of the peak, and 30° spokes.
+    for k in 1..=4 {
+        let r = k as f64 / 4.0;
+        let ring: Vec<(f64, f64)> = (0..=120).map(|i| {
+            let a = i as f64 / 120.0 * std::f64::consts::TAU;
+            (r * a.cos(), r * a.sin())
+        }).collect();
+        chart.draw_series(LineSeries::new(ring, RGBColor(200, 200, 200))).map_err(err)?;
+        chart
+            .draw_series(std::iter::once(Text::new(format!("{:.0} cd", peak * r), (0.02, -r + 0.02), ("sans-serif", 14))))
+            .map_err(err)?;
+    }
+    for k in 0..12 {
+        let a = k as f64 * std::f64::consts::PI / 6.0;
+        chart.draw_series(LineSeries::new([(0.0, 0.0), (a.sin(), -a.cos())], RGBColor(225, 225, 225))).map_err(err)?;
+    }
+    let curve = |c_right: f32, c_left: f32| -> Vec<(f64, f64)> {
+        // Right half: plane c_right, γ from 0 (down) to 180 (up); left half: c_left back down.
+        let mut v: Vec<(f64, f64)> = (0..=360).map(|i| {
+            let g = i as f64 * 0.5;
+            let r = p.candela_at(g as f32, c_right) as f64 / peak;
+            (r * g.to_radians().sin(), -r * g.to_radians().cos())
+        }).collect();
+        v.extend((0..=360).rev().map(|i| {
+            let g = i as f64 * 0.5;
+            let r = p.candela_at(g as f32, c_left) as f64 / peak;
+            (-r * g.to_radians().sin(), -r * g.to_radians().cos())
+        }));
+        v
+    };
+    let c0 = RGBColor(31, 119, 180);
+    let c90 = RGBColor(214, 39, 40);
+    chart
+        .draw_series(LineSeries::new(curve(0.0, 180.0), c0.stroke_width(2)))
+        .map_err(err)?
+        .label("C = 0° / 180°")
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c0.stroke_width(3)));
+    chart
+        .draw_series(LineSeries::new(curve(90.0, 270.0), c90.stroke_width(2)))
+        .map_err(err)?
+        .label("C = 90° / 270°")
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c90.stroke_width(3)));
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 16))
+        .position(SeriesLabelPosition::UpperRight)
+        .draw()
+        .map_err(err)?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::pareto_front;
+
+    #[test]
+    fn pareto_front_keeps_only_undominated_points() {
+        let pts = [(3.0, 0.1), (1.0, 0.5), (2.0, 0.6), (4.0, 0.05), (5.0, 0.07)];
+        assert_eq!(pareto_front(&pts), vec![(1.0, 0.5), (3.0, 0.1), (4.0, 0.05)]);
+    }
+}

@@ -1,0 +1,177 @@
+//! Runs the `slc` binary the way README.md shows it (at small sizes where
+//! the README uses large ones), so the README's commands cannot rot.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn slc(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_slc")).args(args).current_dir(dir).output().expect("run slc")
+}
+
+fn ok(dir: &Path, args: &[&str]) -> String {
+    let out = slc(dir, args);
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(out.status.success(), "slc {args:?} failed:\n{}\n{}", text, String::from_utf8_lossy(&out.stderr));
+    text
+}
+
+fn tempdir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("slc-cli-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn shared(rel: &str) -> Option<PathBuf> {
+    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data").join(rel);
+    if p.exists() {
+        return Some(p);
+    }
+    assert!(std::env::var_os("CI").is_none(), "{} is missing in CI", p.display());
+    eprintln!("skipping: {} not found", p.display());
+    None
+}
+
+/// README: `cargo run --release -p slc-cli` (no arguments).
+#[test]
+fn main_job_with_no_arguments() {
+    let d = tempdir("main");
+    let text = ok(&d, &[]);
+    for key in ["65536 VPLs", "lights/px", "RMSE", "slc-out.exr"] {
+        assert!(text.contains(key), "summary lacks {key}:\n{text}");
+    }
+    assert!(d.join("slc-out.exr").exists() && d.join("slc-out.png").exists());
+    std::fs::remove_dir_all(&d).ok();
+}
+
+/// README: `slc render` with each method, and with the shared Cornell OBJ.
+#[test]
+fn render_commands() {
+    let d = tempdir("render");
+    let small = ["--width", "64", "--height", "48", "--vpls", "4096"];
+    for (method, extra) in [("slc", vec!["--error-bound", "0.008"]), ("clamp", vec!["--range", "0.1"]), ("none", vec![]), ("reference", vec![])] {
+        let out = format!("{method}.exr");
+        let mut args = vec!["render", "--method", method, "--out", &out];
+        args.extend(small);
+        args.extend(extra.iter().copied());
+        ok(&d, &args);
+        assert!(d.join(&out).exists() && d.join(format!("{method}.png")).exists());
+    }
+    if let Some(obj) = shared("scenes/cornell-box/CornellBox-Original.obj") {
+        let obj = obj.to_string_lossy().into_owned();
+        let mut args = vec!["render", "--scene", &obj, "--out", "obj.exr"];
+        args.extend(small);
+        ok(&d, &args);
+    }
+    std::fs::remove_dir_all(&d).ok();
+}
+
+/// README: `slc bench ... --json --csv`, plus `--plot` and `slc plot`.
+#[test]
+fn bench_and_plot_commands() {
+    let d = tempdir("bench");
+    let text = ok(&d, &[
+        "bench", "--width", "32", "--height", "32", "--vpls", "1024", "--repeat", "1", "--error-bounds", "0.004,0.016",
+        "--ranges", "0.05,0.2", "--json", "b.json", "--csv", "b.csv", "--plot", "b.svg", "--cache-dir", "cache",
+    ]);
+    assert!(text.contains("slc") && text.contains("clamp") && text.contains("none"));
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("b.json")).unwrap()).unwrap();
+    for key in ["app", "backend", "scene", "width", "height", "lights", "runs"] {
+        assert!(json.get(key).is_some(), "JSON lacks {key}");
+    }
+    let runs = json["runs"].as_array().unwrap();
+    assert_eq!(runs.len(), 5);
+    for r in runs {
+        for key in ["method", "param", "shading_ms", "total_ms", "rmse", "lights_per_pixel"] {
+            assert!(r.get(key).is_some(), "run lacks {key}");
+        }
+        assert!(r["rmse"].as_f64().unwrap().is_finite());
+    }
+    assert_eq!(std::fs::read_to_string(d.join("b.csv")).unwrap().lines().count(), 6);
+    let svg = std::fs::read_to_string(d.join("b.svg")).unwrap();
+    assert!(svg.contains("<svg") && svg.contains("shading time") && svg.contains("RMSE"));
+    // The second run reads the reference from the cache.
+    let text = ok(&d, &["bench", "--width", "32", "--height", "32", "--vpls", "1024", "--repeat", "1", "--json", "c.json", "--cache-dir", "cache"]);
+    assert!(text.contains("from cache"), "{text}");
+    ok(&d, &["plot", "b.json", "--out", "p.png"]);
+    assert!(std::fs::metadata(d.join("p.png")).unwrap().len() > 1000);
+    std::fs::remove_dir_all(&d).ok();
+}
+
+/// README: `slc ies FILE` (and `--plot`) on every shared IES file.
+#[test]
+fn ies_command() {
+    let d = tempdir("ies");
+    for name in ["indoor-60w-120deg.ies", "outdoor-roadway-60w.ies", "absolute-led.ies", "floodlight-12w-54deg.ies", "tilt-include-synthetic.ies"] {
+        let Some(p) = shared(&format!("ies/{name}")) else { return };
+        let text = ok(&d, &["ies", &p.to_string_lossy(), "--plot", "polar.png"]);
+        for key in ["format", "photometric type", "peak candela", "total flux", "horizontal angles"] {
+            assert!(text.contains(key), "{name}: no {key}");
+        }
+        assert!(std::fs::metadata(d.join("polar.png")).unwrap().len() > 1000);
+    }
+    std::fs::remove_dir_all(&d).ok();
+}
+
+/// `slc diff`: statistics, heat map, and exit status 1 over --max-rmse.
+#[test]
+fn diff_command() {
+    let d = tempdir("diff");
+    let small = ["--width", "32", "--height", "32", "--vpls", "1024"];
+    let mut a = vec!["render", "--method", "slc", "--out", "a.exr"];
+    a.extend(small);
+    ok(&d, &a);
+    let mut b = vec!["render", "--method", "clamp", "--range", "0.05", "--out", "b.exr"];
+    b.extend(small);
+    ok(&d, &b);
+    let text = ok(&d, &["diff", "a.exr", "a.exr", "--max-rmse", "0"]);
+    assert!(text.contains("RMSE            0.000000"), "{text}");
+    let text = ok(&d, &["diff", "a.exr", "b.exr", "--heatmap", "h.png"]);
+    assert!(text.contains("relative RMSE") && text.contains("NaN/inf values  0 in A, 0 in B"));
+    assert!(d.join("h.png").exists());
+    let out = slc(&d, &["diff", "a.exr", "b.exr", "--max-rmse", "0.000001"]);
+    assert_eq!(out.status.code(), Some(1));
+    std::fs::remove_dir_all(&d).ok();
+}
+
+/// Bad input: a one-line error on stderr and a non-zero exit status.
+#[test]
+fn bad_input_is_one_line_error() {
+    let d = tempdir("bad");
+    for args in [
+        vec!["render", "--vpls", "1000"],
+        vec!["render", "--error-bound=-1", "--width", "8", "--height", "8", "--vpls", "64"],
+        vec!["render", "--scene", "missing.obj"],
+        vec!["ies", "missing.ies"],
+        vec!["diff", "missing-a.exr", "missing-b.exr"],
+        vec!["render", "--width", "0"],
+    ] {
+        let out = slc(&d, &args);
+        assert!(!out.status.success(), "{args:?} succeeded");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.trim().lines().count() == 1 && err.starts_with("error: "), "{args:?}: {err}");
+    }
+    std::fs::remove_dir_all(&d).ok();
+}
+
+/// Every example scene in `scenes/` loads and renders (small overrides on
+/// the command line win over the file's `[render]`).
+#[test]
+fn example_scene_files_render() {
+    let d = tempdir("scenes");
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes");
+    let mut n = 0;
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let p = entry.unwrap().path();
+        if p.extension().is_some_and(|e| e == "toml") {
+            let text = std::fs::read_to_string(&p).unwrap();
+            if text.contains("shared/data") && shared("ies").is_none() {
+                continue;
+            }
+            let out = ok(&d, &["render", "--scene", &p.to_string_lossy(), "--width", "32", "--height", "32", "--vpls", "1024", "--out", "s.exr"]);
+            assert!(out.contains("32x32"), "{}: {out}", p.display());
+            n += 1;
+        }
+    }
+    assert!(n >= 3, "expected the example scenes, found {n}");
+    std::fs::remove_dir_all(&d).ok();
+}

@@ -1,0 +1,364 @@
+//! Scene files (TOML): camera, OBJ geometry, emissive meshes, point/spot/IES
+//! lights, the primary light of the VPL application, and render settings.
+//! Paths are relative to the scene file. Unknown keys and bad values are
+//! errors that name the key and the line.
+//!
+//! ```toml
+//! [camera]
+//! position = [0.278, 0.273, -0.8]
+//! look_at = [0.278, 0.273, 0.0]
+//! fov = 39.3                       # vertical, degrees; `up` defaults to +y
+//!
+//! [[geometry]]
+//! builtin = "cornell"              # or: obj = "room.obj", scale = 1.0, translate = [0, 0, 0]
+//!
+//! [[emissive_mesh]]
+//! obj = "../../shared/data/meshes/bunny.obj"
+//! emission = [4.0, 4.0, 4.0]
+//! scale = 1.5
+//! translate = [0.28, 0.0, 0.28]
+//! subdivide = 0                    # each level splits every triangle into 4
+//!
+//! [[light]]
+//! type = "ies"                     # or "point", "spot"
+//! file = "../../shared/data/ies/indoor-60w-120deg.ies"
+//! position = [0.278, 0.5, 0.279]
+//! tint = [0.001, 0.001, 0.001]     # candela → scene intensity units and colour
+//!
+//! [primary]
+//! type = "spot"                    # or "directional" (direction, irradiance)
+//! position = [0.278, 0.548, 0.2795]
+//! direction = [0.0, -1.0, 0.0]
+//! intensity = [0.232, 0.164, 0.055]
+//! outer = 79.2                     # degrees; `inner` defaults to 0
+//!
+//! [render]
+//! width = 512
+//! height = 512
+//! vpls = 65536
+//! method = "slc"
+//! error_bound = 0.008
+//! ```
+
+use crate::SceneError;
+use crate::scene::{Camera, Material, PrimaryLight, Scene};
+use glam::Vec3;
+use serde::Deserialize;
+use slc_core::ies::IesProfile;
+use slc_core::light::{IesLight, Light, PointLight, SpotLight};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct File {
+    camera: Option<CameraDef>,
+    #[serde(default)]
+    geometry: Vec<GeometryDef>,
+    #[serde(default)]
+    emissive_mesh: Vec<EmissiveDef>,
+    #[serde(default)]
+    light: Vec<LightDef>,
+    primary: Option<PrimaryDef>,
+    #[serde(default)]
+    render: RenderSettings,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CameraDef {
+    position: [f32; 3],
+    look_at: [f32; 3],
+    #[serde(default = "up")]
+    up: [f32; 3],
+    #[serde(default = "fov")]
+    fov: f32,
+}
+
+fn up() -> [f32; 3] {
+    [0.0, 1.0, 0.0]
+}
+fn fov() -> f32 {
+    39.3
+}
+fn one() -> f32 {
+    1.0
+}
+fn white() -> [f32; 3] {
+    [1.0, 1.0, 1.0]
+}
+fn down() -> [f32; 3] {
+    [0.0, -1.0, 0.0]
+}
+fn x_axis() -> [f32; 3] {
+    [1.0, 0.0, 0.0]
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct GeometryDef {
+    builtin: Option<String>,
+    obj: Option<PathBuf>,
+    #[serde(default = "one")]
+    scale: f32,
+    #[serde(default)]
+    translate: [f32; 3],
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct EmissiveDef {
+    obj: PathBuf,
+    emission: [f32; 3],
+    #[serde(default)]
+    subdivide: u32,
+    #[serde(default = "one")]
+    scale: f32,
+    #[serde(default)]
+    translate: [f32; 3],
+}
+
+#[derive(Deserialize)]
+#[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
+enum LightDef {
+    Point {
+        position: [f32; 3],
+        intensity: [f32; 3],
+    },
+    Spot {
+        position: [f32; 3],
+        direction: [f32; 3],
+        intensity: [f32; 3],
+        #[serde(default)]
+        inner: f32,
+        outer: f32,
+    },
+    Ies {
+        file: PathBuf,
+        position: [f32; 3],
+        #[serde(default = "down")]
+        nadir: [f32; 3],
+        #[serde(default = "x_axis")]
+        reference: [f32; 3],
+        #[serde(default = "white")]
+        tint: [f32; 3],
+    },
+}
+
+#[derive(Deserialize)]
+#[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
+enum PrimaryDef {
+    Spot {
+        position: [f32; 3],
+        direction: [f32; 3],
+        intensity: [f32; 3],
+        #[serde(default)]
+        inner: f32,
+        outer: f32,
+    },
+    Directional {
+        direction: [f32; 3],
+        irradiance: [f32; 3],
+    },
+}
+
+/// `[render]` settings of a scene file; each may be overridden on the
+/// command line.
+#[derive(Deserialize, Default, Clone, Debug, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct RenderSettings {
+    /// Image width.
+    pub width: Option<u32>,
+    /// Image height.
+    pub height: Option<u32>,
+    /// VPL count.
+    pub vpls: Option<u64>,
+    /// `slc`, `clamp`, `none` or `reference`.
+    pub method: Option<String>,
+    /// SLC error bound ε.
+    pub error_bound: Option<f32>,
+    /// Clamp range R.
+    pub range: Option<f32>,
+    /// Seed.
+    pub seed: Option<u32>,
+    /// Exposure.
+    pub exposure: Option<f32>,
+}
+
+/// A loaded scene file.
+pub struct SceneFile {
+    /// Geometry (emissive meshes included), camera and primary light.
+    pub scene: Scene,
+    /// Point, spot and IES lights (for the path tracer; the VPL application
+    /// lights the scene with its primary light only).
+    pub lights: Vec<Light>,
+    /// Render settings.
+    pub render: RenderSettings,
+}
+
+fn v3(a: [f32; 3]) -> Vec3 {
+    Vec3::from(a)
+}
+
+/// Splits every triangle into four at its edge midpoints, `levels` times.
+pub fn subdivide(tris: &[[Vec3; 3]], levels: u32) -> Vec<[Vec3; 3]> {
+    let mut cur = tris.to_vec();
+    for _ in 0..levels {
+        let mut next = Vec::with_capacity(cur.len() * 4);
+        for [a, b, c] in cur {
+            let (ab, bc, ca) = ((a + b) * 0.5, (b + c) * 0.5, (c + a) * 0.5);
+            next.extend([[a, ab, ca], [ab, b, bc], [ca, bc, c], [ab, bc, ca]]);
+        }
+        cur = next;
+    }
+    cur
+}
+
+impl SceneFile {
+    /// Reads and validates a scene file.
+    pub fn load(path: &Path) -> Result<SceneFile, SceneError> {
+        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io(path.display().to_string(), e.to_string()))?;
+        Self::parse(&text, path.parent().unwrap_or(Path::new(".")), &path.display().to_string())
+    }
+
+    /// Parses scene-file text; relative paths resolve against `dir`.
+    pub fn parse(text: &str, dir: &Path, name: &str) -> Result<SceneFile, SceneError> {
+        let f: File = toml::from_str(text).map_err(|e| SceneError::File(name.to_string(), e.to_string()))?;
+        let bad = |what: String| SceneError::File(name.to_string(), what);
+        let mut scene = Scene {
+            name: Path::new(name).file_stem().map_or("scene".into(), |s| s.to_string_lossy().into_owned()),
+            triangles: Vec::new(),
+            material_of: Vec::new(),
+            materials: Vec::new(),
+            camera: Scene::cornell_box().camera,
+            primary: Scene::cornell_box().primary,
+        };
+        let append = |scene: &mut Scene, other: Scene, scale: f32, translate: [f32; 3]| {
+            let base = scene.materials.len() as u32;
+            scene.materials.extend(other.materials);
+            scene.triangles.extend(other.triangles.iter().map(|t| t.map(|v| v * scale + v3(translate))));
+            scene.material_of.extend(other.material_of.iter().map(|m| m + base));
+        };
+        if f.geometry.is_empty() && f.emissive_mesh.is_empty() {
+            return Err(bad("the scene needs at least one [[geometry]] or [[emissive_mesh]]".into()));
+        }
+        for (i, g) in f.geometry.iter().enumerate() {
+            if !(g.scale.is_finite() && g.scale > 0.0) {
+                return Err(bad(format!("geometry {i}: scale {} must be finite and > 0", g.scale)));
+            }
+            let part = match (&g.builtin, &g.obj) {
+                (Some(b), None) if b == "cornell" => Scene::cornell_box(),
+                (Some(b), None) => return Err(bad(format!("geometry {i}: unknown builtin '{b}' (known: cornell)"))),
+                (None, Some(p)) => Scene::load_obj(&dir.join(p))?,
+                _ => return Err(bad(format!("geometry {i}: give exactly one of `builtin` or `obj`"))),
+            };
+            append(&mut scene, part, g.scale, g.translate);
+        }
+        for (i, e) in f.emissive_mesh.iter().enumerate() {
+            if e.subdivide > 4 {
+                return Err(bad(format!("emissive_mesh {i}: subdivide {} is above 4 (256 triangles per input triangle)", e.subdivide)));
+            }
+            let emission = v3(e.emission);
+            if !(emission.is_finite() && emission.min_element() >= 0.0) {
+                return Err(bad(format!("emissive_mesh {i}: emission must be finite and >= 0")));
+            }
+            let mut mesh = Scene::load_obj(&dir.join(&e.obj))?;
+            mesh.triangles = subdivide(&mesh.triangles, e.subdivide);
+            mesh.material_of = vec![0; mesh.triangles.len()];
+            mesh.materials = vec![Material { albedo: Vec3::splat(0.5), emission }];
+            append(&mut scene, mesh, e.scale, e.translate);
+        }
+        if let Some(c) = f.camera {
+            scene.camera = Camera { position: v3(c.position), target: v3(c.look_at), up: v3(c.up), vfov_deg: c.fov };
+        } else {
+            let primary = scene.primary;
+            scene.frame_default_view();
+            scene.primary = primary;
+        }
+        match f.primary {
+            Some(PrimaryDef::Spot { position, direction, intensity, inner, outer }) => {
+                scene.primary = PrimaryLight::Spot {
+                    position: v3(position),
+                    direction: v3(direction).normalize_or_zero(),
+                    intensity: v3(intensity),
+                    inner: inner.to_radians(),
+                    outer: outer.to_radians(),
+                }
+            }
+            Some(PrimaryDef::Directional { direction, irradiance }) => {
+                scene.primary = PrimaryLight::Directional { direction: v3(direction), irradiance: v3(irradiance) }
+            }
+            None if f.geometry.iter().any(|g| g.builtin.is_some()) => {}
+            None => {
+                let camera = scene.camera;
+                scene.frame_default_view();
+                scene.camera = camera;
+            }
+        }
+        scene.validate().map_err(|e| bad(e.to_string()))?;
+        let mut lights = Vec::new();
+        for (i, l) in f.light.into_iter().enumerate() {
+            let err = |e: slc_core::LightError| bad(format!("light {i}: {e}"));
+            lights.push(match l {
+                LightDef::Point { position, intensity } => Light::Point(PointLight::new(v3(position), v3(intensity)).map_err(err)?),
+                LightDef::Spot { position, direction, intensity, inner, outer } => Light::Spot(
+                    SpotLight::new(v3(position), v3(direction), v3(intensity), inner.to_radians(), outer.to_radians()).map_err(err)?,
+                ),
+                LightDef::Ies { file, position, nadir, reference, tint } => {
+                    let p = dir.join(&file);
+                    let bytes = std::fs::read(&p).map_err(|e| SceneError::Io(p.display().to_string(), e.to_string()))?;
+                    let profile = IesProfile::parse_bytes(&bytes).map_err(|e| bad(format!("light {i}: {}: {e}", p.display())))?;
+                    Light::Ies(IesLight::new(v3(position), v3(nadir), v3(reference), v3(tint), Arc::new(profile)).map_err(err)?)
+                }
+            });
+        }
+        Ok(SceneFile { scene, lights, render: f.render })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unknown_keys_name_the_key_and_line() {
+        let text = "[[geometry]]\nbuiltin = \"cornell\"\n\n[render]\nwidht = 3\n";
+        let e = SceneFile::parse(text, Path::new("."), "t.toml").err().unwrap().to_string();
+        assert!(e.contains("widht") && e.contains("line 5"), "{e}");
+        let text = "[[geometry]]\nbuiltin = \"cornell\"\n[primary]\ntype = \"spot\"\nposition = [0, 1]\n";
+        let e = SceneFile::parse(text, Path::new("."), "t.toml").err().unwrap().to_string();
+        assert!(e.contains("line 5"), "{e}");
+    }
+
+    #[test]
+    fn bad_values_are_errors() {
+        for text in [
+            "[[geometry]]\nbuiltin = \"moon\"\n",
+            "[[geometry]]\nbuiltin = \"cornell\"\nscale = -1.0\n",
+            "",
+            "[[geometry]]\nbuiltin = \"cornell\"\n[[light]]\ntype = \"point\"\nposition = [0, 0, 0]\nintensity = [-1, 0, 0]\n",
+            "[[geometry]]\nbuiltin = \"cornell\"\n[[light]]\ntype = \"laser\"\nposition = [0, 0, 0]\n",
+            "[[geometry]]\nbuiltin = \"cornell\"\n[camera]\nposition = [0, 0, 0]\nlook_at = [0, 0, 0]\n",
+        ] {
+            assert!(SceneFile::parse(text, Path::new("."), "t.toml").is_err(), "{text:?} was accepted");
+        }
+    }
+
+    #[test]
+    fn subdivision_quadruples_and_keeps_area() {
+        let t = [[Vec3::ZERO, Vec3::X, Vec3::Y]];
+        let s = subdivide(&t, 2);
+        assert_eq!(s.len(), 16);
+        let area: f32 = s.iter().map(|[a, b, c]| 0.5 * (*b - *a).cross(*c - *a).length()).sum();
+        assert!((area - 0.5).abs() < 1e-6);
+    }
+
+    #[test]
+    fn builtin_with_primary_and_render() {
+        let text = "[[geometry]]\nbuiltin = \"cornell\"\n[primary]\ntype = \"directional\"\ndirection = [0, -1, 0.2]\nirradiance = [1, 1, 1]\n[render]\nwidth = 64\nmethod = \"clamp\"\n";
+        let f = SceneFile::parse(text, Path::new("."), "t.toml").unwrap();
+        assert_eq!(f.render.width, Some(64));
+        assert!(matches!(f.scene.primary, PrimaryLight::Directional { .. }));
+        assert_eq!(f.scene.triangles.len(), 32);
+    }
+}
