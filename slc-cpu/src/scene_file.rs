@@ -59,7 +59,7 @@ struct File {
     emissive_mesh: Vec<EmissiveDef>,
     #[serde(default)]
     light: Vec<LightDef>,
-    primary: Option<PrimaryDef>,
+    primary: Option<LightDef>,
     #[serde(default)]
     render: RenderSettings,
 }
@@ -83,15 +83,6 @@ fn fov() -> f32 {
 }
 fn one() -> f32 {
     1.0
-}
-fn white() -> [f32; 3] {
-    [1.0, 1.0, 1.0]
-}
-fn down() -> [f32; 3] {
-    [0.0, -1.0, 0.0]
-}
-fn x_axis() -> [f32; 3] {
-    [1.0, 0.0, 0.0]
 }
 
 #[derive(Deserialize)]
@@ -118,48 +109,50 @@ struct EmissiveDef {
     translate: [f32; 3],
 }
 
+/// `[[light]]` and `[primary]`: one flat table per light with a `type` key,
+/// so that a bad value's error carries its own key and line (serde's tagged
+/// enums lose the position). Which keys a type needs is checked below.
 #[derive(Deserialize)]
-#[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
-enum LightDef {
-    Point {
-        position: [f32; 3],
-        intensity: [f32; 3],
-    },
-    Spot {
-        position: [f32; 3],
-        direction: [f32; 3],
-        intensity: [f32; 3],
-        #[serde(default)]
-        inner: f32,
-        outer: f32,
-    },
-    Ies {
-        file: PathBuf,
-        position: [f32; 3],
-        #[serde(default = "down")]
-        nadir: [f32; 3],
-        #[serde(default = "x_axis")]
-        reference: [f32; 3],
-        #[serde(default = "white")]
-        tint: [f32; 3],
-    },
+#[serde(deny_unknown_fields)]
+struct LightDef {
+    #[serde(rename = "type")]
+    kind: String,
+    position: Option<[f32; 3]>,
+    direction: Option<[f32; 3]>,
+    intensity: Option<[f32; 3]>,
+    irradiance: Option<[f32; 3]>,
+    inner: Option<f32>,
+    outer: Option<f32>,
+    file: Option<PathBuf>,
+    nadir: Option<[f32; 3]>,
+    reference: Option<[f32; 3]>,
+    tint: Option<[f32; 3]>,
 }
 
-#[derive(Deserialize)]
-#[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
-enum PrimaryDef {
-    Spot {
-        position: [f32; 3],
-        direction: [f32; 3],
-        intensity: [f32; 3],
-        #[serde(default)]
-        inner: f32,
-        outer: f32,
-    },
-    Directional {
-        direction: [f32; 3],
-        irradiance: [f32; 3],
-    },
+impl LightDef {
+    /// The value of a key the light's type requires.
+    fn need<T: Clone>(&self, what: &str, key: &str, v: &Option<T>) -> Result<T, String> {
+        v.clone().ok_or_else(|| format!("{what}: type \"{}\" needs `{key}`", self.kind))
+    }
+    /// Keys given that the type does not use.
+    fn unused(&self, what: &str, allowed: &[&str]) -> Result<(), String> {
+        let given = [
+            ("position", self.position.is_some()),
+            ("direction", self.direction.is_some()),
+            ("intensity", self.intensity.is_some()),
+            ("irradiance", self.irradiance.is_some()),
+            ("inner", self.inner.is_some()),
+            ("outer", self.outer.is_some()),
+            ("file", self.file.is_some()),
+            ("nadir", self.nadir.is_some()),
+            ("reference", self.reference.is_some()),
+            ("tint", self.tint.is_some()),
+        ];
+        match given.iter().find(|(k, g)| *g && !allowed.contains(k)) {
+            Some((k, _)) => Err(format!("{what}: `{k}` does not apply to type \"{}\"", self.kind)),
+            None => Ok(()),
+        }
+    }
 }
 
 /// `[render]` settings of a scene file; each may be overridden on the
@@ -275,19 +268,27 @@ impl SceneFile {
             scene.frame_default_view();
             scene.primary = primary;
         }
-        match f.primary {
-            Some(PrimaryDef::Spot { position, direction, intensity, inner, outer }) => {
+        match &f.primary {
+            Some(l) if l.kind == "spot" => {
+                let w = "[primary]";
+                l.unused(w, &["position", "direction", "intensity", "inner", "outer"]).map_err(bad)?;
                 scene.primary = PrimaryLight::Spot {
-                    position: v3(position),
-                    direction: v3(direction).normalize_or_zero(),
-                    intensity: v3(intensity),
-                    inner: inner.to_radians(),
-                    outer: outer.to_radians(),
+                    position: v3(l.need(w, "position", &l.position).map_err(bad)?),
+                    direction: v3(l.need(w, "direction", &l.direction).map_err(bad)?).normalize_or_zero(),
+                    intensity: v3(l.need(w, "intensity", &l.intensity).map_err(bad)?),
+                    inner: l.inner.unwrap_or(0.0).to_radians(),
+                    outer: l.need(w, "outer", &l.outer).map_err(bad)?.to_radians(),
                 }
             }
-            Some(PrimaryDef::Directional { direction, irradiance }) => {
-                scene.primary = PrimaryLight::Directional { direction: v3(direction), irradiance: v3(irradiance) }
+            Some(l) if l.kind == "directional" => {
+                let w = "[primary]";
+                l.unused(w, &["direction", "irradiance"]).map_err(bad)?;
+                scene.primary = PrimaryLight::Directional {
+                    direction: v3(l.need(w, "direction", &l.direction).map_err(bad)?),
+                    irradiance: v3(l.need(w, "irradiance", &l.irradiance).map_err(bad)?),
+                }
             }
+            Some(l) => return Err(bad(format!("[primary]: type \"{}\" is not \"spot\" or \"directional\"", l.kind))),
             None if f.geometry.iter().any(|g| g.builtin.is_some()) => {}
             None => {
                 let camera = scene.camera;
@@ -297,19 +298,46 @@ impl SceneFile {
         }
         scene.validate().map_err(|e| bad(e.to_string()))?;
         let mut lights = Vec::new();
-        for (i, l) in f.light.into_iter().enumerate() {
-            let err = |e: slc_core::LightError| bad(format!("light {i}: {e}"));
-            lights.push(match l {
-                LightDef::Point { position, intensity } => Light::Point(PointLight::new(v3(position), v3(intensity)).map_err(err)?),
-                LightDef::Spot { position, direction, intensity, inner, outer } => Light::Spot(
-                    SpotLight::new(v3(position), v3(direction), v3(intensity), inner.to_radians(), outer.to_radians()).map_err(err)?,
-                ),
-                LightDef::Ies { file, position, nadir, reference, tint } => {
-                    let p = dir.join(&file);
-                    let bytes = std::fs::read(&p).map_err(|e| SceneError::Io(p.display().to_string(), e.to_string()))?;
-                    let profile = IesProfile::parse_bytes(&bytes).map_err(|e| bad(format!("light {i}: {}: {e}", p.display())))?;
-                    Light::Ies(IesLight::new(v3(position), v3(nadir), v3(reference), v3(tint), Arc::new(profile)).map_err(err)?)
+        for (i, l) in f.light.iter().enumerate() {
+            let w = format!("[[light]] {i}");
+            let err = |e: slc_core::LightError| bad(format!("{w}: {e}"));
+            let need3 = |key: &str, v: &Option<[f32; 3]>| l.need(&w, key, v).map(v3).map_err(bad);
+            lights.push(match l.kind.as_str() {
+                "point" => {
+                    l.unused(&w, &["position", "intensity"]).map_err(bad)?;
+                    Light::Point(PointLight::new(need3("position", &l.position)?, need3("intensity", &l.intensity)?).map_err(err)?)
                 }
+                "spot" => {
+                    l.unused(&w, &["position", "direction", "intensity", "inner", "outer"]).map_err(bad)?;
+                    let outer = l.need(&w, "outer", &l.outer).map_err(bad)?;
+                    Light::Spot(
+                        SpotLight::new(
+                            need3("position", &l.position)?,
+                            need3("direction", &l.direction)?,
+                            need3("intensity", &l.intensity)?,
+                            l.inner.unwrap_or(0.0).to_radians(),
+                            outer.to_radians(),
+                        )
+                        .map_err(err)?,
+                    )
+                }
+                "ies" => {
+                    l.unused(&w, &["position", "file", "nadir", "reference", "tint"]).map_err(bad)?;
+                    let p = dir.join(l.need(&w, "file", &l.file).map_err(bad)?);
+                    let bytes = std::fs::read(&p).map_err(|e| SceneError::Io(p.display().to_string(), e.to_string()))?;
+                    let profile = IesProfile::parse_bytes(&bytes).map_err(|e| bad(format!("{w}: {}: {e}", p.display())))?;
+                    Light::Ies(
+                        IesLight::new(
+                            need3("position", &l.position)?,
+                            v3(l.nadir.unwrap_or([0.0, -1.0, 0.0])),
+                            v3(l.reference.unwrap_or([1.0, 0.0, 0.0])),
+                            v3(l.tint.unwrap_or([1.0, 1.0, 1.0])),
+                            Arc::new(profile),
+                        )
+                        .map_err(err)?,
+                    )
+                }
+                other => return Err(bad(format!("{w}: type \"{other}\" is not \"point\", \"spot\" or \"ies\""))),
             });
         }
         Ok(SceneFile { scene, lights, render: f.render })
@@ -327,7 +355,13 @@ mod tests {
         assert!(e.contains("widht") && e.contains("line 5"), "{e}");
         let text = "[[geometry]]\nbuiltin = \"cornell\"\n[primary]\ntype = \"spot\"\nposition = [0, 1]\n";
         let e = SceneFile::parse(text, Path::new("."), "t.toml").err().unwrap().to_string();
-        assert!(e.contains("line 5"), "{e}");
+        assert!(e.contains("line 5") && e.contains("position"), "{e}");
+        let text = "[[geometry]]\nbuiltin = \"cornell\"\n[primary]\ntype = \"spot\"\nposition = [0, 1, 0]\n";
+        let e = SceneFile::parse(text, Path::new("."), "t.toml").err().unwrap().to_string();
+        assert!(e.contains("needs `direction`"), "{e}");
+        let text = "[[geometry]]\nbuiltin = \"cornell\"\n[[light]]\ntype = \"point\"\nposition = [0, 1, 0]\nintensity = [1, 1, 1]\nouter = 3.0\n";
+        let e = SceneFile::parse(text, Path::new("."), "t.toml").err().unwrap().to_string();
+        assert!(e.contains("`outer` does not apply"), "{e}");
     }
 
     #[test]
