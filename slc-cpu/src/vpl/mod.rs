@@ -356,7 +356,7 @@ impl VplContext {
                                     out.push((i, e));
                                     kept += k as u64;
                                 }
-                                evals += (lights.len() * pixels.len()) as u64;
+                                evals += (lights.len_unpadded() * pixels.len()) as u64;
                             }
                         }
                     }

@@ -42,6 +42,8 @@ pub struct LightList {
     /// Per chunk of [`CHUNK`] consecutive lights: the box holding their
     /// range spheres (empty until [`LightList::build_chunks`]).
     chunks: Vec<(Vec3, Vec3)>,
+    /// Real lights when the list was padded by culling (else `len()`).
+    real: usize,
 }
 
 /// Lights per chunk in [`LightList::cull_chunked_into`].
@@ -63,6 +65,7 @@ impl LightList {
     /// by 2⁻²⁰ relative so that `d² < r²` implies `d ≤ radius` in f32 (tile
     /// culling never drops a light the per-pixel test would keep).
     pub fn push(&mut self, p: Vec3, n: Vec3, flux: Vec3, rt2: f32, r2: f32) {
+        self.real = self.len() + 1;
         self.radius.push(r2.sqrt() * (1.0 + 1.0 / 1_048_576.0));
         self.px.push(p.x);
         self.py.push(p.y);
@@ -130,9 +133,14 @@ impl LightList {
         self.gather_into(hits, out);
     }
 
-    /// Replaces `out` with the entries `hits` of this list.
+    /// Replaces `out` with the entries `hits` of this list, padded to a
+    /// multiple of the SIMD width with entries that are never kept and carry
+    /// no flux (`r² = 0`, `Φ = 0`), so the shading loop has no scalar tail.
+    /// [`LightList::len_unpadded`] still counts only real lights.
     fn gather_into(&self, hits: &[u32], out: &mut LightList) {
         out.chunks.clear();
+        out.real = hits.len();
+        let pad = hits.len().next_multiple_of(LANES) - hits.len();
         let gather = |dst: &mut Vec<f32>, src: &[f32]| {
             dst.clear();
             dst.extend(hits.iter().map(|&j| src[j as usize]));
@@ -149,6 +157,17 @@ impl LightList {
         gather(&mut out.rt2, &self.rt2);
         gather(&mut out.r2, &self.r2);
         gather(&mut out.radius, &self.radius);
+        for v in [
+            &mut out.px, &mut out.py, &mut out.pz, &mut out.nx, &mut out.ny, &mut out.nz, &mut out.fr,
+            &mut out.fg, &mut out.fb, &mut out.rt2, &mut out.r2, &mut out.radius,
+        ] {
+            v.extend(std::iter::repeat_n(0.0, pad));
+        }
+    }
+
+    /// Real lights in the list (padding excluded).
+    pub fn len_unpadded(&self) -> usize {
+        self.real.min(self.len())
     }
 
     /// Number of lights.
