@@ -202,6 +202,7 @@ fn main() -> ExitCode {
 
 fn render(a: RenderArgs) -> Result<(), String> {
     let t0 = Instant::now();
+    let spinner = spinner("scene, G-buffer, reflective shadow map, direct light");
     let loaded = a.scene.load()?;
     let (ctx, f) = (&loaded.ctx, &loaded.file);
     let method = match a.method {
@@ -225,23 +226,43 @@ fn render(a: RenderArgs) -> Result<(), String> {
         tile: a.scene.tile,
         ..d
     };
+    spinner.set_message(format!("shading ({})", settings.method.name()));
     let frame = ctx.render(&settings).map_err(|e| e.to_string())?;
+    spinner.set_message("writing images");
     write_outputs(&frame.image, &a.out, loaded.exposure)?;
     let st = frame.stats;
-    println!("slc render: {} {}x{}, {} VPLs, method {}", ctx.scene().name, loaded.width, loaded.height, st.vpls, settings.method.name());
-    println!("  time        {:.1} ms total, {:.1} ms shading (G-buffer {:.1}, RSM {:.1}, direct {:.1}, denoise {:.1})", st.total_ms, st.shading_ms, st.gbuffer_ms, st.rsm_ms, st.direct_ms, st.denoise_ms);
-    println!("  lights/px   {:.1} tested, {:.1} kept", st.lights_per_pixel, st.kept_per_pixel);
-    if settings.method != VplMethod::None && settings.method != VplMethod::Reference {
+    let versus_none = if settings.method != VplMethod::None && settings.method != VplMethod::Reference {
+        spinner.set_message("unculled interleaved image for the RMSE");
         let none = ctx.render(&VplSettings { method: VplMethod::None, ..settings }).map_err(|e| e.to_string())?;
+        Some((frame.image.rmse(&none.image), none.stats.shading_ms))
+    } else {
+        None
+    };
+    spinner.finish_and_clear();
+    println!("slc render: {} {}x{}, {} VPLs, method {}", ctx.scene().name, loaded.width, loaded.height, st.vpls, settings.method.name());
+    println!(
+        "  time        {:.1} ms total, {:.1} ms shading (G-buffer {:.1}, RSM {:.1}, direct {:.1}, denoise {:.1})",
+        st.total_ms, st.shading_ms, st.gbuffer_ms, st.rsm_ms, st.direct_ms, st.denoise_ms
+    );
+    println!("  lights/px   {:.1} tested, {:.1} kept", st.lights_per_pixel, st.kept_per_pixel);
+    if let Some((rmse, none_ms)) = versus_none {
         println!(
-            "  RMSE        {:.5} against the unculled interleaved image ({:.1} ms shading, {:.1}x slower)",
-            frame.image.rmse(&none.image),
-            none.stats.shading_ms,
-            none.stats.shading_ms / st.shading_ms.max(1e-9)
+            "  RMSE        {rmse:.5} against the unculled interleaved image ({none_ms:.1} ms shading, {:.1}x slower)",
+            none_ms / st.shading_ms.max(1e-9)
         );
     }
     println!("  wrote       {} and {} ({:.1} s)", a.out.display(), a.out.with_extension("png").display(), t0.elapsed().as_secs_f64());
     Ok(())
+}
+
+/// A step indicator on stderr (hidden when stderr is not a terminal). It
+/// redraws only when the step changes: a ticking thread would steal time
+/// from the renderer being measured.
+pub fn spinner(msg: &'static str) -> indicatif::ProgressBar {
+    let s = indicatif::ProgressBar::new_spinner();
+    s.set_message(msg);
+    s.tick();
+    s
 }
 
 /// Writes the EXR and its PNG preview.
