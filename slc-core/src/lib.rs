@@ -16,6 +16,8 @@
 //! | [`bsh`] | bounding-sphere hierarchy: build, O(n) refit, stackless `child`/`next` traversal |
 //! | [`reservoir`] | k-slot Algorithm R and a weighted variant |
 //! | [`estimator`] | SLC, clamped-range and unculled sums at one shading point |
+//! | [`mis`] | balance and power heuristics, cosine pdf (light pdfs include `p_rr`) |
+//! | [`ray`] | ray–box and ray–triangle tests for the GPU's geometry BVH |
 //! | [`wgsl`] | the shared-code macro, WGSL built-ins in Rust, the assembled WGSL library |
 //!
 //! ```
@@ -47,7 +49,9 @@ pub mod bsh;
 pub mod estimator;
 pub mod ies;
 pub mod light;
+pub mod mis;
 pub mod range;
+pub mod ray;
 pub mod reservoir;
 pub mod sphere;
 pub mod xi;

@@ -26,6 +26,45 @@ crate::shared! {
         return dot(v, v) <= r * r;
     }
 
+    /// 4 · 2⁻²³: relative padding that makes computed bounds contain their
+    /// inputs in f32.
+    pub const SPHERE_PAD: f32 = 0.000000476837158203125;
+
+    /// Padding for a sphere of radius `r` at `c`: a few ulps of `|c|∞ + r`.
+    pub fn sphere_pad(r: f32, c: vec3f) -> f32 {
+        return (r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD;
+    }
+
+    /// The smallest sphere holding spheres (c₁, r₁) and (c₂, r₂), as
+    /// `(centre, radius)`: radius `(d + r₁ + r₂)/2` on the line between the
+    /// centres, or the containing sphere when one holds the other; padded to
+    /// be conservative in f32 (unchanged only when nesting has a clear
+    /// margin). Infinite radii give an infinite result.
+    pub fn sphere_union(c1: vec3f, r1: f32, c2: vec3f, r2: f32) -> vec4f {
+        let v: vec3f = c2 - c1;
+        let d: f32 = sqrt(dot(v, v));
+        if r1 >= d + r2 + sphere_pad(r1, c1) {
+            return vec4f(c1.x, c1.y, c1.z, r1);
+        }
+        if r2 >= d + r1 + sphere_pad(r2, c2) {
+            return vec4f(c2.x, c2.y, c2.z, r2);
+        }
+        if abs(r1 - r2) >= d {
+            if r1 >= r2 {
+                let rn: f32 = max(r1, d + r2);
+                return vec4f(c1.x, c1.y, c1.z, rn + sphere_pad(rn, c1));
+            }
+            let rm: f32 = max(r2, d + r1);
+            return vec4f(c2.x, c2.y, c2.z, rm + sphere_pad(rm, c2));
+        }
+        let r0: f32 = 0.5 * (d + r1 + r2);
+        let c: vec3f = c1 + v * ((r0 - r1) / d);
+        let e1: vec3f = c - c1;
+        let e2: vec3f = c - c2;
+        let r: f32 = max(r0, max(sqrt(dot(e1, e1)) + r1, sqrt(dot(e2, e2)) + r2));
+        return vec4f(c.x, c.y, c.z, r + sphere_pad(r, c));
+    }
+
     /// A sphere overlaps an axis-aligned box (Arvo 1990): the squared distance
     /// from c to the box's closest point is at most r².
     pub fn sphere_overlaps_aabb(c: vec3f, r: f32, bmin: vec3f, bmax: vec3f) -> bool {
@@ -36,7 +75,7 @@ crate::shared! {
 }
 
 /// Relative padding that makes computed bounds contain their inputs in f32.
-const PAD: f32 = 4.0 * f32::EPSILON;
+const PAD: f32 = SPHERE_PAD;
 
 /// A sphere with centre and radius (`radius` may be `+∞`).
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -166,30 +205,10 @@ impl Sphere {
         Self::covering(s.center, s.radius, &p)
     }
 
-    /// The smallest sphere containing both spheres (exact construction,
-    /// padded to be conservative in f32). Infinite radii are handled: the
-    /// result is infinite.
+    /// The smallest sphere containing both ([`sphere_union`]).
     pub fn union(&self, o: &Sphere) -> Sphere {
-        let d = (o.center - self.center).length();
-        let scale = |r: f32, c: Vec3| (r + c.abs().max_element()) * PAD;
-        // One contains the other with a clear margin: return it unchanged.
-        if self.radius >= d + o.radius + scale(self.radius, self.center) {
-            return *self;
-        }
-        if o.radius >= d + self.radius + scale(o.radius, o.center) {
-            return *o;
-        }
-        // Nearly nested: the larger one, grown to hold the other in f32.
-        if (self.radius - o.radius).abs() >= d {
-            let (big, small) = if self.radius >= o.radius { (self, o) } else { (o, self) };
-            let r = big.radius.max(d + small.radius);
-            return Sphere { center: big.center, radius: r + scale(r, big.center) };
-        }
-        let r = 0.5 * (d + self.radius + o.radius);
-        // d > |r1 − r2| ≥ 0 here, so the division is safe.
-        let center = self.center + (o.center - self.center) * ((r - self.radius) / d);
-        let r = r.max((center - self.center).length() + self.radius).max((center - o.center).length() + o.radius);
-        Sphere { center, radius: r + scale(r, center) }
+        let u = sphere_union(self.center, self.radius, o.center, o.radius);
+        Sphere { center: Vec3::new(u.x, u.y, u.z), radius: u.w }
     }
 }
 

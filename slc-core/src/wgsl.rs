@@ -31,6 +31,16 @@ pub fn vec3f(x: f32, y: f32, z: f32) -> Vec3 {
     Vec3::new(x, y, z)
 }
 
+/// Rust spelling of WGSL's `vec4f`.
+#[allow(non_camel_case_types)]
+pub type vec4f = glam::Vec4;
+
+/// WGSL's `vec4f(x, y, z, w)` constructor.
+#[inline]
+pub fn vec4f(x: f32, y: f32, z: f32, w: f32) -> glam::Vec4 {
+    glam::Vec4::new(x, y, z, w)
+}
+
 /// A read-only table of `f32` indexed with `u32`: a slice on the CPU. In WGSL
 /// the same parameter is a dummy `u32` and [`at`] reads the module-scope
 /// storage buffer `slc_table` (see [`PRELUDE`]).
@@ -139,6 +149,11 @@ pub fn dot(a: Vec3, b: Vec3) -> f32 {
 pub fn cross(a: Vec3, b: Vec3) -> Vec3 {
     a.cross(b)
 }
+/// WGSL `normalize`.
+#[inline]
+pub fn normalize(v: Vec3) -> Vec3 {
+    v / sqrt(dot(v, v))
+}
 /// WGSL `sqrt`.
 #[inline]
 pub fn sqrt(x: f32) -> f32 {
@@ -228,7 +243,7 @@ macro_rules! shared {
 }
 
 /// Every module's shared items, in dependency order, as raw text.
-const PARTS: [&str; 7] = [
+const PARTS: [&str; 9] = [
     crate::xi::WGSL,
     crate::range::WGSL,
     crate::sphere::WGSL,
@@ -236,6 +251,8 @@ const PARTS: [&str; 7] = [
     crate::ies::WGSL,
     crate::bsh::WGSL,
     crate::reservoir::WGSL,
+    crate::ray::WGSL,
+    crate::mis::WGSL,
 ];
 
 /// The whole shared library as WGSL: [`PRELUDE`] followed by every shared

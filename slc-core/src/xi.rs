@@ -22,6 +22,13 @@ crate::shared! {
         let word: u32 = mul_lo_u32((state >> ((state >> 28) + 4)) ^ state, 277803737);
         return (word >> 22) ^ word;
     }
+
+    /// ξ of light `light` in frame (or pass) `frame` for seed `seed`, from hashes
+    /// alone, so every backend draws the same numbers without shared state:
+    /// `xi_from_bits(h(h(h(seed) ⊕ frame) ⊕ light))`, `h` = [`pcg_hash`].
+    pub fn xi_for(seed: u32, frame: u32, light: u32) -> f32 {
+        return xi_from_bits(pcg_hash(pcg_hash(pcg_hash(seed) ^ frame) ^ light));
+    }
 }
 
 /// Fills `out` with one ξ per light from `rng`, using [`xi_from_bits`].
@@ -31,11 +38,6 @@ pub fn fill_xi<R: RngCore + ?Sized>(rng: &mut R, out: &mut [f32]) {
     }
 }
 
-/// ξ of light `light` in frame/pass `pass` for seed `seed`, computed from a
-/// hash alone so any backend can draw the same numbers without shared state.
-pub fn xi_for(seed: u32, pass: u32, light: u32) -> f32 {
-    xi_from_bits(pcg_hash(pcg_hash(pcg_hash(seed) ^ pass) ^ light))
-}
 
 #[cfg(test)]
 mod tests {

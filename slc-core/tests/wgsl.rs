@@ -57,6 +57,13 @@ fn library_validates_with_naga() {
         "reservoir_slot",
         "reservoir_weight",
         "weighted_replace",
+        "xi_for",
+        "sphere_union",
+        "ray_aabb",
+        "ray_triangle",
+        "mis_balance",
+        "mis_power",
+        "cosine_pdf",
     ] {
         assert!(names.iter().any(|n| n == f), "{f} missing from the WGSL library");
     }
