@@ -41,6 +41,18 @@ enum Command {
     },
     /// Compare two EXR images: RMSE, relative RMSE, max difference, NaN/inf.
     Diff(diff::DiffArgs),
+    /// Export every GPU kernel as WGSL, SPIR-V, GLSL, HLSL and MSL.
+    Shaders {
+        /// Output folder.
+        #[arg(long)]
+        out: PathBuf,
+        /// Light types to compile into the BSH kernels (comma-separated).
+        #[arg(long, default_value = "point,spot,ies,triangle,vpl")]
+        lights: String,
+        /// Reservoir slots k of the BSH kernels.
+        #[arg(long, default_value_t = 8)]
+        reservoir_k: u32,
+    },
     /// Plot a `slc bench` JSON report again (.svg or .png).
     Plot {
         /// The JSON written by `slc bench --json`.
@@ -190,6 +202,7 @@ fn main() -> ExitCode {
         Some(Command::Ies { file, plot }) => ies(&file, plot.as_deref()),
         Some(Command::Diff(a)) => diff::run(a),
         Some(Command::Plot { json, out }) => replot(&json, &out),
+        Some(Command::Shaders { out, lights, reservoir_k }) => shaders(&out, &lights, reservoir_k),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -269,6 +282,39 @@ pub fn spinner(msg: &'static str) -> indicatif::ProgressBar {
 pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> Result<(), String> {
     img.write_exr(out).map_err(|e| e.to_string())?;
     img.write_png(&out.with_extension("png"), exposure).map_err(|e| e.to_string())
+}
+
+/// Writes `name.{wgsl,spv,glsl,hlsl,metal}` for every kernel: the BSH and
+/// update kernels for `lights`, and `vpl_tiled_{slc,clamp,none}` (VPLs).
+fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> Result<(), String> {
+    use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, generate_module, translate};
+    let lights = LightSet::parse(lights).map_err(|e| e.to_string())?;
+    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    let base = Features { lights, reservoir_k, ..Features::default() };
+    let vpl = LightSet { vpl: true, ..LightSet::default() };
+    let mut jobs: Vec<(String, Kernel, Features)> = [Kernel::LightUpdate, Kernel::BshRefit, Kernel::BshReservoir, Kernel::PtConnect]
+        .into_iter()
+        .map(|k| (k.name().to_string(), k, base))
+        .collect();
+    for (m, name) in [(CullMethod::Slc, "slc"), (CullMethod::Clamp, "clamp"), (CullMethod::None, "none")] {
+        jobs.push((format!("vpl_tiled_{name}"), Kernel::VplTiled, Features { lights: vpl, method: m, ..base }));
+    }
+    let write = |name: &str, ext: &str, bytes: &[u8]| {
+        let p = out.join(format!("{name}.{ext}"));
+        std::fs::write(&p, bytes).map_err(|e| format!("cannot write {}: {e}", p.display()))
+    };
+    for (name, kernel, features) in &jobs {
+        let g = generate_module(*kernel, features).map_err(|e| e.to_string())?;
+        let t = translate(&g).map_err(|e| e.to_string())?;
+        write(name, "wgsl", g.source.as_bytes())?;
+        write(name, "spv", &t.spv.iter().flat_map(|w| w.to_le_bytes()).collect::<Vec<u8>>())?;
+        write(name, "glsl", t.glsl.as_bytes())?;
+        write(name, "hlsl", t.hlsl.as_bytes())?;
+        write(name, "metal", t.msl.as_bytes())?;
+        println!("  {name}: wgsl spv glsl hlsl metal");
+    }
+    println!("wrote {} kernels to {} (lights: {})", jobs.len(), out.display(), lights.names().join(", "));
+    Ok(())
 }
 
 fn replot(json: &Path, out: &Path) -> Result<(), String> {

@@ -175,3 +175,23 @@ fn example_scene_files_render() {
     assert!(n >= 3, "expected the example scenes, found {n}");
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// README: `slc shaders --out DIR [--lights ...]` writes every kernel in
+/// every format.
+#[test]
+fn shaders_command_exports_every_kernel() {
+    let d = tempdir("shaders");
+    let text = ok(&d, &["shaders", "--out", "k", "--lights", "point,triangle"]);
+    assert!(text.contains("7 kernels"), "{text}");
+    for name in ["light_update", "bsh_refit", "bsh_reservoir", "pt_connect", "vpl_tiled_slc", "vpl_tiled_clamp", "vpl_tiled_none"] {
+        for ext in ["wgsl", "spv", "glsl", "hlsl", "metal"] {
+            let p = d.join("k").join(format!("{name}.{ext}"));
+            assert!(std::fs::metadata(&p).map(|m| m.len() > 100).unwrap_or(false), "{} missing or empty", p.display());
+        }
+    }
+    let pt = std::fs::read_to_string(d.join("k/pt_connect.wgsl")).unwrap();
+    assert!(pt.contains("LIGHT_TRIANGLE:") && !pt.contains("case LIGHT_SPOT:"));
+    let out = slc(&d, &["shaders", "--out", "k2", "--lights", "laser"]);
+    assert!(!out.status.success());
+    std::fs::remove_dir_all(&d).ok();
+}

@@ -24,6 +24,13 @@ crate::shared! {
     /// value instead of ∞ on both backends.
     pub const MIN_D2: f32 = 0.000000000001;
 
+    /// Radius `R + √r²` of the range sphere of a light with extent `R`
+    /// (0 for points, the minimal-sphere radius for triangles; talk: "Area
+    /// light bound") and squared random range `r²`.
+    pub fn range_radius(extent: f32, r2: f32) -> f32 {
+        return extent + sqrt(r2);
+    }
+
     /// Inverse-square fall-off `1 / max(d², MIN_D2)`.
     pub fn inverse_square(d2: f32) -> f32 {
         return 1.0 / max(d2, MIN_D2);
@@ -96,7 +103,7 @@ pub struct LightBound {
 impl LightBound {
     /// The range sphere `(c, R + √r²)` for squared random range `r2`.
     pub fn range_sphere(&self, r2: f32) -> Sphere {
-        Sphere::new(self.center, self.extent + sqrt(r2))
+        Sphere::new(self.center, range_radius(self.extent, r2))
     }
 }
 

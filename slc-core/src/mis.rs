@@ -4,6 +4,7 @@
 //! pdf_area(y)`, converted to solid angle
 //! ([`crate::light::area_to_solid_angle_pdf`]).
 
+use crate::light::INV_PI;
 use crate::wgsl::*;
 
 crate::shared! {
@@ -30,7 +31,7 @@ crate::shared! {
 
     /// Cosine-weighted hemisphere pdf of a diffuse BSDF sample: `max(cos θ, 0)/π`.
     pub fn cosine_pdf(cos_theta: f32) -> f32 {
-        return max(cos_theta, 0.0) * 0.3183098861837907;
+        return max(cos_theta, 0.0) * INV_PI;
     }
 }
 

@@ -80,6 +80,16 @@ crate::shared! {
         return max(rgb.x, max(rgb.y, rgb.z));
     }
 
+    /// `1 + 2⁻²⁰`: how much [`cull_radius`] rounds `√r²` up.
+    pub const CULL_RADIUS_SCALE: f32 = 1.00000095367431640625;
+
+    /// Radius of a light's culling sphere for squared range `r2`: `√r²`
+    /// rounded up by 2⁻²⁰ relative, so that `d² < r²` implies `d ≤ radius`
+    /// in f32 (tile culling never drops a light the per-point test keeps).
+    pub fn cull_radius(r2: f32) -> f32 {
+        return sqrt(r2) * CULL_RADIUS_SCALE;
+    }
+
     /// Windowed fall-off of the clamped-range baseline used by Bevy and
     /// others: `saturate(1 − (d²/r²)²)² / max(d², 10⁻⁴)` (biased: it darkens).
     pub fn windowed_falloff(d2: f32, range2: f32) -> f32 {

@@ -210,7 +210,7 @@ fn add_wrap_u32(a: u32, b: u32) -> u32 { return a + b; }
 macro_rules! shared {
     (@acc [$($w:expr),*]) => {
         /// This module's shared items as WGSL source (raw `stringify!` text;
-        /// use [`crate::wgsl::library`] for the assembled module).
+        /// `slc_core::wgsl::translate` formats it).
         pub const WGSL: &str = concat!($($w, "\n"),*);
     };
     (@acc [$($w:expr),*]
@@ -226,7 +226,7 @@ macro_rules! shared {
         $($rest:tt)*) => {
         $(#[$m])*
         #[inline]
-        #[allow(clippy::needless_return, unused_mut, clippy::collapsible_else_if, clippy::assign_op_pattern)]
+        #[allow(clippy::needless_return, unused_mut, clippy::collapsible_else_if, clippy::assign_op_pattern, clippy::manual_range_contains)]
         pub fn $name($($arg: $aty),*) -> $ret $body
         $crate::shared!(@acc [$($w,)* stringify!(fn $name($($arg: $aty),*) -> $ret $body)] $($rest)*);
     };

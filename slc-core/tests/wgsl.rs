@@ -58,6 +58,8 @@ fn library_validates_with_naga() {
         "reservoir_weight",
         "weighted_replace",
         "xi_for",
+        "cull_radius",
+        "range_radius",
         "sphere_union",
         "ray_aabb",
         "ray_triangle",

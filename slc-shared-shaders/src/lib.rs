@@ -1,25 +1,469 @@
 //! # slc-shared-shaders
 //!
-//! The single place where slc's GPU code is assembled. **Status: this crate
-//! is filled by the slc-shared-shaders issue**; today it re-exports the
-//! shared WGSL library of slc-core so engines can already include the range
-//! math, light intensities, IES lookup, sphere tests and reservoir update in
-//! their own WGSL.
+//! The single place where slc's GPU code is assembled. Kernel templates
+//! (WGSL with minijinja blocks, in `src/templates/`) include slc-core's
+//! shared functions ([`slc_core::wgsl::library`]) and this crate's buffer
+//! structs ([`layout`]), both generated from Rust: no template retypes a
+//! formula of the core. [`generate`] specialises a kernel to a scene's
+//! [`Features`] (only the light types present are compiled in), and
+//! validates the result with naga, reporting naga's message with the
+//! offending source line. [`translate`] turns a kernel into SPIR-V, GLSL,
+//! HLSL and MSL for engines that are not on wgpu (`slc shaders --out DIR`).
 //!
-//! It will hold: WGSL kernel templates (per-frame light update and BSH refit,
-//! tiled culling per 8×8 interleaved sub-image, VPL shading, BSH traversal
-//! into a k-slot reservoir, path-tracing light connection with MIS), a
-//! generator that specialises them to a scene's light types, naga validation
-//! of every variant, snapshot tests, and export to SPIR-V/GLSL/HLSL/MSL.
+//! ## Kernels and bindings
+//!
+//! Every kernel also declares `@group(1) @binding(0) slc_table:
+//! array<f32>` (read): the IES profiles
+//! ([`slc_core::ies::IesProfile::table`], concatenated; a light's
+//! `ies_base` is its offset). Host = written by the host before dispatch.
+//!
+//! **`light_update`** (1-D, `workgroup_size`): per light, `r² = r_t²/(1−ξ)`
+//! with `ξ = xi_for(seed, frame, id)`.
+//!
+//! | group.binding | type | written by |
+//! |---|---|---|
+//! | 0.0 | `uniform FrameParams` | host |
+//! | 0.1 | `storage<read> ids: array<u32>` (ξ id of each light) | host |
+//! | 0.2 | `storage<read> rt2: array<f32>` | host |
+//! | 0.3 | `storage<read_write> r2: array<f32>` | this kernel |
+//!
+//! **`bsh_refit`** (1-D, one dispatch per tree level, deepest first, with a
+//! dynamic uniform offset selecting the level's `RefitParams`).
+//!
+//! | group.binding | type | written by |
+//! |---|---|---|
+//! | 0.0 | `uniform RefitParams` | host |
+//! | 0.1 | `storage<read> order: array<u32>` (node indices by level) | host |
+//! | 0.2 | `storage<read> extent: array<f32>` (per light `R`) | host |
+//! | 0.3 | `storage<read> r2: array<f32>` | `light_update` |
+//! | 0.4 | `storage<read_write> bsh_nodes: array<BshNode>` | host (build), this kernel (refit) |
+//!
+//! **`vpl_tiled`** (workgroup `tile × tile`, grid
+//! `(⌈sub_w/tile⌉, ⌈sub_h/tile⌉, period²)`): tiled culling and VPL shading
+//! of each interleaved sub-image.
+//!
+//! | group.binding | type | written by |
+//! |---|---|---|
+//! | 0.0 | `uniform VplParams` | host |
+//! | 0.1 | `storage<read> gb_position: array<vec4f>` (w > 0: surface) | host / G-buffer pass |
+//! | 0.2 | `storage<read> gb_normal: array<vec4f>` | host / G-buffer pass |
+//! | 0.3 | `storage<read> lights: array<GpuLight>` (VPLs by subset, flux × period²) | host |
+//! | 0.4 | `storage<read> rt2: array<f32>` | host |
+//! | 0.5 | `storage<read> r2: array<f32>` | `light_update` (SLC) or host (clamp: R²) |
+//! | 0.6 | `storage<read_write> irradiance: array<vec4f>` (rgb, kept) | this kernel |
+//!
+//! **`bsh_reservoir`** (1-D): direct light at shading points through the BSH
+//! and a k-slot reservoir, with shadow rays.
+//!
+//! | group.binding | type | written by |
+//! |---|---|---|
+//! | 0.0 | `uniform ShadeParams` | host |
+//! | 0.1 | `storage<read> points: array<vec4f>` (w > 0: valid) | host |
+//! | 0.2 | `storage<read> normals: array<vec4f>` | host |
+//! | 0.3 | `storage<read> lights: array<GpuLight>` | host |
+//! | 0.4 | `storage<read> rt2: array<f32>` | host |
+//! | 0.5 | `storage<read> r2: array<f32>` | `light_update` |
+//! | 0.6 | `storage<read> bsh_nodes: array<BshNode>` | `bsh_refit` |
+//! | 0.7 | `storage<read> geo_nodes: array<GpuGeoNode>` | host |
+//! | 0.8 | `storage<read> geo_tris: array<GpuTriangle>` | host |
+//! | 0.9 | `storage<read_write> irradiance: array<vec4f>` (rgb, in-range lights) | this kernel |
+//!
+//! **`pt_connect`** (1-D): explicit light connection of a path tracer with
+//! MIS; bindings 0.0, 0.2–0.7 as `bsh_reservoir` shifted by one, plus
+//! `0.1 vertices: array<GpuPathVertex>` (host or bounce kernel),
+//! `0.8 radiance: array<vec4f>` (accumulated, read_write) and
+//! `0.9 candidates: array<u32>` (in-range lights per vertex, for the MIS
+//! weight of implicit hits via `light_pdf`).
+//!
+//! ## Embedding one kernel in your own wgpu pass
 //!
 //! ```
-//! let wgsl = slc_shared_shaders::core_library();
-//! assert!(wgsl.contains("fn rr_probability"));
+//! use slc_shared_shaders::{generate, Features, Kernel, LightSet};
+//!
+//! let features = Features { lights: LightSet::parse("point,spot").unwrap(), ..Features::default() };
+//! let wgsl = generate(Kernel::LightUpdate, &features).unwrap();
+//! assert!(wgsl.contains("fn main"));
+//! // let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+//! //     label: Some("slc light_update"),
+//! //     source: wgpu::ShaderSource::Wgsl(wgsl.into()),
+//! // });
+//! // let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+//! //     module: &module, entry_point: Some("main"), layout: None, ..
+//! // });
+//! // Bind FrameParams, ids, rt2 and r2 as in the table above and dispatch
+//! // ceil(light_count / workgroup_size) workgroups.
 //! ```
 #![deny(missing_docs)]
 
-/// slc-core's shared functions as one WGSL source text (see
-/// [`slc_core::wgsl::library`] for what a module including it must declare).
-pub fn core_library() -> String {
-    slc_core::wgsl::library()
+pub mod layout;
+
+use minijinja::{Environment, context};
+use naga::valid::{Capabilities, ModuleInfo, ValidationFlags, Validator};
+use thiserror::Error;
+
+/// What went wrong while generating or translating a kernel.
+#[derive(Debug, Error, PartialEq)]
+pub enum ShaderError {
+    /// A feature combination the kernels do not support.
+    #[error("unsupported kernel features: {0}")]
+    Unsupported(String),
+    /// The template failed to render (a bug in a template).
+    #[error("template {kernel}: {message}")]
+    Template {
+        /// Kernel name.
+        kernel: &'static str,
+        /// minijinja's message.
+        message: String,
+    },
+    /// naga rejected the generated WGSL; the message quotes the source line.
+    #[error("generated WGSL of {kernel} is invalid:\n{message}")]
+    Naga {
+        /// Kernel name.
+        kernel: &'static str,
+        /// naga's message with the offending line.
+        message: String,
+    },
+    /// A naga backend failed.
+    #[error("{kernel}: translation to {backend} failed: {message}")]
+    Translate {
+        /// Kernel name.
+        kernel: &'static str,
+        /// `spv`, `glsl`, `hlsl` or `msl`.
+        backend: &'static str,
+        /// naga's message.
+        message: String,
+    },
+}
+
+/// Which light types a scene has; only these are compiled into a kernel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub struct LightSet {
+    /// Point lights.
+    pub point: bool,
+    /// Spot lights.
+    pub spot: bool,
+    /// IES lights.
+    pub ies: bool,
+    /// Triangle emitters.
+    pub triangle: bool,
+    /// VPLs.
+    pub vpl: bool,
+}
+
+impl LightSet {
+    /// Names in the order `point, spot, ies, triangle, vpl`.
+    pub const NAMES: [&'static str; 5] = ["point", "spot", "ies", "triangle", "vpl"];
+
+    /// Every light type.
+    pub const ALL: LightSet = LightSet { point: true, spot: true, ies: true, triangle: true, vpl: true };
+
+    /// Parses a comma-separated list such as `point,spot,ies`.
+    pub fn parse(list: &str) -> Result<LightSet, ShaderError> {
+        let mut s = LightSet::default();
+        for name in list.split(',').map(str::trim).filter(|n| !n.is_empty()) {
+            match name {
+                "point" => s.point = true,
+                "spot" => s.spot = true,
+                "ies" => s.ies = true,
+                "triangle" => s.triangle = true,
+                "vpl" => s.vpl = true,
+                other => {
+                    return Err(ShaderError::Unsupported(format!(
+                        "unknown light type '{other}' (known: point, spot, ies, triangle, vpl)"
+                    )));
+                }
+            }
+        }
+        Ok(s)
+    }
+
+    /// The set with bit `i` of `bits` standing for `NAMES[i]`.
+    pub fn from_bits(bits: u32) -> LightSet {
+        LightSet { point: bits & 1 != 0, spot: bits & 2 != 0, ies: bits & 4 != 0, triangle: bits & 8 != 0, vpl: bits & 16 != 0 }
+    }
+
+    fn flags(&self) -> [bool; 5] {
+        [self.point, self.spot, self.ies, self.triangle, self.vpl]
+    }
+
+    /// Names of the types in the set.
+    pub fn names(&self) -> Vec<&'static str> {
+        Self::NAMES.iter().zip(self.flags()).filter(|(_, f)| *f).map(|(n, _)| *n).collect()
+    }
+
+    /// `true` when no type is in the set.
+    pub fn is_empty(&self) -> bool {
+        !self.flags().iter().any(|f| *f)
+    }
+}
+
+/// The GPU kernels.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Kernel {
+    /// Random ranges from ξ, per frame.
+    LightUpdate,
+    /// BSH refit, one level per dispatch.
+    BshRefit,
+    /// Tiled culling + VPL shading per interleaved sub-image.
+    VplTiled,
+    /// BSH traversal into a k-slot reservoir + shading with shadow rays.
+    BshReservoir,
+    /// Path-tracing light connection with MIS.
+    PtConnect,
+}
+
+impl Kernel {
+    /// All kernels.
+    pub const ALL: [Kernel; 5] = [Kernel::LightUpdate, Kernel::BshRefit, Kernel::VplTiled, Kernel::BshReservoir, Kernel::PtConnect];
+
+    /// File stem / name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kernel::LightUpdate => "light_update",
+            Kernel::BshRefit => "bsh_refit",
+            Kernel::VplTiled => "vpl_tiled",
+            Kernel::BshReservoir => "bsh_reservoir",
+            Kernel::PtConnect => "pt_connect",
+        }
+    }
+}
+
+/// Culling method of `vpl_tiled`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CullMethod {
+    /// Stochastic light culling.
+    Slc,
+    /// Clamped ranges (biased baseline).
+    Clamp,
+    /// No culling.
+    None,
+}
+
+/// MIS heuristic of `pt_connect`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Heuristic {
+    /// `a/(a+b)`.
+    Balance,
+    /// `a²/(a²+b²)`.
+    Power,
+}
+
+/// What a kernel is specialised to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Features {
+    /// Light types compiled in.
+    pub lights: LightSet,
+    /// Reservoir slots `k` (1..=64).
+    pub reservoir_k: u32,
+    /// Workgroup size of the 1-D kernels (1..=256).
+    pub workgroup_size: u32,
+    /// Tile edge of `vpl_tiled` in sub-image pixels (1..=16).
+    pub tile_size: u32,
+    /// Interleave period `P` (P×P subsets, 1..=16).
+    pub interleave: u32,
+    /// Capacity of a tile's light list (at least the lights per subset).
+    pub max_tile_lights: u32,
+    /// Culling method of `vpl_tiled`.
+    pub method: CullMethod,
+    /// MIS heuristic of `pt_connect`.
+    pub heuristic: Heuristic,
+}
+
+impl Default for Features {
+    fn default() -> Self {
+        Features {
+            lights: LightSet::ALL,
+            reservoir_k: 8,
+            workgroup_size: 64,
+            tile_size: 8,
+            interleave: 8,
+            max_tile_lights: 1024,
+            method: CullMethod::Slc,
+            heuristic: Heuristic::Power,
+        }
+    }
+}
+
+const TEMPLATES: [(&str, &str); 10] = [
+    ("header.wgsl", include_str!("templates/header.wgsl")),
+    ("lights.wgsl", include_str!("templates/lights.wgsl")),
+    ("geometry.wgsl", include_str!("templates/geometry.wgsl")),
+    ("bsh_collect.wgsl", include_str!("templates/bsh_collect.wgsl")),
+    ("light_update", include_str!("templates/light_update.wgsl")),
+    ("bsh_refit", include_str!("templates/bsh_refit.wgsl")),
+    ("vpl_tiled", include_str!("templates/vpl_tiled.wgsl")),
+    ("bsh_reservoir", include_str!("templates/bsh_reservoir.wgsl")),
+    ("pt_connect", include_str!("templates/pt_connect.wgsl")),
+    ("layout", ""),
+];
+
+/// The template sources, for inspection (e.g. the test that no template
+/// retypes a core formula).
+pub fn templates() -> impl Iterator<Item = (&'static str, &'static str)> {
+    TEMPLATES.iter().copied().filter(|(n, _)| *n != "layout")
+}
+
+/// Checks the feature ranges and the combinations a kernel supports.
+pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
+    let bad = |m: String| Err(ShaderError::Unsupported(m));
+    if !(1..=64).contains(&f.reservoir_k) {
+        return bad(format!("reservoir k = {} must be in 1..=64", f.reservoir_k));
+    }
+    if !(1..=256).contains(&f.workgroup_size) {
+        return bad(format!("workgroup size {} must be in 1..=256", f.workgroup_size));
+    }
+    match kernel {
+        Kernel::VplTiled => {
+            if f.lights != (LightSet { vpl: true, ..LightSet::default() }) {
+                return bad(format!("vpl_tiled shades VPLs only; the scene asks for [{}]", f.lights.names().join(", ")));
+            }
+            if !(1..=16).contains(&f.tile_size) || !f.tile_size.is_power_of_two() {
+                return bad(format!("tile size {} must be a power of two in 1..=16", f.tile_size));
+            }
+            if !(1..=16).contains(&f.interleave) {
+                return bad(format!("interleave period {} must be in 1..=16", f.interleave));
+            }
+            // Workgroup memory: two vec3f per thread, the list, the counter.
+            let bytes = 32 * f.tile_size * f.tile_size + 4 * f.max_tile_lights + 4;
+            if f.max_tile_lights == 0 || bytes > 16384 {
+                return bad(format!(
+                    "tile {0}x{0} with {1} list slots needs {bytes} bytes of workgroup memory (WebGPU guarantees 16384)",
+                    f.tile_size, f.max_tile_lights
+                ));
+            }
+        }
+        Kernel::BshReservoir | Kernel::PtConnect if f.lights.is_empty() => {
+            return bad(format!("{} needs at least one light type", kernel.name()));
+        }
+        _ => {}
+    }
+    Ok(())
+}
+
+/// A generated, validated kernel.
+#[derive(Debug)]
+pub struct Generated {
+    /// The kernel.
+    pub kernel: Kernel,
+    /// WGSL source.
+    pub source: String,
+    /// naga's module.
+    pub module: naga::Module,
+    /// naga's validation info.
+    pub info: ModuleInfo,
+}
+
+/// Renders `kernel` for `features` and validates it with naga.
+pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated, ShaderError> {
+    check(kernel, features)?;
+    let mut env = Environment::new();
+    env.set_trim_blocks(true);
+    env.set_lstrip_blocks(true);
+    env.set_keep_trailing_newline(true);
+    for (name, src) in TEMPLATES {
+        env.add_template(name, src).map_err(|e| ShaderError::Template { kernel: kernel.name(), message: e.to_string() })?;
+    }
+    let l = features.lights;
+    let method = match features.method {
+        CullMethod::Slc => "slc",
+        CullMethod::Clamp => "clamp",
+        CullMethod::None => "none",
+    };
+    let heuristic = match features.heuristic {
+        Heuristic::Balance => "balance",
+        Heuristic::Power => "power",
+    };
+    let ctx = context! {
+        kernel => kernel.name(),
+        core => slc_core::wgsl::library(),
+        layout => slc_core::wgsl::translate(layout::WGSL),
+        light_names => l.names().join(", "),
+        point => l.point, spot => l.spot, ies => l.ies, triangle => l.triangle, vpl => l.vpl,
+        k => features.reservoir_k,
+        wg => features.workgroup_size,
+        tile => features.tile_size,
+        period => features.interleave,
+        max_tile_lights => features.max_tile_lights,
+        method => method,
+        heuristic => heuristic,
+    };
+    let source = env
+        .get_template(kernel.name())
+        .and_then(|t| t.render(ctx))
+        .map_err(|e| ShaderError::Template { kernel: kernel.name(), message: e.to_string() })?;
+    let (module, info) = validate(kernel.name(), &source)?;
+    Ok(Generated { kernel, source, module, info })
+}
+
+/// [`generate_module`]'s WGSL source.
+pub fn generate(kernel: Kernel, features: &Features) -> Result<String, ShaderError> {
+    generate_module(kernel, features).map(|g| g.source)
+}
+
+/// Parses and validates WGSL with naga (WebGPU's baseline capabilities).
+pub fn validate(kernel: &'static str, source: &str) -> Result<(naga::Module, ModuleInfo), ShaderError> {
+    let module = naga::front::wgsl::parse_str(source)
+        .map_err(|e| ShaderError::Naga { kernel, message: e.emit_to_string(source) })?;
+    let info = Validator::new(ValidationFlags::all(), Capabilities::default())
+        .validate(&module)
+        .map_err(|e| ShaderError::Naga { kernel, message: e.emit_to_string(source) })?;
+    Ok((module, info))
+}
+
+/// A kernel in every naga back end.
+#[derive(Debug)]
+pub struct Translations {
+    /// SPIR-V words.
+    pub spv: Vec<u32>,
+    /// GLSL 4.30 compute shader.
+    pub glsl: String,
+    /// HLSL (shader model 5.1).
+    pub hlsl: String,
+    /// Metal Shading Language.
+    pub msl: String,
+}
+
+/// Translates a generated kernel to SPIR-V, GLSL, HLSL and MSL.
+pub fn translate(g: &Generated) -> Result<Translations, ShaderError> {
+    let kernel = g.kernel.name();
+    let err = |backend: &'static str| move |e: &dyn std::fmt::Display| ShaderError::Translate { kernel, backend, message: e.to_string() };
+    let spv = naga::back::spv::write_vec(&g.module, &g.info, &naga::back::spv::Options::default(), None)
+        .map_err(|e| err("spv")(&e))?;
+    let mut glsl = String::new();
+    let glsl_opts = naga::back::glsl::Options { version: naga::back::glsl::Version::Desktop(430), ..Default::default() };
+    let glsl_pipe = naga::back::glsl::PipelineOptions {
+        shader_stage: naga::ShaderStage::Compute,
+        entry_point: "main".into(),
+        multiview: None,
+    };
+    naga::back::glsl::Writer::new(&mut glsl, &g.module, &g.info, &glsl_opts, &glsl_pipe, naga::proc::BoundsCheckPolicies::default())
+        .and_then(|mut w| w.write())
+        .map_err(|e| err("glsl")(&e))?;
+    let mut hlsl = String::new();
+    let hlsl_opts = naga::back::hlsl::Options::default();
+    let hlsl_pipe = naga::back::hlsl::PipelineOptions::default();
+    naga::back::hlsl::Writer::new(&mut hlsl, &hlsl_opts, &hlsl_pipe)
+        .write(&g.module, &g.info, None)
+        .map_err(|e| err("hlsl")(&e))?;
+    let (msl, _) = naga::back::msl::write_string(
+        &g.module,
+        &g.info,
+        &naga::back::msl::Options::default(),
+        &naga::back::msl::PipelineOptions::default(),
+    )
+    .map_err(|e| err("msl")(&e))?;
+    Ok(Translations { spv, glsl, hlsl, msl })
+}
+
+/// Every kernel that applies to the features, generated and validated:
+/// `vpl_tiled` only for a VPL-only light set, the others always.
+pub fn all_kernels(features: &Features) -> Result<Vec<Generated>, ShaderError> {
+    Kernel::ALL
+        .iter()
+        .filter(|&&k| {
+            let only_vpl = features.lights == LightSet { vpl: true, ..LightSet::default() };
+            k != Kernel::VplTiled || only_vpl
+        })
+        .map(|&k| generate_module(k, features))
+        .collect()
 }

@@ -8,7 +8,7 @@
 
 use glam::Vec3;
 use slc_core::light::vpl_transfer;
-use slc_core::range::{slc_keep, slc_weight};
+use slc_core::range::{cull_radius, slc_keep, slc_weight};
 use slc_core::sphere::sphere_overlaps_aabb;
 
 /// How a light list is evaluated.
@@ -61,12 +61,11 @@ impl LightList {
         self.chunks.clear();
     }
 
-    /// Appends one light; its culling sphere has radius `√r²`, rounded up
-    /// by 2⁻²⁰ relative so that `d² < r²` implies `d ≤ radius` in f32 (tile
-    /// culling never drops a light the per-pixel test would keep).
+    /// Appends one light; its culling sphere has radius
+    /// [`slc_core::range::cull_radius`]`(r²)`.
     pub fn push(&mut self, p: Vec3, n: Vec3, flux: Vec3, rt2: f32, r2: f32) {
         self.real = self.len() + 1;
-        self.radius.push(r2.sqrt() * (1.0 + 1.0 / 1_048_576.0));
+        self.radius.push(cull_radius(r2));
         self.px.push(p.x);
         self.py.push(p.y);
         self.pz.push(p.z);

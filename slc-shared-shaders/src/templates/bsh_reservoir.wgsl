@@ -1,0 +1,60 @@
+{% include "header.wgsl" %}
+{% include "lights.wgsl" %}
+{% include "geometry.wgsl" %}
+{% include "bsh_collect.wgsl" %}
+// Direct light from many lights at shading points: BSH traversal into a
+// {{ k }}-slot reservoir, then shading of the picks with the RR test (at the
+// sampled point for area lights), the 1/p and n/k weights and a shadow ray.
+// Output: irradiance (rgb) and the number of in-range lights (w).
+
+@group(0) @binding(0) var<uniform> params: ShadeParams;
+@group(0) @binding(1) var<storage, read> points: array<vec4f>;
+@group(0) @binding(2) var<storage, read> normals: array<vec4f>;
+@group(0) @binding(3) var<storage, read> lights: array<GpuLight>;
+@group(0) @binding(4) var<storage, read> rt2: array<f32>;
+@group(0) @binding(5) var<storage, read> r2: array<f32>;
+@group(0) @binding(6) var<storage, read> bsh_nodes: array<BshNode>;
+@group(0) @binding(7) var<storage, read> geo_nodes: array<GpuGeoNode>;
+@group(0) @binding(8) var<storage, read> geo_tris: array<GpuTriangle>;
+@group(0) @binding(9) var<storage, read_write> irradiance: array<vec4f>;
+@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+
+@compute @workgroup_size({{ wg }})
+fn main(@builtin(global_invocation_id) gid: vec3u) {
+    let i = gid.x;
+    if i >= params.point_count {
+        return;
+    }
+    let p = points[i];
+    if p.w <= 0.0 {
+        irradiance[i] = vec4f(0.0);
+        return;
+    }
+    let x = p.xyz;
+    let n = normals[i].xyz;
+    let seed = pcg_hash(params.seed ^ pcg_hash(i ^ pcg_hash(params.frame)));
+    let picks = bsh_collect(x, seed);
+    let w_res = reservoir_weight(picks.n, K);
+    var h = pcg_hash(seed ^ 2654435769u);
+    var e = vec3f(0.0);
+    for (var s = 0u; s < min(picks.n, K); s++) {
+        let li = picks.light[s];
+        let l = lights[li];
+        h = pcg_hash(h);
+        let u1 = xi_from_bits(h);
+        h = pcg_hash(h);
+        let y = light_point(l, u1, xi_from_bits(h));
+        let v = x - y;
+        let d2 = dot(v, v);
+        if !slc_keep(r2[li], d2) || d2 <= 0.0 {
+            continue;
+        }
+        let w = v / sqrt(d2);
+        let cos_x = -dot(n, w);
+        if cos_x <= 0.0 || occluded(x + n * params.eps, y) {
+            continue;
+        }
+        e += light_intensity(l, w) * (cos_x * inverse_square(d2) * slc_weight(rt2[li], d2) * w_res);
+    }
+    irradiance[i] = vec4f(e, f32(picks.n));
+}

@@ -1,0 +1,96 @@
+{% include "header.wgsl" %}
+{% include "lights.wgsl" %}
+{% include "geometry.wgsl" %}
+{% include "bsh_collect.wgsl" %}
+// Explicit light connection of a progressive path tracer: at every live path
+// vertex, the BSH and a {{ k }}-slot reservoir pick lights; each pick is
+// sampled, passes the RR test at the sampled point, casts a shadow ray and is
+// weighted by MIS ({{ heuristic }} heuristic) against cosine BSDF sampling.
+// The light strategy's pdf includes the RR probability and the reservoir's
+// selection probability (talk: "Multiple importance sampling").
+
+@group(0) @binding(0) var<uniform> params: ShadeParams;
+@group(0) @binding(1) var<storage, read> vertices: array<GpuPathVertex>;
+@group(0) @binding(2) var<storage, read> lights: array<GpuLight>;
+@group(0) @binding(3) var<storage, read> rt2: array<f32>;
+@group(0) @binding(4) var<storage, read> r2: array<f32>;
+@group(0) @binding(5) var<storage, read> bsh_nodes: array<BshNode>;
+@group(0) @binding(6) var<storage, read> geo_nodes: array<GpuGeoNode>;
+@group(0) @binding(7) var<storage, read> geo_tris: array<GpuTriangle>;
+@group(0) @binding(8) var<storage, read_write> radiance: array<vec4f>;
+@group(0) @binding(9) var<storage, read_write> candidates: array<u32>;
+@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+
+/// MIS weight of the light strategy against the BSDF strategy.
+fn mis_weight(pdf_light: f32, pdf_bsdf: f32) -> f32 {
+{% if heuristic == "power" %}
+    return mis_power(pdf_light, pdf_bsdf);
+{% else %}
+    return mis_balance(pdf_light, pdf_bsdf);
+{% endif %}
+}
+
+/// Solid-angle pdf with which the light strategy at `x` (whose traversal saw
+/// `n_seen` in-range lights) produces the point `y` on area light `li`: the
+/// reservoir's selection probability min(k/n, 1), the RR probability at
+/// |x − y|, and the area pdf converted to solid angle. `in_range` says
+/// whether the light's range sphere (its BSH leaf) contains `x`; if not, the
+/// light strategy cannot produce `y` and the pdf is 0. The path tracer's
+/// BSDF bounce uses this to weight implicit hits on emitters.
+fn light_pdf(li: u32, x: vec3f, y: vec3f, n_seen: u32, in_range: bool) -> f32 {
+    let l = lights[li];
+    let area = light_area(l);
+    let v = x - y;
+    let d2 = dot(v, v);
+    if !in_range || area <= 0.0 || n_seen == 0u || d2 <= 0.0 {
+        return 0.0;
+    }
+    let cos_y = dot(light_normal(l), v / sqrt(d2));
+    let select_p = 1.0 / reservoir_weight(n_seen, K);
+    return select_p * rr_probability(rt2[li], d2) * area_to_solid_angle_pdf(1.0 / area, d2, cos_y);
+}
+
+@compute @workgroup_size({{ wg }})
+fn main(@builtin(global_invocation_id) gid: vec3u) {
+    let i = gid.x;
+    if i >= params.point_count {
+        return;
+    }
+    let vtx = vertices[i];
+    if vtx.alive == 0u {
+        candidates[i] = 0u;
+        return;
+    }
+    let x = vtx.position;
+    let n = vtx.normal;
+    let seed = pcg_hash(params.seed ^ pcg_hash(i ^ pcg_hash(params.frame)));
+    let picks = bsh_collect(x, seed);
+    candidates[i] = picks.n;
+    let w_res = reservoir_weight(picks.n, K);
+    var h = pcg_hash(seed ^ 2654435769u);
+    var sum = vec3f(0.0);
+    for (var s = 0u; s < min(picks.n, K); s++) {
+        let li = picks.light[s];
+        let l = lights[li];
+        h = pcg_hash(h);
+        let u1 = xi_from_bits(h);
+        h = pcg_hash(h);
+        let y = light_point(l, u1, xi_from_bits(h));
+        let v = x - y;
+        let d2 = dot(v, v);
+        if !slc_keep(r2[li], d2) || d2 <= 0.0 {
+            continue;
+        }
+        let w = v / sqrt(d2);
+        let cos_x = -dot(n, w);
+        if cos_x <= 0.0 || occluded(x + n * params.eps, y) {
+            continue;
+        }
+        var mis = 1.0;
+        if light_area(l) > 0.0 {
+            mis = mis_weight(light_pdf(li, x, y, picks.n, true), cosine_pdf(cos_x));
+        }
+        sum += light_intensity(l, w) * (cos_x * inverse_square(d2) * slc_weight(rt2[li], d2) * w_res * mis);
+    }
+    radiance[i] += vec4f(vtx.weight * sum, 0.0);
+}

@@ -1,0 +1,108 @@
+{% include "header.wgsl" %}
+{% include "lights.wgsl" %}
+// Tiled deferred VPL shading with {{ method }} culling, for {{ period }}x{{ period }}
+// interleaved sampling: workgroup (x, y, s) is tile (x, y) of sub-image s,
+// which holds the pixels (s mod P + P·i, s / P + P·j) and shades them with
+// VPL subset s (VPLs stored subset after subset, flux already scaled by P²).
+// The tile's box of G-buffer positions is reduced in workgroup memory, the
+// subset's range spheres are culled against it into a workgroup list, then
+// each pixel loops over the list with the keep test and 1/p weight.
+
+const P: u32 = {{ period }}u;
+const TILE: u32 = {{ tile }}u;
+const THREADS: u32 = TILE * TILE;
+const MAX_TILE_LIGHTS: u32 = {{ max_tile_lights }}u;
+
+@group(0) @binding(0) var<uniform> params: VplParams;
+@group(0) @binding(1) var<storage, read> gb_position: array<vec4f>;
+@group(0) @binding(2) var<storage, read> gb_normal: array<vec4f>;
+@group(0) @binding(3) var<storage, read> lights: array<GpuLight>;
+@group(0) @binding(4) var<storage, read> rt2: array<f32>;
+@group(0) @binding(5) var<storage, read> r2: array<f32>;
+@group(0) @binding(6) var<storage, read_write> irradiance: array<vec4f>;
+@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+
+var<workgroup> wg_lo: array<vec3f, THREADS>;
+var<workgroup> wg_hi: array<vec3f, THREADS>;
+var<workgroup> tile_count: atomic<u32>;
+var<workgroup> tile_lights: array<u32, MAX_TILE_LIGHTS>;
+
+@compute @workgroup_size({{ tile }}, {{ tile }}, 1)
+fn main(
+    @builtin(workgroup_id) wg: vec3u,
+    @builtin(local_invocation_id) lid: vec3u,
+    @builtin(local_invocation_index) li: u32,
+) {
+    let sub = wg.z;
+    let px = sub % P + (wg.x * TILE + lid.x) * P;
+    let py = sub / P + (wg.y * TILE + lid.y) * P;
+    let inside = px < params.width && py < params.height;
+    let pix = py * params.width + px;
+    var pos = vec4f(0.0);
+    var nrm = vec3f(0.0);
+    if inside {
+        pos = gb_position[pix];
+        nrm = gb_normal[pix].xyz;
+    }
+    let valid = inside && pos.w > 0.0;
+    wg_lo[li] = select(vec3f(3.0e38), pos.xyz, valid);
+    wg_hi[li] = select(vec3f(-3.0e38), pos.xyz, valid);
+    if li == 0u {
+        atomicStore(&tile_count, 0u);
+    }
+    workgroupBarrier();
+    for (var stride = THREADS / 2u; stride > 0u; stride = stride / 2u) {
+        if li < stride {
+            wg_lo[li] = min(wg_lo[li], wg_lo[li + stride]);
+            wg_hi[li] = max(wg_hi[li], wg_hi[li + stride]);
+        }
+        workgroupBarrier();
+    }
+    let lo = wg_lo[0];
+    let hi = wg_hi[0];
+    let base = sub * params.lights_per_subset;
+{% if method == "none" %}
+    let count = params.lights_per_subset;
+{% else %}
+    for (var j = li; j < params.lights_per_subset; j += THREADS) {
+        if sphere_overlaps_aabb(lights[base + j].p0, cull_radius(r2[base + j]), lo, hi) {
+            let slot = atomicAdd(&tile_count, 1u);
+            if slot < MAX_TILE_LIGHTS {
+                tile_lights[slot] = j;
+            }
+        }
+    }
+    let count = min(workgroupUniformLoad(&tile_count), MAX_TILE_LIGHTS);
+{% endif %}
+    if !valid {
+        return;
+    }
+    var e = vec3f(0.0);
+    var kept = 0u;
+    for (var k = 0u; k < count; k++) {
+{% if method == "none" %}
+        let j = base + k;
+{% else %}
+        let j = base + tile_lights[k];
+{% endif %}
+        let l = lights[j];
+        let v = pos.xyz - l.p0;
+        let t = vpl_transfer(l.p1, nrm, v, params.min_d2);
+{% if method == "slc" %}
+        let d2 = dot(v, v);
+        if slc_keep(r2[j], d2) {
+            e += l.intensity * (t * slc_weight(rt2[j], d2));
+            kept += 1u;
+        }
+{% elif method == "clamp" %}
+        if dot(v, v) < r2[j] {
+            e += l.intensity * t;
+            kept += 1u;
+        }
+{% else %}
+        e += l.intensity * t;
+        kept += 1u;
+{% endif %}
+    }
+    irradiance[pix] = vec4f(e, f32(kept));
+}

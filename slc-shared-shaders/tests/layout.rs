@@ -1,0 +1,49 @@
+//! Every buffer struct shared with the host has the same size and field
+//! offsets in Rust (`#[repr(C)]`) as naga's layout of its WGSL declaration.
+
+use naga::proc::Layouter;
+use slc_shared_shaders::layout::*;
+use std::mem::{offset_of, size_of};
+
+macro_rules! fields {
+    ($t:ty, $($f:ident),+) => {
+        (stringify!($t), size_of::<$t>(), vec![$((stringify!($f), offset_of!($t, $f))),+])
+    };
+}
+
+#[test]
+fn rust_twins_match_naga_layout() {
+    let src = format!(
+        "{}\n{}\n@group(0) @binding(0) var<storage, read> slc_table: array<f32>;",
+        slc_core::wgsl::translate(WGSL),
+        slc_core::wgsl::library()
+    );
+    let (module, _) = slc_shared_shaders::validate("layout", &src).unwrap();
+    let mut layouter = Layouter::default();
+    layouter.update(module.to_ctx()).unwrap();
+    let structs = [
+        fields!(GpuLight, p0, kind, p1, a, p2, b, intensity, ies_base),
+        fields!(GpuGeoNode, bmin, first, bmax, count),
+        fields!(GpuTriangle, v0, pad0, v1, pad1, v2, pad2),
+        fields!(GpuPathVertex, position, alive, normal, pad, weight, pad1),
+        fields!(FrameParams, light_count, seed, frame, pad),
+        fields!(RefitParams, first, count, pad0, pad1),
+        fields!(VplParams, width, height, lights_per_subset, min_d2),
+        fields!(ShadeParams, point_count, seed, frame, eps),
+        fields!(slc_core::bsh::BshNode, center, radius, child, next, light, pad),
+    ];
+    for (name, size, offsets) in structs {
+        let name = name.rsplit("::").next().unwrap().trim();
+        let (handle, ty) = module.types.iter().find(|(_, t)| t.name.as_deref() == Some(name)).unwrap_or_else(|| panic!("{name} not in WGSL"));
+        let naga::TypeInner::Struct { members, span } = &ty.inner else { panic!("{name} is not a struct") };
+        assert_eq!(*span as usize, size, "{name}: WGSL size {span} vs Rust {size}");
+        assert_eq!(layouter[handle].size as usize, size, "{name} size");
+        assert_eq!(members.len(), offsets.len(), "{name} field count");
+        for (m, (field, off)) in members.iter().zip(offsets) {
+            assert_eq!(m.name.as_deref(), Some(field), "{name} field order");
+            assert_eq!(m.offset as usize, off, "{name}.{field}: WGSL offset {} vs Rust {off}", m.offset);
+        }
+        // Uniform buffers need 16-byte multiples.
+        assert_eq!(size % 16, 0, "{name} size {size}");
+    }
+}

@@ -1,0 +1,44 @@
+//! Snapshot tests in the style of naga's `tests/out`: the generated WGSL of
+//! a few representative variants is committed under `tests/snapshots/`; a
+//! change in the core's math or a template shows up as a readable diff.
+//! `SLC_BLESS=1 cargo test -p slc-shared-shaders --test snapshots` rewrites
+//! them after a deliberate change.
+
+use slc_shared_shaders::*;
+use std::path::PathBuf;
+
+fn variants() -> Vec<(&'static str, Kernel, Features)> {
+    let vpl = LightSet { vpl: true, ..LightSet::default() };
+    vec![
+        ("light_update", Kernel::LightUpdate, Features::default()),
+        ("bsh_refit", Kernel::BshRefit, Features::default()),
+        ("vpl_tiled-slc-tile8-p8", Kernel::VplTiled, Features { lights: vpl, ..Features::default() }),
+        ("vpl_tiled-clamp-tile8-p8", Kernel::VplTiled, Features { lights: vpl, method: CullMethod::Clamp, ..Features::default() }),
+        ("bsh_reservoir-point-spot-ies-k8", Kernel::BshReservoir, Features { lights: LightSet::parse("point,spot,ies").unwrap(), ..Features::default() }),
+        ("pt_connect-triangle-k8-power", Kernel::PtConnect, Features { lights: LightSet::parse("triangle").unwrap(), ..Features::default() }),
+        ("pt_connect-all-k16-balance", Kernel::PtConnect, Features { reservoir_k: 16, heuristic: Heuristic::Balance, ..Features::default() }),
+    ]
+}
+
+#[test]
+fn generated_wgsl_matches_snapshots() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/snapshots");
+    let bless = std::env::var_os("SLC_BLESS").is_some();
+    let mut failures = Vec::new();
+    for (name, kernel, features) in variants() {
+        let got = generate(kernel, &features).unwrap();
+        let path = dir.join(format!("{name}.wgsl"));
+        if bless {
+            std::fs::create_dir_all(&dir).unwrap();
+            std::fs::write(&path, &got).unwrap();
+            continue;
+        }
+        let want = std::fs::read_to_string(&path)
+            .unwrap_or_else(|_| panic!("missing snapshot {}; run with SLC_BLESS=1 to create it", path.display()));
+        if got != want {
+            let diff = similar::TextDiff::from_lines(&want, &got);
+            failures.push(format!("{}:\n{}", path.display(), diff.unified_diff().context_radius(2).header("snapshot", "generated")));
+        }
+    }
+    assert!(failures.is_empty(), "generated WGSL changed (SLC_BLESS=1 to accept):\n{}", failures.join("\n"));
+}

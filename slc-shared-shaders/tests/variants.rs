@@ -1,0 +1,98 @@
+//! naga validates every variant the generator can produce: all 31 non-empty
+//! light-type subsets × reservoir sizes × heuristics for the BSH kernels,
+//! tile sizes × periods × methods for the VPL kernel; a sample of them is
+//! translated to every back end; unsupported combinations are typed errors.
+
+use slc_shared_shaders::*;
+
+fn vpl_only() -> LightSet {
+    LightSet { vpl: true, ..LightSet::default() }
+}
+
+#[test]
+fn every_bsh_variant_validates() {
+    let mut n = 0;
+    for bits in 1..32 {
+        let lights = LightSet::from_bits(bits);
+        for k in [1, 8, 32] {
+            for heuristic in [Heuristic::Balance, Heuristic::Power] {
+                for kernel in [Kernel::BshReservoir, Kernel::PtConnect] {
+                    let f = Features { lights, reservoir_k: k, heuristic, ..Features::default() };
+                    let g = generate_module(kernel, &f).unwrap_or_else(|e| panic!("{:?} {f:?}: {e}", kernel));
+                    // Only the scene's light types are compiled in.
+                    for (name, case) in [("point", "LIGHT_POINT:"), ("spot", "LIGHT_SPOT:"), ("ies", "LIGHT_IES:"), ("triangle", "LIGHT_TRIANGLE:"), ("vpl", "LIGHT_VPL:")] {
+                        let wanted = lights.names().contains(&name);
+                        assert_eq!(g.source.contains(&format!("case {case}")), wanted, "{name} in {:?} {f:?}", kernel);
+                    }
+                    n += 1;
+                }
+            }
+        }
+    }
+    for wg in [1, 32, 64, 256] {
+        for kernel in [Kernel::LightUpdate, Kernel::BshRefit] {
+            generate_module(kernel, &Features { workgroup_size: wg, ..Features::default() }).unwrap();
+            n += 1;
+        }
+    }
+    assert_eq!(n, 31 * 3 * 2 * 2 + 8);
+}
+
+#[test]
+fn every_vpl_variant_validates() {
+    for tile in [1, 2, 4, 8, 16] {
+        for period in [1, 4, 8, 16] {
+            for method in [CullMethod::Slc, CullMethod::Clamp, CullMethod::None] {
+                for max_tile_lights in [64, 1024, 2048] {
+                    let f = Features { lights: vpl_only(), tile_size: tile, interleave: period, method, max_tile_lights, ..Features::default() };
+                    let r = generate_module(Kernel::VplTiled, &f);
+                    let bytes = 32 * tile * tile + 4 * max_tile_lights + 4;
+                    if bytes > 16384 {
+                        assert!(matches!(r, Err(ShaderError::Unsupported(_))), "{f:?} should not fit workgroup memory");
+                    } else {
+                        r.unwrap_or_else(|e| panic!("{f:?}: {e}"));
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn every_kernel_translates_to_every_backend() {
+    let sets = [LightSet::ALL, LightSet::parse("triangle").unwrap(), LightSet::parse("point,ies").unwrap()];
+    for lights in sets {
+        for g in all_kernels(&Features { lights, ..Features::default() }).unwrap() {
+            let t = translate(&g).unwrap_or_else(|e| panic!("{e}"));
+            assert!(t.spv.len() > 100 && t.spv[0] == 0x0723_0203, "SPIR-V magic");
+            assert!(t.glsl.contains("void main()"), "{}", g.kernel.name());
+            assert!(t.hlsl.contains("[numthreads("));
+            assert!(t.msl.contains("kernel void"));
+        }
+    }
+    for method in [CullMethod::Slc, CullMethod::Clamp, CullMethod::None] {
+        let g = generate_module(Kernel::VplTiled, &Features { lights: vpl_only(), method, ..Features::default() }).unwrap();
+        translate(&g).unwrap_or_else(|e| panic!("{e}"));
+    }
+}
+
+#[test]
+fn unsupported_combinations_are_typed_errors() {
+    let unsupported = |k: Kernel, f: Features| assert!(matches!(generate(k, &f), Err(ShaderError::Unsupported(_))), "{k:?} {f:?}");
+    unsupported(Kernel::VplTiled, Features::default());
+    unsupported(Kernel::VplTiled, Features { lights: LightSet::parse("vpl,point").unwrap(), ..Features::default() });
+    unsupported(Kernel::VplTiled, Features { lights: vpl_only(), tile_size: 3, ..Features::default() });
+    unsupported(Kernel::VplTiled, Features { lights: vpl_only(), tile_size: 32, ..Features::default() });
+    unsupported(Kernel::VplTiled, Features { lights: vpl_only(), interleave: 0, ..Features::default() });
+    unsupported(Kernel::BshReservoir, Features { lights: LightSet::default(), ..Features::default() });
+    unsupported(Kernel::PtConnect, Features { reservoir_k: 0, ..Features::default() });
+    unsupported(Kernel::LightUpdate, Features { workgroup_size: 512, ..Features::default() });
+    assert!(matches!(LightSet::parse("point,laser"), Err(ShaderError::Unsupported(_))));
+}
+
+#[test]
+fn naga_errors_quote_the_source_line() {
+    let e = validate("broken", "fn f() -> f32 {\n    return vec3f(1.0);\n}\n").unwrap_err();
+    let ShaderError::Naga { message, .. } = e else { panic!("not a naga error") };
+    assert!(message.contains("return vec3f(1.0)"), "{message}");
+}

@@ -1,0 +1,37 @@
+//! No template retypes a formula of slc-core: the kernels call the core's
+//! generated functions instead. The patterns are fragments of the core's
+//! formulas (range, weight, lobes, union, hashing).
+
+#[test]
+fn templates_do_not_contain_core_formulas() {
+    let forbidden = [
+        "1.0 - xi",
+        "(1.0 - xi)",
+        "/ (PI * alpha)",
+        "PI * alpha",
+        "rt2 / d2",
+        "d2 / rt2",
+        "/ (1.0 -",
+        "TWO_PI",
+        "0.3183",
+        "6.2831",
+        "3.1415",
+        "INV_PI",
+        "exposure *",
+        "747796405",
+        "r1 + r2",
+        "smoothstep",
+        "t * t * (3.0",
+        "sqrt(u1)",
+        "* 0.5 * (d",
+        "n / k",
+    ];
+    let mut n = 0;
+    for (name, src) in slc_shared_shaders::templates() {
+        for f in forbidden {
+            assert!(!src.contains(f), "template {name} contains the core formula fragment `{f}`");
+        }
+        n += 1;
+    }
+    assert_eq!(n, 9);
+}
