@@ -89,6 +89,8 @@ pub struct Report {
 pub fn run(a: BenchArgs) -> Result<(), String> {
     let loaded = a.scene.load()?;
     let ctx = &loaded.ctx;
+    let gpu = crate::gpu_context(a.scene.backend)?;
+    let shader = crate::Shader::new(a.scene.backend, gpu.as_ref(), ctx)?;
     let mut configs: Vec<(VplMethod, Option<f32>)> = vec![(VplMethod::None, None)];
     configs.extend(a.error_bounds.iter().map(|&e| (VplMethod::Slc, Some(e))));
     configs.extend(a.ranges.iter().map(|&r| (VplMethod::Clamp, Some(r))));
@@ -111,7 +113,7 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
         };
         let mut best: Option<VplFrame> = None;
         for _ in 0..a.repeat.max(1) {
-            let f = ctx.render(&settings).map_err(|e| e.to_string())?;
+            let f = shader.render(ctx, &settings)?;
             if best.as_ref().is_none_or(|b| f.stats.shading_ms < b.stats.shading_ms) {
                 best = Some(f);
             }
@@ -132,12 +134,19 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
     bar.finish_and_clear();
     let report = Report {
         app: "vpl".into(),
-        backend: "cpu".into(),
+        backend: match &gpu {
+            None => "cpu".into(),
+            Some(g) => format!("gpu: {}", g.describe()),
+        },
         scene: ctx.scene().name.clone(),
         width: loaded.width,
         height: loaded.height,
         lights: ctx.vpls().len(),
-        timing: "wall clock, fastest of --repeat runs".into(),
+        timing: if gpu.is_some() {
+            "wall clock around the submitted kernels (no GPU timestamps yet), fastest of --repeat runs".into()
+        } else {
+            "wall clock, fastest of --repeat runs".into()
+        },
         threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
         reference_from_cache: cached,
         runs,

@@ -75,6 +75,43 @@ pub enum App {
 pub enum Backend {
     /// rayon on the CPU.
     Cpu,
+    /// wgpu compute (a real GPU, or Mesa's lavapipe).
+    Gpu,
+}
+
+/// Shades frames on the chosen backend (the G-buffer, RSM, denoise and
+/// composition are shared).
+pub enum Shader<'a> {
+    /// CPU.
+    Cpu,
+    /// GPU with its uploaded scene.
+    Gpu(slc_wgpu::vpl::GpuVpl<'a>),
+}
+
+impl<'a> Shader<'a> {
+    /// Sets up `backend` for `ctx` (`gpu` must hold a context for the GPU).
+    pub fn new(backend: Backend, gpu: Option<&'a slc_wgpu::GpuContext>, ctx: &VplContext) -> Result<Self, String> {
+        match (backend, gpu) {
+            (Backend::Gpu, Some(g)) => Ok(Shader::Gpu(slc_wgpu::vpl::GpuVpl::new(g, ctx).map_err(|e| e.to_string())?)),
+            _ => Ok(Shader::Cpu),
+        }
+    }
+
+    /// One frame.
+    pub fn render(&self, ctx: &VplContext, s: &VplSettings) -> Result<slc_cpu::vpl::VplFrame, String> {
+        match self {
+            Shader::Cpu => ctx.render(s).map_err(|e| e.to_string()),
+            Shader::Gpu(g) => g.render(ctx, s).map_err(|e| e.to_string()),
+        }
+    }
+}
+
+/// The GPU context when `backend` is `gpu`; its error says how to fall back.
+pub fn gpu_context(backend: Backend) -> Result<Option<slc_wgpu::GpuContext>, String> {
+    match backend {
+        Backend::Cpu => Ok(None),
+        Backend::Gpu => slc_wgpu::GpuContext::new().map(Some).map_err(|e| e.to_string()),
+    }
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
@@ -239,20 +276,25 @@ fn render(a: RenderArgs) -> Result<(), String> {
         tile: a.scene.tile,
         ..d
     };
-    spinner.set_message(format!("shading ({})", settings.method.name()));
-    let frame = ctx.render(&settings).map_err(|e| e.to_string())?;
+    spinner.set_message(format!("shading ({}, {:?})", settings.method.name(), a.scene.backend));
+    let gpu = gpu_context(a.scene.backend)?;
+    let shader = Shader::new(a.scene.backend, gpu.as_ref(), ctx)?;
+    let frame = shader.render(ctx, &settings)?;
     spinner.set_message("writing images");
     write_outputs(&frame.image, &a.out, loaded.exposure)?;
     let st = frame.stats;
     let versus_none = if settings.method != VplMethod::None && settings.method != VplMethod::Reference {
         spinner.set_message("unculled interleaved image for the RMSE");
-        let none = ctx.render(&VplSettings { method: VplMethod::None, ..settings }).map_err(|e| e.to_string())?;
+        let none = shader.render(ctx, &VplSettings { method: VplMethod::None, ..settings })?;
         Some((frame.image.rmse(&none.image), none.stats.shading_ms))
     } else {
         None
     };
     spinner.finish_and_clear();
     println!("slc render: {} {}x{}, {} VPLs, method {}", ctx.scene().name, loaded.width, loaded.height, st.vpls, settings.method.name());
+    if let Some(g) = &gpu {
+        println!("  GPU         {}", g.describe());
+    }
     println!(
         "  time        {:.1} ms total, {:.1} ms shading (G-buffer {:.1}, RSM {:.1}, direct {:.1}, denoise {:.1})",
         st.total_ms, st.shading_ms, st.gbuffer_ms, st.rsm_ms, st.direct_ms, st.denoise_ms

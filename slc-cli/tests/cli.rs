@@ -195,3 +195,27 @@ fn shaders_command_exports_every_kernel() {
     assert!(!out.status.success());
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// `slc render --backend gpu` renders the same image as the CPU. Needs an
+/// adapter: skips with a reason without one, fails under SLC_REQUIRE_GPU=1.
+#[test]
+fn gpu_backend_renders_like_cpu() {
+    let d = tempdir("gpu");
+    let small = ["--width", "48", "--height", "32", "--vpls", "4096", "--no-denoise"];
+    let mut args = vec!["render", "--backend", "gpu", "--out", "g.exr"];
+    args.extend(small);
+    let out = slc(&d, &args);
+    if !out.status.success() {
+        let err = String::from_utf8_lossy(&out.stderr);
+        let required = std::env::var("SLC_REQUIRE_GPU").as_deref() == Ok("1");
+        assert!(!required && err.contains("no GPU adapter"), "slc render --backend gpu failed: {err}");
+        eprintln!("skipping: {}", err.trim());
+        return;
+    }
+    assert!(String::from_utf8_lossy(&out.stdout).contains("GPU "));
+    let mut args = vec!["render", "--backend", "cpu", "--out", "c.exr"];
+    args.extend(small);
+    ok(&d, &args);
+    ok(&d, &["diff", "c.exr", "g.exr", "--max-rmse", "0.00001"]);
+    std::fs::remove_dir_all(&d).ok();
+}

@@ -129,6 +129,20 @@ pub struct VplStats {
     pub evaluations: u64,
 }
 
+/// Indirect irradiance of one frame before denoise and composition (what a
+/// backend computes).
+#[derive(Clone, Debug)]
+pub struct Shaded {
+    /// Irradiance per pixel (zero where no surface).
+    pub irradiance: Vec<Vec3>,
+    /// Lights that passed the keep test, per pixel.
+    pub kept: Vec<u32>,
+    /// Light evaluations of the shading loop.
+    pub evaluations: u64,
+    /// Shading time (ms).
+    pub shading_ms: f64,
+}
+
 /// One rendered frame.
 #[derive(Clone, Debug)]
 pub struct VplFrame {
@@ -196,14 +210,29 @@ impl VplContext {
         &self.scene
     }
 
+    /// RSM texel indices of VPL subset `sub` (`0 ≤ sub < PERIOD²`): texels
+    /// `(tx, ty)` with `ty mod P = sub / P` and `tx mod P = sub mod P`,
+    /// row-major. Pixel `(x, y)` uses subset `(y mod P)·P + x mod P`.
+    pub fn subset_members(&self, sub: usize) -> Vec<usize> {
+        let (p, size) = (PERIOD as usize, self.vpls.size as usize);
+        let (sx, sy) = (sub % p, sub / p);
+        (sy..size).step_by(p).flat_map(|ty| (sx..size).step_by(p).map(move |tx| ty * size + tx)).collect()
+    }
+
     /// Squared clamp distance of the VPL fall-off.
     pub fn min_d2(&self) -> f32 {
         self.min_d2
     }
 
-    /// Renders one frame with `settings`.
+    /// Renders one frame with `settings`: [`VplContext::shade`] then
+    /// [`VplContext::finish`].
     pub fn render(&self, settings: &VplSettings) -> Result<VplFrame, RenderError> {
-        let s = settings;
+        let shaded = self.shade(settings)?;
+        Ok(self.finish(shaded, settings))
+    }
+
+    /// Checks settings shared by every backend.
+    pub fn check(&self, s: &VplSettings) -> Result<RangeParams, RenderError> {
         let params = RangeParams::new(s.error_bound, s.exposure).map_err(|e| RenderError::Setting(e.to_string()))?;
         if s.method == VplMethod::Clamp && !(s.range.is_finite() && s.range > 0.0) {
             return Err(RenderError::Setting(format!("clamp range {} must be finite and > 0", s.range)));
@@ -214,35 +243,47 @@ impl VplContext {
         if s.tile == 0 {
             return Err(RenderError::Setting("tile size must be > 0".into()));
         }
-        let mut stats = self.base;
-        let t = Instant::now();
-        let (indirect, evaluations, kept) = match s.method {
-            VplMethod::Reference => self.shade_reference(),
-            m => self.shade_interleaved(m, &params, s),
-        };
-        stats.shading_ms = ms(t);
-        let shaded = (0..indirect.len()).filter(|&i| self.gbuffer.valid(i)).count().max(1) as f64;
-        stats.evaluations = evaluations;
-        stats.lights_per_pixel = evaluations as f64 / shaded;
-        stats.kept_per_pixel = kept as f64 / shaded;
+        Ok(params)
+    }
 
+    /// Indirect irradiance at every pixel (before denoise and albedo), on the
+    /// CPU.
+    pub fn shade(&self, settings: &VplSettings) -> Result<Shaded, RenderError> {
+        let params = self.check(settings)?;
         let t = Instant::now();
-        let filtered = if s.denoise && s.method != VplMethod::Reference {
-            denoise::cross_bilateral(&indirect, &self.gbuffer, PERIOD)
-        } else {
-            indirect
+        let (irradiance, kept, evaluations) = match settings.method {
+            VplMethod::Reference => self.shade_reference(),
+            m => self.shade_interleaved(m, &params, settings),
         };
+        Ok(Shaded { irradiance, kept, evaluations, shading_ms: ms(t) })
+    }
+
+    /// Denoise (interleaved methods), albedo × (direct + indirect) +
+    /// emission, and the frame's statistics.
+    pub fn finish(&self, shaded: Shaded, settings: &VplSettings) -> VplFrame {
+        let mut stats = self.base;
+        stats.shading_ms = shaded.shading_ms;
         let gb = &self.gbuffer;
+        let shaded_px = (0..gb.position.len()).filter(|&i| gb.valid(i)).count().max(1) as f64;
+        stats.evaluations = shaded.evaluations;
+        stats.lights_per_pixel = shaded.evaluations as f64 / shaded_px;
+        stats.kept_per_pixel = shaded.kept.iter().map(|&k| k as f64).sum::<f64>() / shaded_px;
+        let t = Instant::now();
+        let filtered = if settings.denoise && settings.method != VplMethod::Reference {
+            denoise::cross_bilateral(&shaded.irradiance, gb, PERIOD)
+        } else {
+            shaded.irradiance
+        };
         let data = (0..filtered.len())
             .map(|i| gb.emission[i] + gb.albedo[i] * INV_PI * (self.direct[i] + filtered[i]))
             .collect();
         stats.denoise_ms = ms(t);
         stats.total_ms = stats.gbuffer_ms + stats.rsm_ms + stats.direct_ms + stats.shading_ms + stats.denoise_ms;
-        Ok(VplFrame { image: Image { width: gb.width, height: gb.height, data }, stats })
+        VplFrame { image: Image { width: gb.width, height: gb.height, data }, stats }
     }
 
     /// Every VPL at every pixel.
-    fn shade_reference(&self) -> (Vec<Vec3>, u64, u64) {
+    fn shade_reference(&self) -> (Vec<Vec3>, Vec<u32>, u64) {
         let v = &self.vpls;
         let mut list = LightList::default();
         for i in 0..v.len() {
@@ -254,11 +295,11 @@ impl VplContext {
             .map(|i| if gb.valid(i) { shade::shade(&list, gb.position[i], gb.normal[i], self.min_d2, Cull::None) } else { (Vec3::ZERO, 0) })
             .collect();
         let shaded = (0..out.len()).filter(|&i| gb.valid(i)).count() as u64;
-        (out.iter().map(|o| o.0).collect(), shaded * v.len() as u64, shaded * v.len() as u64)
+        (out.iter().map(|o| o.0).collect(), out.iter().map(|o| o.1).collect(), shaded * v.len() as u64)
     }
 
     /// Interleaved sampling with tiled culling per sub-image.
-    fn shade_interleaved(&self, method: VplMethod, params: &RangeParams, s: &VplSettings) -> (Vec<Vec3>, u64, u64) {
+    fn shade_interleaved(&self, method: VplMethod, params: &RangeParams, s: &VplSettings) -> (Vec<Vec3>, Vec<u32>, u64) {
         let gb = &self.gbuffer;
         let v = &self.vpls;
         let p = PERIOD as usize;
@@ -273,8 +314,8 @@ impl VplContext {
         };
         let (w, h) = (gb.width as usize, gb.height as usize);
         let tile = s.tile as usize;
-        // Per subset: (pixel, irradiance) pairs, loop evaluations, kept lights.
-        type SubsetResult = (Vec<(usize, Vec3)>, u64, u64);
+        // Per subset: (pixel, irradiance, kept) triples and loop evaluations.
+        type SubsetResult = (Vec<(usize, Vec3, u32)>, u64);
         let results: Vec<SubsetResult> = (0..subsets)
             .into_par_iter()
             .map(|sub| {
@@ -306,7 +347,7 @@ impl VplContext {
                 let mut out = Vec::with_capacity(sw * sh);
                 let (mut coarse, mut fine) = (LightList::default(), LightList::default());
                 let (mut pixels, mut hits) = (Vec::new(), Vec::new());
-                let (mut evals, mut kept) = (0u64, 0u64);
+                let mut evals = 0u64;
                 // Pixels of sub-image rectangle [x0, x1) × [y0, y1) that see a surface.
                 let gather = |pixels: &mut Vec<usize>, (x0, x1): (usize, usize), (y0, y1): (usize, usize)| {
                     pixels.clear();
@@ -353,27 +394,27 @@ impl VplContext {
                                 };
                                 for &i in &pixels {
                                     let (e, k) = shade::shade(lights, gb.position[i], gb.normal[i], self.min_d2, cull);
-                                    out.push((i, e));
-                                    kept += k as u64;
+                                    out.push((i, e, k));
                                 }
                                 evals += (lights.len_unpadded() * pixels.len()) as u64;
                             }
                         }
                     }
                 }
-                (out, evals, kept)
+                (out, evals)
             })
             .collect();
         let mut e = vec![Vec3::ZERO; w * h];
-        let (mut evals, mut kept) = (0, 0);
-        for (out, ev, k) in results {
-            for (i, v) in out {
+        let mut kept = vec![0u32; w * h];
+        let mut evals = 0;
+        for (out, ev) in results {
+            for (i, v, k) in out {
                 e[i] = v;
+                kept[i] = k;
             }
             evals += ev;
-            kept += k;
         }
-        (e, evals, kept)
+        (e, kept, evals)
     }
 }
 

@@ -1,0 +1,85 @@
+//! Adapter and device setup: works on real GPUs and on Mesa's software
+//! Vulkan driver (lavapipe); errors are typed, never panics.
+
+use crate::GpuError;
+use std::sync::{Arc, Mutex};
+
+/// A device, its queue, and what adapter it runs on.
+pub struct GpuContext {
+    /// Device.
+    pub device: wgpu::Device,
+    /// Queue.
+    pub queue: wgpu::Queue,
+    /// Adapter description.
+    pub adapter: wgpu::AdapterInfo,
+    /// Limits granted to the device (the adapter's own).
+    pub limits: wgpu::Limits,
+    /// Whether GPU timestamps can be taken in compute passes.
+    pub timestamps: bool,
+    errors: Arc<Mutex<Vec<String>>>,
+}
+
+impl GpuContext {
+    /// Picks the best adapter (`WGPU_BACKEND`, `WGPU_ADAPTER_NAME` and
+    /// `WGPU_POWER_PREF` environment variables are honoured) and opens a
+    /// device with the adapter's full limits.
+    pub fn new() -> Result<GpuContext, GpuError> {
+        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+        let adapter = pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None))
+            .map_err(|e| GpuError::NoAdapter(e.to_string()))?;
+        let info = adapter.get_info();
+        let limits = adapter.limits();
+        let timestamps = adapter.features().contains(wgpu::Features::TIMESTAMP_QUERY);
+        let required_features = if timestamps { wgpu::Features::TIMESTAMP_QUERY } else { wgpu::Features::empty() };
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            label: Some("slc"),
+            required_features,
+            required_limits: limits.clone(),
+            ..Default::default()
+        }))
+        .map_err(|e| GpuError::Device(e.to_string()))?;
+        let errors: Arc<Mutex<Vec<String>>> = Arc::default();
+        let sink = errors.clone();
+        device.on_uncaptured_error(Arc::new(move |e: wgpu::Error| {
+            if let Ok(mut v) = sink.lock() {
+                v.push(e.to_string());
+            }
+        }));
+        let lost = errors.clone();
+        device.set_device_lost_callback(move |reason, msg| {
+            if let Ok(mut v) = lost.lock() {
+                v.push(format!("device lost ({reason:?}): {msg}"));
+            }
+        });
+        Ok(GpuContext { device, queue, adapter: info, limits, timestamps, errors })
+    }
+
+    /// One line naming the adapter, e.g. "llvmpipe (LLVM 15.0.6, 256 bits), Vulkan, Cpu".
+    pub fn describe(&self) -> String {
+        format!("{}, {:?}, {:?}", self.adapter.name, self.adapter.backend, self.adapter.device_type)
+    }
+
+    /// Fails with [`GpuError::Limit`] when `need` exceeds the device limit
+    /// `have` called `name`.
+    pub fn require(&self, name: &'static str, need: u64, have: u64) -> Result<(), GpuError> {
+        if need > have { Err(GpuError::Limit { name, need, have }) } else { Ok(()) }
+    }
+
+    /// Errors the device reported since the last call (validation, out of
+    /// memory, device lost), as one [`GpuError::Device`].
+    pub fn take_errors(&self) -> Result<(), GpuError> {
+        let mut v = self.errors.lock().map_err(|_| GpuError::Device("error log poisoned".into()))?;
+        if v.is_empty() {
+            return Ok(());
+        }
+        let msg = v.join("; ");
+        v.clear();
+        Err(GpuError::Device(msg))
+    }
+
+    /// Waits for all submitted work.
+    pub fn wait(&self) -> Result<(), GpuError> {
+        self.device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| GpuError::Device(e.to_string()))?;
+        self.take_errors()
+    }
+}

@@ -1,0 +1,293 @@
+//! Application A on the GPU: the VPL pipeline's shading step runs in the
+//! `light_update` and `vpl_tiled` kernels of slc-shared-shaders; G-buffer,
+//! RSM, denoise and composition are the CPU backend's
+//! ([`slc_cpu::vpl::VplContext`]), so both backends shade the same inputs.
+
+use crate::{GpuContext, GpuError};
+use glam::Vec3;
+use slc_core::light::INV_PI;
+use slc_core::range::random_range2;
+use slc_cpu::vpl::{PERIOD, Shaded, VplContext, VplFrame, VplMethod, VplSettings};
+use slc_shared_shaders::layout::{FrameParams, GpuLight, LIGHT_VPL, VplParams};
+use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, generate};
+use std::time::Instant;
+use wgpu::util::DeviceExt;
+
+/// Tile edge of `vpl_tiled` in sub-image pixels.
+pub const TILE: u32 = 8;
+/// Workgroup size of `light_update`.
+const WG: u32 = 64;
+
+struct Layout {
+    period: u32,
+    per_subset: u32,
+    pipeline: wgpu::ComputePipeline,
+}
+
+/// GPU buffers and pipelines for one [`VplContext`] (one scene, size and VPL set).
+pub struct GpuVpl<'a> {
+    gpu: &'a GpuContext,
+    width: u32,
+    height: u32,
+    gb_position: wgpu::Buffer,
+    gb_normal: wgpu::Buffer,
+    /// Interleaved layout: VPLs subset after subset, flux × P².
+    lights: wgpu::Buffer,
+    ids: wgpu::Buffer,
+    flux: Vec<Vec3>,
+    /// Reference layout: one subset holding every VPL, flux × 1.
+    lights_all: wgpu::Buffer,
+    ids_all: wgpu::Buffer,
+    rt2: wgpu::Buffer,
+    r2: wgpu::Buffer,
+    irradiance: wgpu::Buffer,
+    readback: wgpu::Buffer,
+    table: wgpu::Buffer,
+    update: wgpu::ComputePipeline,
+    update_layout: wgpu::BindGroupLayout,
+    tiled: Vec<(VplMethod, Layout)>,
+    tiled_layout: wgpu::BindGroupLayout,
+}
+
+fn storage(gpu: &GpuContext, label: &str, bytes: &[u8], extra: wgpu::BufferUsages) -> wgpu::Buffer {
+    gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some(label),
+        contents: bytes,
+        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST | extra,
+    })
+}
+
+/// Bind-group layout of a kernel from its binding table (slc-shared-shaders
+/// docs): binding 0 a uniform, then `reads` read-only storage buffers, then
+/// `writes` read-write ones. Explicit, because an automatic layout drops
+/// the bindings a variant does not use (clamp has no `rt2`).
+fn bind_layout(gpu: &GpuContext, label: &str, reads: u32, writes: u32) -> wgpu::BindGroupLayout {
+    let entry = |binding: u32, ty: wgpu::BufferBindingType| wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::COMPUTE,
+        ty: wgpu::BindingType::Buffer { ty, has_dynamic_offset: false, min_binding_size: None },
+        count: None,
+    };
+    let mut entries = vec![entry(0, wgpu::BufferBindingType::Uniform)];
+    entries.extend((1..=reads).map(|b| entry(b, wgpu::BufferBindingType::Storage { read_only: true })));
+    entries.extend((reads + 1..=reads + writes).map(|b| entry(b, wgpu::BufferBindingType::Storage { read_only: false })));
+    gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some(label), entries: &entries })
+}
+
+fn pipeline(gpu: &GpuContext, label: &str, wgsl: String, layout: &wgpu::BindGroupLayout) -> wgpu::ComputePipeline {
+    let module = gpu.device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some(label),
+        source: wgpu::ShaderSource::Wgsl(wgsl.into()),
+    });
+    let pl = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: Some(label),
+        bind_group_layouts: &[Some(layout)],
+        immediate_size: 0,
+    });
+    gpu.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: Some(label),
+        layout: Some(&pl),
+        module: &module,
+        entry_point: Some("main"),
+        compilation_options: Default::default(),
+        cache: None,
+    })
+}
+
+impl<'a> GpuVpl<'a> {
+    /// Uploads the G-buffer and VPLs of `cpu` and builds the pipelines.
+    /// Checks buffer, dispatch and workgroup-memory limits first.
+    pub fn new(gpu: &'a GpuContext, cpu: &VplContext) -> Result<Self, GpuError> {
+        let gb = cpu.gbuffer();
+        let v = cpu.vpls();
+        let (w, h) = (gb.width, gb.height);
+        let n = v.len() as u64;
+        let subsets = (PERIOD * PERIOD) as usize;
+        let per_subset = (n / subsets as u64) as u32;
+        let lim = &gpu.limits;
+        let max_binding = lim.max_storage_buffer_binding_size as u64;
+        gpu.require("max_storage_buffer_binding_size (G-buffer)", w as u64 * h as u64 * 16, max_binding)?;
+        gpu.require("max_storage_buffer_binding_size (lights)", n * 64, max_binding)?;
+        let sub_w = w.div_ceil(PERIOD);
+        let sub_h = h.div_ceil(PERIOD);
+        gpu.require("max_compute_workgroups_per_dimension", sub_w.div_ceil(TILE).max(w.div_ceil(TILE)) as u64, lim.max_compute_workgroups_per_dimension as u64)?;
+        gpu.require("max_compute_workgroups_per_dimension (light update)", n.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
+        let wg_bytes = 32 * TILE * TILE + 4 * per_subset + 4;
+        gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes as u64, lim.max_compute_workgroup_storage_size as u64)?;
+        let _ = sub_h;
+
+        let pos: Vec<[f32; 4]> = (0..gb.position.len())
+            .map(|i| {
+                let p = gb.position[i];
+                [p.x, p.y, p.z, if gb.valid(i) { 1.0 } else { 0.0 }]
+            })
+            .collect();
+        let nrm: Vec<[f32; 4]> = gb.normal.iter().map(|n| [n.x, n.y, n.z, 0.0]).collect();
+        let vpl = |i: usize, scale: f32| GpuLight {
+            p0: v.position[i],
+            kind: LIGHT_VPL,
+            p1: v.normal[i],
+            a: 0.0,
+            p2: Vec3::ZERO,
+            b: 0.0,
+            intensity: v.flux[i] * scale,
+            ies_base: 0,
+        };
+        let order: Vec<usize> = (0..subsets).flat_map(|s| cpu.subset_members(s)).collect();
+        let scale = subsets as f32;
+        let lights: Vec<GpuLight> = order.iter().map(|&i| vpl(i, scale)).collect();
+        let ids: Vec<u32> = order.iter().map(|&i| i as u32).collect();
+        let lights_all: Vec<GpuLight> = (0..v.len()).map(|i| vpl(i, 1.0)).collect();
+        let ids_all: Vec<u32> = (0..v.len() as u32).collect();
+        let zeros = vec![0.0f32; v.len().max(1)];
+        let pixels = (w as u64) * (h as u64) * 16;
+        let irradiance = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("irradiance"),
+            size: pixels,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+            mapped_at_creation: false,
+        });
+        let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("readback"),
+            size: pixels,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let features = Features { workgroup_size: WG, ..Features::default() };
+        let update_layout = bind_layout(gpu, "light_update", 2, 1);
+        let tiled_layout = bind_layout(gpu, "vpl_tiled", 5, 1);
+        let update = pipeline(gpu, "light_update", generate(Kernel::LightUpdate, &features)?, &update_layout);
+        let vpl_only = LightSet { vpl: true, ..LightSet::default() };
+        let mut tiled = Vec::new();
+        for (m, cm) in [(VplMethod::Slc, CullMethod::Slc), (VplMethod::Clamp, CullMethod::Clamp), (VplMethod::None, CullMethod::None)] {
+            let f = Features { lights: vpl_only, tile_size: TILE, interleave: PERIOD, max_tile_lights: per_subset.max(1), method: cm, ..Features::default() };
+            tiled.push((m, Layout { period: PERIOD, per_subset, pipeline: pipeline(gpu, "vpl_tiled", generate(Kernel::VplTiled, &f)?, &tiled_layout) }));
+        }
+        // The reference: one "subset" of every VPL, unculled, no list.
+        let f = Features { lights: vpl_only, tile_size: TILE, interleave: 1, max_tile_lights: 1, method: CullMethod::None, ..Features::default() };
+        tiled.push((VplMethod::Reference, Layout { period: 1, per_subset: v.len() as u32, pipeline: pipeline(gpu, "vpl_reference", generate(Kernel::VplTiled, &f)?, &tiled_layout) }));
+        let s = GpuVpl {
+            gpu,
+            width: w,
+            height: h,
+            gb_position: storage(gpu, "gb_position", bytemuck::cast_slice(&pos), wgpu::BufferUsages::empty()),
+            gb_normal: storage(gpu, "gb_normal", bytemuck::cast_slice(&nrm), wgpu::BufferUsages::empty()),
+            lights: storage(gpu, "lights", bytemuck::cast_slice(&lights), wgpu::BufferUsages::empty()),
+            ids: storage(gpu, "ids", bytemuck::cast_slice(&ids), wgpu::BufferUsages::empty()),
+            flux: order.iter().map(|&i| v.flux[i] * scale).collect(),
+            lights_all: storage(gpu, "lights_all", bytemuck::cast_slice(&lights_all), wgpu::BufferUsages::empty()),
+            ids_all: storage(gpu, "ids_all", bytemuck::cast_slice(&ids_all), wgpu::BufferUsages::empty()),
+            rt2: storage(gpu, "rt2", bytemuck::cast_slice(&zeros), wgpu::BufferUsages::empty()),
+            r2: storage(gpu, "r2", bytemuck::cast_slice(&zeros), wgpu::BufferUsages::empty()),
+            irradiance,
+            readback,
+            table: storage(gpu, "slc_table", bytemuck::cast_slice(&[0.0f32; 4]), wgpu::BufferUsages::empty()),
+            update,
+            update_layout,
+            tiled,
+            tiled_layout,
+        };
+        gpu.wait()?;
+        Ok(s)
+    }
+
+    /// Indirect irradiance on the GPU for `settings` (same ξ as the CPU:
+    /// `xi_for(seed, frame, VPL index)`); `fixed_xi` ranges are computed on
+    /// the host. `shading_ms` is the wall time of the submitted kernels.
+    pub fn shade(&self, cpu: &VplContext, settings: &VplSettings) -> Result<Shaded, GpuError> {
+        let params = cpu.check(settings).map_err(|e| GpuError::Setting(e.to_string()))?;
+        let gpu = self.gpu;
+        let (_, layout) = self.tiled.iter().find(|(m, _)| *m == settings.method).ok_or(GpuError::Setting("unknown method".into()))?;
+        let n = self.flux.len();
+        // Threshold ranges on the host with the core's function; r² on the GPU.
+        let rt2: Vec<f32> = match settings.method {
+            VplMethod::Slc => self.flux.iter().map(|&f| params.threshold_range2(f * INV_PI)).collect(),
+            _ => vec![0.0; n],
+        };
+        gpu.queue.write_buffer(&self.rt2, 0, bytemuck::cast_slice(&rt2));
+        let host_r2: Option<Vec<f32>> = match (settings.method, settings.fixed_xi) {
+            (VplMethod::Slc, Some(x)) => Some(rt2.iter().map(|&t| random_range2(t, x)).collect()),
+            (VplMethod::Slc, None) => None,
+            (VplMethod::Clamp, _) => Some(vec![settings.range * settings.range; n]),
+            _ => Some(vec![f32::INFINITY; n]),
+        };
+        if let Some(r2) = &host_r2 {
+            gpu.queue.write_buffer(&self.r2, 0, bytemuck::cast_slice(r2));
+        }
+        let reference = settings.method == VplMethod::Reference;
+        let (lights, ids) = if reference { (&self.lights_all, &self.ids_all) } else { (&self.lights, &self.ids) };
+        let frame = FrameParams { light_count: n as u32, seed: settings.seed, frame: settings.frame, pad: 0 };
+        let frame_buf = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("frame params"),
+            contents: bytemuck::bytes_of(&frame),
+            usage: wgpu::BufferUsages::UNIFORM,
+        });
+        let vp = VplParams { width: self.width, height: self.height, lights_per_subset: layout.per_subset, min_d2: cpu.min_d2() };
+        let vp_buf = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("vpl params"),
+            contents: bytemuck::bytes_of(&vp),
+            usage: wgpu::BufferUsages::UNIFORM,
+        });
+        fn entries<'b>(bufs: &[&'b wgpu::Buffer]) -> Vec<wgpu::BindGroupEntry<'b>> {
+            bufs.iter().enumerate().map(|(i, b)| wgpu::BindGroupEntry { binding: i as u32, resource: b.as_entire_binding() }).collect()
+        }
+        let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc vpl") });
+        {
+            let mut pass = enc.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc vpl"), timestamp_writes: None });
+            if host_r2.is_none() {
+                let bg = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some("light_update"),
+                    layout: &self.update_layout,
+                    entries: &entries(&[&frame_buf, ids, &self.rt2, &self.r2]),
+                });
+                pass.set_pipeline(&self.update);
+                pass.set_bind_group(0, &bg, &[]);
+                pass.dispatch_workgroups((n as u32).div_ceil(WG), 1, 1);
+            }
+            let bg = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("vpl_tiled"),
+                layout: &self.tiled_layout,
+                entries: &entries(&[&vp_buf, &self.gb_position, &self.gb_normal, lights, &self.rt2, &self.r2, &self.irradiance]),
+            });
+            pass.set_pipeline(&layout.pipeline);
+            pass.set_bind_group(0, &bg, &[]);
+            let p = layout.period;
+            let (sub_w, sub_h) = (self.width.div_ceil(p), self.height.div_ceil(p));
+            pass.dispatch_workgroups(sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), p * p);
+        }
+        let t = Instant::now();
+        gpu.queue.submit([enc.finish()]);
+        gpu.wait()?;
+        let shading_ms = t.elapsed().as_secs_f64() * 1e3;
+        let _ = &self.table;
+
+        let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("readback") });
+        enc.copy_buffer_to_buffer(&self.irradiance, 0, &self.readback, 0, self.readback.size());
+        gpu.queue.submit([enc.finish()]);
+        let slice = self.readback.slice(..);
+        slice.map_async(wgpu::MapMode::Read, |_| {});
+        gpu.wait()?;
+        let data: Vec<[f32; 4]> = {
+            let view = slice.get_mapped_range().map_err(|e| GpuError::Device(e.to_string()))?;
+            bytemuck::cast_slice(&view).to_vec()
+        };
+        self.readback.unmap();
+        let gb = cpu.gbuffer();
+        let mut irradiance = Vec::with_capacity(data.len());
+        let mut kept = Vec::with_capacity(data.len());
+        let mut evaluations = 0u64;
+        for (i, d) in data.iter().enumerate() {
+            let valid = gb.valid(i);
+            irradiance.push(if valid { Vec3::new(d[0], d[1], d[2]) } else { Vec3::ZERO });
+            kept.push(if valid { d[3] as u32 } else { 0 });
+            evaluations += valid as u64 * d[3] as u64;
+        }
+        Ok(Shaded { irradiance, kept, evaluations, shading_ms })
+    }
+
+    /// A whole frame: GPU shading, then the CPU's denoise and composition.
+    pub fn render(&self, cpu: &VplContext, settings: &VplSettings) -> Result<VplFrame, GpuError> {
+        let shaded = self.shade(cpu, settings)?;
+        Ok(cpu.finish(shaded, settings))
+    }
+}

@@ -1,0 +1,158 @@
+//! CPU/GPU parity of the VPL application.
+//!
+//! Tolerances, and why:
+//! - **Keep/cull decisions.** Both backends draw ξ from the same hash and
+//!   compute `r² = r_t²/(1−ξ)` from the same `r_t²`, but WGSL allows f32
+//!   division to be off by 2.5 ulp, so `r²` and `d²` may differ in their last
+//!   bits and a light with `|d² − r²|` within a few ulps can be kept on one
+//!   backend only. We count pixels whose kept count differs and allow at most
+//!   0.5% of the shaded pixels (observed: see the test output), never more
+//!   than one light per such pixel.
+//! - **Irradiance.** Where the decisions agree, the sums differ only by f32
+//!   rounding in a different order and WGSL's looser division: relative
+//!   difference ≤ 1e-4 of the pixel (plus 1e-9 absolute).
+//! - **Images.** End to end, with the CPU's denoise and composition around
+//!   either backend's shading: RMSE(CPU, GPU) ≤ 1e-3 × mean radiance.
+
+use glam::Vec3;
+use proptest::prelude::*;
+use slc_cpu::scene::Scene;
+use slc_cpu::vpl::{Shaded, VplContext, VplMethod, VplSettings};
+use slc_tests::gpu;
+use slc_wgpu::vpl::GpuVpl;
+use std::sync::OnceLock;
+
+fn cpu_ctx() -> &'static VplContext {
+    static C: OnceLock<VplContext> = OnceLock::new();
+    C.get_or_init(|| VplContext::new(&Scene::cornell_box(), 64, 48, 64, None).unwrap())
+}
+
+fn settings(method: VplMethod) -> VplSettings {
+    VplSettings { method, denoise: false, error_bound: 0.004, range: 0.08, ..VplSettings::default() }
+}
+
+struct Compared {
+    pixels: usize,
+    kept_differs: usize,
+    worst_rel: f64,
+}
+
+fn compare(cpu: &Shaded, gpu: &Shaded, ctx: &VplContext) -> Compared {
+    let gb = ctx.gbuffer();
+    let mut c = Compared { pixels: 0, kept_differs: 0, worst_rel: 0.0 };
+    for i in 0..cpu.irradiance.len() {
+        if !gb.valid(i) {
+            continue;
+        }
+        c.pixels += 1;
+        let dk = cpu.kept[i].abs_diff(gpu.kept[i]);
+        assert!(dk <= 1, "pixel {i}: kept {} on the CPU vs {} on the GPU", cpu.kept[i], gpu.kept[i]);
+        if dk > 0 {
+            c.kept_differs += 1;
+            continue;
+        }
+        let (a, b) = (cpu.irradiance[i].as_dvec3(), gpu.irradiance[i].as_dvec3());
+        let rel = ((a - b).abs().max_element() - 1e-9).max(0.0) / a.abs().max_element().max(1e-30);
+        c.worst_rel = c.worst_rel.max(rel);
+    }
+    c
+}
+
+#[test]
+fn shading_matches_cpu_for_every_method() {
+    let Some(g) = gpu() else { return };
+    let ctx = cpu_ctx();
+    let gv = GpuVpl::new(g, ctx).unwrap();
+    for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None, VplMethod::Reference] {
+        let s = settings(method);
+        let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(ctx, &s).unwrap());
+        let c = compare(&a, &b, ctx);
+        eprintln!("{}: {} pixels, {} with a differing keep decision, worst relative irradiance difference {:.2e}", method.name(), c.pixels, c.kept_differs, c.worst_rel);
+        assert!(c.kept_differs * 200 <= c.pixels, "{}: {} of {} pixels differ in keep decisions", method.name(), c.kept_differs, c.pixels);
+        assert!(c.worst_rel <= 1e-4, "{}: relative irradiance difference {}", method.name(), c.worst_rel);
+        assert!(a.kept.iter().sum::<u32>() > 0);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 12, failure_persistence: None, rng_seed: proptest::test_runner::RngSeed::Fixed(2016), ..ProptestConfig::default() })]
+
+    /// Random seeds, frames, error bounds (1e-4 … 0.1: ranges from beyond
+    /// the scene down to a few centimetres) and clamp ranges: the same
+    /// decisions and sums on both backends.
+    #[test]
+    fn random_settings_agree(seed in any::<u32>(), frame in 0u32..1000, log_eps in -4.0f32..-1.0, range in 0.01f32..0.5, clamp in any::<bool>()) {
+        let Some(g) = gpu() else { return Ok(()) };
+        static GV: OnceLock<usize> = OnceLock::new();
+        let _ = GV;
+        let ctx = cpu_ctx();
+        let gv = GpuVpl::new(g, ctx).unwrap();
+        let s = VplSettings {
+            method: if clamp { VplMethod::Clamp } else { VplMethod::Slc },
+            seed, frame, error_bound: 10f32.powf(log_eps), range, denoise: false, ..VplSettings::default()
+        };
+        let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(ctx, &s).unwrap());
+        let c = compare(&a, &b, ctx);
+        prop_assert!(c.kept_differs * 200 <= c.pixels, "{} of {} pixels differ", c.kept_differs, c.pixels);
+        prop_assert!(c.worst_rel <= 1e-4, "relative difference {}", c.worst_rel);
+    }
+}
+
+/// End to end (denoise on): the same image from both backends.
+#[test]
+fn images_match_end_to_end() {
+    let Some(g) = gpu() else { return };
+    let ctx = cpu_ctx();
+    let gv = GpuVpl::new(g, ctx).unwrap();
+    for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
+        let s = VplSettings { denoise: true, ..settings(method) };
+        let a = ctx.render(&s).unwrap().image;
+        let b = gv.render(ctx, &s).unwrap().image;
+        let rmse = a.rmse(&b);
+        assert!(b.is_finite());
+        assert!(rmse <= 1e-3 * a.mean(), "{}: RMSE {rmse} vs mean {}", method.name(), a.mean());
+    }
+}
+
+/// The GPU estimator's expectation is the unculled sum, per pixel, by the
+/// same stratified quadrature over ξ as the CPU test (bound: 2 strata of the
+/// all-kept frame).
+#[test]
+fn gpu_expectation_equals_unculled() {
+    let Some(g) = gpu() else { return };
+    let ctx = cpu_ctx();
+    let gv = GpuVpl::new(g, ctx).unwrap();
+    let none = gv.shade(ctx, &settings(VplMethod::None)).unwrap();
+    let fixed = |x: f32| VplSettings { fixed_xi: Some(x), ..settings(VplMethod::Slc) };
+    let all = gv.shade(ctx, &fixed(slc_core::range::Xi::MAX.get())).unwrap();
+    const M: usize = 128;
+    let mut mean = vec![Vec3::ZERO.as_dvec3(); none.irradiance.len()];
+    for j in 0..M {
+        let s = gv.shade(ctx, &fixed((j as f32 + 0.5) / M as f32)).unwrap();
+        for (m, e) in mean.iter_mut().zip(&s.irradiance) {
+            *m += e.as_dvec3() / M as f64;
+        }
+    }
+    for i in 0..mean.len() {
+        let truth = none.irradiance[i].as_dvec3();
+        let bound = all.irradiance[i].as_dvec3() * (2.0 / M as f64) + truth.abs() * 1e-4 + 1e-9;
+        for c in 0..3 {
+            assert!((mean[i][c] - truth[c]).abs() <= bound[c], "pixel {i}: E[gpu slc] {} vs unculled {} (bound {})", mean[i][c], truth[c], bound[c]);
+        }
+    }
+}
+
+/// A scene beyond the tile list's workgroup memory (the device's limit, or
+/// WebGPU's portable 16 KiB) is an error naming workgroup memory.
+#[test]
+fn too_many_vpls_per_subset_is_a_limit_error() {
+    let Some(g) = gpu() else { return };
+    let ctx = VplContext::new(&Scene::cornell_box(), 16, 16, 512, None).unwrap();
+    match GpuVpl::new(g, &ctx) {
+        Err(e @ (slc_wgpu::GpuError::Limit { .. } | slc_wgpu::GpuError::Shader(_))) => {
+            assert!(e.to_string().contains("workgroup"), "{e}")
+        }
+        Err(e) => panic!("unexpected error {e}"),
+        Ok(_) => panic!("262,144 VPLs (4,096 per subset) should exceed the tile list's workgroup memory"),
+    }
+}
