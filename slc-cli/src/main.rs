@@ -85,14 +85,14 @@ pub enum Shader<'a> {
     /// CPU.
     Cpu,
     /// GPU with its uploaded scene.
-    Gpu(slc_wgpu::vpl::GpuVpl<'a>),
+    Gpu(Box<slc_wgpu::vpl::GpuVpl<'a>>),
 }
 
 impl<'a> Shader<'a> {
     /// Sets up `backend` for `ctx` (`gpu` must hold a context for the GPU).
     pub fn new(backend: Backend, gpu: Option<&'a slc_wgpu::GpuContext>, ctx: &VplContext) -> Result<Self, String> {
         match (backend, gpu) {
-            (Backend::Gpu, Some(g)) => Ok(Shader::Gpu(slc_wgpu::vpl::GpuVpl::new(g, ctx).map_err(|e| e.to_string())?)),
+            (Backend::Gpu, Some(g)) => Ok(Shader::Gpu(Box::new(slc_wgpu::vpl::GpuVpl::new(g, ctx).map_err(|e| e.to_string())?))),
             _ => Ok(Shader::Cpu),
         }
     }

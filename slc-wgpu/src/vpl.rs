@@ -105,7 +105,7 @@ impl<'a> GpuVpl<'a> {
         let subsets = (PERIOD * PERIOD) as usize;
         let per_subset = (n / subsets as u64) as u32;
         let lim = &gpu.limits;
-        let max_binding = lim.max_storage_buffer_binding_size as u64;
+        let max_binding = lim.max_storage_buffer_binding_size;
         gpu.require("max_storage_buffer_binding_size (G-buffer)", w as u64 * h as u64 * 16, max_binding)?;
         gpu.require("max_storage_buffer_binding_size (lights)", n * 64, max_binding)?;
         let sub_w = w.div_ceil(PERIOD);
