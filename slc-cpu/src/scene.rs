@@ -241,15 +241,24 @@ impl Scene {
     pub fn load_obj(path: &Path) -> Result<Scene, SceneError> {
         let text = std::fs::read(path).map_err(|e| SceneError::Io(path.display().to_string(), e.to_string()))?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        let opts = tobj::LoadOptions { triangulate: true, single_index: false, ignore_points: true, ignore_lines: true };
-        let (models, mats) = tobj::load_obj_buf(&mut text.as_slice(), &opts, |p| {
+        let name = path.display().to_string();
+        Self::parse_obj(&text, &name, |p| {
             let direct = dir.join(p);
             let fallback = p.file_name().map(|f| dir.join(f));
             let chosen = if direct.exists() { direct } else { fallback.filter(|f| f.exists()).unwrap_or(direct) };
-            match std::fs::read(&chosen) {
-                Ok(b) => tobj::load_mtl_buf(&mut b.as_slice()),
-                Err(_) => Err(tobj::LoadError::OpenFileFailed),
-            }
+            std::fs::read(&chosen).ok()
+        })
+    }
+
+    /// Parses OBJ text; `mtl(name)` returns the bytes of a material library
+    /// the OBJ names (or `None` when it cannot be found). `name` labels
+    /// errors and the scene.
+    pub fn parse_obj(obj: &[u8], name: &str, mtl: impl Fn(&Path) -> Option<Vec<u8>>) -> Result<Scene, SceneError> {
+        let path = Path::new(name);
+        let opts = tobj::LoadOptions { triangulate: true, single_index: false, ignore_points: true, ignore_lines: true };
+        let (models, mats) = tobj::load_obj_buf(&mut &obj[..], &opts, |p| match mtl(p) {
+            Some(b) => tobj::load_mtl_buf(&mut b.as_slice()),
+            None => Err(tobj::LoadError::OpenFileFailed),
         })
         .map_err(|e| SceneError::Obj(path.display().to_string(), e.to_string()))?;
         let mats = mats.map_err(|e| SceneError::Obj(path.display().to_string(), format!("material library: {e}")))?;

@@ -1,0 +1,27 @@
+//! The OBJ/MTL loader and the TOML scene-file parser on arbitrary text:
+//! typed errors, never panics; accepted scenes validate.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use slc_cpu::scene::Scene;
+use slc_cpu::scene_file::SceneFile;
+use std::path::Path;
+
+fuzz_target!(|data: &[u8]| {
+    // First byte chooses the loader; an OBJ's MTL is the text after a NUL.
+    let Some((&which, rest)) = data.split_first() else { return };
+    if which % 2 == 0 {
+        let (obj, mtl) = match rest.iter().position(|&b| b == 0) {
+            Some(i) => (&rest[..i], Some(rest[i + 1..].to_vec())),
+            None => (rest, None),
+        };
+        if let Ok(scene) = Scene::parse_obj(obj, "fuzz.obj", |_| mtl.clone()) {
+            scene.validate().expect("a loaded scene validates");
+        }
+    } else if let Ok(text) = std::str::from_utf8(rest) {
+        // Relative paths resolve into a folder that does not exist.
+        if let Ok(f) = SceneFile::parse(text, Path::new("/nonexistent-slc-fuzz"), "fuzz.toml") {
+            f.scene.validate().expect("a loaded scene file validates");
+        }
+    }
+});
