@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Runs every fuzz target for SECONDS (default 30) with cargo-fuzz (nightly).
 #   fuzz/run.sh 600      # the long run: 10 minutes per target
-# The IES target starts from ../shared/data/ies/ as its corpus. Crashes land
-# in fuzz/artifacts/<target>/ and make this script exit non-zero.
+# The IES target starts from ../shared/data/ies/ as its corpus, and every
+# target first replays its past crashes in fuzz/regressions/<target>/. New
+# crashes land in fuzz/artifacts/<target>/ and make this script exit non-zero.
 set -euo pipefail
 cd "$(dirname "$0")"
 secs="${1:-30}"
@@ -13,8 +14,10 @@ for t in "${targets[@]}"; do
     if [ "$t" = ies_parse ] && [ -d ../../shared/data/ies ]; then
         cp ../../shared/data/ies/*.ies "corpus/$t/"
     fi
+    regress=()
+    [ -d "regressions/$t" ] && regress=("regressions/$t")
     echo "== fuzz $t for ${secs}s"
-    cargo +nightly fuzz run "$t" "corpus/$t" -- -max_total_time="$secs" -rss_limit_mb=2048 -timeout=10 2>&1 \
+    cargo +nightly fuzz run "$t" "corpus/$t" "${regress[@]}" -- -max_total_time="$secs" -rss_limit_mb=2048 -timeout=10 2>&1 \
         | grep -E "^(#[0-9]+ +DONE|==[0-9]+== ERROR|SUMMARY|Done [0-9]+ runs)" || true
     if compgen -G "artifacts/$t/*" >/dev/null; then
         echo "fuzz $t found a crash: $(ls artifacts/$t)" >&2

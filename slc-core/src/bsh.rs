@@ -175,18 +175,28 @@ impl Bsh {
         }
     }
 
-    /// Lights whose range sphere contains `x`.
+    /// Lights whose range sphere contains `x` (none for a NaN point).
     pub fn for_each_containing(&self, x: Vec3, visit: impl FnMut(u32)) {
+        if x.is_nan() {
+            return;
+        }
         self.traverse(|c, r| crate::sphere::sphere_contains_point(c, r, x), visit);
     }
 
-    /// Lights whose range sphere overlaps sphere `s`.
+    /// Lights whose range sphere overlaps sphere `s` (none when `s` is not
+    /// [`Sphere::is_valid`]: NaN, or a negative radius).
     pub fn for_each_overlapping_sphere(&self, s: Sphere, visit: impl FnMut(u32)) {
+        if !s.is_valid() {
+            return;
+        }
         self.traverse(|c, r| crate::sphere::sphere_overlaps_sphere(c, r, s.center, s.radius), visit);
     }
 
-    /// Lights whose range sphere overlaps box `b`.
+    /// Lights whose range sphere overlaps box `b` (none when `b` has NaN).
     pub fn for_each_overlapping_aabb(&self, b: Aabb, visit: impl FnMut(u32)) {
+        if b.min.is_nan() || b.max.is_nan() {
+            return;
+        }
         self.traverse(|c, r| crate::sphere::sphere_overlaps_aabb(c, r, b.min, b.max), visit);
     }
 }
@@ -242,6 +252,17 @@ mod tests {
     fn rejects_bad_input() {
         assert_eq!(Bsh::build(&[pt(f32::NAN, 0.0, 0.0)]), Err(BshError::NonFiniteCenter(0)));
         assert_eq!(Bsh::build(&[pt(0.0, 0.0, 0.0), pt(f32::INFINITY, 0.0, 0.0)]), Err(BshError::NonFiniteCenter(1)));
+        // Queries with NaN or a negative radius match nothing (regression:
+        // fuzz/bsh_vs_brute found a negative query radius answered
+        // inconsistently by leaves and their parents).
+        let mut t2 = Bsh::build(&[pt(0.0, 0.0, 0.0), pt(1.0, 0.0, 0.0)]).unwrap();
+        t2.refit(&[1.0, 1.0]).unwrap();
+        let mut hits = 0;
+        t2.for_each_overlapping_sphere(Sphere::new(Vec3::ZERO, -5.0), |_| hits += 1);
+        t2.for_each_overlapping_sphere(Sphere::new(Vec3::ZERO, f32::NAN), |_| hits += 1);
+        t2.for_each_containing(Vec3::NAN, |_| hits += 1);
+        t2.for_each_overlapping_aabb(Aabb { min: Vec3::NAN, max: Vec3::ONE }, |_| hits += 1);
+        assert_eq!(hits, 0);
         let neg = LightBound { center: Vec3::ZERO, extent: -1.0 };
         assert!(matches!(Bsh::build(&[neg]), Err(BshError::BadExtent(0, _))));
         let mut t = Bsh::build(&[pt(0.0, 0.0, 0.0)]).unwrap();

@@ -42,13 +42,14 @@ pub struct CompensatedSum {
 }
 
 impl CompensatedSum {
-    /// Adds `x`.
+    /// Adds `x`. Once a channel overflows to ±∞ its compensation stops
+    /// (`∞ − ∞` would make it NaN), so an overflowing sum is ±∞, never NaN.
     #[inline]
     pub fn add(&mut self, x: Vec3) {
         let t = self.sum + x;
         let big = self.sum.abs().cmpge(x.abs());
         let c = Vec3::select(big, (self.sum - t) + x, (x - t) + self.sum);
-        self.comp += c;
+        self.comp += Vec3::select(t.is_finite_mask(), c, Vec3::ZERO);
         self.sum = t;
     }
     /// The compensated total.
@@ -120,6 +121,17 @@ mod tests {
         assert_eq!(e.value, Vec3::splat(1.0 + 4.0));
         let seen = [Seen { d2: 8.0, rt2: 2.0, r2: 7.9 }];
         assert_eq!(slc_sum(seen.iter(), |s| **s, |_| Vec3::ONE), Estimate::default());
+    }
+
+    #[test]
+    fn overflowing_sum_is_infinite_not_nan() {
+        // Regression (fuzz/range_math): an infinite term made the
+        // compensation ∞ − ∞ = NaN.
+        let mut s = CompensatedSum::default();
+        s.add(Vec3::new(1.0, f32::INFINITY, f32::MAX));
+        s.add(Vec3::new(2.0, 1.0, f32::MAX));
+        let t = s.total();
+        assert_eq!(t, Vec3::new(3.0, f32::INFINITY, f32::INFINITY));
     }
 
     #[test]

@@ -66,9 +66,15 @@ crate::shared! {
     }
 
     /// Threshold squared range `r_t² = E · I / (2π ε)` from a scalar peak
-    /// intensity `I`, exposure `E` and error bound `ε`.
+    /// intensity `I`, exposure `E` and error bound `ε`, evaluated as
+    /// `(E/ε)·I/2π` so that no valid input makes `∞/∞` or `∞·0` (NaN) and
+    /// subnormal intensities keep their precision: the result is 0 for
+    /// `I = 0` and may be `+∞` ("never culled").
     pub fn threshold_range2(intensity: f32, exposure: f32, error_bound: f32) -> f32 {
-        return exposure * intensity / (TWO_PI * error_bound);
+        if intensity <= 0.0 {
+            return 0.0;
+        }
+        return (exposure / error_bound) * intensity / TWO_PI;
     }
 
     /// Scalar measure of an RGB intensity: max channel (`mode` 0) or channel
@@ -309,6 +315,24 @@ mod tests {
                 assert!(w.is_finite() && w <= 16_777_216.0, "rt2 {rt2} w {w}");
             }
         }
+    }
+
+    #[test]
+    fn extreme_exposure_and_error_bound_give_no_nan() {
+        // Regression (fuzz/range_math): E and ε near f32::MAX made E·I and
+        // 2πε both overflow, and ∞/∞ = NaN.
+        let big = f32::from_bits(2130649599);
+        for (e, eps) in [(big, big), (big, 1e-30), (1e-30, big), (f32::MAX, f32::MAX)] {
+            let p = RangeParams::new(eps, e).unwrap();
+            for i in [0.0, 1e-40, 1.0, f32::MAX] {
+                let rt2 = p.threshold_range2(Vec3::splat(i));
+                assert!(!rt2.is_nan() && rt2 >= 0.0, "E {e} eps {eps} I {i}: {rt2}");
+                assert_eq!(rt2 == 0.0, i == 0.0 || (e / eps) * i / TWO_PI == 0.0);
+            }
+        }
+        let rt2 = threshold_range2(f32::MAX, f32::MAX, f32::MAX);
+        let r64 = f32::MAX as f64 / core::f64::consts::TAU;
+        assert!((rt2 as f64 - r64).abs() <= 1e-6 * r64);
     }
 
     #[test]

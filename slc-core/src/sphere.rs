@@ -30,6 +30,10 @@ crate::shared! {
     /// inputs in f32.
     pub const SPHERE_PAD: f32 = 0.000000476837158203125;
 
+    /// Largest finite f32: the radius of a sphere that holds everything
+    /// (its square overflows to ∞ in the containment tests).
+    pub const SPHERE_HUGE: f32 = 340282346638528859811704183484516925440.0;
+
     /// Padding for a sphere of radius `r` at `c`: a few ulps of `|c|∞ + r`.
     pub fn sphere_pad(r: f32, c: vec3f) -> f32 {
         return (r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD;
@@ -48,6 +52,11 @@ crate::shared! {
         }
         if r2 >= d + r1 + sphere_pad(r2, c2) {
             return vec4f(c2.x, c2.y, c2.z, r2);
+        }
+        // Centres ≳ 1e19 apart overflow d; radii near f32::MAX overflow the
+        // sum: fall back to a sphere that holds everything (no NaN centre).
+        if d >= SPHERE_HUGE || 0.5 * (d + r1 + r2) >= SPHERE_HUGE {
+            return vec4f(c1.x, c1.y, c1.z, SPHERE_HUGE);
         }
         if abs(r1 - r2) >= d {
             if r1 >= r2 {
@@ -116,19 +125,25 @@ impl Sphere {
         Self { center, radius }
     }
 
-    /// [`sphere_contains_point`].
+    /// `false` for a sphere with a NaN centre or a negative or NaN radius:
+    /// such a sphere is empty in every test below.
+    pub fn is_valid(&self) -> bool {
+        !self.center.is_nan() && self.radius >= 0.0
+    }
+
+    /// [`sphere_contains_point`] (false for a NaN point or an invalid sphere).
     pub fn contains(&self, x: Vec3) -> bool {
-        sphere_contains_point(self.center, self.radius, x)
+        self.is_valid() && sphere_contains_point(self.center, self.radius, x)
     }
 
-    /// [`sphere_overlaps_sphere`].
+    /// [`sphere_overlaps_sphere`] (false if either sphere is invalid).
     pub fn overlaps_sphere(&self, o: &Sphere) -> bool {
-        sphere_overlaps_sphere(self.center, self.radius, o.center, o.radius)
+        self.is_valid() && o.is_valid() && sphere_overlaps_sphere(self.center, self.radius, o.center, o.radius)
     }
 
-    /// [`sphere_overlaps_aabb`].
+    /// [`sphere_overlaps_aabb`]; a box with a NaN corner overlaps nothing.
     pub fn overlaps_aabb(&self, b: &Aabb) -> bool {
-        sphere_overlaps_aabb(self.center, self.radius, b.min, b.max)
+        self.is_valid() && !b.min.is_nan() && !b.max.is_nan() && sphere_overlaps_aabb(self.center, self.radius, b.min, b.max)
     }
 
     /// Radius that makes `center` contain every point of `pts` in f32: the
@@ -312,6 +327,21 @@ mod tests {
         let inf = Sphere::new(Vec3::ONE, f32::INFINITY);
         assert_eq!(a.union(&inf).radius, f32::INFINITY);
         assert_eq!(inf.union(&a).radius, f32::INFINITY);
+    }
+
+    #[test]
+    fn union_of_far_apart_spheres_has_no_nan() {
+        // Regression (fuzz/bsh_vs_brute): centres 2e19 apart overflow |c₁ − c₂|²;
+        // the union used to get a NaN centre and contain nothing.
+        let a = Sphere::new(Vec3::new(-1e19, 0.0, 0.0), 1.0);
+        let b = Sphere::new(Vec3::new(1e19, 0.0, 0.0), 2.0);
+        for u in [a.union(&b), b.union(&a)] {
+            assert!(!u.center.is_nan() && !u.radius.is_nan());
+            assert!(u.contains(a.center) && u.contains(b.center));
+        }
+        let huge = Sphere::new(Vec3::ZERO, f32::MAX);
+        let u = huge.union(&Sphere::new(Vec3::X * 1e30, f32::MAX));
+        assert!(!u.center.is_nan() && u.contains(Vec3::X * 1e30));
     }
 
     #[test]

@@ -105,6 +105,17 @@ pub struct Scene {
     pub primary: PrimaryLight,
 }
 
+/// `true` when an MTL colour line (`Ka`, `Kd`, `Ks`, `Ke`) has fewer than
+/// three values: tobj 4.0.5 panics on those (`parse_float3` unwraps a
+/// short array), so they are rejected as a parse error before tobj sees
+/// them. Found by fuzz/scene_loaders.
+fn short_colour_line(mtl: &[u8]) -> bool {
+    String::from_utf8_lossy(mtl).lines().any(|l| {
+        let mut w = l.split_whitespace();
+        matches!(w.next(), Some("Ka" | "Kd" | "Ks" | "Ke")) && w.take(3).count() < 3
+    })
+}
+
 impl Scene {
     /// Checks the invariants every renderer relies on: finite vertices,
     /// valid material indices, albedo in `[0, 1]`, non-negative finite
@@ -257,6 +268,7 @@ impl Scene {
         let path = Path::new(name);
         let opts = tobj::LoadOptions { triangulate: true, single_index: false, ignore_points: true, ignore_lines: true };
         let (models, mats) = tobj::load_obj_buf(&mut &obj[..], &opts, |p| match mtl(p) {
+            Some(b) if short_colour_line(&b) => Err(tobj::LoadError::MaterialParseError),
             Some(b) => tobj::load_mtl_buf(&mut b.as_slice()),
             None => Err(tobj::LoadError::OpenFileFailed),
         })

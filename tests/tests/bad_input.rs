@@ -91,6 +91,13 @@ fn scene_loaders() {
     for (obj, needle) in bad_obj {
         rejects(&format!("obj {:?}", String::from_utf8_lossy(obj)), needle, move || Scene::parse_obj(obj, "t.obj", |_| None));
     }
+    // Regression (fuzz/scene_loaders): tobj panics on a short colour line.
+    for line in ["Kd", "Kd 0.5", "Ke 1 2", "Ka", "Ks 0 0"] {
+        let mtl = format!("newmtl a\n{line}\n").into_bytes();
+        rejects(&format!("mtl {line:?}"), "material", move || {
+            Scene::parse_obj(b"mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "t.obj", |_| Some(mtl.clone()))
+        });
+    }
     rejects("albedo > 1", "albedo", || {
         Scene::parse_obj(b"mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "t.obj", |_| Some(b"newmtl a\nKd 2 0 0\n".to_vec()))
     });

@@ -72,7 +72,10 @@ fn slc_keep(r2: f32, d2: f32) -> bool {
     return d2 < r2;
 }
 fn threshold_range2(intensity: f32, exposure: f32, error_bound: f32) -> f32 {
-    return exposure * intensity / (TWO_PI * error_bound);
+    if intensity <= 0.0 {
+        return 0.0;
+    }
+    return (exposure / error_bound) * intensity / TWO_PI;
 }
 fn intensity_measure(rgb: vec3f, mode: u32) -> f32 {
     if mode == 1 {
@@ -99,6 +102,7 @@ fn sphere_overlaps_sphere(c1: vec3f, r1: f32, c2: vec3f, r2: f32) -> bool {
     return dot(v, v) <= r * r;
 }
 const SPHERE_PAD: f32 = 0.000000476837158203125;
+const SPHERE_HUGE: f32 = 340282346638528859811704183484516925440.0;
 fn sphere_pad(r: f32, c: vec3f) -> f32 {
     return (r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD;
 }
@@ -110,6 +114,9 @@ fn sphere_union(c1: vec3f, r1: f32, c2: vec3f, r2: f32) -> vec4f {
     }
     if r2 >= d + r1 + sphere_pad(r2, c2) {
         return vec4f(c2.x, c2.y, c2.z, r2);
+    }
+    if d >= SPHERE_HUGE || 0.5 * (d + r1 + r2) >= SPHERE_HUGE {
+        return vec4f(c1.x, c1.y, c1.z, SPHERE_HUGE);
     }
     if abs(r1 - r2) >= d {
         if r1 >= r2 {
