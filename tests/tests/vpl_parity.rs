@@ -156,3 +156,23 @@ fn too_many_vpls_per_subset_is_a_limit_error() {
         Ok(_) => panic!("262,144 VPLs (4,096 per subset) should exceed the tile list's workgroup memory"),
     }
 }
+
+/// Hard cases on both backends: error bounds that make every range +∞
+/// (never culled) or ~0 (nothing kept), and ξ at both ends of [0, 1)
+/// (including the largest f32 below 1, where r² = 2²⁴ r_t²). The GPU agrees
+/// with the CPU and no pixel is NaN or infinite.
+#[test]
+fn hard_cases_agree() {
+    let Some(g) = gpu() else { return };
+    let ctx = cpu_ctx();
+    let gv = GpuVpl::new(g, ctx).unwrap();
+    let xi_max = slc_core::range::Xi::MAX.get();
+    for (eps, xi) in [(1e-30f32, None), (1e30, None), (1e30, Some(xi_max)), (0.004, Some(0.0)), (0.004, Some(xi_max)), (f32::MAX, Some(xi_max))] {
+        let s = VplSettings { error_bound: eps, fixed_xi: xi, ..settings(VplMethod::Slc) };
+        let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(ctx, &s).unwrap());
+        assert!(b.irradiance.iter().all(|e| e.is_finite()), "eps {eps} xi {xi:?}: non-finite GPU pixel");
+        let c = compare(&a, &b, ctx);
+        eprintln!("eps {eps:e}, xi {xi:?}: {} of {} pixels differ in keep decisions, worst rel {:.1e}", c.kept_differs, c.pixels, c.worst_rel);
+        assert!(c.kept_differs * 200 <= c.pixels && c.worst_rel <= 1e-4, "eps {eps} xi {xi:?}");
+    }
+}
