@@ -38,23 +38,10 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var h = pcg_hash(seed ^ 2654435769u);
     var e = vec3f(0.0);
     for (var s = 0u; s < min(picks.n, K); s++) {
-        let li = picks.light[s];
-        let l = lights[li];
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        let y = light_point(l, u1, xi_from_bits(h));
-        let v = x - y;
-        let d2 = dot(v, v);
-        if !slc_keep(r2[li], d2) || d2 <= 0.0 {
-            continue;
-        }
-        let w = v / sqrt(d2);
-        let cos_x = -dot(n, w);
-        if cos_x <= 0.0 || occluded(x + n * params.eps, y) {
-            continue;
-        }
-        e += light_intensity(l, w) * (cos_x * inverse_square(d2) * slc_weight(rt2[li], d2) * w_res);
+        e += connect(picks.light[s], x, n, w_res, u1, xi_from_bits(h), params.eps).e;
     }
     irradiance[i] = vec4f(e, f32(picks.n));
 }

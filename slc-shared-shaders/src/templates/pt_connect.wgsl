@@ -71,26 +71,15 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var sum = vec3f(0.0);
     for (var s = 0u; s < min(picks.n, K); s++) {
         let li = picks.light[s];
-        let l = lights[li];
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        let y = light_point(l, u1, xi_from_bits(h));
-        let v = x - y;
-        let d2 = dot(v, v);
-        if !slc_keep(r2[li], d2) || d2 <= 0.0 {
-            continue;
-        }
-        let w = v / sqrt(d2);
-        let cos_x = -dot(n, w);
-        if cos_x <= 0.0 || occluded(x + n * params.eps, y) {
-            continue;
-        }
+        let c = connect(li, x, n, w_res, u1, xi_from_bits(h), params.eps);
         var mis = 1.0;
-        if light_area(l) > 0.0 {
-            mis = mis_weight(light_pdf(li, x, y, picks.n, true), cosine_pdf(cos_x));
+        if light_area(lights[li]) > 0.0 && c.cos_x > 0.0 {
+            mis = mis_weight(light_pdf(li, x, c.y, picks.n, true), cosine_pdf(c.cos_x));
         }
-        sum += light_intensity(l, w) * (cos_x * inverse_square(d2) * slc_weight(rt2[li], d2) * w_res * mis);
+        sum += c.e * mis;
     }
     radiance[i] += vec4f(vtx.weight * sum, 0.0);
 }

@@ -484,6 +484,40 @@ fn bsh_collect(x: vec3f, seed: u32) -> Picks {
     }
     return picks;
 }
+
+/// One reservoir pick connected to the shading point `x` (normal `n`).
+struct Connection {
+    /// Irradiance the pick adds at `x`, with the 1/p and reservoir weights
+    /// (zero when the RR test at the sampled point fails, the light is
+    /// behind `x`, or the shadow ray is blocked).
+    e: vec3f,
+    /// The sampled point on the light.
+    y: vec3f,
+    /// Cosine at `x` toward `y`.
+    cos_x: f32,
+}
+
+/// Samples pick `li` at `(u1, u2)`, applies the RR test with the light's own
+/// range at the sampled point's distance, casts the shadow ray (offset `eps`
+/// along `n`) and weights by `1/p` and the reservoir weight `w_res`.
+fn connect(li: u32, x: vec3f, n: vec3f, w_res: f32, u1: f32, u2: f32, eps: f32) -> Connection {
+    var c: Connection;
+    c.e = vec3f(0.0);
+    let l = lights[li];
+    c.y = light_point(l, u1, u2);
+    let v = x - c.y;
+    let d2 = dot(v, v);
+    if !slc_keep(r2[li], d2) || d2 <= 0.0 {
+        return c;
+    }
+    let w = v / sqrt(d2);
+    c.cos_x = -dot(n, w);
+    if c.cos_x <= 0.0 || occluded(x + n * eps, c.y) {
+        return c;
+    }
+    c.e = light_intensity(l, w) * (c.cos_x * inverse_square(d2) * slc_weight(rt2[li], d2) * w_res);
+    return c;
+}
 // Explicit light connection of a progressive path tracer: at every live path
 // vertex, the BSH and a 16-slot reservoir pick lights; each pick is
 // sampled, passes the RR test at the sampled point, casts a shadow ray and is
@@ -549,26 +583,15 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var sum = vec3f(0.0);
     for (var s = 0u; s < min(picks.n, K); s++) {
         let li = picks.light[s];
-        let l = lights[li];
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        let y = light_point(l, u1, xi_from_bits(h));
-        let v = x - y;
-        let d2 = dot(v, v);
-        if !slc_keep(r2[li], d2) || d2 <= 0.0 {
-            continue;
-        }
-        let w = v / sqrt(d2);
-        let cos_x = -dot(n, w);
-        if cos_x <= 0.0 || occluded(x + n * params.eps, y) {
-            continue;
-        }
+        let c = connect(li, x, n, w_res, u1, xi_from_bits(h), params.eps);
         var mis = 1.0;
-        if light_area(l) > 0.0 {
-            mis = mis_weight(light_pdf(li, x, y, picks.n, true), cosine_pdf(cos_x));
+        if light_area(lights[li]) > 0.0 && c.cos_x > 0.0 {
+            mis = mis_weight(light_pdf(li, x, c.y, picks.n, true), cosine_pdf(c.cos_x));
         }
-        sum += light_intensity(l, w) * (cos_x * inverse_square(d2) * slc_weight(rt2[li], d2) * w_res * mis);
+        sum += c.e * mis;
     }
     radiance[i] += vec4f(vtx.weight * sum, 0.0);
 }
