@@ -87,6 +87,9 @@ pub struct Report {
 }
 
 pub fn run(a: BenchArgs) -> Result<(), String> {
+    if a.scene.app == crate::App::Pt {
+        return Err("slc bench --app pt is not built yet (render works: slc render --app pt)".into());
+    }
     let loaded = a.scene.load()?;
     let ctx = &loaded.ctx;
     let gpu = crate::gpu_context(a.scene.backend)?;

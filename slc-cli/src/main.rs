@@ -68,6 +68,8 @@ enum Command {
 pub enum App {
     /// Real-time indirect illumination with VPLs.
     Vpl,
+    /// Progressive path tracing with many lights.
+    Pt,
 }
 
 /// Which backend.
@@ -114,22 +116,26 @@ pub fn gpu_context(backend: Backend) -> Result<Option<slc_wgpu::GpuContext>, Str
     }
 }
 
-#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
-enum Method {
-    Slc,
-    Clamp,
-    None,
-    Reference,
+/// A VPL method name.
+fn vpl_method(name: &str) -> Result<VplMethod, String> {
+    match name {
+        "slc" => Ok(VplMethod::Slc),
+        "clamp" => Ok(VplMethod::Clamp),
+        "none" => Ok(VplMethod::None),
+        "reference" => Ok(VplMethod::Reference),
+        m => Err(format!("method '{m}' is not one of slc, clamp, none, reference (--app vpl)")),
+    }
 }
 
-impl From<Method> for VplMethod {
-    fn from(m: Method) -> Self {
-        match m {
-            Method::Slc => VplMethod::Slc,
-            Method::Clamp => VplMethod::Clamp,
-            Method::None => VplMethod::None,
-            Method::Reference => VplMethod::Reference,
-        }
+/// A path-tracing method name.
+fn pt_method(name: &str) -> Result<slc_cpu::pt::PtMethod, String> {
+    use slc_cpu::pt::PtMethod;
+    match name {
+        "slc" => Ok(PtMethod::Slc),
+        "slc-reservoir" => Ok(PtMethod::SlcReservoir),
+        "uniform" => Ok(PtMethod::Uniform),
+        "power" => Ok(PtMethod::Power),
+        m => Err(format!("method '{m}' is not one of slc, slc-reservoir, uniform, power (--app pt)")),
     }
 }
 
@@ -181,16 +187,21 @@ pub struct Loaded {
 }
 
 impl SceneArgs {
-    /// Loads the scene and builds the shared VPL context.
-    pub fn load(&self) -> Result<Loaded, String> {
-        let (scene, file) = if self.scene == "cornell" {
-            (Scene::cornell_box(), RenderSettings::default())
+    /// The scene, its extra lights (scene files) and its `[render]` settings.
+    pub fn scene(&self) -> Result<(Scene, Vec<slc_core::light::Light>, RenderSettings), String> {
+        if self.scene == "cornell" {
+            Ok((Scene::cornell_box(), Vec::new(), RenderSettings::default()))
         } else if self.scene.ends_with(".toml") {
             let f = SceneFile::load(Path::new(&self.scene)).map_err(|e| e.to_string())?;
-            (f.scene, f.render)
+            Ok((f.scene, f.lights, f.render))
         } else {
-            (Scene::load_obj(Path::new(&self.scene)).map_err(|e| e.to_string())?, RenderSettings::default())
-        };
+            Ok((Scene::load_obj(Path::new(&self.scene)).map_err(|e| e.to_string())?, Vec::new(), RenderSettings::default()))
+        }
+    }
+
+    /// Loads the scene and builds the shared VPL context.
+    pub fn load(&self) -> Result<Loaded, String> {
+        let (scene, _, file) = self.scene()?;
         let width = self.width.or(file.width).unwrap_or(512);
         let height = self.height.or(file.height).unwrap_or(512);
         let vpls = self.vpls.or(file.vpls).unwrap_or(65536);
@@ -208,9 +219,16 @@ impl SceneArgs {
 struct RenderArgs {
     #[command(flatten)]
     scene: SceneArgs,
-    /// Light culling method [default: slc].
-    #[arg(long, value_enum)]
-    method: Option<Method>,
+    /// Method: slc | clamp | none | reference (vpl); slc | slc-reservoir |
+    /// uniform | power (pt) [default: slc].
+    #[arg(long)]
+    method: Option<String>,
+    /// Path tracing: samples per pixel [default: 16].
+    #[arg(long)]
+    spp: Option<u32>,
+    /// Path tracing: render for this many seconds instead of --spp.
+    #[arg(long)]
+    seconds: Option<f64>,
     /// SLC error bound ε, the largest standard deviation one light may add
     /// to a pixel [default: 0.008].
     #[arg(long)]
@@ -251,20 +269,14 @@ fn main() -> ExitCode {
 }
 
 fn render(a: RenderArgs) -> Result<(), String> {
+    if a.scene.app == App::Pt {
+        return render_pt(a);
+    }
     let t0 = Instant::now();
     let spinner = spinner("scene, G-buffer, reflective shadow map, direct light");
     let loaded = a.scene.load()?;
     let (ctx, f) = (&loaded.ctx, &loaded.file);
-    let method = match a.method {
-        Some(m) => m.into(),
-        None => match f.method.as_deref() {
-            None | Some("slc") => VplMethod::Slc,
-            Some("clamp") => VplMethod::Clamp,
-            Some("none") => VplMethod::None,
-            Some("reference") => VplMethod::Reference,
-            Some(m) => return Err(format!("scene file [render] method '{m}' is not one of slc, clamp, none, reference")),
-        },
-    };
+    let method = vpl_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or("slc"))?;
     let d = VplSettings::default();
     let settings = VplSettings {
         method,
@@ -306,6 +318,57 @@ fn render(a: RenderArgs) -> Result<(), String> {
             none_ms / st.shading_ms.max(1e-9)
         );
     }
+    println!("  wrote       {} and {} ({:.1} s)", a.out.display(), a.out.with_extension("png").display(), t0.elapsed().as_secs_f64());
+    Ok(())
+}
+
+/// `slc render --app pt`: progressive path tracing on the CPU.
+fn render_pt(a: RenderArgs) -> Result<(), String> {
+    use slc_cpu::pt::{PtRender, PtScene, PtSettings};
+    if a.scene.backend == Backend::Gpu {
+        return Err("--app pt runs on the CPU only so far (the GPU path tracer is not built yet); use --backend cpu".into());
+    }
+    let t0 = Instant::now();
+    let (scene, lights, f) = a.scene.scene()?;
+    let (w, h) = (a.scene.width.or(f.width).unwrap_or(512), a.scene.height.or(f.height).unwrap_or(512));
+    if !(1..=16384).contains(&w) || !(1..=16384).contains(&h) {
+        return Err(slc_cpu::RenderError::Size(w, h).to_string());
+    }
+    let mut pts = PtScene::new(&scene, &lights).map_err(|e| e.to_string())?;
+    let d = PtSettings::default();
+    let settings = PtSettings {
+        method: pt_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or("slc"))?,
+        error_bound: a.error_bound.or(f.error_bound).unwrap_or(d.error_bound),
+        exposure: a.scene.exposure.or(f.exposure).unwrap_or(1.0),
+        seed: a.seed.or(f.seed).unwrap_or(d.seed),
+        ..d
+    };
+    let mut acc = PtRender::new(w, h);
+    let bar = indicatif::ProgressBar::new(0);
+    match a.seconds {
+        Some(secs) if secs > 0.0 && secs.is_finite() => {
+            bar.set_length((secs * 10.0) as u64);
+            while acc.time_ms < secs * 1e3 {
+                pts.render(&mut acc, &settings, 1).map_err(|e| e.to_string())?;
+                bar.set_position((acc.time_ms / 100.0) as u64);
+            }
+        }
+        Some(secs) => return Err(format!("--seconds {secs} must be finite and > 0")),
+        None => {
+            let spp = a.spp.unwrap_or(16).max(1);
+            bar.set_length(spp as u64);
+            for _ in 0..spp {
+                pts.render(&mut acc, &settings, 1).map_err(|e| e.to_string())?;
+                bar.inc(1);
+            }
+        }
+    }
+    bar.finish_and_clear();
+    let image = acc.image();
+    let exposure = settings.exposure;
+    write_outputs(&image, &a.out, exposure)?;
+    println!("slc render: {} {}x{}, path tracing, {} lights, method {}", scene.name, w, h, pts.light_count(), settings.method.name());
+    println!("  time        {:.1} ms for {} samples per pixel ({:.2} spp/s)", acc.time_ms, acc.passes, acc.passes as f64 / (acc.time_ms * 1e-3));
     println!("  wrote       {} and {} ({:.1} s)", a.out.display(), a.out.with_extension("png").display(), t0.elapsed().as_secs_f64());
     Ok(())
 }

@@ -219,3 +219,18 @@ fn gpu_backend_renders_like_cpu() {
     ok(&d, &["diff", "c.exr", "g.exr", "--max-rmse", "0.00001"]);
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// README: `slc render --app pt` with each method.
+#[test]
+fn path_tracer_renders() {
+    let d = tempdir("pt");
+    for m in ["slc", "slc-reservoir", "uniform", "power"] {
+        let out = format!("pt-{m}.exr");
+        let text = ok(&d, &["render", "--app", "pt", "--method", m, "--width", "24", "--height", "24", "--spp", "2", "--out", &out]);
+        assert!(text.contains("path tracing") && text.contains("2 samples per pixel"), "{text}");
+        assert!(d.join(&out).exists());
+    }
+    let out = slc(&d, &["render", "--app", "pt", "--method", "clamp", "--width", "8", "--height", "8"]);
+    assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("slc-reservoir"));
+    std::fs::remove_dir_all(&d).ok();
+}

@@ -27,6 +27,7 @@
 pub mod gbuffer;
 pub mod geometry;
 pub mod image;
+pub mod pt;
 pub mod reference;
 pub mod scene;
 pub mod scene_file;

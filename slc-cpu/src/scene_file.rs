@@ -263,7 +263,9 @@ impl SceneFile {
         }
         if let Some(c) = f.camera {
             scene.camera = Camera { position: v3(c.position), target: v3(c.look_at), up: v3(c.up), vfov_deg: c.fov };
-        } else {
+        } else if !f.geometry.iter().any(|g| g.builtin.is_some()) {
+            // No camera: frame the bounds (built-in geometry keeps its own,
+            // the published Cornell camera set above).
             let primary = scene.primary;
             scene.frame_default_view();
             scene.primary = primary;
@@ -385,6 +387,12 @@ mod tests {
         assert_eq!(s.len(), 16);
         let area: f32 = s.iter().map(|[a, b, c]| 0.5 * (*b - *a).cross(*c - *a).length()).sum();
         assert!((area - 0.5).abs() < 1e-6);
+    }
+
+    #[test]
+    fn builtin_geometry_keeps_its_camera() {
+        let f = SceneFile::parse("[[geometry]]\nbuiltin = \"cornell\"\n", Path::new("."), "t.toml").unwrap();
+        assert_eq!(f.scene.camera, Scene::cornell_box().camera);
     }
 
     #[test]
