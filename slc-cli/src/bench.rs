@@ -38,6 +38,15 @@ pub struct BenchArgs {
     /// Also plot RMSE against shading time (.svg or .png).
     #[arg(long)]
     plot: Option<PathBuf>,
+    /// Path tracing: the SLC error bound ε [default: 0.1].
+    #[arg(long)]
+    error_bound: Option<f32>,
+    /// Path tracing: seconds per method (equal time).
+    #[arg(long, default_value_t = 10.0)]
+    seconds: f64,
+    /// Path tracing: samples per pixel of the reference (power sampling).
+    #[arg(long, default_value_t = 1024)]
+    reference_spp: u32,
 }
 
 /// One configuration's measurements.
@@ -88,7 +97,7 @@ pub struct Report {
 
 pub fn run(a: BenchArgs) -> Result<(), String> {
     if a.scene.app == crate::App::Pt {
-        return Err("slc bench --app pt is not built yet (render works: slc render --app pt)".into());
+        return run_pt(a);
     }
     let loaded = a.scene.load()?;
     let ctx = &loaded.ctx;
@@ -175,6 +184,133 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
             r.lights_per_pixel,
             r.kept_per_pixel,
             r.evaluations_per_second
+        );
+    }
+    Ok(())
+}
+
+/// One method's equal-time path-tracing run.
+#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
+pub struct PtRun {
+    /// Method.
+    pub method: String,
+    /// Error bound ε for the SLC methods.
+    pub param: Option<f32>,
+    /// Time spent (ms).
+    pub time_ms: f64,
+    /// Samples per pixel reached.
+    pub spp: u32,
+    /// RMSE against the reference at the end.
+    pub rmse: f64,
+    /// (time ms, spp, RMSE) after each pass: RMSE against time.
+    pub series: Vec<(f64, u32, f64)>,
+}
+
+/// The JSON of `slc bench --app pt`.
+#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
+pub struct PtReport {
+    /// `pt`.
+    pub app: String,
+    /// `cpu`.
+    pub backend: String,
+    /// Scene name.
+    pub scene: String,
+    /// Image width.
+    pub width: u32,
+    /// Image height.
+    pub height: u32,
+    /// Lights.
+    pub lights: usize,
+    /// Reference: method and samples per pixel.
+    pub reference: String,
+    /// Estimated RMSE of the reference itself (half-vs-half / 2).
+    pub reference_noise: f64,
+    /// Whether the reference came from the cache.
+    pub reference_from_cache: bool,
+    /// One entry per method.
+    pub runs: Vec<PtRun>,
+}
+
+fn run_pt(a: BenchArgs) -> Result<(), String> {
+    use slc_cpu::pt::{PtMethod, PtRender, PtScene, PtSettings};
+    if a.scene.backend == crate::Backend::Gpu {
+        return Err("--app pt runs on the CPU only so far; use --backend cpu".into());
+    }
+    if !(a.seconds > 0.0 && a.seconds.is_finite()) {
+        return Err(format!("--seconds {} must be finite and > 0", a.seconds));
+    }
+    let (scene, lights, f) = a.scene.scene()?;
+    let (w, h) = (a.scene.width.or(f.width).unwrap_or(128), a.scene.height.or(f.height).unwrap_or(128));
+    let mut pts = PtScene::new(&scene, &lights).map_err(|e| e.to_string())?;
+    let eps = a.error_bound.unwrap_or(PtSettings::default().error_bound);
+    let ref_settings = PtSettings { method: PtMethod::Power, seed: 0x5EED, ..PtSettings::default() };
+    let bar = ProgressBar::new_spinner();
+    bar.set_message(format!("reference: {} spp of power sampling", a.reference_spp));
+    bar.tick();
+    let r = slc_cpu::reference::pt_reference(&mut pts, w, h, &ref_settings, a.reference_spp, Some(&a.cache_dir))
+        .map_err(|e| e.to_string())?;
+    let (reference, cached) = (r.image, r.cached);
+    let mut runs = Vec::new();
+    for method in [PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::Uniform, PtMethod::Power] {
+        bar.set_message(format!("{} for {} s", method.name(), a.seconds));
+        bar.tick();
+        let s = PtSettings { method, error_bound: eps, seed: a.seed, ..PtSettings::default() };
+        let mut acc = PtRender::new(w, h);
+        let mut series = Vec::new();
+        while acc.time_ms < a.seconds * 1e3 {
+            pts.render(&mut acc, &s, 1).map_err(|e| e.to_string())?;
+            series.push((acc.time_ms, acc.passes, acc.image().rmse(&reference)));
+        }
+        let last = *series.last().expect("at least one pass");
+        runs.push(PtRun {
+            method: method.name().into(),
+            param: matches!(method, PtMethod::Slc | PtMethod::SlcReservoir).then_some(eps),
+            time_ms: last.0,
+            spp: last.1,
+            rmse: last.2,
+            series,
+        });
+    }
+    bar.finish_and_clear();
+    let report = PtReport {
+        app: "pt".into(),
+        backend: "cpu".into(),
+        scene: scene.name.clone(),
+        width: w,
+        height: h,
+        lights: pts.light_count(),
+        reference: format!("power, {} spp", a.reference_spp),
+        reference_noise: r.noise,
+        reference_from_cache: cached,
+        runs,
+    };
+    let json = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;
+    std::fs::write(&a.json, json).map_err(|e| format!("cannot write {}: {e}", a.json.display()))?;
+    if let Some(csv) = &a.csv {
+        let mut t = String::from("method,param,time_ms,spp,rmse\n");
+        for r in &report.runs {
+            t += &format!("{},{},{:.1},{},{:.6}\n", r.method, r.param.map_or(String::new(), |p| p.to_string()), r.time_ms, r.spp, r.rmse);
+        }
+        std::fs::write(csv, t).map_err(|e| format!("cannot write {}: {e}", csv.display()))?;
+    }
+    if let Some(plot) = &a.plot {
+        crate::plot::rmse_over_time(&report, plot)?;
+    }
+    let uniform = report.runs.iter().find(|r| r.method == "uniform").map_or(f64::NAN, |r| r.rmse);
+    println!(
+        "{} {}x{}, {} lights, {:.1} s per method (reference {} {}, its own RMSE about {:.5})",
+        report.scene, w, h, report.lights, a.seconds, report.reference, if cached { "from cache" } else { "rendered" }, report.reference_noise
+    );
+    println!("{:<14} {:>8} {:>10} {:>6} {:>10} {:>16}", "method", "param", "time ms", "spp", "rmse", "uniform/method");
+    for r in &report.runs {
+        println!(
+            "{:<14} {:>8} {:>10.0} {:>6} {:>10.5} {:>16.2}",
+            r.method,
+            r.param.map_or("-".into(), |p| p.to_string()),
+            r.time_ms,
+            r.spp,
+            r.rmse,
+            uniform / r.rmse
         );
     }
     Ok(())

@@ -49,6 +49,9 @@ pub fn method_color(method: &str) -> RGBColor {
         "clamp" => RGBColor(214, 39, 40),
         "none" => RGBColor(40, 40, 40),
         "reference" => RGBColor(120, 120, 120),
+        "slc-reservoir" => RGBColor(148, 103, 189),
+        "uniform" => RGBColor(255, 127, 14),
+        "power" => RGBColor(140, 86, 75),
         _ => RGBColor(44, 160, 44),
     }
 }
@@ -133,6 +136,60 @@ fn speed_vs_error_on<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB,
                 )
             }))
             .map_err(err)?;
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 18))
+        .position(SeriesLabelPosition::UpperRight)
+        .draw()
+        .map_err(err)?;
+    Ok(())
+}
+
+/// Path tracing: RMSE (log) against time (log) per method.
+pub fn rmse_over_time(report: &crate::bench::PtReport, path: &Path) -> Result<(), String> {
+    with_backend(path, (960, 640), |a| rmse_over_time_on(report, a), |a| rmse_over_time_on(report, a))
+}
+
+fn rmse_over_time_on<DB: DrawingBackend>(report: &crate::bench::PtReport, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
+    let err = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    root.fill(&WHITE).map_err(err)?;
+    let pts: Vec<(f64, f64)> = report.runs.iter().flat_map(|r| r.series.iter().map(|s| (s.0, s.2))).filter(|p| p.0 > 0.0 && p.1 > 0.0).collect();
+    if pts.is_empty() {
+        return Err("no samples to plot".into());
+    }
+    let (tmin, tmax) = pts.iter().fold((f64::MAX, 0.0f64), |(a, b), p| (a.min(p.0), b.max(p.0)));
+    let (emin, emax) = pts.iter().fold((f64::MAX, 0.0f64), |(a, b), p| (a.min(p.1), b.max(p.1)));
+    let title = format!("RMSE vs time: {} {}x{}, {} lights, {} backend", report.scene, report.width, report.height, report.lights, report.backend);
+    let mut chart = ChartBuilder::on(root)
+        .caption(title, ("sans-serif", 24))
+        .margin(16)
+        .x_label_area_size(48)
+        .y_label_area_size(72)
+        .build_cartesian_2d((tmin / 1.2).log10()..(tmax * 1.2).log10(), (emin / 1.2).log10()..(emax * 1.2).log10())
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc("render time (ms, log scale)")
+        .y_desc("RMSE vs reference (log scale)")
+        .label_style(("sans-serif", 16))
+        .axis_desc_style(("sans-serif", 18))
+        .x_labels(10)
+        .y_labels(10)
+        .x_label_formatter(&|v| format!("{:.0}", 10f64.powf(*v)))
+        .y_label_formatter(&|v| format!("{:.1e}", 10f64.powf(*v)))
+        .draw()
+        .map_err(err)?;
+    for r in &report.runs {
+        let color = method_color(&r.method);
+        let line: Vec<(f64, f64)> = r.series.iter().filter(|s| s.0 > 0.0 && s.2 > 0.0).map(|s| (s.0.log10(), s.2.log10())).collect();
+        chart
+            .draw_series(LineSeries::new(line, color.stroke_width(2)))
+            .map_err(err)?
+            .label(r.method.clone())
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
     }
     chart
         .configure_series_labels()

@@ -234,3 +234,27 @@ fn path_tracer_renders() {
     assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("slc-reservoir"));
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// `slc bench --app pt`: equal-time runs with RMSE-over-time series, JSON,
+/// CSV and plot.
+#[test]
+fn path_tracer_bench() {
+    let d = tempdir("ptbench");
+    let text = ok(&d, &[
+        "bench", "--app", "pt", "--width", "16", "--height", "16", "--seconds", "0.2", "--reference-spp", "8",
+        "--json", "p.json", "--csv", "p.csv", "--plot", "p.svg", "--cache-dir", "cache",
+    ]);
+    assert!(text.contains("uniform/method"), "{text}");
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("p.json")).unwrap()).unwrap();
+    let runs = json["runs"].as_array().unwrap();
+    assert_eq!(runs.len(), 4);
+    for r in runs {
+        for key in ["method", "param", "time_ms", "spp", "rmse", "series"] {
+            assert!(r.get(key).is_some(), "run lacks {key}");
+        }
+        assert!(!r["series"].as_array().unwrap().is_empty());
+    }
+    assert!(json["reference_noise"].as_f64().unwrap() >= 0.0);
+    assert!(std::fs::read_to_string(d.join("p.svg")).unwrap().contains("RMSE"));
+    std::fs::remove_dir_all(&d).ok();
+}

@@ -55,6 +55,63 @@ pub fn vpl_reference(ctx: &VplContext, cache_dir: Option<&Path>) -> Result<(Imag
     Ok((frame.image, false))
 }
 
+/// A path-tracing reference and an estimate of its own noise.
+pub struct PtReference {
+    /// The image.
+    pub image: Image,
+    /// Estimated RMSE of the reference against the truth: it is rendered as
+    /// two independent halves, and `RMSE(half₁, half₂)/2` estimates the
+    /// noise of their mean. A method's RMSE near this is limited by the
+    /// reference, not by the method.
+    pub noise: f64,
+    /// Whether it came from the cache.
+    pub cached: bool,
+}
+
+/// The path-tracing reference of `pts` at `width × height`: `spp` passes of
+/// `settings` in two halves with different seeds, cached in `cache_dir` by
+/// a hash of scene, lights, size and settings.
+pub fn pt_reference(
+    pts: &mut crate::pt::PtScene,
+    width: u32,
+    height: u32,
+    settings: &crate::pt::PtSettings,
+    spp: u32,
+    cache_dir: Option<&Path>,
+) -> Result<PtReference, RenderError> {
+    let s = pts.scene();
+    let mut h = fnv(&VERSION.to_le_bytes(), 0x5bd1_e995_0000_0001);
+    for t in &s.triangles {
+        for v in t {
+            h = fnv(bytemuck::cast_slice(&v.to_array()), h);
+        }
+    }
+    h = fnv(bytemuck::cast_slice(&s.material_of), h);
+    h = fnv(format!("{:?}{:?}{:?}{:?}{}x{}x{}", s.materials, s.camera, pts.lights_debug(), settings, width, height, spp).as_bytes(), h);
+    let paths = cache_dir.map(|d| (d.join(format!("pt-reference-{h:016x}-a.bin")), d.join(format!("pt-reference-{h:016x}-b.bin"))));
+    let cached = paths.as_ref().and_then(|(a, b)| Some((read_raw(a)?, read_raw(b)?)));
+    let (a, b, from_cache) = match cached {
+        Some((a, b)) if (a.width, a.height) == (width, height) => (a, b, true),
+        _ => {
+            let mut half = |seed: u32| -> Result<Image, RenderError> {
+                let mut acc = crate::pt::PtRender::new(width, height);
+                pts.render(&mut acc, &crate::pt::PtSettings { seed, ..*settings }, spp.div_ceil(2))?;
+                Ok(acc.image())
+            };
+            let a = half(settings.seed)?;
+            let b = half(settings.seed ^ 0x9E37_79B9)?;
+            if let Some((pa, pb)) = &paths {
+                write_raw(pa, &a).map_err(|e| RenderError::Setting(e.to_string()))?;
+                write_raw(pb, &b).map_err(|e| RenderError::Setting(e.to_string()))?;
+            }
+            (a, b, false)
+        }
+    };
+    let noise = a.rmse(&b) / 2.0;
+    let image = Image { width, height, data: a.data.iter().zip(&b.data).map(|(x, y)| (*x + *y) * 0.5).collect() };
+    Ok(PtReference { image, noise, cached: from_cache })
+}
+
 fn read_raw(path: &Path) -> Option<Image> {
     let bytes = std::fs::read(path).ok()?;
     let (head, body) = bytes.split_at_checked(8)?;

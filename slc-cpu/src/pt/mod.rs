@@ -144,6 +144,11 @@ impl PtScene {
     pub fn scene(&self) -> &Scene {
         &self.scene
     }
+
+    /// The lights, as text (for cache keys).
+    pub fn lights_debug(&self) -> String {
+        format!("{:?}", self.lights)
+    }
 }
 
 /// Emitted power used by the `power` method (max channel): triangle `π L A`,
