@@ -394,6 +394,11 @@ impl IesProfile {
             max_candela: 0.0,
         };
         p.build_table(scale);
+        if !p.max_candela.is_finite() {
+            // Finite multipliers and candela values can still overflow f32
+            // together (found by fuzz/ies_parse).
+            return Err(IesError { line: ptype_line, kind: K::OutOfRange { field: "candela values times multipliers", value: p.max_candela } });
+        }
         Ok(p)
     }
 

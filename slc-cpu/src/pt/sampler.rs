@@ -20,7 +20,8 @@ impl AliasTable {
         let mut alias = vec![0; n];
         let mut scaled: Vec<f64> = pdf.iter().map(|p| p * n as f64).collect();
         let (mut small, mut large): (Vec<usize>, Vec<usize>) = (0..n).partition(|&i| scaled[i] < 1.0);
-        while let (Some(s), Some(&l)) = (small.pop(), large.last()) {
+        while !small.is_empty() && !large.is_empty() {
+            let (s, l) = (small.pop().expect("non-empty"), *large.last().expect("non-empty"));
             prob[s] = scaled[s];
             alias[s] = l;
             scaled[l] -= 1.0 - scaled[s];
