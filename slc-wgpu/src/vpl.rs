@@ -5,9 +5,8 @@
 
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
-use slc_core::light::INV_PI;
 use slc_core::range::random_range2;
-use slc_cpu::vpl::{PERIOD, Shaded, VplContext, VplFrame, VplMethod, VplSettings};
+use slc_cpu::vpl::{PERIOD, Shaded, VplContext, VplFrame, VplMethod, VplSettings, vpl_threshold_range2};
 use slc_shared_shaders::layout::{FrameParams, GpuLight, LIGHT_VPL, VplParams};
 use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, generate};
 use std::time::Instant;
@@ -42,7 +41,6 @@ pub struct GpuVpl<'a> {
     r2: wgpu::Buffer,
     irradiance: wgpu::Buffer,
     readback: wgpu::Buffer,
-    table: wgpu::Buffer,
     update: wgpu::ComputePipeline,
     update_layout: wgpu::BindGroupLayout,
     tiled: Vec<(VplMethod, Layout)>,
@@ -109,12 +107,10 @@ impl<'a> GpuVpl<'a> {
         gpu.require("max_storage_buffer_binding_size (G-buffer)", w as u64 * h as u64 * 16, max_binding)?;
         gpu.require("max_storage_buffer_binding_size (lights)", n * 64, max_binding)?;
         let sub_w = w.div_ceil(PERIOD);
-        let sub_h = h.div_ceil(PERIOD);
         gpu.require("max_compute_workgroups_per_dimension", sub_w.div_ceil(TILE).max(w.div_ceil(TILE)) as u64, lim.max_compute_workgroups_per_dimension as u64)?;
         gpu.require("max_compute_workgroups_per_dimension (light update)", n.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
         let wg_bytes = 32 * TILE * TILE + 4 * per_subset + 4;
         gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes as u64, lim.max_compute_workgroup_storage_size as u64)?;
-        let _ = sub_h;
 
         let pos: Vec<[f32; 4]> = (0..gb.position.len())
             .map(|i| {
@@ -181,7 +177,6 @@ impl<'a> GpuVpl<'a> {
             r2: storage(gpu, "r2", bytemuck::cast_slice(&zeros), wgpu::BufferUsages::empty()),
             irradiance,
             readback,
-            table: storage(gpu, "slc_table", bytemuck::cast_slice(&[0.0f32; 4]), wgpu::BufferUsages::empty()),
             update,
             update_layout,
             tiled,
@@ -201,7 +196,7 @@ impl<'a> GpuVpl<'a> {
         let n = self.flux.len();
         // Threshold ranges on the host with the core's function; r² on the GPU.
         let rt2: Vec<f32> = match settings.method {
-            VplMethod::Slc => self.flux.iter().map(|&f| params.threshold_range2(f * INV_PI)).collect(),
+            VplMethod::Slc => self.flux.iter().map(|&f| vpl_threshold_range2(&params, f)).collect(),
             _ => vec![0.0; n],
         };
         gpu.queue.write_buffer(&self.rt2, 0, bytemuck::cast_slice(&rt2));
@@ -259,7 +254,6 @@ impl<'a> GpuVpl<'a> {
         gpu.queue.submit([enc.finish()]);
         gpu.wait()?;
         let shading_ms = t.elapsed().as_secs_f64() * 1e3;
-        let _ = &self.table;
 
         let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("readback") });
         enc.copy_buffer_to_buffer(&self.irradiance, 0, &self.readback, 0, self.readback.size());

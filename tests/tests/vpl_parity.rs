@@ -27,6 +27,13 @@ fn cpu_ctx() -> &'static VplContext {
     C.get_or_init(|| VplContext::new(&Scene::cornell_box(), 64, 48, 64, None).unwrap())
 }
 
+/// The GPU scene for [`cpu_ctx`], uploaded once for all tests.
+fn gpu_vpl() -> Option<&'static GpuVpl<'static>> {
+    static G: OnceLock<GpuVpl<'static>> = OnceLock::new();
+    let g = gpu()?;
+    Some(G.get_or_init(|| GpuVpl::new(g, cpu_ctx()).unwrap()))
+}
+
 fn settings(method: VplMethod) -> VplSettings {
     VplSettings { method, denoise: false, error_bound: 0.004, range: 0.08, ..VplSettings::default() }
 }
@@ -60,9 +67,8 @@ fn compare(cpu: &Shaded, gpu: &Shaded, ctx: &VplContext) -> Compared {
 
 #[test]
 fn shading_matches_cpu_for_every_method() {
-    let Some(g) = gpu() else { return };
+    let Some(gv) = gpu_vpl() else { return };
     let ctx = cpu_ctx();
-    let gv = GpuVpl::new(g, ctx).unwrap();
     for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None, VplMethod::Reference] {
         let s = settings(method);
         let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(ctx, &s).unwrap());
@@ -82,11 +88,8 @@ proptest! {
     /// decisions and sums on both backends.
     #[test]
     fn random_settings_agree(seed in any::<u32>(), frame in 0u32..1000, log_eps in -4.0f32..-1.0, range in 0.01f32..0.5, clamp in any::<bool>()) {
-        let Some(g) = gpu() else { return Ok(()) };
-        static GV: OnceLock<usize> = OnceLock::new();
-        let _ = GV;
+        let Some(gv) = gpu_vpl() else { return Ok(()) };
         let ctx = cpu_ctx();
-        let gv = GpuVpl::new(g, ctx).unwrap();
         let s = VplSettings {
             method: if clamp { VplMethod::Clamp } else { VplMethod::Slc },
             seed, frame, error_bound: 10f32.powf(log_eps), range, denoise: false, ..VplSettings::default()
@@ -101,9 +104,8 @@ proptest! {
 /// End to end (denoise on): the same image from both backends.
 #[test]
 fn images_match_end_to_end() {
-    let Some(g) = gpu() else { return };
+    let Some(gv) = gpu_vpl() else { return };
     let ctx = cpu_ctx();
-    let gv = GpuVpl::new(g, ctx).unwrap();
     for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
         let s = VplSettings { denoise: true, ..settings(method) };
         let a = ctx.render(&s).unwrap().image;
@@ -119,9 +121,8 @@ fn images_match_end_to_end() {
 /// all-kept frame).
 #[test]
 fn gpu_expectation_equals_unculled() {
-    let Some(g) = gpu() else { return };
+    let Some(gv) = gpu_vpl() else { return };
     let ctx = cpu_ctx();
-    let gv = GpuVpl::new(g, ctx).unwrap();
     let none = gv.shade(ctx, &settings(VplMethod::None)).unwrap();
     let fixed = |x: f32| VplSettings { fixed_xi: Some(x), ..settings(VplMethod::Slc) };
     let all = gv.shade(ctx, &fixed(slc_core::range::Xi::MAX.get())).unwrap();
@@ -163,9 +164,8 @@ fn too_many_vpls_per_subset_is_a_limit_error() {
 /// with the CPU and no pixel is NaN or infinite.
 #[test]
 fn hard_cases_agree() {
-    let Some(g) = gpu() else { return };
+    let Some(gv) = gpu_vpl() else { return };
     let ctx = cpu_ctx();
-    let gv = GpuVpl::new(g, ctx).unwrap();
     let xi_max = slc_core::range::Xi::MAX.get();
     for (eps, xi) in [(1e-30f32, None), (1e30, None), (1e30, Some(xi_max)), (0.004, Some(0.0)), (0.004, Some(xi_max)), (f32::MAX, Some(xi_max))] {
         let s = VplSettings { error_bound: eps, fixed_xi: xi, ..settings(VplMethod::Slc) };

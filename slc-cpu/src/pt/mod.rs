@@ -170,12 +170,6 @@ struct Pass {
     spheres: Vec<Sphere>,
 }
 
-/// A light sample for NEE at one vertex.
-struct Sampled {
-    /// Contribution `f·Le·G/pdf` to radiance (already weighted by MIS, RR and selection).
-    radiance: Vec3,
-}
-
 /// Accumulated progressive render.
 pub struct PtRender {
     /// Sum of per-pass radiance.
@@ -285,7 +279,7 @@ impl PtScene {
     /// weighted by `extra` (RR and reservoir weights), with the MIS weight
     /// against BSDF sampling for area lights.
     #[allow(clippy::too_many_arguments)]
-    fn connect(&self, s: &PtSettings, st: &Pass, l: usize, x: Vec3, n: Vec3, rho: Vec3, rng: &mut Pcg32, seen: u32, rr: bool, extra: f32) -> Option<Sampled> {
+    fn connect(&self, s: &PtSettings, st: &Pass, l: usize, x: Vec3, n: Vec3, rho: Vec3, rng: &mut Pcg32, seen: u32, rr: bool, extra: f32) -> Option<Vec3> {
         let light = &self.lights[l];
         let (u1, u2) = (xi_from_bits(rng.next_u32()), xi_from_bits(rng.next_u32()));
         let y = match light {
@@ -323,7 +317,7 @@ impl PtScene {
             PtMethod::Power => self.power.pdf(l) as f32,
             _ => 1.0,
         };
-        Some(Sampled { radiance: rho * INV_PI * i * (cos_x * inverse_square(d2) * weight * extra * mis / select) })
+        Some(rho * INV_PI * i * (cos_x * inverse_square(d2) * weight * extra * mis / select))
     }
 
     /// Next-event estimate at `x`; returns the radiance and the number of
@@ -337,7 +331,7 @@ impl PtScene {
                 let seen = cand.len() as u32;
                 for l in cand {
                     if let Some(c) = self.connect(s, st, l as usize, x, n, rho, rng, seen, true, 1.0) {
-                        sum += c.radiance;
+                        sum += c;
                     }
                 }
                 (sum, seen)
@@ -348,7 +342,7 @@ impl PtScene {
                 let (seen, w) = (res.seen(), res.weight());
                 for &l in res.picks() {
                     if let Some(c) = self.connect(s, st, l as usize, x, n, rho, rng, seen, true, w) {
-                        sum += c.radiance;
+                        sum += c;
                     }
                 }
                 (sum, seen)
@@ -361,7 +355,7 @@ impl PtScene {
                     self.power.sample(u as f64, xi_from_bits(rng.next_u32()) as f64)
                 };
                 if let Some(c) = self.connect(s, st, l, x, n, rho, rng, 0, false, 1.0) {
-                    sum += c.radiance;
+                    sum += c;
                 }
                 (sum, self.lights.len() as u32)
             }

@@ -98,6 +98,12 @@ impl Default for VplSettings {
     }
 }
 
+/// `r_t²` of a VPL of (interleave-scaled) flux `Φ`: its peak intensity is
+/// `Φ/π` (cosine lobe), shared by the CPU and GPU backends.
+pub fn vpl_threshold_range2(params: &RangeParams, flux: Vec3) -> f32 {
+    params.threshold_range2(flux * INV_PI)
+}
+
 /// Interleaving period (8×8 subsets, as in the paper).
 pub const PERIOD: u32 = 8;
 
@@ -332,7 +338,7 @@ impl VplContext {
                             let flux = v.flux[i] * scale;
                             let (rt2, r2) = match cull {
                                 Cull::Slc => {
-                                    let rt2 = params.threshold_range2(flux * INV_PI);
+                                    let rt2 = vpl_threshold_range2(params, flux);
                                     (rt2, random_range2(rt2, s.fixed_xi.unwrap_or_else(|| xi_for(s.seed, s.frame, i as u32))))
                                 }
                                 Cull::Clamp => (0.0, s.range * s.range),
