@@ -45,6 +45,9 @@ pub struct GpuVpl<'a> {
     update_layout: wgpu::BindGroupLayout,
     tiled: Vec<(VplMethod, Layout)>,
     tiled_layout: wgpu::BindGroupLayout,
+    /// One frame at a time: a frame writes the shared range, irradiance and
+    /// readback buffers, so concurrent `shade` calls would race.
+    frame: std::sync::Mutex<()>,
 }
 
 fn storage(gpu: &GpuContext, label: &str, bytes: &[u8], extra: wgpu::BufferUsages) -> wgpu::Buffer {
@@ -181,16 +184,19 @@ impl<'a> GpuVpl<'a> {
             update_layout,
             tiled,
             tiled_layout,
+            frame: std::sync::Mutex::new(()),
         };
         gpu.wait()?;
         Ok(s)
     }
 
     /// Indirect irradiance on the GPU for `settings` (same ξ as the CPU:
-    /// `xi_for(seed, frame, VPL index)`); `fixed_xi` ranges are computed on
+    /// `xi_for(seed, frame, VPL index)`); calls from several threads are
+    /// serialised, one frame at a time; `fixed_xi` ranges are computed on
     /// the host. `shading_ms` is the wall time of the submitted kernels.
     pub fn shade(&self, cpu: &VplContext, settings: &VplSettings) -> Result<Shaded, GpuError> {
         let params = cpu.check(settings).map_err(|e| GpuError::Setting(e.to_string()))?;
+        let _frame = self.frame.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
         let gpu = self.gpu;
         let (_, layout) = self.tiled.iter().find(|(m, _)| *m == settings.method).ok_or(GpuError::Setting("unknown method".into()))?;
         let n = self.flux.len();
