@@ -251,7 +251,7 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
         .map_err(|e| e.to_string())?;
     let (reference, cached) = (r.image, r.cached);
     let mut runs = Vec::new();
-    for method in [PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::Uniform, PtMethod::Power] {
+    for method in PtMethod::ALL {
         bar.set_message(format!("{} for {} s", method.name(), a.seconds));
         bar.tick();
         let s = PtSettings { method, error_bound: eps, seed: a.seed, ..PtSettings::default() };

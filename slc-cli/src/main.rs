@@ -130,13 +130,10 @@ fn vpl_method(name: &str) -> Result<VplMethod, String> {
 /// A path-tracing method name.
 fn pt_method(name: &str) -> Result<slc_cpu::pt::PtMethod, String> {
     use slc_cpu::pt::PtMethod;
-    match name {
-        "slc" => Ok(PtMethod::Slc),
-        "slc-reservoir" => Ok(PtMethod::SlcReservoir),
-        "uniform" => Ok(PtMethod::Uniform),
-        "power" => Ok(PtMethod::Power),
-        m => Err(format!("method '{m}' is not one of slc, slc-reservoir, uniform, power (--app pt)")),
-    }
+    PtMethod::ALL.into_iter().find(|m| m.name() == name).ok_or_else(|| {
+        let names: Vec<&str> = PtMethod::ALL.iter().map(|m| m.name()).collect();
+        format!("method '{name}' is not one of {} (--app pt)", names.join(", "))
+    })
 }
 
 /// Scene and image options shared by render and bench. Values resolve as:
@@ -220,7 +217,7 @@ struct RenderArgs {
     #[command(flatten)]
     scene: SceneArgs,
     /// Method: slc | clamp | none | reference (vpl); slc | slc-reservoir |
-    /// uniform | power (pt) [default: slc].
+    /// uniform | power | lightbvh (pt) [default: slc].
     #[arg(long)]
     method: Option<String>,
     /// Path tracing: samples per pixel [default: 16].

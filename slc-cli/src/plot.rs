@@ -52,6 +52,7 @@ pub fn method_color(method: &str) -> RGBColor {
         "slc-reservoir" => RGBColor(148, 103, 189),
         "uniform" => RGBColor(255, 127, 14),
         "power" => RGBColor(140, 86, 75),
+        "lightbvh" => RGBColor(227, 119, 194),
         _ => RGBColor(44, 160, 44),
     }
 }

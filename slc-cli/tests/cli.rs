@@ -224,7 +224,7 @@ fn gpu_backend_renders_like_cpu() {
 #[test]
 fn path_tracer_renders() {
     let d = tempdir("pt");
-    for m in ["slc", "slc-reservoir", "uniform", "power"] {
+    for m in ["slc", "slc-reservoir", "uniform", "power", "lightbvh"] {
         let out = format!("pt-{m}.exr");
         let text = ok(&d, &["render", "--app", "pt", "--method", m, "--width", "24", "--height", "24", "--spp", "2", "--out", &out]);
         assert!(text.contains("path tracing") && text.contains("2 samples per pixel"), "{text}");

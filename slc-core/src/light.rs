@@ -209,6 +209,14 @@ impl SpotLight {
     pub fn position(&self) -> Vec3 {
         self.position
     }
+    /// Unit axis direction.
+    pub fn direction(&self) -> Vec3 {
+        self.direction
+    }
+    /// Cosines of the cut-off and full-intensity half-angles `(cos θ_outer, cos θ_inner)`.
+    pub fn cone_cosines(&self) -> (f32, f32) {
+        (self.cos_outer, self.cos_inner)
+    }
 }
 
 /// IES (LM-63) light: tabulated candela, bilinear lookup (see [`crate::ies`]).

@@ -9,8 +9,11 @@
 //! - [`scene`], [`geometry`], [`gbuffer`], [`image`]: scenes (OBJ+MTL or the
 //!   built-in Cornell box), BVH ray casting, G-buffer, EXR/PNG output.
 //!
-//! The progressive path tracer (application B) is the subject of a later
-//! issue and not here yet.
+//! - [`pt`]: progressive path tracing with many triangle, point, spot and
+//!   IES lights: SLC over the BSH (all candidates or a k-slot reservoir),
+//!   MIS whose light pdf includes the RR probability, and the uniform,
+//!   power and light-BVH baselines on the same renderer.
+//! - [`reference`]: cached references for both applications.
 //!
 //! ```
 //! use slc_cpu::scene::Scene;

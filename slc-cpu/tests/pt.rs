@@ -41,7 +41,7 @@ fn pass_means(method: PtMethod, passes: u32) -> Vec<f64> {
     let mut pts = PtScene::new(&many_light_box(), &[]).unwrap();
     assert_eq!(pts.light_count(), 128);
     let s = PtSettings { method, error_bound: 0.05, ..PtSettings::default() };
-    let mut acc = PtRender::new(16, 16);
+    let mut acc = PtRender::new(32, 32);
     let mut prev = 0.0;
     (0..passes)
         .map(|_| {
@@ -62,7 +62,7 @@ fn slc_and_reservoir_match_uniform_in_expectation() {
     let uniform = pass_means(PtMethod::Uniform, 400);
     let (mu, su) = mean_and_sigma(&uniform);
     assert!(mu > 0.0);
-    for method in [PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::Power] {
+    for method in [PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::Power, PtMethod::LightBvh] {
         let (m, sm) = mean_and_sigma(&pass_means(method, 400));
         eprintln!("{}: {m:.5} vs uniform {mu:.5}, 5σ = {:.5}", method.name(), 5.0 * (su * su + sm * sm).sqrt());
         let bound = 5.0 * (su * su + sm * sm).sqrt();
@@ -92,7 +92,7 @@ fn zero_area_or_bad_emitters_are_errors() {
 fn renders_are_finite_and_deterministic() {
     let mut a = PtScene::new(&Scene::cornell_box(), &[]).unwrap();
     let mut b = PtScene::new(&Scene::cornell_box(), &[]).unwrap();
-    for method in [PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::Uniform, PtMethod::Power] {
+    for method in PtMethod::ALL {
         let s = PtSettings { method, ..PtSettings::default() };
         let (mut ra, mut rb) = (PtRender::new(16, 16), PtRender::new(16, 16));
         a.render(&mut ra, &s, 2).unwrap();

@@ -14,17 +14,20 @@
 //!   reservoir (weight `n/k`), exactly as the GPU kernel does.
 //! - `uniform`: one light chosen uniformly; `power`: one light chosen in
 //!   proportion to its emitted power (alias table).
+//! - `lightbvh`: one light chosen by light-BVH importance sampling
+//!   (Conty & Kulla 2018, pbrt-v4's `BVHLightSampler`; [`lightbvh`]).
 //!
 //! MIS: the light strategy's solid-angle pdf of `y` is
 //! `pdf(select) · p_rr(|x−y|) · pdf_area(y) · d²/|cos θ_y|` (talk: "Multiple
 //! importance sampling"), with `p_rr = 1` for the baselines and
 //! `pdf(select)` = 1 (slc), `min(k/n, 1)` (reservoir), `1/N` (uniform),
-//! `Φᵢ/ΣΦ` (power). These pdfs must not depend on the light's own ξ: a
+//! `Φᵢ/ΣΦ` (power), the tree's pmf at `(x, n)` (lightbvh). These pdfs must not depend on the light's own ξ: a
 //! weight that is 0 when this pass's sphere misses `x` makes the two
 //! strategies' weights sum to more than one in expectation (the test against
 //! uniform sampling caught a 40% bias from exactly that). Point-like lights
 //! are delta lights (weight 1).
 
+pub mod lightbvh;
 pub mod sampler;
 
 use crate::RenderError;
@@ -35,6 +38,7 @@ use glam::Vec3;
 use rand_core::RngCore;
 use rand_pcg::Pcg32;
 use rayon::prelude::*;
+use lightbvh::LightBvh;
 use sampler::AliasTable;
 use slc_core::bsh::Bsh;
 use slc_core::light::{INV_PI, Light, LightBound, TriangleLight, area_to_solid_angle_pdf, inverse_square};
@@ -59,6 +63,8 @@ pub enum PtMethod {
     Uniform,
     /// One light, in proportion to its power.
     Power,
+    /// One light, by light-BVH importance sampling.
+    LightBvh,
 }
 
 impl PtMethod {
@@ -69,8 +75,12 @@ impl PtMethod {
             PtMethod::SlcReservoir => "slc-reservoir",
             PtMethod::Uniform => "uniform",
             PtMethod::Power => "power",
+            PtMethod::LightBvh => "lightbvh",
         }
     }
+
+    /// Every method, in report order.
+    pub const ALL: [PtMethod; 5] = [PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::Uniform, PtMethod::Power, PtMethod::LightBvh];
 }
 
 /// Settings of a path-traced render.
@@ -105,6 +115,7 @@ pub struct PtScene {
     /// Light index of each emissive triangle (u32::MAX for others).
     light_of_triangle: Vec<u32>,
     power: AliasTable,
+    light_bvh: LightBvh,
     bsh: Bsh,
 }
 
@@ -132,7 +143,8 @@ impl PtScene {
         let bounds: Vec<LightBound> = lights.iter().map(Light::bound).collect();
         let bsh = Bsh::build(&bounds).map_err(|e| RenderError::Setting(e.to_string()))?;
         let power = AliasTable::new(&lights.iter().map(light_power).collect::<Vec<f64>>());
-        Ok(PtScene { scene: scene.clone(), geo: Geometry::new(&scene.triangles), lights, bounds, light_of_triangle, power, bsh })
+        let light_bvh = LightBvh::new(&lights);
+        Ok(PtScene { scene: scene.clone(), geo: Geometry::new(&scene.triangles), lights, bounds, light_of_triangle, power, light_bvh, bsh })
     }
 
     /// Number of lights.
@@ -249,9 +261,10 @@ impl PtScene {
     /// `p_rr(|x−y|) · pdf_area`, the probability over ξ; the reservoir also
     /// selects with `min(k/n, 1)`, `n` = the other in-range lights at `x`
     /// plus this one (`seen` counts in-range lights at `x`; `in_nee` says
-    /// the light is known to be one of them).
+    /// the light is known to be one of them). `n` is the normal at `x`
+    /// (the light BVH's importance uses it).
     #[allow(clippy::too_many_arguments)]
-    fn light_pdf(&self, s: &PtSettings, st: &Pass, l: usize, x: Vec3, y: Vec3, seen: u32, in_nee: bool) -> f32 {
+    fn light_pdf(&self, s: &PtSettings, st: &Pass, l: usize, x: Vec3, n: Vec3, y: Vec3, seen: u32, in_nee: bool) -> f32 {
         let Light::Triangle(t) = &self.lights[l] else { return 0.0 };
         let v = x - y;
         let d2 = v.length_squared();
@@ -270,14 +283,16 @@ impl PtScene {
             }
             PtMethod::Uniform => 1.0 / self.lights.len() as f32,
             PtMethod::Power => self.power.pdf(l) as f32,
+            PtMethod::LightBvh => self.light_bvh.pmf(x, n, l),
         };
         select * area_to_solid_angle_pdf(1.0 / t.area(), d2, cos_y)
     }
 
     /// Contribution of light `l` at `x` (normal `n`, albedo `rho`) through a
-    /// sampled point, divided by `select` (the selection probability) and
-    /// weighted by `extra` (RR and reservoir weights), with the MIS weight
-    /// against BSDF sampling for area lights.
+    /// sampled point, weighted by `extra` (the reservoir weight, or 1/the
+    /// selection probability of the one-light methods) and, when `rr`, by
+    /// the RR weight `1/p`, with the MIS weight against BSDF sampling for
+    /// area lights.
     #[allow(clippy::too_many_arguments)]
     fn connect(&self, s: &PtSettings, st: &Pass, l: usize, x: Vec3, n: Vec3, rho: Vec3, rng: &mut Pcg32, seen: u32, rr: bool, extra: f32) -> Option<Vec3> {
         let light = &self.lights[l];
@@ -309,15 +324,10 @@ impl PtScene {
         }
         let weight = if rr { slc_weight(st.rt2[l], d2) } else { 1.0 };
         let mis = match light {
-            Light::Triangle(_) => mis_power(self.light_pdf(s, st, l, x, y, seen, true), cosine_pdf(cos_x)),
+            Light::Triangle(_) => mis_power(self.light_pdf(s, st, l, x, n, y, seen, true), cosine_pdf(cos_x)),
             _ => 1.0,
         };
-        let select = match s.method {
-            PtMethod::Uniform => 1.0 / self.lights.len() as f32,
-            PtMethod::Power => self.power.pdf(l) as f32,
-            _ => 1.0,
-        };
-        Some(rho * INV_PI * i * (cos_x * inverse_square(d2) * weight * extra * mis / select))
+        Some(rho * INV_PI * i * (cos_x * inverse_square(d2) * weight * extra * mis))
     }
 
     /// Next-event estimate at `x`; returns the radiance and the number of
@@ -347,14 +357,22 @@ impl PtScene {
                 }
                 (sum, seen)
             }
-            PtMethod::Uniform | PtMethod::Power => {
+            PtMethod::Uniform | PtMethod::Power | PtMethod::LightBvh => {
                 let u = xi_from_bits(rng.next_u32());
-                let l = if s.method == PtMethod::Uniform {
-                    ((u * self.lights.len() as f32) as usize).min(self.lights.len() - 1)
-                } else {
-                    self.power.sample(u as f64, xi_from_bits(rng.next_u32()) as f64)
+                let picked = match s.method {
+                    PtMethod::Uniform => {
+                        let n = self.lights.len();
+                        Some(((u * n as f32) as usize).min(n - 1)).map(|l| (l, 1.0 / n as f32))
+                    }
+                    PtMethod::Power => {
+                        let l = self.power.sample(u as f64, xi_from_bits(rng.next_u32()) as f64);
+                        Some((l, self.power.pdf(l) as f32))
+                    }
+                    _ => self.light_bvh.sample(x, n, u),
                 };
-                if let Some(c) = self.connect(s, st, l, x, n, rho, rng, 0, false, 1.0) {
+                if let Some((l, select)) = picked.filter(|&(_, p)| p > 0.0)
+                    && let Some(c) = self.connect(s, st, l, x, n, rho, rng, 0, false, 1.0 / select)
+                {
                     sum += c;
                 }
                 (sum, self.lights.len() as u32)
@@ -372,8 +390,8 @@ impl PtScene {
         let mut beta = Vec3::ONE;
         let mut radiance = Vec3::ZERO;
         let diag = self.scene.diagonal();
-        // Previous vertex for MIS at implicit hits: (x, in-range lights, bsdf pdf).
-        let mut prev: Option<(Vec3, u32, f32)> = None;
+        // Previous vertex for MIS at implicit hits: (x, n, in-range lights, bsdf pdf).
+        let mut prev: Option<(Vec3, Vec3, u32, f32)> = None;
         for depth in 0..s.max_depth {
             let Some(hit) = self.geo.intersect(org, dir, 1e-6 * diag, f32::INFINITY) else { break };
             let x = org + dir * hit.t;
@@ -387,8 +405,8 @@ impl PtScene {
                 let le = mat.emission;
                 match prev {
                     None => radiance += beta * le,
-                    Some((xp, seen, pdf_bsdf)) => {
-                        let pdf_light = self.light_pdf(s, st, l as usize, xp, x, seen, false);
+                    Some((xp, np, seen, pdf_bsdf)) => {
+                        let pdf_light = self.light_pdf(s, st, l as usize, xp, np, x, seen, false);
                         radiance += beta * le * mis_power(pdf_bsdf, pdf_light);
                     }
                 }
@@ -407,7 +425,7 @@ impl PtScene {
                 break;
             }
             beta *= mat.albedo;
-            prev = Some((x, seen, cosine_pdf(cos)));
+            prev = Some((x, n, seen, cosine_pdf(cos)));
             org = x + n * 1e-5 * diag;
             dir = nd;
             // Russian roulette on path length from the third bounce.
@@ -420,5 +438,46 @@ impl PtScene {
             }
         }
         radiance
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// For a triangle light reachable by both strategies, the light
+    /// strategy's MIS weight (as `connect` computes it) and the BSDF
+    /// strategy's (as an implicit hit computes it) sum to one, for every
+    /// method: both use the same ξ-independent light pdf.
+    #[test]
+    fn mis_weights_sum_to_one() {
+        let mut pts = PtScene::new(&Scene::cornell_box(), &[]).unwrap();
+        let (x, n) = (Vec3::new(0.3, 0.0, 0.3), Vec3::Y);
+        let params = RangeParams::new(0.05, 1.0).unwrap();
+        let st = pts.pass_state(&params, 7, 0).unwrap();
+        let mut checked = 0;
+        for method in PtMethod::ALL {
+            let s = PtSettings { method, error_bound: 0.05, ..PtSettings::default() };
+            for l in 0..pts.light_count() {
+                let Light::Triangle(t) = &pts.lights[l] else { continue };
+                if !st.spheres[l].contains(x) {
+                    continue; // the reservoir's per-sample identity needs the light in range
+                }
+                let mut seen = 0;
+                pts.bsh.for_each_containing(x, |_| seen += 1);
+                for (u1, u2) in [(0.1, 0.2), (0.5, 0.5), (0.9, 0.05)] {
+                    let y = t.sample(u1, u2);
+                    let cos_x = n.dot((y - x).normalize());
+                    let p_light_nee = pts.light_pdf(&s, &st, l, x, n, y, seen, true);
+                    let p_light_hit = pts.light_pdf(&s, &st, l, x, n, y, seen, false);
+                    assert!(p_light_nee > 0.0 && cos_x > 0.0, "{}", method.name());
+                    let w_light = mis_power(p_light_nee, cosine_pdf(cos_x));
+                    let w_bsdf = mis_power(cosine_pdf(cos_x), p_light_hit);
+                    assert!((w_light + w_bsdf - 1.0).abs() < 1e-6, "{}: {w_light} + {w_bsdf}", method.name());
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked >= 2 * PtMethod::ALL.len() * 3, "{checked} cases");
     }
 }
