@@ -171,8 +171,19 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
     if let Some(plot) = &a.plot {
         crate::plot::speed_vs_error(&report, plot)?;
     }
-    println!("{} {}x{}, {} VPLs, {} threads (reference {})", report.scene, report.width, report.height, report.lights, report.threads, if cached { "from cache" } else { "rendered" });
-    println!("{:<8} {:>8} {:>11} {:>10} {:>9} {:>9} {:>9} {:>10}", "method", "param", "shading ms", "total ms", "rmse", "lights/px", "kept/px", "evals/s");
+    println!(
+        "{} {}x{}, {} VPLs, {} threads (reference {})",
+        report.scene,
+        report.width,
+        report.height,
+        report.lights,
+        report.threads,
+        if cached { "from cache" } else { "rendered" }
+    );
+    println!(
+        "{:<8} {:>8} {:>11} {:>10} {:>9} {:>9} {:>9} {:>10}",
+        "method", "param", "shading ms", "total ms", "rmse", "lights/px", "kept/px", "evals/s"
+    );
     for r in &report.runs {
         println!(
             "{:<8} {:>8} {:>11.2} {:>10.2} {:>9.5} {:>9.1} {:>9.1} {:>10.3e}",
@@ -247,8 +258,7 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
     let bar = ProgressBar::new_spinner();
     bar.set_message(format!("reference: {} spp of power sampling", a.reference_spp));
     bar.tick();
-    let r = slc_cpu::reference::pt_reference(&mut pts, w, h, &ref_settings, a.reference_spp, Some(&a.cache_dir))
-        .map_err(|e| e.to_string())?;
+    let r = slc_cpu::reference::pt_reference(&mut pts, w, h, &ref_settings, a.reference_spp, Some(&a.cache_dir)).map_err(|e| e.to_string())?;
     let (reference, cached) = (r.image, r.cached);
     let mut runs = Vec::new();
     for method in PtMethod::ALL {
@@ -299,7 +309,14 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
     let uniform = report.runs.iter().find(|r| r.method == "uniform").map_or(f64::NAN, |r| r.rmse);
     println!(
         "{} {}x{}, {} lights, {:.1} s per method (reference {} {}, its own RMSE about {:.5})",
-        report.scene, w, h, report.lights, a.seconds, report.reference, if cached { "from cache" } else { "rendered" }, report.reference_noise
+        report.scene,
+        w,
+        h,
+        report.lights,
+        a.seconds,
+        report.reference,
+        if cached { "from cache" } else { "rendered" },
+        report.reference_noise
     );
     println!("{:<14} {:>8} {:>10} {:>6} {:>10} {:>16}", "method", "param", "time ms", "spp", "rmse", "uniform/method");
     for r in &report.runs {

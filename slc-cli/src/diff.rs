@@ -82,9 +82,10 @@ pub fn run(a: DiffArgs) -> Result<(), String> {
         println!("  heat map        {} (yellow = {:.6})", out.display(), max);
     }
     if let Some(limit) = a.max_rmse
-        && (s.rmse.partial_cmp(&limit) != Some(std::cmp::Ordering::Less) && s.rmse != limit || s.nonfinite != (0, 0)) {
-            println!("  FAIL: RMSE {:.6} over --max-rmse {limit} (or non-finite values)", s.rmse);
-            std::process::exit(1);
-        }
+        && (s.rmse.partial_cmp(&limit) != Some(std::cmp::Ordering::Less) && s.rmse != limit || s.nonfinite != (0, 0))
+    {
+        println!("  FAIL: RMSE {:.6} over --max-rmse {limit} (or non-finite values)", s.rmse);
+        std::process::exit(1);
+    }
     Ok(())
 }

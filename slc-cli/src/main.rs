@@ -433,13 +433,19 @@ fn ies(path: &Path, plot_path: Option<&Path>) -> Result<(), String> {
     println!("{}", path.display());
     println!("  format              {:?}", p.format);
     println!("  photometric type    {:?}", p.photometric_type);
-    println!("  tilt                {}", match &p.tilt {
-        slc_core::ies::Tilt::None => "NONE".to_string(),
-        slc_core::ies::Tilt::Include { angles, .. } => format!("INCLUDE ({} angles, not applied)", angles.len()),
-        slc_core::ies::Tilt::File(f) => format!("file {f} (not applied)"),
-    });
+    println!(
+        "  tilt                {}",
+        match &p.tilt {
+            slc_core::ies::Tilt::None => "NONE".to_string(),
+            slc_core::ies::Tilt::Include { angles, .. } => format!("INCLUDE ({} angles, not applied)", angles.len()),
+            slc_core::ies::Tilt::File(f) => format!("file {f} (not applied)"),
+        }
+    );
     println!("  lamps               {}", p.lamps);
-    println!("  lumens per lamp     {}", if p.lumens_per_lamp < 0.0 { "-1 (absolute photometry)".to_string() } else { p.lumens_per_lamp.to_string() });
+    println!(
+        "  lumens per lamp     {}",
+        if p.lumens_per_lamp < 0.0 { "-1 (absolute photometry)".to_string() } else { p.lumens_per_lamp.to_string() }
+    );
     println!("  candela multiplier  {}", p.multiplier);
     println!("  ballast factor      {}", p.ballast_factor);
     println!("  vertical angles     {} from {} to {}", p.vertical.len(), p.vertical[0], p.vertical[p.vertical.len() - 1]);

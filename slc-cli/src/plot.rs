@@ -86,10 +86,7 @@ fn speed_vs_error_on<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB,
     }
     let (tmin, tmax) = runs.iter().fold((f64::MAX, 0.0f64), |(a, b), r| (a.min(r.shading_ms), b.max(r.shading_ms)));
     let (emin, emax) = runs.iter().fold((f64::MAX, 0.0f64), |(a, b), r| (a.min(r.rmse), b.max(r.rmse)));
-    let title = format!(
-        "Speed vs error: {} {}x{}, {} lights, {} backend",
-        report.scene, report.width, report.height, report.lights, report.backend
-    );
+    let title = format!("Speed vs error: {} {}x{}, {} lights, {} backend", report.scene, report.width, report.height, report.lights, report.backend);
     let mut chart = ChartBuilder::on(root)
         .caption(title, ("sans-serif", 24))
         .margin(16)
@@ -119,8 +116,7 @@ fn speed_vs_error_on<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB,
     methods.dedup();
     for m in methods {
         let color = method_color(m);
-        let pts: Vec<(f64, f64)> =
-            runs.iter().filter(|r| r.method == m).map(|r| (r.shading_ms.log10(), r.rmse.log10())).collect();
+        let pts: Vec<(f64, f64)> = runs.iter().filter(|r| r.method == m).map(|r| (r.shading_ms.log10(), r.rmse.log10())).collect();
         let front = pareto_front(&pts);
         chart
             .draw_series(LineSeries::new(front, color.stroke_width(2)))
@@ -213,22 +209,18 @@ fn ies_polar_on<DB: DrawingBackend>(p: &slc_core::ies::IesProfile, title: &str, 
     let err = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     root.fill(&WHITE).map_err(err)?;
     let peak = (p.max_candela() as f64).max(1e-9);
-    let mut chart = ChartBuilder::on(root)
-        .caption(title, ("sans-serif", 22))
-        .margin(20)
-        .build_cartesian_2d(-1.15..1.15, -1.15..1.15)
-        .map_err(err)?;
+    let mut chart = ChartBuilder::on(root).caption(title, ("sans-serif", 22)).margin(20).build_cartesian_2d(-1.15..1.15, -1.15..1.15).map_err(err)?;
     // Rings at 25%, 50%, 75%, 100% of the peak, and 30° spokes.
     for k in 1..=4 {
         let r = k as f64 / 4.0;
-        let ring: Vec<(f64, f64)> = (0..=120).map(|i| {
-            let a = i as f64 / 120.0 * std::f64::consts::TAU;
-            (r * a.cos(), r * a.sin())
-        }).collect();
+        let ring: Vec<(f64, f64)> = (0..=120)
+            .map(|i| {
+                let a = i as f64 / 120.0 * std::f64::consts::TAU;
+                (r * a.cos(), r * a.sin())
+            })
+            .collect();
         chart.draw_series(LineSeries::new(ring, RGBColor(200, 200, 200))).map_err(err)?;
-        chart
-            .draw_series(std::iter::once(Text::new(format!("{:.0} cd", peak * r), (0.02, -r + 0.02), ("sans-serif", 14))))
-            .map_err(err)?;
+        chart.draw_series(std::iter::once(Text::new(format!("{:.0} cd", peak * r), (0.02, -r + 0.02), ("sans-serif", 14)))).map_err(err)?;
     }
     for k in 0..12 {
         let a = k as f64 * std::f64::consts::PI / 6.0;
@@ -236,11 +228,13 @@ fn ies_polar_on<DB: DrawingBackend>(p: &slc_core::ies::IesProfile, title: &str, 
     }
     let curve = |c_right: f32, c_left: f32| -> Vec<(f64, f64)> {
         // Right half: plane c_right, γ from 0 (down) to 180 (up); left half: c_left back down.
-        let mut v: Vec<(f64, f64)> = (0..=360).map(|i| {
-            let g = i as f64 * 0.5;
-            let r = p.candela_at(g as f32, c_right) as f64 / peak;
-            (r * g.to_radians().sin(), -r * g.to_radians().cos())
-        }).collect();
+        let mut v: Vec<(f64, f64)> = (0..=360)
+            .map(|i| {
+                let g = i as f64 * 0.5;
+                let r = p.candela_at(g as f32, c_right) as f64 / peak;
+                (r * g.to_radians().sin(), -r * g.to_radians().cos())
+            })
+            .collect();
         v.extend((0..=360).rev().map(|i| {
             let g = i as f64 * 0.5;
             let r = p.candela_at(g as f32, c_left) as f64 / peak;

@@ -69,10 +69,32 @@ fn render_commands() {
 #[test]
 fn bench_and_plot_commands() {
     let d = tempdir("bench");
-    let text = ok(&d, &[
-        "bench", "--width", "32", "--height", "32", "--vpls", "1024", "--repeat", "1", "--error-bounds", "0.004,0.016",
-        "--ranges", "0.05,0.2", "--json", "b.json", "--csv", "b.csv", "--plot", "b.svg", "--cache-dir", "cache",
-    ]);
+    let text = ok(
+        &d,
+        &[
+            "bench",
+            "--width",
+            "32",
+            "--height",
+            "32",
+            "--vpls",
+            "1024",
+            "--repeat",
+            "1",
+            "--error-bounds",
+            "0.004,0.016",
+            "--ranges",
+            "0.05,0.2",
+            "--json",
+            "b.json",
+            "--csv",
+            "b.csv",
+            "--plot",
+            "b.svg",
+            "--cache-dir",
+            "cache",
+        ],
+    );
     assert!(text.contains("slc") && text.contains("clamp") && text.contains("none"));
     let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("b.json")).unwrap()).unwrap();
     for key in ["app", "backend", "scene", "width", "height", "lights", "runs"] {
@@ -240,10 +262,30 @@ fn path_tracer_renders() {
 #[test]
 fn path_tracer_bench() {
     let d = tempdir("ptbench");
-    let text = ok(&d, &[
-        "bench", "--app", "pt", "--width", "16", "--height", "16", "--seconds", "0.2", "--reference-spp", "8",
-        "--json", "p.json", "--csv", "p.csv", "--plot", "p.svg", "--cache-dir", "cache",
-    ]);
+    let text = ok(
+        &d,
+        &[
+            "bench",
+            "--app",
+            "pt",
+            "--width",
+            "16",
+            "--height",
+            "16",
+            "--seconds",
+            "0.2",
+            "--reference-spp",
+            "8",
+            "--json",
+            "p.json",
+            "--csv",
+            "p.csv",
+            "--plot",
+            "p.svg",
+            "--cache-dir",
+            "cache",
+        ],
+    );
     assert!(text.contains("uniform/method"), "{text}");
     let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("p.json")).unwrap()).unwrap();
     let runs = json["runs"].as_array().unwrap();

@@ -18,10 +18,10 @@
 //!   test (leaf test = brute-force test), because every inner sphere
 //!   contains its children in f32 (see [`crate::sphere`]).
 
+use crate::BshError;
 use crate::light::LightBound;
 use crate::sphere::{Aabb, Sphere};
 use crate::wgsl::*;
-use crate::BshError;
 use alloc::vec::Vec;
 use glam::Vec3;
 
@@ -92,12 +92,16 @@ impl Bsh {
         self.nodes.push(BshNode { center: Vec3::ZERO, radius: 0.0, child: me + 1, next, light: BSH_NONE, pad: 0 });
         let b = idx.iter().fold(Aabb::EMPTY, |b, &i| b.grow(self.bounds[i as usize].center));
         let ext = b.max - b.min;
-        let axis = if ext.x >= ext.y && ext.x >= ext.z { 0 } else if ext.y >= ext.z { 1 } else { 2 };
+        let axis = if ext.x >= ext.y && ext.x >= ext.z {
+            0
+        } else if ext.y >= ext.z {
+            1
+        } else {
+            2
+        };
         let mid = idx.len() / 2;
         let bounds = &self.bounds;
-        idx.select_nth_unstable_by(mid, |&a, &b| {
-            bounds[a as usize].center[axis].total_cmp(&bounds[b as usize].center[axis])
-        });
+        idx.select_nth_unstable_by(mid, |&a, &b| bounds[a as usize].center[axis].total_cmp(&bounds[b as usize].center[axis]));
         let (left, right) = idx.split_at_mut(mid);
         // The right child's index is known only after the left subtree:
         // a subtree over m lights has 2m − 1 nodes.

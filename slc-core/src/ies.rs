@@ -22,9 +22,9 @@
 //! outside the vertical range. The lookup is shared code: the GPU runs the
 //! same function over the same flattened table ([`IesProfile::table`]).
 
-use crate::wgsl::*;
 use crate::IesError;
 use crate::IesErrorKind as K;
+use crate::wgsl::*;
 use alloc::string::{String, ToString};
 use alloc::vec::Vec;
 
@@ -303,10 +303,12 @@ impl IesProfile {
                 let v = rest.trim_start().strip_prefix('=').unwrap_or(rest).trim();
                 break (n, v);
             }
-            if format != IesFormat::Lm63_1986 && l.starts_with('[')
-                && let Some(end) = l.find(']') {
-                    keywords.push((l[1..end].to_string(), l[end + 1..].trim().to_string()));
-                }
+            if format != IesFormat::Lm63_1986
+                && l.starts_with('[')
+                && let Some(end) = l.find(']')
+            {
+                keywords.push((l[1..end].to_string(), l[end + 1..].trim().to_string()));
+            }
         };
         let mut toks = Vec::new();
         let mut last_line = tilt_line;
@@ -371,9 +373,7 @@ impl IesProfile {
             }
         }
 
-        let scale = multiplier
-            * ballast_factor
-            * if format == IesFormat::Lm63_2002 { 1.0 } else { ballast_lamp_factor };
+        let scale = multiplier * ballast_factor * if format == IesFormat::Lm63_2002 { 1.0 } else { ballast_lamp_factor };
         let mut p = IesProfile {
             format,
             keywords,

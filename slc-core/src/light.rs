@@ -8,10 +8,10 @@
 //! centred there with radius `R + r` (points: `R = 0`; triangles: `R` is the
 //! radius of the triangle's minimal sphere).
 
+use crate::LightError;
 use crate::ies::IesProfile;
 use crate::sphere::Sphere;
 use crate::wgsl::*;
-use crate::LightError;
 use alloc::sync::Arc;
 use glam::Vec3;
 
@@ -159,11 +159,7 @@ pub struct Vpl {
 impl Vpl {
     /// Position, surface normal (normalised here) and RGB flux Φ.
     pub fn new(position: Vec3, normal: Vec3, flux: Vec3) -> Result<Self, LightError> {
-        Ok(Self {
-            position: check_point("position", position)?,
-            normal: check_dir("normal", normal)?,
-            flux: check_rgb("flux", flux)?,
-        })
+        Ok(Self { position: check_point("position", position)?, normal: check_dir("normal", normal)?, flux: check_rgb("flux", flux)? })
     }
     /// Position.
     pub fn position(&self) -> Vec3 {

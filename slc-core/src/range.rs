@@ -177,11 +177,7 @@ impl RangeParams {
     /// light's constructor: finite, non-negative). May be `+∞` for huge
     /// intensities, meaning "never culled".
     pub fn threshold_range2(&self, peak: Vec3) -> f32 {
-        threshold_range2(
-            intensity_measure(peak, self.measure.mode()),
-            self.exposure,
-            self.error_bound,
-        )
+        threshold_range2(intensity_measure(peak, self.measure.mode()), self.exposure, self.error_bound)
     }
 }
 

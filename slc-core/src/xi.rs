@@ -38,7 +38,6 @@ pub fn fill_xi<R: RngCore + ?Sized>(rng: &mut R, out: &mut [f32]) {
     }
 }
 
-
 #[cfg(test)]
 mod tests {
     use super::*;

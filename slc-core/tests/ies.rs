@@ -4,16 +4,11 @@
 #[macro_use]
 mod common;
 
-use slc_core::ies::{IesFormat, IesProfile, PhotometricType, Tilt};
 use slc_core::IesErrorKind;
+use slc_core::ies::{IesFormat, IesProfile, PhotometricType, Tilt};
 
-const FILES: [&str; 5] = [
-    "absolute-led.ies",
-    "floodlight-12w-54deg.ies",
-    "indoor-60w-120deg.ies",
-    "outdoor-roadway-60w.ies",
-    "tilt-include-synthetic.ies",
-];
+const FILES: [&str; 5] =
+    ["absolute-led.ies", "floodlight-12w-54deg.ies", "indoor-60w-120deg.ies", "outdoor-roadway-60w.ies", "tilt-include-synthetic.ies"];
 
 fn load(name: &str) -> Option<(Vec<u8>, IesProfile)> {
     let path = common::shared_data(&format!("ies/{name}"))?;
@@ -53,10 +48,7 @@ fn header_facts() {
     assert_eq!(abs.candela_at(91.0, 0.0), 0.0, "outside the 0–90° vertical range");
 
     let Some((_, tilt)) = load("tilt-include-synthetic.ies") else { return };
-    assert_eq!(
-        tilt.tilt,
-        Tilt::Include { geometry: 1, angles: vec![0.0, 45.0, 90.0, 180.0], factors: vec![1.0, 0.9, 0.8, 1.0] }
-    );
+    assert_eq!(tilt.tilt, Tilt::Include { geometry: 1, angles: vec![0.0, 45.0, 90.0, 180.0], factors: vec![1.0, 0.9, 0.8, 1.0] });
     assert_eq!(tilt.horizontal, [0.0]);
     assert_approx_eq!(tilt.candela_at(33.75, 77.0), 800.0, 1e-3);
 

@@ -19,12 +19,7 @@ use slc_core::sphere::{Aabb, Sphere};
 /// `SLC_PROPTEST_SEED=<u64>` explores other seeds locally.
 fn cfg(cases: u32) -> ProptestConfig {
     let seed = std::env::var("SLC_PROPTEST_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(0x51C_2016);
-    ProptestConfig {
-        cases,
-        failure_persistence: None,
-        rng_seed: proptest::test_runner::RngSeed::Fixed(seed),
-        ..ProptestConfig::default()
-    }
+    ProptestConfig { cases, failure_persistence: None, rng_seed: proptest::test_runner::RngSeed::Fixed(seed), ..ProptestConfig::default() }
 }
 
 /// Strata for the ξ quadrature.
@@ -59,11 +54,7 @@ fn light_strategy() -> impl Strategy<Value = Light> {
         let i = Vec3::from(c) * 10f32.powf(li);
         let p = Vec3::from(p);
         let n = Vec3::from(n);
-        if vpl && n.length() > 0.1 {
-            Light::Vpl(Vpl::new(p, n, i).unwrap())
-        } else {
-            Light::Point(PointLight::new(p, i).unwrap())
-        }
+        if vpl && n.length() > 0.1 { Light::Vpl(Vpl::new(p, n, i).unwrap()) } else { Light::Point(PointLight::new(p, i).unwrap()) }
     })
 }
 
@@ -114,15 +105,12 @@ proptest! {
 fn clamped_ranges_darken() {
     // 1000 VPLs on a line; clamping each at its threshold range loses every
     // light beyond it, so the clamped sum is strictly below the true sum.
-    let lights: Vec<Light> = (0..1000)
-        .map(|i| Light::Point(PointLight::new(Vec3::new(i as f32 * 0.1, 0.0, 0.0), Vec3::splat(0.01)).unwrap()))
-        .collect();
+    let lights: Vec<Light> =
+        (0..1000).map(|i| Light::Point(PointLight::new(Vec3::new(i as f32 * 0.1, 0.0, 0.0), Vec3::splat(0.01)).unwrap())).collect();
     let params = RangeParams::new(0.01, 1.0).unwrap();
     let x = Vec3::new(0.0, 1.0, 0.0);
     let truth = unculled_sum(lights.iter(), |l| l.contribution_at(x).0).value;
-    let clamp = clamped_sum(lights.iter(), |l| (l.contribution_at(x).1, params.threshold_range2(l.peak())), |l| {
-        l.contribution_at(x).0
-    });
+    let clamp = clamped_sum(lights.iter(), |l| (l.contribution_at(x).1, params.threshold_range2(l.peak())), |l| l.contribution_at(x).0);
     assert!(clamp.value.x < 0.95 * truth.x, "clamped {} vs {}", clamp.value.x, truth.x);
     assert!(clamp.evaluated < 1000);
 }
@@ -142,9 +130,8 @@ fn bounds_strategy() -> impl Strategy<Value = (Vec<LightBound>, Vec<f32>)> {
             (b, r2)
         }),
         // All lights at one point.
-        (1usize..100, prop::array::uniform3(-5.0f32..5.0)).prop_map(|(n, c)| {
-            (vec![LightBound { center: Vec3::from(c), extent: 0.0 }; n], (0..n).map(|i| i as f32 * 0.01).collect())
-        }),
+        (1usize..100, prop::array::uniform3(-5.0f32..5.0))
+            .prop_map(|(n, c)| { (vec![LightBound { center: Vec3::from(c), extent: 0.0 }; n], (0..n).map(|i| i as f32 * 0.01).collect()) }),
         // Far from the origin (1e5), small ranges.
         prop::collection::vec((prop::array::uniform3(-1.0f32..1.0), 0.0f32..0.5), 1..100).prop_map(|v| {
             let b = v.iter().map(|&(c, _)| LightBound { center: Vec3::splat(1e5) + Vec3::from(c), extent: 0.0 }).collect();
@@ -262,8 +249,6 @@ proptest! {
     }
 }
 
-
-
 fn circle3(a: glam::DVec3, b: glam::DVec3, c: glam::DVec3) -> Option<(glam::DVec3, f64)> {
     let (u, v) = (b - a, c - a);
     let n = u.cross(v);
@@ -358,7 +343,10 @@ fn weighted_reservoir_probabilities() {
         assert!((f - p).abs() < 5.0 * sigma, "item {i}: freq {f} vs p {p} (5σ = {})", 5.0 * sigma);
         // Unbiasedness of the weights: E[Σ picks weight] per trial = number of items.
         let mean_weight = weight_mean[i] / trials as f64;
-        assert!((mean_weight - 1.0).abs() < 5.0 * (total as f64 / w[i] as f64 / 4.0) * (p * (1.0 - p) * 4.0 / trials as f64).sqrt() * 2.0, "item {i}: mean weight {mean_weight}");
+        assert!(
+            (mean_weight - 1.0).abs() < 5.0 * (total as f64 / w[i] as f64 / 4.0) * (p * (1.0 - p) * 4.0 / trials as f64).sqrt() * 2.0,
+            "item {i}: mean weight {mean_weight}"
+        );
     }
 }
 

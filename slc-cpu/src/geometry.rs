@@ -29,8 +29,7 @@ pub struct Geometry {
 impl Geometry {
     /// Builds the BVH over `triangles`.
     pub fn new(triangles: &[[Vec3; 3]]) -> Self {
-        let tris: Vec<Triangle> =
-            triangles.iter().map(|t| Triangle { v0: t[0].into(), v1: t[1].into(), v2: t[2].into() }).collect();
+        let tris: Vec<Triangle> = triangles.iter().map(|t| Triangle { v0: t[0].into(), v1: t[1].into(), v2: t[2].into() }).collect();
         let normals = triangles.iter().map(|t| (t[1] - t[0]).cross(t[2] - t[0]).normalize_or_zero()).collect();
         let bvh = build_cwbvh_from_tris(&tris, BvhBuildParams::medium_build(), &mut Duration::default());
         Geometry { tris, normals, bvh }

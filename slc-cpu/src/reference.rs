@@ -45,9 +45,10 @@ pub fn vpl_reference(ctx: &VplContext, cache_dir: Option<&Path>) -> Result<(Imag
     let path = cache_dir.map(|d| d.join(format!("vpl-reference-{:016x}.bin", vpl_reference_key(ctx))));
     if let Some(p) = &path
         && let Some(img) = read_raw(p)
-            && (img.width, img.height) == (ctx.gbuffer().width, ctx.gbuffer().height) {
-                return Ok((img, true));
-            }
+        && (img.width, img.height) == (ctx.gbuffer().width, ctx.gbuffer().height)
+    {
+        return Ok((img, true));
+    }
     let frame = ctx.render(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() })?;
     if let Some(p) = &path {
         write_raw(p, &frame.image).map_err(|e| RenderError::Setting(e.to_string()))?;

@@ -80,9 +80,7 @@ impl PrimaryLight {
     /// The slc-core spot light this primary light is (for spots).
     pub fn spot(&self) -> Option<SpotLight> {
         match *self {
-            PrimaryLight::Spot { position, direction, intensity, inner, outer } => {
-                SpotLight::new(position, direction, intensity, inner, outer).ok()
-            }
+            PrimaryLight::Spot { position, direction, intensity, inner, outer } => SpotLight::new(position, direction, intensity, inner, outer).ok(),
             PrimaryLight::Directional { .. } => None,
         }
     }
@@ -344,9 +342,21 @@ impl Scene {
         }
         self.primary = if area_sum > 0.0 && normal.length() > 0.0 {
             let n = normal.normalize();
-            PrimaryLight::Spot { position: centroid / area_sum + n * 1e-3 * ext.length(), direction: n, intensity: power, inner: 0.0, outer: 80f32.to_radians() * 0.99 }
+            PrimaryLight::Spot {
+                position: centroid / area_sum + n * 1e-3 * ext.length(),
+                direction: n,
+                intensity: power,
+                inner: 0.0,
+                outer: 80f32.to_radians() * 0.99,
+            }
         } else {
-            PrimaryLight::Spot { position: Vec3::new(c.x, hi.y + 0.25 * ext.length(), c.z), direction: -Vec3::Y, intensity: Vec3::splat(ext.length().powi(2)), inner: 0.0, outer: 70f32.to_radians() }
+            PrimaryLight::Spot {
+                position: Vec3::new(c.x, hi.y + 0.25 * ext.length(), c.z),
+                direction: -Vec3::Y,
+                intensity: Vec3::splat(ext.length().powi(2)),
+                inner: 0.0,
+                outer: 70f32.to_radians(),
+            }
         };
     }
 }

@@ -37,7 +37,13 @@ fn slc_expectation_equals_unculled_per_pixel() {
         let bound = all_kept.data[i].as_dvec3() * (2.0 / M as f64) + truth.abs() * 1e-5 + 1e-9;
         culled_somewhere |= (all_kept.data[i].as_dvec3() - truth).max_element() > 1e-3 * truth.max_element();
         for c in 0..3 {
-            assert!((mean[i][c] - truth[c]).abs() <= bound[c], "pixel {i} channel {c}: E[slc] {} vs unculled {} (bound {})", mean[i][c], truth[c], bound[c]);
+            assert!(
+                (mean[i][c] - truth[c]).abs() <= bound[c],
+                "pixel {i} channel {c}: E[slc] {} vs unculled {} (bound {})",
+                mean[i][c],
+                truth[c],
+                bound[c]
+            );
         }
     }
     assert!(culled_somewhere, "the error bound culled nothing: the test would be vacuous");
@@ -52,11 +58,13 @@ fn slc_mean_over_seeds_converges_to_unculled() {
     let ctx = VplContext::new(&Scene::cornell_box(), 32, 32, 32, None).unwrap();
     let truth = ctx.render(&settings(VplMethod::None, 0)).unwrap().image.mean();
     const S: u32 = 256;
-    let means: Vec<f64> = (0..S).map(|f| {
-        let img = ctx.render(&settings(VplMethod::Slc, f)).unwrap().image;
-        assert!(img.is_finite());
-        img.mean()
-    }).collect();
+    let means: Vec<f64> = (0..S)
+        .map(|f| {
+            let img = ctx.render(&settings(VplMethod::Slc, f)).unwrap().image;
+            assert!(img.is_finite());
+            img.mean()
+        })
+        .collect();
     let m = means.iter().sum::<f64>() / S as f64;
     let var = means.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (S as f64 - 1.0);
     assert!(var > 0.0, "frames do not vary: culling not exercised");

@@ -168,9 +168,7 @@ impl LightSet {
                 "triangle" => s.triangle = true,
                 "vpl" => s.vpl = true,
                 other => {
-                    return Err(ShaderError::Unsupported(format!(
-                        "unknown light type '{other}' (known: point, spot, ies, triangle, vpl)"
-                    )));
+                    return Err(ShaderError::Unsupported(format!("unknown light type '{other}' (known: point, spot, ies, triangle, vpl)")));
                 }
             }
         }
@@ -402,8 +400,7 @@ pub fn generate(kernel: Kernel, features: &Features) -> Result<String, ShaderErr
 
 /// Parses and validates WGSL with naga (WebGPU's baseline capabilities).
 pub fn validate(kernel: &'static str, source: &str) -> Result<(naga::Module, ModuleInfo), ShaderError> {
-    let module = naga::front::wgsl::parse_str(source)
-        .map_err(|e| ShaderError::Naga { kernel, message: e.emit_to_string(source) })?;
+    let module = naga::front::wgsl::parse_str(source).map_err(|e| ShaderError::Naga { kernel, message: e.emit_to_string(source) })?;
     let info = Validator::new(ValidationFlags::all(), Capabilities::default())
         .validate(&module)
         .map_err(|e| ShaderError::Naga { kernel, message: e.emit_to_string(source) })?;
@@ -427,31 +424,20 @@ pub struct Translations {
 pub fn translate(g: &Generated) -> Result<Translations, ShaderError> {
     let kernel = g.kernel.name();
     let err = |backend: &'static str| move |e: &dyn std::fmt::Display| ShaderError::Translate { kernel, backend, message: e.to_string() };
-    let spv = naga::back::spv::write_vec(&g.module, &g.info, &naga::back::spv::Options::default(), None)
-        .map_err(|e| err("spv")(&e))?;
+    let spv = naga::back::spv::write_vec(&g.module, &g.info, &naga::back::spv::Options::default(), None).map_err(|e| err("spv")(&e))?;
     let mut glsl = String::new();
     let glsl_opts = naga::back::glsl::Options { version: naga::back::glsl::Version::Desktop(430), ..Default::default() };
-    let glsl_pipe = naga::back::glsl::PipelineOptions {
-        shader_stage: naga::ShaderStage::Compute,
-        entry_point: "main".into(),
-        multiview: None,
-    };
+    let glsl_pipe = naga::back::glsl::PipelineOptions { shader_stage: naga::ShaderStage::Compute, entry_point: "main".into(), multiview: None };
     naga::back::glsl::Writer::new(&mut glsl, &g.module, &g.info, &glsl_opts, &glsl_pipe, naga::proc::BoundsCheckPolicies::default())
         .and_then(|mut w| w.write())
         .map_err(|e| err("glsl")(&e))?;
     let mut hlsl = String::new();
     let hlsl_opts = naga::back::hlsl::Options::default();
     let hlsl_pipe = naga::back::hlsl::PipelineOptions::default();
-    naga::back::hlsl::Writer::new(&mut hlsl, &hlsl_opts, &hlsl_pipe)
-        .write(&g.module, &g.info, None)
-        .map_err(|e| err("hlsl")(&e))?;
-    let (msl, _) = naga::back::msl::write_string(
-        &g.module,
-        &g.info,
-        &naga::back::msl::Options::default(),
-        &naga::back::msl::PipelineOptions::default(),
-    )
-    .map_err(|e| err("msl")(&e))?;
+    naga::back::hlsl::Writer::new(&mut hlsl, &hlsl_opts, &hlsl_pipe).write(&g.module, &g.info, None).map_err(|e| err("hlsl")(&e))?;
+    let (msl, _) =
+        naga::back::msl::write_string(&g.module, &g.info, &naga::back::msl::Options::default(), &naga::back::msl::PipelineOptions::default())
+            .map_err(|e| err("msl")(&e))?;
     Ok(Translations { spv, glsl, hlsl, msl })
 }
 

@@ -14,7 +14,11 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
         ("bsh_refit", Kernel::BshRefit, Features::default()),
         ("vpl_tiled-slc-tile8-p8", Kernel::VplTiled, Features { lights: vpl, ..Features::default() }),
         ("vpl_tiled-clamp-tile8-p8", Kernel::VplTiled, Features { lights: vpl, method: CullMethod::Clamp, ..Features::default() }),
-        ("bsh_reservoir-point-spot-ies-k8", Kernel::BshReservoir, Features { lights: LightSet::parse("point,spot,ies").unwrap(), ..Features::default() }),
+        (
+            "bsh_reservoir-point-spot-ies-k8",
+            Kernel::BshReservoir,
+            Features { lights: LightSet::parse("point,spot,ies").unwrap(), ..Features::default() },
+        ),
         ("pt_connect-triangle-k8-power", Kernel::PtConnect, Features { lights: LightSet::parse("triangle").unwrap(), ..Features::default() }),
         ("pt_connect-all-k16-balance", Kernel::PtConnect, Features { reservoir_k: 16, heuristic: Heuristic::Balance, ..Features::default() }),
     ]
@@ -33,8 +37,8 @@ fn generated_wgsl_matches_snapshots() {
             std::fs::write(&path, &got).unwrap();
             continue;
         }
-        let want = std::fs::read_to_string(&path)
-            .unwrap_or_else(|_| panic!("missing snapshot {}; run with SLC_BLESS=1 to create it", path.display()));
+        let want =
+            std::fs::read_to_string(&path).unwrap_or_else(|_| panic!("missing snapshot {}; run with SLC_BLESS=1 to create it", path.display()));
         if got != want {
             let diff = similar::TextDiff::from_lines(&want, &got);
             failures.push(format!("{}:\n{}", path.display(), diff.unified_diff().context_radius(2).header("snapshot", "generated")));

@@ -20,7 +20,13 @@ fn every_bsh_variant_validates() {
                     let f = Features { lights, reservoir_k: k, heuristic, ..Features::default() };
                     let g = generate_module(kernel, &f).unwrap_or_else(|e| panic!("{:?} {f:?}: {e}", kernel));
                     // Only the scene's light types are compiled in.
-                    for (name, case) in [("point", "LIGHT_POINT:"), ("spot", "LIGHT_SPOT:"), ("ies", "LIGHT_IES:"), ("triangle", "LIGHT_TRIANGLE:"), ("vpl", "LIGHT_VPL:")] {
+                    for (name, case) in [
+                        ("point", "LIGHT_POINT:"),
+                        ("spot", "LIGHT_SPOT:"),
+                        ("ies", "LIGHT_IES:"),
+                        ("triangle", "LIGHT_TRIANGLE:"),
+                        ("vpl", "LIGHT_VPL:"),
+                    ] {
                         let wanted = lights.names().contains(&name);
                         assert_eq!(g.source.contains(&format!("case {case}")), wanted, "{name} in {:?} {f:?}", kernel);
                     }

@@ -76,10 +76,7 @@ fn bind_layout(gpu: &GpuContext, label: &str, reads: u32, writes: u32) -> wgpu::
 }
 
 fn pipeline(gpu: &GpuContext, label: &str, wgsl: String, layout: &wgpu::BindGroupLayout) -> wgpu::ComputePipeline {
-    let module = gpu.device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some(label),
-        source: wgpu::ShaderSource::Wgsl(wgsl.into()),
-    });
+    let module = gpu.device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(label), source: wgpu::ShaderSource::Wgsl(wgsl.into()) });
     let pl = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
         label: Some(label),
         bind_group_layouts: &[Some(layout)],
@@ -110,7 +107,11 @@ impl<'a> GpuVpl<'a> {
         gpu.require("max_storage_buffer_binding_size (G-buffer)", w as u64 * h as u64 * 16, max_binding)?;
         gpu.require("max_storage_buffer_binding_size (lights)", n * 64, max_binding)?;
         let sub_w = w.div_ceil(PERIOD);
-        gpu.require("max_compute_workgroups_per_dimension", sub_w.div_ceil(TILE).max(w.div_ceil(TILE)) as u64, lim.max_compute_workgroups_per_dimension as u64)?;
+        gpu.require(
+            "max_compute_workgroups_per_dimension",
+            sub_w.div_ceil(TILE).max(w.div_ceil(TILE)) as u64,
+            lim.max_compute_workgroups_per_dimension as u64,
+        )?;
         gpu.require("max_compute_workgroups_per_dimension (light update)", n.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
         let wg_bytes = 32 * TILE * TILE + 4 * per_subset + 4;
         gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes as u64, lim.max_compute_workgroup_storage_size as u64)?;
@@ -159,12 +160,29 @@ impl<'a> GpuVpl<'a> {
         let vpl_only = LightSet { vpl: true, ..LightSet::default() };
         let mut tiled = Vec::new();
         for (m, cm) in [(VplMethod::Slc, CullMethod::Slc), (VplMethod::Clamp, CullMethod::Clamp), (VplMethod::None, CullMethod::None)] {
-            let f = Features { lights: vpl_only, tile_size: TILE, interleave: PERIOD, max_tile_lights: per_subset.max(1), method: cm, ..Features::default() };
-            tiled.push((m, Layout { period: PERIOD, per_subset, pipeline: pipeline(gpu, "vpl_tiled", generate(Kernel::VplTiled, &f)?, &tiled_layout) }));
+            let f = Features {
+                lights: vpl_only,
+                tile_size: TILE,
+                interleave: PERIOD,
+                max_tile_lights: per_subset.max(1),
+                method: cm,
+                ..Features::default()
+            };
+            tiled.push((
+                m,
+                Layout { period: PERIOD, per_subset, pipeline: pipeline(gpu, "vpl_tiled", generate(Kernel::VplTiled, &f)?, &tiled_layout) },
+            ));
         }
         // The reference: one "subset" of every VPL, unculled, no list.
         let f = Features { lights: vpl_only, tile_size: TILE, interleave: 1, max_tile_lights: 1, method: CullMethod::None, ..Features::default() };
-        tiled.push((VplMethod::Reference, Layout { period: 1, per_subset: v.len() as u32, pipeline: pipeline(gpu, "vpl_reference", generate(Kernel::VplTiled, &f)?, &tiled_layout) }));
+        tiled.push((
+            VplMethod::Reference,
+            Layout {
+                period: 1,
+                per_subset: v.len() as u32,
+                pipeline: pipeline(gpu, "vpl_reference", generate(Kernel::VplTiled, &f)?, &tiled_layout),
+            },
+        ));
         let s = GpuVpl {
             gpu,
             width: w,

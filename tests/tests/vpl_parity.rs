@@ -73,7 +73,13 @@ fn shading_matches_cpu_for_every_method() {
         let s = settings(method);
         let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(ctx, &s).unwrap());
         let c = compare(&a, &b, ctx);
-        eprintln!("{}: {} pixels, {} with a differing keep decision, worst relative irradiance difference {:.2e}", method.name(), c.pixels, c.kept_differs, c.worst_rel);
+        eprintln!(
+            "{}: {} pixels, {} with a differing keep decision, worst relative irradiance difference {:.2e}",
+            method.name(),
+            c.pixels,
+            c.kept_differs,
+            c.worst_rel
+        );
         assert!(c.kept_differs * 200 <= c.pixels, "{}: {} of {} pixels differ in keep decisions", method.name(), c.kept_differs, c.pixels);
         assert!(c.worst_rel <= 1e-4, "{}: relative irradiance difference {}", method.name(), c.worst_rel);
         assert!(a.kept.iter().sum::<u32>() > 0);

@@ -131,8 +131,8 @@ impl LightBounds {
         let theta_e = self.cos_e.clamp(-1.0, 1.0).acos();
         let theta_w = (theta_o + theta_e).min(PI);
         let sin_o = safe_sqrt(1.0 - self.cos_o * self.cos_o);
-        let m_omega = 2.0 * PI * (1.0 - self.cos_o)
-            + PI / 2.0 * (2.0 * theta_w * sin_o - (theta_o - 2.0 * theta_w).cos() - 2.0 * theta_o * sin_o + self.cos_o);
+        let m_omega =
+            2.0 * PI * (1.0 - self.cos_o) + PI / 2.0 * (2.0 * theta_w * sin_o - (theta_o - 2.0 * theta_w).cos() - 2.0 * theta_o * sin_o + self.cos_o);
         let kr = parent_diag.max_element() / parent_diag[dim].max(f32::MIN_POSITIVE);
         let d = self.max - self.min;
         let area = 2.0 * (d.x * d.y + d.y * d.z + d.z * d.x);
@@ -347,7 +347,12 @@ mod tests {
     fn pmf_matches_sampling_and_covers_every_contributing_light() {
         let ls = lights();
         let bvh = LightBvh::new(&ls);
-        for (p, n) in [(Vec3::splat(2.0), Vec3::Y), (Vec3::new(-1.0, 0.5, 3.0), Vec3::X), (Vec3::splat(2.0), Vec3::ZERO), (Vec3::new(2.0, 5.0, 2.0), Vec3::NEG_Y)] {
+        for (p, n) in [
+            (Vec3::splat(2.0), Vec3::Y),
+            (Vec3::new(-1.0, 0.5, 3.0), Vec3::X),
+            (Vec3::splat(2.0), Vec3::ZERO),
+            (Vec3::new(2.0, 5.0, 2.0), Vec3::NEG_Y),
+        ] {
             let pmfs: Vec<f32> = (0..ls.len()).map(|l| bvh.pmf(p, n, l)).collect();
             let total: f64 = pmfs.iter().map(|&x| x as f64).sum();
             assert!(total <= 1.0 + 1e-4 && total > 0.1, "Σ pmf = {total}");
@@ -381,7 +386,9 @@ mod tests {
     fn importance_prefers_near_and_facing_lights() {
         let t = |z: f32, up: bool| {
             let (b, c) = if up { (Vec3::X, Vec3::Y) } else { (Vec3::Y, Vec3::X) };
-            LightBounds::of_light(&Light::Triangle(TriangleLight::new(Vec3::new(0.0, 0.0, z), Vec3::new(0.0, 0.0, z) + b * 0.1, Vec3::new(0.0, 0.0, z) + c * 0.1, Vec3::ONE).unwrap()))
+            LightBounds::of_light(&Light::Triangle(
+                TriangleLight::new(Vec3::new(0.0, 0.0, z), Vec3::new(0.0, 0.0, z) + b * 0.1, Vec3::new(0.0, 0.0, z) + c * 0.1, Vec3::ONE).unwrap(),
+            ))
         };
         let p = Vec3::new(0.05, 0.05, 5.0);
         assert!(t(1.0, true).importance(p, Vec3::NEG_Z) < t(4.0, true).importance(p, Vec3::NEG_Z));

@@ -35,10 +35,10 @@ use crate::geometry::Geometry;
 use crate::image::Image;
 use crate::scene::Scene;
 use glam::Vec3;
+use lightbvh::LightBvh;
 use rand_core::RngCore;
 use rand_pcg::Pcg32;
 use rayon::prelude::*;
-use lightbvh::LightBvh;
 use sampler::AliasTable;
 use slc_core::bsh::Bsh;
 use slc_core::light::{INV_PI, Light, LightBound, TriangleLight, area_to_solid_angle_pdf, inverse_square};
@@ -130,8 +130,7 @@ impl PtScene {
         for (i, t) in scene.triangles.iter().enumerate() {
             let e = scene.materials[scene.material_of[i] as usize].emission;
             if e.max_element() > 0.0 {
-                let l = TriangleLight::new(t[0], t[1], t[2], e)
-                    .map_err(|err| RenderError::Setting(format!("emissive triangle {i}: {err}")))?;
+                let l = TriangleLight::new(t[0], t[1], t[2], e).map_err(|err| RenderError::Setting(format!("emissive triangle {i}: {err}")))?;
                 light_of_triangle[i] = lights.len() as u32;
                 lights.push(Light::Triangle(l));
             }
@@ -294,7 +293,19 @@ impl PtScene {
     /// the RR weight `1/p`, with the MIS weight against BSDF sampling for
     /// area lights.
     #[allow(clippy::too_many_arguments)]
-    fn connect(&self, s: &PtSettings, st: &Pass, l: usize, x: Vec3, n: Vec3, rho: Vec3, rng: &mut Pcg32, seen: u32, rr: bool, extra: f32) -> Option<Vec3> {
+    fn connect(
+        &self,
+        s: &PtSettings,
+        st: &Pass,
+        l: usize,
+        x: Vec3,
+        n: Vec3,
+        rho: Vec3,
+        rng: &mut Pcg32,
+        seen: u32,
+        rr: bool,
+        extra: f32,
+    ) -> Option<Vec3> {
         let light = &self.lights[l];
         let (u1, u2) = (xi_from_bits(rng.next_u32()), xi_from_bits(rng.next_u32()));
         let y = match light {

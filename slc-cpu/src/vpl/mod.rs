@@ -280,9 +280,7 @@ impl VplContext {
         } else {
             shaded.irradiance
         };
-        let data = (0..filtered.len())
-            .map(|i| gb.emission[i] + gb.albedo[i] * INV_PI * (self.direct[i] + filtered[i]))
-            .collect();
+        let data = (0..filtered.len()).map(|i| gb.emission[i] + gb.albedo[i] * INV_PI * (self.direct[i] + filtered[i])).collect();
         stats.denoise_ms = ms(t);
         stats.total_ms = stats.gbuffer_ms + stats.rsm_ms + stats.direct_ms + stats.shading_ms + stats.denoise_ms;
         VplFrame { image: Image { width: gb.width, height: gb.height, data }, stats }
@@ -367,9 +365,7 @@ impl VplContext {
                     }
                 };
                 let bounds = |pixels: &[usize]| {
-                    pixels.iter().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), &i| {
-                        (lo.min(gb.position[i]), hi.max(gb.position[i]))
-                    })
+                    pixels.iter().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), &i| (lo.min(gb.position[i]), hi.max(gb.position[i])))
                 };
                 // Two-level tiled culling: super-tiles of SUPER × tile cull the
                 // subset; their tiles cull the super-tile's list.
@@ -462,4 +458,3 @@ fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer) -> Vec<Vec3> {
 fn ms(t: Instant) -> f64 {
     t.elapsed().as_secs_f64() * 1e3
 }
-

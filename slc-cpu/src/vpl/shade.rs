@@ -53,8 +53,18 @@ impl LightList {
     /// Empties the list, keeping its memory.
     pub fn clear(&mut self) {
         for v in [
-            &mut self.px, &mut self.py, &mut self.pz, &mut self.nx, &mut self.ny, &mut self.nz, &mut self.fr,
-            &mut self.fg, &mut self.fb, &mut self.rt2, &mut self.r2, &mut self.radius,
+            &mut self.px,
+            &mut self.py,
+            &mut self.pz,
+            &mut self.nx,
+            &mut self.ny,
+            &mut self.nz,
+            &mut self.fr,
+            &mut self.fg,
+            &mut self.fb,
+            &mut self.rt2,
+            &mut self.r2,
+            &mut self.radius,
         ] {
             v.clear();
         }
@@ -157,8 +167,18 @@ impl LightList {
         gather(&mut out.r2, &self.r2);
         gather(&mut out.radius, &self.radius);
         for v in [
-            &mut out.px, &mut out.py, &mut out.pz, &mut out.nx, &mut out.ny, &mut out.nz, &mut out.fr,
-            &mut out.fg, &mut out.fb, &mut out.rt2, &mut out.r2, &mut out.radius,
+            &mut out.px,
+            &mut out.py,
+            &mut out.pz,
+            &mut out.nx,
+            &mut out.ny,
+            &mut out.nz,
+            &mut out.fr,
+            &mut out.fg,
+            &mut out.fb,
+            &mut out.rt2,
+            &mut out.r2,
+            &mut out.radius,
         ] {
             v.extend(std::iter::repeat_n(0.0, pad));
         }
@@ -235,15 +255,7 @@ fn shade_impl<const MODE: u8>(list: &LightList, x: Vec3, n: Vec3, min_d2: f32) -
         let (fr, fg, fb) = (lanes(&list.fr, base), lanes(&list.fg, base), lanes(&list.fb, base));
         let (rt2, r2) = (lanes(&list.rt2, base), lanes(&list.r2, base));
         for l in 0..LANES {
-            let (w, kept) = term::<MODE>(
-                Vec3::new(px[l], py[l], pz[l]),
-                Vec3::new(nx[l], ny[l], nz[l]),
-                rt2[l],
-                r2[l],
-                x,
-                n,
-                min_d2,
-            );
+            let (w, kept) = term::<MODE>(Vec3::new(px[l], py[l], pz[l]), Vec3::new(nx[l], ny[l], nz[l]), rt2[l], r2[l], x, n, min_d2);
             r[l] += fr[l] * w;
             g[l] += fg[l] * w;
             b[l] += fb[l] * w;
