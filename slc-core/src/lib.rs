@@ -16,8 +16,9 @@
 //! | [`bsh`] | bounding-sphere hierarchy: build, O(n) refit, stackless `child`/`next` traversal |
 //! | [`reservoir`] | k-slot Algorithm R and a weighted variant |
 //! | [`estimator`] | SLC, clamped-range and unculled sums at one shading point |
-//! | [`mis`] | balance and power heuristics, cosine pdf (light pdfs include `p_rr`) |
+//! | [`mis`] | balance and power heuristics, cosine pdf and cosine-weighted directions (light pdfs include `p_rr`) |
 //! | [`ray`] | ray–box and ray–triangle tests for the GPU's geometry BVH |
+//! | [`denoise`] | the cross-bilateral filter weight of the VPL denoise |
 //! | [`wgsl`] | the shared-code macro, WGSL built-ins in Rust, the assembled WGSL library |
 //!
 //! ```
@@ -46,6 +47,7 @@ extern crate alloc;
 pub mod wgsl;
 
 pub mod bsh;
+pub mod denoise;
 pub mod estimator;
 pub mod ies;
 pub mod light;

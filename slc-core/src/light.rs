@@ -250,6 +250,22 @@ impl IesLight {
     pub fn profile(&self) -> &IesProfile {
         &self.profile
     }
+    /// The shared profile (for deduplicating uploads).
+    pub fn profile_arc(&self) -> &Arc<IesProfile> {
+        &self.profile
+    }
+    /// Unit nadir (γ = 0).
+    pub fn nadir(&self) -> Vec3 {
+        self.nadir
+    }
+    /// Unit reference direction (C = 0), perpendicular to the nadir.
+    pub fn reference(&self) -> Vec3 {
+        self.reference
+    }
+    /// RGB tint.
+    pub fn tint(&self) -> Vec3 {
+        self.tint
+    }
     /// Candela toward unit direction `w` (no tint).
     pub fn candela(&self, w: Vec3) -> f32 {
         let side = self.reference.cross(self.nadir);

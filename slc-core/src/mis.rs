@@ -4,6 +4,10 @@
 //! pdf_area(y)`, converted to solid angle
 //! ([`crate::light::area_to_solid_angle_pdf`]).
 
+// Shared code is also WGSL, which has no `core::f32::consts`: π and its
+// fractions are written as literals.
+#![allow(clippy::approx_constant)]
+
 use crate::light::INV_PI;
 use crate::wgsl::*;
 
@@ -29,9 +33,30 @@ crate::shared! {
         return a2 / s;
     }
 
+    /// Lambertian BRDF of albedo `rho`: `ρ/π`.
+    pub fn lambert_brdf(rho: vec3f) -> vec3f {
+        return rho * INV_PI;
+    }
+
     /// Cosine-weighted hemisphere pdf of a diffuse BSDF sample: `max(cos θ, 0)/π`.
     pub fn cosine_pdf(cos_theta: f32) -> f32 {
         return max(cos_theta, 0.0) * INV_PI;
+    }
+
+    /// Cosine-weighted direction about the unit normal `n` for `u1, u2 ∈
+    /// [0, 1)` (Malley's method: a uniform disk point `(√u1, 2πu2)` lifted
+    /// to the hemisphere), in the branchless orthonormal basis of Duff et
+    /// al., "Building an Orthonormal Basis, Revisited" (JCGT 2017). Its pdf
+    /// is [`cosine_pdf`] of the cosine with `n`.
+    pub fn cosine_direction(n: vec3f, u1: f32, u2: f32) -> vec3f {
+        let s: f32 = select(-1.0, 1.0, n.z >= 0.0);
+        let a: f32 = -1.0 / (s + n.z);
+        let b: f32 = n.x * n.y * a;
+        let t: vec3f = vec3f(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
+        let bt: vec3f = vec3f(b, s + n.y * n.y * a, -n.y);
+        let r: f32 = sqrt(u1);
+        let phi: f32 = 6.2831855 * u2;
+        return normalize(t * (r * cos(phi)) + bt * (r * sin(phi)) + n * sqrt(max(1.0 - u1, 0.0)));
     }
 }
 
@@ -47,5 +72,23 @@ mod tests {
         }
         assert_eq!(mis_balance(0.0, 0.0), 0.0);
         assert_eq!(mis_power(0.0, 0.0), 0.0);
+    }
+
+    /// Unit length, in the hemisphere of `n`, and cosine-distributed: the
+    /// stratified mean of cos θ is E[cos θ] = ∫cos²θ/π dω = 2/3.
+    #[test]
+    fn cosine_direction_is_cosine_distributed() {
+        for n in [vec3f(0.0, 0.0, 1.0), vec3f(0.0, 0.0, -1.0), normalize(vec3f(1.0, -2.0, 0.5)), vec3f(1.0, 0.0, 0.0)] {
+            let m = 200;
+            let mut sum = 0.0f64;
+            for i in 0..m {
+                for j in 0..m {
+                    let d = cosine_direction(n, (i as f32 + 0.5) / m as f32, (j as f32 + 0.5) / m as f32);
+                    assert!((dot(d, d) - 1.0).abs() < 1e-5 && dot(d, n) >= 0.0);
+                    sum += dot(d, n) as f64;
+                }
+            }
+            assert!((sum / (m * m) as f64 - 2.0 / 3.0).abs() < 1e-4, "{n}: {}", sum / (m * m) as f64);
+        }
     }
 }

@@ -179,6 +179,16 @@ pub fn acos(x: f32) -> f32 {
 pub fn atan2(y: f32, x: f32) -> f32 {
     libm::atan2f(y, x)
 }
+/// WGSL `cos`.
+#[inline]
+pub fn cos(x: f32) -> f32 {
+    libm::cosf(x)
+}
+/// WGSL `sin`.
+#[inline]
+pub fn sin(x: f32) -> f32 {
+    libm::sinf(x)
+}
 /// WGSL `degrees`.
 #[inline]
 pub fn degrees(rad: f32) -> f32 {
@@ -243,7 +253,7 @@ macro_rules! shared {
 }
 
 /// Every module's shared items, in dependency order, as raw text.
-const PARTS: [&str; 9] = [
+const PARTS: [&str; 10] = [
     crate::xi::WGSL,
     crate::range::WGSL,
     crate::sphere::WGSL,
@@ -253,6 +263,7 @@ const PARTS: [&str; 9] = [
     crate::reservoir::WGSL,
     crate::ray::WGSL,
     crate::mis::WGSL,
+    crate::denoise::WGSL,
 ];
 
 /// The whole shared library as WGSL: [`PRELUDE`] followed by every shared
