@@ -14,6 +14,8 @@
 //!   MIS whose light pdf includes the RR probability, and the uniform,
 //!   power and light-BVH baselines on the same renderer.
 //! - [`reference`]: cached references for both applications.
+//! - [`direct`]: unshadowed direct light at arbitrary shading points through
+//!   the BSH and a k-slot reservoir, number for number as the GPU kernel.
 //!
 //! ```
 //! use slc_cpu::scene::Scene;
@@ -27,6 +29,7 @@
 // `!(x > 0.0)` is how the validators reject NaN along with the bad range.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+pub mod direct;
 pub mod gbuffer;
 pub mod geometry;
 pub mod image;

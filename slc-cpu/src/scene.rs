@@ -241,6 +241,32 @@ impl Scene {
         }
     }
 
+    /// The built-in Cornell box with its ceiling light split into `n × n`
+    /// quads (`2n²` triangle lights, same total emission): a small many-light
+    /// scene for tests of light selection.
+    pub fn cornell_box_split_light(n: u32) -> Scene {
+        let mut s = Scene::cornell_box();
+        let light = s.material_of.iter().position(|&m| s.materials[m as usize].emission.max_element() > 0.0).expect("the box has a light");
+        let [a, b, _] = s.triangles[light];
+        let c = s.triangles[light + 1][2];
+        // The light quad is a (corner), a→b (first edge), a→d (second edge).
+        let m = s.material_of[light];
+        s.triangles.drain(light..light + 2);
+        s.material_of.drain(light..light + 2);
+        let (e1, e2) = (b - a, c - a);
+        let n = n.max(1);
+        for i in 0..n {
+            for j in 0..n {
+                let p = |u: u32, v: u32| a + e1 * (u as f32 / n as f32) + e2 * (v as f32 / n as f32);
+                let (p00, p10, p11, p01) = (p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1));
+                s.triangles.push([p00, p10, p11]);
+                s.triangles.push([p00, p11, p01]);
+                s.material_of.extend([m, m]);
+            }
+        }
+        s
+    }
+
     /// Loads an OBJ with its MTL (`Kd` albedo, `Ke` emission; faces are
     /// triangulated). When the `mtllib` path does not exist relative to the
     /// OBJ, a `.mtl` of the same file name beside the OBJ is used. The camera

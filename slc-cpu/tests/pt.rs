@@ -3,30 +3,12 @@
 
 use glam::Vec3;
 use slc_cpu::pt::{PtMethod, PtRender, PtScene, PtSettings};
-use slc_cpu::scene::{Material, Scene};
+use slc_cpu::scene::Scene;
 
-/// The Cornell box with its ceiling light split into a grid of small
-/// emitters, so SLC has many lights to cull.
+/// The Cornell box with its ceiling light split into 8×8 quads (128
+/// triangle lights), so SLC has many lights to cull.
 fn many_light_box() -> Scene {
-    let mut s = Scene::cornell_box();
-    let light_mat = s.materials.len() as u32;
-    s.materials.push(Material { albedo: Vec3::splat(0.5), emission: Vec3::new(17.0, 12.0, 4.0) });
-    // Remove the original light quad (material 3) and add 8×8 small quads.
-    let keep: Vec<usize> = (0..s.triangles.len()).filter(|&i| s.material_of[i] != 3).collect();
-    s.triangles = keep.iter().map(|&i| s.triangles[i]).collect();
-    s.material_of = keep.iter().map(|&i| s.material_of[i]).collect();
-    for i in 0..8 {
-        for j in 0..8 {
-            let (x0, z0) = (0.213 + 0.130 * i as f32 / 8.0, 0.227 + 0.105 * j as f32 / 8.0);
-            let (x1, z1) = (x0 + 0.130 / 8.0, z0 + 0.105 / 8.0);
-            let y = 0.5487;
-            let (a, b, c, d) = (Vec3::new(x1, y, z0), Vec3::new(x1, y, z1), Vec3::new(x0, y, z1), Vec3::new(x0, y, z0));
-            s.triangles.push([a, b, c]);
-            s.triangles.push([a, c, d]);
-            s.material_of.extend([light_mat, light_mat]);
-        }
-    }
-    s
+    Scene::cornell_box_split_light(8)
 }
 
 fn mean_and_sigma(samples: &[f64]) -> (f64, f64) {

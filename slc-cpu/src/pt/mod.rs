@@ -41,8 +41,8 @@ use rand_pcg::Pcg32;
 use rayon::prelude::*;
 use sampler::AliasTable;
 use slc_core::bsh::Bsh;
-use slc_core::light::{INV_PI, Light, LightBound, TriangleLight, area_to_solid_angle_pdf, inverse_square};
-use slc_core::mis::{cosine_pdf, mis_power};
+use slc_core::light::{Light, LightBound, TriangleLight, area_to_solid_angle_pdf, inverse_square};
+use slc_core::mis::{cosine_direction, cosine_pdf, lambert_brdf, mis_power};
 use slc_core::range::{RangeParams, random_range2, rr_probability, slc_keep, slc_weight};
 use slc_core::reservoir::Reservoir;
 use slc_core::sphere::Sphere;
@@ -117,6 +117,8 @@ pub struct PtScene {
     power: AliasTable,
     light_bvh: LightBvh,
     bsh: Bsh,
+    /// The scene's bounding-box diagonal (ray offsets scale with it).
+    diag: f32,
 }
 
 impl PtScene {
@@ -143,7 +145,17 @@ impl PtScene {
         let bsh = Bsh::build(&bounds).map_err(|e| RenderError::Setting(e.to_string()))?;
         let power = AliasTable::new(&lights.iter().map(light_power).collect::<Vec<f64>>());
         let light_bvh = LightBvh::new(&lights);
-        Ok(PtScene { scene: scene.clone(), geo: Geometry::new(&scene.triangles), lights, bounds, light_of_triangle, power, light_bvh, bsh })
+        Ok(PtScene {
+            scene: scene.clone(),
+            geo: Geometry::new(&scene.triangles),
+            lights,
+            bounds,
+            light_of_triangle,
+            power,
+            light_bvh,
+            bsh,
+            diag: scene.diagonal(),
+        })
     }
 
     /// Number of lights.
@@ -159,6 +171,26 @@ impl PtScene {
     /// The lights, as text (for cache keys).
     pub fn lights_debug(&self) -> String {
         format!("{:?}", self.lights)
+    }
+
+    /// The lights, in BSH light-index order.
+    pub fn lights(&self) -> &[Light] {
+        &self.lights
+    }
+
+    /// Each light's bound (centre and extent `R` of its range sphere).
+    pub fn bounds(&self) -> &[LightBound] {
+        &self.bounds
+    }
+
+    /// The BSH over the lights (as built; `render` refits it per pass).
+    pub fn bsh(&self) -> &Bsh {
+        &self.bsh
+    }
+
+    /// Light index of each scene triangle (`u32::MAX` when it does not emit).
+    pub fn light_of_triangle(&self) -> &[u32] {
+        &self.light_of_triangle
     }
 }
 
@@ -197,6 +229,21 @@ impl PtRender {
     /// An empty accumulation.
     pub fn new(width: u32, height: u32) -> Self {
         PtRender { sum: vec![Vec3::ZERO; width as usize * height as usize], passes: 0, time_ms: 0.0, width, height }
+    }
+
+    /// Adds `passes` passes rendered elsewhere (e.g. on the GPU): their
+    /// per-pixel sum, with non-finite pixels dropped, and their time.
+    pub fn accumulate(&mut self, sum: &[Vec3], passes: u32, time_ms: f64) {
+        for (a, v) in self.sum.iter_mut().zip(sum) {
+            *a += if v.is_finite() { *v } else { Vec3::ZERO };
+        }
+        self.passes += passes;
+        self.time_ms += time_ms;
+    }
+
+    /// Image width and height.
+    pub fn size(&self) -> (u32, u32) {
+        (self.width, self.height)
     }
 
     /// The mean image so far.
@@ -325,7 +372,7 @@ impl PtScene {
         if cos_x <= 0.0 {
             return None;
         }
-        let diag = self.scene.diagonal();
+        let diag = self.diag;
         if self.geo.occluded(x + n * 1e-5 * diag, y) {
             return None;
         }
@@ -338,7 +385,7 @@ impl PtScene {
             Light::Triangle(_) => mis_power(self.light_pdf(s, st, l, x, n, y, seen, true), cosine_pdf(cos_x)),
             _ => 1.0,
         };
-        Some(rho * INV_PI * i * (cos_x * inverse_square(d2) * weight * extra * mis))
+        Some(lambert_brdf(rho) * i * (cos_x * inverse_square(d2) * weight * extra * mis))
     }
 
     /// Next-event estimate at `x`; returns the radiance and the number of
@@ -400,7 +447,7 @@ impl PtScene {
         let mut org = cam.position;
         let mut beta = Vec3::ONE;
         let mut radiance = Vec3::ZERO;
-        let diag = self.scene.diagonal();
+        let diag = self.diag;
         // Previous vertex for MIS at implicit hits: (x, n, in-range lights, bsdf pdf).
         let mut prev: Option<(Vec3, Vec3, u32, f32)> = None;
         for depth in 0..s.max_depth {
@@ -426,11 +473,7 @@ impl PtScene {
             radiance += beta * direct;
             // Cosine-weighted BSDF sample: f·cos/pdf = ρ.
             let (u1, u2) = (xi_from_bits(rng.next_u32()), xi_from_bits(rng.next_u32()));
-            let r = u1.sqrt();
-            let phi = 2.0 * std::f32::consts::PI * u2;
-            let (t, b) = n.any_orthonormal_pair();
-            let local = Vec3::new(r * phi.cos(), r * phi.sin(), (1.0 - u1).max(0.0).sqrt());
-            let nd = (t * local.x + b * local.y + n * local.z).normalize();
+            let nd = cosine_direction(n, u1, u2);
             let cos = nd.dot(n);
             if cos <= 0.0 {
                 break;

@@ -3,17 +3,14 @@
 //! one pixel of every VPL subset, weighting neighbours by normal and depth
 //! similarity so edges stay sharp. Filters irradiance, before albedo.
 //!
-//! Weights: `w = max(n·n', 0)^16 · max(1 − δ², 0)²` with
-//! `δ = (z' − z)/(σ z)`, `σ = 5%` (a compact-support Tukey kernel in
-//! relative depth). Background pixels (depth ∞) get weight 0. The inner loop
-//! runs over contiguous row segments of SoA arrays, branch-free.
+//! Weights: slc-core's [`bilateral_weight`] (shared with the GPU's
+//! `vpl_denoise` kernel). Background pixels (depth ∞) get weight 0. The
+//! inner loop runs over contiguous row segments of SoA arrays, branch-free.
 
 use crate::gbuffer::GBuffer;
 use glam::Vec3;
 use rayon::prelude::*;
-
-/// Relative depth tolerance σ.
-const DEPTH_SIGMA: f32 = 0.05;
+use slc_core::denoise::{DEPTH_SIGMA, bilateral_weight};
 
 /// Filters `e` (one value per pixel) with a `period × period` window.
 pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
@@ -48,13 +45,7 @@ pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
                     .zip(&eg[r.clone()])
                     .zip(&eb[r])
                 {
-                    let dn = (n.x * a + n.y * b + n.z * c).max(0.0);
-                    let dn2 = dn * dn;
-                    let dn4 = dn2 * dn2;
-                    let dn8 = dn4 * dn4;
-                    let d = (zj - zi) * inv;
-                    let t = (1.0 - d * d).max(0.0);
-                    let wgt = dn8 * dn8 * t * t;
+                    let wgt = bilateral_weight(n, Vec3::new(a, b, c), zi, zj, inv);
                     sr += r_ * wgt;
                     sg += g_ * wgt;
                     sb += b_ * wgt;

@@ -147,6 +147,9 @@ pub struct Shaded {
     pub evaluations: u64,
     /// Shading time (ms).
     pub shading_ms: f64,
+    /// `Some(ms)` when the backend has already denoised `irradiance` (the
+    /// GPU does, with the same filter), so [`VplContext::finish`] does not.
+    pub denoised_ms: Option<f64>,
 }
 
 /// One rendered frame.
@@ -261,7 +264,7 @@ impl VplContext {
             VplMethod::Reference => self.shade_reference(),
             m => self.shade_interleaved(m, &params, settings),
         };
-        Ok(Shaded { irradiance, kept, evaluations, shading_ms: ms(t) })
+        Ok(Shaded { irradiance, kept, evaluations, shading_ms: ms(t), denoised_ms: None })
     }
 
     /// Denoise (interleaved methods), albedo × (direct + indirect) +
@@ -275,13 +278,13 @@ impl VplContext {
         stats.lights_per_pixel = shaded.evaluations as f64 / shaded_px;
         stats.kept_per_pixel = shaded.kept.iter().map(|&k| k as f64).sum::<f64>() / shaded_px;
         let t = Instant::now();
-        let filtered = if settings.denoise && settings.method != VplMethod::Reference {
+        let filtered = if settings.denoise && settings.method != VplMethod::Reference && shaded.denoised_ms.is_none() {
             denoise::cross_bilateral(&shaded.irradiance, gb, PERIOD)
         } else {
             shaded.irradiance
         };
         let data = (0..filtered.len()).map(|i| gb.emission[i] + gb.albedo[i] * INV_PI * (self.direct[i] + filtered[i])).collect();
-        stats.denoise_ms = ms(t);
+        stats.denoise_ms = ms(t) + shaded.denoised_ms.unwrap_or(0.0);
         stats.total_ms = stats.gbuffer_ms + stats.rsm_ms + stats.direct_ms + stats.shading_ms + stats.denoise_ms;
         VplFrame { image: Image { width: gb.width, height: gb.height, data }, stats }
     }

@@ -1,0 +1,123 @@
+//! Direct light from many lights at arbitrary shading points, the way the
+//! GPU's `bsh_reservoir` kernel computes it, so an engine can shade its own
+//! G-buffer with either backend and get the same numbers: the lights' BSH
+//! refitted to this frame's random ranges, traversal into a k-slot
+//! reservoir, then each pick sampled (a point on a triangle), RR-tested at
+//! that point with the light's own range, weighted by `1/p` and the
+//! reservoir's `n/k` (talk: "Improving tree traversal & shading").
+//! Unshadowed: the caller owns visibility.
+//!
+//! Every random number is the shared hash of the kernel (`pcg_hash`,
+//! `xi_for`), so for the same seed and frame the CPU and the GPU pick the
+//! same lights and sample the same points.
+
+use crate::RenderError;
+use glam::Vec3;
+use rayon::prelude::*;
+use slc_core::bsh::Bsh;
+use slc_core::light::{Light, LightBound, inverse_square};
+use slc_core::range::{RangeParams, random_range2, slc_keep, slc_weight};
+use slc_core::reservoir::Reservoir;
+use slc_core::xi::{pcg_hash, xi_for, xi_from_bits};
+
+/// Reservoir slots of the direct-light shader (the GPU kernel's `k`).
+pub const DIRECT_K: usize = 8;
+
+/// Direct light at one point: irradiance-weighted intensity sum and the
+/// number of lights in range.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Direct {
+    /// `Σ I(w) cos θ_x / d² · 1/p · n/k` over the picks (RGB).
+    pub irradiance: Vec3,
+    /// Lights whose range sphere contains the point.
+    pub in_range: u32,
+}
+
+/// A light set with its BSH, ready to shade points.
+pub struct DirectLights {
+    lights: Vec<Light>,
+    bounds: Vec<LightBound>,
+    bsh: Bsh,
+}
+
+impl DirectLights {
+    /// Builds the BSH over `lights` (at least one).
+    pub fn new(lights: Vec<Light>) -> Result<DirectLights, RenderError> {
+        if lights.is_empty() {
+            return Err(RenderError::Setting("no lights to shade with".into()));
+        }
+        let bounds: Vec<LightBound> = lights.iter().map(Light::bound).collect();
+        let bsh = Bsh::build(&bounds).map_err(|e| RenderError::Setting(e.to_string()))?;
+        Ok(DirectLights { lights, bounds, bsh })
+    }
+
+    /// The lights.
+    pub fn lights(&self) -> &[Light] {
+        &self.lights
+    }
+
+    /// Each light's bound.
+    pub fn bounds(&self) -> &[LightBound] {
+        &self.bounds
+    }
+
+    /// The BSH (as built).
+    pub fn bsh(&self) -> &Bsh {
+        &self.bsh
+    }
+
+    /// Shades `points` with unit `normals` for frame `frame` of `seed`:
+    /// ranges from `xi_for(seed, frame, light)`, the BSH refitted to them,
+    /// then [`Direct`] per point (zero for a point with a NaN coordinate).
+    pub fn shade(&mut self, points: &[Vec3], normals: &[Vec3], params: &RangeParams, seed: u32, frame: u32) -> Result<Vec<Direct>, RenderError> {
+        if points.len() != normals.len() {
+            return Err(RenderError::Setting(format!("{} points but {} normals", points.len(), normals.len())));
+        }
+        let rt2: Vec<f32> = self.lights.iter().map(|l| params.threshold_range2(l.peak())).collect();
+        let r2: Vec<f32> = rt2.iter().enumerate().map(|(i, &t)| random_range2(t, xi_for(seed, frame, i as u32))).collect();
+        self.bsh.refit(&r2).map_err(|e| RenderError::Setting(e.to_string()))?;
+        let this = &*self;
+        Ok((0..points.len())
+            .into_par_iter()
+            .map(|i| this.shade_point(points[i], normals[i], &rt2, &r2, pcg_hash(seed ^ pcg_hash(i as u32 ^ pcg_hash(frame)))))
+            .collect())
+    }
+
+    /// One point, with the kernel's random-number stream `seed`.
+    fn shade_point(&self, x: Vec3, n: Vec3, rt2: &[f32], r2: &[f32], seed: u32) -> Direct {
+        let mut res = Reservoir::<DIRECT_K>::new();
+        let mut h = seed;
+        self.bsh.for_each_containing(x, |l| {
+            h = pcg_hash(h);
+            let hi = h;
+            h = pcg_hash(h);
+            res.push(l, hi, h);
+        });
+        let w_res = res.weight();
+        let mut h = pcg_hash(seed ^ 2654435769);
+        let mut e = Vec3::ZERO;
+        for &li in res.picks() {
+            h = pcg_hash(h);
+            let u1 = xi_from_bits(h);
+            h = pcg_hash(h);
+            let u2 = xi_from_bits(h);
+            let l = &self.lights[li as usize];
+            let y = match l {
+                Light::Triangle(t) => t.sample(u1, u2),
+                _ => l.bound().center,
+            };
+            let v = x - y;
+            let d2 = v.dot(v);
+            if !slc_keep(r2[li as usize], d2) || d2 <= 0.0 {
+                continue;
+            }
+            let w = v / d2.sqrt();
+            let cos_x = -n.dot(w);
+            if cos_x <= 0.0 {
+                continue;
+            }
+            e += l.intensity(w) * (cos_x * inverse_square(d2) * slc_weight(rt2[li as usize], d2) * w_res);
+        }
+        Direct { irradiance: e, in_range: res.seen() }
+    }
+}
