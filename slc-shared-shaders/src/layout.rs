@@ -4,6 +4,7 @@
 //! field offsets against naga's layouter, so a `vec3f` alignment slip cannot
 //! pass silently.
 
+use slc_core::light::Light;
 use slc_core::wgsl::*;
 
 slc_core::shared! {
@@ -58,21 +59,24 @@ slc_core::shared! {
         pub count: u32,
     }
 
-    /// A triangle of the geometry BVH, 48 bytes.
+    /// A triangle of the geometry BVH, 48 bytes, in the BVH's leaf order.
     pub struct GpuTriangle {
         /// Vertex 0.
         pub v0: vec3f,
-        /// Padding.
-        pub pad0: f32,
+        /// Material index (path tracer: its albedo).
+        pub material: u32,
         /// Vertex 1.
         pub v1: vec3f,
-        /// Padding.
-        pub pad1: f32,
+        /// Light index of an emissive triangle, else `NO_LIGHT`.
+        pub light: u32,
         /// Vertex 2.
         pub v2: vec3f,
         /// Padding.
-        pub pad2: f32,
+        pub pad: u32,
     }
+
+    /// [`GpuTriangle::light`] of a triangle that does not emit.
+    pub const NO_LIGHT: u32 = 4294967295;
 
     /// A path vertex waiting for its explicit light connection, 48 bytes.
     pub struct GpuPathVertex {
@@ -88,6 +92,55 @@ slc_core::shared! {
         pub weight: vec3f,
         /// Padding.
         pub pad1: f32,
+    }
+
+    /// Per-pixel state of a path between `pt_extend` dispatches, 64 bytes.
+    pub struct GpuPathState {
+        /// Origin of the next ray.
+        pub origin: vec3f,
+        /// 1 while the path continues, else 0.
+        pub alive: u32,
+        /// Unit direction of the next ray.
+        pub dir: vec3f,
+        /// Random state of the path.
+        pub rng: u32,
+        /// Path throughput.
+        pub beta: vec3f,
+        /// Solid-angle pdf of the BSDF sample that made the next ray (0 for
+        /// camera rays: no MIS).
+        pub pdf_bsdf: f32,
+        /// The vertex the next ray leaves from (for the light pdf of MIS).
+        pub prev: vec3f,
+        /// Padding.
+        pub pad: u32,
+    }
+
+    /// Uniforms of `pt_extend`: camera, image, pass and depth.
+    pub struct PtParams {
+        /// Eye position.
+        pub cam_pos: vec3f,
+        /// Image width.
+        pub width: u32,
+        /// Camera right vector scaled by `tan(fov/2) · aspect`.
+        pub cam_right: vec3f,
+        /// Image height.
+        pub height: u32,
+        /// Camera up vector scaled by `tan(fov/2)`.
+        pub cam_up: vec3f,
+        /// Bounce this dispatch handles (0: camera rays).
+        pub depth: u32,
+        /// Unit view direction.
+        pub cam_forward: vec3f,
+        /// Seed.
+        pub seed: u32,
+        /// Pass number.
+        pub pass_index: u32,
+        /// Longest path (vertices after the camera).
+        pub max_depth: u32,
+        /// Offset of new rays along the normal (scene units).
+        pub eps: f32,
+        /// Nearest hit distance accepted (scene units).
+        pub t_min: f32,
     }
 
     /// Uniforms of `light_update`.
@@ -137,4 +190,57 @@ slc_core::shared! {
         /// Shadow-ray offset along the normal (scene units).
         pub eps: f32,
     }
+}
+
+/// The lights as the kernels read them, and the IES table (`slc_table`)
+/// holding each distinct profile once (a light's `ies_base` is its offset).
+/// The table is never empty (a zero stands in), since a binding cannot be.
+pub fn pack_lights(lights: &[Light]) -> (Vec<GpuLight>, Vec<f32>) {
+    let mut table: Vec<f32> = Vec::new();
+    let mut seen: Vec<(*const slc_core::ies::IesProfile, u32)> = Vec::new();
+    let mut out = Vec::with_capacity(lights.len());
+    for l in lights {
+        let mut g = GpuLight {
+            p0: l.bound().center,
+            kind: 0,
+            p1: vec3f(0.0, 0.0, 0.0),
+            a: 0.0,
+            p2: vec3f(0.0, 0.0, 0.0),
+            b: 0.0,
+            intensity: l.peak(),
+            ies_base: 0,
+        };
+        match l {
+            Light::Point(_) => g.kind = LIGHT_POINT,
+            Light::Vpl(v) => {
+                (g.kind, g.p1, g.intensity) = (LIGHT_VPL, v.normal(), v.flux());
+            }
+            Light::Spot(s) => {
+                let (cos_outer, cos_inner) = s.cone_cosines();
+                (g.kind, g.p1, g.a, g.b) = (LIGHT_SPOT, s.direction(), cos_outer, cos_inner);
+            }
+            Light::Ies(i) => {
+                let key = std::sync::Arc::as_ptr(i.profile_arc());
+                let base = match seen.iter().find(|(p, _)| *p == key) {
+                    Some(&(_, b)) => b,
+                    None => {
+                        let b = table.len() as u32;
+                        table.extend_from_slice(i.profile().table());
+                        seen.push((key, b));
+                        b
+                    }
+                };
+                (g.kind, g.p0, g.p1, g.p2, g.intensity, g.ies_base) = (LIGHT_IES, i.position(), i.nadir(), i.reference(), i.tint(), base);
+            }
+            Light::Triangle(t) => {
+                let [a, b, c] = t.vertices();
+                (g.kind, g.p0, g.p1, g.p2, g.a, g.intensity) = (LIGHT_TRIANGLE, a, b, c, t.area(), t.radiance());
+            }
+        }
+        out.push(g);
+    }
+    if table.is_empty() {
+        table.push(0.0);
+    }
+    (out, table)
 }

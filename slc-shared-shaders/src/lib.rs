@@ -52,6 +52,18 @@
 //! | 0.5 | `storage<read> r2: array<f32>` | `light_update` (SLC) or host (clamp: R²) |
 //! | 0.6 | `storage<read_write> irradiance: array<vec4f>` (rgb, kept) | this kernel |
 //!
+//! **`vpl_denoise`** (workgroup `tile × tile`, grid `(⌈w/tile⌉, ⌈h/tile⌉)`):
+//! cross-bilateral filter of the irradiance over the `period × period`
+//! window, weighted by `bilateral_weight` (normal, depth).
+//!
+//! | group.binding | type | written by |
+//! |---|---|---|
+//! | 0.0 | `uniform VplParams` | host |
+//! | 0.1 | `storage<read> gb_position: array<vec4f>` (w > 0: surface) | host / G-buffer pass |
+//! | 0.2 | `storage<read> gb_normal: array<vec4f>` (w: depth) | host / G-buffer pass |
+//! | 0.3 | `storage<read> irradiance: array<vec4f>` | `vpl_tiled` |
+//! | 0.4 | `storage<read_write> filtered: array<vec4f>` | this kernel |
+//!
 //! **`bsh_reservoir`** (1-D): direct light at shading points through the BSH
 //! and a k-slot reservoir, with shadow rays.
 //!
@@ -74,6 +86,30 @@
 //! `0.8 radiance: array<vec4f>` (accumulated, read_write) and
 //! `0.9 candidates: array<u32>` (in-range lights per vertex, for the MIS
 //! weight of implicit hits via `light_pdf`).
+//!
+//! **`pt_extend`** (1-D, one dispatch per bounce, `depth` in `PtParams`):
+//! per pixel, the camera ray (depth 0) or the ray sampled at the previous
+//! vertex; closest hit; emission weighted by MIS against the light strategy
+//! (whose pdf uses the previous vertex's `candidates`); the vertex for
+//! `pt_connect`; the next cosine-sampled ray and Russian roulette.
+//!
+//! | group.binding | type | written by |
+//! |---|---|---|
+//! | 0.0 | `uniform PtParams` | host |
+//! | 0.1 | `storage<read> lights: array<GpuLight>` | host |
+//! | 0.2 | `storage<read> rt2: array<f32>` | host |
+//! | 0.3 | `storage<read> bsh_nodes: array<BshNode>` | `bsh_refit` |
+//! | 0.4 | `storage<read> light_leaf: array<u32>` (BSH leaf of each light) | host |
+//! | 0.5 | `storage<read> geo_nodes: array<GpuGeoNode>` | host |
+//! | 0.6 | `storage<read> geo_tris: array<GpuTriangle>` (material, light) | host |
+//! | 0.7 | `storage<read> albedo: array<vec4f>` (per material) | host |
+//! | 0.8 | `storage<read> candidates: array<u32>` | `pt_connect` |
+//! | 0.9 | `storage<read_write> paths: array<GpuPathState>` | this kernel |
+//! | 0.10 | `storage<read_write> vertices: array<GpuPathVertex>` | this kernel |
+//! | 0.11 | `storage<read_write> radiance: array<vec4f>` (accumulated) | this kernel, `pt_connect` |
+//!
+//! A pass of the path tracer: `light_update`, `bsh_refit` (every level),
+//! then `pt_extend` and `pt_connect` once per depth (slc-wgpu's `pt`).
 //!
 //! ## Embedding one kernel in your own wgpu pass
 //!
@@ -208,11 +244,16 @@ pub enum Kernel {
     BshReservoir,
     /// Path-tracing light connection with MIS.
     PtConnect,
+    /// Path-tracing bounce: camera/BSDF ray, closest hit, emission with MIS.
+    PtExtend,
+    /// Cross-bilateral denoise of the VPL irradiance.
+    VplDenoise,
 }
 
 impl Kernel {
     /// All kernels.
-    pub const ALL: [Kernel; 5] = [Kernel::LightUpdate, Kernel::BshRefit, Kernel::VplTiled, Kernel::BshReservoir, Kernel::PtConnect];
+    pub const ALL: [Kernel; 7] =
+        [Kernel::LightUpdate, Kernel::BshRefit, Kernel::VplTiled, Kernel::VplDenoise, Kernel::BshReservoir, Kernel::PtConnect, Kernel::PtExtend];
 
     /// File stem / name.
     pub fn name(self) -> &'static str {
@@ -222,6 +263,8 @@ impl Kernel {
             Kernel::VplTiled => "vpl_tiled",
             Kernel::BshReservoir => "bsh_reservoir",
             Kernel::PtConnect => "pt_connect",
+            Kernel::PtExtend => "pt_extend",
+            Kernel::VplDenoise => "vpl_denoise",
         }
     }
 }
@@ -282,7 +325,7 @@ impl Default for Features {
     }
 }
 
-const TEMPLATES: [(&str, &str); 10] = [
+const TEMPLATES: [(&str, &str); 13] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
     ("geometry.wgsl", include_str!("templates/geometry.wgsl")),
@@ -290,8 +333,11 @@ const TEMPLATES: [(&str, &str); 10] = [
     ("light_update", include_str!("templates/light_update.wgsl")),
     ("bsh_refit", include_str!("templates/bsh_refit.wgsl")),
     ("vpl_tiled", include_str!("templates/vpl_tiled.wgsl")),
+    ("vpl_denoise", include_str!("templates/vpl_denoise.wgsl")),
     ("bsh_reservoir", include_str!("templates/bsh_reservoir.wgsl")),
     ("pt_connect", include_str!("templates/pt_connect.wgsl")),
+    ("pt_mis.wgsl", include_str!("templates/pt_mis.wgsl")),
+    ("pt_extend", include_str!("templates/pt_extend.wgsl")),
     ("layout", ""),
 ];
 
@@ -311,6 +357,9 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
         return bad(format!("workgroup size {} must be in 1..=256", f.workgroup_size));
     }
     match kernel {
+        Kernel::VplDenoise if !(1..=16).contains(&f.tile_size) || !(1..=16).contains(&f.interleave) => {
+            return bad(format!("vpl_denoise: tile {} and period {} must be in 1..=16", f.tile_size, f.interleave));
+        }
         Kernel::VplTiled => {
             if f.lights != (LightSet { vpl: true, ..LightSet::default() }) {
                 return bad(format!("vpl_tiled shades VPLs only; the scene asks for [{}]", f.lights.names().join(", ")));
@@ -330,7 +379,7 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
                 ));
             }
         }
-        Kernel::BshReservoir | Kernel::PtConnect if f.lights.is_empty() => {
+        Kernel::BshReservoir | Kernel::PtConnect | Kernel::PtExtend if f.lights.is_empty() => {
             return bad(format!("{} needs at least one light type", kernel.name()));
         }
         _ => {}
@@ -442,13 +491,14 @@ pub fn translate(g: &Generated) -> Result<Translations, ShaderError> {
 }
 
 /// Every kernel that applies to the features, generated and validated:
-/// `vpl_tiled` only for a VPL-only light set, the others always.
+/// `vpl_tiled` and `vpl_denoise` only for a VPL-only light set, the others
+/// always.
 pub fn all_kernels(features: &Features) -> Result<Vec<Generated>, ShaderError> {
     Kernel::ALL
         .iter()
         .filter(|&&k| {
             let only_vpl = features.lights == LightSet { vpl: true, ..LightSet::default() };
-            k != Kernel::VplTiled || only_vpl
+            !matches!(k, Kernel::VplTiled | Kernel::VplDenoise) || only_vpl
         })
         .map(|&k| generate_module(k, features))
         .collect()

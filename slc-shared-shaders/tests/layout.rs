@@ -24,7 +24,9 @@ fn rust_twins_match_naga_layout() {
     let structs = [
         fields!(GpuLight, p0, kind, p1, a, p2, b, intensity, ies_base),
         fields!(GpuGeoNode, bmin, first, bmax, count),
-        fields!(GpuTriangle, v0, pad0, v1, pad1, v2, pad2),
+        fields!(GpuTriangle, v0, material, v1, light, v2, pad),
+        fields!(GpuPathState, origin, alive, dir, rng, beta, pdf_bsdf, prev, pad),
+        fields!(PtParams, cam_pos, width, cam_right, height, cam_up, depth, cam_forward, seed, pass_index, max_depth, eps, t_min),
         fields!(GpuPathVertex, position, alive, normal, pad, weight, pad1),
         fields!(FrameParams, light_count, seed, frame, pad),
         fields!(RefitParams, first, count, pad0, pad1),

@@ -1,5 +1,6 @@
 //! naga validates every variant the generator can produce: all 31 non-empty
-//! light-type subsets × reservoir sizes × heuristics for the BSH kernels,
+//! light-type subsets × reservoir sizes × heuristics for the BSH and path
+//! tracing kernels,
 //! tile sizes × periods × methods for the VPL kernel; a sample of them is
 //! translated to every back end; unsupported combinations are typed errors.
 
@@ -16,7 +17,7 @@ fn every_bsh_variant_validates() {
         let lights = LightSet::from_bits(bits);
         for k in [1, 8, 32] {
             for heuristic in [Heuristic::Balance, Heuristic::Power] {
-                for kernel in [Kernel::BshReservoir, Kernel::PtConnect] {
+                for kernel in [Kernel::BshReservoir, Kernel::PtConnect, Kernel::PtExtend] {
                     let f = Features { lights, reservoir_k: k, heuristic, ..Features::default() };
                     let g = generate_module(kernel, &f).unwrap_or_else(|e| panic!("{:?} {f:?}: {e}", kernel));
                     // Only the scene's light types are compiled in.
@@ -41,7 +42,7 @@ fn every_bsh_variant_validates() {
             n += 1;
         }
     }
-    assert_eq!(n, 31 * 3 * 2 * 2 + 8);
+    assert_eq!(n, 31 * 3 * 2 * 3 + 8);
 }
 
 #[test]

@@ -33,5 +33,5 @@ fn templates_do_not_contain_core_formulas() {
         }
         n += 1;
     }
-    assert_eq!(n, 9);
+    assert_eq!(n, 12);
 }

@@ -1,28 +1,40 @@
-// Shadow rays through the geometry BVH (bindings geo_nodes, geo_tris).
+// Ray casting through the geometry BVH (bindings geo_nodes, geo_tris): one
+// stack traversal serves closest-hit and shadow (any-hit) rays.
 
-/// `true` when the open segment from `a` to `b` hits a triangle.
-fn occluded(a: vec3f, b: vec3f) -> bool {
-    let dv = b - a;
-    let len = length(dv);
-    if len <= 0.0 || arrayLength(&geo_nodes) == 0u {
-        return false;
+/// A ray hit: distance `t` and triangle index (in `geo_tris`), or
+/// `tri = NO_LIGHT` for a miss.
+struct GeoHit {
+    t: f32,
+    tri: u32,
+}
+
+/// The closest triangle hit along `o + t·d` (unit `d`) with
+/// `t ∈ (t_min, t_max)`, or with `any_hit` the first one found.
+fn trace(o: vec3f, d: vec3f, t_min: f32, t_max: f32, any_hit: bool) -> GeoHit {
+    var hit: GeoHit;
+    hit.t = t_max;
+    hit.tri = NO_LIGHT;
+    if arrayLength(&geo_nodes) == 0u {
+        return hit;
     }
-    let d = dv / len;
     // A zero direction component would divide by zero: nudge it.
     let inv_d = 1.0 / select(d, vec3f(1e-30), abs(d) < vec3f(1e-30));
-    let eps = 1e-4 * len;
-    let t_max = len - eps;
     var stack: array<u32, 64>;
     var sp = 0u;
     var node = 0u;
     loop {
         let n = geo_nodes[node];
-        if ray_aabb(a, inv_d, n.bmin, n.bmax, t_max) >= 0.0 {
+        if ray_aabb(o, inv_d, n.bmin, n.bmax, hit.t) >= 0.0 {
             if n.count > 0u {
                 for (var i = n.first; i < n.first + n.count; i++) {
                     let t = geo_tris[i];
-                    if ray_triangle(a, d, t.v0, t.v1, t.v2, eps, t_max) > 0.0 {
-                        return true;
+                    let th = ray_triangle(o, d, t.v0, t.v1, t.v2, t_min, hit.t);
+                    if th > 0.0 {
+                        hit.t = th;
+                        hit.tri = i;
+                        if any_hit {
+                            return hit;
+                        }
                     }
                 }
             } else {
@@ -40,5 +52,17 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
         sp -= 1u;
         node = stack[sp];
     }
-    return false;
+    return hit;
+}
+
+/// `true` when the open segment from `a` to `b` hits a triangle (a relative
+/// epsilon keeps the end points' own surfaces out).
+fn occluded(a: vec3f, b: vec3f) -> bool {
+    let dv = b - a;
+    let len = length(dv);
+    if len <= 0.0 {
+        return false;
+    }
+    let eps = 1e-4 * len;
+    return trace(a, dv / len, eps, len - eps, true).tri != NO_LIGHT;
 }

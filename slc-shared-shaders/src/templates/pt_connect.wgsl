@@ -2,6 +2,7 @@
 {% include "lights.wgsl" %}
 {% include "geometry.wgsl" %}
 {% include "bsh_collect.wgsl" %}
+{% include "pt_mis.wgsl" %}
 // Explicit light connection of a progressive path tracer: at every live path
 // vertex, the BSH and a {{ k }}-slot reservoir pick lights; each pick is
 // sampled, passes the RR test at the sampled point, casts a shadow ray and is
@@ -20,35 +21,6 @@
 @group(0) @binding(8) var<storage, read_write> radiance: array<vec4f>;
 @group(0) @binding(9) var<storage, read_write> candidates: array<u32>;
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
-
-/// MIS weight of the light strategy against the BSDF strategy.
-fn mis_weight(pdf_light: f32, pdf_bsdf: f32) -> f32 {
-{% if heuristic == "power" %}
-    return mis_power(pdf_light, pdf_bsdf);
-{% else %}
-    return mis_balance(pdf_light, pdf_bsdf);
-{% endif %}
-}
-
-/// Solid-angle pdf with which the light strategy at `x` (whose traversal saw
-/// `n_seen` in-range lights) produces the point `y` on area light `li`: the
-/// reservoir's selection probability min(k/n, 1), the RR probability at
-/// |x − y|, and the area pdf converted to solid angle. `in_range` says
-/// whether the light's range sphere (its BSH leaf) contains `x`; if not, the
-/// light strategy cannot produce `y` and the pdf is 0. The path tracer's
-/// BSDF bounce uses this to weight implicit hits on emitters.
-fn light_pdf(li: u32, x: vec3f, y: vec3f, n_seen: u32, in_range: bool) -> f32 {
-    let l = lights[li];
-    let area = light_area(l);
-    let v = x - y;
-    let d2 = dot(v, v);
-    if !in_range || area <= 0.0 || n_seen == 0u || d2 <= 0.0 {
-        return 0.0;
-    }
-    let cos_y = dot(light_normal(l), v / sqrt(d2));
-    let select_p = 1.0 / reservoir_weight(n_seen, K);
-    return select_p * rr_probability(rt2[li], d2) * area_to_solid_angle_pdf(1.0 / area, d2, cos_y);
-}
 
 @compute @workgroup_size({{ wg }})
 fn main(@builtin(global_invocation_id) gid: vec3u) {
@@ -77,9 +49,12 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         let c = connect(li, x, n, w_res, u1, xi_from_bits(h), params.eps);
         var mis = 1.0;
         if light_area(lights[li]) > 0.0 && c.cos_x > 0.0 {
-            mis = mis_weight(light_pdf(li, x, c.y, picks.n, true), cosine_pdf(c.cos_x));
+            mis = mis_weight(light_pdf(li, x, c.y, picks.n - 1u), cosine_pdf(c.cos_x));
         }
         sum += c.e * mis;
     }
-    radiance[i] += vec4f(vtx.weight * sum, 0.0);
+    let add = vtx.weight * sum;
+    if finite3(add) {
+        radiance[i] += vec4f(add, 0.0);
+    }
 }

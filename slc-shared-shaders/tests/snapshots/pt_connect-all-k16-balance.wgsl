@@ -15,10 +15,17 @@ struct GpuGeoNode {
     bmin: vec3f, first: u32, bmax: vec3f, count: u32
 }
 struct GpuTriangle {
-    v0: vec3f, pad0: f32, v1: vec3f, pad1: f32, v2: vec3f, pad2: f32
+    v0: vec3f, material: u32, v1: vec3f, light: u32, v2: vec3f, pad: u32
 }
+const NO_LIGHT: u32 = 4294967295;
 struct GpuPathVertex {
     position: vec3f, alive: u32, normal: vec3f, pad: f32, weight: vec3f, pad1: f32
+}
+struct GpuPathState {
+    origin: vec3f, alive: u32, dir: vec3f, rng: u32, beta: vec3f, pdf_bsdf: f32, prev: vec3f, pad: u32
+}
+struct PtParams {
+    cam_pos: vec3f, width: u32, cam_right: vec3f, height: u32, cam_up: vec3f, depth: u32, cam_forward: vec3f, seed: u32, pass_index: u32, max_depth: u32, eps: f32, t_min: f32
 }
 struct FrameParams {
     light_count: u32, seed: u32, frame: u32, pad: u32
@@ -176,6 +183,40 @@ fn area_to_solid_angle_pdf(pdf_area: f32, d2: f32, cos_light: f32) -> f32 {
     }
     return pdf_area * d2 / c;
 }
+fn atan_portable(x: f32) -> f32 {
+    let a: f32 = abs(x);
+    var base: f32 = 0.0;
+    var t: f32 = a;
+    if a > 2.4142137 {
+        base = 1.5707964;
+        t = -1.0 / a;
+    } else if a > 0.41421357 {
+        base = 0.7853982;
+        t = (a - 1.0) / (a + 1.0);
+    }
+    let z: f32 = t * t;
+    let r: f32 = base + ((((0.080537446 * z - 0.13877685) * z + 0.19977711) * z - 0.3333295) * z * t + t);
+    return select(r, -r, x < 0.0);
+}
+fn atan2_portable(y: f32, x: f32) -> f32 {
+    if x == 0.0 {
+        if y > 0.0 {
+            return 1.5707964;
+        }
+        if y < 0.0 {
+            return -1.5707964;
+        }
+        return 0.0;
+    }
+    let a: f32 = atan_portable(y / x);
+    if x > 0.0 {
+        return a;
+    }
+    if y >= 0.0 {
+        return a + 3.1415927;
+    }
+    return a - 3.1415927;
+}
 fn ies_fold_c(c: f32, h_first: f32, h_last: f32) -> f32 {
     var a: f32 = c - 360.0 * floor(c / 360.0);
     if h_last <= 0.0 {
@@ -249,9 +290,9 @@ fn ies_candela(tab: Table, base: u32, gamma: f32, c: f32) -> f32 {
     return a * (1.0 - th) + b * th;
 }
 fn ies_candela_dir(tab: Table, base: u32, wn: f32, wr: f32, ws: f32) -> f32 {
-    let gamma: f32 = degrees(acos(clamp(wn, -1.0, 1.0)));
+    let gamma: f32 = degrees(atan2_portable(sqrt(wr * wr + ws * ws), wn));
     let on_axis: bool = abs(wr) + abs(ws) <= 0.0;
-    let c: f32 = select(degrees(atan2(ws, wr)), 0.0, on_axis);
+    let c: f32 = select(degrees(atan2_portable(ws, wr)), 0.0, on_axis);
     return ies_candela(tab, base, gamma, c);
 }
 const BSH_NONE: u32 = 4294967295;
@@ -347,8 +388,31 @@ fn mis_power(pdf_a: f32, pdf_b: f32) -> f32 {
     }
     return a2 / s;
 }
+fn lambert_brdf(rho: vec3f) -> vec3f {
+    return rho * INV_PI;
+}
 fn cosine_pdf(cos_theta: f32) -> f32 {
     return max(cos_theta, 0.0) * INV_PI;
+}
+fn cosine_direction(n: vec3f, u1: f32, u2: f32) -> vec3f {
+    let s: f32 = select(-1.0, 1.0, n.z >= 0.0);
+    let a: f32 = -1.0 / (s + n.z);
+    let b: f32 = n.x * n.y * a;
+    let t: vec3f = vec3f(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
+    let bt: vec3f = vec3f(b, s + n.y * n.y * a, -n.y);
+    let r: f32 = sqrt(u1);
+    let phi: f32 = 6.2831855 * u2;
+    return normalize(t * (r * cos(phi)) + bt * (r * sin(phi)) + n * sqrt(max(1.0 - u1, 0.0)));
+}
+const DEPTH_SIGMA: f32 = 0.05;
+fn bilateral_weight(n: vec3f, nj: vec3f, z: f32, zj: f32, inv_sz: f32) -> f32 {
+    let dn: f32 = max(dot(n, nj), 0.0);
+    let dn2: f32 = dn * dn;
+    let dn4: f32 = dn2 * dn2;
+    let dn8: f32 = dn4 * dn4;
+    let d: f32 = (zj - z) * inv_sz;
+    let t: f32 = max(1.0 - d * d, 0.0);
+    return dn8 * dn8 * t * t;
 }
 
 // Light evaluation for the light types this scene has (others compiled out).
@@ -394,31 +458,43 @@ fn light_normal(l: GpuLight) -> vec3f {
     }
     return vec3f(0.0);
 }
-// Shadow rays through the geometry BVH (bindings geo_nodes, geo_tris).
+// Ray casting through the geometry BVH (bindings geo_nodes, geo_tris): one
+// stack traversal serves closest-hit and shadow (any-hit) rays.
 
-/// `true` when the open segment from `a` to `b` hits a triangle.
-fn occluded(a: vec3f, b: vec3f) -> bool {
-    let dv = b - a;
-    let len = length(dv);
-    if len <= 0.0 || arrayLength(&geo_nodes) == 0u {
-        return false;
+/// A ray hit: distance `t` and triangle index (in `geo_tris`), or
+/// `tri = NO_LIGHT` for a miss.
+struct GeoHit {
+    t: f32,
+    tri: u32,
+}
+
+/// The closest triangle hit along `o + t·d` (unit `d`) with
+/// `t ∈ (t_min, t_max)`, or with `any_hit` the first one found.
+fn trace(o: vec3f, d: vec3f, t_min: f32, t_max: f32, any_hit: bool) -> GeoHit {
+    var hit: GeoHit;
+    hit.t = t_max;
+    hit.tri = NO_LIGHT;
+    if arrayLength(&geo_nodes) == 0u {
+        return hit;
     }
-    let d = dv / len;
     // A zero direction component would divide by zero: nudge it.
     let inv_d = 1.0 / select(d, vec3f(1e-30), abs(d) < vec3f(1e-30));
-    let eps = 1e-4 * len;
-    let t_max = len - eps;
     var stack: array<u32, 64>;
     var sp = 0u;
     var node = 0u;
     loop {
         let n = geo_nodes[node];
-        if ray_aabb(a, inv_d, n.bmin, n.bmax, t_max) >= 0.0 {
+        if ray_aabb(o, inv_d, n.bmin, n.bmax, hit.t) >= 0.0 {
             if n.count > 0u {
                 for (var i = n.first; i < n.first + n.count; i++) {
                     let t = geo_tris[i];
-                    if ray_triangle(a, d, t.v0, t.v1, t.v2, eps, t_max) > 0.0 {
-                        return true;
+                    let th = ray_triangle(o, d, t.v0, t.v1, t.v2, t_min, hit.t);
+                    if th > 0.0 {
+                        hit.t = th;
+                        hit.tri = i;
+                        if any_hit {
+                            return hit;
+                        }
                     }
                 }
             } else {
@@ -436,7 +512,19 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
         sp -= 1u;
         node = stack[sp];
     }
-    return false;
+    return hit;
+}
+
+/// `true` when the open segment from `a` to `b` hits a triangle (a relative
+/// epsilon keeps the end points' own surfaces out).
+fn occluded(a: vec3f, b: vec3f) -> bool {
+    let dv = b - a;
+    let len = length(dv);
+    if len <= 0.0 {
+        return false;
+    }
+    let eps = 1e-4 * len;
+    return trace(a, dv / len, eps, len - eps, true).tri != NO_LIGHT;
 }
 // The talk's stackless BSH traversal ("Improving tree traversal & shading")
 // feeding a k-slot reservoir (Algorithm R): no shading inside the loop, and
@@ -518,6 +606,40 @@ fn connect(li: u32, x: vec3f, n: vec3f, w_res: f32, u1: f32, u2: f32, eps: f32) 
     c.e = light_intensity(l, w) * (c.cos_x * inverse_square(d2) * slc_weight(rt2[li], d2) * w_res);
     return c;
 }
+// MIS of the path tracer's two strategies (balance heuristic): the
+// light strategy (BSH + 16-slot reservoir + RR) against cosine BSDF
+// sampling. Needs bindings `lights` and `rt2`.
+
+/// MIS weight of strategy `a` against strategy `b`.
+fn mis_weight(pdf_a: f32, pdf_b: f32) -> f32 {
+    return mis_balance(pdf_a, pdf_b);
+}
+
+/// Solid-angle pdf with which the light strategy at `x` produces the point
+/// `y` on area light `li`, when `others` other lights are in range at `x`:
+/// the reservoir's selection probability min(k/(others + 1), 1), the RR
+/// probability at |x − y| and the area pdf converted to solid angle (talk:
+/// "Multiple importance sampling"). It must not depend on the light's own ξ
+/// (whether this pass's sphere contains `x`): a pdf that is 0 when the
+/// sphere misses makes the two weights sum to more than one in expectation
+/// and biases the image (the CPU path tracer's test found +40%).
+fn light_pdf(li: u32, x: vec3f, y: vec3f, others: u32) -> f32 {
+    let l = lights[li];
+    let area = light_area(l);
+    let v = x - y;
+    let d2 = dot(v, v);
+    if area <= 0.0 || d2 <= 0.0 {
+        return 0.0;
+    }
+    let cos_y = dot(light_normal(l), v / sqrt(d2));
+    let select_p = 1.0 / reservoir_weight(others + 1u, K);
+    return select_p * rr_probability(rt2[li], d2) * area_to_solid_angle_pdf(1.0 / area, d2, cos_y);
+}
+
+/// `true` when every component of `v` is finite (NaN compares false).
+fn finite3(v: vec3f) -> bool {
+    return all(abs(v) <= vec3f(3.4028235e38));
+}
 // Explicit light connection of a progressive path tracer: at every live path
 // vertex, the BSH and a 16-slot reservoir pick lights; each pick is
 // sampled, passes the RR test at the sampled point, casts a shadow ray and is
@@ -536,31 +658,6 @@ fn connect(li: u32, x: vec3f, n: vec3f, w_res: f32, u1: f32, u2: f32, eps: f32) 
 @group(0) @binding(8) var<storage, read_write> radiance: array<vec4f>;
 @group(0) @binding(9) var<storage, read_write> candidates: array<u32>;
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
-
-/// MIS weight of the light strategy against the BSDF strategy.
-fn mis_weight(pdf_light: f32, pdf_bsdf: f32) -> f32 {
-    return mis_balance(pdf_light, pdf_bsdf);
-}
-
-/// Solid-angle pdf with which the light strategy at `x` (whose traversal saw
-/// `n_seen` in-range lights) produces the point `y` on area light `li`: the
-/// reservoir's selection probability min(k/n, 1), the RR probability at
-/// |x − y|, and the area pdf converted to solid angle. `in_range` says
-/// whether the light's range sphere (its BSH leaf) contains `x`; if not, the
-/// light strategy cannot produce `y` and the pdf is 0. The path tracer's
-/// BSDF bounce uses this to weight implicit hits on emitters.
-fn light_pdf(li: u32, x: vec3f, y: vec3f, n_seen: u32, in_range: bool) -> f32 {
-    let l = lights[li];
-    let area = light_area(l);
-    let v = x - y;
-    let d2 = dot(v, v);
-    if !in_range || area <= 0.0 || n_seen == 0u || d2 <= 0.0 {
-        return 0.0;
-    }
-    let cos_y = dot(light_normal(l), v / sqrt(d2));
-    let select_p = 1.0 / reservoir_weight(n_seen, K);
-    return select_p * rr_probability(rt2[li], d2) * area_to_solid_angle_pdf(1.0 / area, d2, cos_y);
-}
 
 @compute @workgroup_size(64)
 fn main(@builtin(global_invocation_id) gid: vec3u) {
@@ -589,9 +686,12 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         let c = connect(li, x, n, w_res, u1, xi_from_bits(h), params.eps);
         var mis = 1.0;
         if light_area(lights[li]) > 0.0 && c.cos_x > 0.0 {
-            mis = mis_weight(light_pdf(li, x, c.y, picks.n, true), cosine_pdf(c.cos_x));
+            mis = mis_weight(light_pdf(li, x, c.y, picks.n - 1u), cosine_pdf(c.cos_x));
         }
         sum += c.e * mis;
     }
-    radiance[i] += vec4f(vtx.weight * sum, 0.0);
+    let add = vtx.weight * sum;
+    if finite3(add) {
+        radiance[i] += vec4f(add, 0.0);
+    }
 }

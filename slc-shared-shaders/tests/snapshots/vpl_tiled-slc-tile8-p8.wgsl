@@ -15,10 +15,17 @@ struct GpuGeoNode {
     bmin: vec3f, first: u32, bmax: vec3f, count: u32
 }
 struct GpuTriangle {
-    v0: vec3f, pad0: f32, v1: vec3f, pad1: f32, v2: vec3f, pad2: f32
+    v0: vec3f, material: u32, v1: vec3f, light: u32, v2: vec3f, pad: u32
 }
+const NO_LIGHT: u32 = 4294967295;
 struct GpuPathVertex {
     position: vec3f, alive: u32, normal: vec3f, pad: f32, weight: vec3f, pad1: f32
+}
+struct GpuPathState {
+    origin: vec3f, alive: u32, dir: vec3f, rng: u32, beta: vec3f, pdf_bsdf: f32, prev: vec3f, pad: u32
+}
+struct PtParams {
+    cam_pos: vec3f, width: u32, cam_right: vec3f, height: u32, cam_up: vec3f, depth: u32, cam_forward: vec3f, seed: u32, pass_index: u32, max_depth: u32, eps: f32, t_min: f32
 }
 struct FrameParams {
     light_count: u32, seed: u32, frame: u32, pad: u32
@@ -176,6 +183,40 @@ fn area_to_solid_angle_pdf(pdf_area: f32, d2: f32, cos_light: f32) -> f32 {
     }
     return pdf_area * d2 / c;
 }
+fn atan_portable(x: f32) -> f32 {
+    let a: f32 = abs(x);
+    var base: f32 = 0.0;
+    var t: f32 = a;
+    if a > 2.4142137 {
+        base = 1.5707964;
+        t = -1.0 / a;
+    } else if a > 0.41421357 {
+        base = 0.7853982;
+        t = (a - 1.0) / (a + 1.0);
+    }
+    let z: f32 = t * t;
+    let r: f32 = base + ((((0.080537446 * z - 0.13877685) * z + 0.19977711) * z - 0.3333295) * z * t + t);
+    return select(r, -r, x < 0.0);
+}
+fn atan2_portable(y: f32, x: f32) -> f32 {
+    if x == 0.0 {
+        if y > 0.0 {
+            return 1.5707964;
+        }
+        if y < 0.0 {
+            return -1.5707964;
+        }
+        return 0.0;
+    }
+    let a: f32 = atan_portable(y / x);
+    if x > 0.0 {
+        return a;
+    }
+    if y >= 0.0 {
+        return a + 3.1415927;
+    }
+    return a - 3.1415927;
+}
 fn ies_fold_c(c: f32, h_first: f32, h_last: f32) -> f32 {
     var a: f32 = c - 360.0 * floor(c / 360.0);
     if h_last <= 0.0 {
@@ -249,9 +290,9 @@ fn ies_candela(tab: Table, base: u32, gamma: f32, c: f32) -> f32 {
     return a * (1.0 - th) + b * th;
 }
 fn ies_candela_dir(tab: Table, base: u32, wn: f32, wr: f32, ws: f32) -> f32 {
-    let gamma: f32 = degrees(acos(clamp(wn, -1.0, 1.0)));
+    let gamma: f32 = degrees(atan2_portable(sqrt(wr * wr + ws * ws), wn));
     let on_axis: bool = abs(wr) + abs(ws) <= 0.0;
-    let c: f32 = select(degrees(atan2(ws, wr)), 0.0, on_axis);
+    let c: f32 = select(degrees(atan2_portable(ws, wr)), 0.0, on_axis);
     return ies_candela(tab, base, gamma, c);
 }
 const BSH_NONE: u32 = 4294967295;
@@ -347,8 +388,31 @@ fn mis_power(pdf_a: f32, pdf_b: f32) -> f32 {
     }
     return a2 / s;
 }
+fn lambert_brdf(rho: vec3f) -> vec3f {
+    return rho * INV_PI;
+}
 fn cosine_pdf(cos_theta: f32) -> f32 {
     return max(cos_theta, 0.0) * INV_PI;
+}
+fn cosine_direction(n: vec3f, u1: f32, u2: f32) -> vec3f {
+    let s: f32 = select(-1.0, 1.0, n.z >= 0.0);
+    let a: f32 = -1.0 / (s + n.z);
+    let b: f32 = n.x * n.y * a;
+    let t: vec3f = vec3f(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
+    let bt: vec3f = vec3f(b, s + n.y * n.y * a, -n.y);
+    let r: f32 = sqrt(u1);
+    let phi: f32 = 6.2831855 * u2;
+    return normalize(t * (r * cos(phi)) + bt * (r * sin(phi)) + n * sqrt(max(1.0 - u1, 0.0)));
+}
+const DEPTH_SIGMA: f32 = 0.05;
+fn bilateral_weight(n: vec3f, nj: vec3f, z: f32, zj: f32, inv_sz: f32) -> f32 {
+    let dn: f32 = max(dot(n, nj), 0.0);
+    let dn2: f32 = dn * dn;
+    let dn4: f32 = dn2 * dn2;
+    let dn8: f32 = dn4 * dn4;
+    let d: f32 = (zj - z) * inv_sz;
+    let t: f32 = max(1.0 - d * d, 0.0);
+    return dn8 * dn8 * t * t;
 }
 
 // Light evaluation for the light types this scene has (others compiled out).

@@ -1,0 +1,122 @@
+{% include "header.wgsl" %}
+{% include "lights.wgsl" %}
+{% include "geometry.wgsl" %}
+const K: u32 = {{ k }}u;
+{% include "pt_mis.wgsl" %}
+// One bounce of the wavefront path tracer, per pixel: at depth 0 a jittered
+// camera ray, later the ray `pt_extend` sampled at the previous vertex. The
+// closest hit adds emission (MIS-weighted against the light strategy, whose
+// pdf at the previous vertex uses the in-range count `pt_connect` left in
+// `candidates`), writes the vertex for `pt_connect`, samples the cosine
+// BSDF for the next ray and plays Russian roulette on path length from the
+// third bounce, as the CPU path tracer does.
+
+@group(0) @binding(0) var<uniform> params: PtParams;
+@group(0) @binding(1) var<storage, read> lights: array<GpuLight>;
+@group(0) @binding(2) var<storage, read> rt2: array<f32>;
+@group(0) @binding(3) var<storage, read> bsh_nodes: array<BshNode>;
+@group(0) @binding(4) var<storage, read> light_leaf: array<u32>;
+@group(0) @binding(5) var<storage, read> geo_nodes: array<GpuGeoNode>;
+@group(0) @binding(6) var<storage, read> geo_tris: array<GpuTriangle>;
+@group(0) @binding(7) var<storage, read> albedo: array<vec4f>;
+@group(0) @binding(8) var<storage, read> candidates: array<u32>;
+@group(0) @binding(9) var<storage, read_write> paths: array<GpuPathState>;
+@group(0) @binding(10) var<storage, read_write> vertices: array<GpuPathVertex>;
+@group(0) @binding(11) var<storage, read_write> radiance: array<vec4f>;
+@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+
+/// Next uniform in [0, 1) of a path's random state.
+fn next_uniform(state: ptr<function, u32>) -> f32 {
+    *state = pcg_hash(*state);
+    return xi_from_bits(*state);
+}
+
+@compute @workgroup_size({{ wg }})
+fn main(@builtin(global_invocation_id) gid: vec3u) {
+    let i = gid.x;
+    if i >= params.width * params.height {
+        return;
+    }
+    var st: GpuPathState;
+    if params.depth == 0u {
+        var h = pcg_hash(params.seed ^ pcg_hash(i ^ pcg_hash(params.pass_index + 0x9E3779B9u)));
+        let jx = next_uniform(&h) - 0.5;
+        let jy = next_uniform(&h) - 0.5;
+        let px = f32(i % params.width) + 0.5 + jx;
+        let py = f32(i / params.width) + 0.5 + jy;
+        let sx = 2.0 * px / f32(params.width) - 1.0;
+        let sy = 1.0 - 2.0 * py / f32(params.height);
+        st.origin = params.cam_pos;
+        st.dir = normalize(params.cam_forward + params.cam_right * sx + params.cam_up * sy);
+        st.alive = 1u;
+        st.rng = h;
+        st.beta = vec3f(1.0);
+        st.pdf_bsdf = 0.0;
+        st.prev = params.cam_pos;
+    } else {
+        st = paths[i];
+    }
+    var v: GpuPathVertex;
+    v.alive = 0u;
+    if st.alive == 0u {
+        vertices[i] = v;
+        return;
+    }
+    let hit = trace(st.origin, st.dir, params.t_min, 3.4028235e38, false);
+    if hit.tri == NO_LIGHT {
+        st.alive = 0u;
+        paths[i] = st;
+        vertices[i] = v;
+        return;
+    }
+    let tri = geo_tris[hit.tri];
+    let x = st.origin + st.dir * hit.t;
+    let gn = normalize(cross(tri.v1 - tri.v0, tri.v2 - tri.v0));
+    let n = select(gn, -gn, dot(gn, st.dir) > 0.0);
+    // Emission, one-sided like the light, seen directly or by BSDF sampling.
+    if tri.light != NO_LIGHT && dot(gn, st.dir) < 0.0 {
+        var w = 1.0;
+        if st.pdf_bsdf > 0.0 {
+            let leaf = bsh_nodes[light_leaf[tri.light]];
+            let seen = candidates[i];
+            let in_range = sphere_contains_point(leaf.center, leaf.radius, st.prev);
+            let others = seen - select(0u, 1u, in_range && seen > 0u);
+            w = mis_weight(st.pdf_bsdf, light_pdf(tri.light, st.prev, x, others));
+        }
+        let add = st.beta * lights[tri.light].intensity * w;
+        if finite3(add) {
+            radiance[i] += vec4f(add, 0.0);
+        }
+    }
+    let rho = albedo[tri.material].xyz;
+    v.position = x;
+    v.normal = n;
+    v.weight = st.beta * lambert_brdf(rho);
+    v.alive = 1u;
+    vertices[i] = v;
+    // Cosine-weighted BSDF sample: f·cos/pdf = ρ.
+    var rng = st.rng;
+    let u1 = next_uniform(&rng);
+    let u2 = next_uniform(&rng);
+    let nd = cosine_direction(n, u1, u2);
+    let cos_o = dot(nd, n);
+    st.beta *= rho;
+    st.prev = x;
+    st.pdf_bsdf = cosine_pdf(cos_o);
+    st.origin = x + n * params.eps;
+    st.dir = nd;
+    if cos_o <= 0.0 || params.depth + 1u >= params.max_depth {
+        st.alive = 0u;
+    }
+    // Russian roulette on path length from the third bounce.
+    if params.depth >= 2u && st.alive == 1u {
+        let q = clamp(max(max(st.beta.x, st.beta.y), st.beta.z), 0.05, 0.95);
+        if next_uniform(&rng) >= q {
+            st.alive = 0u;
+        } else {
+            st.beta /= q;
+        }
+    }
+    st.rng = rng;
+    paths[i] = st;
+}
