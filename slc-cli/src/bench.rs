@@ -154,10 +154,10 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
         width: loaded.width,
         height: loaded.height,
         lights: ctx.vpls().len(),
-        timing: if gpu.is_some() {
-            "wall clock around the submitted kernels (no GPU timestamps yet), fastest of --repeat runs".into()
-        } else {
-            "wall clock, fastest of --repeat runs".into()
+        timing: match &gpu {
+            Some(g) if g.timestamps => "GPU timestamps around the shading pass, fastest of --repeat runs".into(),
+            Some(_) => "wall clock around the submitted kernels (the adapter has no timestamp queries), fastest of --repeat runs".into(),
+            None => "wall clock, fastest of --repeat runs".into(),
         },
         threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
         reference_from_cache: cached,
@@ -222,7 +222,7 @@ pub struct PtRun {
 pub struct PtReport {
     /// `pt`.
     pub app: String,
-    /// `cpu`.
+    /// `cpu`, or `gpu: ADAPTER (timing source)`.
     pub backend: String,
     /// Scene name.
     pub scene: String,
@@ -244,9 +244,6 @@ pub struct PtReport {
 
 fn run_pt(a: BenchArgs) -> Result<(), String> {
     use slc_cpu::pt::{PtMethod, PtRender, PtScene, PtSettings};
-    if a.scene.backend == crate::Backend::Gpu {
-        return Err("--app pt runs on the CPU only so far; use --backend cpu".into());
-    }
     if !(a.seconds > 0.0 && a.seconds.is_finite()) {
         return Err(format!("--seconds {} must be finite and > 0", a.seconds));
     }
@@ -260,15 +257,22 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
     bar.tick();
     let r = slc_cpu::reference::pt_reference(&mut pts, w, h, &ref_settings, a.reference_spp, Some(&a.cache_dir)).map_err(|e| e.to_string())?;
     let (reference, cached) = (r.image, r.cached);
+    // The GPU path tracer runs slc-reservoir; the reference stays on the CPU.
+    let ctx = crate::gpu_context(a.scene.backend)?;
+    let gpu = match &ctx {
+        Some(c) => Some(slc_wgpu::pt::GpuPt::new(c, &pts, w, h).map_err(|e| e.to_string())?),
+        None => None,
+    };
+    let (methods, batch): (&[PtMethod], u32) = if gpu.is_some() { (&[PtMethod::SlcReservoir], crate::GPU_BATCH) } else { (&PtMethod::ALL, 1) };
     let mut runs = Vec::new();
-    for method in PtMethod::ALL {
+    for &method in methods {
         bar.set_message(format!("{} for {} s", method.name(), a.seconds));
         bar.tick();
         let s = PtSettings { method, error_bound: eps, seed: a.seed, ..PtSettings::default() };
         let mut acc = PtRender::new(w, h);
         let mut series = Vec::new();
         while acc.time_ms < a.seconds * 1e3 {
-            pts.render(&mut acc, &s, 1).map_err(|e| e.to_string())?;
+            crate::pt_passes(&mut pts, gpu.as_ref(), &mut acc, &s, batch)?;
             series.push((acc.time_ms, acc.passes, acc.image().rmse(&reference)));
         }
         let last = *series.last().expect("at least one pass");
@@ -284,7 +288,10 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
     bar.finish_and_clear();
     let report = PtReport {
         app: "pt".into(),
-        backend: "cpu".into(),
+        backend: match &ctx {
+            None => "cpu".into(),
+            Some(c) => format!("gpu: {} ({})", c.describe(), if c.timestamps { "GPU timestamps" } else { "wall clock" }),
+        },
         scene: scene.name.clone(),
         width: w,
         height: h,
@@ -307,6 +314,7 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
         crate::plot::rmse_over_time(&report, plot)?;
     }
     let uniform = report.runs.iter().find(|r| r.method == "uniform").map_or(f64::NAN, |r| r.rmse);
+    println!("backend {}", report.backend);
     println!(
         "{} {}x{}, {} lights, {:.1} s per method (reference {} {}, its own RMSE about {:.5})",
         report.scene,

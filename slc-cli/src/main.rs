@@ -320,11 +320,27 @@ fn render(a: RenderArgs) -> Result<(), String> {
 }
 
 /// `slc render --app pt`: progressive path tracing on the CPU.
+/// Passes of the path tracer on the chosen backend: the CPU's `pts`, or
+/// the GPU's copy of it.
+pub fn pt_passes(
+    pts: &mut slc_cpu::pt::PtScene,
+    gpu: Option<&slc_wgpu::pt::GpuPt>,
+    acc: &mut slc_cpu::pt::PtRender,
+    s: &slc_cpu::pt::PtSettings,
+    passes: u32,
+) -> Result<(), String> {
+    match gpu {
+        Some(g) => g.render(acc, s, passes).map(|_| ()).map_err(|e| e.to_string()),
+        None => pts.render(acc, s, passes).map_err(|e| e.to_string()),
+    }
+}
+
+/// Passes per GPU submission batch in time- or spp-bounded loops (one
+/// readback per batch); the CPU goes one pass at a time.
+pub const GPU_BATCH: u32 = 16;
+
 fn render_pt(a: RenderArgs) -> Result<(), String> {
     use slc_cpu::pt::{PtRender, PtScene, PtSettings};
-    if a.scene.backend == Backend::Gpu {
-        return Err("--app pt runs on the CPU only so far (the GPU path tracer is not built yet); use --backend cpu".into());
-    }
     let t0 = Instant::now();
     let (scene, lights, f) = a.scene.scene()?;
     let (w, h) = (a.scene.width.or(f.width).unwrap_or(512), a.scene.height.or(f.height).unwrap_or(512));
@@ -333,20 +349,29 @@ fn render_pt(a: RenderArgs) -> Result<(), String> {
     }
     let mut pts = PtScene::new(&scene, &lights).map_err(|e| e.to_string())?;
     let d = PtSettings::default();
+    let on_gpu = a.scene.backend == Backend::Gpu;
+    // The GPU path tracer runs slc-reservoir: make it the default there.
+    let default_method = if on_gpu { "slc-reservoir" } else { "slc" };
     let settings = PtSettings {
-        method: pt_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or("slc"))?,
+        method: pt_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or(default_method))?,
         error_bound: a.error_bound.or(f.error_bound).unwrap_or(d.error_bound),
         exposure: a.scene.exposure.or(f.exposure).unwrap_or(1.0),
         seed: a.seed.or(f.seed).unwrap_or(d.seed),
         ..d
     };
+    let ctx = gpu_context(a.scene.backend)?;
+    let gpu = match &ctx {
+        Some(c) => Some(slc_wgpu::pt::GpuPt::new(c, &pts, w, h).map_err(|e| e.to_string())?),
+        None => None,
+    };
+    let batch = if on_gpu { GPU_BATCH } else { 1 };
     let mut acc = PtRender::new(w, h);
     let bar = indicatif::ProgressBar::new(0);
     match a.seconds {
         Some(secs) if secs > 0.0 && secs.is_finite() => {
             bar.set_length((secs * 10.0) as u64);
             while acc.time_ms < secs * 1e3 {
-                pts.render(&mut acc, &settings, 1).map_err(|e| e.to_string())?;
+                pt_passes(&mut pts, gpu.as_ref(), &mut acc, &settings, batch)?;
                 bar.set_position((acc.time_ms / 100.0) as u64);
             }
         }
@@ -354,9 +379,10 @@ fn render_pt(a: RenderArgs) -> Result<(), String> {
         None => {
             let spp = a.spp.unwrap_or(16).max(1);
             bar.set_length(spp as u64);
-            for _ in 0..spp {
-                pts.render(&mut acc, &settings, 1).map_err(|e| e.to_string())?;
-                bar.inc(1);
+            while acc.passes < spp {
+                let n = batch.min(spp - acc.passes);
+                pt_passes(&mut pts, gpu.as_ref(), &mut acc, &settings, n)?;
+                bar.inc(n as u64);
             }
         }
     }
@@ -365,6 +391,10 @@ fn render_pt(a: RenderArgs) -> Result<(), String> {
     let exposure = settings.exposure;
     write_outputs(&image, &a.out, exposure)?;
     println!("slc render: {} {}x{}, path tracing, {} lights, method {}", scene.name, w, h, pts.light_count(), settings.method.name());
+    if let Some(c) = &ctx {
+        let timing = if c.timestamps { "GPU timestamps" } else { "wall clock, no timestamp queries" };
+        println!("  backend     GPU {} ({timing})", c.describe());
+    }
     println!("  time        {:.1} ms for {} samples per pixel ({:.2} spp/s)", acc.time_ms, acc.passes, acc.passes as f64 / (acc.time_ms * 1e-3));
     println!("  wrote       {} and {} ({:.1} s)", a.out.display(), a.out.with_extension("png").display(), t0.elapsed().as_secs_f64());
     Ok(())
@@ -386,18 +416,19 @@ pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> Result<(), Strin
     img.write_png(&out.with_extension("png"), exposure).map_err(|e| e.to_string())
 }
 
-/// Writes `name.{wgsl,spv,glsl,hlsl,metal}` for every kernel: the BSH and
-/// update kernels for `lights`, and `vpl_tiled_{slc,clamp,none}` (VPLs).
+/// Writes `name.{wgsl,spv,glsl,hlsl,metal}` for every kernel: the BSH,
+/// path-tracing and update kernels for `lights`, and `vpl_tiled_{slc,clamp,none}` (VPLs).
 fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> Result<(), String> {
     use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, generate_module, translate};
     let lights = LightSet::parse(lights).map_err(|e| e.to_string())?;
     std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
     let base = Features { lights, reservoir_k, ..Features::default() };
     let vpl = LightSet { vpl: true, ..LightSet::default() };
-    let mut jobs: Vec<(String, Kernel, Features)> = [Kernel::LightUpdate, Kernel::BshRefit, Kernel::BshReservoir, Kernel::PtConnect]
-        .into_iter()
-        .map(|k| (k.name().to_string(), k, base))
-        .collect();
+    let mut jobs: Vec<(String, Kernel, Features)> =
+        [Kernel::LightUpdate, Kernel::BshRefit, Kernel::BshReservoir, Kernel::PtConnect, Kernel::PtExtend]
+            .into_iter()
+            .map(|k| (k.name().to_string(), k, base))
+            .collect();
     for (m, name) in [(CullMethod::Slc, "slc"), (CullMethod::Clamp, "clamp"), (CullMethod::None, "none")] {
         jobs.push((format!("vpl_tiled_{name}"), Kernel::VplTiled, Features { lights: vpl, method: m, ..base }));
     }

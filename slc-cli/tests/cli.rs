@@ -204,8 +204,8 @@ fn example_scene_files_render() {
 fn shaders_command_exports_every_kernel() {
     let d = tempdir("shaders");
     let text = ok(&d, &["shaders", "--out", "k", "--lights", "point,triangle"]);
-    assert!(text.contains("7 kernels"), "{text}");
-    for name in ["light_update", "bsh_refit", "bsh_reservoir", "pt_connect", "vpl_tiled_slc", "vpl_tiled_clamp", "vpl_tiled_none"] {
+    assert!(text.contains("8 kernels"), "{text}");
+    for name in ["light_update", "bsh_refit", "bsh_reservoir", "pt_connect", "pt_extend", "vpl_tiled_slc", "vpl_tiled_clamp", "vpl_tiled_none"] {
         for ext in ["wgsl", "spv", "glsl", "hlsl", "metal"] {
             let p = d.join("k").join(format!("{name}.{ext}"));
             assert!(std::fs::metadata(&p).map(|m| m.len() > 100).unwrap_or(false), "{} missing or empty", p.display());
@@ -239,6 +239,34 @@ fn gpu_backend_renders_like_cpu() {
     args.extend(small);
     ok(&d, &args);
     ok(&d, &["diff", "c.exr", "g.exr", "--max-rmse", "0.00001"]);
+    std::fs::remove_dir_all(&d).ok();
+}
+
+/// README: `slc render --app pt --backend gpu` and `slc bench --app pt
+/// --backend gpu`. Needs an adapter: skips with a reason without one, fails
+/// under SLC_REQUIRE_GPU=1.
+#[test]
+fn gpu_path_tracer_renders_and_benches() {
+    let d = tempdir("gpupt");
+    let out = slc(&d, &["render", "--app", "pt", "--backend", "gpu", "--width", "16", "--height", "16", "--spp", "4", "--out", "g.exr"]);
+    if !out.status.success() {
+        let err = String::from_utf8_lossy(&out.stderr);
+        let required = std::env::var("SLC_REQUIRE_GPU").as_deref() == Ok("1");
+        assert!(!required && err.contains("no GPU adapter"), "slc render --app pt --backend gpu failed: {err}");
+        eprintln!("skipping: {}", err.trim());
+        return;
+    }
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("slc-reservoir") && text.contains("4 samples per pixel") && text.contains("GPU "), "{text}");
+    assert!(d.join("g.exr").exists() && d.join("g.png").exists());
+    let args = ["bench", "--app", "pt", "--backend", "gpu", "--width", "16", "--height", "16", "--seconds", "0.2", "--reference-spp", "8"];
+    let text = ok(&d, &[&args[..], &["--json", "g.json", "--cache-dir", "cache"]].concat());
+    assert!(text.contains("slc-reservoir"), "{text}");
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("g.json")).unwrap()).unwrap();
+    assert!(json["backend"].as_str().unwrap().starts_with("gpu: "));
+    assert_eq!(json["runs"].as_array().unwrap().len(), 1);
+    let out = slc(&d, &["render", "--app", "pt", "--backend", "gpu", "--method", "power", "--width", "8", "--height", "8", "--out", "p.exr"]);
+    assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("--backend cpu"));
     std::fs::remove_dir_all(&d).ok();
 }
 
@@ -289,7 +317,7 @@ fn path_tracer_bench() {
     assert!(text.contains("uniform/method"), "{text}");
     let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("p.json")).unwrap()).unwrap();
     let runs = json["runs"].as_array().unwrap();
-    assert_eq!(runs.len(), 4);
+    assert_eq!(runs.len(), 5);
     for r in runs {
         for key in ["method", "param", "time_ms", "spp", "rmse", "series"] {
             assert!(r.get(key).is_some(), "run lacks {key}");

@@ -7,13 +7,15 @@
 //!   Mesa's software Vulkan driver (lavapipe), reports the adapter, and
 //!   turns missing adapters, small limits, validation errors, out-of-memory
 //!   and device loss into [`GpuError`]s.
-//! - [`vpl::GpuVpl`]: application A's shading on the GPU (random ranges from
-//!   the same ξ as the CPU, tiled culling per 8×8 interleaved sub-image, SLC
-//!   shading), with the CPU backend's G-buffer, RSM, denoise and
-//!   composition around it.
+//! - [`vpl::GpuVpl`]: application A's shading and denoise on the GPU (random
+//!   ranges from the same ξ as the CPU, tiled culling per 8×8 interleaved
+//!   sub-image, SLC shading, cross-bilateral filter), with the CPU backend's
+//!   G-buffer, RSM and composition around it.
 //!
-//! Not yet here: application B (path tracing) on the GPU, denoise on the GPU,
-//! GPU timestamps (shading time is wall time around the submitted kernels).
+//! - [`pt::GpuPt`]: application B, a wavefront progressive path tracer
+//!   (`light_update`, `bsh_refit` per level, then `pt_extend` and
+//!   `pt_connect` per bounce), with GPU timestamps where the adapter has
+//!   them.
 //!
 //! ```no_run
 //! use slc_cpu::scene::Scene;
@@ -29,6 +31,10 @@
 #![deny(missing_docs)]
 
 pub mod context;
+pub mod direct;
+mod kernel;
+mod lights;
+pub mod pt;
 pub mod vpl;
 
 pub use context::GpuContext;

@@ -1,8 +1,9 @@
-//! Application A on the GPU: the VPL pipeline's shading step runs in the
-//! `light_update` and `vpl_tiled` kernels of slc-shared-shaders; G-buffer,
-//! RSM, denoise and composition are the CPU backend's
+//! Application A on the GPU: the VPL pipeline's shading and denoise run in
+//! the `light_update`, `vpl_tiled` and `vpl_denoise` kernels of
+//! slc-shared-shaders; G-buffer, RSM and composition are the CPU backend's
 //! ([`slc_cpu::vpl::VplContext`]), so both backends shade the same inputs.
 
+use crate::kernel::{Timer, bind_layout, pipeline, read_back, storage};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use slc_core::range::random_range2;
@@ -40,7 +41,11 @@ pub struct GpuVpl<'a> {
     rt2: wgpu::Buffer,
     r2: wgpu::Buffer,
     irradiance: wgpu::Buffer,
+    /// Denoised irradiance.
+    filtered: wgpu::Buffer,
     readback: wgpu::Buffer,
+    denoise: wgpu::ComputePipeline,
+    denoise_layout: wgpu::BindGroupLayout,
     update: wgpu::ComputePipeline,
     update_layout: wgpu::BindGroupLayout,
     tiled: Vec<(VplMethod, Layout)>,
@@ -48,48 +53,6 @@ pub struct GpuVpl<'a> {
     /// One frame at a time: a frame writes the shared range, irradiance and
     /// readback buffers, so concurrent `shade` calls would race.
     frame: std::sync::Mutex<()>,
-}
-
-fn storage(gpu: &GpuContext, label: &str, bytes: &[u8], extra: wgpu::BufferUsages) -> wgpu::Buffer {
-    gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-        label: Some(label),
-        contents: bytes,
-        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST | extra,
-    })
-}
-
-/// Bind-group layout of a kernel from its binding table (slc-shared-shaders
-/// docs): binding 0 a uniform, then `reads` read-only storage buffers, then
-/// `writes` read-write ones. Explicit, because an automatic layout drops
-/// the bindings a variant does not use (clamp has no `rt2`).
-fn bind_layout(gpu: &GpuContext, label: &str, reads: u32, writes: u32) -> wgpu::BindGroupLayout {
-    let entry = |binding: u32, ty: wgpu::BufferBindingType| wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: wgpu::ShaderStages::COMPUTE,
-        ty: wgpu::BindingType::Buffer { ty, has_dynamic_offset: false, min_binding_size: None },
-        count: None,
-    };
-    let mut entries = vec![entry(0, wgpu::BufferBindingType::Uniform)];
-    entries.extend((1..=reads).map(|b| entry(b, wgpu::BufferBindingType::Storage { read_only: true })));
-    entries.extend((reads + 1..=reads + writes).map(|b| entry(b, wgpu::BufferBindingType::Storage { read_only: false })));
-    gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some(label), entries: &entries })
-}
-
-fn pipeline(gpu: &GpuContext, label: &str, wgsl: String, layout: &wgpu::BindGroupLayout) -> wgpu::ComputePipeline {
-    let module = gpu.device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(label), source: wgpu::ShaderSource::Wgsl(wgsl.into()) });
-    let pl = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-        label: Some(label),
-        bind_group_layouts: &[Some(layout)],
-        immediate_size: 0,
-    });
-    gpu.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-        label: Some(label),
-        layout: Some(&pl),
-        module: &module,
-        entry_point: Some("main"),
-        compilation_options: Default::default(),
-        cache: None,
-    })
 }
 
 impl<'a> GpuVpl<'a> {
@@ -122,7 +85,8 @@ impl<'a> GpuVpl<'a> {
                 [p.x, p.y, p.z, if gb.valid(i) { 1.0 } else { 0.0 }]
             })
             .collect();
-        let nrm: Vec<[f32; 4]> = gb.normal.iter().map(|n| [n.x, n.y, n.z, 0.0]).collect();
+        // w: depth, for the denoise (1e30 where there is no surface).
+        let nrm: Vec<[f32; 4]> = gb.normal.iter().zip(&gb.depth).map(|(n, &d)| [n.x, n.y, n.z, if d.is_finite() { d } else { 1e30 }]).collect();
         let vpl = |i: usize, scale: f32| GpuLight {
             p0: v.position[i],
             kind: LIGHT_VPL,
@@ -147,6 +111,12 @@ impl<'a> GpuVpl<'a> {
             usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
             mapped_at_creation: false,
         });
+        let filtered = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("filtered"),
+            size: pixels,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+            mapped_at_creation: false,
+        });
         let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("readback"),
             size: pixels,
@@ -154,9 +124,12 @@ impl<'a> GpuVpl<'a> {
             mapped_at_creation: false,
         });
         let features = Features { workgroup_size: WG, ..Features::default() };
-        let update_layout = bind_layout(gpu, "light_update", 2, 1);
-        let tiled_layout = bind_layout(gpu, "vpl_tiled", 5, 1);
-        let update = pipeline(gpu, "light_update", generate(Kernel::LightUpdate, &features)?, &update_layout);
+        let update_layout = bind_layout(gpu, "light_update", 2, 1, false);
+        let tiled_layout = bind_layout(gpu, "vpl_tiled", 5, 1, false);
+        let update = pipeline(gpu, "light_update", generate(Kernel::LightUpdate, &features)?, &[&update_layout]);
+        let denoise_layout = bind_layout(gpu, "vpl_denoise", 3, 1, false);
+        let df = Features { lights: LightSet { vpl: true, ..LightSet::default() }, tile_size: TILE, interleave: PERIOD, ..Features::default() };
+        let denoise = pipeline(gpu, "vpl_denoise", generate(Kernel::VplDenoise, &df)?, &[&denoise_layout]);
         let vpl_only = LightSet { vpl: true, ..LightSet::default() };
         let mut tiled = Vec::new();
         for (m, cm) in [(VplMethod::Slc, CullMethod::Slc), (VplMethod::Clamp, CullMethod::Clamp), (VplMethod::None, CullMethod::None)] {
@@ -170,7 +143,7 @@ impl<'a> GpuVpl<'a> {
             };
             tiled.push((
                 m,
-                Layout { period: PERIOD, per_subset, pipeline: pipeline(gpu, "vpl_tiled", generate(Kernel::VplTiled, &f)?, &tiled_layout) },
+                Layout { period: PERIOD, per_subset, pipeline: pipeline(gpu, "vpl_tiled", generate(Kernel::VplTiled, &f)?, &[&tiled_layout]) },
             ));
         }
         // The reference: one "subset" of every VPL, unculled, no list.
@@ -180,7 +153,7 @@ impl<'a> GpuVpl<'a> {
             Layout {
                 period: 1,
                 per_subset: v.len() as u32,
-                pipeline: pipeline(gpu, "vpl_reference", generate(Kernel::VplTiled, &f)?, &tiled_layout),
+                pipeline: pipeline(gpu, "vpl_reference", generate(Kernel::VplTiled, &f)?, &[&tiled_layout]),
             },
         ));
         let s = GpuVpl {
@@ -197,7 +170,10 @@ impl<'a> GpuVpl<'a> {
             rt2: storage(gpu, "rt2", bytemuck::cast_slice(&zeros), wgpu::BufferUsages::empty()),
             r2: storage(gpu, "r2", bytemuck::cast_slice(&zeros), wgpu::BufferUsages::empty()),
             irradiance,
+            filtered,
             readback,
+            denoise,
+            denoise_layout,
             update,
             update_layout,
             tiled,
@@ -208,10 +184,13 @@ impl<'a> GpuVpl<'a> {
         Ok(s)
     }
 
-    /// Indirect irradiance on the GPU for `settings` (same ξ as the CPU:
+    /// Indirect irradiance on the GPU for `settings`, denoised on the GPU
+    /// when `settings.denoise` (the same filter as the CPU's) (same ξ as the CPU:
     /// `xi_for(seed, frame, VPL index)`); calls from several threads are
     /// serialised, one frame at a time; `fixed_xi` ranges are computed on
-    /// the host. `shading_ms` is the wall time of the submitted kernels.
+    /// the host. `shading_ms` is GPU time from timestamps where the adapter
+    /// has them ([`GpuContext::timestamps`]), else the wall time of the
+    /// submitted kernels.
     pub fn shade(&self, cpu: &VplContext, settings: &VplSettings) -> Result<Shaded, GpuError> {
         let params = cpu.check(settings).map_err(|e| GpuError::Setting(e.to_string()))?;
         let _frame = self.frame.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
@@ -250,9 +229,12 @@ impl<'a> GpuVpl<'a> {
         fn entries<'b>(bufs: &[&'b wgpu::Buffer]) -> Vec<wgpu::BindGroupEntry<'b>> {
             bufs.iter().enumerate().map(|(i, b)| wgpu::BindGroupEntry { binding: i as u32, resource: b.as_entire_binding() }).collect()
         }
+        let denoise = settings.denoise && !reference;
+        let mut timer = Timer::new(gpu, 2);
         let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc vpl") });
         {
-            let mut pass = enc.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc vpl"), timestamp_writes: None });
+            let mut pass = enc
+                .begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc vpl"), timestamp_writes: timer.as_mut().and_then(|t| t.next()) });
             if host_r2.is_none() {
                 let bg = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
                     label: Some("light_update"),
@@ -274,22 +256,48 @@ impl<'a> GpuVpl<'a> {
             let (sub_w, sub_h) = (self.width.div_ceil(p), self.height.div_ceil(p));
             pass.dispatch_workgroups(sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), p * p);
         }
+        if let Some(t) = &timer
+            && !denoise
+        {
+            t.resolve(&mut enc);
+        }
         let t = Instant::now();
         gpu.queue.submit([enc.finish()]);
         gpu.wait()?;
-        let shading_ms = t.elapsed().as_secs_f64() * 1e3;
+        let mut shading_ms = t.elapsed().as_secs_f64() * 1e3;
+        let mut denoised_ms = None;
+        if denoise {
+            // The cross-bilateral filter as its own timed pass.
+            let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc vpl denoise") });
+            {
+                let writes = timer.as_mut().and_then(|t| t.next());
+                let mut pass = enc.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc vpl denoise"), timestamp_writes: writes });
+                let bg = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some("vpl_denoise"),
+                    layout: &self.denoise_layout,
+                    entries: &entries(&[&vp_buf, &self.gb_position, &self.gb_normal, &self.irradiance, &self.filtered]),
+                });
+                pass.set_pipeline(&self.denoise);
+                pass.set_bind_group(0, &bg, &[]);
+                pass.dispatch_workgroups(self.width.div_ceil(TILE), self.height.div_ceil(TILE), 1);
+            }
+            if let Some(t) = &timer {
+                t.resolve(&mut enc);
+            }
+            let t = Instant::now();
+            gpu.queue.submit([enc.finish()]);
+            gpu.wait()?;
+            denoised_ms = Some(t.elapsed().as_secs_f64() * 1e3);
+        }
+        if let Some(timer) = &timer {
+            let d = timer.durations_ms(gpu)?;
+            shading_ms = d[0];
+            if denoise {
+                denoised_ms = d.get(1).copied();
+            }
+        }
 
-        let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("readback") });
-        enc.copy_buffer_to_buffer(&self.irradiance, 0, &self.readback, 0, self.readback.size());
-        gpu.queue.submit([enc.finish()]);
-        let slice = self.readback.slice(..);
-        slice.map_async(wgpu::MapMode::Read, |_| {});
-        gpu.wait()?;
-        let data: Vec<[f32; 4]> = {
-            let view = slice.get_mapped_range().map_err(|e| GpuError::Device(e.to_string()))?;
-            bytemuck::cast_slice(&view).to_vec()
-        };
-        self.readback.unmap();
+        let data: Vec<[f32; 4]> = read_back(gpu, if denoise { &self.filtered } else { &self.irradiance }, &self.readback)?;
         let gb = cpu.gbuffer();
         let mut irradiance = Vec::with_capacity(data.len());
         let mut kept = Vec::with_capacity(data.len());
@@ -300,10 +308,10 @@ impl<'a> GpuVpl<'a> {
             kept.push(if valid { d[3] as u32 } else { 0 });
             evaluations += valid as u64 * d[3] as u64;
         }
-        Ok(Shaded { irradiance, kept, evaluations, shading_ms })
+        Ok(Shaded { irradiance, kept, evaluations, shading_ms, denoised_ms })
     }
 
-    /// A whole frame: GPU shading, then the CPU's denoise and composition.
+    /// A whole frame: GPU shading and denoise, then the CPU's composition.
     pub fn render(&self, cpu: &VplContext, settings: &VplSettings) -> Result<VplFrame, GpuError> {
         let shaded = self.shade(cpu, settings)?;
         Ok(cpu.finish(shaded, settings))

@@ -42,3 +42,20 @@ pub fn gpu() -> Option<&'static slc_wgpu::GpuContext> {
         }
     }
 }
+
+/// A file under `../shared/data` beside the checkout, or `None` (after
+/// printing why) when it is missing outside CI.
+///
+/// # Panics
+/// When the file is missing and `CI` is set: CI always has `../shared`.
+pub fn shared_data(rel: &str) -> Option<std::path::PathBuf> {
+    let p = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data").join(rel);
+    if p.exists() {
+        return Some(p);
+    }
+    if std::env::var_os("CI").is_some() {
+        panic!("test data {} is missing (CI must have ../shared beside the checkout)", p.display());
+    }
+    eprintln!("skipping: test data {} is missing", p.display());
+    None
+}

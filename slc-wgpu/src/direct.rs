@@ -1,0 +1,94 @@
+//! Direct light from many lights at arbitrary shading points on the GPU:
+//! `light_update`, `bsh_refit` per level, then `bsh_reservoir` (BSH
+//! traversal into a k-slot reservoir, the picks RR-tested at their sampled
+//! points and weighted by `1/p · n/k`). Unshadowed, the counterpart of
+//! [`slc_cpu::direct::DirectLights`], which draws the same random numbers.
+
+use crate::kernel::{bind_group, bind_layout, pipeline, read_back, storage, zeroed};
+use crate::lights::{GpuLightSet, WG};
+use crate::{GpuContext, GpuError};
+use glam::Vec3;
+use slc_core::range::RangeParams;
+use slc_cpu::direct::{DIRECT_K, Direct, DirectLights};
+use slc_shared_shaders::layout::{GpuGeoNode, GpuTriangle, NO_LIGHT, ShadeParams};
+use slc_shared_shaders::{Features, Kernel, generate};
+use wgpu::util::DeviceExt;
+
+/// The lights of a [`DirectLights`] on the GPU and the shading pipeline.
+pub struct GpuDirect<'a> {
+    gpu: &'a GpuContext,
+    set: GpuLightSet,
+    pipeline: wgpu::ComputePipeline,
+    layout: wgpu::BindGroupLayout,
+    /// An occluder BVH of one leaf with one zero-area triangle: the
+    /// kernel's shadow rays find nothing (bindings must not be empty).
+    no_geometry: (wgpu::Buffer, wgpu::Buffer),
+    busy: std::sync::Mutex<()>,
+}
+
+impl<'a> GpuDirect<'a> {
+    /// Uploads the lights and their BSH.
+    pub fn new(gpu: &'a GpuContext, lights: &DirectLights) -> Result<Self, GpuError> {
+        let set = GpuLightSet::new(gpu, lights.lights(), lights.bounds(), lights.bsh())?;
+        let features = Features { lights: set.types, reservoir_k: DIRECT_K as u32, workgroup_size: WG, ..Features::default() };
+        let layout = bind_layout(gpu, "bsh_reservoir", 8, 1, false);
+        let pipeline = pipeline(gpu, "bsh_reservoir", generate(Kernel::BshReservoir, &features)?, &[&layout, &set.table_layout]);
+        let none = wgpu::BufferUsages::empty();
+        let leaf = GpuGeoNode { bmin: Vec3::ZERO, first: 0, bmax: Vec3::ZERO, count: 1 };
+        let tri = GpuTriangle { v0: Vec3::ZERO, material: 0, v1: Vec3::ZERO, light: NO_LIGHT, v2: Vec3::ZERO, pad: 0 };
+        let no_geometry =
+            (storage(gpu, "no geo nodes", bytemuck::bytes_of(&leaf), none), storage(gpu, "no geo tris", bytemuck::bytes_of(&tri), none));
+        Ok(GpuDirect { gpu, set, pipeline, layout, no_geometry, busy: std::sync::Mutex::new(()) })
+    }
+
+    /// [`DirectLights::shade`] on the GPU.
+    pub fn shade(&self, points: &[Vec3], normals: &[Vec3], params: &RangeParams, seed: u32, frame: u32) -> Result<Vec<Direct>, GpuError> {
+        if points.len() != normals.len() {
+            return Err(GpuError::Setting(format!("{} points but {} normals", points.len(), normals.len())));
+        }
+        if points.is_empty() {
+            return Ok(Vec::new());
+        }
+        let gpu = self.gpu;
+        let n = points.len() as u64;
+        gpu.require("max_storage_buffer_binding_size (points)", n * 16, gpu.limits.max_storage_buffer_binding_size)?;
+        gpu.require("max_compute_workgroups_per_dimension (points)", n.div_ceil(WG as u64), gpu.limits.max_compute_workgroups_per_dimension as u64)?;
+        let _busy = self.busy.lock().map_err(|_| GpuError::Device("a previous call panicked".into()))?;
+        // w = 1 marks a valid point; NaN coordinates are shaded as nothing, as on the CPU.
+        let p4: Vec<[f32; 4]> = points.iter().map(|p| [p.x, p.y, p.z, if p.is_nan() { 0.0 } else { 1.0 }]).collect();
+        let n4: Vec<[f32; 4]> = normals.iter().map(|v| [v.x, v.y, v.z, 0.0]).collect();
+        let none = wgpu::BufferUsages::empty();
+        let pts = storage(gpu, "points", bytemuck::cast_slice(&p4), none);
+        let nrm = storage(gpu, "normals", bytemuck::cast_slice(&n4), none);
+        let out = zeroed(gpu, "direct", n * 16, wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC);
+        let staging = zeroed(gpu, "direct readback", n * 16, wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
+        let sp = ShadeParams { point_count: n as u32, seed, frame, eps: 0.0 };
+        let uniform = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("shade params"),
+            contents: bytemuck::bytes_of(&sp),
+            usage: wgpu::BufferUsages::UNIFORM,
+        });
+        let s = &self.set;
+        let bg = bind_group(
+            gpu,
+            "bsh_reservoir",
+            &self.layout,
+            &[&uniform, &pts, &nrm, &s.lights, &s.rt2, &s.r2, &s.bsh, &self.no_geometry.0, &self.no_geometry.1, &out],
+            None,
+        );
+        s.set_threshold(gpu, params);
+        s.set_frame(gpu, seed, frame);
+        let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc direct") });
+        {
+            let mut cp = enc.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc direct"), timestamp_writes: None });
+            s.encode(&mut cp);
+            cp.set_pipeline(&self.pipeline);
+            cp.set_bind_group(0, &bg, &[]);
+            cp.dispatch_workgroups((n as u32).div_ceil(WG), 1, 1);
+        }
+        gpu.queue.submit([enc.finish()]);
+        gpu.wait()?;
+        let data: Vec<[f32; 4]> = read_back(gpu, &out, &staging)?;
+        Ok(data.iter().map(|d| Direct { irradiance: Vec3::new(d[0], d[1], d[2]), in_range: d[3] as u32 }).collect())
+    }
+}

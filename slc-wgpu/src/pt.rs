@@ -1,0 +1,278 @@
+//! Application B on the GPU: a wavefront progressive path tracer built from
+//! slc-shared-shaders' kernels only. Per pass (one sample per pixel):
+//!
+//! 1. `light_update`: every light's random range `r² = r_t²/(1−ξ)` from the
+//!    same `ξ = xi_for(seed, pass, light)` as the CPU path tracer;
+//! 2. `bsh_refit`: the BSH over the lights refitted to those ranges, one
+//!    dispatch per level, deepest first;
+//! 3. per bounce, `pt_extend` (camera or BSDF ray, closest hit through the
+//!    geometry BVH, emission with MIS, next ray, Russian roulette) and
+//!    `pt_connect` (BSH traversal into a k-slot reservoir, RR test at the
+//!    sampled point, shadow ray, MIS whose light pdf includes p_rr).
+//!
+//! The method is `slc-reservoir` with k = [`RESERVOIR_K`] and the power
+//! heuristic, exactly as the CPU's [`PtMethod::SlcReservoir`]; the two
+//! backends draw their per-path random numbers differently, so they agree in
+//! expectation (the tests crate checks it), not pixel by pixel.
+
+use crate::kernel::{Timer, UniformSlots, bind_group, bind_layout, pipeline, read_back, storage, zeroed};
+use crate::lights::{GpuLightSet, WG};
+use crate::{GpuContext, GpuError};
+use glam::Vec3;
+use obvhs::BvhBuildParams;
+use obvhs::bvh2::builder::build_bvh2_from_tris;
+use obvhs::triangle::Triangle;
+use slc_core::range::RangeParams;
+use slc_cpu::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K};
+use slc_shared_shaders::layout::{GpuGeoNode, GpuPathState, GpuPathVertex, GpuTriangle, NO_LIGHT, PtParams, ShadeParams};
+use slc_shared_shaders::{Features, Heuristic, Kernel, generate};
+use std::time::{Duration, Instant};
+
+/// Deepest geometry BVH the kernels' 64-entry traversal stack handles.
+const MAX_GEO_DEPTH: u64 = 64;
+/// Longest path the uniform slots are sized for (`PtSettings::max_depth`).
+const MAX_DEPTH: u32 = 64;
+
+/// The geometry BVH as the kernels read it: binary nodes (children `first`
+/// and `first + 1`, leaves `count > 0`) and triangles in leaf order with
+/// their material and light; plus the tree depth.
+fn geometry(pts: &PtScene) -> (Vec<GpuGeoNode>, Vec<GpuTriangle>, u64) {
+    let scene = pts.scene();
+    let tris: Vec<Triangle> = scene.triangles.iter().map(|t| Triangle { v0: t[0].into(), v1: t[1].into(), v2: t[2].into() }).collect();
+    let bvh = build_bvh2_from_tris(&tris, BvhBuildParams::medium_build(), &mut Duration::default());
+    let nodes: Vec<GpuGeoNode> = bvh
+        .nodes
+        .iter()
+        .map(|n| GpuGeoNode { bmin: Vec3::from(n.aabb.min), first: n.first_index, bmax: Vec3::from(n.aabb.max), count: n.prim_count })
+        .collect();
+    let lot = pts.light_of_triangle();
+    let gpu_tris = bvh
+        .primitive_indices
+        .iter()
+        .map(|&i| {
+            let t = scene.triangles[i as usize];
+            let light = lot[i as usize];
+            GpuTriangle {
+                v0: t[0],
+                material: scene.material_of[i as usize],
+                v1: t[1],
+                light: if light == u32::MAX { NO_LIGHT } else { light },
+                v2: t[2],
+                pad: 0,
+            }
+        })
+        .collect();
+    let mut depth = 0u64;
+    let mut stack = vec![(0usize, 1u64)];
+    while let Some((i, d)) = stack.pop() {
+        depth = depth.max(d);
+        if let Some(n) = nodes.get(i)
+            && n.count == 0
+        {
+            stack.push((n.first as usize, d + 1));
+            stack.push((n.first as usize + 1, d + 1));
+        }
+    }
+    (nodes, gpu_tris, depth)
+}
+
+/// GPU buffers and pipelines for one [`PtScene`] and image size.
+pub struct GpuPt<'a> {
+    gpu: &'a GpuContext,
+    width: u32,
+    height: u32,
+    set: GpuLightSet,
+    camera: (Vec3, Vec3, Vec3, Vec3),
+    diag: f32,
+    radiance: wgpu::Buffer,
+    readback: wgpu::Buffer,
+    pt_params: UniformSlots,
+    shade_params: UniformSlots,
+    extend: (wgpu::ComputePipeline, wgpu::BindGroup),
+    connect: (wgpu::ComputePipeline, wgpu::BindGroup),
+    /// One render call at a time (they share every buffer).
+    busy: std::sync::Mutex<()>,
+}
+
+impl<'a> GpuPt<'a> {
+    /// Uploads the scene (lights, IES table, BSH, geometry BVH, materials)
+    /// and builds the pipelines for a `width × height` image. Buffer,
+    /// binding-count, dispatch and traversal-depth limits are checked first.
+    pub fn new(gpu: &'a GpuContext, pts: &PtScene, width: u32, height: u32) -> Result<Self, GpuError> {
+        if !(1..=16384).contains(&width) || !(1..=16384).contains(&height) {
+            return Err(GpuError::Setting(format!("image size {width}x{height} must be within 1..=16384 on each side")));
+        }
+        let pixels = width as u64 * height as u64;
+        let (geo_nodes, geo_tris, geo_depth) = geometry(pts);
+        let lim = &gpu.limits;
+        let max_binding = lim.max_storage_buffer_binding_size;
+        gpu.require("max_storage_buffer_binding_size (geometry)", geo_tris.len() as u64 * 48, max_binding)?;
+        gpu.require("max_storage_buffer_binding_size (path states)", pixels * 64, max_binding)?;
+        gpu.require("max_storage_buffers_per_shader_stage", 12, lim.max_storage_buffers_per_shader_stage as u64)?;
+        gpu.require("max_compute_workgroups_per_dimension (pixels)", pixels.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
+        gpu.require("geometry BVH depth (64-entry traversal stack)", geo_depth, MAX_GEO_DEPTH)?;
+        let set = GpuLightSet::new(gpu, pts.lights(), pts.bounds(), pts.bsh())?;
+        let features =
+            Features { lights: set.types, reservoir_k: RESERVOIR_K as u32, workgroup_size: WG, heuristic: Heuristic::Power, ..Features::default() };
+        let s = |label: &str, bytes: &[u8]| storage(gpu, label, bytes, wgpu::BufferUsages::empty());
+        let geo_nodes_buf = s("geo nodes", bytemuck::cast_slice(&geo_nodes));
+        let geo_tris_buf = s("geo tris", bytemuck::cast_slice(&geo_tris));
+        let albedo: Vec<[f32; 4]> = pts.scene().materials.iter().map(|m| [m.albedo.x, m.albedo.y, m.albedo.z, 0.0]).collect();
+        let albedo_buf = s("albedo", bytemuck::cast_slice(&albedo));
+        let rw = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::COPY_SRC;
+        let candidates = zeroed(gpu, "candidates", pixels * 4, rw);
+        let paths = zeroed(gpu, "paths", pixels * std::mem::size_of::<GpuPathState>() as u64, rw);
+        let vertices = zeroed(gpu, "vertices", pixels * std::mem::size_of::<GpuPathVertex>() as u64, rw);
+        let radiance = zeroed(gpu, "radiance", pixels * 16, rw);
+        let readback = zeroed(gpu, "radiance readback", pixels * 16, wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
+        let pt_params = UniformSlots::new::<PtParams>(gpu, "pt params", MAX_DEPTH as u64);
+        let shade_params = UniformSlots::new::<ShadeParams>(gpu, "shade params", MAX_DEPTH as u64);
+        let kernel = |k: Kernel, reads: u32, writes: u32, bufs: &[&wgpu::Buffer], uniform: u64| {
+            let layout = bind_layout(gpu, k.name(), reads, writes, true);
+            let p = pipeline(gpu, k.name(), generate(k, &features)?, &[&layout, &set.table_layout]);
+            let bg = bind_group(gpu, k.name(), &layout, bufs, Some(uniform));
+            Ok::<_, GpuError>((p, bg))
+        };
+        let extend = kernel(
+            Kernel::PtExtend,
+            8,
+            3,
+            &[
+                &pt_params.buffer,
+                &set.lights,
+                &set.rt2,
+                &set.bsh,
+                &set.leaf,
+                &geo_nodes_buf,
+                &geo_tris_buf,
+                &albedo_buf,
+                &candidates,
+                &paths,
+                &vertices,
+                &radiance,
+            ],
+            pt_params.size,
+        )?;
+        let connect = kernel(
+            Kernel::PtConnect,
+            7,
+            2,
+            &[&shade_params.buffer, &vertices, &set.lights, &set.rt2, &set.r2, &set.bsh, &geo_nodes_buf, &geo_tris_buf, &radiance, &candidates],
+            shade_params.size,
+        )?;
+        let cam = &pts.scene().camera;
+        let (r, u, f) = cam.basis();
+        let t = (cam.vfov_deg.to_radians() * 0.5).tan();
+        let aspect = width as f32 / height as f32;
+        let g = GpuPt {
+            gpu,
+            width,
+            height,
+            set,
+            camera: (cam.position, r * (t * aspect), u * t, f),
+            diag: pts.scene().diagonal(),
+            radiance,
+            readback,
+            pt_params,
+            shade_params,
+            extend,
+            connect,
+            busy: std::sync::Mutex::new(()),
+        };
+        gpu.wait()?;
+        Ok(g)
+    }
+
+    /// Renders `passes` more passes into `acc` (which must match the image
+    /// size and hold passes of the same settings): pass numbers continue
+    /// from `acc.passes`, so a render split over calls equals one call.
+    /// Time is GPU time from timestamps where the adapter has them, else
+    /// wall time around the submitted passes; the second value says which
+    /// (`true`: timestamps).
+    pub fn render(&self, acc: &mut PtRender, s: &PtSettings, passes: u32) -> Result<bool, GpuError> {
+        if s.method != PtMethod::SlcReservoir {
+            return Err(GpuError::Setting(format!(
+                "GPU path tracing runs slc-reservoir (k = {RESERVOIR_K}); method {} runs with --backend cpu",
+                s.method.name()
+            )));
+        }
+        if acc.size() != (self.width, self.height) {
+            return Err(GpuError::Setting(format!("accumulation is {:?}, the GPU scene was set up for {}x{}", acc.size(), self.width, self.height)));
+        }
+        if !(1..=MAX_DEPTH).contains(&s.max_depth) {
+            return Err(GpuError::Setting(format!("max depth {} must be in 1..={MAX_DEPTH}", s.max_depth)));
+        }
+        let params = RangeParams::new(s.error_bound, s.exposure).map_err(|e| GpuError::Setting(e.to_string()))?;
+        let _busy = self.busy.lock().map_err(|_| GpuError::Device("a previous render panicked".into()))?;
+        let gpu = self.gpu;
+        self.set.set_threshold(gpu, &params);
+        let pixels = self.width * self.height;
+        let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("clear") });
+        enc.clear_buffer(&self.radiance, 0, None);
+        gpu.queue.submit([enc.finish()]);
+        let (pos, right, up, fwd) = self.camera;
+        // Timestamps for every pass, or none (then wall time).
+        let mut timer = if passes <= 2048 { Timer::new(gpu, passes) } else { None };
+        let t = Instant::now();
+        for k in 0..passes {
+            let pass = acc.passes + k;
+            self.set.set_frame(gpu, s.seed, pass);
+            let pt: Vec<PtParams> = (0..s.max_depth)
+                .map(|depth| PtParams {
+                    cam_pos: pos,
+                    width: self.width,
+                    cam_right: right,
+                    height: self.height,
+                    cam_up: up,
+                    depth,
+                    cam_forward: fwd,
+                    seed: s.seed,
+                    pass_index: pass,
+                    max_depth: s.max_depth,
+                    eps: 1e-5 * self.diag,
+                    t_min: 1e-6 * self.diag,
+                })
+                .collect();
+            self.pt_params.write(gpu, &pt);
+            let shade: Vec<ShadeParams> = (0..s.max_depth)
+                .map(|depth| ShadeParams {
+                    point_count: pixels,
+                    seed: s.seed,
+                    frame: pass.wrapping_mul(MAX_DEPTH).wrapping_add(depth),
+                    eps: 1e-5 * self.diag,
+                })
+                .collect();
+            self.shade_params.write(gpu, &shade);
+            let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc pt pass") });
+            {
+                let writes = timer.as_mut().and_then(|t| t.next());
+                let mut cp = enc.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc pt pass"), timestamp_writes: writes });
+                self.set.encode(&mut cp);
+                for depth in 0..s.max_depth as usize {
+                    cp.set_pipeline(&self.extend.0);
+                    cp.set_bind_group(0, &self.extend.1, &[self.pt_params.offset(depth)]);
+                    cp.dispatch_workgroups(pixels.div_ceil(WG), 1, 1);
+                    cp.set_pipeline(&self.connect.0);
+                    cp.set_bind_group(0, &self.connect.1, &[self.shade_params.offset(depth)]);
+                    cp.dispatch_workgroups(pixels.div_ceil(WG), 1, 1);
+                }
+            }
+            if k + 1 == passes
+                && let Some(t) = &timer
+            {
+                t.resolve(&mut enc);
+            }
+            gpu.queue.submit([enc.finish()]);
+        }
+        gpu.wait()?;
+        let wall_ms = t.elapsed().as_secs_f64() * 1e3;
+        let (ms, timestamps) = match &timer {
+            Some(t) if passes > 0 => (t.total_ms(gpu)?, true),
+            _ => (wall_ms, false),
+        };
+        let data: Vec<[f32; 4]> = read_back(gpu, &self.radiance, &self.readback)?;
+        let sum: Vec<Vec3> = data.iter().map(|d| Vec3::new(d[0], d[1], d[2])).collect();
+        acc.accumulate(&sum, passes, ms);
+        Ok(timestamps)
+    }
+}

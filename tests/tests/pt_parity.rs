@@ -1,0 +1,150 @@
+//! CPU/GPU parity of the path tracer (application B).
+//!
+//! The two backends run the same estimator (`slc-reservoir`, k = 8, power
+//! heuristic, the same ξ per light and pass) but draw their per-path random
+//! numbers from different generators, so their images agree in
+//! expectation, not pixel by pixel. Every bound below is therefore derived
+//! from the variance measured over independent passes (fixed seeds):
+//! - **Image mean.** The per-pass image means of the two backends agree
+//!   within 5σ of the difference (σ² = σ²_cpu/n + σ²_gpu/n), and the GPU's
+//!   agrees with the CPU's unculled `uniform` estimator within 5σ: the GPU
+//!   estimator is unbiased.
+//! - **Images.** RMSE(mean CPU image, mean GPU image) ≤ 2 × the RMSE that
+//!   the per-pixel variances predict for two independent unbiased images,
+//!   `√(mean_px (s²_cpu + s²_gpu)/n)`; a bias of the size of the noise fails.
+//! - **Hard cases.** Error bounds of 1e-30 (nothing culled) and 1e30
+//!   (everything culled), intensities near f32::MAX and subnormal: every
+//!   pixel finite and non-negative, means as above.
+
+use glam::Vec3;
+use slc_core::ies::IesProfile;
+use slc_core::light::{IesLight, Light, PointLight, SpotLight};
+use slc_cpu::pt::{PtMethod, PtRender, PtScene, PtSettings};
+use slc_cpu::scene::Scene;
+use slc_tests::{gpu, shared_data};
+use slc_wgpu::pt::GpuPt;
+use std::sync::Arc;
+
+const W: u32 = 16;
+const H: u32 = 16;
+
+/// The Cornell box with its ceiling light split into 4×4 quads (32
+/// triangle lights), plus a point, a spot and an IES light: every light
+/// type of the path tracer, with more lights in range than reservoir slots.
+fn scene(extra_intensity: f32) -> (Scene, Vec<Light>) {
+    let s = Scene::cornell_box_split_light(4);
+    let mut lights = vec![
+        Light::Point(PointLight::new(Vec3::new(0.15, 0.45, 0.2), Vec3::splat(0.01 * extra_intensity)).unwrap()),
+        Light::Spot(SpotLight::new(Vec3::new(0.4, 0.5, 0.4), Vec3::NEG_Y, Vec3::new(0.05, 0.03, 0.01) * extra_intensity, 0.3, 0.6).unwrap()),
+    ];
+    if let Some(p) = shared_data("ies/indoor-60w-120deg.ies") {
+        let profile = Arc::new(IesProfile::parse_bytes(&std::fs::read(p).unwrap()).unwrap());
+        lights
+            .push(Light::Ies(IesLight::new(Vec3::new(0.3, 0.54, 0.15), Vec3::NEG_Y, Vec3::X, Vec3::splat(1e-4 * extra_intensity), profile).unwrap()));
+    }
+    (s, lights)
+}
+
+/// Per-pass images (mean RGB per pixel) from one pass at a time, as
+/// differences of the accumulated sums. Asserts every accumulated pixel is
+/// finite and non-negative.
+fn passes(mut one: impl FnMut(&mut PtRender), n: u32) -> Vec<Vec<f64>> {
+    let mut acc = PtRender::new(W, H);
+    let mut prev = vec![0.0f64; (W * H) as usize];
+    (0..n)
+        .map(|_| {
+            one(&mut acc);
+            let img = acc.image();
+            assert!(img.data.iter().all(|v| v.is_finite() && v.min_element() >= 0.0), "a pixel is NaN, infinite or negative");
+            let total: Vec<f64> = img.data.iter().map(|v| (v.x + v.y + v.z) as f64 / 3.0 * acc.passes as f64).collect();
+            let pass: Vec<f64> = total.iter().zip(&prev).map(|(t, p)| t - p).collect();
+            prev = total;
+            pass
+        })
+        .collect()
+}
+
+/// Per-pixel mean and variance of the mean, and the image mean's mean and σ.
+struct Stats {
+    mean: Vec<f64>,
+    var_of_mean: Vec<f64>,
+    image_mean: f64,
+    image_sigma: f64,
+}
+
+fn stats(p: &[Vec<f64>]) -> Stats {
+    let n = p.len() as f64;
+    let px = p[0].len();
+    let mean: Vec<f64> = (0..px).map(|i| p.iter().map(|x| x[i]).sum::<f64>() / n).collect();
+    let var_of_mean = (0..px).map(|i| p.iter().map(|x| (x[i] - mean[i]).powi(2)).sum::<f64>() / (n - 1.0) / n).collect();
+    let means: Vec<f64> = p.iter().map(|x| x.iter().sum::<f64>() / px as f64).collect();
+    let image_mean = means.iter().sum::<f64>() / n;
+    let var = means.iter().map(|m| (m - image_mean).powi(2)).sum::<f64>() / (n - 1.0);
+    Stats { mean, var_of_mean, image_mean, image_sigma: (var / n).sqrt() }
+}
+
+fn assert_means_agree(what: &str, a: &Stats, b: &Stats) {
+    let bound = 5.0 * (a.image_sigma.powi(2) + b.image_sigma.powi(2)).sqrt();
+    eprintln!("{what}: image means {:.5} vs {:.5}, |Δ| = {:.5}, 5σ = {bound:.5}", a.image_mean, b.image_mean, (a.image_mean - b.image_mean).abs());
+    assert!((a.image_mean - b.image_mean).abs() <= bound, "{what}: image means {} vs {} (5σ = {bound})", a.image_mean, b.image_mean);
+}
+
+fn all_finite(p: &[Vec<f64>]) -> bool {
+    p.iter().flatten().all(|v| v.is_finite())
+}
+
+fn run(eps: f32, intensity: f32, n: u32) -> Option<(Stats, Stats, Stats)> {
+    let g = gpu()?;
+    let (s, lights) = scene(intensity);
+    let mut pts = PtScene::new(&s, &lights).unwrap();
+    let gpt = GpuPt::new(g, &pts, W, H).unwrap();
+    let res = PtSettings { method: PtMethod::SlcReservoir, error_bound: eps, seed: 3, ..PtSettings::default() };
+    let gp = passes(|acc| _ = gpt.render(acc, &res, 1).unwrap(), n);
+    let cp = passes(|acc| pts.render(acc, &res, 1).unwrap(), n);
+    let uniform = PtSettings { method: PtMethod::Uniform, ..res };
+    let up = passes(|acc| pts.render(acc, &uniform, 1).unwrap(), n);
+    assert!(all_finite(&gp) && all_finite(&cp), "ε = {eps}, intensity ×{intensity}: a pass is NaN or infinite");
+    Some((stats(&gp), stats(&cp), stats(&up)))
+}
+
+/// The GPU path tracer is the CPU's estimator: same image mean, images
+/// within the variance bound, and both equal the unculled estimator's mean.
+#[test]
+fn gpu_path_tracer_matches_cpu_and_unculled_in_expectation() {
+    let Some((g, c, u)) = run(0.05, 1.0, 400) else { return };
+    assert!(g.image_mean > 0.0);
+    assert_means_agree("GPU vs CPU slc-reservoir", &g, &c);
+    assert_means_agree("GPU slc-reservoir vs CPU uniform (unculled)", &g, &u);
+    let px = g.mean.len() as f64;
+    let rmse = (g.mean.iter().zip(&c.mean).map(|(a, b)| (a - b).powi(2)).sum::<f64>() / px).sqrt();
+    let predicted = (g.var_of_mean.iter().zip(&c.var_of_mean).map(|(a, b)| a + b).sum::<f64>() / px).sqrt();
+    eprintln!("RMSE(CPU, GPU) = {rmse:.5}, predicted by the variances {predicted:.5}, ratio {:.3}", rmse / predicted);
+    assert!(rmse <= 2.0 * predicted, "RMSE(CPU, GPU) = {rmse} exceeds 2 × {predicted}");
+}
+
+/// Hard cases on the GPU: nothing culled, everything culled, huge and
+/// subnormal intensities: finite, non-negative, and the same mean as the CPU.
+#[test]
+fn gpu_path_tracer_hard_cases() {
+    for (eps, intensity) in [(1e-30f32, 1.0f32), (1e30, 1.0), (0.05, 1e36), (0.05, 1e-40)] {
+        let Some((g, c, _)) = run(eps, intensity, 40) else { return };
+        assert!(g.image_mean.is_finite());
+        assert_means_agree(&format!("ε = {eps:e}, intensity ×{intensity:e}"), &g, &c);
+    }
+}
+
+/// Methods other than slc-reservoir, and a mismatched accumulation, are
+/// typed errors on the GPU.
+#[test]
+fn gpu_path_tracer_rejects_what_it_does_not_run() {
+    let Some(g) = gpu() else { return };
+    let (s, lights) = scene(1.0);
+    let pts = PtScene::new(&s, &lights).unwrap();
+    let gpt = GpuPt::new(g, &pts, W, H).unwrap();
+    let e = gpt.render(&mut PtRender::new(W, H), &PtSettings { method: PtMethod::Uniform, ..PtSettings::default() }, 1).unwrap_err();
+    assert!(e.to_string().contains("--backend cpu"), "{e}");
+    let ok = PtSettings { method: PtMethod::SlcReservoir, ..PtSettings::default() };
+    assert!(gpt.render(&mut PtRender::new(W + 1, H), &ok, 1).is_err());
+    assert!(gpt.render(&mut PtRender::new(W, H), &PtSettings { max_depth: 0, ..ok }, 1).is_err());
+    assert!(gpt.render(&mut PtRender::new(W, H), &PtSettings { error_bound: f32::NAN, ..ok }, 1).is_err());
+}
