@@ -38,7 +38,7 @@ pub struct BenchArgs {
     /// Also plot RMSE against shading time (.svg or .png).
     #[arg(long)]
     plot: Option<PathBuf>,
-    /// Path tracing: the SLC error bound ε [default: 0.1].
+    /// Path tracing: the SLC error bound ε [default: 0.3].
     #[arg(long)]
     error_bound: Option<f32>,
     /// Path tracing: seconds per method (equal time).
