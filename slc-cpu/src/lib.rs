@@ -13,7 +13,7 @@
 //!   IES lights: SLC over the BSH (all candidates or a k-slot reservoir),
 //!   MIS whose light pdf includes the RR probability, and the uniform,
 //!   power and light-BVH baselines on the same renderer.
-//! - [`reference`]: cached references for both applications.
+//! - [`mod@reference`]: cached references for both applications.
 //! - [`direct`]: unshadowed direct light at arbitrary shading points through
 //!   the BSH and a k-slot reservoir, number for number as the GPU kernel.
 //!

@@ -9,9 +9,10 @@
 //!   within 5σ of the difference (σ² = σ²_cpu/n + σ²_gpu/n), and the GPU's
 //!   agrees with the CPU's unculled `uniform` estimator within 5σ: the GPU
 //!   estimator is unbiased.
-//! - **Images.** RMSE(mean CPU image, mean GPU image) ≤ 2 × the RMSE that
+//! - **Images.** RMSE(mean CPU image, mean GPU image) ≤ 1.5 × the RMSE that
 //!   the per-pixel variances predict for two independent unbiased images,
-//!   `√(mean_px (s²_cpu + s²_gpu)/n)`; a bias of the size of the noise fails.
+//!   `√(mean_px (s²_cpu + s²_gpu)/n)` (observed 0.71 ×), so a per-pixel bias
+//!   beyond about 1.3 × the predicted noise fails.
 //! - **Hard cases.** Error bounds of 1e-30 (nothing culled) and 1e30
 //!   (everything culled), intensities near f32::MAX and subnormal: every
 //!   pixel finite and non-negative, means as above.
@@ -119,7 +120,7 @@ fn gpu_path_tracer_matches_cpu_and_unculled_in_expectation() {
     let rmse = (g.mean.iter().zip(&c.mean).map(|(a, b)| (a - b).powi(2)).sum::<f64>() / px).sqrt();
     let predicted = (g.var_of_mean.iter().zip(&c.var_of_mean).map(|(a, b)| a + b).sum::<f64>() / px).sqrt();
     eprintln!("RMSE(CPU, GPU) = {rmse:.5}, predicted by the variances {predicted:.5}, ratio {:.3}", rmse / predicted);
-    assert!(rmse <= 2.0 * predicted, "RMSE(CPU, GPU) = {rmse} exceeds 2 × {predicted}");
+    assert!(rmse <= 1.5 * predicted, "RMSE(CPU, GPU) = {rmse} exceeds 1.5 × {predicted}");
 }
 
 /// Hard cases on the GPU: nothing culled, everything culled, huge and
