@@ -11,6 +11,7 @@
 //!
 //! [[geometry]]
 //! builtin = "cornell"              # or: obj = "room.obj", scale = 1.0, translate = [0, 0, 0]
+//! emission_scale = 1.0             # 0 switches this geometry's emitters off
 //!
 //! [[emissive_mesh]]
 //! obj = "../../shared/data/meshes/bunny.obj"
@@ -94,6 +95,10 @@ struct GeometryDef {
     scale: f32,
     #[serde(default)]
     translate: [f32; 3],
+    /// Scales the emission of this geometry's materials (0 switches its
+    /// emitters off, e.g. the Cornell box's ceiling light).
+    #[serde(default = "one")]
+    emission_scale: f32,
 }
 
 #[derive(Deserialize)]
@@ -239,12 +244,18 @@ impl SceneFile {
             if !(g.scale.is_finite() && g.scale > 0.0) {
                 return Err(bad(format!("geometry {i}: scale {} must be finite and > 0", g.scale)));
             }
-            let part = match (&g.builtin, &g.obj) {
+            if !(g.emission_scale.is_finite() && g.emission_scale >= 0.0) {
+                return Err(bad(format!("geometry {i}: emission_scale {} must be finite and >= 0", g.emission_scale)));
+            }
+            let mut part = match (&g.builtin, &g.obj) {
                 (Some(b), None) if b == "cornell" => Scene::cornell_box(),
                 (Some(b), None) => return Err(bad(format!("geometry {i}: unknown builtin '{b}' (known: cornell)"))),
                 (None, Some(p)) => Scene::load_obj(&dir.join(p))?,
                 _ => return Err(bad(format!("geometry {i}: give exactly one of `builtin` or `obj`"))),
             };
+            for m in &mut part.materials {
+                m.emission *= g.emission_scale;
+            }
             append(&mut scene, part, g.scale, g.translate);
         }
         for (i, e) in f.emissive_mesh.iter().enumerate() {
@@ -371,6 +382,7 @@ mod tests {
         for text in [
             "[[geometry]]\nbuiltin = \"moon\"\n",
             "[[geometry]]\nbuiltin = \"cornell\"\nscale = -1.0\n",
+            "[[geometry]]\nbuiltin = \"cornell\"\nemission_scale = -1.0\n",
             "",
             "[[geometry]]\nbuiltin = \"cornell\"\n[[light]]\ntype = \"point\"\nposition = [0, 0, 0]\nintensity = [-1, 0, 0]\n",
             "[[geometry]]\nbuiltin = \"cornell\"\n[[light]]\ntype = \"laser\"\nposition = [0, 0, 0]\n",
