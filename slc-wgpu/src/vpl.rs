@@ -15,6 +15,9 @@ use wgpu::util::DeviceExt;
 
 /// Tile edge of `vpl_tiled` in sub-image pixels.
 pub const TILE: u32 = 8;
+/// Default capacity of the tile light list (8 KiB of workgroup memory): a
+/// subset with more lights is culled and shaded in chunks of this size.
+pub const TILE_LIST: u32 = 2048;
 /// Workgroup size of `light_update`.
 const WG: u32 = 64;
 
@@ -57,8 +60,16 @@ pub struct GpuVpl<'a> {
 
 impl<'a> GpuVpl<'a> {
     /// Uploads the G-buffer and VPLs of `cpu` and builds the pipelines.
-    /// Checks buffer, dispatch and workgroup-memory limits first.
+    /// Checks buffer, dispatch and workgroup-memory limits first. The tile
+    /// light list holds up to [`TILE_LIST`] lights; larger subsets stream
+    /// through it in chunks.
     pub fn new(gpu: &'a GpuContext, cpu: &VplContext) -> Result<Self, GpuError> {
+        Self::with_tile_list(gpu, cpu, TILE_LIST)
+    }
+
+    /// [`GpuVpl::new`] with a tile light list of `capacity` lights (at
+    /// least 1): smaller lists take less workgroup memory and more chunks.
+    pub fn with_tile_list(gpu: &'a GpuContext, cpu: &VplContext, capacity: u32) -> Result<Self, GpuError> {
         let gb = cpu.gbuffer();
         let v = cpu.vpls();
         let (w, h) = (gb.width, gb.height);
@@ -76,7 +87,8 @@ impl<'a> GpuVpl<'a> {
             lim.max_compute_workgroups_per_dimension as u64,
         )?;
         gpu.require("max_compute_workgroups_per_dimension (light update)", n.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
-        let wg_bytes = 32 * TILE * TILE + 4 * per_subset + 4;
+        let list = per_subset.min(capacity).max(1);
+        let wg_bytes = 32 * TILE * TILE + 4 * list + 4;
         gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes as u64, lim.max_compute_workgroup_storage_size as u64)?;
 
         let pos: Vec<[f32; 4]> = (0..gb.position.len())
@@ -133,14 +145,7 @@ impl<'a> GpuVpl<'a> {
         let vpl_only = LightSet { vpl: true, ..LightSet::default() };
         let mut tiled = Vec::new();
         for (m, cm) in [(VplMethod::Slc, CullMethod::Slc), (VplMethod::Clamp, CullMethod::Clamp), (VplMethod::None, CullMethod::None)] {
-            let f = Features {
-                lights: vpl_only,
-                tile_size: TILE,
-                interleave: PERIOD,
-                max_tile_lights: per_subset.max(1),
-                method: cm,
-                ..Features::default()
-            };
+            let f = Features { lights: vpl_only, tile_size: TILE, interleave: PERIOD, max_tile_lights: list, method: cm, ..Features::default() };
             tiled.push((
                 m,
                 Layout { period: PERIOD, per_subset, pipeline: pipeline(gpu, "vpl_tiled", generate(Kernel::VplTiled, &f)?, &[&tiled_layout]) },

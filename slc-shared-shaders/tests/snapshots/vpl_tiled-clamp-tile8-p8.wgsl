@@ -445,8 +445,9 @@ fn light_normal(l: GpuLight) -> vec3f {
 // which holds the pixels (s mod P + P·i, s / P + P·j) and shades them with
 // VPL subset s (VPLs stored subset after subset, flux already scaled by P²).
 // The tile's box of G-buffer positions is reduced in workgroup memory, the
-// subset's range spheres are culled against it into a workgroup list, then
-// each pixel loops over the list with the keep test and 1/p weight.
+// subset's range spheres are culled against it into a workgroup list (a
+// chunk of the subset at a time), then each pixel loops over the list with
+// the keep test and 1/p weight.
 
 const P: u32 = 8u;
 const TILE: u32 = 8u;
@@ -487,9 +488,6 @@ fn main(
     let valid = inside && pos.w > 0.0;
     wg_lo[li] = select(vec3f(3.0e38), pos.xyz, valid);
     wg_hi[li] = select(vec3f(-3.0e38), pos.xyz, valid);
-    if li == 0u {
-        atomicStore(&tile_count, 0u);
-    }
     workgroupBarrier();
     for (var stride = THREADS / 2u; stride > 0u; stride = stride / 2u) {
         if li < stride {
@@ -501,29 +499,41 @@ fn main(
     let lo = wg_lo[0];
     let hi = wg_hi[0];
     let base = sub * params.lights_per_subset;
-    for (var j = li; j < params.lights_per_subset; j += THREADS) {
-        if sphere_overlaps_aabb(lights[base + j].p0, cull_radius(r2[base + j]), lo, hi) {
-            let slot = atomicAdd(&tile_count, 1u);
-            if slot < MAX_TILE_LIGHTS {
-                tile_lights[slot] = j;
-            }
-        }
-    }
-    let count = min(workgroupUniformLoad(&tile_count), MAX_TILE_LIGHTS);
-    if !valid {
-        return;
-    }
     var e = vec3f(0.0);
     var kept = 0u;
-    for (var k = 0u; k < count; k++) {
-        let j = base + tile_lights[k];
-        let l = lights[j];
-        let v = pos.xyz - l.p0;
-        let t = vpl_transfer(l.p1, nrm, v, params.min_d2);
-        if dot(v, v) < r2[j] {
-            e += l.intensity * t;
-            kept += 1u;
+    // The subset streams through the list MAX_TILE_LIGHTS lights at a time,
+    // so any subset size fits the workgroup memory.
+    for (var first = 0u; first < params.lights_per_subset; first += MAX_TILE_LIGHTS) {
+        let end = min(first + MAX_TILE_LIGHTS, params.lights_per_subset);
+        if li == 0u {
+            atomicStore(&tile_count, 0u);
         }
+        workgroupBarrier();
+        for (var j = first + li; j < end; j += THREADS) {
+            if sphere_overlaps_aabb(lights[base + j].p0, cull_radius(r2[base + j]), lo, hi) {
+                let slot = atomicAdd(&tile_count, 1u);
+                if slot < MAX_TILE_LIGHTS {
+                    tile_lights[slot] = j;
+                }
+            }
+        }
+        let count = min(workgroupUniformLoad(&tile_count), MAX_TILE_LIGHTS);
+        if valid {
+            for (var k = 0u; k < count; k++) {
+                let j = base + tile_lights[k];
+                let l = lights[j];
+                let v = pos.xyz - l.p0;
+                let t = vpl_transfer(l.p1, nrm, v, params.min_d2);
+                if dot(v, v) < r2[j] {
+                    e += l.intensity * t;
+                    kept += 1u;
+                }
+            }
+        }
+        // Every thread is done with the list before the next chunk refills it.
+        workgroupBarrier();
     }
-    irradiance[pix] = vec4f(e, f32(kept));
+    if valid {
+        irradiance[pix] = vec4f(e, f32(kept));
+    }
 }
