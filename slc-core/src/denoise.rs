@@ -10,6 +10,12 @@ crate::shared! {
     /// Relative depth tolerance σ of [`bilateral_weight`].
     pub const DEPTH_SIGMA: f32 = 0.05;
 
+    /// Weight above which a neighbour counts as covering its VPL subset. A
+    /// `P × P` window holds each subset once; where some are not covered
+    /// (edges, corners, the image border) the filter widens to `2P × 2P`,
+    /// else the mix of the covered subsets leaves a P-periodic pattern.
+    pub const COVER_WEIGHT: f32 = 0.1;
+
     /// Weight of a neighbour with normal `nj` at depth `zj` for a pixel with
     /// normal `n` at depth `z`: `max(n·nj, 0)^16 · max(1 − δ², 0)²`,
     /// `δ = (zj − z)·inv_sz` with `inv_sz = 1/(σ z)` (a compact-support

@@ -4,13 +4,16 @@
 //! similarity so edges stay sharp. Filters irradiance, before albedo.
 //!
 //! Weights: slc-core's [`bilateral_weight`] (shared with the GPU's
-//! `vpl_denoise` kernel). Background pixels (depth ∞) get weight 0. The
+//! `vpl_denoise` kernel). Where some neighbour of the `P × P` window
+//! weighs no more than [`COVER_WEIGHT`], its VPL subset is missing from the
+//! estimate (edges, corners, the image border), and the window doubles to
+//! `2P × 2P`. Background pixels (depth ∞) get weight 0. The
 //! inner loop runs over contiguous row segments of SoA arrays, branch-free.
 
 use crate::gbuffer::GBuffer;
 use glam::Vec3;
 use rayon::prelude::*;
-use slc_core::denoise::{DEPTH_SIGMA, bilateral_weight};
+use slc_core::denoise::{DEPTH_SIGMA, COVER_WEIGHT, bilateral_weight};
 
 /// Filters `e` (one value per pixel) with a `period × period` window.
 pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
@@ -20,7 +23,7 @@ pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
     let (nx, ny, nz) = (split(|v| v.x, &gb.normal), split(|v| v.y, &gb.normal), split(|v| v.z, &gb.normal));
     // Depth 1e30 stands for "no surface": every δ to it is huge, weight 0.
     let z: Vec<f32> = gb.depth.iter().map(|&d| if d.is_finite() { d } else { 1e30 }).collect();
-    let half = period as usize / 2;
+    let p = period as usize;
     (0..w * h)
         .into_par_iter()
         .map(|i| {
@@ -30,29 +33,42 @@ pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
             let (x, y) = (i % w, i / w);
             let (n, zi) = (gb.normal[i], z[i]);
             let inv = 1.0 / (DEPTH_SIGMA * zi);
-            let (x0, x1) = (x.saturating_sub(half), (x + period as usize - half).min(w));
-            let (y0, y1) = (y.saturating_sub(half), (y + period as usize - half).min(h));
-            let (mut sr, mut sg, mut sb, mut sw) = (0.0f32, 0.0f32, 0.0f32, 0.0f32);
-            for yy in y0..y1 {
-                let row = yy * w;
-                let r = row + x0..row + x1;
-                for ((((((&zj, &a), &b), &c), &r_), &g_), &b_) in z[r.clone()]
-                    .iter()
-                    .zip(&nx[r.clone()])
-                    .zip(&ny[r.clone()])
-                    .zip(&nz[r.clone()])
-                    .zip(&er[r.clone()])
-                    .zip(&eg[r.clone()])
-                    .zip(&eb[r])
-                {
-                    let wgt = bilateral_weight(n, Vec3::new(a, b, c), zi, zj, inv);
-                    sr += r_ * wgt;
-                    sg += g_ * wgt;
-                    sb += b_ * wgt;
-                    sw += wgt;
+            // Weighted sum over the `size × size` window around (x, y).
+            let window = |size: usize| {
+                let half = size / 2;
+                let (x0, x1) = (x.saturating_sub(half), (x + size - half).min(w));
+                let (y0, y1) = (y.saturating_sub(half), (y + size - half).min(h));
+                let (mut sr, mut sg, mut sb, mut sw) = (0.0f32, 0.0f32, 0.0f32, 0.0f32);
+                let mut covered = 0u32;
+                for yy in y0..y1 {
+                    let row = yy * w;
+                    let r = row + x0..row + x1;
+                    for ((((((&zj, &a), &b), &c), &r_), &g_), &b_) in z[r.clone()]
+                        .iter()
+                        .zip(&nx[r.clone()])
+                        .zip(&ny[r.clone()])
+                        .zip(&nz[r.clone()])
+                        .zip(&er[r.clone()])
+                        .zip(&eg[r.clone()])
+                        .zip(&eb[r])
+                    {
+                        let wgt = bilateral_weight(n, Vec3::new(a, b, c), zi, zj, inv);
+                        sr += r_ * wgt;
+                        sg += g_ * wgt;
+                        sb += b_ * wgt;
+                        sw += wgt;
+                        covered += (wgt > COVER_WEIGHT) as u32;
+                    }
                 }
+                (Vec3::new(sr, sg, sb), sw, covered)
+            };
+            let (mut sum, mut sw, covered) = window(p);
+            // A VPL subset is missing (an edge, a corner, the border): the
+            // doubled window brings it in.
+            if covered < (p * p) as u32 {
+                (sum, sw, _) = window(2 * p);
             }
-            if sw > 0.0 { Vec3::new(sr, sg, sb) / sw } else { e[i] }
+            if sw > 0.0 { sum / sw } else { e[i] }
         })
         .collect()
 }

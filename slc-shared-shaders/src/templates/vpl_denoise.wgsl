@@ -1,7 +1,8 @@
 {% include "header.wgsl" %}
 // Cross-bilateral denoise of the VPL irradiance over the {{ period }}×{{ period }}
 // interleaving window (one pixel of every VPL subset), weighted by the
-// core's bilateral_weight on normal and depth; the CPU's filter, per pixel.
+// core's bilateral_weight on normal and depth, widened to twice the period
+// where a VPL subset is missing from the window; the CPU's filter, per pixel.
 
 @group(0) @binding(0) var<uniform> params: VplParams;
 @group(0) @binding(1) var<storage, read> gb_position: array<vec4f>;
@@ -15,6 +16,39 @@ const PERIOD: u32 = {{ period }}u;
 /// Depth of pixel `i` (`gb_normal.w`), 1e30 where there is no surface.
 fn depth_of(i: u32) -> f32 {
     return select(1e30, gb_normal[i].w, gb_position[i].w > 0.0);
+}
+
+/// Weighted irradiance sum, total weight and the number of neighbours
+/// heavier than COVER_WEIGHT over the `size × size` window around pixel
+/// (x, y), for a pixel with normal `n` and depth `z`.
+struct Window {
+    sum: vec3f,
+    weight: f32,
+    covered: u32,
+}
+
+fn window_sum(x: u32, y: u32, size: u32, n: vec3f, z: f32, inv: f32) -> Window {
+    let w = params.width;
+    let h = params.height;
+    let half = size / 2u;
+    let x0 = max(x, half) - half;
+    let x1 = min(x + size - half, w);
+    let y0 = max(y, half) - half;
+    let y1 = min(y + size - half, h);
+    var win: Window;
+    win.sum = vec3f(0.0);
+    win.weight = 0.0;
+    win.covered = 0u;
+    for (var yy = y0; yy < y1; yy++) {
+        for (var xx = x0; xx < x1; xx++) {
+            let j = yy * w + xx;
+            let wgt = bilateral_weight(n, gb_normal[j].xyz, z, depth_of(j), inv);
+            win.sum += irradiance[j].xyz * wgt;
+            win.weight += wgt;
+            win.covered += select(0u, 1u, wgt > COVER_WEIGHT);
+        }
+    }
+    return win;
 }
 
 @compute @workgroup_size({{ tile }}, {{ tile }})
@@ -33,20 +67,11 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let n = gb_normal[i].xyz;
     let z = depth_of(i);
     let inv = 1.0 / (DEPTH_SIGMA * z);
-    let half = PERIOD / 2u;
-    let x0 = max(gid.x, half) - half;
-    let x1 = min(gid.x + PERIOD - half, w);
-    let y0 = max(gid.y, half) - half;
-    let y1 = min(gid.y + PERIOD - half, h);
-    var sum = vec3f(0.0);
-    var sw = 0.0;
-    for (var y = y0; y < y1; y++) {
-        for (var x = x0; x < x1; x++) {
-            let j = y * w + x;
-            let wgt = bilateral_weight(n, gb_normal[j].xyz, z, depth_of(j), inv);
-            sum += irradiance[j].xyz * wgt;
-            sw += wgt;
-        }
+    var s = window_sum(gid.x, gid.y, PERIOD, n, z, inv);
+    // A VPL subset is missing (an edge, a corner, the border): the doubled
+    // window brings it in (the CPU filter's rule).
+    if s.covered < PERIOD * PERIOD {
+        s = window_sum(gid.x, gid.y, 2u * PERIOD, n, z, inv);
     }
-    filtered[i] = vec4f(select(e.xyz, sum / sw, sw > 0.0), e.w);
+    filtered[i] = vec4f(select(e.xyz, s.sum / s.weight, s.weight > 0.0), e.w);
 }

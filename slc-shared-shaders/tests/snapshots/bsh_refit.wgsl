@@ -405,6 +405,7 @@ fn cosine_direction(n: vec3f, u1: f32, u2: f32) -> vec3f {
     return normalize(t * (r * cos(phi)) + bt * (r * sin(phi)) + n * sqrt(max(1.0 - u1, 0.0)));
 }
 const DEPTH_SIGMA: f32 = 0.05;
+const COVER_WEIGHT: f32 = 0.1;
 fn bilateral_weight(n: vec3f, nj: vec3f, z: f32, zj: f32, inv_sz: f32) -> f32 {
     let dn: f32 = max(dot(n, nj), 0.0);
     let dn2: f32 = dn * dn;
