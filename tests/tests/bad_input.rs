@@ -10,7 +10,7 @@ use slc_core::range::{RangeParams, Xi};
 use slc_cpu::scene::Scene;
 use slc_cpu::scene_file::SceneFile;
 use slc_cpu::vpl::{VplContext, VplMethod, VplSettings};
-use std::panic::catch_unwind;
+use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::Path;
 
 /// Runs `f`, asserting it returns an error (not a panic) whose message
@@ -128,4 +128,44 @@ fn renderer_settings() {
         let f = slc_shared_shaders::Features { reservoir_k: 0, ..Default::default() };
         slc_shared_shaders::generate(slc_shared_shaders::Kernel::BshReservoir, &f)
     });
+}
+
+/// The path tracer's and direct light's entry points, on both backends.
+#[test]
+fn path_tracer_and_direct_light_settings() {
+    use slc_cpu::direct::DirectLights;
+    use slc_cpu::pt::{PtMethod, PtRender, PtScene, PtSettings};
+    rejects("no direct lights", "no lights", || DirectLights::new(Vec::new()).map(|_| ()));
+    let light = slc_core::light::Light::Point(PointLight::new(Vec3::ZERO, Vec3::ONE).unwrap());
+    let params = RangeParams::new(0.1, 1.0).unwrap();
+    let l2 = light.clone();
+    rejects("points vs normals", "normals", move || {
+        DirectLights::new(vec![l2]).and_then(|mut d| d.shade(&[Vec3::ONE], &[], &params, 1, 0)).map(|_| ())
+    });
+    let scene = Scene::cornell_box();
+    for b in BAD {
+        rejects("pt error bound", "error bound", || {
+            let mut pts = PtScene::new(&scene, &[]).unwrap();
+            pts.render(&mut PtRender::new(4, 4), &PtSettings { error_bound: b, ..PtSettings::default() }, 1)
+        });
+    }
+    rejects("pt depth", "depth", || {
+        PtScene::new(&scene, &[]).unwrap().render(&mut PtRender::new(4, 4), &PtSettings { max_depth: 0, ..PtSettings::default() }, 1)
+    });
+    let Some(g) = slc_tests::gpu() else { return };
+    let pts = PtScene::new(&scene, &[]).unwrap();
+    rejects("gpu pt size", "size", AssertUnwindSafe(|| slc_wgpu::pt::GpuPt::new(g, &pts, 0, 8).map(|_| ())));
+    let gpt = slc_wgpu::pt::GpuPt::new(g, &pts, 4, 4).unwrap();
+    for b in BAD {
+        let s = PtSettings { method: PtMethod::SlcReservoir, error_bound: b, ..PtSettings::default() };
+        rejects("gpu pt error bound", "error bound", AssertUnwindSafe(|| gpt.render(&mut PtRender::new(4, 4), &s, 1)));
+    }
+    rejects(
+        "gpu pt method",
+        "--backend cpu",
+        AssertUnwindSafe(|| gpt.render(&mut PtRender::new(4, 4), &PtSettings { method: PtMethod::Power, ..PtSettings::default() }, 1)),
+    );
+    let d = DirectLights::new(vec![light]).unwrap();
+    let gd = slc_wgpu::direct::GpuDirect::new(g, &d).unwrap();
+    rejects("gpu points vs normals", "normals", AssertUnwindSafe(|| gd.shade(&[Vec3::ONE, Vec3::ZERO], &[Vec3::Y], &params, 1, 0)));
 }

@@ -13,7 +13,7 @@
 use crate::gbuffer::GBuffer;
 use glam::Vec3;
 use rayon::prelude::*;
-use slc_core::denoise::{DEPTH_SIGMA, COVER_WEIGHT, bilateral_weight};
+use slc_core::denoise::{COVER_WEIGHT, DEPTH_SIGMA, bilateral_weight};
 
 /// Filters `e` (one value per pixel) with a `period × period` window.
 pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
