@@ -15,7 +15,10 @@
 //! Every kernel also declares `@group(1) @binding(0) slc_table:
 //! array<f32>` (read): the IES profiles
 //! ([`slc_core::ies::IesProfile::table`], concatenated; a light's
-//! `ies_base` is its offset). Host = written by the host before dispatch.
+//! `ies_base` is its offset). The path-tracing kernels also declare
+//! `@group(1) @binding(1) power_table: array<vec4f>` (read): per light the
+//! alias table's `(probability, alias as bits, pmf, 0)` of the `power`
+//! baseline ([`Selection`]). Host = written by the host before dispatch.
 //!
 //! **`light_update`** (1-D, `workgroup_size`): per light, `r² = r_t²/(1−ξ)`
 //! with `ξ = xi_for(seed, frame, id)`.
@@ -289,6 +292,18 @@ pub enum Heuristic {
     Power,
 }
 
+/// How the path tracer's light connection picks lights.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Selection {
+    /// Stochastic light culling: BSH traversal into a k-slot reservoir.
+    Reservoir,
+    /// One light, uniformly (baseline; ranges are +∞, nothing culled).
+    Uniform,
+    /// One light in proportion to its power, from the alias table in
+    /// `power_table` (baseline).
+    Power,
+}
+
 /// What a kernel is specialised to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Features {
@@ -308,6 +323,8 @@ pub struct Features {
     pub method: CullMethod,
     /// MIS heuristic of `pt_connect`.
     pub heuristic: Heuristic,
+    /// Light selection of `pt_connect` and `pt_extend`.
+    pub selection: Selection,
 }
 
 impl Default for Features {
@@ -321,6 +338,7 @@ impl Default for Features {
             max_tile_lights: 1024,
             method: CullMethod::Slc,
             heuristic: Heuristic::Power,
+            selection: Selection::Reservoir,
         }
     }
 }
@@ -420,6 +438,11 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         Heuristic::Balance => "balance",
         Heuristic::Power => "power",
     };
+    let selection = match features.selection {
+        Selection::Reservoir => "reservoir",
+        Selection::Uniform => "uniform",
+        Selection::Power => "power",
+    };
     let ctx = context! {
         kernel => kernel.name(),
         core => slc_core::wgsl::library(),
@@ -433,6 +456,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         max_tile_lights => features.max_tile_lights,
         method => method,
         heuristic => heuristic,
+        selection => selection,
     };
     let source = env
         .get_template(kernel.name())

@@ -29,7 +29,7 @@ pub struct GpuDirect<'a> {
 impl<'a> GpuDirect<'a> {
     /// Uploads the lights and their BSH.
     pub fn new(gpu: &'a GpuContext, lights: &DirectLights) -> Result<Self, GpuError> {
-        let set = GpuLightSet::new(gpu, lights.lights(), lights.bounds(), lights.bsh())?;
+        let set = GpuLightSet::new(gpu, lights.lights(), lights.bounds(), lights.bsh(), &[])?;
         let features = Features { lights: set.types, reservoir_k: DIRECT_K as u32, workgroup_size: WG, ..Features::default() };
         let layout = bind_layout(gpu, "bsh_reservoir", 8, 1, false);
         let pipeline = pipeline(gpu, "bsh_reservoir", generate(Kernel::BshReservoir, &features)?, &[&layout, &set.table_layout]);
@@ -76,7 +76,7 @@ impl<'a> GpuDirect<'a> {
             &[&uniform, &pts, &nrm, &s.lights, &s.rt2, &s.r2, &s.bsh, &self.no_geometry.0, &self.no_geometry.1, &out],
             None,
         );
-        s.set_threshold(gpu, params);
+        s.set_threshold(gpu, Some(params));
         s.set_frame(gpu, seed, frame);
         let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc direct") });
         {

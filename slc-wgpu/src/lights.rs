@@ -71,15 +71,16 @@ pub(crate) struct GpuLightSet {
     refit_params: UniformSlots,
     update: (wgpu::ComputePipeline, wgpu::BindGroup),
     refit: (wgpu::ComputePipeline, wgpu::BindGroup),
-    /// Group 1 of every kernel: the IES table.
+    /// Group 1 of every kernel: the IES table and the power alias table.
     pub(crate) table_layout: wgpu::BindGroupLayout,
     pub(crate) table: wgpu::BindGroup,
 }
 
 impl GpuLightSet {
-    /// Uploads `lights` (with their `bounds` and the `bsh` built over them)
-    /// after checking the buffer and dispatch limits.
-    pub(crate) fn new(gpu: &GpuContext, lights: &[Light], bounds: &[LightBound], bsh: &Bsh) -> Result<GpuLightSet, GpuError> {
+    /// Uploads `lights` (with their `bounds`, the `bsh` built over them and
+    /// the path tracer's `power` alias table, which may be empty) after
+    /// checking the buffer and dispatch limits.
+    pub(crate) fn new(gpu: &GpuContext, lights: &[Light], bounds: &[LightBound], bsh: &Bsh, power: &[[f32; 4]]) -> Result<GpuLightSet, GpuError> {
         let n = lights.len() as u64;
         let lim = &gpu.limits;
         gpu.require("max_storage_buffer_binding_size (lights)", n * 64, lim.max_storage_buffer_binding_size)?;
@@ -91,6 +92,7 @@ impl GpuLightSet {
         let extent: Vec<f32> = bounds.iter().map(|b| b.extent).collect();
         let lights_buf = s("lights", bytemuck::cast_slice(&gpu_lights));
         let table_buf = s("slc_table", bytemuck::cast_slice(&table));
+        let power_buf = s("power_table", bytemuck::cast_slice(if power.is_empty() { &[[0.0f32; 4]][..] } else { power }));
         let ids_buf = s("ids", bytemuck::cast_slice(&ids));
         let extent_buf = s("extent", bytemuck::cast_slice(&extent));
         let rt2 = zeroed(gpu, "rt2", n * 4, wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST);
@@ -101,8 +103,8 @@ impl GpuLightSet {
         let frame_params = zeroed(gpu, "frame params", 16, wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST);
         let refit_params = UniformSlots::new::<RefitParams>(gpu, "refit params", levels.len() as u64);
         let table_layout = {
-            let e = wgpu::BindGroupLayoutEntry {
-                binding: 0,
+            let e = |binding| wgpu::BindGroupLayoutEntry {
+                binding,
                 visibility: wgpu::ShaderStages::COMPUTE,
                 ty: wgpu::BindingType::Buffer {
                     ty: wgpu::BufferBindingType::Storage { read_only: true },
@@ -111,12 +113,15 @@ impl GpuLightSet {
                 },
                 count: None,
             };
-            gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some("slc_table"), entries: &[e] })
+            gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some("scene tables"), entries: &[e(0), e(1)] })
         };
         let table_bg = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("slc_table"),
+            label: Some("scene tables"),
             layout: &table_layout,
-            entries: &[wgpu::BindGroupEntry { binding: 0, resource: table_buf.as_entire_binding() }],
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: table_buf.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 1, resource: power_buf.as_entire_binding() },
+            ],
         });
         let features = Features { workgroup_size: WG, ..Features::default() };
         let update_layout = bind_layout(gpu, "light_update", 2, 1, false);
@@ -150,9 +155,10 @@ impl GpuLightSet {
         })
     }
 
-    /// Threshold ranges `r_t²` for `params` (host, the core's function).
-    pub(crate) fn set_threshold(&self, gpu: &GpuContext, params: &RangeParams) {
-        let rt2: Vec<f32> = self.peaks.iter().map(|&p| params.threshold_range2(p)).collect();
+    /// Threshold ranges `r_t²` for `params` (host, the core's function),
+    /// or +∞ for every light (`None`: nothing culled, p = 1).
+    pub(crate) fn set_threshold(&self, gpu: &GpuContext, params: Option<&RangeParams>) {
+        let rt2: Vec<f32> = self.peaks.iter().map(|&p| params.map_or(f32::INFINITY, |q| q.threshold_range2(p))).collect();
         gpu.queue.write_buffer(&self.rt2, 0, bytemuck::cast_slice(&rt2));
     }
 

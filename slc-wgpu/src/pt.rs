@@ -10,8 +10,9 @@
 //!    `pt_connect` (BSH traversal into a k-slot reservoir, RR test at the
 //!    sampled point, shadow ray, MIS whose light pdf includes p_rr).
 //!
-//! The method is `slc-reservoir` with k = [`RESERVOIR_K`] and the power
-//! heuristic, exactly as the CPU's [`PtMethod::SlcReservoir`]; the two
+//! The methods are `slc-reservoir` with k = [`RESERVOIR_K`] and the power
+//! heuristic, exactly as the CPU's [`PtMethod::SlcReservoir`], and the
+//! `uniform` and `power` baselines (one light; ranges +∞); the two
 //! backends draw their per-path random numbers differently, so they agree in
 //! expectation (the tests crate checks it), not pixel by pixel.
 
@@ -25,7 +26,7 @@ use obvhs::triangle::Triangle;
 use slc_core::range::RangeParams;
 use slc_cpu::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K};
 use slc_shared_shaders::layout::{GpuGeoNode, GpuPathState, GpuPathVertex, GpuTriangle, NO_LIGHT, PtParams, ShadeParams};
-use slc_shared_shaders::{Features, Heuristic, Kernel, generate};
+use slc_shared_shaders::{Features, Heuristic, Kernel, Selection, generate};
 use std::time::{Duration, Instant};
 
 /// Deepest geometry BVH the kernels' 64-entry traversal stack handles.
@@ -76,6 +77,13 @@ fn geometry(pts: &PtScene) -> (Vec<GpuGeoNode>, Vec<GpuTriangle>, u64) {
     (nodes, gpu_tris, depth)
 }
 
+/// The methods the GPU path tracer runs, with their light selection.
+const SELECTIONS: [(PtMethod, Selection); 3] =
+    [(PtMethod::SlcReservoir, Selection::Reservoir), (PtMethod::Uniform, Selection::Uniform), (PtMethod::Power, Selection::Power)];
+
+/// A kernel's pipeline per method, and its bind group.
+type Kernels = (Vec<(PtMethod, wgpu::ComputePipeline)>, wgpu::BindGroup);
+
 /// GPU buffers and pipelines for one [`PtScene`] and image size.
 pub struct GpuPt<'a> {
     gpu: &'a GpuContext,
@@ -88,8 +96,8 @@ pub struct GpuPt<'a> {
     readback: wgpu::Buffer,
     pt_params: UniformSlots,
     shade_params: UniformSlots,
-    extend: (wgpu::ComputePipeline, wgpu::BindGroup),
-    connect: (wgpu::ComputePipeline, wgpu::BindGroup),
+    extend: Kernels,
+    connect: Kernels,
     /// One render call at a time (they share every buffer).
     busy: std::sync::Mutex<()>,
 }
@@ -111,8 +119,8 @@ impl<'a> GpuPt<'a> {
         gpu.require("max_storage_buffers_per_shader_stage", 12, lim.max_storage_buffers_per_shader_stage as u64)?;
         gpu.require("max_compute_workgroups_per_dimension (pixels)", pixels.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
         gpu.require("geometry BVH depth (64-entry traversal stack)", geo_depth, MAX_GEO_DEPTH)?;
-        let set = GpuLightSet::new(gpu, pts.lights(), pts.bounds(), pts.bsh())?;
-        let features =
+        let set = GpuLightSet::new(gpu, pts.lights(), pts.bounds(), pts.bsh(), &pts.power_table())?;
+        let base =
             Features { lights: set.types, reservoir_k: RESERVOIR_K as u32, workgroup_size: WG, heuristic: Heuristic::Power, ..Features::default() };
         let s = |label: &str, bytes: &[u8]| storage(gpu, label, bytes, wgpu::BufferUsages::empty());
         let geo_nodes_buf = s("geo nodes", bytemuck::cast_slice(&geo_nodes));
@@ -127,11 +135,15 @@ impl<'a> GpuPt<'a> {
         let readback = zeroed(gpu, "radiance readback", pixels * 16, wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
         let pt_params = UniformSlots::new::<PtParams>(gpu, "pt params", MAX_DEPTH as u64);
         let shade_params = UniformSlots::new::<ShadeParams>(gpu, "shade params", MAX_DEPTH as u64);
+        // One bind group per kernel; one pipeline per light selection.
         let kernel = |k: Kernel, reads: u32, writes: u32, bufs: &[&wgpu::Buffer], uniform: u64| {
             let layout = bind_layout(gpu, k.name(), reads, writes, true);
-            let p = pipeline(gpu, k.name(), generate(k, &features)?, &[&layout, &set.table_layout]);
+            let pipelines = SELECTIONS
+                .iter()
+                .map(|&(m, selection)| Ok((m, pipeline(gpu, k.name(), generate(k, &Features { selection, ..base })?, &[&layout, &set.table_layout]))))
+                .collect::<Result<Vec<_>, GpuError>>()?;
             let bg = bind_group(gpu, k.name(), &layout, bufs, Some(uniform));
-            Ok::<_, GpuError>((p, bg))
+            Ok::<_, GpuError>((pipelines, bg))
         };
         let extend = kernel(
             Kernel::PtExtend,
@@ -189,13 +201,14 @@ impl<'a> GpuPt<'a> {
     /// Time is GPU time from timestamps where the adapter has them, else
     /// wall time around the submitted passes; the second value says which
     /// (`true`: timestamps).
-    pub fn render(&self, acc: &mut PtRender, s: &PtSettings, passes: u32) -> Result<bool, GpuError> {
-        if s.method != PtMethod::SlcReservoir {
+    pub fn render<'b>(&'b self, acc: &mut PtRender, s: &PtSettings, passes: u32) -> Result<bool, GpuError> {
+        let pick = |k: &'b Kernels| k.0.iter().find(|(m, _)| *m == s.method).map(|(_, p)| p);
+        let (Some(extend), Some(connect)) = (pick(&self.extend), pick(&self.connect)) else {
             return Err(GpuError::Setting(format!(
-                "GPU path tracing runs slc-reservoir (k = {RESERVOIR_K}); method {} runs with --backend cpu",
+                "GPU path tracing runs slc-reservoir (k = {RESERVOIR_K}), uniform and power; method {} runs with --backend cpu",
                 s.method.name()
             )));
-        }
+        };
         if acc.size() != (self.width, self.height) {
             return Err(GpuError::Setting(format!("accumulation is {:?}, the GPU scene was set up for {}x{}", acc.size(), self.width, self.height)));
         }
@@ -205,7 +218,8 @@ impl<'a> GpuPt<'a> {
         let params = RangeParams::new(s.error_bound, s.exposure).map_err(|e| GpuError::Setting(e.to_string()))?;
         let _busy = self.busy.lock().map_err(|_| GpuError::Device("a previous render panicked".into()))?;
         let gpu = self.gpu;
-        self.set.set_threshold(gpu, &params);
+        // The baselines cull nothing: r_t² = +∞ makes p = 1 and r² = +∞.
+        self.set.set_threshold(gpu, (s.method == PtMethod::SlcReservoir).then_some(&params));
         let pixels = self.width * self.height;
         let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("clear") });
         enc.clear_buffer(&self.radiance, 0, None);
@@ -249,10 +263,10 @@ impl<'a> GpuPt<'a> {
                 let mut cp = enc.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc pt pass"), timestamp_writes: writes });
                 self.set.encode(&mut cp);
                 for depth in 0..s.max_depth as usize {
-                    cp.set_pipeline(&self.extend.0);
+                    cp.set_pipeline(extend);
                     cp.set_bind_group(0, &self.extend.1, &[self.pt_params.offset(depth)]);
                     cp.dispatch_workgroups(pixels.div_ceil(WG), 1, 1);
-                    cp.set_pipeline(&self.connect.0);
+                    cp.set_pipeline(connect);
                     cp.set_bind_group(0, &self.connect.1, &[self.shade_params.offset(depth)]);
                     cp.dispatch_workgroups(pixels.div_ceil(WG), 1, 1);
                 }

@@ -163,7 +163,7 @@ fn path_tracer_and_direct_light_settings() {
     rejects(
         "gpu pt method",
         "--backend cpu",
-        AssertUnwindSafe(|| gpt.render(&mut PtRender::new(4, 4), &PtSettings { method: PtMethod::Power, ..PtSettings::default() }, 1)),
+        AssertUnwindSafe(|| gpt.render(&mut PtRender::new(4, 4), &PtSettings { method: PtMethod::LightBvh, ..PtSettings::default() }, 1)),
     );
     let d = DirectLights::new(vec![light]).unwrap();
     let gd = slc_wgpu::direct::GpuDirect::new(g, &d).unwrap();

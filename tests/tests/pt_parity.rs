@@ -94,33 +94,39 @@ fn all_finite(p: &[Vec<f64>]) -> bool {
     p.iter().flatten().all(|v| v.is_finite())
 }
 
-fn run(eps: f32, intensity: f32, n: u32) -> Option<(Stats, Stats, Stats)> {
+/// Per-pass statistics of `method` on the GPU and on the CPU (same seed),
+/// and of the CPU's unculled `uniform` estimator (its own seed).
+fn run(method: PtMethod, eps: f32, intensity: f32, n: u32) -> Option<(Stats, Stats, Stats)> {
     let g = gpu()?;
     let (s, lights) = scene(intensity);
     let mut pts = PtScene::new(&s, &lights).unwrap();
     let gpt = GpuPt::new(g, &pts, W, H).unwrap();
-    let res = PtSettings { method: PtMethod::SlcReservoir, error_bound: eps, seed: 3, ..PtSettings::default() };
-    let gp = passes(|acc| _ = gpt.render(acc, &res, 1).unwrap(), n);
-    let cp = passes(|acc| pts.render(acc, &res, 1).unwrap(), n);
-    let uniform = PtSettings { method: PtMethod::Uniform, ..res };
+    let set = PtSettings { method, error_bound: eps, seed: 3, ..PtSettings::default() };
+    let gp = passes(|acc| _ = gpt.render(acc, &set, 1).unwrap(), n);
+    let cp = passes(|acc| pts.render(acc, &set, 1).unwrap(), n);
+    let uniform = PtSettings { method: PtMethod::Uniform, seed: 77, ..set };
     let up = passes(|acc| pts.render(acc, &uniform, 1).unwrap(), n);
     assert!(all_finite(&gp) && all_finite(&cp), "ε = {eps}, intensity ×{intensity}: a pass is NaN or infinite");
     Some((stats(&gp), stats(&cp), stats(&up)))
 }
 
-/// The GPU path tracer is the CPU's estimator: same image mean, images
-/// within the variance bound, and both equal the unculled estimator's mean.
+/// Every method the GPU runs (slc-reservoir, uniform, power) is the CPU's
+/// estimator: same image mean, images within the variance bound, and the
+/// same mean as the CPU's unculled estimator.
 #[test]
 fn gpu_path_tracer_matches_cpu_and_unculled_in_expectation() {
-    let Some((g, c, u)) = run(0.05, 1.0, 400) else { return };
-    assert!(g.image_mean > 0.0);
-    assert_means_agree("GPU vs CPU slc-reservoir", &g, &c);
-    assert_means_agree("GPU slc-reservoir vs CPU uniform (unculled)", &g, &u);
-    let px = g.mean.len() as f64;
-    let rmse = (g.mean.iter().zip(&c.mean).map(|(a, b)| (a - b).powi(2)).sum::<f64>() / px).sqrt();
-    let predicted = (g.var_of_mean.iter().zip(&c.var_of_mean).map(|(a, b)| a + b).sum::<f64>() / px).sqrt();
-    eprintln!("RMSE(CPU, GPU) = {rmse:.5}, predicted by the variances {predicted:.5}, ratio {:.3}", rmse / predicted);
-    assert!(rmse <= 1.5 * predicted, "RMSE(CPU, GPU) = {rmse} exceeds 1.5 × {predicted}");
+    for method in [PtMethod::SlcReservoir, PtMethod::Uniform, PtMethod::Power] {
+        let Some((g, c, u)) = run(method, 0.05, 1.0, 400) else { return };
+        let name = method.name();
+        assert!(g.image_mean > 0.0);
+        assert_means_agree(&format!("GPU vs CPU {name}"), &g, &c);
+        assert_means_agree(&format!("GPU {name} vs CPU uniform (unculled)"), &g, &u);
+        let px = g.mean.len() as f64;
+        let rmse = (g.mean.iter().zip(&c.mean).map(|(a, b)| (a - b).powi(2)).sum::<f64>() / px).sqrt();
+        let predicted = (g.var_of_mean.iter().zip(&c.var_of_mean).map(|(a, b)| a + b).sum::<f64>() / px).sqrt();
+        eprintln!("{name}: RMSE(CPU, GPU) = {rmse:.5}, predicted by the variances {predicted:.5}, ratio {:.3}", rmse / predicted);
+        assert!(rmse <= 1.5 * predicted, "{name}: RMSE(CPU, GPU) = {rmse} exceeds 1.5 × {predicted}");
+    }
 }
 
 /// Hard cases on the GPU: nothing culled, everything culled, huge and
@@ -128,21 +134,21 @@ fn gpu_path_tracer_matches_cpu_and_unculled_in_expectation() {
 #[test]
 fn gpu_path_tracer_hard_cases() {
     for (eps, intensity) in [(1e-30f32, 1.0f32), (1e30, 1.0), (0.05, 1e36), (0.05, 1e-40)] {
-        let Some((g, c, _)) = run(eps, intensity, 40) else { return };
+        let Some((g, c, _)) = run(PtMethod::SlcReservoir, eps, intensity, 40) else { return };
         assert!(g.image_mean.is_finite());
         assert_means_agree(&format!("ε = {eps:e}, intensity ×{intensity:e}"), &g, &c);
     }
 }
 
-/// Methods other than slc-reservoir, and a mismatched accumulation, are
-/// typed errors on the GPU.
+/// Methods the GPU does not run (lightbvh, plain slc), and a mismatched
+/// accumulation, are typed errors on the GPU.
 #[test]
 fn gpu_path_tracer_rejects_what_it_does_not_run() {
     let Some(g) = gpu() else { return };
     let (s, lights) = scene(1.0);
     let pts = PtScene::new(&s, &lights).unwrap();
     let gpt = GpuPt::new(g, &pts, W, H).unwrap();
-    let e = gpt.render(&mut PtRender::new(W, H), &PtSettings { method: PtMethod::Uniform, ..PtSettings::default() }, 1).unwrap_err();
+    let e = gpt.render(&mut PtRender::new(W, H), &PtSettings { method: PtMethod::LightBvh, ..PtSettings::default() }, 1).unwrap_err();
     assert!(e.to_string().contains("--backend cpu"), "{e}");
     let ok = PtSettings { method: PtMethod::SlcReservoir, ..PtSettings::default() };
     assert!(gpt.render(&mut PtRender::new(W + 1, H), &ok, 1).is_err());

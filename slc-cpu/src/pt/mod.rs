@@ -190,6 +190,12 @@ impl PtScene {
         &self.bsh
     }
 
+    /// The `power` baseline's alias table per light, as the GPU reads it:
+    /// `(keep probability, alias index as f32 bits, pmf, 0)`.
+    pub fn power_table(&self) -> Vec<[f32; 4]> {
+        self.power.entries().map(|(p, a, pdf)| [p as f32, f32::from_bits(a as u32), pdf as f32, 0.0]).collect()
+    }
+
     /// Light index of each scene triangle (`u32::MAX` when it does not emit).
     pub fn light_of_triangle(&self) -> &[u32] {
         &self.light_of_triangle

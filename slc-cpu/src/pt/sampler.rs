@@ -47,6 +47,12 @@ impl AliasTable {
     pub fn pdf(&self, i: usize) -> f64 {
         self.pdf[i]
     }
+
+    /// Per index: the probability of keeping it in its column, its alias,
+    /// and its pmf (e.g. for upload to the GPU).
+    pub fn entries(&self) -> impl Iterator<Item = (f64, usize, f64)> + '_ {
+        (0..self.prob.len()).map(|i| (self.prob[i], self.alias[i], self.pdf[i]))
+    }
 }
 
 #[cfg(test)]

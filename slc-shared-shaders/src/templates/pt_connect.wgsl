@@ -4,7 +4,8 @@
 {% include "bsh_collect.wgsl" %}
 {% include "pt_mis.wgsl" %}
 // Explicit light connection of a progressive path tracer: at every live path
-// vertex, the BSH and a {{ k }}-slot reservoir pick lights; each pick is
+// vertex, the BSH and a {{ k }}-slot reservoir pick lights ({{ selection }}
+// selection; the uniform and power baselines pick one light); each pick is
 // sampled, passes the RR test at the sampled point, casts a shadow ray and is
 // weighted by MIS ({{ heuristic }} heuristic) against cosine BSDF sampling.
 // The light strategy's pdf includes the RR probability and the reservoir's
@@ -22,6 +23,18 @@
 @group(0) @binding(9) var<storage, read_write> candidates: array<u32>;
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
 
+/// One pick connected to `x`: its contribution times the MIS weight (area
+/// lights) against BSDF sampling; `w` is the selection weight (the
+/// reservoir's n/k or 1/pmf), `others` the other in-range lights.
+fn shade_pick(li: u32, x: vec3f, n: vec3f, w: f32, others: u32, u1: f32, u2: f32) -> vec3f {
+    let c = connect(li, x, n, w, u1, u2, params.eps);
+    var mis = 1.0;
+    if light_area(lights[li]) > 0.0 && c.cos_x > 0.0 {
+        mis = mis_weight(light_pdf(li, x, c.y, others), cosine_pdf(c.cos_x));
+    }
+    return c.e * mis;
+}
+
 @compute @workgroup_size({{ wg }})
 fn main(@builtin(global_invocation_id) gid: vec3u) {
     let i = gid.x;
@@ -36,23 +49,35 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let x = vtx.position;
     let n = vtx.normal;
     let seed = pcg_hash(params.seed ^ pcg_hash(i ^ pcg_hash(params.frame)));
+    var h = pcg_hash(seed ^ 2654435769u);
+    var sum = vec3f(0.0);
+{% if selection == "reservoir" %}
     let picks = bsh_collect(x, seed);
     candidates[i] = picks.n;
     let w_res = reservoir_weight(picks.n, K);
-    var h = pcg_hash(seed ^ 2654435769u);
-    var sum = vec3f(0.0);
     for (var s = 0u; s < min(picks.n, K); s++) {
-        let li = picks.light[s];
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        let c = connect(li, x, n, w_res, u1, xi_from_bits(h), params.eps);
-        var mis = 1.0;
-        if light_area(lights[li]) > 0.0 && c.cos_x > 0.0 {
-            mis = mis_weight(light_pdf(li, x, c.y, picks.n - 1u), cosine_pdf(c.cos_x));
-        }
-        sum += c.e * mis;
+        sum += shade_pick(picks.light[s], x, n, w_res, picks.n - 1u, u1, xi_from_bits(h));
     }
+{% else %}
+    // One light, {{ selection }}; its range is +∞ (p = 1).
+    candidates[i] = 0u;
+    h = pcg_hash(h);
+    let us = xi_from_bits(h);
+    let nl = arrayLength(&lights);
+    var li = min(u32(us * f32(nl)), nl - 1u);
+{% if selection == "power" %}
+    h = pcg_hash(h);
+    let entry = power_table[li];
+    li = select(bitcast<u32>(entry.y), li, xi_from_bits(h) < entry.x);
+{% endif %}
+    h = pcg_hash(h);
+    let u1 = xi_from_bits(h);
+    h = pcg_hash(h);
+    sum = shade_pick(li, x, n, 1.0 / select_pdf(li, 0u), 0u, u1, xi_from_bits(h));
+{% endif %}
     let add = vtx.weight * sum;
     if finite3(add) {
         radiance[i] += vec4f(add, 0.0);

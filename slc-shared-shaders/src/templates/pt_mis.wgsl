@@ -11,10 +11,26 @@ fn mis_weight(pdf_a: f32, pdf_b: f32) -> f32 {
 {% endif %}
 }
 
+@group(1) @binding(1) var<storage, read> power_table: array<vec4f>;
+
+/// Probability that the light strategy selects light `li` at a point with
+/// `others` other lights in range ({{ selection }} selection).
+fn select_pdf(li: u32, others: u32) -> f32 {
+{% if selection == "reservoir" %}
+    return 1.0 / reservoir_weight(others + 1u, K);
+{% elif selection == "uniform" %}
+    return 1.0 / f32(arrayLength(&lights));
+{% else %}
+    return power_table[li].z;
+{% endif %}
+}
+
 /// Solid-angle pdf with which the light strategy at `x` produces the point
 /// `y` on area light `li`, when `others` other lights are in range at `x`:
-/// the reservoir's selection probability min(k/(others + 1), 1), the RR
-/// probability at |x − y| and the area pdf converted to solid angle (talk:
+/// the selection probability (the reservoir's min(k/(others + 1), 1), or
+/// the baselines' 1/N or pmf), the RR probability at |x − y| (1 for the
+/// baselines, whose ranges are +∞) and the area pdf converted to solid
+/// angle (talk:
 /// "Multiple importance sampling"). It must not depend on the light's own ξ
 /// (whether this pass's sphere contains `x`): a pdf that is 0 when the
 /// sphere misses makes the two weights sum to more than one in expectation
@@ -28,8 +44,7 @@ fn light_pdf(li: u32, x: vec3f, y: vec3f, others: u32) -> f32 {
         return 0.0;
     }
     let cos_y = dot(light_normal(l), v / sqrt(d2));
-    let select_p = 1.0 / reservoir_weight(others + 1u, K);
-    return select_p * rr_probability(rt2[li], d2) * area_to_solid_angle_pdf(1.0 / area, d2, cos_y);
+    return select_pdf(li, others) * rr_probability(rt2[li], d2) * area_to_solid_angle_pdf(1.0 / area, d2, cos_y);
 }
 
 /// `true` when every component of `v` is finite (NaN compares false).

@@ -616,10 +616,20 @@ fn mis_weight(pdf_a: f32, pdf_b: f32) -> f32 {
     return mis_balance(pdf_a, pdf_b);
 }
 
+@group(1) @binding(1) var<storage, read> power_table: array<vec4f>;
+
+/// Probability that the light strategy selects light `li` at a point with
+/// `others` other lights in range (reservoir selection).
+fn select_pdf(li: u32, others: u32) -> f32 {
+    return 1.0 / reservoir_weight(others + 1u, K);
+}
+
 /// Solid-angle pdf with which the light strategy at `x` produces the point
 /// `y` on area light `li`, when `others` other lights are in range at `x`:
-/// the reservoir's selection probability min(k/(others + 1), 1), the RR
-/// probability at |x − y| and the area pdf converted to solid angle (talk:
+/// the selection probability (the reservoir's min(k/(others + 1), 1), or
+/// the baselines' 1/N or pmf), the RR probability at |x − y| (1 for the
+/// baselines, whose ranges are +∞) and the area pdf converted to solid
+/// angle (talk:
 /// "Multiple importance sampling"). It must not depend on the light's own ξ
 /// (whether this pass's sphere contains `x`): a pdf that is 0 when the
 /// sphere misses makes the two weights sum to more than one in expectation
@@ -633,8 +643,7 @@ fn light_pdf(li: u32, x: vec3f, y: vec3f, others: u32) -> f32 {
         return 0.0;
     }
     let cos_y = dot(light_normal(l), v / sqrt(d2));
-    let select_p = 1.0 / reservoir_weight(others + 1u, K);
-    return select_p * rr_probability(rt2[li], d2) * area_to_solid_angle_pdf(1.0 / area, d2, cos_y);
+    return select_pdf(li, others) * rr_probability(rt2[li], d2) * area_to_solid_angle_pdf(1.0 / area, d2, cos_y);
 }
 
 /// `true` when every component of `v` is finite (NaN compares false).
@@ -642,7 +651,8 @@ fn finite3(v: vec3f) -> bool {
     return all(abs(v) <= vec3f(3.4028235e38));
 }
 // Explicit light connection of a progressive path tracer: at every live path
-// vertex, the BSH and a 16-slot reservoir pick lights; each pick is
+// vertex, the BSH and a 16-slot reservoir pick lights (reservoir
+// selection; the uniform and power baselines pick one light); each pick is
 // sampled, passes the RR test at the sampled point, casts a shadow ray and is
 // weighted by MIS (balance heuristic) against cosine BSDF sampling.
 // The light strategy's pdf includes the RR probability and the reservoir's
@@ -660,6 +670,18 @@ fn finite3(v: vec3f) -> bool {
 @group(0) @binding(9) var<storage, read_write> candidates: array<u32>;
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
 
+/// One pick connected to `x`: its contribution times the MIS weight (area
+/// lights) against BSDF sampling; `w` is the selection weight (the
+/// reservoir's n/k or 1/pmf), `others` the other in-range lights.
+fn shade_pick(li: u32, x: vec3f, n: vec3f, w: f32, others: u32, u1: f32, u2: f32) -> vec3f {
+    let c = connect(li, x, n, w, u1, u2, params.eps);
+    var mis = 1.0;
+    if light_area(lights[li]) > 0.0 && c.cos_x > 0.0 {
+        mis = mis_weight(light_pdf(li, x, c.y, others), cosine_pdf(c.cos_x));
+    }
+    return c.e * mis;
+}
+
 @compute @workgroup_size(64)
 fn main(@builtin(global_invocation_id) gid: vec3u) {
     let i = gid.x;
@@ -674,22 +696,16 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let x = vtx.position;
     let n = vtx.normal;
     let seed = pcg_hash(params.seed ^ pcg_hash(i ^ pcg_hash(params.frame)));
+    var h = pcg_hash(seed ^ 2654435769u);
+    var sum = vec3f(0.0);
     let picks = bsh_collect(x, seed);
     candidates[i] = picks.n;
     let w_res = reservoir_weight(picks.n, K);
-    var h = pcg_hash(seed ^ 2654435769u);
-    var sum = vec3f(0.0);
     for (var s = 0u; s < min(picks.n, K); s++) {
-        let li = picks.light[s];
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        let c = connect(li, x, n, w_res, u1, xi_from_bits(h), params.eps);
-        var mis = 1.0;
-        if light_area(lights[li]) > 0.0 && c.cos_x > 0.0 {
-            mis = mis_weight(light_pdf(li, x, c.y, picks.n - 1u), cosine_pdf(c.cos_x));
-        }
-        sum += c.e * mis;
+        sum += shade_pick(picks.light[s], x, n, w_res, picks.n - 1u, u1, xi_from_bits(h));
     }
     let add = vtx.weight * sum;
     if finite3(add) {
