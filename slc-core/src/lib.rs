@@ -18,6 +18,7 @@
 //! | [`estimator`] | SLC, clamped-range and unculled sums at one shading point |
 //! | [`mis`] | balance and power heuristics, cosine pdf and cosine-weighted directions (light pdfs include `p_rr`) |
 //! | [`ray`] | ray–box and ray–triangle tests for the GPU's geometry BVH |
+//! | [`path`] | the camera ray and Russian roulette on path length of both path tracers |
 //! | [`denoise`] | the cross-bilateral filter weight of the VPL denoise |
 //! | [`wgsl`] | the shared-code macro, WGSL built-ins in Rust, the assembled WGSL library |
 //!
@@ -52,6 +53,7 @@ pub mod estimator;
 pub mod ies;
 pub mod light;
 pub mod mis;
+pub mod path;
 pub mod range;
 pub mod ray;
 pub mod reservoir;

@@ -253,7 +253,7 @@ macro_rules! shared {
 }
 
 /// Every module's shared items, in dependency order, as raw text.
-const PARTS: [&str; 10] = [
+const PARTS: [&str; 11] = [
     crate::xi::WGSL,
     crate::range::WGSL,
     crate::sphere::WGSL,
@@ -264,6 +264,7 @@ const PARTS: [&str; 10] = [
     crate::ray::WGSL,
     crate::mis::WGSL,
     crate::denoise::WGSL,
+    crate::path::WGSL,
 ];
 
 /// The whole shared library as WGSL: [`PRELUDE`] followed by every shared

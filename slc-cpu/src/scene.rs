@@ -41,12 +41,16 @@ impl Camera {
     /// Unit direction through pixel centre `(x, y)` of a `w × h` image
     /// (y down).
     pub fn ray_dir(&self, x: f32, y: f32, w: u32, h: u32) -> Vec3 {
+        let (f, r, u) = self.scaled_basis(w, h);
+        slc_core::path::camera_dir(f, r, u, x + 0.5, y + 0.5, w as f32, h as f32)
+    }
+
+    /// `(forward, right · tan(fov/2) · aspect, up · tan(fov/2))` for a
+    /// `w × h` image, the vectors [`slc_core::path::camera_dir`] takes.
+    pub fn scaled_basis(&self, w: u32, h: u32) -> (Vec3, Vec3, Vec3) {
         let (r, u, f) = self.basis();
         let t = (self.vfov_deg.to_radians() * 0.5).tan();
-        let aspect = w as f32 / h as f32;
-        let sx = (2.0 * (x + 0.5) / w as f32 - 1.0) * t * aspect;
-        let sy = (1.0 - 2.0 * (y + 0.5) / h as f32) * t;
-        (f + r * sx + u * sy).normalize()
+        (f, r * (t * w as f32 / h as f32), u * t)
     }
 }
 

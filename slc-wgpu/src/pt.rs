@@ -173,15 +173,13 @@ impl<'a> GpuPt<'a> {
             shade_params.size,
         )?;
         let cam = &pts.scene().camera;
-        let (r, u, f) = cam.basis();
-        let t = (cam.vfov_deg.to_radians() * 0.5).tan();
-        let aspect = width as f32 / height as f32;
+        let (f, r, u) = cam.scaled_basis(width, height);
         let g = GpuPt {
             gpu,
             width,
             height,
             set,
-            camera: (cam.position, r * (t * aspect), u * t, f),
+            camera: (cam.position, r, u, f),
             diag: pts.scene().diagonal(),
             radiance,
             readback,

@@ -43,6 +43,7 @@ use sampler::AliasTable;
 use slc_core::bsh::Bsh;
 use slc_core::light::{Light, LightBound, TriangleLight, area_to_solid_angle_pdf, inverse_square};
 use slc_core::mis::{cosine_direction, cosine_pdf, lambert_brdf, mis_power};
+use slc_core::path::path_survival;
 use slc_core::range::{RangeParams, random_range2, rr_probability, slc_keep, slc_weight};
 use slc_core::reservoir::Reservoir;
 use slc_core::sphere::Sphere;
@@ -492,7 +493,7 @@ impl PtScene {
             dir = nd;
             // Russian roulette on path length from the third bounce.
             if depth >= 2 {
-                let q = beta.max_element().clamp(0.05, 0.95);
+                let q = path_survival(beta);
                 if xi_from_bits(rng.next_u32()) >= q {
                     break;
                 }

@@ -44,10 +44,8 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         let jy = next_uniform(&h) - 0.5;
         let px = f32(i % params.width) + 0.5 + jx;
         let py = f32(i / params.width) + 0.5 + jy;
-        let sx = 2.0 * px / f32(params.width) - 1.0;
-        let sy = 1.0 - 2.0 * py / f32(params.height);
         st.origin = params.cam_pos;
-        st.dir = normalize(params.cam_forward + params.cam_right * sx + params.cam_up * sy);
+        st.dir = camera_dir(params.cam_forward, params.cam_right, params.cam_up, px, py, f32(params.width), f32(params.height));
         st.alive = 1u;
         st.rng = h;
         st.beta = vec3f(1.0);
@@ -110,7 +108,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     // Russian roulette on path length from the third bounce.
     if params.depth >= 2u && st.alive == 1u {
-        let q = clamp(max(max(st.beta.x, st.beta.y), st.beta.z), 0.05, 0.95);
+        let q = path_survival(st.beta);
         if next_uniform(&rng) >= q {
             st.alive = 0u;
         } else {

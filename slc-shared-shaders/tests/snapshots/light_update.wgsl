@@ -415,6 +415,14 @@ fn bilateral_weight(n: vec3f, nj: vec3f, z: f32, zj: f32, inv_sz: f32) -> f32 {
     let t: f32 = max(1.0 - d * d, 0.0);
     return dn8 * dn8 * t * t;
 }
+fn camera_dir(forward: vec3f, right: vec3f, up: vec3f, px: f32, py: f32, w: f32, h: f32) -> vec3f {
+    let sx: f32 = 2.0 * px / w - 1.0;
+    let sy: f32 = 1.0 - 2.0 * py / h;
+    return normalize(forward + right * sx + up * sy);
+}
+fn path_survival(beta: vec3f) -> f32 {
+    return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
+}
 
 // Per frame (or pass): the random squared range of every light from its own
 // ξ = xi_for(seed, frame, id), the same numbers the CPU draws.

@@ -415,6 +415,14 @@ fn bilateral_weight(n: vec3f, nj: vec3f, z: f32, zj: f32, inv_sz: f32) -> f32 {
     let t: f32 = max(1.0 - d * d, 0.0);
     return dn8 * dn8 * t * t;
 }
+fn camera_dir(forward: vec3f, right: vec3f, up: vec3f, px: f32, py: f32, w: f32, h: f32) -> vec3f {
+    let sx: f32 = 2.0 * px / w - 1.0;
+    let sy: f32 = 1.0 - 2.0 * py / h;
+    return normalize(forward + right * sx + up * sy);
+}
+fn path_survival(beta: vec3f) -> f32 {
+    return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
+}
 
 // Light evaluation for the light types this scene has (others compiled out).
 
@@ -606,10 +614,8 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         let jy = next_uniform(&h) - 0.5;
         let px = f32(i % params.width) + 0.5 + jx;
         let py = f32(i / params.width) + 0.5 + jy;
-        let sx = 2.0 * px / f32(params.width) - 1.0;
-        let sy = 1.0 - 2.0 * py / f32(params.height);
         st.origin = params.cam_pos;
-        st.dir = normalize(params.cam_forward + params.cam_right * sx + params.cam_up * sy);
+        st.dir = camera_dir(params.cam_forward, params.cam_right, params.cam_up, px, py, f32(params.width), f32(params.height));
         st.alive = 1u;
         st.rng = h;
         st.beta = vec3f(1.0);
@@ -672,7 +678,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     // Russian roulette on path length from the third bounce.
     if params.depth >= 2u && st.alive == 1u {
-        let q = clamp(max(max(st.beta.x, st.beta.y), st.beta.z), 0.05, 0.95);
+        let q = path_survival(st.beta);
         if next_uniform(&rng) >= q {
             st.alive = 0u;
         } else {
