@@ -1,6 +1,7 @@
 //! No template retypes a formula of slc-core: the kernels call the core's
 //! generated functions instead. The patterns are fragments of the core's
-//! formulas (range, weight, lobes, union, hashing).
+//! formulas (range, weight, lobes, union, hashing, camera ray, roulette,
+//! denoise weight).
 
 #[test]
 fn templates_do_not_contain_core_formulas() {
@@ -25,6 +26,11 @@ fn templates_do_not_contain_core_formulas() {
         "sqrt(u1)",
         "* 0.5 * (d",
         "n / k",
+        "0.05, 0.95",
+        "2.0 * px",
+        "2.0 * py",
+        "pow(dn",
+        "* dn8",
     ];
     let mut n = 0;
     for (name, src) in slc_shared_shaders::templates() {
