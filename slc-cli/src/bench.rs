@@ -257,15 +257,18 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
     bar.tick();
     let r = slc_cpu::reference::pt_reference(&mut pts, w, h, &ref_settings, a.reference_spp, Some(&a.cache_dir)).map_err(|e| e.to_string())?;
     let (reference, cached) = (r.image, r.cached);
-    // The GPU path tracer runs slc-reservoir, uniform and power; the
+    // The GPU path tracer runs every method but lightbvh; the
     // reference stays on the CPU.
     let ctx = crate::gpu_context(a.scene.backend)?;
     let gpu = match &ctx {
         Some(c) => Some(slc_wgpu::pt::GpuPt::new(c, &pts, w, h).map_err(|e| e.to_string())?),
         None => None,
     };
-    let (methods, batch): (&[PtMethod], u32) =
-        if gpu.is_some() { (&[PtMethod::SlcReservoir, PtMethod::Uniform, PtMethod::Power], crate::GPU_BATCH) } else { (&PtMethod::ALL, 1) };
+    let (methods, batch): (&[PtMethod], u32) = if gpu.is_some() {
+        (&[PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::Uniform, PtMethod::Power], crate::GPU_BATCH)
+    } else {
+        (&PtMethod::ALL, 1)
+    };
     let mut runs = Vec::new();
     for &method in methods {
         bar.set_message(format!("{} for {} s", method.name(), a.seconds));

@@ -264,7 +264,7 @@ fn gpu_path_tracer_renders_and_benches() {
     assert!(text.contains("slc-reservoir"), "{text}");
     let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("g.json")).unwrap()).unwrap();
     assert!(json["backend"].as_str().unwrap().starts_with("gpu: "));
-    assert_eq!(json["runs"].as_array().unwrap().len(), 3);
+    assert_eq!(json["runs"].as_array().unwrap().len(), 4);
     let out = slc(&d, &["render", "--app", "pt", "--backend", "gpu", "--method", "lightbvh", "--width", "8", "--height", "8", "--out", "p.exr"]);
     assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("--backend cpu"));
     std::fs::remove_dir_all(&d).ok();

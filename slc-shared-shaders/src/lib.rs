@@ -297,6 +297,9 @@ pub enum Heuristic {
 pub enum Selection {
     /// Stochastic light culling: BSH traversal into a k-slot reservoir.
     Reservoir,
+    /// Stochastic light culling: every in-range light, connected during the
+    /// traversal.
+    All,
     /// One light, uniformly (baseline; ranges are +∞, nothing culled).
     Uniform,
     /// One light in proportion to its power, from the alias table in
@@ -440,6 +443,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
     };
     let selection = match features.selection {
         Selection::Reservoir => "reservoir",
+        Selection::All => "all",
         Selection::Uniform => "uniform",
         Selection::Power => "power",
     };

@@ -12,7 +12,8 @@
 //!
 //! The methods are `slc-reservoir` with k = [`RESERVOIR_K`] and the power
 //! heuristic, exactly as the CPU's [`PtMethod::SlcReservoir`], and the
-//! `uniform` and `power` baselines (one light; ranges +∞); the two
+//! plain `slc` (every in-range light), and the `uniform` and `power`
+//! baselines (one light; ranges +∞); the two
 //! backends draw their per-path random numbers differently, so they agree in
 //! expectation (the tests crate checks it), not pixel by pixel.
 
@@ -78,8 +79,12 @@ fn geometry(pts: &PtScene) -> (Vec<GpuGeoNode>, Vec<GpuTriangle>, u64) {
 }
 
 /// The methods the GPU path tracer runs, with their light selection.
-const SELECTIONS: [(PtMethod, Selection); 3] =
-    [(PtMethod::SlcReservoir, Selection::Reservoir), (PtMethod::Uniform, Selection::Uniform), (PtMethod::Power, Selection::Power)];
+const SELECTIONS: [(PtMethod, Selection); 4] = [
+    (PtMethod::SlcReservoir, Selection::Reservoir),
+    (PtMethod::Slc, Selection::All),
+    (PtMethod::Uniform, Selection::Uniform),
+    (PtMethod::Power, Selection::Power),
+];
 
 /// A kernel's pipeline per method, and its bind group.
 type Kernels = (Vec<(PtMethod, wgpu::ComputePipeline)>, wgpu::BindGroup);
@@ -203,7 +208,7 @@ impl<'a> GpuPt<'a> {
         let pick = |k: &'b Kernels| k.0.iter().find(|(m, _)| *m == s.method).map(|(_, p)| p);
         let (Some(extend), Some(connect)) = (pick(&self.extend), pick(&self.connect)) else {
             return Err(GpuError::Setting(format!(
-                "GPU path tracing runs slc-reservoir (k = {RESERVOIR_K}), uniform and power; method {} runs with --backend cpu",
+                "GPU path tracing runs slc, slc-reservoir (k = {RESERVOIR_K}), uniform and power; method {} runs with --backend cpu",
                 s.method.name()
             )));
         };
@@ -217,7 +222,7 @@ impl<'a> GpuPt<'a> {
         let _busy = self.busy.lock().map_err(|_| GpuError::Device("a previous render panicked".into()))?;
         let gpu = self.gpu;
         // The baselines cull nothing: r_t² = +∞ makes p = 1 and r² = +∞.
-        self.set.set_threshold(gpu, (s.method == PtMethod::SlcReservoir).then_some(&params));
+        self.set.set_threshold(gpu, matches!(s.method, PtMethod::Slc | PtMethod::SlcReservoir).then_some(&params));
         let pixels = self.width * self.height;
         let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("clear") });
         enc.clear_buffer(&self.radiance, 0, None);

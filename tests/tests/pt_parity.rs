@@ -110,12 +110,12 @@ fn run(method: PtMethod, eps: f32, intensity: f32, n: u32) -> Option<(Stats, Sta
     Some((stats(&gp), stats(&cp), stats(&up)))
 }
 
-/// Every method the GPU runs (slc-reservoir, uniform, power) is the CPU's
+/// Every method the GPU runs (slc-reservoir, slc, uniform, power) is the CPU's
 /// estimator: same image mean, images within the variance bound, and the
 /// same mean as the CPU's unculled estimator.
 #[test]
 fn gpu_path_tracer_matches_cpu_and_unculled_in_expectation() {
-    for method in [PtMethod::SlcReservoir, PtMethod::Uniform, PtMethod::Power] {
+    for method in [PtMethod::SlcReservoir, PtMethod::Slc, PtMethod::Uniform, PtMethod::Power] {
         let Some((g, c, u)) = run(method, 0.05, 1.0, 400) else { return };
         let name = method.name();
         assert!(g.image_mean > 0.0);
@@ -140,7 +140,7 @@ fn gpu_path_tracer_hard_cases() {
     }
 }
 
-/// Methods the GPU does not run (lightbvh, plain slc), and a mismatched
+/// The method the GPU does not run (lightbvh), and a mismatched
 /// accumulation, are typed errors on the GPU.
 #[test]
 fn gpu_path_tracer_rejects_what_it_does_not_run() {

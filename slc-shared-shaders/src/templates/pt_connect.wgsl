@@ -61,6 +61,17 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         h = pcg_hash(h);
         sum += shade_pick(picks.light[s], x, n, w_res, picks.n - 1u, u1, xi_from_bits(h));
     }
+{% elif selection == "all" %}
+    // Every in-range light, each connected as the traversal finds it.
+    var count = 0u;
+    for (var b = bsh_next_leaf(bsh_first(), x); b != BSH_NONE; b = bsh_next_leaf(bsh_nodes[b].next, x)) {
+        count += 1u;
+        h = pcg_hash(h);
+        let u1 = xi_from_bits(h);
+        h = pcg_hash(h);
+        sum += shade_pick(bsh_nodes[b].light, x, n, 1.0, 0u, u1, xi_from_bits(h));
+    }
+    candidates[i] = count;
 {% else %}
     // One light, {{ selection }}; its range is +∞ (p = 1).
     candidates[i] = 0u;

@@ -18,6 +18,8 @@ fn mis_weight(pdf_a: f32, pdf_b: f32) -> f32 {
 fn select_pdf(li: u32, others: u32) -> f32 {
 {% if selection == "reservoir" %}
     return 1.0 / reservoir_weight(others + 1u, K);
+{% elif selection == "all" %}
+    return 1.0;
 {% elif selection == "uniform" %}
     return 1.0 / f32(arrayLength(&lights));
 {% else %}

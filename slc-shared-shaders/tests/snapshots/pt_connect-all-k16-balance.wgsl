@@ -547,36 +547,49 @@ struct Picks {
     n: u32,
 }
 
+/// The first leaf at or after node `start` in traversal order whose range
+/// sphere contains `x`, or BSH_NONE: one step of the stackless traversal
+/// (start at `bsh_first()`, continue from the found leaf's `next`).
+fn bsh_next_leaf(start: u32, x: vec3f) -> u32 {
+    var i = start;
+    loop {
+        if i == BSH_NONE {
+            return BSH_NONE;
+        }
+        let node = bsh_nodes[i];
+        if sphere_contains_point(node.center, node.radius, x) {
+            if node.child == BSH_NONE {
+                return i;
+            }
+            i = node.child;
+        } else {
+            i = node.next;
+        }
+    }
+    return BSH_NONE;
+}
+
+/// The root, or BSH_NONE for an empty hierarchy.
+fn bsh_first() -> u32 {
+    return select(BSH_NONE, 0u, arrayLength(&bsh_nodes) > 0u);
+}
+
 /// Lights whose range sphere contains `x`, streamed through the reservoir;
 /// `seed` drives the reservoir's random choices.
 fn bsh_collect(x: vec3f, seed: u32) -> Picks {
     var picks: Picks;
     picks.n = 0u;
     var h = seed;
-    var i = select(BSH_NONE, 0u, arrayLength(&bsh_nodes) > 0u);
-    loop {
-        if i == BSH_NONE {
-            break;
-        }
-        let node = bsh_nodes[i];
-        if sphere_contains_point(node.center, node.radius, x) {
-            if node.child == BSH_NONE {
-                if picks.n < 4294967295u {
-                    picks.n += 1u;
-                    h = pcg_hash(h);
-                    let hi = h;
-                    h = pcg_hash(h);
-                    let slot = reservoir_slot(picks.n, K, hi, h);
-                    if slot < K {
-                        picks.light[slot] = node.light;
-                    }
-                }
-                i = node.next;
-            } else {
-                i = node.child;
+    for (var i = bsh_next_leaf(bsh_first(), x); i != BSH_NONE; i = bsh_next_leaf(bsh_nodes[i].next, x)) {
+        if picks.n < 4294967295u {
+            picks.n += 1u;
+            h = pcg_hash(h);
+            let hi = h;
+            h = pcg_hash(h);
+            let slot = reservoir_slot(picks.n, K, hi, h);
+            if slot < K {
+                picks.light[slot] = bsh_nodes[i].light;
             }
-        } else {
-            i = node.next;
         }
     }
     return picks;
