@@ -8,7 +8,8 @@
 // fractions are written as literals.
 #![allow(clippy::approx_constant)]
 
-use crate::light::INV_PI;
+use crate::light::{INV_PI, area_to_solid_angle_pdf};
+use crate::range::rr_probability;
 use crate::wgsl::*;
 
 crate::shared! {
@@ -31,6 +32,21 @@ crate::shared! {
             return 0.0;
         }
         return a2 / s;
+    }
+
+    /// Solid-angle pdf with which the light strategy produces a point at
+    /// distance² `d2` on a one-sided area light of `area`, seen under cosine
+    /// `cos_y` from the shading point, when it selects the light with
+    /// probability `select` and the RR test keeps it with `p_rr(r_t², d²)`
+    /// (talk: "Multiple importance sampling"): `select · p_rr · d²/(area ·
+    /// cos_y)`; 0 behind the light, at `d² = 0` or for no area. Baselines
+    /// pass `rt2 = +∞` (p_rr = 1). The pdf must not depend on the light's own
+    /// ξ, or the MIS weights do not sum to one in expectation.
+    pub fn light_strategy_pdf(select: f32, rt2: f32, d2: f32, area: f32, cos_y: f32) -> f32 {
+        if d2 <= 0.0 || area <= 0.0 || cos_y <= 0.0 {
+            return 0.0;
+        }
+        return select * rr_probability(rt2, d2) * area_to_solid_angle_pdf(1.0 / area, d2, cos_y);
     }
 
     /// Lambertian BRDF of albedo `rho`: `ρ/π`.

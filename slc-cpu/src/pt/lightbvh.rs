@@ -98,13 +98,13 @@ impl LightBounds {
     pub fn importance(&self, p: Vec3, n: Vec3) -> f32 {
         let pc = self.centroid();
         let diag = (self.max - self.min).length();
-        let d2 = p.distance_squared(pc).max(0.5 * diag);
+        let dist2 = p.distance_squared(pc);
+        let d2 = dist2.max(0.5 * diag);
         let wi = (p - pc).normalize_or_zero();
         let cos_w = self.w.dot(wi);
         let sin_w = safe_sqrt(1.0 - cos_w * cos_w);
         // Cone of directions the box subtends from p (its bounding sphere).
         let r2 = 0.25 * diag * diag;
-        let dist2 = p.distance_squared(pc);
         let cos_b = if dist2 < r2 { -1.0 } else { safe_sqrt(1.0 - r2 / dist2) };
         let sin_b = safe_sqrt(1.0 - cos_b * cos_b);
         let sin_o = safe_sqrt(1.0 - self.cos_o * self.cos_o);

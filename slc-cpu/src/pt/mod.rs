@@ -41,11 +41,11 @@ use rand_pcg::Pcg32;
 use rayon::prelude::*;
 use sampler::AliasTable;
 use slc_core::bsh::Bsh;
-use slc_core::light::{Light, LightBound, TriangleLight, area_to_solid_angle_pdf, inverse_square};
-use slc_core::mis::{cosine_direction, cosine_pdf, lambert_brdf, mis_power};
+use slc_core::light::{Light, LightBound, TriangleLight, inverse_square};
+use slc_core::mis::{cosine_direction, cosine_pdf, lambert_brdf, light_strategy_pdf, mis_power};
 use slc_core::path::path_survival;
-use slc_core::range::{RangeParams, random_range2, rr_probability, slc_keep, slc_weight};
-use slc_core::reservoir::Reservoir;
+use slc_core::range::{RangeParams, random_range2, slc_keep, slc_weight};
+use slc_core::reservoir::{Reservoir, reservoir_weight};
 use slc_core::sphere::Sphere;
 use slc_core::xi::{xi_for, xi_from_bits};
 use std::time::Instant;
@@ -323,24 +323,19 @@ impl PtScene {
         let Light::Triangle(t) = &self.lights[l] else { return 0.0 };
         let v = x - y;
         let d2 = v.length_squared();
-        if d2 <= 0.0 {
-            return 0.0;
-        }
-        let cos_y = t.normal().dot(v / d2.sqrt());
-        if cos_y <= 0.0 {
-            return 0.0;
-        }
-        let select = match s.method {
-            PtMethod::Slc => rr_probability(st.rt2[l], d2),
+        let cos_y = if d2 > 0.0 { t.normal().dot(v / d2.sqrt()) } else { 0.0 };
+        // (selection probability, r_t² of the RR test; +∞ for the baselines)
+        let (select, rt2) = match s.method {
+            PtMethod::Slc => (1.0, st.rt2[l]),
             PtMethod::SlcReservoir => {
                 let others = seen - (in_nee || st.spheres[l].contains(x)) as u32;
-                (RESERVOIR_K as f32 / (others + 1) as f32).min(1.0) * rr_probability(st.rt2[l], d2)
+                (1.0 / reservoir_weight(others + 1, RESERVOIR_K as u32), st.rt2[l])
             }
-            PtMethod::Uniform => 1.0 / self.lights.len() as f32,
-            PtMethod::Power => self.power.pdf(l) as f32,
-            PtMethod::LightBvh => self.light_bvh.pmf(x, n, l),
+            PtMethod::Uniform => (1.0 / self.lights.len() as f32, f32::INFINITY),
+            PtMethod::Power => (self.power.pdf(l) as f32, f32::INFINITY),
+            PtMethod::LightBvh => (self.light_bvh.pmf(x, n, l), f32::INFINITY),
         };
-        select * area_to_solid_angle_pdf(1.0 / t.area(), d2, cos_y)
+        light_strategy_pdf(select, rt2, d2, t.area(), cos_y)
     }
 
     /// Contribution of light `l` at `x` (normal `n`, albedo `rho`) through a

@@ -388,6 +388,12 @@ fn mis_power(pdf_a: f32, pdf_b: f32) -> f32 {
     }
     return a2 / s;
 }
+fn light_strategy_pdf(select: f32, rt2: f32, d2: f32, area: f32, cos_y: f32) -> f32 {
+    if d2 <= 0.0 || area <= 0.0 || cos_y <= 0.0 {
+        return 0.0;
+    }
+    return select * rr_probability(rt2, d2) * area_to_solid_angle_pdf(1.0 / area, d2, cos_y);
+}
 fn lambert_brdf(rho: vec3f) -> vec3f {
     return rho * INV_PI;
 }
@@ -650,14 +656,10 @@ fn select_pdf(li: u32, others: u32) -> f32 {
 /// and biases the image (the CPU path tracer's test found +40%).
 fn light_pdf(li: u32, x: vec3f, y: vec3f, others: u32) -> f32 {
     let l = lights[li];
-    let area = light_area(l);
     let v = x - y;
     let d2 = dot(v, v);
-    if area <= 0.0 || d2 <= 0.0 {
-        return 0.0;
-    }
-    let cos_y = dot(light_normal(l), v / sqrt(d2));
-    return select_pdf(li, others) * rr_probability(rt2[li], d2) * area_to_solid_angle_pdf(1.0 / area, d2, cos_y);
+    let cos_y = select(0.0, dot(light_normal(l), v / sqrt(d2)), d2 > 0.0);
+    return light_strategy_pdf(select_pdf(li, others), rt2[li], d2, light_area(l), cos_y);
 }
 
 /// `true` when every component of `v` is finite (NaN compares false).

@@ -388,6 +388,12 @@ fn mis_power(pdf_a: f32, pdf_b: f32) -> f32 {
     }
     return a2 / s;
 }
+fn light_strategy_pdf(select: f32, rt2: f32, d2: f32, area: f32, cos_y: f32) -> f32 {
+    if d2 <= 0.0 || area <= 0.0 || cos_y <= 0.0 {
+        return 0.0;
+    }
+    return select * rr_probability(rt2, d2) * area_to_solid_angle_pdf(1.0 / area, d2, cos_y);
+}
 fn lambert_brdf(rho: vec3f) -> vec3f {
     return rho * INV_PI;
 }
