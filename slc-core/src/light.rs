@@ -10,6 +10,7 @@
 
 use crate::LightError;
 use crate::ies::IesProfile;
+use crate::range::slc_weight;
 use crate::sphere::Sphere;
 use crate::wgsl::*;
 use alloc::sync::Arc;
@@ -34,6 +35,15 @@ crate::shared! {
     /// Inverse-square fall-off `1 / max(d², MIN_D2)`.
     pub fn inverse_square(d2: f32) -> f32 {
         return 1.0 / max(d2, MIN_D2);
+    }
+
+    /// Factor of a kept connection to a point at distance² `d2` seen under
+    /// cosine `cos_x` at the shading point: `cos_x / d² · 1/p · w`, with the
+    /// RR weight `1/p = max(d²/r_t², 1)` (1 for `rt2 = +∞`, nothing culled)
+    /// and `w` the selection weight (the reservoir's n/k, 1/pmf, MIS).
+    /// Multiplies the light's intensity toward the point.
+    pub fn connection_factor(cos_x: f32, d2: f32, rt2: f32, w: f32) -> f32 {
+        return cos_x * inverse_square(d2) * slc_weight(rt2, d2) * w;
     }
 
     /// VPL cosine lobe per unit flux: `I(w)/Φ = max(n·w, 0)/π`, so

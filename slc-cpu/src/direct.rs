@@ -15,8 +15,8 @@ use crate::RenderError;
 use glam::Vec3;
 use rayon::prelude::*;
 use slc_core::bsh::Bsh;
-use slc_core::light::{Light, LightBound, inverse_square};
-use slc_core::range::{RangeParams, random_range2, slc_keep, slc_weight};
+use slc_core::light::{Light, LightBound, connection_factor};
+use slc_core::range::{RangeParams, random_range2, slc_keep};
 use slc_core::reservoir::Reservoir;
 use slc_core::xi::{pcg_hash, xi_for, xi_from_bits};
 
@@ -116,7 +116,7 @@ impl DirectLights {
             if cos_x <= 0.0 {
                 continue;
             }
-            e += l.intensity(w) * (cos_x * inverse_square(d2) * slc_weight(rt2[li as usize], d2) * w_res);
+            e += l.intensity(w) * connection_factor(cos_x, d2, rt2[li as usize], w_res);
         }
         Direct { irradiance: e, in_range: res.seen() }
     }

@@ -27,6 +27,7 @@ fn templates_do_not_contain_core_formulas() {
         "* 0.5 * (d",
         "n / k",
         "0.05, 0.95",
+        "* inverse_square(d2) *",
         "area_to_solid_angle_pdf(1.0 / ",
         "2.0 * px",
         "2.0 * py",

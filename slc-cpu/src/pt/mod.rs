@@ -41,10 +41,10 @@ use rand_pcg::Pcg32;
 use rayon::prelude::*;
 use sampler::AliasTable;
 use slc_core::bsh::Bsh;
-use slc_core::light::{Light, LightBound, TriangleLight, inverse_square};
+use slc_core::light::{Light, LightBound, TriangleLight, connection_factor};
 use slc_core::mis::{cosine_direction, cosine_pdf, lambert_brdf, light_strategy_pdf, mis_power};
 use slc_core::path::path_survival;
-use slc_core::range::{RangeParams, random_range2, slc_keep, slc_weight};
+use slc_core::range::{RangeParams, random_range2, slc_keep};
 use slc_core::reservoir::{Reservoir, reservoir_weight};
 use slc_core::sphere::Sphere;
 use slc_core::xi::{xi_for, xi_from_bits};
@@ -384,12 +384,13 @@ impl PtScene {
         if i.max_element() <= 0.0 {
             return None;
         }
-        let weight = if rr { slc_weight(st.rt2[l], d2) } else { 1.0 };
+        // The baselines cull nothing: r_t² = +∞ makes 1/p = 1.
+        let rt2 = if rr { st.rt2[l] } else { f32::INFINITY };
         let mis = match light {
             Light::Triangle(_) => mis_power(self.light_pdf(s, st, l, x, n, y, seen, true), cosine_pdf(cos_x)),
             _ => 1.0,
         };
-        Some(lambert_brdf(rho) * i * (cos_x * inverse_square(d2) * weight * extra * mis))
+        Some(lambert_brdf(rho) * i * connection_factor(cos_x, d2, rt2, extra * mis))
     }
 
     /// Next-event estimate at `x`; returns the radiance and the number of

@@ -88,6 +88,6 @@ fn connect(li: u32, x: vec3f, n: vec3f, w_res: f32, u1: f32, u2: f32, eps: f32) 
     if c.cos_x <= 0.0 || occluded(x + n * eps, c.y) {
         return c;
     }
-    c.e = light_intensity(l, w) * (c.cos_x * inverse_square(d2) * slc_weight(rt2[li], d2) * w_res);
+    c.e = light_intensity(l, w) * connection_factor(c.cos_x, d2, rt2[li], w_res);
     return c;
 }

@@ -153,6 +153,9 @@ fn range_radius(extent: f32, r2: f32) -> f32 {
 fn inverse_square(d2: f32) -> f32 {
     return 1.0 / max(d2, MIN_D2);
 }
+fn connection_factor(cos_x: f32, d2: f32, rt2: f32, w: f32) -> f32 {
+    return cos_x * inverse_square(d2) * slc_weight(rt2, d2) * w;
+}
 fn vpl_lobe(n: vec3f, w: vec3f) -> f32 {
     return max(dot(n, w), 0.0) * INV_PI;
 }
