@@ -14,6 +14,7 @@ use crate::range::slc_weight;
 use crate::sphere::Sphere;
 use crate::wgsl::*;
 use alloc::sync::Arc;
+use alloc::vec::Vec;
 use glam::Vec3;
 
 crate::shared! {
@@ -333,6 +334,37 @@ impl TriangleLight {
     }
 }
 
+/// [`Light::power`] of every light, integrating each distinct IES profile
+/// (by identity of its shared `Arc`) once.
+pub fn emitted_powers(lights: &[Light]) -> Vec<Vec3> {
+    let mut flux: Vec<(*const IesProfile, f32)> = Vec::new();
+    lights
+        .iter()
+        .map(|l| match l {
+            Light::Ies(ies) => {
+                let key = Arc::as_ptr(&ies.profile);
+                let f = match flux.iter().find(|(k, _)| *k == key) {
+                    Some(&(_, f)) => f,
+                    None => {
+                        let f = ies.profile.total_flux() as f32;
+                        flux.push((key, f));
+                        f
+                    }
+                };
+                ies.tint * f
+            }
+            _ => l.power(),
+        })
+        .collect()
+}
+
+/// `r_t²` of a VPL of flux `Φ` (interleave-scaled where it applies): its
+/// peak intensity is `Φ/π` (cosine lobe), shared by the CPU and GPU
+/// backends.
+pub fn vpl_threshold_range2(params: &crate::range::RangeParams, flux: Vec3) -> f32 {
+    params.threshold_range2(flux * INV_PI)
+}
+
 /// Any light slc culls.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Light {
@@ -358,6 +390,25 @@ impl Light {
             Light::Spot(l) => l.intensity,
             Light::Ies(l) => l.tint * l.profile.max_candela(),
             Light::Triangle(l) => l.radiance * l.area,
+        }
+    }
+
+    /// RGB emitted power Φ (W), the one formula both power sampling and
+    /// the light BVH use: point `4π I`; VPL `Φ` (its cosine lobe `Φ/π · cos`
+    /// integrates to Φ); spot `2π I₀ ((1 − cos θ_i) + (cos θ_i − cos θ_o)/2)`,
+    /// the exact integral of its smoothstep fall-off (pbrt-v4's
+    /// `SpotLight::Phi`); IES `tint ×` the profile's flux integrated from its
+    /// table; one-sided Lambertian triangle `π L A`. For IES lights this
+    /// integrates the table (0.5° grid): use [`emitted_powers`] for many
+    /// lights sharing profiles.
+    pub fn power(&self) -> Vec3 {
+        let pi = core::f32::consts::PI;
+        match self {
+            Light::Point(l) => l.intensity * (4.0 * pi),
+            Light::Vpl(l) => l.flux,
+            Light::Spot(l) => l.intensity * (2.0 * pi * ((1.0 - l.cos_inner) + 0.5 * (l.cos_inner - l.cos_outer))),
+            Light::Ies(l) => l.tint * l.profile.total_flux() as f32,
+            Light::Triangle(l) => l.radiance * (pi * l.area),
         }
     }
 

@@ -1,5 +1,7 @@
 //! Ray–box and ray–triangle intersection, written once for the GPU's
-//! geometry BVH (the CPU backend casts rays through obvhs).
+//! geometry BVH (the CPU backend casts rays through obvhs), and the surface
+//! at a hit: barycentrics and the interpolated shading normal both
+//! backends use.
 
 use crate::wgsl::*;
 
@@ -18,6 +20,40 @@ crate::shared! {
             return t_in;
         }
         return -1.0;
+    }
+
+    /// Barycentric coordinates `(w₀, w₁, w₂)` of `p` (projected onto the
+    /// plane of triangle (a, b, c)), `p ≈ w₀a + w₁b + w₂c` (Ericson, *Real-Time
+    /// Collision Detection*, §3.4); `(1, 0, 0)` for a degenerate triangle.
+    pub fn barycentric(p: vec3f, a: vec3f, b: vec3f, c: vec3f) -> vec3f {
+        let e1: vec3f = b - a;
+        let e2: vec3f = c - a;
+        let q: vec3f = p - a;
+        let d11: f32 = dot(e1, e1);
+        let d12: f32 = dot(e1, e2);
+        let d22: f32 = dot(e2, e2);
+        let den: f32 = d11 * d22 - d12 * d12;
+        if !(abs(den) > 0.0) {
+            return vec3f(1.0, 0.0, 0.0);
+        }
+        let w1: f32 = (d22 * dot(q, e1) - d12 * dot(q, e2)) / den;
+        let w2: f32 = (d11 * dot(q, e2) - d12 * dot(q, e1)) / den;
+        return vec3f(1.0 - w1 - w2, w1, w2);
+    }
+
+    /// Shading normal from unit vertex normals `n0, n1, n2` at barycentrics
+    /// `w`: `normalize(w₀n₀ + w₁n₁ + w₂n₂)`, turned to the side of `facing`
+    /// (the geometric normal oriented toward the incoming ray), or `facing`
+    /// itself where the sum vanishes or is not finite (Phong normal
+    /// interpolation; Pharr, Jakob & Humphreys, *PBRT* 4th ed., §6.5.3).
+    pub fn shading_normal(n0: vec3f, n1: vec3f, n2: vec3f, w: vec3f, facing: vec3f) -> vec3f {
+        let s: vec3f = n0 * w.x + n1 * w.y + n2 * w.z;
+        let l2: f32 = dot(s, s);
+        if !(l2 > 1e-12) || !(l2 < 3.0e38) {
+            return facing;
+        }
+        let n: vec3f = s / sqrt(l2);
+        return select(n, -n, dot(n, facing) < 0.0);
     }
 
     /// Distance along `o + t·d` to triangle (a, b, c), or `-1` for a miss or
@@ -62,6 +98,21 @@ mod tests {
         assert_eq!(ray_aabb(Vec3::new(-2.0, 1.5, 0.5), inv, Vec3::ZERO, Vec3::ONE, 10.0), -1.0);
         assert_eq!(ray_aabb(Vec3::new(-2.0, 0.5, 0.5), inv, Vec3::ZERO, Vec3::ONE, 1.0), -1.0);
         assert_eq!(ray_aabb(Vec3::splat(0.5), inv, Vec3::ZERO, Vec3::ONE, 1.0), 0.0);
+    }
+
+    #[test]
+    fn barycentrics_and_shading_normals() {
+        let (a, b, c) = (Vec3::ZERO, Vec3::X, Vec3::Y);
+        let w = barycentric(Vec3::new(0.25, 0.5, 0.0), a, b, c);
+        assert!((w - Vec3::new(0.25, 0.25, 0.5)).length() < 1e-6);
+        assert_eq!(barycentric(Vec3::ONE, a, a, a), Vec3::X);
+        let n1 = Vec3::new(0.6, 0.0, 0.8);
+        let s = shading_normal(Vec3::Z, n1, Vec3::Z, Vec3::new(0.5, 0.5, 0.0), Vec3::Z);
+        assert!((s - (Vec3::Z + n1).normalize()).length() < 1e-6);
+        // Turned to the facing side; opposite normals that cancel give `facing`.
+        assert!(shading_normal(-Vec3::Z, -Vec3::Z, -Vec3::Z, w, Vec3::Z).z > 0.99);
+        assert_eq!(shading_normal(Vec3::Z, -Vec3::Z, Vec3::Z, Vec3::new(0.5, 0.5, 0.0), Vec3::Y), Vec3::Y);
+        assert_eq!(shading_normal(Vec3::NAN, Vec3::Z, Vec3::Z, w, Vec3::Y), Vec3::Y);
     }
 
     #[test]
