@@ -3,8 +3,8 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use slc_cpu::scene::Scene;
-use slc_cpu::scene_file::SceneFile;
+use slc_scene::scene::Scene;
+use slc_scene::scene_file::SceneFile;
 use std::path::Path;
 
 fuzz_target!(|data: &[u8]| {

@@ -2,12 +2,15 @@
 //! error bounds and `clamp` over a sweep of ranges, measures RMSE of each
 //! against the (cached) reference, and writes JSON (and optionally CSV).
 
-use crate::SceneArgs;
+use crate::backends::{GPU_BATCH, gpu_context, indirect_shader, path_tracer};
+use crate::report::{PtReport, PtRun, Report, Run, to_csv};
+use crate::scene_args::{App, SceneArgs};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use serde::{Deserialize, Serialize};
+use slc_cpu::pt::CpuPathTracer;
 use slc_cpu::reference::vpl_reference;
-use slc_cpu::vpl::{VplFrame, VplMethod, VplSettings};
+use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings};
+use slc_scene::vpl::{VplFrame, VplMethod, VplSettings};
 use std::path::PathBuf;
 
 #[derive(Args)]
@@ -49,60 +52,14 @@ pub struct BenchArgs {
     reference_spp: u32,
 }
 
-/// One configuration's measurements.
-#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
-pub struct Run {
-    /// `slc`, `clamp` or `none`.
-    pub method: String,
-    /// Error bound ε (slc) or range R (clamp).
-    pub param: Option<f32>,
-    /// Culling and shading time (ms).
-    pub shading_ms: f64,
-    /// Whole frame (ms): G-buffer, RSM, direct, shading, denoise.
-    pub total_ms: f64,
-    /// RMSE of the final image against the reference.
-    pub rmse: f64,
-    /// Lights in the tile lists per shaded pixel (work of the loop).
-    pub lights_per_pixel: f64,
-    /// Lights kept by the roulette per shaded pixel.
-    pub kept_per_pixel: f64,
-    /// Loop evaluations per second of shading time (culling included).
-    pub evaluations_per_second: f64,
-}
-
-/// The JSON written by `slc bench`.
-#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
-pub struct Report {
-    /// Application (`vpl`).
-    pub app: String,
-    /// Backend (`cpu`).
-    pub backend: String,
-    /// Scene name.
-    pub scene: String,
-    /// Image width.
-    pub width: u32,
-    /// Image height.
-    pub height: u32,
-    /// Number of lights (VPLs).
-    pub lights: usize,
-    /// How times were taken.
-    pub timing: String,
-    /// Worker threads.
-    pub threads: usize,
-    /// Whether the reference came from the cache.
-    pub reference_from_cache: bool,
-    /// One entry per configuration.
-    pub runs: Vec<Run>,
-}
-
 pub fn run(a: BenchArgs) -> Result<(), String> {
-    if a.scene.app == crate::App::Pt {
+    if a.scene.app == App::Pt {
         return run_pt(a);
     }
     let loaded = a.scene.load()?;
     let ctx = &loaded.ctx;
-    let gpu = crate::gpu_context(a.scene.backend)?;
-    let shader = crate::Shader::new(a.scene.backend, gpu.as_ref(), ctx)?;
+    let gpu = gpu_context(a.scene.backend)?;
+    let shader = indirect_shader(gpu.as_ref(), ctx)?;
     let mut configs: Vec<(VplMethod, Option<f32>)> = vec![(VplMethod::None, None)];
     configs.extend(a.error_bounds.iter().map(|&e| (VplMethod::Slc, Some(e))));
     configs.extend(a.ranges.iter().map(|&r| (VplMethod::Clamp, Some(r))));
@@ -125,7 +82,7 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
         };
         let mut best: Option<VplFrame> = None;
         for _ in 0..a.repeat.max(1) {
-            let f = shader.render(ctx, &settings)?;
+            let f = ctx.finish(shader.shade(&settings).map_err(|e| e.to_string())?, &settings);
             if best.as_ref().is_none_or(|b| f.stats.shading_ms < b.stats.shading_ms) {
                 best = Some(f);
             }
@@ -200,84 +157,35 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
     Ok(())
 }
 
-/// One method's equal-time path-tracing run.
-#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
-pub struct PtRun {
-    /// Method.
-    pub method: String,
-    /// Error bound ε for the SLC methods.
-    pub param: Option<f32>,
-    /// Time spent (ms).
-    pub time_ms: f64,
-    /// Samples per pixel reached.
-    pub spp: u32,
-    /// RMSE against the reference at the end.
-    pub rmse: f64,
-    /// (time ms, spp, RMSE) after each pass: RMSE against time.
-    pub series: Vec<(f64, u32, f64)>,
-}
-
-/// The JSON of `slc bench --app pt`.
-#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
-pub struct PtReport {
-    /// `pt`.
-    pub app: String,
-    /// `cpu`, or `gpu: ADAPTER (timing source)`.
-    pub backend: String,
-    /// Scene name.
-    pub scene: String,
-    /// Image width.
-    pub width: u32,
-    /// Image height.
-    pub height: u32,
-    /// Lights.
-    pub lights: usize,
-    /// Reference: method and samples per pixel.
-    pub reference: String,
-    /// Estimated RMSE of the reference itself (half-vs-half / 2).
-    pub reference_noise: f64,
-    /// Whether the reference came from the cache.
-    pub reference_from_cache: bool,
-    /// One entry per method.
-    pub runs: Vec<PtRun>,
-}
-
 fn run_pt(a: BenchArgs) -> Result<(), String> {
-    use slc_cpu::pt::{PtMethod, PtRender, PtScene, PtSettings};
     if !(a.seconds > 0.0 && a.seconds.is_finite()) {
         return Err(format!("--seconds {} must be finite and > 0", a.seconds));
     }
     let (scene, lights, f) = a.scene.scene()?;
     let (w, h) = (a.scene.width.or(f.width).unwrap_or(128), a.scene.height.or(f.height).unwrap_or(128));
-    let mut pts = PtScene::new(&scene, &lights).map_err(|e| e.to_string())?;
+    let pts = PtScene::new(&scene, &lights).map_err(|e| e.to_string())?;
     let eps = a.error_bound.unwrap_or(PtSettings::default().error_bound);
     let ref_settings = PtSettings { method: PtMethod::Power, seed: 0x5EED, ..PtSettings::default() };
     let bar = ProgressBar::new_spinner();
     bar.set_message(format!("reference: {} spp of power sampling", a.reference_spp));
     bar.tick();
-    let r = slc_cpu::reference::pt_reference(&mut pts, w, h, &ref_settings, a.reference_spp, Some(&a.cache_dir)).map_err(|e| e.to_string())?;
+    let r = slc_cpu::reference::pt_reference(&mut CpuPathTracer::new(&pts), w, h, &ref_settings, a.reference_spp, Some(&a.cache_dir))
+        .map_err(|e| e.to_string())?;
     let (reference, cached) = (r.image, r.cached);
-    // The GPU path tracer runs every method but lightbvh; the
-    // reference stays on the CPU.
-    let ctx = crate::gpu_context(a.scene.backend)?;
-    let gpu = match &ctx {
-        Some(c) => Some(slc_wgpu::pt::GpuPt::new(c, &pts, w, h).map_err(|e| e.to_string())?),
-        None => None,
-    };
-    let (methods, batch): (&[PtMethod], u32) = if gpu.is_some() {
-        (&[PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::Uniform, PtMethod::Power], crate::GPU_BATCH)
-    } else {
-        (&PtMethod::ALL, 1)
-    };
+    // The reference stays on the CPU; the methods run on the chosen backend.
+    let ctx = gpu_context(a.scene.backend)?;
+    let mut tracer = path_tracer(ctx.as_ref(), &pts, w, h)?;
+    let batch = if ctx.is_some() { GPU_BATCH } else { 1 };
+    let methods: Vec<PtMethod> = PtMethod::ALL.into_iter().filter(|&m| tracer.supports(m)).collect();
     let mut runs = Vec::new();
-    for &method in methods {
+    for method in methods {
         bar.set_message(format!("{} for {} s", method.name(), a.seconds));
         bar.tick();
         let s = PtSettings { method, error_bound: eps, seed: a.seed, ..PtSettings::default() };
         let mut acc = PtRender::new(w, h);
         let mut series = Vec::new();
         while acc.time_ms < a.seconds * 1e3 {
-            crate::pt_passes(&mut pts, gpu.as_ref(), &mut acc, &s, batch)?;
+            tracer.render(&mut acc, &s, batch).map_err(|e| e.to_string())?;
             series.push((acc.time_ms, acc.passes, acc.image().rmse(&reference)));
         }
         let last = *series.last().expect("at least one pass");
@@ -344,23 +252,4 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
         );
     }
     Ok(())
-}
-
-/// The runs as CSV, one line per configuration.
-pub fn to_csv(report: &Report) -> String {
-    let mut s = String::from("method,param,shading_ms,total_ms,rmse,lights_per_pixel,kept_per_pixel,evaluations_per_second\n");
-    for r in &report.runs {
-        s += &format!(
-            "{},{},{:.4},{:.4},{:.6},{:.3},{:.3},{:.4e}\n",
-            r.method,
-            r.param.map_or(String::new(), |p| p.to_string()),
-            r.shading_ms,
-            r.total_ms,
-            r.rmse,
-            r.lights_per_pixel,
-            r.kept_per_pixel,
-            r.evaluations_per_second
-        );
-    }
-    s
 }

@@ -1,7 +1,7 @@
 //! `slc diff A.exr B.exr`: image difference statistics and a heat map.
 
 use clap::Args;
-use slc_cpu::image::{Image, write_rgb8_png};
+use slc_scene::image::{Image, write_rgb8_png};
 use std::path::PathBuf;
 
 #[derive(Args)]

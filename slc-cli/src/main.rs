@@ -5,15 +5,20 @@
 //! prints time, VPL count, lights per pixel and RMSE against the unculled
 //! interleaved image.
 
+mod backends;
 mod bench;
 mod diff;
 mod plot;
+mod report;
+mod scene_args;
 
-use clap::{Args, Parser, Subcommand, ValueEnum};
-use slc_cpu::image::Image;
-use slc_cpu::scene::Scene;
-use slc_cpu::scene_file::{RenderSettings, SceneFile};
-use slc_cpu::vpl::{VplContext, VplMethod, VplSettings};
+use backends::{Backend, GPU_BATCH, gpu_context, indirect_shader, path_tracer};
+use clap::{Args, Parser, Subcommand};
+use scene_args::{App, SceneArgs};
+use slc_scene::RenderError;
+use slc_scene::image::Image;
+use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings};
+use slc_scene::vpl::{VplMethod, VplSettings};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
@@ -63,59 +68,6 @@ enum Command {
     },
 }
 
-/// Which application of the paper.
-#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
-pub enum App {
-    /// Real-time indirect illumination with VPLs.
-    Vpl,
-    /// Progressive path tracing with many lights.
-    Pt,
-}
-
-/// Which backend.
-#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
-pub enum Backend {
-    /// rayon on the CPU.
-    Cpu,
-    /// wgpu compute (a real GPU, or Mesa's lavapipe).
-    Gpu,
-}
-
-/// Shades frames on the chosen backend (the G-buffer, RSM, denoise and
-/// composition are shared).
-pub enum Shader<'a> {
-    /// CPU.
-    Cpu,
-    /// GPU with its uploaded scene.
-    Gpu(Box<slc_wgpu::vpl::GpuVpl<'a>>),
-}
-
-impl<'a> Shader<'a> {
-    /// Sets up `backend` for `ctx` (`gpu` must hold a context for the GPU).
-    pub fn new(backend: Backend, gpu: Option<&'a slc_wgpu::GpuContext>, ctx: &VplContext) -> Result<Self, String> {
-        match (backend, gpu) {
-            (Backend::Gpu, Some(g)) => Ok(Shader::Gpu(Box::new(slc_wgpu::vpl::GpuVpl::new(g, ctx).map_err(|e| e.to_string())?))),
-            _ => Ok(Shader::Cpu),
-        }
-    }
-
-    /// One frame.
-    pub fn render(&self, ctx: &VplContext, s: &VplSettings) -> Result<slc_cpu::vpl::VplFrame, String> {
-        match self {
-            Shader::Cpu => ctx.render(s).map_err(|e| e.to_string()),
-            Shader::Gpu(g) => g.render(ctx, s).map_err(|e| e.to_string()),
-        }
-    }
-}
-
-/// The GPU context when `backend` is `gpu`; its error says how to fall back.
-pub fn gpu_context(backend: Backend) -> Result<Option<slc_wgpu::GpuContext>, String> {
-    match backend {
-        Backend::Cpu => Ok(None),
-        Backend::Gpu => slc_wgpu::GpuContext::new().map(Some).map_err(|e| e.to_string()),
-    }
-}
-
 /// A VPL method name.
 fn vpl_method(name: &str) -> Result<VplMethod, String> {
     match name {
@@ -128,88 +80,11 @@ fn vpl_method(name: &str) -> Result<VplMethod, String> {
 }
 
 /// A path-tracing method name.
-fn pt_method(name: &str) -> Result<slc_cpu::pt::PtMethod, String> {
-    use slc_cpu::pt::PtMethod;
+fn pt_method(name: &str) -> Result<PtMethod, String> {
     PtMethod::ALL.into_iter().find(|m| m.name() == name).ok_or_else(|| {
         let names: Vec<&str> = PtMethod::ALL.iter().map(|m| m.name()).collect();
         format!("method '{name}' is not one of {} (--app pt)", names.join(", "))
     })
-}
-
-/// Scene and image options shared by render and bench. Values resolve as:
-/// command-line flag, else the scene file's `[render]`, else the default.
-#[derive(Args, Clone, Debug)]
-pub struct SceneArgs {
-    /// Application.
-    #[arg(long, value_enum, default_value = "vpl")]
-    pub app: App,
-    /// Backend.
-    #[arg(long, value_enum, default_value = "cpu")]
-    pub backend: Backend,
-    /// `cornell` (built in), an OBJ file (with its MTL), or a TOML scene file.
-    #[arg(long, default_value = "cornell")]
-    pub scene: String,
-    /// Image width [default: 512].
-    #[arg(long)]
-    pub width: Option<u32>,
-    /// Image height [default: 512].
-    #[arg(long)]
-    pub height: Option<u32>,
-    /// Number of VPLs: s·s with s a multiple of 8 (4096, 16384, 65536, 262144) [default: 65536].
-    #[arg(long)]
-    pub vpls: Option<u64>,
-    /// Exposure E, used by the error bound and the PNG preview [default: 1].
-    #[arg(long)]
-    pub exposure: Option<f32>,
-    /// Clamp distance of the VPL fall-off (default: 1% of the scene diagonal).
-    #[arg(long)]
-    pub min_distance: Option<f32>,
-    /// Culling tile size in sub-image pixels.
-    #[arg(long, default_value_t = VplSettings::default().tile)]
-    pub tile: u32,
-}
-
-/// A scene ready to render, with its resolved settings.
-pub struct Loaded {
-    /// Shared buffers of the VPL application.
-    pub ctx: VplContext,
-    /// Image width.
-    pub width: u32,
-    /// Image height.
-    pub height: u32,
-    /// Exposure.
-    pub exposure: f32,
-    /// The scene file's `[render]` (empty for built-in and OBJ scenes).
-    pub file: RenderSettings,
-}
-
-impl SceneArgs {
-    /// The scene, its extra lights (scene files) and its `[render]` settings.
-    pub fn scene(&self) -> Result<(Scene, Vec<slc_core::light::Light>, RenderSettings), String> {
-        if self.scene == "cornell" {
-            Ok((Scene::cornell_box(), Vec::new(), RenderSettings::default()))
-        } else if self.scene.ends_with(".toml") {
-            let f = SceneFile::load(Path::new(&self.scene)).map_err(|e| e.to_string())?;
-            Ok((f.scene, f.lights, f.render))
-        } else {
-            Ok((Scene::load_obj(Path::new(&self.scene)).map_err(|e| e.to_string())?, Vec::new(), RenderSettings::default()))
-        }
-    }
-
-    /// Loads the scene and builds the shared VPL context.
-    pub fn load(&self) -> Result<Loaded, String> {
-        let (scene, _, file) = self.scene()?;
-        let width = self.width.or(file.width).unwrap_or(512);
-        let height = self.height.or(file.height).unwrap_or(512);
-        let vpls = self.vpls.or(file.vpls).unwrap_or(65536);
-        let exposure = self.exposure.or(file.exposure).unwrap_or(1.0);
-        let s = (vpls as f64).sqrt() as u64;
-        if s * s != vpls || s > u32::MAX as u64 {
-            return Err(slc_cpu::RenderError::VplCount(vpls).to_string());
-        }
-        let ctx = VplContext::new(&scene, width, height, s as u32, self.min_distance).map_err(|e| e.to_string())?;
-        Ok(Loaded { ctx, width, height, exposure, file })
-    }
 }
 
 #[derive(Args)]
@@ -287,14 +162,15 @@ fn render(a: RenderArgs) -> Result<(), String> {
     };
     spinner.set_message(format!("shading ({}, {:?})", settings.method.name(), a.scene.backend));
     let gpu = gpu_context(a.scene.backend)?;
-    let shader = Shader::new(a.scene.backend, gpu.as_ref(), ctx)?;
-    let frame = shader.render(ctx, &settings)?;
+    let shader = indirect_shader(gpu.as_ref(), ctx)?;
+    let frame = ctx.finish(shader.shade(&settings).map_err(|e| e.to_string())?, &settings);
     spinner.set_message("writing images");
     write_outputs(&frame.image, &a.out, loaded.exposure)?;
     let st = frame.stats;
     let versus_none = if settings.method != VplMethod::None && settings.method != VplMethod::Reference {
         spinner.set_message("unculled interleaved image for the RMSE");
-        let none = shader.render(ctx, &VplSettings { method: VplMethod::None, ..settings })?;
+        let none_settings = VplSettings { method: VplMethod::None, ..settings };
+        let none = ctx.finish(shader.shade(&none_settings).map_err(|e| e.to_string())?, &none_settings);
         Some((frame.image.rmse(&none.image), none.stats.shading_ms))
     } else {
         None
@@ -319,35 +195,15 @@ fn render(a: RenderArgs) -> Result<(), String> {
     Ok(())
 }
 
-/// `slc render --app pt`: progressive path tracing on the CPU.
-/// Passes of the path tracer on the chosen backend: the CPU's `pts`, or
-/// the GPU's copy of it.
-pub fn pt_passes(
-    pts: &mut slc_cpu::pt::PtScene,
-    gpu: Option<&slc_wgpu::pt::GpuPt>,
-    acc: &mut slc_cpu::pt::PtRender,
-    s: &slc_cpu::pt::PtSettings,
-    passes: u32,
-) -> Result<(), String> {
-    match gpu {
-        Some(g) => g.render(acc, s, passes).map(|_| ()).map_err(|e| e.to_string()),
-        None => pts.render(acc, s, passes).map_err(|e| e.to_string()),
-    }
-}
-
-/// Passes per GPU submission batch in time- or spp-bounded loops (one
-/// readback per batch); the CPU goes one pass at a time.
-pub const GPU_BATCH: u32 = 16;
-
+/// `slc render --app pt`: progressive path tracing on the chosen backend.
 fn render_pt(a: RenderArgs) -> Result<(), String> {
-    use slc_cpu::pt::{PtRender, PtScene, PtSettings};
     let t0 = Instant::now();
     let (scene, lights, f) = a.scene.scene()?;
     let (w, h) = (a.scene.width.or(f.width).unwrap_or(512), a.scene.height.or(f.height).unwrap_or(512));
     if !(1..=16384).contains(&w) || !(1..=16384).contains(&h) {
-        return Err(slc_cpu::RenderError::Size(w, h).to_string());
+        return Err(RenderError::Size(w, h).to_string());
     }
-    let mut pts = PtScene::new(&scene, &lights).map_err(|e| e.to_string())?;
+    let pts = PtScene::new(&scene, &lights).map_err(|e| e.to_string())?;
     let d = PtSettings::default();
     let on_gpu = a.scene.backend == Backend::Gpu;
     // The GPU path tracer runs slc-reservoir: make it the default there.
@@ -360,10 +216,10 @@ fn render_pt(a: RenderArgs) -> Result<(), String> {
         ..d
     };
     let ctx = gpu_context(a.scene.backend)?;
-    let gpu = match &ctx {
-        Some(c) => Some(slc_wgpu::pt::GpuPt::new(c, &pts, w, h).map_err(|e| e.to_string())?),
-        None => None,
-    };
+    let mut tracer = path_tracer(ctx.as_ref(), &pts, w, h)?;
+    if !tracer.supports(settings.method) {
+        return Err(format!("method {} does not run on the {} backend; use --backend cpu", settings.method.name(), tracer.describe()));
+    }
     let batch = if on_gpu { GPU_BATCH } else { 1 };
     let mut acc = PtRender::new(w, h);
     let bar = indicatif::ProgressBar::new(0);
@@ -371,7 +227,7 @@ fn render_pt(a: RenderArgs) -> Result<(), String> {
         Some(secs) if secs > 0.0 && secs.is_finite() => {
             bar.set_length((secs * 10.0) as u64);
             while acc.time_ms < secs * 1e3 {
-                pt_passes(&mut pts, gpu.as_ref(), &mut acc, &settings, batch)?;
+                tracer.render(&mut acc, &settings, batch).map_err(|e| e.to_string())?;
                 bar.set_position((acc.time_ms / 100.0) as u64);
             }
         }
@@ -381,7 +237,7 @@ fn render_pt(a: RenderArgs) -> Result<(), String> {
             bar.set_length(spp as u64);
             while acc.passes < spp {
                 let n = batch.min(spp - acc.passes);
-                pt_passes(&mut pts, gpu.as_ref(), &mut acc, &settings, n)?;
+                tracer.render(&mut acc, &settings, n).map_err(|e| e.to_string())?;
                 bar.inc(n as u64);
             }
         }
@@ -452,7 +308,7 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> Result<(), String> {
 
 fn replot(json: &Path, out: &Path) -> Result<(), String> {
     let text = std::fs::read_to_string(json).map_err(|e| format!("cannot read {}: {e}", json.display()))?;
-    let report: bench::Report = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", json.display()))?;
+    let report: report::Report = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", json.display()))?;
     plot::speed_vs_error(&report, out)?;
     println!("wrote {}", out.display());
     Ok(())

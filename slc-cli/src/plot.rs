@@ -3,7 +3,7 @@
 //! PNG text uses the Ubuntu font bundled by `epaint_default_fonts`, so no
 //! system font is needed.
 
-use crate::bench::Report;
+use crate::report::{PtReport, Report};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -146,11 +146,11 @@ fn speed_vs_error_on<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB,
 }
 
 /// Path tracing: RMSE (log) against time (log) per method.
-pub fn rmse_over_time(report: &crate::bench::PtReport, path: &Path) -> Result<(), String> {
+pub fn rmse_over_time(report: &PtReport, path: &Path) -> Result<(), String> {
     with_backend(path, (960, 640), |a| rmse_over_time_on(report, a), |a| rmse_over_time_on(report, a))
 }
 
-fn rmse_over_time_on<DB: DrawingBackend>(report: &crate::bench::PtReport, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
+fn rmse_over_time_on<DB: DrawingBackend>(report: &PtReport, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
     let err = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     root.fill(&WHITE).map_err(err)?;
     let pts: Vec<(f64, f64)> = report.runs.iter().flat_map(|r| r.series.iter().map(|s| (s.0, s.2))).filter(|p| p.0 > 0.0 && p.1 > 0.0).collect();

@@ -328,3 +328,20 @@ fn path_tracer_bench() {
     assert!(std::fs::read_to_string(d.join("p.svg")).unwrap().contains("RMSE"));
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// MTL features slc does not model produce one warning line per material
+/// (naming the features and the material), and the render still succeeds;
+/// a matte material says nothing.
+#[test]
+fn unmodelled_mtl_features_are_warned_about_once() {
+    let d = tempdir("mtl");
+    std::fs::write(d.join("ball.mtl"), "newmtl glossy\nKd 0.5 0.5 0.5\nKs 0.3 0.3 0.3\nNs 60\nnewmtl matte\nKd 0.7 0.7 0.7\nKs 0 0 0\n").unwrap();
+    let obj = "mtllib ball.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nusemtl glossy\nf 1//1 2//1 3//1\nusemtl matte\nf 1//1 3//1 4//1\n";
+    std::fs::write(d.join("ball.obj"), obj).unwrap();
+    let out = slc(&d, &["render", "--scene", "ball.obj", "--width", "16", "--height", "16", "--vpls", "64", "--out", "ball.exr"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    let warnings: Vec<&str> = err.lines().filter(|l| l.starts_with("warning:")).collect();
+    assert_eq!(warnings.len(), 1, "{err}");
+    assert!(warnings[0].contains("material 'glossy' has Ks, Ns"), "{err}");
+}

@@ -1,8 +1,9 @@
 //! Renders frames of the built-in Cornell box with one method and prints the
 //! timings: `cargo run --release -p slc-cpu --example vpl_frame -- slc 512 10`.
 
-use slc_cpu::scene::Scene;
-use slc_cpu::vpl::{VplContext, VplMethod, VplSettings};
+use slc_cpu::vpl::VplContext;
+use slc_scene::scene::Scene;
+use slc_scene::vpl::{VplMethod, VplSettings};
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();

@@ -11,59 +11,27 @@
 //! `xi_for`), so for the same seed and frame the CPU and the GPU pick the
 //! same lights and sample the same points.
 
-use crate::RenderError;
 use glam::Vec3;
 use rayon::prelude::*;
 use slc_core::bsh::Bsh;
-use slc_core::light::{Light, LightBound, connection_factor};
+use slc_core::light::{Light, connection_factor};
 use slc_core::range::{RangeParams, random_range2, slc_keep};
 use slc_core::reservoir::Reservoir;
 use slc_core::xi::{pcg_hash, xi_for, xi_from_bits};
+use slc_scene::RenderError;
+use slc_scene::lights::{DIRECT_K, Direct, LightSet};
 
-/// Reservoir slots of the direct-light shader (the GPU kernel's `k`).
-pub const DIRECT_K: usize = 8;
-
-/// Direct light at one point: irradiance-weighted intensity sum and the
-/// number of lights in range.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Direct {
-    /// `Σ I(w) cos θ_x / d² · 1/p · n/k` over the picks (RGB).
-    pub irradiance: Vec3,
-    /// Lights whose range sphere contains the point.
-    pub in_range: u32,
-}
-
-/// A light set with its BSH, ready to shade points.
+/// A light set ready to shade points on the CPU: the set's lights and a
+/// BSH of its own that each call refits to its frame's ranges.
 pub struct DirectLights {
     lights: Vec<Light>,
-    bounds: Vec<LightBound>,
     bsh: Bsh,
 }
 
 impl DirectLights {
-    /// Builds the BSH over `lights` (at least one).
-    pub fn new(lights: Vec<Light>) -> Result<DirectLights, RenderError> {
-        if lights.is_empty() {
-            return Err(RenderError::Setting("no lights to shade with".into()));
-        }
-        let bounds: Vec<LightBound> = lights.iter().map(Light::bound).collect();
-        let bsh = Bsh::build(&bounds).map_err(|e| RenderError::Setting(e.to_string()))?;
-        Ok(DirectLights { lights, bounds, bsh })
-    }
-
-    /// The lights.
-    pub fn lights(&self) -> &[Light] {
-        &self.lights
-    }
-
-    /// Each light's bound.
-    pub fn bounds(&self) -> &[LightBound] {
-        &self.bounds
-    }
-
-    /// The BSH (as built).
-    pub fn bsh(&self) -> &Bsh {
-        &self.bsh
+    /// Copies the lights and the BSH of `set`.
+    pub fn new(set: &LightSet) -> DirectLights {
+        DirectLights { lights: set.lights().to_vec(), bsh: set.bsh().clone() }
     }
 
     /// Shades `points` with unit `normals` for frame `frame` of `seed`:

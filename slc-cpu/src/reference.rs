@@ -1,14 +1,18 @@
 //! Reference images cached on disk by a hash of the scene and settings, so
 //! benchmarks do not recompute the (expensive) ground truth.
 
-use crate::image::Image;
-use crate::vpl::{VplContext, VplMethod, VplSettings};
-use crate::{OutputError, RenderError};
+use crate::pt::CpuPathTracer;
+use crate::vpl::VplContext;
 use glam::Vec3;
+use slc_scene::image::Image;
+use slc_scene::pt::{PtRender, PtSettings};
+use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_scene::{OutputError, RenderError};
 use std::path::{Path, PathBuf};
 
 /// Bumped when the reference renderer changes meaning.
-const VERSION: u64 = 1;
+/// 2: vertex normals (smooth shading) and one emitted-power formula.
+const VERSION: u64 = 2;
 
 /// FNV-1a, 64 bit.
 fn fnv(bytes: &[u8], mut h: u64) -> u64 {
@@ -29,6 +33,7 @@ pub fn vpl_reference_key(ctx: &VplContext) -> u64 {
         }
     }
     h = fnv(bytemuck::cast_slice(&s.material_of), h);
+    h = normals_hash(&s.normals, h);
     let text = format!("{:?}{:?}{:?}", s.materials, s.camera, s.primary);
     h = fnv(text.as_bytes(), h);
     let gb = ctx.gbuffer();
@@ -73,14 +78,14 @@ pub struct PtReference {
 /// `settings` in two halves with different seeds, cached in `cache_dir` by
 /// a hash of scene, lights, size and settings.
 pub fn pt_reference(
-    pts: &mut crate::pt::PtScene,
+    pts: &mut CpuPathTracer,
     width: u32,
     height: u32,
-    settings: &crate::pt::PtSettings,
+    settings: &PtSettings,
     spp: u32,
     cache_dir: Option<&Path>,
 ) -> Result<PtReference, RenderError> {
-    let s = pts.scene();
+    let s = pts.scene().scene();
     let mut h = fnv(&VERSION.to_le_bytes(), 0x5bd1_e995_0000_0001);
     for t in &s.triangles {
         for v in t {
@@ -88,15 +93,16 @@ pub fn pt_reference(
         }
     }
     h = fnv(bytemuck::cast_slice(&s.material_of), h);
-    h = fnv(format!("{:?}{:?}{:?}{:?}{}x{}x{}", s.materials, s.camera, pts.lights_debug(), settings, width, height, spp).as_bytes(), h);
+    h = normals_hash(&s.normals, h);
+    h = fnv(format!("{:?}{:?}{:?}{:?}{}x{}x{}", s.materials, s.camera, pts.scene().lights_debug(), settings, width, height, spp).as_bytes(), h);
     let paths = cache_dir.map(|d| (d.join(format!("pt-reference-{h:016x}-a.bin")), d.join(format!("pt-reference-{h:016x}-b.bin"))));
     let cached = paths.as_ref().and_then(|(a, b)| Some((read_raw(a)?, read_raw(b)?)));
     let (a, b, from_cache) = match cached {
         Some((a, b)) if (a.width, a.height) == (width, height) => (a, b, true),
         _ => {
             let mut half = |seed: u32| -> Result<Image, RenderError> {
-                let mut acc = crate::pt::PtRender::new(width, height);
-                pts.render(&mut acc, &crate::pt::PtSettings { seed, ..*settings }, spp.div_ceil(2))?;
+                let mut acc = PtRender::new(width, height);
+                pts.render(&mut acc, &PtSettings { seed, ..*settings }, spp.div_ceil(2))?;
                 Ok(acc.image())
             };
             let a = half(settings.seed)?;
@@ -111,6 +117,15 @@ pub fn pt_reference(
     let noise = a.rmse(&b) / 2.0;
     let image = Image { width, height, data: a.data.iter().zip(&b.data).map(|(x, y)| (*x + *y) * 0.5).collect() };
     Ok(PtReference { image, noise, cached: from_cache })
+}
+
+fn normals_hash(normals: &[[Vec3; 3]], mut h: u64) -> u64 {
+    for t in normals {
+        for v in t {
+            h = fnv(bytemuck::cast_slice(&v.to_array()), h);
+        }
+    }
+    h
 }
 
 fn read_raw(path: &Path) -> Option<Image> {

@@ -2,8 +2,9 @@
 //! against full candidates, MIS consistency, and bad emitters.
 
 use glam::Vec3;
-use slc_cpu::pt::{PtMethod, PtRender, PtScene, PtSettings};
-use slc_cpu::scene::Scene;
+use slc_cpu::pt::CpuPathTracer;
+use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings};
+use slc_scene::scene::Scene;
 
 /// The Cornell box with its ceiling light split into 8×8 quads (128
 /// triangle lights), so SLC has many lights to cull.
@@ -14,7 +15,7 @@ fn many_light_box() -> Scene {
 /// Per-pass images (mean RGB per pixel) of a method; each pass is
 /// independent (new ξ, new samples).
 fn pass_images(method: PtMethod, seed: u32, passes: u32) -> Vec<Vec<f64>> {
-    let mut pts = PtScene::new(&many_light_box(), &[]).unwrap();
+    let mut pts = CpuPathTracer::new(&PtScene::new(&many_light_box(), &[]).unwrap());
     assert_eq!(pts.light_count(), 128);
     let s = PtSettings { method, error_bound: 0.05, seed, ..PtSettings::default() };
     let mut acc = PtRender::new(32, 32);
@@ -93,8 +94,8 @@ fn zero_area_or_bad_emitters_are_errors() {
 
 #[test]
 fn renders_are_finite_and_deterministic() {
-    let mut a = PtScene::new(&Scene::cornell_box(), &[]).unwrap();
-    let mut b = PtScene::new(&Scene::cornell_box(), &[]).unwrap();
+    let mut a = CpuPathTracer::new(&PtScene::new(&Scene::cornell_box(), &[]).unwrap());
+    let mut b = CpuPathTracer::new(&PtScene::new(&Scene::cornell_box(), &[]).unwrap());
     for method in PtMethod::ALL {
         let s = PtSettings { method, ..PtSettings::default() };
         let (mut ra, mut rb) = (PtRender::new(16, 16), PtRender::new(16, 16));

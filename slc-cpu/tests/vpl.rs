@@ -1,9 +1,10 @@
 //! Integration tests of the VPL application on small images.
 
 use glam::Vec3;
-use slc_cpu::SceneError;
-use slc_cpu::scene::Scene;
-use slc_cpu::vpl::{VplContext, VplMethod, VplSettings};
+use slc_cpu::vpl::VplContext;
+use slc_scene::SceneError;
+use slc_scene::scene::Scene;
+use slc_scene::vpl::{VplMethod, VplSettings};
 use std::path::PathBuf;
 
 fn settings(method: VplMethod, frame: u32) -> VplSettings {
@@ -81,7 +82,7 @@ fn clamped_ranges_darken() {
     let none = ctx.render(&settings(VplMethod::None, 0)).unwrap().image;
     let clamp = ctx.render(&VplSettings { range: 0.1, ..settings(VplMethod::Clamp, 0) }).unwrap().image;
     let direct_only = ctx.render(&VplSettings { range: 1e-6, ..settings(VplMethod::Clamp, 0) }).unwrap().image;
-    let indirect = |img: &slc_cpu::image::Image| img.mean() - direct_only.mean();
+    let indirect = |img: &slc_scene::image::Image| img.mean() - direct_only.mean();
     assert!(indirect(&none) > 0.0);
     assert!(indirect(&clamp) < 0.8 * indirect(&none), "clamp {} vs none {}", indirect(&clamp), indirect(&none));
     // Pixel-wise: clamp never exceeds none (it only removes terms).

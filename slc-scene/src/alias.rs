@@ -1,4 +1,5 @@
-//! Walker's alias table (Vose's construction) for the `power` baseline.
+//! Walker's alias table (Vose's construction): the `power` baseline's light
+//! selection, read by both backends (the GPU gets [`crate::lights::LightSet::power_table`]).
 
 /// Samples index `i` with probability `wᵢ/Σw` in O(1).
 #[derive(Clone, Debug)]

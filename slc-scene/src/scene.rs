@@ -1,11 +1,11 @@
-//! Scenes: triangles with diffuse albedo and emission, a pinhole camera and a
-//! primary light. Loaded from OBJ+MTL (`Kd`, `Ke`) with `tobj`, or the
-//! built-in Cornell box written from its published measurements.
+//! The scene model both backends take: triangles (with optional per-vertex
+//! shading normals) with diffuse albedo and emission, a pinhole camera and
+//! the VPL application's primary light. Loaded from OBJ+MTL ([`crate::obj`]),
+//! scene files ([`crate::scene_file`]) or built in ([`crate::cornell`]).
 
 use crate::SceneError;
 use glam::Vec3;
 use slc_core::light::SpotLight;
-use std::path::Path;
 
 /// A diffuse material.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -97,6 +97,12 @@ pub struct Scene {
     pub name: String,
     /// Triangle vertices.
     pub triangles: Vec<[Vec3; 3]>,
+    /// Per-vertex unit shading normals, one triple per triangle, or empty
+    /// (flat shading everywhere). Triangles of a mesh without normals carry
+    /// their geometric normal three times. Shading uses the interpolated
+    /// normal (`slc_core::ray::shading_normal`); ray offsets and the
+    /// emitters' side use the geometric one.
+    pub normals: Vec<[Vec3; 3]>,
     /// Material index per triangle.
     pub material_of: Vec<u32>,
     /// Materials.
@@ -105,17 +111,33 @@ pub struct Scene {
     pub camera: Camera,
     /// Primary light.
     pub primary: PrimaryLight,
+    /// Material features the loader read but the renderer does not model
+    /// (for the caller to report; the library does not print).
+    pub unsupported: Vec<Unsupported>,
 }
 
-/// `true` when an MTL colour line (`Ka`, `Kd`, `Ks`, `Ke`) has fewer than
-/// three values: tobj 4.0.5 panics on those (`parse_float3` unwraps a
-/// short array), so they are rejected as a parse error before tobj sees
-/// them. Found by fuzz/scene_loaders.
-fn short_colour_line(mtl: &[u8]) -> bool {
-    String::from_utf8_lossy(mtl).lines().any(|l| {
-        let mut w = l.split_whitespace();
-        matches!(w.next(), Some("Ka" | "Kd" | "Ks" | "Ke")) && w.take(3).count() < 3
-    })
+/// Material features of a loaded file that the renderer ignores (it models
+/// diffuse albedo and emission only), by material.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Unsupported {
+    /// Where the material comes from (the OBJ's name).
+    pub source: String,
+    /// Material name.
+    pub material: String,
+    /// MTL keys that are ignored (`Ks`, `Ns`, `map_Kd`, `d`, ...).
+    pub features: Vec<String>,
+}
+
+impl Unsupported {
+    /// One line for a user: `"bunny.obj: material 'glossy' has Ks, Ns (ignored: slc renders diffuse albedo and emission only)"`.
+    pub fn message(&self) -> String {
+        format!(
+            "{}: material '{}' has {} (ignored: slc renders diffuse albedo and emission only)",
+            self.source,
+            self.material,
+            self.features.join(", ")
+        )
+    }
 }
 
 impl Scene {
@@ -128,6 +150,14 @@ impl Scene {
         }
         if self.material_of.len() != self.triangles.len() {
             return Err(SceneError::Invalid("one material index per triangle".into()));
+        }
+        if !self.normals.is_empty() && self.normals.len() != self.triangles.len() {
+            return Err(SceneError::Invalid(format!("{} normal triples for {} triangles", self.normals.len(), self.triangles.len())));
+        }
+        for (i, ns) in self.normals.iter().enumerate() {
+            if !ns.iter().all(|n| n.is_finite() && (n.length() - 1.0).abs() < 1e-3) {
+                return Err(SceneError::Invalid(format!("triangle {i}: vertex normals {ns:?} must be finite unit vectors")));
+            }
         }
         for (i, t) in self.triangles.iter().enumerate() {
             if !t.iter().all(|v| v.is_finite()) {
@@ -169,6 +199,59 @@ impl Scene {
         Ok(())
     }
 
+    /// `true` when some triangle has vertex normals that differ from its
+    /// geometric normal (smooth shading somewhere).
+    pub fn has_vertex_normals(&self) -> bool {
+        !self.normals.is_empty()
+    }
+
+    /// Unit geometric normal of triangle `i` from its winding (zero for a
+    /// degenerate triangle).
+    pub fn geometric_normal(&self, i: usize) -> Vec3 {
+        let [a, b, c] = self.triangles[i];
+        (b - a).cross(c - a).normalize_or_zero()
+    }
+
+    /// The three vertex normals of triangle `i` (its geometric normal three
+    /// times when the scene has none).
+    pub fn vertex_normals(&self, i: usize) -> [Vec3; 3] {
+        match self.normals.get(i) {
+            Some(n) => *n,
+            None => [self.geometric_normal(i); 3],
+        }
+    }
+
+    /// Shading normal at point `p` on triangle `i`, on the side of `facing`
+    /// (the geometric normal oriented toward the viewer): the interpolated
+    /// vertex normal ([`slc_core::ray::shading_normal`], written once with
+    /// the GPU's), or `facing` itself for flat triangles.
+    pub fn shading_normal(&self, i: usize, p: Vec3, facing: Vec3) -> Vec3 {
+        match self.normals.get(i) {
+            Some([n0, n1, n2]) => {
+                let [a, b, c] = self.triangles[i];
+                slc_core::ray::shading_normal(*n0, *n1, *n2, slc_core::ray::barycentric(p, a, b, c), facing)
+            }
+            None => facing,
+        }
+    }
+
+    /// Appends `other` scaled by `scale` (> 0) and moved by `translate`;
+    /// materials are appended and re-indexed, and vertex normals are kept
+    /// (geometric ones fill in for the side that has none).
+    pub fn append(&mut self, other: Scene, scale: f32, translate: Vec3) {
+        if self.normals.is_empty() && !other.normals.is_empty() {
+            self.normals = (0..self.triangles.len()).map(|i| self.vertex_normals(i)).collect();
+        }
+        if !self.normals.is_empty() {
+            self.normals.extend((0..other.triangles.len()).map(|i| other.vertex_normals(i)));
+        }
+        let base = self.materials.len() as u32;
+        self.materials.extend(other.materials);
+        self.triangles.extend(other.triangles.iter().map(|t| t.map(|v| v * scale + translate)));
+        self.material_of.extend(other.material_of.iter().map(|m| m + base));
+        self.unsupported.extend(other.unsupported);
+    }
+
     /// Axis-aligned bounds of all vertices.
     pub fn bounds(&self) -> (Vec3, Vec3) {
         self.triangles.iter().flatten().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), &v| (lo.min(v), hi.max(v)))
@@ -178,172 +261,6 @@ impl Scene {
     pub fn diagonal(&self) -> f32 {
         let (lo, hi) = self.bounds();
         (hi - lo).length()
-    }
-
-    /// The built-in Cornell box, from the measurements published by the
-    /// Cornell Program of Computer Graphics ("Cornell Box Data"), converted
-    /// from millimetres to metres, with the reflectances of McGuire's
-    /// Computer Graphics Archive version. The primary light is a spot at the
-    /// ceiling light's centre pointing down; its peak intensity is that of the
-    /// measured light (radiance `(17, 12, 4)` times its 0.130 × 0.105 m area).
-    pub fn cornell_box() -> Scene {
-        let mm = |x: f32, y: f32, z: f32| Vec3::new(x, y, z) * 0.001;
-        let white = Material { albedo: Vec3::new(0.725, 0.71, 0.68), emission: Vec3::ZERO };
-        let red = Material { albedo: Vec3::new(0.63, 0.065, 0.05), emission: Vec3::ZERO };
-        let green = Material { albedo: Vec3::new(0.14, 0.45, 0.091), emission: Vec3::ZERO };
-        let light = Material { albedo: Vec3::splat(0.78), emission: Vec3::new(17.0, 12.0, 4.0) };
-        let quads: [([[f32; 3]; 4], u32); 16] = [
-            // Floor, ceiling, back wall (white), right wall (green), left wall (red).
-            ([[552.8, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 559.2], [549.6, 0.0, 559.2]], 0),
-            ([[556.0, 548.8, 0.0], [556.0, 548.8, 559.2], [0.0, 548.8, 559.2], [0.0, 548.8, 0.0]], 0),
-            ([[549.6, 0.0, 559.2], [0.0, 0.0, 559.2], [0.0, 548.8, 559.2], [556.0, 548.8, 559.2]], 0),
-            ([[0.0, 0.0, 559.2], [0.0, 0.0, 0.0], [0.0, 548.8, 0.0], [0.0, 548.8, 559.2]], 2),
-            ([[552.8, 0.0, 0.0], [549.6, 0.0, 559.2], [556.0, 548.8, 559.2], [556.0, 548.8, 0.0]], 1),
-            // Short block.
-            ([[130.0, 165.0, 65.0], [82.0, 165.0, 225.0], [240.0, 165.0, 272.0], [290.0, 165.0, 114.0]], 0),
-            ([[290.0, 0.0, 114.0], [290.0, 165.0, 114.0], [240.0, 165.0, 272.0], [240.0, 0.0, 272.0]], 0),
-            ([[130.0, 0.0, 65.0], [130.0, 165.0, 65.0], [290.0, 165.0, 114.0], [290.0, 0.0, 114.0]], 0),
-            ([[82.0, 0.0, 225.0], [82.0, 165.0, 225.0], [130.0, 165.0, 65.0], [130.0, 0.0, 65.0]], 0),
-            ([[240.0, 0.0, 272.0], [240.0, 165.0, 272.0], [82.0, 165.0, 225.0], [82.0, 0.0, 225.0]], 0),
-            // Tall block.
-            ([[423.0, 330.0, 247.0], [265.0, 330.0, 296.0], [314.0, 330.0, 456.0], [472.0, 330.0, 406.0]], 0),
-            ([[423.0, 0.0, 247.0], [423.0, 330.0, 247.0], [472.0, 330.0, 406.0], [472.0, 0.0, 406.0]], 0),
-            ([[472.0, 0.0, 406.0], [472.0, 330.0, 406.0], [314.0, 330.0, 456.0], [314.0, 0.0, 456.0]], 0),
-            ([[314.0, 0.0, 456.0], [314.0, 330.0, 456.0], [265.0, 330.0, 296.0], [265.0, 0.0, 296.0]], 0),
-            ([[265.0, 0.0, 296.0], [265.0, 330.0, 296.0], [423.0, 330.0, 247.0], [423.0, 0.0, 247.0]], 0),
-            // Light, 0.1 mm below the ceiling, facing down.
-            ([[343.0, 548.7, 227.0], [343.0, 548.7, 332.0], [213.0, 548.7, 332.0], [213.0, 548.7, 227.0]], 3),
-        ];
-        let mut triangles = Vec::new();
-        let mut material_of = Vec::new();
-        for (q, m) in &quads {
-            let v = q.map(|p| mm(p[0], p[1], p[2]));
-            triangles.push([v[0], v[1], v[2]]);
-            triangles.push([v[0], v[2], v[3]]);
-            material_of.extend([*m, *m]);
-        }
-        let light_area = 0.130 * 0.105;
-        Scene {
-            name: "cornell".into(),
-            triangles,
-            material_of,
-            materials: vec![white, red, green, light],
-            camera: Camera {
-                position: mm(278.0, 273.0, -800.0),
-                target: mm(278.0, 273.0, 0.0),
-                up: Vec3::Y,
-                // 35 mm focal length, 25 mm film: 2·atan(12.5/35).
-                vfov_deg: 2.0 * (12.5f32 / 35.0).atan().to_degrees(),
-            },
-            primary: PrimaryLight::Spot {
-                position: mm(278.0, 548.0, 279.5),
-                direction: -Vec3::Y,
-                intensity: Vec3::new(17.0, 12.0, 4.0) * light_area,
-                inner: 0.0,
-                outer: 80f32.to_radians() * 0.99,
-            },
-        }
-    }
-
-    /// The built-in Cornell box with its ceiling light split into `n × n`
-    /// quads (`2n²` triangle lights, same total emission): a small many-light
-    /// scene for tests of light selection.
-    pub fn cornell_box_split_light(n: u32) -> Scene {
-        let mut s = Scene::cornell_box();
-        let light = s.material_of.iter().position(|&m| s.materials[m as usize].emission.max_element() > 0.0).expect("the box has a light");
-        let [a, b, _] = s.triangles[light];
-        let c = s.triangles[light + 1][2];
-        // The light quad is a (corner), a→b (first edge), a→d (second edge).
-        let m = s.material_of[light];
-        s.triangles.drain(light..light + 2);
-        s.material_of.drain(light..light + 2);
-        let (e1, e2) = (b - a, c - a);
-        let n = n.max(1);
-        for i in 0..n {
-            for j in 0..n {
-                let p = |u: u32, v: u32| a + e1 * (u as f32 / n as f32) + e2 * (v as f32 / n as f32);
-                let (p00, p10, p11, p01) = (p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1));
-                s.triangles.push([p00, p10, p11]);
-                s.triangles.push([p00, p11, p01]);
-                s.material_of.extend([m, m]);
-            }
-        }
-        s
-    }
-
-    /// Loads an OBJ with its MTL (`Kd` albedo, `Ke` emission; faces are
-    /// triangulated). When the `mtllib` path does not exist relative to the
-    /// OBJ, a `.mtl` of the same file name beside the OBJ is used. The camera
-    /// looks at the bounds' centre along −z from in front of the +z face;
-    /// the primary light is a spot at the emitters' centroid along their mean
-    /// normal (or, with no emitter, above the scene pointing down).
-    pub fn load_obj(path: &Path) -> Result<Scene, SceneError> {
-        let text = std::fs::read(path).map_err(|e| SceneError::Io(path.display().to_string(), e.to_string()))?;
-        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        let name = path.display().to_string();
-        Self::parse_obj(&text, &name, |p| {
-            let direct = dir.join(p);
-            let fallback = p.file_name().map(|f| dir.join(f));
-            let chosen = if direct.exists() { direct } else { fallback.filter(|f| f.exists()).unwrap_or(direct) };
-            std::fs::read(&chosen).ok()
-        })
-    }
-
-    /// Parses OBJ text; `mtl(name)` returns the bytes of a material library
-    /// the OBJ names (or `None` when it cannot be found). `name` labels
-    /// errors and the scene.
-    pub fn parse_obj(obj: &[u8], name: &str, mtl: impl Fn(&Path) -> Option<Vec<u8>>) -> Result<Scene, SceneError> {
-        let path = Path::new(name);
-        let opts = tobj::LoadOptions { triangulate: true, single_index: false, ignore_points: true, ignore_lines: true };
-        let (models, mats) = tobj::load_obj_buf(&mut &obj[..], &opts, |p| match mtl(p) {
-            Some(b) if short_colour_line(&b) => Err(tobj::LoadError::MaterialParseError),
-            Some(b) => tobj::load_mtl_buf(&mut b.as_slice()),
-            None => Err(tobj::LoadError::OpenFileFailed),
-        })
-        .map_err(|e| SceneError::Obj(path.display().to_string(), e.to_string()))?;
-        let mats = mats.map_err(|e| SceneError::Obj(path.display().to_string(), format!("material library: {e}")))?;
-        let mut materials: Vec<Material> = mats
-            .iter()
-            .map(|m| {
-                let kd = m.diffuse.map(Vec3::from).unwrap_or(Vec3::splat(0.8));
-                let ke = m.emissive.map(Vec3::from).unwrap_or(Vec3::ZERO);
-                Material { albedo: kd, emission: ke }
-            })
-            .collect();
-        let default_mat = materials.len() as u32;
-        materials.push(Material { albedo: Vec3::splat(0.8), emission: Vec3::ZERO });
-        let mut triangles = Vec::new();
-        let mut material_of = Vec::new();
-        for m in &models {
-            let mesh = &m.mesh;
-            let mat = mesh.material_id.map_or(default_mat, |i| i as u32);
-            for f in mesh.indices.chunks_exact(3) {
-                let v = |i: u32| -> Result<Vec3, SceneError> {
-                    let i = i as usize * 3;
-                    mesh.positions
-                        .get(i..i + 3)
-                        .map(|p| Vec3::new(p[0], p[1], p[2]))
-                        .ok_or_else(|| SceneError::Obj(path.display().to_string(), format!("vertex index {} out of range", i / 3)))
-                };
-                triangles.push([v(f[0])?, v(f[1])?, v(f[2])?]);
-                material_of.push(mat);
-            }
-        }
-        let name = path.file_stem().map_or("obj".into(), |s| s.to_string_lossy().into_owned());
-        let mut scene = Scene {
-            name,
-            triangles,
-            material_of,
-            materials,
-            camera: Camera { position: Vec3::Z, target: Vec3::ZERO, up: Vec3::Y, vfov_deg: 40.0 },
-            primary: PrimaryLight::Directional { direction: -Vec3::Y, irradiance: Vec3::ONE },
-        };
-        if scene.triangles.is_empty() {
-            return Err(SceneError::Empty);
-        }
-        scene.frame_default_view();
-        scene.validate()?;
-        Ok(scene)
     }
 
     /// Sets the default camera and primary light for a loaded scene (see

@@ -200,11 +200,21 @@ fn v3(a: [f32; 3]) -> Vec3 {
 
 /// Splits every triangle into four at its edge midpoints, `levels` times.
 pub fn subdivide(tris: &[[Vec3; 3]], levels: u32) -> Vec<[Vec3; 3]> {
+    split_midpoints(tris, levels, |a, b| (a + b) * 0.5)
+}
+
+/// The vertex normals of [`subdivide`]d triangles (same order): each new
+/// vertex gets the normalised mean of its edge's two normals.
+pub fn subdivide_normals(normals: &[[Vec3; 3]], levels: u32) -> Vec<[Vec3; 3]> {
+    split_midpoints(normals, levels, |a, b| (a + b).try_normalize().unwrap_or(a))
+}
+
+fn split_midpoints(tris: &[[Vec3; 3]], levels: u32, mid: impl Fn(Vec3, Vec3) -> Vec3) -> Vec<[Vec3; 3]> {
     let mut cur = tris.to_vec();
     for _ in 0..levels {
         let mut next = Vec::with_capacity(cur.len() * 4);
         for [a, b, c] in cur {
-            let (ab, bc, ca) = ((a + b) * 0.5, (b + c) * 0.5, (c + a) * 0.5);
+            let (ab, bc, ca) = (mid(a, b), mid(b, c), mid(c, a));
             next.extend([[a, ab, ca], [ab, b, bc], [ca, bc, c], [ab, bc, ca]]);
         }
         cur = next;
@@ -226,17 +236,14 @@ impl SceneFile {
         let mut scene = Scene {
             name: Path::new(name).file_stem().map_or("scene".into(), |s| s.to_string_lossy().into_owned()),
             triangles: Vec::new(),
+            normals: Vec::new(),
             material_of: Vec::new(),
             materials: Vec::new(),
             camera: Scene::cornell_box().camera,
             primary: Scene::cornell_box().primary,
+            unsupported: Vec::new(),
         };
-        let append = |scene: &mut Scene, other: Scene, scale: f32, translate: [f32; 3]| {
-            let base = scene.materials.len() as u32;
-            scene.materials.extend(other.materials);
-            scene.triangles.extend(other.triangles.iter().map(|t| t.map(|v| v * scale + v3(translate))));
-            scene.material_of.extend(other.material_of.iter().map(|m| m + base));
-        };
+        let append = |scene: &mut Scene, other: Scene, scale: f32, translate: [f32; 3]| scene.append(other, scale, v3(translate));
         if f.geometry.is_empty() && f.emissive_mesh.is_empty() {
             return Err(bad("the scene needs at least one [[geometry]] or [[emissive_mesh]]".into()));
         }
@@ -267,6 +274,9 @@ impl SceneFile {
                 return Err(bad(format!("emissive_mesh {i}: emission must be finite and >= 0")));
             }
             let mut mesh = Scene::load_obj(&dir.join(&e.obj))?;
+            if mesh.has_vertex_normals() {
+                mesh.normals = subdivide_normals(&mesh.normals, e.subdivide);
+            }
             mesh.triangles = subdivide(&mesh.triangles, e.subdivide);
             mesh.material_of = vec![0; mesh.triangles.len()];
             mesh.materials = vec![Material { albedo: Vec3::splat(0.5), emission }];

@@ -92,6 +92,11 @@ slc_core::shared! {
         pub weight: vec3f,
         /// Padding.
         pub pad1: f32,
+        /// Unit geometric normal on the shading normal's side (ray offsets,
+        /// and lights behind the surface itself are not connected).
+        pub gnormal: vec3f,
+        /// Padding.
+        pub pad2: f32,
     }
 
     /// Per-pixel state of a path between `pt_extend` dispatches, 64 bytes.

@@ -2,19 +2,20 @@
 //! `light_update`, `bsh_refit` per level, then `bsh_reservoir` (BSH
 //! traversal into a k-slot reservoir, the picks RR-tested at their sampled
 //! points and weighted by `1/p · n/k`). Unshadowed, the counterpart of
-//! [`slc_cpu::direct::DirectLights`], which draws the same random numbers.
+//! the CPU backend's `slc_cpu::direct::DirectLights`, which draws the same
+//! random numbers.
 
 use crate::kernel::{bind_group, bind_layout, pipeline, read_back, storage, zeroed};
 use crate::lights::{GpuLightSet, WG};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use slc_core::range::RangeParams;
-use slc_cpu::direct::{DIRECT_K, Direct, DirectLights};
+use slc_scene::lights::{DIRECT_K, Direct, LightSet};
 use slc_shared_shaders::layout::{GpuGeoNode, GpuTriangle, NO_LIGHT, ShadeParams};
 use slc_shared_shaders::{Features, Kernel, generate};
 use wgpu::util::DeviceExt;
 
-/// The lights of a [`DirectLights`] on the GPU and the shading pipeline.
+/// The lights of a [`LightSet`] on the GPU and the shading pipeline.
 pub struct GpuDirect<'a> {
     gpu: &'a GpuContext,
     set: GpuLightSet,
@@ -28,7 +29,7 @@ pub struct GpuDirect<'a> {
 
 impl<'a> GpuDirect<'a> {
     /// Uploads the lights and their BSH.
-    pub fn new(gpu: &'a GpuContext, lights: &DirectLights) -> Result<Self, GpuError> {
+    pub fn new(gpu: &'a GpuContext, lights: &LightSet) -> Result<Self, GpuError> {
         let set = GpuLightSet::new(gpu, lights.lights(), lights.bounds(), lights.bsh(), &[])?;
         let features = Features { lights: set.types, reservoir_k: DIRECT_K as u32, workgroup_size: WG, ..Features::default() };
         let layout = bind_layout(gpu, "bsh_reservoir", 8, 1, false);
@@ -41,7 +42,8 @@ impl<'a> GpuDirect<'a> {
         Ok(GpuDirect { gpu, set, pipeline, layout, no_geometry, busy: std::sync::Mutex::new(()) })
     }
 
-    /// [`DirectLights::shade`] on the GPU.
+    /// Direct light at `points` (unit `normals`) for frame `frame` of
+    /// `seed`, number for number as the CPU's `DirectLights::shade`.
     pub fn shade(&self, points: &[Vec3], normals: &[Vec3], params: &RangeParams, seed: u32, frame: u32) -> Result<Vec<Direct>, GpuError> {
         if points.len() != normals.len() {
             return Err(GpuError::Setting(format!("{} points but {} normals", points.len(), normals.len())));

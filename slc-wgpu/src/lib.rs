@@ -9,8 +9,12 @@
 //!   and device loss into [`GpuError`]s.
 //! - [`vpl::GpuVpl`]: application A's shading and denoise on the GPU (random
 //!   ranges from the same ξ as the CPU, tiled culling per 8×8 interleaved
-//!   sub-image, SLC shading, cross-bilateral filter), with the CPU backend's
-//!   G-buffer, RSM and composition around it.
+//!   sub-image, SLC shading, cross-bilateral filter) on the G-buffer and
+//!   VPLs of a [`slc_scene::vpl::VplInputs`].
+//!
+//! The backend depends on slc-core, slc-shared-shaders and slc-scene only:
+//! it takes slc-scene data and implements the [`slc_scene::backend`]
+//! traits, as the CPU backend does.
 //!
 //! - [`pt::GpuPt`]: application B, a wavefront progressive path tracer
 //!   (`light_update`, `bsh_refit` per level, then `pt_extend` and
@@ -18,14 +22,18 @@
 //!   them.
 //!
 //! ```no_run
-//! use slc_cpu::scene::Scene;
-//! use slc_cpu::vpl::{VplContext, VplSettings};
-//! use slc_wgpu::{GpuContext, vpl::GpuVpl};
+//! use slc_scene::backend::PathTracer;
+//! use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings};
+//! use slc_scene::scene::Scene;
+//! use slc_wgpu::{GpuContext, pt::GpuPt};
 //!
 //! let gpu = GpuContext::new()?;
-//! let cpu = VplContext::new(&Scene::cornell_box(), 256, 256, 256, None)?;
-//! let frame = GpuVpl::new(&gpu, &cpu)?.render(&cpu, &VplSettings::default())?;
-//! println!("{}: {:.2} ms shading", gpu.describe(), frame.stats.shading_ms);
+//! let scene = PtScene::new(&Scene::cornell_box(), &[])?;
+//! let mut tracer = GpuPt::new(&gpu, &scene, 256, 256)?;
+//! let mut acc = PtRender::new(256, 256);
+//! let settings = PtSettings { method: PtMethod::SlcReservoir, ..PtSettings::default() };
+//! PathTracer::render(&mut tracer, &mut acc, &settings, 16)?;
+//! println!("{}: {:.2} ms for {} passes", gpu.describe(), acc.time_ms, acc.passes);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 #![deny(missing_docs)]

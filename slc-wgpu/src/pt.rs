@@ -25,7 +25,8 @@ use obvhs::BvhBuildParams;
 use obvhs::bvh2::builder::build_bvh2_from_tris;
 use obvhs::triangle::Triangle;
 use slc_core::range::RangeParams;
-use slc_cpu::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K};
+use slc_scene::backend::{PathTracer, Timing};
+use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K};
 use slc_shared_shaders::layout::{GpuGeoNode, GpuPathState, GpuPathVertex, GpuTriangle, NO_LIGHT, PtParams, ShadeParams};
 use slc_shared_shaders::{Features, Heuristic, Kernel, Selection, generate};
 use std::time::{Duration, Instant};
@@ -36,9 +37,10 @@ const MAX_GEO_DEPTH: u64 = 64;
 const MAX_DEPTH: u32 = 64;
 
 /// The geometry BVH as the kernels read it: binary nodes (children `first`
-/// and `first + 1`, leaves `count > 0`) and triangles in leaf order with
-/// their material and light; plus the tree depth.
-fn geometry(pts: &PtScene) -> (Vec<GpuGeoNode>, Vec<GpuTriangle>, u64) {
+/// and `first + 1`, leaves `count > 0`), triangles in leaf order with their
+/// material and light, their vertex normals (three per triangle, the same
+/// order; geometric ones where the scene has none); plus the tree depth.
+fn geometry(pts: &PtScene) -> (Vec<GpuGeoNode>, Vec<GpuTriangle>, Vec<[f32; 4]>, u64) {
     let scene = pts.scene();
     let tris: Vec<Triangle> = scene.triangles.iter().map(|t| Triangle { v0: t[0].into(), v1: t[1].into(), v2: t[2].into() }).collect();
     let bvh = build_bvh2_from_tris(&tris, BvhBuildParams::medium_build(), &mut Duration::default());
@@ -64,6 +66,7 @@ fn geometry(pts: &PtScene) -> (Vec<GpuGeoNode>, Vec<GpuTriangle>, u64) {
             }
         })
         .collect();
+    let normals = bvh.primitive_indices.iter().flat_map(|&i| scene.vertex_normals(i as usize).map(|n| [n.x, n.y, n.z, 0.0])).collect();
     let mut depth = 0u64;
     let mut stack = vec![(0usize, 1u64)];
     while let Some((i, d)) = stack.pop() {
@@ -75,7 +78,7 @@ fn geometry(pts: &PtScene) -> (Vec<GpuGeoNode>, Vec<GpuTriangle>, u64) {
             stack.push((n.first as usize + 1, d + 1));
         }
     }
-    (nodes, gpu_tris, depth)
+    (nodes, gpu_tris, normals, depth)
 }
 
 /// The methods the GPU path tracer runs, with their light selection.
@@ -116,20 +119,23 @@ impl<'a> GpuPt<'a> {
             return Err(GpuError::Setting(format!("image size {width}x{height} must be within 1..=16384 on each side")));
         }
         let pixels = width as u64 * height as u64;
-        let (geo_nodes, geo_tris, geo_depth) = geometry(pts);
+        let (geo_nodes, geo_tris, geo_normals, geo_depth) = geometry(pts);
         let lim = &gpu.limits;
         let max_binding = lim.max_storage_buffer_binding_size;
         gpu.require("max_storage_buffer_binding_size (geometry)", geo_tris.len() as u64 * 48, max_binding)?;
         gpu.require("max_storage_buffer_binding_size (path states)", pixels * 64, max_binding)?;
-        gpu.require("max_storage_buffers_per_shader_stage", 12, lim.max_storage_buffers_per_shader_stage as u64)?;
+        gpu.require("max_storage_buffers_per_shader_stage", 13, lim.max_storage_buffers_per_shader_stage as u64)?;
+        gpu.require("max_storage_buffer_binding_size (vertex normals)", geo_tris.len() as u64 * 48, max_binding)?;
         gpu.require("max_compute_workgroups_per_dimension (pixels)", pixels.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
         gpu.require("geometry BVH depth (64-entry traversal stack)", geo_depth, MAX_GEO_DEPTH)?;
-        let set = GpuLightSet::new(gpu, pts.lights(), pts.bounds(), pts.bsh(), &pts.power_table())?;
+        let ls = pts.light_set();
+        let set = GpuLightSet::new(gpu, ls.lights(), ls.bounds(), ls.bsh(), &ls.power_table())?;
         let base =
             Features { lights: set.types, reservoir_k: RESERVOIR_K as u32, workgroup_size: WG, heuristic: Heuristic::Power, ..Features::default() };
         let s = |label: &str, bytes: &[u8]| storage(gpu, label, bytes, wgpu::BufferUsages::empty());
         let geo_nodes_buf = s("geo nodes", bytemuck::cast_slice(&geo_nodes));
         let geo_tris_buf = s("geo tris", bytemuck::cast_slice(&geo_tris));
+        let geo_normals_buf = s("geo normals", bytemuck::cast_slice(&geo_normals));
         let albedo: Vec<[f32; 4]> = pts.scene().materials.iter().map(|m| [m.albedo.x, m.albedo.y, m.albedo.z, 0.0]).collect();
         let albedo_buf = s("albedo", bytemuck::cast_slice(&albedo));
         let rw = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::COPY_SRC;
@@ -152,7 +158,7 @@ impl<'a> GpuPt<'a> {
         };
         let extend = kernel(
             Kernel::PtExtend,
-            8,
+            9,
             3,
             &[
                 &pt_params.buffer,
@@ -163,6 +169,7 @@ impl<'a> GpuPt<'a> {
                 &geo_nodes_buf,
                 &geo_tris_buf,
                 &albedo_buf,
+                &geo_normals_buf,
                 &candidates,
                 &paths,
                 &vertices,
@@ -291,5 +298,22 @@ impl<'a> GpuPt<'a> {
         let sum: Vec<Vec3> = data.iter().map(|d| Vec3::new(d[0], d[1], d[2])).collect();
         acc.accumulate(&sum, passes, ms);
         Ok(timestamps)
+    }
+}
+
+impl PathTracer for GpuPt<'_> {
+    type Error = GpuError;
+
+    fn describe(&self) -> String {
+        self.gpu.describe()
+    }
+
+    fn supports(&self, method: PtMethod) -> bool {
+        SELECTIONS.iter().any(|&(m, _)| m == method)
+    }
+
+    fn render(&mut self, acc: &mut PtRender, settings: &PtSettings, passes: u32) -> Result<Timing, GpuError> {
+        let timestamps = GpuPt::render(self, acc, settings, passes)?;
+        Ok(if timestamps { Timing::GpuTimestamps } else { Timing::Wall })
     }
 }

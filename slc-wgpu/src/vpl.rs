@@ -1,13 +1,17 @@
 //! Application A on the GPU: the VPL pipeline's shading and denoise run in
 //! the `light_update`, `vpl_tiled` and `vpl_denoise` kernels of
-//! slc-shared-shaders; G-buffer, RSM and composition are the CPU backend's
-//! ([`slc_cpu::vpl::VplContext`]), so both backends shade the same inputs.
+//! slc-shared-shaders, on the G-buffer and VPLs of a
+//! [`slc_scene::vpl::VplInputs`] (whoever made them: the CPU backend ray
+//! casts them), so both backends shade the same inputs. [`GpuVpl`] is an
+//! [`IndirectShader`]; the frame's composition is the caller's.
 
 use crate::kernel::{Timer, bind_layout, pipeline, read_back, storage};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
+use slc_core::light::vpl_threshold_range2;
 use slc_core::range::random_range2;
-use slc_cpu::vpl::{PERIOD, Shaded, VplContext, VplFrame, VplMethod, VplSettings, vpl_threshold_range2};
+use slc_scene::backend::IndirectShader;
+use slc_scene::vpl::{PERIOD, Shaded, VplInputs, VplMethod, VplSettings};
 use slc_shared_shaders::layout::{FrameParams, GpuLight, LIGHT_VPL, VplParams};
 use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, generate};
 use std::time::Instant;
@@ -27,11 +31,14 @@ struct Layout {
     pipeline: wgpu::ComputePipeline,
 }
 
-/// GPU buffers and pipelines for one [`VplContext`] (one scene, size and VPL set).
+/// GPU buffers and pipelines for one [`VplInputs`] (one G-buffer and VPL set).
 pub struct GpuVpl<'a> {
     gpu: &'a GpuContext,
     width: u32,
     height: u32,
+    /// Pixels that see a surface.
+    valid: Vec<bool>,
+    min_d2: f32,
     gb_position: wgpu::Buffer,
     gb_normal: wgpu::Buffer,
     /// Interleaved layout: VPLs subset after subset, flux × P².
@@ -59,19 +66,19 @@ pub struct GpuVpl<'a> {
 }
 
 impl<'a> GpuVpl<'a> {
-    /// Uploads the G-buffer and VPLs of `cpu` and builds the pipelines.
+    /// Uploads the G-buffer and VPLs of `inputs` and builds the pipelines.
     /// Checks buffer, dispatch and workgroup-memory limits first. The tile
     /// light list holds up to [`TILE_LIST`] lights; larger subsets stream
     /// through it in chunks.
-    pub fn new(gpu: &'a GpuContext, cpu: &VplContext) -> Result<Self, GpuError> {
-        Self::with_tile_list(gpu, cpu, TILE_LIST)
+    pub fn new(gpu: &'a GpuContext, inputs: &VplInputs) -> Result<Self, GpuError> {
+        Self::with_tile_list(gpu, inputs, TILE_LIST)
     }
 
     /// [`GpuVpl::new`] with a tile light list of `capacity` lights (at
     /// least 1): smaller lists take less workgroup memory and more chunks.
-    pub fn with_tile_list(gpu: &'a GpuContext, cpu: &VplContext, capacity: u32) -> Result<Self, GpuError> {
-        let gb = cpu.gbuffer();
-        let v = cpu.vpls();
+    pub fn with_tile_list(gpu: &'a GpuContext, inputs: &VplInputs, capacity: u32) -> Result<Self, GpuError> {
+        let gb = &inputs.gbuffer;
+        let v = &inputs.vpls;
         let (w, h) = (gb.width, gb.height);
         let n = v.len() as u64;
         let subsets = (PERIOD * PERIOD) as usize;
@@ -109,7 +116,7 @@ impl<'a> GpuVpl<'a> {
             intensity: v.flux[i] * scale,
             ies_base: 0,
         };
-        let order: Vec<usize> = (0..subsets).flat_map(|s| cpu.subset_members(s)).collect();
+        let order: Vec<usize> = (0..subsets).flat_map(|s| inputs.subset_members(s)).collect();
         let scale = subsets as f32;
         let lights: Vec<GpuLight> = order.iter().map(|&i| vpl(i, scale)).collect();
         let ids: Vec<u32> = order.iter().map(|&i| i as u32).collect();
@@ -165,6 +172,8 @@ impl<'a> GpuVpl<'a> {
             gpu,
             width: w,
             height: h,
+            valid: (0..gb.position.len()).map(|i| gb.valid(i)).collect(),
+            min_d2: inputs.min_d2,
             gb_position: storage(gpu, "gb_position", bytemuck::cast_slice(&pos), wgpu::BufferUsages::empty()),
             gb_normal: storage(gpu, "gb_normal", bytemuck::cast_slice(&nrm), wgpu::BufferUsages::empty()),
             lights: storage(gpu, "lights", bytemuck::cast_slice(&lights), wgpu::BufferUsages::empty()),
@@ -196,8 +205,8 @@ impl<'a> GpuVpl<'a> {
     /// the host. `shading_ms` is GPU time from timestamps where the adapter
     /// has them ([`GpuContext::timestamps`]), else the wall time of the
     /// submitted kernels.
-    pub fn shade(&self, cpu: &VplContext, settings: &VplSettings) -> Result<Shaded, GpuError> {
-        let params = cpu.check(settings).map_err(|e| GpuError::Setting(e.to_string()))?;
+    pub fn shade(&self, settings: &VplSettings) -> Result<Shaded, GpuError> {
+        let params = settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
         let _frame = self.frame.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
         let gpu = self.gpu;
         let (_, layout) = self.tiled.iter().find(|(m, _)| *m == settings.method).ok_or(GpuError::Setting("unknown method".into()))?;
@@ -225,7 +234,7 @@ impl<'a> GpuVpl<'a> {
             contents: bytemuck::bytes_of(&frame),
             usage: wgpu::BufferUsages::UNIFORM,
         });
-        let vp = VplParams { width: self.width, height: self.height, lights_per_subset: layout.per_subset, min_d2: cpu.min_d2() };
+        let vp = VplParams { width: self.width, height: self.height, lights_per_subset: layout.per_subset, min_d2: self.min_d2 };
         let vp_buf = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("vpl params"),
             contents: bytemuck::bytes_of(&vp),
@@ -303,22 +312,27 @@ impl<'a> GpuVpl<'a> {
         }
 
         let data: Vec<[f32; 4]> = read_back(gpu, if denoise { &self.filtered } else { &self.irradiance }, &self.readback)?;
-        let gb = cpu.gbuffer();
         let mut irradiance = Vec::with_capacity(data.len());
         let mut kept = Vec::with_capacity(data.len());
         let mut evaluations = 0u64;
         for (i, d) in data.iter().enumerate() {
-            let valid = gb.valid(i);
+            let valid = self.valid[i];
             irradiance.push(if valid { Vec3::new(d[0], d[1], d[2]) } else { Vec3::ZERO });
             kept.push(if valid { d[3] as u32 } else { 0 });
             evaluations += valid as u64 * d[3] as u64;
         }
         Ok(Shaded { irradiance, kept, evaluations, shading_ms, denoised_ms })
     }
+}
 
-    /// A whole frame: GPU shading and denoise, then the CPU's composition.
-    pub fn render(&self, cpu: &VplContext, settings: &VplSettings) -> Result<VplFrame, GpuError> {
-        let shaded = self.shade(cpu, settings)?;
-        Ok(cpu.finish(shaded, settings))
+impl IndirectShader for GpuVpl<'_> {
+    type Error = GpuError;
+
+    fn describe(&self) -> String {
+        self.gpu.describe()
+    }
+
+    fn shade(&self, settings: &VplSettings) -> Result<Shaded, GpuError> {
+        GpuVpl::shade(self, settings)
     }
 }

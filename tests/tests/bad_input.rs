@@ -7,9 +7,10 @@ use slc_core::glam::Vec3;
 use slc_core::ies::IesProfile;
 use slc_core::light::{LightBound, PointLight, SpotLight, TriangleLight, Vpl};
 use slc_core::range::{RangeParams, Xi};
-use slc_cpu::scene::Scene;
-use slc_cpu::scene_file::SceneFile;
-use slc_cpu::vpl::{VplContext, VplMethod, VplSettings};
+use slc_cpu::vpl::VplContext;
+use slc_scene::scene::Scene;
+use slc_scene::scene_file::SceneFile;
+use slc_scene::vpl::{VplMethod, VplSettings};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::Path;
 
@@ -134,23 +135,29 @@ fn renderer_settings() {
 #[test]
 fn path_tracer_and_direct_light_settings() {
     use slc_cpu::direct::DirectLights;
-    use slc_cpu::pt::{PtMethod, PtRender, PtScene, PtSettings};
-    rejects("no direct lights", "no lights", || DirectLights::new(Vec::new()).map(|_| ()));
+    use slc_cpu::pt::CpuPathTracer;
+    use slc_scene::lights::LightSet;
+    use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings};
+    rejects("no direct lights", "no lights", || LightSet::new(Vec::new()).map(|_| ()));
     let light = slc_core::light::Light::Point(PointLight::new(Vec3::ZERO, Vec3::ONE).unwrap());
     let params = RangeParams::new(0.1, 1.0).unwrap();
     let l2 = light.clone();
     rejects("points vs normals", "normals", move || {
-        DirectLights::new(vec![l2]).and_then(|mut d| d.shade(&[Vec3::ONE], &[], &params, 1, 0)).map(|_| ())
+        LightSet::new(vec![l2]).and_then(|set| DirectLights::new(&set).shade(&[Vec3::ONE], &[], &params, 1, 0)).map(|_| ())
     });
     let scene = Scene::cornell_box();
     for b in BAD {
         rejects("pt error bound", "error bound", || {
-            let mut pts = PtScene::new(&scene, &[]).unwrap();
+            let mut pts = CpuPathTracer::new(&PtScene::new(&scene, &[]).unwrap());
             pts.render(&mut PtRender::new(4, 4), &PtSettings { error_bound: b, ..PtSettings::default() }, 1)
         });
     }
     rejects("pt depth", "depth", || {
-        PtScene::new(&scene, &[]).unwrap().render(&mut PtRender::new(4, 4), &PtSettings { max_depth: 0, ..PtSettings::default() }, 1)
+        CpuPathTracer::new(&PtScene::new(&scene, &[]).unwrap()).render(
+            &mut PtRender::new(4, 4),
+            &PtSettings { max_depth: 0, ..PtSettings::default() },
+            1,
+        )
     });
     let Some(g) = slc_tests::gpu() else { return };
     let pts = PtScene::new(&scene, &[]).unwrap();
@@ -165,7 +172,7 @@ fn path_tracer_and_direct_light_settings() {
         "--backend cpu",
         AssertUnwindSafe(|| gpt.render(&mut PtRender::new(4, 4), &PtSettings { method: PtMethod::LightBvh, ..PtSettings::default() }, 1)),
     );
-    let d = DirectLights::new(vec![light]).unwrap();
+    let d = LightSet::new(vec![light]).unwrap();
     let gd = slc_wgpu::direct::GpuDirect::new(g, &d).unwrap();
     rejects("gpu points vs normals", "normals", AssertUnwindSafe(|| gd.shade(&[Vec3::ONE, Vec3::ZERO], &[Vec3::Y], &params, 1, 0)));
 }

@@ -29,6 +29,7 @@ use slc_core::ies::IesProfile;
 use slc_core::light::{IesLight, Light, PointLight, SpotLight, TriangleLight};
 use slc_core::range::RangeParams;
 use slc_cpu::direct::DirectLights;
+use slc_scene::lights::LightSet;
 use slc_tests::{gpu, shared_data};
 use slc_wgpu::direct::GpuDirect;
 use std::sync::{Arc, OnceLock};
@@ -92,8 +93,9 @@ fn compare(seed: u32, n_lights: usize, log_intensity: (f32, f32), eps: f32, fram
         lights.push(l);
     }
     let params = RangeParams::new(eps, 1.0).unwrap();
-    let mut cpu = DirectLights::new(lights).unwrap();
-    let gpu_lights = GpuDirect::new(g, &cpu).unwrap();
+    let set = LightSet::new(lights).unwrap();
+    let mut cpu = DirectLights::new(&set);
+    let gpu_lights = GpuDirect::new(g, &set).unwrap();
     // Points: random ones, and ones on a light's threshold sphere r_t (where
     // p = 1 turns into p < 1) and at 0.999× and 1.001× of it.
     let mut points = Vec::new();
@@ -102,7 +104,7 @@ fn compare(seed: u32, n_lights: usize, log_intensity: (f32, f32), eps: f32, fram
         let x = if k % 4 == 0 {
             r.v() * 1.5
         } else {
-            let l = &cpu.lights()[(r.u() * n_lights as f32) as usize % n_lights];
+            let l = &set.lights()[(r.u() * n_lights as f32) as usize % n_lights];
             let rt = params.threshold_range2(l.peak()).sqrt().min(1e3);
             let f = [1.0, 1.0, 0.999, 1.001][k % 4];
             l.bound().center + r.dir() * rt * f

@@ -20,8 +20,9 @@
 use glam::Vec3;
 use slc_core::ies::IesProfile;
 use slc_core::light::{IesLight, Light, PointLight, SpotLight};
-use slc_cpu::pt::{PtMethod, PtRender, PtScene, PtSettings};
-use slc_cpu::scene::Scene;
+use slc_cpu::pt::CpuPathTracer;
+use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings};
+use slc_scene::scene::Scene;
 use slc_tests::{gpu, shared_data};
 use slc_wgpu::pt::GpuPt;
 use std::sync::Arc;
@@ -99,8 +100,9 @@ fn all_finite(p: &[Vec<f64>]) -> bool {
 fn run(method: PtMethod, eps: f32, intensity: f32, n: u32) -> Option<(Stats, Stats, Stats)> {
     let g = gpu()?;
     let (s, lights) = scene(intensity);
-    let mut pts = PtScene::new(&s, &lights).unwrap();
-    let gpt = GpuPt::new(g, &pts, W, H).unwrap();
+    let scene = PtScene::new(&s, &lights).unwrap();
+    let gpt = GpuPt::new(g, &scene, W, H).unwrap();
+    let mut pts = CpuPathTracer::new(&scene);
     let set = PtSettings { method, error_bound: eps, seed: 3, ..PtSettings::default() };
     let gp = passes(|acc| _ = gpt.render(acc, &set, 1).unwrap(), n);
     let cp = passes(|acc| pts.render(acc, &set, 1).unwrap(), n);

@@ -17,8 +17,9 @@
 
 use glam::Vec3;
 use proptest::prelude::*;
-use slc_cpu::scene::Scene;
-use slc_cpu::vpl::{Shaded, VplContext, VplMethod, VplSettings};
+use slc_cpu::vpl::VplContext;
+use slc_scene::scene::Scene;
+use slc_scene::vpl::{Shaded, VplMethod, VplSettings};
 use slc_tests::gpu;
 use slc_wgpu::vpl::GpuVpl;
 use std::sync::OnceLock;
@@ -32,7 +33,7 @@ fn cpu_ctx() -> &'static VplContext {
 fn gpu_vpl() -> Option<&'static GpuVpl<'static>> {
     static G: OnceLock<GpuVpl<'static>> = OnceLock::new();
     let g = gpu()?;
-    Some(G.get_or_init(|| GpuVpl::new(g, cpu_ctx()).unwrap()))
+    Some(G.get_or_init(|| GpuVpl::new(g, cpu_ctx().inputs()).unwrap()))
 }
 
 fn settings(method: VplMethod) -> VplSettings {
@@ -72,7 +73,7 @@ fn shading_matches_cpu_for_every_method() {
     let ctx = cpu_ctx();
     for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None, VplMethod::Reference] {
         let s = settings(method);
-        let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(ctx, &s).unwrap());
+        let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(&s).unwrap());
         let c = compare(&a, &b, ctx);
         eprintln!(
             "{}: {} pixels, {} with a differing keep decision, worst relative irradiance difference {:.2e}",
@@ -101,7 +102,7 @@ proptest! {
             method: if clamp { VplMethod::Clamp } else { VplMethod::Slc },
             seed, frame, error_bound: 10f32.powf(log_eps), range, denoise: false, ..VplSettings::default()
         };
-        let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(ctx, &s).unwrap());
+        let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(&s).unwrap());
         let c = compare(&a, &b, ctx);
         prop_assert!(c.kept_differs * 200 <= c.pixels, "{} of {} pixels differ", c.kept_differs, c.pixels);
         prop_assert!(c.worst_rel <= 1e-4, "relative difference {}", c.worst_rel);
@@ -117,8 +118,8 @@ fn images_match_end_to_end() {
     for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
         let s = VplSettings { denoise: true, ..settings(method) };
         let a = ctx.render(&s).unwrap().image;
-        let b = gv.render(ctx, &s).unwrap().image;
-        assert!(gv.shade(ctx, &s).unwrap().denoised_ms.is_some(), "the GPU denoised");
+        let b = ctx.finish(gv.shade(&s).unwrap(), &s).image;
+        assert!(gv.shade(&s).unwrap().denoised_ms.is_some(), "the GPU denoised");
         let rmse = a.rmse(&b);
         eprintln!("{}: end-to-end RMSE(CPU, GPU) = {rmse:.3e}, mean {:.3e}", method.name(), a.mean());
         assert!(b.is_finite());
@@ -132,14 +133,13 @@ fn images_match_end_to_end() {
 #[test]
 fn gpu_expectation_equals_unculled() {
     let Some(gv) = gpu_vpl() else { return };
-    let ctx = cpu_ctx();
-    let none = gv.shade(ctx, &settings(VplMethod::None)).unwrap();
+    let none = gv.shade(&settings(VplMethod::None)).unwrap();
     let fixed = |x: f32| VplSettings { fixed_xi: Some(x), ..settings(VplMethod::Slc) };
-    let all = gv.shade(ctx, &fixed(slc_core::range::Xi::MAX.get())).unwrap();
+    let all = gv.shade(&fixed(slc_core::range::Xi::MAX.get())).unwrap();
     const M: usize = 128;
     let mut mean = vec![Vec3::ZERO.as_dvec3(); none.irradiance.len()];
     for j in 0..M {
-        let s = gv.shade(ctx, &fixed((j as f32 + 0.5) / M as f32)).unwrap();
+        let s = gv.shade(&fixed((j as f32 + 0.5) / M as f32)).unwrap();
         for (m, e) in mean.iter_mut().zip(&s.irradiance) {
             *m += e.as_dvec3() / M as f64;
         }
@@ -161,19 +161,19 @@ fn gpu_expectation_equals_unculled() {
 fn chunked_tile_lists_match_cpu() {
     let Some(g) = gpu() else { return };
     let ctx = VplContext::new(&Scene::cornell_box(), 48, 32, 64, None).unwrap();
-    let gv = GpuVpl::with_tile_list(g, &ctx, 16).unwrap();
+    let gv = GpuVpl::with_tile_list(g, ctx.inputs(), 16).unwrap();
     for method in [VplMethod::Slc, VplMethod::Clamp] {
         let s = settings(method);
-        let c = compare(&ctx.shade(&s).unwrap(), &gv.shade(&ctx, &s).unwrap(), &ctx);
+        let c = compare(&ctx.shade(&s).unwrap(), &gv.shade(&s).unwrap(), &ctx);
         eprintln!("{} chunked: {} pixels, kept differs at {}, worst relative {:.2e}", method.name(), c.pixels, c.kept_differs, c.worst_rel);
         assert!(c.kept_differs * 200 <= c.pixels && c.worst_rel <= 1e-4, "{}: {} differing, worst {}", method.name(), c.kept_differs, c.worst_rel);
     }
     // 262,144 VPLs: 4,096 per subset, two chunks of the default list (the
     // whole subset once exceeded the 16 KiB of workgroup memory).
     let ctx = VplContext::new(&Scene::cornell_box(), 16, 16, 512, None).unwrap();
-    let gv = GpuVpl::new(g, &ctx).unwrap();
+    let gv = GpuVpl::new(g, ctx.inputs()).unwrap();
     let s = settings(VplMethod::Slc);
-    let c = compare(&ctx.shade(&s).unwrap(), &gv.shade(&ctx, &s).unwrap(), &ctx);
+    let c = compare(&ctx.shade(&s).unwrap(), &gv.shade(&s).unwrap(), &ctx);
     eprintln!("262,144 VPLs: {} pixels, kept differs at {}, worst relative {:.2e}", c.pixels, c.kept_differs, c.worst_rel);
     assert!(c.kept_differs * 200 <= c.pixels.max(200) && c.worst_rel <= 1e-4);
 }
@@ -189,7 +189,7 @@ fn hard_cases_agree() {
     let xi_max = slc_core::range::Xi::MAX.get();
     for (eps, xi) in [(1e-30f32, None), (1e30, None), (1e30, Some(xi_max)), (0.004, Some(0.0)), (0.004, Some(xi_max)), (f32::MAX, Some(xi_max))] {
         let s = VplSettings { error_bound: eps, fixed_xi: xi, ..settings(VplMethod::Slc) };
-        let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(ctx, &s).unwrap());
+        let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(&s).unwrap());
         assert!(b.irradiance.iter().all(|e| e.is_finite()), "eps {eps} xi {xi:?}: non-finite GPU pixel");
         let c = compare(&a, &b, ctx);
         eprintln!("eps {eps:e}, xi {xi:?}: {} of {} pixels differ in keep decisions, worst rel {:.1e}", c.kept_differs, c.pixels, c.worst_rel);

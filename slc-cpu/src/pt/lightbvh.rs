@@ -50,24 +50,30 @@ fn safe_sqrt(x: f32) -> f32 {
 }
 
 impl LightBounds {
-    /// Bounds of one light: a triangle's AABB and normal (`θ_o = 0`,
-    /// `θ_e = π/2`, `φ = π L A`); a point or IES light emits over the whole
-    /// sphere (`θ_o = π`, `φ = 4π I_max`); a spot light around its axis
-    /// (`θ_o = θ_inner`, `θ_e = θ_outer − θ_inner`, `φ = 4π I₀`), as pbrt-v4.
-    pub fn of_light(l: &Light) -> LightBounds {
-        let peak = l.peak().max_element();
-        let point = |p: Vec3, w: Vec3, cos_o: f32, cos_e: f32| LightBounds { min: p, max: p, phi: 4.0 * PI * peak, w, cos_o, cos_e };
+    /// Bounds of one light of emitted power `power` ([`Light::power`], the
+    /// formula power sampling uses too): a triangle's AABB and normal
+    /// (`θ_o = 0`, `θ_e = π/2`); a point or IES light emits over the whole
+    /// sphere (`θ_o = π`); a spot light around its axis (`θ_o = θ_inner`,
+    /// `θ_e = θ_outer − θ_inner`), as pbrt-v4. `φ` is the max channel of
+    /// `power`. pbrt-v4 gives spot and goniometric lights `φ = 4π I_max`
+    /// (the power of a point light of the peak intensity) instead; slc uses
+    /// their true emitted power so that the two baselines weigh every light
+    /// alike, at the price of under-weighting a narrow spot or a peaked IES
+    /// light inside its beam, relative to pbrt.
+    pub fn of_light(l: &Light, power: Vec3) -> LightBounds {
+        let phi = power.max_element();
+        let point = |p: Vec3, w: Vec3, cos_o: f32, cos_e: f32| LightBounds { min: p, max: p, phi, w, cos_o, cos_e };
         match l {
             Light::Triangle(t) => {
                 let [a, b, c] = t.vertices();
-                LightBounds { min: a.min(b).min(c), max: a.max(b).max(c), phi: PI * peak, w: t.normal(), cos_o: 1.0, cos_e: 0.0 }
+                LightBounds { min: a.min(b).min(c), max: a.max(b).max(c), phi, w: t.normal(), cos_o: 1.0, cos_e: 0.0 }
             }
             Light::Spot(s) => {
                 let (cos_outer, cos_inner) = s.cone_cosines();
                 let cos_e = (cos_outer.clamp(-1.0, 1.0).acos() - cos_inner.clamp(-1.0, 1.0).acos()).cos();
                 point(s.position(), s.direction(), cos_inner, cos_e)
             }
-            Light::Vpl(v) => LightBounds { min: v.position(), max: v.position(), phi: PI * peak, w: v.normal(), cos_o: 1.0, cos_e: 0.0 },
+            Light::Vpl(v) => LightBounds { min: v.position(), max: v.position(), phi, w: v.normal(), cos_o: 1.0, cos_e: 0.0 },
             Light::Point(_) | Light::Ies(_) => point(l.bound().center, Vec3::Z, -1.0, 0.0),
         }
     }
@@ -99,7 +105,11 @@ impl LightBounds {
         let pc = self.centroid();
         let diag = (self.max - self.min).length();
         let dist2 = p.distance_squared(pc);
-        let d2 = dist2.max(0.5 * diag);
+        // pbrt-v4 clamps `d² = max(d², |diagonal| / 2)`: a squared distance
+        // against an unsquared length, which depends on the scene's units.
+        // The intent is "no closer than the box's radius", so slc clamps
+        // with the squared radius `(|diagonal| / 2)²`.
+        let d2 = dist2.max(0.25 * diag * diag);
         let wi = (p - pc).normalize_or_zero();
         let cos_w = self.w.dot(wi);
         let sin_w = safe_sqrt(1.0 - cos_w * cos_w);
@@ -185,10 +195,11 @@ impl LightBvh {
     /// Builds the tree over `lights` (at least one) top-down by the
     /// surface-area-orientation heuristic; an explicit stack keeps deep
     /// trees off the call stack. Lights of zero power are left out (they
-    /// are never sampled and their pmf is 0).
-    pub fn new(lights: &[Light]) -> LightBvh {
+    /// are never sampled and their pmf is 0). `power` holds each light's
+    /// emitted power ([`slc_scene::lights::LightSet::power`]).
+    pub fn new(lights: &[Light], power: &[Vec3]) -> LightBvh {
         let mut items: Vec<(u32, LightBounds)> =
-            lights.iter().enumerate().map(|(i, l)| (i as u32, LightBounds::of_light(l))).filter(|(_, b)| b.phi > 0.0).collect();
+            lights.iter().zip(power).enumerate().map(|(i, (l, &p))| (i as u32, LightBounds::of_light(l, p))).filter(|(_, b)| b.phi > 0.0).collect();
         let mut nodes: Vec<Node> = Vec::with_capacity(2 * items.len());
         let mut parent: Vec<u32> = Vec::with_capacity(2 * items.len());
         let mut leaf_of_light = vec![u32::MAX; lights.len()];
@@ -346,7 +357,7 @@ mod tests {
     #[test]
     fn pmf_matches_sampling_and_covers_every_contributing_light() {
         let ls = lights();
-        let bvh = LightBvh::new(&ls);
+        let bvh = LightBvh::new(&ls, &slc_core::light::emitted_powers(&ls));
         for (p, n) in [
             (Vec3::splat(2.0), Vec3::Y),
             (Vec3::new(-1.0, 0.5, 3.0), Vec3::X),
@@ -386,9 +397,10 @@ mod tests {
     fn importance_prefers_near_and_facing_lights() {
         let t = |z: f32, up: bool| {
             let (b, c) = if up { (Vec3::X, Vec3::Y) } else { (Vec3::Y, Vec3::X) };
-            LightBounds::of_light(&Light::Triangle(
+            let l = Light::Triangle(
                 TriangleLight::new(Vec3::new(0.0, 0.0, z), Vec3::new(0.0, 0.0, z) + b * 0.1, Vec3::new(0.0, 0.0, z) + c * 0.1, Vec3::ONE).unwrap(),
-            ))
+            );
+            LightBounds::of_light(&l, l.power())
         };
         let p = Vec3::new(0.05, 0.05, 5.0);
         assert!(t(1.0, true).importance(p, Vec3::NEG_Z) < t(4.0, true).importance(p, Vec3::NEG_Z));
@@ -408,7 +420,7 @@ mod tests {
     fn degenerate_sets_build_balanced_trees() {
         // 4,096 coincident point lights: no axis splits, so halves.
         let ls: Vec<Light> = (0..4096).map(|_| Light::Point(PointLight::new(Vec3::ONE, Vec3::ONE).unwrap())).collect();
-        let bvh = LightBvh::new(&ls);
+        let bvh = LightBvh::new(&ls, &slc_core::light::emitted_powers(&ls));
         let total: f32 = (0..ls.len()).map(|l| bvh.pmf(Vec3::ZERO, Vec3::ZERO, l)).sum();
         assert!((total - 1.0).abs() < 1e-3);
         assert!((bvh.pmf(Vec3::ZERO, Vec3::ZERO, 7) - 1.0 / 4096.0).abs() < 1e-7);

@@ -28,189 +28,63 @@
 //! are delta lights (weight 1).
 
 pub mod lightbvh;
-pub mod sampler;
 
-use crate::RenderError;
 use crate::geometry::Geometry;
-use crate::image::Image;
-use crate::scene::Scene;
 use glam::Vec3;
 use lightbvh::LightBvh;
 use rand_core::RngCore;
 use rand_pcg::Pcg32;
 use rayon::prelude::*;
-use sampler::AliasTable;
 use slc_core::bsh::Bsh;
-use slc_core::light::{Light, LightBound, TriangleLight, connection_factor};
+use slc_core::light::{Light, connection_factor};
 use slc_core::mis::{cosine_direction, cosine_pdf, lambert_brdf, light_strategy_pdf, mis_power};
 use slc_core::path::path_survival;
 use slc_core::range::{RangeParams, random_range2, slc_keep};
 use slc_core::reservoir::{Reservoir, reservoir_weight};
 use slc_core::sphere::Sphere;
 use slc_core::xi::{xi_for, xi_from_bits};
+use slc_scene::RenderError;
+use slc_scene::backend::{PathTracer, Timing};
+use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K};
 use std::time::Instant;
 
-/// Reservoir slots of `slc-reservoir`.
-pub const RESERVOIR_K: usize = 8;
-
-/// Light selection for next-event estimation.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum PtMethod {
-    /// Stochastic light culling over the BSH, every candidate evaluated.
-    Slc,
-    /// Stochastic light culling with a k-slot reservoir over the candidates.
-    SlcReservoir,
-    /// One light, uniformly.
-    Uniform,
-    /// One light, in proportion to its power.
-    Power,
-    /// One light, by light-BVH importance sampling.
-    LightBvh,
-}
-
-impl PtMethod {
-    /// Name on the command line and in reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            PtMethod::Slc => "slc",
-            PtMethod::SlcReservoir => "slc-reservoir",
-            PtMethod::Uniform => "uniform",
-            PtMethod::Power => "power",
-            PtMethod::LightBvh => "lightbvh",
-        }
-    }
-
-    /// Every method, in report order.
-    pub const ALL: [PtMethod; 5] = [PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::Uniform, PtMethod::Power, PtMethod::LightBvh];
-}
-
-/// Settings of a path-traced render.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PtSettings {
-    /// NEE method.
-    pub method: PtMethod,
-    /// SLC error bound ε.
-    pub error_bound: f32,
-    /// Exposure E (error bound).
-    pub exposure: f32,
-    /// Seed.
-    pub seed: u32,
-    /// Longest path (vertices after the camera).
-    pub max_depth: u32,
-}
-
-impl Default for PtSettings {
-    fn default() -> Self {
-        // ε = 0.3: each in-range light costs a shadow ray, so a larger bound
-        // (fewer, more heavily weighted candidates) wins at equal time. In the
-        // bunny scenes (docs/pt-bench-*.json) slc-reservoir's equal-time RMSE
-        // was 0.035 at ε = 0.03, 0.026 at 0.1, 0.022 at 0.3 and 1.0.
-        PtSettings { method: PtMethod::Slc, error_bound: 0.3, exposure: 1.0, seed: 1, max_depth: 8 }
-    }
-}
-
-/// A scene ready to path trace: geometry, lights, the BSH over them.
-pub struct PtScene {
-    scene: Scene,
+/// The CPU path tracer over a [`PtScene`]: the scene's geometry in a BVH,
+/// the light BVH of the `lightbvh` baseline, and a BSH of its own that each
+/// pass refits to that pass's ranges.
+pub struct CpuPathTracer {
+    pts: PtScene,
     geo: Geometry,
-    lights: Vec<Light>,
-    bounds: Vec<LightBound>,
-    /// Light index of each emissive triangle (u32::MAX for others).
-    light_of_triangle: Vec<u32>,
-    power: AliasTable,
     light_bvh: LightBvh,
     bsh: Bsh,
     /// The scene's bounding-box diagonal (ray offsets scale with it).
     diag: f32,
 }
 
-impl PtScene {
-    /// Emissive triangles become triangle lights; `extra` lights (point,
-    /// spot, IES) join them in one BSH. An emissive triangle of zero area is
-    /// an error.
-    pub fn new(scene: &Scene, extra: &[Light]) -> Result<PtScene, RenderError> {
-        scene.validate()?;
-        let mut lights = Vec::new();
-        let mut light_of_triangle = vec![u32::MAX; scene.triangles.len()];
-        for (i, t) in scene.triangles.iter().enumerate() {
-            let e = scene.materials[scene.material_of[i] as usize].emission;
-            if e.max_element() > 0.0 {
-                let l = TriangleLight::new(t[0], t[1], t[2], e).map_err(|err| RenderError::Setting(format!("emissive triangle {i}: {err}")))?;
-                light_of_triangle[i] = lights.len() as u32;
-                lights.push(Light::Triangle(l));
-            }
-        }
-        lights.extend(extra.iter().cloned());
-        if lights.is_empty() {
-            return Err(RenderError::Setting("the scene has no light (no emissive triangle, no point/spot/IES light)".into()));
-        }
-        let bounds: Vec<LightBound> = lights.iter().map(Light::bound).collect();
-        let bsh = Bsh::build(&bounds).map_err(|e| RenderError::Setting(e.to_string()))?;
-        let power = AliasTable::new(&lights.iter().map(light_power).collect::<Vec<f64>>());
-        let light_bvh = LightBvh::new(&lights);
-        Ok(PtScene {
-            scene: scene.clone(),
+impl CpuPathTracer {
+    /// Builds the geometry BVH and the light BVH of `pts`.
+    pub fn new(pts: &PtScene) -> CpuPathTracer {
+        let scene = pts.scene();
+        CpuPathTracer {
             geo: Geometry::new(&scene.triangles),
-            lights,
-            bounds,
-            light_of_triangle,
-            power,
-            light_bvh,
-            bsh,
+            light_bvh: LightBvh::new(pts.lights(), pts.light_set().power()),
+            bsh: pts.light_set().bsh().clone(),
             diag: scene.diagonal(),
-        })
+            pts: pts.clone(),
+        }
+    }
+
+    /// The prepared scene.
+    pub fn scene(&self) -> &PtScene {
+        &self.pts
     }
 
     /// Number of lights.
     pub fn light_count(&self) -> usize {
-        self.lights.len()
+        self.pts.light_count()
     }
 
-    /// The scene.
-    pub fn scene(&self) -> &Scene {
-        &self.scene
-    }
-
-    /// The lights, as text (for cache keys).
-    pub fn lights_debug(&self) -> String {
-        format!("{:?}", self.lights)
-    }
-
-    /// The lights, in BSH light-index order.
-    pub fn lights(&self) -> &[Light] {
-        &self.lights
-    }
-
-    /// Each light's bound (centre and extent `R` of its range sphere).
-    pub fn bounds(&self) -> &[LightBound] {
-        &self.bounds
-    }
-
-    /// The BSH over the lights (as built; `render` refits it per pass).
-    pub fn bsh(&self) -> &Bsh {
-        &self.bsh
-    }
-
-    /// The `power` baseline's alias table per light, as the GPU reads it:
-    /// `(keep probability, alias index as f32 bits, pmf, 0)`.
-    pub fn power_table(&self) -> Vec<[f32; 4]> {
-        self.power.entries().map(|(p, a, pdf)| [p as f32, f32::from_bits(a as u32), pdf as f32, 0.0]).collect()
-    }
-
-    /// Light index of each scene triangle (`u32::MAX` when it does not emit).
-    pub fn light_of_triangle(&self) -> &[u32] {
-        &self.light_of_triangle
-    }
-}
-
-/// Emitted power used by the `power` method (max channel): triangle `π L A`,
-/// point `4π I`, spot and IES by their peak over a hemisphere `2π I_max`.
-fn light_power(l: &Light) -> f64 {
-    let peak = l.peak().max_element() as f64;
-    match l {
-        Light::Triangle(_) => std::f64::consts::PI * peak,
-        Light::Point(_) => 4.0 * std::f64::consts::PI * peak,
-        _ => 2.0 * std::f64::consts::PI * peak,
+    fn lights(&self) -> &[Light] {
+        self.pts.lights()
     }
 }
 
@@ -222,90 +96,40 @@ struct Pass {
     spheres: Vec<Sphere>,
 }
 
-/// Accumulated progressive render.
-pub struct PtRender {
-    /// Sum of per-pass radiance.
-    sum: Vec<Vec3>,
-    /// Passes done.
-    pub passes: u32,
-    /// Time spent (ms).
-    pub time_ms: f64,
-    width: u32,
-    height: u32,
-}
-
-impl PtRender {
-    /// An empty accumulation.
-    pub fn new(width: u32, height: u32) -> Self {
-        PtRender { sum: vec![Vec3::ZERO; width as usize * height as usize], passes: 0, time_ms: 0.0, width, height }
-    }
-
-    /// Adds `passes` passes rendered elsewhere (e.g. on the GPU): their
-    /// per-pixel sum, with non-finite pixels dropped, and their time.
-    pub fn accumulate(&mut self, sum: &[Vec3], passes: u32, time_ms: f64) {
-        for (a, v) in self.sum.iter_mut().zip(sum) {
-            *a += if v.is_finite() { *v } else { Vec3::ZERO };
-        }
-        self.passes += passes;
-        self.time_ms += time_ms;
-    }
-
-    /// Image width and height.
-    pub fn size(&self) -> (u32, u32) {
-        (self.width, self.height)
-    }
-
-    /// The mean image so far.
-    pub fn image(&self) -> Image {
-        let n = self.passes.max(1) as f32;
-        Image { width: self.width, height: self.height, data: self.sum.iter().map(|s| *s / n).collect() }
-    }
-}
-
-impl PtScene {
+impl CpuPathTracer {
     /// New ξ for every light (one per pass), their ranges, and the BSH
     /// refitted to them in O(n).
     fn pass_state(&mut self, params: &RangeParams, seed: u32, pass: u32) -> Result<Pass, RenderError> {
-        let rt2: Vec<f32> = self.lights.iter().map(|l| params.threshold_range2(l.peak())).collect();
+        let rt2: Vec<f32> = self.lights().iter().map(|l| params.threshold_range2(l.peak())).collect();
         let r2: Vec<f32> = rt2.iter().enumerate().map(|(i, &t)| random_range2(t, xi_for(seed, pass, i as u32))).collect();
-        let spheres = self.bounds.iter().zip(&r2).map(|(b, &r)| b.range_sphere(r)).collect();
+        let spheres = self.pts.light_set().bounds().iter().zip(&r2).map(|(b, &r)| b.range_sphere(r)).collect();
         self.bsh.refit(&r2).map_err(|e| RenderError::Setting(e.to_string()))?;
         Ok(Pass { rt2, r2, spheres })
     }
 
-    /// Renders `passes` more passes of one sample per pixel into `acc`.
+    /// Renders `passes` more passes of one sample per pixel into `acc`
+    /// (also [`PathTracer::render`]).
     pub fn render(&mut self, acc: &mut PtRender, s: &PtSettings, passes: u32) -> Result<(), RenderError> {
         let params = RangeParams::new(s.error_bound, s.exposure).map_err(|e| RenderError::Setting(e.to_string()))?;
         if !(1..=64).contains(&s.max_depth) {
             return Err(RenderError::Setting(format!("max depth {} must be in 1..=64", s.max_depth)));
         }
-        let t = Instant::now();
-        let (w, h) = (acc.width, acc.height);
+        let (w, h) = acc.size();
         for _ in 0..passes {
+            let t = Instant::now();
             let pass = acc.passes;
             let state = self.pass_state(&params, s.seed, pass)?;
             let st = &state;
             let this = &*self;
-            let rows: Vec<Vec<Vec3>> = (0..h)
+            let image: Vec<Vec3> = (0..w * h)
                 .into_par_iter()
-                .map(|y| {
-                    (0..w)
-                        .map(|x| {
-                            let px = y * w + x;
-                            let mut rng = Pcg32::new(((s.seed as u64) << 32) | pass as u64, px as u64);
-                            this.trace(x, y, w, h, s, st, &mut rng)
-                        })
-                        .collect()
+                .map(|px| {
+                    let mut rng = Pcg32::new(((s.seed as u64) << 32) | pass as u64, px as u64);
+                    this.trace(px % w, px / w, w, h, s, st, &mut rng)
                 })
                 .collect();
-            for (y, row) in rows.into_iter().enumerate() {
-                for (x, v) in row.into_iter().enumerate() {
-                    acc.sum[y * w as usize + x] += if v.is_finite() { v } else { Vec3::ZERO };
-                }
-            }
-            acc.passes += 1;
+            acc.accumulate(&image, 1, t.elapsed().as_secs_f64() * 1e3);
         }
-        acc.time_ms += t.elapsed().as_secs_f64() * 1e3;
         Ok(())
     }
 
@@ -320,7 +144,7 @@ impl PtScene {
     /// (the light BVH's importance uses it).
     #[allow(clippy::too_many_arguments)]
     fn light_pdf(&self, s: &PtSettings, st: &Pass, l: usize, x: Vec3, n: Vec3, y: Vec3, seen: u32, in_nee: bool) -> f32 {
-        let Light::Triangle(t) = &self.lights[l] else { return 0.0 };
+        let Light::Triangle(t) = &self.lights()[l] else { return 0.0 };
         let v = x - y;
         let d2 = v.length_squared();
         let cos_y = if d2 > 0.0 { t.normal().dot(v / d2.sqrt()) } else { 0.0 };
@@ -331,14 +155,15 @@ impl PtScene {
                 let others = seen - (in_nee || st.spheres[l].contains(x)) as u32;
                 (1.0 / reservoir_weight(others + 1, RESERVOIR_K as u32), st.rt2[l])
             }
-            PtMethod::Uniform => (1.0 / self.lights.len() as f32, f32::INFINITY),
-            PtMethod::Power => (self.power.pdf(l) as f32, f32::INFINITY),
+            PtMethod::Uniform => (1.0 / self.lights().len() as f32, f32::INFINITY),
+            PtMethod::Power => (self.pts.light_set().alias().pdf(l) as f32, f32::INFINITY),
             PtMethod::LightBvh => (self.light_bvh.pmf(x, n, l), f32::INFINITY),
         };
         light_strategy_pdf(select, rt2, d2, t.area(), cos_y)
     }
 
-    /// Contribution of light `l` at `x` (normal `n`, albedo `rho`) through a
+    /// Contribution of light `l` at `x` (shading normal `n`, geometric
+    /// normal `ng` on the same side, albedo `rho`) through a
     /// sampled point, weighted by `extra` (the reservoir weight, or 1/the
     /// selection probability of the one-light methods) and, when `rr`, by
     /// the RR weight `1/p`, with the MIS weight against BSDF sampling for
@@ -349,15 +174,14 @@ impl PtScene {
         s: &PtSettings,
         st: &Pass,
         l: usize,
-        x: Vec3,
-        n: Vec3,
+        (x, n, ng): (Vec3, Vec3, Vec3),
         rho: Vec3,
         rng: &mut Pcg32,
         seen: u32,
         rr: bool,
         extra: f32,
     ) -> Option<Vec3> {
-        let light = &self.lights[l];
+        let light = &self.lights()[l];
         let (u1, u2) = (xi_from_bits(rng.next_u32()), xi_from_bits(rng.next_u32()));
         let y = match light {
             Light::Triangle(t) => t.sample(u1, u2),
@@ -373,11 +197,12 @@ impl PtScene {
         }
         let wdir = v / d2.sqrt();
         let cos_x = -n.dot(wdir);
-        if cos_x <= 0.0 {
+        // Lit through the shading normal but behind the surface itself: no light.
+        if cos_x <= 0.0 || ng.dot(wdir) >= 0.0 {
             return None;
         }
         let diag = self.diag;
-        if self.geo.occluded(x + n * 1e-5 * diag, y) {
+        if self.geo.occluded(x + ng * 1e-5 * diag, y) {
             return None;
         }
         let i = light.intensity(wdir);
@@ -395,7 +220,7 @@ impl PtScene {
 
     /// Next-event estimate at `x`; returns the radiance and the number of
     /// in-range lights seen (for the reservoir's MIS at the next hit).
-    fn nee(&self, s: &PtSettings, st: &Pass, x: Vec3, n: Vec3, rho: Vec3, rng: &mut Pcg32) -> (Vec3, u32) {
+    fn nee(&self, s: &PtSettings, st: &Pass, (x, n, ng): (Vec3, Vec3, Vec3), rho: Vec3, rng: &mut Pcg32) -> (Vec3, u32) {
         let mut sum = Vec3::ZERO;
         match s.method {
             PtMethod::Slc => {
@@ -403,7 +228,7 @@ impl PtScene {
                 self.bsh.for_each_containing(x, |l| cand.push(l));
                 let seen = cand.len() as u32;
                 for l in cand {
-                    if let Some(c) = self.connect(s, st, l as usize, x, n, rho, rng, seen, true, 1.0) {
+                    if let Some(c) = self.connect(s, st, l as usize, (x, n, ng), rho, rng, seen, true, 1.0) {
                         sum += c;
                     }
                 }
@@ -414,7 +239,7 @@ impl PtScene {
                 self.bsh.for_each_containing(x, |l| res.push(l, rng.next_u32(), rng.next_u32()));
                 let (seen, w) = (res.seen(), res.weight());
                 for &l in res.picks() {
-                    if let Some(c) = self.connect(s, st, l as usize, x, n, rho, rng, seen, true, w) {
+                    if let Some(c) = self.connect(s, st, l as usize, (x, n, ng), rho, rng, seen, true, w) {
                         sum += c;
                     }
                 }
@@ -424,28 +249,30 @@ impl PtScene {
                 let u = xi_from_bits(rng.next_u32());
                 let picked = match s.method {
                     PtMethod::Uniform => {
-                        let n = self.lights.len();
+                        let n = self.lights().len();
                         Some(((u * n as f32) as usize).min(n - 1)).map(|l| (l, 1.0 / n as f32))
                     }
                     PtMethod::Power => {
-                        let l = self.power.sample(u as f64, xi_from_bits(rng.next_u32()) as f64);
-                        Some((l, self.power.pdf(l) as f32))
+                        let alias = self.pts.light_set().alias();
+                        let l = alias.sample(u as f64, xi_from_bits(rng.next_u32()) as f64);
+                        Some((l, alias.pdf(l) as f32))
                     }
                     _ => self.light_bvh.sample(x, n, u),
                 };
                 if let Some((l, select)) = picked.filter(|&(_, p)| p > 0.0)
-                    && let Some(c) = self.connect(s, st, l, x, n, rho, rng, 0, false, 1.0 / select)
+                    && let Some(c) = self.connect(s, st, l, (x, n, ng), rho, rng, 0, false, 1.0 / select)
                 {
                     sum += c;
                 }
-                (sum, self.lights.len() as u32)
+                (sum, self.lights().len() as u32)
             }
         }
     }
 
     #[allow(clippy::too_many_arguments)]
     fn trace(&self, px: u32, py: u32, w: u32, h: u32, s: &PtSettings, st: &Pass, rng: &mut Pcg32) -> Vec3 {
-        let cam = &self.scene.camera;
+        let scene = self.pts.scene();
+        let cam = &scene.camera;
         let jx = xi_from_bits(rng.next_u32()) - 0.5;
         let jy = xi_from_bits(rng.next_u32()) - 0.5;
         let mut dir = cam.ray_dir(px as f32 + jx, py as f32 + jy, w, h);
@@ -460,10 +287,11 @@ impl PtScene {
             let x = org + dir * hit.t;
             let tri = hit.triangle as usize;
             let geo_n = self.geo.normal(hit.triangle);
-            let n = if geo_n.dot(dir) > 0.0 { -geo_n } else { geo_n };
-            let mat = self.scene.materials[self.scene.material_of[tri] as usize];
+            let ng = if geo_n.dot(dir) > 0.0 { -geo_n } else { geo_n };
+            let n = scene.shading_normal(tri, x, ng);
+            let mat = scene.materials[scene.material_of[tri] as usize];
             // Emission seen directly or by BSDF sampling (one-sided, like the light).
-            let l = self.light_of_triangle[tri];
+            let l = self.pts.light_of_triangle()[tri];
             if l != u32::MAX && geo_n.dot(dir) < 0.0 {
                 let le = mat.emission;
                 match prev {
@@ -474,18 +302,19 @@ impl PtScene {
                     }
                 }
             }
-            let (direct, seen) = self.nee(s, st, x, n, mat.albedo, rng);
+            let (direct, seen) = self.nee(s, st, (x, n, ng), mat.albedo, rng);
             radiance += beta * direct;
-            // Cosine-weighted BSDF sample: f·cos/pdf = ρ.
+            // Cosine-weighted BSDF sample about the shading normal: f·cos/pdf
+            // = ρ. A direction below the surface itself ends the path.
             let (u1, u2) = (xi_from_bits(rng.next_u32()), xi_from_bits(rng.next_u32()));
             let nd = cosine_direction(n, u1, u2);
             let cos = nd.dot(n);
-            if cos <= 0.0 {
+            if cos <= 0.0 || nd.dot(ng) <= 0.0 {
                 break;
             }
             beta *= mat.albedo;
             prev = Some((x, n, seen, cosine_pdf(cos)));
-            org = x + n * 1e-5 * diag;
+            org = x + ng * 1e-5 * diag;
             dir = nd;
             // Russian roulette on path length from the third bounce.
             if depth >= 2 {
@@ -503,6 +332,7 @@ impl PtScene {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use slc_scene::scene::Scene;
 
     /// For a triangle light reachable by both strategies, the light
     /// strategy's MIS weight (as `connect` computes it) and the BSDF
@@ -510,7 +340,7 @@ mod tests {
     /// method: both use the same ξ-independent light pdf.
     #[test]
     fn mis_weights_sum_to_one() {
-        let mut pts = PtScene::new(&Scene::cornell_box(), &[]).unwrap();
+        let mut pts = CpuPathTracer::new(&PtScene::new(&Scene::cornell_box(), &[]).unwrap());
         let (x, n) = (Vec3::new(0.3, 0.0, 0.3), Vec3::Y);
         let params = RangeParams::new(0.05, 1.0).unwrap();
         let st = pts.pass_state(&params, 7, 0).unwrap();
@@ -518,7 +348,7 @@ mod tests {
         for method in PtMethod::ALL {
             let s = PtSettings { method, error_bound: 0.05, ..PtSettings::default() };
             for l in 0..pts.light_count() {
-                let Light::Triangle(t) = &pts.lights[l] else { continue };
+                let Light::Triangle(t) = &pts.lights()[l] else { continue };
                 if !st.spheres[l].contains(x) {
                     continue; // the reservoir's per-sample identity needs the light in range
                 }
@@ -538,5 +368,22 @@ mod tests {
             }
         }
         assert!(checked >= 2 * PtMethod::ALL.len() * 3, "{checked} cases");
+    }
+}
+
+impl PathTracer for CpuPathTracer {
+    type Error = RenderError;
+
+    fn describe(&self) -> String {
+        format!("cpu ({} threads)", rayon::current_num_threads())
+    }
+
+    fn supports(&self, _method: PtMethod) -> bool {
+        true
+    }
+
+    fn render(&mut self, acc: &mut PtRender, settings: &PtSettings, passes: u32) -> Result<Timing, RenderError> {
+        CpuPathTracer::render(self, acc, settings, passes)?;
+        Ok(Timing::Wall)
     }
 }

@@ -10,10 +10,10 @@
 //! `2P × 2P`. Background pixels (depth ∞) get weight 0. The
 //! inner loop runs over contiguous row segments of SoA arrays, branch-free.
 
-use crate::gbuffer::GBuffer;
 use glam::Vec3;
 use rayon::prelude::*;
 use slc_core::denoise::{COVER_WEIGHT, DEPTH_SIGMA, bilateral_weight};
+use slc_scene::vpl::GBuffer;
 
 /// Filters `e` (one value per pixel) with a `period × period` window.
 pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {

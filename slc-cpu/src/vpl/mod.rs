@@ -1,12 +1,16 @@
 //! Application A of the paper: real-time indirect illumination with VPLs.
 //!
 //! Pipeline (every step a function with a typed input and output):
-//! [`GBuffer::render`] → [`rsm::reflective_shadow_map`] (`size²` VPLs) →
+//! [`render_gbuffer`] → [`rsm::reflective_shadow_map`] (`size²` VPLs) →
 //! 8×8 interleaved sampling (pixel `(x, y)` uses VPL subset
 //! `(y mod 8)·8 + x mod 8`; subset of RSM texel `(tx, ty)` likewise, each
 //! subset's flux scaled by 64) → tiled shading of each sub-image with the
 //! subset's VPL spheres culled per tile ([`shade`]) →
 //! [`denoise::cross_bilateral`] → albedo × (indirect + direct) + emission.
+//!
+//! The settings, G-buffer, VPL and frame types are slc-scene's
+//! ([`slc_scene::vpl`]); [`VplContext`] is the CPU's
+//! [`IndirectShader`].
 //!
 //! Methods: [`VplMethod::Slc`] (stochastic ranges from error bound ε),
 //! [`VplMethod::Clamp`] (fixed range R, no reweighting: biased),
@@ -17,158 +21,30 @@ pub mod denoise;
 pub mod rsm;
 pub mod shade;
 
-use crate::RenderError;
-use crate::gbuffer::GBuffer;
+use crate::gbuffer::render_gbuffer;
 use crate::geometry::Geometry;
-use crate::image::Image;
-use crate::scene::{PrimaryLight, Scene};
 use glam::Vec3;
 use rayon::prelude::*;
-use rsm::Vpls;
 use shade::{Cull, LightList};
-use slc_core::light::{INV_PI, Light, inverse_square};
+use slc_core::light::{INV_PI, Light, inverse_square, vpl_threshold_range2};
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::xi::xi_for;
+use slc_scene::RenderError;
+use slc_scene::backend::IndirectShader;
+use slc_scene::image::Image;
+use slc_scene::scene::{PrimaryLight, Scene};
+use slc_scene::vpl::{GBuffer, PERIOD, Shaded, VplFrame, VplInputs, VplMethod, VplSettings, VplStats, Vpls};
 use std::time::Instant;
-
-/// How the indirect light is computed.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum VplMethod {
-    /// Stochastic light culling (error bound ε).
-    Slc,
-    /// Clamped ranges (range R), no reweighting.
-    Clamp,
-    /// Interleaved, unculled.
-    None,
-    /// Every VPL at every pixel: the ground truth.
-    Reference,
-}
-
-impl VplMethod {
-    /// Lower-case name used on the command line and in reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            VplMethod::Slc => "slc",
-            VplMethod::Clamp => "clamp",
-            VplMethod::None => "none",
-            VplMethod::Reference => "reference",
-        }
-    }
-}
-
-/// Per-run settings (the scene-dependent part lives in [`VplContext`]).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct VplSettings {
-    /// Method.
-    pub method: VplMethod,
-    /// SLC error bound ε (radiance units).
-    pub error_bound: f32,
-    /// Clamp range R (scene units).
-    pub range: f32,
-    /// Exposure E used by the error bound.
-    pub exposure: f32,
-    /// Seed of the per-VPL ξ.
-    pub seed: u32,
-    /// Frame number (a new ξ set per frame).
-    pub frame: u32,
-    /// Tile size in sub-image pixels.
-    pub tile: u32,
-    /// Apply the cross-bilateral filter (interleaved methods).
-    pub denoise: bool,
-    /// Give every light this ξ instead of the hashed per-light one. Not an
-    /// estimator on its own: averaging frames over a grid of ξ values is
-    /// quadrature of the expectation over ξ (how the tests prove the
-    /// pipeline unbiased). Must lie in `[0, 1)`.
-    pub fixed_xi: Option<f32>,
-}
-
-impl Default for VplSettings {
-    fn default() -> Self {
-        VplSettings {
-            method: VplMethod::Slc,
-            error_bound: 0.008,
-            range: 0.1,
-            exposure: 1.0,
-            seed: 1,
-            frame: 0,
-            tile: 4,
-            denoise: true,
-            fixed_xi: None,
-        }
-    }
-}
-
-/// `r_t²` of a VPL of (interleave-scaled) flux `Φ`: its peak intensity is
-/// `Φ/π` (cosine lobe), shared by the CPU and GPU backends.
-pub fn vpl_threshold_range2(params: &RangeParams, flux: Vec3) -> f32 {
-    params.threshold_range2(flux * INV_PI)
-}
-
-/// Interleaving period (8×8 subsets, as in the paper).
-pub const PERIOD: u32 = 8;
 
 /// Super-tile size in tiles for the first culling level.
 pub const SUPER: usize = 2;
-
-/// Timings (milliseconds) and work counts of one frame.
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
-pub struct VplStats {
-    /// G-buffer (shared by all methods; measured once per context).
-    pub gbuffer_ms: f64,
-    /// Reflective shadow map (once per context).
-    pub rsm_ms: f64,
-    /// Direct light with shadow rays (once per context).
-    pub direct_ms: f64,
-    /// Range computation, tile culling and shading.
-    pub shading_ms: f64,
-    /// Denoise, de-interleave and composition.
-    pub denoise_ms: f64,
-    /// Sum of the above.
-    pub total_ms: f64,
-    /// Number of VPLs.
-    pub vpls: usize,
-    /// Lights in the shaded pixels' tile lists, per shaded pixel (the loop's work).
-    pub lights_per_pixel: f64,
-    /// Lights that passed the keep test, per shaded pixel.
-    pub kept_per_pixel: f64,
-    /// Light evaluations in the shading loop.
-    pub evaluations: u64,
-}
-
-/// Indirect irradiance of one frame before denoise and composition (what a
-/// backend computes).
-#[derive(Clone, Debug)]
-pub struct Shaded {
-    /// Irradiance per pixel (zero where no surface).
-    pub irradiance: Vec<Vec3>,
-    /// Lights that passed the keep test, per pixel.
-    pub kept: Vec<u32>,
-    /// Light evaluations of the shading loop.
-    pub evaluations: u64,
-    /// Shading time (ms).
-    pub shading_ms: f64,
-    /// `Some(ms)` when the backend has already denoised `irradiance` (the
-    /// GPU does, with the same filter), so [`VplContext::finish`] does not.
-    pub denoised_ms: Option<f64>,
-}
-
-/// One rendered frame.
-#[derive(Clone, Debug)]
-pub struct VplFrame {
-    /// Final linear radiance.
-    pub image: Image,
-    /// Timings and counts.
-    pub stats: VplStats,
-}
 
 /// Everything that does not depend on the method: geometry, G-buffer, VPLs
 /// and direct light, computed once.
 pub struct VplContext {
     scene: Scene,
-    gbuffer: GBuffer,
-    vpls: Vpls,
+    inputs: VplInputs,
     direct: Vec<Vec3>,
-    min_d2: f32,
     base: VplStats,
 }
 
@@ -179,9 +55,7 @@ impl VplContext {
     /// (`None`: 1% of the scene's diagonal).
     pub fn new(scene: &Scene, width: u32, height: u32, rsm_size: u32, min_distance: Option<f32>) -> Result<Self, RenderError> {
         scene.validate()?;
-        if !(1..=16384).contains(&width) || !(1..=16384).contains(&height) {
-            return Err(RenderError::Size(width, height));
-        }
+        slc_scene::check_size(width, height)?;
         if rsm_size == 0 || !rsm_size.is_multiple_of(PERIOD) || rsm_size > 4096 {
             return Err(RenderError::VplCount((rsm_size as u64).pow(2)));
         }
@@ -192,26 +66,32 @@ impl VplContext {
         let mut base = VplStats::default();
         let t = Instant::now();
         let geo = Geometry::new(&scene.triangles);
-        let gbuffer = GBuffer::render(scene, &geo, width, height);
+        let (gbuffer, geometric_normal) = render_gbuffer(scene, &geo, width, height);
         base.gbuffer_ms = ms(t);
         let t = Instant::now();
         let vpls = rsm::reflective_shadow_map(scene, &geo, rsm_size);
         base.rsm_ms = ms(t);
         let t = Instant::now();
-        let direct = direct_light(scene, &geo, &gbuffer);
+        let direct = direct_light(scene, &geo, &gbuffer, &geometric_normal);
         base.direct_ms = ms(t);
         base.vpls = vpls.len();
-        Ok(VplContext { scene: scene.clone(), gbuffer, vpls, direct, min_d2: min_distance * min_distance, base })
+        let inputs = VplInputs { gbuffer, vpls, min_d2: min_distance * min_distance };
+        Ok(VplContext { scene: scene.clone(), inputs, direct, base })
+    }
+
+    /// What a backend shades: G-buffer, VPLs, clamp distance.
+    pub fn inputs(&self) -> &VplInputs {
+        &self.inputs
     }
 
     /// The G-buffer.
     pub fn gbuffer(&self) -> &GBuffer {
-        &self.gbuffer
+        &self.inputs.gbuffer
     }
 
     /// The VPLs.
     pub fn vpls(&self) -> &Vpls {
-        &self.vpls
+        &self.inputs.vpls
     }
 
     /// The scene.
@@ -219,18 +99,14 @@ impl VplContext {
         &self.scene
     }
 
-    /// RSM texel indices of VPL subset `sub` (`0 ≤ sub < PERIOD²`): texels
-    /// `(tx, ty)` with `ty mod P = sub / P` and `tx mod P = sub mod P`,
-    /// row-major. Pixel `(x, y)` uses subset `(y mod P)·P + x mod P`.
+    /// RSM texel indices of VPL subset `sub` ([`VplInputs::subset_members`]).
     pub fn subset_members(&self, sub: usize) -> Vec<usize> {
-        let (p, size) = (PERIOD as usize, self.vpls.size as usize);
-        let (sx, sy) = (sub % p, sub / p);
-        (sy..size).step_by(p).flat_map(|ty| (sx..size).step_by(p).map(move |tx| ty * size + tx)).collect()
+        self.inputs.subset_members(sub)
     }
 
     /// Squared clamp distance of the VPL fall-off.
     pub fn min_d2(&self) -> f32 {
-        self.min_d2
+        self.inputs.min_d2
     }
 
     /// Renders one frame with `settings`: [`VplContext::shade`] then
@@ -240,19 +116,9 @@ impl VplContext {
         Ok(self.finish(shaded, settings))
     }
 
-    /// Checks settings shared by every backend.
+    /// Checks settings shared by every backend ([`VplSettings::validate`]).
     pub fn check(&self, s: &VplSettings) -> Result<RangeParams, RenderError> {
-        let params = RangeParams::new(s.error_bound, s.exposure).map_err(|e| RenderError::Setting(e.to_string()))?;
-        if s.method == VplMethod::Clamp && !(s.range.is_finite() && s.range > 0.0) {
-            return Err(RenderError::Setting(format!("clamp range {} must be finite and > 0", s.range)));
-        }
-        if let Some(x) = s.fixed_xi {
-            slc_core::range::Xi::new(x).map_err(|e| RenderError::Setting(e.to_string()))?;
-        }
-        if s.tile == 0 {
-            return Err(RenderError::Setting("tile size must be > 0".into()));
-        }
-        Ok(params)
+        s.validate()
     }
 
     /// Indirect irradiance at every pixel (before denoise and albedo), on the
@@ -272,7 +138,7 @@ impl VplContext {
     pub fn finish(&self, shaded: Shaded, settings: &VplSettings) -> VplFrame {
         let mut stats = self.base;
         stats.shading_ms = shaded.shading_ms;
-        let gb = &self.gbuffer;
+        let gb = &self.inputs.gbuffer;
         let shaded_px = (0..gb.position.len()).filter(|&i| gb.valid(i)).count().max(1) as f64;
         stats.evaluations = shaded.evaluations;
         stats.lights_per_pixel = shaded.evaluations as f64 / shaded_px;
@@ -291,15 +157,15 @@ impl VplContext {
 
     /// Every VPL at every pixel.
     fn shade_reference(&self) -> (Vec<Vec3>, Vec<u32>, u64) {
-        let v = &self.vpls;
+        let v = &self.inputs.vpls;
         let mut list = LightList::default();
         for i in 0..v.len() {
             list.push(v.position[i], v.normal[i], v.flux[i], f32::INFINITY, f32::INFINITY);
         }
-        let gb = &self.gbuffer;
+        let gb = &self.inputs.gbuffer;
         let out: Vec<(Vec3, u32)> = (0..gb.position.len())
             .into_par_iter()
-            .map(|i| if gb.valid(i) { shade::shade(&list, gb.position[i], gb.normal[i], self.min_d2, Cull::None) } else { (Vec3::ZERO, 0) })
+            .map(|i| if gb.valid(i) { shade::shade(&list, gb.position[i], gb.normal[i], self.inputs.min_d2, Cull::None) } else { (Vec3::ZERO, 0) })
             .collect();
         let shaded = (0..out.len()).filter(|&i| gb.valid(i)).count() as u64;
         (out.iter().map(|o| o.0).collect(), out.iter().map(|o| o.1).collect(), shaded * v.len() as u64)
@@ -307,8 +173,8 @@ impl VplContext {
 
     /// Interleaved sampling with tiled culling per sub-image.
     fn shade_interleaved(&self, method: VplMethod, params: &RangeParams, s: &VplSettings) -> (Vec<Vec3>, Vec<u32>, u64) {
-        let gb = &self.gbuffer;
-        let v = &self.vpls;
+        let gb = &self.inputs.gbuffer;
+        let v = &self.inputs.vpls;
         let p = PERIOD as usize;
         let subsets = p * p;
         let size = v.size as usize;
@@ -398,7 +264,7 @@ impl VplContext {
                                     &fine
                                 };
                                 for &i in &pixels {
-                                    let (e, k) = shade::shade(lights, gb.position[i], gb.normal[i], self.min_d2, cull);
+                                    let (e, k) = shade::shade(lights, gb.position[i], gb.normal[i], self.inputs.min_d2, cull);
                                     out.push((i, e, k));
                                 }
                                 evals += (lights.len_unpadded() * pixels.len()) as u64;
@@ -423,8 +289,9 @@ impl VplContext {
     }
 }
 
-/// Direct irradiance from the primary light, with shadow rays.
-fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer) -> Vec<Vec3> {
+/// Direct irradiance from the primary light, with shadow rays offset along
+/// the geometric normal `geo_n` (cosines use the G-buffer's shading normal).
+fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer, geo_n: &[Vec3]) -> Vec<Vec3> {
     let diag = scene.diagonal();
     (0..gb.position.len())
         .into_par_iter()
@@ -440,7 +307,7 @@ fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer) -> Vec<Vec3> {
                     let d2 = v.length_squared();
                     let wi = v / d2.sqrt();
                     let cos = n.dot(wi);
-                    if cos <= 0.0 || geo.occluded(x + n * 1e-5 * diag, position) {
+                    if cos <= 0.0 || geo.occluded(x + geo_n[i] * 1e-5 * diag, position) {
                         return Vec3::ZERO;
                     }
                     spot.intensity(-wi) * cos * inverse_square(d2)
@@ -448,7 +315,7 @@ fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer) -> Vec<Vec3> {
                 PrimaryLight::Directional { direction, irradiance } => {
                     let wi = -direction.normalize();
                     let cos = n.dot(wi);
-                    if cos <= 0.0 || geo.occluded(x + n * 1e-5 * diag, x + wi * 2.0 * diag) {
+                    if cos <= 0.0 || geo.occluded(x + geo_n[i] * 1e-5 * diag, x + wi * 2.0 * diag) {
                         return Vec3::ZERO;
                     }
                     irradiance * cos
@@ -456,6 +323,18 @@ fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer) -> Vec<Vec3> {
             }
         })
         .collect()
+}
+
+impl IndirectShader for VplContext {
+    type Error = RenderError;
+
+    fn describe(&self) -> String {
+        format!("cpu ({} threads)", rayon::current_num_threads())
+    }
+
+    fn shade(&self, settings: &VplSettings) -> Result<Shaded, RenderError> {
+        VplContext::shade(self, settings)
+    }
 }
 
 fn ms(t: Instant) -> f64 {

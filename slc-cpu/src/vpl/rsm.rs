@@ -3,36 +3,11 @@
 //! with the flux that surface reflects.
 
 use crate::geometry::Geometry;
-use crate::scene::{PrimaryLight, Scene};
 use glam::Vec3;
 use rayon::prelude::*;
 use slc_core::light::Light;
-
-/// VPLs in structure-of-arrays form, one per RSM texel (row-major), so
-/// `index = ty · size + tx`. Texels that see nothing, or lie outside the spot
-/// cone, are VPLs of zero flux (never kept by SLC, zero contribution).
-#[derive(Clone, Debug, PartialEq, Default)]
-pub struct Vpls {
-    /// RSM resolution (`size²` VPLs).
-    pub size: u32,
-    /// Positions.
-    pub position: Vec<Vec3>,
-    /// Unit normals (facing the light).
-    pub normal: Vec<Vec3>,
-    /// Reflected RGB flux Φ (W).
-    pub flux: Vec<Vec3>,
-}
-
-impl Vpls {
-    /// Number of VPLs.
-    pub fn len(&self) -> usize {
-        self.position.len()
-    }
-    /// `true` when there are none.
-    pub fn is_empty(&self) -> bool {
-        self.position.is_empty()
-    }
-}
+use slc_scene::scene::{PrimaryLight, Scene};
+use slc_scene::vpl::Vpls;
 
 /// Renders the `size × size` RSM of the scene's primary light.
 pub fn reflective_shadow_map(scene: &Scene, geo: &Geometry, size: u32) -> Vpls {
@@ -93,12 +68,13 @@ pub fn reflective_shadow_map(scene: &Scene, geo: &Geometry, size: u32) -> Vpls {
 fn hit_texel(scene: &Scene, geo: &Geometry, origin: Vec3, dir: Vec3, incident: Vec3, diag: f32) -> (Vec3, Vec3, Vec3) {
     match geo.intersect(origin, dir, 1e-5 * diag, f32::INFINITY) {
         Some(h) => {
-            let mut n = geo.normal(h.triangle);
-            if n.dot(dir) > 0.0 {
-                n = -n;
+            let mut gn = geo.normal(h.triangle);
+            if gn.dot(dir) > 0.0 {
+                gn = -gn;
             }
+            let p = origin + dir * h.t;
             let albedo = scene.materials[scene.material_of[h.triangle as usize] as usize].albedo;
-            (origin + dir * h.t, n, incident * albedo)
+            (p, scene.shading_normal(h.triangle as usize, p, gn), incident * albedo)
         }
         None => (origin, -dir, Vec3::ZERO),
     }

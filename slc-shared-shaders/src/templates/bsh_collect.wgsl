@@ -73,7 +73,7 @@ struct Connection {
 /// Samples pick `li` at `(u1, u2)`, applies the RR test with the light's own
 /// range at the sampled point's distance, casts the shadow ray (offset `eps`
 /// along `n`) and weights by `1/p` and the reservoir weight `w_res`.
-fn connect(li: u32, x: vec3f, n: vec3f, w_res: f32, u1: f32, u2: f32, eps: f32) -> Connection {
+fn connect(li: u32, x: vec3f, n: vec3f, ng: vec3f, w_res: f32, u1: f32, u2: f32, eps: f32) -> Connection {
     var c: Connection;
     c.e = vec3f(0.0);
     let l = lights[li];
@@ -85,7 +85,9 @@ fn connect(li: u32, x: vec3f, n: vec3f, w_res: f32, u1: f32, u2: f32, eps: f32) 
     }
     let w = v / sqrt(d2);
     c.cos_x = -dot(n, w);
-    if c.cos_x <= 0.0 || occluded(x + n * eps, c.y) {
+    // Lit through the shading normal `n` but behind the surface itself (its
+    // geometric normal `ng`): no light; the shadow ray leaves along `ng`.
+    if c.cos_x <= 0.0 || dot(ng, w) >= 0.0 || occluded(x + ng * eps, c.y) {
         return c;
     }
     c.e = light_intensity(l, w) * connection_factor(c.cos_x, d2, rt2[li], w_res);

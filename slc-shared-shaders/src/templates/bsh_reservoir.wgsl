@@ -41,7 +41,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        e += connect(picks.light[s], x, n, w_res, u1, xi_from_bits(h), params.eps).e;
+        e += connect(picks.light[s], x, n, n, w_res, u1, xi_from_bits(h), params.eps).e;
     }
     irradiance[i] = vec4f(e, f32(picks.n));
 }

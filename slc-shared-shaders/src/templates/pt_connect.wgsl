@@ -26,8 +26,8 @@
 /// One pick connected to `x`: its contribution times the MIS weight (area
 /// lights) against BSDF sampling; `w` is the selection weight (the
 /// reservoir's n/k or 1/pmf), `others` the other in-range lights.
-fn shade_pick(li: u32, x: vec3f, n: vec3f, w: f32, others: u32, u1: f32, u2: f32) -> vec3f {
-    let c = connect(li, x, n, w, u1, u2, params.eps);
+fn shade_pick(li: u32, x: vec3f, n: vec3f, ng: vec3f, w: f32, others: u32, u1: f32, u2: f32) -> vec3f {
+    let c = connect(li, x, n, ng, w, u1, u2, params.eps);
     var mis = 1.0;
     if light_area(lights[li]) > 0.0 && c.cos_x > 0.0 {
         mis = mis_weight(light_pdf(li, x, c.y, others), cosine_pdf(c.cos_x));
@@ -48,6 +48,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     let x = vtx.position;
     let n = vtx.normal;
+    let ng = vtx.gnormal;
     let seed = pcg_hash(params.seed ^ pcg_hash(i ^ pcg_hash(params.frame)));
     var h = pcg_hash(seed ^ 2654435769u);
     var sum = vec3f(0.0);
@@ -59,7 +60,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        sum += shade_pick(picks.light[s], x, n, w_res, picks.n - 1u, u1, xi_from_bits(h));
+        sum += shade_pick(picks.light[s], x, n, ng, w_res, picks.n - 1u, u1, xi_from_bits(h));
     }
 {% elif selection == "all" %}
     // Every in-range light, each connected as the traversal finds it.
@@ -69,7 +70,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        sum += shade_pick(bsh_nodes[b].light, x, n, 1.0, 0u, u1, xi_from_bits(h));
+        sum += shade_pick(bsh_nodes[b].light, x, n, ng, 1.0, 0u, u1, xi_from_bits(h));
     }
     candidates[i] = count;
 {% else %}
@@ -87,7 +88,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     h = pcg_hash(h);
     let u1 = xi_from_bits(h);
     h = pcg_hash(h);
-    sum = shade_pick(li, x, n, 1.0 / select_pdf(li, 0u), 0u, u1, xi_from_bits(h));
+    sum = shade_pick(li, x, n, ng, 1.0 / select_pdf(li, 0u), 0u, u1, xi_from_bits(h));
 {% endif %}
     let add = vtx.weight * sum;
     if finite3(add) {

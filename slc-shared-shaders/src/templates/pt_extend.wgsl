@@ -19,10 +19,12 @@ const K: u32 = {{ k }}u;
 @group(0) @binding(5) var<storage, read> geo_nodes: array<GpuGeoNode>;
 @group(0) @binding(6) var<storage, read> geo_tris: array<GpuTriangle>;
 @group(0) @binding(7) var<storage, read> albedo: array<vec4f>;
-@group(0) @binding(8) var<storage, read> candidates: array<u32>;
-@group(0) @binding(9) var<storage, read_write> paths: array<GpuPathState>;
-@group(0) @binding(10) var<storage, read_write> vertices: array<GpuPathVertex>;
-@group(0) @binding(11) var<storage, read_write> radiance: array<vec4f>;
+// Vertex normals, three per triangle in geo_tris order.
+@group(0) @binding(8) var<storage, read> geo_normals: array<vec4f>;
+@group(0) @binding(9) var<storage, read> candidates: array<u32>;
+@group(0) @binding(10) var<storage, read_write> paths: array<GpuPathState>;
+@group(0) @binding(11) var<storage, read_write> vertices: array<GpuPathVertex>;
+@group(0) @binding(12) var<storage, read_write> radiance: array<vec4f>;
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
 
 /// Next uniform in [0, 1) of a path's random state.
@@ -70,7 +72,9 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let tri = geo_tris[hit.tri];
     let x = st.origin + st.dir * hit.t;
     let gn = normalize(cross(tri.v1 - tri.v0, tri.v2 - tri.v0));
-    let n = select(gn, -gn, dot(gn, st.dir) > 0.0);
+    let ng = select(gn, -gn, dot(gn, st.dir) > 0.0);
+    let b = hit.tri * 3u;
+    let n = shading_normal(geo_normals[b].xyz, geo_normals[b + 1u].xyz, geo_normals[b + 2u].xyz, barycentric(x, tri.v0, tri.v1, tri.v2), ng);
     // Emission, one-sided like the light, seen directly or by BSDF sampling.
     if tri.light != NO_LIGHT && dot(gn, st.dir) < 0.0 {
         var w = 1.0;
@@ -89,10 +93,11 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let rho = albedo[tri.material].xyz;
     v.position = x;
     v.normal = n;
+    v.gnormal = ng;
     v.weight = st.beta * lambert_brdf(rho);
     v.alive = 1u;
     vertices[i] = v;
-    // Cosine-weighted BSDF sample: f·cos/pdf = ρ.
+    // Cosine-weighted BSDF sample about the shading normal: f·cos/pdf = ρ.
     var rng = st.rng;
     let u1 = next_uniform(&rng);
     let u2 = next_uniform(&rng);
@@ -101,9 +106,10 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     st.beta *= rho;
     st.prev = x;
     st.pdf_bsdf = cosine_pdf(cos_o);
-    st.origin = x + n * params.eps;
+    st.origin = x + ng * params.eps;
     st.dir = nd;
-    if cos_o <= 0.0 || params.depth + 1u >= params.max_depth {
+    // A direction below the surface itself ends the path.
+    if cos_o <= 0.0 || dot(nd, ng) <= 0.0 || params.depth + 1u >= params.max_depth {
         st.alive = 0u;
     }
     // Russian roulette on path length from the third bounce.

@@ -19,7 +19,7 @@ struct GpuTriangle {
 }
 const NO_LIGHT: u32 = 4294967295;
 struct GpuPathVertex {
-    position: vec3f, alive: u32, normal: vec3f, pad: f32, weight: vec3f, pad1: f32
+    position: vec3f, alive: u32, normal: vec3f, pad: f32, weight: vec3f, pad1: f32, gnormal: vec3f, pad2: f32
 }
 struct GpuPathState {
     origin: vec3f, alive: u32, dir: vec3f, rng: u32, beta: vec3f, pdf_bsdf: f32, prev: vec3f, pad: u32
@@ -350,6 +350,30 @@ fn ray_aabb(o: vec3f, inv_d: vec3f, bmin: vec3f, bmax: vec3f, t_max: f32) -> f32
         return t_in;
     }
     return -1.0;
+}
+fn barycentric(p: vec3f, a: vec3f, b: vec3f, c: vec3f) -> vec3f {
+    let e1: vec3f = b - a;
+    let e2: vec3f = c - a;
+    let q: vec3f = p - a;
+    let d11: f32 = dot(e1, e1);
+    let d12: f32 = dot(e1, e2);
+    let d22: f32 = dot(e2, e2);
+    let den: f32 = d11 * d22 - d12 * d12;
+    if !(abs(den) > 0.0) {
+        return vec3f(1.0, 0.0, 0.0);
+    }
+    let w1: f32 = (d22 * dot(q, e1) - d12 * dot(q, e2)) / den;
+    let w2: f32 = (d11 * dot(q, e2) - d12 * dot(q, e1)) / den;
+    return vec3f(1.0 - w1 - w2, w1, w2);
+}
+fn shading_normal(n0: vec3f, n1: vec3f, n2: vec3f, w: vec3f, facing: vec3f) -> vec3f {
+    let s: vec3f = n0 * w.x + n1 * w.y + n2 * w.z;
+    let l2: f32 = dot(s, s);
+    if !(l2 > 1e-12) || !(l2 < 3.0e38) {
+        return facing;
+    }
+    let n: vec3f = s / sqrt(l2);
+    return select(n, -n, dot(n, facing) < 0.0);
 }
 fn ray_triangle(o: vec3f, d: vec3f, a: vec3f, b: vec3f, c: vec3f, t_min: f32, t_max: f32) -> f32 {
     let e1: vec3f = b - a;

@@ -19,7 +19,7 @@ struct GpuTriangle {
 }
 const NO_LIGHT: u32 = 4294967295;
 struct GpuPathVertex {
-    position: vec3f, alive: u32, normal: vec3f, pad: f32, weight: vec3f, pad1: f32
+    position: vec3f, alive: u32, normal: vec3f, pad: f32, weight: vec3f, pad1: f32, gnormal: vec3f, pad2: f32
 }
 struct GpuPathState {
     origin: vec3f, alive: u32, dir: vec3f, rng: u32, beta: vec3f, pdf_bsdf: f32, prev: vec3f, pad: u32
@@ -351,6 +351,30 @@ fn ray_aabb(o: vec3f, inv_d: vec3f, bmin: vec3f, bmax: vec3f, t_max: f32) -> f32
     }
     return -1.0;
 }
+fn barycentric(p: vec3f, a: vec3f, b: vec3f, c: vec3f) -> vec3f {
+    let e1: vec3f = b - a;
+    let e2: vec3f = c - a;
+    let q: vec3f = p - a;
+    let d11: f32 = dot(e1, e1);
+    let d12: f32 = dot(e1, e2);
+    let d22: f32 = dot(e2, e2);
+    let den: f32 = d11 * d22 - d12 * d12;
+    if !(abs(den) > 0.0) {
+        return vec3f(1.0, 0.0, 0.0);
+    }
+    let w1: f32 = (d22 * dot(q, e1) - d12 * dot(q, e2)) / den;
+    let w2: f32 = (d11 * dot(q, e2) - d12 * dot(q, e1)) / den;
+    return vec3f(1.0 - w1 - w2, w1, w2);
+}
+fn shading_normal(n0: vec3f, n1: vec3f, n2: vec3f, w: vec3f, facing: vec3f) -> vec3f {
+    let s: vec3f = n0 * w.x + n1 * w.y + n2 * w.z;
+    let l2: f32 = dot(s, s);
+    if !(l2 > 1e-12) || !(l2 < 3.0e38) {
+        return facing;
+    }
+    let n: vec3f = s / sqrt(l2);
+    return select(n, -n, dot(n, facing) < 0.0);
+}
 fn ray_triangle(o: vec3f, d: vec3f, a: vec3f, b: vec3f, c: vec3f, t_min: f32, t_max: f32) -> f32 {
     let e1: vec3f = b - a;
     let e2: vec3f = c - a;
@@ -606,7 +630,7 @@ struct Connection {
 /// Samples pick `li` at `(u1, u2)`, applies the RR test with the light's own
 /// range at the sampled point's distance, casts the shadow ray (offset `eps`
 /// along `n`) and weights by `1/p` and the reservoir weight `w_res`.
-fn connect(li: u32, x: vec3f, n: vec3f, w_res: f32, u1: f32, u2: f32, eps: f32) -> Connection {
+fn connect(li: u32, x: vec3f, n: vec3f, ng: vec3f, w_res: f32, u1: f32, u2: f32, eps: f32) -> Connection {
     var c: Connection;
     c.e = vec3f(0.0);
     let l = lights[li];
@@ -618,7 +642,9 @@ fn connect(li: u32, x: vec3f, n: vec3f, w_res: f32, u1: f32, u2: f32, eps: f32) 
     }
     let w = v / sqrt(d2);
     c.cos_x = -dot(n, w);
-    if c.cos_x <= 0.0 || occluded(x + n * eps, c.y) {
+    // Lit through the shading normal `n` but behind the surface itself (its
+    // geometric normal `ng`): no light; the shadow ray leaves along `ng`.
+    if c.cos_x <= 0.0 || dot(ng, w) >= 0.0 || occluded(x + ng * eps, c.y) {
         return c;
     }
     c.e = light_intensity(l, w) * connection_factor(c.cos_x, d2, rt2[li], w_res);
@@ -663,7 +689,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        e += connect(picks.light[s], x, n, w_res, u1, xi_from_bits(h), params.eps).e;
+        e += connect(picks.light[s], x, n, n, w_res, u1, xi_from_bits(h), params.eps).e;
     }
     irradiance[i] = vec4f(e, f32(picks.n));
 }

@@ -19,7 +19,7 @@ struct GpuTriangle {
 }
 const NO_LIGHT: u32 = 4294967295;
 struct GpuPathVertex {
-    position: vec3f, alive: u32, normal: vec3f, pad: f32, weight: vec3f, pad1: f32
+    position: vec3f, alive: u32, normal: vec3f, pad: f32, weight: vec3f, pad1: f32, gnormal: vec3f, pad2: f32
 }
 struct GpuPathState {
     origin: vec3f, alive: u32, dir: vec3f, rng: u32, beta: vec3f, pdf_bsdf: f32, prev: vec3f, pad: u32
@@ -351,6 +351,30 @@ fn ray_aabb(o: vec3f, inv_d: vec3f, bmin: vec3f, bmax: vec3f, t_max: f32) -> f32
     }
     return -1.0;
 }
+fn barycentric(p: vec3f, a: vec3f, b: vec3f, c: vec3f) -> vec3f {
+    let e1: vec3f = b - a;
+    let e2: vec3f = c - a;
+    let q: vec3f = p - a;
+    let d11: f32 = dot(e1, e1);
+    let d12: f32 = dot(e1, e2);
+    let d22: f32 = dot(e2, e2);
+    let den: f32 = d11 * d22 - d12 * d12;
+    if !(abs(den) > 0.0) {
+        return vec3f(1.0, 0.0, 0.0);
+    }
+    let w1: f32 = (d22 * dot(q, e1) - d12 * dot(q, e2)) / den;
+    let w2: f32 = (d11 * dot(q, e2) - d12 * dot(q, e1)) / den;
+    return vec3f(1.0 - w1 - w2, w1, w2);
+}
+fn shading_normal(n0: vec3f, n1: vec3f, n2: vec3f, w: vec3f, facing: vec3f) -> vec3f {
+    let s: vec3f = n0 * w.x + n1 * w.y + n2 * w.z;
+    let l2: f32 = dot(s, s);
+    if !(l2 > 1e-12) || !(l2 < 3.0e38) {
+        return facing;
+    }
+    let n: vec3f = s / sqrt(l2);
+    return select(n, -n, dot(n, facing) < 0.0);
+}
 fn ray_triangle(o: vec3f, d: vec3f, a: vec3f, b: vec3f, c: vec3f, t_min: f32, t_max: f32) -> f32 {
     let e1: vec3f = b - a;
     let e2: vec3f = c - a;
@@ -619,7 +643,7 @@ struct Connection {
 /// Samples pick `li` at `(u1, u2)`, applies the RR test with the light's own
 /// range at the sampled point's distance, casts the shadow ray (offset `eps`
 /// along `n`) and weights by `1/p` and the reservoir weight `w_res`.
-fn connect(li: u32, x: vec3f, n: vec3f, w_res: f32, u1: f32, u2: f32, eps: f32) -> Connection {
+fn connect(li: u32, x: vec3f, n: vec3f, ng: vec3f, w_res: f32, u1: f32, u2: f32, eps: f32) -> Connection {
     var c: Connection;
     c.e = vec3f(0.0);
     let l = lights[li];
@@ -631,7 +655,9 @@ fn connect(li: u32, x: vec3f, n: vec3f, w_res: f32, u1: f32, u2: f32, eps: f32) 
     }
     let w = v / sqrt(d2);
     c.cos_x = -dot(n, w);
-    if c.cos_x <= 0.0 || occluded(x + n * eps, c.y) {
+    // Lit through the shading normal `n` but behind the surface itself (its
+    // geometric normal `ng`): no light; the shadow ray leaves along `ng`.
+    if c.cos_x <= 0.0 || dot(ng, w) >= 0.0 || occluded(x + ng * eps, c.y) {
         return c;
     }
     c.e = light_intensity(l, w) * connection_factor(c.cos_x, d2, rt2[li], w_res);
@@ -699,8 +725,8 @@ fn finite3(v: vec3f) -> bool {
 /// One pick connected to `x`: its contribution times the MIS weight (area
 /// lights) against BSDF sampling; `w` is the selection weight (the
 /// reservoir's n/k or 1/pmf), `others` the other in-range lights.
-fn shade_pick(li: u32, x: vec3f, n: vec3f, w: f32, others: u32, u1: f32, u2: f32) -> vec3f {
-    let c = connect(li, x, n, w, u1, u2, params.eps);
+fn shade_pick(li: u32, x: vec3f, n: vec3f, ng: vec3f, w: f32, others: u32, u1: f32, u2: f32) -> vec3f {
+    let c = connect(li, x, n, ng, w, u1, u2, params.eps);
     var mis = 1.0;
     if light_area(lights[li]) > 0.0 && c.cos_x > 0.0 {
         mis = mis_weight(light_pdf(li, x, c.y, others), cosine_pdf(c.cos_x));
@@ -721,6 +747,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     let x = vtx.position;
     let n = vtx.normal;
+    let ng = vtx.gnormal;
     let seed = pcg_hash(params.seed ^ pcg_hash(i ^ pcg_hash(params.frame)));
     var h = pcg_hash(seed ^ 2654435769u);
     var sum = vec3f(0.0);
@@ -731,7 +758,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        sum += shade_pick(picks.light[s], x, n, w_res, picks.n - 1u, u1, xi_from_bits(h));
+        sum += shade_pick(picks.light[s], x, n, ng, w_res, picks.n - 1u, u1, xi_from_bits(h));
     }
     let add = vtx.weight * sum;
     if finite3(add) {

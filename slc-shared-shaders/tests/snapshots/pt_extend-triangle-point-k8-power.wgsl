@@ -19,7 +19,7 @@ struct GpuTriangle {
 }
 const NO_LIGHT: u32 = 4294967295;
 struct GpuPathVertex {
-    position: vec3f, alive: u32, normal: vec3f, pad: f32, weight: vec3f, pad1: f32
+    position: vec3f, alive: u32, normal: vec3f, pad: f32, weight: vec3f, pad1: f32, gnormal: vec3f, pad2: f32
 }
 struct GpuPathState {
     origin: vec3f, alive: u32, dir: vec3f, rng: u32, beta: vec3f, pdf_bsdf: f32, prev: vec3f, pad: u32
@@ -351,6 +351,30 @@ fn ray_aabb(o: vec3f, inv_d: vec3f, bmin: vec3f, bmax: vec3f, t_max: f32) -> f32
     }
     return -1.0;
 }
+fn barycentric(p: vec3f, a: vec3f, b: vec3f, c: vec3f) -> vec3f {
+    let e1: vec3f = b - a;
+    let e2: vec3f = c - a;
+    let q: vec3f = p - a;
+    let d11: f32 = dot(e1, e1);
+    let d12: f32 = dot(e1, e2);
+    let d22: f32 = dot(e2, e2);
+    let den: f32 = d11 * d22 - d12 * d12;
+    if !(abs(den) > 0.0) {
+        return vec3f(1.0, 0.0, 0.0);
+    }
+    let w1: f32 = (d22 * dot(q, e1) - d12 * dot(q, e2)) / den;
+    let w2: f32 = (d11 * dot(q, e2) - d12 * dot(q, e1)) / den;
+    return vec3f(1.0 - w1 - w2, w1, w2);
+}
+fn shading_normal(n0: vec3f, n1: vec3f, n2: vec3f, w: vec3f, facing: vec3f) -> vec3f {
+    let s: vec3f = n0 * w.x + n1 * w.y + n2 * w.z;
+    let l2: f32 = dot(s, s);
+    if !(l2 > 1e-12) || !(l2 < 3.0e38) {
+        return facing;
+    }
+    let n: vec3f = s / sqrt(l2);
+    return select(n, -n, dot(n, facing) < 0.0);
+}
 fn ray_triangle(o: vec3f, d: vec3f, a: vec3f, b: vec3f, c: vec3f, t_min: f32, t_max: f32) -> f32 {
     let e1: vec3f = b - a;
     let e2: vec3f = c - a;
@@ -594,10 +618,12 @@ fn finite3(v: vec3f) -> bool {
 @group(0) @binding(5) var<storage, read> geo_nodes: array<GpuGeoNode>;
 @group(0) @binding(6) var<storage, read> geo_tris: array<GpuTriangle>;
 @group(0) @binding(7) var<storage, read> albedo: array<vec4f>;
-@group(0) @binding(8) var<storage, read> candidates: array<u32>;
-@group(0) @binding(9) var<storage, read_write> paths: array<GpuPathState>;
-@group(0) @binding(10) var<storage, read_write> vertices: array<GpuPathVertex>;
-@group(0) @binding(11) var<storage, read_write> radiance: array<vec4f>;
+// Vertex normals, three per triangle in geo_tris order.
+@group(0) @binding(8) var<storage, read> geo_normals: array<vec4f>;
+@group(0) @binding(9) var<storage, read> candidates: array<u32>;
+@group(0) @binding(10) var<storage, read_write> paths: array<GpuPathState>;
+@group(0) @binding(11) var<storage, read_write> vertices: array<GpuPathVertex>;
+@group(0) @binding(12) var<storage, read_write> radiance: array<vec4f>;
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
 
 /// Next uniform in [0, 1) of a path's random state.
@@ -645,7 +671,9 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let tri = geo_tris[hit.tri];
     let x = st.origin + st.dir * hit.t;
     let gn = normalize(cross(tri.v1 - tri.v0, tri.v2 - tri.v0));
-    let n = select(gn, -gn, dot(gn, st.dir) > 0.0);
+    let ng = select(gn, -gn, dot(gn, st.dir) > 0.0);
+    let b = hit.tri * 3u;
+    let n = shading_normal(geo_normals[b].xyz, geo_normals[b + 1u].xyz, geo_normals[b + 2u].xyz, barycentric(x, tri.v0, tri.v1, tri.v2), ng);
     // Emission, one-sided like the light, seen directly or by BSDF sampling.
     if tri.light != NO_LIGHT && dot(gn, st.dir) < 0.0 {
         var w = 1.0;
@@ -664,10 +692,11 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let rho = albedo[tri.material].xyz;
     v.position = x;
     v.normal = n;
+    v.gnormal = ng;
     v.weight = st.beta * lambert_brdf(rho);
     v.alive = 1u;
     vertices[i] = v;
-    // Cosine-weighted BSDF sample: f·cos/pdf = ρ.
+    // Cosine-weighted BSDF sample about the shading normal: f·cos/pdf = ρ.
     var rng = st.rng;
     let u1 = next_uniform(&rng);
     let u2 = next_uniform(&rng);
@@ -676,9 +705,10 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     st.beta *= rho;
     st.prev = x;
     st.pdf_bsdf = cosine_pdf(cos_o);
-    st.origin = x + n * params.eps;
+    st.origin = x + ng * params.eps;
     st.dir = nd;
-    if cos_o <= 0.0 || params.depth + 1u >= params.max_depth {
+    // A direction below the surface itself ends the path.
+    if cos_o <= 0.0 || dot(nd, ng) <= 0.0 || params.depth + 1u >= params.max_depth {
         st.alive = 0u;
     }
     // Russian roulette on path length from the third bounce.

@@ -1,0 +1,48 @@
+//! Backend selection at run time: the CPU or the GPU implementor of each
+//! application's trait ([`slc_scene::backend`]), behind one boxed object.
+
+use clap::ValueEnum;
+use slc_cpu::pt::CpuPathTracer;
+use slc_cpu::vpl::VplContext;
+use slc_scene::backend::{DynIndirectShader, DynPathTracer};
+use slc_scene::pt::PtScene;
+use slc_wgpu::GpuContext;
+
+/// Which backend.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum Backend {
+    /// rayon on the CPU.
+    Cpu,
+    /// wgpu compute (a real GPU, or Mesa's lavapipe).
+    Gpu,
+}
+
+/// The GPU context when `backend` is `gpu`; its error says how to fall back.
+pub fn gpu_context(backend: Backend) -> Result<Option<GpuContext>, String> {
+    match backend {
+        Backend::Cpu => Ok(None),
+        Backend::Gpu => GpuContext::new().map(Some).map_err(|e| e.to_string()),
+    }
+}
+
+/// The indirect-light shader for `ctx`'s G-buffer and VPLs: the GPU's when
+/// `gpu` holds a context, else the CPU's (the context itself).
+pub fn indirect_shader<'a>(gpu: Option<&'a GpuContext>, ctx: &'a VplContext) -> Result<Box<dyn DynIndirectShader + 'a>, String> {
+    match gpu {
+        Some(g) => Ok(Box::new(slc_wgpu::vpl::GpuVpl::new(g, ctx.inputs()).map_err(|e| e.to_string())?)),
+        None => Ok(Box::new(ctx)),
+    }
+}
+
+/// The path tracer of `pts` at `width × height`: the GPU's when `gpu`
+/// holds a context, else the CPU's.
+pub fn path_tracer<'a>(gpu: Option<&'a GpuContext>, pts: &PtScene, width: u32, height: u32) -> Result<Box<dyn DynPathTracer + 'a>, String> {
+    match gpu {
+        Some(g) => Ok(Box::new(slc_wgpu::pt::GpuPt::new(g, pts, width, height).map_err(|e| e.to_string())?)),
+        None => Ok(Box::new(CpuPathTracer::new(pts))),
+    }
+}
+
+/// Passes per GPU submission batch in time- or spp-bounded loops (one
+/// readback per batch); the CPU goes one pass at a time.
+pub const GPU_BATCH: u32 = 16;

@@ -1,0 +1,111 @@
+//! The reports `slc bench` writes and `slc plot` reads (JSON), and their
+//! CSV form.
+
+use serde::{Deserialize, Serialize};
+
+/// One configuration's measurements.
+#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
+pub struct Run {
+    /// `slc`, `clamp` or `none`.
+    pub method: String,
+    /// Error bound ε (slc) or range R (clamp).
+    pub param: Option<f32>,
+    /// Culling and shading time (ms).
+    pub shading_ms: f64,
+    /// Whole frame (ms): G-buffer, RSM, direct, shading, denoise.
+    pub total_ms: f64,
+    /// RMSE of the final image against the reference.
+    pub rmse: f64,
+    /// Lights in the tile lists per shaded pixel (work of the loop).
+    pub lights_per_pixel: f64,
+    /// Lights kept by the roulette per shaded pixel.
+    pub kept_per_pixel: f64,
+    /// Loop evaluations per second of shading time (culling included).
+    pub evaluations_per_second: f64,
+}
+
+/// The JSON written by `slc bench`.
+#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
+pub struct Report {
+    /// Application (`vpl`).
+    pub app: String,
+    /// Backend (`cpu`).
+    pub backend: String,
+    /// Scene name.
+    pub scene: String,
+    /// Image width.
+    pub width: u32,
+    /// Image height.
+    pub height: u32,
+    /// Number of lights (VPLs).
+    pub lights: usize,
+    /// How times were taken.
+    pub timing: String,
+    /// Worker threads.
+    pub threads: usize,
+    /// Whether the reference came from the cache.
+    pub reference_from_cache: bool,
+    /// One entry per configuration.
+    pub runs: Vec<Run>,
+}
+
+/// One method's equal-time path-tracing run.
+#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
+pub struct PtRun {
+    /// Method.
+    pub method: String,
+    /// Error bound ε for the SLC methods.
+    pub param: Option<f32>,
+    /// Time spent (ms).
+    pub time_ms: f64,
+    /// Samples per pixel reached.
+    pub spp: u32,
+    /// RMSE against the reference at the end.
+    pub rmse: f64,
+    /// (time ms, spp, RMSE) after each pass: RMSE against time.
+    pub series: Vec<(f64, u32, f64)>,
+}
+
+/// The JSON of `slc bench --app pt`.
+#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
+pub struct PtReport {
+    /// `pt`.
+    pub app: String,
+    /// `cpu`, or `gpu: ADAPTER (timing source)`.
+    pub backend: String,
+    /// Scene name.
+    pub scene: String,
+    /// Image width.
+    pub width: u32,
+    /// Image height.
+    pub height: u32,
+    /// Lights.
+    pub lights: usize,
+    /// Reference: method and samples per pixel.
+    pub reference: String,
+    /// Estimated RMSE of the reference itself (half-vs-half / 2).
+    pub reference_noise: f64,
+    /// Whether the reference came from the cache.
+    pub reference_from_cache: bool,
+    /// One entry per method.
+    pub runs: Vec<PtRun>,
+}
+
+/// The runs as CSV, one line per configuration.
+pub fn to_csv(report: &Report) -> String {
+    let mut s = String::from("method,param,shading_ms,total_ms,rmse,lights_per_pixel,kept_per_pixel,evaluations_per_second\n");
+    for r in &report.runs {
+        s += &format!(
+            "{},{},{:.4},{:.4},{:.6},{:.3},{:.3},{:.4e}\n",
+            r.method,
+            r.param.map_or(String::new(), |p| p.to_string()),
+            r.shading_ms,
+            r.total_ms,
+            r.rmse,
+            r.lights_per_pixel,
+            r.kept_per_pixel,
+            r.evaluations_per_second
+        );
+    }
+    s
+}

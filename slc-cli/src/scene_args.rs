@@ -1,0 +1,107 @@
+//! Scene and image options shared by `render` and `bench`, and loading
+//! them (built-in, OBJ or scene file), with the loader's warnings printed.
+
+use crate::backends::Backend;
+use clap::{Args, ValueEnum};
+use slc_cpu::vpl::VplContext;
+use slc_scene::RenderError;
+use slc_scene::scene::Scene;
+use slc_scene::scene_file::{RenderSettings, SceneFile};
+use slc_scene::vpl::VplSettings;
+use std::path::Path;
+
+/// Which application of the paper.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum App {
+    /// Real-time indirect illumination with VPLs.
+    Vpl,
+    /// Progressive path tracing with many lights.
+    Pt,
+}
+
+/// Scene and image options shared by render and bench. Values resolve as:
+/// command-line flag, else the scene file's `[render]`, else the default.
+#[derive(Args, Clone, Debug)]
+pub struct SceneArgs {
+    /// Application.
+    #[arg(long, value_enum, default_value = "vpl")]
+    pub app: App,
+    /// Backend.
+    #[arg(long, value_enum, default_value = "cpu")]
+    pub backend: Backend,
+    /// `cornell` (built in), an OBJ file (with its MTL), or a TOML scene file.
+    #[arg(long, default_value = "cornell")]
+    pub scene: String,
+    /// Image width [default: 512].
+    #[arg(long)]
+    pub width: Option<u32>,
+    /// Image height [default: 512].
+    #[arg(long)]
+    pub height: Option<u32>,
+    /// Number of VPLs: s·s with s a multiple of 8 (4096, 16384, 65536, 262144) [default: 65536].
+    #[arg(long)]
+    pub vpls: Option<u64>,
+    /// Exposure E, used by the error bound and the PNG preview [default: 1].
+    #[arg(long)]
+    pub exposure: Option<f32>,
+    /// Clamp distance of the VPL fall-off (default: 1% of the scene diagonal).
+    #[arg(long)]
+    pub min_distance: Option<f32>,
+    /// Culling tile size in sub-image pixels.
+    #[arg(long, default_value_t = VplSettings::default().tile)]
+    pub tile: u32,
+}
+
+/// A scene ready to render, with its resolved settings.
+pub struct Loaded {
+    /// Shared buffers of the VPL application.
+    pub ctx: VplContext,
+    /// Image width.
+    pub width: u32,
+    /// Image height.
+    pub height: u32,
+    /// Exposure.
+    pub exposure: f32,
+    /// The scene file's `[render]` (empty for built-in and OBJ scenes).
+    pub file: RenderSettings,
+}
+
+impl SceneArgs {
+    /// The scene, its extra lights (scene files) and its `[render]` settings.
+    /// Material features the renderer ignores get one warning line per
+    /// material on stderr.
+    pub fn scene(&self) -> Result<(Scene, Vec<slc_core::light::Light>, RenderSettings), String> {
+        let loaded = if self.scene == "cornell" {
+            (Scene::cornell_box(), Vec::new(), RenderSettings::default())
+        } else if self.scene.ends_with(".toml") {
+            let f = SceneFile::load(Path::new(&self.scene)).map_err(|e| e.to_string())?;
+            (f.scene, f.lights, f.render)
+        } else {
+            (Scene::load_obj(Path::new(&self.scene)).map_err(|e| e.to_string())?, Vec::new(), RenderSettings::default())
+        };
+        let mut said = Vec::new();
+        for u in &loaded.0.unsupported {
+            let line = u.message();
+            if !said.contains(&line) {
+                eprintln!("warning: {line}");
+                said.push(line);
+            }
+        }
+        Ok(loaded)
+    }
+
+    /// Loads the scene and builds the shared VPL context.
+    pub fn load(&self) -> Result<Loaded, String> {
+        let (scene, _, file) = self.scene()?;
+        let width = self.width.or(file.width).unwrap_or(512);
+        let height = self.height.or(file.height).unwrap_or(512);
+        let vpls = self.vpls.or(file.vpls).unwrap_or(65536);
+        let exposure = self.exposure.or(file.exposure).unwrap_or(1.0);
+        let s = (vpls as f64).sqrt() as u64;
+        if s * s != vpls || s > u32::MAX as u64 {
+            return Err(RenderError::VplCount(vpls).to_string());
+        }
+        let ctx = VplContext::new(&scene, width, height, s as u32, self.min_distance).map_err(|e| e.to_string())?;
+        Ok(Loaded { ctx, width, height, exposure, file })
+    }
+}

@@ -1,0 +1,89 @@
+//! # slc-scene
+//!
+//! What both slc backends take and return, so that neither is the other's
+//! front end (std; no rayon, no wgpu):
+//!
+//! | module | holds |
+//! |---|---|
+//! | [`scene`] | the scene model: triangles with optional vertex normals, materials, camera, primary light, validation |
+//! | [`cornell`], [`obj`], [`scene_file`] | the built-in Cornell box, OBJ+MTL through tobj, TOML scene files |
+//! | [`lights`] | a light set with its BSH and power alias table; emissive triangles → triangle lights |
+//! | [`alias`] | Walker's alias table (the `power` baseline) |
+//! | [`image`] | linear HDR images: EXR/PNG I/O, RMSE |
+//! | [`vpl`] | application A's settings, G-buffer, VPLs, shaded irradiance and frame |
+//! | [`pt`] | application B's settings, method enum, prepared scene and accumulation |
+//! | [`backend`] | the contract both backends implement, one trait per application |
+//!
+//! ```
+//! use slc_scene::pt::PtScene;
+//! use slc_scene::scene::Scene;
+//!
+//! let pts = PtScene::new(&Scene::cornell_box(), &[]).unwrap();
+//! assert_eq!(pts.light_count(), 2); // the ceiling light's two triangles
+//! ```
+#![deny(missing_docs)]
+// `!(x > 0.0)` is how the validators reject NaN along with the bad range.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+pub mod alias;
+pub mod backend;
+pub mod cornell;
+pub mod image;
+pub mod lights;
+pub mod obj;
+pub mod pt;
+pub mod scene;
+pub mod scene_file;
+pub mod vpl;
+
+use thiserror::Error;
+
+/// A scene that cannot be loaded or used.
+#[derive(Debug, Error, PartialEq)]
+pub enum SceneError {
+    /// The file could not be read.
+    #[error("cannot read {0}: {1}")]
+    Io(String, String),
+    /// The OBJ/MTL could not be parsed.
+    #[error("invalid OBJ/MTL {0}: {1}")]
+    Obj(String, String),
+    /// No triangles.
+    #[error("the scene has no triangles")]
+    Empty,
+    /// A vertex with NaN or ±∞.
+    #[error("triangle {0} has a non-finite vertex")]
+    NonFiniteVertex(usize),
+    /// Another invalid value.
+    #[error("invalid scene: {0}")]
+    Invalid(String),
+    /// A scene file that does not parse or holds a bad value.
+    #[error("scene file {0}: {1}")]
+    File(String, String),
+}
+
+/// Invalid render settings.
+#[derive(Debug, Error, PartialEq)]
+pub enum RenderError {
+    /// Scene problem.
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    /// Image size out of range.
+    #[error("image size {0}x{1} must be within 1..=16384 on each side")]
+    Size(u32, u32),
+    /// VPL count that is not the square of a multiple of 8.
+    #[error("{0} VPLs: the count must be s*s for s a multiple of 8 up to 4096 (e.g. 4096, 16384, 65536, 262144)")]
+    VplCount(u64),
+    /// Another bad setting.
+    #[error("invalid setting: {0}")]
+    Setting(String),
+}
+
+/// An image that could not be written or read.
+#[derive(Debug, Error, PartialEq)]
+#[error("cannot write or read image {0}: {1}")]
+pub struct OutputError(pub String, pub String);
+
+/// Checks an image size: `1..=16384` on each side.
+pub fn check_size(width: u32, height: u32) -> Result<(), RenderError> {
+    if (1..=16384).contains(&width) && (1..=16384).contains(&height) { Ok(()) } else { Err(RenderError::Size(width, height)) }
+}

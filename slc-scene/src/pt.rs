@@ -1,0 +1,166 @@
+//! Application B's backend-neutral half: the light-selection methods and
+//! settings, the scene prepared for path tracing (lights from emissive
+//! triangles plus point/spot/IES lights, one BSH and power table), and the
+//! progressive accumulation both backends add their passes to.
+
+use crate::RenderError;
+use crate::image::Image;
+use crate::lights::{LightSet, emissive_triangles};
+use crate::scene::Scene;
+use glam::Vec3;
+use slc_core::light::Light;
+
+/// Reservoir slots of `slc-reservoir`.
+pub const RESERVOIR_K: usize = 8;
+
+/// Light selection for next-event estimation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PtMethod {
+    /// Stochastic light culling over the BSH, every candidate evaluated.
+    Slc,
+    /// Stochastic light culling with a k-slot reservoir over the candidates.
+    SlcReservoir,
+    /// One light, uniformly.
+    Uniform,
+    /// One light, in proportion to its power.
+    Power,
+    /// One light, by light-BVH importance sampling.
+    LightBvh,
+}
+
+impl PtMethod {
+    /// Name on the command line and in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            PtMethod::Slc => "slc",
+            PtMethod::SlcReservoir => "slc-reservoir",
+            PtMethod::Uniform => "uniform",
+            PtMethod::Power => "power",
+            PtMethod::LightBvh => "lightbvh",
+        }
+    }
+
+    /// Every method, in report order.
+    pub const ALL: [PtMethod; 5] = [PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::Uniform, PtMethod::Power, PtMethod::LightBvh];
+}
+
+/// Settings of a path-traced render.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PtSettings {
+    /// NEE method.
+    pub method: PtMethod,
+    /// SLC error bound ε.
+    pub error_bound: f32,
+    /// Exposure E (error bound).
+    pub exposure: f32,
+    /// Seed.
+    pub seed: u32,
+    /// Longest path (vertices after the camera).
+    pub max_depth: u32,
+}
+
+impl Default for PtSettings {
+    fn default() -> Self {
+        // ε = 0.3: each in-range light costs a shadow ray, so a larger bound
+        // (fewer, more heavily weighted candidates) wins at equal time. In the
+        // bunny scenes (docs/pt-bench-*.json) slc-reservoir's equal-time RMSE
+        // was 0.035 at ε = 0.03, 0.026 at 0.1, 0.022 at 0.3 and 1.0.
+        PtSettings { method: PtMethod::Slc, error_bound: 0.3, exposure: 1.0, seed: 1, max_depth: 8 }
+    }
+}
+
+/// A scene ready to path trace on either backend: the scene, its lights
+/// (emissive triangles first, in triangle order, then the extra lights)
+/// with their BSH and power table, and each triangle's light index.
+#[derive(Clone, Debug)]
+pub struct PtScene {
+    scene: Scene,
+    lights: LightSet,
+    /// Light index of each emissive triangle (u32::MAX for others).
+    light_of_triangle: Vec<u32>,
+}
+
+impl PtScene {
+    /// Emissive triangles become triangle lights; `extra` lights (point,
+    /// spot, IES) join them in one BSH. An emissive triangle of zero area is
+    /// an error, and so is a scene with no light.
+    pub fn new(scene: &Scene, extra: &[Light]) -> Result<PtScene, RenderError> {
+        scene.validate()?;
+        let (mut lights, light_of_triangle) = emissive_triangles(scene)?;
+        lights.extend(extra.iter().cloned());
+        if lights.is_empty() {
+            return Err(RenderError::Setting("the scene has no light (no emissive triangle, no point/spot/IES light)".into()));
+        }
+        Ok(PtScene { scene: scene.clone(), lights: LightSet::new(lights)?, light_of_triangle })
+    }
+
+    /// Number of lights.
+    pub fn light_count(&self) -> usize {
+        self.lights.len()
+    }
+
+    /// The scene.
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// The lights with their BSH and power table.
+    pub fn light_set(&self) -> &LightSet {
+        &self.lights
+    }
+
+    /// The lights, in BSH light-index order.
+    pub fn lights(&self) -> &[Light] {
+        self.lights.lights()
+    }
+
+    /// The lights, as text (for cache keys).
+    pub fn lights_debug(&self) -> String {
+        format!("{:?}", self.lights.lights())
+    }
+
+    /// Light index of each scene triangle (`u32::MAX` when it does not emit).
+    pub fn light_of_triangle(&self) -> &[u32] {
+        &self.light_of_triangle
+    }
+}
+
+/// Accumulated progressive render.
+pub struct PtRender {
+    /// Sum of per-pass radiance.
+    sum: Vec<Vec3>,
+    /// Passes done.
+    pub passes: u32,
+    /// Time spent (ms).
+    pub time_ms: f64,
+    width: u32,
+    height: u32,
+}
+
+impl PtRender {
+    /// An empty accumulation.
+    pub fn new(width: u32, height: u32) -> Self {
+        PtRender { sum: vec![Vec3::ZERO; width as usize * height as usize], passes: 0, time_ms: 0.0, width, height }
+    }
+
+    /// Adds `passes` passes rendered elsewhere (e.g. on the GPU): their
+    /// per-pixel sum, with non-finite pixels dropped, and their time.
+    pub fn accumulate(&mut self, sum: &[Vec3], passes: u32, time_ms: f64) {
+        for (a, v) in self.sum.iter_mut().zip(sum) {
+            *a += if v.is_finite() { *v } else { Vec3::ZERO };
+        }
+        self.passes += passes;
+        self.time_ms += time_ms;
+    }
+
+    /// Image width and height.
+    pub fn size(&self) -> (u32, u32) {
+        (self.width, self.height)
+    }
+
+    /// The mean image so far.
+    pub fn image(&self) -> Image {
+        let n = self.passes.max(1) as f32;
+        Image { width: self.width, height: self.height, data: self.sum.iter().map(|s| *s / n).collect() }
+    }
+}

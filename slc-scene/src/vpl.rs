@@ -1,0 +1,225 @@
+//! Application A's backend-neutral half (the paper's real-time VPL
+//! indirect illumination): methods and settings, the G-buffer and VPLs a
+//! frame is shaded from, the 8×8 interleaving, and what a backend returns.
+
+use crate::RenderError;
+use crate::image::Image;
+use glam::Vec3;
+use slc_core::range::RangeParams;
+
+/// How the indirect light is computed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum VplMethod {
+    /// Stochastic light culling (error bound ε).
+    Slc,
+    /// Clamped ranges (range R), no reweighting.
+    Clamp,
+    /// Interleaved, unculled.
+    None,
+    /// Every VPL at every pixel: the ground truth.
+    Reference,
+}
+
+impl VplMethod {
+    /// Lower-case name used on the command line and in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            VplMethod::Slc => "slc",
+            VplMethod::Clamp => "clamp",
+            VplMethod::None => "none",
+            VplMethod::Reference => "reference",
+        }
+    }
+}
+
+/// Per-run settings (the scene-dependent part lives in [`VplContext`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VplSettings {
+    /// Method.
+    pub method: VplMethod,
+    /// SLC error bound ε (radiance units).
+    pub error_bound: f32,
+    /// Clamp range R (scene units).
+    pub range: f32,
+    /// Exposure E used by the error bound.
+    pub exposure: f32,
+    /// Seed of the per-VPL ξ.
+    pub seed: u32,
+    /// Frame number (a new ξ set per frame).
+    pub frame: u32,
+    /// Tile size in sub-image pixels.
+    pub tile: u32,
+    /// Apply the cross-bilateral filter (interleaved methods).
+    pub denoise: bool,
+    /// Give every light this ξ instead of the hashed per-light one. Not an
+    /// estimator on its own: averaging frames over a grid of ξ values is
+    /// quadrature of the expectation over ξ (how the tests prove the
+    /// pipeline unbiased). Must lie in `[0, 1)`.
+    pub fixed_xi: Option<f32>,
+}
+
+impl Default for VplSettings {
+    fn default() -> Self {
+        VplSettings {
+            method: VplMethod::Slc,
+            error_bound: 0.008,
+            range: 0.1,
+            exposure: 1.0,
+            seed: 1,
+            frame: 0,
+            tile: 4,
+            denoise: true,
+            fixed_xi: None,
+        }
+    }
+}
+
+impl VplSettings {
+    /// Checks the settings every backend shares and returns the error-bound
+    /// parameters.
+    pub fn validate(&self) -> Result<RangeParams, RenderError> {
+        let params = RangeParams::new(self.error_bound, self.exposure).map_err(|e| RenderError::Setting(e.to_string()))?;
+        if self.method == VplMethod::Clamp && !(self.range.is_finite() && self.range > 0.0) {
+            return Err(RenderError::Setting(format!("clamp range {} must be finite and > 0", self.range)));
+        }
+        if let Some(x) = self.fixed_xi {
+            slc_core::range::Xi::new(x).map_err(|e| RenderError::Setting(e.to_string()))?;
+        }
+        if self.tile == 0 {
+            return Err(RenderError::Setting("tile size must be > 0".into()));
+        }
+        Ok(params)
+    }
+}
+
+/// Interleaving period (8×8 subsets, as in the paper).
+pub const PERIOD: u32 = 8;
+
+/// Timings (milliseconds) and work counts of one frame.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct VplStats {
+    /// G-buffer (shared by all methods; measured once per context).
+    pub gbuffer_ms: f64,
+    /// Reflective shadow map (once per context).
+    pub rsm_ms: f64,
+    /// Direct light with shadow rays (once per context).
+    pub direct_ms: f64,
+    /// Range computation, tile culling and shading.
+    pub shading_ms: f64,
+    /// Denoise, de-interleave and composition.
+    pub denoise_ms: f64,
+    /// Sum of the above.
+    pub total_ms: f64,
+    /// Number of VPLs.
+    pub vpls: usize,
+    /// Lights in the shaded pixels' tile lists, per shaded pixel (the loop's work).
+    pub lights_per_pixel: f64,
+    /// Lights that passed the keep test, per shaded pixel.
+    pub kept_per_pixel: f64,
+    /// Light evaluations in the shading loop.
+    pub evaluations: u64,
+}
+
+/// Indirect irradiance of one frame before denoise and composition (what a
+/// backend computes).
+#[derive(Clone, Debug)]
+pub struct Shaded {
+    /// Irradiance per pixel (zero where no surface).
+    pub irradiance: Vec<Vec3>,
+    /// Lights that passed the keep test, per pixel.
+    pub kept: Vec<u32>,
+    /// Light evaluations of the shading loop.
+    pub evaluations: u64,
+    /// Shading time (ms).
+    pub shading_ms: f64,
+    /// `Some(ms)` when the backend has already denoised `irradiance` (the
+    /// GPU does, with the same filter), so the frame's composition does not.
+    pub denoised_ms: Option<f64>,
+}
+
+/// One rendered frame.
+#[derive(Clone, Debug)]
+pub struct VplFrame {
+    /// Final linear radiance.
+    pub image: Image,
+    /// Timings and counts.
+    pub stats: VplStats,
+}
+
+/// Per-pixel surface attributes (row-major, y down). Pixels that see no
+/// surface have `depth = ∞` and zero attributes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GBuffer {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// World position of the visible surface.
+    pub position: Vec<Vec3>,
+    /// Unit normal, flipped to face the camera.
+    pub normal: Vec<Vec3>,
+    /// Diffuse albedo.
+    pub albedo: Vec<Vec3>,
+    /// Emitted radiance.
+    pub emission: Vec<Vec3>,
+    /// Distance from the camera (∞ for background).
+    pub depth: Vec<f32>,
+}
+
+impl GBuffer {
+    /// `true` where the pixel sees a surface.
+    pub fn valid(&self, i: usize) -> bool {
+        self.depth[i].is_finite()
+    }
+}
+
+/// VPLs in structure-of-arrays form, one per RSM texel (row-major), so
+/// `index = ty · size + tx`. Texels that see nothing, or lie outside the spot
+/// cone, are VPLs of zero flux (never kept by SLC, zero contribution).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Vpls {
+    /// RSM resolution (`size²` VPLs).
+    pub size: u32,
+    /// Positions.
+    pub position: Vec<Vec3>,
+    /// Unit normals (facing the light).
+    pub normal: Vec<Vec3>,
+    /// Reflected RGB flux Φ (W).
+    pub flux: Vec<Vec3>,
+}
+
+impl Vpls {
+    /// Number of VPLs.
+    pub fn len(&self) -> usize {
+        self.position.len()
+    }
+    /// `true` when there are none.
+    pub fn is_empty(&self) -> bool {
+        self.position.is_empty()
+    }
+}
+
+/// What shading a VPL frame needs, whoever made it (the CPU backend ray
+/// casts it; an engine rasterizes its own): the G-buffer, the VPLs of a
+/// `size × size` reflective shadow map, and the squared clamp distance of
+/// the VPL fall-off.
+#[derive(Clone, Debug, PartialEq)]
+pub struct VplInputs {
+    /// The G-buffer.
+    pub gbuffer: GBuffer,
+    /// The VPLs, one per RSM texel.
+    pub vpls: Vpls,
+    /// Squared clamp distance of the VPL fall-off.
+    pub min_d2: f32,
+}
+
+impl VplInputs {
+    /// RSM texel indices of VPL subset `sub` (`0 ≤ sub < PERIOD²`): texels
+    /// `(tx, ty)` with `ty mod P = sub / P` and `tx mod P = sub mod P`,
+    /// row-major. Pixel `(x, y)` uses subset `(y mod P)·P + x mod P`.
+    pub fn subset_members(&self, sub: usize) -> Vec<usize> {
+        let (p, size) = (PERIOD as usize, self.vpls.size as usize);
+        let (sx, sy) = (sub % p, sub / p);
+        (sy..size).step_by(p).flat_map(|ty| (sx..size).step_by(p).map(move |tx| ty * size + tx)).collect()
+    }
+}
