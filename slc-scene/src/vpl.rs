@@ -32,7 +32,7 @@ impl VplMethod {
     }
 }
 
-/// Per-run settings (the scene-dependent part lives in [`VplContext`]).
+/// Per-run settings (the scene-dependent part lives in the [`VplInputs`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct VplSettings {
     /// Method.
