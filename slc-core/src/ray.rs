@@ -22,6 +22,23 @@ crate::shared! {
         return -1.0;
     }
 
+    /// Unit geometric normal of triangle (a, b, c) from its winding,
+    /// `normalize((b − a) × (c − a))`, or zero for a degenerate triangle.
+    pub fn triangle_normal(a: vec3f, b: vec3f, c: vec3f) -> vec3f {
+        let n: vec3f = cross(b - a, c - a);
+        let l2: f32 = dot(n, n);
+        if !(l2 > 0.0) || !(l2 < 3.0e38) {
+            return vec3f(0.0, 0.0, 0.0);
+        }
+        return n / sqrt(l2);
+    }
+
+    /// `n` turned to face against the ray direction `dir` (toward where the
+    /// ray came from): `-n` when `n · dir > 0`.
+    pub fn face_against(n: vec3f, dir: vec3f) -> vec3f {
+        return select(n, -n, dot(n, dir) > 0.0);
+    }
+
     /// Barycentric coordinates `(w₀, w₁, w₂)` of `p` (projected onto the
     /// plane of triangle (a, b, c)), `p ≈ w₀a + w₁b + w₂c` (Ericson, *Real-Time
     /// Collision Detection*, §3.4); `(1, 0, 0)` for a degenerate triangle.
@@ -113,6 +130,10 @@ mod tests {
         assert!(shading_normal(-Vec3::Z, -Vec3::Z, -Vec3::Z, w, Vec3::Z).z > 0.99);
         assert_eq!(shading_normal(Vec3::Z, -Vec3::Z, Vec3::Z, Vec3::new(0.5, 0.5, 0.0), Vec3::Y), Vec3::Y);
         assert_eq!(shading_normal(Vec3::NAN, Vec3::Z, Vec3::Z, w, Vec3::Y), Vec3::Y);
+        assert_eq!(triangle_normal(a, b, c), Vec3::Z);
+        assert_eq!(triangle_normal(a, b, b), Vec3::ZERO);
+        assert_eq!(face_against(Vec3::Z, Vec3::Z), -Vec3::Z);
+        assert_eq!(face_against(Vec3::Z, -Vec3::Z), Vec3::Z);
     }
 
     #[test]

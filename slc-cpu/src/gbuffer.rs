@@ -3,6 +3,7 @@
 use crate::geometry::Geometry;
 use glam::Vec3;
 use rayon::prelude::*;
+use slc_core::ray::face_against;
 use slc_scene::scene::Scene;
 use slc_scene::vpl::GBuffer;
 
@@ -20,10 +21,7 @@ pub fn render_gbuffer(scene: &Scene, geo: &Geometry, width: u32, height: u32) ->
             match geo.intersect(scene.camera.position, dir, 0.0, f32::INFINITY) {
                 Some(h) => {
                     let p = scene.camera.position + dir * h.t;
-                    let mut gn = geo.normal(h.triangle);
-                    if gn.dot(dir) > 0.0 {
-                        gn = -gn;
-                    }
+                    let gn = face_against(geo.normal(h.triangle), dir);
                     let sn = scene.shading_normal(h.triangle as usize, p, gn);
                     let m = scene.materials[scene.material_of[h.triangle as usize] as usize];
                     (p, sn, m.albedo, m.emission, h.t, gn)

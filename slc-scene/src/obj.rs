@@ -131,7 +131,7 @@ impl Scene {
                 };
                 let tri = [v(corners[0])?, v(corners[1])?, v(corners[2])?];
                 if any_normals {
-                    let geometric = (tri[1] - tri[0]).cross(tri[2] - tri[0]).normalize_or_zero();
+                    let geometric = slc_core::ray::triangle_normal(tri[0], tri[1], tri[2]);
                     let mut ns = [geometric; 3];
                     if has_normals {
                         for (k, n) in ns.iter_mut().enumerate() {

@@ -209,7 +209,7 @@ impl Scene {
     /// degenerate triangle).
     pub fn geometric_normal(&self, i: usize) -> Vec3 {
         let [a, b, c] = self.triangles[i];
-        (b - a).cross(c - a).normalize_or_zero()
+        slc_core::ray::triangle_normal(a, b, c)
     }
 
     /// The three vertex normals of triangle `i` (its geometric normal three

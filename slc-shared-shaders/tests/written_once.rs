@@ -33,6 +33,8 @@ fn templates_do_not_contain_core_formulas() {
         "2.0 * py",
         "pow(dn",
         "* dn8",
+        "normalize(cross(",
+        "dot(gn, st.dir) > 0.0",
     ];
     let mut n = 0;
     for (name, src) in slc_shared_shaders::templates() {

@@ -40,6 +40,7 @@ use slc_core::light::{Light, connection_factor};
 use slc_core::mis::{cosine_direction, cosine_pdf, lambert_brdf, light_strategy_pdf, mis_power};
 use slc_core::path::path_survival;
 use slc_core::range::{RangeParams, random_range2, slc_keep};
+use slc_core::ray::face_against;
 use slc_core::reservoir::{Reservoir, reservoir_weight};
 use slc_core::sphere::Sphere;
 use slc_core::xi::{xi_for, xi_from_bits};
@@ -287,7 +288,7 @@ impl CpuPathTracer {
             let x = org + dir * hit.t;
             let tri = hit.triangle as usize;
             let geo_n = self.geo.normal(hit.triangle);
-            let ng = if geo_n.dot(dir) > 0.0 { -geo_n } else { geo_n };
+            let ng = face_against(geo_n, dir);
             let n = scene.shading_normal(tri, x, ng);
             let mat = scene.materials[scene.material_of[tri] as usize];
             // Emission seen directly or by BSDF sampling (one-sided, like the light).
@@ -326,6 +327,23 @@ impl CpuPathTracer {
             }
         }
         radiance
+    }
+}
+
+impl PathTracer for CpuPathTracer {
+    type Error = RenderError;
+
+    fn describe(&self) -> String {
+        format!("cpu ({} threads)", rayon::current_num_threads())
+    }
+
+    fn supports(&self, _method: PtMethod) -> bool {
+        true
+    }
+
+    fn render(&mut self, acc: &mut PtRender, settings: &PtSettings, passes: u32) -> Result<Timing, RenderError> {
+        CpuPathTracer::render(self, acc, settings, passes)?;
+        Ok(Timing::Wall)
     }
 }
 
@@ -368,22 +386,5 @@ mod tests {
             }
         }
         assert!(checked >= 2 * PtMethod::ALL.len() * 3, "{checked} cases");
-    }
-}
-
-impl PathTracer for CpuPathTracer {
-    type Error = RenderError;
-
-    fn describe(&self) -> String {
-        format!("cpu ({} threads)", rayon::current_num_threads())
-    }
-
-    fn supports(&self, _method: PtMethod) -> bool {
-        true
-    }
-
-    fn render(&mut self, acc: &mut PtRender, settings: &PtSettings, passes: u32) -> Result<Timing, RenderError> {
-        CpuPathTracer::render(self, acc, settings, passes)?;
-        Ok(Timing::Wall)
     }
 }

@@ -99,11 +99,6 @@ impl VplContext {
         &self.scene
     }
 
-    /// RSM texel indices of VPL subset `sub` ([`VplInputs::subset_members`]).
-    pub fn subset_members(&self, sub: usize) -> Vec<usize> {
-        self.inputs.subset_members(sub)
-    }
-
     /// Squared clamp distance of the VPL fall-off.
     pub fn min_d2(&self) -> f32 {
         self.inputs.min_d2
@@ -116,15 +111,10 @@ impl VplContext {
         Ok(self.finish(shaded, settings))
     }
 
-    /// Checks settings shared by every backend ([`VplSettings::validate`]).
-    pub fn check(&self, s: &VplSettings) -> Result<RangeParams, RenderError> {
-        s.validate()
-    }
-
     /// Indirect irradiance at every pixel (before denoise and albedo), on the
     /// CPU.
     pub fn shade(&self, settings: &VplSettings) -> Result<Shaded, RenderError> {
-        let params = self.check(settings)?;
+        let params = settings.validate()?;
         let t = Instant::now();
         let (irradiance, kept, evaluations) = match settings.method {
             VplMethod::Reference => self.shade_reference(),

@@ -6,6 +6,7 @@ use crate::geometry::Geometry;
 use glam::Vec3;
 use rayon::prelude::*;
 use slc_core::light::Light;
+use slc_core::ray::face_against;
 use slc_scene::scene::{PrimaryLight, Scene};
 use slc_scene::vpl::Vpls;
 
@@ -68,10 +69,7 @@ pub fn reflective_shadow_map(scene: &Scene, geo: &Geometry, size: u32) -> Vpls {
 fn hit_texel(scene: &Scene, geo: &Geometry, origin: Vec3, dir: Vec3, incident: Vec3, diag: f32) -> (Vec3, Vec3, Vec3) {
     match geo.intersect(origin, dir, 1e-5 * diag, f32::INFINITY) {
         Some(h) => {
-            let mut gn = geo.normal(h.triangle);
-            if gn.dot(dir) > 0.0 {
-                gn = -gn;
-            }
+            let gn = face_against(geo.normal(h.triangle), dir);
             let p = origin + dir * h.t;
             let albedo = scene.materials[scene.material_of[h.triangle as usize] as usize].albedo;
             (p, scene.shading_normal(h.triangle as usize, p, gn), incident * albedo)

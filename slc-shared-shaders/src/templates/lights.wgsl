@@ -17,7 +17,7 @@ fn light_intensity(l: GpuLight, w: vec3f) -> vec3f {
 {% endif %}
 {% if triangle %}
         case LIGHT_TRIANGLE: {
-            return l.intensity * triangle_lobe(normalize(cross(l.p1 - l.p0, l.p2 - l.p0)), l.a, w);
+            return l.intensity * triangle_lobe(triangle_normal(l.p0, l.p1, l.p2), l.a, w);
         }
 {% endif %}
 {% if vpl %}
@@ -52,7 +52,7 @@ fn light_area(l: GpuLight) -> f32 {
 fn light_normal(l: GpuLight) -> vec3f {
 {% if triangle %}
     if l.kind == LIGHT_TRIANGLE {
-        return normalize(cross(l.p1 - l.p0, l.p2 - l.p0));
+        return triangle_normal(l.p0, l.p1, l.p2);
     }
 {% endif %}
     return vec3f(0.0);

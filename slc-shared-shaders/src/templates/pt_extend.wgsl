@@ -71,8 +71,8 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     let tri = geo_tris[hit.tri];
     let x = st.origin + st.dir * hit.t;
-    let gn = normalize(cross(tri.v1 - tri.v0, tri.v2 - tri.v0));
-    let ng = select(gn, -gn, dot(gn, st.dir) > 0.0);
+    let gn = triangle_normal(tri.v0, tri.v1, tri.v2);
+    let ng = face_against(gn, st.dir);
     let b = hit.tri * 3u;
     let n = shading_normal(geo_normals[b].xyz, geo_normals[b + 1u].xyz, geo_normals[b + 2u].xyz, barycentric(x, tri.v0, tri.v1, tri.v2), ng);
     // Emission, one-sided like the light, seen directly or by BSDF sampling.

@@ -351,6 +351,17 @@ fn ray_aabb(o: vec3f, inv_d: vec3f, bmin: vec3f, bmax: vec3f, t_max: f32) -> f32
     }
     return -1.0;
 }
+fn triangle_normal(a: vec3f, b: vec3f, c: vec3f) -> vec3f {
+    let n: vec3f = cross(b - a, c - a);
+    let l2: f32 = dot(n, n);
+    if !(l2 > 0.0) || !(l2 < 3.0e38) {
+        return vec3f(0.0, 0.0, 0.0);
+    }
+    return n / sqrt(l2);
+}
+fn face_against(n: vec3f, dir: vec3f) -> vec3f {
+    return select(n, -n, dot(n, dir) > 0.0);
+}
 fn barycentric(p: vec3f, a: vec3f, b: vec3f, c: vec3f) -> vec3f {
     let e1: vec3f = b - a;
     let e2: vec3f = c - a;

@@ -351,6 +351,17 @@ fn ray_aabb(o: vec3f, inv_d: vec3f, bmin: vec3f, bmax: vec3f, t_max: f32) -> f32
     }
     return -1.0;
 }
+fn triangle_normal(a: vec3f, b: vec3f, c: vec3f) -> vec3f {
+    let n: vec3f = cross(b - a, c - a);
+    let l2: f32 = dot(n, n);
+    if !(l2 > 0.0) || !(l2 < 3.0e38) {
+        return vec3f(0.0, 0.0, 0.0);
+    }
+    return n / sqrt(l2);
+}
+fn face_against(n: vec3f, dir: vec3f) -> vec3f {
+    return select(n, -n, dot(n, dir) > 0.0);
+}
 fn barycentric(p: vec3f, a: vec3f, b: vec3f, c: vec3f) -> vec3f {
     let e1: vec3f = b - a;
     let e2: vec3f = c - a;
@@ -469,7 +480,7 @@ fn light_intensity(l: GpuLight, w: vec3f) -> vec3f {
             return l.intensity * ies_candela_dir(0u, l.ies_base, dot(w, l.p1), dot(w, l.p2), dot(w, side));
         }
         case LIGHT_TRIANGLE: {
-            return l.intensity * triangle_lobe(normalize(cross(l.p1 - l.p0, l.p2 - l.p0)), l.a, w);
+            return l.intensity * triangle_lobe(triangle_normal(l.p0, l.p1, l.p2), l.a, w);
         }
         case LIGHT_VPL: { return l.intensity * vpl_lobe(l.p1, w); }
         default: { return vec3f(0.0); }
@@ -496,7 +507,7 @@ fn light_area(l: GpuLight) -> f32 {
 /// Unit normal of an area light (zero for point-like lights).
 fn light_normal(l: GpuLight) -> vec3f {
     if l.kind == LIGHT_TRIANGLE {
-        return normalize(cross(l.p1 - l.p0, l.p2 - l.p0));
+        return triangle_normal(l.p0, l.p1, l.p2);
     }
     return vec3f(0.0);
 }
