@@ -51,6 +51,7 @@ pub mod bsh;
 pub mod denoise;
 pub mod estimator;
 pub mod ies;
+pub mod interleave;
 pub mod light;
 pub mod mis;
 pub mod path;

@@ -10,7 +10,7 @@
 
 use crate::LightError;
 use crate::ies::IesProfile;
-use crate::range::slc_weight;
+use crate::range::{intensity_measure, slc_weight, threshold_range2};
 use crate::sphere::Sphere;
 use crate::wgsl::*;
 use alloc::sync::Arc;
@@ -25,6 +25,13 @@ crate::shared! {
     /// metres): the point-light singularity at `d = 0` gives a large finite
     /// value instead of ∞ on both backends.
     pub const MIN_D2: f32 = 0.000000000001;
+
+    /// `r_t²` of a VPL of flux `flux`: the threshold range of its peak
+    /// intensity `Φ/π` (cosine lobe) for exposure `E`, error bound `ε` and
+    /// intensity measure `mode` ([`crate::range::intensity_measure`]).
+    pub fn vpl_rt2(flux: vec3f, exposure: f32, error_bound: f32, mode: u32) -> f32 {
+        return threshold_range2(intensity_measure(flux * INV_PI, mode), exposure, error_bound);
+    }
 
     /// Radius `R + √r²` of the range sphere of a light with extent `R`
     /// (0 for points, the minimal-sphere radius for triangles; talk: "Area
@@ -360,9 +367,9 @@ pub fn emitted_powers(lights: &[Light]) -> Vec<Vec3> {
 
 /// `r_t²` of a VPL of flux `Φ` (interleave-scaled where it applies): its
 /// peak intensity is `Φ/π` (cosine lobe), shared by the CPU and GPU
-/// backends.
+/// backends ([`vpl_rt2`] is the same formula in shared code).
 pub fn vpl_threshold_range2(params: &crate::range::RangeParams, flux: Vec3) -> f32 {
-    params.threshold_range2(flux * INV_PI)
+    vpl_rt2(flux, params.exposure(), params.error_bound(), params.measure().mode())
 }
 
 /// Any light slc culls.

@@ -184,6 +184,68 @@ slc_core::shared! {
         pub min_d2: f32,
     }
 
+    /// A VPL as an engine writes it into the VPL buffer of the indirect
+    /// pass (`vpl_pack` with a buffer source), 48 bytes.
+    pub struct GpuVplRecord {
+        /// Position.
+        pub position: vec3f,
+        /// Padding.
+        pub pad0: f32,
+        /// Unit normal of the surface the VPL lies on.
+        pub normal: vec3f,
+        /// Padding.
+        pub pad1: f32,
+        /// Flux (RGB), unscaled.
+        pub flux: vec3f,
+        /// Padding.
+        pub pad2: f32,
+    }
+
+    /// Uniforms of `vpl_pack`.
+    pub struct PackParams {
+        /// Number of VPLs (`size²` for an RSM).
+        pub count: u32,
+        /// Edge of the RSM in texels (0 for a VPL buffer).
+        pub size: u32,
+        /// VPLs per interleaved subset.
+        pub per_subset: u32,
+        /// Intensity measure of `vpl_rt2` (`IntensityMeasure::mode`).
+        pub mode: u32,
+        /// Exposure `E`.
+        pub exposure: f32,
+        /// Error bound `ε`.
+        pub error_bound: f32,
+        /// Flux scale of interleaving (`P²`).
+        pub scale: f32,
+        /// 1: write `r_t²` (SLC; `light_update` then draws `r²`); 0: write
+        /// `r_t² = 0` and `r² = fixed_r2`.
+        pub slc: u32,
+        /// `r²` of every VPL when `slc = 0` (clamp: `R²`).
+        pub fixed_r2: f32,
+        /// Padding.
+        pub pad0: u32,
+        /// Padding.
+        pub pad1: u32,
+        /// Padding.
+        pub pad2: u32,
+    }
+
+    /// Uniforms of `gbuffer_import` and `irradiance_export`.
+    pub struct ImageParams {
+        /// Eye position (depth = distance from it).
+        pub eye: vec3f,
+        /// Image width.
+        pub width: u32,
+        /// Image height.
+        pub height: u32,
+        /// Padding.
+        pub pad0: u32,
+        /// Padding.
+        pub pad1: u32,
+        /// Padding.
+        pub pad2: u32,
+    }
+
     /// Uniforms of `bsh_reservoir` and `pt_connect`.
     pub struct ShadeParams {
         /// Shading points (or path vertices).

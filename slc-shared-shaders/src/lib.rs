@@ -251,12 +251,28 @@ pub enum Kernel {
     PtExtend,
     /// Cross-bilateral denoise of the VPL irradiance.
     VplDenoise,
+    /// An engine's G-buffer textures into the shading buffers.
+    GbufferImport,
+    /// VPLs (from an RSM or a VPL buffer) into the interleaved light buffer.
+    VplPack,
+    /// The irradiance into an engine's storage texture.
+    IrradianceExport,
 }
 
 impl Kernel {
     /// All kernels.
-    pub const ALL: [Kernel; 7] =
-        [Kernel::LightUpdate, Kernel::BshRefit, Kernel::VplTiled, Kernel::VplDenoise, Kernel::BshReservoir, Kernel::PtConnect, Kernel::PtExtend];
+    pub const ALL: [Kernel; 10] = [
+        Kernel::LightUpdate,
+        Kernel::BshRefit,
+        Kernel::VplTiled,
+        Kernel::VplDenoise,
+        Kernel::BshReservoir,
+        Kernel::PtConnect,
+        Kernel::PtExtend,
+        Kernel::GbufferImport,
+        Kernel::VplPack,
+        Kernel::IrradianceExport,
+    ];
 
     /// File stem / name.
     pub fn name(self) -> &'static str {
@@ -268,6 +284,9 @@ impl Kernel {
             Kernel::PtConnect => "pt_connect",
             Kernel::PtExtend => "pt_extend",
             Kernel::VplDenoise => "vpl_denoise",
+            Kernel::GbufferImport => "gbuffer_import",
+            Kernel::VplPack => "vpl_pack",
+            Kernel::IrradianceExport => "irradiance_export",
         }
     }
 }
@@ -307,6 +326,35 @@ pub enum Selection {
     Power,
 }
 
+/// Where `vpl_pack` reads its VPLs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum VplSource {
+    /// A reflective shadow map: position, normal and flux textures, one VPL
+    /// per texel.
+    Rsm,
+    /// A storage buffer of `GpuVplRecord`s.
+    Buffer,
+}
+
+/// Texel format of the storage texture `irradiance_export` writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum OutputFormat {
+    /// `rgba16float`.
+    Rgba16Float,
+    /// `rgba32float`.
+    Rgba32Float,
+}
+
+impl OutputFormat {
+    /// The WGSL texel format name.
+    pub fn wgsl(self) -> &'static str {
+        match self {
+            OutputFormat::Rgba16Float => "rgba16float",
+            OutputFormat::Rgba32Float => "rgba32float",
+        }
+    }
+}
+
 /// What a kernel is specialised to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Features {
@@ -328,6 +376,10 @@ pub struct Features {
     pub heuristic: Heuristic,
     /// Light selection of `pt_connect` and `pt_extend`.
     pub selection: Selection,
+    /// VPL source of `vpl_pack`.
+    pub vpl_source: VplSource,
+    /// Storage-texture format of `irradiance_export`.
+    pub output_format: OutputFormat,
 }
 
 impl Default for Features {
@@ -342,11 +394,13 @@ impl Default for Features {
             method: CullMethod::Slc,
             heuristic: Heuristic::Power,
             selection: Selection::Reservoir,
+            vpl_source: VplSource::Rsm,
+            output_format: OutputFormat::Rgba16Float,
         }
     }
 }
 
-const TEMPLATES: [(&str, &str); 13] = [
+const TEMPLATES: [(&str, &str); 16] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
     ("geometry.wgsl", include_str!("templates/geometry.wgsl")),
@@ -359,6 +413,9 @@ const TEMPLATES: [(&str, &str); 13] = [
     ("pt_connect", include_str!("templates/pt_connect.wgsl")),
     ("pt_mis.wgsl", include_str!("templates/pt_mis.wgsl")),
     ("pt_extend", include_str!("templates/pt_extend.wgsl")),
+    ("gbuffer_import", include_str!("templates/gbuffer_import.wgsl")),
+    ("vpl_pack", include_str!("templates/vpl_pack.wgsl")),
+    ("irradiance_export", include_str!("templates/irradiance_export.wgsl")),
     ("layout", ""),
 ];
 
@@ -378,8 +435,10 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
         return bad(format!("workgroup size {} must be in 1..=256", f.workgroup_size));
     }
     match kernel {
-        Kernel::VplDenoise if !(1..=16).contains(&f.tile_size) || !(1..=16).contains(&f.interleave) => {
-            return bad(format!("vpl_denoise: tile {} and period {} must be in 1..=16", f.tile_size, f.interleave));
+        Kernel::VplDenoise | Kernel::GbufferImport | Kernel::VplPack | Kernel::IrradianceExport
+            if !(1..=16).contains(&f.tile_size) || !(1..=16).contains(&f.interleave) =>
+        {
+            return bad(format!("{}: tile {} and period {} must be in 1..=16", kernel.name(), f.tile_size, f.interleave));
         }
         Kernel::VplTiled => {
             if f.lights != (LightSet { vpl: true, ..LightSet::default() }) {
@@ -461,6 +520,8 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         method => method,
         heuristic => heuristic,
         selection => selection,
+        source => match features.vpl_source { VplSource::Rsm => "rsm", VplSource::Buffer => "buffer" },
+        out_format => features.output_format.wgsl(),
     };
     let source = env
         .get_template(kernel.name())
@@ -519,14 +580,14 @@ pub fn translate(g: &Generated) -> Result<Translations, ShaderError> {
 }
 
 /// Every kernel that applies to the features, generated and validated:
-/// `vpl_tiled` and `vpl_denoise` only for a VPL-only light set, the others
-/// always.
+/// the VPL application's kernels (`vpl_tiled`, `vpl_denoise` and the
+/// engine-pass kernels) only for a VPL-only light set, the others always.
 pub fn all_kernels(features: &Features) -> Result<Vec<Generated>, ShaderError> {
     Kernel::ALL
         .iter()
         .filter(|&&k| {
             let only_vpl = features.lights == LightSet { vpl: true, ..LightSet::default() };
-            !matches!(k, Kernel::VplTiled | Kernel::VplDenoise) || only_vpl
+            !matches!(k, Kernel::VplTiled | Kernel::VplDenoise | Kernel::GbufferImport | Kernel::VplPack | Kernel::IrradianceExport) || only_vpl
         })
         .map(|&k| generate_module(k, features))
         .collect()

@@ -32,6 +32,9 @@ fn rust_twins_match_naga_layout() {
         fields!(RefitParams, first, count, pad0, pad1),
         fields!(VplParams, width, height, lights_per_subset, min_d2),
         fields!(ShadeParams, point_count, seed, frame, eps),
+        fields!(GpuVplRecord, position, pad0, normal, pad1, flux, pad2),
+        fields!(PackParams, count, size, per_subset, mode, exposure, error_bound, scale, slc, fixed_r2, pad0, pad1, pad2),
+        fields!(ImageParams, eye, width, height, pad0, pad1, pad2),
         fields!(slc_core::bsh::BshNode, center, radius, child, next, light, pad),
     ];
     for (name, size, offsets) in structs {

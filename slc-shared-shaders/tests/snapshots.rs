@@ -26,6 +26,14 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
             Kernel::PtExtend,
             Features { lights: LightSet::parse("point,triangle").unwrap(), ..Features::default() },
         ),
+        ("gbuffer_import", Kernel::GbufferImport, Features { lights: vpl, ..Features::default() }),
+        ("vpl_pack-rsm", Kernel::VplPack, Features { lights: vpl, ..Features::default() }),
+        ("vpl_pack-buffer", Kernel::VplPack, Features { lights: vpl, vpl_source: VplSource::Buffer, ..Features::default() }),
+        (
+            "irradiance_export-rgba32float",
+            Kernel::IrradianceExport,
+            Features { lights: vpl, output_format: OutputFormat::Rgba32Float, ..Features::default() },
+        ),
     ]
 }
 

@@ -19,7 +19,7 @@ fn add_wrap_u32(a: u32, b: u32) -> u32 { return a + b; }
 ";
 
 /// Every module's shared items, in dependency order, as raw text.
-const PARTS: [&str; 11] = [
+const PARTS: [&str; 12] = [
     crate::xi::WGSL,
     crate::range::WGSL,
     crate::sphere::WGSL,
@@ -30,6 +30,7 @@ const PARTS: [&str; 11] = [
     crate::ray::WGSL,
     crate::mis::WGSL,
     crate::denoise::WGSL,
+    crate::interleave::WGSL,
     crate::path::WGSL,
 ];
 

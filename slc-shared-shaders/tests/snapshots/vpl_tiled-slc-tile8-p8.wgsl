@@ -36,6 +36,15 @@ struct RefitParams {
 struct VplParams {
     width: u32, height: u32, lights_per_subset: u32, min_d2: f32
 }
+struct GpuVplRecord {
+    position: vec3f, pad0: f32, normal: vec3f, pad1: f32, flux: vec3f, pad2: f32
+}
+struct PackParams {
+    count: u32, size: u32, per_subset: u32, mode: u32, exposure: f32, error_bound: f32, scale: f32, slc: u32, fixed_r2: f32, pad0: u32, pad1: u32, pad2: u32
+}
+struct ImageParams {
+    eye: vec3f, width: u32, height: u32, pad0: u32, pad1: u32, pad2: u32
+}
 struct ShadeParams {
     point_count: u32, seed: u32, frame: u32, eps: f32
 }
@@ -147,6 +156,9 @@ fn sphere_overlaps_aabb(c: vec3f, r: f32, bmin: vec3f, bmax: vec3f) -> bool {
 }
 const INV_PI: f32 = 0.3183098861837907;
 const MIN_D2: f32 = 0.000000000001;
+fn vpl_rt2(flux: vec3f, exposure: f32, error_bound: f32, mode: u32) -> f32 {
+    return threshold_range2(intensity_measure(flux * INV_PI, mode), exposure, error_bound);
+}
 fn range_radius(extent: f32, r2: f32) -> f32 {
     return extent + sqrt(r2);
 }
@@ -458,6 +470,17 @@ fn bilateral_weight(n: vec3f, nj: vec3f, z: f32, zj: f32, inv_sz: f32) -> f32 {
     let d: f32 = (zj - z) * inv_sz;
     let t: f32 = max(1.0 - d * d, 0.0);
     return dn8 * dn8 * t * t;
+}
+fn interleave_subset(x: u32, y: u32, period: u32) -> u32 {
+    return (y % period) * period + x % period;
+}
+fn interleave_slot(tx: u32, ty: u32, size: u32, period: u32) -> u32 {
+    let side: u32 = size / period;
+    return interleave_subset(tx, ty, period) * side * side + (ty / period) * side + tx / period;
+}
+fn interleave_slot_linear(i: u32, per_subset: u32, period: u32) -> u32 {
+    let subsets: u32 = period * period;
+    return (i % subsets) * per_subset + i / subsets;
 }
 fn camera_dir(forward: vec3f, right: vec3f, up: vec3f, px: f32, py: f32, w: f32, h: f32) -> vec3f {
     let sx: f32 = 2.0 * px / w - 1.0;

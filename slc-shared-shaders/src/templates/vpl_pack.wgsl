@@ -1,0 +1,49 @@
+{% include "header.wgsl" %}
+// VPLs from {% if source == "rsm" %}a reflective shadow map (one per texel){% else %}an engine's VPL buffer{% endif %} into vpl_tiled's light
+// buffer: subset after subset ({{ period }}x{{ period }} interleaving), flux scaled by
+// the period squared, each VPL's ξ id, r_t² (SLC) or the fixed r² (clamp).
+
+const P: u32 = {{ period }}u;
+
+@group(0) @binding(0) var<uniform> params: PackParams;
+{% if source == "rsm" %}
+@group(0) @binding(1) var rsm_position: texture_2d<f32>;
+@group(0) @binding(2) var rsm_normal: texture_2d<f32>;
+@group(0) @binding(3) var rsm_flux: texture_2d<f32>;
+{% else %}
+@group(0) @binding(1) var<storage, read> records: array<GpuVplRecord>;
+{% endif %}
+@group(0) @binding(4) var<storage, read_write> lights: array<GpuLight>;
+@group(0) @binding(5) var<storage, read_write> ids: array<u32>;
+@group(0) @binding(6) var<storage, read_write> rt2: array<f32>;
+@group(0) @binding(7) var<storage, read_write> r2: array<f32>;
+// Declared because the shared library reads it; unused here, so not bound.
+@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+
+@compute @workgroup_size({{ wg }})
+fn main(@builtin(global_invocation_id) gid: vec3u) {
+    let i = gid.x;
+    if i >= params.count {
+        return;
+    }
+{% if source == "rsm" %}
+    let tx = i % params.size;
+    let ty = i / params.size;
+    let texel = vec2i(i32(tx), i32(ty));
+    let position = textureLoad(rsm_position, texel, 0).xyz;
+    let normal = textureLoad(rsm_normal, texel, 0).xyz;
+    let flux = textureLoad(rsm_flux, texel, 0).xyz * params.scale;
+    let slot = interleave_slot(tx, ty, params.size, P);
+{% else %}
+    let r = records[i];
+    let position = r.position;
+    let normal = r.normal;
+    let flux = r.flux * params.scale;
+    let slot = interleave_slot_linear(i, params.per_subset, P);
+{% endif %}
+    lights[slot] = GpuLight(position, LIGHT_VPL, normal, 0.0, vec3f(0.0), 0.0, flux, 0u);
+    ids[slot] = i;
+    let slc = params.slc != 0u;
+    rt2[slot] = select(0.0, vpl_rt2(flux, params.exposure, params.error_bound, params.mode), slc);
+    r2[slot] = select(params.fixed_r2, 0.0, slc);
+}
