@@ -6,8 +6,6 @@
 //! in the subset-after-subset light buffer is written here once, for the
 //! host upload and the GPU's VPL generation alike.
 
-use crate::wgsl::*;
-
 crate::shared! {
     /// Subset of pixel (or RSM texel) `(x, y)` for period `P > 0`:
     /// `(y mod P)·P + x mod P`.

@@ -54,6 +54,18 @@ impl GpuContext {
         Ok(GpuContext { device, queue, adapter: info, limits, timestamps, errors })
     }
 
+    /// Wraps a device and queue the caller (an engine) already has: no
+    /// adapter is requested and no error handler or device-lost callback is
+    /// installed (the engine's own stay in place; [`GpuContext::take_errors`]
+    /// then reports nothing). Limits, features and the adapter description
+    /// come from the device.
+    pub fn from_device(device: wgpu::Device, queue: wgpu::Queue) -> GpuContext {
+        let adapter = device.adapter_info();
+        let limits = device.limits();
+        let timestamps = device.features().contains(wgpu::Features::TIMESTAMP_QUERY);
+        GpuContext { device, queue, adapter, limits, timestamps, errors: Arc::default() }
+    }
+
     /// One line naming the adapter, e.g. "llvmpipe (LLVM 15.0.6, 256 bits), Vulkan, Cpu".
     pub fn describe(&self) -> String {
         format!("{}, {:?}, {:?}", self.adapter.name, self.adapter.backend, self.adapter.device_type)

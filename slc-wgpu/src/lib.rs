@@ -12,6 +12,10 @@
 //!   sub-image, SLC shading, cross-bilateral filter) on the G-buffer and
 //!   VPLs of a [`slc_scene::vpl::VplInputs`].
 //!
+//! - [`passes::IndirectPass`]: the same shading as a pass an engine records
+//!   into its own command encoder, on its own G-buffer and RSM (or VPL
+//!   buffer) textures, into a texture it owns.
+//!
 //! The backend depends on slc-core, slc-shared-shaders and slc-scene only:
 //! it takes slc-scene data and implements the [`slc_scene::backend`]
 //! traits, as the CPU backend does.
@@ -42,6 +46,7 @@ pub mod context;
 pub mod direct;
 mod kernel;
 mod lights;
+pub mod passes;
 pub mod pt;
 pub mod vpl;
 
@@ -74,4 +79,15 @@ pub enum GpuError {
     /// Invalid render settings.
     #[error("{0}")]
     Setting(String),
+    /// A texture or buffer an engine passed does not match what the pass
+    /// expects.
+    #[error("{name}: expected {expected}, found {found}")]
+    Binding {
+        /// Which input.
+        name: &'static str,
+        /// What the pass expects.
+        expected: String,
+        /// What it got.
+        found: String,
+    },
 }

@@ -1,0 +1,281 @@
+//! The engine-facing indirect pass ([`slc_wgpu::passes::IndirectPass`])
+//! against [`GpuVpl`], which shades the same G-buffer and VPLs from host
+//! buffers, and its input checks.
+//!
+//! The pass gets everything as an engine would: G-buffer and RSM textures
+//! (made here from the CPU's G-buffer and VPLs), a storage texture to write,
+//! and a command encoder of ours. Tolerances, and why:
+//! - the pass computes `r_t²` on the GPU (`vpl_rt2`) where `GpuVpl` computes
+//!   it on the host, and the depth as `|p − eye|` where `GpuVpl` uploads the
+//!   CPU's ray distance: SLC keep decisions may differ for lights within a
+//!   few ulps of their range (at most 0.5% of the pixels, at most one light
+//!   each), and elsewhere the irradiance agrees to 1e-4 relative (1e-3
+//!   after the denoise, whose weights amplify last-bit differences);
+//! - clamp and none draw no ξ: the same decisions everywhere.
+
+use glam::Vec3;
+use slc_core::interleave::interleave_slot;
+use slc_cpu::vpl::VplContext;
+use slc_scene::scene::Scene;
+use slc_scene::vpl::{PERIOD, Shaded, VplMethod, VplSettings};
+use slc_tests::gpu;
+use slc_wgpu::GpuContext;
+use slc_wgpu::GpuError;
+use slc_wgpu::passes::{GpuVplRecord, IndirectFrame, IndirectInputs, IndirectPass, IndirectPassDesc, VplInput, VplSourceDesc, vpl_buffer};
+use slc_wgpu::vpl::GpuVpl;
+
+const W: u32 = 64;
+const H: u32 = 48;
+const RSM: u32 = 16;
+
+fn cpu_ctx() -> VplContext {
+    VplContext::new(&Scene::cornell_box(), W, H, RSM, None).unwrap()
+}
+
+fn texture(gpu: &GpuContext, label: &str, (w, h): (u32, u32), format: wgpu::TextureFormat, usage: wgpu::TextureUsages) -> wgpu::Texture {
+    gpu.device.create_texture(&wgpu::TextureDescriptor {
+        label: Some(label),
+        size: wgpu::Extent3d { width: w, height: h, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage,
+        view_formats: &[],
+    })
+}
+
+/// An `Rgba32Float` texture holding `texels`.
+fn upload(gpu: &GpuContext, label: &str, size: (u32, u32), texels: &[[f32; 4]]) -> wgpu::TextureView {
+    let t = texture(gpu, label, size, wgpu::TextureFormat::Rgba32Float, wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST);
+    gpu.queue.write_texture(
+        t.as_image_copy(),
+        bytemuck::cast_slice(texels),
+        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size.0 * 16), rows_per_image: None },
+        wgpu::Extent3d { width: size.0, height: size.1, depth_or_array_layers: 1 },
+    );
+    t.create_view(&Default::default())
+}
+
+fn v4(v: Vec3, w: f32) -> [f32; 4] {
+    [v.x, v.y, v.z, w]
+}
+
+/// The engine's resources: G-buffer, RSM and an `Rgba32Float` output with
+/// `COPY_SRC` for the read-back.
+struct Engine {
+    position: wgpu::TextureView,
+    normal: wgpu::TextureView,
+    rsm: [wgpu::TextureView; 3],
+    records: wgpu::Buffer,
+    output: wgpu::Texture,
+    output_view: wgpu::TextureView,
+    eye: Vec3,
+    min_distance: f32,
+}
+
+fn engine(gpu: &GpuContext, ctx: &VplContext) -> Engine {
+    let inputs = ctx.inputs();
+    let gb = &inputs.gbuffer;
+    let pos: Vec<[f32; 4]> = (0..gb.position.len()).map(|i| v4(gb.position[i], if gb.valid(i) { 1.0 } else { 0.0 })).collect();
+    let nrm: Vec<[f32; 4]> = gb.normal.iter().map(|&n| v4(n, 0.0)).collect();
+    let v = &inputs.vpls;
+    let rsm = [
+        upload(gpu, "rsm position", (RSM, RSM), &v.position.iter().map(|&p| v4(p, 1.0)).collect::<Vec<_>>()),
+        upload(gpu, "rsm normal", (RSM, RSM), &v.normal.iter().map(|&n| v4(n, 0.0)).collect::<Vec<_>>()),
+        upload(gpu, "rsm flux", (RSM, RSM), &v.flux.iter().map(|&f| v4(f, 0.0)).collect::<Vec<_>>()),
+    ];
+    // Records ordered so that the buffer's subsets are the RSM's: record j
+    // lands in slot (j mod P²)·per + j / P², texel t in interleave_slot(t).
+    let subsets = (PERIOD * PERIOD) as usize;
+    let per = v.len() / subsets;
+    let mut records = vec![GpuVplRecord::default(); v.len()];
+    for t in 0..v.len() {
+        let slot = interleave_slot(t as u32 % RSM, t as u32 / RSM, RSM, PERIOD) as usize;
+        let j = (slot % per) * subsets + slot / per;
+        records[j] = GpuVplRecord { position: v.position[t], normal: v.normal[t], flux: v.flux[t], ..GpuVplRecord::default() };
+    }
+    let output =
+        texture(gpu, "output", (W, H), wgpu::TextureFormat::Rgba32Float, wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
+    Engine {
+        position: upload(gpu, "gb position", (W, H), &pos),
+        normal: upload(gpu, "gb normal", (W, H), &nrm),
+        rsm,
+        records: vpl_buffer(gpu, &records),
+        output_view: output.create_view(&Default::default()),
+        output,
+        eye: Scene::cornell_box().camera.position,
+        min_distance: inputs.min_d2.sqrt(),
+    }
+}
+
+/// Records the pass into an encoder of ours, submits it and reads the
+/// output texture back.
+fn run(gpu: &GpuContext, pass: &IndirectPass, e: &Engine, vpls: VplInput, settings: &VplSettings) -> Vec<[f32; 4]> {
+    let inputs = IndirectInputs { position: &e.position, normal: &e.normal, vpls, output: &e.output_view };
+    let frame = IndirectFrame { settings: *settings, eye: e.eye, min_distance: e.min_distance };
+    let mut enc = gpu.device.create_command_encoder(&Default::default());
+    pass.record(gpu, &mut enc, &inputs, &frame).unwrap();
+    let staging = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("staging"),
+        size: (W * H * 16) as u64,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    enc.copy_texture_to_buffer(
+        e.output.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &staging,
+            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(W * 16), rows_per_image: None },
+        },
+        wgpu::Extent3d { width: W, height: H, depth_or_array_layers: 1 },
+    );
+    gpu.queue.submit([enc.finish()]);
+    let slice = staging.slice(..);
+    slice.map_async(wgpu::MapMode::Read, |_| {});
+    gpu.wait().unwrap();
+    let data: Vec<[f32; 4]> = bytemuck::cast_slice(&slice.get_mapped_range().unwrap()).to_vec();
+    data
+}
+
+fn settings(method: VplMethod, denoise: bool) -> VplSettings {
+    VplSettings { method, denoise, error_bound: 0.004, range: 0.08, seed: 7, frame: 3, ..VplSettings::default() }
+}
+
+/// Pixels whose kept count differs, and the worst relative irradiance
+/// difference elsewhere.
+fn compare(pass: &[[f32; 4]], reference: &Shaded, ctx: &VplContext) -> (usize, usize, f64) {
+    let gb = ctx.gbuffer();
+    let (mut pixels, mut differs, mut worst) = (0, 0, 0.0f64);
+    for (i, p) in pass.iter().enumerate() {
+        if !gb.valid(i) {
+            assert_eq!(*p, [0.0; 4], "pixel {i} without a surface must be zero");
+            continue;
+        }
+        pixels += 1;
+        let dk = (p[3] as u32).abs_diff(reference.kept[i]);
+        assert!(dk <= 1, "pixel {i}: kept {} by the pass vs {} by GpuVpl", p[3], reference.kept[i]);
+        if dk > 0 {
+            differs += 1;
+            continue;
+        }
+        let (a, b) = (Vec3::new(p[0], p[1], p[2]).as_dvec3(), reference.irradiance[i].as_dvec3());
+        let rel = ((a - b).abs().max_element() - 1e-9).max(0.0) / b.abs().max_element().max(1e-30);
+        worst = worst.max(rel);
+    }
+    (pixels, differs, worst)
+}
+
+#[test]
+fn pass_matches_gpu_vpl_for_every_method() {
+    let Some(gpu) = gpu() else { return };
+    let ctx = cpu_ctx();
+    let e = engine(gpu, &ctx);
+    let reference = GpuVpl::new(gpu, ctx.inputs()).unwrap();
+    let desc = IndirectPassDesc { width: W, height: H, vpls: VplSourceDesc::Rsm { size: RSM }, output_format: wgpu::TextureFormat::Rgba32Float };
+    let pass = IndirectPass::new(gpu, &desc).unwrap();
+    let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
+    for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
+        for denoise in [false, true] {
+            let s = settings(method, denoise);
+            let got = run(gpu, &pass, &e, rsm, &s);
+            let want = reference.shade(&s).unwrap();
+            let (pixels, differs, worst) = compare(&got, &want, &ctx);
+            eprintln!("{} denoise={denoise}: {pixels} pixels, {differs} keep decisions differ, worst relative difference {worst:.2e}", method.name());
+            assert!(pixels > (W * H / 2) as usize);
+            if method != VplMethod::Slc {
+                assert_eq!(differs, 0, "{}: no ξ, so every decision must agree", method.name());
+            }
+            assert!(differs as f64 <= 0.005 * pixels as f64, "{}: {differs} of {pixels} pixels keep different lights", method.name());
+            // The denoise's weights (n·n')¹⁶ and (1 − δ²)² amplify the last
+            // bits of the renormalised normals and of |p − eye| against the
+            // ray distance (observed 1.7e-4); a differing decision spreads
+            // into the neighbours it is mixed with.
+            let bound = match (denoise, differs > 0) {
+                (false, _) => 1e-4,
+                (true, false) => 1e-3,
+                (true, true) => 1e-2,
+            };
+            assert!(worst <= bound, "{} denoise={denoise}: worst relative difference {worst:.2e} > {bound}", method.name());
+        }
+    }
+    gpu.take_errors().unwrap();
+}
+
+/// The same VPLs from a buffer, ordered into the RSM's subsets: without ξ
+/// (clamp, none) the very same image.
+#[test]
+fn vpl_buffer_source_gives_the_rsm_image() {
+    let Some(gpu) = gpu() else { return };
+    let ctx = cpu_ctx();
+    let e = engine(gpu, &ctx);
+    let fmt = wgpu::TextureFormat::Rgba32Float;
+    let from_rsm =
+        IndirectPass::new(gpu, &IndirectPassDesc { width: W, height: H, vpls: VplSourceDesc::Rsm { size: RSM }, output_format: fmt }).unwrap();
+    let from_buffer =
+        IndirectPass::new(gpu, &IndirectPassDesc { width: W, height: H, vpls: VplSourceDesc::Buffer { count: RSM * RSM }, output_format: fmt })
+            .unwrap();
+    let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
+    for method in [VplMethod::Clamp, VplMethod::None] {
+        let s = settings(method, true);
+        let a = run(gpu, &from_rsm, &e, rsm, &s);
+        let b = run(gpu, &from_buffer, &e, VplInput::Buffer(&e.records), &s);
+        assert_eq!(a, b, "{}", method.name());
+        assert!(a.iter().any(|p| p[0] > 0.0), "{}: the image is black", method.name());
+    }
+}
+
+/// Wrong formats, sizes, usages and sources are typed errors before
+/// anything is recorded.
+#[test]
+fn wrong_inputs_are_typed_errors() {
+    let Some(gpu) = gpu() else { return };
+    let ctx = cpu_ctx();
+    let e = engine(gpu, &ctx);
+    let fmt = wgpu::TextureFormat::Rgba32Float;
+    let desc = IndirectPassDesc { width: W, height: H, vpls: VplSourceDesc::Rsm { size: RSM }, output_format: fmt };
+    let pass = IndirectPass::new(gpu, &desc).unwrap();
+    let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
+    let tex = |size, format, usage| texture(gpu, "bad", size, format, usage).create_view(&Default::default());
+    let sampled = wgpu::TextureUsages::TEXTURE_BINDING;
+    let bad_format = tex((W, H), wgpu::TextureFormat::Rgba8Unorm, sampled);
+    let bad_size = tex((W / 2, H), fmt, sampled);
+    let bad_usage = tex((W, H), fmt, wgpu::TextureUsages::COPY_DST);
+    let small_rsm = tex((RSM / 2, RSM / 2), fmt, sampled);
+    let out16 = tex((W, H), wgpu::TextureFormat::Rgba16Float, wgpu::TextureUsages::STORAGE_BINDING);
+    let ok = IndirectInputs { position: &e.position, normal: &e.normal, vpls: rsm, output: &e.output_view };
+    assert!(pass.check(&ok).is_ok());
+    let cases: [(&str, IndirectInputs); 6] = [
+        ("G-buffer position", IndirectInputs { position: &bad_format, ..ok }),
+        ("G-buffer normal", IndirectInputs { normal: &bad_size, ..ok }),
+        ("G-buffer position", IndirectInputs { position: &bad_usage, ..ok }),
+        ("output", IndirectInputs { output: &out16, ..ok }),
+        ("RSM flux", IndirectInputs { vpls: VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &small_rsm }, ..ok }),
+        ("VPLs", IndirectInputs { vpls: VplInput::Buffer(&e.records), ..ok }),
+    ];
+    for (name, inputs) in cases {
+        let mut enc = gpu.device.create_command_encoder(&Default::default());
+        let frame = IndirectFrame { settings: settings(VplMethod::Slc, false), eye: e.eye, min_distance: 0.01 };
+        match pass.record(gpu, &mut enc, &inputs, &frame) {
+            Err(GpuError::Binding { name: n, .. }) => assert_eq!(n, name),
+            other => panic!("{name}: expected a binding error, got {:?}", other.err()),
+        }
+    }
+    // Bad descriptors and settings.
+    let bad_descs = [
+        IndirectPassDesc { vpls: VplSourceDesc::Rsm { size: 12 }, ..desc },
+        IndirectPassDesc { vpls: VplSourceDesc::Buffer { count: 100 }, ..desc },
+        IndirectPassDesc { width: 0, ..desc },
+    ];
+    for d in bad_descs {
+        assert!(matches!(IndirectPass::new(gpu, &d), Err(GpuError::Setting(_))), "{d:?}");
+    }
+    assert!(matches!(
+        IndirectPass::new(gpu, &IndirectPassDesc { output_format: wgpu::TextureFormat::Rgba8Unorm, ..desc }),
+        Err(GpuError::Binding { name: "output_format", .. })
+    ));
+    let mut enc = gpu.device.create_command_encoder(&Default::default());
+    let frame = IndirectFrame { settings: VplSettings { error_bound: -1.0, ..settings(VplMethod::Slc, false) }, eye: e.eye, min_distance: 0.01 };
+    assert!(matches!(pass.record(gpu, &mut enc, &ok, &frame), Err(GpuError::Setting(_))));
+    gpu.take_errors().unwrap();
+}
