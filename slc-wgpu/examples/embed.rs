@@ -1,0 +1,404 @@
+//! Plays the engine: its own device, its own render pipelines rasterizing
+//! the Cornell box's G-buffer and the spot light's reflective shadow map,
+//! then slc's [`IndirectPass`] recorded into its own command encoder, and
+//! its own composition `emission + albedo/π · E_indirect` (an engine adds
+//! its direct light there too; this example shows the indirect light).
+//!
+//! ```text
+//! cargo run --release -p slc-wgpu --example embed -- embed.png
+//! ```
+//!
+//! `cargo test` runs it as a test: the image is compared with the CPU
+//! backend's ray-cast frame of the same scene.
+
+use glam::{Mat4, Vec3, Vec4};
+use slc_scene::image::Image;
+use slc_scene::scene::{PrimaryLight, Scene};
+use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_wgpu::GpuContext;
+use slc_wgpu::passes::{IndirectFrame, IndirectInputs, IndirectPass, IndirectPassDesc, VplInput, VplSourceDesc};
+use wgpu::util::DeviceExt;
+
+/// One vertex of the engine's mesh.
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct Vertex {
+    position: [f32; 3],
+    normal: [f32; 3],
+    albedo: [f32; 3],
+    material: f32,
+}
+
+/// Uniforms of the engine's two raster passes.
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct Uniforms {
+    view_proj: [[f32; 4]; 4],
+    eye: [f32; 4],
+    /// Spot axis (xyz), texel solid angle at the axis (w).
+    axis: [f32; 4],
+    /// Spot intensity (rgb), cos outer (w).
+    intensity: [f32; 4],
+    /// cos inner (x).
+    cone: [f32; 4],
+}
+
+/// The engine's shaders. The RSM's flux uses slc-core's spot fall-off
+/// (`spot_falloff`, from `slc_core::wgsl::library()`), so the engine and the
+/// CPU reference light the scene alike.
+const SHADER: &str = r#"
+@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+struct Uniforms { view_proj: mat4x4f, eye: vec4f, axis: vec4f, intensity: vec4f, cone: vec4f }
+@group(0) @binding(0) var<uniform> u: Uniforms;
+struct VsOut { @builtin(position) clip: vec4f, @location(0) world: vec3f, @location(1) normal: vec3f,
+               @location(2) albedo: vec3f, @location(3) material: f32 }
+@vertex fn vs(@location(0) p: vec3f, @location(1) n: vec3f, @location(2) a: vec3f, @location(3) m: f32) -> VsOut {
+    return VsOut(u.view_proj * vec4f(p, 1.0), p, n, a, m);
+}
+fn facing(n: vec3f, p: vec3f) -> vec3f {
+    let m = normalize(n);
+    return select(-m, m, dot(m, u.eye.xyz - p) >= 0.0);
+}
+struct GOut { @location(0) position: vec4f, @location(1) normal: vec4f }
+@fragment fn gbuffer(v: VsOut) -> GOut {
+    return GOut(vec4f(v.world, 1.0), vec4f(facing(v.normal, v.world), v.material));
+}
+struct ROut { @location(0) position: vec4f, @location(1) normal: vec4f, @location(2) flux: vec4f }
+@fragment fn rsm(v: VsOut) -> ROut {
+    let d = normalize(v.world - u.eye.xyz);
+    let c = dot(d, u.axis.xyz);
+    let d_omega = u.axis.w * c * c * c;
+    let flux = u.intensity.xyz * spot_falloff(c, u.intensity.w, u.cone.x) * d_omega * v.albedo;
+    return ROut(vec4f(v.world, 1.0), vec4f(facing(v.normal, v.world), 0.0), vec4f(flux, 0.0));
+}
+"#;
+
+/// Image size and RSM edge.
+const W: u32 = 256;
+const H: u32 = 256;
+const RSM: u32 = 64;
+
+fn target(device: &wgpu::Device, label: &str, (w, h): (u32, u32), format: wgpu::TextureFormat, usage: wgpu::TextureUsages) -> wgpu::Texture {
+    device.create_texture(&wgpu::TextureDescriptor {
+        label: Some(label),
+        size: wgpu::Extent3d { width: w, height: h, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage,
+        view_formats: &[],
+    })
+}
+
+/// Reads an `Rgba32Float` texture back (rows of `w · 16` bytes, a multiple
+/// of 256 for the sizes used here).
+fn read_rgba32(device: &wgpu::Device, queue: &wgpu::Queue, t: &wgpu::Texture) -> Vec<[f32; 4]> {
+    let (w, h) = (t.width(), t.height());
+    let staging = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("staging"),
+        size: (w * h * 16) as u64,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let mut enc = device.create_command_encoder(&Default::default());
+    enc.copy_texture_to_buffer(
+        t.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &staging,
+            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(w * 16), rows_per_image: None },
+        },
+        t.size(),
+    );
+    queue.submit([enc.finish()]);
+    staging.slice(..).map_async(wgpu::MapMode::Read, |_| {});
+    device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
+    bytemuck::cast_slice(&staging.slice(..).get_mapped_range().expect("mapped")).to_vec()
+}
+
+/// Right-handed view matrix looking along `forward` (the basis the CPU's
+/// camera uses: right = forward × up, up = right × forward).
+fn look(eye: Vec3, forward: Vec3, up: Vec3) -> Mat4 {
+    let f = forward.normalize();
+    let r = f.cross(up).normalize();
+    let u = r.cross(f);
+    Mat4::from_cols(
+        Vec4::new(r.x, u.x, -f.x, 0.0),
+        Vec4::new(r.y, u.y, -f.y, 0.0),
+        Vec4::new(r.z, u.z, -f.z, 0.0),
+        Vec4::new(-r.dot(eye), -u.dot(eye), f.dot(eye), 1.0),
+    )
+}
+
+/// Right-handed perspective projection with depth in `[0, 1]` (wgpu's clip
+/// space).
+fn perspective(fovy: f32, aspect: f32, near: f32, far: f32) -> Mat4 {
+    let h = 1.0 / (0.5 * fovy).tan();
+    let r = far / (near - far);
+    Mat4::from_cols(
+        Vec4::new(h / aspect, 0.0, 0.0, 0.0),
+        Vec4::new(0.0, h, 0.0, 0.0),
+        Vec4::new(0.0, 0.0, r, -1.0),
+        Vec4::new(0.0, 0.0, r * near, 0.0),
+    )
+}
+
+/// What the example computes: the composed image and the raw indirect
+/// irradiance (rgb, lights kept) per pixel.
+struct Frame {
+    image: Image,
+    #[cfg_attr(not(test), allow(dead_code))]
+    irradiance: Vec<[f32; 4]>,
+}
+
+fn render(scene: &Scene, settings: &VplSettings, min_distance: f32) -> Result<Frame, Box<dyn std::error::Error>> {
+    // The engine's device.
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+    let adapter = pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None))?;
+    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))?;
+
+    // The engine's mesh: every triangle's corners with their normals.
+    let mut vertices = Vec::with_capacity(scene.triangles.len() * 3);
+    for (i, tri) in scene.triangles.iter().enumerate() {
+        let m = scene.material_of[i];
+        let geo = (tri[1] - tri[0]).cross(tri[2] - tri[0]).normalize();
+        for (k, p) in tri.iter().enumerate() {
+            let n = if scene.normals.is_empty() { geo } else { scene.normals[i][k] };
+            let albedo = scene.materials[m as usize].albedo;
+            vertices.push(Vertex { position: p.to_array(), normal: n.to_array(), albedo: albedo.to_array(), material: m as f32 });
+        }
+    }
+    let vbuf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("mesh"),
+        contents: bytemuck::cast_slice(&vertices),
+        usage: wgpu::BufferUsages::VERTEX,
+    });
+
+    // Camera and spot light as view-projection matrices.
+    let cam = &scene.camera;
+    let proj = perspective(cam.vfov_deg.to_radians(), W as f32 / H as f32, 0.01, 100.0);
+    let camera = Uniforms {
+        view_proj: (proj * look(cam.position, cam.target - cam.position, cam.up)).to_cols_array_2d(),
+        eye: cam.position.extend(1.0).to_array(),
+        axis: [0.0; 4],
+        intensity: [0.0; 4],
+        cone: [0.0; 4],
+    };
+    let PrimaryLight::Spot { position, direction, intensity, inner, outer } = scene.primary else {
+        return Err("this example's RSM is a spot light's".into());
+    };
+    let helper = if direction.y.abs() < 0.9 { Vec3::Y } else { Vec3::X };
+    let r = direction.cross(helper).normalize();
+    let up = r.cross(direction);
+    // Row 0 of the RSM at -up, like the CPU's texel order (so both make the
+    // same interleaved subsets): flip y in clip space.
+    let flip = Mat4::from_scale(Vec3::new(1.0, -1.0, 1.0));
+    let light_proj = flip * perspective(2.0 * outer, 1.0, 0.01, 100.0);
+    let tan = outer.tan();
+    let light = Uniforms {
+        view_proj: (light_proj * look(position, direction, up)).to_cols_array_2d(),
+        eye: position.extend(1.0).to_array(),
+        axis: direction.extend((2.0 * tan / RSM as f32).powi(2)).to_array(),
+        intensity: intensity.extend(outer.cos()).to_array(),
+        cone: [inner.cos(), 0.0, 0.0, 0.0],
+    };
+
+    // The engine's pipelines: G-buffer (position, normal + material id) and
+    // RSM (position, normal, flux), each with a depth buffer.
+    let source = format!("{}\n{SHADER}", slc_core::wgsl::library());
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some("engine"), source: wgpu::ShaderSource::Wgsl(source.into()) });
+    let attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3, 3 => Float32];
+    let layout = wgpu::VertexBufferLayout {
+        array_stride: std::mem::size_of::<Vertex>() as u64,
+        step_mode: wgpu::VertexStepMode::Vertex,
+        attributes: &attributes,
+    };
+    let raster = |entry: &str, formats: &[wgpu::TextureFormat]| {
+        let targets: Vec<Option<wgpu::ColorTargetState>> = formats.iter().map(|&f| Some(f.into())).collect();
+        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some(entry),
+            layout: None,
+            vertex: wgpu::VertexState {
+                module: &module,
+                entry_point: Some("vs"),
+                compilation_options: Default::default(),
+                buffers: &[Some(layout.clone())],
+            },
+            fragment: Some(wgpu::FragmentState {
+                module: &module,
+                entry_point: Some(entry),
+                compilation_options: Default::default(),
+                targets: &targets,
+            }),
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: wgpu::TextureFormat::Depth32Float,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Less),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: Default::default(),
+            multiview_mask: None,
+            cache: None,
+        })
+    };
+    use wgpu::TextureFormat::{Rgba16Float, Rgba32Float};
+    let gbuffer_pipeline = raster("gbuffer", &[Rgba32Float, Rgba32Float]);
+    let rsm_pipeline = raster("rsm", &[Rgba32Float, Rgba16Float, Rgba16Float]);
+
+    let rt = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
+    let gb_position = target(&device, "gb position", (W, H), Rgba32Float, rt);
+    let gb_normal = target(&device, "gb normal", (W, H), Rgba32Float, rt | wgpu::TextureUsages::COPY_SRC);
+    let gb_depth = target(&device, "gb depth", (W, H), wgpu::TextureFormat::Depth32Float, wgpu::TextureUsages::RENDER_ATTACHMENT);
+    let rsm = [
+        target(&device, "rsm position", (RSM, RSM), Rgba32Float, rt),
+        target(&device, "rsm normal", (RSM, RSM), Rgba16Float, rt),
+        target(&device, "rsm flux", (RSM, RSM), Rgba16Float, rt),
+    ];
+    let rsm_depth = target(&device, "rsm depth", (RSM, RSM), wgpu::TextureFormat::Depth32Float, wgpu::TextureUsages::RENDER_ATTACHMENT);
+    let output = target(&device, "indirect", (W, H), Rgba32Float, wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
+    let view = |t: &wgpu::Texture| t.create_view(&Default::default());
+    let (gb_views, rsm_views) = ([view(&gb_position), view(&gb_normal)], [view(&rsm[0]), view(&rsm[1]), view(&rsm[2])]);
+    let output_view = view(&output);
+
+    // slc's pass, on the engine's device.
+    let gpu = GpuContext::from_device(device.clone(), queue.clone());
+    let pass =
+        IndirectPass::new(&gpu, &IndirectPassDesc { width: W, height: H, vpls: VplSourceDesc::Rsm { size: RSM }, output_format: Rgba32Float })?;
+
+    // One frame: one encoder with the engine's raster passes and slc's pass.
+    let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
+    let draw = |encoder: &mut wgpu::CommandEncoder,
+                pipeline: &wgpu::RenderPipeline,
+                uniforms: &Uniforms,
+                colors: &[wgpu::TextureView],
+                depth: &wgpu::Texture| {
+        let ubuf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("uniforms"),
+            contents: bytemuck::bytes_of(uniforms),
+            usage: wgpu::BufferUsages::UNIFORM,
+        });
+        let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: None,
+            layout: &pipeline.get_bind_group_layout(0),
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: ubuf.as_entire_binding() }],
+        });
+        let attachments: Vec<Option<wgpu::RenderPassColorAttachment>> = colors
+            .iter()
+            .map(|v| {
+                Some(wgpu::RenderPassColorAttachment {
+                    view: v,
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT), store: wgpu::StoreOp::Store },
+                })
+            })
+            .collect();
+        let depth_view = view(depth);
+        let mut rp = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: None,
+            color_attachments: &attachments,
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &depth_view,
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        rp.set_pipeline(pipeline);
+        rp.set_bind_group(0, &bind, &[]);
+        rp.set_vertex_buffer(0, vbuf.slice(..));
+        rp.draw(0..vertices.len() as u32, 0..1);
+    };
+    draw(&mut encoder, &gbuffer_pipeline, &camera, &gb_views, &gb_depth);
+    draw(&mut encoder, &rsm_pipeline, &light, &rsm_views, &rsm_depth);
+    let inputs = IndirectInputs {
+        position: &gb_views[0],
+        normal: &gb_views[1],
+        vpls: VplInput::Rsm { position: &rsm_views[0], normal: &rsm_views[1], flux: &rsm_views[2] },
+        output: &output_view,
+    };
+    pass.record(&gpu, &mut encoder, &inputs, &IndirectFrame { settings: *settings, eye: cam.position, min_distance })?;
+    queue.submit([encoder.finish()]);
+
+    // The engine's composition (here on the host, from the read-back
+    // irradiance and the G-buffer's material ids).
+    let irradiance = read_rgba32(&device, &queue, &output);
+    let normals = read_rgba32(&device, &queue, &gb_normal);
+    let mut image = Image::new(W, H);
+    for (i, (e, n)) in irradiance.iter().zip(&normals).enumerate() {
+        if n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0 {
+            continue;
+        }
+        let m = scene.materials[n[3] as usize];
+        image.data[i] = m.emission + m.albedo * slc_core::light::INV_PI * Vec3::new(e[0], e[1], e[2]);
+    }
+    Ok(Frame { image, irradiance })
+}
+
+fn settings() -> VplSettings {
+    VplSettings { method: VplMethod::Slc, error_bound: 0.008, ..VplSettings::default() }
+}
+
+#[cfg_attr(test, allow(dead_code))]
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let out = std::env::args().nth(1).unwrap_or_else(|| "embed.png".into());
+    let frame = render(&Scene::cornell_box(), &settings(), 0.05)?;
+    frame.image.write_png(std::path::Path::new(&out), 1.0)?;
+    println!("wrote {out}: indirect light of the Cornell box, {W}×{H}, {} VPLs, rasterized and shaded on the GPU", RSM * RSM);
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use slc_cpu::vpl::VplContext;
+
+    /// The engine's rasterized frame against the CPU backend's ray-cast
+    /// frame (same scene, size, RSM and settings, method `none`, so no ξ
+    /// and no roulette): rasterization and ray casting differ at
+    /// silhouettes and half floats round the RSM's normal and flux, so the
+    /// bounds are on the image: mean within 1%, median pixel within 1%,
+    /// at most 2% of the pixels with a different surface (valid mask).
+    #[test]
+    fn embed_matches_the_cpu_frame() {
+        let scene = Scene::cornell_box();
+        let s = VplSettings { method: VplMethod::None, denoise: false, ..settings() };
+        let frame = match render(&scene, &s, 0.05) {
+            Ok(f) => f,
+            Err(e) if std::env::var("SLC_REQUIRE_GPU").as_deref() != Ok("1") => {
+                eprintln!("skipping the embed example: {e}");
+                return;
+            }
+            Err(e) => panic!("SLC_REQUIRE_GPU=1 but the embed example failed: {e}"),
+        };
+        let ctx = VplContext::new(&scene, W, H, RSM, Some(0.05)).unwrap();
+        let cpu = ctx.shade(&s).unwrap();
+        let gb = ctx.gbuffer();
+        let (mut mask_differs, mut rel, mut sum_gpu, mut sum_cpu) = (0usize, Vec::new(), 0.0f64, 0.0f64);
+        for i in 0..cpu.irradiance.len() {
+            let g = &frame.irradiance[i];
+            let gpu_valid = g[3] > 0.0 || (g[0], g[1], g[2]) != (0.0, 0.0, 0.0);
+            let (a, b) = (Vec3::new(g[0], g[1], g[2]), cpu.irradiance[i]);
+            sum_gpu += a.element_sum() as f64;
+            sum_cpu += b.element_sum() as f64;
+            if gpu_valid != gb.valid(i) {
+                mask_differs += 1;
+            } else if gb.valid(i) {
+                rel.push(((a - b).abs().element_sum() / b.element_sum().max(1e-12)) as f64);
+            }
+        }
+        rel.sort_by(f64::total_cmp);
+        let median = rel[rel.len() / 2];
+        let mean_rel = (sum_gpu - sum_cpu).abs() / sum_cpu;
+        let share = mask_differs as f64 / cpu.irradiance.len() as f64;
+        eprintln!("embed vs CPU: mean {mean_rel:.2e} relative, median pixel {median:.2e}, {:.2}% of pixels see another surface", 100.0 * share);
+        assert!(mean_rel <= 0.01, "image mean differs by {mean_rel:.3e}");
+        assert!(median <= 0.01, "median pixel differs by {median:.3e}");
+        assert!(share <= 0.02, "{:.2}% of the pixels see another surface", 100.0 * share);
+        assert!(frame.image.is_finite() && frame.image.mean() > 0.0);
+    }
+}
