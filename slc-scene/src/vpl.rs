@@ -214,12 +214,18 @@ pub struct VplInputs {
 }
 
 impl VplInputs {
-    /// RSM texel indices of VPL subset `sub` (`0 ≤ sub < PERIOD²`): texels
-    /// `(tx, ty)` with `ty mod P = sub / P` and `tx mod P = sub mod P`,
-    /// row-major. Pixel `(x, y)` uses subset `(y mod P)·P + x mod P`.
-    pub fn subset_members(&self, sub: usize) -> Vec<usize> {
-        let (p, size) = (PERIOD as usize, self.vpls.size as usize);
-        let (sx, sy) = (sub % p, sub / p);
-        (sy..size).step_by(p).flat_map(|ty| (sx..size).step_by(p).map(move |tx| ty * size + tx)).collect()
+    /// The interleaved light order: entry `k` is the RSM texel index
+    /// (`ty · size + tx`) of the VPL stored at slot `k` of the subset-after-
+    /// subset buffer ([`slc_core::interleave::interleave_slot`]; pixel
+    /// `(x, y)` uses subset `(y mod P)·P + x mod P`).
+    pub fn interleaved_order(&self) -> Vec<usize> {
+        let size = self.vpls.size;
+        let mut order = vec![0; self.vpls.len()];
+        for ty in 0..size {
+            for tx in 0..size {
+                order[slc_core::interleave::interleave_slot(tx, ty, size, PERIOD) as usize] = (ty * size + tx) as usize;
+            }
+        }
+        order
     }
 }

@@ -27,15 +27,54 @@ pub(crate) fn zeroed(gpu: &GpuContext, label: &str, size: u64, usage: wgpu::Buff
 /// storage buffers, then `writes` read-write ones. Explicit, because an
 /// automatic layout drops the bindings a variant does not use.
 pub(crate) fn bind_layout(gpu: &GpuContext, label: &str, reads: u32, writes: u32, dynamic: bool) -> wgpu::BindGroupLayout {
-    let entry = |binding: u32, ty: wgpu::BufferBindingType, has_dynamic_offset: bool| wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: wgpu::ShaderStages::COMPUTE,
-        ty: wgpu::BindingType::Buffer { ty, has_dynamic_offset, min_binding_size: None },
-        count: None,
-    };
-    let mut entries = vec![entry(0, wgpu::BufferBindingType::Uniform, dynamic)];
-    entries.extend((1..=reads).map(|b| entry(b, wgpu::BufferBindingType::Storage { read_only: true }, false)));
-    entries.extend((reads + 1..=reads + writes).map(|b| entry(b, wgpu::BufferBindingType::Storage { read_only: false }, false)));
+    let mut kinds = vec![(0, if dynamic { B::DynamicUniform } else { B::Uniform })];
+    kinds.extend((1..=reads).map(|b| (b, B::Read)));
+    kinds.extend((reads + 1..=reads + writes).map(|b| (b, B::Write)));
+    layout(gpu, label, &kinds)
+}
+
+/// A binding of a kernel's bind-group layout.
+#[derive(Clone, Copy)]
+pub(crate) enum B {
+    /// `var<uniform>`.
+    Uniform,
+    /// `var<uniform>` bound with a dynamic offset.
+    DynamicUniform,
+    /// `var<storage, read>`.
+    Read,
+    /// `var<storage, read_write>`.
+    Write,
+    /// `texture_2d<f32>` (unfilterable float).
+    Texture,
+    /// `texture_storage_2d<format, write>`.
+    Storage(wgpu::TextureFormat),
+}
+
+/// A compute bind-group layout with the given `(binding, kind)` entries.
+pub(crate) fn layout(gpu: &GpuContext, label: &str, kinds: &[(u32, B)]) -> wgpu::BindGroupLayout {
+    let entries: Vec<wgpu::BindGroupLayoutEntry> = kinds
+        .iter()
+        .map(|&(binding, kind)| {
+            let buffer = |ty, has_dynamic_offset| wgpu::BindingType::Buffer { ty, has_dynamic_offset, min_binding_size: None };
+            let ty = match kind {
+                B::Uniform => buffer(wgpu::BufferBindingType::Uniform, false),
+                B::DynamicUniform => buffer(wgpu::BufferBindingType::Uniform, true),
+                B::Read => buffer(wgpu::BufferBindingType::Storage { read_only: true }, false),
+                B::Write => buffer(wgpu::BufferBindingType::Storage { read_only: false }, false),
+                B::Texture => wgpu::BindingType::Texture {
+                    sample_type: wgpu::TextureSampleType::Float { filterable: false },
+                    view_dimension: wgpu::TextureViewDimension::D2,
+                    multisampled: false,
+                },
+                B::Storage(format) => wgpu::BindingType::StorageTexture {
+                    access: wgpu::StorageTextureAccess::WriteOnly,
+                    format,
+                    view_dimension: wgpu::TextureViewDimension::D2,
+                },
+            };
+            wgpu::BindGroupLayoutEntry { binding, visibility: wgpu::ShaderStages::COMPUTE, ty, count: None }
+        })
+        .collect();
     gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some(label), entries: &entries })
 }
 

@@ -63,7 +63,7 @@
 //! # Ok(()) }
 //! ```
 
-use crate::kernel::{pipeline, storage, zeroed};
+use crate::kernel::{B, layout, pipeline, storage, zeroed};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use slc_scene::vpl::{PERIOD, VplMethod, VplSettings};
@@ -179,42 +179,6 @@ pub struct IndirectPass {
     tiled_layout: wgpu::BindGroupLayout,
     denoise: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
     export: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
-}
-
-/// The binding kinds of the pass's kernels.
-#[derive(Clone, Copy)]
-enum B {
-    Uniform,
-    Read,
-    Write,
-    Texture,
-    Storage(wgpu::TextureFormat),
-}
-
-fn layout(gpu: &GpuContext, label: &str, kinds: &[(u32, B)]) -> wgpu::BindGroupLayout {
-    let entries: Vec<wgpu::BindGroupLayoutEntry> = kinds
-        .iter()
-        .map(|&(binding, kind)| {
-            let buffer = |ty| wgpu::BindingType::Buffer { ty, has_dynamic_offset: false, min_binding_size: None };
-            let ty = match kind {
-                B::Uniform => buffer(wgpu::BufferBindingType::Uniform),
-                B::Read => buffer(wgpu::BufferBindingType::Storage { read_only: true }),
-                B::Write => buffer(wgpu::BufferBindingType::Storage { read_only: false }),
-                B::Texture => wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Float { filterable: false },
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                    multisampled: false,
-                },
-                B::Storage(format) => wgpu::BindingType::StorageTexture {
-                    access: wgpu::StorageTextureAccess::WriteOnly,
-                    format,
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                },
-            };
-            wgpu::BindGroupLayoutEntry { binding, visibility: wgpu::ShaderStages::COMPUTE, ty, count: None }
-        })
-        .collect();
-    gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some(label), entries: &entries })
 }
 
 /// Checks that `view` shows a `w × h` 2-D texture of an accepted format with

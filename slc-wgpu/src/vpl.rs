@@ -116,7 +116,7 @@ impl<'a> GpuVpl<'a> {
             intensity: v.flux[i] * scale,
             ies_base: 0,
         };
-        let order: Vec<usize> = (0..subsets).flat_map(|s| inputs.subset_members(s)).collect();
+        let order = inputs.interleaved_order();
         let scale = subsets as f32;
         let lights: Vec<GpuLight> = order.iter().map(|&i| vpl(i, scale)).collect();
         let ids: Vec<u32> = order.iter().map(|&i| i as u32).collect();
