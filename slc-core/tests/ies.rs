@@ -176,6 +176,11 @@ fn hostile_input() {
     // 1000 cd overflowed the table to infinity.
     let e = IesProfile::parse("TILT=NONE\n1 1000 1 1 1 1 2 0 0 0\n3e36 1 10\n0\n0\n1000\n").unwrap_err();
     assert!(matches!(e.kind, IesErrorKind::OutOfRange { field: "candela values times multipliers", .. }), "{e}");
+    // Regression (fuzz/ies_parse): ballast factors 3e31 × 3e36 overflow the
+    // scale itself, and a zero candela value times it was NaN, which the
+    // peak (a max) skipped.
+    let e = IesProfile::parse("TILT=NONE\n1 1000 1 1 1 1 2 0 0 0\n3e31 3e36 10\n0\n0\n0\n").unwrap_err();
+    assert!(matches!(e.kind, IesErrorKind::OutOfRange { field: "candela multiplier times ballast factors", .. }), "{e}");
     // 1986 format (no header line) is accepted.
     let p = IesProfile::parse("some free text\nTILT=NONE\n1 1000 1 1 1 1 2 0 0 0\n1 1 1\n0\n0\n5\n").unwrap();
     assert_eq!(p.format, IesFormat::Lm63_1986);

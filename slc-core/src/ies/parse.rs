@@ -189,10 +189,15 @@ impl IesProfile {
             table: Vec::new(),
             max_candela: 0.0,
         };
+        // Finite multipliers can overflow f32 together (then a zero candela
+        // value times the infinite scale is NaN, which `max` would skip), and
+        // finite candela values times a finite scale can overflow too (both
+        // found by fuzz/ies_parse).
+        if !scale.is_finite() {
+            return Err(IesError { line: ptype_line, kind: K::OutOfRange { field: "candela multiplier times ballast factors", value: scale } });
+        }
         p.build_table(scale);
         if !p.max_candela.is_finite() {
-            // Finite multipliers and candela values can still overflow f32
-            // together (found by fuzz/ies_parse).
             return Err(IesError { line: ptype_line, kind: K::OutOfRange { field: "candela values times multipliers", value: p.max_candela } });
         }
         Ok(p)
