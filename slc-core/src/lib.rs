@@ -50,6 +50,7 @@ pub mod wgsl;
 pub mod bsh;
 pub mod denoise;
 pub mod estimator;
+pub mod frame;
 pub mod ies;
 pub mod interleave;
 pub mod light;

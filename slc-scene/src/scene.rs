@@ -88,6 +88,87 @@ impl PrimaryLight {
             PrimaryLight::Directional { .. } => None,
         }
     }
+
+    /// The frame of this light's map in a scene with bounds `(lo, hi)`.
+    pub fn light_map(&self, (lo, hi): (Vec3, Vec3)) -> LightMap {
+        match *self {
+            PrimaryLight::Spot { position, direction, outer, .. } => {
+                let axis = direction.normalize();
+                let (right, up) = LightMap::basis(axis);
+                LightMap::Perspective { origin: position, axis, right, up, tan: outer.tan() }
+            }
+            PrimaryLight::Directional { direction, .. } => {
+                let axis = direction.normalize();
+                let (right, up) = LightMap::basis(axis);
+                let half = 0.5 * (hi - lo).length();
+                LightMap::Orthographic { origin: (lo + hi) * 0.5 - axis * (2.0 * half), axis, right, up, half }
+            }
+        }
+    }
+}
+
+/// The frame of the primary light's map (the reflective shadow map and the
+/// shadow map): texel `(tx, ty)` of a `size × size` map is the ray through
+/// map coordinates `(a, b) = (light_map_coord(tx), light_map_coord(ty))`
+/// ([`slc_core::frame::light_map_coord`]), row 0 toward `−up`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LightMap {
+    /// A spot's perspective map over its outer cone: rays from `origin`
+    /// along `axis + right·a·tan + up·b·tan`.
+    Perspective {
+        /// The light's position.
+        origin: Vec3,
+        /// Unit axis.
+        axis: Vec3,
+        /// Unit right (`axis × helper`).
+        right: Vec3,
+        /// Unit up (`right × axis`).
+        up: Vec3,
+        /// `tan` of the outer half-angle.
+        tan: f32,
+    },
+    /// A directional light's orthographic map over the scene's bounding
+    /// sphere: rays along `axis` from `origin + right·a·half + up·b·half`,
+    /// `origin` a diameter before the centre.
+    Orthographic {
+        /// Centre of the map's plane.
+        origin: Vec3,
+        /// Unit direction the light travels in.
+        axis: Vec3,
+        /// Unit right.
+        right: Vec3,
+        /// Unit up.
+        up: Vec3,
+        /// Half the map's edge (the bounding sphere's radius).
+        half: f32,
+    },
+}
+
+impl LightMap {
+    /// `(right, up)` of a map looking along unit `axis`.
+    fn basis(axis: Vec3) -> (Vec3, Vec3) {
+        let helper = if axis.y.abs() < 0.9 { Vec3::Y } else { Vec3::X };
+        let right = axis.cross(helper).normalize();
+        (right, right.cross(axis))
+    }
+
+    /// Origin and unit direction of the ray of texel `(tx, ty)` of a
+    /// `size × size` map, and what the texel gathers: the solid angle it
+    /// covers (perspective) or its area (orthographic).
+    pub fn texel_ray(&self, tx: u32, ty: u32, size: u32) -> (Vec3, Vec3, f32) {
+        use slc_core::frame::{light_map_coord, rsm_texel_solid_angle};
+        let (a, b) = (light_map_coord(tx, size), light_map_coord(ty, size));
+        match *self {
+            LightMap::Perspective { origin, axis, right, up, tan } => {
+                let d = axis + right * (a * tan) + up * (b * tan);
+                let dir = d.normalize();
+                (origin, dir, rsm_texel_solid_angle((2.0 * tan / size as f32).powi(2), dir.dot(axis)))
+            }
+            LightMap::Orthographic { origin, axis, right, up, half } => {
+                (origin + right * (a * half) + up * (b * half), axis, (2.0 * half / size as f32).powi(2))
+            }
+        }
+    }
 }
 
 /// Triangles, materials, camera and primary light.

@@ -246,6 +246,76 @@ slc_core::shared! {
         pub pad2: u32,
     }
 
+    /// One vertex of the VPL frame's raster passes (`scene_raster`), 48
+    /// bytes: attributes at offsets 0 (position), 12 (material), 16
+    /// (vertex normal), 32 (the triangle's geometric normal).
+    pub struct GpuVertex {
+        /// World position.
+        pub position: vec3f,
+        /// Material index.
+        pub material: u32,
+        /// Unit vertex normal (the geometric one for flat triangles).
+        pub normal: vec3f,
+        /// Padding.
+        pub pad0: u32,
+        /// Unit geometric normal of the triangle.
+        pub geo_normal: vec3f,
+        /// Padding.
+        pub pad1: u32,
+    }
+
+    /// A diffuse material of the VPL frame, 32 bytes.
+    pub struct GpuMaterial {
+        /// Albedo ρ.
+        pub albedo: vec3f,
+        /// Padding.
+        pub pad0: u32,
+        /// Emitted radiance.
+        pub emission: vec3f,
+        /// Padding.
+        pub pad1: u32,
+    }
+
+    /// The primary light's map (RSM and shadow map) for `scene_raster` and
+    /// `primary_direct`: the light (`LIGHT_SPOT` record for a spot; for a
+    /// directional light `intensity` holds its irradiance), the map frame
+    /// of `slc_scene::scene::LightMap` and the raster pass's matrix.
+    pub struct MapParams {
+        /// Column 0 of the raster pass's view-projection matrix.
+        pub c0: vec4f,
+        /// Column 1.
+        pub c1: vec4f,
+        /// Column 2.
+        pub c2: vec4f,
+        /// Column 3.
+        pub c3: vec4f,
+        /// The primary light.
+        pub light: GpuLight,
+        /// Eye (G-buffer pass) or the map's origin (light position or plane centre).
+        pub origin: vec3f,
+        /// `MAP_CAMERA`, `MAP_PERSPECTIVE` or `MAP_ORTHOGRAPHIC`.
+        pub mode: u32,
+        /// Unit axis of the map.
+        pub axis: vec3f,
+        /// Map edge in texels.
+        pub size: u32,
+        /// Unit right.
+        pub right: vec3f,
+        /// `tan` of the half-angle (perspective) or the half edge (orthographic).
+        pub extent: f32,
+        /// Unit up.
+        pub up: vec3f,
+        /// What a texel gathers: its area at distance 1 (perspective) or its area.
+        pub texel: f32,
+    }
+
+    /// [`MapParams::mode`] of the camera's G-buffer pass.
+    pub const MAP_CAMERA: u32 = 0;
+    /// [`MapParams::mode`] of a spot's perspective map.
+    pub const MAP_PERSPECTIVE: u32 = 1;
+    /// [`MapParams::mode`] of a directional light's orthographic map.
+    pub const MAP_ORTHOGRAPHIC: u32 = 2;
+
     /// Uniforms of `bsh_reservoir` and `pt_connect`.
     pub struct ShadeParams {
         /// Shading points (or path vertices).

@@ -257,11 +257,19 @@ pub enum Kernel {
     VplPack,
     /// The irradiance into an engine's storage texture.
     IrradianceExport,
+    /// The VPL frame's raster passes (vertex `vs_main`, fragments
+    /// `fs_gbuffer`, `fs_rsm` and `fs_shadow`): G-buffer, reflective shadow
+    /// map and shadow map.
+    SceneRaster,
+    /// The primary light's direct irradiance, shadowed by its shadow map.
+    PrimaryDirect,
+    /// Direct plus indirect light into the frame's HDR target.
+    FrameCompose,
 }
 
 impl Kernel {
     /// All kernels.
-    pub const ALL: [Kernel; 10] = [
+    pub const ALL: [Kernel; 13] = [
         Kernel::LightUpdate,
         Kernel::BshRefit,
         Kernel::VplTiled,
@@ -272,6 +280,9 @@ impl Kernel {
         Kernel::GbufferImport,
         Kernel::VplPack,
         Kernel::IrradianceExport,
+        Kernel::SceneRaster,
+        Kernel::PrimaryDirect,
+        Kernel::FrameCompose,
     ];
 
     /// File stem / name.
@@ -287,6 +298,40 @@ impl Kernel {
             Kernel::GbufferImport => "gbuffer_import",
             Kernel::VplPack => "vpl_pack",
             Kernel::IrradianceExport => "irradiance_export",
+            Kernel::SceneRaster => "scene_raster",
+            Kernel::PrimaryDirect => "primary_direct",
+            Kernel::FrameCompose => "frame_compose",
+        }
+    }
+
+    /// The VPL application's kernels, generated for a VPL-only light set
+    /// (the frame kernels compile the primary light's spot case whatever
+    /// the set says).
+    pub fn is_vpl_frame(self) -> bool {
+        matches!(
+            self,
+            Kernel::VplTiled
+                | Kernel::VplDenoise
+                | Kernel::GbufferImport
+                | Kernel::VplPack
+                | Kernel::IrradianceExport
+                | Kernel::SceneRaster
+                | Kernel::PrimaryDirect
+                | Kernel::FrameCompose
+        )
+    }
+
+    /// Entry points and their stages: `main` for compute kernels; the
+    /// raster kernel's vertex and fragment entry points.
+    pub fn entry_points(self) -> &'static [(&'static str, naga::ShaderStage)] {
+        match self {
+            Kernel::SceneRaster => &[
+                ("vs_main", naga::ShaderStage::Vertex),
+                ("fs_gbuffer", naga::ShaderStage::Fragment),
+                ("fs_rsm", naga::ShaderStage::Fragment),
+                ("fs_shadow", naga::ShaderStage::Fragment),
+            ],
+            _ => &[("main", naga::ShaderStage::Compute)],
         }
     }
 }
@@ -400,7 +445,7 @@ impl Default for Features {
     }
 }
 
-const TEMPLATES: [(&str, &str); 16] = [
+const TEMPLATES: [(&str, &str); 19] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
     ("geometry.wgsl", include_str!("templates/geometry.wgsl")),
@@ -416,6 +461,9 @@ const TEMPLATES: [(&str, &str); 16] = [
     ("gbuffer_import", include_str!("templates/gbuffer_import.wgsl")),
     ("vpl_pack", include_str!("templates/vpl_pack.wgsl")),
     ("irradiance_export", include_str!("templates/irradiance_export.wgsl")),
+    ("scene_raster", include_str!("templates/scene_raster.wgsl")),
+    ("primary_direct", include_str!("templates/primary_direct.wgsl")),
+    ("frame_compose", include_str!("templates/frame_compose.wgsl")),
     ("layout", ""),
 ];
 
@@ -435,7 +483,7 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
         return bad(format!("workgroup size {} must be in 1..=256", f.workgroup_size));
     }
     match kernel {
-        Kernel::VplDenoise | Kernel::GbufferImport | Kernel::VplPack | Kernel::IrradianceExport
+        Kernel::VplDenoise | Kernel::GbufferImport | Kernel::VplPack | Kernel::IrradianceExport | Kernel::PrimaryDirect | Kernel::FrameCompose
             if !(1..=16).contains(&f.tile_size) || !(1..=16).contains(&f.interleave) =>
         {
             return bad(format!("{}: tile {} and period {} must be in 1..=16", kernel.name(), f.tile_size, f.interleave));
@@ -490,7 +538,10 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
     for (name, src) in TEMPLATES {
         env.add_template(name, src).map_err(|e| ShaderError::Template { kernel: kernel.name(), message: e.to_string() })?;
     }
-    let l = features.lights;
+    // The frame kernels light the scene with the primary light (a spot, or
+    // a directional light, which needs no light type).
+    let l =
+        if matches!(kernel, Kernel::SceneRaster | Kernel::PrimaryDirect) { LightSet { spot: true, ..LightSet::default() } } else { features.lights };
     let method = match features.method {
         CullMethod::Slc => "slc",
         CullMethod::Clamp => "clamp",
@@ -550,8 +601,11 @@ pub fn validate(kernel: &'static str, source: &str) -> Result<(naga::Module, Mod
 pub struct Translations {
     /// SPIR-V words.
     pub spv: Vec<u32>,
-    /// GLSL 4.30 compute shader.
+    /// GLSL 4.30 shader of the first entry point (compute kernels: `main`).
     pub glsl: String,
+    /// GLSL 4.30 of every entry point (GLSL holds one per shader): `(entry
+    /// point, source)`, in [`Kernel::entry_points`] order.
+    pub glsl_entries: Vec<(String, String)>,
     /// HLSL (shader model 5.1).
     pub hlsl: String,
     /// Metal Shading Language.
@@ -563,12 +617,17 @@ pub fn translate(g: &Generated) -> Result<Translations, ShaderError> {
     let kernel = g.kernel.name();
     let err = |backend: &'static str| move |e: &dyn std::fmt::Display| ShaderError::Translate { kernel, backend, message: e.to_string() };
     let spv = naga::back::spv::write_vec(&g.module, &g.info, &naga::back::spv::Options::default(), None).map_err(|e| err("spv")(&e))?;
-    let mut glsl = String::new();
-    let glsl_opts = naga::back::glsl::Options { version: naga::back::glsl::Version::Desktop(430), ..Default::default() };
-    let glsl_pipe = naga::back::glsl::PipelineOptions { shader_stage: naga::ShaderStage::Compute, entry_point: "main".into(), multiview: None };
-    naga::back::glsl::Writer::new(&mut glsl, &g.module, &g.info, &glsl_opts, &glsl_pipe, naga::proc::BoundsCheckPolicies::default())
-        .and_then(|mut w| w.write())
-        .map_err(|e| err("glsl")(&e))?;
+    let mut glsl_entries = Vec::new();
+    for &(entry, stage) in g.kernel.entry_points() {
+        let mut out = String::new();
+        let glsl_opts = naga::back::glsl::Options { version: naga::back::glsl::Version::Desktop(430), ..Default::default() };
+        let glsl_pipe = naga::back::glsl::PipelineOptions { shader_stage: stage, entry_point: entry.into(), multiview: None };
+        naga::back::glsl::Writer::new(&mut out, &g.module, &g.info, &glsl_opts, &glsl_pipe, naga::proc::BoundsCheckPolicies::default())
+            .and_then(|mut w| w.write())
+            .map_err(|e| err("glsl")(&e))?;
+        glsl_entries.push((entry.to_string(), out));
+    }
+    let glsl = glsl_entries[0].1.clone();
     let mut hlsl = String::new();
     let hlsl_opts = naga::back::hlsl::Options::default();
     let hlsl_pipe = naga::back::hlsl::PipelineOptions::default();
@@ -576,7 +635,7 @@ pub fn translate(g: &Generated) -> Result<Translations, ShaderError> {
     let (msl, _) =
         naga::back::msl::write_string(&g.module, &g.info, &naga::back::msl::Options::default(), &naga::back::msl::PipelineOptions::default())
             .map_err(|e| err("msl")(&e))?;
-    Ok(Translations { spv, glsl, hlsl, msl })
+    Ok(Translations { spv, glsl, glsl_entries, hlsl, msl })
 }
 
 /// Every kernel that applies to the features, generated and validated:
@@ -585,10 +644,7 @@ pub fn translate(g: &Generated) -> Result<Translations, ShaderError> {
 pub fn all_kernels(features: &Features) -> Result<Vec<Generated>, ShaderError> {
     Kernel::ALL
         .iter()
-        .filter(|&&k| {
-            let only_vpl = features.lights == LightSet { vpl: true, ..LightSet::default() };
-            !matches!(k, Kernel::VplTiled | Kernel::VplDenoise | Kernel::GbufferImport | Kernel::VplPack | Kernel::IrradianceExport) || only_vpl
-        })
+        .filter(|&&k| !k.is_vpl_frame() || features.lights == LightSet { vpl: true, ..LightSet::default() })
         .map(|&k| generate_module(k, features))
         .collect()
 }

@@ -34,6 +34,9 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
             Kernel::IrradianceExport,
             Features { lights: vpl, output_format: OutputFormat::Rgba32Float, ..Features::default() },
         ),
+        ("scene_raster", Kernel::SceneRaster, Features { lights: vpl, ..Features::default() }),
+        ("primary_direct", Kernel::PrimaryDirect, Features { lights: vpl, ..Features::default() }),
+        ("frame_compose-rgba16float", Kernel::FrameCompose, Features { lights: vpl, ..Features::default() }),
     ]
 }
 

@@ -67,14 +67,20 @@ fn every_vpl_variant_validates() {
 
 #[test]
 fn every_kernel_translates_to_every_backend() {
-    let sets = [LightSet::ALL, LightSet::parse("triangle").unwrap(), LightSet::parse("point,ies").unwrap()];
+    let sets = [LightSet::ALL, LightSet::parse("triangle").unwrap(), LightSet::parse("point,ies").unwrap(), vpl_only()];
     for lights in sets {
         for g in all_kernels(&Features { lights, ..Features::default() }).unwrap() {
             let t = translate(&g).unwrap_or_else(|e| panic!("{e}"));
             assert!(t.spv.len() > 100 && t.spv[0] == 0x0723_0203, "SPIR-V magic");
-            assert!(t.glsl.contains("void main()"), "{}", g.kernel.name());
-            assert!(t.hlsl.contains("[numthreads("));
-            assert!(t.msl.contains("kernel void"));
+            assert_eq!(t.glsl_entries.len(), g.kernel.entry_points().len());
+            assert!(t.glsl_entries.iter().all(|(_, src)| src.contains("void main()")), "{}", g.kernel.name());
+            if g.kernel == Kernel::SceneRaster {
+                assert!(t.msl.contains("vertex ") && t.msl.contains("fragment "), "{}", t.msl);
+                assert!(t.hlsl.contains("vs_main") && t.hlsl.contains("fs_rsm"));
+            } else {
+                assert!(t.hlsl.contains("[numthreads("));
+                assert!(t.msl.contains("kernel void"));
+            }
         }
     }
     for method in [CullMethod::Slc, CullMethod::Clamp, CullMethod::None] {

@@ -43,5 +43,5 @@ fn templates_do_not_contain_core_formulas() {
         }
         n += 1;
     }
-    assert_eq!(n, 15);
+    assert_eq!(n, 18);
 }

@@ -43,9 +43,10 @@ struct Uniforms {
     cone: [f32; 4],
 }
 
-/// The engine's shaders. The RSM's flux uses slc-core's spot fall-off
-/// (`spot_falloff`, from `slc_core::wgsl::library()`), so the engine and the
-/// CPU reference light the scene alike.
+/// The engine's shaders. The RSM's flux uses slc-core's spot fall-off and
+/// texel solid angle (`spot_falloff`, `rsm_texel_solid_angle`, from
+/// `slc_core::wgsl::library()`), so the engine and the CPU reference light
+/// the scene alike.
 const SHADER: &str = r#"
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
 struct Uniforms { view_proj: mat4x4f, eye: vec4f, axis: vec4f, intensity: vec4f, cone: vec4f }
@@ -67,7 +68,7 @@ struct ROut { @location(0) position: vec4f, @location(1) normal: vec4f, @locatio
 @fragment fn rsm(v: VsOut) -> ROut {
     let d = normalize(v.world - u.eye.xyz);
     let c = dot(d, u.axis.xyz);
-    let d_omega = u.axis.w * c * c * c;
+    let d_omega = rsm_texel_solid_angle(u.axis.w, c);
     let flux = u.intensity.xyz * spot_falloff(c, u.intensity.w, u.cone.x) * d_omega * v.albedo;
     return ROut(vec4f(v.world, 1.0), vec4f(facing(v.normal, v.world), 0.0), vec4f(flux, 0.0));
 }

@@ -52,6 +52,11 @@ pub(crate) enum B {
 
 /// A compute bind-group layout with the given `(binding, kind)` entries.
 pub(crate) fn layout(gpu: &GpuContext, label: &str, kinds: &[(u32, B)]) -> wgpu::BindGroupLayout {
+    layout_for(gpu, label, kinds, wgpu::ShaderStages::COMPUTE)
+}
+
+/// [`layout`] for the shader stages `visibility` (raster passes).
+pub(crate) fn layout_for(gpu: &GpuContext, label: &str, kinds: &[(u32, B)], visibility: wgpu::ShaderStages) -> wgpu::BindGroupLayout {
     let entries: Vec<wgpu::BindGroupLayoutEntry> = kinds
         .iter()
         .map(|&(binding, kind)| {
@@ -72,7 +77,7 @@ pub(crate) fn layout(gpu: &GpuContext, label: &str, kinds: &[(u32, B)]) -> wgpu:
                     view_dimension: wgpu::TextureViewDimension::D2,
                 },
             };
-            wgpu::BindGroupLayoutEntry { binding, visibility: wgpu::ShaderStages::COMPUTE, ty, count: None }
+            wgpu::BindGroupLayoutEntry { binding, visibility, ty, count: None }
         })
         .collect();
     gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some(label), entries: &entries })
@@ -203,6 +208,21 @@ impl Timer {
             beginning_of_pass_write_index: Some(2 * i),
             end_of_pass_write_index: Some(2 * i + 1),
         })
+    }
+
+    /// Timestamp writes for the next render pass (none once full).
+    pub(crate) fn next_render(&mut self) -> Option<wgpu::RenderPassTimestampWrites<'_>> {
+        let w = self.next()?;
+        Some(wgpu::RenderPassTimestampWrites {
+            query_set: w.query_set,
+            beginning_of_pass_write_index: w.beginning_of_pass_write_index,
+            end_of_pass_write_index: w.end_of_pass_write_index,
+        })
+    }
+
+    /// Starts over at the first query (the next frame).
+    pub(crate) fn reset(&mut self) {
+        self.used = 0;
     }
 
     /// Resolves the queries written so far into the resolve buffer.

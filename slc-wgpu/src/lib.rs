@@ -12,6 +12,11 @@
 //!   sub-image, SLC shading, cross-bilateral filter) on the G-buffer and
 //!   VPLs of a [`slc_scene::vpl::VplInputs`].
 //!
+//! - [`frame::GpuVplFrame`]: application A wholly on the GPU: G-buffer and
+//!   RSM rasterized, VPLs made, shaded and denoised, the primary light's
+//!   shadowed direct term and the composition, in one command encoder,
+//!   with every stage timed.
+//!
 //! - [`passes::IndirectPass`]: the same shading as a pass an engine records
 //!   into its own command encoder, on its own G-buffer and RSM (or VPL
 //!   buffer) textures, into a texture it owns.
@@ -44,6 +49,7 @@
 
 pub mod context;
 pub mod direct;
+pub mod frame;
 mod kernel;
 mod lights;
 pub mod passes;

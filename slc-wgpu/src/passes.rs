@@ -354,6 +354,17 @@ impl IndirectPass {
         inputs: &IndirectInputs,
         frame: &IndirectFrame,
     ) -> Result<(), GpuError> {
+        let dispatches = self.dispatches(gpu, inputs, frame)?;
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc indirect"), timestamp_writes: None });
+        for d in &dispatches {
+            d.record(&mut pass);
+        }
+        Ok(())
+    }
+
+    /// The frame's dispatches in order (only those its settings run), with
+    /// their bind groups made; checks the inputs and settings first.
+    pub(crate) fn dispatches<'a>(&'a self, gpu: &GpuContext, inputs: &IndirectInputs, frame: &IndirectFrame) -> Result<Vec<Dispatch<'a>>, GpuError> {
         self.check(inputs)?;
         let st = &frame.settings;
         let params = st.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
@@ -458,30 +469,41 @@ impl IndirectPass {
         let tiled = &self.tiled.iter().find(|(m, _)| *m == st.method).ok_or(GpuError::Setting("unknown method".into()))?.1;
         let (gx, gy) = (w.div_ceil(TILE), h.div_ceil(TILE));
         let (sub_w, sub_h) = (w.div_ceil(PERIOD), h.div_ceil(PERIOD));
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc indirect"), timestamp_writes: None });
-        pass.set_pipeline(&self.import.0);
-        pass.set_bind_group(0, &import, &[]);
-        pass.dispatch_workgroups(gx, gy, 1);
-        pass.set_pipeline(&self.pack.0);
-        pass.set_bind_group(0, &pack_bg, &[]);
-        pass.dispatch_workgroups(count.div_ceil(WG), 1, 1);
+        let d = Dispatch::new;
+        let mut out =
+            vec![d("G-buffer import", &self.import.0, import, [gx, gy, 1]), d("VPL generation", &self.pack.0, pack_bg, [count.div_ceil(WG), 1, 1])];
         if slc {
-            pass.set_pipeline(&self.update.0);
-            pass.set_bind_group(0, &update_bg, &[]);
-            pass.dispatch_workgroups(count.div_ceil(WG), 1, 1);
+            out.push(d("light update", &self.update.0, update_bg, [count.div_ceil(WG), 1, 1]));
         }
-        pass.set_pipeline(tiled);
-        pass.set_bind_group(0, &tiled_bg, &[]);
-        pass.dispatch_workgroups(sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), PERIOD * PERIOD);
+        out.push(d("shading", tiled, tiled_bg, [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), PERIOD * PERIOD]));
         if st.denoise {
-            pass.set_pipeline(&self.denoise.0);
-            pass.set_bind_group(0, &denoise_bg, &[]);
-            pass.dispatch_workgroups(gx, gy, 1);
+            out.push(d("denoise", &self.denoise.0, denoise_bg, [gx, gy, 1]));
         }
-        pass.set_pipeline(&self.export.0);
-        pass.set_bind_group(0, &export_bg, &[]);
-        pass.dispatch_workgroups(gx, gy, 1);
-        Ok(())
+        out.push(d("irradiance export", &self.export.0, export_bg, [gx, gy, 1]));
+        Ok(out)
+    }
+}
+
+/// One recorded dispatch of a pass: its stage name, pipeline, bind group
+/// (group 0) and workgroup counts.
+pub(crate) struct Dispatch<'a> {
+    pub(crate) stage: &'static str,
+    pipeline: &'a wgpu::ComputePipeline,
+    group: wgpu::BindGroup,
+    groups: [u32; 3],
+}
+
+impl<'a> Dispatch<'a> {
+    /// Records the dispatch into `pass`.
+    pub(crate) fn record(&self, pass: &mut wgpu::ComputePass) {
+        pass.set_pipeline(self.pipeline);
+        pass.set_bind_group(0, &self.group, &[]);
+        pass.dispatch_workgroups(self.groups[0], self.groups[1], self.groups[2]);
+    }
+
+    /// A dispatch of `pipeline` with `group` over `groups` workgroups.
+    pub(crate) fn new(stage: &'static str, pipeline: &'a wgpu::ComputePipeline, group: wgpu::BindGroup, groups: [u32; 3]) -> Self {
+        Dispatch { stage, pipeline, group, groups }
     }
 }
 

@@ -19,7 +19,7 @@ fn add_wrap_u32(a: u32, b: u32) -> u32 { return a + b; }
 ";
 
 /// Every module's shared items, in dependency order, as raw text.
-const PARTS: [&str; 12] = [
+const PARTS: [&str; 13] = [
     crate::xi::WGSL,
     crate::range::WGSL,
     crate::sphere::WGSL,
@@ -32,6 +32,7 @@ const PARTS: [&str; 12] = [
     crate::denoise::WGSL,
     crate::interleave::WGSL,
     crate::path::WGSL,
+    crate::frame::WGSL,
 ];
 
 /// The whole shared library as WGSL: [`PRELUDE`] followed by every shared

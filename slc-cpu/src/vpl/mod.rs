@@ -26,7 +26,8 @@ use crate::geometry::Geometry;
 use glam::Vec3;
 use rayon::prelude::*;
 use shade::{Cull, LightList};
-use slc_core::light::{INV_PI, Light, inverse_square, vpl_threshold_range2};
+use slc_core::frame::{diffuse_radiance, directional_irradiance, point_irradiance};
+use slc_core::light::{Light, vpl_threshold_range2};
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::xi::xi_for;
 use slc_scene::RenderError;
@@ -139,7 +140,7 @@ impl VplContext {
         } else {
             shaded.irradiance
         };
-        let data = (0..filtered.len()).map(|i| gb.emission[i] + gb.albedo[i] * INV_PI * (self.direct[i] + filtered[i])).collect();
+        let data = (0..filtered.len()).map(|i| diffuse_radiance(gb.albedo[i], gb.emission[i], self.direct[i] + filtered[i])).collect();
         stats.denoise_ms = ms(t) + shaded.denoised_ms.unwrap_or(0.0);
         stats.total_ms = stats.gbuffer_ms + stats.rsm_ms + stats.direct_ms + stats.shading_ms + stats.denoise_ms;
         VplFrame { image: Image { width: gb.width, height: gb.height, data }, stats }
@@ -294,21 +295,17 @@ fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer, geo_n: &[Vec3]) -> 
                 PrimaryLight::Spot { position, .. } => {
                     let spot = Light::Spot(scene.primary.spot().expect("validated scene"));
                     let v = position - x;
-                    let d2 = v.length_squared();
-                    let wi = v / d2.sqrt();
-                    let cos = n.dot(wi);
-                    if cos <= 0.0 || geo.occluded(x + geo_n[i] * 1e-5 * diag, position) {
+                    if n.dot(v) <= 0.0 || geo.occluded(x + geo_n[i] * 1e-5 * diag, position) {
                         return Vec3::ZERO;
                     }
-                    spot.intensity(-wi) * cos * inverse_square(d2)
+                    point_irradiance(spot.intensity(-v.normalize()), n, v)
                 }
                 PrimaryLight::Directional { direction, irradiance } => {
                     let wi = -direction.normalize();
-                    let cos = n.dot(wi);
-                    if cos <= 0.0 || geo.occluded(x + geo_n[i] * 1e-5 * diag, x + wi * 2.0 * diag) {
+                    if n.dot(wi) <= 0.0 || geo.occluded(x + geo_n[i] * 1e-5 * diag, x + wi * 2.0 * diag) {
                         return Vec3::ZERO;
                     }
-                    irradiance * cos
+                    directional_irradiance(irradiance, n, wi)
                 }
             }
         })

@@ -10,52 +10,26 @@ use slc_core::ray::face_against;
 use slc_scene::scene::{PrimaryLight, Scene};
 use slc_scene::vpl::Vpls;
 
-/// Renders the `size × size` RSM of the scene's primary light.
+/// Renders the `size × size` RSM of the scene's primary light: one ray per
+/// texel of its [`LightMap`](slc_scene::scene::LightMap), carrying the
+/// intensity toward the texel times its solid angle (spot) or the
+/// irradiance times its area (directional).
 pub fn reflective_shadow_map(scene: &Scene, geo: &Geometry, size: u32) -> Vpls {
     let n = size as usize * size as usize;
-    let res = size as f32;
     let diag = scene.diagonal();
-    let texels: Vec<(Vec3, Vec3, Vec3)> = match scene.primary {
-        PrimaryLight::Spot { position, direction, outer, .. } => {
-            let spot = Light::Spot(scene.primary.spot().expect("validated scene"));
-            let helper = if direction.y.abs() < 0.9 { Vec3::Y } else { Vec3::X };
-            let r = direction.cross(helper).normalize();
-            let u = r.cross(direction);
-            let tan = outer.tan();
-            let texel_area = (2.0 * tan / res).powi(2);
-            (0..n)
-                .into_par_iter()
-                .map(|i| {
-                    let (tx, ty) = ((i % size as usize) as f32, (i / size as usize) as f32);
-                    let s = (2.0 * (tx + 0.5) / res - 1.0) * tan;
-                    let t = (2.0 * (ty + 0.5) / res - 1.0) * tan;
-                    let q = 1.0 + s * s + t * t;
-                    let dir = (direction + r * s + u * t) / q.sqrt();
-                    // Solid angle of the texel on the image plane at distance 1.
-                    let d_omega = texel_area / (q * q.sqrt());
-                    hit_texel(scene, geo, position, dir, spot.intensity(dir) * d_omega, diag)
-                })
-                .collect()
-        }
-        PrimaryLight::Directional { direction, irradiance } => {
-            let d = direction.normalize();
-            let helper = if d.y.abs() < 0.9 { Vec3::Y } else { Vec3::X };
-            let r = d.cross(helper).normalize();
-            let u = r.cross(d);
-            let (lo, hi) = scene.bounds();
-            let c = (lo + hi) * 0.5;
-            let half = 0.5 * (hi - lo).length();
-            let texel = 2.0 * half / res;
-            (0..n)
-                .into_par_iter()
-                .map(|i| {
-                    let (tx, ty) = ((i % size as usize) as f32, (i / size as usize) as f32);
-                    let o = c + r * ((tx + 0.5) * texel - half) + u * ((ty + 0.5) * texel - half) - d * (2.0 * half);
-                    hit_texel(scene, geo, o, d, irradiance * texel * texel, diag)
-                })
-                .collect()
-        }
-    };
+    let map = scene.primary.light_map(scene.bounds());
+    let texels: Vec<(Vec3, Vec3, Vec3)> = (0..n)
+        .into_par_iter()
+        .map(|i| {
+            let (tx, ty) = ((i % size as usize) as u32, (i / size as usize) as u32);
+            let (origin, dir, gathered) = map.texel_ray(tx, ty, size);
+            let incident = match scene.primary {
+                PrimaryLight::Spot { .. } => Light::Spot(scene.primary.spot().expect("validated scene")).intensity(dir) * gathered,
+                PrimaryLight::Directional { irradiance, .. } => irradiance * gathered,
+            };
+            hit_texel(scene, geo, origin, dir, incident, diag)
+        })
+        .collect();
     Vpls {
         size,
         position: texels.iter().map(|t| t.0).collect(),

@@ -45,6 +45,18 @@ struct PackParams {
 struct ImageParams {
     eye: vec3f, width: u32, height: u32, pad0: u32, pad1: u32, pad2: u32
 }
+struct GpuVertex {
+    position: vec3f, material: u32, normal: vec3f, pad0: u32, geo_normal: vec3f, pad1: u32
+}
+struct GpuMaterial {
+    albedo: vec3f, pad0: u32, emission: vec3f, pad1: u32
+}
+struct MapParams {
+    c0: vec4f, c1: vec4f, c2: vec4f, c3: vec4f, light: GpuLight, origin: vec3f, mode: u32, axis: vec3f, size: u32, right: vec3f, extent: f32, up: vec3f, texel: f32
+}
+const MAP_CAMERA: u32 = 0;
+const MAP_PERSPECTIVE: u32 = 1;
+const MAP_ORTHOGRAPHIC: u32 = 2;
 struct ShadeParams {
     point_count: u32, seed: u32, frame: u32, eps: f32
 }
@@ -489,6 +501,33 @@ fn camera_dir(forward: vec3f, right: vec3f, up: vec3f, px: f32, py: f32, w: f32,
 }
 fn path_survival(beta: vec3f) -> f32 {
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
+}
+fn light_map_coord(t: u32, size: u32) -> f32 {
+    return 2.0 * (to_f32(t) + 0.5) / to_f32(size) - 1.0;
+}
+fn light_map_texel(a: f32, size: u32) -> u32 {
+    return to_u32(clamp(floor((a + 1.0) * 0.5 * to_f32(size)), 0.0, to_f32(size) - 1.0));
+}
+fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
+    return texel_area * cos_axis * cos_axis * cos_axis;
+}
+fn point_irradiance(intensity: vec3f, n: vec3f, v: vec3f) -> vec3f {
+    let d2: f32 = dot(v, v);
+    let cos_x: f32 = dot(n, v) / sqrt(max(d2, MIN_D2));
+    return intensity * (max(cos_x, 0.0) * inverse_square(d2));
+}
+fn directional_irradiance(e: vec3f, n: vec3f, to_light: vec3f) -> vec3f {
+    return e * max(dot(n, to_light), 0.0);
+}
+fn shadow_bias(texel: f32, cos_light: f32) -> f32 {
+    let c: f32 = clamp(cos_light, 0.1, 1.0);
+    return texel * (1.5 + sqrt(1.0 - c * c) / c);
+}
+fn shadow_lit(d: f32, d_map: f32, bias: f32) -> bool {
+    return d_map <= 0.0 || d <= d_map + bias;
+}
+fn diffuse_radiance(albedo: vec3f, emission: vec3f, e: vec3f) -> vec3f {
+    return emission + albedo * INV_PI * e;
 }
 
 // Light evaluation for the light types this scene has (others compiled out).

@@ -1,0 +1,133 @@
+//! The VPL frame's per-pixel formulas outside the shading loop, written
+//! once for the CPU's ray-cast frame and the GPU's rasterized one: where a
+//! texel of the light's map looks, the solid angle it covers (the flux of
+//! its VPL), the primary light's direct term with its shadow-map test, and
+//! the composition `L = L_e + ρ/π · E` (Dachsbacher & Stamminger,
+//! "Reflective Shadow Maps", I3D 2005; DESIGN.md §4).
+
+use crate::light::{INV_PI, MIN_D2, inverse_square};
+use crate::wgsl::*;
+
+crate::shared! {
+    /// Map coordinate in `[-1, 1]` of the centre of texel `t` of a map
+    /// `size` texels wide: `2(t + ½)/size − 1` (texel 0 at −1).
+    pub fn light_map_coord(t: u32, size: u32) -> f32 {
+        return 2.0 * (to_f32(t) + 0.5) / to_f32(size) - 1.0;
+    }
+
+    /// The texel whose cell holds map coordinate `a` (the inverse of
+    /// [`light_map_coord`]), clamped to `[0, size − 1]`.
+    pub fn light_map_texel(a: f32, size: u32) -> u32 {
+        return to_u32(clamp(floor((a + 1.0) * 0.5 * to_f32(size)), 0.0, to_f32(size) - 1.0));
+    }
+
+    /// Solid angle of a texel of a perspective light map whose texels have
+    /// area `texel_area` on the image plane at distance 1, seen at cosine
+    /// `cos_axis` from the map's axis: `A·cos³θ` (`A / q^{3/2}` with
+    /// `q = 1 + s² + t² = 1/cos²θ` for the plane point `(s, t, 1)`).
+    pub fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
+        return texel_area * cos_axis * cos_axis * cos_axis;
+    }
+
+    /// Irradiance at a receiver with unit normal `n` from a point-like
+    /// light at offset `v` (receiver → light) whose intensity toward the
+    /// receiver is `intensity`: `I · max(n·ŵ, 0) / max(d², MIN_D2)`.
+    pub fn point_irradiance(intensity: vec3f, n: vec3f, v: vec3f) -> vec3f {
+        let d2: f32 = dot(v, v);
+        let cos_x: f32 = dot(n, v) / sqrt(max(d2, MIN_D2));
+        return intensity * (max(cos_x, 0.0) * inverse_square(d2));
+    }
+
+    /// Irradiance at a receiver with unit normal `n` from a directional
+    /// light of irradiance `e` arriving from unit direction `to_light`:
+    /// `E · max(n·ω, 0)`.
+    pub fn directional_irradiance(e: vec3f, n: vec3f, to_light: vec3f) -> vec3f {
+        return e * max(dot(n, to_light), 0.0);
+    }
+
+    /// Depth bias of a shadow-map test for texels `texel` wide at the
+    /// receiver, lit at cosine `cos_light`: one and a half texels plus the
+    /// slope `tan θ` (θ clamped below 84°), so a lit surface never shadows
+    /// itself across the texel it falls in.
+    pub fn shadow_bias(texel: f32, cos_light: f32) -> f32 {
+        let c: f32 = clamp(cos_light, 0.1, 1.0);
+        return texel * (1.5 + sqrt(1.0 - c * c) / c);
+    }
+
+    /// Shadow-map test: a receiver at distance `d` from the light along the
+    /// map's ray is lit when the map's first surface on that ray lies no
+    /// nearer than `d − bias`, or when the map saw nothing there
+    /// (`d_map ≤ 0`).
+    pub fn shadow_lit(d: f32, d_map: f32, bias: f32) -> bool {
+        return d_map <= 0.0 || d <= d_map + bias;
+    }
+
+    /// Outgoing radiance of a diffuse surface of albedo `albedo` and
+    /// emission `emission` under irradiance `e`: `L_e + ρ/π · E`.
+    pub fn diffuse_radiance(albedo: vec3f, emission: vec3f, e: vec3f) -> vec3f {
+        return emission + albedo * INV_PI * e;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    #[test]
+    fn texel_coordinates_round_trip() {
+        for size in [1u32, 8, 64, 512] {
+            for t in 0..size {
+                assert_eq!(light_map_texel(light_map_coord(t, size), size), t);
+            }
+            assert_eq!(light_map_texel(-1.5, size), 0);
+            assert_eq!(light_map_texel(1.0, size), size - 1);
+        }
+    }
+
+    /// The texel solid angles of a perspective map sum to the solid angle
+    /// of its square pyramid, `4·asin(tan²α / (1 + tan²α))` for half-angle α.
+    #[test]
+    fn texel_solid_angles_sum_to_the_pyramid() {
+        let (size, tan) = (256u32, 0.7f32);
+        let area = (2.0 * tan / size as f32).powi(2);
+        let mut sum = 0.0f64;
+        for ty in 0..size {
+            for tx in 0..size {
+                let (s, t) = (light_map_coord(tx, size) * tan, light_map_coord(ty, size) * tan);
+                let cos = 1.0 / (1.0 + s * s + t * t).sqrt();
+                sum += rsm_texel_solid_angle(area, cos) as f64;
+            }
+        }
+        let t2 = (tan * tan) as f64;
+        let exact = 4.0 * (t2 / (1.0 + t2)).asin();
+        assert!((sum - exact).abs() < 1e-4 * exact, "{sum} vs {exact}");
+    }
+
+    #[test]
+    fn irradiance_terms() {
+        let n = Vec3::Y;
+        let e = point_irradiance(Vec3::splat(4.0), n, Vec3::new(0.0, 2.0, 0.0));
+        assert!((e - Vec3::ONE).abs().max_element() < 1e-6);
+        assert_eq!(point_irradiance(Vec3::ONE, n, Vec3::new(0.0, -1.0, 0.0)), Vec3::ZERO);
+        assert!(point_irradiance(Vec3::ONE, n, Vec3::ZERO).is_finite());
+        let d = directional_irradiance(Vec3::splat(2.0), n, Vec3::new(0.0, 0.5f32.sqrt(), 0.5f32.sqrt()));
+        assert!((d.x - 2.0 * 0.5f32.sqrt()).abs() < 1e-6);
+        assert_eq!(directional_irradiance(Vec3::ONE, n, -Vec3::Y), Vec3::ZERO);
+    }
+
+    #[test]
+    fn shadow_test() {
+        assert!(shadow_lit(1.0, 0.0, 0.0), "nothing in the map: lit");
+        assert!(shadow_lit(1.0, 1.0, 0.0));
+        assert!(!shadow_lit(2.0, 1.0, 0.1));
+        assert!(shadow_bias(0.01, 1.0) >= 0.015 && shadow_bias(0.01, 0.0) <= 0.01 * 12.0);
+        assert!(shadow_bias(0.01, 0.5) > shadow_bias(0.01, 1.0));
+    }
+
+    #[test]
+    fn composition() {
+        let l = diffuse_radiance(Vec3::splat(0.5), Vec3::X, Vec3::splat(core::f32::consts::PI));
+        assert!((l - Vec3::new(1.5, 0.5, 0.5)).abs().max_element() < 1e-6);
+    }
+}

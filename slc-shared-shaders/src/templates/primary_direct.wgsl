@@ -1,0 +1,69 @@
+{% include "header.wgsl" %}
+{% include "lights.wgsl" %}
+// The primary light's direct irradiance at every G-buffer pixel, shadowed
+// by its shadow map (`fs_shadow`: per texel the distance along the light's
+// ray to the first surface, 0 where none): the receiver is lit when that
+// surface lies no nearer to the light (less the slope-scaled bias).
+
+@group(0) @binding(0) var<uniform> params: MapParams;
+@group(0) @binding(1) var<uniform> image: ImageParams;
+@group(0) @binding(2) var position_tex: texture_2d<f32>;
+@group(0) @binding(3) var normal_tex: texture_2d<f32>;
+@group(0) @binding(4) var shadow_map: texture_2d<f32>;
+@group(0) @binding(5) var<storage, read_write> direct: array<vec4f>;
+// Declared because the shared library reads it; unused here, so not bound.
+@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+
+@compute @workgroup_size({{ tile }}, {{ tile }})
+fn main(@builtin(global_invocation_id) gid: vec3u) {
+    if gid.x >= image.width || gid.y >= image.height {
+        return;
+    }
+    let i = gid.y * image.width + gid.x;
+    let texel = vec2i(i32(gid.x), i32(gid.y));
+    let p = textureLoad(position_tex, texel, 0);
+    let nn = textureLoad(normal_tex, texel, 0).xyz;
+    if !(p.w > 0.0) || dot(nn, nn) <= 0.0 {
+        direct[i] = vec4f(0.0);
+        return;
+    }
+    let x = p.xyz;
+    let n = normalize(nn);
+    let size = f32(params.size);
+    var e = vec3f(0.0);
+    var a = 0.0;
+    var b = 0.0;
+    // Distance along the map's ray, the texel's width there, the light's cosine.
+    var d = 0.0;
+    var width = 0.0;
+    var cos_light = 0.0;
+    if params.mode == MAP_PERSPECTIVE {
+        let v = params.origin - x;
+        d = length(v);
+        let z = -dot(v, params.axis);
+        if z <= 0.0 || d <= 0.0 {
+            direct[i] = vec4f(0.0);
+            return;
+        }
+        a = -dot(v, params.right) / (z * params.extent);
+        b = -dot(v, params.up) / (z * params.extent);
+        width = 2.0 * params.extent * d * d / (size * z);
+        cos_light = dot(n, v) / d;
+        e = point_irradiance(light_intensity(params.light, -v / d), n, v);
+    } else {
+        let rel = x - params.origin;
+        a = dot(rel, params.right) / params.extent;
+        b = dot(rel, params.up) / params.extent;
+        d = dot(rel, params.axis);
+        width = 2.0 * params.extent / size;
+        cos_light = -dot(n, params.axis);
+        e = directional_irradiance(params.light.intensity, n, -params.axis);
+    }
+    if abs(a) <= 1.0 && abs(b) <= 1.0 {
+        let d_map = textureLoad(shadow_map, vec2i(i32(light_map_texel(a, params.size)), i32(light_map_texel(b, params.size))), 0).x;
+        if !shadow_lit(d, d_map, shadow_bias(width, cos_light)) {
+            e = vec3f(0.0);
+        }
+    }
+    direct[i] = vec4f(e, 0.0);
+}

@@ -1,0 +1,740 @@
+//! Application A wholly on the GPU: one command encoder per frame records
+//! the camera's G-buffer and the primary light's reflective shadow map
+//! and shadow map (wgpu render pipelines over the scene's triangles,
+//! `scene_raster`), the
+//! [`IndirectPass`] on them (VPLs from the RSM, light update with the CPU's
+//! ξ, tiled SLC shading per 8×8 interleaved sub-image, cross-bilateral
+//! denoise), the primary light's direct term shadowed by the shadow map
+//! (`primary_direct`) and the composition `L_e + ρ/π·(E_direct +
+//! E_indirect)` into an `Rgba32Float` HDR target (`frame_compose`). Pixels
+//! come back only when asked for ([`GpuVplFrame::render`]; an engine or a
+//! viewer records [`GpuVplFrame::record`] and samples
+//! [`GpuVplFrame::output`]).
+//!
+//! Stage times come from GPU timestamps around each stage's pass where the
+//! adapter has them; otherwise each stage is submitted alone and timed by
+//! the host's clock ([`Timing::Wall`]).
+//!
+//! ```no_run
+//! use slc_scene::scene::Scene;
+//! use slc_scene::vpl::VplSettings;
+//! use slc_wgpu::GpuContext;
+//! use slc_wgpu::frame::{FrameDesc, GpuVplFrame};
+//!
+//! let gpu = GpuContext::new()?;
+//! let frame = GpuVplFrame::new(&gpu, &Scene::cornell_box(), &FrameDesc { width: 512, height: 512, rsm_size: 256, shadow_size: 2048, min_distance: None })?;
+//! let out = frame.render(&VplSettings::default())?;
+//! for s in &out.stages {
+//!     println!("{:>18} {:.3} ms", s.name, s.ms);
+//! }
+//! out.image.write_png(std::path::Path::new("frame.png"), 1.0)?;
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use crate::kernel::{B, Timer, layout, layout_for, pipeline, read_back, storage, zeroed};
+use crate::passes::{Dispatch, IndirectFrame, IndirectInputs, IndirectPass, IndirectPassDesc, VplInput, VplSourceDesc};
+use crate::{GpuContext, GpuError};
+use glam::{Mat4, Vec3, Vec4};
+use slc_core::frame::diffuse_radiance;
+use slc_scene::backend::Timing;
+use slc_scene::image::Image;
+use slc_scene::scene::{LightMap, Material, PrimaryLight, Scene};
+use slc_scene::vpl::{GBuffer, PERIOD, VplInputs, VplSettings, VplStats, Vpls};
+use slc_shared_shaders::layout::{
+    GpuLight, GpuMaterial, GpuVertex, ImageParams, LIGHT_SPOT, MAP_CAMERA, MAP_ORTHOGRAPHIC, MAP_PERSPECTIVE, MapParams,
+};
+use slc_shared_shaders::{Features, Kernel, LightSet, OutputFormat, generate};
+use std::time::Instant;
+use wgpu::util::DeviceExt;
+
+/// Tile edge of the 2-D kernels.
+const TILE: u32 = crate::vpl::TILE;
+const F32: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
+const F16: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+const R32: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
+const DEPTH: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+
+/// What a [`GpuVplFrame`] is built for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FrameDesc {
+    /// Image width (1..=16384).
+    pub width: u32,
+    /// Image height (1..=16384).
+    pub height: u32,
+    /// RSM edge: a positive multiple of 8 up to 4096 (`rsm_size²` VPLs).
+    pub rsm_size: u32,
+    /// Shadow-map edge (the primary light's map again, depth only, for its
+    /// direct term): 1 up to the device's texture limit. The RSM's own
+    /// resolution is too coarse for a wide spot's shadows.
+    pub shadow_size: u32,
+    /// Clamp distance of the VPL fall-off (`None`: 1% of the scene's diagonal).
+    pub min_distance: Option<f32>,
+}
+
+/// One stage's time.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StageTime {
+    /// Stage name: `G-buffer`, `RSM`, `shadow map`, `G-buffer import`, `VPL generation`,
+    /// `light update`, `shading`, `denoise`, `irradiance export`, `direct`,
+    /// `composition`.
+    pub name: &'static str,
+    /// Milliseconds.
+    pub ms: f64,
+}
+
+/// A rendered frame read back.
+#[derive(Clone, Debug)]
+pub struct FrameRender {
+    /// Final linear radiance.
+    pub image: Image,
+    /// Every stage's time, in order.
+    pub stages: Vec<StageTime>,
+    /// How the stages were timed.
+    pub timing: Timing,
+    /// The stage times summed into the CPU frame's categories (G-buffer:
+    /// raster and import; RSM: raster and VPL generation; direct: shadow
+    /// map and direct; shading: light update and shading; denoise: denoise,
+    /// export and composition), the kept lights per shaded pixel and the
+    /// VPL count. The GPU does not count loop evaluations (`evaluations`
+    /// and `lights_per_pixel` are 0).
+    pub stats: VplStats,
+}
+
+struct Target {
+    texture: wgpu::Texture,
+    view: wgpu::TextureView,
+}
+
+fn target(gpu: &GpuContext, label: &str, (w, h): (u32, u32), format: wgpu::TextureFormat, usage: wgpu::TextureUsages) -> Target {
+    let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+        label: Some(label),
+        size: wgpu::Extent3d { width: w, height: h, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage,
+        view_formats: &[],
+    });
+    let view = texture.create_view(&Default::default());
+    Target { texture, view }
+}
+
+/// Right-handed view matrix looking along `forward` with the camera basis
+/// of [`slc_scene::scene::Camera::basis`] (right = forward × up).
+fn look(eye: Vec3, forward: Vec3, up: Vec3) -> Mat4 {
+    let f = forward.normalize();
+    let r = f.cross(up).normalize();
+    let u = r.cross(f);
+    Mat4::from_cols(
+        Vec4::new(r.x, u.x, -f.x, 0.0),
+        Vec4::new(r.y, u.y, -f.y, 0.0),
+        Vec4::new(r.z, u.z, -f.z, 0.0),
+        Vec4::new(-r.dot(eye), -u.dot(eye), f.dot(eye), 1.0),
+    )
+}
+
+/// Right-handed perspective projection, depth in `[0, 1]`, `tan_y` the
+/// tangent of half the vertical field of view.
+fn perspective(tan_y: f32, aspect: f32, near: f32, far: f32) -> Mat4 {
+    let h = 1.0 / tan_y;
+    let r = far / (near - far);
+    Mat4::from_cols(
+        Vec4::new(h / aspect, 0.0, 0.0, 0.0),
+        Vec4::new(0.0, h, 0.0, 0.0),
+        Vec4::new(0.0, 0.0, r, -1.0),
+        Vec4::new(0.0, 0.0, r * near, 0.0),
+    )
+}
+
+/// Map row 0 lies toward `−up` (the CPU's texel order): flip clip-space y.
+fn flip_y() -> Mat4 {
+    Mat4::from_scale(Vec3::new(1.0, -1.0, 1.0))
+}
+
+fn tex(t: &Target) -> wgpu::BindingResource<'_> {
+    wgpu::BindingResource::TextureView(&t.view)
+}
+
+fn columns(m: Mat4) -> [Vec4; 4] {
+    [m.x_axis, m.y_axis, m.z_axis, m.w_axis]
+}
+
+/// The VPL frame of one scene at one size, wholly on the GPU.
+pub struct GpuVplFrame<'a> {
+    gpu: &'a GpuContext,
+    desc: FrameDesc,
+    eye: Vec3,
+    min_distance: f32,
+    materials: Vec<Material>,
+    vertices: wgpu::Buffer,
+    vertex_count: u32,
+    camera_group: wgpu::BindGroup,
+    light_group: wgpu::BindGroup,
+    shadow_group: wgpu::BindGroup,
+    gbuffer_pipeline: wgpu::RenderPipeline,
+    rsm_pipeline: wgpu::RenderPipeline,
+    shadow_pipeline: wgpu::RenderPipeline,
+    gb: [Target; 3],
+    rsm: [Target; 4],
+    shadow_map: [Target; 2],
+    indirect: IndirectPass,
+    irradiance: Target,
+    direct: wgpu::Buffer,
+    direct_pipeline: wgpu::ComputePipeline,
+    direct_group: wgpu::BindGroup,
+    compose_pipeline: wgpu::ComputePipeline,
+    compose_group: wgpu::BindGroup,
+    output: Target,
+    busy: std::sync::Mutex<Option<Timer>>,
+}
+
+/// Number of stages that can be timed in one frame.
+const MAX_STAGES: u32 = 11;
+
+impl<'a> GpuVplFrame<'a> {
+    /// Validates the scene and sizes as the CPU's frame does, uploads the
+    /// triangles and materials, and builds the pipelines and targets.
+    pub fn new(gpu: &'a GpuContext, scene: &Scene, desc: &FrameDesc) -> Result<Self, GpuError> {
+        let setting = |e: &dyn std::fmt::Display| GpuError::Setting(e.to_string());
+        scene.validate().map_err(|e| setting(&e))?;
+        slc_scene::check_size(desc.width, desc.height).map_err(|e| setting(&e))?;
+        let size = desc.rsm_size;
+        if size == 0 || !size.is_multiple_of(PERIOD) || size > 4096 {
+            return Err(setting(&slc_scene::RenderError::VplCount((size as u64).pow(2))));
+        }
+        let diag = scene.diagonal();
+        let min_distance = desc.min_distance.unwrap_or(0.01 * diag);
+        if !(min_distance.is_finite() && min_distance >= 0.0) {
+            return Err(GpuError::Setting(format!("min distance {min_distance} must be finite and >= 0")));
+        }
+        let (w, h) = (desc.width, desc.height);
+        let lim = &gpu.limits;
+        let shadow = desc.shadow_size;
+        if shadow == 0 {
+            return Err(GpuError::Setting("shadow map size must be > 0".into()));
+        }
+        gpu.require("max_texture_dimension_2d", w.max(h).max(size).max(shadow) as u64, lim.max_texture_dimension_2d as u64)?;
+        gpu.require("max_color_attachments", 3, lim.max_color_attachments as u64)?;
+        gpu.require("max_color_attachment_bytes_per_sample", 32, lim.max_color_attachment_bytes_per_sample as u64)?;
+        gpu.require("max_storage_buffers_per_shader_stage (fragment)", 1, lim.max_storage_buffers_per_shader_stage as u64)?;
+        let vertex_bytes = scene.triangles.len() as u64 * 3 * std::mem::size_of::<GpuVertex>() as u64;
+        gpu.require("max_buffer_size (vertices)", vertex_bytes, lim.max_buffer_size)?;
+
+        // Triangles as vertices: position, material, vertex normal, geometric normal.
+        let mut verts = Vec::with_capacity(scene.triangles.len() * 3);
+        for (i, tri) in scene.triangles.iter().enumerate() {
+            let (geo, normals) = (scene.geometric_normal(i), scene.vertex_normals(i));
+            for k in 0..3 {
+                verts.push(GpuVertex { position: tri[k], material: scene.material_of[i], normal: normals[k], pad0: 0, geo_normal: geo, pad1: 0 });
+            }
+        }
+        let vertices = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("slc frame vertices"),
+            contents: bytemuck::cast_slice(&verts),
+            usage: wgpu::BufferUsages::VERTEX,
+        });
+        let mats: Vec<GpuMaterial> =
+            scene.materials.iter().map(|m| GpuMaterial { albedo: m.albedo, pad0: 0, emission: m.emission, pad1: 0 }).collect();
+        let materials = storage(gpu, "slc frame materials", bytemuck::cast_slice(&mats), wgpu::BufferUsages::empty());
+
+        // The camera's and the light's raster parameters.
+        let (lo, hi) = scene.bounds();
+        let cam = &scene.camera;
+        // Depth range: the scene's bounding sphere, the near plane no closer
+        // than 1/1000 of the far one (a 32-bit depth buffer then resolves
+        // 0.05 mm at 2 m, enough for a light quad under its ceiling).
+        let (centre, radius) = ((lo + hi) * 0.5, 0.5 * diag);
+        let range_of = |p: Vec3| {
+            let far = (p - centre).length() + radius;
+            (((p - centre).length() - radius) * 0.9).max(far * 1e-3)..far * 1.01
+        };
+        let perspective_from = |p: Vec3, tan_y: f32, aspect: f32| {
+            let r = range_of(p);
+            perspective(tan_y, aspect, r.start, r.end)
+        };
+        let tan_y = (cam.vfov_deg.to_radians() * 0.5).tan();
+        let camera_vp = perspective_from(cam.position, tan_y, w as f32 / h as f32) * look(cam.position, cam.target - cam.position, cam.up);
+        let map = scene.primary.light_map((lo, hi));
+        let light = match scene.primary {
+            PrimaryLight::Spot { position, direction, intensity, .. } => {
+                let (cos_outer, cos_inner) = scene.primary.spot().map(|s| s.cone_cosines()).unwrap_or((0.0, 0.0));
+                GpuLight {
+                    p0: position,
+                    kind: LIGHT_SPOT,
+                    p1: direction.normalize(),
+                    a: cos_outer,
+                    p2: Vec3::ZERO,
+                    b: cos_inner,
+                    intensity,
+                    ies_base: 0,
+                }
+            }
+            PrimaryLight::Directional { irradiance, .. } => {
+                GpuLight { p0: Vec3::ZERO, kind: LIGHT_SPOT, p1: Vec3::ZERO, a: 0.0, p2: Vec3::ZERO, b: 0.0, intensity: irradiance, ies_base: 0 }
+            }
+        };
+        let (light_vp, origin, axis, right, up, extent, mode) = match map {
+            LightMap::Perspective { origin, axis, right, up, tan } => {
+                (flip_y() * perspective_from(origin, tan, 1.0) * look(origin, axis, up), origin, axis, right, up, tan, MAP_PERSPECTIVE)
+            }
+            LightMap::Orthographic { origin, axis, right, up, half } => {
+                let ortho = Mat4::from_cols(
+                    Vec4::new(1.0 / half, 0.0, 0.0, 0.0),
+                    Vec4::new(0.0, 1.0 / half, 0.0, 0.0),
+                    Vec4::new(0.0, 0.0, -1.0 / (4.0 * half), 0.0),
+                    Vec4::W,
+                );
+                (flip_y() * ortho * look(origin, axis, up), origin, axis, right, up, half, MAP_ORTHOGRAPHIC)
+            }
+        };
+        let texel = (2.0 * extent / size as f32).powi(2);
+        let params = |vp: Mat4, origin: Vec3, mode: u32, size: u32| {
+            let [c0, c1, c2, c3] = columns(vp);
+            MapParams { c0, c1, c2, c3, light, origin, mode, axis, size, right, extent, up, texel }
+        };
+        let uniform = |label: &str, bytes: &[u8]| {
+            gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(label),
+                contents: bytes,
+                usage: wgpu::BufferUsages::UNIFORM,
+            })
+        };
+        let camera_params = uniform("slc camera params", bytemuck::bytes_of(&params(camera_vp, cam.position, MAP_CAMERA, 0)));
+        let light_params = uniform("slc light params", bytemuck::bytes_of(&params(light_vp, origin, mode, size)));
+        let shadow_params = uniform("slc shadow params", bytemuck::bytes_of(&params(light_vp, origin, mode, shadow)));
+        let image_params =
+            uniform("slc frame image", bytemuck::bytes_of(&ImageParams { eye: cam.position, width: w, height: h, pad0: 0, pad1: 0, pad2: 0 }));
+
+        // Raster pipelines.
+        let features = Features { lights: LightSet { vpl: true, ..LightSet::default() }, tile_size: TILE, interleave: PERIOD, ..Features::default() };
+        let raster_layout = layout_for(gpu, "scene_raster", &[(0, B::Uniform), (1, B::Read)], wgpu::ShaderStages::VERTEX_FRAGMENT);
+        let group = |label: &str, layout: &wgpu::BindGroupLayout, res: &[(u32, wgpu::BindingResource)]| {
+            let entries: Vec<wgpu::BindGroupEntry> =
+                res.iter().map(|(binding, r)| wgpu::BindGroupEntry { binding: *binding, resource: r.clone() }).collect();
+            gpu.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(label), layout, entries: &entries })
+        };
+        let camera_group =
+            group("scene_raster camera", &raster_layout, &[(0, camera_params.as_entire_binding()), (1, materials.as_entire_binding())]);
+        let light_group = group("scene_raster light", &raster_layout, &[(0, light_params.as_entire_binding()), (1, materials.as_entire_binding())]);
+        let shadow_group =
+            group("scene_raster shadow", &raster_layout, &[(0, shadow_params.as_entire_binding()), (1, materials.as_entire_binding())]);
+        let module = gpu.device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("scene_raster"),
+            source: wgpu::ShaderSource::Wgsl(generate(Kernel::SceneRaster, &features)?.into()),
+        });
+        let pipeline_layout = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("scene_raster"),
+            bind_group_layouts: &[Some(&raster_layout)],
+            immediate_size: 0,
+        });
+        // GpuVertex's offsets (its padding keeps the WGSL layout).
+        let attribute = |shader_location, format, offset| wgpu::VertexAttribute { format, offset, shader_location };
+        let attributes = [
+            attribute(0, wgpu::VertexFormat::Float32x3, 0),
+            attribute(1, wgpu::VertexFormat::Uint32, 12),
+            attribute(2, wgpu::VertexFormat::Float32x3, 16),
+            attribute(3, wgpu::VertexFormat::Float32x3, 32),
+        ];
+        let buffers = [Some(wgpu::VertexBufferLayout {
+            array_stride: std::mem::size_of::<GpuVertex>() as u64,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes: &attributes,
+        })];
+        let raster = |entry: &str, formats: &[wgpu::TextureFormat]| {
+            let targets: Vec<Option<wgpu::ColorTargetState>> = formats.iter().map(|&f| Some(f.into())).collect();
+            gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some(entry),
+                layout: Some(&pipeline_layout),
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some("vs_main"),
+                    compilation_options: Default::default(),
+                    buffers: &buffers,
+                },
+                fragment: Some(wgpu::FragmentState {
+                    module: &module,
+                    entry_point: Some(entry),
+                    compilation_options: Default::default(),
+                    targets: &targets,
+                }),
+                primitive: wgpu::PrimitiveState::default(),
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: DEPTH,
+                    depth_write_enabled: Some(true),
+                    depth_compare: Some(wgpu::CompareFunction::Less),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample: Default::default(),
+                multiview_mask: None,
+                cache: None,
+            })
+        };
+        let gbuffer_pipeline = raster("fs_gbuffer", &[F32, F32]);
+        let rsm_pipeline = raster("fs_rsm", &[F32, F16, F16]);
+        let shadow_pipeline = raster("fs_shadow", &[R32]);
+
+        // Targets.
+        let rt = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
+        let gb = [
+            target(gpu, "slc gb position", (w, h), F32, rt),
+            target(gpu, "slc gb normal", (w, h), F32, rt),
+            target(gpu, "slc gb depth", (w, h), DEPTH, wgpu::TextureUsages::RENDER_ATTACHMENT),
+        ];
+        let rsm = [
+            target(gpu, "slc rsm position", (size, size), F32, rt),
+            target(gpu, "slc rsm normal", (size, size), F16, rt),
+            target(gpu, "slc rsm flux", (size, size), F16, rt),
+            target(gpu, "slc rsm depth", (size, size), DEPTH, wgpu::TextureUsages::RENDER_ATTACHMENT),
+        ];
+        let shadow_map = [
+            target(gpu, "slc shadow map", (shadow, shadow), R32, rt),
+            target(gpu, "slc shadow depth", (shadow, shadow), DEPTH, wgpu::TextureUsages::RENDER_ATTACHMENT),
+        ];
+        let sampled_storage = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
+        let irradiance = target(gpu, "slc frame irradiance", (w, h), F32, sampled_storage);
+        let output = target(gpu, "slc frame output", (w, h), F32, sampled_storage);
+        let indirect = IndirectPass::new(gpu, &IndirectPassDesc { width: w, height: h, vpls: VplSourceDesc::Rsm { size }, output_format: F32 })?;
+
+        // Direct light and composition: fixed resources, bound once.
+        let kernel = |k: Kernel, f: &Features, l: &wgpu::BindGroupLayout| -> Result<wgpu::ComputePipeline, GpuError> {
+            Ok(pipeline(gpu, k.name(), generate(k, f)?, &[l]))
+        };
+        let direct = zeroed(gpu, "slc frame direct", w as u64 * h as u64 * 16, wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC);
+        let direct_layout =
+            layout(gpu, "primary_direct", &[(0, B::Uniform), (1, B::Uniform), (2, B::Texture), (3, B::Texture), (4, B::Texture), (5, B::Write)]);
+        let direct_pipeline = kernel(Kernel::PrimaryDirect, &features, &direct_layout)?;
+        let direct_group = group(
+            "primary_direct",
+            &direct_layout,
+            &[
+                (0, shadow_params.as_entire_binding()),
+                (1, image_params.as_entire_binding()),
+                (2, tex(&gb[0])),
+                (3, tex(&gb[1])),
+                (4, tex(&shadow_map[0])),
+                (5, direct.as_entire_binding()),
+            ],
+        );
+        let compose_layout = layout(
+            gpu,
+            "frame_compose",
+            &[(0, B::Uniform), (1, B::Texture), (2, B::Texture), (3, B::Texture), (4, B::Read), (5, B::Read), (6, B::Storage(F32))],
+        );
+        let compose_pipeline = kernel(Kernel::FrameCompose, &Features { output_format: OutputFormat::Rgba32Float, ..features }, &compose_layout)?;
+        let compose_group = group(
+            "frame_compose",
+            &compose_layout,
+            &[
+                (0, image_params.as_entire_binding()),
+                (1, tex(&gb[0])),
+                (2, tex(&gb[1])),
+                (3, tex(&irradiance)),
+                (4, direct.as_entire_binding()),
+                (5, materials.as_entire_binding()),
+                (6, tex(&output)),
+            ],
+        );
+        let s = GpuVplFrame {
+            gpu,
+            desc: *desc,
+            eye: cam.position,
+            min_distance,
+            materials: scene.materials.clone(),
+            vertices,
+            vertex_count: verts.len() as u32,
+            camera_group,
+            light_group,
+            shadow_group,
+            gbuffer_pipeline,
+            rsm_pipeline,
+            shadow_pipeline,
+            gb,
+            rsm,
+            shadow_map,
+            indirect,
+            irradiance,
+            direct,
+            direct_pipeline,
+            direct_group,
+            compose_pipeline,
+            compose_group,
+            output,
+            busy: std::sync::Mutex::new(Timer::new(gpu, MAX_STAGES)),
+        };
+        gpu.take_errors()?;
+        Ok(s)
+    }
+
+    /// The descriptor the frame was built for.
+    pub fn desc(&self) -> &FrameDesc {
+        &self.desc
+    }
+
+    /// The HDR target (`Rgba32Float`, `TEXTURE_BINDING | STORAGE_BINDING |
+    /// COPY_SRC`): radiance, alpha 1, after the recorded frame.
+    pub fn output(&self) -> &wgpu::Texture {
+        &self.output.texture
+    }
+
+    /// The frame's stages for `settings`, each recordable on its own.
+    fn stages(&self, settings: &VplSettings) -> Result<Vec<Stage<'_>>, GpuError> {
+        let inputs = IndirectInputs {
+            position: &self.gb[0].view,
+            normal: &self.gb[1].view,
+            vpls: VplInput::Rsm { position: &self.rsm[0].view, normal: &self.rsm[1].view, flux: &self.rsm[2].view },
+            output: &self.irradiance.view,
+        };
+        let frame = IndirectFrame { settings: *settings, eye: self.eye, min_distance: self.min_distance };
+        let indirect = self.indirect.dispatches(self.gpu, &inputs, &frame)?;
+        let (gx, gy) = (self.desc.width.div_ceil(TILE), self.desc.height.div_ceil(TILE));
+        let mut stages = vec![
+            Stage::Raster { name: "G-buffer", view: View::Camera },
+            Stage::Raster { name: "RSM", view: View::Rsm },
+            Stage::Raster { name: "shadow map", view: View::Shadow },
+        ];
+        stages.extend(indirect.into_iter().map(Stage::Compute));
+        stages.push(Stage::Compute(Dispatch::new("direct", &self.direct_pipeline, self.direct_group.clone(), [gx, gy, 1])));
+        stages.push(Stage::Compute(Dispatch::new("composition", &self.compose_pipeline, self.compose_group.clone(), [gx, gy, 1])));
+        Ok(stages)
+    }
+
+    fn record_stage(&self, encoder: &mut wgpu::CommandEncoder, stage: &Stage, timer: Option<&mut Timer>) {
+        match stage {
+            Stage::Compute(d) => {
+                let timestamp_writes = timer.and_then(|t| t.next());
+                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(d.stage), timestamp_writes });
+                d.record(&mut pass);
+            }
+            Stage::Raster { name, view } => {
+                let (colors, depth, pipeline, group) = match view {
+                    View::Camera => (&self.gb[..2], &self.gb[2], &self.gbuffer_pipeline, &self.camera_group),
+                    View::Rsm => (&self.rsm[..3], &self.rsm[3], &self.rsm_pipeline, &self.light_group),
+                    View::Shadow => (&self.shadow_map[..1], &self.shadow_map[1], &self.shadow_pipeline, &self.shadow_group),
+                };
+                let attachments: Vec<Option<wgpu::RenderPassColorAttachment>> = colors
+                    .iter()
+                    .map(|t| {
+                        Some(wgpu::RenderPassColorAttachment {
+                            view: &t.view,
+                            depth_slice: None,
+                            resolve_target: None,
+                            ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT), store: wgpu::StoreOp::Store },
+                        })
+                    })
+                    .collect();
+                let timestamp_writes = timer.and_then(|t| t.next_render());
+                let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                    label: Some(name),
+                    color_attachments: &attachments,
+                    depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                        view: &depth.view,
+                        depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+                        stencil_ops: None,
+                    }),
+                    timestamp_writes,
+                    occlusion_query_set: None,
+                    multiview_mask: None,
+                });
+                pass.set_pipeline(pipeline);
+                pass.set_bind_group(0, group, &[]);
+                pass.set_vertex_buffer(0, self.vertices.slice(..));
+                pass.draw(0..self.vertex_count, 0..1);
+            }
+        }
+    }
+
+    /// Records the whole frame into `encoder` (render and compute passes;
+    /// nothing is submitted or read back). Methods `slc`, `clamp`, `none`.
+    pub fn record(&self, encoder: &mut wgpu::CommandEncoder, settings: &VplSettings) -> Result<(), GpuError> {
+        for stage in &self.stages(settings)? {
+            self.record_stage(encoder, stage, None);
+        }
+        Ok(())
+    }
+
+    /// Renders one frame in one command encoder, reads the image back and
+    /// times every stage (GPU timestamps, else each stage submitted alone
+    /// under the host clock).
+    pub fn render(&self, settings: &VplSettings) -> Result<FrameRender, GpuError> {
+        let gpu = self.gpu;
+        let mut timer = self.busy.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
+        let stages = self.stages(settings)?;
+        let mut times = Vec::with_capacity(stages.len());
+        let timing = match timer.as_mut() {
+            Some(t) => {
+                t.reset();
+                let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc frame") });
+                for stage in &stages {
+                    self.record_stage(&mut encoder, stage, Some(t));
+                }
+                t.resolve(&mut encoder);
+                gpu.queue.submit([encoder.finish()]);
+                gpu.wait()?;
+                for (stage, ms) in stages.iter().zip(t.durations_ms(gpu)?) {
+                    times.push(StageTime { name: stage.name(), ms });
+                }
+                Timing::GpuTimestamps
+            }
+            None => {
+                gpu.wait()?;
+                for stage in &stages {
+                    let t0 = Instant::now();
+                    let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(stage.name()) });
+                    self.record_stage(&mut encoder, stage, None);
+                    gpu.queue.submit([encoder.finish()]);
+                    gpu.wait()?;
+                    times.push(StageTime { name: stage.name(), ms: t0.elapsed().as_secs_f64() * 1e3 });
+                }
+                Timing::Wall
+            }
+        };
+        drop(stages);
+        let (w, h) = (self.desc.width, self.desc.height);
+        let radiance = read_texture(gpu, &self.output.texture)?;
+        let irradiance = read_texture(gpu, &self.irradiance.texture)?;
+        let positions = read_texture(gpu, &self.gb[0].texture)?;
+        let image = Image { width: w, height: h, data: radiance.iter().map(|p| Vec3::new(p[0], p[1], p[2])).collect() };
+        let shaded = positions.iter().filter(|p| p[3] > 0.0).count().max(1) as f64;
+        let sum = |names: &[&str]| times.iter().filter(|t| names.contains(&t.name)).map(|t| t.ms).sum::<f64>();
+        let stats = VplStats {
+            gbuffer_ms: sum(&["G-buffer", "G-buffer import"]),
+            // The CPU's "direct" includes its shadow rays.
+            direct_ms: sum(&["shadow map", "direct"]),
+            rsm_ms: sum(&["RSM", "VPL generation"]),
+            shading_ms: sum(&["light update", "shading"]),
+            denoise_ms: sum(&["denoise", "irradiance export", "composition"]),
+            total_ms: times.iter().map(|t| t.ms).sum(),
+            vpls: (self.desc.rsm_size as usize).pow(2),
+            lights_per_pixel: 0.0,
+            kept_per_pixel: irradiance.iter().zip(&positions).filter(|(_, p)| p[3] > 0.0).map(|(e, _)| e[3] as f64).sum::<f64>() / shaded,
+            evaluations: 0,
+        };
+        Ok(FrameRender { image, stages: times, timing, stats })
+    }
+
+    /// The G-buffer and VPLs the last frame rasterized, read back as the
+    /// backend-neutral [`VplInputs`] (to shade them with another backend,
+    /// or to compare with the CPU's ray-cast ones). Depth is the distance
+    /// from the eye.
+    pub fn read_inputs(&self) -> Result<VplInputs, GpuError> {
+        let gpu = self.gpu;
+        let (position, normal) = (read_texture(gpu, &self.gb[0].texture)?, read_texture(gpu, &self.gb[1].texture)?);
+        let n = position.len();
+        let mut gb = GBuffer {
+            width: self.desc.width,
+            height: self.desc.height,
+            position: vec![Vec3::ZERO; n],
+            normal: vec![Vec3::ZERO; n],
+            albedo: vec![Vec3::ZERO; n],
+            emission: vec![Vec3::ZERO; n],
+            depth: vec![f32::INFINITY; n],
+        };
+        for i in 0..n {
+            if position[i][3] > 0.0 {
+                let p = Vec3::new(position[i][0], position[i][1], position[i][2]);
+                let m = self.materials.get(normal[i][3] as usize).copied().unwrap_or(Material { albedo: Vec3::ZERO, emission: Vec3::ZERO });
+                gb.position[i] = p;
+                gb.normal[i] = Vec3::new(normal[i][0], normal[i][1], normal[i][2]);
+                gb.albedo[i] = m.albedo;
+                gb.emission[i] = m.emission;
+                gb.depth[i] = (p - self.eye).length();
+            }
+        }
+        let [p, nn, f] = [0, 1, 2].map(|k| read_texture(gpu, &self.rsm[k].texture));
+        let (p, nn, f) = (p?, nn?, f?);
+        let v3 = |t: &[[f32; 4]]| t.iter().map(|x| Vec3::new(x[0], x[1], x[2])).collect::<Vec<_>>();
+        let vpls = Vpls { size: self.desc.rsm_size, position: v3(&p), normal: v3(&nn), flux: v3(&f) };
+        Ok(VplInputs { gbuffer: gb, vpls, min_d2: self.min_distance * self.min_distance })
+    }
+
+    /// The primary light's direct irradiance of the last frame, per pixel.
+    pub fn read_direct(&self) -> Result<Vec<Vec3>, GpuError> {
+        let staging = zeroed(self.gpu, "slc direct readback", self.direct.size(), wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
+        let d: Vec<[f32; 4]> = read_back(self.gpu, &self.direct, &staging)?;
+        Ok(d.iter().map(|x| Vec3::new(x[0], x[1], x[2])).collect())
+    }
+
+    /// The image this frame would show with indirect irradiance
+    /// `indirect` (e.g. the reference's, shaded from [`Self::read_inputs`])
+    /// instead of its own: `L_e + ρ/π·(E_direct + E)` on the host with the
+    /// last frame's G-buffer and direct light.
+    pub fn compose_with(&self, inputs: &VplInputs, indirect: &[Vec3]) -> Result<Image, GpuError> {
+        let direct = self.read_direct()?;
+        let gb = &inputs.gbuffer;
+        if indirect.len() != direct.len() || gb.position.len() != direct.len() {
+            return Err(GpuError::Setting(format!("{} irradiance values for {} pixels", indirect.len(), direct.len())));
+        }
+        let data = (0..direct.len())
+            .map(|i| if gb.valid(i) { diffuse_radiance(gb.albedo[i], gb.emission[i], direct[i] + indirect[i]) } else { Vec3::ZERO })
+            .collect();
+        Ok(Image { width: gb.width, height: gb.height, data })
+    }
+}
+
+/// What a raster pass draws.
+enum View {
+    /// The camera's G-buffer.
+    Camera,
+    /// The light's RSM.
+    Rsm,
+    /// The light's shadow map.
+    Shadow,
+}
+
+/// A stage of the frame.
+enum Stage<'p> {
+    /// A raster pass.
+    Raster { name: &'static str, view: View },
+    /// A compute dispatch.
+    Compute(Dispatch<'p>),
+}
+
+impl Stage<'_> {
+    fn name(&self) -> &'static str {
+        match self {
+            Stage::Raster { name, .. } => name,
+            Stage::Compute(d) => d.stage,
+        }
+    }
+}
+
+/// Reads an `Rgba32Float` or `Rgba16Float` texture back as `[f32; 4]` per
+/// texel (rows padded to the copy alignment on the GPU side).
+fn read_texture(gpu: &GpuContext, t: &wgpu::Texture) -> Result<Vec<[f32; 4]>, GpuError> {
+    let (w, h) = (t.width(), t.height());
+    let texel = match t.format() {
+        F32 => 16,
+        F16 => 8,
+        f => return Err(GpuError::Setting(format!("cannot read back {f:?}"))),
+    };
+    let row = (w * texel).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+    let staging = zeroed(gpu, "slc texture readback", row as u64 * h as u64, wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
+    let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc texture readback") });
+    enc.copy_texture_to_buffer(
+        t.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &staging,
+            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(row), rows_per_image: None },
+        },
+        t.size(),
+    );
+    gpu.queue.submit([enc.finish()]);
+    let slice = staging.slice(..);
+    slice.map_async(wgpu::MapMode::Read, |_| {});
+    gpu.wait()?;
+    let bytes = slice.get_mapped_range().map_err(|e| GpuError::Device(e.to_string()))?.to_vec();
+    staging.unmap();
+    let mut out = Vec::with_capacity((w * h) as usize);
+    for y in 0..h as usize {
+        let r = &bytes[y * row as usize..y * row as usize + (w * texel) as usize];
+        if texel == 16 {
+            out.extend(bytemuck::pod_collect_to_vec::<u8, [f32; 4]>(r));
+        } else {
+            let halves: Vec<u16> = bytemuck::pod_collect_to_vec(r);
+            out.extend(halves.chunks_exact(4).map(|c| [0, 1, 2, 3].map(|k| half::f16::from_bits(c[k]).to_f32())));
+        }
+    }
+    Ok(out)
+}
