@@ -1,10 +1,11 @@
-//! Backend selection at run time: the CPU or the GPU implementor of each
-//! application's trait ([`slc_scene::backend`]), behind one boxed object.
+//! Backend selection at run time: the CPU or the GPU path tracer
+//! ([`slc_scene::backend`]) behind one boxed object. The VPL application
+//! runs the CPU's frame or the GPU's whole frame
+//! ([`slc_wgpu::frame::GpuVplFrame`]), chosen in `render` and `bench`.
 
 use clap::ValueEnum;
 use slc_cpu::pt::CpuPathTracer;
-use slc_cpu::vpl::VplContext;
-use slc_scene::backend::{DynIndirectShader, DynPathTracer};
+use slc_scene::backend::DynPathTracer;
 use slc_scene::pt::PtScene;
 use slc_wgpu::GpuContext;
 
@@ -22,15 +23,6 @@ pub fn gpu_context(backend: Backend) -> Result<Option<GpuContext>, String> {
     match backend {
         Backend::Cpu => Ok(None),
         Backend::Gpu => GpuContext::new().map(Some).map_err(|e| e.to_string()),
-    }
-}
-
-/// The indirect-light shader for `ctx`'s G-buffer and VPLs: the GPU's when
-/// `gpu` holds a context, else the CPU's (the context itself).
-pub fn indirect_shader<'a>(gpu: Option<&'a GpuContext>, ctx: &'a VplContext) -> Result<Box<dyn DynIndirectShader + 'a>, String> {
-    match gpu {
-        Some(g) => Ok(Box::new(slc_wgpu::vpl::GpuVpl::new(g, ctx.inputs()).map_err(|e| e.to_string())?)),
-        None => Ok(Box::new(ctx)),
     }
 }
 

@@ -2,8 +2,8 @@
 //! error bounds and `clamp` over a sweep of ranges, measures RMSE of each
 //! against the (cached) reference, and writes JSON (and optionally CSV).
 
-use crate::backends::{GPU_BATCH, gpu_context, indirect_shader, path_tracer};
-use crate::report::{PtReport, PtRun, Report, Run, to_csv};
+use crate::backends::{Backend, GPU_BATCH, gpu_context, path_tracer};
+use crate::report::{PtReport, PtRun, Report, Run, StageMs, to_csv};
 use crate::scene_args::{App, SceneArgs};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -52,44 +52,67 @@ pub struct BenchArgs {
     reference_spp: u32,
 }
 
+/// The configurations of a VPL bench: `none`, then `slc` per error bound,
+/// then `clamp` per range, with their settings.
+fn vpl_configs(a: &BenchArgs, exposure: f32) -> Vec<(Option<f32>, VplSettings)> {
+    let mut configs: Vec<(VplMethod, Option<f32>)> = vec![(VplMethod::None, None)];
+    configs.extend(a.error_bounds.iter().map(|&e| (VplMethod::Slc, Some(e))));
+    configs.extend(a.ranges.iter().map(|&r| (VplMethod::Clamp, Some(r))));
+    let d = VplSettings::default();
+    configs
+        .into_iter()
+        .map(|(method, param)| {
+            let settings = VplSettings {
+                method,
+                error_bound: if method == VplMethod::Slc { param.unwrap_or(0.0) } else { d.error_bound },
+                range: if method == VplMethod::Clamp { param.unwrap_or(0.0) } else { d.range },
+                exposure,
+                seed: a.seed,
+                tile: a.scene.tile,
+                ..d
+            };
+            (param, settings)
+        })
+        .collect()
+}
+
+fn progress(len: usize) -> Result<ProgressBar, String> {
+    let bar = ProgressBar::new(len as u64 + 1);
+    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} {msg}").map_err(|e| e.to_string())?);
+    Ok(bar)
+}
+
+fn run_label(s: &VplSettings, param: Option<f32>) -> String {
+    format!("{} {}", s.method.name(), param.map_or(String::new(), |p| p.to_string()))
+}
+
 pub fn run(a: BenchArgs) -> Result<(), String> {
     if a.scene.app == App::Pt {
         return run_pt(a);
     }
+    if a.scene.backend == Backend::Gpu {
+        return run_vpl_gpu(a);
+    }
     let loaded = a.scene.load()?;
     let ctx = &loaded.ctx;
-    let gpu = gpu_context(a.scene.backend)?;
-    let shader = indirect_shader(gpu.as_ref(), ctx)?;
-    let mut configs: Vec<(VplMethod, Option<f32>)> = vec![(VplMethod::None, None)];
-    configs.extend(a.error_bounds.iter().map(|&e| (VplMethod::Slc, Some(e))));
-    configs.extend(a.ranges.iter().map(|&r| (VplMethod::Clamp, Some(r))));
-    let bar = ProgressBar::new(configs.len() as u64 + 1);
-    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} {msg}").map_err(|e| e.to_string())?);
+    let configs = vpl_configs(&a, loaded.exposure);
+    let bar = progress(configs.len())?;
     bar.set_message("reference (all VPLs at every pixel)");
     let (reference, cached) = vpl_reference(ctx, Some(&a.cache_dir)).map_err(|e| e.to_string())?;
     bar.inc(1);
     let mut runs = Vec::new();
-    for (method, param) in configs {
-        bar.set_message(format!("{} {}", method.name(), param.map_or(String::new(), |p| p.to_string())));
-        let settings = VplSettings {
-            method,
-            error_bound: if method == VplMethod::Slc { param.unwrap_or(0.0) } else { VplSettings::default().error_bound },
-            range: if method == VplMethod::Clamp { param.unwrap_or(0.0) } else { VplSettings::default().range },
-            exposure: loaded.exposure,
-            seed: a.seed,
-            tile: a.scene.tile,
-            ..VplSettings::default()
-        };
+    for (param, settings) in configs {
+        bar.set_message(run_label(&settings, param));
         let mut best: Option<VplFrame> = None;
         for _ in 0..a.repeat.max(1) {
-            let f = ctx.finish(shader.shade(&settings).map_err(|e| e.to_string())?, &settings);
+            let f = ctx.render(&settings).map_err(|e| e.to_string())?;
             if best.as_ref().is_none_or(|b| f.stats.shading_ms < b.stats.shading_ms) {
                 best = Some(f);
             }
         }
         let f = best.expect("at least one run");
         runs.push(Run {
-            method: method.name().to_string(),
+            method: settings.method.name().to_string(),
             param,
             shading_ms: f.stats.shading_ms,
             total_ms: f.stats.total_ms,
@@ -97,36 +120,108 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
             lights_per_pixel: f.stats.lights_per_pixel,
             kept_per_pixel: f.stats.kept_per_pixel,
             evaluations_per_second: f.stats.evaluations as f64 / (f.stats.shading_ms * 1e-3),
+            stages: Vec::new(),
         });
         bar.inc(1);
     }
     bar.finish_and_clear();
     let report = Report {
         app: "vpl".into(),
-        backend: match &gpu {
-            None => "cpu".into(),
-            Some(g) => format!("gpu: {}", g.describe()),
-        },
+        backend: "cpu".into(),
         scene: ctx.scene().name.clone(),
         width: loaded.width,
         height: loaded.height,
         lights: ctx.vpls().len(),
-        timing: match &gpu {
-            Some(g) if g.timestamps => "GPU timestamps around the shading pass, fastest of --repeat runs".into(),
-            Some(_) => "wall clock around the submitted kernels (the adapter has no timestamp queries), fastest of --repeat runs".into(),
-            None => "wall clock, fastest of --repeat runs".into(),
-        },
+        timing: "wall clock, fastest of --repeat runs".into(),
         threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
         reference_from_cache: cached,
         runs,
     };
-    let json = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;
+    write_report(&a, &report)
+}
+
+/// `slc bench --backend gpu`: the whole VPL frame on the GPU per
+/// configuration, every stage timed; the reference is every VPL at every
+/// pixel of the frame's own rasterized G-buffer and RSM (shaded on the GPU,
+/// composed with the frame's direct light), so the RMSE measures the
+/// methods, not rasterization against ray casting.
+fn run_vpl_gpu(a: BenchArgs) -> Result<(), String> {
+    let r = a.scene.resolve()?;
+    let gpu = gpu_context(Backend::Gpu)?.ok_or("no GPU context")?;
+    let frame = a.scene.gpu_frame(&gpu, &r)?;
+    let configs = vpl_configs(&a, r.exposure);
+    let bar = progress(configs.len())?;
+    bar.set_message("reference (all VPLs at every pixel, on the GPU)");
+    let warm = VplSettings { method: VplMethod::None, exposure: r.exposure, ..VplSettings::default() };
+    frame.render(&warm).map_err(|e| e.to_string())?;
+    let inputs = frame.read_inputs().map_err(|e| e.to_string())?;
+    let all = slc_wgpu::vpl::GpuVpl::new(&gpu, &inputs).map_err(|e| e.to_string())?;
+    let shaded = slc_scene::backend::IndirectShader::shade(&all, &VplSettings { method: VplMethod::Reference, ..warm }).map_err(|e| e.to_string())?;
+    let reference = frame.compose_with(&inputs, &shaded.irradiance).map_err(|e| e.to_string())?;
+    bar.inc(1);
+    let mut runs = Vec::new();
+    let mut timing = slc_scene::backend::Timing::Wall;
+    for (param, settings) in configs {
+        bar.set_message(run_label(&settings, param));
+        let mut best: Option<slc_wgpu::frame::FrameRender> = None;
+        // One untimed frame first: drivers compile a pipeline at its first use.
+        frame.render(&settings).map_err(|e| e.to_string())?;
+        for _ in 0..a.repeat.max(1) {
+            let f = frame.render(&settings).map_err(|e| e.to_string())?;
+            if best.as_ref().is_none_or(|b| f.stats.shading_ms < b.stats.shading_ms) {
+                best = Some(f);
+            }
+        }
+        let f = best.expect("at least one run");
+        timing = f.timing;
+        runs.push(Run {
+            method: settings.method.name().to_string(),
+            param,
+            shading_ms: f.stats.shading_ms,
+            total_ms: f.stats.total_ms,
+            rmse: f.image.rmse(&reference),
+            lights_per_pixel: f.stats.lights_per_pixel,
+            kept_per_pixel: f.stats.kept_per_pixel,
+            evaluations_per_second: 0.0,
+            stages: f.stages.iter().map(|s| StageMs { name: s.name.to_string(), ms: s.ms }).collect(),
+        });
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    let report = Report {
+        app: "vpl".into(),
+        backend: format!("gpu: {}", gpu.describe()),
+        scene: r.scene.name.clone(),
+        width: r.width,
+        height: r.height,
+        lights: (r.rsm_size as usize).pow(2),
+        timing: format!("{}; the whole frame on the GPU; fastest of --repeat runs by shading time", crate::timing_note(timing)),
+        threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
+        reference_from_cache: false,
+        runs,
+    };
+    for run in &report.runs {
+        let stages: Vec<String> = run.stages.iter().map(|s| format!("{} {:.3}", s.name, s.ms)).collect();
+        println!(
+            "{:>6} {:>8}: RMSE {:.5}, frame {:.3} ms ({})",
+            run.method,
+            run.param.map_or(String::new(), |p| p.to_string()),
+            run.rmse,
+            run.total_ms,
+            stages.join(", ")
+        );
+    }
+    write_report(&a, &report)
+}
+
+fn write_report(a: &BenchArgs, report: &Report) -> Result<(), String> {
+    let json = serde_json::to_string_pretty(report).map_err(|e| e.to_string())?;
     std::fs::write(&a.json, json).map_err(|e| format!("cannot write {}: {e}", a.json.display()))?;
     if let Some(csv) = &a.csv {
-        std::fs::write(csv, to_csv(&report)).map_err(|e| format!("cannot write {}: {e}", csv.display()))?;
+        std::fs::write(csv, to_csv(report)).map_err(|e| format!("cannot write {}: {e}", csv.display()))?;
     }
     if let Some(plot) = &a.plot {
-        crate::plot::speed_vs_error(&report, plot)?;
+        crate::plot::speed_vs_error(report, plot)?;
     }
     println!(
         "{} {}x{}, {} VPLs, {} threads (reference {})",
@@ -135,23 +230,25 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
         report.height,
         report.lights,
         report.threads,
-        if cached { "from cache" } else { "rendered" }
+        if report.reference_from_cache { "from cache" } else { "rendered" }
     );
     println!(
         "{:<8} {:>8} {:>11} {:>10} {:>9} {:>9} {:>9} {:>10}",
         "method", "param", "shading ms", "total ms", "rmse", "lights/px", "kept/px", "evals/s"
     );
     for r in &report.runs {
+        // The GPU frame does not count loop evaluations: "-".
+        let counted = r.evaluations_per_second > 0.0;
         println!(
-            "{:<8} {:>8} {:>11.2} {:>10.2} {:>9.5} {:>9.1} {:>9.1} {:>10.3e}",
+            "{:<8} {:>8} {:>11.2} {:>10.2} {:>9.5} {:>9} {:>9.1} {:>10}",
             r.method,
             r.param.map_or("-".into(), |p| p.to_string()),
             r.shading_ms,
             r.total_ms,
             r.rmse,
-            r.lights_per_pixel,
+            if counted { format!("{:.1}", r.lights_per_pixel) } else { "-".into() },
             r.kept_per_pixel,
-            r.evaluations_per_second
+            if counted { format!("{:.3e}", r.evaluations_per_second) } else { "-".into() }
         );
     }
     Ok(())
@@ -236,7 +333,7 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
         report.lights,
         a.seconds,
         report.reference,
-        if cached { "from cache" } else { "rendered" },
+        if report.reference_from_cache { "from cache" } else { "rendered" },
         report.reference_noise
     );
     println!("{:<14} {:>8} {:>10} {:>6} {:>10} {:>16}", "method", "param", "time ms", "spp", "rmse", "uniform/method");

@@ -12,7 +12,7 @@ mod plot;
 mod report;
 mod scene_args;
 
-use backends::{Backend, GPU_BATCH, gpu_context, indirect_shader, path_tracer};
+use backends::{Backend, GPU_BATCH, gpu_context, path_tracer};
 use clap::{Args, Parser, Subcommand};
 use scene_args::{App, SceneArgs};
 use slc_scene::RenderError;
@@ -140,46 +140,47 @@ fn main() -> ExitCode {
     }
 }
 
+/// The VPL settings of a render: flags, else the scene file's, else the defaults.
+fn vpl_settings(a: &RenderArgs, f: &slc_scene::scene_file::RenderSettings, exposure: f32) -> Result<VplSettings, String> {
+    let d = VplSettings::default();
+    Ok(VplSettings {
+        method: vpl_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or("slc"))?,
+        error_bound: a.error_bound.or(f.error_bound).unwrap_or(d.error_bound),
+        range: a.range.or(f.range).unwrap_or(d.range),
+        exposure,
+        seed: a.seed.or(f.seed).unwrap_or(d.seed),
+        denoise: !a.no_denoise,
+        tile: a.scene.tile,
+        ..d
+    })
+}
+
 fn render(a: RenderArgs) -> Result<(), String> {
     if a.scene.app == App::Pt {
         return render_pt(a);
+    }
+    if a.scene.backend == Backend::Gpu {
+        return render_vpl_gpu(a);
     }
     let t0 = Instant::now();
     let spinner = spinner("scene, G-buffer, reflective shadow map, direct light");
     let loaded = a.scene.load()?;
     let (ctx, f) = (&loaded.ctx, &loaded.file);
-    let method = vpl_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or("slc"))?;
-    let d = VplSettings::default();
-    let settings = VplSettings {
-        method,
-        error_bound: a.error_bound.or(f.error_bound).unwrap_or(d.error_bound),
-        range: a.range.or(f.range).unwrap_or(d.range),
-        exposure: loaded.exposure,
-        seed: a.seed.or(f.seed).unwrap_or(d.seed),
-        denoise: !a.no_denoise,
-        tile: a.scene.tile,
-        ..d
-    };
-    spinner.set_message(format!("shading ({}, {:?})", settings.method.name(), a.scene.backend));
-    let gpu = gpu_context(a.scene.backend)?;
-    let shader = indirect_shader(gpu.as_ref(), ctx)?;
-    let frame = ctx.finish(shader.shade(&settings).map_err(|e| e.to_string())?, &settings);
+    let settings = vpl_settings(&a, f, loaded.exposure)?;
+    spinner.set_message(format!("shading ({}, cpu)", settings.method.name()));
+    let frame = ctx.render(&settings).map_err(|e| e.to_string())?;
     spinner.set_message("writing images");
     write_outputs(&frame.image, &a.out, loaded.exposure)?;
     let st = frame.stats;
     let versus_none = if settings.method != VplMethod::None && settings.method != VplMethod::Reference {
         spinner.set_message("unculled interleaved image for the RMSE");
-        let none_settings = VplSettings { method: VplMethod::None, ..settings };
-        let none = ctx.finish(shader.shade(&none_settings).map_err(|e| e.to_string())?, &none_settings);
+        let none = ctx.render(&VplSettings { method: VplMethod::None, ..settings }).map_err(|e| e.to_string())?;
         Some((frame.image.rmse(&none.image), none.stats.shading_ms))
     } else {
         None
     };
     spinner.finish_and_clear();
     println!("slc render: {} {}x{}, {} VPLs, method {}", ctx.scene().name, loaded.width, loaded.height, st.vpls, settings.method.name());
-    if let Some(g) = &gpu {
-        println!("  GPU         {}", g.describe());
-    }
     println!(
         "  time        {:.1} ms total, {:.1} ms shading (G-buffer {:.1}, RSM {:.1}, direct {:.1}, denoise {:.1})",
         st.total_ms, st.shading_ms, st.gbuffer_ms, st.rsm_ms, st.direct_ms, st.denoise_ms
@@ -193,6 +194,58 @@ fn render(a: RenderArgs) -> Result<(), String> {
     }
     println!("  wrote       {} and {} ({:.1} s)", a.out.display(), a.out.with_extension("png").display(), t0.elapsed().as_secs_f64());
     Ok(())
+}
+
+/// `slc render --backend gpu`: the whole VPL frame on the GPU, every stage timed.
+fn render_vpl_gpu(a: RenderArgs) -> Result<(), String> {
+    let t0 = Instant::now();
+    let spinner = spinner("scene and GPU pipelines");
+    let r = a.scene.resolve()?;
+    let settings = vpl_settings(&a, &r.file, r.exposure)?;
+    if settings.method == VplMethod::Reference {
+        return Err("--method reference (every VPL at every pixel) runs on the CPU; use --backend cpu".into());
+    }
+    let gpu = gpu_context(Backend::Gpu)?.ok_or("no GPU context")?;
+    let frame = a.scene.gpu_frame(&gpu, &r)?;
+    spinner.set_message(format!("frame on the GPU ({})", settings.method.name()));
+    // The first frame pays for the driver's pipeline compilation: measure the second.
+    frame.render(&settings).map_err(|e| e.to_string())?;
+    let out = frame.render(&settings).map_err(|e| e.to_string())?;
+    write_outputs(&out.image, &a.out, r.exposure)?;
+    let versus_none = if settings.method != VplMethod::None {
+        spinner.set_message("unculled interleaved frame for the RMSE");
+        let none = frame.render(&VplSettings { method: VplMethod::None, ..settings }).map_err(|e| e.to_string())?;
+        Some((out.image.rmse(&none.image), none.stats.shading_ms))
+    } else {
+        None
+    };
+    spinner.finish_and_clear();
+    let st = out.stats;
+    println!("slc render: {} {}x{}, {} VPLs, method {}, whole frame on the GPU", r.scene.name, r.width, r.height, st.vpls, settings.method.name());
+    println!("  GPU         {}", gpu.describe());
+    println!("  timing      {}", timing_note(out.timing));
+    let stages: Vec<String> = out.stages.iter().map(|s| format!("{} {:.3}", s.name, s.ms)).collect();
+    println!("  stages (ms) {}", stages.join(", "));
+    println!("  time        {:.3} ms frame, {:.3} ms shading (light update + shading)", st.total_ms, st.shading_ms);
+    println!("  lights/px   {:.1} kept", st.kept_per_pixel);
+    if let Some((rmse, none_ms)) = versus_none {
+        println!(
+            "  RMSE        {rmse:.5} against the unculled interleaved frame ({none_ms:.3} ms shading, {:.1}x slower)",
+            none_ms / st.shading_ms.max(1e-9)
+        );
+    }
+    println!("  wrote       {} and {} ({:.1} s)", a.out.display(), a.out.with_extension("png").display(), t0.elapsed().as_secs_f64());
+    Ok(())
+}
+
+/// How a GPU frame's stages were timed, in words.
+pub fn timing_note(t: slc_scene::backend::Timing) -> &'static str {
+    match t {
+        slc_scene::backend::Timing::GpuTimestamps => "GPU timestamps around each stage's pass, one command encoder per frame",
+        slc_scene::backend::Timing::Wall => {
+            "wall clock per stage (each stage submitted alone: the adapter has no timestamp queries, or is a software one whose timestamps do not bracket the work)"
+        }
+    }
 }
 
 /// `slc render --app pt`: progressive path tracing on the chosen backend.
@@ -273,7 +326,9 @@ pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> Result<(), Strin
 }
 
 /// Writes `name.{wgsl,spv,glsl,hlsl,metal}` for every kernel: the BSH,
-/// path-tracing and update kernels for `lights`, and `vpl_tiled_{slc,clamp,none}` (VPLs).
+/// path-tracing and update kernels for `lights`, `vpl_tiled_{slc,clamp,none}`
+/// and the VPL frame's kernels (the raster kernel's GLSL as one file per
+/// entry point, `scene_raster.vs_main.glsl` …).
 fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> Result<(), String> {
     use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, generate_module, translate};
     let lights = LightSet::parse(lights).map_err(|e| e.to_string())?;
@@ -288,6 +343,17 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> Result<(), String> {
     for (m, name) in [(CullMethod::Slc, "slc"), (CullMethod::Clamp, "clamp"), (CullMethod::None, "none")] {
         jobs.push((format!("vpl_tiled_{name}"), Kernel::VplTiled, Features { lights: vpl, method: m, ..base }));
     }
+    for k in [
+        Kernel::VplDenoise,
+        Kernel::GbufferImport,
+        Kernel::VplPack,
+        Kernel::IrradianceExport,
+        Kernel::SceneRaster,
+        Kernel::PrimaryDirect,
+        Kernel::FrameCompose,
+    ] {
+        jobs.push((k.name().to_string(), k, Features { lights: vpl, ..base }));
+    }
     let write = |name: &str, ext: &str, bytes: &[u8]| {
         let p = out.join(format!("{name}.{ext}"));
         std::fs::write(&p, bytes).map_err(|e| format!("cannot write {}: {e}", p.display()))
@@ -297,7 +363,14 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> Result<(), String> {
         let t = translate(&g).map_err(|e| e.to_string())?;
         write(name, "wgsl", g.source.as_bytes())?;
         write(name, "spv", &t.spv.iter().flat_map(|w| w.to_le_bytes()).collect::<Vec<u8>>())?;
-        write(name, "glsl", t.glsl.as_bytes())?;
+        // GLSL holds one shader per file: the raster kernel's entry points apart.
+        if t.glsl_entries.len() > 1 {
+            for (entry, src) in &t.glsl_entries {
+                write(&format!("{name}.{entry}"), "glsl", src.as_bytes())?;
+            }
+        } else {
+            write(name, "glsl", t.glsl.as_bytes())?;
+        }
         write(name, "hlsl", t.hlsl.as_bytes())?;
         write(name, "metal", t.msl.as_bytes())?;
         println!("  {name}: wgsl spv glsl hlsl metal");

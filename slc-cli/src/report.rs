@@ -20,8 +20,21 @@ pub struct Run {
     pub lights_per_pixel: f64,
     /// Lights kept by the roulette per shaded pixel.
     pub kept_per_pixel: f64,
-    /// Loop evaluations per second of shading time (culling included).
+    /// Loop evaluations per second of shading time (culling included; 0
+    /// where the backend does not count them).
     pub evaluations_per_second: f64,
+    /// Every stage's time, in order (the GPU frame; empty for the CPU).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub stages: Vec<StageMs>,
+}
+
+/// One stage's time in a [`Run`].
+#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
+pub struct StageMs {
+    /// Stage name (`G-buffer`, `RSM`, `shading`, …).
+    pub name: String,
+    /// Milliseconds.
+    pub ms: f64,
 }
 
 /// The JSON written by `slc bench`.

@@ -47,9 +47,28 @@ pub struct SceneArgs {
     /// Clamp distance of the VPL fall-off (default: 1% of the scene diagonal).
     #[arg(long)]
     pub min_distance: Option<f32>,
-    /// Culling tile size in sub-image pixels.
+    /// Culling tile size in sub-image pixels (CPU backend).
     #[arg(long, default_value_t = VplSettings::default().tile)]
     pub tile: u32,
+    /// Edge of the primary light's shadow map (GPU frame; the CPU casts shadow rays).
+    #[arg(long, default_value_t = 2048)]
+    pub shadow_size: u32,
+}
+
+/// The resolved scene and sizes of the VPL application.
+pub struct Resolved {
+    /// The scene.
+    pub scene: Scene,
+    /// Image width.
+    pub width: u32,
+    /// Image height.
+    pub height: u32,
+    /// RSM edge (`rsm_size²` VPLs).
+    pub rsm_size: u32,
+    /// Exposure.
+    pub exposure: f32,
+    /// The scene file's `[render]` (empty for built-in and OBJ scenes).
+    pub file: RenderSettings,
 }
 
 /// A scene ready to render, with its resolved settings.
@@ -90,8 +109,8 @@ impl SceneArgs {
         Ok(loaded)
     }
 
-    /// Loads the scene and builds the shared VPL context.
-    pub fn load(&self) -> Result<Loaded, String> {
+    /// Loads the scene and resolves the VPL application's sizes.
+    pub fn resolve(&self) -> Result<Resolved, String> {
         let (scene, _, file) = self.scene()?;
         let width = self.width.or(file.width).unwrap_or(512);
         let height = self.height.or(file.height).unwrap_or(512);
@@ -101,7 +120,25 @@ impl SceneArgs {
         if s * s != vpls || s > u32::MAX as u64 {
             return Err(RenderError::VplCount(vpls).to_string());
         }
-        let ctx = VplContext::new(&scene, width, height, s as u32, self.min_distance).map_err(|e| e.to_string())?;
-        Ok(Loaded { ctx, width, height, exposure, file })
+        Ok(Resolved { scene, width, height, rsm_size: s as u32, exposure, file })
+    }
+
+    /// Loads the scene and builds the CPU's shared VPL context.
+    pub fn load(&self) -> Result<Loaded, String> {
+        let r = self.resolve()?;
+        let ctx = VplContext::new(&r.scene, r.width, r.height, r.rsm_size, self.min_distance).map_err(|e| e.to_string())?;
+        Ok(Loaded { ctx, width: r.width, height: r.height, exposure: r.exposure, file: r.file })
+    }
+
+    /// The whole-GPU VPL frame of the resolved scene.
+    pub fn gpu_frame<'g>(&self, gpu: &'g slc_wgpu::GpuContext, r: &Resolved) -> Result<slc_wgpu::frame::GpuVplFrame<'g>, String> {
+        let desc = slc_wgpu::frame::FrameDesc {
+            width: r.width,
+            height: r.height,
+            rsm_size: r.rsm_size,
+            shadow_size: self.shadow_size,
+            min_distance: self.min_distance,
+        };
+        slc_wgpu::frame::GpuVplFrame::new(gpu, &r.scene, &desc).map_err(|e| e.to_string())
     }
 }

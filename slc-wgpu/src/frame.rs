@@ -12,8 +12,9 @@
 //! [`GpuVplFrame::output`]).
 //!
 //! Stage times come from GPU timestamps around each stage's pass where the
-//! adapter has them; otherwise each stage is submitted alone and timed by
-//! the host's clock ([`Timing::Wall`]).
+//! adapter has them; otherwise (and on software adapters such as lavapipe,
+//! whose timestamps do not bracket the work) each stage is submitted alone
+//! and timed by the host's clock ([`Timing::Wall`]).
 //!
 //! ```no_run
 //! use slc_scene::scene::Scene;
@@ -461,7 +462,10 @@ impl<'a> GpuVplFrame<'a> {
             compose_pipeline,
             compose_group,
             output,
-            busy: std::sync::Mutex::new(Timer::new(gpu, MAX_STAGES)),
+            // A software adapter's timestamps do not bracket the work its
+            // worker threads do (lavapipe reports microseconds for
+            // 10⁸-evaluation dispatches): time it by the clock instead.
+            busy: std::sync::Mutex::new(if gpu.adapter.device_type == wgpu::DeviceType::Cpu { None } else { Timer::new(gpu, MAX_STAGES) }),
         };
         gpu.take_errors()?;
         Ok(s)

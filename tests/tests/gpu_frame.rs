@@ -126,7 +126,8 @@ fn gpu_vpls_match_cpu_vpls() {
     assert!(off <= lit / 100, "{off} of {lit} lit texels differ");
 }
 
-/// Every stage is timed, by GPU timestamps where the adapter has them.
+/// Every stage is timed, by GPU timestamps where a hardware adapter has
+/// them.
 #[test]
 fn every_stage_is_timed() {
     let Some(gpu) = gpu() else { return };
@@ -151,7 +152,8 @@ fn every_stage_is_timed() {
         ]
     );
     assert!(out.stages.iter().all(|s| s.ms.is_finite() && s.ms >= 0.0));
-    assert_eq!(out.timing == Timing::GpuTimestamps, gpu.timestamps);
+    let software = gpu.adapter.device_type == wgpu::DeviceType::Cpu;
+    assert_eq!(out.timing == Timing::GpuTimestamps, gpu.timestamps && !software);
     assert!(out.stats.total_ms > 0.0 && out.stats.kept_per_pixel > 0.0);
     let none = frame.render(&settings(VplMethod::None, false)).unwrap();
     assert!(!none.stages.iter().any(|s| s.name == "light update" || s.name == "denoise"));

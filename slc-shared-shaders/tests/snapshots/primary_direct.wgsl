@@ -520,7 +520,7 @@ fn directional_irradiance(e: vec3f, n: vec3f, to_light: vec3f) -> vec3f {
     return e * max(dot(n, to_light), 0.0);
 }
 fn shadow_bias(texel: f32, cos_light: f32) -> f32 {
-    let c: f32 = clamp(cos_light, 0.1, 1.0);
+    let c: f32 = clamp(cos_light, 0.02, 1.0);
     return texel * (1.5 + sqrt(1.0 - c * c) / c);
 }
 fn shadow_lit(d: f32, d_map: f32, bias: f32) -> bool {
@@ -556,14 +556,15 @@ fn light_normal(l: GpuLight) -> vec3f {
     return vec3f(0.0);
 }
 // The primary light's direct irradiance at every G-buffer pixel, shadowed
-// by its map: the receiver is lit when the RSM's surface on the texel's
-// ray lies no nearer to the light (less the slope-scaled bias).
+// by its shadow map (`fs_shadow`: per texel the distance along the light's
+// ray to the first surface, 0 where none): the receiver is lit when that
+// surface lies no nearer to the light (less the slope-scaled bias).
 
 @group(0) @binding(0) var<uniform> params: MapParams;
 @group(0) @binding(1) var<uniform> image: ImageParams;
 @group(0) @binding(2) var position_tex: texture_2d<f32>;
 @group(0) @binding(3) var normal_tex: texture_2d<f32>;
-@group(0) @binding(4) var rsm_position: texture_2d<f32>;
+@group(0) @binding(4) var shadow_map: texture_2d<f32>;
 @group(0) @binding(5) var<storage, read_write> direct: array<vec4f>;
 // Declared because the shared library reads it; unused here, so not bound.
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
@@ -614,11 +615,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         e = directional_irradiance(params.light.intensity, n, -params.axis);
     }
     if abs(a) <= 1.0 && abs(b) <= 1.0 {
-        let q = textureLoad(rsm_position, vec2i(i32(light_map_texel(a, params.size)), i32(light_map_texel(b, params.size))), 0);
-        var d_map = -1.0;
-        if q.w > 0.0 {
-            d_map = select(dot(q.xyz - params.origin, params.axis), length(q.xyz - params.origin), params.mode == MAP_PERSPECTIVE);
-        }
+        let d_map = textureLoad(shadow_map, vec2i(i32(light_map_texel(a, params.size)), i32(light_map_texel(b, params.size))), 0).x;
         if !shadow_lit(d, d_map, shadow_bias(width, cos_light)) {
             e = vec3f(0.0);
         }

@@ -520,7 +520,7 @@ fn directional_irradiance(e: vec3f, n: vec3f, to_light: vec3f) -> vec3f {
     return e * max(dot(n, to_light), 0.0);
 }
 fn shadow_bias(texel: f32, cos_light: f32) -> f32 {
-    let c: f32 = clamp(cos_light, 0.1, 1.0);
+    let c: f32 = clamp(cos_light, 0.02, 1.0);
     return texel * (1.5 + sqrt(1.0 - c * c) / c);
 }
 fn shadow_lit(d: f32, d_map: f32, bias: f32) -> bool {

@@ -520,7 +520,7 @@ fn directional_irradiance(e: vec3f, n: vec3f, to_light: vec3f) -> vec3f {
     return e * max(dot(n, to_light), 0.0);
 }
 fn shadow_bias(texel: f32, cos_light: f32) -> f32 {
-    let c: f32 = clamp(cos_light, 0.1, 1.0);
+    let c: f32 = clamp(cos_light, 0.02, 1.0);
     return texel * (1.5 + sqrt(1.0 - c * c) / c);
 }
 fn shadow_lit(d: f32, d_map: f32, bias: f32) -> bool {
@@ -556,8 +556,8 @@ fn light_normal(l: GpuLight) -> vec3f {
     return vec3f(0.0);
 }
 // The VPL frame's raster passes over the scene's triangles: `vs_main` with
-// `fs_gbuffer` (the camera's G-buffer) or `fs_rsm` (the primary light's
-// reflective shadow map). Normals are the shading normal on the side the
+// `fs_gbuffer` (the camera's G-buffer), `fs_rsm` (the primary light's
+// reflective shadow map) or `fs_shadow` (its shadow map). Normals are the shading normal on the side the
 // viewer (camera or light) sees, as the CPU's ray casting makes them.
 
 @group(0) @binding(0) var<uniform> params: MapParams;
@@ -617,4 +617,12 @@ fn fs_rsm(v: VsOut) -> RsmOut {
     }
     let albedo = materials[v.material].albedo;
     return RsmOut(vec4f(v.world, 1.0), vec4f(seen_normal(v, dir), 0.0), vec4f(incident * albedo, 0.0));
+}
+
+/// Distance along the light's ray: from the light (perspective) or from
+/// the map's plane (orthographic).
+@fragment
+fn fs_shadow(v: VsOut) -> @location(0) vec4f {
+    let rel = v.world - params.origin;
+    return vec4f(select(dot(rel, params.axis), length(rel), params.mode == MAP_PERSPECTIVE), 0.0, 0.0, 0.0);
 }
