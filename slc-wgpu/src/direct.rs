@@ -31,15 +31,8 @@ impl<'a> GpuDirect<'a> {
     /// Uploads the lights and their BSH.
     pub fn new(gpu: &'a GpuContext, lights: &LightSet) -> Result<Self, GpuError> {
         let set = GpuLightSet::new(gpu, lights.lights(), lights.bounds(), lights.bsh(), &[])?;
-        let features = Features { lights: set.types, reservoir_k: DIRECT_K as u32, workgroup_size: WG, ..Features::default() };
-        let layout = bind_layout(gpu, "bsh_reservoir", 8, 1, false);
-        let pipeline = pipeline(gpu, "bsh_reservoir", generate(Kernel::BshReservoir, &features)?, &[&layout, &set.table_layout]);
-        let none = wgpu::BufferUsages::empty();
-        let leaf = GpuGeoNode { bmin: Vec3::ZERO, first: 0, bmax: Vec3::ZERO, count: 1 };
-        let tri = GpuTriangle { v0: Vec3::ZERO, material: 0, v1: Vec3::ZERO, light: NO_LIGHT, v2: Vec3::ZERO, pad: 0 };
-        let no_geometry =
-            (storage(gpu, "no geo nodes", bytemuck::bytes_of(&leaf), none), storage(gpu, "no geo tris", bytemuck::bytes_of(&tri), none));
-        Ok(GpuDirect { gpu, set, pipeline, layout, no_geometry, busy: std::sync::Mutex::new(()) })
+        let (pipeline, layout) = reservoir_pipeline(gpu, &set)?;
+        Ok(GpuDirect { gpu, set, pipeline, layout, no_geometry: no_geometry(gpu), busy: std::sync::Mutex::new(()) })
     }
 
     /// Direct light at `points` (unit `normals`) for frame `frame` of
@@ -93,4 +86,24 @@ impl<'a> GpuDirect<'a> {
         let data: Vec<[f32; 4]> = read_back(gpu, &out, &staging)?;
         Ok(data.iter().map(|d| Direct { irradiance: Vec3::new(d[0], d[1], d[2]), in_range: d[3] as u32 }).collect())
     }
+}
+
+/// The `bsh_reservoir` pipeline for `set`'s light types with
+/// [`DIRECT_K`] reservoir slots, and its group-0 layout.
+pub(crate) fn reservoir_pipeline(gpu: &GpuContext, set: &GpuLightSet) -> Result<(wgpu::ComputePipeline, wgpu::BindGroupLayout), GpuError> {
+    gpu.require("max_storage_buffers_per_shader_stage (bsh_reservoir)", 10, gpu.limits.max_storage_buffers_per_shader_stage as u64)?;
+    let features = Features { lights: set.types, reservoir_k: DIRECT_K as u32, workgroup_size: WG, ..Features::default() };
+    let layout = bind_layout(gpu, "bsh_reservoir", 8, 1, false);
+    let pipeline = pipeline(gpu, "bsh_reservoir", generate(Kernel::BshReservoir, &features)?, &[&layout, &set.table_layout]);
+    Ok((pipeline, layout))
+}
+
+/// An occluder BVH of one leaf with one zero-area triangle, for
+/// `bsh_reservoir` without shadows: its shadow rays find nothing (bindings
+/// must not be empty).
+pub(crate) fn no_geometry(gpu: &GpuContext) -> (wgpu::Buffer, wgpu::Buffer) {
+    let none = wgpu::BufferUsages::empty();
+    let leaf = GpuGeoNode { bmin: Vec3::ZERO, first: 0, bmax: Vec3::ZERO, count: 1 };
+    let tri = GpuTriangle { v0: Vec3::ZERO, material: 0, v1: Vec3::ZERO, light: NO_LIGHT, v2: Vec3::ZERO, pad: 0 };
+    (storage(gpu, "no geo nodes", bytemuck::bytes_of(&leaf), none), storage(gpu, "no geo tris", bytemuck::bytes_of(&tri), none))
 }

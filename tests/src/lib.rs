@@ -16,6 +16,8 @@
 
 use std::sync::OnceLock;
 
+pub mod engine;
+
 /// The shared GPU context, or `None` (after printing why) when no adapter
 /// exists and `SLC_REQUIRE_GPU` is not `1`.
 ///

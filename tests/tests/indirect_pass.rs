@@ -18,6 +18,7 @@ use slc_core::interleave::interleave_slot;
 use slc_cpu::vpl::VplContext;
 use slc_scene::scene::Scene;
 use slc_scene::vpl::{PERIOD, Shaded, VplMethod, VplSettings};
+use slc_tests::engine::{self, texture, upload};
 use slc_tests::gpu;
 use slc_wgpu::GpuContext;
 use slc_wgpu::GpuError;
@@ -30,31 +31,6 @@ const RSM: u32 = 16;
 
 fn cpu_ctx() -> VplContext {
     VplContext::new(&Scene::cornell_box(), W, H, RSM, None).unwrap()
-}
-
-fn texture(gpu: &GpuContext, label: &str, (w, h): (u32, u32), format: wgpu::TextureFormat, usage: wgpu::TextureUsages) -> wgpu::Texture {
-    gpu.device.create_texture(&wgpu::TextureDescriptor {
-        label: Some(label),
-        size: wgpu::Extent3d { width: w, height: h, depth_or_array_layers: 1 },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format,
-        usage,
-        view_formats: &[],
-    })
-}
-
-/// An `Rgba32Float` texture holding `texels`.
-fn upload(gpu: &GpuContext, label: &str, size: (u32, u32), texels: &[[f32; 4]]) -> wgpu::TextureView {
-    let t = texture(gpu, label, size, wgpu::TextureFormat::Rgba32Float, wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST);
-    gpu.queue.write_texture(
-        t.as_image_copy(),
-        bytemuck::cast_slice(texels),
-        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size.0 * 16), rows_per_image: None },
-        wgpu::Extent3d { width: size.0, height: size.1, depth_or_array_layers: 1 },
-    );
-    t.create_view(&Default::default())
 }
 
 fn v4(v: Vec3, w: f32) -> [f32; 4] {
@@ -95,8 +71,7 @@ fn engine(gpu: &GpuContext, ctx: &VplContext) -> Engine {
         let j = (slot % per) * subsets + slot / per;
         records[j] = GpuVplRecord { position: v.position[t], normal: v.normal[t], flux: v.flux[t], ..GpuVplRecord::default() };
     }
-    let output =
-        texture(gpu, "output", (W, H), wgpu::TextureFormat::Rgba32Float, wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
+    let output = engine::output(gpu, (W, H));
     Engine {
         position: upload(gpu, "gb position", (W, H), &pos),
         normal: upload(gpu, "gb normal", (W, H), &nrm),
@@ -116,26 +91,7 @@ fn run(gpu: &GpuContext, pass: &IndirectPass, e: &Engine, vpls: VplInput, settin
     let frame = IndirectFrame { settings: *settings, eye: e.eye, min_distance: e.min_distance };
     let mut enc = gpu.device.create_command_encoder(&Default::default());
     pass.record(gpu, &mut enc, &inputs, &frame).unwrap();
-    let staging = gpu.device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("staging"),
-        size: (W * H * 16) as u64,
-        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    enc.copy_texture_to_buffer(
-        e.output.as_image_copy(),
-        wgpu::TexelCopyBufferInfo {
-            buffer: &staging,
-            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(W * 16), rows_per_image: None },
-        },
-        wgpu::Extent3d { width: W, height: H, depth_or_array_layers: 1 },
-    );
-    gpu.queue.submit([enc.finish()]);
-    let slice = staging.slice(..);
-    slice.map_async(wgpu::MapMode::Read, |_| {});
-    gpu.wait().unwrap();
-    let data: Vec<[f32; 4]> = bytemuck::cast_slice(&slice.get_mapped_range().unwrap()).to_vec();
-    data
+    engine::submit_and_read(gpu, enc, &e.output)
 }
 
 fn settings(method: VplMethod, denoise: bool) -> VplSettings {

@@ -1,13 +1,4 @@
-//! Passes an engine records into its own command encoder.
-//!
-//! The engine owns the device, the queue, the frame graph and the G-buffer.
-//! It wraps its device once ([`GpuContext::from_device`]: no adapter is
-//! requested, no error handler is installed), builds an [`IndirectPass`]
-//! for its image size and VPL source, and each frame calls
-//! [`IndirectPass::record`] with its own `CommandEncoder`: the pass records
-//! compute work only, submits nothing and reads nothing back.
-//!
-//! ## The indirect-light pass
+//! The indirect-light pass: application A on an engine's G-buffer.
 //!
 //! SLC shading of VPLs (the paper's first application) on the engine's
 //! G-buffer, into a texture the engine owns. Recorded dispatches, in one
@@ -63,15 +54,15 @@
 //! # Ok(()) }
 //! ```
 
+use super::{Dispatch, FLOAT_INPUTS, check_view};
 use crate::kernel::{B, layout, pipeline, storage, zeroed};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use slc_scene::vpl::{PERIOD, VplMethod, VplSettings};
-use slc_shared_shaders::layout::{FrameParams, GpuLight, ImageParams, PackParams, VplParams};
+use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuVplRecord, ImageParams, PackParams, VplParams};
 use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, OutputFormat, VplSource, generate};
 use wgpu::util::DeviceExt;
 
-pub use slc_shared_shaders::layout::GpuVplRecord;
 
 /// Tile edge of the 2-D kernels, in pixels.
 const TILE: u32 = crate::vpl::TILE;
@@ -180,34 +171,6 @@ pub struct IndirectPass {
     denoise: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
     export: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
 }
-
-/// Checks that `view` shows a `w × h` 2-D texture of an accepted format with
-/// `usage`.
-fn check_view(
-    name: &'static str,
-    view: &wgpu::TextureView,
-    (w, h): (u32, u32),
-    formats: &[wgpu::TextureFormat],
-    usage: wgpu::TextureUsages,
-) -> Result<(), GpuError> {
-    let t = view.texture();
-    let bad = |expected: String, found: String| Err(GpuError::Binding { name, expected, found });
-    if !formats.contains(&t.format()) {
-        return bad(format!("format {}", formats.iter().map(|f| format!("{f:?}")).collect::<Vec<_>>().join(" or ")), format!("{:?}", t.format()));
-    }
-    if t.dimension() != wgpu::TextureDimension::D2 || t.width() != w || t.height() != h || t.depth_or_array_layers() != 1 || t.sample_count() != 1 {
-        return bad(
-            format!("a single-sampled 2-D texture of {w}×{h}"),
-            format!("{:?} {}×{}×{}, {} samples", t.dimension(), t.width(), t.height(), t.depth_or_array_layers(), t.sample_count()),
-        );
-    }
-    if !t.usage().contains(usage) {
-        return bad(format!("usage including {usage:?}"), format!("{:?}", t.usage()));
-    }
-    Ok(())
-}
-
-const FLOAT_INPUTS: [wgpu::TextureFormat; 2] = [wgpu::TextureFormat::Rgba32Float, wgpu::TextureFormat::Rgba16Float];
 
 impl IndirectPass {
     /// Builds the pipelines and intermediate buffers for `desc`. Checks the
@@ -481,29 +444,6 @@ impl IndirectPass {
         }
         out.push(d("irradiance export", &self.export.0, export_bg, [gx, gy, 1]));
         Ok(out)
-    }
-}
-
-/// One recorded dispatch of a pass: its stage name, pipeline, bind group
-/// (group 0) and workgroup counts.
-pub(crate) struct Dispatch<'a> {
-    pub(crate) stage: &'static str,
-    pipeline: &'a wgpu::ComputePipeline,
-    group: wgpu::BindGroup,
-    groups: [u32; 3],
-}
-
-impl<'a> Dispatch<'a> {
-    /// Records the dispatch into `pass`.
-    pub(crate) fn record(&self, pass: &mut wgpu::ComputePass) {
-        pass.set_pipeline(self.pipeline);
-        pass.set_bind_group(0, &self.group, &[]);
-        pass.dispatch_workgroups(self.groups[0], self.groups[1], self.groups[2]);
-    }
-
-    /// A dispatch of `pipeline` with `group` over `groups` workgroups.
-    pub(crate) fn new(stage: &'static str, pipeline: &'a wgpu::ComputePipeline, group: wgpu::BindGroup, groups: [u32; 3]) -> Self {
-        Dispatch { stage, pipeline, group, groups }
     }
 }
 
