@@ -68,7 +68,8 @@
 //! | 0.4 | `storage<read_write> filtered: array<vec4f>` | this kernel |
 //!
 //! **`bsh_reservoir`** (1-D): direct light at shading points through the BSH
-//! and a k-slot reservoir, with shadow rays.
+//! and a k-slot reservoir, with shadow rays (without 0.7 and 0.8 when
+//! `Features::shadows` is off).
 //!
 //! | group.binding | type | written by |
 //! |---|---|---|
@@ -425,6 +426,11 @@ pub struct Features {
     pub vpl_source: VplSource,
     /// Storage-texture format of `irradiance_export`.
     pub output_format: OutputFormat,
+    /// Shadow rays in `bsh_reservoir` through bindings 0.7 `geo_nodes` and
+    /// 0.8 `geo_tris`; without them the kernel is unshadowed and declares
+    /// neither (8 storage buffers per stage instead of 10, WebGPU's default
+    /// limit).
+    pub shadows: bool,
 }
 
 impl Default for Features {
@@ -441,6 +447,7 @@ impl Default for Features {
             selection: Selection::Reservoir,
             vpl_source: VplSource::Rsm,
             output_format: OutputFormat::Rgba16Float,
+            shadows: true,
         }
     }
 }
@@ -573,6 +580,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         selection => selection,
         source => match features.vpl_source { VplSource::Rsm => "rsm", VplSource::Buffer => "buffer" },
         out_format => features.output_format.wgsl(),
+        shadows => features.shadows,
     };
     let source = env
         .get_template(kernel.name())

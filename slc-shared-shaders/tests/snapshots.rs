@@ -19,6 +19,11 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
             Kernel::BshReservoir,
             Features { lights: LightSet::parse("point,spot,ies").unwrap(), ..Features::default() },
         ),
+        (
+            "bsh_reservoir-point-triangle-unshadowed",
+            Kernel::BshReservoir,
+            Features { lights: LightSet::parse("point,triangle").unwrap(), shadows: false, ..Features::default() },
+        ),
         ("pt_connect-triangle-k8-power", Kernel::PtConnect, Features { lights: LightSet::parse("triangle").unwrap(), ..Features::default() }),
         ("pt_connect-all-k16-balance", Kernel::PtConnect, Features { reservoir_k: 16, heuristic: Heuristic::Balance, ..Features::default() }),
         (

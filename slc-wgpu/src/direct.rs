@@ -5,13 +5,13 @@
 //! the CPU backend's `slc_cpu::direct::DirectLights`, which draws the same
 //! random numbers.
 
-use crate::kernel::{bind_group, bind_layout, pipeline, read_back, storage, zeroed};
+use crate::kernel::{B, group, layout, pipeline, read_back, storage, zeroed};
 use crate::lights::{GpuLightSet, WG};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use slc_core::range::RangeParams;
 use slc_scene::lights::{DIRECT_K, Direct, LightSet};
-use slc_shared_shaders::layout::{GpuGeoNode, GpuTriangle, NO_LIGHT, ShadeParams};
+use slc_shared_shaders::layout::ShadeParams;
 use slc_shared_shaders::{Features, Kernel, generate};
 use wgpu::util::DeviceExt;
 
@@ -21,9 +21,6 @@ pub struct GpuDirect<'a> {
     set: GpuLightSet,
     pipeline: wgpu::ComputePipeline,
     layout: wgpu::BindGroupLayout,
-    /// An occluder BVH of one leaf with one zero-area triangle: the
-    /// kernel's shadow rays find nothing (bindings must not be empty).
-    no_geometry: (wgpu::Buffer, wgpu::Buffer),
     busy: std::sync::Mutex<()>,
 }
 
@@ -32,7 +29,7 @@ impl<'a> GpuDirect<'a> {
     pub fn new(gpu: &'a GpuContext, lights: &LightSet) -> Result<Self, GpuError> {
         let set = GpuLightSet::new(gpu, lights.lights(), lights.bounds(), lights.bsh(), &[])?;
         let (pipeline, layout) = reservoir_pipeline(gpu, &set)?;
-        Ok(GpuDirect { gpu, set, pipeline, layout, no_geometry: no_geometry(gpu), busy: std::sync::Mutex::new(()) })
+        Ok(GpuDirect { gpu, set, pipeline, layout, busy: std::sync::Mutex::new(()) })
     }
 
     /// Direct light at `points` (unit `normals`) for frame `frame` of
@@ -64,12 +61,12 @@ impl<'a> GpuDirect<'a> {
             usage: wgpu::BufferUsages::UNIFORM,
         });
         let s = &self.set;
-        let bg = bind_group(
+        let b = crate::kernel::whole;
+        let bg = group(
             gpu,
             "bsh_reservoir",
             &self.layout,
-            &[&uniform, &pts, &nrm, &s.lights, &s.rt2, &s.r2, &s.bsh, &self.no_geometry.0, &self.no_geometry.1, &out],
-            None,
+            &[(0, b(&uniform)), (1, b(&pts)), (2, b(&nrm)), (3, b(&s.lights)), (4, b(&s.rt2)), (5, b(&s.r2)), (6, b(&s.bsh)), (9, b(&out))],
         );
         s.set_threshold(gpu, Some(params));
         s.set_frame(gpu, seed, frame);
@@ -79,6 +76,7 @@ impl<'a> GpuDirect<'a> {
             s.encode(&mut cp);
             cp.set_pipeline(&self.pipeline);
             cp.set_bind_group(0, &bg, &[]);
+            cp.set_bind_group(1, &s.ies_table, &[]);
             cp.dispatch_workgroups((n as u32).div_ceil(WG), 1, 1);
         }
         gpu.queue.submit([enc.finish()]);
@@ -88,22 +86,16 @@ impl<'a> GpuDirect<'a> {
     }
 }
 
-/// The `bsh_reservoir` pipeline for `set`'s light types with
-/// [`DIRECT_K`] reservoir slots, and its group-0 layout.
+/// The unshadowed `bsh_reservoir` pipeline for `set`'s light types with
+/// [`DIRECT_K`] reservoir slots, and its group-0 layout (no occluder
+/// bindings: seven storage buffers, and the IES table alone in group 1).
 pub(crate) fn reservoir_pipeline(gpu: &GpuContext, set: &GpuLightSet) -> Result<(wgpu::ComputePipeline, wgpu::BindGroupLayout), GpuError> {
-    gpu.require("max_storage_buffers_per_shader_stage (bsh_reservoir)", 10, gpu.limits.max_storage_buffers_per_shader_stage as u64)?;
-    let features = Features { lights: set.types, reservoir_k: DIRECT_K as u32, workgroup_size: WG, ..Features::default() };
-    let layout = bind_layout(gpu, "bsh_reservoir", 8, 1, false);
-    let pipeline = pipeline(gpu, "bsh_reservoir", generate(Kernel::BshReservoir, &features)?, &[&layout, &set.table_layout]);
+    gpu.require("max_storage_buffers_per_shader_stage (bsh_reservoir)", 8, gpu.limits.max_storage_buffers_per_shader_stage as u64)?;
+    let features = Features { lights: set.types, reservoir_k: DIRECT_K as u32, workgroup_size: WG, shadows: false, ..Features::default() };
+    let mut kinds: Vec<(u32, B)> = vec![(0, B::Uniform)];
+    kinds.extend((1..=6).map(|b| (b, B::Read)));
+    kinds.push((9, B::Write));
+    let layout = layout(gpu, "bsh_reservoir", &kinds);
+    let pipeline = pipeline(gpu, "bsh_reservoir", generate(Kernel::BshReservoir, &features)?, &[&layout, &set.ies_layout]);
     Ok((pipeline, layout))
-}
-
-/// An occluder BVH of one leaf with one zero-area triangle, for
-/// `bsh_reservoir` without shadows: its shadow rays find nothing (bindings
-/// must not be empty).
-pub(crate) fn no_geometry(gpu: &GpuContext) -> (wgpu::Buffer, wgpu::Buffer) {
-    let none = wgpu::BufferUsages::empty();
-    let leaf = GpuGeoNode { bmin: Vec3::ZERO, first: 0, bmax: Vec3::ZERO, count: 1 };
-    let tri = GpuTriangle { v0: Vec3::ZERO, material: 0, v1: Vec3::ZERO, light: NO_LIGHT, v2: Vec3::ZERO, pad: 0 };
-    (storage(gpu, "no geo nodes", bytemuck::bytes_of(&leaf), none), storage(gpu, "no geo tris", bytemuck::bytes_of(&tri), none))
 }

@@ -310,11 +310,7 @@ impl<'a> GpuVplFrame<'a> {
         // Raster pipelines.
         let features = Features { lights: LightSet { vpl: true, ..LightSet::default() }, tile_size: TILE, interleave: PERIOD, ..Features::default() };
         let raster_layout = layout_for(gpu, "scene_raster", &[(0, B::Uniform), (1, B::Read)], wgpu::ShaderStages::VERTEX_FRAGMENT);
-        let group = |label: &str, layout: &wgpu::BindGroupLayout, res: &[(u32, wgpu::BindingResource)]| {
-            let entries: Vec<wgpu::BindGroupEntry> =
-                res.iter().map(|(binding, r)| wgpu::BindGroupEntry { binding: *binding, resource: r.clone() }).collect();
-            gpu.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(label), layout, entries: &entries })
-        };
+        let group = |label: &str, layout: &wgpu::BindGroupLayout, res: &[(u32, wgpu::BindingResource)]| crate::kernel::group(gpu, label, layout, res);
         let camera_group =
             group("scene_raster camera", &raster_layout, &[(0, camera_params.as_entire_binding()), (1, materials.as_entire_binding())]);
         let light_group = group("scene_raster light", &raster_layout, &[(0, light_params.as_entire_binding()), (1, materials.as_entire_binding())]);

@@ -122,6 +122,17 @@ pub(crate) fn bind_group(
     gpu.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(label), layout, entries: &entries })
 }
 
+/// The whole of `b` as a binding.
+pub(crate) fn whole(b: &wgpu::Buffer) -> wgpu::BindingResource<'_> {
+    b.as_entire_binding()
+}
+
+/// A bind group with the given `(binding, resource)` entries.
+pub(crate) fn group(gpu: &GpuContext, label: &str, layout: &wgpu::BindGroupLayout, res: &[(u32, wgpu::BindingResource)]) -> wgpu::BindGroup {
+    let entries: Vec<wgpu::BindGroupEntry> = res.iter().map(|(binding, r)| wgpu::BindGroupEntry { binding: *binding, resource: r.clone() }).collect();
+    gpu.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(label), layout, entries: &entries })
+}
+
 /// Uniform slots at the device's dynamic-offset alignment: slot `i` of a
 /// `T` lives at `i · stride`.
 pub(crate) struct UniformSlots {

@@ -73,6 +73,10 @@ pub(crate) struct GpuLightSet {
     refit: (wgpu::ComputePipeline, wgpu::BindGroup),
     /// Group 1 of every kernel: the IES table and the power alias table.
     pub(crate) table_layout: wgpu::BindGroupLayout,
+    /// Group 1 with the IES table only (binding 0), for `bsh_reservoir`.
+    pub(crate) ies_layout: wgpu::BindGroupLayout,
+    /// Its bind group.
+    pub(crate) ies_table: wgpu::BindGroup,
     pub(crate) table: wgpu::BindGroup,
 }
 
@@ -115,6 +119,26 @@ impl GpuLightSet {
             };
             gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some("scene tables"), entries: &[e(0), e(1)] })
         };
+        // The IES table alone, for kernels that do not read the power table
+        // (one storage binding fewer, within WebGPU's default 8 per stage).
+        let ies_layout = gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("ies table"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::COMPUTE,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Storage { read_only: true },
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            }],
+        });
+        let ies_table = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("ies table"),
+            layout: &ies_layout,
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: table_buf.as_entire_binding() }],
+        });
         let table_bg = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("scene tables"),
             layout: &table_layout,
@@ -151,6 +175,8 @@ impl GpuLightSet {
             update,
             refit,
             table_layout,
+            ies_layout,
+            ies_table,
             table: table_bg,
         })
     }

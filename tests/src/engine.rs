@@ -47,7 +47,10 @@ pub fn submit_and_read(gpu: &GpuContext, mut enc: wgpu::CommandEncoder, t: &wgpu
     });
     enc.copy_texture_to_buffer(
         t.as_image_copy(),
-        wgpu::TexelCopyBufferInfo { buffer: &staging, layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(w * 16), rows_per_image: None } },
+        wgpu::TexelCopyBufferInfo {
+            buffer: &staging,
+            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(w * 16), rows_per_image: None },
+        },
         t.size(),
     );
     gpu.queue.submit([enc.finish()]);

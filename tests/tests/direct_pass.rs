@@ -89,7 +89,10 @@ fn pass_matches_gpu_direct() {
             let (a, b) = (Vec3::new(g[0], g[1], g[2]).as_dvec3(), w.irradiance.as_dvec3());
             worst = worst.max(((a - b).abs().max_element() - 1e-12).max(0.0) / b.abs().max_element().max(1e-30));
         }
-        eprintln!("culling {:?}: {differs} of {shaded} pixels with another in-range count, worst {worst:.2e} elsewhere", culling.map(|c| c.error_bound()));
+        eprintln!(
+            "culling {:?}: {differs} of {shaded} pixels with another in-range count, worst {worst:.2e} elsewhere",
+            culling.map(|c| c.error_bound())
+        );
         assert!(shaded > 1000);
         assert!(differs * 200 <= shaded, "{differs} of {shaded} pixels differ in their in-range counts");
         assert!(worst <= 1e-5, "irradiance differs by {worst:.3e}");

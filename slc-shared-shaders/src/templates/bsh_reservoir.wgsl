@@ -1,10 +1,18 @@
 {% include "header.wgsl" %}
 {% include "lights.wgsl" %}
+{% if shadows %}
 {% include "geometry.wgsl" %}
+{% else %}
+/// The unshadowed variant (the caller owns visibility): nothing occludes.
+fn occluded(a: vec3f, b: vec3f) -> bool {
+    return false;
+}
+{% endif %}
 {% include "bsh_collect.wgsl" %}
 // Direct light from many lights at shading points: BSH traversal into a
 // {{ k }}-slot reservoir, then shading of the picks with the RR test (at the
-// sampled point for area lights), the 1/p and n/k weights and a shadow ray.
+// sampled point for area lights), the 1/p and n/k weights and a shadow ray
+// ({% if shadows %}through geo_nodes/geo_tris{% else %}none in this variant: the caller owns visibility{% endif %}).
 // Output: irradiance (rgb) and the number of in-range lights (w).
 
 @group(0) @binding(0) var<uniform> params: ShadeParams;
@@ -14,8 +22,10 @@
 @group(0) @binding(4) var<storage, read> rt2: array<f32>;
 @group(0) @binding(5) var<storage, read> r2: array<f32>;
 @group(0) @binding(6) var<storage, read> bsh_nodes: array<BshNode>;
+{% if shadows %}
 @group(0) @binding(7) var<storage, read> geo_nodes: array<GpuGeoNode>;
 @group(0) @binding(8) var<storage, read> geo_tris: array<GpuTriangle>;
+{% endif %}
 @group(0) @binding(9) var<storage, read_write> irradiance: array<vec4f>;
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
 

@@ -725,7 +725,8 @@ fn connect(li: u32, x: vec3f, n: vec3f, ng: vec3f, w_res: f32, u1: f32, u2: f32,
 }
 // Direct light from many lights at shading points: BSH traversal into a
 // 8-slot reservoir, then shading of the picks with the RR test (at the
-// sampled point for area lights), the 1/p and n/k weights and a shadow ray.
+// sampled point for area lights), the 1/p and n/k weights and a shadow ray
+// (through geo_nodes/geo_tris).
 // Output: irradiance (rgb) and the number of in-range lights (w).
 
 @group(0) @binding(0) var<uniform> params: ShadeParams;

@@ -47,8 +47,8 @@
 //! ```
 
 use super::{FLOAT_INPUTS, check_view};
-use crate::direct::{no_geometry, reservoir_pipeline};
-use crate::kernel::{B, bind_group, layout, pipeline, zeroed};
+use crate::direct::reservoir_pipeline;
+use crate::kernel::{B, layout, pipeline, zeroed};
 use crate::lights::{GpuLightSet, WG};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
@@ -137,7 +137,9 @@ impl DirectPass {
         let set = GpuLightSet::new(gpu, lights.lights(), lights.bounds(), lights.bsh(), &[])?;
         let (reservoir, reservoir_layout) = reservoir_pipeline(gpu, &set)?;
         let base = Features { tile_size: TILE, workgroup_size: WG, output_format: output, ..Features::default() };
-        let kernel = |k: Kernel, l: &wgpu::BindGroupLayout| -> Result<wgpu::ComputePipeline, GpuError> { Ok(pipeline(gpu, k.name(), generate(k, &base)?, &[l])) };
+        let kernel = |k: Kernel, l: &wgpu::BindGroupLayout| -> Result<wgpu::ComputePipeline, GpuError> {
+            Ok(pipeline(gpu, k.name(), generate(k, &base)?, &[l]))
+        };
         use B::*;
         let import_layout = layout(gpu, "gbuffer_import", &[(0, Uniform), (1, Texture), (2, Texture), (3, Write), (4, Write), (5, Write)]);
         let export_layout = layout(gpu, "irradiance_export", &[(0, Uniform), (1, Read), (2, Read), (3, Storage(desc.output_format))]);
@@ -153,14 +155,23 @@ impl DirectPass {
             })
         };
         let image = uniform("slc direct image", bytemuck::bytes_of(&ImageParams { eye: Vec3::ZERO, width: w, height: h, pad0: 0, pad1: 0, pad2: 0 }));
-        let shade_params = uniform("slc direct shade params", bytemuck::bytes_of(&ShadeParams { point_count: (pixels) as u32, seed: 0, frame: 0, eps: 0.0 }));
-        let geo = no_geometry(gpu);
-        let reservoir_group = bind_group(
+        let shade_params =
+            uniform("slc direct shade params", bytemuck::bytes_of(&ShadeParams { point_count: (pixels) as u32, seed: 0, frame: 0, eps: 0.0 }));
+        let b = crate::kernel::whole;
+        let reservoir_group = crate::kernel::group(
             gpu,
             "bsh_reservoir",
             &reservoir_layout,
-            &[&shade_params, &points, &normals, &set.lights, &set.rt2, &set.r2, &set.bsh, &geo.0, &geo.1, &irradiance],
-            None,
+            &[
+                (0, b(&shade_params)),
+                (1, b(&points)),
+                (2, b(&normals)),
+                (3, b(&set.lights)),
+                (4, b(&set.rt2)),
+                (5, b(&set.r2)),
+                (6, b(&set.bsh)),
+                (9, b(&irradiance)),
+            ],
         );
         let s = DirectPass {
             desc: *desc,
@@ -203,10 +214,7 @@ impl DirectPass {
         gpu.queue.write_buffer(&self.shade_params, 0, bytemuck::bytes_of(&sp));
         self.set.set_threshold(gpu, frame.culling.as_ref());
         self.set.set_frame(gpu, frame.seed, frame.frame);
-        let group = |label: &str, layout: &wgpu::BindGroupLayout, res: &[(u32, wgpu::BindingResource)]| {
-            let entries: Vec<wgpu::BindGroupEntry> = res.iter().map(|(binding, r)| wgpu::BindGroupEntry { binding: *binding, resource: r.clone() }).collect();
-            gpu.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(label), layout, entries: &entries })
-        };
+        let group = |label: &str, layout: &wgpu::BindGroupLayout, res: &[(u32, wgpu::BindingResource)]| crate::kernel::group(gpu, label, layout, res);
         let import = group(
             "gbuffer_import",
             &self.import.1,
@@ -237,6 +245,7 @@ impl DirectPass {
         self.set.encode(&mut pass);
         pass.set_pipeline(&self.reservoir);
         pass.set_bind_group(0, &self.reservoir_group, &[]);
+        pass.set_bind_group(1, &self.set.ies_table, &[]);
         pass.dispatch_workgroups((w * h).div_ceil(WG), 1, 1);
         pass.set_pipeline(&self.export.0);
         pass.set_bind_group(0, &export, &[]);

@@ -63,7 +63,6 @@ use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuVplRecord, ImageParam
 use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, OutputFormat, VplSource, generate};
 use wgpu::util::DeviceExt;
 
-
 /// Tile edge of the 2-D kernels, in pixels.
 const TILE: u32 = crate::vpl::TILE;
 /// Workgroup size of the 1-D kernels.
@@ -373,14 +372,8 @@ impl IndirectPass {
         let fp = uniform("slc frame params", bytemuck::bytes_of(&FrameParams { light_count: count, seed: st.seed, frame: st.frame, pad: 0 }));
         let min_d2 = frame.min_distance * frame.min_distance;
         let vp = uniform("slc vpl params", bytemuck::bytes_of(&VplParams { width: w, height: h, lights_per_subset: self.per_subset, min_d2 }));
-        let group = |label: &str, layout: &wgpu::BindGroupLayout, res: &[(u32, wgpu::BindingResource)]| {
-            let entries: Vec<wgpu::BindGroupEntry> =
-                res.iter().map(|(binding, resource)| wgpu::BindGroupEntry { binding: *binding, resource: resource.clone() }).collect();
-            gpu.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(label), layout, entries: &entries })
-        };
-        fn buf(b: &wgpu::Buffer) -> wgpu::BindingResource<'_> {
-            b.as_entire_binding()
-        }
+        let group = |label: &str, layout: &wgpu::BindGroupLayout, res: &[(u32, wgpu::BindingResource)]| crate::kernel::group(gpu, label, layout, res);
+        let buf = crate::kernel::whole;
         let import = group(
             "gbuffer_import",
             &self.import.1,

@@ -25,9 +25,9 @@ pub use direct::{DirectFrame, DirectInputs, DirectPass, DirectPassDesc};
 pub use indirect::{IndirectFrame, IndirectInputs, IndirectPass, IndirectPassDesc, VplInput, VplSourceDesc, vpl_buffer};
 pub use slc_shared_shaders::layout::GpuVplRecord;
 
-use crate::GpuError;
 #[cfg(doc)]
 use crate::GpuContext;
+use crate::GpuError;
 
 /// The float formats the passes read G-buffer and RSM textures in.
 pub(crate) const FLOAT_INPUTS: [wgpu::TextureFormat; 2] = [wgpu::TextureFormat::Rgba32Float, wgpu::TextureFormat::Rgba16Float];
@@ -58,7 +58,6 @@ pub(crate) fn check_view(
     Ok(())
 }
 
-
 /// One recorded dispatch of a pass: its stage name, pipeline, bind group
 /// (group 0) and workgroup counts.
 pub(crate) struct Dispatch<'a> {
@@ -81,4 +80,3 @@ impl<'a> Dispatch<'a> {
         Dispatch { stage, pipeline, group, groups }
     }
 }
-
