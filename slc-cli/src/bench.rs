@@ -32,9 +32,9 @@ pub struct BenchArgs {
     /// Where reference images are cached.
     #[arg(long, default_value = ".slc-cache")]
     cache_dir: PathBuf,
-    /// JSON report.
+    /// Also write the report as JSON (re-plot it with `slc plot`).
     #[arg(long)]
-    json: PathBuf,
+    json: Option<PathBuf>,
     /// Also write the runs as CSV.
     #[arg(long)]
     csv: Option<PathBuf>,
@@ -78,7 +78,7 @@ fn vpl_configs(a: &BenchArgs, exposure: f32) -> Vec<(Option<f32>, VplSettings)> 
 
 fn progress(len: usize) -> Result<ProgressBar, String> {
     let bar = ProgressBar::new(len as u64 + 1);
-    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} {msg}").map_err(|e| e.to_string())?);
+    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} {msg} ({elapsed})").map_err(|e| e.to_string())?);
     Ok(bar)
 }
 
@@ -97,8 +97,12 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
     let ctx = &loaded.ctx;
     let configs = vpl_configs(&a, loaded.exposure);
     let bar = progress(configs.len())?;
-    bar.set_message("reference (all VPLs at every pixel)");
+    bar.set_message("reference (all VPLs at every pixel; cached for the next run)");
+    // The reference is one long call and is not timed: let the bar tick on
+    // its own meanwhile (never during the measured runs).
+    bar.enable_steady_tick(std::time::Duration::from_millis(250));
     let (reference, cached) = vpl_reference(ctx, Some(&a.cache_dir)).map_err(|e| e.to_string())?;
+    bar.disable_steady_tick();
     bar.inc(1);
     let mut runs = Vec::new();
     for (param, settings) in configs {
@@ -216,7 +220,9 @@ fn run_vpl_gpu(a: BenchArgs) -> Result<(), String> {
 
 fn write_report(a: &BenchArgs, report: &Report) -> Result<(), String> {
     let json = serde_json::to_string_pretty(report).map_err(|e| e.to_string())?;
-    std::fs::write(&a.json, json).map_err(|e| format!("cannot write {}: {e}", a.json.display()))?;
+    if let Some(path) = &a.json {
+        std::fs::write(path, json).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    }
     if let Some(csv) = &a.csv {
         std::fs::write(csv, to_csv(report)).map_err(|e| format!("cannot write {}: {e}", csv.display()))?;
     }
@@ -263,10 +269,14 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
     let pts = PtScene::new(&scene, &lights).map_err(|e| e.to_string())?;
     let eps = a.error_bound.unwrap_or(PtSettings::default().error_bound);
     let ref_settings = PtSettings { method: PtMethod::Power, seed: 0x5EED, ..PtSettings::default() };
-    let bar = ProgressBar::new_spinner();
-    bar.set_message(format!("reference: {} spp of power sampling", a.reference_spp));
-    bar.tick();
-    let r = slc_cpu::reference::pt_reference(&mut CpuPathTracer::new(&pts), w, h, &ref_settings, a.reference_spp, Some(&a.cache_dir))
+    let bar = ProgressBar::new(a.reference_spp as u64);
+    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} spp, {msg} (ETA {eta})").map_err(|e| e.to_string())?);
+    bar.set_message("reference: power sampling");
+    let mut progress = |done: u32, total: u32| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    };
+    let r = slc_cpu::reference::pt_reference(&mut CpuPathTracer::new(&pts), w, h, &ref_settings, a.reference_spp, Some(&a.cache_dir), &mut progress)
         .map_err(|e| e.to_string())?;
     let (reference, cached) = (r.image, r.cached);
     // The reference stays on the CPU; the methods run on the chosen backend.
@@ -275,15 +285,21 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
     let batch = if ctx.is_some() { GPU_BATCH } else { 1 };
     let methods: Vec<PtMethod> = PtMethod::ALL.into_iter().filter(|&m| tracer.supports(m)).collect();
     let mut runs = Vec::new();
-    for method in methods {
-        bar.set_message(format!("{} for {} s", method.name(), a.seconds));
-        bar.tick();
+    // Methods: the bar counts tenths of a second of rendering, all methods together.
+    let tenths = (a.seconds * 10.0).ceil() as u64;
+    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {msg} (ETA {eta})").map_err(|e| e.to_string())?);
+    bar.set_length(tenths * methods.len() as u64);
+    bar.set_position(0);
+    bar.reset_eta();
+    for (k, method) in methods.into_iter().enumerate() {
+        bar.set_message(format!("{} ({} of {}), {} s each", method.name(), k + 1, bar.length().unwrap_or(0) / tenths.max(1), a.seconds));
         let s = PtSettings { method, error_bound: eps, seed: a.seed, ..PtSettings::default() };
         let mut acc = PtRender::new(w, h);
         let mut series = Vec::new();
         while acc.time_ms < a.seconds * 1e3 {
             tracer.render(&mut acc, &s, batch).map_err(|e| e.to_string())?;
             series.push((acc.time_ms, acc.passes, acc.image().rmse(&reference)));
+            bar.set_position(k as u64 * tenths + ((acc.time_ms / 100.0) as u64).min(tenths));
         }
         let last = *series.last().expect("at least one pass");
         runs.push(PtRun {
@@ -312,7 +328,9 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
         runs,
     };
     let json = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;
-    std::fs::write(&a.json, json).map_err(|e| format!("cannot write {}: {e}", a.json.display()))?;
+    if let Some(path) = &a.json {
+        std::fs::write(path, json).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    }
     if let Some(csv) = &a.csv {
         let mut t = String::from("method,param,time_ms,spp,rmse\n");
         for r in &report.runs {
@@ -325,6 +343,7 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
     }
     let uniform = report.runs.iter().find(|r| r.method == "uniform").map_or(f64::NAN, |r| r.rmse);
     println!("backend {}", report.backend);
+    println!("lights  {}", crate::PT_LIGHTS_NOTE);
     println!(
         "{} {}x{}, {} lights, {:.1} s per method (reference {} {}, its own RMSE about {:.5})",
         report.scene,

@@ -63,8 +63,16 @@ fn ramp(t: f32) -> [u8; 3] {
 }
 
 pub fn run(a: DiffArgs) -> Result<(), String> {
-    let ia = Image::read_exr(&a.a).map_err(|e| e.to_string())?;
-    let ib = Image::read_exr(&a.b).map_err(|e| e.to_string())?;
+    let read = |p: &std::path::Path| {
+        if p.extension().and_then(|e| e.to_str()).is_some_and(|e| e.eq_ignore_ascii_case("png")) {
+            return Err(format!(
+                "{}: diff compares linear EXR images; a PNG is the tone-mapped 8-bit preview (compare the .exr written beside it)",
+                p.display()
+            ));
+        }
+        Image::read_exr(p).map_err(|e| format!("{}: {e} (diff reads EXR images)", p.display()))
+    };
+    let (ia, ib) = (read(&a.a)?, read(&a.b)?);
     if (ia.width, ia.height) != (ib.width, ib.height) {
         return Err(format!("image sizes differ: {}x{} vs {}x{}", ia.width, ia.height, ib.width, ib.height));
     }

@@ -58,7 +58,8 @@ enum Command {
         #[arg(long, default_value_t = 8)]
         reservoir_k: u32,
     },
-    /// Plot a `slc bench` JSON report again (.svg or .png).
+    /// Plot a `slc bench` JSON report again (.svg or .png): a VPL report as
+    /// speed against error, a path-tracing one as RMSE over time.
     Plot {
         /// The JSON written by `slc bench --json`.
         json: PathBuf,
@@ -91,8 +92,9 @@ fn pt_method(name: &str) -> Result<PtMethod, String> {
 struct RenderArgs {
     #[command(flatten)]
     scene: SceneArgs,
-    /// Method: slc | clamp | none | reference (vpl); slc | slc-reservoir |
-    /// uniform | power | lightbvh (pt) [default: slc].
+    /// Method: slc | clamp | none | reference (vpl; reference on the CPU
+    /// only); slc | slc-reservoir | uniform | power | lightbvh (pt; lightbvh
+    /// on the CPU only) [default: slc].
     #[arg(long)]
     method: Option<String>,
     /// Path tracing: samples per pixel [default: 16].
@@ -156,6 +158,8 @@ fn vpl_settings(a: &RenderArgs, f: &slc_scene::scene_file::RenderSettings, expos
 }
 
 fn render(a: RenderArgs) -> Result<(), String> {
+    // A bad --out fails now, not after the render.
+    output_paths(&a.out)?;
     if a.scene.app == App::Pt {
         return render_pt(a);
     }
@@ -170,7 +174,7 @@ fn render(a: RenderArgs) -> Result<(), String> {
     spinner.set_message(format!("shading ({}, cpu)", settings.method.name()));
     let frame = ctx.render(&settings).map_err(|e| e.to_string())?;
     spinner.set_message("writing images");
-    write_outputs(&frame.image, &a.out, loaded.exposure)?;
+    let written = write_outputs(&frame.image, &a.out, loaded.exposure)?;
     let st = frame.stats;
     let versus_none = if settings.method != VplMethod::None && settings.method != VplMethod::Reference {
         spinner.set_message("unculled interleaved image for the RMSE");
@@ -188,11 +192,11 @@ fn render(a: RenderArgs) -> Result<(), String> {
     println!("  lights/px   {:.1} tested, {:.1} kept", st.lights_per_pixel, st.kept_per_pixel);
     if let Some((rmse, none_ms)) = versus_none {
         println!(
-            "  RMSE        {rmse:.5} against the unculled interleaved image ({none_ms:.1} ms shading, {:.1}x slower)",
-            none_ms / st.shading_ms.max(1e-9)
+            "  RMSE        {rmse:.5} against the unculled interleaved image ({none_ms:.1} ms shading, {})",
+            speed_vs_none(none_ms, st.shading_ms)
         );
     }
-    println!("  wrote       {} and {} ({:.1} s)", a.out.display(), a.out.with_extension("png").display(), t0.elapsed().as_secs_f64());
+    println!("  wrote       {} and {} ({:.1} s)", written.0.display(), written.1.display(), t0.elapsed().as_secs_f64());
     Ok(())
 }
 
@@ -211,7 +215,7 @@ fn render_vpl_gpu(a: RenderArgs) -> Result<(), String> {
     // The first frame pays for the driver's pipeline compilation: measure the second.
     frame.render(&settings).map_err(|e| e.to_string())?;
     let out = frame.render(&settings).map_err(|e| e.to_string())?;
-    write_outputs(&out.image, &a.out, r.exposure)?;
+    let written = write_outputs(&out.image, &a.out, r.exposure)?;
     let versus_none = if settings.method != VplMethod::None {
         spinner.set_message("unculled interleaved frame for the RMSE");
         let none = frame.render(&VplSettings { method: VplMethod::None, ..settings }).map_err(|e| e.to_string())?;
@@ -230,13 +234,23 @@ fn render_vpl_gpu(a: RenderArgs) -> Result<(), String> {
     println!("  lights/px   {:.1} kept", st.kept_per_pixel);
     if let Some((rmse, none_ms)) = versus_none {
         println!(
-            "  RMSE        {rmse:.5} against the unculled interleaved frame ({none_ms:.3} ms shading, {:.1}x slower)",
-            none_ms / st.shading_ms.max(1e-9)
+            "  RMSE        {rmse:.5} against the unculled interleaved frame ({none_ms:.3} ms shading, {})",
+            speed_vs_none(none_ms, st.shading_ms)
         );
     }
-    println!("  wrote       {} and {} ({:.1} s)", a.out.display(), a.out.with_extension("png").display(), t0.elapsed().as_secs_f64());
+    println!("  wrote       {} and {} ({:.1} s)", written.0.display(), written.1.display(), t0.elapsed().as_secs_f64());
     Ok(())
 }
+
+/// The unculled shading time against the method's, in words: "10.2x
+/// slower" or, where culling costs more than it saves, "1.3x faster".
+fn speed_vs_none(none_ms: f64, method_ms: f64) -> String {
+    let r = none_ms / method_ms.max(1e-9);
+    if r >= 1.0 { format!("{r:.1}x slower") } else { format!("{:.1}x faster: culling costs more than it saves here", 1.0 / r) }
+}
+
+/// What the path tracer's light count counts, said where it is printed.
+pub const PT_LIGHTS_NOTE: &str = "emissive triangles and the scene file's [[light]] entries; the primary light ([primary]) makes the VPL application's RSM and is not a path-tracing light";
 
 /// How a GPU frame's stages were timed, in words.
 pub fn timing_note(t: slc_scene::backend::Timing) -> &'static str {
@@ -259,10 +273,8 @@ fn render_pt(a: RenderArgs) -> Result<(), String> {
     let pts = PtScene::new(&scene, &lights).map_err(|e| e.to_string())?;
     let d = PtSettings::default();
     let on_gpu = a.scene.backend == Backend::Gpu;
-    // The GPU path tracer runs slc-reservoir: make it the default there.
-    let default_method = if on_gpu { "slc-reservoir" } else { "slc" };
     let settings = PtSettings {
-        method: pt_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or(default_method))?,
+        method: pt_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or("slc"))?,
         error_bound: a.error_bound.or(f.error_bound).unwrap_or(d.error_bound),
         exposure: a.scene.exposure.or(f.exposure).unwrap_or(1.0),
         seed: a.seed.or(f.seed).unwrap_or(d.seed),
@@ -298,14 +310,15 @@ fn render_pt(a: RenderArgs) -> Result<(), String> {
     bar.finish_and_clear();
     let image = acc.image();
     let exposure = settings.exposure;
-    write_outputs(&image, &a.out, exposure)?;
+    let written = write_outputs(&image, &a.out, exposure)?;
     println!("slc render: {} {}x{}, path tracing, {} lights, method {}", scene.name, w, h, pts.light_count(), settings.method.name());
+    println!("  lights      {}", PT_LIGHTS_NOTE);
     if let Some(c) = &ctx {
         let timing = if c.timestamps { "GPU timestamps" } else { "wall clock, no timestamp queries" };
         println!("  backend     GPU {} ({timing})", c.describe());
     }
     println!("  time        {:.1} ms for {} samples per pixel ({:.2} spp/s)", acc.time_ms, acc.passes, acc.passes as f64 / (acc.time_ms * 1e-3));
-    println!("  wrote       {} and {} ({:.1} s)", a.out.display(), a.out.with_extension("png").display(), t0.elapsed().as_secs_f64());
+    println!("  wrote       {} and {} ({:.1} s)", written.0.display(), written.1.display(), t0.elapsed().as_secs_f64());
     Ok(())
 }
 
@@ -319,10 +332,24 @@ pub fn spinner(msg: &'static str) -> indicatif::ProgressBar {
     s
 }
 
-/// Writes the EXR and its PNG preview.
-pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> Result<(), String> {
-    img.write_exr(out).map_err(|e| e.to_string())?;
-    img.write_png(&out.with_extension("png"), exposure).map_err(|e| e.to_string())
+/// The EXR and PNG paths of `--out`: `x.exr` gives `x.exr` and `x.png`,
+/// and so does `x.png`; any other extension is an error.
+pub fn output_paths(out: &Path) -> Result<(PathBuf, PathBuf), String> {
+    match out.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
+        Some("exr") | Some("png") => Ok((out.with_extension("exr"), out.with_extension("png"))),
+        _ => Err(format!(
+            "--out {}: give a .exr path (the PNG preview is written beside it) or a .png one (the EXR is written beside it)",
+            out.display()
+        )),
+    }
+}
+
+/// Writes the linear EXR and its tone-mapped PNG preview; returns their paths.
+pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> Result<(PathBuf, PathBuf), String> {
+    let (exr, png) = output_paths(out)?;
+    img.write_exr(&exr).map_err(|e| e.to_string())?;
+    img.write_png(&png, exposure).map_err(|e| e.to_string())?;
+    Ok((exr, png))
 }
 
 /// Writes `name.{wgsl,spv,glsl,hlsl,metal}` for every kernel: the BSH,
@@ -379,10 +406,22 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> Result<(), String> {
     Ok(())
 }
 
+/// Plots a bench report again: a VPL report as speed against error, a
+/// path-tracing one as RMSE over time (told apart by its `app`).
 fn replot(json: &Path, out: &Path) -> Result<(), String> {
     let text = std::fs::read_to_string(json).map_err(|e| format!("cannot read {}: {e}", json.display()))?;
-    let report: report::Report = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", json.display()))?;
-    plot::speed_vs_error(&report, out)?;
+    let value: serde_json::Value = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", json.display()))?;
+    match value.get("app").and_then(|a| a.as_str()) {
+        Some("pt") => {
+            let report: report::PtReport = serde_json::from_value(value).map_err(|e| format!("{} (a path-tracing report): {e}", json.display()))?;
+            plot::rmse_over_time(&report, out)?;
+        }
+        Some("vpl") => {
+            let report: report::Report = serde_json::from_value(value).map_err(|e| format!("{} (a VPL report): {e}", json.display()))?;
+            plot::speed_vs_error(&report, out)?;
+        }
+        other => return Err(format!("{}: not a slc bench report (its \"app\" is {other:?}, expected \"vpl\" or \"pt\")", json.display())),
+    }
     println!("wrote {}", out.display());
     Ok(())
 }
@@ -418,4 +457,22 @@ fn ies(path: &Path, plot_path: Option<&Path>) -> Result<(), String> {
         println!("  plot                {}", out.display());
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn speed_against_none_reads_right() {
+        assert_eq!(speed_vs_none(100.0, 10.0), "10.0x slower");
+        assert!(speed_vs_none(8.0, 10.0).starts_with("1.2x faster"));
+    }
+
+    #[test]
+    fn out_paths_pair_exr_and_png() {
+        let (e, p) = output_paths(Path::new("a/x.png")).unwrap();
+        assert_eq!((e.to_str().unwrap(), p.to_str().unwrap()), ("a/x.exr", "a/x.png"));
+        assert!(output_paths(Path::new("x.jpg")).is_err() && output_paths(Path::new("x")).is_err());
+    }
 }

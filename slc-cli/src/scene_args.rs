@@ -32,10 +32,10 @@ pub struct SceneArgs {
     /// `cornell` (built in), an OBJ file (with its MTL), or a TOML scene file.
     #[arg(long, default_value = "cornell")]
     pub scene: String,
-    /// Image width [default: 512].
+    /// Image width [default: 512; 128 for `bench --app pt`].
     #[arg(long)]
     pub width: Option<u32>,
-    /// Image height [default: 512].
+    /// Image height [default: 512; 128 for `bench --app pt`].
     #[arg(long)]
     pub height: Option<u32>,
     /// Number of VPLs: s·s with s a multiple of 8 (4096, 16384, 65536, 262144) [default: 65536].

@@ -112,8 +112,9 @@ fn bench_and_plot_commands() {
     let svg = std::fs::read_to_string(d.join("b.svg")).unwrap();
     assert!(svg.contains("<svg") && svg.contains("shading time") && svg.contains("RMSE"));
     // The second run reads the reference from the cache.
-    let text = ok(&d, &["bench", "--width", "32", "--height", "32", "--vpls", "1024", "--repeat", "1", "--json", "c.json", "--cache-dir", "cache"]);
-    assert!(text.contains("from cache"), "{text}");
+    // Without --json: the table only (JSON is optional).
+    let text = ok(&d, &["bench", "--width", "32", "--height", "32", "--vpls", "1024", "--repeat", "1", "--cache-dir", "cache"]);
+    assert!(text.contains("from cache") && text.contains("shading ms"), "{text}");
     ok(&d, &["plot", "b.json", "--out", "p.png"]);
     assert!(std::fs::metadata(d.join("p.png")).unwrap().len() > 1000);
     std::fs::remove_dir_all(&d).ok();
@@ -152,6 +153,23 @@ fn diff_command() {
     assert!(d.join("h.png").exists());
     let out = slc(&d, &["diff", "a.exr", "b.exr", "--max-rmse", "0.000001"]);
     assert_eq!(out.status.code(), Some(1));
+    // PNGs are previews: diff says it compares EXR images.
+    let out = slc(&d, &["diff", "a.png", "b.exr"]);
+    assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("EXR"));
+    std::fs::remove_dir_all(&d).ok();
+}
+
+/// `--out x.png` writes `x.png` and the EXR beside it, and says so; an
+/// extension that is neither is refused before rendering.
+#[test]
+fn out_paths() {
+    let d = tempdir("out");
+    let text = ok(&d, &["render", "--width", "16", "--height", "16", "--vpls", "64", "--out", "x.png"]);
+    assert!(d.join("x.png").exists() && d.join("x.exr").exists());
+    assert!(text.contains("x.exr and x.png"), "{text}");
+    let out = slc(&d, &["render", "--width", "16", "--height", "16", "--vpls", "64", "--out", "x.jpg"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success() && err.contains(".exr"), "{err}");
     std::fs::remove_dir_all(&d).ok();
 }
 
@@ -283,7 +301,8 @@ fn gpu_path_tracer_renders_and_benches() {
         return;
     }
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(text.contains("slc-reservoir") && text.contains("4 samples per pixel") && text.contains("GPU "), "{text}");
+    // The default method is slc on both backends, as --help says.
+    assert!(text.contains("method slc\n") && text.contains("4 samples per pixel") && text.contains("GPU "), "{text}");
     assert!(d.join("g.exr").exists() && d.join("g.png").exists());
     let args = ["bench", "--app", "pt", "--backend", "gpu", "--width", "16", "--height", "16", "--seconds", "0.2", "--reference-spp", "8"];
     let text = ok(&d, &[&args[..], &["--json", "g.json", "--cache-dir", "cache"]].concat());
@@ -303,7 +322,7 @@ fn path_tracer_renders() {
     for m in ["slc", "slc-reservoir", "uniform", "power", "lightbvh"] {
         let out = format!("pt-{m}.exr");
         let text = ok(&d, &["render", "--app", "pt", "--method", m, "--width", "24", "--height", "24", "--spp", "2", "--out", &out]);
-        assert!(text.contains("path tracing") && text.contains("2 samples per pixel"), "{text}");
+        assert!(text.contains("path tracing") && text.contains("2 samples per pixel") && text.contains("[primary]"), "{text}");
         assert!(d.join(&out).exists());
     }
     let out = slc(&d, &["render", "--app", "pt", "--method", "clamp", "--width", "8", "--height", "8"]);
@@ -352,6 +371,10 @@ fn path_tracer_bench() {
     }
     assert!(json["reference_noise"].as_f64().unwrap() >= 0.0);
     assert!(std::fs::read_to_string(d.join("p.svg")).unwrap().contains("RMSE"));
+    assert!(text.contains("[primary]"), "the output says what the path tracer's lights are:\n{text}");
+    // `slc plot` re-plots a path-tracing report too (RMSE over time).
+    ok(&d, &["plot", "p.json", "--out", "q.svg"]);
+    assert!(std::fs::read_to_string(d.join("q.svg")).unwrap().contains("RMSE"));
     std::fs::remove_dir_all(&d).ok();
 }
 

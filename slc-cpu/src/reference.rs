@@ -76,7 +76,8 @@ pub struct PtReference {
 
 /// The path-tracing reference of `pts` at `width × height`: `spp` passes of
 /// `settings` in two halves with different seeds, cached in `cache_dir` by
-/// a hash of scene, lights, size and settings.
+/// a hash of scene, lights, size and settings. `progress(done, spp)` is
+/// called as passes complete (a cached reference calls it once, done).
 pub fn pt_reference(
     pts: &mut CpuPathTracer,
     width: u32,
@@ -84,6 +85,7 @@ pub fn pt_reference(
     settings: &PtSettings,
     spp: u32,
     cache_dir: Option<&Path>,
+    progress: &mut dyn FnMut(u32, u32),
 ) -> Result<PtReference, RenderError> {
     let s = pts.scene().scene();
     let mut h = fnv(&VERSION.to_le_bytes(), 0x5bd1_e995_0000_0001);
@@ -98,15 +100,25 @@ pub fn pt_reference(
     let paths = cache_dir.map(|d| (d.join(format!("pt-reference-{h:016x}-a.bin")), d.join(format!("pt-reference-{h:016x}-b.bin"))));
     let cached = paths.as_ref().and_then(|(a, b)| Some((read_raw(a)?, read_raw(b)?)));
     let (a, b, from_cache) = match cached {
-        Some((a, b)) if (a.width, a.height) == (width, height) => (a, b, true),
+        Some((a, b)) if (a.width, a.height) == (width, height) => {
+            progress(spp, spp);
+            (a, b, true)
+        }
         _ => {
-            let mut half = |seed: u32| -> Result<Image, RenderError> {
+            let per_half = spp.div_ceil(2);
+            // A render split over calls equals one call: chunks of 8 passes
+            // report progress without changing the image.
+            let mut half = |seed: u32, before: u32| -> Result<Image, RenderError> {
                 let mut acc = PtRender::new(width, height);
-                pts.render(&mut acc, &PtSettings { seed, ..*settings }, spp.div_ceil(2))?;
+                while acc.passes < per_half {
+                    let n = (per_half - acc.passes).min(8);
+                    pts.render(&mut acc, &PtSettings { seed, ..*settings }, n)?;
+                    progress(before + acc.passes, 2 * per_half);
+                }
                 Ok(acc.image())
             };
-            let a = half(settings.seed)?;
-            let b = half(settings.seed ^ 0x9E37_79B9)?;
+            let a = half(settings.seed, 0)?;
+            let b = half(settings.seed ^ 0x9E37_79B9, per_half)?;
             if let Some((pa, pb)) = &paths {
                 write_raw(pa, &a).map_err(|e| RenderError::Setting(e.to_string()))?;
                 write_raw(pb, &b).map_err(|e| RenderError::Setting(e.to_string()))?;
