@@ -159,7 +159,8 @@ fn hard_tables() {
 
 #[test]
 fn hostile_input() {
-    let cases: [(&str, fn(&IesErrorKind) -> bool); 7] = [
+    type Expect = fn(&IesErrorKind) -> bool;
+    let cases: [(&str, Expect); 7] = [
         ("", |k| *k == IesErrorKind::MissingTilt),
         ("IESNA:LM-63-2002\n[TEST] x\n", |k| *k == IesErrorKind::MissingTilt),
         ("IESNA:LM-63-2002\nTILT=NONE\n1 1000 1 2", |k| matches!(k, IesErrorKind::UnexpectedEnd { .. })),
