@@ -87,6 +87,9 @@ fn run_label(s: &VplSettings, param: Option<f32>) -> String {
 }
 
 pub fn run(a: BenchArgs) -> Result<(), String> {
+    if a.repeat == 0 || a.reference_spp == 0 {
+        return Err(format!("--repeat {} and --reference-spp {} must be at least 1", a.repeat, a.reference_spp));
+    }
     if a.scene.app == App::Pt {
         return run_pt(a);
     }
@@ -108,7 +111,7 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
     for (param, settings) in configs {
         bar.set_message(run_label(&settings, param));
         let mut best: Option<VplFrame> = None;
-        for _ in 0..a.repeat.max(1) {
+        for _ in 0..a.repeat {
             let f = ctx.render(&settings).map_err(|e| e.to_string())?;
             if best.as_ref().is_none_or(|b| f.stats.shading_ms < b.stats.shading_ms) {
                 best = Some(f);
@@ -170,7 +173,7 @@ fn run_vpl_gpu(a: BenchArgs) -> Result<(), String> {
         let mut best: Option<slc_wgpu::frame::FrameRender> = None;
         // One untimed frame first: drivers compile a pipeline at its first use.
         frame.render(&settings).map_err(|e| e.to_string())?;
-        for _ in 0..a.repeat.max(1) {
+        for _ in 0..a.repeat {
             let f = frame.render(&settings).map_err(|e| e.to_string())?;
             if best.as_ref().is_none_or(|b| f.stats.shading_ms < b.stats.shading_ms) {
                 best = Some(f);

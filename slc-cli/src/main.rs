@@ -298,7 +298,10 @@ fn render_pt(a: RenderArgs) -> Result<(), String> {
         }
         Some(secs) => return Err(format!("--seconds {secs} must be finite and > 0")),
         None => {
-            let spp = a.spp.unwrap_or(16).max(1);
+            let spp = a.spp.unwrap_or(16);
+            if spp == 0 {
+                return Err("--spp 0: give at least one sample per pixel".into());
+            }
             bar.set_length(spp as u64);
             while acc.passes < spp {
                 let n = batch.min(spp - acc.passes);

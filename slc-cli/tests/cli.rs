@@ -184,6 +184,8 @@ fn bad_input_is_one_line_error() {
         vec!["ies", "missing.ies"],
         vec!["diff", "missing-a.exr", "missing-b.exr"],
         vec!["render", "--width", "0"],
+        vec!["render", "--app", "pt", "--spp", "0", "--width", "8", "--height", "8"],
+        vec!["bench", "--repeat", "0", "--width", "8", "--height", "8", "--vpls", "64"],
     ] {
         let out = slc(&d, &args);
         assert!(!out.status.success(), "{args:?} succeeded");

@@ -91,16 +91,71 @@ fn clamped_ranges_darken() {
     }
 }
 
+/// The interleaved image tied to its ground truth, the all-VPL reference
+/// (the mutation check: scaling the interleaved flux by 0.985 must
+/// fail here).
+///
+/// 1. Per pixel, the unculled, undenoised interleaved irradiance is the
+///    definition of interleaved sampling: `P² · Σ_{v ∈ S(x)} Φ_v ·
+///    vpl_transfer(…)` over the VPLs of the pixel's subset (slc-core's
+///    formula and subset map), within f32 summation error (1e-5 relative).
+/// 2. Over a complete P×P block `B` of surface pixels every subset appears
+///    once, so `Σ_B E_int/P² = Σ_v f(x_B(v), v)` while the reference gives
+///    `Σ_B E_ref/P² = Σ_v mean_B f(·, v)`. Interleaving is unbiased in the
+///    model where each VPL's pixel `x_B(v)` is uniform in `B`: the
+///    difference then has mean 0 and variance `Σ_B Σ_v var_B f(·, v)`, and
+///    the test bounds it by 4 standard deviations, per channel. (Its hard
+///    bound `Σ (max_B f − min_B f)` is 3× the image here: useless.) The
+///    VPLs a centimetre from a crease make the variance large: part 2 only
+///    fails a scale error beyond about 45%; part 1 fails a 1.5% one
+///    (checked by mutating the flux scale).
 #[test]
-fn reference_and_interleaved_images_agree_in_mean() {
-    // Interleaving with flux ×64 is itself unbiased: the image means agree.
-    let ctx = VplContext::new(&Scene::cornell_box(), 64, 64, 64, None).unwrap();
-    let reference = ctx.render(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() }).unwrap();
-    let none = ctx.render(&settings(VplMethod::None, 0)).unwrap();
-    let (a, b) = (reference.image.mean(), none.image.mean());
-    assert!((a - b).abs() < 0.02 * a, "reference {a} vs interleaved {b}");
-    assert_eq!(reference.stats.lights_per_pixel, 4096.0);
-    assert_eq!(none.stats.lights_per_pixel, 64.0);
+fn interleaved_image_is_the_interleaved_estimator_of_the_reference() {
+    use slc_core::interleave::interleave_subset;
+    use slc_core::light::vpl_transfer;
+    let (w, h, size) = (128u32, 96u32, 32u32);
+    let ctx = VplContext::new(&Scene::cornell_box(), w, h, size, None).unwrap();
+    let (gb, v, min_d2) = (ctx.gbuffer(), ctx.vpls(), ctx.min_d2());
+    let p = slc_scene::vpl::PERIOD;
+    let none = ctx.shade(&settings(VplMethod::None, 0)).unwrap().irradiance;
+    let reference = ctx.shade(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() }).unwrap().irradiance;
+    let subset_of_vpl: Vec<u32> = (0..v.len() as u32).map(|t| interleave_subset(t % size, t / size, p)).collect();
+    let f = |x: usize, j: usize| v.flux[j].as_dvec3() * vpl_transfer(v.normal[j], gb.normal[x], gb.position[x] - v.position[j], min_d2) as f64;
+    // 1. Per pixel.
+    let mut worst = 0.0f64;
+    for x in (0..gb.position.len()).filter(|&x| gb.valid(x)) {
+        let s = interleave_subset(x as u32 % w, x as u32 / w, p);
+        let want = (0..v.len()).filter(|&j| subset_of_vpl[j] == s).map(|j| f(x, j)).sum::<glam::DVec3>() * (p * p) as f64;
+        let got = none[x].as_dvec3();
+        worst = worst.max(((got - want).abs() / want.abs().max(glam::DVec3::splat(1e-12))).max_element());
+    }
+    assert!(worst <= 1e-5, "interleaved irradiance differs from P²·Σ over the pixel's subset by {worst:.2e}");
+    // 2. Block sums against the reference, with the derived bound.
+    let (mut sum_int, mut sum_ref, mut variance, mut blocks) = (glam::DVec3::ZERO, glam::DVec3::ZERO, glam::DVec3::ZERO, 0);
+    for by in (0..h / p).map(|b| b * p) {
+        for bx in (0..w / p).map(|b| b * p) {
+            let pixels: Vec<usize> = (0..p * p).map(|k| ((by + k / p) * w + bx + k % p) as usize).collect();
+            if !pixels.iter().all(|&x| gb.valid(x)) {
+                continue;
+            }
+            blocks += 1;
+            for &x in &pixels {
+                sum_int += none[x].as_dvec3() / (p * p) as f64;
+                sum_ref += reference[x].as_dvec3() / (p * p) as f64;
+            }
+            for j in 0..v.len() {
+                let c: Vec<glam::DVec3> = pixels.iter().map(|&x| f(x, j)).collect();
+                let mean = c.iter().sum::<glam::DVec3>() / c.len() as f64;
+                variance += c.iter().map(|&y| (y - mean) * (y - mean)).sum::<glam::DVec3>() / c.len() as f64;
+            }
+        }
+    }
+    let (diff, sd) = ((sum_int - sum_ref).abs(), variance.powf(0.5));
+    eprintln!("{blocks} blocks: interleaved {sum_int}, reference {sum_ref}, |difference| {diff}, standard deviation {sd}");
+    assert!(blocks > 20);
+    for c in 0..3 {
+        assert!(diff[c] <= 4.0 * sd[c], "channel {c}: block sums differ by {} > 4 sd = {}", diff[c], 4.0 * sd[c]);
+    }
 }
 
 fn shared(rel: &str) -> Option<PathBuf> {
