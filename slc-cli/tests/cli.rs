@@ -32,7 +32,6 @@ fn shared(rel: &str) -> Option<PathBuf> {
 }
 
 /// README: `cargo run --release -p slc-cli` (no arguments).
-#[test]
 fn main_job_with_no_arguments() {
     let d = tempdir("main");
     let text = ok(&d, &[]);
@@ -44,7 +43,6 @@ fn main_job_with_no_arguments() {
 }
 
 /// README: `slc render` with each method, and with the shared Cornell OBJ.
-#[test]
 fn render_commands() {
     let d = tempdir("render");
     let small = ["--width", "64", "--height", "48", "--vpls", "4096"];
@@ -66,7 +64,6 @@ fn render_commands() {
 }
 
 /// README: `slc bench ... --json --csv`, plus `--plot` and `slc plot`.
-#[test]
 fn bench_and_plot_commands() {
     let d = tempdir("bench");
     let text = ok(
@@ -121,7 +118,6 @@ fn bench_and_plot_commands() {
 }
 
 /// README: `slc ies FILE` (and `--plot`) on every shared IES file.
-#[test]
 fn ies_command() {
     let d = tempdir("ies");
     for name in ["indoor-60w-120deg.ies", "outdoor-roadway-60w.ies", "absolute-led.ies", "floodlight-12w-54deg.ies", "tilt-include-synthetic.ies"] {
@@ -136,7 +132,6 @@ fn ies_command() {
 }
 
 /// `slc diff`: statistics, heat map, and exit status 1 over --max-rmse.
-#[test]
 fn diff_command() {
     let d = tempdir("diff");
     let small = ["--width", "32", "--height", "32", "--vpls", "1024"];
@@ -161,7 +156,6 @@ fn diff_command() {
 
 /// `--out x.png` writes `x.png` and the EXR beside it, and says so; an
 /// extension that is neither is refused before rendering.
-#[test]
 fn out_paths() {
     let d = tempdir("out");
     let text = ok(&d, &["render", "--width", "16", "--height", "16", "--vpls", "64", "--out", "x.png"]);
@@ -174,7 +168,6 @@ fn out_paths() {
 }
 
 /// Bad input: a one-line error on stderr and a non-zero exit status.
-#[test]
 fn bad_input_is_one_line_error() {
     let d = tempdir("bad");
     for args in [
@@ -197,7 +190,6 @@ fn bad_input_is_one_line_error() {
 
 /// Every example scene in `scenes/` loads and renders (small overrides on
 /// the command line win over the file's `[render]`).
-#[test]
 fn example_scene_files_render() {
     let d = tempdir("scenes");
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes");
@@ -220,7 +212,6 @@ fn example_scene_files_render() {
 
 /// README: `slc shaders --out DIR [--lights ...]` writes every kernel in
 /// every format.
-#[test]
 fn shaders_command_exports_every_kernel() {
     let d = tempdir("shaders");
     let text = ok(&d, &["shaders", "--out", "k", "--lights", "point,triangle"]);
@@ -248,23 +239,13 @@ fn shaders_command_exports_every_kernel() {
 /// G-buffer, RSM and shadow map) and reports every stage; its image is the
 /// CPU's ray-cast one up to silhouettes and shadow edges (RMSE bound 0.02,
 /// the image mean is about 0.07). `slc bench --backend gpu` writes the
-/// stage times into its JSON. Needs an adapter: skips with a reason without
-/// one, fails under SLC_REQUIRE_GPU=1.
-#[test]
+/// stage times into its JSON. Declared `Gpu` (see the harness at the end).
 fn gpu_backend_renders_like_cpu() {
     let d = tempdir("gpu");
     let small = ["--width", "48", "--height", "32", "--vpls", "4096", "--no-denoise"];
     let mut args = vec!["render", "--backend", "gpu", "--out", "g.exr", "--shadow-size", "512"];
     args.extend(small);
-    let out = slc(&d, &args);
-    if !out.status.success() {
-        let err = String::from_utf8_lossy(&out.stderr);
-        let required = std::env::var("SLC_REQUIRE_GPU").as_deref() == Ok("1");
-        assert!(!required && err.contains("no GPU adapter"), "slc render --backend gpu failed: {err}");
-        eprintln!("skipping: {}", err.trim());
-        return;
-    }
-    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stdout = ok(&d, &args);
     assert!(stdout.contains("GPU ") && stdout.contains("whole frame on the GPU"), "{stdout}");
     for stage in ["G-buffer", "RSM", "shadow map", "VPL generation", "light update", "shading", "direct", "composition"] {
         assert!(stdout.contains(stage), "no {stage} time in:\n{stdout}");
@@ -289,20 +270,10 @@ fn gpu_backend_renders_like_cpu() {
 }
 
 /// README: `slc render --app pt --backend gpu` and `slc bench --app pt
-/// --backend gpu`. Needs an adapter: skips with a reason without one, fails
-/// under SLC_REQUIRE_GPU=1.
-#[test]
+/// --backend gpu`. Declared `Gpu` (see the harness at the end).
 fn gpu_path_tracer_renders_and_benches() {
     let d = tempdir("gpupt");
-    let out = slc(&d, &["render", "--app", "pt", "--backend", "gpu", "--width", "16", "--height", "16", "--spp", "4", "--out", "g.exr"]);
-    if !out.status.success() {
-        let err = String::from_utf8_lossy(&out.stderr);
-        let required = std::env::var("SLC_REQUIRE_GPU").as_deref() == Ok("1");
-        assert!(!required && err.contains("no GPU adapter"), "slc render --app pt --backend gpu failed: {err}");
-        eprintln!("skipping: {}", err.trim());
-        return;
-    }
-    let text = String::from_utf8_lossy(&out.stdout);
+    let text = ok(&d, &["render", "--app", "pt", "--backend", "gpu", "--width", "16", "--height", "16", "--spp", "4", "--out", "g.exr"]);
     // The default method is slc on both backends, as --help says.
     assert!(text.contains("method slc\n") && text.contains("4 samples per pixel") && text.contains("GPU "), "{text}");
     assert!(d.join("g.exr").exists() && d.join("g.png").exists());
@@ -318,7 +289,6 @@ fn gpu_path_tracer_renders_and_benches() {
 }
 
 /// README: `slc render --app pt` with each method.
-#[test]
 fn path_tracer_renders() {
     let d = tempdir("pt");
     for m in ["slc", "slc-reservoir", "uniform", "power", "lightbvh"] {
@@ -334,7 +304,6 @@ fn path_tracer_renders() {
 
 /// `slc bench --app pt`: equal-time runs with RMSE-over-time series, JSON,
 /// CSV and plot.
-#[test]
 fn path_tracer_bench() {
     let d = tempdir("ptbench");
     let text = ok(
@@ -383,7 +352,6 @@ fn path_tracer_bench() {
 /// MTL features slc does not model produce one warning line per material
 /// (naming the features and the material), and the render still succeeds;
 /// a matte material says nothing.
-#[test]
 fn unmodelled_mtl_features_are_warned_about_once() {
     let d = tempdir("mtl");
     std::fs::write(d.join("ball.mtl"), "newmtl glossy\nKd 0.5 0.5 0.5\nKs 0.3 0.3 0.3\nNs 60\nnewmtl matte\nKd 0.7 0.7 0.7\nKs 0 0 0\n").unwrap();
@@ -396,3 +364,21 @@ fn unmodelled_mtl_features_are_warned_about_once() {
     assert_eq!(warnings.len(), 1, "{err}");
     assert!(warnings[0].contains("material 'glossy' has Ks, Ns"), "{err}");
 }
+
+// GPU tests show as ignored without an adapter, and fail under SLC_REQUIRE_GPU=1.
+slc_tests::harness!(
+    Cpu: main_job_with_no_arguments,
+    Cpu: render_commands,
+    Cpu: bench_and_plot_commands,
+    Cpu: ies_command,
+    Cpu: diff_command,
+    Cpu: out_paths,
+    Cpu: bad_input_is_one_line_error,
+    Cpu: example_scene_files_render,
+    Cpu: shaders_command_exports_every_kernel,
+    Gpu: gpu_backend_renders_like_cpu,
+    Gpu: gpu_path_tracer_renders_and_benches,
+    Cpu: path_tracer_renders,
+    Cpu: path_tracer_bench,
+    Cpu: unmodelled_mtl_features_are_warned_about_once,
+);

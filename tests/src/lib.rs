@@ -2,9 +2,12 @@
 //!
 //! Cross-backend tests of slc: the GPU (wgpu, kernels from
 //! slc-shared-shaders) against the CPU (rayon), on the same inputs with the
-//! same ξ. GPU tests declare their need for an adapter through [`gpu`]:
-//! without one they skip with a one-line reason, unless `SLC_REQUIRE_GPU=1`
-//! (as in CI, which runs them on Mesa's lavapipe), where they fail.
+//! same ξ. Each test file runs through [`harness!`] (libtest-mimic, as
+//! wgpu's own test crate does), which declares what every test needs:
+//! without a GPU adapter the GPU tests show as **ignored**, with the reason
+//! printed once, and `cargo test -- --ignored` fails them with that reason
+//! rather than passing them empty; under `SLC_REQUIRE_GPU=1` (CI, on Mesa's
+//! lavapipe) they fail instead.
 //!
 //! ```
 //! // The property the parity tests check on both backends, shown on the CPU:
@@ -18,31 +21,92 @@ use std::sync::OnceLock;
 
 pub mod engine;
 
-/// The shared GPU context, or `None` (after printing why) when no adapter
-/// exists and `SLC_REQUIRE_GPU` is not `1`.
-///
-/// # Panics
-/// When no adapter exists and `SLC_REQUIRE_GPU=1`: a GPU test must not pass
-/// silently in CI.
-pub fn gpu() -> Option<&'static slc_wgpu::GpuContext> {
+/// The shared GPU context, or why there is none.
+fn context() -> &'static Result<slc_wgpu::GpuContext, String> {
     static CTX: OnceLock<Result<slc_wgpu::GpuContext, String>> = OnceLock::new();
-    let ctx = CTX.get_or_init(|| {
+    CTX.get_or_init(|| {
         let r = slc_wgpu::GpuContext::new().map_err(|e| e.to_string());
         if let Ok(c) = &r {
             eprintln!("GPU tests run on: {}", c.describe());
         }
         r
-    });
-    match ctx {
+    })
+}
+
+/// The shared GPU context, for tests declared [`Needs::Gpu`] (which
+/// [`run`] starts only when an adapter exists). Always `Some`: the
+/// `Option` keeps call sites short.
+///
+/// # Panics
+/// Without an adapter: the calling test uses the GPU but is not declared
+/// [`Needs::Gpu`], and must not pass without running.
+pub fn gpu() -> Option<&'static slc_wgpu::GpuContext> {
+    match context() {
         Ok(c) => Some(c),
-        Err(e) if std::env::var("SLC_REQUIRE_GPU").as_deref() == Ok("1") => {
-            panic!("SLC_REQUIRE_GPU=1 but no GPU adapter: {e}")
-        }
-        Err(e) => {
-            eprintln!("skipping GPU test: {e}");
-            None
+        Err(e) => panic!("this test uses the GPU but is not declared Needs::Gpu (no adapter: {e})"),
+    }
+}
+
+/// What a test needs to run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Needs {
+    /// Nothing but the CPU.
+    Cpu,
+    /// A GPU adapter (a real GPU or lavapipe).
+    Gpu,
+}
+
+/// Why no GPU test can run here, or `None` when an adapter exists.
+fn gpu_missing() -> Option<String> {
+    context().as_ref().err().cloned()
+}
+
+/// Runs a test file's tests as libtest would (filters, `--list`,
+/// `--ignored`, threads), each `(name, needs, test)`. GPU tests without an
+/// adapter are ignored with the reason printed once; run anyway
+/// (`--ignored`) they fail with it; under `SLC_REQUIRE_GPU=1` they fail.
+pub fn run(tests: &[(&'static str, Needs, fn())]) -> std::process::ExitCode {
+    let args = libtest_mimic::Arguments::from_args();
+    let missing = if tests.iter().any(|t| t.1 == Needs::Gpu) { gpu_missing() } else { None };
+    let required = std::env::var("SLC_REQUIRE_GPU").as_deref() == Ok("1");
+    if let Some(reason) = &missing {
+        if required {
+            eprintln!("SLC_REQUIRE_GPU=1, so the GPU tests fail: {reason}");
+        } else {
+            let n = tests.iter().filter(|t| t.1 == Needs::Gpu).count();
+            eprintln!("{n} GPU test(s) ignored: {reason}");
         }
     }
+    let trials = tests
+        .iter()
+        .map(|&(name, needs, test)| match (needs, &missing) {
+            (Needs::Gpu, Some(reason)) => {
+                let why = format!("needs a GPU adapter: {reason}");
+                libtest_mimic::Trial::test(name, move || Err(why.into())).with_kind("gpu").with_ignored_flag(!required)
+            }
+            (Needs::Gpu, None) => libtest_mimic::Trial::test(name, move || {
+                test();
+                Ok(())
+            })
+            .with_kind("gpu"),
+            (Needs::Cpu, _) => libtest_mimic::Trial::test(name, move || {
+                test();
+                Ok(())
+            }),
+        })
+        .collect();
+    libtest_mimic::run(&args, trials).exit_code()
+}
+
+/// The `main` of a test file: `harness!(Cpu: parses, Gpu: shades_like_cpu);`
+/// runs the named functions through [`run`].
+#[macro_export]
+macro_rules! harness {
+    ($($needs:ident: $test:ident),* $(,)?) => {
+        fn main() -> std::process::ExitCode {
+            $crate::run(&[$((stringify!($test), $crate::Needs::$needs, $test as fn())),*])
+        }
+    };
 }
 
 /// A file under `../shared/data` beside the checkout, or `None` (after

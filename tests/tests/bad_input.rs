@@ -32,7 +32,6 @@ const BAD: [f32; 4] = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, -1.0];
 /// Bad for coordinates (which may be negative).
 const NONFINITE: [f32; 3] = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY];
 
-#[test]
 fn core_constructors() {
     for b in BAD {
         rejects("error bound", "error bound", move || RangeParams::new(b, 1.0));
@@ -64,7 +63,6 @@ fn core_constructors() {
     });
 }
 
-#[test]
 fn ies_parser() {
     for (text, needle) in [
         ("", "tilt"),
@@ -81,7 +79,6 @@ fn ies_parser() {
     assert_eq!(e.line, 6);
 }
 
-#[test]
 fn scene_loaders() {
     let bad_obj: [(&[u8], &str); 4] = [
         (b"", "no triangles"),
@@ -112,7 +109,6 @@ fn scene_loaders() {
     }
 }
 
-#[test]
 fn renderer_settings() {
     let scene = Scene::cornell_box();
     rejects("width 0", "size", || VplContext::new(&scene, 0, 8, 32, None).map(|_| ()));
@@ -132,7 +128,6 @@ fn renderer_settings() {
 }
 
 /// The path tracer's and direct light's entry points, on both backends.
-#[test]
 fn path_tracer_and_direct_light_settings() {
     use slc_cpu::direct::DirectLights;
     use slc_cpu::pt::CpuPathTracer;
@@ -176,3 +171,11 @@ fn path_tracer_and_direct_light_settings() {
     let gd = slc_wgpu::direct::GpuDirect::new(g, &d).unwrap();
     rejects("gpu points vs normals", "normals", AssertUnwindSafe(|| gd.shade(&[Vec3::ONE, Vec3::ZERO], &[Vec3::Y], &params, 1, 0)));
 }
+
+slc_tests::harness!(
+    Cpu: core_constructors,
+    Cpu: ies_parser,
+    Cpu: scene_loaders,
+    Cpu: renderer_settings,
+    Gpu: path_tracer_and_direct_light_settings,
+);

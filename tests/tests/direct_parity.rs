@@ -149,7 +149,6 @@ fn check(o: &Outcome, what: &str) {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 12, rng_seed: proptest::test_runner::RngSeed::Fixed(0x51C_D1EC7), failure_persistence: None, ..ProptestConfig::default() })]
     /// Random light sets and settings: decisions and irradiance agree.
-    #[test]
     fn random_light_sets_agree(seed in any::<u32>(), n in 1usize..160, lo in -6.0f32..2.0, span in 0.0f32..6.0, log_eps in -4.0f32..-0.5, frame in 0u32..100) {
         if let Some(o) = compare(seed, n, (lo, lo + span), 10f32.powf(log_eps), frame) {
             check(&o, &format!("seed {seed}, {n} lights"));
@@ -159,7 +158,6 @@ proptest! {
 
 /// Intensities at the ends of f32 (subnormal, near f32::MAX) and error
 /// bounds at both extremes: the same decisions, finite values.
-#[test]
 fn extreme_intensities_and_error_bounds_agree() {
     for (what, range, eps) in [
         ("subnormal intensities", (-44.0, -39.0), 1e-3),
@@ -171,3 +169,8 @@ fn extreme_intensities_and_error_bounds_agree() {
         check(&o, what);
     }
 }
+
+slc_tests::harness!(
+    Gpu: random_light_sets_agree,
+    Gpu: extreme_intensities_and_error_bounds_agree,
+);

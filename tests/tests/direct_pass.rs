@@ -45,7 +45,6 @@ fn lights() -> LightSet {
     LightSet::new(v).unwrap()
 }
 
-#[test]
 fn pass_matches_gpu_direct() {
     let Some(gpu) = gpu() else { return };
     let ctx = VplContext::new(&Scene::cornell_box(), W, H, 8, None).unwrap();
@@ -99,7 +98,6 @@ fn pass_matches_gpu_direct() {
     }
 }
 
-#[test]
 fn wrong_inputs_are_typed_errors() {
     let Some(gpu) = gpu() else { return };
     let set = lights();
@@ -128,3 +126,8 @@ fn wrong_inputs_are_typed_errors() {
     let e = DirectPass::new(gpu, &set, &DirectPassDesc { output_format: wgpu::TextureFormat::Rgba8Unorm, ..desc }).err().unwrap();
     assert!(matches!(e, GpuError::Binding { .. }), "{e}");
 }
+
+slc_tests::harness!(
+    Gpu: pass_matches_gpu_direct,
+    Gpu: wrong_inputs_are_typed_errors,
+);

@@ -75,12 +75,10 @@ fn check_frame(scene: &Scene, what: &str) {
     }
 }
 
-#[test]
 fn spot_frame_matches_the_cpu_frame() {
     check_frame(&Scene::cornell_box(), "cornell spot");
 }
 
-#[test]
 fn directional_frame_matches_the_cpu_frame() {
     let mut scene = Scene::cornell_box();
     scene.primary = PrimaryLight::Directional { direction: Vec3::new(0.3, -1.0, -0.4).normalize(), irradiance: Vec3::splat(2.0) };
@@ -93,7 +91,6 @@ fn directional_frame_matches_the_cpu_frame() {
 /// the largest texel's flux: half floats flush the cone's faint rim to
 /// zero) the same position within 0.1% of the scene and flux within 0.2%
 /// (plus two half-float subnormal steps).
-#[test]
 fn gpu_vpls_match_cpu_vpls() {
     let Some(gpu) = gpu() else { return };
     let scene = Scene::cornell_box();
@@ -128,7 +125,6 @@ fn gpu_vpls_match_cpu_vpls() {
 
 /// Every stage is timed, by GPU timestamps where a hardware adapter has
 /// them.
-#[test]
 fn every_stage_is_timed() {
     let Some(gpu) = gpu() else { return };
     let frame = GpuVplFrame::new(gpu, &Scene::cornell_box(), &FrameDesc { width: 64, height: 64, rsm_size: 16, shadow_size: 64, min_distance: None })
@@ -160,7 +156,6 @@ fn every_stage_is_timed() {
 }
 
 /// Bad sizes and settings are typed errors, not panics.
-#[test]
 fn bad_frames_are_errors() {
     let Some(gpu) = gpu() else { return };
     let scene = Scene::cornell_box();
@@ -176,3 +171,11 @@ fn bad_frames_are_errors() {
     assert!(frame.render(&settings(VplMethod::Reference, false)).is_err());
     assert!(frame.render(&VplSettings { error_bound: -1.0, ..VplSettings::default() }).is_err());
 }
+
+slc_tests::harness!(
+    Gpu: spot_frame_matches_the_cpu_frame,
+    Gpu: directional_frame_matches_the_cpu_frame,
+    Gpu: gpu_vpls_match_cpu_vpls,
+    Gpu: every_stage_is_timed,
+    Gpu: bad_frames_are_errors,
+);

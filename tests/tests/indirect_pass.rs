@@ -122,7 +122,6 @@ fn compare(pass: &[[f32; 4]], reference: &Shaded, ctx: &VplContext) -> (usize, u
     (pixels, differs, worst)
 }
 
-#[test]
 fn pass_matches_gpu_vpl_for_every_method() {
     let Some(gpu) = gpu() else { return };
     let ctx = cpu_ctx();
@@ -160,7 +159,6 @@ fn pass_matches_gpu_vpl_for_every_method() {
 
 /// The same VPLs from a buffer, ordered into the RSM's subsets: without ξ
 /// (clamp, none) the very same image.
-#[test]
 fn vpl_buffer_source_gives_the_rsm_image() {
     let Some(gpu) = gpu() else { return };
     let ctx = cpu_ctx();
@@ -183,7 +181,6 @@ fn vpl_buffer_source_gives_the_rsm_image() {
 
 /// Wrong formats, sizes, usages and sources are typed errors before
 /// anything is recorded.
-#[test]
 fn wrong_inputs_are_typed_errors() {
     let Some(gpu) = gpu() else { return };
     let ctx = cpu_ctx();
@@ -235,3 +232,9 @@ fn wrong_inputs_are_typed_errors() {
     assert!(matches!(pass.record(gpu, &mut enc, &ok, &frame), Err(GpuError::Setting(_))));
     gpu.take_errors().unwrap();
 }
+
+slc_tests::harness!(
+    Gpu: pass_matches_gpu_vpl_for_every_method,
+    Gpu: vpl_buffer_source_gives_the_rsm_image,
+    Gpu: wrong_inputs_are_typed_errors,
+);

@@ -115,7 +115,6 @@ fn run(method: PtMethod, eps: f32, intensity: f32, n: u32) -> Option<(Stats, Sta
 /// Every method the GPU runs (slc-reservoir, slc, uniform, power) is the CPU's
 /// estimator: same image mean, images within the variance bound, and the
 /// same mean as the CPU's unculled estimator.
-#[test]
 fn gpu_path_tracer_matches_cpu_and_unculled_in_expectation() {
     for method in [PtMethod::SlcReservoir, PtMethod::Slc, PtMethod::Uniform, PtMethod::Power] {
         let Some((g, c, u)) = run(method, 0.05, 1.0, 400) else { return };
@@ -133,7 +132,6 @@ fn gpu_path_tracer_matches_cpu_and_unculled_in_expectation() {
 
 /// Hard cases on the GPU: nothing culled, everything culled, huge and
 /// subnormal intensities: finite, non-negative, and the same mean as the CPU.
-#[test]
 fn gpu_path_tracer_hard_cases() {
     for (eps, intensity) in [(1e-30f32, 1.0f32), (1e30, 1.0), (0.05, 1e36), (0.05, 1e-40)] {
         let Some((g, c, _)) = run(PtMethod::SlcReservoir, eps, intensity, 40) else { return };
@@ -144,7 +142,6 @@ fn gpu_path_tracer_hard_cases() {
 
 /// The method the GPU does not run (lightbvh), and a mismatched
 /// accumulation, are typed errors on the GPU.
-#[test]
 fn gpu_path_tracer_rejects_what_it_does_not_run() {
     let Some(g) = gpu() else { return };
     let (s, lights) = scene(1.0);
@@ -157,3 +154,9 @@ fn gpu_path_tracer_rejects_what_it_does_not_run() {
     assert!(gpt.render(&mut PtRender::new(W, H), &PtSettings { max_depth: 0, ..ok }, 1).is_err());
     assert!(gpt.render(&mut PtRender::new(W, H), &PtSettings { error_bound: f32::NAN, ..ok }, 1).is_err());
 }
+
+slc_tests::harness!(
+    Gpu: gpu_path_tracer_matches_cpu_and_unculled_in_expectation,
+    Gpu: gpu_path_tracer_hard_cases,
+    Gpu: gpu_path_tracer_rejects_what_it_does_not_run,
+);

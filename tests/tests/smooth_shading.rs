@@ -111,7 +111,6 @@ fn check(what: &str, smooth: f64, faceted: f64) {
     assert!(faceted > 2.0 * smooth && faceted > 0.03, "{what}: faceted {faceted} is not clearly worse than smooth {smooth}");
 }
 
-#[test]
 fn cpu_path_tracer_shades_vertex_normals_smoothly() {
     let e = |smooth: bool| {
         let s = sphere(smooth);
@@ -121,7 +120,6 @@ fn cpu_path_tracer_shades_vertex_normals_smoothly() {
     check("cpu", e(true), e(false));
 }
 
-#[test]
 fn gpu_path_tracer_shades_vertex_normals_smoothly() {
     let Some(g) = slc_tests::gpu() else { return };
     let e = |smooth: bool| {
@@ -135,7 +133,6 @@ fn gpu_path_tracer_shades_vertex_normals_smoothly() {
 /// The VPL application's G-buffer (what both backends shade) carries the
 /// interpolated normal: within 1.5° of the true sphere's normal where the
 /// faceted one is off by several degrees.
-#[test]
 fn vpl_gbuffer_carries_smooth_normals() {
     let worst = |smooth: bool| {
         let s = sphere(smooth);
@@ -155,3 +152,9 @@ fn vpl_gbuffer_carries_smooth_normals() {
     let (smooth, faceted) = (worst(true), worst(false));
     assert!(smooth < 1.5 && faceted > 4.0, "worst normal error: smooth {smooth}°, faceted {faceted}°");
 }
+
+slc_tests::harness!(
+    Cpu: cpu_path_tracer_shades_vertex_normals_smoothly,
+    Gpu: gpu_path_tracer_shades_vertex_normals_smoothly,
+    Cpu: vpl_gbuffer_carries_smooth_normals,
+);

@@ -67,7 +67,6 @@ fn compare(cpu: &Shaded, gpu: &Shaded, ctx: &VplContext) -> Compared {
     c
 }
 
-#[test]
 fn shading_matches_cpu_for_every_method() {
     let Some(gv) = gpu_vpl() else { return };
     let ctx = cpu_ctx();
@@ -94,7 +93,6 @@ proptest! {
     /// Random seeds, frames, error bounds (1e-4 … 0.1: ranges from beyond
     /// the scene down to a few centimetres) and clamp ranges: the same
     /// decisions and sums on both backends.
-    #[test]
     fn random_settings_agree(seed in any::<u32>(), frame in 0u32..1000, log_eps in -4.0f32..-1.0, range in 0.01f32..0.5, clamp in any::<bool>()) {
         let Some(gv) = gpu_vpl() else { return Ok(()) };
         let ctx = cpu_ctx();
@@ -111,7 +109,6 @@ proptest! {
 
 /// End to end (denoise on, each backend with its own implementation of the
 /// one shared filter weight): the same image from both backends.
-#[test]
 fn images_match_end_to_end() {
     let Some(gv) = gpu_vpl() else { return };
     let ctx = cpu_ctx();
@@ -130,7 +127,6 @@ fn images_match_end_to_end() {
 /// The GPU estimator's expectation is the unculled sum, per pixel, by the
 /// same stratified quadrature over ξ as the CPU test (bound: 2 strata of the
 /// all-kept frame).
-#[test]
 fn gpu_expectation_equals_unculled() {
     let Some(gv) = gpu_vpl() else { return };
     let none = gv.shade(&settings(VplMethod::None)).unwrap();
@@ -157,7 +153,6 @@ fn gpu_expectation_equals_unculled() {
 /// 4,096 VPLs (64 per subset) through a 16-light list (4 chunks), and
 /// 262,144 VPLs through the default list, give the CPU's keep decisions and
 /// irradiance, within the tolerances above.
-#[test]
 fn chunked_tile_lists_match_cpu() {
     let Some(g) = gpu() else { return };
     let ctx = VplContext::new(&Scene::cornell_box(), 48, 32, 64, None).unwrap();
@@ -182,7 +177,6 @@ fn chunked_tile_lists_match_cpu() {
 /// (never culled) or ~0 (nothing kept), and ξ at both ends of [0, 1)
 /// (including the largest f32 below 1, where r² = 2²⁴ r_t²). The GPU agrees
 /// with the CPU and no pixel is NaN or infinite.
-#[test]
 fn hard_cases_agree() {
     let Some(gv) = gpu_vpl() else { return };
     let ctx = cpu_ctx();
@@ -196,3 +190,12 @@ fn hard_cases_agree() {
         assert!(c.kept_differs * 200 <= c.pixels && c.worst_rel <= 1e-4, "eps {eps} xi {xi:?}");
     }
 }
+
+slc_tests::harness!(
+    Gpu: shading_matches_cpu_for_every_method,
+    Gpu: random_settings_agree,
+    Gpu: images_match_end_to_end,
+    Gpu: gpu_expectation_equals_unculled,
+    Gpu: chunked_tile_lists_match_cpu,
+    Gpu: hard_cases_agree,
+);
