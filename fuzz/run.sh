@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 secs="${1:-30}"
-targets=(ies_parse scene_loaders bsh_vs_brute range_math)
+targets=(ies_parse scene_loaders bsh_vs_brute range_math kernel_features)
 cargo +nightly fuzz build "${targets[@]}" >/dev/null 2>&1 || cargo +nightly fuzz build
 for t in "${targets[@]}"; do
     mkdir -p "corpus/$t"

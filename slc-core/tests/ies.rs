@@ -10,17 +10,17 @@ use slc_core::ies::{IesFormat, IesProfile, PhotometricType, Tilt};
 const FILES: [&str; 5] =
     ["absolute-led.ies", "floodlight-12w-54deg.ies", "indoor-60w-120deg.ies", "outdoor-roadway-60w.ies", "tilt-include-synthetic.ies"];
 
-fn load(name: &str) -> Option<(Vec<u8>, IesProfile)> {
-    let path = common::shared_data(&format!("ies/{name}"))?;
+fn load(name: &str) -> (Vec<u8>, IesProfile) {
+    let path = common::shared_data(&format!("ies/{name}"));
     let bytes = std::fs::read(&path).unwrap();
     let p = IesProfile::parse_bytes(&bytes).unwrap_or_else(|e| panic!("{name}: {e}"));
-    Some((bytes, p))
+    (bytes, p)
 }
 
 #[test]
 fn every_shared_file_parses_and_evaluates_finite() {
     for name in FILES {
-        let Some((_, p)) = load(name) else { return };
+        let (_, p) = load(name);
         assert_eq!(p.candela.len(), p.vertical.len() * p.horizontal.len(), "{name}");
         assert!(p.max_candela() > 0.0 && p.max_candela().is_finite(), "{name}");
         for g in 0..=180 {
@@ -36,7 +36,7 @@ fn every_shared_file_parses_and_evaluates_finite() {
 
 #[test]
 fn header_facts() {
-    let Some((_, abs)) = load("absolute-led.ies") else { return };
+    let (_, abs) = load("absolute-led.ies");
     assert_eq!(abs.format, IesFormat::Lm63_2002);
     assert_eq!(abs.lumens_per_lamp, -1.0);
     assert_eq!(abs.photometric_type, PhotometricType::C);
@@ -47,16 +47,16 @@ fn header_facts() {
     assert_approx_eq!(abs.candela_at(2.5, 0.0), 3475.0, 1e-3);
     assert_eq!(abs.candela_at(91.0, 0.0), 0.0, "outside the 0–90° vertical range");
 
-    let Some((_, tilt)) = load("tilt-include-synthetic.ies") else { return };
+    let (_, tilt) = load("tilt-include-synthetic.ies");
     assert_eq!(tilt.tilt, Tilt::Include { geometry: 1, angles: vec![0.0, 45.0, 90.0, 180.0], factors: vec![1.0, 0.9, 0.8, 1.0] });
     assert_eq!(tilt.horizontal, [0.0]);
     assert_approx_eq!(tilt.candela_at(33.75, 77.0), 800.0, 1e-3);
 
-    let Some((_, road)) = load("outdoor-roadway-60w.ies") else { return };
+    let (_, road) = load("outdoor-roadway-60w.ies");
     assert_eq!(road.format, IesFormat::Lm63_1995);
     assert_eq!(road.vertical.len(), 361);
 
-    let Some((_, indoor)) = load("indoor-60w-120deg.ies") else { return };
+    let (_, indoor) = load("indoor-60w-120deg.ies");
     assert_eq!(indoor.horizontal.len(), 1);
     // Multiplier 0.4597 applied: I_max = 0.4597 × max raw candela.
     let raw_max = indoor.candela.iter().cloned().fold(0.0f32, f32::max);
@@ -66,7 +66,7 @@ fn header_facts() {
 #[test]
 fn truncated_real_files_give_errors_not_panics() {
     for name in FILES {
-        let Some((bytes, _)) = load(name) else { return };
+        let (bytes, _) = load(name);
         // Cut at many places: must be Ok or a typed error with a line number.
         let step = (bytes.len() / 200).max(1);
         for cut in (0..bytes.len()).step_by(step) {

@@ -109,19 +109,13 @@ macro_rules! harness {
     };
 }
 
-/// A file under `../shared/data` beside the checkout, or `None` (after
-/// printing why) when it is missing outside CI.
+/// A file under `../shared/data` beside the checkout.
 ///
 /// # Panics
-/// When the file is missing and `CI` is set: CI always has `../shared`.
-pub fn shared_data(rel: &str) -> Option<std::path::PathBuf> {
+/// When it is missing: missing test data is a failure, never a silent
+/// downgrade of what a test covers.
+pub fn shared_data(rel: &str) -> std::path::PathBuf {
     let p = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data").join(rel);
-    if p.exists() {
-        return Some(p);
-    }
-    if std::env::var_os("CI").is_some() {
-        panic!("test data {} is missing (CI must have ../shared beside the checkout)", p.display());
-    }
-    eprintln!("skipping: test data {} is missing", p.display());
-    None
+    assert!(p.exists(), "test data {} is missing: the tests need ../shared (the team data) beside the checkout", p.display());
+    p
 }

@@ -34,10 +34,9 @@ use slc_tests::{gpu, shared_data};
 use slc_wgpu::direct::GpuDirect;
 use std::sync::{Arc, OnceLock};
 
-fn ies() -> Option<Arc<IesProfile>> {
-    static P: OnceLock<Option<Arc<IesProfile>>> = OnceLock::new();
-    P.get_or_init(|| shared_data("ies/floodlight-12w-54deg.ies").map(|p| Arc::new(IesProfile::parse_bytes(&std::fs::read(p).unwrap()).unwrap())))
-        .clone()
+fn ies() -> Arc<IesProfile> {
+    static P: OnceLock<Arc<IesProfile>> = OnceLock::new();
+    P.get_or_init(|| Arc::new(IesProfile::parse_bytes(&std::fs::read(shared_data("ies/floodlight-12w-54deg.ies")).unwrap()).unwrap())).clone()
 }
 
 /// A small deterministic generator for the scene's details.
@@ -78,10 +77,7 @@ fn compare(seed: u32, n_lights: usize, log_intensity: (f32, f32), eps: f32, fram
         let l = match (r.u() * 4.0) as u32 {
             0 => Light::Point(PointLight::new(p, Vec3::new(i, 0.5 * i, 0.25 * i)).unwrap()),
             1 => Light::Spot(SpotLight::new(p, r.dir(), Vec3::splat(i), 0.3 * r.u(), 0.4 + r.u()).unwrap()),
-            2 => match ies() {
-                Some(prof) => Light::Ies(IesLight::new(p, r.dir(), r.dir(), Vec3::splat(i * 1e-3), prof).unwrap()),
-                None => Light::Point(PointLight::new(p, Vec3::splat(i)).unwrap()),
-            },
+            2 => Light::Ies(IesLight::new(p, r.dir(), r.dir(), Vec3::splat(i * 1e-3), ies()).unwrap()),
             _ => {
                 let s = 0.05 + 0.2 * r.u();
                 match TriangleLight::new(p, p + r.v() * s, p + r.v() * s, Vec3::splat(i)) {

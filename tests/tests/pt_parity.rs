@@ -39,11 +39,8 @@ fn scene(extra_intensity: f32) -> (Scene, Vec<Light>) {
         Light::Point(PointLight::new(Vec3::new(0.15, 0.45, 0.2), Vec3::splat(0.01 * extra_intensity)).unwrap()),
         Light::Spot(SpotLight::new(Vec3::new(0.4, 0.5, 0.4), Vec3::NEG_Y, Vec3::new(0.05, 0.03, 0.01) * extra_intensity, 0.3, 0.6).unwrap()),
     ];
-    if let Some(p) = shared_data("ies/indoor-60w-120deg.ies") {
-        let profile = Arc::new(IesProfile::parse_bytes(&std::fs::read(p).unwrap()).unwrap());
-        lights
-            .push(Light::Ies(IesLight::new(Vec3::new(0.3, 0.54, 0.15), Vec3::NEG_Y, Vec3::X, Vec3::splat(1e-4 * extra_intensity), profile).unwrap()));
-    }
+    let profile = Arc::new(IesProfile::parse_bytes(&std::fs::read(shared_data("ies/indoor-60w-120deg.ies")).unwrap()).unwrap());
+    lights.push(Light::Ies(IesLight::new(Vec3::new(0.3, 0.54, 0.15), Vec3::NEG_Y, Vec3::X, Vec3::splat(1e-4 * extra_intensity), profile).unwrap()));
     (s, lights)
 }
 

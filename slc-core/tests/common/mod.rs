@@ -17,16 +17,12 @@ macro_rules! assert_approx_eq {
     }};
 }
 
-/// `../shared/data/<rel>` from the workspace root. Returns `None` (and says
-/// so) when the data is absent on a developer machine; fails under `CI`.
-pub fn shared_data(rel: &str) -> Option<PathBuf> {
+/// `../shared/data/<rel>` from the workspace root.
+///
+/// # Panics
+/// When it is missing: missing test data is a failure, never a silent skip.
+pub fn shared_data(rel: &str) -> PathBuf {
     let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data").join(rel);
-    if p.exists() {
-        return Some(p);
-    }
-    if std::env::var_os("CI").is_some() {
-        panic!("test data {} is missing (CI must have ../shared beside the checkout)", p.display());
-    }
-    eprintln!("skipping: test data {} not found", p.display());
-    None
+    assert!(p.exists(), "test data {} is missing: the tests need ../shared (the team data) beside the checkout", p.display());
+    p
 }

@@ -1,0 +1,49 @@
+//! Random kernel `Features` for every kernel: generation either returns
+//! naga-validated WGSL or the typed `ShaderError::Unsupported` that
+//! `check` gives. A template error or WGSL that naga rejects is a bug (a
+//! combination `check` lets through but the templates cannot build).
+#![no_main]
+
+use arbitrary::Arbitrary;
+use libfuzzer_sys::fuzz_target;
+use slc_shared_shaders::{CullMethod, Features, Heuristic, Kernel, LightSet, OutputFormat, Selection, ShaderError, VplSource, generate};
+
+#[derive(Arbitrary, Debug)]
+struct Input {
+    kernel: u8,
+    lights: u8,
+    reservoir_k: u8,
+    workgroup_size: u16,
+    tile_size: u8,
+    interleave: u8,
+    max_tile_lights: u16,
+    method: u8,
+    heuristic: bool,
+    selection: u8,
+    rsm: bool,
+    rgba32: bool,
+    shadows: bool,
+}
+
+fuzz_target!(|i: Input| {
+    let kernel = Kernel::ALL[i.kernel as usize % Kernel::ALL.len()];
+    let features = Features {
+        lights: LightSet::from_bits(i.lights as u32),
+        reservoir_k: i.reservoir_k as u32,
+        workgroup_size: i.workgroup_size as u32,
+        tile_size: i.tile_size as u32,
+        interleave: i.interleave as u32,
+        max_tile_lights: i.max_tile_lights as u32,
+        method: [CullMethod::Slc, CullMethod::Clamp, CullMethod::None][i.method as usize % 3],
+        heuristic: if i.heuristic { Heuristic::Balance } else { Heuristic::Power },
+        selection: [Selection::Reservoir, Selection::All, Selection::Uniform, Selection::Power][i.selection as usize % 4],
+        vpl_source: if i.rsm { VplSource::Rsm } else { VplSource::Buffer },
+        output_format: if i.rgba32 { OutputFormat::Rgba32Float } else { OutputFormat::Rgba16Float },
+        shadows: i.shadows,
+    };
+    match generate(kernel, &features) {
+        Ok(wgsl) => assert!(wgsl.contains("fn "), "{kernel:?}: empty source"),
+        Err(ShaderError::Unsupported(_)) => {}
+        Err(e) => panic!("{kernel:?} {features:?}: {e}"),
+    }
+});
