@@ -8,12 +8,17 @@
 //! weighs no more than [`COVER_WEIGHT`], its VPL subset is missing from the
 //! estimate (edges, corners, the image border), and the window doubles to
 //! `2P × 2P`. Background pixels (depth ∞) get weight 0. The
-//! inner loop runs over contiguous row segments of SoA arrays, branch-free.
+//! inner loop runs over contiguous row segments of SoA arrays, branch-free,
+//! in chunks of 8 neighbours whose weights vectorize.
 
 use glam::Vec3;
 use rayon::prelude::*;
 use slc_core::denoise::{COVER_WEIGHT, DEPTH_SIGMA, bilateral_weight};
 use slc_scene::vpl::GBuffer;
+
+/// Neighbours per vectorized chunk of a window row (a full row of the
+/// 8 × 8 window; two of the widened 16 × 16 one).
+const LANES: usize = 8;
 
 /// Filters `e` (one value per pixel) with a `period × period` window.
 pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
@@ -42,20 +47,32 @@ pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
                 let mut covered = 0u32;
                 for yy in y0..y1 {
                     let row = yy * w;
-                    let r = row + x0..row + x1;
-                    for ((((((&zj, &a), &b), &c), &r_), &g_), &b_) in z[r.clone()]
-                        .iter()
-                        .zip(&nx[r.clone()])
-                        .zip(&ny[r.clone()])
-                        .zip(&nz[r.clone()])
-                        .zip(&er[r.clone()])
-                        .zip(&eg[r.clone()])
-                        .zip(&eb[r])
-                    {
-                        let wgt = bilateral_weight(n, Vec3::new(a, b, c), zi, zj, inv);
-                        sr += r_ * wgt;
-                        sg += g_ * wgt;
-                        sb += b_ * wgt;
+                    let (mut a, b) = (row + x0, row + x1);
+                    // Full chunks of LANES neighbours as fixed-size lanes
+                    // the compiler vectorizes (the weights); the sums stay
+                    // in neighbour order, so the result is the scalar loop's.
+                    while b - a >= LANES {
+                        let lanes = |v: &[f32]| -> [f32; LANES] { v[a..a + LANES].try_into().expect("LANES") };
+                        let (zj, njx, njy, njz) = (lanes(&z), lanes(&nx), lanes(&ny), lanes(&nz));
+                        let (rr, gg, bb) = (lanes(&er), lanes(&eg), lanes(&eb));
+                        let mut wgt = [0.0f32; LANES];
+                        for l in 0..LANES {
+                            wgt[l] = bilateral_weight(n, Vec3::new(njx[l], njy[l], njz[l]), zi, zj[l], inv);
+                        }
+                        for l in 0..LANES {
+                            sr += rr[l] * wgt[l];
+                            sg += gg[l] * wgt[l];
+                            sb += bb[l] * wgt[l];
+                            sw += wgt[l];
+                            covered += (wgt[l] > COVER_WEIGHT) as u32;
+                        }
+                        a += LANES;
+                    }
+                    for j in a..b {
+                        let wgt = bilateral_weight(n, Vec3::new(nx[j], ny[j], nz[j]), zi, z[j], inv);
+                        sr += er[j] * wgt;
+                        sg += eg[j] * wgt;
+                        sb += eb[j] * wgt;
                         sw += wgt;
                         covered += (wgt > COVER_WEIGHT) as u32;
                     }
