@@ -9,7 +9,9 @@
 //! estimate (edges, corners, the image border), and the window doubles to
 //! `2P × 2P`. Background pixels (depth ∞) get weight 0. The
 //! inner loop runs over contiguous row segments of SoA arrays, branch-free,
-//! in chunks of 8 neighbours whose weights vectorize.
+//! in chunks of 8 neighbours with per-lane partial sums, so weights and sums
+//! vectorize (the order of the additions differs from a sequential sum: at
+//! most 2e-6 on the default image, RMSE unchanged).
 
 use glam::Vec3;
 use rayon::prelude::*;
@@ -43,28 +45,26 @@ pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
                 let half = size / 2;
                 let (x0, x1) = (x.saturating_sub(half), (x + size - half).min(w));
                 let (y0, y1) = (y.saturating_sub(half), (y + size - half).min(h));
+                // Per-lane partial sums (vectorized), folded at the end.
+                let (mut lr, mut lg, mut lb, mut lw, mut lc) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES], [0u32; LANES]);
                 let (mut sr, mut sg, mut sb, mut sw) = (0.0f32, 0.0f32, 0.0f32, 0.0f32);
                 let mut covered = 0u32;
                 for yy in y0..y1 {
                     let row = yy * w;
                     let (mut a, b) = (row + x0, row + x1);
                     // Full chunks of LANES neighbours as fixed-size lanes
-                    // the compiler vectorizes (the weights); the sums stay
-                    // in neighbour order, so the result is the scalar loop's.
+                    // the compiler vectorizes.
                     while b - a >= LANES {
                         let lanes = |v: &[f32]| -> [f32; LANES] { v[a..a + LANES].try_into().expect("LANES") };
                         let (zj, njx, njy, njz) = (lanes(&z), lanes(&nx), lanes(&ny), lanes(&nz));
                         let (rr, gg, bb) = (lanes(&er), lanes(&eg), lanes(&eb));
-                        let mut wgt = [0.0f32; LANES];
                         for l in 0..LANES {
-                            wgt[l] = bilateral_weight(n, Vec3::new(njx[l], njy[l], njz[l]), zi, zj[l], inv);
-                        }
-                        for l in 0..LANES {
-                            sr += rr[l] * wgt[l];
-                            sg += gg[l] * wgt[l];
-                            sb += bb[l] * wgt[l];
-                            sw += wgt[l];
-                            covered += (wgt[l] > COVER_WEIGHT) as u32;
+                            let wgt = bilateral_weight(n, Vec3::new(njx[l], njy[l], njz[l]), zi, zj[l], inv);
+                            lr[l] += rr[l] * wgt;
+                            lg[l] += gg[l] * wgt;
+                            lb[l] += bb[l] * wgt;
+                            lw[l] += wgt;
+                            lc[l] += (wgt > COVER_WEIGHT) as u32;
                         }
                         a += LANES;
                     }
@@ -76,6 +76,13 @@ pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
                         sw += wgt;
                         covered += (wgt > COVER_WEIGHT) as u32;
                     }
+                }
+                for l in 0..LANES {
+                    sr += lr[l];
+                    sg += lg[l];
+                    sb += lb[l];
+                    sw += lw[l];
+                    covered += lc[l];
                 }
                 (Vec3::new(sr, sg, sb), sw, covered)
             };
