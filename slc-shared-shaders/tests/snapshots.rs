@@ -1,6 +1,7 @@
 //! Snapshot tests in the style of naga's `tests/out`: the generated WGSL of
-//! a few representative variants is committed under `tests/snapshots/`; a
-//! change in the core's math or a template shows up as a readable diff.
+//! representative variants of every kernel, and its GLSL, HLSL and MSL
+//! translations, are committed under `tests/snapshots/`; a change in the
+//! core's math, a template or naga's back ends shows up as a readable diff.
 //! `SLC_BLESS=1 cargo test -p slc-shared-shaders --test snapshots` rewrites
 //! them after a deliberate change.
 
@@ -45,25 +46,42 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
     ]
 }
 
+/// Compares `got` with the snapshot at `path` (or writes it under
+/// `SLC_BLESS`), collecting a readable diff on a mismatch.
+fn compare(path: &std::path::Path, got: &str, bless: bool, failures: &mut Vec<String>) {
+    if bless {
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(path, got).unwrap();
+        return;
+    }
+    let want = std::fs::read_to_string(path).unwrap_or_else(|_| panic!("missing snapshot {}; run with SLC_BLESS=1 to create it", path.display()));
+    if got != want {
+        let diff = similar::TextDiff::from_lines(want.as_str(), got);
+        failures.push(format!("{}:\n{}", path.display(), diff.unified_diff().context_radius(2).header("snapshot", "generated")));
+    }
+}
+
+/// slc-core's shared WGSL library (`library.wgsl`), every variant's WGSL
+/// (`tests/snapshots/`) and, as naga's own tests keep
+/// them, its translations: `glsl/` (one file per entry point), `hlsl/` and
+/// `msl/` (SPIR-V is binary; the tests only check that it is produced).
 #[test]
-fn generated_wgsl_matches_snapshots() {
+fn generated_kernels_match_snapshots() {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/snapshots");
     let bless = std::env::var_os("SLC_BLESS").is_some();
     let mut failures = Vec::new();
+    // The shared library alone: every slc-core function as WGSL.
+    compare(&dir.join("library.wgsl"), &slc_core::wgsl::library(), bless, &mut failures);
     for (name, kernel, features) in variants() {
-        let got = generate(kernel, &features).unwrap();
-        let path = dir.join(format!("{name}.wgsl"));
-        if bless {
-            std::fs::create_dir_all(&dir).unwrap();
-            std::fs::write(&path, &got).unwrap();
-            continue;
+        let g = generate_module(kernel, &features).unwrap();
+        compare(&dir.join(format!("{name}.wgsl")), &g.source, bless, &mut failures);
+        let t = translate(&g).unwrap();
+        for (entry, src) in &t.glsl_entries {
+            let file = if t.glsl_entries.len() > 1 { format!("{name}.{entry}.glsl") } else { format!("{name}.glsl") };
+            compare(&dir.join("glsl").join(file), src, bless, &mut failures);
         }
-        let want =
-            std::fs::read_to_string(&path).unwrap_or_else(|_| panic!("missing snapshot {}; run with SLC_BLESS=1 to create it", path.display()));
-        if got != want {
-            let diff = similar::TextDiff::from_lines(&want, &got);
-            failures.push(format!("{}:\n{}", path.display(), diff.unified_diff().context_radius(2).header("snapshot", "generated")));
-        }
+        compare(&dir.join("hlsl").join(format!("{name}.hlsl")), &t.hlsl, bless, &mut failures);
+        compare(&dir.join("msl").join(format!("{name}.metal")), &t.msl, bless, &mut failures);
     }
-    assert!(failures.is_empty(), "generated WGSL changed (SLC_BLESS=1 to accept):\n{}", failures.join("\n"));
+    assert!(failures.is_empty(), "generated kernels changed (SLC_BLESS=1 to accept):\n{}", failures.join("\n"));
 }
