@@ -82,6 +82,34 @@ fn progress(len: usize) -> Result<ProgressBar, String> {
     Ok(bar)
 }
 
+/// The run with the smallest `key` of `repeat` calls of `render`.
+fn fastest<T>(repeat: u32, mut render: impl FnMut() -> Result<T, String>, key: impl Fn(&T) -> f64) -> Result<T, String> {
+    let mut best: Option<T> = None;
+    for _ in 0..repeat {
+        let f = render()?;
+        if best.as_ref().is_none_or(|b| key(&f) < key(b)) {
+            best = Some(f);
+        }
+    }
+    best.ok_or_else(|| "--repeat must be at least 1".to_string())
+}
+
+/// One configuration's row of a VPL report (loop evaluations per second are
+/// 0 where the backend does not count evaluations).
+fn vpl_run(settings: &VplSettings, param: Option<f32>, st: &slc_scene::vpl::VplStats, rmse: f64, stages: Vec<StageMs>) -> Run {
+    Run {
+        method: settings.method.name().to_string(),
+        param,
+        shading_ms: st.shading_ms,
+        total_ms: st.total_ms,
+        rmse,
+        lights_per_pixel: st.lights_per_pixel,
+        kept_per_pixel: st.kept_per_pixel,
+        evaluations_per_second: st.evaluations as f64 / (st.shading_ms * 1e-3).max(1e-12),
+        stages,
+    }
+}
+
 fn run_label(s: &VplSettings, param: Option<f32>) -> String {
     format!("{} {}", s.method.name(), param.map_or(String::new(), |p| p.to_string()))
 }
@@ -110,25 +138,8 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
     let mut runs = Vec::new();
     for (param, settings) in configs {
         bar.set_message(run_label(&settings, param));
-        let mut best: Option<VplFrame> = None;
-        for _ in 0..a.repeat {
-            let f = ctx.render(&settings).map_err(|e| e.to_string())?;
-            if best.as_ref().is_none_or(|b| f.stats.shading_ms < b.stats.shading_ms) {
-                best = Some(f);
-            }
-        }
-        let f = best.expect("at least one run");
-        runs.push(Run {
-            method: settings.method.name().to_string(),
-            param,
-            shading_ms: f.stats.shading_ms,
-            total_ms: f.stats.total_ms,
-            rmse: f.image.rmse(&reference),
-            lights_per_pixel: f.stats.lights_per_pixel,
-            kept_per_pixel: f.stats.kept_per_pixel,
-            evaluations_per_second: f.stats.evaluations as f64 / (f.stats.shading_ms * 1e-3),
-            stages: Vec::new(),
-        });
+        let f = fastest(a.repeat, || ctx.render(&settings).map_err(|e| e.to_string()), |f: &VplFrame| f.stats.shading_ms)?;
+        runs.push(vpl_run(&settings, param, &f.stats, f.image.rmse(&reference), Vec::new()));
         bar.inc(1);
     }
     bar.finish_and_clear();
@@ -170,28 +181,12 @@ fn run_vpl_gpu(a: BenchArgs) -> Result<(), String> {
     let mut timing = slc_scene::backend::Timing::Wall;
     for (param, settings) in configs {
         bar.set_message(run_label(&settings, param));
-        let mut best: Option<slc_wgpu::frame::FrameRender> = None;
         // One untimed frame first: drivers compile a pipeline at its first use.
         frame.render(&settings).map_err(|e| e.to_string())?;
-        for _ in 0..a.repeat {
-            let f = frame.render(&settings).map_err(|e| e.to_string())?;
-            if best.as_ref().is_none_or(|b| f.stats.shading_ms < b.stats.shading_ms) {
-                best = Some(f);
-            }
-        }
-        let f = best.expect("at least one run");
+        let f = fastest(a.repeat, || frame.render(&settings).map_err(|e| e.to_string()), |f: &slc_wgpu::frame::FrameRender| f.stats.shading_ms)?;
         timing = f.timing;
-        runs.push(Run {
-            method: settings.method.name().to_string(),
-            param,
-            shading_ms: f.stats.shading_ms,
-            total_ms: f.stats.total_ms,
-            rmse: f.image.rmse(&reference),
-            lights_per_pixel: f.stats.lights_per_pixel,
-            kept_per_pixel: f.stats.kept_per_pixel,
-            evaluations_per_second: 0.0,
-            stages: f.stages.iter().map(|s| StageMs { name: s.name.to_string(), ms: s.ms }).collect(),
-        });
+        let stages = f.stages.iter().map(|s| StageMs { name: s.name.to_string(), ms: s.ms }).collect();
+        runs.push(vpl_run(&settings, param, &f.stats, f.image.rmse(&reference), stages));
         bar.inc(1);
     }
     bar.finish_and_clear();

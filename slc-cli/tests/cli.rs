@@ -4,6 +4,8 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+use slc_tests::shared_data as shared;
+
 fn slc(dir: &Path, args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_slc")).args(args).current_dir(dir).output().expect("run slc")
 }
@@ -19,13 +21,6 @@ fn tempdir(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("slc-cli-{name}-{}", std::process::id()));
     std::fs::create_dir_all(&d).unwrap();
     d
-}
-
-/// `../shared/data/<rel>`; missing test data is a failure, not a skip.
-fn shared(rel: &str) -> PathBuf {
-    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data").join(rel);
-    assert!(p.exists(), "test data {} is missing: the tests need ../shared (the team data) beside the checkout", p.display());
-    p
 }
 
 /// README: `cargo run --release -p slc-cli` (no arguments).

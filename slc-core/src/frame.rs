@@ -21,6 +21,14 @@ crate::shared! {
         return to_u32(clamp(floor((a + 1.0) * 0.5 * to_f32(size)), 0.0, to_f32(size) - 1.0));
     }
 
+    /// Depth a light map stores for a point at offset `rel` from the map's
+    /// origin: the distance from the light (perspective map) or the
+    /// distance along the unit `axis` from the map's plane (orthographic).
+    /// The shadow map is written and read with it.
+    pub fn light_map_depth(rel: vec3f, axis: vec3f, perspective: bool) -> f32 {
+        return select(dot(rel, axis), sqrt(dot(rel, rel)), perspective);
+    }
+
     /// Solid angle of a texel of a perspective light map whose texels have
     /// area `texel_area` on the image plane at distance 1, seen at cosine
     /// `cos_axis` from the map's axis: `A·cos³θ` (`A / q^{3/2}` with
@@ -115,6 +123,13 @@ mod tests {
         let d = directional_irradiance(Vec3::splat(2.0), n, Vec3::new(0.0, 0.5f32.sqrt(), 0.5f32.sqrt()));
         assert!((d.x - 2.0 * 0.5f32.sqrt()).abs() < 1e-6);
         assert_eq!(directional_irradiance(Vec3::ONE, n, -Vec3::Y), Vec3::ZERO);
+    }
+
+    #[test]
+    fn map_depth() {
+        let rel = Vec3::new(3.0, 4.0, 0.0);
+        assert_eq!(light_map_depth(rel, Vec3::Y, true), 5.0);
+        assert_eq!(light_map_depth(rel, Vec3::Y, false), 4.0);
     }
 
     #[test]

@@ -95,6 +95,24 @@ impl VplSettings {
 /// Interleaving period (8×8 subsets, as in the paper).
 pub const PERIOD: u32 = 8;
 
+/// Checks what a VPL frame is built for, as every backend's frame does:
+/// the scene, the image size (`1..=16384`), the RSM edge (a positive
+/// multiple of [`PERIOD`] up to 4096, `rsm_size²` VPLs), and the clamp
+/// distance of the VPL fall-off, which it returns (`None`: 1% of the
+/// scene's diagonal; finite and ≥ 0).
+pub fn check_frame(scene: &crate::scene::Scene, width: u32, height: u32, rsm_size: u32, min_distance: Option<f32>) -> Result<f32, RenderError> {
+    scene.validate()?;
+    crate::check_size(width, height)?;
+    if rsm_size == 0 || !rsm_size.is_multiple_of(PERIOD) || rsm_size > 4096 {
+        return Err(RenderError::VplCount((rsm_size as u64).pow(2)));
+    }
+    let min_distance = min_distance.unwrap_or(0.01 * scene.diagonal());
+    if !(min_distance.is_finite() && min_distance >= 0.0) {
+        return Err(RenderError::Setting(format!("min distance {min_distance} must be finite and >= 0")));
+    }
+    Ok(min_distance)
+}
+
 /// Timings (milliseconds) and work counts of one frame.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct VplStats {

@@ -14,12 +14,12 @@
 //! `cargo test` runs it as a test: the image is compared with the CPU
 //! backend's ray-cast frame of the same scene.
 
-use glam::{Mat4, Vec3, Vec4};
+use glam::Vec3;
 use slc_core::light::{Light, PointLight};
 use slc_core::range::RangeParams;
 use slc_scene::image::Image;
 use slc_scene::lights::LightSet;
-use slc_scene::scene::{PrimaryLight, Scene};
+use slc_scene::scene::{LightMap, PrimaryLight, Scene};
 use slc_scene::vpl::{VplMethod, VplSettings};
 use slc_wgpu::GpuContext;
 use slc_wgpu::passes::{
@@ -127,33 +127,6 @@ fn read_rgba32(device: &wgpu::Device, queue: &wgpu::Queue, t: &wgpu::Texture) ->
     bytemuck::cast_slice(&staging.slice(..).get_mapped_range().expect("mapped")).to_vec()
 }
 
-/// Right-handed view matrix looking along `forward` (the basis the CPU's
-/// camera uses: right = forward × up, up = right × forward).
-fn look(eye: Vec3, forward: Vec3, up: Vec3) -> Mat4 {
-    let f = forward.normalize();
-    let r = f.cross(up).normalize();
-    let u = r.cross(f);
-    Mat4::from_cols(
-        Vec4::new(r.x, u.x, -f.x, 0.0),
-        Vec4::new(r.y, u.y, -f.y, 0.0),
-        Vec4::new(r.z, u.z, -f.z, 0.0),
-        Vec4::new(-r.dot(eye), -u.dot(eye), f.dot(eye), 1.0),
-    )
-}
-
-/// Right-handed perspective projection with depth in `[0, 1]` (wgpu's clip
-/// space).
-fn perspective(fovy: f32, aspect: f32, near: f32, far: f32) -> Mat4 {
-    let h = 1.0 / (0.5 * fovy).tan();
-    let r = far / (near - far);
-    Mat4::from_cols(
-        Vec4::new(h / aspect, 0.0, 0.0, 0.0),
-        Vec4::new(0.0, h, 0.0, 0.0),
-        Vec4::new(0.0, 0.0, r, -1.0),
-        Vec4::new(0.0, 0.0, r * near, 0.0),
-    )
-}
-
 /// What the example computes: the composed image, the raw indirect
 /// irradiance (rgb, lights kept) and the small lights' direct irradiance
 /// (rgb, lights in range) per pixel.
@@ -204,10 +177,14 @@ fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: u32)
     });
 
     // Camera and spot light as view-projection matrices.
+    // (glam's camera module: right-handed, depth in [0, 1].)
+    use glam::camera::rh::{proj, view::look_to_mat4};
     let cam = &scene.camera;
-    let proj = perspective(cam.vfov_deg.to_radians(), W as f32 / H as f32, 0.01, 100.0);
+    let (_, cam_up, cam_forward) = cam.basis();
     let camera = Uniforms {
-        view_proj: (proj * look(cam.position, cam.target - cam.position, cam.up)).to_cols_array_2d(),
+        view_proj: (proj::directx::perspective(cam.vfov_deg.to_radians(), W as f32 / H as f32, 0.01, 100.0)
+            * look_to_mat4(cam.position, cam_forward, cam_up))
+        .to_cols_array_2d(),
         eye: cam.position.extend(1.0).to_array(),
         axis: [0.0; 4],
         intensity: [0.0; 4],
@@ -216,16 +193,16 @@ fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: u32)
     let PrimaryLight::Spot { position, direction, intensity, inner, outer } = scene.primary else {
         return Err("this example's RSM is a spot light's".into());
     };
-    let helper = if direction.y.abs() < 0.9 { Vec3::Y } else { Vec3::X };
-    let r = direction.cross(helper).normalize();
-    let up = r.cross(direction);
-    // Row 0 of the RSM at -up, like the CPU's texel order (so both make the
-    // same interleaved subsets): flip y in clip space.
-    let flip = Mat4::from_scale(Vec3::new(1.0, -1.0, 1.0));
-    let light_proj = flip * perspective(2.0 * outer, 1.0, 0.01, 100.0);
+    // The RSM's frame and texel order are slc's LightMap (row 0 toward
+    // −up, so both backends make the same interleaved subsets): the
+    // Y-down (Vulkan-convention) projection puts it there.
+    let LightMap::Perspective { up, .. } = scene.primary.light_map(scene.bounds()) else {
+        return Err("a spot light's map is perspective".into());
+    };
+    let light_proj = proj::vulkan::perspective(2.0 * outer, 1.0, 0.01, 100.0);
     let tan = outer.tan();
     let light = Uniforms {
-        view_proj: (light_proj * look(position, direction, up)).to_cols_array_2d(),
+        view_proj: (light_proj * look_to_mat4(position, direction, up)).to_cols_array_2d(),
         eye: position.extend(1.0).to_array(),
         axis: direction.extend((2.0 * tan / RSM as f32).powi(2)).to_array(),
         intensity: intensity.extend(outer.cos()).to_array(),

@@ -121,38 +121,6 @@ fn target(gpu: &GpuContext, label: &str, (w, h): (u32, u32), format: wgpu::Textu
     Target { texture, view }
 }
 
-/// Right-handed view matrix looking along `forward` with the camera basis
-/// of [`slc_scene::scene::Camera::basis`] (right = forward × up).
-fn look(eye: Vec3, forward: Vec3, up: Vec3) -> Mat4 {
-    let f = forward.normalize();
-    let r = f.cross(up).normalize();
-    let u = r.cross(f);
-    Mat4::from_cols(
-        Vec4::new(r.x, u.x, -f.x, 0.0),
-        Vec4::new(r.y, u.y, -f.y, 0.0),
-        Vec4::new(r.z, u.z, -f.z, 0.0),
-        Vec4::new(-r.dot(eye), -u.dot(eye), f.dot(eye), 1.0),
-    )
-}
-
-/// Right-handed perspective projection, depth in `[0, 1]`, `tan_y` the
-/// tangent of half the vertical field of view.
-fn perspective(tan_y: f32, aspect: f32, near: f32, far: f32) -> Mat4 {
-    let h = 1.0 / tan_y;
-    let r = far / (near - far);
-    Mat4::from_cols(
-        Vec4::new(h / aspect, 0.0, 0.0, 0.0),
-        Vec4::new(0.0, h, 0.0, 0.0),
-        Vec4::new(0.0, 0.0, r, -1.0),
-        Vec4::new(0.0, 0.0, r * near, 0.0),
-    )
-}
-
-/// Map row 0 lies toward `−up` (the CPU's texel order): flip clip-space y.
-fn flip_y() -> Mat4 {
-    Mat4::from_scale(Vec3::new(1.0, -1.0, 1.0))
-}
-
 fn tex(t: &Target) -> wgpu::BindingResource<'_> {
     wgpu::BindingResource::TextureView(&t.view)
 }
@@ -197,18 +165,9 @@ impl<'a> GpuVplFrame<'a> {
     /// Validates the scene and sizes as the CPU's frame does, uploads the
     /// triangles and materials, and builds the pipelines and targets.
     pub fn new(gpu: &'a GpuContext, scene: &Scene, desc: &FrameDesc) -> Result<Self, GpuError> {
-        let setting = |e: &dyn std::fmt::Display| GpuError::Setting(e.to_string());
-        scene.validate().map_err(|e| setting(&e))?;
-        slc_scene::check_size(desc.width, desc.height).map_err(|e| setting(&e))?;
-        let size = desc.rsm_size;
-        if size == 0 || !size.is_multiple_of(PERIOD) || size > 4096 {
-            return Err(setting(&slc_scene::RenderError::VplCount((size as u64).pow(2))));
-        }
-        let diag = scene.diagonal();
-        let min_distance = desc.min_distance.unwrap_or(0.01 * diag);
-        if !(min_distance.is_finite() && min_distance >= 0.0) {
-            return Err(GpuError::Setting(format!("min distance {min_distance} must be finite and >= 0")));
-        }
+        let min_distance = slc_scene::vpl::check_frame(scene, desc.width, desc.height, desc.rsm_size, desc.min_distance)
+            .map_err(|e| GpuError::Setting(e.to_string()))?;
+        let (size, diag) = (desc.rsm_size, scene.diagonal());
         let (w, h) = (desc.width, desc.height);
         let lim = &gpu.limits;
         let shadow = desc.shadow_size;
@@ -250,12 +209,14 @@ impl<'a> GpuVplFrame<'a> {
             let far = (p - centre).length() + radius;
             (((p - centre).length() - radius) * 0.9).max(far * 1e-3)..far * 1.01
         };
-        let perspective_from = |p: Vec3, tan_y: f32, aspect: f32| {
-            let r = range_of(p);
-            perspective(tan_y, aspect, r.start, r.end)
-        };
-        let tan_y = (cam.vfov_deg.to_radians() * 0.5).tan();
-        let camera_vp = perspective_from(cam.position, tan_y, w as f32 / h as f32) * look(cam.position, cam.target - cam.position, cam.up);
+        // Views and projections from glam's camera module: right-handed,
+        // depth in [0, 1]; the light maps in the Y-down convention, so map
+        // row 0 lies toward −up (the CPU's texel order).
+        use glam::camera::rh::{proj, view::look_to_mat4};
+        let (_, cam_up, cam_forward) = cam.basis();
+        let r = range_of(cam.position);
+        let camera_vp = proj::directx::perspective(cam.vfov_deg.to_radians(), w as f32 / h as f32, r.start, r.end)
+            * look_to_mat4(cam.position, cam_forward, cam_up);
         let map = scene.primary.light_map((lo, hi));
         let light = match scene.primary {
             PrimaryLight::Spot { position, direction, intensity, .. } => {
@@ -277,16 +238,13 @@ impl<'a> GpuVplFrame<'a> {
         };
         let (light_vp, origin, axis, right, up, extent, mode) = match map {
             LightMap::Perspective { origin, axis, right, up, tan } => {
-                (flip_y() * perspective_from(origin, tan, 1.0) * look(origin, axis, up), origin, axis, right, up, tan, MAP_PERSPECTIVE)
+                let r = range_of(origin);
+                let vp = proj::vulkan::perspective(2.0 * tan.atan(), 1.0, r.start, r.end) * look_to_mat4(origin, axis, up);
+                (vp, origin, axis, right, up, tan, MAP_PERSPECTIVE)
             }
             LightMap::Orthographic { origin, axis, right, up, half } => {
-                let ortho = Mat4::from_cols(
-                    Vec4::new(1.0 / half, 0.0, 0.0, 0.0),
-                    Vec4::new(0.0, 1.0 / half, 0.0, 0.0),
-                    Vec4::new(0.0, 0.0, -1.0 / (4.0 * half), 0.0),
-                    Vec4::W,
-                );
-                (flip_y() * ortho * look(origin, axis, up), origin, axis, right, up, half, MAP_ORTHOGRAPHIC)
+                let vp = proj::vulkan::orthographic(-half, half, -half, half, 0.0, 4.0 * half) * look_to_mat4(origin, axis, up);
+                (vp, origin, axis, right, up, half, MAP_ORTHOGRAPHIC)
             }
         };
         let texel = (2.0 * extent / size as f32).powi(2);

@@ -55,15 +55,7 @@ impl VplContext {
     /// `1..=16384`. `min_distance` is the clamp distance of the VPL fall-off
     /// (`None`: 1% of the scene's diagonal).
     pub fn new(scene: &Scene, width: u32, height: u32, rsm_size: u32, min_distance: Option<f32>) -> Result<Self, RenderError> {
-        scene.validate()?;
-        slc_scene::check_size(width, height)?;
-        if rsm_size == 0 || !rsm_size.is_multiple_of(PERIOD) || rsm_size > 4096 {
-            return Err(RenderError::VplCount((rsm_size as u64).pow(2)));
-        }
-        let min_distance = min_distance.unwrap_or(0.01 * scene.diagonal());
-        if !(min_distance.is_finite() && min_distance >= 0.0) {
-            return Err(RenderError::Setting(format!("min distance {min_distance} must be finite and >= 0")));
-        }
+        let min_distance = slc_scene::vpl::check_frame(scene, width, height, rsm_size, min_distance)?;
         let mut base = VplStats::default();
         let t = Instant::now();
         let geo = Geometry::new(&scene.triangles);

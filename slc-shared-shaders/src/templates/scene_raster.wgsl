@@ -68,6 +68,5 @@ fn fs_rsm(v: VsOut) -> RsmOut {
 /// the map's plane (orthographic).
 @fragment
 fn fs_shadow(v: VsOut) -> @location(0) vec4f {
-    let rel = v.world - params.origin;
-    return vec4f(select(dot(rel, params.axis), length(rel), params.mode == MAP_PERSPECTIVE), 0.0, 0.0, 0.0);
+    return vec4f(light_map_depth(v.world - params.origin, params.axis, params.mode == MAP_PERSPECTIVE), 0.0, 0.0, 0.0);
 }

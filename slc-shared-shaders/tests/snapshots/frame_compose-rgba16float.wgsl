@@ -508,6 +508,9 @@ fn light_map_coord(t: u32, size: u32) -> f32 {
 fn light_map_texel(a: f32, size: u32) -> u32 {
     return to_u32(clamp(floor((a + 1.0) * 0.5 * to_f32(size)), 0.0, to_f32(size) - 1.0));
 }
+fn light_map_depth(rel: vec3f, axis: vec3f, perspective: bool) -> f32 {
+    return select(dot(rel, axis), sqrt(dot(rel, rel)), perspective);
+}
 fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
     return texel_area * cos_axis * cos_axis * cos_axis;
 }

@@ -508,6 +508,9 @@ fn light_map_coord(t: u32, size: u32) -> f32 {
 fn light_map_texel(a: f32, size: u32) -> u32 {
     return to_u32(clamp(floor((a + 1.0) * 0.5 * to_f32(size)), 0.0, to_f32(size) - 1.0));
 }
+fn light_map_depth(rel: vec3f, axis: vec3f, perspective: bool) -> f32 {
+    return select(dot(rel, axis), sqrt(dot(rel, rel)), perspective);
+}
 fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
     return texel_area * cos_axis * cos_axis * cos_axis;
 }
@@ -588,28 +591,27 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var e = vec3f(0.0);
     var a = 0.0;
     var b = 0.0;
-    // Distance along the map's ray, the texel's width there, the light's cosine.
-    var d = 0.0;
+    // Depth along the map's ray (what the shadow map holds), the texel's
+    // width there, the light's cosine.
+    let rel = x - params.origin;
+    let d = light_map_depth(rel, params.axis, params.mode == MAP_PERSPECTIVE);
     var width = 0.0;
     var cos_light = 0.0;
     if params.mode == MAP_PERSPECTIVE {
-        let v = params.origin - x;
-        d = length(v);
-        let z = -dot(v, params.axis);
+        let v = -rel;
+        let z = dot(rel, params.axis);
         if z <= 0.0 || d <= 0.0 {
             direct[i] = vec4f(0.0);
             return;
         }
-        a = -dot(v, params.right) / (z * params.extent);
-        b = -dot(v, params.up) / (z * params.extent);
+        a = dot(rel, params.right) / (z * params.extent);
+        b = dot(rel, params.up) / (z * params.extent);
         width = 2.0 * params.extent * d * d / (size * z);
         cos_light = dot(n, v) / d;
-        e = point_irradiance(light_intensity(params.light, -v / d), n, v);
+        e = point_irradiance(light_intensity(params.light, rel / d), n, v);
     } else {
-        let rel = x - params.origin;
         a = dot(rel, params.right) / params.extent;
         b = dot(rel, params.up) / params.extent;
-        d = dot(rel, params.axis);
         width = 2.0 * params.extent / size;
         cos_light = -dot(n, params.axis);
         e = directional_irradiance(params.light.intensity, n, -params.axis);

@@ -46,7 +46,7 @@
 //! # Ok(()) }
 //! ```
 
-use super::{FLOAT_INPUTS, check_view};
+use super::{check_gbuffer, check_view, output_format};
 use crate::direct::reservoir_pipeline;
 use crate::kernel::{B, layout, pipeline, zeroed};
 use crate::lights::{GpuLightSet, WG};
@@ -55,7 +55,7 @@ use glam::Vec3;
 use slc_core::range::RangeParams;
 use slc_scene::lights::LightSet;
 use slc_shared_shaders::layout::{ImageParams, ShadeParams};
-use slc_shared_shaders::{Features, Kernel, OutputFormat, generate};
+use slc_shared_shaders::{Features, Kernel, generate};
 use wgpu::util::DeviceExt;
 
 /// Tile edge of the 2-D kernels, in pixels.
@@ -120,13 +120,7 @@ impl DirectPass {
         if w == 0 || h == 0 {
             return Err(GpuError::Setting(format!("direct pass: image size {w}×{h} must be non-zero")));
         }
-        let output = match desc.output_format {
-            wgpu::TextureFormat::Rgba16Float => OutputFormat::Rgba16Float,
-            wgpu::TextureFormat::Rgba32Float => OutputFormat::Rgba32Float,
-            f => {
-                return Err(GpuError::Binding { name: "output_format", expected: "Rgba16Float or Rgba32Float".into(), found: format!("{f:?}") });
-            }
-        };
+        let output = output_format(desc.output_format)?;
         let pixels = w as u64 * h as u64;
         let lim = &gpu.limits;
         gpu.require("max_storage_buffer_binding_size (G-buffer)", pixels * 16, lim.max_storage_buffer_binding_size)?;
@@ -198,9 +192,7 @@ impl DirectPass {
     /// Checks `inputs` against the descriptor (formats, sizes, usages).
     pub fn check(&self, inputs: &DirectInputs) -> Result<(), GpuError> {
         let size = (self.desc.width, self.desc.height);
-        let tex = wgpu::TextureUsages::TEXTURE_BINDING;
-        check_view("G-buffer position", inputs.position, size, &FLOAT_INPUTS, tex)?;
-        check_view("G-buffer normal", inputs.normal, size, &FLOAT_INPUTS, tex)?;
+        check_gbuffer(inputs.position, inputs.normal, size)?;
         check_view("output", inputs.output, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)
     }
 

@@ -54,13 +54,13 @@
 //! # Ok(()) }
 //! ```
 
-use super::{Dispatch, FLOAT_INPUTS, check_view};
+use super::{Dispatch, FLOAT_INPUTS, check_gbuffer, check_view, output_format};
 use crate::kernel::{B, layout, pipeline, storage, zeroed};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use slc_scene::vpl::{PERIOD, VplMethod, VplSettings};
 use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuVplRecord, ImageParams, PackParams, VplParams};
-use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, OutputFormat, VplSource, generate};
+use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, VplSource, generate};
 use wgpu::util::DeviceExt;
 
 /// Tile edge of the 2-D kernels, in pixels.
@@ -191,13 +191,7 @@ impl IndirectPass {
             VplSourceDesc::Rsm { .. } => (desc.vpls.count(), VplSource::Rsm),
             VplSourceDesc::Buffer { .. } => (desc.vpls.count(), VplSource::Buffer),
         };
-        let output = match desc.output_format {
-            wgpu::TextureFormat::Rgba16Float => OutputFormat::Rgba16Float,
-            wgpu::TextureFormat::Rgba32Float => OutputFormat::Rgba32Float,
-            f => {
-                return Err(GpuError::Binding { name: "output_format", expected: "Rgba16Float or Rgba32Float".into(), found: format!("{f:?}") });
-            }
-        };
+        let output = output_format(desc.output_format)?;
         let lim = &gpu.limits;
         let max_binding = lim.max_storage_buffer_binding_size;
         gpu.require("max_storage_buffer_binding_size (G-buffer)", w as u64 * h as u64 * 16, max_binding)?;
@@ -270,8 +264,7 @@ impl IndirectPass {
     pub fn check(&self, inputs: &IndirectInputs) -> Result<(), GpuError> {
         let size = (self.desc.width, self.desc.height);
         let tex = wgpu::TextureUsages::TEXTURE_BINDING;
-        check_view("G-buffer position", inputs.position, size, &FLOAT_INPUTS, tex)?;
-        check_view("G-buffer normal", inputs.normal, size, &FLOAT_INPUTS, tex)?;
+        check_gbuffer(inputs.position, inputs.normal, size)?;
         check_view("output", inputs.output, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)?;
         match (inputs.vpls, self.desc.vpls) {
             (VplInput::Rsm { position, normal, flux }, VplSourceDesc::Rsm { size }) => {

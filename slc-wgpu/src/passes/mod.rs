@@ -58,6 +58,24 @@ pub(crate) fn check_view(
     Ok(())
 }
 
+/// Checks an engine's G-buffer views: position and normal, `size`, a float
+/// format, `TEXTURE_BINDING`.
+pub(crate) fn check_gbuffer(position: &wgpu::TextureView, normal: &wgpu::TextureView, size: (u32, u32)) -> Result<(), GpuError> {
+    let tex = wgpu::TextureUsages::TEXTURE_BINDING;
+    check_view("G-buffer position", position, size, &FLOAT_INPUTS, tex)?;
+    check_view("G-buffer normal", normal, size, &FLOAT_INPUTS, tex)
+}
+
+/// The kernels' output format for a pass's `output_format`:
+/// `Rgba16Float` or `Rgba32Float`, else a [`GpuError::Binding`].
+pub(crate) fn output_format(f: wgpu::TextureFormat) -> Result<slc_shared_shaders::OutputFormat, GpuError> {
+    match f {
+        wgpu::TextureFormat::Rgba16Float => Ok(slc_shared_shaders::OutputFormat::Rgba16Float),
+        wgpu::TextureFormat::Rgba32Float => Ok(slc_shared_shaders::OutputFormat::Rgba32Float),
+        f => Err(GpuError::Binding { name: "output_format", expected: "Rgba16Float or Rgba32Float".into(), found: format!("{f:?}") }),
+    }
+}
+
 /// One recorded dispatch of a pass: its stage name, pipeline, bind group
 /// (group 0) and workgroup counts.
 pub(crate) struct Dispatch<'a> {

@@ -285,17 +285,17 @@ float sphere_pad(float r_1, vec3 c_1) {
 vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
     bool local_4 = false;
     vec3 v_4 = (c2_1 - c1_1);
-    float d_3 = sqrt(dot(v_4, v_4));
+    float d_2 = sqrt(dot(v_4, v_4));
     float _e8 = sphere_pad(r1_1, c1_1);
-    if ((r1_1 >= ((d_3 + r2_3) + _e8))) {
+    if ((r1_1 >= ((d_2 + r2_3) + _e8))) {
         return vec4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     float _e16 = sphere_pad(r2_3, c2_1);
-    if ((r2_3 >= ((d_3 + r1_1) + _e16))) {
+    if ((r2_3 >= ((d_2 + r1_1) + _e16))) {
         return vec4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_3 >= SPHERE_HUGE))) {
-        local_4 = ((0.5 * ((d_3 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if (!((d_2 >= SPHERE_HUGE))) {
+        local_4 = ((0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local_4 = true;
     }
@@ -303,18 +303,18 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
     if (_e35) {
         return vec4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if ((abs((r1_1 - r2_3)) >= d_3)) {
+    if ((abs((r1_1 - r2_3)) >= d_2)) {
         if ((r1_1 >= r2_3)) {
-            float rn = max(r1_1, (d_3 + r2_3));
+            float rn = max(r1_1, (d_2 + r2_3));
             float _e50 = sphere_pad(rn, c1_1);
             return vec4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        float rm = max(r2_3, (d_3 + r1_1));
+        float rm = max(r2_3, (d_2 + r1_1));
         float _e58 = sphere_pad(rm, c2_1);
         return vec4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    float r0_ = (0.5 * ((d_3 + r1_1) + r2_3));
-    vec3 c_9 = (c1_1 + (v_4 * ((r0_ - r1_1) / d_3)));
+    float r0_ = (0.5 * ((d_2 + r1_1) + r2_3));
+    vec3 c_9 = (c1_1 + (v_4 * ((r0_ - r1_1) / d_2)));
     vec3 e1_ = (c_9 - c1_1);
     vec3 e2_ = (c_9 - c2_1);
     float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
@@ -593,13 +593,13 @@ vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_4, vec3 facing) {
     return ((dot(n_12, facing) < 0.0) ? -(n_12) : n_12);
 }
 
-float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_8, vec3 b_7, vec3 c_8, float t_min, float t_max_1) {
+float ray_triangle(vec3 o_1, vec3 d, vec3 a_8, vec3 b_7, vec3 c_8, float t_min, float t_max_1) {
     bool local_8 = false;
     bool local_9 = false;
     bool local_10 = false;
     vec3 e1_2 = (b_7 - a_8);
     vec3 e2_2 = (c_8 - a_8);
-    vec3 p_1 = cross(d_1, e2_2);
+    vec3 p_1 = cross(d, e2_2);
     float det = dot(e1_2, p_1);
     if ((abs(det) <= 0.0)) {
         return -1.0;
@@ -617,7 +617,7 @@ float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_8, vec3 b_7, vec3 c_8, float t_min
         return -1.0;
     }
     vec3 q_3 = cross(s_1, e1_2);
-    float v_6 = (dot(d_1, q_3) * inv);
+    float v_6 = (dot(d, q_3) * inv);
     if (!((v_6 < 0.0))) {
         local_9 = ((u_2 + v_6) > 1.0);
     } else {
@@ -704,8 +704,8 @@ float bilateral_weight(vec3 n_8, vec3 nj, float z, float zj, float inv_sz) {
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
-    float d_4 = ((zj - z) * inv_sz);
-    float t_5 = max((1.0 - (d_4 * d_4)), 0.0);
+    float d_3 = ((zj - z) * inv_sz);
+    float t_5 = max((1.0 - (d_3 * d_3)), 0.0);
     return (((dn8_ * dn8_) * t_5) * t_5);
 }
 
@@ -747,6 +747,10 @@ uint light_map_texel(float a_9, uint size_2) {
     return _e14;
 }
 
+float light_map_depth(vec3 rel, vec3 axis, bool perspective) {
+    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis));
+}
+
 float rsm_texel_solid_angle(float texel_area, float cos_axis) {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
@@ -767,10 +771,10 @@ float shadow_bias(float texel, float cos_light_2) {
     return (texel * (1.5 + (sqrt((1.0 - (c_11 * c_11))) / c_11)));
 }
 
-bool shadow_lit(float d_2, float d_map, float bias) {
+bool shadow_lit(float d_1, float d_map, float bias) {
     bool local_13 = false;
     if (!((d_map <= 0.0))) {
-        local_13 = (d_2 <= (d_map + bias));
+        local_13 = (d_1 <= (d_map + bias));
     } else {
         local_13 = true;
     }
@@ -813,7 +817,6 @@ void main() {
     vec3 e = vec3(0.0);
     float a = 0.0;
     float b = 0.0;
-    float d = 0.0;
     float width = 0.0;
     float cos_light = 0.0;
     bool local_2 = false;
@@ -849,89 +852,82 @@ void main() {
     vec3 n_13 = normalize(nn);
     uint _e55 = _group_0_binding_0_cs.size;
     float size_3 = float(_e55);
-    uint _e72 = _group_0_binding_0_cs.mode;
-    if ((_e72 == MAP_PERSPECTIVE)) {
-        vec3 _e77 = _group_0_binding_0_cs.origin;
-        vec3 v_7 = (_e77 - x_8);
-        d = length(v_7);
-        vec3 _e82 = _group_0_binding_0_cs.axis;
-        float z_2 = -(dot(v_7, _e82));
+    vec3 _e66 = _group_0_binding_0_cs.origin;
+    vec3 rel_1 = (x_8 - _e66);
+    vec3 _e70 = _group_0_binding_0_cs.axis;
+    uint _e73 = _group_0_binding_0_cs.mode;
+    float _e76 = light_map_depth(rel_1, _e70, (_e73 == MAP_PERSPECTIVE));
+    uint _e83 = _group_0_binding_0_cs.mode;
+    if ((_e83 == MAP_PERSPECTIVE)) {
+        vec3 v_7 = -(rel_1);
+        vec3 _e89 = _group_0_binding_0_cs.axis;
+        float z_2 = dot(rel_1, _e89);
         if (!((z_2 <= 0.0))) {
-            float _e90 = d;
-            local_2 = (_e90 <= 0.0);
+            local_2 = (_e76 <= 0.0);
         } else {
             local_2 = true;
         }
-        bool _e94 = local_2;
-        if (_e94) {
+        bool _e99 = local_2;
+        if (_e99) {
             _group_0_binding_5_cs[i_2] = vec4(0.0);
             return;
         }
-        vec3 _e101 = _group_0_binding_0_cs.right;
-        float _e106 = _group_0_binding_0_cs.extent;
-        a = (-(dot(v_7, _e101)) / (z_2 * _e106));
-        vec3 _e111 = _group_0_binding_0_cs.up;
-        float _e116 = _group_0_binding_0_cs.extent;
-        b = (-(dot(v_7, _e111)) / (z_2 * _e116));
-        float _e121 = _group_0_binding_0_cs.extent;
-        float _e124 = d;
-        float _e126 = d;
-        width = ((((2.0 * _e121) * _e124) * _e126) / (size_3 * z_2));
-        float _e131 = d;
-        cos_light = (dot(n_13, v_7) / _e131);
+        vec3 _e106 = _group_0_binding_0_cs.right;
+        float _e110 = _group_0_binding_0_cs.extent;
+        a = (dot(rel_1, _e106) / (z_2 * _e110));
+        vec3 _e115 = _group_0_binding_0_cs.up;
+        float _e119 = _group_0_binding_0_cs.extent;
+        b = (dot(rel_1, _e115) / (z_2 * _e119));
+        float _e124 = _group_0_binding_0_cs.extent;
+        width = ((((2.0 * _e124) * _e76) * _e76) / (size_3 * z_2));
+        cos_light = (dot(n_13, v_7) / _e76);
         GpuLight _e135 = _group_0_binding_0_cs.light;
-        float _e137 = d;
-        vec3 _e140 = light_intensity(_e135, (-(v_7) / vec3(_e137)));
-        vec3 _e141 = point_irradiance(_e140, n_13, v_7);
-        e = _e141;
+        vec3 _e138 = light_intensity(_e135, (rel_1 / vec3(_e76)));
+        vec3 _e139 = point_irradiance(_e138, n_13, v_7);
+        e = _e139;
     } else {
-        vec3 _e144 = _group_0_binding_0_cs.origin;
-        vec3 rel = (x_8 - _e144);
-        vec3 _e148 = _group_0_binding_0_cs.right;
-        float _e152 = _group_0_binding_0_cs.extent;
-        a = (dot(rel, _e148) / _e152);
-        vec3 _e156 = _group_0_binding_0_cs.up;
-        float _e160 = _group_0_binding_0_cs.extent;
-        b = (dot(rel, _e156) / _e160);
+        vec3 _e142 = _group_0_binding_0_cs.right;
+        float _e146 = _group_0_binding_0_cs.extent;
+        a = (dot(rel_1, _e142) / _e146);
+        vec3 _e150 = _group_0_binding_0_cs.up;
+        float _e154 = _group_0_binding_0_cs.extent;
+        b = (dot(rel_1, _e150) / _e154);
+        float _e158 = _group_0_binding_0_cs.extent;
+        width = ((2.0 * _e158) / size_3);
         vec3 _e164 = _group_0_binding_0_cs.axis;
-        d = dot(rel, _e164);
-        float _e168 = _group_0_binding_0_cs.extent;
-        width = ((2.0 * _e168) / size_3);
-        vec3 _e174 = _group_0_binding_0_cs.axis;
-        cos_light = -(dot(n_13, _e174));
-        vec3 _e180 = _group_0_binding_0_cs.light.intensity;
-        vec3 _e183 = _group_0_binding_0_cs.axis;
-        vec3 _e185 = directional_irradiance(_e180, n_13, -(_e183));
-        e = _e185;
+        cos_light = -(dot(n_13, _e164));
+        vec3 _e170 = _group_0_binding_0_cs.light.intensity;
+        vec3 _e173 = _group_0_binding_0_cs.axis;
+        vec3 _e175 = directional_irradiance(_e170, n_13, -(_e173));
+        e = _e175;
     }
-    float _e186 = a;
-    if ((abs(_e186) <= 1.0)) {
-        float _e192 = b;
-        local_3 = (abs(_e192) <= 1.0);
+    float _e176 = a;
+    if ((abs(_e176) <= 1.0)) {
+        float _e182 = b;
+        local_3 = (abs(_e182) <= 1.0);
     } else {
         local_3 = false;
     }
-    bool _e197 = local_3;
-    if (_e197) {
-        float _e199 = a;
-        uint _e202 = _group_0_binding_0_cs.size;
-        uint _e203 = light_map_texel(_e199, _e202);
-        float _e205 = b;
-        uint _e208 = _group_0_binding_0_cs.size;
-        uint _e209 = light_map_texel(_e205, _e208);
-        vec4 _e213 = texelFetch(_group_0_binding_4_cs, ivec2(int(_e203), int(_e209)), 0);
-        float d_map_1 = _e213.x;
-        float _e215 = d;
-        float _e216 = width;
-        float _e217 = cos_light;
-        float _e218 = shadow_bias(_e216, _e217);
-        bool _e219 = shadow_lit(_e215, d_map_1, _e218);
-        if (!(_e219)) {
+    bool _e187 = local_3;
+    if (_e187) {
+        float _e189 = a;
+        uint _e192 = _group_0_binding_0_cs.size;
+        uint _e193 = light_map_texel(_e189, _e192);
+        float _e195 = b;
+        uint _e198 = _group_0_binding_0_cs.size;
+        uint _e199 = light_map_texel(_e195, _e198);
+        vec4 _e203 = texelFetch(_group_0_binding_4_cs, ivec2(int(_e193), int(_e199)), 0);
+        float d_map_1 = _e203.x;
+        float _e205 = width;
+        float _e206 = cos_light;
+        float _e207 = shadow_bias(_e205, _e206);
+        bool _e208 = shadow_lit(_e76, d_map_1, _e207);
+        if (!(_e208)) {
             e = vec3(0.0);
         }
     }
-    vec3 _e225 = e;
-    _group_0_binding_5_cs[i_2] = vec4(_e225, 0.0);
+    vec3 _e214 = e;
+    _group_0_binding_5_cs[i_2] = vec4(_e214, 0.0);
     return;
 }
 

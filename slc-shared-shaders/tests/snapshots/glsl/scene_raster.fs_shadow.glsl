@@ -754,6 +754,10 @@ uint light_map_texel(float a_8, uint size_2) {
     return _e14;
 }
 
+float light_map_depth(vec3 rel, vec3 axis, bool perspective) {
+    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis));
+}
+
 float rsm_texel_solid_angle(float texel_area, float cos_axis) {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
@@ -822,10 +826,10 @@ vec3 seen_normal(VsOut v_5, vec3 dir_2) {
 void main() {
     VsOut v_2 = VsOut(gl_FragCoord, _vs2fs_location0, _vs2fs_location1, _vs2fs_location2, _vs2fs_location3);
     vec3 _e4 = _group_0_binding_0_fs.origin;
-    vec3 rel = (v_2.world - _e4);
     vec3 _e8 = _group_0_binding_0_fs.axis;
-    uint _e13 = _group_0_binding_0_fs.mode;
-    _fs2p_location0 = vec4(((_e13 == MAP_PERSPECTIVE) ? length(rel) : dot(rel, _e8)), 0.0, 0.0, 0.0);
+    uint _e11 = _group_0_binding_0_fs.mode;
+    float _e14 = light_map_depth((v_2.world - _e4), _e8, (_e11 == MAP_PERSPECTIVE));
+    _fs2p_location0 = vec4(_e14, 0.0, 0.0, 0.0);
     return;
 }
 

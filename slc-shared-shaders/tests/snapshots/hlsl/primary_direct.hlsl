@@ -322,17 +322,17 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
     bool local_4 = (bool)0;
 
     float3 v_4 = (c2_1 - c1_1);
-    float d_3 = sqrt(dot(v_4, v_4));
+    float d_2 = sqrt(dot(v_4, v_4));
     const float _e8 = sphere_pad(r1_1, c1_1);
-    if ((r1_1 >= ((d_3 + r2_3) + _e8))) {
+    if ((r1_1 >= ((d_2 + r2_3) + _e8))) {
         return float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     const float _e16 = sphere_pad(r2_3, c2_1);
-    if ((r2_3 >= ((d_3 + r1_1) + _e16))) {
+    if ((r2_3 >= ((d_2 + r1_1) + _e16))) {
         return float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_3 >= SPHERE_HUGE))) {
-        local_4 = ((0.5 * ((d_3 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if (!((d_2 >= SPHERE_HUGE))) {
+        local_4 = ((0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local_4 = true;
     }
@@ -340,18 +340,18 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
     if (_e35) {
         return float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if ((abs((r1_1 - r2_3)) >= d_3)) {
+    if ((abs((r1_1 - r2_3)) >= d_2)) {
         if ((r1_1 >= r2_3)) {
-            float rn = max(r1_1, (d_3 + r2_3));
+            float rn = max(r1_1, (d_2 + r2_3));
             const float _e50 = sphere_pad(rn, c1_1);
             return float4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        float rm = max(r2_3, (d_3 + r1_1));
+        float rm = max(r2_3, (d_2 + r1_1));
         const float _e58 = sphere_pad(rm, c2_1);
         return float4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    float r0_ = (0.5 * ((d_3 + r1_1) + r2_3));
-    float3 c_9 = (c1_1 + (v_4 * ((r0_ - r1_1) / d_3)));
+    float r0_ = (0.5 * ((d_2 + r1_1) + r2_3));
+    float3 c_9 = (c1_1 + (v_4 * ((r0_ - r1_1) / d_2)));
     float3 e1_ = (c_9 - c1_1);
     float3 e2_ = (c_9 - c2_1);
     float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
@@ -749,7 +749,7 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_4, float3 fac
     return ((dot(n_12, facing) < 0.0) ? -(n_12) : n_12);
 }
 
-float ray_triangle(float3 o_1, float3 d_1, float3 a_8, float3 b_7, float3 c_8, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d, float3 a_8, float3 b_7, float3 c_8, float t_min, float t_max_1)
 {
     bool local_8 = (bool)0;
     bool local_9 = (bool)0;
@@ -757,7 +757,7 @@ float ray_triangle(float3 o_1, float3 d_1, float3 a_8, float3 b_7, float3 c_8, f
 
     float3 e1_2 = (b_7 - a_8);
     float3 e2_2 = (c_8 - a_8);
-    float3 p_1 = cross(d_1, e2_2);
+    float3 p_1 = cross(d, e2_2);
     float det = dot(e1_2, p_1);
     if ((abs(det) <= 0.0)) {
         return -1.0;
@@ -775,7 +775,7 @@ float ray_triangle(float3 o_1, float3 d_1, float3 a_8, float3 b_7, float3 c_8, f
         return -1.0;
     }
     float3 q_3 = cross(s_1, e1_2);
-    float v_6 = (dot(d_1, q_3) * inv);
+    float v_6 = (dot(d, q_3) * inv);
     if (!((v_6 < 0.0))) {
         local_9 = ((u_2 + v_6) > 1.0);
     } else {
@@ -870,8 +870,8 @@ float bilateral_weight(float3 n_8, float3 nj, float z, float zj, float inv_sz)
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
-    float d_4 = ((zj - z) * inv_sz);
-    float t_5 = max((1.0 - (d_4 * d_4)), 0.0);
+    float d_3 = ((zj - z) * inv_sz);
+    float t_5 = max((1.0 - (d_3 * d_3)), 0.0);
     return (((dn8_ * dn8_) * t_5) * t_5);
 }
 
@@ -928,6 +928,11 @@ uint light_map_texel(float a_9, uint size_2)
     return _e14;
 }
 
+float light_map_depth(float3 rel, float3 axis, bool perspective)
+{
+    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis));
+}
+
 float rsm_texel_solid_angle(float texel_area, float cos_axis)
 {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
@@ -952,12 +957,12 @@ float shadow_bias(float texel, float cos_light_2)
     return (texel * (1.5 + (sqrt((1.0 - (c_12 * c_12))) / c_12)));
 }
 
-bool shadow_lit(float d_2, float d_map, float bias)
+bool shadow_lit(float d_1, float d_map, float bias)
 {
     bool local_13 = (bool)0;
 
     if (!((d_map <= 0.0))) {
-        local_13 = (d_2 <= (d_map + bias));
+        local_13 = (d_1 <= (d_map + bias));
     } else {
         local_13 = true;
     }
@@ -1006,7 +1011,6 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 e = (0.0).xxx;
     float a = 0.0;
     float b = 0.0;
-    float d = 0.0;
     float width = 0.0;
     float cos_light = 0.0;
     bool local_2 = (bool)0;
@@ -1043,88 +1047,81 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 n_13 = normalize(nn);
     uint _e55 = params.size;
     float size_3 = float(_e55);
-    uint _e72 = params.mode;
-    if ((_e72 == MAP_PERSPECTIVE)) {
-        float3 _e77 = params.origin;
-        float3 v_7 = (_e77 - x_8);
-        d = length(v_7);
-        float3 _e82 = params.axis;
-        float z_2 = -(dot(v_7, _e82));
+    float3 _e66 = params.origin;
+    float3 rel_1 = (x_8 - _e66);
+    float3 _e70 = params.axis;
+    uint _e73 = params.mode;
+    const float _e76 = light_map_depth(rel_1, _e70, (_e73 == MAP_PERSPECTIVE));
+    uint _e83 = params.mode;
+    if ((_e83 == MAP_PERSPECTIVE)) {
+        float3 v_7 = -(rel_1);
+        float3 _e89 = params.axis;
+        float z_2 = dot(rel_1, _e89);
         if (!((z_2 <= 0.0))) {
-            float _e90 = d;
-            local_2 = (_e90 <= 0.0);
+            local_2 = (_e76 <= 0.0);
         } else {
             local_2 = true;
         }
-        bool _e94 = local_2;
-        if (_e94) {
+        bool _e99 = local_2;
+        if (_e99) {
             direct.Store4(i_2*16, asuint((0.0).xxxx));
             return;
         }
-        float3 _e101 = params.right;
-        float _e106 = params.extent;
-        a = (-(dot(v_7, _e101)) / (z_2 * _e106));
-        float3 _e111 = params.up;
-        float _e116 = params.extent;
-        b = (-(dot(v_7, _e111)) / (z_2 * _e116));
-        float _e121 = params.extent;
-        float _e124 = d;
-        float _e126 = d;
-        width = ((((2.0 * _e121) * _e124) * _e126) / (size_3 * z_2));
-        float _e131 = d;
-        cos_light = (dot(n_13, v_7) / _e131);
+        float3 _e106 = params.right;
+        float _e110 = params.extent;
+        a = (dot(rel_1, _e106) / (z_2 * _e110));
+        float3 _e115 = params.up;
+        float _e119 = params.extent;
+        b = (dot(rel_1, _e115) / (z_2 * _e119));
+        float _e124 = params.extent;
+        width = ((((2.0 * _e124) * _e76) * _e76) / (size_3 * z_2));
+        cos_light = (dot(n_13, v_7) / _e76);
         GpuLight _e135 = params.light;
-        float _e137 = d;
-        const float3 _e140 = light_intensity(_e135, (-(v_7) / (_e137).xxx));
-        const float3 _e141 = point_irradiance(_e140, n_13, v_7);
-        e = _e141;
+        const float3 _e138 = light_intensity(_e135, (rel_1 / (_e76).xxx));
+        const float3 _e139 = point_irradiance(_e138, n_13, v_7);
+        e = _e139;
     } else {
-        float3 _e144 = params.origin;
-        float3 rel = (x_8 - _e144);
-        float3 _e148 = params.right;
-        float _e152 = params.extent;
-        a = (dot(rel, _e148) / _e152);
-        float3 _e156 = params.up;
-        float _e160 = params.extent;
-        b = (dot(rel, _e156) / _e160);
+        float3 _e142 = params.right;
+        float _e146 = params.extent;
+        a = (dot(rel_1, _e142) / _e146);
+        float3 _e150 = params.up;
+        float _e154 = params.extent;
+        b = (dot(rel_1, _e150) / _e154);
+        float _e158 = params.extent;
+        width = ((2.0 * _e158) / size_3);
         float3 _e164 = params.axis;
-        d = dot(rel, _e164);
-        float _e168 = params.extent;
-        width = ((2.0 * _e168) / size_3);
-        float3 _e174 = params.axis;
-        cos_light = -(dot(n_13, _e174));
-        float3 _e180 = params.light.intensity;
-        float3 _e183 = params.axis;
-        const float3 _e185 = directional_irradiance(_e180, n_13, -(_e183));
-        e = _e185;
+        cos_light = -(dot(n_13, _e164));
+        float3 _e170 = params.light.intensity;
+        float3 _e173 = params.axis;
+        const float3 _e175 = directional_irradiance(_e170, n_13, -(_e173));
+        e = _e175;
     }
-    float _e186 = a;
-    if ((abs(_e186) <= 1.0)) {
-        float _e192 = b;
-        local_3 = (abs(_e192) <= 1.0);
+    float _e176 = a;
+    if ((abs(_e176) <= 1.0)) {
+        float _e182 = b;
+        local_3 = (abs(_e182) <= 1.0);
     } else {
         local_3 = false;
     }
-    bool _e197 = local_3;
-    if (_e197) {
-        float _e199 = a;
-        uint _e202 = params.size;
-        const uint _e203 = light_map_texel(_e199, _e202);
-        float _e205 = b;
-        uint _e208 = params.size;
-        const uint _e209 = light_map_texel(_e205, _e208);
-        float4 _e213 = shadow_map.Load(int3(int2(int(_e203), int(_e209)), int(0)));
-        float d_map_1 = _e213.x;
-        float _e215 = d;
-        float _e216 = width;
-        float _e217 = cos_light;
-        const float _e218 = shadow_bias(_e216, _e217);
-        const bool _e219 = shadow_lit(_e215, d_map_1, _e218);
-        if (!(_e219)) {
+    bool _e187 = local_3;
+    if (_e187) {
+        float _e189 = a;
+        uint _e192 = params.size;
+        const uint _e193 = light_map_texel(_e189, _e192);
+        float _e195 = b;
+        uint _e198 = params.size;
+        const uint _e199 = light_map_texel(_e195, _e198);
+        float4 _e203 = shadow_map.Load(int3(int2(int(_e193), int(_e199)), int(0)));
+        float d_map_1 = _e203.x;
+        float _e205 = width;
+        float _e206 = cos_light;
+        const float _e207 = shadow_bias(_e205, _e206);
+        const bool _e208 = shadow_lit(_e76, d_map_1, _e207);
+        if (!(_e208)) {
             e = (0.0).xxx;
         }
     }
-    float3 _e225 = e;
-    direct.Store4(i_2*16, asuint(float4(_e225, 0.0)));
+    float3 _e214 = e;
+    direct.Store4(i_2*16, asuint(float4(_e214, 0.0)));
     return;
 }

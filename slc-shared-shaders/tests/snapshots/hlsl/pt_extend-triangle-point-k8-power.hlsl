@@ -942,6 +942,11 @@ uint light_map_texel(float a_8, uint size_2)
     return _e14;
 }
 
+float light_map_depth(float3 rel, float3 axis, bool perspective)
+{
+    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis));
+}
+
 float rsm_texel_solid_angle(float texel_area, float cos_axis)
 {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);

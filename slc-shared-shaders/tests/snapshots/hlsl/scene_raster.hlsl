@@ -975,6 +975,11 @@ uint light_map_texel(float a_8, uint size_2)
     return _e14;
 }
 
+float light_map_depth(float3 rel, float3 axis, bool perspective)
+{
+    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis));
+}
+
 float rsm_texel_solid_angle(float texel_area, float cos_axis)
 {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
@@ -1134,8 +1139,8 @@ float4 fs_shadow(FragmentInput_fs_shadow fragmentinput_fs_shadow) : SV_Target0
 {
     VsOut v_2 = { fragmentinput_fs_shadow.clip_3, fragmentinput_fs_shadow.world_3, fragmentinput_fs_shadow.normal_4, fragmentinput_fs_shadow.geo_4, fragmentinput_fs_shadow.material_4 };
     float3 _e4 = params.origin;
-    float3 rel = (v_2.world - _e4);
     float3 _e8 = params.axis;
-    uint _e13 = params.mode;
-    return float4(((_e13 == MAP_PERSPECTIVE) ? length(rel) : dot(rel, _e8)), 0.0, 0.0, 0.0);
+    uint _e11 = params.mode;
+    const float _e14 = light_map_depth((v_2.world - _e4), _e8, (_e11 == MAP_PERSPECTIVE));
+    return float4(_e14, 0.0, 0.0, 0.0);
 }

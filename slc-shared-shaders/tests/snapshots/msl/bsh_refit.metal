@@ -1100,6 +1100,14 @@ uint light_map_texel(
     return _e14;
 }
 
+float light_map_depth(
+    metal::float3 rel,
+    metal::float3 axis,
+    bool perspective
+) {
+    return perspective ? metal::sqrt(metal::dot(rel, rel)) : metal::dot(rel, axis);
+}
+
 float rsm_texel_solid_angle(
     float texel_area,
     float cos_axis

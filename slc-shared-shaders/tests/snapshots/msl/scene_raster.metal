@@ -1112,6 +1112,14 @@ uint light_map_texel(
     return _e14;
 }
 
+float light_map_depth(
+    metal::float3 rel,
+    metal::float3 axis,
+    bool perspective
+) {
+    return perspective ? metal::sqrt(metal::dot(rel, rel)) : metal::dot(rel, axis);
+}
+
 float rsm_texel_solid_angle(
     float texel_area,
     float cos_axis
@@ -1331,8 +1339,8 @@ fragment fs_shadowOutput fs_shadow(
 ) {
     const VsOut v_2 = { clip_2, varyings_3.world, varyings_3.normal_1, varyings_3.geo_1, varyings_3.material_1 };
     metal::float3 _e4 = params.origin;
-    metal::float3 rel = v_2.world - _e4;
     metal::float3 _e8 = params.axis;
-    uint _e13 = params.mode;
-    return fs_shadowOutput { metal::float4((_e13 == MAP_PERSPECTIVE) ? metal::length(rel) : metal::dot(rel, _e8), 0.0, 0.0, 0.0) };
+    uint _e11 = params.mode;
+    float _e14 = light_map_depth(v_2.world - _e4, _e8, _e11 == MAP_PERSPECTIVE);
+    return fs_shadowOutput { metal::float4(_e14, 0.0, 0.0, 0.0) };
 }
