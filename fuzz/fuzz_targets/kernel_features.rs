@@ -36,7 +36,7 @@ fuzz_target!(|i: Input| {
         max_tile_lights: i.max_tile_lights as u32,
         method: [CullMethod::Slc, CullMethod::Clamp, CullMethod::None][i.method as usize % 3],
         heuristic: if i.heuristic { Heuristic::Balance } else { Heuristic::Power },
-        selection: [Selection::Reservoir, Selection::All, Selection::Uniform, Selection::Power][i.selection as usize % 4],
+        selection: [Selection::Reservoir, Selection::All, Selection::Uniform, Selection::Power, Selection::Weighted][i.selection as usize % 5],
         vpl_source: if i.rsm { VplSource::Rsm } else { VplSource::Buffer },
         output_format: if i.rgba32 { OutputFormat::Rgba32Float } else { OutputFormat::Rgba16Float },
         shadows: i.shadows,

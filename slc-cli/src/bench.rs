@@ -300,14 +300,7 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
             bar.set_position(k as u64 * tenths + ((acc.time_ms / 100.0) as u64).min(tenths));
         }
         let last = *series.last().expect("at least one pass");
-        runs.push(PtRun {
-            method: method.name().into(),
-            param: matches!(method, PtMethod::Slc | PtMethod::SlcReservoir).then_some(eps),
-            time_ms: last.0,
-            spp: last.1,
-            rmse: last.2,
-            series,
-        });
+        runs.push(PtRun { method: method.name().into(), param: method.culls().then_some(eps), time_ms: last.0, spp: last.1, rmse: last.2, series });
     }
     bar.finish_and_clear();
     let report = PtReport {

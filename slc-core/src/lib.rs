@@ -52,6 +52,7 @@ pub mod denoise;
 pub mod estimator;
 pub mod frame;
 pub mod ies;
+pub mod importance;
 pub mod interleave;
 pub mod light;
 pub mod mis;

@@ -67,6 +67,13 @@ crate::shared! {
     pub fn weighted_replace(w: f32, w_sum: f32, u: f32) -> bool {
         return u * w_sum < w;
     }
+
+    /// Estimator weight of a pick of weight `w` among `k` independent
+    /// weighted slots over candidates weighing `w_sum`: `W/(k·w)`, the
+    /// inverse of its expected count.
+    pub fn weighted_pick_weight(w_sum: f32, w: f32, k: u32) -> f32 {
+        return w_sum / (to_f32(k) * w);
+    }
 }
 
 /// Algorithm R with `K` slots.
@@ -161,8 +168,7 @@ impl<const K: usize> WeightedReservoir<K> {
     /// Each slot's item and its weight `W/(K·wᵢ)`; empty before any push.
     pub fn picks(&self) -> impl Iterator<Item = (u32, f32)> + '_ {
         let w = self.w_sum;
-        let k = K as f32;
-        self.slots.iter().filter(move |_| w > 0.0).map(move |&(i, wi)| (i, w / (k * wi)))
+        self.slots.iter().filter(move |_| w > 0.0).map(move |&(i, wi)| (i, weighted_pick_weight(w, wi, K as u32)))
     }
 }
 

@@ -66,6 +66,9 @@ fn library_validates_with_naga() {
         "mis_balance",
         "mis_power",
         "cosine_pdf",
+        "light_importance",
+        "candidate_weight",
+        "weighted_select_pdf",
     ] {
         assert!(names.iter().any(|n| n == f), "{f} missing from the WGSL library");
     }

@@ -6,6 +6,7 @@ use crate::alias::AliasTable;
 use crate::scene::Scene;
 use glam::Vec3;
 use slc_core::bsh::Bsh;
+use slc_core::importance::LightCone;
 use slc_core::light::{Light, LightBound, TriangleLight, emitted_powers};
 
 /// Reservoir slots of the direct-light shader (the GPU kernel's `k`).
@@ -32,6 +33,8 @@ pub struct LightSet {
     /// Emitted power per light ([`Light::power`]).
     power: Vec<Vec3>,
     alias: AliasTable,
+    /// Each light's importance bounds (`slc-weighted`, the light BVH).
+    cones: Vec<LightCone>,
 }
 
 impl LightSet {
@@ -44,7 +47,8 @@ impl LightSet {
         let bsh = Bsh::build(&bounds).map_err(|e| RenderError::Setting(e.to_string()))?;
         let power = emitted_powers(&lights);
         let alias = AliasTable::new(&power.iter().map(|p| p.max_element() as f64).collect::<Vec<f64>>());
-        Ok(LightSet { lights, bounds, bsh, power, alias })
+        let cones = lights.iter().zip(&power).map(|(l, &p)| LightCone::of_light(l, p)).collect();
+        Ok(LightSet { lights, bounds, bsh, power, alias, cones })
     }
 
     /// Number of lights.
@@ -82,6 +86,21 @@ impl LightSet {
     /// [`LightSet::power`]).
     pub fn alias(&self) -> &AliasTable {
         &self.alias
+    }
+
+    /// Each light's importance bounds ([`LightCone::of_light`] of its
+    /// power), read by `slc-weighted` on both backends.
+    pub fn cones(&self) -> &[LightCone] {
+        &self.cones
+    }
+
+    /// The cones as the GPU reads them, three `vec4f` per light:
+    /// `(centre, radius)`, `(axis, cos θ_o)`, `(φ, cos θ_e, 0, 0)`.
+    pub fn cone_table(&self) -> Vec<[f32; 4]> {
+        self.cones
+            .iter()
+            .flat_map(|c| [c.center.extend(c.radius).to_array(), c.axis.extend(c.cos_o).to_array(), [c.phi, c.cos_e, 0.0, 0.0]])
+            .collect()
     }
 
     /// The alias table per light as the GPU reads it:

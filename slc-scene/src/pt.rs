@@ -13,6 +13,9 @@ use slc_core::light::Light;
 /// Reservoir slots of `slc-reservoir`.
 pub const RESERVOIR_K: usize = 8;
 
+/// Independent weighted picks of `slc-weighted` (one shadow ray each).
+pub const WEIGHTED_K: usize = 2;
+
 /// Light selection for next-event estimation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum PtMethod {
@@ -20,6 +23,10 @@ pub enum PtMethod {
     Slc,
     /// Stochastic light culling with a k-slot reservoir over the candidates.
     SlcReservoir,
+    /// Stochastic light culling with [`WEIGHTED_K`] picks among the
+    /// candidates, each in proportion to its importance over its roulette
+    /// probability (`slc_core::importance`; beyond the paper).
+    SlcWeighted,
     /// One light, uniformly.
     Uniform,
     /// One light, in proportion to its power.
@@ -34,6 +41,7 @@ impl PtMethod {
         match self {
             PtMethod::Slc => "slc",
             PtMethod::SlcReservoir => "slc-reservoir",
+            PtMethod::SlcWeighted => "slc-weighted",
             PtMethod::Uniform => "uniform",
             PtMethod::Power => "power",
             PtMethod::LightBvh => "lightbvh",
@@ -41,7 +49,13 @@ impl PtMethod {
     }
 
     /// Every method, in report order.
-    pub const ALL: [PtMethod; 5] = [PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::Uniform, PtMethod::Power, PtMethod::LightBvh];
+    pub const ALL: [PtMethod; 6] =
+        [PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::SlcWeighted, PtMethod::Uniform, PtMethod::Power, PtMethod::LightBvh];
+
+    /// Whether the method culls by stochastic ranges (and so has ε).
+    pub fn culls(self) -> bool {
+        matches!(self, PtMethod::Slc | PtMethod::SlcReservoir | PtMethod::SlcWeighted)
+    }
 }
 
 /// Settings of a path-traced render.

@@ -118,6 +118,10 @@ slc_core::shared! {
         pub prev: vec3f,
         /// Padding.
         pub pad: u32,
+        /// Shading normal at `prev` (`slc-weighted`'s weights use it).
+        pub prev_normal: vec3f,
+        /// Padding.
+        pub pad2: u32,
     }
 
     /// Uniforms of `pt_extend`: camera, image, pass and depth.

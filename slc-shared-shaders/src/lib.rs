@@ -370,6 +370,10 @@ pub enum Selection {
     /// One light in proportion to its power, from the alias table in
     /// `power_table` (baseline).
     Power,
+    /// Stochastic light culling: `k` independent weighted picks among the
+    /// in-range lights, each candidate weighted by its importance over its
+    /// roulette probability (`slc-weighted`; cones in `light_cones`).
+    Weighted,
 }
 
 /// Where `vpl_pack` reads its VPLs.
@@ -563,6 +567,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         Selection::All => "all",
         Selection::Uniform => "uniform",
         Selection::Power => "power",
+        Selection::Weighted => "weighted",
     };
     let ctx = context! {
         kernel => kernel.name(),

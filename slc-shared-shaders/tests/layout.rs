@@ -25,7 +25,7 @@ fn rust_twins_match_naga_layout() {
         fields!(GpuLight, p0, kind, p1, a, p2, b, intensity, ies_base),
         fields!(GpuGeoNode, bmin, first, bmax, count),
         fields!(GpuTriangle, v0, material, v1, light, v2, pad),
-        fields!(GpuPathState, origin, alive, dir, rng, beta, pdf_bsdf, prev, pad),
+        fields!(GpuPathState, origin, alive, dir, rng, beta, pdf_bsdf, prev, pad, prev_normal, pad2),
         fields!(PtParams, cam_pos, width, cam_right, height, cam_up, depth, cam_forward, seed, pass_index, max_depth, eps, t_min),
         fields!(GpuPathVertex, position, alive, normal, pad, weight, pad1, gnormal, pad2),
         fields!(FrameParams, light_count, seed, frame, pad),

@@ -17,8 +17,18 @@ fn every_bsh_variant_validates() {
         let lights = LightSet::from_bits(bits);
         for k in [1, 8, 32] {
             for heuristic in [Heuristic::Balance, Heuristic::Power] {
-                for kernel in [Kernel::BshReservoir, Kernel::PtConnect, Kernel::PtExtend] {
-                    let f = Features { lights, reservoir_k: k, heuristic, ..Features::default() };
+                for (kernel, selection) in [
+                    (Kernel::BshReservoir, Selection::Reservoir),
+                    (Kernel::PtConnect, Selection::Reservoir),
+                    (Kernel::PtConnect, Selection::All),
+                    (Kernel::PtConnect, Selection::Weighted),
+                    (Kernel::PtConnect, Selection::Uniform),
+                    (Kernel::PtConnect, Selection::Power),
+                    (Kernel::PtExtend, Selection::Reservoir),
+                    (Kernel::PtExtend, Selection::Weighted),
+                    (Kernel::PtExtend, Selection::Power),
+                ] {
+                    let f = Features { lights, reservoir_k: k, heuristic, selection, ..Features::default() };
                     let g = generate_module(kernel, &f).unwrap_or_else(|e| panic!("{:?} {f:?}: {e}", kernel));
                     // Only the scene's light types are compiled in.
                     for (name, case) in [
@@ -42,7 +52,7 @@ fn every_bsh_variant_validates() {
             n += 1;
         }
     }
-    assert_eq!(n, 31 * 3 * 2 * 3 + 8);
+    assert_eq!(n, 31 * 3 * 2 * 9 + 8);
 }
 
 #[test]

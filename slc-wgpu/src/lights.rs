@@ -71,7 +71,8 @@ pub(crate) struct GpuLightSet {
     refit_params: UniformSlots,
     update: (wgpu::ComputePipeline, wgpu::BindGroup),
     refit: (wgpu::ComputePipeline, wgpu::BindGroup),
-    /// Group 1 of every kernel: the IES table and the power alias table.
+    /// Group 1 of every kernel: the IES table, the power alias table and the
+    /// importance cones.
     pub(crate) table_layout: wgpu::BindGroupLayout,
     /// Group 1 with the IES table only (binding 0), for `bsh_reservoir`.
     pub(crate) ies_layout: wgpu::BindGroupLayout,
@@ -82,9 +83,17 @@ pub(crate) struct GpuLightSet {
 
 impl GpuLightSet {
     /// Uploads `lights` (with their `bounds`, the `bsh` built over them and
-    /// the path tracer's `power` alias table, which may be empty) after
-    /// checking the buffer and dispatch limits.
-    pub(crate) fn new(gpu: &GpuContext, lights: &[Light], bounds: &[LightBound], bsh: &Bsh, power: &[[f32; 4]]) -> Result<GpuLightSet, GpuError> {
+    /// the path tracer's `power` alias table and importance `cones`
+    /// ([`slc_scene::lights::LightSet::cone_table`]), either of which may
+    /// be empty) after checking the buffer and dispatch limits.
+    pub(crate) fn new(
+        gpu: &GpuContext,
+        lights: &[Light],
+        bounds: &[LightBound],
+        bsh: &Bsh,
+        power: &[[f32; 4]],
+        cones: &[[f32; 4]],
+    ) -> Result<GpuLightSet, GpuError> {
         let n = lights.len() as u64;
         let lim = &gpu.limits;
         gpu.require("max_storage_buffer_binding_size (lights)", n * 64, lim.max_storage_buffer_binding_size)?;
@@ -96,7 +105,9 @@ impl GpuLightSet {
         let extent: Vec<f32> = bounds.iter().map(|b| b.extent).collect();
         let lights_buf = s("lights", bytemuck::cast_slice(&gpu_lights));
         let table_buf = s("slc_table", bytemuck::cast_slice(&table));
-        let power_buf = s("power_table", bytemuck::cast_slice(if power.is_empty() { &[[0.0f32; 4]][..] } else { power }));
+        let or_one = |t: &'_ [[f32; 4]]| if t.is_empty() { vec![[0.0f32; 4]] } else { t.to_vec() };
+        let power_buf = s("power_table", bytemuck::cast_slice(&or_one(power)));
+        let cones_buf = s("light_cones", bytemuck::cast_slice(&or_one(cones)));
         let ids_buf = s("ids", bytemuck::cast_slice(&ids));
         let extent_buf = s("extent", bytemuck::cast_slice(&extent));
         let rt2 = zeroed(gpu, "rt2", n * 4, wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST);
@@ -117,7 +128,7 @@ impl GpuLightSet {
                 },
                 count: None,
             };
-            gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some("scene tables"), entries: &[e(0), e(1)] })
+            gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some("scene tables"), entries: &[e(0), e(1), e(2)] })
         };
         // The IES table alone, for kernels that do not read the power table
         // (one storage binding fewer, within WebGPU's default 8 per stage).
@@ -145,6 +156,7 @@ impl GpuLightSet {
             entries: &[
                 wgpu::BindGroupEntry { binding: 0, resource: table_buf.as_entire_binding() },
                 wgpu::BindGroupEntry { binding: 1, resource: power_buf.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 2, resource: cones_buf.as_entire_binding() },
             ],
         });
         let features = Features { workgroup_size: WG, ..Features::default() };

@@ -11,9 +11,10 @@
 //!    sampled point, shadow ray, MIS whose light pdf includes p_rr).
 //!
 //! The methods are `slc-reservoir` with k = [`RESERVOIR_K`] and the power
-//! heuristic, exactly as the CPU's [`PtMethod::SlcReservoir`], and the
-//! plain `slc` (every in-range light), and the `uniform` and `power`
-//! baselines (one light; ranges +∞); the two
+//! heuristic, exactly as the CPU's [`PtMethod::SlcReservoir`], the
+//! importance-weighted `slc-weighted` (k = [`WEIGHTED_K`]), the plain `slc`
+//! (every in-range light), and the `uniform` and `power` baselines (one
+//! light; ranges +∞); the two
 //! backends draw their per-path random numbers differently, so they agree in
 //! expectation (the tests crate checks it), not pixel by pixel.
 
@@ -26,7 +27,7 @@ use obvhs::bvh2::builder::build_bvh2_from_tris;
 use obvhs::triangle::Triangle;
 use slc_core::range::RangeParams;
 use slc_scene::backend::{PathTracer, Timing};
-use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K};
+use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K, WEIGHTED_K};
 use slc_shared_shaders::layout::{GpuGeoNode, GpuPathState, GpuPathVertex, GpuTriangle, NO_LIGHT, PtParams, ShadeParams};
 use slc_shared_shaders::{Features, Heuristic, Kernel, Selection, generate};
 use std::time::{Duration, Instant};
@@ -81,12 +82,14 @@ fn geometry(pts: &PtScene) -> (Vec<GpuGeoNode>, Vec<GpuTriangle>, Vec<[f32; 4]>,
     (nodes, gpu_tris, normals, depth)
 }
 
-/// The methods the GPU path tracer runs, with their light selection.
-const SELECTIONS: [(PtMethod, Selection); 4] = [
-    (PtMethod::SlcReservoir, Selection::Reservoir),
-    (PtMethod::Slc, Selection::All),
-    (PtMethod::Uniform, Selection::Uniform),
-    (PtMethod::Power, Selection::Power),
+/// The methods the GPU path tracer runs, with their light selection and
+/// its `k`.
+const SELECTIONS: [(PtMethod, Selection, usize); 5] = [
+    (PtMethod::SlcReservoir, Selection::Reservoir, RESERVOIR_K),
+    (PtMethod::SlcWeighted, Selection::Weighted, WEIGHTED_K),
+    (PtMethod::Slc, Selection::All, RESERVOIR_K),
+    (PtMethod::Uniform, Selection::Uniform, RESERVOIR_K),
+    (PtMethod::Power, Selection::Power, RESERVOIR_K),
 ];
 
 /// A kernel's pipeline per method, and its bind group.
@@ -123,15 +126,15 @@ impl<'a> GpuPt<'a> {
         let lim = &gpu.limits;
         let max_binding = lim.max_storage_buffer_binding_size;
         gpu.require("max_storage_buffer_binding_size (geometry)", geo_tris.len() as u64 * 48, max_binding)?;
-        gpu.require("max_storage_buffer_binding_size (path states)", pixels * 64, max_binding)?;
-        gpu.require("max_storage_buffers_per_shader_stage", 13, lim.max_storage_buffers_per_shader_stage as u64)?;
+        gpu.require("max_storage_buffer_binding_size (path states)", pixels * std::mem::size_of::<GpuPathState>() as u64, max_binding)?;
+        // pt_extend: 12 in group 0, the IES, power and cone tables in group 1.
+        gpu.require("max_storage_buffers_per_shader_stage", 15, lim.max_storage_buffers_per_shader_stage as u64)?;
         gpu.require("max_storage_buffer_binding_size (vertex normals)", geo_tris.len() as u64 * 48, max_binding)?;
         gpu.require("max_compute_workgroups_per_dimension (pixels)", pixels.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
         gpu.require("geometry BVH depth (64-entry traversal stack)", geo_depth, MAX_GEO_DEPTH)?;
         let ls = pts.light_set();
-        let set = GpuLightSet::new(gpu, ls.lights(), ls.bounds(), ls.bsh(), &ls.power_table())?;
-        let base =
-            Features { lights: set.types, reservoir_k: RESERVOIR_K as u32, workgroup_size: WG, heuristic: Heuristic::Power, ..Features::default() };
+        let set = GpuLightSet::new(gpu, ls.lights(), ls.bounds(), ls.bsh(), &ls.power_table(), &ls.cone_table())?;
+        let base = Features { lights: set.types, workgroup_size: WG, heuristic: Heuristic::Power, ..Features::default() };
         let s = |label: &str, bytes: &[u8]| storage(gpu, label, bytes, wgpu::BufferUsages::empty());
         let geo_nodes_buf = s("geo nodes", bytemuck::cast_slice(&geo_nodes));
         let geo_tris_buf = s("geo tris", bytemuck::cast_slice(&geo_tris));
@@ -151,7 +154,10 @@ impl<'a> GpuPt<'a> {
             let layout = bind_layout(gpu, k.name(), reads, writes, true);
             let pipelines = SELECTIONS
                 .iter()
-                .map(|&(m, selection)| Ok((m, pipeline(gpu, k.name(), generate(k, &Features { selection, ..base })?, &[&layout, &set.table_layout]))))
+                .map(|&(m, selection, k_slots)| {
+                    let f = Features { selection, reservoir_k: k_slots as u32, ..base };
+                    Ok((m, pipeline(gpu, k.name(), generate(k, &f)?, &[&layout, &set.table_layout])))
+                })
                 .collect::<Result<Vec<_>, GpuError>>()?;
             let bg = bind_group(gpu, k.name(), &layout, bufs, Some(uniform));
             Ok::<_, GpuError>((pipelines, bg))
@@ -215,7 +221,7 @@ impl<'a> GpuPt<'a> {
         let pick = |k: &'b Kernels| k.0.iter().find(|(m, _)| *m == s.method).map(|(_, p)| p);
         let (Some(extend), Some(connect)) = (pick(&self.extend), pick(&self.connect)) else {
             return Err(GpuError::Setting(format!(
-                "GPU path tracing runs slc, slc-reservoir (k = {RESERVOIR_K}), uniform and power; method {} runs with --backend cpu",
+                "GPU path tracing runs slc, slc-reservoir (k = {RESERVOIR_K}), slc-weighted (k = {WEIGHTED_K}), uniform and power; method {} runs with --backend cpu",
                 s.method.name()
             )));
         };
@@ -229,7 +235,7 @@ impl<'a> GpuPt<'a> {
         let _busy = self.busy.lock().map_err(|_| GpuError::Device("a previous render panicked".into()))?;
         let gpu = self.gpu;
         // The baselines cull nothing: r_t² = +∞ makes p = 1 and r² = +∞.
-        self.set.set_threshold(gpu, matches!(s.method, PtMethod::Slc | PtMethod::SlcReservoir).then_some(&params));
+        self.set.set_threshold(gpu, s.method.culls().then_some(&params));
         let pixels = self.width * self.height;
         let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("clear") });
         enc.clear_buffer(&self.radiance, 0, None);
@@ -309,7 +315,7 @@ impl PathTracer for GpuPt<'_> {
     }
 
     fn supports(&self, method: PtMethod) -> bool {
-        SELECTIONS.iter().any(|&(m, _)| m == method)
+        SELECTIONS.iter().any(|&(m, _, _)| m == method)
     }
 
     fn render(&mut self, acc: &mut PtRender, settings: &PtSettings, passes: u32) -> Result<Timing, GpuError> {

@@ -113,7 +113,7 @@ fn run(method: PtMethod, eps: f32, intensity: f32, n: u32) -> Option<(Stats, Sta
 /// estimator: same image mean, images within the variance bound, and the
 /// same mean as the CPU's unculled estimator.
 fn gpu_path_tracer_matches_cpu_and_unculled_in_expectation() {
-    for method in [PtMethod::SlcReservoir, PtMethod::Slc, PtMethod::Uniform, PtMethod::Power] {
+    for method in [PtMethod::SlcReservoir, PtMethod::SlcWeighted, PtMethod::Slc, PtMethod::Uniform, PtMethod::Power] {
         let Some((g, c, u)) = run(method, 0.05, 1.0, 400) else { return };
         let name = method.name();
         assert!(g.image_mean > 0.0);

@@ -15,6 +15,7 @@
 //! heuristic over 12 buckets per axis, one light per leaf.
 
 use glam::Vec3;
+use slc_core::importance::{LightCone, light_importance, safe_sqrt};
 use slc_core::light::Light;
 use std::f32::consts::PI;
 
@@ -35,20 +36,6 @@ pub struct LightBounds {
     pub cos_e: f32,
 }
 
-/// `cos(a − b)` clamped to 1 when `a < b` (pbrt-v4 `cosSubClamped`).
-fn cos_sub(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
-    if cos_a > cos_b { 1.0 } else { cos_a * cos_b + sin_a * sin_b }
-}
-
-/// `sin(a − b)` clamped to 0 when `a < b` (pbrt-v4 `sinSubClamped`).
-fn sin_sub(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
-    if cos_a > cos_b { 0.0 } else { sin_a * cos_b - cos_a * sin_b }
-}
-
-fn safe_sqrt(x: f32) -> f32 {
-    x.max(0.0).sqrt()
-}
-
 impl LightBounds {
     /// Bounds of one light of emitted power `power` ([`Light::power`], the
     /// formula power sampling uses too): a triangle's AABB and normal
@@ -61,21 +48,15 @@ impl LightBounds {
     /// alike, at the price of under-weighting a narrow spot or a peaked IES
     /// light inside its beam, relative to pbrt.
     pub fn of_light(l: &Light, power: Vec3) -> LightBounds {
-        let phi = power.max_element();
-        let point = |p: Vec3, w: Vec3, cos_o: f32, cos_e: f32| LightBounds { min: p, max: p, phi, w, cos_o, cos_e };
-        match l {
+        let c = LightCone::of_light(l, power);
+        let (min, max) = match l {
             Light::Triangle(t) => {
                 let [a, b, c] = t.vertices();
-                LightBounds { min: a.min(b).min(c), max: a.max(b).max(c), phi, w: t.normal(), cos_o: 1.0, cos_e: 0.0 }
+                (a.min(b).min(c), a.max(b).max(c))
             }
-            Light::Spot(s) => {
-                let (cos_outer, cos_inner) = s.cone_cosines();
-                let cos_e = (cos_outer.clamp(-1.0, 1.0).acos() - cos_inner.clamp(-1.0, 1.0).acos()).cos();
-                point(s.position(), s.direction(), cos_inner, cos_e)
-            }
-            Light::Vpl(v) => LightBounds { min: v.position(), max: v.position(), phi, w: v.normal(), cos_o: 1.0, cos_e: 0.0 },
-            Light::Point(_) | Light::Ies(_) => point(l.bound().center, Vec3::Z, -1.0, 0.0),
-        }
+            _ => (c.center, c.center),
+        };
+        LightBounds { min, max, phi: c.phi, w: c.axis, cos_o: c.cos_o, cos_e: c.cos_e }
     }
 
     fn centroid(&self) -> Vec3 {
@@ -96,41 +77,15 @@ impl LightBounds {
         LightBounds { min: self.min.min(o.min), max: self.max.max(o.max), phi: self.phi + o.phi, w, cos_o, cos_e: self.cos_e.min(o.cos_e) }
     }
 
-    /// Importance at point `p` with surface normal `n` (pbrt-v4
-    /// `LightBounds::Importance`): `φ · cos θ' / max(d², |diag|/2)`, where
-    /// `θ'` is the angle from `p` to the normal cone, widened by the angle
-    /// the box subtends, and 0 outside the emission spread; times the
-    /// receiver's widened `cos θ'_i`.
+    /// Importance at point `p` with surface normal `n` (zero: none):
+    /// slc-core's [`light_importance`] over the box's bounding sphere
+    /// (pbrt-v4 `LightBounds::Importance`, whose distance clamp is
+    /// `max(d², |diagonal|/2)`, a squared distance against a length; slc
+    /// clamps with the squared radius). The receiver is one-sided, where
+    /// pbrt-v4 takes `|cos θ_i|` for transmissive surfaces: slc's surfaces
+    /// only reflect, so the baseline gets that advantage too.
     pub fn importance(&self, p: Vec3, n: Vec3) -> f32 {
-        let pc = self.centroid();
-        let diag = (self.max - self.min).length();
-        let dist2 = p.distance_squared(pc);
-        // pbrt-v4 clamps `d² = max(d², |diagonal| / 2)`: a squared distance
-        // against an unsquared length, which depends on the scene's units.
-        // The intent is "no closer than the box's radius", so slc clamps
-        // with the squared radius `(|diagonal| / 2)²`.
-        let d2 = dist2.max(0.25 * diag * diag);
-        let wi = (p - pc).normalize_or_zero();
-        let cos_w = self.w.dot(wi);
-        let sin_w = safe_sqrt(1.0 - cos_w * cos_w);
-        // Cone of directions the box subtends from p (its bounding sphere).
-        let r2 = 0.25 * diag * diag;
-        let cos_b = if dist2 < r2 { -1.0 } else { safe_sqrt(1.0 - r2 / dist2) };
-        let sin_b = safe_sqrt(1.0 - cos_b * cos_b);
-        let sin_o = safe_sqrt(1.0 - self.cos_o * self.cos_o);
-        let cos_x = cos_sub(sin_w, cos_w, sin_o, self.cos_o);
-        let sin_x = sin_sub(sin_w, cos_w, sin_o, self.cos_o);
-        let cos_p = cos_sub(sin_x, cos_x, sin_b, cos_b);
-        if cos_p <= self.cos_e {
-            return 0.0;
-        }
-        let mut imp = self.phi * cos_p / d2;
-        if n != Vec3::ZERO {
-            let cos_i = wi.dot(n).abs();
-            let sin_i = safe_sqrt(1.0 - cos_i * cos_i);
-            imp *= cos_sub(sin_i, cos_i, sin_b, cos_b);
-        }
-        if imp.is_finite() { imp.max(0.0) } else { 0.0 }
+        light_importance(self.centroid(), 0.5 * (self.max - self.min).length(), self.phi, self.w, self.cos_o, self.cos_e, p, n)
     }
 
     /// pbrt-v4's `EvaluateCost`: `φ · M_Ω · K_r · area`, with the

@@ -12,6 +12,11 @@
 //!   light's ξ at `|x − y|`, and a kept light is weighted by `1/p`.
 //! - `slc-reservoir`: the same candidates streamed through a k-slot
 //!   reservoir (weight `n/k`), exactly as the GPU kernel does.
+//! - `slc-weighted`: the same candidates, each with weight `wᵢ = ĝᵢ/pᵢ`
+//!   (its importance at `x` over its roulette probability,
+//!   [`slc_core::importance`]), streamed through `k` independent one-slot
+//!   weighted reservoirs; a pick is weighted `W/(k·wᵢ)`, `W = Σ wᵢ`: exact
+//!   discrete importance sampling of the SLC sum over the candidates.
 //! - `uniform`: one light chosen uniformly; `power`: one light chosen in
 //!   proportion to its emitted power (alias table).
 //! - `lightbvh`: one light chosen by light-BVH importance sampling
@@ -20,7 +25,8 @@
 //! MIS: the light strategy's solid-angle pdf of `y` is
 //! `pdf(select) · p_rr(|x−y|) · pdf_area(y) · d²/|cos θ_y|` (talk: "Multiple
 //! importance sampling"), with `p_rr = 1` for the baselines and
-//! `pdf(select)` = 1 (slc), `min(k/n, 1)` (reservoir), `1/N` (uniform),
+//! `pdf(select)` = 1 (slc), `min(k/n, 1)` (reservoir), `k·w/(W₋ⱼ + w)`
+//! (weighted, `W₋ⱼ` the other candidates' weight), `1/N` (uniform),
 //! `Φᵢ/ΣΦ` (power), the tree's pmf at `(x, n)` (lightbvh). These pdfs must not depend on the light's own ξ: a
 //! weight that is 0 when this pass's sphere misses `x` makes the two
 //! strategies' weights sum to more than one in expectation (the test against
@@ -36,17 +42,18 @@ use rand_core::RngCore;
 use rand_pcg::Pcg32;
 use rayon::prelude::*;
 use slc_core::bsh::Bsh;
+use slc_core::importance::weighted_select_pdf;
 use slc_core::light::{Light, connection_factor};
 use slc_core::mis::{cosine_direction, cosine_pdf, lambert_brdf, light_strategy_pdf, mis_power};
 use slc_core::path::path_survival;
 use slc_core::range::{RangeParams, random_range2, slc_keep};
 use slc_core::ray::face_against;
-use slc_core::reservoir::{Reservoir, reservoir_weight};
+use slc_core::reservoir::{Reservoir, WeightedReservoir, reservoir_weight};
 use slc_core::sphere::Sphere;
 use slc_core::xi::{xi_for, xi_from_bits};
 use slc_scene::RenderError;
 use slc_scene::backend::{PathTracer, Timing};
-use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K};
+use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K, WEIGHTED_K};
 use std::time::Instant;
 
 /// The CPU path tracer over a [`PtScene`]: the scene's geometry in a BVH,
@@ -87,6 +94,15 @@ impl CpuPathTracer {
     fn lights(&self) -> &[Light] {
         self.pts.lights()
     }
+}
+
+/// What next-event estimation at a vertex leaves for MIS at the next
+/// implicit hit: the number of in-range lights (`slc-reservoir`) and their
+/// total weight `W` (`slc-weighted`).
+#[derive(Clone, Copy, Debug, Default)]
+struct NeeState {
+    seen: u32,
+    w_sum: f32,
 }
 
 /// Per-pass light state: ξ-dependent ranges and each light's range sphere
@@ -141,10 +157,11 @@ impl CpuPathTracer {
     /// `p_rr(|x−y|) · pdf_area`, the probability over ξ; the reservoir also
     /// selects with `min(k/n, 1)`, `n` = the other in-range lights at `x`
     /// plus this one (`seen` counts in-range lights at `x`; `in_nee` says
-    /// the light is known to be one of them). `n` is the normal at `x`
-    /// (the light BVH's importance uses it).
+    /// the light is known to be one of them). The weighted picks select with
+    /// `k·w/(W₋ⱼ + w)`, `W₋ⱼ` the weight of the others (`W` from `nee`).
+    /// `n` is the normal at `x` (importance uses it).
     #[allow(clippy::too_many_arguments)]
-    fn light_pdf(&self, s: &PtSettings, st: &Pass, l: usize, x: Vec3, n: Vec3, y: Vec3, seen: u32, in_nee: bool) -> f32 {
+    fn light_pdf(&self, s: &PtSettings, st: &Pass, l: usize, x: Vec3, n: Vec3, y: Vec3, nee: NeeState, in_nee: bool) -> f32 {
         let Light::Triangle(t) = &self.lights()[l] else { return 0.0 };
         let v = x - y;
         let d2 = v.length_squared();
@@ -153,8 +170,12 @@ impl CpuPathTracer {
         let (select, rt2) = match s.method {
             PtMethod::Slc => (1.0, st.rt2[l]),
             PtMethod::SlcReservoir => {
-                let others = seen - (in_nee || st.spheres[l].contains(x)) as u32;
+                let others = nee.seen - (in_nee || st.spheres[l].contains(x)) as u32;
                 (1.0 / reservoir_weight(others + 1, RESERVOIR_K as u32), st.rt2[l])
+            }
+            PtMethod::SlcWeighted => {
+                let w = self.pts.light_set().cones()[l].weight(x, n, st.rt2[l]);
+                (weighted_select_pdf(w, nee.w_sum, in_nee || st.spheres[l].contains(x), WEIGHTED_K as u32), st.rt2[l])
             }
             PtMethod::Uniform => (1.0 / self.lights().len() as f32, f32::INFINITY),
             PtMethod::Power => (self.pts.light_set().alias().pdf(l) as f32, f32::INFINITY),
@@ -178,7 +199,7 @@ impl CpuPathTracer {
         (x, n, ng): (Vec3, Vec3, Vec3),
         rho: Vec3,
         rng: &mut Pcg32,
-        seen: u32,
+        nee: NeeState,
         rr: bool,
         extra: f32,
     ) -> Option<Vec3> {
@@ -213,38 +234,59 @@ impl CpuPathTracer {
         // The baselines cull nothing: r_t² = +∞ makes 1/p = 1.
         let rt2 = if rr { st.rt2[l] } else { f32::INFINITY };
         let mis = match light {
-            Light::Triangle(_) => mis_power(self.light_pdf(s, st, l, x, n, y, seen, true), cosine_pdf(cos_x)),
+            Light::Triangle(_) => mis_power(self.light_pdf(s, st, l, x, n, y, nee, true), cosine_pdf(cos_x)),
             _ => 1.0,
         };
         Some(lambert_brdf(rho) * i * connection_factor(cos_x, d2, rt2, extra * mis))
     }
 
-    /// Next-event estimate at `x`; returns the radiance and the number of
-    /// in-range lights seen (for the reservoir's MIS at the next hit).
-    fn nee(&self, s: &PtSettings, st: &Pass, (x, n, ng): (Vec3, Vec3, Vec3), rho: Vec3, rng: &mut Pcg32) -> (Vec3, u32) {
+    /// Next-event estimate at `x`; returns the radiance and what MIS at the
+    /// next hit needs of it.
+    fn nee(&self, s: &PtSettings, st: &Pass, (x, n, ng): (Vec3, Vec3, Vec3), rho: Vec3, rng: &mut Pcg32) -> (Vec3, NeeState) {
         let mut sum = Vec3::ZERO;
         match s.method {
             PtMethod::Slc => {
                 let mut cand = Vec::new();
                 self.bsh.for_each_containing(x, |l| cand.push(l));
-                let seen = cand.len() as u32;
+                let nee = NeeState { seen: cand.len() as u32, w_sum: 0.0 };
                 for l in cand {
-                    if let Some(c) = self.connect(s, st, l as usize, (x, n, ng), rho, rng, seen, true, 1.0) {
+                    if let Some(c) = self.connect(s, st, l as usize, (x, n, ng), rho, rng, nee, true, 1.0) {
                         sum += c;
                     }
                 }
-                (sum, seen)
+                (sum, nee)
             }
             PtMethod::SlcReservoir => {
                 let mut res = Reservoir::<RESERVOIR_K>::new();
                 self.bsh.for_each_containing(x, |l| res.push(l, rng.next_u32(), rng.next_u32()));
-                let (seen, w) = (res.seen(), res.weight());
+                let (nee, w) = (NeeState { seen: res.seen(), w_sum: 0.0 }, res.weight());
                 for &l in res.picks() {
-                    if let Some(c) = self.connect(s, st, l as usize, (x, n, ng), rho, rng, seen, true, w) {
+                    if let Some(c) = self.connect(s, st, l as usize, (x, n, ng), rho, rng, nee, true, w) {
                         sum += c;
                     }
                 }
-                (sum, seen)
+                (sum, nee)
+            }
+            PtMethod::SlcWeighted => {
+                let mut res = WeightedReservoir::<WEIGHTED_K>::new();
+                let cones = self.pts.light_set().cones();
+                let mut seen = 0;
+                self.bsh.for_each_containing(x, |l| {
+                    seen += 1;
+                    let w = cones[l as usize].weight(x, n, st.rt2[l as usize]);
+                    // Zero weight: never picked (and its MIS pdf is 0), so no draws.
+                    if w > 0.0 {
+                        let u = [(); WEIGHTED_K].map(|_| xi_from_bits(rng.next_u32()));
+                        res.push(l, w, &u);
+                    }
+                });
+                let nee = NeeState { seen, w_sum: res.total_weight() };
+                for (l, w) in res.picks() {
+                    if let Some(c) = self.connect(s, st, l as usize, (x, n, ng), rho, rng, nee, true, w) {
+                        sum += c;
+                    }
+                }
+                (sum, nee)
             }
             PtMethod::Uniform | PtMethod::Power | PtMethod::LightBvh => {
                 let u = xi_from_bits(rng.next_u32());
@@ -261,11 +303,11 @@ impl CpuPathTracer {
                     _ => self.light_bvh.sample(x, n, u),
                 };
                 if let Some((l, select)) = picked.filter(|&(_, p)| p > 0.0)
-                    && let Some(c) = self.connect(s, st, l, (x, n, ng), rho, rng, 0, false, 1.0 / select)
+                    && let Some(c) = self.connect(s, st, l, (x, n, ng), rho, rng, NeeState::default(), false, 1.0 / select)
                 {
                     sum += c;
                 }
-                (sum, self.lights().len() as u32)
+                (sum, NeeState { seen: self.lights().len() as u32, w_sum: 0.0 })
             }
         }
     }
@@ -281,8 +323,8 @@ impl CpuPathTracer {
         let mut beta = Vec3::ONE;
         let mut radiance = Vec3::ZERO;
         let diag = self.diag;
-        // Previous vertex for MIS at implicit hits: (x, n, in-range lights, bsdf pdf).
-        let mut prev: Option<(Vec3, Vec3, u32, f32)> = None;
+        // Previous vertex for MIS at implicit hits: (x, n, its NEE, bsdf pdf).
+        let mut prev: Option<(Vec3, Vec3, NeeState, f32)> = None;
         for depth in 0..s.max_depth {
             let Some(hit) = self.geo.intersect(org, dir, 1e-6 * diag, f32::INFINITY) else { break };
             let x = org + dir * hit.t;
@@ -297,13 +339,13 @@ impl CpuPathTracer {
                 let le = mat.emission;
                 match prev {
                     None => radiance += beta * le,
-                    Some((xp, np, seen, pdf_bsdf)) => {
-                        let pdf_light = self.light_pdf(s, st, l as usize, xp, np, x, seen, false);
+                    Some((xp, np, nee, pdf_bsdf)) => {
+                        let pdf_light = self.light_pdf(s, st, l as usize, xp, np, x, nee, false);
                         radiance += beta * le * mis_power(pdf_bsdf, pdf_light);
                     }
                 }
             }
-            let (direct, seen) = self.nee(s, st, (x, n, ng), mat.albedo, rng);
+            let (direct, nee) = self.nee(s, st, (x, n, ng), mat.albedo, rng);
             radiance += beta * direct;
             // Cosine-weighted BSDF sample about the shading normal: f·cos/pdf
             // = ρ. A direction below the surface itself ends the path.
@@ -314,7 +356,7 @@ impl CpuPathTracer {
                 break;
             }
             beta *= mat.albedo;
-            prev = Some((x, n, seen, cosine_pdf(cos)));
+            prev = Some((x, n, nee, cosine_pdf(cos)));
             org = x + ng * 1e-5 * diag;
             dir = nd;
             // Russian roulette on path length from the third bounce.
@@ -355,36 +397,54 @@ mod tests {
     /// For a triangle light reachable by both strategies, the light
     /// strategy's MIS weight (as `connect` computes it) and the BSDF
     /// strategy's (as an implicit hit computes it) sum to one, for every
-    /// method: both use the same ξ-independent light pdf.
+    /// method: both use the same ξ-independent light pdf. For a light
+    /// outside this pass's range at `x` (NEE cannot pick it this pass) the
+    /// pdf an implicit hit uses is still positive, with `W₋ⱼ = W` (the
+    /// weighted picks) or the count of the others (the reservoir): what NEE
+    /// would use in a pass whose ξ put the light in range with the same
+    /// other candidates.
     #[test]
     fn mis_weights_sum_to_one() {
-        let mut pts = CpuPathTracer::new(&PtScene::new(&Scene::cornell_box(), &[]).unwrap());
+        let mut pts = CpuPathTracer::new(&PtScene::new(&Scene::cornell_box_split_light(4), &[]).unwrap());
         let (x, n) = (Vec3::new(0.3, 0.0, 0.3), Vec3::Y);
-        let params = RangeParams::new(0.05, 1.0).unwrap();
+        let params = RangeParams::new(0.005, 1.0).unwrap();
         let st = pts.pass_state(&params, 7, 0).unwrap();
-        let mut checked = 0;
+        let mut nee = NeeState::default();
+        pts.bsh.for_each_containing(x, |l| {
+            nee.seen += 1;
+            nee.w_sum += pts.pts.light_set().cones()[l as usize].weight(x, n, st.rt2[l as usize]);
+        });
+        let (mut inside, mut outside) = (0, 0);
         for method in PtMethod::ALL {
-            let s = PtSettings { method, error_bound: 0.05, ..PtSettings::default() };
+            let s = PtSettings { method, error_bound: 0.005, ..PtSettings::default() };
             for l in 0..pts.light_count() {
                 let Light::Triangle(t) = &pts.lights()[l] else { continue };
-                if !st.spheres[l].contains(x) {
-                    continue; // the reservoir's per-sample identity needs the light in range
-                }
-                let mut seen = 0;
-                pts.bsh.for_each_containing(x, |_| seen += 1);
+                let in_range = st.spheres[l].contains(x);
                 for (u1, u2) in [(0.1, 0.2), (0.5, 0.5), (0.9, 0.05)] {
                     let y = t.sample(u1, u2);
                     let cos_x = n.dot((y - x).normalize());
-                    let p_light_nee = pts.light_pdf(&s, &st, l, x, n, y, seen, true);
-                    let p_light_hit = pts.light_pdf(&s, &st, l, x, n, y, seen, false);
-                    assert!(p_light_nee > 0.0 && cos_x > 0.0, "{}", method.name());
+                    let p_light_hit = pts.light_pdf(&s, &st, l, x, n, y, nee, false);
+                    assert!(p_light_hit > 0.0 && cos_x > 0.0, "{}", method.name());
+                    if !in_range {
+                        outside += 1;
+                        if method == PtMethod::SlcWeighted {
+                            let w = pts.pts.light_set().cones()[l].weight(x, n, st.rt2[l]);
+                            let select = weighted_select_pdf(w, nee.w_sum + w, true, WEIGHTED_K as u32);
+                            let expect =
+                                light_strategy_pdf(select, st.rt2[l], (x - y).length_squared(), t.area(), t.normal().dot((x - y).normalize()));
+                            assert!((p_light_hit - expect).abs() <= 1e-5 * expect, "{p_light_hit} vs {expect}");
+                        }
+                        continue;
+                    }
+                    let p_light_nee = pts.light_pdf(&s, &st, l, x, n, y, nee, true);
+                    assert_eq!(p_light_nee, p_light_hit, "{}", method.name());
                     let w_light = mis_power(p_light_nee, cosine_pdf(cos_x));
                     let w_bsdf = mis_power(cosine_pdf(cos_x), p_light_hit);
                     assert!((w_light + w_bsdf - 1.0).abs() < 1e-6, "{}: {w_light} + {w_bsdf}", method.name());
-                    checked += 1;
+                    inside += 1;
                 }
             }
         }
-        assert!(checked >= 2 * PtMethod::ALL.len() * 3, "{checked} cases");
+        assert!(inside >= 2 * PtMethod::ALL.len() * 3 && outside >= 2 * PtMethod::ALL.len() * 3, "{inside} in range, {outside} outside");
     }
 }

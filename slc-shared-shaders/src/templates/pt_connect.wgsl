@@ -25,12 +25,13 @@
 
 /// One pick connected to `x`: its contribution times the MIS weight (area
 /// lights) against BSDF sampling; `w` is the selection weight (the
-/// reservoir's n/k or 1/pmf), `others` the other in-range lights.
-fn shade_pick(li: u32, x: vec3f, n: vec3f, ng: vec3f, w: f32, others: u32, u1: f32, u2: f32) -> vec3f {
+/// reservoir's n/k, the weighted picks' W/(k·w), or 1/pmf), `nee` what the
+/// traversal found (`select_pdf`; the pick is in range).
+fn shade_pick(li: u32, x: vec3f, n: vec3f, ng: vec3f, w: f32, nee: u32, u1: f32, u2: f32) -> vec3f {
     let c = connect(li, x, n, ng, w, u1, u2, params.eps);
     var mis = 1.0;
     if light_area(lights[li]) > 0.0 && c.cos_x > 0.0 {
-        mis = mis_weight(light_pdf(li, x, c.y, others), cosine_pdf(c.cos_x));
+        mis = mis_weight(light_pdf(li, x, n, c.y, nee, true), cosine_pdf(c.cos_x));
     }
     return c.e * mis;
 }
@@ -60,7 +61,37 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        sum += shade_pick(picks.light[s], x, n, ng, w_res, picks.n - 1u, u1, xi_from_bits(h));
+        sum += shade_pick(picks.light[s], x, n, ng, w_res, picks.n, u1, xi_from_bits(h));
+    }
+{% elif selection == "weighted" %}
+    // K independent one-slot weighted reservoirs over the in-range lights,
+    // each candidate weighted by its importance over its roulette
+    // probability; a zero weight is never picked and draws nothing.
+    var pick: array<u32, K>;
+    var pick_w: array<f32, K>;
+    var w_sum = 0.0;
+    for (var b = bsh_next_leaf(bsh_first(), x); b != BSH_NONE; b = bsh_next_leaf(bsh_nodes[b].next, x)) {
+        let li = bsh_nodes[b].light;
+        let w = light_weight(li, x, n);
+        if w > 0.0 {
+            w_sum += w;
+            for (var s = 0u; s < K; s++) {
+                h = pcg_hash(h);
+                if weighted_replace(w, w_sum, xi_from_bits(h)) {
+                    pick[s] = li;
+                    pick_w[s] = w;
+                }
+            }
+        }
+    }
+    candidates[i] = bitcast<u32>(w_sum);
+    if w_sum > 0.0 {
+        for (var s = 0u; s < K; s++) {
+            h = pcg_hash(h);
+            let u1 = xi_from_bits(h);
+            h = pcg_hash(h);
+            sum += shade_pick(pick[s], x, n, ng, weighted_pick_weight(w_sum, pick_w[s], K), bitcast<u32>(w_sum), u1, xi_from_bits(h));
+        }
     }
 {% elif selection == "all" %}
     // Every in-range light, each connected as the traversal finds it.
@@ -88,7 +119,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     h = pcg_hash(h);
     let u1 = xi_from_bits(h);
     h = pcg_hash(h);
-    sum = shade_pick(li, x, n, ng, 1.0 / select_pdf(li, 0u), 0u, u1, xi_from_bits(h));
+    sum = shade_pick(li, x, n, ng, 1.0 / select_pdf(li, x, n, 0u, true), 0u, u1, xi_from_bits(h));
 {% endif %}
     let add = vtx.weight * sum;
     if finite3(add) {

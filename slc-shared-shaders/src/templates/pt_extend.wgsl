@@ -80,10 +80,8 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         var w = 1.0;
         if st.pdf_bsdf > 0.0 {
             let leaf = bsh_nodes[light_leaf[tri.light]];
-            let seen = candidates[i];
             let in_range = sphere_contains_point(leaf.center, leaf.radius, st.prev);
-            let others = seen - select(0u, 1u, in_range && seen > 0u);
-            w = mis_weight(st.pdf_bsdf, light_pdf(tri.light, st.prev, x, others));
+            w = mis_weight(st.pdf_bsdf, light_pdf(tri.light, st.prev, st.prev_normal, x, candidates[i], in_range));
         }
         let add = st.beta * lights[tri.light].intensity * w;
         if finite3(add) {
@@ -105,6 +103,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let cos_o = dot(nd, n);
     st.beta *= rho;
     st.prev = x;
+    st.prev_normal = n;
     st.pdf_bsdf = cosine_pdf(cos_o);
     st.origin = x + ng * params.eps;
     st.dir = nd;

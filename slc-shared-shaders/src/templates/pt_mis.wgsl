@@ -12,12 +12,31 @@ fn mis_weight(pdf_a: f32, pdf_b: f32) -> f32 {
 }
 
 @group(1) @binding(1) var<storage, read> power_table: array<vec4f>;
+// Importance cones, three vec4f per light (LightSet::cone_table).
+@group(1) @binding(2) var<storage, read> light_cones: array<vec4f>;
 
-/// Probability that the light strategy selects light `li` at a point with
-/// `others` other lights in range ({{ selection }} selection).
-fn select_pdf(li: u32, others: u32) -> f32 {
+/// `slc-weighted`'s weight of light `li` at `x` with normal `n`
+/// (slc-core's `cone_weight`).
+fn light_weight(li: u32, x: vec3f, n: vec3f) -> f32 {
+    let a = light_cones[3u * li];
+    let b = light_cones[3u * li + 1u];
+    let c = light_cones[3u * li + 2u];
+    return cone_weight(a.xyz, a.w, c.x, b.xyz, b.w, c.y, rt2[li], x, n);
+}
+
+/// Probability (expected count, for the weighted picks) that the light
+/// strategy at `x` (normal `n`) selects light `li` ({{ selection }}
+/// selection). `nee` is what the traversal at `x` left: the in-range count
+/// (reservoir) or the bits of the candidates' total weight (weighted);
+/// `in_range` says this pass's range of `li` reaches `x`, so that the
+/// probability is the one of the *other* candidates, independent of the
+/// light's own ξ.
+fn select_pdf(li: u32, x: vec3f, n: vec3f, nee: u32, in_range: bool) -> f32 {
 {% if selection == "reservoir" %}
+    let others = nee - select(0u, 1u, in_range && nee > 0u);
     return 1.0 / reservoir_weight(others + 1u, K);
+{% elif selection == "weighted" %}
+    return weighted_select_pdf(light_weight(li, x, n), bitcast<f32>(nee), in_range, K);
 {% elif selection == "all" %}
     return 1.0;
 {% elif selection == "uniform" %}
@@ -27,22 +46,21 @@ fn select_pdf(li: u32, others: u32) -> f32 {
 {% endif %}
 }
 
-/// Solid-angle pdf with which the light strategy at `x` produces the point
-/// `y` on area light `li`, when `others` other lights are in range at `x`:
-/// the selection probability (the reservoir's min(k/(others + 1), 1), or
-/// the baselines' 1/N or pmf), the RR probability at |x − y| (1 for the
-/// baselines, whose ranges are +∞) and the area pdf converted to solid
-/// angle (talk:
-/// "Multiple importance sampling"). It must not depend on the light's own ξ
-/// (whether this pass's sphere contains `x`): a pdf that is 0 when the
-/// sphere misses makes the two weights sum to more than one in expectation
-/// and biases the image (the CPU path tracer's test found +40%).
-fn light_pdf(li: u32, x: vec3f, y: vec3f, others: u32) -> f32 {
+/// Solid-angle pdf with which the light strategy at `x` (normal `n`)
+/// produces the point `y` on area light `li` ([`select_pdf`]'s `nee` and
+/// `in_range`): the selection probability, the RR probability at |x − y|
+/// (1 for the baselines, whose ranges are +∞) and the area pdf converted
+/// to solid angle (talk: "Multiple importance sampling"). It must not
+/// depend on the light's own ξ (whether this pass's sphere contains `x`):
+/// a pdf that is 0 when the sphere misses makes the two weights sum to more
+/// than one in expectation and biases the image (the CPU path tracer's
+/// test found +40%).
+fn light_pdf(li: u32, x: vec3f, n: vec3f, y: vec3f, nee: u32, in_range: bool) -> f32 {
     let l = lights[li];
     let v = x - y;
     let d2 = dot(v, v);
     let cos_y = select(0.0, dot(light_normal(l), v / sqrt(d2)), d2 > 0.0);
-    return light_strategy_pdf(select_pdf(li, others), rt2[li], d2, light_area(l), cos_y);
+    return light_strategy_pdf(select_pdf(li, x, n, nee, in_range), rt2[li], d2, light_area(l), cos_y);
 }
 
 /// `true` when every component of `v` is finite (NaN compares false).

@@ -15,7 +15,15 @@ fn pcg_hash(x: u32) -> u32 {
     return (word >> 22) ^ word;
 }
 fn xi_for(seed: u32, frame: u32, light: u32) -> f32 {
-    return xi_from_bits(pcg_hash(pcg_hash(pcg_hash(seed) ^ frame) ^ light));
+    return xi_from_bits(add_wrap_u32(pcg_hash(pcg_hash(pcg_hash(seed)) ^ light), reverse_bits(frame)));
+}
+fn reverse_bits(x: u32) -> u32 {
+    var v: u32 = ((x >> 16) & 65535) | ((x & 65535) << 16);
+    v = ((v >> 8) & 16711935) | ((v & 16711935) << 8);
+    v = ((v >> 4) & 252645135) | ((v & 252645135) << 4);
+    v = ((v >> 2) & 858993459) | ((v & 858993459) << 2);
+    v = ((v >> 1) & 1431655765) | ((v & 1431655765) << 1);
+    return v;
 }
 const TWO_PI: f32 = 6.283185307179586;
 fn rr_probability(rt2: f32, d2: f32) -> f32 {
@@ -299,6 +307,63 @@ fn reservoir_weight(n: u32, k: u32) -> f32 {
 }
 fn weighted_replace(w: f32, w_sum: f32, u: f32) -> bool {
     return u * w_sum < w;
+}
+fn weighted_pick_weight(w_sum: f32, w: f32, k: u32) -> f32 {
+    return w_sum / (to_f32(k) * w);
+}
+fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+    if cos_a > cos_b {
+        return 1.0;
+    }
+    return cos_a * cos_b + sin_a * sin_b;
+}
+fn sin_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+    if cos_a > cos_b {
+        return 0.0;
+    }
+    return sin_a * cos_b - cos_a * sin_b;
+}
+fn safe_sqrt(x: f32) -> f32 {
+    return sqrt(max(x, 0.0));
+}
+fn light_importance(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, p: vec3f, n: vec3f) -> f32 {
+    let v: vec3f = p - center;
+    let dist2: f32 = dot(v, v);
+    let r2: f32 = radius * radius;
+    let d2: f32 = max(max(dist2, r2), MIN_D2);
+    let wi: vec3f = select(vec3f(0.0, 0.0, 0.0), v / sqrt(dist2), dist2 > 0.0);
+    let cos_w: f32 = dot(axis, wi);
+    let sin_w: f32 = safe_sqrt(1.0 - cos_w * cos_w);
+    let cos_b: f32 = select(safe_sqrt(1.0 - r2 / dist2), -1.0, dist2 <= r2);
+    let sin_b: f32 = safe_sqrt(1.0 - cos_b * cos_b);
+    let sin_o: f32 = safe_sqrt(1.0 - cos_o * cos_o);
+    let cos_x: f32 = cos_sub_clamped(sin_w, cos_w, sin_o, cos_o);
+    let sin_x: f32 = sin_sub_clamped(sin_w, cos_w, sin_o, cos_o);
+    let cos_p: f32 = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
+    if cos_p <= cos_e {
+        return 0.0;
+    }
+    var imp: f32 = phi * cos_p / d2;
+    if dot(n, n) > 0.0 {
+        let cos_i: f32 = -dot(wi, n);
+        let sin_i: f32 = safe_sqrt(1.0 - cos_i * cos_i);
+        imp = imp * max(cos_sub_clamped(sin_i, cos_i, sin_b, cos_b), 0.0);
+    }
+    return max(imp, 0.0);
+}
+fn candidate_weight(importance: f32, rt2: f32, d2: f32) -> f32 {
+    return importance * slc_weight(rt2, d2);
+}
+fn cone_weight(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, rt2: f32, p: vec3f, n: vec3f) -> f32 {
+    let v: vec3f = p - center;
+    return candidate_weight(light_importance(center, radius, phi, axis, cos_o, cos_e, p, n) * INV_PI, rt2, dot(v, v));
+}
+fn weighted_select_pdf(w: f32, w_sum: f32, in_range: bool, k: u32) -> f32 {
+    if w <= 0.0 {
+        return 0.0;
+    }
+    let total: f32 = select(w_sum + w, w_sum, in_range);
+    return to_f32(k) * w / total;
 }
 fn ray_aabb(o: vec3f, inv_d: vec3f, bmin: vec3f, bmax: vec3f, t_max: f32) -> f32 {
     let t0: vec3f = (bmin - o) * inv_d;

@@ -22,7 +22,7 @@ struct GpuPathVertex {
     position: vec3f, alive: u32, normal: vec3f, pad: f32, weight: vec3f, pad1: f32, gnormal: vec3f, pad2: f32
 }
 struct GpuPathState {
-    origin: vec3f, alive: u32, dir: vec3f, rng: u32, beta: vec3f, pdf_bsdf: f32, prev: vec3f, pad: u32
+    origin: vec3f, alive: u32, dir: vec3f, rng: u32, beta: vec3f, pdf_bsdf: f32, prev: vec3f, pad: u32, prev_normal: vec3f, pad2: u32
 }
 struct PtParams {
     cam_pos: vec3f, width: u32, cam_right: vec3f, height: u32, cam_up: vec3f, depth: u32, cam_forward: vec3f, seed: u32, pass_index: u32, max_depth: u32, eps: f32, t_min: f32
@@ -78,7 +78,15 @@ fn pcg_hash(x: u32) -> u32 {
     return (word >> 22) ^ word;
 }
 fn xi_for(seed: u32, frame: u32, light: u32) -> f32 {
-    return xi_from_bits(pcg_hash(pcg_hash(pcg_hash(seed) ^ frame) ^ light));
+    return xi_from_bits(add_wrap_u32(pcg_hash(pcg_hash(pcg_hash(seed)) ^ light), reverse_bits(frame)));
+}
+fn reverse_bits(x: u32) -> u32 {
+    var v: u32 = ((x >> 16) & 65535) | ((x & 65535) << 16);
+    v = ((v >> 8) & 16711935) | ((v & 16711935) << 8);
+    v = ((v >> 4) & 252645135) | ((v & 252645135) << 4);
+    v = ((v >> 2) & 858993459) | ((v & 858993459) << 2);
+    v = ((v >> 1) & 1431655765) | ((v & 1431655765) << 1);
+    return v;
 }
 const TWO_PI: f32 = 6.283185307179586;
 fn rr_probability(rt2: f32, d2: f32) -> f32 {
@@ -362,6 +370,63 @@ fn reservoir_weight(n: u32, k: u32) -> f32 {
 }
 fn weighted_replace(w: f32, w_sum: f32, u: f32) -> bool {
     return u * w_sum < w;
+}
+fn weighted_pick_weight(w_sum: f32, w: f32, k: u32) -> f32 {
+    return w_sum / (to_f32(k) * w);
+}
+fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+    if cos_a > cos_b {
+        return 1.0;
+    }
+    return cos_a * cos_b + sin_a * sin_b;
+}
+fn sin_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+    if cos_a > cos_b {
+        return 0.0;
+    }
+    return sin_a * cos_b - cos_a * sin_b;
+}
+fn safe_sqrt(x: f32) -> f32 {
+    return sqrt(max(x, 0.0));
+}
+fn light_importance(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, p: vec3f, n: vec3f) -> f32 {
+    let v: vec3f = p - center;
+    let dist2: f32 = dot(v, v);
+    let r2: f32 = radius * radius;
+    let d2: f32 = max(max(dist2, r2), MIN_D2);
+    let wi: vec3f = select(vec3f(0.0, 0.0, 0.0), v / sqrt(dist2), dist2 > 0.0);
+    let cos_w: f32 = dot(axis, wi);
+    let sin_w: f32 = safe_sqrt(1.0 - cos_w * cos_w);
+    let cos_b: f32 = select(safe_sqrt(1.0 - r2 / dist2), -1.0, dist2 <= r2);
+    let sin_b: f32 = safe_sqrt(1.0 - cos_b * cos_b);
+    let sin_o: f32 = safe_sqrt(1.0 - cos_o * cos_o);
+    let cos_x: f32 = cos_sub_clamped(sin_w, cos_w, sin_o, cos_o);
+    let sin_x: f32 = sin_sub_clamped(sin_w, cos_w, sin_o, cos_o);
+    let cos_p: f32 = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
+    if cos_p <= cos_e {
+        return 0.0;
+    }
+    var imp: f32 = phi * cos_p / d2;
+    if dot(n, n) > 0.0 {
+        let cos_i: f32 = -dot(wi, n);
+        let sin_i: f32 = safe_sqrt(1.0 - cos_i * cos_i);
+        imp = imp * max(cos_sub_clamped(sin_i, cos_i, sin_b, cos_b), 0.0);
+    }
+    return max(imp, 0.0);
+}
+fn candidate_weight(importance: f32, rt2: f32, d2: f32) -> f32 {
+    return importance * slc_weight(rt2, d2);
+}
+fn cone_weight(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, rt2: f32, p: vec3f, n: vec3f) -> f32 {
+    let v: vec3f = p - center;
+    return candidate_weight(light_importance(center, radius, phi, axis, cos_o, cos_e, p, n) * INV_PI, rt2, dot(v, v));
+}
+fn weighted_select_pdf(w: f32, w_sum: f32, in_range: bool, k: u32) -> f32 {
+    if w <= 0.0 {
+        return 0.0;
+    }
+    let total: f32 = select(w_sum + w, w_sum, in_range);
+    return to_f32(k) * w / total;
 }
 fn ray_aabb(o: vec3f, inv_d: vec3f, bmin: vec3f, bmax: vec3f, t_max: f32) -> f32 {
     let t0: vec3f = (bmin - o) * inv_d;
@@ -649,29 +714,45 @@ fn mis_weight(pdf_a: f32, pdf_b: f32) -> f32 {
 }
 
 @group(1) @binding(1) var<storage, read> power_table: array<vec4f>;
+// Importance cones, three vec4f per light (LightSet::cone_table).
+@group(1) @binding(2) var<storage, read> light_cones: array<vec4f>;
 
-/// Probability that the light strategy selects light `li` at a point with
-/// `others` other lights in range (reservoir selection).
-fn select_pdf(li: u32, others: u32) -> f32 {
+/// `slc-weighted`'s weight of light `li` at `x` with normal `n`
+/// (slc-core's `cone_weight`).
+fn light_weight(li: u32, x: vec3f, n: vec3f) -> f32 {
+    let a = light_cones[3u * li];
+    let b = light_cones[3u * li + 1u];
+    let c = light_cones[3u * li + 2u];
+    return cone_weight(a.xyz, a.w, c.x, b.xyz, b.w, c.y, rt2[li], x, n);
+}
+
+/// Probability (expected count, for the weighted picks) that the light
+/// strategy at `x` (normal `n`) selects light `li` (reservoir
+/// selection). `nee` is what the traversal at `x` left: the in-range count
+/// (reservoir) or the bits of the candidates' total weight (weighted);
+/// `in_range` says this pass's range of `li` reaches `x`, so that the
+/// probability is the one of the *other* candidates, independent of the
+/// light's own ξ.
+fn select_pdf(li: u32, x: vec3f, n: vec3f, nee: u32, in_range: bool) -> f32 {
+    let others = nee - select(0u, 1u, in_range && nee > 0u);
     return 1.0 / reservoir_weight(others + 1u, K);
 }
 
-/// Solid-angle pdf with which the light strategy at `x` produces the point
-/// `y` on area light `li`, when `others` other lights are in range at `x`:
-/// the selection probability (the reservoir's min(k/(others + 1), 1), or
-/// the baselines' 1/N or pmf), the RR probability at |x − y| (1 for the
-/// baselines, whose ranges are +∞) and the area pdf converted to solid
-/// angle (talk:
-/// "Multiple importance sampling"). It must not depend on the light's own ξ
-/// (whether this pass's sphere contains `x`): a pdf that is 0 when the
-/// sphere misses makes the two weights sum to more than one in expectation
-/// and biases the image (the CPU path tracer's test found +40%).
-fn light_pdf(li: u32, x: vec3f, y: vec3f, others: u32) -> f32 {
+/// Solid-angle pdf with which the light strategy at `x` (normal `n`)
+/// produces the point `y` on area light `li` ([`select_pdf`]'s `nee` and
+/// `in_range`): the selection probability, the RR probability at |x − y|
+/// (1 for the baselines, whose ranges are +∞) and the area pdf converted
+/// to solid angle (talk: "Multiple importance sampling"). It must not
+/// depend on the light's own ξ (whether this pass's sphere contains `x`):
+/// a pdf that is 0 when the sphere misses makes the two weights sum to more
+/// than one in expectation and biases the image (the CPU path tracer's
+/// test found +40%).
+fn light_pdf(li: u32, x: vec3f, n: vec3f, y: vec3f, nee: u32, in_range: bool) -> f32 {
     let l = lights[li];
     let v = x - y;
     let d2 = dot(v, v);
     let cos_y = select(0.0, dot(light_normal(l), v / sqrt(d2)), d2 > 0.0);
-    return light_strategy_pdf(select_pdf(li, others), rt2[li], d2, light_area(l), cos_y);
+    return light_strategy_pdf(select_pdf(li, x, n, nee, in_range), rt2[li], d2, light_area(l), cos_y);
 }
 
 /// `true` when every component of `v` is finite (NaN compares false).
@@ -755,10 +836,8 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         var w = 1.0;
         if st.pdf_bsdf > 0.0 {
             let leaf = bsh_nodes[light_leaf[tri.light]];
-            let seen = candidates[i];
             let in_range = sphere_contains_point(leaf.center, leaf.radius, st.prev);
-            let others = seen - select(0u, 1u, in_range && seen > 0u);
-            w = mis_weight(st.pdf_bsdf, light_pdf(tri.light, st.prev, x, others));
+            w = mis_weight(st.pdf_bsdf, light_pdf(tri.light, st.prev, st.prev_normal, x, candidates[i], in_range));
         }
         let add = st.beta * lights[tri.light].intensity * w;
         if finite3(add) {
@@ -780,6 +859,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let cos_o = dot(nd, n);
     st.beta *= rho;
     st.prev = x;
+    st.prev_normal = n;
     st.pdf_bsdf = cosine_pdf(cos_o);
     st.origin = x + ng * params.eps;
     st.dir = nd;

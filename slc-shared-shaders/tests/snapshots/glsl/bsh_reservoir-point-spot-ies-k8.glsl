@@ -46,6 +46,8 @@ struct GpuPathState {
     float pdf_bsdf;
     vec3 prev;
     uint pad;
+    vec3 prev_normal;
+    uint pad2_;
 };
 struct PtParams {
     vec3 cam_pos;
@@ -242,12 +244,33 @@ uint pcg_hash(uint x_1) {
     return ((_e12 >> 22u) ^ _e12);
 }
 
+uint reverse_bits(uint x_2) {
+    uint v = 0u;
+    v = (((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u));
+    uint _e11 = v;
+    uint _e16 = v;
+    v = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
+    uint _e22 = v;
+    uint _e27 = v;
+    v = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
+    uint _e33 = v;
+    uint _e38 = v;
+    v = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
+    uint _e44 = v;
+    uint _e49 = v;
+    v = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
+    uint _e55 = v;
+    return _e55;
+}
+
 float xi_for(uint seed, uint frame, uint light) {
     uint _e3 = pcg_hash(seed);
-    uint _e5 = pcg_hash((_e3 ^ frame));
-    uint _e7 = pcg_hash((_e5 ^ light));
-    float _e8 = xi_from_bits(_e7);
-    return _e8;
+    uint _e4 = pcg_hash(_e3);
+    uint _e6 = pcg_hash((_e4 ^ light));
+    uint _e7 = reverse_bits(frame);
+    uint _e8 = add_wrap_u32_(_e6, _e7);
+    float _e9 = xi_from_bits(_e8);
+    return _e9;
 }
 
 float rr_probability(float rt2_, float d2_) {
@@ -292,19 +315,19 @@ float cull_radius(float r2_1) {
 
 float windowed_falloff(float d2_3, float range2_) {
     float q = (d2_3 / range2_);
-    float w_7 = clamp((1.0 - (q * q)), 0.0, 1.0);
-    return ((w_7 * w_7) / max(d2_3, 0.0001));
+    float w_9 = clamp((1.0 - (q * q)), 0.0, 1.0);
+    return ((w_9 * w_9) / max(d2_3, 0.0001));
 }
 
-bool sphere_contains_point(vec3 c, float r, vec3 x_2) {
-    vec3 v_2 = (x_2 - c);
-    return (dot(v_2, v_2) <= (r * r));
+bool sphere_contains_point(vec3 c, float r, vec3 x_3) {
+    vec3 v_3 = (x_3 - c);
+    return (dot(v_3, v_3) <= (r * r));
 }
 
 bool sphere_overlaps_sphere(vec3 c1_, float r1_, vec3 c2_, float r2_2) {
-    vec3 v_3 = (c2_ - c1_);
+    vec3 v_4 = (c2_ - c1_);
     float r_3 = (r1_ + r2_2);
-    return (dot(v_3, v_3) <= (r_3 * r_3));
+    return (dot(v_4, v_4) <= (r_3 * r_3));
 }
 
 float sphere_pad(float r_1, vec3 c_1) {
@@ -313,8 +336,8 @@ float sphere_pad(float r_1, vec3 c_1) {
 
 vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
     bool local = false;
-    vec3 v_4 = (c2_1 - c1_1);
-    float d_3 = sqrt(dot(v_4, v_4));
+    vec3 v_5 = (c2_1 - c1_1);
+    float d_3 = sqrt(dot(v_5, v_5));
     float _e8 = sphere_pad(r1_1, c1_1);
     if ((r1_1 >= ((d_3 + r2_3) + _e8))) {
         return vec4(c1_1.x, c1_1.y, c1_1.z, r1_1);
@@ -343,7 +366,7 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
         return vec4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
     float r0_ = (0.5 * ((d_3 + r1_1) + r2_3));
-    vec3 c_10 = (c1_1 + (v_4 * ((r0_ - r1_1) / d_3)));
+    vec3 c_10 = (c1_1 + (v_5 * ((r0_ - r1_1) / d_3)));
     vec3 e1_ = (c_10 - c1_1);
     vec3 e2_ = (c_10 - c2_1);
     float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
@@ -353,8 +376,8 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
 
 bool sphere_overlaps_aabb(vec3 c_2, float r_2, vec3 bmin, vec3 bmax) {
     vec3 q_1 = clamp(c_2, bmin, bmax);
-    vec3 v_5 = (q_1 - c_2);
-    return (dot(v_5, v_5) <= (r_2 * r_2));
+    vec3 v_6 = (q_1 - c_2);
+    return (dot(v_6, v_6) <= (r_2 * r_2));
 }
 
 float vpl_rt2_(vec3 flux, float exposure_1, float error_bound_1, uint mode_1) {
@@ -381,9 +404,9 @@ float vpl_lobe(vec3 n, vec3 w_1) {
     return (max(dot(n, w_1), 0.0) * INV_PI);
 }
 
-float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v, float min_d2_) {
-    float m = max(dot(v, v), min_d2_);
-    return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m * m));
+float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v_1, float min_d2_) {
+    float m = max(dot(v_1, v_1), min_d2_);
+    return (((max(dot(n_l, v_1), 0.0) * max(-(dot(n_x, v_1)), 0.0)) * INV_PI) / (m * m));
 }
 
 float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
@@ -413,10 +436,10 @@ float area_to_solid_angle_pdf(float pdf_area, float d2_6, float cos_light) {
     return ((pdf_area * d2_6) / c_11);
 }
 
-float atan_portable(float x_3) {
+float atan_portable(float x_4) {
     float base = 0.0;
     float t = 0.0;
-    float a_10 = abs(x_3);
+    float a_10 = abs(x_4);
     t = a_10;
     if ((a_10 > 2.4142137)) {
         base = 1.5707964;
@@ -434,11 +457,11 @@ float atan_portable(float x_3) {
     float _e33 = t;
     float _e35 = t;
     float r_5 = (_e21 + (((((((((0.080537446 * z_1) - 0.13877685) * z_1) + 0.19977711) * z_1) - 0.3333295) * z_1) * _e33) + _e35));
-    return ((x_3 < 0.0) ? -(r_5) : r_5);
+    return ((x_4 < 0.0) ? -(r_5) : r_5);
 }
 
-float atan2_portable(float y, float x_4) {
-    if ((x_4 == 0.0)) {
+float atan2_portable(float y, float x_5) {
+    if ((x_5 == 0.0)) {
         if ((y > 0.0)) {
             return 1.5707964;
         }
@@ -447,8 +470,8 @@ float atan2_portable(float y, float x_4) {
         }
         return 0.0;
     }
-    float _e12 = atan_portable((y / x_4));
-    if ((x_4 > 0.0)) {
+    float _e12 = atan_portable((y / x_5));
+    if ((x_5 > 0.0)) {
         return _e12;
     }
     if ((y >= 0.0)) {
@@ -505,7 +528,7 @@ float ies_fold_c(float c_4, float h_first, float h_last) {
     return _e52;
 }
 
-uint ies_segment(uint tab_1, uint start, uint n_2, float x_5) {
+uint ies_segment(uint tab_1, uint start, uint n_2, float x_6) {
     uint lo = 0u;
     uint hi = 0u;
     if ((n_2 < 2u)) {
@@ -524,7 +547,7 @@ uint ies_segment(uint tab_1, uint start, uint n_2, float x_5) {
             uint _e18 = hi;
             uint mid = ((_e17 + _e18) >> 1u);
             float _e23 = at(tab_1, (start + mid));
-            if ((_e23 <= x_5)) {
+            if ((_e23 <= x_6)) {
                 lo = mid;
             } else {
                 hi = mid;
@@ -535,11 +558,11 @@ uint ies_segment(uint tab_1, uint start, uint n_2, float x_5) {
     return _e25;
 }
 
-float ies_lerp_t(float a0_, float a1_, float x_6) {
+float ies_lerp_t(float a0_, float a1_, float x_7) {
     if ((a1_ <= a0_)) {
         return 0.0;
     }
-    return clamp(((x_6 - a0_) / (a1_ - a0_)), 0.0, 1.0);
+    return clamp(((x_7 - a0_) / (a1_ - a0_)), 0.0, 1.0);
 }
 
 float ies_candela(uint tab_2, uint base_1, float gamma, float c_5) {
@@ -638,6 +661,81 @@ bool weighted_replace(float w_3, float w_sum, float u_1) {
     return ((u_1 * w_sum) < w_3);
 }
 
+float weighted_pick_weight(float w_sum_1, float w_4, uint k_2) {
+    float _e3 = to_f32_(k_2);
+    return (w_sum_1 / (_e3 * w_4));
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1) {
+    if ((cos_a_1 > cos_b_1)) {
+        return 0.0;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+float safe_sqrt(float x_8) {
+    return sqrt(max(x_8, 0.0));
+}
+
+float light_importance(vec3 center, float radius, float phi, vec3 axis, float cos_o, float cos_e, vec3 p, vec3 n_6) {
+    float imp = 0.0;
+    vec3 v_7 = (p - center);
+    float dist2_ = dot(v_7, v_7);
+    float r2_6 = (radius * radius);
+    float d2_9 = max(max(dist2_, r2_6), MIN_D2_);
+    vec3 wi = ((dist2_ > 0.0) ? (v_7 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi);
+    float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    float _e32 = safe_sqrt((1.0 - (r2_6 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_6) ? -1.0 : _e32);
+    float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
+    float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
+    float _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
+    float _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
+    if ((_e46 <= cos_e)) {
+        return 0.0;
+    }
+    imp = ((phi * _e46) / d2_9);
+    if ((dot(n_6, n_6) > 0.0)) {
+        float cos_i = -(dot(wi, n_6));
+        float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
+        float _e61 = imp;
+        float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
+        imp = (_e61 * max(_e62, 0.0));
+    }
+    float _e66 = imp;
+    return max(_e66, 0.0);
+}
+
+float candidate_weight(float importance, float rt2_4, float d2_7) {
+    float _e3 = slc_weight(rt2_4, d2_7);
+    return (importance * _e3);
+}
+
+float cone_weight(vec3 center_1, float radius_1, float phi_1, vec3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, vec3 p_1, vec3 n_7) {
+    vec3 v_8 = (p_1 - center_1);
+    float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_7);
+    float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_8, v_8));
+    return _e14;
+}
+
+float weighted_select_pdf(float w_5, float w_sum_2, bool in_range, uint k_3) {
+    if ((w_5 <= 0.0)) {
+        return 0.0;
+    }
+    float total = (in_range ? w_sum_2 : (w_sum_2 + w_5));
+    float _e9 = to_f32_(k_3);
+    return ((_e9 * w_5) / total);
+}
+
 float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
     vec3 t0_ = ((bmin_1 - o) * inv_d);
     vec3 t1_ = ((bmax_1 - o) * inv_d);
@@ -653,8 +751,8 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 
 vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
     bool local_2 = false;
-    vec3 n_12 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_12, n_12);
+    vec3 n_14 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_14, n_14);
     if (!(!((l2_ > 0.0)))) {
         local_2 = !((l2_ < 3e38));
     } else {
@@ -664,17 +762,17 @@ vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_12 / vec3(sqrt(l2_)));
+    return (n_14 / vec3(sqrt(l2_)));
 }
 
-vec3 face_against(vec3 n_6, vec3 dir) {
-    return ((dot(n_6, dir) > 0.0) ? -(n_6) : n_6);
+vec3 face_against(vec3 n_8, vec3 dir) {
+    return ((dot(n_8, dir) > 0.0) ? -(n_8) : n_8);
 }
 
-vec3 barycentric(vec3 p, vec3 a_6, vec3 b_5, vec3 c_7) {
+vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
     vec3 e1_1 = (b_5 - a_6);
     vec3 e2_1 = (c_7 - a_6);
-    vec3 q_2 = (p - a_6);
+    vec3 q_2 = (p_2 - a_6);
     float d11_ = dot(e1_1, e1_1);
     float d12_ = dot(e1_1, e2_1);
     float d22_ = dot(e2_1, e2_1);
@@ -687,9 +785,9 @@ vec3 barycentric(vec3 p, vec3 a_6, vec3 b_5, vec3 c_7) {
     return vec3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
-vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_4, vec3 facing) {
+vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_6, vec3 facing) {
     bool local_3 = false;
-    vec3 s_1 = (((n0_ * w_4.x) + (n1_ * w_4.y)) + (n2_ * w_4.z));
+    vec3 s_1 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
     float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
         local_3 = !((l2_1 < 3e38));
@@ -700,8 +798,8 @@ vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_4, vec3 facing) {
     if (_e24) {
         return facing;
     }
-    vec3 n_13 = (s_1 / vec3(sqrt(l2_1)));
-    return ((dot(n_13, facing) < 0.0) ? -(n_13) : n_13);
+    vec3 n_15 = (s_1 / vec3(sqrt(l2_1)));
+    return ((dot(n_15, facing) < 0.0) ? -(n_15) : n_15);
 }
 
 float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, float t_max_1) {
@@ -710,14 +808,14 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
     bool local_6 = false;
     vec3 e1_2 = (b_6 - a_7);
     vec3 e2_2 = (c_8 - a_7);
-    vec3 p_1 = cross(d, e2_2);
-    float det = dot(e1_2, p_1);
+    vec3 p_3 = cross(d, e2_2);
+    float det = dot(e1_2, p_3);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     vec3 s_2 = (o_1 - a_7);
-    float u_2 = (dot(s_2, p_1) * inv);
+    float u_2 = (dot(s_2, p_3) * inv);
     if (!((u_2 < 0.0))) {
         local_4 = (u_2 > 1.0);
     } else {
@@ -728,9 +826,9 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
         return -1.0;
     }
     vec3 q_3 = cross(s_2, e1_2);
-    float v_6 = (dot(d, q_3) * inv);
-    if (!((v_6 < 0.0))) {
-        local_5 = ((u_2 + v_6) > 1.0);
+    float v_9 = (dot(d, q_3) * inv);
+    if (!((v_9 < 0.0))) {
+        local_5 = ((u_2 + v_9) > 1.0);
     } else {
         local_5 = true;
     }
@@ -768,10 +866,10 @@ float mis_power(float pdf_a_1, float pdf_b_1) {
     return (a2_ / s_4);
 }
 
-float light_strategy_pdf(float select, float rt2_4, float d2_7, float area_1, float cos_y) {
+float light_strategy_pdf(float select, float rt2_6, float d2_8, float area_1, float cos_y) {
     bool local_7 = false;
     bool local_8 = false;
-    if (!((d2_7 <= 0.0))) {
+    if (!((d2_8 <= 0.0))) {
         local_7 = (area_1 <= 0.0);
     } else {
         local_7 = true;
@@ -786,8 +884,8 @@ float light_strategy_pdf(float select, float rt2_4, float d2_7, float area_1, fl
     if (_e20) {
         return 0.0;
     }
-    float _e22 = rr_probability(rt2_4, d2_7);
-    float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_7, cos_y);
+    float _e22 = rr_probability(rt2_6, d2_8);
+    float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_8, cos_y);
     return ((select * _e22) * _e26);
 }
 
@@ -799,19 +897,19 @@ float cosine_pdf(float cos_theta_1) {
     return (max(cos_theta_1, 0.0) * INV_PI);
 }
 
-vec3 cosine_direction(vec3 n_7, float u1_1, float u2_1) {
-    float s_5 = ((n_7.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_5 + n_7.z));
-    float b_9 = ((n_7.x * n_7.y) * a_12);
-    vec3 t_4 = vec3((1.0 + (((s_5 * n_7.x) * n_7.x) * a_12)), (s_5 * b_9), (-(s_5) * n_7.x));
-    vec3 bt = vec3(b_9, (s_5 + ((n_7.y * n_7.y) * a_12)), -(n_7.y));
+vec3 cosine_direction(vec3 n_9, float u1_1, float u2_1) {
+    float s_5 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_5 + n_9.z));
+    float b_9 = ((n_9.x * n_9.y) * a_12);
+    vec3 t_4 = vec3((1.0 + (((s_5 * n_9.x) * n_9.x) * a_12)), (s_5 * b_9), (-(s_5) * n_9.x));
+    vec3 bt = vec3(b_9, (s_5 + ((n_9.y * n_9.y) * a_12)), -(n_9.y));
     float r_6 = sqrt(u1_1);
-    float phi = (6.2831855 * u2_1);
-    return normalize((((t_4 * (r_6 * cos(phi))) + (bt * (r_6 * sin(phi)))) + (n_7 * sqrt(max((1.0 - u1_1), 0.0)))));
+    float phi_2 = (6.2831855 * u2_1);
+    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));
 }
 
-float bilateral_weight(vec3 n_8, vec3 nj, float z, float zj, float inv_sz) {
-    float dn = max(dot(n_8, nj), 0.0);
+float bilateral_weight(vec3 n_10, vec3 nj, float z, float zj, float inv_sz) {
+    float dn = max(dot(n_10, nj), 0.0);
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
@@ -820,8 +918,8 @@ float bilateral_weight(vec3 n_8, vec3 nj, float z, float zj, float inv_sz) {
     return (((dn8_ * dn8_) * t_5) * t_5);
 }
 
-uint interleave_subset(uint x_7, uint y_1, uint period) {
-    return (((y_1 % period) * period) + (x_7 % period));
+uint interleave_subset(uint x_9, uint y_1, uint period) {
+    return (((y_1 % period) * period) + (x_9 % period));
 }
 
 uint interleave_slot(uint tx, uint ty, uint size, uint period_1) {
@@ -835,8 +933,8 @@ uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2) {
     return (((i_1 % subsets) * per_subset) + (i_1 / subsets));
 }
 
-vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_5, float h_1) {
-    float sx = (((2.0 * px) / w_5) - 1.0);
+vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_7, float h_1) {
+    float sx = (((2.0 * px) / w_7) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h_1));
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
@@ -858,23 +956,23 @@ uint light_map_texel(float a_8, uint size_2) {
     return _e14;
 }
 
-float light_map_depth(vec3 rel, vec3 axis, bool perspective) {
-    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis));
+float light_map_depth(vec3 rel, vec3 axis_2, bool perspective) {
+    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis_2));
 }
 
 float rsm_texel_solid_angle(float texel_area, float cos_axis) {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-vec3 point_irradiance(vec3 intensity_1, vec3 n_9, vec3 v_1) {
-    float d2_8 = dot(v_1, v_1);
-    float cos_x_1 = (dot(n_9, v_1) / sqrt(max(d2_8, MIN_D2_)));
-    float _e11 = inverse_square(d2_8);
+vec3 point_irradiance(vec3 intensity_1, vec3 n_11, vec3 v_2) {
+    float d2_10 = dot(v_2, v_2);
+    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_10, MIN_D2_)));
+    float _e11 = inverse_square(d2_10);
     return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
 }
 
-vec3 directional_irradiance(vec3 e_1, vec3 n_10, vec3 to_light) {
-    return (e_1 * max(dot(n_10, to_light), 0.0));
+vec3 directional_irradiance(vec3 e_1, vec3 n_12, vec3 to_light) {
+    return (e_1 * max(dot(n_12, to_light), 0.0));
 }
 
 float shadow_bias(float texel, float cos_light_1) {
@@ -897,18 +995,18 @@ vec3 diffuse_radiance(vec3 albedo, vec3 emission, vec3 e_2) {
     return (emission + ((albedo * INV_PI) * e_2));
 }
 
-vec3 light_intensity(GpuLight l, vec3 w_6) {
+vec3 light_intensity(GpuLight l, vec3 w_8) {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
         }
         case 1u: {
-            float _e9 = spot_falloff(dot(l.p1_, w_6), l.a, l.b);
+            float _e9 = spot_falloff(dot(l.p1_, w_8), l.a, l.b);
             return (l.intensity * _e9);
         }
         case 2u: {
             vec3 side_1 = cross(l.p2_, l.p1_);
-            float _e22 = ies_candela_dir(0u, l.ies_base, dot(w_6, l.p1_), dot(w_6, l.p2_), dot(w_6, side_1));
+            float _e22 = ies_candela_dir(0u, l.ies_base, dot(w_8, l.p1_), dot(w_8, l.p2_), dot(w_8, side_1));
             return (l.intensity * _e22);
         }
         default: {
@@ -944,12 +1042,12 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
     vec3 inv_d_1 = (vec3(1.0) / mix(d_2, vec3(1e-30), lessThan(abs(d_2), vec3(1e-30))));
     while(true) {
         uint _e30 = node;
-        GpuGeoNode n_14 = _group_0_binding_7_cs[_e30];
+        GpuGeoNode n_16 = _group_0_binding_7_cs[_e30];
         float _e36 = hit.t;
-        float _e37 = ray_aabb(o_2, inv_d_1, n_14.bmin, n_14.bmax, _e36);
+        float _e37 = ray_aabb(o_2, inv_d_1, n_16.bmin, n_16.bmax, _e36);
         if ((_e37 >= 0.0)) {
-            if ((n_14.count > 0u)) {
-                i_2 = n_14.first;
+            if ((n_16.count > 0u)) {
+                i_2 = n_16.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -958,7 +1056,7 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e45 = i_2;
-                    if ((_e45 < (n_14.first + n_14.count))) {
+                    if ((_e45 < (n_16.first + n_16.count))) {
                     } else {
                         break;
                     }
@@ -982,11 +1080,11 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e69 = sp;
                 if ((_e69 < 64u)) {
                     uint _e72 = sp;
-                    stack[_e72] = (n_14.first + 1u);
+                    stack[_e72] = (n_16.first + 1u);
                     uint _e77 = sp;
                     sp = (_e77 + 1u);
                 }
-                node = n_14.first;
+                node = n_16.first;
                 continue;
             }
         }
@@ -1015,7 +1113,7 @@ bool occluded(vec3 a_9, vec3 b_7) {
     return (_e13.tri != NO_LIGHT);
 }
 
-uint bsh_next_leaf(uint start_1, vec3 x_8) {
+uint bsh_next_leaf(uint start_1, vec3 x_10) {
     uint i_3 = 0u;
     i_3 = start_1;
     while(true) {
@@ -1025,7 +1123,7 @@ uint bsh_next_leaf(uint start_1, vec3 x_8) {
         }
         uint _e8 = i_3;
         BshNode node_1 = _group_0_binding_6_cs[_e8];
-        bool _e13 = sphere_contains_point(node_1.center, node_1.radius, x_8);
+        bool _e13 = sphere_contains_point(node_1.center, node_1.radius, x_10);
         if (_e13) {
             if ((node_1.child == BSH_NONE)) {
                 uint _e17 = i_3;
@@ -1043,21 +1141,21 @@ uint bsh_first() {
     return ((uint(_group_0_binding_6_cs.length()) > 0u) ? 0u : BSH_NONE);
 }
 
-Picks bsh_collect(vec3 x_9, uint seed_1) {
+Picks bsh_collect(vec3 x_11, uint seed_1) {
     Picks picks = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_2 = 0u;
     uint i_4 = 0u;
     picks.n = 0u;
     h_2 = seed_1;
     uint _e6 = bsh_first();
-    uint _e7 = bsh_next_leaf(_e6, x_9);
+    uint _e7 = bsh_next_leaf(_e6, x_11);
     i_4 = _e7;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
             uint _e40 = i_4;
             uint _e43 = _group_0_binding_6_cs[_e40].next;
-            uint _e44 = bsh_next_leaf(_e43, x_9);
+            uint _e44 = bsh_next_leaf(_e43, x_11);
             i_4 = _e44;
         }
         loop_init_1 = false;
@@ -1093,7 +1191,7 @@ Picks bsh_collect(vec3 x_9, uint seed_1) {
     return _e45;
 }
 
-Connection connect(uint li, vec3 x_10, vec3 n_11, vec3 ng, float w_res, float u1_3, float u2_3, float eps) {
+Connection connect(uint li, vec3 x_12, vec3 n_13, vec3 ng, float w_res, float u1_3, float u2_3, float eps) {
     Connection c_9 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_10 = false;
     bool local_11 = false;
@@ -1103,12 +1201,12 @@ Connection connect(uint li, vec3 x_10, vec3 n_11, vec3 ng, float w_res, float u1
     vec3 _e16 = light_point(l_4, u1_3, u2_3);
     c_9.y = _e16;
     vec3 _e18 = c_9.y;
-    vec3 v_7 = (x_10 - _e18);
-    float d2_9 = dot(v_7, v_7);
+    vec3 v_10 = (x_12 - _e18);
+    float d2_11 = dot(v_10, v_10);
     float _e23 = _group_0_binding_5_cs[li];
-    bool _e24 = slc_keep(_e23, d2_9);
+    bool _e24 = slc_keep(_e23, d2_11);
     if (!(!(_e24))) {
-        local_10 = (d2_9 <= 0.0);
+        local_10 = (d2_11 <= 0.0);
     } else {
         local_10 = true;
     }
@@ -1117,18 +1215,18 @@ Connection connect(uint li, vec3 x_10, vec3 n_11, vec3 ng, float w_res, float u1
         Connection _e33 = c_9;
         return _e33;
     }
-    vec3 w_8 = (v_7 / vec3(sqrt(d2_9)));
-    c_9.cos_x = -(dot(n_11, w_8));
+    vec3 w_10 = (v_10 / vec3(sqrt(d2_11)));
+    c_9.cos_x = -(dot(n_13, w_10));
     float _e41 = c_9.cos_x;
     if (!((_e41 <= 0.0))) {
-        local_11 = (dot(ng, w_8) >= 0.0);
+        local_11 = (dot(ng, w_10) >= 0.0);
     } else {
         local_11 = true;
     }
     bool _e51 = local_11;
     if (!(_e51)) {
         vec3 _e58 = c_9.y;
-        bool _e59 = occluded((x_10 + (ng * eps)), _e58);
+        bool _e59 = occluded((x_12 + (ng * eps)), _e58);
         local_12 = _e59;
     } else {
         local_12 = true;
@@ -1138,10 +1236,10 @@ Connection connect(uint li, vec3 x_10, vec3 n_11, vec3 ng, float w_res, float u1
         Connection _e62 = c_9;
         return _e62;
     }
-    vec3 _e64 = light_intensity(l_4, w_8);
+    vec3 _e64 = light_intensity(l_4, w_10);
     float _e66 = c_9.cos_x;
     float _e69 = _group_0_binding_4_cs[li];
-    float _e70 = connection_factor(_e66, d2_9, _e69, w_res);
+    float _e70 = connection_factor(_e66, d2_11, _e69, w_res);
     c_9.e = (_e64 * _e70);
     Connection _e72 = c_9;
     return _e72;
@@ -1157,20 +1255,20 @@ void main() {
     if ((i_5 >= _e4)) {
         return;
     }
-    vec4 p_2 = _group_0_binding_1_cs[i_5];
-    if ((p_2.w <= 0.0)) {
+    vec4 p_4 = _group_0_binding_1_cs[i_5];
+    if ((p_4.w <= 0.0)) {
         _group_0_binding_9_cs[i_5] = vec4(0.0);
         return;
     }
-    vec3 x_11 = p_2.xyz;
+    vec3 x_13 = p_4.xyz;
     vec4 _e19 = _group_0_binding_2_cs[i_5];
-    vec3 n_15 = _e19.xyz;
+    vec3 n_17 = _e19.xyz;
     uint _e23 = _group_0_binding_0_cs.seed;
     uint _e26 = _group_0_binding_0_cs.frame;
     uint _e27 = pcg_hash(_e26);
     uint _e29 = pcg_hash((i_5 ^ _e27));
     uint _e31 = pcg_hash((_e23 ^ _e29));
-    Picks _e32 = bsh_collect(x_11, _e31);
+    Picks _e32 = bsh_collect(x_13, _e31);
     float _e35 = reservoir_weight(_e32.n, K);
     uint _e38 = pcg_hash((_e31 ^ 2654435769u));
     h = _e38;
@@ -1200,7 +1298,7 @@ void main() {
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = _group_0_binding_0_cs.eps;
-            Connection _e65 = connect(_e32.light[_e58], x_11, n_15, n_15, _e35, _e53, _e61, _e64);
+            Connection _e65 = connect(_e32.light[_e58], x_13, n_17, n_17, _e35, _e53, _e61, _e64);
             e = (_e56 + _e65.e);
         }
     }

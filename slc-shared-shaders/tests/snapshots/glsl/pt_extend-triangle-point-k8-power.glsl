@@ -46,6 +46,8 @@ struct GpuPathState {
     float pdf_bsdf;
     vec3 prev;
     uint pad;
+    vec3 prev_normal;
+    uint pad2_;
 };
 struct PtParams {
     vec3 cam_pos;
@@ -181,9 +183,9 @@ layout(std430) readonly buffer type_6_block_0Compute { GpuGeoNode _group_0_bindi
 
 layout(std430) readonly buffer type_7_block_1Compute { GpuTriangle _group_0_binding_6_cs[]; };
 
-layout(std430) readonly buffer type_10_block_2Compute { GpuLight _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_4_block_2Compute { float _group_0_binding_2_cs[]; };
 
-layout(std430) readonly buffer type_4_block_3Compute { float _group_0_binding_2_cs[]; };
+layout(std430) readonly buffer type_10_block_3Compute { GpuLight _group_0_binding_1_cs[]; };
 
 layout(std140) uniform PtParams_block_4Compute { PtParams _group_0_binding_0_cs; };
 
@@ -232,12 +234,33 @@ uint pcg_hash(uint x_1) {
     return ((_e12 >> 22u) ^ _e12);
 }
 
+uint reverse_bits(uint x_2) {
+    uint v_1 = 0u;
+    v_1 = (((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u));
+    uint _e11 = v_1;
+    uint _e16 = v_1;
+    v_1 = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
+    uint _e22 = v_1;
+    uint _e27 = v_1;
+    v_1 = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
+    uint _e33 = v_1;
+    uint _e38 = v_1;
+    v_1 = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
+    uint _e44 = v_1;
+    uint _e49 = v_1;
+    v_1 = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
+    uint _e55 = v_1;
+    return _e55;
+}
+
 float xi_for(uint seed, uint frame, uint light) {
     uint _e3 = pcg_hash(seed);
-    uint _e5 = pcg_hash((_e3 ^ frame));
-    uint _e7 = pcg_hash((_e5 ^ light));
-    float _e8 = xi_from_bits(_e7);
-    return _e8;
+    uint _e4 = pcg_hash(_e3);
+    uint _e6 = pcg_hash((_e4 ^ light));
+    uint _e7 = reverse_bits(frame);
+    uint _e8 = add_wrap_u32_(_e6, _e7);
+    float _e9 = xi_from_bits(_e8);
+    return _e9;
 }
 
 float rr_probability(float rt2_, float d2_) {
@@ -282,19 +305,19 @@ float cull_radius(float r2_1) {
 
 float windowed_falloff(float d2_3, float range2_) {
     float q = (d2_3 / range2_);
-    float w_8 = clamp((1.0 - (q * q)), 0.0, 1.0);
-    return ((w_8 * w_8) / max(d2_3, 0.0001));
+    float w_10 = clamp((1.0 - (q * q)), 0.0, 1.0);
+    return ((w_10 * w_10) / max(d2_3, 0.0001));
 }
 
-bool sphere_contains_point(vec3 c, float r, vec3 x_2) {
-    vec3 v_4 = (x_2 - c);
-    return (dot(v_4, v_4) <= (r * r));
+bool sphere_contains_point(vec3 c, float r, vec3 x_3) {
+    vec3 v_5 = (x_3 - c);
+    return (dot(v_5, v_5) <= (r * r));
 }
 
 bool sphere_overlaps_sphere(vec3 c1_, float r1_, vec3 c2_, float r2_2) {
-    vec3 v_5 = (c2_ - c1_);
+    vec3 v_6 = (c2_ - c1_);
     float r_3 = (r1_ + r2_2);
-    return (dot(v_5, v_5) <= (r_3 * r_3));
+    return (dot(v_6, v_6) <= (r_3 * r_3));
 }
 
 float sphere_pad(float r_1, vec3 c_1) {
@@ -302,9 +325,9 @@ float sphere_pad(float r_1, vec3 c_1) {
 }
 
 vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
-    bool local_5 = false;
-    vec3 v_6 = (c2_1 - c1_1);
-    float d_3 = sqrt(dot(v_6, v_6));
+    bool local_4 = false;
+    vec3 v_7 = (c2_1 - c1_1);
+    float d_3 = sqrt(dot(v_7, v_7));
     float _e8 = sphere_pad(r1_1, c1_1);
     if ((r1_1 >= ((d_3 + r2_3) + _e8))) {
         return vec4(c1_1.x, c1_1.y, c1_1.z, r1_1);
@@ -314,11 +337,11 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
         return vec4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
     if (!((d_3 >= SPHERE_HUGE))) {
-        local_5 = ((0.5 * ((d_3 + r1_1) + r2_3)) >= SPHERE_HUGE);
+        local_4 = ((0.5 * ((d_3 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e35 = local_5;
+    bool _e35 = local_4;
     if (_e35) {
         return vec4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
@@ -333,7 +356,7 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
         return vec4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
     float r0_ = (0.5 * ((d_3 + r1_1) + r2_3));
-    vec3 c_9 = (c1_1 + (v_6 * ((r0_ - r1_1) / d_3)));
+    vec3 c_9 = (c1_1 + (v_7 * ((r0_ - r1_1) / d_3)));
     vec3 e1_ = (c_9 - c1_1);
     vec3 e2_ = (c_9 - c2_1);
     float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
@@ -343,8 +366,8 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
 
 bool sphere_overlaps_aabb(vec3 c_2, float r_2, vec3 bmin, vec3 bmax) {
     vec3 q_1 = clamp(c_2, bmin, bmax);
-    vec3 v_7 = (q_1 - c_2);
-    return (dot(v_7, v_7) <= (r_2 * r_2));
+    vec3 v_8 = (q_1 - c_2);
+    return (dot(v_8, v_8) <= (r_2 * r_2));
 }
 
 float vpl_rt2_(vec3 flux, float exposure_1, float error_bound_1, uint mode_1) {
@@ -371,9 +394,9 @@ float vpl_lobe(vec3 n, vec3 w_2) {
     return (max(dot(n, w_2), 0.0) * INV_PI);
 }
 
-float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v_1, float min_d2_) {
-    float m = max(dot(v_1, v_1), min_d2_);
-    return (((max(dot(n_l, v_1), 0.0) * max(-(dot(n_x, v_1)), 0.0)) * INV_PI) / (m * m));
+float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v_2, float min_d2_) {
+    float m = max(dot(v_2, v_2), min_d2_);
+    return (((max(dot(n_l, v_2), 0.0) * max(-(dot(n_x, v_2)), 0.0)) * INV_PI) / (m * m));
 }
 
 float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
@@ -403,10 +426,10 @@ float area_to_solid_angle_pdf(float pdf_area, float d2_6, float cos_light) {
     return ((pdf_area * d2_6) / c_10);
 }
 
-float atan_portable(float x_3) {
+float atan_portable(float x_4) {
     float base = 0.0;
     float t = 0.0;
-    float a_10 = abs(x_3);
+    float a_10 = abs(x_4);
     t = a_10;
     if ((a_10 > 2.4142137)) {
         base = 1.5707964;
@@ -424,11 +447,11 @@ float atan_portable(float x_3) {
     float _e33 = t;
     float _e35 = t;
     float r_5 = (_e21 + (((((((((0.080537446 * z_1) - 0.13877685) * z_1) + 0.19977711) * z_1) - 0.3333295) * z_1) * _e33) + _e35));
-    return ((x_3 < 0.0) ? -(r_5) : r_5);
+    return ((x_4 < 0.0) ? -(r_5) : r_5);
 }
 
-float atan2_portable(float y, float x_4) {
-    if ((x_4 == 0.0)) {
+float atan2_portable(float y, float x_5) {
+    if ((x_5 == 0.0)) {
         if ((y > 0.0)) {
             return 1.5707964;
         }
@@ -437,8 +460,8 @@ float atan2_portable(float y, float x_4) {
         }
         return 0.0;
     }
-    float _e12 = atan_portable((y / x_4));
-    if ((x_4 > 0.0)) {
+    float _e12 = atan_portable((y / x_5));
+    if ((x_5 > 0.0)) {
         return _e12;
     }
     if ((y >= 0.0)) {
@@ -495,11 +518,11 @@ float ies_fold_c(float c_4, float h_first, float h_last) {
     return _e52;
 }
 
-float ies_lerp_t(float a0_, float a1_, float x_6) {
+float ies_lerp_t(float a0_, float a1_, float x_7) {
     if ((a1_ <= a0_)) {
         return 0.0;
     }
-    return clamp(((x_6 - a0_) / (a1_ - a0_)), 0.0, 1.0);
+    return clamp(((x_7 - a0_) / (a1_ - a0_)), 0.0, 1.0);
 }
 
 uint mul_hi_u32_(uint a_4, uint b_3) {
@@ -546,6 +569,81 @@ bool weighted_replace(float w_4, float w_sum, float u_1) {
     return ((u_1 * w_sum) < w_4);
 }
 
+float weighted_pick_weight(float w_sum_1, float w_5, uint k_2) {
+    float _e3 = to_f32_(k_2);
+    return (w_sum_1 / (_e3 * w_5));
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1) {
+    if ((cos_a_1 > cos_b_1)) {
+        return 0.0;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+float safe_sqrt(float x_8) {
+    return sqrt(max(x_8, 0.0));
+}
+
+float light_importance(vec3 center, float radius, float phi, vec3 axis, float cos_o, float cos_e, vec3 p, vec3 n_6) {
+    float imp = 0.0;
+    vec3 v_9 = (p - center);
+    float dist2_ = dot(v_9, v_9);
+    float r2_5 = (radius * radius);
+    float d2_9 = max(max(dist2_, r2_5), MIN_D2_);
+    vec3 wi = ((dist2_ > 0.0) ? (v_9 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi);
+    float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    float _e32 = safe_sqrt((1.0 - (r2_5 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_5) ? -1.0 : _e32);
+    float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
+    float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
+    float _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
+    float _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
+    if ((_e46 <= cos_e)) {
+        return 0.0;
+    }
+    imp = ((phi * _e46) / d2_9);
+    if ((dot(n_6, n_6) > 0.0)) {
+        float cos_i = -(dot(wi, n_6));
+        float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
+        float _e61 = imp;
+        float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
+        imp = (_e61 * max(_e62, 0.0));
+    }
+    float _e66 = imp;
+    return max(_e66, 0.0);
+}
+
+float candidate_weight(float importance, float rt2_4, float d2_7) {
+    float _e3 = slc_weight(rt2_4, d2_7);
+    return (importance * _e3);
+}
+
+float cone_weight(vec3 center_1, float radius_1, float phi_1, vec3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, vec3 p_1, vec3 n_7) {
+    vec3 v_10 = (p_1 - center_1);
+    float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_7);
+    float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_10, v_10));
+    return _e14;
+}
+
+float weighted_select_pdf(float w_6, float w_sum_2, bool in_range, uint k_3) {
+    if ((w_6 <= 0.0)) {
+        return 0.0;
+    }
+    float total = (in_range ? w_sum_2 : (w_sum_2 + w_6));
+    float _e9 = to_f32_(k_3);
+    return ((_e9 * w_6) / total);
+}
+
 float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
     vec3 t0_ = ((bmin_1 - o) * inv_d);
     vec3 t1_ = ((bmax_1 - o) * inv_d);
@@ -560,29 +658,29 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
-    bool local_7 = false;
-    vec3 n_11 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_11, n_11);
+    bool local_6 = false;
+    vec3 n_16 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_16, n_16);
     if (!(!((l2_ > 0.0)))) {
-        local_7 = !((l2_ < 3e38));
+        local_6 = !((l2_ < 3e38));
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e17 = local_7;
+    bool _e17 = local_6;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_11 / vec3(sqrt(l2_)));
+    return (n_16 / vec3(sqrt(l2_)));
 }
 
-vec3 face_against(vec3 n_6, vec3 dir) {
-    return ((dot(n_6, dir) > 0.0) ? -(n_6) : n_6);
+vec3 face_against(vec3 n_8, vec3 dir) {
+    return ((dot(n_8, dir) > 0.0) ? -(n_8) : n_8);
 }
 
-vec3 barycentric(vec3 p, vec3 a_6, vec3 b_5, vec3 c_7) {
+vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
     vec3 e1_1 = (b_5 - a_6);
     vec3 e2_1 = (c_7 - a_6);
-    vec3 q_2 = (p - a_6);
+    vec3 q_2 = (p_2 - a_6);
     float d11_ = dot(e1_1, e1_1);
     float d12_ = dot(e1_1, e2_1);
     float d22_ = dot(e2_1, e2_1);
@@ -595,64 +693,64 @@ vec3 barycentric(vec3 p, vec3 a_6, vec3 b_5, vec3 c_7) {
     return vec3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
-vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_5, vec3 facing) {
-    bool local_8 = false;
-    vec3 s = (((n0_ * w_5.x) + (n1_ * w_5.y)) + (n2_ * w_5.z));
+vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_7, vec3 facing) {
+    bool local_7 = false;
+    vec3 s = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
     float l2_1 = dot(s, s);
     if (!(!((l2_1 > 1e-12)))) {
-        local_8 = !((l2_1 < 3e38));
+        local_7 = !((l2_1 < 3e38));
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e24 = local_8;
+    bool _e24 = local_7;
     if (_e24) {
         return facing;
     }
-    vec3 n_12 = (s / vec3(sqrt(l2_1)));
-    return ((dot(n_12, facing) < 0.0) ? -(n_12) : n_12);
+    vec3 n_17 = (s / vec3(sqrt(l2_1)));
+    return ((dot(n_17, facing) < 0.0) ? -(n_17) : n_17);
 }
 
 float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, float t_max_1) {
+    bool local_8 = false;
     bool local_9 = false;
     bool local_10 = false;
-    bool local_11 = false;
     vec3 e1_2 = (b_6 - a_7);
     vec3 e2_2 = (c_8 - a_7);
-    vec3 p_1 = cross(d, e2_2);
-    float det = dot(e1_2, p_1);
+    vec3 p_3 = cross(d, e2_2);
+    float det = dot(e1_2, p_3);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     vec3 s_1 = (o_1 - a_7);
-    float u_2 = (dot(s_1, p_1) * inv);
+    float u_2 = (dot(s_1, p_3) * inv);
     if (!((u_2 < 0.0))) {
-        local_9 = (u_2 > 1.0);
+        local_8 = (u_2 > 1.0);
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e28 = local_9;
+    bool _e28 = local_8;
     if (_e28) {
         return -1.0;
     }
     vec3 q_3 = cross(s_1, e1_2);
-    float v_8 = (dot(d, q_3) * inv);
-    if (!((v_8 < 0.0))) {
-        local_10 = ((u_2 + v_8) > 1.0);
+    float v_11 = (dot(d, q_3) * inv);
+    if (!((v_11 < 0.0))) {
+        local_9 = ((u_2 + v_11) > 1.0);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e42 = local_10;
+    bool _e42 = local_9;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_2, q_3) * inv);
     if ((t_3 > t_min)) {
-        local_11 = (t_3 < t_max_1);
+        local_10 = (t_3 < t_max_1);
     } else {
-        local_11 = false;
+        local_10 = false;
     }
-    bool _e51 = local_11;
+    bool _e51 = local_10;
     if (_e51) {
         return t_3;
     }
@@ -676,26 +774,26 @@ float mis_power(float pdf_a_1, float pdf_b_1) {
     return (a2_ / s_3);
 }
 
-float light_strategy_pdf(float select, float rt2_4, float d2_7, float area_1, float cos_y) {
+float light_strategy_pdf(float select, float rt2_6, float d2_8, float area_1, float cos_y) {
+    bool local_11 = false;
     bool local_12 = false;
-    bool local_13 = false;
-    if (!((d2_7 <= 0.0))) {
-        local_12 = (area_1 <= 0.0);
+    if (!((d2_8 <= 0.0))) {
+        local_11 = (area_1 <= 0.0);
+    } else {
+        local_11 = true;
+    }
+    bool _e13 = local_11;
+    if (!(_e13)) {
+        local_12 = (cos_y <= 0.0);
     } else {
         local_12 = true;
     }
-    bool _e13 = local_12;
-    if (!(_e13)) {
-        local_13 = (cos_y <= 0.0);
-    } else {
-        local_13 = true;
-    }
-    bool _e20 = local_13;
+    bool _e20 = local_12;
     if (_e20) {
         return 0.0;
     }
-    float _e22 = rr_probability(rt2_4, d2_7);
-    float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_7, cos_y);
+    float _e22 = rr_probability(rt2_6, d2_8);
+    float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_8, cos_y);
     return ((select * _e22) * _e26);
 }
 
@@ -707,19 +805,19 @@ float cosine_pdf(float cos_theta_1) {
     return (max(cos_theta_1, 0.0) * INV_PI);
 }
 
-vec3 cosine_direction(vec3 n_7, float u1_1, float u2_1) {
-    float s_4 = ((n_7.z >= 0.0) ? 1.0 : -1.0);
-    float a_11 = (-1.0 / (s_4 + n_7.z));
-    float b_8 = ((n_7.x * n_7.y) * a_11);
-    vec3 t_4 = vec3((1.0 + (((s_4 * n_7.x) * n_7.x) * a_11)), (s_4 * b_8), (-(s_4) * n_7.x));
-    vec3 bt = vec3(b_8, (s_4 + ((n_7.y * n_7.y) * a_11)), -(n_7.y));
+vec3 cosine_direction(vec3 n_9, float u1_1, float u2_1) {
+    float s_4 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_11 = (-1.0 / (s_4 + n_9.z));
+    float b_8 = ((n_9.x * n_9.y) * a_11);
+    vec3 t_4 = vec3((1.0 + (((s_4 * n_9.x) * n_9.x) * a_11)), (s_4 * b_8), (-(s_4) * n_9.x));
+    vec3 bt = vec3(b_8, (s_4 + ((n_9.y * n_9.y) * a_11)), -(n_9.y));
     float r_6 = sqrt(u1_1);
-    float phi = (6.2831855 * u2_1);
-    return normalize((((t_4 * (r_6 * cos(phi))) + (bt * (r_6 * sin(phi)))) + (n_7 * sqrt(max((1.0 - u1_1), 0.0)))));
+    float phi_2 = (6.2831855 * u2_1);
+    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));
 }
 
-float bilateral_weight(vec3 n_8, vec3 nj, float z, float zj, float inv_sz) {
-    float dn = max(dot(n_8, nj), 0.0);
+float bilateral_weight(vec3 n_10, vec3 nj, float z, float zj, float inv_sz) {
+    float dn = max(dot(n_10, nj), 0.0);
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
@@ -728,8 +826,8 @@ float bilateral_weight(vec3 n_8, vec3 nj, float z, float zj, float inv_sz) {
     return (((dn8_ * dn8_) * t_5) * t_5);
 }
 
-uint interleave_subset(uint x_7, uint y_1, uint period) {
-    return (((y_1 % period) * period) + (x_7 % period));
+uint interleave_subset(uint x_9, uint y_1, uint period) {
+    return (((y_1 % period) * period) + (x_9 % period));
 }
 
 uint interleave_slot(uint tx, uint ty, uint size, uint period_1) {
@@ -743,8 +841,8 @@ uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2) {
     return (((i_1 % subsets) * per_subset) + (i_1 / subsets));
 }
 
-vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_6, float h_1) {
-    float sx = (((2.0 * px) / w_6) - 1.0);
+vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_8, float h_1) {
+    float sx = (((2.0 * px) / w_8) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h_1));
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
@@ -766,23 +864,23 @@ uint light_map_texel(float a_8, uint size_2) {
     return _e14;
 }
 
-float light_map_depth(vec3 rel, vec3 axis, bool perspective) {
-    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis));
+float light_map_depth(vec3 rel, vec3 axis_2, bool perspective) {
+    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis_2));
 }
 
 float rsm_texel_solid_angle(float texel_area, float cos_axis) {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-vec3 point_irradiance(vec3 intensity_1, vec3 n_9, vec3 v_2) {
-    float d2_8 = dot(v_2, v_2);
-    float cos_x_1 = (dot(n_9, v_2) / sqrt(max(d2_8, MIN_D2_)));
-    float _e11 = inverse_square(d2_8);
+vec3 point_irradiance(vec3 intensity_1, vec3 n_11, vec3 v_3) {
+    float d2_10 = dot(v_3, v_3);
+    float cos_x_1 = (dot(n_11, v_3) / sqrt(max(d2_10, MIN_D2_)));
+    float _e11 = inverse_square(d2_10);
     return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
 }
 
-vec3 directional_irradiance(vec3 e, vec3 n_10, vec3 to_light) {
-    return (e * max(dot(n_10, to_light), 0.0));
+vec3 directional_irradiance(vec3 e, vec3 n_12, vec3 to_light) {
+    return (e * max(dot(n_12, to_light), 0.0));
 }
 
 float shadow_bias(float texel, float cos_light_1) {
@@ -791,13 +889,13 @@ float shadow_bias(float texel, float cos_light_1) {
 }
 
 bool shadow_lit(float d_1, float d_map, float bias) {
-    bool local_14 = false;
+    bool local_13 = false;
     if (!((d_map <= 0.0))) {
-        local_14 = (d_1 <= (d_map + bias));
+        local_13 = (d_1 <= (d_map + bias));
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e11 = local_14;
+    bool _e11 = local_13;
     return _e11;
 }
 
@@ -805,14 +903,14 @@ vec3 diffuse_radiance(vec3 albedo, vec3 emission, vec3 e_1) {
     return (emission + ((albedo * INV_PI) * e_1));
 }
 
-vec3 light_intensity(GpuLight l, vec3 w_7) {
+vec3 light_intensity(GpuLight l, vec3 w_9) {
     switch(l.kind) {
         case 0u: {
             return l.intensity;
         }
         case 3u: {
             vec3 _e8 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            float _e10 = triangle_lobe(_e8, l.a, w_7);
+            float _e10 = triangle_lobe(_e8, l.a, w_9);
             return (l.intensity * _e10);
         }
         default: {
@@ -859,12 +957,12 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
     vec3 inv_d_1 = (vec3(1.0) / mix(d_2, vec3(1e-30), lessThan(abs(d_2), vec3(1e-30))));
     while(true) {
         uint _e30 = node;
-        GpuGeoNode n_13 = _group_0_binding_5_cs[_e30];
+        GpuGeoNode n_18 = _group_0_binding_5_cs[_e30];
         float _e36 = hit.t;
-        float _e37 = ray_aabb(o_2, inv_d_1, n_13.bmin, n_13.bmax, _e36);
+        float _e37 = ray_aabb(o_2, inv_d_1, n_18.bmin, n_18.bmax, _e36);
         if ((_e37 >= 0.0)) {
-            if ((n_13.count > 0u)) {
-                i_2 = n_13.first;
+            if ((n_18.count > 0u)) {
+                i_2 = n_18.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -873,7 +971,7 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e45 = i_2;
-                    if ((_e45 < (n_13.first + n_13.count))) {
+                    if ((_e45 < (n_18.first + n_18.count))) {
                     } else {
                         break;
                     }
@@ -897,11 +995,11 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e69 = sp;
                 if ((_e69 < 64u)) {
                     uint _e72 = sp;
-                    stack[_e72] = (n_13.first + 1u);
+                    stack[_e72] = (n_18.first + 1u);
                     uint _e77 = sp;
                     sp = (_e77 + 1u);
                 }
-                node = n_13.first;
+                node = n_18.first;
                 continue;
             }
         }
@@ -935,26 +1033,34 @@ float mis_weight(float pdf_a_2, float pdf_b_2) {
     return _e2;
 }
 
-float select_pdf(uint li, uint others) {
-    float _e5 = reservoir_weight((others + 1u), K);
-    return (1.0 / _e5);
+float select_pdf(uint li_1, vec3 x_11, vec3 n_14, uint nee, bool in_range_1) {
+    bool local_14 = false;
+    if (in_range_1) {
+        local_14 = (nee > 0u);
+    } else {
+        local_14 = false;
+    }
+    bool _e12 = local_14;
+    uint others = (nee - (_e12 ? 1u : 0u));
+    float _e18 = reservoir_weight((others + 1u), K);
+    return (1.0 / _e18);
 }
 
-float light_pdf(uint li_1, vec3 x_8, vec3 y_2, uint others_1) {
-    GpuLight l_4 = _group_0_binding_1_cs[li_1];
-    vec3 v_9 = (x_8 - y_2);
-    float d2_9 = dot(v_9, v_9);
-    vec3 _e9 = light_normal(l_4);
-    float cos_y_1 = ((d2_9 > 0.0) ? dot(_e9, (v_9 / vec3(sqrt(d2_9)))) : 0.0);
-    float _e18 = select_pdf(li_1, others_1);
-    float _e21 = _group_0_binding_2_cs[li_1];
-    float _e22 = light_area(l_4);
-    float _e23 = light_strategy_pdf(_e18, _e21, d2_9, _e22, cos_y_1);
-    return _e23;
+float light_pdf(uint li_2, vec3 x_12, vec3 n_15, vec3 y_2, uint nee_1, bool in_range_2) {
+    GpuLight l_4 = _group_0_binding_1_cs[li_2];
+    vec3 v_12 = (x_12 - y_2);
+    float d2_11 = dot(v_12, v_12);
+    vec3 _e11 = light_normal(l_4);
+    float cos_y_1 = ((d2_11 > 0.0) ? dot(_e11, (v_12 / vec3(sqrt(d2_11)))) : 0.0);
+    float _e20 = select_pdf(li_2, x_12, n_15, nee_1, in_range_2);
+    float _e23 = _group_0_binding_2_cs[li_2];
+    float _e24 = light_area(l_4);
+    float _e25 = light_strategy_pdf(_e20, _e23, d2_11, _e24, cos_y_1);
+    return _e25;
 }
 
-bool finite3_(vec3 v_3) {
-    return all(lessThanEqual(abs(v_3), vec3(3.4028235e38)));
+bool finite3_(vec3 v_4) {
+    return all(lessThanEqual(abs(v_4), vec3(3.4028235e38)));
 }
 
 float next_uniform(inout uint state) {
@@ -968,16 +1074,15 @@ float next_uniform(inout uint state) {
 
 void main() {
     uvec3 gid = gl_GlobalInvocationID;
-    GpuPathState st = GpuPathState(vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0.0, vec3(0.0), 0u);
+    GpuPathState st = GpuPathState(vec3(0.0), 0u, vec3(0.0), 0u, vec3(0.0), 0.0, vec3(0.0), 0u, vec3(0.0), 0u);
     uint h = 0u;
     GpuPathVertex v = GpuPathVertex(vec3(0.0), 0u, vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0);
     bool local = false;
     float w = 1.0;
-    bool local_1 = false;
     uint rng = 0u;
+    bool local_1 = false;
     bool local_2 = false;
     bool local_3 = false;
-    bool local_4 = false;
     uint i_3 = gid.x;
     uint _e4 = _group_0_binding_0_cs.width;
     uint _e7 = _group_0_binding_0_cs.height;
@@ -1042,7 +1147,7 @@ void main() {
     GpuTriangle tri = _group_0_binding_6_cs[_e110.tri];
     vec3 _e127 = st.origin;
     vec3 _e129 = st.dir;
-    vec3 x_9 = (_e127 + (_e129 * _e110.t));
+    vec3 x_13 = (_e127 + (_e129 * _e110.t));
     vec3 _e136 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     vec3 _e138 = st.dir;
     vec3 _e139 = face_against(_e136, _e138);
@@ -1050,7 +1155,7 @@ void main() {
     vec4 _e145 = _group_0_binding_8_cs[b_9];
     vec4 _e151 = _group_0_binding_8_cs[(b_9 + 1u)];
     vec4 _e157 = _group_0_binding_8_cs[(b_9 + 2u)];
-    vec3 _e162 = barycentric(x_9, tri.v0_, tri.v1_, tri.v2_);
+    vec3 _e162 = barycentric(x_13, tri.v0_, tri.v1_, tri.v2_);
     vec3 _e163 = shading_normal(_e145.xyz, _e151.xyz, _e157.xyz, _e162, _e139);
     if ((tri.light != NO_LIGHT)) {
         vec3 _e170 = st.dir;
@@ -1064,97 +1169,92 @@ void main() {
         if ((_e179 > 0.0)) {
             uint _e186 = _group_0_binding_4_cs[tri.light];
             BshNode leaf = _group_0_binding_3_cs[_e186];
-            uint seen = _group_0_binding_9_cs[i_3];
-            vec3 _e195 = st.prev;
-            bool _e196 = sphere_contains_point(leaf.center, leaf.radius, _e195);
-            if (_e196) {
-                local_1 = (seen > 0u);
-            } else {
-                local_1 = false;
-            }
-            bool _e204 = local_1;
-            uint others_2 = (seen - (_e204 ? 1u : 0u));
-            float _e208 = st.pdf_bsdf;
-            vec3 _e211 = st.prev;
-            float _e212 = light_pdf(tri.light, _e211, x_9, others_2);
-            float _e213 = mis_weight(_e208, _e212);
-            w = _e213;
+            vec3 _e192 = st.prev;
+            bool _e193 = sphere_contains_point(leaf.center, leaf.radius, _e192);
+            float _e195 = st.pdf_bsdf;
+            vec3 _e198 = st.prev;
+            vec3 _e200 = st.prev_normal;
+            uint _e203 = _group_0_binding_9_cs[i_3];
+            float _e204 = light_pdf(tri.light, _e198, _e200, x_13, _e203, _e193);
+            float _e205 = mis_weight(_e195, _e204);
+            w = _e205;
         }
-        vec3 _e215 = st.beta;
-        vec3 _e220 = _group_0_binding_1_cs[tri.light].intensity;
-        float _e222 = w;
-        vec3 add = ((_e215 * _e220) * _e222);
-        bool _e224 = finite3_(add);
-        if (_e224) {
-            vec4 _e227 = _group_0_binding_12_cs[i_3];
-            _group_0_binding_12_cs[i_3] = (_e227 + vec4(add, 0.0));
+        vec3 _e207 = st.beta;
+        vec3 _e212 = _group_0_binding_1_cs[tri.light].intensity;
+        float _e214 = w;
+        vec3 add = ((_e207 * _e212) * _e214);
+        bool _e216 = finite3_(add);
+        if (_e216) {
+            vec4 _e219 = _group_0_binding_12_cs[i_3];
+            _group_0_binding_12_cs[i_3] = (_e219 + vec4(add, 0.0));
         }
     }
-    vec4 _e234 = _group_0_binding_7_cs[tri.material];
-    vec3 rho_1 = _e234.xyz;
-    v.position = x_9;
+    vec4 _e226 = _group_0_binding_7_cs[tri.material];
+    vec3 rho_1 = _e226.xyz;
+    v.position = x_13;
     v.normal = _e163;
     v.gnormal = _e139;
-    vec3 _e241 = st.beta;
-    vec3 _e242 = lambert_brdf(rho_1);
-    v.weight = (_e241 * _e242);
+    vec3 _e233 = st.beta;
+    vec3 _e234 = lambert_brdf(rho_1);
+    v.weight = (_e233 * _e234);
     v.alive = 1u;
-    GpuPathVertex _e248 = v;
-    _group_0_binding_11_cs[i_3] = _e248;
-    uint _e250 = st.rng;
-    rng = _e250;
-    float _e252 = next_uniform(rng);
-    float _e253 = next_uniform(rng);
-    vec3 _e254 = cosine_direction(_e163, _e252, _e253);
-    float cos_o = dot(_e254, _e163);
-    vec3 _e257 = st.beta;
-    st.beta = (_e257 * rho_1);
-    st.prev = x_9;
-    float _e261 = cosine_pdf(cos_o);
-    st.pdf_bsdf = _e261;
-    float _e265 = _group_0_binding_0_cs.eps;
-    st.origin = (x_9 + (_e139 * _e265));
-    st.dir = _e254;
-    if (!((cos_o <= 0.0))) {
-        local_2 = (dot(_e254, _e139) <= 0.0);
+    GpuPathVertex _e240 = v;
+    _group_0_binding_11_cs[i_3] = _e240;
+    uint _e242 = st.rng;
+    rng = _e242;
+    float _e244 = next_uniform(rng);
+    float _e245 = next_uniform(rng);
+    vec3 _e246 = cosine_direction(_e163, _e244, _e245);
+    float cos_o_2 = dot(_e246, _e163);
+    vec3 _e249 = st.beta;
+    st.beta = (_e249 * rho_1);
+    st.prev = x_13;
+    st.prev_normal = _e163;
+    float _e254 = cosine_pdf(cos_o_2);
+    st.pdf_bsdf = _e254;
+    float _e258 = _group_0_binding_0_cs.eps;
+    st.origin = (x_13 + (_e139 * _e258));
+    st.dir = _e246;
+    if (!((cos_o_2 <= 0.0))) {
+        local_1 = (dot(_e246, _e139) <= 0.0);
+    } else {
+        local_1 = true;
+    }
+    bool _e271 = local_1;
+    if (!(_e271)) {
+        uint _e277 = _group_0_binding_0_cs.depth;
+        uint _e282 = _group_0_binding_0_cs.max_depth;
+        local_2 = ((_e277 + 1u) >= _e282);
     } else {
         local_2 = true;
     }
-    bool _e278 = local_2;
-    if (!(_e278)) {
-        uint _e284 = _group_0_binding_0_cs.depth;
-        uint _e289 = _group_0_binding_0_cs.max_depth;
-        local_3 = ((_e284 + 1u) >= _e289);
-    } else {
-        local_3 = true;
-    }
-    bool _e292 = local_3;
-    if (_e292) {
+    bool _e285 = local_2;
+    if (_e285) {
         st.alive = 0u;
     }
-    uint _e297 = _group_0_binding_0_cs.depth;
-    if ((_e297 >= 2u)) {
-        uint _e303 = st.alive;
-        local_4 = (_e303 == 1u);
+    uint _e290 = _group_0_binding_0_cs.depth;
+    if ((_e290 >= 2u)) {
+        uint _e296 = st.alive;
+        local_3 = (_e296 == 1u);
     } else {
-        local_4 = false;
+        local_3 = false;
     }
-    bool _e307 = local_4;
-    if (_e307) {
-        vec3 _e309 = st.beta;
-        float _e310 = path_survival(_e309);
-        float _e311 = next_uniform(rng);
-        if ((_e311 >= _e310)) {
+    bool _e300 = local_3;
+    if (_e300) {
+        vec3 _e302 = st.beta;
+        float _e303 = path_survival(_e302);
+        float _e304 = next_uniform(rng);
+        if ((_e304 >= _e303)) {
             st.alive = 0u;
         } else {
-            vec3 _e316 = st.beta;
-            st.beta = (_e316 / vec3(_e310));
+            vec3 _e309 = st.beta;
+            st.beta = (_e309 / vec3(_e303));
         }
     }
-    uint _e320 = rng;
-    st.rng = _e320;
-    GpuPathState _e323 = st;
-    _group_0_binding_10_cs[i_3] = _e323;
+    uint _e313 = rng;
+    st.rng = _e313;
+    GpuPathState _e316 = st;
+    _group_0_binding_10_cs[i_3] = _e316;
     return;
 }
 

@@ -45,6 +45,8 @@ struct GpuPathState {
     float pdf_bsdf;
     float3 prev;
     uint pad;
+    float3 prev_normal;
+    uint pad2_;
 };
 
 struct PtParams {
@@ -208,8 +210,9 @@ ByteAddressBuffer geo_tris : register(t7);
 ByteAddressBuffer bsh_nodes : register(t5);
 ByteAddressBuffer lights : register(t2);
 ByteAddressBuffer r2_5 : register(t4);
-ByteAddressBuffer rt2_5 : register(t3);
+ByteAddressBuffer rt2_7 : register(t3);
 ByteAddressBuffer power_table : register(t1, space1);
+ByteAddressBuffer light_cones : register(t2, space1);
 cbuffer params : register(b0) { ShadeParams params; }
 ByteAddressBuffer vertices_ : register(t1);
 RWByteAddressBuffer radiance : register(u8);
@@ -259,13 +262,36 @@ uint pcg_hash(uint x_1)
     return ((_e12 >> 22u) ^ _e12);
 }
 
+uint reverse_bits(uint x_2)
+{
+    uint v = (uint)0;
+
+    v = (((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u));
+    uint _e11 = v;
+    uint _e16 = v;
+    v = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
+    uint _e22 = v;
+    uint _e27 = v;
+    v = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
+    uint _e33 = v;
+    uint _e38 = v;
+    v = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
+    uint _e44 = v;
+    uint _e49 = v;
+    v = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
+    uint _e55 = v;
+    return _e55;
+}
+
 float xi_for(uint seed, uint frame, uint light)
 {
     const uint _e3 = pcg_hash(seed);
-    const uint _e5 = pcg_hash((_e3 ^ frame));
-    const uint _e7 = pcg_hash((_e5 ^ light));
-    const float _e8 = xi_from_bits(_e7);
-    return _e8;
+    const uint _e4 = pcg_hash(_e3);
+    const uint _e6 = pcg_hash((_e4 ^ light));
+    const uint _e7 = reverse_bits(frame);
+    const uint _e8 = add_wrap_u32_(_e6, _e7);
+    const float _e9 = xi_from_bits(_e8);
+    return _e9;
 }
 
 float rr_probability(float rt2_, float d2_)
@@ -318,21 +344,21 @@ float cull_radius(float r2_1)
 float windowed_falloff(float d2_3, float range2_)
 {
     float q = (d2_3 / range2_);
-    float w_8 = saturate((1.0 - (q * q)));
-    return ((w_8 * w_8) / max(d2_3, 0.0001));
+    float w_10 = saturate((1.0 - (q * q)));
+    return ((w_10 * w_10) / max(d2_3, 0.0001));
 }
 
-bool sphere_contains_point(float3 c, float r, float3 x_2)
+bool sphere_contains_point(float3 c, float r, float3 x_3)
 {
-    float3 v_3 = (x_2 - c);
-    return (dot(v_3, v_3) <= (r * r));
+    float3 v_4 = (x_3 - c);
+    return (dot(v_4, v_4) <= (r * r));
 }
 
 bool sphere_overlaps_sphere(float3 c1_, float r1_, float3 c2_, float r2_2)
 {
-    float3 v_4 = (c2_ - c1_);
+    float3 v_5 = (c2_ - c1_);
     float r_3 = (r1_ + r2_2);
-    return (dot(v_4, v_4) <= (r_3 * r_3));
+    return (dot(v_5, v_5) <= (r_3 * r_3));
 }
 
 float sphere_pad(float r_1, float3 c_1)
@@ -344,8 +370,8 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 {
     bool local = (bool)0;
 
-    float3 v_5 = (c2_1 - c1_1);
-    float d_3 = sqrt(dot(v_5, v_5));
+    float3 v_6 = (c2_1 - c1_1);
+    float d_3 = sqrt(dot(v_6, v_6));
     const float _e8 = sphere_pad(r1_1, c1_1);
     if ((r1_1 >= ((d_3 + r2_3) + _e8))) {
         return float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
@@ -374,7 +400,7 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
         return float4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
     float r0_ = (0.5 * ((d_3 + r1_1) + r2_3));
-    float3 c_10 = (c1_1 + (v_5 * ((r0_ - r1_1) / d_3)));
+    float3 c_10 = (c1_1 + (v_6 * ((r0_ - r1_1) / d_3)));
     float3 e1_ = (c_10 - c1_1);
     float3 e2_ = (c_10 - c2_1);
     float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
@@ -385,8 +411,8 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 bool sphere_overlaps_aabb(float3 c_2, float r_2, float3 bmin, float3 bmax)
 {
     float3 q_1 = clamp(c_2, bmin, bmax);
-    float3 v_6 = (q_1 - c_2);
-    return (dot(v_6, v_6) <= (r_2 * r_2));
+    float3 v_7 = (q_1 - c_2);
+    return (dot(v_7, v_7) <= (r_2 * r_2));
 }
 
 float vpl_rt2_(float3 flux, float exposure_1, float error_bound_1, uint mode_1)
@@ -418,10 +444,10 @@ float vpl_lobe(float3 n, float3 w_1)
     return (max(dot(n, w_1), 0.0) * INV_PI);
 }
 
-float vpl_transfer(float3 n_l, float3 n_x, float3 v, float min_d2_)
+float vpl_transfer(float3 n_l, float3 n_x, float3 v_1, float min_d2_)
 {
-    float m = max(dot(v, v), min_d2_);
-    return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m * m));
+    float m = max(dot(v_1, v_1), min_d2_);
+    return (((max(dot(n_l, v_1), 0.0) * max(-(dot(n_x, v_1)), 0.0)) * INV_PI) / (m * m));
 }
 
 float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
@@ -455,12 +481,12 @@ float area_to_solid_angle_pdf(float pdf_area, float d2_6, float cos_light)
     return ((pdf_area * d2_6) / c_11);
 }
 
-float atan_portable(float x_3)
+float atan_portable(float x_4)
 {
     float base = 0.0;
     float t = (float)0;
 
-    float a_10 = abs(x_3);
+    float a_10 = abs(x_4);
     t = a_10;
     if ((a_10 > 2.4142137)) {
         base = 1.5707964;
@@ -478,12 +504,12 @@ float atan_portable(float x_3)
     float _e33 = t;
     float _e35 = t;
     float r_5 = (_e21 + (((((((((0.080537446 * z_1) - 0.13877685) * z_1) + 0.19977711) * z_1) - 0.3333295) * z_1) * _e33) + _e35));
-    return ((x_3 < 0.0) ? -(r_5) : r_5);
+    return ((x_4 < 0.0) ? -(r_5) : r_5);
 }
 
-float atan2_portable(float y, float x_4)
+float atan2_portable(float y, float x_5)
 {
-    if ((x_4 == 0.0)) {
+    if ((x_5 == 0.0)) {
         if ((y > 0.0)) {
             return 1.5707964;
         }
@@ -492,8 +518,8 @@ float atan2_portable(float y, float x_4)
         }
         return 0.0;
     }
-    const float _e12 = atan_portable((y / x_4));
-    if ((x_4 > 0.0)) {
+    const float _e12 = atan_portable((y / x_5));
+    if ((x_5 > 0.0)) {
         return _e12;
     }
     if ((y >= 0.0)) {
@@ -552,7 +578,7 @@ float ies_fold_c(float c_4, float h_first, float h_last)
     return _e52;
 }
 
-uint ies_segment(uint tab_1, uint start, uint n_2, float x_5)
+uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
 {
     uint lo = 0u;
     uint hi = (uint)0;
@@ -576,7 +602,7 @@ uint ies_segment(uint tab_1, uint start, uint n_2, float x_5)
             uint _e18 = hi;
             uint mid = ((_e17 + _e18) >> 1u);
             const float _e23 = at(tab_1, (start + mid));
-            if ((_e23 <= x_5)) {
+            if ((_e23 <= x_6)) {
                 lo = mid;
             } else {
                 hi = mid;
@@ -587,12 +613,12 @@ uint ies_segment(uint tab_1, uint start, uint n_2, float x_5)
     return _e25;
 }
 
-float ies_lerp_t(float a0_, float a1_, float x_6)
+float ies_lerp_t(float a0_, float a1_, float x_7)
 {
     if ((a1_ <= a0_)) {
         return 0.0;
     }
-    return saturate(((x_6 - a0_) / (a1_ - a0_)));
+    return saturate(((x_7 - a0_) / (a1_ - a0_)));
 }
 
 float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
@@ -699,6 +725,90 @@ bool weighted_replace(float w_3, float w_sum, float u_1)
     return ((u_1 * w_sum) < w_3);
 }
 
+float weighted_pick_weight(float w_sum_1, float w_4, uint k_2)
+{
+    const float _e3 = to_f32_(k_2);
+    return (w_sum_1 / (_e3 * w_4));
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+{
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1)
+{
+    if ((cos_a_1 > cos_b_1)) {
+        return 0.0;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+float safe_sqrt(float x_8)
+{
+    return sqrt(max(x_8, 0.0));
+}
+
+float light_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p, float3 n_6)
+{
+    float imp = (float)0;
+
+    float3 v_8 = (p - center_);
+    float dist2_ = dot(v_8, v_8);
+    float r2_6 = (radius * radius);
+    float d2_9 = max(max(dist2_, r2_6), MIN_D2_);
+    float3 wi = ((dist2_ > 0.0) ? (v_8 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi);
+    const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    const float _e32 = safe_sqrt((1.0 - (r2_6 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_6) ? -1.0 : _e32);
+    const float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
+    const float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    const float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
+    const float _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
+    const float _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
+    if ((_e46 <= cos_e)) {
+        return 0.0;
+    }
+    imp = ((phi * _e46) / d2_9);
+    if ((dot(n_6, n_6) > 0.0)) {
+        float cos_i = -(dot(wi, n_6));
+        const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
+        float _e61 = imp;
+        const float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
+        imp = (_e61 * max(_e62, 0.0));
+    }
+    float _e66 = imp;
+    return max(_e66, 0.0);
+}
+
+float candidate_weight(float importance, float rt2_4, float d2_7)
+{
+    const float _e3 = slc_weight(rt2_4, d2_7);
+    return (importance * _e3);
+}
+
+float cone_weight(float3 center_1, float radius_1, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, float3 p_1, float3 n_7)
+{
+    float3 v_9 = (p_1 - center_1);
+    const float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_7);
+    const float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_9, v_9));
+    return _e14;
+}
+
+float weighted_select_pdf(float w_5, float w_sum_2, bool in_range, uint k_3)
+{
+    if ((w_5 <= 0.0)) {
+        return 0.0;
+    }
+    float total = (in_range ? w_sum_2 : (w_sum_2 + w_5));
+    const float _e9 = to_f32_(k_3);
+    return ((_e9 * w_5) / total);
+}
+
 float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
 {
     float3 t0_ = ((bmin_1 - o) * inv_d);
@@ -717,8 +827,8 @@ float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
 {
     bool local_2 = (bool)0;
 
-    float3 n_13 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_13, n_13);
+    float3 n_18 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_18, n_18);
     if (!(!((l2_ > 0.0)))) {
         local_2 = !((l2_ < 3e38));
     } else {
@@ -728,19 +838,19 @@ float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_13 / (sqrt(l2_)).xxx);
+    return (n_18 / (sqrt(l2_)).xxx);
 }
 
-float3 face_against(float3 n_6, float3 dir)
+float3 face_against(float3 n_8, float3 dir)
 {
-    return ((dot(n_6, dir) > 0.0) ? -(n_6) : n_6);
+    return ((dot(n_8, dir) > 0.0) ? -(n_8) : n_8);
 }
 
-float3 barycentric(float3 p, float3 a_6, float3 b_5, float3 c_7)
+float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
 {
     float3 e1_1 = (b_5 - a_6);
     float3 e2_1 = (c_7 - a_6);
-    float3 q_2 = (p - a_6);
+    float3 q_2 = (p_2 - a_6);
     float d11_ = dot(e1_1, e1_1);
     float d12_ = dot(e1_1, e2_1);
     float d22_ = dot(e2_1, e2_1);
@@ -753,11 +863,11 @@ float3 barycentric(float3 p, float3 a_6, float3 b_5, float3 c_7)
     return float3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
-float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_4, float3 facing)
+float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_6, float3 facing)
 {
     bool local_3 = (bool)0;
 
-    float3 s_1 = (((n0_ * w_4.x) + (n1_ * w_4.y)) + (n2_ * w_4.z));
+    float3 s_1 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
     float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
         local_3 = !((l2_1 < 3e38));
@@ -768,8 +878,8 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_4, float3 fac
     if (_e24) {
         return facing;
     }
-    float3 n_14 = (s_1 / (sqrt(l2_1)).xxx);
-    return ((dot(n_14, facing) < 0.0) ? -(n_14) : n_14);
+    float3 n_19 = (s_1 / (sqrt(l2_1)).xxx);
+    return ((dot(n_19, facing) < 0.0) ? -(n_19) : n_19);
 }
 
 float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
@@ -780,14 +890,14 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
 
     float3 e1_2 = (b_6 - a_7);
     float3 e2_2 = (c_8 - a_7);
-    float3 p_1 = cross(d, e2_2);
-    float det = dot(e1_2, p_1);
+    float3 p_3 = cross(d, e2_2);
+    float det = dot(e1_2, p_3);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     float3 s_2 = (o_1 - a_7);
-    float u_2 = (dot(s_2, p_1) * inv);
+    float u_2 = (dot(s_2, p_3) * inv);
     if (!((u_2 < 0.0))) {
         local_4 = (u_2 > 1.0);
     } else {
@@ -798,9 +908,9 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
         return -1.0;
     }
     float3 q_3 = cross(s_2, e1_2);
-    float v_7 = (dot(d, q_3) * inv);
-    if (!((v_7 < 0.0))) {
-        local_5 = ((u_2 + v_7) > 1.0);
+    float v_10 = (dot(d, q_3) * inv);
+    if (!((v_10 < 0.0))) {
+        local_5 = ((u_2 + v_10) > 1.0);
     } else {
         local_5 = true;
     }
@@ -840,12 +950,12 @@ float mis_power(float pdf_a_1, float pdf_b_1)
     return (a2_ / s_4);
 }
 
-float light_strategy_pdf(float select_, float rt2_4, float d2_7, float area_1, float cos_y)
+float light_strategy_pdf(float select_, float rt2_6, float d2_8, float area_1, float cos_y)
 {
     bool local_7 = (bool)0;
     bool local_8 = (bool)0;
 
-    if (!((d2_7 <= 0.0))) {
+    if (!((d2_8 <= 0.0))) {
         local_7 = (area_1 <= 0.0);
     } else {
         local_7 = true;
@@ -860,8 +970,8 @@ float light_strategy_pdf(float select_, float rt2_4, float d2_7, float area_1, f
     if (_e20) {
         return 0.0;
     }
-    const float _e22 = rr_probability(rt2_4, d2_7);
-    const float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_7, cos_y);
+    const float _e22 = rr_probability(rt2_6, d2_8);
+    const float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_8, cos_y);
     return ((select_ * _e22) * _e26);
 }
 
@@ -875,21 +985,21 @@ float cosine_pdf(float cos_theta_1)
     return (max(cos_theta_1, 0.0) * INV_PI);
 }
 
-float3 cosine_direction(float3 n_7, float u1_1, float u2_1)
+float3 cosine_direction(float3 n_9, float u1_1, float u2_1)
 {
-    float s_5 = ((n_7.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_5 + n_7.z));
-    float b_9 = ((n_7.x * n_7.y) * a_12);
-    float3 t_4 = float3((1.0 + (((s_5 * n_7.x) * n_7.x) * a_12)), (s_5 * b_9), (-(s_5) * n_7.x));
-    float3 bt = float3(b_9, (s_5 + ((n_7.y * n_7.y) * a_12)), -(n_7.y));
+    float s_5 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_5 + n_9.z));
+    float b_9 = ((n_9.x * n_9.y) * a_12);
+    float3 t_4 = float3((1.0 + (((s_5 * n_9.x) * n_9.x) * a_12)), (s_5 * b_9), (-(s_5) * n_9.x));
+    float3 bt = float3(b_9, (s_5 + ((n_9.y * n_9.y) * a_12)), -(n_9.y));
     float r_6 = sqrt(u1_1);
-    float phi = (6.2831855 * u2_1);
-    return normalize((((t_4 * (r_6 * cos(phi))) + (bt * (r_6 * sin(phi)))) + (n_7 * sqrt(max((1.0 - u1_1), 0.0)))));
+    float phi_2 = (6.2831855 * u2_1);
+    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));
 }
 
-float bilateral_weight(float3 n_8, float3 nj, float z, float zj, float inv_sz)
+float bilateral_weight(float3 n_10, float3 nj, float z, float zj, float inv_sz)
 {
-    float dn = max(dot(n_8, nj), 0.0);
+    float dn = max(dot(n_10, nj), 0.0);
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
@@ -902,9 +1012,9 @@ uint naga_mod(uint lhs, uint rhs) {
     return lhs % (rhs == 0u ? 1u : rhs);
 }
 
-uint interleave_subset(uint x_7, uint y_1, uint period)
+uint interleave_subset(uint x_9, uint y_1, uint period)
 {
-    return ((naga_mod(y_1, period) * period) + naga_mod(x_7, period));
+    return ((naga_mod(y_1, period) * period) + naga_mod(x_9, period));
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -924,9 +1034,9 @@ uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2)
     return ((naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets));
 }
 
-float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_5, float h_1)
+float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_7, float h_1)
 {
-    float sx = (((2.0 * px) / w_5) - 1.0);
+    float sx = (((2.0 * px) / w_7) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h_1));
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
@@ -951,9 +1061,9 @@ uint light_map_texel(float a_8, uint size_2)
     return _e14;
 }
 
-float light_map_depth(float3 rel, float3 axis, bool perspective)
+float light_map_depth(float3 rel, float3 axis_2, bool perspective)
 {
-    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis));
+    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis_2));
 }
 
 float rsm_texel_solid_angle(float texel_area, float cos_axis)
@@ -961,17 +1071,17 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-float3 point_irradiance(float3 intensity_1, float3 n_9, float3 v_1)
+float3 point_irradiance(float3 intensity_1, float3 n_11, float3 v_2)
 {
-    float d2_8 = dot(v_1, v_1);
-    float cos_x_1 = (dot(n_9, v_1) / sqrt(max(d2_8, MIN_D2_)));
-    const float _e11 = inverse_square(d2_8);
+    float d2_10 = dot(v_2, v_2);
+    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_10, MIN_D2_)));
+    const float _e11 = inverse_square(d2_10);
     return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
 }
 
-float3 directional_irradiance(float3 e, float3 n_10, float3 to_light)
+float3 directional_irradiance(float3 e, float3 n_12, float3 to_light)
 {
-    return (e * max(dot(n_10, to_light), 0.0));
+    return (e * max(dot(n_12, to_light), 0.0));
 }
 
 float shadow_bias(float texel, float cos_light_1)
@@ -998,12 +1108,12 @@ float3 diffuse_radiance(float3 albedo, float3 emission, float3 e_1)
     return (emission + ((albedo * INV_PI) * e_1));
 }
 
-float3 light_intensity(GpuLight l, float3 w_6)
+float3 light_intensity(GpuLight l, float3 w_8)
 {
     switch(l.kind) {
         case 3u: {
             const float3 _e7 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            const float _e9 = triangle_lobe(_e7, l.a, w_6);
+            const float _e9 = triangle_lobe(_e7, l.a, w_8);
             return (l.intensity * _e9);
         }
         default: {
@@ -1086,12 +1196,12 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         uint _e30 = node;
-        GpuGeoNode n_15 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e30*32+0)), asuint(geo_nodes.Load(_e30*32+12)), asfloat(geo_nodes.Load3(_e30*32+16)), asuint(geo_nodes.Load(_e30*32+28)));
+        GpuGeoNode n_20 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e30*32+0)), asuint(geo_nodes.Load(_e30*32+12)), asfloat(geo_nodes.Load3(_e30*32+16)), asuint(geo_nodes.Load(_e30*32+28)));
         float _e36 = hit.t;
-        const float _e37 = ray_aabb(o_2, inv_d_1, n_15.bmin, n_15.bmax, _e36);
+        const float _e37 = ray_aabb(o_2, inv_d_1, n_20.bmin, n_20.bmax, _e36);
         if ((_e37 >= 0.0)) {
-            if ((n_15.count > 0u)) {
-                i_2 = n_15.first;
+            if ((n_20.count > 0u)) {
+                i_2 = n_20.first;
                 uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1103,7 +1213,7 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e45 = i_2;
-                    if ((_e45 < (n_15.first + n_15.count))) {
+                    if ((_e45 < (n_20.first + n_20.count))) {
                     } else {
                         break;
                     }
@@ -1128,11 +1238,11 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
                 uint _e69 = sp;
                 if ((_e69 < 64u)) {
                     uint _e72 = sp;
-                    stack[min(uint(_e72), 63u)] = (n_15.first + 1u);
+                    stack[min(uint(_e72), 63u)] = (n_20.first + 1u);
                     uint _e77 = sp;
                     sp = (_e77 + 1u);
                 }
-                node = n_15.first;
+                node = n_20.first;
                 continue;
             }
         }
@@ -1174,7 +1284,7 @@ BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg
     return ret;
 }
 
-uint bsh_next_leaf(uint start_1, float3 x_8)
+uint bsh_next_leaf(uint start_1, float3 x_10)
 {
     uint i_3 = (uint)0;
 
@@ -1189,7 +1299,7 @@ uint bsh_next_leaf(uint start_1, float3 x_8)
         }
         uint _e8 = i_3;
         BshNode node_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e8*32+0)), asfloat(bsh_nodes.Load(_e8*32+12)), asuint(bsh_nodes.Load(_e8*32+16)), asuint(bsh_nodes.Load(_e8*32+20)), asuint(bsh_nodes.Load(_e8*32+24)), asuint(bsh_nodes.Load(_e8*32+28)));
-        const bool _e13 = sphere_contains_point(node_1.center_, node_1.radius, x_8);
+        const bool _e13 = sphere_contains_point(node_1.center_, node_1.radius, x_10);
         if (_e13) {
             if ((node_1.child == BSH_NONE)) {
                 uint _e17 = i_3;
@@ -1208,7 +1318,7 @@ uint bsh_first()
     return ((((NagaBufferLength(bsh_nodes) - 0) / 32) > 0u) ? 0u : BSH_NONE);
 }
 
-Picks bsh_collect(float3 x_9, uint seed_1)
+Picks bsh_collect(float3 x_11, uint seed_1)
 {
     Picks picks = (Picks)0;
     uint h_2 = (uint)0;
@@ -1217,7 +1327,7 @@ Picks bsh_collect(float3 x_9, uint seed_1)
     picks.n = 0u;
     h_2 = seed_1;
     const uint _e6 = bsh_first();
-    const uint _e7 = bsh_next_leaf(_e6, x_9);
+    const uint _e7 = bsh_next_leaf(_e6, x_11);
     i_4 = _e7;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
@@ -1227,7 +1337,7 @@ Picks bsh_collect(float3 x_9, uint seed_1)
         if (!loop_init_1) {
             uint _e40 = i_4;
             uint _e43 = asuint(bsh_nodes.Load(20+_e40*32));
-            const uint _e44 = bsh_next_leaf(_e43, x_9);
+            const uint _e44 = bsh_next_leaf(_e43, x_11);
             i_4 = _e44;
         }
         loop_init_1 = false;
@@ -1277,7 +1387,7 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_10, float3 n_11, float3 ng, float w_res, float u1_3, float u2_3, float eps)
+Connection connect(uint li, float3 x_12, float3 n_13, float3 ng, float w_res, float u1_3, float u2_3, float eps)
 {
     Connection c_9 = (Connection)0;
     bool local_10 = (bool)0;
@@ -1289,12 +1399,12 @@ Connection connect(uint li, float3 x_10, float3 n_11, float3 ng, float w_res, fl
     const float3 _e16 = light_point(l_4, u1_3, u2_3);
     c_9.y = _e16;
     float3 _e18 = c_9.y;
-    float3 v_8 = (x_10 - _e18);
-    float d2_9 = dot(v_8, v_8);
+    float3 v_11 = (x_12 - _e18);
+    float d2_11 = dot(v_11, v_11);
     float _e23 = asfloat(r2_5.Load(li*4));
-    const bool _e24 = slc_keep(_e23, d2_9);
+    const bool _e24 = slc_keep(_e23, d2_11);
     if (!(!(_e24))) {
-        local_10 = (d2_9 <= 0.0);
+        local_10 = (d2_11 <= 0.0);
     } else {
         local_10 = true;
     }
@@ -1304,18 +1414,18 @@ Connection connect(uint li, float3 x_10, float3 n_11, float3 ng, float w_res, fl
         const Connection connection = _e33;
         return connection;
     }
-    float3 w_9 = (v_8 / (sqrt(d2_9)).xxx);
-    c_9.cos_x = -(dot(n_11, w_9));
+    float3 w_11 = (v_11 / (sqrt(d2_11)).xxx);
+    c_9.cos_x = -(dot(n_13, w_11));
     float _e41 = c_9.cos_x;
     if (!((_e41 <= 0.0))) {
-        local_11 = (dot(ng, w_9) >= 0.0);
+        local_11 = (dot(ng, w_11) >= 0.0);
     } else {
         local_11 = true;
     }
     bool _e51 = local_11;
     if (!(_e51)) {
         float3 _e58 = c_9.y;
-        const bool _e59 = occluded((x_10 + (ng * eps)), _e58);
+        const bool _e59 = occluded((x_12 + (ng * eps)), _e58);
         local_12 = _e59;
     } else {
         local_12 = true;
@@ -1326,10 +1436,10 @@ Connection connect(uint li, float3 x_10, float3 n_11, float3 ng, float w_res, fl
         const Connection connection_1 = _e62;
         return connection_1;
     }
-    const float3 _e64 = light_intensity(l_4, w_9);
+    const float3 _e64 = light_intensity(l_4, w_11);
     float _e66 = c_9.cos_x;
-    float _e69 = asfloat(rt2_5.Load(li*4));
-    const float _e70 = connection_factor(_e66, d2_9, _e69, w_res);
+    float _e69 = asfloat(rt2_7.Load(li*4));
+    const float _e70 = connection_factor(_e66, d2_11, _e69, w_res);
     c_9.e = (_e64 * _e70);
     Connection _e72 = c_9;
     const Connection connection_2 = _e72;
@@ -1342,54 +1452,73 @@ float mis_weight(float pdf_a_2, float pdf_b_2)
     return _e2;
 }
 
-float select_pdf(uint li_1, uint others)
+float light_weight(uint li_1, float3 x_13, float3 n_14)
 {
-    const float _e5 = reservoir_weight((others + 1u), K);
-    return (1.0 / _e5);
+    float4 a_13 = asfloat(light_cones.Load4((3u * li_1)*16));
+    float4 b_10 = asfloat(light_cones.Load4(((3u * li_1) + 1u)*16));
+    float4 c_14 = asfloat(light_cones.Load4(((3u * li_1) + 2u)*16));
+    float _e30 = asfloat(rt2_7.Load(li_1*4));
+    const float _e31 = cone_weight(a_13.xyz, a_13.w, c_14.x, b_10.xyz, b_10.w, c_14.y, _e30, x_13, n_14);
+    return _e31;
 }
 
-float light_pdf(uint li_2, float3 x_11, float3 y_2, uint others_1)
+float select_pdf(uint li_2, float3 x_14, float3 n_15, uint nee, bool in_range_1)
 {
-    GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
-    float3 v_9 = (x_11 - y_2);
-    float d2_10 = dot(v_9, v_9);
-    const float3 _e9 = light_normal(l_5);
-    float cos_y_1 = ((d2_10 > 0.0) ? dot(_e9, (v_9 / (sqrt(d2_10)).xxx)) : 0.0);
-    const float _e18 = select_pdf(li_2, others_1);
-    float _e21 = asfloat(rt2_5.Load(li_2*4));
-    const float _e22 = light_area(l_5);
-    const float _e23 = light_strategy_pdf(_e18, _e21, d2_10, _e22, cos_y_1);
-    return _e23;
-}
-
-bool finite3_(float3 v_2)
-{
-    return all((abs(v_2) <= (3.4028235e38).xxx));
-}
-
-float3 shade_pick(uint li_3, float3 x_12, float3 n_12, float3 ng_1, float w_7, uint others_2, float u1_4, float u2_4)
-{
-    float mis = 1.0;
     bool local_13 = (bool)0;
 
-    float _e10 = params.eps;
-    const Connection _e11 = connect(li_3, x_12, n_12, ng_1, w_7, u1_4, u2_4, _e10);
-    GpuLight _e16 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
-    const float _e17 = light_area(_e16);
-    if ((_e17 > 0.0)) {
-        local_13 = (_e11.cos_x > 0.0);
+    if (in_range_1) {
+        local_13 = (nee > 0u);
     } else {
         local_13 = false;
     }
-    bool _e26 = local_13;
-    if (_e26) {
-        const float _e28 = light_pdf(li_3, x_12, _e11.y, others_2);
-        const float _e30 = cosine_pdf(_e11.cos_x);
-        const float _e31 = mis_weight(_e28, _e30);
-        mis = _e31;
+    bool _e12 = local_13;
+    uint others = (nee - (_e12 ? 1u : 0u));
+    const float _e18 = reservoir_weight((others + 1u), K);
+    return (1.0 / _e18);
+}
+
+float light_pdf(uint li_3, float3 x_15, float3 n_16, float3 y_2, uint nee_1, bool in_range_2)
+{
+    GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
+    float3 v_12 = (x_15 - y_2);
+    float d2_12 = dot(v_12, v_12);
+    const float3 _e11 = light_normal(l_5);
+    float cos_y_1 = ((d2_12 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_12)).xxx)) : 0.0);
+    const float _e20 = select_pdf(li_3, x_15, n_16, nee_1, in_range_2);
+    float _e23 = asfloat(rt2_7.Load(li_3*4));
+    const float _e24 = light_area(l_5);
+    const float _e25 = light_strategy_pdf(_e20, _e23, d2_12, _e24, cos_y_1);
+    return _e25;
+}
+
+bool finite3_(float3 v_3)
+{
+    return all((abs(v_3) <= (3.4028235e38).xxx));
+}
+
+float3 shade_pick(uint li_4, float3 x_16, float3 n_17, float3 ng_1, float w_9, uint nee_2, float u1_4, float u2_4)
+{
+    float mis = 1.0;
+    bool local_14 = (bool)0;
+
+    float _e10 = params.eps;
+    const Connection _e11 = connect(li_4, x_16, n_17, ng_1, w_9, u1_4, u2_4, _e10);
+    GpuLight _e16 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
+    const float _e17 = light_area(_e16);
+    if ((_e17 > 0.0)) {
+        local_14 = (_e11.cos_x > 0.0);
+    } else {
+        local_14 = false;
     }
-    float _e33 = mis;
-    return (_e11.e * _e33);
+    bool _e26 = local_14;
+    if (_e26) {
+        const float _e29 = light_pdf(li_4, x_16, n_17, _e11.y, nee_2, true);
+        const float _e31 = cosine_pdf(_e11.cos_x);
+        const float _e32 = mis_weight(_e29, _e31);
+        mis = _e32;
+    }
+    float _e34 = mis;
+    return (_e11.e * _e34);
 }
 
 GpuPathVertex ConstructGpuPathVertex(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, float arg7) {
@@ -1422,8 +1551,8 @@ void main(uint3 gid : SV_DispatchThreadID)
         candidates.Store(i_5*4, asuint(0u));
         return;
     }
-    float3 x_13 = vtx.position;
-    float3 n_16 = vtx.normal;
+    float3 x_17 = vtx.position;
+    float3 n_21 = vtx.normal;
     float3 ng_2 = vtx.gnormal;
     uint _e20 = params.seed;
     uint _e23 = params.frame;
@@ -1432,7 +1561,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     const uint _e28 = pcg_hash((_e20 ^ _e26));
     const uint _e31 = pcg_hash((_e28 ^ 2654435769u));
     h = _e31;
-    const Picks _e36 = bsh_collect(x_13, _e28);
+    const Picks _e36 = bsh_collect(x_17, _e28);
     candidates.Store(i_5*4, asuint(_e36.n));
     const float _e42 = reservoir_weight(_e36.n, K);
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
@@ -1441,8 +1570,8 @@ void main(uint3 gid : SV_DispatchThreadID)
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e68 = s;
-            s = (_e68 + 1u);
+            uint _e66 = s;
+            s = (_e66 + 1u);
         }
         loop_init_2 = false;
         uint _e45 = s;
@@ -1461,18 +1590,18 @@ void main(uint3 gid : SV_DispatchThreadID)
             h = _e55;
             float3 _e56 = sum;
             uint _e58 = s;
-            uint _e63 = h;
-            const float _e64 = xi_from_bits(_e63);
-            const float3 _e65 = shade_pick(_e36.light[min(uint(_e58), 7u)], x_13, n_16, ng_2, _e42, (_e36.n - 1u), _e53, _e64);
-            sum = (_e56 + _e65);
+            uint _e61 = h;
+            const float _e62 = xi_from_bits(_e61);
+            const float3 _e63 = shade_pick(_e36.light[min(uint(_e58), 7u)], x_17, n_21, ng_2, _e42, _e36.n, _e53, _e62);
+            sum = (_e56 + _e63);
         }
     }
-    float3 _e71 = sum;
-    float3 add = (vtx.weight * _e71);
-    const bool _e73 = finite3_(add);
-    if (_e73) {
-        float4 _e76 = asfloat(radiance.Load4(i_5*16));
-        radiance.Store4(i_5*16, asuint((_e76 + float4(add, 0.0))));
+    float3 _e69 = sum;
+    float3 add = (vtx.weight * _e69);
+    const bool _e71 = finite3_(add);
+    if (_e71) {
+        float4 _e74 = asfloat(radiance.Load4(i_5*16));
+        radiance.Store4(i_5*16, asuint((_e74 + float4(add, 0.0))));
         return;
     } else {
         return;

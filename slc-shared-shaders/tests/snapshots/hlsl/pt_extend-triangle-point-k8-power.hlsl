@@ -45,6 +45,8 @@ struct GpuPathState {
     float pdf_bsdf;
     float3 prev;
     uint pad;
+    float3 prev_normal;
+    uint pad2_;
 };
 
 struct PtParams {
@@ -194,8 +196,9 @@ ByteAddressBuffer slc_table : register(t0, space1);
 ByteAddressBuffer geo_nodes : register(t5);
 ByteAddressBuffer geo_tris : register(t6);
 ByteAddressBuffer power_table : register(t1, space1);
+ByteAddressBuffer light_cones : register(t2, space1);
+ByteAddressBuffer rt2_7 : register(t2);
 ByteAddressBuffer lights : register(t1);
-ByteAddressBuffer rt2_5 : register(t2);
 cbuffer params : register(b0) { PtParams params; }
 ByteAddressBuffer bsh_nodes : register(t3);
 ByteAddressBuffer light_leaf : register(t4);
@@ -250,13 +253,36 @@ uint pcg_hash(uint x_1)
     return ((_e12 >> 22u) ^ _e12);
 }
 
+uint reverse_bits(uint x_2)
+{
+    uint v_1 = (uint)0;
+
+    v_1 = (((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u));
+    uint _e11 = v_1;
+    uint _e16 = v_1;
+    v_1 = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
+    uint _e22 = v_1;
+    uint _e27 = v_1;
+    v_1 = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
+    uint _e33 = v_1;
+    uint _e38 = v_1;
+    v_1 = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
+    uint _e44 = v_1;
+    uint _e49 = v_1;
+    v_1 = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
+    uint _e55 = v_1;
+    return _e55;
+}
+
 float xi_for(uint seed, uint frame, uint light)
 {
     const uint _e3 = pcg_hash(seed);
-    const uint _e5 = pcg_hash((_e3 ^ frame));
-    const uint _e7 = pcg_hash((_e5 ^ light));
-    const float _e8 = xi_from_bits(_e7);
-    return _e8;
+    const uint _e4 = pcg_hash(_e3);
+    const uint _e6 = pcg_hash((_e4 ^ light));
+    const uint _e7 = reverse_bits(frame);
+    const uint _e8 = add_wrap_u32_(_e6, _e7);
+    const float _e9 = xi_from_bits(_e8);
+    return _e9;
 }
 
 float rr_probability(float rt2_, float d2_)
@@ -309,21 +335,21 @@ float cull_radius(float r2_1)
 float windowed_falloff(float d2_3, float range2_)
 {
     float q = (d2_3 / range2_);
-    float w_8 = saturate((1.0 - (q * q)));
-    return ((w_8 * w_8) / max(d2_3, 0.0001));
+    float w_10 = saturate((1.0 - (q * q)));
+    return ((w_10 * w_10) / max(d2_3, 0.0001));
 }
 
-bool sphere_contains_point(float3 c, float r, float3 x_2)
+bool sphere_contains_point(float3 c, float r, float3 x_3)
 {
-    float3 v_4 = (x_2 - c);
-    return (dot(v_4, v_4) <= (r * r));
+    float3 v_5 = (x_3 - c);
+    return (dot(v_5, v_5) <= (r * r));
 }
 
 bool sphere_overlaps_sphere(float3 c1_, float r1_, float3 c2_, float r2_2)
 {
-    float3 v_5 = (c2_ - c1_);
+    float3 v_6 = (c2_ - c1_);
     float r_3 = (r1_ + r2_2);
-    return (dot(v_5, v_5) <= (r_3 * r_3));
+    return (dot(v_6, v_6) <= (r_3 * r_3));
 }
 
 float sphere_pad(float r_1, float3 c_1)
@@ -333,10 +359,10 @@ float sphere_pad(float r_1, float3 c_1)
 
 float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 {
-    bool local_5 = (bool)0;
+    bool local_4 = (bool)0;
 
-    float3 v_6 = (c2_1 - c1_1);
-    float d_3 = sqrt(dot(v_6, v_6));
+    float3 v_7 = (c2_1 - c1_1);
+    float d_3 = sqrt(dot(v_7, v_7));
     const float _e8 = sphere_pad(r1_1, c1_1);
     if ((r1_1 >= ((d_3 + r2_3) + _e8))) {
         return float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
@@ -346,11 +372,11 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
         return float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
     if (!((d_3 >= SPHERE_HUGE))) {
-        local_5 = ((0.5 * ((d_3 + r1_1) + r2_3)) >= SPHERE_HUGE);
+        local_4 = ((0.5 * ((d_3 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e35 = local_5;
+    bool _e35 = local_4;
     if (_e35) {
         return float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
@@ -365,7 +391,7 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
         return float4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
     float r0_ = (0.5 * ((d_3 + r1_1) + r2_3));
-    float3 c_9 = (c1_1 + (v_6 * ((r0_ - r1_1) / d_3)));
+    float3 c_9 = (c1_1 + (v_7 * ((r0_ - r1_1) / d_3)));
     float3 e1_ = (c_9 - c1_1);
     float3 e2_ = (c_9 - c2_1);
     float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
@@ -376,8 +402,8 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 bool sphere_overlaps_aabb(float3 c_2, float r_2, float3 bmin, float3 bmax)
 {
     float3 q_1 = clamp(c_2, bmin, bmax);
-    float3 v_7 = (q_1 - c_2);
-    return (dot(v_7, v_7) <= (r_2 * r_2));
+    float3 v_8 = (q_1 - c_2);
+    return (dot(v_8, v_8) <= (r_2 * r_2));
 }
 
 float vpl_rt2_(float3 flux, float exposure_1, float error_bound_1, uint mode_1)
@@ -409,10 +435,10 @@ float vpl_lobe(float3 n, float3 w_2)
     return (max(dot(n, w_2), 0.0) * INV_PI);
 }
 
-float vpl_transfer(float3 n_l, float3 n_x, float3 v_1, float min_d2_)
+float vpl_transfer(float3 n_l, float3 n_x, float3 v_2, float min_d2_)
 {
-    float m = max(dot(v_1, v_1), min_d2_);
-    return (((max(dot(n_l, v_1), 0.0) * max(-(dot(n_x, v_1)), 0.0)) * INV_PI) / (m * m));
+    float m = max(dot(v_2, v_2), min_d2_);
+    return (((max(dot(n_l, v_2), 0.0) * max(-(dot(n_x, v_2)), 0.0)) * INV_PI) / (m * m));
 }
 
 float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
@@ -446,12 +472,12 @@ float area_to_solid_angle_pdf(float pdf_area, float d2_6, float cos_light)
     return ((pdf_area * d2_6) / c_10);
 }
 
-float atan_portable(float x_3)
+float atan_portable(float x_4)
 {
     float base = 0.0;
     float t = (float)0;
 
-    float a_10 = abs(x_3);
+    float a_10 = abs(x_4);
     t = a_10;
     if ((a_10 > 2.4142137)) {
         base = 1.5707964;
@@ -469,12 +495,12 @@ float atan_portable(float x_3)
     float _e33 = t;
     float _e35 = t;
     float r_5 = (_e21 + (((((((((0.080537446 * z_1) - 0.13877685) * z_1) + 0.19977711) * z_1) - 0.3333295) * z_1) * _e33) + _e35));
-    return ((x_3 < 0.0) ? -(r_5) : r_5);
+    return ((x_4 < 0.0) ? -(r_5) : r_5);
 }
 
-float atan2_portable(float y, float x_4)
+float atan2_portable(float y, float x_5)
 {
-    if ((x_4 == 0.0)) {
+    if ((x_5 == 0.0)) {
         if ((y > 0.0)) {
             return 1.5707964;
         }
@@ -483,8 +509,8 @@ float atan2_portable(float y, float x_4)
         }
         return 0.0;
     }
-    const float _e12 = atan_portable((y / x_4));
-    if ((x_4 > 0.0)) {
+    const float _e12 = atan_portable((y / x_5));
+    if ((x_5 > 0.0)) {
         return _e12;
     }
     if ((y >= 0.0)) {
@@ -543,7 +569,7 @@ float ies_fold_c(float c_4, float h_first, float h_last)
     return _e52;
 }
 
-uint ies_segment(uint tab_1, uint start, uint n_2, float x_5)
+uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
 {
     uint lo = 0u;
     uint hi = (uint)0;
@@ -567,7 +593,7 @@ uint ies_segment(uint tab_1, uint start, uint n_2, float x_5)
             uint _e18 = hi;
             uint mid = ((_e17 + _e18) >> 1u);
             const float _e23 = at(tab_1, (start + mid));
-            if ((_e23 <= x_5)) {
+            if ((_e23 <= x_6)) {
                 lo = mid;
             } else {
                 hi = mid;
@@ -578,17 +604,17 @@ uint ies_segment(uint tab_1, uint start, uint n_2, float x_5)
     return _e25;
 }
 
-float ies_lerp_t(float a0_, float a1_, float x_6)
+float ies_lerp_t(float a0_, float a1_, float x_7)
 {
     if ((a1_ <= a0_)) {
         return 0.0;
     }
-    return saturate(((x_6 - a0_) / (a1_ - a0_)));
+    return saturate(((x_7 - a0_) / (a1_ - a0_)));
 }
 
 float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
 {
-    bool local_6 = (bool)0;
+    bool local_5 = (bool)0;
 
     const float _e4 = at(tab_2, base_1);
     const uint _e5 = to_u32_(_e4);
@@ -600,11 +626,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
     const float _e14 = at(tab_2, v0_);
     if (!((gamma < _e14))) {
         const float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_6 = (gamma > _e22);
+        local_5 = (gamma > _e22);
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e25 = local_6;
+    bool _e25 = local_5;
     if (_e25) {
         return 0.0;
     }
@@ -690,6 +716,90 @@ bool weighted_replace(float w_4, float w_sum, float u_1)
     return ((u_1 * w_sum) < w_4);
 }
 
+float weighted_pick_weight(float w_sum_1, float w_5, uint k_2)
+{
+    const float _e3 = to_f32_(k_2);
+    return (w_sum_1 / (_e3 * w_5));
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+{
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1)
+{
+    if ((cos_a_1 > cos_b_1)) {
+        return 0.0;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+float safe_sqrt(float x_8)
+{
+    return sqrt(max(x_8, 0.0));
+}
+
+float light_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p, float3 n_6)
+{
+    float imp = (float)0;
+
+    float3 v_9 = (p - center_);
+    float dist2_ = dot(v_9, v_9);
+    float r2_5 = (radius * radius);
+    float d2_9 = max(max(dist2_, r2_5), MIN_D2_);
+    float3 wi = ((dist2_ > 0.0) ? (v_9 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi);
+    const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    const float _e32 = safe_sqrt((1.0 - (r2_5 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_5) ? -1.0 : _e32);
+    const float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
+    const float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    const float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
+    const float _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
+    const float _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
+    if ((_e46 <= cos_e)) {
+        return 0.0;
+    }
+    imp = ((phi * _e46) / d2_9);
+    if ((dot(n_6, n_6) > 0.0)) {
+        float cos_i = -(dot(wi, n_6));
+        const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
+        float _e61 = imp;
+        const float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
+        imp = (_e61 * max(_e62, 0.0));
+    }
+    float _e66 = imp;
+    return max(_e66, 0.0);
+}
+
+float candidate_weight(float importance, float rt2_4, float d2_7)
+{
+    const float _e3 = slc_weight(rt2_4, d2_7);
+    return (importance * _e3);
+}
+
+float cone_weight(float3 center_1, float radius_1, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, float3 p_1, float3 n_7)
+{
+    float3 v_10 = (p_1 - center_1);
+    const float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_7);
+    const float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_10, v_10));
+    return _e14;
+}
+
+float weighted_select_pdf(float w_6, float w_sum_2, bool in_range, uint k_3)
+{
+    if ((w_6 <= 0.0)) {
+        return 0.0;
+    }
+    float total = (in_range ? w_sum_2 : (w_sum_2 + w_6));
+    const float _e9 = to_f32_(k_3);
+    return ((_e9 * w_6) / total);
+}
+
 float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
 {
     float3 t0_ = ((bmin_1 - o) * inv_d);
@@ -706,32 +816,32 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 
 float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
 {
-    bool local_7 = (bool)0;
+    bool local_6 = (bool)0;
 
-    float3 n_11 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_11, n_11);
+    float3 n_16 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_16, n_16);
     if (!(!((l2_ > 0.0)))) {
-        local_7 = !((l2_ < 3e38));
+        local_6 = !((l2_ < 3e38));
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e17 = local_7;
+    bool _e17 = local_6;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_11 / (sqrt(l2_)).xxx);
+    return (n_16 / (sqrt(l2_)).xxx);
 }
 
-float3 face_against(float3 n_6, float3 dir)
+float3 face_against(float3 n_8, float3 dir)
 {
-    return ((dot(n_6, dir) > 0.0) ? -(n_6) : n_6);
+    return ((dot(n_8, dir) > 0.0) ? -(n_8) : n_8);
 }
 
-float3 barycentric(float3 p, float3 a_6, float3 b_5, float3 c_7)
+float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
 {
     float3 e1_1 = (b_5 - a_6);
     float3 e2_1 = (c_7 - a_6);
-    float3 q_2 = (p - a_6);
+    float3 q_2 = (p_2 - a_6);
     float d11_ = dot(e1_1, e1_1);
     float d12_ = dot(e1_1, e2_1);
     float d22_ = dot(e2_1, e2_1);
@@ -744,68 +854,68 @@ float3 barycentric(float3 p, float3 a_6, float3 b_5, float3 c_7)
     return float3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
-float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_5, float3 facing)
+float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_7, float3 facing)
 {
-    bool local_8 = (bool)0;
+    bool local_7 = (bool)0;
 
-    float3 s = (((n0_ * w_5.x) + (n1_ * w_5.y)) + (n2_ * w_5.z));
+    float3 s = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
     float l2_1 = dot(s, s);
     if (!(!((l2_1 > 1e-12)))) {
-        local_8 = !((l2_1 < 3e38));
+        local_7 = !((l2_1 < 3e38));
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e24 = local_8;
+    bool _e24 = local_7;
     if (_e24) {
         return facing;
     }
-    float3 n_12 = (s / (sqrt(l2_1)).xxx);
-    return ((dot(n_12, facing) < 0.0) ? -(n_12) : n_12);
+    float3 n_17 = (s / (sqrt(l2_1)).xxx);
+    return ((dot(n_17, facing) < 0.0) ? -(n_17) : n_17);
 }
 
 float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
 {
+    bool local_8 = (bool)0;
     bool local_9 = (bool)0;
     bool local_10 = (bool)0;
-    bool local_11 = (bool)0;
 
     float3 e1_2 = (b_6 - a_7);
     float3 e2_2 = (c_8 - a_7);
-    float3 p_1 = cross(d, e2_2);
-    float det = dot(e1_2, p_1);
+    float3 p_3 = cross(d, e2_2);
+    float det = dot(e1_2, p_3);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     float3 s_1 = (o_1 - a_7);
-    float u_2 = (dot(s_1, p_1) * inv);
+    float u_2 = (dot(s_1, p_3) * inv);
     if (!((u_2 < 0.0))) {
-        local_9 = (u_2 > 1.0);
+        local_8 = (u_2 > 1.0);
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e28 = local_9;
+    bool _e28 = local_8;
     if (_e28) {
         return -1.0;
     }
     float3 q_3 = cross(s_1, e1_2);
-    float v_8 = (dot(d, q_3) * inv);
-    if (!((v_8 < 0.0))) {
-        local_10 = ((u_2 + v_8) > 1.0);
+    float v_11 = (dot(d, q_3) * inv);
+    if (!((v_11 < 0.0))) {
+        local_9 = ((u_2 + v_11) > 1.0);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e42 = local_10;
+    bool _e42 = local_9;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_2, q_3) * inv);
     if ((t_3 > t_min)) {
-        local_11 = (t_3 < t_max_1);
+        local_10 = (t_3 < t_max_1);
     } else {
-        local_11 = false;
+        local_10 = false;
     }
-    bool _e51 = local_11;
+    bool _e51 = local_10;
     if (_e51) {
         return t_3;
     }
@@ -831,28 +941,28 @@ float mis_power(float pdf_a_1, float pdf_b_1)
     return (a2_ / s_3);
 }
 
-float light_strategy_pdf(float select_, float rt2_4, float d2_7, float area_1, float cos_y)
+float light_strategy_pdf(float select_, float rt2_6, float d2_8, float area_1, float cos_y)
 {
+    bool local_11 = (bool)0;
     bool local_12 = (bool)0;
-    bool local_13 = (bool)0;
 
-    if (!((d2_7 <= 0.0))) {
-        local_12 = (area_1 <= 0.0);
+    if (!((d2_8 <= 0.0))) {
+        local_11 = (area_1 <= 0.0);
+    } else {
+        local_11 = true;
+    }
+    bool _e13 = local_11;
+    if (!(_e13)) {
+        local_12 = (cos_y <= 0.0);
     } else {
         local_12 = true;
     }
-    bool _e13 = local_12;
-    if (!(_e13)) {
-        local_13 = (cos_y <= 0.0);
-    } else {
-        local_13 = true;
-    }
-    bool _e20 = local_13;
+    bool _e20 = local_12;
     if (_e20) {
         return 0.0;
     }
-    const float _e22 = rr_probability(rt2_4, d2_7);
-    const float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_7, cos_y);
+    const float _e22 = rr_probability(rt2_6, d2_8);
+    const float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_8, cos_y);
     return ((select_ * _e22) * _e26);
 }
 
@@ -866,21 +976,21 @@ float cosine_pdf(float cos_theta_1)
     return (max(cos_theta_1, 0.0) * INV_PI);
 }
 
-float3 cosine_direction(float3 n_7, float u1_1, float u2_1)
+float3 cosine_direction(float3 n_9, float u1_1, float u2_1)
 {
-    float s_4 = ((n_7.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_4 + n_7.z));
-    float b_9 = ((n_7.x * n_7.y) * a_12);
-    float3 t_4 = float3((1.0 + (((s_4 * n_7.x) * n_7.x) * a_12)), (s_4 * b_9), (-(s_4) * n_7.x));
-    float3 bt = float3(b_9, (s_4 + ((n_7.y * n_7.y) * a_12)), -(n_7.y));
+    float s_4 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_4 + n_9.z));
+    float b_9 = ((n_9.x * n_9.y) * a_12);
+    float3 t_4 = float3((1.0 + (((s_4 * n_9.x) * n_9.x) * a_12)), (s_4 * b_9), (-(s_4) * n_9.x));
+    float3 bt = float3(b_9, (s_4 + ((n_9.y * n_9.y) * a_12)), -(n_9.y));
     float r_6 = sqrt(u1_1);
-    float phi = (6.2831855 * u2_1);
-    return normalize((((t_4 * (r_6 * cos(phi))) + (bt * (r_6 * sin(phi)))) + (n_7 * sqrt(max((1.0 - u1_1), 0.0)))));
+    float phi_2 = (6.2831855 * u2_1);
+    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));
 }
 
-float bilateral_weight(float3 n_8, float3 nj, float z, float zj, float inv_sz)
+float bilateral_weight(float3 n_10, float3 nj, float z, float zj, float inv_sz)
 {
-    float dn = max(dot(n_8, nj), 0.0);
+    float dn = max(dot(n_10, nj), 0.0);
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
@@ -893,9 +1003,9 @@ uint naga_mod(uint lhs, uint rhs) {
     return lhs % (rhs == 0u ? 1u : rhs);
 }
 
-uint interleave_subset(uint x_7, uint y_1, uint period)
+uint interleave_subset(uint x_9, uint y_1, uint period)
 {
-    return ((naga_mod(y_1, period) * period) + naga_mod(x_7, period));
+    return ((naga_mod(y_1, period) * period) + naga_mod(x_9, period));
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -915,9 +1025,9 @@ uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2)
     return ((naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets));
 }
 
-float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_6, float h_1)
+float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_8, float h_1)
 {
-    float sx = (((2.0 * px) / w_6) - 1.0);
+    float sx = (((2.0 * px) / w_8) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h_1));
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
@@ -942,9 +1052,9 @@ uint light_map_texel(float a_8, uint size_2)
     return _e14;
 }
 
-float light_map_depth(float3 rel, float3 axis, bool perspective)
+float light_map_depth(float3 rel, float3 axis_2, bool perspective)
 {
-    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis));
+    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis_2));
 }
 
 float rsm_texel_solid_angle(float texel_area, float cos_axis)
@@ -952,17 +1062,17 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-float3 point_irradiance(float3 intensity_1, float3 n_9, float3 v_2)
+float3 point_irradiance(float3 intensity_1, float3 n_11, float3 v_3)
 {
-    float d2_8 = dot(v_2, v_2);
-    float cos_x_1 = (dot(n_9, v_2) / sqrt(max(d2_8, MIN_D2_)));
-    const float _e11 = inverse_square(d2_8);
+    float d2_10 = dot(v_3, v_3);
+    float cos_x_1 = (dot(n_11, v_3) / sqrt(max(d2_10, MIN_D2_)));
+    const float _e11 = inverse_square(d2_10);
     return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
 }
 
-float3 directional_irradiance(float3 e, float3 n_10, float3 to_light)
+float3 directional_irradiance(float3 e, float3 n_12, float3 to_light)
 {
-    return (e * max(dot(n_10, to_light), 0.0));
+    return (e * max(dot(n_12, to_light), 0.0));
 }
 
 float shadow_bias(float texel, float cos_light_1)
@@ -973,14 +1083,14 @@ float shadow_bias(float texel, float cos_light_1)
 
 bool shadow_lit(float d_1, float d_map, float bias)
 {
-    bool local_14 = (bool)0;
+    bool local_13 = (bool)0;
 
     if (!((d_map <= 0.0))) {
-        local_14 = (d_1 <= (d_map + bias));
+        local_13 = (d_1 <= (d_map + bias));
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e11 = local_14;
+    bool _e11 = local_13;
     return _e11;
 }
 
@@ -989,7 +1099,7 @@ float3 diffuse_radiance(float3 albedo, float3 emission, float3 e_1)
     return (emission + ((albedo * INV_PI) * e_1));
 }
 
-float3 light_intensity(GpuLight l, float3 w_7)
+float3 light_intensity(GpuLight l, float3 w_9)
 {
     switch(l.kind) {
         case 0u: {
@@ -997,7 +1107,7 @@ float3 light_intensity(GpuLight l, float3 w_7)
         }
         case 3u: {
             const float3 _e8 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            const float _e10 = triangle_lobe(_e8, l.a, w_7);
+            const float _e10 = triangle_lobe(_e8, l.a, w_9);
             return (l.intensity * _e10);
         }
         default: {
@@ -1080,12 +1190,12 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         uint _e30 = node;
-        GpuGeoNode n_13 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e30*32+0)), asuint(geo_nodes.Load(_e30*32+12)), asfloat(geo_nodes.Load3(_e30*32+16)), asuint(geo_nodes.Load(_e30*32+28)));
+        GpuGeoNode n_18 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e30*32+0)), asuint(geo_nodes.Load(_e30*32+12)), asfloat(geo_nodes.Load3(_e30*32+16)), asuint(geo_nodes.Load(_e30*32+28)));
         float _e36 = hit.t;
-        const float _e37 = ray_aabb(o_2, inv_d_1, n_13.bmin, n_13.bmax, _e36);
+        const float _e37 = ray_aabb(o_2, inv_d_1, n_18.bmin, n_18.bmax, _e36);
         if ((_e37 >= 0.0)) {
-            if ((n_13.count > 0u)) {
-                i_2 = n_13.first;
+            if ((n_18.count > 0u)) {
+                i_2 = n_18.first;
                 uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1097,7 +1207,7 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e45 = i_2;
-                    if ((_e45 < (n_13.first + n_13.count))) {
+                    if ((_e45 < (n_18.first + n_18.count))) {
                     } else {
                         break;
                     }
@@ -1122,11 +1232,11 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
                 uint _e69 = sp;
                 if ((_e69 < 64u)) {
                     uint _e72 = sp;
-                    stack[min(uint(_e72), 63u)] = (n_13.first + 1u);
+                    stack[min(uint(_e72), 63u)] = (n_18.first + 1u);
                     uint _e77 = sp;
                     sp = (_e77 + 1u);
                 }
-                node = n_13.first;
+                node = n_18.first;
                 continue;
             }
         }
@@ -1163,10 +1273,29 @@ float mis_weight(float pdf_a_2, float pdf_b_2)
     return _e2;
 }
 
-float select_pdf(uint li, uint others)
+float light_weight(uint li, float3 x_10, float3 n_13)
 {
-    const float _e5 = reservoir_weight((others + 1u), K);
-    return (1.0 / _e5);
+    float4 a_13 = asfloat(light_cones.Load4((3u * li)*16));
+    float4 b_10 = asfloat(light_cones.Load4(((3u * li) + 1u)*16));
+    float4 c_13 = asfloat(light_cones.Load4(((3u * li) + 2u)*16));
+    float _e30 = asfloat(rt2_7.Load(li*4));
+    const float _e31 = cone_weight(a_13.xyz, a_13.w, c_13.x, b_10.xyz, b_10.w, c_13.y, _e30, x_10, n_13);
+    return _e31;
+}
+
+float select_pdf(uint li_1, float3 x_11, float3 n_14, uint nee, bool in_range_1)
+{
+    bool local_14 = (bool)0;
+
+    if (in_range_1) {
+        local_14 = (nee > 0u);
+    } else {
+        local_14 = false;
+    }
+    bool _e12 = local_14;
+    uint others = (nee - (_e12 ? 1u : 0u));
+    const float _e18 = reservoir_weight((others + 1u), K);
+    return (1.0 / _e18);
 }
 
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
@@ -1182,23 +1311,23 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-float light_pdf(uint li_1, float3 x_8, float3 y_2, uint others_1)
+float light_pdf(uint li_2, float3 x_12, float3 n_15, float3 y_2, uint nee_1, bool in_range_2)
 {
-    GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(li_1*64+0)), asuint(lights.Load(li_1*64+12)), asfloat(lights.Load3(li_1*64+16)), asfloat(lights.Load(li_1*64+28)), asfloat(lights.Load3(li_1*64+32)), asfloat(lights.Load(li_1*64+44)), asfloat(lights.Load3(li_1*64+48)), asuint(lights.Load(li_1*64+60)));
-    float3 v_9 = (x_8 - y_2);
-    float d2_9 = dot(v_9, v_9);
-    const float3 _e9 = light_normal(l_4);
-    float cos_y_1 = ((d2_9 > 0.0) ? dot(_e9, (v_9 / (sqrt(d2_9)).xxx)) : 0.0);
-    const float _e18 = select_pdf(li_1, others_1);
-    float _e21 = asfloat(rt2_5.Load(li_1*4));
-    const float _e22 = light_area(l_4);
-    const float _e23 = light_strategy_pdf(_e18, _e21, d2_9, _e22, cos_y_1);
-    return _e23;
+    GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
+    float3 v_12 = (x_12 - y_2);
+    float d2_11 = dot(v_12, v_12);
+    const float3 _e11 = light_normal(l_4);
+    float cos_y_1 = ((d2_11 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_11)).xxx)) : 0.0);
+    const float _e20 = select_pdf(li_2, x_12, n_15, nee_1, in_range_2);
+    float _e23 = asfloat(rt2_7.Load(li_2*4));
+    const float _e24 = light_area(l_4);
+    const float _e25 = light_strategy_pdf(_e20, _e23, d2_11, _e24, cos_y_1);
+    return _e25;
 }
 
-bool finite3_(float3 v_3)
+bool finite3_(float3 v_4)
 {
-    return all((abs(v_3) <= (3.4028235e38).xxx));
+    return all((abs(v_4) <= (3.4028235e38).xxx));
 }
 
 float next_uniform(inout uint state)
@@ -1211,7 +1340,7 @@ float next_uniform(inout uint state)
     return _e4;
 }
 
-GpuPathState ConstructGpuPathState(float3 arg0, uint arg1, float3 arg2, uint arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
+GpuPathState ConstructGpuPathState(float3 arg0, uint arg1, float3 arg2, uint arg3, float3 arg4, float arg5, float3 arg6, uint arg7, float3 arg8, uint arg9) {
     GpuPathState ret = (GpuPathState)0;
     ret.origin = arg0;
     ret.alive = arg1;
@@ -1221,6 +1350,8 @@ GpuPathState ConstructGpuPathState(float3 arg0, uint arg1, float3 arg2, uint arg
     ret.pdf_bsdf = arg5;
     ret.prev = arg6;
     ret.pad = arg7;
+    ret.prev_normal = arg8;
+    ret.pad2_ = arg9;
     return ret;
 }
 
@@ -1243,11 +1374,10 @@ void main(uint3 gid : SV_DispatchThreadID)
     GpuPathVertex v = (GpuPathVertex)0;
     bool local = (bool)0;
     float w = 1.0;
-    bool local_1 = (bool)0;
     uint rng = (uint)0;
+    bool local_1 = (bool)0;
     bool local_2 = (bool)0;
     bool local_3 = (bool)0;
-    bool local_4 = (bool)0;
 
     uint i_3 = gid.x;
     uint _e4 = params.width;
@@ -1288,7 +1418,7 @@ void main(uint3 gid : SV_DispatchThreadID)
         float3 _e87 = params.cam_pos;
         st.prev = _e87;
     } else {
-        GpuPathState _e90 = ConstructGpuPathState(asfloat(paths.Load3(i_3*64+0)), asuint(paths.Load(i_3*64+12)), asfloat(paths.Load3(i_3*64+16)), asuint(paths.Load(i_3*64+28)), asfloat(paths.Load3(i_3*64+32)), asfloat(paths.Load(i_3*64+44)), asfloat(paths.Load3(i_3*64+48)), asuint(paths.Load(i_3*64+60)));
+        GpuPathState _e90 = ConstructGpuPathState(asfloat(paths.Load3(i_3*80+0)), asuint(paths.Load(i_3*80+12)), asfloat(paths.Load3(i_3*80+16)), asuint(paths.Load(i_3*80+28)), asfloat(paths.Load3(i_3*80+32)), asfloat(paths.Load(i_3*80+44)), asfloat(paths.Load3(i_3*80+48)), asuint(paths.Load(i_3*80+60)), asfloat(paths.Load3(i_3*80+64)), asuint(paths.Load(i_3*80+76)));
         st = _e90;
     }
     v.alive = 0u;
@@ -1317,14 +1447,16 @@ void main(uint3 gid : SV_DispatchThreadID)
         GpuPathState _e118 = st;
         {
             GpuPathState _value3 = _e118;
-            paths.Store3(i_3*64+0, asuint(_value3.origin));
-            paths.Store(i_3*64+12, asuint(_value3.alive));
-            paths.Store3(i_3*64+16, asuint(_value3.dir));
-            paths.Store(i_3*64+28, asuint(_value3.rng));
-            paths.Store3(i_3*64+32, asuint(_value3.beta));
-            paths.Store(i_3*64+44, asuint(_value3.pdf_bsdf));
-            paths.Store3(i_3*64+48, asuint(_value3.prev));
-            paths.Store(i_3*64+60, asuint(_value3.pad));
+            paths.Store3(i_3*80+0, asuint(_value3.origin));
+            paths.Store(i_3*80+12, asuint(_value3.alive));
+            paths.Store3(i_3*80+16, asuint(_value3.dir));
+            paths.Store(i_3*80+28, asuint(_value3.rng));
+            paths.Store3(i_3*80+32, asuint(_value3.beta));
+            paths.Store(i_3*80+44, asuint(_value3.pdf_bsdf));
+            paths.Store3(i_3*80+48, asuint(_value3.prev));
+            paths.Store(i_3*80+60, asuint(_value3.pad));
+            paths.Store3(i_3*80+64, asuint(_value3.prev_normal));
+            paths.Store(i_3*80+76, asuint(_value3.pad2_));
         }
         GpuPathVertex _e121 = v;
         {
@@ -1343,15 +1475,15 @@ void main(uint3 gid : SV_DispatchThreadID)
     GpuTriangle tri = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e110.tri*48+0)), asuint(geo_tris.Load(_e110.tri*48+12)), asfloat(geo_tris.Load3(_e110.tri*48+16)), asuint(geo_tris.Load(_e110.tri*48+28)), asfloat(geo_tris.Load3(_e110.tri*48+32)), asuint(geo_tris.Load(_e110.tri*48+44)));
     float3 _e127 = st.origin;
     float3 _e129 = st.dir;
-    float3 x_9 = (_e127 + (_e129 * _e110.t));
+    float3 x_13 = (_e127 + (_e129 * _e110.t));
     const float3 _e136 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     float3 _e138 = st.dir;
     const float3 _e139 = face_against(_e136, _e138);
-    uint b_10 = (_e110.tri * 3u);
-    float4 _e145 = asfloat(geo_normals.Load4(b_10*16));
-    float4 _e151 = asfloat(geo_normals.Load4((b_10 + 1u)*16));
-    float4 _e157 = asfloat(geo_normals.Load4((b_10 + 2u)*16));
-    const float3 _e162 = barycentric(x_9, tri.v0_, tri.v1_, tri.v2_);
+    uint b_11 = (_e110.tri * 3u);
+    float4 _e145 = asfloat(geo_normals.Load4(b_11*16));
+    float4 _e151 = asfloat(geo_normals.Load4((b_11 + 1u)*16));
+    float4 _e157 = asfloat(geo_normals.Load4((b_11 + 2u)*16));
+    const float3 _e162 = barycentric(x_13, tri.v0_, tri.v1_, tri.v2_);
     const float3 _e163 = shading_normal(_e145.xyz, _e151.xyz, _e157.xyz, _e162, _e139);
     if ((tri.light != NO_LIGHT)) {
         float3 _e170 = st.dir;
@@ -1365,44 +1497,38 @@ void main(uint3 gid : SV_DispatchThreadID)
         if ((_e179 > 0.0)) {
             uint _e186 = asuint(light_leaf.Load(tri.light*4));
             BshNode leaf = ConstructBshNode(asfloat(bsh_nodes.Load3(_e186*32+0)), asfloat(bsh_nodes.Load(_e186*32+12)), asuint(bsh_nodes.Load(_e186*32+16)), asuint(bsh_nodes.Load(_e186*32+20)), asuint(bsh_nodes.Load(_e186*32+24)), asuint(bsh_nodes.Load(_e186*32+28)));
-            uint seen = asuint(candidates.Load(i_3*4));
-            float3 _e195 = st.prev;
-            const bool _e196 = sphere_contains_point(leaf.center_, leaf.radius, _e195);
-            if (_e196) {
-                local_1 = (seen > 0u);
-            } else {
-                local_1 = false;
-            }
-            bool _e204 = local_1;
-            uint others_2 = (seen - (_e204 ? 1u : 0u));
-            float _e208 = st.pdf_bsdf;
-            float3 _e211 = st.prev;
-            const float _e212 = light_pdf(tri.light, _e211, x_9, others_2);
-            const float _e213 = mis_weight(_e208, _e212);
-            w = _e213;
+            float3 _e192 = st.prev;
+            const bool _e193 = sphere_contains_point(leaf.center_, leaf.radius, _e192);
+            float _e195 = st.pdf_bsdf;
+            float3 _e198 = st.prev;
+            float3 _e200 = st.prev_normal;
+            uint _e203 = asuint(candidates.Load(i_3*4));
+            const float _e204 = light_pdf(tri.light, _e198, _e200, x_13, _e203, _e193);
+            const float _e205 = mis_weight(_e195, _e204);
+            w = _e205;
         }
-        float3 _e215 = st.beta;
-        float3 _e220 = asfloat(lights.Load3(48+tri.light*64));
-        float _e222 = w;
-        float3 add = ((_e215 * _e220) * _e222);
-        const bool _e224 = finite3_(add);
-        if (_e224) {
-            float4 _e227 = asfloat(radiance.Load4(i_3*16));
-            radiance.Store4(i_3*16, asuint((_e227 + float4(add, 0.0))));
+        float3 _e207 = st.beta;
+        float3 _e212 = asfloat(lights.Load3(48+tri.light*64));
+        float _e214 = w;
+        float3 add = ((_e207 * _e212) * _e214);
+        const bool _e216 = finite3_(add);
+        if (_e216) {
+            float4 _e219 = asfloat(radiance.Load4(i_3*16));
+            radiance.Store4(i_3*16, asuint((_e219 + float4(add, 0.0))));
         }
     }
-    float4 _e234 = asfloat(albedo_1.Load4(tri.material*16));
-    float3 rho_1 = _e234.xyz;
-    v.position = x_9;
+    float4 _e226 = asfloat(albedo_1.Load4(tri.material*16));
+    float3 rho_1 = _e226.xyz;
+    v.position = x_13;
     v.normal = _e163;
     v.gnormal = _e139;
-    float3 _e241 = st.beta;
-    const float3 _e242 = lambert_brdf(rho_1);
-    v.weight = (_e241 * _e242);
+    float3 _e233 = st.beta;
+    const float3 _e234 = lambert_brdf(rho_1);
+    v.weight = (_e233 * _e234);
     v.alive = 1u;
-    GpuPathVertex _e248 = v;
+    GpuPathVertex _e240 = v;
     {
-        GpuPathVertex _value2 = _e248;
+        GpuPathVertex _value2 = _e240;
         vertices_.Store3(i_3*64+0, asuint(_value2.position));
         vertices_.Store(i_3*64+12, asuint(_value2.alive));
         vertices_.Store3(i_3*64+16, asuint(_value2.normal));
@@ -1412,69 +1538,72 @@ void main(uint3 gid : SV_DispatchThreadID)
         vertices_.Store3(i_3*64+48, asuint(_value2.gnormal));
         vertices_.Store(i_3*64+60, asuint(_value2.pad2_));
     }
-    uint _e250 = st.rng;
-    rng = _e250;
-    const float _e252 = next_uniform(rng);
-    const float _e253 = next_uniform(rng);
-    const float3 _e254 = cosine_direction(_e163, _e252, _e253);
-    float cos_o = dot(_e254, _e163);
-    float3 _e257 = st.beta;
-    st.beta = (_e257 * rho_1);
-    st.prev = x_9;
-    const float _e261 = cosine_pdf(cos_o);
-    st.pdf_bsdf = _e261;
-    float _e265 = params.eps;
-    st.origin = (x_9 + (_e139 * _e265));
-    st.dir = _e254;
-    if (!((cos_o <= 0.0))) {
-        local_2 = (dot(_e254, _e139) <= 0.0);
+    uint _e242 = st.rng;
+    rng = _e242;
+    const float _e244 = next_uniform(rng);
+    const float _e245 = next_uniform(rng);
+    const float3 _e246 = cosine_direction(_e163, _e244, _e245);
+    float cos_o_2 = dot(_e246, _e163);
+    float3 _e249 = st.beta;
+    st.beta = (_e249 * rho_1);
+    st.prev = x_13;
+    st.prev_normal = _e163;
+    const float _e254 = cosine_pdf(cos_o_2);
+    st.pdf_bsdf = _e254;
+    float _e258 = params.eps;
+    st.origin = (x_13 + (_e139 * _e258));
+    st.dir = _e246;
+    if (!((cos_o_2 <= 0.0))) {
+        local_1 = (dot(_e246, _e139) <= 0.0);
+    } else {
+        local_1 = true;
+    }
+    bool _e271 = local_1;
+    if (!(_e271)) {
+        uint _e277 = params.depth;
+        uint _e282 = params.max_depth;
+        local_2 = ((_e277 + 1u) >= _e282);
     } else {
         local_2 = true;
     }
-    bool _e278 = local_2;
-    if (!(_e278)) {
-        uint _e284 = params.depth;
-        uint _e289 = params.max_depth;
-        local_3 = ((_e284 + 1u) >= _e289);
-    } else {
-        local_3 = true;
-    }
-    bool _e292 = local_3;
-    if (_e292) {
+    bool _e285 = local_2;
+    if (_e285) {
         st.alive = 0u;
     }
-    uint _e297 = params.depth;
-    if ((_e297 >= 2u)) {
-        uint _e303 = st.alive;
-        local_4 = (_e303 == 1u);
+    uint _e290 = params.depth;
+    if ((_e290 >= 2u)) {
+        uint _e296 = st.alive;
+        local_3 = (_e296 == 1u);
     } else {
-        local_4 = false;
+        local_3 = false;
     }
-    bool _e307 = local_4;
-    if (_e307) {
-        float3 _e309 = st.beta;
-        const float _e310 = path_survival(_e309);
-        const float _e311 = next_uniform(rng);
-        if ((_e311 >= _e310)) {
+    bool _e300 = local_3;
+    if (_e300) {
+        float3 _e302 = st.beta;
+        const float _e303 = path_survival(_e302);
+        const float _e304 = next_uniform(rng);
+        if ((_e304 >= _e303)) {
             st.alive = 0u;
         } else {
-            float3 _e316 = st.beta;
-            st.beta = (_e316 / (_e310).xxx);
+            float3 _e309 = st.beta;
+            st.beta = (_e309 / (_e303).xxx);
         }
     }
-    uint _e320 = rng;
-    st.rng = _e320;
-    GpuPathState _e323 = st;
+    uint _e313 = rng;
+    st.rng = _e313;
+    GpuPathState _e316 = st;
     {
-        GpuPathState _value2 = _e323;
-        paths.Store3(i_3*64+0, asuint(_value2.origin));
-        paths.Store(i_3*64+12, asuint(_value2.alive));
-        paths.Store3(i_3*64+16, asuint(_value2.dir));
-        paths.Store(i_3*64+28, asuint(_value2.rng));
-        paths.Store3(i_3*64+32, asuint(_value2.beta));
-        paths.Store(i_3*64+44, asuint(_value2.pdf_bsdf));
-        paths.Store3(i_3*64+48, asuint(_value2.prev));
-        paths.Store(i_3*64+60, asuint(_value2.pad));
+        GpuPathState _value2 = _e316;
+        paths.Store3(i_3*80+0, asuint(_value2.origin));
+        paths.Store(i_3*80+12, asuint(_value2.alive));
+        paths.Store3(i_3*80+16, asuint(_value2.dir));
+        paths.Store(i_3*80+28, asuint(_value2.rng));
+        paths.Store3(i_3*80+32, asuint(_value2.beta));
+        paths.Store(i_3*80+44, asuint(_value2.pdf_bsdf));
+        paths.Store3(i_3*80+48, asuint(_value2.prev));
+        paths.Store(i_3*80+60, asuint(_value2.pad));
+        paths.Store3(i_3*80+64, asuint(_value2.prev_normal));
+        paths.Store(i_3*80+76, asuint(_value2.pad2_));
     }
     return;
 }

@@ -11,7 +11,7 @@ struct _mslBufferSizes {
     uint size3;
     uint size4;
     uint size5;
-    uint size7;
+    uint size6;
     uint size8;
     uint size9;
     uint size10;
@@ -19,6 +19,7 @@ struct _mslBufferSizes {
     uint size12;
     uint size13;
     uint size14;
+    uint size15;
 };
 
 struct GpuLight {
@@ -64,6 +65,8 @@ struct GpuPathState {
     float pdf_bsdf;
     metal::packed_float3 prev;
     uint pad;
+    metal::packed_float3 prev_normal;
+    uint pad2_;
 };
 struct PtParams {
     metal::packed_float3 cam_pos;
@@ -264,16 +267,39 @@ uint pcg_hash(
     return (_e12 >> 22u) ^ _e12;
 }
 
+uint reverse_bits(
+    uint x_2
+) {
+    uint v_1 = {};
+    v_1 = ((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u);
+    uint _e11 = v_1;
+    uint _e16 = v_1;
+    v_1 = ((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u);
+    uint _e22 = v_1;
+    uint _e27 = v_1;
+    v_1 = ((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u);
+    uint _e33 = v_1;
+    uint _e38 = v_1;
+    v_1 = ((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u);
+    uint _e44 = v_1;
+    uint _e49 = v_1;
+    v_1 = ((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u);
+    uint _e55 = v_1;
+    return _e55;
+}
+
 float xi_for(
     uint seed,
     uint frame,
     uint light
 ) {
     uint _e3 = pcg_hash(seed);
-    uint _e5 = pcg_hash(_e3 ^ frame);
-    uint _e7 = pcg_hash(_e5 ^ light);
-    float _e8 = xi_from_bits(_e7);
-    return _e8;
+    uint _e4 = pcg_hash(_e3);
+    uint _e6 = pcg_hash(_e4 ^ light);
+    uint _e7 = reverse_bits(frame);
+    uint _e8 = add_wrap_u32_(_e6, _e7);
+    float _e9 = xi_from_bits(_e8);
+    return _e9;
 }
 
 float rr_probability(
@@ -342,17 +368,17 @@ float windowed_falloff(
     float range2_
 ) {
     float q = d2_3 / range2_;
-    float w_8 = metal::saturate(1.0 - (q * q));
-    return (w_8 * w_8) / metal::max(d2_3, 0.0001);
+    float w_10 = metal::saturate(1.0 - (q * q));
+    return (w_10 * w_10) / metal::max(d2_3, 0.0001);
 }
 
 bool sphere_contains_point(
     metal::float3 c,
     float r,
-    metal::float3 x_2
+    metal::float3 x_3
 ) {
-    metal::float3 v_4 = x_2 - c;
-    return metal::dot(v_4, v_4) <= (r * r);
+    metal::float3 v_5 = x_3 - c;
+    return metal::dot(v_5, v_5) <= (r * r);
 }
 
 bool sphere_overlaps_sphere(
@@ -361,9 +387,9 @@ bool sphere_overlaps_sphere(
     metal::float3 c2_,
     float r2_2
 ) {
-    metal::float3 v_5 = c2_ - c1_;
+    metal::float3 v_6 = c2_ - c1_;
     float r_3 = r1_ + r2_2;
-    return metal::dot(v_5, v_5) <= (r_3 * r_3);
+    return metal::dot(v_6, v_6) <= (r_3 * r_3);
 }
 
 float sphere_pad(
@@ -379,9 +405,9 @@ metal::float4 sphere_union(
     metal::float3 c2_1,
     float r2_3
 ) {
-    bool local_5 = {};
-    metal::float3 v_6 = c2_1 - c1_1;
-    float d_3 = metal::sqrt(metal::dot(v_6, v_6));
+    bool local_4 = {};
+    metal::float3 v_7 = c2_1 - c1_1;
+    float d_3 = metal::sqrt(metal::dot(v_7, v_7));
     float _e8 = sphere_pad(r1_1, c1_1);
     if (r1_1 >= ((d_3 + r2_3) + _e8)) {
         return metal::float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
@@ -391,11 +417,11 @@ metal::float4 sphere_union(
         return metal::float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
     if (!((d_3 >= SPHERE_HUGE))) {
-        local_5 = (0.5 * ((d_3 + r1_1) + r2_3)) >= SPHERE_HUGE;
+        local_4 = (0.5 * ((d_3 + r1_1) + r2_3)) >= SPHERE_HUGE;
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e35 = local_5;
+    bool _e35 = local_4;
     if (_e35) {
         return metal::float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
@@ -410,7 +436,7 @@ metal::float4 sphere_union(
         return metal::float4(c2_1.x, c2_1.y, c2_1.z, rm + _e58);
     }
     float r0_ = 0.5 * ((d_3 + r1_1) + r2_3);
-    metal::float3 c_9 = c1_1 + (v_6 * ((r0_ - r1_1) / d_3));
+    metal::float3 c_9 = c1_1 + (v_7 * ((r0_ - r1_1) / d_3));
     metal::float3 e1_ = c_9 - c1_1;
     metal::float3 e2_ = c_9 - c2_1;
     float r_4 = metal::max(r0_, metal::max(metal::sqrt(metal::dot(e1_, e1_)) + r1_1, metal::sqrt(metal::dot(e2_, e2_)) + r2_3));
@@ -425,8 +451,8 @@ bool sphere_overlaps_aabb(
     metal::float3 bmax
 ) {
     metal::float3 q_1 = metal::clamp(c_2, bmin, bmax);
-    metal::float3 v_7 = q_1 - c_2;
-    return metal::dot(v_7, v_7) <= (r_2 * r_2);
+    metal::float3 v_8 = q_1 - c_2;
+    return metal::dot(v_8, v_8) <= (r_2 * r_2);
 }
 
 float vpl_rt2_(
@@ -474,11 +500,11 @@ float vpl_lobe(
 float vpl_transfer(
     metal::float3 n_l,
     metal::float3 n_x,
-    metal::float3 v_1,
+    metal::float3 v_2,
     float min_d2_
 ) {
-    float m = metal::max(metal::dot(v_1, v_1), min_d2_);
-    return ((metal::max(metal::dot(n_l, v_1), 0.0) * metal::max(-(metal::dot(n_x, v_1)), 0.0)) * INV_PI) / (m * m);
+    float m = metal::max(metal::dot(v_2, v_2), min_d2_);
+    return ((metal::max(metal::dot(n_l, v_2), 0.0) * metal::max(-(metal::dot(n_x, v_2)), 0.0)) * INV_PI) / (m * m);
 }
 
 float spot_falloff(
@@ -527,11 +553,11 @@ float area_to_solid_angle_pdf(
 }
 
 float atan_portable(
-    float x_3
+    float x_4
 ) {
     float base = 0.0;
     float t = {};
-    float a_10 = metal::abs(x_3);
+    float a_10 = metal::abs(x_4);
     t = a_10;
     if (a_10 > 2.4142137) {
         base = 1.5707964;
@@ -549,14 +575,14 @@ float atan_portable(
     float _e33 = t;
     float _e35 = t;
     float r_5 = _e21 + (((((((((0.080537446 * z_1) - 0.13877685) * z_1) + 0.19977711) * z_1) - 0.3333295) * z_1) * _e33) + _e35);
-    return (x_3 < 0.0) ? -(r_5) : r_5;
+    return (x_4 < 0.0) ? -(r_5) : r_5;
 }
 
 float atan2_portable(
     float y,
-    float x_4
+    float x_5
 ) {
-    if (x_4 == 0.0) {
+    if (x_5 == 0.0) {
         if (y > 0.0) {
             return 1.5707964;
         }
@@ -565,8 +591,8 @@ float atan2_portable(
         }
         return 0.0;
     }
-    float _e12 = atan_portable(y / x_4);
-    if (x_4 > 0.0) {
+    float _e12 = atan_portable(y / x_5);
+    if (x_5 > 0.0) {
         return _e12;
     }
     if (y >= 0.0) {
@@ -631,7 +657,7 @@ uint ies_segment(
     Table tab_1,
     uint start,
     uint n_2,
-    float x_5,
+    float x_6,
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -656,7 +682,7 @@ uint ies_segment(
             uint _e18 = hi;
             uint mid = (_e17 + _e18) >> 1u;
             float _e23 = at(tab_1, start + mid, slc_table, _buffer_sizes);
-            if (_e23 <= x_5) {
+            if (_e23 <= x_6) {
                 lo = mid;
             } else {
                 hi = mid;
@@ -670,12 +696,12 @@ uint ies_segment(
 float ies_lerp_t(
     float a0_,
     float a1_,
-    float x_6
+    float x_7
 ) {
     if (a1_ <= a0_) {
         return 0.0;
     }
-    return metal::saturate((x_6 - a0_) / (a1_ - a0_));
+    return metal::saturate((x_7 - a0_) / (a1_ - a0_));
 }
 
 float ies_candela(
@@ -686,7 +712,7 @@ float ies_candela(
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_6 = {};
+    bool local_5 = {};
     float _e4 = at(tab_2, base_1, slc_table, _buffer_sizes);
     uint _e5 = to_u32_(_e4);
     float _e8 = at(tab_2, base_1 + 1u, slc_table, _buffer_sizes);
@@ -697,11 +723,11 @@ float ies_candela(
     float _e14 = at(tab_2, v0_, slc_table, _buffer_sizes);
     if (!((gamma < _e14))) {
         float _e22 = at(tab_2, (v0_ + _e5) - 1u, slc_table, _buffer_sizes);
-        local_6 = gamma > _e22;
+        local_5 = gamma > _e22;
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e25 = local_6;
+    bool _e25 = local_5;
     if (_e25) {
         return 0.0;
     }
@@ -808,6 +834,125 @@ bool weighted_replace(
     return (u_1 * w_sum) < w_4;
 }
 
+float weighted_pick_weight(
+    float w_sum_1,
+    float w_5,
+    uint k_2
+) {
+    float _e3 = to_f32_(k_2);
+    return w_sum_1 / (_e3 * w_5);
+}
+
+float cos_sub_clamped(
+    float sin_a,
+    float cos_a,
+    float sin_b,
+    float cos_b
+) {
+    if (cos_a > cos_b) {
+        return 1.0;
+    }
+    return (cos_a * cos_b) + (sin_a * sin_b);
+}
+
+float sin_sub_clamped(
+    float sin_a_1,
+    float cos_a_1,
+    float sin_b_1,
+    float cos_b_1
+) {
+    if (cos_a_1 > cos_b_1) {
+        return 0.0;
+    }
+    return (sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1);
+}
+
+float safe_sqrt(
+    float x_8
+) {
+    return metal::sqrt(metal::max(x_8, 0.0));
+}
+
+float light_importance(
+    metal::float3 center,
+    float radius,
+    float phi,
+    metal::float3 axis,
+    float cos_o,
+    float cos_e,
+    metal::float3 p,
+    metal::float3 n_6
+) {
+    float imp = {};
+    metal::float3 v_9 = p - center;
+    float dist2_ = metal::dot(v_9, v_9);
+    float r2_5 = radius * radius;
+    float d2_9 = metal::max(metal::max(dist2_, r2_5), MIN_D2_);
+    metal::float3 wi = (dist2_ > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
+    float cos_w = metal::dot(axis, wi);
+    float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
+    float _e32 = safe_sqrt(1.0 - (r2_5 / dist2_));
+    float cos_b_2 = (dist2_ <= r2_5) ? -1.0 : _e32;
+    float _e39 = safe_sqrt(1.0 - (cos_b_2 * cos_b_2));
+    float _e43 = safe_sqrt(1.0 - (cos_o * cos_o));
+    float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
+    float _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
+    float _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
+    if (_e46 <= cos_e) {
+        return 0.0;
+    }
+    imp = (phi * _e46) / d2_9;
+    if (metal::dot(n_6, n_6) > 0.0) {
+        float cos_i = -(metal::dot(wi, n_6));
+        float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
+        float _e61 = imp;
+        float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
+        imp = _e61 * metal::max(_e62, 0.0);
+    }
+    float _e66 = imp;
+    return metal::max(_e66, 0.0);
+}
+
+float candidate_weight(
+    float importance,
+    float rt2_4,
+    float d2_7
+) {
+    float _e3 = slc_weight(rt2_4, d2_7);
+    return importance * _e3;
+}
+
+float cone_weight(
+    metal::float3 center_1,
+    float radius_1,
+    float phi_1,
+    metal::float3 axis_1,
+    float cos_o_1,
+    float cos_e_1,
+    float rt2_5,
+    metal::float3 p_1,
+    metal::float3 n_7
+) {
+    metal::float3 v_10 = p_1 - center_1;
+    float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_7);
+    float _e14 = candidate_weight(_e10 * INV_PI, rt2_5, metal::dot(v_10, v_10));
+    return _e14;
+}
+
+float weighted_select_pdf(
+    float w_6,
+    float w_sum_2,
+    bool in_range,
+    uint k_3
+) {
+    if (w_6 <= 0.0) {
+        return 0.0;
+    }
+    float total = in_range ? w_sum_2 : (w_sum_2 + w_6);
+    float _e9 = to_f32_(k_3);
+    return (_e9 * w_6) / total;
+}
+
 float ray_aabb(
     metal::float3 o,
     metal::float3 inv_d,
@@ -832,37 +977,37 @@ metal::float3 triangle_normal(
     metal::float3 b_4,
     metal::float3 c_6
 ) {
-    bool local_7 = {};
-    metal::float3 n_11 = metal::cross(b_4 - a_5, c_6 - a_5);
-    float l2_ = metal::dot(n_11, n_11);
+    bool local_6 = {};
+    metal::float3 n_16 = metal::cross(b_4 - a_5, c_6 - a_5);
+    float l2_ = metal::dot(n_16, n_16);
     if (!(!((l2_ > 0.0)))) {
-        local_7 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_6 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e17 = local_7;
+    bool _e17 = local_6;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_11 / metal::float3(metal::sqrt(l2_));
+    return n_16 / metal::float3(metal::sqrt(l2_));
 }
 
 metal::float3 face_against(
-    metal::float3 n_6,
+    metal::float3 n_8,
     metal::float3 dir
 ) {
-    return (metal::dot(n_6, dir) > 0.0) ? -(n_6) : n_6;
+    return (metal::dot(n_8, dir) > 0.0) ? -(n_8) : n_8;
 }
 
 metal::float3 barycentric(
-    metal::float3 p,
+    metal::float3 p_2,
     metal::float3 a_6,
     metal::float3 b_5,
     metal::float3 c_7
 ) {
     metal::float3 e1_1 = b_5 - a_6;
     metal::float3 e2_1 = c_7 - a_6;
-    metal::float3 q_2 = p - a_6;
+    metal::float3 q_2 = p_2 - a_6;
     float d11_ = metal::dot(e1_1, e1_1);
     float d12_ = metal::dot(e1_1, e2_1);
     float d22_ = metal::dot(e2_1, e2_1);
@@ -879,23 +1024,23 @@ metal::float3 shading_normal(
     metal::float3 n0_,
     metal::float3 n1_,
     metal::float3 n2_,
-    metal::float3 w_5,
+    metal::float3 w_7,
     metal::float3 facing
 ) {
-    bool local_8 = {};
-    metal::float3 s = ((n0_ * w_5.x) + (n1_ * w_5.y)) + (n2_ * w_5.z);
+    bool local_7 = {};
+    metal::float3 s = ((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z);
     float l2_1 = metal::dot(s, s);
     if (!(!((l2_1 > 0.000000000001)))) {
-        local_8 = !((l2_1 < 300000000000000000000000000000000000000.0));
+        local_7 = !((l2_1 < 300000000000000000000000000000000000000.0));
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e24 = local_8;
+    bool _e24 = local_7;
     if (_e24) {
         return facing;
     }
-    metal::float3 n_12 = s / metal::float3(metal::sqrt(l2_1));
-    return (metal::dot(n_12, facing) < 0.0) ? -(n_12) : n_12;
+    metal::float3 n_17 = s / metal::float3(metal::sqrt(l2_1));
+    return (metal::dot(n_17, facing) < 0.0) ? -(n_17) : n_17;
 }
 
 float ray_triangle(
@@ -907,46 +1052,46 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
+    bool local_8 = {};
     bool local_9 = {};
     bool local_10 = {};
-    bool local_11 = {};
     metal::float3 e1_2 = b_6 - a_7;
     metal::float3 e2_2 = c_8 - a_7;
-    metal::float3 p_1 = metal::cross(d, e2_2);
-    float det = metal::dot(e1_2, p_1);
+    metal::float3 p_3 = metal::cross(d, e2_2);
+    float det = metal::dot(e1_2, p_3);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
     metal::float3 s_1 = o_1 - a_7;
-    float u_2 = metal::dot(s_1, p_1) * inv;
+    float u_2 = metal::dot(s_1, p_3) * inv;
     if (!((u_2 < 0.0))) {
-        local_9 = u_2 > 1.0;
+        local_8 = u_2 > 1.0;
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e28 = local_9;
+    bool _e28 = local_8;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_3 = metal::cross(s_1, e1_2);
-    float v_8 = metal::dot(d, q_3) * inv;
-    if (!((v_8 < 0.0))) {
-        local_10 = (u_2 + v_8) > 1.0;
+    float v_11 = metal::dot(d, q_3) * inv;
+    if (!((v_11 < 0.0))) {
+        local_9 = (u_2 + v_11) > 1.0;
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e42 = local_10;
+    bool _e42 = local_9;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_2, q_3) * inv;
     if (t_3 > t_min) {
-        local_11 = t_3 < t_max_1;
+        local_10 = t_3 < t_max_1;
     } else {
-        local_11 = false;
+        local_10 = false;
     }
-    bool _e51 = local_11;
+    bool _e51 = local_10;
     if (_e51) {
         return t_3;
     }
@@ -978,30 +1123,30 @@ float mis_power(
 
 float light_strategy_pdf(
     float select,
-    float rt2_4,
-    float d2_7,
+    float rt2_6,
+    float d2_8,
     float area_1,
     float cos_y
 ) {
+    bool local_11 = {};
     bool local_12 = {};
-    bool local_13 = {};
-    if (!((d2_7 <= 0.0))) {
-        local_12 = area_1 <= 0.0;
+    if (!((d2_8 <= 0.0))) {
+        local_11 = area_1 <= 0.0;
+    } else {
+        local_11 = true;
+    }
+    bool _e13 = local_11;
+    if (!(_e13)) {
+        local_12 = cos_y <= 0.0;
     } else {
         local_12 = true;
     }
-    bool _e13 = local_12;
-    if (!(_e13)) {
-        local_13 = cos_y <= 0.0;
-    } else {
-        local_13 = true;
-    }
-    bool _e20 = local_13;
+    bool _e20 = local_12;
     if (_e20) {
         return 0.0;
     }
-    float _e22 = rr_probability(rt2_4, d2_7);
-    float _e26 = area_to_solid_angle_pdf(1.0 / area_1, d2_7, cos_y);
+    float _e22 = rr_probability(rt2_6, d2_8);
+    float _e26 = area_to_solid_angle_pdf(1.0 / area_1, d2_8, cos_y);
     return (select * _e22) * _e26;
 }
 
@@ -1018,28 +1163,28 @@ float cosine_pdf(
 }
 
 metal::float3 cosine_direction(
-    metal::float3 n_7,
+    metal::float3 n_9,
     float u1_1,
     float u2_1
 ) {
-    float s_4 = (n_7.z >= 0.0) ? 1.0 : -1.0;
-    float a_12 = -1.0 / (s_4 + n_7.z);
-    float b_9 = (n_7.x * n_7.y) * a_12;
-    metal::float3 t_4 = metal::float3(1.0 + (((s_4 * n_7.x) * n_7.x) * a_12), s_4 * b_9, -(s_4) * n_7.x);
-    metal::float3 bt = metal::float3(b_9, s_4 + ((n_7.y * n_7.y) * a_12), -(n_7.y));
+    float s_4 = (n_9.z >= 0.0) ? 1.0 : -1.0;
+    float a_12 = -1.0 / (s_4 + n_9.z);
+    float b_9 = (n_9.x * n_9.y) * a_12;
+    metal::float3 t_4 = metal::float3(1.0 + (((s_4 * n_9.x) * n_9.x) * a_12), s_4 * b_9, -(s_4) * n_9.x);
+    metal::float3 bt = metal::float3(b_9, s_4 + ((n_9.y * n_9.y) * a_12), -(n_9.y));
     float r_6 = metal::sqrt(u1_1);
-    float phi = 6.2831855 * u2_1;
-    return metal::normalize(((t_4 * (r_6 * metal::cos(phi))) + (bt * (r_6 * metal::sin(phi)))) + (n_7 * metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
+    float phi_2 = 6.2831855 * u2_1;
+    return metal::normalize(((t_4 * (r_6 * metal::cos(phi_2))) + (bt * (r_6 * metal::sin(phi_2)))) + (n_9 * metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
 }
 
 float bilateral_weight(
-    metal::float3 n_8,
+    metal::float3 n_10,
     metal::float3 nj,
     float z,
     float zj,
     float inv_sz
 ) {
-    float dn = metal::max(metal::dot(n_8, nj), 0.0);
+    float dn = metal::max(metal::dot(n_10, nj), 0.0);
     float dn2_ = dn * dn;
     float dn4_ = dn2_ * dn2_;
     float dn8_ = dn4_ * dn4_;
@@ -1053,11 +1198,11 @@ uint naga_mod(uint lhs, uint rhs) {
 }
 
 uint interleave_subset(
-    uint x_7,
+    uint x_9,
     uint y_1,
     uint period
 ) {
-    return (naga_mod(y_1, period) * period) + naga_mod(x_7, period);
+    return (naga_mod(y_1, period) * period) + naga_mod(x_9, period);
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -1090,10 +1235,10 @@ metal::float3 camera_dir(
     metal::float3 up,
     float px,
     float py,
-    float w_6,
+    float w_8,
     float h_1
 ) {
-    float sx = ((2.0 * px) / w_6) - 1.0;
+    float sx = ((2.0 * px) / w_8) - 1.0;
     float sy = 1.0 - ((2.0 * py) / h_1);
     return metal::normalize((forward + (right * sx)) + (up * sy));
 }
@@ -1125,10 +1270,10 @@ uint light_map_texel(
 
 float light_map_depth(
     metal::float3 rel,
-    metal::float3 axis,
+    metal::float3 axis_2,
     bool perspective
 ) {
-    return perspective ? metal::sqrt(metal::dot(rel, rel)) : metal::dot(rel, axis);
+    return perspective ? metal::sqrt(metal::dot(rel, rel)) : metal::dot(rel, axis_2);
 }
 
 float rsm_texel_solid_angle(
@@ -1140,21 +1285,21 @@ float rsm_texel_solid_angle(
 
 metal::float3 point_irradiance(
     metal::float3 intensity_1,
-    metal::float3 n_9,
-    metal::float3 v_2
+    metal::float3 n_11,
+    metal::float3 v_3
 ) {
-    float d2_8 = metal::dot(v_2, v_2);
-    float cos_x_1 = metal::dot(n_9, v_2) / metal::sqrt(metal::max(d2_8, MIN_D2_));
-    float _e11 = inverse_square(d2_8);
+    float d2_10 = metal::dot(v_3, v_3);
+    float cos_x_1 = metal::dot(n_11, v_3) / metal::sqrt(metal::max(d2_10, MIN_D2_));
+    float _e11 = inverse_square(d2_10);
     return intensity_1 * (metal::max(cos_x_1, 0.0) * _e11);
 }
 
 metal::float3 directional_irradiance(
     metal::float3 e,
-    metal::float3 n_10,
+    metal::float3 n_12,
     metal::float3 to_light
 ) {
-    return e * metal::max(metal::dot(n_10, to_light), 0.0);
+    return e * metal::max(metal::dot(n_12, to_light), 0.0);
 }
 
 float shadow_bias(
@@ -1170,13 +1315,13 @@ bool shadow_lit(
     float d_map,
     float bias
 ) {
-    bool local_14 = {};
+    bool local_13 = {};
     if (!((d_map <= 0.0))) {
-        local_14 = d_1 <= (d_map + bias);
+        local_13 = d_1 <= (d_map + bias);
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e11 = local_14;
+    bool _e11 = local_13;
     return _e11;
 }
 
@@ -1190,7 +1335,7 @@ metal::float3 diffuse_radiance(
 
 metal::float3 light_intensity(
     GpuLight l,
-    metal::float3 w_7
+    metal::float3 w_9
 ) {
     switch(l.kind) {
         case 0u: {
@@ -1198,7 +1343,7 @@ metal::float3 light_intensity(
         }
         case 3u: {
             metal::float3 _e8 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            float _e10 = triangle_lobe(_e8, l.a, w_7);
+            float _e10 = triangle_lobe(_e8, l.a, w_9);
             return l.intensity * _e10;
         }
         default: {
@@ -1265,12 +1410,12 @@ GeoHit trace(
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         uint _e30 = node;
-        GpuGeoNode n_13 = geo_nodes[_e30];
+        GpuGeoNode n_18 = geo_nodes[_e30];
         float _e36 = hit.t;
-        float _e37 = ray_aabb(o_2, inv_d_1, n_13.bmin, n_13.bmax, _e36);
+        float _e37 = ray_aabb(o_2, inv_d_1, n_18.bmin, n_18.bmax, _e36);
         if (_e37 >= 0.0) {
-            if (n_13.count > 0u) {
-                i_2 = n_13.first;
+            if (n_18.count > 0u) {
+                i_2 = n_18.first;
                 uint2 loop_bound_2 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1282,7 +1427,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e45 = i_2;
-                    if (_e45 < (n_13.first + n_13.count)) {
+                    if (_e45 < (n_18.first + n_18.count)) {
                     } else {
                         break;
                     }
@@ -1306,11 +1451,11 @@ GeoHit trace(
                 uint _e69 = sp;
                 if (_e69 < 64u) {
                     uint _e72 = sp;
-                    stack.inner[_e72] = n_13.first + 1u;
+                    stack.inner[_e72] = n_18.first + 1u;
                     uint _e77 = sp;
                     sp = _e77 + 1u;
                 }
-                node = n_13.first;
+                node = n_18.first;
                 continue;
             }
         }
@@ -1353,39 +1498,68 @@ float mis_weight(
     return _e2;
 }
 
-float select_pdf(
+float light_weight(
     uint li,
-    uint others
+    metal::float3 x_10,
+    metal::float3 n_13,
+    device type_9 const& light_cones,
+    device type_4 const& rt2_7,
+    constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e5 = reservoir_weight(others + 1u, K);
-    return 1.0 / _e5;
+    metal::float4 a_13 = light_cones[3u * li];
+    metal::float4 b_10 = light_cones[(3u * li) + 1u];
+    metal::float4 c_13 = light_cones[(3u * li) + 2u];
+    float _e30 = rt2_7[li];
+    float _e31 = cone_weight(a_13.xyz, a_13.w, c_13.x, b_10.xyz, b_10.w, c_13.y, _e30, x_10, n_13);
+    return _e31;
+}
+
+float select_pdf(
+    uint li_1,
+    metal::float3 x_11,
+    metal::float3 n_14,
+    uint nee,
+    bool in_range_1
+) {
+    bool local_14 = {};
+    if (in_range_1) {
+        local_14 = nee > 0u;
+    } else {
+        local_14 = false;
+    }
+    bool _e12 = local_14;
+    uint others = nee - (_e12 ? 1u : 0u);
+    float _e18 = reservoir_weight(others + 1u, K);
+    return 1.0 / _e18;
 }
 
 float light_pdf(
-    uint li_1,
-    metal::float3 x_8,
+    uint li_2,
+    metal::float3 x_12,
+    metal::float3 n_15,
     metal::float3 y_2,
-    uint others_1,
+    uint nee_1,
+    bool in_range_2,
+    device type_4 const& rt2_7,
     device type_10 const& lights,
-    device type_4 const& rt2_5,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight l_4 = lights[li_1];
-    metal::float3 v_9 = x_8 - y_2;
-    float d2_9 = metal::dot(v_9, v_9);
-    metal::float3 _e9 = light_normal(l_4);
-    float cos_y_1 = (d2_9 > 0.0) ? metal::dot(_e9, v_9 / metal::float3(metal::sqrt(d2_9))) : 0.0;
-    float _e18 = select_pdf(li_1, others_1);
-    float _e21 = rt2_5[li_1];
-    float _e22 = light_area(l_4);
-    float _e23 = light_strategy_pdf(_e18, _e21, d2_9, _e22, cos_y_1);
-    return _e23;
+    GpuLight l_4 = lights[li_2];
+    metal::float3 v_12 = x_12 - y_2;
+    float d2_11 = metal::dot(v_12, v_12);
+    metal::float3 _e11 = light_normal(l_4);
+    float cos_y_1 = (d2_11 > 0.0) ? metal::dot(_e11, v_12 / metal::float3(metal::sqrt(d2_11))) : 0.0;
+    float _e20 = select_pdf(li_2, x_12, n_15, nee_1, in_range_2);
+    float _e23 = rt2_7[li_2];
+    float _e24 = light_area(l_4);
+    float _e25 = light_strategy_pdf(_e20, _e23, d2_11, _e24, cos_y_1);
+    return _e25;
 }
 
 bool finite3_(
-    metal::float3 v_3
+    metal::float3 v_4
 ) {
-    return metal::all(metal::abs(v_3) <= metal::float3(340282350000000000000000000000000000000.0));
+    return metal::all(metal::abs(v_4) <= metal::float3(340282350000000000000000000000000000000.0));
 }
 
 float next_uniform(
@@ -1405,8 +1579,8 @@ kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
 , device type_6 const& geo_nodes [[user(fake0)]]
 , device type_7 const& geo_tris [[user(fake0)]]
+, device type_4 const& rt2_7 [[user(fake0)]]
 , device type_10 const& lights [[user(fake0)]]
-, device type_4 const& rt2_5 [[user(fake0)]]
 , constant PtParams& params [[user(fake0)]]
 , device type_11 const& bsh_nodes [[user(fake0)]]
 , device type_12 const& light_leaf [[user(fake0)]]
@@ -1423,11 +1597,10 @@ kernel void main_(
     GpuPathVertex v = {};
     bool local = {};
     float w = 1.0;
-    bool local_1 = {};
     uint rng = {};
+    bool local_1 = {};
     bool local_2 = {};
     bool local_3 = {};
-    bool local_4 = {};
     uint i_3 = gid.x;
     uint _e4 = params.width;
     uint _e7 = params.height;
@@ -1492,15 +1665,15 @@ kernel void main_(
     GpuTriangle tri = geo_tris[_e110.tri];
     metal::float3 _e127 = st.origin;
     metal::float3 _e129 = st.dir;
-    metal::float3 x_9 = _e127 + (_e129 * _e110.t);
+    metal::float3 x_13 = _e127 + (_e129 * _e110.t);
     metal::float3 _e136 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e138 = st.dir;
     metal::float3 _e139 = face_against(_e136, _e138);
-    uint b_10 = _e110.tri * 3u;
-    metal::float4 _e145 = geo_normals[b_10];
-    metal::float4 _e151 = geo_normals[b_10 + 1u];
-    metal::float4 _e157 = geo_normals[b_10 + 2u];
-    metal::float3 _e162 = barycentric(x_9, tri.v0_, tri.v1_, tri.v2_);
+    uint b_11 = _e110.tri * 3u;
+    metal::float4 _e145 = geo_normals[b_11];
+    metal::float4 _e151 = geo_normals[b_11 + 1u];
+    metal::float4 _e157 = geo_normals[b_11 + 2u];
+    metal::float3 _e162 = barycentric(x_13, tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e163 = shading_normal(_e145.xyz, _e151.xyz, _e157.xyz, _e162, _e139);
     if (tri.light != NO_LIGHT) {
         metal::float3 _e170 = st.dir;
@@ -1514,96 +1687,91 @@ kernel void main_(
         if (_e179 > 0.0) {
             uint _e186 = light_leaf[tri.light];
             BshNode leaf = bsh_nodes[_e186];
-            uint seen = candidates[i_3];
-            metal::float3 _e195 = st.prev;
-            bool _e196 = sphere_contains_point(leaf.center, leaf.radius, _e195);
-            if (_e196) {
-                local_1 = seen > 0u;
-            } else {
-                local_1 = false;
-            }
-            bool _e204 = local_1;
-            uint others_2 = seen - (_e204 ? 1u : 0u);
-            float _e208 = st.pdf_bsdf;
-            metal::float3 _e211 = st.prev;
-            float _e212 = light_pdf(tri.light, _e211, x_9, others_2, lights, rt2_5, _buffer_sizes);
-            float _e213 = mis_weight(_e208, _e212);
-            w = _e213;
+            metal::float3 _e192 = st.prev;
+            bool _e193 = sphere_contains_point(leaf.center, leaf.radius, _e192);
+            float _e195 = st.pdf_bsdf;
+            metal::float3 _e198 = st.prev;
+            metal::float3 _e200 = st.prev_normal;
+            uint _e203 = candidates[i_3];
+            float _e204 = light_pdf(tri.light, _e198, _e200, x_13, _e203, _e193, rt2_7, lights, _buffer_sizes);
+            float _e205 = mis_weight(_e195, _e204);
+            w = _e205;
         }
-        metal::float3 _e215 = st.beta;
-        metal::float3 _e220 = lights[tri.light].intensity;
-        float _e222 = w;
-        metal::float3 add = (_e215 * _e220) * _e222;
-        bool _e224 = finite3_(add);
-        if (_e224) {
-            metal::float4 _e227 = radiance[i_3];
-            radiance[i_3] = _e227 + metal::float4(add, 0.0);
+        metal::float3 _e207 = st.beta;
+        metal::float3 _e212 = lights[tri.light].intensity;
+        float _e214 = w;
+        metal::float3 add = (_e207 * _e212) * _e214;
+        bool _e216 = finite3_(add);
+        if (_e216) {
+            metal::float4 _e219 = radiance[i_3];
+            radiance[i_3] = _e219 + metal::float4(add, 0.0);
         }
     }
-    metal::float4 _e234 = albedo_1[tri.material];
-    metal::float3 rho_1 = _e234.xyz;
-    v.position = x_9;
+    metal::float4 _e226 = albedo_1[tri.material];
+    metal::float3 rho_1 = _e226.xyz;
+    v.position = x_13;
     v.normal = _e163;
     v.gnormal = _e139;
-    metal::float3 _e241 = st.beta;
-    metal::float3 _e242 = lambert_brdf(rho_1);
-    v.weight = _e241 * _e242;
+    metal::float3 _e233 = st.beta;
+    metal::float3 _e234 = lambert_brdf(rho_1);
+    v.weight = _e233 * _e234;
     v.alive = 1u;
-    GpuPathVertex _e248 = v;
-    vertices[i_3] = _e248;
-    uint _e250 = st.rng;
-    rng = _e250;
-    float _e252 = next_uniform(rng);
-    float _e253 = next_uniform(rng);
-    metal::float3 _e254 = cosine_direction(_e163, _e252, _e253);
-    float cos_o = metal::dot(_e254, _e163);
-    metal::float3 _e257 = st.beta;
-    st.beta = _e257 * rho_1;
-    st.prev = x_9;
-    float _e261 = cosine_pdf(cos_o);
-    st.pdf_bsdf = _e261;
-    float _e265 = params.eps;
-    st.origin = x_9 + (_e139 * _e265);
-    st.dir = _e254;
-    if (!((cos_o <= 0.0))) {
-        local_2 = metal::dot(_e254, _e139) <= 0.0;
+    GpuPathVertex _e240 = v;
+    vertices[i_3] = _e240;
+    uint _e242 = st.rng;
+    rng = _e242;
+    float _e244 = next_uniform(rng);
+    float _e245 = next_uniform(rng);
+    metal::float3 _e246 = cosine_direction(_e163, _e244, _e245);
+    float cos_o_2 = metal::dot(_e246, _e163);
+    metal::float3 _e249 = st.beta;
+    st.beta = _e249 * rho_1;
+    st.prev = x_13;
+    st.prev_normal = _e163;
+    float _e254 = cosine_pdf(cos_o_2);
+    st.pdf_bsdf = _e254;
+    float _e258 = params.eps;
+    st.origin = x_13 + (_e139 * _e258);
+    st.dir = _e246;
+    if (!((cos_o_2 <= 0.0))) {
+        local_1 = metal::dot(_e246, _e139) <= 0.0;
+    } else {
+        local_1 = true;
+    }
+    bool _e271 = local_1;
+    if (!(_e271)) {
+        uint _e277 = params.depth;
+        uint _e282 = params.max_depth;
+        local_2 = (_e277 + 1u) >= _e282;
     } else {
         local_2 = true;
     }
-    bool _e278 = local_2;
-    if (!(_e278)) {
-        uint _e284 = params.depth;
-        uint _e289 = params.max_depth;
-        local_3 = (_e284 + 1u) >= _e289;
-    } else {
-        local_3 = true;
-    }
-    bool _e292 = local_3;
-    if (_e292) {
+    bool _e285 = local_2;
+    if (_e285) {
         st.alive = 0u;
     }
-    uint _e297 = params.depth;
-    if (_e297 >= 2u) {
-        uint _e303 = st.alive;
-        local_4 = _e303 == 1u;
+    uint _e290 = params.depth;
+    if (_e290 >= 2u) {
+        uint _e296 = st.alive;
+        local_3 = _e296 == 1u;
     } else {
-        local_4 = false;
+        local_3 = false;
     }
-    bool _e307 = local_4;
-    if (_e307) {
-        metal::float3 _e309 = st.beta;
-        float _e310 = path_survival(_e309);
-        float _e311 = next_uniform(rng);
-        if (_e311 >= _e310) {
+    bool _e300 = local_3;
+    if (_e300) {
+        metal::float3 _e302 = st.beta;
+        float _e303 = path_survival(_e302);
+        float _e304 = next_uniform(rng);
+        if (_e304 >= _e303) {
             st.alive = 0u;
         } else {
-            metal::float3 _e316 = st.beta;
-            st.beta = _e316 / metal::float3(_e310);
+            metal::float3 _e309 = st.beta;
+            st.beta = _e309 / metal::float3(_e303);
         }
     }
-    uint _e320 = rng;
-    st.rng = _e320;
-    GpuPathState _e323 = st;
-    paths[i_3] = _e323;
+    uint _e313 = rng;
+    st.rng = _e313;
+    GpuPathState _e316 = st;
+    paths[i_3] = _e316;
     return;
 }

@@ -56,6 +56,8 @@ struct GpuPathState {
     float pdf_bsdf;
     metal::packed_float3 prev;
     uint pad;
+    metal::packed_float3 prev_normal;
+    uint pad2_;
 };
 struct PtParams {
     metal::packed_float3 cam_pos;
@@ -244,16 +246,39 @@ uint pcg_hash(
     return (_e12 >> 22u) ^ _e12;
 }
 
+uint reverse_bits(
+    uint x_2
+) {
+    uint v = {};
+    v = ((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u);
+    uint _e11 = v;
+    uint _e16 = v;
+    v = ((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u);
+    uint _e22 = v;
+    uint _e27 = v;
+    v = ((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u);
+    uint _e33 = v;
+    uint _e38 = v;
+    v = ((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u);
+    uint _e44 = v;
+    uint _e49 = v;
+    v = ((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u);
+    uint _e55 = v;
+    return _e55;
+}
+
 float xi_for(
     uint seed,
     uint frame,
     uint light
 ) {
     uint _e3 = pcg_hash(seed);
-    uint _e5 = pcg_hash(_e3 ^ frame);
-    uint _e7 = pcg_hash(_e5 ^ light);
-    float _e8 = xi_from_bits(_e7);
-    return _e8;
+    uint _e4 = pcg_hash(_e3);
+    uint _e6 = pcg_hash(_e4 ^ light);
+    uint _e7 = reverse_bits(frame);
+    uint _e8 = add_wrap_u32_(_e6, _e7);
+    float _e9 = xi_from_bits(_e8);
+    return _e9;
 }
 
 float rr_probability(
@@ -322,17 +347,17 @@ float windowed_falloff(
     float range2_
 ) {
     float q = d2_3 / range2_;
-    float w_6 = metal::saturate(1.0 - (q * q));
-    return (w_6 * w_6) / metal::max(d2_3, 0.0001);
+    float w_8 = metal::saturate(1.0 - (q * q));
+    return (w_8 * w_8) / metal::max(d2_3, 0.0001);
 }
 
 bool sphere_contains_point(
     metal::float3 c,
     float r,
-    metal::float3 x_2
+    metal::float3 x_3
 ) {
-    metal::float3 v_2 = x_2 - c;
-    return metal::dot(v_2, v_2) <= (r * r);
+    metal::float3 v_3 = x_3 - c;
+    return metal::dot(v_3, v_3) <= (r * r);
 }
 
 bool sphere_overlaps_sphere(
@@ -341,9 +366,9 @@ bool sphere_overlaps_sphere(
     metal::float3 c2_,
     float r2_2
 ) {
-    metal::float3 v_3 = c2_ - c1_;
+    metal::float3 v_4 = c2_ - c1_;
     float r_3 = r1_ + r2_2;
-    return metal::dot(v_3, v_3) <= (r_3 * r_3);
+    return metal::dot(v_4, v_4) <= (r_3 * r_3);
 }
 
 float sphere_pad(
@@ -360,8 +385,8 @@ metal::float4 sphere_union(
     float r2_3
 ) {
     bool local = {};
-    metal::float3 v_4 = c2_1 - c1_1;
-    float d_2 = metal::sqrt(metal::dot(v_4, v_4));
+    metal::float3 v_5 = c2_1 - c1_1;
+    float d_2 = metal::sqrt(metal::dot(v_5, v_5));
     float _e8 = sphere_pad(r1_1, c1_1);
     if (r1_1 >= ((d_2 + r2_3) + _e8)) {
         return metal::float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
@@ -390,7 +415,7 @@ metal::float4 sphere_union(
         return metal::float4(c2_1.x, c2_1.y, c2_1.z, rm + _e58);
     }
     float r0_ = 0.5 * ((d_2 + r1_1) + r2_3);
-    metal::float3 c_9 = c1_1 + (v_4 * ((r0_ - r1_1) / d_2));
+    metal::float3 c_9 = c1_1 + (v_5 * ((r0_ - r1_1) / d_2));
     metal::float3 e1_ = c_9 - c1_1;
     metal::float3 e2_ = c_9 - c2_1;
     float r_4 = metal::max(r0_, metal::max(metal::sqrt(metal::dot(e1_, e1_)) + r1_1, metal::sqrt(metal::dot(e2_, e2_)) + r2_3));
@@ -405,8 +430,8 @@ bool sphere_overlaps_aabb(
     metal::float3 bmax
 ) {
     metal::float3 q_1 = metal::clamp(c_2, bmin, bmax);
-    metal::float3 v_5 = q_1 - c_2;
-    return metal::dot(v_5, v_5) <= (r_2 * r_2);
+    metal::float3 v_6 = q_1 - c_2;
+    return metal::dot(v_6, v_6) <= (r_2 * r_2);
 }
 
 float vpl_rt2_(
@@ -454,11 +479,11 @@ float vpl_lobe(
 float vpl_transfer(
     metal::float3 n_l,
     metal::float3 n_x,
-    metal::float3 v,
+    metal::float3 v_1,
     float min_d2_
 ) {
-    float m = metal::max(metal::dot(v, v), min_d2_);
-    return ((metal::max(metal::dot(n_l, v), 0.0) * metal::max(-(metal::dot(n_x, v)), 0.0)) * INV_PI) / (m * m);
+    float m = metal::max(metal::dot(v_1, v_1), min_d2_);
+    return ((metal::max(metal::dot(n_l, v_1), 0.0) * metal::max(-(metal::dot(n_x, v_1)), 0.0)) * INV_PI) / (m * m);
 }
 
 float spot_falloff(
@@ -507,11 +532,11 @@ float area_to_solid_angle_pdf(
 }
 
 float atan_portable(
-    float x_3
+    float x_4
 ) {
     float base = 0.0;
     float t = {};
-    float a_9 = metal::abs(x_3);
+    float a_9 = metal::abs(x_4);
     t = a_9;
     if (a_9 > 2.4142137) {
         base = 1.5707964;
@@ -529,14 +554,14 @@ float atan_portable(
     float _e33 = t;
     float _e35 = t;
     float r_5 = _e21 + (((((((((0.080537446 * z_1) - 0.13877685) * z_1) + 0.19977711) * z_1) - 0.3333295) * z_1) * _e33) + _e35);
-    return (x_3 < 0.0) ? -(r_5) : r_5;
+    return (x_4 < 0.0) ? -(r_5) : r_5;
 }
 
 float atan2_portable(
     float y,
-    float x_4
+    float x_5
 ) {
-    if (x_4 == 0.0) {
+    if (x_5 == 0.0) {
         if (y > 0.0) {
             return 1.5707964;
         }
@@ -545,8 +570,8 @@ float atan2_portable(
         }
         return 0.0;
     }
-    float _e12 = atan_portable(y / x_4);
-    if (x_4 > 0.0) {
+    float _e12 = atan_portable(y / x_5);
+    if (x_5 > 0.0) {
         return _e12;
     }
     if (y >= 0.0) {
@@ -611,7 +636,7 @@ uint ies_segment(
     Table tab_1,
     uint start,
     uint n_2,
-    float x_5,
+    float x_6,
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -636,7 +661,7 @@ uint ies_segment(
             uint _e18 = hi;
             uint mid = (_e17 + _e18) >> 1u;
             float _e23 = at(tab_1, start + mid, slc_table, _buffer_sizes);
-            if (_e23 <= x_5) {
+            if (_e23 <= x_6) {
                 lo = mid;
             } else {
                 hi = mid;
@@ -650,12 +675,12 @@ uint ies_segment(
 float ies_lerp_t(
     float a0_,
     float a1_,
-    float x_6
+    float x_7
 ) {
     if (a1_ <= a0_) {
         return 0.0;
     }
-    return metal::saturate((x_6 - a0_) / (a1_ - a0_));
+    return metal::saturate((x_7 - a0_) / (a1_ - a0_));
 }
 
 float ies_candela(
@@ -788,6 +813,125 @@ bool weighted_replace(
     return (u_1 * w_sum) < w_3;
 }
 
+float weighted_pick_weight(
+    float w_sum_1,
+    float w_4,
+    uint k_2
+) {
+    float _e3 = to_f32_(k_2);
+    return w_sum_1 / (_e3 * w_4);
+}
+
+float cos_sub_clamped(
+    float sin_a,
+    float cos_a,
+    float sin_b,
+    float cos_b
+) {
+    if (cos_a > cos_b) {
+        return 1.0;
+    }
+    return (cos_a * cos_b) + (sin_a * sin_b);
+}
+
+float sin_sub_clamped(
+    float sin_a_1,
+    float cos_a_1,
+    float sin_b_1,
+    float cos_b_1
+) {
+    if (cos_a_1 > cos_b_1) {
+        return 0.0;
+    }
+    return (sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1);
+}
+
+float safe_sqrt(
+    float x_8
+) {
+    return metal::sqrt(metal::max(x_8, 0.0));
+}
+
+float light_importance(
+    metal::float3 center,
+    float radius,
+    float phi,
+    metal::float3 axis,
+    float cos_o,
+    float cos_e,
+    metal::float3 p,
+    metal::float3 n_6
+) {
+    float imp = {};
+    metal::float3 v_7 = p - center;
+    float dist2_ = metal::dot(v_7, v_7);
+    float r2_6 = radius * radius;
+    float d2_9 = metal::max(metal::max(dist2_, r2_6), MIN_D2_);
+    metal::float3 wi = (dist2_ > 0.0) ? (v_7 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
+    float cos_w = metal::dot(axis, wi);
+    float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
+    float _e32 = safe_sqrt(1.0 - (r2_6 / dist2_));
+    float cos_b_2 = (dist2_ <= r2_6) ? -1.0 : _e32;
+    float _e39 = safe_sqrt(1.0 - (cos_b_2 * cos_b_2));
+    float _e43 = safe_sqrt(1.0 - (cos_o * cos_o));
+    float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
+    float _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
+    float _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
+    if (_e46 <= cos_e) {
+        return 0.0;
+    }
+    imp = (phi * _e46) / d2_9;
+    if (metal::dot(n_6, n_6) > 0.0) {
+        float cos_i = -(metal::dot(wi, n_6));
+        float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
+        float _e61 = imp;
+        float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
+        imp = _e61 * metal::max(_e62, 0.0);
+    }
+    float _e66 = imp;
+    return metal::max(_e66, 0.0);
+}
+
+float candidate_weight(
+    float importance,
+    float rt2_4,
+    float d2_7
+) {
+    float _e3 = slc_weight(rt2_4, d2_7);
+    return importance * _e3;
+}
+
+float cone_weight(
+    metal::float3 center_1,
+    float radius_1,
+    float phi_1,
+    metal::float3 axis_1,
+    float cos_o_1,
+    float cos_e_1,
+    float rt2_5,
+    metal::float3 p_1,
+    metal::float3 n_7
+) {
+    metal::float3 v_8 = p_1 - center_1;
+    float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_7);
+    float _e14 = candidate_weight(_e10 * INV_PI, rt2_5, metal::dot(v_8, v_8));
+    return _e14;
+}
+
+float weighted_select_pdf(
+    float w_5,
+    float w_sum_2,
+    bool in_range,
+    uint k_3
+) {
+    if (w_5 <= 0.0) {
+        return 0.0;
+    }
+    float total = in_range ? w_sum_2 : (w_sum_2 + w_5);
+    float _e9 = to_f32_(k_3);
+    return (_e9 * w_5) / total;
+}
+
 float ray_aabb(
     metal::float3 o,
     metal::float3 inv_d,
@@ -813,8 +957,8 @@ metal::float3 triangle_normal(
     metal::float3 c_6
 ) {
     bool local_2 = {};
-    metal::float3 n_11 = metal::cross(b_4 - a_5, c_6 - a_5);
-    float l2_ = metal::dot(n_11, n_11);
+    metal::float3 n_13 = metal::cross(b_4 - a_5, c_6 - a_5);
+    float l2_ = metal::dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
         local_2 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -824,25 +968,25 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_11 / metal::float3(metal::sqrt(l2_));
+    return n_13 / metal::float3(metal::sqrt(l2_));
 }
 
 metal::float3 face_against(
-    metal::float3 n_6,
+    metal::float3 n_8,
     metal::float3 dir
 ) {
-    return (metal::dot(n_6, dir) > 0.0) ? -(n_6) : n_6;
+    return (metal::dot(n_8, dir) > 0.0) ? -(n_8) : n_8;
 }
 
 metal::float3 barycentric(
-    metal::float3 p,
+    metal::float3 p_2,
     metal::float3 a_6,
     metal::float3 b_5,
     metal::float3 c_7
 ) {
     metal::float3 e1_1 = b_5 - a_6;
     metal::float3 e2_1 = c_7 - a_6;
-    metal::float3 q_2 = p - a_6;
+    metal::float3 q_2 = p_2 - a_6;
     float d11_ = metal::dot(e1_1, e1_1);
     float d12_ = metal::dot(e1_1, e2_1);
     float d22_ = metal::dot(e2_1, e2_1);
@@ -859,11 +1003,11 @@ metal::float3 shading_normal(
     metal::float3 n0_,
     metal::float3 n1_,
     metal::float3 n2_,
-    metal::float3 w_4,
+    metal::float3 w_6,
     metal::float3 facing
 ) {
     bool local_3 = {};
-    metal::float3 s = ((n0_ * w_4.x) + (n1_ * w_4.y)) + (n2_ * w_4.z);
+    metal::float3 s = ((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z);
     float l2_1 = metal::dot(s, s);
     if (!(!((l2_1 > 0.000000000001)))) {
         local_3 = !((l2_1 < 300000000000000000000000000000000000000.0));
@@ -874,8 +1018,8 @@ metal::float3 shading_normal(
     if (_e24) {
         return facing;
     }
-    metal::float3 n_12 = s / metal::float3(metal::sqrt(l2_1));
-    return (metal::dot(n_12, facing) < 0.0) ? -(n_12) : n_12;
+    metal::float3 n_14 = s / metal::float3(metal::sqrt(l2_1));
+    return (metal::dot(n_14, facing) < 0.0) ? -(n_14) : n_14;
 }
 
 float ray_triangle(
@@ -892,14 +1036,14 @@ float ray_triangle(
     bool local_6 = {};
     metal::float3 e1_2 = b_6 - a_7;
     metal::float3 e2_2 = c_8 - a_7;
-    metal::float3 p_1 = metal::cross(d, e2_2);
-    float det = metal::dot(e1_2, p_1);
+    metal::float3 p_3 = metal::cross(d, e2_2);
+    float det = metal::dot(e1_2, p_3);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
     metal::float3 s_1 = o_1 - a_7;
-    float u_2 = metal::dot(s_1, p_1) * inv;
+    float u_2 = metal::dot(s_1, p_3) * inv;
     if (!((u_2 < 0.0))) {
         local_4 = u_2 > 1.0;
     } else {
@@ -910,9 +1054,9 @@ float ray_triangle(
         return -1.0;
     }
     metal::float3 q_3 = metal::cross(s_1, e1_2);
-    float v_6 = metal::dot(d, q_3) * inv;
-    if (!((v_6 < 0.0))) {
-        local_5 = (u_2 + v_6) > 1.0;
+    float v_9 = metal::dot(d, q_3) * inv;
+    if (!((v_9 < 0.0))) {
+        local_5 = (u_2 + v_9) > 1.0;
     } else {
         local_5 = true;
     }
@@ -958,14 +1102,14 @@ float mis_power(
 
 float light_strategy_pdf(
     float select,
-    float rt2_4,
-    float d2_7,
+    float rt2_6,
+    float d2_8,
     float area_1,
     float cos_y
 ) {
     bool local_7 = {};
     bool local_8 = {};
-    if (!((d2_7 <= 0.0))) {
+    if (!((d2_8 <= 0.0))) {
         local_7 = area_1 <= 0.0;
     } else {
         local_7 = true;
@@ -980,8 +1124,8 @@ float light_strategy_pdf(
     if (_e20) {
         return 0.0;
     }
-    float _e22 = rr_probability(rt2_4, d2_7);
-    float _e26 = area_to_solid_angle_pdf(1.0 / area_1, d2_7, cos_y);
+    float _e22 = rr_probability(rt2_6, d2_8);
+    float _e26 = area_to_solid_angle_pdf(1.0 / area_1, d2_8, cos_y);
     return (select * _e22) * _e26;
 }
 
@@ -998,28 +1142,28 @@ float cosine_pdf(
 }
 
 metal::float3 cosine_direction(
-    metal::float3 n_7,
+    metal::float3 n_9,
     float u1_1,
     float u2_1
 ) {
-    float s_4 = (n_7.z >= 0.0) ? 1.0 : -1.0;
-    float a_11 = -1.0 / (s_4 + n_7.z);
-    float b_8 = (n_7.x * n_7.y) * a_11;
-    metal::float3 t_4 = metal::float3(1.0 + (((s_4 * n_7.x) * n_7.x) * a_11), s_4 * b_8, -(s_4) * n_7.x);
-    metal::float3 bt = metal::float3(b_8, s_4 + ((n_7.y * n_7.y) * a_11), -(n_7.y));
+    float s_4 = (n_9.z >= 0.0) ? 1.0 : -1.0;
+    float a_11 = -1.0 / (s_4 + n_9.z);
+    float b_8 = (n_9.x * n_9.y) * a_11;
+    metal::float3 t_4 = metal::float3(1.0 + (((s_4 * n_9.x) * n_9.x) * a_11), s_4 * b_8, -(s_4) * n_9.x);
+    metal::float3 bt = metal::float3(b_8, s_4 + ((n_9.y * n_9.y) * a_11), -(n_9.y));
     float r_6 = metal::sqrt(u1_1);
-    float phi = 6.2831855 * u2_1;
-    return metal::normalize(((t_4 * (r_6 * metal::cos(phi))) + (bt * (r_6 * metal::sin(phi)))) + (n_7 * metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
+    float phi_2 = 6.2831855 * u2_1;
+    return metal::normalize(((t_4 * (r_6 * metal::cos(phi_2))) + (bt * (r_6 * metal::sin(phi_2)))) + (n_9 * metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
 }
 
 float bilateral_weight(
-    metal::float3 n_8,
+    metal::float3 n_10,
     metal::float3 nj,
     float z,
     float zj,
     float inv_sz
 ) {
-    float dn = metal::max(metal::dot(n_8, nj), 0.0);
+    float dn = metal::max(metal::dot(n_10, nj), 0.0);
     float dn2_ = dn * dn;
     float dn4_ = dn2_ * dn2_;
     float dn8_ = dn4_ * dn4_;
@@ -1033,11 +1177,11 @@ uint naga_mod(uint lhs, uint rhs) {
 }
 
 uint interleave_subset(
-    uint x_7,
+    uint x_9,
     uint y_1,
     uint period
 ) {
-    return (naga_mod(y_1, period) * period) + naga_mod(x_7, period);
+    return (naga_mod(y_1, period) * period) + naga_mod(x_9, period);
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -1070,10 +1214,10 @@ metal::float3 camera_dir(
     metal::float3 up,
     float px,
     float py,
-    float w_5,
+    float w_7,
     float h
 ) {
-    float sx = ((2.0 * px) / w_5) - 1.0;
+    float sx = ((2.0 * px) / w_7) - 1.0;
     float sy = 1.0 - ((2.0 * py) / h);
     return metal::normalize((forward + (right * sx)) + (up * sy));
 }
@@ -1105,10 +1249,10 @@ uint light_map_texel(
 
 float light_map_depth(
     metal::float3 rel,
-    metal::float3 axis,
+    metal::float3 axis_2,
     bool perspective
 ) {
-    return perspective ? metal::sqrt(metal::dot(rel, rel)) : metal::dot(rel, axis);
+    return perspective ? metal::sqrt(metal::dot(rel, rel)) : metal::dot(rel, axis_2);
 }
 
 float rsm_texel_solid_angle(
@@ -1120,21 +1264,21 @@ float rsm_texel_solid_angle(
 
 metal::float3 point_irradiance(
     metal::float3 intensity_1,
-    metal::float3 n_9,
-    metal::float3 v_1
+    metal::float3 n_11,
+    metal::float3 v_2
 ) {
-    float d2_8 = metal::dot(v_1, v_1);
-    float cos_x_1 = metal::dot(n_9, v_1) / metal::sqrt(metal::max(d2_8, MIN_D2_));
-    float _e11 = inverse_square(d2_8);
+    float d2_10 = metal::dot(v_2, v_2);
+    float cos_x_1 = metal::dot(n_11, v_2) / metal::sqrt(metal::max(d2_10, MIN_D2_));
+    float _e11 = inverse_square(d2_10);
     return intensity_1 * (metal::max(cos_x_1, 0.0) * _e11);
 }
 
 metal::float3 directional_irradiance(
     metal::float3 e,
-    metal::float3 n_10,
+    metal::float3 n_12,
     metal::float3 to_light
 ) {
-    return e * metal::max(metal::dot(n_10, to_light), 0.0);
+    return e * metal::max(metal::dot(n_12, to_light), 0.0);
 }
 
 float shadow_bias(
@@ -1176,7 +1320,7 @@ kernel void main_(
 , device type_6 const& records [[user(fake0)]]
 , device type_7& lights [[user(fake0)]]
 , device type_8& ids [[user(fake0)]]
-, device type_4& rt2_5 [[user(fake0)]]
+, device type_4& rt2_7 [[user(fake0)]]
 , device type_4& r2_5 [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
@@ -1200,7 +1344,7 @@ kernel void main_(
     float _e44 = params.error_bound;
     uint _e47 = params.mode;
     float _e48 = vpl_rt2_(flux_1, _e41, _e44, _e47);
-    rt2_5[_e20] = slc ? _e48 : 0.0;
+    rt2_7[_e20] = slc ? _e48 : 0.0;
     float _e55 = params.fixed_r2_;
     r2_5[_e20] = slc ? 0.0 : _e55;
     return;

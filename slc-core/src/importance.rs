@@ -1,0 +1,210 @@
+//! Importance of a light, or a set of lights, at a shading point: a cheap,
+//! conservative estimate of its unshadowed contribution, and the weighted
+//! selection built on it (beyond the paper).
+//!
+//! - [`light_importance`]: pbrt-v4's `LightBounds::Importance` (Pharr, Jakob
+//!   & Humphreys, *PBR* 4th ed., §12.6.3; Conty Estevez & Kulla, HPG 2018)
+//!   over a bounding sphere: `φ · cos θ' / max(d², R²)` times the receiver's
+//!   widened `cos θ'_i`, zero only where no point of the bound can light the
+//!   point (outside the emission cone, or wholly below the receiver's
+//!   horizon). The light BVH weighs its nodes with it; `slc-weighted`
+//!   weighs each in-range candidate with it.
+//! - [`candidate_weight`]: `slc-weighted`'s weight `wᵢ = ĝᵢ / pᵢ` of an
+//!   in-range candidate: its importance over its roulette probability at the
+//!   bound's centre, since a kept candidate's term carries `1/p`.
+//! - [`weighted_select_pdf`]: the expected number of picks of a light by
+//!   `k` independent one-slot weighted reservoirs, `k · w_j / (W₋ⱼ + w_j)`,
+//!   with `W₋ⱼ` the weight of the *other* candidates: independent of the
+//!   light's own ξ, as MIS needs (the light is a candidate when its own
+//!   range reaches the point; then `W₋ⱼ + w_j = W`).
+
+// Shared (WGSL) functions take their bounds as scalars and vectors.
+#![allow(clippy::too_many_arguments)]
+
+use crate::light::{INV_PI, Light, MIN_D2};
+use crate::range::slc_weight;
+use crate::wgsl::*;
+use glam::Vec3;
+
+crate::shared! {
+    /// `cos(a − b)`, or 1 when `a < b` (pbrt-v4 `CosSubClamped`), from the
+    /// sines and cosines of angles `a, b ∈ [0, π]`.
+    pub fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+        if cos_a > cos_b {
+            return 1.0;
+        }
+        return cos_a * cos_b + sin_a * sin_b;
+    }
+
+    /// `sin(a − b)`, or 0 when `a < b` (pbrt-v4 `SinSubClamped`).
+    pub fn sin_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+        if cos_a > cos_b {
+            return 0.0;
+        }
+        return sin_a * cos_b - cos_a * sin_b;
+    }
+
+    /// `√max(x, 0)`.
+    pub fn safe_sqrt(x: f32) -> f32 {
+        return sqrt(max(x, 0.0));
+    }
+
+    /// Importance at point `p` (receiver normal `n`, or zero for none) of
+    /// lights inside the sphere `(center, radius)` emitting power `phi`
+    /// with normals in the cone `(axis, cos_o)` and emission spread `cos_e`
+    /// around each normal: `φ · cos θ' / max(d², R², MIN_D2)`, `θ'` the angle
+    /// from the direction to `p` to the normal cone, less the angle the
+    /// sphere subtends (0 when `θ' ≥ θ_e`); times `max(cos θ'_i, 0)`, `θ'_i`
+    /// the receiver's angle to the sphere's centre less the same subtended
+    /// angle. The receiver is one-sided (reflection only; pbrt-v4 takes
+    /// `|cos|` for transmission), so only lights wholly below its horizon
+    /// get 0.
+    pub fn light_importance(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, p: vec3f, n: vec3f) -> f32 {
+        let v: vec3f = p - center;
+        let dist2: f32 = dot(v, v);
+        let r2: f32 = radius * radius;
+        let d2: f32 = max(max(dist2, r2), MIN_D2);
+        let wi: vec3f = select(vec3f(0.0, 0.0, 0.0), v / sqrt(dist2), dist2 > 0.0);
+        let cos_w: f32 = dot(axis, wi);
+        let sin_w: f32 = safe_sqrt(1.0 - cos_w * cos_w);
+        let cos_b: f32 = select(safe_sqrt(1.0 - r2 / dist2), -1.0, dist2 <= r2);
+        let sin_b: f32 = safe_sqrt(1.0 - cos_b * cos_b);
+        let sin_o: f32 = safe_sqrt(1.0 - cos_o * cos_o);
+        let cos_x: f32 = cos_sub_clamped(sin_w, cos_w, sin_o, cos_o);
+        let sin_x: f32 = sin_sub_clamped(sin_w, cos_w, sin_o, cos_o);
+        let cos_p: f32 = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
+        if cos_p <= cos_e {
+            return 0.0;
+        }
+        let mut imp: f32 = phi * cos_p / d2;
+        if dot(n, n) > 0.0 {
+            let cos_i: f32 = -dot(wi, n);
+            let sin_i: f32 = safe_sqrt(1.0 - cos_i * cos_i);
+            imp = imp * max(cos_sub_clamped(sin_i, cos_i, sin_b, cos_b), 0.0);
+        }
+        return max(imp, 0.0);
+    }
+
+    /// `slc-weighted`'s weight of an in-range candidate of importance
+    /// `importance`, threshold range² `rt2` and squared distance `d2` from
+    /// the point to its bound's centre: `ĝ / p = ĝ · max(d²/r_t², 1)`.
+    pub fn candidate_weight(importance: f32, rt2: f32, d2: f32) -> f32 {
+        return importance * slc_weight(rt2, d2);
+    }
+
+    /// [`candidate_weight`] of a light bounded by the cone `(center,
+    /// radius, phi, axis, cos_o, cos_e)` at `p` (normal `n`) for threshold
+    /// range² `rt2`: its importance times the Lambertian `1/π` (the same for
+    /// every candidate; it keeps `W` on the radiance's scale) over its
+    /// roulette probability at the centre.
+    pub fn cone_weight(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, rt2: f32, p: vec3f, n: vec3f) -> f32 {
+        let v: vec3f = p - center;
+        return candidate_weight(light_importance(center, radius, phi, axis, cos_o, cos_e, p, n) * INV_PI, rt2, dot(v, v));
+    }
+
+    /// Expected number of times `k` independent one-slot weighted
+    /// reservoirs pick a light of weight `w` at a point whose candidates
+    /// weigh `w_sum` in all (this light included iff `in_range`):
+    /// `k · w / (W₋ⱼ + w)`; 0 for `w ≤ 0` (never picked).
+    pub fn weighted_select_pdf(w: f32, w_sum: f32, in_range: bool, k: u32) -> f32 {
+        if w <= 0.0 {
+            return 0.0;
+        }
+        let total: f32 = select(w_sum + w, w_sum, in_range);
+        return to_f32(k) * w / total;
+    }
+}
+
+/// Bounds of one light for [`light_importance`]: a sphere holding it, its
+/// power `φ` (the max channel of [`Light::power`]), the cone of its emitter
+/// normals `(axis, cos θ_o)` and the spread `cos θ_e` of emission around
+/// each normal, as pbrt-v4 bounds lights: a triangle `θ_o = 0, θ_e = π/2`
+/// (one-sided); a VPL the same about its normal; a spot light
+/// `θ_o = θ_inner, θ_e = θ_outer − θ_inner`; point and IES lights the whole
+/// sphere (`θ_o = π`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightCone {
+    /// Bounding-sphere centre.
+    pub center: Vec3,
+    /// Bounding-sphere radius.
+    pub radius: f32,
+    /// Emitted power (max channel).
+    pub phi: f32,
+    /// Axis of the normal cone.
+    pub axis: Vec3,
+    /// Cosine of the normal cone's half-angle.
+    pub cos_o: f32,
+    /// Cosine of the emission spread around each normal.
+    pub cos_e: f32,
+}
+
+impl LightCone {
+    /// The cone of `l` emitting `power` (its [`Light::power`]), inside its
+    /// range-sphere bound ([`Light::bound`]: a triangle's minimal sphere).
+    pub fn of_light(l: &Light, power: Vec3) -> LightCone {
+        let b = l.bound();
+        let phi = power.max_element();
+        let cone = |axis: Vec3, cos_o: f32, cos_e: f32| LightCone { center: b.center, radius: b.extent, phi, axis, cos_o, cos_e };
+        match l {
+            Light::Triangle(t) => cone(t.normal(), 1.0, 0.0),
+            Light::Vpl(v) => cone(v.normal(), 1.0, 0.0),
+            Light::Spot(s) => {
+                let (cos_outer, cos_inner) = s.cone_cosines();
+                let (co, ci) = (cos_outer.clamp(-1.0, 1.0), cos_inner.clamp(-1.0, 1.0));
+                // cos(θ_outer − θ_inner) without trigonometry.
+                let cos_e = co * ci + safe_sqrt(1.0 - co * co) * safe_sqrt(1.0 - ci * ci);
+                cone(s.direction(), ci, cos_e)
+            }
+            Light::Point(_) | Light::Ies(_) => cone(Vec3::Z, -1.0, 0.0),
+        }
+    }
+
+    /// [`light_importance`] of this light at `p` with receiver normal `n`.
+    pub fn importance(&self, p: Vec3, n: Vec3) -> f32 {
+        light_importance(self.center, self.radius, self.phi, self.axis, self.cos_o, self.cos_e, p, n)
+    }
+
+    /// `slc-weighted`'s [`cone_weight`] of this light at `p` (normal `n`)
+    /// for threshold range² `rt2`.
+    pub fn weight(&self, p: Vec3, n: Vec3, rt2: f32) -> f32 {
+        cone_weight(self.center, self.radius, self.phi, self.axis, self.cos_o, self.cos_e, rt2, p, n)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::light::{PointLight, TriangleLight};
+
+    #[test]
+    fn importance_is_zero_only_where_nothing_can_arrive() {
+        let t = Light::Triangle(TriangleLight::new(Vec3::ZERO, Vec3::X * 0.1, Vec3::Z * 0.1, Vec3::ONE).unwrap());
+        let c = LightCone::of_light(&t, t.power());
+        let up = if c.axis.y > 0.0 { 1.0 } else { -1.0 };
+        // In front of the emitter, facing it: positive; nearer is larger.
+        let near = c.importance(Vec3::new(0.0, up, 0.0), Vec3::new(0.0, -up, 0.0));
+        let far = c.importance(Vec3::new(0.0, 3.0 * up, 0.0), Vec3::new(0.0, -up, 0.0));
+        assert!(near > far && far > 0.0, "{near} {far}");
+        // Behind the one-sided emitter: 0; receiver facing away: 0.
+        assert_eq!(c.importance(Vec3::new(0.0, -up, 0.0), Vec3::new(0.0, up, 0.0)), 0.0);
+        assert_eq!(c.importance(Vec3::new(0.0, up, 0.0), Vec3::new(0.0, up, 0.0)), 0.0);
+        // A point in the emitter's plane, its normal on the emitting side:
+        // the centre lies on both horizons, yet the subtended angle widens
+        // both cosines, so the (near) light keeps a positive importance.
+        assert!(c.importance(Vec3::new(0.3, 0.0, 0.05), Vec3::new(0.0, up, 0.0)) > 0.0);
+        // A point light at the receiver itself: finite.
+        let p = Light::Point(PointLight::new(Vec3::ONE, Vec3::ONE).unwrap());
+        let pc = LightCone::of_light(&p, p.power());
+        assert!(pc.importance(Vec3::ONE, Vec3::Y).is_finite());
+    }
+
+    #[test]
+    fn select_pdf_is_that_of_the_other_candidates() {
+        // In range: the light is part of W; out of range: added to it.
+        assert_eq!(weighted_select_pdf(1.0, 4.0, true, 2), 0.5);
+        assert_eq!(weighted_select_pdf(1.0, 3.0, false, 2), 0.5);
+        assert_eq!(weighted_select_pdf(0.0, 3.0, false, 2), 0.0);
+        // Alone and out of range: certain per slot.
+        assert_eq!(weighted_select_pdf(2.0, 0.0, false, 1), 1.0);
+    }
+}
