@@ -47,9 +47,14 @@ pub struct BenchArgs {
     /// Path tracing: seconds per method (equal time).
     #[arg(long, default_value_t = 10.0)]
     seconds: f64,
-    /// Path tracing: samples per pixel of the reference (power sampling).
+    /// Path tracing: samples per pixel of the reference.
     #[arg(long, default_value_t = 1024)]
     reference_spp: u32,
+    /// Path tracing: the reference's method (any of them is unbiased; its
+    /// own seed makes it independent of the runs; the one with the least
+    /// noise per second makes the cheapest good reference).
+    #[arg(long, default_value = "power", value_parser = crate::pt_method)]
+    reference_method: PtMethod,
 }
 
 /// The configurations of a VPL bench: `none`, then `slc` per error bound,
@@ -266,10 +271,10 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
     let (w, h) = (a.scene.width.or(f.width).unwrap_or(128), a.scene.height.or(f.height).unwrap_or(128));
     let pts = PtScene::new(&scene, &lights).map_err(|e| e.to_string())?;
     let eps = a.error_bound.unwrap_or(PtSettings::default().error_bound);
-    let ref_settings = PtSettings { method: PtMethod::Power, seed: 0x5EED, ..PtSettings::default() };
+    let ref_settings = PtSettings { method: a.reference_method, error_bound: eps, seed: 0x5EED, ..PtSettings::default() };
     let bar = ProgressBar::new(a.reference_spp as u64);
     bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} spp, {msg} (ETA {eta})").map_err(|e| e.to_string())?);
-    bar.set_message("reference: power sampling");
+    bar.set_message(format!("reference: {}", a.reference_method.name()));
     let mut progress = |done: u32, total: u32| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
@@ -300,7 +305,15 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
             bar.set_position(k as u64 * tenths + ((acc.time_ms / 100.0) as u64).min(tenths));
         }
         let last = *series.last().expect("at least one pass");
-        runs.push(PtRun { method: method.name().into(), param: method.culls().then_some(eps), time_ms: last.0, spp: last.1, rmse: last.2, series });
+        runs.push(PtRun {
+            method: method.name().into(),
+            param: method.culls().then_some(eps),
+            time_ms: last.0,
+            spp: last.1,
+            rmse: last.2,
+            rmse_net: (last.2 * last.2 - r.noise * r.noise).max(0.0).sqrt(),
+            series,
+        });
     }
     bar.finish_and_clear();
     let report = PtReport {
@@ -313,7 +326,7 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
         width: w,
         height: h,
         lights: pts.light_count(),
-        reference: format!("power, {} spp", a.reference_spp),
+        reference: format!("{}, {} spp", a.reference_method.name(), a.reference_spp),
         reference_noise: r.noise,
         reference_from_cache: cached,
         runs,
@@ -332,7 +345,7 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
     if let Some(plot) = &a.plot {
         crate::plot::rmse_over_time(&report, plot)?;
     }
-    let uniform = report.runs.iter().find(|r| r.method == "uniform").map_or(f64::NAN, |r| r.rmse);
+    let uniform = report.runs.iter().find(|r| r.method == "uniform").map_or(f64::NAN, |r| r.rmse_net);
     println!("backend {}", report.backend);
     println!("lights  {}", crate::PT_LIGHTS_NOTE);
     println!(
@@ -346,16 +359,28 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
         if report.reference_from_cache { "from cache" } else { "rendered" },
         report.reference_noise
     );
-    println!("{:<14} {:>8} {:>10} {:>6} {:>10} {:>16}", "method", "param", "time ms", "spp", "rmse", "uniform/method");
+    println!("{:<14} {:>8} {:>10} {:>6} {:>10} {:>10} {:>16}", "method", "param", "time ms", "spp", "rmse", "rmse net", "uniform/method");
     for r in &report.runs {
         println!(
-            "{:<14} {:>8} {:>10.0} {:>6} {:>10.5} {:>16.2}",
+            "{:<14} {:>8} {:>10.0} {:>6} {:>10.5} {:>10.5} {:>16.2}",
             r.method,
             r.param.map_or("-".into(), |p| p.to_string()),
             r.time_ms,
             r.spp,
             r.rmse,
-            uniform / r.rmse
+            r.rmse_net,
+            uniform / r.rmse_net
+        );
+    }
+    println!("(rmse net: the reference's own noise taken out, √(rmse² − {:.5}²); the ratio uses it)", report.reference_noise);
+    let most = report.runs.iter().map(|r| r.spp).max().unwrap_or(0);
+    if (a.reference_spp as u64) < 16 * most as u64 {
+        println!("warning: the reference has {} spp, less than 16 × the {most} spp of the fastest method: raise --reference-spp", a.reference_spp);
+    }
+    for r in report.runs.iter().filter(|r| report.reference_noise > r.rmse_net / 3.0) {
+        println!(
+            "warning: the reference's own noise {:.5} exceeds a third of {}'s net RMSE {:.5}: its ratio is uncertain; raise --reference-spp",
+            report.reference_noise, r.method, r.rmse_net
         );
     }
     Ok(())

@@ -81,7 +81,7 @@ fn vpl_method(name: &str) -> Result<VplMethod, String> {
 }
 
 /// A path-tracing method name.
-fn pt_method(name: &str) -> Result<PtMethod, String> {
+pub(crate) fn pt_method(name: &str) -> Result<PtMethod, String> {
     PtMethod::ALL.into_iter().find(|m| m.name() == name).ok_or_else(|| {
         let names: Vec<&str> = PtMethod::ALL.iter().map(|m| m.name()).collect();
         format!("method '{name}' is not one of {} (--app pt)", names.join(", "))
@@ -93,8 +93,8 @@ struct RenderArgs {
     #[command(flatten)]
     scene: SceneArgs,
     /// Method: slc | clamp | none | reference (vpl; reference on the CPU
-    /// only); slc | slc-reservoir | uniform | power | lightbvh (pt; lightbvh
-    /// on the CPU only) [default: slc].
+    /// only); slc | slc-reservoir | slc-weighted | uniform | power | lightbvh
+    /// (pt; lightbvh on the CPU only) [default: slc].
     #[arg(long)]
     method: Option<String>,
     /// Path tracing: samples per pixel [default: 16].

@@ -50,6 +50,7 @@ pub fn method_color(method: &str) -> RGBColor {
         "none" => RGBColor(40, 40, 40),
         "reference" => RGBColor(120, 120, 120),
         "slc-reservoir" => RGBColor(148, 103, 189),
+        "slc-weighted" => RGBColor(23, 190, 207),
         "uniform" => RGBColor(255, 127, 14),
         "power" => RGBColor(140, 86, 75),
         "lightbvh" => RGBColor(227, 119, 194),

@@ -75,6 +75,10 @@ pub struct PtRun {
     pub spp: u32,
     /// RMSE against the reference at the end.
     pub rmse: f64,
+    /// That RMSE with the reference's own noise taken out,
+    /// `√max(rmse² − noise², 0)` (the two errors are independent).
+    #[serde(default)]
+    pub rmse_net: f64,
     /// (time ms, spp, RMSE) after each pass: RMSE against time.
     pub series: Vec<(f64, u32, f64)>,
 }

@@ -272,10 +272,10 @@ fn gpu_path_tracer_renders_and_benches() {
     assert!(d.join("g.exr").exists() && d.join("g.png").exists());
     let args = ["bench", "--app", "pt", "--backend", "gpu", "--width", "16", "--height", "16", "--seconds", "0.2", "--reference-spp", "8"];
     let text = ok(&d, &[&args[..], &["--json", "g.json", "--cache-dir", "cache"]].concat());
-    assert!(text.contains("slc-reservoir"), "{text}");
+    assert!(text.contains("slc-reservoir") && text.contains("slc-weighted"), "{text}");
     let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("g.json")).unwrap()).unwrap();
     assert!(json["backend"].as_str().unwrap().starts_with("gpu: "));
-    assert_eq!(json["runs"].as_array().unwrap().len(), 4);
+    assert_eq!(json["runs"].as_array().unwrap().len(), 5);
     let out = slc(&d, &["render", "--app", "pt", "--backend", "gpu", "--method", "lightbvh", "--width", "8", "--height", "8", "--out", "p.exr"]);
     assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("--backend cpu"));
     std::fs::remove_dir_all(&d).ok();
@@ -284,7 +284,7 @@ fn gpu_path_tracer_renders_and_benches() {
 /// README: `slc render --app pt` with each method.
 fn path_tracer_renders() {
     let d = tempdir("pt");
-    for m in ["slc", "slc-reservoir", "uniform", "power", "lightbvh"] {
+    for m in ["slc", "slc-reservoir", "slc-weighted", "uniform", "power", "lightbvh"] {
         let out = format!("pt-{m}.exr");
         let text = ok(&d, &["render", "--app", "pt", "--method", m, "--width", "24", "--height", "24", "--spp", "2", "--out", &out]);
         assert!(text.contains("path tracing") && text.contains("2 samples per pixel") && text.contains("[primary]"), "{text}");
@@ -323,15 +323,21 @@ fn path_tracer_bench() {
             "cache",
         ],
     );
-    assert!(text.contains("uniform/method"), "{text}");
+    assert!(text.contains("uniform/method") && text.contains("rmse net"), "{text}");
+    // An 8-spp reference is far too noisy for these runs: the output says so.
+    assert!(text.contains("warning: the reference has 8 spp") && text.contains("exceeds a third of"), "{text}");
     let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("p.json")).unwrap()).unwrap();
     let runs = json["runs"].as_array().unwrap();
-    assert_eq!(runs.len(), 5);
+    assert_eq!(runs.len(), 6);
+    let noise = json["reference_noise"].as_f64().unwrap();
     for r in runs {
-        for key in ["method", "param", "time_ms", "spp", "rmse", "series"] {
+        for key in ["method", "param", "time_ms", "spp", "rmse", "rmse_net", "series"] {
             assert!(r.get(key).is_some(), "run lacks {key}");
         }
         assert!(!r["series"].as_array().unwrap().is_empty());
+        // The net RMSE is the measured one with the reference's noise taken out.
+        let (rmse, net) = (r["rmse"].as_f64().unwrap(), r["rmse_net"].as_f64().unwrap());
+        assert!((net * net - (rmse * rmse - noise * noise).max(0.0)).abs() <= 1e-9 + 1e-6 * rmse * rmse, "{rmse} {net} {noise}");
     }
     assert!(json["reference_noise"].as_f64().unwrap() >= 0.0);
     assert!(std::fs::read_to_string(d.join("p.svg")).unwrap().contains("RMSE"));

@@ -20,6 +20,13 @@
 //! translate = [0.28, 0.0, 0.28]
 //! subdivide = 0                    # each level splits every triangle into 4
 //!
+//! [[scatter_lights]]              # small triangle lights over the surfaces above
+//! count = 10000
+//! size = 0.012                     # edge length
+//! offset = 0.002                   # above the surface, on the room's side
+//! emission = [0.5, 0.45, 0.4]
+//! seed = 1
+//!
 //! [[light]]
 //! type = "ies"                     # or "point", "spot"
 //! file = "../../shared/data/ies/indoor-60w-120deg.ies"
@@ -58,6 +65,8 @@ struct File {
     geometry: Vec<GeometryDef>,
     #[serde(default)]
     emissive_mesh: Vec<EmissiveDef>,
+    #[serde(default)]
+    scatter_lights: Vec<ScatterDef>,
     #[serde(default)]
     light: Vec<LightDef>,
     primary: Option<LightDef>,
@@ -112,6 +121,89 @@ struct EmissiveDef {
     scale: f32,
     #[serde(default)]
     translate: [f32; 3],
+}
+
+/// `[[scatter_lights]]`: `count` small equilateral triangle lights of edge
+/// `size`, scattered uniformly by area over the non-emissive surfaces
+/// defined so far, `offset` above them on their front side (the side
+/// their winding's normal points to), emitting `emission` away from the
+/// surface or (`face = "surface"`) toward it; placed by `seed`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ScatterDef {
+    count: u32,
+    size: f32,
+    #[serde(default)]
+    offset: f32,
+    emission: [f32; 3],
+    #[serde(default = "one_u32")]
+    seed: u32,
+    /// `"away"` (default): the light emits away from its surface; `"surface"`:
+    /// it faces the surface it floats over (a small lamp lighting a pool on
+    /// the wall; seen from the room it is its dark back).
+    #[serde(default)]
+    face: Option<String>,
+}
+
+fn one_u32() -> u32 {
+    1
+}
+
+/// Most lights `[[scatter_lights]]` places.
+const MAX_SCATTER: u32 = 1 << 20;
+
+/// The `[[scatter_lights]]` triangles over `scene`'s non-emissive surfaces
+/// (see [`ScatterDef`]): a surface triangle is chosen in proportion to its
+/// area, a point uniformly on it, and the light's normal is the surface's
+/// (front side; the Cornell box's walls face the room, its blocks face
+/// out); each light is rotated about it at random. Random numbers come from `pcg_hash` of the seed and the index.
+fn scatter_lights(scene: &Scene, d: &ScatterDef) -> Result<Vec<[Vec3; 3]>, String> {
+    use slc_core::xi::{pcg_hash, xi_from_bits};
+    let toward = match d.face.as_deref() {
+        None | Some("away") => false,
+        Some("surface") => true,
+        Some(f) => return Err(format!("face \"{f}\" is not \"away\" or \"surface\"")),
+    };
+    let surfaces: Vec<usize> =
+        (0..scene.triangles.len()).filter(|&t| scene.materials[scene.material_of[t] as usize].emission == Vec3::ZERO).collect();
+    let area = |t: &[Vec3; 3]| 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).length();
+    let mut cdf = Vec::with_capacity(surfaces.len());
+    let mut total = 0.0f64;
+    for &t in &surfaces {
+        total += area(&scene.triangles[t]) as f64;
+        cdf.push(total);
+    }
+    if !(total > 0.0) {
+        return Err("no non-emissive surface of positive area to scatter lights over (list [[geometry]] first)".into());
+    }
+    let mut out = Vec::with_capacity(d.count as usize);
+    for k in 0..d.count {
+        let mut h = pcg_hash(d.seed ^ pcg_hash(k));
+        let mut u = || {
+            h = pcg_hash(h);
+            xi_from_bits(h)
+        };
+        let pick = (u() as f64 * total, u(), u(), u());
+        let i = cdf.partition_point(|&c| c <= pick.0).min(surfaces.len() - 1);
+        let [a, b, c] = scene.triangles[surfaces[i]];
+        let su = pick.1.sqrt();
+        let p = a * (1.0 - su) + b * (su * (1.0 - pick.2)) + c * (su * pick.2);
+        let n = (b - a).cross(c - a).normalize_or_zero();
+        // An orthonormal frame (t, s, n) rotated by a random angle.
+        let (t0, s0) = n.any_orthonormal_pair();
+        let phi = std::f32::consts::TAU * pick.3;
+        let (t, s) = (t0 * phi.cos() + s0 * phi.sin(), s0 * phi.cos() - t0 * phi.sin());
+        let r = d.size / 3f32.sqrt();
+        let o = p + n * d.offset;
+        let corner = |k: f32| {
+            let a = std::f32::consts::TAU * k / 3.0;
+            o + (t * a.cos() + s * a.sin()) * r
+        };
+        // Counter-clockwise about n, so the triangle's normal is n (or
+        // clockwise: −n, facing the surface).
+        out.push(if toward { [corner(0.0), corner(2.0), corner(1.0)] } else { [corner(0.0), corner(1.0), corner(2.0)] });
+    }
+    Ok(out)
 }
 
 /// `[[light]]` and `[primary]`: one flat table per light with a `type` key,
@@ -282,6 +374,30 @@ impl SceneFile {
             mesh.materials = vec![Material { albedo: Vec3::splat(0.5), emission }];
             append(&mut scene, mesh, e.scale, e.translate);
         }
+        for (i, d) in f.scatter_lights.iter().enumerate() {
+            let emission = v3(d.emission);
+            if !(1..=MAX_SCATTER).contains(&d.count) {
+                return Err(bad(format!("scatter_lights {i}: count {} must be in 1..={MAX_SCATTER}", d.count)));
+            }
+            if !(d.size.is_finite() && d.size > 0.0 && d.offset.is_finite() && d.offset >= 0.0) {
+                return Err(bad(format!("scatter_lights {i}: size {} must be finite and > 0, offset {} finite and >= 0", d.size, d.offset)));
+            }
+            if !(emission.is_finite() && emission.min_element() >= 0.0) {
+                return Err(bad(format!("scatter_lights {i}: emission must be finite and >= 0")));
+            }
+            let triangles = scatter_lights(&scene, d).map_err(|e| bad(format!("scatter_lights {i}: {e}")))?;
+            let lights = Scene {
+                name: String::new(),
+                material_of: vec![0; triangles.len()],
+                normals: Vec::new(),
+                triangles,
+                materials: vec![Material { albedo: Vec3::splat(0.5), emission }],
+                camera: scene.camera,
+                primary: scene.primary,
+                unsupported: Vec::new(),
+            };
+            append(&mut scene, lights, 1.0, [0.0; 3]);
+        }
         if let Some(c) = f.camera {
             scene.camera = Camera { position: v3(c.position), target: v3(c.look_at), up: v3(c.up), vfov_deg: c.fov };
         } else if !f.geometry.iter().any(|g| g.builtin.is_some()) {
@@ -409,6 +525,42 @@ mod tests {
         assert_eq!(s.len(), 16);
         let area: f32 = s.iter().map(|[a, b, c]| 0.5 * (*b - *a).cross(*c - *a).length()).sum();
         assert!((area - 0.5).abs() < 1e-6);
+    }
+
+    /// `[[scatter_lights]]` places `count` lights of the given size, each
+    /// `offset` in front of a surface triangle and facing the way it does
+    /// (in the Cornell box: into the room, or out of a block); the same
+    /// seed places them the same way; bad values are errors.
+    #[test]
+    fn scattered_lights_face_the_room() {
+        let text = "[[geometry]]\nbuiltin = \"cornell\"\nemission_scale = 0.0\n[[scatter_lights]]\ncount = 500\nsize = 0.01\noffset = 0.002\nemission = [1, 1, 1]\n";
+        let f = SceneFile::parse(text, Path::new("."), "t.toml").unwrap();
+        let base = Scene::cornell_box();
+        assert_eq!(f.scene.triangles.len(), base.triangles.len() + 500);
+        for t in &f.scene.triangles[base.triangles.len()..] {
+            let n = (t[1] - t[0]).cross(t[2] - t[0]).normalize();
+            let foot = (t[0] + t[1] + t[2]) / 3.0 - n * 0.002;
+            // A surface whose plane holds the foot point and whose normal is the light's.
+            let on = base.triangles.iter().any(|s| {
+                let sn = (s[1] - s[0]).cross(s[2] - s[0]).normalize();
+                sn.dot(n) > 0.9999 && sn.dot(foot - s[0]).abs() < 1e-4
+            });
+            assert!(on, "light at {foot} is not in front of a surface, facing its way");
+            assert!(((t[1] - t[0]).length() - 0.01).abs() < 1e-5);
+        }
+        assert_eq!(SceneFile::parse(text, Path::new("."), "t.toml").unwrap().scene.triangles, f.scene.triangles);
+        let facing = SceneFile::parse(&format!("{text}face = \"surface\"\n"), Path::new("."), "t.toml").unwrap();
+        for (a, b) in facing.scene.triangles.iter().zip(&f.scene.triangles).skip(base.triangles.len()) {
+            let n = |t: &[Vec3; 3]| (t[1] - t[0]).cross(t[2] - t[0]).normalize();
+            assert!(n(a).dot(n(b)) < -0.9999, "face = \"surface\" flips the light");
+        }
+        assert!(SceneFile::parse(&format!("{text}face = \"up\"\n"), Path::new("."), "t.toml").is_err());
+        for bad in ["count = 0", "size = -1.0", "offset = -0.1", "emission = [1, -1, 1]"] {
+            let key = bad.split(' ').next().unwrap();
+            let t =
+                text.lines().map(|l| if l.starts_with(&format!("{key} ")) { bad.to_string() } else { l.to_string() }).collect::<Vec<_>>().join("\n");
+            assert!(SceneFile::parse(&t, Path::new("."), "t.toml").is_err(), "{bad}");
+        }
     }
 
     #[test]
