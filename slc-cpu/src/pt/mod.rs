@@ -268,18 +268,7 @@ impl CpuPathTracer {
                 (sum, nee)
             }
             PtMethod::SlcWeighted => {
-                let mut res = WeightedReservoir::<WEIGHTED_K>::new();
-                let cones = self.pts.light_set().cones();
-                let mut seen = 0;
-                self.bsh.for_each_containing(x, |l| {
-                    seen += 1;
-                    let w = cones[l as usize].weight(x, n, st.rt2[l as usize]);
-                    // Zero weight: never picked (and its MIS pdf is 0), so no draws.
-                    if w > 0.0 {
-                        let u = [(); WEIGHTED_K].map(|_| xi_from_bits(rng.next_u32()));
-                        res.push(l, w, &u);
-                    }
-                });
+                let (res, seen) = self.weighted_picks(st, x, n, rng);
                 let nee = NeeState { seen, w_sum: res.total_weight() };
                 for (l, w) in res.picks() {
                     if let Some(c) = self.connect(s, st, l as usize, (x, n, ng), rho, rng, nee, true, w) {
@@ -310,6 +299,26 @@ impl CpuPathTracer {
                 (sum, NeeState { seen: self.lights().len() as u32, w_sum: 0.0 })
             }
         }
+    }
+
+    /// `slc-weighted`'s traversal at `x` (normal `n`): every in-range
+    /// candidate offered to [`WEIGHTED_K`] one-slot weighted reservoirs
+    /// with its weight ([`slc_core::importance::LightCone::weight`]); also
+    /// the number of candidates.
+    fn weighted_picks(&self, st: &Pass, x: Vec3, n: Vec3, rng: &mut Pcg32) -> (WeightedReservoir<WEIGHTED_K>, u32) {
+        let mut res = WeightedReservoir::<WEIGHTED_K>::new();
+        let cones = self.pts.light_set().cones();
+        let mut seen = 0;
+        self.bsh.for_each_containing(x, |l| {
+            seen += 1;
+            let w = cones[l as usize].weight(x, n, st.rt2[l as usize]);
+            // Zero weight: never picked (and its MIS pdf is 0), so no draws.
+            if w > 0.0 {
+                let u = [(); WEIGHTED_K].map(|_| xi_from_bits(rng.next_u32()));
+                res.push(l, w, &u);
+            }
+        });
+        (res, seen)
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -446,5 +455,44 @@ mod tests {
             }
         }
         assert!(inside >= 2 * PtMethod::ALL.len() * 3 && outside >= 2 * PtMethod::ALL.len() * 3, "{inside} in range, {outside} outside");
+    }
+
+    /// `slc-weighted` against brute-force enumeration of the candidates:
+    /// the traversal's `W` is the sum of the weights of exactly the lights
+    /// whose range sphere holds `x` (every light tested), and over 40,000
+    /// traversals each light is picked `k·w/W` times per traversal on
+    /// average (within 5σ of the binomial count, per slot `w/W`).
+    #[test]
+    fn weighted_picks_match_brute_force_enumeration() {
+        let pts = {
+            let mut p = CpuPathTracer::new(&PtScene::new(&Scene::cornell_box_split_light(8), &[]).unwrap());
+            let st = p.pass_state(&RangeParams::new(0.002, 1.0).unwrap(), 3, 0).unwrap();
+            (p, st)
+        };
+        let (pts, st) = (&pts.0, &pts.1);
+        let (x, n) = (Vec3::new(0.3, 0.0, 0.3), Vec3::Y);
+        let cones = pts.pts.light_set().cones();
+        let brute: Vec<(usize, f64)> =
+            (0..pts.light_count()).filter(|&l| st.spheres[l].contains(x)).map(|l| (l, cones[l].weight(x, n, st.rt2[l]) as f64)).collect();
+        let w_brute: f64 = brute.iter().map(|&(_, w)| w).sum();
+        assert!(brute.len() >= 10 && brute.len() < pts.light_count(), "{} candidates", brute.len());
+        let mut rng = Pcg32::new(11, 5);
+        let trials = 40_000;
+        let mut count = vec![0u32; pts.light_count()];
+        for _ in 0..trials {
+            let (res, seen) = pts.weighted_picks(st, x, n, &mut rng);
+            assert_eq!(seen as usize, brute.len());
+            assert!((res.total_weight() as f64 - w_brute).abs() <= 1e-5 * w_brute, "W {} vs {w_brute}", res.total_weight());
+            for (l, _) in res.picks() {
+                count[l as usize] += 1;
+            }
+        }
+        let slots = (trials * WEIGHTED_K) as f64;
+        for &(l, w) in &brute {
+            let p = w / w_brute;
+            let (expect, sd) = (slots * p, (slots * p * (1.0 - p)).sqrt());
+            assert!((count[l] as f64 - expect).abs() <= 5.0 * sd + 1.0, "light {l}: {} picks, expected {expect:.0} ± {sd:.0}", count[l]);
+        }
+        assert_eq!(count.iter().sum::<u32>() as f64, slots, "a light outside the candidates was picked");
     }
 }
