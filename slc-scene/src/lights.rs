@@ -94,15 +94,6 @@ impl LightSet {
         &self.cones
     }
 
-    /// The cones as the GPU reads them, three `vec4f` per light:
-    /// `(centre, radius)`, `(axis, cos θ_o)`, `(φ, cos θ_e, 0, 0)`.
-    pub fn cone_table(&self) -> Vec<[f32; 4]> {
-        self.cones
-            .iter()
-            .flat_map(|c| [c.center.extend(c.radius).to_array(), c.axis.extend(c.cos_o).to_array(), [c.phi, c.cos_e, 0.0, 0.0]])
-            .collect()
-    }
-
     /// The alias table per light as the GPU reads it:
     /// `(keep probability, alias index as f32 bits, pmf, 0)`.
     pub fn power_table(&self) -> Vec<[f32; 4]> {

@@ -45,6 +45,27 @@ slc_core::shared! {
         pub ies_base: u32,
     }
 
+    /// A light's importance bounds (`slc_core::importance::LightCone`), 48
+    /// bytes, read by `slc-weighted`'s `cone_weight`.
+    pub struct GpuLightCone {
+        /// Bounding-sphere centre.
+        pub center: vec3f,
+        /// Bounding-sphere radius.
+        pub radius: f32,
+        /// Axis of the normal cone.
+        pub axis: vec3f,
+        /// Cosine of the normal cone's half-angle.
+        pub cos_o: f32,
+        /// Emitted power (max channel).
+        pub phi: f32,
+        /// Cosine of the emission spread.
+        pub cos_e: f32,
+        /// Padding.
+        pub pad0: u32,
+        /// Padding.
+        pub pad1: u32,
+    }
+
     /// Node of the geometry BVH used for shadow rays, 32 bytes: a leaf when
     /// `count > 0` (triangles `first .. first + count`), else an inner node
     /// with children `first` and `first + 1`.
@@ -331,6 +352,14 @@ slc_core::shared! {
         /// Shadow-ray offset along the normal (scene units).
         pub eps: f32,
     }
+}
+
+/// The importance cones as the kernels read them.
+pub fn pack_cones(cones: &[slc_core::importance::LightCone]) -> Vec<GpuLightCone> {
+    cones
+        .iter()
+        .map(|c| GpuLightCone { center: c.center, radius: c.radius, axis: c.axis, cos_o: c.cos_o, phi: c.phi, cos_e: c.cos_e, pad0: 0, pad1: 0 })
+        .collect()
 }
 
 /// The lights as the kernels read them, and the IES table (`slc_table`)

@@ -27,6 +27,7 @@ fn rust_twins_match_naga_layout() {
         fields!(GpuTriangle, v0, material, v1, light, v2, pad),
         fields!(GpuPathState, origin, alive, dir, rng, beta, pdf_bsdf, prev, pad, prev_normal, pad2),
         fields!(PtParams, cam_pos, width, cam_right, height, cam_up, depth, cam_forward, seed, pass_index, max_depth, eps, t_min),
+        fields!(GpuLightCone, center, radius, axis, cos_o, phi, cos_e, pad0, pad1),
         fields!(GpuPathVertex, position, alive, normal, pad, weight, pad1, gnormal, pad2),
         fields!(FrameParams, light_count, seed, frame, pad),
         fields!(RefitParams, first, count, pad0, pad1),

@@ -8,9 +8,10 @@ use crate::kernel::{UniformSlots, bind_group, bind_layout, pipeline, storage, ze
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use slc_core::bsh::{BSH_NONE, Bsh};
+use slc_core::importance::LightCone;
 use slc_core::light::{Light, LightBound};
 use slc_core::range::RangeParams;
-use slc_shared_shaders::layout::{FrameParams, RefitParams, pack_lights};
+use slc_shared_shaders::layout::{FrameParams, GpuLightCone, RefitParams, pack_cones, pack_lights};
 use slc_shared_shaders::{Features, Kernel, LightSet, generate};
 
 /// Workgroup size of the 1-D kernels.
@@ -84,15 +85,15 @@ pub(crate) struct GpuLightSet {
 impl GpuLightSet {
     /// Uploads `lights` (with their `bounds`, the `bsh` built over them and
     /// the path tracer's `power` alias table and importance `cones`
-    /// ([`slc_scene::lights::LightSet::cone_table`]), either of which may
-    /// be empty) after checking the buffer and dispatch limits.
+    /// ([`slc_scene::lights::LightSet::cones`]), either of which may be
+    /// empty) after checking the buffer and dispatch limits.
     pub(crate) fn new(
         gpu: &GpuContext,
         lights: &[Light],
         bounds: &[LightBound],
         bsh: &Bsh,
         power: &[[f32; 4]],
-        cones: &[[f32; 4]],
+        cones: &[LightCone],
     ) -> Result<GpuLightSet, GpuError> {
         let n = lights.len() as u64;
         let lim = &gpu.limits;
@@ -105,9 +106,10 @@ impl GpuLightSet {
         let extent: Vec<f32> = bounds.iter().map(|b| b.extent).collect();
         let lights_buf = s("lights", bytemuck::cast_slice(&gpu_lights));
         let table_buf = s("slc_table", bytemuck::cast_slice(&table));
-        let or_one = |t: &'_ [[f32; 4]]| if t.is_empty() { vec![[0.0f32; 4]] } else { t.to_vec() };
-        let power_buf = s("power_table", bytemuck::cast_slice(&or_one(power)));
-        let cones_buf = s("light_cones", bytemuck::cast_slice(&or_one(cones)));
+        // A binding cannot be empty: a zeroed entry stands in.
+        let power_buf = s("power_table", bytemuck::cast_slice(if power.is_empty() { &[[0.0f32; 4]][..] } else { power }));
+        let cones = if cones.is_empty() { vec![GpuLightCone::default()] } else { pack_cones(cones) };
+        let cones_buf = s("light_cones", bytemuck::cast_slice(&cones));
         let ids_buf = s("ids", bytemuck::cast_slice(&ids));
         let extent_buf = s("extent", bytemuck::cast_slice(&extent));
         let rt2 = zeroed(gpu, "rt2", n * 4, wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST);

@@ -133,7 +133,7 @@ impl<'a> GpuPt<'a> {
         gpu.require("max_compute_workgroups_per_dimension (pixels)", pixels.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
         gpu.require("geometry BVH depth (64-entry traversal stack)", geo_depth, MAX_GEO_DEPTH)?;
         let ls = pts.light_set();
-        let set = GpuLightSet::new(gpu, ls.lights(), ls.bounds(), ls.bsh(), &ls.power_table(), &ls.cone_table())?;
+        let set = GpuLightSet::new(gpu, ls.lights(), ls.bounds(), ls.bsh(), &ls.power_table(), ls.cones())?;
         let base = Features { lights: set.types, workgroup_size: WG, heuristic: Heuristic::Power, ..Features::default() };
         let s = |label: &str, bytes: &[u8]| storage(gpu, label, bytes, wgpu::BufferUsages::empty());
         let geo_nodes_buf = s("geo nodes", bytemuck::cast_slice(&geo_nodes));

@@ -296,7 +296,8 @@ impl CpuPathTracer {
                 {
                     sum += c;
                 }
-                (sum, NeeState { seen: self.lights().len() as u32, w_sum: 0.0 })
+                // The one-light methods' MIS needs nothing of the traversal.
+                (sum, NeeState::default())
             }
         }
     }

@@ -12,16 +12,13 @@ fn mis_weight(pdf_a: f32, pdf_b: f32) -> f32 {
 }
 
 @group(1) @binding(1) var<storage, read> power_table: array<vec4f>;
-// Importance cones, three vec4f per light (LightSet::cone_table).
-@group(1) @binding(2) var<storage, read> light_cones: array<vec4f>;
+@group(1) @binding(2) var<storage, read> light_cones: array<GpuLightCone>;
 
 /// `slc-weighted`'s weight of light `li` at `x` with normal `n`
 /// (slc-core's `cone_weight`).
 fn light_weight(li: u32, x: vec3f, n: vec3f) -> f32 {
-    let a = light_cones[3u * li];
-    let b = light_cones[3u * li + 1u];
-    let c = light_cones[3u * li + 2u];
-    return cone_weight(a.xyz, a.w, c.x, b.xyz, b.w, c.y, rt2[li], x, n);
+    let c = light_cones[li];
+    return cone_weight(c.center, c.radius, c.phi, c.axis, c.cos_o, c.cos_e, rt2[li], x, n);
 }
 
 /// Probability (expected count, for the weighted picks) that the light

@@ -11,6 +11,9 @@ const LIGHT_VPL: u32 = 4;
 struct GpuLight {
     p0: vec3f, kind: u32, p1: vec3f, a: f32, p2: vec3f, b: f32, intensity: vec3f, ies_base: u32
 }
+struct GpuLightCone {
+    center: vec3f, radius: f32, axis: vec3f, cos_o: f32, phi: f32, cos_e: f32, pad0: u32, pad1: u32
+}
 struct GpuGeoNode {
     bmin: vec3f, first: u32, bmax: vec3f, count: u32
 }
@@ -807,16 +810,13 @@ fn mis_weight(pdf_a: f32, pdf_b: f32) -> f32 {
 }
 
 @group(1) @binding(1) var<storage, read> power_table: array<vec4f>;
-// Importance cones, three vec4f per light (LightSet::cone_table).
-@group(1) @binding(2) var<storage, read> light_cones: array<vec4f>;
+@group(1) @binding(2) var<storage, read> light_cones: array<GpuLightCone>;
 
 /// `slc-weighted`'s weight of light `li` at `x` with normal `n`
 /// (slc-core's `cone_weight`).
 fn light_weight(li: u32, x: vec3f, n: vec3f) -> f32 {
-    let a = light_cones[3u * li];
-    let b = light_cones[3u * li + 1u];
-    let c = light_cones[3u * li + 2u];
-    return cone_weight(a.xyz, a.w, c.x, b.xyz, b.w, c.y, rt2[li], x, n);
+    let c = light_cones[li];
+    return cone_weight(c.center, c.radius, c.phi, c.axis, c.cos_o, c.cos_e, rt2[li], x, n);
 }
 
 /// Probability (expected count, for the weighted picks) that the light

@@ -11,6 +11,9 @@ const LIGHT_VPL: u32 = 4;
 struct GpuLight {
     p0: vec3f, kind: u32, p1: vec3f, a: f32, p2: vec3f, b: f32, intensity: vec3f, ies_base: u32
 }
+struct GpuLightCone {
+    center: vec3f, radius: f32, axis: vec3f, cos_o: f32, phi: f32, cos_e: f32, pad0: u32, pad1: u32
+}
 struct GpuGeoNode {
     bmin: vec3f, first: u32, bmax: vec3f, count: u32
 }

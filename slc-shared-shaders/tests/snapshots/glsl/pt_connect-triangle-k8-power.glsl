@@ -13,6 +13,16 @@ struct GpuLight {
     vec3 intensity;
     uint ies_base;
 };
+struct GpuLightCone {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint pad0_;
+    uint pad1_;
+};
 struct GpuGeoNode {
     vec3 bmin;
     uint first;
@@ -202,11 +212,11 @@ layout(std430) readonly buffer type_4_block_5Compute { float _group_0_binding_3_
 
 layout(std140) uniform ShadeParams_block_6Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_13_block_7Compute { GpuPathVertex _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_14_block_7Compute { GpuPathVertex _group_0_binding_1_cs[]; };
 
 layout(std430) buffer type_12_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_14_block_9Compute { uint _group_0_binding_9_cs[]; };
+layout(std430) buffer type_15_block_9Compute { uint _group_0_binding_9_cs[]; };
 
 
 float to_f32_(uint u) {

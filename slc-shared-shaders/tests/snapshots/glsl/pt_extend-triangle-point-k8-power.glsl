@@ -13,6 +13,16 @@ struct GpuLight {
     vec3 intensity;
     uint ies_base;
 };
+struct GpuLightCone {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint pad0_;
+    uint pad1_;
+};
 struct GpuGeoNode {
     vec3 bmin;
     uint first;
@@ -185,23 +195,23 @@ layout(std430) readonly buffer type_7_block_1Compute { GpuTriangle _group_0_bind
 
 layout(std430) readonly buffer type_4_block_2Compute { float _group_0_binding_2_cs[]; };
 
-layout(std430) readonly buffer type_10_block_3Compute { GpuLight _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_11_block_3Compute { GpuLight _group_0_binding_1_cs[]; };
 
 layout(std140) uniform PtParams_block_4Compute { PtParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_11_block_5Compute { BshNode _group_0_binding_3_cs[]; };
+layout(std430) readonly buffer type_12_block_5Compute { BshNode _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_12_block_6Compute { uint _group_0_binding_4_cs[]; };
+layout(std430) readonly buffer type_13_block_6Compute { uint _group_0_binding_4_cs[]; };
 
 layout(std430) readonly buffer type_9_block_7Compute { vec4 _group_0_binding_7_cs[]; };
 
 layout(std430) readonly buffer type_9_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
-layout(std430) readonly buffer type_12_block_9Compute { uint _group_0_binding_9_cs[]; };
+layout(std430) readonly buffer type_13_block_9Compute { uint _group_0_binding_9_cs[]; };
 
-layout(std430) buffer type_13_block_10Compute { GpuPathState _group_0_binding_10_cs[]; };
+layout(std430) buffer type_14_block_10Compute { GpuPathState _group_0_binding_10_cs[]; };
 
-layout(std430) buffer type_14_block_11Compute { GpuPathVertex _group_0_binding_11_cs[]; };
+layout(std430) buffer type_15_block_11Compute { GpuPathVertex _group_0_binding_11_cs[]; };
 
 layout(std430) buffer type_9_block_12Compute { vec4 _group_0_binding_12_cs[]; };
 

@@ -13,6 +13,16 @@ struct GpuLight {
     vec3 intensity;
     uint ies_base;
 };
+struct GpuLightCone {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint pad0_;
+    uint pad1_;
+};
 struct GpuGeoNode {
     vec3 bmin;
     uint first;

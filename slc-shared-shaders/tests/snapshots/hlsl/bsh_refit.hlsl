@@ -9,6 +9,17 @@ struct GpuLight {
     uint ies_base;
 };
 
+struct GpuLightCone {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint pad0_;
+    uint pad1_;
+};
+
 struct GpuGeoNode {
     float3 bmin;
     uint first;

@@ -9,6 +9,17 @@ struct GpuLight {
     uint ies_base;
 };
 
+struct GpuLightCone {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint pad0_;
+    uint pad1_;
+};
+
 struct GpuGeoNode {
     float3 bmin;
     uint first;
@@ -1468,14 +1479,25 @@ float mis_weight(float pdf_a_2, float pdf_b_2)
     return _e2;
 }
 
+GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
+    GpuLightCone ret = (GpuLightCone)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.axis = arg2;
+    ret.cos_o = arg3;
+    ret.phi = arg4;
+    ret.cos_e = arg5;
+    ret.pad0_ = arg6;
+    ret.pad1_ = arg7;
+    return ret;
+}
+
 float light_weight(uint li_1, float3 x_13, float3 n_14)
 {
-    float4 a_13 = asfloat(light_cones.Load4((3u * li_1)*16));
-    float4 b_10 = asfloat(light_cones.Load4(((3u * li_1) + 1u)*16));
-    float4 c_14 = asfloat(light_cones.Load4(((3u * li_1) + 2u)*16));
-    float _e30 = asfloat(rt2_7.Load(li_1*4));
-    const float _e31 = cone_weight(a_13.xyz, a_13.w, c_14.x, b_10.xyz, b_10.w, c_14.y, _e30, x_13, n_14);
-    return _e31;
+    GpuLightCone c_14 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    float _e14 = asfloat(rt2_7.Load(li_1*4));
+    const float _e15 = cone_weight(c_14.center_, c_14.radius, c_14.phi, c_14.axis, c_14.cos_o, c_14.cos_e, _e14, x_13, n_14);
+    return _e15;
 }
 
 float select_pdf(uint li_2, float3 x_14, float3 n_15, uint nee, bool in_range_1)

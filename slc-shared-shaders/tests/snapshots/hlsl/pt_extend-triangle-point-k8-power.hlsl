@@ -9,6 +9,17 @@ struct GpuLight {
     uint ies_base;
 };
 
+struct GpuLightCone {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint pad0_;
+    uint pad1_;
+};
+
 struct GpuGeoNode {
     float3 bmin;
     uint first;
@@ -1273,14 +1284,25 @@ float mis_weight(float pdf_a_2, float pdf_b_2)
     return _e2;
 }
 
+GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
+    GpuLightCone ret = (GpuLightCone)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.axis = arg2;
+    ret.cos_o = arg3;
+    ret.phi = arg4;
+    ret.cos_e = arg5;
+    ret.pad0_ = arg6;
+    ret.pad1_ = arg7;
+    return ret;
+}
+
 float light_weight(uint li, float3 x_10, float3 n_13)
 {
-    float4 a_13 = asfloat(light_cones.Load4((3u * li)*16));
-    float4 b_10 = asfloat(light_cones.Load4(((3u * li) + 1u)*16));
-    float4 c_13 = asfloat(light_cones.Load4(((3u * li) + 2u)*16));
-    float _e30 = asfloat(rt2_7.Load(li*4));
-    const float _e31 = cone_weight(a_13.xyz, a_13.w, c_13.x, b_10.xyz, b_10.w, c_13.y, _e30, x_10, n_13);
-    return _e31;
+    GpuLightCone c_13 = ConstructGpuLightCone(asfloat(light_cones.Load3(li*48+0)), asfloat(light_cones.Load(li*48+12)), asfloat(light_cones.Load3(li*48+16)), asfloat(light_cones.Load(li*48+28)), asfloat(light_cones.Load(li*48+32)), asfloat(light_cones.Load(li*48+36)), asuint(light_cones.Load(li*48+40)), asuint(light_cones.Load(li*48+44)));
+    float _e14 = asfloat(rt2_7.Load(li*4));
+    const float _e15 = cone_weight(c_13.center_, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_10, n_13);
+    return _e15;
 }
 
 float select_pdf(uint li_1, float3 x_11, float3 n_14, uint nee, bool in_range_1)
@@ -1479,10 +1501,10 @@ void main(uint3 gid : SV_DispatchThreadID)
     const float3 _e136 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     float3 _e138 = st.dir;
     const float3 _e139 = face_against(_e136, _e138);
-    uint b_11 = (_e110.tri * 3u);
-    float4 _e145 = asfloat(geo_normals.Load4(b_11*16));
-    float4 _e151 = asfloat(geo_normals.Load4((b_11 + 1u)*16));
-    float4 _e157 = asfloat(geo_normals.Load4((b_11 + 2u)*16));
+    uint b_10 = (_e110.tri * 3u);
+    float4 _e145 = asfloat(geo_normals.Load4(b_10*16));
+    float4 _e151 = asfloat(geo_normals.Load4((b_10 + 1u)*16));
+    float4 _e157 = asfloat(geo_normals.Load4((b_10 + 2u)*16));
     const float3 _e162 = barycentric(x_13, tri.v0_, tri.v1_, tri.v2_);
     const float3 _e163 = shading_normal(_e145.xyz, _e151.xyz, _e157.xyz, _e162, _e139);
     if ((tri.light != NO_LIGHT)) {

@@ -27,6 +27,16 @@ struct GpuLight {
     metal::packed_float3 intensity;
     uint ies_base;
 };
+struct GpuLightCone {
+    metal::packed_float3 center;
+    float radius;
+    metal::packed_float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint pad0_;
+    uint pad1_;
+};
 struct GpuGeoNode {
     metal::packed_float3 bmin;
     uint first;

@@ -29,6 +29,16 @@ struct GpuLight {
     metal::packed_float3 intensity;
     uint ies_base;
 };
+struct GpuLightCone {
+    metal::packed_float3 center;
+    float radius;
+    metal::packed_float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint pad0_;
+    uint pad1_;
+};
 struct GpuGeoNode {
     metal::packed_float3 bmin;
     uint first;
@@ -196,8 +206,9 @@ struct Connection {
 };
 typedef GpuLight type_11[1];
 typedef metal::float4 type_12[1];
-typedef GpuPathVertex type_13[1];
-typedef uint type_14[1];
+typedef GpuLightCone type_13[1];
+typedef GpuPathVertex type_14[1];
+typedef uint type_15[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -1693,15 +1704,13 @@ float light_weight(
     metal::float3 x_13,
     metal::float3 n_14,
     device type_4 const& rt2_7,
-    device type_12 const& light_cones,
+    device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 a_13 = light_cones[3u * li_1];
-    metal::float4 b_10 = light_cones[(3u * li_1) + 1u];
-    metal::float4 c_14 = light_cones[(3u * li_1) + 2u];
-    float _e30 = rt2_7[li_1];
-    float _e31 = cone_weight(a_13.xyz, a_13.w, c_14.x, b_10.xyz, b_10.w, c_14.y, _e30, x_13, n_14);
-    return _e31;
+    GpuLightCone c_14 = light_cones[li_1];
+    float _e14 = rt2_7[li_1];
+    float _e15 = cone_weight(c_14.center, c_14.radius, c_14.phi, c_14.axis, c_14.cos_o, c_14.cos_e, _e14, x_13, n_14);
+    return _e15;
 }
 
 float select_pdf(
@@ -1804,9 +1813,9 @@ kernel void main_(
 , device type_4 const& r2_5 [[user(fake0)]]
 , device type_4 const& rt2_7 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_13 const& vertices [[user(fake0)]]
+, device type_14 const& vertices [[user(fake0)]]
 , device type_12& radiance [[user(fake0)]]
-, device type_14& candidates [[user(fake0)]]
+, device type_15& candidates [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};

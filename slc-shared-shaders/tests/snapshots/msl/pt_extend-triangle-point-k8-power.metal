@@ -32,6 +32,16 @@ struct GpuLight {
     metal::packed_float3 intensity;
     uint ies_base;
 };
+struct GpuLightCone {
+    metal::packed_float3 center;
+    float radius;
+    metal::packed_float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint pad0_;
+    uint pad1_;
+};
 struct GpuGeoNode {
     metal::packed_float3 bmin;
     uint first;
@@ -185,11 +195,12 @@ struct type_8 {
     uint inner[64];
 };
 typedef metal::float4 type_9[1];
-typedef GpuLight type_10[1];
-typedef BshNode type_11[1];
-typedef uint type_12[1];
-typedef GpuPathState type_13[1];
-typedef GpuPathVertex type_14[1];
+typedef GpuLightCone type_10[1];
+typedef GpuLight type_11[1];
+typedef BshNode type_12[1];
+typedef uint type_13[1];
+typedef GpuPathState type_14[1];
+typedef GpuPathVertex type_15[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -1502,16 +1513,14 @@ float light_weight(
     uint li,
     metal::float3 x_10,
     metal::float3 n_13,
-    device type_9 const& light_cones,
+    device type_10 const& light_cones,
     device type_4 const& rt2_7,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 a_13 = light_cones[3u * li];
-    metal::float4 b_10 = light_cones[(3u * li) + 1u];
-    metal::float4 c_13 = light_cones[(3u * li) + 2u];
-    float _e30 = rt2_7[li];
-    float _e31 = cone_weight(a_13.xyz, a_13.w, c_13.x, b_10.xyz, b_10.w, c_13.y, _e30, x_10, n_13);
-    return _e31;
+    GpuLightCone c_13 = light_cones[li];
+    float _e14 = rt2_7[li];
+    float _e15 = cone_weight(c_13.center, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_10, n_13);
+    return _e15;
 }
 
 float select_pdf(
@@ -1541,7 +1550,7 @@ float light_pdf(
     uint nee_1,
     bool in_range_2,
     device type_4 const& rt2_7,
-    device type_10 const& lights,
+    device type_11 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_4 = lights[li_2];
@@ -1580,15 +1589,15 @@ kernel void main_(
 , device type_6 const& geo_nodes [[user(fake0)]]
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_4 const& rt2_7 [[user(fake0)]]
-, device type_10 const& lights [[user(fake0)]]
+, device type_11 const& lights [[user(fake0)]]
 , constant PtParams& params [[user(fake0)]]
-, device type_11 const& bsh_nodes [[user(fake0)]]
-, device type_12 const& light_leaf [[user(fake0)]]
+, device type_12 const& bsh_nodes [[user(fake0)]]
+, device type_13 const& light_leaf [[user(fake0)]]
 , device type_9 const& albedo_1 [[user(fake0)]]
 , device type_9 const& geo_normals [[user(fake0)]]
-, device type_12 const& candidates [[user(fake0)]]
-, device type_13& paths [[user(fake0)]]
-, device type_14& vertices [[user(fake0)]]
+, device type_13 const& candidates [[user(fake0)]]
+, device type_14& paths [[user(fake0)]]
+, device type_15& vertices [[user(fake0)]]
 , device type_9& radiance [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
@@ -1669,10 +1678,10 @@ kernel void main_(
     metal::float3 _e136 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e138 = st.dir;
     metal::float3 _e139 = face_against(_e136, _e138);
-    uint b_11 = _e110.tri * 3u;
-    metal::float4 _e145 = geo_normals[b_11];
-    metal::float4 _e151 = geo_normals[b_11 + 1u];
-    metal::float4 _e157 = geo_normals[b_11 + 2u];
+    uint b_10 = _e110.tri * 3u;
+    metal::float4 _e145 = geo_normals[b_10];
+    metal::float4 _e151 = geo_normals[b_10 + 1u];
+    metal::float4 _e157 = geo_normals[b_10 + 2u];
     metal::float3 _e162 = barycentric(x_13, tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e163 = shading_normal(_e145.xyz, _e151.xyz, _e157.xyz, _e162, _e139);
     if (tri.light != NO_LIGHT) {
