@@ -94,7 +94,7 @@ struct RenderArgs {
     scene: SceneArgs,
     /// Method: slc | clamp | none | reference (vpl; reference on the CPU
     /// only); slc | slc-reservoir | slc-weighted | uniform | power | lightbvh
-    /// (pt; lightbvh on the CPU only) [default: slc].
+    /// (pt, both backends) [default: slc].
     #[arg(long)]
     method: Option<String>,
     /// Path tracing: samples per pixel [default: 16].

@@ -14,6 +14,8 @@
 //! | [`ies`] | LM-63 parser and bilinear candela lookup with all horizontal symmetries |
 //! | [`sphere`] | minimal spheres (triangle, point set), sphere union, sphere–point/sphere/AABB tests |
 //! | [`bsh`] | bounding-sphere hierarchy: build, O(n) refit, stackless `child`/`next` traversal |
+//! | [`importance`] | pbrt-v4's importance of a bounded set of lights at a point; `slc-weighted`'s candidate weight and selection pdf |
+//! | [`light_bvh`] | the light BVH's descent steps, sample and pmf (the `lightbvh` baseline) |
 //! | [`reservoir`] | k-slot Algorithm R and a weighted variant |
 //! | [`estimator`] | SLC, clamped-range and unculled sums at one shading point |
 //! | [`mis`] | balance and power heuristics, cosine pdf and cosine-weighted directions (light pdfs include `p_rr`) |
@@ -55,6 +57,7 @@ pub mod ies;
 pub mod importance;
 pub mod interleave;
 pub mod light;
+pub mod light_bvh;
 pub mod mis;
 pub mod path;
 pub mod range;

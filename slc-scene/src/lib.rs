@@ -8,6 +8,7 @@
 //! | [`scene`] | the scene model: triangles with optional vertex normals, materials, camera, primary light, validation |
 //! | [`cornell`], [`obj`], [`scene_file`] | the built-in Cornell box, OBJ+MTL through tobj, TOML scene files |
 //! | [`lights`] | a light set with its BSH and power alias table; emissive triangles → triangle lights |
+//! | [`light_bvh`] | the light BVH of the `lightbvh` baseline (built here, sampled by slc-core on both backends) |
 //! | [`alias`] | Walker's alias table (the `power` baseline) |
 //! | [`image`] | linear HDR images: EXR/PNG I/O, RMSE |
 //! | [`vpl`] | application A's settings, G-buffer, VPLs, shaded irradiance and frame |
@@ -29,6 +30,7 @@ pub mod alias;
 pub mod backend;
 pub mod cornell;
 pub mod image;
+pub mod light_bvh;
 pub mod lights;
 pub mod obj;
 pub mod pt;

@@ -5,6 +5,7 @@
 
 use crate::RenderError;
 use crate::image::Image;
+use crate::light_bvh::LightBvh;
 use crate::lights::{LightSet, emissive_triangles};
 use crate::scene::Scene;
 use glam::Vec3;
@@ -85,11 +86,14 @@ impl Default for PtSettings {
 
 /// A scene ready to path trace on either backend: the scene, its lights
 /// (emissive triangles first, in triangle order, then the extra lights)
-/// with their BSH and power table, and each triangle's light index.
+/// with their BSH, power table and light BVH, and each triangle's light
+/// index.
 #[derive(Clone, Debug)]
 pub struct PtScene {
     scene: Scene,
     lights: LightSet,
+    /// The `lightbvh` baseline's tree over the lights.
+    light_bvh: LightBvh,
     /// Light index of each emissive triangle (u32::MAX for others).
     light_of_triangle: Vec<u32>,
 }
@@ -105,7 +109,9 @@ impl PtScene {
         if lights.is_empty() {
             return Err(RenderError::Setting("the scene has no light (no emissive triangle, no point/spot/IES light)".into()));
         }
-        Ok(PtScene { scene: scene.clone(), lights: LightSet::new(lights)?, light_of_triangle })
+        let lights = LightSet::new(lights)?;
+        let light_bvh = LightBvh::new(lights.lights(), lights.cones());
+        Ok(PtScene { scene: scene.clone(), lights, light_bvh, light_of_triangle })
     }
 
     /// Number of lights.
@@ -121,6 +127,11 @@ impl PtScene {
     /// The lights with their BSH and power table.
     pub fn light_set(&self) -> &LightSet {
         &self.lights
+    }
+
+    /// The light BVH of the `lightbvh` baseline.
+    pub fn light_bvh(&self) -> &LightBvh {
+        &self.light_bvh
     }
 
     /// The lights, in BSH light-index order.

@@ -46,7 +46,8 @@ slc_core::shared! {
     }
 
     /// A light's importance bounds (`slc_core::importance::LightCone`), 48
-    /// bytes, read by `slc-weighted`'s `cone_weight`.
+    /// bytes, read by `slc-weighted`'s `cone_weight`, and its leaf in the
+    /// light BVH.
     pub struct GpuLightCone {
         /// Bounding-sphere centre.
         pub center: vec3f,
@@ -60,10 +61,32 @@ slc_core::shared! {
         pub phi: f32,
         /// Cosine of the emission spread.
         pub cos_e: f32,
+        /// The light's leaf in the light BVH (`LIGHT_BVH_LEAF`: none).
+        pub bvh_leaf: u32,
         /// Padding.
-        pub pad0: u32,
-        /// Padding.
-        pub pad1: u32,
+        pub pad: u32,
+    }
+
+    /// A light-BVH node (`slc_core::light_bvh::LightBvhNode`), 48 bytes,
+    /// in preorder: its lights' importance bounds and links.
+    pub struct GpuLightBvhNode {
+        /// Bounding-sphere centre.
+        pub center: vec3f,
+        /// Bounding-sphere radius.
+        pub radius: f32,
+        /// Axis of the normal cone.
+        pub axis: vec3f,
+        /// Cosine of the normal cone's half-angle.
+        pub cos_o: f32,
+        /// Emitted power (max channel).
+        pub phi: f32,
+        /// Cosine of the emission spread.
+        pub cos_e: f32,
+        /// Interior: the second child (the first is the next node); leaf:
+        /// `LIGHT_BVH_LEAF`.
+        pub second: u32,
+        /// Leaf: its light; interior: `LIGHT_BVH_LEAF`.
+        pub light: u32,
     }
 
     /// Node of the geometry BVH used for shadow rays, 32 bytes: a leaf when
@@ -354,11 +377,47 @@ slc_core::shared! {
     }
 }
 
-/// The importance cones as the kernels read them.
-pub fn pack_cones(cones: &[slc_core::importance::LightCone]) -> Vec<GpuLightCone> {
+/// The importance cones as the kernels read them, each with its light's
+/// leaf in the light BVH (`bvh_leaf[i]`; missing entries: none).
+pub fn pack_cones(cones: &[slc_core::importance::LightCone], bvh_leaf: &[u32]) -> Vec<GpuLightCone> {
     cones
         .iter()
-        .map(|c| GpuLightCone { center: c.center, radius: c.radius, axis: c.axis, cos_o: c.cos_o, phi: c.phi, cos_e: c.cos_e, pad0: 0, pad1: 0 })
+        .enumerate()
+        .map(|(i, c)| GpuLightCone {
+            center: c.center,
+            radius: c.radius,
+            axis: c.axis,
+            cos_o: c.cos_o,
+            phi: c.phi,
+            cos_e: c.cos_e,
+            bvh_leaf: bvh_leaf.get(i).copied().unwrap_or(slc_core::light_bvh::LIGHT_BVH_LEAF),
+            pad: 0,
+        })
+        .collect()
+}
+
+/// The light BVH as the kernels read it. An empty tree becomes one leaf of
+/// zero power (a binding cannot be empty), which samples nothing.
+pub fn pack_light_bvh(nodes: &[slc_core::light_bvh::LightBvhNode]) -> Vec<GpuLightBvhNode> {
+    use slc_core::light_bvh::LIGHT_BVH_LEAF;
+    if nodes.is_empty() {
+        return vec![GpuLightBvhNode { second: LIGHT_BVH_LEAF, light: 0, ..GpuLightBvhNode::default() }];
+    }
+    nodes
+        .iter()
+        .map(|n| {
+            let c = &n.cone;
+            GpuLightBvhNode {
+                center: c.center,
+                radius: c.radius,
+                axis: c.axis,
+                cos_o: c.cos_o,
+                phi: c.phi,
+                cos_e: c.cos_e,
+                second: n.second,
+                light: n.light,
+            }
+        })
         .collect()
 }
 

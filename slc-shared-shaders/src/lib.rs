@@ -374,6 +374,9 @@ pub enum Selection {
     /// in-range lights, each candidate weighted by its importance over its
     /// roulette probability (`slc-weighted`; cones in `light_cones`).
     Weighted,
+    /// One light by light-BVH importance sampling (baseline; the tree in
+    /// `light_bvh`, each light's leaf in `light_cones`).
+    LightBvh,
 }
 
 /// Where `vpl_pack` reads its VPLs.
@@ -568,6 +571,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         Selection::Uniform => "uniform",
         Selection::Power => "power",
         Selection::Weighted => "weighted",
+        Selection::LightBvh => "lightbvh",
     };
     let ctx = context! {
         kernel => kernel.name(),

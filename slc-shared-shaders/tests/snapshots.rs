@@ -26,6 +26,11 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
             Features { lights: LightSet::parse("point,triangle").unwrap(), shadows: false, ..Features::default() },
         ),
         ("pt_connect-triangle-k8-power", Kernel::PtConnect, Features { lights: LightSet::parse("triangle").unwrap(), ..Features::default() }),
+        (
+            "pt_connect-triangle-lightbvh",
+            Kernel::PtConnect,
+            Features { lights: LightSet::parse("triangle").unwrap(), selection: Selection::LightBvh, ..Features::default() },
+        ),
         ("pt_connect-all-k16-balance", Kernel::PtConnect, Features { reservoir_k: 16, heuristic: Heuristic::Balance, ..Features::default() }),
         (
             "pt_extend-triangle-point-k8-power",

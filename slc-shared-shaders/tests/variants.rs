@@ -24,9 +24,11 @@ fn every_bsh_variant_validates() {
                     (Kernel::PtConnect, Selection::Weighted),
                     (Kernel::PtConnect, Selection::Uniform),
                     (Kernel::PtConnect, Selection::Power),
+                    (Kernel::PtConnect, Selection::LightBvh),
                     (Kernel::PtExtend, Selection::Reservoir),
                     (Kernel::PtExtend, Selection::Weighted),
                     (Kernel::PtExtend, Selection::Power),
+                    (Kernel::PtExtend, Selection::LightBvh),
                 ] {
                     let f = Features { lights, reservoir_k: k, heuristic, selection, ..Features::default() };
                     let g = generate_module(kernel, &f).unwrap_or_else(|e| panic!("{:?} {f:?}: {e}", kernel));
@@ -52,7 +54,7 @@ fn every_bsh_variant_validates() {
             n += 1;
         }
     }
-    assert_eq!(n, 31 * 3 * 2 * 9 + 8);
+    assert_eq!(n, 31 * 3 * 2 * 11 + 8);
 }
 
 #[test]

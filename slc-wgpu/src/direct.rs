@@ -27,7 +27,7 @@ pub struct GpuDirect<'a> {
 impl<'a> GpuDirect<'a> {
     /// Uploads the lights and their BSH.
     pub fn new(gpu: &'a GpuContext, lights: &LightSet) -> Result<Self, GpuError> {
-        let set = GpuLightSet::new(gpu, lights.lights(), lights.bounds(), lights.bsh(), &[], &[])?;
+        let set = GpuLightSet::new(gpu, lights.lights(), lights.bounds(), lights.bsh(), &[], &[], None)?;
         let (pipeline, layout) = reservoir_pipeline(gpu, &set)?;
         Ok(GpuDirect { gpu, set, pipeline, layout, busy: std::sync::Mutex::new(()) })
     }

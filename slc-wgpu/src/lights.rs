@@ -11,7 +11,8 @@ use slc_core::bsh::{BSH_NONE, Bsh};
 use slc_core::importance::LightCone;
 use slc_core::light::{Light, LightBound};
 use slc_core::range::RangeParams;
-use slc_shared_shaders::layout::{FrameParams, GpuLightCone, RefitParams, pack_cones, pack_lights};
+use slc_scene::light_bvh::LightBvh;
+use slc_shared_shaders::layout::{FrameParams, GpuLightCone, RefitParams, pack_cones, pack_light_bvh, pack_lights};
 use slc_shared_shaders::{Features, Kernel, LightSet, generate};
 
 /// Workgroup size of the 1-D kernels.
@@ -72,8 +73,8 @@ pub(crate) struct GpuLightSet {
     refit_params: UniformSlots,
     update: (wgpu::ComputePipeline, wgpu::BindGroup),
     refit: (wgpu::ComputePipeline, wgpu::BindGroup),
-    /// Group 1 of every kernel: the IES table, the power alias table and the
-    /// importance cones.
+    /// Group 1 of every kernel: the IES table, the power alias table, the
+    /// importance cones and the light BVH.
     pub(crate) table_layout: wgpu::BindGroupLayout,
     /// Group 1 with the IES table only (binding 0), for `bsh_reservoir`.
     pub(crate) ies_layout: wgpu::BindGroupLayout,
@@ -84,9 +85,10 @@ pub(crate) struct GpuLightSet {
 
 impl GpuLightSet {
     /// Uploads `lights` (with their `bounds`, the `bsh` built over them and
-    /// the path tracer's `power` alias table and importance `cones`
-    /// ([`slc_scene::lights::LightSet::cones`]), either of which may be
-    /// empty) after checking the buffer and dispatch limits.
+    /// the path tracer's `power` alias table, importance `cones`
+    /// ([`slc_scene::lights::LightSet::cones`]) and light BVH, any of which
+    /// may be empty or absent) after checking the buffer and dispatch
+    /// limits.
     pub(crate) fn new(
         gpu: &GpuContext,
         lights: &[Light],
@@ -94,6 +96,7 @@ impl GpuLightSet {
         bsh: &Bsh,
         power: &[[f32; 4]],
         cones: &[LightCone],
+        light_bvh: Option<&LightBvh>,
     ) -> Result<GpuLightSet, GpuError> {
         let n = lights.len() as u64;
         let lim = &gpu.limits;
@@ -108,8 +111,15 @@ impl GpuLightSet {
         let table_buf = s("slc_table", bytemuck::cast_slice(&table));
         // A binding cannot be empty: a zeroed entry stands in.
         let power_buf = s("power_table", bytemuck::cast_slice(if power.is_empty() { &[[0.0f32; 4]][..] } else { power }));
-        let cones = if cones.is_empty() { vec![GpuLightCone::default()] } else { pack_cones(cones) };
+        let cones = if cones.is_empty() { vec![GpuLightCone::default()] } else { pack_cones(cones, light_bvh.map_or(&[], |b| b.leaf_of_light())) };
         let cones_buf = s("light_cones", bytemuck::cast_slice(&cones));
+        let bvh = pack_light_bvh(light_bvh.map_or(&[], |b| b.nodes()));
+        gpu.require(
+            "max_storage_buffer_binding_size (light BVH)",
+            std::mem::size_of_val(bvh.as_slice()) as u64,
+            lim.max_storage_buffer_binding_size,
+        )?;
+        let bvh_buf = s("light_bvh", bytemuck::cast_slice(&bvh));
         let ids_buf = s("ids", bytemuck::cast_slice(&ids));
         let extent_buf = s("extent", bytemuck::cast_slice(&extent));
         let rt2 = zeroed(gpu, "rt2", n * 4, wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST);
@@ -130,7 +140,7 @@ impl GpuLightSet {
                 },
                 count: None,
             };
-            gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some("scene tables"), entries: &[e(0), e(1), e(2)] })
+            gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some("scene tables"), entries: &[e(0), e(1), e(2), e(3)] })
         };
         // The IES table alone, for kernels that do not read the power table
         // (one storage binding fewer, within WebGPU's default 8 per stage).
@@ -159,6 +169,7 @@ impl GpuLightSet {
                 wgpu::BindGroupEntry { binding: 0, resource: table_buf.as_entire_binding() },
                 wgpu::BindGroupEntry { binding: 1, resource: power_buf.as_entire_binding() },
                 wgpu::BindGroupEntry { binding: 2, resource: cones_buf.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 3, resource: bvh_buf.as_entire_binding() },
             ],
         });
         let features = Features { workgroup_size: WG, ..Features::default() };

@@ -13,8 +13,9 @@
 //! The methods are `slc-reservoir` with k = [`RESERVOIR_K`] and the power
 //! heuristic, exactly as the CPU's [`PtMethod::SlcReservoir`], the
 //! importance-weighted `slc-weighted` (k = [`WEIGHTED_K`]), the plain `slc`
-//! (every in-range light), and the `uniform` and `power` baselines (one
-//! light; ranges +∞); the two
+//! (every in-range light), and the `uniform`, `power` and `lightbvh`
+//! baselines (one light; ranges +∞; the light BVH built by slc-scene and
+//! walked by the same slc-core steps as the CPU's); the two
 //! backends draw their per-path random numbers differently, so they agree in
 //! expectation (the tests crate checks it), not pixel by pixel.
 
@@ -84,12 +85,13 @@ fn geometry(pts: &PtScene) -> (Vec<GpuGeoNode>, Vec<GpuTriangle>, Vec<[f32; 4]>,
 
 /// The methods the GPU path tracer runs, with their light selection and
 /// its `k`.
-const SELECTIONS: [(PtMethod, Selection, usize); 5] = [
+const SELECTIONS: [(PtMethod, Selection, usize); 6] = [
     (PtMethod::SlcReservoir, Selection::Reservoir, RESERVOIR_K),
     (PtMethod::SlcWeighted, Selection::Weighted, WEIGHTED_K),
     (PtMethod::Slc, Selection::All, RESERVOIR_K),
     (PtMethod::Uniform, Selection::Uniform, RESERVOIR_K),
     (PtMethod::Power, Selection::Power, RESERVOIR_K),
+    (PtMethod::LightBvh, Selection::LightBvh, RESERVOIR_K),
 ];
 
 /// A kernel's pipeline per method, and its bind group.
@@ -127,13 +129,14 @@ impl<'a> GpuPt<'a> {
         let max_binding = lim.max_storage_buffer_binding_size;
         gpu.require("max_storage_buffer_binding_size (geometry)", geo_tris.len() as u64 * 48, max_binding)?;
         gpu.require("max_storage_buffer_binding_size (path states)", pixels * std::mem::size_of::<GpuPathState>() as u64, max_binding)?;
-        // pt_extend: 12 in group 0, the IES, power and cone tables in group 1.
-        gpu.require("max_storage_buffers_per_shader_stage", 15, lim.max_storage_buffers_per_shader_stage as u64)?;
+        // pt_extend: 12 in group 0; the IES, power and cone tables and the
+        // light BVH in group 1.
+        gpu.require("max_storage_buffers_per_shader_stage", 16, lim.max_storage_buffers_per_shader_stage as u64)?;
         gpu.require("max_storage_buffer_binding_size (vertex normals)", geo_tris.len() as u64 * 48, max_binding)?;
         gpu.require("max_compute_workgroups_per_dimension (pixels)", pixels.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
         gpu.require("geometry BVH depth (64-entry traversal stack)", geo_depth, MAX_GEO_DEPTH)?;
         let ls = pts.light_set();
-        let set = GpuLightSet::new(gpu, ls.lights(), ls.bounds(), ls.bsh(), &ls.power_table(), ls.cones())?;
+        let set = GpuLightSet::new(gpu, ls.lights(), ls.bounds(), ls.bsh(), &ls.power_table(), ls.cones(), Some(pts.light_bvh()))?;
         let base = Features { lights: set.types, workgroup_size: WG, heuristic: Heuristic::Power, ..Features::default() };
         let s = |label: &str, bytes: &[u8]| storage(gpu, label, bytes, wgpu::BufferUsages::empty());
         let geo_nodes_buf = s("geo nodes", bytemuck::cast_slice(&geo_nodes));
@@ -221,7 +224,7 @@ impl<'a> GpuPt<'a> {
         let pick = |k: &'b Kernels| k.0.iter().find(|(m, _)| *m == s.method).map(|(_, p)| p);
         let (Some(extend), Some(connect)) = (pick(&self.extend), pick(&self.connect)) else {
             return Err(GpuError::Setting(format!(
-                "GPU path tracing runs slc, slc-reservoir (k = {RESERVOIR_K}), slc-weighted (k = {WEIGHTED_K}), uniform and power; method {} runs with --backend cpu",
+                "GPU path tracing runs slc, slc-reservoir (k = {RESERVOIR_K}), slc-weighted (k = {WEIGHTED_K}), uniform, power and lightbvh; not {}",
                 s.method.name()
             )));
         };

@@ -19,7 +19,7 @@ fn add_wrap_u32(a: u32, b: u32) -> u32 { return a + b; }
 ";
 
 /// Every module's shared items, in dependency order, as raw text.
-const PARTS: [&str; 14] = [
+const PARTS: [&str; 15] = [
     crate::xi::WGSL,
     crate::range::WGSL,
     crate::sphere::WGSL,
@@ -28,6 +28,7 @@ const PARTS: [&str; 14] = [
     crate::bsh::WGSL,
     crate::reservoir::WGSL,
     crate::importance::WGSL,
+    crate::light_bvh::WGSL,
     crate::ray::WGSL,
     crate::mis::WGSL,
     crate::denoise::WGSL,

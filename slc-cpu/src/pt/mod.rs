@@ -20,7 +20,8 @@
 //! - `uniform`: one light chosen uniformly; `power`: one light chosen in
 //!   proportion to its emitted power (alias table).
 //! - `lightbvh`: one light chosen by light-BVH importance sampling
-//!   (Conty & Kulla 2018, pbrt-v4's `BVHLightSampler`; [`lightbvh`]).
+//!   (Conty & Kulla 2018, pbrt-v4's `BVHLightSampler`; the scene's
+//!   [`slc_scene::light_bvh`], sampled by [`slc_core::light_bvh`]).
 //!
 //! MIS: the light strategy's solid-angle pdf of `y` is
 //! `pdf(select) · p_rr(|x−y|) · pdf_area(y) · d²/|cos θ_y|` (talk: "Multiple
@@ -33,11 +34,8 @@
 //! uniform sampling caught a 40% bias from exactly that). Point-like lights
 //! are delta lights (weight 1).
 
-pub mod lightbvh;
-
 use crate::geometry::Geometry;
 use glam::Vec3;
-use lightbvh::LightBvh;
 use rand_core::RngCore;
 use rand_pcg::Pcg32;
 use rayon::prelude::*;
@@ -57,28 +55,20 @@ use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K, WEIGHT
 use std::time::Instant;
 
 /// The CPU path tracer over a [`PtScene`]: the scene's geometry in a BVH,
-/// the light BVH of the `lightbvh` baseline, and a BSH of its own that each
-/// pass refits to that pass's ranges.
+/// and a BSH of its own that each pass refits to that pass's ranges.
 pub struct CpuPathTracer {
     pts: PtScene,
     geo: Geometry,
-    light_bvh: LightBvh,
     bsh: Bsh,
     /// The scene's bounding-box diagonal (ray offsets scale with it).
     diag: f32,
 }
 
 impl CpuPathTracer {
-    /// Builds the geometry BVH and the light BVH of `pts`.
+    /// Builds the geometry BVH of `pts`.
     pub fn new(pts: &PtScene) -> CpuPathTracer {
         let scene = pts.scene();
-        CpuPathTracer {
-            geo: Geometry::new(&scene.triangles),
-            light_bvh: LightBvh::new(pts.lights(), pts.light_set().power()),
-            bsh: pts.light_set().bsh().clone(),
-            diag: scene.diagonal(),
-            pts: pts.clone(),
-        }
+        CpuPathTracer { geo: Geometry::new(&scene.triangles), bsh: pts.light_set().bsh().clone(), diag: scene.diagonal(), pts: pts.clone() }
     }
 
     /// The prepared scene.
@@ -179,7 +169,7 @@ impl CpuPathTracer {
             }
             PtMethod::Uniform => (1.0 / self.lights().len() as f32, f32::INFINITY),
             PtMethod::Power => (self.pts.light_set().alias().pdf(l) as f32, f32::INFINITY),
-            PtMethod::LightBvh => (self.light_bvh.pmf(x, n, l), f32::INFINITY),
+            PtMethod::LightBvh => (self.pts.light_bvh().pmf(x, n, l), f32::INFINITY),
         };
         light_strategy_pdf(select, rt2, d2, t.area(), cos_y)
     }
@@ -289,7 +279,7 @@ impl CpuPathTracer {
                         let l = alias.sample(u as f64, xi_from_bits(rng.next_u32()) as f64);
                         Some((l, alias.pdf(l) as f32))
                     }
-                    _ => self.light_bvh.sample(x, n, u),
+                    _ => self.pts.light_bvh().sample(x, n, u),
                 };
                 if let Some((l, select)) = picked.filter(|&(_, p)| p > 0.0)
                     && let Some(c) = self.connect(s, st, l, (x, n, ng), rho, rng, NeeState::default(), false, 1.0 / select)

@@ -109,6 +109,11 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     candidates[i] = 0u;
     h = pcg_hash(h);
     let us = xi_from_bits(h);
+{% if selection == "lightbvh" %}
+    let bp = light_bvh_sample(x, n, us);
+    let li = bp.light;
+    let pmf = bp.pmf;
+{% else %}
     let nl = arrayLength(&lights);
     var li = min(u32(us * f32(nl)), nl - 1u);
 {% if selection == "power" %}
@@ -116,10 +121,15 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let entry = power_table[li];
     li = select(bitcast<u32>(entry.y), li, xi_from_bits(h) < entry.x);
 {% endif %}
+    let pmf = select_pdf(li, x, n, 0u, true);
+{% endif %}
     h = pcg_hash(h);
     let u1 = xi_from_bits(h);
     h = pcg_hash(h);
-    sum = shade_pick(li, x, n, ng, 1.0 / select_pdf(li, x, n, 0u, true), 0u, u1, xi_from_bits(h));
+    let u2 = xi_from_bits(h);
+    if pmf > 0.0 {
+        sum = shade_pick(li, x, n, ng, 1.0 / pmf, 0u, u1, u2);
+    }
 {% endif %}
     let add = vtx.weight * sum;
     if finite3(add) {

@@ -12,7 +12,10 @@ struct GpuLight {
     p0: vec3f, kind: u32, p1: vec3f, a: f32, p2: vec3f, b: f32, intensity: vec3f, ies_base: u32
 }
 struct GpuLightCone {
-    center: vec3f, radius: f32, axis: vec3f, cos_o: f32, phi: f32, cos_e: f32, pad0: u32, pad1: u32
+    center: vec3f, radius: f32, axis: vec3f, cos_o: f32, phi: f32, cos_e: f32, bvh_leaf: u32, pad: u32
+}
+struct GpuLightBvhNode {
+    center: vec3f, radius: f32, axis: vec3f, cos_o: f32, phi: f32, cos_e: f32, second: u32, light: u32
 }
 struct GpuGeoNode {
     bmin: vec3f, first: u32, bmax: vec3f, count: u32
@@ -430,6 +433,21 @@ fn weighted_select_pdf(w: f32, w_sum: f32, in_range: bool, k: u32) -> f32 {
     }
     let total: f32 = select(w_sum + w, w_sum, in_range);
     return to_f32(k) * w / total;
+}
+const LIGHT_BVH_LEAF: u32 = 4294967295;
+const ONE_MINUS_EPSILON: f32 = 0.99999994;
+fn bvh_first_prob(c0: f32, c1: f32) -> f32 {
+    let s: f32 = c0 + c1;
+    if s > 0.0 {
+        return c0 / s;
+    }
+    return -1.0;
+}
+fn bvh_remap_u(u: f32, p0: f32, first: bool) -> f32 {
+    if first {
+        return min(u / p0, ONE_MINUS_EPSILON);
+    }
+    return clamp((u - p0) / (1.0 - p0), 0.0, ONE_MINUS_EPSILON);
 }
 fn ray_aabb(o: vec3f, inv_d: vec3f, bmin: vec3f, bmax: vec3f, t_max: f32) -> f32 {
     let t0: vec3f = (bmin - o) * inv_d;

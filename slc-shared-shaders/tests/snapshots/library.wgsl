@@ -365,6 +365,21 @@ fn weighted_select_pdf(w: f32, w_sum: f32, in_range: bool, k: u32) -> f32 {
     let total: f32 = select(w_sum + w, w_sum, in_range);
     return to_f32(k) * w / total;
 }
+const LIGHT_BVH_LEAF: u32 = 4294967295;
+const ONE_MINUS_EPSILON: f32 = 0.99999994;
+fn bvh_first_prob(c0: f32, c1: f32) -> f32 {
+    let s: f32 = c0 + c1;
+    if s > 0.0 {
+        return c0 / s;
+    }
+    return -1.0;
+}
+fn bvh_remap_u(u: f32, p0: f32, first: bool) -> f32 {
+    if first {
+        return min(u / p0, ONE_MINUS_EPSILON);
+    }
+    return clamp((u - p0) / (1.0 - p0), 0.0, ONE_MINUS_EPSILON);
+}
 fn ray_aabb(o: vec3f, inv_d: vec3f, bmin: vec3f, bmax: vec3f, t_max: f32) -> f32 {
     let t0: vec3f = (bmin - o) * inv_d;
     let t1: vec3f = (bmax - o) * inv_d;

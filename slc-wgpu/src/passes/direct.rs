@@ -128,7 +128,7 @@ impl DirectPass {
         gpu.require("max_compute_workgroups_per_dimension", w.div_ceil(TILE).max(h.div_ceil(TILE)) as u64, groups)?;
         gpu.require("max_compute_workgroups_per_dimension (pixels)", pixels.div_ceil(WG as u64), groups)?;
         gpu.require("max_storage_textures_per_shader_stage", 1, lim.max_storage_textures_per_shader_stage as u64)?;
-        let set = GpuLightSet::new(gpu, lights.lights(), lights.bounds(), lights.bsh(), &[], &[])?;
+        let set = GpuLightSet::new(gpu, lights.lights(), lights.bounds(), lights.bsh(), &[], &[], None)?;
         let (reservoir, reservoir_layout) = reservoir_pipeline(gpu, &set)?;
         let base = Features { tile_size: TILE, workgroup_size: WG, output_format: output, ..Features::default() };
         let kernel = |k: Kernel, l: &wgpu::BindGroupLayout| -> Result<wgpu::ComputePipeline, GpuError> {

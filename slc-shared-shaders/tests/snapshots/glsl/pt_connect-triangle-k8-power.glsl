@@ -20,8 +20,18 @@ struct GpuLightCone {
     float cos_o;
     float phi;
     float cos_e;
-    uint pad0_;
-    uint pad1_;
+    uint bvh_leaf;
+    uint pad;
+};
+struct GpuLightBvhNode {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
 };
 struct GpuGeoNode {
     vec3 bmin;
@@ -177,6 +187,10 @@ struct Connection {
     vec3 y;
     float cos_x;
 };
+struct BvhPick {
+    uint light;
+    float pmf;
+};
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
 const uint LIGHT_IES = 2u;
@@ -194,6 +208,8 @@ const float SPHERE_HUGE = 3.4028235e38;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
 const uint K = 8u;
@@ -212,11 +228,11 @@ layout(std430) readonly buffer type_4_block_5Compute { float _group_0_binding_3_
 
 layout(std140) uniform ShadeParams_block_6Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_14_block_7Compute { GpuPathVertex _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_15_block_7Compute { GpuPathVertex _group_0_binding_1_cs[]; };
 
 layout(std430) buffer type_12_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_15_block_9Compute { uint _group_0_binding_9_cs[]; };
+layout(std430) buffer type_16_block_9Compute { uint _group_0_binding_9_cs[]; };
 
 
 float to_f32_(uint u) {
@@ -657,6 +673,21 @@ float weighted_select_pdf(float w_5, float w_sum_2, bool in_range, uint k_3) {
     return ((_e9 * w_5) / total);
 }
 
+float bvh_first_prob(float c0_, float c1_2) {
+    float s_1 = (c0_ + c1_2);
+    if ((s_1 > 0.0)) {
+        return (c0_ / s_1);
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(float u_2, float p0_, bool first) {
+    if (first) {
+        return min((u_2 / p0_), ONE_MINUS_EPSILON);
+    }
+    return clamp(((u_2 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
 float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
     vec3 t0_ = ((bmin_1 - o) * inv_d);
     vec3 t1_ = ((bmax_1 - o) * inv_d);
@@ -672,8 +703,8 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 
 vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
     bool local_2 = false;
-    vec3 n_18 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_18, n_18);
+    vec3 n_22 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_22, n_22);
     if (!(!((l2_ > 0.0)))) {
         local_2 = !((l2_ < 3e38));
     } else {
@@ -683,7 +714,7 @@ vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_18 / vec3(sqrt(l2_)));
+    return (n_22 / vec3(sqrt(l2_)));
 }
 
 vec3 face_against(vec3 n_8, vec3 dir) {
@@ -708,8 +739,8 @@ vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
 
 vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_6, vec3 facing) {
     bool local_3 = false;
-    vec3 s_1 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
-    float l2_1 = dot(s_1, s_1);
+    vec3 s_2 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
+    float l2_1 = dot(s_2, s_2);
     if (!(!((l2_1 > 1e-12)))) {
         local_3 = !((l2_1 < 3e38));
     } else {
@@ -719,8 +750,8 @@ vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_6, vec3 facing) {
     if (_e24) {
         return facing;
     }
-    vec3 n_19 = (s_1 / vec3(sqrt(l2_1)));
-    return ((dot(n_19, facing) < 0.0) ? -(n_19) : n_19);
+    vec3 n_23 = (s_2 / vec3(sqrt(l2_1)));
+    return ((dot(n_23, facing) < 0.0) ? -(n_23) : n_23);
 }
 
 float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, float t_max_1) {
@@ -735,10 +766,10 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
         return -1.0;
     }
     float inv = (1.0 / det);
-    vec3 s_2 = (o_1 - a_7);
-    float u_2 = (dot(s_2, p_3) * inv);
-    if (!((u_2 < 0.0))) {
-        local_4 = (u_2 > 1.0);
+    vec3 s_3 = (o_1 - a_7);
+    float u_4 = (dot(s_3, p_3) * inv);
+    if (!((u_4 < 0.0))) {
+        local_4 = (u_4 > 1.0);
     } else {
         local_4 = true;
     }
@@ -746,10 +777,10 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
     if (_e28) {
         return -1.0;
     }
-    vec3 q_3 = cross(s_2, e1_2);
+    vec3 q_3 = cross(s_3, e1_2);
     float v_10 = (dot(d, q_3) * inv);
     if (!((v_10 < 0.0))) {
-        local_5 = ((u_2 + v_10) > 1.0);
+        local_5 = ((u_4 + v_10) > 1.0);
     } else {
         local_5 = true;
     }
@@ -771,20 +802,20 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
 }
 
 float mis_balance(float pdf_a, float pdf_b) {
-    float s_3 = (pdf_a + pdf_b);
-    if ((s_3 <= 0.0)) {
+    float s_4 = (pdf_a + pdf_b);
+    if ((s_4 <= 0.0)) {
         return 0.0;
     }
-    return (pdf_a / s_3);
+    return (pdf_a / s_4);
 }
 
 float mis_power(float pdf_a_1, float pdf_b_1) {
     float a2_ = (pdf_a_1 * pdf_a_1);
-    float s_4 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if ((s_4 <= 0.0)) {
+    float s_5 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_5 <= 0.0)) {
         return 0.0;
     }
-    return (a2_ / s_4);
+    return (a2_ / s_5);
 }
 
 float light_strategy_pdf(float select, float rt2_6, float d2_8, float area_1, float cos_y) {
@@ -819,11 +850,11 @@ float cosine_pdf(float cos_theta_1) {
 }
 
 vec3 cosine_direction(vec3 n_9, float u1_1, float u2_1) {
-    float s_5 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_11 = (-1.0 / (s_5 + n_9.z));
+    float s_6 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_11 = (-1.0 / (s_6 + n_9.z));
     float b_8 = ((n_9.x * n_9.y) * a_11);
-    vec3 t_4 = vec3((1.0 + (((s_5 * n_9.x) * n_9.x) * a_11)), (s_5 * b_8), (-(s_5) * n_9.x));
-    vec3 bt = vec3(b_8, (s_5 + ((n_9.y * n_9.y) * a_11)), -(n_9.y));
+    vec3 t_4 = vec3((1.0 + (((s_6 * n_9.x) * n_9.x) * a_11)), (s_6 * b_8), (-(s_6) * n_9.x));
+    vec3 bt = vec3(b_8, (s_6 + ((n_9.y * n_9.y) * a_11)), -(n_9.y));
     float r_6 = sqrt(u1_1);
     float phi_2 = (6.2831855 * u2_1);
     return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));
@@ -967,12 +998,12 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
     vec3 inv_d_1 = (vec3(1.0) / mix(d_2, vec3(1e-30), lessThan(abs(d_2), vec3(1e-30))));
     while(true) {
         uint _e30 = node;
-        GpuGeoNode n_20 = _group_0_binding_6_cs[_e30];
+        GpuGeoNode n_24 = _group_0_binding_6_cs[_e30];
         float _e36 = hit.t;
-        float _e37 = ray_aabb(o_2, inv_d_1, n_20.bmin, n_20.bmax, _e36);
+        float _e37 = ray_aabb(o_2, inv_d_1, n_24.bmin, n_24.bmax, _e36);
         if ((_e37 >= 0.0)) {
-            if ((n_20.count > 0u)) {
-                i_2 = n_20.first;
+            if ((n_24.count > 0u)) {
+                i_2 = n_24.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -981,7 +1012,7 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e45 = i_2;
-                    if ((_e45 < (n_20.first + n_20.count))) {
+                    if ((_e45 < (n_24.first + n_24.count))) {
                     } else {
                         break;
                     }
@@ -1005,11 +1036,11 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e69 = sp;
                 if ((_e69 < 64u)) {
                     uint _e72 = sp;
-                    stack[_e72] = (n_20.first + 1u);
+                    stack[_e72] = (n_24.first + 1u);
                     uint _e77 = sp;
                     sp = (_e77 + 1u);
                 }
-                node = n_20.first;
+                node = n_24.first;
                 continue;
             }
         }
@@ -1175,27 +1206,27 @@ float mis_weight(float pdf_a_2, float pdf_b_2) {
     return _e2;
 }
 
-float select_pdf(uint li_2, vec3 x_14, vec3 n_15, uint nee, bool in_range_1) {
-    bool local_13 = false;
+float select_pdf(uint li_3, vec3 x_18, vec3 n_19, uint nee, bool in_range_1) {
+    bool local_17 = false;
     if (in_range_1) {
-        local_13 = (nee > 0u);
+        local_17 = (nee > 0u);
     } else {
-        local_13 = false;
+        local_17 = false;
     }
-    bool _e12 = local_13;
+    bool _e12 = local_17;
     uint others = (nee - (_e12 ? 1u : 0u));
     float _e18 = reservoir_weight((others + 1u), K);
     return (1.0 / _e18);
 }
 
-float light_pdf(uint li_3, vec3 x_15, vec3 n_16, vec3 y_2, uint nee_1, bool in_range_2) {
-    GpuLight l_5 = _group_0_binding_2_cs[li_3];
-    vec3 v_12 = (x_15 - y_2);
+float light_pdf(uint li_4, vec3 x_19, vec3 n_20, vec3 y_2, uint nee_1, bool in_range_2) {
+    GpuLight l_5 = _group_0_binding_2_cs[li_4];
+    vec3 v_12 = (x_19 - y_2);
     float d2_12 = dot(v_12, v_12);
     vec3 _e11 = light_normal(l_5);
     float cos_y_1 = ((d2_12 > 0.0) ? dot(_e11, (v_12 / vec3(sqrt(d2_12)))) : 0.0);
-    float _e20 = select_pdf(li_3, x_15, n_16, nee_1, in_range_2);
-    float _e23 = _group_0_binding_3_cs[li_3];
+    float _e20 = select_pdf(li_4, x_19, n_20, nee_1, in_range_2);
+    float _e23 = _group_0_binding_3_cs[li_4];
     float _e24 = light_area(l_5);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_12, _e24, cos_y_1);
     return _e25;
@@ -1205,21 +1236,21 @@ bool finite3_(vec3 v_3) {
     return all(lessThanEqual(abs(v_3), vec3(3.4028235e38)));
 }
 
-vec3 shade_pick(uint li_4, vec3 x_16, vec3 n_17, vec3 ng_1, float w_9, uint nee_2, float u1_4, float u2_4) {
+vec3 shade_pick(uint li_5, vec3 x_20, vec3 n_21, vec3 ng_1, float w_9, uint nee_2, float u1_4, float u2_4) {
     float mis = 1.0;
-    bool local_14 = false;
+    bool local_18 = false;
     float _e10 = _group_0_binding_0_cs.eps;
-    Connection _e11 = connect(li_4, x_16, n_17, ng_1, w_9, u1_4, u2_4, _e10);
-    GpuLight _e16 = _group_0_binding_2_cs[li_4];
+    Connection _e11 = connect(li_5, x_20, n_21, ng_1, w_9, u1_4, u2_4, _e10);
+    GpuLight _e16 = _group_0_binding_2_cs[li_5];
     float _e17 = light_area(_e16);
     if ((_e17 > 0.0)) {
-        local_14 = (_e11.cos_x > 0.0);
+        local_18 = (_e11.cos_x > 0.0);
     } else {
-        local_14 = false;
+        local_18 = false;
     }
-    bool _e26 = local_14;
+    bool _e26 = local_18;
     if (_e26) {
-        float _e29 = light_pdf(li_4, x_16, n_17, _e11.y, nee_2, true);
+        float _e29 = light_pdf(li_5, x_20, n_21, _e11.y, nee_2, true);
         float _e31 = cosine_pdf(_e11.cos_x);
         float _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -1233,28 +1264,28 @@ void main() {
     uint h = 0u;
     vec3 sum = vec3(0.0);
     uint s = 0u;
-    uint i_5 = gid.x;
+    uint i_9 = gid.x;
     uint _e4 = _group_0_binding_0_cs.point_count;
-    if ((i_5 >= _e4)) {
+    if ((i_9 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = _group_0_binding_1_cs[i_5];
+    GpuPathVertex vtx = _group_0_binding_1_cs[i_9];
     if ((vtx.alive == 0u)) {
-        _group_0_binding_9_cs[i_5] = 0u;
+        _group_0_binding_9_cs[i_9] = 0u;
         return;
     }
-    vec3 x_17 = vtx.position;
-    vec3 n_21 = vtx.normal;
+    vec3 x_21 = vtx.position;
+    vec3 n_25 = vtx.normal;
     vec3 ng_2 = vtx.gnormal;
     uint _e20 = _group_0_binding_0_cs.seed;
     uint _e23 = _group_0_binding_0_cs.frame;
     uint _e24 = pcg_hash(_e23);
-    uint _e26 = pcg_hash((i_5 ^ _e24));
+    uint _e26 = pcg_hash((i_9 ^ _e24));
     uint _e28 = pcg_hash((_e20 ^ _e26));
     uint _e31 = pcg_hash((_e28 ^ 2654435769u));
     h = _e31;
-    Picks _e36 = bsh_collect(x_17, _e28);
-    _group_0_binding_9_cs[i_5] = _e36.n;
+    Picks _e36 = bsh_collect(x_21, _e28);
+    _group_0_binding_9_cs[i_9] = _e36.n;
     float _e42 = reservoir_weight(_e36.n, K);
     bool loop_init_2 = true;
     while(true) {
@@ -1281,7 +1312,7 @@ void main() {
             uint _e58 = s;
             uint _e61 = h;
             float _e62 = xi_from_bits(_e61);
-            vec3 _e63 = shade_pick(_e36.light[_e58], x_17, n_21, ng_2, _e42, _e36.n, _e53, _e62);
+            vec3 _e63 = shade_pick(_e36.light[_e58], x_21, n_25, ng_2, _e42, _e36.n, _e53, _e62);
             sum = (_e56 + _e63);
         }
     }
@@ -1289,8 +1320,8 @@ void main() {
     vec3 add = (vtx.weight * _e69);
     bool _e71 = finite3_(add);
     if (_e71) {
-        vec4 _e74 = _group_0_binding_8_cs[i_5];
-        _group_0_binding_8_cs[i_5] = (_e74 + vec4(add, 0.0));
+        vec4 _e74 = _group_0_binding_8_cs[i_9];
+        _group_0_binding_8_cs[i_9] = (_e74 + vec4(add, 0.0));
         return;
     } else {
         return;

@@ -20,8 +20,18 @@ struct GpuLightCone {
     float cos_o;
     float phi;
     float cos_e;
-    uint pad0_;
-    uint pad1_;
+    uint bvh_leaf;
+    uint pad;
+};
+struct GpuLightBvhNode {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
 };
 struct GpuGeoNode {
     vec3 bmin;
@@ -168,6 +178,10 @@ struct GeoHit {
     float t;
     uint tri;
 };
+struct BvhPick {
+    uint light;
+    float pmf;
+};
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
 const uint LIGHT_IES = 2u;
@@ -185,6 +199,8 @@ const float SPHERE_HUGE = 3.4028235e38;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
 const uint K = 8u;
@@ -195,23 +211,23 @@ layout(std430) readonly buffer type_7_block_1Compute { GpuTriangle _group_0_bind
 
 layout(std430) readonly buffer type_4_block_2Compute { float _group_0_binding_2_cs[]; };
 
-layout(std430) readonly buffer type_11_block_3Compute { GpuLight _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_12_block_3Compute { GpuLight _group_0_binding_1_cs[]; };
 
 layout(std140) uniform PtParams_block_4Compute { PtParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_12_block_5Compute { BshNode _group_0_binding_3_cs[]; };
+layout(std430) readonly buffer type_13_block_5Compute { BshNode _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_13_block_6Compute { uint _group_0_binding_4_cs[]; };
+layout(std430) readonly buffer type_14_block_6Compute { uint _group_0_binding_4_cs[]; };
 
 layout(std430) readonly buffer type_9_block_7Compute { vec4 _group_0_binding_7_cs[]; };
 
 layout(std430) readonly buffer type_9_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
-layout(std430) readonly buffer type_13_block_9Compute { uint _group_0_binding_9_cs[]; };
+layout(std430) readonly buffer type_14_block_9Compute { uint _group_0_binding_9_cs[]; };
 
-layout(std430) buffer type_14_block_10Compute { GpuPathState _group_0_binding_10_cs[]; };
+layout(std430) buffer type_15_block_10Compute { GpuPathState _group_0_binding_10_cs[]; };
 
-layout(std430) buffer type_15_block_11Compute { GpuPathVertex _group_0_binding_11_cs[]; };
+layout(std430) buffer type_16_block_11Compute { GpuPathVertex _group_0_binding_11_cs[]; };
 
 layout(std430) buffer type_9_block_12Compute { vec4 _group_0_binding_12_cs[]; };
 
@@ -654,6 +670,21 @@ float weighted_select_pdf(float w_6, float w_sum_2, bool in_range, uint k_3) {
     return ((_e9 * w_6) / total);
 }
 
+float bvh_first_prob(float c0_, float c1_2) {
+    float s = (c0_ + c1_2);
+    if ((s > 0.0)) {
+        return (c0_ / s);
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(float u_2, float p0_, bool first) {
+    if (first) {
+        return min((u_2 / p0_), ONE_MINUS_EPSILON);
+    }
+    return clamp(((u_2 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
 float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
     vec3 t0_ = ((bmin_1 - o) * inv_d);
     vec3 t1_ = ((bmax_1 - o) * inv_d);
@@ -669,8 +700,8 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 
 vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
     bool local_6 = false;
-    vec3 n_16 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_16, n_16);
+    vec3 n_20 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_20, n_20);
     if (!(!((l2_ > 0.0)))) {
         local_6 = !((l2_ < 3e38));
     } else {
@@ -680,7 +711,7 @@ vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_16 / vec3(sqrt(l2_)));
+    return (n_20 / vec3(sqrt(l2_)));
 }
 
 vec3 face_against(vec3 n_8, vec3 dir) {
@@ -705,8 +736,8 @@ vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
 
 vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_7, vec3 facing) {
     bool local_7 = false;
-    vec3 s = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
-    float l2_1 = dot(s, s);
+    vec3 s_1 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
+    float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
         local_7 = !((l2_1 < 3e38));
     } else {
@@ -716,8 +747,8 @@ vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_7, vec3 facing) {
     if (_e24) {
         return facing;
     }
-    vec3 n_17 = (s / vec3(sqrt(l2_1)));
-    return ((dot(n_17, facing) < 0.0) ? -(n_17) : n_17);
+    vec3 n_21 = (s_1 / vec3(sqrt(l2_1)));
+    return ((dot(n_21, facing) < 0.0) ? -(n_21) : n_21);
 }
 
 float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, float t_max_1) {
@@ -732,10 +763,10 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
         return -1.0;
     }
     float inv = (1.0 / det);
-    vec3 s_1 = (o_1 - a_7);
-    float u_2 = (dot(s_1, p_3) * inv);
-    if (!((u_2 < 0.0))) {
-        local_8 = (u_2 > 1.0);
+    vec3 s_2 = (o_1 - a_7);
+    float u_4 = (dot(s_2, p_3) * inv);
+    if (!((u_4 < 0.0))) {
+        local_8 = (u_4 > 1.0);
     } else {
         local_8 = true;
     }
@@ -743,10 +774,10 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
     if (_e28) {
         return -1.0;
     }
-    vec3 q_3 = cross(s_1, e1_2);
+    vec3 q_3 = cross(s_2, e1_2);
     float v_11 = (dot(d, q_3) * inv);
     if (!((v_11 < 0.0))) {
-        local_9 = ((u_2 + v_11) > 1.0);
+        local_9 = ((u_4 + v_11) > 1.0);
     } else {
         local_9 = true;
     }
@@ -768,20 +799,20 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
 }
 
 float mis_balance(float pdf_a, float pdf_b) {
-    float s_2 = (pdf_a + pdf_b);
-    if ((s_2 <= 0.0)) {
+    float s_3 = (pdf_a + pdf_b);
+    if ((s_3 <= 0.0)) {
         return 0.0;
     }
-    return (pdf_a / s_2);
+    return (pdf_a / s_3);
 }
 
 float mis_power(float pdf_a_1, float pdf_b_1) {
     float a2_ = (pdf_a_1 * pdf_a_1);
-    float s_3 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if ((s_3 <= 0.0)) {
+    float s_4 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_4 <= 0.0)) {
         return 0.0;
     }
-    return (a2_ / s_3);
+    return (a2_ / s_4);
 }
 
 float light_strategy_pdf(float select, float rt2_6, float d2_8, float area_1, float cos_y) {
@@ -816,11 +847,11 @@ float cosine_pdf(float cos_theta_1) {
 }
 
 vec3 cosine_direction(vec3 n_9, float u1_1, float u2_1) {
-    float s_4 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_11 = (-1.0 / (s_4 + n_9.z));
+    float s_5 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_11 = (-1.0 / (s_5 + n_9.z));
     float b_8 = ((n_9.x * n_9.y) * a_11);
-    vec3 t_4 = vec3((1.0 + (((s_4 * n_9.x) * n_9.x) * a_11)), (s_4 * b_8), (-(s_4) * n_9.x));
-    vec3 bt = vec3(b_8, (s_4 + ((n_9.y * n_9.y) * a_11)), -(n_9.y));
+    vec3 t_4 = vec3((1.0 + (((s_5 * n_9.x) * n_9.x) * a_11)), (s_5 * b_8), (-(s_5) * n_9.x));
+    vec3 bt = vec3(b_8, (s_5 + ((n_9.y * n_9.y) * a_11)), -(n_9.y));
     float r_6 = sqrt(u1_1);
     float phi_2 = (6.2831855 * u2_1);
     return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));
@@ -967,12 +998,12 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
     vec3 inv_d_1 = (vec3(1.0) / mix(d_2, vec3(1e-30), lessThan(abs(d_2), vec3(1e-30))));
     while(true) {
         uint _e30 = node;
-        GpuGeoNode n_18 = _group_0_binding_5_cs[_e30];
+        GpuGeoNode n_22 = _group_0_binding_5_cs[_e30];
         float _e36 = hit.t;
-        float _e37 = ray_aabb(o_2, inv_d_1, n_18.bmin, n_18.bmax, _e36);
+        float _e37 = ray_aabb(o_2, inv_d_1, n_22.bmin, n_22.bmax, _e36);
         if ((_e37 >= 0.0)) {
-            if ((n_18.count > 0u)) {
-                i_2 = n_18.first;
+            if ((n_22.count > 0u)) {
+                i_2 = n_22.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -981,7 +1012,7 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e45 = i_2;
-                    if ((_e45 < (n_18.first + n_18.count))) {
+                    if ((_e45 < (n_22.first + n_22.count))) {
                     } else {
                         break;
                     }
@@ -1005,11 +1036,11 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e69 = sp;
                 if ((_e69 < 64u)) {
                     uint _e72 = sp;
-                    stack[_e72] = (n_18.first + 1u);
+                    stack[_e72] = (n_22.first + 1u);
                     uint _e77 = sp;
                     sp = (_e77 + 1u);
                 }
-                node = n_18.first;
+                node = n_22.first;
                 continue;
             }
         }
@@ -1043,27 +1074,27 @@ float mis_weight(float pdf_a_2, float pdf_b_2) {
     return _e2;
 }
 
-float select_pdf(uint li_1, vec3 x_11, vec3 n_14, uint nee, bool in_range_1) {
-    bool local_14 = false;
+float select_pdf(uint li_2, vec3 x_15, vec3 n_18, uint nee, bool in_range_1) {
+    bool local_18 = false;
     if (in_range_1) {
-        local_14 = (nee > 0u);
+        local_18 = (nee > 0u);
     } else {
-        local_14 = false;
+        local_18 = false;
     }
-    bool _e12 = local_14;
+    bool _e12 = local_18;
     uint others = (nee - (_e12 ? 1u : 0u));
     float _e18 = reservoir_weight((others + 1u), K);
     return (1.0 / _e18);
 }
 
-float light_pdf(uint li_2, vec3 x_12, vec3 n_15, vec3 y_2, uint nee_1, bool in_range_2) {
-    GpuLight l_4 = _group_0_binding_1_cs[li_2];
-    vec3 v_12 = (x_12 - y_2);
+float light_pdf(uint li_3, vec3 x_16, vec3 n_19, vec3 y_2, uint nee_1, bool in_range_2) {
+    GpuLight l_4 = _group_0_binding_1_cs[li_3];
+    vec3 v_12 = (x_16 - y_2);
     float d2_11 = dot(v_12, v_12);
     vec3 _e11 = light_normal(l_4);
     float cos_y_1 = ((d2_11 > 0.0) ? dot(_e11, (v_12 / vec3(sqrt(d2_11)))) : 0.0);
-    float _e20 = select_pdf(li_2, x_12, n_15, nee_1, in_range_2);
-    float _e23 = _group_0_binding_2_cs[li_2];
+    float _e20 = select_pdf(li_3, x_16, n_19, nee_1, in_range_2);
+    float _e23 = _group_0_binding_2_cs[li_3];
     float _e24 = light_area(l_4);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_11, _e24, cos_y_1);
     return _e25;
@@ -1093,10 +1124,10 @@ void main() {
     bool local_1 = false;
     bool local_2 = false;
     bool local_3 = false;
-    uint i_3 = gid.x;
+    uint i_7 = gid.x;
     uint _e4 = _group_0_binding_0_cs.width;
     uint _e7 = _group_0_binding_0_cs.height;
-    if ((i_3 >= (_e4 * _e7))) {
+    if ((i_7 >= (_e4 * _e7))) {
         return;
     }
     uint _e13 = _group_0_binding_0_cs.depth;
@@ -1104,7 +1135,7 @@ void main() {
         uint _e18 = _group_0_binding_0_cs.seed;
         uint _e21 = _group_0_binding_0_cs.pass_index;
         uint _e24 = pcg_hash((_e21 + 2654435769u));
-        uint _e26 = pcg_hash((i_3 ^ _e24));
+        uint _e26 = pcg_hash((i_7 ^ _e24));
         uint _e28 = pcg_hash((_e18 ^ _e26));
         h = _e28;
         float _e30 = next_uniform(h);
@@ -1112,9 +1143,9 @@ void main() {
         float _e33 = next_uniform(h);
         float jy = (_e33 - 0.5);
         uint _e38 = _group_0_binding_0_cs.width;
-        float px_1 = ((float((i_3 % _e38)) + 0.5) + jx);
+        float px_1 = ((float((i_7 % _e38)) + 0.5) + jx);
         uint _e46 = _group_0_binding_0_cs.width;
-        float py_1 = ((float((i_3 / _e46)) + 0.5) + jy);
+        float py_1 = ((float((i_7 / _e46)) + 0.5) + jy);
         vec3 _e55 = _group_0_binding_0_cs.cam_pos;
         st.origin = _e55;
         vec3 _e59 = _group_0_binding_0_cs.cam_forward;
@@ -1132,14 +1163,14 @@ void main() {
         vec3 _e87 = _group_0_binding_0_cs.cam_pos;
         st.prev = _e87;
     } else {
-        GpuPathState _e90 = _group_0_binding_10_cs[i_3];
+        GpuPathState _e90 = _group_0_binding_10_cs[i_7];
         st = _e90;
     }
     v.alive = 0u;
     uint _e95 = st.alive;
     if ((_e95 == 0u)) {
         GpuPathVertex _e100 = v;
-        _group_0_binding_11_cs[i_3] = _e100;
+        _group_0_binding_11_cs[i_7] = _e100;
         return;
     }
     vec3 _e102 = st.origin;
@@ -1149,15 +1180,15 @@ void main() {
     if ((_e110.tri == NO_LIGHT)) {
         st.alive = 0u;
         GpuPathState _e118 = st;
-        _group_0_binding_10_cs[i_3] = _e118;
+        _group_0_binding_10_cs[i_7] = _e118;
         GpuPathVertex _e121 = v;
-        _group_0_binding_11_cs[i_3] = _e121;
+        _group_0_binding_11_cs[i_7] = _e121;
         return;
     }
     GpuTriangle tri = _group_0_binding_6_cs[_e110.tri];
     vec3 _e127 = st.origin;
     vec3 _e129 = st.dir;
-    vec3 x_13 = (_e127 + (_e129 * _e110.t));
+    vec3 x_17 = (_e127 + (_e129 * _e110.t));
     vec3 _e136 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     vec3 _e138 = st.dir;
     vec3 _e139 = face_against(_e136, _e138);
@@ -1165,7 +1196,7 @@ void main() {
     vec4 _e145 = _group_0_binding_8_cs[b_9];
     vec4 _e151 = _group_0_binding_8_cs[(b_9 + 1u)];
     vec4 _e157 = _group_0_binding_8_cs[(b_9 + 2u)];
-    vec3 _e162 = barycentric(x_13, tri.v0_, tri.v1_, tri.v2_);
+    vec3 _e162 = barycentric(x_17, tri.v0_, tri.v1_, tri.v2_);
     vec3 _e163 = shading_normal(_e145.xyz, _e151.xyz, _e157.xyz, _e162, _e139);
     if ((tri.light != NO_LIGHT)) {
         vec3 _e170 = st.dir;
@@ -1184,8 +1215,8 @@ void main() {
             float _e195 = st.pdf_bsdf;
             vec3 _e198 = st.prev;
             vec3 _e200 = st.prev_normal;
-            uint _e203 = _group_0_binding_9_cs[i_3];
-            float _e204 = light_pdf(tri.light, _e198, _e200, x_13, _e203, _e193);
+            uint _e203 = _group_0_binding_9_cs[i_7];
+            float _e204 = light_pdf(tri.light, _e198, _e200, x_17, _e203, _e193);
             float _e205 = mis_weight(_e195, _e204);
             w = _e205;
         }
@@ -1195,13 +1226,13 @@ void main() {
         vec3 add = ((_e207 * _e212) * _e214);
         bool _e216 = finite3_(add);
         if (_e216) {
-            vec4 _e219 = _group_0_binding_12_cs[i_3];
-            _group_0_binding_12_cs[i_3] = (_e219 + vec4(add, 0.0));
+            vec4 _e219 = _group_0_binding_12_cs[i_7];
+            _group_0_binding_12_cs[i_7] = (_e219 + vec4(add, 0.0));
         }
     }
     vec4 _e226 = _group_0_binding_7_cs[tri.material];
     vec3 rho_1 = _e226.xyz;
-    v.position = x_13;
+    v.position = x_17;
     v.normal = _e163;
     v.gnormal = _e139;
     vec3 _e233 = st.beta;
@@ -1209,7 +1240,7 @@ void main() {
     v.weight = (_e233 * _e234);
     v.alive = 1u;
     GpuPathVertex _e240 = v;
-    _group_0_binding_11_cs[i_3] = _e240;
+    _group_0_binding_11_cs[i_7] = _e240;
     uint _e242 = st.rng;
     rng = _e242;
     float _e244 = next_uniform(rng);
@@ -1218,12 +1249,12 @@ void main() {
     float cos_o_2 = dot(_e246, _e163);
     vec3 _e249 = st.beta;
     st.beta = (_e249 * rho_1);
-    st.prev = x_13;
+    st.prev = x_17;
     st.prev_normal = _e163;
     float _e254 = cosine_pdf(cos_o_2);
     st.pdf_bsdf = _e254;
     float _e258 = _group_0_binding_0_cs.eps;
-    st.origin = (x_13 + (_e139 * _e258));
+    st.origin = (x_17 + (_e139 * _e258));
     st.dir = _e246;
     if (!((cos_o_2 <= 0.0))) {
         local_1 = (dot(_e246, _e139) <= 0.0);
@@ -1264,7 +1295,7 @@ void main() {
     uint _e313 = rng;
     st.rng = _e313;
     GpuPathState _e316 = st;
-    _group_0_binding_10_cs[i_3] = _e316;
+    _group_0_binding_10_cs[i_7] = _e316;
     return;
 }
 

@@ -20,8 +20,18 @@ struct GpuLightCone {
     float cos_o;
     float phi;
     float cos_e;
-    uint pad0_;
-    uint pad1_;
+    uint bvh_leaf;
+    uint pad;
+};
+struct GpuLightBvhNode {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
 };
 struct GpuGeoNode {
     vec3 bmin;
@@ -181,6 +191,8 @@ const float SPHERE_HUGE = 3.4028235e38;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
 const uint P = 8u;
@@ -640,6 +652,21 @@ float weighted_select_pdf(float w_5, float w_sum_2, bool in_range, uint k_3) {
     return ((_e9 * w_5) / total);
 }
 
+float bvh_first_prob(float c0_, float c1_2) {
+    float s = (c0_ + c1_2);
+    if ((s > 0.0)) {
+        return (c0_ / s);
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(float u_2, float p0_, bool first) {
+    if (first) {
+        return min((u_2 / p0_), ONE_MINUS_EPSILON);
+    }
+    return clamp(((u_2 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
 float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
     vec3 t0_ = ((bmin_1 - o) * inv_d);
     vec3 t1_ = ((bmax_1 - o) * inv_d);
@@ -691,8 +718,8 @@ vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
 
 vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_6, vec3 facing) {
     bool local_3 = false;
-    vec3 s = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
-    float l2_1 = dot(s, s);
+    vec3 s_1 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
+    float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
         local_3 = !((l2_1 < 3e38));
     } else {
@@ -702,7 +729,7 @@ vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_6, vec3 facing) {
     if (_e24) {
         return facing;
     }
-    vec3 n_14 = (s / vec3(sqrt(l2_1)));
+    vec3 n_14 = (s_1 / vec3(sqrt(l2_1)));
     return ((dot(n_14, facing) < 0.0) ? -(n_14) : n_14);
 }
 
@@ -718,10 +745,10 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
         return -1.0;
     }
     float inv = (1.0 / det);
-    vec3 s_1 = (o_1 - a_7);
-    float u_2 = (dot(s_1, p_3) * inv);
-    if (!((u_2 < 0.0))) {
-        local_4 = (u_2 > 1.0);
+    vec3 s_2 = (o_1 - a_7);
+    float u_3 = (dot(s_2, p_3) * inv);
+    if (!((u_3 < 0.0))) {
+        local_4 = (u_3 > 1.0);
     } else {
         local_4 = true;
     }
@@ -729,10 +756,10 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
     if (_e28) {
         return -1.0;
     }
-    vec3 q_3 = cross(s_1, e1_2);
+    vec3 q_3 = cross(s_2, e1_2);
     float v_9 = (dot(d, q_3) * inv);
     if (!((v_9 < 0.0))) {
-        local_5 = ((u_2 + v_9) > 1.0);
+        local_5 = ((u_3 + v_9) > 1.0);
     } else {
         local_5 = true;
     }
@@ -754,20 +781,20 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
 }
 
 float mis_balance(float pdf_a, float pdf_b) {
-    float s_2 = (pdf_a + pdf_b);
-    if ((s_2 <= 0.0)) {
+    float s_3 = (pdf_a + pdf_b);
+    if ((s_3 <= 0.0)) {
         return 0.0;
     }
-    return (pdf_a / s_2);
+    return (pdf_a / s_3);
 }
 
 float mis_power(float pdf_a_1, float pdf_b_1) {
     float a2_ = (pdf_a_1 * pdf_a_1);
-    float s_3 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if ((s_3 <= 0.0)) {
+    float s_4 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_4 <= 0.0)) {
         return 0.0;
     }
-    return (a2_ / s_3);
+    return (a2_ / s_4);
 }
 
 float light_strategy_pdf(float select, float rt2_6, float d2_8, float area_1, float cos_y) {
@@ -802,11 +829,11 @@ float cosine_pdf(float cos_theta_1) {
 }
 
 vec3 cosine_direction(vec3 n_9, float u1_1, float u2_1) {
-    float s_4 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_10 = (-1.0 / (s_4 + n_9.z));
+    float s_5 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_10 = (-1.0 / (s_5 + n_9.z));
     float b_7 = ((n_9.x * n_9.y) * a_10);
-    vec3 t_4 = vec3((1.0 + (((s_4 * n_9.x) * n_9.x) * a_10)), (s_4 * b_7), (-(s_4) * n_9.x));
-    vec3 bt = vec3(b_7, (s_4 + ((n_9.y * n_9.y) * a_10)), -(n_9.y));
+    vec3 t_4 = vec3((1.0 + (((s_5 * n_9.x) * n_9.x) * a_10)), (s_5 * b_7), (-(s_5) * n_9.x));
+    vec3 bt = vec3(b_7, (s_5 + ((n_9.y * n_9.y) * a_10)), -(n_9.y));
     float r_6 = sqrt(u1_1);
     float phi_2 = (6.2831855 * u2_1);
     return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));

@@ -16,8 +16,19 @@ struct GpuLightCone {
     float cos_o;
     float phi;
     float cos_e;
-    uint pad0_;
-    uint pad1_;
+    uint bvh_leaf;
+    uint pad;
+};
+
+struct GpuLightBvhNode {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
 };
 
 struct GpuGeoNode {
@@ -194,6 +205,11 @@ struct Connection {
     float cos_x;
 };
 
+struct BvhPick {
+    uint light;
+    float pmf;
+};
+
 static const uint LIGHT_POINT = 0u;
 static const uint LIGHT_SPOT = 1u;
 static const uint LIGHT_IES = 2u;
@@ -211,6 +227,8 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
+static const uint LIGHT_BVH_LEAF = 4294967295u;
+static const float ONE_MINUS_EPSILON = 0.99999994;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
 static const uint K = 8u;
@@ -224,6 +242,7 @@ ByteAddressBuffer r2_5 : register(t4);
 ByteAddressBuffer rt2_7 : register(t3);
 ByteAddressBuffer power_table : register(t1, space1);
 ByteAddressBuffer light_cones : register(t2, space1);
+ByteAddressBuffer light_bvh : register(t3, space1);
 cbuffer params : register(b0) { ShadeParams params; }
 ByteAddressBuffer vertices_ : register(t1);
 RWByteAddressBuffer radiance : register(u8);
@@ -642,7 +661,7 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
     const uint _e9 = to_u32_(_e8);
     uint v0_ = (base_1 + 2u);
     uint h0_ = (v0_ + _e5);
-    uint c0_ = (h0_ + _e9);
+    uint c0_1 = (h0_ + _e9);
     const float _e14 = at(tab_2, v0_);
     if (!((gamma < _e14))) {
         const float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
@@ -667,11 +686,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
     const float _e51 = at(tab_2, (h0_ + _e34));
     const float _e53 = at(tab_2, (h0_ + ih1_));
     const float _e54 = ies_lerp_t(_e51, _e53, _e32);
-    const float _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
-    const float _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
+    const float _e58 = at(tab_2, ((c0_1 + (_e34 * _e5)) + _e33));
+    const float _e65 = at(tab_2, ((c0_1 + (_e34 * _e5)) + iv1_));
     float a_11 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
-    const float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
-    const float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
+    const float _e71 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + _e33));
+    const float _e78 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + iv1_));
     float b_8 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
     return ((a_11 * (1.0 - _e54)) + (b_8 * _e54));
 }
@@ -820,6 +839,23 @@ float weighted_select_pdf(float w_5, float w_sum_2, bool in_range, uint k_3)
     return ((_e9 * w_5) / total);
 }
 
+float bvh_first_prob(float c0_, float c1_2)
+{
+    float s_1 = (c0_ + c1_2);
+    if ((s_1 > 0.0)) {
+        return (c0_ / s_1);
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(float u_2, float p0_, bool first)
+{
+    if (first) {
+        return min((u_2 / p0_), ONE_MINUS_EPSILON);
+    }
+    return clamp(((u_2 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
 float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
 {
     float3 t0_ = ((bmin_1 - o) * inv_d);
@@ -838,8 +874,8 @@ float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
 {
     bool local_2 = (bool)0;
 
-    float3 n_18 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_18, n_18);
+    float3 n_22 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_22, n_22);
     if (!(!((l2_ > 0.0)))) {
         local_2 = !((l2_ < 3e38));
     } else {
@@ -849,7 +885,7 @@ float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_18 / (sqrt(l2_)).xxx);
+    return (n_22 / (sqrt(l2_)).xxx);
 }
 
 float3 face_against(float3 n_8, float3 dir)
@@ -878,8 +914,8 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_6, float3 fac
 {
     bool local_3 = (bool)0;
 
-    float3 s_1 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
-    float l2_1 = dot(s_1, s_1);
+    float3 s_2 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
+    float l2_1 = dot(s_2, s_2);
     if (!(!((l2_1 > 1e-12)))) {
         local_3 = !((l2_1 < 3e38));
     } else {
@@ -889,8 +925,8 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_6, float3 fac
     if (_e24) {
         return facing;
     }
-    float3 n_19 = (s_1 / (sqrt(l2_1)).xxx);
-    return ((dot(n_19, facing) < 0.0) ? -(n_19) : n_19);
+    float3 n_23 = (s_2 / (sqrt(l2_1)).xxx);
+    return ((dot(n_23, facing) < 0.0) ? -(n_23) : n_23);
 }
 
 float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
@@ -907,10 +943,10 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
         return -1.0;
     }
     float inv = (1.0 / det);
-    float3 s_2 = (o_1 - a_7);
-    float u_2 = (dot(s_2, p_3) * inv);
-    if (!((u_2 < 0.0))) {
-        local_4 = (u_2 > 1.0);
+    float3 s_3 = (o_1 - a_7);
+    float u_4 = (dot(s_3, p_3) * inv);
+    if (!((u_4 < 0.0))) {
+        local_4 = (u_4 > 1.0);
     } else {
         local_4 = true;
     }
@@ -918,10 +954,10 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
     if (_e28) {
         return -1.0;
     }
-    float3 q_3 = cross(s_2, e1_2);
+    float3 q_3 = cross(s_3, e1_2);
     float v_10 = (dot(d, q_3) * inv);
     if (!((v_10 < 0.0))) {
-        local_5 = ((u_2 + v_10) > 1.0);
+        local_5 = ((u_4 + v_10) > 1.0);
     } else {
         local_5 = true;
     }
@@ -944,21 +980,21 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
 
 float mis_balance(float pdf_a, float pdf_b)
 {
-    float s_3 = (pdf_a + pdf_b);
-    if ((s_3 <= 0.0)) {
+    float s_4 = (pdf_a + pdf_b);
+    if ((s_4 <= 0.0)) {
         return 0.0;
     }
-    return (pdf_a / s_3);
+    return (pdf_a / s_4);
 }
 
 float mis_power(float pdf_a_1, float pdf_b_1)
 {
     float a2_ = (pdf_a_1 * pdf_a_1);
-    float s_4 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if ((s_4 <= 0.0)) {
+    float s_5 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_5 <= 0.0)) {
         return 0.0;
     }
-    return (a2_ / s_4);
+    return (a2_ / s_5);
 }
 
 float light_strategy_pdf(float select_, float rt2_6, float d2_8, float area_1, float cos_y)
@@ -998,11 +1034,11 @@ float cosine_pdf(float cos_theta_1)
 
 float3 cosine_direction(float3 n_9, float u1_1, float u2_1)
 {
-    float s_5 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_5 + n_9.z));
+    float s_6 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_6 + n_9.z));
     float b_9 = ((n_9.x * n_9.y) * a_12);
-    float3 t_4 = float3((1.0 + (((s_5 * n_9.x) * n_9.x) * a_12)), (s_5 * b_9), (-(s_5) * n_9.x));
-    float3 bt = float3(b_9, (s_5 + ((n_9.y * n_9.y) * a_12)), -(n_9.y));
+    float3 t_4 = float3((1.0 + (((s_6 * n_9.x) * n_9.x) * a_12)), (s_6 * b_9), (-(s_6) * n_9.x));
+    float3 bt = float3(b_9, (s_6 + ((n_9.y * n_9.y) * a_12)), -(n_9.y));
     float r_6 = sqrt(u1_1);
     float phi_2 = (6.2831855 * u2_1);
     return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));
@@ -1207,12 +1243,12 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         uint _e30 = node;
-        GpuGeoNode n_20 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e30*32+0)), asuint(geo_nodes.Load(_e30*32+12)), asfloat(geo_nodes.Load3(_e30*32+16)), asuint(geo_nodes.Load(_e30*32+28)));
+        GpuGeoNode n_24 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e30*32+0)), asuint(geo_nodes.Load(_e30*32+12)), asfloat(geo_nodes.Load3(_e30*32+16)), asuint(geo_nodes.Load(_e30*32+28)));
         float _e36 = hit.t;
-        const float _e37 = ray_aabb(o_2, inv_d_1, n_20.bmin, n_20.bmax, _e36);
+        const float _e37 = ray_aabb(o_2, inv_d_1, n_24.bmin, n_24.bmax, _e36);
         if ((_e37 >= 0.0)) {
-            if ((n_20.count > 0u)) {
-                i_2 = n_20.first;
+            if ((n_24.count > 0u)) {
+                i_2 = n_24.first;
                 uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1224,7 +1260,7 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e45 = i_2;
-                    if ((_e45 < (n_20.first + n_20.count))) {
+                    if ((_e45 < (n_24.first + n_24.count))) {
                     } else {
                         break;
                     }
@@ -1249,11 +1285,11 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
                 uint _e69 = sp;
                 if ((_e69 < 64u)) {
                     uint _e72 = sp;
-                    stack[min(uint(_e72), 63u)] = (n_20.first + 1u);
+                    stack[min(uint(_e72), 63u)] = (n_24.first + 1u);
                     uint _e77 = sp;
                     sp = (_e77 + 1u);
                 }
-                node = n_20.first;
+                node = n_24.first;
                 continue;
             }
         }
@@ -1471,8 +1507,8 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     ret.cos_o = arg3;
     ret.phi = arg4;
     ret.cos_e = arg5;
-    ret.pad0_ = arg6;
-    ret.pad1_ = arg7;
+    ret.bvh_leaf = arg6;
+    ret.pad = arg7;
     return ret;
 }
 
@@ -1484,30 +1520,174 @@ float light_weight(uint li_1, float3 x_13, float3 n_14)
     return _e15;
 }
 
-float select_pdf(uint li_2, float3 x_14, float3 n_15, uint nee, bool in_range_1)
+GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
+    GpuLightBvhNode ret = (GpuLightBvhNode)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.axis = arg2;
+    ret.cos_o = arg3;
+    ret.phi = arg4;
+    ret.cos_e = arg5;
+    ret.second = arg6;
+    ret.light = arg7;
+    return ret;
+}
+
+float bvh_importance(uint i_5, float3 x_14, float3 n_15)
+{
+    GpuLightBvhNode b_10 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_5*48+0)), asfloat(light_bvh.Load(i_5*48+12)), asfloat(light_bvh.Load3(i_5*48+16)), asfloat(light_bvh.Load(i_5*48+28)), asfloat(light_bvh.Load(i_5*48+32)), asfloat(light_bvh.Load(i_5*48+36)), asuint(light_bvh.Load(i_5*48+40)), asuint(light_bvh.Load(i_5*48+44)));
+    const float _e12 = light_importance(b_10.center_, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_14, n_15);
+    return _e12;
+}
+
+float bvh_first(uint i_6, float3 x_15, float3 n_16)
 {
     bool local_13 = (bool)0;
 
-    if (in_range_1) {
-        local_13 = (nee > 0u);
+    uint j = asuint(light_bvh.Load(40+i_6*48));
+    if (!((j <= (i_6 + 1u)))) {
+        local_13 = (j >= ((NagaBufferLength(light_bvh) - 0) / 48));
     } else {
-        local_13 = false;
+        local_13 = true;
     }
-    bool _e12 = local_13;
+    bool _e17 = local_13;
+    if (_e17) {
+        return -1.0;
+    }
+    const float _e21 = bvh_importance((i_6 + 1u), x_15, n_16);
+    const float _e22 = bvh_importance(j, x_15, n_16);
+    const float _e23 = bvh_first_prob(_e21, _e22);
+    return _e23;
+}
+
+BvhPick ConstructBvhPick(uint arg0, float arg1) {
+    BvhPick ret = (BvhPick)0;
+    ret.light = arg0;
+    ret.pmf = arg1;
+    return ret;
+}
+
+BvhPick light_bvh_sample(float3 x_16, float3 n_17, float u_in)
+{
+    float u_3 = (float)0;
+    uint i_7 = 0u;
+    float pmf = 1.0;
+    bool local_14 = (bool)0;
+
+    u_3 = u_in;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        uint _e9 = i_7;
+        GpuLightBvhNode node_2 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(_e9*48+0)), asfloat(light_bvh.Load(_e9*48+12)), asfloat(light_bvh.Load3(_e9*48+16)), asfloat(light_bvh.Load(_e9*48+28)), asfloat(light_bvh.Load(_e9*48+32)), asfloat(light_bvh.Load(_e9*48+36)), asuint(light_bvh.Load(_e9*48+40)), asuint(light_bvh.Load(_e9*48+44)));
+        if ((node_2.second == LIGHT_BVH_LEAF)) {
+            uint _e15 = i_7;
+            if (!((_e15 > 0u))) {
+                const float _e22 = bvh_importance(0u, x_16, n_17);
+                local_14 = (_e22 > 0.0);
+            } else {
+                local_14 = true;
+            }
+            bool reaches = local_14;
+            float _e28 = pmf;
+            const BvhPick bvhpick = ConstructBvhPick(node_2.light, (reaches ? _e28 : 0.0));
+            return bvhpick;
+        }
+        uint _e32 = i_7;
+        const float _e33 = bvh_first(_e32, x_16, n_17);
+        if ((_e33 < 0.0)) {
+            const BvhPick bvhpick_1 = ConstructBvhPick(0u, 0.0);
+            return bvhpick_1;
+        }
+        float _e39 = u_3;
+        bool first_1 = (_e39 < _e33);
+        float _e41 = pmf;
+        pmf = (_e41 * (first_1 ? _e33 : (1.0 - _e33)));
+        float _e46 = u_3;
+        const float _e47 = bvh_remap_u(_e46, _e33, first_1);
+        u_3 = _e47;
+        uint _e49 = i_7;
+        i_7 = (first_1 ? (_e49 + 1u) : node_2.second);
+    }
+    const BvhPick bvhpick_2 = ConstructBvhPick(0u, 0.0);
+    return bvhpick_2;
+}
+
+float light_bvh_pmf(uint li_2, float3 x_17, float3 n_18)
+{
+    uint i_8 = 0u;
+    float pmf_1 = 1.0;
+    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
+
+    uint leaf = asuint(light_cones.Load(40+li_2*48));
+    if ((leaf >= ((NagaBufferLength(light_bvh) - 0) / 48))) {
+        return 0.0;
+    }
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        uint _e16 = i_8;
+        GpuLightBvhNode node_3 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(_e16*48+0)), asfloat(light_bvh.Load(_e16*48+12)), asfloat(light_bvh.Load3(_e16*48+16)), asfloat(light_bvh.Load(_e16*48+28)), asfloat(light_bvh.Load(_e16*48+32)), asfloat(light_bvh.Load(_e16*48+36)), asuint(light_bvh.Load(_e16*48+40)), asuint(light_bvh.Load(_e16*48+44)));
+        if ((node_3.second == LIGHT_BVH_LEAF)) {
+            uint _e22 = i_8;
+            if (!((_e22 > 0u))) {
+                const float _e29 = bvh_importance(0u, x_17, n_18);
+                local_15 = (_e29 > 0.0);
+            } else {
+                local_15 = true;
+            }
+            bool reaches_1 = local_15;
+            float _e34 = pmf_1;
+            uint _e35 = i_8;
+            if ((_e35 == leaf)) {
+                local_16 = reaches_1;
+            } else {
+                local_16 = false;
+            }
+            bool _e40 = local_16;
+            return (_e40 ? _e34 : 0.0);
+        }
+        uint _e43 = i_8;
+        const float _e44 = bvh_first(_e43, x_17, n_18);
+        if ((_e44 < 0.0)) {
+            return 0.0;
+        }
+        bool first_2 = (leaf < node_3.second);
+        float _e50 = pmf_1;
+        pmf_1 = (_e50 * (first_2 ? _e44 : (1.0 - _e44)));
+        uint _e56 = i_8;
+        i_8 = (first_2 ? (_e56 + 1u) : node_3.second);
+    }
+    return 0.0;
+}
+
+float select_pdf(uint li_3, float3 x_18, float3 n_19, uint nee, bool in_range_1)
+{
+    bool local_17 = (bool)0;
+
+    if (in_range_1) {
+        local_17 = (nee > 0u);
+    } else {
+        local_17 = false;
+    }
+    bool _e12 = local_17;
     uint others = (nee - (_e12 ? 1u : 0u));
     const float _e18 = reservoir_weight((others + 1u), K);
     return (1.0 / _e18);
 }
 
-float light_pdf(uint li_3, float3 x_15, float3 n_16, float3 y_2, uint nee_1, bool in_range_2)
+float light_pdf(uint li_4, float3 x_19, float3 n_20, float3 y_2, uint nee_1, bool in_range_2)
 {
-    GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
-    float3 v_12 = (x_15 - y_2);
+    GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
+    float3 v_12 = (x_19 - y_2);
     float d2_12 = dot(v_12, v_12);
     const float3 _e11 = light_normal(l_5);
     float cos_y_1 = ((d2_12 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_12)).xxx)) : 0.0);
-    const float _e20 = select_pdf(li_3, x_15, n_16, nee_1, in_range_2);
-    float _e23 = asfloat(rt2_7.Load(li_3*4));
+    const float _e20 = select_pdf(li_4, x_19, n_20, nee_1, in_range_2);
+    float _e23 = asfloat(rt2_7.Load(li_4*4));
     const float _e24 = light_area(l_5);
     const float _e25 = light_strategy_pdf(_e20, _e23, d2_12, _e24, cos_y_1);
     return _e25;
@@ -1518,23 +1698,23 @@ bool finite3_(float3 v_3)
     return all((abs(v_3) <= (3.4028235e38).xxx));
 }
 
-float3 shade_pick(uint li_4, float3 x_16, float3 n_17, float3 ng_1, float w_9, uint nee_2, float u1_4, float u2_4)
+float3 shade_pick(uint li_5, float3 x_20, float3 n_21, float3 ng_1, float w_9, uint nee_2, float u1_4, float u2_4)
 {
     float mis = 1.0;
-    bool local_14 = (bool)0;
+    bool local_18 = (bool)0;
 
     float _e10 = params.eps;
-    const Connection _e11 = connect(li_4, x_16, n_17, ng_1, w_9, u1_4, u2_4, _e10);
-    GpuLight _e16 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
+    const Connection _e11 = connect(li_5, x_20, n_21, ng_1, w_9, u1_4, u2_4, _e10);
+    GpuLight _e16 = ConstructGpuLight(asfloat(lights.Load3(li_5*64+0)), asuint(lights.Load(li_5*64+12)), asfloat(lights.Load3(li_5*64+16)), asfloat(lights.Load(li_5*64+28)), asfloat(lights.Load3(li_5*64+32)), asfloat(lights.Load(li_5*64+44)), asfloat(lights.Load3(li_5*64+48)), asuint(lights.Load(li_5*64+60)));
     const float _e17 = light_area(_e16);
     if ((_e17 > 0.0)) {
-        local_14 = (_e11.cos_x > 0.0);
+        local_18 = (_e11.cos_x > 0.0);
     } else {
-        local_14 = false;
+        local_18 = false;
     }
-    bool _e26 = local_14;
+    bool _e26 = local_18;
     if (_e26) {
-        const float _e29 = light_pdf(li_4, x_16, n_17, _e11.y, nee_2, true);
+        const float _e29 = light_pdf(li_5, x_20, n_21, _e11.y, nee_2, true);
         const float _e31 = cosine_pdf(_e11.cos_x);
         const float _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -1563,34 +1743,34 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 sum = (0.0).xxx;
     uint s = 0u;
 
-    uint i_5 = gid.x;
+    uint i_9 = gid.x;
     uint _e4 = params.point_count;
-    if ((i_5 >= _e4)) {
+    if ((i_9 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_5*64+0)), asuint(vertices_.Load(i_5*64+12)), asfloat(vertices_.Load3(i_5*64+16)), asfloat(vertices_.Load(i_5*64+28)), asfloat(vertices_.Load3(i_5*64+32)), asfloat(vertices_.Load(i_5*64+44)), asfloat(vertices_.Load3(i_5*64+48)), asfloat(vertices_.Load(i_5*64+60)));
+    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_9*64+0)), asuint(vertices_.Load(i_9*64+12)), asfloat(vertices_.Load3(i_9*64+16)), asfloat(vertices_.Load(i_9*64+28)), asfloat(vertices_.Load3(i_9*64+32)), asfloat(vertices_.Load(i_9*64+44)), asfloat(vertices_.Load3(i_9*64+48)), asfloat(vertices_.Load(i_9*64+60)));
     if ((vtx.alive == 0u)) {
-        candidates.Store(i_5*4, asuint(0u));
+        candidates.Store(i_9*4, asuint(0u));
         return;
     }
-    float3 x_17 = vtx.position;
-    float3 n_21 = vtx.normal;
+    float3 x_21 = vtx.position;
+    float3 n_25 = vtx.normal;
     float3 ng_2 = vtx.gnormal;
     uint _e20 = params.seed;
     uint _e23 = params.frame;
     const uint _e24 = pcg_hash(_e23);
-    const uint _e26 = pcg_hash((i_5 ^ _e24));
+    const uint _e26 = pcg_hash((i_9 ^ _e24));
     const uint _e28 = pcg_hash((_e20 ^ _e26));
     const uint _e31 = pcg_hash((_e28 ^ 2654435769u));
     h = _e31;
-    const Picks _e36 = bsh_collect(x_17, _e28);
-    candidates.Store(i_5*4, asuint(_e36.n));
+    const Picks _e36 = bsh_collect(x_21, _e28);
+    candidates.Store(i_9*4, asuint(_e36.n));
     const float _e42 = reservoir_weight(_e36.n, K);
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_2) {
             uint _e66 = s;
             s = (_e66 + 1u);
@@ -1614,7 +1794,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             uint _e58 = s;
             uint _e61 = h;
             const float _e62 = xi_from_bits(_e61);
-            const float3 _e63 = shade_pick(_e36.light[min(uint(_e58), 7u)], x_17, n_21, ng_2, _e42, _e36.n, _e53, _e62);
+            const float3 _e63 = shade_pick(_e36.light[min(uint(_e58), 7u)], x_21, n_25, ng_2, _e42, _e36.n, _e53, _e62);
             sum = (_e56 + _e63);
         }
     }
@@ -1622,8 +1802,8 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 add = (vtx.weight * _e69);
     const bool _e71 = finite3_(add);
     if (_e71) {
-        float4 _e74 = asfloat(radiance.Load4(i_5*16));
-        radiance.Store4(i_5*16, asuint((_e74 + float4(add, 0.0))));
+        float4 _e74 = asfloat(radiance.Load4(i_9*16));
+        radiance.Store4(i_9*16, asuint((_e74 + float4(add, 0.0))));
         return;
     } else {
         return;

@@ -16,8 +16,19 @@ struct GpuLightCone {
     float cos_o;
     float phi;
     float cos_e;
-    uint pad0_;
-    uint pad1_;
+    uint bvh_leaf;
+    uint pad;
+};
+
+struct GpuLightBvhNode {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
 };
 
 struct GpuGeoNode {
@@ -182,6 +193,11 @@ struct GeoHit {
     uint tri;
 };
 
+struct BvhPick {
+    uint light;
+    float pmf;
+};
+
 static const uint LIGHT_POINT = 0u;
 static const uint LIGHT_SPOT = 1u;
 static const uint LIGHT_IES = 2u;
@@ -199,6 +215,8 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
+static const uint LIGHT_BVH_LEAF = 4294967295u;
+static const float ONE_MINUS_EPSILON = 0.99999994;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
 static const uint K = 8u;
@@ -208,6 +226,7 @@ ByteAddressBuffer geo_nodes : register(t5);
 ByteAddressBuffer geo_tris : register(t6);
 ByteAddressBuffer power_table : register(t1, space1);
 ByteAddressBuffer light_cones : register(t2, space1);
+ByteAddressBuffer light_bvh : register(t3, space1);
 ByteAddressBuffer rt2_7 : register(t2);
 ByteAddressBuffer lights : register(t1);
 cbuffer params : register(b0) { PtParams params; }
@@ -633,7 +652,7 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
     const uint _e9 = to_u32_(_e8);
     uint v0_ = (base_1 + 2u);
     uint h0_ = (v0_ + _e5);
-    uint c0_ = (h0_ + _e9);
+    uint c0_1 = (h0_ + _e9);
     const float _e14 = at(tab_2, v0_);
     if (!((gamma < _e14))) {
         const float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
@@ -658,11 +677,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
     const float _e51 = at(tab_2, (h0_ + _e34));
     const float _e53 = at(tab_2, (h0_ + ih1_));
     const float _e54 = ies_lerp_t(_e51, _e53, _e32);
-    const float _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
-    const float _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
+    const float _e58 = at(tab_2, ((c0_1 + (_e34 * _e5)) + _e33));
+    const float _e65 = at(tab_2, ((c0_1 + (_e34 * _e5)) + iv1_));
     float a_11 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
-    const float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
-    const float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
+    const float _e71 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + _e33));
+    const float _e78 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + iv1_));
     float b_8 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
     return ((a_11 * (1.0 - _e54)) + (b_8 * _e54));
 }
@@ -811,6 +830,23 @@ float weighted_select_pdf(float w_6, float w_sum_2, bool in_range, uint k_3)
     return ((_e9 * w_6) / total);
 }
 
+float bvh_first_prob(float c0_, float c1_2)
+{
+    float s = (c0_ + c1_2);
+    if ((s > 0.0)) {
+        return (c0_ / s);
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(float u_2, float p0_, bool first)
+{
+    if (first) {
+        return min((u_2 / p0_), ONE_MINUS_EPSILON);
+    }
+    return clamp(((u_2 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
 float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
 {
     float3 t0_ = ((bmin_1 - o) * inv_d);
@@ -829,8 +865,8 @@ float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
 {
     bool local_6 = (bool)0;
 
-    float3 n_16 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_16, n_16);
+    float3 n_20 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_20, n_20);
     if (!(!((l2_ > 0.0)))) {
         local_6 = !((l2_ < 3e38));
     } else {
@@ -840,7 +876,7 @@ float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_16 / (sqrt(l2_)).xxx);
+    return (n_20 / (sqrt(l2_)).xxx);
 }
 
 float3 face_against(float3 n_8, float3 dir)
@@ -869,8 +905,8 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_7, float3 fac
 {
     bool local_7 = (bool)0;
 
-    float3 s = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
-    float l2_1 = dot(s, s);
+    float3 s_1 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
+    float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
         local_7 = !((l2_1 < 3e38));
     } else {
@@ -880,8 +916,8 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_7, float3 fac
     if (_e24) {
         return facing;
     }
-    float3 n_17 = (s / (sqrt(l2_1)).xxx);
-    return ((dot(n_17, facing) < 0.0) ? -(n_17) : n_17);
+    float3 n_21 = (s_1 / (sqrt(l2_1)).xxx);
+    return ((dot(n_21, facing) < 0.0) ? -(n_21) : n_21);
 }
 
 float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
@@ -898,10 +934,10 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
         return -1.0;
     }
     float inv = (1.0 / det);
-    float3 s_1 = (o_1 - a_7);
-    float u_2 = (dot(s_1, p_3) * inv);
-    if (!((u_2 < 0.0))) {
-        local_8 = (u_2 > 1.0);
+    float3 s_2 = (o_1 - a_7);
+    float u_4 = (dot(s_2, p_3) * inv);
+    if (!((u_4 < 0.0))) {
+        local_8 = (u_4 > 1.0);
     } else {
         local_8 = true;
     }
@@ -909,10 +945,10 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
     if (_e28) {
         return -1.0;
     }
-    float3 q_3 = cross(s_1, e1_2);
+    float3 q_3 = cross(s_2, e1_2);
     float v_11 = (dot(d, q_3) * inv);
     if (!((v_11 < 0.0))) {
-        local_9 = ((u_2 + v_11) > 1.0);
+        local_9 = ((u_4 + v_11) > 1.0);
     } else {
         local_9 = true;
     }
@@ -935,21 +971,21 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
 
 float mis_balance(float pdf_a, float pdf_b)
 {
-    float s_2 = (pdf_a + pdf_b);
-    if ((s_2 <= 0.0)) {
+    float s_3 = (pdf_a + pdf_b);
+    if ((s_3 <= 0.0)) {
         return 0.0;
     }
-    return (pdf_a / s_2);
+    return (pdf_a / s_3);
 }
 
 float mis_power(float pdf_a_1, float pdf_b_1)
 {
     float a2_ = (pdf_a_1 * pdf_a_1);
-    float s_3 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if ((s_3 <= 0.0)) {
+    float s_4 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_4 <= 0.0)) {
         return 0.0;
     }
-    return (a2_ / s_3);
+    return (a2_ / s_4);
 }
 
 float light_strategy_pdf(float select_, float rt2_6, float d2_8, float area_1, float cos_y)
@@ -989,11 +1025,11 @@ float cosine_pdf(float cos_theta_1)
 
 float3 cosine_direction(float3 n_9, float u1_1, float u2_1)
 {
-    float s_4 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_4 + n_9.z));
+    float s_5 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_5 + n_9.z));
     float b_9 = ((n_9.x * n_9.y) * a_12);
-    float3 t_4 = float3((1.0 + (((s_4 * n_9.x) * n_9.x) * a_12)), (s_4 * b_9), (-(s_4) * n_9.x));
-    float3 bt = float3(b_9, (s_4 + ((n_9.y * n_9.y) * a_12)), -(n_9.y));
+    float3 t_4 = float3((1.0 + (((s_5 * n_9.x) * n_9.x) * a_12)), (s_5 * b_9), (-(s_5) * n_9.x));
+    float3 bt = float3(b_9, (s_5 + ((n_9.y * n_9.y) * a_12)), -(n_9.y));
     float r_6 = sqrt(u1_1);
     float phi_2 = (6.2831855 * u2_1);
     return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));
@@ -1201,12 +1237,12 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         uint _e30 = node;
-        GpuGeoNode n_18 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e30*32+0)), asuint(geo_nodes.Load(_e30*32+12)), asfloat(geo_nodes.Load3(_e30*32+16)), asuint(geo_nodes.Load(_e30*32+28)));
+        GpuGeoNode n_22 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e30*32+0)), asuint(geo_nodes.Load(_e30*32+12)), asfloat(geo_nodes.Load3(_e30*32+16)), asuint(geo_nodes.Load(_e30*32+28)));
         float _e36 = hit.t;
-        const float _e37 = ray_aabb(o_2, inv_d_1, n_18.bmin, n_18.bmax, _e36);
+        const float _e37 = ray_aabb(o_2, inv_d_1, n_22.bmin, n_22.bmax, _e36);
         if ((_e37 >= 0.0)) {
-            if ((n_18.count > 0u)) {
-                i_2 = n_18.first;
+            if ((n_22.count > 0u)) {
+                i_2 = n_22.first;
                 uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1218,7 +1254,7 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e45 = i_2;
-                    if ((_e45 < (n_18.first + n_18.count))) {
+                    if ((_e45 < (n_22.first + n_22.count))) {
                     } else {
                         break;
                     }
@@ -1243,11 +1279,11 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
                 uint _e69 = sp;
                 if ((_e69 < 64u)) {
                     uint _e72 = sp;
-                    stack[min(uint(_e72), 63u)] = (n_18.first + 1u);
+                    stack[min(uint(_e72), 63u)] = (n_22.first + 1u);
                     uint _e77 = sp;
                     sp = (_e77 + 1u);
                 }
-                node = n_18.first;
+                node = n_22.first;
                 continue;
             }
         }
@@ -1292,8 +1328,8 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     ret.cos_o = arg3;
     ret.phi = arg4;
     ret.cos_e = arg5;
-    ret.pad0_ = arg6;
-    ret.pad1_ = arg7;
+    ret.bvh_leaf = arg6;
+    ret.pad = arg7;
     return ret;
 }
 
@@ -1305,16 +1341,160 @@ float light_weight(uint li, float3 x_10, float3 n_13)
     return _e15;
 }
 
-float select_pdf(uint li_1, float3 x_11, float3 n_14, uint nee, bool in_range_1)
+GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
+    GpuLightBvhNode ret = (GpuLightBvhNode)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.axis = arg2;
+    ret.cos_o = arg3;
+    ret.phi = arg4;
+    ret.cos_e = arg5;
+    ret.second = arg6;
+    ret.light = arg7;
+    return ret;
+}
+
+float bvh_importance(uint i_3, float3 x_11, float3 n_14)
+{
+    GpuLightBvhNode b_10 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_3*48+0)), asfloat(light_bvh.Load(i_3*48+12)), asfloat(light_bvh.Load3(i_3*48+16)), asfloat(light_bvh.Load(i_3*48+28)), asfloat(light_bvh.Load(i_3*48+32)), asfloat(light_bvh.Load(i_3*48+36)), asuint(light_bvh.Load(i_3*48+40)), asuint(light_bvh.Load(i_3*48+44)));
+    const float _e12 = light_importance(b_10.center_, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_11, n_14);
+    return _e12;
+}
+
+float bvh_first(uint i_4, float3 x_12, float3 n_15)
 {
     bool local_14 = (bool)0;
 
-    if (in_range_1) {
-        local_14 = (nee > 0u);
+    uint j = asuint(light_bvh.Load(40+i_4*48));
+    if (!((j <= (i_4 + 1u)))) {
+        local_14 = (j >= ((NagaBufferLength(light_bvh) - 0) / 48));
     } else {
-        local_14 = false;
+        local_14 = true;
     }
-    bool _e12 = local_14;
+    bool _e17 = local_14;
+    if (_e17) {
+        return -1.0;
+    }
+    const float _e21 = bvh_importance((i_4 + 1u), x_12, n_15);
+    const float _e22 = bvh_importance(j, x_12, n_15);
+    const float _e23 = bvh_first_prob(_e21, _e22);
+    return _e23;
+}
+
+BvhPick ConstructBvhPick(uint arg0, float arg1) {
+    BvhPick ret = (BvhPick)0;
+    ret.light = arg0;
+    ret.pmf = arg1;
+    return ret;
+}
+
+BvhPick light_bvh_sample(float3 x_13, float3 n_16, float u_in)
+{
+    float u_3 = (float)0;
+    uint i_5 = 0u;
+    float pmf = 1.0;
+    bool local_15 = (bool)0;
+
+    u_3 = u_in;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e9 = i_5;
+        GpuLightBvhNode node_1 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(_e9*48+0)), asfloat(light_bvh.Load(_e9*48+12)), asfloat(light_bvh.Load3(_e9*48+16)), asfloat(light_bvh.Load(_e9*48+28)), asfloat(light_bvh.Load(_e9*48+32)), asfloat(light_bvh.Load(_e9*48+36)), asuint(light_bvh.Load(_e9*48+40)), asuint(light_bvh.Load(_e9*48+44)));
+        if ((node_1.second == LIGHT_BVH_LEAF)) {
+            uint _e15 = i_5;
+            if (!((_e15 > 0u))) {
+                const float _e22 = bvh_importance(0u, x_13, n_16);
+                local_15 = (_e22 > 0.0);
+            } else {
+                local_15 = true;
+            }
+            bool reaches = local_15;
+            float _e28 = pmf;
+            const BvhPick bvhpick = ConstructBvhPick(node_1.light, (reaches ? _e28 : 0.0));
+            return bvhpick;
+        }
+        uint _e32 = i_5;
+        const float _e33 = bvh_first(_e32, x_13, n_16);
+        if ((_e33 < 0.0)) {
+            const BvhPick bvhpick_1 = ConstructBvhPick(0u, 0.0);
+            return bvhpick_1;
+        }
+        float _e39 = u_3;
+        bool first_1 = (_e39 < _e33);
+        float _e41 = pmf;
+        pmf = (_e41 * (first_1 ? _e33 : (1.0 - _e33)));
+        float _e46 = u_3;
+        const float _e47 = bvh_remap_u(_e46, _e33, first_1);
+        u_3 = _e47;
+        uint _e49 = i_5;
+        i_5 = (first_1 ? (_e49 + 1u) : node_1.second);
+    }
+    const BvhPick bvhpick_2 = ConstructBvhPick(0u, 0.0);
+    return bvhpick_2;
+}
+
+float light_bvh_pmf(uint li_1, float3 x_14, float3 n_17)
+{
+    uint i_6 = 0u;
+    float pmf_1 = 1.0;
+    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
+
+    uint leaf = asuint(light_cones.Load(40+li_1*48));
+    if ((leaf >= ((NagaBufferLength(light_bvh) - 0) / 48))) {
+        return 0.0;
+    }
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        uint _e16 = i_6;
+        GpuLightBvhNode node_2 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(_e16*48+0)), asfloat(light_bvh.Load(_e16*48+12)), asfloat(light_bvh.Load3(_e16*48+16)), asfloat(light_bvh.Load(_e16*48+28)), asfloat(light_bvh.Load(_e16*48+32)), asfloat(light_bvh.Load(_e16*48+36)), asuint(light_bvh.Load(_e16*48+40)), asuint(light_bvh.Load(_e16*48+44)));
+        if ((node_2.second == LIGHT_BVH_LEAF)) {
+            uint _e22 = i_6;
+            if (!((_e22 > 0u))) {
+                const float _e29 = bvh_importance(0u, x_14, n_17);
+                local_16 = (_e29 > 0.0);
+            } else {
+                local_16 = true;
+            }
+            bool reaches_1 = local_16;
+            float _e34 = pmf_1;
+            uint _e35 = i_6;
+            if ((_e35 == leaf)) {
+                local_17 = reaches_1;
+            } else {
+                local_17 = false;
+            }
+            bool _e40 = local_17;
+            return (_e40 ? _e34 : 0.0);
+        }
+        uint _e43 = i_6;
+        const float _e44 = bvh_first(_e43, x_14, n_17);
+        if ((_e44 < 0.0)) {
+            return 0.0;
+        }
+        bool first_2 = (leaf < node_2.second);
+        float _e50 = pmf_1;
+        pmf_1 = (_e50 * (first_2 ? _e44 : (1.0 - _e44)));
+        uint _e56 = i_6;
+        i_6 = (first_2 ? (_e56 + 1u) : node_2.second);
+    }
+    return 0.0;
+}
+
+float select_pdf(uint li_2, float3 x_15, float3 n_18, uint nee, bool in_range_1)
+{
+    bool local_18 = (bool)0;
+
+    if (in_range_1) {
+        local_18 = (nee > 0u);
+    } else {
+        local_18 = false;
+    }
+    bool _e12 = local_18;
     uint others = (nee - (_e12 ? 1u : 0u));
     const float _e18 = reservoir_weight((others + 1u), K);
     return (1.0 / _e18);
@@ -1333,15 +1513,15 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-float light_pdf(uint li_2, float3 x_12, float3 n_15, float3 y_2, uint nee_1, bool in_range_2)
+float light_pdf(uint li_3, float3 x_16, float3 n_19, float3 y_2, uint nee_1, bool in_range_2)
 {
-    GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
-    float3 v_12 = (x_12 - y_2);
+    GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
+    float3 v_12 = (x_16 - y_2);
     float d2_11 = dot(v_12, v_12);
     const float3 _e11 = light_normal(l_4);
     float cos_y_1 = ((d2_11 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_11)).xxx)) : 0.0);
-    const float _e20 = select_pdf(li_2, x_12, n_15, nee_1, in_range_2);
-    float _e23 = asfloat(rt2_7.Load(li_2*4));
+    const float _e20 = select_pdf(li_3, x_16, n_19, nee_1, in_range_2);
+    float _e23 = asfloat(rt2_7.Load(li_3*4));
     const float _e24 = light_area(l_4);
     const float _e25 = light_strategy_pdf(_e20, _e23, d2_11, _e24, cos_y_1);
     return _e25;
@@ -1401,10 +1581,10 @@ void main(uint3 gid : SV_DispatchThreadID)
     bool local_2 = (bool)0;
     bool local_3 = (bool)0;
 
-    uint i_3 = gid.x;
+    uint i_7 = gid.x;
     uint _e4 = params.width;
     uint _e7 = params.height;
-    if ((i_3 >= (_e4 * _e7))) {
+    if ((i_7 >= (_e4 * _e7))) {
         return;
     }
     uint _e13 = params.depth;
@@ -1412,7 +1592,7 @@ void main(uint3 gid : SV_DispatchThreadID)
         uint _e18 = params.seed;
         uint _e21 = params.pass_index;
         const uint _e24 = pcg_hash((_e21 + 2654435769u));
-        const uint _e26 = pcg_hash((i_3 ^ _e24));
+        const uint _e26 = pcg_hash((i_7 ^ _e24));
         const uint _e28 = pcg_hash((_e18 ^ _e26));
         h = _e28;
         const float _e30 = next_uniform(h);
@@ -1420,9 +1600,9 @@ void main(uint3 gid : SV_DispatchThreadID)
         const float _e33 = next_uniform(h);
         float jy = (_e33 - 0.5);
         uint _e38 = params.width;
-        float px_1 = ((float(naga_mod(i_3, _e38)) + 0.5) + jx);
+        float px_1 = ((float(naga_mod(i_7, _e38)) + 0.5) + jx);
         uint _e46 = params.width;
-        float py_1 = ((float(naga_div(i_3, _e46)) + 0.5) + jy);
+        float py_1 = ((float(naga_div(i_7, _e46)) + 0.5) + jy);
         float3 _e55 = params.cam_pos;
         st.origin = _e55;
         float3 _e59 = params.cam_forward;
@@ -1440,7 +1620,7 @@ void main(uint3 gid : SV_DispatchThreadID)
         float3 _e87 = params.cam_pos;
         st.prev = _e87;
     } else {
-        GpuPathState _e90 = ConstructGpuPathState(asfloat(paths.Load3(i_3*80+0)), asuint(paths.Load(i_3*80+12)), asfloat(paths.Load3(i_3*80+16)), asuint(paths.Load(i_3*80+28)), asfloat(paths.Load3(i_3*80+32)), asfloat(paths.Load(i_3*80+44)), asfloat(paths.Load3(i_3*80+48)), asuint(paths.Load(i_3*80+60)), asfloat(paths.Load3(i_3*80+64)), asuint(paths.Load(i_3*80+76)));
+        GpuPathState _e90 = ConstructGpuPathState(asfloat(paths.Load3(i_7*80+0)), asuint(paths.Load(i_7*80+12)), asfloat(paths.Load3(i_7*80+16)), asuint(paths.Load(i_7*80+28)), asfloat(paths.Load3(i_7*80+32)), asfloat(paths.Load(i_7*80+44)), asfloat(paths.Load3(i_7*80+48)), asuint(paths.Load(i_7*80+60)), asfloat(paths.Load3(i_7*80+64)), asuint(paths.Load(i_7*80+76)));
         st = _e90;
     }
     v.alive = 0u;
@@ -1449,14 +1629,14 @@ void main(uint3 gid : SV_DispatchThreadID)
         GpuPathVertex _e100 = v;
         {
             GpuPathVertex _value3 = _e100;
-            vertices_.Store3(i_3*64+0, asuint(_value3.position));
-            vertices_.Store(i_3*64+12, asuint(_value3.alive));
-            vertices_.Store3(i_3*64+16, asuint(_value3.normal));
-            vertices_.Store(i_3*64+28, asuint(_value3.pad));
-            vertices_.Store3(i_3*64+32, asuint(_value3.weight));
-            vertices_.Store(i_3*64+44, asuint(_value3.pad1_));
-            vertices_.Store3(i_3*64+48, asuint(_value3.gnormal));
-            vertices_.Store(i_3*64+60, asuint(_value3.pad2_));
+            vertices_.Store3(i_7*64+0, asuint(_value3.position));
+            vertices_.Store(i_7*64+12, asuint(_value3.alive));
+            vertices_.Store3(i_7*64+16, asuint(_value3.normal));
+            vertices_.Store(i_7*64+28, asuint(_value3.pad));
+            vertices_.Store3(i_7*64+32, asuint(_value3.weight));
+            vertices_.Store(i_7*64+44, asuint(_value3.pad1_));
+            vertices_.Store3(i_7*64+48, asuint(_value3.gnormal));
+            vertices_.Store(i_7*64+60, asuint(_value3.pad2_));
         }
         return;
     }
@@ -1469,43 +1649,43 @@ void main(uint3 gid : SV_DispatchThreadID)
         GpuPathState _e118 = st;
         {
             GpuPathState _value3 = _e118;
-            paths.Store3(i_3*80+0, asuint(_value3.origin));
-            paths.Store(i_3*80+12, asuint(_value3.alive));
-            paths.Store3(i_3*80+16, asuint(_value3.dir));
-            paths.Store(i_3*80+28, asuint(_value3.rng));
-            paths.Store3(i_3*80+32, asuint(_value3.beta));
-            paths.Store(i_3*80+44, asuint(_value3.pdf_bsdf));
-            paths.Store3(i_3*80+48, asuint(_value3.prev));
-            paths.Store(i_3*80+60, asuint(_value3.pad));
-            paths.Store3(i_3*80+64, asuint(_value3.prev_normal));
-            paths.Store(i_3*80+76, asuint(_value3.pad2_));
+            paths.Store3(i_7*80+0, asuint(_value3.origin));
+            paths.Store(i_7*80+12, asuint(_value3.alive));
+            paths.Store3(i_7*80+16, asuint(_value3.dir));
+            paths.Store(i_7*80+28, asuint(_value3.rng));
+            paths.Store3(i_7*80+32, asuint(_value3.beta));
+            paths.Store(i_7*80+44, asuint(_value3.pdf_bsdf));
+            paths.Store3(i_7*80+48, asuint(_value3.prev));
+            paths.Store(i_7*80+60, asuint(_value3.pad));
+            paths.Store3(i_7*80+64, asuint(_value3.prev_normal));
+            paths.Store(i_7*80+76, asuint(_value3.pad2_));
         }
         GpuPathVertex _e121 = v;
         {
             GpuPathVertex _value3 = _e121;
-            vertices_.Store3(i_3*64+0, asuint(_value3.position));
-            vertices_.Store(i_3*64+12, asuint(_value3.alive));
-            vertices_.Store3(i_3*64+16, asuint(_value3.normal));
-            vertices_.Store(i_3*64+28, asuint(_value3.pad));
-            vertices_.Store3(i_3*64+32, asuint(_value3.weight));
-            vertices_.Store(i_3*64+44, asuint(_value3.pad1_));
-            vertices_.Store3(i_3*64+48, asuint(_value3.gnormal));
-            vertices_.Store(i_3*64+60, asuint(_value3.pad2_));
+            vertices_.Store3(i_7*64+0, asuint(_value3.position));
+            vertices_.Store(i_7*64+12, asuint(_value3.alive));
+            vertices_.Store3(i_7*64+16, asuint(_value3.normal));
+            vertices_.Store(i_7*64+28, asuint(_value3.pad));
+            vertices_.Store3(i_7*64+32, asuint(_value3.weight));
+            vertices_.Store(i_7*64+44, asuint(_value3.pad1_));
+            vertices_.Store3(i_7*64+48, asuint(_value3.gnormal));
+            vertices_.Store(i_7*64+60, asuint(_value3.pad2_));
         }
         return;
     }
     GpuTriangle tri = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e110.tri*48+0)), asuint(geo_tris.Load(_e110.tri*48+12)), asfloat(geo_tris.Load3(_e110.tri*48+16)), asuint(geo_tris.Load(_e110.tri*48+28)), asfloat(geo_tris.Load3(_e110.tri*48+32)), asuint(geo_tris.Load(_e110.tri*48+44)));
     float3 _e127 = st.origin;
     float3 _e129 = st.dir;
-    float3 x_13 = (_e127 + (_e129 * _e110.t));
+    float3 x_17 = (_e127 + (_e129 * _e110.t));
     const float3 _e136 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     float3 _e138 = st.dir;
     const float3 _e139 = face_against(_e136, _e138);
-    uint b_10 = (_e110.tri * 3u);
-    float4 _e145 = asfloat(geo_normals.Load4(b_10*16));
-    float4 _e151 = asfloat(geo_normals.Load4((b_10 + 1u)*16));
-    float4 _e157 = asfloat(geo_normals.Load4((b_10 + 2u)*16));
-    const float3 _e162 = barycentric(x_13, tri.v0_, tri.v1_, tri.v2_);
+    uint b_11 = (_e110.tri * 3u);
+    float4 _e145 = asfloat(geo_normals.Load4(b_11*16));
+    float4 _e151 = asfloat(geo_normals.Load4((b_11 + 1u)*16));
+    float4 _e157 = asfloat(geo_normals.Load4((b_11 + 2u)*16));
+    const float3 _e162 = barycentric(x_17, tri.v0_, tri.v1_, tri.v2_);
     const float3 _e163 = shading_normal(_e145.xyz, _e151.xyz, _e157.xyz, _e162, _e139);
     if ((tri.light != NO_LIGHT)) {
         float3 _e170 = st.dir;
@@ -1518,14 +1698,14 @@ void main(uint3 gid : SV_DispatchThreadID)
         float _e179 = st.pdf_bsdf;
         if ((_e179 > 0.0)) {
             uint _e186 = asuint(light_leaf.Load(tri.light*4));
-            BshNode leaf = ConstructBshNode(asfloat(bsh_nodes.Load3(_e186*32+0)), asfloat(bsh_nodes.Load(_e186*32+12)), asuint(bsh_nodes.Load(_e186*32+16)), asuint(bsh_nodes.Load(_e186*32+20)), asuint(bsh_nodes.Load(_e186*32+24)), asuint(bsh_nodes.Load(_e186*32+28)));
+            BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e186*32+0)), asfloat(bsh_nodes.Load(_e186*32+12)), asuint(bsh_nodes.Load(_e186*32+16)), asuint(bsh_nodes.Load(_e186*32+20)), asuint(bsh_nodes.Load(_e186*32+24)), asuint(bsh_nodes.Load(_e186*32+28)));
             float3 _e192 = st.prev;
-            const bool _e193 = sphere_contains_point(leaf.center_, leaf.radius, _e192);
+            const bool _e193 = sphere_contains_point(leaf_1.center_, leaf_1.radius, _e192);
             float _e195 = st.pdf_bsdf;
             float3 _e198 = st.prev;
             float3 _e200 = st.prev_normal;
-            uint _e203 = asuint(candidates.Load(i_3*4));
-            const float _e204 = light_pdf(tri.light, _e198, _e200, x_13, _e203, _e193);
+            uint _e203 = asuint(candidates.Load(i_7*4));
+            const float _e204 = light_pdf(tri.light, _e198, _e200, x_17, _e203, _e193);
             const float _e205 = mis_weight(_e195, _e204);
             w = _e205;
         }
@@ -1535,13 +1715,13 @@ void main(uint3 gid : SV_DispatchThreadID)
         float3 add = ((_e207 * _e212) * _e214);
         const bool _e216 = finite3_(add);
         if (_e216) {
-            float4 _e219 = asfloat(radiance.Load4(i_3*16));
-            radiance.Store4(i_3*16, asuint((_e219 + float4(add, 0.0))));
+            float4 _e219 = asfloat(radiance.Load4(i_7*16));
+            radiance.Store4(i_7*16, asuint((_e219 + float4(add, 0.0))));
         }
     }
     float4 _e226 = asfloat(albedo_1.Load4(tri.material*16));
     float3 rho_1 = _e226.xyz;
-    v.position = x_13;
+    v.position = x_17;
     v.normal = _e163;
     v.gnormal = _e139;
     float3 _e233 = st.beta;
@@ -1551,14 +1731,14 @@ void main(uint3 gid : SV_DispatchThreadID)
     GpuPathVertex _e240 = v;
     {
         GpuPathVertex _value2 = _e240;
-        vertices_.Store3(i_3*64+0, asuint(_value2.position));
-        vertices_.Store(i_3*64+12, asuint(_value2.alive));
-        vertices_.Store3(i_3*64+16, asuint(_value2.normal));
-        vertices_.Store(i_3*64+28, asuint(_value2.pad));
-        vertices_.Store3(i_3*64+32, asuint(_value2.weight));
-        vertices_.Store(i_3*64+44, asuint(_value2.pad1_));
-        vertices_.Store3(i_3*64+48, asuint(_value2.gnormal));
-        vertices_.Store(i_3*64+60, asuint(_value2.pad2_));
+        vertices_.Store3(i_7*64+0, asuint(_value2.position));
+        vertices_.Store(i_7*64+12, asuint(_value2.alive));
+        vertices_.Store3(i_7*64+16, asuint(_value2.normal));
+        vertices_.Store(i_7*64+28, asuint(_value2.pad));
+        vertices_.Store3(i_7*64+32, asuint(_value2.weight));
+        vertices_.Store(i_7*64+44, asuint(_value2.pad1_));
+        vertices_.Store3(i_7*64+48, asuint(_value2.gnormal));
+        vertices_.Store(i_7*64+60, asuint(_value2.pad2_));
     }
     uint _e242 = st.rng;
     rng = _e242;
@@ -1568,12 +1748,12 @@ void main(uint3 gid : SV_DispatchThreadID)
     float cos_o_2 = dot(_e246, _e163);
     float3 _e249 = st.beta;
     st.beta = (_e249 * rho_1);
-    st.prev = x_13;
+    st.prev = x_17;
     st.prev_normal = _e163;
     const float _e254 = cosine_pdf(cos_o_2);
     st.pdf_bsdf = _e254;
     float _e258 = params.eps;
-    st.origin = (x_13 + (_e139 * _e258));
+    st.origin = (x_17 + (_e139 * _e258));
     st.dir = _e246;
     if (!((cos_o_2 <= 0.0))) {
         local_1 = (dot(_e246, _e139) <= 0.0);
@@ -1616,16 +1796,16 @@ void main(uint3 gid : SV_DispatchThreadID)
     GpuPathState _e316 = st;
     {
         GpuPathState _value2 = _e316;
-        paths.Store3(i_3*80+0, asuint(_value2.origin));
-        paths.Store(i_3*80+12, asuint(_value2.alive));
-        paths.Store3(i_3*80+16, asuint(_value2.dir));
-        paths.Store(i_3*80+28, asuint(_value2.rng));
-        paths.Store3(i_3*80+32, asuint(_value2.beta));
-        paths.Store(i_3*80+44, asuint(_value2.pdf_bsdf));
-        paths.Store3(i_3*80+48, asuint(_value2.prev));
-        paths.Store(i_3*80+60, asuint(_value2.pad));
-        paths.Store3(i_3*80+64, asuint(_value2.prev_normal));
-        paths.Store(i_3*80+76, asuint(_value2.pad2_));
+        paths.Store3(i_7*80+0, asuint(_value2.origin));
+        paths.Store(i_7*80+12, asuint(_value2.alive));
+        paths.Store3(i_7*80+16, asuint(_value2.dir));
+        paths.Store(i_7*80+28, asuint(_value2.rng));
+        paths.Store3(i_7*80+32, asuint(_value2.beta));
+        paths.Store(i_7*80+44, asuint(_value2.pdf_bsdf));
+        paths.Store3(i_7*80+48, asuint(_value2.prev));
+        paths.Store(i_7*80+60, asuint(_value2.pad));
+        paths.Store3(i_7*80+64, asuint(_value2.prev_normal));
+        paths.Store(i_7*80+76, asuint(_value2.pad2_));
     }
     return;
 }

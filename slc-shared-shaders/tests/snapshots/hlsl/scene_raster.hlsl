@@ -16,8 +16,19 @@ struct GpuLightCone {
     float cos_o;
     float phi;
     float cos_e;
-    uint pad0_;
-    uint pad1_;
+    uint bvh_leaf;
+    uint pad;
+};
+
+struct GpuLightBvhNode {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
 };
 
 struct GpuGeoNode {
@@ -213,6 +224,8 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
+static const uint LIGHT_BVH_LEAF = 4294967295u;
+static const float ONE_MINUS_EPSILON = 0.99999994;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
 
@@ -665,7 +678,7 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
     const uint _e9 = to_u32_(_e8);
     uint v0_ = (base_1 + 2u);
     uint h0_ = (v0_ + _e5);
-    uint c0_ = (h0_ + _e9);
+    uint c0_1 = (h0_ + _e9);
     const float _e14 = at(tab_2, v0_);
     if (!((gamma < _e14))) {
         const float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
@@ -690,11 +703,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
     const float _e51 = at(tab_2, (h0_ + _e34));
     const float _e53 = at(tab_2, (h0_ + ih1_));
     const float _e54 = ies_lerp_t(_e51, _e53, _e32);
-    const float _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
-    const float _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
+    const float _e58 = at(tab_2, ((c0_1 + (_e34 * _e5)) + _e33));
+    const float _e65 = at(tab_2, ((c0_1 + (_e34 * _e5)) + iv1_));
     float a_10 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
-    const float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
-    const float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
+    const float _e71 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + _e33));
+    const float _e78 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + iv1_));
     float b_7 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
     return ((a_10 * (1.0 - _e54)) + (b_7 * _e54));
 }
@@ -843,6 +856,23 @@ float weighted_select_pdf(float w_5, float w_sum_2, bool in_range, uint k_3)
     return ((_e9 * w_5) / total);
 }
 
+float bvh_first_prob(float c0_, float c1_2)
+{
+    float s = (c0_ + c1_2);
+    if ((s > 0.0)) {
+        return (c0_ / s);
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(float u_2, float p0_, bool first)
+{
+    if (first) {
+        return min((u_2 / p0_), ONE_MINUS_EPSILON);
+    }
+    return clamp(((u_2 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
 float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
 {
     float3 t0_ = ((bmin_1 - o) * inv_d);
@@ -901,8 +931,8 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_6, float3 fac
 {
     bool local_3 = (bool)0;
 
-    float3 s = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
-    float l2_1 = dot(s, s);
+    float3 s_1 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
+    float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
         local_3 = !((l2_1 < 3e38));
     } else {
@@ -912,7 +942,7 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_6, float3 fac
     if (_e24) {
         return facing;
     }
-    float3 n_14 = (s / (sqrt(l2_1)).xxx);
+    float3 n_14 = (s_1 / (sqrt(l2_1)).xxx);
     return ((dot(n_14, facing) < 0.0) ? -(n_14) : n_14);
 }
 
@@ -930,10 +960,10 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
         return -1.0;
     }
     float inv = (1.0 / det);
-    float3 s_1 = (o_1 - a_7);
-    float u_2 = (dot(s_1, p_3) * inv);
-    if (!((u_2 < 0.0))) {
-        local_4 = (u_2 > 1.0);
+    float3 s_2 = (o_1 - a_7);
+    float u_3 = (dot(s_2, p_3) * inv);
+    if (!((u_3 < 0.0))) {
+        local_4 = (u_3 > 1.0);
     } else {
         local_4 = true;
     }
@@ -941,10 +971,10 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
     if (_e28) {
         return -1.0;
     }
-    float3 q_3 = cross(s_1, e1_2);
+    float3 q_3 = cross(s_2, e1_2);
     float v_13 = (dot(d, q_3) * inv);
     if (!((v_13 < 0.0))) {
-        local_5 = ((u_2 + v_13) > 1.0);
+        local_5 = ((u_3 + v_13) > 1.0);
     } else {
         local_5 = true;
     }
@@ -967,21 +997,21 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
 
 float mis_balance(float pdf_a, float pdf_b)
 {
-    float s_2 = (pdf_a + pdf_b);
-    if ((s_2 <= 0.0)) {
+    float s_3 = (pdf_a + pdf_b);
+    if ((s_3 <= 0.0)) {
         return 0.0;
     }
-    return (pdf_a / s_2);
+    return (pdf_a / s_3);
 }
 
 float mis_power(float pdf_a_1, float pdf_b_1)
 {
     float a2_ = (pdf_a_1 * pdf_a_1);
-    float s_3 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if ((s_3 <= 0.0)) {
+    float s_4 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_4 <= 0.0)) {
         return 0.0;
     }
-    return (a2_ / s_3);
+    return (a2_ / s_4);
 }
 
 float light_strategy_pdf(float select_, float rt2_6, float d2_8, float area_1, float cos_y)
@@ -1021,11 +1051,11 @@ float cosine_pdf(float cos_theta_1)
 
 float3 cosine_direction(float3 n_9, float u1_1, float u2_1)
 {
-    float s_4 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_11 = (-1.0 / (s_4 + n_9.z));
+    float s_5 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_11 = (-1.0 / (s_5 + n_9.z));
     float b_8 = ((n_9.x * n_9.y) * a_11);
-    float3 t_4 = float3((1.0 + (((s_4 * n_9.x) * n_9.x) * a_11)), (s_4 * b_8), (-(s_4) * n_9.x));
-    float3 bt = float3(b_8, (s_4 + ((n_9.y * n_9.y) * a_11)), -(n_9.y));
+    float3 t_4 = float3((1.0 + (((s_5 * n_9.x) * n_9.x) * a_11)), (s_5 * b_8), (-(s_5) * n_9.x));
+    float3 bt = float3(b_8, (s_5 + ((n_9.y * n_9.y) * a_11)), -(n_9.y));
     float r_6 = sqrt(u1_1);
     float phi_2 = (6.2831855 * u2_1);
     return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));

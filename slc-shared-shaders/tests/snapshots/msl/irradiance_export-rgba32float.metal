@@ -27,8 +27,18 @@ struct GpuLightCone {
     float cos_o;
     float phi;
     float cos_e;
-    uint pad0_;
-    uint pad1_;
+    uint bvh_leaf;
+    uint pad;
+};
+struct GpuLightBvhNode {
+    metal::packed_float3 center;
+    float radius;
+    metal::packed_float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
 };
 struct GpuGeoNode {
     metal::packed_float3 bmin;
@@ -191,6 +201,8 @@ constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant uint BSH_NONE = 4294967295u;
+constant uint LIGHT_BVH_LEAF = 4294967295u;
+constant float ONE_MINUS_EPSILON = 0.99999994;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
 
@@ -702,7 +714,7 @@ float ies_candela(
     uint _e9 = to_u32_(_e8);
     uint v0_ = base_1 + 2u;
     uint h0_ = v0_ + _e5;
-    uint c0_ = h0_ + _e9;
+    uint c0_1 = h0_ + _e9;
     float _e14 = at(tab_2, v0_, slc_table, _buffer_sizes);
     if (!((gamma < _e14))) {
         float _e22 = at(tab_2, (v0_ + _e5) - 1u, slc_table, _buffer_sizes);
@@ -727,11 +739,11 @@ float ies_candela(
     float _e51 = at(tab_2, h0_ + _e34, slc_table, _buffer_sizes);
     float _e53 = at(tab_2, h0_ + ih1_, slc_table, _buffer_sizes);
     float _e54 = ies_lerp_t(_e51, _e53, _e32);
-    float _e58 = at(tab_2, (c0_ + (_e34 * _e5)) + _e33, slc_table, _buffer_sizes);
-    float _e65 = at(tab_2, (c0_ + (_e34 * _e5)) + iv1_, slc_table, _buffer_sizes);
+    float _e58 = at(tab_2, (c0_1 + (_e34 * _e5)) + _e33, slc_table, _buffer_sizes);
+    float _e65 = at(tab_2, (c0_1 + (_e34 * _e5)) + iv1_, slc_table, _buffer_sizes);
     float a_10 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
-    float _e71 = at(tab_2, (c0_ + (ih1_ * _e5)) + _e33, slc_table, _buffer_sizes);
-    float _e78 = at(tab_2, (c0_ + (ih1_ * _e5)) + iv1_, slc_table, _buffer_sizes);
+    float _e71 = at(tab_2, (c0_1 + (ih1_ * _e5)) + _e33, slc_table, _buffer_sizes);
+    float _e78 = at(tab_2, (c0_1 + (ih1_ * _e5)) + iv1_, slc_table, _buffer_sizes);
     float b_7 = (_e71 * (1.0 - _e49)) + (_e78 * _e49);
     return (a_10 * (1.0 - _e54)) + (b_7 * _e54);
 }
@@ -936,6 +948,28 @@ float weighted_select_pdf(
     return (_e9 * w_5) / total;
 }
 
+float bvh_first_prob(
+    float c0_,
+    float c1_2
+) {
+    float s = c0_ + c1_2;
+    if (s > 0.0) {
+        return c0_ / s;
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(
+    float u_2,
+    float p0_,
+    bool first
+) {
+    if (first) {
+        return metal::min(u_2 / p0_, ONE_MINUS_EPSILON);
+    }
+    return metal::clamp((u_2 - p0_) / (1.0 - p0_), 0.0, ONE_MINUS_EPSILON);
+}
+
 float ray_aabb(
     metal::float3 o,
     metal::float3 inv_d,
@@ -1011,8 +1045,8 @@ metal::float3 shading_normal(
     metal::float3 facing
 ) {
     bool local_4 = {};
-    metal::float3 s = ((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z);
-    float l2_1 = metal::dot(s, s);
+    metal::float3 s_1 = ((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z);
+    float l2_1 = metal::dot(s_1, s_1);
     if (!(!((l2_1 > 0.000000000001)))) {
         local_4 = !((l2_1 < 300000000000000000000000000000000000000.0));
     } else {
@@ -1022,7 +1056,7 @@ metal::float3 shading_normal(
     if (_e24) {
         return facing;
     }
-    metal::float3 n_14 = s / metal::float3(metal::sqrt(l2_1));
+    metal::float3 n_14 = s_1 / metal::float3(metal::sqrt(l2_1));
     return (metal::dot(n_14, facing) < 0.0) ? -(n_14) : n_14;
 }
 
@@ -1046,10 +1080,10 @@ float ray_triangle(
         return -1.0;
     }
     float inv = 1.0 / det;
-    metal::float3 s_1 = o_1 - a_7;
-    float u_2 = metal::dot(s_1, p_3) * inv;
-    if (!((u_2 < 0.0))) {
-        local_5 = u_2 > 1.0;
+    metal::float3 s_2 = o_1 - a_7;
+    float u_3 = metal::dot(s_2, p_3) * inv;
+    if (!((u_3 < 0.0))) {
+        local_5 = u_3 > 1.0;
     } else {
         local_5 = true;
     }
@@ -1057,10 +1091,10 @@ float ray_triangle(
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q_3 = metal::cross(s_1, e1_2);
+    metal::float3 q_3 = metal::cross(s_2, e1_2);
     float v_9 = metal::dot(d, q_3) * inv;
     if (!((v_9 < 0.0))) {
-        local_6 = (u_2 + v_9) > 1.0;
+        local_6 = (u_3 + v_9) > 1.0;
     } else {
         local_6 = true;
     }
@@ -1085,11 +1119,11 @@ float mis_balance(
     float pdf_a,
     float pdf_b
 ) {
-    float s_2 = pdf_a + pdf_b;
-    if (s_2 <= 0.0) {
+    float s_3 = pdf_a + pdf_b;
+    if (s_3 <= 0.0) {
         return 0.0;
     }
-    return pdf_a / s_2;
+    return pdf_a / s_3;
 }
 
 float mis_power(
@@ -1097,11 +1131,11 @@ float mis_power(
     float pdf_b_1
 ) {
     float a2_ = pdf_a_1 * pdf_a_1;
-    float s_3 = a2_ + (pdf_b_1 * pdf_b_1);
-    if (s_3 <= 0.0) {
+    float s_4 = a2_ + (pdf_b_1 * pdf_b_1);
+    if (s_4 <= 0.0) {
         return 0.0;
     }
-    return a2_ / s_3;
+    return a2_ / s_4;
 }
 
 float light_strategy_pdf(
@@ -1150,11 +1184,11 @@ metal::float3 cosine_direction(
     float u1_1,
     float u2_1
 ) {
-    float s_4 = (n_9.z >= 0.0) ? 1.0 : -1.0;
-    float a_11 = -1.0 / (s_4 + n_9.z);
+    float s_5 = (n_9.z >= 0.0) ? 1.0 : -1.0;
+    float a_11 = -1.0 / (s_5 + n_9.z);
     float b_8 = (n_9.x * n_9.y) * a_11;
-    metal::float3 t_4 = metal::float3(1.0 + (((s_4 * n_9.x) * n_9.x) * a_11), s_4 * b_8, -(s_4) * n_9.x);
-    metal::float3 bt = metal::float3(b_8, s_4 + ((n_9.y * n_9.y) * a_11), -(n_9.y));
+    metal::float3 t_4 = metal::float3(1.0 + (((s_5 * n_9.x) * n_9.x) * a_11), s_5 * b_8, -(s_5) * n_9.x);
+    metal::float3 bt = metal::float3(b_8, s_5 + ((n_9.y * n_9.y) * a_11), -(n_9.y));
     float r_6 = metal::sqrt(u1_1);
     float phi_2 = 6.2831855 * u2_1;
     return metal::normalize(((t_4 * (r_6 * metal::cos(phi_2))) + (bt * (r_6 * metal::sin(phi_2)))) + (n_9 * metal::sqrt(metal::max(1.0 - u1_1, 0.0))));

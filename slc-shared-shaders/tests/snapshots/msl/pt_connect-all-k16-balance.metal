@@ -14,9 +14,10 @@ struct _mslBufferSizes {
     uint size6;
     uint size7;
     uint size8;
-    uint size10;
+    uint size9;
     uint size11;
     uint size12;
+    uint size13;
 };
 
 struct GpuLight {
@@ -36,8 +37,18 @@ struct GpuLightCone {
     float cos_o;
     float phi;
     float cos_e;
-    uint pad0_;
-    uint pad1_;
+    uint bvh_leaf;
+    uint pad;
+};
+struct GpuLightBvhNode {
+    metal::packed_float3 center;
+    float radius;
+    metal::packed_float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
 };
 struct GpuGeoNode {
     metal::packed_float3 bmin;
@@ -207,8 +218,13 @@ struct Connection {
 typedef GpuLight type_11[1];
 typedef metal::float4 type_12[1];
 typedef GpuLightCone type_13[1];
-typedef GpuPathVertex type_14[1];
-typedef uint type_15[1];
+typedef GpuLightBvhNode type_14[1];
+struct BvhPick {
+    uint light;
+    float pmf;
+};
+typedef GpuPathVertex type_15[1];
+typedef uint type_16[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -226,6 +242,8 @@ constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant uint BSH_NONE = 4294967295u;
+constant uint LIGHT_BVH_LEAF = 4294967295u;
+constant float ONE_MINUS_EPSILON = 0.99999994;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
 constant uint K = 16u;
@@ -738,7 +756,7 @@ float ies_candela(
     uint _e9 = to_u32_(_e8);
     uint v0_ = base_1 + 2u;
     uint h0_ = v0_ + _e5;
-    uint c0_ = h0_ + _e9;
+    uint c0_1 = h0_ + _e9;
     float _e14 = at(tab_2, v0_, slc_table, _buffer_sizes);
     if (!((gamma < _e14))) {
         float _e22 = at(tab_2, (v0_ + _e5) - 1u, slc_table, _buffer_sizes);
@@ -763,11 +781,11 @@ float ies_candela(
     float _e51 = at(tab_2, h0_ + _e34, slc_table, _buffer_sizes);
     float _e53 = at(tab_2, h0_ + ih1_, slc_table, _buffer_sizes);
     float _e54 = ies_lerp_t(_e51, _e53, _e32);
-    float _e58 = at(tab_2, (c0_ + (_e34 * _e5)) + _e33, slc_table, _buffer_sizes);
-    float _e65 = at(tab_2, (c0_ + (_e34 * _e5)) + iv1_, slc_table, _buffer_sizes);
+    float _e58 = at(tab_2, (c0_1 + (_e34 * _e5)) + _e33, slc_table, _buffer_sizes);
+    float _e65 = at(tab_2, (c0_1 + (_e34 * _e5)) + iv1_, slc_table, _buffer_sizes);
     float a_11 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
-    float _e71 = at(tab_2, (c0_ + (ih1_ * _e5)) + _e33, slc_table, _buffer_sizes);
-    float _e78 = at(tab_2, (c0_ + (ih1_ * _e5)) + iv1_, slc_table, _buffer_sizes);
+    float _e71 = at(tab_2, (c0_1 + (ih1_ * _e5)) + _e33, slc_table, _buffer_sizes);
+    float _e78 = at(tab_2, (c0_1 + (ih1_ * _e5)) + iv1_, slc_table, _buffer_sizes);
     float b_8 = (_e71 * (1.0 - _e49)) + (_e78 * _e49);
     return (a_11 * (1.0 - _e54)) + (b_8 * _e54);
 }
@@ -972,6 +990,28 @@ float weighted_select_pdf(
     return (_e9 * w_5) / total;
 }
 
+float bvh_first_prob(
+    float c0_,
+    float c1_2
+) {
+    float s_1 = c0_ + c1_2;
+    if (s_1 > 0.0) {
+        return c0_ / s_1;
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(
+    float u_2,
+    float p0_,
+    bool first
+) {
+    if (first) {
+        return metal::min(u_2 / p0_, ONE_MINUS_EPSILON);
+    }
+    return metal::clamp((u_2 - p0_) / (1.0 - p0_), 0.0, ONE_MINUS_EPSILON);
+}
+
 float ray_aabb(
     metal::float3 o,
     metal::float3 inv_d,
@@ -997,8 +1037,8 @@ metal::float3 triangle_normal(
     metal::float3 c_6
 ) {
     bool local_2 = {};
-    metal::float3 n_18 = metal::cross(b_4 - a_5, c_6 - a_5);
-    float l2_ = metal::dot(n_18, n_18);
+    metal::float3 n_22 = metal::cross(b_4 - a_5, c_6 - a_5);
+    float l2_ = metal::dot(n_22, n_22);
     if (!(!((l2_ > 0.0)))) {
         local_2 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -1008,7 +1048,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_18 / metal::float3(metal::sqrt(l2_));
+    return n_22 / metal::float3(metal::sqrt(l2_));
 }
 
 metal::float3 face_against(
@@ -1047,8 +1087,8 @@ metal::float3 shading_normal(
     metal::float3 facing
 ) {
     bool local_3 = {};
-    metal::float3 s_1 = ((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z);
-    float l2_1 = metal::dot(s_1, s_1);
+    metal::float3 s_2 = ((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z);
+    float l2_1 = metal::dot(s_2, s_2);
     if (!(!((l2_1 > 0.000000000001)))) {
         local_3 = !((l2_1 < 300000000000000000000000000000000000000.0));
     } else {
@@ -1058,8 +1098,8 @@ metal::float3 shading_normal(
     if (_e24) {
         return facing;
     }
-    metal::float3 n_19 = s_1 / metal::float3(metal::sqrt(l2_1));
-    return (metal::dot(n_19, facing) < 0.0) ? -(n_19) : n_19;
+    metal::float3 n_23 = s_2 / metal::float3(metal::sqrt(l2_1));
+    return (metal::dot(n_23, facing) < 0.0) ? -(n_23) : n_23;
 }
 
 float ray_triangle(
@@ -1082,10 +1122,10 @@ float ray_triangle(
         return -1.0;
     }
     float inv = 1.0 / det;
-    metal::float3 s_2 = o_1 - a_7;
-    float u_2 = metal::dot(s_2, p_3) * inv;
-    if (!((u_2 < 0.0))) {
-        local_4 = u_2 > 1.0;
+    metal::float3 s_3 = o_1 - a_7;
+    float u_4 = metal::dot(s_3, p_3) * inv;
+    if (!((u_4 < 0.0))) {
+        local_4 = u_4 > 1.0;
     } else {
         local_4 = true;
     }
@@ -1093,10 +1133,10 @@ float ray_triangle(
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q_3 = metal::cross(s_2, e1_2);
+    metal::float3 q_3 = metal::cross(s_3, e1_2);
     float v_10 = metal::dot(d, q_3) * inv;
     if (!((v_10 < 0.0))) {
-        local_5 = (u_2 + v_10) > 1.0;
+        local_5 = (u_4 + v_10) > 1.0;
     } else {
         local_5 = true;
     }
@@ -1121,11 +1161,11 @@ float mis_balance(
     float pdf_a,
     float pdf_b
 ) {
-    float s_3 = pdf_a + pdf_b;
-    if (s_3 <= 0.0) {
+    float s_4 = pdf_a + pdf_b;
+    if (s_4 <= 0.0) {
         return 0.0;
     }
-    return pdf_a / s_3;
+    return pdf_a / s_4;
 }
 
 float mis_power(
@@ -1133,11 +1173,11 @@ float mis_power(
     float pdf_b_1
 ) {
     float a2_ = pdf_a_1 * pdf_a_1;
-    float s_4 = a2_ + (pdf_b_1 * pdf_b_1);
-    if (s_4 <= 0.0) {
+    float s_5 = a2_ + (pdf_b_1 * pdf_b_1);
+    if (s_5 <= 0.0) {
         return 0.0;
     }
-    return a2_ / s_4;
+    return a2_ / s_5;
 }
 
 float light_strategy_pdf(
@@ -1186,11 +1226,11 @@ metal::float3 cosine_direction(
     float u1_1,
     float u2_1
 ) {
-    float s_5 = (n_9.z >= 0.0) ? 1.0 : -1.0;
-    float a_12 = -1.0 / (s_5 + n_9.z);
+    float s_6 = (n_9.z >= 0.0) ? 1.0 : -1.0;
+    float a_12 = -1.0 / (s_6 + n_9.z);
     float b_9 = (n_9.x * n_9.y) * a_12;
-    metal::float3 t_4 = metal::float3(1.0 + (((s_5 * n_9.x) * n_9.x) * a_12), s_5 * b_9, -(s_5) * n_9.x);
-    metal::float3 bt = metal::float3(b_9, s_5 + ((n_9.y * n_9.y) * a_12), -(n_9.y));
+    metal::float3 t_4 = metal::float3(1.0 + (((s_6 * n_9.x) * n_9.x) * a_12), s_6 * b_9, -(s_6) * n_9.x);
+    metal::float3 bt = metal::float3(b_9, s_6 + ((n_9.y * n_9.y) * a_12), -(n_9.y));
     float r_6 = metal::sqrt(u1_1);
     float phi_2 = 6.2831855 * u2_1;
     return metal::normalize(((t_4 * (r_6 * metal::cos(phi_2))) + (bt * (r_6 * metal::sin(phi_2)))) + (n_9 * metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
@@ -1444,12 +1484,12 @@ GeoHit trace(
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         uint _e30 = node;
-        GpuGeoNode n_20 = geo_nodes[_e30];
+        GpuGeoNode n_24 = geo_nodes[_e30];
         float _e36 = hit.t;
-        float _e37 = ray_aabb(o_2, inv_d_1, n_20.bmin, n_20.bmax, _e36);
+        float _e37 = ray_aabb(o_2, inv_d_1, n_24.bmin, n_24.bmax, _e36);
         if (_e37 >= 0.0) {
-            if (n_20.count > 0u) {
-                i_2 = n_20.first;
+            if (n_24.count > 0u) {
+                i_2 = n_24.first;
                 uint2 loop_bound_2 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1461,7 +1501,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e45 = i_2;
-                    if (_e45 < (n_20.first + n_20.count)) {
+                    if (_e45 < (n_24.first + n_24.count)) {
                     } else {
                         break;
                     }
@@ -1485,11 +1525,11 @@ GeoHit trace(
                 uint _e69 = sp;
                 if (_e69 < 64u) {
                     uint _e72 = sp;
-                    stack.inner[_e72] = n_20.first + 1u;
+                    stack.inner[_e72] = n_24.first + 1u;
                     uint _e77 = sp;
                     sp = _e77 + 1u;
                 }
-                node = n_20.first;
+                node = n_24.first;
                 continue;
             }
         }
@@ -1713,29 +1753,168 @@ float light_weight(
     return _e15;
 }
 
-float select_pdf(
-    uint li_2,
+float bvh_importance(
+    uint i_5,
     metal::float3 x_14,
     metal::float3 n_15,
+    device type_14 const& light_bvh,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLightBvhNode b_10 = light_bvh[i_5];
+    float _e12 = light_importance(b_10.center, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_14, n_15);
+    return _e12;
+}
+
+float bvh_first(
+    uint i_6,
+    metal::float3 x_15,
+    metal::float3 n_16,
+    device type_14 const& light_bvh,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    bool local_13 = {};
+    uint j = light_bvh[i_6].second;
+    if (!((j <= (i_6 + 1u)))) {
+        local_13 = j >= (1 + (_buffer_sizes.size9 - 0 - 48) / 48);
+    } else {
+        local_13 = true;
+    }
+    bool _e17 = local_13;
+    if (_e17) {
+        return -1.0;
+    }
+    float _e21 = bvh_importance(i_6 + 1u, x_15, n_16, light_bvh, _buffer_sizes);
+    float _e22 = bvh_importance(j, x_15, n_16, light_bvh, _buffer_sizes);
+    float _e23 = bvh_first_prob(_e21, _e22);
+    return _e23;
+}
+
+BvhPick light_bvh_sample(
+    metal::float3 x_16,
+    metal::float3 n_17,
+    float u_in,
+    device type_14 const& light_bvh,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float u_3 = {};
+    uint i_7 = 0u;
+    float pmf = 1.0;
+    bool local_14 = {};
+    u_3 = u_in;
+    uint2 loop_bound_5 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        uint _e9 = i_7;
+        GpuLightBvhNode node_2 = light_bvh[_e9];
+        if (node_2.second == LIGHT_BVH_LEAF) {
+            uint _e15 = i_7;
+            if (!((_e15 > 0u))) {
+                float _e22 = bvh_importance(0u, x_16, n_17, light_bvh, _buffer_sizes);
+                local_14 = _e22 > 0.0;
+            } else {
+                local_14 = true;
+            }
+            bool reaches = local_14;
+            float _e28 = pmf;
+            return BvhPick {node_2.light, reaches ? _e28 : 0.0};
+        }
+        uint _e32 = i_7;
+        float _e33 = bvh_first(_e32, x_16, n_17, light_bvh, _buffer_sizes);
+        if (_e33 < 0.0) {
+            return BvhPick {0u, 0.0};
+        }
+        float _e39 = u_3;
+        bool first_1 = _e39 < _e33;
+        float _e41 = pmf;
+        pmf = _e41 * (first_1 ? _e33 : (1.0 - _e33));
+        float _e46 = u_3;
+        float _e47 = bvh_remap_u(_e46, _e33, first_1);
+        u_3 = _e47;
+        uint _e49 = i_7;
+        i_7 = first_1 ? (_e49 + 1u) : node_2.second;
+    }
+    return BvhPick {0u, 0.0};
+}
+
+float light_bvh_pmf(
+    uint li_2,
+    metal::float3 x_17,
+    metal::float3 n_18,
+    device type_13 const& light_cones,
+    device type_14 const& light_bvh,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint i_8 = 0u;
+    float pmf_1 = 1.0;
+    bool local_15 = {};
+    bool local_16 = {};
+    uint leaf = light_cones[li_2].bvh_leaf;
+    if (leaf >= (1 + (_buffer_sizes.size9 - 0 - 48) / 48)) {
+        return 0.0;
+    }
+    uint2 loop_bound_6 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        uint _e16 = i_8;
+        GpuLightBvhNode node_3 = light_bvh[_e16];
+        if (node_3.second == LIGHT_BVH_LEAF) {
+            uint _e22 = i_8;
+            if (!((_e22 > 0u))) {
+                float _e29 = bvh_importance(0u, x_17, n_18, light_bvh, _buffer_sizes);
+                local_15 = _e29 > 0.0;
+            } else {
+                local_15 = true;
+            }
+            bool reaches_1 = local_15;
+            float _e34 = pmf_1;
+            uint _e35 = i_8;
+            if (_e35 == leaf) {
+                local_16 = reaches_1;
+            } else {
+                local_16 = false;
+            }
+            bool _e40 = local_16;
+            return _e40 ? _e34 : 0.0;
+        }
+        uint _e43 = i_8;
+        float _e44 = bvh_first(_e43, x_17, n_18, light_bvh, _buffer_sizes);
+        if (_e44 < 0.0) {
+            return 0.0;
+        }
+        bool first_2 = leaf < node_3.second;
+        float _e50 = pmf_1;
+        pmf_1 = _e50 * (first_2 ? _e44 : (1.0 - _e44));
+        uint _e56 = i_8;
+        i_8 = first_2 ? (_e56 + 1u) : node_3.second;
+    }
+    return 0.0;
+}
+
+float select_pdf(
+    uint li_3,
+    metal::float3 x_18,
+    metal::float3 n_19,
     uint nee,
     bool in_range_1
 ) {
-    bool local_13 = {};
+    bool local_17 = {};
     if (in_range_1) {
-        local_13 = nee > 0u;
+        local_17 = nee > 0u;
     } else {
-        local_13 = false;
+        local_17 = false;
     }
-    bool _e12 = local_13;
+    bool _e12 = local_17;
     uint others = nee - (_e12 ? 1u : 0u);
     float _e18 = reservoir_weight(others + 1u, K);
     return 1.0 / _e18;
 }
 
 float light_pdf(
-    uint li_3,
-    metal::float3 x_15,
-    metal::float3 n_16,
+    uint li_4,
+    metal::float3 x_19,
+    metal::float3 n_20,
     metal::float3 y_2,
     uint nee_1,
     bool in_range_2,
@@ -1743,13 +1922,13 @@ float light_pdf(
     device type_4 const& rt2_7,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight l_5 = lights[li_3];
-    metal::float3 v_12 = x_15 - y_2;
+    GpuLight l_5 = lights[li_4];
+    metal::float3 v_12 = x_19 - y_2;
     float d2_12 = metal::dot(v_12, v_12);
     metal::float3 _e11 = light_normal(l_5);
     float cos_y_1 = (d2_12 > 0.0) ? metal::dot(_e11, v_12 / metal::float3(metal::sqrt(d2_12))) : 0.0;
-    float _e20 = select_pdf(li_3, x_15, n_16, nee_1, in_range_2);
-    float _e23 = rt2_7[li_3];
+    float _e20 = select_pdf(li_4, x_19, n_20, nee_1, in_range_2);
+    float _e23 = rt2_7[li_4];
     float _e24 = light_area(l_5);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_12, _e24, cos_y_1);
     return _e25;
@@ -1762,9 +1941,9 @@ bool finite3_(
 }
 
 metal::float3 shade_pick(
-    uint li_4,
-    metal::float3 x_16,
-    metal::float3 n_17,
+    uint li_5,
+    metal::float3 x_20,
+    metal::float3 n_21,
     metal::float3 ng_1,
     float w_9,
     uint nee_2,
@@ -1780,19 +1959,19 @@ metal::float3 shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    bool local_14 = {};
+    bool local_18 = {};
     float _e10 = params.eps;
-    Connection _e11 = connect(li_4, x_16, n_17, ng_1, w_9, u1_4, u2_4, _e10, slc_table, geo_nodes, geo_tris, lights, r2_5, rt2_7, _buffer_sizes);
-    GpuLight _e16 = lights[li_4];
+    Connection _e11 = connect(li_5, x_20, n_21, ng_1, w_9, u1_4, u2_4, _e10, slc_table, geo_nodes, geo_tris, lights, r2_5, rt2_7, _buffer_sizes);
+    GpuLight _e16 = lights[li_5];
     float _e17 = light_area(_e16);
     if (_e17 > 0.0) {
-        local_14 = _e11.cos_x > 0.0;
+        local_18 = _e11.cos_x > 0.0;
     } else {
-        local_14 = false;
+        local_18 = false;
     }
-    bool _e26 = local_14;
+    bool _e26 = local_18;
     if (_e26) {
-        float _e29 = light_pdf(li_4, x_16, n_17, _e11.y, nee_2, true, lights, rt2_7, _buffer_sizes);
+        float _e29 = light_pdf(li_5, x_20, n_21, _e11.y, nee_2, true, lights, rt2_7, _buffer_sizes);
         float _e31 = cosine_pdf(_e11.cos_x);
         float _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -1813,42 +1992,42 @@ kernel void main_(
 , device type_4 const& r2_5 [[user(fake0)]]
 , device type_4 const& rt2_7 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_14 const& vertices [[user(fake0)]]
+, device type_15 const& vertices [[user(fake0)]]
 , device type_12& radiance [[user(fake0)]]
-, device type_15& candidates [[user(fake0)]]
+, device type_16& candidates [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};
     metal::float3 sum = metal::float3(0.0);
     uint s = 0u;
-    uint i_5 = gid.x;
+    uint i_9 = gid.x;
     uint _e4 = params.point_count;
-    if (i_5 >= _e4) {
+    if (i_9 >= _e4) {
         return;
     }
-    GpuPathVertex vtx = vertices[i_5];
+    GpuPathVertex vtx = vertices[i_9];
     if (vtx.alive == 0u) {
-        candidates[i_5] = 0u;
+        candidates[i_9] = 0u;
         return;
     }
-    metal::float3 x_17 = vtx.position;
-    metal::float3 n_21 = vtx.normal;
+    metal::float3 x_21 = vtx.position;
+    metal::float3 n_25 = vtx.normal;
     metal::float3 ng_2 = vtx.gnormal;
     uint _e20 = params.seed;
     uint _e23 = params.frame;
     uint _e24 = pcg_hash(_e23);
-    uint _e26 = pcg_hash(i_5 ^ _e24);
+    uint _e26 = pcg_hash(i_9 ^ _e24);
     uint _e28 = pcg_hash(_e20 ^ _e26);
     uint _e31 = pcg_hash(_e28 ^ 2654435769u);
     h = _e31;
-    Picks _e36 = bsh_collect(x_17, _e28, bsh_nodes, _buffer_sizes);
-    candidates[i_5] = _e36.n;
+    Picks _e36 = bsh_collect(x_21, _e28, bsh_nodes, _buffer_sizes);
+    candidates[i_9] = _e36.n;
     float _e42 = reservoir_weight(_e36.n, K);
-    uint2 loop_bound_5 = uint2(4294967295u);
+    uint2 loop_bound_7 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_2) {
             uint _e66 = s;
             s = _e66 + 1u;
@@ -1872,7 +2051,7 @@ kernel void main_(
             uint _e58 = s;
             uint _e61 = h;
             float _e62 = xi_from_bits(_e61);
-            metal::float3 _e63 = shade_pick(_e36.light.inner[_e58], x_17, n_21, ng_2, _e42, _e36.n, _e53, _e62, slc_table, geo_nodes, geo_tris, lights, r2_5, rt2_7, params, _buffer_sizes);
+            metal::float3 _e63 = shade_pick(_e36.light.inner[_e58], x_21, n_25, ng_2, _e42, _e36.n, _e53, _e62, slc_table, geo_nodes, geo_tris, lights, r2_5, rt2_7, params, _buffer_sizes);
             sum = _e56 + _e63;
         }
     }
@@ -1880,8 +2059,8 @@ kernel void main_(
     metal::float3 add = vtx.weight * _e69;
     bool _e71 = finite3_(add);
     if (_e71) {
-        metal::float4 _e74 = radiance[i_5];
-        radiance[i_5] = _e74 + metal::float4(add, 0.0);
+        metal::float4 _e74 = radiance[i_9];
+        radiance[i_9] = _e74 + metal::float4(add, 0.0);
         return;
     } else {
         return;

@@ -12,7 +12,7 @@ struct _mslBufferSizes {
     uint size4;
     uint size5;
     uint size6;
-    uint size8;
+    uint size7;
     uint size9;
     uint size10;
     uint size11;
@@ -20,6 +20,7 @@ struct _mslBufferSizes {
     uint size13;
     uint size14;
     uint size15;
+    uint size16;
 };
 
 struct GpuLight {
@@ -39,8 +40,18 @@ struct GpuLightCone {
     float cos_o;
     float phi;
     float cos_e;
-    uint pad0_;
-    uint pad1_;
+    uint bvh_leaf;
+    uint pad;
+};
+struct GpuLightBvhNode {
+    metal::packed_float3 center;
+    float radius;
+    metal::packed_float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
 };
 struct GpuGeoNode {
     metal::packed_float3 bmin;
@@ -196,11 +207,16 @@ struct type_8 {
 };
 typedef metal::float4 type_9[1];
 typedef GpuLightCone type_10[1];
-typedef GpuLight type_11[1];
-typedef BshNode type_12[1];
-typedef uint type_13[1];
-typedef GpuPathState type_14[1];
-typedef GpuPathVertex type_15[1];
+typedef GpuLightBvhNode type_11[1];
+struct BvhPick {
+    uint light;
+    float pmf;
+};
+typedef GpuLight type_12[1];
+typedef BshNode type_13[1];
+typedef uint type_14[1];
+typedef GpuPathState type_15[1];
+typedef GpuPathVertex type_16[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -218,6 +234,8 @@ constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant uint BSH_NONE = 4294967295u;
+constant uint LIGHT_BVH_LEAF = 4294967295u;
+constant float ONE_MINUS_EPSILON = 0.99999994;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
 constant uint K = 8u;
@@ -730,7 +748,7 @@ float ies_candela(
     uint _e9 = to_u32_(_e8);
     uint v0_ = base_1 + 2u;
     uint h0_ = v0_ + _e5;
-    uint c0_ = h0_ + _e9;
+    uint c0_1 = h0_ + _e9;
     float _e14 = at(tab_2, v0_, slc_table, _buffer_sizes);
     if (!((gamma < _e14))) {
         float _e22 = at(tab_2, (v0_ + _e5) - 1u, slc_table, _buffer_sizes);
@@ -755,11 +773,11 @@ float ies_candela(
     float _e51 = at(tab_2, h0_ + _e34, slc_table, _buffer_sizes);
     float _e53 = at(tab_2, h0_ + ih1_, slc_table, _buffer_sizes);
     float _e54 = ies_lerp_t(_e51, _e53, _e32);
-    float _e58 = at(tab_2, (c0_ + (_e34 * _e5)) + _e33, slc_table, _buffer_sizes);
-    float _e65 = at(tab_2, (c0_ + (_e34 * _e5)) + iv1_, slc_table, _buffer_sizes);
+    float _e58 = at(tab_2, (c0_1 + (_e34 * _e5)) + _e33, slc_table, _buffer_sizes);
+    float _e65 = at(tab_2, (c0_1 + (_e34 * _e5)) + iv1_, slc_table, _buffer_sizes);
     float a_11 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
-    float _e71 = at(tab_2, (c0_ + (ih1_ * _e5)) + _e33, slc_table, _buffer_sizes);
-    float _e78 = at(tab_2, (c0_ + (ih1_ * _e5)) + iv1_, slc_table, _buffer_sizes);
+    float _e71 = at(tab_2, (c0_1 + (ih1_ * _e5)) + _e33, slc_table, _buffer_sizes);
+    float _e78 = at(tab_2, (c0_1 + (ih1_ * _e5)) + iv1_, slc_table, _buffer_sizes);
     float b_8 = (_e71 * (1.0 - _e49)) + (_e78 * _e49);
     return (a_11 * (1.0 - _e54)) + (b_8 * _e54);
 }
@@ -964,6 +982,28 @@ float weighted_select_pdf(
     return (_e9 * w_6) / total;
 }
 
+float bvh_first_prob(
+    float c0_,
+    float c1_2
+) {
+    float s = c0_ + c1_2;
+    if (s > 0.0) {
+        return c0_ / s;
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(
+    float u_2,
+    float p0_,
+    bool first
+) {
+    if (first) {
+        return metal::min(u_2 / p0_, ONE_MINUS_EPSILON);
+    }
+    return metal::clamp((u_2 - p0_) / (1.0 - p0_), 0.0, ONE_MINUS_EPSILON);
+}
+
 float ray_aabb(
     metal::float3 o,
     metal::float3 inv_d,
@@ -989,8 +1029,8 @@ metal::float3 triangle_normal(
     metal::float3 c_6
 ) {
     bool local_6 = {};
-    metal::float3 n_16 = metal::cross(b_4 - a_5, c_6 - a_5);
-    float l2_ = metal::dot(n_16, n_16);
+    metal::float3 n_20 = metal::cross(b_4 - a_5, c_6 - a_5);
+    float l2_ = metal::dot(n_20, n_20);
     if (!(!((l2_ > 0.0)))) {
         local_6 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -1000,7 +1040,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_16 / metal::float3(metal::sqrt(l2_));
+    return n_20 / metal::float3(metal::sqrt(l2_));
 }
 
 metal::float3 face_against(
@@ -1039,8 +1079,8 @@ metal::float3 shading_normal(
     metal::float3 facing
 ) {
     bool local_7 = {};
-    metal::float3 s = ((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z);
-    float l2_1 = metal::dot(s, s);
+    metal::float3 s_1 = ((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z);
+    float l2_1 = metal::dot(s_1, s_1);
     if (!(!((l2_1 > 0.000000000001)))) {
         local_7 = !((l2_1 < 300000000000000000000000000000000000000.0));
     } else {
@@ -1050,8 +1090,8 @@ metal::float3 shading_normal(
     if (_e24) {
         return facing;
     }
-    metal::float3 n_17 = s / metal::float3(metal::sqrt(l2_1));
-    return (metal::dot(n_17, facing) < 0.0) ? -(n_17) : n_17;
+    metal::float3 n_21 = s_1 / metal::float3(metal::sqrt(l2_1));
+    return (metal::dot(n_21, facing) < 0.0) ? -(n_21) : n_21;
 }
 
 float ray_triangle(
@@ -1074,10 +1114,10 @@ float ray_triangle(
         return -1.0;
     }
     float inv = 1.0 / det;
-    metal::float3 s_1 = o_1 - a_7;
-    float u_2 = metal::dot(s_1, p_3) * inv;
-    if (!((u_2 < 0.0))) {
-        local_8 = u_2 > 1.0;
+    metal::float3 s_2 = o_1 - a_7;
+    float u_4 = metal::dot(s_2, p_3) * inv;
+    if (!((u_4 < 0.0))) {
+        local_8 = u_4 > 1.0;
     } else {
         local_8 = true;
     }
@@ -1085,10 +1125,10 @@ float ray_triangle(
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q_3 = metal::cross(s_1, e1_2);
+    metal::float3 q_3 = metal::cross(s_2, e1_2);
     float v_11 = metal::dot(d, q_3) * inv;
     if (!((v_11 < 0.0))) {
-        local_9 = (u_2 + v_11) > 1.0;
+        local_9 = (u_4 + v_11) > 1.0;
     } else {
         local_9 = true;
     }
@@ -1113,11 +1153,11 @@ float mis_balance(
     float pdf_a,
     float pdf_b
 ) {
-    float s_2 = pdf_a + pdf_b;
-    if (s_2 <= 0.0) {
+    float s_3 = pdf_a + pdf_b;
+    if (s_3 <= 0.0) {
         return 0.0;
     }
-    return pdf_a / s_2;
+    return pdf_a / s_3;
 }
 
 float mis_power(
@@ -1125,11 +1165,11 @@ float mis_power(
     float pdf_b_1
 ) {
     float a2_ = pdf_a_1 * pdf_a_1;
-    float s_3 = a2_ + (pdf_b_1 * pdf_b_1);
-    if (s_3 <= 0.0) {
+    float s_4 = a2_ + (pdf_b_1 * pdf_b_1);
+    if (s_4 <= 0.0) {
         return 0.0;
     }
-    return a2_ / s_3;
+    return a2_ / s_4;
 }
 
 float light_strategy_pdf(
@@ -1178,11 +1218,11 @@ metal::float3 cosine_direction(
     float u1_1,
     float u2_1
 ) {
-    float s_4 = (n_9.z >= 0.0) ? 1.0 : -1.0;
-    float a_12 = -1.0 / (s_4 + n_9.z);
+    float s_5 = (n_9.z >= 0.0) ? 1.0 : -1.0;
+    float a_12 = -1.0 / (s_5 + n_9.z);
     float b_9 = (n_9.x * n_9.y) * a_12;
-    metal::float3 t_4 = metal::float3(1.0 + (((s_4 * n_9.x) * n_9.x) * a_12), s_4 * b_9, -(s_4) * n_9.x);
-    metal::float3 bt = metal::float3(b_9, s_4 + ((n_9.y * n_9.y) * a_12), -(n_9.y));
+    metal::float3 t_4 = metal::float3(1.0 + (((s_5 * n_9.x) * n_9.x) * a_12), s_5 * b_9, -(s_5) * n_9.x);
+    metal::float3 bt = metal::float3(b_9, s_5 + ((n_9.y * n_9.y) * a_12), -(n_9.y));
     float r_6 = metal::sqrt(u1_1);
     float phi_2 = 6.2831855 * u2_1;
     return metal::normalize(((t_4 * (r_6 * metal::cos(phi_2))) + (bt * (r_6 * metal::sin(phi_2)))) + (n_9 * metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
@@ -1421,12 +1461,12 @@ GeoHit trace(
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         uint _e30 = node;
-        GpuGeoNode n_18 = geo_nodes[_e30];
+        GpuGeoNode n_22 = geo_nodes[_e30];
         float _e36 = hit.t;
-        float _e37 = ray_aabb(o_2, inv_d_1, n_18.bmin, n_18.bmax, _e36);
+        float _e37 = ray_aabb(o_2, inv_d_1, n_22.bmin, n_22.bmax, _e36);
         if (_e37 >= 0.0) {
-            if (n_18.count > 0u) {
-                i_2 = n_18.first;
+            if (n_22.count > 0u) {
+                i_2 = n_22.first;
                 uint2 loop_bound_2 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1438,7 +1478,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e45 = i_2;
-                    if (_e45 < (n_18.first + n_18.count)) {
+                    if (_e45 < (n_22.first + n_22.count)) {
                     } else {
                         break;
                     }
@@ -1462,11 +1502,11 @@ GeoHit trace(
                 uint _e69 = sp;
                 if (_e69 < 64u) {
                     uint _e72 = sp;
-                    stack.inner[_e72] = n_18.first + 1u;
+                    stack.inner[_e72] = n_22.first + 1u;
                     uint _e77 = sp;
                     sp = _e77 + 1u;
                 }
-                node = n_18.first;
+                node = n_22.first;
                 continue;
             }
         }
@@ -1523,43 +1563,182 @@ float light_weight(
     return _e15;
 }
 
-float select_pdf(
-    uint li_1,
+float bvh_importance(
+    uint i_3,
     metal::float3 x_11,
     metal::float3 n_14,
+    device type_11 const& light_bvh,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLightBvhNode b_10 = light_bvh[i_3];
+    float _e12 = light_importance(b_10.center, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_11, n_14);
+    return _e12;
+}
+
+float bvh_first(
+    uint i_4,
+    metal::float3 x_12,
+    metal::float3 n_15,
+    device type_11 const& light_bvh,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    bool local_14 = {};
+    uint j = light_bvh[i_4].second;
+    if (!((j <= (i_4 + 1u)))) {
+        local_14 = j >= (1 + (_buffer_sizes.size5 - 0 - 48) / 48);
+    } else {
+        local_14 = true;
+    }
+    bool _e17 = local_14;
+    if (_e17) {
+        return -1.0;
+    }
+    float _e21 = bvh_importance(i_4 + 1u, x_12, n_15, light_bvh, _buffer_sizes);
+    float _e22 = bvh_importance(j, x_12, n_15, light_bvh, _buffer_sizes);
+    float _e23 = bvh_first_prob(_e21, _e22);
+    return _e23;
+}
+
+BvhPick light_bvh_sample(
+    metal::float3 x_13,
+    metal::float3 n_16,
+    float u_in,
+    device type_11 const& light_bvh,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float u_3 = {};
+    uint i_5 = 0u;
+    float pmf = 1.0;
+    bool local_15 = {};
+    u_3 = u_in;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e9 = i_5;
+        GpuLightBvhNode node_1 = light_bvh[_e9];
+        if (node_1.second == LIGHT_BVH_LEAF) {
+            uint _e15 = i_5;
+            if (!((_e15 > 0u))) {
+                float _e22 = bvh_importance(0u, x_13, n_16, light_bvh, _buffer_sizes);
+                local_15 = _e22 > 0.0;
+            } else {
+                local_15 = true;
+            }
+            bool reaches = local_15;
+            float _e28 = pmf;
+            return BvhPick {node_1.light, reaches ? _e28 : 0.0};
+        }
+        uint _e32 = i_5;
+        float _e33 = bvh_first(_e32, x_13, n_16, light_bvh, _buffer_sizes);
+        if (_e33 < 0.0) {
+            return BvhPick {0u, 0.0};
+        }
+        float _e39 = u_3;
+        bool first_1 = _e39 < _e33;
+        float _e41 = pmf;
+        pmf = _e41 * (first_1 ? _e33 : (1.0 - _e33));
+        float _e46 = u_3;
+        float _e47 = bvh_remap_u(_e46, _e33, first_1);
+        u_3 = _e47;
+        uint _e49 = i_5;
+        i_5 = first_1 ? (_e49 + 1u) : node_1.second;
+    }
+    return BvhPick {0u, 0.0};
+}
+
+float light_bvh_pmf(
+    uint li_1,
+    metal::float3 x_14,
+    metal::float3 n_17,
+    device type_10 const& light_cones,
+    device type_11 const& light_bvh,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint i_6 = 0u;
+    float pmf_1 = 1.0;
+    bool local_16 = {};
+    bool local_17 = {};
+    uint leaf = light_cones[li_1].bvh_leaf;
+    if (leaf >= (1 + (_buffer_sizes.size5 - 0 - 48) / 48)) {
+        return 0.0;
+    }
+    uint2 loop_bound_4 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        uint _e16 = i_6;
+        GpuLightBvhNode node_2 = light_bvh[_e16];
+        if (node_2.second == LIGHT_BVH_LEAF) {
+            uint _e22 = i_6;
+            if (!((_e22 > 0u))) {
+                float _e29 = bvh_importance(0u, x_14, n_17, light_bvh, _buffer_sizes);
+                local_16 = _e29 > 0.0;
+            } else {
+                local_16 = true;
+            }
+            bool reaches_1 = local_16;
+            float _e34 = pmf_1;
+            uint _e35 = i_6;
+            if (_e35 == leaf) {
+                local_17 = reaches_1;
+            } else {
+                local_17 = false;
+            }
+            bool _e40 = local_17;
+            return _e40 ? _e34 : 0.0;
+        }
+        uint _e43 = i_6;
+        float _e44 = bvh_first(_e43, x_14, n_17, light_bvh, _buffer_sizes);
+        if (_e44 < 0.0) {
+            return 0.0;
+        }
+        bool first_2 = leaf < node_2.second;
+        float _e50 = pmf_1;
+        pmf_1 = _e50 * (first_2 ? _e44 : (1.0 - _e44));
+        uint _e56 = i_6;
+        i_6 = first_2 ? (_e56 + 1u) : node_2.second;
+    }
+    return 0.0;
+}
+
+float select_pdf(
+    uint li_2,
+    metal::float3 x_15,
+    metal::float3 n_18,
     uint nee,
     bool in_range_1
 ) {
-    bool local_14 = {};
+    bool local_18 = {};
     if (in_range_1) {
-        local_14 = nee > 0u;
+        local_18 = nee > 0u;
     } else {
-        local_14 = false;
+        local_18 = false;
     }
-    bool _e12 = local_14;
+    bool _e12 = local_18;
     uint others = nee - (_e12 ? 1u : 0u);
     float _e18 = reservoir_weight(others + 1u, K);
     return 1.0 / _e18;
 }
 
 float light_pdf(
-    uint li_2,
-    metal::float3 x_12,
-    metal::float3 n_15,
+    uint li_3,
+    metal::float3 x_16,
+    metal::float3 n_19,
     metal::float3 y_2,
     uint nee_1,
     bool in_range_2,
     device type_4 const& rt2_7,
-    device type_11 const& lights,
+    device type_12 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight l_4 = lights[li_2];
-    metal::float3 v_12 = x_12 - y_2;
+    GpuLight l_4 = lights[li_3];
+    metal::float3 v_12 = x_16 - y_2;
     float d2_11 = metal::dot(v_12, v_12);
     metal::float3 _e11 = light_normal(l_4);
     float cos_y_1 = (d2_11 > 0.0) ? metal::dot(_e11, v_12 / metal::float3(metal::sqrt(d2_11))) : 0.0;
-    float _e20 = select_pdf(li_2, x_12, n_15, nee_1, in_range_2);
-    float _e23 = rt2_7[li_2];
+    float _e20 = select_pdf(li_3, x_16, n_19, nee_1, in_range_2);
+    float _e23 = rt2_7[li_3];
     float _e24 = light_area(l_4);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_11, _e24, cos_y_1);
     return _e25;
@@ -1589,15 +1768,15 @@ kernel void main_(
 , device type_6 const& geo_nodes [[user(fake0)]]
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_4 const& rt2_7 [[user(fake0)]]
-, device type_11 const& lights [[user(fake0)]]
+, device type_12 const& lights [[user(fake0)]]
 , constant PtParams& params [[user(fake0)]]
-, device type_12 const& bsh_nodes [[user(fake0)]]
-, device type_13 const& light_leaf [[user(fake0)]]
+, device type_13 const& bsh_nodes [[user(fake0)]]
+, device type_14 const& light_leaf [[user(fake0)]]
 , device type_9 const& albedo_1 [[user(fake0)]]
 , device type_9 const& geo_normals [[user(fake0)]]
-, device type_13 const& candidates [[user(fake0)]]
-, device type_14& paths [[user(fake0)]]
-, device type_15& vertices [[user(fake0)]]
+, device type_14 const& candidates [[user(fake0)]]
+, device type_15& paths [[user(fake0)]]
+, device type_16& vertices [[user(fake0)]]
 , device type_9& radiance [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
@@ -1610,10 +1789,10 @@ kernel void main_(
     bool local_1 = {};
     bool local_2 = {};
     bool local_3 = {};
-    uint i_3 = gid.x;
+    uint i_7 = gid.x;
     uint _e4 = params.width;
     uint _e7 = params.height;
-    if (i_3 >= (_e4 * _e7)) {
+    if (i_7 >= (_e4 * _e7)) {
         return;
     }
     uint _e13 = params.depth;
@@ -1621,7 +1800,7 @@ kernel void main_(
         uint _e18 = params.seed;
         uint _e21 = params.pass_index;
         uint _e24 = pcg_hash(_e21 + 2654435769u);
-        uint _e26 = pcg_hash(i_3 ^ _e24);
+        uint _e26 = pcg_hash(i_7 ^ _e24);
         uint _e28 = pcg_hash(_e18 ^ _e26);
         h = _e28;
         float _e30 = next_uniform(h);
@@ -1629,9 +1808,9 @@ kernel void main_(
         float _e33 = next_uniform(h);
         float jy = _e33 - 0.5;
         uint _e38 = params.width;
-        float px_1 = (static_cast<float>(naga_mod(i_3, _e38)) + 0.5) + jx;
+        float px_1 = (static_cast<float>(naga_mod(i_7, _e38)) + 0.5) + jx;
         uint _e46 = params.width;
-        float py_1 = (static_cast<float>(naga_div(i_3, _e46)) + 0.5) + jy;
+        float py_1 = (static_cast<float>(naga_div(i_7, _e46)) + 0.5) + jy;
         metal::float3 _e55 = params.cam_pos;
         st.origin = _e55;
         metal::float3 _e59 = params.cam_forward;
@@ -1649,14 +1828,14 @@ kernel void main_(
         metal::float3 _e87 = params.cam_pos;
         st.prev = _e87;
     } else {
-        GpuPathState _e90 = paths[i_3];
+        GpuPathState _e90 = paths[i_7];
         st = _e90;
     }
     v.alive = 0u;
     uint _e95 = st.alive;
     if (_e95 == 0u) {
         GpuPathVertex _e100 = v;
-        vertices[i_3] = _e100;
+        vertices[i_7] = _e100;
         return;
     }
     metal::float3 _e102 = st.origin;
@@ -1666,23 +1845,23 @@ kernel void main_(
     if (_e110.tri == NO_LIGHT) {
         st.alive = 0u;
         GpuPathState _e118 = st;
-        paths[i_3] = _e118;
+        paths[i_7] = _e118;
         GpuPathVertex _e121 = v;
-        vertices[i_3] = _e121;
+        vertices[i_7] = _e121;
         return;
     }
     GpuTriangle tri = geo_tris[_e110.tri];
     metal::float3 _e127 = st.origin;
     metal::float3 _e129 = st.dir;
-    metal::float3 x_13 = _e127 + (_e129 * _e110.t);
+    metal::float3 x_17 = _e127 + (_e129 * _e110.t);
     metal::float3 _e136 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e138 = st.dir;
     metal::float3 _e139 = face_against(_e136, _e138);
-    uint b_10 = _e110.tri * 3u;
-    metal::float4 _e145 = geo_normals[b_10];
-    metal::float4 _e151 = geo_normals[b_10 + 1u];
-    metal::float4 _e157 = geo_normals[b_10 + 2u];
-    metal::float3 _e162 = barycentric(x_13, tri.v0_, tri.v1_, tri.v2_);
+    uint b_11 = _e110.tri * 3u;
+    metal::float4 _e145 = geo_normals[b_11];
+    metal::float4 _e151 = geo_normals[b_11 + 1u];
+    metal::float4 _e157 = geo_normals[b_11 + 2u];
+    metal::float3 _e162 = barycentric(x_17, tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e163 = shading_normal(_e145.xyz, _e151.xyz, _e157.xyz, _e162, _e139);
     if (tri.light != NO_LIGHT) {
         metal::float3 _e170 = st.dir;
@@ -1695,14 +1874,14 @@ kernel void main_(
         float _e179 = st.pdf_bsdf;
         if (_e179 > 0.0) {
             uint _e186 = light_leaf[tri.light];
-            BshNode leaf = bsh_nodes[_e186];
+            BshNode leaf_1 = bsh_nodes[_e186];
             metal::float3 _e192 = st.prev;
-            bool _e193 = sphere_contains_point(leaf.center, leaf.radius, _e192);
+            bool _e193 = sphere_contains_point(leaf_1.center, leaf_1.radius, _e192);
             float _e195 = st.pdf_bsdf;
             metal::float3 _e198 = st.prev;
             metal::float3 _e200 = st.prev_normal;
-            uint _e203 = candidates[i_3];
-            float _e204 = light_pdf(tri.light, _e198, _e200, x_13, _e203, _e193, rt2_7, lights, _buffer_sizes);
+            uint _e203 = candidates[i_7];
+            float _e204 = light_pdf(tri.light, _e198, _e200, x_17, _e203, _e193, rt2_7, lights, _buffer_sizes);
             float _e205 = mis_weight(_e195, _e204);
             w = _e205;
         }
@@ -1712,13 +1891,13 @@ kernel void main_(
         metal::float3 add = (_e207 * _e212) * _e214;
         bool _e216 = finite3_(add);
         if (_e216) {
-            metal::float4 _e219 = radiance[i_3];
-            radiance[i_3] = _e219 + metal::float4(add, 0.0);
+            metal::float4 _e219 = radiance[i_7];
+            radiance[i_7] = _e219 + metal::float4(add, 0.0);
         }
     }
     metal::float4 _e226 = albedo_1[tri.material];
     metal::float3 rho_1 = _e226.xyz;
-    v.position = x_13;
+    v.position = x_17;
     v.normal = _e163;
     v.gnormal = _e139;
     metal::float3 _e233 = st.beta;
@@ -1726,7 +1905,7 @@ kernel void main_(
     v.weight = _e233 * _e234;
     v.alive = 1u;
     GpuPathVertex _e240 = v;
-    vertices[i_3] = _e240;
+    vertices[i_7] = _e240;
     uint _e242 = st.rng;
     rng = _e242;
     float _e244 = next_uniform(rng);
@@ -1735,12 +1914,12 @@ kernel void main_(
     float cos_o_2 = metal::dot(_e246, _e163);
     metal::float3 _e249 = st.beta;
     st.beta = _e249 * rho_1;
-    st.prev = x_13;
+    st.prev = x_17;
     st.prev_normal = _e163;
     float _e254 = cosine_pdf(cos_o_2);
     st.pdf_bsdf = _e254;
     float _e258 = params.eps;
-    st.origin = x_13 + (_e139 * _e258);
+    st.origin = x_17 + (_e139 * _e258);
     st.dir = _e246;
     if (!((cos_o_2 <= 0.0))) {
         local_1 = metal::dot(_e246, _e139) <= 0.0;
@@ -1781,6 +1960,6 @@ kernel void main_(
     uint _e313 = rng;
     st.rng = _e313;
     GpuPathState _e316 = st;
-    paths[i_3] = _e316;
+    paths[i_7] = _e316;
     return;
 }

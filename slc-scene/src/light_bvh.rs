@@ -1,22 +1,22 @@
-//! The `lightbvh` baseline: light-BVH importance sampling in the style of
-//! Conty Estevez & Kulla, "Importance Sampling of Many Lights with Adaptive
-//! Tree Splitting" (HPG 2018), as pbrt-v4's `BVHLightSampler` implements it
-//! (Pharr, Jakob & Humphreys, *PBR* 4th ed., §12.6.3) — the peer a user would
-//! pick instead of stochastic light culling.
+//! The light BVH of the `lightbvh` baseline (Conty Estevez & Kulla,
+//! "Importance Sampling of Many Lights with Adaptive Tree Splitting", HPG
+//! 2018; pbrt-v4's `BVHLightSampler`, Pharr, Jakob & Humphreys, *PBR* 4th
+//! ed., §12.6.3), the peer a user would pick instead of stochastic light
+//! culling: built here, sampled on both backends by slc-core's
+//! [`light_bvh`](slc_core::light_bvh) (the GPU reads the same nodes).
 //!
-//! Every node holds a [`LightBounds`]: an AABB, the power `φ`, and an
-//! orientation cone `(w, θ_o)` of emitter normals plus the emission spread
-//! `θ_e`. A sample walks from the root, choosing a child with probability
-//! proportional to its [`LightBounds::importance`] at the shading point
-//! (`φ · cos θ' / d²`, times the receiver's `cos θ'_i`), so one light is
-//! picked with pmf = the product of the choices. The pmf of a given light
-//! ([`LightBvh::pmf`], for MIS at BSDF-sampled hits) retraces its path from
-//! its leaf upwards. Built top-down by the surface-area-orientation
-//! heuristic over 12 buckets per axis, one light per leaf.
+//! Every node bounds its lights by a [`LightBounds`]: an AABB, the power
+//! `φ`, and an orientation cone `(w, θ_o)` of emitter normals plus the
+//! emission spread `θ_e`. A node's [`LightBvhNode`] holds them as the
+//! [`LightCone`] that slc-core's importance reads: the AABB's bounding
+//! sphere for interior nodes, the light's own (tighter) cone for leaves.
+//! Built top-down by the surface-area-orientation heuristic over 12 buckets
+//! per axis, one light per leaf, in preorder.
 
 use glam::Vec3;
 use slc_core::importance::{LightCone, light_importance, safe_sqrt};
 use slc_core::light::Light;
+use slc_core::light_bvh::{LIGHT_BVH_LEAF, LightBvhNode, light_bvh_pmf, light_bvh_sample};
 use std::f32::consts::PI;
 
 /// Bounds of a set of lights (pbrt-v4 `LightBounds`).
@@ -37,18 +37,18 @@ pub struct LightBounds {
 }
 
 impl LightBounds {
-    /// Bounds of one light of emitted power `power` ([`Light::power`], the
-    /// formula power sampling uses too): a triangle's AABB and normal
-    /// (`θ_o = 0`, `θ_e = π/2`); a point or IES light emits over the whole
-    /// sphere (`θ_o = π`); a spot light around its axis (`θ_o = θ_inner`,
+    /// Bounds of one light whose importance cone is `c`
+    /// ([`LightCone::of_light`] of its [`Light::power`], the formula power
+    /// sampling uses too): a triangle's AABB and normal (`θ_o = 0`,
+    /// `θ_e = π/2`); a point or IES light emits over the whole sphere
+    /// (`θ_o = π`); a spot light around its axis (`θ_o = θ_inner`,
     /// `θ_e = θ_outer − θ_inner`), as pbrt-v4. `φ` is the max channel of
-    /// `power`. pbrt-v4 gives spot and goniometric lights `φ = 4π I_max`
+    /// the power. pbrt-v4 gives spot and goniometric lights `φ = 4π I_max`
     /// (the power of a point light of the peak intensity) instead; slc uses
     /// their true emitted power so that the two baselines weigh every light
     /// alike, at the price of under-weighting a narrow spot or a peaked IES
     /// light inside its beam, relative to pbrt.
-    pub fn of_light(l: &Light, power: Vec3) -> LightBounds {
-        let c = LightCone::of_light(l, power);
+    pub fn of_light(l: &Light, c: &LightCone) -> LightBounds {
         let (min, max) = match l {
             Light::Triangle(t) => {
                 let [a, b, c] = t.vertices();
@@ -61,6 +61,19 @@ impl LightBounds {
 
     fn centroid(&self) -> Vec3 {
         0.5 * (self.min + self.max)
+    }
+
+    /// The bounds as [`light_importance`] reads them: the box's bounding
+    /// sphere with the power and cones.
+    pub fn cone(&self) -> LightCone {
+        LightCone {
+            center: self.centroid(),
+            radius: 0.5 * (self.max - self.min).length(),
+            phi: self.phi,
+            axis: self.w,
+            cos_o: self.cos_o,
+            cos_e: self.cos_e,
+        }
     }
 
     /// Union: AABB union, summed power, the smallest cone around both
@@ -85,7 +98,8 @@ impl LightBounds {
     /// pbrt-v4 takes `|cos θ_i|` for transmissive surfaces: slc's surfaces
     /// only reflect, so the baseline gets that advantage too.
     pub fn importance(&self, p: Vec3, n: Vec3) -> f32 {
-        light_importance(self.centroid(), 0.5 * (self.max - self.min).length(), self.phi, self.w, self.cos_o, self.cos_e, p, n)
+        let c = self.cone();
+        light_importance(c.center, c.radius, c.phi, c.axis, c.cos_o, c.cos_e, p, n)
     }
 
     /// pbrt-v4's `EvaluateCost`: `φ · M_Ω · K_r · area`, with the
@@ -128,115 +142,76 @@ fn cone_union(a: Vec3, cos_a: f32, b: Vec3, cos_b: f32) -> (Vec3, f32) {
     (w.normalize(), theta_o.cos())
 }
 
-#[derive(Clone, Copy, Debug)]
-struct Node {
-    bounds: LightBounds,
-    /// Leaf: the light; interior: the second child (the first is next).
-    child_or_light: u32,
-    leaf: bool,
-}
-
-/// A binary BVH over lights, one light per leaf, in preorder.
+/// A binary BVH over lights, one light per leaf, in preorder
+/// ([`slc_core::light_bvh`] samples it).
 #[derive(Clone, Debug)]
 pub struct LightBvh {
-    nodes: Vec<Node>,
-    parent: Vec<u32>,
+    nodes: Vec<LightBvhNode>,
     leaf_of_light: Vec<u32>,
 }
 
 const BUCKETS: usize = 12;
 
 impl LightBvh {
-    /// Builds the tree over `lights` (at least one) top-down by the
+    /// Builds the tree over `lights` with their importance `cones`
+    /// ([`crate::lights::LightSet::cones`]) top-down by the
     /// surface-area-orientation heuristic; an explicit stack keeps deep
     /// trees off the call stack. Lights of zero power are left out (they
-    /// are never sampled and their pmf is 0). `power` holds each light's
-    /// emitted power ([`slc_scene::lights::LightSet::power`]).
-    pub fn new(lights: &[Light], power: &[Vec3]) -> LightBvh {
+    /// are never sampled and their pmf is 0); with none left the tree is
+    /// empty.
+    pub fn new(lights: &[Light], cones: &[LightCone]) -> LightBvh {
         let mut items: Vec<(u32, LightBounds)> =
-            lights.iter().zip(power).enumerate().map(|(i, (l, &p))| (i as u32, LightBounds::of_light(l, p))).filter(|(_, b)| b.phi > 0.0).collect();
-        let mut nodes: Vec<Node> = Vec::with_capacity(2 * items.len());
-        let mut parent: Vec<u32> = Vec::with_capacity(2 * items.len());
-        let mut leaf_of_light = vec![u32::MAX; lights.len()];
+            lights.iter().zip(cones).enumerate().map(|(i, (l, c))| (i as u32, LightBounds::of_light(l, c))).filter(|(_, b)| b.phi > 0.0).collect();
+        let mut nodes: Vec<LightBvhNode> = Vec::with_capacity(2 * items.len());
+        let mut leaf_of_light = vec![LIGHT_BVH_LEAF; lights.len()];
         // (start, end, parent node, whether this is the parent's second child)
-        let mut stack = vec![(0usize, items.len(), u32::MAX, false)];
+        let mut stack = vec![(0usize, items.len(), usize::MAX, false)];
         while let Some((start, end, par, second)) = stack.pop() {
             if start == end {
                 continue;
             }
             let me = nodes.len() as u32;
             if second {
-                nodes[par as usize].child_or_light = me;
+                nodes[par].second = me;
             }
-            parent.push(par);
             let set = &mut items[start..end];
             let bounds = set.iter().skip(1).fold(set[0].1, |acc, (_, b)| acc.union(b));
             if set.len() == 1 {
-                leaf_of_light[set[0].0 as usize] = me;
-                nodes.push(Node { bounds, child_or_light: set[0].0, leaf: true });
+                let light = set[0].0;
+                leaf_of_light[light as usize] = me;
+                nodes.push(LightBvhNode { cone: cones[light as usize], second: LIGHT_BVH_LEAF, light });
                 continue;
             }
             let mid = start + split(set, &bounds);
-            nodes.push(Node { bounds, child_or_light: u32::MAX, leaf: false });
+            nodes.push(LightBvhNode { cone: bounds.cone(), second: LIGHT_BVH_LEAF, light: LIGHT_BVH_LEAF });
             // Second child pushed first, so the first child is next in preorder.
-            stack.push((mid, end, me, true));
-            stack.push((start, mid, me, false));
+            stack.push((mid, end, me as usize, true));
+            stack.push((start, mid, me as usize, false));
         }
-        LightBvh { nodes, parent, leaf_of_light }
+        LightBvh { nodes, leaf_of_light }
     }
 
-    /// Child importances `(first, second)` of interior node `i` at `(p, n)`.
-    fn child_importance(&self, i: usize, p: Vec3, n: Vec3) -> (f32, f32) {
-        let node = &self.nodes[i];
-        (self.nodes[i + 1].bounds.importance(p, n), self.nodes[node.child_or_light as usize].bounds.importance(p, n))
+    /// The nodes, in preorder (empty when no light has power).
+    pub fn nodes(&self) -> &[LightBvhNode] {
+        &self.nodes
+    }
+
+    /// Each light's leaf ([`LIGHT_BVH_LEAF`] for a light left out).
+    pub fn leaf_of_light(&self) -> &[u32] {
+        &self.leaf_of_light
     }
 
     /// Samples one light for shading point `p` with normal `n` and uniform
     /// `u ∈ [0, 1)`: `(light, pmf)`, or `None` where every light has zero
-    /// importance.
-    pub fn sample(&self, p: Vec3, n: Vec3, mut u: f32) -> Option<(usize, f32)> {
-        let mut i = 0usize;
-        let mut pmf = 1.0f32;
-        loop {
-            let node = self.nodes.get(i)?;
-            if node.leaf {
-                return (i > 0 || node.bounds.importance(p, n) > 0.0).then_some((node.child_or_light as usize, pmf));
-            }
-            let (c0, c1) = self.child_importance(i, p, n);
-            if !(c0 + c1 > 0.0) {
-                return None;
-            }
-            let p0 = c0 / (c0 + c1);
-            if u < p0 {
-                pmf *= p0;
-                u = (u / p0).min(1.0 - f32::EPSILON / 2.0);
-                i += 1;
-            } else {
-                pmf *= 1.0 - p0;
-                u = ((u - p0) / (1.0 - p0)).clamp(0.0, 1.0 - f32::EPSILON / 2.0);
-                i = node.child_or_light as usize;
-            }
-        }
+    /// importance ([`light_bvh_sample`]).
+    pub fn sample(&self, p: Vec3, n: Vec3, u: f32) -> Option<(usize, f32)> {
+        light_bvh_sample(&self.nodes, p, n, u).map(|(l, pmf)| (l as usize, pmf))
     }
 
-    /// Probability that [`LightBvh::sample`] at `(p, n)` picks `light`.
+    /// Probability that [`LightBvh::sample`] at `(p, n)` picks `light`
+    /// ([`light_bvh_pmf`]).
     pub fn pmf(&self, p: Vec3, n: Vec3, light: usize) -> f32 {
-        let Some(&leaf) = self.leaf_of_light.get(light) else { return 0.0 };
-        if leaf == u32::MAX {
-            return 0.0;
-        }
-        let mut pmf = 1.0f32;
-        let mut i = leaf as usize;
-        while i != 0 {
-            let par = self.parent[i] as usize;
-            let (c0, c1) = self.child_importance(par, p, n);
-            if !(c0 + c1 > 0.0) {
-                return 0.0;
-            }
-            pmf *= if i == par + 1 { c0 } else { c1 } / (c0 + c1);
-            i = par;
-        }
-        pmf
+        self.leaf_of_light.get(light).map_or(0.0, |&leaf| light_bvh_pmf(&self.nodes, leaf, p, n))
     }
 }
 
@@ -285,6 +260,10 @@ mod tests {
     use super::*;
     use slc_core::light::{PointLight, SpotLight, TriangleLight};
 
+    fn cones(ls: &[Light]) -> Vec<LightCone> {
+        ls.iter().map(|l| LightCone::of_light(l, l.power())).collect()
+    }
+
     fn lights() -> Vec<Light> {
         let mut v = Vec::new();
         let mut s = 12345u32;
@@ -312,7 +291,7 @@ mod tests {
     #[test]
     fn pmf_matches_sampling_and_covers_every_contributing_light() {
         let ls = lights();
-        let bvh = LightBvh::new(&ls, &slc_core::light::emitted_powers(&ls));
+        let bvh = LightBvh::new(&ls, &cones(&ls));
         for (p, n) in [
             (Vec3::splat(2.0), Vec3::Y),
             (Vec3::new(-1.0, 0.5, 3.0), Vec3::X),
@@ -355,7 +334,7 @@ mod tests {
             let l = Light::Triangle(
                 TriangleLight::new(Vec3::new(0.0, 0.0, z), Vec3::new(0.0, 0.0, z) + b * 0.1, Vec3::new(0.0, 0.0, z) + c * 0.1, Vec3::ONE).unwrap(),
             );
-            LightBounds::of_light(&l, l.power())
+            LightBounds::of_light(&l, &LightCone::of_light(&l, l.power()))
         };
         let p = Vec3::new(0.05, 0.05, 5.0);
         assert!(t(1.0, true).importance(p, Vec3::NEG_Z) < t(4.0, true).importance(p, Vec3::NEG_Z));
@@ -375,7 +354,7 @@ mod tests {
     fn degenerate_sets_build_balanced_trees() {
         // 4,096 coincident point lights: no axis splits, so halves.
         let ls: Vec<Light> = (0..4096).map(|_| Light::Point(PointLight::new(Vec3::ONE, Vec3::ONE).unwrap())).collect();
-        let bvh = LightBvh::new(&ls, &slc_core::light::emitted_powers(&ls));
+        let bvh = LightBvh::new(&ls, &cones(&ls));
         let total: f32 = (0..ls.len()).map(|l| bvh.pmf(Vec3::ZERO, Vec3::ZERO, l)).sum();
         assert!((total - 1.0).abs() < 1e-3);
         assert!((bvh.pmf(Vec3::ZERO, Vec3::ZERO, 7) - 1.0 / 4096.0).abs() < 1e-7);

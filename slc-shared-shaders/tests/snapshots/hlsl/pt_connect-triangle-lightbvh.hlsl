@@ -1,0 +1,1789 @@
+struct GpuLight {
+    float3 p0_;
+    uint kind;
+    float3 p1_;
+    float a;
+    float3 p2_;
+    float b;
+    float3 intensity;
+    uint ies_base;
+};
+
+struct GpuLightCone {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
+
+struct GpuLightBvhNode {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
+};
+
+struct GpuGeoNode {
+    float3 bmin;
+    uint first;
+    float3 bmax;
+    uint count;
+};
+
+struct GpuTriangle {
+    float3 v0_;
+    uint material;
+    float3 v1_;
+    uint light;
+    float3 v2_;
+    uint pad;
+};
+
+struct GpuPathVertex {
+    float3 position;
+    uint alive;
+    float3 normal;
+    float pad;
+    float3 weight;
+    float pad1_;
+    float3 gnormal;
+    float pad2_;
+};
+
+struct GpuPathState {
+    float3 origin;
+    uint alive;
+    float3 dir;
+    uint rng;
+    float3 beta;
+    float pdf_bsdf;
+    float3 prev;
+    uint pad;
+    float3 prev_normal;
+    uint pad2_;
+};
+
+struct PtParams {
+    float3 cam_pos;
+    uint width;
+    float3 cam_right;
+    uint height;
+    float3 cam_up;
+    uint depth;
+    float3 cam_forward;
+    uint seed;
+    uint pass_index;
+    uint max_depth;
+    float eps;
+    float t_min;
+};
+
+struct FrameParams {
+    uint light_count;
+    uint seed;
+    uint frame;
+    uint pad;
+};
+
+struct RefitParams {
+    uint first;
+    uint count;
+    uint pad0_;
+    uint pad1_;
+};
+
+struct VplParams {
+    uint width;
+    uint height;
+    uint lights_per_subset;
+    float min_d2_;
+};
+
+struct GpuVplRecord {
+    float3 position;
+    float pad0_;
+    float3 normal;
+    float pad1_;
+    float3 flux;
+    float pad2_;
+};
+
+struct PackParams {
+    uint count;
+    uint size;
+    uint per_subset;
+    uint mode;
+    float exposure;
+    float error_bound;
+    float scale;
+    uint slc;
+    float fixed_r2_;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+
+struct ImageParams {
+    float3 eye;
+    uint width;
+    uint height;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+
+struct GpuVertex {
+    float3 position;
+    uint material;
+    float3 normal;
+    uint pad0_;
+    float3 geo_normal;
+    uint pad1_;
+};
+
+struct GpuMaterial {
+    float3 albedo;
+    uint pad0_;
+    float3 emission;
+    uint pad1_;
+};
+
+struct MapParams {
+    float4 c0_;
+    float4 c1_;
+    float4 c2_;
+    float4 c3_;
+    GpuLight light;
+    float3 origin;
+    uint mode;
+    float3 axis;
+    uint size;
+    float3 right;
+    float extent;
+    float3 up;
+    float texel;
+};
+
+struct ShadeParams {
+    uint point_count;
+    uint seed;
+    uint frame;
+    float eps;
+};
+
+struct BshNode {
+    float3 center_;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    uint pad;
+};
+
+struct GeoHit {
+    float t;
+    uint tri;
+};
+
+struct Picks {
+    uint light[8];
+    uint n;
+};
+
+struct Connection {
+    float3 e;
+    int _pad1_0;
+    float3 y;
+    float cos_x;
+};
+
+struct BvhPick {
+    uint light;
+    float pmf;
+};
+
+static const uint LIGHT_POINT = 0u;
+static const uint LIGHT_SPOT = 1u;
+static const uint LIGHT_IES = 2u;
+static const uint LIGHT_TRIANGLE = 3u;
+static const uint LIGHT_VPL = 4u;
+static const uint NO_LIGHT = 4294967295u;
+static const uint MAP_CAMERA = 0u;
+static const uint MAP_PERSPECTIVE = 1u;
+static const uint MAP_ORTHOGRAPHIC = 2u;
+static const float XI_STEP = 5.9604645e-8;
+static const float TWO_PI = 6.2831855;
+static const float CULL_RADIUS_SCALE = 1.000001;
+static const float SPHERE_PAD = 4.7683716e-7;
+static const float SPHERE_HUGE = 3.4028235e38;
+static const float INV_PI = 0.31830987;
+static const float MIN_D2_ = 1e-12;
+static const uint BSH_NONE = 4294967295u;
+static const uint LIGHT_BVH_LEAF = 4294967295u;
+static const float ONE_MINUS_EPSILON = 0.99999994;
+static const float DEPTH_SIGMA = 0.05;
+static const float COVER_WEIGHT = 0.1;
+static const uint K = 8u;
+
+ByteAddressBuffer slc_table : register(t0, space1);
+ByteAddressBuffer geo_nodes : register(t6);
+ByteAddressBuffer geo_tris : register(t7);
+ByteAddressBuffer bsh_nodes : register(t5);
+ByteAddressBuffer lights : register(t2);
+ByteAddressBuffer r2_5 : register(t4);
+ByteAddressBuffer rt2_7 : register(t3);
+ByteAddressBuffer power_table : register(t1, space1);
+ByteAddressBuffer light_cones : register(t2, space1);
+ByteAddressBuffer light_bvh : register(t3, space1);
+cbuffer params : register(b0) { ShadeParams params; }
+ByteAddressBuffer vertices_ : register(t1);
+RWByteAddressBuffer radiance : register(u8);
+RWByteAddressBuffer candidates : register(u9);
+
+float at(uint tab, uint i)
+{
+    float _e4 = asfloat(slc_table.Load(i*4));
+    return _e4;
+}
+
+float to_f32_(uint u)
+{
+    return float(u);
+}
+
+uint naga_f2u32(float value) {
+    return uint(clamp(value, 0.0, 4294967000.0));
+}
+
+uint to_u32_(float x)
+{
+    return naga_f2u32(x);
+}
+
+uint mul_lo_u32_(uint a, uint b)
+{
+    return (a * b);
+}
+
+uint add_wrap_u32_(uint a_1, uint b_1)
+{
+    return (a_1 + b_1);
+}
+
+float xi_from_bits(uint bits)
+{
+    const float _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+uint pcg_hash(uint x_1)
+{
+    const uint _e2 = mul_lo_u32_(x_1, 747796405u);
+    const uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    const uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+uint reverse_bits(uint x_2)
+{
+    uint v = (uint)0;
+
+    v = (((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u));
+    uint _e11 = v;
+    uint _e16 = v;
+    v = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
+    uint _e22 = v;
+    uint _e27 = v;
+    v = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
+    uint _e33 = v;
+    uint _e38 = v;
+    v = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
+    uint _e44 = v;
+    uint _e49 = v;
+    v = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
+    uint _e55 = v;
+    return _e55;
+}
+
+float xi_for(uint seed, uint frame, uint light)
+{
+    const uint _e3 = pcg_hash(seed);
+    const uint _e4 = pcg_hash(_e3);
+    const uint _e6 = pcg_hash((_e4 ^ light));
+    const uint _e7 = reverse_bits(frame);
+    const uint _e8 = add_wrap_u32_(_e6, _e7);
+    const float _e9 = xi_from_bits(_e8);
+    return _e9;
+}
+
+float rr_probability(float rt2_, float d2_)
+{
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (rt2_ / d2_);
+}
+
+float slc_weight(float rt2_1, float d2_1)
+{
+    if ((d2_1 <= rt2_1)) {
+        return 1.0;
+    }
+    return (d2_1 / rt2_1);
+}
+
+float random_range2_(float rt2_2, float xi)
+{
+    return (rt2_2 / (1.0 - xi));
+}
+
+bool slc_keep(float r2_, float d2_2)
+{
+    return (d2_2 < r2_);
+}
+
+float threshold_range2_(float intensity, float exposure, float error_bound)
+{
+    if ((intensity <= 0.0)) {
+        return 0.0;
+    }
+    return (((exposure / error_bound) * intensity) / TWO_PI);
+}
+
+float intensity_measure(float3 rgb, uint mode)
+{
+    if ((mode == 1u)) {
+        return (((rgb.x + rgb.y) + rgb.z) / 3.0);
+    }
+    return max(rgb.x, max(rgb.y, rgb.z));
+}
+
+float cull_radius(float r2_1)
+{
+    return (sqrt(r2_1) * CULL_RADIUS_SCALE);
+}
+
+float windowed_falloff(float d2_3, float range2_)
+{
+    float q = (d2_3 / range2_);
+    float w_10 = saturate((1.0 - (q * q)));
+    return ((w_10 * w_10) / max(d2_3, 0.0001));
+}
+
+bool sphere_contains_point(float3 c, float r, float3 x_3)
+{
+    float3 v_4 = (x_3 - c);
+    return (dot(v_4, v_4) <= (r * r));
+}
+
+bool sphere_overlaps_sphere(float3 c1_, float r1_, float3 c2_, float r2_2)
+{
+    float3 v_5 = (c2_ - c1_);
+    float r_3 = (r1_ + r2_2);
+    return (dot(v_5, v_5) <= (r_3 * r_3));
+}
+
+float sphere_pad(float r_1, float3 c_1)
+{
+    return ((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD);
+}
+
+float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
+{
+    bool local = (bool)0;
+
+    float3 v_6 = (c2_1 - c1_1);
+    float d_3 = sqrt(dot(v_6, v_6));
+    const float _e8 = sphere_pad(r1_1, c1_1);
+    if ((r1_1 >= ((d_3 + r2_3) + _e8))) {
+        return float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
+    }
+    const float _e16 = sphere_pad(r2_3, c2_1);
+    if ((r2_3 >= ((d_3 + r1_1) + _e16))) {
+        return float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
+    }
+    if (!((d_3 >= SPHERE_HUGE))) {
+        local = ((0.5 * ((d_3 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    } else {
+        local = true;
+    }
+    bool _e35 = local;
+    if (_e35) {
+        return float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
+    }
+    if ((abs((r1_1 - r2_3)) >= d_3)) {
+        if ((r1_1 >= r2_3)) {
+            float rn = max(r1_1, (d_3 + r2_3));
+            const float _e50 = sphere_pad(rn, c1_1);
+            return float4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
+        }
+        float rm = max(r2_3, (d_3 + r1_1));
+        const float _e58 = sphere_pad(rm, c2_1);
+        return float4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
+    }
+    float r0_ = (0.5 * ((d_3 + r1_1) + r2_3));
+    float3 c_10 = (c1_1 + (v_6 * ((r0_ - r1_1) / d_3)));
+    float3 e1_ = (c_10 - c1_1);
+    float3 e2_ = (c_10 - c2_1);
+    float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
+    const float _e82 = sphere_pad(r_4, c_10);
+    return float4(c_10.x, c_10.y, c_10.z, (r_4 + _e82));
+}
+
+bool sphere_overlaps_aabb(float3 c_2, float r_2, float3 bmin, float3 bmax)
+{
+    float3 q_1 = clamp(c_2, bmin, bmax);
+    float3 v_7 = (q_1 - c_2);
+    return (dot(v_7, v_7) <= (r_2 * r_2));
+}
+
+float vpl_rt2_(float3 flux, float exposure_1, float error_bound_1, uint mode_1)
+{
+    const float _e6 = intensity_measure((flux * INV_PI), mode_1);
+    const float _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
+    return _e7;
+}
+
+float range_radius(float extent, float r2_4)
+{
+    return (extent + sqrt(r2_4));
+}
+
+float inverse_square(float d2_4)
+{
+    return (1.0 / max(d2_4, MIN_D2_));
+}
+
+float connection_factor(float cos_x, float d2_5, float rt2_3, float w)
+{
+    const float _e4 = inverse_square(d2_5);
+    const float _e6 = slc_weight(rt2_3, d2_5);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+float vpl_lobe(float3 n, float3 w_1)
+{
+    return (max(dot(n, w_1), 0.0) * INV_PI);
+}
+
+float vpl_transfer(float3 n_l, float3 n_x, float3 v_1, float min_d2_)
+{
+    float m = max(dot(v_1, v_1), min_d2_);
+    return (((max(dot(n_l, v_1), 0.0) * max(-(dot(n_x, v_1)), 0.0)) * INV_PI) / (m * m));
+}
+
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
+{
+    if ((cos_inner <= cos_outer)) {
+        return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
+    }
+    float t_2 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
+}
+
+float triangle_lobe(float3 n_1, float area, float3 w_2)
+{
+    return (area * max(dot(n_1, w_2), 0.0));
+}
+
+float3 triangle_sample(float3 a_2, float3 b_2, float3 c_3, float u1_, float u2_)
+{
+    float su = sqrt(u1_);
+    float b0_ = (1.0 - su);
+    float b1_ = (u2_ * su);
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_3 * ((1.0 - b0_) - b1_)));
+}
+
+float area_to_solid_angle_pdf(float pdf_area, float d2_6, float cos_light)
+{
+    float c_11 = abs(cos_light);
+    if ((c_11 <= 0.0)) {
+        return 0.0;
+    }
+    return ((pdf_area * d2_6) / c_11);
+}
+
+float atan_portable(float x_4)
+{
+    float base = 0.0;
+    float t = (float)0;
+
+    float a_10 = abs(x_4);
+    t = a_10;
+    if ((a_10 > 2.4142137)) {
+        base = 1.5707964;
+        t = (-1.0 / a_10);
+    } else {
+        if ((a_10 > 0.41421357)) {
+            base = 0.7853982;
+            t = ((a_10 - 1.0) / (a_10 + 1.0));
+        }
+    }
+    float _e18 = t;
+    float _e19 = t;
+    float z_1 = (_e18 * _e19);
+    float _e21 = base;
+    float _e33 = t;
+    float _e35 = t;
+    float r_5 = (_e21 + (((((((((0.080537446 * z_1) - 0.13877685) * z_1) + 0.19977711) * z_1) - 0.3333295) * z_1) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_5) : r_5);
+}
+
+float atan2_portable(float y, float x_5)
+{
+    if ((x_5 == 0.0)) {
+        if ((y > 0.0)) {
+            return 1.5707964;
+        }
+        if ((y < 0.0)) {
+            return -1.5707964;
+        }
+        return 0.0;
+    }
+    const float _e12 = atan_portable((y / x_5));
+    if ((x_5 > 0.0)) {
+        return _e12;
+    }
+    if ((y >= 0.0)) {
+        return (_e12 + 3.1415927);
+    }
+    return (_e12 - 3.1415927);
+}
+
+float ies_fold_c(float c_4, float h_first, float h_last)
+{
+    float a_3 = (float)0;
+
+    a_3 = (c_4 - (360.0 * floor((c_4 / 360.0))));
+    if ((h_last <= 0.0)) {
+        return 0.0;
+    }
+    if ((h_last <= 90.0)) {
+        float _e15 = a_3;
+        if ((_e15 > 180.0)) {
+            float _e18 = a_3;
+            a_3 = (360.0 - _e18);
+        }
+        float _e21 = a_3;
+        if ((_e21 > 90.0)) {
+            float _e24 = a_3;
+            a_3 = (180.0 - _e24);
+        }
+        float _e27 = a_3;
+        return _e27;
+    }
+    if ((h_first >= 90.0)) {
+        float _e30 = a_3;
+        if ((_e30 < 90.0)) {
+            float _e33 = a_3;
+            a_3 = (180.0 - _e33);
+        } else {
+            float _e36 = a_3;
+            if ((_e36 > 270.0)) {
+                float _e39 = a_3;
+                a_3 = (540.0 - _e39);
+            }
+        }
+        float _e42 = a_3;
+        return _e42;
+    }
+    if ((h_last <= 180.0)) {
+        float _e45 = a_3;
+        if ((_e45 > 180.0)) {
+            float _e48 = a_3;
+            a_3 = (360.0 - _e48);
+        }
+        float _e51 = a_3;
+        return _e51;
+    }
+    float _e52 = a_3;
+    return _e52;
+}
+
+uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
+{
+    uint lo = 0u;
+    uint hi = (uint)0;
+
+    if ((n_2 < 2u)) {
+        return 0u;
+    }
+    hi = (n_2 - 1u);
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e12 = hi;
+        uint _e13 = lo;
+        if (((_e12 - _e13) > 1u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e17 = lo;
+            uint _e18 = hi;
+            uint mid = ((_e17 + _e18) >> 1u);
+            const float _e23 = at(tab_1, (start + mid));
+            if ((_e23 <= x_6)) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+    }
+    uint _e25 = lo;
+    return _e25;
+}
+
+float ies_lerp_t(float a0_, float a1_, float x_7)
+{
+    if ((a1_ <= a0_)) {
+        return 0.0;
+    }
+    return saturate(((x_7 - a0_) / (a1_ - a0_)));
+}
+
+float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
+{
+    bool local_1 = (bool)0;
+
+    const float _e4 = at(tab_2, base_1);
+    const uint _e5 = to_u32_(_e4);
+    const float _e8 = at(tab_2, (base_1 + 1u));
+    const uint _e9 = to_u32_(_e8);
+    uint v0_ = (base_1 + 2u);
+    uint h0_ = (v0_ + _e5);
+    uint c0_1 = (h0_ + _e9);
+    const float _e14 = at(tab_2, v0_);
+    if (!((gamma < _e14))) {
+        const float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
+        local_1 = (gamma > _e22);
+    } else {
+        local_1 = true;
+    }
+    bool _e25 = local_1;
+    if (_e25) {
+        return 0.0;
+    }
+    const float _e27 = at(tab_2, h0_);
+    const float _e31 = at(tab_2, ((h0_ + _e9) - 1u));
+    const float _e32 = ies_fold_c(c_5, _e27, _e31);
+    const uint _e33 = ies_segment(tab_2, v0_, _e5, gamma);
+    const uint _e34 = ies_segment(tab_2, h0_, _e9, _e32);
+    uint iv1_ = min((_e33 + 1u), (_e5 - 1u));
+    uint ih1_ = min((_e34 + 1u), (_e9 - 1u));
+    const float _e46 = at(tab_2, (v0_ + _e33));
+    const float _e48 = at(tab_2, (v0_ + iv1_));
+    const float _e49 = ies_lerp_t(_e46, _e48, gamma);
+    const float _e51 = at(tab_2, (h0_ + _e34));
+    const float _e53 = at(tab_2, (h0_ + ih1_));
+    const float _e54 = ies_lerp_t(_e51, _e53, _e32);
+    const float _e58 = at(tab_2, ((c0_1 + (_e34 * _e5)) + _e33));
+    const float _e65 = at(tab_2, ((c0_1 + (_e34 * _e5)) + iv1_));
+    float a_11 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
+    const float _e71 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + _e33));
+    const float _e78 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + iv1_));
+    float b_8 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
+    return ((a_11 * (1.0 - _e54)) + (b_8 * _e54));
+}
+
+float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
+{
+    const float _e9 = atan2_portable(sqrt(((wr * wr) + (ws * ws))), wn);
+    float gamma_1 = degrees(_e9);
+    bool on_axis = ((abs(wr) + abs(ws)) <= 0.0);
+    const float _e16 = atan2_portable(ws, wr);
+    float c_12 = (on_axis ? 0.0 : degrees(_e16));
+    const float _e20 = ies_candela(tab_3, base_2, gamma_1, c_12);
+    return _e20;
+}
+
+uint mul_hi_u32_(uint a_4, uint b_3)
+{
+    uint a_lo = (a_4 & 65535u);
+    uint a_hi = (a_4 >> 16u);
+    uint b_lo = (b_3 & 65535u);
+    uint b_hi = (b_3 >> 16u);
+    uint ll = (a_lo * b_lo);
+    uint lh = (a_lo * b_hi);
+    uint hl = (a_hi * b_lo);
+    uint hh = (a_hi * b_hi);
+    uint mid_1 = (((ll >> 16u) + (lh & 65535u)) + (hl & 65535u));
+    return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u));
+}
+
+uint uniform_index(uint n_3, uint hi_1, uint lo_1)
+{
+    const uint _e3 = mul_lo_u32_(hi_1, n_3);
+    const uint _e4 = mul_hi_u32_(hi_1, n_3);
+    const uint _e5 = mul_hi_u32_(lo_1, n_3);
+    if ((_e3 > (4294967295u - _e5))) {
+        return (_e4 + 1u);
+    }
+    return _e4;
+}
+
+uint reservoir_slot(uint n_4, uint k, uint hi_2, uint lo_2)
+{
+    if ((n_4 <= k)) {
+        return (n_4 - 1u);
+    }
+    const uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    if ((_e7 < k)) {
+        return _e7;
+    }
+    return k;
+}
+
+float reservoir_weight(uint n_5, uint k_1)
+{
+    const float _e2 = to_f32_(n_5);
+    const float _e3 = to_f32_(k_1);
+    return max((_e2 / _e3), 1.0);
+}
+
+bool weighted_replace(float w_3, float w_sum, float u_1)
+{
+    return ((u_1 * w_sum) < w_3);
+}
+
+float weighted_pick_weight(float w_sum_1, float w_4, uint k_2)
+{
+    const float _e3 = to_f32_(k_2);
+    return (w_sum_1 / (_e3 * w_4));
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+{
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1)
+{
+    if ((cos_a_1 > cos_b_1)) {
+        return 0.0;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+float safe_sqrt(float x_8)
+{
+    return sqrt(max(x_8, 0.0));
+}
+
+float light_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p, float3 n_6)
+{
+    float imp = (float)0;
+
+    float3 v_8 = (p - center_);
+    float dist2_ = dot(v_8, v_8);
+    float r2_6 = (radius * radius);
+    float d2_9 = max(max(dist2_, r2_6), MIN_D2_);
+    float3 wi = ((dist2_ > 0.0) ? (v_8 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi);
+    const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    const float _e32 = safe_sqrt((1.0 - (r2_6 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_6) ? -1.0 : _e32);
+    const float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
+    const float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    const float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
+    const float _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
+    const float _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
+    if ((_e46 <= cos_e)) {
+        return 0.0;
+    }
+    imp = ((phi * _e46) / d2_9);
+    if ((dot(n_6, n_6) > 0.0)) {
+        float cos_i = -(dot(wi, n_6));
+        const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
+        float _e61 = imp;
+        const float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
+        imp = (_e61 * max(_e62, 0.0));
+    }
+    float _e66 = imp;
+    return max(_e66, 0.0);
+}
+
+float candidate_weight(float importance, float rt2_4, float d2_7)
+{
+    const float _e3 = slc_weight(rt2_4, d2_7);
+    return (importance * _e3);
+}
+
+float cone_weight(float3 center_1, float radius_1, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, float3 p_1, float3 n_7)
+{
+    float3 v_9 = (p_1 - center_1);
+    const float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_7);
+    const float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_9, v_9));
+    return _e14;
+}
+
+float weighted_select_pdf(float w_5, float w_sum_2, bool in_range, uint k_3)
+{
+    if ((w_5 <= 0.0)) {
+        return 0.0;
+    }
+    float total = (in_range ? w_sum_2 : (w_sum_2 + w_5));
+    const float _e9 = to_f32_(k_3);
+    return ((_e9 * w_5) / total);
+}
+
+float bvh_first_prob(float c0_, float c1_2)
+{
+    float s = (c0_ + c1_2);
+    if ((s > 0.0)) {
+        return (c0_ / s);
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(float u_2, float p0_, bool first)
+{
+    if (first) {
+        return min((u_2 / p0_), ONE_MINUS_EPSILON);
+    }
+    return clamp(((u_2 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
+float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
+{
+    float3 t0_ = ((bmin_1 - o) * inv_d);
+    float3 t1_ = ((bmax_1 - o) * inv_d);
+    float3 lo_3 = min(t0_, t1_);
+    float3 hi_3 = max(t0_, t1_);
+    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
+    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
+{
+    bool local_2 = (bool)0;
+
+    float3 n_22 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_22, n_22);
+    if (!(!((l2_ > 0.0)))) {
+        local_2 = !((l2_ < 3e38));
+    } else {
+        local_2 = true;
+    }
+    bool _e17 = local_2;
+    if (_e17) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    return (n_22 / (sqrt(l2_)).xxx);
+}
+
+float3 face_against(float3 n_8, float3 dir)
+{
+    return ((dot(n_8, dir) > 0.0) ? -(n_8) : n_8);
+}
+
+float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
+{
+    float3 e1_1 = (b_5 - a_6);
+    float3 e2_1 = (c_7 - a_6);
+    float3 q_2 = (p_2 - a_6);
+    float d11_ = dot(e1_1, e1_1);
+    float d12_ = dot(e1_1, e2_1);
+    float d22_ = dot(e2_1, e2_1);
+    float den = ((d11_ * d22_) - (d12_ * d12_));
+    if (!((abs(den) > 0.0))) {
+        return float3(1.0, 0.0, 0.0);
+    }
+    float w1_ = (((d22_ * dot(q_2, e1_1)) - (d12_ * dot(q_2, e2_1))) / den);
+    float w2_ = (((d11_ * dot(q_2, e2_1)) - (d12_ * dot(q_2, e1_1))) / den);
+    return float3(((1.0 - w1_) - w2_), w1_, w2_);
+}
+
+float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_6, float3 facing)
+{
+    bool local_3 = (bool)0;
+
+    float3 s_1 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
+    float l2_1 = dot(s_1, s_1);
+    if (!(!((l2_1 > 1e-12)))) {
+        local_3 = !((l2_1 < 3e38));
+    } else {
+        local_3 = true;
+    }
+    bool _e24 = local_3;
+    if (_e24) {
+        return facing;
+    }
+    float3 n_23 = (s_1 / (sqrt(l2_1)).xxx);
+    return ((dot(n_23, facing) < 0.0) ? -(n_23) : n_23);
+}
+
+float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
+{
+    bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
+
+    float3 e1_2 = (b_6 - a_7);
+    float3 e2_2 = (c_8 - a_7);
+    float3 p_3 = cross(d, e2_2);
+    float det = dot(e1_2, p_3);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv = (1.0 / det);
+    float3 s_2 = (o_1 - a_7);
+    float u_4 = (dot(s_2, p_3) * inv);
+    if (!((u_4 < 0.0))) {
+        local_4 = (u_4 > 1.0);
+    } else {
+        local_4 = true;
+    }
+    bool _e28 = local_4;
+    if (_e28) {
+        return -1.0;
+    }
+    float3 q_3 = cross(s_2, e1_2);
+    float v_10 = (dot(d, q_3) * inv);
+    if (!((v_10 < 0.0))) {
+        local_5 = ((u_4 + v_10) > 1.0);
+    } else {
+        local_5 = true;
+    }
+    bool _e42 = local_5;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_3 = (dot(e2_2, q_3) * inv);
+    if ((t_3 > t_min)) {
+        local_6 = (t_3 < t_max_1);
+    } else {
+        local_6 = false;
+    }
+    bool _e51 = local_6;
+    if (_e51) {
+        return t_3;
+    }
+    return -1.0;
+}
+
+float mis_balance(float pdf_a, float pdf_b)
+{
+    float s_3 = (pdf_a + pdf_b);
+    if ((s_3 <= 0.0)) {
+        return 0.0;
+    }
+    return (pdf_a / s_3);
+}
+
+float mis_power(float pdf_a_1, float pdf_b_1)
+{
+    float a2_ = (pdf_a_1 * pdf_a_1);
+    float s_4 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_4 <= 0.0)) {
+        return 0.0;
+    }
+    return (a2_ / s_4);
+}
+
+float light_strategy_pdf(float select_, float rt2_6, float d2_8, float area_1, float cos_y)
+{
+    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
+
+    if (!((d2_8 <= 0.0))) {
+        local_7 = (area_1 <= 0.0);
+    } else {
+        local_7 = true;
+    }
+    bool _e13 = local_7;
+    if (!(_e13)) {
+        local_8 = (cos_y <= 0.0);
+    } else {
+        local_8 = true;
+    }
+    bool _e20 = local_8;
+    if (_e20) {
+        return 0.0;
+    }
+    const float _e22 = rr_probability(rt2_6, d2_8);
+    const float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_8, cos_y);
+    return ((select_ * _e22) * _e26);
+}
+
+float3 lambert_brdf(float3 rho)
+{
+    return (rho * INV_PI);
+}
+
+float cosine_pdf(float cos_theta_1)
+{
+    return (max(cos_theta_1, 0.0) * INV_PI);
+}
+
+float3 cosine_direction(float3 n_9, float u1_1, float u2_1)
+{
+    float s_5 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_5 + n_9.z));
+    float b_9 = ((n_9.x * n_9.y) * a_12);
+    float3 t_4 = float3((1.0 + (((s_5 * n_9.x) * n_9.x) * a_12)), (s_5 * b_9), (-(s_5) * n_9.x));
+    float3 bt = float3(b_9, (s_5 + ((n_9.y * n_9.y) * a_12)), -(n_9.y));
+    float r_6 = sqrt(u1_1);
+    float phi_2 = (6.2831855 * u2_1);
+    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));
+}
+
+float bilateral_weight(float3 n_10, float3 nj, float z, float zj, float inv_sz)
+{
+    float dn = max(dot(n_10, nj), 0.0);
+    float dn2_ = (dn * dn);
+    float dn4_ = (dn2_ * dn2_);
+    float dn8_ = (dn4_ * dn4_);
+    float d_4 = ((zj - z) * inv_sz);
+    float t_5 = max((1.0 - (d_4 * d_4)), 0.0);
+    return (((dn8_ * dn8_) * t_5) * t_5);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint interleave_subset(uint x_9, uint y_1, uint period)
+{
+    return ((naga_mod(y_1, period) * period) + naga_mod(x_9, period));
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+uint interleave_slot(uint tx, uint ty, uint size, uint period_1)
+{
+    uint side = naga_div(size, period_1);
+    const uint _e5 = interleave_subset(tx, ty, period_1);
+    return ((((_e5 * side) * side) + (naga_div(ty, period_1) * side)) + naga_div(tx, period_1));
+}
+
+uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2)
+{
+    uint subsets = (period_2 * period_2);
+    return ((naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets));
+}
+
+float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_7, float h_1)
+{
+    float sx = (((2.0 * px) / w_7) - 1.0);
+    float sy = (1.0 - ((2.0 * py) / h_1));
+    return normalize(((forward + (right * sx)) + (up * sy)));
+}
+
+float path_survival(float3 beta)
+{
+    return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
+}
+
+float light_map_coord(uint t_1, uint size_1)
+{
+    const float _e2 = to_f32_(t_1);
+    const float _e7 = to_f32_(size_1);
+    return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
+}
+
+uint light_map_texel(float a_8, uint size_2)
+{
+    const float _e6 = to_f32_(size_2);
+    const float _e9 = to_f32_(size_2);
+    const uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
+    return _e14;
+}
+
+float light_map_depth(float3 rel, float3 axis_2, bool perspective)
+{
+    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis_2));
+}
+
+float rsm_texel_solid_angle(float texel_area, float cos_axis)
+{
+    return (((texel_area * cos_axis) * cos_axis) * cos_axis);
+}
+
+float3 point_irradiance(float3 intensity_1, float3 n_11, float3 v_2)
+{
+    float d2_10 = dot(v_2, v_2);
+    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_10, MIN_D2_)));
+    const float _e11 = inverse_square(d2_10);
+    return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
+}
+
+float3 directional_irradiance(float3 e, float3 n_12, float3 to_light)
+{
+    return (e * max(dot(n_12, to_light), 0.0));
+}
+
+float shadow_bias(float texel, float cos_light_1)
+{
+    float c_13 = clamp(cos_light_1, 0.02, 1.0);
+    return (texel * (1.5 + (sqrt((1.0 - (c_13 * c_13))) / c_13)));
+}
+
+bool shadow_lit(float d_1, float d_map, float bias)
+{
+    bool local_9 = (bool)0;
+
+    if (!((d_map <= 0.0))) {
+        local_9 = (d_1 <= (d_map + bias));
+    } else {
+        local_9 = true;
+    }
+    bool _e11 = local_9;
+    return _e11;
+}
+
+float3 diffuse_radiance(float3 albedo, float3 emission, float3 e_1)
+{
+    return (emission + ((albedo * INV_PI) * e_1));
+}
+
+float3 light_intensity(GpuLight l, float3 w_8)
+{
+    switch(l.kind) {
+        case 3u: {
+            const float3 _e7 = triangle_normal(l.p0_, l.p1_, l.p2_);
+            const float _e9 = triangle_lobe(_e7, l.a, w_8);
+            return (l.intensity * _e9);
+        }
+        default: {
+            return (0.0).xxx;
+        }
+    }
+}
+
+float3 light_point(GpuLight l_1, float u1_2, float u2_2)
+{
+    if ((l_1.kind == LIGHT_TRIANGLE)) {
+        const float3 _e9 = triangle_sample(l_1.p0_, l_1.p1_, l_1.p2_, u1_2, u2_2);
+        return _e9;
+    }
+    return l_1.p0_;
+}
+
+float light_area(GpuLight l_2)
+{
+    if ((l_2.kind == LIGHT_TRIANGLE)) {
+        return l_2.a;
+    }
+    return 0.0;
+}
+
+float3 light_normal(GpuLight l_3)
+{
+    if ((l_3.kind == LIGHT_TRIANGLE)) {
+        const float3 _e7 = triangle_normal(l_3.p0_, l_3.p1_, l_3.p2_);
+        return _e7;
+    }
+    return (0.0).xxx;
+}
+
+uint NagaBufferLength(ByteAddressBuffer buffer)
+{
+    uint ret;
+    buffer.GetDimensions(ret);
+    return ret;
+}
+
+GpuGeoNode ConstructGpuGeoNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
+    GpuGeoNode ret = (GpuGeoNode)0;
+    ret.bmin = arg0;
+    ret.first = arg1;
+    ret.bmax = arg2;
+    ret.count = arg3;
+    return ret;
+}
+
+GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3, float3 arg4, uint arg5) {
+    GpuTriangle ret = (GpuTriangle)0;
+    ret.v0_ = arg0;
+    ret.material = arg1;
+    ret.v1_ = arg2;
+    ret.light = arg3;
+    ret.v2_ = arg4;
+    ret.pad = arg5;
+    return ret;
+}
+
+GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
+{
+    GeoHit hit = (GeoHit)0;
+    uint stack[64] = (uint[64])0;
+    uint sp = 0u;
+    uint node = 0u;
+    uint i_2 = (uint)0;
+
+    hit.t = t_max_2;
+    hit.tri = NO_LIGHT;
+    if ((((NagaBufferLength(geo_nodes) - 0) / 32) == 0u)) {
+        GeoHit _e13 = hit;
+        const GeoHit geohit = _e13;
+        return geohit;
+    }
+    float3 inv_d_1 = ((1.0).xxx / ((abs(d_2) < (1e-30).xxx) ? (1e-30).xxx : d_2));
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e30 = node;
+        GpuGeoNode n_24 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e30*32+0)), asuint(geo_nodes.Load(_e30*32+12)), asfloat(geo_nodes.Load3(_e30*32+16)), asuint(geo_nodes.Load(_e30*32+28)));
+        float _e36 = hit.t;
+        const float _e37 = ray_aabb(o_2, inv_d_1, n_24.bmin, n_24.bmax, _e36);
+        if ((_e37 >= 0.0)) {
+            if ((n_24.count > 0u)) {
+                i_2 = n_24.first;
+                uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+                bool loop_init = true;
+                while(true) {
+                    if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                    if (!loop_init) {
+                        uint _e67 = i_2;
+                        i_2 = (_e67 + 1u);
+                    }
+                    loop_init = false;
+                    uint _e45 = i_2;
+                    if ((_e45 < (n_24.first + n_24.count))) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e51 = i_2;
+                        GpuTriangle t_6 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e51*48+0)), asuint(geo_tris.Load(_e51*48+12)), asfloat(geo_tris.Load3(_e51*48+16)), asuint(geo_tris.Load(_e51*48+28)), asfloat(geo_tris.Load3(_e51*48+32)), asuint(geo_tris.Load(_e51*48+44)));
+                        float _e58 = hit.t;
+                        const float _e59 = ray_triangle(o_2, d_2, t_6.v0_, t_6.v1_, t_6.v2_, t_min_1, _e58);
+                        if ((_e59 > 0.0)) {
+                            hit.t = _e59;
+                            uint _e64 = i_2;
+                            hit.tri = _e64;
+                            if (any_hit) {
+                                GeoHit _e65 = hit;
+                                const GeoHit geohit_1 = _e65;
+                                return geohit_1;
+                            }
+                        }
+                    }
+                }
+            } else {
+                uint _e69 = sp;
+                if ((_e69 < 64u)) {
+                    uint _e72 = sp;
+                    stack[min(uint(_e72), 63u)] = (n_24.first + 1u);
+                    uint _e77 = sp;
+                    sp = (_e77 + 1u);
+                }
+                node = n_24.first;
+                continue;
+            }
+        }
+        uint _e81 = sp;
+        if ((_e81 == 0u)) {
+            break;
+        }
+        uint _e84 = sp;
+        sp = (_e84 - 1u);
+        uint _e87 = sp;
+        uint _e89 = stack[min(uint(_e87), 63u)];
+        node = _e89;
+    }
+    GeoHit _e90 = hit;
+    const GeoHit geohit_2 = _e90;
+    return geohit_2;
+}
+
+bool occluded(float3 a_9, float3 b_7)
+{
+    float3 dv = (b_7 - a_9);
+    float len = length(dv);
+    if ((len <= 0.0)) {
+        return false;
+    }
+    float eps_1 = (0.0001 * len);
+    const GeoHit _e13 = trace(a_9, (dv / (len).xxx), eps_1, (len - eps_1), true);
+    return (_e13.tri != NO_LIGHT);
+}
+
+BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, uint arg5) {
+    BshNode ret = (BshNode)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.child = arg2;
+    ret.next = arg3;
+    ret.light = arg4;
+    ret.pad = arg5;
+    return ret;
+}
+
+uint bsh_next_leaf(uint start_1, float3 x_10)
+{
+    uint i_3 = (uint)0;
+
+    i_3 = start_1;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e3 = i_3;
+        if ((_e3 == BSH_NONE)) {
+            return BSH_NONE;
+        }
+        uint _e8 = i_3;
+        BshNode node_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e8*32+0)), asfloat(bsh_nodes.Load(_e8*32+12)), asuint(bsh_nodes.Load(_e8*32+16)), asuint(bsh_nodes.Load(_e8*32+20)), asuint(bsh_nodes.Load(_e8*32+24)), asuint(bsh_nodes.Load(_e8*32+28)));
+        const bool _e13 = sphere_contains_point(node_1.center_, node_1.radius, x_10);
+        if (_e13) {
+            if ((node_1.child == BSH_NONE)) {
+                uint _e17 = i_3;
+                return _e17;
+            }
+            i_3 = node_1.child;
+        } else {
+            i_3 = node_1.next;
+        }
+    }
+    return BSH_NONE;
+}
+
+uint bsh_first()
+{
+    return ((((NagaBufferLength(bsh_nodes) - 0) / 32) > 0u) ? 0u : BSH_NONE);
+}
+
+Picks bsh_collect(float3 x_11, uint seed_1)
+{
+    Picks picks = (Picks)0;
+    uint h_2 = (uint)0;
+    uint i_4 = (uint)0;
+
+    picks.n = 0u;
+    h_2 = seed_1;
+    const uint _e6 = bsh_first();
+    const uint _e7 = bsh_next_leaf(_e6, x_11);
+    i_4 = _e7;
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e40 = i_4;
+            uint _e43 = asuint(bsh_nodes.Load(20+_e40*32));
+            const uint _e44 = bsh_next_leaf(_e43, x_11);
+            i_4 = _e44;
+        }
+        loop_init_1 = false;
+        uint _e9 = i_4;
+        if ((_e9 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = picks.n;
+            if ((_e13 < 4294967295u)) {
+                uint _e17 = picks.n;
+                picks.n = (_e17 + 1u);
+                uint _e20 = h_2;
+                const uint _e21 = pcg_hash(_e20);
+                h_2 = _e21;
+                uint hi_4 = h_2;
+                uint _e23 = h_2;
+                const uint _e24 = pcg_hash(_e23);
+                h_2 = _e24;
+                uint _e26 = picks.n;
+                uint _e28 = h_2;
+                const uint _e29 = reservoir_slot(_e26, K, hi_4, _e28);
+                if ((_e29 < K)) {
+                    uint _e35 = i_4;
+                    uint _e38 = asuint(bsh_nodes.Load(24+_e35*32));
+                    picks.light[min(uint(_e29), 7u)] = _e38;
+                }
+            }
+        }
+    }
+    Picks _e45 = picks;
+    const Picks picks_1 = _e45;
+    return picks_1;
+}
+
+GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
+    GpuLight ret = (GpuLight)0;
+    ret.p0_ = arg0;
+    ret.kind = arg1;
+    ret.p1_ = arg2;
+    ret.a = arg3;
+    ret.p2_ = arg4;
+    ret.b = arg5;
+    ret.intensity = arg6;
+    ret.ies_base = arg7;
+    return ret;
+}
+
+Connection connect(uint li, float3 x_12, float3 n_13, float3 ng, float w_res, float u1_3, float u2_3, float eps)
+{
+    Connection c_9 = (Connection)0;
+    bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
+    bool local_12 = (bool)0;
+
+    c_9.e = (0.0).xxx;
+    GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
+    const float3 _e16 = light_point(l_4, u1_3, u2_3);
+    c_9.y = _e16;
+    float3 _e18 = c_9.y;
+    float3 v_11 = (x_12 - _e18);
+    float d2_11 = dot(v_11, v_11);
+    float _e23 = asfloat(r2_5.Load(li*4));
+    const bool _e24 = slc_keep(_e23, d2_11);
+    if (!(!(_e24))) {
+        local_10 = (d2_11 <= 0.0);
+    } else {
+        local_10 = true;
+    }
+    bool _e32 = local_10;
+    if (_e32) {
+        Connection _e33 = c_9;
+        const Connection connection = _e33;
+        return connection;
+    }
+    float3 w_11 = (v_11 / (sqrt(d2_11)).xxx);
+    c_9.cos_x = -(dot(n_13, w_11));
+    float _e41 = c_9.cos_x;
+    if (!((_e41 <= 0.0))) {
+        local_11 = (dot(ng, w_11) >= 0.0);
+    } else {
+        local_11 = true;
+    }
+    bool _e51 = local_11;
+    if (!(_e51)) {
+        float3 _e58 = c_9.y;
+        const bool _e59 = occluded((x_12 + (ng * eps)), _e58);
+        local_12 = _e59;
+    } else {
+        local_12 = true;
+    }
+    bool _e61 = local_12;
+    if (_e61) {
+        Connection _e62 = c_9;
+        const Connection connection_1 = _e62;
+        return connection_1;
+    }
+    const float3 _e64 = light_intensity(l_4, w_11);
+    float _e66 = c_9.cos_x;
+    float _e69 = asfloat(rt2_7.Load(li*4));
+    const float _e70 = connection_factor(_e66, d2_11, _e69, w_res);
+    c_9.e = (_e64 * _e70);
+    Connection _e72 = c_9;
+    const Connection connection_2 = _e72;
+    return connection_2;
+}
+
+float mis_weight(float pdf_a_2, float pdf_b_2)
+{
+    const float _e2 = mis_power(pdf_a_2, pdf_b_2);
+    return _e2;
+}
+
+GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
+    GpuLightCone ret = (GpuLightCone)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.axis = arg2;
+    ret.cos_o = arg3;
+    ret.phi = arg4;
+    ret.cos_e = arg5;
+    ret.bvh_leaf = arg6;
+    ret.pad = arg7;
+    return ret;
+}
+
+float light_weight(uint li_1, float3 x_13, float3 n_14)
+{
+    GpuLightCone c_14 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    float _e14 = asfloat(rt2_7.Load(li_1*4));
+    const float _e15 = cone_weight(c_14.center_, c_14.radius, c_14.phi, c_14.axis, c_14.cos_o, c_14.cos_e, _e14, x_13, n_14);
+    return _e15;
+}
+
+GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
+    GpuLightBvhNode ret = (GpuLightBvhNode)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.axis = arg2;
+    ret.cos_o = arg3;
+    ret.phi = arg4;
+    ret.cos_e = arg5;
+    ret.second = arg6;
+    ret.light = arg7;
+    return ret;
+}
+
+float bvh_importance(uint i_5, float3 x_14, float3 n_15)
+{
+    GpuLightBvhNode b_10 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_5*48+0)), asfloat(light_bvh.Load(i_5*48+12)), asfloat(light_bvh.Load3(i_5*48+16)), asfloat(light_bvh.Load(i_5*48+28)), asfloat(light_bvh.Load(i_5*48+32)), asfloat(light_bvh.Load(i_5*48+36)), asuint(light_bvh.Load(i_5*48+40)), asuint(light_bvh.Load(i_5*48+44)));
+    const float _e12 = light_importance(b_10.center_, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_14, n_15);
+    return _e12;
+}
+
+float bvh_first(uint i_6, float3 x_15, float3 n_16)
+{
+    bool local_13 = (bool)0;
+
+    uint j = asuint(light_bvh.Load(40+i_6*48));
+    if (!((j <= (i_6 + 1u)))) {
+        local_13 = (j >= ((NagaBufferLength(light_bvh) - 0) / 48));
+    } else {
+        local_13 = true;
+    }
+    bool _e17 = local_13;
+    if (_e17) {
+        return -1.0;
+    }
+    const float _e21 = bvh_importance((i_6 + 1u), x_15, n_16);
+    const float _e22 = bvh_importance(j, x_15, n_16);
+    const float _e23 = bvh_first_prob(_e21, _e22);
+    return _e23;
+}
+
+BvhPick ConstructBvhPick(uint arg0, float arg1) {
+    BvhPick ret = (BvhPick)0;
+    ret.light = arg0;
+    ret.pmf = arg1;
+    return ret;
+}
+
+BvhPick light_bvh_sample(float3 x_16, float3 n_17, float u_in)
+{
+    float u_3 = (float)0;
+    uint i_7 = 0u;
+    float pmf = 1.0;
+    bool local_14 = (bool)0;
+
+    u_3 = u_in;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        uint _e9 = i_7;
+        GpuLightBvhNode node_2 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(_e9*48+0)), asfloat(light_bvh.Load(_e9*48+12)), asfloat(light_bvh.Load3(_e9*48+16)), asfloat(light_bvh.Load(_e9*48+28)), asfloat(light_bvh.Load(_e9*48+32)), asfloat(light_bvh.Load(_e9*48+36)), asuint(light_bvh.Load(_e9*48+40)), asuint(light_bvh.Load(_e9*48+44)));
+        if ((node_2.second == LIGHT_BVH_LEAF)) {
+            uint _e15 = i_7;
+            if (!((_e15 > 0u))) {
+                const float _e22 = bvh_importance(0u, x_16, n_17);
+                local_14 = (_e22 > 0.0);
+            } else {
+                local_14 = true;
+            }
+            bool reaches = local_14;
+            float _e28 = pmf;
+            const BvhPick bvhpick = ConstructBvhPick(node_2.light, (reaches ? _e28 : 0.0));
+            return bvhpick;
+        }
+        uint _e32 = i_7;
+        const float _e33 = bvh_first(_e32, x_16, n_17);
+        if ((_e33 < 0.0)) {
+            const BvhPick bvhpick_1 = ConstructBvhPick(0u, 0.0);
+            return bvhpick_1;
+        }
+        float _e39 = u_3;
+        bool first_1 = (_e39 < _e33);
+        float _e41 = pmf;
+        pmf = (_e41 * (first_1 ? _e33 : (1.0 - _e33)));
+        float _e46 = u_3;
+        const float _e47 = bvh_remap_u(_e46, _e33, first_1);
+        u_3 = _e47;
+        uint _e49 = i_7;
+        i_7 = (first_1 ? (_e49 + 1u) : node_2.second);
+    }
+    const BvhPick bvhpick_2 = ConstructBvhPick(0u, 0.0);
+    return bvhpick_2;
+}
+
+float light_bvh_pmf(uint li_2, float3 x_17, float3 n_18)
+{
+    uint i_8 = 0u;
+    float pmf_1 = 1.0;
+    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
+
+    uint leaf = asuint(light_cones.Load(40+li_2*48));
+    if ((leaf >= ((NagaBufferLength(light_bvh) - 0) / 48))) {
+        return 0.0;
+    }
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        uint _e16 = i_8;
+        GpuLightBvhNode node_3 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(_e16*48+0)), asfloat(light_bvh.Load(_e16*48+12)), asfloat(light_bvh.Load3(_e16*48+16)), asfloat(light_bvh.Load(_e16*48+28)), asfloat(light_bvh.Load(_e16*48+32)), asfloat(light_bvh.Load(_e16*48+36)), asuint(light_bvh.Load(_e16*48+40)), asuint(light_bvh.Load(_e16*48+44)));
+        if ((node_3.second == LIGHT_BVH_LEAF)) {
+            uint _e22 = i_8;
+            if (!((_e22 > 0u))) {
+                const float _e29 = bvh_importance(0u, x_17, n_18);
+                local_15 = (_e29 > 0.0);
+            } else {
+                local_15 = true;
+            }
+            bool reaches_1 = local_15;
+            float _e34 = pmf_1;
+            uint _e35 = i_8;
+            if ((_e35 == leaf)) {
+                local_16 = reaches_1;
+            } else {
+                local_16 = false;
+            }
+            bool _e40 = local_16;
+            return (_e40 ? _e34 : 0.0);
+        }
+        uint _e43 = i_8;
+        const float _e44 = bvh_first(_e43, x_17, n_18);
+        if ((_e44 < 0.0)) {
+            return 0.0;
+        }
+        bool first_2 = (leaf < node_3.second);
+        float _e50 = pmf_1;
+        pmf_1 = (_e50 * (first_2 ? _e44 : (1.0 - _e44)));
+        uint _e56 = i_8;
+        i_8 = (first_2 ? (_e56 + 1u) : node_3.second);
+    }
+    return 0.0;
+}
+
+float select_pdf(uint li_3, float3 x_18, float3 n_19, uint nee, bool in_range_1)
+{
+    const float _e5 = light_bvh_pmf(li_3, x_18, n_19);
+    return _e5;
+}
+
+float light_pdf(uint li_4, float3 x_19, float3 n_20, float3 y_2, uint nee_1, bool in_range_2)
+{
+    GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
+    float3 v_12 = (x_19 - y_2);
+    float d2_12 = dot(v_12, v_12);
+    const float3 _e11 = light_normal(l_5);
+    float cos_y_1 = ((d2_12 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_12)).xxx)) : 0.0);
+    const float _e20 = select_pdf(li_4, x_19, n_20, nee_1, in_range_2);
+    float _e23 = asfloat(rt2_7.Load(li_4*4));
+    const float _e24 = light_area(l_5);
+    const float _e25 = light_strategy_pdf(_e20, _e23, d2_12, _e24, cos_y_1);
+    return _e25;
+}
+
+bool finite3_(float3 v_3)
+{
+    return all((abs(v_3) <= (3.4028235e38).xxx));
+}
+
+float3 shade_pick(uint li_5, float3 x_20, float3 n_21, float3 ng_1, float w_9, uint nee_2, float u1_4, float u2_4)
+{
+    float mis = 1.0;
+    bool local_17 = (bool)0;
+
+    float _e10 = params.eps;
+    const Connection _e11 = connect(li_5, x_20, n_21, ng_1, w_9, u1_4, u2_4, _e10);
+    GpuLight _e16 = ConstructGpuLight(asfloat(lights.Load3(li_5*64+0)), asuint(lights.Load(li_5*64+12)), asfloat(lights.Load3(li_5*64+16)), asfloat(lights.Load(li_5*64+28)), asfloat(lights.Load3(li_5*64+32)), asfloat(lights.Load(li_5*64+44)), asfloat(lights.Load3(li_5*64+48)), asuint(lights.Load(li_5*64+60)));
+    const float _e17 = light_area(_e16);
+    if ((_e17 > 0.0)) {
+        local_17 = (_e11.cos_x > 0.0);
+    } else {
+        local_17 = false;
+    }
+    bool _e26 = local_17;
+    if (_e26) {
+        const float _e29 = light_pdf(li_5, x_20, n_21, _e11.y, nee_2, true);
+        const float _e31 = cosine_pdf(_e11.cos_x);
+        const float _e32 = mis_weight(_e29, _e31);
+        mis = _e32;
+    }
+    float _e34 = mis;
+    return (_e11.e * _e34);
+}
+
+GpuPathVertex ConstructGpuPathVertex(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, float arg7) {
+    GpuPathVertex ret = (GpuPathVertex)0;
+    ret.position = arg0;
+    ret.alive = arg1;
+    ret.normal = arg2;
+    ret.pad = arg3;
+    ret.weight = arg4;
+    ret.pad1_ = arg5;
+    ret.gnormal = arg6;
+    ret.pad2_ = arg7;
+    return ret;
+}
+
+[numthreads(64, 1, 1)]
+void main(uint3 gid : SV_DispatchThreadID)
+{
+    uint h = (uint)0;
+    float3 sum = (0.0).xxx;
+
+    uint i_9 = gid.x;
+    uint _e4 = params.point_count;
+    if ((i_9 >= _e4)) {
+        return;
+    }
+    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_9*64+0)), asuint(vertices_.Load(i_9*64+12)), asfloat(vertices_.Load3(i_9*64+16)), asfloat(vertices_.Load(i_9*64+28)), asfloat(vertices_.Load3(i_9*64+32)), asfloat(vertices_.Load(i_9*64+44)), asfloat(vertices_.Load3(i_9*64+48)), asfloat(vertices_.Load(i_9*64+60)));
+    if ((vtx.alive == 0u)) {
+        candidates.Store(i_9*4, asuint(0u));
+        return;
+    }
+    float3 x_21 = vtx.position;
+    float3 n_25 = vtx.normal;
+    float3 ng_2 = vtx.gnormal;
+    uint _e20 = params.seed;
+    uint _e23 = params.frame;
+    const uint _e24 = pcg_hash(_e23);
+    const uint _e26 = pcg_hash((i_9 ^ _e24));
+    const uint _e28 = pcg_hash((_e20 ^ _e26));
+    const uint _e31 = pcg_hash((_e28 ^ 2654435769u));
+    h = _e31;
+    candidates.Store(i_9*4, asuint(0u));
+    uint _e39 = h;
+    const uint _e40 = pcg_hash(_e39);
+    h = _e40;
+    uint _e41 = h;
+    const float _e42 = xi_from_bits(_e41);
+    const BvhPick _e43 = light_bvh_sample(x_21, n_25, _e42);
+    uint li_6 = _e43.light;
+    float pmf_2 = _e43.pmf;
+    uint _e46 = h;
+    const uint _e47 = pcg_hash(_e46);
+    h = _e47;
+    uint _e48 = h;
+    const float _e49 = xi_from_bits(_e48);
+    uint _e50 = h;
+    const uint _e51 = pcg_hash(_e50);
+    h = _e51;
+    uint _e52 = h;
+    const float _e53 = xi_from_bits(_e52);
+    if ((pmf_2 > 0.0)) {
+        const float3 _e59 = shade_pick(li_6, x_21, n_25, ng_2, (1.0 / pmf_2), 0u, _e49, _e53);
+        sum = _e59;
+    }
+    float3 _e61 = sum;
+    float3 add = (vtx.weight * _e61);
+    const bool _e63 = finite3_(add);
+    if (_e63) {
+        float4 _e66 = asfloat(radiance.Load4(i_9*16));
+        radiance.Store4(i_9*16, asuint((_e66 + float4(add, 0.0))));
+        return;
+    } else {
+        return;
+    }
+}
