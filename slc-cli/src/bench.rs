@@ -41,7 +41,7 @@ pub struct BenchArgs {
     /// Also plot RMSE against shading time (.svg or .png).
     #[arg(long)]
     plot: Option<PathBuf>,
-    /// Path tracing: the SLC error bound ε [default: 0.3].
+    /// Path tracing: the SLC error bound ε [default: 1].
     #[arg(long)]
     error_bound: Option<f32>,
     /// Path tracing: seconds per method (equal time).

@@ -104,7 +104,7 @@ struct RenderArgs {
     #[arg(long)]
     seconds: Option<f64>,
     /// SLC error bound ε, the largest standard deviation one light may add
-    /// to a pixel [default: 0.008 (vpl), 0.3 (pt)].
+    /// to a pixel [default: 0.008 (vpl), 1 (pt)].
     #[arg(long)]
     error_bound: Option<f32>,
     /// Clamp range R (scene units) for --method clamp [default: 0.1].
