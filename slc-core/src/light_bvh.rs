@@ -7,7 +7,7 @@
 //! `i`'s first child is `i + 1` and its second child `second`, so the first
 //! child's subtree is the index range `i + 1 .. second`. A sample walks from
 //! the root, at each node choosing a child with probability proportional to
-//! the [`light_importance`] of its bounds at the shading point
+//! the [`light_importance`](crate::importance::light_importance) of its bounds at the shading point
 //! ([`bvh_first_prob`]) and reusing the uniform number ([`bvh_remap_u`]);
 //! the light's pmf is the product of the choices. The pmf of a given light
 //! (for MIS at a BSDF-sampled hit) takes the same walk towards its leaf,
