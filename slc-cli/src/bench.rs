@@ -271,7 +271,10 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
     let (w, h) = (a.scene.width.or(f.width).unwrap_or(128), a.scene.height.or(f.height).unwrap_or(128));
     let pts = PtScene::new(&scene, &lights).map_err(|e| e.to_string())?;
     let eps = a.error_bound.unwrap_or(PtSettings::default().error_bound);
-    let ref_settings = PtSettings { method: a.reference_method, error_bound: eps, seed: 0x5EED, ..PtSettings::default() };
+    // A reference that culls nothing does not depend on ε: keyed without
+    // it, its cache serves every --error-bound.
+    let ref_eps = if a.reference_method.culls() { eps } else { PtSettings::default().error_bound };
+    let ref_settings = PtSettings { method: a.reference_method, error_bound: ref_eps, seed: 0x5EED, ..PtSettings::default() };
     let bar = ProgressBar::new(a.reference_spp as u64);
     bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} spp, {msg} (ETA {eta})").map_err(|e| e.to_string())?);
     bar.set_message(format!("reference: {}", a.reference_method.name()));
@@ -286,7 +289,7 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
     let ctx = gpu_context(a.scene.backend)?;
     let mut tracer = path_tracer(ctx.as_ref(), &pts, w, h)?;
     let batch = if ctx.is_some() { GPU_BATCH } else { 1 };
-    let methods: Vec<PtMethod> = PtMethod::ALL.into_iter().filter(|&m| tracer.supports(m)).collect();
+    let methods = PtMethod::ALL;
     let mut runs = Vec::new();
     // Methods: the bar counts tenths of a second of rendering, all methods together.
     let tenths = (a.seconds * 10.0).ceil() as u64;

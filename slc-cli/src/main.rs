@@ -282,9 +282,6 @@ fn render_pt(a: RenderArgs) -> Result<(), String> {
     };
     let ctx = gpu_context(a.scene.backend)?;
     let mut tracer = path_tracer(ctx.as_ref(), &pts, w, h)?;
-    if !tracer.supports(settings.method) {
-        return Err(format!("method {} does not run on the {} backend; use --backend cpu", settings.method.name(), tracer.describe()));
-    }
     let batch = if on_gpu { GPU_BATCH } else { 1 };
     let mut acc = PtRender::new(w, h);
     let bar = indicatif::ProgressBar::new(0);

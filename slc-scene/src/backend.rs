@@ -3,7 +3,7 @@
 //! backend builds its implementor from slc-scene data (a [`VplInputs`], a
 //! [`PtScene`]) and never from the other backend's types.
 
-use crate::pt::{PtMethod, PtRender, PtSettings};
+use crate::pt::{PtRender, PtSettings};
 use crate::vpl::{Shaded, VplSettings};
 #[cfg(doc)]
 use crate::{pt::PtScene, vpl::VplInputs};
@@ -47,8 +47,6 @@ pub trait PathTracer {
     type Error: std::error::Error + Send + Sync + 'static;
     /// The backend, for reports.
     fn describe(&self) -> String;
-    /// Whether this backend runs light-selection `method`.
-    fn supports(&self, method: PtMethod) -> bool;
     /// Renders `passes` more passes of one sample per pixel into `acc`.
     /// Pass numbers continue from `acc.passes`, so a render split over calls
     /// equals one call.
@@ -82,8 +80,6 @@ impl<T: IndirectShader> DynIndirectShader for T {
 pub trait DynPathTracer {
     /// [`PathTracer::describe`].
     fn describe(&self) -> String;
-    /// [`PathTracer::supports`].
-    fn supports(&self, method: PtMethod) -> bool;
     /// [`PathTracer::render`].
     fn render(&mut self, acc: &mut PtRender, settings: &PtSettings, passes: u32) -> Result<Timing, BoxError>;
 }
@@ -91,9 +87,6 @@ pub trait DynPathTracer {
 impl<T: PathTracer> DynPathTracer for T {
     fn describe(&self) -> String {
         PathTracer::describe(self)
-    }
-    fn supports(&self, method: PtMethod) -> bool {
-        PathTracer::supports(self, method)
     }
     fn render(&mut self, acc: &mut PtRender, settings: &PtSettings, passes: u32) -> Result<Timing, BoxError> {
         PathTracer::render(self, acc, settings, passes).map_err(Into::into)

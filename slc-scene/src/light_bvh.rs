@@ -14,7 +14,9 @@
 //! per axis, one light per leaf, in preorder.
 
 use glam::Vec3;
-use slc_core::importance::{LightCone, light_importance, safe_sqrt};
+#[cfg(doc)]
+use slc_core::importance::light_importance;
+use slc_core::importance::{LightCone, safe_sqrt};
 use slc_core::light::Light;
 use slc_core::light_bvh::{LIGHT_BVH_LEAF, LightBvhNode, light_bvh_pmf, light_bvh_sample};
 use std::f32::consts::PI;
@@ -64,7 +66,12 @@ impl LightBounds {
     }
 
     /// The bounds as [`light_importance`] reads them: the box's bounding
-    /// sphere with the power and cones.
+    /// sphere with the power and cones (pbrt-v4 `LightBounds::Importance`
+    /// clamps the distance with `max(d², |diagonal|/2)`, a squared distance
+    /// against a length; slc clamps with the squared radius). The receiver
+    /// is one-sided, where pbrt-v4 takes `|cos θ_i|` for transmissive
+    /// surfaces: slc's surfaces only reflect, so the baseline gets that
+    /// advantage too.
     pub fn cone(&self) -> LightCone {
         LightCone {
             center: self.centroid(),
@@ -88,18 +95,6 @@ impl LightBounds {
         }
         let (w, cos_o) = cone_union(self.w, self.cos_o, o.w, o.cos_o);
         LightBounds { min: self.min.min(o.min), max: self.max.max(o.max), phi: self.phi + o.phi, w, cos_o, cos_e: self.cos_e.min(o.cos_e) }
-    }
-
-    /// Importance at point `p` with surface normal `n` (zero: none):
-    /// slc-core's [`light_importance`] over the box's bounding sphere
-    /// (pbrt-v4 `LightBounds::Importance`, whose distance clamp is
-    /// `max(d², |diagonal|/2)`, a squared distance against a length; slc
-    /// clamps with the squared radius). The receiver is one-sided, where
-    /// pbrt-v4 takes `|cos θ_i|` for transmissive surfaces: slc's surfaces
-    /// only reflect, so the baseline gets that advantage too.
-    pub fn importance(&self, p: Vec3, n: Vec3) -> f32 {
-        let c = self.cone();
-        light_importance(c.center, c.radius, c.phi, c.axis, c.cos_o, c.cos_e, p, n)
     }
 
     /// pbrt-v4's `EvaluateCost`: `φ · M_Ω · K_r · area`, with the
@@ -337,9 +332,9 @@ mod tests {
             LightBounds::of_light(&l, &LightCone::of_light(&l, l.power()))
         };
         let p = Vec3::new(0.05, 0.05, 5.0);
-        assert!(t(1.0, true).importance(p, Vec3::NEG_Z) < t(4.0, true).importance(p, Vec3::NEG_Z));
+        assert!(t(1.0, true).cone().importance(p, Vec3::NEG_Z) < t(4.0, true).cone().importance(p, Vec3::NEG_Z));
         // Facing away (normal −z, p above): zero importance.
-        assert_eq!(t(1.0, false).importance(p, Vec3::NEG_Z), 0.0);
+        assert_eq!(t(1.0, false).cone().importance(p, Vec3::NEG_Z), 0.0);
     }
 
     #[test]

@@ -58,6 +58,11 @@ impl PtMethod {
     pub const ALL: [PtMethod; 6] =
         [PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::SlcWeighted, PtMethod::Uniform, PtMethod::Power, PtMethod::LightBvh];
 
+    /// The method's position in [`PtMethod::ALL`] (its declaration order).
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
     /// Whether the method culls by stochastic ranges (and so has ε).
     pub fn culls(self) -> bool {
         matches!(self, PtMethod::Slc | PtMethod::SlcReservoir | PtMethod::SlcWeighted)
@@ -197,5 +202,17 @@ impl PtRender {
     pub fn image(&self) -> Image {
         let n = self.passes.max(1) as f32;
         Image { width: self.width, height: self.height, data: self.sum.iter().map(|s| *s / n).collect() }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn index_is_the_position_in_all() {
+        for (i, m) in PtMethod::ALL.into_iter().enumerate() {
+            assert_eq!(m.index(), i, "{}", m.name());
+        }
     }
 }

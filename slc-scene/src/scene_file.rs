@@ -138,11 +138,20 @@ struct ScatterDef {
     emission: [f32; 3],
     #[serde(default = "one_u32")]
     seed: u32,
-    /// `"away"` (default): the light emits away from its surface; `"surface"`:
-    /// it faces the surface it floats over (a small lamp lighting a pool on
-    /// the wall; seen from the room it is its dark back).
     #[serde(default)]
-    face: Option<String>,
+    face: Face,
+}
+
+/// Which way a `[[scatter_lights]]` light emits.
+#[derive(Clone, Copy, Default, Deserialize, PartialEq)]
+#[serde(rename_all = "lowercase")]
+enum Face {
+    /// Away from the surface it floats over.
+    #[default]
+    Away,
+    /// Toward the surface (a small lamp lighting a pool on the wall; seen
+    /// from the room it is its dark back).
+    Surface,
 }
 
 fn one_u32() -> u32 {
@@ -159,11 +168,6 @@ const MAX_SCATTER: u32 = 1 << 20;
 /// out); each light is rotated about it at random. Random numbers come from `pcg_hash` of the seed and the index.
 fn scatter_lights(scene: &Scene, d: &ScatterDef) -> Result<Vec<[Vec3; 3]>, String> {
     use slc_core::xi::{pcg_hash, xi_from_bits};
-    let toward = match d.face.as_deref() {
-        None | Some("away") => false,
-        Some("surface") => true,
-        Some(f) => return Err(format!("face \"{f}\" is not \"away\" or \"surface\"")),
-    };
     let surfaces: Vec<usize> =
         (0..scene.triangles.len()).filter(|&t| scene.materials[scene.material_of[t] as usize].emission == Vec3::ZERO).collect();
     let area = |t: &[Vec3; 3]| 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).length();
@@ -201,7 +205,7 @@ fn scatter_lights(scene: &Scene, d: &ScatterDef) -> Result<Vec<[Vec3; 3]>, Strin
         };
         // Counter-clockwise about n, so the triangle's normal is n (or
         // clockwise: −n, facing the surface).
-        out.push(if toward { [corner(0.0), corner(2.0), corner(1.0)] } else { [corner(0.0), corner(1.0), corner(2.0)] });
+        out.push(if d.face == Face::Surface { [corner(0.0), corner(2.0), corner(1.0)] } else { [corner(0.0), corner(1.0), corner(2.0)] });
     }
     Ok(out)
 }

@@ -83,19 +83,21 @@ fn geometry(pts: &PtScene) -> (Vec<GpuGeoNode>, Vec<GpuTriangle>, Vec<[f32; 4]>,
     (nodes, gpu_tris, normals, depth)
 }
 
-/// The methods the GPU path tracer runs, with their light selection and
-/// its `k`.
-const SELECTIONS: [(PtMethod, Selection, usize); 6] = [
-    (PtMethod::SlcReservoir, Selection::Reservoir, RESERVOIR_K),
-    (PtMethod::SlcWeighted, Selection::Weighted, WEIGHTED_K),
-    (PtMethod::Slc, Selection::All, RESERVOIR_K),
-    (PtMethod::Uniform, Selection::Uniform, RESERVOIR_K),
-    (PtMethod::Power, Selection::Power, RESERVOIR_K),
-    (PtMethod::LightBvh, Selection::LightBvh, RESERVOIR_K),
-];
+/// The kernels' light selection for `method`, and its `k`.
+fn selection(method: PtMethod) -> (Selection, usize) {
+    match method {
+        PtMethod::Slc => (Selection::All, RESERVOIR_K),
+        PtMethod::SlcReservoir => (Selection::Reservoir, RESERVOIR_K),
+        PtMethod::SlcWeighted => (Selection::Weighted, WEIGHTED_K),
+        PtMethod::Uniform => (Selection::Uniform, RESERVOIR_K),
+        PtMethod::Power => (Selection::Power, RESERVOIR_K),
+        PtMethod::LightBvh => (Selection::LightBvh, RESERVOIR_K),
+    }
+}
 
-/// A kernel's pipeline per method, and its bind group.
-type Kernels = (Vec<(PtMethod, wgpu::ComputePipeline)>, wgpu::BindGroup);
+/// A kernel's pipeline per method (at [`PtMethod::index`]), and its bind
+/// group.
+type Kernels = (Vec<wgpu::ComputePipeline>, wgpu::BindGroup);
 
 /// GPU buffers and pipelines for one [`PtScene`] and image size.
 pub struct GpuPt<'a> {
@@ -155,11 +157,12 @@ impl<'a> GpuPt<'a> {
         // One bind group per kernel; one pipeline per light selection.
         let kernel = |k: Kernel, reads: u32, writes: u32, bufs: &[&wgpu::Buffer], uniform: u64| {
             let layout = bind_layout(gpu, k.name(), reads, writes, true);
-            let pipelines = SELECTIONS
+            let pipelines = PtMethod::ALL
                 .iter()
-                .map(|&(m, selection, k_slots)| {
+                .map(|&m| {
+                    let (selection, k_slots) = selection(m);
                     let f = Features { selection, reservoir_k: k_slots as u32, ..base };
-                    Ok((m, pipeline(gpu, k.name(), generate(k, &f)?, &[&layout, &set.table_layout])))
+                    Ok(pipeline(gpu, k.name(), generate(k, &f)?, &[&layout, &set.table_layout]))
                 })
                 .collect::<Result<Vec<_>, GpuError>>()?;
             let bg = bind_group(gpu, k.name(), &layout, bufs, Some(uniform));
@@ -220,14 +223,8 @@ impl<'a> GpuPt<'a> {
     /// Time is GPU time from timestamps where the adapter has them, else
     /// wall time around the submitted passes; the second value says which
     /// (`true`: timestamps).
-    pub fn render<'b>(&'b self, acc: &mut PtRender, s: &PtSettings, passes: u32) -> Result<bool, GpuError> {
-        let pick = |k: &'b Kernels| k.0.iter().find(|(m, _)| *m == s.method).map(|(_, p)| p);
-        let (Some(extend), Some(connect)) = (pick(&self.extend), pick(&self.connect)) else {
-            return Err(GpuError::Setting(format!(
-                "GPU path tracing runs slc, slc-reservoir (k = {RESERVOIR_K}), slc-weighted (k = {WEIGHTED_K}), uniform, power and lightbvh; not {}",
-                s.method.name()
-            )));
-        };
+    pub fn render(&self, acc: &mut PtRender, s: &PtSettings, passes: u32) -> Result<bool, GpuError> {
+        let (extend, connect) = (&self.extend.0[s.method.index()], &self.connect.0[s.method.index()]);
         if acc.size() != (self.width, self.height) {
             return Err(GpuError::Setting(format!("accumulation is {:?}, the GPU scene was set up for {}x{}", acc.size(), self.width, self.height)));
         }
@@ -315,10 +312,6 @@ impl PathTracer for GpuPt<'_> {
 
     fn describe(&self) -> String {
         self.gpu.describe()
-    }
-
-    fn supports(&self, method: PtMethod) -> bool {
-        SELECTIONS.iter().any(|&(m, _, _)| m == method)
     }
 
     fn render(&mut self, acc: &mut PtRender, settings: &PtSettings, passes: u32) -> Result<Timing, GpuError> {

@@ -379,10 +379,6 @@ impl PathTracer for CpuPathTracer {
         format!("cpu ({} threads)", rayon::current_num_threads())
     }
 
-    fn supports(&self, _method: PtMethod) -> bool {
-        true
-    }
-
     fn render(&mut self, acc: &mut PtRender, settings: &PtSettings, passes: u32) -> Result<Timing, RenderError> {
         CpuPathTracer::render(self, acc, settings, passes)?;
         Ok(Timing::Wall)
