@@ -74,6 +74,7 @@ fn vpl_configs(a: &BenchArgs, exposure: f32) -> Vec<(Option<f32>, VplSettings)> 
                 exposure,
                 seed: a.seed,
                 tile: a.scene.tile,
+                near_radius: a.scene.near_radius,
                 ..d
             };
             (param, settings)

@@ -153,6 +153,7 @@ fn vpl_settings(a: &RenderArgs, f: &slc_scene::scene_file::RenderSettings, expos
         seed: a.seed.or(f.seed).unwrap_or(d.seed),
         denoise: !a.no_denoise,
         tile: a.scene.tile,
+        near_radius: a.scene.near_radius,
         ..d
     })
 }

@@ -5,6 +5,20 @@
 //! `(y mod P)·P + x mod P` only, its flux scaled by `P²`. Where a VPL goes
 //! in the subset-after-subset light buffer is written here once, for the
 //! host upload and the GPU's VPL generation alike.
+//!
+//! **Near-field split.** A VPL a few centimetres from a receiver carries a
+//! transfer so large that giving it to one pixel in `P²` (×`P²`) leaves a
+//! `P × P` blotch the denoise cannot average where the surface is only a
+//! few pixels wide (the floor's VPLs at the base of a wall). So every pixel
+//! shades the VPLs closer than a near radius `R_n` itself, from every subset
+//! at their own flux, and its interleaved subset skips them, with a smooth
+//! partition of unity between ([`vpl_near_weight`]): each VPL's transfer is
+//! still counted exactly once per pixel (near) or once per `P × P` window
+//! at `P²` times its flux (far), so the split changes no expectation. The near VPLs are found by blocks of [`NEAR_BLOCK`]
+//! lights, `8 × 8` RSM texels each ([`near_block_index`]), whose boxes are
+//! culled against a tile first.
+
+use crate::wgsl::builtins::clamp;
 
 crate::shared! {
     /// Subset of pixel (or RSM texel) `(x, y)` for period `P > 0`:
@@ -27,6 +41,44 @@ crate::shared! {
     pub fn interleave_slot_linear(i: u32, per_subset: u32, period: u32) -> u32 {
         let subsets: u32 = period * period;
         return (i % subsets) * per_subset + i / subsets;
+    }
+
+    /// Lights per near-field block: an `8 × 8` patch of RSM texels, or 64
+    /// consecutive VPLs of a list.
+    pub const NEAR_BLOCK: u32 = 64;
+
+    /// Index of RSM texel `(tx, ty)` of an `s × s` map (`s` a multiple of 8)
+    /// in near-block order: block `(tx/8, ty/8)` row-major, then the texel
+    /// row-major inside it, `((ty/8)·(s/8) + tx/8)·64 + (ty mod 8)·8 + tx mod 8`.
+    pub fn near_block_index(tx: u32, ty: u32, size: u32) -> u32 {
+        let side: u32 = size / 8;
+        return ((ty / 8) * side + tx / 8) * NEAR_BLOCK + (ty % 8) * 8 + tx % 8;
+    }
+
+    /// Texel column of near-block index `q` in an `s × s` map (the inverse
+    /// of [`near_block_index`] with [`near_block_ty`]).
+    pub fn near_block_tx(q: u32, size: u32) -> u32 {
+        return ((q / NEAR_BLOCK) % (size / 8)) * 8 + q % 8;
+    }
+
+    /// Texel row of near-block index `q` in an `s × s` map.
+    pub fn near_block_ty(q: u32, size: u32) -> u32 {
+        return ((q / NEAR_BLOCK) / (size / 8)) * 8 + (q % NEAR_BLOCK) / 8;
+    }
+
+    /// The near-field split's share of a VPL at squared distance `d²` from
+    /// the receiver: `w = smoothstep(t)`, `t = clamp((R_n² − d²)/(¾R_n²),
+    /// 0, 1)`, so 1 within `R_n/2`, 0 from `R_n` on. The pixel shades `w·T`
+    /// itself at the VPL's own flux and its interleaved subset `(1 − w)·T`
+    /// at `P²` times it: the two parts sum to `T` at every pixel, and each is
+    /// smooth in the receiver's position, so the denoise that averages
+    /// neighbours' far parts meets no edge at `R_n`. `R_n = 0`: `w = 0`.
+    pub fn vpl_near_weight(d2: f32, near_r2: f32) -> f32 {
+        if near_r2 <= 0.0 {
+            return 0.0;
+        }
+        let t: f32 = clamp((near_r2 - d2) / (0.75 * near_r2), 0.0, 1.0);
+        return t * t * (3.0 - 2.0 * t);
     }
 }
 
@@ -51,5 +103,28 @@ mod tests {
             }
         }
         assert!(seen.iter().all(|&b| b));
+    }
+
+    /// Near-block order is a permutation whose blocks are `8 × 8` patches.
+    #[test]
+    fn near_blocks_are_patches() {
+        let s = 32u32;
+        let mut seen = vec![false; (s * s) as usize];
+        for ty in 0..s {
+            for tx in 0..s {
+                let q = near_block_index(tx, ty, s);
+                assert!(!seen[q as usize], "index {q} twice");
+                seen[q as usize] = true;
+                assert_eq!(q / NEAR_BLOCK, (ty / 8) * (s / 8) + tx / 8);
+                assert_eq!((near_block_tx(q, s), near_block_ty(q, s)), (tx, ty));
+            }
+        }
+        assert!(seen.iter().all(|&b| b));
+        assert_eq!(vpl_near_weight(0.25, 1.0), 1.0);
+        assert_eq!(vpl_near_weight(0.0, 1.0), 1.0);
+        assert_eq!(vpl_near_weight(1.0, 1.0), 0.0);
+        assert_eq!(vpl_near_weight(0.0, 0.0), 0.0);
+        let mid = vpl_near_weight(0.625, 1.0);
+        assert!((mid - 0.5).abs() < 1e-6, "{mid}");
     }
 }

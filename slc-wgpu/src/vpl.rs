@@ -207,6 +207,7 @@ impl<'a> GpuVpl<'a> {
     /// submitted kernels.
     pub fn shade(&self, settings: &VplSettings) -> Result<Shaded, GpuError> {
         let params = settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
+        check_no_near(settings)?;
         let _frame = self.frame.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
         let gpu = self.gpu;
         let (_, layout) = self.tiled.iter().find(|(m, _)| *m == settings.method).ok_or(GpuError::Setting("unknown method".into()))?;
@@ -321,7 +322,7 @@ impl<'a> GpuVpl<'a> {
             kept.push(if valid { d[3] as u32 } else { 0 });
             evaluations += valid as u64 * d[3] as u64;
         }
-        Ok(Shaded { irradiance, kept, evaluations, shading_ms, denoised_ms })
+        Ok(Shaded { irradiance, near: Vec::new(), kept, evaluations, shading_ms, denoised_ms })
     }
 }
 
@@ -334,5 +335,16 @@ impl IndirectShader for GpuVpl<'_> {
 
     fn shade(&self, settings: &VplSettings) -> Result<Shaded, GpuError> {
         GpuVpl::shade(self, settings)
+    }
+}
+
+/// The near-field split ([`VplSettings::near_radius`]) runs on the CPU
+/// backend only so far: a GPU shader asked for it says so.
+pub(crate) fn check_no_near(settings: &VplSettings) -> Result<(), GpuError> {
+    match settings.near_radius {
+        Some(r) if r > 0.0 => {
+            Err(GpuError::Setting(format!("near radius {r}: the near-field split runs on the CPU backend only (use --backend cpu)")))
+        }
+        _ => Ok(()),
     }
 }

@@ -109,11 +109,14 @@ impl VplContext {
     pub fn shade(&self, settings: &VplSettings) -> Result<Shaded, RenderError> {
         let params = settings.validate()?;
         let t = Instant::now();
-        let (irradiance, kept, evaluations) = match settings.method {
-            VplMethod::Reference => self.shade_reference(),
+        let (irradiance, near, kept, evaluations) = match settings.method {
+            VplMethod::Reference => {
+                let (e, kept, evaluations) = self.shade_reference();
+                (e, Vec::new(), kept, evaluations)
+            }
             m => self.shade_interleaved(m, &params, settings),
         };
-        Ok(Shaded { irradiance, kept, evaluations, shading_ms: ms(t), denoised_ms: None })
+        Ok(Shaded { irradiance, near, kept, evaluations, shading_ms: ms(t), denoised_ms: None })
     }
 
     /// Denoise (interleaved methods), albedo × (direct + indirect) +
@@ -128,7 +131,12 @@ impl VplContext {
         stats.kept_per_pixel = shaded.kept.iter().map(|&k| k as f64).sum::<f64>() / shaded_px;
         let t = Instant::now();
         let filtered = if settings.denoise && settings.method != VplMethod::Reference && shaded.denoised_ms.is_none() {
-            denoise::cross_bilateral(&shaded.irradiance, gb, PERIOD)
+            // The near field is exact: only the interleaved far field is filtered.
+            let near = |i: usize| shaded.near.get(i).copied().unwrap_or(Vec3::ZERO);
+            let far: Vec<Vec3> = shaded.irradiance.iter().enumerate().map(|(i, &e)| e - near(i)).collect();
+            let mut f = denoise::cross_bilateral(&far, gb, PERIOD);
+            f.iter_mut().enumerate().for_each(|(i, e)| *e += near(i));
+            f
         } else {
             shaded.irradiance
         };
@@ -146,16 +154,21 @@ impl VplContext {
             list.push(v.position[i], v.normal[i], v.flux[i], f32::INFINITY, f32::INFINITY);
         }
         let gb = &self.inputs.gbuffer;
-        let out: Vec<(Vec3, u32)> = (0..gb.position.len())
-            .into_par_iter()
-            .map(|i| if gb.valid(i) { shade::shade(&list, gb.position[i], gb.normal[i], self.inputs.min_d2, Cull::None) } else { (Vec3::ZERO, 0) })
-            .collect();
+        let out: Vec<(Vec3, u32)> =
+            (0..gb.position.len())
+                .into_par_iter()
+                .map(|i| {
+                    if gb.valid(i) { shade::shade(&list, gb.position[i], gb.normal[i], self.inputs.min_d2, 0.0, Cull::None) } else { (Vec3::ZERO, 0) }
+                })
+                .collect();
         let shaded = (0..out.len()).filter(|&i| gb.valid(i)).count() as u64;
         (out.iter().map(|o| o.0).collect(), out.iter().map(|o| o.1).collect(), shaded * v.len() as u64)
     }
 
-    /// Interleaved sampling with tiled culling per sub-image.
-    fn shade_interleaved(&self, method: VplMethod, params: &RangeParams, s: &VplSettings) -> (Vec<Vec3>, Vec<u32>, u64) {
+    /// Interleaved sampling with tiled culling per sub-image: the far field
+    /// plus the near field ([`VplContext::shade_near`]), the near field
+    /// alone, the kept counts and evaluations of both.
+    fn shade_interleaved(&self, method: VplMethod, params: &RangeParams, s: &VplSettings) -> (Vec<Vec3>, Vec<Vec3>, Vec<u32>, u64) {
         let gb = &self.inputs.gbuffer;
         let v = &self.inputs.vpls;
         let p = PERIOD as usize;
@@ -170,6 +183,8 @@ impl VplContext {
         };
         let (w, h) = (gb.width as usize, gb.height as usize);
         let tile = s.tile as usize;
+        let big = tile * SUPER;
+        let near_r2 = s.near_r2();
         // Per subset: (pixel, irradiance, kept) triples and loop evaluations.
         type SubsetResult = (Vec<(usize, Vec3, u32)>, u64);
         let results: Vec<SubsetResult> = (0..subsets)
@@ -192,7 +207,7 @@ impl VplContext {
                                     (rt2, random_range2(rt2, s.fixed_xi.unwrap_or_else(|| xi_for(s.seed, s.frame, i as u32))))
                                 }
                                 Cull::Clamp => (0.0, s.range * s.range),
-                                Cull::None => (f32::INFINITY, f32::INFINITY),
+                                Cull::None | Cull::Near => (f32::INFINITY, f32::INFINITY),
                             };
                             all.push(v.position[i], v.normal[i], flux, rt2, r2);
                         }
@@ -221,7 +236,6 @@ impl VplContext {
                 };
                 // Two-level tiled culling: super-tiles of SUPER × tile cull the
                 // subset; their tiles cull the super-tile's list.
-                let big = tile * SUPER;
                 for by in (0..sh).step_by(big) {
                     for bx in (0..sw).step_by(big) {
                         let (bx1, by1) = ((bx + big).min(sw), (by + big).min(sh));
@@ -247,7 +261,7 @@ impl VplContext {
                                     &fine
                                 };
                                 for &i in &pixels {
-                                    let (e, k) = shade::shade(lights, gb.position[i], gb.normal[i], self.inputs.min_d2, cull);
+                                    let (e, k) = shade::shade(lights, gb.position[i], gb.normal[i], self.inputs.min_d2, near_r2, cull);
                                     out.push((i, e, k));
                                 }
                                 evals += (lights.len_unpadded() * pixels.len()) as u64;
@@ -258,19 +272,106 @@ impl VplContext {
                 (out, evals)
             })
             .collect();
-        let mut e = vec![Vec3::ZERO; w * h];
-        let mut kept = vec![0u32; w * h];
-        let mut evals = 0;
+        let (near, mut kept, mut evals) = self.shade_near(near_r2);
+        let mut e = near.clone();
+        e.resize(w * h, Vec3::ZERO);
         for (out, ev) in results {
             for (i, v, k) in out {
-                e[i] = v;
-                kept[i] = k;
+                e[i] += v;
+                kept[i] += k;
             }
             evals += ev;
         }
+        (e, near, kept, evals)
+    }
+}
+
+impl VplContext {
+    /// The near field of the split ([`slc_core::interleave::vpl_near_weight`]):
+    /// at every pixel, the near share of the VPLs of every subset closer
+    /// than `R_n = √near_r2`, at their own flux; with the kept counts and loop
+    /// evaluations. Empty when `near_r2 = 0`. Culled in two levels, like the
+    /// interleaved loop but over full-resolution pixels: regions of
+    /// [`NEAR_REGION`]² pixels cull the VPLs (in near-block order, so
+    /// chunks are small RSM patches), tiles of [`NEAR_TILE`]² pixels cull
+    /// their region's list, each light's sphere of radius `R_n` against the
+    /// box of the G-buffer positions.
+    fn shade_near(&self, near_r2: f32) -> (Vec<Vec3>, Vec<u32>, u64) {
+        self.shade_near_in(near_r2, NEAR_REGION, NEAR_TILE)
+    }
+
+    /// [`VplContext::shade_near`] with regions of `region²` and tiles of
+    /// `tile²` pixels.
+    fn shade_near_in(&self, near_r2: f32, region: usize, tile: usize) -> (Vec<Vec3>, Vec<u32>, u64) {
+        let gb = &self.inputs.gbuffer;
+        let (w, h) = (gb.width as usize, gb.height as usize);
+        if near_r2 <= 0.0 {
+            return (Vec::new(), vec![0; w * h], 0);
+        }
+        let v = &self.inputs.vpls;
+        let mut all = LightList::default();
+        for i in v.near_order() {
+            if v.flux[i] != Vec3::ZERO {
+                // r² = R_n²: the culling sphere holds every light with a near share.
+                all.push(v.position[i], v.normal[i], v.flux[i], 0.0, near_r2);
+            }
+        }
+        all.build_chunks();
+        // The box of the valid G-buffer positions in [x0, x1) × [y0, y1).
+        let bounds = |(x0, x1): (usize, usize), (y0, y1): (usize, usize)| {
+            let (mut lo, mut hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
+            for y in y0..y1 {
+                for x in x0..x1 {
+                    if gb.valid(y * w + x) {
+                        lo = lo.min(gb.position[y * w + x]);
+                        hi = hi.max(gb.position[y * w + x]);
+                    }
+                }
+            }
+            (lo.x <= hi.x).then_some((lo, hi))
+        };
+        let rows: Vec<(Vec<(Vec3, u32)>, u64)> = (0..h.div_ceil(region))
+            .into_par_iter()
+            .map(|ry| {
+                let (y0, y1) = (ry * region, ((ry + 1) * region).min(h));
+                let mut out = vec![(Vec3::ZERO, 0u32); (y1 - y0) * w];
+                let (mut coarse, mut fine, mut hits) = (LightList::default(), LightList::default(), Vec::new());
+                let mut evals = 0u64;
+                for x0 in (0..w).step_by(region) {
+                    let x1 = (x0 + region).min(w);
+                    let Some((lo, hi)) = bounds((x0, x1), (y0, y1)) else { continue };
+                    all.cull_chunked_into(lo, hi, &mut hits, &mut coarse);
+                    for ty in (y0..y1).step_by(tile) {
+                        for tx in (x0..x1).step_by(tile) {
+                            let (tx1, ty1) = ((tx + tile).min(x1), (ty + tile).min(y1));
+                            let Some((lo, hi)) = bounds((tx, tx1), (ty, ty1)) else { continue };
+                            coarse.cull_into(lo, hi, &mut hits, &mut fine);
+                            for y in ty..ty1 {
+                                for x in tx..tx1 {
+                                    let i = y * w + x;
+                                    if gb.valid(i) {
+                                        out[i - y0 * w] = shade::shade(&fine, gb.position[i], gb.normal[i], self.inputs.min_d2, near_r2, Cull::Near);
+                                        evals += fine.len_unpadded() as u64;
+                                    }
+                                }
+                            }
+                        }
+                    }
+                }
+                (out, evals)
+            })
+            .collect();
+        let evals = rows.iter().map(|r| r.1).sum();
+        let (e, kept) = rows.into_iter().flat_map(|r| r.0).unzip();
         (e, kept, evals)
     }
 }
+
+/// Region edge (pixels) of the near field's first culling level.
+pub const NEAR_REGION: usize = 32;
+
+/// Tile edge (pixels) of the near field's second culling level.
+pub const NEAR_TILE: usize = 8;
 
 /// Direct irradiance from the primary light, with shadow rays offset along
 /// the geometric normal `geo_n` (cosines use the G-buffer's shading normal).
@@ -318,4 +419,39 @@ impl IndirectShader for VplContext {
 
 fn ms(t: Instant) -> f64 {
     t.elapsed().as_secs_f64() * 1e3
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The culled near field equals every VPL's near share summed at every
+    /// pixel (culling drops nothing), for any region and tile size.
+    #[test]
+    fn near_field_culling_drops_nothing() {
+        let ctx = VplContext::new(&Scene::cornell_box(), 16, 16, 512, None).unwrap();
+        let near_r2 = 9.0 * ctx.min_d2();
+        let v = ctx.vpls();
+        let mut all = LightList::default();
+        for i in (0..v.len()).filter(|&i| v.flux[i] != Vec3::ZERO) {
+            all.push(v.position[i], v.normal[i], v.flux[i], 0.0, near_r2);
+        }
+        let gb = ctx.gbuffer();
+        let brute: Vec<(Vec3, u32)> = (0..gb.position.len())
+            .map(|i| if gb.valid(i) { shade::shade(&all, gb.position[i], gb.normal[i], ctx.min_d2(), near_r2, Cull::Near) } else { (Vec3::ZERO, 0) })
+            .collect();
+        assert!(brute.iter().map(|b| b.1).sum::<u32>() > 1000, "the near field holds lights");
+        for (region, tile) in [(64, 8), (32, 8), (32, 4), (16, 16), (7, 3)] {
+            let (e, kept, _) = ctx.shade_near_in(near_r2, region, tile);
+            for i in 0..brute.len() {
+                assert_eq!(kept[i], brute[i].1, "pixel {i}, region {region}, tile {tile}");
+                assert!(
+                    (e[i] - brute[i].0).abs().max_element() <= 1e-5 * brute[i].0.max_element().max(1e-3),
+                    "pixel {i}: {} vs {}",
+                    e[i],
+                    brute[i].0
+                );
+            }
+        }
+    }
 }

@@ -3,10 +3,12 @@
 //!
 //! Every formula comes from slc-core: the VPL transfer
 //! ([`slc_core::light::vpl_transfer`]), the keep test
-//! ([`slc_core::range::slc_keep`]) and the `1/p` weight
-//! ([`slc_core::range::slc_weight`]).
+//! ([`slc_core::range::slc_keep`]), the `1/p` weight
+//! ([`slc_core::range::slc_weight`]) and the near-field split
+//! ([`slc_core::interleave::vpl_near_weight`]).
 
 use glam::Vec3;
+use slc_core::interleave::vpl_near_weight;
 use slc_core::light::vpl_transfer;
 use slc_core::range::{cull_radius, slc_keep, slc_weight};
 use slc_core::sphere::sphere_overlaps_aabb;
@@ -20,6 +22,10 @@ pub enum Cull {
     Clamp,
     /// Every light counts.
     None,
+    /// The near field of the split: each light weighted by its near share
+    /// [`slc_core::interleave::vpl_near_weight`] (the other methods take
+    /// the rest, `1 − w`).
+    Near,
 }
 
 /// A list of VPLs in SoA layout (one entry per light, same index in every
@@ -204,37 +210,39 @@ impl LightList {
 const LANES: usize = 8;
 
 /// Irradiance at `x` (unit normal `n`) from every light of `list` under
-/// `cull`, and the number of lights that passed the keep test.
+/// `cull`, and the number of lights that passed the keep test. With
+/// `near_r2 > 0` each light's transfer is split by its near share `w`
+/// ([`slc_core::interleave::vpl_near_weight`]): [`Cull::Near`] takes `w`,
+/// the others `1 − w`.
 #[inline(never)]
-pub fn shade(list: &LightList, x: Vec3, n: Vec3, min_d2: f32, cull: Cull) -> (Vec3, u32) {
+pub fn shade(list: &LightList, x: Vec3, n: Vec3, min_d2: f32, near_r2: f32, cull: Cull) -> (Vec3, u32) {
     match cull {
-        Cull::Slc => shade_impl::<0>(list, x, n, min_d2),
-        Cull::Clamp => shade_impl::<1>(list, x, n, min_d2),
-        Cull::None => shade_impl::<2>(list, x, n, min_d2),
+        Cull::Slc => shade_impl::<0>(list, x, n, min_d2, near_r2),
+        Cull::Clamp => shade_impl::<1>(list, x, n, min_d2, near_r2),
+        Cull::None => shade_impl::<2>(list, x, n, min_d2, near_r2),
+        Cull::Near => shade_impl::<3>(list, x, n, min_d2, near_r2),
     }
 }
 
 /// One light's weighted transfer and keep flag (0 or 1) at `x`.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn term<const MODE: u8>(p: Vec3, nl: Vec3, rt2: f32, r2: f32, x: Vec3, n: Vec3, min_d2: f32) -> (f32, f32) {
+fn term<const MODE: u8>(p: Vec3, nl: Vec3, rt2: f32, r2: f32, x: Vec3, n: Vec3, min_d2: f32, near_r2: f32) -> (f32, f32) {
     let v = x - p;
     let t = vpl_transfer(nl, n, v, min_d2);
     let d2 = v.x * v.x + v.y * v.y + v.z * v.z;
-    match MODE {
-        0 => {
-            // Both evaluated unconditionally so the loop stays branch-free
-            // (the keep test is a coin flip per light: branches mispredict).
-            let keep = slc_keep(r2, d2);
-            let w = t * slc_weight(rt2, d2);
-            (if keep { w } else { 0.0 }, if keep { 1.0 } else { 0.0 })
-        }
-        1 => {
-            let keep = d2 < r2;
-            (if keep { t } else { 0.0 }, if keep { 1.0 } else { 0.0 })
-        }
-        _ => (t, 1.0),
-    }
+    // Every test evaluated unconditionally so the loop stays branch-free
+    // (the keep test is a coin flip per light: branches mispredict).
+    let near = vpl_near_weight(d2, near_r2);
+    let far = 1.0 - near;
+    let (keep, w) = match MODE {
+        0 => (slc_keep(r2, d2) & (far > 0.0), t * slc_weight(rt2, d2) * far),
+        1 => ((d2 < r2) & (far > 0.0), t * far),
+        2 => (far > 0.0, t * far),
+        // r² = R_n² (0 for padding, which is never kept).
+        _ => ((d2 < r2) & (near > 0.0), t * near),
+    };
+    (if keep { w } else { 0.0 }, if keep { 1.0 } else { 0.0 })
 }
 
 /// `LANES` consecutive entries of one SoA array.
@@ -244,7 +252,7 @@ fn lanes(a: &[f32], base: usize) -> &[f32; LANES] {
 }
 
 #[inline(always)]
-fn shade_impl<const MODE: u8>(list: &LightList, x: Vec3, n: Vec3, min_d2: f32) -> (Vec3, u32) {
+fn shade_impl<const MODE: u8>(list: &LightList, x: Vec3, n: Vec3, min_d2: f32, near_r2: f32) -> (Vec3, u32) {
     let len = list.len();
     let (mut r, mut g, mut b, mut k) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
     let full = len / LANES * LANES;
@@ -255,7 +263,7 @@ fn shade_impl<const MODE: u8>(list: &LightList, x: Vec3, n: Vec3, min_d2: f32) -
         let (fr, fg, fb) = (lanes(&list.fr, base), lanes(&list.fg, base), lanes(&list.fb, base));
         let (rt2, r2) = (lanes(&list.rt2, base), lanes(&list.r2, base));
         for l in 0..LANES {
-            let (w, kept) = term::<MODE>(Vec3::new(px[l], py[l], pz[l]), Vec3::new(nx[l], ny[l], nz[l]), rt2[l], r2[l], x, n, min_d2);
+            let (w, kept) = term::<MODE>(Vec3::new(px[l], py[l], pz[l]), Vec3::new(nx[l], ny[l], nz[l]), rt2[l], r2[l], x, n, min_d2, near_r2);
             r[l] += fr[l] * w;
             g[l] += fg[l] * w;
             b[l] += fb[l] * w;
@@ -266,7 +274,7 @@ fn shade_impl<const MODE: u8>(list: &LightList, x: Vec3, n: Vec3, min_d2: f32) -
     for j in full..len {
         let p = Vec3::new(list.px[j], list.py[j], list.pz[j]);
         let nl = Vec3::new(list.nx[j], list.ny[j], list.nz[j]);
-        let (w, kept) = term::<MODE>(p, nl, list.rt2[j], list.r2[j], x, n, min_d2);
+        let (w, kept) = term::<MODE>(p, nl, list.rt2[j], list.r2[j], x, n, min_d2, near_r2);
         r[0] += list.fr[j] * w;
         g[0] += list.fg[j] * w;
         b[0] += list.fb[j] * w;

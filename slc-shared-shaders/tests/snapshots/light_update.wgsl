@@ -580,6 +580,24 @@ fn interleave_slot_linear(i: u32, per_subset: u32, period: u32) -> u32 {
     let subsets: u32 = period * period;
     return (i % subsets) * per_subset + i / subsets;
 }
+const NEAR_BLOCK: u32 = 64;
+fn near_block_index(tx: u32, ty: u32, size: u32) -> u32 {
+    let side: u32 = size / 8;
+    return ((ty / 8) * side + tx / 8) * NEAR_BLOCK + (ty % 8) * 8 + tx % 8;
+}
+fn near_block_tx(q: u32, size: u32) -> u32 {
+    return ((q / NEAR_BLOCK) % (size / 8)) * 8 + q % 8;
+}
+fn near_block_ty(q: u32, size: u32) -> u32 {
+    return ((q / NEAR_BLOCK) / (size / 8)) * 8 + (q % NEAR_BLOCK) / 8;
+}
+fn vpl_near_weight(d2: f32, near_r2: f32) -> f32 {
+    if near_r2 <= 0.0 {
+        return 0.0;
+    }
+    let t: f32 = clamp((near_r2 - d2) / (0.75 * near_r2), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
 fn camera_dir(forward: vec3f, right: vec3f, up: vec3f, px: f32, py: f32, w: f32, h: f32) -> vec3f {
     let sx: f32 = 2.0 * px / w - 1.0;
     let sy: f32 = 1.0 - 2.0 * py / h;

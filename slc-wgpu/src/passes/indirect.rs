@@ -323,6 +323,7 @@ impl IndirectPass {
         self.check(inputs)?;
         let st = &frame.settings;
         let params = st.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
+        crate::vpl::check_no_near(st)?;
         if st.fixed_xi.is_some() || st.method == VplMethod::Reference {
             return Err(GpuError::Setting(
                 "the indirect pass runs slc, clamp or none with per-frame ξ (fixed ξ and the reference are GpuVpl's)".into(),
