@@ -255,20 +255,6 @@ impl Vpls {
         order
     }
 
-    /// Per near block, the box `(lo, hi)` of the positions of its VPLs that
-    /// carry flux (`lo > hi` when none does), as `vpl_pack` reduces it.
-    pub fn near_boxes(&self) -> Vec<(Vec3, Vec3)> {
-        self.near_order()
-            .chunks(slc_core::interleave::NEAR_BLOCK as usize)
-            .map(|block| {
-                block
-                    .iter()
-                    .filter(|&&i| self.flux[i] != Vec3::ZERO)
-                    .fold((Vec3::splat(3.0e38), Vec3::splat(-3.0e38)), |(lo, hi), &i| (lo.min(self.position[i]), hi.max(self.position[i])))
-            })
-            .collect()
-    }
-
     /// Number of VPLs.
     pub fn len(&self) -> usize {
         self.position.len()

@@ -131,12 +131,15 @@ impl VplContext {
         stats.kept_per_pixel = shaded.kept.iter().map(|&k| k as f64).sum::<f64>() / shaded_px;
         let t = Instant::now();
         let filtered = if settings.denoise && settings.method != VplMethod::Reference && shaded.denoised_ms.is_none() {
-            // The near field is exact: only the interleaved far field is filtered.
-            let near = |i: usize| shaded.near.get(i).copied().unwrap_or(Vec3::ZERO);
-            let far: Vec<Vec3> = shaded.irradiance.iter().enumerate().map(|(i, &e)| e - near(i)).collect();
-            let mut f = denoise::cross_bilateral(&far, gb, PERIOD);
-            f.iter_mut().enumerate().for_each(|(i, e)| *e += near(i));
-            f
+            if shaded.near.is_empty() {
+                denoise::cross_bilateral(&shaded.irradiance, gb, PERIOD)
+            } else {
+                // The near field is exact: only the interleaved far field is filtered.
+                let far: Vec<Vec3> = shaded.irradiance.iter().zip(&shaded.near).map(|(&e, &n)| e - n).collect();
+                let mut f = denoise::cross_bilateral(&far, gb, PERIOD);
+                f.iter_mut().zip(&shaded.near).for_each(|(e, &n)| *e += n);
+                f
+            }
         } else {
             shaded.irradiance
         };
@@ -231,9 +234,7 @@ impl VplContext {
                         }
                     }
                 };
-                let bounds = |pixels: &[usize]| {
-                    pixels.iter().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), &i| (lo.min(gb.position[i]), hi.max(gb.position[i])))
-                };
+                let bounds = |pixels: &[usize]| position_box(gb, pixels.iter().copied());
                 // Two-level tiled culling: super-tiles of SUPER × tile cull the
                 // subset; their tiles cull the super-tile's list.
                 for by in (0..sh).step_by(big) {
@@ -284,9 +285,7 @@ impl VplContext {
         }
         (e, near, kept, evals)
     }
-}
 
-impl VplContext {
     /// The near field of the split ([`slc_core::interleave::vpl_near_weight`]):
     /// at every pixel, the near share of the VPLs of every subset closer
     /// than `R_n = √near_r2`, at their own flux; with the kept counts and loop
@@ -319,15 +318,7 @@ impl VplContext {
         all.build_chunks();
         // The box of the valid G-buffer positions in [x0, x1) × [y0, y1).
         let bounds = |(x0, x1): (usize, usize), (y0, y1): (usize, usize)| {
-            let (mut lo, mut hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
-            for y in y0..y1 {
-                for x in x0..x1 {
-                    if gb.valid(y * w + x) {
-                        lo = lo.min(gb.position[y * w + x]);
-                        hi = hi.max(gb.position[y * w + x]);
-                    }
-                }
-            }
+            let (lo, hi) = position_box(gb, (y0..y1).flat_map(|y| (x0..x1).map(move |x| y * w + x)).filter(|&i| gb.valid(i)));
             (lo.x <= hi.x).then_some((lo, hi))
         };
         let rows: Vec<(Vec<(Vec3, u32)>, u64)> = (0..h.div_ceil(region))
@@ -365,6 +356,12 @@ impl VplContext {
         let (e, kept) = rows.into_iter().flat_map(|r| r.0).unzip();
         (e, kept, evals)
     }
+}
+
+/// The box `(lo, hi)` of the G-buffer positions of `pixels` (`lo > hi`
+/// when there are none).
+fn position_box(gb: &GBuffer, pixels: impl Iterator<Item = usize>) -> (Vec3, Vec3) {
+    pixels.fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), i| (lo.min(gb.position[i]), hi.max(gb.position[i])))
 }
 
 /// Region edge (pixels) of the near field's first culling level.

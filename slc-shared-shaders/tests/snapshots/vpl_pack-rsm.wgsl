@@ -585,12 +585,6 @@ fn near_block_index(tx: u32, ty: u32, size: u32) -> u32 {
     let side: u32 = size / 8;
     return ((ty / 8) * side + tx / 8) * NEAR_BLOCK + (ty % 8) * 8 + tx % 8;
 }
-fn near_block_tx(q: u32, size: u32) -> u32 {
-    return ((q / NEAR_BLOCK) % (size / 8)) * 8 + q % 8;
-}
-fn near_block_ty(q: u32, size: u32) -> u32 {
-    return ((q / NEAR_BLOCK) / (size / 8)) * 8 + (q % NEAR_BLOCK) / 8;
-}
 fn vpl_near_weight(d2: f32, near_r2: f32) -> f32 {
     if near_r2 <= 0.0 {
         return 0.0;

@@ -320,8 +320,8 @@ float cull_radius(float r2_1) {
 }
 
 float windowed_falloff(float d2_3, float range2_) {
-    float q_2 = (d2_3 / range2_);
-    float w_9 = clamp((1.0 - (q_2 * q_2)), 0.0, 1.0);
+    float q = (d2_3 / range2_);
+    float w_9 = clamp((1.0 - (q * q)), 0.0, 1.0);
     return ((w_9 * w_9) / max(d2_3, 0.0001));
 }
 
@@ -381,8 +381,8 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
 }
 
 bool sphere_overlaps_aabb(vec3 c_2, float r_2, vec3 bmin, vec3 bmax) {
-    vec3 q_3 = clamp(c_2, bmin, bmax);
-    vec3 v_10 = (q_3 - c_2);
+    vec3 q_1 = clamp(c_2, bmin, bmax);
+    vec3 v_10 = (q_1 - c_2);
     return (dot(v_10, v_10) <= (r_2 * r_2));
 }
 
@@ -711,7 +711,7 @@ vec3 face_against(vec3 n_8, vec3 dir_1) {
 vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
     vec3 e1_1 = (b_5 - a_6);
     vec3 e2_1 = (c_7 - a_6);
-    vec3 q_4 = (p_2 - a_6);
+    vec3 q_2 = (p_2 - a_6);
     float d11_ = dot(e1_1, e1_1);
     float d12_ = dot(e1_1, e2_1);
     float d22_ = dot(e2_1, e2_1);
@@ -719,8 +719,8 @@ vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
     if (!((abs(den) > 0.0))) {
         return vec3(1.0, 0.0, 0.0);
     }
-    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
-    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
+    float w1_ = (((d22_ * dot(q_2, e1_1)) - (d12_ * dot(q_2, e2_1))) / den);
+    float w2_ = (((d11_ * dot(q_2, e2_1)) - (d12_ * dot(q_2, e1_1))) / den);
     return vec3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
@@ -764,8 +764,8 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
     if (_e28) {
         return -1.0;
     }
-    vec3 q_5 = cross(s_2, e1_2);
-    float v_13 = (dot(d, q_5) * inv);
+    vec3 q_3 = cross(s_2, e1_2);
+    float v_13 = (dot(d, q_3) * inv);
     if (!((v_13 < 0.0))) {
         local_5 = ((u_3 + v_13) > 1.0);
     } else {
@@ -775,7 +775,7 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_2, q_5) * inv);
+    float t_3 = (dot(e2_2, q_3) * inv);
     if ((t_3 > t_min)) {
         local_6 = (t_3 < t_max_1);
     } else {
@@ -877,14 +877,6 @@ uint near_block_index(uint tx_1, uint ty_1, uint size_1) {
     return ((((((ty_1 / 8u) * side_1) + (tx_1 / 8u)) * NEAR_BLOCK) + ((ty_1 % 8u) * 8u)) + (tx_1 % 8u));
 }
 
-uint near_block_tx(uint q, uint size_2) {
-    return ((((q / NEAR_BLOCK) % (size_2 / 8u)) * 8u) + (q % 8u));
-}
-
-uint near_block_ty(uint q_1, uint size_3) {
-    return ((((q_1 / NEAR_BLOCK) / (size_3 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
-}
-
 float vpl_near_weight(float d2_9, float near_r2_) {
     if ((near_r2_ <= 0.0)) {
         return 0.0;
@@ -903,15 +895,15 @@ float path_survival(vec3 beta) {
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
 }
 
-float light_map_coord(uint t_1, uint size_4) {
+float light_map_coord(uint t_1, uint size_2) {
     float _e2 = to_f32_(t_1);
-    float _e7 = to_f32_(size_4);
+    float _e7 = to_f32_(size_2);
     return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
 }
 
-uint light_map_texel(float a_8, uint size_5) {
-    float _e6 = to_f32_(size_5);
-    float _e9 = to_f32_(size_5);
+uint light_map_texel(float a_8, uint size_3) {
+    float _e6 = to_f32_(size_3);
+    float _e9 = to_f32_(size_3);
     uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
     return _e14;
 }

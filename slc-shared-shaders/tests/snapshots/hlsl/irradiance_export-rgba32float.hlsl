@@ -342,8 +342,8 @@ float cull_radius(float r2_1)
 
 float windowed_falloff(float d2_3, float range2_)
 {
-    float q_2 = (d2_3 / range2_);
-    float w_8 = saturate((1.0 - (q_2 * q_2)));
+    float q = (d2_3 / range2_);
+    float w_8 = saturate((1.0 - (q * q)));
     return ((w_8 * w_8) / max(d2_3, 0.0001));
 }
 
@@ -409,8 +409,8 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 
 bool sphere_overlaps_aabb(float3 c_2, float r_2, float3 bmin, float3 bmax)
 {
-    float3 q_3 = clamp(c_2, bmin, bmax);
-    float3 v_6 = (q_3 - c_2);
+    float3 q_1 = clamp(c_2, bmin, bmax);
+    float3 v_6 = (q_1 - c_2);
     return (dot(v_6, v_6) <= (r_2 * r_2));
 }
 
@@ -866,7 +866,7 @@ float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
 {
     float3 e1_1 = (b_5 - a_6);
     float3 e2_1 = (c_7 - a_6);
-    float3 q_4 = (p_2 - a_6);
+    float3 q_2 = (p_2 - a_6);
     float d11_ = dot(e1_1, e1_1);
     float d12_ = dot(e1_1, e2_1);
     float d22_ = dot(e2_1, e2_1);
@@ -874,8 +874,8 @@ float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
     if (!((abs(den) > 0.0))) {
         return float3(1.0, 0.0, 0.0);
     }
-    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
-    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
+    float w1_ = (((d22_ * dot(q_2, e1_1)) - (d12_ * dot(q_2, e2_1))) / den);
+    float w2_ = (((d11_ * dot(q_2, e2_1)) - (d12_ * dot(q_2, e1_1))) / den);
     return float3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
@@ -923,8 +923,8 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
     if (_e28) {
         return -1.0;
     }
-    float3 q_5 = cross(s_2, e1_2);
-    float v_9 = (dot(d, q_5) * inv);
+    float3 q_3 = cross(s_2, e1_2);
+    float v_9 = (dot(d, q_3) * inv);
     if (!((v_9 < 0.0))) {
         local_6 = ((u_3 + v_9) > 1.0);
     } else {
@@ -934,7 +934,7 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_2, q_5) * inv);
+    float t_3 = (dot(e2_2, q_3) * inv);
     if ((t_3 > t_min)) {
         local_7 = (t_3 < t_max_1);
     } else {
@@ -1056,16 +1056,6 @@ uint near_block_index(uint tx_1, uint ty_1, uint size_1)
     return (((((naga_div(ty_1, 8u) * side_1) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u));
 }
 
-uint near_block_tx(uint q, uint size_2)
-{
-    return ((naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_2, 8u)) * 8u) + naga_mod(q, 8u));
-}
-
-uint near_block_ty(uint q_1, uint size_3)
-{
-    return ((naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_3, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u));
-}
-
 float vpl_near_weight(float d2_9, float near_r2_)
 {
     if ((near_r2_ <= 0.0)) {
@@ -1087,17 +1077,17 @@ float path_survival(float3 beta)
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
 }
 
-float light_map_coord(uint t_1, uint size_4)
+float light_map_coord(uint t_1, uint size_2)
 {
     const float _e2 = to_f32_(t_1);
-    const float _e7 = to_f32_(size_4);
+    const float _e7 = to_f32_(size_2);
     return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
 }
 
-uint light_map_texel(float a_8, uint size_5)
+uint light_map_texel(float a_8, uint size_3)
 {
-    const float _e6 = to_f32_(size_5);
-    const float _e9 = to_f32_(size_5);
+    const float _e6 = to_f32_(size_3);
+    const float _e9 = to_f32_(size_3);
     const uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
     return _e14;
 }

@@ -363,8 +363,8 @@ float windowed_falloff(
     float d2_3,
     float range2_
 ) {
-    float q_2 = d2_3 / range2_;
-    float w_8 = metal::saturate(1.0 - (q_2 * q_2));
+    float q = d2_3 / range2_;
+    float w_8 = metal::saturate(1.0 - (q * q));
     return (w_8 * w_8) / metal::max(d2_3, 0.0001);
 }
 
@@ -446,8 +446,8 @@ bool sphere_overlaps_aabb(
     metal::float3 bmin,
     metal::float3 bmax
 ) {
-    metal::float3 q_3 = metal::clamp(c_2, bmin, bmax);
-    metal::float3 v_6 = q_3 - c_2;
+    metal::float3 q_1 = metal::clamp(c_2, bmin, bmax);
+    metal::float3 v_6 = q_1 - c_2;
     return metal::dot(v_6, v_6) <= (r_2 * r_2);
 }
 
@@ -1025,7 +1025,7 @@ metal::float3 barycentric(
 ) {
     metal::float3 e1_1 = b_5 - a_6;
     metal::float3 e2_1 = c_7 - a_6;
-    metal::float3 q_4 = p_2 - a_6;
+    metal::float3 q_2 = p_2 - a_6;
     float d11_ = metal::dot(e1_1, e1_1);
     float d12_ = metal::dot(e1_1, e2_1);
     float d22_ = metal::dot(e2_1, e2_1);
@@ -1033,8 +1033,8 @@ metal::float3 barycentric(
     if (!((metal::abs(den) > 0.0))) {
         return metal::float3(1.0, 0.0, 0.0);
     }
-    float w1_ = ((d22_ * metal::dot(q_4, e1_1)) - (d12_ * metal::dot(q_4, e2_1))) / den;
-    float w2_ = ((d11_ * metal::dot(q_4, e2_1)) - (d12_ * metal::dot(q_4, e1_1))) / den;
+    float w1_ = ((d22_ * metal::dot(q_2, e1_1)) - (d12_ * metal::dot(q_2, e2_1))) / den;
+    float w2_ = ((d11_ * metal::dot(q_2, e2_1)) - (d12_ * metal::dot(q_2, e1_1))) / den;
     return metal::float3((1.0 - w1_) - w2_, w1_, w2_);
 }
 
@@ -1092,8 +1092,8 @@ float ray_triangle(
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q_5 = metal::cross(s_2, e1_2);
-    float v_9 = metal::dot(d, q_5) * inv;
+    metal::float3 q_3 = metal::cross(s_2, e1_2);
+    float v_9 = metal::dot(d, q_3) * inv;
     if (!((v_9 < 0.0))) {
         local_6 = (u_3 + v_9) > 1.0;
     } else {
@@ -1103,7 +1103,7 @@ float ray_triangle(
     if (_e42) {
         return -1.0;
     }
-    float t_3 = metal::dot(e2_2, q_5) * inv;
+    float t_3 = metal::dot(e2_2, q_3) * inv;
     if (t_3 > t_min) {
         local_7 = t_3 < t_max_1;
     } else {
@@ -1256,20 +1256,6 @@ uint near_block_index(
     return ((((naga_div(ty_1, 8u) * side_1) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u);
 }
 
-uint near_block_tx(
-    uint q,
-    uint size_2
-) {
-    return (naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_2, 8u)) * 8u) + naga_mod(q, 8u);
-}
-
-uint near_block_ty(
-    uint q_1,
-    uint size_3
-) {
-    return (naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_3, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u);
-}
-
 float vpl_near_weight(
     float d2_9,
     float near_r2_
@@ -1303,19 +1289,19 @@ float path_survival(
 
 float light_map_coord(
     uint t_1,
-    uint size_4
+    uint size_2
 ) {
     float _e2 = to_f32_(t_1);
-    float _e7 = to_f32_(size_4);
+    float _e7 = to_f32_(size_2);
     return ((2.0 * (_e2 + 0.5)) / _e7) - 1.0;
 }
 
 uint light_map_texel(
     float a_8,
-    uint size_5
+    uint size_3
 ) {
-    float _e6 = to_f32_(size_5);
-    float _e9 = to_f32_(size_5);
+    float _e6 = to_f32_(size_3);
+    float _e9 = to_f32_(size_3);
     uint _e14 = to_u32_(metal::clamp(metal::floor(((a_8 + 1.0) * 0.5) * _e6), 0.0, _e9 - 1.0));
     return _e14;
 }
