@@ -34,9 +34,16 @@ crate::shared! {
     /// (its square overflows to ∞ in the containment tests).
     pub const SPHERE_HUGE: f32 = 340282346638528859811704183484516925440.0;
 
-    /// Padding for a sphere of radius `r` at `c`: a few ulps of `|c|∞ + r`.
+    /// Absolute floor of the padding, 10⁻¹⁸: squares of lengths below
+    /// ~10⁻¹⁹ are subnormal or flush to 0 (on GPUs), so relative padding
+    /// alone lets a parent miss a point its child holds (fuzz/bsh_vs_brute
+    /// found lights 10⁻²³ apart). Its square, 10⁻³⁶, is a normal f32.
+    pub const SPHERE_PAD_ABS: f32 = 1e-18;
+
+    /// Padding for a sphere of radius `r` at `c`: a few ulps of `|c|∞ + r`,
+    /// and at least [`SPHERE_PAD_ABS`].
     pub fn sphere_pad(r: f32, c: vec3f) -> f32 {
-        return (r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD;
+        return (r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD + SPHERE_PAD_ABS;
     }
 
     /// The smallest sphere holding spheres (c₁, r₁) and (c₂, r₂), as
@@ -153,8 +160,7 @@ impl Sphere {
         for p in pts {
             r = r.max((*p - center).length());
         }
-        let scale = r + center.abs().max_element();
-        Self { center, radius: r + scale * PAD }
+        Self { center, radius: r + sphere_pad(r, center) }
     }
 
     /// The exact minimal sphere of a triangle: the circumsphere when the

@@ -145,8 +145,9 @@ fn sphere_overlaps_sphere(c1: vec3f, r1: f32, c2: vec3f, r2: f32) -> bool {
 }
 const SPHERE_PAD: f32 = 0.000000476837158203125;
 const SPHERE_HUGE: f32 = 340282346638528859811704183484516925440.0;
+const SPHERE_PAD_ABS: f32 = 1e-18;
 fn sphere_pad(r: f32, c: vec3f) -> f32 {
-    return (r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD;
+    return (r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD + SPHERE_PAD_ABS;
 }
 fn sphere_union(c1: vec3f, r1: f32, c2: vec3f, r2: f32) -> vec4f {
     let v: vec3f = c2 - c1;

@@ -188,6 +188,7 @@ const float TWO_PI = 6.2831855;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
@@ -339,7 +340,7 @@ bool sphere_overlaps_sphere(vec3 c1_, float r1_, vec3 c2_, float r2_2) {
 }
 
 float sphere_pad(float r_1, vec3 c_1) {
-    return ((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD);
+    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
 }
 
 vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {

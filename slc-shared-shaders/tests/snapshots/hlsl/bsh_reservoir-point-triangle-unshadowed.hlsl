@@ -214,6 +214,7 @@ static const float TWO_PI = 6.2831855;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
+static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
@@ -379,7 +380,7 @@ bool sphere_overlaps_sphere(float3 c1_, float r1_, float3 c2_, float r2_2)
 
 float sphere_pad(float r_1, float3 c_1)
 {
-    return ((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD);
+    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
 }
 
 float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
