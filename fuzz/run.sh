@@ -3,10 +3,15 @@
 #   fuzz/run.sh 600      # the long run: 10 minutes per target
 # The IES target starts from ../shared/data/ies/ as its corpus, and every
 # target first replays its past crashes in fuzz/regressions/<target>/. New
-# crashes land in fuzz/artifacts/<target>/ and make this script exit non-zero.
+# crashes land in fuzz/artifacts/<target>/ and make this script exit non-zero,
+# after printing the input (cargo fuzz fmt) so a CI log is enough to reproduce.
+# FUZZ_SEED fixes libFuzzer's seed (CI does, so its gate is reproducible);
+# without it each run explores from a fresh random seed.
 set -euo pipefail
 cd "$(dirname "$0")"
 secs="${1:-30}"
+seed=()
+[ -n "${FUZZ_SEED:-}" ] && seed=("-seed=$FUZZ_SEED")
 targets=(ies_parse scene_loaders bsh_vs_brute range_math kernel_features)
 cargo +nightly fuzz build "${targets[@]}" >/dev/null 2>&1 || cargo +nightly fuzz build
 for t in "${targets[@]}"; do
@@ -16,11 +21,12 @@ for t in "${targets[@]}"; do
     fi
     regress=()
     [ -d "regressions/$t" ] && regress=("regressions/$t")
-    echo "== fuzz $t for ${secs}s"
-    cargo +nightly fuzz run "$t" "corpus/$t" "${regress[@]}" -- -max_total_time="$secs" -rss_limit_mb=2048 -timeout=10 2>&1 \
+    echo "== fuzz $t for ${secs}s${FUZZ_SEED:+ (seed $FUZZ_SEED)}"
+    cargo +nightly fuzz run "$t" "corpus/$t" "${regress[@]}" -- -max_total_time="$secs" -rss_limit_mb=2048 -timeout=10 "${seed[@]}" 2>&1 \
         | grep -E "^(#[0-9]+ +DONE|==[0-9]+== ERROR|SUMMARY|Done [0-9]+ runs)" || true
     if compgen -G "artifacts/$t/*" >/dev/null; then
         echo "fuzz $t found a crash: $(ls artifacts/$t)" >&2
+        for a in artifacts/"$t"/*; do cargo +nightly fuzz fmt "$t" "$a" 2>&1 | tail -40 >&2 || true; done
         exit 1
     fi
 done
