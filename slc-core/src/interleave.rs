@@ -55,6 +55,17 @@ crate::shared! {
         return ((ty / 8) * side + tx / 8) * NEAR_BLOCK + (ty % 8) * 8 + tx % 8;
     }
 
+    /// Texel column of near-block index `q` in an `s × s` map (the inverse
+    /// of [`near_block_index`] with [`near_block_ty`]).
+    pub fn near_block_tx(q: u32, size: u32) -> u32 {
+        return ((q / NEAR_BLOCK) % (size / 8)) * 8 + q % 8;
+    }
+
+    /// Texel row of near-block index `q` in an `s × s` map.
+    pub fn near_block_ty(q: u32, size: u32) -> u32 {
+        return ((q / NEAR_BLOCK) / (size / 8)) * 8 + (q % NEAR_BLOCK) / 8;
+    }
+
     /// The near-field split's share of a VPL at squared distance `d²` from
     /// the receiver: `w = smoothstep(t)`, `t = clamp((R_n² − d²)/(¾R_n²),
     /// 0, 1)`, so 1 within `R_n/2`, 0 from `R_n` on. The pixel shades `w·T`
@@ -105,6 +116,7 @@ mod tests {
                 assert!(!seen[q as usize], "index {q} twice");
                 seen[q as usize] = true;
                 assert_eq!(q / NEAR_BLOCK, (ty / 8) * (s / 8) + tx / 8);
+                assert_eq!((near_block_tx(q, s), near_block_ty(q, s)), (tx, ty));
             }
         }
         assert!(seen.iter().all(|&b| b));

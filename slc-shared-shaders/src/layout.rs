@@ -220,7 +220,7 @@ slc_core::shared! {
         pub pad1: u32,
     }
 
-    /// Uniforms of `vpl_tiled`.
+    /// Uniforms of `vpl_tiled`, `vpl_near` and `vpl_denoise`.
     pub struct VplParams {
         /// Image width.
         pub width: u32,
@@ -230,6 +230,27 @@ slc_core::shared! {
         pub lights_per_subset: u32,
         /// Squared clamp distance of the VPL fall-off.
         pub min_d2: f32,
+        /// `R_n²` of the near-field split (0: none).
+        pub near_r2: f32,
+        /// Near blocks of [`NEAR_BLOCK`](slc_core::interleave::NEAR_BLOCK) VPLs.
+        pub near_blocks: u32,
+        /// Padding.
+        pub pad0: u32,
+        /// Padding.
+        pub pad1: u32,
+    }
+
+    /// The box of one near block's VPL positions (`lo > hi` when every VPL
+    /// of the block carries zero flux), 32 bytes.
+    pub struct GpuNearBox {
+        /// Lower corner.
+        pub lo: vec3f,
+        /// Padding.
+        pub pad0: f32,
+        /// Upper corner.
+        pub hi: vec3f,
+        /// Padding.
+        pub pad1: f32,
     }
 
     /// A VPL as an engine writes it into the VPL buffer of the indirect

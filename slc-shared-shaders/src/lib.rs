@@ -252,6 +252,9 @@ pub enum Kernel {
     PtExtend,
     /// Cross-bilateral denoise of the VPL irradiance.
     VplDenoise,
+    /// The near field of the VPL split, per full-resolution tile, added to
+    /// the (denoised) interleaved irradiance.
+    VplNear,
     /// An engine's G-buffer textures into the shading buffers.
     GbufferImport,
     /// VPLs (from an RSM or a VPL buffer) into the interleaved light buffer.
@@ -270,11 +273,12 @@ pub enum Kernel {
 
 impl Kernel {
     /// All kernels.
-    pub const ALL: [Kernel; 13] = [
+    pub const ALL: [Kernel; 14] = [
         Kernel::LightUpdate,
         Kernel::BshRefit,
         Kernel::VplTiled,
         Kernel::VplDenoise,
+        Kernel::VplNear,
         Kernel::BshReservoir,
         Kernel::PtConnect,
         Kernel::PtExtend,
@@ -296,6 +300,7 @@ impl Kernel {
             Kernel::PtConnect => "pt_connect",
             Kernel::PtExtend => "pt_extend",
             Kernel::VplDenoise => "vpl_denoise",
+            Kernel::VplNear => "vpl_near",
             Kernel::GbufferImport => "gbuffer_import",
             Kernel::VplPack => "vpl_pack",
             Kernel::IrradianceExport => "irradiance_export",
@@ -313,6 +318,7 @@ impl Kernel {
             self,
             Kernel::VplTiled
                 | Kernel::VplDenoise
+                | Kernel::VplNear
                 | Kernel::GbufferImport
                 | Kernel::VplPack
                 | Kernel::IrradianceExport
@@ -459,7 +465,7 @@ impl Default for Features {
     }
 }
 
-const TEMPLATES: [(&str, &str); 19] = [
+const TEMPLATES: [(&str, &str); 20] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
     ("geometry.wgsl", include_str!("templates/geometry.wgsl")),
@@ -468,6 +474,7 @@ const TEMPLATES: [(&str, &str); 19] = [
     ("bsh_refit", include_str!("templates/bsh_refit.wgsl")),
     ("vpl_tiled", include_str!("templates/vpl_tiled.wgsl")),
     ("vpl_denoise", include_str!("templates/vpl_denoise.wgsl")),
+    ("vpl_near", include_str!("templates/vpl_near.wgsl")),
     ("bsh_reservoir", include_str!("templates/bsh_reservoir.wgsl")),
     ("pt_connect", include_str!("templates/pt_connect.wgsl")),
     ("pt_mis.wgsl", include_str!("templates/pt_mis.wgsl")),
@@ -519,6 +526,16 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
                     "tile {0}x{0} with {1} list slots needs {bytes} bytes of workgroup memory (WebGPU guarantees 16384)",
                     f.tile_size, f.max_tile_lights
                 ));
+            }
+        }
+        Kernel::VplNear => {
+            if f.lights != (LightSet { vpl: true, ..LightSet::default() }) {
+                return bad(format!("vpl_near shades VPLs only; the scene asks for [{}]", f.lights.names().join(", ")));
+            }
+            // Workgroup memory: two vec3f and a block slot per thread, the
+            // light list of one block, two counters; at most 256 threads.
+            if !(1..=16).contains(&f.tile_size) || !f.tile_size.is_power_of_two() || !(1..=16).contains(&f.interleave) {
+                return bad(format!("vpl_near: tile {} must be a power of two in 1..=16, period {} in 1..=16", f.tile_size, f.interleave));
             }
         }
         Kernel::BshReservoir | Kernel::PtConnect | Kernel::PtExtend if f.lights.is_empty() => {

@@ -561,7 +561,7 @@ impl<'a> GpuVplFrame<'a> {
             // The CPU's "direct" includes its shadow rays.
             direct_ms: sum(&["shadow map", "direct"]),
             rsm_ms: sum(&["RSM", "VPL generation"]),
-            shading_ms: sum(&["light update", "shading"]),
+            shading_ms: sum(&["light update", "shading", "near field"]),
             denoise_ms: sum(&["denoise", "irradiance export", "composition"]),
             total_ms: times.iter().map(|t| t.ms).sum(),
             vpls: (self.desc.rsm_size as usize).pow(2),

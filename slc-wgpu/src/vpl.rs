@@ -1,5 +1,5 @@
 //! Application A on the GPU: the VPL pipeline's shading and denoise run in
-//! the `light_update`, `vpl_tiled` and `vpl_denoise` kernels of
+//! the `light_update`, `vpl_tiled`, `vpl_denoise` and `vpl_near` kernels of
 //! slc-shared-shaders, on the G-buffer and VPLs of a
 //! [`slc_scene::vpl::VplInputs`] (whoever made them: the CPU backend ray
 //! casts them), so both backends shade the same inputs. [`GpuVpl`] is an
@@ -12,7 +12,7 @@ use slc_core::light::vpl_threshold_range2;
 use slc_core::range::random_range2;
 use slc_scene::backend::IndirectShader;
 use slc_scene::vpl::{PERIOD, Shaded, VplInputs, VplMethod, VplSettings};
-use slc_shared_shaders::layout::{FrameParams, GpuLight, LIGHT_VPL, VplParams};
+use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuNearBox, LIGHT_VPL, VplParams};
 use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, generate};
 use std::time::Instant;
 use wgpu::util::DeviceExt;
@@ -50,12 +50,18 @@ pub struct GpuVpl<'a> {
     ids_all: wgpu::Buffer,
     rt2: wgpu::Buffer,
     r2: wgpu::Buffer,
+    /// Near-block order → slot in `lights` ([`Vpls::near_order`](slc_scene::vpl::Vpls::near_order)).
+    near_slots: wgpu::Buffer,
+    near_boxes: wgpu::Buffer,
+    near_blocks: u32,
     irradiance: wgpu::Buffer,
     /// Denoised irradiance.
     filtered: wgpu::Buffer,
     readback: wgpu::Buffer,
     denoise: wgpu::ComputePipeline,
     denoise_layout: wgpu::BindGroupLayout,
+    near: wgpu::ComputePipeline,
+    near_layout: wgpu::BindGroupLayout,
     update: wgpu::ComputePipeline,
     update_layout: wgpu::BindGroupLayout,
     tiled: Vec<(VplMethod, Layout)>,
@@ -120,6 +126,12 @@ impl<'a> GpuVpl<'a> {
         let scale = subsets as f32;
         let lights: Vec<GpuLight> = order.iter().map(|&i| vpl(i, scale)).collect();
         let ids: Vec<u32> = order.iter().map(|&i| i as u32).collect();
+        let mut slot_of = vec![0u32; order.len()];
+        for (slot, &i) in order.iter().enumerate() {
+            slot_of[i] = slot as u32;
+        }
+        let near_slots: Vec<u32> = v.near_order().iter().map(|&i| slot_of[i]).collect();
+        let near_boxes: Vec<GpuNearBox> = v.near_boxes().iter().map(|&(lo, hi)| GpuNearBox { lo, pad0: 0.0, hi, pad1: 0.0 }).collect();
         let lights_all: Vec<GpuLight> = (0..v.len()).map(|i| vpl(i, 1.0)).collect();
         let ids_all: Vec<u32> = (0..v.len() as u32).collect();
         let zeros = vec![0.0f32; v.len().max(1)];
@@ -149,6 +161,8 @@ impl<'a> GpuVpl<'a> {
         let denoise_layout = bind_layout(gpu, "vpl_denoise", 3, 1, false);
         let df = Features { lights: LightSet { vpl: true, ..LightSet::default() }, tile_size: TILE, interleave: PERIOD, ..Features::default() };
         let denoise = pipeline(gpu, "vpl_denoise", generate(Kernel::VplDenoise, &df)?, &[&denoise_layout]);
+        let near_layout = bind_layout(gpu, "vpl_near", 5, 1, false);
+        let near = pipeline(gpu, "vpl_near", generate(Kernel::VplNear, &df)?, &[&near_layout]);
         let vpl_only = LightSet { vpl: true, ..LightSet::default() };
         let mut tiled = Vec::new();
         for (m, cm) in [(VplMethod::Slc, CullMethod::Slc), (VplMethod::Clamp, CullMethod::Clamp), (VplMethod::None, CullMethod::None)] {
@@ -183,11 +197,16 @@ impl<'a> GpuVpl<'a> {
             ids_all: storage(gpu, "ids_all", bytemuck::cast_slice(&ids_all), wgpu::BufferUsages::empty()),
             rt2: storage(gpu, "rt2", bytemuck::cast_slice(&zeros), wgpu::BufferUsages::empty()),
             r2: storage(gpu, "r2", bytemuck::cast_slice(&zeros), wgpu::BufferUsages::empty()),
+            near_slots: storage(gpu, "near_slots", bytemuck::cast_slice(&near_slots), wgpu::BufferUsages::empty()),
+            near_boxes: storage(gpu, "near_boxes", bytemuck::cast_slice(&near_boxes), wgpu::BufferUsages::empty()),
+            near_blocks: near_boxes.len() as u32,
             irradiance,
             filtered,
             readback,
             denoise,
             denoise_layout,
+            near,
+            near_layout,
             update,
             update_layout,
             tiled,
@@ -207,7 +226,6 @@ impl<'a> GpuVpl<'a> {
     /// submitted kernels.
     pub fn shade(&self, settings: &VplSettings) -> Result<Shaded, GpuError> {
         let params = settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
-        check_no_near(settings)?;
         let _frame = self.frame.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
         let gpu = self.gpu;
         let (_, layout) = self.tiled.iter().find(|(m, _)| *m == settings.method).ok_or(GpuError::Setting("unknown method".into()))?;
@@ -235,7 +253,18 @@ impl<'a> GpuVpl<'a> {
             contents: bytemuck::bytes_of(&frame),
             usage: wgpu::BufferUsages::UNIFORM,
         });
-        let vp = VplParams { width: self.width, height: self.height, lights_per_subset: layout.per_subset, min_d2: self.min_d2 };
+        // The reference shades every VPL in full: no near-field split.
+        let near_r2 = if reference { 0.0 } else { settings.near_r2(self.min_d2) };
+        let vp = VplParams {
+            width: self.width,
+            height: self.height,
+            lights_per_subset: layout.per_subset,
+            min_d2: self.min_d2,
+            near_r2,
+            near_blocks: self.near_blocks,
+            pad0: 0,
+            pad1: 0,
+        };
         let vp_buf = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("vpl params"),
             contents: bytemuck::bytes_of(&vp),
@@ -245,7 +274,7 @@ impl<'a> GpuVpl<'a> {
             bufs.iter().enumerate().map(|(i, b)| wgpu::BindGroupEntry { binding: i as u32, resource: b.as_entire_binding() }).collect()
         }
         let denoise = settings.denoise && !reference;
-        let mut timer = Timer::new(gpu, 2);
+        let mut timer = Timer::new(gpu, 3);
         let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc vpl") });
         {
             let mut pass = enc
@@ -271,8 +300,10 @@ impl<'a> GpuVpl<'a> {
             let (sub_w, sub_h) = (self.width.div_ceil(p), self.height.div_ceil(p));
             pass.dispatch_workgroups(sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), p * p);
         }
+        let near = near_r2 > 0.0;
         if let Some(t) = &timer
             && !denoise
+            && !near
         {
             t.resolve(&mut enc);
         }
@@ -296,7 +327,9 @@ impl<'a> GpuVpl<'a> {
                 pass.set_bind_group(0, &bg, &[]);
                 pass.dispatch_workgroups(self.width.div_ceil(TILE), self.height.div_ceil(TILE), 1);
             }
-            if let Some(t) = &timer {
+            if let Some(t) = &timer
+                && !near
+            {
                 t.resolve(&mut enc);
             }
             let t = Instant::now();
@@ -304,15 +337,40 @@ impl<'a> GpuVpl<'a> {
             gpu.wait()?;
             denoised_ms = Some(t.elapsed().as_secs_f64() * 1e3);
         }
+        let result = if denoise { &self.filtered } else { &self.irradiance };
+        if near {
+            // The near field, added after the denoise (which filters only the
+            // interleaved far field), as its own timed pass.
+            let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc vpl near") });
+            {
+                let writes = timer.as_mut().and_then(|t| t.next());
+                let mut pass = enc.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc vpl near"), timestamp_writes: writes });
+                let bg = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some("vpl_near"),
+                    layout: &self.near_layout,
+                    entries: &entries(&[&vp_buf, &self.gb_position, &self.gb_normal, &self.lights, &self.near_slots, &self.near_boxes, result]),
+                });
+                pass.set_pipeline(&self.near);
+                pass.set_bind_group(0, &bg, &[]);
+                pass.dispatch_workgroups(self.width.div_ceil(TILE), self.height.div_ceil(TILE), 1);
+            }
+            if let Some(t) = &timer {
+                t.resolve(&mut enc);
+            }
+            let t = Instant::now();
+            gpu.queue.submit([enc.finish()]);
+            gpu.wait()?;
+            shading_ms += t.elapsed().as_secs_f64() * 1e3;
+        }
         if let Some(timer) = &timer {
             let d = timer.durations_ms(gpu)?;
-            shading_ms = d[0];
+            shading_ms = d[0] + if near { d[1 + denoise as usize] } else { 0.0 };
             if denoise {
                 denoised_ms = d.get(1).copied();
             }
         }
 
-        let data: Vec<[f32; 4]> = read_back(gpu, if denoise { &self.filtered } else { &self.irradiance }, &self.readback)?;
+        let data: Vec<[f32; 4]> = read_back(gpu, result, &self.readback)?;
         let mut irradiance = Vec::with_capacity(data.len());
         let mut kept = Vec::with_capacity(data.len());
         let mut evaluations = 0u64;
@@ -335,16 +393,5 @@ impl IndirectShader for GpuVpl<'_> {
 
     fn shade(&self, settings: &VplSettings) -> Result<Shaded, GpuError> {
         GpuVpl::shade(self, settings)
-    }
-}
-
-/// The near-field split ([`VplSettings::near_radius`]) runs on the CPU
-/// backend only so far: a GPU shader asked for it says so.
-pub(crate) fn check_no_near(settings: &VplSettings) -> Result<(), GpuError> {
-    match settings.near_radius {
-        Some(r) if r > 0.0 => {
-            Err(GpuError::Setting(format!("near radius {r}: the near-field split runs on the CPU backend only (use --backend cpu)")))
-        }
-        _ => Ok(()),
     }
 }

@@ -2,6 +2,9 @@
 // VPLs from {% if source == "rsm" %}a reflective shadow map (one per texel){% else %}an engine's VPL buffer{% endif %} into vpl_tiled's light
 // buffer: subset after subset ({{ period }}x{{ period }} interleaving), flux scaled by
 // the period squared, each VPL's ξ id, r_t² (SLC) or the fixed r² (clamp).
+// For the near field (vpl_near): workgroup b packs near block b ({% if source == "rsm" %}an 8x8
+// patch of texels{% else %}64 consecutive records{% endif %}), writes where each of its VPLs went
+// (near_slots, in near-block order) and the box of their positions.
 
 const P: u32 = {{ period }}u;
 
@@ -17,33 +20,61 @@ const P: u32 = {{ period }}u;
 @group(0) @binding(5) var<storage, read_write> ids: array<u32>;
 @group(0) @binding(6) var<storage, read_write> rt2: array<f32>;
 @group(0) @binding(7) var<storage, read_write> r2: array<f32>;
+@group(0) @binding(8) var<storage, read_write> near_slots: array<u32>;
+@group(0) @binding(9) var<storage, read_write> near_boxes: array<GpuNearBox>;
 // Declared because the shared library reads it; unused here, so not bound.
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
 
-@compute @workgroup_size({{ wg }})
-fn main(@builtin(global_invocation_id) gid: vec3u) {
-    let i = gid.x;
-    if i >= params.count {
-        return;
-    }
+var<workgroup> wg_lo: array<vec3f, NEAR_BLOCK>;
+var<workgroup> wg_hi: array<vec3f, NEAR_BLOCK>;
+
+@compute @workgroup_size(NEAR_BLOCK)
+fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(workgroup_id) wg: vec3u, @builtin(local_invocation_index) li: u32) {
+    // Near-block order: VPL q of the dispatch.
+    let q = gid.x;
+    let inside = q < params.count;
+    var lo = vec3f(3.0e38);
+    var hi = vec3f(-3.0e38);
+    if inside {
 {% if source == "rsm" %}
-    let tx = i % params.size;
-    let ty = i / params.size;
-    let texel = vec2i(i32(tx), i32(ty));
-    let position = textureLoad(rsm_position, texel, 0).xyz;
-    let normal = textureLoad(rsm_normal, texel, 0).xyz;
-    let flux = textureLoad(rsm_flux, texel, 0).xyz * params.scale;
-    let slot = interleave_slot(tx, ty, params.size, P);
+        let tx = near_block_tx(q, params.size);
+        let ty = near_block_ty(q, params.size);
+        let i = ty * params.size + tx;
+        let texel = vec2i(i32(tx), i32(ty));
+        let position = textureLoad(rsm_position, texel, 0).xyz;
+        let normal = textureLoad(rsm_normal, texel, 0).xyz;
+        let flux = textureLoad(rsm_flux, texel, 0).xyz * params.scale;
+        let slot = interleave_slot(tx, ty, params.size, P);
 {% else %}
-    let r = records[i];
-    let position = r.position;
-    let normal = r.normal;
-    let flux = r.flux * params.scale;
-    let slot = interleave_slot_linear(i, params.per_subset, P);
+        let i = q;
+        let r = records[i];
+        let position = r.position;
+        let normal = r.normal;
+        let flux = r.flux * params.scale;
+        let slot = interleave_slot_linear(i, params.per_subset, P);
 {% endif %}
-    lights[slot] = GpuLight(position, LIGHT_VPL, normal, 0.0, vec3f(0.0), 0.0, flux, 0u);
-    ids[slot] = i;
-    let slc = params.slc != 0u;
-    rt2[slot] = select(0.0, vpl_rt2(flux, params.exposure, params.error_bound, params.mode), slc);
-    r2[slot] = select(params.fixed_r2, 0.0, slc);
+        lights[slot] = GpuLight(position, LIGHT_VPL, normal, 0.0, vec3f(0.0), 0.0, flux, 0u);
+        ids[slot] = i;
+        let slc = params.slc != 0u;
+        rt2[slot] = select(0.0, vpl_rt2(flux, params.exposure, params.error_bound, params.mode), slc);
+        r2[slot] = select(params.fixed_r2, 0.0, slc);
+        near_slots[q] = slot;
+        if any(flux != vec3f(0.0)) {
+            lo = position;
+            hi = position;
+        }
+    }
+    wg_lo[li] = lo;
+    wg_hi[li] = hi;
+    workgroupBarrier();
+    for (var stride = NEAR_BLOCK / 2u; stride > 0u; stride = stride / 2u) {
+        if li < stride {
+            wg_lo[li] = min(wg_lo[li], wg_lo[li + stride]);
+            wg_hi[li] = max(wg_hi[li], wg_hi[li + stride]);
+        }
+        workgroupBarrier();
+    }
+    if li == 0u && inside {
+        near_boxes[wg.x] = GpuNearBox(wg_lo[0], 0.0, wg_hi[0], 0.0);
+    }
 }

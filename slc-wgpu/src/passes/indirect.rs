@@ -6,8 +6,11 @@
 //! `vpl_pack` (RSM texels or VPL records → the light buffer, subset after
 //! subset, flux × P², `r_t²`), `light_update` (SLC: `r² = r_t²/(1−ξ)` with
 //! `ξ = xi_for(seed, frame, id)`, the CPU's numbers), `vpl_tiled` (tiled
-//! culling and shading per 8×8 interleaved sub-image), `vpl_denoise`
-//! (cross-bilateral, when `settings.denoise`) and `irradiance_export`.
+//! culling and shading per 8×8 interleaved sub-image, the far field of the
+//! near-field split), `vpl_denoise` (cross-bilateral, when
+//! `settings.denoise`), `vpl_near` (the near field: every VPL closer than
+//! `R_n` at every pixel, added after the denoise; when `R_n > 0`) and
+//! `irradiance_export`.
 //!
 //! | input | format | size | usage | content |
 //! |---|---|---|---|---|
@@ -59,7 +62,8 @@ use crate::kernel::{B, layout, pipeline, storage, zeroed};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use slc_scene::vpl::{PERIOD, VplMethod, VplSettings};
-use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuVplRecord, ImageParams, PackParams, VplParams};
+use slc_core::interleave::NEAR_BLOCK;
+use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuNearBox, GpuVplRecord, ImageParams, PackParams, VplParams};
 use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, VplSource, generate};
 use wgpu::util::DeviceExt;
 
@@ -144,7 +148,9 @@ pub struct IndirectFrame {
     pub settings: VplSettings,
     /// Eye position (the denoise's depth is the distance from it).
     pub eye: Vec3,
-    /// Clamp distance of the VPL fall-off `1/max(d², min_distance²)`.
+    /// Clamp distance of the VPL fall-off `1/max(d², min_distance²)`; the
+    /// default near radius is [`slc_scene::vpl::NEAR_FACTOR`] times it
+    /// ([`VplSettings::near_radius`]).
     pub min_distance: f32,
 }
 
@@ -162,12 +168,15 @@ pub struct IndirectPass {
     ids: wgpu::Buffer,
     rt2: wgpu::Buffer,
     r2: wgpu::Buffer,
+    near_slots: wgpu::Buffer,
+    near_boxes: wgpu::Buffer,
     import: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
     pack: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
     update: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
     tiled: Vec<(VplMethod, wgpu::ComputePipeline)>,
     tiled_layout: wgpu::BindGroupLayout,
     denoise: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
+    near: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
     export: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
 }
 
@@ -199,7 +208,7 @@ impl IndirectPass {
         let groups = lim.max_compute_workgroups_per_dimension as u64;
         gpu.require("max_compute_workgroups_per_dimension", w.div_ceil(TILE).max(h.div_ceil(TILE)) as u64, groups)?;
         gpu.require("max_compute_workgroups_per_dimension (VPLs)", count.div_ceil(WG as u64), groups)?;
-        gpu.require("max_storage_buffers_per_shader_stage", 6, lim.max_storage_buffers_per_shader_stage as u64)?;
+        gpu.require("max_storage_buffers_per_shader_stage", 7, lim.max_storage_buffers_per_shader_stage as u64)?;
         gpu.require("max_storage_textures_per_shader_stage", 1, lim.max_storage_textures_per_shader_stage as u64)?;
         let per_subset = (count / subsets as u64) as u32;
         let list = per_subset.clamp(1, crate::vpl::TILE_LIST);
@@ -219,11 +228,12 @@ impl IndirectPass {
         };
         let mut pack_entries = vec![(0, Uniform)];
         pack_entries.extend_from_slice(pack_inputs);
-        pack_entries.extend([(4, Write), (5, Write), (6, Write), (7, Write)]);
+        pack_entries.extend([(4, Write), (5, Write), (6, Write), (7, Write), (8, Write), (9, Write)]);
         let pack_layout = layout(gpu, "vpl_pack", &pack_entries);
         let update_layout = layout(gpu, "light_update", &[(0, Uniform), (1, Read), (2, Read), (3, Write)]);
         let tiled_layout = layout(gpu, "vpl_tiled", &[(0, Uniform), (1, Read), (2, Read), (3, Read), (4, Read), (5, Read), (6, Write)]);
         let denoise_layout = layout(gpu, "vpl_denoise", &[(0, Uniform), (1, Read), (2, Read), (3, Read), (4, Write)]);
+        let near_layout = layout(gpu, "vpl_near", &[(0, Uniform), (1, Read), (2, Read), (3, Read), (4, Read), (5, Read), (6, Write)]);
         let export_layout = layout(gpu, "irradiance_export", &[(0, Uniform), (1, Read), (2, Read), (3, Storage(desc.output_format))]);
         let mut tiled = Vec::new();
         for (m, cm) in [(VplMethod::Slc, CullMethod::Slc), (VplMethod::Clamp, CullMethod::Clamp), (VplMethod::None, CullMethod::None)] {
@@ -243,12 +253,15 @@ impl IndirectPass {
             ids: zeroed(gpu, "slc ids", count * 4, rw),
             rt2: zeroed(gpu, "slc rt2", count * 4, rw),
             r2: zeroed(gpu, "slc r2", count * 4, rw),
+            near_slots: zeroed(gpu, "slc near_slots", count * 4, rw),
+            near_boxes: zeroed(gpu, "slc near_boxes", count / NEAR_BLOCK as u64 * std::mem::size_of::<GpuNearBox>() as u64, rw),
             import: (kernel(Kernel::GbufferImport, &base, &import_layout)?, import_layout),
             pack: (kernel(Kernel::VplPack, &Features { vpl_source, ..base }, &pack_layout)?, pack_layout),
             update: (kernel(Kernel::LightUpdate, &base, &update_layout)?, update_layout),
             tiled,
             tiled_layout,
             denoise: (kernel(Kernel::VplDenoise, &base, &denoise_layout)?, denoise_layout),
+            near: (kernel(Kernel::VplNear, &base, &near_layout)?, near_layout),
             export: (kernel(Kernel::IrradianceExport, &Features { output_format: output, ..base }, &export_layout)?, export_layout),
         };
         gpu.take_errors()?;
@@ -323,7 +336,6 @@ impl IndirectPass {
         self.check(inputs)?;
         let st = &frame.settings;
         let params = st.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
-        crate::vpl::check_no_near(st)?;
         if st.fixed_xi.is_some() || st.method == VplMethod::Reference {
             return Err(GpuError::Setting(
                 "the indirect pass runs slc, clamp or none with per-frame ξ (fixed ξ and the reference are GpuVpl's)".into(),
@@ -365,7 +377,12 @@ impl IndirectPass {
         );
         let fp = uniform("slc frame params", bytemuck::bytes_of(&FrameParams { light_count: count, seed: st.seed, frame: st.frame, pad: 0 }));
         let min_d2 = frame.min_distance * frame.min_distance;
-        let vp = uniform("slc vpl params", bytemuck::bytes_of(&VplParams { width: w, height: h, lights_per_subset: self.per_subset, min_d2 }));
+        let near_r2 = st.near_r2(min_d2);
+        let near_blocks = count / NEAR_BLOCK;
+        let vp = uniform(
+            "slc vpl params",
+            bytemuck::bytes_of(&VplParams { width: w, height: h, lights_per_subset: self.per_subset, min_d2, near_r2, near_blocks, pad0: 0, pad1: 0 }),
+        );
         let group = |label: &str, layout: &wgpu::BindGroupLayout, res: &[(u32, wgpu::BindingResource)]| crate::kernel::group(gpu, label, layout, res);
         let buf = crate::kernel::whole;
         let import = group(
@@ -389,7 +406,14 @@ impl IndirectPass {
             ]),
             VplInput::Buffer(b) => pack_res.push((1, buf(b))),
         }
-        pack_res.extend([(4, buf(&self.lights)), (5, buf(&self.ids)), (6, buf(&self.rt2)), (7, buf(&self.r2))]);
+        pack_res.extend([
+            (4, buf(&self.lights)),
+            (5, buf(&self.ids)),
+            (6, buf(&self.rt2)),
+            (7, buf(&self.r2)),
+            (8, buf(&self.near_slots)),
+            (9, buf(&self.near_boxes)),
+        ]);
         let pack_bg = group("vpl_pack", &self.pack.1, &pack_res);
         let update_bg = group("light_update", &self.update.1, &[(0, buf(&fp)), (1, buf(&self.ids)), (2, buf(&self.rt2)), (3, buf(&self.r2))]);
         let tiled_bg = group(
@@ -411,6 +435,19 @@ impl IndirectPass {
             &self.denoise.1,
             &[(0, buf(&vp)), (1, buf(&self.gb_position)), (2, buf(&self.gb_normal)), (3, buf(&self.irradiance)), (4, buf(&self.filtered))],
         );
+        let near_bg = group(
+            "vpl_near",
+            &self.near.1,
+            &[
+                (0, buf(&vp)),
+                (1, buf(&self.gb_position)),
+                (2, buf(&self.gb_normal)),
+                (3, buf(&self.lights)),
+                (4, buf(&self.near_slots)),
+                (5, buf(&self.near_boxes)),
+                (6, buf(result)),
+            ],
+        );
         let export_bg = group(
             "irradiance_export",
             &self.export.1,
@@ -421,13 +458,16 @@ impl IndirectPass {
         let (sub_w, sub_h) = (w.div_ceil(PERIOD), h.div_ceil(PERIOD));
         let d = Dispatch::new;
         let mut out =
-            vec![d("G-buffer import", &self.import.0, import, [gx, gy, 1]), d("VPL generation", &self.pack.0, pack_bg, [count.div_ceil(WG), 1, 1])];
+            vec![d("G-buffer import", &self.import.0, import, [gx, gy, 1]), d("VPL generation", &self.pack.0, pack_bg, [near_blocks, 1, 1])];
         if slc {
             out.push(d("light update", &self.update.0, update_bg, [count.div_ceil(WG), 1, 1]));
         }
         out.push(d("shading", tiled, tiled_bg, [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), PERIOD * PERIOD]));
         if st.denoise {
             out.push(d("denoise", &self.denoise.0, denoise_bg, [gx, gy, 1]));
+        }
+        if near_r2 > 0.0 {
+            out.push(d("near field", &self.near.0, near_bg, [gx, gy, 1]));
         }
         out.push(d("irradiance export", &self.export.0, export_bg, [gx, gy, 1]));
         Ok(out)

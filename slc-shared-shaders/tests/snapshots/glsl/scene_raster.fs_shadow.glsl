@@ -200,7 +200,6 @@ const float TWO_PI = 6.2831855;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
-const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
@@ -208,7 +207,6 @@ const uint LIGHT_BVH_LEAF = 4294967295u;
 const float ONE_MINUS_EPSILON = 0.99999994;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
-const uint NEAR_BLOCK = 64u;
 
 layout(std140) uniform MapParams_block_0Fragment { MapParams _group_0_binding_0_fs; };
 
@@ -333,7 +331,7 @@ bool sphere_overlaps_sphere(vec3 c1_, float r1_, vec3 c2_, float r2_2) {
 }
 
 float sphere_pad(float r_1, vec3 c_1) {
-    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
+    return ((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD);
 }
 
 vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
@@ -609,7 +607,7 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     vec3 v_11 = (p - center);
     float dist2_ = dot(v_11, v_11);
     float r2_5 = (radius * radius);
-    float d2_10 = max(max(dist2_, r2_5), MIN_D2_);
+    float d2_9 = max(max(dist2_, r2_5), MIN_D2_);
     vec3 wi = ((dist2_ > 0.0) ? (v_11 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
@@ -623,7 +621,7 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_10);
+    imp = ((phi * _e46) / d2_9);
     if ((dot(n_6, n_6) > 0.0)) {
         float cos_i = -(dot(wi, n_6));
         float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -868,19 +866,6 @@ uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2) {
     return (((i_1 % subsets) * per_subset) + (i_1 / subsets));
 }
 
-uint near_block_index(uint tx_1, uint ty_1, uint size_1) {
-    uint side_1 = (size_1 / 8u);
-    return ((((((ty_1 / 8u) * side_1) + (tx_1 / 8u)) * NEAR_BLOCK) + ((ty_1 % 8u) * 8u)) + (tx_1 % 8u));
-}
-
-float vpl_near_weight(float d2_9, float near_r2_) {
-    if ((near_r2_ <= 0.0)) {
-        return 0.0;
-    }
-    float t_6 = clamp(((near_r2_ - d2_9) / (0.75 * near_r2_)), 0.0, 1.0);
-    return ((t_6 * t_6) * (3.0 - (2.0 * t_6)));
-}
-
 vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_7, float h) {
     float sx = (((2.0 * px) / w_7) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h));
@@ -891,15 +876,15 @@ float path_survival(vec3 beta) {
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
 }
 
-float light_map_coord(uint t_1, uint size_2) {
+float light_map_coord(uint t_1, uint size_1) {
     float _e2 = to_f32_(t_1);
-    float _e7 = to_f32_(size_2);
+    float _e7 = to_f32_(size_1);
     return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
 }
 
-uint light_map_texel(float a_8, uint size_3) {
-    float _e6 = to_f32_(size_3);
-    float _e9 = to_f32_(size_3);
+uint light_map_texel(float a_8, uint size_2) {
+    float _e6 = to_f32_(size_2);
+    float _e9 = to_f32_(size_2);
     uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
     return _e14;
 }
@@ -913,9 +898,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis) {
 }
 
 vec3 point_irradiance(vec3 intensity_1, vec3 n_11, vec3 v_5) {
-    float d2_11 = dot(v_5, v_5);
-    float cos_x_1 = (dot(n_11, v_5) / sqrt(max(d2_11, MIN_D2_)));
-    float _e11 = inverse_square(d2_11);
+    float d2_10 = dot(v_5, v_5);
+    float cos_x_1 = (dot(n_11, v_5) / sqrt(max(d2_10, MIN_D2_)));
+    float _e11 = inverse_square(d2_10);
     return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
 }
 

@@ -1,0 +1,106 @@
+{% include "header.wgsl" %}
+{% include "lights.wgsl" %}
+// The near field of the VPL split (slc_core::interleave): every pixel adds
+// the near share vpl_near_weight of every VPL closer than R_n, at the VPL's
+// own flux (the light buffer holds flux x P^2), to the irradiance vpl_tiled
+// wrote (after the denoise, which filters only the interleaved far field).
+// Workgroup (x, y) is a {{ tile }}x{{ tile }} tile of full-resolution pixels: the
+// box of its G-buffer positions is reduced in workgroup memory; then, a
+// chunk of NEAR_CHUNK near blocks at a time, one thread per block tests the
+// block's box (widened by R_n) and, where it meets the tile's box, puts
+// the block's VPLs whose sphere of radius R_n meets it into a list every
+// pixel loops over.
+
+const P: u32 = {{ period }}u;
+const TILE: u32 = {{ tile }}u;
+const THREADS: u32 = TILE * TILE;
+// Near blocks per chunk: one per thread, at most 32 (16 for 16x16 tiles,
+// so the list fits WebGPU's 16 KiB of workgroup memory).
+const NEAR_CHUNK: u32 = {% if tile * tile < 32 %}THREADS{% elif tile > 8 %}16u{% else %}32u{% endif %};
+
+@group(0) @binding(0) var<uniform> params: VplParams;
+@group(0) @binding(1) var<storage, read> gb_position: array<vec4f>;
+@group(0) @binding(2) var<storage, read> gb_normal: array<vec4f>;
+@group(0) @binding(3) var<storage, read> lights: array<GpuLight>;
+@group(0) @binding(4) var<storage, read> near_slots: array<u32>;
+@group(0) @binding(5) var<storage, read> near_boxes: array<GpuNearBox>;
+@group(0) @binding(6) var<storage, read_write> irradiance: array<vec4f>;
+@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+
+var<workgroup> wg_lo: array<vec3f, THREADS>;
+var<workgroup> wg_hi: array<vec3f, THREADS>;
+var<workgroup> light_count: atomic<u32>;
+var<workgroup> light_list: array<u32, NEAR_CHUNK * NEAR_BLOCK>;
+
+@compute @workgroup_size({{ tile }}, {{ tile }}, 1)
+fn main(
+    @builtin(workgroup_id) wg: vec3u,
+    @builtin(local_invocation_id) lid: vec3u,
+    @builtin(local_invocation_index) li: u32,
+) {
+    let px = wg.x * TILE + lid.x;
+    let py = wg.y * TILE + lid.y;
+    let inside = px < params.width && py < params.height;
+    let pix = py * params.width + px;
+    var pos = vec4f(0.0);
+    var nrm = vec3f(0.0);
+    if inside {
+        pos = gb_position[pix];
+        nrm = gb_normal[pix].xyz;
+    }
+    let valid = inside && pos.w > 0.0;
+    wg_lo[li] = select(vec3f(3.0e38), pos.xyz, valid);
+    wg_hi[li] = select(vec3f(-3.0e38), pos.xyz, valid);
+    workgroupBarrier();
+    for (var stride = THREADS / 2u; stride > 0u; stride = stride / 2u) {
+        if li < stride {
+            wg_lo[li] = min(wg_lo[li], wg_lo[li + stride]);
+            wg_hi[li] = max(wg_hi[li], wg_hi[li + stride]);
+        }
+        workgroupBarrier();
+    }
+    let lo = wg_lo[0];
+    let hi = wg_hi[0];
+    let radius = cull_radius(params.near_r2);
+    // The flux the light buffer holds is P^2 times the VPL's own.
+    let unscale = 1.0 / f32(P * P);
+    var e = vec3f(0.0);
+    var kept = 0u;
+    for (var first = 0u; first < params.near_blocks; first += NEAR_CHUNK) {
+        if li == 0u {
+            atomicStore(&light_count, 0u);
+        }
+        workgroupBarrier();
+        let b = first + li;
+        if li < NEAR_CHUNK && b < params.near_blocks {
+            let nb = near_boxes[b];
+            if all(nb.lo - vec3f(radius) <= hi) && all(lo <= nb.hi + vec3f(radius)) {
+                for (var m = 0u; m < NEAR_BLOCK; m++) {
+                    let slot = near_slots[b * NEAR_BLOCK + m];
+                    let l = lights[slot];
+                    if any(l.intensity != vec3f(0.0)) && sphere_overlaps_aabb(l.p0, radius, lo, hi) {
+                        light_list[atomicAdd(&light_count, 1u)] = slot;
+                    }
+                }
+            }
+        }
+        let count = workgroupUniformLoad(&light_count);
+        if valid {
+            for (var m = 0u; m < count; m++) {
+                let l = lights[light_list[m]];
+                let v = pos.xyz - l.p0;
+                let near = vpl_near_weight(dot(v, v), params.near_r2);
+                if near > 0.0 {
+                    e += l.intensity * (vpl_transfer(l.p1, nrm, v, params.min_d2) * near * unscale);
+                    kept += 1u;
+                }
+            }
+        }
+        // Every thread is done with the list before the next chunk refills it.
+        workgroupBarrier();
+    }
+    if valid {
+        let old = irradiance[pix];
+        irradiance[pix] = vec4f(old.xyz + e, old.w + f32(kept));
+    }
+}
