@@ -80,6 +80,12 @@ crate::shared! {
         let t: f32 = clamp((near_r2 - d2) / (0.75 * near_r2), 0.0, 1.0);
         return t * t * (3.0 - 2.0 * t);
     }
+
+    /// The interleaved (far) field's share `1 − w` of the same VPL
+    /// ([`vpl_near_weight`]); 1 without a split.
+    pub fn vpl_far_weight(d2: f32, near_r2: f32) -> f32 {
+        return 1.0 - vpl_near_weight(d2, near_r2);
+    }
 }
 
 #[cfg(test)]

@@ -56,7 +56,7 @@ pub struct VplSettings {
     /// quadrature of the expectation over ξ (how the tests prove the
     /// pipeline unbiased). Must lie in `[0, 1)`.
     pub fixed_xi: Option<f32>,
-    /// Near-field radius `R_n` (scene units; CPU backend): every pixel
+    /// Near-field radius `R_n` (scene units; both backends): every pixel
     /// shades the VPLs closer than `R_n` itself, unscaled and undenoised,
     /// and its interleaved subset takes only the rest, with a smooth
     /// partition between ([`slc_core::interleave::vpl_near_weight`]).
@@ -253,6 +253,20 @@ impl Vpls {
             }
         }
         order
+    }
+
+    /// Per near block, the box `(lo, hi)` of the positions of its VPLs that
+    /// carry flux (`lo > hi` when none does), as `vpl_pack` reduces it.
+    pub fn near_boxes(&self) -> Vec<(Vec3, Vec3)> {
+        self.near_order()
+            .chunks(slc_core::interleave::NEAR_BLOCK as usize)
+            .map(|block| {
+                block
+                    .iter()
+                    .filter(|&&i| self.flux[i] != Vec3::ZERO)
+                    .fold((Vec3::splat(3.0e38), Vec3::splat(-3.0e38)), |(lo, hi), &i| (lo.min(self.position[i]), hi.max(self.position[i])))
+            })
+            .collect()
     }
 
     /// Number of VPLs.

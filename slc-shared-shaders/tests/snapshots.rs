@@ -15,6 +15,8 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
         ("bsh_refit", Kernel::BshRefit, Features::default()),
         ("vpl_tiled-slc-tile8-p8", Kernel::VplTiled, Features { lights: vpl, ..Features::default() }),
         ("vpl_tiled-clamp-tile8-p8", Kernel::VplTiled, Features { lights: vpl, method: CullMethod::Clamp, ..Features::default() }),
+        ("vpl_denoise-tile8", Kernel::VplDenoise, Features { lights: vpl, ..Features::default() }),
+        ("vpl_near-tile8-p8", Kernel::VplNear, Features { lights: vpl, ..Features::default() }),
         (
             "bsh_reservoir-point-spot-ies-k8",
             Kernel::BshReservoir,

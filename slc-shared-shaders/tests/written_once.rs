@@ -35,6 +35,7 @@ fn templates_do_not_contain_core_formulas() {
         "* dn8",
         "normalize(cross(",
         "dot(gn, st.dir) > 0.0",
+        "1.0 - vpl_near_weight",
     ];
     let mut n = 0;
     for (name, src) in slc_shared_shaders::templates() {
@@ -43,5 +44,5 @@ fn templates_do_not_contain_core_formulas() {
         }
         n += 1;
     }
-    assert_eq!(n, 18);
+    assert_eq!(n, 19);
 }

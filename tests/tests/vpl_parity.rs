@@ -19,7 +19,7 @@ use glam::Vec3;
 use proptest::prelude::*;
 use slc_cpu::vpl::VplContext;
 use slc_scene::scene::Scene;
-use slc_scene::vpl::{Shaded, VplMethod, VplSettings};
+use slc_scene::vpl::{NEAR_FACTOR, Shaded, VplMethod, VplSettings};
 use slc_tests::gpu;
 use slc_wgpu::vpl::GpuVpl;
 use std::sync::OnceLock;
@@ -191,8 +191,50 @@ fn hard_cases_agree() {
     }
 }
 
+/// The near-field split (`R_n` = [`NEAR_FACTOR`] clamp distances): the GPU's
+/// far field (vpl_tiled weighted by 1 − w) plus its near field (vpl_near,
+/// every VPL within `R_n` of the tile) gives the CPU's keep counts and
+/// irradiance, within the tolerances above: 4,096 VPLs over 64×48 pixels,
+/// 262,144 over 32×32 (128 chunks of near blocks, ~52,000 VPLs listed for
+/// the largest tile) and 65,536 over 128×96.
+///
+/// Lavapipe (llvmpipe) ends every shader invocation's loops after 65,535
+/// iterations *in total* (`LP_MAX_TGSI_LOOP_ITERATIONS`, shared by all
+/// loops), silently: a tile whose near list is longer than that (16×16
+/// pixels over 262,144 VPLs lists ~77,000) loses VPLs there and nowhere
+/// else, so the configurations stay below it.
+fn near_field_matches_cpu() {
+    let Some(g) = gpu() else { return };
+    for (w, h, rsm) in [(64u32, 48u32, 64u32), (32, 32, 512), (128, 96, 256)] {
+        let ctx = VplContext::new(&Scene::cornell_box(), w, h, rsm, None).unwrap();
+        let gv = GpuVpl::new(g, ctx.inputs()).unwrap();
+        let near_radius = Some(NEAR_FACTOR * ctx.min_d2().sqrt());
+        for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
+            let s = VplSettings { near_radius, ..settings(method) };
+            let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(&s).unwrap());
+            let c = compare(&a, &b, &ctx);
+            eprintln!(
+                "{w}x{h}, {} VPLs, {} with near field: kept differs at {} of {} pixels, worst relative {:.2e}",
+                rsm * rsm,
+                method.name(),
+                c.kept_differs,
+                c.pixels,
+                c.worst_rel
+            );
+            assert!(
+                c.kept_differs * 200 <= c.pixels.max(200) && c.worst_rel <= 1e-4,
+                "{w}x{h} {}: {} differing, worst {}",
+                method.name(),
+                c.kept_differs,
+                c.worst_rel
+            );
+        }
+    }
+}
+
 slc_tests::harness!(
     Gpu: shading_matches_cpu_for_every_method,
+    Gpu: near_field_matches_cpu,
     Gpu: random_settings_agree,
     Gpu: images_match_end_to_end,
     Gpu: gpu_expectation_equals_unculled,

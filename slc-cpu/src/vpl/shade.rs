@@ -8,7 +8,7 @@
 //! ([`slc_core::interleave::vpl_near_weight`]).
 
 use glam::Vec3;
-use slc_core::interleave::vpl_near_weight;
+use slc_core::interleave::{vpl_far_weight, vpl_near_weight};
 use slc_core::light::vpl_transfer;
 use slc_core::range::{cull_radius, slc_keep, slc_weight};
 use slc_core::sphere::sphere_overlaps_aabb;
@@ -234,7 +234,7 @@ fn term<const MODE: u8>(p: Vec3, nl: Vec3, rt2: f32, r2: f32, x: Vec3, n: Vec3, 
     // Every test evaluated unconditionally so the loop stays branch-free
     // (the keep test is a coin flip per light: branches mispredict).
     let near = vpl_near_weight(d2, near_r2);
-    let far = 1.0 - near;
+    let far = vpl_far_weight(d2, near_r2);
     let (keep, w) = match MODE {
         0 => (slc_keep(r2, d2) & (far > 0.0), t * slc_weight(rt2, d2) * far),
         1 => ((d2 < r2) & (far > 0.0), t * far),

@@ -8,7 +8,7 @@
 // subset's range spheres are culled against it into a workgroup list (a
 // chunk of the subset at a time), then each pixel loops over the list with
 // the keep test and 1/p weight. Each light's transfer is weighted by its far
-// share 1 - vpl_near_weight (the near share is vpl_near's).
+// share vpl_far_weight (the near share is vpl_near's).
 
 const P: u32 = {{ period }}u;
 const TILE: u32 = {{ tile }}u;
@@ -67,7 +67,7 @@ fn main(
         for (var j = base; j < base + params.lights_per_subset; j++) {
             let l = lights[j];
             let v = pos.xyz - l.p0;
-            let far = 1.0 - vpl_near_weight(dot(v, v), params.near_r2);
+            let far = vpl_far_weight(dot(v, v), params.near_r2);
             if far > 0.0 {
                 e += l.intensity * (vpl_transfer(l.p1, nrm, v, params.min_d2) * far);
                 kept += 1u;
@@ -99,7 +99,7 @@ fn main(
                 let v = pos.xyz - l.p0;
                 let t = vpl_transfer(l.p1, nrm, v, params.min_d2);
                 let d2 = dot(v, v);
-                let far = 1.0 - vpl_near_weight(d2, params.near_r2);
+                let far = vpl_far_weight(d2, params.near_r2);
 {% if method == "slc" %}
                 if slc_keep(r2[j], d2) && far > 0.0 {
                     e += l.intensity * (t * slc_weight(rt2[j], d2) * far);

@@ -40,7 +40,10 @@ struct RefitParams {
     first: u32, count: u32, pad0: u32, pad1: u32
 }
 struct VplParams {
-    width: u32, height: u32, lights_per_subset: u32, min_d2: f32
+    width: u32, height: u32, lights_per_subset: u32, min_d2: f32, near_r2: f32, near_blocks: u32, pad0: u32, pad1: u32
+}
+struct GpuNearBox {
+    lo: vec3f, pad0: f32, hi: vec3f, pad1: f32
 }
 struct GpuVplRecord {
     position: vec3f, pad0: f32, normal: vec3f, pad1: f32, flux: vec3f, pad2: f32
@@ -145,8 +148,9 @@ fn sphere_overlaps_sphere(c1: vec3f, r1: f32, c2: vec3f, r2: f32) -> bool {
 }
 const SPHERE_PAD: f32 = 0.000000476837158203125;
 const SPHERE_HUGE: f32 = 340282346638528859811704183484516925440.0;
+const SPHERE_PAD_ABS: f32 = 1e-18;
 fn sphere_pad(r: f32, c: vec3f) -> f32 {
-    return (r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD;
+    return (r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD + SPHERE_PAD_ABS;
 }
 fn sphere_union(c1: vec3f, r1: f32, c2: vec3f, r2: f32) -> vec4f {
     let v: vec3f = c2 - c1;
@@ -579,6 +583,27 @@ fn interleave_slot(tx: u32, ty: u32, size: u32, period: u32) -> u32 {
 fn interleave_slot_linear(i: u32, per_subset: u32, period: u32) -> u32 {
     let subsets: u32 = period * period;
     return (i % subsets) * per_subset + i / subsets;
+}
+const NEAR_BLOCK: u32 = 64;
+fn near_block_index(tx: u32, ty: u32, size: u32) -> u32 {
+    let side: u32 = size / 8;
+    return ((ty / 8) * side + tx / 8) * NEAR_BLOCK + (ty % 8) * 8 + tx % 8;
+}
+fn near_block_tx(q: u32, size: u32) -> u32 {
+    return ((q / NEAR_BLOCK) % (size / 8)) * 8 + q % 8;
+}
+fn near_block_ty(q: u32, size: u32) -> u32 {
+    return ((q / NEAR_BLOCK) / (size / 8)) * 8 + (q % NEAR_BLOCK) / 8;
+}
+fn vpl_near_weight(d2: f32, near_r2: f32) -> f32 {
+    if near_r2 <= 0.0 {
+        return 0.0;
+    }
+    let t: f32 = clamp((near_r2 - d2) / (0.75 * near_r2), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+fn vpl_far_weight(d2: f32, near_r2: f32) -> f32 {
+    return 1.0 - vpl_near_weight(d2, near_r2);
 }
 fn camera_dir(forward: vec3f, right: vec3f, up: vec3f, px: f32, py: f32, w: f32, h: f32) -> vec3f {
     let sx: f32 = 2.0 * px / w - 1.0;

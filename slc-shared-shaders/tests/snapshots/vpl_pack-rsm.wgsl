@@ -40,7 +40,10 @@ struct RefitParams {
     first: u32, count: u32, pad0: u32, pad1: u32
 }
 struct VplParams {
-    width: u32, height: u32, lights_per_subset: u32, min_d2: f32
+    width: u32, height: u32, lights_per_subset: u32, min_d2: f32, near_r2: f32, near_blocks: u32, pad0: u32, pad1: u32
+}
+struct GpuNearBox {
+    lo: vec3f, pad0: f32, hi: vec3f, pad1: f32
 }
 struct GpuVplRecord {
     position: vec3f, pad0: f32, normal: vec3f, pad1: f32, flux: vec3f, pad2: f32
@@ -145,8 +148,9 @@ fn sphere_overlaps_sphere(c1: vec3f, r1: f32, c2: vec3f, r2: f32) -> bool {
 }
 const SPHERE_PAD: f32 = 0.000000476837158203125;
 const SPHERE_HUGE: f32 = 340282346638528859811704183484516925440.0;
+const SPHERE_PAD_ABS: f32 = 1e-18;
 fn sphere_pad(r: f32, c: vec3f) -> f32 {
-    return (r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD;
+    return (r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD + SPHERE_PAD_ABS;
 }
 fn sphere_union(c1: vec3f, r1: f32, c2: vec3f, r2: f32) -> vec4f {
     let v: vec3f = c2 - c1;
@@ -580,6 +584,27 @@ fn interleave_slot_linear(i: u32, per_subset: u32, period: u32) -> u32 {
     let subsets: u32 = period * period;
     return (i % subsets) * per_subset + i / subsets;
 }
+const NEAR_BLOCK: u32 = 64;
+fn near_block_index(tx: u32, ty: u32, size: u32) -> u32 {
+    let side: u32 = size / 8;
+    return ((ty / 8) * side + tx / 8) * NEAR_BLOCK + (ty % 8) * 8 + tx % 8;
+}
+fn near_block_tx(q: u32, size: u32) -> u32 {
+    return ((q / NEAR_BLOCK) % (size / 8)) * 8 + q % 8;
+}
+fn near_block_ty(q: u32, size: u32) -> u32 {
+    return ((q / NEAR_BLOCK) / (size / 8)) * 8 + (q % NEAR_BLOCK) / 8;
+}
+fn vpl_near_weight(d2: f32, near_r2: f32) -> f32 {
+    if near_r2 <= 0.0 {
+        return 0.0;
+    }
+    let t: f32 = clamp((near_r2 - d2) / (0.75 * near_r2), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+fn vpl_far_weight(d2: f32, near_r2: f32) -> f32 {
+    return 1.0 - vpl_near_weight(d2, near_r2);
+}
 fn camera_dir(forward: vec3f, right: vec3f, up: vec3f, px: f32, py: f32, w: f32, h: f32) -> vec3f {
     let sx: f32 = 2.0 * px / w - 1.0;
     let sy: f32 = 1.0 - 2.0 * py / h;
@@ -622,6 +647,9 @@ fn diffuse_radiance(albedo: vec3f, emission: vec3f, e: vec3f) -> vec3f {
 // VPLs from a reflective shadow map (one per texel) into vpl_tiled's light
 // buffer: subset after subset (8x8 interleaving), flux scaled by
 // the period squared, each VPL's ξ id, r_t² (SLC) or the fixed r² (clamp).
+// For the near field (vpl_near): workgroup b packs near block b (an 8x8
+// patch of texels), writes where each of its VPLs went
+// (near_slots, in near-block order) and the box of their positions.
 
 const P: u32 = 8u;
 
@@ -633,25 +661,52 @@ const P: u32 = 8u;
 @group(0) @binding(5) var<storage, read_write> ids: array<u32>;
 @group(0) @binding(6) var<storage, read_write> rt2: array<f32>;
 @group(0) @binding(7) var<storage, read_write> r2: array<f32>;
+@group(0) @binding(8) var<storage, read_write> near_slots: array<u32>;
+@group(0) @binding(9) var<storage, read_write> near_boxes: array<GpuNearBox>;
 // Declared because the shared library reads it; unused here, so not bound.
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
 
-@compute @workgroup_size(64)
-fn main(@builtin(global_invocation_id) gid: vec3u) {
-    let i = gid.x;
-    if i >= params.count {
-        return;
+var<workgroup> wg_lo: array<vec3f, NEAR_BLOCK>;
+var<workgroup> wg_hi: array<vec3f, NEAR_BLOCK>;
+
+@compute @workgroup_size(NEAR_BLOCK)
+fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(workgroup_id) wg: vec3u, @builtin(local_invocation_index) li: u32) {
+    // Near-block order: VPL q of the dispatch.
+    let q = gid.x;
+    let inside = q < params.count;
+    var lo = vec3f(3.0e38);
+    var hi = vec3f(-3.0e38);
+    if inside {
+        let tx = near_block_tx(q, params.size);
+        let ty = near_block_ty(q, params.size);
+        let i = ty * params.size + tx;
+        let texel = vec2i(i32(tx), i32(ty));
+        let position = textureLoad(rsm_position, texel, 0).xyz;
+        let normal = textureLoad(rsm_normal, texel, 0).xyz;
+        let flux = textureLoad(rsm_flux, texel, 0).xyz * params.scale;
+        let slot = interleave_slot(tx, ty, params.size, P);
+        lights[slot] = GpuLight(position, LIGHT_VPL, normal, 0.0, vec3f(0.0), 0.0, flux, 0u);
+        ids[slot] = i;
+        let slc = params.slc != 0u;
+        rt2[slot] = select(0.0, vpl_rt2(flux, params.exposure, params.error_bound, params.mode), slc);
+        r2[slot] = select(params.fixed_r2, 0.0, slc);
+        near_slots[q] = slot;
+        if any(flux != vec3f(0.0)) {
+            lo = position;
+            hi = position;
+        }
     }
-    let tx = i % params.size;
-    let ty = i / params.size;
-    let texel = vec2i(i32(tx), i32(ty));
-    let position = textureLoad(rsm_position, texel, 0).xyz;
-    let normal = textureLoad(rsm_normal, texel, 0).xyz;
-    let flux = textureLoad(rsm_flux, texel, 0).xyz * params.scale;
-    let slot = interleave_slot(tx, ty, params.size, P);
-    lights[slot] = GpuLight(position, LIGHT_VPL, normal, 0.0, vec3f(0.0), 0.0, flux, 0u);
-    ids[slot] = i;
-    let slc = params.slc != 0u;
-    rt2[slot] = select(0.0, vpl_rt2(flux, params.exposure, params.error_bound, params.mode), slc);
-    r2[slot] = select(params.fixed_r2, 0.0, slc);
+    wg_lo[li] = lo;
+    wg_hi[li] = hi;
+    workgroupBarrier();
+    for (var stride = NEAR_BLOCK / 2u; stride > 0u; stride = stride / 2u) {
+        if li < stride {
+            wg_lo[li] = min(wg_lo[li], wg_lo[li + stride]);
+            wg_hi[li] = max(wg_hi[li], wg_hi[li + stride]);
+        }
+        workgroupBarrier();
+    }
+    if li == 0u && inside {
+        near_boxes[wg.x] = GpuNearBox(wg_lo[0], 0.0, wg_hi[0], 0.0);
+    }
 }

@@ -61,8 +61,8 @@ use super::{Dispatch, FLOAT_INPUTS, check_gbuffer, check_view, output_format};
 use crate::kernel::{B, layout, pipeline, storage, zeroed};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
-use slc_scene::vpl::{PERIOD, VplMethod, VplSettings};
 use slc_core::interleave::NEAR_BLOCK;
+use slc_scene::vpl::{PERIOD, VplMethod, VplSettings};
 use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuNearBox, GpuVplRecord, ImageParams, PackParams, VplParams};
 use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, VplSource, generate};
 use wgpu::util::DeviceExt;
@@ -377,11 +377,20 @@ impl IndirectPass {
         );
         let fp = uniform("slc frame params", bytemuck::bytes_of(&FrameParams { light_count: count, seed: st.seed, frame: st.frame, pad: 0 }));
         let min_d2 = frame.min_distance * frame.min_distance;
-        let near_r2 = st.near_r2(min_d2);
+        let near_r2 = st.near_r2();
         let near_blocks = count / NEAR_BLOCK;
         let vp = uniform(
             "slc vpl params",
-            bytemuck::bytes_of(&VplParams { width: w, height: h, lights_per_subset: self.per_subset, min_d2, near_r2, near_blocks, pad0: 0, pad1: 0 }),
+            bytemuck::bytes_of(&VplParams {
+                width: w,
+                height: h,
+                lights_per_subset: self.per_subset,
+                min_d2,
+                near_r2,
+                near_blocks,
+                pad0: 0,
+                pad1: 0,
+            }),
         );
         let group = |label: &str, layout: &wgpu::BindGroupLayout, res: &[(u32, wgpu::BindingResource)]| crate::kernel::group(gpu, label, layout, res);
         let buf = crate::kernel::whole;

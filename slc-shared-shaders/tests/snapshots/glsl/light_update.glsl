@@ -100,6 +100,16 @@ struct VplParams {
     uint height;
     uint lights_per_subset;
     float min_d2_;
+    float near_r2_;
+    uint near_blocks;
+    uint pad0_;
+    uint pad1_;
+};
+struct GpuNearBox {
+    vec3 lo;
+    float pad0_;
+    vec3 hi;
+    float pad1_;
 };
 struct GpuVplRecord {
     vec3 position;
@@ -188,6 +198,7 @@ const float TWO_PI = 6.2831855;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
@@ -195,6 +206,7 @@ const uint LIGHT_BVH_LEAF = 4294967295u;
 const float ONE_MINUS_EPSILON = 0.99999994;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
+const uint NEAR_BLOCK = 64u;
 
 layout(std140) uniform FrameParams_block_0Compute { FrameParams _group_0_binding_0_cs; };
 
@@ -303,8 +315,8 @@ float cull_radius(float r2_1) {
 }
 
 float windowed_falloff(float d2_3, float range2_) {
-    float q = (d2_3 / range2_);
-    float w_8 = clamp((1.0 - (q * q)), 0.0, 1.0);
+    float q_2 = (d2_3 / range2_);
+    float w_8 = clamp((1.0 - (q_2 * q_2)), 0.0, 1.0);
     return ((w_8 * w_8) / max(d2_3, 0.0001));
 }
 
@@ -320,7 +332,7 @@ bool sphere_overlaps_sphere(vec3 c1_, float r1_, vec3 c2_, float r2_2) {
 }
 
 float sphere_pad(float r_1, vec3 c_1) {
-    return ((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD);
+    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
 }
 
 vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
@@ -364,8 +376,8 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
 }
 
 bool sphere_overlaps_aabb(vec3 c_2, float r_2, vec3 bmin, vec3 bmax) {
-    vec3 q_1 = clamp(c_2, bmin, bmax);
-    vec3 v_6 = (q_1 - c_2);
+    vec3 q_3 = clamp(c_2, bmin, bmax);
+    vec3 v_6 = (q_3 - c_2);
     return (dot(v_6, v_6) <= (r_2 * r_2));
 }
 
@@ -596,7 +608,7 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     vec3 v_7 = (p - center);
     float dist2_ = dot(v_7, v_7);
     float r2_6 = (radius * radius);
-    float d2_9 = max(max(dist2_, r2_6), MIN_D2_);
+    float d2_11 = max(max(dist2_, r2_6), MIN_D2_);
     vec3 wi = ((dist2_ > 0.0) ? (v_7 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
@@ -610,7 +622,7 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_9);
+    imp = ((phi * _e46) / d2_11);
     if ((dot(n_6, n_6) > 0.0)) {
         float cos_i = -(dot(wi, n_6));
         float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -694,7 +706,7 @@ vec3 face_against(vec3 n_8, vec3 dir) {
 vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
     vec3 e1_1 = (b_5 - a_6);
     vec3 e2_1 = (c_7 - a_6);
-    vec3 q_2 = (p_2 - a_6);
+    vec3 q_4 = (p_2 - a_6);
     float d11_ = dot(e1_1, e1_1);
     float d12_ = dot(e1_1, e2_1);
     float d22_ = dot(e2_1, e2_1);
@@ -702,8 +714,8 @@ vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
     if (!((abs(den) > 0.0))) {
         return vec3(1.0, 0.0, 0.0);
     }
-    float w1_ = (((d22_ * dot(q_2, e1_1)) - (d12_ * dot(q_2, e2_1))) / den);
-    float w2_ = (((d11_ * dot(q_2, e2_1)) - (d12_ * dot(q_2, e1_1))) / den);
+    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
+    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
     return vec3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
@@ -747,8 +759,8 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
     if (_e28) {
         return -1.0;
     }
-    vec3 q_3 = cross(s_2, e1_2);
-    float v_9 = (dot(d, q_3) * inv);
+    vec3 q_5 = cross(s_2, e1_2);
+    float v_9 = (dot(d, q_5) * inv);
     if (!((v_9 < 0.0))) {
         local_5 = ((u_3 + v_9) > 1.0);
     } else {
@@ -758,7 +770,7 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_2, q_3) * inv);
+    float t_3 = (dot(e2_2, q_5) * inv);
     if ((t_3 > t_min)) {
         local_6 = (t_3 < t_max_1);
     } else {
@@ -855,6 +867,32 @@ uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2) {
     return (((i_1 % subsets) * per_subset) + (i_1 / subsets));
 }
 
+uint near_block_index(uint tx_1, uint ty_1, uint size_1) {
+    uint side_1 = (size_1 / 8u);
+    return ((((((ty_1 / 8u) * side_1) + (tx_1 / 8u)) * NEAR_BLOCK) + ((ty_1 % 8u) * 8u)) + (tx_1 % 8u));
+}
+
+uint near_block_tx(uint q, uint size_2) {
+    return ((((q / NEAR_BLOCK) % (size_2 / 8u)) * 8u) + (q % 8u));
+}
+
+uint near_block_ty(uint q_1, uint size_3) {
+    return ((((q_1 / NEAR_BLOCK) / (size_3 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
+}
+
+float vpl_near_weight(float d2_9, float near_r2_) {
+    if ((near_r2_ <= 0.0)) {
+        return 0.0;
+    }
+    float t_6 = clamp(((near_r2_ - d2_9) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_6 * t_6) * (3.0 - (2.0 * t_6)));
+}
+
+float vpl_far_weight(float d2_10, float near_r2_1) {
+    float _e2 = vpl_near_weight(d2_10, near_r2_1);
+    return (1.0 - _e2);
+}
+
 vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_7, float h) {
     float sx = (((2.0 * px) / w_7) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h));
@@ -865,15 +903,15 @@ float path_survival(vec3 beta) {
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
 }
 
-float light_map_coord(uint t_1, uint size_1) {
+float light_map_coord(uint t_1, uint size_4) {
     float _e2 = to_f32_(t_1);
-    float _e7 = to_f32_(size_1);
+    float _e7 = to_f32_(size_4);
     return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
 }
 
-uint light_map_texel(float a_8, uint size_2) {
-    float _e6 = to_f32_(size_2);
-    float _e9 = to_f32_(size_2);
+uint light_map_texel(float a_8, uint size_5) {
+    float _e6 = to_f32_(size_5);
+    float _e9 = to_f32_(size_5);
     uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
     return _e14;
 }
@@ -887,9 +925,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis) {
 }
 
 vec3 point_irradiance(vec3 intensity_1, vec3 n_11, vec3 v_2) {
-    float d2_10 = dot(v_2, v_2);
-    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_10, MIN_D2_)));
-    float _e11 = inverse_square(d2_10);
+    float d2_12 = dot(v_2, v_2);
+    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_12, MIN_D2_)));
+    float _e11 = inverse_square(d2_12);
     return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
 }
 

@@ -100,6 +100,16 @@ struct VplParams {
     uint height;
     uint lights_per_subset;
     float min_d2_;
+    float near_r2_;
+    uint near_blocks;
+    uint pad0_;
+    uint pad1_;
+};
+struct GpuNearBox {
+    vec3 lo;
+    float pad0_;
+    vec3 hi;
+    float pad1_;
 };
 struct GpuVplRecord {
     vec3 position;
@@ -188,6 +198,7 @@ const float TWO_PI = 6.2831855;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
@@ -195,6 +206,7 @@ const uint LIGHT_BVH_LEAF = 4294967295u;
 const float ONE_MINUS_EPSILON = 0.99999994;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
+const uint NEAR_BLOCK = 64u;
 const uint P = 8u;
 
 layout(std140) uniform PackParams_block_0Compute { PackParams _group_0_binding_0_cs; };
@@ -208,6 +220,14 @@ layout(std430) buffer type_8_block_3Compute { uint _group_0_binding_5_cs[]; };
 layout(std430) buffer type_4_block_4Compute { float _group_0_binding_6_cs[]; };
 
 layout(std430) buffer type_4_block_5Compute { float _group_0_binding_7_cs[]; };
+
+layout(std430) buffer type_8_block_6Compute { uint _group_0_binding_8_cs[]; };
+
+layout(std430) buffer type_9_block_7Compute { GpuNearBox _group_0_binding_9_cs[]; };
+
+shared vec3 wg_lo[64];
+
+shared vec3 wg_hi[64];
 
 
 float to_f32_(uint u) {
@@ -308,8 +328,8 @@ float cull_radius(float r2_1) {
 }
 
 float windowed_falloff(float d2_3, float range2_) {
-    float q = (d2_3 / range2_);
-    float w_8 = clamp((1.0 - (q * q)), 0.0, 1.0);
+    float q_2 = (d2_3 / range2_);
+    float w_8 = clamp((1.0 - (q_2 * q_2)), 0.0, 1.0);
     return ((w_8 * w_8) / max(d2_3, 0.0001));
 }
 
@@ -325,11 +345,11 @@ bool sphere_overlaps_sphere(vec3 c1_, float r1_, vec3 c2_, float r2_2) {
 }
 
 float sphere_pad(float r_1, vec3 c_1) {
-    return ((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD);
+    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
 }
 
 vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
-    bool local = false;
+    bool local_1 = false;
     vec3 v_5 = (c2_1 - c1_1);
     float d_2 = sqrt(dot(v_5, v_5));
     float _e8 = sphere_pad(r1_1, c1_1);
@@ -341,11 +361,11 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
         return vec4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
     if (!((d_2 >= SPHERE_HUGE))) {
-        local = ((0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE);
+        local_1 = ((0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
-        local = true;
+        local_1 = true;
     }
-    bool _e35 = local;
+    bool _e35 = local_1;
     if (_e35) {
         return vec4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
@@ -369,8 +389,8 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
 }
 
 bool sphere_overlaps_aabb(vec3 c_2, float r_2, vec3 bmin, vec3 bmax) {
-    vec3 q_1 = clamp(c_2, bmin, bmax);
-    vec3 v_6 = (q_1 - c_2);
+    vec3 q_3 = clamp(c_2, bmin, bmax);
+    vec3 v_6 = (q_3 - c_2);
     return (dot(v_6, v_6) <= (r_2 * r_2));
 }
 
@@ -542,21 +562,21 @@ uint mul_hi_u32_(uint a_4, uint b_3) {
     return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid >> 16u));
 }
 
-uint uniform_index(uint n_3, uint hi_1, uint lo_1) {
-    uint _e3 = mul_lo_u32_(hi_1, n_3);
-    uint _e4 = mul_hi_u32_(hi_1, n_3);
-    uint _e5 = mul_hi_u32_(lo_1, n_3);
+uint uniform_index(uint n_3, uint hi_2, uint lo_2) {
+    uint _e3 = mul_lo_u32_(hi_2, n_3);
+    uint _e4 = mul_hi_u32_(hi_2, n_3);
+    uint _e5 = mul_hi_u32_(lo_2, n_3);
     if ((_e3 > (4294967295u - _e5))) {
         return (_e4 + 1u);
     }
     return _e4;
 }
 
-uint reservoir_slot(uint n_4, uint k, uint hi_2, uint lo_2) {
+uint reservoir_slot(uint n_4, uint k, uint hi_3, uint lo_3) {
     if ((n_4 <= k)) {
         return (n_4 - 1u);
     }
-    uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    uint _e7 = uniform_index(n_4, hi_3, lo_3);
     if ((_e7 < k)) {
         return _e7;
     }
@@ -601,7 +621,7 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     vec3 v_7 = (p - center);
     float dist2_ = dot(v_7, v_7);
     float r2_6 = (radius * radius);
-    float d2_9 = max(max(dist2_, r2_6), MIN_D2_);
+    float d2_11 = max(max(dist2_, r2_6), MIN_D2_);
     vec3 wi = ((dist2_ > 0.0) ? (v_7 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
@@ -615,7 +635,7 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_9);
+    imp = ((phi * _e46) / d2_11);
     if ((dot(n_6, n_6) > 0.0)) {
         float cos_i = -(dot(wi, n_6));
         float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -666,10 +686,10 @@ float bvh_remap_u(float u_2, float p0_, bool first) {
 float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
     vec3 t0_ = ((bmin_1 - o) * inv_d);
     vec3 t1_ = ((bmax_1 - o) * inv_d);
-    vec3 lo_3 = min(t0_, t1_);
-    vec3 hi_3 = max(t0_, t1_);
-    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
-    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
+    vec3 lo_4 = min(t0_, t1_);
+    vec3 hi_4 = max(t0_, t1_);
+    float t_in = max(max(lo_4.x, lo_4.y), max(lo_4.z, 0.0));
+    float t_out = min(min(hi_4.x, hi_4.y), min(hi_4.z, t_max));
     if ((t_in <= t_out)) {
         return t_in;
     }
@@ -677,15 +697,15 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
-    bool local_2 = false;
+    bool local_3 = false;
     vec3 n_13 = cross((b_4 - a_5), (c_6 - a_5));
     float l2_ = dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_2 = !((l2_ < 3e38));
+        local_3 = !((l2_ < 3e38));
     } else {
-        local_2 = true;
+        local_3 = true;
     }
-    bool _e17 = local_2;
+    bool _e17 = local_3;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -699,7 +719,7 @@ vec3 face_against(vec3 n_8, vec3 dir) {
 vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
     vec3 e1_1 = (b_5 - a_6);
     vec3 e2_1 = (c_7 - a_6);
-    vec3 q_2 = (p_2 - a_6);
+    vec3 q_4 = (p_2 - a_6);
     float d11_ = dot(e1_1, e1_1);
     float d12_ = dot(e1_1, e2_1);
     float d22_ = dot(e2_1, e2_1);
@@ -707,21 +727,21 @@ vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
     if (!((abs(den) > 0.0))) {
         return vec3(1.0, 0.0, 0.0);
     }
-    float w1_ = (((d22_ * dot(q_2, e1_1)) - (d12_ * dot(q_2, e2_1))) / den);
-    float w2_ = (((d11_ * dot(q_2, e2_1)) - (d12_ * dot(q_2, e1_1))) / den);
+    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
+    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
     return vec3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
 vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_6, vec3 facing) {
-    bool local_3 = false;
+    bool local_4 = false;
     vec3 s_1 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
     float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
-        local_3 = !((l2_1 < 3e38));
+        local_4 = !((l2_1 < 3e38));
     } else {
-        local_3 = true;
+        local_4 = true;
     }
-    bool _e24 = local_3;
+    bool _e24 = local_4;
     if (_e24) {
         return facing;
     }
@@ -730,9 +750,9 @@ vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_6, vec3 facing) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, float t_max_1) {
-    bool local_4 = false;
     bool local_5 = false;
     bool local_6 = false;
+    bool local_7 = false;
     vec3 e1_2 = (b_6 - a_7);
     vec3 e2_2 = (c_8 - a_7);
     vec3 p_3 = cross(d, e2_2);
@@ -744,32 +764,32 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
     vec3 s_2 = (o_1 - a_7);
     float u_3 = (dot(s_2, p_3) * inv);
     if (!((u_3 < 0.0))) {
-        local_4 = (u_3 > 1.0);
-    } else {
-        local_4 = true;
-    }
-    bool _e28 = local_4;
-    if (_e28) {
-        return -1.0;
-    }
-    vec3 q_3 = cross(s_2, e1_2);
-    float v_9 = (dot(d, q_3) * inv);
-    if (!((v_9 < 0.0))) {
-        local_5 = ((u_3 + v_9) > 1.0);
+        local_5 = (u_3 > 1.0);
     } else {
         local_5 = true;
     }
-    bool _e42 = local_5;
+    bool _e28 = local_5;
+    if (_e28) {
+        return -1.0;
+    }
+    vec3 q_5 = cross(s_2, e1_2);
+    float v_9 = (dot(d, q_5) * inv);
+    if (!((v_9 < 0.0))) {
+        local_6 = ((u_3 + v_9) > 1.0);
+    } else {
+        local_6 = true;
+    }
+    bool _e42 = local_6;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_2, q_3) * inv);
+    float t_3 = (dot(e2_2, q_5) * inv);
     if ((t_3 > t_min)) {
-        local_6 = (t_3 < t_max_1);
+        local_7 = (t_3 < t_max_1);
     } else {
-        local_6 = false;
+        local_7 = false;
     }
-    bool _e51 = local_6;
+    bool _e51 = local_7;
     if (_e51) {
         return t_3;
     }
@@ -794,20 +814,20 @@ float mis_power(float pdf_a_1, float pdf_b_1) {
 }
 
 float light_strategy_pdf(float select, float rt2_6, float d2_8, float area_1, float cos_y) {
-    bool local_7 = false;
     bool local_8 = false;
+    bool local_9 = false;
     if (!((d2_8 <= 0.0))) {
-        local_7 = (area_1 <= 0.0);
-    } else {
-        local_7 = true;
-    }
-    bool _e13 = local_7;
-    if (!(_e13)) {
-        local_8 = (cos_y <= 0.0);
+        local_8 = (area_1 <= 0.0);
     } else {
         local_8 = true;
     }
-    bool _e20 = local_8;
+    bool _e13 = local_8;
+    if (!(_e13)) {
+        local_9 = (cos_y <= 0.0);
+    } else {
+        local_9 = true;
+    }
+    bool _e20 = local_9;
     if (_e20) {
         return 0.0;
     }
@@ -860,6 +880,32 @@ uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2) {
     return (((i_1 % subsets) * per_subset) + (i_1 / subsets));
 }
 
+uint near_block_index(uint tx_1, uint ty_1, uint size_1) {
+    uint side_1 = (size_1 / 8u);
+    return ((((((ty_1 / 8u) * side_1) + (tx_1 / 8u)) * NEAR_BLOCK) + ((ty_1 % 8u) * 8u)) + (tx_1 % 8u));
+}
+
+uint near_block_tx(uint q, uint size_2) {
+    return ((((q / NEAR_BLOCK) % (size_2 / 8u)) * 8u) + (q % 8u));
+}
+
+uint near_block_ty(uint q_1, uint size_3) {
+    return ((((q_1 / NEAR_BLOCK) / (size_3 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
+}
+
+float vpl_near_weight(float d2_9, float near_r2_) {
+    if ((near_r2_ <= 0.0)) {
+        return 0.0;
+    }
+    float t_6 = clamp(((near_r2_ - d2_9) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_6 * t_6) * (3.0 - (2.0 * t_6)));
+}
+
+float vpl_far_weight(float d2_10, float near_r2_1) {
+    float _e2 = vpl_near_weight(d2_10, near_r2_1);
+    return (1.0 - _e2);
+}
+
 vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_7, float h) {
     float sx = (((2.0 * px) / w_7) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h));
@@ -870,15 +916,15 @@ float path_survival(vec3 beta) {
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
 }
 
-float light_map_coord(uint t_1, uint size_1) {
+float light_map_coord(uint t_1, uint size_4) {
     float _e2 = to_f32_(t_1);
-    float _e7 = to_f32_(size_1);
+    float _e7 = to_f32_(size_4);
     return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
 }
 
-uint light_map_texel(float a_8, uint size_2) {
-    float _e6 = to_f32_(size_2);
-    float _e9 = to_f32_(size_2);
+uint light_map_texel(float a_8, uint size_5) {
+    float _e6 = to_f32_(size_5);
+    float _e9 = to_f32_(size_5);
     uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
     return _e14;
 }
@@ -892,9 +938,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis) {
 }
 
 vec3 point_irradiance(vec3 intensity_1, vec3 n_11, vec3 v_2) {
-    float d2_10 = dot(v_2, v_2);
-    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_10, MIN_D2_)));
-    float _e11 = inverse_square(d2_10);
+    float d2_12 = dot(v_2, v_2);
+    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_12, MIN_D2_)));
+    float _e11 = inverse_square(d2_12);
     return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
 }
 
@@ -908,13 +954,13 @@ float shadow_bias(float texel, float cos_light_1) {
 }
 
 bool shadow_lit(float d_1, float d_map, float bias) {
-    bool local_9 = false;
+    bool local_10 = false;
     if (!((d_map <= 0.0))) {
-        local_9 = (d_1 <= (d_map + bias));
+        local_10 = (d_1 <= (d_map + bias));
     } else {
-        local_9 = true;
+        local_10 = true;
     }
-    bool _e11 = local_9;
+    bool _e11 = local_10;
     return _e11;
 }
 
@@ -923,30 +969,94 @@ vec3 diffuse_radiance(vec3 albedo, vec3 emission, vec3 e_1) {
 }
 
 void main() {
+    if (gl_LocalInvocationID == uvec3(0u)) {
+        wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        wg_hi = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+    }
+    memoryBarrierShared();
+    barrier();
     uvec3 gid = gl_GlobalInvocationID;
+    uvec3 wg = gl_WorkGroupID;
+    uint li = gl_LocalInvocationIndex;
+    vec3 lo = vec3(3e38);
+    vec3 hi = vec3(-3e38);
+    uint stride = 32u;
+    bool local = false;
     uint i_2 = gid.x;
-    uint _e4 = _group_0_binding_0_cs.count;
-    if ((i_2 >= _e4)) {
+    uint _e6 = _group_0_binding_0_cs.count;
+    bool inside = (i_2 < _e6);
+    if (inside) {
+        GpuVplRecord r_7 = _group_0_binding_1_cs[i_2];
+        vec3 position = r_7.position;
+        vec3 normal = r_7.normal;
+        float _e22 = _group_0_binding_0_cs.scale;
+        vec3 flux_1 = (r_7.flux * _e22);
+        uint _e26 = _group_0_binding_0_cs.per_subset;
+        uint _e28 = interleave_slot_linear(i_2, _e26, P);
+        _group_0_binding_4_cs[_e28] = GpuLight(position, LIGHT_VPL, normal, 0.0, vec3(0.0), 0.0, flux_1, 0u);
+        _group_0_binding_5_cs[_e28] = i_2;
+        uint _e42 = _group_0_binding_0_cs.slc;
+        bool slc = (_e42 != 0u);
+        float _e49 = _group_0_binding_0_cs.exposure;
+        float _e52 = _group_0_binding_0_cs.error_bound;
+        uint _e55 = _group_0_binding_0_cs.mode;
+        float _e56 = vpl_rt2_(flux_1, _e49, _e52, _e55);
+        _group_0_binding_6_cs[_e28] = (slc ? _e56 : 0.0);
+        float _e63 = _group_0_binding_0_cs.fixed_r2_;
+        _group_0_binding_7_cs[_e28] = (slc ? 0.0 : _e63);
+        _group_0_binding_8_cs[i_2] = _e28;
+        if (any(notEqual(flux_1, vec3(0.0)))) {
+            lo = position;
+            hi = position;
+        }
+    }
+    vec3 _e74 = lo;
+    wg_lo[li] = _e74;
+    vec3 _e77 = hi;
+    wg_hi[li] = _e77;
+    memoryBarrierShared();
+    barrier();
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e107 = stride;
+            stride = (_e107 / 2u);
+        }
+        loop_init = false;
+        uint _e80 = stride;
+        if ((_e80 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e83 = stride;
+            if ((li < _e83)) {
+                vec3 _e89 = wg_lo[li];
+                uint _e91 = stride;
+                vec3 _e94 = wg_lo[(li + _e91)];
+                wg_lo[li] = min(_e89, _e94);
+                vec3 _e100 = wg_hi[li];
+                uint _e102 = stride;
+                vec3 _e105 = wg_hi[(li + _e102)];
+                wg_hi[li] = max(_e100, _e105);
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    if ((li == 0u)) {
+        local = inside;
+    } else {
+        local = false;
+    }
+    bool _e115 = local;
+    if (_e115) {
+        vec3 _e121 = wg_lo[0];
+        vec3 _e124 = wg_hi[0];
+        _group_0_binding_9_cs[wg.x] = GpuNearBox(_e121, 0.0, _e124, 0.0);
+        return;
+    } else {
         return;
     }
-    GpuVplRecord r_7 = _group_0_binding_1_cs[i_2];
-    vec3 position = r_7.position;
-    vec3 normal = r_7.normal;
-    float _e14 = _group_0_binding_0_cs.scale;
-    vec3 flux_1 = (r_7.flux * _e14);
-    uint _e18 = _group_0_binding_0_cs.per_subset;
-    uint _e20 = interleave_slot_linear(i_2, _e18, P);
-    _group_0_binding_4_cs[_e20] = GpuLight(position, LIGHT_VPL, normal, 0.0, vec3(0.0), 0.0, flux_1, 0u);
-    _group_0_binding_5_cs[_e20] = i_2;
-    uint _e34 = _group_0_binding_0_cs.slc;
-    bool slc = (_e34 != 0u);
-    float _e41 = _group_0_binding_0_cs.exposure;
-    float _e44 = _group_0_binding_0_cs.error_bound;
-    uint _e47 = _group_0_binding_0_cs.mode;
-    float _e48 = vpl_rt2_(flux_1, _e41, _e44, _e47);
-    _group_0_binding_6_cs[_e20] = (slc ? _e48 : 0.0);
-    float _e55 = _group_0_binding_0_cs.fixed_r2_;
-    _group_0_binding_7_cs[_e20] = (slc ? 0.0 : _e55);
-    return;
 }
 

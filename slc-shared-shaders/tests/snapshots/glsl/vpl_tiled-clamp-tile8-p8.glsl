@@ -100,6 +100,16 @@ struct VplParams {
     uint height;
     uint lights_per_subset;
     float min_d2_;
+    float near_r2_;
+    uint near_blocks;
+    uint pad0_;
+    uint pad1_;
+};
+struct GpuNearBox {
+    vec3 lo;
+    float pad0_;
+    vec3 hi;
+    float pad1_;
 };
 struct GpuVplRecord {
     vec3 position;
@@ -188,6 +198,7 @@ const float TWO_PI = 6.2831855;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
 const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
@@ -195,6 +206,7 @@ const uint LIGHT_BVH_LEAF = 4294967295u;
 const float ONE_MINUS_EPSILON = 0.99999994;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
+const uint NEAR_BLOCK = 64u;
 const uint P = 8u;
 const uint TILE = 8u;
 const uint THREADS = 64u;
@@ -319,8 +331,8 @@ float cull_radius(float r2_1) {
 }
 
 float windowed_falloff(float d2_3, float range2_) {
-    float q = (d2_3 / range2_);
-    float w_9 = clamp((1.0 - (q * q)), 0.0, 1.0);
+    float q_2 = (d2_3 / range2_);
+    float w_9 = clamp((1.0 - (q_2 * q_2)), 0.0, 1.0);
     return ((w_9 * w_9) / max(d2_3, 0.0001));
 }
 
@@ -336,11 +348,11 @@ bool sphere_overlaps_sphere(vec3 c1_, float r1_, vec3 c2_, float r2_2) {
 }
 
 float sphere_pad(float r_1, vec3 c_1) {
-    return ((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD);
+    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
 }
 
 vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
-    bool local_2 = false;
+    bool local_3 = false;
     vec3 v_5 = (c2_1 - c1_1);
     float d_2 = sqrt(dot(v_5, v_5));
     float _e8 = sphere_pad(r1_1, c1_1);
@@ -352,11 +364,11 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
         return vec4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
     if (!((d_2 >= SPHERE_HUGE))) {
-        local_2 = ((0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE);
+        local_3 = ((0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
-        local_2 = true;
+        local_3 = true;
     }
-    bool _e35 = local_2;
+    bool _e35 = local_3;
     if (_e35) {
         return vec4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
@@ -380,8 +392,8 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
 }
 
 bool sphere_overlaps_aabb(vec3 c_2, float r_2, vec3 bmin, vec3 bmax) {
-    vec3 q_1 = clamp(c_2, bmin, bmax);
-    vec3 v_6 = (q_1 - c_2);
+    vec3 q_3 = clamp(c_2, bmin, bmax);
+    vec3 v_6 = (q_3 - c_2);
     return (dot(v_6, v_6) <= (r_2 * r_2));
 }
 
@@ -612,7 +624,7 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     vec3 v_7 = (p - center);
     float dist2_ = dot(v_7, v_7);
     float r2_6 = (radius * radius);
-    float d2_9 = max(max(dist2_, r2_6), MIN_D2_);
+    float d2_11 = max(max(dist2_, r2_6), MIN_D2_);
     vec3 wi = ((dist2_ > 0.0) ? (v_7 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
@@ -626,7 +638,7 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_9);
+    imp = ((phi * _e46) / d2_11);
     if ((dot(n_6, n_6) > 0.0)) {
         float cos_i = -(dot(wi, n_6));
         float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -688,15 +700,15 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
-    bool local_4 = false;
+    bool local_5 = false;
     vec3 n_13 = cross((b_4 - a_5), (c_6 - a_5));
     float l2_ = dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_4 = !((l2_ < 3e38));
+        local_5 = !((l2_ < 3e38));
     } else {
-        local_4 = true;
+        local_5 = true;
     }
-    bool _e17 = local_4;
+    bool _e17 = local_5;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -710,7 +722,7 @@ vec3 face_against(vec3 n_8, vec3 dir) {
 vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
     vec3 e1_1 = (b_5 - a_6);
     vec3 e2_1 = (c_7 - a_6);
-    vec3 q_2 = (p_2 - a_6);
+    vec3 q_4 = (p_2 - a_6);
     float d11_ = dot(e1_1, e1_1);
     float d12_ = dot(e1_1, e2_1);
     float d22_ = dot(e2_1, e2_1);
@@ -718,21 +730,21 @@ vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
     if (!((abs(den) > 0.0))) {
         return vec3(1.0, 0.0, 0.0);
     }
-    float w1_ = (((d22_ * dot(q_2, e1_1)) - (d12_ * dot(q_2, e2_1))) / den);
-    float w2_ = (((d11_ * dot(q_2, e2_1)) - (d12_ * dot(q_2, e1_1))) / den);
+    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
+    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
     return vec3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
 vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_6, vec3 facing) {
-    bool local_5 = false;
+    bool local_6 = false;
     vec3 s_1 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
     float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
-        local_5 = !((l2_1 < 3e38));
+        local_6 = !((l2_1 < 3e38));
     } else {
-        local_5 = true;
+        local_6 = true;
     }
-    bool _e24 = local_5;
+    bool _e24 = local_6;
     if (_e24) {
         return facing;
     }
@@ -741,9 +753,9 @@ vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_6, vec3 facing) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, float t_max_1) {
-    bool local_6 = false;
     bool local_7 = false;
     bool local_8 = false;
+    bool local_9 = false;
     vec3 e1_2 = (b_6 - a_7);
     vec3 e2_2 = (c_8 - a_7);
     vec3 p_3 = cross(d, e2_2);
@@ -755,32 +767,32 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
     vec3 s_2 = (o_1 - a_7);
     float u_3 = (dot(s_2, p_3) * inv);
     if (!((u_3 < 0.0))) {
-        local_6 = (u_3 > 1.0);
-    } else {
-        local_6 = true;
-    }
-    bool _e28 = local_6;
-    if (_e28) {
-        return -1.0;
-    }
-    vec3 q_3 = cross(s_2, e1_2);
-    float v_9 = (dot(d, q_3) * inv);
-    if (!((v_9 < 0.0))) {
-        local_7 = ((u_3 + v_9) > 1.0);
+        local_7 = (u_3 > 1.0);
     } else {
         local_7 = true;
     }
-    bool _e42 = local_7;
+    bool _e28 = local_7;
+    if (_e28) {
+        return -1.0;
+    }
+    vec3 q_5 = cross(s_2, e1_2);
+    float v_9 = (dot(d, q_5) * inv);
+    if (!((v_9 < 0.0))) {
+        local_8 = ((u_3 + v_9) > 1.0);
+    } else {
+        local_8 = true;
+    }
+    bool _e42 = local_8;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_2, q_3) * inv);
+    float t_3 = (dot(e2_2, q_5) * inv);
     if ((t_3 > t_min)) {
-        local_8 = (t_3 < t_max_1);
+        local_9 = (t_3 < t_max_1);
     } else {
-        local_8 = false;
+        local_9 = false;
     }
-    bool _e51 = local_8;
+    bool _e51 = local_9;
     if (_e51) {
         return t_3;
     }
@@ -805,20 +817,20 @@ float mis_power(float pdf_a_1, float pdf_b_1) {
 }
 
 float light_strategy_pdf(float select, float rt2_6, float d2_8, float area_1, float cos_y) {
-    bool local_9 = false;
     bool local_10 = false;
+    bool local_11 = false;
     if (!((d2_8 <= 0.0))) {
-        local_9 = (area_1 <= 0.0);
-    } else {
-        local_9 = true;
-    }
-    bool _e13 = local_9;
-    if (!(_e13)) {
-        local_10 = (cos_y <= 0.0);
+        local_10 = (area_1 <= 0.0);
     } else {
         local_10 = true;
     }
-    bool _e20 = local_10;
+    bool _e13 = local_10;
+    if (!(_e13)) {
+        local_11 = (cos_y <= 0.0);
+    } else {
+        local_11 = true;
+    }
+    bool _e20 = local_11;
     if (_e20) {
         return 0.0;
     }
@@ -871,6 +883,32 @@ uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2) {
     return (((i_1 % subsets) * per_subset) + (i_1 / subsets));
 }
 
+uint near_block_index(uint tx_1, uint ty_1, uint size_1) {
+    uint side_1 = (size_1 / 8u);
+    return ((((((ty_1 / 8u) * side_1) + (tx_1 / 8u)) * NEAR_BLOCK) + ((ty_1 % 8u) * 8u)) + (tx_1 % 8u));
+}
+
+uint near_block_tx(uint q, uint size_2) {
+    return ((((q / NEAR_BLOCK) % (size_2 / 8u)) * 8u) + (q % 8u));
+}
+
+uint near_block_ty(uint q_1, uint size_3) {
+    return ((((q_1 / NEAR_BLOCK) / (size_3 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
+}
+
+float vpl_near_weight(float d2_9, float near_r2_) {
+    if ((near_r2_ <= 0.0)) {
+        return 0.0;
+    }
+    float t_6 = clamp(((near_r2_ - d2_9) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_6 * t_6) * (3.0 - (2.0 * t_6)));
+}
+
+float vpl_far_weight(float d2_10, float near_r2_1) {
+    float _e2 = vpl_near_weight(d2_10, near_r2_1);
+    return (1.0 - _e2);
+}
+
 vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_7, float h) {
     float sx = (((2.0 * px) / w_7) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h));
@@ -881,15 +919,15 @@ float path_survival(vec3 beta) {
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
 }
 
-float light_map_coord(uint t_1, uint size_1) {
+float light_map_coord(uint t_1, uint size_4) {
     float _e2 = to_f32_(t_1);
-    float _e7 = to_f32_(size_1);
+    float _e7 = to_f32_(size_4);
     return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
 }
 
-uint light_map_texel(float a_8, uint size_2) {
-    float _e6 = to_f32_(size_2);
-    float _e9 = to_f32_(size_2);
+uint light_map_texel(float a_8, uint size_5) {
+    float _e6 = to_f32_(size_5);
+    float _e9 = to_f32_(size_5);
     uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
     return _e14;
 }
@@ -903,9 +941,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis) {
 }
 
 vec3 point_irradiance(vec3 intensity_1, vec3 n_11, vec3 v_2) {
-    float d2_10 = dot(v_2, v_2);
-    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_10, MIN_D2_)));
-    float _e11 = inverse_square(d2_10);
+    float d2_12 = dot(v_2, v_2);
+    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_12, MIN_D2_)));
+    float _e11 = inverse_square(d2_12);
     return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
 }
 
@@ -919,13 +957,13 @@ float shadow_bias(float texel, float cos_light_1) {
 }
 
 bool shadow_lit(float d_1, float d_map, float bias) {
-    bool local_11 = false;
+    bool local_12 = false;
     if (!((d_map <= 0.0))) {
-        local_11 = (d_1 <= (d_map + bias));
+        local_12 = (d_1 <= (d_map + bias));
     } else {
-        local_11 = true;
+        local_12 = true;
     }
-    bool _e11 = local_11;
+    bool _e11 = local_12;
     return _e11;
 }
 
@@ -979,6 +1017,7 @@ void main() {
     uint first = 0u;
     uint j = 0u;
     uint k = 0u;
+    bool local_2 = false;
     uint sub = wg.z;
     uint px_1 = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
     uint py_1 = ((sub / P) + (((wg.y * TILE) + lid.y) * P));
@@ -1046,8 +1085,8 @@ void main() {
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e211 = first;
-            first = (_e211 + MAX_TILE_LIGHTS);
+            uint _e222 = first;
+            first = (_e222 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
         uint _e125 = first;
@@ -1106,8 +1145,8 @@ void main() {
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e209 = k;
-                        k = (_e209 + 1u);
+                        uint _e220 = k;
+                        k = (_e220 + 1u);
                     }
                     loop_init_3 = false;
                     uint _e176 = k;
@@ -1125,12 +1164,21 @@ void main() {
                         vec3 _e191 = nrm;
                         float _e194 = _group_0_binding_0_cs.min_d2_;
                         float _e195 = vpl_transfer(l_4.p1_, _e191, v_10, _e194);
-                        float _e199 = _group_0_binding_5_cs[j_1];
-                        if ((dot(v_10, v_10) < _e199)) {
-                            vec3 _e201 = e;
-                            e = (_e201 + (l_4.intensity * _e195));
-                            uint _e205 = kept;
-                            kept = (_e205 + 1u);
+                        float d2_13 = dot(v_10, v_10);
+                        float _e199 = _group_0_binding_0_cs.near_r2_;
+                        float _e200 = vpl_far_weight(d2_13, _e199);
+                        float _e203 = _group_0_binding_5_cs[j_1];
+                        if ((d2_13 < _e203)) {
+                            local_2 = (_e200 > 0.0);
+                        } else {
+                            local_2 = false;
+                        }
+                        bool _e210 = local_2;
+                        if (_e210) {
+                            vec3 _e211 = e;
+                            e = (_e211 + (l_4.intensity * (_e195 * _e200)));
+                            uint _e216 = kept;
+                            kept = (_e216 + 1u);
                         }
                     }
                 }
@@ -1140,9 +1188,9 @@ void main() {
         }
     }
     if (valid) {
-        vec3 _e216 = e;
-        uint _e217 = kept;
-        _group_0_binding_6_cs[pix] = vec4(_e216, float(_e217));
+        vec3 _e227 = e;
+        uint _e228 = kept;
+        _group_0_binding_6_cs[pix] = vec4(_e227, float(_e228));
         return;
     } else {
         return;

@@ -105,6 +105,17 @@ struct VplParams {
     uint height;
     uint lights_per_subset;
     float min_d2_;
+    float near_r2_;
+    uint near_blocks;
+    uint pad0_;
+    uint pad1_;
+};
+
+struct GpuNearBox {
+    float3 lo;
+    float pad0_;
+    float3 hi;
+    float pad1_;
 };
 
 struct GpuVplRecord {
@@ -224,6 +235,7 @@ static const float TWO_PI = 6.2831855;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
+static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
@@ -231,6 +243,7 @@ static const uint LIGHT_BVH_LEAF = 4294967295u;
 static const float ONE_MINUS_EPSILON = 0.99999994;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
+static const uint NEAR_BLOCK = 64u;
 static const uint K = 8u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
@@ -373,8 +386,8 @@ float cull_radius(float r2_1)
 
 float windowed_falloff(float d2_3, float range2_)
 {
-    float q = (d2_3 / range2_);
-    float w_10 = saturate((1.0 - (q * q)));
+    float q_2 = (d2_3 / range2_);
+    float w_10 = saturate((1.0 - (q_2 * q_2)));
     return ((w_10 * w_10) / max(d2_3, 0.0001));
 }
 
@@ -393,7 +406,7 @@ bool sphere_overlaps_sphere(float3 c1_, float r1_, float3 c2_, float r2_2)
 
 float sphere_pad(float r_1, float3 c_1)
 {
-    return ((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD);
+    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
 }
 
 float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
@@ -440,8 +453,8 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 
 bool sphere_overlaps_aabb(float3 c_2, float r_2, float3 bmin, float3 bmax)
 {
-    float3 q_1 = clamp(c_2, bmin, bmax);
-    float3 v_7 = (q_1 - c_2);
+    float3 q_3 = clamp(c_2, bmin, bmax);
+    float3 v_7 = (q_3 - c_2);
     return (dot(v_7, v_7) <= (r_2 * r_2));
 }
 
@@ -789,7 +802,7 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     float3 v_8 = (p - center_);
     float dist2_ = dot(v_8, v_8);
     float r2_6 = (radius * radius);
-    float d2_9 = max(max(dist2_, r2_6), MIN_D2_);
+    float d2_11 = max(max(dist2_, r2_6), MIN_D2_);
     float3 wi = ((dist2_ > 0.0) ? (v_8 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
@@ -803,7 +816,7 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_9);
+    imp = ((phi * _e46) / d2_11);
     if ((dot(n_6, n_6) > 0.0)) {
         float cos_i = -(dot(wi, n_6));
         const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -897,7 +910,7 @@ float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
 {
     float3 e1_1 = (b_5 - a_6);
     float3 e2_1 = (c_7 - a_6);
-    float3 q_2 = (p_2 - a_6);
+    float3 q_4 = (p_2 - a_6);
     float d11_ = dot(e1_1, e1_1);
     float d12_ = dot(e1_1, e2_1);
     float d22_ = dot(e2_1, e2_1);
@@ -905,8 +918,8 @@ float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
     if (!((abs(den) > 0.0))) {
         return float3(1.0, 0.0, 0.0);
     }
-    float w1_ = (((d22_ * dot(q_2, e1_1)) - (d12_ * dot(q_2, e2_1))) / den);
-    float w2_ = (((d11_ * dot(q_2, e2_1)) - (d12_ * dot(q_2, e1_1))) / den);
+    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
+    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
     return float3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
@@ -954,8 +967,8 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
     if (_e28) {
         return -1.0;
     }
-    float3 q_3 = cross(s_2, e1_2);
-    float v_10 = (dot(d, q_3) * inv);
+    float3 q_5 = cross(s_2, e1_2);
+    float v_10 = (dot(d, q_5) * inv);
     if (!((v_10 < 0.0))) {
         local_5 = ((u_4 + v_10) > 1.0);
     } else {
@@ -965,7 +978,7 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_2, q_3) * inv);
+    float t_3 = (dot(e2_2, q_5) * inv);
     if ((t_3 > t_min)) {
         local_6 = (t_3 < t_max_1);
     } else {
@@ -1081,6 +1094,37 @@ uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2)
     return ((naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets));
 }
 
+uint near_block_index(uint tx_1, uint ty_1, uint size_1)
+{
+    uint side_1 = naga_div(size_1, 8u);
+    return (((((naga_div(ty_1, 8u) * side_1) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u));
+}
+
+uint near_block_tx(uint q, uint size_2)
+{
+    return ((naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_2, 8u)) * 8u) + naga_mod(q, 8u));
+}
+
+uint near_block_ty(uint q_1, uint size_3)
+{
+    return ((naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_3, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u));
+}
+
+float vpl_near_weight(float d2_9, float near_r2_)
+{
+    if ((near_r2_ <= 0.0)) {
+        return 0.0;
+    }
+    float t_6 = clamp(((near_r2_ - d2_9) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_6 * t_6) * (3.0 - (2.0 * t_6)));
+}
+
+float vpl_far_weight(float d2_10, float near_r2_1)
+{
+    const float _e2 = vpl_near_weight(d2_10, near_r2_1);
+    return (1.0 - _e2);
+}
+
 float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_7, float h_1)
 {
     float sx = (((2.0 * px) / w_7) - 1.0);
@@ -1093,17 +1137,17 @@ float path_survival(float3 beta)
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
 }
 
-float light_map_coord(uint t_1, uint size_1)
+float light_map_coord(uint t_1, uint size_4)
 {
     const float _e2 = to_f32_(t_1);
-    const float _e7 = to_f32_(size_1);
+    const float _e7 = to_f32_(size_4);
     return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
 }
 
-uint light_map_texel(float a_8, uint size_2)
+uint light_map_texel(float a_8, uint size_5)
 {
-    const float _e6 = to_f32_(size_2);
-    const float _e9 = to_f32_(size_2);
+    const float _e6 = to_f32_(size_5);
+    const float _e9 = to_f32_(size_5);
     const uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
     return _e14;
 }
@@ -1120,9 +1164,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
 
 float3 point_irradiance(float3 intensity_1, float3 n_11, float3 v_2)
 {
-    float d2_10 = dot(v_2, v_2);
-    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_10, MIN_D2_)));
-    const float _e11 = inverse_square(d2_10);
+    float d2_12 = dot(v_2, v_2);
+    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_12, MIN_D2_)));
+    const float _e11 = inverse_square(d2_12);
     return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
 }
 
@@ -1266,9 +1310,9 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
                     }
                     {
                         uint _e51 = i_2;
-                        GpuTriangle t_6 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e51*48+0)), asuint(geo_tris.Load(_e51*48+12)), asfloat(geo_tris.Load3(_e51*48+16)), asuint(geo_tris.Load(_e51*48+28)), asfloat(geo_tris.Load3(_e51*48+32)), asuint(geo_tris.Load(_e51*48+44)));
+                        GpuTriangle t_7 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e51*48+0)), asuint(geo_tris.Load(_e51*48+12)), asfloat(geo_tris.Load3(_e51*48+16)), asuint(geo_tris.Load(_e51*48+28)), asfloat(geo_tris.Load3(_e51*48+32)), asuint(geo_tris.Load(_e51*48+44)));
                         float _e58 = hit.t;
-                        const float _e59 = ray_triangle(o_2, d_2, t_6.v0_, t_6.v1_, t_6.v2_, t_min_1, _e58);
+                        const float _e59 = ray_triangle(o_2, d_2, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e58);
                         if ((_e59 > 0.0)) {
                             hit.t = _e59;
                             uint _e64 = i_2;
@@ -1447,11 +1491,11 @@ Connection connect(uint li, float3 x_12, float3 n_13, float3 ng, float w_res, fl
     c_9.y = _e16;
     float3 _e18 = c_9.y;
     float3 v_11 = (x_12 - _e18);
-    float d2_11 = dot(v_11, v_11);
+    float d2_13 = dot(v_11, v_11);
     float _e23 = asfloat(r2_5.Load(li*4));
-    const bool _e24 = slc_keep(_e23, d2_11);
+    const bool _e24 = slc_keep(_e23, d2_13);
     if (!(!(_e24))) {
-        local_10 = (d2_11 <= 0.0);
+        local_10 = (d2_13 <= 0.0);
     } else {
         local_10 = true;
     }
@@ -1461,7 +1505,7 @@ Connection connect(uint li, float3 x_12, float3 n_13, float3 ng, float w_res, fl
         const Connection connection = _e33;
         return connection;
     }
-    float3 w_11 = (v_11 / (sqrt(d2_11)).xxx);
+    float3 w_11 = (v_11 / (sqrt(d2_13)).xxx);
     c_9.cos_x = -(dot(n_13, w_11));
     float _e41 = c_9.cos_x;
     if (!((_e41 <= 0.0))) {
@@ -1486,7 +1530,7 @@ Connection connect(uint li, float3 x_12, float3 n_13, float3 ng, float w_res, fl
     const float3 _e64 = light_intensity(l_4, w_11);
     float _e66 = c_9.cos_x;
     float _e69 = asfloat(rt2_7.Load(li*4));
-    const float _e70 = connection_factor(_e66, d2_11, _e69, w_res);
+    const float _e70 = connection_factor(_e66, d2_13, _e69, w_res);
     c_9.e = (_e64 * _e70);
     Connection _e72 = c_9;
     const Connection connection_2 = _e72;
@@ -1674,13 +1718,13 @@ float light_pdf(uint li_4, float3 x_19, float3 n_20, float3 y_2, uint nee_1, boo
 {
     GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
     float3 v_12 = (x_19 - y_2);
-    float d2_12 = dot(v_12, v_12);
+    float d2_14 = dot(v_12, v_12);
     const float3 _e11 = light_normal(l_5);
-    float cos_y_1 = ((d2_12 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_12)).xxx)) : 0.0);
+    float cos_y_1 = ((d2_14 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_14)).xxx)) : 0.0);
     const float _e20 = select_pdf(li_4, x_19, n_20, nee_1, in_range_2);
     float _e23 = asfloat(rt2_7.Load(li_4*4));
     const float _e24 = light_area(l_5);
-    const float _e25 = light_strategy_pdf(_e20, _e23, d2_12, _e24, cos_y_1);
+    const float _e25 = light_strategy_pdf(_e20, _e23, d2_14, _e24, cos_y_1);
     return _e25;
 }
 

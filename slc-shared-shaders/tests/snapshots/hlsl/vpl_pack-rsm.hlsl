@@ -105,6 +105,17 @@ struct VplParams {
     uint height;
     uint lights_per_subset;
     float min_d2_;
+    float near_r2_;
+    uint near_blocks;
+    uint pad0_;
+    uint pad1_;
+};
+
+struct GpuNearBox {
+    float3 lo;
+    float pad0_;
+    float3 hi;
+    float pad1_;
 };
 
 struct GpuVplRecord {
@@ -202,6 +213,7 @@ static const float TWO_PI = 6.2831855;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
+static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
@@ -209,6 +221,7 @@ static const uint LIGHT_BVH_LEAF = 4294967295u;
 static const float ONE_MINUS_EPSILON = 0.99999994;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
+static const uint NEAR_BLOCK = 64u;
 static const uint P = 8u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
@@ -220,6 +233,10 @@ RWByteAddressBuffer lights : register(u4);
 RWByteAddressBuffer ids : register(u5);
 RWByteAddressBuffer rt2_7 : register(u6);
 RWByteAddressBuffer r2_5 : register(u7);
+RWByteAddressBuffer near_slots : register(u8);
+RWByteAddressBuffer near_boxes : register(u9);
+groupshared float3 wg_lo[64];
+groupshared float3 wg_hi[64];
 
 float at(uint tab, uint i)
 {
@@ -346,8 +363,8 @@ float cull_radius(float r2_1)
 
 float windowed_falloff(float d2_3, float range2_)
 {
-    float q = (d2_3 / range2_);
-    float w_8 = saturate((1.0 - (q * q)));
+    float q_2 = (d2_3 / range2_);
+    float w_8 = saturate((1.0 - (q_2 * q_2)));
     return ((w_8 * w_8) / max(d2_3, 0.0001));
 }
 
@@ -366,12 +383,12 @@ bool sphere_overlaps_sphere(float3 c1_, float r1_, float3 c2_, float r2_2)
 
 float sphere_pad(float r_1, float3 c_1)
 {
-    return ((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD);
+    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
 }
 
 float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 {
-    bool local = (bool)0;
+    bool local_1 = (bool)0;
 
     float3 v_5 = (c2_1 - c1_1);
     float d_2 = sqrt(dot(v_5, v_5));
@@ -384,11 +401,11 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
         return float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
     if (!((d_2 >= SPHERE_HUGE))) {
-        local = ((0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE);
+        local_1 = ((0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
-        local = true;
+        local_1 = true;
     }
-    bool _e35 = local;
+    bool _e35 = local_1;
     if (_e35) {
         return float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
@@ -413,8 +430,8 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 
 bool sphere_overlaps_aabb(float3 c_2, float r_2, float3 bmin, float3 bmax)
 {
-    float3 q_1 = clamp(c_2, bmin, bmax);
-    float3 v_6 = (q_1 - c_2);
+    float3 q_3 = clamp(c_2, bmin, bmax);
+    float3 v_6 = (q_3 - c_2);
     return (dot(v_6, v_6) <= (r_2 * r_2));
 }
 
@@ -583,36 +600,36 @@ float ies_fold_c(float c_4, float h_first, float h_last)
 
 uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
 {
-    uint lo = 0u;
-    uint hi = (uint)0;
+    uint lo_1 = 0u;
+    uint hi_1 = (uint)0;
 
     if ((n_2 < 2u)) {
         return 0u;
     }
-    hi = (n_2 - 1u);
+    hi_1 = (n_2 - 1u);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e12 = hi;
-        uint _e13 = lo;
+        uint _e12 = hi_1;
+        uint _e13 = lo_1;
         if (((_e12 - _e13) > 1u)) {
         } else {
             break;
         }
         {
-            uint _e17 = lo;
-            uint _e18 = hi;
+            uint _e17 = lo_1;
+            uint _e18 = hi_1;
             uint mid = ((_e17 + _e18) >> 1u);
             const float _e23 = at(tab_1, (start + mid));
             if ((_e23 <= x_6)) {
-                lo = mid;
+                lo_1 = mid;
             } else {
-                hi = mid;
+                hi_1 = mid;
             }
         }
     }
-    uint _e25 = lo;
+    uint _e25 = lo_1;
     return _e25;
 }
 
@@ -626,7 +643,7 @@ float ies_lerp_t(float a0_, float a1_, float x_7)
 
 float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
 {
-    bool local_1 = (bool)0;
+    bool local_2 = (bool)0;
 
     const float _e4 = at(tab_2, base_1);
     const uint _e5 = to_u32_(_e4);
@@ -638,11 +655,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
     const float _e14 = at(tab_2, v0_);
     if (!((gamma < _e14))) {
         const float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_1 = (gamma > _e22);
+        local_2 = (gamma > _e22);
     } else {
-        local_1 = true;
+        local_2 = true;
     }
-    bool _e25 = local_1;
+    bool _e25 = local_2;
     if (_e25) {
         return 0.0;
     }
@@ -693,23 +710,23 @@ uint mul_hi_u32_(uint a_4, uint b_3)
     return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u));
 }
 
-uint uniform_index(uint n_3, uint hi_1, uint lo_1)
+uint uniform_index(uint n_3, uint hi_2, uint lo_2)
 {
-    const uint _e3 = mul_lo_u32_(hi_1, n_3);
-    const uint _e4 = mul_hi_u32_(hi_1, n_3);
-    const uint _e5 = mul_hi_u32_(lo_1, n_3);
+    const uint _e3 = mul_lo_u32_(hi_2, n_3);
+    const uint _e4 = mul_hi_u32_(hi_2, n_3);
+    const uint _e5 = mul_hi_u32_(lo_2, n_3);
     if ((_e3 > (4294967295u - _e5))) {
         return (_e4 + 1u);
     }
     return _e4;
 }
 
-uint reservoir_slot(uint n_4, uint k, uint hi_2, uint lo_2)
+uint reservoir_slot(uint n_4, uint k, uint hi_3, uint lo_3)
 {
     if ((n_4 <= k)) {
         return (n_4 - 1u);
     }
-    const uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    const uint _e7 = uniform_index(n_4, hi_3, lo_3);
     if ((_e7 < k)) {
         return _e7;
     }
@@ -762,7 +779,7 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     float3 v_7 = (p - center_);
     float dist2_ = dot(v_7, v_7);
     float r2_6 = (radius * radius);
-    float d2_9 = max(max(dist2_, r2_6), MIN_D2_);
+    float d2_11 = max(max(dist2_, r2_6), MIN_D2_);
     float3 wi = ((dist2_ > 0.0) ? (v_7 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
@@ -776,7 +793,7 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_9);
+    imp = ((phi * _e46) / d2_11);
     if ((dot(n_6, n_6) > 0.0)) {
         float cos_i = -(dot(wi, n_6));
         const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -833,10 +850,10 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 {
     float3 t0_ = ((bmin_1 - o) * inv_d);
     float3 t1_ = ((bmax_1 - o) * inv_d);
-    float3 lo_3 = min(t0_, t1_);
-    float3 hi_3 = max(t0_, t1_);
-    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
-    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
+    float3 lo_4 = min(t0_, t1_);
+    float3 hi_4 = max(t0_, t1_);
+    float t_in = max(max(lo_4.x, lo_4.y), max(lo_4.z, 0.0));
+    float t_out = min(min(hi_4.x, hi_4.y), min(hi_4.z, t_max));
     if ((t_in <= t_out)) {
         return t_in;
     }
@@ -845,16 +862,16 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 
 float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
 {
-    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
 
     float3 n_13 = cross((b_4 - a_5), (c_6 - a_5));
     float l2_ = dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_2 = !((l2_ < 3e38));
+        local_3 = !((l2_ < 3e38));
     } else {
-        local_2 = true;
+        local_3 = true;
     }
-    bool _e17 = local_2;
+    bool _e17 = local_3;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -870,7 +887,7 @@ float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
 {
     float3 e1_1 = (b_5 - a_6);
     float3 e2_1 = (c_7 - a_6);
-    float3 q_2 = (p_2 - a_6);
+    float3 q_4 = (p_2 - a_6);
     float d11_ = dot(e1_1, e1_1);
     float d12_ = dot(e1_1, e2_1);
     float d22_ = dot(e2_1, e2_1);
@@ -878,23 +895,23 @@ float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
     if (!((abs(den) > 0.0))) {
         return float3(1.0, 0.0, 0.0);
     }
-    float w1_ = (((d22_ * dot(q_2, e1_1)) - (d12_ * dot(q_2, e2_1))) / den);
-    float w2_ = (((d11_ * dot(q_2, e2_1)) - (d12_ * dot(q_2, e1_1))) / den);
+    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
+    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
     return float3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
 float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_6, float3 facing)
 {
-    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
 
     float3 s_1 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
     float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
-        local_3 = !((l2_1 < 3e38));
+        local_4 = !((l2_1 < 3e38));
     } else {
-        local_3 = true;
+        local_4 = true;
     }
-    bool _e24 = local_3;
+    bool _e24 = local_4;
     if (_e24) {
         return facing;
     }
@@ -904,9 +921,9 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_6, float3 fac
 
 float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
 {
-    bool local_4 = (bool)0;
     bool local_5 = (bool)0;
     bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
 
     float3 e1_2 = (b_6 - a_7);
     float3 e2_2 = (c_8 - a_7);
@@ -919,32 +936,32 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
     float3 s_2 = (o_1 - a_7);
     float u_3 = (dot(s_2, p_3) * inv);
     if (!((u_3 < 0.0))) {
-        local_4 = (u_3 > 1.0);
-    } else {
-        local_4 = true;
-    }
-    bool _e28 = local_4;
-    if (_e28) {
-        return -1.0;
-    }
-    float3 q_3 = cross(s_2, e1_2);
-    float v_9 = (dot(d, q_3) * inv);
-    if (!((v_9 < 0.0))) {
-        local_5 = ((u_3 + v_9) > 1.0);
+        local_5 = (u_3 > 1.0);
     } else {
         local_5 = true;
     }
-    bool _e42 = local_5;
+    bool _e28 = local_5;
+    if (_e28) {
+        return -1.0;
+    }
+    float3 q_5 = cross(s_2, e1_2);
+    float v_9 = (dot(d, q_5) * inv);
+    if (!((v_9 < 0.0))) {
+        local_6 = ((u_3 + v_9) > 1.0);
+    } else {
+        local_6 = true;
+    }
+    bool _e42 = local_6;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_2, q_3) * inv);
+    float t_3 = (dot(e2_2, q_5) * inv);
     if ((t_3 > t_min)) {
-        local_6 = (t_3 < t_max_1);
+        local_7 = (t_3 < t_max_1);
     } else {
-        local_6 = false;
+        local_7 = false;
     }
-    bool _e51 = local_6;
+    bool _e51 = local_7;
     if (_e51) {
         return t_3;
     }
@@ -972,21 +989,21 @@ float mis_power(float pdf_a_1, float pdf_b_1)
 
 float light_strategy_pdf(float select_, float rt2_6, float d2_8, float area_1, float cos_y)
 {
-    bool local_7 = (bool)0;
     bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
 
     if (!((d2_8 <= 0.0))) {
-        local_7 = (area_1 <= 0.0);
-    } else {
-        local_7 = true;
-    }
-    bool _e13 = local_7;
-    if (!(_e13)) {
-        local_8 = (cos_y <= 0.0);
+        local_8 = (area_1 <= 0.0);
     } else {
         local_8 = true;
     }
-    bool _e20 = local_8;
+    bool _e13 = local_8;
+    if (!(_e13)) {
+        local_9 = (cos_y <= 0.0);
+    } else {
+        local_9 = true;
+    }
+    bool _e20 = local_9;
     if (_e20) {
         return 0.0;
     }
@@ -1054,6 +1071,37 @@ uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2)
     return ((naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets));
 }
 
+uint near_block_index(uint tx_1, uint ty_1, uint size_1)
+{
+    uint side_1 = naga_div(size_1, 8u);
+    return (((((naga_div(ty_1, 8u) * side_1) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u));
+}
+
+uint near_block_tx(uint q, uint size_2)
+{
+    return ((naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_2, 8u)) * 8u) + naga_mod(q, 8u));
+}
+
+uint near_block_ty(uint q_1, uint size_3)
+{
+    return ((naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_3, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u));
+}
+
+float vpl_near_weight(float d2_9, float near_r2_)
+{
+    if ((near_r2_ <= 0.0)) {
+        return 0.0;
+    }
+    float t_6 = clamp(((near_r2_ - d2_9) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_6 * t_6) * (3.0 - (2.0 * t_6)));
+}
+
+float vpl_far_weight(float d2_10, float near_r2_1)
+{
+    const float _e2 = vpl_near_weight(d2_10, near_r2_1);
+    return (1.0 - _e2);
+}
+
 float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_7, float h)
 {
     float sx = (((2.0 * px) / w_7) - 1.0);
@@ -1066,17 +1114,17 @@ float path_survival(float3 beta)
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
 }
 
-float light_map_coord(uint t_1, uint size_1)
+float light_map_coord(uint t_1, uint size_4)
 {
     const float _e2 = to_f32_(t_1);
-    const float _e7 = to_f32_(size_1);
+    const float _e7 = to_f32_(size_4);
     return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
 }
 
-uint light_map_texel(float a_8, uint size_2)
+uint light_map_texel(float a_8, uint size_5)
 {
-    const float _e6 = to_f32_(size_2);
-    const float _e9 = to_f32_(size_2);
+    const float _e6 = to_f32_(size_5);
+    const float _e9 = to_f32_(size_5);
     const uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
     return _e14;
 }
@@ -1093,9 +1141,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
 
 float3 point_irradiance(float3 intensity_1, float3 n_11, float3 v_2)
 {
-    float d2_10 = dot(v_2, v_2);
-    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_10, MIN_D2_)));
-    const float _e11 = inverse_square(d2_10);
+    float d2_12 = dot(v_2, v_2);
+    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_12, MIN_D2_)));
+    const float _e11 = inverse_square(d2_12);
     return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
 }
 
@@ -1112,14 +1160,14 @@ float shadow_bias(float texel, float cos_light_1)
 
 bool shadow_lit(float d_1, float d_map, float bias)
 {
-    bool local_9 = (bool)0;
+    bool local_10 = (bool)0;
 
     if (!((d_map <= 0.0))) {
-        local_9 = (d_1 <= (d_map + bias));
+        local_10 = (d_1 <= (d_map + bias));
     } else {
-        local_9 = true;
+        local_10 = true;
     }
-    bool _e11 = local_9;
+    bool _e11 = local_10;
     return _e11;
 }
 
@@ -1141,48 +1189,128 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
+GpuNearBox ConstructGpuNearBox(float3 arg0, float arg1, float3 arg2, float arg3) {
+    GpuNearBox ret = (GpuNearBox)0;
+    ret.lo = arg0;
+    ret.pad0_ = arg1;
+    ret.hi = arg2;
+    ret.pad1_ = arg3;
+    return ret;
+}
+
 [numthreads(64, 1, 1)]
-void main(uint3 gid : SV_DispatchThreadID)
+void main(uint3 gid : SV_DispatchThreadID, uint3 wg : SV_GroupID, uint li : SV_GroupIndex)
 {
-    uint i_2 = gid.x;
-    uint _e4 = params.count;
-    if ((i_2 >= _e4)) {
+    if (li == 0) {
+        wg_lo = (float3[64])0;
+        wg_hi = (float3[64])0;
+    }
+    GroupMemoryBarrierWithGroupSync();
+    float3 lo = (3e38).xxx;
+    float3 hi = (-3e38).xxx;
+    uint stride = 32u;
+    bool local = (bool)0;
+
+    uint q_6 = gid.x;
+    uint _e6 = params.count;
+    bool inside = (q_6 < _e6);
+    if (inside) {
+        uint _e16 = params.size;
+        const uint _e17 = near_block_tx(q_6, _e16);
+        uint _e20 = params.size;
+        const uint _e21 = near_block_ty(q_6, _e20);
+        uint _e24 = params.size;
+        uint i_2 = ((_e21 * _e24) + _e17);
+        int2 texel_1 = int2(int(_e17), int(_e21));
+        float4 _e32 = rsm_position.Load(int3(texel_1, int(0)));
+        float3 position = _e32.xyz;
+        float4 _e36 = rsm_normal.Load(int3(texel_1, int(0)));
+        float3 normal = _e36.xyz;
+        float4 _e40 = rsm_flux.Load(int3(texel_1, int(0)));
+        float _e44 = params.scale;
+        float3 flux_1 = (_e40.xyz * _e44);
+        uint _e48 = params.size;
+        const uint _e50 = interleave_slot(_e17, _e21, _e48, P);
+        {
+            GpuLight _value3 = ConstructGpuLight(position, LIGHT_VPL, normal, 0.0, (0.0).xxx, 0.0, flux_1, 0u);
+            lights.Store3(_e50*64+0, asuint(_value3.p0_));
+            lights.Store(_e50*64+12, asuint(_value3.kind));
+            lights.Store3(_e50*64+16, asuint(_value3.p1_));
+            lights.Store(_e50*64+28, asuint(_value3.a));
+            lights.Store3(_e50*64+32, asuint(_value3.p2_));
+            lights.Store(_e50*64+44, asuint(_value3.b));
+            lights.Store3(_e50*64+48, asuint(_value3.intensity));
+            lights.Store(_e50*64+60, asuint(_value3.ies_base));
+        }
+        ids.Store(_e50*4, asuint(i_2));
+        uint _e64 = params.slc;
+        bool slc = (_e64 != 0u);
+        float _e71 = params.exposure;
+        float _e74 = params.error_bound;
+        uint _e77 = params.mode;
+        const float _e78 = vpl_rt2_(flux_1, _e71, _e74, _e77);
+        rt2_7.Store(_e50*4, asuint((slc ? _e78 : 0.0)));
+        float _e85 = params.fixed_r2_;
+        r2_5.Store(_e50*4, asuint((slc ? 0.0 : _e85)));
+        near_slots.Store(q_6*4, asuint(_e50));
+        if (any((flux_1 != (0.0).xxx))) {
+            lo = position;
+            hi = position;
+        }
+    }
+    float3 _e96 = lo;
+    wg_lo[min(uint(li), 63u)] = _e96;
+    float3 _e99 = hi;
+    wg_hi[min(uint(li), 63u)] = _e99;
+    GroupMemoryBarrierWithGroupSync();
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e129 = stride;
+            stride = naga_div(_e129, 2u);
+        }
+        loop_init = false;
+        uint _e102 = stride;
+        if ((_e102 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e105 = stride;
+            if ((li < _e105)) {
+                float3 _e111 = wg_lo[min(uint(li), 63u)];
+                uint _e113 = stride;
+                float3 _e116 = wg_lo[min(uint((li + _e113)), 63u)];
+                wg_lo[min(uint(li), 63u)] = min(_e111, _e116);
+                float3 _e122 = wg_hi[min(uint(li), 63u)];
+                uint _e124 = stride;
+                float3 _e127 = wg_hi[min(uint((li + _e124)), 63u)];
+                wg_hi[min(uint(li), 63u)] = max(_e122, _e127);
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    if ((li == 0u)) {
+        local = inside;
+    } else {
+        local = false;
+    }
+    bool _e137 = local;
+    if (_e137) {
+        float3 _e143 = wg_lo[0];
+        float3 _e146 = wg_hi[0];
+        {
+            GpuNearBox _value3 = ConstructGpuNearBox(_e143, 0.0, _e146, 0.0);
+            near_boxes.Store3(wg.x*32+0, asuint(_value3.lo));
+            near_boxes.Store(wg.x*32+12, asuint(_value3.pad0_));
+            near_boxes.Store3(wg.x*32+16, asuint(_value3.hi));
+            near_boxes.Store(wg.x*32+28, asuint(_value3.pad1_));
+        }
+        return;
+    } else {
         return;
     }
-    uint _e8 = params.size;
-    uint tx_1 = naga_mod(i_2, _e8);
-    uint _e12 = params.size;
-    uint ty_1 = naga_div(i_2, _e12);
-    int2 texel_1 = int2(int(tx_1), int(ty_1));
-    float4 _e19 = rsm_position.Load(int3(texel_1, int(0)));
-    float3 position = _e19.xyz;
-    float4 _e23 = rsm_normal.Load(int3(texel_1, int(0)));
-    float3 normal = _e23.xyz;
-    float4 _e27 = rsm_flux.Load(int3(texel_1, int(0)));
-    float _e31 = params.scale;
-    float3 flux_1 = (_e27.xyz * _e31);
-    uint _e35 = params.size;
-    const uint _e37 = interleave_slot(tx_1, ty_1, _e35, P);
-    {
-        GpuLight _value2 = ConstructGpuLight(position, LIGHT_VPL, normal, 0.0, (0.0).xxx, 0.0, flux_1, 0u);
-        lights.Store3(_e37*64+0, asuint(_value2.p0_));
-        lights.Store(_e37*64+12, asuint(_value2.kind));
-        lights.Store3(_e37*64+16, asuint(_value2.p1_));
-        lights.Store(_e37*64+28, asuint(_value2.a));
-        lights.Store3(_e37*64+32, asuint(_value2.p2_));
-        lights.Store(_e37*64+44, asuint(_value2.b));
-        lights.Store3(_e37*64+48, asuint(_value2.intensity));
-        lights.Store(_e37*64+60, asuint(_value2.ies_base));
-    }
-    ids.Store(_e37*4, asuint(i_2));
-    uint _e51 = params.slc;
-    bool slc = (_e51 != 0u);
-    float _e58 = params.exposure;
-    float _e61 = params.error_bound;
-    uint _e64 = params.mode;
-    const float _e65 = vpl_rt2_(flux_1, _e58, _e61, _e64);
-    rt2_7.Store(_e37*4, asuint((slc ? _e65 : 0.0)));
-    float _e72 = params.fixed_r2_;
-    r2_5.Store(_e37*4, asuint((slc ? 0.0 : _e72)));
-    return;
 }

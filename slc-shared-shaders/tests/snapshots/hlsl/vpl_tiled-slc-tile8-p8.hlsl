@@ -105,6 +105,17 @@ struct VplParams {
     uint height;
     uint lights_per_subset;
     float min_d2_;
+    float near_r2_;
+    uint near_blocks;
+    uint pad0_;
+    uint pad1_;
+};
+
+struct GpuNearBox {
+    float3 lo;
+    float pad0_;
+    float3 hi;
+    float pad1_;
 };
 
 struct GpuVplRecord {
@@ -202,6 +213,7 @@ static const float TWO_PI = 6.2831855;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
 static const float SPHERE_HUGE = 3.4028235e38;
+static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
@@ -209,6 +221,7 @@ static const uint LIGHT_BVH_LEAF = 4294967295u;
 static const float ONE_MINUS_EPSILON = 0.99999994;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
+static const uint NEAR_BLOCK = 64u;
 static const uint P = 8u;
 static const uint TILE = 8u;
 static const uint THREADS = 64u;
@@ -352,8 +365,8 @@ float cull_radius(float r2_1)
 
 float windowed_falloff(float d2_3, float range2_)
 {
-    float q = (d2_3 / range2_);
-    float w_9 = saturate((1.0 - (q * q)));
+    float q_2 = (d2_3 / range2_);
+    float w_9 = saturate((1.0 - (q_2 * q_2)));
     return ((w_9 * w_9) / max(d2_3, 0.0001));
 }
 
@@ -372,12 +385,12 @@ bool sphere_overlaps_sphere(float3 c1_, float r1_, float3 c2_, float r2_2)
 
 float sphere_pad(float r_1, float3 c_1)
 {
-    return ((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD);
+    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
 }
 
 float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 {
-    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
 
     float3 v_5 = (c2_1 - c1_1);
     float d_2 = sqrt(dot(v_5, v_5));
@@ -390,11 +403,11 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
         return float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
     if (!((d_2 >= SPHERE_HUGE))) {
-        local_2 = ((0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE);
+        local_3 = ((0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
-        local_2 = true;
+        local_3 = true;
     }
-    bool _e35 = local_2;
+    bool _e35 = local_3;
     if (_e35) {
         return float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
@@ -419,8 +432,8 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 
 bool sphere_overlaps_aabb(float3 c_2, float r_2, float3 bmin, float3 bmax)
 {
-    float3 q_1 = clamp(c_2, bmin, bmax);
-    float3 v_6 = (q_1 - c_2);
+    float3 q_3 = clamp(c_2, bmin, bmax);
+    float3 v_6 = (q_3 - c_2);
     return (dot(v_6, v_6) <= (r_2 * r_2));
 }
 
@@ -632,7 +645,7 @@ float ies_lerp_t(float a0_, float a1_, float x_7)
 
 float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
 {
-    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
 
     const float _e4 = at(tab_2, base_1);
     const uint _e5 = to_u32_(_e4);
@@ -644,11 +657,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
     const float _e14 = at(tab_2, v0_);
     if (!((gamma < _e14))) {
         const float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_3 = (gamma > _e22);
+        local_4 = (gamma > _e22);
     } else {
-        local_3 = true;
+        local_4 = true;
     }
-    bool _e25 = local_3;
+    bool _e25 = local_4;
     if (_e25) {
         return 0.0;
     }
@@ -768,7 +781,7 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     float3 v_7 = (p - center_);
     float dist2_ = dot(v_7, v_7);
     float r2_6 = (radius * radius);
-    float d2_9 = max(max(dist2_, r2_6), MIN_D2_);
+    float d2_11 = max(max(dist2_, r2_6), MIN_D2_);
     float3 wi = ((dist2_ > 0.0) ? (v_7 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
@@ -782,7 +795,7 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_9);
+    imp = ((phi * _e46) / d2_11);
     if ((dot(n_6, n_6) > 0.0)) {
         float cos_i = -(dot(wi, n_6));
         const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -851,16 +864,16 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 
 float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
 {
-    bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
 
     float3 n_13 = cross((b_4 - a_5), (c_6 - a_5));
     float l2_ = dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_4 = !((l2_ < 3e38));
+        local_5 = !((l2_ < 3e38));
     } else {
-        local_4 = true;
+        local_5 = true;
     }
-    bool _e17 = local_4;
+    bool _e17 = local_5;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -876,7 +889,7 @@ float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
 {
     float3 e1_1 = (b_5 - a_6);
     float3 e2_1 = (c_7 - a_6);
-    float3 q_2 = (p_2 - a_6);
+    float3 q_4 = (p_2 - a_6);
     float d11_ = dot(e1_1, e1_1);
     float d12_ = dot(e1_1, e2_1);
     float d22_ = dot(e2_1, e2_1);
@@ -884,23 +897,23 @@ float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
     if (!((abs(den) > 0.0))) {
         return float3(1.0, 0.0, 0.0);
     }
-    float w1_ = (((d22_ * dot(q_2, e1_1)) - (d12_ * dot(q_2, e2_1))) / den);
-    float w2_ = (((d11_ * dot(q_2, e2_1)) - (d12_ * dot(q_2, e1_1))) / den);
+    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
+    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
     return float3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
 float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_6, float3 facing)
 {
-    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
 
     float3 s_1 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
     float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
-        local_5 = !((l2_1 < 3e38));
+        local_6 = !((l2_1 < 3e38));
     } else {
-        local_5 = true;
+        local_6 = true;
     }
-    bool _e24 = local_5;
+    bool _e24 = local_6;
     if (_e24) {
         return facing;
     }
@@ -910,9 +923,9 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_6, float3 fac
 
 float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
 {
-    bool local_6 = (bool)0;
     bool local_7 = (bool)0;
     bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
 
     float3 e1_2 = (b_6 - a_7);
     float3 e2_2 = (c_8 - a_7);
@@ -925,32 +938,32 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
     float3 s_2 = (o_1 - a_7);
     float u_3 = (dot(s_2, p_3) * inv);
     if (!((u_3 < 0.0))) {
-        local_6 = (u_3 > 1.0);
-    } else {
-        local_6 = true;
-    }
-    bool _e28 = local_6;
-    if (_e28) {
-        return -1.0;
-    }
-    float3 q_3 = cross(s_2, e1_2);
-    float v_9 = (dot(d, q_3) * inv);
-    if (!((v_9 < 0.0))) {
-        local_7 = ((u_3 + v_9) > 1.0);
+        local_7 = (u_3 > 1.0);
     } else {
         local_7 = true;
     }
-    bool _e42 = local_7;
+    bool _e28 = local_7;
+    if (_e28) {
+        return -1.0;
+    }
+    float3 q_5 = cross(s_2, e1_2);
+    float v_9 = (dot(d, q_5) * inv);
+    if (!((v_9 < 0.0))) {
+        local_8 = ((u_3 + v_9) > 1.0);
+    } else {
+        local_8 = true;
+    }
+    bool _e42 = local_8;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = (dot(e2_2, q_3) * inv);
+    float t_3 = (dot(e2_2, q_5) * inv);
     if ((t_3 > t_min)) {
-        local_8 = (t_3 < t_max_1);
+        local_9 = (t_3 < t_max_1);
     } else {
-        local_8 = false;
+        local_9 = false;
     }
-    bool _e51 = local_8;
+    bool _e51 = local_9;
     if (_e51) {
         return t_3;
     }
@@ -978,21 +991,21 @@ float mis_power(float pdf_a_1, float pdf_b_1)
 
 float light_strategy_pdf(float select_, float rt2_6, float d2_8, float area_1, float cos_y)
 {
-    bool local_9 = (bool)0;
     bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
 
     if (!((d2_8 <= 0.0))) {
-        local_9 = (area_1 <= 0.0);
-    } else {
-        local_9 = true;
-    }
-    bool _e13 = local_9;
-    if (!(_e13)) {
-        local_10 = (cos_y <= 0.0);
+        local_10 = (area_1 <= 0.0);
     } else {
         local_10 = true;
     }
-    bool _e20 = local_10;
+    bool _e13 = local_10;
+    if (!(_e13)) {
+        local_11 = (cos_y <= 0.0);
+    } else {
+        local_11 = true;
+    }
+    bool _e20 = local_11;
     if (_e20) {
         return 0.0;
     }
@@ -1060,6 +1073,37 @@ uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2)
     return ((naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets));
 }
 
+uint near_block_index(uint tx_1, uint ty_1, uint size_1)
+{
+    uint side_1 = naga_div(size_1, 8u);
+    return (((((naga_div(ty_1, 8u) * side_1) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u));
+}
+
+uint near_block_tx(uint q, uint size_2)
+{
+    return ((naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_2, 8u)) * 8u) + naga_mod(q, 8u));
+}
+
+uint near_block_ty(uint q_1, uint size_3)
+{
+    return ((naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_3, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u));
+}
+
+float vpl_near_weight(float d2_9, float near_r2_)
+{
+    if ((near_r2_ <= 0.0)) {
+        return 0.0;
+    }
+    float t_6 = clamp(((near_r2_ - d2_9) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_6 * t_6) * (3.0 - (2.0 * t_6)));
+}
+
+float vpl_far_weight(float d2_10, float near_r2_1)
+{
+    const float _e2 = vpl_near_weight(d2_10, near_r2_1);
+    return (1.0 - _e2);
+}
+
 float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_7, float h)
 {
     float sx = (((2.0 * px) / w_7) - 1.0);
@@ -1072,17 +1116,17 @@ float path_survival(float3 beta)
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
 }
 
-float light_map_coord(uint t_1, uint size_1)
+float light_map_coord(uint t_1, uint size_4)
 {
     const float _e2 = to_f32_(t_1);
-    const float _e7 = to_f32_(size_1);
+    const float _e7 = to_f32_(size_4);
     return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
 }
 
-uint light_map_texel(float a_8, uint size_2)
+uint light_map_texel(float a_8, uint size_5)
 {
-    const float _e6 = to_f32_(size_2);
-    const float _e9 = to_f32_(size_2);
+    const float _e6 = to_f32_(size_5);
+    const float _e9 = to_f32_(size_5);
     const uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
     return _e14;
 }
@@ -1099,9 +1143,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
 
 float3 point_irradiance(float3 intensity_1, float3 n_11, float3 v_2)
 {
-    float d2_10 = dot(v_2, v_2);
-    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_10, MIN_D2_)));
-    const float _e11 = inverse_square(d2_10);
+    float d2_12 = dot(v_2, v_2);
+    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_12, MIN_D2_)));
+    const float _e11 = inverse_square(d2_12);
     return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
 }
 
@@ -1118,14 +1162,14 @@ float shadow_bias(float texel, float cos_light_1)
 
 bool shadow_lit(float d_1, float d_map, float bias)
 {
-    bool local_11 = (bool)0;
+    bool local_12 = (bool)0;
 
     if (!((d_map <= 0.0))) {
-        local_11 = (d_1 <= (d_map + bias));
+        local_12 = (d_1 <= (d_map + bias));
     } else {
-        local_11 = true;
+        local_12 = true;
     }
-    bool _e11 = local_11;
+    bool _e11 = local_12;
     return _e11;
 }
 
@@ -1195,6 +1239,7 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     uint first = 0u;
     uint j = (uint)0;
     uint k = (uint)0;
+    bool local_2 = (bool)0;
 
     uint sub = wg.z;
     uint px_1 = (naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P));
@@ -1267,8 +1312,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e216 = first;
-            first = (_e216 + MAX_TILE_LIGHTS);
+            uint _e227 = first;
+            first = (_e227 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
         uint _e125 = first;
@@ -1330,8 +1375,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
                     loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e214 = k;
-                        k = (_e214 + 1u);
+                        uint _e225 = k;
+                        k = (_e225 + 1u);
                     }
                     loop_init_3 = false;
                     uint _e176 = k;
@@ -1349,16 +1394,24 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         float3 _e191 = nrm;
                         float _e194 = params.min_d2_;
                         const float _e195 = vpl_transfer(l_4.p1_, _e191, v_10, _e194);
-                        float d2_11 = dot(v_10, v_10);
-                        float _e199 = asfloat(r2_5.Load(j_1*4));
-                        const bool _e200 = slc_keep(_e199, d2_11);
-                        if (_e200) {
-                            float3 _e201 = e;
-                            float _e205 = asfloat(rt2_7.Load(j_1*4));
-                            const float _e206 = slc_weight(_e205, d2_11);
-                            e = (_e201 + (l_4.intensity * (_e195 * _e206)));
-                            uint _e210 = kept;
-                            kept = (_e210 + 1u);
+                        float d2_13 = dot(v_10, v_10);
+                        float _e199 = params.near_r2_;
+                        const float _e200 = vpl_far_weight(d2_13, _e199);
+                        float _e203 = asfloat(r2_5.Load(j_1*4));
+                        const bool _e204 = slc_keep(_e203, d2_13);
+                        if (_e204) {
+                            local_2 = (_e200 > 0.0);
+                        } else {
+                            local_2 = false;
+                        }
+                        bool _e210 = local_2;
+                        if (_e210) {
+                            float3 _e211 = e;
+                            float _e215 = asfloat(rt2_7.Load(j_1*4));
+                            const float _e216 = slc_weight(_e215, d2_13);
+                            e = (_e211 + (l_4.intensity * ((_e195 * _e216) * _e200)));
+                            uint _e221 = kept;
+                            kept = (_e221 + 1u);
                         }
                     }
                 }
@@ -1367,9 +1420,9 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         }
     }
     if (valid) {
-        float3 _e221 = e;
-        uint _e222 = kept;
-        irradiance.Store4(pix*16, asuint(float4(_e221, float(_e222))));
+        float3 _e232 = e;
+        uint _e233 = kept;
+        irradiance.Store4(pix*16, asuint(float4(_e232, float(_e233))));
         return;
     } else {
         return;

@@ -117,6 +117,16 @@ struct VplParams {
     uint height;
     uint lights_per_subset;
     float min_d2_;
+    float near_r2_;
+    uint near_blocks;
+    uint pad0_;
+    uint pad1_;
+};
+struct GpuNearBox {
+    metal::packed_float3 lo;
+    float pad0_;
+    metal::packed_float3 hi;
+    float pad1_;
 };
 struct GpuVplRecord {
     metal::packed_float3 position;
@@ -239,6 +249,7 @@ constant float TWO_PI = 6.2831855;
 constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
+constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant uint BSH_NONE = 4294967295u;
@@ -246,6 +257,7 @@ constant uint LIGHT_BVH_LEAF = 4294967295u;
 constant float ONE_MINUS_EPSILON = 0.99999994;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
+constant uint NEAR_BLOCK = 64u;
 constant uint K = 8u;
 
 float at(
@@ -404,8 +416,8 @@ float windowed_falloff(
     float d2_3,
     float range2_
 ) {
-    float q = d2_3 / range2_;
-    float w_10 = metal::saturate(1.0 - (q * q));
+    float q_2 = d2_3 / range2_;
+    float w_10 = metal::saturate(1.0 - (q_2 * q_2));
     return (w_10 * w_10) / metal::max(d2_3, 0.0001);
 }
 
@@ -433,7 +445,7 @@ float sphere_pad(
     float r_1,
     metal::float3 c_1
 ) {
-    return (r_1 + metal::max(metal::abs(c_1.x), metal::max(metal::abs(c_1.y), metal::abs(c_1.z)))) * SPHERE_PAD;
+    return ((r_1 + metal::max(metal::abs(c_1.x), metal::max(metal::abs(c_1.y), metal::abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS;
 }
 
 metal::float4 sphere_union(
@@ -487,8 +499,8 @@ bool sphere_overlaps_aabb(
     metal::float3 bmin,
     metal::float3 bmax
 ) {
-    metal::float3 q_1 = metal::clamp(c_2, bmin, bmax);
-    metal::float3 v_7 = q_1 - c_2;
+    metal::float3 q_3 = metal::clamp(c_2, bmin, bmax);
+    metal::float3 v_7 = q_3 - c_2;
     return metal::dot(v_7, v_7) <= (r_2 * r_2);
 }
 
@@ -924,7 +936,7 @@ float light_importance(
     metal::float3 v_8 = p - center;
     float dist2_ = metal::dot(v_8, v_8);
     float r2_6 = radius * radius;
-    float d2_9 = metal::max(metal::max(dist2_, r2_6), MIN_D2_);
+    float d2_11 = metal::max(metal::max(dist2_, r2_6), MIN_D2_);
     metal::float3 wi = (dist2_ > 0.0) ? (v_8 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
@@ -938,7 +950,7 @@ float light_importance(
     if (_e46 <= cos_e) {
         return 0.0;
     }
-    imp = (phi * _e46) / d2_9;
+    imp = (phi * _e46) / d2_11;
     if (metal::dot(n_6, n_6) > 0.0) {
         float cos_i = -(metal::dot(wi, n_6));
         float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
@@ -1066,7 +1078,7 @@ metal::float3 barycentric(
 ) {
     metal::float3 e1_1 = b_5 - a_6;
     metal::float3 e2_1 = c_7 - a_6;
-    metal::float3 q_2 = p_2 - a_6;
+    metal::float3 q_4 = p_2 - a_6;
     float d11_ = metal::dot(e1_1, e1_1);
     float d12_ = metal::dot(e1_1, e2_1);
     float d22_ = metal::dot(e2_1, e2_1);
@@ -1074,8 +1086,8 @@ metal::float3 barycentric(
     if (!((metal::abs(den) > 0.0))) {
         return metal::float3(1.0, 0.0, 0.0);
     }
-    float w1_ = ((d22_ * metal::dot(q_2, e1_1)) - (d12_ * metal::dot(q_2, e2_1))) / den;
-    float w2_ = ((d11_ * metal::dot(q_2, e2_1)) - (d12_ * metal::dot(q_2, e1_1))) / den;
+    float w1_ = ((d22_ * metal::dot(q_4, e1_1)) - (d12_ * metal::dot(q_4, e2_1))) / den;
+    float w2_ = ((d11_ * metal::dot(q_4, e2_1)) - (d12_ * metal::dot(q_4, e1_1))) / den;
     return metal::float3((1.0 - w1_) - w2_, w1_, w2_);
 }
 
@@ -1133,8 +1145,8 @@ float ray_triangle(
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q_3 = metal::cross(s_3, e1_2);
-    float v_10 = metal::dot(d, q_3) * inv;
+    metal::float3 q_5 = metal::cross(s_3, e1_2);
+    float v_10 = metal::dot(d, q_5) * inv;
     if (!((v_10 < 0.0))) {
         local_5 = (u_4 + v_10) > 1.0;
     } else {
@@ -1144,7 +1156,7 @@ float ray_triangle(
     if (_e42) {
         return -1.0;
     }
-    float t_3 = metal::dot(e2_2, q_3) * inv;
+    float t_3 = metal::dot(e2_2, q_5) * inv;
     if (t_3 > t_min) {
         local_6 = t_3 < t_max_1;
     } else {
@@ -1288,6 +1300,48 @@ uint interleave_slot_linear(
     return (naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets);
 }
 
+uint near_block_index(
+    uint tx_1,
+    uint ty_1,
+    uint size_1
+) {
+    uint side_1 = naga_div(size_1, 8u);
+    return ((((naga_div(ty_1, 8u) * side_1) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u);
+}
+
+uint near_block_tx(
+    uint q,
+    uint size_2
+) {
+    return (naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_2, 8u)) * 8u) + naga_mod(q, 8u);
+}
+
+uint near_block_ty(
+    uint q_1,
+    uint size_3
+) {
+    return (naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_3, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u);
+}
+
+float vpl_near_weight(
+    float d2_9,
+    float near_r2_
+) {
+    if (near_r2_ <= 0.0) {
+        return 0.0;
+    }
+    float t_6 = metal::clamp((near_r2_ - d2_9) / (0.75 * near_r2_), 0.0, 1.0);
+    return (t_6 * t_6) * (3.0 - (2.0 * t_6));
+}
+
+float vpl_far_weight(
+    float d2_10,
+    float near_r2_1
+) {
+    float _e2 = vpl_near_weight(d2_10, near_r2_1);
+    return 1.0 - _e2;
+}
+
 metal::float3 camera_dir(
     metal::float3 forward,
     metal::float3 right,
@@ -1310,19 +1364,19 @@ float path_survival(
 
 float light_map_coord(
     uint t_1,
-    uint size_1
+    uint size_4
 ) {
     float _e2 = to_f32_(t_1);
-    float _e7 = to_f32_(size_1);
+    float _e7 = to_f32_(size_4);
     return ((2.0 * (_e2 + 0.5)) / _e7) - 1.0;
 }
 
 uint light_map_texel(
     float a_8,
-    uint size_2
+    uint size_5
 ) {
-    float _e6 = to_f32_(size_2);
-    float _e9 = to_f32_(size_2);
+    float _e6 = to_f32_(size_5);
+    float _e9 = to_f32_(size_5);
     uint _e14 = to_u32_(metal::clamp(metal::floor(((a_8 + 1.0) * 0.5) * _e6), 0.0, _e9 - 1.0));
     return _e14;
 }
@@ -1347,9 +1401,9 @@ metal::float3 point_irradiance(
     metal::float3 n_11,
     metal::float3 v_2
 ) {
-    float d2_10 = metal::dot(v_2, v_2);
-    float cos_x_1 = metal::dot(n_11, v_2) / metal::sqrt(metal::max(d2_10, MIN_D2_));
-    float _e11 = inverse_square(d2_10);
+    float d2_12 = metal::dot(v_2, v_2);
+    float cos_x_1 = metal::dot(n_11, v_2) / metal::sqrt(metal::max(d2_12, MIN_D2_));
+    float _e11 = inverse_square(d2_12);
     return intensity_1 * (metal::max(cos_x_1, 0.0) * _e11);
 }
 
@@ -1489,9 +1543,9 @@ GeoHit trace(
                     }
                     {
                         uint _e51 = i_2;
-                        GpuTriangle t_6 = geo_tris[_e51];
+                        GpuTriangle t_7 = geo_tris[_e51];
                         float _e58 = hit.t;
-                        float _e59 = ray_triangle(o_2, d_2, t_6.v0_, t_6.v1_, t_6.v2_, t_min_1, _e58);
+                        float _e59 = ray_triangle(o_2, d_2, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e58);
                         if (_e59 > 0.0) {
                             hit.t = _e59;
                             uint _e64 = i_2;
@@ -1669,11 +1723,11 @@ Connection connect(
     c_9.y = _e16;
     metal::float3 _e18 = c_9.y;
     metal::float3 v_11 = x_12 - _e18;
-    float d2_11 = metal::dot(v_11, v_11);
+    float d2_13 = metal::dot(v_11, v_11);
     float _e23 = r2_5[li];
-    bool _e24 = slc_keep(_e23, d2_11);
+    bool _e24 = slc_keep(_e23, d2_13);
     if (!(!(_e24))) {
-        local_10 = d2_11 <= 0.0;
+        local_10 = d2_13 <= 0.0;
     } else {
         local_10 = true;
     }
@@ -1682,7 +1736,7 @@ Connection connect(
         Connection _e33 = c_9;
         return _e33;
     }
-    metal::float3 w_11 = v_11 / metal::float3(metal::sqrt(d2_11));
+    metal::float3 w_11 = v_11 / metal::float3(metal::sqrt(d2_13));
     c_9.cos_x = -(metal::dot(n_13, w_11));
     float _e41 = c_9.cos_x;
     if (!((_e41 <= 0.0))) {
@@ -1706,7 +1760,7 @@ Connection connect(
     metal::float3 _e64 = light_intensity(l_4, w_11);
     float _e66 = c_9.cos_x;
     float _e69 = rt2_7[li];
-    float _e70 = connection_factor(_e66, d2_11, _e69, w_res);
+    float _e70 = connection_factor(_e66, d2_13, _e69, w_res);
     c_9.e = _e64 * _e70;
     Connection _e72 = c_9;
     return _e72;
@@ -1905,13 +1959,13 @@ float light_pdf(
 ) {
     GpuLight l_5 = lights[li_4];
     metal::float3 v_12 = x_19 - y_2;
-    float d2_12 = metal::dot(v_12, v_12);
+    float d2_14 = metal::dot(v_12, v_12);
     metal::float3 _e11 = light_normal(l_5);
-    float cos_y_1 = (d2_12 > 0.0) ? metal::dot(_e11, v_12 / metal::float3(metal::sqrt(d2_12))) : 0.0;
+    float cos_y_1 = (d2_14 > 0.0) ? metal::dot(_e11, v_12 / metal::float3(metal::sqrt(d2_14))) : 0.0;
     float _e20 = select_pdf(li_4, x_19, n_20, nee_1, in_range_2);
     float _e23 = rt2_7[li_4];
     float _e24 = light_area(l_5);
-    float _e25 = light_strategy_pdf(_e20, _e23, d2_12, _e24, cos_y_1);
+    float _e25 = light_strategy_pdf(_e20, _e23, d2_14, _e24, cos_y_1);
     return _e25;
 }
 

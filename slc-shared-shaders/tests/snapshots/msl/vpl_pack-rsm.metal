@@ -10,6 +10,8 @@ struct _mslBufferSizes {
     uint size6;
     uint size7;
     uint size8;
+    uint size9;
+    uint size10;
 };
 
 struct GpuLight {
@@ -109,6 +111,16 @@ struct VplParams {
     uint height;
     uint lights_per_subset;
     float min_d2_;
+    float near_r2_;
+    uint near_blocks;
+    uint pad0_;
+    uint pad1_;
+};
+struct GpuNearBox {
+    metal::packed_float3 lo;
+    float pad0_;
+    metal::packed_float3 hi;
+    float pad1_;
 };
 struct GpuVplRecord {
     metal::packed_float3 position;
@@ -187,6 +199,10 @@ struct BshNode {
 };
 typedef GpuLight type_7[1];
 typedef uint type_8[1];
+typedef GpuNearBox type_9[1];
+struct type_10 {
+    metal::float3 inner[64];
+};
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -201,6 +217,7 @@ constant float TWO_PI = 6.2831855;
 constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
+constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant uint BSH_NONE = 4294967295u;
@@ -208,6 +225,7 @@ constant uint LIGHT_BVH_LEAF = 4294967295u;
 constant float ONE_MINUS_EPSILON = 0.99999994;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
+constant uint NEAR_BLOCK = 64u;
 constant uint P = 8u;
 
 float at(
@@ -366,8 +384,8 @@ float windowed_falloff(
     float d2_3,
     float range2_
 ) {
-    float q = d2_3 / range2_;
-    float w_8 = metal::saturate(1.0 - (q * q));
+    float q_2 = d2_3 / range2_;
+    float w_8 = metal::saturate(1.0 - (q_2 * q_2));
     return (w_8 * w_8) / metal::max(d2_3, 0.0001);
 }
 
@@ -395,7 +413,7 @@ float sphere_pad(
     float r_1,
     metal::float3 c_1
 ) {
-    return (r_1 + metal::max(metal::abs(c_1.x), metal::max(metal::abs(c_1.y), metal::abs(c_1.z)))) * SPHERE_PAD;
+    return ((r_1 + metal::max(metal::abs(c_1.x), metal::max(metal::abs(c_1.y), metal::abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS;
 }
 
 metal::float4 sphere_union(
@@ -404,7 +422,7 @@ metal::float4 sphere_union(
     metal::float3 c2_1,
     float r2_3
 ) {
-    bool local = {};
+    bool local_1 = {};
     metal::float3 v_5 = c2_1 - c1_1;
     float d_2 = metal::sqrt(metal::dot(v_5, v_5));
     float _e8 = sphere_pad(r1_1, c1_1);
@@ -416,11 +434,11 @@ metal::float4 sphere_union(
         return metal::float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
     if (!((d_2 >= SPHERE_HUGE))) {
-        local = (0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE;
+        local_1 = (0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE;
     } else {
-        local = true;
+        local_1 = true;
     }
-    bool _e35 = local;
+    bool _e35 = local_1;
     if (_e35) {
         return metal::float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
@@ -449,8 +467,8 @@ bool sphere_overlaps_aabb(
     metal::float3 bmin,
     metal::float3 bmax
 ) {
-    metal::float3 q_1 = metal::clamp(c_2, bmin, bmax);
-    metal::float3 v_6 = q_1 - c_2;
+    metal::float3 q_3 = metal::clamp(c_2, bmin, bmax);
+    metal::float3 v_6 = q_3 - c_2;
     return metal::dot(v_6, v_6) <= (r_2 * r_2);
 }
 
@@ -660,35 +678,35 @@ uint ies_segment(
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint lo = 0u;
-    uint hi = {};
+    uint lo_1 = 0u;
+    uint hi_1 = {};
     if (n_2 < 2u) {
         return 0u;
     }
-    hi = n_2 - 1u;
+    hi_1 = n_2 - 1u;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e12 = hi;
-        uint _e13 = lo;
+        uint _e12 = hi_1;
+        uint _e13 = lo_1;
         if ((_e12 - _e13) > 1u) {
         } else {
             break;
         }
         {
-            uint _e17 = lo;
-            uint _e18 = hi;
+            uint _e17 = lo_1;
+            uint _e18 = hi_1;
             uint mid = (_e17 + _e18) >> 1u;
             float _e23 = at(tab_1, start + mid, slc_table, _buffer_sizes);
             if (_e23 <= x_6) {
-                lo = mid;
+                lo_1 = mid;
             } else {
-                hi = mid;
+                hi_1 = mid;
             }
         }
     }
-    uint _e25 = lo;
+    uint _e25 = lo_1;
     return _e25;
 }
 
@@ -711,7 +729,7 @@ float ies_candela(
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_1 = {};
+    bool local_2 = {};
     float _e4 = at(tab_2, base_1, slc_table, _buffer_sizes);
     uint _e5 = to_u32_(_e4);
     float _e8 = at(tab_2, base_1 + 1u, slc_table, _buffer_sizes);
@@ -722,11 +740,11 @@ float ies_candela(
     float _e14 = at(tab_2, v0_, slc_table, _buffer_sizes);
     if (!((gamma < _e14))) {
         float _e22 = at(tab_2, (v0_ + _e5) - 1u, slc_table, _buffer_sizes);
-        local_1 = gamma > _e22;
+        local_2 = gamma > _e22;
     } else {
-        local_1 = true;
+        local_2 = true;
     }
-    bool _e25 = local_1;
+    bool _e25 = local_2;
     if (_e25) {
         return 0.0;
     }
@@ -788,12 +806,12 @@ uint mul_hi_u32_(
 
 uint uniform_index(
     uint n_3,
-    uint hi_1,
-    uint lo_1
+    uint hi_2,
+    uint lo_2
 ) {
-    uint _e3 = mul_lo_u32_(hi_1, n_3);
-    uint _e4 = mul_hi_u32_(hi_1, n_3);
-    uint _e5 = mul_hi_u32_(lo_1, n_3);
+    uint _e3 = mul_lo_u32_(hi_2, n_3);
+    uint _e4 = mul_hi_u32_(hi_2, n_3);
+    uint _e5 = mul_hi_u32_(lo_2, n_3);
     if (_e3 > (4294967295u - _e5)) {
         return _e4 + 1u;
     }
@@ -803,13 +821,13 @@ uint uniform_index(
 uint reservoir_slot(
     uint n_4,
     uint k,
-    uint hi_2,
-    uint lo_2
+    uint hi_3,
+    uint lo_3
 ) {
     if (n_4 <= k) {
         return n_4 - 1u;
     }
-    uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    uint _e7 = uniform_index(n_4, hi_3, lo_3);
     if (_e7 < k) {
         return _e7;
     }
@@ -886,7 +904,7 @@ float light_importance(
     metal::float3 v_7 = p - center;
     float dist2_ = metal::dot(v_7, v_7);
     float r2_6 = radius * radius;
-    float d2_9 = metal::max(metal::max(dist2_, r2_6), MIN_D2_);
+    float d2_11 = metal::max(metal::max(dist2_, r2_6), MIN_D2_);
     metal::float3 wi = (dist2_ > 0.0) ? (v_7 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
@@ -900,7 +918,7 @@ float light_importance(
     if (_e46 <= cos_e) {
         return 0.0;
     }
-    imp = (phi * _e46) / d2_9;
+    imp = (phi * _e46) / d2_11;
     if (metal::dot(n_6, n_6) > 0.0) {
         float cos_i = -(metal::dot(wi, n_6));
         float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
@@ -983,10 +1001,10 @@ float ray_aabb(
 ) {
     metal::float3 t0_ = (bmin_1 - o) * inv_d;
     metal::float3 t1_ = (bmax_1 - o) * inv_d;
-    metal::float3 lo_3 = metal::min(t0_, t1_);
-    metal::float3 hi_3 = metal::max(t0_, t1_);
-    float t_in = metal::max(metal::max(lo_3.x, lo_3.y), metal::max(lo_3.z, 0.0));
-    float t_out = metal::min(metal::min(hi_3.x, hi_3.y), metal::min(hi_3.z, t_max));
+    metal::float3 lo_4 = metal::min(t0_, t1_);
+    metal::float3 hi_4 = metal::max(t0_, t1_);
+    float t_in = metal::max(metal::max(lo_4.x, lo_4.y), metal::max(lo_4.z, 0.0));
+    float t_out = metal::min(metal::min(hi_4.x, hi_4.y), metal::min(hi_4.z, t_max));
     if (t_in <= t_out) {
         return t_in;
     }
@@ -998,15 +1016,15 @@ metal::float3 triangle_normal(
     metal::float3 b_4,
     metal::float3 c_6
 ) {
-    bool local_2 = {};
+    bool local_3 = {};
     metal::float3 n_13 = metal::cross(b_4 - a_5, c_6 - a_5);
     float l2_ = metal::dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_2 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_3 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_2 = true;
+        local_3 = true;
     }
-    bool _e17 = local_2;
+    bool _e17 = local_3;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -1028,7 +1046,7 @@ metal::float3 barycentric(
 ) {
     metal::float3 e1_1 = b_5 - a_6;
     metal::float3 e2_1 = c_7 - a_6;
-    metal::float3 q_2 = p_2 - a_6;
+    metal::float3 q_4 = p_2 - a_6;
     float d11_ = metal::dot(e1_1, e1_1);
     float d12_ = metal::dot(e1_1, e2_1);
     float d22_ = metal::dot(e2_1, e2_1);
@@ -1036,8 +1054,8 @@ metal::float3 barycentric(
     if (!((metal::abs(den) > 0.0))) {
         return metal::float3(1.0, 0.0, 0.0);
     }
-    float w1_ = ((d22_ * metal::dot(q_2, e1_1)) - (d12_ * metal::dot(q_2, e2_1))) / den;
-    float w2_ = ((d11_ * metal::dot(q_2, e2_1)) - (d12_ * metal::dot(q_2, e1_1))) / den;
+    float w1_ = ((d22_ * metal::dot(q_4, e1_1)) - (d12_ * metal::dot(q_4, e2_1))) / den;
+    float w2_ = ((d11_ * metal::dot(q_4, e2_1)) - (d12_ * metal::dot(q_4, e1_1))) / den;
     return metal::float3((1.0 - w1_) - w2_, w1_, w2_);
 }
 
@@ -1048,15 +1066,15 @@ metal::float3 shading_normal(
     metal::float3 w_6,
     metal::float3 facing
 ) {
-    bool local_3 = {};
+    bool local_4 = {};
     metal::float3 s_1 = ((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z);
     float l2_1 = metal::dot(s_1, s_1);
     if (!(!((l2_1 > 0.000000000001)))) {
-        local_3 = !((l2_1 < 300000000000000000000000000000000000000.0));
+        local_4 = !((l2_1 < 300000000000000000000000000000000000000.0));
     } else {
-        local_3 = true;
+        local_4 = true;
     }
-    bool _e24 = local_3;
+    bool _e24 = local_4;
     if (_e24) {
         return facing;
     }
@@ -1073,9 +1091,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
-    bool local_4 = {};
     bool local_5 = {};
     bool local_6 = {};
+    bool local_7 = {};
     metal::float3 e1_2 = b_6 - a_7;
     metal::float3 e2_2 = c_8 - a_7;
     metal::float3 p_3 = metal::cross(d, e2_2);
@@ -1087,32 +1105,32 @@ float ray_triangle(
     metal::float3 s_2 = o_1 - a_7;
     float u_3 = metal::dot(s_2, p_3) * inv;
     if (!((u_3 < 0.0))) {
-        local_4 = u_3 > 1.0;
-    } else {
-        local_4 = true;
-    }
-    bool _e28 = local_4;
-    if (_e28) {
-        return -1.0;
-    }
-    metal::float3 q_3 = metal::cross(s_2, e1_2);
-    float v_9 = metal::dot(d, q_3) * inv;
-    if (!((v_9 < 0.0))) {
-        local_5 = (u_3 + v_9) > 1.0;
+        local_5 = u_3 > 1.0;
     } else {
         local_5 = true;
     }
-    bool _e42 = local_5;
+    bool _e28 = local_5;
+    if (_e28) {
+        return -1.0;
+    }
+    metal::float3 q_5 = metal::cross(s_2, e1_2);
+    float v_9 = metal::dot(d, q_5) * inv;
+    if (!((v_9 < 0.0))) {
+        local_6 = (u_3 + v_9) > 1.0;
+    } else {
+        local_6 = true;
+    }
+    bool _e42 = local_6;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = metal::dot(e2_2, q_3) * inv;
+    float t_3 = metal::dot(e2_2, q_5) * inv;
     if (t_3 > t_min) {
-        local_6 = t_3 < t_max_1;
+        local_7 = t_3 < t_max_1;
     } else {
-        local_6 = false;
+        local_7 = false;
     }
-    bool _e51 = local_6;
+    bool _e51 = local_7;
     if (_e51) {
         return t_3;
     }
@@ -1149,20 +1167,20 @@ float light_strategy_pdf(
     float area_1,
     float cos_y
 ) {
-    bool local_7 = {};
     bool local_8 = {};
+    bool local_9 = {};
     if (!((d2_8 <= 0.0))) {
-        local_7 = area_1 <= 0.0;
-    } else {
-        local_7 = true;
-    }
-    bool _e13 = local_7;
-    if (!(_e13)) {
-        local_8 = cos_y <= 0.0;
+        local_8 = area_1 <= 0.0;
     } else {
         local_8 = true;
     }
-    bool _e20 = local_8;
+    bool _e13 = local_8;
+    if (!(_e13)) {
+        local_9 = cos_y <= 0.0;
+    } else {
+        local_9 = true;
+    }
+    bool _e20 = local_9;
     if (_e20) {
         return 0.0;
     }
@@ -1250,6 +1268,48 @@ uint interleave_slot_linear(
     return (naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets);
 }
 
+uint near_block_index(
+    uint tx_1,
+    uint ty_1,
+    uint size_1
+) {
+    uint side_1 = naga_div(size_1, 8u);
+    return ((((naga_div(ty_1, 8u) * side_1) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u);
+}
+
+uint near_block_tx(
+    uint q,
+    uint size_2
+) {
+    return (naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_2, 8u)) * 8u) + naga_mod(q, 8u);
+}
+
+uint near_block_ty(
+    uint q_1,
+    uint size_3
+) {
+    return (naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_3, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u);
+}
+
+float vpl_near_weight(
+    float d2_9,
+    float near_r2_
+) {
+    if (near_r2_ <= 0.0) {
+        return 0.0;
+    }
+    float t_6 = metal::clamp((near_r2_ - d2_9) / (0.75 * near_r2_), 0.0, 1.0);
+    return (t_6 * t_6) * (3.0 - (2.0 * t_6));
+}
+
+float vpl_far_weight(
+    float d2_10,
+    float near_r2_1
+) {
+    float _e2 = vpl_near_weight(d2_10, near_r2_1);
+    return 1.0 - _e2;
+}
+
 metal::float3 camera_dir(
     metal::float3 forward,
     metal::float3 right,
@@ -1272,19 +1332,19 @@ float path_survival(
 
 float light_map_coord(
     uint t_1,
-    uint size_1
+    uint size_4
 ) {
     float _e2 = to_f32_(t_1);
-    float _e7 = to_f32_(size_1);
+    float _e7 = to_f32_(size_4);
     return ((2.0 * (_e2 + 0.5)) / _e7) - 1.0;
 }
 
 uint light_map_texel(
     float a_8,
-    uint size_2
+    uint size_5
 ) {
-    float _e6 = to_f32_(size_2);
-    float _e9 = to_f32_(size_2);
+    float _e6 = to_f32_(size_5);
+    float _e9 = to_f32_(size_5);
     uint _e14 = to_u32_(metal::clamp(metal::floor(((a_8 + 1.0) * 0.5) * _e6), 0.0, _e9 - 1.0));
     return _e14;
 }
@@ -1309,9 +1369,9 @@ metal::float3 point_irradiance(
     metal::float3 n_11,
     metal::float3 v_2
 ) {
-    float d2_10 = metal::dot(v_2, v_2);
-    float cos_x_1 = metal::dot(n_11, v_2) / metal::sqrt(metal::max(d2_10, MIN_D2_));
-    float _e11 = inverse_square(d2_10);
+    float d2_12 = metal::dot(v_2, v_2);
+    float cos_x_1 = metal::dot(n_11, v_2) / metal::sqrt(metal::max(d2_12, MIN_D2_));
+    float _e11 = inverse_square(d2_12);
     return intensity_1 * (metal::max(cos_x_1, 0.0) * _e11);
 }
 
@@ -1336,13 +1396,13 @@ bool shadow_lit(
     float d_map,
     float bias
 ) {
-    bool local_9 = {};
+    bool local_10 = {};
     if (!((d_map <= 0.0))) {
-        local_9 = d_1 <= (d_map + bias);
+        local_10 = d_1 <= (d_map + bias);
     } else {
-        local_9 = true;
+        local_10 = true;
     }
-    bool _e11 = local_9;
+    bool _e11 = local_10;
     return _e11;
 }
 
@@ -1358,6 +1418,8 @@ struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
+, metal::uint3 wg [[threadgroup_position_in_grid]]
+, uint li [[thread_index_in_threadgroup]]
 , constant PackParams& params [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> rsm_position [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> rsm_normal [[user(fake0)]]
@@ -1366,37 +1428,105 @@ kernel void main_(
 , device type_8& ids [[user(fake0)]]
 , device type_4& rt2_7 [[user(fake0)]]
 , device type_4& r2_5 [[user(fake0)]]
+, device type_8& near_slots [[user(fake0)]]
+, device type_9& near_boxes [[user(fake0)]]
+, threadgroup type_10& wg_lo
+, threadgroup type_10& wg_hi
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
-    uint i_2 = gid.x;
-    uint _e4 = params.count;
-    if (i_2 >= _e4) {
+    if (li == 0u) {
+        wg_lo = {};
+        wg_hi = {};
+    }
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    metal::float3 lo = metal::float3(300000000000000000000000000000000000000.0);
+    metal::float3 hi = metal::float3(-300000000000000000000000000000000000000.0);
+    uint stride = 32u;
+    bool local = {};
+    uint q_6 = gid.x;
+    uint _e6 = params.count;
+    bool inside = q_6 < _e6;
+    if (inside) {
+        uint _e16 = params.size;
+        uint _e17 = near_block_tx(q_6, _e16);
+        uint _e20 = params.size;
+        uint _e21 = near_block_ty(q_6, _e20);
+        uint _e24 = params.size;
+        uint i_2 = (_e21 * _e24) + _e17;
+        metal::int2 texel_1 = metal::int2(static_cast<int>(_e17), static_cast<int>(_e21));
+        metal::float4 _e32 = rsm_position.read(metal::uint2(texel_1), 0);
+        metal::float3 position = _e32.xyz;
+        metal::float4 _e36 = rsm_normal.read(metal::uint2(texel_1), 0);
+        metal::float3 normal = _e36.xyz;
+        metal::float4 _e40 = rsm_flux.read(metal::uint2(texel_1), 0);
+        float _e44 = params.scale;
+        metal::float3 flux_1 = _e40.xyz * _e44;
+        uint _e48 = params.size;
+        uint _e50 = interleave_slot(_e17, _e21, _e48, P);
+        lights[_e50] = GpuLight {position, LIGHT_VPL, normal, 0.0, metal::float3(0.0), 0.0, flux_1, 0u};
+        ids[_e50] = i_2;
+        uint _e64 = params.slc;
+        bool slc = _e64 != 0u;
+        float _e71 = params.exposure;
+        float _e74 = params.error_bound;
+        uint _e77 = params.mode;
+        float _e78 = vpl_rt2_(flux_1, _e71, _e74, _e77);
+        rt2_7[_e50] = slc ? _e78 : 0.0;
+        float _e85 = params.fixed_r2_;
+        r2_5[_e50] = slc ? 0.0 : _e85;
+        near_slots[q_6] = _e50;
+        if (metal::any(flux_1 != metal::float3(0.0))) {
+            lo = position;
+            hi = position;
+        }
+    }
+    metal::float3 _e96 = lo;
+    wg_lo.inner[li] = _e96;
+    metal::float3 _e99 = hi;
+    wg_hi.inner[li] = _e99;
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint2 loop_bound_1 = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e129 = stride;
+            stride = naga_div(_e129, 2u);
+        }
+        loop_init = false;
+        uint _e102 = stride;
+        if (_e102 > 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e105 = stride;
+            if (li < _e105) {
+                metal::float3 _e111 = wg_lo.inner[li];
+                uint _e113 = stride;
+                metal::float3 _e116 = wg_lo.inner[li + _e113];
+                wg_lo.inner[li] = metal::min(_e111, _e116);
+                metal::float3 _e122 = wg_hi.inner[li];
+                uint _e124 = stride;
+                metal::float3 _e127 = wg_hi.inner[li + _e124];
+                wg_hi.inner[li] = metal::max(_e122, _e127);
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    if (li == 0u) {
+        local = inside;
+    } else {
+        local = false;
+    }
+    bool _e137 = local;
+    if (_e137) {
+        metal::float3 _e143 = wg_lo.inner[0];
+        metal::float3 _e146 = wg_hi.inner[0];
+        near_boxes[wg.x] = GpuNearBox {_e143, 0.0, _e146, 0.0};
+        return;
+    } else {
         return;
     }
-    uint _e8 = params.size;
-    uint tx_1 = naga_mod(i_2, _e8);
-    uint _e12 = params.size;
-    uint ty_1 = naga_div(i_2, _e12);
-    metal::int2 texel_1 = metal::int2(static_cast<int>(tx_1), static_cast<int>(ty_1));
-    metal::float4 _e19 = rsm_position.read(metal::uint2(texel_1), 0);
-    metal::float3 position = _e19.xyz;
-    metal::float4 _e23 = rsm_normal.read(metal::uint2(texel_1), 0);
-    metal::float3 normal = _e23.xyz;
-    metal::float4 _e27 = rsm_flux.read(metal::uint2(texel_1), 0);
-    float _e31 = params.scale;
-    metal::float3 flux_1 = _e27.xyz * _e31;
-    uint _e35 = params.size;
-    uint _e37 = interleave_slot(tx_1, ty_1, _e35, P);
-    lights[_e37] = GpuLight {position, LIGHT_VPL, normal, 0.0, metal::float3(0.0), 0.0, flux_1, 0u};
-    ids[_e37] = i_2;
-    uint _e51 = params.slc;
-    bool slc = _e51 != 0u;
-    float _e58 = params.exposure;
-    float _e61 = params.error_bound;
-    uint _e64 = params.mode;
-    float _e65 = vpl_rt2_(flux_1, _e58, _e61, _e64);
-    rt2_7[_e37] = slc ? _e65 : 0.0;
-    float _e72 = params.fixed_r2_;
-    r2_5[_e37] = slc ? 0.0 : _e72;
-    return;
 }

@@ -111,6 +111,16 @@ struct VplParams {
     uint height;
     uint lights_per_subset;
     float min_d2_;
+    float near_r2_;
+    uint near_blocks;
+    uint pad0_;
+    uint pad1_;
+};
+struct GpuNearBox {
+    metal::packed_float3 lo;
+    float pad0_;
+    metal::packed_float3 hi;
+    float pad1_;
 };
 struct GpuVplRecord {
     metal::packed_float3 position;
@@ -209,6 +219,7 @@ constant float TWO_PI = 6.2831855;
 constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
 constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
+constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant uint BSH_NONE = 4294967295u;
@@ -216,6 +227,7 @@ constant uint LIGHT_BVH_LEAF = 4294967295u;
 constant float ONE_MINUS_EPSILON = 0.99999994;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
+constant uint NEAR_BLOCK = 64u;
 constant uint P = 8u;
 constant uint TILE = 8u;
 constant uint THREADS = 64u;
@@ -377,8 +389,8 @@ float windowed_falloff(
     float d2_3,
     float range2_
 ) {
-    float q = d2_3 / range2_;
-    float w_9 = metal::saturate(1.0 - (q * q));
+    float q_2 = d2_3 / range2_;
+    float w_9 = metal::saturate(1.0 - (q_2 * q_2));
     return (w_9 * w_9) / metal::max(d2_3, 0.0001);
 }
 
@@ -406,7 +418,7 @@ float sphere_pad(
     float r_1,
     metal::float3 c_1
 ) {
-    return (r_1 + metal::max(metal::abs(c_1.x), metal::max(metal::abs(c_1.y), metal::abs(c_1.z)))) * SPHERE_PAD;
+    return ((r_1 + metal::max(metal::abs(c_1.x), metal::max(metal::abs(c_1.y), metal::abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS;
 }
 
 metal::float4 sphere_union(
@@ -415,7 +427,7 @@ metal::float4 sphere_union(
     metal::float3 c2_1,
     float r2_3
 ) {
-    bool local_2 = {};
+    bool local_3 = {};
     metal::float3 v_5 = c2_1 - c1_1;
     float d_2 = metal::sqrt(metal::dot(v_5, v_5));
     float _e8 = sphere_pad(r1_1, c1_1);
@@ -427,11 +439,11 @@ metal::float4 sphere_union(
         return metal::float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
     if (!((d_2 >= SPHERE_HUGE))) {
-        local_2 = (0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE;
+        local_3 = (0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE;
     } else {
-        local_2 = true;
+        local_3 = true;
     }
-    bool _e35 = local_2;
+    bool _e35 = local_3;
     if (_e35) {
         return metal::float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
@@ -460,8 +472,8 @@ bool sphere_overlaps_aabb(
     metal::float3 bmin,
     metal::float3 bmax
 ) {
-    metal::float3 q_1 = metal::clamp(c_2, bmin, bmax);
-    metal::float3 v_6 = q_1 - c_2;
+    metal::float3 q_3 = metal::clamp(c_2, bmin, bmax);
+    metal::float3 v_6 = q_3 - c_2;
     return metal::dot(v_6, v_6) <= (r_2 * r_2);
 }
 
@@ -722,7 +734,7 @@ float ies_candela(
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_3 = {};
+    bool local_4 = {};
     float _e4 = at(tab_2, base_1, slc_table, _buffer_sizes);
     uint _e5 = to_u32_(_e4);
     float _e8 = at(tab_2, base_1 + 1u, slc_table, _buffer_sizes);
@@ -733,11 +745,11 @@ float ies_candela(
     float _e14 = at(tab_2, v0_, slc_table, _buffer_sizes);
     if (!((gamma < _e14))) {
         float _e22 = at(tab_2, (v0_ + _e5) - 1u, slc_table, _buffer_sizes);
-        local_3 = gamma > _e22;
+        local_4 = gamma > _e22;
     } else {
-        local_3 = true;
+        local_4 = true;
     }
-    bool _e25 = local_3;
+    bool _e25 = local_4;
     if (_e25) {
         return 0.0;
     }
@@ -897,7 +909,7 @@ float light_importance(
     metal::float3 v_7 = p - center;
     float dist2_ = metal::dot(v_7, v_7);
     float r2_6 = radius * radius;
-    float d2_9 = metal::max(metal::max(dist2_, r2_6), MIN_D2_);
+    float d2_11 = metal::max(metal::max(dist2_, r2_6), MIN_D2_);
     metal::float3 wi = (dist2_ > 0.0) ? (v_7 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
@@ -911,7 +923,7 @@ float light_importance(
     if (_e46 <= cos_e) {
         return 0.0;
     }
-    imp = (phi * _e46) / d2_9;
+    imp = (phi * _e46) / d2_11;
     if (metal::dot(n_6, n_6) > 0.0) {
         float cos_i = -(metal::dot(wi, n_6));
         float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
@@ -1009,15 +1021,15 @@ metal::float3 triangle_normal(
     metal::float3 b_4,
     metal::float3 c_6
 ) {
-    bool local_4 = {};
+    bool local_5 = {};
     metal::float3 n_13 = metal::cross(b_4 - a_5, c_6 - a_5);
     float l2_ = metal::dot(n_13, n_13);
     if (!(!((l2_ > 0.0)))) {
-        local_4 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_5 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_4 = true;
+        local_5 = true;
     }
-    bool _e17 = local_4;
+    bool _e17 = local_5;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -1039,7 +1051,7 @@ metal::float3 barycentric(
 ) {
     metal::float3 e1_1 = b_5 - a_6;
     metal::float3 e2_1 = c_7 - a_6;
-    metal::float3 q_2 = p_2 - a_6;
+    metal::float3 q_4 = p_2 - a_6;
     float d11_ = metal::dot(e1_1, e1_1);
     float d12_ = metal::dot(e1_1, e2_1);
     float d22_ = metal::dot(e2_1, e2_1);
@@ -1047,8 +1059,8 @@ metal::float3 barycentric(
     if (!((metal::abs(den) > 0.0))) {
         return metal::float3(1.0, 0.0, 0.0);
     }
-    float w1_ = ((d22_ * metal::dot(q_2, e1_1)) - (d12_ * metal::dot(q_2, e2_1))) / den;
-    float w2_ = ((d11_ * metal::dot(q_2, e2_1)) - (d12_ * metal::dot(q_2, e1_1))) / den;
+    float w1_ = ((d22_ * metal::dot(q_4, e1_1)) - (d12_ * metal::dot(q_4, e2_1))) / den;
+    float w2_ = ((d11_ * metal::dot(q_4, e2_1)) - (d12_ * metal::dot(q_4, e1_1))) / den;
     return metal::float3((1.0 - w1_) - w2_, w1_, w2_);
 }
 
@@ -1059,15 +1071,15 @@ metal::float3 shading_normal(
     metal::float3 w_6,
     metal::float3 facing
 ) {
-    bool local_5 = {};
+    bool local_6 = {};
     metal::float3 s_1 = ((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z);
     float l2_1 = metal::dot(s_1, s_1);
     if (!(!((l2_1 > 0.000000000001)))) {
-        local_5 = !((l2_1 < 300000000000000000000000000000000000000.0));
+        local_6 = !((l2_1 < 300000000000000000000000000000000000000.0));
     } else {
-        local_5 = true;
+        local_6 = true;
     }
-    bool _e24 = local_5;
+    bool _e24 = local_6;
     if (_e24) {
         return facing;
     }
@@ -1084,9 +1096,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
-    bool local_6 = {};
     bool local_7 = {};
     bool local_8 = {};
+    bool local_9 = {};
     metal::float3 e1_2 = b_6 - a_7;
     metal::float3 e2_2 = c_8 - a_7;
     metal::float3 p_3 = metal::cross(d, e2_2);
@@ -1098,32 +1110,32 @@ float ray_triangle(
     metal::float3 s_2 = o_1 - a_7;
     float u_3 = metal::dot(s_2, p_3) * inv;
     if (!((u_3 < 0.0))) {
-        local_6 = u_3 > 1.0;
-    } else {
-        local_6 = true;
-    }
-    bool _e28 = local_6;
-    if (_e28) {
-        return -1.0;
-    }
-    metal::float3 q_3 = metal::cross(s_2, e1_2);
-    float v_9 = metal::dot(d, q_3) * inv;
-    if (!((v_9 < 0.0))) {
-        local_7 = (u_3 + v_9) > 1.0;
+        local_7 = u_3 > 1.0;
     } else {
         local_7 = true;
     }
-    bool _e42 = local_7;
+    bool _e28 = local_7;
+    if (_e28) {
+        return -1.0;
+    }
+    metal::float3 q_5 = metal::cross(s_2, e1_2);
+    float v_9 = metal::dot(d, q_5) * inv;
+    if (!((v_9 < 0.0))) {
+        local_8 = (u_3 + v_9) > 1.0;
+    } else {
+        local_8 = true;
+    }
+    bool _e42 = local_8;
     if (_e42) {
         return -1.0;
     }
-    float t_3 = metal::dot(e2_2, q_3) * inv;
+    float t_3 = metal::dot(e2_2, q_5) * inv;
     if (t_3 > t_min) {
-        local_8 = t_3 < t_max_1;
+        local_9 = t_3 < t_max_1;
     } else {
-        local_8 = false;
+        local_9 = false;
     }
-    bool _e51 = local_8;
+    bool _e51 = local_9;
     if (_e51) {
         return t_3;
     }
@@ -1160,20 +1172,20 @@ float light_strategy_pdf(
     float area_1,
     float cos_y
 ) {
-    bool local_9 = {};
     bool local_10 = {};
+    bool local_11 = {};
     if (!((d2_8 <= 0.0))) {
-        local_9 = area_1 <= 0.0;
-    } else {
-        local_9 = true;
-    }
-    bool _e13 = local_9;
-    if (!(_e13)) {
-        local_10 = cos_y <= 0.0;
+        local_10 = area_1 <= 0.0;
     } else {
         local_10 = true;
     }
-    bool _e20 = local_10;
+    bool _e13 = local_10;
+    if (!(_e13)) {
+        local_11 = cos_y <= 0.0;
+    } else {
+        local_11 = true;
+    }
+    bool _e20 = local_11;
     if (_e20) {
         return 0.0;
     }
@@ -1261,6 +1273,48 @@ uint interleave_slot_linear(
     return (naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets);
 }
 
+uint near_block_index(
+    uint tx_1,
+    uint ty_1,
+    uint size_1
+) {
+    uint side_1 = naga_div(size_1, 8u);
+    return ((((naga_div(ty_1, 8u) * side_1) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u);
+}
+
+uint near_block_tx(
+    uint q,
+    uint size_2
+) {
+    return (naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_2, 8u)) * 8u) + naga_mod(q, 8u);
+}
+
+uint near_block_ty(
+    uint q_1,
+    uint size_3
+) {
+    return (naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_3, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u);
+}
+
+float vpl_near_weight(
+    float d2_9,
+    float near_r2_
+) {
+    if (near_r2_ <= 0.0) {
+        return 0.0;
+    }
+    float t_6 = metal::clamp((near_r2_ - d2_9) / (0.75 * near_r2_), 0.0, 1.0);
+    return (t_6 * t_6) * (3.0 - (2.0 * t_6));
+}
+
+float vpl_far_weight(
+    float d2_10,
+    float near_r2_1
+) {
+    float _e2 = vpl_near_weight(d2_10, near_r2_1);
+    return 1.0 - _e2;
+}
+
 metal::float3 camera_dir(
     metal::float3 forward,
     metal::float3 right,
@@ -1283,19 +1337,19 @@ float path_survival(
 
 float light_map_coord(
     uint t_1,
-    uint size_1
+    uint size_4
 ) {
     float _e2 = to_f32_(t_1);
-    float _e7 = to_f32_(size_1);
+    float _e7 = to_f32_(size_4);
     return ((2.0 * (_e2 + 0.5)) / _e7) - 1.0;
 }
 
 uint light_map_texel(
     float a_8,
-    uint size_2
+    uint size_5
 ) {
-    float _e6 = to_f32_(size_2);
-    float _e9 = to_f32_(size_2);
+    float _e6 = to_f32_(size_5);
+    float _e9 = to_f32_(size_5);
     uint _e14 = to_u32_(metal::clamp(metal::floor(((a_8 + 1.0) * 0.5) * _e6), 0.0, _e9 - 1.0));
     return _e14;
 }
@@ -1320,9 +1374,9 @@ metal::float3 point_irradiance(
     metal::float3 n_11,
     metal::float3 v_2
 ) {
-    float d2_10 = metal::dot(v_2, v_2);
-    float cos_x_1 = metal::dot(n_11, v_2) / metal::sqrt(metal::max(d2_10, MIN_D2_));
-    float _e11 = inverse_square(d2_10);
+    float d2_12 = metal::dot(v_2, v_2);
+    float cos_x_1 = metal::dot(n_11, v_2) / metal::sqrt(metal::max(d2_12, MIN_D2_));
+    float _e11 = inverse_square(d2_12);
     return intensity_1 * (metal::max(cos_x_1, 0.0) * _e11);
 }
 
@@ -1347,13 +1401,13 @@ bool shadow_lit(
     float d_map,
     float bias
 ) {
-    bool local_11 = {};
+    bool local_12 = {};
     if (!((d_map <= 0.0))) {
-        local_11 = d_1 <= (d_map + bias);
+        local_12 = d_1 <= (d_map + bias);
     } else {
-        local_11 = true;
+        local_12 = true;
     }
-    bool _e11 = local_11;
+    bool _e11 = local_12;
     return _e11;
 }
 
@@ -1436,6 +1490,7 @@ kernel void main_(
     uint first = 0u;
     uint j = {};
     uint k = {};
+    bool local_2 = {};
     uint sub = wg.z;
     uint px_1 = naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P);
     uint py_1 = naga_div(sub, P) + (((wg.y * TILE) + lid.y) * P);
@@ -1507,8 +1562,8 @@ kernel void main_(
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e216 = first;
-            first = _e216 + MAX_TILE_LIGHTS;
+            uint _e227 = first;
+            first = _e227 + MAX_TILE_LIGHTS;
         }
         loop_init_1 = false;
         uint _e125 = first;
@@ -1570,8 +1625,8 @@ kernel void main_(
                     if (metal::all(loop_bound_4 == uint2(0u))) { break; }
                     loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e214 = k;
-                        k = _e214 + 1u;
+                        uint _e225 = k;
+                        k = _e225 + 1u;
                     }
                     loop_init_3 = false;
                     uint _e176 = k;
@@ -1589,16 +1644,24 @@ kernel void main_(
                         metal::float3 _e191 = nrm;
                         float _e194 = params.min_d2_;
                         float _e195 = vpl_transfer(l_4.p1_, _e191, v_10, _e194);
-                        float d2_11 = metal::dot(v_10, v_10);
-                        float _e199 = r2_5[j_1];
-                        bool _e200 = slc_keep(_e199, d2_11);
-                        if (_e200) {
-                            metal::float3 _e201 = e;
-                            float _e205 = rt2_7[j_1];
-                            float _e206 = slc_weight(_e205, d2_11);
-                            e = _e201 + (l_4.intensity * (_e195 * _e206));
-                            uint _e210 = kept;
-                            kept = _e210 + 1u;
+                        float d2_13 = metal::dot(v_10, v_10);
+                        float _e199 = params.near_r2_;
+                        float _e200 = vpl_far_weight(d2_13, _e199);
+                        float _e203 = r2_5[j_1];
+                        bool _e204 = slc_keep(_e203, d2_13);
+                        if (_e204) {
+                            local_2 = _e200 > 0.0;
+                        } else {
+                            local_2 = false;
+                        }
+                        bool _e210 = local_2;
+                        if (_e210) {
+                            metal::float3 _e211 = e;
+                            float _e215 = rt2_7[j_1];
+                            float _e216 = slc_weight(_e215, d2_13);
+                            e = _e211 + (l_4.intensity * ((_e195 * _e216) * _e200));
+                            uint _e221 = kept;
+                            kept = _e221 + 1u;
                         }
                     }
                 }
@@ -1607,9 +1670,9 @@ kernel void main_(
         }
     }
     if (valid) {
-        metal::float3 _e221 = e;
-        uint _e222 = kept;
-        irradiance[pix] = metal::float4(_e221, static_cast<float>(_e222));
+        metal::float3 _e232 = e;
+        uint _e233 = kept;
+        irradiance[pix] = metal::float4(_e232, static_cast<float>(_e233));
         return;
     } else {
         return;

@@ -1,0 +1,1210 @@
+#version 430 core
+#extension GL_ARB_compute_shader : require
+#extension GL_ARB_shader_storage_buffer_object : require
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+struct GpuLight {
+    vec3 p0_;
+    uint kind;
+    vec3 p1_;
+    float a;
+    vec3 p2_;
+    float b;
+    vec3 intensity;
+    uint ies_base;
+};
+struct GpuLightCone {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
+struct GpuLightBvhNode {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
+};
+struct GpuGeoNode {
+    vec3 bmin;
+    uint first;
+    vec3 bmax;
+    uint count;
+};
+struct GpuTriangle {
+    vec3 v0_;
+    uint material;
+    vec3 v1_;
+    uint light;
+    vec3 v2_;
+    uint pad;
+};
+struct GpuPathVertex {
+    vec3 position;
+    uint alive;
+    vec3 normal;
+    float pad;
+    vec3 weight;
+    float pad1_;
+    vec3 gnormal;
+    float pad2_;
+};
+struct GpuPathState {
+    vec3 origin;
+    uint alive;
+    vec3 dir;
+    uint rng;
+    vec3 beta;
+    float pdf_bsdf;
+    vec3 prev;
+    uint pad;
+    vec3 prev_normal;
+    uint pad2_;
+};
+struct PtParams {
+    vec3 cam_pos;
+    uint width;
+    vec3 cam_right;
+    uint height;
+    vec3 cam_up;
+    uint depth;
+    vec3 cam_forward;
+    uint seed;
+    uint pass_index;
+    uint max_depth;
+    float eps;
+    float t_min;
+};
+struct FrameParams {
+    uint light_count;
+    uint seed;
+    uint frame;
+    uint pad;
+};
+struct RefitParams {
+    uint first;
+    uint count;
+    uint pad0_;
+    uint pad1_;
+};
+struct VplParams {
+    uint width;
+    uint height;
+    uint lights_per_subset;
+    float min_d2_;
+    float near_r2_;
+    uint near_blocks;
+    uint pad0_;
+    uint pad1_;
+};
+struct GpuNearBox {
+    vec3 lo;
+    float pad0_;
+    vec3 hi;
+    float pad1_;
+};
+struct GpuVplRecord {
+    vec3 position;
+    float pad0_;
+    vec3 normal;
+    float pad1_;
+    vec3 flux;
+    float pad2_;
+};
+struct PackParams {
+    uint count;
+    uint size;
+    uint per_subset;
+    uint mode;
+    float exposure;
+    float error_bound;
+    float scale;
+    uint slc;
+    float fixed_r2_;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+struct ImageParams {
+    vec3 eye;
+    uint width;
+    uint height;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+struct GpuVertex {
+    vec3 position;
+    uint material;
+    vec3 normal;
+    uint pad0_;
+    vec3 geo_normal;
+    uint pad1_;
+};
+struct GpuMaterial {
+    vec3 albedo;
+    uint pad0_;
+    vec3 emission;
+    uint pad1_;
+};
+struct MapParams {
+    vec4 c0_;
+    vec4 c1_;
+    vec4 c2_;
+    vec4 c3_;
+    GpuLight light;
+    vec3 origin;
+    uint mode;
+    vec3 axis;
+    uint size;
+    vec3 right;
+    float extent;
+    vec3 up;
+    float texel;
+};
+struct ShadeParams {
+    uint point_count;
+    uint seed;
+    uint frame;
+    float eps;
+};
+struct BshNode {
+    vec3 center;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    uint pad;
+};
+const uint LIGHT_POINT = 0u;
+const uint LIGHT_SPOT = 1u;
+const uint LIGHT_IES = 2u;
+const uint LIGHT_TRIANGLE = 3u;
+const uint LIGHT_VPL = 4u;
+const uint NO_LIGHT = 4294967295u;
+const uint MAP_CAMERA = 0u;
+const uint MAP_PERSPECTIVE = 1u;
+const uint MAP_ORTHOGRAPHIC = 2u;
+const float XI_STEP = 5.9604645e-8;
+const float TWO_PI = 6.2831855;
+const float CULL_RADIUS_SCALE = 1.000001;
+const float SPHERE_PAD = 4.7683716e-7;
+const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
+const float INV_PI = 0.31830987;
+const float MIN_D2_ = 1e-12;
+const uint BSH_NONE = 4294967295u;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
+const float DEPTH_SIGMA = 0.05;
+const float COVER_WEIGHT = 0.1;
+const uint NEAR_BLOCK = 64u;
+const uint P = 8u;
+const uint TILE = 8u;
+const uint THREADS = 64u;
+const uint NEAR_CHUNK = 32u;
+
+layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
+
+layout(std430) readonly buffer type_6_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+
+layout(std430) readonly buffer type_6_block_2Compute { vec4 _group_0_binding_2_cs[]; };
+
+layout(std430) readonly buffer type_7_block_3Compute { GpuLight _group_0_binding_3_cs[]; };
+
+layout(std430) readonly buffer type_8_block_4Compute { uint _group_0_binding_4_cs[]; };
+
+layout(std430) readonly buffer type_9_block_5Compute { GpuNearBox _group_0_binding_5_cs[]; };
+
+layout(std430) buffer type_6_block_6Compute { vec4 _group_0_binding_6_cs[]; };
+
+shared vec3 wg_lo[64];
+
+shared vec3 wg_hi[64];
+
+shared uint light_count;
+
+shared uint light_list[2048];
+
+
+float to_f32_(uint u) {
+    return float(u);
+}
+
+uint to_u32_(float x) {
+    return uint(x);
+}
+
+uint mul_lo_u32_(uint a, uint b) {
+    return (a * b);
+}
+
+uint add_wrap_u32_(uint a_1, uint b_1) {
+    return (a_1 + b_1);
+}
+
+float xi_from_bits(uint bits) {
+    float _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+uint pcg_hash(uint x_1) {
+    uint _e2 = mul_lo_u32_(x_1, 747796405u);
+    uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+uint reverse_bits(uint x_2) {
+    uint v = 0u;
+    v = (((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u));
+    uint _e11 = v;
+    uint _e16 = v;
+    v = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
+    uint _e22 = v;
+    uint _e27 = v;
+    v = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
+    uint _e33 = v;
+    uint _e38 = v;
+    v = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
+    uint _e44 = v;
+    uint _e49 = v;
+    v = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
+    uint _e55 = v;
+    return _e55;
+}
+
+float xi_for(uint seed, uint frame, uint light) {
+    uint _e3 = pcg_hash(seed);
+    uint _e4 = pcg_hash(_e3);
+    uint _e6 = pcg_hash((_e4 ^ light));
+    uint _e7 = reverse_bits(frame);
+    uint _e8 = add_wrap_u32_(_e6, _e7);
+    float _e9 = xi_from_bits(_e8);
+    return _e9;
+}
+
+float rr_probability(float rt2_, float d2_) {
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (rt2_ / d2_);
+}
+
+float slc_weight(float rt2_1, float d2_1) {
+    if ((d2_1 <= rt2_1)) {
+        return 1.0;
+    }
+    return (d2_1 / rt2_1);
+}
+
+float random_range2_(float rt2_2, float xi) {
+    return (rt2_2 / (1.0 - xi));
+}
+
+bool slc_keep(float r2_, float d2_2) {
+    return (d2_2 < r2_);
+}
+
+float threshold_range2_(float intensity, float exposure, float error_bound) {
+    if ((intensity <= 0.0)) {
+        return 0.0;
+    }
+    return (((exposure / error_bound) * intensity) / TWO_PI);
+}
+
+float intensity_measure(vec3 rgb, uint mode) {
+    if ((mode == 1u)) {
+        return (((rgb.x + rgb.y) + rgb.z) / 3.0);
+    }
+    return max(rgb.x, max(rgb.y, rgb.z));
+}
+
+float cull_radius(float r2_1) {
+    return (sqrt(r2_1) * CULL_RADIUS_SCALE);
+}
+
+float windowed_falloff(float d2_3, float range2_) {
+    float q_2 = (d2_3 / range2_);
+    float w_9 = clamp((1.0 - (q_2 * q_2)), 0.0, 1.0);
+    return ((w_9 * w_9) / max(d2_3, 0.0001));
+}
+
+bool sphere_contains_point(vec3 c, float r, vec3 x_3) {
+    vec3 v_3 = (x_3 - c);
+    return (dot(v_3, v_3) <= (r * r));
+}
+
+bool sphere_overlaps_sphere(vec3 c1_, float r1_, vec3 c2_, float r2_2) {
+    vec3 v_4 = (c2_ - c1_);
+    float r_3 = (r1_ + r2_2);
+    return (dot(v_4, v_4) <= (r_3 * r_3));
+}
+
+float sphere_pad(float r_1, vec3 c_1) {
+    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
+}
+
+vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
+    bool local_5 = false;
+    vec3 v_5 = (c2_1 - c1_1);
+    float d_2 = sqrt(dot(v_5, v_5));
+    float _e8 = sphere_pad(r1_1, c1_1);
+    if ((r1_1 >= ((d_2 + r2_3) + _e8))) {
+        return vec4(c1_1.x, c1_1.y, c1_1.z, r1_1);
+    }
+    float _e16 = sphere_pad(r2_3, c2_1);
+    if ((r2_3 >= ((d_2 + r1_1) + _e16))) {
+        return vec4(c2_1.x, c2_1.y, c2_1.z, r2_3);
+    }
+    if (!((d_2 >= SPHERE_HUGE))) {
+        local_5 = ((0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    } else {
+        local_5 = true;
+    }
+    bool _e35 = local_5;
+    if (_e35) {
+        return vec4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
+    }
+    if ((abs((r1_1 - r2_3)) >= d_2)) {
+        if ((r1_1 >= r2_3)) {
+            float rn = max(r1_1, (d_2 + r2_3));
+            float _e50 = sphere_pad(rn, c1_1);
+            return vec4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
+        }
+        float rm = max(r2_3, (d_2 + r1_1));
+        float _e58 = sphere_pad(rm, c2_1);
+        return vec4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
+    }
+    float r0_ = (0.5 * ((d_2 + r1_1) + r2_3));
+    vec3 c_9 = (c1_1 + (v_5 * ((r0_ - r1_1) / d_2)));
+    vec3 e1_ = (c_9 - c1_1);
+    vec3 e2_ = (c_9 - c2_1);
+    float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
+    float _e82 = sphere_pad(r_4, c_9);
+    return vec4(c_9.x, c_9.y, c_9.z, (r_4 + _e82));
+}
+
+bool sphere_overlaps_aabb(vec3 c_2, float r_2, vec3 bmin, vec3 bmax) {
+    vec3 q_3 = clamp(c_2, bmin, bmax);
+    vec3 v_6 = (q_3 - c_2);
+    return (dot(v_6, v_6) <= (r_2 * r_2));
+}
+
+float vpl_rt2_(vec3 flux, float exposure_1, float error_bound_1, uint mode_1) {
+    float _e6 = intensity_measure((flux * INV_PI), mode_1);
+    float _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
+    return _e7;
+}
+
+float range_radius(float extent, float r2_4) {
+    return (extent + sqrt(r2_4));
+}
+
+float inverse_square(float d2_4) {
+    return (1.0 / max(d2_4, MIN_D2_));
+}
+
+float connection_factor(float cos_x, float d2_5, float rt2_3, float w) {
+    float _e4 = inverse_square(d2_5);
+    float _e6 = slc_weight(rt2_3, d2_5);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+float vpl_lobe(vec3 n, vec3 w_1) {
+    return (max(dot(n, w_1), 0.0) * INV_PI);
+}
+
+float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v_1, float min_d2_) {
+    float m_2 = max(dot(v_1, v_1), min_d2_);
+    return (((max(dot(n_l, v_1), 0.0) * max(-(dot(n_x, v_1)), 0.0)) * INV_PI) / (m_2 * m_2));
+}
+
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
+    if ((cos_inner <= cos_outer)) {
+        return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
+    }
+    float t_2 = clamp(((cos_theta - cos_outer) / (cos_inner - cos_outer)), 0.0, 1.0);
+    return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
+}
+
+float triangle_lobe(vec3 n_1, float area, vec3 w_2) {
+    return (area * max(dot(n_1, w_2), 0.0));
+}
+
+vec3 triangle_sample(vec3 a_2, vec3 b_2, vec3 c_3, float u1_, float u2_) {
+    float su = sqrt(u1_);
+    float b0_ = (1.0 - su);
+    float b1_ = (u2_ * su);
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_3 * ((1.0 - b0_) - b1_)));
+}
+
+float area_to_solid_angle_pdf(float pdf_area, float d2_6, float cos_light) {
+    float c_10 = abs(cos_light);
+    if ((c_10 <= 0.0)) {
+        return 0.0;
+    }
+    return ((pdf_area * d2_6) / c_10);
+}
+
+float atan_portable(float x_4) {
+    float base = 0.0;
+    float t = 0.0;
+    float a_9 = abs(x_4);
+    t = a_9;
+    if ((a_9 > 2.4142137)) {
+        base = 1.5707964;
+        t = (-1.0 / a_9);
+    } else {
+        if ((a_9 > 0.41421357)) {
+            base = 0.7853982;
+            t = ((a_9 - 1.0) / (a_9 + 1.0));
+        }
+    }
+    float _e18 = t;
+    float _e19 = t;
+    float z_1 = (_e18 * _e19);
+    float _e21 = base;
+    float _e33 = t;
+    float _e35 = t;
+    float r_5 = (_e21 + (((((((((0.080537446 * z_1) - 0.13877685) * z_1) + 0.19977711) * z_1) - 0.3333295) * z_1) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_5) : r_5);
+}
+
+float atan2_portable(float y, float x_5) {
+    if ((x_5 == 0.0)) {
+        if ((y > 0.0)) {
+            return 1.5707964;
+        }
+        if ((y < 0.0)) {
+            return -1.5707964;
+        }
+        return 0.0;
+    }
+    float _e12 = atan_portable((y / x_5));
+    if ((x_5 > 0.0)) {
+        return _e12;
+    }
+    if ((y >= 0.0)) {
+        return (_e12 + 3.1415927);
+    }
+    return (_e12 - 3.1415927);
+}
+
+float ies_fold_c(float c_4, float h_first, float h_last) {
+    float a_3 = 0.0;
+    a_3 = (c_4 - (360.0 * floor((c_4 / 360.0))));
+    if ((h_last <= 0.0)) {
+        return 0.0;
+    }
+    if ((h_last <= 90.0)) {
+        float _e15 = a_3;
+        if ((_e15 > 180.0)) {
+            float _e18 = a_3;
+            a_3 = (360.0 - _e18);
+        }
+        float _e21 = a_3;
+        if ((_e21 > 90.0)) {
+            float _e24 = a_3;
+            a_3 = (180.0 - _e24);
+        }
+        float _e27 = a_3;
+        return _e27;
+    }
+    if ((h_first >= 90.0)) {
+        float _e30 = a_3;
+        if ((_e30 < 90.0)) {
+            float _e33 = a_3;
+            a_3 = (180.0 - _e33);
+        } else {
+            float _e36 = a_3;
+            if ((_e36 > 270.0)) {
+                float _e39 = a_3;
+                a_3 = (540.0 - _e39);
+            }
+        }
+        float _e42 = a_3;
+        return _e42;
+    }
+    if ((h_last <= 180.0)) {
+        float _e45 = a_3;
+        if ((_e45 > 180.0)) {
+            float _e48 = a_3;
+            a_3 = (360.0 - _e48);
+        }
+        float _e51 = a_3;
+        return _e51;
+    }
+    float _e52 = a_3;
+    return _e52;
+}
+
+float ies_lerp_t(float a0_, float a1_, float x_7) {
+    if ((a1_ <= a0_)) {
+        return 0.0;
+    }
+    return clamp(((x_7 - a0_) / (a1_ - a0_)), 0.0, 1.0);
+}
+
+uint mul_hi_u32_(uint a_4, uint b_3) {
+    uint a_lo = (a_4 & 65535u);
+    uint a_hi = (a_4 >> 16u);
+    uint b_lo = (b_3 & 65535u);
+    uint b_hi = (b_3 >> 16u);
+    uint ll = (a_lo * b_lo);
+    uint lh = (a_lo * b_hi);
+    uint hl = (a_hi * b_lo);
+    uint hh = (a_hi * b_hi);
+    uint mid = (((ll >> 16u) + (lh & 65535u)) + (hl & 65535u));
+    return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid >> 16u));
+}
+
+uint uniform_index(uint n_3, uint hi_1, uint lo_1) {
+    uint _e3 = mul_lo_u32_(hi_1, n_3);
+    uint _e4 = mul_hi_u32_(hi_1, n_3);
+    uint _e5 = mul_hi_u32_(lo_1, n_3);
+    if ((_e3 > (4294967295u - _e5))) {
+        return (_e4 + 1u);
+    }
+    return _e4;
+}
+
+uint reservoir_slot(uint n_4, uint k, uint hi_2, uint lo_2) {
+    if ((n_4 <= k)) {
+        return (n_4 - 1u);
+    }
+    uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    if ((_e7 < k)) {
+        return _e7;
+    }
+    return k;
+}
+
+float reservoir_weight(uint n_5, uint k_1) {
+    float _e2 = to_f32_(n_5);
+    float _e3 = to_f32_(k_1);
+    return max((_e2 / _e3), 1.0);
+}
+
+bool weighted_replace(float w_3, float w_sum, float u_1) {
+    return ((u_1 * w_sum) < w_3);
+}
+
+float weighted_pick_weight(float w_sum_1, float w_4, uint k_2) {
+    float _e3 = to_f32_(k_2);
+    return (w_sum_1 / (_e3 * w_4));
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1) {
+    if ((cos_a_1 > cos_b_1)) {
+        return 0.0;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+float safe_sqrt(float x_8) {
+    return sqrt(max(x_8, 0.0));
+}
+
+float light_importance(vec3 center, float radius, float phi, vec3 axis, float cos_o, float cos_e, vec3 p, vec3 n_6) {
+    float imp = 0.0;
+    vec3 v_7 = (p - center);
+    float dist2_ = dot(v_7, v_7);
+    float r2_5 = (radius * radius);
+    float d2_11 = max(max(dist2_, r2_5), MIN_D2_);
+    vec3 wi = ((dist2_ > 0.0) ? (v_7 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi);
+    float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    float _e32 = safe_sqrt((1.0 - (r2_5 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_5) ? -1.0 : _e32);
+    float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
+    float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
+    float _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
+    float _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
+    if ((_e46 <= cos_e)) {
+        return 0.0;
+    }
+    imp = ((phi * _e46) / d2_11);
+    if ((dot(n_6, n_6) > 0.0)) {
+        float cos_i = -(dot(wi, n_6));
+        float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
+        float _e61 = imp;
+        float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
+        imp = (_e61 * max(_e62, 0.0));
+    }
+    float _e66 = imp;
+    return max(_e66, 0.0);
+}
+
+float candidate_weight(float importance, float rt2_4, float d2_7) {
+    float _e3 = slc_weight(rt2_4, d2_7);
+    return (importance * _e3);
+}
+
+float cone_weight(vec3 center_1, float radius_1, float phi_1, vec3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, vec3 p_1, vec3 n_7) {
+    vec3 v_8 = (p_1 - center_1);
+    float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_7);
+    float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_8, v_8));
+    return _e14;
+}
+
+float weighted_select_pdf(float w_5, float w_sum_2, bool in_range, uint k_3) {
+    if ((w_5 <= 0.0)) {
+        return 0.0;
+    }
+    float total = (in_range ? w_sum_2 : (w_sum_2 + w_5));
+    float _e9 = to_f32_(k_3);
+    return ((_e9 * w_5) / total);
+}
+
+float bvh_first_prob(float c0_, float c1_2) {
+    float s = (c0_ + c1_2);
+    if ((s > 0.0)) {
+        return (c0_ / s);
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(float u_2, float p0_, bool first_1) {
+    if (first_1) {
+        return min((u_2 / p0_), ONE_MINUS_EPSILON);
+    }
+    return clamp(((u_2 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
+float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
+    vec3 t0_ = ((bmin_1 - o) * inv_d);
+    vec3 t1_ = ((bmax_1 - o) * inv_d);
+    vec3 lo_3 = min(t0_, t1_);
+    vec3 hi_3 = max(t0_, t1_);
+    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
+    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
+    bool local_7 = false;
+    vec3 n_13 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_13, n_13);
+    if (!(!((l2_ > 0.0)))) {
+        local_7 = !((l2_ < 3e38));
+    } else {
+        local_7 = true;
+    }
+    bool _e17 = local_7;
+    if (_e17) {
+        return vec3(0.0, 0.0, 0.0);
+    }
+    return (n_13 / vec3(sqrt(l2_)));
+}
+
+vec3 face_against(vec3 n_8, vec3 dir) {
+    return ((dot(n_8, dir) > 0.0) ? -(n_8) : n_8);
+}
+
+vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
+    vec3 e1_1 = (b_5 - a_6);
+    vec3 e2_1 = (c_7 - a_6);
+    vec3 q_4 = (p_2 - a_6);
+    float d11_ = dot(e1_1, e1_1);
+    float d12_ = dot(e1_1, e2_1);
+    float d22_ = dot(e2_1, e2_1);
+    float den = ((d11_ * d22_) - (d12_ * d12_));
+    if (!((abs(den) > 0.0))) {
+        return vec3(1.0, 0.0, 0.0);
+    }
+    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
+    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
+    return vec3(((1.0 - w1_) - w2_), w1_, w2_);
+}
+
+vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_6, vec3 facing) {
+    bool local_8 = false;
+    vec3 s_1 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
+    float l2_1 = dot(s_1, s_1);
+    if (!(!((l2_1 > 1e-12)))) {
+        local_8 = !((l2_1 < 3e38));
+    } else {
+        local_8 = true;
+    }
+    bool _e24 = local_8;
+    if (_e24) {
+        return facing;
+    }
+    vec3 n_14 = (s_1 / vec3(sqrt(l2_1)));
+    return ((dot(n_14, facing) < 0.0) ? -(n_14) : n_14);
+}
+
+float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, float t_max_1) {
+    bool local_9 = false;
+    bool local_10 = false;
+    bool local_11 = false;
+    vec3 e1_2 = (b_6 - a_7);
+    vec3 e2_2 = (c_8 - a_7);
+    vec3 p_3 = cross(d, e2_2);
+    float det = dot(e1_2, p_3);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv = (1.0 / det);
+    vec3 s_2 = (o_1 - a_7);
+    float u_3 = (dot(s_2, p_3) * inv);
+    if (!((u_3 < 0.0))) {
+        local_9 = (u_3 > 1.0);
+    } else {
+        local_9 = true;
+    }
+    bool _e28 = local_9;
+    if (_e28) {
+        return -1.0;
+    }
+    vec3 q_5 = cross(s_2, e1_2);
+    float v_9 = (dot(d, q_5) * inv);
+    if (!((v_9 < 0.0))) {
+        local_10 = ((u_3 + v_9) > 1.0);
+    } else {
+        local_10 = true;
+    }
+    bool _e42 = local_10;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_3 = (dot(e2_2, q_5) * inv);
+    if ((t_3 > t_min)) {
+        local_11 = (t_3 < t_max_1);
+    } else {
+        local_11 = false;
+    }
+    bool _e51 = local_11;
+    if (_e51) {
+        return t_3;
+    }
+    return -1.0;
+}
+
+float mis_balance(float pdf_a, float pdf_b) {
+    float s_3 = (pdf_a + pdf_b);
+    if ((s_3 <= 0.0)) {
+        return 0.0;
+    }
+    return (pdf_a / s_3);
+}
+
+float mis_power(float pdf_a_1, float pdf_b_1) {
+    float a2_ = (pdf_a_1 * pdf_a_1);
+    float s_4 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_4 <= 0.0)) {
+        return 0.0;
+    }
+    return (a2_ / s_4);
+}
+
+float light_strategy_pdf(float select, float rt2_6, float d2_8, float area_1, float cos_y) {
+    bool local_12 = false;
+    bool local_13 = false;
+    if (!((d2_8 <= 0.0))) {
+        local_12 = (area_1 <= 0.0);
+    } else {
+        local_12 = true;
+    }
+    bool _e13 = local_12;
+    if (!(_e13)) {
+        local_13 = (cos_y <= 0.0);
+    } else {
+        local_13 = true;
+    }
+    bool _e20 = local_13;
+    if (_e20) {
+        return 0.0;
+    }
+    float _e22 = rr_probability(rt2_6, d2_8);
+    float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_8, cos_y);
+    return ((select * _e22) * _e26);
+}
+
+vec3 lambert_brdf(vec3 rho) {
+    return (rho * INV_PI);
+}
+
+float cosine_pdf(float cos_theta_1) {
+    return (max(cos_theta_1, 0.0) * INV_PI);
+}
+
+vec3 cosine_direction(vec3 n_9, float u1_1, float u2_1) {
+    float s_5 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_10 = (-1.0 / (s_5 + n_9.z));
+    float b_7 = ((n_9.x * n_9.y) * a_10);
+    vec3 t_4 = vec3((1.0 + (((s_5 * n_9.x) * n_9.x) * a_10)), (s_5 * b_7), (-(s_5) * n_9.x));
+    vec3 bt = vec3(b_7, (s_5 + ((n_9.y * n_9.y) * a_10)), -(n_9.y));
+    float r_6 = sqrt(u1_1);
+    float phi_2 = (6.2831855 * u2_1);
+    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));
+}
+
+float bilateral_weight(vec3 n_10, vec3 nj, float z, float zj, float inv_sz) {
+    float dn = max(dot(n_10, nj), 0.0);
+    float dn2_ = (dn * dn);
+    float dn4_ = (dn2_ * dn2_);
+    float dn8_ = (dn4_ * dn4_);
+    float d_3 = ((zj - z) * inv_sz);
+    float t_5 = max((1.0 - (d_3 * d_3)), 0.0);
+    return (((dn8_ * dn8_) * t_5) * t_5);
+}
+
+uint interleave_subset(uint x_9, uint y_1, uint period) {
+    return (((y_1 % period) * period) + (x_9 % period));
+}
+
+uint interleave_slot(uint tx, uint ty, uint size, uint period_1) {
+    uint side = (size / period_1);
+    uint _e5 = interleave_subset(tx, ty, period_1);
+    return ((((_e5 * side) * side) + ((ty / period_1) * side)) + (tx / period_1));
+}
+
+uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2) {
+    uint subsets = (period_2 * period_2);
+    return (((i_1 % subsets) * per_subset) + (i_1 / subsets));
+}
+
+uint near_block_index(uint tx_1, uint ty_1, uint size_1) {
+    uint side_1 = (size_1 / 8u);
+    return ((((((ty_1 / 8u) * side_1) + (tx_1 / 8u)) * NEAR_BLOCK) + ((ty_1 % 8u) * 8u)) + (tx_1 % 8u));
+}
+
+uint near_block_tx(uint q, uint size_2) {
+    return ((((q / NEAR_BLOCK) % (size_2 / 8u)) * 8u) + (q % 8u));
+}
+
+uint near_block_ty(uint q_1, uint size_3) {
+    return ((((q_1 / NEAR_BLOCK) / (size_3 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
+}
+
+float vpl_near_weight(float d2_9, float near_r2_) {
+    if ((near_r2_ <= 0.0)) {
+        return 0.0;
+    }
+    float t_6 = clamp(((near_r2_ - d2_9) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_6 * t_6) * (3.0 - (2.0 * t_6)));
+}
+
+float vpl_far_weight(float d2_10, float near_r2_1) {
+    float _e2 = vpl_near_weight(d2_10, near_r2_1);
+    return (1.0 - _e2);
+}
+
+vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_7, float h) {
+    float sx = (((2.0 * px) / w_7) - 1.0);
+    float sy = (1.0 - ((2.0 * py) / h));
+    return normalize(((forward + (right * sx)) + (up * sy)));
+}
+
+float path_survival(vec3 beta) {
+    return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
+}
+
+float light_map_coord(uint t_1, uint size_4) {
+    float _e2 = to_f32_(t_1);
+    float _e7 = to_f32_(size_4);
+    return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
+}
+
+uint light_map_texel(float a_8, uint size_5) {
+    float _e6 = to_f32_(size_5);
+    float _e9 = to_f32_(size_5);
+    uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
+    return _e14;
+}
+
+float light_map_depth(vec3 rel, vec3 axis_2, bool perspective) {
+    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis_2));
+}
+
+float rsm_texel_solid_angle(float texel_area, float cos_axis) {
+    return (((texel_area * cos_axis) * cos_axis) * cos_axis);
+}
+
+vec3 point_irradiance(vec3 intensity_1, vec3 n_11, vec3 v_2) {
+    float d2_12 = dot(v_2, v_2);
+    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_12, MIN_D2_)));
+    float _e11 = inverse_square(d2_12);
+    return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
+}
+
+vec3 directional_irradiance(vec3 e_1, vec3 n_12, vec3 to_light) {
+    return (e_1 * max(dot(n_12, to_light), 0.0));
+}
+
+float shadow_bias(float texel, float cos_light_1) {
+    float c_11 = clamp(cos_light_1, 0.02, 1.0);
+    return (texel * (1.5 + (sqrt((1.0 - (c_11 * c_11))) / c_11)));
+}
+
+bool shadow_lit(float d_1, float d_map, float bias) {
+    bool local_14 = false;
+    if (!((d_map <= 0.0))) {
+        local_14 = (d_1 <= (d_map + bias));
+    } else {
+        local_14 = true;
+    }
+    bool _e11 = local_14;
+    return _e11;
+}
+
+vec3 diffuse_radiance(vec3 albedo, vec3 emission, vec3 e_2) {
+    return (emission + ((albedo * INV_PI) * e_2));
+}
+
+vec3 light_intensity(GpuLight l, vec3 w_8) {
+    switch(l.kind) {
+        case 4u: {
+            float _e5 = vpl_lobe(l.p1_, w_8);
+            return (l.intensity * _e5);
+        }
+        default: {
+            return vec3(0.0);
+        }
+    }
+}
+
+vec3 light_point(GpuLight l_1, float u1_2, float u2_2) {
+    return l_1.p0_;
+}
+
+float light_area(GpuLight l_2) {
+    return 0.0;
+}
+
+vec3 light_normal(GpuLight l_3) {
+    return vec3(0.0);
+}
+
+void main() {
+    if (gl_LocalInvocationID == uvec3(0u)) {
+        wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        wg_hi = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        light_count = 0u;
+        light_list = uint[2048](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    }
+    memoryBarrierShared();
+    barrier();
+    uvec3 wg = gl_WorkGroupID;
+    uvec3 lid = gl_LocalInvocationID;
+    uint li = gl_LocalInvocationIndex;
+    bool local = false;
+    vec4 pos = vec4(0.0);
+    vec3 nrm = vec3(0.0);
+    bool local_1 = false;
+    uint stride = 32u;
+    vec3 e = vec3(0.0);
+    uint kept = 0u;
+    uint first = 0u;
+    bool local_2 = false;
+    bool local_3 = false;
+    uint m = 0u;
+    bool local_4 = false;
+    uint m_1 = 0u;
+    uint px_1 = ((wg.x * TILE) + lid.x);
+    uint py_1 = ((wg.y * TILE) + lid.y);
+    uint _e15 = _group_0_binding_0_cs.width;
+    if ((px_1 < _e15)) {
+        uint _e21 = _group_0_binding_0_cs.height;
+        local = (py_1 < _e21);
+    } else {
+        local = false;
+    }
+    bool inside = local;
+    uint _e27 = _group_0_binding_0_cs.width;
+    uint pix = ((py_1 * _e27) + px_1);
+    if (inside) {
+        vec4 _e38 = _group_0_binding_1_cs[pix];
+        pos = _e38;
+        vec4 _e41 = _group_0_binding_2_cs[pix];
+        nrm = _e41.xyz;
+    }
+    if (inside) {
+        float _e46 = pos.w;
+        local_1 = (_e46 > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool valid = local_1;
+    vec4 _e55 = pos;
+    wg_lo[li] = (valid ? _e55.xyz : vec3(3e38));
+    vec4 _e62 = pos;
+    wg_hi[li] = (valid ? _e62.xyz : vec3(-3e38));
+    memoryBarrierShared();
+    barrier();
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e94 = stride;
+            stride = (_e94 / 2u);
+        }
+        loop_init = false;
+        uint _e67 = stride;
+        if ((_e67 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e70 = stride;
+            if ((li < _e70)) {
+                vec3 _e76 = wg_lo[li];
+                uint _e78 = stride;
+                vec3 _e81 = wg_lo[(li + _e78)];
+                wg_lo[li] = min(_e76, _e81);
+                vec3 _e87 = wg_hi[li];
+                uint _e89 = stride;
+                vec3 _e92 = wg_hi[(li + _e89)];
+                wg_hi[li] = max(_e87, _e92);
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    vec3 lo_4 = wg_lo[0];
+    vec3 hi_4 = wg_hi[0];
+    float _e105 = _group_0_binding_0_cs.near_r2_;
+    float _e106 = cull_radius(_e105);
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e229 = first;
+            first = (_e229 + NEAR_CHUNK);
+        }
+        loop_init_1 = false;
+        uint _e115 = first;
+        uint _e118 = _group_0_binding_0_cs.near_blocks;
+        if ((_e115 < _e118)) {
+        } else {
+            break;
+        }
+        {
+            if ((li == 0u)) {
+                atomicExchange(light_count, 0u);
+            }
+            memoryBarrierShared();
+            barrier();
+            uint _e124 = first;
+            uint b_8 = (_e124 + li);
+            if ((li < NEAR_CHUNK)) {
+                uint _e132 = _group_0_binding_0_cs.near_blocks;
+                local_2 = (b_8 < _e132);
+            } else {
+                local_2 = false;
+            }
+            bool _e135 = local_2;
+            if (_e135) {
+                GpuNearBox nb = _group_0_binding_5_cs[b_8];
+                if (all(lessThanEqual((nb.lo - vec3(_e106)), hi_4))) {
+                    local_3 = all(lessThanEqual(lo_4, (nb.hi + vec3(_e106))));
+                } else {
+                    local_3 = false;
+                }
+                bool _e152 = local_3;
+                if (_e152) {
+                    m = 0u;
+                    bool loop_init_2 = true;
+                    while(true) {
+                        if (!loop_init_2) {
+                            uint _e185 = m;
+                            m = (_e185 + 1u);
+                        }
+                        loop_init_2 = false;
+                        uint _e155 = m;
+                        if ((_e155 < NEAR_BLOCK)) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e161 = m;
+                            uint slot = _group_0_binding_4_cs[((b_8 * NEAR_BLOCK) + _e161)];
+                            GpuLight l_4 = _group_0_binding_3_cs[slot];
+                            if (any(notEqual(l_4.intensity, vec3(0.0)))) {
+                                bool _e176 = sphere_overlaps_aabb(l_4.p0_, _e106, lo_4, hi_4);
+                                local_4 = _e176;
+                            } else {
+                                local_4 = false;
+                            }
+                            bool _e178 = local_4;
+                            if (_e178) {
+                                uint _e182 = atomicAdd(light_count, 1u);
+                                light_list[_e182] = slot;
+                            }
+                        }
+                    }
+                }
+            }
+            memoryBarrierShared();
+            barrier();
+            uint _e188 = light_count;
+            memoryBarrierShared();
+            barrier();
+            if (valid) {
+                m_1 = 0u;
+                bool loop_init_3 = true;
+                while(true) {
+                    if (!loop_init_3) {
+                        uint _e227 = m_1;
+                        m_1 = (_e227 + 1u);
+                    }
+                    loop_init_3 = false;
+                    uint _e191 = m_1;
+                    if ((_e191 < _e188)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e195 = m_1;
+                        uint _e197 = light_list[_e195];
+                        GpuLight l_5 = _group_0_binding_3_cs[_e197];
+                        vec4 _e200 = pos;
+                        vec3 v_10 = (_e200.xyz - l_5.p0_);
+                        float _e207 = _group_0_binding_0_cs.near_r2_;
+                        float _e208 = vpl_near_weight(dot(v_10, v_10), _e207);
+                        if ((_e208 > 0.0)) {
+                            vec3 _e211 = e;
+                            vec3 _e214 = nrm;
+                            float _e217 = _group_0_binding_0_cs.min_d2_;
+                            float _e218 = vpl_transfer(l_5.p1_, _e214, v_10, _e217);
+                            e = (_e211 + (l_5.intensity * ((_e218 * _e208) * 0.015625)));
+                            uint _e223 = kept;
+                            kept = (_e223 + 1u);
+                        }
+                    }
+                }
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    if (valid) {
+        vec4 old = _group_0_binding_6_cs[pix];
+        vec3 _e238 = e;
+        uint _e241 = kept;
+        _group_0_binding_6_cs[pix] = vec4((old.xyz + _e238), (old.w + float(_e241)));
+        return;
+    } else {
+        return;
+    }
+}
+
