@@ -327,7 +327,10 @@ impl<'a> GpuVplFrame<'a> {
             })
         };
         let gbuffer_pipeline = raster("fs_gbuffer", &[F32, F32]);
-        let rsm_pipeline = raster("fs_rsm", &[F32, F16, F16]);
+        // Flux in f32: a texel carries 1/size² of the light's flux, which half
+        // floats flush to zero at 256² (28% of the lit texels of the default
+        // box, 1% of the indirect light).
+        let rsm_pipeline = raster("fs_rsm", &[F32, F16, F32]);
         let shadow_pipeline = raster("fs_shadow", &[R32]);
 
         // Targets.
@@ -340,7 +343,7 @@ impl<'a> GpuVplFrame<'a> {
         let rsm = [
             target(gpu, "slc rsm position", (size, size), F32, rt),
             target(gpu, "slc rsm normal", (size, size), F16, rt),
-            target(gpu, "slc rsm flux", (size, size), F16, rt),
+            target(gpu, "slc rsm flux", (size, size), F32, rt),
             target(gpu, "slc rsm depth", (size, size), DEPTH, wgpu::TextureUsages::RENDER_ATTACHMENT),
         ];
         let shadow_map = [

@@ -86,34 +86,38 @@ fn directional_frame_matches_the_cpu_frame() {
 }
 
 /// The GPU-made VPLs (RSM rasterized, flux from the shared texel solid
-/// angle) against the CPU's ray-cast ones: the same count, the same total
-/// flux within 0.5%, and texel for texel (those carrying more than 1e-4 of
-/// the largest texel's flux: half floats flush the cone's faint rim to
-/// zero) the same position within 0.1% of the scene and flux within 0.2%
-/// (plus two half-float subnormal steps).
+/// angle) against the CPU's ray-cast ones at the default 65,536: the same
+/// count, the same texels without flux (a half-float flux target once
+/// flushed 28% of the lit ones to zero), the same total flux within 1e-5,
+/// and texel for texel (those carrying more than 1e-4 of the largest
+/// texel's flux, at most 1% excepted: texels on an edge hit different
+/// faces) the same position within 0.1% of the scene and flux within 0.1%
+/// (grazing texels differ by ~1.3e-4: the rasterizer's and the ray
+/// caster's hit points differ in their last bits).
 fn gpu_vpls_match_cpu_vpls() {
     let Some(gpu) = gpu() else { return };
     let scene = Scene::cornell_box();
-    let frame = GpuVplFrame::new(gpu, &scene, &FrameDesc { width: W, height: H, rsm_size: 64, shadow_size: 256, min_distance: None }).unwrap();
+    let frame = GpuVplFrame::new(gpu, &scene, &FrameDesc { width: W, height: H, rsm_size: 256, shadow_size: 256, min_distance: None }).unwrap();
     frame.render(&settings(VplMethod::Slc, false)).unwrap();
     let g = frame.read_inputs().unwrap().vpls;
-    let ctx = VplContext::new(&scene, W, H, 64, None).unwrap();
+    let ctx = VplContext::new(&scene, W, H, 256, None).unwrap();
     let c = ctx.vpls();
     assert_eq!(g.len(), c.len());
     let total = |f: &[Vec3]| f.iter().fold(Vec3::ZERO, |a, &b| a + b);
     let (tg, tc) = (total(&g.flux), total(&c.flux));
     let rel = ((tg - tc).abs() / tc).max_element();
     eprintln!("VPL flux: GPU {tg}, CPU {tc}, {rel:.2e} relative");
-    assert!(rel <= 5e-3, "total VPL flux differs by {rel:.3e}: GPU {tg} vs CPU {tc}");
+    assert!(rel <= 1e-5, "total VPL flux differs by {rel:.3e}: GPU {tg} vs CPU {tc}");
+    let dark = |f: &[Vec3]| f.iter().filter(|f| **f == Vec3::ZERO).count();
+    assert_eq!(dark(&g.flux), dark(&c.flux), "texels without flux");
     let peak = c.flux.iter().map(|f| f.max_element()).fold(0.0f32, f32::max);
     let (mut lit, mut off) = (0, 0);
     for t in 0..c.len() {
         if c.flux[t].max_element() > 1e-4 * peak {
             lit += 1;
             let dp = (g.position[t] - c.position[t]).length() / scene.diagonal();
-            // Half-float rounding: 2⁻¹¹ relative, 2⁻²⁴ absolute below 2⁻¹⁴.
-            let df = ((g.flux[t] - c.flux[t]).abs() - c.flux[t] * 2e-3).max_element();
-            if dp > 1e-3 || df > 1.2e-7 {
+            let df = ((g.flux[t] - c.flux[t]).abs() - c.flux[t] * 1e-3).max_element();
+            if dp > 1e-3 || df > 0.0 {
                 off += 1;
                 eprintln!("texel {t}: CPU {} {}, GPU {} {}", c.position[t], c.flux[t], g.position[t], g.flux[t]);
             }

@@ -16,7 +16,7 @@
 //! |---|---|---|---|---|
 //! | `position` | `Rgba32Float` or `Rgba16Float` | `width × height` | `TEXTURE_BINDING` | world position; `w > 0` where a surface is |
 //! | `normal` | `Rgba32Float` or `Rgba16Float` | `width × height` | `TEXTURE_BINDING` | world unit normal facing the camera (`w` unused) |
-//! | RSM `position`, `normal`, `flux` | `Rgba32Float` or `Rgba16Float` | `s × s`, `s` a multiple of 8 | `TEXTURE_BINDING` | per texel the surface the light sees, its normal and the flux it reflects (incident × albedo); zero flux where nothing is hit |
+//! | RSM `position`, `normal`, `flux` | `Rgba32Float` or `Rgba16Float` | `s × s`, `s` a multiple of 8 | `TEXTURE_BINDING` | per texel the surface the light sees, its normal and the flux it reflects (incident × albedo); zero flux where nothing is hit; a texel's flux shrinks as `1/s²`, so prefer `Rgba32Float` for flux (half floats go subnormal below 6·10⁻⁵: at 256² a half-float flux target zeroed 28% of the default box's lit texels) |
 //! | VPL buffer | [`GpuVplRecord`] array | `count` records, `count` a multiple of 64 | `STORAGE` | position, normal, flux |
 //! | `output` | the `output_format` of the descriptor (`Rgba16Float` or `Rgba32Float`) | `width × height` | `STORAGE_BINDING` | written: irradiance (rgb), lights kept (a); 0 where no surface |
 //!
