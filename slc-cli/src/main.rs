@@ -373,6 +373,7 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> Result<(), String> {
     }
     for k in [
         Kernel::VplDenoise,
+        Kernel::VplNear,
         Kernel::GbufferImport,
         Kernel::VplPack,
         Kernel::IrradianceExport,

@@ -117,7 +117,8 @@ fn interleaved_image_is_the_interleaved_estimator_of_the_reference() {
     let ctx = VplContext::new(&Scene::cornell_box(), w, h, size, None).unwrap();
     let (gb, v, min_d2) = (ctx.gbuffer(), ctx.vpls(), ctx.min_d2());
     let p = slc_scene::vpl::PERIOD;
-    let none = ctx.shade(&settings(VplMethod::None, 0)).unwrap().irradiance;
+    // Interleaving alone: no near-field split (R_n = 0).
+    let none = ctx.shade(&VplSettings { near_radius: Some(0.0), ..settings(VplMethod::None, 0) }).unwrap().irradiance;
     let reference = ctx.shade(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() }).unwrap().irradiance;
     let subset_of_vpl: Vec<u32> = (0..v.len() as u32).map(|t| interleave_subset(t % size, t / size, p)).collect();
     let f = |x: usize, j: usize| v.flux[j].as_dvec3() * vpl_transfer(v.normal[j], gb.normal[x], gb.position[x] - v.position[j], min_d2) as f64;

@@ -60,8 +60,9 @@ pub struct VplSettings {
     /// shades the VPLs closer than `R_n` itself, unscaled and undenoised,
     /// and its interleaved subset takes only the rest, with a smooth
     /// partition between ([`slc_core::interleave::vpl_near_weight`]).
-    /// `None` or 0: no split. [`NEAR_FACTOR`] × the clamp distance removes
-    /// the `P × P` blotches where a surface meets the floor.
+    /// `None` (the default): [`NEAR_FACTOR`] × the clamp distance, which
+    /// removes the `P × P` blotches where a surface meets the floor;
+    /// `Some(0)`: no split.
     pub near_radius: Option<f32>,
 }
 
@@ -112,10 +113,10 @@ impl VplSettings {
         Ok(params)
     }
 
-    /// `R_n²` of the near-field split ([`VplSettings::near_radius`]; 0:
-    /// none).
-    pub fn near_r2(&self) -> f32 {
-        self.near_radius.map_or(0.0, |r| r * r)
+    /// `R_n²` of the near-field split ([`VplSettings::near_radius`]) for a
+    /// clamp distance `√min_d2`; 0: no split.
+    pub fn near_r2(&self, min_d2: f32) -> f32 {
+        self.near_radius.map_or(NEAR_FACTOR * NEAR_FACTOR * min_d2, |r| r * r)
     }
 }
 

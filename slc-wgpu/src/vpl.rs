@@ -254,7 +254,7 @@ impl<'a> GpuVpl<'a> {
             usage: wgpu::BufferUsages::UNIFORM,
         });
         // The reference shades every VPL in full: no near-field split.
-        let near_r2 = if reference { 0.0 } else { settings.near_r2() };
+        let near_r2 = if reference { 0.0 } else { settings.near_r2(self.min_d2) };
         let vp = VplParams {
             width: self.width,
             height: self.height,

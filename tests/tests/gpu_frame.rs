@@ -146,6 +146,7 @@ fn every_stage_is_timed() {
             "light update",
             "shading",
             "denoise",
+            "near field",
             "irradiance export",
             "direct",
             "composition"

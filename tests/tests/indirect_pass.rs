@@ -17,7 +17,7 @@ use glam::Vec3;
 use slc_core::interleave::interleave_slot;
 use slc_cpu::vpl::VplContext;
 use slc_scene::scene::Scene;
-use slc_scene::vpl::{NEAR_FACTOR, PERIOD, Shaded, VplMethod, VplSettings};
+use slc_scene::vpl::{PERIOD, Shaded, VplMethod, VplSettings};
 use slc_tests::engine::{self, texture, upload};
 use slc_tests::gpu;
 use slc_wgpu::GpuContext;
@@ -130,14 +130,15 @@ fn pass_matches_gpu_vpl_for_every_method() {
     let desc = IndirectPassDesc { width: W, height: H, vpls: VplSourceDesc::Rsm { size: RSM }, output_format: wgpu::TextureFormat::Rgba32Float };
     let pass = IndirectPass::new(gpu, &desc).unwrap();
     let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
-    // Without and with the near-field split (R_n = NEAR_FACTOR clamp distances).
+    // Without the near-field split (R_n = 0) and with the default one
+    // (NEAR_FACTOR clamp distances).
     // The split moves light between the fields: the kept counts (w) change.
     let mut without_split = Vec::new();
     for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
-        for (denoise, near_radius) in [false, true].into_iter().flat_map(|d| [(d, None), (d, Some(NEAR_FACTOR * e.min_distance))]) {
+        for (denoise, near_radius) in [false, true].into_iter().flat_map(|d| [(d, Some(0.0)), (d, None)]) {
             let s = VplSettings { near_radius, ..settings(method, denoise) };
             let got = run(gpu, &pass, &e, rsm, &s);
-            if near_radius.is_none() {
+            if near_radius == Some(0.0) {
                 without_split = got.clone();
             } else {
                 assert!(got.iter().zip(&without_split).any(|(a, b)| a[3] != b[3]), "{}: the near field changed nothing", method.name());

@@ -187,7 +187,7 @@ impl VplContext {
         let (w, h) = (gb.width as usize, gb.height as usize);
         let tile = s.tile as usize;
         let big = tile * SUPER;
-        let near_r2 = s.near_r2();
+        let near_r2 = s.near_r2(self.inputs.min_d2);
         // Per subset: (pixel, irradiance, kept) triples and loop evaluations.
         type SubsetResult = (Vec<(usize, Vec3, u32)>, u64);
         let results: Vec<SubsetResult> = (0..subsets)

@@ -377,7 +377,7 @@ impl IndirectPass {
         );
         let fp = uniform("slc frame params", bytemuck::bytes_of(&FrameParams { light_count: count, seed: st.seed, frame: st.frame, pad: 0 }));
         let min_d2 = frame.min_distance * frame.min_distance;
-        let near_r2 = st.near_r2();
+        let near_r2 = st.near_r2(min_d2);
         let near_blocks = count / NEAR_BLOCK;
         let vp = uniform(
             "slc vpl params",
