@@ -92,3 +92,12 @@ fn generated_kernels_match_snapshots() {
     }
     assert!(failures.is_empty(), "generated kernels changed (SLC_BLESS=1 to accept):\n{}", failures.join("\n"));
 }
+
+/// Every kernel has at least one snapshot variant: a new kernel without
+/// one fails here, not in review.
+#[test]
+fn every_kernel_has_a_snapshot() {
+    let covered: Vec<Kernel> = variants().into_iter().map(|(_, k, _)| k).collect();
+    let missing: Vec<&str> = Kernel::ALL.iter().filter(|k| !covered.contains(k)).map(|k| k.name()).collect();
+    assert!(missing.is_empty(), "kernels without a snapshot variant: {}", missing.join(", "));
+}
