@@ -465,8 +465,9 @@ impl Default for Features {
     }
 }
 
-const TEMPLATES: [(&str, &str); 20] = [
+const TEMPLATES: [(&str, &str); 21] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
+    ("workgroup_box.wgsl", include_str!("templates/workgroup_box.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
     ("geometry.wgsl", include_str!("templates/geometry.wgsl")),
     ("bsh_collect.wgsl", include_str!("templates/bsh_collect.wgsl")),

@@ -44,5 +44,5 @@ fn templates_do_not_contain_core_formulas() {
         }
         n += 1;
     }
-    assert_eq!(n, 19);
+    assert_eq!(n, 20);
 }

@@ -8,6 +8,7 @@
 use crate::kernel::{Timer, bind_layout, pipeline, read_back, storage};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
+use slc_core::interleave::interleave_slot;
 use slc_core::light::vpl_threshold_range2;
 use slc_core::range::random_range2;
 use slc_scene::backend::IndirectShader;
@@ -126,11 +127,8 @@ impl<'a> GpuVpl<'a> {
         let scale = subsets as f32;
         let lights: Vec<GpuLight> = order.iter().map(|&i| vpl(i, scale)).collect();
         let ids: Vec<u32> = order.iter().map(|&i| i as u32).collect();
-        let mut slot_of = vec![0u32; order.len()];
-        for (slot, &i) in order.iter().enumerate() {
-            slot_of[i] = slot as u32;
-        }
-        let near_slots: Vec<u32> = v.near_order().iter().map(|&i| slot_of[i]).collect();
+        // Where each VPL of near-block order sits in `lights` (vpl_pack's map).
+        let near_slots: Vec<u32> = v.near_order().iter().map(|&i| interleave_slot(i as u32 % v.size, i as u32 / v.size, v.size, PERIOD)).collect();
         let near_boxes: Vec<GpuNearBox> = v.near_boxes().iter().map(|&(lo, hi)| GpuNearBox { lo, pad0: 0.0, hi, pad1: 0.0 }).collect();
         let lights_all: Vec<GpuLight> = (0..v.len()).map(|i| vpl(i, 1.0)).collect();
         let ids_all: Vec<u32> = (0..v.len() as u32).collect();

@@ -14,6 +14,8 @@
 const P: u32 = {{ period }}u;
 const TILE: u32 = {{ tile }}u;
 const THREADS: u32 = TILE * TILE;
+const BOX_THREADS: u32 = THREADS;
+{% include "workgroup_box.wgsl" %}
 // Near blocks per chunk: one per thread, at most 32 (16 for 16x16 tiles,
 // so the list fits WebGPU's 16 KiB of workgroup memory).
 const NEAR_CHUNK: u32 = {% if tile * tile < 32 %}THREADS{% elif tile > 8 %}16u{% else %}32u{% endif %};
@@ -27,8 +29,6 @@ const NEAR_CHUNK: u32 = {% if tile * tile < 32 %}THREADS{% elif tile > 8 %}16u{%
 @group(0) @binding(6) var<storage, read_write> irradiance: array<vec4f>;
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
 
-var<workgroup> wg_lo: array<vec3f, THREADS>;
-var<workgroup> wg_hi: array<vec3f, THREADS>;
 var<workgroup> light_count: atomic<u32>;
 var<workgroup> light_list: array<u32, NEAR_CHUNK * NEAR_BLOCK>;
 
@@ -49,18 +49,9 @@ fn main(
         nrm = gb_normal[pix].xyz;
     }
     let valid = inside && pos.w > 0.0;
-    wg_lo[li] = select(vec3f(3.0e38), pos.xyz, valid);
-    wg_hi[li] = select(vec3f(-3.0e38), pos.xyz, valid);
-    workgroupBarrier();
-    for (var stride = THREADS / 2u; stride > 0u; stride = stride / 2u) {
-        if li < stride {
-            wg_lo[li] = min(wg_lo[li], wg_lo[li + stride]);
-            wg_hi[li] = max(wg_hi[li], wg_hi[li + stride]);
-        }
-        workgroupBarrier();
-    }
-    let lo = wg_lo[0];
-    let hi = wg_hi[0];
+    let tile_box = workgroup_box(li, pos.xyz, valid);
+    let lo = tile_box.lo;
+    let hi = tile_box.hi;
     let radius = cull_radius(params.near_r2);
     // The flux the light buffer holds is P^2 times the VPL's own.
     let unscale = 1.0 / f32(P * P);

@@ -13,6 +13,8 @@
 const P: u32 = {{ period }}u;
 const TILE: u32 = {{ tile }}u;
 const THREADS: u32 = TILE * TILE;
+const BOX_THREADS: u32 = THREADS;
+{% include "workgroup_box.wgsl" %}
 const MAX_TILE_LIGHTS: u32 = {{ max_tile_lights }}u;
 
 @group(0) @binding(0) var<uniform> params: VplParams;
@@ -24,8 +26,6 @@ const MAX_TILE_LIGHTS: u32 = {{ max_tile_lights }}u;
 @group(0) @binding(6) var<storage, read_write> irradiance: array<vec4f>;
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
 
-var<workgroup> wg_lo: array<vec3f, THREADS>;
-var<workgroup> wg_hi: array<vec3f, THREADS>;
 var<workgroup> tile_count: atomic<u32>;
 var<workgroup> tile_lights: array<u32, MAX_TILE_LIGHTS>;
 
@@ -47,18 +47,9 @@ fn main(
         nrm = gb_normal[pix].xyz;
     }
     let valid = inside && pos.w > 0.0;
-    wg_lo[li] = select(vec3f(3.0e38), pos.xyz, valid);
-    wg_hi[li] = select(vec3f(-3.0e38), pos.xyz, valid);
-    workgroupBarrier();
-    for (var stride = THREADS / 2u; stride > 0u; stride = stride / 2u) {
-        if li < stride {
-            wg_lo[li] = min(wg_lo[li], wg_lo[li + stride]);
-            wg_hi[li] = max(wg_hi[li], wg_hi[li + stride]);
-        }
-        workgroupBarrier();
-    }
-    let lo = wg_lo[0];
-    let hi = wg_hi[0];
+    let tile_box = workgroup_box(li, pos.xyz, valid);
+    let lo = tile_box.lo;
+    let hi = tile_box.hi;
     let base = sub * params.lights_per_subset;
     var e = vec3f(0.0);
     var kept = 0u;

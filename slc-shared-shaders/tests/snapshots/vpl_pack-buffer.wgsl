@@ -663,20 +663,49 @@ const P: u32 = 8u;
 // Declared because the shared library reads it; unused here, so not bound.
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
 
-var<workgroup> wg_lo: array<vec3f, NEAR_BLOCK>;
-var<workgroup> wg_hi: array<vec3f, NEAR_BLOCK>;
+const BOX_THREADS: u32 = NEAR_BLOCK;
+// The box of the points of a workgroup's invocations, reduced in workgroup
+// memory: vpl_tiled and vpl_near (a tile's G-buffer positions), vpl_pack (a
+// near block's VPL positions). The including kernel defines BOX_THREADS, its
+// invocation count (a power of two).
+
+var<workgroup> wg_lo: array<vec3f, BOX_THREADS>;
+var<workgroup> wg_hi: array<vec3f, BOX_THREADS>;
+
+/// A box `lo ≤ hi`, or empty (`lo = 3e38 > hi = -3e38`).
+struct WorkgroupBox {
+    lo: vec3f,
+    hi: vec3f,
+}
+
+/// The box holding every invocation's `p` where `has` (empty if none).
+/// Every invocation must call it (it has barriers); `li` is its
+/// local_invocation_index.
+fn workgroup_box(li: u32, p: vec3f, has: bool) -> WorkgroupBox {
+    wg_lo[li] = select(vec3f(3.0e38), p, has);
+    wg_hi[li] = select(vec3f(-3.0e38), p, has);
+    workgroupBarrier();
+    for (var stride = BOX_THREADS / 2u; stride > 0u; stride = stride / 2u) {
+        if li < stride {
+            wg_lo[li] = min(wg_lo[li], wg_lo[li + stride]);
+            wg_hi[li] = max(wg_hi[li], wg_hi[li + stride]);
+        }
+        workgroupBarrier();
+    }
+    return WorkgroupBox(wg_lo[0], wg_hi[0]);
+}
 
 @compute @workgroup_size(NEAR_BLOCK)
 fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(workgroup_id) wg: vec3u, @builtin(local_invocation_index) li: u32) {
     // Near-block order: VPL q of the dispatch.
     let q = gid.x;
     let inside = q < params.count;
-    var lo = vec3f(3.0e38);
-    var hi = vec3f(-3.0e38);
+    var position = vec3f(0.0);
+    var lit = false;
     if inside {
         let i = q;
         let r = records[i];
-        let position = r.position;
+        position = r.position;
         let normal = r.normal;
         let flux = r.flux * params.scale;
         let slot = interleave_slot_linear(i, params.per_subset, P);
@@ -686,22 +715,10 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(workgroup_id) wg: ve
         rt2[slot] = select(0.0, vpl_rt2(flux, params.exposure, params.error_bound, params.mode), slc);
         r2[slot] = select(params.fixed_r2, 0.0, slc);
         near_slots[q] = slot;
-        if any(flux != vec3f(0.0)) {
-            lo = position;
-            hi = position;
-        }
+        lit = any(flux != vec3f(0.0));
     }
-    wg_lo[li] = lo;
-    wg_hi[li] = hi;
-    workgroupBarrier();
-    for (var stride = NEAR_BLOCK / 2u; stride > 0u; stride = stride / 2u) {
-        if li < stride {
-            wg_lo[li] = min(wg_lo[li], wg_lo[li + stride]);
-            wg_hi[li] = max(wg_hi[li], wg_hi[li + stride]);
-        }
-        workgroupBarrier();
-    }
+    let block = workgroup_box(li, position, lit);
     if li == 0u && inside {
-        near_boxes[wg.x] = GpuNearBox(wg_lo[0], 0.0, wg_hi[0], 0.0);
+        near_boxes[wg.x] = GpuNearBox(block.lo, 0.0, block.hi, 0.0);
     }
 }

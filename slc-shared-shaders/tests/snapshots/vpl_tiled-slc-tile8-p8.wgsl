@@ -682,6 +682,37 @@ fn light_normal(l: GpuLight) -> vec3f {
 const P: u32 = 8u;
 const TILE: u32 = 8u;
 const THREADS: u32 = TILE * TILE;
+const BOX_THREADS: u32 = THREADS;
+// The box of the points of a workgroup's invocations, reduced in workgroup
+// memory: vpl_tiled and vpl_near (a tile's G-buffer positions), vpl_pack (a
+// near block's VPL positions). The including kernel defines BOX_THREADS, its
+// invocation count (a power of two).
+
+var<workgroup> wg_lo: array<vec3f, BOX_THREADS>;
+var<workgroup> wg_hi: array<vec3f, BOX_THREADS>;
+
+/// A box `lo ≤ hi`, or empty (`lo = 3e38 > hi = -3e38`).
+struct WorkgroupBox {
+    lo: vec3f,
+    hi: vec3f,
+}
+
+/// The box holding every invocation's `p` where `has` (empty if none).
+/// Every invocation must call it (it has barriers); `li` is its
+/// local_invocation_index.
+fn workgroup_box(li: u32, p: vec3f, has: bool) -> WorkgroupBox {
+    wg_lo[li] = select(vec3f(3.0e38), p, has);
+    wg_hi[li] = select(vec3f(-3.0e38), p, has);
+    workgroupBarrier();
+    for (var stride = BOX_THREADS / 2u; stride > 0u; stride = stride / 2u) {
+        if li < stride {
+            wg_lo[li] = min(wg_lo[li], wg_lo[li + stride]);
+            wg_hi[li] = max(wg_hi[li], wg_hi[li + stride]);
+        }
+        workgroupBarrier();
+    }
+    return WorkgroupBox(wg_lo[0], wg_hi[0]);
+}
 const MAX_TILE_LIGHTS: u32 = 1024u;
 
 @group(0) @binding(0) var<uniform> params: VplParams;
@@ -693,8 +724,6 @@ const MAX_TILE_LIGHTS: u32 = 1024u;
 @group(0) @binding(6) var<storage, read_write> irradiance: array<vec4f>;
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
 
-var<workgroup> wg_lo: array<vec3f, THREADS>;
-var<workgroup> wg_hi: array<vec3f, THREADS>;
 var<workgroup> tile_count: atomic<u32>;
 var<workgroup> tile_lights: array<u32, MAX_TILE_LIGHTS>;
 
@@ -716,18 +745,9 @@ fn main(
         nrm = gb_normal[pix].xyz;
     }
     let valid = inside && pos.w > 0.0;
-    wg_lo[li] = select(vec3f(3.0e38), pos.xyz, valid);
-    wg_hi[li] = select(vec3f(-3.0e38), pos.xyz, valid);
-    workgroupBarrier();
-    for (var stride = THREADS / 2u; stride > 0u; stride = stride / 2u) {
-        if li < stride {
-            wg_lo[li] = min(wg_lo[li], wg_lo[li + stride]);
-            wg_hi[li] = max(wg_hi[li], wg_hi[li + stride]);
-        }
-        workgroupBarrier();
-    }
-    let lo = wg_lo[0];
-    let hi = wg_hi[0];
+    let tile_box = workgroup_box(li, pos.xyz, valid);
+    let lo = tile_box.lo;
+    let hi = tile_box.hi;
     let base = sub * params.lights_per_subset;
     var e = vec3f(0.0);
     var kept = 0u;

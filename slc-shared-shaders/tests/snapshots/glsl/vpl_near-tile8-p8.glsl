@@ -184,6 +184,10 @@ struct BshNode {
     uint light;
     uint pad;
 };
+struct WorkgroupBox {
+    vec3 lo;
+    vec3 hi;
+};
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
 const uint LIGHT_IES = 2u;
@@ -210,25 +214,26 @@ const uint NEAR_BLOCK = 64u;
 const uint P = 8u;
 const uint TILE = 8u;
 const uint THREADS = 64u;
+const uint BOX_THREADS = 64u;
 const uint NEAR_CHUNK = 32u;
-
-layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
-
-layout(std430) readonly buffer type_6_block_1Compute { vec4 _group_0_binding_1_cs[]; };
-
-layout(std430) readonly buffer type_6_block_2Compute { vec4 _group_0_binding_2_cs[]; };
-
-layout(std430) readonly buffer type_7_block_3Compute { GpuLight _group_0_binding_3_cs[]; };
-
-layout(std430) readonly buffer type_8_block_4Compute { uint _group_0_binding_4_cs[]; };
-
-layout(std430) readonly buffer type_9_block_5Compute { GpuNearBox _group_0_binding_5_cs[]; };
-
-layout(std430) buffer type_6_block_6Compute { vec4 _group_0_binding_6_cs[]; };
 
 shared vec3 wg_lo[64];
 
 shared vec3 wg_hi[64];
+
+layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
+
+layout(std430) readonly buffer type_7_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+
+layout(std430) readonly buffer type_7_block_2Compute { vec4 _group_0_binding_2_cs[]; };
+
+layout(std430) readonly buffer type_8_block_3Compute { GpuLight _group_0_binding_3_cs[]; };
+
+layout(std430) readonly buffer type_9_block_4Compute { uint _group_0_binding_4_cs[]; };
+
+layout(std430) readonly buffer type_10_block_5Compute { GpuNearBox _group_0_binding_5_cs[]; };
+
+layout(std430) buffer type_7_block_6Compute { vec4 _group_0_binding_6_cs[]; };
 
 shared uint light_count;
 
@@ -760,14 +765,14 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
     bool local_11 = false;
     vec3 e1_2 = (b_6 - a_7);
     vec3 e2_2 = (c_8 - a_7);
-    vec3 p_3 = cross(d, e2_2);
-    float det = dot(e1_2, p_3);
+    vec3 p_4 = cross(d, e2_2);
+    float det = dot(e1_2, p_4);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     vec3 s_2 = (o_1 - a_7);
-    float u_3 = (dot(s_2, p_3) * inv);
+    float u_3 = (dot(s_2, p_4) * inv);
     if (!((u_3 < 0.0))) {
         local_9 = (u_3 > 1.0);
     } else {
@@ -997,6 +1002,45 @@ vec3 light_normal(GpuLight l_3) {
     return vec3(0.0);
 }
 
+WorkgroupBox workgroup_box(uint li_1, vec3 p_3, bool has) {
+    uint stride = 32u;
+    wg_lo[li_1] = (has ? p_3 : vec3(3e38));
+    wg_hi[li_1] = (has ? p_3 : vec3(-3e38));
+    memoryBarrierShared();
+    barrier();
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e42 = stride;
+            stride = (_e42 / 2u);
+        }
+        loop_init = false;
+        uint _e15 = stride;
+        if ((_e15 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = stride;
+            if ((li_1 < _e18)) {
+                vec3 _e24 = wg_lo[li_1];
+                uint _e26 = stride;
+                vec3 _e29 = wg_lo[(li_1 + _e26)];
+                wg_lo[li_1] = min(_e24, _e29);
+                vec3 _e35 = wg_hi[li_1];
+                uint _e37 = stride;
+                vec3 _e40 = wg_hi[(li_1 + _e37)];
+                wg_hi[li_1] = max(_e35, _e40);
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    vec3 _e47 = wg_lo[0];
+    vec3 _e50 = wg_hi[0];
+    return WorkgroupBox(_e47, _e50);
+}
+
 void main() {
     if (gl_LocalInvocationID == uvec3(0u)) {
         wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
@@ -1013,7 +1057,6 @@ void main() {
     vec4 pos = vec4(0.0);
     vec3 nrm = vec3(0.0);
     bool local_1 = false;
-    uint stride = 32u;
     vec3 e = vec3(0.0);
     uint kept = 0u;
     uint first = 0u;
@@ -1047,54 +1090,22 @@ void main() {
         local_1 = false;
     }
     bool valid = local_1;
-    vec4 _e55 = pos;
-    wg_lo[li] = (valid ? _e55.xyz : vec3(3e38));
-    vec4 _e62 = pos;
-    wg_hi[li] = (valid ? _e62.xyz : vec3(-3e38));
-    memoryBarrierShared();
-    barrier();
-    bool loop_init = true;
-    while(true) {
-        if (!loop_init) {
-            uint _e94 = stride;
-            stride = (_e94 / 2u);
-        }
-        loop_init = false;
-        uint _e67 = stride;
-        if ((_e67 > 0u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e70 = stride;
-            if ((li < _e70)) {
-                vec3 _e76 = wg_lo[li];
-                uint _e78 = stride;
-                vec3 _e81 = wg_lo[(li + _e78)];
-                wg_lo[li] = min(_e76, _e81);
-                vec3 _e87 = wg_hi[li];
-                uint _e89 = stride;
-                vec3 _e92 = wg_hi[(li + _e89)];
-                wg_hi[li] = max(_e87, _e92);
-            }
-            memoryBarrierShared();
-            barrier();
-        }
-    }
-    vec3 lo_4 = wg_lo[0];
-    vec3 hi_4 = wg_hi[0];
-    float _e105 = _group_0_binding_0_cs.near_r2_;
-    float _e106 = cull_radius(_e105);
+    vec4 _e51 = pos;
+    WorkgroupBox _e53 = workgroup_box(li, _e51.xyz, valid);
+    vec3 lo_4 = _e53.lo;
+    vec3 hi_4 = _e53.hi;
+    float _e58 = _group_0_binding_0_cs.near_r2_;
+    float _e59 = cull_radius(_e58);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e229 = first;
-            first = (_e229 + NEAR_CHUNK);
+            uint _e182 = first;
+            first = (_e182 + NEAR_CHUNK);
         }
         loop_init_1 = false;
-        uint _e115 = first;
-        uint _e118 = _group_0_binding_0_cs.near_blocks;
-        if ((_e115 < _e118)) {
+        uint _e68 = first;
+        uint _e71 = _group_0_binding_0_cs.near_blocks;
+        if ((_e68 < _e71)) {
         } else {
             break;
         }
@@ -1104,51 +1115,51 @@ void main() {
             }
             memoryBarrierShared();
             barrier();
-            uint _e124 = first;
-            uint b_8 = (_e124 + li);
+            uint _e77 = first;
+            uint b_8 = (_e77 + li);
             if ((li < NEAR_CHUNK)) {
-                uint _e132 = _group_0_binding_0_cs.near_blocks;
-                local_2 = (b_8 < _e132);
+                uint _e85 = _group_0_binding_0_cs.near_blocks;
+                local_2 = (b_8 < _e85);
             } else {
                 local_2 = false;
             }
-            bool _e135 = local_2;
-            if (_e135) {
+            bool _e88 = local_2;
+            if (_e88) {
                 GpuNearBox nb = _group_0_binding_5_cs[b_8];
-                if (all(lessThanEqual((nb.lo - vec3(_e106)), hi_4))) {
-                    local_3 = all(lessThanEqual(lo_4, (nb.hi + vec3(_e106))));
+                if (all(lessThanEqual((nb.lo - vec3(_e59)), hi_4))) {
+                    local_3 = all(lessThanEqual(lo_4, (nb.hi + vec3(_e59))));
                 } else {
                     local_3 = false;
                 }
-                bool _e152 = local_3;
-                if (_e152) {
+                bool _e105 = local_3;
+                if (_e105) {
                     m = 0u;
                     bool loop_init_2 = true;
                     while(true) {
                         if (!loop_init_2) {
-                            uint _e185 = m;
-                            m = (_e185 + 1u);
+                            uint _e138 = m;
+                            m = (_e138 + 1u);
                         }
                         loop_init_2 = false;
-                        uint _e155 = m;
-                        if ((_e155 < NEAR_BLOCK)) {
+                        uint _e108 = m;
+                        if ((_e108 < NEAR_BLOCK)) {
                         } else {
                             break;
                         }
                         {
-                            uint _e161 = m;
-                            uint slot = _group_0_binding_4_cs[((b_8 * NEAR_BLOCK) + _e161)];
+                            uint _e114 = m;
+                            uint slot = _group_0_binding_4_cs[((b_8 * NEAR_BLOCK) + _e114)];
                             GpuLight l_4 = _group_0_binding_3_cs[slot];
                             if (any(notEqual(l_4.intensity, vec3(0.0)))) {
-                                bool _e176 = sphere_overlaps_aabb(l_4.p0_, _e106, lo_4, hi_4);
-                                local_4 = _e176;
+                                bool _e129 = sphere_overlaps_aabb(l_4.p0_, _e59, lo_4, hi_4);
+                                local_4 = _e129;
                             } else {
                                 local_4 = false;
                             }
-                            bool _e178 = local_4;
-                            if (_e178) {
-                                uint _e182 = atomicAdd(light_count, 1u);
-                                light_list[_e182] = slot;
+                            bool _e131 = local_4;
+                            if (_e131) {
+                                uint _e135 = atomicAdd(light_count, 1u);
+                                light_list[_e135] = slot;
                             }
                         }
                     }
@@ -1156,7 +1167,7 @@ void main() {
             }
             memoryBarrierShared();
             barrier();
-            uint _e188 = light_count;
+            uint _e141 = light_count;
             memoryBarrierShared();
             barrier();
             if (valid) {
@@ -1164,31 +1175,31 @@ void main() {
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e227 = m_1;
-                        m_1 = (_e227 + 1u);
+                        uint _e180 = m_1;
+                        m_1 = (_e180 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e191 = m_1;
-                    if ((_e191 < _e188)) {
+                    uint _e144 = m_1;
+                    if ((_e144 < _e141)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e195 = m_1;
-                        uint _e197 = light_list[_e195];
-                        GpuLight l_5 = _group_0_binding_3_cs[_e197];
-                        vec4 _e200 = pos;
-                        vec3 v_10 = (_e200.xyz - l_5.p0_);
-                        float _e207 = _group_0_binding_0_cs.near_r2_;
-                        float _e208 = vpl_near_weight(dot(v_10, v_10), _e207);
-                        if ((_e208 > 0.0)) {
-                            vec3 _e211 = e;
-                            vec3 _e214 = nrm;
-                            float _e217 = _group_0_binding_0_cs.min_d2_;
-                            float _e218 = vpl_transfer(l_5.p1_, _e214, v_10, _e217);
-                            e = (_e211 + (l_5.intensity * ((_e218 * _e208) * 0.015625)));
-                            uint _e223 = kept;
-                            kept = (_e223 + 1u);
+                        uint _e148 = m_1;
+                        uint _e150 = light_list[_e148];
+                        GpuLight l_5 = _group_0_binding_3_cs[_e150];
+                        vec4 _e153 = pos;
+                        vec3 v_10 = (_e153.xyz - l_5.p0_);
+                        float _e160 = _group_0_binding_0_cs.near_r2_;
+                        float _e161 = vpl_near_weight(dot(v_10, v_10), _e160);
+                        if ((_e161 > 0.0)) {
+                            vec3 _e164 = e;
+                            vec3 _e167 = nrm;
+                            float _e170 = _group_0_binding_0_cs.min_d2_;
+                            float _e171 = vpl_transfer(l_5.p1_, _e167, v_10, _e170);
+                            e = (_e164 + (l_5.intensity * ((_e171 * _e161) * 0.015625)));
+                            uint _e176 = kept;
+                            kept = (_e176 + 1u);
                         }
                     }
                 }
@@ -1199,9 +1210,9 @@ void main() {
     }
     if (valid) {
         vec4 old = _group_0_binding_6_cs[pix];
-        vec3 _e238 = e;
-        uint _e241 = kept;
-        _group_0_binding_6_cs[pix] = vec4((old.xyz + _e238), (old.w + float(_e241)));
+        vec3 _e191 = e;
+        uint _e194 = kept;
+        _group_0_binding_6_cs[pix] = vec4((old.xyz + _e191), (old.w + float(_e194)));
         return;
     } else {
         return;

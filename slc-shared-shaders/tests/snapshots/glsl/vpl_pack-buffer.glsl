@@ -184,6 +184,10 @@ struct BshNode {
     uint light;
     uint pad;
 };
+struct WorkgroupBox {
+    vec3 lo;
+    vec3 hi;
+};
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
 const uint LIGHT_IES = 2u;
@@ -208,6 +212,7 @@ const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
 const uint NEAR_BLOCK = 64u;
 const uint P = 8u;
+const uint BOX_THREADS = 64u;
 
 layout(std140) uniform PackParams_block_0Compute { PackParams _group_0_binding_0_cs; };
 
@@ -562,21 +567,21 @@ uint mul_hi_u32_(uint a_4, uint b_3) {
     return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid >> 16u));
 }
 
-uint uniform_index(uint n_3, uint hi_2, uint lo_2) {
-    uint _e3 = mul_lo_u32_(hi_2, n_3);
-    uint _e4 = mul_hi_u32_(hi_2, n_3);
-    uint _e5 = mul_hi_u32_(lo_2, n_3);
+uint uniform_index(uint n_3, uint hi_1, uint lo_1) {
+    uint _e3 = mul_lo_u32_(hi_1, n_3);
+    uint _e4 = mul_hi_u32_(hi_1, n_3);
+    uint _e5 = mul_hi_u32_(lo_1, n_3);
     if ((_e3 > (4294967295u - _e5))) {
         return (_e4 + 1u);
     }
     return _e4;
 }
 
-uint reservoir_slot(uint n_4, uint k, uint hi_3, uint lo_3) {
+uint reservoir_slot(uint n_4, uint k, uint hi_2, uint lo_2) {
     if ((n_4 <= k)) {
         return (n_4 - 1u);
     }
-    uint _e7 = uniform_index(n_4, hi_3, lo_3);
+    uint _e7 = uniform_index(n_4, hi_2, lo_2);
     if ((_e7 < k)) {
         return _e7;
     }
@@ -686,10 +691,10 @@ float bvh_remap_u(float u_2, float p0_, bool first) {
 float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
     vec3 t0_ = ((bmin_1 - o) * inv_d);
     vec3 t1_ = ((bmax_1 - o) * inv_d);
-    vec3 lo_4 = min(t0_, t1_);
-    vec3 hi_4 = max(t0_, t1_);
-    float t_in = max(max(lo_4.x, lo_4.y), max(lo_4.z, 0.0));
-    float t_out = min(min(hi_4.x, hi_4.y), min(hi_4.z, t_max));
+    vec3 lo_3 = min(t0_, t1_);
+    vec3 hi_3 = max(t0_, t1_);
+    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
+    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
     if ((t_in <= t_out)) {
         return t_in;
     }
@@ -755,14 +760,14 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
     bool local_7 = false;
     vec3 e1_2 = (b_6 - a_7);
     vec3 e2_2 = (c_8 - a_7);
-    vec3 p_3 = cross(d, e2_2);
-    float det = dot(e1_2, p_3);
+    vec3 p_4 = cross(d, e2_2);
+    float det = dot(e1_2, p_4);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     vec3 s_2 = (o_1 - a_7);
-    float u_3 = (dot(s_2, p_3) * inv);
+    float u_3 = (dot(s_2, p_4) * inv);
     if (!((u_3 < 0.0))) {
         local_5 = (u_3 > 1.0);
     } else {
@@ -968,6 +973,45 @@ vec3 diffuse_radiance(vec3 albedo, vec3 emission, vec3 e_1) {
     return (emission + ((albedo * INV_PI) * e_1));
 }
 
+WorkgroupBox workgroup_box(uint li_1, vec3 p_3, bool has) {
+    uint stride = 32u;
+    wg_lo[li_1] = (has ? p_3 : vec3(3e38));
+    wg_hi[li_1] = (has ? p_3 : vec3(-3e38));
+    memoryBarrierShared();
+    barrier();
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e42 = stride;
+            stride = (_e42 / 2u);
+        }
+        loop_init = false;
+        uint _e15 = stride;
+        if ((_e15 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = stride;
+            if ((li_1 < _e18)) {
+                vec3 _e24 = wg_lo[li_1];
+                uint _e26 = stride;
+                vec3 _e29 = wg_lo[(li_1 + _e26)];
+                wg_lo[li_1] = min(_e24, _e29);
+                vec3 _e35 = wg_hi[li_1];
+                uint _e37 = stride;
+                vec3 _e40 = wg_hi[(li_1 + _e37)];
+                wg_hi[li_1] = max(_e35, _e40);
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    vec3 _e47 = wg_lo[0];
+    vec3 _e50 = wg_hi[0];
+    return WorkgroupBox(_e47, _e50);
+}
+
 void main() {
     if (gl_LocalInvocationID == uvec3(0u)) {
         wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
@@ -978,82 +1022,46 @@ void main() {
     uvec3 gid = gl_GlobalInvocationID;
     uvec3 wg = gl_WorkGroupID;
     uint li = gl_LocalInvocationIndex;
-    vec3 lo = vec3(3e38);
-    vec3 hi = vec3(-3e38);
-    uint stride = 32u;
+    vec3 position = vec3(0.0);
+    bool lit = false;
     bool local = false;
     uint i_2 = gid.x;
     uint _e6 = _group_0_binding_0_cs.count;
     bool inside = (i_2 < _e6);
     if (inside) {
         GpuVplRecord r_7 = _group_0_binding_1_cs[i_2];
-        vec3 position = r_7.position;
+        position = r_7.position;
         vec3 normal = r_7.normal;
-        float _e22 = _group_0_binding_0_cs.scale;
-        vec3 flux_1 = (r_7.flux * _e22);
-        uint _e26 = _group_0_binding_0_cs.per_subset;
-        uint _e28 = interleave_slot_linear(i_2, _e26, P);
-        _group_0_binding_4_cs[_e28] = GpuLight(position, LIGHT_VPL, normal, 0.0, vec3(0.0), 0.0, flux_1, 0u);
-        _group_0_binding_5_cs[_e28] = i_2;
+        float _e21 = _group_0_binding_0_cs.scale;
+        vec3 flux_1 = (r_7.flux * _e21);
+        uint _e25 = _group_0_binding_0_cs.per_subset;
+        uint _e27 = interleave_slot_linear(i_2, _e25, P);
+        vec3 _e30 = position;
+        _group_0_binding_4_cs[_e27] = GpuLight(_e30, LIGHT_VPL, normal, 0.0, vec3(0.0), 0.0, flux_1, 0u);
+        _group_0_binding_5_cs[_e27] = i_2;
         uint _e42 = _group_0_binding_0_cs.slc;
         bool slc = (_e42 != 0u);
         float _e49 = _group_0_binding_0_cs.exposure;
         float _e52 = _group_0_binding_0_cs.error_bound;
         uint _e55 = _group_0_binding_0_cs.mode;
         float _e56 = vpl_rt2_(flux_1, _e49, _e52, _e55);
-        _group_0_binding_6_cs[_e28] = (slc ? _e56 : 0.0);
+        _group_0_binding_6_cs[_e27] = (slc ? _e56 : 0.0);
         float _e63 = _group_0_binding_0_cs.fixed_r2_;
-        _group_0_binding_7_cs[_e28] = (slc ? 0.0 : _e63);
-        _group_0_binding_8_cs[i_2] = _e28;
-        if (any(notEqual(flux_1, vec3(0.0)))) {
-            lo = position;
-            hi = position;
-        }
+        _group_0_binding_7_cs[_e27] = (slc ? 0.0 : _e63);
+        _group_0_binding_8_cs[i_2] = _e27;
+        lit = any(notEqual(flux_1, vec3(0.0)));
     }
-    vec3 _e74 = lo;
-    wg_lo[li] = _e74;
-    vec3 _e77 = hi;
-    wg_hi[li] = _e77;
-    memoryBarrierShared();
-    barrier();
-    bool loop_init = true;
-    while(true) {
-        if (!loop_init) {
-            uint _e107 = stride;
-            stride = (_e107 / 2u);
-        }
-        loop_init = false;
-        uint _e80 = stride;
-        if ((_e80 > 0u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e83 = stride;
-            if ((li < _e83)) {
-                vec3 _e89 = wg_lo[li];
-                uint _e91 = stride;
-                vec3 _e94 = wg_lo[(li + _e91)];
-                wg_lo[li] = min(_e89, _e94);
-                vec3 _e100 = wg_hi[li];
-                uint _e102 = stride;
-                vec3 _e105 = wg_hi[(li + _e102)];
-                wg_hi[li] = max(_e100, _e105);
-            }
-            memoryBarrierShared();
-            barrier();
-        }
-    }
+    vec3 _e72 = position;
+    bool _e73 = lit;
+    WorkgroupBox _e74 = workgroup_box(li, _e72, _e73);
     if ((li == 0u)) {
         local = inside;
     } else {
         local = false;
     }
-    bool _e115 = local;
-    if (_e115) {
-        vec3 _e121 = wg_lo[0];
-        vec3 _e124 = wg_hi[0];
-        _group_0_binding_9_cs[wg.x] = GpuNearBox(_e121, 0.0, _e124, 0.0);
+    bool _e80 = local;
+    if (_e80) {
+        _group_0_binding_9_cs[wg.x] = GpuNearBox(_e74.lo, 0.0, _e74.hi, 0.0);
         return;
     } else {
         return;

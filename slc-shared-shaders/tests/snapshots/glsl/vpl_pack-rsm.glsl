@@ -184,6 +184,10 @@ struct BshNode {
     uint light;
     uint pad;
 };
+struct WorkgroupBox {
+    vec3 lo;
+    vec3 hi;
+};
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
 const uint LIGHT_IES = 2u;
@@ -208,6 +212,7 @@ const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
 const uint NEAR_BLOCK = 64u;
 const uint P = 8u;
+const uint BOX_THREADS = 64u;
 
 layout(std140) uniform PackParams_block_0Compute { PackParams _group_0_binding_0_cs; };
 
@@ -566,21 +571,21 @@ uint mul_hi_u32_(uint a_4, uint b_3) {
     return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid >> 16u));
 }
 
-uint uniform_index(uint n_3, uint hi_2, uint lo_2) {
-    uint _e3 = mul_lo_u32_(hi_2, n_3);
-    uint _e4 = mul_hi_u32_(hi_2, n_3);
-    uint _e5 = mul_hi_u32_(lo_2, n_3);
+uint uniform_index(uint n_3, uint hi_1, uint lo_1) {
+    uint _e3 = mul_lo_u32_(hi_1, n_3);
+    uint _e4 = mul_hi_u32_(hi_1, n_3);
+    uint _e5 = mul_hi_u32_(lo_1, n_3);
     if ((_e3 > (4294967295u - _e5))) {
         return (_e4 + 1u);
     }
     return _e4;
 }
 
-uint reservoir_slot(uint n_4, uint k, uint hi_3, uint lo_3) {
+uint reservoir_slot(uint n_4, uint k, uint hi_2, uint lo_2) {
     if ((n_4 <= k)) {
         return (n_4 - 1u);
     }
-    uint _e7 = uniform_index(n_4, hi_3, lo_3);
+    uint _e7 = uniform_index(n_4, hi_2, lo_2);
     if ((_e7 < k)) {
         return _e7;
     }
@@ -690,10 +695,10 @@ float bvh_remap_u(float u_2, float p0_, bool first) {
 float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
     vec3 t0_ = ((bmin_1 - o) * inv_d);
     vec3 t1_ = ((bmax_1 - o) * inv_d);
-    vec3 lo_4 = min(t0_, t1_);
-    vec3 hi_4 = max(t0_, t1_);
-    float t_in = max(max(lo_4.x, lo_4.y), max(lo_4.z, 0.0));
-    float t_out = min(min(hi_4.x, hi_4.y), min(hi_4.z, t_max));
+    vec3 lo_3 = min(t0_, t1_);
+    vec3 hi_3 = max(t0_, t1_);
+    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
+    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
     if ((t_in <= t_out)) {
         return t_in;
     }
@@ -759,14 +764,14 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
     bool local_7 = false;
     vec3 e1_2 = (b_6 - a_7);
     vec3 e2_2 = (c_8 - a_7);
-    vec3 p_3 = cross(d, e2_2);
-    float det = dot(e1_2, p_3);
+    vec3 p_4 = cross(d, e2_2);
+    float det = dot(e1_2, p_4);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     vec3 s_2 = (o_1 - a_7);
-    float u_3 = (dot(s_2, p_3) * inv);
+    float u_3 = (dot(s_2, p_4) * inv);
     if (!((u_3 < 0.0))) {
         local_5 = (u_3 > 1.0);
     } else {
@@ -972,6 +977,45 @@ vec3 diffuse_radiance(vec3 albedo, vec3 emission, vec3 e_1) {
     return (emission + ((albedo * INV_PI) * e_1));
 }
 
+WorkgroupBox workgroup_box(uint li_1, vec3 p_3, bool has) {
+    uint stride = 32u;
+    wg_lo[li_1] = (has ? p_3 : vec3(3e38));
+    wg_hi[li_1] = (has ? p_3 : vec3(-3e38));
+    memoryBarrierShared();
+    barrier();
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e42 = stride;
+            stride = (_e42 / 2u);
+        }
+        loop_init = false;
+        uint _e15 = stride;
+        if ((_e15 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = stride;
+            if ((li_1 < _e18)) {
+                vec3 _e24 = wg_lo[li_1];
+                uint _e26 = stride;
+                vec3 _e29 = wg_lo[(li_1 + _e26)];
+                wg_lo[li_1] = min(_e24, _e29);
+                vec3 _e35 = wg_hi[li_1];
+                uint _e37 = stride;
+                vec3 _e40 = wg_hi[(li_1 + _e37)];
+                wg_hi[li_1] = max(_e35, _e40);
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    vec3 _e47 = wg_lo[0];
+    vec3 _e50 = wg_hi[0];
+    return WorkgroupBox(_e47, _e50);
+}
+
 void main() {
     if (gl_LocalInvocationID == uvec3(0u)) {
         wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
@@ -982,91 +1026,55 @@ void main() {
     uvec3 gid = gl_GlobalInvocationID;
     uvec3 wg = gl_WorkGroupID;
     uint li = gl_LocalInvocationIndex;
-    vec3 lo = vec3(3e38);
-    vec3 hi = vec3(-3e38);
-    uint stride = 32u;
+    vec3 position = vec3(0.0);
+    bool lit = false;
     bool local = false;
     uint q_6 = gid.x;
     uint _e6 = _group_0_binding_0_cs.count;
     bool inside = (q_6 < _e6);
     if (inside) {
-        uint _e16 = _group_0_binding_0_cs.size;
-        uint _e17 = near_block_tx(q_6, _e16);
-        uint _e20 = _group_0_binding_0_cs.size;
-        uint _e21 = near_block_ty(q_6, _e20);
-        uint _e24 = _group_0_binding_0_cs.size;
-        uint i_2 = ((_e21 * _e24) + _e17);
-        ivec2 texel_1 = ivec2(int(_e17), int(_e21));
-        vec4 _e32 = texelFetch(_group_0_binding_1_cs, texel_1, 0);
-        vec3 position = _e32.xyz;
-        vec4 _e36 = texelFetch(_group_0_binding_2_cs, texel_1, 0);
-        vec3 normal = _e36.xyz;
-        vec4 _e40 = texelFetch(_group_0_binding_3_cs, texel_1, 0);
-        float _e44 = _group_0_binding_0_cs.scale;
-        vec3 flux_1 = (_e40.xyz * _e44);
-        uint _e48 = _group_0_binding_0_cs.size;
-        uint _e50 = interleave_slot(_e17, _e21, _e48, P);
-        _group_0_binding_4_cs[_e50] = GpuLight(position, LIGHT_VPL, normal, 0.0, vec3(0.0), 0.0, flux_1, 0u);
-        _group_0_binding_5_cs[_e50] = i_2;
+        uint _e15 = _group_0_binding_0_cs.size;
+        uint _e16 = near_block_tx(q_6, _e15);
+        uint _e19 = _group_0_binding_0_cs.size;
+        uint _e20 = near_block_ty(q_6, _e19);
+        uint _e23 = _group_0_binding_0_cs.size;
+        uint i_2 = ((_e20 * _e23) + _e16);
+        ivec2 texel_1 = ivec2(int(_e16), int(_e20));
+        vec4 _e31 = texelFetch(_group_0_binding_1_cs, texel_1, 0);
+        position = _e31.xyz;
+        vec4 _e35 = texelFetch(_group_0_binding_2_cs, texel_1, 0);
+        vec3 normal = _e35.xyz;
+        vec4 _e39 = texelFetch(_group_0_binding_3_cs, texel_1, 0);
+        float _e43 = _group_0_binding_0_cs.scale;
+        vec3 flux_1 = (_e39.xyz * _e43);
+        uint _e47 = _group_0_binding_0_cs.size;
+        uint _e49 = interleave_slot(_e16, _e20, _e47, P);
+        vec3 _e52 = position;
+        _group_0_binding_4_cs[_e49] = GpuLight(_e52, LIGHT_VPL, normal, 0.0, vec3(0.0), 0.0, flux_1, 0u);
+        _group_0_binding_5_cs[_e49] = i_2;
         uint _e64 = _group_0_binding_0_cs.slc;
         bool slc = (_e64 != 0u);
         float _e71 = _group_0_binding_0_cs.exposure;
         float _e74 = _group_0_binding_0_cs.error_bound;
         uint _e77 = _group_0_binding_0_cs.mode;
         float _e78 = vpl_rt2_(flux_1, _e71, _e74, _e77);
-        _group_0_binding_6_cs[_e50] = (slc ? _e78 : 0.0);
+        _group_0_binding_6_cs[_e49] = (slc ? _e78 : 0.0);
         float _e85 = _group_0_binding_0_cs.fixed_r2_;
-        _group_0_binding_7_cs[_e50] = (slc ? 0.0 : _e85);
-        _group_0_binding_8_cs[q_6] = _e50;
-        if (any(notEqual(flux_1, vec3(0.0)))) {
-            lo = position;
-            hi = position;
-        }
+        _group_0_binding_7_cs[_e49] = (slc ? 0.0 : _e85);
+        _group_0_binding_8_cs[q_6] = _e49;
+        lit = any(notEqual(flux_1, vec3(0.0)));
     }
-    vec3 _e96 = lo;
-    wg_lo[li] = _e96;
-    vec3 _e99 = hi;
-    wg_hi[li] = _e99;
-    memoryBarrierShared();
-    barrier();
-    bool loop_init = true;
-    while(true) {
-        if (!loop_init) {
-            uint _e129 = stride;
-            stride = (_e129 / 2u);
-        }
-        loop_init = false;
-        uint _e102 = stride;
-        if ((_e102 > 0u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e105 = stride;
-            if ((li < _e105)) {
-                vec3 _e111 = wg_lo[li];
-                uint _e113 = stride;
-                vec3 _e116 = wg_lo[(li + _e113)];
-                wg_lo[li] = min(_e111, _e116);
-                vec3 _e122 = wg_hi[li];
-                uint _e124 = stride;
-                vec3 _e127 = wg_hi[(li + _e124)];
-                wg_hi[li] = max(_e122, _e127);
-            }
-            memoryBarrierShared();
-            barrier();
-        }
-    }
+    vec3 _e94 = position;
+    bool _e95 = lit;
+    WorkgroupBox _e96 = workgroup_box(li, _e94, _e95);
     if ((li == 0u)) {
         local = inside;
     } else {
         local = false;
     }
-    bool _e137 = local;
-    if (_e137) {
-        vec3 _e143 = wg_lo[0];
-        vec3 _e146 = wg_hi[0];
-        _group_0_binding_9_cs[wg.x] = GpuNearBox(_e143, 0.0, _e146, 0.0);
+    bool _e102 = local;
+    if (_e102) {
+        _group_0_binding_9_cs[wg.x] = GpuNearBox(_e96.lo, 0.0, _e96.hi, 0.0);
         return;
     } else {
         return;

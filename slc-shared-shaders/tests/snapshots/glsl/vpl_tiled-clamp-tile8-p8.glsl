@@ -184,6 +184,10 @@ struct BshNode {
     uint light;
     uint pad;
 };
+struct WorkgroupBox {
+    vec3 lo;
+    vec3 hi;
+};
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
 const uint LIGHT_IES = 2u;
@@ -210,23 +214,24 @@ const uint NEAR_BLOCK = 64u;
 const uint P = 8u;
 const uint TILE = 8u;
 const uint THREADS = 64u;
+const uint BOX_THREADS = 64u;
 const uint MAX_TILE_LIGHTS = 1024u;
-
-layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
-
-layout(std430) readonly buffer type_6_block_1Compute { vec4 _group_0_binding_1_cs[]; };
-
-layout(std430) readonly buffer type_6_block_2Compute { vec4 _group_0_binding_2_cs[]; };
-
-layout(std430) readonly buffer type_7_block_3Compute { GpuLight _group_0_binding_3_cs[]; };
-
-layout(std430) readonly buffer type_4_block_4Compute { float _group_0_binding_5_cs[]; };
-
-layout(std430) buffer type_6_block_5Compute { vec4 _group_0_binding_6_cs[]; };
 
 shared vec3 wg_lo[64];
 
 shared vec3 wg_hi[64];
+
+layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
+
+layout(std430) readonly buffer type_7_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+
+layout(std430) readonly buffer type_7_block_2Compute { vec4 _group_0_binding_2_cs[]; };
+
+layout(std430) readonly buffer type_8_block_3Compute { GpuLight _group_0_binding_3_cs[]; };
+
+layout(std430) readonly buffer type_4_block_4Compute { float _group_0_binding_5_cs[]; };
+
+layout(std430) buffer type_7_block_5Compute { vec4 _group_0_binding_6_cs[]; };
 
 shared uint tile_count;
 
@@ -758,14 +763,14 @@ float ray_triangle(vec3 o_1, vec3 d, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, 
     bool local_9 = false;
     vec3 e1_2 = (b_6 - a_7);
     vec3 e2_2 = (c_8 - a_7);
-    vec3 p_3 = cross(d, e2_2);
-    float det = dot(e1_2, p_3);
+    vec3 p_4 = cross(d, e2_2);
+    float det = dot(e1_2, p_4);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     vec3 s_2 = (o_1 - a_7);
-    float u_3 = (dot(s_2, p_3) * inv);
+    float u_3 = (dot(s_2, p_4) * inv);
     if (!((u_3 < 0.0))) {
         local_7 = (u_3 > 1.0);
     } else {
@@ -995,6 +1000,45 @@ vec3 light_normal(GpuLight l_3) {
     return vec3(0.0);
 }
 
+WorkgroupBox workgroup_box(uint li_1, vec3 p_3, bool has) {
+    uint stride = 32u;
+    wg_lo[li_1] = (has ? p_3 : vec3(3e38));
+    wg_hi[li_1] = (has ? p_3 : vec3(-3e38));
+    memoryBarrierShared();
+    barrier();
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e42 = stride;
+            stride = (_e42 / 2u);
+        }
+        loop_init = false;
+        uint _e15 = stride;
+        if ((_e15 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = stride;
+            if ((li_1 < _e18)) {
+                vec3 _e24 = wg_lo[li_1];
+                uint _e26 = stride;
+                vec3 _e29 = wg_lo[(li_1 + _e26)];
+                wg_lo[li_1] = min(_e24, _e29);
+                vec3 _e35 = wg_hi[li_1];
+                uint _e37 = stride;
+                vec3 _e40 = wg_hi[(li_1 + _e37)];
+                wg_hi[li_1] = max(_e35, _e40);
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    vec3 _e47 = wg_lo[0];
+    vec3 _e50 = wg_hi[0];
+    return WorkgroupBox(_e47, _e50);
+}
+
 void main() {
     if (gl_LocalInvocationID == uvec3(0u)) {
         wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
@@ -1011,7 +1055,6 @@ void main() {
     vec4 pos = vec4(0.0);
     vec3 nrm = vec3(0.0);
     bool local_1 = false;
-    uint stride = 32u;
     vec3 e = vec3(0.0);
     uint kept = 0u;
     uint first = 0u;
@@ -1044,141 +1087,109 @@ void main() {
         local_1 = false;
     }
     bool valid = local_1;
-    vec4 _e66 = pos;
-    wg_lo[li] = (valid ? _e66.xyz : vec3(3e38));
-    vec4 _e73 = pos;
-    wg_hi[li] = (valid ? _e73.xyz : vec3(-3e38));
-    memoryBarrierShared();
-    barrier();
-    bool loop_init = true;
-    while(true) {
-        if (!loop_init) {
-            uint _e105 = stride;
-            stride = (_e105 / 2u);
-        }
-        loop_init = false;
-        uint _e78 = stride;
-        if ((_e78 > 0u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e81 = stride;
-            if ((li < _e81)) {
-                vec3 _e87 = wg_lo[li];
-                uint _e89 = stride;
-                vec3 _e92 = wg_lo[(li + _e89)];
-                wg_lo[li] = min(_e87, _e92);
-                vec3 _e98 = wg_hi[li];
-                uint _e100 = stride;
-                vec3 _e103 = wg_hi[(li + _e100)];
-                wg_hi[li] = max(_e98, _e103);
-            }
-            memoryBarrierShared();
-            barrier();
-        }
-    }
-    vec3 lo_4 = wg_lo[0];
-    vec3 hi_4 = wg_hi[0];
-    uint _e116 = _group_0_binding_0_cs.lights_per_subset;
-    uint base_3 = (sub * _e116);
+    vec4 _e62 = pos;
+    WorkgroupBox _e64 = workgroup_box(li, _e62.xyz, valid);
+    vec3 lo_4 = _e64.lo;
+    vec3 hi_4 = _e64.hi;
+    uint _e69 = _group_0_binding_0_cs.lights_per_subset;
+    uint base_3 = (sub * _e69);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e222 = first;
-            first = (_e222 + MAX_TILE_LIGHTS);
+            uint _e175 = first;
+            first = (_e175 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
-        uint _e125 = first;
-        uint _e128 = _group_0_binding_0_cs.lights_per_subset;
-        if ((_e125 < _e128)) {
+        uint _e78 = first;
+        uint _e81 = _group_0_binding_0_cs.lights_per_subset;
+        if ((_e78 < _e81)) {
         } else {
             break;
         }
         {
-            uint _e130 = first;
-            uint _e135 = _group_0_binding_0_cs.lights_per_subset;
-            uint end = min((_e130 + MAX_TILE_LIGHTS), _e135);
+            uint _e83 = first;
+            uint _e88 = _group_0_binding_0_cs.lights_per_subset;
+            uint end = min((_e83 + MAX_TILE_LIGHTS), _e88);
             if ((li == 0u)) {
                 atomicExchange(tile_count, 0u);
             }
             memoryBarrierShared();
             barrier();
-            uint _e141 = first;
-            j = (_e141 + li);
+            uint _e94 = first;
+            j = (_e94 + li);
             bool loop_init_2 = true;
             while(true) {
                 if (!loop_init_2) {
-                    uint _e167 = j;
-                    j = (_e167 + THREADS);
+                    uint _e120 = j;
+                    j = (_e120 + THREADS);
                 }
                 loop_init_2 = false;
-                uint _e144 = j;
-                if ((_e144 < end)) {
+                uint _e97 = j;
+                if ((_e97 < end)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e147 = j;
-                    vec3 _e151 = _group_0_binding_3_cs[(base_3 + _e147)].p0_;
-                    uint _e153 = j;
-                    float _e156 = _group_0_binding_5_cs[(base_3 + _e153)];
-                    float _e157 = cull_radius(_e156);
-                    bool _e158 = sphere_overlaps_aabb(_e151, _e157, lo_4, hi_4);
-                    if (_e158) {
-                        uint _e161 = atomicAdd(tile_count, 1u);
-                        if ((_e161 < MAX_TILE_LIGHTS)) {
-                            uint _e166 = j;
-                            tile_lights[_e161] = _e166;
+                    uint _e100 = j;
+                    vec3 _e104 = _group_0_binding_3_cs[(base_3 + _e100)].p0_;
+                    uint _e106 = j;
+                    float _e109 = _group_0_binding_5_cs[(base_3 + _e106)];
+                    float _e110 = cull_radius(_e109);
+                    bool _e111 = sphere_overlaps_aabb(_e104, _e110, lo_4, hi_4);
+                    if (_e111) {
+                        uint _e114 = atomicAdd(tile_count, 1u);
+                        if ((_e114 < MAX_TILE_LIGHTS)) {
+                            uint _e119 = j;
+                            tile_lights[_e114] = _e119;
                         }
                     }
                 }
             }
             memoryBarrierShared();
             barrier();
-            uint _e171 = tile_count;
+            uint _e124 = tile_count;
             memoryBarrierShared();
             barrier();
-            uint count = min(_e171, MAX_TILE_LIGHTS);
+            uint count = min(_e124, MAX_TILE_LIGHTS);
             if (valid) {
                 k = 0u;
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e220 = k;
-                        k = (_e220 + 1u);
+                        uint _e173 = k;
+                        k = (_e173 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e176 = k;
-                    if ((_e176 < count)) {
+                    uint _e129 = k;
+                    if ((_e129 < count)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e179 = k;
-                        uint _e181 = tile_lights[_e179];
-                        uint j_1 = (base_3 + _e181);
+                        uint _e132 = k;
+                        uint _e134 = tile_lights[_e132];
+                        uint j_1 = (base_3 + _e134);
                         GpuLight l_4 = _group_0_binding_3_cs[j_1];
-                        vec4 _e186 = pos;
-                        vec3 v_10 = (_e186.xyz - l_4.p0_);
-                        vec3 _e191 = nrm;
-                        float _e194 = _group_0_binding_0_cs.min_d2_;
-                        float _e195 = vpl_transfer(l_4.p1_, _e191, v_10, _e194);
+                        vec4 _e139 = pos;
+                        vec3 v_10 = (_e139.xyz - l_4.p0_);
+                        vec3 _e144 = nrm;
+                        float _e147 = _group_0_binding_0_cs.min_d2_;
+                        float _e148 = vpl_transfer(l_4.p1_, _e144, v_10, _e147);
                         float d2_13 = dot(v_10, v_10);
-                        float _e199 = _group_0_binding_0_cs.near_r2_;
-                        float _e200 = vpl_far_weight(d2_13, _e199);
-                        float _e203 = _group_0_binding_5_cs[j_1];
-                        if ((d2_13 < _e203)) {
-                            local_2 = (_e200 > 0.0);
+                        float _e152 = _group_0_binding_0_cs.near_r2_;
+                        float _e153 = vpl_far_weight(d2_13, _e152);
+                        float _e156 = _group_0_binding_5_cs[j_1];
+                        if ((d2_13 < _e156)) {
+                            local_2 = (_e153 > 0.0);
                         } else {
                             local_2 = false;
                         }
-                        bool _e210 = local_2;
-                        if (_e210) {
-                            vec3 _e211 = e;
-                            e = (_e211 + (l_4.intensity * (_e195 * _e200)));
-                            uint _e216 = kept;
-                            kept = (_e216 + 1u);
+                        bool _e163 = local_2;
+                        if (_e163) {
+                            vec3 _e164 = e;
+                            e = (_e164 + (l_4.intensity * (_e148 * _e153)));
+                            uint _e169 = kept;
+                            kept = (_e169 + 1u);
                         }
                     }
                 }
@@ -1188,9 +1199,9 @@ void main() {
         }
     }
     if (valid) {
-        vec3 _e227 = e;
-        uint _e228 = kept;
-        _group_0_binding_6_cs[pix] = vec4(_e227, float(_e228));
+        vec3 _e180 = e;
+        uint _e181 = kept;
+        _group_0_binding_6_cs[pix] = vec4(_e180, float(_e181));
         return;
     } else {
         return;

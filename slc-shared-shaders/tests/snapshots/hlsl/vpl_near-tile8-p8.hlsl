@@ -199,6 +199,13 @@ struct BshNode {
     uint pad;
 };
 
+struct WorkgroupBox {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    int _end_pad_0;
+};
+
 static const uint LIGHT_POINT = 0u;
 static const uint LIGHT_SPOT = 1u;
 static const uint LIGHT_IES = 2u;
@@ -225,9 +232,12 @@ static const uint NEAR_BLOCK = 64u;
 static const uint P = 8u;
 static const uint TILE = 8u;
 static const uint THREADS = 64u;
+static const uint BOX_THREADS = 64u;
 static const uint NEAR_CHUNK = 32u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
+groupshared float3 wg_lo[64];
+groupshared float3 wg_hi[64];
 cbuffer params : register(b0) { VplParams params; }
 ByteAddressBuffer gb_position : register(t1);
 ByteAddressBuffer gb_normal : register(t2);
@@ -235,8 +245,6 @@ ByteAddressBuffer lights : register(t3);
 ByteAddressBuffer near_slots : register(t4);
 ByteAddressBuffer near_boxes : register(t5);
 RWByteAddressBuffer irradiance : register(u6);
-groupshared float3 wg_lo[64];
-groupshared float3 wg_hi[64];
 groupshared uint light_count;
 groupshared uint light_list[2048];
 
@@ -929,14 +937,14 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
 
     float3 e1_2 = (b_6 - a_7);
     float3 e2_2 = (c_8 - a_7);
-    float3 p_3 = cross(d, e2_2);
-    float det = dot(e1_2, p_3);
+    float3 p_4 = cross(d, e2_2);
+    float det = dot(e1_2, p_4);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     float3 s_2 = (o_1 - a_7);
-    float u_3 = (dot(s_2, p_3) * inv);
+    float u_3 = (dot(s_2, p_4) * inv);
     if (!((u_3 < 0.0))) {
         local_9 = (u_3 > 1.0);
     } else {
@@ -1206,6 +1214,56 @@ float3 light_normal(GpuLight l_3)
     return (0.0).xxx;
 }
 
+WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
+    WorkgroupBox ret = (WorkgroupBox)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    return ret;
+}
+
+WorkgroupBox workgroup_box(uint li_1, float3 p_3, bool has)
+{
+    uint stride = 32u;
+
+    wg_lo[min(uint(li_1), 63u)] = (has ? p_3 : (3e38).xxx);
+    wg_hi[min(uint(li_1), 63u)] = (has ? p_3 : (-3e38).xxx);
+    GroupMemoryBarrierWithGroupSync();
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e42 = stride;
+            stride = naga_div(_e42, 2u);
+        }
+        loop_init = false;
+        uint _e15 = stride;
+        if ((_e15 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = stride;
+            if ((li_1 < _e18)) {
+                float3 _e24 = wg_lo[min(uint(li_1), 63u)];
+                uint _e26 = stride;
+                float3 _e29 = wg_lo[min(uint((li_1 + _e26)), 63u)];
+                wg_lo[min(uint(li_1), 63u)] = min(_e24, _e29);
+                float3 _e35 = wg_hi[min(uint(li_1), 63u)];
+                uint _e37 = stride;
+                float3 _e40 = wg_hi[min(uint((li_1 + _e37)), 63u)];
+                wg_hi[min(uint(li_1), 63u)] = max(_e35, _e40);
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    float3 _e47 = wg_lo[0];
+    float3 _e50 = wg_hi[0];
+    const WorkgroupBox workgroupbox = ConstructWorkgroupBox(_e47, _e50);
+    return workgroupbox;
+}
+
 GpuNearBox ConstructGpuNearBox(float3 arg0, float arg1, float3 arg2, float arg3) {
     GpuNearBox ret = (GpuNearBox)0;
     ret.lo = arg0;
@@ -1242,7 +1300,6 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     float4 pos = (0.0).xxxx;
     float3 nrm = (0.0).xxx;
     bool local_1 = (bool)0;
-    uint stride = 32u;
     float3 e = (0.0).xxx;
     uint kept = 0u;
     uint first = 0u;
@@ -1277,58 +1334,25 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         local_1 = false;
     }
     bool valid = local_1;
-    float4 _e55 = pos;
-    wg_lo[min(uint(li), 63u)] = (valid ? _e55.xyz : (3e38).xxx);
-    float4 _e62 = pos;
-    wg_hi[min(uint(li), 63u)] = (valid ? _e62.xyz : (-3e38).xxx);
-    GroupMemoryBarrierWithGroupSync();
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e94 = stride;
-            stride = naga_div(_e94, 2u);
-        }
-        loop_init = false;
-        uint _e67 = stride;
-        if ((_e67 > 0u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e70 = stride;
-            if ((li < _e70)) {
-                float3 _e76 = wg_lo[min(uint(li), 63u)];
-                uint _e78 = stride;
-                float3 _e81 = wg_lo[min(uint((li + _e78)), 63u)];
-                wg_lo[min(uint(li), 63u)] = min(_e76, _e81);
-                float3 _e87 = wg_hi[min(uint(li), 63u)];
-                uint _e89 = stride;
-                float3 _e92 = wg_hi[min(uint((li + _e89)), 63u)];
-                wg_hi[min(uint(li), 63u)] = max(_e87, _e92);
-            }
-            GroupMemoryBarrierWithGroupSync();
-        }
-    }
-    float3 lo_4 = wg_lo[0];
-    float3 hi_4 = wg_hi[0];
-    float _e105 = params.near_r2_;
-    const float _e106 = cull_radius(_e105);
+    float4 _e51 = pos;
+    const WorkgroupBox _e53 = workgroup_box(li, _e51.xyz, valid);
+    float3 lo_4 = _e53.lo;
+    float3 hi_4 = _e53.hi;
+    float _e58 = params.near_r2_;
+    const float _e59 = cull_radius(_e58);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e229 = first;
-            first = (_e229 + NEAR_CHUNK);
+            uint _e182 = first;
+            first = (_e182 + NEAR_CHUNK);
         }
         loop_init_1 = false;
-        uint _e115 = first;
-        uint _e118 = params.near_blocks;
-        if ((_e115 < _e118)) {
+        uint _e68 = first;
+        uint _e71 = params.near_blocks;
+        if ((_e68 < _e71)) {
         } else {
             break;
         }
@@ -1337,24 +1361,24 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                 { uint dummy = 0; InterlockedExchange(light_count, 0u, dummy); }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e124 = first;
-            uint b_9 = (_e124 + li);
+            uint _e77 = first;
+            uint b_9 = (_e77 + li);
             if ((li < NEAR_CHUNK)) {
-                uint _e132 = params.near_blocks;
-                local_2 = (b_9 < _e132);
+                uint _e85 = params.near_blocks;
+                local_2 = (b_9 < _e85);
             } else {
                 local_2 = false;
             }
-            bool _e135 = local_2;
-            if (_e135) {
+            bool _e88 = local_2;
+            if (_e88) {
                 GpuNearBox nb = ConstructGpuNearBox(asfloat(near_boxes.Load3(b_9*32+0)), asfloat(near_boxes.Load(b_9*32+12)), asfloat(near_boxes.Load3(b_9*32+16)), asfloat(near_boxes.Load(b_9*32+28)));
-                if (all(((nb.lo - (_e106).xxx) <= hi_4))) {
-                    local_3 = all((lo_4 <= (nb.hi + (_e106).xxx)));
+                if (all(((nb.lo - (_e59).xxx) <= hi_4))) {
+                    local_3 = all((lo_4 <= (nb.hi + (_e59).xxx)));
                 } else {
                     local_3 = false;
                 }
-                bool _e152 = local_3;
-                if (_e152) {
+                bool _e105 = local_3;
+                if (_e105) {
                     m = 0u;
                     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
                     bool loop_init_2 = true;
@@ -1362,36 +1386,36 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                         if (!loop_init_2) {
-                            uint _e185 = m;
-                            m = (_e185 + 1u);
+                            uint _e138 = m;
+                            m = (_e138 + 1u);
                         }
                         loop_init_2 = false;
-                        uint _e155 = m;
-                        if ((_e155 < NEAR_BLOCK)) {
+                        uint _e108 = m;
+                        if ((_e108 < NEAR_BLOCK)) {
                         } else {
                             break;
                         }
                         {
-                            uint _e161 = m;
-                            uint slot = asuint(near_slots.Load(((b_9 * NEAR_BLOCK) + _e161)*4));
+                            uint _e114 = m;
+                            uint slot = asuint(near_slots.Load(((b_9 * NEAR_BLOCK) + _e114)*4));
                             GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(slot*64+0)), asuint(lights.Load(slot*64+12)), asfloat(lights.Load3(slot*64+16)), asfloat(lights.Load(slot*64+28)), asfloat(lights.Load3(slot*64+32)), asfloat(lights.Load(slot*64+44)), asfloat(lights.Load3(slot*64+48)), asuint(lights.Load(slot*64+60)));
                             if (any((l_4.intensity != (0.0).xxx))) {
-                                const bool _e176 = sphere_overlaps_aabb(l_4.p0_, _e106, lo_4, hi_4);
-                                local_4 = _e176;
+                                const bool _e129 = sphere_overlaps_aabb(l_4.p0_, _e59, lo_4, hi_4);
+                                local_4 = _e129;
                             } else {
                                 local_4 = false;
                             }
-                            bool _e178 = local_4;
-                            if (_e178) {
-                                uint _e182; InterlockedAdd(light_count, 1u, _e182);
-                                light_list[min(uint(_e182), 2047u)] = slot;
+                            bool _e131 = local_4;
+                            if (_e131) {
+                                uint _e135; InterlockedAdd(light_count, 1u, _e135);
+                                light_list[min(uint(_e135), 2047u)] = slot;
                             }
                         }
                     }
                 }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e188 = light_count;
+            uint _e141 = light_count;
             GroupMemoryBarrierWithGroupSync();
             if (valid) {
                 m_1 = 0u;
@@ -1401,31 +1425,31 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
                     loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e227 = m_1;
-                        m_1 = (_e227 + 1u);
+                        uint _e180 = m_1;
+                        m_1 = (_e180 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e191 = m_1;
-                    if ((_e191 < _e188)) {
+                    uint _e144 = m_1;
+                    if ((_e144 < _e141)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e195 = m_1;
-                        uint _e197 = light_list[min(uint(_e195), 2047u)];
-                        GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(_e197*64+0)), asuint(lights.Load(_e197*64+12)), asfloat(lights.Load3(_e197*64+16)), asfloat(lights.Load(_e197*64+28)), asfloat(lights.Load3(_e197*64+32)), asfloat(lights.Load(_e197*64+44)), asfloat(lights.Load3(_e197*64+48)), asuint(lights.Load(_e197*64+60)));
-                        float4 _e200 = pos;
-                        float3 v_10 = (_e200.xyz - l_5.p0_);
-                        float _e207 = params.near_r2_;
-                        const float _e208 = vpl_near_weight(dot(v_10, v_10), _e207);
-                        if ((_e208 > 0.0)) {
-                            float3 _e211 = e;
-                            float3 _e214 = nrm;
-                            float _e217 = params.min_d2_;
-                            const float _e218 = vpl_transfer(l_5.p1_, _e214, v_10, _e217);
-                            e = (_e211 + (l_5.intensity * ((_e218 * _e208) * 0.015625)));
-                            uint _e223 = kept;
-                            kept = (_e223 + 1u);
+                        uint _e148 = m_1;
+                        uint _e150 = light_list[min(uint(_e148), 2047u)];
+                        GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(_e150*64+0)), asuint(lights.Load(_e150*64+12)), asfloat(lights.Load3(_e150*64+16)), asfloat(lights.Load(_e150*64+28)), asfloat(lights.Load3(_e150*64+32)), asfloat(lights.Load(_e150*64+44)), asfloat(lights.Load3(_e150*64+48)), asuint(lights.Load(_e150*64+60)));
+                        float4 _e153 = pos;
+                        float3 v_10 = (_e153.xyz - l_5.p0_);
+                        float _e160 = params.near_r2_;
+                        const float _e161 = vpl_near_weight(dot(v_10, v_10), _e160);
+                        if ((_e161 > 0.0)) {
+                            float3 _e164 = e;
+                            float3 _e167 = nrm;
+                            float _e170 = params.min_d2_;
+                            const float _e171 = vpl_transfer(l_5.p1_, _e167, v_10, _e170);
+                            e = (_e164 + (l_5.intensity * ((_e171 * _e161) * 0.015625)));
+                            uint _e176 = kept;
+                            kept = (_e176 + 1u);
                         }
                     }
                 }
@@ -1435,9 +1459,9 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     }
     if (valid) {
         float4 old = asfloat(irradiance.Load4(pix*16));
-        float3 _e238 = e;
-        uint _e241 = kept;
-        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e238), (old.w + float(_e241)))));
+        float3 _e191 = e;
+        uint _e194 = kept;
+        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e191), (old.w + float(_e194)))));
         return;
     } else {
         return;

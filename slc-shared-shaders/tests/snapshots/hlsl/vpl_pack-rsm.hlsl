@@ -199,6 +199,13 @@ struct BshNode {
     uint pad;
 };
 
+struct WorkgroupBox {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    int _end_pad_0;
+};
+
 static const uint LIGHT_POINT = 0u;
 static const uint LIGHT_SPOT = 1u;
 static const uint LIGHT_IES = 2u;
@@ -223,6 +230,7 @@ static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
 static const uint NEAR_BLOCK = 64u;
 static const uint P = 8u;
+static const uint BOX_THREADS = 64u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
 cbuffer params : register(b0) { PackParams params; }
@@ -600,36 +608,36 @@ float ies_fold_c(float c_4, float h_first, float h_last)
 
 uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
 {
-    uint lo_1 = 0u;
-    uint hi_1 = (uint)0;
+    uint lo = 0u;
+    uint hi = (uint)0;
 
     if ((n_2 < 2u)) {
         return 0u;
     }
-    hi_1 = (n_2 - 1u);
+    hi = (n_2 - 1u);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e12 = hi_1;
-        uint _e13 = lo_1;
+        uint _e12 = hi;
+        uint _e13 = lo;
         if (((_e12 - _e13) > 1u)) {
         } else {
             break;
         }
         {
-            uint _e17 = lo_1;
-            uint _e18 = hi_1;
+            uint _e17 = lo;
+            uint _e18 = hi;
             uint mid = ((_e17 + _e18) >> 1u);
             const float _e23 = at(tab_1, (start + mid));
             if ((_e23 <= x_6)) {
-                lo_1 = mid;
+                lo = mid;
             } else {
-                hi_1 = mid;
+                hi = mid;
             }
         }
     }
-    uint _e25 = lo_1;
+    uint _e25 = lo;
     return _e25;
 }
 
@@ -710,23 +718,23 @@ uint mul_hi_u32_(uint a_4, uint b_3)
     return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u));
 }
 
-uint uniform_index(uint n_3, uint hi_2, uint lo_2)
+uint uniform_index(uint n_3, uint hi_1, uint lo_1)
 {
-    const uint _e3 = mul_lo_u32_(hi_2, n_3);
-    const uint _e4 = mul_hi_u32_(hi_2, n_3);
-    const uint _e5 = mul_hi_u32_(lo_2, n_3);
+    const uint _e3 = mul_lo_u32_(hi_1, n_3);
+    const uint _e4 = mul_hi_u32_(hi_1, n_3);
+    const uint _e5 = mul_hi_u32_(lo_1, n_3);
     if ((_e3 > (4294967295u - _e5))) {
         return (_e4 + 1u);
     }
     return _e4;
 }
 
-uint reservoir_slot(uint n_4, uint k, uint hi_3, uint lo_3)
+uint reservoir_slot(uint n_4, uint k, uint hi_2, uint lo_2)
 {
     if ((n_4 <= k)) {
         return (n_4 - 1u);
     }
-    const uint _e7 = uniform_index(n_4, hi_3, lo_3);
+    const uint _e7 = uniform_index(n_4, hi_2, lo_2);
     if ((_e7 < k)) {
         return _e7;
     }
@@ -850,10 +858,10 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 {
     float3 t0_ = ((bmin_1 - o) * inv_d);
     float3 t1_ = ((bmax_1 - o) * inv_d);
-    float3 lo_4 = min(t0_, t1_);
-    float3 hi_4 = max(t0_, t1_);
-    float t_in = max(max(lo_4.x, lo_4.y), max(lo_4.z, 0.0));
-    float t_out = min(min(hi_4.x, hi_4.y), min(hi_4.z, t_max));
+    float3 lo_3 = min(t0_, t1_);
+    float3 hi_3 = max(t0_, t1_);
+    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
+    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
     if ((t_in <= t_out)) {
         return t_in;
     }
@@ -927,14 +935,14 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
 
     float3 e1_2 = (b_6 - a_7);
     float3 e2_2 = (c_8 - a_7);
-    float3 p_3 = cross(d, e2_2);
-    float det = dot(e1_2, p_3);
+    float3 p_4 = cross(d, e2_2);
+    float det = dot(e1_2, p_4);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     float3 s_2 = (o_1 - a_7);
-    float u_3 = (dot(s_2, p_3) * inv);
+    float u_3 = (dot(s_2, p_4) * inv);
     if (!((u_3 < 0.0))) {
         local_5 = (u_3 > 1.0);
     } else {
@@ -1176,6 +1184,56 @@ float3 diffuse_radiance(float3 albedo, float3 emission, float3 e_1)
     return (emission + ((albedo * INV_PI) * e_1));
 }
 
+WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
+    WorkgroupBox ret = (WorkgroupBox)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    return ret;
+}
+
+WorkgroupBox workgroup_box(uint li_1, float3 p_3, bool has)
+{
+    uint stride = 32u;
+
+    wg_lo[min(uint(li_1), 63u)] = (has ? p_3 : (3e38).xxx);
+    wg_hi[min(uint(li_1), 63u)] = (has ? p_3 : (-3e38).xxx);
+    GroupMemoryBarrierWithGroupSync();
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e42 = stride;
+            stride = naga_div(_e42, 2u);
+        }
+        loop_init = false;
+        uint _e15 = stride;
+        if ((_e15 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = stride;
+            if ((li_1 < _e18)) {
+                float3 _e24 = wg_lo[min(uint(li_1), 63u)];
+                uint _e26 = stride;
+                float3 _e29 = wg_lo[min(uint((li_1 + _e26)), 63u)];
+                wg_lo[min(uint(li_1), 63u)] = min(_e24, _e29);
+                float3 _e35 = wg_hi[min(uint(li_1), 63u)];
+                uint _e37 = stride;
+                float3 _e40 = wg_hi[min(uint((li_1 + _e37)), 63u)];
+                wg_hi[min(uint(li_1), 63u)] = max(_e35, _e40);
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    float3 _e47 = wg_lo[0];
+    float3 _e50 = wg_hi[0];
+    const WorkgroupBox workgroupbox = ConstructWorkgroupBox(_e47, _e50);
+    return workgroupbox;
+}
+
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
     GpuLight ret = (GpuLight)0;
     ret.p0_ = arg0;
@@ -1206,104 +1264,67 @@ void main(uint3 gid : SV_DispatchThreadID, uint3 wg : SV_GroupID, uint li : SV_G
         wg_hi = (float3[64])0;
     }
     GroupMemoryBarrierWithGroupSync();
-    float3 lo = (3e38).xxx;
-    float3 hi = (-3e38).xxx;
-    uint stride = 32u;
+    float3 position = (0.0).xxx;
+    bool lit_ = false;
     bool local = (bool)0;
 
     uint q_6 = gid.x;
     uint _e6 = params.count;
     bool inside = (q_6 < _e6);
     if (inside) {
-        uint _e16 = params.size;
-        const uint _e17 = near_block_tx(q_6, _e16);
-        uint _e20 = params.size;
-        const uint _e21 = near_block_ty(q_6, _e20);
-        uint _e24 = params.size;
-        uint i_2 = ((_e21 * _e24) + _e17);
-        int2 texel_1 = int2(int(_e17), int(_e21));
-        float4 _e32 = rsm_position.Load(int3(texel_1, int(0)));
-        float3 position = _e32.xyz;
-        float4 _e36 = rsm_normal.Load(int3(texel_1, int(0)));
-        float3 normal = _e36.xyz;
-        float4 _e40 = rsm_flux.Load(int3(texel_1, int(0)));
-        float _e44 = params.scale;
-        float3 flux_1 = (_e40.xyz * _e44);
-        uint _e48 = params.size;
-        const uint _e50 = interleave_slot(_e17, _e21, _e48, P);
+        uint _e15 = params.size;
+        const uint _e16 = near_block_tx(q_6, _e15);
+        uint _e19 = params.size;
+        const uint _e20 = near_block_ty(q_6, _e19);
+        uint _e23 = params.size;
+        uint i_2 = ((_e20 * _e23) + _e16);
+        int2 texel_1 = int2(int(_e16), int(_e20));
+        float4 _e31 = rsm_position.Load(int3(texel_1, int(0)));
+        position = _e31.xyz;
+        float4 _e35 = rsm_normal.Load(int3(texel_1, int(0)));
+        float3 normal = _e35.xyz;
+        float4 _e39 = rsm_flux.Load(int3(texel_1, int(0)));
+        float _e43 = params.scale;
+        float3 flux_1 = (_e39.xyz * _e43);
+        uint _e47 = params.size;
+        const uint _e49 = interleave_slot(_e16, _e20, _e47, P);
+        float3 _e52 = position;
         {
-            GpuLight _value3 = ConstructGpuLight(position, LIGHT_VPL, normal, 0.0, (0.0).xxx, 0.0, flux_1, 0u);
-            lights.Store3(_e50*64+0, asuint(_value3.p0_));
-            lights.Store(_e50*64+12, asuint(_value3.kind));
-            lights.Store3(_e50*64+16, asuint(_value3.p1_));
-            lights.Store(_e50*64+28, asuint(_value3.a));
-            lights.Store3(_e50*64+32, asuint(_value3.p2_));
-            lights.Store(_e50*64+44, asuint(_value3.b));
-            lights.Store3(_e50*64+48, asuint(_value3.intensity));
-            lights.Store(_e50*64+60, asuint(_value3.ies_base));
+            GpuLight _value3 = ConstructGpuLight(_e52, LIGHT_VPL, normal, 0.0, (0.0).xxx, 0.0, flux_1, 0u);
+            lights.Store3(_e49*64+0, asuint(_value3.p0_));
+            lights.Store(_e49*64+12, asuint(_value3.kind));
+            lights.Store3(_e49*64+16, asuint(_value3.p1_));
+            lights.Store(_e49*64+28, asuint(_value3.a));
+            lights.Store3(_e49*64+32, asuint(_value3.p2_));
+            lights.Store(_e49*64+44, asuint(_value3.b));
+            lights.Store3(_e49*64+48, asuint(_value3.intensity));
+            lights.Store(_e49*64+60, asuint(_value3.ies_base));
         }
-        ids.Store(_e50*4, asuint(i_2));
+        ids.Store(_e49*4, asuint(i_2));
         uint _e64 = params.slc;
         bool slc = (_e64 != 0u);
         float _e71 = params.exposure;
         float _e74 = params.error_bound;
         uint _e77 = params.mode;
         const float _e78 = vpl_rt2_(flux_1, _e71, _e74, _e77);
-        rt2_7.Store(_e50*4, asuint((slc ? _e78 : 0.0)));
+        rt2_7.Store(_e49*4, asuint((slc ? _e78 : 0.0)));
         float _e85 = params.fixed_r2_;
-        r2_5.Store(_e50*4, asuint((slc ? 0.0 : _e85)));
-        near_slots.Store(q_6*4, asuint(_e50));
-        if (any((flux_1 != (0.0).xxx))) {
-            lo = position;
-            hi = position;
-        }
+        r2_5.Store(_e49*4, asuint((slc ? 0.0 : _e85)));
+        near_slots.Store(q_6*4, asuint(_e49));
+        lit_ = any((flux_1 != (0.0).xxx));
     }
-    float3 _e96 = lo;
-    wg_lo[min(uint(li), 63u)] = _e96;
-    float3 _e99 = hi;
-    wg_hi[min(uint(li), 63u)] = _e99;
-    GroupMemoryBarrierWithGroupSync();
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e129 = stride;
-            stride = naga_div(_e129, 2u);
-        }
-        loop_init = false;
-        uint _e102 = stride;
-        if ((_e102 > 0u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e105 = stride;
-            if ((li < _e105)) {
-                float3 _e111 = wg_lo[min(uint(li), 63u)];
-                uint _e113 = stride;
-                float3 _e116 = wg_lo[min(uint((li + _e113)), 63u)];
-                wg_lo[min(uint(li), 63u)] = min(_e111, _e116);
-                float3 _e122 = wg_hi[min(uint(li), 63u)];
-                uint _e124 = stride;
-                float3 _e127 = wg_hi[min(uint((li + _e124)), 63u)];
-                wg_hi[min(uint(li), 63u)] = max(_e122, _e127);
-            }
-            GroupMemoryBarrierWithGroupSync();
-        }
-    }
+    float3 _e94 = position;
+    bool _e95 = lit_;
+    const WorkgroupBox _e96 = workgroup_box(li, _e94, _e95);
     if ((li == 0u)) {
         local = inside;
     } else {
         local = false;
     }
-    bool _e137 = local;
-    if (_e137) {
-        float3 _e143 = wg_lo[0];
-        float3 _e146 = wg_hi[0];
+    bool _e102 = local;
+    if (_e102) {
         {
-            GpuNearBox _value3 = ConstructGpuNearBox(_e143, 0.0, _e146, 0.0);
+            GpuNearBox _value3 = ConstructGpuNearBox(_e96.lo, 0.0, _e96.hi, 0.0);
             near_boxes.Store3(wg.x*32+0, asuint(_value3.lo));
             near_boxes.Store(wg.x*32+12, asuint(_value3.pad0_));
             near_boxes.Store3(wg.x*32+16, asuint(_value3.hi));

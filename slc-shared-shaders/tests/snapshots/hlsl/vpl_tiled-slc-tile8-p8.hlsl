@@ -199,6 +199,13 @@ struct BshNode {
     uint pad;
 };
 
+struct WorkgroupBox {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    int _end_pad_0;
+};
+
 static const uint LIGHT_POINT = 0u;
 static const uint LIGHT_SPOT = 1u;
 static const uint LIGHT_IES = 2u;
@@ -225,9 +232,12 @@ static const uint NEAR_BLOCK = 64u;
 static const uint P = 8u;
 static const uint TILE = 8u;
 static const uint THREADS = 64u;
+static const uint BOX_THREADS = 64u;
 static const uint MAX_TILE_LIGHTS = 1024u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
+groupshared float3 wg_lo[64];
+groupshared float3 wg_hi[64];
 cbuffer params : register(b0) { VplParams params; }
 ByteAddressBuffer gb_position : register(t1);
 ByteAddressBuffer gb_normal : register(t2);
@@ -235,8 +245,6 @@ ByteAddressBuffer lights : register(t3);
 ByteAddressBuffer rt2_7 : register(t4);
 ByteAddressBuffer r2_5 : register(t5);
 RWByteAddressBuffer irradiance : register(u6);
-groupshared float3 wg_lo[64];
-groupshared float3 wg_hi[64];
 groupshared uint tile_count;
 groupshared uint tile_lights[1024];
 
@@ -929,14 +937,14 @@ float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, flo
 
     float3 e1_2 = (b_6 - a_7);
     float3 e2_2 = (c_8 - a_7);
-    float3 p_3 = cross(d, e2_2);
-    float det = dot(e1_2, p_3);
+    float3 p_4 = cross(d, e2_2);
+    float det = dot(e1_2, p_4);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     float3 s_2 = (o_1 - a_7);
-    float u_3 = (dot(s_2, p_3) * inv);
+    float u_3 = (dot(s_2, p_4) * inv);
     if (!((u_3 < 0.0))) {
         local_7 = (u_3 > 1.0);
     } else {
@@ -1206,6 +1214,56 @@ float3 light_normal(GpuLight l_3)
     return (0.0).xxx;
 }
 
+WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
+    WorkgroupBox ret = (WorkgroupBox)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    return ret;
+}
+
+WorkgroupBox workgroup_box(uint li_1, float3 p_3, bool has)
+{
+    uint stride = 32u;
+
+    wg_lo[min(uint(li_1), 63u)] = (has ? p_3 : (3e38).xxx);
+    wg_hi[min(uint(li_1), 63u)] = (has ? p_3 : (-3e38).xxx);
+    GroupMemoryBarrierWithGroupSync();
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e42 = stride;
+            stride = naga_div(_e42, 2u);
+        }
+        loop_init = false;
+        uint _e15 = stride;
+        if ((_e15 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = stride;
+            if ((li_1 < _e18)) {
+                float3 _e24 = wg_lo[min(uint(li_1), 63u)];
+                uint _e26 = stride;
+                float3 _e29 = wg_lo[min(uint((li_1 + _e26)), 63u)];
+                wg_lo[min(uint(li_1), 63u)] = min(_e24, _e29);
+                float3 _e35 = wg_hi[min(uint(li_1), 63u)];
+                uint _e37 = stride;
+                float3 _e40 = wg_hi[min(uint((li_1 + _e37)), 63u)];
+                wg_hi[min(uint(li_1), 63u)] = max(_e35, _e40);
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    float3 _e47 = wg_lo[0];
+    float3 _e50 = wg_hi[0];
+    const WorkgroupBox workgroupbox = ConstructWorkgroupBox(_e47, _e50);
+    return workgroupbox;
+}
+
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
     GpuLight ret = (GpuLight)0;
     ret.p0_ = arg0;
@@ -1233,7 +1291,6 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     float4 pos = (0.0).xxxx;
     float3 nrm = (0.0).xxx;
     bool local_1 = (bool)0;
-    uint stride = 32u;
     float3 e = (0.0).xxx;
     uint kept = 0u;
     uint first = 0u;
@@ -1267,106 +1324,73 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         local_1 = false;
     }
     bool valid = local_1;
-    float4 _e66 = pos;
-    wg_lo[min(uint(li), 63u)] = (valid ? _e66.xyz : (3e38).xxx);
-    float4 _e73 = pos;
-    wg_hi[min(uint(li), 63u)] = (valid ? _e73.xyz : (-3e38).xxx);
-    GroupMemoryBarrierWithGroupSync();
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e105 = stride;
-            stride = naga_div(_e105, 2u);
-        }
-        loop_init = false;
-        uint _e78 = stride;
-        if ((_e78 > 0u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e81 = stride;
-            if ((li < _e81)) {
-                float3 _e87 = wg_lo[min(uint(li), 63u)];
-                uint _e89 = stride;
-                float3 _e92 = wg_lo[min(uint((li + _e89)), 63u)];
-                wg_lo[min(uint(li), 63u)] = min(_e87, _e92);
-                float3 _e98 = wg_hi[min(uint(li), 63u)];
-                uint _e100 = stride;
-                float3 _e103 = wg_hi[min(uint((li + _e100)), 63u)];
-                wg_hi[min(uint(li), 63u)] = max(_e98, _e103);
-            }
-            GroupMemoryBarrierWithGroupSync();
-        }
-    }
-    float3 lo_4 = wg_lo[0];
-    float3 hi_4 = wg_hi[0];
-    uint _e116 = params.lights_per_subset;
-    uint base_3 = (sub * _e116);
+    float4 _e62 = pos;
+    const WorkgroupBox _e64 = workgroup_box(li, _e62.xyz, valid);
+    float3 lo_4 = _e64.lo;
+    float3 hi_4 = _e64.hi;
+    uint _e69 = params.lights_per_subset;
+    uint base_3 = (sub * _e69);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e227 = first;
-            first = (_e227 + MAX_TILE_LIGHTS);
+            uint _e180 = first;
+            first = (_e180 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
-        uint _e125 = first;
-        uint _e128 = params.lights_per_subset;
-        if ((_e125 < _e128)) {
+        uint _e78 = first;
+        uint _e81 = params.lights_per_subset;
+        if ((_e78 < _e81)) {
         } else {
             break;
         }
         {
-            uint _e130 = first;
-            uint _e135 = params.lights_per_subset;
-            uint end = min((_e130 + MAX_TILE_LIGHTS), _e135);
+            uint _e83 = first;
+            uint _e88 = params.lights_per_subset;
+            uint end = min((_e83 + MAX_TILE_LIGHTS), _e88);
             if ((li == 0u)) {
                 { uint dummy = 0; InterlockedExchange(tile_count, 0u, dummy); }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e141 = first;
-            j = (_e141 + li);
+            uint _e94 = first;
+            j = (_e94 + li);
             uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
             bool loop_init_2 = true;
             while(true) {
                 if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e167 = j;
-                    j = (_e167 + THREADS);
+                    uint _e120 = j;
+                    j = (_e120 + THREADS);
                 }
                 loop_init_2 = false;
-                uint _e144 = j;
-                if ((_e144 < end)) {
+                uint _e97 = j;
+                if ((_e97 < end)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e147 = j;
-                    float3 _e151 = asfloat(lights.Load3(0+(base_3 + _e147)*64));
-                    uint _e153 = j;
-                    float _e156 = asfloat(r2_5.Load((base_3 + _e153)*4));
-                    const float _e157 = cull_radius(_e156);
-                    const bool _e158 = sphere_overlaps_aabb(_e151, _e157, lo_4, hi_4);
-                    if (_e158) {
-                        uint _e161; InterlockedAdd(tile_count, 1u, _e161);
-                        if ((_e161 < MAX_TILE_LIGHTS)) {
-                            uint _e166 = j;
-                            tile_lights[min(uint(_e161), 1023u)] = _e166;
+                    uint _e100 = j;
+                    float3 _e104 = asfloat(lights.Load3(0+(base_3 + _e100)*64));
+                    uint _e106 = j;
+                    float _e109 = asfloat(r2_5.Load((base_3 + _e106)*4));
+                    const float _e110 = cull_radius(_e109);
+                    const bool _e111 = sphere_overlaps_aabb(_e104, _e110, lo_4, hi_4);
+                    if (_e111) {
+                        uint _e114; InterlockedAdd(tile_count, 1u, _e114);
+                        if ((_e114 < MAX_TILE_LIGHTS)) {
+                            uint _e119 = j;
+                            tile_lights[min(uint(_e114), 1023u)] = _e119;
                         }
                     }
                 }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e171 = tile_count;
+            uint _e124 = tile_count;
             GroupMemoryBarrierWithGroupSync();
-            uint count = min(_e171, MAX_TILE_LIGHTS);
+            uint count = min(_e124, MAX_TILE_LIGHTS);
             if (valid) {
                 k = 0u;
                 uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
@@ -1375,43 +1399,43 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
                     loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e225 = k;
-                        k = (_e225 + 1u);
+                        uint _e178 = k;
+                        k = (_e178 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e176 = k;
-                    if ((_e176 < count)) {
+                    uint _e129 = k;
+                    if ((_e129 < count)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e179 = k;
-                        uint _e181 = tile_lights[min(uint(_e179), 1023u)];
-                        uint j_1 = (base_3 + _e181);
+                        uint _e132 = k;
+                        uint _e134 = tile_lights[min(uint(_e132), 1023u)];
+                        uint j_1 = (base_3 + _e134);
                         GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(j_1*64+0)), asuint(lights.Load(j_1*64+12)), asfloat(lights.Load3(j_1*64+16)), asfloat(lights.Load(j_1*64+28)), asfloat(lights.Load3(j_1*64+32)), asfloat(lights.Load(j_1*64+44)), asfloat(lights.Load3(j_1*64+48)), asuint(lights.Load(j_1*64+60)));
-                        float4 _e186 = pos;
-                        float3 v_10 = (_e186.xyz - l_4.p0_);
-                        float3 _e191 = nrm;
-                        float _e194 = params.min_d2_;
-                        const float _e195 = vpl_transfer(l_4.p1_, _e191, v_10, _e194);
+                        float4 _e139 = pos;
+                        float3 v_10 = (_e139.xyz - l_4.p0_);
+                        float3 _e144 = nrm;
+                        float _e147 = params.min_d2_;
+                        const float _e148 = vpl_transfer(l_4.p1_, _e144, v_10, _e147);
                         float d2_13 = dot(v_10, v_10);
-                        float _e199 = params.near_r2_;
-                        const float _e200 = vpl_far_weight(d2_13, _e199);
-                        float _e203 = asfloat(r2_5.Load(j_1*4));
-                        const bool _e204 = slc_keep(_e203, d2_13);
-                        if (_e204) {
-                            local_2 = (_e200 > 0.0);
+                        float _e152 = params.near_r2_;
+                        const float _e153 = vpl_far_weight(d2_13, _e152);
+                        float _e156 = asfloat(r2_5.Load(j_1*4));
+                        const bool _e157 = slc_keep(_e156, d2_13);
+                        if (_e157) {
+                            local_2 = (_e153 > 0.0);
                         } else {
                             local_2 = false;
                         }
-                        bool _e210 = local_2;
-                        if (_e210) {
-                            float3 _e211 = e;
-                            float _e215 = asfloat(rt2_7.Load(j_1*4));
-                            const float _e216 = slc_weight(_e215, d2_13);
-                            e = (_e211 + (l_4.intensity * ((_e195 * _e216) * _e200)));
-                            uint _e221 = kept;
-                            kept = (_e221 + 1u);
+                        bool _e163 = local_2;
+                        if (_e163) {
+                            float3 _e164 = e;
+                            float _e168 = asfloat(rt2_7.Load(j_1*4));
+                            const float _e169 = slc_weight(_e168, d2_13);
+                            e = (_e164 + (l_4.intensity * ((_e148 * _e169) * _e153)));
+                            uint _e174 = kept;
+                            kept = (_e174 + 1u);
                         }
                     }
                 }
@@ -1420,9 +1444,9 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         }
     }
     if (valid) {
-        float3 _e232 = e;
-        uint _e233 = kept;
-        irradiance.Store4(pix*16, asuint(float4(_e232, float(_e233))));
+        float3 _e185 = e;
+        uint _e186 = kept;
+        irradiance.Store4(pix*16, asuint(float4(_e185, float(_e186))));
         return;
     } else {
         return;

@@ -6,12 +6,12 @@ using metal::uint;
 
 struct _mslBufferSizes {
     uint size0;
-    uint size2;
-    uint size3;
     uint size4;
     uint size5;
     uint size6;
     uint size7;
+    uint size8;
+    uint size9;
 };
 
 struct GpuLight {
@@ -197,13 +197,17 @@ struct BshNode {
     uint light;
     uint pad;
 };
-typedef metal::float4 type_6[1];
-typedef GpuLight type_7[1];
-typedef uint type_8[1];
-typedef GpuNearBox type_9[1];
-struct type_10 {
+struct type_6 {
     metal::float3 inner[64];
 };
+struct WorkgroupBox {
+    metal::float3 lo;
+    metal::float3 hi;
+};
+typedef metal::float4 type_7[1];
+typedef GpuLight type_8[1];
+typedef uint type_9[1];
+typedef GpuNearBox type_10[1];
 struct type_12 {
     uint inner[2048];
 };
@@ -233,6 +237,7 @@ constant uint NEAR_BLOCK = 64u;
 constant uint P = 8u;
 constant uint TILE = 8u;
 constant uint THREADS = 64u;
+constant uint BOX_THREADS = 64u;
 constant uint NEAR_CHUNK = 32u;
 
 float at(
@@ -1103,14 +1108,14 @@ float ray_triangle(
     bool local_11 = {};
     metal::float3 e1_2 = b_6 - a_7;
     metal::float3 e2_2 = c_8 - a_7;
-    metal::float3 p_3 = metal::cross(d, e2_2);
-    float det = metal::dot(e1_2, p_3);
+    metal::float3 p_4 = metal::cross(d, e2_2);
+    float det = metal::dot(e1_2, p_4);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
     metal::float3 s_2 = o_1 - a_7;
-    float u_3 = metal::dot(s_2, p_3) * inv;
+    float u_3 = metal::dot(s_2, p_4) * inv;
     if (!((u_3 < 0.0))) {
         local_9 = u_3 > 1.0;
     } else {
@@ -1456,21 +1461,67 @@ metal::float3 light_normal(
     return metal::float3(0.0);
 }
 
+WorkgroupBox workgroup_box(
+    uint li_1,
+    metal::float3 p_3,
+    bool has,
+    threadgroup type_6& wg_lo,
+    threadgroup type_6& wg_hi
+) {
+    uint stride = 32u;
+    wg_lo.inner[li_1] = has ? p_3 : metal::float3(300000000000000000000000000000000000000.0);
+    wg_hi.inner[li_1] = has ? p_3 : metal::float3(-300000000000000000000000000000000000000.0);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint2 loop_bound_1 = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e42 = stride;
+            stride = naga_div(_e42, 2u);
+        }
+        loop_init = false;
+        uint _e15 = stride;
+        if (_e15 > 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = stride;
+            if (li_1 < _e18) {
+                metal::float3 _e24 = wg_lo.inner[li_1];
+                uint _e26 = stride;
+                metal::float3 _e29 = wg_lo.inner[li_1 + _e26];
+                wg_lo.inner[li_1] = metal::min(_e24, _e29);
+                metal::float3 _e35 = wg_hi.inner[li_1];
+                uint _e37 = stride;
+                metal::float3 _e40 = wg_hi.inner[li_1 + _e37];
+                wg_hi.inner[li_1] = metal::max(_e35, _e40);
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    metal::float3 _e47 = wg_lo.inner[0];
+    metal::float3 _e50 = wg_hi.inner[0];
+    return WorkgroupBox {_e47, _e50};
+}
+
 struct main_Input {
 };
 kernel void main_(
   metal::uint3 wg [[threadgroup_position_in_grid]]
 , metal::uint3 lid [[thread_position_in_threadgroup]]
 , uint li [[thread_index_in_threadgroup]]
+, threadgroup type_6& wg_lo
+, threadgroup type_6& wg_hi
 , constant VplParams& params [[user(fake0)]]
-, device type_6 const& gb_position [[user(fake0)]]
-, device type_6 const& gb_normal [[user(fake0)]]
-, device type_7 const& lights [[user(fake0)]]
-, device type_8 const& near_slots [[user(fake0)]]
-, device type_9 const& near_boxes [[user(fake0)]]
-, device type_6& irradiance [[user(fake0)]]
-, threadgroup type_10& wg_lo
-, threadgroup type_10& wg_hi
+, device type_7 const& gb_position [[user(fake0)]]
+, device type_7 const& gb_normal [[user(fake0)]]
+, device type_8 const& lights [[user(fake0)]]
+, device type_9 const& near_slots [[user(fake0)]]
+, device type_10 const& near_boxes [[user(fake0)]]
+, device type_7& irradiance [[user(fake0)]]
 , threadgroup metal::atomic_uint& light_count
 , threadgroup type_12& light_list
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
@@ -1486,7 +1537,6 @@ kernel void main_(
     metal::float4 pos = metal::float4(0.0);
     metal::float3 nrm = metal::float3(0.0);
     bool local_1 = {};
-    uint stride = 32u;
     metal::float3 e = metal::float3(0.0);
     uint kept = 0u;
     uint first = 0u;
@@ -1520,58 +1570,25 @@ kernel void main_(
         local_1 = false;
     }
     bool valid = local_1;
-    metal::float4 _e55 = pos;
-    wg_lo.inner[li] = valid ? _e55.xyz : metal::float3(300000000000000000000000000000000000000.0);
-    metal::float4 _e62 = pos;
-    wg_hi.inner[li] = valid ? _e62.xyz : metal::float3(-300000000000000000000000000000000000000.0);
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    uint2 loop_bound_1 = uint2(4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e94 = stride;
-            stride = naga_div(_e94, 2u);
-        }
-        loop_init = false;
-        uint _e67 = stride;
-        if (_e67 > 0u) {
-        } else {
-            break;
-        }
-        {
-            uint _e70 = stride;
-            if (li < _e70) {
-                metal::float3 _e76 = wg_lo.inner[li];
-                uint _e78 = stride;
-                metal::float3 _e81 = wg_lo.inner[li + _e78];
-                wg_lo.inner[li] = metal::min(_e76, _e81);
-                metal::float3 _e87 = wg_hi.inner[li];
-                uint _e89 = stride;
-                metal::float3 _e92 = wg_hi.inner[li + _e89];
-                wg_hi.inner[li] = metal::max(_e87, _e92);
-            }
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-        }
-    }
-    metal::float3 lo_4 = wg_lo.inner[0];
-    metal::float3 hi_4 = wg_hi.inner[0];
-    float _e105 = params.near_r2_;
-    float _e106 = cull_radius(_e105);
+    metal::float4 _e51 = pos;
+    WorkgroupBox _e53 = workgroup_box(li, _e51.xyz, valid, wg_lo, wg_hi);
+    metal::float3 lo_4 = _e53.lo;
+    metal::float3 hi_4 = _e53.hi;
+    float _e58 = params.near_r2_;
+    float _e59 = cull_radius(_e58);
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e229 = first;
-            first = _e229 + NEAR_CHUNK;
+            uint _e182 = first;
+            first = _e182 + NEAR_CHUNK;
         }
         loop_init_1 = false;
-        uint _e115 = first;
-        uint _e118 = params.near_blocks;
-        if (_e115 < _e118) {
+        uint _e68 = first;
+        uint _e71 = params.near_blocks;
+        if (_e68 < _e71) {
         } else {
             break;
         }
@@ -1580,24 +1597,24 @@ kernel void main_(
                 metal::atomic_store_explicit(&light_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint _e124 = first;
-            uint b_9 = _e124 + li;
+            uint _e77 = first;
+            uint b_9 = _e77 + li;
             if (li < NEAR_CHUNK) {
-                uint _e132 = params.near_blocks;
-                local_2 = b_9 < _e132;
+                uint _e85 = params.near_blocks;
+                local_2 = b_9 < _e85;
             } else {
                 local_2 = false;
             }
-            bool _e135 = local_2;
-            if (_e135) {
+            bool _e88 = local_2;
+            if (_e88) {
                 GpuNearBox nb = near_boxes[b_9];
-                if (metal::all((nb.lo - metal::float3(_e106)) <= hi_4)) {
-                    local_3 = metal::all(lo_4 <= (nb.hi + metal::float3(_e106)));
+                if (metal::all((nb.lo - metal::float3(_e59)) <= hi_4)) {
+                    local_3 = metal::all(lo_4 <= (nb.hi + metal::float3(_e59)));
                 } else {
                     local_3 = false;
                 }
-                bool _e152 = local_3;
-                if (_e152) {
+                bool _e105 = local_3;
+                if (_e105) {
                     m = 0u;
                     uint2 loop_bound_3 = uint2(4294967295u);
                     bool loop_init_2 = true;
@@ -1605,29 +1622,29 @@ kernel void main_(
                         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                         if (!loop_init_2) {
-                            uint _e185 = m;
-                            m = _e185 + 1u;
+                            uint _e138 = m;
+                            m = _e138 + 1u;
                         }
                         loop_init_2 = false;
-                        uint _e155 = m;
-                        if (_e155 < NEAR_BLOCK) {
+                        uint _e108 = m;
+                        if (_e108 < NEAR_BLOCK) {
                         } else {
                             break;
                         }
                         {
-                            uint _e161 = m;
-                            uint slot = near_slots[(b_9 * NEAR_BLOCK) + _e161];
+                            uint _e114 = m;
+                            uint slot = near_slots[(b_9 * NEAR_BLOCK) + _e114];
                             GpuLight l_4 = lights[slot];
                             if (metal::any(l_4.intensity != metal::float3(0.0))) {
-                                bool _e176 = sphere_overlaps_aabb(l_4.p0_, _e106, lo_4, hi_4);
-                                local_4 = _e176;
+                                bool _e129 = sphere_overlaps_aabb(l_4.p0_, _e59, lo_4, hi_4);
+                                local_4 = _e129;
                             } else {
                                 local_4 = false;
                             }
-                            bool _e178 = local_4;
-                            if (_e178) {
-                                uint _e182 = metal::atomic_fetch_add_explicit(&light_count, 1u, metal::memory_order_relaxed);
-                                light_list.inner[_e182] = slot;
+                            bool _e131 = local_4;
+                            if (_e131) {
+                                uint _e135 = metal::atomic_fetch_add_explicit(&light_count, 1u, metal::memory_order_relaxed);
+                                light_list.inner[_e135] = slot;
                             }
                         }
                     }
@@ -1644,31 +1661,31 @@ kernel void main_(
                     if (metal::all(loop_bound_4 == uint2(0u))) { break; }
                     loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e227 = m_1;
-                        m_1 = _e227 + 1u;
+                        uint _e180 = m_1;
+                        m_1 = _e180 + 1u;
                     }
                     loop_init_3 = false;
-                    uint _e191 = m_1;
-                    if (_e191 < unnamed) {
+                    uint _e144 = m_1;
+                    if (_e144 < unnamed) {
                     } else {
                         break;
                     }
                     {
-                        uint _e195 = m_1;
-                        uint _e197 = light_list.inner[_e195];
-                        GpuLight l_5 = lights[_e197];
-                        metal::float4 _e200 = pos;
-                        metal::float3 v_10 = _e200.xyz - l_5.p0_;
-                        float _e207 = params.near_r2_;
-                        float _e208 = vpl_near_weight(metal::dot(v_10, v_10), _e207);
-                        if (_e208 > 0.0) {
-                            metal::float3 _e211 = e;
-                            metal::float3 _e214 = nrm;
-                            float _e217 = params.min_d2_;
-                            float _e218 = vpl_transfer(l_5.p1_, _e214, v_10, _e217);
-                            e = _e211 + (l_5.intensity * ((_e218 * _e208) * 0.015625));
-                            uint _e223 = kept;
-                            kept = _e223 + 1u;
+                        uint _e148 = m_1;
+                        uint _e150 = light_list.inner[_e148];
+                        GpuLight l_5 = lights[_e150];
+                        metal::float4 _e153 = pos;
+                        metal::float3 v_10 = _e153.xyz - l_5.p0_;
+                        float _e160 = params.near_r2_;
+                        float _e161 = vpl_near_weight(metal::dot(v_10, v_10), _e160);
+                        if (_e161 > 0.0) {
+                            metal::float3 _e164 = e;
+                            metal::float3 _e167 = nrm;
+                            float _e170 = params.min_d2_;
+                            float _e171 = vpl_transfer(l_5.p1_, _e167, v_10, _e170);
+                            e = _e164 + (l_5.intensity * ((_e171 * _e161) * 0.015625));
+                            uint _e176 = kept;
+                            kept = _e176 + 1u;
                         }
                     }
                 }
@@ -1678,9 +1695,9 @@ kernel void main_(
     }
     if (valid) {
         metal::float4 old = irradiance[pix];
-        metal::float3 _e238 = e;
-        uint _e241 = kept;
-        irradiance[pix] = metal::float4(old.xyz + _e238, old.w + static_cast<float>(_e241));
+        metal::float3 _e191 = e;
+        uint _e194 = kept;
+        irradiance[pix] = metal::float4(old.xyz + _e191, old.w + static_cast<float>(_e194));
         return;
     } else {
         return;

@@ -203,6 +203,10 @@ typedef GpuNearBox type_9[1];
 struct type_10 {
     metal::float3 inner[64];
 };
+struct WorkgroupBox {
+    metal::float3 lo;
+    metal::float3 hi;
+};
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -227,6 +231,7 @@ constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
 constant uint NEAR_BLOCK = 64u;
 constant uint P = 8u;
+constant uint BOX_THREADS = 64u;
 
 float at(
     Table tab,
@@ -678,35 +683,35 @@ uint ies_segment(
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint lo_1 = 0u;
-    uint hi_1 = {};
+    uint lo = 0u;
+    uint hi = {};
     if (n_2 < 2u) {
         return 0u;
     }
-    hi_1 = n_2 - 1u;
+    hi = n_2 - 1u;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e12 = hi_1;
-        uint _e13 = lo_1;
+        uint _e12 = hi;
+        uint _e13 = lo;
         if ((_e12 - _e13) > 1u) {
         } else {
             break;
         }
         {
-            uint _e17 = lo_1;
-            uint _e18 = hi_1;
+            uint _e17 = lo;
+            uint _e18 = hi;
             uint mid = (_e17 + _e18) >> 1u;
             float _e23 = at(tab_1, start + mid, slc_table, _buffer_sizes);
             if (_e23 <= x_6) {
-                lo_1 = mid;
+                lo = mid;
             } else {
-                hi_1 = mid;
+                hi = mid;
             }
         }
     }
-    uint _e25 = lo_1;
+    uint _e25 = lo;
     return _e25;
 }
 
@@ -806,12 +811,12 @@ uint mul_hi_u32_(
 
 uint uniform_index(
     uint n_3,
-    uint hi_2,
-    uint lo_2
+    uint hi_1,
+    uint lo_1
 ) {
-    uint _e3 = mul_lo_u32_(hi_2, n_3);
-    uint _e4 = mul_hi_u32_(hi_2, n_3);
-    uint _e5 = mul_hi_u32_(lo_2, n_3);
+    uint _e3 = mul_lo_u32_(hi_1, n_3);
+    uint _e4 = mul_hi_u32_(hi_1, n_3);
+    uint _e5 = mul_hi_u32_(lo_1, n_3);
     if (_e3 > (4294967295u - _e5)) {
         return _e4 + 1u;
     }
@@ -821,13 +826,13 @@ uint uniform_index(
 uint reservoir_slot(
     uint n_4,
     uint k,
-    uint hi_3,
-    uint lo_3
+    uint hi_2,
+    uint lo_2
 ) {
     if (n_4 <= k) {
         return n_4 - 1u;
     }
-    uint _e7 = uniform_index(n_4, hi_3, lo_3);
+    uint _e7 = uniform_index(n_4, hi_2, lo_2);
     if (_e7 < k) {
         return _e7;
     }
@@ -1001,10 +1006,10 @@ float ray_aabb(
 ) {
     metal::float3 t0_ = (bmin_1 - o) * inv_d;
     metal::float3 t1_ = (bmax_1 - o) * inv_d;
-    metal::float3 lo_4 = metal::min(t0_, t1_);
-    metal::float3 hi_4 = metal::max(t0_, t1_);
-    float t_in = metal::max(metal::max(lo_4.x, lo_4.y), metal::max(lo_4.z, 0.0));
-    float t_out = metal::min(metal::min(hi_4.x, hi_4.y), metal::min(hi_4.z, t_max));
+    metal::float3 lo_3 = metal::min(t0_, t1_);
+    metal::float3 hi_3 = metal::max(t0_, t1_);
+    float t_in = metal::max(metal::max(lo_3.x, lo_3.y), metal::max(lo_3.z, 0.0));
+    float t_out = metal::min(metal::min(hi_3.x, hi_3.y), metal::min(hi_3.z, t_max));
     if (t_in <= t_out) {
         return t_in;
     }
@@ -1096,14 +1101,14 @@ float ray_triangle(
     bool local_7 = {};
     metal::float3 e1_2 = b_6 - a_7;
     metal::float3 e2_2 = c_8 - a_7;
-    metal::float3 p_3 = metal::cross(d, e2_2);
-    float det = metal::dot(e1_2, p_3);
+    metal::float3 p_4 = metal::cross(d, e2_2);
+    float det = metal::dot(e1_2, p_4);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
     metal::float3 s_2 = o_1 - a_7;
-    float u_3 = metal::dot(s_2, p_3) * inv;
+    float u_3 = metal::dot(s_2, p_4) * inv;
     if (!((u_3 < 0.0))) {
         local_5 = u_3 > 1.0;
     } else {
@@ -1414,6 +1419,52 @@ metal::float3 diffuse_radiance(
     return emission + ((albedo * INV_PI) * e_1);
 }
 
+WorkgroupBox workgroup_box(
+    uint li_1,
+    metal::float3 p_3,
+    bool has,
+    threadgroup type_10& wg_lo,
+    threadgroup type_10& wg_hi
+) {
+    uint stride = 32u;
+    wg_lo.inner[li_1] = has ? p_3 : metal::float3(300000000000000000000000000000000000000.0);
+    wg_hi.inner[li_1] = has ? p_3 : metal::float3(-300000000000000000000000000000000000000.0);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint2 loop_bound_1 = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e42 = stride;
+            stride = naga_div(_e42, 2u);
+        }
+        loop_init = false;
+        uint _e15 = stride;
+        if (_e15 > 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = stride;
+            if (li_1 < _e18) {
+                metal::float3 _e24 = wg_lo.inner[li_1];
+                uint _e26 = stride;
+                metal::float3 _e29 = wg_lo.inner[li_1 + _e26];
+                wg_lo.inner[li_1] = metal::min(_e24, _e29);
+                metal::float3 _e35 = wg_hi.inner[li_1];
+                uint _e37 = stride;
+                metal::float3 _e40 = wg_hi.inner[li_1 + _e37];
+                wg_hi.inner[li_1] = metal::max(_e35, _e40);
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    metal::float3 _e47 = wg_lo.inner[0];
+    metal::float3 _e50 = wg_hi.inner[0];
+    return WorkgroupBox {_e47, _e50};
+}
+
 struct main_Input {
 };
 kernel void main_(
@@ -1439,92 +1490,55 @@ kernel void main_(
         wg_hi = {};
     }
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    metal::float3 lo = metal::float3(300000000000000000000000000000000000000.0);
-    metal::float3 hi = metal::float3(-300000000000000000000000000000000000000.0);
-    uint stride = 32u;
+    metal::float3 position = metal::float3(0.0);
+    bool lit = false;
     bool local = {};
     uint q_6 = gid.x;
     uint _e6 = params.count;
     bool inside = q_6 < _e6;
     if (inside) {
-        uint _e16 = params.size;
-        uint _e17 = near_block_tx(q_6, _e16);
-        uint _e20 = params.size;
-        uint _e21 = near_block_ty(q_6, _e20);
-        uint _e24 = params.size;
-        uint i_2 = (_e21 * _e24) + _e17;
-        metal::int2 texel_1 = metal::int2(static_cast<int>(_e17), static_cast<int>(_e21));
-        metal::float4 _e32 = rsm_position.read(metal::uint2(texel_1), 0);
-        metal::float3 position = _e32.xyz;
-        metal::float4 _e36 = rsm_normal.read(metal::uint2(texel_1), 0);
-        metal::float3 normal = _e36.xyz;
-        metal::float4 _e40 = rsm_flux.read(metal::uint2(texel_1), 0);
-        float _e44 = params.scale;
-        metal::float3 flux_1 = _e40.xyz * _e44;
-        uint _e48 = params.size;
-        uint _e50 = interleave_slot(_e17, _e21, _e48, P);
-        lights[_e50] = GpuLight {position, LIGHT_VPL, normal, 0.0, metal::float3(0.0), 0.0, flux_1, 0u};
-        ids[_e50] = i_2;
+        uint _e15 = params.size;
+        uint _e16 = near_block_tx(q_6, _e15);
+        uint _e19 = params.size;
+        uint _e20 = near_block_ty(q_6, _e19);
+        uint _e23 = params.size;
+        uint i_2 = (_e20 * _e23) + _e16;
+        metal::int2 texel_1 = metal::int2(static_cast<int>(_e16), static_cast<int>(_e20));
+        metal::float4 _e31 = rsm_position.read(metal::uint2(texel_1), 0);
+        position = _e31.xyz;
+        metal::float4 _e35 = rsm_normal.read(metal::uint2(texel_1), 0);
+        metal::float3 normal = _e35.xyz;
+        metal::float4 _e39 = rsm_flux.read(metal::uint2(texel_1), 0);
+        float _e43 = params.scale;
+        metal::float3 flux_1 = _e39.xyz * _e43;
+        uint _e47 = params.size;
+        uint _e49 = interleave_slot(_e16, _e20, _e47, P);
+        metal::float3 _e52 = position;
+        lights[_e49] = GpuLight {_e52, LIGHT_VPL, normal, 0.0, metal::float3(0.0), 0.0, flux_1, 0u};
+        ids[_e49] = i_2;
         uint _e64 = params.slc;
         bool slc = _e64 != 0u;
         float _e71 = params.exposure;
         float _e74 = params.error_bound;
         uint _e77 = params.mode;
         float _e78 = vpl_rt2_(flux_1, _e71, _e74, _e77);
-        rt2_7[_e50] = slc ? _e78 : 0.0;
+        rt2_7[_e49] = slc ? _e78 : 0.0;
         float _e85 = params.fixed_r2_;
-        r2_5[_e50] = slc ? 0.0 : _e85;
-        near_slots[q_6] = _e50;
-        if (metal::any(flux_1 != metal::float3(0.0))) {
-            lo = position;
-            hi = position;
-        }
+        r2_5[_e49] = slc ? 0.0 : _e85;
+        near_slots[q_6] = _e49;
+        lit = metal::any(flux_1 != metal::float3(0.0));
     }
-    metal::float3 _e96 = lo;
-    wg_lo.inner[li] = _e96;
-    metal::float3 _e99 = hi;
-    wg_hi.inner[li] = _e99;
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    uint2 loop_bound_1 = uint2(4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e129 = stride;
-            stride = naga_div(_e129, 2u);
-        }
-        loop_init = false;
-        uint _e102 = stride;
-        if (_e102 > 0u) {
-        } else {
-            break;
-        }
-        {
-            uint _e105 = stride;
-            if (li < _e105) {
-                metal::float3 _e111 = wg_lo.inner[li];
-                uint _e113 = stride;
-                metal::float3 _e116 = wg_lo.inner[li + _e113];
-                wg_lo.inner[li] = metal::min(_e111, _e116);
-                metal::float3 _e122 = wg_hi.inner[li];
-                uint _e124 = stride;
-                metal::float3 _e127 = wg_hi.inner[li + _e124];
-                wg_hi.inner[li] = metal::max(_e122, _e127);
-            }
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-        }
-    }
+    metal::float3 _e94 = position;
+    bool _e95 = lit;
+    WorkgroupBox _e96 = workgroup_box(li, _e94, _e95, wg_lo, wg_hi);
     if (li == 0u) {
         local = inside;
     } else {
         local = false;
     }
-    bool _e137 = local;
-    if (_e137) {
-        metal::float3 _e143 = wg_lo.inner[0];
-        metal::float3 _e146 = wg_hi.inner[0];
-        near_boxes[wg.x] = GpuNearBox {_e143, 0.0, _e146, 0.0};
+    bool _e102 = local;
+    if (_e102) {
+        near_boxes[wg.x] = GpuNearBox {_e96.lo, 0.0, _e96.hi, 0.0};
         return;
     } else {
         return;

@@ -6,12 +6,12 @@ using metal::uint;
 
 struct _mslBufferSizes {
     uint size0;
-    uint size2;
-    uint size3;
     uint size4;
     uint size5;
     uint size6;
     uint size7;
+    uint size8;
+    uint size9;
 };
 
 struct GpuLight {
@@ -197,11 +197,15 @@ struct BshNode {
     uint light;
     uint pad;
 };
-typedef metal::float4 type_6[1];
-typedef GpuLight type_7[1];
-struct type_8 {
+struct type_6 {
     metal::float3 inner[64];
 };
+struct WorkgroupBox {
+    metal::float3 lo;
+    metal::float3 hi;
+};
+typedef metal::float4 type_7[1];
+typedef GpuLight type_8[1];
 struct type_10 {
     uint inner[1024];
 };
@@ -231,6 +235,7 @@ constant uint NEAR_BLOCK = 64u;
 constant uint P = 8u;
 constant uint TILE = 8u;
 constant uint THREADS = 64u;
+constant uint BOX_THREADS = 64u;
 constant uint MAX_TILE_LIGHTS = 1024u;
 
 float at(
@@ -1101,14 +1106,14 @@ float ray_triangle(
     bool local_9 = {};
     metal::float3 e1_2 = b_6 - a_7;
     metal::float3 e2_2 = c_8 - a_7;
-    metal::float3 p_3 = metal::cross(d, e2_2);
-    float det = metal::dot(e1_2, p_3);
+    metal::float3 p_4 = metal::cross(d, e2_2);
+    float det = metal::dot(e1_2, p_4);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
     metal::float3 s_2 = o_1 - a_7;
-    float u_3 = metal::dot(s_2, p_3) * inv;
+    float u_3 = metal::dot(s_2, p_4) * inv;
     if (!((u_3 < 0.0))) {
         local_7 = u_3 > 1.0;
     } else {
@@ -1454,21 +1459,67 @@ metal::float3 light_normal(
     return metal::float3(0.0);
 }
 
+WorkgroupBox workgroup_box(
+    uint li_1,
+    metal::float3 p_3,
+    bool has,
+    threadgroup type_6& wg_lo,
+    threadgroup type_6& wg_hi
+) {
+    uint stride = 32u;
+    wg_lo.inner[li_1] = has ? p_3 : metal::float3(300000000000000000000000000000000000000.0);
+    wg_hi.inner[li_1] = has ? p_3 : metal::float3(-300000000000000000000000000000000000000.0);
+    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+    uint2 loop_bound_1 = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e42 = stride;
+            stride = naga_div(_e42, 2u);
+        }
+        loop_init = false;
+        uint _e15 = stride;
+        if (_e15 > 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = stride;
+            if (li_1 < _e18) {
+                metal::float3 _e24 = wg_lo.inner[li_1];
+                uint _e26 = stride;
+                metal::float3 _e29 = wg_lo.inner[li_1 + _e26];
+                wg_lo.inner[li_1] = metal::min(_e24, _e29);
+                metal::float3 _e35 = wg_hi.inner[li_1];
+                uint _e37 = stride;
+                metal::float3 _e40 = wg_hi.inner[li_1 + _e37];
+                wg_hi.inner[li_1] = metal::max(_e35, _e40);
+            }
+            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
+        }
+    }
+    metal::float3 _e47 = wg_lo.inner[0];
+    metal::float3 _e50 = wg_hi.inner[0];
+    return WorkgroupBox {_e47, _e50};
+}
+
 struct main_Input {
 };
 kernel void main_(
   metal::uint3 wg [[threadgroup_position_in_grid]]
 , metal::uint3 lid [[thread_position_in_threadgroup]]
 , uint li [[thread_index_in_threadgroup]]
+, threadgroup type_6& wg_lo
+, threadgroup type_6& wg_hi
 , constant VplParams& params [[user(fake0)]]
-, device type_6 const& gb_position [[user(fake0)]]
-, device type_6 const& gb_normal [[user(fake0)]]
-, device type_7 const& lights [[user(fake0)]]
+, device type_7 const& gb_position [[user(fake0)]]
+, device type_7 const& gb_normal [[user(fake0)]]
+, device type_8 const& lights [[user(fake0)]]
 , device type_4 const& rt2_7 [[user(fake0)]]
 , device type_4 const& r2_5 [[user(fake0)]]
-, device type_6& irradiance [[user(fake0)]]
-, threadgroup type_8& wg_lo
-, threadgroup type_8& wg_hi
+, device type_7& irradiance [[user(fake0)]]
 , threadgroup metal::atomic_uint& tile_count
 , threadgroup type_10& tile_lights
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
@@ -1484,7 +1535,6 @@ kernel void main_(
     metal::float4 pos = metal::float4(0.0);
     metal::float3 nrm = metal::float3(0.0);
     bool local_1 = {};
-    uint stride = 32u;
     metal::float3 e = metal::float3(0.0);
     uint kept = 0u;
     uint first = 0u;
@@ -1517,98 +1567,65 @@ kernel void main_(
         local_1 = false;
     }
     bool valid = local_1;
-    metal::float4 _e66 = pos;
-    wg_lo.inner[li] = valid ? _e66.xyz : metal::float3(300000000000000000000000000000000000000.0);
-    metal::float4 _e73 = pos;
-    wg_hi.inner[li] = valid ? _e73.xyz : metal::float3(-300000000000000000000000000000000000000.0);
-    metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-    uint2 loop_bound_1 = uint2(4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e105 = stride;
-            stride = naga_div(_e105, 2u);
-        }
-        loop_init = false;
-        uint _e78 = stride;
-        if (_e78 > 0u) {
-        } else {
-            break;
-        }
-        {
-            uint _e81 = stride;
-            if (li < _e81) {
-                metal::float3 _e87 = wg_lo.inner[li];
-                uint _e89 = stride;
-                metal::float3 _e92 = wg_lo.inner[li + _e89];
-                wg_lo.inner[li] = metal::min(_e87, _e92);
-                metal::float3 _e98 = wg_hi.inner[li];
-                uint _e100 = stride;
-                metal::float3 _e103 = wg_hi.inner[li + _e100];
-                wg_hi.inner[li] = metal::max(_e98, _e103);
-            }
-            metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-        }
-    }
-    metal::float3 lo_4 = wg_lo.inner[0];
-    metal::float3 hi_4 = wg_hi.inner[0];
-    uint _e116 = params.lights_per_subset;
-    uint base_3 = sub * _e116;
+    metal::float4 _e62 = pos;
+    WorkgroupBox _e64 = workgroup_box(li, _e62.xyz, valid, wg_lo, wg_hi);
+    metal::float3 lo_4 = _e64.lo;
+    metal::float3 hi_4 = _e64.hi;
+    uint _e69 = params.lights_per_subset;
+    uint base_3 = sub * _e69;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e227 = first;
-            first = _e227 + MAX_TILE_LIGHTS;
+            uint _e180 = first;
+            first = _e180 + MAX_TILE_LIGHTS;
         }
         loop_init_1 = false;
-        uint _e125 = first;
-        uint _e128 = params.lights_per_subset;
-        if (_e125 < _e128) {
+        uint _e78 = first;
+        uint _e81 = params.lights_per_subset;
+        if (_e78 < _e81) {
         } else {
             break;
         }
         {
-            uint _e130 = first;
-            uint _e135 = params.lights_per_subset;
-            uint end = metal::min(_e130 + MAX_TILE_LIGHTS, _e135);
+            uint _e83 = first;
+            uint _e88 = params.lights_per_subset;
+            uint end = metal::min(_e83 + MAX_TILE_LIGHTS, _e88);
             if (li == 0u) {
                 metal::atomic_store_explicit(&tile_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint _e141 = first;
-            j = _e141 + li;
+            uint _e94 = first;
+            j = _e94 + li;
             uint2 loop_bound_3 = uint2(4294967295u);
             bool loop_init_2 = true;
             while(true) {
                 if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e167 = j;
-                    j = _e167 + THREADS;
+                    uint _e120 = j;
+                    j = _e120 + THREADS;
                 }
                 loop_init_2 = false;
-                uint _e144 = j;
-                if (_e144 < end) {
+                uint _e97 = j;
+                if (_e97 < end) {
                 } else {
                     break;
                 }
                 {
-                    uint _e147 = j;
-                    metal::float3 _e151 = lights[base_3 + _e147].p0_;
-                    uint _e153 = j;
-                    float _e156 = r2_5[base_3 + _e153];
-                    float _e157 = cull_radius(_e156);
-                    bool _e158 = sphere_overlaps_aabb(_e151, _e157, lo_4, hi_4);
-                    if (_e158) {
-                        uint _e161 = metal::atomic_fetch_add_explicit(&tile_count, 1u, metal::memory_order_relaxed);
-                        if (_e161 < MAX_TILE_LIGHTS) {
-                            uint _e166 = j;
-                            tile_lights.inner[_e161] = _e166;
+                    uint _e100 = j;
+                    metal::float3 _e104 = lights[base_3 + _e100].p0_;
+                    uint _e106 = j;
+                    float _e109 = r2_5[base_3 + _e106];
+                    float _e110 = cull_radius(_e109);
+                    bool _e111 = sphere_overlaps_aabb(_e104, _e110, lo_4, hi_4);
+                    if (_e111) {
+                        uint _e114 = metal::atomic_fetch_add_explicit(&tile_count, 1u, metal::memory_order_relaxed);
+                        if (_e114 < MAX_TILE_LIGHTS) {
+                            uint _e119 = j;
+                            tile_lights.inner[_e114] = _e119;
                         }
                     }
                 }
@@ -1625,43 +1642,43 @@ kernel void main_(
                     if (metal::all(loop_bound_4 == uint2(0u))) { break; }
                     loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e225 = k;
-                        k = _e225 + 1u;
+                        uint _e178 = k;
+                        k = _e178 + 1u;
                     }
                     loop_init_3 = false;
-                    uint _e176 = k;
-                    if (_e176 < count) {
+                    uint _e129 = k;
+                    if (_e129 < count) {
                     } else {
                         break;
                     }
                     {
-                        uint _e179 = k;
-                        uint _e181 = tile_lights.inner[_e179];
-                        uint j_1 = base_3 + _e181;
+                        uint _e132 = k;
+                        uint _e134 = tile_lights.inner[_e132];
+                        uint j_1 = base_3 + _e134;
                         GpuLight l_4 = lights[j_1];
-                        metal::float4 _e186 = pos;
-                        metal::float3 v_10 = _e186.xyz - l_4.p0_;
-                        metal::float3 _e191 = nrm;
-                        float _e194 = params.min_d2_;
-                        float _e195 = vpl_transfer(l_4.p1_, _e191, v_10, _e194);
+                        metal::float4 _e139 = pos;
+                        metal::float3 v_10 = _e139.xyz - l_4.p0_;
+                        metal::float3 _e144 = nrm;
+                        float _e147 = params.min_d2_;
+                        float _e148 = vpl_transfer(l_4.p1_, _e144, v_10, _e147);
                         float d2_13 = metal::dot(v_10, v_10);
-                        float _e199 = params.near_r2_;
-                        float _e200 = vpl_far_weight(d2_13, _e199);
-                        float _e203 = r2_5[j_1];
-                        bool _e204 = slc_keep(_e203, d2_13);
-                        if (_e204) {
-                            local_2 = _e200 > 0.0;
+                        float _e152 = params.near_r2_;
+                        float _e153 = vpl_far_weight(d2_13, _e152);
+                        float _e156 = r2_5[j_1];
+                        bool _e157 = slc_keep(_e156, d2_13);
+                        if (_e157) {
+                            local_2 = _e153 > 0.0;
                         } else {
                             local_2 = false;
                         }
-                        bool _e210 = local_2;
-                        if (_e210) {
-                            metal::float3 _e211 = e;
-                            float _e215 = rt2_7[j_1];
-                            float _e216 = slc_weight(_e215, d2_13);
-                            e = _e211 + (l_4.intensity * ((_e195 * _e216) * _e200));
-                            uint _e221 = kept;
-                            kept = _e221 + 1u;
+                        bool _e163 = local_2;
+                        if (_e163) {
+                            metal::float3 _e164 = e;
+                            float _e168 = rt2_7[j_1];
+                            float _e169 = slc_weight(_e168, d2_13);
+                            e = _e164 + (l_4.intensity * ((_e148 * _e169) * _e153));
+                            uint _e174 = kept;
+                            kept = _e174 + 1u;
                         }
                     }
                 }
@@ -1670,9 +1687,9 @@ kernel void main_(
         }
     }
     if (valid) {
-        metal::float3 _e232 = e;
-        uint _e233 = kept;
-        irradiance[pix] = metal::float4(_e232, static_cast<float>(_e233));
+        metal::float3 _e185 = e;
+        uint _e186 = kept;
+        irradiance[pix] = metal::float4(_e185, static_cast<float>(_e186));
         return;
     } else {
         return;
