@@ -50,27 +50,29 @@ fn slc_expectation_equals_unculled_per_pixel() {
     assert!(culled_somewhere, "the error bound culled nothing: the test would be vacuous");
 }
 
-/// Monte Carlo over seeds: the image mean of S independent SLC frames
-/// converges to the unculled image's mean, |mean − truth| ≤ 5 σ̂/√S with σ̂
-/// the sample standard deviation of the per-frame image means (about a
+/// Monte Carlo over seeds: per channel, the image mean of S independent
+/// SLC frames converges to the unculled image's, |mean − truth| ≤ 5 σ̂/√S
+/// with σ̂ the sample standard deviation of the per-frame means (about a
 /// thousand pixels of a thousand independent lights each, so the CLT holds).
 #[test]
 fn slc_mean_over_seeds_converges_to_unculled() {
     let ctx = VplContext::new(&Scene::cornell_box(), 32, 32, 32, None).unwrap();
-    let truth = ctx.render(&settings(VplMethod::None, 0)).unwrap().image.mean();
+    let truth = ctx.render(&settings(VplMethod::None, 0)).unwrap().image.channel_means();
     const S: u32 = 256;
-    let means: Vec<f64> = (0..S)
+    let means: Vec<[f64; 3]> = (0..S)
         .map(|f| {
             let img = ctx.render(&settings(VplMethod::Slc, f)).unwrap().image;
             assert!(img.is_finite());
-            img.mean()
+            img.channel_means()
         })
         .collect();
-    let m = means.iter().sum::<f64>() / S as f64;
-    let var = means.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (S as f64 - 1.0);
-    assert!(var > 0.0, "frames do not vary: culling not exercised");
-    let bound = 5.0 * (var / S as f64).sqrt();
-    assert!((m - truth).abs() <= bound, "mean over seeds {m} vs unculled {truth} (5σ bound {bound})");
+    for c in 0..3 {
+        let m = means.iter().map(|x| x[c]).sum::<f64>() / S as f64;
+        let var = means.iter().map(|x| (x[c] - m).powi(2)).sum::<f64>() / (S as f64 - 1.0);
+        assert!(var > 0.0, "channel {c}: frames do not vary: culling not exercised");
+        let bound = 5.0 * (var / S as f64).sqrt();
+        assert!((m - truth[c]).abs() <= bound, "channel {c}: mean over seeds {m} vs unculled {} (5σ bound {bound})", truth[c]);
+    }
 }
 
 /// Clamped ranges drop distant lights without reweighting: the image is
@@ -82,9 +84,11 @@ fn clamped_ranges_darken() {
     let none = ctx.render(&settings(VplMethod::None, 0)).unwrap().image;
     let clamp = ctx.render(&VplSettings { range: 0.1, ..settings(VplMethod::Clamp, 0) }).unwrap().image;
     let direct_only = ctx.render(&VplSettings { range: 1e-6, ..settings(VplMethod::Clamp, 0) }).unwrap().image;
-    let indirect = |img: &slc_scene::image::Image| img.mean() - direct_only.mean();
-    assert!(indirect(&none) > 0.0);
-    assert!(indirect(&clamp) < 0.8 * indirect(&none), "clamp {} vs none {}", indirect(&clamp), indirect(&none));
+    let indirect = |img: &slc_scene::image::Image, c: usize| img.channel_means()[c] - direct_only.channel_means()[c];
+    for c in 0..3 {
+        assert!(indirect(&none, c) > 0.0);
+        assert!(indirect(&clamp, c) < 0.8 * indirect(&none, c), "channel {c}: clamp {} vs none {}", indirect(&clamp, c), indirect(&none, c));
+    }
     // Pixel-wise: clamp never exceeds none (it only removes terms).
     for (c, n) in clamp.data.iter().zip(&none.data) {
         assert!(c.cmple(*n + Vec3::splat(1e-6)).all());

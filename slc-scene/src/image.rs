@@ -34,6 +34,14 @@ impl Image {
         self.data.iter().map(|p| (p.x + p.y + p.z) as f64).sum::<f64>() / (3.0 * self.data.len() as f64)
     }
 
+    /// Mean of each channel (`[r, g, b]`) over all pixels: what a test
+    /// compares, so an error in one channel is not diluted by the others.
+    pub fn channel_means(&self) -> [f64; 3] {
+        let n = self.data.len().max(1) as f64;
+        let s = self.data.iter().fold([0.0f64; 3], |a, p| [a[0] + p.x as f64, a[1] + p.y as f64, a[2] + p.z as f64]);
+        s.map(|c| c / n)
+    }
+
     /// `true` when every channel of every pixel is finite.
     pub fn is_finite(&self) -> bool {
         self.data.iter().all(|p| p.is_finite())

@@ -44,18 +44,18 @@ fn scene(extra_intensity: f32) -> (Scene, Vec<Light>) {
     (s, lights)
 }
 
-/// Per-pass images (mean RGB per pixel) from one pass at a time, as
-/// differences of the accumulated sums. Asserts every accumulated pixel is
-/// finite and non-negative.
+/// Per-pass images (RGB per pixel, `3·pixel + channel`) from one pass at a
+/// time, as differences of the accumulated sums. Asserts every accumulated
+/// pixel is finite and non-negative.
 fn passes(mut one: impl FnMut(&mut PtRender), n: u32) -> Vec<Vec<f64>> {
     let mut acc = PtRender::new(W, H);
-    let mut prev = vec![0.0f64; (W * H) as usize];
+    let mut prev = vec![0.0f64; 3 * (W * H) as usize];
     (0..n)
         .map(|_| {
             one(&mut acc);
             let img = acc.image();
             assert!(img.data.iter().all(|v| v.is_finite() && v.min_element() >= 0.0), "a pixel is NaN, infinite or negative");
-            let total: Vec<f64> = img.data.iter().map(|v| (v.x + v.y + v.z) as f64 / 3.0 * acc.passes as f64).collect();
+            let total: Vec<f64> = img.data.iter().flat_map(|v| v.to_array()).map(|c| c as f64 * acc.passes as f64).collect();
             let pass: Vec<f64> = total.iter().zip(&prev).map(|(t, p)| t - p).collect();
             prev = total;
             pass
@@ -63,29 +63,39 @@ fn passes(mut one: impl FnMut(&mut PtRender), n: u32) -> Vec<Vec<f64>> {
         .collect()
 }
 
-/// Per-pixel mean and variance of the mean, and the image mean's mean and σ.
+/// Per-pixel mean (of the channels) and variance of that mean, and per
+/// channel the image mean's mean and σ.
 struct Stats {
     mean: Vec<f64>,
     var_of_mean: Vec<f64>,
-    image_mean: f64,
-    image_sigma: f64,
+    image_mean: [f64; 3],
+    image_sigma: [f64; 3],
 }
 
 fn stats(p: &[Vec<f64>]) -> Stats {
     let n = p.len() as f64;
-    let px = p[0].len();
-    let mean: Vec<f64> = (0..px).map(|i| p.iter().map(|x| x[i]).sum::<f64>() / n).collect();
-    let var_of_mean = (0..px).map(|i| p.iter().map(|x| (x[i] - mean[i]).powi(2)).sum::<f64>() / (n - 1.0) / n).collect();
-    let means: Vec<f64> = p.iter().map(|x| x.iter().sum::<f64>() / px as f64).collect();
-    let image_mean = means.iter().sum::<f64>() / n;
-    let var = means.iter().map(|m| (m - image_mean).powi(2)).sum::<f64>() / (n - 1.0);
-    Stats { mean, var_of_mean, image_mean, image_sigma: (var / n).sqrt() }
+    let px = p[0].len() / 3;
+    let grey = |x: &[f64], i: usize| (x[3 * i] + x[3 * i + 1] + x[3 * i + 2]) / 3.0;
+    let mean: Vec<f64> = (0..px).map(|i| p.iter().map(|x| grey(x, i)).sum::<f64>() / n).collect();
+    let var_of_mean = (0..px).map(|i| p.iter().map(|x| (grey(x, i) - mean[i]).powi(2)).sum::<f64>() / (n - 1.0) / n).collect();
+    let (mut image_mean, mut image_sigma) = ([0.0; 3], [0.0; 3]);
+    for c in 0..3 {
+        let means: Vec<f64> = p.iter().map(|x| x.iter().skip(c).step_by(3).sum::<f64>() / px as f64).collect();
+        image_mean[c] = means.iter().sum::<f64>() / n;
+        let var = means.iter().map(|m| (m - image_mean[c]).powi(2)).sum::<f64>() / (n - 1.0);
+        image_sigma[c] = (var / n).sqrt();
+    }
+    Stats { mean, var_of_mean, image_mean, image_sigma }
 }
 
+/// Each channel's image mean agrees within 5σ of the difference.
 fn assert_means_agree(what: &str, a: &Stats, b: &Stats) {
-    let bound = 5.0 * (a.image_sigma.powi(2) + b.image_sigma.powi(2)).sqrt();
-    eprintln!("{what}: image means {:.5} vs {:.5}, |Δ| = {:.5}, 5σ = {bound:.5}", a.image_mean, b.image_mean, (a.image_mean - b.image_mean).abs());
-    assert!((a.image_mean - b.image_mean).abs() <= bound, "{what}: image means {} vs {} (5σ = {bound})", a.image_mean, b.image_mean);
+    for c in 0..3 {
+        let (ma, mb) = (a.image_mean[c], b.image_mean[c]);
+        let bound = 5.0 * (a.image_sigma[c].powi(2) + b.image_sigma[c].powi(2)).sqrt();
+        eprintln!("{what} channel {c}: image means {ma:.5} vs {mb:.5}, |Δ| = {:.5}, 5σ = {bound:.5}", (ma - mb).abs());
+        assert!((ma - mb).abs() <= bound, "{what} channel {c}: image means {ma} vs {mb} (5σ = {bound})");
+    }
 }
 
 fn all_finite(p: &[Vec<f64>]) -> bool {
@@ -117,7 +127,7 @@ fn gpu_path_tracer_matches_cpu_and_unculled_in_expectation() {
     for method in PtMethod::ALL {
         let Some((g, c, u)) = run(method, 0.05, 1.0, 400) else { return };
         let name = method.name();
-        assert!(g.image_mean > 0.0);
+        assert!(g.image_mean.iter().all(|&m| m > 0.0));
         assert_means_agree(&format!("GPU vs CPU {name}"), &g, &c);
         assert_means_agree(&format!("GPU {name} vs CPU uniform (unculled)"), &g, &u);
         let px = g.mean.len() as f64;
@@ -133,7 +143,7 @@ fn gpu_path_tracer_matches_cpu_and_unculled_in_expectation() {
 fn gpu_path_tracer_hard_cases() {
     for (eps, intensity) in [(1e-30f32, 1.0f32), (1e30, 1.0), (0.05, 1e36), (0.05, 1e-40)] {
         let Some((g, c, _)) = run(PtMethod::SlcReservoir, eps, intensity, 40) else { return };
-        assert!(g.image_mean.is_finite());
+        assert!(g.image_mean.iter().all(|m| m.is_finite()));
         assert_means_agree(&format!("ε = {eps:e}, intensity ×{intensity:e}"), &g, &c);
     }
 }
