@@ -7,6 +7,10 @@
 use crate::wgsl::*;
 
 crate::shared! {
+    /// Depth given to a pixel without a surface: far beyond any scene, so
+    /// its neighbours' relative depth test gives it weight 0.
+    pub const DEPTH_NONE: f32 = 1e30;
+
     /// Relative depth tolerance σ of [`bilateral_weight`].
     pub const DEPTH_SIGMA: f32 = 0.05;
 
@@ -16,11 +20,52 @@ crate::shared! {
     /// else the mix of the covered subsets leaves a P-periodic pattern.
     pub const COVER_WEIGHT: f32 = 0.1;
 
+    /// `1/(σ z)` for a pixel at depth `z`: the `inv_sz` of
+    /// [`bilateral_weight`].
+    pub fn inv_sigma_z(z: f32) -> f32 {
+        return 1.0 / (DEPTH_SIGMA * z);
+    }
+
+    /// First column (or row) of the `size`-wide window around pixel
+    /// coordinate `x`: `max(x − ⌊size/2⌋, 0)`.
+    pub fn window_start(x: u32, size: u32) -> u32 {
+        let half: u32 = size / 2;
+        return max(x, half) - half;
+    }
+
+    /// One past the last column (or row) of that window in an image
+    /// `extent` pixels wide: `min(x + size − ⌊size/2⌋, extent)`.
+    pub fn window_end(x: u32, size: u32, extent: u32) -> u32 {
+        return min(x + size - size / 2, extent);
+    }
+
+    /// The window the filter uses where the `P × P` one misses a VPL
+    /// subset: `2P × 2P`.
+    pub fn wide_window(period: u32) -> u32 {
+        return 2 * period;
+    }
+
+    /// `true` when a `P × P` window with `covered` neighbours heavier than
+    /// [`COVER_WEIGHT`] misses a VPL subset (fewer than `P²`), so the filter
+    /// widens to [`wide_window`].
+    pub fn misses_subset(covered: u32, period: u32) -> bool {
+        return covered < period * period;
+    }
+
+    /// The filtered irradiance: the weighted mean `sum/weight`, or the
+    /// pixel's own `e` where no neighbour weighs anything.
+    pub fn filtered_irradiance(e: vec3f, sum: vec3f, weight: f32) -> vec3f {
+        if weight > 0.0 {
+            return sum / weight;
+        }
+        return e;
+    }
+
     /// Weight of a neighbour with normal `nj` at depth `zj` for a pixel with
     /// normal `n` at depth `z`: `max(n·nj, 0)^16 · max(1 − δ², 0)²`,
     /// `δ = (zj − z)·inv_sz` with `inv_sz = 1/(σ z)` (a compact-support
     /// Tukey kernel in relative depth). A neighbour without a surface (depth
-    /// 1e30, zero normal) gets weight 0.
+    /// [`DEPTH_NONE`], zero normal) gets weight 0.
     pub fn bilateral_weight(n: vec3f, nj: vec3f, z: f32, zj: f32, inv_sz: f32) -> f32 {
         let dn: f32 = max(dot(n, nj), 0.0);
         let dn2: f32 = dn * dn;

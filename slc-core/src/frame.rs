@@ -53,6 +53,21 @@ crate::shared! {
         return e * max(dot(n, to_light), 0.0);
     }
 
+    /// Width at the receiver of one texel of a perspective light map of
+    /// `size²` texels and half-extent `extent` (`tan` of the half-angle), for
+    /// a receiver at distance `d` from the light and depth `z` along its
+    /// axis: `2·extent·d²/(size·z)` (the texel's width `2·extent·z/size` at
+    /// depth `z`, widened by `d/z` toward the ray).
+    pub fn perspective_texel_width(extent: f32, d: f32, z: f32, size: f32) -> f32 {
+        return 2.0 * extent * d * d / (size * z);
+    }
+
+    /// Width of one texel of an orthographic light map of `size²` texels
+    /// and half-extent `extent`: `2·extent/size`.
+    pub fn ortho_texel_width(extent: f32, size: f32) -> f32 {
+        return 2.0 * extent / size;
+    }
+
     /// Depth bias of a shadow-map test for texels `texel` wide at the
     /// receiver, lit at cosine `cos_light`: one and a half texels plus the
     /// slope `tan θ` texels (θ clamped below 88.9°), so a lit surface never

@@ -18,7 +18,7 @@
 //! lights, `8 × 8` RSM texels each ([`near_block_index`]), whose boxes are
 //! culled against a tile first.
 
-use crate::wgsl::builtins::clamp;
+use crate::wgsl::builtins::{clamp, to_f32};
 
 crate::shared! {
     /// Subset of pixel (or RSM texel) `(x, y)` for period `P > 0`:
@@ -41,6 +41,13 @@ crate::shared! {
     pub fn interleave_slot_linear(i: u32, per_subset: u32, period: u32) -> u32 {
         let subsets: u32 = period * period;
         return (i % subsets) * per_subset + i / subsets;
+    }
+
+    /// Flux scale of an interleaved VPL, `P²` for period `P`: a pixel
+    /// shades one subset of `P²`, so each of its VPLs stands for `P²`
+    /// (the near field, shaded by every pixel, undoes it).
+    pub fn interleave_flux_scale(period: u32) -> f32 {
+        return to_f32(period * period);
     }
 
     /// Lights per near-field block: an `8 × 8` patch of RSM texels, or 64

@@ -10,7 +10,7 @@
 
 use crate::LightError;
 use crate::ies::IesProfile;
-use crate::range::{intensity_measure, slc_weight, threshold_range2};
+use crate::range::{intensity_measure, slc_keep, slc_weight, threshold_range2};
 use crate::sphere::Sphere;
 use crate::wgsl::*;
 use alloc::sync::Arc;
@@ -52,6 +52,26 @@ crate::shared! {
     /// Multiplies the light's intensity toward the point.
     pub fn connection_factor(cos_x: f32, d2: f32, rt2: f32, w: f32) -> f32 {
         return cos_x * inverse_square(d2) * slc_weight(rt2, d2) * w;
+    }
+
+    /// Cosine at shading point `x` of the connection to point `y` sampled on
+    /// a light with squared random range `r2`, or 0 where it carries no
+    /// light: the roulette drops it (`slc_keep(r2, d²)` fails; `r2 = +∞`
+    /// keeps all), `y = x`, or the light arrives from below the shading
+    /// normal `n` or the surface itself (geometric normal `ng`, on `n`'s
+    /// side). Both backends' next-event estimation test a pick with it.
+    pub fn connection_cosine(x: vec3f, y: vec3f, n: vec3f, ng: vec3f, r2: f32) -> f32 {
+        let v: vec3f = x - y;
+        let d2: f32 = dot(v, v);
+        if !slc_keep(r2, d2) || !(d2 > 0.0) {
+            return 0.0;
+        }
+        let w: vec3f = v / sqrt(d2);
+        let cos_x: f32 = -dot(n, w);
+        if cos_x <= 0.0 || dot(ng, w) >= 0.0 {
+            return 0.0;
+        }
+        return cos_x;
     }
 
     /// VPL cosine lobe per unit flux: `I(w)/Φ = max(n·w, 0)/π`, so
@@ -286,8 +306,7 @@ impl IesLight {
     }
     /// Candela toward unit direction `w` (no tint).
     pub fn candela(&self, w: Vec3) -> f32 {
-        let side = self.reference.cross(self.nadir);
-        crate::ies::ies_candela_dir(self.profile.table(), 0, dot(w, self.nadir), dot(w, self.reference), dot(w, side))
+        crate::ies::ies_light_candela(self.profile.table(), 0, self.nadir, self.reference, w)
     }
 }
 

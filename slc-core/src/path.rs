@@ -1,6 +1,7 @@
 //! Path-tracing steps both backends take the same way: the camera ray
 //! through a pixel, and Russian roulette on path length.
 
+use crate::ray::F32_MAX;
 use crate::wgsl::*;
 
 crate::shared! {
@@ -13,6 +14,42 @@ crate::shared! {
         let sx: f32 = 2.0 * px / w - 1.0;
         let sy: f32 = 1.0 - 2.0 * py / h;
         return normalize(forward + right * sx + up * sy);
+    }
+
+    /// Image coordinate of a pixel sample: pixel `coord` (row or column)
+    /// plus a uniform `u ∈ [0, 1)` across it (`u = ½` is its centre).
+    pub fn jittered_pixel(coord: u32, u: f32) -> f32 {
+        return to_f32(coord) + u;
+    }
+
+    /// Russian roulette on path length starts at this depth (the third
+    /// bounce; depth 0 is the camera ray's hit).
+    pub const ROULETTE_DEPTH: u32 = 2;
+
+    /// `true` when the path plays Russian roulette after the bounce at
+    /// `depth`.
+    pub fn plays_roulette(depth: u32) -> bool {
+        return depth >= ROULETTE_DEPTH;
+    }
+
+    /// `true` when a ray along `dir` sees the emission of a surface with
+    /// geometric normal `gn`: emitters are one-sided, like the triangle
+    /// lights, and shine to the side `gn` points to.
+    pub fn sees_emission(gn: vec3f, dir: vec3f) -> bool {
+        return dot(gn, dir) < 0.0;
+    }
+
+    /// `true` when a sampled direction `nd` continues the path: above the
+    /// shading normal `n` and above the surface itself (`ng`, facing the
+    /// incoming ray); a direction below either ends it.
+    pub fn continues_path(nd: vec3f, n: vec3f, ng: vec3f) -> bool {
+        return dot(nd, n) > 0.0 && dot(nd, ng) > 0.0;
+    }
+
+    /// `true` when every component of `v` is finite (NaN compares false):
+    /// a contribution that is not is dropped.
+    pub fn finite3(v: vec3f) -> bool {
+        return abs(v.x) <= F32_MAX && abs(v.y) <= F32_MAX && abs(v.z) <= F32_MAX;
     }
 
     /// Survival probability of Russian roulette on path length for

@@ -6,6 +6,40 @@
 use crate::wgsl::*;
 
 crate::shared! {
+    /// The largest finite `f32`: the far end of an unbounded ray, the
+    /// bounds of an empty box, and the finiteness test's limit.
+    pub const F32_MAX: f32 = 3.4028235e38;
+
+    /// How far a ray leaving a surface starts from it, along the geometric
+    /// normal facing the ray: `10⁻⁵` of the scene's bounding-box diagonal
+    /// (path tracers' bounces and light connections, the VPL reference's and
+    /// the RSM's rays).
+    pub fn surface_offset(diag: f32) -> f32 {
+        return 0.00001 * diag;
+    }
+
+    /// The nearest hit a path's ray accepts, `10⁻⁶·diag`.
+    pub fn ray_t_min(diag: f32) -> f32 {
+        return 0.000001 * diag;
+    }
+
+    /// Margin kept free at both ends of a shadow segment of length `len`,
+    /// `10⁻⁴·len`, so the end points' own surfaces do not occlude it.
+    pub fn shadow_margin(len: f32) -> f32 {
+        return 0.0001 * len;
+    }
+
+    /// `1/x`, with `|x| < 10⁻³⁰` (zero included) taken as `10⁻³⁰`: a ray
+    /// direction's inverse for the slab test, finite for an axis-parallel ray.
+    pub fn ray_inverse(x: f32) -> f32 {
+        return 1.0 / select(x, 0.000000000000000000000000000001, abs(x) < 0.000000000000000000000000000001);
+    }
+
+    /// [`ray_inverse`] of each component of `d`.
+    pub fn ray_inverse3(d: vec3f) -> vec3f {
+        return vec3f(ray_inverse(d.x), ray_inverse(d.y), ray_inverse(d.z));
+    }
+
     /// Entry distance of a ray `o + t·d` (with `inv_d = 1/d`) into the box
     /// `[bmin, bmax]` within `[0, t_max]`, or `-1` when it misses (slab test,
     /// Kay & Kajiya 1986).

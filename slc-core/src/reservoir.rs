@@ -56,6 +56,15 @@ crate::shared! {
         return k;
     }
 
+    /// Candidates a reservoir counts at most (`u32::MAX`); later ones are
+    /// ignored, so the count never wraps.
+    pub const RESERVOIR_FULL: u32 = 4294967295;
+
+    /// `true` while a reservoir that has seen `n` candidates takes another.
+    pub fn reservoir_takes(n: u32) -> bool {
+        return n < RESERVOIR_FULL;
+    }
+
     /// Weight of each held light after `n` candidates: `max(n/k, 1)`.
     pub fn reservoir_weight(n: u32, k: u32) -> f32 {
         return max(to_f32(n) / to_f32(k), 1.0);
@@ -73,6 +82,25 @@ crate::shared! {
     /// inverse of its expected count.
     pub fn weighted_pick_weight(w_sum: f32, w: f32, k: u32) -> f32 {
         return w_sum / (to_f32(k) * w);
+    }
+
+    /// Probability that a `k`-slot reservoir at a point where the traversal
+    /// counted `seen` in-range lights selects a given light, independent of
+    /// that light's own ξ (what MIS needs): `1/max((others + 1)/k, 1)`, with
+    /// `others = seen − 1` when `in_range` says the light was one of the
+    /// `seen` (never below 0), else `others = seen`.
+    pub fn reservoir_select_pdf(seen: u32, in_range: bool, k: u32) -> f32 {
+        let mut others: u32 = seen;
+        if in_range && seen > 0 {
+            others = seen - 1;
+        }
+        return 1.0 / reservoir_weight(others + 1, k);
+    }
+
+    /// Light `⌊u·n⌋` (at most `n − 1`) of `n > 0`, for uniform `u ∈ [0, 1)`:
+    /// the uniform one-light pick, each light with probability `1/n`.
+    pub fn uniform_light(u: f32, n: u32) -> u32 {
+        return min(to_u32(u * to_f32(n)), n - 1);
     }
 }
 
@@ -103,9 +131,11 @@ impl<const K: usize> Reservoir<K> {
     /// Offers `item` with 64 random bits `(hi, lo)`. After `u32::MAX`
     /// candidates the count saturates and further items are ignored.
     pub fn push(&mut self, item: u32, hi: u32, lo: u32) {
-        let Some(n) = self.n.checked_add(1) else { return };
-        self.n = n;
-        let s = reservoir_slot(n, Self::K32, hi, lo);
+        if !reservoir_takes(self.n) {
+            return;
+        }
+        self.n += 1;
+        let s = reservoir_slot(self.n, Self::K32, hi, lo);
         if s < Self::K32 {
             self.slots[s as usize] = item;
         }

@@ -38,6 +38,33 @@ crate::shared! {
         return xi_from_bits(add_wrap_u32(pcg_hash(pcg_hash(pcg_hash(seed)) ^ light), reverse_bits(frame)));
     }
 
+    /// `⌊2³²/φ⌋`, the golden-ratio increment: xored into a point's stream it
+    /// starts the independent stream that samples its picks, added to a pass
+    /// index the one of its camera rays.
+    pub const PICK_STREAM: u32 = 2654435769;
+
+    /// Random stream of shading point `point` in frame (or pass, or path
+    /// depth) `frame` for seed `seed`: `h(seed ⊕ h(point ⊕ h(frame)))`, `h` =
+    /// [`pcg_hash`]. The traversal's reservoir draws from it.
+    pub fn point_stream(seed: u32, point: u32, frame: u32) -> u32 {
+        return pcg_hash(seed ^ pcg_hash(point ^ pcg_hash(frame)));
+    }
+
+    /// The stream that samples a point's picks (a position on each picked
+    /// light), independent of the traversal's: `h(stream ⊕ PICK_STREAM)`
+    /// for the point's [`point_stream`].
+    pub fn pick_stream(stream: u32) -> u32 {
+        return pcg_hash(stream ^ PICK_STREAM);
+    }
+
+    /// Random stream of the path through pixel `pixel` in pass
+    /// `pass_index`: its camera jitter, BSDF samples and roulette,
+    /// `point_stream(seed, pixel, pass_index + PICK_STREAM)` (mod 2³²; apart
+    /// from the connection streams, which take the path depth as frame).
+    pub fn path_stream(seed: u32, pixel: u32, pass_index: u32) -> u32 {
+        return point_stream(seed, pixel, add_wrap_u32(pass_index, PICK_STREAM));
+    }
+
     /// Bit `k` of the result is bit `31 − k` of `x` (swaps of halves, bytes,
     /// nibbles, pairs and bits; WGSL's `reverseBits` has no MSL 1.x
     /// translation).

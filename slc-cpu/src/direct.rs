@@ -14,10 +14,10 @@
 use glam::Vec3;
 use rayon::prelude::*;
 use slc_core::bsh::Bsh;
-use slc_core::light::{Light, connection_factor};
-use slc_core::range::{RangeParams, random_range2, slc_keep};
+use slc_core::light::{Light, connection_cosine, connection_factor};
+use slc_core::range::{RangeParams, random_range2};
 use slc_core::reservoir::Reservoir;
-use slc_core::xi::{pcg_hash, xi_for, xi_from_bits};
+use slc_core::xi::{pcg_hash, pick_stream, point_stream, xi_for, xi_from_bits};
 use slc_scene::RenderError;
 use slc_scene::lights::{DIRECT_K, Direct, LightSet};
 
@@ -47,7 +47,7 @@ impl DirectLights {
         let this = &*self;
         Ok((0..points.len())
             .into_par_iter()
-            .map(|i| this.shade_point(points[i], normals[i], &rt2, &r2, pcg_hash(seed ^ pcg_hash(i as u32 ^ pcg_hash(frame)))))
+            .map(|i| this.shade_point(points[i], normals[i], &rt2, &r2, point_stream(seed, i as u32, frame)))
             .collect())
     }
 
@@ -62,7 +62,7 @@ impl DirectLights {
             res.push(l, hi, h);
         });
         let w_res = res.weight();
-        let mut h = pcg_hash(seed ^ 2654435769);
+        let mut h = pick_stream(seed);
         let mut e = Vec3::ZERO;
         for &li in res.picks() {
             h = pcg_hash(h);
@@ -74,17 +74,15 @@ impl DirectLights {
                 Light::Triangle(t) => t.sample(u1, u2),
                 _ => l.bound().center,
             };
-            let v = x - y;
-            let d2 = v.dot(v);
-            if !slc_keep(r2[li as usize], d2) || d2 <= 0.0 {
-                continue;
-            }
-            let w = v / d2.sqrt();
-            let cos_x = -n.dot(w);
+            // Unshadowed, and the shading normal is the surface's (as the
+            // GPU kernel passes it).
+            let cos_x = connection_cosine(x, y, n, n, r2[li as usize]);
             if cos_x <= 0.0 {
                 continue;
             }
-            e += l.intensity(w) * connection_factor(cos_x, d2, rt2[li as usize], w_res);
+            let v = x - y;
+            let d2 = v.dot(v);
+            e += l.intensity(v / d2.sqrt()) * connection_factor(cos_x, d2, rt2[li as usize], w_res);
         }
         Direct { irradiance: e, in_range: res.seen() }
     }

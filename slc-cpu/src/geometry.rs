@@ -61,7 +61,7 @@ impl Geometry {
         if !(len > 0.0) {
             return false;
         }
-        let eps = 1e-4 * len;
+        let eps = slc_core::ray::shadow_margin(len);
         let ray = Ray::new(Vec3A::from(a), Vec3A::from(d / len), eps, len - eps);
         let idx = &self.bvh.primitive_indices;
         !self.bvh.ray_traverse_miss(ray, |r, id| self.tris[idx[id] as usize].intersect(r))

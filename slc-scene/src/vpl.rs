@@ -265,7 +265,9 @@ impl Vpls {
                 block
                     .iter()
                     .filter(|&&i| self.flux[i] != Vec3::ZERO)
-                    .fold((Vec3::splat(3.0e38), Vec3::splat(-3.0e38)), |(lo, hi), &i| (lo.min(self.position[i]), hi.max(self.position[i])))
+                    .fold((Vec3::splat(slc_core::ray::F32_MAX), Vec3::splat(-slc_core::ray::F32_MAX)), |(lo, hi), &i| {
+                        (lo.min(self.position[i]), hi.max(self.position[i]))
+                    })
             })
             .collect()
     }

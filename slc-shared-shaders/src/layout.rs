@@ -442,6 +442,14 @@ pub fn pack_light_bvh(nodes: &[slc_core::light_bvh::LightBvhNode]) -> Vec<GpuLig
         .collect()
 }
 
+impl GpuLight {
+    /// A VPL at `position` with unit `normal` and `flux` (the layout
+    /// `vpl_pack` writes on the GPU): the one place the host encodes it.
+    pub fn vpl(position: vec3f, normal: vec3f, flux: vec3f) -> GpuLight {
+        GpuLight { p0: position, kind: LIGHT_VPL, p1: normal, a: 0.0, p2: vec3f(0.0, 0.0, 0.0), b: 0.0, intensity: flux, ies_base: 0 }
+    }
+}
+
 /// The lights as the kernels read them, and the IES table (`slc_table`)
 /// holding each distinct profile once (a light's `ies_base` is its offset).
 /// The table is never empty (a zero stands in), since a binding cannot be.
@@ -462,9 +470,7 @@ pub fn pack_lights(lights: &[Light]) -> (Vec<GpuLight>, Vec<f32>) {
         };
         match l {
             Light::Point(_) => g.kind = LIGHT_POINT,
-            Light::Vpl(v) => {
-                (g.kind, g.p1, g.intensity) = (LIGHT_VPL, v.normal(), v.flux());
-            }
+            Light::Vpl(v) => g = GpuLight::vpl(v.position(), v.normal(), v.flux()),
             Light::Spot(s) => {
                 let (cos_outer, cos_inner) = s.cone_cosines();
                 (g.kind, g.p1, g.a, g.b) = (LIGHT_SPOT, s.direction(), cos_outer, cos_inner);

@@ -495,6 +495,14 @@ pub fn templates() -> impl Iterator<Item = (&'static str, &'static str)> {
     TEMPLATES.iter().copied().filter(|(n, _)| *n != "layout")
 }
 
+/// Workgroup memory of `vpl_tiled` in bytes for a `tile × tile` workgroup
+/// and a light list of `max_tile_lights` slots: two `vec3f` (16 bytes each)
+/// per invocation for the tile's box, the list, its counter (checked
+/// against naga's layout of the generated kernel in the tests).
+pub fn vpl_tiled_workgroup_bytes(tile_size: u32, max_tile_lights: u32) -> u64 {
+    32 * tile_size as u64 * tile_size as u64 + 4 * max_tile_lights as u64 + 4
+}
+
 /// Checks the feature ranges and the combinations a kernel supports.
 pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
     let bad = |m: String| Err(ShaderError::Unsupported(m));
@@ -520,8 +528,7 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
             if !(1..=16).contains(&f.interleave) {
                 return bad(format!("interleave period {} must be in 1..=16", f.interleave));
             }
-            // Workgroup memory: two vec3f per thread, the list, the counter.
-            let bytes = 32 * f.tile_size * f.tile_size + 4 * f.max_tile_lights + 4;
+            let bytes = vpl_tiled_workgroup_bytes(f.tile_size, f.max_tile_lights);
             if f.max_tile_lights == 0 || bytes > 16384 {
                 return bad(format!(
                     "tile {0}x{0} with {1} list slots needs {bytes} bytes of workgroup memory (WebGPU guarantees 16384)",

@@ -58,3 +58,37 @@ fn rust_twins_match_naga_layout() {
         assert_eq!(size % 16, 0, "{name} size {size}");
     }
 }
+
+/// `vpl_tiled_workgroup_bytes`, which the host checks against the adapter's
+/// `max_compute_workgroup_storage_size`, is the size naga lays out for the
+/// generated `vpl_tiled`'s workgroup variables, for every tile size and a
+/// few list capacities.
+#[test]
+fn vpl_tiled_workgroup_bytes_match_naga() {
+    use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, generate_module, vpl_tiled_workgroup_bytes};
+    for tile in [1u32, 2, 4, 8, 16] {
+        for list in [1u32, 100, 1024] {
+            let f = Features {
+                lights: LightSet { vpl: true, ..LightSet::default() },
+                tile_size: tile,
+                max_tile_lights: list,
+                method: CullMethod::Slc,
+                ..Features::default()
+            };
+            if vpl_tiled_workgroup_bytes(tile, list) > 16384 {
+                continue;
+            }
+            let g = generate_module(Kernel::VplTiled, &f).unwrap();
+            let mut layouter = Layouter::default();
+            layouter.update(g.module.to_ctx()).unwrap();
+            let naga_bytes: u64 = g
+                .module
+                .global_variables
+                .iter()
+                .filter(|(_, v)| v.space == naga::AddressSpace::WorkGroup)
+                .map(|(_, v)| layouter[v.ty].size as u64)
+                .sum();
+            assert_eq!(vpl_tiled_workgroup_bytes(tile, list), naga_bytes, "tile {tile}, list {list}");
+        }
+    }
+}

@@ -1,7 +1,10 @@
 //! Snapshot tests in the style of naga's `tests/out`: the generated WGSL of
-//! representative variants of every kernel, and its GLSL, HLSL and MSL
-//! translations, are committed under `tests/snapshots/`; a change in the
-//! core's math, a template or naga's back ends shows up as a readable diff.
+//! representative variants of every kernel, and its SPIR-V (disassembled),
+//! GLSL, HLSL and MSL translations, are committed under `tests/snapshots/`;
+//! a change in the core's math, a template or naga's back ends shows up as
+//! a readable diff. The WGSL is kept as naga's WGSL writer prints the
+//! validated module, so the snapshots do not depend on how rustc's
+//! `stringify!` spaces the shared code's tokens.
 //! `SLC_BLESS=1 cargo test -p slc-shared-shaders --test snapshots` rewrites
 //! them after a deliberate change.
 
@@ -68,21 +71,35 @@ fn compare(path: &std::path::Path, got: &str, bless: bool, failures: &mut Vec<St
     }
 }
 
+/// naga's WGSL writer's form of a validated module.
+fn normalised_wgsl(module: &naga::Module, info: &naga::valid::ModuleInfo) -> String {
+    naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty()).unwrap()
+}
+
+/// SPIR-V words as rspirv's disassembly (naga's own tests keep `.spvasm`).
+fn spvasm(words: &[u32]) -> String {
+    use rspirv::binary::Disassemble;
+    rspirv::dr::load_words(words).unwrap().disassemble() + "\n"
+}
+
 /// slc-core's shared WGSL library (`library.wgsl`), every variant's WGSL
-/// (`tests/snapshots/`) and, as naga's own tests keep
-/// them, its translations: `glsl/` (one file per entry point), `hlsl/` and
-/// `msl/` (SPIR-V is binary; the tests only check that it is produced).
+/// (`tests/snapshots/`) and, as naga's own tests keep them, its
+/// translations: `spv/` (disassembled), `glsl/` (one file per entry point),
+/// `hlsl/` and `msl/`.
 #[test]
 fn generated_kernels_match_snapshots() {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/snapshots");
     let bless = std::env::var_os("SLC_BLESS").is_some();
     let mut failures = Vec::new();
     // The shared library alone: every slc-core function as WGSL.
-    compare(&dir.join("library.wgsl"), &slc_core::wgsl::library(), bless, &mut failures);
+    let lib = format!("{}\n@group(1) @binding(0) var<storage, read> slc_table: array<f32>;\n", slc_core::wgsl::library());
+    let (module, info) = validate("library", &lib).unwrap();
+    compare(&dir.join("library.wgsl"), &normalised_wgsl(&module, &info), bless, &mut failures);
     for (name, kernel, features) in variants() {
         let g = generate_module(kernel, &features).unwrap();
-        compare(&dir.join(format!("{name}.wgsl")), &g.source, bless, &mut failures);
+        compare(&dir.join(format!("{name}.wgsl")), &normalised_wgsl(&g.module, &g.info), bless, &mut failures);
         let t = translate(&g).unwrap();
+        compare(&dir.join("spv").join(format!("{name}.spvasm")), &spvasm(&t.spv), bless, &mut failures);
         for (entry, src) in &t.glsl_entries {
             let file = if t.glsl_entries.len() > 1 { format!("{name}.{entry}.glsl") } else { format!("{name}.glsl") };
             compare(&dir.join("glsl").join(file), src, bless, &mut failures);

@@ -27,6 +27,7 @@ use obvhs::BvhBuildParams;
 use obvhs::bvh2::builder::build_bvh2_from_tris;
 use obvhs::triangle::Triangle;
 use slc_core::range::RangeParams;
+use slc_core::ray::{ray_t_min, surface_offset};
 use slc_scene::backend::{PathTracer, Timing};
 use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K, WEIGHTED_K};
 use slc_shared_shaders::layout::{GpuGeoNode, GpuPathState, GpuPathVertex, GpuTriangle, NO_LIGHT, PtParams, ShadeParams};
@@ -259,8 +260,8 @@ impl<'a> GpuPt<'a> {
                     seed: s.seed,
                     pass_index: pass,
                     max_depth: s.max_depth,
-                    eps: 1e-5 * self.diag,
-                    t_min: 1e-6 * self.diag,
+                    eps: surface_offset(self.diag),
+                    t_min: ray_t_min(self.diag),
                 })
                 .collect();
             self.pt_params.write(gpu, &pt);
@@ -269,7 +270,7 @@ impl<'a> GpuPt<'a> {
                     point_count: pixels,
                     seed: s.seed,
                     frame: pass.wrapping_mul(MAX_DEPTH).wrapping_add(depth),
-                    eps: 1e-5 * self.diag,
+                    eps: surface_offset(self.diag),
                 })
                 .collect();
             self.shade_params.write(gpu, &shade);

@@ -13,7 +13,7 @@ use slc_core::light::vpl_threshold_range2;
 use slc_core::range::random_range2;
 use slc_scene::backend::IndirectShader;
 use slc_scene::vpl::{PERIOD, Shaded, VplInputs, VplMethod, VplSettings};
-use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuNearBox, LIGHT_VPL, VplParams};
+use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuNearBox, VplParams};
 use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, generate};
 use std::time::Instant;
 use wgpu::util::DeviceExt;
@@ -102,8 +102,8 @@ impl<'a> GpuVpl<'a> {
         )?;
         gpu.require("max_compute_workgroups_per_dimension (light update)", n.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
         let list = per_subset.min(capacity).max(1);
-        let wg_bytes = 32 * TILE * TILE + 4 * list + 4;
-        gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes as u64, lim.max_compute_workgroup_storage_size as u64)?;
+        let wg_bytes = slc_shared_shaders::vpl_tiled_workgroup_bytes(TILE, list);
+        gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes, lim.max_compute_workgroup_storage_size as u64)?;
 
         let pos: Vec<[f32; 4]> = (0..gb.position.len())
             .map(|i| {
@@ -111,20 +111,12 @@ impl<'a> GpuVpl<'a> {
                 [p.x, p.y, p.z, if gb.valid(i) { 1.0 } else { 0.0 }]
             })
             .collect();
-        // w: depth, for the denoise (1e30 where there is no surface).
-        let nrm: Vec<[f32; 4]> = gb.normal.iter().zip(&gb.depth).map(|(n, &d)| [n.x, n.y, n.z, if d.is_finite() { d } else { 1e30 }]).collect();
-        let vpl = |i: usize, scale: f32| GpuLight {
-            p0: v.position[i],
-            kind: LIGHT_VPL,
-            p1: v.normal[i],
-            a: 0.0,
-            p2: Vec3::ZERO,
-            b: 0.0,
-            intensity: v.flux[i] * scale,
-            ies_base: 0,
-        };
+        // w: depth, for the denoise (DEPTH_NONE where there is no surface).
+        let nrm: Vec<[f32; 4]> =
+            gb.normal.iter().zip(&gb.depth).map(|(n, &d)| [n.x, n.y, n.z, if d.is_finite() { d } else { slc_core::denoise::DEPTH_NONE }]).collect();
+        let vpl = |i: usize, scale: f32| GpuLight::vpl(v.position[i], v.normal[i], v.flux[i] * scale);
         let order = inputs.interleaved_order();
-        let scale = subsets as f32;
+        let scale = slc_core::interleave::interleave_flux_scale(PERIOD);
         let lights: Vec<GpuLight> = order.iter().map(|&i| vpl(i, scale)).collect();
         let ids: Vec<u32> = order.iter().map(|&i| i as u32).collect();
         // Where each VPL of near-block order sits in `lights` (vpl_pack's map).

@@ -145,6 +145,14 @@ crate::shared! {
         let c: f32 = select(degrees(atan2_portable(ws, wr)), 0.0, on_axis);
         return ies_candela(tab, base, gamma, c);
     }
+
+    /// Candela of an IES light with unit `nadir` and `reference` (C = 0°,
+    /// ⟂ nadir) axes toward unit `w`: the side axis (C = 90°) is
+    /// `reference × nadir`, and [`ies_candela_dir`] takes `w`'s components.
+    pub fn ies_light_candela(tab: Table, base: u32, nadir: vec3f, reference: vec3f, w: vec3f) -> f32 {
+        let side: vec3f = cross(reference, nadir);
+        return ies_candela_dir(tab, base, dot(w, nadir), dot(w, reference), dot(w, side));
+    }
 }
 
 #[cfg(test)]

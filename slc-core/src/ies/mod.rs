@@ -28,7 +28,7 @@
 pub mod lookup;
 mod parse;
 
-pub use lookup::{atan_portable, atan2_portable, ies_candela, ies_candela_dir, ies_fold_c, ies_lerp_t, ies_segment};
+pub use lookup::{atan_portable, atan2_portable, ies_candela, ies_candela_dir, ies_fold_c, ies_lerp_t, ies_light_candela, ies_segment};
 
 use alloc::string::String;
 use alloc::vec::Vec;

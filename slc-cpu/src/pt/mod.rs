@@ -41,12 +41,12 @@ use rand_pcg::Pcg32;
 use rayon::prelude::*;
 use slc_core::bsh::Bsh;
 use slc_core::importance::weighted_select_pdf;
-use slc_core::light::{Light, connection_factor};
+use slc_core::light::{Light, connection_cosine, connection_factor};
 use slc_core::mis::{cosine_direction, cosine_pdf, lambert_brdf, light_strategy_pdf, mis_power};
-use slc_core::path::path_survival;
-use slc_core::range::{RangeParams, random_range2, slc_keep};
-use slc_core::ray::face_against;
-use slc_core::reservoir::{Reservoir, WeightedReservoir, reservoir_weight};
+use slc_core::path::{camera_dir, continues_path, jittered_pixel, path_survival, plays_roulette, sees_emission};
+use slc_core::range::{RangeParams, random_range2};
+use slc_core::ray::{face_against, ray_t_min, surface_offset};
+use slc_core::reservoir::{Reservoir, WeightedReservoir, reservoir_select_pdf, uniform_light};
 use slc_core::sphere::Sphere;
 use slc_core::xi::{xi_for, xi_from_bits};
 use slc_scene::RenderError;
@@ -159,10 +159,7 @@ impl CpuPathTracer {
         // (selection probability, r_t² of the RR test; +∞ for the baselines)
         let (select, rt2) = match s.method {
             PtMethod::Slc => (1.0, st.rt2[l]),
-            PtMethod::SlcReservoir => {
-                let others = nee.seen - (in_nee || st.spheres[l].contains(x)) as u32;
-                (1.0 / reservoir_weight(others + 1, RESERVOIR_K as u32), st.rt2[l])
-            }
+            PtMethod::SlcReservoir => (reservoir_select_pdf(nee.seen, in_nee || st.spheres[l].contains(x), RESERVOIR_K as u32), st.rt2[l]),
             PtMethod::SlcWeighted => {
                 let w = self.pts.light_set().cones()[l].weight(x, n, st.rt2[l]);
                 (weighted_select_pdf(w, nee.w_sum, in_nee || st.spheres[l].contains(x), WEIGHTED_K as u32), st.rt2[l])
@@ -199,22 +196,16 @@ impl CpuPathTracer {
             Light::Triangle(t) => t.sample(u1, u2),
             _ => light.bound().center,
         };
+        // The baselines cull nothing: r² = +∞ keeps every light.
+        let cos_x = connection_cosine(x, y, n, ng, if rr { st.r2[l] } else { f32::INFINITY });
+        if cos_x <= 0.0 {
+            return None;
+        }
         let v = x - y;
         let d2 = v.length_squared();
-        if rr && !slc_keep(st.r2[l], d2) {
-            return None;
-        }
-        if d2 <= 0.0 {
-            return None;
-        }
         let wdir = v / d2.sqrt();
-        let cos_x = -n.dot(wdir);
-        // Lit through the shading normal but behind the surface itself: no light.
-        if cos_x <= 0.0 || ng.dot(wdir) >= 0.0 {
-            return None;
-        }
         let diag = self.diag;
-        if self.geo.occluded(x + ng * 1e-5 * diag, y) {
+        if self.geo.occluded(x + ng * surface_offset(diag), y) {
             return None;
         }
         let i = light.intensity(wdir);
@@ -271,8 +262,8 @@ impl CpuPathTracer {
                 let u = xi_from_bits(rng.next_u32());
                 let picked = match s.method {
                     PtMethod::Uniform => {
-                        let n = self.lights().len();
-                        Some(((u * n as f32) as usize).min(n - 1)).map(|l| (l, 1.0 / n as f32))
+                        let n = self.lights().len() as u32;
+                        Some((uniform_light(u, n) as usize, 1.0 / n as f32))
                     }
                     PtMethod::Power => {
                         let alias = self.pts.light_set().alias();
@@ -316,9 +307,10 @@ impl CpuPathTracer {
     fn trace(&self, px: u32, py: u32, w: u32, h: u32, s: &PtSettings, st: &Pass, rng: &mut Pcg32) -> Vec3 {
         let scene = self.pts.scene();
         let cam = &scene.camera;
-        let jx = xi_from_bits(rng.next_u32()) - 0.5;
-        let jy = xi_from_bits(rng.next_u32()) - 0.5;
-        let mut dir = cam.ray_dir(px as f32 + jx, py as f32 + jy, w, h);
+        let sx = jittered_pixel(px, xi_from_bits(rng.next_u32()));
+        let sy = jittered_pixel(py, xi_from_bits(rng.next_u32()));
+        let (f, r, u) = cam.scaled_basis(w, h);
+        let mut dir = camera_dir(f, r, u, sx, sy, w as f32, h as f32);
         let mut org = cam.position;
         let mut beta = Vec3::ONE;
         let mut radiance = Vec3::ZERO;
@@ -326,7 +318,7 @@ impl CpuPathTracer {
         // Previous vertex for MIS at implicit hits: (x, n, its NEE, bsdf pdf).
         let mut prev: Option<(Vec3, Vec3, NeeState, f32)> = None;
         for depth in 0..s.max_depth {
-            let Some(hit) = self.geo.intersect(org, dir, 1e-6 * diag, f32::INFINITY) else { break };
+            let Some(hit) = self.geo.intersect(org, dir, ray_t_min(diag), f32::INFINITY) else { break };
             let x = org + dir * hit.t;
             let tri = hit.triangle as usize;
             let geo_n = self.geo.normal(hit.triangle);
@@ -335,7 +327,7 @@ impl CpuPathTracer {
             let mat = scene.materials[scene.material_of[tri] as usize];
             // Emission seen directly or by BSDF sampling (one-sided, like the light).
             let l = self.pts.light_of_triangle()[tri];
-            if l != u32::MAX && geo_n.dot(dir) < 0.0 {
+            if l != u32::MAX && sees_emission(geo_n, dir) {
                 let le = mat.emission;
                 match prev {
                     None => radiance += beta * le,
@@ -351,16 +343,15 @@ impl CpuPathTracer {
             // = ρ. A direction below the surface itself ends the path.
             let (u1, u2) = (xi_from_bits(rng.next_u32()), xi_from_bits(rng.next_u32()));
             let nd = cosine_direction(n, u1, u2);
-            let cos = nd.dot(n);
-            if cos <= 0.0 || nd.dot(ng) <= 0.0 {
+            if !continues_path(nd, n, ng) {
                 break;
             }
             beta *= mat.albedo;
-            prev = Some((x, n, nee, cosine_pdf(cos)));
-            org = x + ng * 1e-5 * diag;
+            prev = Some((x, n, nee, cosine_pdf(nd.dot(n))));
+            org = x + ng * surface_offset(diag);
             dir = nd;
             // Russian roulette on path length from the third bounce.
-            if depth >= 2 {
+            if plays_roulette(depth) {
                 let q = path_survival(beta);
                 if xi_from_bits(rng.next_u32()) >= q {
                     break;

@@ -15,7 +15,9 @@
 
 use glam::Vec3;
 use rayon::prelude::*;
-use slc_core::denoise::{COVER_WEIGHT, DEPTH_SIGMA, bilateral_weight};
+use slc_core::denoise::{
+    COVER_WEIGHT, DEPTH_NONE, bilateral_weight, filtered_irradiance, inv_sigma_z, misses_subset, wide_window, window_end, window_start,
+};
 use slc_scene::vpl::GBuffer;
 
 /// Neighbours per vectorized chunk of a window row (a full row of the
@@ -28,9 +30,8 @@ pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
     let split = |f: fn(Vec3) -> f32, v: &[Vec3]| -> Vec<f32> { v.iter().map(|&x| f(x)).collect() };
     let (er, eg, eb) = (split(|v| v.x, e), split(|v| v.y, e), split(|v| v.z, e));
     let (nx, ny, nz) = (split(|v| v.x, &gb.normal), split(|v| v.y, &gb.normal), split(|v| v.z, &gb.normal));
-    // Depth 1e30 stands for "no surface": every δ to it is huge, weight 0.
-    let z: Vec<f32> = gb.depth.iter().map(|&d| if d.is_finite() { d } else { 1e30 }).collect();
-    let p = period as usize;
+    // DEPTH_NONE stands for "no surface": every δ to it is huge, weight 0.
+    let z: Vec<f32> = gb.depth.iter().map(|&d| if d.is_finite() { d } else { DEPTH_NONE }).collect();
     (0..w * h)
         .into_par_iter()
         .map(|i| {
@@ -39,12 +40,12 @@ pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
             }
             let (x, y) = (i % w, i / w);
             let (n, zi) = (gb.normal[i], z[i]);
-            let inv = 1.0 / (DEPTH_SIGMA * zi);
+            let inv = inv_sigma_z(zi);
             // Weighted sum over the `size × size` window around (x, y).
-            let window = |size: usize| {
-                let half = size / 2;
-                let (x0, x1) = (x.saturating_sub(half), (x + size - half).min(w));
-                let (y0, y1) = (y.saturating_sub(half), (y + size - half).min(h));
+            let window = |size: u32| {
+                let (px, py) = (x as u32, y as u32);
+                let (x0, x1) = (window_start(px, size) as usize, window_end(px, size, w as u32) as usize);
+                let (y0, y1) = (window_start(py, size) as usize, window_end(py, size, h as u32) as usize);
                 // Per-lane partial sums (vectorized), folded at the end.
                 let (mut lr, mut lg, mut lb, mut lw, mut lc) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES], [0u32; LANES]);
                 let (mut sr, mut sg, mut sb, mut sw) = (0.0f32, 0.0f32, 0.0f32, 0.0f32);
@@ -86,13 +87,13 @@ pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
                 }
                 (Vec3::new(sr, sg, sb), sw, covered)
             };
-            let (mut sum, mut sw, covered) = window(p);
+            let (mut sum, mut sw, covered) = window(period);
             // A VPL subset is missing (an edge, a corner, the border): the
             // doubled window brings it in.
-            if covered < (p * p) as u32 {
-                (sum, sw, _) = window(2 * p);
+            if misses_subset(covered, period) {
+                (sum, sw, _) = window(wide_window(period));
             }
-            if sw > 0.0 { sum / sw } else { e[i] }
+            filtered_irradiance(e[i], sum, sw)
         })
         .collect()
 }

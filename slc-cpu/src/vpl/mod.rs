@@ -27,8 +27,10 @@ use glam::Vec3;
 use rayon::prelude::*;
 use shade::{Cull, LightList};
 use slc_core::frame::{diffuse_radiance, directional_irradiance, point_irradiance};
+use slc_core::interleave::interleave_flux_scale;
 use slc_core::light::{Light, vpl_threshold_range2};
 use slc_core::range::{RangeParams, random_range2};
+use slc_core::ray::surface_offset;
 use slc_core::xi::xi_for;
 use slc_scene::RenderError;
 use slc_scene::backend::IndirectShader;
@@ -177,8 +179,8 @@ impl VplContext {
         let p = PERIOD as usize;
         let subsets = p * p;
         let size = v.size as usize;
-        // Interleaved flux: each pixel sees 1/64 of the VPLs, so each counts 64×.
-        let scale = subsets as f32;
+        // Interleaved flux: each pixel sees 1/P² of the VPLs, so each counts P²×.
+        let scale = interleave_flux_scale(PERIOD);
         let cull = match method {
             VplMethod::Slc => Cull::Slc,
             VplMethod::Clamp => Cull::Clamp,
@@ -385,14 +387,14 @@ fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer, geo_n: &[Vec3]) -> 
                 PrimaryLight::Spot { position, .. } => {
                     let spot = Light::Spot(scene.primary.spot().expect("validated scene"));
                     let v = position - x;
-                    if n.dot(v) <= 0.0 || geo.occluded(x + geo_n[i] * 1e-5 * diag, position) {
+                    if n.dot(v) <= 0.0 || geo.occluded(x + geo_n[i] * surface_offset(diag), position) {
                         return Vec3::ZERO;
                     }
                     point_irradiance(spot.intensity(-v.normalize()), n, v)
                 }
                 PrimaryLight::Directional { direction, irradiance } => {
                     let wi = -direction.normalize();
-                    if n.dot(wi) <= 0.0 || geo.occluded(x + geo_n[i] * 1e-5 * diag, x + wi * 2.0 * diag) {
+                    if n.dot(wi) <= 0.0 || geo.occluded(x + geo_n[i] * surface_offset(diag), x + wi * 2.0 * diag) {
                         return Vec3::ZERO;
                     }
                     directional_irradiance(irradiance, n, wi)

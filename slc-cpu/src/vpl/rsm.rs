@@ -6,7 +6,7 @@ use crate::geometry::Geometry;
 use glam::Vec3;
 use rayon::prelude::*;
 use slc_core::light::Light;
-use slc_core::ray::face_against;
+use slc_core::ray::{face_against, surface_offset};
 use slc_scene::scene::{PrimaryLight, Scene};
 use slc_scene::vpl::Vpls;
 
@@ -41,7 +41,7 @@ pub fn reflective_shadow_map(scene: &Scene, geo: &Geometry, size: u32) -> Vpls {
 /// The VPL a texel makes: its hit point, normal toward the light, and the
 /// incident flux times the surface albedo.
 fn hit_texel(scene: &Scene, geo: &Geometry, origin: Vec3, dir: Vec3, incident: Vec3, diag: f32) -> (Vec3, Vec3, Vec3) {
-    match geo.intersect(origin, dir, 1e-5 * diag, f32::INFINITY) {
+    match geo.intersect(origin, dir, surface_offset(diag), f32::INFINITY) {
         Some(h) => {
             let gn = face_against(geo.normal(h.triangle), dir);
             let p = origin + dir * h.t;

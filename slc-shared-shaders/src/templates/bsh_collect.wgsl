@@ -44,7 +44,7 @@ fn bsh_collect(x: vec3f, seed: u32) -> Picks {
     picks.n = 0u;
     var h = seed;
     for (var i = bsh_next_leaf(bsh_first(), x); i != BSH_NONE; i = bsh_next_leaf(bsh_nodes[i].next, x)) {
-        if picks.n < 4294967295u {
+        if reservoir_takes(picks.n) {
             picks.n += 1u;
             h = pcg_hash(h);
             let hi = h;
@@ -78,18 +78,13 @@ fn connect(li: u32, x: vec3f, n: vec3f, ng: vec3f, w_res: f32, u1: f32, u2: f32,
     c.e = vec3f(0.0);
     let l = lights[li];
     c.y = light_point(l, u1, u2);
+    c.cos_x = connection_cosine(x, c.y, n, ng, r2[li]);
+    // The shadow ray leaves along the geometric normal `ng`.
+    if c.cos_x <= 0.0 || occluded(x + ng * eps, c.y) {
+        return c;
+    }
     let v = x - c.y;
     let d2 = dot(v, v);
-    if !slc_keep(r2[li], d2) || d2 <= 0.0 {
-        return c;
-    }
-    let w = v / sqrt(d2);
-    c.cos_x = -dot(n, w);
-    // Lit through the shading normal `n` but behind the surface itself (its
-    // geometric normal `ng`): no light; the shadow ray leaves along `ng`.
-    if c.cos_x <= 0.0 || dot(ng, w) >= 0.0 || occluded(x + ng * eps, c.y) {
-        return c;
-    }
-    c.e = light_intensity(l, w) * connection_factor(c.cos_x, d2, rt2[li], w_res);
+    c.e = light_intensity(l, v / sqrt(d2)) * connection_factor(c.cos_x, d2, rt2[li], w_res);
     return c;
 }

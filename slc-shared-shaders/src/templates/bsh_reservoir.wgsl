@@ -42,10 +42,10 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     let x = p.xyz;
     let n = normals[i].xyz;
-    let seed = pcg_hash(params.seed ^ pcg_hash(i ^ pcg_hash(params.frame)));
+    let seed = point_stream(params.seed, i, params.frame);
     let picks = bsh_collect(x, seed);
     let w_res = reservoir_weight(picks.n, K);
-    var h = pcg_hash(seed ^ 2654435769u);
+    var h = pick_stream(seed);
     var e = vec3f(0.0);
     for (var s = 0u; s < min(picks.n, K); s++) {
         h = pcg_hash(h);

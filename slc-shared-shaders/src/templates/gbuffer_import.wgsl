@@ -26,6 +26,6 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let valid = p.w > 0.0 && len2 > 0.0;
     let v = p.xyz - params.eye;
     gb_position[i] = vec4f(p.xyz, select(0.0, 1.0, valid));
-    gb_normal[i] = select(vec4f(0.0, 0.0, 0.0, 1e30), vec4f(n / sqrt(len2), sqrt(dot(v, v))), valid);
+    gb_normal[i] = select(vec4f(0.0, 0.0, 0.0, DEPTH_NONE), vec4f(n / sqrt(len2), sqrt(dot(v, v))), valid);
     irradiance[i] = vec4f(0.0);
 }

@@ -17,8 +17,7 @@ fn trace(o: vec3f, d: vec3f, t_min: f32, t_max: f32, any_hit: bool) -> GeoHit {
     if arrayLength(&geo_nodes) == 0u {
         return hit;
     }
-    // A zero direction component would divide by zero: nudge it.
-    let inv_d = 1.0 / select(d, vec3f(1e-30), abs(d) < vec3f(1e-30));
+    let inv_d = ray_inverse3(d);
     var stack: array<u32, 64>;
     var sp = 0u;
     var node = 0u;
@@ -63,6 +62,6 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
     if len <= 0.0 {
         return false;
     }
-    let eps = 1e-4 * len;
+    let eps = shadow_margin(len);
     return trace(a, dv / len, eps, len - eps, true).tri != NO_LIGHT;
 }

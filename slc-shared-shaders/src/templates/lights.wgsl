@@ -10,10 +10,7 @@ fn light_intensity(l: GpuLight, w: vec3f) -> vec3f {
         case LIGHT_SPOT: { return l.intensity * spot_falloff(dot(l.p1, w), l.a, l.b); }
 {% endif %}
 {% if ies %}
-        case LIGHT_IES: {
-            let side = cross(l.p2, l.p1);
-            return l.intensity * ies_candela_dir(0u, l.ies_base, dot(w, l.p1), dot(w, l.p2), dot(w, side));
-        }
+        case LIGHT_IES: { return l.intensity * ies_light_candela(0u, l.ies_base, l.p1, l.p2, w); }
 {% endif %}
 {% if triangle %}
         case LIGHT_TRIANGLE: {

@@ -48,13 +48,13 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         }
         a = dot(rel, params.right) / (z * params.extent);
         b = dot(rel, params.up) / (z * params.extent);
-        width = 2.0 * params.extent * d * d / (size * z);
+        width = perspective_texel_width(params.extent, d, z, size);
         cos_light = dot(n, v) / d;
         e = point_irradiance(light_intensity(params.light, rel / d), n, v);
     } else {
         a = dot(rel, params.right) / params.extent;
         b = dot(rel, params.up) / params.extent;
-        width = 2.0 * params.extent / size;
+        width = ortho_texel_width(params.extent, size);
         cos_light = -dot(n, params.axis);
         e = directional_irradiance(params.light.intensity, n, -params.axis);
     }

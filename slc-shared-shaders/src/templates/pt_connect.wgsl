@@ -50,8 +50,8 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let x = vtx.position;
     let n = vtx.normal;
     let ng = vtx.gnormal;
-    let seed = pcg_hash(params.seed ^ pcg_hash(i ^ pcg_hash(params.frame)));
-    var h = pcg_hash(seed ^ 2654435769u);
+    let seed = point_stream(params.seed, i, params.frame);
+    var h = pick_stream(seed);
     var sum = vec3f(0.0);
 {% if selection == "reservoir" %}
     let picks = bsh_collect(x, seed);
@@ -115,7 +115,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let pmf = bp.pmf;
 {% else %}
     let nl = arrayLength(&lights);
-    var li = min(u32(us * f32(nl)), nl - 1u);
+    var li = uniform_light(us, nl);
 {% if selection == "power" %}
     h = pcg_hash(h);
     let entry = power_table[li];

@@ -41,11 +41,9 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     var st: GpuPathState;
     if params.depth == 0u {
-        var h = pcg_hash(params.seed ^ pcg_hash(i ^ pcg_hash(params.pass_index + 0x9E3779B9u)));
-        let jx = next_uniform(&h) - 0.5;
-        let jy = next_uniform(&h) - 0.5;
-        let px = f32(i % params.width) + 0.5 + jx;
-        let py = f32(i / params.width) + 0.5 + jy;
+        var h = path_stream(params.seed, i, params.pass_index);
+        let px = jittered_pixel(i % params.width, next_uniform(&h));
+        let py = jittered_pixel(i / params.width, next_uniform(&h));
         st.origin = params.cam_pos;
         st.dir = camera_dir(params.cam_forward, params.cam_right, params.cam_up, px, py, f32(params.width), f32(params.height));
         st.alive = 1u;
@@ -62,7 +60,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         vertices[i] = v;
         return;
     }
-    let hit = trace(st.origin, st.dir, params.t_min, 3.4028235e38, false);
+    let hit = trace(st.origin, st.dir, params.t_min, F32_MAX, false);
     if hit.tri == NO_LIGHT {
         st.alive = 0u;
         paths[i] = st;
@@ -76,7 +74,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let b = hit.tri * 3u;
     let n = shading_normal(geo_normals[b].xyz, geo_normals[b + 1u].xyz, geo_normals[b + 2u].xyz, barycentric(x, tri.v0, tri.v1, tri.v2), ng);
     // Emission, one-sided like the light, seen directly or by BSDF sampling.
-    if tri.light != NO_LIGHT && dot(gn, st.dir) < 0.0 {
+    if tri.light != NO_LIGHT && sees_emission(gn, st.dir) {
         var w = 1.0;
         if st.pdf_bsdf > 0.0 {
             let leaf = bsh_nodes[light_leaf[tri.light]];
@@ -108,11 +106,11 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     st.origin = x + ng * params.eps;
     st.dir = nd;
     // A direction below the surface itself ends the path.
-    if cos_o <= 0.0 || dot(nd, ng) <= 0.0 || params.depth + 1u >= params.max_depth {
+    if !continues_path(nd, n, ng) || params.depth + 1u >= params.max_depth {
         st.alive = 0u;
     }
     // Russian roulette on path length from the third bounce.
-    if params.depth >= 2u && st.alive == 1u {
+    if plays_roulette(params.depth) && st.alive == 1u {
         let q = path_survival(st.beta);
         if next_uniform(&rng) >= q {
             st.alive = 0u;

@@ -104,8 +104,7 @@ fn light_bvh_pmf(li: u32, x: vec3f, n: vec3f) -> f32 {
 /// light's own ξ.
 fn select_pdf(li: u32, x: vec3f, n: vec3f, nee: u32, in_range: bool) -> f32 {
 {% if selection == "reservoir" %}
-    let others = nee - select(0u, 1u, in_range && nee > 0u);
-    return 1.0 / reservoir_weight(others + 1u, K);
+    return reservoir_select_pdf(nee, in_range, K);
 {% elif selection == "weighted" %}
     return weighted_select_pdf(light_weight(li, x, n), bitcast<f32>(nee), in_range, K);
 {% elif selection == "all" %}
@@ -134,9 +133,4 @@ fn light_pdf(li: u32, x: vec3f, n: vec3f, y: vec3f, nee: u32, in_range: bool) ->
     let d2 = dot(v, v);
     let cos_y = select(0.0, dot(light_normal(l), v / sqrt(d2)), d2 > 0.0);
     return light_strategy_pdf(select_pdf(li, x, n, nee, in_range), rt2[li], d2, light_area(l), cos_y);
-}
-
-/// `true` when every component of `v` is finite (NaN compares false).
-fn finite3(v: vec3f) -> bool {
-    return all(abs(v) <= vec3f(3.4028235e38));
 }

@@ -13,9 +13,9 @@
 
 const PERIOD: u32 = {{ period }}u;
 
-/// Depth of pixel `i` (`gb_normal.w`), 1e30 where there is no surface.
+/// Depth of pixel `i` (`gb_normal.w`), DEPTH_NONE where there is no surface.
 fn depth_of(i: u32) -> f32 {
-    return select(1e30, gb_normal[i].w, gb_position[i].w > 0.0);
+    return select(DEPTH_NONE, gb_normal[i].w, gb_position[i].w > 0.0);
 }
 
 /// Weighted irradiance sum, total weight and the number of neighbours
@@ -30,11 +30,10 @@ struct Window {
 fn window_sum(x: u32, y: u32, size: u32, n: vec3f, z: f32, inv: f32) -> Window {
     let w = params.width;
     let h = params.height;
-    let half = size / 2u;
-    let x0 = max(x, half) - half;
-    let x1 = min(x + size - half, w);
-    let y0 = max(y, half) - half;
-    let y1 = min(y + size - half, h);
+    let x0 = window_start(x, size);
+    let x1 = window_end(x, size, w);
+    let y0 = window_start(y, size);
+    let y1 = window_end(y, size, h);
     var win: Window;
     win.sum = vec3f(0.0);
     win.weight = 0.0;
@@ -66,12 +65,12 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     let n = gb_normal[i].xyz;
     let z = depth_of(i);
-    let inv = 1.0 / (DEPTH_SIGMA * z);
+    let inv = inv_sigma_z(z);
     var s = window_sum(gid.x, gid.y, PERIOD, n, z, inv);
     // A VPL subset is missing (an edge, a corner, the border): the doubled
     // window brings it in (the CPU filter's rule).
-    if s.covered < PERIOD * PERIOD {
-        s = window_sum(gid.x, gid.y, 2u * PERIOD, n, z, inv);
+    if misses_subset(s.covered, PERIOD) {
+        s = window_sum(gid.x, gid.y, wide_window(PERIOD), n, z, inv);
     }
-    filtered[i] = vec4f(select(e.xyz, s.sum / s.weight, s.weight > 0.0), e.w);
+    filtered[i] = vec4f(filtered_irradiance(e.xyz, s.sum, s.weight), e.w);
 }

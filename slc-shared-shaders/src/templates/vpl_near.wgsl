@@ -54,7 +54,7 @@ fn main(
     let hi = tile_box.hi;
     let radius = cull_radius(params.near_r2);
     // The flux the light buffer holds is P^2 times the VPL's own.
-    let unscale = 1.0 / f32(P * P);
+    let unscale = 1.0 / interleave_flux_scale(P);
     var e = vec3f(0.0);
     var kept = 0u;
     for (var first = 0u; first < params.near_blocks; first += NEAR_CHUNK) {

@@ -6,7 +6,7 @@
 var<workgroup> wg_lo: array<vec3f, BOX_THREADS>;
 var<workgroup> wg_hi: array<vec3f, BOX_THREADS>;
 
-/// A box `lo ≤ hi`, or empty (`lo = 3e38 > hi = -3e38`).
+/// A box `lo ≤ hi`, or empty (`lo = F32_MAX > hi = -F32_MAX`).
 struct WorkgroupBox {
     lo: vec3f,
     hi: vec3f,
@@ -16,8 +16,8 @@ struct WorkgroupBox {
 /// Every invocation must call it (it has barriers); `li` is its
 /// local_invocation_index.
 fn workgroup_box(li: u32, p: vec3f, has: bool) -> WorkgroupBox {
-    wg_lo[li] = select(vec3f(3.0e38), p, has);
-    wg_hi[li] = select(vec3f(-3.0e38), p, has);
+    wg_lo[li] = select(vec3f(F32_MAX), p, has);
+    wg_hi[li] = select(vec3f(-F32_MAX), p, has);
     workgroupBarrier();
     for (var stride = BOX_THREADS / 2u; stride > 0u; stride = stride / 2u) {
         if li < stride {

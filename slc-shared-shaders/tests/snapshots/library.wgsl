@@ -1,573 +1,1060 @@
-// slc-core shared functions (generated from Rust; do not edit)
-alias Table = u32;
-fn at(tab: Table, i: u32) -> f32 { return slc_table[i]; }
-fn to_f32(u: u32) -> f32 { return f32(u); }
-fn to_u32(x: f32) -> u32 { return u32(x); }
-fn mul_lo_u32(a: u32, b: u32) -> u32 { return a * b; }
-fn add_wrap_u32(a: u32, b: u32) -> u32 { return a + b; }
-const XI_STEP: f32 = 0.000000059604644775390625;
+struct BshNode {
+    center: vec3<f32>,
+    radius: f32,
+    child: u32,
+    next: u32,
+    light: u32,
+    pad: u32,
+}
+
+const XI_STEP: f32 = 0.000000059604645f;
+const PICK_STREAM: u32 = 2654435769u;
+const TWO_PI: f32 = 6.2831855f;
+const CULL_RADIUS_SCALE: f32 = 1.000001f;
+const SPHERE_PAD: f32 = 0.00000047683716f;
+const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
+const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const INV_PI: f32 = 0.31830987f;
+const MIN_D2_: f32 = 0.000000000001f;
+const BSH_NONE: u32 = 4294967295u;
+const RESERVOIR_FULL: u32 = 4294967295u;
+const LIGHT_BVH_LEAF: u32 = 4294967295u;
+const ONE_MINUS_EPSILON: f32 = 0.99999994f;
+const F32_MAX: f32 = 340282350000000000000000000000000000000f;
+const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
+const DEPTH_SIGMA: f32 = 0.05f;
+const COVER_WEIGHT: f32 = 0.1f;
+const NEAR_BLOCK: u32 = 64u;
+const ROULETTE_DEPTH: u32 = 2u;
+
+@group(1) @binding(0) 
+var<storage> slc_table: array<f32>;
+
+fn at(tab: u32, i: u32) -> f32 {
+    let _e4 = slc_table[i];
+    return _e4;
+}
+
+fn to_f32_(u: u32) -> f32 {
+    return f32(u);
+}
+
+fn to_u32_(x: f32) -> u32 {
+    return u32(x);
+}
+
+fn mul_lo_u32_(a: u32, b: u32) -> u32 {
+    return (a * b);
+}
+
+fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
+    return (a_1 + b_1);
+}
+
 fn xi_from_bits(bits: u32) -> f32 {
-    return to_f32(bits >> 8) * XI_STEP;
+    let _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
 }
-fn pcg_hash(x: u32) -> u32 {
-    let state: u32 = add_wrap_u32(mul_lo_u32(x, 747796405), 2891336453);
-    let word: u32 = mul_lo_u32((state >> ((state >> 28) + 4)) ^ state, 277803737);
-    return (word >> 22) ^ word;
+
+fn pcg_hash(x_1: u32) -> u32 {
+    let _e2 = mul_lo_u32_(x_1, 747796405u);
+    let _e4 = add_wrap_u32_(_e2, 2891336453u);
+    let _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
 }
+
+fn reverse_bits(x_2: u32) -> u32 {
+    var v: u32;
+
+    v = (((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u));
+    let _e11 = v;
+    let _e16 = v;
+    v = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
+    let _e22 = v;
+    let _e27 = v;
+    v = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
+    let _e33 = v;
+    let _e38 = v;
+    v = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
+    let _e44 = v;
+    let _e49 = v;
+    v = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
+    let _e55 = v;
+    return _e55;
+}
+
 fn xi_for(seed: u32, frame: u32, light: u32) -> f32 {
-    return xi_from_bits(add_wrap_u32(pcg_hash(pcg_hash(pcg_hash(seed)) ^ light), reverse_bits(frame)));
+    let _e3 = pcg_hash(seed);
+    let _e4 = pcg_hash(_e3);
+    let _e6 = pcg_hash((_e4 ^ light));
+    let _e7 = reverse_bits(frame);
+    let _e8 = add_wrap_u32_(_e6, _e7);
+    let _e9 = xi_from_bits(_e8);
+    return _e9;
 }
-fn reverse_bits(x: u32) -> u32 {
-    var v: u32 = ((x >> 16) & 65535) | ((x & 65535) << 16);
-    v = ((v >> 8) & 16711935) | ((v & 16711935) << 8);
-    v = ((v >> 4) & 252645135) | ((v & 252645135) << 4);
-    v = ((v >> 2) & 858993459) | ((v & 858993459) << 2);
-    v = ((v >> 1) & 1431655765) | ((v & 1431655765) << 1);
-    return v;
+
+fn point_stream(seed_1: u32, point: u32, frame_1: u32) -> u32 {
+    let _e3 = pcg_hash(frame_1);
+    let _e5 = pcg_hash((point ^ _e3));
+    let _e7 = pcg_hash((seed_1 ^ _e5));
+    return _e7;
 }
-const TWO_PI: f32 = 6.283185307179586;
-fn rr_probability(rt2: f32, d2: f32) -> f32 {
-    if d2 <= rt2 {
-        return 1.0;
+
+fn pick_stream(stream: u32) -> u32 {
+    let _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+fn path_stream(seed_2: u32, pixel: u32, pass_index: u32) -> u32 {
+    let _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
+    let _e5 = point_stream(seed_2, pixel, _e4);
+    return _e5;
+}
+
+fn rr_probability(rt2_: f32, d2_: f32) -> f32 {
+    if (d2_ <= rt2_) {
+        return 1f;
     }
-    return rt2 / d2;
+    return (rt2_ / d2_);
 }
-fn slc_weight(rt2: f32, d2: f32) -> f32 {
-    if d2 <= rt2 {
-        return 1.0;
+
+fn slc_weight(rt2_1: f32, d2_1: f32) -> f32 {
+    if (d2_1 <= rt2_1) {
+        return 1f;
     }
-    return d2 / rt2;
+    return (d2_1 / rt2_1);
 }
-fn random_range2(rt2: f32, xi: f32) -> f32 {
-    return rt2 / (1.0 - xi);
+
+fn random_range2_(rt2_2: f32, xi: f32) -> f32 {
+    return (rt2_2 / (1f - xi));
 }
-fn slc_keep(r2: f32, d2: f32) -> bool {
-    return d2 < r2;
+
+fn slc_keep(r2_: f32, d2_2: f32) -> bool {
+    return (d2_2 < r2_);
 }
-fn threshold_range2(intensity: f32, exposure: f32, error_bound: f32) -> f32 {
-    if intensity <= 0.0 {
-        return 0.0;
+
+fn threshold_range2_(intensity: f32, exposure: f32, error_bound: f32) -> f32 {
+    if (intensity <= 0f) {
+        return 0f;
     }
-    return (exposure / error_bound) * intensity / TWO_PI;
+    return (((exposure / error_bound) * intensity) / TWO_PI);
 }
-fn intensity_measure(rgb: vec3f, mode: u32) -> f32 {
-    if mode == 1 {
-        return (rgb.x + rgb.y + rgb.z) / 3.0;
+
+fn intensity_measure(rgb: vec3<f32>, mode: u32) -> f32 {
+    if (mode == 1u) {
+        return (((rgb.x + rgb.y) + rgb.z) / 3f);
     }
     return max(rgb.x, max(rgb.y, rgb.z));
 }
-const CULL_RADIUS_SCALE: f32 = 1.00000095367431640625;
-fn cull_radius(r2: f32) -> f32 {
-    return sqrt(r2) * CULL_RADIUS_SCALE;
+
+fn cull_radius(r2_1: f32) -> f32 {
+    return (sqrt(r2_1) * CULL_RADIUS_SCALE);
 }
-fn windowed_falloff(d2: f32, range2: f32) -> f32 {
-    let q: f32 = d2 / range2;
-    let w: f32 = saturate(1.0 - q * q);
-    return w * w / max(d2, 0.0001);
+
+fn windowed_falloff(d2_3: f32, range2_: f32) -> f32 {
+    let q_2 = (d2_3 / range2_);
+    let w_9 = saturate((1f - (q_2 * q_2)));
+    return ((w_9 * w_9) / max(d2_3, 0.0001f));
 }
-fn sphere_contains_point(c: vec3f, r: f32, x: vec3f) -> bool {
-    let v: vec3f = x - c;
-    return dot(v, v) <= r * r;
+
+fn sphere_contains_point(c: vec3<f32>, r: f32, x_3: vec3<f32>) -> bool {
+    let v_4 = (x_3 - c);
+    return (dot(v_4, v_4) <= (r * r));
 }
-fn sphere_overlaps_sphere(c1: vec3f, r1: f32, c2: vec3f, r2: f32) -> bool {
-    let v: vec3f = c2 - c1;
-    let r: f32 = r1 + r2;
-    return dot(v, v) <= r * r;
+
+fn sphere_overlaps_sphere(c1_: vec3<f32>, r1_: f32, c2_: vec3<f32>, r2_2: f32) -> bool {
+    let v_5 = (c2_ - c1_);
+    let r_3 = (r1_ + r2_2);
+    return (dot(v_5, v_5) <= (r_3 * r_3));
 }
-const SPHERE_PAD: f32 = 0.000000476837158203125;
-const SPHERE_HUGE: f32 = 340282346638528859811704183484516925440.0;
-const SPHERE_PAD_ABS: f32 = 1e-18;
-fn sphere_pad(r: f32, c: vec3f) -> f32 {
-    return (r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD + SPHERE_PAD_ABS;
+
+fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
+    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
 }
-fn sphere_union(c1: vec3f, r1: f32, c2: vec3f, r2: f32) -> vec4f {
-    let v: vec3f = c2 - c1;
-    let d: f32 = sqrt(dot(v, v));
-    if r1 >= d + r2 + sphere_pad(r1, c1) {
-        return vec4f(c1.x, c1.y, c1.z, r1);
+
+fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<f32> {
+    var local: bool;
+
+    let v_6 = (c2_1 - c1_1);
+    let d_4 = sqrt(dot(v_6, v_6));
+    let _e8 = sphere_pad(r1_1, c1_1);
+    if (r1_1 >= ((d_4 + r2_3) + _e8)) {
+        return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
-    if r2 >= d + r1 + sphere_pad(r2, c2) {
-        return vec4f(c2.x, c2.y, c2.z, r2);
+    let _e16 = sphere_pad(r2_3, c2_1);
+    if (r2_3 >= ((d_4 + r1_1) + _e16)) {
+        return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if d >= SPHERE_HUGE || 0.5 * (d + r1 + r2) >= SPHERE_HUGE {
-        return vec4f(c1.x, c1.y, c1.z, SPHERE_HUGE);
+    if !((d_4 >= SPHERE_HUGE)) {
+        local = ((0.5f * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    } else {
+        local = true;
     }
-    if abs(r1 - r2) >= d {
-        if r1 >= r2 {
-            let rn: f32 = max(r1, d + r2);
-            return vec4f(c1.x, c1.y, c1.z, rn + sphere_pad(rn, c1));
+    let _e35 = local;
+    if _e35 {
+        return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
+    }
+    if (abs((r1_1 - r2_3)) >= d_4) {
+        if (r1_1 >= r2_3) {
+            let rn = max(r1_1, (d_4 + r2_3));
+            let _e50 = sphere_pad(rn, c1_1);
+            return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        let rm: f32 = max(r2, d + r1);
-        return vec4f(c2.x, c2.y, c2.z, rm + sphere_pad(rm, c2));
+        let rm = max(r2_3, (d_4 + r1_1));
+        let _e58 = sphere_pad(rm, c2_1);
+        return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    let r0: f32 = 0.5 * (d + r1 + r2);
-    let c: vec3f = c1 + v * ((r0 - r1) / d);
-    let e1: vec3f = c - c1;
-    let e2: vec3f = c - c2;
-    let r: f32 = max(r0, max(sqrt(dot(e1, e1)) + r1, sqrt(dot(e2, e2)) + r2));
-    return vec4f(c.x, c.y, c.z, r + sphere_pad(r, c));
+    let r0_ = (0.5f * ((d_4 + r1_1) + r2_3));
+    let c_9 = (c1_1 + (v_6 * ((r0_ - r1_1) / d_4)));
+    let e1_ = (c_9 - c1_1);
+    let e2_ = (c_9 - c2_1);
+    let r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
+    let _e82 = sphere_pad(r_4, c_9);
+    return vec4<f32>(c_9.x, c_9.y, c_9.z, (r_4 + _e82));
 }
-fn sphere_overlaps_aabb(c: vec3f, r: f32, bmin: vec3f, bmax: vec3f) -> bool {
-    let q: vec3f = clamp(c, bmin, bmax);
-    let v: vec3f = q - c;
-    return dot(v, v) <= r * r;
+
+fn sphere_overlaps_aabb(c_2: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
+    let q_3 = clamp(c_2, bmin, bmax);
+    let v_7 = (q_3 - c_2);
+    return (dot(v_7, v_7) <= (r_2 * r_2));
 }
-const INV_PI: f32 = 0.3183098861837907;
-const MIN_D2: f32 = 0.000000000001;
-fn vpl_rt2(flux: vec3f, exposure: f32, error_bound: f32, mode: u32) -> f32 {
-    return threshold_range2(intensity_measure(flux * INV_PI, mode), exposure, error_bound);
+
+fn vpl_rt2_(flux: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32) -> f32 {
+    let _e6 = intensity_measure((flux * INV_PI), mode_1);
+    let _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
+    return _e7;
 }
-fn range_radius(extent: f32, r2: f32) -> f32 {
-    return extent + sqrt(r2);
+
+fn range_radius(extent: f32, r2_4: f32) -> f32 {
+    return (extent + sqrt(r2_4));
 }
-fn inverse_square(d2: f32) -> f32 {
-    return 1.0 / max(d2, MIN_D2);
+
+fn inverse_square(d2_4: f32) -> f32 {
+    return (1f / max(d2_4, MIN_D2_));
 }
-fn connection_factor(cos_x: f32, d2: f32, rt2: f32, w: f32) -> f32 {
-    return cos_x * inverse_square(d2) * slc_weight(rt2, d2) * w;
+
+fn connection_factor(cos_x: f32, d2_5: f32, rt2_3: f32, w: f32) -> f32 {
+    let _e4 = inverse_square(d2_5);
+    let _e6 = slc_weight(rt2_3, d2_5);
+    return (((cos_x * _e4) * _e6) * w);
 }
-fn vpl_lobe(n: vec3f, w: vec3f) -> f32 {
-    return max(dot(n, w), 0.0) * INV_PI;
+
+fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_5: f32) -> f32 {
+    var local_1: bool;
+    var local_2: bool;
+
+    let v_8 = (x_4 - y);
+    let d2_11 = dot(v_8, v_8);
+    let _e7 = slc_keep(r2_5, d2_11);
+    if !(!(_e7)) {
+        local_1 = !((d2_11 > 0f));
+    } else {
+        local_1 = true;
+    }
+    let _e16 = local_1;
+    if _e16 {
+        return 0f;
+    }
+    let w_10 = (v_8 / vec3(sqrt(d2_11)));
+    let cos_x_1 = -(dot(n, w_10));
+    if !((cos_x_1 <= 0f)) {
+        local_2 = (dot(ng, w_10) >= 0f);
+    } else {
+        local_2 = true;
+    }
+    let _e32 = local_2;
+    if _e32 {
+        return 0f;
+    }
+    return cos_x_1;
 }
-fn vpl_transfer(n_l: vec3f, n_x: vec3f, v: vec3f, min_d2: f32) -> f32 {
-    let m: f32 = max(dot(v, v), min_d2);
-    return max(dot(n_l, v), 0.0) * max(-dot(n_x, v), 0.0) * INV_PI / (m * m);
+
+fn vpl_lobe(n_1: vec3<f32>, w_1: vec3<f32>) -> f32 {
+    return (max(dot(n_1, w_1), 0f) * INV_PI);
 }
+
+fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v_1: vec3<f32>, min_d2_: f32) -> f32 {
+    let m = max(dot(v_1, v_1), min_d2_);
+    return (((max(dot(n_l, v_1), 0f) * max(-(dot(n_x, v_1)), 0f)) * INV_PI) / (m * m));
+}
+
 fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
-    if cos_inner <= cos_outer {
-        return select(0.0, 1.0, cos_theta >= cos_outer);
+    if (cos_inner <= cos_outer) {
+        return select(0f, 1f, (cos_theta >= cos_outer));
     }
-    let t: f32 = saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
-    return t * t * (3.0 - 2.0 * t);
+    let t_2 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return ((t_2 * t_2) * (3f - (2f * t_2)));
 }
-fn triangle_lobe(n: vec3f, area: f32, w: vec3f) -> f32 {
-    return area * max(dot(n, w), 0.0);
+
+fn triangle_lobe(n_2: vec3<f32>, area: f32, w_2: vec3<f32>) -> f32 {
+    return (area * max(dot(n_2, w_2), 0f));
 }
-fn triangle_sample(a: vec3f, b: vec3f, c: vec3f, u1: f32, u2: f32) -> vec3f {
-    let su: f32 = sqrt(u1);
-    let b0: f32 = 1.0 - su;
-    let b1: f32 = u2 * su;
-    return a * b0 + b * b1 + c * (1.0 - b0 - b1);
+
+fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_3: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
+    let su = sqrt(u1_);
+    let b0_ = (1f - su);
+    let b1_ = (u2_ * su);
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_3 * ((1f - b0_) - b1_)));
 }
-fn area_to_solid_angle_pdf(pdf_area: f32, d2: f32, cos_light: f32) -> f32 {
-    let c: f32 = abs(cos_light);
-    if c <= 0.0 {
-        return 0.0;
+
+fn area_to_solid_angle_pdf(pdf_area: f32, d2_6: f32, cos_light: f32) -> f32 {
+    let c_10 = abs(cos_light);
+    if (c_10 <= 0f) {
+        return 0f;
     }
-    return pdf_area * d2 / c;
+    return ((pdf_area * d2_6) / c_10);
 }
-fn atan_portable(x: f32) -> f32 {
-    let a: f32 = abs(x);
-    var base: f32 = 0.0;
-    var t: f32 = a;
-    if a > 2.4142137 {
-        base = 1.5707964;
-        t = -1.0 / a;
-    } else if a > 0.41421357 {
-        base = 0.7853982;
-        t = (a - 1.0) / (a + 1.0);
-    }
-    let z: f32 = t * t;
-    let r: f32 = base + ((((0.080537446 * z - 0.13877685) * z + 0.19977711) * z - 0.3333295) * z * t + t);
-    return select(r, -r, x < 0.0);
-}
-fn atan2_portable(y: f32, x: f32) -> f32 {
-    if x == 0.0 {
-        if y > 0.0 {
-            return 1.5707964;
+
+fn atan_portable(x_5: f32) -> f32 {
+    var base: f32 = 0f;
+    var t: f32;
+
+    let a_9 = abs(x_5);
+    t = a_9;
+    if (a_9 > 2.4142137f) {
+        base = 1.5707964f;
+        t = (-1f / a_9);
+    } else {
+        if (a_9 > 0.41421357f) {
+            base = 0.7853982f;
+            t = ((a_9 - 1f) / (a_9 + 1f));
         }
-        if y < 0.0 {
-            return -1.5707964;
-        }
-        return 0.0;
     }
-    let a: f32 = atan_portable(y / x);
-    if x > 0.0 {
-        return a;
-    }
-    if y >= 0.0 {
-        return a + 3.1415927;
-    }
-    return a - 3.1415927;
+    let _e18 = t;
+    let _e19 = t;
+    let z_3 = (_e18 * _e19);
+    let _e21 = base;
+    let _e33 = t;
+    let _e35 = t;
+    let r_5 = (_e21 + (((((((((0.080537446f * z_3) - 0.13877685f) * z_3) + 0.19977711f) * z_3) - 0.3333295f) * z_3) * _e33) + _e35));
+    return select(r_5, -(r_5), (x_5 < 0f));
 }
-fn ies_fold_c(c: f32, h_first: f32, h_last: f32) -> f32 {
-    var a: f32 = c - 360.0 * floor(c / 360.0);
-    if h_last <= 0.0 {
-        return 0.0;
-    }
-    if h_last <= 90.0 {
-        if a > 180.0 {
-            a = 360.0 - a;
+
+fn atan2_portable(y_1: f32, x_6: f32) -> f32 {
+    if (x_6 == 0f) {
+        if (y_1 > 0f) {
+            return 1.5707964f;
         }
-        if a > 90.0 {
-            a = 180.0 - a;
+        if (y_1 < 0f) {
+            return -1.5707964f;
         }
-        return a;
+        return 0f;
     }
-    if h_first >= 90.0 {
-        if a < 90.0 {
-            a = 180.0 - a;
-        } else if a > 270.0 {
-            a = 540.0 - a;
-        }
-        return a;
+    let _e12 = atan_portable((y_1 / x_6));
+    if (x_6 > 0f) {
+        return _e12;
     }
-    if h_last <= 180.0 {
-        if a > 180.0 {
-            a = 360.0 - a;
-        }
-        return a;
+    if (y_1 >= 0f) {
+        return (_e12 + 3.1415927f);
     }
-    return a;
+    return (_e12 - 3.1415927f);
 }
-fn ies_segment(tab: Table, start: u32, n: u32, x: f32) -> u32 {
-    if n < 2 {
-        return 0;
+
+fn ies_fold_c(c_4: f32, h_first: f32, h_last: f32) -> f32 {
+    var a_3: f32;
+
+    a_3 = (c_4 - (360f * floor((c_4 / 360f))));
+    if (h_last <= 0f) {
+        return 0f;
     }
-    var lo: u32 = 0;
-    var hi: u32 = n - 1;
-    while hi - lo > 1 {
-        let mid: u32 = (lo + hi) >> 1;
-        if at(tab, start + mid) <= x {
-            lo = mid;
+    if (h_last <= 90f) {
+        let _e15 = a_3;
+        if (_e15 > 180f) {
+            let _e18 = a_3;
+            a_3 = (360f - _e18);
+        }
+        let _e21 = a_3;
+        if (_e21 > 90f) {
+            let _e24 = a_3;
+            a_3 = (180f - _e24);
+        }
+        let _e27 = a_3;
+        return _e27;
+    }
+    if (h_first >= 90f) {
+        let _e30 = a_3;
+        if (_e30 < 90f) {
+            let _e33 = a_3;
+            a_3 = (180f - _e33);
         } else {
-            hi = mid;
+            let _e36 = a_3;
+            if (_e36 > 270f) {
+                let _e39 = a_3;
+                a_3 = (540f - _e39);
+            }
+        }
+        let _e42 = a_3;
+        return _e42;
+    }
+    if (h_last <= 180f) {
+        let _e45 = a_3;
+        if (_e45 > 180f) {
+            let _e48 = a_3;
+            a_3 = (360f - _e48);
+        }
+        let _e51 = a_3;
+        return _e51;
+    }
+    let _e52 = a_3;
+    return _e52;
+}
+
+fn ies_segment(tab_1: u32, start: u32, n_3: u32, x_7: f32) -> u32 {
+    var lo: u32 = 0u;
+    var hi: u32;
+
+    if (n_3 < 2u) {
+        return 0u;
+    }
+    hi = (n_3 - 1u);
+    loop {
+        let _e12 = hi;
+        let _e13 = lo;
+        if ((_e12 - _e13) > 1u) {
+        } else {
+            break;
+        }
+        {
+            let _e17 = lo;
+            let _e18 = hi;
+            let mid = ((_e17 + _e18) >> 1u);
+            let _e23 = at(tab_1, (start + mid));
+            if (_e23 <= x_7) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
         }
     }
-    return lo;
+    let _e25 = lo;
+    return _e25;
 }
-fn ies_lerp_t(a0: f32, a1: f32, x: f32) -> f32 {
-    if a1 <= a0 {
-        return 0.0;
+
+fn ies_lerp_t(a0_: f32, a1_: f32, x_8: f32) -> f32 {
+    if (a1_ <= a0_) {
+        return 0f;
     }
-    return saturate((x - a0) / (a1 - a0));
+    return saturate(((x_8 - a0_) / (a1_ - a0_)));
 }
-fn ies_candela(tab: Table, base: u32, gamma: f32, c: f32) -> f32 {
-    let nv: u32 = to_u32(at(tab, base));
-    let nh: u32 = to_u32(at(tab, base + 1));
-    let v0: u32 = base + 2;
-    let h0: u32 = v0 + nv;
-    let c0: u32 = h0 + nh;
-    if gamma < at(tab, v0) || gamma > at(tab, v0 + nv - 1) {
-        return 0.0;
+
+fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_5: f32) -> f32 {
+    var local_3: bool;
+
+    let _e4 = at(tab_2, base_1);
+    let _e5 = to_u32_(_e4);
+    let _e8 = at(tab_2, (base_1 + 1u));
+    let _e9 = to_u32_(_e8);
+    let v0_ = (base_1 + 2u);
+    let h0_ = (v0_ + _e5);
+    let c0_1 = (h0_ + _e9);
+    let _e14 = at(tab_2, v0_);
+    if !((gamma < _e14)) {
+        let _e22 = at(tab_2, ((v0_ + _e5) - 1u));
+        local_3 = (gamma > _e22);
+    } else {
+        local_3 = true;
     }
-    let hc: f32 = ies_fold_c(c, at(tab, h0), at(tab, h0 + nh - 1));
-    let iv: u32 = ies_segment(tab, v0, nv, gamma);
-    let ih: u32 = ies_segment(tab, h0, nh, hc);
-    let iv1: u32 = min(iv + 1, nv - 1);
-    let ih1: u32 = min(ih + 1, nh - 1);
-    let tv: f32 = ies_lerp_t(at(tab, v0 + iv), at(tab, v0 + iv1), gamma);
-    let th: f32 = ies_lerp_t(at(tab, h0 + ih), at(tab, h0 + ih1), hc);
-    let a: f32 = at(tab, c0 + ih * nv + iv) * (1.0 - tv) + at(tab, c0 + ih * nv + iv1) * tv;
-    let b: f32 = at(tab, c0 + ih1 * nv + iv) * (1.0 - tv) + at(tab, c0 + ih1 * nv + iv1) * tv;
-    return a * (1.0 - th) + b * th;
-}
-fn ies_candela_dir(tab: Table, base: u32, wn: f32, wr: f32, ws: f32) -> f32 {
-    let gamma: f32 = degrees(atan2_portable(sqrt(wr * wr + ws * ws), wn));
-    let on_axis: bool = abs(wr) + abs(ws) <= 0.0;
-    let c: f32 = select(degrees(atan2_portable(ws, wr)), 0.0, on_axis);
-    return ies_candela(tab, base, gamma, c);
-}
-const BSH_NONE: u32 = 4294967295;
-struct BshNode {
-    center: vec3f, radius: f32, child: u32, next: u32, light: u32, pad: u32
-}
-fn mul_hi_u32(a: u32, b: u32) -> u32 {
-    let a_lo: u32 = a & 65535;
-    let a_hi: u32 = a >> 16;
-    let b_lo: u32 = b & 65535;
-    let b_hi: u32 = b >> 16;
-    let ll: u32 = a_lo * b_lo;
-    let lh: u32 = a_lo * b_hi;
-    let hl: u32 = a_hi * b_lo;
-    let hh: u32 = a_hi * b_hi;
-    let mid: u32 = (ll >> 16) + (lh & 65535) + (hl & 65535);
-    return hh + (lh >> 16) + (hl >> 16) + (mid >> 16);
-}
-fn uniform_index(n: u32, hi: u32, lo: u32) -> u32 {
-    let p_lo: u32 = mul_lo_u32(hi, n);
-    let p_hi: u32 = mul_hi_u32(hi, n);
-    let carry_in: u32 = mul_hi_u32(lo, n);
-    if p_lo > 4294967295 - carry_in {
-        return p_hi + 1;
+    let _e25 = local_3;
+    if _e25 {
+        return 0f;
     }
-    return p_hi;
+    let _e27 = at(tab_2, h0_);
+    let _e31 = at(tab_2, ((h0_ + _e9) - 1u));
+    let _e32 = ies_fold_c(c_5, _e27, _e31);
+    let _e33 = ies_segment(tab_2, v0_, _e5, gamma);
+    let _e34 = ies_segment(tab_2, h0_, _e9, _e32);
+    let iv1_ = min((_e33 + 1u), (_e5 - 1u));
+    let ih1_ = min((_e34 + 1u), (_e9 - 1u));
+    let _e46 = at(tab_2, (v0_ + _e33));
+    let _e48 = at(tab_2, (v0_ + iv1_));
+    let _e49 = ies_lerp_t(_e46, _e48, gamma);
+    let _e51 = at(tab_2, (h0_ + _e34));
+    let _e53 = at(tab_2, (h0_ + ih1_));
+    let _e54 = ies_lerp_t(_e51, _e53, _e32);
+    let _e58 = at(tab_2, ((c0_1 + (_e34 * _e5)) + _e33));
+    let _e65 = at(tab_2, ((c0_1 + (_e34 * _e5)) + iv1_));
+    let a_10 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
+    let _e71 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + _e33));
+    let _e78 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + iv1_));
+    let b_7 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
+    return ((a_10 * (1f - _e54)) + (b_7 * _e54));
 }
-fn reservoir_slot(n: u32, k: u32, hi: u32, lo: u32) -> u32 {
-    if n <= k {
-        return n - 1;
+
+fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
+    let _e9 = atan2_portable(sqrt(((wr * wr) + (ws * ws))), wn);
+    let gamma_1 = degrees(_e9);
+    let on_axis = ((abs(wr) + abs(ws)) <= 0f);
+    let _e16 = atan2_portable(ws, wr);
+    let c_11 = select(degrees(_e16), 0f, on_axis);
+    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_11);
+    return _e20;
+}
+
+fn ies_light_candela(tab_4: u32, base_3: u32, nadir: vec3<f32>, reference: vec3<f32>, w_3: vec3<f32>) -> f32 {
+    let side = cross(reference, nadir);
+    let _e9 = ies_candela_dir(tab_4, base_3, dot(w_3, nadir), dot(w_3, reference), dot(w_3, side));
+    return _e9;
+}
+
+fn mul_hi_u32_(a_4: u32, b_3: u32) -> u32 {
+    let a_lo = (a_4 & 65535u);
+    let a_hi = (a_4 >> 16u);
+    let b_lo = (b_3 & 65535u);
+    let b_hi = (b_3 >> 16u);
+    let ll = (a_lo * b_lo);
+    let lh = (a_lo * b_hi);
+    let hl = (a_hi * b_lo);
+    let hh = (a_hi * b_hi);
+    let mid_1 = (((ll >> 16u) + (lh & 65535u)) + (hl & 65535u));
+    return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u));
+}
+
+fn uniform_index(n_4: u32, hi_1: u32, lo_1: u32) -> u32 {
+    let _e3 = mul_lo_u32_(hi_1, n_4);
+    let _e4 = mul_hi_u32_(hi_1, n_4);
+    let _e5 = mul_hi_u32_(lo_1, n_4);
+    if (_e3 > (4294967295u - _e5)) {
+        return (_e4 + 1u);
     }
-    let j: u32 = uniform_index(n, hi, lo);
-    if j < k {
-        return j;
+    return _e4;
+}
+
+fn reservoir_slot(n_5: u32, k: u32, hi_2: u32, lo_2: u32) -> u32 {
+    if (n_5 <= k) {
+        return (n_5 - 1u);
+    }
+    let _e7 = uniform_index(n_5, hi_2, lo_2);
+    if (_e7 < k) {
+        return _e7;
     }
     return k;
 }
-fn reservoir_weight(n: u32, k: u32) -> f32 {
-    return max(to_f32(n) / to_f32(k), 1.0);
+
+fn reservoir_takes(n_6: u32) -> bool {
+    return (n_6 < RESERVOIR_FULL);
 }
-fn weighted_replace(w: f32, w_sum: f32, u: f32) -> bool {
-    return u * w_sum < w;
+
+fn reservoir_weight(n_7: u32, k_1: u32) -> f32 {
+    let _e2 = to_f32_(n_7);
+    let _e3 = to_f32_(k_1);
+    return max((_e2 / _e3), 1f);
 }
-fn weighted_pick_weight(w_sum: f32, w: f32, k: u32) -> f32 {
-    return w_sum / (to_f32(k) * w);
+
+fn weighted_replace(w_4: f32, w_sum: f32, u_1: f32) -> bool {
+    return ((u_1 * w_sum) < w_4);
 }
+
+fn weighted_pick_weight(w_sum_1: f32, w_5: f32, k_2: u32) -> f32 {
+    let _e3 = to_f32_(k_2);
+    return (w_sum_1 / (_e3 * w_5));
+}
+
+fn reservoir_select_pdf(seen: u32, in_range: bool, k_3: u32) -> f32 {
+    var others: u32;
+    var local_4: bool;
+
+    others = seen;
+    if in_range {
+        local_4 = (seen > 0u);
+    } else {
+        local_4 = false;
+    }
+    let _e9 = local_4;
+    if _e9 {
+        others = (seen - 1u);
+    }
+    let _e12 = others;
+    let _e15 = reservoir_weight((_e12 + 1u), k_3);
+    return (1f / _e15);
+}
+
+fn uniform_light(u_2: f32, n_8: u32) -> u32 {
+    let _e2 = to_f32_(n_8);
+    let _e4 = to_u32_((u_2 * _e2));
+    return min(_e4, (n_8 - 1u));
+}
+
 fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
-    if cos_a > cos_b {
-        return 1.0;
+    if (cos_a > cos_b) {
+        return 1f;
     }
-    return cos_a * cos_b + sin_a * sin_b;
+    return ((cos_a * cos_b) + (sin_a * sin_b));
 }
-fn sin_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
-    if cos_a > cos_b {
-        return 0.0;
+
+fn sin_sub_clamped(sin_a_1: f32, cos_a_1: f32, sin_b_1: f32, cos_b_1: f32) -> f32 {
+    if (cos_a_1 > cos_b_1) {
+        return 0f;
     }
-    return sin_a * cos_b - cos_a * sin_b;
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
 }
-fn safe_sqrt(x: f32) -> f32 {
-    return sqrt(max(x, 0.0));
+
+fn safe_sqrt(x_9: f32) -> f32 {
+    return sqrt(max(x_9, 0f));
 }
-fn light_importance(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, p: vec3f, n: vec3f) -> f32 {
-    let v: vec3f = p - center;
-    let dist2: f32 = dot(v, v);
-    let r2: f32 = radius * radius;
-    let d2: f32 = max(max(dist2, r2), MIN_D2);
-    let wi: vec3f = select(vec3f(0.0, 0.0, 0.0), v / sqrt(dist2), dist2 > 0.0);
-    let cos_w: f32 = dot(axis, wi);
-    let sin_w: f32 = safe_sqrt(1.0 - cos_w * cos_w);
-    let cos_b: f32 = select(safe_sqrt(1.0 - r2 / dist2), -1.0, dist2 <= r2);
-    let sin_b: f32 = safe_sqrt(1.0 - cos_b * cos_b);
-    let sin_o: f32 = safe_sqrt(1.0 - cos_o * cos_o);
-    let cos_x: f32 = cos_sub_clamped(sin_w, cos_w, sin_o, cos_o);
-    let sin_x: f32 = sin_sub_clamped(sin_w, cos_w, sin_o, cos_o);
-    let cos_p: f32 = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
-    if cos_p <= cos_e {
-        return 0.0;
+
+fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, cos_o: f32, cos_e: f32, p: vec3<f32>, n_9: vec3<f32>) -> f32 {
+    var imp: f32;
+
+    let v_9 = (p - center);
+    let dist2_ = dot(v_9, v_9);
+    let r2_6 = (radius * radius);
+    let d2_12 = max(max(dist2_, r2_6), MIN_D2_);
+    let wi = select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_))), (dist2_ > 0f));
+    let cos_w = dot(axis, wi);
+    let _e28 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e32 = safe_sqrt((1f - (r2_6 / dist2_)));
+    let cos_b_2 = select(_e32, -1f, (dist2_ <= r2_6));
+    let _e39 = safe_sqrt((1f - (cos_b_2 * cos_b_2)));
+    let _e43 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
+    let _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
+    let _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
+    if (_e46 <= cos_e) {
+        return 0f;
     }
-    var imp: f32 = phi * cos_p / d2;
-    if dot(n, n) > 0.0 {
-        let cos_i: f32 = -dot(wi, n);
-        let sin_i: f32 = safe_sqrt(1.0 - cos_i * cos_i);
-        imp = imp * max(cos_sub_clamped(sin_i, cos_i, sin_b, cos_b), 0.0);
+    imp = ((phi * _e46) / d2_12);
+    if (dot(n_9, n_9) > 0f) {
+        let cos_i = -(dot(wi, n_9));
+        let _e60 = safe_sqrt((1f - (cos_i * cos_i)));
+        let _e61 = imp;
+        let _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
+        imp = (_e61 * max(_e62, 0f));
     }
-    return max(imp, 0.0);
+    let _e66 = imp;
+    return max(_e66, 0f);
 }
-fn candidate_weight(importance: f32, rt2: f32, d2: f32) -> f32 {
-    return importance * slc_weight(rt2, d2);
+
+fn candidate_weight(importance: f32, rt2_4: f32, d2_7: f32) -> f32 {
+    let _e3 = slc_weight(rt2_4, d2_7);
+    return (importance * _e3);
 }
-fn cone_weight(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, rt2: f32, p: vec3f, n: vec3f) -> f32 {
-    let v: vec3f = p - center;
-    return candidate_weight(light_importance(center, radius, phi, axis, cos_o, cos_e, p, n) * INV_PI, rt2, dot(v, v));
+
+fn cone_weight(center_1: vec3<f32>, radius_1: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, rt2_5: f32, p_1: vec3<f32>, n_10: vec3<f32>) -> f32 {
+    let v_10 = (p_1 - center_1);
+    let _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
+    let _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_10, v_10));
+    return _e14;
 }
-fn weighted_select_pdf(w: f32, w_sum: f32, in_range: bool, k: u32) -> f32 {
-    if w <= 0.0 {
-        return 0.0;
+
+fn weighted_select_pdf(w_6: f32, w_sum_2: f32, in_range_1: bool, k_4: u32) -> f32 {
+    if (w_6 <= 0f) {
+        return 0f;
     }
-    let total: f32 = select(w_sum + w, w_sum, in_range);
-    return to_f32(k) * w / total;
+    let total = select((w_sum_2 + w_6), w_sum_2, in_range_1);
+    let _e9 = to_f32_(k_4);
+    return ((_e9 * w_6) / total);
 }
-const LIGHT_BVH_LEAF: u32 = 4294967295;
-const ONE_MINUS_EPSILON: f32 = 0.99999994;
-fn bvh_first_prob(c0: f32, c1: f32) -> f32 {
-    let s: f32 = c0 + c1;
-    if s > 0.0 {
-        return c0 / s;
+
+fn bvh_first_prob(c0_: f32, c1_2: f32) -> f32 {
+    let s = (c0_ + c1_2);
+    if (s > 0f) {
+        return (c0_ / s);
     }
-    return -1.0;
+    return -1f;
 }
-fn bvh_remap_u(u: f32, p0: f32, first: bool) -> f32 {
+
+fn bvh_remap_u(u_3: f32, p0_: f32, first: bool) -> f32 {
     if first {
-        return min(u / p0, ONE_MINUS_EPSILON);
+        return min((u_3 / p0_), ONE_MINUS_EPSILON);
     }
-    return clamp((u - p0) / (1.0 - p0), 0.0, ONE_MINUS_EPSILON);
+    return clamp(((u_3 - p0_) / (1f - p0_)), 0f, ONE_MINUS_EPSILON);
 }
-fn ray_aabb(o: vec3f, inv_d: vec3f, bmin: vec3f, bmax: vec3f, t_max: f32) -> f32 {
-    let t0: vec3f = (bmin - o) * inv_d;
-    let t1: vec3f = (bmax - o) * inv_d;
-    let lo: vec3f = min(t0, t1);
-    let hi: vec3f = max(t0, t1);
-    let t_in: f32 = max(max(lo.x, lo.y), max(lo.z, 0.0));
-    let t_out: f32 = min(min(hi.x, hi.y), min(hi.z, t_max));
-    if t_in <= t_out {
+
+fn surface_offset(diag: f32) -> f32 {
+    return (0.00001f * diag);
+}
+
+fn ray_t_min(diag_1: f32) -> f32 {
+    return (0.000001f * diag_1);
+}
+
+fn shadow_margin(len: f32) -> f32 {
+    return (0.0001f * len);
+}
+
+fn ray_inverse(x_10: f32) -> f32 {
+    return (1f / select(x_10, 0.000000000000000000000000000001f, (abs(x_10) < 0.000000000000000000000000000001f)));
+}
+
+fn ray_inverse3_(d: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d.x);
+    let _e4 = ray_inverse(d.y);
+    let _e6 = ray_inverse(d.z);
+    return vec3<f32>(_e2, _e4, _e6);
+}
+
+fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>, t_max: f32) -> f32 {
+    let t0_ = ((bmin_1 - o) * inv_d);
+    let t1_ = ((bmax_1 - o) * inv_d);
+    let lo_3 = min(t0_, t1_);
+    let hi_3 = max(t0_, t1_);
+    let t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0f));
+    let t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
+    if (t_in <= t_out) {
         return t_in;
     }
-    return -1.0;
+    return -1f;
 }
-fn triangle_normal(a: vec3f, b: vec3f, c: vec3f) -> vec3f {
-    let n: vec3f = cross(b - a, c - a);
-    let l2: f32 = dot(n, n);
-    if !(l2 > 0.0) || !(l2 < 3.0e38) {
-        return vec3f(0.0, 0.0, 0.0);
+
+fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> {
+    var local_5: bool;
+
+    let n_17 = cross((b_4 - a_5), (c_6 - a_5));
+    let l2_ = dot(n_17, n_17);
+    if !(!((l2_ > 0f))) {
+        local_5 = !((l2_ < 300000000000000000000000000000000000000f));
+    } else {
+        local_5 = true;
     }
-    return n / sqrt(l2);
-}
-fn face_against(n: vec3f, dir: vec3f) -> vec3f {
-    return select(n, -n, dot(n, dir) > 0.0);
-}
-fn barycentric(p: vec3f, a: vec3f, b: vec3f, c: vec3f) -> vec3f {
-    let e1: vec3f = b - a;
-    let e2: vec3f = c - a;
-    let q: vec3f = p - a;
-    let d11: f32 = dot(e1, e1);
-    let d12: f32 = dot(e1, e2);
-    let d22: f32 = dot(e2, e2);
-    let den: f32 = d11 * d22 - d12 * d12;
-    if !(abs(den) > 0.0) {
-        return vec3f(1.0, 0.0, 0.0);
+    let _e17 = local_5;
+    if _e17 {
+        return vec3<f32>(0f, 0f, 0f);
     }
-    let w1: f32 = (d22 * dot(q, e1) - d12 * dot(q, e2)) / den;
-    let w2: f32 = (d11 * dot(q, e2) - d12 * dot(q, e1)) / den;
-    return vec3f(1.0 - w1 - w2, w1, w2);
+    return (n_17 / vec3(sqrt(l2_)));
 }
-fn shading_normal(n0: vec3f, n1: vec3f, n2: vec3f, w: vec3f, facing: vec3f) -> vec3f {
-    let s: vec3f = n0 * w.x + n1 * w.y + n2 * w.z;
-    let l2: f32 = dot(s, s);
-    if !(l2 > 1e-12) || !(l2 < 3.0e38) {
+
+fn face_against(n_11: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+    return select(n_11, -(n_11), (dot(n_11, dir) > 0f));
+}
+
+fn barycentric(p_2: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> {
+    let e1_1 = (b_5 - a_6);
+    let e2_1 = (c_7 - a_6);
+    let q_4 = (p_2 - a_6);
+    let d11_ = dot(e1_1, e1_1);
+    let d12_ = dot(e1_1, e2_1);
+    let d22_ = dot(e2_1, e2_1);
+    let den = ((d11_ * d22_) - (d12_ * d12_));
+    if !((abs(den) > 0f)) {
+        return vec3<f32>(1f, 0f, 0f);
+    }
+    let w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
+    let w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
+    return vec3<f32>(((1f - w1_) - w2_), w1_, w2_);
+}
+
+fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_7: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
+    var local_6: bool;
+
+    let s_1 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
+    let l2_1 = dot(s_1, s_1);
+    if !(!((l2_1 > 0.000000000001f))) {
+        local_6 = !((l2_1 < 300000000000000000000000000000000000000f));
+    } else {
+        local_6 = true;
+    }
+    let _e24 = local_6;
+    if _e24 {
         return facing;
     }
-    let n: vec3f = s / sqrt(l2);
-    return select(n, -n, dot(n, facing) < 0.0);
+    let n_18 = (s_1 / vec3(sqrt(l2_1)));
+    return select(n_18, -(n_18), (dot(n_18, facing) < 0f));
 }
-fn ray_triangle(o: vec3f, d: vec3f, a: vec3f, b: vec3f, c: vec3f, t_min: f32, t_max: f32) -> f32 {
-    let e1: vec3f = b - a;
-    let e2: vec3f = c - a;
-    let p: vec3f = cross(d, e2);
-    let det: f32 = dot(e1, p);
-    if abs(det) <= 0.0 {
-        return -1.0;
+
+fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, c_8: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_7: bool;
+    var local_8: bool;
+    var local_9: bool;
+
+    let e1_2 = (b_6 - a_7);
+    let e2_2 = (c_8 - a_7);
+    let p_3 = cross(d_1, e2_2);
+    let det = dot(e1_2, p_3);
+    if (abs(det) <= 0f) {
+        return -1f;
     }
-    let inv: f32 = 1.0 / det;
-    let s: vec3f = o - a;
-    let u: f32 = dot(s, p) * inv;
-    if u < 0.0 || u > 1.0 {
-        return -1.0;
+    let inv = (1f / det);
+    let s_2 = (o_1 - a_7);
+    let u_5 = (dot(s_2, p_3) * inv);
+    if !((u_5 < 0f)) {
+        local_7 = (u_5 > 1f);
+    } else {
+        local_7 = true;
     }
-    let q: vec3f = cross(s, e1);
-    let v: f32 = dot(d, q) * inv;
-    if v < 0.0 || u + v > 1.0 {
-        return -1.0;
+    let _e28 = local_7;
+    if _e28 {
+        return -1f;
     }
-    let t: f32 = dot(e2, q) * inv;
-    if t > t_min && t < t_max {
-        return t;
+    let q_5 = cross(s_2, e1_2);
+    let v_11 = (dot(d_1, q_5) * inv);
+    if !((v_11 < 0f)) {
+        local_8 = ((u_5 + v_11) > 1f);
+    } else {
+        local_8 = true;
     }
-    return -1.0;
+    let _e42 = local_8;
+    if _e42 {
+        return -1f;
+    }
+    let t_3 = (dot(e2_2, q_5) * inv);
+    if (t_3 > t_min) {
+        local_9 = (t_3 < t_max_1);
+    } else {
+        local_9 = false;
+    }
+    let _e51 = local_9;
+    if _e51 {
+        return t_3;
+    }
+    return -1f;
 }
+
 fn mis_balance(pdf_a: f32, pdf_b: f32) -> f32 {
-    let s: f32 = pdf_a + pdf_b;
-    if s <= 0.0 {
-        return 0.0;
+    let s_3 = (pdf_a + pdf_b);
+    if (s_3 <= 0f) {
+        return 0f;
     }
-    return pdf_a / s;
+    return (pdf_a / s_3);
 }
-fn mis_power(pdf_a: f32, pdf_b: f32) -> f32 {
-    let a2: f32 = pdf_a * pdf_a;
-    let s: f32 = a2 + pdf_b * pdf_b;
-    if s <= 0.0 {
-        return 0.0;
+
+fn mis_power(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
+    let a2_ = (pdf_a_1 * pdf_a_1);
+    let s_4 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if (s_4 <= 0f) {
+        return 0f;
     }
-    return a2 / s;
+    return (a2_ / s_4);
 }
-fn light_strategy_pdf(select: f32, rt2: f32, d2: f32, area: f32, cos_y: f32) -> f32 {
-    if d2 <= 0.0 || area <= 0.0 || cos_y <= 0.0 {
-        return 0.0;
+
+fn light_strategy_pdf(select_: f32, rt2_6: f32, d2_8: f32, area_1: f32, cos_y: f32) -> f32 {
+    var local_10: bool;
+    var local_11: bool;
+
+    if !((d2_8 <= 0f)) {
+        local_10 = (area_1 <= 0f);
+    } else {
+        local_10 = true;
     }
-    return select * rr_probability(rt2, d2) * area_to_solid_angle_pdf(1.0 / area, d2, cos_y);
-}
-fn lambert_brdf(rho: vec3f) -> vec3f {
-    return rho * INV_PI;
-}
-fn cosine_pdf(cos_theta: f32) -> f32 {
-    return max(cos_theta, 0.0) * INV_PI;
-}
-fn cosine_direction(n: vec3f, u1: f32, u2: f32) -> vec3f {
-    let s: f32 = select(-1.0, 1.0, n.z >= 0.0);
-    let a: f32 = -1.0 / (s + n.z);
-    let b: f32 = n.x * n.y * a;
-    let t: vec3f = vec3f(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
-    let bt: vec3f = vec3f(b, s + n.y * n.y * a, -n.y);
-    let r: f32 = sqrt(u1);
-    let phi: f32 = 6.2831855 * u2;
-    return normalize(t * (r * cos(phi)) + bt * (r * sin(phi)) + n * sqrt(max(1.0 - u1, 0.0)));
-}
-const DEPTH_SIGMA: f32 = 0.05;
-const COVER_WEIGHT: f32 = 0.1;
-fn bilateral_weight(n: vec3f, nj: vec3f, z: f32, zj: f32, inv_sz: f32) -> f32 {
-    let dn: f32 = max(dot(n, nj), 0.0);
-    let dn2: f32 = dn * dn;
-    let dn4: f32 = dn2 * dn2;
-    let dn8: f32 = dn4 * dn4;
-    let d: f32 = (zj - z) * inv_sz;
-    let t: f32 = max(1.0 - d * d, 0.0);
-    return dn8 * dn8 * t * t;
-}
-fn interleave_subset(x: u32, y: u32, period: u32) -> u32 {
-    return (y % period) * period + x % period;
-}
-fn interleave_slot(tx: u32, ty: u32, size: u32, period: u32) -> u32 {
-    let side: u32 = size / period;
-    return interleave_subset(tx, ty, period) * side * side + (ty / period) * side + tx / period;
-}
-fn interleave_slot_linear(i: u32, per_subset: u32, period: u32) -> u32 {
-    let subsets: u32 = period * period;
-    return (i % subsets) * per_subset + i / subsets;
-}
-const NEAR_BLOCK: u32 = 64;
-fn near_block_index(tx: u32, ty: u32, size: u32) -> u32 {
-    let side: u32 = size / 8;
-    return ((ty / 8) * side + tx / 8) * NEAR_BLOCK + (ty % 8) * 8 + tx % 8;
-}
-fn near_block_tx(q: u32, size: u32) -> u32 {
-    return ((q / NEAR_BLOCK) % (size / 8)) * 8 + q % 8;
-}
-fn near_block_ty(q: u32, size: u32) -> u32 {
-    return ((q / NEAR_BLOCK) / (size / 8)) * 8 + (q % NEAR_BLOCK) / 8;
-}
-fn vpl_near_weight(d2: f32, near_r2: f32) -> f32 {
-    if near_r2 <= 0.0 {
-        return 0.0;
+    let _e13 = local_10;
+    if !(_e13) {
+        local_11 = (cos_y <= 0f);
+    } else {
+        local_11 = true;
     }
-    let t: f32 = clamp((near_r2 - d2) / (0.75 * near_r2), 0.0, 1.0);
-    return t * t * (3.0 - 2.0 * t);
+    let _e20 = local_11;
+    if _e20 {
+        return 0f;
+    }
+    let _e22 = rr_probability(rt2_6, d2_8);
+    let _e26 = area_to_solid_angle_pdf((1f / area_1), d2_8, cos_y);
+    return ((select_ * _e22) * _e26);
 }
-fn vpl_far_weight(d2: f32, near_r2: f32) -> f32 {
-    return 1.0 - vpl_near_weight(d2, near_r2);
+
+fn lambert_brdf(rho: vec3<f32>) -> vec3<f32> {
+    return (rho * INV_PI);
 }
-fn camera_dir(forward: vec3f, right: vec3f, up: vec3f, px: f32, py: f32, w: f32, h: f32) -> vec3f {
-    let sx: f32 = 2.0 * px / w - 1.0;
-    let sy: f32 = 1.0 - 2.0 * py / h;
-    return normalize(forward + right * sx + up * sy);
+
+fn cosine_pdf(cos_theta_1: f32) -> f32 {
+    return (max(cos_theta_1, 0f) * INV_PI);
 }
-fn path_survival(beta: vec3f) -> f32 {
-    return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
+
+fn cosine_direction(n_12: vec3<f32>, u1_1: f32, u2_1: f32) -> vec3<f32> {
+    let s_5 = select(-1f, 1f, (n_12.z >= 0f));
+    let a_11 = (-1f / (s_5 + n_12.z));
+    let b_8 = ((n_12.x * n_12.y) * a_11);
+    let t_4 = vec3<f32>((1f + (((s_5 * n_12.x) * n_12.x) * a_11)), (s_5 * b_8), (-(s_5) * n_12.x));
+    let bt = vec3<f32>(b_8, (s_5 + ((n_12.y * n_12.y) * a_11)), -(n_12.y));
+    let r_6 = sqrt(u1_1);
+    let phi_2 = (6.2831855f * u2_1);
+    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_12 * sqrt(max((1f - u1_1), 0f)))));
 }
-fn light_map_coord(t: u32, size: u32) -> f32 {
-    return 2.0 * (to_f32(t) + 0.5) / to_f32(size) - 1.0;
+
+fn inv_sigma_z(z: f32) -> f32 {
+    return (1f / (DEPTH_SIGMA * z));
 }
-fn light_map_texel(a: f32, size: u32) -> u32 {
-    return to_u32(clamp(floor((a + 1.0) * 0.5 * to_f32(size)), 0.0, to_f32(size) - 1.0));
+
+fn window_start(x_11: u32, size: u32) -> u32 {
+    let half = (size / 2u);
+    return (max(x_11, half) - half);
 }
-fn light_map_depth(rel: vec3f, axis: vec3f, perspective: bool) -> f32 {
-    return select(dot(rel, axis), sqrt(dot(rel, rel)), perspective);
+
+fn window_end(x_12: u32, size_1: u32, extent_1: u32) -> u32 {
+    return min(((x_12 + size_1) - (size_1 / 2u)), extent_1);
 }
+
+fn wide_window(period: u32) -> u32 {
+    return (2u * period);
+}
+
+fn misses_subset(covered: u32, period_1: u32) -> bool {
+    return (covered < (period_1 * period_1));
+}
+
+fn filtered_irradiance(e: vec3<f32>, sum: vec3<f32>, weight: f32) -> vec3<f32> {
+    if (weight > 0f) {
+        return (sum / vec3(weight));
+    }
+    return e;
+}
+
+fn bilateral_weight(n_13: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f32) -> f32 {
+    let dn = max(dot(n_13, nj), 0f);
+    let dn2_ = (dn * dn);
+    let dn4_ = (dn2_ * dn2_);
+    let dn8_ = (dn4_ * dn4_);
+    let d_5 = ((zj - z_1) * inv_sz);
+    let t_5 = max((1f - (d_5 * d_5)), 0f);
+    return (((dn8_ * dn8_) * t_5) * t_5);
+}
+
+fn interleave_subset(x_13: u32, y_2: u32, period_2: u32) -> u32 {
+    return (((y_2 % period_2) * period_2) + (x_13 % period_2));
+}
+
+fn interleave_slot(tx: u32, ty: u32, size_2: u32, period_3: u32) -> u32 {
+    let side_1 = (size_2 / period_3);
+    let _e5 = interleave_subset(tx, ty, period_3);
+    return ((((_e5 * side_1) * side_1) + ((ty / period_3) * side_1)) + (tx / period_3));
+}
+
+fn interleave_slot_linear(i_1: u32, per_subset: u32, period_4: u32) -> u32 {
+    let subsets = (period_4 * period_4);
+    return (((i_1 % subsets) * per_subset) + (i_1 / subsets));
+}
+
+fn interleave_flux_scale(period_5: u32) -> f32 {
+    let _e2 = to_f32_((period_5 * period_5));
+    return _e2;
+}
+
+fn near_block_index(tx_1: u32, ty_1: u32, size_3: u32) -> u32 {
+    let side_2 = (size_3 / 8u);
+    return ((((((ty_1 / 8u) * side_2) + (tx_1 / 8u)) * NEAR_BLOCK) + ((ty_1 % 8u) * 8u)) + (tx_1 % 8u));
+}
+
+fn near_block_tx(q: u32, size_4: u32) -> u32 {
+    return ((((q / NEAR_BLOCK) % (size_4 / 8u)) * 8u) + (q % 8u));
+}
+
+fn near_block_ty(q_1: u32, size_5: u32) -> u32 {
+    return ((((q_1 / NEAR_BLOCK) / (size_5 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
+}
+
+fn vpl_near_weight(d2_9: f32, near_r2_: f32) -> f32 {
+    if (near_r2_ <= 0f) {
+        return 0f;
+    }
+    let t_6 = clamp(((near_r2_ - d2_9) / (0.75f * near_r2_)), 0f, 1f);
+    return ((t_6 * t_6) * (3f - (2f * t_6)));
+}
+
+fn vpl_far_weight(d2_10: f32, near_r2_1: f32) -> f32 {
+    let _e2 = vpl_near_weight(d2_10, near_r2_1);
+    return (1f - _e2);
+}
+
+fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_8: f32, h: f32) -> vec3<f32> {
+    let sx = (((2f * px) / w_8) - 1f);
+    let sy = (1f - ((2f * py) / h));
+    return normalize(((forward + (right * sx)) + (up * sy)));
+}
+
+fn jittered_pixel(coord: u32, u_4: f32) -> f32 {
+    let _e2 = to_f32_(coord);
+    return (_e2 + u_4);
+}
+
+fn plays_roulette(depth: u32) -> bool {
+    return (depth >= ROULETTE_DEPTH);
+}
+
+fn sees_emission(gn: vec3<f32>, dir_1: vec3<f32>) -> bool {
+    return (dot(gn, dir_1) < 0f);
+}
+
+fn continues_path(nd: vec3<f32>, n_14: vec3<f32>, ng_1: vec3<f32>) -> bool {
+    var local_12: bool;
+
+    if (dot(nd, n_14) > 0f) {
+        local_12 = (dot(nd, ng_1) > 0f);
+    } else {
+        local_12 = false;
+    }
+    let _e12 = local_12;
+    return _e12;
+}
+
+fn finite3_(v_2: vec3<f32>) -> bool {
+    var local_13: bool;
+    var local_14: bool;
+
+    if (abs(v_2.x) <= F32_MAX) {
+        local_13 = (abs(v_2.y) <= F32_MAX);
+    } else {
+        local_13 = false;
+    }
+    let _e12 = local_13;
+    if _e12 {
+        local_14 = (abs(v_2.z) <= F32_MAX);
+    } else {
+        local_14 = false;
+    }
+    let _e20 = local_14;
+    return _e20;
+}
+
+fn path_survival(beta: vec3<f32>) -> f32 {
+    return clamp(max(max(beta.x, beta.y), beta.z), 0.05f, 0.95f);
+}
+
+fn light_map_coord(t_1: u32, size_6: u32) -> f32 {
+    let _e2 = to_f32_(t_1);
+    let _e7 = to_f32_(size_6);
+    return (((2f * (_e2 + 0.5f)) / _e7) - 1f);
+}
+
+fn light_map_texel(a_8: f32, size_7: u32) -> u32 {
+    let _e6 = to_f32_(size_7);
+    let _e9 = to_f32_(size_7);
+    let _e14 = to_u32_(clamp(floor((((a_8 + 1f) * 0.5f) * _e6)), 0f, (_e9 - 1f)));
+    return _e14;
+}
+
+fn light_map_depth(rel: vec3<f32>, axis_2: vec3<f32>, perspective: bool) -> f32 {
+    return select(dot(rel, axis_2), sqrt(dot(rel, rel)), perspective);
+}
+
 fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
-    return texel_area * cos_axis * cos_axis * cos_axis;
+    return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
-fn point_irradiance(intensity: vec3f, n: vec3f, v: vec3f) -> vec3f {
-    let d2: f32 = dot(v, v);
-    let cos_x: f32 = dot(n, v) / sqrt(max(d2, MIN_D2));
-    return intensity * (max(cos_x, 0.0) * inverse_square(d2));
+
+fn point_irradiance(intensity_1: vec3<f32>, n_15: vec3<f32>, v_3: vec3<f32>) -> vec3<f32> {
+    let d2_13 = dot(v_3, v_3);
+    let cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_13, MIN_D2_)));
+    let _e11 = inverse_square(d2_13);
+    return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }
-fn directional_irradiance(e: vec3f, n: vec3f, to_light: vec3f) -> vec3f {
-    return e * max(dot(n, to_light), 0.0);
+
+fn directional_irradiance(e_1: vec3<f32>, n_16: vec3<f32>, to_light: vec3<f32>) -> vec3<f32> {
+    return (e_1 * max(dot(n_16, to_light), 0f));
 }
-fn shadow_bias(texel: f32, cos_light: f32) -> f32 {
-    let c: f32 = clamp(cos_light, 0.02, 1.0);
-    return texel * (1.5 + sqrt(1.0 - c * c) / c);
+
+fn perspective_texel_width(extent_2: f32, d_2: f32, z_2: f32, size_8: f32) -> f32 {
+    return ((((2f * extent_2) * d_2) * d_2) / (size_8 * z_2));
 }
-fn shadow_lit(d: f32, d_map: f32, bias: f32) -> bool {
-    return d_map <= 0.0 || d <= d_map + bias;
+
+fn ortho_texel_width(extent_3: f32, size_9: f32) -> f32 {
+    return ((2f * extent_3) / size_9);
 }
-fn diffuse_radiance(albedo: vec3f, emission: vec3f, e: vec3f) -> vec3f {
-    return emission + albedo * INV_PI * e;
+
+fn shadow_bias(texel: f32, cos_light_1: f32) -> f32 {
+    let c_12 = clamp(cos_light_1, 0.02f, 1f);
+    return (texel * (1.5f + (sqrt((1f - (c_12 * c_12))) / c_12)));
 }
+
+fn shadow_lit(d_3: f32, d_map: f32, bias: f32) -> bool {
+    var local_15: bool;
+
+    if !((d_map <= 0f)) {
+        local_15 = (d_3 <= (d_map + bias));
+    } else {
+        local_15 = true;
+    }
+    let _e11 = local_15;
+    return _e11;
+}
+
+fn diffuse_radiance(albedo: vec3<f32>, emission: vec3<f32>, e_2: vec3<f32>) -> vec3<f32> {
+    return (emission + ((albedo * INV_PI) * e_2));
+}
+

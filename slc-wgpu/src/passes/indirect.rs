@@ -212,8 +212,8 @@ impl IndirectPass {
         gpu.require("max_storage_textures_per_shader_stage", 1, lim.max_storage_textures_per_shader_stage as u64)?;
         let per_subset = (count / subsets as u64) as u32;
         let list = per_subset.clamp(1, crate::vpl::TILE_LIST);
-        let wg_bytes = 32 * TILE * TILE + 4 * list + 4;
-        gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes as u64, lim.max_compute_workgroup_storage_size as u64)?;
+        let wg_bytes = slc_shared_shaders::vpl_tiled_workgroup_bytes(TILE, list);
+        gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes, lim.max_compute_workgroup_storage_size as u64)?;
 
         let vpl = LightSet { vpl: true, ..LightSet::default() };
         let base = Features { lights: vpl, tile_size: TILE, interleave: PERIOD, workgroup_size: WG, max_tile_lights: list, ..Features::default() };
@@ -367,7 +367,7 @@ impl IndirectPass {
                 mode: params.measure().mode(),
                 exposure: params.exposure(),
                 error_bound: params.error_bound(),
-                scale: (PERIOD * PERIOD) as f32,
+                scale: slc_core::interleave::interleave_flux_scale(PERIOD),
                 slc: slc as u32,
                 fixed_r2: if st.method == VplMethod::Clamp { st.range * st.range } else { f32::MAX },
                 pad0: 0,

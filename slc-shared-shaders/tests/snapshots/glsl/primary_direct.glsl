@@ -194,6 +194,7 @@ const uint MAP_CAMERA = 0u;
 const uint MAP_PERSPECTIVE = 1u;
 const uint MAP_ORTHOGRAPHIC = 2u;
 const float XI_STEP = 5.9604645e-8;
+const uint PICK_STREAM = 2654435769u;
 const float TWO_PI = 6.2831855;
 const float CULL_RADIUS_SCALE = 1.000001;
 const float SPHERE_PAD = 4.7683716e-7;
@@ -202,11 +203,15 @@ const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
+const uint RESERVOIR_FULL = 4294967295u;
 const uint LIGHT_BVH_LEAF = 4294967295u;
 const float ONE_MINUS_EPSILON = 0.99999994;
+const float F32_MAX = 3.4028235e38;
+const float DEPTH_NONE = 1e30;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
 const uint NEAR_BLOCK = 64u;
+const uint ROULETTE_DEPTH = 2u;
 
 layout(std140) uniform MapParams_block_0Compute { MapParams _group_0_binding_0_cs; };
 
@@ -278,6 +283,24 @@ float xi_for(uint seed, uint frame, uint light) {
     return _e9;
 }
 
+uint point_stream(uint seed_1, uint point, uint frame_1) {
+    uint _e3 = pcg_hash(frame_1);
+    uint _e5 = pcg_hash((point ^ _e3));
+    uint _e7 = pcg_hash((seed_1 ^ _e5));
+    return _e7;
+}
+
+uint pick_stream(uint stream) {
+    uint _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+uint path_stream(uint seed_2, uint pixel, uint pass_index) {
+    uint _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
+    uint _e5 = point_stream(seed_2, pixel, _e4);
+    return _e5;
+}
+
 float rr_probability(float rt2_, float d2_) {
     if ((d2_ <= rt2_)) {
         return 1.0;
@@ -320,19 +343,19 @@ float cull_radius(float r2_1) {
 
 float windowed_falloff(float d2_3, float range2_) {
     float q_2 = (d2_3 / range2_);
-    float w_9 = clamp((1.0 - (q_2 * q_2)), 0.0, 1.0);
-    return ((w_9 * w_9) / max(d2_3, 0.0001));
+    float w_10 = clamp((1.0 - (q_2 * q_2)), 0.0, 1.0);
+    return ((w_10 * w_10) / max(d2_3, 0.0001));
 }
 
 bool sphere_contains_point(vec3 c, float r, vec3 x_3) {
-    vec3 v_3 = (x_3 - c);
-    return (dot(v_3, v_3) <= (r * r));
+    vec3 v_4 = (x_3 - c);
+    return (dot(v_4, v_4) <= (r * r));
 }
 
 bool sphere_overlaps_sphere(vec3 c1_, float r1_, vec3 c2_, float r2_2) {
-    vec3 v_4 = (c2_ - c1_);
+    vec3 v_5 = (c2_ - c1_);
     float r_3 = (r1_ + r2_2);
-    return (dot(v_4, v_4) <= (r_3 * r_3));
+    return (dot(v_5, v_5) <= (r_3 * r_3));
 }
 
 float sphere_pad(float r_1, vec3 c_1) {
@@ -341,18 +364,18 @@ float sphere_pad(float r_1, vec3 c_1) {
 
 vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
     bool local_4 = false;
-    vec3 v_5 = (c2_1 - c1_1);
-    float d_2 = sqrt(dot(v_5, v_5));
+    vec3 v_6 = (c2_1 - c1_1);
+    float d_4 = sqrt(dot(v_6, v_6));
     float _e8 = sphere_pad(r1_1, c1_1);
-    if ((r1_1 >= ((d_2 + r2_3) + _e8))) {
+    if ((r1_1 >= ((d_4 + r2_3) + _e8))) {
         return vec4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     float _e16 = sphere_pad(r2_3, c2_1);
-    if ((r2_3 >= ((d_2 + r1_1) + _e16))) {
+    if ((r2_3 >= ((d_4 + r1_1) + _e16))) {
         return vec4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_2 >= SPHERE_HUGE))) {
-        local_4 = ((0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if (!((d_4 >= SPHERE_HUGE))) {
+        local_4 = ((0.5 * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local_4 = true;
     }
@@ -360,18 +383,18 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
     if (_e35) {
         return vec4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if ((abs((r1_1 - r2_3)) >= d_2)) {
+    if ((abs((r1_1 - r2_3)) >= d_4)) {
         if ((r1_1 >= r2_3)) {
-            float rn = max(r1_1, (d_2 + r2_3));
+            float rn = max(r1_1, (d_4 + r2_3));
             float _e50 = sphere_pad(rn, c1_1);
             return vec4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        float rm = max(r2_3, (d_2 + r1_1));
+        float rm = max(r2_3, (d_4 + r1_1));
         float _e58 = sphere_pad(rm, c2_1);
         return vec4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    float r0_ = (0.5 * ((d_2 + r1_1) + r2_3));
-    vec3 c_9 = (c1_1 + (v_5 * ((r0_ - r1_1) / d_2)));
+    float r0_ = (0.5 * ((d_4 + r1_1) + r2_3));
+    vec3 c_9 = (c1_1 + (v_6 * ((r0_ - r1_1) / d_4)));
     vec3 e1_ = (c_9 - c1_1);
     vec3 e2_ = (c_9 - c2_1);
     float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
@@ -381,8 +404,8 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
 
 bool sphere_overlaps_aabb(vec3 c_2, float r_2, vec3 bmin, vec3 bmax) {
     vec3 q_3 = clamp(c_2, bmin, bmax);
-    vec3 v_6 = (q_3 - c_2);
-    return (dot(v_6, v_6) <= (r_2 * r_2));
+    vec3 v_7 = (q_3 - c_2);
+    return (dot(v_7, v_7) <= (r_2 * r_2));
 }
 
 float vpl_rt2_(vec3 flux, float exposure_1, float error_bound_1, uint mode_1) {
@@ -405,8 +428,37 @@ float connection_factor(float cos_x, float d2_5, float rt2_3, float w) {
     return (((cos_x * _e4) * _e6) * w);
 }
 
-float vpl_lobe(vec3 n, vec3 w_1) {
-    return (max(dot(n, w_1), 0.0) * INV_PI);
+float connection_cosine(vec3 x_4, vec3 y, vec3 n, vec3 ng, float r2_5) {
+    bool local_5 = false;
+    bool local_6 = false;
+    vec3 v_8 = (x_4 - y);
+    float d2_11 = dot(v_8, v_8);
+    bool _e7 = slc_keep(r2_5, d2_11);
+    if (!(!(_e7))) {
+        local_5 = !((d2_11 > 0.0));
+    } else {
+        local_5 = true;
+    }
+    bool _e16 = local_5;
+    if (_e16) {
+        return 0.0;
+    }
+    vec3 w_11 = (v_8 / vec3(sqrt(d2_11)));
+    float cos_x_1 = -(dot(n, w_11));
+    if (!((cos_x_1 <= 0.0))) {
+        local_6 = (dot(ng, w_11) >= 0.0);
+    } else {
+        local_6 = true;
+    }
+    bool _e32 = local_6;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float vpl_lobe(vec3 n_1, vec3 w_1) {
+    return (max(dot(n_1, w_1), 0.0) * INV_PI);
 }
 
 float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v_1, float min_d2_) {
@@ -422,8 +474,8 @@ float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
     return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
 }
 
-float triangle_lobe(vec3 n_1, float area, vec3 w_2) {
-    return (area * max(dot(n_1, w_2), 0.0));
+float triangle_lobe(vec3 n_2, float area, vec3 w_2) {
+    return (area * max(dot(n_2, w_2), 0.0));
 }
 
 vec3 triangle_sample(vec3 a_3, vec3 b_3, vec3 c_3, float u1_, float u2_) {
@@ -441,10 +493,10 @@ float area_to_solid_angle_pdf(float pdf_area, float d2_6, float cos_light_1) {
     return ((pdf_area * d2_6) / c_10);
 }
 
-float atan_portable(float x_4) {
+float atan_portable(float x_5) {
     float base = 0.0;
     float t = 0.0;
-    float a_10 = abs(x_4);
+    float a_10 = abs(x_5);
     t = a_10;
     if ((a_10 > 2.4142137)) {
         base = 1.5707964;
@@ -457,29 +509,29 @@ float atan_portable(float x_4) {
     }
     float _e18 = t;
     float _e19 = t;
-    float z_1 = (_e18 * _e19);
+    float z_3 = (_e18 * _e19);
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_5 = (_e21 + (((((((((0.080537446 * z_1) - 0.13877685) * z_1) + 0.19977711) * z_1) - 0.3333295) * z_1) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_5) : r_5);
+    float r_5 = (_e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35));
+    return ((x_5 < 0.0) ? -(r_5) : r_5);
 }
 
-float atan2_portable(float y, float x_5) {
-    if ((x_5 == 0.0)) {
-        if ((y > 0.0)) {
+float atan2_portable(float y_1, float x_6) {
+    if ((x_6 == 0.0)) {
+        if ((y_1 > 0.0)) {
             return 1.5707964;
         }
-        if ((y < 0.0)) {
+        if ((y_1 < 0.0)) {
             return -1.5707964;
         }
         return 0.0;
     }
-    float _e12 = atan_portable((y / x_5));
-    if ((x_5 > 0.0)) {
+    float _e12 = atan_portable((y_1 / x_6));
+    if ((x_6 > 0.0)) {
         return _e12;
     }
-    if ((y >= 0.0)) {
+    if ((y_1 >= 0.0)) {
         return (_e12 + 3.1415927);
     }
     return (_e12 - 3.1415927);
@@ -533,11 +585,11 @@ float ies_fold_c(float c_4, float h_first, float h_last) {
     return _e52;
 }
 
-float ies_lerp_t(float a0_, float a1_, float x_7) {
+float ies_lerp_t(float a0_, float a1_, float x_8) {
     if ((a1_ <= a0_)) {
         return 0.0;
     }
-    return clamp(((x_7 - a0_) / (a1_ - a0_)), 0.0, 1.0);
+    return clamp(((x_8 - a0_) / (a1_ - a0_)), 0.0, 1.0);
 }
 
 uint mul_hi_u32_(uint a_5, uint b_4) {
@@ -553,40 +605,68 @@ uint mul_hi_u32_(uint a_5, uint b_4) {
     return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid >> 16u));
 }
 
-uint uniform_index(uint n_3, uint hi_1, uint lo_1) {
-    uint _e3 = mul_lo_u32_(hi_1, n_3);
-    uint _e4 = mul_hi_u32_(hi_1, n_3);
-    uint _e5 = mul_hi_u32_(lo_1, n_3);
+uint uniform_index(uint n_4, uint hi_1, uint lo_1) {
+    uint _e3 = mul_lo_u32_(hi_1, n_4);
+    uint _e4 = mul_hi_u32_(hi_1, n_4);
+    uint _e5 = mul_hi_u32_(lo_1, n_4);
     if ((_e3 > (4294967295u - _e5))) {
         return (_e4 + 1u);
     }
     return _e4;
 }
 
-uint reservoir_slot(uint n_4, uint k, uint hi_2, uint lo_2) {
-    if ((n_4 <= k)) {
-        return (n_4 - 1u);
+uint reservoir_slot(uint n_5, uint k, uint hi_2, uint lo_2) {
+    if ((n_5 <= k)) {
+        return (n_5 - 1u);
     }
-    uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    uint _e7 = uniform_index(n_5, hi_2, lo_2);
     if ((_e7 < k)) {
         return _e7;
     }
     return k;
 }
 
-float reservoir_weight(uint n_5, uint k_1) {
-    float _e2 = to_f32_(n_5);
+bool reservoir_takes(uint n_6) {
+    return (n_6 < RESERVOIR_FULL);
+}
+
+float reservoir_weight(uint n_7, uint k_1) {
+    float _e2 = to_f32_(n_7);
     float _e3 = to_f32_(k_1);
     return max((_e2 / _e3), 1.0);
 }
 
-bool weighted_replace(float w_3, float w_sum, float u_1) {
-    return ((u_1 * w_sum) < w_3);
+bool weighted_replace(float w_4, float w_sum, float u_1) {
+    return ((u_1 * w_sum) < w_4);
 }
 
-float weighted_pick_weight(float w_sum_1, float w_4, uint k_2) {
+float weighted_pick_weight(float w_sum_1, float w_5, uint k_2) {
     float _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_4));
+    return (w_sum_1 / (_e3 * w_5));
+}
+
+float reservoir_select_pdf(uint seen, bool in_range, uint k_3) {
+    uint others = 0u;
+    bool local_8 = false;
+    others = seen;
+    if (in_range) {
+        local_8 = (seen > 0u);
+    } else {
+        local_8 = false;
+    }
+    bool _e9 = local_8;
+    if (_e9) {
+        others = (seen - 1u);
+    }
+    uint _e12 = others;
+    float _e15 = reservoir_weight((_e12 + 1u), k_3);
+    return (1.0 / _e15);
+}
+
+uint uniform_light(float u_2, uint n_8) {
+    float _e2 = to_f32_(n_8);
+    uint _e4 = to_u32_((u_2 * _e2));
+    return min(_e4, (n_8 - 1u));
 }
 
 float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
@@ -603,21 +683,21 @@ float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1
     return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
 }
 
-float safe_sqrt(float x_8) {
-    return sqrt(max(x_8, 0.0));
+float safe_sqrt(float x_9) {
+    return sqrt(max(x_9, 0.0));
 }
 
-float light_importance(vec3 center, float radius, float phi, vec3 axis, float cos_o, float cos_e, vec3 p, vec3 n_6) {
+float light_importance(vec3 center, float radius, float phi, vec3 axis, float cos_o, float cos_e, vec3 p, vec3 n_9) {
     float imp = 0.0;
-    vec3 v_7 = (p - center);
-    float dist2_ = dot(v_7, v_7);
-    float r2_5 = (radius * radius);
-    float d2_11 = max(max(dist2_, r2_5), MIN_D2_);
-    vec3 wi = ((dist2_ > 0.0) ? (v_7 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
+    vec3 v_9 = (p - center);
+    float dist2_ = dot(v_9, v_9);
+    float r2_6 = (radius * radius);
+    float d2_12 = max(max(dist2_, r2_6), MIN_D2_);
+    vec3 wi = ((dist2_ > 0.0) ? (v_9 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    float _e32 = safe_sqrt((1.0 - (r2_5 / dist2_)));
-    float cos_b_2 = ((dist2_ <= r2_5) ? -1.0 : _e32);
+    float _e32 = safe_sqrt((1.0 - (r2_6 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_6) ? -1.0 : _e32);
     float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
     float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
     float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -626,9 +706,9 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_11);
-    if ((dot(n_6, n_6) > 0.0)) {
-        float cos_i = -(dot(wi, n_6));
+    imp = ((phi * _e46) / d2_12);
+    if ((dot(n_9, n_9) > 0.0)) {
+        float cos_i = -(dot(wi, n_9));
         float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
         float _e61 = imp;
         float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
@@ -643,20 +723,20 @@ float candidate_weight(float importance, float rt2_4, float d2_7) {
     return (importance * _e3);
 }
 
-float cone_weight(vec3 center_1, float radius_1, float phi_1, vec3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, vec3 p_1, vec3 n_7) {
-    vec3 v_8 = (p_1 - center_1);
-    float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_7);
-    float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_8, v_8));
+float cone_weight(vec3 center_1, float radius_1, float phi_1, vec3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, vec3 p_1, vec3 n_10) {
+    vec3 v_10 = (p_1 - center_1);
+    float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
+    float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_10, v_10));
     return _e14;
 }
 
-float weighted_select_pdf(float w_5, float w_sum_2, bool in_range, uint k_3) {
-    if ((w_5 <= 0.0)) {
+float weighted_select_pdf(float w_6, float w_sum_2, bool in_range_1, uint k_4) {
+    if ((w_6 <= 0.0)) {
         return 0.0;
     }
-    float total = (in_range ? w_sum_2 : (w_sum_2 + w_5));
-    float _e9 = to_f32_(k_3);
-    return ((_e9 * w_5) / total);
+    float total = (in_range_1 ? w_sum_2 : (w_sum_2 + w_6));
+    float _e9 = to_f32_(k_4);
+    return ((_e9 * w_6) / total);
 }
 
 float bvh_first_prob(float c0_, float c1_2) {
@@ -667,11 +747,34 @@ float bvh_first_prob(float c0_, float c1_2) {
     return -1.0;
 }
 
-float bvh_remap_u(float u_2, float p0_, bool first) {
+float bvh_remap_u(float u_3, float p0_, bool first) {
     if (first) {
-        return min((u_2 / p0_), ONE_MINUS_EPSILON);
+        return min((u_3 / p0_), ONE_MINUS_EPSILON);
     }
-    return clamp(((u_2 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+    return clamp(((u_3 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
+float surface_offset(float diag) {
+    return (1e-5 * diag);
+}
+
+float ray_t_min(float diag_1) {
+    return (1e-6 * diag_1);
+}
+
+float shadow_margin(float len) {
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_10) {
+    return (1.0 / ((abs(x_10) < 1e-30) ? 1e-30 : x_10));
+}
+
+vec3 ray_inverse3_(vec3 d) {
+    float _e2 = ray_inverse(d.x);
+    float _e4 = ray_inverse(d.y);
+    float _e6 = ray_inverse(d.z);
+    return vec3(_e2, _e4, _e6);
 }
 
 float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
@@ -688,23 +791,23 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_6, vec3 b_5, vec3 c_6) {
-    bool local_6 = false;
-    vec3 n_13 = cross((b_5 - a_6), (c_6 - a_6));
-    float l2_ = dot(n_13, n_13);
+    bool local_9 = false;
+    vec3 n_17 = cross((b_5 - a_6), (c_6 - a_6));
+    float l2_ = dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
-        local_6 = !((l2_ < 3e38));
+        local_9 = !((l2_ < 3e38));
     } else {
-        local_6 = true;
+        local_9 = true;
     }
-    bool _e17 = local_6;
+    bool _e17 = local_9;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_13 / vec3(sqrt(l2_)));
+    return (n_17 / vec3(sqrt(l2_)));
 }
 
-vec3 face_against(vec3 n_8, vec3 dir) {
-    return ((dot(n_8, dir) > 0.0) ? -(n_8) : n_8);
+vec3 face_against(vec3 n_11, vec3 dir) {
+    return ((dot(n_11, dir) > 0.0) ? -(n_11) : n_11);
 }
 
 vec3 barycentric(vec3 p_2, vec3 a_7, vec3 b_6, vec3 c_7) {
@@ -723,64 +826,64 @@ vec3 barycentric(vec3 p_2, vec3 a_7, vec3 b_6, vec3 c_7) {
     return vec3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
-vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_6, vec3 facing) {
-    bool local_7 = false;
-    vec3 s_1 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
+vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_7, vec3 facing) {
+    bool local_10 = false;
+    vec3 s_1 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
     float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
-        local_7 = !((l2_1 < 3e38));
+        local_10 = !((l2_1 < 3e38));
     } else {
-        local_7 = true;
+        local_10 = true;
     }
-    bool _e24 = local_7;
+    bool _e24 = local_10;
     if (_e24) {
         return facing;
     }
-    vec3 n_14 = (s_1 / vec3(sqrt(l2_1)));
-    return ((dot(n_14, facing) < 0.0) ? -(n_14) : n_14);
+    vec3 n_18 = (s_1 / vec3(sqrt(l2_1)));
+    return ((dot(n_18, facing) < 0.0) ? -(n_18) : n_18);
 }
 
-float ray_triangle(vec3 o_1, vec3 d, vec3 a_8, vec3 b_7, vec3 c_8, float t_min, float t_max_1) {
-    bool local_8 = false;
-    bool local_9 = false;
-    bool local_10 = false;
+float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_8, vec3 b_7, vec3 c_8, float t_min, float t_max_1) {
+    bool local_11 = false;
+    bool local_12 = false;
+    bool local_13 = false;
     vec3 e1_2 = (b_7 - a_8);
     vec3 e2_2 = (c_8 - a_8);
-    vec3 p_3 = cross(d, e2_2);
+    vec3 p_3 = cross(d_1, e2_2);
     float det = dot(e1_2, p_3);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     vec3 s_2 = (o_1 - a_8);
-    float u_3 = (dot(s_2, p_3) * inv);
-    if (!((u_3 < 0.0))) {
-        local_8 = (u_3 > 1.0);
+    float u_5 = (dot(s_2, p_3) * inv);
+    if (!((u_5 < 0.0))) {
+        local_11 = (u_5 > 1.0);
     } else {
-        local_8 = true;
+        local_11 = true;
     }
-    bool _e28 = local_8;
+    bool _e28 = local_11;
     if (_e28) {
         return -1.0;
     }
     vec3 q_5 = cross(s_2, e1_2);
-    float v_9 = (dot(d, q_5) * inv);
-    if (!((v_9 < 0.0))) {
-        local_9 = ((u_3 + v_9) > 1.0);
+    float v_11 = (dot(d_1, q_5) * inv);
+    if (!((v_11 < 0.0))) {
+        local_12 = ((u_5 + v_11) > 1.0);
     } else {
-        local_9 = true;
+        local_12 = true;
     }
-    bool _e42 = local_9;
+    bool _e42 = local_12;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_2, q_5) * inv);
     if ((t_3 > t_min)) {
-        local_10 = (t_3 < t_max_1);
+        local_13 = (t_3 < t_max_1);
     } else {
-        local_10 = false;
+        local_13 = false;
     }
-    bool _e51 = local_10;
+    bool _e51 = local_13;
     if (_e51) {
         return t_3;
     }
@@ -805,20 +908,20 @@ float mis_power(float pdf_a_1, float pdf_b_1) {
 }
 
 float light_strategy_pdf(float select, float rt2_6, float d2_8, float area_1, float cos_y) {
-    bool local_11 = false;
-    bool local_12 = false;
+    bool local_14 = false;
+    bool local_15 = false;
     if (!((d2_8 <= 0.0))) {
-        local_11 = (area_1 <= 0.0);
+        local_14 = (area_1 <= 0.0);
     } else {
-        local_11 = true;
+        local_14 = true;
     }
-    bool _e13 = local_11;
+    bool _e13 = local_14;
     if (!(_e13)) {
-        local_12 = (cos_y <= 0.0);
+        local_15 = (cos_y <= 0.0);
     } else {
-        local_12 = true;
+        local_15 = true;
     }
-    bool _e20 = local_12;
+    bool _e20 = local_15;
     if (_e20) {
         return 0.0;
     }
@@ -835,53 +938,86 @@ float cosine_pdf(float cos_theta_1) {
     return (max(cos_theta_1, 0.0) * INV_PI);
 }
 
-vec3 cosine_direction(vec3 n_9, float u1_1, float u2_1) {
-    float s_5 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_11 = (-1.0 / (s_5 + n_9.z));
-    float b_8 = ((n_9.x * n_9.y) * a_11);
-    vec3 t_4 = vec3((1.0 + (((s_5 * n_9.x) * n_9.x) * a_11)), (s_5 * b_8), (-(s_5) * n_9.x));
-    vec3 bt = vec3(b_8, (s_5 + ((n_9.y * n_9.y) * a_11)), -(n_9.y));
+vec3 cosine_direction(vec3 n_12, float u1_1, float u2_1) {
+    float s_5 = ((n_12.z >= 0.0) ? 1.0 : -1.0);
+    float a_11 = (-1.0 / (s_5 + n_12.z));
+    float b_8 = ((n_12.x * n_12.y) * a_11);
+    vec3 t_4 = vec3((1.0 + (((s_5 * n_12.x) * n_12.x) * a_11)), (s_5 * b_8), (-(s_5) * n_12.x));
+    vec3 bt = vec3(b_8, (s_5 + ((n_12.y * n_12.y) * a_11)), -(n_12.y));
     float r_6 = sqrt(u1_1);
     float phi_2 = (6.2831855 * u2_1);
-    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));
+    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_12 * sqrt(max((1.0 - u1_1), 0.0)))));
 }
 
-float bilateral_weight(vec3 n_10, vec3 nj, float z, float zj, float inv_sz) {
-    float dn = max(dot(n_10, nj), 0.0);
+float inv_sigma_z(float z) {
+    return (1.0 / (DEPTH_SIGMA * z));
+}
+
+uint window_start(uint x_11, uint size) {
+    uint half_ = (size / 2u);
+    return (max(x_11, half_) - half_);
+}
+
+uint window_end(uint x_12, uint size_1, uint extent_1) {
+    return min(((x_12 + size_1) - (size_1 / 2u)), extent_1);
+}
+
+uint wide_window(uint period) {
+    return (2u * period);
+}
+
+bool misses_subset(uint covered, uint period_1) {
+    return (covered < (period_1 * period_1));
+}
+
+vec3 filtered_irradiance(vec3 e_1, vec3 sum, float weight) {
+    if ((weight > 0.0)) {
+        return (sum / vec3(weight));
+    }
+    return e_1;
+}
+
+float bilateral_weight(vec3 n_13, vec3 nj, float z_1, float zj, float inv_sz) {
+    float dn = max(dot(n_13, nj), 0.0);
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
-    float d_3 = ((zj - z) * inv_sz);
-    float t_5 = max((1.0 - (d_3 * d_3)), 0.0);
+    float d_5 = ((zj - z_1) * inv_sz);
+    float t_5 = max((1.0 - (d_5 * d_5)), 0.0);
     return (((dn8_ * dn8_) * t_5) * t_5);
 }
 
-uint interleave_subset(uint x_9, uint y_1, uint period) {
-    return (((y_1 % period) * period) + (x_9 % period));
+uint interleave_subset(uint x_13, uint y_2, uint period_2) {
+    return (((y_2 % period_2) * period_2) + (x_13 % period_2));
 }
 
-uint interleave_slot(uint tx, uint ty, uint size, uint period_1) {
-    uint side = (size / period_1);
-    uint _e5 = interleave_subset(tx, ty, period_1);
-    return ((((_e5 * side) * side) + ((ty / period_1) * side)) + (tx / period_1));
+uint interleave_slot(uint tx, uint ty, uint size_2, uint period_3) {
+    uint side = (size_2 / period_3);
+    uint _e5 = interleave_subset(tx, ty, period_3);
+    return ((((_e5 * side) * side) + ((ty / period_3) * side)) + (tx / period_3));
 }
 
-uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2) {
-    uint subsets = (period_2 * period_2);
+uint interleave_slot_linear(uint i_1, uint per_subset, uint period_4) {
+    uint subsets = (period_4 * period_4);
     return (((i_1 % subsets) * per_subset) + (i_1 / subsets));
 }
 
-uint near_block_index(uint tx_1, uint ty_1, uint size_1) {
-    uint side_1 = (size_1 / 8u);
+float interleave_flux_scale(uint period_5) {
+    float _e2 = to_f32_((period_5 * period_5));
+    return _e2;
+}
+
+uint near_block_index(uint tx_1, uint ty_1, uint size_3) {
+    uint side_1 = (size_3 / 8u);
     return ((((((ty_1 / 8u) * side_1) + (tx_1 / 8u)) * NEAR_BLOCK) + ((ty_1 % 8u) * 8u)) + (tx_1 % 8u));
 }
 
-uint near_block_tx(uint q, uint size_2) {
-    return ((((q / NEAR_BLOCK) % (size_2 / 8u)) * 8u) + (q % 8u));
+uint near_block_tx(uint q, uint size_4) {
+    return ((((q / NEAR_BLOCK) % (size_4 / 8u)) * 8u) + (q % 8u));
 }
 
-uint near_block_ty(uint q_1, uint size_3) {
-    return ((((q_1 / NEAR_BLOCK) / (size_3 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
+uint near_block_ty(uint q_1, uint size_5) {
+    return ((((q_1 / NEAR_BLOCK) / (size_5 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
 }
 
 float vpl_near_weight(float d2_9, float near_r2_) {
@@ -897,25 +1033,67 @@ float vpl_far_weight(float d2_10, float near_r2_1) {
     return (1.0 - _e2);
 }
 
-vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_7, float h) {
-    float sx = (((2.0 * px) / w_7) - 1.0);
+vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_8, float h) {
+    float sx = (((2.0 * px) / w_8) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h));
     return normalize(((forward + (right * sx)) + (up * sy)));
+}
+
+float jittered_pixel(uint coord, float u_4) {
+    float _e2 = to_f32_(coord);
+    return (_e2 + u_4);
+}
+
+bool plays_roulette(uint depth) {
+    return (depth >= ROULETTE_DEPTH);
+}
+
+bool sees_emission(vec3 gn, vec3 dir_1) {
+    return (dot(gn, dir_1) < 0.0);
+}
+
+bool continues_path(vec3 nd, vec3 n_14, vec3 ng_1) {
+    bool local_16 = false;
+    if ((dot(nd, n_14) > 0.0)) {
+        local_16 = (dot(nd, ng_1) > 0.0);
+    } else {
+        local_16 = false;
+    }
+    bool _e12 = local_16;
+    return _e12;
+}
+
+bool finite3_(vec3 v_2) {
+    bool local_17 = false;
+    bool local_18 = false;
+    if ((abs(v_2.x) <= F32_MAX)) {
+        local_17 = (abs(v_2.y) <= F32_MAX);
+    } else {
+        local_17 = false;
+    }
+    bool _e12 = local_17;
+    if (_e12) {
+        local_18 = (abs(v_2.z) <= F32_MAX);
+    } else {
+        local_18 = false;
+    }
+    bool _e20 = local_18;
+    return _e20;
 }
 
 float path_survival(vec3 beta) {
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
 }
 
-float light_map_coord(uint t_1, uint size_4) {
+float light_map_coord(uint t_1, uint size_6) {
     float _e2 = to_f32_(t_1);
-    float _e7 = to_f32_(size_4);
+    float _e7 = to_f32_(size_6);
     return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
 }
 
-uint light_map_texel(float a_9, uint size_5) {
-    float _e6 = to_f32_(size_5);
-    float _e9 = to_f32_(size_5);
+uint light_map_texel(float a_9, uint size_7) {
+    float _e6 = to_f32_(size_7);
+    float _e9 = to_f32_(size_7);
     uint _e14 = to_u32_(clamp(floor((((a_9 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
     return _e14;
 }
@@ -928,15 +1106,23 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis) {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-vec3 point_irradiance(vec3 intensity_1, vec3 n_11, vec3 v_2) {
-    float d2_12 = dot(v_2, v_2);
-    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_12, MIN_D2_)));
-    float _e11 = inverse_square(d2_12);
-    return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
+vec3 point_irradiance(vec3 intensity_1, vec3 n_15, vec3 v_3) {
+    float d2_13 = dot(v_3, v_3);
+    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_13, MIN_D2_)));
+    float _e11 = inverse_square(d2_13);
+    return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
-vec3 directional_irradiance(vec3 e_1, vec3 n_12, vec3 to_light) {
-    return (e_1 * max(dot(n_12, to_light), 0.0));
+vec3 directional_irradiance(vec3 e_2, vec3 n_16, vec3 to_light) {
+    return (e_2 * max(dot(n_16, to_light), 0.0));
+}
+
+float perspective_texel_width(float extent_2, float d_2, float z_2, float size_8) {
+    return ((((2.0 * extent_2) * d_2) * d_2) / (size_8 * z_2));
+}
+
+float ortho_texel_width(float extent_3, float size_9) {
+    return ((2.0 * extent_3) / size_9);
 }
 
 float shadow_bias(float texel, float cos_light_2) {
@@ -944,25 +1130,25 @@ float shadow_bias(float texel, float cos_light_2) {
     return (texel * (1.5 + (sqrt((1.0 - (c_11 * c_11))) / c_11)));
 }
 
-bool shadow_lit(float d_1, float d_map, float bias) {
-    bool local_13 = false;
+bool shadow_lit(float d_3, float d_map, float bias) {
+    bool local_19 = false;
     if (!((d_map <= 0.0))) {
-        local_13 = (d_1 <= (d_map + bias));
+        local_19 = (d_3 <= (d_map + bias));
     } else {
-        local_13 = true;
+        local_19 = true;
     }
-    bool _e11 = local_13;
+    bool _e11 = local_19;
     return _e11;
 }
 
-vec3 diffuse_radiance(vec3 albedo, vec3 emission, vec3 e_2) {
-    return (emission + ((albedo * INV_PI) * e_2));
+vec3 diffuse_radiance(vec3 albedo, vec3 emission, vec3 e_3) {
+    return (emission + ((albedo * INV_PI) * e_3));
 }
 
-vec3 light_intensity(GpuLight l, vec3 w_8) {
+vec3 light_intensity(GpuLight l, vec3 w_9) {
     switch(l.kind) {
         case 1u: {
-            float _e8 = spot_falloff(dot(l.p1_, w_8), l.a, l.b);
+            float _e8 = spot_falloff(dot(l.p1_, w_9), l.a, l.b);
             return (l.intensity * _e8);
         }
         default: {
@@ -1021,21 +1207,21 @@ void main() {
         _group_0_binding_5_cs[i_2] = vec4(0.0);
         return;
     }
-    vec3 x_10 = p_4.xyz;
-    vec3 n_15 = normalize(nn);
+    vec3 x_14 = p_4.xyz;
+    vec3 n_19 = normalize(nn);
     uint _e55 = _group_0_binding_0_cs.size;
-    float size_6 = float(_e55);
+    float size_10 = float(_e55);
     vec3 _e66 = _group_0_binding_0_cs.origin;
-    vec3 rel_1 = (x_10 - _e66);
+    vec3 rel_1 = (x_14 - _e66);
     vec3 _e70 = _group_0_binding_0_cs.axis;
     uint _e73 = _group_0_binding_0_cs.mode;
     float _e76 = light_map_depth(rel_1, _e70, (_e73 == MAP_PERSPECTIVE));
     uint _e83 = _group_0_binding_0_cs.mode;
     if ((_e83 == MAP_PERSPECTIVE)) {
-        vec3 v_10 = -(rel_1);
+        vec3 v_12 = -(rel_1);
         vec3 _e89 = _group_0_binding_0_cs.axis;
-        float z_2 = dot(rel_1, _e89);
-        if (!((z_2 <= 0.0))) {
+        float z_4 = dot(rel_1, _e89);
+        if (!((z_4 <= 0.0))) {
             local_2 = (_e76 <= 0.0);
         } else {
             local_2 = true;
@@ -1047,60 +1233,62 @@ void main() {
         }
         vec3 _e106 = _group_0_binding_0_cs.right;
         float _e110 = _group_0_binding_0_cs.extent;
-        a = (dot(rel_1, _e106) / (z_2 * _e110));
+        a = (dot(rel_1, _e106) / (z_4 * _e110));
         vec3 _e115 = _group_0_binding_0_cs.up;
         float _e119 = _group_0_binding_0_cs.extent;
-        b = (dot(rel_1, _e115) / (z_2 * _e119));
+        b = (dot(rel_1, _e115) / (z_4 * _e119));
         float _e124 = _group_0_binding_0_cs.extent;
-        width = ((((2.0 * _e124) * _e76) * _e76) / (size_6 * z_2));
-        cos_light = (dot(n_15, v_10) / _e76);
-        GpuLight _e135 = _group_0_binding_0_cs.light;
-        vec3 _e138 = light_intensity(_e135, (rel_1 / vec3(_e76)));
-        vec3 _e139 = point_irradiance(_e138, n_15, v_10);
-        e = _e139;
+        float _e125 = perspective_texel_width(_e124, _e76, z_4, size_10);
+        width = _e125;
+        cos_light = (dot(n_19, v_12) / _e76);
+        GpuLight _e130 = _group_0_binding_0_cs.light;
+        vec3 _e133 = light_intensity(_e130, (rel_1 / vec3(_e76)));
+        vec3 _e134 = point_irradiance(_e133, n_19, v_12);
+        e = _e134;
     } else {
-        vec3 _e142 = _group_0_binding_0_cs.right;
-        float _e146 = _group_0_binding_0_cs.extent;
-        a = (dot(rel_1, _e142) / _e146);
-        vec3 _e150 = _group_0_binding_0_cs.up;
-        float _e154 = _group_0_binding_0_cs.extent;
-        b = (dot(rel_1, _e150) / _e154);
-        float _e158 = _group_0_binding_0_cs.extent;
-        width = ((2.0 * _e158) / size_6);
-        vec3 _e164 = _group_0_binding_0_cs.axis;
-        cos_light = -(dot(n_15, _e164));
-        vec3 _e170 = _group_0_binding_0_cs.light.intensity;
-        vec3 _e173 = _group_0_binding_0_cs.axis;
-        vec3 _e175 = directional_irradiance(_e170, n_15, -(_e173));
-        e = _e175;
+        vec3 _e137 = _group_0_binding_0_cs.right;
+        float _e141 = _group_0_binding_0_cs.extent;
+        a = (dot(rel_1, _e137) / _e141);
+        vec3 _e145 = _group_0_binding_0_cs.up;
+        float _e149 = _group_0_binding_0_cs.extent;
+        b = (dot(rel_1, _e145) / _e149);
+        float _e153 = _group_0_binding_0_cs.extent;
+        float _e154 = ortho_texel_width(_e153, size_10);
+        width = _e154;
+        vec3 _e157 = _group_0_binding_0_cs.axis;
+        cos_light = -(dot(n_19, _e157));
+        vec3 _e163 = _group_0_binding_0_cs.light.intensity;
+        vec3 _e166 = _group_0_binding_0_cs.axis;
+        vec3 _e168 = directional_irradiance(_e163, n_19, -(_e166));
+        e = _e168;
     }
-    float _e176 = a;
-    if ((abs(_e176) <= 1.0)) {
-        float _e182 = b;
-        local_3 = (abs(_e182) <= 1.0);
+    float _e169 = a;
+    if ((abs(_e169) <= 1.0)) {
+        float _e175 = b;
+        local_3 = (abs(_e175) <= 1.0);
     } else {
         local_3 = false;
     }
-    bool _e187 = local_3;
-    if (_e187) {
-        float _e189 = a;
-        uint _e192 = _group_0_binding_0_cs.size;
-        uint _e193 = light_map_texel(_e189, _e192);
-        float _e195 = b;
-        uint _e198 = _group_0_binding_0_cs.size;
-        uint _e199 = light_map_texel(_e195, _e198);
-        vec4 _e203 = texelFetch(_group_0_binding_4_cs, ivec2(int(_e193), int(_e199)), 0);
-        float d_map_1 = _e203.x;
-        float _e205 = width;
-        float _e206 = cos_light;
-        float _e207 = shadow_bias(_e205, _e206);
-        bool _e208 = shadow_lit(_e76, d_map_1, _e207);
-        if (!(_e208)) {
+    bool _e180 = local_3;
+    if (_e180) {
+        float _e182 = a;
+        uint _e185 = _group_0_binding_0_cs.size;
+        uint _e186 = light_map_texel(_e182, _e185);
+        float _e188 = b;
+        uint _e191 = _group_0_binding_0_cs.size;
+        uint _e192 = light_map_texel(_e188, _e191);
+        vec4 _e196 = texelFetch(_group_0_binding_4_cs, ivec2(int(_e186), int(_e192)), 0);
+        float d_map_1 = _e196.x;
+        float _e198 = width;
+        float _e199 = cos_light;
+        float _e200 = shadow_bias(_e198, _e199);
+        bool _e201 = shadow_lit(_e76, d_map_1, _e200);
+        if (!(_e201)) {
             e = vec3(0.0);
         }
     }
-    vec3 _e214 = e;
-    _group_0_binding_5_cs[i_2] = vec4(_e214, 0.0);
+    vec3 _e207 = e;
+    _group_0_binding_5_cs[i_2] = vec4(_e207, 0.0);
     return;
 }
 

@@ -231,6 +231,7 @@ static const uint MAP_CAMERA = 0u;
 static const uint MAP_PERSPECTIVE = 1u;
 static const uint MAP_ORTHOGRAPHIC = 2u;
 static const float XI_STEP = 5.9604645e-8;
+static const uint PICK_STREAM = 2654435769u;
 static const float TWO_PI = 6.2831855;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
@@ -239,11 +240,15 @@ static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
+static const uint RESERVOIR_FULL = 4294967295u;
 static const uint LIGHT_BVH_LEAF = 4294967295u;
 static const float ONE_MINUS_EPSILON = 0.99999994;
+static const float F32_MAX = 3.4028235e38;
+static const float DEPTH_NONE = 1e30;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
 static const uint NEAR_BLOCK = 64u;
+static const uint ROULETTE_DEPTH = 2u;
 static const uint K = 8u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
@@ -251,7 +256,7 @@ ByteAddressBuffer geo_nodes : register(t6);
 ByteAddressBuffer geo_tris : register(t7);
 ByteAddressBuffer bsh_nodes : register(t5);
 ByteAddressBuffer lights : register(t2);
-ByteAddressBuffer r2_5 : register(t4);
+ByteAddressBuffer r2_6 : register(t4);
 ByteAddressBuffer rt2_7 : register(t3);
 ByteAddressBuffer power_table : register(t1, space1);
 ByteAddressBuffer light_cones : register(t2, space1);
@@ -337,6 +342,27 @@ float xi_for(uint seed, uint frame, uint light)
     return _e9;
 }
 
+uint point_stream(uint seed_1, uint point_, uint frame_1)
+{
+    const uint _e3 = pcg_hash(frame_1);
+    const uint _e5 = pcg_hash((point_ ^ _e3));
+    const uint _e7 = pcg_hash((seed_1 ^ _e5));
+    return _e7;
+}
+
+uint pick_stream(uint stream)
+{
+    const uint _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+uint path_stream(uint seed_2, uint pixel, uint pass_index)
+{
+    const uint _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
+    const uint _e5 = point_stream(seed_2, pixel, _e4);
+    return _e5;
+}
+
 float rr_probability(float rt2_, float d2_)
 {
     if ((d2_ <= rt2_)) {
@@ -387,8 +413,8 @@ float cull_radius(float r2_1)
 float windowed_falloff(float d2_3, float range2_)
 {
     float q_2 = (d2_3 / range2_);
-    float w_10 = saturate((1.0 - (q_2 * q_2)));
-    return ((w_10 * w_10) / max(d2_3, 0.0001));
+    float w_11 = saturate((1.0 - (q_2 * q_2)));
+    return ((w_11 * w_11) / max(d2_3, 0.0001));
 }
 
 bool sphere_contains_point(float3 c, float r, float3 x_3)
@@ -414,17 +440,17 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
     bool local = (bool)0;
 
     float3 v_6 = (c2_1 - c1_1);
-    float d_3 = sqrt(dot(v_6, v_6));
+    float d_5 = sqrt(dot(v_6, v_6));
     const float _e8 = sphere_pad(r1_1, c1_1);
-    if ((r1_1 >= ((d_3 + r2_3) + _e8))) {
+    if ((r1_1 >= ((d_5 + r2_3) + _e8))) {
         return float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     const float _e16 = sphere_pad(r2_3, c2_1);
-    if ((r2_3 >= ((d_3 + r1_1) + _e16))) {
+    if ((r2_3 >= ((d_5 + r1_1) + _e16))) {
         return float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_3 >= SPHERE_HUGE))) {
-        local = ((0.5 * ((d_3 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if (!((d_5 >= SPHERE_HUGE))) {
+        local = ((0.5 * ((d_5 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local = true;
     }
@@ -432,18 +458,18 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
     if (_e35) {
         return float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if ((abs((r1_1 - r2_3)) >= d_3)) {
+    if ((abs((r1_1 - r2_3)) >= d_5)) {
         if ((r1_1 >= r2_3)) {
-            float rn = max(r1_1, (d_3 + r2_3));
+            float rn = max(r1_1, (d_5 + r2_3));
             const float _e50 = sphere_pad(rn, c1_1);
             return float4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        float rm = max(r2_3, (d_3 + r1_1));
+        float rm = max(r2_3, (d_5 + r1_1));
         const float _e58 = sphere_pad(rm, c2_1);
         return float4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    float r0_ = (0.5 * ((d_3 + r1_1) + r2_3));
-    float3 c_10 = (c1_1 + (v_6 * ((r0_ - r1_1) / d_3)));
+    float r0_ = (0.5 * ((d_5 + r1_1) + r2_3));
+    float3 c_10 = (c1_1 + (v_6 * ((r0_ - r1_1) / d_5)));
     float3 e1_ = (c_10 - c1_1);
     float3 e2_ = (c_10 - c2_1);
     float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
@@ -482,9 +508,40 @@ float connection_factor(float cos_x, float d2_5, float rt2_3, float w)
     return (((cos_x * _e4) * _e6) * w);
 }
 
-float vpl_lobe(float3 n, float3 w_1)
+float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
 {
-    return (max(dot(n, w_1), 0.0) * INV_PI);
+    bool local_1 = (bool)0;
+    bool local_2 = (bool)0;
+
+    float3 v_8 = (x_4 - y);
+    float d2_11 = dot(v_8, v_8);
+    const bool _e7 = slc_keep(r2_5, d2_11);
+    if (!(!(_e7))) {
+        local_1 = !((d2_11 > 0.0));
+    } else {
+        local_1 = true;
+    }
+    bool _e16 = local_1;
+    if (_e16) {
+        return 0.0;
+    }
+    float3 w_12 = (v_8 / (sqrt(d2_11)).xxx);
+    float cos_x_1 = -(dot(n, w_12));
+    if (!((cos_x_1 <= 0.0))) {
+        local_2 = (dot(ng, w_12) >= 0.0);
+    } else {
+        local_2 = true;
+    }
+    bool _e32 = local_2;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float vpl_lobe(float3 n_1, float3 w_1)
+{
+    return (max(dot(n_1, w_1), 0.0) * INV_PI);
 }
 
 float vpl_transfer(float3 n_l, float3 n_x, float3 v_1, float min_d2_)
@@ -502,9 +559,9 @@ float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
     return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
 }
 
-float triangle_lobe(float3 n_1, float area, float3 w_2)
+float triangle_lobe(float3 n_2, float area, float3 w_2)
 {
-    return (area * max(dot(n_1, w_2), 0.0));
+    return (area * max(dot(n_2, w_2), 0.0));
 }
 
 float3 triangle_sample(float3 a_2, float3 b_2, float3 c_3, float u1_, float u2_)
@@ -524,12 +581,12 @@ float area_to_solid_angle_pdf(float pdf_area, float d2_6, float cos_light)
     return ((pdf_area * d2_6) / c_11);
 }
 
-float atan_portable(float x_4)
+float atan_portable(float x_5)
 {
     float base = 0.0;
     float t = (float)0;
 
-    float a_10 = abs(x_4);
+    float a_10 = abs(x_5);
     t = a_10;
     if ((a_10 > 2.4142137)) {
         base = 1.5707964;
@@ -542,30 +599,30 @@ float atan_portable(float x_4)
     }
     float _e18 = t;
     float _e19 = t;
-    float z_1 = (_e18 * _e19);
+    float z_3 = (_e18 * _e19);
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_5 = (_e21 + (((((((((0.080537446 * z_1) - 0.13877685) * z_1) + 0.19977711) * z_1) - 0.3333295) * z_1) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_5) : r_5);
+    float r_5 = (_e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35));
+    return ((x_5 < 0.0) ? -(r_5) : r_5);
 }
 
-float atan2_portable(float y, float x_5)
+float atan2_portable(float y_1, float x_6)
 {
-    if ((x_5 == 0.0)) {
-        if ((y > 0.0)) {
+    if ((x_6 == 0.0)) {
+        if ((y_1 > 0.0)) {
             return 1.5707964;
         }
-        if ((y < 0.0)) {
+        if ((y_1 < 0.0)) {
             return -1.5707964;
         }
         return 0.0;
     }
-    const float _e12 = atan_portable((y / x_5));
-    if ((x_5 > 0.0)) {
+    const float _e12 = atan_portable((y_1 / x_6));
+    if ((x_6 > 0.0)) {
         return _e12;
     }
-    if ((y >= 0.0)) {
+    if ((y_1 >= 0.0)) {
         return (_e12 + 3.1415927);
     }
     return (_e12 - 3.1415927);
@@ -621,15 +678,15 @@ float ies_fold_c(float c_4, float h_first, float h_last)
     return _e52;
 }
 
-uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
+uint ies_segment(uint tab_1, uint start, uint n_3, float x_7)
 {
     uint lo = 0u;
     uint hi = (uint)0;
 
-    if ((n_2 < 2u)) {
+    if ((n_3 < 2u)) {
         return 0u;
     }
-    hi = (n_2 - 1u);
+    hi = (n_3 - 1u);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
@@ -645,7 +702,7 @@ uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
             uint _e18 = hi;
             uint mid = ((_e17 + _e18) >> 1u);
             const float _e23 = at(tab_1, (start + mid));
-            if ((_e23 <= x_6)) {
+            if ((_e23 <= x_7)) {
                 lo = mid;
             } else {
                 hi = mid;
@@ -656,17 +713,17 @@ uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
     return _e25;
 }
 
-float ies_lerp_t(float a0_, float a1_, float x_7)
+float ies_lerp_t(float a0_, float a1_, float x_8)
 {
     if ((a1_ <= a0_)) {
         return 0.0;
     }
-    return saturate(((x_7 - a0_) / (a1_ - a0_)));
+    return saturate(((x_8 - a0_) / (a1_ - a0_)));
 }
 
 float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
 {
-    bool local_1 = (bool)0;
+    bool local_3 = (bool)0;
 
     const float _e4 = at(tab_2, base_1);
     const uint _e5 = to_u32_(_e4);
@@ -678,11 +735,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
     const float _e14 = at(tab_2, v0_);
     if (!((gamma < _e14))) {
         const float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_1 = (gamma > _e22);
+        local_3 = (gamma > _e22);
     } else {
-        local_1 = true;
+        local_3 = true;
     }
-    bool _e25 = local_1;
+    bool _e25 = local_3;
     if (_e25) {
         return 0.0;
     }
@@ -719,6 +776,13 @@ float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
     return _e20;
 }
 
+float ies_light_candela(uint tab_4, uint base_3, float3 nadir, float3 reference, float3 w_3)
+{
+    float3 side = cross(reference, nadir);
+    const float _e9 = ies_candela_dir(tab_4, base_3, dot(w_3, nadir), dot(w_3, reference), dot(w_3, side));
+    return _e9;
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3)
 {
     uint a_lo = (a_4 & 65535u);
@@ -733,45 +797,77 @@ uint mul_hi_u32_(uint a_4, uint b_3)
     return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u));
 }
 
-uint uniform_index(uint n_3, uint hi_1, uint lo_1)
+uint uniform_index(uint n_4, uint hi_1, uint lo_1)
 {
-    const uint _e3 = mul_lo_u32_(hi_1, n_3);
-    const uint _e4 = mul_hi_u32_(hi_1, n_3);
-    const uint _e5 = mul_hi_u32_(lo_1, n_3);
+    const uint _e3 = mul_lo_u32_(hi_1, n_4);
+    const uint _e4 = mul_hi_u32_(hi_1, n_4);
+    const uint _e5 = mul_hi_u32_(lo_1, n_4);
     if ((_e3 > (4294967295u - _e5))) {
         return (_e4 + 1u);
     }
     return _e4;
 }
 
-uint reservoir_slot(uint n_4, uint k, uint hi_2, uint lo_2)
+uint reservoir_slot(uint n_5, uint k, uint hi_2, uint lo_2)
 {
-    if ((n_4 <= k)) {
-        return (n_4 - 1u);
+    if ((n_5 <= k)) {
+        return (n_5 - 1u);
     }
-    const uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    const uint _e7 = uniform_index(n_5, hi_2, lo_2);
     if ((_e7 < k)) {
         return _e7;
     }
     return k;
 }
 
-float reservoir_weight(uint n_5, uint k_1)
+bool reservoir_takes(uint n_6)
 {
-    const float _e2 = to_f32_(n_5);
+    return (n_6 < RESERVOIR_FULL);
+}
+
+float reservoir_weight(uint n_7, uint k_1)
+{
+    const float _e2 = to_f32_(n_7);
     const float _e3 = to_f32_(k_1);
     return max((_e2 / _e3), 1.0);
 }
 
-bool weighted_replace(float w_3, float w_sum, float u_1)
+bool weighted_replace(float w_4, float w_sum, float u_1)
 {
-    return ((u_1 * w_sum) < w_3);
+    return ((u_1 * w_sum) < w_4);
 }
 
-float weighted_pick_weight(float w_sum_1, float w_4, uint k_2)
+float weighted_pick_weight(float w_sum_1, float w_5, uint k_2)
 {
     const float _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_4));
+    return (w_sum_1 / (_e3 * w_5));
+}
+
+float reservoir_select_pdf(uint seen, bool in_range, uint k_3)
+{
+    uint others = (uint)0;
+    bool local_4 = (bool)0;
+
+    others = seen;
+    if (in_range) {
+        local_4 = (seen > 0u);
+    } else {
+        local_4 = false;
+    }
+    bool _e9 = local_4;
+    if (_e9) {
+        others = (seen - 1u);
+    }
+    uint _e12 = others;
+    const float _e15 = reservoir_weight((_e12 + 1u), k_3);
+    return (1.0 / _e15);
+}
+
+uint uniform_light(float u_2, uint n_8)
+{
+    const float _e2 = to_f32_(n_8);
+    const uint _e4 = to_u32_((u_2 * _e2));
+    return min(_e4, (n_8 - 1u));
 }
 
 float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
@@ -790,24 +886,24 @@ float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1
     return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
 }
 
-float safe_sqrt(float x_8)
+float safe_sqrt(float x_9)
 {
-    return sqrt(max(x_8, 0.0));
+    return sqrt(max(x_9, 0.0));
 }
 
-float light_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p, float3 n_6)
+float light_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p, float3 n_9)
 {
     float imp = (float)0;
 
-    float3 v_8 = (p - center_);
-    float dist2_ = dot(v_8, v_8);
-    float r2_6 = (radius * radius);
-    float d2_11 = max(max(dist2_, r2_6), MIN_D2_);
-    float3 wi = ((dist2_ > 0.0) ? (v_8 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
+    float3 v_9 = (p - center_);
+    float dist2_ = dot(v_9, v_9);
+    float r2_7 = (radius * radius);
+    float d2_12 = max(max(dist2_, r2_7), MIN_D2_);
+    float3 wi = ((dist2_ > 0.0) ? (v_9 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e32 = safe_sqrt((1.0 - (r2_6 / dist2_)));
-    float cos_b_2 = ((dist2_ <= r2_6) ? -1.0 : _e32);
+    const float _e32 = safe_sqrt((1.0 - (r2_7 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_7) ? -1.0 : _e32);
     const float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
     const float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
     const float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -816,9 +912,9 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_11);
-    if ((dot(n_6, n_6) > 0.0)) {
-        float cos_i = -(dot(wi, n_6));
+    imp = ((phi * _e46) / d2_12);
+    if ((dot(n_9, n_9) > 0.0)) {
+        float cos_i = -(dot(wi, n_9));
         const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
         float _e61 = imp;
         const float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
@@ -834,22 +930,22 @@ float candidate_weight(float importance, float rt2_4, float d2_7)
     return (importance * _e3);
 }
 
-float cone_weight(float3 center_1, float radius_1, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, float3 p_1, float3 n_7)
+float cone_weight(float3 center_1, float radius_1, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, float3 p_1, float3 n_10)
 {
-    float3 v_9 = (p_1 - center_1);
-    const float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_7);
-    const float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_9, v_9));
+    float3 v_10 = (p_1 - center_1);
+    const float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
+    const float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_10, v_10));
     return _e14;
 }
 
-float weighted_select_pdf(float w_5, float w_sum_2, bool in_range, uint k_3)
+float weighted_select_pdf(float w_6, float w_sum_2, bool in_range_1, uint k_4)
 {
-    if ((w_5 <= 0.0)) {
+    if ((w_6 <= 0.0)) {
         return 0.0;
     }
-    float total = (in_range ? w_sum_2 : (w_sum_2 + w_5));
-    const float _e9 = to_f32_(k_3);
-    return ((_e9 * w_5) / total);
+    float total = (in_range_1 ? w_sum_2 : (w_sum_2 + w_6));
+    const float _e9 = to_f32_(k_4);
+    return ((_e9 * w_6) / total);
 }
 
 float bvh_first_prob(float c0_, float c1_2)
@@ -861,12 +957,40 @@ float bvh_first_prob(float c0_, float c1_2)
     return -1.0;
 }
 
-float bvh_remap_u(float u_2, float p0_, bool first)
+float bvh_remap_u(float u_3, float p0_, bool first)
 {
     if (first) {
-        return min((u_2 / p0_), ONE_MINUS_EPSILON);
+        return min((u_3 / p0_), ONE_MINUS_EPSILON);
     }
-    return clamp(((u_2 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+    return clamp(((u_3 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
+float surface_offset(float diag)
+{
+    return (1e-5 * diag);
+}
+
+float ray_t_min(float diag_1)
+{
+    return (1e-6 * diag_1);
+}
+
+float shadow_margin(float len)
+{
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_10)
+{
+    return (1.0 / ((abs(x_10) < 1e-30) ? 1e-30 : x_10));
+}
+
+float3 ray_inverse3_(float3 d)
+{
+    const float _e2 = ray_inverse(d.x);
+    const float _e4 = ray_inverse(d.y);
+    const float _e6 = ray_inverse(d.z);
+    return float3(_e2, _e4, _e6);
 }
 
 float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
@@ -885,25 +1009,25 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 
 float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
 {
-    bool local_2 = (bool)0;
+    bool local_5 = (bool)0;
 
-    float3 n_22 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_22, n_22);
+    float3 n_26 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_26, n_26);
     if (!(!((l2_ > 0.0)))) {
-        local_2 = !((l2_ < 3e38));
+        local_5 = !((l2_ < 3e38));
     } else {
-        local_2 = true;
+        local_5 = true;
     }
-    bool _e17 = local_2;
+    bool _e17 = local_5;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_22 / (sqrt(l2_)).xxx);
+    return (n_26 / (sqrt(l2_)).xxx);
 }
 
-float3 face_against(float3 n_8, float3 dir)
+float3 face_against(float3 n_11, float3 dir)
 {
-    return ((dot(n_8, dir) > 0.0) ? -(n_8) : n_8);
+    return ((dot(n_11, dir) > 0.0) ? -(n_11) : n_11);
 }
 
 float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
@@ -923,68 +1047,68 @@ float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
     return float3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
-float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_6, float3 facing)
+float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_7, float3 facing)
 {
-    bool local_3 = (bool)0;
+    bool local_6 = (bool)0;
 
-    float3 s_1 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
+    float3 s_1 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
     float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
-        local_3 = !((l2_1 < 3e38));
+        local_6 = !((l2_1 < 3e38));
     } else {
-        local_3 = true;
+        local_6 = true;
     }
-    bool _e24 = local_3;
+    bool _e24 = local_6;
     if (_e24) {
         return facing;
     }
-    float3 n_23 = (s_1 / (sqrt(l2_1)).xxx);
-    return ((dot(n_23, facing) < 0.0) ? -(n_23) : n_23);
+    float3 n_27 = (s_1 / (sqrt(l2_1)).xxx);
+    return ((dot(n_27, facing) < 0.0) ? -(n_27) : n_27);
 }
 
-float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_1, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
 {
-    bool local_4 = (bool)0;
-    bool local_5 = (bool)0;
-    bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
 
     float3 e1_2 = (b_6 - a_7);
     float3 e2_2 = (c_8 - a_7);
-    float3 p_3 = cross(d, e2_2);
+    float3 p_3 = cross(d_1, e2_2);
     float det = dot(e1_2, p_3);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     float3 s_2 = (o_1 - a_7);
-    float u_4 = (dot(s_2, p_3) * inv);
-    if (!((u_4 < 0.0))) {
-        local_4 = (u_4 > 1.0);
+    float u_6 = (dot(s_2, p_3) * inv);
+    if (!((u_6 < 0.0))) {
+        local_7 = (u_6 > 1.0);
     } else {
-        local_4 = true;
+        local_7 = true;
     }
-    bool _e28 = local_4;
+    bool _e28 = local_7;
     if (_e28) {
         return -1.0;
     }
     float3 q_5 = cross(s_2, e1_2);
-    float v_10 = (dot(d, q_5) * inv);
-    if (!((v_10 < 0.0))) {
-        local_5 = ((u_4 + v_10) > 1.0);
+    float v_11 = (dot(d_1, q_5) * inv);
+    if (!((v_11 < 0.0))) {
+        local_8 = ((u_6 + v_11) > 1.0);
     } else {
-        local_5 = true;
+        local_8 = true;
     }
-    bool _e42 = local_5;
+    bool _e42 = local_8;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_2, q_5) * inv);
     if ((t_3 > t_min)) {
-        local_6 = (t_3 < t_max_1);
+        local_9 = (t_3 < t_max_1);
     } else {
-        local_6 = false;
+        local_9 = false;
     }
-    bool _e51 = local_6;
+    bool _e51 = local_9;
     if (_e51) {
         return t_3;
     }
@@ -1012,21 +1136,21 @@ float mis_power(float pdf_a_1, float pdf_b_1)
 
 float light_strategy_pdf(float select_, float rt2_6, float d2_8, float area_1, float cos_y)
 {
-    bool local_7 = (bool)0;
-    bool local_8 = (bool)0;
+    bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
 
     if (!((d2_8 <= 0.0))) {
-        local_7 = (area_1 <= 0.0);
+        local_10 = (area_1 <= 0.0);
     } else {
-        local_7 = true;
+        local_10 = true;
     }
-    bool _e13 = local_7;
+    bool _e13 = local_10;
     if (!(_e13)) {
-        local_8 = (cos_y <= 0.0);
+        local_11 = (cos_y <= 0.0);
     } else {
-        local_8 = true;
+        local_11 = true;
     }
-    bool _e20 = local_8;
+    bool _e20 = local_11;
     if (_e20) {
         return 0.0;
     }
@@ -1045,26 +1169,64 @@ float cosine_pdf(float cos_theta_1)
     return (max(cos_theta_1, 0.0) * INV_PI);
 }
 
-float3 cosine_direction(float3 n_9, float u1_1, float u2_1)
+float3 cosine_direction(float3 n_12, float u1_1, float u2_1)
 {
-    float s_5 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_5 + n_9.z));
-    float b_9 = ((n_9.x * n_9.y) * a_12);
-    float3 t_4 = float3((1.0 + (((s_5 * n_9.x) * n_9.x) * a_12)), (s_5 * b_9), (-(s_5) * n_9.x));
-    float3 bt = float3(b_9, (s_5 + ((n_9.y * n_9.y) * a_12)), -(n_9.y));
+    float s_5 = ((n_12.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_5 + n_12.z));
+    float b_9 = ((n_12.x * n_12.y) * a_12);
+    float3 t_4 = float3((1.0 + (((s_5 * n_12.x) * n_12.x) * a_12)), (s_5 * b_9), (-(s_5) * n_12.x));
+    float3 bt = float3(b_9, (s_5 + ((n_12.y * n_12.y) * a_12)), -(n_12.y));
     float r_6 = sqrt(u1_1);
     float phi_2 = (6.2831855 * u2_1);
-    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));
+    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_12 * sqrt(max((1.0 - u1_1), 0.0)))));
 }
 
-float bilateral_weight(float3 n_10, float3 nj, float z, float zj, float inv_sz)
+float inv_sigma_z(float z)
 {
-    float dn = max(dot(n_10, nj), 0.0);
+    return (1.0 / (DEPTH_SIGMA * z));
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+uint window_start(uint x_11, uint size)
+{
+    uint half_ = naga_div(size, 2u);
+    return (max(x_11, half_) - half_);
+}
+
+uint window_end(uint x_12, uint size_1, uint extent_1)
+{
+    return min(((x_12 + size_1) - naga_div(size_1, 2u)), extent_1);
+}
+
+uint wide_window(uint period)
+{
+    return (2u * period);
+}
+
+bool misses_subset(uint covered, uint period_1)
+{
+    return (covered < (period_1 * period_1));
+}
+
+float3 filtered_irradiance(float3 e, float3 sum_1, float weight)
+{
+    if ((weight > 0.0)) {
+        return (sum_1 / (weight).xxx);
+    }
+    return e;
+}
+
+float bilateral_weight(float3 n_13, float3 nj, float z_1, float zj, float inv_sz)
+{
+    float dn = max(dot(n_13, nj), 0.0);
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
-    float d_4 = ((zj - z) * inv_sz);
-    float t_5 = max((1.0 - (d_4 * d_4)), 0.0);
+    float d_6 = ((zj - z_1) * inv_sz);
+    float t_5 = max((1.0 - (d_6 * d_6)), 0.0);
     return (((dn8_ * dn8_) * t_5) * t_5);
 }
 
@@ -1072,42 +1234,44 @@ uint naga_mod(uint lhs, uint rhs) {
     return lhs % (rhs == 0u ? 1u : rhs);
 }
 
-uint interleave_subset(uint x_9, uint y_1, uint period)
+uint interleave_subset(uint x_13, uint y_2, uint period_2)
 {
-    return ((naga_mod(y_1, period) * period) + naga_mod(x_9, period));
+    return ((naga_mod(y_2, period_2) * period_2) + naga_mod(x_13, period_2));
 }
 
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / (rhs == 0u ? 1u : rhs);
+uint interleave_slot(uint tx, uint ty, uint size_2, uint period_3)
+{
+    uint side_1 = naga_div(size_2, period_3);
+    const uint _e5 = interleave_subset(tx, ty, period_3);
+    return ((((_e5 * side_1) * side_1) + (naga_div(ty, period_3) * side_1)) + naga_div(tx, period_3));
 }
 
-uint interleave_slot(uint tx, uint ty, uint size, uint period_1)
+uint interleave_slot_linear(uint i_1, uint per_subset, uint period_4)
 {
-    uint side = naga_div(size, period_1);
-    const uint _e5 = interleave_subset(tx, ty, period_1);
-    return ((((_e5 * side) * side) + (naga_div(ty, period_1) * side)) + naga_div(tx, period_1));
-}
-
-uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2)
-{
-    uint subsets = (period_2 * period_2);
+    uint subsets = (period_4 * period_4);
     return ((naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets));
 }
 
-uint near_block_index(uint tx_1, uint ty_1, uint size_1)
+float interleave_flux_scale(uint period_5)
 {
-    uint side_1 = naga_div(size_1, 8u);
-    return (((((naga_div(ty_1, 8u) * side_1) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u));
+    const float _e2 = to_f32_((period_5 * period_5));
+    return _e2;
 }
 
-uint near_block_tx(uint q, uint size_2)
+uint near_block_index(uint tx_1, uint ty_1, uint size_3)
 {
-    return ((naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_2, 8u)) * 8u) + naga_mod(q, 8u));
+    uint side_2 = naga_div(size_3, 8u);
+    return (((((naga_div(ty_1, 8u) * side_2) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u));
 }
 
-uint near_block_ty(uint q_1, uint size_3)
+uint near_block_tx(uint q, uint size_4)
 {
-    return ((naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_3, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u));
+    return ((naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_4, 8u)) * 8u) + naga_mod(q, 8u));
+}
+
+uint near_block_ty(uint q_1, uint size_5)
+{
+    return ((naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_5, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u));
 }
 
 float vpl_near_weight(float d2_9, float near_r2_)
@@ -1125,11 +1289,60 @@ float vpl_far_weight(float d2_10, float near_r2_1)
     return (1.0 - _e2);
 }
 
-float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_7, float h_1)
+float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_8, float h_1)
 {
-    float sx = (((2.0 * px) / w_7) - 1.0);
+    float sx = (((2.0 * px) / w_8) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h_1));
     return normalize(((forward + (right * sx)) + (up * sy)));
+}
+
+float jittered_pixel(uint coord, float u_4)
+{
+    const float _e2 = to_f32_(coord);
+    return (_e2 + u_4);
+}
+
+bool plays_roulette(uint depth)
+{
+    return (depth >= ROULETTE_DEPTH);
+}
+
+bool sees_emission(float3 gn, float3 dir_1)
+{
+    return (dot(gn, dir_1) < 0.0);
+}
+
+bool continues_path(float3 nd, float3 n_14, float3 ng_1)
+{
+    bool local_12 = (bool)0;
+
+    if ((dot(nd, n_14) > 0.0)) {
+        local_12 = (dot(nd, ng_1) > 0.0);
+    } else {
+        local_12 = false;
+    }
+    bool _e12 = local_12;
+    return _e12;
+}
+
+bool finite3_(float3 v_2)
+{
+    bool local_13 = (bool)0;
+    bool local_14 = (bool)0;
+
+    if ((abs(v_2.x) <= F32_MAX)) {
+        local_13 = (abs(v_2.y) <= F32_MAX);
+    } else {
+        local_13 = false;
+    }
+    bool _e12 = local_13;
+    if (_e12) {
+        local_14 = (abs(v_2.z) <= F32_MAX);
+    } else {
+        local_14 = false;
+    }
+    bool _e20 = local_14;
+    return _e20;
 }
 
 float path_survival(float3 beta)
@@ -1137,17 +1350,17 @@ float path_survival(float3 beta)
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
 }
 
-float light_map_coord(uint t_1, uint size_4)
+float light_map_coord(uint t_1, uint size_6)
 {
     const float _e2 = to_f32_(t_1);
-    const float _e7 = to_f32_(size_4);
+    const float _e7 = to_f32_(size_6);
     return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
 }
 
-uint light_map_texel(float a_8, uint size_5)
+uint light_map_texel(float a_8, uint size_7)
 {
-    const float _e6 = to_f32_(size_5);
-    const float _e9 = to_f32_(size_5);
+    const float _e6 = to_f32_(size_7);
+    const float _e9 = to_f32_(size_7);
     const uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
     return _e14;
 }
@@ -1162,17 +1375,27 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-float3 point_irradiance(float3 intensity_1, float3 n_11, float3 v_2)
+float3 point_irradiance(float3 intensity_1, float3 n_15, float3 v_3)
 {
-    float d2_12 = dot(v_2, v_2);
-    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_12, MIN_D2_)));
-    const float _e11 = inverse_square(d2_12);
-    return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
+    float d2_13 = dot(v_3, v_3);
+    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_13, MIN_D2_)));
+    const float _e11 = inverse_square(d2_13);
+    return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
-float3 directional_irradiance(float3 e, float3 n_12, float3 to_light)
+float3 directional_irradiance(float3 e_1, float3 n_16, float3 to_light)
 {
-    return (e * max(dot(n_12, to_light), 0.0));
+    return (e_1 * max(dot(n_16, to_light), 0.0));
+}
+
+float perspective_texel_width(float extent_2, float d_2, float z_2, float size_8)
+{
+    return ((((2.0 * extent_2) * d_2) * d_2) / (size_8 * z_2));
+}
+
+float ortho_texel_width(float extent_3, float size_9)
+{
+    return ((2.0 * extent_3) / size_9);
 }
 
 float shadow_bias(float texel, float cos_light_1)
@@ -1181,30 +1404,30 @@ float shadow_bias(float texel, float cos_light_1)
     return (texel * (1.5 + (sqrt((1.0 - (c_13 * c_13))) / c_13)));
 }
 
-bool shadow_lit(float d_1, float d_map, float bias)
+bool shadow_lit(float d_3, float d_map, float bias)
 {
-    bool local_9 = (bool)0;
+    bool local_15 = (bool)0;
 
     if (!((d_map <= 0.0))) {
-        local_9 = (d_1 <= (d_map + bias));
+        local_15 = (d_3 <= (d_map + bias));
     } else {
-        local_9 = true;
+        local_15 = true;
     }
-    bool _e11 = local_9;
+    bool _e11 = local_15;
     return _e11;
 }
 
-float3 diffuse_radiance(float3 albedo, float3 emission, float3 e_1)
+float3 diffuse_radiance(float3 albedo, float3 emission, float3 e_2)
 {
-    return (emission + ((albedo * INV_PI) * e_1));
+    return (emission + ((albedo * INV_PI) * e_2));
 }
 
-float3 light_intensity(GpuLight l, float3 w_8)
+float3 light_intensity(GpuLight l, float3 w_9)
 {
     switch(l.kind) {
         case 3u: {
             const float3 _e7 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            const float _e9 = triangle_lobe(_e7, l.a, w_8);
+            const float _e9 = triangle_lobe(_e7, l.a, w_9);
             return (l.intensity * _e9);
         }
         default: {
@@ -1266,7 +1489,7 @@ GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3,
     return ret;
 }
 
-GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
+GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
 {
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
@@ -1281,87 +1504,87 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
         const GeoHit geohit = _e13;
         return geohit;
     }
-    float3 inv_d_1 = ((1.0).xxx / ((abs(d_2) < (1e-30).xxx) ? (1e-30).xxx : d_2));
+    const float3 _e14 = ray_inverse3_(d_4);
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e30 = node;
-        GpuGeoNode n_24 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e30*32+0)), asuint(geo_nodes.Load(_e30*32+12)), asfloat(geo_nodes.Load3(_e30*32+16)), asuint(geo_nodes.Load(_e30*32+28)));
-        float _e36 = hit.t;
-        const float _e37 = ray_aabb(o_2, inv_d_1, n_24.bmin, n_24.bmax, _e36);
-        if ((_e37 >= 0.0)) {
-            if ((n_24.count > 0u)) {
-                i_2 = n_24.first;
+        uint _e21 = node;
+        GpuGeoNode n_28 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        float _e27 = hit.t;
+        const float _e28 = ray_aabb(o_2, _e14, n_28.bmin, n_28.bmax, _e27);
+        if ((_e28 >= 0.0)) {
+            if ((n_28.count > 0u)) {
+                i_2 = n_28.first;
                 uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
                     if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
                     loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                     if (!loop_init) {
-                        uint _e67 = i_2;
-                        i_2 = (_e67 + 1u);
+                        uint _e58 = i_2;
+                        i_2 = (_e58 + 1u);
                     }
                     loop_init = false;
-                    uint _e45 = i_2;
-                    if ((_e45 < (n_24.first + n_24.count))) {
+                    uint _e36 = i_2;
+                    if ((_e36 < (n_28.first + n_28.count))) {
                     } else {
                         break;
                     }
                     {
-                        uint _e51 = i_2;
-                        GpuTriangle t_7 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e51*48+0)), asuint(geo_tris.Load(_e51*48+12)), asfloat(geo_tris.Load3(_e51*48+16)), asuint(geo_tris.Load(_e51*48+28)), asfloat(geo_tris.Load3(_e51*48+32)), asuint(geo_tris.Load(_e51*48+44)));
-                        float _e58 = hit.t;
-                        const float _e59 = ray_triangle(o_2, d_2, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e58);
-                        if ((_e59 > 0.0)) {
-                            hit.t = _e59;
-                            uint _e64 = i_2;
-                            hit.tri = _e64;
+                        uint _e42 = i_2;
+                        GpuTriangle t_7 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        float _e49 = hit.t;
+                        const float _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        if ((_e50 > 0.0)) {
+                            hit.t = _e50;
+                            uint _e55 = i_2;
+                            hit.tri = _e55;
                             if (any_hit) {
-                                GeoHit _e65 = hit;
-                                const GeoHit geohit_1 = _e65;
+                                GeoHit _e56 = hit;
+                                const GeoHit geohit_1 = _e56;
                                 return geohit_1;
                             }
                         }
                     }
                 }
             } else {
-                uint _e69 = sp;
-                if ((_e69 < 64u)) {
-                    uint _e72 = sp;
-                    stack[min(uint(_e72), 63u)] = (n_24.first + 1u);
-                    uint _e77 = sp;
-                    sp = (_e77 + 1u);
+                uint _e60 = sp;
+                if ((_e60 < 64u)) {
+                    uint _e63 = sp;
+                    stack[min(uint(_e63), 63u)] = (n_28.first + 1u);
+                    uint _e68 = sp;
+                    sp = (_e68 + 1u);
                 }
-                node = n_24.first;
+                node = n_28.first;
                 continue;
             }
         }
-        uint _e81 = sp;
-        if ((_e81 == 0u)) {
+        uint _e72 = sp;
+        if ((_e72 == 0u)) {
             break;
         }
-        uint _e84 = sp;
-        sp = (_e84 - 1u);
-        uint _e87 = sp;
-        uint _e89 = stack[min(uint(_e87), 63u)];
-        node = _e89;
+        uint _e75 = sp;
+        sp = (_e75 - 1u);
+        uint _e78 = sp;
+        uint _e80 = stack[min(uint(_e78), 63u)];
+        node = _e80;
     }
-    GeoHit _e90 = hit;
-    const GeoHit geohit_2 = _e90;
+    GeoHit _e81 = hit;
+    const GeoHit geohit_2 = _e81;
     return geohit_2;
 }
 
 bool occluded(float3 a_9, float3 b_7)
 {
     float3 dv = (b_7 - a_9);
-    float len = length(dv);
-    if ((len <= 0.0)) {
+    float len_1 = length(dv);
+    if ((len_1 <= 0.0)) {
         return false;
     }
-    float eps_1 = (0.0001 * len);
-    const GeoHit _e13 = trace(a_9, (dv / (len).xxx), eps_1, (len - eps_1), true);
-    return (_e13.tri != NO_LIGHT);
+    const float _e7 = shadow_margin(len_1);
+    const GeoHit _e12 = trace(a_9, (dv / (len_1).xxx), _e7, (len_1 - _e7), true);
+    return (_e12.tri != NO_LIGHT);
 }
 
 BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, uint arg5) {
@@ -1375,7 +1598,7 @@ BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg
     return ret;
 }
 
-uint bsh_next_leaf(uint start_1, float3 x_10)
+uint bsh_next_leaf(uint start_1, float3 x_14)
 {
     uint i_3 = (uint)0;
 
@@ -1390,7 +1613,7 @@ uint bsh_next_leaf(uint start_1, float3 x_10)
         }
         uint _e8 = i_3;
         BshNode node_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e8*32+0)), asfloat(bsh_nodes.Load(_e8*32+12)), asuint(bsh_nodes.Load(_e8*32+16)), asuint(bsh_nodes.Load(_e8*32+20)), asuint(bsh_nodes.Load(_e8*32+24)), asuint(bsh_nodes.Load(_e8*32+28)));
-        const bool _e13 = sphere_contains_point(node_1.center_, node_1.radius, x_10);
+        const bool _e13 = sphere_contains_point(node_1.center_, node_1.radius, x_14);
         if (_e13) {
             if ((node_1.child == BSH_NONE)) {
                 uint _e17 = i_3;
@@ -1409,16 +1632,16 @@ uint bsh_first()
     return ((((NagaBufferLength(bsh_nodes) - 0) / 32) > 0u) ? 0u : BSH_NONE);
 }
 
-Picks bsh_collect(float3 x_11, uint seed_1)
+Picks bsh_collect(float3 x_15, uint seed_3)
 {
     Picks picks = (Picks)0;
     uint h_2 = (uint)0;
     uint i_4 = (uint)0;
 
     picks.n = 0u;
-    h_2 = seed_1;
+    h_2 = seed_3;
     const uint _e6 = bsh_first();
-    const uint _e7 = bsh_next_leaf(_e6, x_11);
+    const uint _e7 = bsh_next_leaf(_e6, x_15);
     i_4 = _e7;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
@@ -1426,10 +1649,10 @@ Picks bsh_collect(float3 x_11, uint seed_1)
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e40 = i_4;
-            uint _e43 = asuint(bsh_nodes.Load(20+_e40*32));
-            const uint _e44 = bsh_next_leaf(_e43, x_11);
-            i_4 = _e44;
+            uint _e39 = i_4;
+            uint _e42 = asuint(bsh_nodes.Load(20+_e39*32));
+            const uint _e43 = bsh_next_leaf(_e42, x_15);
+            i_4 = _e43;
         }
         loop_init_1 = false;
         uint _e9 = i_4;
@@ -1439,29 +1662,30 @@ Picks bsh_collect(float3 x_11, uint seed_1)
         }
         {
             uint _e13 = picks.n;
-            if ((_e13 < 4294967295u)) {
-                uint _e17 = picks.n;
-                picks.n = (_e17 + 1u);
-                uint _e20 = h_2;
-                const uint _e21 = pcg_hash(_e20);
-                h_2 = _e21;
+            const bool _e14 = reservoir_takes(_e13);
+            if (_e14) {
+                uint _e16 = picks.n;
+                picks.n = (_e16 + 1u);
+                uint _e19 = h_2;
+                const uint _e20 = pcg_hash(_e19);
+                h_2 = _e20;
                 uint hi_4 = h_2;
-                uint _e23 = h_2;
-                const uint _e24 = pcg_hash(_e23);
-                h_2 = _e24;
-                uint _e26 = picks.n;
-                uint _e28 = h_2;
-                const uint _e29 = reservoir_slot(_e26, K, hi_4, _e28);
-                if ((_e29 < K)) {
-                    uint _e35 = i_4;
-                    uint _e38 = asuint(bsh_nodes.Load(24+_e35*32));
-                    picks.light[min(uint(_e29), 7u)] = _e38;
+                uint _e22 = h_2;
+                const uint _e23 = pcg_hash(_e22);
+                h_2 = _e23;
+                uint _e25 = picks.n;
+                uint _e27 = h_2;
+                const uint _e28 = reservoir_slot(_e25, K, hi_4, _e27);
+                if ((_e28 < K)) {
+                    uint _e34 = i_4;
+                    uint _e37 = asuint(bsh_nodes.Load(24+_e34*32));
+                    picks.light[min(uint(_e28), 7u)] = _e37;
                 }
             }
         }
     }
-    Picks _e45 = picks;
-    const Picks picks_1 = _e45;
+    Picks _e44 = picks;
+    const Picks picks_1 = _e44;
     return picks_1;
 }
 
@@ -1478,63 +1702,44 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_12, float3 n_13, float3 ng, float w_res, float u1_3, float u2_3, float eps)
+Connection connect(uint li, float3 x_16, float3 n_17, float3 ng_2, float w_res, float u1_3, float u2_3, float eps)
 {
     Connection c_9 = (Connection)0;
-    bool local_10 = (bool)0;
-    bool local_11 = (bool)0;
-    bool local_12 = (bool)0;
+    bool local_16 = (bool)0;
 
     c_9.e = (0.0).xxx;
     GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     const float3 _e16 = light_point(l_4, u1_3, u2_3);
     c_9.y = _e16;
-    float3 _e18 = c_9.y;
-    float3 v_11 = (x_12 - _e18);
-    float d2_13 = dot(v_11, v_11);
-    float _e23 = asfloat(r2_5.Load(li*4));
-    const bool _e24 = slc_keep(_e23, d2_13);
-    if (!(!(_e24))) {
-        local_10 = (d2_13 <= 0.0);
+    float3 _e19 = c_9.y;
+    float _e22 = asfloat(r2_6.Load(li*4));
+    const float _e23 = connection_cosine(x_16, _e19, n_17, ng_2, _e22);
+    c_9.cos_x = _e23;
+    float _e25 = c_9.cos_x;
+    if (!((_e25 <= 0.0))) {
+        float3 _e34 = c_9.y;
+        const bool _e35 = occluded((x_16 + (ng_2 * eps)), _e34);
+        local_16 = _e35;
     } else {
-        local_10 = true;
+        local_16 = true;
     }
-    bool _e32 = local_10;
-    if (_e32) {
-        Connection _e33 = c_9;
-        const Connection connection = _e33;
+    bool _e37 = local_16;
+    if (_e37) {
+        Connection _e38 = c_9;
+        const Connection connection = _e38;
         return connection;
     }
-    float3 w_11 = (v_11 / (sqrt(d2_13)).xxx);
-    c_9.cos_x = -(dot(n_13, w_11));
-    float _e41 = c_9.cos_x;
-    if (!((_e41 <= 0.0))) {
-        local_11 = (dot(ng, w_11) >= 0.0);
-    } else {
-        local_11 = true;
-    }
-    bool _e51 = local_11;
-    if (!(_e51)) {
-        float3 _e58 = c_9.y;
-        const bool _e59 = occluded((x_12 + (ng * eps)), _e58);
-        local_12 = _e59;
-    } else {
-        local_12 = true;
-    }
-    bool _e61 = local_12;
-    if (_e61) {
-        Connection _e62 = c_9;
-        const Connection connection_1 = _e62;
-        return connection_1;
-    }
-    const float3 _e64 = light_intensity(l_4, w_11);
-    float _e66 = c_9.cos_x;
-    float _e69 = asfloat(rt2_7.Load(li*4));
-    const float _e70 = connection_factor(_e66, d2_13, _e69, w_res);
-    c_9.e = (_e64 * _e70);
-    Connection _e72 = c_9;
-    const Connection connection_2 = _e72;
-    return connection_2;
+    float3 _e40 = c_9.y;
+    float3 v_12 = (x_16 - _e40);
+    float d2_14 = dot(v_12, v_12);
+    const float3 _e47 = light_intensity(l_4, (v_12 / (sqrt(d2_14)).xxx));
+    float _e49 = c_9.cos_x;
+    float _e52 = asfloat(rt2_7.Load(li*4));
+    const float _e53 = connection_factor(_e49, d2_14, _e52, w_res);
+    c_9.e = (_e47 * _e53);
+    Connection _e55 = c_9;
+    const Connection connection_1 = _e55;
+    return connection_1;
 }
 
 float mis_weight(float pdf_a_2, float pdf_b_2)
@@ -1556,11 +1761,11 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_weight(uint li_1, float3 x_13, float3 n_14)
+float light_weight(uint li_1, float3 x_17, float3 n_18)
 {
     GpuLightCone c_14 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
     float _e14 = asfloat(rt2_7.Load(li_1*4));
-    const float _e15 = cone_weight(c_14.center_, c_14.radius, c_14.phi, c_14.axis, c_14.cos_o, c_14.cos_e, _e14, x_13, n_14);
+    const float _e15 = cone_weight(c_14.center_, c_14.radius, c_14.phi, c_14.axis, c_14.cos_o, c_14.cos_e, _e14, x_17, n_18);
     return _e15;
 }
 
@@ -1577,29 +1782,29 @@ GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, f
     return ret;
 }
 
-float bvh_importance(uint i_5, float3 x_14, float3 n_15)
+float bvh_importance(uint i_5, float3 x_18, float3 n_19)
 {
     GpuLightBvhNode b_10 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_5*48+0)), asfloat(light_bvh.Load(i_5*48+12)), asfloat(light_bvh.Load3(i_5*48+16)), asfloat(light_bvh.Load(i_5*48+28)), asfloat(light_bvh.Load(i_5*48+32)), asfloat(light_bvh.Load(i_5*48+36)), asuint(light_bvh.Load(i_5*48+40)), asuint(light_bvh.Load(i_5*48+44)));
-    const float _e12 = light_importance(b_10.center_, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_14, n_15);
+    const float _e12 = light_importance(b_10.center_, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_18, n_19);
     return _e12;
 }
 
-float bvh_first(uint i_6, float3 x_15, float3 n_16)
+float bvh_first(uint i_6, float3 x_19, float3 n_20)
 {
-    bool local_13 = (bool)0;
+    bool local_17 = (bool)0;
 
     uint j = asuint(light_bvh.Load(40+i_6*48));
     if (!((j <= (i_6 + 1u)))) {
-        local_13 = (j >= ((NagaBufferLength(light_bvh) - 0) / 48));
+        local_17 = (j >= ((NagaBufferLength(light_bvh) - 0) / 48));
     } else {
-        local_13 = true;
+        local_17 = true;
     }
-    bool _e17 = local_13;
+    bool _e17 = local_17;
     if (_e17) {
         return -1.0;
     }
-    const float _e21 = bvh_importance((i_6 + 1u), x_15, n_16);
-    const float _e22 = bvh_importance(j, x_15, n_16);
+    const float _e21 = bvh_importance((i_6 + 1u), x_19, n_20);
+    const float _e22 = bvh_importance(j, x_19, n_20);
     const float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -1611,14 +1816,14 @@ BvhPick ConstructBvhPick(uint arg0, float arg1) {
     return ret;
 }
 
-BvhPick light_bvh_sample(float3 x_16, float3 n_17, float u_in)
+BvhPick light_bvh_sample(float3 x_20, float3 n_21, float u_in)
 {
-    float u_3 = (float)0;
+    float u_5 = (float)0;
     uint i_7 = 0u;
     float pmf = 1.0;
-    bool local_14 = (bool)0;
+    bool local_18 = (bool)0;
 
-    u_3 = u_in;
+    u_5 = u_in;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
@@ -1628,29 +1833,29 @@ BvhPick light_bvh_sample(float3 x_16, float3 n_17, float u_in)
         if ((node_2.second == LIGHT_BVH_LEAF)) {
             uint _e15 = i_7;
             if (!((_e15 > 0u))) {
-                const float _e22 = bvh_importance(0u, x_16, n_17);
-                local_14 = (_e22 > 0.0);
+                const float _e22 = bvh_importance(0u, x_20, n_21);
+                local_18 = (_e22 > 0.0);
             } else {
-                local_14 = true;
+                local_18 = true;
             }
-            bool reaches = local_14;
+            bool reaches = local_18;
             float _e28 = pmf;
             const BvhPick bvhpick = ConstructBvhPick(node_2.light, (reaches ? _e28 : 0.0));
             return bvhpick;
         }
         uint _e32 = i_7;
-        const float _e33 = bvh_first(_e32, x_16, n_17);
+        const float _e33 = bvh_first(_e32, x_20, n_21);
         if ((_e33 < 0.0)) {
             const BvhPick bvhpick_1 = ConstructBvhPick(0u, 0.0);
             return bvhpick_1;
         }
-        float _e39 = u_3;
+        float _e39 = u_5;
         bool first_1 = (_e39 < _e33);
         float _e41 = pmf;
         pmf = (_e41 * (first_1 ? _e33 : (1.0 - _e33)));
-        float _e46 = u_3;
+        float _e46 = u_5;
         const float _e47 = bvh_remap_u(_e46, _e33, first_1);
-        u_3 = _e47;
+        u_5 = _e47;
         uint _e49 = i_7;
         i_7 = (first_1 ? (_e49 + 1u) : node_2.second);
     }
@@ -1658,12 +1863,12 @@ BvhPick light_bvh_sample(float3 x_16, float3 n_17, float u_in)
     return bvhpick_2;
 }
 
-float light_bvh_pmf(uint li_2, float3 x_17, float3 n_18)
+float light_bvh_pmf(uint li_2, float3 x_21, float3 n_22)
 {
     uint i_8 = 0u;
     float pmf_1 = 1.0;
-    bool local_15 = (bool)0;
-    bool local_16 = (bool)0;
+    bool local_19 = (bool)0;
+    bool local_20 = (bool)0;
 
     uint leaf = asuint(light_cones.Load(40+li_2*48));
     if ((leaf >= ((NagaBufferLength(light_bvh) - 0) / 48))) {
@@ -1678,24 +1883,24 @@ float light_bvh_pmf(uint li_2, float3 x_17, float3 n_18)
         if ((node_3.second == LIGHT_BVH_LEAF)) {
             uint _e22 = i_8;
             if (!((_e22 > 0u))) {
-                const float _e29 = bvh_importance(0u, x_17, n_18);
-                local_15 = (_e29 > 0.0);
+                const float _e29 = bvh_importance(0u, x_21, n_22);
+                local_19 = (_e29 > 0.0);
             } else {
-                local_15 = true;
+                local_19 = true;
             }
-            bool reaches_1 = local_15;
+            bool reaches_1 = local_19;
             float _e34 = pmf_1;
             uint _e35 = i_8;
             if ((_e35 == leaf)) {
-                local_16 = reaches_1;
+                local_20 = reaches_1;
             } else {
-                local_16 = false;
+                local_20 = false;
             }
-            bool _e40 = local_16;
+            bool _e40 = local_20;
             return (_e40 ? _e34 : 0.0);
         }
         uint _e43 = i_8;
-        const float _e44 = bvh_first(_e43, x_17, n_18);
+        const float _e44 = bvh_first(_e43, x_21, n_22);
         if ((_e44 < 0.0)) {
             return 0.0;
         }
@@ -1708,48 +1913,43 @@ float light_bvh_pmf(uint li_2, float3 x_17, float3 n_18)
     return 0.0;
 }
 
-float select_pdf(uint li_3, float3 x_18, float3 n_19, uint nee, bool in_range_1)
+float select_pdf(uint li_3, float3 x_22, float3 n_23, uint nee, bool in_range_2)
 {
-    const float _e5 = light_bvh_pmf(li_3, x_18, n_19);
+    const float _e5 = light_bvh_pmf(li_3, x_22, n_23);
     return _e5;
 }
 
-float light_pdf(uint li_4, float3 x_19, float3 n_20, float3 y_2, uint nee_1, bool in_range_2)
+float light_pdf(uint li_4, float3 x_23, float3 n_24, float3 y_3, uint nee_1, bool in_range_3)
 {
     GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
-    float3 v_12 = (x_19 - y_2);
-    float d2_14 = dot(v_12, v_12);
+    float3 v_13 = (x_23 - y_3);
+    float d2_15 = dot(v_13, v_13);
     const float3 _e11 = light_normal(l_5);
-    float cos_y_1 = ((d2_14 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_14)).xxx)) : 0.0);
-    const float _e20 = select_pdf(li_4, x_19, n_20, nee_1, in_range_2);
+    float cos_y_1 = ((d2_15 > 0.0) ? dot(_e11, (v_13 / (sqrt(d2_15)).xxx)) : 0.0);
+    const float _e20 = select_pdf(li_4, x_23, n_24, nee_1, in_range_3);
     float _e23 = asfloat(rt2_7.Load(li_4*4));
     const float _e24 = light_area(l_5);
-    const float _e25 = light_strategy_pdf(_e20, _e23, d2_14, _e24, cos_y_1);
+    const float _e25 = light_strategy_pdf(_e20, _e23, d2_15, _e24, cos_y_1);
     return _e25;
 }
 
-bool finite3_(float3 v_3)
-{
-    return all((abs(v_3) <= (3.4028235e38).xxx));
-}
-
-float3 shade_pick(uint li_5, float3 x_20, float3 n_21, float3 ng_1, float w_9, uint nee_2, float u1_4, float u2_4)
+float3 shade_pick(uint li_5, float3 x_24, float3 n_25, float3 ng_3, float w_10, uint nee_2, float u1_4, float u2_4)
 {
     float mis = 1.0;
-    bool local_17 = (bool)0;
+    bool local_21 = (bool)0;
 
     float _e10 = params.eps;
-    const Connection _e11 = connect(li_5, x_20, n_21, ng_1, w_9, u1_4, u2_4, _e10);
+    const Connection _e11 = connect(li_5, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10);
     GpuLight _e16 = ConstructGpuLight(asfloat(lights.Load3(li_5*64+0)), asuint(lights.Load(li_5*64+12)), asfloat(lights.Load3(li_5*64+16)), asfloat(lights.Load(li_5*64+28)), asfloat(lights.Load3(li_5*64+32)), asfloat(lights.Load(li_5*64+44)), asfloat(lights.Load3(li_5*64+48)), asuint(lights.Load(li_5*64+60)));
     const float _e17 = light_area(_e16);
     if ((_e17 > 0.0)) {
-        local_17 = (_e11.cos_x > 0.0);
+        local_21 = (_e11.cos_x > 0.0);
     } else {
-        local_17 = false;
+        local_21 = false;
     }
-    bool _e26 = local_17;
+    bool _e26 = local_21;
     if (_e26) {
-        const float _e29 = light_pdf(li_5, x_20, n_21, _e11.y, nee_2, true);
+        const float _e29 = light_pdf(li_5, x_24, n_25, _e11.y, nee_2, true);
         const float _e31 = cosine_pdf(_e11.cos_x);
         const float _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -1787,45 +1987,43 @@ void main(uint3 gid : SV_DispatchThreadID)
         candidates.Store(i_9*4, asuint(0u));
         return;
     }
-    float3 x_21 = vtx.position;
-    float3 n_25 = vtx.normal;
-    float3 ng_2 = vtx.gnormal;
+    float3 x_25 = vtx.position;
+    float3 n_29 = vtx.normal;
+    float3 ng_4 = vtx.gnormal;
     uint _e20 = params.seed;
     uint _e23 = params.frame;
-    const uint _e24 = pcg_hash(_e23);
-    const uint _e26 = pcg_hash((i_9 ^ _e24));
-    const uint _e28 = pcg_hash((_e20 ^ _e26));
-    const uint _e31 = pcg_hash((_e28 ^ 2654435769u));
-    h = _e31;
+    const uint _e24 = point_stream(_e20, i_9, _e23);
+    const uint _e25 = pick_stream(_e24);
+    h = _e25;
     candidates.Store(i_9*4, asuint(0u));
-    uint _e39 = h;
-    const uint _e40 = pcg_hash(_e39);
-    h = _e40;
-    uint _e41 = h;
-    const float _e42 = xi_from_bits(_e41);
-    const BvhPick _e43 = light_bvh_sample(x_21, n_25, _e42);
-    uint li_6 = _e43.light;
-    float pmf_2 = _e43.pmf;
+    uint _e33 = h;
+    const uint _e34 = pcg_hash(_e33);
+    h = _e34;
+    uint _e35 = h;
+    const float _e36 = xi_from_bits(_e35);
+    const BvhPick _e37 = light_bvh_sample(x_25, n_29, _e36);
+    uint li_6 = _e37.light;
+    float pmf_2 = _e37.pmf;
+    uint _e40 = h;
+    const uint _e41 = pcg_hash(_e40);
+    h = _e41;
+    uint _e42 = h;
+    const float _e43 = xi_from_bits(_e42);
+    uint _e44 = h;
+    const uint _e45 = pcg_hash(_e44);
+    h = _e45;
     uint _e46 = h;
-    const uint _e47 = pcg_hash(_e46);
-    h = _e47;
-    uint _e48 = h;
-    const float _e49 = xi_from_bits(_e48);
-    uint _e50 = h;
-    const uint _e51 = pcg_hash(_e50);
-    h = _e51;
-    uint _e52 = h;
-    const float _e53 = xi_from_bits(_e52);
+    const float _e47 = xi_from_bits(_e46);
     if ((pmf_2 > 0.0)) {
-        const float3 _e59 = shade_pick(li_6, x_21, n_25, ng_2, (1.0 / pmf_2), 0u, _e49, _e53);
-        sum = _e59;
+        const float3 _e53 = shade_pick(li_6, x_25, n_29, ng_4, (1.0 / pmf_2), 0u, _e43, _e47);
+        sum = _e53;
     }
-    float3 _e61 = sum;
-    float3 add = (vtx.weight * _e61);
-    const bool _e63 = finite3_(add);
-    if (_e63) {
-        float4 _e66 = asfloat(radiance.Load4(i_9*16));
-        radiance.Store4(i_9*16, asuint((_e66 + float4(add, 0.0))));
+    float3 _e55 = sum;
+    float3 add = (vtx.weight * _e55);
+    const bool _e57 = finite3_(add);
+    if (_e57) {
+        float4 _e60 = asfloat(radiance.Load4(i_9*16));
+        radiance.Store4(i_9*16, asuint((_e60 + float4(add, 0.0))));
         return;
     } else {
         return;

@@ -219,6 +219,7 @@ static const uint MAP_CAMERA = 0u;
 static const uint MAP_PERSPECTIVE = 1u;
 static const uint MAP_ORTHOGRAPHIC = 2u;
 static const float XI_STEP = 5.9604645e-8;
+static const uint PICK_STREAM = 2654435769u;
 static const float TWO_PI = 6.2831855;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
@@ -227,11 +228,15 @@ static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
+static const uint RESERVOIR_FULL = 4294967295u;
 static const uint LIGHT_BVH_LEAF = 4294967295u;
 static const float ONE_MINUS_EPSILON = 0.99999994;
+static const float F32_MAX = 3.4028235e38;
+static const float DEPTH_NONE = 1e30;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
 static const uint NEAR_BLOCK = 64u;
+static const uint ROULETTE_DEPTH = 2u;
 static const uint K = 8u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
@@ -328,6 +333,27 @@ float xi_for(uint seed, uint frame, uint light)
     return _e9;
 }
 
+uint point_stream(uint seed_1, uint point_, uint frame_1)
+{
+    const uint _e3 = pcg_hash(frame_1);
+    const uint _e5 = pcg_hash((point_ ^ _e3));
+    const uint _e7 = pcg_hash((seed_1 ^ _e5));
+    return _e7;
+}
+
+uint pick_stream(uint stream)
+{
+    const uint _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+uint path_stream(uint seed_2, uint pixel, uint pass_index)
+{
+    const uint _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
+    const uint _e5 = point_stream(seed_2, pixel, _e4);
+    return _e5;
+}
+
 float rr_probability(float rt2_, float d2_)
 {
     if ((d2_ <= rt2_)) {
@@ -378,8 +404,8 @@ float cull_radius(float r2_1)
 float windowed_falloff(float d2_3, float range2_)
 {
     float q_2 = (d2_3 / range2_);
-    float w_10 = saturate((1.0 - (q_2 * q_2)));
-    return ((w_10 * w_10) / max(d2_3, 0.0001));
+    float w_11 = saturate((1.0 - (q_2 * q_2)));
+    return ((w_11 * w_11) / max(d2_3, 0.0001));
 }
 
 bool sphere_contains_point(float3 c, float r, float3 x_3)
@@ -402,39 +428,39 @@ float sphere_pad(float r_1, float3 c_1)
 
 float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 {
-    bool local_4 = (bool)0;
+    bool local_3 = (bool)0;
 
     float3 v_7 = (c2_1 - c1_1);
-    float d_3 = sqrt(dot(v_7, v_7));
+    float d_5 = sqrt(dot(v_7, v_7));
     const float _e8 = sphere_pad(r1_1, c1_1);
-    if ((r1_1 >= ((d_3 + r2_3) + _e8))) {
+    if ((r1_1 >= ((d_5 + r2_3) + _e8))) {
         return float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     const float _e16 = sphere_pad(r2_3, c2_1);
-    if ((r2_3 >= ((d_3 + r1_1) + _e16))) {
+    if ((r2_3 >= ((d_5 + r1_1) + _e16))) {
         return float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_3 >= SPHERE_HUGE))) {
-        local_4 = ((0.5 * ((d_3 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if (!((d_5 >= SPHERE_HUGE))) {
+        local_3 = ((0.5 * ((d_5 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    bool _e35 = local_4;
+    bool _e35 = local_3;
     if (_e35) {
         return float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if ((abs((r1_1 - r2_3)) >= d_3)) {
+    if ((abs((r1_1 - r2_3)) >= d_5)) {
         if ((r1_1 >= r2_3)) {
-            float rn = max(r1_1, (d_3 + r2_3));
+            float rn = max(r1_1, (d_5 + r2_3));
             const float _e50 = sphere_pad(rn, c1_1);
             return float4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        float rm = max(r2_3, (d_3 + r1_1));
+        float rm = max(r2_3, (d_5 + r1_1));
         const float _e58 = sphere_pad(rm, c2_1);
         return float4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    float r0_ = (0.5 * ((d_3 + r1_1) + r2_3));
-    float3 c_9 = (c1_1 + (v_7 * ((r0_ - r1_1) / d_3)));
+    float r0_ = (0.5 * ((d_5 + r1_1) + r2_3));
+    float3 c_9 = (c1_1 + (v_7 * ((r0_ - r1_1) / d_5)));
     float3 e1_ = (c_9 - c1_1);
     float3 e2_ = (c_9 - c2_1);
     float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
@@ -473,9 +499,40 @@ float connection_factor(float cos_x, float d2_5, float rt2_3, float w_1)
     return (((cos_x * _e4) * _e6) * w_1);
 }
 
-float vpl_lobe(float3 n, float3 w_2)
+float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
 {
-    return (max(dot(n, w_2), 0.0) * INV_PI);
+    bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
+
+    float3 v_9 = (x_4 - y);
+    float d2_11 = dot(v_9, v_9);
+    const bool _e7 = slc_keep(r2_5, d2_11);
+    if (!(!(_e7))) {
+        local_4 = !((d2_11 > 0.0));
+    } else {
+        local_4 = true;
+    }
+    bool _e16 = local_4;
+    if (_e16) {
+        return 0.0;
+    }
+    float3 w_12 = (v_9 / (sqrt(d2_11)).xxx);
+    float cos_x_1 = -(dot(n, w_12));
+    if (!((cos_x_1 <= 0.0))) {
+        local_5 = (dot(ng, w_12) >= 0.0);
+    } else {
+        local_5 = true;
+    }
+    bool _e32 = local_5;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float vpl_lobe(float3 n_1, float3 w_2)
+{
+    return (max(dot(n_1, w_2), 0.0) * INV_PI);
 }
 
 float vpl_transfer(float3 n_l, float3 n_x, float3 v_2, float min_d2_)
@@ -493,9 +550,9 @@ float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
     return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
 }
 
-float triangle_lobe(float3 n_1, float area, float3 w_3)
+float triangle_lobe(float3 n_2, float area, float3 w_3)
 {
-    return (area * max(dot(n_1, w_3), 0.0));
+    return (area * max(dot(n_2, w_3), 0.0));
 }
 
 float3 triangle_sample(float3 a_2, float3 b_2, float3 c_3, float u1_, float u2_)
@@ -515,12 +572,12 @@ float area_to_solid_angle_pdf(float pdf_area, float d2_6, float cos_light)
     return ((pdf_area * d2_6) / c_10);
 }
 
-float atan_portable(float x_4)
+float atan_portable(float x_5)
 {
     float base = 0.0;
     float t = (float)0;
 
-    float a_10 = abs(x_4);
+    float a_10 = abs(x_5);
     t = a_10;
     if ((a_10 > 2.4142137)) {
         base = 1.5707964;
@@ -533,30 +590,30 @@ float atan_portable(float x_4)
     }
     float _e18 = t;
     float _e19 = t;
-    float z_1 = (_e18 * _e19);
+    float z_3 = (_e18 * _e19);
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_5 = (_e21 + (((((((((0.080537446 * z_1) - 0.13877685) * z_1) + 0.19977711) * z_1) - 0.3333295) * z_1) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_5) : r_5);
+    float r_5 = (_e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35));
+    return ((x_5 < 0.0) ? -(r_5) : r_5);
 }
 
-float atan2_portable(float y, float x_5)
+float atan2_portable(float y_1, float x_6)
 {
-    if ((x_5 == 0.0)) {
-        if ((y > 0.0)) {
+    if ((x_6 == 0.0)) {
+        if ((y_1 > 0.0)) {
             return 1.5707964;
         }
-        if ((y < 0.0)) {
+        if ((y_1 < 0.0)) {
             return -1.5707964;
         }
         return 0.0;
     }
-    const float _e12 = atan_portable((y / x_5));
-    if ((x_5 > 0.0)) {
+    const float _e12 = atan_portable((y_1 / x_6));
+    if ((x_6 > 0.0)) {
         return _e12;
     }
-    if ((y >= 0.0)) {
+    if ((y_1 >= 0.0)) {
         return (_e12 + 3.1415927);
     }
     return (_e12 - 3.1415927);
@@ -612,15 +669,15 @@ float ies_fold_c(float c_4, float h_first, float h_last)
     return _e52;
 }
 
-uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
+uint ies_segment(uint tab_1, uint start, uint n_3, float x_7)
 {
     uint lo = 0u;
     uint hi = (uint)0;
 
-    if ((n_2 < 2u)) {
+    if ((n_3 < 2u)) {
         return 0u;
     }
-    hi = (n_2 - 1u);
+    hi = (n_3 - 1u);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
@@ -636,7 +693,7 @@ uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
             uint _e18 = hi;
             uint mid = ((_e17 + _e18) >> 1u);
             const float _e23 = at(tab_1, (start + mid));
-            if ((_e23 <= x_6)) {
+            if ((_e23 <= x_7)) {
                 lo = mid;
             } else {
                 hi = mid;
@@ -647,17 +704,17 @@ uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
     return _e25;
 }
 
-float ies_lerp_t(float a0_, float a1_, float x_7)
+float ies_lerp_t(float a0_, float a1_, float x_8)
 {
     if ((a1_ <= a0_)) {
         return 0.0;
     }
-    return saturate(((x_7 - a0_) / (a1_ - a0_)));
+    return saturate(((x_8 - a0_) / (a1_ - a0_)));
 }
 
 float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
 {
-    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
 
     const float _e4 = at(tab_2, base_1);
     const uint _e5 = to_u32_(_e4);
@@ -669,11 +726,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
     const float _e14 = at(tab_2, v0_);
     if (!((gamma < _e14))) {
         const float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_5 = (gamma > _e22);
+        local_6 = (gamma > _e22);
     } else {
-        local_5 = true;
+        local_6 = true;
     }
-    bool _e25 = local_5;
+    bool _e25 = local_6;
     if (_e25) {
         return 0.0;
     }
@@ -710,6 +767,13 @@ float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
     return _e20;
 }
 
+float ies_light_candela(uint tab_4, uint base_3, float3 nadir, float3 reference, float3 w_4)
+{
+    float3 side = cross(reference, nadir);
+    const float _e9 = ies_candela_dir(tab_4, base_3, dot(w_4, nadir), dot(w_4, reference), dot(w_4, side));
+    return _e9;
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3)
 {
     uint a_lo = (a_4 & 65535u);
@@ -724,45 +788,77 @@ uint mul_hi_u32_(uint a_4, uint b_3)
     return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u));
 }
 
-uint uniform_index(uint n_3, uint hi_1, uint lo_1)
+uint uniform_index(uint n_4, uint hi_1, uint lo_1)
 {
-    const uint _e3 = mul_lo_u32_(hi_1, n_3);
-    const uint _e4 = mul_hi_u32_(hi_1, n_3);
-    const uint _e5 = mul_hi_u32_(lo_1, n_3);
+    const uint _e3 = mul_lo_u32_(hi_1, n_4);
+    const uint _e4 = mul_hi_u32_(hi_1, n_4);
+    const uint _e5 = mul_hi_u32_(lo_1, n_4);
     if ((_e3 > (4294967295u - _e5))) {
         return (_e4 + 1u);
     }
     return _e4;
 }
 
-uint reservoir_slot(uint n_4, uint k, uint hi_2, uint lo_2)
+uint reservoir_slot(uint n_5, uint k, uint hi_2, uint lo_2)
 {
-    if ((n_4 <= k)) {
-        return (n_4 - 1u);
+    if ((n_5 <= k)) {
+        return (n_5 - 1u);
     }
-    const uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    const uint _e7 = uniform_index(n_5, hi_2, lo_2);
     if ((_e7 < k)) {
         return _e7;
     }
     return k;
 }
 
-float reservoir_weight(uint n_5, uint k_1)
+bool reservoir_takes(uint n_6)
 {
-    const float _e2 = to_f32_(n_5);
+    return (n_6 < RESERVOIR_FULL);
+}
+
+float reservoir_weight(uint n_7, uint k_1)
+{
+    const float _e2 = to_f32_(n_7);
     const float _e3 = to_f32_(k_1);
     return max((_e2 / _e3), 1.0);
 }
 
-bool weighted_replace(float w_4, float w_sum, float u_1)
+bool weighted_replace(float w_5, float w_sum, float u_1)
 {
-    return ((u_1 * w_sum) < w_4);
+    return ((u_1 * w_sum) < w_5);
 }
 
-float weighted_pick_weight(float w_sum_1, float w_5, uint k_2)
+float weighted_pick_weight(float w_sum_1, float w_6, uint k_2)
 {
     const float _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_5));
+    return (w_sum_1 / (_e3 * w_6));
+}
+
+float reservoir_select_pdf(uint seen, bool in_range, uint k_3)
+{
+    uint others = (uint)0;
+    bool local_7 = (bool)0;
+
+    others = seen;
+    if (in_range) {
+        local_7 = (seen > 0u);
+    } else {
+        local_7 = false;
+    }
+    bool _e9 = local_7;
+    if (_e9) {
+        others = (seen - 1u);
+    }
+    uint _e12 = others;
+    const float _e15 = reservoir_weight((_e12 + 1u), k_3);
+    return (1.0 / _e15);
+}
+
+uint uniform_light(float u_2, uint n_8)
+{
+    const float _e2 = to_f32_(n_8);
+    const uint _e4 = to_u32_((u_2 * _e2));
+    return min(_e4, (n_8 - 1u));
 }
 
 float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
@@ -781,24 +877,24 @@ float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1
     return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
 }
 
-float safe_sqrt(float x_8)
+float safe_sqrt(float x_9)
 {
-    return sqrt(max(x_8, 0.0));
+    return sqrt(max(x_9, 0.0));
 }
 
-float light_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p, float3 n_6)
+float light_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p, float3 n_9)
 {
     float imp = (float)0;
 
-    float3 v_9 = (p - center_);
-    float dist2_ = dot(v_9, v_9);
-    float r2_5 = (radius * radius);
-    float d2_11 = max(max(dist2_, r2_5), MIN_D2_);
-    float3 wi = ((dist2_ > 0.0) ? (v_9 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
+    float3 v_10 = (p - center_);
+    float dist2_ = dot(v_10, v_10);
+    float r2_6 = (radius * radius);
+    float d2_12 = max(max(dist2_, r2_6), MIN_D2_);
+    float3 wi = ((dist2_ > 0.0) ? (v_10 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e32 = safe_sqrt((1.0 - (r2_5 / dist2_)));
-    float cos_b_2 = ((dist2_ <= r2_5) ? -1.0 : _e32);
+    const float _e32 = safe_sqrt((1.0 - (r2_6 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_6) ? -1.0 : _e32);
     const float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
     const float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
     const float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -807,9 +903,9 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_11);
-    if ((dot(n_6, n_6) > 0.0)) {
-        float cos_i = -(dot(wi, n_6));
+    imp = ((phi * _e46) / d2_12);
+    if ((dot(n_9, n_9) > 0.0)) {
+        float cos_i = -(dot(wi, n_9));
         const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
         float _e61 = imp;
         const float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
@@ -825,22 +921,22 @@ float candidate_weight(float importance, float rt2_4, float d2_7)
     return (importance * _e3);
 }
 
-float cone_weight(float3 center_1, float radius_1, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, float3 p_1, float3 n_7)
+float cone_weight(float3 center_1, float radius_1, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, float3 p_1, float3 n_10)
 {
-    float3 v_10 = (p_1 - center_1);
-    const float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_7);
-    const float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_10, v_10));
+    float3 v_11 = (p_1 - center_1);
+    const float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
+    const float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_11, v_11));
     return _e14;
 }
 
-float weighted_select_pdf(float w_6, float w_sum_2, bool in_range, uint k_3)
+float weighted_select_pdf(float w_7, float w_sum_2, bool in_range_1, uint k_4)
 {
-    if ((w_6 <= 0.0)) {
+    if ((w_7 <= 0.0)) {
         return 0.0;
     }
-    float total = (in_range ? w_sum_2 : (w_sum_2 + w_6));
-    const float _e9 = to_f32_(k_3);
-    return ((_e9 * w_6) / total);
+    float total = (in_range_1 ? w_sum_2 : (w_sum_2 + w_7));
+    const float _e9 = to_f32_(k_4);
+    return ((_e9 * w_7) / total);
 }
 
 float bvh_first_prob(float c0_, float c1_2)
@@ -852,12 +948,40 @@ float bvh_first_prob(float c0_, float c1_2)
     return -1.0;
 }
 
-float bvh_remap_u(float u_2, float p0_, bool first)
+float bvh_remap_u(float u_3, float p0_, bool first)
 {
     if (first) {
-        return min((u_2 / p0_), ONE_MINUS_EPSILON);
+        return min((u_3 / p0_), ONE_MINUS_EPSILON);
     }
-    return clamp(((u_2 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+    return clamp(((u_3 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
+float surface_offset(float diag)
+{
+    return (1e-5 * diag);
+}
+
+float ray_t_min(float diag_1)
+{
+    return (1e-6 * diag_1);
+}
+
+float shadow_margin(float len)
+{
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_10)
+{
+    return (1.0 / ((abs(x_10) < 1e-30) ? 1e-30 : x_10));
+}
+
+float3 ray_inverse3_(float3 d)
+{
+    const float _e2 = ray_inverse(d.x);
+    const float _e4 = ray_inverse(d.y);
+    const float _e6 = ray_inverse(d.z);
+    return float3(_e2, _e4, _e6);
 }
 
 float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
@@ -876,25 +1000,25 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 
 float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
 {
-    bool local_6 = (bool)0;
+    bool local_8 = (bool)0;
 
-    float3 n_20 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_20, n_20);
+    float3 n_24 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_24, n_24);
     if (!(!((l2_ > 0.0)))) {
-        local_6 = !((l2_ < 3e38));
+        local_8 = !((l2_ < 3e38));
     } else {
-        local_6 = true;
+        local_8 = true;
     }
-    bool _e17 = local_6;
+    bool _e17 = local_8;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_20 / (sqrt(l2_)).xxx);
+    return (n_24 / (sqrt(l2_)).xxx);
 }
 
-float3 face_against(float3 n_8, float3 dir)
+float3 face_against(float3 n_11, float3 dir)
 {
-    return ((dot(n_8, dir) > 0.0) ? -(n_8) : n_8);
+    return ((dot(n_11, dir) > 0.0) ? -(n_11) : n_11);
 }
 
 float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
@@ -914,68 +1038,68 @@ float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
     return float3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
-float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_7, float3 facing)
+float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_8, float3 facing)
 {
-    bool local_7 = (bool)0;
+    bool local_9 = (bool)0;
 
-    float3 s_1 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
+    float3 s_1 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
     float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
-        local_7 = !((l2_1 < 3e38));
+        local_9 = !((l2_1 < 3e38));
     } else {
-        local_7 = true;
+        local_9 = true;
     }
-    bool _e24 = local_7;
+    bool _e24 = local_9;
     if (_e24) {
         return facing;
     }
-    float3 n_21 = (s_1 / (sqrt(l2_1)).xxx);
-    return ((dot(n_21, facing) < 0.0) ? -(n_21) : n_21);
+    float3 n_25 = (s_1 / (sqrt(l2_1)).xxx);
+    return ((dot(n_25, facing) < 0.0) ? -(n_25) : n_25);
 }
 
-float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_1, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
 {
-    bool local_8 = (bool)0;
-    bool local_9 = (bool)0;
     bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
+    bool local_12 = (bool)0;
 
     float3 e1_2 = (b_6 - a_7);
     float3 e2_2 = (c_8 - a_7);
-    float3 p_3 = cross(d, e2_2);
+    float3 p_3 = cross(d_1, e2_2);
     float det = dot(e1_2, p_3);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     float3 s_2 = (o_1 - a_7);
-    float u_4 = (dot(s_2, p_3) * inv);
-    if (!((u_4 < 0.0))) {
-        local_8 = (u_4 > 1.0);
+    float u_6 = (dot(s_2, p_3) * inv);
+    if (!((u_6 < 0.0))) {
+        local_10 = (u_6 > 1.0);
     } else {
-        local_8 = true;
+        local_10 = true;
     }
-    bool _e28 = local_8;
+    bool _e28 = local_10;
     if (_e28) {
         return -1.0;
     }
     float3 q_5 = cross(s_2, e1_2);
-    float v_11 = (dot(d, q_5) * inv);
-    if (!((v_11 < 0.0))) {
-        local_9 = ((u_4 + v_11) > 1.0);
+    float v_12 = (dot(d_1, q_5) * inv);
+    if (!((v_12 < 0.0))) {
+        local_11 = ((u_6 + v_12) > 1.0);
     } else {
-        local_9 = true;
+        local_11 = true;
     }
-    bool _e42 = local_9;
+    bool _e42 = local_11;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_2, q_5) * inv);
     if ((t_3 > t_min)) {
-        local_10 = (t_3 < t_max_1);
+        local_12 = (t_3 < t_max_1);
     } else {
-        local_10 = false;
+        local_12 = false;
     }
-    bool _e51 = local_10;
+    bool _e51 = local_12;
     if (_e51) {
         return t_3;
     }
@@ -1003,21 +1127,21 @@ float mis_power(float pdf_a_1, float pdf_b_1)
 
 float light_strategy_pdf(float select_, float rt2_6, float d2_8, float area_1, float cos_y)
 {
-    bool local_11 = (bool)0;
-    bool local_12 = (bool)0;
+    bool local_13 = (bool)0;
+    bool local_14 = (bool)0;
 
     if (!((d2_8 <= 0.0))) {
-        local_11 = (area_1 <= 0.0);
+        local_13 = (area_1 <= 0.0);
     } else {
-        local_11 = true;
+        local_13 = true;
     }
-    bool _e13 = local_11;
+    bool _e13 = local_13;
     if (!(_e13)) {
-        local_12 = (cos_y <= 0.0);
+        local_14 = (cos_y <= 0.0);
     } else {
-        local_12 = true;
+        local_14 = true;
     }
-    bool _e20 = local_12;
+    bool _e20 = local_14;
     if (_e20) {
         return 0.0;
     }
@@ -1036,26 +1160,64 @@ float cosine_pdf(float cos_theta_1)
     return (max(cos_theta_1, 0.0) * INV_PI);
 }
 
-float3 cosine_direction(float3 n_9, float u1_1, float u2_1)
+float3 cosine_direction(float3 n_12, float u1_1, float u2_1)
 {
-    float s_5 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_5 + n_9.z));
-    float b_9 = ((n_9.x * n_9.y) * a_12);
-    float3 t_4 = float3((1.0 + (((s_5 * n_9.x) * n_9.x) * a_12)), (s_5 * b_9), (-(s_5) * n_9.x));
-    float3 bt = float3(b_9, (s_5 + ((n_9.y * n_9.y) * a_12)), -(n_9.y));
+    float s_5 = ((n_12.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_5 + n_12.z));
+    float b_9 = ((n_12.x * n_12.y) * a_12);
+    float3 t_4 = float3((1.0 + (((s_5 * n_12.x) * n_12.x) * a_12)), (s_5 * b_9), (-(s_5) * n_12.x));
+    float3 bt = float3(b_9, (s_5 + ((n_12.y * n_12.y) * a_12)), -(n_12.y));
     float r_6 = sqrt(u1_1);
     float phi_2 = (6.2831855 * u2_1);
-    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));
+    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_12 * sqrt(max((1.0 - u1_1), 0.0)))));
 }
 
-float bilateral_weight(float3 n_10, float3 nj, float z, float zj, float inv_sz)
+float inv_sigma_z(float z)
 {
-    float dn = max(dot(n_10, nj), 0.0);
+    return (1.0 / (DEPTH_SIGMA * z));
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+uint window_start(uint x_11, uint size)
+{
+    uint half_ = naga_div(size, 2u);
+    return (max(x_11, half_) - half_);
+}
+
+uint window_end(uint x_12, uint size_1, uint extent_1)
+{
+    return min(((x_12 + size_1) - naga_div(size_1, 2u)), extent_1);
+}
+
+uint wide_window(uint period)
+{
+    return (2u * period);
+}
+
+bool misses_subset(uint covered, uint period_1)
+{
+    return (covered < (period_1 * period_1));
+}
+
+float3 filtered_irradiance(float3 e, float3 sum, float weight)
+{
+    if ((weight > 0.0)) {
+        return (sum / (weight).xxx);
+    }
+    return e;
+}
+
+float bilateral_weight(float3 n_13, float3 nj, float z_1, float zj, float inv_sz)
+{
+    float dn = max(dot(n_13, nj), 0.0);
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
-    float d_4 = ((zj - z) * inv_sz);
-    float t_5 = max((1.0 - (d_4 * d_4)), 0.0);
+    float d_6 = ((zj - z_1) * inv_sz);
+    float t_5 = max((1.0 - (d_6 * d_6)), 0.0);
     return (((dn8_ * dn8_) * t_5) * t_5);
 }
 
@@ -1063,42 +1225,44 @@ uint naga_mod(uint lhs, uint rhs) {
     return lhs % (rhs == 0u ? 1u : rhs);
 }
 
-uint interleave_subset(uint x_9, uint y_1, uint period)
+uint interleave_subset(uint x_13, uint y_2, uint period_2)
 {
-    return ((naga_mod(y_1, period) * period) + naga_mod(x_9, period));
+    return ((naga_mod(y_2, period_2) * period_2) + naga_mod(x_13, period_2));
 }
 
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / (rhs == 0u ? 1u : rhs);
+uint interleave_slot(uint tx, uint ty, uint size_2, uint period_3)
+{
+    uint side_1 = naga_div(size_2, period_3);
+    const uint _e5 = interleave_subset(tx, ty, period_3);
+    return ((((_e5 * side_1) * side_1) + (naga_div(ty, period_3) * side_1)) + naga_div(tx, period_3));
 }
 
-uint interleave_slot(uint tx, uint ty, uint size, uint period_1)
+uint interleave_slot_linear(uint i_1, uint per_subset, uint period_4)
 {
-    uint side = naga_div(size, period_1);
-    const uint _e5 = interleave_subset(tx, ty, period_1);
-    return ((((_e5 * side) * side) + (naga_div(ty, period_1) * side)) + naga_div(tx, period_1));
-}
-
-uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2)
-{
-    uint subsets = (period_2 * period_2);
+    uint subsets = (period_4 * period_4);
     return ((naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets));
 }
 
-uint near_block_index(uint tx_1, uint ty_1, uint size_1)
+float interleave_flux_scale(uint period_5)
 {
-    uint side_1 = naga_div(size_1, 8u);
-    return (((((naga_div(ty_1, 8u) * side_1) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u));
+    const float _e2 = to_f32_((period_5 * period_5));
+    return _e2;
 }
 
-uint near_block_tx(uint q, uint size_2)
+uint near_block_index(uint tx_1, uint ty_1, uint size_3)
 {
-    return ((naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_2, 8u)) * 8u) + naga_mod(q, 8u));
+    uint side_2 = naga_div(size_3, 8u);
+    return (((((naga_div(ty_1, 8u) * side_2) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u));
 }
 
-uint near_block_ty(uint q_1, uint size_3)
+uint near_block_tx(uint q, uint size_4)
 {
-    return ((naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_3, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u));
+    return ((naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_4, 8u)) * 8u) + naga_mod(q, 8u));
+}
+
+uint near_block_ty(uint q_1, uint size_5)
+{
+    return ((naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_5, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u));
 }
 
 float vpl_near_weight(float d2_9, float near_r2_)
@@ -1116,11 +1280,60 @@ float vpl_far_weight(float d2_10, float near_r2_1)
     return (1.0 - _e2);
 }
 
-float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_8, float h_1)
+float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_9, float h_1)
 {
-    float sx = (((2.0 * px) / w_8) - 1.0);
+    float sx = (((2.0 * px) / w_9) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h_1));
     return normalize(((forward + (right * sx)) + (up * sy)));
+}
+
+float jittered_pixel(uint coord, float u_4)
+{
+    const float _e2 = to_f32_(coord);
+    return (_e2 + u_4);
+}
+
+bool plays_roulette(uint depth)
+{
+    return (depth >= ROULETTE_DEPTH);
+}
+
+bool sees_emission(float3 gn, float3 dir_1)
+{
+    return (dot(gn, dir_1) < 0.0);
+}
+
+bool continues_path(float3 nd, float3 n_14, float3 ng_1)
+{
+    bool local_15 = (bool)0;
+
+    if ((dot(nd, n_14) > 0.0)) {
+        local_15 = (dot(nd, ng_1) > 0.0);
+    } else {
+        local_15 = false;
+    }
+    bool _e12 = local_15;
+    return _e12;
+}
+
+bool finite3_(float3 v_3)
+{
+    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
+
+    if ((abs(v_3.x) <= F32_MAX)) {
+        local_16 = (abs(v_3.y) <= F32_MAX);
+    } else {
+        local_16 = false;
+    }
+    bool _e12 = local_16;
+    if (_e12) {
+        local_17 = (abs(v_3.z) <= F32_MAX);
+    } else {
+        local_17 = false;
+    }
+    bool _e20 = local_17;
+    return _e20;
 }
 
 float path_survival(float3 beta)
@@ -1128,17 +1341,17 @@ float path_survival(float3 beta)
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
 }
 
-float light_map_coord(uint t_1, uint size_4)
+float light_map_coord(uint t_1, uint size_6)
 {
     const float _e2 = to_f32_(t_1);
-    const float _e7 = to_f32_(size_4);
+    const float _e7 = to_f32_(size_6);
     return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
 }
 
-uint light_map_texel(float a_8, uint size_5)
+uint light_map_texel(float a_8, uint size_7)
 {
-    const float _e6 = to_f32_(size_5);
-    const float _e9 = to_f32_(size_5);
+    const float _e6 = to_f32_(size_7);
+    const float _e9 = to_f32_(size_7);
     const uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
     return _e14;
 }
@@ -1153,17 +1366,27 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-float3 point_irradiance(float3 intensity_1, float3 n_11, float3 v_3)
+float3 point_irradiance(float3 intensity_1, float3 n_15, float3 v_4)
 {
-    float d2_12 = dot(v_3, v_3);
-    float cos_x_1 = (dot(n_11, v_3) / sqrt(max(d2_12, MIN_D2_)));
-    const float _e11 = inverse_square(d2_12);
-    return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
+    float d2_13 = dot(v_4, v_4);
+    float cos_x_2 = (dot(n_15, v_4) / sqrt(max(d2_13, MIN_D2_)));
+    const float _e11 = inverse_square(d2_13);
+    return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
-float3 directional_irradiance(float3 e, float3 n_12, float3 to_light)
+float3 directional_irradiance(float3 e_1, float3 n_16, float3 to_light)
 {
-    return (e * max(dot(n_12, to_light), 0.0));
+    return (e_1 * max(dot(n_16, to_light), 0.0));
+}
+
+float perspective_texel_width(float extent_2, float d_2, float z_2, float size_8)
+{
+    return ((((2.0 * extent_2) * d_2) * d_2) / (size_8 * z_2));
+}
+
+float ortho_texel_width(float extent_3, float size_9)
+{
+    return ((2.0 * extent_3) / size_9);
 }
 
 float shadow_bias(float texel, float cos_light_1)
@@ -1172,25 +1395,25 @@ float shadow_bias(float texel, float cos_light_1)
     return (texel * (1.5 + (sqrt((1.0 - (c_12 * c_12))) / c_12)));
 }
 
-bool shadow_lit(float d_1, float d_map, float bias)
+bool shadow_lit(float d_3, float d_map, float bias)
 {
-    bool local_13 = (bool)0;
+    bool local_18 = (bool)0;
 
     if (!((d_map <= 0.0))) {
-        local_13 = (d_1 <= (d_map + bias));
+        local_18 = (d_3 <= (d_map + bias));
     } else {
-        local_13 = true;
+        local_18 = true;
     }
-    bool _e11 = local_13;
+    bool _e11 = local_18;
     return _e11;
 }
 
-float3 diffuse_radiance(float3 albedo, float3 emission, float3 e_1)
+float3 diffuse_radiance(float3 albedo, float3 emission, float3 e_2)
 {
-    return (emission + ((albedo * INV_PI) * e_1));
+    return (emission + ((albedo * INV_PI) * e_2));
 }
 
-float3 light_intensity(GpuLight l, float3 w_9)
+float3 light_intensity(GpuLight l, float3 w_10)
 {
     switch(l.kind) {
         case 0u: {
@@ -1198,7 +1421,7 @@ float3 light_intensity(GpuLight l, float3 w_9)
         }
         case 3u: {
             const float3 _e8 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            const float _e10 = triangle_lobe(_e8, l.a, w_9);
+            const float _e10 = triangle_lobe(_e8, l.a, w_10);
             return (l.intensity * _e10);
         }
         default: {
@@ -1260,7 +1483,7 @@ GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3,
     return ret;
 }
 
-GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
+GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
 {
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
@@ -1275,87 +1498,87 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
         const GeoHit geohit = _e13;
         return geohit;
     }
-    float3 inv_d_1 = ((1.0).xxx / ((abs(d_2) < (1e-30).xxx) ? (1e-30).xxx : d_2));
+    const float3 _e14 = ray_inverse3_(d_4);
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e30 = node;
-        GpuGeoNode n_22 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e30*32+0)), asuint(geo_nodes.Load(_e30*32+12)), asfloat(geo_nodes.Load3(_e30*32+16)), asuint(geo_nodes.Load(_e30*32+28)));
-        float _e36 = hit.t;
-        const float _e37 = ray_aabb(o_2, inv_d_1, n_22.bmin, n_22.bmax, _e36);
-        if ((_e37 >= 0.0)) {
-            if ((n_22.count > 0u)) {
-                i_2 = n_22.first;
+        uint _e21 = node;
+        GpuGeoNode n_26 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        float _e27 = hit.t;
+        const float _e28 = ray_aabb(o_2, _e14, n_26.bmin, n_26.bmax, _e27);
+        if ((_e28 >= 0.0)) {
+            if ((n_26.count > 0u)) {
+                i_2 = n_26.first;
                 uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
                     if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
                     loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                     if (!loop_init) {
-                        uint _e67 = i_2;
-                        i_2 = (_e67 + 1u);
+                        uint _e58 = i_2;
+                        i_2 = (_e58 + 1u);
                     }
                     loop_init = false;
-                    uint _e45 = i_2;
-                    if ((_e45 < (n_22.first + n_22.count))) {
+                    uint _e36 = i_2;
+                    if ((_e36 < (n_26.first + n_26.count))) {
                     } else {
                         break;
                     }
                     {
-                        uint _e51 = i_2;
-                        GpuTriangle t_7 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e51*48+0)), asuint(geo_tris.Load(_e51*48+12)), asfloat(geo_tris.Load3(_e51*48+16)), asuint(geo_tris.Load(_e51*48+28)), asfloat(geo_tris.Load3(_e51*48+32)), asuint(geo_tris.Load(_e51*48+44)));
-                        float _e58 = hit.t;
-                        const float _e59 = ray_triangle(o_2, d_2, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e58);
-                        if ((_e59 > 0.0)) {
-                            hit.t = _e59;
-                            uint _e64 = i_2;
-                            hit.tri = _e64;
+                        uint _e42 = i_2;
+                        GpuTriangle t_7 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        float _e49 = hit.t;
+                        const float _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        if ((_e50 > 0.0)) {
+                            hit.t = _e50;
+                            uint _e55 = i_2;
+                            hit.tri = _e55;
                             if (any_hit) {
-                                GeoHit _e65 = hit;
-                                const GeoHit geohit_1 = _e65;
+                                GeoHit _e56 = hit;
+                                const GeoHit geohit_1 = _e56;
                                 return geohit_1;
                             }
                         }
                     }
                 }
             } else {
-                uint _e69 = sp;
-                if ((_e69 < 64u)) {
-                    uint _e72 = sp;
-                    stack[min(uint(_e72), 63u)] = (n_22.first + 1u);
-                    uint _e77 = sp;
-                    sp = (_e77 + 1u);
+                uint _e60 = sp;
+                if ((_e60 < 64u)) {
+                    uint _e63 = sp;
+                    stack[min(uint(_e63), 63u)] = (n_26.first + 1u);
+                    uint _e68 = sp;
+                    sp = (_e68 + 1u);
                 }
-                node = n_22.first;
+                node = n_26.first;
                 continue;
             }
         }
-        uint _e81 = sp;
-        if ((_e81 == 0u)) {
+        uint _e72 = sp;
+        if ((_e72 == 0u)) {
             break;
         }
-        uint _e84 = sp;
-        sp = (_e84 - 1u);
-        uint _e87 = sp;
-        uint _e89 = stack[min(uint(_e87), 63u)];
-        node = _e89;
+        uint _e75 = sp;
+        sp = (_e75 - 1u);
+        uint _e78 = sp;
+        uint _e80 = stack[min(uint(_e78), 63u)];
+        node = _e80;
     }
-    GeoHit _e90 = hit;
-    const GeoHit geohit_2 = _e90;
+    GeoHit _e81 = hit;
+    const GeoHit geohit_2 = _e81;
     return geohit_2;
 }
 
 bool occluded(float3 a_9, float3 b_7)
 {
     float3 dv = (b_7 - a_9);
-    float len = length(dv);
-    if ((len <= 0.0)) {
+    float len_1 = length(dv);
+    if ((len_1 <= 0.0)) {
         return false;
     }
-    float eps = (0.0001 * len);
-    const GeoHit _e13 = trace(a_9, (dv / (len).xxx), eps, (len - eps), true);
-    return (_e13.tri != NO_LIGHT);
+    const float _e7 = shadow_margin(len_1);
+    const GeoHit _e12 = trace(a_9, (dv / (len_1).xxx), _e7, (len_1 - _e7), true);
+    return (_e12.tri != NO_LIGHT);
 }
 
 float mis_weight(float pdf_a_2, float pdf_b_2)
@@ -1377,11 +1600,11 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_weight(uint li, float3 x_10, float3 n_13)
+float light_weight(uint li, float3 x_14, float3 n_17)
 {
     GpuLightCone c_13 = ConstructGpuLightCone(asfloat(light_cones.Load3(li*48+0)), asfloat(light_cones.Load(li*48+12)), asfloat(light_cones.Load3(li*48+16)), asfloat(light_cones.Load(li*48+28)), asfloat(light_cones.Load(li*48+32)), asfloat(light_cones.Load(li*48+36)), asuint(light_cones.Load(li*48+40)), asuint(light_cones.Load(li*48+44)));
     float _e14 = asfloat(rt2_7.Load(li*4));
-    const float _e15 = cone_weight(c_13.center_, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_10, n_13);
+    const float _e15 = cone_weight(c_13.center_, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_14, n_17);
     return _e15;
 }
 
@@ -1398,29 +1621,29 @@ GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, f
     return ret;
 }
 
-float bvh_importance(uint i_3, float3 x_11, float3 n_14)
+float bvh_importance(uint i_3, float3 x_15, float3 n_18)
 {
     GpuLightBvhNode b_10 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_3*48+0)), asfloat(light_bvh.Load(i_3*48+12)), asfloat(light_bvh.Load3(i_3*48+16)), asfloat(light_bvh.Load(i_3*48+28)), asfloat(light_bvh.Load(i_3*48+32)), asfloat(light_bvh.Load(i_3*48+36)), asuint(light_bvh.Load(i_3*48+40)), asuint(light_bvh.Load(i_3*48+44)));
-    const float _e12 = light_importance(b_10.center_, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_11, n_14);
+    const float _e12 = light_importance(b_10.center_, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_15, n_18);
     return _e12;
 }
 
-float bvh_first(uint i_4, float3 x_12, float3 n_15)
+float bvh_first(uint i_4, float3 x_16, float3 n_19)
 {
-    bool local_14 = (bool)0;
+    bool local_19 = (bool)0;
 
     uint j = asuint(light_bvh.Load(40+i_4*48));
     if (!((j <= (i_4 + 1u)))) {
-        local_14 = (j >= ((NagaBufferLength(light_bvh) - 0) / 48));
+        local_19 = (j >= ((NagaBufferLength(light_bvh) - 0) / 48));
     } else {
-        local_14 = true;
+        local_19 = true;
     }
-    bool _e17 = local_14;
+    bool _e17 = local_19;
     if (_e17) {
         return -1.0;
     }
-    const float _e21 = bvh_importance((i_4 + 1u), x_12, n_15);
-    const float _e22 = bvh_importance(j, x_12, n_15);
+    const float _e21 = bvh_importance((i_4 + 1u), x_16, n_19);
+    const float _e22 = bvh_importance(j, x_16, n_19);
     const float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -1432,14 +1655,14 @@ BvhPick ConstructBvhPick(uint arg0, float arg1) {
     return ret;
 }
 
-BvhPick light_bvh_sample(float3 x_13, float3 n_16, float u_in)
+BvhPick light_bvh_sample(float3 x_17, float3 n_20, float u_in)
 {
-    float u_3 = (float)0;
+    float u_5 = (float)0;
     uint i_5 = 0u;
     float pmf = 1.0;
-    bool local_15 = (bool)0;
+    bool local_20 = (bool)0;
 
-    u_3 = u_in;
+    u_5 = u_in;
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
@@ -1449,29 +1672,29 @@ BvhPick light_bvh_sample(float3 x_13, float3 n_16, float u_in)
         if ((node_1.second == LIGHT_BVH_LEAF)) {
             uint _e15 = i_5;
             if (!((_e15 > 0u))) {
-                const float _e22 = bvh_importance(0u, x_13, n_16);
-                local_15 = (_e22 > 0.0);
+                const float _e22 = bvh_importance(0u, x_17, n_20);
+                local_20 = (_e22 > 0.0);
             } else {
-                local_15 = true;
+                local_20 = true;
             }
-            bool reaches = local_15;
+            bool reaches = local_20;
             float _e28 = pmf;
             const BvhPick bvhpick = ConstructBvhPick(node_1.light, (reaches ? _e28 : 0.0));
             return bvhpick;
         }
         uint _e32 = i_5;
-        const float _e33 = bvh_first(_e32, x_13, n_16);
+        const float _e33 = bvh_first(_e32, x_17, n_20);
         if ((_e33 < 0.0)) {
             const BvhPick bvhpick_1 = ConstructBvhPick(0u, 0.0);
             return bvhpick_1;
         }
-        float _e39 = u_3;
+        float _e39 = u_5;
         bool first_1 = (_e39 < _e33);
         float _e41 = pmf;
         pmf = (_e41 * (first_1 ? _e33 : (1.0 - _e33)));
-        float _e46 = u_3;
+        float _e46 = u_5;
         const float _e47 = bvh_remap_u(_e46, _e33, first_1);
-        u_3 = _e47;
+        u_5 = _e47;
         uint _e49 = i_5;
         i_5 = (first_1 ? (_e49 + 1u) : node_1.second);
     }
@@ -1479,12 +1702,12 @@ BvhPick light_bvh_sample(float3 x_13, float3 n_16, float u_in)
     return bvhpick_2;
 }
 
-float light_bvh_pmf(uint li_1, float3 x_14, float3 n_17)
+float light_bvh_pmf(uint li_1, float3 x_18, float3 n_21)
 {
     uint i_6 = 0u;
     float pmf_1 = 1.0;
-    bool local_16 = (bool)0;
-    bool local_17 = (bool)0;
+    bool local_21 = (bool)0;
+    bool local_22 = (bool)0;
 
     uint leaf = asuint(light_cones.Load(40+li_1*48));
     if ((leaf >= ((NagaBufferLength(light_bvh) - 0) / 48))) {
@@ -1499,24 +1722,24 @@ float light_bvh_pmf(uint li_1, float3 x_14, float3 n_17)
         if ((node_2.second == LIGHT_BVH_LEAF)) {
             uint _e22 = i_6;
             if (!((_e22 > 0u))) {
-                const float _e29 = bvh_importance(0u, x_14, n_17);
-                local_16 = (_e29 > 0.0);
+                const float _e29 = bvh_importance(0u, x_18, n_21);
+                local_21 = (_e29 > 0.0);
             } else {
-                local_16 = true;
+                local_21 = true;
             }
-            bool reaches_1 = local_16;
+            bool reaches_1 = local_21;
             float _e34 = pmf_1;
             uint _e35 = i_6;
             if ((_e35 == leaf)) {
-                local_17 = reaches_1;
+                local_22 = reaches_1;
             } else {
-                local_17 = false;
+                local_22 = false;
             }
-            bool _e40 = local_17;
+            bool _e40 = local_22;
             return (_e40 ? _e34 : 0.0);
         }
         uint _e43 = i_6;
-        const float _e44 = bvh_first(_e43, x_14, n_17);
+        const float _e44 = bvh_first(_e43, x_18, n_21);
         if ((_e44 < 0.0)) {
             return 0.0;
         }
@@ -1529,19 +1752,10 @@ float light_bvh_pmf(uint li_1, float3 x_14, float3 n_17)
     return 0.0;
 }
 
-float select_pdf(uint li_2, float3 x_15, float3 n_18, uint nee, bool in_range_1)
+float select_pdf(uint li_2, float3 x_19, float3 n_22, uint nee, bool in_range_2)
 {
-    bool local_18 = (bool)0;
-
-    if (in_range_1) {
-        local_18 = (nee > 0u);
-    } else {
-        local_18 = false;
-    }
-    bool _e12 = local_18;
-    uint others = (nee - (_e12 ? 1u : 0u));
-    const float _e18 = reservoir_weight((others + 1u), K);
-    return (1.0 / _e18);
+    const float _e6 = reservoir_select_pdf(nee, in_range_2, K);
+    return _e6;
 }
 
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
@@ -1557,23 +1771,18 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-float light_pdf(uint li_3, float3 x_16, float3 n_19, float3 y_2, uint nee_1, bool in_range_2)
+float light_pdf(uint li_3, float3 x_20, float3 n_23, float3 y_3, uint nee_1, bool in_range_3)
 {
     GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
-    float3 v_12 = (x_16 - y_2);
-    float d2_13 = dot(v_12, v_12);
+    float3 v_13 = (x_20 - y_3);
+    float d2_14 = dot(v_13, v_13);
     const float3 _e11 = light_normal(l_4);
-    float cos_y_1 = ((d2_13 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_13)).xxx)) : 0.0);
-    const float _e20 = select_pdf(li_3, x_16, n_19, nee_1, in_range_2);
+    float cos_y_1 = ((d2_14 > 0.0) ? dot(_e11, (v_13 / (sqrt(d2_14)).xxx)) : 0.0);
+    const float _e20 = select_pdf(li_3, x_20, n_23, nee_1, in_range_3);
     float _e23 = asfloat(rt2_7.Load(li_3*4));
     const float _e24 = light_area(l_4);
-    const float _e25 = light_strategy_pdf(_e20, _e23, d2_13, _e24, cos_y_1);
+    const float _e25 = light_strategy_pdf(_e20, _e23, d2_14, _e24, cos_y_1);
     return _e25;
-}
-
-bool finite3_(float3 v_4)
-{
-    return all((abs(v_4) <= (3.4028235e38).xxx));
 }
 
 float next_uniform(inout uint state)
@@ -1623,7 +1832,6 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint rng = (uint)0;
     bool local_1 = (bool)0;
     bool local_2 = (bool)0;
-    bool local_3 = (bool)0;
 
     uint i_7 = gid.x;
     uint _e4 = params.width;
@@ -1635,44 +1843,40 @@ void main(uint3 gid : SV_DispatchThreadID)
     if ((_e13 == 0u)) {
         uint _e18 = params.seed;
         uint _e21 = params.pass_index;
-        const uint _e24 = pcg_hash((_e21 + 2654435769u));
-        const uint _e26 = pcg_hash((i_7 ^ _e24));
-        const uint _e28 = pcg_hash((_e18 ^ _e26));
-        h = _e28;
-        const float _e30 = next_uniform(h);
-        float jx = (_e30 - 0.5);
-        const float _e33 = next_uniform(h);
-        float jy = (_e33 - 0.5);
-        uint _e38 = params.width;
-        float px_1 = ((float(naga_mod(i_7, _e38)) + 0.5) + jx);
-        uint _e46 = params.width;
-        float py_1 = ((float(naga_div(i_7, _e46)) + 0.5) + jy);
-        float3 _e55 = params.cam_pos;
-        st.origin = _e55;
-        float3 _e59 = params.cam_forward;
-        float3 _e62 = params.cam_right;
-        float3 _e65 = params.cam_up;
-        uint _e68 = params.width;
-        uint _e72 = params.height;
-        const float3 _e74 = camera_dir(_e59, _e62, _e65, px_1, py_1, float(_e68), float(_e72));
-        st.dir = _e74;
+        const uint _e22 = path_stream(_e18, i_7, _e21);
+        h = _e22;
+        uint _e26 = params.width;
+        const float _e28 = next_uniform(h);
+        const float _e29 = jittered_pixel(naga_mod(i_7, _e26), _e28);
+        uint _e32 = params.width;
+        const float _e34 = next_uniform(h);
+        const float _e35 = jittered_pixel(naga_div(i_7, _e32), _e34);
+        float3 _e39 = params.cam_pos;
+        st.origin = _e39;
+        float3 _e43 = params.cam_forward;
+        float3 _e46 = params.cam_right;
+        float3 _e49 = params.cam_up;
+        uint _e52 = params.width;
+        uint _e56 = params.height;
+        const float3 _e58 = camera_dir(_e43, _e46, _e49, _e29, _e35, float(_e52), float(_e56));
+        st.dir = _e58;
         st.alive = 1u;
-        uint _e78 = h;
-        st.rng = _e78;
+        uint _e62 = h;
+        st.rng = _e62;
         st.beta = (1.0).xxx;
         st.pdf_bsdf = 0.0;
-        float3 _e87 = params.cam_pos;
-        st.prev = _e87;
+        float3 _e71 = params.cam_pos;
+        st.prev = _e71;
     } else {
-        GpuPathState _e90 = ConstructGpuPathState(asfloat(paths.Load3(i_7*80+0)), asuint(paths.Load(i_7*80+12)), asfloat(paths.Load3(i_7*80+16)), asuint(paths.Load(i_7*80+28)), asfloat(paths.Load3(i_7*80+32)), asfloat(paths.Load(i_7*80+44)), asfloat(paths.Load3(i_7*80+48)), asuint(paths.Load(i_7*80+60)), asfloat(paths.Load3(i_7*80+64)), asuint(paths.Load(i_7*80+76)));
-        st = _e90;
+        GpuPathState _e74 = ConstructGpuPathState(asfloat(paths.Load3(i_7*80+0)), asuint(paths.Load(i_7*80+12)), asfloat(paths.Load3(i_7*80+16)), asuint(paths.Load(i_7*80+28)), asfloat(paths.Load3(i_7*80+32)), asfloat(paths.Load(i_7*80+44)), asfloat(paths.Load3(i_7*80+48)), asuint(paths.Load(i_7*80+60)), asfloat(paths.Load3(i_7*80+64)), asuint(paths.Load(i_7*80+76)));
+        st = _e74;
     }
     v.alive = 0u;
-    uint _e95 = st.alive;
-    if ((_e95 == 0u)) {
-        GpuPathVertex _e100 = v;
+    uint _e79 = st.alive;
+    if ((_e79 == 0u)) {
+        GpuPathVertex _e84 = v;
         {
-            GpuPathVertex _value3 = _e100;
+            GpuPathVertex _value3 = _e84;
             vertices_.Store3(i_7*64+0, asuint(_value3.position));
             vertices_.Store(i_7*64+12, asuint(_value3.alive));
             vertices_.Store3(i_7*64+16, asuint(_value3.normal));
@@ -1684,15 +1888,15 @@ void main(uint3 gid : SV_DispatchThreadID)
         }
         return;
     }
-    float3 _e102 = st.origin;
-    float3 _e104 = st.dir;
-    float _e107 = params.t_min;
-    const GeoHit _e110 = trace(_e102, _e104, _e107, 3.4028235e38, false);
-    if ((_e110.tri == NO_LIGHT)) {
+    float3 _e86 = st.origin;
+    float3 _e88 = st.dir;
+    float _e91 = params.t_min;
+    const GeoHit _e94 = trace(_e86, _e88, _e91, F32_MAX, false);
+    if ((_e94.tri == NO_LIGHT)) {
         st.alive = 0u;
-        GpuPathState _e118 = st;
+        GpuPathState _e102 = st;
         {
-            GpuPathState _value3 = _e118;
+            GpuPathState _value3 = _e102;
             paths.Store3(i_7*80+0, asuint(_value3.origin));
             paths.Store(i_7*80+12, asuint(_value3.alive));
             paths.Store3(i_7*80+16, asuint(_value3.dir));
@@ -1704,9 +1908,9 @@ void main(uint3 gid : SV_DispatchThreadID)
             paths.Store3(i_7*80+64, asuint(_value3.prev_normal));
             paths.Store(i_7*80+76, asuint(_value3.pad2_));
         }
-        GpuPathVertex _e121 = v;
+        GpuPathVertex _e105 = v;
         {
-            GpuPathVertex _value3 = _e121;
+            GpuPathVertex _value3 = _e105;
             vertices_.Store3(i_7*64+0, asuint(_value3.position));
             vertices_.Store(i_7*64+12, asuint(_value3.alive));
             vertices_.Store3(i_7*64+16, asuint(_value3.normal));
@@ -1718,63 +1922,64 @@ void main(uint3 gid : SV_DispatchThreadID)
         }
         return;
     }
-    GpuTriangle tri = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e110.tri*48+0)), asuint(geo_tris.Load(_e110.tri*48+12)), asfloat(geo_tris.Load3(_e110.tri*48+16)), asuint(geo_tris.Load(_e110.tri*48+28)), asfloat(geo_tris.Load3(_e110.tri*48+32)), asuint(geo_tris.Load(_e110.tri*48+44)));
-    float3 _e127 = st.origin;
-    float3 _e129 = st.dir;
-    float3 x_17 = (_e127 + (_e129 * _e110.t));
-    const float3 _e136 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
-    float3 _e138 = st.dir;
-    const float3 _e139 = face_against(_e136, _e138);
-    uint b_11 = (_e110.tri * 3u);
-    float4 _e145 = asfloat(geo_normals.Load4(b_11*16));
-    float4 _e151 = asfloat(geo_normals.Load4((b_11 + 1u)*16));
-    float4 _e157 = asfloat(geo_normals.Load4((b_11 + 2u)*16));
-    const float3 _e162 = barycentric(x_17, tri.v0_, tri.v1_, tri.v2_);
-    const float3 _e163 = shading_normal(_e145.xyz, _e151.xyz, _e157.xyz, _e162, _e139);
+    GpuTriangle tri = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e94.tri*48+0)), asuint(geo_tris.Load(_e94.tri*48+12)), asfloat(geo_tris.Load3(_e94.tri*48+16)), asuint(geo_tris.Load(_e94.tri*48+28)), asfloat(geo_tris.Load3(_e94.tri*48+32)), asuint(geo_tris.Load(_e94.tri*48+44)));
+    float3 _e111 = st.origin;
+    float3 _e113 = st.dir;
+    float3 x_21 = (_e111 + (_e113 * _e94.t));
+    const float3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
+    float3 _e122 = st.dir;
+    const float3 _e123 = face_against(_e120, _e122);
+    uint b_11 = (_e94.tri * 3u);
+    float4 _e129 = asfloat(geo_normals.Load4(b_11*16));
+    float4 _e135 = asfloat(geo_normals.Load4((b_11 + 1u)*16));
+    float4 _e141 = asfloat(geo_normals.Load4((b_11 + 2u)*16));
+    const float3 _e146 = barycentric(x_21, tri.v0_, tri.v1_, tri.v2_);
+    const float3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if ((tri.light != NO_LIGHT)) {
-        float3 _e170 = st.dir;
-        local = (dot(_e136, _e170) < 0.0);
+        float3 _e154 = st.dir;
+        const bool _e155 = sees_emission(_e120, _e154);
+        local = _e155;
     } else {
         local = false;
     }
-    bool _e175 = local;
-    if (_e175) {
-        float _e179 = st.pdf_bsdf;
-        if ((_e179 > 0.0)) {
-            uint _e186 = asuint(light_leaf.Load(tri.light*4));
-            BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e186*32+0)), asfloat(bsh_nodes.Load(_e186*32+12)), asuint(bsh_nodes.Load(_e186*32+16)), asuint(bsh_nodes.Load(_e186*32+20)), asuint(bsh_nodes.Load(_e186*32+24)), asuint(bsh_nodes.Load(_e186*32+28)));
-            float3 _e192 = st.prev;
-            const bool _e193 = sphere_contains_point(leaf_1.center_, leaf_1.radius, _e192);
-            float _e195 = st.pdf_bsdf;
-            float3 _e198 = st.prev;
-            float3 _e200 = st.prev_normal;
-            uint _e203 = asuint(candidates.Load(i_7*4));
-            const float _e204 = light_pdf(tri.light, _e198, _e200, x_17, _e203, _e193);
-            const float _e205 = mis_weight(_e195, _e204);
-            w = _e205;
+    bool _e157 = local;
+    if (_e157) {
+        float _e161 = st.pdf_bsdf;
+        if ((_e161 > 0.0)) {
+            uint _e168 = asuint(light_leaf.Load(tri.light*4));
+            BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e168*32+0)), asfloat(bsh_nodes.Load(_e168*32+12)), asuint(bsh_nodes.Load(_e168*32+16)), asuint(bsh_nodes.Load(_e168*32+20)), asuint(bsh_nodes.Load(_e168*32+24)), asuint(bsh_nodes.Load(_e168*32+28)));
+            float3 _e174 = st.prev;
+            const bool _e175 = sphere_contains_point(leaf_1.center_, leaf_1.radius, _e174);
+            float _e177 = st.pdf_bsdf;
+            float3 _e180 = st.prev;
+            float3 _e182 = st.prev_normal;
+            uint _e185 = asuint(candidates.Load(i_7*4));
+            const float _e186 = light_pdf(tri.light, _e180, _e182, x_21, _e185, _e175);
+            const float _e187 = mis_weight(_e177, _e186);
+            w = _e187;
         }
-        float3 _e207 = st.beta;
-        float3 _e212 = asfloat(lights.Load3(48+tri.light*64));
-        float _e214 = w;
-        float3 add = ((_e207 * _e212) * _e214);
-        const bool _e216 = finite3_(add);
-        if (_e216) {
-            float4 _e219 = asfloat(radiance.Load4(i_7*16));
-            radiance.Store4(i_7*16, asuint((_e219 + float4(add, 0.0))));
+        float3 _e189 = st.beta;
+        float3 _e194 = asfloat(lights.Load3(48+tri.light*64));
+        float _e196 = w;
+        float3 add = ((_e189 * _e194) * _e196);
+        const bool _e198 = finite3_(add);
+        if (_e198) {
+            float4 _e201 = asfloat(radiance.Load4(i_7*16));
+            radiance.Store4(i_7*16, asuint((_e201 + float4(add, 0.0))));
         }
     }
-    float4 _e226 = asfloat(albedo_1.Load4(tri.material*16));
-    float3 rho_1 = _e226.xyz;
-    v.position = x_17;
-    v.normal = _e163;
-    v.gnormal = _e139;
-    float3 _e233 = st.beta;
-    const float3 _e234 = lambert_brdf(rho_1);
-    v.weight = (_e233 * _e234);
+    float4 _e208 = asfloat(albedo_1.Load4(tri.material*16));
+    float3 rho_1 = _e208.xyz;
+    v.position = x_21;
+    v.normal = _e147;
+    v.gnormal = _e123;
+    float3 _e215 = st.beta;
+    const float3 _e216 = lambert_brdf(rho_1);
+    v.weight = (_e215 * _e216);
     v.alive = 1u;
-    GpuPathVertex _e240 = v;
+    GpuPathVertex _e222 = v;
     {
-        GpuPathVertex _value2 = _e240;
+        GpuPathVertex _value2 = _e222;
         vertices_.Store3(i_7*64+0, asuint(_value2.position));
         vertices_.Store(i_7*64+12, asuint(_value2.alive));
         vertices_.Store3(i_7*64+16, asuint(_value2.normal));
@@ -1784,62 +1989,58 @@ void main(uint3 gid : SV_DispatchThreadID)
         vertices_.Store3(i_7*64+48, asuint(_value2.gnormal));
         vertices_.Store(i_7*64+60, asuint(_value2.pad2_));
     }
-    uint _e242 = st.rng;
-    rng = _e242;
-    const float _e244 = next_uniform(rng);
-    const float _e245 = next_uniform(rng);
-    const float3 _e246 = cosine_direction(_e163, _e244, _e245);
-    float cos_o_2 = dot(_e246, _e163);
-    float3 _e249 = st.beta;
-    st.beta = (_e249 * rho_1);
-    st.prev = x_17;
-    st.prev_normal = _e163;
-    const float _e254 = cosine_pdf(cos_o_2);
-    st.pdf_bsdf = _e254;
-    float _e258 = params.eps;
-    st.origin = (x_17 + (_e139 * _e258));
-    st.dir = _e246;
-    if (!((cos_o_2 <= 0.0))) {
-        local_1 = (dot(_e246, _e139) <= 0.0);
+    uint _e224 = st.rng;
+    rng = _e224;
+    const float _e226 = next_uniform(rng);
+    const float _e227 = next_uniform(rng);
+    const float3 _e228 = cosine_direction(_e147, _e226, _e227);
+    float cos_o_2 = dot(_e228, _e147);
+    float3 _e231 = st.beta;
+    st.beta = (_e231 * rho_1);
+    st.prev = x_21;
+    st.prev_normal = _e147;
+    const float _e236 = cosine_pdf(cos_o_2);
+    st.pdf_bsdf = _e236;
+    float _e240 = params.eps;
+    st.origin = (x_21 + (_e123 * _e240));
+    st.dir = _e228;
+    const bool _e244 = continues_path(_e228, _e147, _e123);
+    if (!(!(_e244))) {
+        uint _e251 = params.depth;
+        uint _e256 = params.max_depth;
+        local_1 = ((_e251 + 1u) >= _e256);
     } else {
         local_1 = true;
     }
-    bool _e271 = local_1;
-    if (!(_e271)) {
-        uint _e277 = params.depth;
-        uint _e282 = params.max_depth;
-        local_2 = ((_e277 + 1u) >= _e282);
-    } else {
-        local_2 = true;
-    }
-    bool _e285 = local_2;
-    if (_e285) {
+    bool _e259 = local_1;
+    if (_e259) {
         st.alive = 0u;
     }
-    uint _e290 = params.depth;
-    if ((_e290 >= 2u)) {
-        uint _e296 = st.alive;
-        local_3 = (_e296 == 1u);
+    uint _e264 = params.depth;
+    const bool _e265 = plays_roulette(_e264);
+    if (_e265) {
+        uint _e269 = st.alive;
+        local_2 = (_e269 == 1u);
     } else {
-        local_3 = false;
+        local_2 = false;
     }
-    bool _e300 = local_3;
-    if (_e300) {
-        float3 _e302 = st.beta;
-        const float _e303 = path_survival(_e302);
-        const float _e304 = next_uniform(rng);
-        if ((_e304 >= _e303)) {
+    bool _e273 = local_2;
+    if (_e273) {
+        float3 _e275 = st.beta;
+        const float _e276 = path_survival(_e275);
+        const float _e277 = next_uniform(rng);
+        if ((_e277 >= _e276)) {
             st.alive = 0u;
         } else {
-            float3 _e309 = st.beta;
-            st.beta = (_e309 / (_e303).xxx);
+            float3 _e282 = st.beta;
+            st.beta = (_e282 / (_e276).xxx);
         }
     }
-    uint _e313 = rng;
-    st.rng = _e313;
-    GpuPathState _e316 = st;
+    uint _e286 = rng;
+    st.rng = _e286;
+    GpuPathState _e289 = st;
     {
-        GpuPathState _value2 = _e316;
+        GpuPathState _value2 = _e289;
         paths.Store3(i_7*80+0, asuint(_value2.origin));
         paths.Store(i_7*80+12, asuint(_value2.alive));
         paths.Store3(i_7*80+16, asuint(_value2.dir));

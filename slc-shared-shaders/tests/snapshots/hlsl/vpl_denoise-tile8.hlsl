@@ -218,6 +218,7 @@ static const uint MAP_CAMERA = 0u;
 static const uint MAP_PERSPECTIVE = 1u;
 static const uint MAP_ORTHOGRAPHIC = 2u;
 static const float XI_STEP = 5.9604645e-8;
+static const uint PICK_STREAM = 2654435769u;
 static const float TWO_PI = 6.2831855;
 static const float CULL_RADIUS_SCALE = 1.000001;
 static const float SPHERE_PAD = 4.7683716e-7;
@@ -226,11 +227,15 @@ static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
+static const uint RESERVOIR_FULL = 4294967295u;
 static const uint LIGHT_BVH_LEAF = 4294967295u;
 static const float ONE_MINUS_EPSILON = 0.99999994;
+static const float F32_MAX = 3.4028235e38;
+static const float DEPTH_NONE = 1e30;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
 static const uint NEAR_BLOCK = 64u;
+static const uint ROULETTE_DEPTH = 2u;
 static const uint PERIOD = 8u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
@@ -316,6 +321,27 @@ float xi_for(uint seed, uint frame, uint light)
     return _e9;
 }
 
+uint point_stream(uint seed_1, uint point_, uint frame_1)
+{
+    const uint _e3 = pcg_hash(frame_1);
+    const uint _e5 = pcg_hash((point_ ^ _e3));
+    const uint _e7 = pcg_hash((seed_1 ^ _e5));
+    return _e7;
+}
+
+uint pick_stream(uint stream)
+{
+    const uint _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+uint path_stream(uint seed_2, uint pixel, uint pass_index)
+{
+    const uint _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
+    const uint _e5 = point_stream(seed_2, pixel, _e4);
+    return _e5;
+}
+
 float rr_probability(float rt2_, float d2_)
 {
     if ((d2_ <= rt2_)) {
@@ -366,21 +392,21 @@ float cull_radius(float r2_1)
 float windowed_falloff(float d2_3, float range2_)
 {
     float q_2 = (d2_3 / range2_);
-    float w_8 = saturate((1.0 - (q_2 * q_2)));
-    return ((w_8 * w_8) / max(d2_3, 0.0001));
+    float w_9 = saturate((1.0 - (q_2 * q_2)));
+    return ((w_9 * w_9) / max(d2_3, 0.0001));
 }
 
 bool sphere_contains_point(float3 c, float r, float3 x_3)
 {
-    float3 v_3 = (x_3 - c);
-    return (dot(v_3, v_3) <= (r * r));
+    float3 v_4 = (x_3 - c);
+    return (dot(v_4, v_4) <= (r * r));
 }
 
 bool sphere_overlaps_sphere(float3 c1_, float r1_, float3 c2_, float r2_2)
 {
-    float3 v_4 = (c2_ - c1_);
+    float3 v_5 = (c2_ - c1_);
     float r_3 = (r1_ + r2_2);
-    return (dot(v_4, v_4) <= (r_3 * r_3));
+    return (dot(v_5, v_5) <= (r_3 * r_3));
 }
 
 float sphere_pad(float r_1, float3 c_1)
@@ -392,18 +418,18 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 {
     bool local_1 = (bool)0;
 
-    float3 v_5 = (c2_1 - c1_1);
-    float d_2 = sqrt(dot(v_5, v_5));
+    float3 v_6 = (c2_1 - c1_1);
+    float d_4 = sqrt(dot(v_6, v_6));
     const float _e8 = sphere_pad(r1_1, c1_1);
-    if ((r1_1 >= ((d_2 + r2_3) + _e8))) {
+    if ((r1_1 >= ((d_4 + r2_3) + _e8))) {
         return float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     const float _e16 = sphere_pad(r2_3, c2_1);
-    if ((r2_3 >= ((d_2 + r1_1) + _e16))) {
+    if ((r2_3 >= ((d_4 + r1_1) + _e16))) {
         return float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_2 >= SPHERE_HUGE))) {
-        local_1 = ((0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if (!((d_4 >= SPHERE_HUGE))) {
+        local_1 = ((0.5 * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local_1 = true;
     }
@@ -411,18 +437,18 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
     if (_e35) {
         return float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if ((abs((r1_1 - r2_3)) >= d_2)) {
+    if ((abs((r1_1 - r2_3)) >= d_4)) {
         if ((r1_1 >= r2_3)) {
-            float rn = max(r1_1, (d_2 + r2_3));
+            float rn = max(r1_1, (d_4 + r2_3));
             const float _e50 = sphere_pad(rn, c1_1);
             return float4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        float rm = max(r2_3, (d_2 + r1_1));
+        float rm = max(r2_3, (d_4 + r1_1));
         const float _e58 = sphere_pad(rm, c2_1);
         return float4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    float r0_ = (0.5 * ((d_2 + r1_1) + r2_3));
-    float3 c_9 = (c1_1 + (v_5 * ((r0_ - r1_1) / d_2)));
+    float r0_ = (0.5 * ((d_4 + r1_1) + r2_3));
+    float3 c_9 = (c1_1 + (v_6 * ((r0_ - r1_1) / d_4)));
     float3 e1_ = (c_9 - c1_1);
     float3 e2_ = (c_9 - c2_1);
     float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
@@ -433,8 +459,8 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 bool sphere_overlaps_aabb(float3 c_2, float r_2, float3 bmin, float3 bmax)
 {
     float3 q_3 = clamp(c_2, bmin, bmax);
-    float3 v_6 = (q_3 - c_2);
-    return (dot(v_6, v_6) <= (r_2 * r_2));
+    float3 v_7 = (q_3 - c_2);
+    return (dot(v_7, v_7) <= (r_2 * r_2));
 }
 
 float vpl_rt2_(float3 flux, float exposure_1, float error_bound_1, uint mode_1)
@@ -461,9 +487,40 @@ float connection_factor(float cos_x, float d2_5, float rt2_3, float w)
     return (((cos_x * _e4) * _e6) * w);
 }
 
-float vpl_lobe(float3 n, float3 w_1)
+float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
 {
-    return (max(dot(n, w_1), 0.0) * INV_PI);
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+
+    float3 v_8 = (x_4 - y);
+    float d2_11 = dot(v_8, v_8);
+    const bool _e7 = slc_keep(r2_5, d2_11);
+    if (!(!(_e7))) {
+        local_2 = !((d2_11 > 0.0));
+    } else {
+        local_2 = true;
+    }
+    bool _e16 = local_2;
+    if (_e16) {
+        return 0.0;
+    }
+    float3 w_10 = (v_8 / (sqrt(d2_11)).xxx);
+    float cos_x_1 = -(dot(n, w_10));
+    if (!((cos_x_1 <= 0.0))) {
+        local_3 = (dot(ng, w_10) >= 0.0);
+    } else {
+        local_3 = true;
+    }
+    bool _e32 = local_3;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float vpl_lobe(float3 n_1, float3 w_1)
+{
+    return (max(dot(n_1, w_1), 0.0) * INV_PI);
 }
 
 float vpl_transfer(float3 n_l, float3 n_x, float3 v_1, float min_d2_)
@@ -481,9 +538,9 @@ float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
     return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
 }
 
-float triangle_lobe(float3 n_1, float area, float3 w_2)
+float triangle_lobe(float3 n_2, float area, float3 w_2)
 {
-    return (area * max(dot(n_1, w_2), 0.0));
+    return (area * max(dot(n_2, w_2), 0.0));
 }
 
 float3 triangle_sample(float3 a_2, float3 b_2, float3 c_3, float u1_, float u2_)
@@ -503,12 +560,12 @@ float area_to_solid_angle_pdf(float pdf_area, float d2_6, float cos_light)
     return ((pdf_area * d2_6) / c_10);
 }
 
-float atan_portable(float x_4)
+float atan_portable(float x_5)
 {
     float base = 0.0;
     float t = (float)0;
 
-    float a_9 = abs(x_4);
+    float a_9 = abs(x_5);
     t = a_9;
     if ((a_9 > 2.4142137)) {
         base = 1.5707964;
@@ -521,30 +578,30 @@ float atan_portable(float x_4)
     }
     float _e18 = t;
     float _e19 = t;
-    float z_2 = (_e18 * _e19);
+    float z_4 = (_e18 * _e19);
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_5 = (_e21 + (((((((((0.080537446 * z_2) - 0.13877685) * z_2) + 0.19977711) * z_2) - 0.3333295) * z_2) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_5) : r_5);
+    float r_5 = (_e21 + (((((((((0.080537446 * z_4) - 0.13877685) * z_4) + 0.19977711) * z_4) - 0.3333295) * z_4) * _e33) + _e35));
+    return ((x_5 < 0.0) ? -(r_5) : r_5);
 }
 
-float atan2_portable(float y, float x_5)
+float atan2_portable(float y_1, float x_6)
 {
-    if ((x_5 == 0.0)) {
-        if ((y > 0.0)) {
+    if ((x_6 == 0.0)) {
+        if ((y_1 > 0.0)) {
             return 1.5707964;
         }
-        if ((y < 0.0)) {
+        if ((y_1 < 0.0)) {
             return -1.5707964;
         }
         return 0.0;
     }
-    const float _e12 = atan_portable((y / x_5));
-    if ((x_5 > 0.0)) {
+    const float _e12 = atan_portable((y_1 / x_6));
+    if ((x_6 > 0.0)) {
         return _e12;
     }
-    if ((y >= 0.0)) {
+    if ((y_1 >= 0.0)) {
         return (_e12 + 3.1415927);
     }
     return (_e12 - 3.1415927);
@@ -600,15 +657,15 @@ float ies_fold_c(float c_4, float h_first, float h_last)
     return _e52;
 }
 
-uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
+uint ies_segment(uint tab_1, uint start, uint n_3, float x_7)
 {
     uint lo = 0u;
     uint hi = (uint)0;
 
-    if ((n_2 < 2u)) {
+    if ((n_3 < 2u)) {
         return 0u;
     }
-    hi = (n_2 - 1u);
+    hi = (n_3 - 1u);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
@@ -624,7 +681,7 @@ uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
             uint _e18 = hi;
             uint mid = ((_e17 + _e18) >> 1u);
             const float _e23 = at(tab_1, (start + mid));
-            if ((_e23 <= x_6)) {
+            if ((_e23 <= x_7)) {
                 lo = mid;
             } else {
                 hi = mid;
@@ -635,17 +692,17 @@ uint ies_segment(uint tab_1, uint start, uint n_2, float x_6)
     return _e25;
 }
 
-float ies_lerp_t(float a0_, float a1_, float x_7)
+float ies_lerp_t(float a0_, float a1_, float x_8)
 {
     if ((a1_ <= a0_)) {
         return 0.0;
     }
-    return saturate(((x_7 - a0_) / (a1_ - a0_)));
+    return saturate(((x_8 - a0_) / (a1_ - a0_)));
 }
 
 float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
 {
-    bool local_2 = (bool)0;
+    bool local_4 = (bool)0;
 
     const float _e4 = at(tab_2, base_1);
     const uint _e5 = to_u32_(_e4);
@@ -657,11 +714,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
     const float _e14 = at(tab_2, v0_);
     if (!((gamma < _e14))) {
         const float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_2 = (gamma > _e22);
+        local_4 = (gamma > _e22);
     } else {
-        local_2 = true;
+        local_4 = true;
     }
-    bool _e25 = local_2;
+    bool _e25 = local_4;
     if (_e25) {
         return 0.0;
     }
@@ -698,6 +755,13 @@ float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
     return _e20;
 }
 
+float ies_light_candela(uint tab_4, uint base_3, float3 nadir, float3 reference, float3 w_3)
+{
+    float3 side = cross(reference, nadir);
+    const float _e9 = ies_candela_dir(tab_4, base_3, dot(w_3, nadir), dot(w_3, reference), dot(w_3, side));
+    return _e9;
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3)
 {
     uint a_lo = (a_4 & 65535u);
@@ -712,45 +776,77 @@ uint mul_hi_u32_(uint a_4, uint b_3)
     return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u));
 }
 
-uint uniform_index(uint n_3, uint hi_1, uint lo_1)
+uint uniform_index(uint n_4, uint hi_1, uint lo_1)
 {
-    const uint _e3 = mul_lo_u32_(hi_1, n_3);
-    const uint _e4 = mul_hi_u32_(hi_1, n_3);
-    const uint _e5 = mul_hi_u32_(lo_1, n_3);
+    const uint _e3 = mul_lo_u32_(hi_1, n_4);
+    const uint _e4 = mul_hi_u32_(hi_1, n_4);
+    const uint _e5 = mul_hi_u32_(lo_1, n_4);
     if ((_e3 > (4294967295u - _e5))) {
         return (_e4 + 1u);
     }
     return _e4;
 }
 
-uint reservoir_slot(uint n_4, uint k, uint hi_2, uint lo_2)
+uint reservoir_slot(uint n_5, uint k, uint hi_2, uint lo_2)
 {
-    if ((n_4 <= k)) {
-        return (n_4 - 1u);
+    if ((n_5 <= k)) {
+        return (n_5 - 1u);
     }
-    const uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    const uint _e7 = uniform_index(n_5, hi_2, lo_2);
     if ((_e7 < k)) {
         return _e7;
     }
     return k;
 }
 
-float reservoir_weight(uint n_5, uint k_1)
+bool reservoir_takes(uint n_6)
 {
-    const float _e2 = to_f32_(n_5);
+    return (n_6 < RESERVOIR_FULL);
+}
+
+float reservoir_weight(uint n_7, uint k_1)
+{
+    const float _e2 = to_f32_(n_7);
     const float _e3 = to_f32_(k_1);
     return max((_e2 / _e3), 1.0);
 }
 
-bool weighted_replace(float w_3, float w_sum, float u_1)
+bool weighted_replace(float w_4, float w_sum, float u_1)
 {
-    return ((u_1 * w_sum) < w_3);
+    return ((u_1 * w_sum) < w_4);
 }
 
-float weighted_pick_weight(float w_sum_1, float w_4, uint k_2)
+float weighted_pick_weight(float w_sum_1, float w_5, uint k_2)
 {
     const float _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_4));
+    return (w_sum_1 / (_e3 * w_5));
+}
+
+float reservoir_select_pdf(uint seen, bool in_range, uint k_3)
+{
+    uint others = (uint)0;
+    bool local_5 = (bool)0;
+
+    others = seen;
+    if (in_range) {
+        local_5 = (seen > 0u);
+    } else {
+        local_5 = false;
+    }
+    bool _e9 = local_5;
+    if (_e9) {
+        others = (seen - 1u);
+    }
+    uint _e12 = others;
+    const float _e15 = reservoir_weight((_e12 + 1u), k_3);
+    return (1.0 / _e15);
+}
+
+uint uniform_light(float u_2, uint n_8)
+{
+    const float _e2 = to_f32_(n_8);
+    const uint _e4 = to_u32_((u_2 * _e2));
+    return min(_e4, (n_8 - 1u));
 }
 
 float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
@@ -769,24 +865,24 @@ float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1
     return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
 }
 
-float safe_sqrt(float x_8)
+float safe_sqrt(float x_9)
 {
-    return sqrt(max(x_8, 0.0));
+    return sqrt(max(x_9, 0.0));
 }
 
-float light_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p, float3 n_6)
+float light_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p, float3 n_9)
 {
     float imp = (float)0;
 
-    float3 v_7 = (p - center_);
-    float dist2_ = dot(v_7, v_7);
-    float r2_5 = (radius * radius);
-    float d2_11 = max(max(dist2_, r2_5), MIN_D2_);
-    float3 wi = ((dist2_ > 0.0) ? (v_7 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
+    float3 v_9 = (p - center_);
+    float dist2_ = dot(v_9, v_9);
+    float r2_6 = (radius * radius);
+    float d2_12 = max(max(dist2_, r2_6), MIN_D2_);
+    float3 wi = ((dist2_ > 0.0) ? (v_9 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e32 = safe_sqrt((1.0 - (r2_5 / dist2_)));
-    float cos_b_2 = ((dist2_ <= r2_5) ? -1.0 : _e32);
+    const float _e32 = safe_sqrt((1.0 - (r2_6 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_6) ? -1.0 : _e32);
     const float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
     const float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
     const float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -795,9 +891,9 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_11);
-    if ((dot(n_6, n_6) > 0.0)) {
-        float cos_i = -(dot(wi, n_6));
+    imp = ((phi * _e46) / d2_12);
+    if ((dot(n_9, n_9) > 0.0)) {
+        float cos_i = -(dot(wi, n_9));
         const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
         float _e61 = imp;
         const float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
@@ -813,22 +909,22 @@ float candidate_weight(float importance, float rt2_4, float d2_7)
     return (importance * _e3);
 }
 
-float cone_weight(float3 center_1, float radius_1, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, float3 p_1, float3 n_7)
+float cone_weight(float3 center_1, float radius_1, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, float3 p_1, float3 n_10)
 {
-    float3 v_8 = (p_1 - center_1);
-    const float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_7);
-    const float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_8, v_8));
+    float3 v_10 = (p_1 - center_1);
+    const float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
+    const float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_10, v_10));
     return _e14;
 }
 
-float weighted_select_pdf(float w_5, float w_sum_2, bool in_range, uint k_3)
+float weighted_select_pdf(float w_6, float w_sum_2, bool in_range_1, uint k_4)
 {
-    if ((w_5 <= 0.0)) {
+    if ((w_6 <= 0.0)) {
         return 0.0;
     }
-    float total = (in_range ? w_sum_2 : (w_sum_2 + w_5));
-    const float _e9 = to_f32_(k_3);
-    return ((_e9 * w_5) / total);
+    float total = (in_range_1 ? w_sum_2 : (w_sum_2 + w_6));
+    const float _e9 = to_f32_(k_4);
+    return ((_e9 * w_6) / total);
 }
 
 float bvh_first_prob(float c0_, float c1_2)
@@ -840,12 +936,40 @@ float bvh_first_prob(float c0_, float c1_2)
     return -1.0;
 }
 
-float bvh_remap_u(float u_2, float p0_, bool first)
+float bvh_remap_u(float u_3, float p0_, bool first)
 {
     if (first) {
-        return min((u_2 / p0_), ONE_MINUS_EPSILON);
+        return min((u_3 / p0_), ONE_MINUS_EPSILON);
     }
-    return clamp(((u_2 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+    return clamp(((u_3 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
+float surface_offset(float diag)
+{
+    return (1e-5 * diag);
+}
+
+float ray_t_min(float diag_1)
+{
+    return (1e-6 * diag_1);
+}
+
+float shadow_margin(float len)
+{
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_10)
+{
+    return (1.0 / ((abs(x_10) < 1e-30) ? 1e-30 : x_10));
+}
+
+float3 ray_inverse3_(float3 d)
+{
+    const float _e2 = ray_inverse(d.x);
+    const float _e4 = ray_inverse(d.y);
+    const float _e6 = ray_inverse(d.z);
+    return float3(_e2, _e4, _e6);
 }
 
 float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
@@ -864,25 +988,25 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 
 float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
 {
-    bool local_3 = (bool)0;
+    bool local_6 = (bool)0;
 
-    float3 n_14 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_14, n_14);
+    float3 n_18 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_18, n_18);
     if (!(!((l2_ > 0.0)))) {
-        local_3 = !((l2_ < 3e38));
+        local_6 = !((l2_ < 3e38));
     } else {
-        local_3 = true;
+        local_6 = true;
     }
-    bool _e17 = local_3;
+    bool _e17 = local_6;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_14 / (sqrt(l2_)).xxx);
+    return (n_18 / (sqrt(l2_)).xxx);
 }
 
-float3 face_against(float3 n_8, float3 dir)
+float3 face_against(float3 n_11, float3 dir)
 {
-    return ((dot(n_8, dir) > 0.0) ? -(n_8) : n_8);
+    return ((dot(n_11, dir) > 0.0) ? -(n_11) : n_11);
 }
 
 float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
@@ -902,68 +1026,68 @@ float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
     return float3(((1.0 - w1_) - w2_), w1_, w2_);
 }
 
-float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_6, float3 facing)
+float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_7, float3 facing)
 {
-    bool local_4 = (bool)0;
+    bool local_7 = (bool)0;
 
-    float3 s_2 = (((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z));
+    float3 s_2 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
     float l2_1 = dot(s_2, s_2);
     if (!(!((l2_1 > 1e-12)))) {
-        local_4 = !((l2_1 < 3e38));
+        local_7 = !((l2_1 < 3e38));
     } else {
-        local_4 = true;
+        local_7 = true;
     }
-    bool _e24 = local_4;
+    bool _e24 = local_7;
     if (_e24) {
         return facing;
     }
-    float3 n_15 = (s_2 / (sqrt(l2_1)).xxx);
-    return ((dot(n_15, facing) < 0.0) ? -(n_15) : n_15);
+    float3 n_19 = (s_2 / (sqrt(l2_1)).xxx);
+    return ((dot(n_19, facing) < 0.0) ? -(n_19) : n_19);
 }
 
-float ray_triangle(float3 o_1, float3 d, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_1, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
 {
-    bool local_5 = (bool)0;
-    bool local_6 = (bool)0;
-    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
+    bool local_10 = (bool)0;
 
     float3 e1_2 = (b_6 - a_7);
     float3 e2_2 = (c_8 - a_7);
-    float3 p_3 = cross(d, e2_2);
+    float3 p_3 = cross(d_1, e2_2);
     float det = dot(e1_2, p_3);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
     float3 s_3 = (o_1 - a_7);
-    float u_3 = (dot(s_3, p_3) * inv_1);
-    if (!((u_3 < 0.0))) {
-        local_5 = (u_3 > 1.0);
+    float u_5 = (dot(s_3, p_3) * inv_1);
+    if (!((u_5 < 0.0))) {
+        local_8 = (u_5 > 1.0);
     } else {
-        local_5 = true;
+        local_8 = true;
     }
-    bool _e28 = local_5;
+    bool _e28 = local_8;
     if (_e28) {
         return -1.0;
     }
     float3 q_5 = cross(s_3, e1_2);
-    float v_9 = (dot(d, q_5) * inv_1);
-    if (!((v_9 < 0.0))) {
-        local_6 = ((u_3 + v_9) > 1.0);
+    float v_11 = (dot(d_1, q_5) * inv_1);
+    if (!((v_11 < 0.0))) {
+        local_9 = ((u_5 + v_11) > 1.0);
     } else {
-        local_6 = true;
+        local_9 = true;
     }
-    bool _e42 = local_6;
+    bool _e42 = local_9;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_2, q_5) * inv_1);
     if ((t_3 > t_min)) {
-        local_7 = (t_3 < t_max_1);
+        local_10 = (t_3 < t_max_1);
     } else {
-        local_7 = false;
+        local_10 = false;
     }
-    bool _e51 = local_7;
+    bool _e51 = local_10;
     if (_e51) {
         return t_3;
     }
@@ -991,21 +1115,21 @@ float mis_power(float pdf_a_1, float pdf_b_1)
 
 float light_strategy_pdf(float select_, float rt2_6, float d2_8, float area_1, float cos_y)
 {
-    bool local_8 = (bool)0;
-    bool local_9 = (bool)0;
+    bool local_11 = (bool)0;
+    bool local_12 = (bool)0;
 
     if (!((d2_8 <= 0.0))) {
-        local_8 = (area_1 <= 0.0);
+        local_11 = (area_1 <= 0.0);
     } else {
-        local_8 = true;
+        local_11 = true;
     }
-    bool _e13 = local_8;
+    bool _e13 = local_11;
     if (!(_e13)) {
-        local_9 = (cos_y <= 0.0);
+        local_12 = (cos_y <= 0.0);
     } else {
-        local_9 = true;
+        local_12 = true;
     }
-    bool _e20 = local_9;
+    bool _e20 = local_12;
     if (_e20) {
         return 0.0;
     }
@@ -1024,26 +1148,64 @@ float cosine_pdf(float cos_theta_1)
     return (max(cos_theta_1, 0.0) * INV_PI);
 }
 
-float3 cosine_direction(float3 n_9, float u1_1, float u2_1)
+float3 cosine_direction(float3 n_12, float u1_1, float u2_1)
 {
-    float s_6 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_11 = (-1.0 / (s_6 + n_9.z));
-    float b_8 = ((n_9.x * n_9.y) * a_11);
-    float3 t_4 = float3((1.0 + (((s_6 * n_9.x) * n_9.x) * a_11)), (s_6 * b_8), (-(s_6) * n_9.x));
-    float3 bt = float3(b_8, (s_6 + ((n_9.y * n_9.y) * a_11)), -(n_9.y));
+    float s_6 = ((n_12.z >= 0.0) ? 1.0 : -1.0);
+    float a_11 = (-1.0 / (s_6 + n_12.z));
+    float b_8 = ((n_12.x * n_12.y) * a_11);
+    float3 t_4 = float3((1.0 + (((s_6 * n_12.x) * n_12.x) * a_11)), (s_6 * b_8), (-(s_6) * n_12.x));
+    float3 bt = float3(b_8, (s_6 + ((n_12.y * n_12.y) * a_11)), -(n_12.y));
     float r_6 = sqrt(u1_1);
     float phi_2 = (6.2831855 * u2_1);
-    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_9 * sqrt(max((1.0 - u1_1), 0.0)))));
+    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_12 * sqrt(max((1.0 - u1_1), 0.0)))));
 }
 
-float bilateral_weight(float3 n_10, float3 nj, float z, float zj, float inv_sz)
+float inv_sigma_z(float z)
 {
-    float dn = max(dot(n_10, nj), 0.0);
+    return (1.0 / (DEPTH_SIGMA * z));
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+uint window_start(uint x_11, uint size)
+{
+    uint half_ = naga_div(size, 2u);
+    return (max(x_11, half_) - half_);
+}
+
+uint window_end(uint x_12, uint size_1, uint extent_1)
+{
+    return min(((x_12 + size_1) - naga_div(size_1, 2u)), extent_1);
+}
+
+uint wide_window(uint period)
+{
+    return (2u * period);
+}
+
+bool misses_subset(uint covered, uint period_1)
+{
+    return (covered < (period_1 * period_1));
+}
+
+float3 filtered_irradiance(float3 e, float3 sum, float weight)
+{
+    if ((weight > 0.0)) {
+        return (sum / (weight).xxx);
+    }
+    return e;
+}
+
+float bilateral_weight(float3 n_13, float3 nj, float z_1, float zj, float inv_sz)
+{
+    float dn = max(dot(n_13, nj), 0.0);
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
-    float d_3 = ((zj - z) * inv_sz);
-    float t_5 = max((1.0 - (d_3 * d_3)), 0.0);
+    float d_5 = ((zj - z_1) * inv_sz);
+    float t_5 = max((1.0 - (d_5 * d_5)), 0.0);
     return (((dn8_ * dn8_) * t_5) * t_5);
 }
 
@@ -1051,42 +1213,44 @@ uint naga_mod(uint lhs, uint rhs) {
     return lhs % (rhs == 0u ? 1u : rhs);
 }
 
-uint interleave_subset(uint x_9, uint y_1, uint period)
+uint interleave_subset(uint x_13, uint y_2, uint period_2)
 {
-    return ((naga_mod(y_1, period) * period) + naga_mod(x_9, period));
+    return ((naga_mod(y_2, period_2) * period_2) + naga_mod(x_13, period_2));
 }
 
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / (rhs == 0u ? 1u : rhs);
+uint interleave_slot(uint tx, uint ty, uint size_2, uint period_3)
+{
+    uint side_1 = naga_div(size_2, period_3);
+    const uint _e5 = interleave_subset(tx, ty, period_3);
+    return ((((_e5 * side_1) * side_1) + (naga_div(ty, period_3) * side_1)) + naga_div(tx, period_3));
 }
 
-uint interleave_slot(uint tx, uint ty, uint size, uint period_1)
+uint interleave_slot_linear(uint i_1, uint per_subset, uint period_4)
 {
-    uint side = naga_div(size, period_1);
-    const uint _e5 = interleave_subset(tx, ty, period_1);
-    return ((((_e5 * side) * side) + (naga_div(ty, period_1) * side)) + naga_div(tx, period_1));
-}
-
-uint interleave_slot_linear(uint i_1, uint per_subset, uint period_2)
-{
-    uint subsets = (period_2 * period_2);
+    uint subsets = (period_4 * period_4);
     return ((naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets));
 }
 
-uint near_block_index(uint tx_1, uint ty_1, uint size_1)
+float interleave_flux_scale(uint period_5)
 {
-    uint side_1 = naga_div(size_1, 8u);
-    return (((((naga_div(ty_1, 8u) * side_1) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u));
+    const float _e2 = to_f32_((period_5 * period_5));
+    return _e2;
 }
 
-uint near_block_tx(uint q, uint size_2)
+uint near_block_index(uint tx_1, uint ty_1, uint size_3)
 {
-    return ((naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_2, 8u)) * 8u) + naga_mod(q, 8u));
+    uint side_2 = naga_div(size_3, 8u);
+    return (((((naga_div(ty_1, 8u) * side_2) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u));
 }
 
-uint near_block_ty(uint q_1, uint size_3)
+uint near_block_tx(uint q, uint size_4)
 {
-    return ((naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_3, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u));
+    return ((naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_4, 8u)) * 8u) + naga_mod(q, 8u));
+}
+
+uint near_block_ty(uint q_1, uint size_5)
+{
+    return ((naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_5, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u));
 }
 
 float vpl_near_weight(float d2_9, float near_r2_)
@@ -1104,11 +1268,60 @@ float vpl_far_weight(float d2_10, float near_r2_1)
     return (1.0 - _e2);
 }
 
-float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_7, float h)
+float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_8, float h)
 {
-    float sx = (((2.0 * px) / w_7) - 1.0);
+    float sx = (((2.0 * px) / w_8) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h));
     return normalize(((forward + (right * sx)) + (up * sy)));
+}
+
+float jittered_pixel(uint coord, float u_4)
+{
+    const float _e2 = to_f32_(coord);
+    return (_e2 + u_4);
+}
+
+bool plays_roulette(uint depth)
+{
+    return (depth >= ROULETTE_DEPTH);
+}
+
+bool sees_emission(float3 gn, float3 dir_1)
+{
+    return (dot(gn, dir_1) < 0.0);
+}
+
+bool continues_path(float3 nd, float3 n_14, float3 ng_1)
+{
+    bool local_13 = (bool)0;
+
+    if ((dot(nd, n_14) > 0.0)) {
+        local_13 = (dot(nd, ng_1) > 0.0);
+    } else {
+        local_13 = false;
+    }
+    bool _e12 = local_13;
+    return _e12;
+}
+
+bool finite3_(float3 v_2)
+{
+    bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
+
+    if ((abs(v_2.x) <= F32_MAX)) {
+        local_14 = (abs(v_2.y) <= F32_MAX);
+    } else {
+        local_14 = false;
+    }
+    bool _e12 = local_14;
+    if (_e12) {
+        local_15 = (abs(v_2.z) <= F32_MAX);
+    } else {
+        local_15 = false;
+    }
+    bool _e20 = local_15;
+    return _e20;
 }
 
 float path_survival(float3 beta)
@@ -1116,17 +1329,17 @@ float path_survival(float3 beta)
     return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
 }
 
-float light_map_coord(uint t_1, uint size_4)
+float light_map_coord(uint t_1, uint size_6)
 {
     const float _e2 = to_f32_(t_1);
-    const float _e7 = to_f32_(size_4);
+    const float _e7 = to_f32_(size_6);
     return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
 }
 
-uint light_map_texel(float a_8, uint size_5)
+uint light_map_texel(float a_8, uint size_7)
 {
-    const float _e6 = to_f32_(size_5);
-    const float _e9 = to_f32_(size_5);
+    const float _e6 = to_f32_(size_7);
+    const float _e9 = to_f32_(size_7);
     const uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
     return _e14;
 }
@@ -1141,17 +1354,27 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-float3 point_irradiance(float3 intensity_1, float3 n_11, float3 v_2)
+float3 point_irradiance(float3 intensity_1, float3 n_15, float3 v_3)
 {
-    float d2_12 = dot(v_2, v_2);
-    float cos_x_1 = (dot(n_11, v_2) / sqrt(max(d2_12, MIN_D2_)));
-    const float _e11 = inverse_square(d2_12);
-    return (intensity_1 * (max(cos_x_1, 0.0) * _e11));
+    float d2_13 = dot(v_3, v_3);
+    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_13, MIN_D2_)));
+    const float _e11 = inverse_square(d2_13);
+    return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
-float3 directional_irradiance(float3 e, float3 n_12, float3 to_light)
+float3 directional_irradiance(float3 e_1, float3 n_16, float3 to_light)
 {
-    return (e * max(dot(n_12, to_light), 0.0));
+    return (e_1 * max(dot(n_16, to_light), 0.0));
+}
+
+float perspective_texel_width(float extent_2, float d_2, float z_2, float size_8)
+{
+    return ((((2.0 * extent_2) * d_2) * d_2) / (size_8 * z_2));
+}
+
+float ortho_texel_width(float extent_3, float size_9)
+{
+    return ((2.0 * extent_3) / size_9);
 }
 
 float shadow_bias(float texel, float cos_light_1)
@@ -1160,100 +1383,99 @@ float shadow_bias(float texel, float cos_light_1)
     return (texel * (1.5 + (sqrt((1.0 - (c_12 * c_12))) / c_12)));
 }
 
-bool shadow_lit(float d_1, float d_map, float bias)
+bool shadow_lit(float d_3, float d_map, float bias)
 {
-    bool local_10 = (bool)0;
+    bool local_16 = (bool)0;
 
     if (!((d_map <= 0.0))) {
-        local_10 = (d_1 <= (d_map + bias));
+        local_16 = (d_3 <= (d_map + bias));
     } else {
-        local_10 = true;
+        local_16 = true;
     }
-    bool _e11 = local_10;
+    bool _e11 = local_16;
     return _e11;
 }
 
-float3 diffuse_radiance(float3 albedo, float3 emission, float3 e_1)
+float3 diffuse_radiance(float3 albedo, float3 emission, float3 e_2)
 {
-    return (emission + ((albedo * INV_PI) * e_1));
+    return (emission + ((albedo * INV_PI) * e_2));
 }
 
 float depth_of(uint i_2)
 {
-    float _e4 = asfloat(gb_normal.Load(12+i_2*16));
-    float _e8 = asfloat(gb_position.Load(12+i_2*16));
-    return ((_e8 > 0.0) ? _e4 : 1e30);
+    float _e5 = asfloat(gb_normal.Load(12+i_2*16));
+    float _e9 = asfloat(gb_position.Load(12+i_2*16));
+    return ((_e9 > 0.0) ? _e5 : DEPTH_NONE);
 }
 
-Window window_sum(uint x_10, uint y_2, uint size_6, float3 n_13, float z_1, float inv)
+Window window_sum(uint x_14, uint y_3, uint size_10, float3 n_17, float z_3, float inv)
 {
     Window win = (Window)0;
     uint yy = (uint)0;
     uint xx = (uint)0;
 
-    uint w_9 = params.width;
+    uint w_11 = params.width;
     uint h_1 = params.height;
-    uint half_ = naga_div(size_6, 2u);
-    uint x0_ = (max(x_10, half_) - half_);
-    uint x1_ = min(((x_10 + size_6) - half_), w_9);
-    uint y0_ = (max(y_2, half_) - half_);
-    uint y1_ = min(((y_2 + size_6) - half_), h_1);
+    const uint _e12 = window_start(x_14, size_10);
+    const uint _e13 = window_end(x_14, size_10, w_11);
+    const uint _e14 = window_start(y_3, size_10);
+    const uint _e15 = window_end(y_3, size_10, h_1);
     win.sum = (0.0).xxx;
     win.weight = 0.0;
     win.covered = 0u;
-    yy = y0_;
+    yy = _e14;
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init) {
-            uint _e71 = yy;
-            yy = (_e71 + 1u);
+            uint _e63 = yy;
+            yy = (_e63 + 1u);
         }
         loop_init = false;
-        uint _e33 = yy;
-        if ((_e33 < y1_)) {
+        uint _e25 = yy;
+        if ((_e25 < _e15)) {
         } else {
             break;
         }
         {
-            xx = x0_;
+            xx = _e12;
             uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
             bool loop_init_1 = true;
             while(true) {
                 if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
                 loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                 if (!loop_init_1) {
-                    uint _e68 = xx;
-                    xx = (_e68 + 1u);
+                    uint _e60 = xx;
+                    xx = (_e60 + 1u);
                 }
                 loop_init_1 = false;
-                uint _e36 = xx;
-                if ((_e36 < x1_)) {
+                uint _e28 = xx;
+                if ((_e28 < _e13)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e38 = yy;
-                    uint _e40 = xx;
-                    uint j = ((_e38 * w_9) + _e40);
-                    float4 _e44 = asfloat(gb_normal.Load4(j*16));
-                    const float _e46 = depth_of(j);
-                    const float _e47 = bilateral_weight(n_13, _e44.xyz, z_1, _e46, inv);
-                    float3 _e49 = win.sum;
-                    float4 _e52 = asfloat(irradiance.Load4(j*16));
-                    win.sum = (_e49 + (_e52.xyz * _e47));
-                    float _e57 = win.weight;
-                    win.weight = (_e57 + _e47);
-                    uint _e60 = win.covered;
-                    win.covered = (_e60 + ((_e47 > COVER_WEIGHT) ? 1u : 0u));
+                    uint _e30 = yy;
+                    uint _e32 = xx;
+                    uint j = ((_e30 * w_11) + _e32);
+                    float4 _e36 = asfloat(gb_normal.Load4(j*16));
+                    const float _e38 = depth_of(j);
+                    const float _e39 = bilateral_weight(n_17, _e36.xyz, z_3, _e38, inv);
+                    float3 _e41 = win.sum;
+                    float4 _e44 = asfloat(irradiance.Load4(j*16));
+                    win.sum = (_e41 + (_e44.xyz * _e39));
+                    float _e49 = win.weight;
+                    win.weight = (_e49 + _e39);
+                    uint _e52 = win.covered;
+                    win.covered = (_e52 + ((_e39 > COVER_WEIGHT) ? 1u : 0u));
                 }
             }
         }
     }
-    Window _e73 = win;
-    const Window window = _e73;
+    Window _e65 = win;
+    const Window window = _e65;
     return window;
 }
 
@@ -1263,9 +1485,9 @@ void main(uint3 gid : SV_DispatchThreadID)
     bool local = (bool)0;
     Window s = (Window)0;
 
-    uint w_10 = params.width;
+    uint w_12 = params.width;
     uint h_2 = params.height;
-    if (!((gid.x >= w_10))) {
+    if (!((gid.x >= w_12))) {
         local = (gid.y >= h_2);
     } else {
         local = true;
@@ -1274,27 +1496,29 @@ void main(uint3 gid : SV_DispatchThreadID)
     if (_e15) {
         return;
     }
-    uint i_3 = ((gid.y * w_10) + gid.x);
-    float4 e_2 = asfloat(irradiance.Load4(i_3*16));
+    uint i_3 = ((gid.y * w_12) + gid.x);
+    float4 e_3 = asfloat(irradiance.Load4(i_3*16));
     float _e26 = asfloat(gb_position.Load(12+i_3*16));
     if ((_e26 <= 0.0)) {
-        filtered.Store4(i_3*16, asuint(float4(0.0, 0.0, 0.0, e_2.w)));
+        filtered.Store4(i_3*16, asuint(float4(0.0, 0.0, 0.0, e_3.w)));
         return;
     }
     float4 _e38 = asfloat(gb_normal.Load4(i_3*16));
-    float3 n_16 = _e38.xyz;
+    float3 n_20 = _e38.xyz;
     const float _e40 = depth_of(i_3);
-    float inv_2 = (1.0 / (DEPTH_SIGMA * _e40));
-    const Window _e48 = window_sum(gid.x, gid.y, PERIOD, n_16, _e40, inv_2);
-    s = _e48;
-    uint _e51 = s.covered;
-    if ((_e51 < 64u)) {
-        const Window _e57 = window_sum(gid.x, gid.y, 16u, n_16, _e40, inv_2);
-        s = _e57;
+    const float _e41 = inv_sigma_z(_e40);
+    const Window _e45 = window_sum(gid.x, gid.y, PERIOD, n_20, _e40, _e41);
+    s = _e45;
+    uint _e48 = s.covered;
+    const bool _e50 = misses_subset(_e48, PERIOD);
+    if (_e50) {
+        const uint _e54 = wide_window(PERIOD);
+        const Window _e55 = window_sum(gid.x, gid.y, _e54, n_20, _e40, _e41);
+        s = _e55;
     }
-    float3 _e62 = s.sum;
-    float _e64 = s.weight;
-    float _e68 = s.weight;
-    filtered.Store4(i_3*16, asuint(float4(((_e68 > 0.0) ? (_e62 / (_e64).xxx) : e_2.xyz), e_2.w)));
+    float3 _e60 = s.sum;
+    float _e62 = s.weight;
+    const float3 _e63 = filtered_irradiance(e_3.xyz, _e60, _e62);
+    filtered.Store4(i_3*16, asuint(float4(_e63, e_3.w)));
     return;
 }

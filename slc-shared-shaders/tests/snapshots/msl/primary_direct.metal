@@ -203,6 +203,7 @@ constant uint MAP_CAMERA = 0u;
 constant uint MAP_PERSPECTIVE = 1u;
 constant uint MAP_ORTHOGRAPHIC = 2u;
 constant float XI_STEP = 0.000000059604645;
+constant uint PICK_STREAM = 2654435769u;
 constant float TWO_PI = 6.2831855;
 constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
@@ -211,11 +212,15 @@ constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant uint BSH_NONE = 4294967295u;
+constant uint RESERVOIR_FULL = 4294967295u;
 constant uint LIGHT_BVH_LEAF = 4294967295u;
 constant float ONE_MINUS_EPSILON = 0.99999994;
+constant float F32_MAX = 340282350000000000000000000000000000000.0;
+constant float DEPTH_NONE = 1000000000000000000000000000000.0;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
 constant uint NEAR_BLOCK = 64u;
+constant uint ROULETTE_DEPTH = 2u;
 
 float at(
     Table tab,
@@ -308,6 +313,34 @@ float xi_for(
     return _e9;
 }
 
+uint point_stream(
+    uint seed_1,
+    uint point,
+    uint frame_1
+) {
+    uint _e3 = pcg_hash(frame_1);
+    uint _e5 = pcg_hash(point ^ _e3);
+    uint _e7 = pcg_hash(seed_1 ^ _e5);
+    return _e7;
+}
+
+uint pick_stream(
+    uint stream
+) {
+    uint _e3 = pcg_hash(stream ^ PICK_STREAM);
+    return _e3;
+}
+
+uint path_stream(
+    uint seed_2,
+    uint pixel,
+    uint pass_index
+) {
+    uint _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
+    uint _e5 = point_stream(seed_2, pixel, _e4);
+    return _e5;
+}
+
 float rr_probability(
     float rt2_,
     float d2_
@@ -374,8 +407,8 @@ float windowed_falloff(
     float range2_
 ) {
     float q_2 = d2_3 / range2_;
-    float w_9 = metal::saturate(1.0 - (q_2 * q_2));
-    return (w_9 * w_9) / metal::max(d2_3, 0.0001);
+    float w_10 = metal::saturate(1.0 - (q_2 * q_2));
+    return (w_10 * w_10) / metal::max(d2_3, 0.0001);
 }
 
 bool sphere_contains_point(
@@ -383,8 +416,8 @@ bool sphere_contains_point(
     float r,
     metal::float3 x_3
 ) {
-    metal::float3 v_3 = x_3 - c;
-    return metal::dot(v_3, v_3) <= (r * r);
+    metal::float3 v_4 = x_3 - c;
+    return metal::dot(v_4, v_4) <= (r * r);
 }
 
 bool sphere_overlaps_sphere(
@@ -393,9 +426,9 @@ bool sphere_overlaps_sphere(
     metal::float3 c2_,
     float r2_2
 ) {
-    metal::float3 v_4 = c2_ - c1_;
+    metal::float3 v_5 = c2_ - c1_;
     float r_3 = r1_ + r2_2;
-    return metal::dot(v_4, v_4) <= (r_3 * r_3);
+    return metal::dot(v_5, v_5) <= (r_3 * r_3);
 }
 
 float sphere_pad(
@@ -412,18 +445,18 @@ metal::float4 sphere_union(
     float r2_3
 ) {
     bool local_4 = {};
-    metal::float3 v_5 = c2_1 - c1_1;
-    float d_2 = metal::sqrt(metal::dot(v_5, v_5));
+    metal::float3 v_6 = c2_1 - c1_1;
+    float d_4 = metal::sqrt(metal::dot(v_6, v_6));
     float _e8 = sphere_pad(r1_1, c1_1);
-    if (r1_1 >= ((d_2 + r2_3) + _e8)) {
+    if (r1_1 >= ((d_4 + r2_3) + _e8)) {
         return metal::float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     float _e16 = sphere_pad(r2_3, c2_1);
-    if (r2_3 >= ((d_2 + r1_1) + _e16)) {
+    if (r2_3 >= ((d_4 + r1_1) + _e16)) {
         return metal::float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_2 >= SPHERE_HUGE))) {
-        local_4 = (0.5 * ((d_2 + r1_1) + r2_3)) >= SPHERE_HUGE;
+    if (!((d_4 >= SPHERE_HUGE))) {
+        local_4 = (0.5 * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE;
     } else {
         local_4 = true;
     }
@@ -431,18 +464,18 @@ metal::float4 sphere_union(
     if (_e35) {
         return metal::float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if (metal::abs(r1_1 - r2_3) >= d_2) {
+    if (metal::abs(r1_1 - r2_3) >= d_4) {
         if (r1_1 >= r2_3) {
-            float rn = metal::max(r1_1, d_2 + r2_3);
+            float rn = metal::max(r1_1, d_4 + r2_3);
             float _e50 = sphere_pad(rn, c1_1);
             return metal::float4(c1_1.x, c1_1.y, c1_1.z, rn + _e50);
         }
-        float rm = metal::max(r2_3, d_2 + r1_1);
+        float rm = metal::max(r2_3, d_4 + r1_1);
         float _e58 = sphere_pad(rm, c2_1);
         return metal::float4(c2_1.x, c2_1.y, c2_1.z, rm + _e58);
     }
-    float r0_ = 0.5 * ((d_2 + r1_1) + r2_3);
-    metal::float3 c_9 = c1_1 + (v_5 * ((r0_ - r1_1) / d_2));
+    float r0_ = 0.5 * ((d_4 + r1_1) + r2_3);
+    metal::float3 c_9 = c1_1 + (v_6 * ((r0_ - r1_1) / d_4));
     metal::float3 e1_ = c_9 - c1_1;
     metal::float3 e2_ = c_9 - c2_1;
     float r_4 = metal::max(r0_, metal::max(metal::sqrt(metal::dot(e1_, e1_)) + r1_1, metal::sqrt(metal::dot(e2_, e2_)) + r2_3));
@@ -457,8 +490,8 @@ bool sphere_overlaps_aabb(
     metal::float3 bmax
 ) {
     metal::float3 q_3 = metal::clamp(c_2, bmin, bmax);
-    metal::float3 v_6 = q_3 - c_2;
-    return metal::dot(v_6, v_6) <= (r_2 * r_2);
+    metal::float3 v_7 = q_3 - c_2;
+    return metal::dot(v_7, v_7) <= (r_2 * r_2);
 }
 
 float vpl_rt2_(
@@ -496,11 +529,46 @@ float connection_factor(
     return ((cos_x * _e4) * _e6) * w;
 }
 
-float vpl_lobe(
+float connection_cosine(
+    metal::float3 x_4,
+    metal::float3 y,
     metal::float3 n,
+    metal::float3 ng,
+    float r2_5
+) {
+    bool local_5 = {};
+    bool local_6 = {};
+    metal::float3 v_8 = x_4 - y;
+    float d2_11 = metal::dot(v_8, v_8);
+    bool _e7 = slc_keep(r2_5, d2_11);
+    if (!(!(_e7))) {
+        local_5 = !((d2_11 > 0.0));
+    } else {
+        local_5 = true;
+    }
+    bool _e16 = local_5;
+    if (_e16) {
+        return 0.0;
+    }
+    metal::float3 w_11 = v_8 / metal::float3(metal::sqrt(d2_11));
+    float cos_x_1 = -(metal::dot(n, w_11));
+    if (!((cos_x_1 <= 0.0))) {
+        local_6 = metal::dot(ng, w_11) >= 0.0;
+    } else {
+        local_6 = true;
+    }
+    bool _e32 = local_6;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float vpl_lobe(
+    metal::float3 n_1,
     metal::float3 w_1
 ) {
-    return metal::max(metal::dot(n, w_1), 0.0) * INV_PI;
+    return metal::max(metal::dot(n_1, w_1), 0.0) * INV_PI;
 }
 
 float vpl_transfer(
@@ -526,11 +594,11 @@ float spot_falloff(
 }
 
 float triangle_lobe(
-    metal::float3 n_1,
+    metal::float3 n_2,
     float area,
     metal::float3 w_2
 ) {
-    return area * metal::max(metal::dot(n_1, w_2), 0.0);
+    return area * metal::max(metal::dot(n_2, w_2), 0.0);
 }
 
 metal::float3 triangle_sample(
@@ -559,11 +627,11 @@ float area_to_solid_angle_pdf(
 }
 
 float atan_portable(
-    float x_4
+    float x_5
 ) {
     float base = 0.0;
     float t = {};
-    float a_10 = metal::abs(x_4);
+    float a_10 = metal::abs(x_5);
     t = a_10;
     if (a_10 > 2.4142137) {
         base = 1.5707964;
@@ -576,32 +644,32 @@ float atan_portable(
     }
     float _e18 = t;
     float _e19 = t;
-    float z_1 = _e18 * _e19;
+    float z_3 = _e18 * _e19;
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_5 = _e21 + (((((((((0.080537446 * z_1) - 0.13877685) * z_1) + 0.19977711) * z_1) - 0.3333295) * z_1) * _e33) + _e35);
-    return (x_4 < 0.0) ? -(r_5) : r_5;
+    float r_5 = _e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35);
+    return (x_5 < 0.0) ? -(r_5) : r_5;
 }
 
 float atan2_portable(
-    float y,
-    float x_5
+    float y_1,
+    float x_6
 ) {
-    if (x_5 == 0.0) {
-        if (y > 0.0) {
+    if (x_6 == 0.0) {
+        if (y_1 > 0.0) {
             return 1.5707964;
         }
-        if (y < 0.0) {
+        if (y_1 < 0.0) {
             return -1.5707964;
         }
         return 0.0;
     }
-    float _e12 = atan_portable(y / x_5);
-    if (x_5 > 0.0) {
+    float _e12 = atan_portable(y_1 / x_6);
+    if (x_6 > 0.0) {
         return _e12;
     }
-    if (y >= 0.0) {
+    if (y_1 >= 0.0) {
         return _e12 + 3.1415927;
     }
     return _e12 - 3.1415927;
@@ -662,17 +730,17 @@ float ies_fold_c(
 uint ies_segment(
     Table tab_1,
     uint start,
-    uint n_2,
-    float x_6,
+    uint n_3,
+    float x_7,
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint lo = 0u;
     uint hi = {};
-    if (n_2 < 2u) {
+    if (n_3 < 2u) {
         return 0u;
     }
-    hi = n_2 - 1u;
+    hi = n_3 - 1u;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
@@ -688,7 +756,7 @@ uint ies_segment(
             uint _e18 = hi;
             uint mid = (_e17 + _e18) >> 1u;
             float _e23 = at(tab_1, start + mid, slc_table, _buffer_sizes);
-            if (_e23 <= x_6) {
+            if (_e23 <= x_7) {
                 lo = mid;
             } else {
                 hi = mid;
@@ -702,12 +770,12 @@ uint ies_segment(
 float ies_lerp_t(
     float a0_,
     float a1_,
-    float x_7
+    float x_8
 ) {
     if (a1_ <= a0_) {
         return 0.0;
     }
-    return metal::saturate((x_7 - a0_) / (a1_ - a0_));
+    return metal::saturate((x_8 - a0_) / (a1_ - a0_));
 }
 
 float ies_candela(
@@ -718,7 +786,7 @@ float ies_candela(
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_5 = {};
+    bool local_7 = {};
     float _e4 = at(tab_2, base_1, slc_table, _buffer_sizes);
     uint _e5 = to_u32_(_e4);
     float _e8 = at(tab_2, base_1 + 1u, slc_table, _buffer_sizes);
@@ -729,11 +797,11 @@ float ies_candela(
     float _e14 = at(tab_2, v0_, slc_table, _buffer_sizes);
     if (!((gamma < _e14))) {
         float _e22 = at(tab_2, (v0_ + _e5) - 1u, slc_table, _buffer_sizes);
-        local_5 = gamma > _e22;
+        local_7 = gamma > _e22;
     } else {
-        local_5 = true;
+        local_7 = true;
     }
-    bool _e25 = local_5;
+    bool _e25 = local_7;
     if (_e25) {
         return 0.0;
     }
@@ -777,6 +845,20 @@ float ies_candela_dir(
     return _e20;
 }
 
+float ies_light_candela(
+    Table tab_4,
+    uint base_3,
+    metal::float3 nadir,
+    metal::float3 reference,
+    metal::float3 w_3,
+    device type_4 const& slc_table,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 side = metal::cross(reference, nadir);
+    float _e9 = ies_candela_dir(tab_4, base_3, metal::dot(w_3, nadir), metal::dot(w_3, reference), metal::dot(w_3, side), slc_table, _buffer_sizes);
+    return _e9;
+}
+
 uint mul_hi_u32_(
     uint a_5,
     uint b_4
@@ -794,13 +876,13 @@ uint mul_hi_u32_(
 }
 
 uint uniform_index(
-    uint n_3,
+    uint n_4,
     uint hi_1,
     uint lo_1
 ) {
-    uint _e3 = mul_lo_u32_(hi_1, n_3);
-    uint _e4 = mul_hi_u32_(hi_1, n_3);
-    uint _e5 = mul_hi_u32_(lo_1, n_3);
+    uint _e3 = mul_lo_u32_(hi_1, n_4);
+    uint _e4 = mul_hi_u32_(hi_1, n_4);
+    uint _e5 = mul_hi_u32_(lo_1, n_4);
     if (_e3 > (4294967295u - _e5)) {
         return _e4 + 1u;
     }
@@ -808,45 +890,82 @@ uint uniform_index(
 }
 
 uint reservoir_slot(
-    uint n_4,
+    uint n_5,
     uint k,
     uint hi_2,
     uint lo_2
 ) {
-    if (n_4 <= k) {
-        return n_4 - 1u;
+    if (n_5 <= k) {
+        return n_5 - 1u;
     }
-    uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    uint _e7 = uniform_index(n_5, hi_2, lo_2);
     if (_e7 < k) {
         return _e7;
     }
     return k;
 }
 
+bool reservoir_takes(
+    uint n_6
+) {
+    return n_6 < RESERVOIR_FULL;
+}
+
 float reservoir_weight(
-    uint n_5,
+    uint n_7,
     uint k_1
 ) {
-    float _e2 = to_f32_(n_5);
+    float _e2 = to_f32_(n_7);
     float _e3 = to_f32_(k_1);
     return metal::max(_e2 / _e3, 1.0);
 }
 
 bool weighted_replace(
-    float w_3,
+    float w_4,
     float w_sum,
     float u_1
 ) {
-    return (u_1 * w_sum) < w_3;
+    return (u_1 * w_sum) < w_4;
 }
 
 float weighted_pick_weight(
     float w_sum_1,
-    float w_4,
+    float w_5,
     uint k_2
 ) {
     float _e3 = to_f32_(k_2);
-    return w_sum_1 / (_e3 * w_4);
+    return w_sum_1 / (_e3 * w_5);
+}
+
+float reservoir_select_pdf(
+    uint seen,
+    bool in_range,
+    uint k_3
+) {
+    uint others = {};
+    bool local_8 = {};
+    others = seen;
+    if (in_range) {
+        local_8 = seen > 0u;
+    } else {
+        local_8 = false;
+    }
+    bool _e9 = local_8;
+    if (_e9) {
+        others = seen - 1u;
+    }
+    uint _e12 = others;
+    float _e15 = reservoir_weight(_e12 + 1u, k_3);
+    return 1.0 / _e15;
+}
+
+uint uniform_light(
+    float u_2,
+    uint n_8
+) {
+    float _e2 = to_f32_(n_8);
+    uint _e4 = to_u32_(u_2 * _e2);
+    return metal::min(_e4, n_8 - 1u);
 }
 
 float cos_sub_clamped(
@@ -874,9 +993,9 @@ float sin_sub_clamped(
 }
 
 float safe_sqrt(
-    float x_8
+    float x_9
 ) {
-    return metal::sqrt(metal::max(x_8, 0.0));
+    return metal::sqrt(metal::max(x_9, 0.0));
 }
 
 float light_importance(
@@ -887,18 +1006,18 @@ float light_importance(
     float cos_o,
     float cos_e,
     metal::float3 p,
-    metal::float3 n_6
+    metal::float3 n_9
 ) {
     float imp = {};
-    metal::float3 v_7 = p - center;
-    float dist2_ = metal::dot(v_7, v_7);
-    float r2_5 = radius * radius;
-    float d2_11 = metal::max(metal::max(dist2_, r2_5), MIN_D2_);
-    metal::float3 wi = (dist2_ > 0.0) ? (v_7 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
+    metal::float3 v_9 = p - center;
+    float dist2_ = metal::dot(v_9, v_9);
+    float r2_6 = radius * radius;
+    float d2_12 = metal::max(metal::max(dist2_, r2_6), MIN_D2_);
+    metal::float3 wi = (dist2_ > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e32 = safe_sqrt(1.0 - (r2_5 / dist2_));
-    float cos_b_2 = (dist2_ <= r2_5) ? -1.0 : _e32;
+    float _e32 = safe_sqrt(1.0 - (r2_6 / dist2_));
+    float cos_b_2 = (dist2_ <= r2_6) ? -1.0 : _e32;
     float _e39 = safe_sqrt(1.0 - (cos_b_2 * cos_b_2));
     float _e43 = safe_sqrt(1.0 - (cos_o * cos_o));
     float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -907,9 +1026,9 @@ float light_importance(
     if (_e46 <= cos_e) {
         return 0.0;
     }
-    imp = (phi * _e46) / d2_11;
-    if (metal::dot(n_6, n_6) > 0.0) {
-        float cos_i = -(metal::dot(wi, n_6));
+    imp = (phi * _e46) / d2_12;
+    if (metal::dot(n_9, n_9) > 0.0) {
+        float cos_i = -(metal::dot(wi, n_9));
         float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
         float _e61 = imp;
         float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
@@ -937,26 +1056,26 @@ float cone_weight(
     float cos_e_1,
     float rt2_5,
     metal::float3 p_1,
-    metal::float3 n_7
+    metal::float3 n_10
 ) {
-    metal::float3 v_8 = p_1 - center_1;
-    float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_7);
-    float _e14 = candidate_weight(_e10 * INV_PI, rt2_5, metal::dot(v_8, v_8));
+    metal::float3 v_10 = p_1 - center_1;
+    float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
+    float _e14 = candidate_weight(_e10 * INV_PI, rt2_5, metal::dot(v_10, v_10));
     return _e14;
 }
 
 float weighted_select_pdf(
-    float w_5,
+    float w_6,
     float w_sum_2,
-    bool in_range,
-    uint k_3
+    bool in_range_1,
+    uint k_4
 ) {
-    if (w_5 <= 0.0) {
+    if (w_6 <= 0.0) {
         return 0.0;
     }
-    float total = in_range ? w_sum_2 : (w_sum_2 + w_5);
-    float _e9 = to_f32_(k_3);
-    return (_e9 * w_5) / total;
+    float total = in_range_1 ? w_sum_2 : (w_sum_2 + w_6);
+    float _e9 = to_f32_(k_4);
+    return (_e9 * w_6) / total;
 }
 
 float bvh_first_prob(
@@ -971,14 +1090,47 @@ float bvh_first_prob(
 }
 
 float bvh_remap_u(
-    float u_2,
+    float u_3,
     float p0_,
     bool first
 ) {
     if (first) {
-        return metal::min(u_2 / p0_, ONE_MINUS_EPSILON);
+        return metal::min(u_3 / p0_, ONE_MINUS_EPSILON);
     }
-    return metal::clamp((u_2 - p0_) / (1.0 - p0_), 0.0, ONE_MINUS_EPSILON);
+    return metal::clamp((u_3 - p0_) / (1.0 - p0_), 0.0, ONE_MINUS_EPSILON);
+}
+
+float surface_offset(
+    float diag
+) {
+    return 0.00001 * diag;
+}
+
+float ray_t_min(
+    float diag_1
+) {
+    return 0.000001 * diag_1;
+}
+
+float shadow_margin(
+    float len
+) {
+    return 0.0001 * len;
+}
+
+float ray_inverse(
+    float x_10
+) {
+    return 1.0 / ((metal::abs(x_10) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_10);
+}
+
+metal::float3 ray_inverse3_(
+    metal::float3 d
+) {
+    float _e2 = ray_inverse(d.x);
+    float _e4 = ray_inverse(d.y);
+    float _e6 = ray_inverse(d.z);
+    return metal::float3(_e2, _e4, _e6);
 }
 
 float ray_aabb(
@@ -1005,26 +1157,26 @@ metal::float3 triangle_normal(
     metal::float3 b_5,
     metal::float3 c_6
 ) {
-    bool local_6 = {};
-    metal::float3 n_13 = metal::cross(b_5 - a_6, c_6 - a_6);
-    float l2_ = metal::dot(n_13, n_13);
+    bool local_9 = {};
+    metal::float3 n_17 = metal::cross(b_5 - a_6, c_6 - a_6);
+    float l2_ = metal::dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
-        local_6 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_9 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_6 = true;
+        local_9 = true;
     }
-    bool _e17 = local_6;
+    bool _e17 = local_9;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_13 / metal::float3(metal::sqrt(l2_));
+    return n_17 / metal::float3(metal::sqrt(l2_));
 }
 
 metal::float3 face_against(
-    metal::float3 n_8,
+    metal::float3 n_11,
     metal::float3 dir
 ) {
-    return (metal::dot(n_8, dir) > 0.0) ? -(n_8) : n_8;
+    return (metal::dot(n_11, dir) > 0.0) ? -(n_11) : n_11;
 }
 
 metal::float3 barycentric(
@@ -1052,74 +1204,74 @@ metal::float3 shading_normal(
     metal::float3 n0_,
     metal::float3 n1_,
     metal::float3 n2_,
-    metal::float3 w_6,
+    metal::float3 w_7,
     metal::float3 facing
 ) {
-    bool local_7 = {};
-    metal::float3 s_1 = ((n0_ * w_6.x) + (n1_ * w_6.y)) + (n2_ * w_6.z);
+    bool local_10 = {};
+    metal::float3 s_1 = ((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z);
     float l2_1 = metal::dot(s_1, s_1);
     if (!(!((l2_1 > 0.000000000001)))) {
-        local_7 = !((l2_1 < 300000000000000000000000000000000000000.0));
+        local_10 = !((l2_1 < 300000000000000000000000000000000000000.0));
     } else {
-        local_7 = true;
+        local_10 = true;
     }
-    bool _e24 = local_7;
+    bool _e24 = local_10;
     if (_e24) {
         return facing;
     }
-    metal::float3 n_14 = s_1 / metal::float3(metal::sqrt(l2_1));
-    return (metal::dot(n_14, facing) < 0.0) ? -(n_14) : n_14;
+    metal::float3 n_18 = s_1 / metal::float3(metal::sqrt(l2_1));
+    return (metal::dot(n_18, facing) < 0.0) ? -(n_18) : n_18;
 }
 
 float ray_triangle(
     metal::float3 o_1,
-    metal::float3 d,
+    metal::float3 d_1,
     metal::float3 a_8,
     metal::float3 b_7,
     metal::float3 c_8,
     float t_min,
     float t_max_1
 ) {
-    bool local_8 = {};
-    bool local_9 = {};
-    bool local_10 = {};
+    bool local_11 = {};
+    bool local_12 = {};
+    bool local_13 = {};
     metal::float3 e1_2 = b_7 - a_8;
     metal::float3 e2_2 = c_8 - a_8;
-    metal::float3 p_3 = metal::cross(d, e2_2);
+    metal::float3 p_3 = metal::cross(d_1, e2_2);
     float det = metal::dot(e1_2, p_3);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
     metal::float3 s_2 = o_1 - a_8;
-    float u_3 = metal::dot(s_2, p_3) * inv;
-    if (!((u_3 < 0.0))) {
-        local_8 = u_3 > 1.0;
+    float u_5 = metal::dot(s_2, p_3) * inv;
+    if (!((u_5 < 0.0))) {
+        local_11 = u_5 > 1.0;
     } else {
-        local_8 = true;
+        local_11 = true;
     }
-    bool _e28 = local_8;
+    bool _e28 = local_11;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_5 = metal::cross(s_2, e1_2);
-    float v_9 = metal::dot(d, q_5) * inv;
-    if (!((v_9 < 0.0))) {
-        local_9 = (u_3 + v_9) > 1.0;
+    float v_11 = metal::dot(d_1, q_5) * inv;
+    if (!((v_11 < 0.0))) {
+        local_12 = (u_5 + v_11) > 1.0;
     } else {
-        local_9 = true;
+        local_12 = true;
     }
-    bool _e42 = local_9;
+    bool _e42 = local_12;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_2, q_5) * inv;
     if (t_3 > t_min) {
-        local_10 = t_3 < t_max_1;
+        local_13 = t_3 < t_max_1;
     } else {
-        local_10 = false;
+        local_13 = false;
     }
-    bool _e51 = local_10;
+    bool _e51 = local_13;
     if (_e51) {
         return t_3;
     }
@@ -1156,20 +1308,20 @@ float light_strategy_pdf(
     float area_1,
     float cos_y
 ) {
-    bool local_11 = {};
-    bool local_12 = {};
+    bool local_14 = {};
+    bool local_15 = {};
     if (!((d2_8 <= 0.0))) {
-        local_11 = area_1 <= 0.0;
+        local_14 = area_1 <= 0.0;
     } else {
-        local_11 = true;
+        local_14 = true;
     }
-    bool _e13 = local_11;
+    bool _e13 = local_14;
     if (!(_e13)) {
-        local_12 = cos_y <= 0.0;
+        local_15 = cos_y <= 0.0;
     } else {
-        local_12 = true;
+        local_15 = true;
     }
-    bool _e20 = local_12;
+    bool _e20 = local_15;
     if (_e20) {
         return 0.0;
     }
@@ -1191,33 +1343,83 @@ float cosine_pdf(
 }
 
 metal::float3 cosine_direction(
-    metal::float3 n_9,
+    metal::float3 n_12,
     float u1_1,
     float u2_1
 ) {
-    float s_5 = (n_9.z >= 0.0) ? 1.0 : -1.0;
-    float a_12 = -1.0 / (s_5 + n_9.z);
-    float b_9 = (n_9.x * n_9.y) * a_12;
-    metal::float3 t_4 = metal::float3(1.0 + (((s_5 * n_9.x) * n_9.x) * a_12), s_5 * b_9, -(s_5) * n_9.x);
-    metal::float3 bt = metal::float3(b_9, s_5 + ((n_9.y * n_9.y) * a_12), -(n_9.y));
+    float s_5 = (n_12.z >= 0.0) ? 1.0 : -1.0;
+    float a_12 = -1.0 / (s_5 + n_12.z);
+    float b_9 = (n_12.x * n_12.y) * a_12;
+    metal::float3 t_4 = metal::float3(1.0 + (((s_5 * n_12.x) * n_12.x) * a_12), s_5 * b_9, -(s_5) * n_12.x);
+    metal::float3 bt = metal::float3(b_9, s_5 + ((n_12.y * n_12.y) * a_12), -(n_12.y));
     float r_6 = metal::sqrt(u1_1);
     float phi_2 = 6.2831855 * u2_1;
-    return metal::normalize(((t_4 * (r_6 * metal::cos(phi_2))) + (bt * (r_6 * metal::sin(phi_2)))) + (n_9 * metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
+    return metal::normalize(((t_4 * (r_6 * metal::cos(phi_2))) + (bt * (r_6 * metal::sin(phi_2)))) + (n_12 * metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
+}
+
+float inv_sigma_z(
+    float z
+) {
+    return 1.0 / (DEPTH_SIGMA * z);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint window_start(
+    uint x_11,
+    uint size
+) {
+    uint half_ = naga_div(size, 2u);
+    return metal::max(x_11, half_) - half_;
+}
+
+uint window_end(
+    uint x_12,
+    uint size_1,
+    uint extent_1
+) {
+    return metal::min((x_12 + size_1) - naga_div(size_1, 2u), extent_1);
+}
+
+uint wide_window(
+    uint period
+) {
+    return 2u * period;
+}
+
+bool misses_subset(
+    uint covered,
+    uint period_1
+) {
+    return covered < (period_1 * period_1);
+}
+
+metal::float3 filtered_irradiance(
+    metal::float3 e_1,
+    metal::float3 sum,
+    float weight
+) {
+    if (weight > 0.0) {
+        return sum / metal::float3(weight);
+    }
+    return e_1;
 }
 
 float bilateral_weight(
-    metal::float3 n_10,
+    metal::float3 n_13,
     metal::float3 nj,
-    float z,
+    float z_1,
     float zj,
     float inv_sz
 ) {
-    float dn = metal::max(metal::dot(n_10, nj), 0.0);
+    float dn = metal::max(metal::dot(n_13, nj), 0.0);
     float dn2_ = dn * dn;
     float dn4_ = dn2_ * dn2_;
     float dn8_ = dn4_ * dn4_;
-    float d_3 = (zj - z) * inv_sz;
-    float t_5 = metal::max(1.0 - (d_3 * d_3), 0.0);
+    float d_5 = (zj - z_1) * inv_sz;
+    float t_5 = metal::max(1.0 - (d_5 * d_5), 0.0);
     return ((dn8_ * dn8_) * t_5) * t_5;
 }
 
@@ -1226,58 +1428,61 @@ uint naga_mod(uint lhs, uint rhs) {
 }
 
 uint interleave_subset(
-    uint x_9,
-    uint y_1,
-    uint period
+    uint x_13,
+    uint y_2,
+    uint period_2
 ) {
-    return (naga_mod(y_1, period) * period) + naga_mod(x_9, period);
-}
-
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / metal::select(rhs, 1u, rhs == 0u);
+    return (naga_mod(y_2, period_2) * period_2) + naga_mod(x_13, period_2);
 }
 
 uint interleave_slot(
     uint tx,
     uint ty,
-    uint size,
-    uint period_1
+    uint size_2,
+    uint period_3
 ) {
-    uint side = naga_div(size, period_1);
-    uint _e5 = interleave_subset(tx, ty, period_1);
-    return (((_e5 * side) * side) + (naga_div(ty, period_1) * side)) + naga_div(tx, period_1);
+    uint side_1 = naga_div(size_2, period_3);
+    uint _e5 = interleave_subset(tx, ty, period_3);
+    return (((_e5 * side_1) * side_1) + (naga_div(ty, period_3) * side_1)) + naga_div(tx, period_3);
 }
 
 uint interleave_slot_linear(
     uint i_1,
     uint per_subset,
-    uint period_2
+    uint period_4
 ) {
-    uint subsets = period_2 * period_2;
+    uint subsets = period_4 * period_4;
     return (naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets);
+}
+
+float interleave_flux_scale(
+    uint period_5
+) {
+    float _e2 = to_f32_(period_5 * period_5);
+    return _e2;
 }
 
 uint near_block_index(
     uint tx_1,
     uint ty_1,
-    uint size_1
+    uint size_3
 ) {
-    uint side_1 = naga_div(size_1, 8u);
-    return ((((naga_div(ty_1, 8u) * side_1) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u);
+    uint side_2 = naga_div(size_3, 8u);
+    return ((((naga_div(ty_1, 8u) * side_2) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u);
 }
 
 uint near_block_tx(
     uint q,
-    uint size_2
+    uint size_4
 ) {
-    return (naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_2, 8u)) * 8u) + naga_mod(q, 8u);
+    return (naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_4, 8u)) * 8u) + naga_mod(q, 8u);
 }
 
 uint near_block_ty(
     uint q_1,
-    uint size_3
+    uint size_5
 ) {
-    return (naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_3, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u);
+    return (naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_5, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u);
 }
 
 float vpl_near_weight(
@@ -1305,12 +1510,68 @@ metal::float3 camera_dir(
     metal::float3 up,
     float px,
     float py,
-    float w_7,
+    float w_8,
     float h
 ) {
-    float sx = ((2.0 * px) / w_7) - 1.0;
+    float sx = ((2.0 * px) / w_8) - 1.0;
     float sy = 1.0 - ((2.0 * py) / h);
     return metal::normalize((forward + (right * sx)) + (up * sy));
+}
+
+float jittered_pixel(
+    uint coord,
+    float u_4
+) {
+    float _e2 = to_f32_(coord);
+    return _e2 + u_4;
+}
+
+bool plays_roulette(
+    uint depth
+) {
+    return depth >= ROULETTE_DEPTH;
+}
+
+bool sees_emission(
+    metal::float3 gn,
+    metal::float3 dir_1
+) {
+    return metal::dot(gn, dir_1) < 0.0;
+}
+
+bool continues_path(
+    metal::float3 nd,
+    metal::float3 n_14,
+    metal::float3 ng_1
+) {
+    bool local_16 = {};
+    if (metal::dot(nd, n_14) > 0.0) {
+        local_16 = metal::dot(nd, ng_1) > 0.0;
+    } else {
+        local_16 = false;
+    }
+    bool _e12 = local_16;
+    return _e12;
+}
+
+bool finite3_(
+    metal::float3 v_2
+) {
+    bool local_17 = {};
+    bool local_18 = {};
+    if (metal::abs(v_2.x) <= F32_MAX) {
+        local_17 = metal::abs(v_2.y) <= F32_MAX;
+    } else {
+        local_17 = false;
+    }
+    bool _e12 = local_17;
+    if (_e12) {
+        local_18 = metal::abs(v_2.z) <= F32_MAX;
+    } else {
+        local_18 = false;
+    }
+    bool _e20 = local_18;
+    return _e20;
 }
 
 float path_survival(
@@ -1321,19 +1582,19 @@ float path_survival(
 
 float light_map_coord(
     uint t_1,
-    uint size_4
+    uint size_6
 ) {
     float _e2 = to_f32_(t_1);
-    float _e7 = to_f32_(size_4);
+    float _e7 = to_f32_(size_6);
     return ((2.0 * (_e2 + 0.5)) / _e7) - 1.0;
 }
 
 uint light_map_texel(
     float a_9,
-    uint size_5
+    uint size_7
 ) {
-    float _e6 = to_f32_(size_5);
-    float _e9 = to_f32_(size_5);
+    float _e6 = to_f32_(size_7);
+    float _e9 = to_f32_(size_7);
     uint _e14 = to_u32_(metal::clamp(metal::floor(((a_9 + 1.0) * 0.5) * _e6), 0.0, _e9 - 1.0));
     return _e14;
 }
@@ -1355,21 +1616,37 @@ float rsm_texel_solid_angle(
 
 metal::float3 point_irradiance(
     metal::float3 intensity_1,
-    metal::float3 n_11,
-    metal::float3 v_2
+    metal::float3 n_15,
+    metal::float3 v_3
 ) {
-    float d2_12 = metal::dot(v_2, v_2);
-    float cos_x_1 = metal::dot(n_11, v_2) / metal::sqrt(metal::max(d2_12, MIN_D2_));
-    float _e11 = inverse_square(d2_12);
-    return intensity_1 * (metal::max(cos_x_1, 0.0) * _e11);
+    float d2_13 = metal::dot(v_3, v_3);
+    float cos_x_2 = metal::dot(n_15, v_3) / metal::sqrt(metal::max(d2_13, MIN_D2_));
+    float _e11 = inverse_square(d2_13);
+    return intensity_1 * (metal::max(cos_x_2, 0.0) * _e11);
 }
 
 metal::float3 directional_irradiance(
-    metal::float3 e_1,
-    metal::float3 n_12,
+    metal::float3 e_2,
+    metal::float3 n_16,
     metal::float3 to_light
 ) {
-    return e_1 * metal::max(metal::dot(n_12, to_light), 0.0);
+    return e_2 * metal::max(metal::dot(n_16, to_light), 0.0);
+}
+
+float perspective_texel_width(
+    float extent_2,
+    float d_2,
+    float z_2,
+    float size_8
+) {
+    return (((2.0 * extent_2) * d_2) * d_2) / (size_8 * z_2);
+}
+
+float ortho_texel_width(
+    float extent_3,
+    float size_9
+) {
+    return (2.0 * extent_3) / size_9;
 }
 
 float shadow_bias(
@@ -1381,35 +1658,35 @@ float shadow_bias(
 }
 
 bool shadow_lit(
-    float d_1,
+    float d_3,
     float d_map,
     float bias
 ) {
-    bool local_13 = {};
+    bool local_19 = {};
     if (!((d_map <= 0.0))) {
-        local_13 = d_1 <= (d_map + bias);
+        local_19 = d_3 <= (d_map + bias);
     } else {
-        local_13 = true;
+        local_19 = true;
     }
-    bool _e11 = local_13;
+    bool _e11 = local_19;
     return _e11;
 }
 
 metal::float3 diffuse_radiance(
     metal::float3 albedo,
     metal::float3 emission,
-    metal::float3 e_2
+    metal::float3 e_3
 ) {
-    return emission + ((albedo * INV_PI) * e_2);
+    return emission + ((albedo * INV_PI) * e_3);
 }
 
 metal::float3 light_intensity(
     GpuLight l,
-    metal::float3 w_8
+    metal::float3 w_9
 ) {
     switch(l.kind) {
         case 1u: {
-            float _e8 = spot_falloff(metal::dot(l.p1_, w_8), l.a, l.b);
+            float _e8 = spot_falloff(metal::dot(l.p1_, w_9), l.a, l.b);
             return l.intensity * _e8;
         }
         default: {
@@ -1486,21 +1763,21 @@ kernel void main_(
         direct[i_2] = metal::float4(0.0);
         return;
     }
-    metal::float3 x_10 = p_4.xyz;
-    metal::float3 n_15 = metal::normalize(nn);
+    metal::float3 x_14 = p_4.xyz;
+    metal::float3 n_19 = metal::normalize(nn);
     uint _e55 = params.size;
-    float size_6 = static_cast<float>(_e55);
+    float size_10 = static_cast<float>(_e55);
     metal::float3 _e66 = params.origin;
-    metal::float3 rel_1 = x_10 - _e66;
+    metal::float3 rel_1 = x_14 - _e66;
     metal::float3 _e70 = params.axis;
     uint _e73 = params.mode;
     float _e76 = light_map_depth(rel_1, _e70, _e73 == MAP_PERSPECTIVE);
     uint _e83 = params.mode;
     if (_e83 == MAP_PERSPECTIVE) {
-        metal::float3 v_10 = -(rel_1);
+        metal::float3 v_12 = -(rel_1);
         metal::float3 _e89 = params.axis;
-        float z_2 = metal::dot(rel_1, _e89);
-        if (!((z_2 <= 0.0))) {
+        float z_4 = metal::dot(rel_1, _e89);
+        if (!((z_4 <= 0.0))) {
             local_2 = _e76 <= 0.0;
         } else {
             local_2 = true;
@@ -1512,59 +1789,61 @@ kernel void main_(
         }
         metal::float3 _e106 = params.right;
         float _e110 = params.extent;
-        a = metal::dot(rel_1, _e106) / (z_2 * _e110);
+        a = metal::dot(rel_1, _e106) / (z_4 * _e110);
         metal::float3 _e115 = params.up;
         float _e119 = params.extent;
-        b = metal::dot(rel_1, _e115) / (z_2 * _e119);
+        b = metal::dot(rel_1, _e115) / (z_4 * _e119);
         float _e124 = params.extent;
-        width = (((2.0 * _e124) * _e76) * _e76) / (size_6 * z_2);
-        cos_light = metal::dot(n_15, v_10) / _e76;
-        GpuLight _e135 = params.light;
-        metal::float3 _e138 = light_intensity(_e135, rel_1 / metal::float3(_e76));
-        metal::float3 _e139 = point_irradiance(_e138, n_15, v_10);
-        e = _e139;
+        float _e125 = perspective_texel_width(_e124, _e76, z_4, size_10);
+        width = _e125;
+        cos_light = metal::dot(n_19, v_12) / _e76;
+        GpuLight _e130 = params.light;
+        metal::float3 _e133 = light_intensity(_e130, rel_1 / metal::float3(_e76));
+        metal::float3 _e134 = point_irradiance(_e133, n_19, v_12);
+        e = _e134;
     } else {
-        metal::float3 _e142 = params.right;
-        float _e146 = params.extent;
-        a = metal::dot(rel_1, _e142) / _e146;
-        metal::float3 _e150 = params.up;
-        float _e154 = params.extent;
-        b = metal::dot(rel_1, _e150) / _e154;
-        float _e158 = params.extent;
-        width = (2.0 * _e158) / size_6;
-        metal::float3 _e164 = params.axis;
-        cos_light = -(metal::dot(n_15, _e164));
-        metal::float3 _e170 = params.light.intensity;
-        metal::float3 _e173 = params.axis;
-        metal::float3 _e175 = directional_irradiance(_e170, n_15, -(_e173));
-        e = _e175;
+        metal::float3 _e137 = params.right;
+        float _e141 = params.extent;
+        a = metal::dot(rel_1, _e137) / _e141;
+        metal::float3 _e145 = params.up;
+        float _e149 = params.extent;
+        b = metal::dot(rel_1, _e145) / _e149;
+        float _e153 = params.extent;
+        float _e154 = ortho_texel_width(_e153, size_10);
+        width = _e154;
+        metal::float3 _e157 = params.axis;
+        cos_light = -(metal::dot(n_19, _e157));
+        metal::float3 _e163 = params.light.intensity;
+        metal::float3 _e166 = params.axis;
+        metal::float3 _e168 = directional_irradiance(_e163, n_19, -(_e166));
+        e = _e168;
     }
-    float _e176 = a;
-    if (metal::abs(_e176) <= 1.0) {
-        float _e182 = b;
-        local_3 = metal::abs(_e182) <= 1.0;
+    float _e169 = a;
+    if (metal::abs(_e169) <= 1.0) {
+        float _e175 = b;
+        local_3 = metal::abs(_e175) <= 1.0;
     } else {
         local_3 = false;
     }
-    bool _e187 = local_3;
-    if (_e187) {
-        float _e189 = a;
-        uint _e192 = params.size;
-        uint _e193 = light_map_texel(_e189, _e192);
-        float _e195 = b;
-        uint _e198 = params.size;
-        uint _e199 = light_map_texel(_e195, _e198);
-        metal::float4 _e203 = shadow_map.read(metal::uint2(metal::int2(static_cast<int>(_e193), static_cast<int>(_e199))), 0);
-        float d_map_1 = _e203.x;
-        float _e205 = width;
-        float _e206 = cos_light;
-        float _e207 = shadow_bias(_e205, _e206);
-        bool _e208 = shadow_lit(_e76, d_map_1, _e207);
-        if (!(_e208)) {
+    bool _e180 = local_3;
+    if (_e180) {
+        float _e182 = a;
+        uint _e185 = params.size;
+        uint _e186 = light_map_texel(_e182, _e185);
+        float _e188 = b;
+        uint _e191 = params.size;
+        uint _e192 = light_map_texel(_e188, _e191);
+        metal::float4 _e196 = shadow_map.read(metal::uint2(metal::int2(static_cast<int>(_e186), static_cast<int>(_e192))), 0);
+        float d_map_1 = _e196.x;
+        float _e198 = width;
+        float _e199 = cos_light;
+        float _e200 = shadow_bias(_e198, _e199);
+        bool _e201 = shadow_lit(_e76, d_map_1, _e200);
+        if (!(_e201)) {
             e = metal::float3(0.0);
         }
     }
-    metal::float3 _e214 = e;
-    direct[i_2] = metal::float4(_e214, 0.0);
+    metal::float3 _e207 = e;
+    direct[i_2] = metal::float4(_e207, 0.0);
     return;
 }

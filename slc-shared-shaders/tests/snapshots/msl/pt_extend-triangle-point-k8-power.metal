@@ -237,6 +237,7 @@ constant uint MAP_CAMERA = 0u;
 constant uint MAP_PERSPECTIVE = 1u;
 constant uint MAP_ORTHOGRAPHIC = 2u;
 constant float XI_STEP = 0.000000059604645;
+constant uint PICK_STREAM = 2654435769u;
 constant float TWO_PI = 6.2831855;
 constant float CULL_RADIUS_SCALE = 1.000001;
 constant float SPHERE_PAD = 0.00000047683716;
@@ -245,11 +246,15 @@ constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
 constant uint BSH_NONE = 4294967295u;
+constant uint RESERVOIR_FULL = 4294967295u;
 constant uint LIGHT_BVH_LEAF = 4294967295u;
 constant float ONE_MINUS_EPSILON = 0.99999994;
+constant float F32_MAX = 340282350000000000000000000000000000000.0;
+constant float DEPTH_NONE = 1000000000000000000000000000000.0;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
 constant uint NEAR_BLOCK = 64u;
+constant uint ROULETTE_DEPTH = 2u;
 constant uint K = 8u;
 
 float at(
@@ -343,6 +348,34 @@ float xi_for(
     return _e9;
 }
 
+uint point_stream(
+    uint seed_1,
+    uint point,
+    uint frame_1
+) {
+    uint _e3 = pcg_hash(frame_1);
+    uint _e5 = pcg_hash(point ^ _e3);
+    uint _e7 = pcg_hash(seed_1 ^ _e5);
+    return _e7;
+}
+
+uint pick_stream(
+    uint stream
+) {
+    uint _e3 = pcg_hash(stream ^ PICK_STREAM);
+    return _e3;
+}
+
+uint path_stream(
+    uint seed_2,
+    uint pixel,
+    uint pass_index
+) {
+    uint _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
+    uint _e5 = point_stream(seed_2, pixel, _e4);
+    return _e5;
+}
+
 float rr_probability(
     float rt2_,
     float d2_
@@ -409,8 +442,8 @@ float windowed_falloff(
     float range2_
 ) {
     float q_2 = d2_3 / range2_;
-    float w_10 = metal::saturate(1.0 - (q_2 * q_2));
-    return (w_10 * w_10) / metal::max(d2_3, 0.0001);
+    float w_11 = metal::saturate(1.0 - (q_2 * q_2));
+    return (w_11 * w_11) / metal::max(d2_3, 0.0001);
 }
 
 bool sphere_contains_point(
@@ -446,38 +479,38 @@ metal::float4 sphere_union(
     metal::float3 c2_1,
     float r2_3
 ) {
-    bool local_4 = {};
+    bool local_3 = {};
     metal::float3 v_7 = c2_1 - c1_1;
-    float d_3 = metal::sqrt(metal::dot(v_7, v_7));
+    float d_5 = metal::sqrt(metal::dot(v_7, v_7));
     float _e8 = sphere_pad(r1_1, c1_1);
-    if (r1_1 >= ((d_3 + r2_3) + _e8)) {
+    if (r1_1 >= ((d_5 + r2_3) + _e8)) {
         return metal::float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     float _e16 = sphere_pad(r2_3, c2_1);
-    if (r2_3 >= ((d_3 + r1_1) + _e16)) {
+    if (r2_3 >= ((d_5 + r1_1) + _e16)) {
         return metal::float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_3 >= SPHERE_HUGE))) {
-        local_4 = (0.5 * ((d_3 + r1_1) + r2_3)) >= SPHERE_HUGE;
+    if (!((d_5 >= SPHERE_HUGE))) {
+        local_3 = (0.5 * ((d_5 + r1_1) + r2_3)) >= SPHERE_HUGE;
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    bool _e35 = local_4;
+    bool _e35 = local_3;
     if (_e35) {
         return metal::float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if (metal::abs(r1_1 - r2_3) >= d_3) {
+    if (metal::abs(r1_1 - r2_3) >= d_5) {
         if (r1_1 >= r2_3) {
-            float rn = metal::max(r1_1, d_3 + r2_3);
+            float rn = metal::max(r1_1, d_5 + r2_3);
             float _e50 = sphere_pad(rn, c1_1);
             return metal::float4(c1_1.x, c1_1.y, c1_1.z, rn + _e50);
         }
-        float rm = metal::max(r2_3, d_3 + r1_1);
+        float rm = metal::max(r2_3, d_5 + r1_1);
         float _e58 = sphere_pad(rm, c2_1);
         return metal::float4(c2_1.x, c2_1.y, c2_1.z, rm + _e58);
     }
-    float r0_ = 0.5 * ((d_3 + r1_1) + r2_3);
-    metal::float3 c_9 = c1_1 + (v_7 * ((r0_ - r1_1) / d_3));
+    float r0_ = 0.5 * ((d_5 + r1_1) + r2_3);
+    metal::float3 c_9 = c1_1 + (v_7 * ((r0_ - r1_1) / d_5));
     metal::float3 e1_ = c_9 - c1_1;
     metal::float3 e2_ = c_9 - c2_1;
     float r_4 = metal::max(r0_, metal::max(metal::sqrt(metal::dot(e1_, e1_)) + r1_1, metal::sqrt(metal::dot(e2_, e2_)) + r2_3));
@@ -531,11 +564,46 @@ float connection_factor(
     return ((cos_x * _e4) * _e6) * w_1;
 }
 
-float vpl_lobe(
+float connection_cosine(
+    metal::float3 x_4,
+    metal::float3 y,
     metal::float3 n,
+    metal::float3 ng,
+    float r2_5
+) {
+    bool local_4 = {};
+    bool local_5 = {};
+    metal::float3 v_9 = x_4 - y;
+    float d2_11 = metal::dot(v_9, v_9);
+    bool _e7 = slc_keep(r2_5, d2_11);
+    if (!(!(_e7))) {
+        local_4 = !((d2_11 > 0.0));
+    } else {
+        local_4 = true;
+    }
+    bool _e16 = local_4;
+    if (_e16) {
+        return 0.0;
+    }
+    metal::float3 w_12 = v_9 / metal::float3(metal::sqrt(d2_11));
+    float cos_x_1 = -(metal::dot(n, w_12));
+    if (!((cos_x_1 <= 0.0))) {
+        local_5 = metal::dot(ng, w_12) >= 0.0;
+    } else {
+        local_5 = true;
+    }
+    bool _e32 = local_5;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float vpl_lobe(
+    metal::float3 n_1,
     metal::float3 w_2
 ) {
-    return metal::max(metal::dot(n, w_2), 0.0) * INV_PI;
+    return metal::max(metal::dot(n_1, w_2), 0.0) * INV_PI;
 }
 
 float vpl_transfer(
@@ -561,11 +629,11 @@ float spot_falloff(
 }
 
 float triangle_lobe(
-    metal::float3 n_1,
+    metal::float3 n_2,
     float area,
     metal::float3 w_3
 ) {
-    return area * metal::max(metal::dot(n_1, w_3), 0.0);
+    return area * metal::max(metal::dot(n_2, w_3), 0.0);
 }
 
 metal::float3 triangle_sample(
@@ -594,11 +662,11 @@ float area_to_solid_angle_pdf(
 }
 
 float atan_portable(
-    float x_4
+    float x_5
 ) {
     float base = 0.0;
     float t = {};
-    float a_10 = metal::abs(x_4);
+    float a_10 = metal::abs(x_5);
     t = a_10;
     if (a_10 > 2.4142137) {
         base = 1.5707964;
@@ -611,32 +679,32 @@ float atan_portable(
     }
     float _e18 = t;
     float _e19 = t;
-    float z_1 = _e18 * _e19;
+    float z_3 = _e18 * _e19;
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_5 = _e21 + (((((((((0.080537446 * z_1) - 0.13877685) * z_1) + 0.19977711) * z_1) - 0.3333295) * z_1) * _e33) + _e35);
-    return (x_4 < 0.0) ? -(r_5) : r_5;
+    float r_5 = _e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35);
+    return (x_5 < 0.0) ? -(r_5) : r_5;
 }
 
 float atan2_portable(
-    float y,
-    float x_5
+    float y_1,
+    float x_6
 ) {
-    if (x_5 == 0.0) {
-        if (y > 0.0) {
+    if (x_6 == 0.0) {
+        if (y_1 > 0.0) {
             return 1.5707964;
         }
-        if (y < 0.0) {
+        if (y_1 < 0.0) {
             return -1.5707964;
         }
         return 0.0;
     }
-    float _e12 = atan_portable(y / x_5);
-    if (x_5 > 0.0) {
+    float _e12 = atan_portable(y_1 / x_6);
+    if (x_6 > 0.0) {
         return _e12;
     }
-    if (y >= 0.0) {
+    if (y_1 >= 0.0) {
         return _e12 + 3.1415927;
     }
     return _e12 - 3.1415927;
@@ -697,17 +765,17 @@ float ies_fold_c(
 uint ies_segment(
     Table tab_1,
     uint start,
-    uint n_2,
-    float x_6,
+    uint n_3,
+    float x_7,
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint lo = 0u;
     uint hi = {};
-    if (n_2 < 2u) {
+    if (n_3 < 2u) {
         return 0u;
     }
-    hi = n_2 - 1u;
+    hi = n_3 - 1u;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
@@ -723,7 +791,7 @@ uint ies_segment(
             uint _e18 = hi;
             uint mid = (_e17 + _e18) >> 1u;
             float _e23 = at(tab_1, start + mid, slc_table, _buffer_sizes);
-            if (_e23 <= x_6) {
+            if (_e23 <= x_7) {
                 lo = mid;
             } else {
                 hi = mid;
@@ -737,12 +805,12 @@ uint ies_segment(
 float ies_lerp_t(
     float a0_,
     float a1_,
-    float x_7
+    float x_8
 ) {
     if (a1_ <= a0_) {
         return 0.0;
     }
-    return metal::saturate((x_7 - a0_) / (a1_ - a0_));
+    return metal::saturate((x_8 - a0_) / (a1_ - a0_));
 }
 
 float ies_candela(
@@ -753,7 +821,7 @@ float ies_candela(
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_5 = {};
+    bool local_6 = {};
     float _e4 = at(tab_2, base_1, slc_table, _buffer_sizes);
     uint _e5 = to_u32_(_e4);
     float _e8 = at(tab_2, base_1 + 1u, slc_table, _buffer_sizes);
@@ -764,11 +832,11 @@ float ies_candela(
     float _e14 = at(tab_2, v0_, slc_table, _buffer_sizes);
     if (!((gamma < _e14))) {
         float _e22 = at(tab_2, (v0_ + _e5) - 1u, slc_table, _buffer_sizes);
-        local_5 = gamma > _e22;
+        local_6 = gamma > _e22;
     } else {
-        local_5 = true;
+        local_6 = true;
     }
-    bool _e25 = local_5;
+    bool _e25 = local_6;
     if (_e25) {
         return 0.0;
     }
@@ -812,6 +880,20 @@ float ies_candela_dir(
     return _e20;
 }
 
+float ies_light_candela(
+    Table tab_4,
+    uint base_3,
+    metal::float3 nadir,
+    metal::float3 reference,
+    metal::float3 w_4,
+    device type_4 const& slc_table,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 side = metal::cross(reference, nadir);
+    float _e9 = ies_candela_dir(tab_4, base_3, metal::dot(w_4, nadir), metal::dot(w_4, reference), metal::dot(w_4, side), slc_table, _buffer_sizes);
+    return _e9;
+}
+
 uint mul_hi_u32_(
     uint a_4,
     uint b_3
@@ -829,13 +911,13 @@ uint mul_hi_u32_(
 }
 
 uint uniform_index(
-    uint n_3,
+    uint n_4,
     uint hi_1,
     uint lo_1
 ) {
-    uint _e3 = mul_lo_u32_(hi_1, n_3);
-    uint _e4 = mul_hi_u32_(hi_1, n_3);
-    uint _e5 = mul_hi_u32_(lo_1, n_3);
+    uint _e3 = mul_lo_u32_(hi_1, n_4);
+    uint _e4 = mul_hi_u32_(hi_1, n_4);
+    uint _e5 = mul_hi_u32_(lo_1, n_4);
     if (_e3 > (4294967295u - _e5)) {
         return _e4 + 1u;
     }
@@ -843,45 +925,82 @@ uint uniform_index(
 }
 
 uint reservoir_slot(
-    uint n_4,
+    uint n_5,
     uint k,
     uint hi_2,
     uint lo_2
 ) {
-    if (n_4 <= k) {
-        return n_4 - 1u;
+    if (n_5 <= k) {
+        return n_5 - 1u;
     }
-    uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    uint _e7 = uniform_index(n_5, hi_2, lo_2);
     if (_e7 < k) {
         return _e7;
     }
     return k;
 }
 
+bool reservoir_takes(
+    uint n_6
+) {
+    return n_6 < RESERVOIR_FULL;
+}
+
 float reservoir_weight(
-    uint n_5,
+    uint n_7,
     uint k_1
 ) {
-    float _e2 = to_f32_(n_5);
+    float _e2 = to_f32_(n_7);
     float _e3 = to_f32_(k_1);
     return metal::max(_e2 / _e3, 1.0);
 }
 
 bool weighted_replace(
-    float w_4,
+    float w_5,
     float w_sum,
     float u_1
 ) {
-    return (u_1 * w_sum) < w_4;
+    return (u_1 * w_sum) < w_5;
 }
 
 float weighted_pick_weight(
     float w_sum_1,
-    float w_5,
+    float w_6,
     uint k_2
 ) {
     float _e3 = to_f32_(k_2);
-    return w_sum_1 / (_e3 * w_5);
+    return w_sum_1 / (_e3 * w_6);
+}
+
+float reservoir_select_pdf(
+    uint seen,
+    bool in_range,
+    uint k_3
+) {
+    uint others = {};
+    bool local_7 = {};
+    others = seen;
+    if (in_range) {
+        local_7 = seen > 0u;
+    } else {
+        local_7 = false;
+    }
+    bool _e9 = local_7;
+    if (_e9) {
+        others = seen - 1u;
+    }
+    uint _e12 = others;
+    float _e15 = reservoir_weight(_e12 + 1u, k_3);
+    return 1.0 / _e15;
+}
+
+uint uniform_light(
+    float u_2,
+    uint n_8
+) {
+    float _e2 = to_f32_(n_8);
+    uint _e4 = to_u32_(u_2 * _e2);
+    return metal::min(_e4, n_8 - 1u);
 }
 
 float cos_sub_clamped(
@@ -909,9 +1028,9 @@ float sin_sub_clamped(
 }
 
 float safe_sqrt(
-    float x_8
+    float x_9
 ) {
-    return metal::sqrt(metal::max(x_8, 0.0));
+    return metal::sqrt(metal::max(x_9, 0.0));
 }
 
 float light_importance(
@@ -922,18 +1041,18 @@ float light_importance(
     float cos_o,
     float cos_e,
     metal::float3 p,
-    metal::float3 n_6
+    metal::float3 n_9
 ) {
     float imp = {};
-    metal::float3 v_9 = p - center;
-    float dist2_ = metal::dot(v_9, v_9);
-    float r2_5 = radius * radius;
-    float d2_11 = metal::max(metal::max(dist2_, r2_5), MIN_D2_);
-    metal::float3 wi = (dist2_ > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
+    metal::float3 v_10 = p - center;
+    float dist2_ = metal::dot(v_10, v_10);
+    float r2_6 = radius * radius;
+    float d2_12 = metal::max(metal::max(dist2_, r2_6), MIN_D2_);
+    metal::float3 wi = (dist2_ > 0.0) ? (v_10 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e32 = safe_sqrt(1.0 - (r2_5 / dist2_));
-    float cos_b_2 = (dist2_ <= r2_5) ? -1.0 : _e32;
+    float _e32 = safe_sqrt(1.0 - (r2_6 / dist2_));
+    float cos_b_2 = (dist2_ <= r2_6) ? -1.0 : _e32;
     float _e39 = safe_sqrt(1.0 - (cos_b_2 * cos_b_2));
     float _e43 = safe_sqrt(1.0 - (cos_o * cos_o));
     float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -942,9 +1061,9 @@ float light_importance(
     if (_e46 <= cos_e) {
         return 0.0;
     }
-    imp = (phi * _e46) / d2_11;
-    if (metal::dot(n_6, n_6) > 0.0) {
-        float cos_i = -(metal::dot(wi, n_6));
+    imp = (phi * _e46) / d2_12;
+    if (metal::dot(n_9, n_9) > 0.0) {
+        float cos_i = -(metal::dot(wi, n_9));
         float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
         float _e61 = imp;
         float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
@@ -972,26 +1091,26 @@ float cone_weight(
     float cos_e_1,
     float rt2_5,
     metal::float3 p_1,
-    metal::float3 n_7
+    metal::float3 n_10
 ) {
-    metal::float3 v_10 = p_1 - center_1;
-    float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_7);
-    float _e14 = candidate_weight(_e10 * INV_PI, rt2_5, metal::dot(v_10, v_10));
+    metal::float3 v_11 = p_1 - center_1;
+    float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
+    float _e14 = candidate_weight(_e10 * INV_PI, rt2_5, metal::dot(v_11, v_11));
     return _e14;
 }
 
 float weighted_select_pdf(
-    float w_6,
+    float w_7,
     float w_sum_2,
-    bool in_range,
-    uint k_3
+    bool in_range_1,
+    uint k_4
 ) {
-    if (w_6 <= 0.0) {
+    if (w_7 <= 0.0) {
         return 0.0;
     }
-    float total = in_range ? w_sum_2 : (w_sum_2 + w_6);
-    float _e9 = to_f32_(k_3);
-    return (_e9 * w_6) / total;
+    float total = in_range_1 ? w_sum_2 : (w_sum_2 + w_7);
+    float _e9 = to_f32_(k_4);
+    return (_e9 * w_7) / total;
 }
 
 float bvh_first_prob(
@@ -1006,14 +1125,47 @@ float bvh_first_prob(
 }
 
 float bvh_remap_u(
-    float u_2,
+    float u_3,
     float p0_,
     bool first
 ) {
     if (first) {
-        return metal::min(u_2 / p0_, ONE_MINUS_EPSILON);
+        return metal::min(u_3 / p0_, ONE_MINUS_EPSILON);
     }
-    return metal::clamp((u_2 - p0_) / (1.0 - p0_), 0.0, ONE_MINUS_EPSILON);
+    return metal::clamp((u_3 - p0_) / (1.0 - p0_), 0.0, ONE_MINUS_EPSILON);
+}
+
+float surface_offset(
+    float diag
+) {
+    return 0.00001 * diag;
+}
+
+float ray_t_min(
+    float diag_1
+) {
+    return 0.000001 * diag_1;
+}
+
+float shadow_margin(
+    float len
+) {
+    return 0.0001 * len;
+}
+
+float ray_inverse(
+    float x_10
+) {
+    return 1.0 / ((metal::abs(x_10) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_10);
+}
+
+metal::float3 ray_inverse3_(
+    metal::float3 d
+) {
+    float _e2 = ray_inverse(d.x);
+    float _e4 = ray_inverse(d.y);
+    float _e6 = ray_inverse(d.z);
+    return metal::float3(_e2, _e4, _e6);
 }
 
 float ray_aabb(
@@ -1040,26 +1192,26 @@ metal::float3 triangle_normal(
     metal::float3 b_4,
     metal::float3 c_6
 ) {
-    bool local_6 = {};
-    metal::float3 n_20 = metal::cross(b_4 - a_5, c_6 - a_5);
-    float l2_ = metal::dot(n_20, n_20);
+    bool local_8 = {};
+    metal::float3 n_24 = metal::cross(b_4 - a_5, c_6 - a_5);
+    float l2_ = metal::dot(n_24, n_24);
     if (!(!((l2_ > 0.0)))) {
-        local_6 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_8 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_6 = true;
+        local_8 = true;
     }
-    bool _e17 = local_6;
+    bool _e17 = local_8;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_20 / metal::float3(metal::sqrt(l2_));
+    return n_24 / metal::float3(metal::sqrt(l2_));
 }
 
 metal::float3 face_against(
-    metal::float3 n_8,
+    metal::float3 n_11,
     metal::float3 dir
 ) {
-    return (metal::dot(n_8, dir) > 0.0) ? -(n_8) : n_8;
+    return (metal::dot(n_11, dir) > 0.0) ? -(n_11) : n_11;
 }
 
 metal::float3 barycentric(
@@ -1087,74 +1239,74 @@ metal::float3 shading_normal(
     metal::float3 n0_,
     metal::float3 n1_,
     metal::float3 n2_,
-    metal::float3 w_7,
+    metal::float3 w_8,
     metal::float3 facing
 ) {
-    bool local_7 = {};
-    metal::float3 s_1 = ((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z);
+    bool local_9 = {};
+    metal::float3 s_1 = ((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z);
     float l2_1 = metal::dot(s_1, s_1);
     if (!(!((l2_1 > 0.000000000001)))) {
-        local_7 = !((l2_1 < 300000000000000000000000000000000000000.0));
+        local_9 = !((l2_1 < 300000000000000000000000000000000000000.0));
     } else {
-        local_7 = true;
+        local_9 = true;
     }
-    bool _e24 = local_7;
+    bool _e24 = local_9;
     if (_e24) {
         return facing;
     }
-    metal::float3 n_21 = s_1 / metal::float3(metal::sqrt(l2_1));
-    return (metal::dot(n_21, facing) < 0.0) ? -(n_21) : n_21;
+    metal::float3 n_25 = s_1 / metal::float3(metal::sqrt(l2_1));
+    return (metal::dot(n_25, facing) < 0.0) ? -(n_25) : n_25;
 }
 
 float ray_triangle(
     metal::float3 o_1,
-    metal::float3 d,
+    metal::float3 d_1,
     metal::float3 a_7,
     metal::float3 b_6,
     metal::float3 c_8,
     float t_min,
     float t_max_1
 ) {
-    bool local_8 = {};
-    bool local_9 = {};
     bool local_10 = {};
+    bool local_11 = {};
+    bool local_12 = {};
     metal::float3 e1_2 = b_6 - a_7;
     metal::float3 e2_2 = c_8 - a_7;
-    metal::float3 p_3 = metal::cross(d, e2_2);
+    metal::float3 p_3 = metal::cross(d_1, e2_2);
     float det = metal::dot(e1_2, p_3);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
     metal::float3 s_2 = o_1 - a_7;
-    float u_4 = metal::dot(s_2, p_3) * inv;
-    if (!((u_4 < 0.0))) {
-        local_8 = u_4 > 1.0;
+    float u_6 = metal::dot(s_2, p_3) * inv;
+    if (!((u_6 < 0.0))) {
+        local_10 = u_6 > 1.0;
     } else {
-        local_8 = true;
+        local_10 = true;
     }
-    bool _e28 = local_8;
+    bool _e28 = local_10;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_5 = metal::cross(s_2, e1_2);
-    float v_11 = metal::dot(d, q_5) * inv;
-    if (!((v_11 < 0.0))) {
-        local_9 = (u_4 + v_11) > 1.0;
+    float v_12 = metal::dot(d_1, q_5) * inv;
+    if (!((v_12 < 0.0))) {
+        local_11 = (u_6 + v_12) > 1.0;
     } else {
-        local_9 = true;
+        local_11 = true;
     }
-    bool _e42 = local_9;
+    bool _e42 = local_11;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_2, q_5) * inv;
     if (t_3 > t_min) {
-        local_10 = t_3 < t_max_1;
+        local_12 = t_3 < t_max_1;
     } else {
-        local_10 = false;
+        local_12 = false;
     }
-    bool _e51 = local_10;
+    bool _e51 = local_12;
     if (_e51) {
         return t_3;
     }
@@ -1191,20 +1343,20 @@ float light_strategy_pdf(
     float area_1,
     float cos_y
 ) {
-    bool local_11 = {};
-    bool local_12 = {};
+    bool local_13 = {};
+    bool local_14 = {};
     if (!((d2_8 <= 0.0))) {
-        local_11 = area_1 <= 0.0;
+        local_13 = area_1 <= 0.0;
     } else {
-        local_11 = true;
+        local_13 = true;
     }
-    bool _e13 = local_11;
+    bool _e13 = local_13;
     if (!(_e13)) {
-        local_12 = cos_y <= 0.0;
+        local_14 = cos_y <= 0.0;
     } else {
-        local_12 = true;
+        local_14 = true;
     }
-    bool _e20 = local_12;
+    bool _e20 = local_14;
     if (_e20) {
         return 0.0;
     }
@@ -1226,33 +1378,83 @@ float cosine_pdf(
 }
 
 metal::float3 cosine_direction(
-    metal::float3 n_9,
+    metal::float3 n_12,
     float u1_1,
     float u2_1
 ) {
-    float s_5 = (n_9.z >= 0.0) ? 1.0 : -1.0;
-    float a_12 = -1.0 / (s_5 + n_9.z);
-    float b_9 = (n_9.x * n_9.y) * a_12;
-    metal::float3 t_4 = metal::float3(1.0 + (((s_5 * n_9.x) * n_9.x) * a_12), s_5 * b_9, -(s_5) * n_9.x);
-    metal::float3 bt = metal::float3(b_9, s_5 + ((n_9.y * n_9.y) * a_12), -(n_9.y));
+    float s_5 = (n_12.z >= 0.0) ? 1.0 : -1.0;
+    float a_12 = -1.0 / (s_5 + n_12.z);
+    float b_9 = (n_12.x * n_12.y) * a_12;
+    metal::float3 t_4 = metal::float3(1.0 + (((s_5 * n_12.x) * n_12.x) * a_12), s_5 * b_9, -(s_5) * n_12.x);
+    metal::float3 bt = metal::float3(b_9, s_5 + ((n_12.y * n_12.y) * a_12), -(n_12.y));
     float r_6 = metal::sqrt(u1_1);
     float phi_2 = 6.2831855 * u2_1;
-    return metal::normalize(((t_4 * (r_6 * metal::cos(phi_2))) + (bt * (r_6 * metal::sin(phi_2)))) + (n_9 * metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
+    return metal::normalize(((t_4 * (r_6 * metal::cos(phi_2))) + (bt * (r_6 * metal::sin(phi_2)))) + (n_12 * metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
+}
+
+float inv_sigma_z(
+    float z
+) {
+    return 1.0 / (DEPTH_SIGMA * z);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint window_start(
+    uint x_11,
+    uint size
+) {
+    uint half_ = naga_div(size, 2u);
+    return metal::max(x_11, half_) - half_;
+}
+
+uint window_end(
+    uint x_12,
+    uint size_1,
+    uint extent_1
+) {
+    return metal::min((x_12 + size_1) - naga_div(size_1, 2u), extent_1);
+}
+
+uint wide_window(
+    uint period
+) {
+    return 2u * period;
+}
+
+bool misses_subset(
+    uint covered,
+    uint period_1
+) {
+    return covered < (period_1 * period_1);
+}
+
+metal::float3 filtered_irradiance(
+    metal::float3 e,
+    metal::float3 sum,
+    float weight
+) {
+    if (weight > 0.0) {
+        return sum / metal::float3(weight);
+    }
+    return e;
 }
 
 float bilateral_weight(
-    metal::float3 n_10,
+    metal::float3 n_13,
     metal::float3 nj,
-    float z,
+    float z_1,
     float zj,
     float inv_sz
 ) {
-    float dn = metal::max(metal::dot(n_10, nj), 0.0);
+    float dn = metal::max(metal::dot(n_13, nj), 0.0);
     float dn2_ = dn * dn;
     float dn4_ = dn2_ * dn2_;
     float dn8_ = dn4_ * dn4_;
-    float d_4 = (zj - z) * inv_sz;
-    float t_5 = metal::max(1.0 - (d_4 * d_4), 0.0);
+    float d_6 = (zj - z_1) * inv_sz;
+    float t_5 = metal::max(1.0 - (d_6 * d_6), 0.0);
     return ((dn8_ * dn8_) * t_5) * t_5;
 }
 
@@ -1261,58 +1463,61 @@ uint naga_mod(uint lhs, uint rhs) {
 }
 
 uint interleave_subset(
-    uint x_9,
-    uint y_1,
-    uint period
+    uint x_13,
+    uint y_2,
+    uint period_2
 ) {
-    return (naga_mod(y_1, period) * period) + naga_mod(x_9, period);
-}
-
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / metal::select(rhs, 1u, rhs == 0u);
+    return (naga_mod(y_2, period_2) * period_2) + naga_mod(x_13, period_2);
 }
 
 uint interleave_slot(
     uint tx,
     uint ty,
-    uint size,
-    uint period_1
+    uint size_2,
+    uint period_3
 ) {
-    uint side = naga_div(size, period_1);
-    uint _e5 = interleave_subset(tx, ty, period_1);
-    return (((_e5 * side) * side) + (naga_div(ty, period_1) * side)) + naga_div(tx, period_1);
+    uint side_1 = naga_div(size_2, period_3);
+    uint _e5 = interleave_subset(tx, ty, period_3);
+    return (((_e5 * side_1) * side_1) + (naga_div(ty, period_3) * side_1)) + naga_div(tx, period_3);
 }
 
 uint interleave_slot_linear(
     uint i_1,
     uint per_subset,
-    uint period_2
+    uint period_4
 ) {
-    uint subsets = period_2 * period_2;
+    uint subsets = period_4 * period_4;
     return (naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets);
+}
+
+float interleave_flux_scale(
+    uint period_5
+) {
+    float _e2 = to_f32_(period_5 * period_5);
+    return _e2;
 }
 
 uint near_block_index(
     uint tx_1,
     uint ty_1,
-    uint size_1
+    uint size_3
 ) {
-    uint side_1 = naga_div(size_1, 8u);
-    return ((((naga_div(ty_1, 8u) * side_1) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u);
+    uint side_2 = naga_div(size_3, 8u);
+    return ((((naga_div(ty_1, 8u) * side_2) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u);
 }
 
 uint near_block_tx(
     uint q,
-    uint size_2
+    uint size_4
 ) {
-    return (naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_2, 8u)) * 8u) + naga_mod(q, 8u);
+    return (naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_4, 8u)) * 8u) + naga_mod(q, 8u);
 }
 
 uint near_block_ty(
     uint q_1,
-    uint size_3
+    uint size_5
 ) {
-    return (naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_3, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u);
+    return (naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_5, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u);
 }
 
 float vpl_near_weight(
@@ -1340,12 +1545,68 @@ metal::float3 camera_dir(
     metal::float3 up,
     float px,
     float py,
-    float w_8,
+    float w_9,
     float h_1
 ) {
-    float sx = ((2.0 * px) / w_8) - 1.0;
+    float sx = ((2.0 * px) / w_9) - 1.0;
     float sy = 1.0 - ((2.0 * py) / h_1);
     return metal::normalize((forward + (right * sx)) + (up * sy));
+}
+
+float jittered_pixel(
+    uint coord,
+    float u_4
+) {
+    float _e2 = to_f32_(coord);
+    return _e2 + u_4;
+}
+
+bool plays_roulette(
+    uint depth
+) {
+    return depth >= ROULETTE_DEPTH;
+}
+
+bool sees_emission(
+    metal::float3 gn,
+    metal::float3 dir_1
+) {
+    return metal::dot(gn, dir_1) < 0.0;
+}
+
+bool continues_path(
+    metal::float3 nd,
+    metal::float3 n_14,
+    metal::float3 ng_1
+) {
+    bool local_15 = {};
+    if (metal::dot(nd, n_14) > 0.0) {
+        local_15 = metal::dot(nd, ng_1) > 0.0;
+    } else {
+        local_15 = false;
+    }
+    bool _e12 = local_15;
+    return _e12;
+}
+
+bool finite3_(
+    metal::float3 v_3
+) {
+    bool local_16 = {};
+    bool local_17 = {};
+    if (metal::abs(v_3.x) <= F32_MAX) {
+        local_16 = metal::abs(v_3.y) <= F32_MAX;
+    } else {
+        local_16 = false;
+    }
+    bool _e12 = local_16;
+    if (_e12) {
+        local_17 = metal::abs(v_3.z) <= F32_MAX;
+    } else {
+        local_17 = false;
+    }
+    bool _e20 = local_17;
+    return _e20;
 }
 
 float path_survival(
@@ -1356,19 +1617,19 @@ float path_survival(
 
 float light_map_coord(
     uint t_1,
-    uint size_4
+    uint size_6
 ) {
     float _e2 = to_f32_(t_1);
-    float _e7 = to_f32_(size_4);
+    float _e7 = to_f32_(size_6);
     return ((2.0 * (_e2 + 0.5)) / _e7) - 1.0;
 }
 
 uint light_map_texel(
     float a_8,
-    uint size_5
+    uint size_7
 ) {
-    float _e6 = to_f32_(size_5);
-    float _e9 = to_f32_(size_5);
+    float _e6 = to_f32_(size_7);
+    float _e9 = to_f32_(size_7);
     uint _e14 = to_u32_(metal::clamp(metal::floor(((a_8 + 1.0) * 0.5) * _e6), 0.0, _e9 - 1.0));
     return _e14;
 }
@@ -1390,21 +1651,37 @@ float rsm_texel_solid_angle(
 
 metal::float3 point_irradiance(
     metal::float3 intensity_1,
-    metal::float3 n_11,
-    metal::float3 v_3
+    metal::float3 n_15,
+    metal::float3 v_4
 ) {
-    float d2_12 = metal::dot(v_3, v_3);
-    float cos_x_1 = metal::dot(n_11, v_3) / metal::sqrt(metal::max(d2_12, MIN_D2_));
-    float _e11 = inverse_square(d2_12);
-    return intensity_1 * (metal::max(cos_x_1, 0.0) * _e11);
+    float d2_13 = metal::dot(v_4, v_4);
+    float cos_x_2 = metal::dot(n_15, v_4) / metal::sqrt(metal::max(d2_13, MIN_D2_));
+    float _e11 = inverse_square(d2_13);
+    return intensity_1 * (metal::max(cos_x_2, 0.0) * _e11);
 }
 
 metal::float3 directional_irradiance(
-    metal::float3 e,
-    metal::float3 n_12,
+    metal::float3 e_1,
+    metal::float3 n_16,
     metal::float3 to_light
 ) {
-    return e * metal::max(metal::dot(n_12, to_light), 0.0);
+    return e_1 * metal::max(metal::dot(n_16, to_light), 0.0);
+}
+
+float perspective_texel_width(
+    float extent_2,
+    float d_2,
+    float z_2,
+    float size_8
+) {
+    return (((2.0 * extent_2) * d_2) * d_2) / (size_8 * z_2);
+}
+
+float ortho_texel_width(
+    float extent_3,
+    float size_9
+) {
+    return (2.0 * extent_3) / size_9;
 }
 
 float shadow_bias(
@@ -1416,31 +1693,31 @@ float shadow_bias(
 }
 
 bool shadow_lit(
-    float d_1,
+    float d_3,
     float d_map,
     float bias
 ) {
-    bool local_13 = {};
+    bool local_18 = {};
     if (!((d_map <= 0.0))) {
-        local_13 = d_1 <= (d_map + bias);
+        local_18 = d_3 <= (d_map + bias);
     } else {
-        local_13 = true;
+        local_18 = true;
     }
-    bool _e11 = local_13;
+    bool _e11 = local_18;
     return _e11;
 }
 
 metal::float3 diffuse_radiance(
     metal::float3 albedo,
     metal::float3 emission,
-    metal::float3 e_1
+    metal::float3 e_2
 ) {
-    return emission + ((albedo * INV_PI) * e_1);
+    return emission + ((albedo * INV_PI) * e_2);
 }
 
 metal::float3 light_intensity(
     GpuLight l,
-    metal::float3 w_9
+    metal::float3 w_10
 ) {
     switch(l.kind) {
         case 0u: {
@@ -1448,7 +1725,7 @@ metal::float3 light_intensity(
         }
         case 3u: {
             metal::float3 _e8 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            float _e10 = triangle_lobe(_e8, l.a, w_9);
+            float _e10 = triangle_lobe(_e8, l.a, w_10);
             return l.intensity * _e10;
         }
         default: {
@@ -1490,7 +1767,7 @@ metal::float3 light_normal(
 
 GeoHit trace(
     metal::float3 o_2,
-    metal::float3 d_2,
+    metal::float3 d_4,
     float t_min_1,
     float t_max_2,
     bool any_hit,
@@ -1509,73 +1786,73 @@ GeoHit trace(
         GeoHit _e13 = hit;
         return _e13;
     }
-    metal::float3 inv_d_1 = metal::float3(1.0) / metal::select(d_2, metal::float3(0.000000000000000000000000000001), metal::abs(d_2) < metal::float3(0.000000000000000000000000000001));
+    metal::float3 _e14 = ray_inverse3_(d_4);
     uint2 loop_bound_1 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e30 = node;
-        GpuGeoNode n_22 = geo_nodes[_e30];
-        float _e36 = hit.t;
-        float _e37 = ray_aabb(o_2, inv_d_1, n_22.bmin, n_22.bmax, _e36);
-        if (_e37 >= 0.0) {
-            if (n_22.count > 0u) {
-                i_2 = n_22.first;
+        uint _e21 = node;
+        GpuGeoNode n_26 = geo_nodes[_e21];
+        float _e27 = hit.t;
+        float _e28 = ray_aabb(o_2, _e14, n_26.bmin, n_26.bmax, _e27);
+        if (_e28 >= 0.0) {
+            if (n_26.count > 0u) {
+                i_2 = n_26.first;
                 uint2 loop_bound_2 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
                     if (metal::all(loop_bound_2 == uint2(0u))) { break; }
                     loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                     if (!loop_init) {
-                        uint _e67 = i_2;
-                        i_2 = _e67 + 1u;
+                        uint _e58 = i_2;
+                        i_2 = _e58 + 1u;
                     }
                     loop_init = false;
-                    uint _e45 = i_2;
-                    if (_e45 < (n_22.first + n_22.count)) {
+                    uint _e36 = i_2;
+                    if (_e36 < (n_26.first + n_26.count)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e51 = i_2;
-                        GpuTriangle t_7 = geo_tris[_e51];
-                        float _e58 = hit.t;
-                        float _e59 = ray_triangle(o_2, d_2, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e58);
-                        if (_e59 > 0.0) {
-                            hit.t = _e59;
-                            uint _e64 = i_2;
-                            hit.tri = _e64;
+                        uint _e42 = i_2;
+                        GpuTriangle t_7 = geo_tris[_e42];
+                        float _e49 = hit.t;
+                        float _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        if (_e50 > 0.0) {
+                            hit.t = _e50;
+                            uint _e55 = i_2;
+                            hit.tri = _e55;
                             if (any_hit) {
-                                GeoHit _e65 = hit;
-                                return _e65;
+                                GeoHit _e56 = hit;
+                                return _e56;
                             }
                         }
                     }
                 }
             } else {
-                uint _e69 = sp;
-                if (_e69 < 64u) {
-                    uint _e72 = sp;
-                    stack.inner[_e72] = n_22.first + 1u;
-                    uint _e77 = sp;
-                    sp = _e77 + 1u;
+                uint _e60 = sp;
+                if (_e60 < 64u) {
+                    uint _e63 = sp;
+                    stack.inner[_e63] = n_26.first + 1u;
+                    uint _e68 = sp;
+                    sp = _e68 + 1u;
                 }
-                node = n_22.first;
+                node = n_26.first;
                 continue;
             }
         }
-        uint _e81 = sp;
-        if (_e81 == 0u) {
+        uint _e72 = sp;
+        if (_e72 == 0u) {
             break;
         }
-        uint _e84 = sp;
-        sp = _e84 - 1u;
-        uint _e87 = sp;
-        uint _e89 = stack.inner[_e87];
-        node = _e89;
+        uint _e75 = sp;
+        sp = _e75 - 1u;
+        uint _e78 = sp;
+        uint _e80 = stack.inner[_e78];
+        node = _e80;
     }
-    GeoHit _e90 = hit;
-    return _e90;
+    GeoHit _e81 = hit;
+    return _e81;
 }
 
 bool occluded(
@@ -1586,13 +1863,13 @@ bool occluded(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 dv = b_7 - a_9;
-    float len = metal::length(dv);
-    if (len <= 0.0) {
+    float len_1 = metal::length(dv);
+    if (len_1 <= 0.0) {
         return false;
     }
-    float eps = 0.0001 * len;
-    GeoHit _e13 = trace(a_9, dv / metal::float3(len), eps, len - eps, true, geo_nodes, geo_tris, _buffer_sizes);
-    return _e13.tri != NO_LIGHT;
+    float _e7 = shadow_margin(len_1);
+    GeoHit _e12 = trace(a_9, dv / metal::float3(len_1), _e7, len_1 - _e7, true, geo_nodes, geo_tris, _buffer_sizes);
+    return _e12.tri != NO_LIGHT;
 }
 
 float mis_weight(
@@ -1605,66 +1882,66 @@ float mis_weight(
 
 float light_weight(
     uint li,
-    metal::float3 x_10,
-    metal::float3 n_13,
+    metal::float3 x_14,
+    metal::float3 n_17,
     device type_10 const& light_cones,
     device type_4 const& rt2_7,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_13 = light_cones[li];
     float _e14 = rt2_7[li];
-    float _e15 = cone_weight(c_13.center, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_10, n_13);
+    float _e15 = cone_weight(c_13.center, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_14, n_17);
     return _e15;
 }
 
 float bvh_importance(
     uint i_3,
-    metal::float3 x_11,
-    metal::float3 n_14,
+    metal::float3 x_15,
+    metal::float3 n_18,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightBvhNode b_10 = light_bvh[i_3];
-    float _e12 = light_importance(b_10.center, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_11, n_14);
+    float _e12 = light_importance(b_10.center, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_15, n_18);
     return _e12;
 }
 
 float bvh_first(
     uint i_4,
-    metal::float3 x_12,
-    metal::float3 n_15,
+    metal::float3 x_16,
+    metal::float3 n_19,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_14 = {};
+    bool local_19 = {};
     uint j = light_bvh[i_4].second;
     if (!((j <= (i_4 + 1u)))) {
-        local_14 = j >= (1 + (_buffer_sizes.size5 - 0 - 48) / 48);
+        local_19 = j >= (1 + (_buffer_sizes.size5 - 0 - 48) / 48);
     } else {
-        local_14 = true;
+        local_19 = true;
     }
-    bool _e17 = local_14;
+    bool _e17 = local_19;
     if (_e17) {
         return -1.0;
     }
-    float _e21 = bvh_importance(i_4 + 1u, x_12, n_15, light_bvh, _buffer_sizes);
-    float _e22 = bvh_importance(j, x_12, n_15, light_bvh, _buffer_sizes);
+    float _e21 = bvh_importance(i_4 + 1u, x_16, n_19, light_bvh, _buffer_sizes);
+    float _e22 = bvh_importance(j, x_16, n_19, light_bvh, _buffer_sizes);
     float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
 
 BvhPick light_bvh_sample(
-    metal::float3 x_13,
-    metal::float3 n_16,
+    metal::float3 x_17,
+    metal::float3 n_20,
     float u_in,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float u_3 = {};
+    float u_5 = {};
     uint i_5 = 0u;
     float pmf = 1.0;
-    bool local_15 = {};
-    u_3 = u_in;
+    bool local_20 = {};
+    u_5 = u_in;
     uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
@@ -1674,27 +1951,27 @@ BvhPick light_bvh_sample(
         if (node_1.second == LIGHT_BVH_LEAF) {
             uint _e15 = i_5;
             if (!((_e15 > 0u))) {
-                float _e22 = bvh_importance(0u, x_13, n_16, light_bvh, _buffer_sizes);
-                local_15 = _e22 > 0.0;
+                float _e22 = bvh_importance(0u, x_17, n_20, light_bvh, _buffer_sizes);
+                local_20 = _e22 > 0.0;
             } else {
-                local_15 = true;
+                local_20 = true;
             }
-            bool reaches = local_15;
+            bool reaches = local_20;
             float _e28 = pmf;
             return BvhPick {node_1.light, reaches ? _e28 : 0.0};
         }
         uint _e32 = i_5;
-        float _e33 = bvh_first(_e32, x_13, n_16, light_bvh, _buffer_sizes);
+        float _e33 = bvh_first(_e32, x_17, n_20, light_bvh, _buffer_sizes);
         if (_e33 < 0.0) {
             return BvhPick {0u, 0.0};
         }
-        float _e39 = u_3;
+        float _e39 = u_5;
         bool first_1 = _e39 < _e33;
         float _e41 = pmf;
         pmf = _e41 * (first_1 ? _e33 : (1.0 - _e33));
-        float _e46 = u_3;
+        float _e46 = u_5;
         float _e47 = bvh_remap_u(_e46, _e33, first_1);
-        u_3 = _e47;
+        u_5 = _e47;
         uint _e49 = i_5;
         i_5 = first_1 ? (_e49 + 1u) : node_1.second;
     }
@@ -1703,16 +1980,16 @@ BvhPick light_bvh_sample(
 
 float light_bvh_pmf(
     uint li_1,
-    metal::float3 x_14,
-    metal::float3 n_17,
+    metal::float3 x_18,
+    metal::float3 n_21,
     device type_10 const& light_cones,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint i_6 = 0u;
     float pmf_1 = 1.0;
-    bool local_16 = {};
-    bool local_17 = {};
+    bool local_21 = {};
+    bool local_22 = {};
     uint leaf = light_cones[li_1].bvh_leaf;
     if (leaf >= (1 + (_buffer_sizes.size5 - 0 - 48) / 48)) {
         return 0.0;
@@ -1726,24 +2003,24 @@ float light_bvh_pmf(
         if (node_2.second == LIGHT_BVH_LEAF) {
             uint _e22 = i_6;
             if (!((_e22 > 0u))) {
-                float _e29 = bvh_importance(0u, x_14, n_17, light_bvh, _buffer_sizes);
-                local_16 = _e29 > 0.0;
+                float _e29 = bvh_importance(0u, x_18, n_21, light_bvh, _buffer_sizes);
+                local_21 = _e29 > 0.0;
             } else {
-                local_16 = true;
+                local_21 = true;
             }
-            bool reaches_1 = local_16;
+            bool reaches_1 = local_21;
             float _e34 = pmf_1;
             uint _e35 = i_6;
             if (_e35 == leaf) {
-                local_17 = reaches_1;
+                local_22 = reaches_1;
             } else {
-                local_17 = false;
+                local_22 = false;
             }
-            bool _e40 = local_17;
+            bool _e40 = local_22;
             return _e40 ? _e34 : 0.0;
         }
         uint _e43 = i_6;
-        float _e44 = bvh_first(_e43, x_14, n_17, light_bvh, _buffer_sizes);
+        float _e44 = bvh_first(_e43, x_18, n_21, light_bvh, _buffer_sizes);
         if (_e44 < 0.0) {
             return 0.0;
         }
@@ -1758,50 +2035,36 @@ float light_bvh_pmf(
 
 float select_pdf(
     uint li_2,
-    metal::float3 x_15,
-    metal::float3 n_18,
+    metal::float3 x_19,
+    metal::float3 n_22,
     uint nee,
-    bool in_range_1
+    bool in_range_2
 ) {
-    bool local_18 = {};
-    if (in_range_1) {
-        local_18 = nee > 0u;
-    } else {
-        local_18 = false;
-    }
-    bool _e12 = local_18;
-    uint others = nee - (_e12 ? 1u : 0u);
-    float _e18 = reservoir_weight(others + 1u, K);
-    return 1.0 / _e18;
+    float _e6 = reservoir_select_pdf(nee, in_range_2, K);
+    return _e6;
 }
 
 float light_pdf(
     uint li_3,
-    metal::float3 x_16,
-    metal::float3 n_19,
-    metal::float3 y_2,
+    metal::float3 x_20,
+    metal::float3 n_23,
+    metal::float3 y_3,
     uint nee_1,
-    bool in_range_2,
+    bool in_range_3,
     device type_4 const& rt2_7,
     device type_12 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_4 = lights[li_3];
-    metal::float3 v_12 = x_16 - y_2;
-    float d2_13 = metal::dot(v_12, v_12);
+    metal::float3 v_13 = x_20 - y_3;
+    float d2_14 = metal::dot(v_13, v_13);
     metal::float3 _e11 = light_normal(l_4);
-    float cos_y_1 = (d2_13 > 0.0) ? metal::dot(_e11, v_12 / metal::float3(metal::sqrt(d2_13))) : 0.0;
-    float _e20 = select_pdf(li_3, x_16, n_19, nee_1, in_range_2);
+    float cos_y_1 = (d2_14 > 0.0) ? metal::dot(_e11, v_13 / metal::float3(metal::sqrt(d2_14))) : 0.0;
+    float _e20 = select_pdf(li_3, x_20, n_23, nee_1, in_range_3);
     float _e23 = rt2_7[li_3];
     float _e24 = light_area(l_4);
-    float _e25 = light_strategy_pdf(_e20, _e23, d2_13, _e24, cos_y_1);
+    float _e25 = light_strategy_pdf(_e20, _e23, d2_14, _e24, cos_y_1);
     return _e25;
-}
-
-bool finite3_(
-    metal::float3 v_4
-) {
-    return metal::all(metal::abs(v_4) <= metal::float3(340282350000000000000000000000000000000.0));
 }
 
 float next_uniform(
@@ -1842,7 +2105,6 @@ kernel void main_(
     uint rng = {};
     bool local_1 = {};
     bool local_2 = {};
-    bool local_3 = {};
     uint i_7 = gid.x;
     uint _e4 = params.width;
     uint _e7 = params.height;
@@ -1853,167 +2115,160 @@ kernel void main_(
     if (_e13 == 0u) {
         uint _e18 = params.seed;
         uint _e21 = params.pass_index;
-        uint _e24 = pcg_hash(_e21 + 2654435769u);
-        uint _e26 = pcg_hash(i_7 ^ _e24);
-        uint _e28 = pcg_hash(_e18 ^ _e26);
-        h = _e28;
-        float _e30 = next_uniform(h);
-        float jx = _e30 - 0.5;
-        float _e33 = next_uniform(h);
-        float jy = _e33 - 0.5;
-        uint _e38 = params.width;
-        float px_1 = (static_cast<float>(naga_mod(i_7, _e38)) + 0.5) + jx;
-        uint _e46 = params.width;
-        float py_1 = (static_cast<float>(naga_div(i_7, _e46)) + 0.5) + jy;
-        metal::float3 _e55 = params.cam_pos;
-        st.origin = _e55;
-        metal::float3 _e59 = params.cam_forward;
-        metal::float3 _e62 = params.cam_right;
-        metal::float3 _e65 = params.cam_up;
-        uint _e68 = params.width;
-        uint _e72 = params.height;
-        metal::float3 _e74 = camera_dir(_e59, _e62, _e65, px_1, py_1, static_cast<float>(_e68), static_cast<float>(_e72));
-        st.dir = _e74;
+        uint _e22 = path_stream(_e18, i_7, _e21);
+        h = _e22;
+        uint _e26 = params.width;
+        float _e28 = next_uniform(h);
+        float _e29 = jittered_pixel(naga_mod(i_7, _e26), _e28);
+        uint _e32 = params.width;
+        float _e34 = next_uniform(h);
+        float _e35 = jittered_pixel(naga_div(i_7, _e32), _e34);
+        metal::float3 _e39 = params.cam_pos;
+        st.origin = _e39;
+        metal::float3 _e43 = params.cam_forward;
+        metal::float3 _e46 = params.cam_right;
+        metal::float3 _e49 = params.cam_up;
+        uint _e52 = params.width;
+        uint _e56 = params.height;
+        metal::float3 _e58 = camera_dir(_e43, _e46, _e49, _e29, _e35, static_cast<float>(_e52), static_cast<float>(_e56));
+        st.dir = _e58;
         st.alive = 1u;
-        uint _e78 = h;
-        st.rng = _e78;
+        uint _e62 = h;
+        st.rng = _e62;
         st.beta = metal::float3(1.0);
         st.pdf_bsdf = 0.0;
-        metal::float3 _e87 = params.cam_pos;
-        st.prev = _e87;
+        metal::float3 _e71 = params.cam_pos;
+        st.prev = _e71;
     } else {
-        GpuPathState _e90 = paths[i_7];
-        st = _e90;
+        GpuPathState _e74 = paths[i_7];
+        st = _e74;
     }
     v.alive = 0u;
-    uint _e95 = st.alive;
-    if (_e95 == 0u) {
-        GpuPathVertex _e100 = v;
-        vertices[i_7] = _e100;
+    uint _e79 = st.alive;
+    if (_e79 == 0u) {
+        GpuPathVertex _e84 = v;
+        vertices[i_7] = _e84;
         return;
     }
-    metal::float3 _e102 = st.origin;
-    metal::float3 _e104 = st.dir;
-    float _e107 = params.t_min;
-    GeoHit _e110 = trace(_e102, _e104, _e107, 340282350000000000000000000000000000000.0, false, geo_nodes, geo_tris, _buffer_sizes);
-    if (_e110.tri == NO_LIGHT) {
+    metal::float3 _e86 = st.origin;
+    metal::float3 _e88 = st.dir;
+    float _e91 = params.t_min;
+    GeoHit _e94 = trace(_e86, _e88, _e91, F32_MAX, false, geo_nodes, geo_tris, _buffer_sizes);
+    if (_e94.tri == NO_LIGHT) {
         st.alive = 0u;
-        GpuPathState _e118 = st;
-        paths[i_7] = _e118;
-        GpuPathVertex _e121 = v;
-        vertices[i_7] = _e121;
+        GpuPathState _e102 = st;
+        paths[i_7] = _e102;
+        GpuPathVertex _e105 = v;
+        vertices[i_7] = _e105;
         return;
     }
-    GpuTriangle tri = geo_tris[_e110.tri];
-    metal::float3 _e127 = st.origin;
-    metal::float3 _e129 = st.dir;
-    metal::float3 x_17 = _e127 + (_e129 * _e110.t);
-    metal::float3 _e136 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
-    metal::float3 _e138 = st.dir;
-    metal::float3 _e139 = face_against(_e136, _e138);
-    uint b_11 = _e110.tri * 3u;
-    metal::float4 _e145 = geo_normals[b_11];
-    metal::float4 _e151 = geo_normals[b_11 + 1u];
-    metal::float4 _e157 = geo_normals[b_11 + 2u];
-    metal::float3 _e162 = barycentric(x_17, tri.v0_, tri.v1_, tri.v2_);
-    metal::float3 _e163 = shading_normal(_e145.xyz, _e151.xyz, _e157.xyz, _e162, _e139);
+    GpuTriangle tri = geo_tris[_e94.tri];
+    metal::float3 _e111 = st.origin;
+    metal::float3 _e113 = st.dir;
+    metal::float3 x_21 = _e111 + (_e113 * _e94.t);
+    metal::float3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
+    metal::float3 _e122 = st.dir;
+    metal::float3 _e123 = face_against(_e120, _e122);
+    uint b_11 = _e94.tri * 3u;
+    metal::float4 _e129 = geo_normals[b_11];
+    metal::float4 _e135 = geo_normals[b_11 + 1u];
+    metal::float4 _e141 = geo_normals[b_11 + 2u];
+    metal::float3 _e146 = barycentric(x_21, tri.v0_, tri.v1_, tri.v2_);
+    metal::float3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if (tri.light != NO_LIGHT) {
-        metal::float3 _e170 = st.dir;
-        local = metal::dot(_e136, _e170) < 0.0;
+        metal::float3 _e154 = st.dir;
+        bool _e155 = sees_emission(_e120, _e154);
+        local = _e155;
     } else {
         local = false;
     }
-    bool _e175 = local;
-    if (_e175) {
-        float _e179 = st.pdf_bsdf;
-        if (_e179 > 0.0) {
-            uint _e186 = light_leaf[tri.light];
-            BshNode leaf_1 = bsh_nodes[_e186];
-            metal::float3 _e192 = st.prev;
-            bool _e193 = sphere_contains_point(leaf_1.center, leaf_1.radius, _e192);
-            float _e195 = st.pdf_bsdf;
-            metal::float3 _e198 = st.prev;
-            metal::float3 _e200 = st.prev_normal;
-            uint _e203 = candidates[i_7];
-            float _e204 = light_pdf(tri.light, _e198, _e200, x_17, _e203, _e193, rt2_7, lights, _buffer_sizes);
-            float _e205 = mis_weight(_e195, _e204);
-            w = _e205;
+    bool _e157 = local;
+    if (_e157) {
+        float _e161 = st.pdf_bsdf;
+        if (_e161 > 0.0) {
+            uint _e168 = light_leaf[tri.light];
+            BshNode leaf_1 = bsh_nodes[_e168];
+            metal::float3 _e174 = st.prev;
+            bool _e175 = sphere_contains_point(leaf_1.center, leaf_1.radius, _e174);
+            float _e177 = st.pdf_bsdf;
+            metal::float3 _e180 = st.prev;
+            metal::float3 _e182 = st.prev_normal;
+            uint _e185 = candidates[i_7];
+            float _e186 = light_pdf(tri.light, _e180, _e182, x_21, _e185, _e175, rt2_7, lights, _buffer_sizes);
+            float _e187 = mis_weight(_e177, _e186);
+            w = _e187;
         }
-        metal::float3 _e207 = st.beta;
-        metal::float3 _e212 = lights[tri.light].intensity;
-        float _e214 = w;
-        metal::float3 add = (_e207 * _e212) * _e214;
-        bool _e216 = finite3_(add);
-        if (_e216) {
-            metal::float4 _e219 = radiance[i_7];
-            radiance[i_7] = _e219 + metal::float4(add, 0.0);
+        metal::float3 _e189 = st.beta;
+        metal::float3 _e194 = lights[tri.light].intensity;
+        float _e196 = w;
+        metal::float3 add = (_e189 * _e194) * _e196;
+        bool _e198 = finite3_(add);
+        if (_e198) {
+            metal::float4 _e201 = radiance[i_7];
+            radiance[i_7] = _e201 + metal::float4(add, 0.0);
         }
     }
-    metal::float4 _e226 = albedo_1[tri.material];
-    metal::float3 rho_1 = _e226.xyz;
-    v.position = x_17;
-    v.normal = _e163;
-    v.gnormal = _e139;
-    metal::float3 _e233 = st.beta;
-    metal::float3 _e234 = lambert_brdf(rho_1);
-    v.weight = _e233 * _e234;
+    metal::float4 _e208 = albedo_1[tri.material];
+    metal::float3 rho_1 = _e208.xyz;
+    v.position = x_21;
+    v.normal = _e147;
+    v.gnormal = _e123;
+    metal::float3 _e215 = st.beta;
+    metal::float3 _e216 = lambert_brdf(rho_1);
+    v.weight = _e215 * _e216;
     v.alive = 1u;
-    GpuPathVertex _e240 = v;
-    vertices[i_7] = _e240;
-    uint _e242 = st.rng;
-    rng = _e242;
-    float _e244 = next_uniform(rng);
-    float _e245 = next_uniform(rng);
-    metal::float3 _e246 = cosine_direction(_e163, _e244, _e245);
-    float cos_o_2 = metal::dot(_e246, _e163);
-    metal::float3 _e249 = st.beta;
-    st.beta = _e249 * rho_1;
-    st.prev = x_17;
-    st.prev_normal = _e163;
-    float _e254 = cosine_pdf(cos_o_2);
-    st.pdf_bsdf = _e254;
-    float _e258 = params.eps;
-    st.origin = x_17 + (_e139 * _e258);
-    st.dir = _e246;
-    if (!((cos_o_2 <= 0.0))) {
-        local_1 = metal::dot(_e246, _e139) <= 0.0;
+    GpuPathVertex _e222 = v;
+    vertices[i_7] = _e222;
+    uint _e224 = st.rng;
+    rng = _e224;
+    float _e226 = next_uniform(rng);
+    float _e227 = next_uniform(rng);
+    metal::float3 _e228 = cosine_direction(_e147, _e226, _e227);
+    float cos_o_2 = metal::dot(_e228, _e147);
+    metal::float3 _e231 = st.beta;
+    st.beta = _e231 * rho_1;
+    st.prev = x_21;
+    st.prev_normal = _e147;
+    float _e236 = cosine_pdf(cos_o_2);
+    st.pdf_bsdf = _e236;
+    float _e240 = params.eps;
+    st.origin = x_21 + (_e123 * _e240);
+    st.dir = _e228;
+    bool _e244 = continues_path(_e228, _e147, _e123);
+    if (!(!(_e244))) {
+        uint _e251 = params.depth;
+        uint _e256 = params.max_depth;
+        local_1 = (_e251 + 1u) >= _e256;
     } else {
         local_1 = true;
     }
-    bool _e271 = local_1;
-    if (!(_e271)) {
-        uint _e277 = params.depth;
-        uint _e282 = params.max_depth;
-        local_2 = (_e277 + 1u) >= _e282;
-    } else {
-        local_2 = true;
-    }
-    bool _e285 = local_2;
-    if (_e285) {
+    bool _e259 = local_1;
+    if (_e259) {
         st.alive = 0u;
     }
-    uint _e290 = params.depth;
-    if (_e290 >= 2u) {
-        uint _e296 = st.alive;
-        local_3 = _e296 == 1u;
+    uint _e264 = params.depth;
+    bool _e265 = plays_roulette(_e264);
+    if (_e265) {
+        uint _e269 = st.alive;
+        local_2 = _e269 == 1u;
     } else {
-        local_3 = false;
+        local_2 = false;
     }
-    bool _e300 = local_3;
-    if (_e300) {
-        metal::float3 _e302 = st.beta;
-        float _e303 = path_survival(_e302);
-        float _e304 = next_uniform(rng);
-        if (_e304 >= _e303) {
+    bool _e273 = local_2;
+    if (_e273) {
+        metal::float3 _e275 = st.beta;
+        float _e276 = path_survival(_e275);
+        float _e277 = next_uniform(rng);
+        if (_e277 >= _e276) {
             st.alive = 0u;
         } else {
-            metal::float3 _e309 = st.beta;
-            st.beta = _e309 / metal::float3(_e303);
+            metal::float3 _e282 = st.beta;
+            st.beta = _e282 / metal::float3(_e276);
         }
     }
-    uint _e313 = rng;
-    st.rng = _e313;
-    GpuPathState _e316 = st;
-    paths[i_7] = _e316;
+    uint _e286 = rng;
+    st.rng = _e286;
+    GpuPathState _e289 = st;
+    paths[i_7] = _e289;
     return;
 }
