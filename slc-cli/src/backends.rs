@@ -19,18 +19,18 @@ pub enum Backend {
 }
 
 /// The GPU context when `backend` is `gpu`; its error says how to fall back.
-pub fn gpu_context(backend: Backend) -> Result<Option<GpuContext>, String> {
+pub fn gpu_context(backend: Backend) -> anyhow::Result<Option<GpuContext>> {
     match backend {
         Backend::Cpu => Ok(None),
-        Backend::Gpu => GpuContext::new().map(Some).map_err(|e| e.to_string()),
+        Backend::Gpu => GpuContext::new().map(Some).map_err(anyhow::Error::from),
     }
 }
 
 /// The path tracer of `pts` at `width × height`: the GPU's when `gpu`
 /// holds a context, else the CPU's.
-pub fn path_tracer<'a>(gpu: Option<&'a GpuContext>, pts: &PtScene, width: u32, height: u32) -> Result<Box<dyn DynPathTracer + 'a>, String> {
+pub fn path_tracer<'a>(gpu: Option<&'a GpuContext>, pts: &PtScene, width: u32, height: u32) -> anyhow::Result<Box<dyn DynPathTracer + 'a>> {
     match gpu {
-        Some(g) => Ok(Box::new(slc_wgpu::pt::GpuPt::new(g, pts, width, height).map_err(|e| e.to_string())?)),
+        Some(g) => Ok(Box::new(slc_wgpu::pt::GpuPt::new(g, pts, width, height)?)),
         None => Ok(Box::new(CpuPathTracer::new(pts))),
     }
 }

@@ -3,8 +3,9 @@
 //! against the (cached) reference, and writes JSON (and optionally CSV).
 
 use crate::backends::{Backend, GPU_BATCH, gpu_context, path_tracer};
-use crate::report::{PtReport, PtRun, Report, Run, StageMs, to_csv};
+use crate::report::{PtReport, PtRun, Report, Run, StageMs, write_pt_csv, write_vpl_csv};
 use crate::scene_args::{App, SceneArgs};
+use anyhow::{Context, anyhow};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use slc_cpu::pt::CpuPathTracer;
@@ -82,14 +83,14 @@ fn vpl_configs(a: &BenchArgs, exposure: f32) -> Vec<(Option<f32>, VplSettings)> 
         .collect()
 }
 
-fn progress(len: usize) -> Result<ProgressBar, String> {
+fn progress(len: usize) -> anyhow::Result<ProgressBar> {
     let bar = ProgressBar::new(len as u64 + 1);
-    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} {msg} ({elapsed})").map_err(|e| e.to_string())?);
+    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} {msg} ({elapsed})")?);
     Ok(bar)
 }
 
 /// The run with the smallest `key` of `repeat` calls of `render`.
-fn fastest<T>(repeat: u32, mut render: impl FnMut() -> Result<T, String>, key: impl Fn(&T) -> f64) -> Result<T, String> {
+fn fastest<T>(repeat: u32, mut render: impl FnMut() -> anyhow::Result<T>, key: impl Fn(&T) -> f64) -> anyhow::Result<T> {
     let mut best: Option<T> = None;
     for _ in 0..repeat {
         let f = render()?;
@@ -97,7 +98,7 @@ fn fastest<T>(repeat: u32, mut render: impl FnMut() -> Result<T, String>, key: i
             best = Some(f);
         }
     }
-    best.ok_or_else(|| "--repeat must be at least 1".to_string())
+    best.ok_or_else(|| anyhow!("--repeat must be at least 1"))
 }
 
 /// One configuration's row of a VPL report (loop evaluations per second are
@@ -120,9 +121,9 @@ fn run_label(s: &VplSettings, param: Option<f32>) -> String {
     format!("{} {}", s.method.name(), param.map_or(String::new(), |p| p.to_string()))
 }
 
-pub fn run(a: BenchArgs) -> Result<(), String> {
+pub fn run(a: BenchArgs) -> anyhow::Result<()> {
     if a.repeat == 0 || a.reference_spp == 0 {
-        return Err(format!("--repeat {} and --reference-spp {} must be at least 1", a.repeat, a.reference_spp));
+        return Err(anyhow!("--repeat {} and --reference-spp {} must be at least 1", a.repeat, a.reference_spp));
     }
     if a.scene.app == App::Pt {
         return run_pt(a);
@@ -138,13 +139,13 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
     // The reference is one long call and is not timed: let the bar tick on
     // its own meanwhile (never during the measured runs).
     bar.enable_steady_tick(std::time::Duration::from_millis(250));
-    let (reference, cached) = vpl_reference(ctx, Some(&a.cache_dir)).map_err(|e| e.to_string())?;
+    let (reference, cached) = vpl_reference(ctx, Some(&a.cache_dir))?;
     bar.disable_steady_tick();
     bar.inc(1);
     let mut runs = Vec::new();
     for (param, settings) in configs {
         bar.set_message(run_label(&settings, param));
-        let f = fastest(a.repeat, || ctx.render(&settings).map_err(|e| e.to_string()), |f: &VplFrame| f.stats.shading_ms)?;
+        let f = fastest(a.repeat, || ctx.render(&settings).map_err(anyhow::Error::from), |f: &VplFrame| f.stats.shading_ms)?;
         runs.push(vpl_run(&settings, param, &f.stats, f.image.rmse(&reference), Vec::new()));
         bar.inc(1);
     }
@@ -169,27 +170,27 @@ pub fn run(a: BenchArgs) -> Result<(), String> {
 /// pixel of the frame's own rasterized G-buffer and RSM (shaded on the GPU,
 /// composed with the frame's direct light), so the RMSE measures the
 /// methods, not rasterization against ray casting.
-fn run_vpl_gpu(a: BenchArgs) -> Result<(), String> {
+fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
     let r = a.scene.resolve()?;
-    let gpu = gpu_context(Backend::Gpu)?.ok_or("no GPU context")?;
+    let gpu = gpu_context(Backend::Gpu)?.context("no GPU context")?;
     let frame = a.scene.gpu_frame(&gpu, &r)?;
     let configs = vpl_configs(&a, r.exposure);
     let bar = progress(configs.len())?;
     bar.set_message("reference (all VPLs at every pixel, on the GPU)");
     let warm = VplSettings { method: VplMethod::None, exposure: r.exposure, ..VplSettings::default() };
-    frame.render(&warm).map_err(|e| e.to_string())?;
-    let inputs = frame.read_inputs().map_err(|e| e.to_string())?;
-    let all = slc_wgpu::vpl::GpuVpl::new(&gpu, &inputs).map_err(|e| e.to_string())?;
-    let shaded = slc_scene::backend::IndirectShader::shade(&all, &VplSettings { method: VplMethod::Reference, ..warm }).map_err(|e| e.to_string())?;
-    let reference = frame.compose_with(&inputs, &shaded.irradiance).map_err(|e| e.to_string())?;
+    frame.render(&warm)?;
+    let inputs = frame.read_inputs()?;
+    let all = slc_wgpu::vpl::GpuVpl::new(&gpu, &inputs)?;
+    let shaded = slc_scene::backend::IndirectShader::shade(&all, &VplSettings { method: VplMethod::Reference, ..warm })?;
+    let reference = frame.compose_with(&inputs, &shaded.irradiance)?;
     bar.inc(1);
     let mut runs = Vec::new();
     let mut timing = slc_scene::backend::Timing::Wall;
     for (param, settings) in configs {
         bar.set_message(run_label(&settings, param));
         // One untimed frame first: drivers compile a pipeline at its first use.
-        frame.render(&settings).map_err(|e| e.to_string())?;
-        let f = fastest(a.repeat, || frame.render(&settings).map_err(|e| e.to_string()), |f: &slc_wgpu::frame::FrameRender| f.stats.shading_ms)?;
+        frame.render(&settings)?;
+        let f = fastest(a.repeat, || frame.render(&settings).map_err(anyhow::Error::from), |f: &slc_wgpu::frame::FrameRender| f.stats.shading_ms)?;
         timing = f.timing;
         let stages = f.stages.iter().map(|s| StageMs { name: s.name.to_string(), ms: s.ms }).collect();
         runs.push(vpl_run(&settings, param, &f.stats, f.image.rmse(&reference), stages));
@@ -222,13 +223,13 @@ fn run_vpl_gpu(a: BenchArgs) -> Result<(), String> {
     write_report(&a, &report)
 }
 
-fn write_report(a: &BenchArgs, report: &Report) -> Result<(), String> {
-    let json = serde_json::to_string_pretty(report).map_err(|e| e.to_string())?;
+fn write_report(a: &BenchArgs, report: &Report) -> anyhow::Result<()> {
+    let json = serde_json::to_string_pretty(report)?;
     if let Some(path) = &a.json {
-        std::fs::write(path, json).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        std::fs::write(path, json).with_context(|| format!("cannot write {}", path.display()))?;
     }
     if let Some(csv) = &a.csv {
-        std::fs::write(csv, to_csv(report)).map_err(|e| format!("cannot write {}: {e}", csv.display()))?;
+        write_vpl_csv(report, csv)?;
     }
     if let Some(plot) = &a.plot {
         crate::plot::speed_vs_error(report, plot)?;
@@ -264,27 +265,26 @@ fn write_report(a: &BenchArgs, report: &Report) -> Result<(), String> {
     Ok(())
 }
 
-fn run_pt(a: BenchArgs) -> Result<(), String> {
+fn run_pt(a: BenchArgs) -> anyhow::Result<()> {
     if !(a.seconds > 0.0 && a.seconds.is_finite()) {
-        return Err(format!("--seconds {} must be finite and > 0", a.seconds));
+        return Err(anyhow!("--seconds {} must be finite and > 0", a.seconds));
     }
     let (scene, lights, f) = a.scene.scene()?;
     let (w, h) = (a.scene.width.or(f.width).unwrap_or(128), a.scene.height.or(f.height).unwrap_or(128));
-    let pts = PtScene::new(&scene, &lights).map_err(|e| e.to_string())?;
+    let pts = PtScene::new(&scene, &lights)?;
     let eps = a.error_bound.unwrap_or(PtSettings::default().error_bound);
     // A reference that culls nothing does not depend on ε: keyed without
     // it, its cache serves every --error-bound.
     let ref_eps = if a.reference_method.culls() { eps } else { PtSettings::default().error_bound };
     let ref_settings = PtSettings { method: a.reference_method, error_bound: ref_eps, seed: 0x5EED, ..PtSettings::default() };
     let bar = ProgressBar::new(a.reference_spp as u64);
-    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} spp, {msg} (ETA {eta})").map_err(|e| e.to_string())?);
+    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} spp, {msg} (ETA {eta})")?);
     bar.set_message(format!("reference: {}", a.reference_method.name()));
     let mut progress = |done: u32, total: u32| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     };
-    let r = slc_cpu::reference::pt_reference(&mut CpuPathTracer::new(&pts), w, h, &ref_settings, a.reference_spp, Some(&a.cache_dir), &mut progress)
-        .map_err(|e| e.to_string())?;
+    let r = slc_cpu::reference::pt_reference(&mut CpuPathTracer::new(&pts), w, h, &ref_settings, a.reference_spp, Some(&a.cache_dir), &mut progress)?;
     let (reference, cached) = (r.image, r.cached);
     // The reference stays on the CPU; the methods run on the chosen backend.
     let ctx = gpu_context(a.scene.backend)?;
@@ -294,7 +294,7 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
     let mut runs = Vec::new();
     // Methods: the bar counts tenths of a second of rendering, all methods together.
     let tenths = (a.seconds * 10.0).ceil() as u64;
-    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {msg} (ETA {eta})").map_err(|e| e.to_string())?);
+    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {msg} (ETA {eta})")?);
     bar.set_length(tenths * methods.len() as u64);
     bar.set_position(0);
     bar.reset_eta();
@@ -304,7 +304,7 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
         let mut acc = PtRender::new(w, h);
         let mut series = Vec::new();
         while acc.time_ms < a.seconds * 1e3 {
-            tracer.render(&mut acc, &s, batch).map_err(|e| e.to_string())?;
+            tracer.render(&mut acc, &s, batch).map_err(|e| anyhow!(e))?;
             series.push((acc.time_ms, acc.passes, acc.image().rmse(&reference)));
             bar.set_position(k as u64 * tenths + ((acc.time_ms / 100.0) as u64).min(tenths));
         }
@@ -335,16 +335,12 @@ fn run_pt(a: BenchArgs) -> Result<(), String> {
         reference_from_cache: cached,
         runs,
     };
-    let json = serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?;
+    let json = serde_json::to_string_pretty(&report)?;
     if let Some(path) = &a.json {
-        std::fs::write(path, json).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        std::fs::write(path, json).with_context(|| format!("cannot write {}", path.display()))?;
     }
     if let Some(csv) = &a.csv {
-        let mut t = String::from("method,param,time_ms,spp,rmse\n");
-        for r in &report.runs {
-            t += &format!("{},{},{:.1},{},{:.6}\n", r.method, r.param.map_or(String::new(), |p| p.to_string()), r.time_ms, r.spp, r.rmse);
-        }
-        std::fs::write(csv, t).map_err(|e| format!("cannot write {}: {e}", csv.display()))?;
+        write_pt_csv(&report, csv)?;
     }
     if let Some(plot) = &a.plot {
         crate::plot::rmse_over_time(&report, plot)?;

@@ -1,5 +1,6 @@
 //! `slc diff A.exr B.exr`: image difference statistics and a heat map.
 
+use anyhow::anyhow;
 use clap::Args;
 use slc_scene::image::{Image, write_rgb8_png};
 use std::path::PathBuf;
@@ -62,19 +63,19 @@ fn ramp(t: f32) -> [u8; 3] {
     [c(0), c(1), c(2)].map(|x| (x * 255.0 + 0.5) as u8)
 }
 
-pub fn run(a: DiffArgs) -> Result<(), String> {
+pub fn run(a: DiffArgs) -> anyhow::Result<()> {
     let read = |p: &std::path::Path| {
         if p.extension().and_then(|e| e.to_str()).is_some_and(|e| e.eq_ignore_ascii_case("png")) {
-            return Err(format!(
+            return Err(anyhow!(
                 "{}: diff compares linear EXR images; a PNG is the tone-mapped 8-bit preview (compare the .exr written beside it)",
                 p.display()
             ));
         }
-        Image::read_exr(p).map_err(|e| format!("{}: {e} (diff reads EXR images)", p.display()))
+        Image::read_exr(p).map_err(|e| anyhow!("{}: {e} (diff reads EXR images)", p.display()))
     };
     let (ia, ib) = (read(&a.a)?, read(&a.b)?);
     if (ia.width, ia.height) != (ib.width, ib.height) {
-        return Err(format!("image sizes differ: {}x{} vs {}x{}", ia.width, ia.height, ib.width, ib.height));
+        return Err(anyhow!("image sizes differ: {}x{} vs {}x{}", ia.width, ia.height, ib.width, ib.height));
     }
     let s = stats(&ia, &ib);
     println!("{} vs {} ({}x{})", a.a.display(), a.b.display(), ia.width, ia.height);
@@ -86,7 +87,7 @@ pub fn run(a: DiffArgs) -> Result<(), String> {
         let d: Vec<f32> = ia.data.iter().zip(&ib.data).map(|(x, y)| (*x - *y).abs().element_sum() / 3.0).collect();
         let max = d.iter().cloned().filter(|v| v.is_finite()).fold(0.0f32, f32::max).max(1e-12);
         let bytes: Vec<u8> = d.iter().flat_map(|&v| ramp(v / max)).collect();
-        write_rgb8_png(out, ia.width, ia.height, &bytes).map_err(|e| e.to_string())?;
+        write_rgb8_png(out, ia.width, ia.height, &bytes)?;
         println!("  heat map        {} (yellow = {:.6})", out.display(), max);
     }
     if let Some(limit) = a.max_rmse

@@ -5,6 +5,7 @@
 //! prints time, VPL count, lights per pixel and RMSE against the unculled
 //! interleaved image.
 
+use anyhow::{Context, anyhow};
 mod backends;
 mod bench;
 mod diff;
@@ -70,21 +71,21 @@ enum Command {
 }
 
 /// A VPL method name.
-fn vpl_method(name: &str) -> Result<VplMethod, String> {
+fn vpl_method(name: &str) -> anyhow::Result<VplMethod> {
     match name {
         "slc" => Ok(VplMethod::Slc),
         "clamp" => Ok(VplMethod::Clamp),
         "none" => Ok(VplMethod::None),
         "reference" => Ok(VplMethod::Reference),
-        m => Err(format!("method '{m}' is not one of slc, clamp, none, reference (--app vpl)")),
+        m => Err(anyhow!("method '{m}' is not one of slc, clamp, none, reference (--app vpl)")),
     }
 }
 
 /// A path-tracing method name.
-pub(crate) fn pt_method(name: &str) -> Result<PtMethod, String> {
+pub(crate) fn pt_method(name: &str) -> anyhow::Result<PtMethod> {
     PtMethod::ALL.into_iter().find(|m| m.name() == name).ok_or_else(|| {
         let names: Vec<&str> = PtMethod::ALL.iter().map(|m| m.name()).collect();
-        format!("method '{name}' is not one of {} (--app pt)", names.join(", "))
+        anyhow!("method '{name}' is not one of {} (--app pt)", names.join(", "))
     })
 }
 
@@ -125,7 +126,7 @@ fn main() -> ExitCode {
     // No subcommand: the main job, `slc render` with its defaults.
     let command = Cli::parse().command.or_else(|| Cli::parse_from(["slc", "render"]).command);
     let result = match command {
-        None => Err("no command".to_string()),
+        None => Err(anyhow!("no command")),
         Some(Command::Render(a)) => render(a),
         Some(Command::Bench(a)) => bench::run(a),
         Some(Command::Ies { file, plot }) => ies(&file, plot.as_deref()),
@@ -136,14 +137,14 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e}");
+            eprintln!("error: {e:#}");
             ExitCode::FAILURE
         }
     }
 }
 
 /// The VPL settings of a render: flags, else the scene file's, else the defaults.
-fn vpl_settings(a: &RenderArgs, f: &slc_scene::scene_file::RenderSettings, exposure: f32) -> Result<VplSettings, String> {
+fn vpl_settings(a: &RenderArgs, f: &slc_scene::scene_file::RenderSettings, exposure: f32) -> anyhow::Result<VplSettings> {
     let d = VplSettings::default();
     Ok(VplSettings {
         method: vpl_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or("slc"))?,
@@ -158,7 +159,7 @@ fn vpl_settings(a: &RenderArgs, f: &slc_scene::scene_file::RenderSettings, expos
     })
 }
 
-fn render(a: RenderArgs) -> Result<(), String> {
+fn render(a: RenderArgs) -> anyhow::Result<()> {
     // A bad --out fails now, not after the render.
     output_paths(&a.out)?;
     if a.scene.app == App::Pt {
@@ -173,13 +174,13 @@ fn render(a: RenderArgs) -> Result<(), String> {
     let (ctx, f) = (&loaded.ctx, &loaded.file);
     let settings = vpl_settings(&a, f, loaded.exposure)?;
     spinner.set_message(format!("shading ({}, cpu)", settings.method.name()));
-    let frame = ctx.render(&settings).map_err(|e| e.to_string())?;
+    let frame = ctx.render(&settings)?;
     spinner.set_message("writing images");
     let written = write_outputs(&frame.image, &a.out, loaded.exposure)?;
     let st = frame.stats;
     let versus_none = if settings.method != VplMethod::None && settings.method != VplMethod::Reference {
         spinner.set_message("unculled interleaved image for the RMSE");
-        let none = ctx.render(&VplSettings { method: VplMethod::None, ..settings }).map_err(|e| e.to_string())?;
+        let none = ctx.render(&VplSettings { method: VplMethod::None, ..settings })?;
         Some((frame.image.rmse(&none.image), none.stats.shading_ms))
     } else {
         None
@@ -202,24 +203,24 @@ fn render(a: RenderArgs) -> Result<(), String> {
 }
 
 /// `slc render --backend gpu`: the whole VPL frame on the GPU, every stage timed.
-fn render_vpl_gpu(a: RenderArgs) -> Result<(), String> {
+fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
     let t0 = Instant::now();
     let spinner = spinner("scene and GPU pipelines");
     let r = a.scene.resolve()?;
     let settings = vpl_settings(&a, &r.file, r.exposure)?;
     if settings.method == VplMethod::Reference {
-        return Err("--method reference (every VPL at every pixel) runs on the CPU; use --backend cpu".into());
+        return Err(anyhow!("--method reference (every VPL at every pixel) runs on the CPU; use --backend cpu"));
     }
-    let gpu = gpu_context(Backend::Gpu)?.ok_or("no GPU context")?;
+    let gpu = gpu_context(Backend::Gpu)?.context("no GPU context")?;
     let frame = a.scene.gpu_frame(&gpu, &r)?;
     spinner.set_message(format!("frame on the GPU ({})", settings.method.name()));
     // The first frame pays for the driver's pipeline compilation: measure the second.
-    frame.render(&settings).map_err(|e| e.to_string())?;
-    let out = frame.render(&settings).map_err(|e| e.to_string())?;
+    frame.render(&settings)?;
+    let out = frame.render(&settings)?;
     let written = write_outputs(&out.image, &a.out, r.exposure)?;
     let versus_none = if settings.method != VplMethod::None {
         spinner.set_message("unculled interleaved frame for the RMSE");
-        let none = frame.render(&VplSettings { method: VplMethod::None, ..settings }).map_err(|e| e.to_string())?;
+        let none = frame.render(&VplSettings { method: VplMethod::None, ..settings })?;
         Some((out.image.rmse(&none.image), none.stats.shading_ms))
     } else {
         None
@@ -264,14 +265,14 @@ pub fn timing_note(t: slc_scene::backend::Timing) -> &'static str {
 }
 
 /// `slc render --app pt`: progressive path tracing on the chosen backend.
-fn render_pt(a: RenderArgs) -> Result<(), String> {
+fn render_pt(a: RenderArgs) -> anyhow::Result<()> {
     let t0 = Instant::now();
     let (scene, lights, f) = a.scene.scene()?;
     let (w, h) = (a.scene.width.or(f.width).unwrap_or(512), a.scene.height.or(f.height).unwrap_or(512));
     if !(1..=16384).contains(&w) || !(1..=16384).contains(&h) {
-        return Err(RenderError::Size(w, h).to_string());
+        return Err(RenderError::Size(w, h).into());
     }
-    let pts = PtScene::new(&scene, &lights).map_err(|e| e.to_string())?;
+    let pts = PtScene::new(&scene, &lights)?;
     let d = PtSettings::default();
     let on_gpu = a.scene.backend == Backend::Gpu;
     let settings = PtSettings {
@@ -290,20 +291,20 @@ fn render_pt(a: RenderArgs) -> Result<(), String> {
         Some(secs) if secs > 0.0 && secs.is_finite() => {
             bar.set_length((secs * 10.0) as u64);
             while acc.time_ms < secs * 1e3 {
-                tracer.render(&mut acc, &settings, batch).map_err(|e| e.to_string())?;
+                tracer.render(&mut acc, &settings, batch).map_err(|e| anyhow!(e))?;
                 bar.set_position((acc.time_ms / 100.0) as u64);
             }
         }
-        Some(secs) => return Err(format!("--seconds {secs} must be finite and > 0")),
+        Some(secs) => return Err(anyhow!("--seconds {secs} must be finite and > 0")),
         None => {
             let spp = a.spp.unwrap_or(16);
             if spp == 0 {
-                return Err("--spp 0: give at least one sample per pixel".into());
+                return Err(anyhow!("--spp 0: give at least one sample per pixel"));
             }
             bar.set_length(spp as u64);
             while acc.passes < spp {
                 let n = batch.min(spp - acc.passes);
-                tracer.render(&mut acc, &settings, n).map_err(|e| e.to_string())?;
+                tracer.render(&mut acc, &settings, n).map_err(|e| anyhow!(e))?;
                 bar.inc(n as u64);
             }
         }
@@ -335,10 +336,10 @@ pub fn spinner(msg: &'static str) -> indicatif::ProgressBar {
 
 /// The EXR and PNG paths of `--out`: `x.exr` gives `x.exr` and `x.png`,
 /// and so does `x.png`; any other extension is an error.
-pub fn output_paths(out: &Path) -> Result<(PathBuf, PathBuf), String> {
+pub fn output_paths(out: &Path) -> anyhow::Result<(PathBuf, PathBuf)> {
     match out.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
         Some("exr") | Some("png") => Ok((out.with_extension("exr"), out.with_extension("png"))),
-        _ => Err(format!(
+        _ => Err(anyhow!(
             "--out {}: give a .exr path (the PNG preview is written beside it) or a .png one (the EXR is written beside it)",
             out.display()
         )),
@@ -346,10 +347,10 @@ pub fn output_paths(out: &Path) -> Result<(PathBuf, PathBuf), String> {
 }
 
 /// Writes the linear EXR and its tone-mapped PNG preview; returns their paths.
-pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> Result<(PathBuf, PathBuf), String> {
+pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> anyhow::Result<(PathBuf, PathBuf)> {
     let (exr, png) = output_paths(out)?;
-    img.write_exr(&exr).map_err(|e| e.to_string())?;
-    img.write_png(&png, exposure).map_err(|e| e.to_string())?;
+    img.write_exr(&exr)?;
+    img.write_png(&png, exposure)?;
     Ok((exr, png))
 }
 
@@ -357,10 +358,10 @@ pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> Result<(PathBuf,
 /// path-tracing and update kernels for `lights`, `vpl_tiled_{slc,clamp,none}`
 /// and the VPL frame's kernels (the raster kernel's GLSL as one file per
 /// entry point, `scene_raster.vs_main.glsl` …).
-fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> Result<(), String> {
+fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
     use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, generate_module, translate};
-    let lights = LightSet::parse(lights).map_err(|e| e.to_string())?;
-    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    let lights = LightSet::parse(lights)?;
+    std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
     let base = Features { lights, reservoir_k, ..Features::default() };
     let vpl = LightSet { vpl: true, ..LightSet::default() };
     let mut jobs: Vec<(String, Kernel, Features)> =
@@ -385,11 +386,11 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> Result<(), String> {
     }
     let write = |name: &str, ext: &str, bytes: &[u8]| {
         let p = out.join(format!("{name}.{ext}"));
-        std::fs::write(&p, bytes).map_err(|e| format!("cannot write {}: {e}", p.display()))
+        std::fs::write(&p, bytes).with_context(|| format!("cannot write {}", p.display()))
     };
     for (name, kernel, features) in &jobs {
-        let g = generate_module(*kernel, features).map_err(|e| e.to_string())?;
-        let t = translate(&g).map_err(|e| e.to_string())?;
+        let g = generate_module(*kernel, features)?;
+        let t = translate(&g)?;
         write(name, "wgsl", g.source.as_bytes())?;
         write(name, "spv", &t.spv.iter().flat_map(|w| w.to_le_bytes()).collect::<Vec<u8>>())?;
         // GLSL holds one shader per file: the raster kernel's entry points apart.
@@ -410,27 +411,27 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> Result<(), String> {
 
 /// Plots a bench report again: a VPL report as speed against error, a
 /// path-tracing one as RMSE over time (told apart by its `app`).
-fn replot(json: &Path, out: &Path) -> Result<(), String> {
-    let text = std::fs::read_to_string(json).map_err(|e| format!("cannot read {}: {e}", json.display()))?;
-    let value: serde_json::Value = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", json.display()))?;
+fn replot(json: &Path, out: &Path) -> anyhow::Result<()> {
+    let text = std::fs::read_to_string(json).with_context(|| format!("cannot read {}", json.display()))?;
+    let value: serde_json::Value = serde_json::from_str(&text).with_context(|| format!("{}", json.display()))?;
     match value.get("app").and_then(|a| a.as_str()) {
         Some("pt") => {
-            let report: report::PtReport = serde_json::from_value(value).map_err(|e| format!("{} (a path-tracing report): {e}", json.display()))?;
+            let report: report::PtReport = serde_json::from_value(value).with_context(|| format!("{} (a path-tracing report)", json.display()))?;
             plot::rmse_over_time(&report, out)?;
         }
         Some("vpl") => {
-            let report: report::Report = serde_json::from_value(value).map_err(|e| format!("{} (a VPL report): {e}", json.display()))?;
+            let report: report::Report = serde_json::from_value(value).with_context(|| format!("{} (a VPL report)", json.display()))?;
             plot::speed_vs_error(&report, out)?;
         }
-        other => return Err(format!("{}: not a slc bench report (its \"app\" is {other:?}, expected \"vpl\" or \"pt\")", json.display())),
+        other => return Err(anyhow!("{}: not a slc bench report (its \"app\" is {other:?}, expected \"vpl\" or \"pt\")", json.display())),
     }
     println!("wrote {}", out.display());
     Ok(())
 }
 
-fn ies(path: &Path, plot_path: Option<&Path>) -> Result<(), String> {
-    let bytes = std::fs::read(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
-    let p = slc_core::ies::IesProfile::parse_bytes(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+fn ies(path: &Path, plot_path: Option<&Path>) -> anyhow::Result<()> {
+    let bytes = std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
+    let p = slc_core::ies::IesProfile::parse_bytes(&bytes).with_context(|| format!("{}", path.display()))?;
     println!("{}", path.display());
     println!("  format              {:?}", p.format);
     println!("  photometric type    {:?}", p.photometric_type);

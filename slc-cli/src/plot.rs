@@ -4,6 +4,7 @@
 //! system font is needed.
 
 use crate::report::{PtReport, Report};
+use anyhow::{Context, anyhow};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -22,23 +23,23 @@ fn register_font() {
 fn with_backend(
     path: &Path,
     size: (u32, u32),
-    draw: impl FnOnce(&DrawingArea<SVGBackend<'_>, Shift>) -> Result<(), String>,
-    draw_png: impl FnOnce(&DrawingArea<BitMapBackend<'_>, Shift>) -> Result<(), String>,
-) -> Result<(), String> {
+    draw: impl FnOnce(&DrawingArea<SVGBackend<'_>, Shift>) -> anyhow::Result<()>,
+    draw_png: impl FnOnce(&DrawingArea<BitMapBackend<'_>, Shift>) -> anyhow::Result<()>,
+) -> anyhow::Result<()> {
     // Both backends measure text with the registered font.
     register_font();
     match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
         Some("svg") => {
             let root = SVGBackend::new(path, size).into_drawing_area();
             draw(&root)?;
-            root.present().map_err(|e| format!("cannot write {}: {e}", path.display()))
+            root.present().with_context(|| format!("cannot write {}", path.display()))
         }
         Some("png") => {
             let root = BitMapBackend::new(path, size).into_drawing_area();
             draw_png(&root)?;
-            root.present().map_err(|e| format!("cannot write {}: {e}", path.display()))
+            root.present().with_context(|| format!("cannot write {}", path.display()))
         }
-        _ => Err(format!("plot file {} must end in .svg or .png", path.display())),
+        _ => Err(anyhow!("plot file {} must end in .svg or .png", path.display())),
     }
 }
 
@@ -74,16 +75,16 @@ pub fn pareto_front(pts: &[(f64, f64)]) -> Vec<(f64, f64)> {
 
 /// RMSE (log) against shading time (log), one point per run, each method's
 /// Pareto front joined by a line.
-pub fn speed_vs_error(report: &Report, path: &Path) -> Result<(), String> {
+pub fn speed_vs_error(report: &Report, path: &Path) -> anyhow::Result<()> {
     with_backend(path, (960, 640), |a| speed_vs_error_on(report, a), |a| speed_vs_error_on(report, a))
 }
 
-fn speed_vs_error_on<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
-    let err = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+fn speed_vs_error_on<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB, Shift>) -> anyhow::Result<()> {
+    let err = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("{e}");
     root.fill(&WHITE).map_err(err)?;
     let runs: Vec<_> = report.runs.iter().filter(|r| r.rmse > 0.0 && r.shading_ms > 0.0).collect();
     if runs.is_empty() {
-        return Err("no run with positive RMSE and time to plot".into());
+        return Err(anyhow!("no run with positive RMSE and time to plot"));
     }
     let (tmin, tmax) = runs.iter().fold((f64::MAX, 0.0f64), |(a, b), r| (a.min(r.shading_ms), b.max(r.shading_ms)));
     let (emin, emax) = runs.iter().fold((f64::MAX, 0.0f64), |(a, b), r| (a.min(r.rmse), b.max(r.rmse)));
@@ -147,16 +148,16 @@ fn speed_vs_error_on<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB,
 }
 
 /// Path tracing: RMSE (log) against time (log) per method.
-pub fn rmse_over_time(report: &PtReport, path: &Path) -> Result<(), String> {
+pub fn rmse_over_time(report: &PtReport, path: &Path) -> anyhow::Result<()> {
     with_backend(path, (960, 640), |a| rmse_over_time_on(report, a), |a| rmse_over_time_on(report, a))
 }
 
-fn rmse_over_time_on<DB: DrawingBackend>(report: &PtReport, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
-    let err = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+fn rmse_over_time_on<DB: DrawingBackend>(report: &PtReport, root: &DrawingArea<DB, Shift>) -> anyhow::Result<()> {
+    let err = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("{e}");
     root.fill(&WHITE).map_err(err)?;
     let pts: Vec<(f64, f64)> = report.runs.iter().flat_map(|r| r.series.iter().map(|s| (s.0, s.2))).filter(|p| p.0 > 0.0 && p.1 > 0.0).collect();
     if pts.is_empty() {
-        return Err("no samples to plot".into());
+        return Err(anyhow!("no samples to plot"));
     }
     let (tmin, tmax) = pts.iter().fold((f64::MAX, 0.0f64), |(a, b), p| (a.min(p.0), b.max(p.0)));
     let (emin, emax) = pts.iter().fold((f64::MAX, 0.0f64), |(a, b), p| (a.min(p.1), b.max(p.1)));
@@ -202,12 +203,12 @@ fn rmse_over_time_on<DB: DrawingBackend>(report: &PtReport, root: &DrawingArea<D
 
 /// Polar candela plot of an IES profile: the C = 0°/180° and C = 90°/270°
 /// planes, γ = 0° (nadir) pointing down, rings of equal candela.
-pub fn ies_polar(p: &slc_core::ies::IesProfile, title: &str, path: &Path) -> Result<(), String> {
+pub fn ies_polar(p: &slc_core::ies::IesProfile, title: &str, path: &Path) -> anyhow::Result<()> {
     with_backend(path, (720, 760), |a| ies_polar_on(p, title, a), |a| ies_polar_on(p, title, a))
 }
 
-fn ies_polar_on<DB: DrawingBackend>(p: &slc_core::ies::IesProfile, title: &str, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
-    let err = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+fn ies_polar_on<DB: DrawingBackend>(p: &slc_core::ies::IesProfile, title: &str, root: &DrawingArea<DB, Shift>) -> anyhow::Result<()> {
+    let err = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("{e}");
     root.fill(&WHITE).map_err(err)?;
     let peak = (p.max_candela() as f64).max(1e-9);
     let mut chart = ChartBuilder::on(root).caption(title, ("sans-serif", 22)).margin(20).build_cartesian_2d(-1.15..1.15, -1.15..1.15).map_err(err)?;

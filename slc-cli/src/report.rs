@@ -1,7 +1,9 @@
 //! The reports `slc bench` writes and `slc plot` reads (JSON), and their
 //! CSV form.
 
+use anyhow::Context;
 use serde::{Deserialize, Serialize};
+use std::path::Path;
 
 /// One configuration's measurements.
 #[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
@@ -108,21 +110,68 @@ pub struct PtReport {
     pub runs: Vec<PtRun>,
 }
 
-/// The runs as CSV, one line per configuration.
-pub fn to_csv(report: &Report) -> String {
-    let mut s = String::from("method,param,shading_ms,total_ms,rmse,lights_per_pixel,kept_per_pixel,evaluations_per_second\n");
-    for r in &report.runs {
-        s += &format!(
-            "{},{},{:.4},{:.4},{:.6},{:.3},{:.3},{:.4e}\n",
-            r.method,
-            r.param.map_or(String::new(), |p| p.to_string()),
-            r.shading_ms,
-            r.total_ms,
-            r.rmse,
-            r.lights_per_pixel,
-            r.kept_per_pixel,
-            r.evaluations_per_second
-        );
+/// One CSV line of a VPL run: [`Run`] without its stages.
+#[derive(Serialize)]
+struct VplCsvRow<'a> {
+    method: &'a str,
+    param: Option<f32>,
+    shading_ms: f64,
+    total_ms: f64,
+    rmse: f64,
+    lights_per_pixel: f64,
+    kept_per_pixel: f64,
+    evaluations_per_second: f64,
+}
+
+/// One CSV line of a path-tracing run: [`PtRun`] without its series.
+#[derive(Serialize)]
+struct PtCsvRow<'a> {
+    method: &'a str,
+    param: Option<f32>,
+    time_ms: f64,
+    spp: u32,
+    rmse: f64,
+    rmse_net: f64,
+}
+
+/// Writes `rows` as CSV with a header line (the `csv` crate).
+fn write_csv<R: Serialize>(path: &Path, rows: impl IntoIterator<Item = R>) -> anyhow::Result<()> {
+    let mut w = csv::Writer::from_path(path).with_context(|| format!("cannot write {}", path.display()))?;
+    for r in rows {
+        w.serialize(r).with_context(|| format!("cannot write {}", path.display()))?;
     }
-    s
+    w.flush().with_context(|| format!("cannot write {}", path.display()))?;
+    Ok(())
+}
+
+/// Writes the VPL runs to `path` as CSV, one line per configuration.
+pub fn write_vpl_csv(report: &Report, path: &Path) -> anyhow::Result<()> {
+    write_csv(
+        path,
+        report.runs.iter().map(|r| VplCsvRow {
+            method: &r.method,
+            param: r.param,
+            shading_ms: r.shading_ms,
+            total_ms: r.total_ms,
+            rmse: r.rmse,
+            lights_per_pixel: r.lights_per_pixel,
+            kept_per_pixel: r.kept_per_pixel,
+            evaluations_per_second: r.evaluations_per_second,
+        }),
+    )
+}
+
+/// Writes the path-tracing runs to `path` as CSV, one line per method.
+pub fn write_pt_csv(report: &PtReport, path: &Path) -> anyhow::Result<()> {
+    write_csv(
+        path,
+        report.runs.iter().map(|r| PtCsvRow {
+            method: &r.method,
+            param: r.param,
+            time_ms: r.time_ms,
+            spp: r.spp,
+            rmse: r.rmse,
+            rmse_net: r.rmse_net,
+        }),
+    )
 }

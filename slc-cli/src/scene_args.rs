@@ -92,14 +92,14 @@ impl SceneArgs {
     /// The scene, its extra lights (scene files) and its `[render]` settings.
     /// Material features the renderer ignores get one warning line per
     /// material on stderr.
-    pub fn scene(&self) -> Result<(Scene, Vec<slc_core::light::Light>, RenderSettings), String> {
+    pub fn scene(&self) -> anyhow::Result<(Scene, Vec<slc_core::light::Light>, RenderSettings)> {
         let loaded = if self.scene == "cornell" {
             (Scene::cornell_box(), Vec::new(), RenderSettings::default())
         } else if self.scene.ends_with(".toml") {
-            let f = SceneFile::load(Path::new(&self.scene)).map_err(|e| e.to_string())?;
+            let f = SceneFile::load(Path::new(&self.scene))?;
             (f.scene, f.lights, f.render)
         } else {
-            (Scene::load_obj(Path::new(&self.scene)).map_err(|e| e.to_string())?, Vec::new(), RenderSettings::default())
+            (Scene::load_obj(Path::new(&self.scene))?, Vec::new(), RenderSettings::default())
         };
         let mut said = Vec::new();
         for u in &loaded.0.unsupported {
@@ -113,7 +113,7 @@ impl SceneArgs {
     }
 
     /// Loads the scene and resolves the VPL application's sizes.
-    pub fn resolve(&self) -> Result<Resolved, String> {
+    pub fn resolve(&self) -> anyhow::Result<Resolved> {
         let (scene, _, file) = self.scene()?;
         let width = self.width.or(file.width).unwrap_or(512);
         let height = self.height.or(file.height).unwrap_or(512);
@@ -121,20 +121,20 @@ impl SceneArgs {
         let exposure = self.exposure.or(file.exposure).unwrap_or(1.0);
         let s = (vpls as f64).sqrt() as u64;
         if s * s != vpls || s > u32::MAX as u64 {
-            return Err(RenderError::VplCount(vpls).to_string());
+            return Err(RenderError::VplCount(vpls).into());
         }
         Ok(Resolved { scene, width, height, rsm_size: s as u32, exposure, file })
     }
 
     /// Loads the scene and builds the CPU's shared VPL context.
-    pub fn load(&self) -> Result<Loaded, String> {
+    pub fn load(&self) -> anyhow::Result<Loaded> {
         let r = self.resolve()?;
-        let ctx = VplContext::new(&r.scene, r.width, r.height, r.rsm_size, self.min_distance).map_err(|e| e.to_string())?;
+        let ctx = VplContext::new(&r.scene, r.width, r.height, r.rsm_size, self.min_distance)?;
         Ok(Loaded { ctx, width: r.width, height: r.height, exposure: r.exposure, file: r.file })
     }
 
     /// The whole-GPU VPL frame of the resolved scene.
-    pub fn gpu_frame<'g>(&self, gpu: &'g slc_wgpu::GpuContext, r: &Resolved) -> Result<slc_wgpu::frame::GpuVplFrame<'g>, String> {
+    pub fn gpu_frame<'g>(&self, gpu: &'g slc_wgpu::GpuContext, r: &Resolved) -> anyhow::Result<slc_wgpu::frame::GpuVplFrame<'g>> {
         let desc = slc_wgpu::frame::FrameDesc {
             width: r.width,
             height: r.height,
@@ -142,6 +142,6 @@ impl SceneArgs {
             shadow_size: self.shadow_size,
             min_distance: self.min_distance,
         };
-        slc_wgpu::frame::GpuVplFrame::new(gpu, &r.scene, &desc).map_err(|e| e.to_string())
+        slc_wgpu::frame::GpuVplFrame::new(gpu, &r.scene, &desc).map_err(anyhow::Error::from)
     }
 }
