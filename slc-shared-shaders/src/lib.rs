@@ -658,7 +658,14 @@ pub struct Translations {
 pub fn translate(g: &Generated) -> Result<Translations, ShaderError> {
     let kernel = g.kernel.name();
     let err = |backend: &'static str| move |e: &dyn std::fmt::Display| ShaderError::Translate { kernel, backend, message: e.to_string() };
-    let spv = naga::back::spv::write_vec(&g.module, &g.info, &naga::back::spv::Options::default(), None).map_err(|e| err("spv")(&e))?;
+    // naga's default adds debug names only in debug builds: fix the flags
+    // (names included) so the SPIR-V does not depend on the build profile.
+    let spv_flags = naga::back::spv::WriterFlags::ADJUST_COORDINATE_SPACE
+        | naga::back::spv::WriterFlags::LABEL_VARYINGS
+        | naga::back::spv::WriterFlags::CLAMP_FRAG_DEPTH
+        | naga::back::spv::WriterFlags::DEBUG;
+    let spv_opts = naga::back::spv::Options { flags: spv_flags, ..Default::default() };
+    let spv = naga::back::spv::write_vec(&g.module, &g.info, &spv_opts, None).map_err(|e| err("spv")(&e))?;
     let mut glsl_entries = Vec::new();
     for &(entry, stage) in g.kernel.entry_points() {
         let mut out = String::new();
