@@ -137,7 +137,12 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e:#}");
+            // Library errors name no flags; the CLI says which one helps.
+            let gpu_limit = e
+                .chain()
+                .any(|c| matches!(c.downcast_ref::<slc_wgpu::GpuError>(), Some(slc_wgpu::GpuError::NoAdapter(_) | slc_wgpu::GpuError::Limit { .. })));
+            let hint = if gpu_limit { " (--backend cpu renders on the CPU)" } else { "" };
+            eprintln!("error: {e:#}{hint}");
             ExitCode::FAILURE
         }
     }

@@ -181,6 +181,25 @@ fn bad_input_is_one_line_error() {
     std::fs::remove_dir_all(&d).ok();
 }
 
+/// Without a GPU adapter (no Vulkan driver for the child process), `--backend
+/// gpu` fails with the library's typed error (which names no flag) and the
+/// CLI's hint to the flag that helps.
+fn no_adapter_error_names_the_flag() {
+    let d = tempdir("noadapter");
+    let out = Command::new(env!("CARGO_BIN_EXE_slc"))
+        .args(["render", "--backend", "gpu", "--width", "8", "--height", "8", "--vpls", "64"])
+        .env("VK_ICD_FILENAMES", "/nonexistent.json")
+        .env("WGPU_BACKEND", "vulkan")
+        .current_dir(&d)
+        .output()
+        .expect("run slc");
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    let last = err.trim().lines().last().unwrap_or("");
+    assert!(last.starts_with("error: no GPU adapter found") && last.ends_with("(--backend cpu renders on the CPU)"), "{err}");
+    std::fs::remove_dir_all(&d).ok();
+}
+
 /// Every example scene in `scenes/` loads and renders (small overrides on
 /// the command line win over the file's `[render]`).
 fn example_scene_files_render() {
@@ -373,6 +392,7 @@ slc_tests::harness!(
     Cpu: diff_command,
     Cpu: out_paths,
     Cpu: bad_input_is_one_line_error,
+    Cpu: no_adapter_error_names_the_flag,
     Cpu: example_scene_files_render,
     Cpu: shaders_command_exports_every_kernel,
     Gpu: gpu_backend_renders_like_cpu,

@@ -64,13 +64,13 @@ use thiserror::Error;
 #[derive(Debug, Error)]
 pub enum GpuError {
     /// No adapter (no GPU and no software driver).
-    #[error("no GPU adapter found ({0}); install a Vulkan driver (e.g. mesa-vulkan-drivers) or use --backend cpu")]
+    #[error("no GPU adapter found ({0}); install a Vulkan driver (e.g. mesa-vulkan-drivers) or use the CPU backend")]
     NoAdapter(String),
     /// The device could not be opened, or reported an error.
     #[error("GPU device error: {0}")]
     Device(String),
     /// A device limit is too small for the scene.
-    #[error("the scene needs {name} >= {need}, the device allows {have}; use --backend cpu or a smaller setting")]
+    #[error("the scene needs {name} >= {need}, the device allows {have}; use the CPU backend or a smaller setting")]
     Limit {
         /// The limit.
         name: &'static str,
