@@ -410,7 +410,16 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
         write(name, "metal", t.msl.as_bytes())?;
         println!("  {name}: wgsl spv glsl hlsl metal");
     }
+    // slc-core's functions as naga_oil modules (`#import slc::range::...`).
+    let modules = slc_core::wgsl::modules();
+    let dir = out.join("slc");
+    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    for m in &modules {
+        let p = dir.join(format!("{}.wgsl", m.name));
+        std::fs::write(&p, m.composable()).with_context(|| format!("cannot write {}", p.display()))?;
+    }
     println!("wrote {} kernels to {} (lights: {})", jobs.len(), out.display(), lights.names().join(", "));
+    println!("wrote {} naga_oil modules to {} (#import slc::<module>::<item>)", modules.len(), dir.display());
     Ok(())
 }
 

@@ -240,6 +240,9 @@ fn shaders_command_exports_every_kernel() {
             assert!(std::fs::metadata(&p).map(|m| m.len() > 100).unwrap_or(false), "{} missing or empty", p.display());
         }
     }
+    assert!(text.contains("16 naga_oil modules"), "{text}");
+    let range = std::fs::read_to_string(d.join("k/slc/range.wgsl")).unwrap();
+    assert!(range.starts_with("#define_import_path slc::range") && range.contains("fn slc_keep("), "{range}");
     let pt = std::fs::read_to_string(d.join("k/pt_connect.wgsl")).unwrap();
     assert!(pt.contains("LIGHT_TRIANGLE:") && !pt.contains("case LIGHT_SPOT:"));
     let out = slc(&d, &["shaders", "--out", "k2", "--lights", "laser"]);

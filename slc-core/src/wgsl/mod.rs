@@ -26,5 +26,5 @@ pub mod assemble;
 pub mod builtins;
 mod shared;
 
-pub use assemble::{PRELUDE, library, translate};
+pub use assemble::{PRELUDE, WgslModule, library, modules, modules_wgsl, translate};
 pub use builtins::*;
