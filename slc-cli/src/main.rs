@@ -122,7 +122,28 @@ struct RenderArgs {
     out: PathBuf,
 }
 
+/// On a machine with no display (no `XDG_RUNTIME_DIR`, `WAYLAND_DISPLAY`
+/// or `DISPLAY`), Mesa's Vulkan device-select layer tries to reach a Wayland
+/// compositor to rank the GPUs, and libwayland prints `error:
+/// XDG_RUNTIME_DIR is invalid or not set` twice, though nothing is wrong.
+/// With no display there is nothing to rank by, so the layer is turned off
+/// (`NODEVICE_SELECT=1`, Mesa's switch) unless the user chose a device for
+/// it (`MESA_VK_DEVICE_SELECT`) or set the switch. Engines that embed
+/// slc-wgpu can set the same variable.
+fn quiet_headless_vulkan() {
+    let unset = |k: &str| std::env::var_os(k).is_none();
+    if ["XDG_RUNTIME_DIR", "WAYLAND_DISPLAY", "DISPLAY", "MESA_VK_DEVICE_SELECT", "NODEVICE_SELECT"].iter().all(|k| unset(k)) {
+        // SAFETY: called first thing in `main`, before any thread exists,
+        // so nothing reads the environment concurrently.
+        #[allow(unsafe_code)]
+        unsafe {
+            std::env::set_var("NODEVICE_SELECT", "1");
+        }
+    }
+}
+
 fn main() -> ExitCode {
+    quiet_headless_vulkan();
     // No subcommand: the main job, `slc render` with its defaults.
     let command = Cli::parse().command.or_else(|| Cli::parse_from(["slc", "render"]).command);
     let result = match command {

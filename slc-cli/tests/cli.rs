@@ -200,6 +200,27 @@ fn no_adapter_error_names_the_flag() {
     std::fs::remove_dir_all(&d).ok();
 }
 
+/// A GPU render on a machine without a display prints no `error:` line
+/// when nothing is wrong (Mesa's device-select layer used to make
+/// libwayland print two).
+fn gpu_start_up_is_quiet() {
+    let d = tempdir("quiet");
+    let out = Command::new(env!("CARGO_BIN_EXE_slc"))
+        .args(["render", "--backend", "gpu", "--width", "16", "--height", "16", "--vpls", "256", "--out", "q.exr"])
+        .env_remove("XDG_RUNTIME_DIR")
+        .env_remove("WAYLAND_DISPLAY")
+        .env_remove("DISPLAY")
+        .env_remove("MESA_VK_DEVICE_SELECT")
+        .env_remove("NODEVICE_SELECT")
+        .current_dir(&d)
+        .output()
+        .expect("run slc");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    assert!(!err.lines().any(|l| l.contains("error")), "stderr of a good GPU render:\n{err}");
+    std::fs::remove_dir_all(&d).ok();
+}
+
 /// Every example scene in `scenes/` loads and renders (small overrides on
 /// the command line win over the file's `[render]`).
 fn example_scene_files_render() {
@@ -399,6 +420,7 @@ slc_tests::harness!(
     Cpu: example_scene_files_render,
     Cpu: shaders_command_exports_every_kernel,
     Gpu: gpu_backend_renders_like_cpu,
+    Gpu: gpu_start_up_is_quiet,
     Gpu: gpu_path_tracer_renders_and_benches,
     Cpu: path_tracer_renders,
     Cpu: path_tracer_bench,
