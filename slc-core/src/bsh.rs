@@ -47,6 +47,64 @@ crate::shared! {
     }
 }
 
+/// The nodes as the shared traversal step reads them: a slice on the CPU.
+/// On the GPU a kernel that binds its `bsh_nodes` buffer declares
+/// `alias BshNodes = u32` and the two readers [`bsh_node`] and
+/// [`bsh_count`] over it, then includes [`walk`]'s WGSL.
+pub type BshNodes<'a> = &'a [BshNode];
+
+/// Node `i` of `nodes` (the GPU kernel's reader: `bsh_nodes[i]`).
+#[inline]
+pub fn bsh_node(nodes: BshNodes, i: u32) -> BshNode {
+    nodes[i as usize]
+}
+
+/// The number of nodes (the GPU kernel's reader: `arrayLength(&bsh_nodes)`).
+#[inline]
+pub fn bsh_count(nodes: BshNodes) -> u32 {
+    nodes.len() as u32
+}
+
+/// The stackless traversal's steps, written once for both backends. Not
+/// part of [`crate::wgsl::library`]: they read a BSH buffer, which only the
+/// kernels that bind one declare (their WGSL is [`walk::WGSL`]).
+pub mod walk {
+    use super::{BSH_NONE, BshNode, BshNodes, bsh_count, bsh_node};
+    use crate::sphere::sphere_contains_point;
+    use crate::wgsl::*;
+
+    crate::shared! {
+        /// The root, or `BSH_NONE` for an empty hierarchy: where a
+        /// traversal starts.
+        pub fn bsh_first(nodes: BshNodes) -> u32 {
+            if bsh_count(nodes) > 0 {
+                return 0;
+            }
+            return BSH_NONE;
+        }
+
+        /// The first leaf at or after node `start` in traversal order
+        /// whose range sphere contains `x`, or `BSH_NONE`: one step of the
+        /// talk's stackless traversal. Start at [`bsh_first`] and continue
+        /// from the found leaf's `next`.
+        pub fn bsh_next_leaf(nodes: BshNodes, start: u32, x: vec3f) -> u32 {
+            let mut i: u32 = start;
+            while i != BSH_NONE {
+                let node: BshNode = bsh_node(nodes, i);
+                if sphere_contains_point(node.center, node.radius, x) {
+                    if node.child == BSH_NONE {
+                        return i;
+                    }
+                    i = node.child;
+                } else {
+                    i = node.next;
+                }
+            }
+            return BSH_NONE;
+        }
+    }
+}
+
 /// Bounding-sphere hierarchy; see the module docs.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Bsh {
@@ -179,12 +237,19 @@ impl Bsh {
         }
     }
 
-    /// Lights whose range sphere contains `x` (none for a NaN point).
-    pub fn for_each_containing(&self, x: Vec3, visit: impl FnMut(u32)) {
+    /// Lights whose range sphere contains `x` (none for a NaN point), by
+    /// the shared traversal steps ([`walk`]) the GPU kernels take.
+    pub fn for_each_containing(&self, x: Vec3, mut visit: impl FnMut(u32)) {
         if x.is_nan() {
             return;
         }
-        self.traverse(|c, r| crate::sphere::sphere_contains_point(c, r, x), visit);
+        let nodes = &self.nodes[..];
+        let mut i = walk::bsh_next_leaf(nodes, walk::bsh_first(nodes), x);
+        while i != BSH_NONE {
+            let leaf = bsh_node(nodes, i);
+            visit(leaf.light);
+            i = walk::bsh_next_leaf(nodes, leaf.next, x);
+        }
     }
 
     /// Lights whose range sphere overlaps sphere `s` (none when `s` is not

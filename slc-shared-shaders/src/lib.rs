@@ -601,6 +601,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
     let ctx = context! {
         kernel => kernel.name(),
         core => slc_core::wgsl::library(),
+        bsh_walk => slc_core::wgsl::translate(slc_core::bsh::walk::WGSL),
         layout => slc_core::wgsl::translate(layout::WGSL),
         light_names => l.names().join(", "),
         point => l.point, spot => l.spot, ies => l.ies, triangle => l.triangle, vpl => l.vpl,

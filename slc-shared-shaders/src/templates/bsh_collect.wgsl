@@ -10,32 +10,17 @@ struct Picks {
     n: u32,
 }
 
-/// The first leaf at or after node `start` in traversal order whose range
-/// sphere contains `x`, or BSH_NONE: one step of the stackless traversal
-/// (start at `bsh_first()`, continue from the found leaf's `next`).
-fn bsh_next_leaf(start: u32, x: vec3f) -> u32 {
-    var i = start;
-    loop {
-        if i == BSH_NONE {
-            return BSH_NONE;
-        }
-        let node = bsh_nodes[i];
-        if sphere_contains_point(node.center, node.radius, x) {
-            if node.child == BSH_NONE {
-                return i;
-            }
-            i = node.child;
-        } else {
-            i = node.next;
-        }
-    }
-    return BSH_NONE;
+/// The kernel's `bsh_nodes` buffer as slc-core's shared traversal steps
+/// (`bsh_first`, `bsh_next_leaf`, below) read it.
+alias BshNodes = u32;
+const BSH: BshNodes = 0u;
+fn bsh_node(nodes: BshNodes, i: u32) -> BshNode {
+    return bsh_nodes[i];
 }
-
-/// The root, or BSH_NONE for an empty hierarchy.
-fn bsh_first() -> u32 {
-    return select(BSH_NONE, 0u, arrayLength(&bsh_nodes) > 0u);
+fn bsh_count(nodes: BshNodes) -> u32 {
+    return arrayLength(&bsh_nodes);
 }
+{{ bsh_walk }}
 
 /// Lights whose range sphere contains `x`, streamed through the reservoir;
 /// `seed` drives the reservoir's random choices.
@@ -43,7 +28,7 @@ fn bsh_collect(x: vec3f, seed: u32) -> Picks {
     var picks: Picks;
     picks.n = 0u;
     var h = seed;
-    for (var i = bsh_next_leaf(bsh_first(), x); i != BSH_NONE; i = bsh_next_leaf(bsh_nodes[i].next, x)) {
+    for (var i = bsh_next_leaf(BSH, bsh_first(BSH), x); i != BSH_NONE; i = bsh_next_leaf(BSH, bsh_nodes[i].next, x)) {
         if reservoir_takes(picks.n) {
             picks.n += 1u;
             h = pcg_hash(h);

@@ -70,7 +70,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var pick: array<u32, K>;
     var pick_w: array<f32, K>;
     var w_sum = 0.0;
-    for (var b = bsh_next_leaf(bsh_first(), x); b != BSH_NONE; b = bsh_next_leaf(bsh_nodes[b].next, x)) {
+    for (var b = bsh_next_leaf(BSH, bsh_first(BSH), x); b != BSH_NONE; b = bsh_next_leaf(BSH, bsh_nodes[b].next, x)) {
         let li = bsh_nodes[b].light;
         let w = light_weight(li, x, n);
         if w > 0.0 {
@@ -96,7 +96,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
 {% elif selection == "all" %}
     // Every in-range light, each connected as the traversal finds it.
     var count = 0u;
-    for (var b = bsh_next_leaf(bsh_first(), x); b != BSH_NONE; b = bsh_next_leaf(bsh_nodes[b].next, x)) {
+    for (var b = bsh_next_leaf(BSH, bsh_first(BSH), x); b != BSH_NONE; b = bsh_next_leaf(BSH, bsh_nodes[b].next, x)) {
         count += 1u;
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);

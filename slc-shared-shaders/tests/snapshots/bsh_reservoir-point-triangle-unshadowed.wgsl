@@ -239,6 +239,7 @@ const COVER_WEIGHT: f32 = 0.1f;
 const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const K: u32 = 8u;
+const BSH: u32 = 0u;
 
 @group(1) @binding(0) 
 var<storage> slc_table: array<f32>;
@@ -1330,83 +1331,99 @@ fn occluded(a_9: vec3<f32>, b_7: vec3<f32>) -> bool {
     return false;
 }
 
-fn bsh_next_leaf(start_1: u32, x_14: vec3<f32>) -> u32 {
-    var i_2: u32;
+fn bsh_node(nodes: u32, i_2: u32) -> BshNode {
+    let _e4 = bsh_nodes[i_2];
+    return _e4;
+}
 
-    i_2 = start_1;
+fn bsh_count(nodes_1: u32) -> u32 {
+    return arrayLength((&bsh_nodes));
+}
+
+fn bsh_first(nodes_2: u32) -> u32 {
+    let _e1 = bsh_count(nodes_2);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+fn bsh_next_leaf(nodes_3: u32, start_1: u32, x_14: vec3<f32>) -> u32 {
+    var i_3: u32;
+
+    i_3 = start_1;
     loop {
-        let _e3 = i_2;
-        if (_e3 == BSH_NONE) {
-            return BSH_NONE;
-        }
-        let _e8 = i_2;
-        let node = bsh_nodes[_e8];
-        let _e13 = sphere_contains_point(node.center, node.radius, x_14);
-        if _e13 {
-            if (node.child == BSH_NONE) {
-                let _e17 = i_2;
-                return _e17;
-            }
-            i_2 = node.child;
+        let _e4 = i_3;
+        if (_e4 != BSH_NONE) {
         } else {
-            i_2 = node.next;
+            break;
+        }
+        {
+            let _e7 = i_3;
+            let _e8 = bsh_node(nodes_3, _e7);
+            let _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            if _e11 {
+                if (_e8.child == BSH_NONE) {
+                    let _e15 = i_3;
+                    return _e15;
+                }
+                i_3 = _e8.child;
+            } else {
+                i_3 = _e8.next;
+            }
         }
     }
     return BSH_NONE;
 }
 
-fn bsh_first() -> u32 {
-    return select(BSH_NONE, 0u, (arrayLength((&bsh_nodes)) > 0u));
-}
-
 fn bsh_collect(x_15: vec3<f32>, seed_3: u32) -> Picks {
     var picks: Picks;
     var h_2: u32;
-    var i_3: u32;
+    var i_4: u32;
 
     picks.n = 0u;
     h_2 = seed_3;
-    let _e6 = bsh_first();
-    let _e7 = bsh_next_leaf(_e6, x_15);
-    i_3 = _e7;
+    let _e8 = bsh_first(BSH);
+    let _e9 = bsh_next_leaf(BSH, _e8, x_15);
+    i_4 = _e9;
     loop {
-        let _e9 = i_3;
-        if (_e9 != BSH_NONE) {
+        let _e11 = i_4;
+        if (_e11 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e13 = picks.n;
-            let _e14 = reservoir_takes(_e13);
-            if _e14 {
-                let _e16 = picks.n;
-                picks.n = (_e16 + 1u);
-                let _e19 = h_2;
-                let _e20 = pcg_hash(_e19);
-                h_2 = _e20;
+            let _e15 = picks.n;
+            let _e16 = reservoir_takes(_e15);
+            if _e16 {
+                let _e18 = picks.n;
+                picks.n = (_e18 + 1u);
+                let _e21 = h_2;
+                let _e22 = pcg_hash(_e21);
+                h_2 = _e22;
                 let hi_4 = h_2;
-                let _e22 = h_2;
-                let _e23 = pcg_hash(_e22);
-                h_2 = _e23;
-                let _e25 = picks.n;
-                let _e27 = h_2;
-                let _e28 = reservoir_slot(_e25, K, hi_4, _e27);
-                if (_e28 < K) {
-                    let _e34 = i_3;
-                    let _e37 = bsh_nodes[_e34].light;
-                    picks.light[_e28] = _e37;
+                let _e24 = h_2;
+                let _e25 = pcg_hash(_e24);
+                h_2 = _e25;
+                let _e27 = picks.n;
+                let _e29 = h_2;
+                let _e30 = reservoir_slot(_e27, K, hi_4, _e29);
+                if (_e30 < K) {
+                    let _e36 = i_4;
+                    let _e39 = bsh_nodes[_e36].light;
+                    picks.light[_e30] = _e39;
                 }
             }
         }
         continuing {
-            let _e39 = i_3;
-            let _e42 = bsh_nodes[_e39].next;
-            let _e43 = bsh_next_leaf(_e42, x_15);
-            i_3 = _e43;
+            let _e42 = i_4;
+            let _e45 = bsh_nodes[_e42].next;
+            let _e46 = bsh_next_leaf(BSH, _e45, x_15);
+            i_4 = _e46;
         }
     }
-    let _e44 = picks;
-    return _e44;
+    let _e47 = picks;
+    return _e47;
 }
 
 fn connect(li: u32, x_16: vec3<f32>, n_17: vec3<f32>, ng_2: vec3<f32>, w_res: f32, u1_3: f32, u2_3: f32, eps: f32) -> Connection {
@@ -1452,22 +1469,22 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var e: vec3<f32> = vec3(0f);
     var s: u32 = 0u;
 
-    let i_4 = gid.x;
+    let i_5 = gid.x;
     let _e4 = params.point_count;
-    if (i_4 >= _e4) {
+    if (i_5 >= _e4) {
         return;
     }
-    let p_4 = points[i_4];
+    let p_4 = points[i_5];
     if (p_4.w <= 0f) {
-        irradiance[i_4] = vec4(0f);
+        irradiance[i_5] = vec4(0f);
         return;
     }
     let x_17 = p_4.xyz;
-    let _e19 = normals[i_4];
+    let _e19 = normals[i_5];
     let n_20 = _e19.xyz;
     let _e23 = params.seed;
     let _e26 = params.frame;
-    let _e27 = point_stream(_e23, i_4, _e26);
+    let _e27 = point_stream(_e23, i_5, _e26);
     let _e28 = bsh_collect(x_17, _e27);
     let _e31 = reservoir_weight(_e28.n, K);
     let _e32 = pick_stream(_e27);
@@ -1501,6 +1518,6 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
     }
     let _e67 = e;
-    irradiance[i_4] = vec4<f32>(_e67, f32(_e28.n));
+    irradiance[i_5] = vec4<f32>(_e67, f32(_e28.n));
     return;
 }

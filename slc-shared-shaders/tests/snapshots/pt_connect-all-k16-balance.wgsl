@@ -249,6 +249,7 @@ const COVER_WEIGHT: f32 = 0.1f;
 const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const K: u32 = 16u;
+const BSH: u32 = 0u;
 
 @group(1) @binding(0) 
 var<storage> slc_table: array<f32>;
@@ -1443,83 +1444,99 @@ fn occluded(a_9: vec3<f32>, b_7: vec3<f32>) -> bool {
     return (_e12.tri != NO_LIGHT);
 }
 
-fn bsh_next_leaf(start_1: u32, x_14: vec3<f32>) -> u32 {
-    var i_3: u32;
+fn bsh_node(nodes: u32, i_3: u32) -> BshNode {
+    let _e4 = bsh_nodes[i_3];
+    return _e4;
+}
 
-    i_3 = start_1;
+fn bsh_count(nodes_1: u32) -> u32 {
+    return arrayLength((&bsh_nodes));
+}
+
+fn bsh_first(nodes_2: u32) -> u32 {
+    let _e1 = bsh_count(nodes_2);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+fn bsh_next_leaf(nodes_3: u32, start_1: u32, x_14: vec3<f32>) -> u32 {
+    var i_4: u32;
+
+    i_4 = start_1;
     loop {
-        let _e3 = i_3;
-        if (_e3 == BSH_NONE) {
-            return BSH_NONE;
-        }
-        let _e8 = i_3;
-        let node_1 = bsh_nodes[_e8];
-        let _e13 = sphere_contains_point(node_1.center, node_1.radius, x_14);
-        if _e13 {
-            if (node_1.child == BSH_NONE) {
-                let _e17 = i_3;
-                return _e17;
-            }
-            i_3 = node_1.child;
+        let _e4 = i_4;
+        if (_e4 != BSH_NONE) {
         } else {
-            i_3 = node_1.next;
+            break;
+        }
+        {
+            let _e7 = i_4;
+            let _e8 = bsh_node(nodes_3, _e7);
+            let _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            if _e11 {
+                if (_e8.child == BSH_NONE) {
+                    let _e15 = i_4;
+                    return _e15;
+                }
+                i_4 = _e8.child;
+            } else {
+                i_4 = _e8.next;
+            }
         }
     }
     return BSH_NONE;
 }
 
-fn bsh_first() -> u32 {
-    return select(BSH_NONE, 0u, (arrayLength((&bsh_nodes)) > 0u));
-}
-
 fn bsh_collect(x_15: vec3<f32>, seed_3: u32) -> Picks {
     var picks: Picks;
     var h_2: u32;
-    var i_4: u32;
+    var i_5: u32;
 
     picks.n = 0u;
     h_2 = seed_3;
-    let _e6 = bsh_first();
-    let _e7 = bsh_next_leaf(_e6, x_15);
-    i_4 = _e7;
+    let _e8 = bsh_first(BSH);
+    let _e9 = bsh_next_leaf(BSH, _e8, x_15);
+    i_5 = _e9;
     loop {
-        let _e9 = i_4;
-        if (_e9 != BSH_NONE) {
+        let _e11 = i_5;
+        if (_e11 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e13 = picks.n;
-            let _e14 = reservoir_takes(_e13);
-            if _e14 {
-                let _e16 = picks.n;
-                picks.n = (_e16 + 1u);
-                let _e19 = h_2;
-                let _e20 = pcg_hash(_e19);
-                h_2 = _e20;
+            let _e15 = picks.n;
+            let _e16 = reservoir_takes(_e15);
+            if _e16 {
+                let _e18 = picks.n;
+                picks.n = (_e18 + 1u);
+                let _e21 = h_2;
+                let _e22 = pcg_hash(_e21);
+                h_2 = _e22;
                 let hi_4 = h_2;
-                let _e22 = h_2;
-                let _e23 = pcg_hash(_e22);
-                h_2 = _e23;
-                let _e25 = picks.n;
-                let _e27 = h_2;
-                let _e28 = reservoir_slot(_e25, K, hi_4, _e27);
-                if (_e28 < K) {
-                    let _e34 = i_4;
-                    let _e37 = bsh_nodes[_e34].light;
-                    picks.light[_e28] = _e37;
+                let _e24 = h_2;
+                let _e25 = pcg_hash(_e24);
+                h_2 = _e25;
+                let _e27 = picks.n;
+                let _e29 = h_2;
+                let _e30 = reservoir_slot(_e27, K, hi_4, _e29);
+                if (_e30 < K) {
+                    let _e36 = i_5;
+                    let _e39 = bsh_nodes[_e36].light;
+                    picks.light[_e30] = _e39;
                 }
             }
         }
         continuing {
-            let _e39 = i_4;
-            let _e42 = bsh_nodes[_e39].next;
-            let _e43 = bsh_next_leaf(_e42, x_15);
-            i_4 = _e43;
+            let _e42 = i_5;
+            let _e45 = bsh_nodes[_e42].next;
+            let _e46 = bsh_next_leaf(BSH, _e45, x_15);
+            i_5 = _e46;
         }
     }
-    let _e44 = picks;
-    return _e44;
+    let _e47 = picks;
+    return _e47;
 }
 
 fn connect(li: u32, x_16: vec3<f32>, n_17: vec3<f32>, ng_2: vec3<f32>, w_res: f32, u1_3: f32, u2_3: f32, eps: f32) -> Connection {
@@ -1571,17 +1588,17 @@ fn light_weight(li_1: u32, x_17: vec3<f32>, n_18: vec3<f32>) -> f32 {
     return _e15;
 }
 
-fn bvh_importance(i_5: u32, x_18: vec3<f32>, n_19: vec3<f32>) -> f32 {
-    let b_10 = light_bvh[i_5];
+fn bvh_importance(i_6: u32, x_18: vec3<f32>, n_19: vec3<f32>) -> f32 {
+    let b_10 = light_bvh[i_6];
     let _e12 = light_importance(b_10.center, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_18, n_19);
     return _e12;
 }
 
-fn bvh_first(i_6: u32, x_19: vec3<f32>, n_20: vec3<f32>) -> f32 {
+fn bvh_first(i_7: u32, x_19: vec3<f32>, n_20: vec3<f32>) -> f32 {
     var local_17: bool;
 
-    let j = light_bvh[i_6].second;
-    if !((j <= (i_6 + 1u))) {
+    let j = light_bvh[i_7].second;
+    if !((j <= (i_7 + 1u))) {
         local_17 = (j >= arrayLength((&light_bvh)));
     } else {
         local_17 = true;
@@ -1590,7 +1607,7 @@ fn bvh_first(i_6: u32, x_19: vec3<f32>, n_20: vec3<f32>) -> f32 {
     if _e17 {
         return -1f;
     }
-    let _e21 = bvh_importance((i_6 + 1u), x_19, n_20);
+    let _e21 = bvh_importance((i_7 + 1u), x_19, n_20);
     let _e22 = bvh_importance(j, x_19, n_20);
     let _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
@@ -1598,16 +1615,16 @@ fn bvh_first(i_6: u32, x_19: vec3<f32>, n_20: vec3<f32>) -> f32 {
 
 fn light_bvh_sample(x_20: vec3<f32>, n_21: vec3<f32>, u_in: f32) -> BvhPick {
     var u_5: f32;
-    var i_7: u32 = 0u;
+    var i_8: u32 = 0u;
     var pmf: f32 = 1f;
     var local_18: bool;
 
     u_5 = u_in;
     loop {
-        let _e9 = i_7;
-        let node_2 = light_bvh[_e9];
-        if (node_2.second == LIGHT_BVH_LEAF) {
-            let _e15 = i_7;
+        let _e9 = i_8;
+        let node_1 = light_bvh[_e9];
+        if (node_1.second == LIGHT_BVH_LEAF) {
+            let _e15 = i_8;
             if !((_e15 > 0u)) {
                 let _e22 = bvh_importance(0u, x_20, n_21);
                 local_18 = (_e22 > 0f);
@@ -1616,9 +1633,9 @@ fn light_bvh_sample(x_20: vec3<f32>, n_21: vec3<f32>, u_in: f32) -> BvhPick {
             }
             let reaches = local_18;
             let _e28 = pmf;
-            return BvhPick(node_2.light, select(0f, _e28, reaches));
+            return BvhPick(node_1.light, select(0f, _e28, reaches));
         }
-        let _e32 = i_7;
+        let _e32 = i_8;
         let _e33 = bvh_first(_e32, x_20, n_21);
         if (_e33 < 0f) {
             return BvhPick(0u, 0f);
@@ -1630,14 +1647,14 @@ fn light_bvh_sample(x_20: vec3<f32>, n_21: vec3<f32>, u_in: f32) -> BvhPick {
         let _e46 = u_5;
         let _e47 = bvh_remap_u(_e46, _e33, first_1);
         u_5 = _e47;
-        let _e49 = i_7;
-        i_7 = select(node_2.second, (_e49 + 1u), first_1);
+        let _e49 = i_8;
+        i_8 = select(node_1.second, (_e49 + 1u), first_1);
     }
     return BvhPick(0u, 0f);
 }
 
 fn light_bvh_pmf(li_2: u32, x_21: vec3<f32>, n_22: vec3<f32>) -> f32 {
-    var i_8: u32 = 0u;
+    var i_9: u32 = 0u;
     var pmf_1: f32 = 1f;
     var local_19: bool;
     var local_20: bool;
@@ -1647,10 +1664,10 @@ fn light_bvh_pmf(li_2: u32, x_21: vec3<f32>, n_22: vec3<f32>) -> f32 {
         return 0f;
     }
     loop {
-        let _e16 = i_8;
-        let node_3 = light_bvh[_e16];
-        if (node_3.second == LIGHT_BVH_LEAF) {
-            let _e22 = i_8;
+        let _e16 = i_9;
+        let node_2 = light_bvh[_e16];
+        if (node_2.second == LIGHT_BVH_LEAF) {
+            let _e22 = i_9;
             if !((_e22 > 0u)) {
                 let _e29 = bvh_importance(0u, x_21, n_22);
                 local_19 = (_e29 > 0f);
@@ -1659,7 +1676,7 @@ fn light_bvh_pmf(li_2: u32, x_21: vec3<f32>, n_22: vec3<f32>) -> f32 {
             }
             let reaches_1 = local_19;
             let _e34 = pmf_1;
-            let _e35 = i_8;
+            let _e35 = i_9;
             if (_e35 == leaf) {
                 local_20 = reaches_1;
             } else {
@@ -1668,16 +1685,16 @@ fn light_bvh_pmf(li_2: u32, x_21: vec3<f32>, n_22: vec3<f32>) -> f32 {
             let _e40 = local_20;
             return select(0f, _e34, _e40);
         }
-        let _e43 = i_8;
+        let _e43 = i_9;
         let _e44 = bvh_first(_e43, x_21, n_22);
         if (_e44 < 0f) {
             return 0f;
         }
-        let first_2 = (leaf < node_3.second);
+        let first_2 = (leaf < node_2.second);
         let _e50 = pmf_1;
         pmf_1 = (_e50 * select((1f - _e44), _e44, first_2));
-        let _e56 = i_8;
-        i_8 = select(node_3.second, (_e56 + 1u), first_2);
+        let _e56 = i_9;
+        i_9 = select(node_2.second, (_e56 + 1u), first_2);
     }
     return 0f;
 }
@@ -1730,14 +1747,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var sum: vec3<f32> = vec3(0f);
     var s: u32 = 0u;
 
-    let i_9 = gid.x;
+    let i_10 = gid.x;
     let _e4 = params.point_count;
-    if (i_9 >= _e4) {
+    if (i_10 >= _e4) {
         return;
     }
-    let vtx = vertices[i_9];
+    let vtx = vertices[i_10];
     if (vtx.alive == 0u) {
-        candidates[i_9] = 0u;
+        candidates[i_10] = 0u;
         return;
     }
     let x_25 = vtx.position;
@@ -1745,11 +1762,11 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let ng_4 = vtx.gnormal;
     let _e20 = params.seed;
     let _e23 = params.frame;
-    let _e24 = point_stream(_e20, i_9, _e23);
+    let _e24 = point_stream(_e20, i_10, _e23);
     let _e25 = pick_stream(_e24);
     h = _e25;
     let _e30 = bsh_collect(x_25, _e24);
-    candidates[i_9] = _e30.n;
+    candidates[i_10] = _e30.n;
     let _e36 = reservoir_weight(_e30.n, K);
     loop {
         let _e39 = s;
@@ -1782,8 +1799,8 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let add = (vtx.weight * _e63);
     let _e65 = finite3_(add);
     if _e65 {
-        let _e68 = radiance[i_9];
-        radiance[i_9] = (_e68 + vec4<f32>(add, 0f));
+        let _e68 = radiance[i_10];
+        radiance[i_10] = (_e68 + vec4<f32>(add, 0f));
         return;
     } else {
         return;

@@ -222,6 +222,7 @@ const float COVER_WEIGHT = 0.1;
 const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
 const uint K = 8u;
+const uint BSH = 0u;
 
 layout(std430) readonly buffer type_7_block_0Compute { BshNode _group_0_binding_6_cs[]; };
 
@@ -1202,83 +1203,99 @@ bool occluded(vec3 a_9, vec3 b_7) {
     return false;
 }
 
-uint bsh_next_leaf(uint start_1, vec3 x_14) {
-    uint i_2 = 0u;
-    i_2 = start_1;
+BshNode bsh_node(uint nodes, uint i_2) {
+    BshNode _e4 = _group_0_binding_6_cs[i_2];
+    return _e4;
+}
+
+uint bsh_count(uint nodes_1) {
+    return uint(_group_0_binding_6_cs.length());
+}
+
+uint bsh_first(uint nodes_2) {
+    uint _e1 = bsh_count(nodes_2);
+    if ((_e1 > 0u)) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+uint bsh_next_leaf(uint nodes_3, uint start_1, vec3 x_14) {
+    uint i_3 = 0u;
+    i_3 = start_1;
     while(true) {
-        uint _e3 = i_2;
-        if ((_e3 == BSH_NONE)) {
-            return BSH_NONE;
-        }
-        uint _e8 = i_2;
-        BshNode node = _group_0_binding_6_cs[_e8];
-        bool _e13 = sphere_contains_point(node.center, node.radius, x_14);
-        if (_e13) {
-            if ((node.child == BSH_NONE)) {
-                uint _e17 = i_2;
-                return _e17;
-            }
-            i_2 = node.child;
+        uint _e4 = i_3;
+        if ((_e4 != BSH_NONE)) {
         } else {
-            i_2 = node.next;
+            break;
+        }
+        {
+            uint _e7 = i_3;
+            BshNode _e8 = bsh_node(nodes_3, _e7);
+            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            if (_e11) {
+                if ((_e8.child == BSH_NONE)) {
+                    uint _e15 = i_3;
+                    return _e15;
+                }
+                i_3 = _e8.child;
+            } else {
+                i_3 = _e8.next;
+            }
         }
     }
     return BSH_NONE;
 }
 
-uint bsh_first() {
-    return ((uint(_group_0_binding_6_cs.length()) > 0u) ? 0u : BSH_NONE);
-}
-
 Picks bsh_collect(vec3 x_15, uint seed_3) {
     Picks picks = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_2 = 0u;
-    uint i_3 = 0u;
+    uint i_4 = 0u;
     picks.n = 0u;
     h_2 = seed_3;
-    uint _e6 = bsh_first();
-    uint _e7 = bsh_next_leaf(_e6, x_15);
-    i_3 = _e7;
+    uint _e8 = bsh_first(BSH);
+    uint _e9 = bsh_next_leaf(BSH, _e8, x_15);
+    i_4 = _e9;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            uint _e39 = i_3;
-            uint _e42 = _group_0_binding_6_cs[_e39].next;
-            uint _e43 = bsh_next_leaf(_e42, x_15);
-            i_3 = _e43;
+            uint _e42 = i_4;
+            uint _e45 = _group_0_binding_6_cs[_e42].next;
+            uint _e46 = bsh_next_leaf(BSH, _e45, x_15);
+            i_4 = _e46;
         }
         loop_init = false;
-        uint _e9 = i_3;
-        if ((_e9 != BSH_NONE)) {
+        uint _e11 = i_4;
+        if ((_e11 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e13 = picks.n;
-            bool _e14 = reservoir_takes(_e13);
-            if (_e14) {
-                uint _e16 = picks.n;
-                picks.n = (_e16 + 1u);
-                uint _e19 = h_2;
-                uint _e20 = pcg_hash(_e19);
-                h_2 = _e20;
+            uint _e15 = picks.n;
+            bool _e16 = reservoir_takes(_e15);
+            if (_e16) {
+                uint _e18 = picks.n;
+                picks.n = (_e18 + 1u);
+                uint _e21 = h_2;
+                uint _e22 = pcg_hash(_e21);
+                h_2 = _e22;
                 uint hi_4 = h_2;
-                uint _e22 = h_2;
-                uint _e23 = pcg_hash(_e22);
-                h_2 = _e23;
-                uint _e25 = picks.n;
-                uint _e27 = h_2;
-                uint _e28 = reservoir_slot(_e25, K, hi_4, _e27);
-                if ((_e28 < K)) {
-                    uint _e34 = i_3;
-                    uint _e37 = _group_0_binding_6_cs[_e34].light;
-                    picks.light[_e28] = _e37;
+                uint _e24 = h_2;
+                uint _e25 = pcg_hash(_e24);
+                h_2 = _e25;
+                uint _e27 = picks.n;
+                uint _e29 = h_2;
+                uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
+                if ((_e30 < K)) {
+                    uint _e36 = i_4;
+                    uint _e39 = _group_0_binding_6_cs[_e36].light;
+                    picks.light[_e30] = _e39;
                 }
             }
         }
     }
-    Picks _e44 = picks;
-    return _e44;
+    Picks _e47 = picks;
+    return _e47;
 }
 
 Connection connect(uint li, vec3 x_16, vec3 n_17, vec3 ng_2, float w_res, float u1_3, float u2_3, float eps) {
@@ -1322,22 +1339,22 @@ void main() {
     uint h = 0u;
     vec3 e = vec3(0.0);
     uint s = 0u;
-    uint i_4 = gid.x;
+    uint i_5 = gid.x;
     uint _e4 = _group_0_binding_0_cs.point_count;
-    if ((i_4 >= _e4)) {
+    if ((i_5 >= _e4)) {
         return;
     }
-    vec4 p_4 = _group_0_binding_1_cs[i_4];
+    vec4 p_4 = _group_0_binding_1_cs[i_5];
     if ((p_4.w <= 0.0)) {
-        _group_0_binding_9_cs[i_4] = vec4(0.0);
+        _group_0_binding_9_cs[i_5] = vec4(0.0);
         return;
     }
     vec3 x_17 = p_4.xyz;
-    vec4 _e19 = _group_0_binding_2_cs[i_4];
+    vec4 _e19 = _group_0_binding_2_cs[i_5];
     vec3 n_20 = _e19.xyz;
     uint _e23 = _group_0_binding_0_cs.seed;
     uint _e26 = _group_0_binding_0_cs.frame;
-    uint _e27 = point_stream(_e23, i_4, _e26);
+    uint _e27 = point_stream(_e23, i_5, _e26);
     Picks _e28 = bsh_collect(x_17, _e27);
     float _e31 = reservoir_weight(_e28.n, K);
     uint _e32 = pick_stream(_e27);
@@ -1373,7 +1390,7 @@ void main() {
         }
     }
     vec3 _e67 = e;
-    _group_0_binding_9_cs[i_4] = vec4(_e67, float(_e28.n));
+    _group_0_binding_9_cs[i_5] = vec4(_e67, float(_e28.n));
     return;
 }
 

@@ -230,6 +230,7 @@ const float COVER_WEIGHT = 0.1;
 const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
 const uint K = 8u;
+const uint BSH = 0u;
 
 layout(std430) readonly buffer type_6_block_0Compute { GpuGeoNode _group_0_binding_6_cs[]; };
 
@@ -1293,83 +1294,99 @@ bool occluded(vec3 a_9, vec3 b_7) {
     return (_e12.tri != NO_LIGHT);
 }
 
-uint bsh_next_leaf(uint start_1, vec3 x_14) {
-    uint i_3 = 0u;
-    i_3 = start_1;
+BshNode bsh_node(uint nodes, uint i_3) {
+    BshNode _e4 = _group_0_binding_5_cs[i_3];
+    return _e4;
+}
+
+uint bsh_count(uint nodes_1) {
+    return uint(_group_0_binding_5_cs.length());
+}
+
+uint bsh_first(uint nodes_2) {
+    uint _e1 = bsh_count(nodes_2);
+    if ((_e1 > 0u)) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+uint bsh_next_leaf(uint nodes_3, uint start_1, vec3 x_14) {
+    uint i_4 = 0u;
+    i_4 = start_1;
     while(true) {
-        uint _e3 = i_3;
-        if ((_e3 == BSH_NONE)) {
-            return BSH_NONE;
-        }
-        uint _e8 = i_3;
-        BshNode node_1 = _group_0_binding_5_cs[_e8];
-        bool _e13 = sphere_contains_point(node_1.center, node_1.radius, x_14);
-        if (_e13) {
-            if ((node_1.child == BSH_NONE)) {
-                uint _e17 = i_3;
-                return _e17;
-            }
-            i_3 = node_1.child;
+        uint _e4 = i_4;
+        if ((_e4 != BSH_NONE)) {
         } else {
-            i_3 = node_1.next;
+            break;
+        }
+        {
+            uint _e7 = i_4;
+            BshNode _e8 = bsh_node(nodes_3, _e7);
+            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            if (_e11) {
+                if ((_e8.child == BSH_NONE)) {
+                    uint _e15 = i_4;
+                    return _e15;
+                }
+                i_4 = _e8.child;
+            } else {
+                i_4 = _e8.next;
+            }
         }
     }
     return BSH_NONE;
 }
 
-uint bsh_first() {
-    return ((uint(_group_0_binding_5_cs.length()) > 0u) ? 0u : BSH_NONE);
-}
-
 Picks bsh_collect(vec3 x_15, uint seed_3) {
     Picks picks = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_2 = 0u;
-    uint i_4 = 0u;
+    uint i_5 = 0u;
     picks.n = 0u;
     h_2 = seed_3;
-    uint _e6 = bsh_first();
-    uint _e7 = bsh_next_leaf(_e6, x_15);
-    i_4 = _e7;
+    uint _e8 = bsh_first(BSH);
+    uint _e9 = bsh_next_leaf(BSH, _e8, x_15);
+    i_5 = _e9;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e39 = i_4;
-            uint _e42 = _group_0_binding_5_cs[_e39].next;
-            uint _e43 = bsh_next_leaf(_e42, x_15);
-            i_4 = _e43;
+            uint _e42 = i_5;
+            uint _e45 = _group_0_binding_5_cs[_e42].next;
+            uint _e46 = bsh_next_leaf(BSH, _e45, x_15);
+            i_5 = _e46;
         }
         loop_init_1 = false;
-        uint _e9 = i_4;
-        if ((_e9 != BSH_NONE)) {
+        uint _e11 = i_5;
+        if ((_e11 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e13 = picks.n;
-            bool _e14 = reservoir_takes(_e13);
-            if (_e14) {
-                uint _e16 = picks.n;
-                picks.n = (_e16 + 1u);
-                uint _e19 = h_2;
-                uint _e20 = pcg_hash(_e19);
-                h_2 = _e20;
+            uint _e15 = picks.n;
+            bool _e16 = reservoir_takes(_e15);
+            if (_e16) {
+                uint _e18 = picks.n;
+                picks.n = (_e18 + 1u);
+                uint _e21 = h_2;
+                uint _e22 = pcg_hash(_e21);
+                h_2 = _e22;
                 uint hi_4 = h_2;
-                uint _e22 = h_2;
-                uint _e23 = pcg_hash(_e22);
-                h_2 = _e23;
-                uint _e25 = picks.n;
-                uint _e27 = h_2;
-                uint _e28 = reservoir_slot(_e25, K, hi_4, _e27);
-                if ((_e28 < K)) {
-                    uint _e34 = i_4;
-                    uint _e37 = _group_0_binding_5_cs[_e34].light;
-                    picks.light[_e28] = _e37;
+                uint _e24 = h_2;
+                uint _e25 = pcg_hash(_e24);
+                h_2 = _e25;
+                uint _e27 = picks.n;
+                uint _e29 = h_2;
+                uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
+                if ((_e30 < K)) {
+                    uint _e36 = i_5;
+                    uint _e39 = _group_0_binding_5_cs[_e36].light;
+                    picks.light[_e30] = _e39;
                 }
             }
         }
     }
-    Picks _e44 = picks;
-    return _e44;
+    Picks _e47 = picks;
+    return _e47;
 }
 
 Connection connect(uint li, vec3 x_16, vec3 n_17, vec3 ng_2, float w_res, float u1_3, float u2_3, float eps) {
@@ -1459,14 +1476,14 @@ void main() {
     uint h = 0u;
     vec3 sum = vec3(0.0);
     uint s = 0u;
-    uint i_9 = gid.x;
+    uint i_10 = gid.x;
     uint _e4 = _group_0_binding_0_cs.point_count;
-    if ((i_9 >= _e4)) {
+    if ((i_10 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = _group_0_binding_1_cs[i_9];
+    GpuPathVertex vtx = _group_0_binding_1_cs[i_10];
     if ((vtx.alive == 0u)) {
-        _group_0_binding_9_cs[i_9] = 0u;
+        _group_0_binding_9_cs[i_10] = 0u;
         return;
     }
     vec3 x_25 = vtx.position;
@@ -1474,11 +1491,11 @@ void main() {
     vec3 ng_4 = vtx.gnormal;
     uint _e20 = _group_0_binding_0_cs.seed;
     uint _e23 = _group_0_binding_0_cs.frame;
-    uint _e24 = point_stream(_e20, i_9, _e23);
+    uint _e24 = point_stream(_e20, i_10, _e23);
     uint _e25 = pick_stream(_e24);
     h = _e25;
     Picks _e30 = bsh_collect(x_25, _e24);
-    _group_0_binding_9_cs[i_9] = _e30.n;
+    _group_0_binding_9_cs[i_10] = _e30.n;
     float _e36 = reservoir_weight(_e30.n, K);
     bool loop_init_2 = true;
     while(true) {
@@ -1513,8 +1530,8 @@ void main() {
     vec3 add = (vtx.weight * _e63);
     bool _e65 = finite3_(add);
     if (_e65) {
-        vec4 _e68 = _group_0_binding_8_cs[i_9];
-        _group_0_binding_8_cs[i_9] = (_e68 + vec4(add, 0.0));
+        vec4 _e68 = _group_0_binding_8_cs[i_10];
+        _group_0_binding_8_cs[i_10] = (_e68 + vec4(add, 0.0));
         return;
     } else {
         return;

@@ -230,6 +230,7 @@ const float COVER_WEIGHT = 0.1;
 const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
 const uint K = 8u;
+const uint BSH = 0u;
 
 layout(std430) readonly buffer type_6_block_0Compute { GpuGeoNode _group_0_binding_6_cs[]; };
 
@@ -1343,16 +1344,16 @@ float light_weight(uint li_1, vec3 x_17, vec3 n_18) {
     return _e15;
 }
 
-float bvh_importance(uint i_5, vec3 x_18, vec3 n_19) {
-    GpuLightBvhNode b_9 = _group_1_binding_3_cs[i_5];
+float bvh_importance(uint i_6, vec3 x_18, vec3 n_19) {
+    GpuLightBvhNode b_9 = _group_1_binding_3_cs[i_6];
     float _e12 = light_importance(b_9.center, b_9.radius, b_9.phi, b_9.axis, b_9.cos_o, b_9.cos_e, x_18, n_19);
     return _e12;
 }
 
-float bvh_first(uint i_6, vec3 x_19, vec3 n_20) {
+float bvh_first(uint i_7, vec3 x_19, vec3 n_20) {
     bool local_17 = false;
-    uint j = _group_1_binding_3_cs[i_6].second;
-    if (!((j <= (i_6 + 1u)))) {
+    uint j = _group_1_binding_3_cs[i_7].second;
+    if (!((j <= (i_7 + 1u)))) {
         local_17 = (j >= uint(_group_1_binding_3_cs.length()));
     } else {
         local_17 = true;
@@ -1361,7 +1362,7 @@ float bvh_first(uint i_6, vec3 x_19, vec3 n_20) {
     if (_e17) {
         return -1.0;
     }
-    float _e21 = bvh_importance((i_6 + 1u), x_19, n_20);
+    float _e21 = bvh_importance((i_7 + 1u), x_19, n_20);
     float _e22 = bvh_importance(j, x_19, n_20);
     float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
@@ -1369,15 +1370,15 @@ float bvh_first(uint i_6, vec3 x_19, vec3 n_20) {
 
 BvhPick light_bvh_sample(vec3 x_20, vec3 n_21, float u_in) {
     float u_5 = 0.0;
-    uint i_7 = 0u;
+    uint i_8 = 0u;
     float pmf = 1.0;
     bool local_18 = false;
     u_5 = u_in;
     while(true) {
-        uint _e9 = i_7;
+        uint _e9 = i_8;
         GpuLightBvhNode node_1 = _group_1_binding_3_cs[_e9];
         if ((node_1.second == LIGHT_BVH_LEAF)) {
-            uint _e15 = i_7;
+            uint _e15 = i_8;
             if (!((_e15 > 0u))) {
                 float _e22 = bvh_importance(0u, x_20, n_21);
                 local_18 = (_e22 > 0.0);
@@ -1388,7 +1389,7 @@ BvhPick light_bvh_sample(vec3 x_20, vec3 n_21, float u_in) {
             float _e28 = pmf;
             return BvhPick(node_1.light, (reaches ? _e28 : 0.0));
         }
-        uint _e32 = i_7;
+        uint _e32 = i_8;
         float _e33 = bvh_first(_e32, x_20, n_21);
         if ((_e33 < 0.0)) {
             return BvhPick(0u, 0.0);
@@ -1400,14 +1401,14 @@ BvhPick light_bvh_sample(vec3 x_20, vec3 n_21, float u_in) {
         float _e46 = u_5;
         float _e47 = bvh_remap_u(_e46, _e33, first_1);
         u_5 = _e47;
-        uint _e49 = i_7;
-        i_7 = (first_1 ? (_e49 + 1u) : node_1.second);
+        uint _e49 = i_8;
+        i_8 = (first_1 ? (_e49 + 1u) : node_1.second);
     }
     return BvhPick(0u, 0.0);
 }
 
 float light_bvh_pmf(uint li_2, vec3 x_21, vec3 n_22) {
-    uint i_8 = 0u;
+    uint i_9 = 0u;
     float pmf_1 = 1.0;
     bool local_19 = false;
     bool local_20 = false;
@@ -1416,10 +1417,10 @@ float light_bvh_pmf(uint li_2, vec3 x_21, vec3 n_22) {
         return 0.0;
     }
     while(true) {
-        uint _e16 = i_8;
+        uint _e16 = i_9;
         GpuLightBvhNode node_2 = _group_1_binding_3_cs[_e16];
         if ((node_2.second == LIGHT_BVH_LEAF)) {
-            uint _e22 = i_8;
+            uint _e22 = i_9;
             if (!((_e22 > 0u))) {
                 float _e29 = bvh_importance(0u, x_21, n_22);
                 local_19 = (_e29 > 0.0);
@@ -1428,7 +1429,7 @@ float light_bvh_pmf(uint li_2, vec3 x_21, vec3 n_22) {
             }
             bool reaches_1 = local_19;
             float _e34 = pmf_1;
-            uint _e35 = i_8;
+            uint _e35 = i_9;
             if ((_e35 == leaf)) {
                 local_20 = reaches_1;
             } else {
@@ -1437,7 +1438,7 @@ float light_bvh_pmf(uint li_2, vec3 x_21, vec3 n_22) {
             bool _e40 = local_20;
             return (_e40 ? _e34 : 0.0);
         }
-        uint _e43 = i_8;
+        uint _e43 = i_9;
         float _e44 = bvh_first(_e43, x_21, n_22);
         if ((_e44 < 0.0)) {
             return 0.0;
@@ -1445,8 +1446,8 @@ float light_bvh_pmf(uint li_2, vec3 x_21, vec3 n_22) {
         bool first_2 = (leaf < node_2.second);
         float _e50 = pmf_1;
         pmf_1 = (_e50 * (first_2 ? _e44 : (1.0 - _e44)));
-        uint _e56 = i_8;
-        i_8 = (first_2 ? (_e56 + 1u) : node_2.second);
+        uint _e56 = i_9;
+        i_9 = (first_2 ? (_e56 + 1u) : node_2.second);
     }
     return 0.0;
 }
@@ -1496,14 +1497,14 @@ void main() {
     uvec3 gid = gl_GlobalInvocationID;
     uint h = 0u;
     vec3 sum = vec3(0.0);
-    uint i_9 = gid.x;
+    uint i_10 = gid.x;
     uint _e4 = _group_0_binding_0_cs.point_count;
-    if ((i_9 >= _e4)) {
+    if ((i_10 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = _group_0_binding_1_cs[i_9];
+    GpuPathVertex vtx = _group_0_binding_1_cs[i_10];
     if ((vtx.alive == 0u)) {
-        _group_0_binding_9_cs[i_9] = 0u;
+        _group_0_binding_9_cs[i_10] = 0u;
         return;
     }
     vec3 x_25 = vtx.position;
@@ -1511,10 +1512,10 @@ void main() {
     vec3 ng_4 = vtx.gnormal;
     uint _e20 = _group_0_binding_0_cs.seed;
     uint _e23 = _group_0_binding_0_cs.frame;
-    uint _e24 = point_stream(_e20, i_9, _e23);
+    uint _e24 = point_stream(_e20, i_10, _e23);
     uint _e25 = pick_stream(_e24);
     h = _e25;
-    _group_0_binding_9_cs[i_9] = 0u;
+    _group_0_binding_9_cs[i_10] = 0u;
     uint _e33 = h;
     uint _e34 = pcg_hash(_e33);
     h = _e34;
@@ -1541,8 +1542,8 @@ void main() {
     vec3 add = (vtx.weight * _e55);
     bool _e57 = finite3_(add);
     if (_e57) {
-        vec4 _e60 = _group_0_binding_8_cs[i_9];
-        _group_0_binding_8_cs[i_9] = (_e60 + vec4(add, 0.0));
+        vec4 _e60 = _group_0_binding_8_cs[i_10];
+        _group_0_binding_8_cs[i_10] = (_e60 + vec4(add, 0.0));
         return;
     } else {
         return;

@@ -245,6 +245,7 @@ static const float COVER_WEIGHT = 0.1;
 static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
 static const uint K = 8u;
+static const uint BSH = 0u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
 ByteAddressBuffer geo_nodes : register(t7);
@@ -1585,94 +1586,113 @@ BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg
     return ret;
 }
 
-uint bsh_next_leaf(uint start_1, float3 x_14)
+BshNode bsh_node(uint nodes, uint i_3)
 {
-    uint i_3 = (uint)0;
+    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_3*32+0)), asfloat(bsh_nodes.Load(i_3*32+12)), asuint(bsh_nodes.Load(i_3*32+16)), asuint(bsh_nodes.Load(i_3*32+20)), asuint(bsh_nodes.Load(i_3*32+24)), asuint(bsh_nodes.Load(i_3*32+28)));
+    const BshNode bshnode = _e4;
+    return bshnode;
+}
 
-    i_3 = start_1;
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e3 = i_3;
-        if ((_e3 == BSH_NONE)) {
-            return BSH_NONE;
-        }
-        uint _e8 = i_3;
-        BshNode node_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e8*32+0)), asfloat(bsh_nodes.Load(_e8*32+12)), asuint(bsh_nodes.Load(_e8*32+16)), asuint(bsh_nodes.Load(_e8*32+20)), asuint(bsh_nodes.Load(_e8*32+24)), asuint(bsh_nodes.Load(_e8*32+28)));
-        const bool _e13 = sphere_contains_point(node_1.center_, node_1.radius, x_14);
-        if (_e13) {
-            if ((node_1.child == BSH_NONE)) {
-                uint _e17 = i_3;
-                return _e17;
-            }
-            i_3 = node_1.child;
-        } else {
-            i_3 = node_1.next;
-        }
+uint bsh_count(uint nodes_1)
+{
+    return ((NagaBufferLength(bsh_nodes) - 0) / 32);
+}
+
+uint bsh_first(uint nodes_2)
+{
+    const uint _e1 = bsh_count(nodes_2);
+    if ((_e1 > 0u)) {
+        return 0u;
     }
     return BSH_NONE;
 }
 
-uint bsh_first()
+uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_14)
 {
-    return ((((NagaBufferLength(bsh_nodes) - 0) / 32) > 0u) ? 0u : BSH_NONE);
+    uint i_4 = (uint)0;
+
+    i_4 = start_1;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e4 = i_4;
+        if ((_e4 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e7 = i_4;
+            const BshNode _e8 = bsh_node(nodes_3, _e7);
+            const bool _e11 = sphere_contains_point(_e8.center_, _e8.radius, x_14);
+            if (_e11) {
+                if ((_e8.child == BSH_NONE)) {
+                    uint _e15 = i_4;
+                    return _e15;
+                }
+                i_4 = _e8.child;
+            } else {
+                i_4 = _e8.next;
+            }
+        }
+    }
+    return BSH_NONE;
 }
 
 Picks bsh_collect(float3 x_15, uint seed_3)
 {
     Picks picks = (Picks)0;
     uint h_2 = (uint)0;
-    uint i_4 = (uint)0;
+    uint i_5 = (uint)0;
 
     picks.n = 0u;
     h_2 = seed_3;
-    const uint _e6 = bsh_first();
-    const uint _e7 = bsh_next_leaf(_e6, x_15);
-    i_4 = _e7;
+    const uint _e8 = bsh_first(BSH);
+    const uint _e9 = bsh_next_leaf(BSH, _e8, x_15);
+    i_5 = _e9;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e39 = i_4;
-            uint _e42 = asuint(bsh_nodes.Load(20+_e39*32));
-            const uint _e43 = bsh_next_leaf(_e42, x_15);
-            i_4 = _e43;
+            uint _e42 = i_5;
+            uint _e45 = asuint(bsh_nodes.Load(20+_e42*32));
+            const uint _e46 = bsh_next_leaf(BSH, _e45, x_15);
+            i_5 = _e46;
         }
         loop_init_1 = false;
-        uint _e9 = i_4;
-        if ((_e9 != BSH_NONE)) {
+        uint _e11 = i_5;
+        if ((_e11 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e13 = picks.n;
-            const bool _e14 = reservoir_takes(_e13);
-            if (_e14) {
-                uint _e16 = picks.n;
-                picks.n = (_e16 + 1u);
-                uint _e19 = h_2;
-                const uint _e20 = pcg_hash(_e19);
-                h_2 = _e20;
+            uint _e15 = picks.n;
+            const bool _e16 = reservoir_takes(_e15);
+            if (_e16) {
+                uint _e18 = picks.n;
+                picks.n = (_e18 + 1u);
+                uint _e21 = h_2;
+                const uint _e22 = pcg_hash(_e21);
+                h_2 = _e22;
                 uint hi_4 = h_2;
-                uint _e22 = h_2;
-                const uint _e23 = pcg_hash(_e22);
-                h_2 = _e23;
-                uint _e25 = picks.n;
-                uint _e27 = h_2;
-                const uint _e28 = reservoir_slot(_e25, K, hi_4, _e27);
-                if ((_e28 < K)) {
-                    uint _e34 = i_4;
-                    uint _e37 = asuint(bsh_nodes.Load(24+_e34*32));
-                    picks.light[min(uint(_e28), 7u)] = _e37;
+                uint _e24 = h_2;
+                const uint _e25 = pcg_hash(_e24);
+                h_2 = _e25;
+                uint _e27 = picks.n;
+                uint _e29 = h_2;
+                const uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
+                if ((_e30 < K)) {
+                    uint _e36 = i_5;
+                    uint _e39 = asuint(bsh_nodes.Load(24+_e36*32));
+                    picks.light[min(uint(_e30), 7u)] = _e39;
                 }
             }
         }
     }
-    Picks _e44 = picks;
-    const Picks picks_1 = _e44;
+    Picks _e47 = picks;
+    const Picks picks_1 = _e47;
     return picks_1;
 }
 
@@ -1736,22 +1756,22 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 e = (0.0).xxx;
     uint s = 0u;
 
-    uint i_5 = gid.x;
+    uint i_6 = gid.x;
     uint _e4 = params.point_count;
-    if ((i_5 >= _e4)) {
+    if ((i_6 >= _e4)) {
         return;
     }
-    float4 p_4 = asfloat(points.Load4(i_5*16));
+    float4 p_4 = asfloat(points.Load4(i_6*16));
     if ((p_4.w <= 0.0)) {
-        irradiance.Store4(i_5*16, asuint((0.0).xxxx));
+        irradiance.Store4(i_6*16, asuint((0.0).xxxx));
         return;
     }
     float3 x_17 = p_4.xyz;
-    float4 _e19 = asfloat(normals.Load4(i_5*16));
+    float4 _e19 = asfloat(normals.Load4(i_6*16));
     float3 n_21 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
-    const uint _e27 = point_stream(_e23, i_5, _e26);
+    const uint _e27 = point_stream(_e23, i_6, _e26);
     const Picks _e28 = bsh_collect(x_17, _e27);
     const float _e31 = reservoir_weight(_e28.n, K);
     const uint _e32 = pick_stream(_e27);
@@ -1790,6 +1810,6 @@ void main(uint3 gid : SV_DispatchThreadID)
         }
     }
     float3 _e67 = e;
-    irradiance.Store4(i_5*16, asuint(float4(_e67, float(_e28.n))));
+    irradiance.Store4(i_6*16, asuint(float4(_e67, float(_e28.n))));
     return;
 }

@@ -250,6 +250,7 @@ static const float COVER_WEIGHT = 0.1;
 static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
 static const uint K = 8u;
+static const uint BSH = 0u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
 ByteAddressBuffer geo_nodes : register(t6);
@@ -1598,94 +1599,113 @@ BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg
     return ret;
 }
 
-uint bsh_next_leaf(uint start_1, float3 x_14)
+BshNode bsh_node(uint nodes, uint i_3)
 {
-    uint i_3 = (uint)0;
+    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_3*32+0)), asfloat(bsh_nodes.Load(i_3*32+12)), asuint(bsh_nodes.Load(i_3*32+16)), asuint(bsh_nodes.Load(i_3*32+20)), asuint(bsh_nodes.Load(i_3*32+24)), asuint(bsh_nodes.Load(i_3*32+28)));
+    const BshNode bshnode = _e4;
+    return bshnode;
+}
 
-    i_3 = start_1;
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e3 = i_3;
-        if ((_e3 == BSH_NONE)) {
-            return BSH_NONE;
-        }
-        uint _e8 = i_3;
-        BshNode node_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e8*32+0)), asfloat(bsh_nodes.Load(_e8*32+12)), asuint(bsh_nodes.Load(_e8*32+16)), asuint(bsh_nodes.Load(_e8*32+20)), asuint(bsh_nodes.Load(_e8*32+24)), asuint(bsh_nodes.Load(_e8*32+28)));
-        const bool _e13 = sphere_contains_point(node_1.center_, node_1.radius, x_14);
-        if (_e13) {
-            if ((node_1.child == BSH_NONE)) {
-                uint _e17 = i_3;
-                return _e17;
-            }
-            i_3 = node_1.child;
-        } else {
-            i_3 = node_1.next;
-        }
+uint bsh_count(uint nodes_1)
+{
+    return ((NagaBufferLength(bsh_nodes) - 0) / 32);
+}
+
+uint bsh_first(uint nodes_2)
+{
+    const uint _e1 = bsh_count(nodes_2);
+    if ((_e1 > 0u)) {
+        return 0u;
     }
     return BSH_NONE;
 }
 
-uint bsh_first()
+uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_14)
 {
-    return ((((NagaBufferLength(bsh_nodes) - 0) / 32) > 0u) ? 0u : BSH_NONE);
+    uint i_4 = (uint)0;
+
+    i_4 = start_1;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e4 = i_4;
+        if ((_e4 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e7 = i_4;
+            const BshNode _e8 = bsh_node(nodes_3, _e7);
+            const bool _e11 = sphere_contains_point(_e8.center_, _e8.radius, x_14);
+            if (_e11) {
+                if ((_e8.child == BSH_NONE)) {
+                    uint _e15 = i_4;
+                    return _e15;
+                }
+                i_4 = _e8.child;
+            } else {
+                i_4 = _e8.next;
+            }
+        }
+    }
+    return BSH_NONE;
 }
 
 Picks bsh_collect(float3 x_15, uint seed_3)
 {
     Picks picks = (Picks)0;
     uint h_2 = (uint)0;
-    uint i_4 = (uint)0;
+    uint i_5 = (uint)0;
 
     picks.n = 0u;
     h_2 = seed_3;
-    const uint _e6 = bsh_first();
-    const uint _e7 = bsh_next_leaf(_e6, x_15);
-    i_4 = _e7;
+    const uint _e8 = bsh_first(BSH);
+    const uint _e9 = bsh_next_leaf(BSH, _e8, x_15);
+    i_5 = _e9;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e39 = i_4;
-            uint _e42 = asuint(bsh_nodes.Load(20+_e39*32));
-            const uint _e43 = bsh_next_leaf(_e42, x_15);
-            i_4 = _e43;
+            uint _e42 = i_5;
+            uint _e45 = asuint(bsh_nodes.Load(20+_e42*32));
+            const uint _e46 = bsh_next_leaf(BSH, _e45, x_15);
+            i_5 = _e46;
         }
         loop_init_1 = false;
-        uint _e9 = i_4;
-        if ((_e9 != BSH_NONE)) {
+        uint _e11 = i_5;
+        if ((_e11 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e13 = picks.n;
-            const bool _e14 = reservoir_takes(_e13);
-            if (_e14) {
-                uint _e16 = picks.n;
-                picks.n = (_e16 + 1u);
-                uint _e19 = h_2;
-                const uint _e20 = pcg_hash(_e19);
-                h_2 = _e20;
+            uint _e15 = picks.n;
+            const bool _e16 = reservoir_takes(_e15);
+            if (_e16) {
+                uint _e18 = picks.n;
+                picks.n = (_e18 + 1u);
+                uint _e21 = h_2;
+                const uint _e22 = pcg_hash(_e21);
+                h_2 = _e22;
                 uint hi_4 = h_2;
-                uint _e22 = h_2;
-                const uint _e23 = pcg_hash(_e22);
-                h_2 = _e23;
-                uint _e25 = picks.n;
-                uint _e27 = h_2;
-                const uint _e28 = reservoir_slot(_e25, K, hi_4, _e27);
-                if ((_e28 < K)) {
-                    uint _e34 = i_4;
-                    uint _e37 = asuint(bsh_nodes.Load(24+_e34*32));
-                    picks.light[min(uint(_e28), 7u)] = _e37;
+                uint _e24 = h_2;
+                const uint _e25 = pcg_hash(_e24);
+                h_2 = _e25;
+                uint _e27 = picks.n;
+                uint _e29 = h_2;
+                const uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
+                if ((_e30 < K)) {
+                    uint _e36 = i_5;
+                    uint _e39 = asuint(bsh_nodes.Load(24+_e36*32));
+                    picks.light[min(uint(_e30), 7u)] = _e39;
                 }
             }
         }
     }
-    Picks _e44 = picks;
-    const Picks picks_1 = _e44;
+    Picks _e47 = picks;
+    const Picks picks_1 = _e47;
     return picks_1;
 }
 
@@ -1782,19 +1802,19 @@ GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, f
     return ret;
 }
 
-float bvh_importance(uint i_5, float3 x_18, float3 n_19)
+float bvh_importance(uint i_6, float3 x_18, float3 n_19)
 {
-    GpuLightBvhNode b_10 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_5*48+0)), asfloat(light_bvh.Load(i_5*48+12)), asfloat(light_bvh.Load3(i_5*48+16)), asfloat(light_bvh.Load(i_5*48+28)), asfloat(light_bvh.Load(i_5*48+32)), asfloat(light_bvh.Load(i_5*48+36)), asuint(light_bvh.Load(i_5*48+40)), asuint(light_bvh.Load(i_5*48+44)));
+    GpuLightBvhNode b_10 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_6*48+0)), asfloat(light_bvh.Load(i_6*48+12)), asfloat(light_bvh.Load3(i_6*48+16)), asfloat(light_bvh.Load(i_6*48+28)), asfloat(light_bvh.Load(i_6*48+32)), asfloat(light_bvh.Load(i_6*48+36)), asuint(light_bvh.Load(i_6*48+40)), asuint(light_bvh.Load(i_6*48+44)));
     const float _e12 = light_importance(b_10.center_, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_18, n_19);
     return _e12;
 }
 
-float bvh_first(uint i_6, float3 x_19, float3 n_20)
+float bvh_first(uint i_7, float3 x_19, float3 n_20)
 {
     bool local_17 = (bool)0;
 
-    uint j = asuint(light_bvh.Load(40+i_6*48));
-    if (!((j <= (i_6 + 1u)))) {
+    uint j = asuint(light_bvh.Load(40+i_7*48));
+    if (!((j <= (i_7 + 1u)))) {
         local_17 = (j >= ((NagaBufferLength(light_bvh) - 0) / 48));
     } else {
         local_17 = true;
@@ -1803,7 +1823,7 @@ float bvh_first(uint i_6, float3 x_19, float3 n_20)
     if (_e17) {
         return -1.0;
     }
-    const float _e21 = bvh_importance((i_6 + 1u), x_19, n_20);
+    const float _e21 = bvh_importance((i_7 + 1u), x_19, n_20);
     const float _e22 = bvh_importance(j, x_19, n_20);
     const float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
@@ -1819,7 +1839,7 @@ BvhPick ConstructBvhPick(uint arg0, float arg1) {
 BvhPick light_bvh_sample(float3 x_20, float3 n_21, float u_in)
 {
     float u_5 = (float)0;
-    uint i_7 = 0u;
+    uint i_8 = 0u;
     float pmf = 1.0;
     bool local_18 = (bool)0;
 
@@ -1828,10 +1848,10 @@ BvhPick light_bvh_sample(float3 x_20, float3 n_21, float u_in)
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        uint _e9 = i_7;
-        GpuLightBvhNode node_2 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(_e9*48+0)), asfloat(light_bvh.Load(_e9*48+12)), asfloat(light_bvh.Load3(_e9*48+16)), asfloat(light_bvh.Load(_e9*48+28)), asfloat(light_bvh.Load(_e9*48+32)), asfloat(light_bvh.Load(_e9*48+36)), asuint(light_bvh.Load(_e9*48+40)), asuint(light_bvh.Load(_e9*48+44)));
-        if ((node_2.second == LIGHT_BVH_LEAF)) {
-            uint _e15 = i_7;
+        uint _e9 = i_8;
+        GpuLightBvhNode node_1 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(_e9*48+0)), asfloat(light_bvh.Load(_e9*48+12)), asfloat(light_bvh.Load3(_e9*48+16)), asfloat(light_bvh.Load(_e9*48+28)), asfloat(light_bvh.Load(_e9*48+32)), asfloat(light_bvh.Load(_e9*48+36)), asuint(light_bvh.Load(_e9*48+40)), asuint(light_bvh.Load(_e9*48+44)));
+        if ((node_1.second == LIGHT_BVH_LEAF)) {
+            uint _e15 = i_8;
             if (!((_e15 > 0u))) {
                 const float _e22 = bvh_importance(0u, x_20, n_21);
                 local_18 = (_e22 > 0.0);
@@ -1840,10 +1860,10 @@ BvhPick light_bvh_sample(float3 x_20, float3 n_21, float u_in)
             }
             bool reaches = local_18;
             float _e28 = pmf;
-            const BvhPick bvhpick = ConstructBvhPick(node_2.light, (reaches ? _e28 : 0.0));
+            const BvhPick bvhpick = ConstructBvhPick(node_1.light, (reaches ? _e28 : 0.0));
             return bvhpick;
         }
-        uint _e32 = i_7;
+        uint _e32 = i_8;
         const float _e33 = bvh_first(_e32, x_20, n_21);
         if ((_e33 < 0.0)) {
             const BvhPick bvhpick_1 = ConstructBvhPick(0u, 0.0);
@@ -1856,8 +1876,8 @@ BvhPick light_bvh_sample(float3 x_20, float3 n_21, float u_in)
         float _e46 = u_5;
         const float _e47 = bvh_remap_u(_e46, _e33, first_1);
         u_5 = _e47;
-        uint _e49 = i_7;
-        i_7 = (first_1 ? (_e49 + 1u) : node_2.second);
+        uint _e49 = i_8;
+        i_8 = (first_1 ? (_e49 + 1u) : node_1.second);
     }
     const BvhPick bvhpick_2 = ConstructBvhPick(0u, 0.0);
     return bvhpick_2;
@@ -1865,7 +1885,7 @@ BvhPick light_bvh_sample(float3 x_20, float3 n_21, float u_in)
 
 float light_bvh_pmf(uint li_2, float3 x_21, float3 n_22)
 {
-    uint i_8 = 0u;
+    uint i_9 = 0u;
     float pmf_1 = 1.0;
     bool local_19 = (bool)0;
     bool local_20 = (bool)0;
@@ -1878,10 +1898,10 @@ float light_bvh_pmf(uint li_2, float3 x_21, float3 n_22)
     while(true) {
         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e16 = i_8;
-        GpuLightBvhNode node_3 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(_e16*48+0)), asfloat(light_bvh.Load(_e16*48+12)), asfloat(light_bvh.Load3(_e16*48+16)), asfloat(light_bvh.Load(_e16*48+28)), asfloat(light_bvh.Load(_e16*48+32)), asfloat(light_bvh.Load(_e16*48+36)), asuint(light_bvh.Load(_e16*48+40)), asuint(light_bvh.Load(_e16*48+44)));
-        if ((node_3.second == LIGHT_BVH_LEAF)) {
-            uint _e22 = i_8;
+        uint _e16 = i_9;
+        GpuLightBvhNode node_2 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(_e16*48+0)), asfloat(light_bvh.Load(_e16*48+12)), asfloat(light_bvh.Load3(_e16*48+16)), asfloat(light_bvh.Load(_e16*48+28)), asfloat(light_bvh.Load(_e16*48+32)), asfloat(light_bvh.Load(_e16*48+36)), asuint(light_bvh.Load(_e16*48+40)), asuint(light_bvh.Load(_e16*48+44)));
+        if ((node_2.second == LIGHT_BVH_LEAF)) {
+            uint _e22 = i_9;
             if (!((_e22 > 0u))) {
                 const float _e29 = bvh_importance(0u, x_21, n_22);
                 local_19 = (_e29 > 0.0);
@@ -1890,7 +1910,7 @@ float light_bvh_pmf(uint li_2, float3 x_21, float3 n_22)
             }
             bool reaches_1 = local_19;
             float _e34 = pmf_1;
-            uint _e35 = i_8;
+            uint _e35 = i_9;
             if ((_e35 == leaf)) {
                 local_20 = reaches_1;
             } else {
@@ -1899,16 +1919,16 @@ float light_bvh_pmf(uint li_2, float3 x_21, float3 n_22)
             bool _e40 = local_20;
             return (_e40 ? _e34 : 0.0);
         }
-        uint _e43 = i_8;
+        uint _e43 = i_9;
         const float _e44 = bvh_first(_e43, x_21, n_22);
         if ((_e44 < 0.0)) {
             return 0.0;
         }
-        bool first_2 = (leaf < node_3.second);
+        bool first_2 = (leaf < node_2.second);
         float _e50 = pmf_1;
         pmf_1 = (_e50 * (first_2 ? _e44 : (1.0 - _e44)));
-        uint _e56 = i_8;
-        i_8 = (first_2 ? (_e56 + 1u) : node_3.second);
+        uint _e56 = i_9;
+        i_9 = (first_2 ? (_e56 + 1u) : node_2.second);
     }
     return 0.0;
 }
@@ -1977,14 +1997,14 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint h = (uint)0;
     float3 sum = (0.0).xxx;
 
-    uint i_9 = gid.x;
+    uint i_10 = gid.x;
     uint _e4 = params.point_count;
-    if ((i_9 >= _e4)) {
+    if ((i_10 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_9*64+0)), asuint(vertices_.Load(i_9*64+12)), asfloat(vertices_.Load3(i_9*64+16)), asfloat(vertices_.Load(i_9*64+28)), asfloat(vertices_.Load3(i_9*64+32)), asfloat(vertices_.Load(i_9*64+44)), asfloat(vertices_.Load3(i_9*64+48)), asfloat(vertices_.Load(i_9*64+60)));
+    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_10*64+0)), asuint(vertices_.Load(i_10*64+12)), asfloat(vertices_.Load3(i_10*64+16)), asfloat(vertices_.Load(i_10*64+28)), asfloat(vertices_.Load3(i_10*64+32)), asfloat(vertices_.Load(i_10*64+44)), asfloat(vertices_.Load3(i_10*64+48)), asfloat(vertices_.Load(i_10*64+60)));
     if ((vtx.alive == 0u)) {
-        candidates.Store(i_9*4, asuint(0u));
+        candidates.Store(i_10*4, asuint(0u));
         return;
     }
     float3 x_25 = vtx.position;
@@ -1992,10 +2012,10 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 ng_4 = vtx.gnormal;
     uint _e20 = params.seed;
     uint _e23 = params.frame;
-    const uint _e24 = point_stream(_e20, i_9, _e23);
+    const uint _e24 = point_stream(_e20, i_10, _e23);
     const uint _e25 = pick_stream(_e24);
     h = _e25;
-    candidates.Store(i_9*4, asuint(0u));
+    candidates.Store(i_10*4, asuint(0u));
     uint _e33 = h;
     const uint _e34 = pcg_hash(_e33);
     h = _e34;
@@ -2022,8 +2042,8 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 add = (vtx.weight * _e55);
     const bool _e57 = finite3_(add);
     if (_e57) {
-        float4 _e60 = asfloat(radiance.Load4(i_9*16));
-        radiance.Store4(i_9*16, asuint((_e60 + float4(add, 0.0))));
+        float4 _e60 = asfloat(radiance.Load4(i_10*16));
+        radiance.Store4(i_10*16, asuint((_e60 + float4(add, 0.0))));
         return;
     } else {
         return;

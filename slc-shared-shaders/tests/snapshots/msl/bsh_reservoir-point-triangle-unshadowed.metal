@@ -205,6 +205,7 @@ struct Picks {
     type_6 light;
     uint n;
 };
+typedef uint BshNodes;
 typedef BshNode type_7[1];
 struct Connection {
     metal::float3 e;
@@ -242,6 +243,7 @@ constant float COVER_WEIGHT = 0.1;
 constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
 constant uint K = 8u;
+constant BshNodes BSH = 0u;
 
 float at(
     Table tab,
@@ -1758,43 +1760,70 @@ bool occluded(
     return false;
 }
 
+BshNode bsh_node(
+    BshNodes nodes,
+    uint i_2,
+    device type_7 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshNode _e4 = bsh_nodes[i_2];
+    return _e4;
+}
+
+uint bsh_count(
+    BshNodes nodes_1,
+    device type_7 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    return 1 + (_buffer_sizes.size1 - 0 - 32) / 32;
+}
+
+uint bsh_first(
+    BshNodes nodes_2,
+    device type_7 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e1 = bsh_count(nodes_2, bsh_nodes, _buffer_sizes);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
 uint bsh_next_leaf(
+    BshNodes nodes_3,
     uint start_1,
     metal::float3 x_14,
     device type_7 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_2 = {};
-    i_2 = start_1;
+    uint i_3 = {};
+    i_3 = start_1;
     uint2 loop_bound_1 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e3 = i_2;
-        if (_e3 == BSH_NONE) {
-            return BSH_NONE;
-        }
-        uint _e8 = i_2;
-        BshNode node = bsh_nodes[_e8];
-        bool _e13 = sphere_contains_point(node.center, node.radius, x_14);
-        if (_e13) {
-            if (node.child == BSH_NONE) {
-                uint _e17 = i_2;
-                return _e17;
-            }
-            i_2 = node.child;
+        uint _e4 = i_3;
+        if (_e4 != BSH_NONE) {
         } else {
-            i_2 = node.next;
+            break;
+        }
+        {
+            uint _e7 = i_3;
+            BshNode _e8 = bsh_node(nodes_3, _e7, bsh_nodes, _buffer_sizes);
+            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            if (_e11) {
+                if (_e8.child == BSH_NONE) {
+                    uint _e15 = i_3;
+                    return _e15;
+                }
+                i_3 = _e8.child;
+            } else {
+                i_3 = _e8.next;
+            }
         }
     }
     return BSH_NONE;
-}
-
-uint bsh_first(
-    device type_7 const& bsh_nodes,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    return ((1 + (_buffer_sizes.size1 - 0 - 32) / 32) > 0u) ? 0u : BSH_NONE;
 }
 
 Picks bsh_collect(
@@ -1805,55 +1834,55 @@ Picks bsh_collect(
 ) {
     Picks picks = {};
     uint h_2 = {};
-    uint i_3 = {};
+    uint i_4 = {};
     picks.n = 0u;
     h_2 = seed_3;
-    uint _e6 = bsh_first(bsh_nodes, _buffer_sizes);
-    uint _e7 = bsh_next_leaf(_e6, x_15, bsh_nodes, _buffer_sizes);
-    i_3 = _e7;
+    uint _e8 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    uint _e9 = bsh_next_leaf(BSH, _e8, x_15, bsh_nodes, _buffer_sizes);
+    i_4 = _e9;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init) {
-            uint _e39 = i_3;
-            uint _e42 = bsh_nodes[_e39].next;
-            uint _e43 = bsh_next_leaf(_e42, x_15, bsh_nodes, _buffer_sizes);
-            i_3 = _e43;
+            uint _e42 = i_4;
+            uint _e45 = bsh_nodes[_e42].next;
+            uint _e46 = bsh_next_leaf(BSH, _e45, x_15, bsh_nodes, _buffer_sizes);
+            i_4 = _e46;
         }
         loop_init = false;
-        uint _e9 = i_3;
-        if (_e9 != BSH_NONE) {
+        uint _e11 = i_4;
+        if (_e11 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e13 = picks.n;
-            bool _e14 = reservoir_takes(_e13);
-            if (_e14) {
-                uint _e16 = picks.n;
-                picks.n = _e16 + 1u;
-                uint _e19 = h_2;
-                uint _e20 = pcg_hash(_e19);
-                h_2 = _e20;
+            uint _e15 = picks.n;
+            bool _e16 = reservoir_takes(_e15);
+            if (_e16) {
+                uint _e18 = picks.n;
+                picks.n = _e18 + 1u;
+                uint _e21 = h_2;
+                uint _e22 = pcg_hash(_e21);
+                h_2 = _e22;
                 uint hi_4 = h_2;
-                uint _e22 = h_2;
-                uint _e23 = pcg_hash(_e22);
-                h_2 = _e23;
-                uint _e25 = picks.n;
-                uint _e27 = h_2;
-                uint _e28 = reservoir_slot(_e25, K, hi_4, _e27);
-                if (_e28 < K) {
-                    uint _e34 = i_3;
-                    uint _e37 = bsh_nodes[_e34].light;
-                    picks.light.inner[_e28] = _e37;
+                uint _e24 = h_2;
+                uint _e25 = pcg_hash(_e24);
+                h_2 = _e25;
+                uint _e27 = picks.n;
+                uint _e29 = h_2;
+                uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
+                if (_e30 < K) {
+                    uint _e36 = i_4;
+                    uint _e39 = bsh_nodes[_e36].light;
+                    picks.light.inner[_e30] = _e39;
                 }
             }
         }
     }
-    Picks _e44 = picks;
-    return _e44;
+    Picks _e47 = picks;
+    return _e47;
 }
 
 Connection connect(
@@ -1922,22 +1951,22 @@ kernel void main_(
     uint h = {};
     metal::float3 e = metal::float3(0.0);
     uint s = 0u;
-    uint i_4 = gid.x;
+    uint i_5 = gid.x;
     uint _e4 = params.point_count;
-    if (i_4 >= _e4) {
+    if (i_5 >= _e4) {
         return;
     }
-    metal::float4 p_4 = points[i_4];
+    metal::float4 p_4 = points[i_5];
     if (p_4.w <= 0.0) {
-        irradiance[i_4] = metal::float4(0.0);
+        irradiance[i_5] = metal::float4(0.0);
         return;
     }
     metal::float3 x_17 = p_4.xyz;
-    metal::float4 _e19 = normals[i_4];
+    metal::float4 _e19 = normals[i_5];
     metal::float3 n_20 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
-    uint _e27 = point_stream(_e23, i_4, _e26);
+    uint _e27 = point_stream(_e23, i_5, _e26);
     Picks _e28 = bsh_collect(x_17, _e27, bsh_nodes, _buffer_sizes);
     float _e31 = reservoir_weight(_e28.n, K);
     uint _e32 = pick_stream(_e27);
@@ -1976,6 +2005,6 @@ kernel void main_(
         }
     }
     metal::float3 _e67 = e;
-    irradiance[i_4] = metal::float4(_e67, static_cast<float>(_e28.n));
+    irradiance[i_5] = metal::float4(_e67, static_cast<float>(_e28.n));
     return;
 }

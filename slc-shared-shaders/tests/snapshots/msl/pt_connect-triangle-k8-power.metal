@@ -219,6 +219,7 @@ struct Picks {
     type_9 light;
     uint n;
 };
+typedef uint BshNodes;
 typedef BshNode type_10[1];
 struct Connection {
     metal::float3 e;
@@ -264,6 +265,7 @@ constant float COVER_WEIGHT = 0.1;
 constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
 constant uint K = 8u;
+constant BshNodes BSH = 0u;
 
 float at(
     Table tab,
@@ -1877,43 +1879,70 @@ bool occluded(
     return _e12.tri != NO_LIGHT;
 }
 
+BshNode bsh_node(
+    BshNodes nodes,
+    uint i_3,
+    device type_10 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshNode _e4 = bsh_nodes[i_3];
+    return _e4;
+}
+
+uint bsh_count(
+    BshNodes nodes_1,
+    device type_10 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    return 1 + (_buffer_sizes.size3 - 0 - 32) / 32;
+}
+
+uint bsh_first(
+    BshNodes nodes_2,
+    device type_10 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e1 = bsh_count(nodes_2, bsh_nodes, _buffer_sizes);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
 uint bsh_next_leaf(
+    BshNodes nodes_3,
     uint start_1,
     metal::float3 x_14,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_3 = {};
-    i_3 = start_1;
+    uint i_4 = {};
+    i_4 = start_1;
     uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e3 = i_3;
-        if (_e3 == BSH_NONE) {
-            return BSH_NONE;
-        }
-        uint _e8 = i_3;
-        BshNode node_1 = bsh_nodes[_e8];
-        bool _e13 = sphere_contains_point(node_1.center, node_1.radius, x_14);
-        if (_e13) {
-            if (node_1.child == BSH_NONE) {
-                uint _e17 = i_3;
-                return _e17;
-            }
-            i_3 = node_1.child;
+        uint _e4 = i_4;
+        if (_e4 != BSH_NONE) {
         } else {
-            i_3 = node_1.next;
+            break;
+        }
+        {
+            uint _e7 = i_4;
+            BshNode _e8 = bsh_node(nodes_3, _e7, bsh_nodes, _buffer_sizes);
+            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            if (_e11) {
+                if (_e8.child == BSH_NONE) {
+                    uint _e15 = i_4;
+                    return _e15;
+                }
+                i_4 = _e8.child;
+            } else {
+                i_4 = _e8.next;
+            }
         }
     }
     return BSH_NONE;
-}
-
-uint bsh_first(
-    device type_10 const& bsh_nodes,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    return ((1 + (_buffer_sizes.size3 - 0 - 32) / 32) > 0u) ? 0u : BSH_NONE;
 }
 
 Picks bsh_collect(
@@ -1924,55 +1953,55 @@ Picks bsh_collect(
 ) {
     Picks picks = {};
     uint h_2 = {};
-    uint i_4 = {};
+    uint i_5 = {};
     picks.n = 0u;
     h_2 = seed_3;
-    uint _e6 = bsh_first(bsh_nodes, _buffer_sizes);
-    uint _e7 = bsh_next_leaf(_e6, x_15, bsh_nodes, _buffer_sizes);
-    i_4 = _e7;
+    uint _e8 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    uint _e9 = bsh_next_leaf(BSH, _e8, x_15, bsh_nodes, _buffer_sizes);
+    i_5 = _e9;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e39 = i_4;
-            uint _e42 = bsh_nodes[_e39].next;
-            uint _e43 = bsh_next_leaf(_e42, x_15, bsh_nodes, _buffer_sizes);
-            i_4 = _e43;
+            uint _e42 = i_5;
+            uint _e45 = bsh_nodes[_e42].next;
+            uint _e46 = bsh_next_leaf(BSH, _e45, x_15, bsh_nodes, _buffer_sizes);
+            i_5 = _e46;
         }
         loop_init_1 = false;
-        uint _e9 = i_4;
-        if (_e9 != BSH_NONE) {
+        uint _e11 = i_5;
+        if (_e11 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e13 = picks.n;
-            bool _e14 = reservoir_takes(_e13);
-            if (_e14) {
-                uint _e16 = picks.n;
-                picks.n = _e16 + 1u;
-                uint _e19 = h_2;
-                uint _e20 = pcg_hash(_e19);
-                h_2 = _e20;
+            uint _e15 = picks.n;
+            bool _e16 = reservoir_takes(_e15);
+            if (_e16) {
+                uint _e18 = picks.n;
+                picks.n = _e18 + 1u;
+                uint _e21 = h_2;
+                uint _e22 = pcg_hash(_e21);
+                h_2 = _e22;
                 uint hi_4 = h_2;
-                uint _e22 = h_2;
-                uint _e23 = pcg_hash(_e22);
-                h_2 = _e23;
-                uint _e25 = picks.n;
-                uint _e27 = h_2;
-                uint _e28 = reservoir_slot(_e25, K, hi_4, _e27);
-                if (_e28 < K) {
-                    uint _e34 = i_4;
-                    uint _e37 = bsh_nodes[_e34].light;
-                    picks.light.inner[_e28] = _e37;
+                uint _e24 = h_2;
+                uint _e25 = pcg_hash(_e24);
+                h_2 = _e25;
+                uint _e27 = picks.n;
+                uint _e29 = h_2;
+                uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
+                if (_e30 < K) {
+                    uint _e36 = i_5;
+                    uint _e39 = bsh_nodes[_e36].light;
+                    picks.light.inner[_e30] = _e39;
                 }
             }
         }
     }
-    Picks _e44 = picks;
-    return _e44;
+    Picks _e47 = picks;
+    return _e47;
 }
 
 Connection connect(
@@ -2049,27 +2078,27 @@ float light_weight(
 }
 
 float bvh_importance(
-    uint i_5,
+    uint i_6,
     metal::float3 x_18,
     metal::float3 n_19,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightBvhNode b_10 = light_bvh[i_5];
+    GpuLightBvhNode b_10 = light_bvh[i_6];
     float _e12 = light_importance(b_10.center, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_18, n_19);
     return _e12;
 }
 
 float bvh_first(
-    uint i_6,
+    uint i_7,
     metal::float3 x_19,
     metal::float3 n_20,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool local_17 = {};
-    uint j = light_bvh[i_6].second;
-    if (!((j <= (i_6 + 1u)))) {
+    uint j = light_bvh[i_7].second;
+    if (!((j <= (i_7 + 1u)))) {
         local_17 = j >= (1 + (_buffer_sizes.size9 - 0 - 48) / 48);
     } else {
         local_17 = true;
@@ -2078,7 +2107,7 @@ float bvh_first(
     if (_e17) {
         return -1.0;
     }
-    float _e21 = bvh_importance(i_6 + 1u, x_19, n_20, light_bvh, _buffer_sizes);
+    float _e21 = bvh_importance(i_7 + 1u, x_19, n_20, light_bvh, _buffer_sizes);
     float _e22 = bvh_importance(j, x_19, n_20, light_bvh, _buffer_sizes);
     float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
@@ -2092,7 +2121,7 @@ BvhPick light_bvh_sample(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float u_5 = {};
-    uint i_7 = 0u;
+    uint i_8 = 0u;
     float pmf = 1.0;
     bool local_18 = {};
     u_5 = u_in;
@@ -2100,10 +2129,10 @@ BvhPick light_bvh_sample(
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        uint _e9 = i_7;
-        GpuLightBvhNode node_2 = light_bvh[_e9];
-        if (node_2.second == LIGHT_BVH_LEAF) {
-            uint _e15 = i_7;
+        uint _e9 = i_8;
+        GpuLightBvhNode node_1 = light_bvh[_e9];
+        if (node_1.second == LIGHT_BVH_LEAF) {
+            uint _e15 = i_8;
             if (!((_e15 > 0u))) {
                 float _e22 = bvh_importance(0u, x_20, n_21, light_bvh, _buffer_sizes);
                 local_18 = _e22 > 0.0;
@@ -2112,9 +2141,9 @@ BvhPick light_bvh_sample(
             }
             bool reaches = local_18;
             float _e28 = pmf;
-            return BvhPick {node_2.light, reaches ? _e28 : 0.0};
+            return BvhPick {node_1.light, reaches ? _e28 : 0.0};
         }
-        uint _e32 = i_7;
+        uint _e32 = i_8;
         float _e33 = bvh_first(_e32, x_20, n_21, light_bvh, _buffer_sizes);
         if (_e33 < 0.0) {
             return BvhPick {0u, 0.0};
@@ -2126,8 +2155,8 @@ BvhPick light_bvh_sample(
         float _e46 = u_5;
         float _e47 = bvh_remap_u(_e46, _e33, first_1);
         u_5 = _e47;
-        uint _e49 = i_7;
-        i_7 = first_1 ? (_e49 + 1u) : node_2.second;
+        uint _e49 = i_8;
+        i_8 = first_1 ? (_e49 + 1u) : node_1.second;
     }
     return BvhPick {0u, 0.0};
 }
@@ -2140,7 +2169,7 @@ float light_bvh_pmf(
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_8 = 0u;
+    uint i_9 = 0u;
     float pmf_1 = 1.0;
     bool local_19 = {};
     bool local_20 = {};
@@ -2152,10 +2181,10 @@ float light_bvh_pmf(
     while(true) {
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e16 = i_8;
-        GpuLightBvhNode node_3 = light_bvh[_e16];
-        if (node_3.second == LIGHT_BVH_LEAF) {
-            uint _e22 = i_8;
+        uint _e16 = i_9;
+        GpuLightBvhNode node_2 = light_bvh[_e16];
+        if (node_2.second == LIGHT_BVH_LEAF) {
+            uint _e22 = i_9;
             if (!((_e22 > 0u))) {
                 float _e29 = bvh_importance(0u, x_21, n_22, light_bvh, _buffer_sizes);
                 local_19 = _e29 > 0.0;
@@ -2164,7 +2193,7 @@ float light_bvh_pmf(
             }
             bool reaches_1 = local_19;
             float _e34 = pmf_1;
-            uint _e35 = i_8;
+            uint _e35 = i_9;
             if (_e35 == leaf) {
                 local_20 = reaches_1;
             } else {
@@ -2173,16 +2202,16 @@ float light_bvh_pmf(
             bool _e40 = local_20;
             return _e40 ? _e34 : 0.0;
         }
-        uint _e43 = i_8;
+        uint _e43 = i_9;
         float _e44 = bvh_first(_e43, x_21, n_22, light_bvh, _buffer_sizes);
         if (_e44 < 0.0) {
             return 0.0;
         }
-        bool first_2 = leaf < node_3.second;
+        bool first_2 = leaf < node_2.second;
         float _e50 = pmf_1;
         pmf_1 = _e50 * (first_2 ? _e44 : (1.0 - _e44));
-        uint _e56 = i_8;
-        i_8 = first_2 ? (_e56 + 1u) : node_3.second;
+        uint _e56 = i_9;
+        i_9 = first_2 ? (_e56 + 1u) : node_2.second;
     }
     return 0.0;
 }
@@ -2279,14 +2308,14 @@ kernel void main_(
     uint h = {};
     metal::float3 sum = metal::float3(0.0);
     uint s = 0u;
-    uint i_9 = gid.x;
+    uint i_10 = gid.x;
     uint _e4 = params.point_count;
-    if (i_9 >= _e4) {
+    if (i_10 >= _e4) {
         return;
     }
-    GpuPathVertex vtx = vertices[i_9];
+    GpuPathVertex vtx = vertices[i_10];
     if (vtx.alive == 0u) {
-        candidates[i_9] = 0u;
+        candidates[i_10] = 0u;
         return;
     }
     metal::float3 x_25 = vtx.position;
@@ -2294,11 +2323,11 @@ kernel void main_(
     metal::float3 ng_4 = vtx.gnormal;
     uint _e20 = params.seed;
     uint _e23 = params.frame;
-    uint _e24 = point_stream(_e20, i_9, _e23);
+    uint _e24 = point_stream(_e20, i_10, _e23);
     uint _e25 = pick_stream(_e24);
     h = _e25;
     Picks _e30 = bsh_collect(x_25, _e24, bsh_nodes, _buffer_sizes);
-    candidates[i_9] = _e30.n;
+    candidates[i_10] = _e30.n;
     float _e36 = reservoir_weight(_e30.n, K);
     uint2 loop_bound_7 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -2336,8 +2365,8 @@ kernel void main_(
     metal::float3 add = vtx.weight * _e63;
     bool _e65 = finite3_(add);
     if (_e65) {
-        metal::float4 _e68 = radiance[i_9];
-        radiance[i_9] = _e68 + metal::float4(add, 0.0);
+        metal::float4 _e68 = radiance[i_10];
+        radiance[i_10] = _e68 + metal::float4(add, 0.0);
         return;
     } else {
         return;
