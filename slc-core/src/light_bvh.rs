@@ -13,19 +13,39 @@
 //! (for MIS at a BSDF-sampled hit) takes the same walk towards its leaf,
 //! choosing the child whose index range holds the leaf.
 //!
-//! The step functions are shared with the GPU; [`light_bvh_sample`] and
-//! [`light_bvh_pmf`] are the CPU's walks (the GPU's are in
-//! slc-shared-shaders' `pt_mis.wgsl`, over the same nodes packed as
-//! `GpuLightBvhNode`). slc-scene builds the tree.
+//! The step functions and the walks ([`walk::light_bvh_sample`],
+//! [`walk::light_bvh_pmf`]) are shared with the GPU, over the nodes packed
+//! as [`GpuLightBvhNode`]. slc-scene builds the tree.
 
 use crate::importance::LightCone;
 use crate::wgsl::*;
-use glam::Vec3;
 
 crate::shared! {
     /// `second` of a light-BVH leaf; also "no leaf" for a light left out of
     /// the tree (zero power).
     pub const LIGHT_BVH_LEAF: u32 = 4294967295;
+
+    /// A light-BVH node as both walks read it ([`LightBvhNode`] packed),
+    /// 48 bytes, the same layout in Rust and in WGSL storage buffers.
+    pub struct GpuLightBvhNode {
+        /// Bounding-sphere centre.
+        pub center: vec3f,
+        /// Bounding-sphere radius.
+        pub radius: f32,
+        /// Axis of the normal cone.
+        pub axis: vec3f,
+        /// Cosine of the normal cone's half-angle.
+        pub cos_o: f32,
+        /// Emitted power (max channel).
+        pub phi: f32,
+        /// Cosine of the emission spread.
+        pub cos_e: f32,
+        /// Interior: the second child (the first is the next node); leaf:
+        /// `LIGHT_BVH_LEAF`.
+        pub second: u32,
+        /// Leaf: its light; interior: `LIGHT_BVH_LEAF`.
+        pub light: u32,
+    }
 
     /// Largest `f32` below 1 (`1 − 2⁻²⁴`).
     pub const ONE_MINUS_EPSILON: f32 = 0.99999994;
@@ -71,59 +91,144 @@ impl LightBvhNode {
     pub fn is_leaf(&self) -> bool {
         self.second == LIGHT_BVH_LEAF
     }
-}
 
-/// The first-child probability at interior node `i` for shading point `p`
-/// with normal `n` (zero: none), or `None` where the walk ends (a child
-/// index out of the table or not after `i`, or [`bvh_first_prob`] < 0).
-fn first_prob(nodes: &[LightBvhNode], i: usize, p: Vec3, n: Vec3) -> Option<f32> {
-    let j = nodes[i].second as usize;
-    if j <= i + 1 {
-        return None;
-    }
-    let second = nodes.get(j)?;
-    let first = nodes.get(i + 1)?;
-    let p0 = bvh_first_prob(first.cone.importance(p, n), second.cone.importance(p, n));
-    (p0 >= 0.0).then_some(p0)
-}
-
-/// Samples one light of the tree `nodes` for shading point `p` with normal
-/// `n` and uniform `u ∈ [0, 1)`: `(light, pmf)`, or `None` where no light
-/// can light the point (or the tree is empty). A lone leaf is sampled only
-/// where its importance is positive.
-pub fn light_bvh_sample(nodes: &[LightBvhNode], p: Vec3, n: Vec3, mut u: f32) -> Option<(u32, f32)> {
-    let mut i = 0usize;
-    let mut pmf = 1.0f32;
-    loop {
-        let node = nodes.get(i)?;
-        if node.is_leaf() {
-            return (i > 0 || node.cone.importance(p, n) > 0.0).then_some((node.light, pmf));
+    /// The node as the walks read it.
+    pub fn packed(&self) -> GpuLightBvhNode {
+        let c = &self.cone;
+        GpuLightBvhNode {
+            center: c.center,
+            radius: c.radius,
+            axis: c.axis,
+            cos_o: c.cos_o,
+            phi: c.phi,
+            cos_e: c.cos_e,
+            second: self.second,
+            light: self.light,
         }
-        let p0 = first_prob(nodes, i, p, n)?;
-        let first = u < p0;
-        pmf *= if first { p0 } else { 1.0 - p0 };
-        u = bvh_remap_u(u, p0, first);
-        i = if first { i + 1 } else { node.second as usize };
     }
 }
 
-/// Probability that [`light_bvh_sample`] at `(p, n)` picks the light whose
-/// leaf is node `leaf` ([`LIGHT_BVH_LEAF`]: a light not in the tree, 0).
-pub fn light_bvh_pmf(nodes: &[LightBvhNode], leaf: u32, p: Vec3, n: Vec3) -> f32 {
-    let mut i = 0usize;
-    let mut pmf = 1.0f32;
-    if leaf as usize >= nodes.len() {
-        return 0.0;
-    }
-    loop {
-        let node = &nodes[i];
-        if node.is_leaf() {
-            let reaches = i > 0 || node.cone.importance(p, n) > 0.0;
-            return if i == leaf as usize && reaches { pmf } else { 0.0 };
+/// The nodes as the shared walks read them: a slice on the CPU. On the GPU
+/// a kernel that binds its `light_bvh` buffer declares `alias BvhNodes =
+/// u32` and the readers [`light_bvh_node`] and [`light_bvh_count`] over it,
+/// then includes [`walk`]'s WGSL and [`WALK_WGSL_PRELUDE`].
+pub type BvhNodes<'a> = &'a [GpuLightBvhNode];
+
+/// Node `i` of `nodes` (the GPU kernel's reader: `light_bvh[i]`).
+#[inline]
+pub fn light_bvh_node(nodes: BvhNodes, i: u32) -> GpuLightBvhNode {
+    nodes[i as usize]
+}
+
+/// The number of nodes (the GPU kernel's reader: `arrayLength(&light_bvh)`).
+#[inline]
+pub fn light_bvh_count(nodes: BvhNodes) -> u32 {
+    nodes.len() as u32
+}
+
+/// "No light" ([`walk::BvhPick`] with pmf 0), where a walk finds none. Shared
+/// code cannot build a struct (Rust and WGSL spell constructors apart), so
+/// each language has this one: WGSL's is in [`WALK_WGSL_PRELUDE`].
+#[inline]
+pub fn bvh_pick_none() -> walk::BvhPick {
+    walk::BvhPick::default()
+}
+
+/// The WGSL twin of [`bvh_pick_none`], for kernels that include [`walk`].
+pub const WALK_WGSL_PRELUDE: &str = "fn bvh_pick_none() -> BvhPick { return BvhPick(0u, 0.0); }\n";
+
+/// The light BVH's walks, written once for both backends. Not part of
+/// [`crate::wgsl::library`]: they read a light-BVH buffer, which only the
+/// path tracer's kernels bind (their WGSL is [`walk::WGSL`]).
+pub mod walk {
+    use super::{BvhNodes, GpuLightBvhNode, LIGHT_BVH_LEAF, bvh_first_prob, bvh_pick_none, bvh_remap_u, light_bvh_count, light_bvh_node};
+    use crate::importance::light_importance;
+    use crate::wgsl::*;
+
+    crate::shared! {
+        /// A light drawn from the light BVH and its pmf (0: none).
+        pub struct BvhPick {
+            /// The light.
+            pub light: u32,
+            /// Its probability.
+            pub pmf: f32,
         }
-        let Some(p0) = first_prob(nodes, i, p, n) else { return 0.0 };
-        let first = leaf < node.second;
-        pmf *= if first { p0 } else { 1.0 - p0 };
-        i = if first { i + 1 } else { node.second as usize };
+
+        /// Importance of node `i` at `x` (normal `n`).
+        pub fn bvh_importance(nodes: BvhNodes, i: u32, x: vec3f, n: vec3f) -> f32 {
+            let b: GpuLightBvhNode = light_bvh_node(nodes, i);
+            return light_importance(b.center, b.radius, b.phi, b.axis, b.cos_o, b.cos_e, x, n);
+        }
+
+        /// First-child probability at interior node `i` for `x` (normal
+        /// `n`), or −1 where the walk ends: a second child out of the table
+        /// or not after the first, or [`bvh_first_prob`] < 0.
+        pub fn bvh_first(nodes: BvhNodes, i: u32, x: vec3f, n: vec3f) -> f32 {
+            let j: u32 = light_bvh_node(nodes, i).second;
+            if j <= i + 1 || j >= light_bvh_count(nodes) {
+                return -1.0;
+            }
+            return bvh_first_prob(bvh_importance(nodes, i + 1, x, n), bvh_importance(nodes, j, x, n));
+        }
+
+        /// Samples one light for shading point `x` with normal `n` and
+        /// uniform `u_in ∈ [0, 1)`, walking from the root and choosing each
+        /// child by its importance: the light and its pmf, or pmf 0 where no
+        /// light can light the point (or the tree is empty). A lone leaf is
+        /// sampled only where its importance is positive.
+        pub fn light_bvh_sample(nodes: BvhNodes, x: vec3f, n: vec3f, u_in: f32) -> BvhPick {
+            let mut pick: BvhPick = bvh_pick_none();
+            let mut u: f32 = u_in;
+            let mut i: u32 = 0;
+            let mut pmf: f32 = 1.0;
+            while i < light_bvh_count(nodes) {
+                let node: GpuLightBvhNode = light_bvh_node(nodes, i);
+                if node.second == LIGHT_BVH_LEAF {
+                    if i > 0 || bvh_importance(nodes, 0, x, n) > 0.0 {
+                        pick.light = node.light;
+                        pick.pmf = pmf;
+                    }
+                    return pick;
+                }
+                let p0: f32 = bvh_first(nodes, i, x, n);
+                if p0 < 0.0 {
+                    return pick;
+                }
+                let first: bool = u < p0;
+                pmf = pmf * select(1.0 - p0, p0, first);
+                u = bvh_remap_u(u, p0, first);
+                i = select(node.second, i + 1, first);
+            }
+            return pick;
+        }
+
+        /// Probability that [`light_bvh_sample`] at `x` (normal `n`) picks
+        /// the light whose leaf is node `leaf` (`LIGHT_BVH_LEAF` or out of
+        /// the table: 0): the same walk towards that leaf, choosing the
+        /// child whose index range holds it.
+        pub fn light_bvh_pmf(nodes: BvhNodes, leaf: u32, x: vec3f, n: vec3f) -> f32 {
+            if leaf >= light_bvh_count(nodes) {
+                return 0.0;
+            }
+            let mut i: u32 = 0;
+            let mut pmf: f32 = 1.0;
+            while i < light_bvh_count(nodes) {
+                let node: GpuLightBvhNode = light_bvh_node(nodes, i);
+                if node.second == LIGHT_BVH_LEAF {
+                    if i == leaf && (i > 0 || bvh_importance(nodes, 0, x, n) > 0.0) {
+                        return pmf;
+                    }
+                    return 0.0;
+                }
+                let p0: f32 = bvh_first(nodes, i, x, n);
+                if p0 < 0.0 {
+                    return 0.0;
+                }
+                let first: bool = leaf < node.second;
+                pmf = pmf * select(1.0 - p0, p0, first);
+                i = select(node.second, i + 1, first);
+            }
+            return 0.0;
+        }
     }
 }

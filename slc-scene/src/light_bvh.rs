@@ -18,7 +18,8 @@ use glam::Vec3;
 use slc_core::importance::light_importance;
 use slc_core::importance::{LightCone, safe_sqrt};
 use slc_core::light::Light;
-use slc_core::light_bvh::{LIGHT_BVH_LEAF, LightBvhNode, light_bvh_pmf, light_bvh_sample};
+use slc_core::light_bvh::walk::{light_bvh_pmf, light_bvh_sample};
+use slc_core::light_bvh::{GpuLightBvhNode, LIGHT_BVH_LEAF, LightBvhNode};
 use std::f32::consts::PI;
 
 /// Bounds of a set of lights (pbrt-v4 `LightBounds`).
@@ -142,6 +143,8 @@ fn cone_union(a: Vec3, cos_a: f32, b: Vec3, cos_b: f32) -> (Vec3, f32) {
 #[derive(Clone, Debug)]
 pub struct LightBvh {
     nodes: Vec<LightBvhNode>,
+    /// The nodes as the shared walks read them.
+    packed: Vec<GpuLightBvhNode>,
     leaf_of_light: Vec<u32>,
 }
 
@@ -183,7 +186,8 @@ impl LightBvh {
             stack.push((mid, end, me as usize, true));
             stack.push((start, mid, me as usize, false));
         }
-        LightBvh { nodes, leaf_of_light }
+        let packed = nodes.iter().map(|n| n.packed()).collect();
+        LightBvh { nodes, packed, leaf_of_light }
     }
 
     /// The nodes, in preorder (empty when no light has power).
@@ -198,15 +202,16 @@ impl LightBvh {
 
     /// Samples one light for shading point `p` with normal `n` and uniform
     /// `u ∈ [0, 1)`: `(light, pmf)`, or `None` where every light has zero
-    /// importance ([`light_bvh_sample`]).
+    /// importance ([`light_bvh_sample`], the walk the GPU takes).
     pub fn sample(&self, p: Vec3, n: Vec3, u: f32) -> Option<(usize, f32)> {
-        light_bvh_sample(&self.nodes, p, n, u).map(|(l, pmf)| (l as usize, pmf))
+        let pick = light_bvh_sample(&self.packed, p, n, u);
+        (pick.pmf > 0.0).then_some((pick.light as usize, pick.pmf))
     }
 
     /// Probability that [`LightBvh::sample`] at `(p, n)` picks `light`
     /// ([`light_bvh_pmf`]).
     pub fn pmf(&self, p: Vec3, n: Vec3, light: usize) -> f32 {
-        self.leaf_of_light.get(light).map_or(0.0, |&leaf| light_bvh_pmf(&self.nodes, leaf, p, n))
+        self.leaf_of_light.get(light).map_or(0.0, |&leaf| light_bvh_pmf(&self.packed, leaf, p, n))
     }
 }
 

@@ -5,6 +5,8 @@
 //! pass silently.
 
 use slc_core::light::Light;
+/// The light-BVH node layout (slc-core's, which both walks read).
+pub use slc_core::light_bvh::GpuLightBvhNode;
 use slc_core::wgsl::*;
 
 slc_core::shared! {
@@ -65,28 +67,6 @@ slc_core::shared! {
         pub bvh_leaf: u32,
         /// Padding.
         pub pad: u32,
-    }
-
-    /// A light-BVH node (`slc_core::light_bvh::LightBvhNode`), 48 bytes,
-    /// in preorder: its lights' importance bounds and links.
-    pub struct GpuLightBvhNode {
-        /// Bounding-sphere centre.
-        pub center: vec3f,
-        /// Bounding-sphere radius.
-        pub radius: f32,
-        /// Axis of the normal cone.
-        pub axis: vec3f,
-        /// Cosine of the normal cone's half-angle.
-        pub cos_o: f32,
-        /// Emitted power (max channel).
-        pub phi: f32,
-        /// Cosine of the emission spread.
-        pub cos_e: f32,
-        /// Interior: the second child (the first is the next node); leaf:
-        /// `LIGHT_BVH_LEAF`.
-        pub second: u32,
-        /// Leaf: its light; interior: `LIGHT_BVH_LEAF`.
-        pub light: u32,
     }
 
     /// Node of the geometry BVH used for shadow rays, 32 bytes: a leaf when
@@ -424,22 +404,7 @@ pub fn pack_light_bvh(nodes: &[slc_core::light_bvh::LightBvhNode]) -> Vec<GpuLig
     if nodes.is_empty() {
         return vec![GpuLightBvhNode { second: LIGHT_BVH_LEAF, light: 0, ..GpuLightBvhNode::default() }];
     }
-    nodes
-        .iter()
-        .map(|n| {
-            let c = &n.cone;
-            GpuLightBvhNode {
-                center: c.center,
-                radius: c.radius,
-                axis: c.axis,
-                cos_o: c.cos_o,
-                phi: c.phi,
-                cos_e: c.cos_e,
-                second: n.second,
-                light: n.light,
-            }
-        })
-        .collect()
+    nodes.iter().map(|n| n.packed()).collect()
 }
 
 impl GpuLight {

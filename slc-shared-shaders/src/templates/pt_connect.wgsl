@@ -110,7 +110,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     h = pcg_hash(h);
     let us = xi_from_bits(h);
 {% if selection == "lightbvh" %}
-    let bp = light_bvh_sample(x, n, us);
+    let bp = light_bvh_sample(BVH, x, n, us);
     let li = bp.light;
     let pmf = bp.pmf;
 {% else %}

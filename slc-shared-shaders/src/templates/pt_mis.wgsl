@@ -22,78 +22,17 @@ fn light_weight(li: u32, x: vec3f, n: vec3f) -> f32 {
     return cone_weight(c.center, c.radius, c.phi, c.axis, c.cos_o, c.cos_e, rt2[li], x, n);
 }
 
-/// Importance of light-BVH node `i` at `x` (normal `n`).
-fn bvh_importance(i: u32, x: vec3f, n: vec3f) -> f32 {
-    let b = light_bvh[i];
-    return light_importance(b.center, b.radius, b.phi, b.axis, b.cos_o, b.cos_e, x, n);
+/// The kernel's `light_bvh` buffer as slc-core's shared walks
+/// (`light_bvh_sample`, `light_bvh_pmf`, below) read it.
+alias BvhNodes = u32;
+const BVH: BvhNodes = 0u;
+fn light_bvh_node(nodes: BvhNodes, i: u32) -> GpuLightBvhNode {
+    return light_bvh[i];
 }
-
-/// First-child probability at interior light-BVH node `i`, or −1 where
-/// the walk ends (slc-core's `bvh_first_prob`; a malformed link ends it).
-fn bvh_first(i: u32, x: vec3f, n: vec3f) -> f32 {
-    let j = light_bvh[i].second;
-    if j <= i + 1u || j >= arrayLength(&light_bvh) {
-        return -1.0;
-    }
-    return bvh_first_prob(bvh_importance(i + 1u, x, n), bvh_importance(j, x, n));
+fn light_bvh_count(nodes: BvhNodes) -> u32 {
+    return arrayLength(&light_bvh);
 }
-
-/// A light drawn from the light BVH and its pmf (0: none).
-struct BvhPick {
-    light: u32,
-    pmf: f32,
-}
-
-/// Walks the light BVH from the root for `x` (normal `n`) with uniform
-/// `u`, choosing each child by its importance (slc-core's
-/// `light_bvh_sample`).
-fn light_bvh_sample(x: vec3f, n: vec3f, u_in: f32) -> BvhPick {
-    var u = u_in;
-    var i = 0u;
-    var pmf = 1.0;
-    loop {
-        let node = light_bvh[i];
-        if node.second == LIGHT_BVH_LEAF {
-            let reaches = i > 0u || bvh_importance(0u, x, n) > 0.0;
-            return BvhPick(node.light, select(0.0, pmf, reaches));
-        }
-        let p0 = bvh_first(i, x, n);
-        if p0 < 0.0 {
-            return BvhPick(0u, 0.0);
-        }
-        let first = u < p0;
-        pmf *= select(1.0 - p0, p0, first);
-        u = bvh_remap_u(u, p0, first);
-        i = select(node.second, i + 1u, first);
-    }
-    return BvhPick(0u, 0.0);
-}
-
-/// Probability that `light_bvh_sample` at `x` (normal `n`) picks light
-/// `li`: the same walk towards its leaf (slc-core's `light_bvh_pmf`).
-fn light_bvh_pmf(li: u32, x: vec3f, n: vec3f) -> f32 {
-    let leaf = light_cones[li].bvh_leaf;
-    if leaf >= arrayLength(&light_bvh) {
-        return 0.0;
-    }
-    var i = 0u;
-    var pmf = 1.0;
-    loop {
-        let node = light_bvh[i];
-        if node.second == LIGHT_BVH_LEAF {
-            let reaches = i > 0u || bvh_importance(0u, x, n) > 0.0;
-            return select(0.0, pmf, i == leaf && reaches);
-        }
-        let p0 = bvh_first(i, x, n);
-        if p0 < 0.0 {
-            return 0.0;
-        }
-        let first = leaf < node.second;
-        pmf *= select(1.0 - p0, p0, first);
-        i = select(node.second, i + 1u, first);
-    }
-    return 0.0;
-}
+{{ bvh_walk }}
 
 /// Probability (expected count, for the weighted picks) that the light
 /// strategy at `x` (normal `n`) selects light `li` ({{ selection }}
@@ -112,7 +51,7 @@ fn select_pdf(li: u32, x: vec3f, n: vec3f, nee: u32, in_range: bool) -> f32 {
 {% elif selection == "uniform" %}
     return 1.0 / f32(arrayLength(&lights));
 {% elif selection == "lightbvh" %}
-    return light_bvh_pmf(li, x, n);
+    return light_bvh_pmf(BVH, light_cones[li].bvh_leaf, x, n);
 {% else %}
     return power_table[li].z;
 {% endif %}

@@ -20,17 +20,6 @@ struct GpuLightCone {
     pad: u32,
 }
 
-struct GpuLightBvhNode {
-    center: vec3<f32>,
-    radius: f32,
-    axis: vec3<f32>,
-    cos_o: f32,
-    phi: f32,
-    cos_e: f32,
-    second: u32,
-    light: u32,
-}
-
 struct GpuGeoNode {
     bmin: vec3<f32>,
     first: u32,
@@ -197,6 +186,17 @@ struct BshNode {
     next: u32,
     light: u32,
     pad: u32,
+}
+
+struct GpuLightBvhNode {
+    center: vec3<f32>,
+    radius: f32,
+    axis: vec3<f32>,
+    cos_o: f32,
+    phi: f32,
+    cos_e: f32,
+    second: u32,
+    light: u32,
 }
 
 struct GeoHit {

@@ -7,6 +7,17 @@ struct BshNode {
     pad: u32,
 }
 
+struct GpuLightBvhNode {
+    center: vec3<f32>,
+    radius: f32,
+    axis: vec3<f32>,
+    cos_o: f32,
+    phi: f32,
+    cos_e: f32,
+    second: u32,
+    light: u32,
+}
+
 const XI_STEP: f32 = 0.000000059604645f;
 const PICK_STREAM: u32 = 2654435769u;
 const TWO_PI: f32 = 6.2831855f;

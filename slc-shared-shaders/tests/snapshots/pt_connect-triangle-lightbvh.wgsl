@@ -20,17 +20,6 @@ struct GpuLightCone {
     pad: u32,
 }
 
-struct GpuLightBvhNode {
-    center: vec3<f32>,
-    radius: f32,
-    axis: vec3<f32>,
-    cos_o: f32,
-    phi: f32,
-    cos_e: f32,
-    second: u32,
-    light: u32,
-}
-
 struct GpuGeoNode {
     bmin: vec3<f32>,
     first: u32,
@@ -199,6 +188,17 @@ struct BshNode {
     pad: u32,
 }
 
+struct GpuLightBvhNode {
+    center: vec3<f32>,
+    radius: f32,
+    axis: vec3<f32>,
+    cos_o: f32,
+    phi: f32,
+    cos_e: f32,
+    second: u32,
+    light: u32,
+}
+
 struct GeoHit {
     t: f32,
     tri: u32,
@@ -250,6 +250,7 @@ const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const K: u32 = 8u;
 const BSH: u32 = 0u;
+const BVH: u32 = 0u;
 
 @group(1) @binding(0) 
 var<storage> slc_table: array<f32>;
@@ -1573,142 +1574,187 @@ fn light_weight(li_1: u32, x_17: vec3<f32>, n_18: vec3<f32>) -> f32 {
     return _e15;
 }
 
-fn bvh_importance(i_6: u32, x_18: vec3<f32>, n_19: vec3<f32>) -> f32 {
-    let b_10 = light_bvh[i_6];
-    let _e12 = light_importance(b_10.center, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_18, n_19);
-    return _e12;
+fn light_bvh_node(nodes_4: u32, i_6: u32) -> GpuLightBvhNode {
+    let _e4 = light_bvh[i_6];
+    return _e4;
 }
 
-fn bvh_first(i_7: u32, x_19: vec3<f32>, n_20: vec3<f32>) -> f32 {
+fn light_bvh_count(nodes_5: u32) -> u32 {
+    return arrayLength((&light_bvh));
+}
+
+fn bvh_importance(nodes_6: u32, i_7: u32, x_18: vec3<f32>, n_19: vec3<f32>) -> f32 {
+    let _e4 = light_bvh_node(nodes_6, i_7);
+    let _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_18, n_19);
+    return _e11;
+}
+
+fn bvh_first(nodes_7: u32, i_8: u32, x_19: vec3<f32>, n_20: vec3<f32>) -> f32 {
     var local_17: bool;
 
-    let j = light_bvh[i_7].second;
-    if !((j <= (i_7 + 1u))) {
-        local_17 = (j >= arrayLength((&light_bvh)));
+    let _e4 = light_bvh_node(nodes_7, i_8);
+    let j = _e4.second;
+    if !((j <= (i_8 + 1u))) {
+        let _e12 = light_bvh_count(nodes_7);
+        local_17 = (j >= _e12);
     } else {
         local_17 = true;
     }
-    let _e17 = local_17;
-    if _e17 {
+    let _e15 = local_17;
+    if _e15 {
         return -1f;
     }
-    let _e21 = bvh_importance((i_7 + 1u), x_19, n_20);
-    let _e22 = bvh_importance(j, x_19, n_20);
-    let _e23 = bvh_first_prob(_e21, _e22);
-    return _e23;
+    let _e19 = bvh_importance(nodes_7, (i_8 + 1u), x_19, n_20);
+    let _e20 = bvh_importance(nodes_7, j, x_19, n_20);
+    let _e21 = bvh_first_prob(_e19, _e20);
+    return _e21;
 }
 
-fn light_bvh_sample(x_20: vec3<f32>, n_21: vec3<f32>, u_in: f32) -> BvhPick {
-    var u_5: f32;
-    var i_8: u32 = 0u;
-    var pmf: f32 = 1f;
-    var local_18: bool;
-
-    u_5 = u_in;
-    loop {
-        let _e9 = i_8;
-        let node_1 = light_bvh[_e9];
-        if (node_1.second == LIGHT_BVH_LEAF) {
-            let _e15 = i_8;
-            if !((_e15 > 0u)) {
-                let _e22 = bvh_importance(0u, x_20, n_21);
-                local_18 = (_e22 > 0f);
-            } else {
-                local_18 = true;
-            }
-            let reaches = local_18;
-            let _e28 = pmf;
-            return BvhPick(node_1.light, select(0f, _e28, reaches));
-        }
-        let _e32 = i_8;
-        let _e33 = bvh_first(_e32, x_20, n_21);
-        if (_e33 < 0f) {
-            return BvhPick(0u, 0f);
-        }
-        let _e39 = u_5;
-        let first_1 = (_e39 < _e33);
-        let _e41 = pmf;
-        pmf = (_e41 * select((1f - _e33), _e33, first_1));
-        let _e46 = u_5;
-        let _e47 = bvh_remap_u(_e46, _e33, first_1);
-        u_5 = _e47;
-        let _e49 = i_8;
-        i_8 = select(node_1.second, (_e49 + 1u), first_1);
-    }
+fn bvh_pick_none() -> BvhPick {
     return BvhPick(0u, 0f);
 }
 
-fn light_bvh_pmf(li_2: u32, x_21: vec3<f32>, n_22: vec3<f32>) -> f32 {
+fn light_bvh_sample(nodes_8: u32, x_20: vec3<f32>, n_21: vec3<f32>, u_in: f32) -> BvhPick {
+    var pick: BvhPick;
+    var u_5: f32;
     var i_9: u32 = 0u;
+    var pmf: f32 = 1f;
+    var local_18: bool;
+
+    let _e4 = bvh_pick_none();
+    pick = _e4;
+    u_5 = u_in;
+    loop {
+        let _e11 = i_9;
+        let _e12 = light_bvh_count(nodes_8);
+        if (_e11 < _e12) {
+        } else {
+            break;
+        }
+        {
+            let _e14 = i_9;
+            let _e15 = light_bvh_node(nodes_8, _e14);
+            if (_e15.second == LIGHT_BVH_LEAF) {
+                let _e19 = i_9;
+                if !((_e19 > 0u)) {
+                    let _e26 = bvh_importance(nodes_8, 0u, x_20, n_21);
+                    local_18 = (_e26 > 0f);
+                } else {
+                    local_18 = true;
+                }
+                let _e30 = local_18;
+                if _e30 {
+                    pick.light = _e15.light;
+                    let _e34 = pmf;
+                    pick.pmf = _e34;
+                }
+                let _e35 = pick;
+                return _e35;
+            }
+            let _e36 = i_9;
+            let _e37 = bvh_first(nodes_8, _e36, x_20, n_21);
+            if (_e37 < 0f) {
+                let _e40 = pick;
+                return _e40;
+            }
+            let _e41 = u_5;
+            let first_1 = (_e41 < _e37);
+            let _e43 = pmf;
+            pmf = (_e43 * select((1f - _e37), _e37, first_1));
+            let _e48 = u_5;
+            let _e49 = bvh_remap_u(_e48, _e37, first_1);
+            u_5 = _e49;
+            let _e51 = i_9;
+            i_9 = select(_e15.second, (_e51 + 1u), first_1);
+        }
+    }
+    let _e55 = pick;
+    return _e55;
+}
+
+fn light_bvh_pmf(nodes_9: u32, leaf: u32, x_21: vec3<f32>, n_22: vec3<f32>) -> f32 {
+    var i_10: u32 = 0u;
     var pmf_1: f32 = 1f;
     var local_19: bool;
     var local_20: bool;
 
-    let leaf = light_cones[li_2].bvh_leaf;
-    if (leaf >= arrayLength((&light_bvh))) {
+    let _e4 = light_bvh_count(nodes_9);
+    if (leaf >= _e4) {
         return 0f;
     }
     loop {
-        let _e16 = i_9;
-        let node_2 = light_bvh[_e16];
-        if (node_2.second == LIGHT_BVH_LEAF) {
-            let _e22 = i_9;
-            if !((_e22 > 0u)) {
-                let _e29 = bvh_importance(0u, x_21, n_22);
-                local_19 = (_e29 > 0f);
-            } else {
-                local_19 = true;
-            }
-            let reaches_1 = local_19;
-            let _e34 = pmf_1;
-            let _e35 = i_9;
-            if (_e35 == leaf) {
-                local_20 = reaches_1;
-            } else {
-                local_20 = false;
-            }
-            let _e40 = local_20;
-            return select(0f, _e34, _e40);
+        let _e11 = i_10;
+        let _e12 = light_bvh_count(nodes_9);
+        if (_e11 < _e12) {
+        } else {
+            break;
         }
-        let _e43 = i_9;
-        let _e44 = bvh_first(_e43, x_21, n_22);
-        if (_e44 < 0f) {
-            return 0f;
+        {
+            let _e14 = i_10;
+            let _e15 = light_bvh_node(nodes_9, _e14);
+            if (_e15.second == LIGHT_BVH_LEAF) {
+                let _e19 = i_10;
+                if (_e19 == leaf) {
+                    let _e23 = i_10;
+                    if !((_e23 > 0u)) {
+                        let _e30 = bvh_importance(nodes_9, 0u, x_21, n_22);
+                        local_20 = (_e30 > 0f);
+                    } else {
+                        local_20 = true;
+                    }
+                    let _e34 = local_20;
+                    local_19 = _e34;
+                } else {
+                    local_19 = false;
+                }
+                let _e36 = local_19;
+                if _e36 {
+                    let _e37 = pmf_1;
+                    return _e37;
+                }
+                return 0f;
+            }
+            let _e39 = i_10;
+            let _e40 = bvh_first(nodes_9, _e39, x_21, n_22);
+            if (_e40 < 0f) {
+                return 0f;
+            }
+            let first_2 = (leaf < _e15.second);
+            let _e46 = pmf_1;
+            pmf_1 = (_e46 * select((1f - _e40), _e40, first_2));
+            let _e52 = i_10;
+            i_10 = select(_e15.second, (_e52 + 1u), first_2);
         }
-        let first_2 = (leaf < node_2.second);
-        let _e50 = pmf_1;
-        pmf_1 = (_e50 * select((1f - _e44), _e44, first_2));
-        let _e56 = i_9;
-        i_9 = select(node_2.second, (_e56 + 1u), first_2);
     }
     return 0f;
 }
 
-fn select_pdf(li_3: u32, x_22: vec3<f32>, n_23: vec3<f32>, nee: u32, in_range_2: bool) -> f32 {
-    let _e5 = light_bvh_pmf(li_3, x_22, n_23);
-    return _e5;
+fn select_pdf(li_2: u32, x_22: vec3<f32>, n_23: vec3<f32>, nee: u32, in_range_2: bool) -> f32 {
+    let _e9 = light_cones[li_2].bvh_leaf;
+    let _e10 = light_bvh_pmf(BVH, _e9, x_22, n_23);
+    return _e10;
 }
 
-fn light_pdf(li_4: u32, x_23: vec3<f32>, n_24: vec3<f32>, y_3: vec3<f32>, nee_1: u32, in_range_3: bool) -> f32 {
-    let l_5 = lights[li_4];
+fn light_pdf(li_3: u32, x_23: vec3<f32>, n_24: vec3<f32>, y_3: vec3<f32>, nee_1: u32, in_range_3: bool) -> f32 {
+    let l_5 = lights[li_3];
     let v_13 = (x_23 - y_3);
     let d2_15 = dot(v_13, v_13);
     let _e11 = light_normal(l_5);
     let cos_y_1 = select(0f, dot(_e11, (v_13 / vec3(sqrt(d2_15)))), (d2_15 > 0f));
-    let _e20 = select_pdf(li_4, x_23, n_24, nee_1, in_range_3);
-    let _e23 = rt2_7[li_4];
+    let _e20 = select_pdf(li_3, x_23, n_24, nee_1, in_range_3);
+    let _e23 = rt2_7[li_3];
     let _e24 = light_area(l_5);
     let _e25 = light_strategy_pdf(_e20, _e23, d2_15, _e24, cos_y_1);
     return _e25;
 }
 
-fn shade_pick(li_5: u32, x_24: vec3<f32>, n_25: vec3<f32>, ng_3: vec3<f32>, w_10: f32, nee_2: u32, u1_4: f32, u2_4: f32) -> vec3<f32> {
+fn shade_pick(li_4: u32, x_24: vec3<f32>, n_25: vec3<f32>, ng_3: vec3<f32>, w_10: f32, nee_2: u32, u1_4: f32, u2_4: f32) -> vec3<f32> {
     var mis: f32 = 1f;
     var local_21: bool;
 
     let _e10 = params.eps;
-    let _e11 = connect(li_5, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10);
-    let _e16 = lights[li_5];
+    let _e11 = connect(li_4, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10);
+    let _e16 = lights[li_4];
     let _e17 = light_area(_e16);
     if (_e17 > 0f) {
         local_21 = (_e11.cos_x > 0f);
@@ -1717,7 +1763,7 @@ fn shade_pick(li_5: u32, x_24: vec3<f32>, n_25: vec3<f32>, ng_3: vec3<f32>, w_10
     }
     let _e26 = local_21;
     if _e26 {
-        let _e29 = light_pdf(li_5, x_24, n_25, _e11.y, nee_2, true);
+        let _e29 = light_pdf(li_4, x_24, n_25, _e11.y, nee_2, true);
         let _e31 = cosine_pdf(_e11.cos_x);
         let _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -1731,14 +1777,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var h: u32;
     var sum: vec3<f32> = vec3(0f);
 
-    let i_10 = gid.x;
+    let i_11 = gid.x;
     let _e4 = params.point_count;
-    if (i_10 >= _e4) {
+    if (i_11 >= _e4) {
         return;
     }
-    let vtx = vertices[i_10];
+    let vtx = vertices[i_11];
     if (vtx.alive == 0u) {
-        candidates[i_10] = 0u;
+        candidates[i_11] = 0u;
         return;
     }
     let x_25 = vtx.position;
@@ -1746,38 +1792,38 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let ng_4 = vtx.gnormal;
     let _e20 = params.seed;
     let _e23 = params.frame;
-    let _e24 = point_stream(_e20, i_10, _e23);
+    let _e24 = point_stream(_e20, i_11, _e23);
     let _e25 = pick_stream(_e24);
     h = _e25;
-    candidates[i_10] = 0u;
+    candidates[i_11] = 0u;
     let _e33 = h;
     let _e34 = pcg_hash(_e33);
     h = _e34;
     let _e35 = h;
     let _e36 = xi_from_bits(_e35);
-    let _e37 = light_bvh_sample(x_25, n_29, _e36);
-    let li_6 = _e37.light;
-    let pmf_2 = _e37.pmf;
-    let _e40 = h;
-    let _e41 = pcg_hash(_e40);
-    h = _e41;
-    let _e42 = h;
-    let _e43 = xi_from_bits(_e42);
-    let _e44 = h;
-    let _e45 = pcg_hash(_e44);
-    h = _e45;
-    let _e46 = h;
-    let _e47 = xi_from_bits(_e46);
+    let _e38 = light_bvh_sample(BVH, x_25, n_29, _e36);
+    let li_5 = _e38.light;
+    let pmf_2 = _e38.pmf;
+    let _e41 = h;
+    let _e42 = pcg_hash(_e41);
+    h = _e42;
+    let _e43 = h;
+    let _e44 = xi_from_bits(_e43);
+    let _e45 = h;
+    let _e46 = pcg_hash(_e45);
+    h = _e46;
+    let _e47 = h;
+    let _e48 = xi_from_bits(_e47);
     if (pmf_2 > 0f) {
-        let _e53 = shade_pick(li_6, x_25, n_29, ng_4, (1f / pmf_2), 0u, _e43, _e47);
-        sum = _e53;
+        let _e54 = shade_pick(li_5, x_25, n_29, ng_4, (1f / pmf_2), 0u, _e44, _e48);
+        sum = _e54;
     }
-    let _e55 = sum;
-    let add = (vtx.weight * _e55);
-    let _e57 = finite3_(add);
-    if _e57 {
-        let _e60 = radiance[i_10];
-        radiance[i_10] = (_e60 + vec4<f32>(add, 0f));
+    let _e56 = sum;
+    let add = (vtx.weight * _e56);
+    let _e58 = finite3_(add);
+    if _e58 {
+        let _e61 = radiance[i_11];
+        radiance[i_11] = (_e61 + vec4<f32>(add, 0f));
         return;
     } else {
         return;

@@ -20,17 +20,6 @@ struct GpuLightCone {
     pad: u32,
 }
 
-struct GpuLightBvhNode {
-    center: vec3<f32>,
-    radius: f32,
-    axis: vec3<f32>,
-    cos_o: f32,
-    phi: f32,
-    cos_e: f32,
-    second: u32,
-    light: u32,
-}
-
 struct GpuGeoNode {
     bmin: vec3<f32>,
     first: u32,
@@ -199,6 +188,17 @@ struct BshNode {
     pad: u32,
 }
 
+struct GpuLightBvhNode {
+    center: vec3<f32>,
+    radius: f32,
+    axis: vec3<f32>,
+    cos_o: f32,
+    phi: f32,
+    cos_e: f32,
+    second: u32,
+    light: u32,
+}
+
 struct GeoHit {
     t: f32,
     tri: u32,
@@ -238,6 +238,7 @@ const COVER_WEIGHT: f32 = 0.1f;
 const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const K: u32 = 8u;
+const BVH: u32 = 0u;
 
 @group(1) @binding(0) 
 var<storage> slc_table: array<f32>;
@@ -1438,130 +1439,174 @@ fn light_weight(li: u32, x_14: vec3<f32>, n_17: vec3<f32>) -> f32 {
     return _e15;
 }
 
-fn bvh_importance(i_3: u32, x_15: vec3<f32>, n_18: vec3<f32>) -> f32 {
-    let b_10 = light_bvh[i_3];
-    let _e12 = light_importance(b_10.center, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_15, n_18);
-    return _e12;
+fn light_bvh_node(nodes: u32, i_3: u32) -> GpuLightBvhNode {
+    let _e4 = light_bvh[i_3];
+    return _e4;
 }
 
-fn bvh_first(i_4: u32, x_16: vec3<f32>, n_19: vec3<f32>) -> f32 {
+fn light_bvh_count(nodes_1: u32) -> u32 {
+    return arrayLength((&light_bvh));
+}
+
+fn bvh_importance(nodes_2: u32, i_4: u32, x_15: vec3<f32>, n_18: vec3<f32>) -> f32 {
+    let _e4 = light_bvh_node(nodes_2, i_4);
+    let _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_15, n_18);
+    return _e11;
+}
+
+fn bvh_first(nodes_3: u32, i_5: u32, x_16: vec3<f32>, n_19: vec3<f32>) -> f32 {
     var local_19: bool;
 
-    let j = light_bvh[i_4].second;
-    if !((j <= (i_4 + 1u))) {
-        local_19 = (j >= arrayLength((&light_bvh)));
+    let _e4 = light_bvh_node(nodes_3, i_5);
+    let j = _e4.second;
+    if !((j <= (i_5 + 1u))) {
+        let _e12 = light_bvh_count(nodes_3);
+        local_19 = (j >= _e12);
     } else {
         local_19 = true;
     }
-    let _e17 = local_19;
-    if _e17 {
+    let _e15 = local_19;
+    if _e15 {
         return -1f;
     }
-    let _e21 = bvh_importance((i_4 + 1u), x_16, n_19);
-    let _e22 = bvh_importance(j, x_16, n_19);
-    let _e23 = bvh_first_prob(_e21, _e22);
-    return _e23;
+    let _e19 = bvh_importance(nodes_3, (i_5 + 1u), x_16, n_19);
+    let _e20 = bvh_importance(nodes_3, j, x_16, n_19);
+    let _e21 = bvh_first_prob(_e19, _e20);
+    return _e21;
 }
 
-fn light_bvh_sample(x_17: vec3<f32>, n_20: vec3<f32>, u_in: f32) -> BvhPick {
-    var u_5: f32;
-    var i_5: u32 = 0u;
-    var pmf: f32 = 1f;
-    var local_20: bool;
-
-    u_5 = u_in;
-    loop {
-        let _e9 = i_5;
-        let node_1 = light_bvh[_e9];
-        if (node_1.second == LIGHT_BVH_LEAF) {
-            let _e15 = i_5;
-            if !((_e15 > 0u)) {
-                let _e22 = bvh_importance(0u, x_17, n_20);
-                local_20 = (_e22 > 0f);
-            } else {
-                local_20 = true;
-            }
-            let reaches = local_20;
-            let _e28 = pmf;
-            return BvhPick(node_1.light, select(0f, _e28, reaches));
-        }
-        let _e32 = i_5;
-        let _e33 = bvh_first(_e32, x_17, n_20);
-        if (_e33 < 0f) {
-            return BvhPick(0u, 0f);
-        }
-        let _e39 = u_5;
-        let first_1 = (_e39 < _e33);
-        let _e41 = pmf;
-        pmf = (_e41 * select((1f - _e33), _e33, first_1));
-        let _e46 = u_5;
-        let _e47 = bvh_remap_u(_e46, _e33, first_1);
-        u_5 = _e47;
-        let _e49 = i_5;
-        i_5 = select(node_1.second, (_e49 + 1u), first_1);
-    }
+fn bvh_pick_none() -> BvhPick {
     return BvhPick(0u, 0f);
 }
 
-fn light_bvh_pmf(li_1: u32, x_18: vec3<f32>, n_21: vec3<f32>) -> f32 {
+fn light_bvh_sample(nodes_4: u32, x_17: vec3<f32>, n_20: vec3<f32>, u_in: f32) -> BvhPick {
+    var pick: BvhPick;
+    var u_5: f32;
     var i_6: u32 = 0u;
+    var pmf: f32 = 1f;
+    var local_20: bool;
+
+    let _e4 = bvh_pick_none();
+    pick = _e4;
+    u_5 = u_in;
+    loop {
+        let _e11 = i_6;
+        let _e12 = light_bvh_count(nodes_4);
+        if (_e11 < _e12) {
+        } else {
+            break;
+        }
+        {
+            let _e14 = i_6;
+            let _e15 = light_bvh_node(nodes_4, _e14);
+            if (_e15.second == LIGHT_BVH_LEAF) {
+                let _e19 = i_6;
+                if !((_e19 > 0u)) {
+                    let _e26 = bvh_importance(nodes_4, 0u, x_17, n_20);
+                    local_20 = (_e26 > 0f);
+                } else {
+                    local_20 = true;
+                }
+                let _e30 = local_20;
+                if _e30 {
+                    pick.light = _e15.light;
+                    let _e34 = pmf;
+                    pick.pmf = _e34;
+                }
+                let _e35 = pick;
+                return _e35;
+            }
+            let _e36 = i_6;
+            let _e37 = bvh_first(nodes_4, _e36, x_17, n_20);
+            if (_e37 < 0f) {
+                let _e40 = pick;
+                return _e40;
+            }
+            let _e41 = u_5;
+            let first_1 = (_e41 < _e37);
+            let _e43 = pmf;
+            pmf = (_e43 * select((1f - _e37), _e37, first_1));
+            let _e48 = u_5;
+            let _e49 = bvh_remap_u(_e48, _e37, first_1);
+            u_5 = _e49;
+            let _e51 = i_6;
+            i_6 = select(_e15.second, (_e51 + 1u), first_1);
+        }
+    }
+    let _e55 = pick;
+    return _e55;
+}
+
+fn light_bvh_pmf(nodes_5: u32, leaf: u32, x_18: vec3<f32>, n_21: vec3<f32>) -> f32 {
+    var i_7: u32 = 0u;
     var pmf_1: f32 = 1f;
     var local_21: bool;
     var local_22: bool;
 
-    let leaf = light_cones[li_1].bvh_leaf;
-    if (leaf >= arrayLength((&light_bvh))) {
+    let _e4 = light_bvh_count(nodes_5);
+    if (leaf >= _e4) {
         return 0f;
     }
     loop {
-        let _e16 = i_6;
-        let node_2 = light_bvh[_e16];
-        if (node_2.second == LIGHT_BVH_LEAF) {
-            let _e22 = i_6;
-            if !((_e22 > 0u)) {
-                let _e29 = bvh_importance(0u, x_18, n_21);
-                local_21 = (_e29 > 0f);
-            } else {
-                local_21 = true;
-            }
-            let reaches_1 = local_21;
-            let _e34 = pmf_1;
-            let _e35 = i_6;
-            if (_e35 == leaf) {
-                local_22 = reaches_1;
-            } else {
-                local_22 = false;
-            }
-            let _e40 = local_22;
-            return select(0f, _e34, _e40);
+        let _e11 = i_7;
+        let _e12 = light_bvh_count(nodes_5);
+        if (_e11 < _e12) {
+        } else {
+            break;
         }
-        let _e43 = i_6;
-        let _e44 = bvh_first(_e43, x_18, n_21);
-        if (_e44 < 0f) {
-            return 0f;
+        {
+            let _e14 = i_7;
+            let _e15 = light_bvh_node(nodes_5, _e14);
+            if (_e15.second == LIGHT_BVH_LEAF) {
+                let _e19 = i_7;
+                if (_e19 == leaf) {
+                    let _e23 = i_7;
+                    if !((_e23 > 0u)) {
+                        let _e30 = bvh_importance(nodes_5, 0u, x_18, n_21);
+                        local_22 = (_e30 > 0f);
+                    } else {
+                        local_22 = true;
+                    }
+                    let _e34 = local_22;
+                    local_21 = _e34;
+                } else {
+                    local_21 = false;
+                }
+                let _e36 = local_21;
+                if _e36 {
+                    let _e37 = pmf_1;
+                    return _e37;
+                }
+                return 0f;
+            }
+            let _e39 = i_7;
+            let _e40 = bvh_first(nodes_5, _e39, x_18, n_21);
+            if (_e40 < 0f) {
+                return 0f;
+            }
+            let first_2 = (leaf < _e15.second);
+            let _e46 = pmf_1;
+            pmf_1 = (_e46 * select((1f - _e40), _e40, first_2));
+            let _e52 = i_7;
+            i_7 = select(_e15.second, (_e52 + 1u), first_2);
         }
-        let first_2 = (leaf < node_2.second);
-        let _e50 = pmf_1;
-        pmf_1 = (_e50 * select((1f - _e44), _e44, first_2));
-        let _e56 = i_6;
-        i_6 = select(node_2.second, (_e56 + 1u), first_2);
     }
     return 0f;
 }
 
-fn select_pdf(li_2: u32, x_19: vec3<f32>, n_22: vec3<f32>, nee: u32, in_range_2: bool) -> f32 {
+fn select_pdf(li_1: u32, x_19: vec3<f32>, n_22: vec3<f32>, nee: u32, in_range_2: bool) -> f32 {
     let _e6 = reservoir_select_pdf(nee, in_range_2, K);
     return _e6;
 }
 
-fn light_pdf(li_3: u32, x_20: vec3<f32>, n_23: vec3<f32>, y_3: vec3<f32>, nee_1: u32, in_range_3: bool) -> f32 {
-    let l_4 = lights[li_3];
+fn light_pdf(li_2: u32, x_20: vec3<f32>, n_23: vec3<f32>, y_3: vec3<f32>, nee_1: u32, in_range_3: bool) -> f32 {
+    let l_4 = lights[li_2];
     let v_13 = (x_20 - y_3);
     let d2_14 = dot(v_13, v_13);
     let _e11 = light_normal(l_4);
     let cos_y_1 = select(0f, dot(_e11, (v_13 / vec3(sqrt(d2_14)))), (d2_14 > 0f));
-    let _e20 = select_pdf(li_3, x_20, n_23, nee_1, in_range_3);
-    let _e23 = rt2_7[li_3];
+    let _e20 = select_pdf(li_2, x_20, n_23, nee_1, in_range_3);
+    let _e23 = rt2_7[li_2];
     let _e24 = light_area(l_4);
     let _e25 = light_strategy_pdf(_e20, _e23, d2_14, _e24, cos_y_1);
     return _e25;
@@ -1587,24 +1632,24 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var local_1: bool;
     var local_2: bool;
 
-    let i_7 = gid.x;
+    let i_8 = gid.x;
     let _e4 = params.width;
     let _e7 = params.height;
-    if (i_7 >= (_e4 * _e7)) {
+    if (i_8 >= (_e4 * _e7)) {
         return;
     }
     let _e13 = params.depth;
     if (_e13 == 0u) {
         let _e18 = params.seed;
         let _e21 = params.pass_index;
-        let _e22 = path_stream(_e18, i_7, _e21);
+        let _e22 = path_stream(_e18, i_8, _e21);
         h = _e22;
         let _e26 = params.width;
         let _e28 = next_uniform((&h));
-        let _e29 = jittered_pixel((i_7 % _e26), _e28);
+        let _e29 = jittered_pixel((i_8 % _e26), _e28);
         let _e32 = params.width;
         let _e34 = next_uniform((&h));
-        let _e35 = jittered_pixel((i_7 / _e32), _e34);
+        let _e35 = jittered_pixel((i_8 / _e32), _e34);
         let _e39 = params.cam_pos;
         st.origin = _e39;
         let _e43 = params.cam_forward;
@@ -1622,14 +1667,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         let _e71 = params.cam_pos;
         st.prev = _e71;
     } else {
-        let _e74 = paths[i_7];
+        let _e74 = paths[i_8];
         st = _e74;
     }
     v.alive = 0u;
     let _e79 = st.alive;
     if (_e79 == 0u) {
         let _e84 = v;
-        vertices[i_7] = _e84;
+        vertices[i_8] = _e84;
         return;
     }
     let _e86 = st.origin;
@@ -1639,9 +1684,9 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     if (_e94.tri == NO_LIGHT) {
         st.alive = 0u;
         let _e102 = st;
-        paths[i_7] = _e102;
+        paths[i_8] = _e102;
         let _e105 = v;
-        vertices[i_7] = _e105;
+        vertices[i_8] = _e105;
         return;
     }
     let tri = geo_tris[_e94.tri];
@@ -1651,10 +1696,10 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     let _e122 = st.dir;
     let _e123 = face_against(_e120, _e122);
-    let b_11 = (_e94.tri * 3u);
-    let _e129 = geo_normals[b_11];
-    let _e135 = geo_normals[(b_11 + 1u)];
-    let _e141 = geo_normals[(b_11 + 2u)];
+    let b_10 = (_e94.tri * 3u);
+    let _e129 = geo_normals[b_10];
+    let _e135 = geo_normals[(b_10 + 1u)];
+    let _e141 = geo_normals[(b_10 + 2u)];
     let _e146 = barycentric(x_21, tri.v0_, tri.v1_, tri.v2_);
     let _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if (tri.light != NO_LIGHT) {
@@ -1675,7 +1720,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e177 = st.pdf_bsdf;
             let _e180 = st.prev;
             let _e182 = st.prev_normal;
-            let _e185 = candidates[i_7];
+            let _e185 = candidates[i_8];
             let _e186 = light_pdf(tri.light, _e180, _e182, x_21, _e185, _e175);
             let _e187 = mis_weight(_e177, _e186);
             w = _e187;
@@ -1686,8 +1731,8 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         let add = ((_e189 * _e194) * _e196);
         let _e198 = finite3_(add);
         if _e198 {
-            let _e201 = radiance[i_7];
-            radiance[i_7] = (_e201 + vec4<f32>(add, 0f));
+            let _e201 = radiance[i_8];
+            radiance[i_8] = (_e201 + vec4<f32>(add, 0f));
         }
     }
     let _e208 = albedo_1[tri.material];
@@ -1700,7 +1745,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     v.weight = (_e215 * _e216);
     v.alive = 1u;
     let _e222 = v;
-    vertices[i_7] = _e222;
+    vertices[i_8] = _e222;
     let _e224 = st.rng;
     rng = _e224;
     let _e226 = next_uniform((&rng));
@@ -1751,6 +1796,6 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e286 = rng;
     st.rng = _e286;
     let _e289 = st;
-    paths[i_7] = _e289;
+    paths[i_8] = _e289;
     return;
 }

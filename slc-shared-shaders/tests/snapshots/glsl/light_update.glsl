@@ -23,16 +23,6 @@ struct GpuLightCone {
     uint bvh_leaf;
     uint pad;
 };
-struct GpuLightBvhNode {
-    vec3 center;
-    float radius;
-    vec3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint second;
-    uint light;
-};
 struct GpuGeoNode {
     vec3 bmin;
     uint first;
@@ -183,6 +173,16 @@ struct BshNode {
     uint next;
     uint light;
     uint pad;
+};
+struct GpuLightBvhNode {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
 };
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;

@@ -23,16 +23,6 @@ struct GpuLightCone {
     uint bvh_leaf;
     uint pad;
 };
-struct GpuLightBvhNode {
-    vec3 center;
-    float radius;
-    vec3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint second;
-    uint light;
-};
 struct GpuGeoNode {
     vec3 bmin;
     uint first;
@@ -184,6 +174,16 @@ struct BshNode {
     uint light;
     uint pad;
 };
+struct GpuLightBvhNode {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
+};
 struct GeoHit {
     float t;
     uint tri;
@@ -231,6 +231,7 @@ const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
 const uint K = 8u;
 const uint BSH = 0u;
+const uint BVH = 0u;
 
 layout(std430) readonly buffer type_6_block_0Compute { GpuGeoNode _group_0_binding_6_cs[]; };
 
@@ -1430,30 +1431,34 @@ float mis_weight(float pdf_a_2, float pdf_b_2) {
     return _e2;
 }
 
-float select_pdf(uint li_3, vec3 x_22, vec3 n_23, uint nee, bool in_range_2) {
+BvhPick bvh_pick_none() {
+    return BvhPick(0u, 0.0);
+}
+
+float select_pdf(uint li_2, vec3 x_22, vec3 n_23, uint nee, bool in_range_2) {
     float _e6 = reservoir_select_pdf(nee, in_range_2, K);
     return _e6;
 }
 
-float light_pdf(uint li_4, vec3 x_23, vec3 n_24, vec3 y_3, uint nee_1, bool in_range_3) {
-    GpuLight l_5 = _group_0_binding_2_cs[li_4];
+float light_pdf(uint li_3, vec3 x_23, vec3 n_24, vec3 y_3, uint nee_1, bool in_range_3) {
+    GpuLight l_5 = _group_0_binding_2_cs[li_3];
     vec3 v_13 = (x_23 - y_3);
     float d2_15 = dot(v_13, v_13);
     vec3 _e11 = light_normal(l_5);
     float cos_y_1 = ((d2_15 > 0.0) ? dot(_e11, (v_13 / vec3(sqrt(d2_15)))) : 0.0);
-    float _e20 = select_pdf(li_4, x_23, n_24, nee_1, in_range_3);
-    float _e23 = _group_0_binding_3_cs[li_4];
+    float _e20 = select_pdf(li_3, x_23, n_24, nee_1, in_range_3);
+    float _e23 = _group_0_binding_3_cs[li_3];
     float _e24 = light_area(l_5);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_15, _e24, cos_y_1);
     return _e25;
 }
 
-vec3 shade_pick(uint li_5, vec3 x_24, vec3 n_25, vec3 ng_3, float w_10, uint nee_2, float u1_4, float u2_4) {
+vec3 shade_pick(uint li_4, vec3 x_24, vec3 n_25, vec3 ng_3, float w_10, uint nee_2, float u1_4, float u2_4) {
     float mis = 1.0;
     bool local_21 = false;
     float _e10 = _group_0_binding_0_cs.eps;
-    Connection _e11 = connect(li_5, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10);
-    GpuLight _e16 = _group_0_binding_2_cs[li_5];
+    Connection _e11 = connect(li_4, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10);
+    GpuLight _e16 = _group_0_binding_2_cs[li_4];
     float _e17 = light_area(_e16);
     if ((_e17 > 0.0)) {
         local_21 = (_e11.cos_x > 0.0);
@@ -1462,7 +1467,7 @@ vec3 shade_pick(uint li_5, vec3 x_24, vec3 n_25, vec3 ng_3, float w_10, uint nee
     }
     bool _e26 = local_21;
     if (_e26) {
-        float _e29 = light_pdf(li_5, x_24, n_25, _e11.y, nee_2, true);
+        float _e29 = light_pdf(li_4, x_24, n_25, _e11.y, nee_2, true);
         float _e31 = cosine_pdf(_e11.cos_x);
         float _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -1476,14 +1481,14 @@ void main() {
     uint h = 0u;
     vec3 sum = vec3(0.0);
     uint s = 0u;
-    uint i_10 = gid.x;
+    uint i_11 = gid.x;
     uint _e4 = _group_0_binding_0_cs.point_count;
-    if ((i_10 >= _e4)) {
+    if ((i_11 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = _group_0_binding_1_cs[i_10];
+    GpuPathVertex vtx = _group_0_binding_1_cs[i_11];
     if ((vtx.alive == 0u)) {
-        _group_0_binding_9_cs[i_10] = 0u;
+        _group_0_binding_9_cs[i_11] = 0u;
         return;
     }
     vec3 x_25 = vtx.position;
@@ -1491,11 +1496,11 @@ void main() {
     vec3 ng_4 = vtx.gnormal;
     uint _e20 = _group_0_binding_0_cs.seed;
     uint _e23 = _group_0_binding_0_cs.frame;
-    uint _e24 = point_stream(_e20, i_10, _e23);
+    uint _e24 = point_stream(_e20, i_11, _e23);
     uint _e25 = pick_stream(_e24);
     h = _e25;
     Picks _e30 = bsh_collect(x_25, _e24);
-    _group_0_binding_9_cs[i_10] = _e30.n;
+    _group_0_binding_9_cs[i_11] = _e30.n;
     float _e36 = reservoir_weight(_e30.n, K);
     bool loop_init_2 = true;
     while(true) {
@@ -1530,8 +1535,8 @@ void main() {
     vec3 add = (vtx.weight * _e63);
     bool _e65 = finite3_(add);
     if (_e65) {
-        vec4 _e68 = _group_0_binding_8_cs[i_10];
-        _group_0_binding_8_cs[i_10] = (_e68 + vec4(add, 0.0));
+        vec4 _e68 = _group_0_binding_8_cs[i_11];
+        _group_0_binding_8_cs[i_11] = (_e68 + vec4(add, 0.0));
         return;
     } else {
         return;

@@ -23,16 +23,6 @@ struct GpuLightCone {
     uint bvh_leaf;
     uint pad;
 };
-struct GpuLightBvhNode {
-    vec3 center;
-    float radius;
-    vec3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint second;
-    uint light;
-};
 struct GpuGeoNode {
     vec3 bmin;
     uint first;
@@ -184,6 +174,16 @@ struct BshNode {
     uint light;
     uint pad;
 };
+struct GpuLightBvhNode {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
+};
 struct GeoHit {
     float t;
     uint tri;
@@ -231,6 +231,7 @@ const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
 const uint K = 8u;
 const uint BSH = 0u;
+const uint BVH = 0u;
 
 layout(std430) readonly buffer type_6_block_0Compute { GpuGeoNode _group_0_binding_6_cs[]; };
 
@@ -1344,138 +1345,183 @@ float light_weight(uint li_1, vec3 x_17, vec3 n_18) {
     return _e15;
 }
 
-float bvh_importance(uint i_6, vec3 x_18, vec3 n_19) {
-    GpuLightBvhNode b_9 = _group_1_binding_3_cs[i_6];
-    float _e12 = light_importance(b_9.center, b_9.radius, b_9.phi, b_9.axis, b_9.cos_o, b_9.cos_e, x_18, n_19);
-    return _e12;
+GpuLightBvhNode light_bvh_node(uint nodes_4, uint i_6) {
+    GpuLightBvhNode _e4 = _group_1_binding_3_cs[i_6];
+    return _e4;
 }
 
-float bvh_first(uint i_7, vec3 x_19, vec3 n_20) {
+uint light_bvh_count(uint nodes_5) {
+    return uint(_group_1_binding_3_cs.length());
+}
+
+float bvh_importance(uint nodes_6, uint i_7, vec3 x_18, vec3 n_19) {
+    GpuLightBvhNode _e4 = light_bvh_node(nodes_6, i_7);
+    float _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_18, n_19);
+    return _e11;
+}
+
+float bvh_first(uint nodes_7, uint i_8, vec3 x_19, vec3 n_20) {
     bool local_17 = false;
-    uint j = _group_1_binding_3_cs[i_7].second;
-    if (!((j <= (i_7 + 1u)))) {
-        local_17 = (j >= uint(_group_1_binding_3_cs.length()));
+    GpuLightBvhNode _e4 = light_bvh_node(nodes_7, i_8);
+    uint j = _e4.second;
+    if (!((j <= (i_8 + 1u)))) {
+        uint _e12 = light_bvh_count(nodes_7);
+        local_17 = (j >= _e12);
     } else {
         local_17 = true;
     }
-    bool _e17 = local_17;
-    if (_e17) {
+    bool _e15 = local_17;
+    if (_e15) {
         return -1.0;
     }
-    float _e21 = bvh_importance((i_7 + 1u), x_19, n_20);
-    float _e22 = bvh_importance(j, x_19, n_20);
-    float _e23 = bvh_first_prob(_e21, _e22);
-    return _e23;
+    float _e19 = bvh_importance(nodes_7, (i_8 + 1u), x_19, n_20);
+    float _e20 = bvh_importance(nodes_7, j, x_19, n_20);
+    float _e21 = bvh_first_prob(_e19, _e20);
+    return _e21;
 }
 
-BvhPick light_bvh_sample(vec3 x_20, vec3 n_21, float u_in) {
-    float u_5 = 0.0;
-    uint i_8 = 0u;
-    float pmf = 1.0;
-    bool local_18 = false;
-    u_5 = u_in;
-    while(true) {
-        uint _e9 = i_8;
-        GpuLightBvhNode node_1 = _group_1_binding_3_cs[_e9];
-        if ((node_1.second == LIGHT_BVH_LEAF)) {
-            uint _e15 = i_8;
-            if (!((_e15 > 0u))) {
-                float _e22 = bvh_importance(0u, x_20, n_21);
-                local_18 = (_e22 > 0.0);
-            } else {
-                local_18 = true;
-            }
-            bool reaches = local_18;
-            float _e28 = pmf;
-            return BvhPick(node_1.light, (reaches ? _e28 : 0.0));
-        }
-        uint _e32 = i_8;
-        float _e33 = bvh_first(_e32, x_20, n_21);
-        if ((_e33 < 0.0)) {
-            return BvhPick(0u, 0.0);
-        }
-        float _e39 = u_5;
-        bool first_1 = (_e39 < _e33);
-        float _e41 = pmf;
-        pmf = (_e41 * (first_1 ? _e33 : (1.0 - _e33)));
-        float _e46 = u_5;
-        float _e47 = bvh_remap_u(_e46, _e33, first_1);
-        u_5 = _e47;
-        uint _e49 = i_8;
-        i_8 = (first_1 ? (_e49 + 1u) : node_1.second);
-    }
+BvhPick bvh_pick_none() {
     return BvhPick(0u, 0.0);
 }
 
-float light_bvh_pmf(uint li_2, vec3 x_21, vec3 n_22) {
+BvhPick light_bvh_sample(uint nodes_8, vec3 x_20, vec3 n_21, float u_in) {
+    BvhPick pick = BvhPick(0u, 0.0);
+    float u_5 = 0.0;
     uint i_9 = 0u;
+    float pmf = 1.0;
+    bool local_18 = false;
+    BvhPick _e4 = bvh_pick_none();
+    pick = _e4;
+    u_5 = u_in;
+    while(true) {
+        uint _e11 = i_9;
+        uint _e12 = light_bvh_count(nodes_8);
+        if ((_e11 < _e12)) {
+        } else {
+            break;
+        }
+        {
+            uint _e14 = i_9;
+            GpuLightBvhNode _e15 = light_bvh_node(nodes_8, _e14);
+            if ((_e15.second == LIGHT_BVH_LEAF)) {
+                uint _e19 = i_9;
+                if (!((_e19 > 0u))) {
+                    float _e26 = bvh_importance(nodes_8, 0u, x_20, n_21);
+                    local_18 = (_e26 > 0.0);
+                } else {
+                    local_18 = true;
+                }
+                bool _e30 = local_18;
+                if (_e30) {
+                    pick.light = _e15.light;
+                    float _e34 = pmf;
+                    pick.pmf = _e34;
+                }
+                BvhPick _e35 = pick;
+                return _e35;
+            }
+            uint _e36 = i_9;
+            float _e37 = bvh_first(nodes_8, _e36, x_20, n_21);
+            if ((_e37 < 0.0)) {
+                BvhPick _e40 = pick;
+                return _e40;
+            }
+            float _e41 = u_5;
+            bool first_1 = (_e41 < _e37);
+            float _e43 = pmf;
+            pmf = (_e43 * (first_1 ? _e37 : (1.0 - _e37)));
+            float _e48 = u_5;
+            float _e49 = bvh_remap_u(_e48, _e37, first_1);
+            u_5 = _e49;
+            uint _e51 = i_9;
+            i_9 = (first_1 ? (_e51 + 1u) : _e15.second);
+        }
+    }
+    BvhPick _e55 = pick;
+    return _e55;
+}
+
+float light_bvh_pmf(uint nodes_9, uint leaf, vec3 x_21, vec3 n_22) {
+    uint i_10 = 0u;
     float pmf_1 = 1.0;
     bool local_19 = false;
     bool local_20 = false;
-    uint leaf = _group_1_binding_2_cs[li_2].bvh_leaf;
-    if ((leaf >= uint(_group_1_binding_3_cs.length()))) {
+    uint _e4 = light_bvh_count(nodes_9);
+    if ((leaf >= _e4)) {
         return 0.0;
     }
     while(true) {
-        uint _e16 = i_9;
-        GpuLightBvhNode node_2 = _group_1_binding_3_cs[_e16];
-        if ((node_2.second == LIGHT_BVH_LEAF)) {
-            uint _e22 = i_9;
-            if (!((_e22 > 0u))) {
-                float _e29 = bvh_importance(0u, x_21, n_22);
-                local_19 = (_e29 > 0.0);
-            } else {
-                local_19 = true;
-            }
-            bool reaches_1 = local_19;
-            float _e34 = pmf_1;
-            uint _e35 = i_9;
-            if ((_e35 == leaf)) {
-                local_20 = reaches_1;
-            } else {
-                local_20 = false;
-            }
-            bool _e40 = local_20;
-            return (_e40 ? _e34 : 0.0);
+        uint _e11 = i_10;
+        uint _e12 = light_bvh_count(nodes_9);
+        if ((_e11 < _e12)) {
+        } else {
+            break;
         }
-        uint _e43 = i_9;
-        float _e44 = bvh_first(_e43, x_21, n_22);
-        if ((_e44 < 0.0)) {
-            return 0.0;
+        {
+            uint _e14 = i_10;
+            GpuLightBvhNode _e15 = light_bvh_node(nodes_9, _e14);
+            if ((_e15.second == LIGHT_BVH_LEAF)) {
+                uint _e19 = i_10;
+                if ((_e19 == leaf)) {
+                    uint _e23 = i_10;
+                    if (!((_e23 > 0u))) {
+                        float _e30 = bvh_importance(nodes_9, 0u, x_21, n_22);
+                        local_20 = (_e30 > 0.0);
+                    } else {
+                        local_20 = true;
+                    }
+                    bool _e34 = local_20;
+                    local_19 = _e34;
+                } else {
+                    local_19 = false;
+                }
+                bool _e36 = local_19;
+                if (_e36) {
+                    float _e37 = pmf_1;
+                    return _e37;
+                }
+                return 0.0;
+            }
+            uint _e39 = i_10;
+            float _e40 = bvh_first(nodes_9, _e39, x_21, n_22);
+            if ((_e40 < 0.0)) {
+                return 0.0;
+            }
+            bool first_2 = (leaf < _e15.second);
+            float _e46 = pmf_1;
+            pmf_1 = (_e46 * (first_2 ? _e40 : (1.0 - _e40)));
+            uint _e52 = i_10;
+            i_10 = (first_2 ? (_e52 + 1u) : _e15.second);
         }
-        bool first_2 = (leaf < node_2.second);
-        float _e50 = pmf_1;
-        pmf_1 = (_e50 * (first_2 ? _e44 : (1.0 - _e44)));
-        uint _e56 = i_9;
-        i_9 = (first_2 ? (_e56 + 1u) : node_2.second);
     }
     return 0.0;
 }
 
-float select_pdf(uint li_3, vec3 x_22, vec3 n_23, uint nee, bool in_range_2) {
-    float _e5 = light_bvh_pmf(li_3, x_22, n_23);
-    return _e5;
+float select_pdf(uint li_2, vec3 x_22, vec3 n_23, uint nee, bool in_range_2) {
+    uint _e9 = _group_1_binding_2_cs[li_2].bvh_leaf;
+    float _e10 = light_bvh_pmf(BVH, _e9, x_22, n_23);
+    return _e10;
 }
 
-float light_pdf(uint li_4, vec3 x_23, vec3 n_24, vec3 y_3, uint nee_1, bool in_range_3) {
-    GpuLight l_5 = _group_0_binding_2_cs[li_4];
+float light_pdf(uint li_3, vec3 x_23, vec3 n_24, vec3 y_3, uint nee_1, bool in_range_3) {
+    GpuLight l_5 = _group_0_binding_2_cs[li_3];
     vec3 v_13 = (x_23 - y_3);
     float d2_15 = dot(v_13, v_13);
     vec3 _e11 = light_normal(l_5);
     float cos_y_1 = ((d2_15 > 0.0) ? dot(_e11, (v_13 / vec3(sqrt(d2_15)))) : 0.0);
-    float _e20 = select_pdf(li_4, x_23, n_24, nee_1, in_range_3);
-    float _e23 = _group_0_binding_3_cs[li_4];
+    float _e20 = select_pdf(li_3, x_23, n_24, nee_1, in_range_3);
+    float _e23 = _group_0_binding_3_cs[li_3];
     float _e24 = light_area(l_5);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_15, _e24, cos_y_1);
     return _e25;
 }
 
-vec3 shade_pick(uint li_5, vec3 x_24, vec3 n_25, vec3 ng_3, float w_10, uint nee_2, float u1_4, float u2_4) {
+vec3 shade_pick(uint li_4, vec3 x_24, vec3 n_25, vec3 ng_3, float w_10, uint nee_2, float u1_4, float u2_4) {
     float mis = 1.0;
     bool local_21 = false;
     float _e10 = _group_0_binding_0_cs.eps;
-    Connection _e11 = connect(li_5, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10);
-    GpuLight _e16 = _group_0_binding_2_cs[li_5];
+    Connection _e11 = connect(li_4, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10);
+    GpuLight _e16 = _group_0_binding_2_cs[li_4];
     float _e17 = light_area(_e16);
     if ((_e17 > 0.0)) {
         local_21 = (_e11.cos_x > 0.0);
@@ -1484,7 +1530,7 @@ vec3 shade_pick(uint li_5, vec3 x_24, vec3 n_25, vec3 ng_3, float w_10, uint nee
     }
     bool _e26 = local_21;
     if (_e26) {
-        float _e29 = light_pdf(li_5, x_24, n_25, _e11.y, nee_2, true);
+        float _e29 = light_pdf(li_4, x_24, n_25, _e11.y, nee_2, true);
         float _e31 = cosine_pdf(_e11.cos_x);
         float _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -1497,14 +1543,14 @@ void main() {
     uvec3 gid = gl_GlobalInvocationID;
     uint h = 0u;
     vec3 sum = vec3(0.0);
-    uint i_10 = gid.x;
+    uint i_11 = gid.x;
     uint _e4 = _group_0_binding_0_cs.point_count;
-    if ((i_10 >= _e4)) {
+    if ((i_11 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = _group_0_binding_1_cs[i_10];
+    GpuPathVertex vtx = _group_0_binding_1_cs[i_11];
     if ((vtx.alive == 0u)) {
-        _group_0_binding_9_cs[i_10] = 0u;
+        _group_0_binding_9_cs[i_11] = 0u;
         return;
     }
     vec3 x_25 = vtx.position;
@@ -1512,38 +1558,38 @@ void main() {
     vec3 ng_4 = vtx.gnormal;
     uint _e20 = _group_0_binding_0_cs.seed;
     uint _e23 = _group_0_binding_0_cs.frame;
-    uint _e24 = point_stream(_e20, i_10, _e23);
+    uint _e24 = point_stream(_e20, i_11, _e23);
     uint _e25 = pick_stream(_e24);
     h = _e25;
-    _group_0_binding_9_cs[i_10] = 0u;
+    _group_0_binding_9_cs[i_11] = 0u;
     uint _e33 = h;
     uint _e34 = pcg_hash(_e33);
     h = _e34;
     uint _e35 = h;
     float _e36 = xi_from_bits(_e35);
-    BvhPick _e37 = light_bvh_sample(x_25, n_29, _e36);
-    uint li_6 = _e37.light;
-    float pmf_2 = _e37.pmf;
-    uint _e40 = h;
-    uint _e41 = pcg_hash(_e40);
-    h = _e41;
-    uint _e42 = h;
-    float _e43 = xi_from_bits(_e42);
-    uint _e44 = h;
-    uint _e45 = pcg_hash(_e44);
-    h = _e45;
-    uint _e46 = h;
-    float _e47 = xi_from_bits(_e46);
+    BvhPick _e38 = light_bvh_sample(BVH, x_25, n_29, _e36);
+    uint li_5 = _e38.light;
+    float pmf_2 = _e38.pmf;
+    uint _e41 = h;
+    uint _e42 = pcg_hash(_e41);
+    h = _e42;
+    uint _e43 = h;
+    float _e44 = xi_from_bits(_e43);
+    uint _e45 = h;
+    uint _e46 = pcg_hash(_e45);
+    h = _e46;
+    uint _e47 = h;
+    float _e48 = xi_from_bits(_e47);
     if ((pmf_2 > 0.0)) {
-        vec3 _e53 = shade_pick(li_6, x_25, n_29, ng_4, (1.0 / pmf_2), 0u, _e43, _e47);
-        sum = _e53;
+        vec3 _e54 = shade_pick(li_5, x_25, n_29, ng_4, (1.0 / pmf_2), 0u, _e44, _e48);
+        sum = _e54;
     }
-    vec3 _e55 = sum;
-    vec3 add = (vtx.weight * _e55);
-    bool _e57 = finite3_(add);
-    if (_e57) {
-        vec4 _e60 = _group_0_binding_8_cs[i_10];
-        _group_0_binding_8_cs[i_10] = (_e60 + vec4(add, 0.0));
+    vec3 _e56 = sum;
+    vec3 add = (vtx.weight * _e56);
+    bool _e58 = finite3_(add);
+    if (_e58) {
+        vec4 _e61 = _group_0_binding_8_cs[i_11];
+        _group_0_binding_8_cs[i_11] = (_e61 + vec4(add, 0.0));
         return;
     } else {
         return;

@@ -23,16 +23,6 @@ struct GpuLightCone {
     uint bvh_leaf;
     uint pad;
 };
-struct GpuLightBvhNode {
-    vec3 center;
-    float radius;
-    vec3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint second;
-    uint light;
-};
 struct GpuGeoNode {
     vec3 bmin;
     uint first;
@@ -184,6 +174,16 @@ struct BshNode {
     uint light;
     uint pad;
 };
+struct GpuLightBvhNode {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
+};
 struct GeoHit {
     float t;
     uint tri;
@@ -221,6 +221,7 @@ const float COVER_WEIGHT = 0.1;
 const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
 const uint K = 8u;
+const uint BVH = 0u;
 
 layout(std430) readonly buffer type_6_block_0Compute { GpuGeoNode _group_0_binding_5_cs[]; };
 
@@ -1298,19 +1299,23 @@ float mis_weight(float pdf_a_2, float pdf_b_2) {
     return _e2;
 }
 
-float select_pdf(uint li_2, vec3 x_19, vec3 n_22, uint nee, bool in_range_2) {
+BvhPick bvh_pick_none() {
+    return BvhPick(0u, 0.0);
+}
+
+float select_pdf(uint li_1, vec3 x_19, vec3 n_22, uint nee, bool in_range_2) {
     float _e6 = reservoir_select_pdf(nee, in_range_2, K);
     return _e6;
 }
 
-float light_pdf(uint li_3, vec3 x_20, vec3 n_23, vec3 y_3, uint nee_1, bool in_range_3) {
-    GpuLight l_4 = _group_0_binding_1_cs[li_3];
+float light_pdf(uint li_2, vec3 x_20, vec3 n_23, vec3 y_3, uint nee_1, bool in_range_3) {
+    GpuLight l_4 = _group_0_binding_1_cs[li_2];
     vec3 v_13 = (x_20 - y_3);
     float d2_14 = dot(v_13, v_13);
     vec3 _e11 = light_normal(l_4);
     float cos_y_1 = ((d2_14 > 0.0) ? dot(_e11, (v_13 / vec3(sqrt(d2_14)))) : 0.0);
-    float _e20 = select_pdf(li_3, x_20, n_23, nee_1, in_range_3);
-    float _e23 = _group_0_binding_2_cs[li_3];
+    float _e20 = select_pdf(li_2, x_20, n_23, nee_1, in_range_3);
+    float _e23 = _group_0_binding_2_cs[li_2];
     float _e24 = light_area(l_4);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_14, _e24, cos_y_1);
     return _e25;
@@ -1335,24 +1340,24 @@ void main() {
     uint rng = 0u;
     bool local_1 = false;
     bool local_2 = false;
-    uint i_7 = gid.x;
+    uint i_8 = gid.x;
     uint _e4 = _group_0_binding_0_cs.width;
     uint _e7 = _group_0_binding_0_cs.height;
-    if ((i_7 >= (_e4 * _e7))) {
+    if ((i_8 >= (_e4 * _e7))) {
         return;
     }
     uint _e13 = _group_0_binding_0_cs.depth;
     if ((_e13 == 0u)) {
         uint _e18 = _group_0_binding_0_cs.seed;
         uint _e21 = _group_0_binding_0_cs.pass_index;
-        uint _e22 = path_stream(_e18, i_7, _e21);
+        uint _e22 = path_stream(_e18, i_8, _e21);
         h = _e22;
         uint _e26 = _group_0_binding_0_cs.width;
         float _e28 = next_uniform(h);
-        float _e29 = jittered_pixel((i_7 % _e26), _e28);
+        float _e29 = jittered_pixel((i_8 % _e26), _e28);
         uint _e32 = _group_0_binding_0_cs.width;
         float _e34 = next_uniform(h);
-        float _e35 = jittered_pixel((i_7 / _e32), _e34);
+        float _e35 = jittered_pixel((i_8 / _e32), _e34);
         vec3 _e39 = _group_0_binding_0_cs.cam_pos;
         st.origin = _e39;
         vec3 _e43 = _group_0_binding_0_cs.cam_forward;
@@ -1370,14 +1375,14 @@ void main() {
         vec3 _e71 = _group_0_binding_0_cs.cam_pos;
         st.prev = _e71;
     } else {
-        GpuPathState _e74 = _group_0_binding_10_cs[i_7];
+        GpuPathState _e74 = _group_0_binding_10_cs[i_8];
         st = _e74;
     }
     v.alive = 0u;
     uint _e79 = st.alive;
     if ((_e79 == 0u)) {
         GpuPathVertex _e84 = v;
-        _group_0_binding_11_cs[i_7] = _e84;
+        _group_0_binding_11_cs[i_8] = _e84;
         return;
     }
     vec3 _e86 = st.origin;
@@ -1387,9 +1392,9 @@ void main() {
     if ((_e94.tri == NO_LIGHT)) {
         st.alive = 0u;
         GpuPathState _e102 = st;
-        _group_0_binding_10_cs[i_7] = _e102;
+        _group_0_binding_10_cs[i_8] = _e102;
         GpuPathVertex _e105 = v;
-        _group_0_binding_11_cs[i_7] = _e105;
+        _group_0_binding_11_cs[i_8] = _e105;
         return;
     }
     GpuTriangle tri = _group_0_binding_6_cs[_e94.tri];
@@ -1417,13 +1422,13 @@ void main() {
         float _e161 = st.pdf_bsdf;
         if ((_e161 > 0.0)) {
             uint _e168 = _group_0_binding_4_cs[tri.light];
-            BshNode leaf = _group_0_binding_3_cs[_e168];
+            BshNode leaf_1 = _group_0_binding_3_cs[_e168];
             vec3 _e174 = st.prev;
-            bool _e175 = sphere_contains_point(leaf.center, leaf.radius, _e174);
+            bool _e175 = sphere_contains_point(leaf_1.center, leaf_1.radius, _e174);
             float _e177 = st.pdf_bsdf;
             vec3 _e180 = st.prev;
             vec3 _e182 = st.prev_normal;
-            uint _e185 = _group_0_binding_9_cs[i_7];
+            uint _e185 = _group_0_binding_9_cs[i_8];
             float _e186 = light_pdf(tri.light, _e180, _e182, x_21, _e185, _e175);
             float _e187 = mis_weight(_e177, _e186);
             w = _e187;
@@ -1434,8 +1439,8 @@ void main() {
         vec3 add = ((_e189 * _e194) * _e196);
         bool _e198 = finite3_(add);
         if (_e198) {
-            vec4 _e201 = _group_0_binding_12_cs[i_7];
-            _group_0_binding_12_cs[i_7] = (_e201 + vec4(add, 0.0));
+            vec4 _e201 = _group_0_binding_12_cs[i_8];
+            _group_0_binding_12_cs[i_8] = (_e201 + vec4(add, 0.0));
         }
     }
     vec4 _e208 = _group_0_binding_7_cs[tri.material];
@@ -1448,7 +1453,7 @@ void main() {
     v.weight = (_e215 * _e216);
     v.alive = 1u;
     GpuPathVertex _e222 = v;
-    _group_0_binding_11_cs[i_7] = _e222;
+    _group_0_binding_11_cs[i_8] = _e222;
     uint _e224 = st.rng;
     rng = _e224;
     float _e226 = next_uniform(rng);
@@ -1499,7 +1504,7 @@ void main() {
     uint _e286 = rng;
     st.rng = _e286;
     GpuPathState _e289 = st;
-    _group_0_binding_10_cs[i_7] = _e289;
+    _group_0_binding_10_cs[i_8] = _e289;
     return;
 }
 

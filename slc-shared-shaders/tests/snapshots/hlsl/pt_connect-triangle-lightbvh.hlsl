@@ -20,17 +20,6 @@ struct GpuLightCone {
     uint pad;
 };
 
-struct GpuLightBvhNode {
-    float3 center_;
-    float radius;
-    float3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint second;
-    uint light;
-};
-
 struct GpuGeoNode {
     float3 bmin;
     uint first;
@@ -199,6 +188,17 @@ struct BshNode {
     uint pad;
 };
 
+struct GpuLightBvhNode {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
+};
+
 struct GeoHit {
     float t;
     uint tri;
@@ -251,6 +251,7 @@ static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
 static const uint K = 8u;
 static const uint BSH = 0u;
+static const uint BVH = 0u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
 ByteAddressBuffer geo_nodes : register(t6);
@@ -1802,31 +1803,45 @@ GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, f
     return ret;
 }
 
-float bvh_importance(uint i_6, float3 x_18, float3 n_19)
+GpuLightBvhNode light_bvh_node(uint nodes_4, uint i_6)
 {
-    GpuLightBvhNode b_10 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_6*48+0)), asfloat(light_bvh.Load(i_6*48+12)), asfloat(light_bvh.Load3(i_6*48+16)), asfloat(light_bvh.Load(i_6*48+28)), asfloat(light_bvh.Load(i_6*48+32)), asfloat(light_bvh.Load(i_6*48+36)), asuint(light_bvh.Load(i_6*48+40)), asuint(light_bvh.Load(i_6*48+44)));
-    const float _e12 = light_importance(b_10.center_, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_18, n_19);
-    return _e12;
+    GpuLightBvhNode _e4 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_6*48+0)), asfloat(light_bvh.Load(i_6*48+12)), asfloat(light_bvh.Load3(i_6*48+16)), asfloat(light_bvh.Load(i_6*48+28)), asfloat(light_bvh.Load(i_6*48+32)), asfloat(light_bvh.Load(i_6*48+36)), asuint(light_bvh.Load(i_6*48+40)), asuint(light_bvh.Load(i_6*48+44)));
+    const GpuLightBvhNode gpulightbvhnode = _e4;
+    return gpulightbvhnode;
 }
 
-float bvh_first(uint i_7, float3 x_19, float3 n_20)
+uint light_bvh_count(uint nodes_5)
+{
+    return ((NagaBufferLength(light_bvh) - 0) / 48);
+}
+
+float bvh_importance(uint nodes_6, uint i_7, float3 x_18, float3 n_19)
+{
+    const GpuLightBvhNode _e4 = light_bvh_node(nodes_6, i_7);
+    const float _e11 = light_importance(_e4.center_, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_18, n_19);
+    return _e11;
+}
+
+float bvh_first(uint nodes_7, uint i_8, float3 x_19, float3 n_20)
 {
     bool local_17 = (bool)0;
 
-    uint j = asuint(light_bvh.Load(40+i_7*48));
-    if (!((j <= (i_7 + 1u)))) {
-        local_17 = (j >= ((NagaBufferLength(light_bvh) - 0) / 48));
+    const GpuLightBvhNode _e4 = light_bvh_node(nodes_7, i_8);
+    uint j = _e4.second;
+    if (!((j <= (i_8 + 1u)))) {
+        const uint _e12 = light_bvh_count(nodes_7);
+        local_17 = (j >= _e12);
     } else {
         local_17 = true;
     }
-    bool _e17 = local_17;
-    if (_e17) {
+    bool _e15 = local_17;
+    if (_e15) {
         return -1.0;
     }
-    const float _e21 = bvh_importance((i_7 + 1u), x_19, n_20);
-    const float _e22 = bvh_importance(j, x_19, n_20);
-    const float _e23 = bvh_first_prob(_e21, _e22);
-    return _e23;
+    const float _e19 = bvh_importance(nodes_7, (i_8 + 1u), x_19, n_20);
+    const float _e20 = bvh_importance(nodes_7, j, x_19, n_20);
+    const float _e21 = bvh_first_prob(_e19, _e20);
+    return _e21;
 }
 
 BvhPick ConstructBvhPick(uint arg0, float arg1) {
@@ -1836,131 +1851,167 @@ BvhPick ConstructBvhPick(uint arg0, float arg1) {
     return ret;
 }
 
-BvhPick light_bvh_sample(float3 x_20, float3 n_21, float u_in)
+BvhPick bvh_pick_none()
 {
+    const BvhPick bvhpick = ConstructBvhPick(0u, 0.0);
+    return bvhpick;
+}
+
+BvhPick light_bvh_sample(uint nodes_8, float3 x_20, float3 n_21, float u_in)
+{
+    BvhPick pick = (BvhPick)0;
     float u_5 = (float)0;
-    uint i_8 = 0u;
+    uint i_9 = 0u;
     float pmf = 1.0;
     bool local_18 = (bool)0;
 
+    const BvhPick _e4 = bvh_pick_none();
+    pick = _e4;
     u_5 = u_in;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        uint _e9 = i_8;
-        GpuLightBvhNode node_1 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(_e9*48+0)), asfloat(light_bvh.Load(_e9*48+12)), asfloat(light_bvh.Load3(_e9*48+16)), asfloat(light_bvh.Load(_e9*48+28)), asfloat(light_bvh.Load(_e9*48+32)), asfloat(light_bvh.Load(_e9*48+36)), asuint(light_bvh.Load(_e9*48+40)), asuint(light_bvh.Load(_e9*48+44)));
-        if ((node_1.second == LIGHT_BVH_LEAF)) {
-            uint _e15 = i_8;
-            if (!((_e15 > 0u))) {
-                const float _e22 = bvh_importance(0u, x_20, n_21);
-                local_18 = (_e22 > 0.0);
-            } else {
-                local_18 = true;
+        uint _e11 = i_9;
+        const uint _e12 = light_bvh_count(nodes_8);
+        if ((_e11 < _e12)) {
+        } else {
+            break;
+        }
+        {
+            uint _e14 = i_9;
+            const GpuLightBvhNode _e15 = light_bvh_node(nodes_8, _e14);
+            if ((_e15.second == LIGHT_BVH_LEAF)) {
+                uint _e19 = i_9;
+                if (!((_e19 > 0u))) {
+                    const float _e26 = bvh_importance(nodes_8, 0u, x_20, n_21);
+                    local_18 = (_e26 > 0.0);
+                } else {
+                    local_18 = true;
+                }
+                bool _e30 = local_18;
+                if (_e30) {
+                    pick.light = _e15.light;
+                    float _e34 = pmf;
+                    pick.pmf = _e34;
+                }
+                BvhPick _e35 = pick;
+                const BvhPick bvhpick_1 = _e35;
+                return bvhpick_1;
             }
-            bool reaches = local_18;
-            float _e28 = pmf;
-            const BvhPick bvhpick = ConstructBvhPick(node_1.light, (reaches ? _e28 : 0.0));
-            return bvhpick;
+            uint _e36 = i_9;
+            const float _e37 = bvh_first(nodes_8, _e36, x_20, n_21);
+            if ((_e37 < 0.0)) {
+                BvhPick _e40 = pick;
+                const BvhPick bvhpick_2 = _e40;
+                return bvhpick_2;
+            }
+            float _e41 = u_5;
+            bool first_1 = (_e41 < _e37);
+            float _e43 = pmf;
+            pmf = (_e43 * (first_1 ? _e37 : (1.0 - _e37)));
+            float _e48 = u_5;
+            const float _e49 = bvh_remap_u(_e48, _e37, first_1);
+            u_5 = _e49;
+            uint _e51 = i_9;
+            i_9 = (first_1 ? (_e51 + 1u) : _e15.second);
         }
-        uint _e32 = i_8;
-        const float _e33 = bvh_first(_e32, x_20, n_21);
-        if ((_e33 < 0.0)) {
-            const BvhPick bvhpick_1 = ConstructBvhPick(0u, 0.0);
-            return bvhpick_1;
-        }
-        float _e39 = u_5;
-        bool first_1 = (_e39 < _e33);
-        float _e41 = pmf;
-        pmf = (_e41 * (first_1 ? _e33 : (1.0 - _e33)));
-        float _e46 = u_5;
-        const float _e47 = bvh_remap_u(_e46, _e33, first_1);
-        u_5 = _e47;
-        uint _e49 = i_8;
-        i_8 = (first_1 ? (_e49 + 1u) : node_1.second);
     }
-    const BvhPick bvhpick_2 = ConstructBvhPick(0u, 0.0);
-    return bvhpick_2;
+    BvhPick _e55 = pick;
+    const BvhPick bvhpick_3 = _e55;
+    return bvhpick_3;
 }
 
-float light_bvh_pmf(uint li_2, float3 x_21, float3 n_22)
+float light_bvh_pmf(uint nodes_9, uint leaf, float3 x_21, float3 n_22)
 {
-    uint i_9 = 0u;
+    uint i_10 = 0u;
     float pmf_1 = 1.0;
     bool local_19 = (bool)0;
     bool local_20 = (bool)0;
 
-    uint leaf = asuint(light_cones.Load(40+li_2*48));
-    if ((leaf >= ((NagaBufferLength(light_bvh) - 0) / 48))) {
+    const uint _e4 = light_bvh_count(nodes_9);
+    if ((leaf >= _e4)) {
         return 0.0;
     }
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e16 = i_9;
-        GpuLightBvhNode node_2 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(_e16*48+0)), asfloat(light_bvh.Load(_e16*48+12)), asfloat(light_bvh.Load3(_e16*48+16)), asfloat(light_bvh.Load(_e16*48+28)), asfloat(light_bvh.Load(_e16*48+32)), asfloat(light_bvh.Load(_e16*48+36)), asuint(light_bvh.Load(_e16*48+40)), asuint(light_bvh.Load(_e16*48+44)));
-        if ((node_2.second == LIGHT_BVH_LEAF)) {
-            uint _e22 = i_9;
-            if (!((_e22 > 0u))) {
-                const float _e29 = bvh_importance(0u, x_21, n_22);
-                local_19 = (_e29 > 0.0);
-            } else {
-                local_19 = true;
-            }
-            bool reaches_1 = local_19;
-            float _e34 = pmf_1;
-            uint _e35 = i_9;
-            if ((_e35 == leaf)) {
-                local_20 = reaches_1;
-            } else {
-                local_20 = false;
-            }
-            bool _e40 = local_20;
-            return (_e40 ? _e34 : 0.0);
+        uint _e11 = i_10;
+        const uint _e12 = light_bvh_count(nodes_9);
+        if ((_e11 < _e12)) {
+        } else {
+            break;
         }
-        uint _e43 = i_9;
-        const float _e44 = bvh_first(_e43, x_21, n_22);
-        if ((_e44 < 0.0)) {
-            return 0.0;
+        {
+            uint _e14 = i_10;
+            const GpuLightBvhNode _e15 = light_bvh_node(nodes_9, _e14);
+            if ((_e15.second == LIGHT_BVH_LEAF)) {
+                uint _e19 = i_10;
+                if ((_e19 == leaf)) {
+                    uint _e23 = i_10;
+                    if (!((_e23 > 0u))) {
+                        const float _e30 = bvh_importance(nodes_9, 0u, x_21, n_22);
+                        local_20 = (_e30 > 0.0);
+                    } else {
+                        local_20 = true;
+                    }
+                    bool _e34 = local_20;
+                    local_19 = _e34;
+                } else {
+                    local_19 = false;
+                }
+                bool _e36 = local_19;
+                if (_e36) {
+                    float _e37 = pmf_1;
+                    return _e37;
+                }
+                return 0.0;
+            }
+            uint _e39 = i_10;
+            const float _e40 = bvh_first(nodes_9, _e39, x_21, n_22);
+            if ((_e40 < 0.0)) {
+                return 0.0;
+            }
+            bool first_2 = (leaf < _e15.second);
+            float _e46 = pmf_1;
+            pmf_1 = (_e46 * (first_2 ? _e40 : (1.0 - _e40)));
+            uint _e52 = i_10;
+            i_10 = (first_2 ? (_e52 + 1u) : _e15.second);
         }
-        bool first_2 = (leaf < node_2.second);
-        float _e50 = pmf_1;
-        pmf_1 = (_e50 * (first_2 ? _e44 : (1.0 - _e44)));
-        uint _e56 = i_9;
-        i_9 = (first_2 ? (_e56 + 1u) : node_2.second);
     }
     return 0.0;
 }
 
-float select_pdf(uint li_3, float3 x_22, float3 n_23, uint nee, bool in_range_2)
+float select_pdf(uint li_2, float3 x_22, float3 n_23, uint nee, bool in_range_2)
 {
-    const float _e5 = light_bvh_pmf(li_3, x_22, n_23);
-    return _e5;
+    uint _e9 = asuint(light_cones.Load(40+li_2*48));
+    const float _e10 = light_bvh_pmf(BVH, _e9, x_22, n_23);
+    return _e10;
 }
 
-float light_pdf(uint li_4, float3 x_23, float3 n_24, float3 y_3, uint nee_1, bool in_range_3)
+float light_pdf(uint li_3, float3 x_23, float3 n_24, float3 y_3, uint nee_1, bool in_range_3)
 {
-    GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
+    GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
     float3 v_13 = (x_23 - y_3);
     float d2_15 = dot(v_13, v_13);
     const float3 _e11 = light_normal(l_5);
     float cos_y_1 = ((d2_15 > 0.0) ? dot(_e11, (v_13 / (sqrt(d2_15)).xxx)) : 0.0);
-    const float _e20 = select_pdf(li_4, x_23, n_24, nee_1, in_range_3);
-    float _e23 = asfloat(rt2_7.Load(li_4*4));
+    const float _e20 = select_pdf(li_3, x_23, n_24, nee_1, in_range_3);
+    float _e23 = asfloat(rt2_7.Load(li_3*4));
     const float _e24 = light_area(l_5);
     const float _e25 = light_strategy_pdf(_e20, _e23, d2_15, _e24, cos_y_1);
     return _e25;
 }
 
-float3 shade_pick(uint li_5, float3 x_24, float3 n_25, float3 ng_3, float w_10, uint nee_2, float u1_4, float u2_4)
+float3 shade_pick(uint li_4, float3 x_24, float3 n_25, float3 ng_3, float w_10, uint nee_2, float u1_4, float u2_4)
 {
     float mis = 1.0;
     bool local_21 = (bool)0;
 
     float _e10 = params.eps;
-    const Connection _e11 = connect(li_5, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10);
-    GpuLight _e16 = ConstructGpuLight(asfloat(lights.Load3(li_5*64+0)), asuint(lights.Load(li_5*64+12)), asfloat(lights.Load3(li_5*64+16)), asfloat(lights.Load(li_5*64+28)), asfloat(lights.Load3(li_5*64+32)), asfloat(lights.Load(li_5*64+44)), asfloat(lights.Load3(li_5*64+48)), asuint(lights.Load(li_5*64+60)));
+    const Connection _e11 = connect(li_4, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10);
+    GpuLight _e16 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
     const float _e17 = light_area(_e16);
     if ((_e17 > 0.0)) {
         local_21 = (_e11.cos_x > 0.0);
@@ -1969,7 +2020,7 @@ float3 shade_pick(uint li_5, float3 x_24, float3 n_25, float3 ng_3, float w_10, 
     }
     bool _e26 = local_21;
     if (_e26) {
-        const float _e29 = light_pdf(li_5, x_24, n_25, _e11.y, nee_2, true);
+        const float _e29 = light_pdf(li_4, x_24, n_25, _e11.y, nee_2, true);
         const float _e31 = cosine_pdf(_e11.cos_x);
         const float _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -1997,14 +2048,14 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint h = (uint)0;
     float3 sum = (0.0).xxx;
 
-    uint i_10 = gid.x;
+    uint i_11 = gid.x;
     uint _e4 = params.point_count;
-    if ((i_10 >= _e4)) {
+    if ((i_11 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_10*64+0)), asuint(vertices_.Load(i_10*64+12)), asfloat(vertices_.Load3(i_10*64+16)), asfloat(vertices_.Load(i_10*64+28)), asfloat(vertices_.Load3(i_10*64+32)), asfloat(vertices_.Load(i_10*64+44)), asfloat(vertices_.Load3(i_10*64+48)), asfloat(vertices_.Load(i_10*64+60)));
+    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_11*64+0)), asuint(vertices_.Load(i_11*64+12)), asfloat(vertices_.Load3(i_11*64+16)), asfloat(vertices_.Load(i_11*64+28)), asfloat(vertices_.Load3(i_11*64+32)), asfloat(vertices_.Load(i_11*64+44)), asfloat(vertices_.Load3(i_11*64+48)), asfloat(vertices_.Load(i_11*64+60)));
     if ((vtx.alive == 0u)) {
-        candidates.Store(i_10*4, asuint(0u));
+        candidates.Store(i_11*4, asuint(0u));
         return;
     }
     float3 x_25 = vtx.position;
@@ -2012,38 +2063,38 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 ng_4 = vtx.gnormal;
     uint _e20 = params.seed;
     uint _e23 = params.frame;
-    const uint _e24 = point_stream(_e20, i_10, _e23);
+    const uint _e24 = point_stream(_e20, i_11, _e23);
     const uint _e25 = pick_stream(_e24);
     h = _e25;
-    candidates.Store(i_10*4, asuint(0u));
+    candidates.Store(i_11*4, asuint(0u));
     uint _e33 = h;
     const uint _e34 = pcg_hash(_e33);
     h = _e34;
     uint _e35 = h;
     const float _e36 = xi_from_bits(_e35);
-    const BvhPick _e37 = light_bvh_sample(x_25, n_29, _e36);
-    uint li_6 = _e37.light;
-    float pmf_2 = _e37.pmf;
-    uint _e40 = h;
-    const uint _e41 = pcg_hash(_e40);
-    h = _e41;
-    uint _e42 = h;
-    const float _e43 = xi_from_bits(_e42);
-    uint _e44 = h;
-    const uint _e45 = pcg_hash(_e44);
-    h = _e45;
-    uint _e46 = h;
-    const float _e47 = xi_from_bits(_e46);
+    const BvhPick _e38 = light_bvh_sample(BVH, x_25, n_29, _e36);
+    uint li_5 = _e38.light;
+    float pmf_2 = _e38.pmf;
+    uint _e41 = h;
+    const uint _e42 = pcg_hash(_e41);
+    h = _e42;
+    uint _e43 = h;
+    const float _e44 = xi_from_bits(_e43);
+    uint _e45 = h;
+    const uint _e46 = pcg_hash(_e45);
+    h = _e46;
+    uint _e47 = h;
+    const float _e48 = xi_from_bits(_e47);
     if ((pmf_2 > 0.0)) {
-        const float3 _e53 = shade_pick(li_6, x_25, n_29, ng_4, (1.0 / pmf_2), 0u, _e43, _e47);
-        sum = _e53;
+        const float3 _e54 = shade_pick(li_5, x_25, n_29, ng_4, (1.0 / pmf_2), 0u, _e44, _e48);
+        sum = _e54;
     }
-    float3 _e55 = sum;
-    float3 add = (vtx.weight * _e55);
-    const bool _e57 = finite3_(add);
-    if (_e57) {
-        float4 _e60 = asfloat(radiance.Load4(i_10*16));
-        radiance.Store4(i_10*16, asuint((_e60 + float4(add, 0.0))));
+    float3 _e56 = sum;
+    float3 add = (vtx.weight * _e56);
+    const bool _e58 = finite3_(add);
+    if (_e58) {
+        float4 _e61 = asfloat(radiance.Load4(i_11*16));
+        radiance.Store4(i_11*16, asuint((_e61 + float4(add, 0.0))));
         return;
     } else {
         return;

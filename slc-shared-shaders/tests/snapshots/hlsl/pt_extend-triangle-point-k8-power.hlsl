@@ -20,17 +20,6 @@ struct GpuLightCone {
     uint pad;
 };
 
-struct GpuLightBvhNode {
-    float3 center_;
-    float radius;
-    float3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint second;
-    uint light;
-};
-
 struct GpuGeoNode {
     float3 bmin;
     uint first;
@@ -199,6 +188,17 @@ struct BshNode {
     uint pad;
 };
 
+struct GpuLightBvhNode {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
+};
+
 struct GeoHit {
     float t;
     uint tri;
@@ -238,6 +238,7 @@ static const float COVER_WEIGHT = 0.1;
 static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
 static const uint K = 8u;
+static const uint BVH = 0u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
 ByteAddressBuffer geo_nodes : register(t5);
@@ -1621,31 +1622,45 @@ GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, f
     return ret;
 }
 
-float bvh_importance(uint i_3, float3 x_15, float3 n_18)
+GpuLightBvhNode light_bvh_node(uint nodes, uint i_3)
 {
-    GpuLightBvhNode b_10 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_3*48+0)), asfloat(light_bvh.Load(i_3*48+12)), asfloat(light_bvh.Load3(i_3*48+16)), asfloat(light_bvh.Load(i_3*48+28)), asfloat(light_bvh.Load(i_3*48+32)), asfloat(light_bvh.Load(i_3*48+36)), asuint(light_bvh.Load(i_3*48+40)), asuint(light_bvh.Load(i_3*48+44)));
-    const float _e12 = light_importance(b_10.center_, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_15, n_18);
-    return _e12;
+    GpuLightBvhNode _e4 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_3*48+0)), asfloat(light_bvh.Load(i_3*48+12)), asfloat(light_bvh.Load3(i_3*48+16)), asfloat(light_bvh.Load(i_3*48+28)), asfloat(light_bvh.Load(i_3*48+32)), asfloat(light_bvh.Load(i_3*48+36)), asuint(light_bvh.Load(i_3*48+40)), asuint(light_bvh.Load(i_3*48+44)));
+    const GpuLightBvhNode gpulightbvhnode = _e4;
+    return gpulightbvhnode;
 }
 
-float bvh_first(uint i_4, float3 x_16, float3 n_19)
+uint light_bvh_count(uint nodes_1)
+{
+    return ((NagaBufferLength(light_bvh) - 0) / 48);
+}
+
+float bvh_importance(uint nodes_2, uint i_4, float3 x_15, float3 n_18)
+{
+    const GpuLightBvhNode _e4 = light_bvh_node(nodes_2, i_4);
+    const float _e11 = light_importance(_e4.center_, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_15, n_18);
+    return _e11;
+}
+
+float bvh_first(uint nodes_3, uint i_5, float3 x_16, float3 n_19)
 {
     bool local_19 = (bool)0;
 
-    uint j = asuint(light_bvh.Load(40+i_4*48));
-    if (!((j <= (i_4 + 1u)))) {
-        local_19 = (j >= ((NagaBufferLength(light_bvh) - 0) / 48));
+    const GpuLightBvhNode _e4 = light_bvh_node(nodes_3, i_5);
+    uint j = _e4.second;
+    if (!((j <= (i_5 + 1u)))) {
+        const uint _e12 = light_bvh_count(nodes_3);
+        local_19 = (j >= _e12);
     } else {
         local_19 = true;
     }
-    bool _e17 = local_19;
-    if (_e17) {
+    bool _e15 = local_19;
+    if (_e15) {
         return -1.0;
     }
-    const float _e21 = bvh_importance((i_4 + 1u), x_16, n_19);
-    const float _e22 = bvh_importance(j, x_16, n_19);
-    const float _e23 = bvh_first_prob(_e21, _e22);
-    return _e23;
+    const float _e19 = bvh_importance(nodes_3, (i_5 + 1u), x_16, n_19);
+    const float _e20 = bvh_importance(nodes_3, j, x_16, n_19);
+    const float _e21 = bvh_first_prob(_e19, _e20);
+    return _e21;
 }
 
 BvhPick ConstructBvhPick(uint arg0, float arg1) {
@@ -1655,104 +1670,139 @@ BvhPick ConstructBvhPick(uint arg0, float arg1) {
     return ret;
 }
 
-BvhPick light_bvh_sample(float3 x_17, float3 n_20, float u_in)
+BvhPick bvh_pick_none()
 {
+    const BvhPick bvhpick = ConstructBvhPick(0u, 0.0);
+    return bvhpick;
+}
+
+BvhPick light_bvh_sample(uint nodes_4, float3 x_17, float3 n_20, float u_in)
+{
+    BvhPick pick = (BvhPick)0;
     float u_5 = (float)0;
-    uint i_5 = 0u;
+    uint i_6 = 0u;
     float pmf = 1.0;
     bool local_20 = (bool)0;
 
+    const BvhPick _e4 = bvh_pick_none();
+    pick = _e4;
     u_5 = u_in;
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e9 = i_5;
-        GpuLightBvhNode node_1 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(_e9*48+0)), asfloat(light_bvh.Load(_e9*48+12)), asfloat(light_bvh.Load3(_e9*48+16)), asfloat(light_bvh.Load(_e9*48+28)), asfloat(light_bvh.Load(_e9*48+32)), asfloat(light_bvh.Load(_e9*48+36)), asuint(light_bvh.Load(_e9*48+40)), asuint(light_bvh.Load(_e9*48+44)));
-        if ((node_1.second == LIGHT_BVH_LEAF)) {
-            uint _e15 = i_5;
-            if (!((_e15 > 0u))) {
-                const float _e22 = bvh_importance(0u, x_17, n_20);
-                local_20 = (_e22 > 0.0);
-            } else {
-                local_20 = true;
+        uint _e11 = i_6;
+        const uint _e12 = light_bvh_count(nodes_4);
+        if ((_e11 < _e12)) {
+        } else {
+            break;
+        }
+        {
+            uint _e14 = i_6;
+            const GpuLightBvhNode _e15 = light_bvh_node(nodes_4, _e14);
+            if ((_e15.second == LIGHT_BVH_LEAF)) {
+                uint _e19 = i_6;
+                if (!((_e19 > 0u))) {
+                    const float _e26 = bvh_importance(nodes_4, 0u, x_17, n_20);
+                    local_20 = (_e26 > 0.0);
+                } else {
+                    local_20 = true;
+                }
+                bool _e30 = local_20;
+                if (_e30) {
+                    pick.light = _e15.light;
+                    float _e34 = pmf;
+                    pick.pmf = _e34;
+                }
+                BvhPick _e35 = pick;
+                const BvhPick bvhpick_1 = _e35;
+                return bvhpick_1;
             }
-            bool reaches = local_20;
-            float _e28 = pmf;
-            const BvhPick bvhpick = ConstructBvhPick(node_1.light, (reaches ? _e28 : 0.0));
-            return bvhpick;
+            uint _e36 = i_6;
+            const float _e37 = bvh_first(nodes_4, _e36, x_17, n_20);
+            if ((_e37 < 0.0)) {
+                BvhPick _e40 = pick;
+                const BvhPick bvhpick_2 = _e40;
+                return bvhpick_2;
+            }
+            float _e41 = u_5;
+            bool first_1 = (_e41 < _e37);
+            float _e43 = pmf;
+            pmf = (_e43 * (first_1 ? _e37 : (1.0 - _e37)));
+            float _e48 = u_5;
+            const float _e49 = bvh_remap_u(_e48, _e37, first_1);
+            u_5 = _e49;
+            uint _e51 = i_6;
+            i_6 = (first_1 ? (_e51 + 1u) : _e15.second);
         }
-        uint _e32 = i_5;
-        const float _e33 = bvh_first(_e32, x_17, n_20);
-        if ((_e33 < 0.0)) {
-            const BvhPick bvhpick_1 = ConstructBvhPick(0u, 0.0);
-            return bvhpick_1;
-        }
-        float _e39 = u_5;
-        bool first_1 = (_e39 < _e33);
-        float _e41 = pmf;
-        pmf = (_e41 * (first_1 ? _e33 : (1.0 - _e33)));
-        float _e46 = u_5;
-        const float _e47 = bvh_remap_u(_e46, _e33, first_1);
-        u_5 = _e47;
-        uint _e49 = i_5;
-        i_5 = (first_1 ? (_e49 + 1u) : node_1.second);
     }
-    const BvhPick bvhpick_2 = ConstructBvhPick(0u, 0.0);
-    return bvhpick_2;
+    BvhPick _e55 = pick;
+    const BvhPick bvhpick_3 = _e55;
+    return bvhpick_3;
 }
 
-float light_bvh_pmf(uint li_1, float3 x_18, float3 n_21)
+float light_bvh_pmf(uint nodes_5, uint leaf, float3 x_18, float3 n_21)
 {
-    uint i_6 = 0u;
+    uint i_7 = 0u;
     float pmf_1 = 1.0;
     bool local_21 = (bool)0;
     bool local_22 = (bool)0;
 
-    uint leaf = asuint(light_cones.Load(40+li_1*48));
-    if ((leaf >= ((NagaBufferLength(light_bvh) - 0) / 48))) {
+    const uint _e4 = light_bvh_count(nodes_5);
+    if ((leaf >= _e4)) {
         return 0.0;
     }
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        uint _e16 = i_6;
-        GpuLightBvhNode node_2 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(_e16*48+0)), asfloat(light_bvh.Load(_e16*48+12)), asfloat(light_bvh.Load3(_e16*48+16)), asfloat(light_bvh.Load(_e16*48+28)), asfloat(light_bvh.Load(_e16*48+32)), asfloat(light_bvh.Load(_e16*48+36)), asuint(light_bvh.Load(_e16*48+40)), asuint(light_bvh.Load(_e16*48+44)));
-        if ((node_2.second == LIGHT_BVH_LEAF)) {
-            uint _e22 = i_6;
-            if (!((_e22 > 0u))) {
-                const float _e29 = bvh_importance(0u, x_18, n_21);
-                local_21 = (_e29 > 0.0);
-            } else {
-                local_21 = true;
-            }
-            bool reaches_1 = local_21;
-            float _e34 = pmf_1;
-            uint _e35 = i_6;
-            if ((_e35 == leaf)) {
-                local_22 = reaches_1;
-            } else {
-                local_22 = false;
-            }
-            bool _e40 = local_22;
-            return (_e40 ? _e34 : 0.0);
+        uint _e11 = i_7;
+        const uint _e12 = light_bvh_count(nodes_5);
+        if ((_e11 < _e12)) {
+        } else {
+            break;
         }
-        uint _e43 = i_6;
-        const float _e44 = bvh_first(_e43, x_18, n_21);
-        if ((_e44 < 0.0)) {
-            return 0.0;
+        {
+            uint _e14 = i_7;
+            const GpuLightBvhNode _e15 = light_bvh_node(nodes_5, _e14);
+            if ((_e15.second == LIGHT_BVH_LEAF)) {
+                uint _e19 = i_7;
+                if ((_e19 == leaf)) {
+                    uint _e23 = i_7;
+                    if (!((_e23 > 0u))) {
+                        const float _e30 = bvh_importance(nodes_5, 0u, x_18, n_21);
+                        local_22 = (_e30 > 0.0);
+                    } else {
+                        local_22 = true;
+                    }
+                    bool _e34 = local_22;
+                    local_21 = _e34;
+                } else {
+                    local_21 = false;
+                }
+                bool _e36 = local_21;
+                if (_e36) {
+                    float _e37 = pmf_1;
+                    return _e37;
+                }
+                return 0.0;
+            }
+            uint _e39 = i_7;
+            const float _e40 = bvh_first(nodes_5, _e39, x_18, n_21);
+            if ((_e40 < 0.0)) {
+                return 0.0;
+            }
+            bool first_2 = (leaf < _e15.second);
+            float _e46 = pmf_1;
+            pmf_1 = (_e46 * (first_2 ? _e40 : (1.0 - _e40)));
+            uint _e52 = i_7;
+            i_7 = (first_2 ? (_e52 + 1u) : _e15.second);
         }
-        bool first_2 = (leaf < node_2.second);
-        float _e50 = pmf_1;
-        pmf_1 = (_e50 * (first_2 ? _e44 : (1.0 - _e44)));
-        uint _e56 = i_6;
-        i_6 = (first_2 ? (_e56 + 1u) : node_2.second);
     }
     return 0.0;
 }
 
-float select_pdf(uint li_2, float3 x_19, float3 n_22, uint nee, bool in_range_2)
+float select_pdf(uint li_1, float3 x_19, float3 n_22, uint nee, bool in_range_2)
 {
     const float _e6 = reservoir_select_pdf(nee, in_range_2, K);
     return _e6;
@@ -1771,15 +1821,15 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-float light_pdf(uint li_3, float3 x_20, float3 n_23, float3 y_3, uint nee_1, bool in_range_3)
+float light_pdf(uint li_2, float3 x_20, float3 n_23, float3 y_3, uint nee_1, bool in_range_3)
 {
-    GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
+    GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
     float3 v_13 = (x_20 - y_3);
     float d2_14 = dot(v_13, v_13);
     const float3 _e11 = light_normal(l_4);
     float cos_y_1 = ((d2_14 > 0.0) ? dot(_e11, (v_13 / (sqrt(d2_14)).xxx)) : 0.0);
-    const float _e20 = select_pdf(li_3, x_20, n_23, nee_1, in_range_3);
-    float _e23 = asfloat(rt2_7.Load(li_3*4));
+    const float _e20 = select_pdf(li_2, x_20, n_23, nee_1, in_range_3);
+    float _e23 = asfloat(rt2_7.Load(li_2*4));
     const float _e24 = light_area(l_4);
     const float _e25 = light_strategy_pdf(_e20, _e23, d2_14, _e24, cos_y_1);
     return _e25;
@@ -1833,24 +1883,24 @@ void main(uint3 gid : SV_DispatchThreadID)
     bool local_1 = (bool)0;
     bool local_2 = (bool)0;
 
-    uint i_7 = gid.x;
+    uint i_8 = gid.x;
     uint _e4 = params.width;
     uint _e7 = params.height;
-    if ((i_7 >= (_e4 * _e7))) {
+    if ((i_8 >= (_e4 * _e7))) {
         return;
     }
     uint _e13 = params.depth;
     if ((_e13 == 0u)) {
         uint _e18 = params.seed;
         uint _e21 = params.pass_index;
-        const uint _e22 = path_stream(_e18, i_7, _e21);
+        const uint _e22 = path_stream(_e18, i_8, _e21);
         h = _e22;
         uint _e26 = params.width;
         const float _e28 = next_uniform(h);
-        const float _e29 = jittered_pixel(naga_mod(i_7, _e26), _e28);
+        const float _e29 = jittered_pixel(naga_mod(i_8, _e26), _e28);
         uint _e32 = params.width;
         const float _e34 = next_uniform(h);
-        const float _e35 = jittered_pixel(naga_div(i_7, _e32), _e34);
+        const float _e35 = jittered_pixel(naga_div(i_8, _e32), _e34);
         float3 _e39 = params.cam_pos;
         st.origin = _e39;
         float3 _e43 = params.cam_forward;
@@ -1868,7 +1918,7 @@ void main(uint3 gid : SV_DispatchThreadID)
         float3 _e71 = params.cam_pos;
         st.prev = _e71;
     } else {
-        GpuPathState _e74 = ConstructGpuPathState(asfloat(paths.Load3(i_7*80+0)), asuint(paths.Load(i_7*80+12)), asfloat(paths.Load3(i_7*80+16)), asuint(paths.Load(i_7*80+28)), asfloat(paths.Load3(i_7*80+32)), asfloat(paths.Load(i_7*80+44)), asfloat(paths.Load3(i_7*80+48)), asuint(paths.Load(i_7*80+60)), asfloat(paths.Load3(i_7*80+64)), asuint(paths.Load(i_7*80+76)));
+        GpuPathState _e74 = ConstructGpuPathState(asfloat(paths.Load3(i_8*80+0)), asuint(paths.Load(i_8*80+12)), asfloat(paths.Load3(i_8*80+16)), asuint(paths.Load(i_8*80+28)), asfloat(paths.Load3(i_8*80+32)), asfloat(paths.Load(i_8*80+44)), asfloat(paths.Load3(i_8*80+48)), asuint(paths.Load(i_8*80+60)), asfloat(paths.Load3(i_8*80+64)), asuint(paths.Load(i_8*80+76)));
         st = _e74;
     }
     v.alive = 0u;
@@ -1877,14 +1927,14 @@ void main(uint3 gid : SV_DispatchThreadID)
         GpuPathVertex _e84 = v;
         {
             GpuPathVertex _value3 = _e84;
-            vertices_.Store3(i_7*64+0, asuint(_value3.position));
-            vertices_.Store(i_7*64+12, asuint(_value3.alive));
-            vertices_.Store3(i_7*64+16, asuint(_value3.normal));
-            vertices_.Store(i_7*64+28, asuint(_value3.pad));
-            vertices_.Store3(i_7*64+32, asuint(_value3.weight));
-            vertices_.Store(i_7*64+44, asuint(_value3.pad1_));
-            vertices_.Store3(i_7*64+48, asuint(_value3.gnormal));
-            vertices_.Store(i_7*64+60, asuint(_value3.pad2_));
+            vertices_.Store3(i_8*64+0, asuint(_value3.position));
+            vertices_.Store(i_8*64+12, asuint(_value3.alive));
+            vertices_.Store3(i_8*64+16, asuint(_value3.normal));
+            vertices_.Store(i_8*64+28, asuint(_value3.pad));
+            vertices_.Store3(i_8*64+32, asuint(_value3.weight));
+            vertices_.Store(i_8*64+44, asuint(_value3.pad1_));
+            vertices_.Store3(i_8*64+48, asuint(_value3.gnormal));
+            vertices_.Store(i_8*64+60, asuint(_value3.pad2_));
         }
         return;
     }
@@ -1897,28 +1947,28 @@ void main(uint3 gid : SV_DispatchThreadID)
         GpuPathState _e102 = st;
         {
             GpuPathState _value3 = _e102;
-            paths.Store3(i_7*80+0, asuint(_value3.origin));
-            paths.Store(i_7*80+12, asuint(_value3.alive));
-            paths.Store3(i_7*80+16, asuint(_value3.dir));
-            paths.Store(i_7*80+28, asuint(_value3.rng));
-            paths.Store3(i_7*80+32, asuint(_value3.beta));
-            paths.Store(i_7*80+44, asuint(_value3.pdf_bsdf));
-            paths.Store3(i_7*80+48, asuint(_value3.prev));
-            paths.Store(i_7*80+60, asuint(_value3.pad));
-            paths.Store3(i_7*80+64, asuint(_value3.prev_normal));
-            paths.Store(i_7*80+76, asuint(_value3.pad2_));
+            paths.Store3(i_8*80+0, asuint(_value3.origin));
+            paths.Store(i_8*80+12, asuint(_value3.alive));
+            paths.Store3(i_8*80+16, asuint(_value3.dir));
+            paths.Store(i_8*80+28, asuint(_value3.rng));
+            paths.Store3(i_8*80+32, asuint(_value3.beta));
+            paths.Store(i_8*80+44, asuint(_value3.pdf_bsdf));
+            paths.Store3(i_8*80+48, asuint(_value3.prev));
+            paths.Store(i_8*80+60, asuint(_value3.pad));
+            paths.Store3(i_8*80+64, asuint(_value3.prev_normal));
+            paths.Store(i_8*80+76, asuint(_value3.pad2_));
         }
         GpuPathVertex _e105 = v;
         {
             GpuPathVertex _value3 = _e105;
-            vertices_.Store3(i_7*64+0, asuint(_value3.position));
-            vertices_.Store(i_7*64+12, asuint(_value3.alive));
-            vertices_.Store3(i_7*64+16, asuint(_value3.normal));
-            vertices_.Store(i_7*64+28, asuint(_value3.pad));
-            vertices_.Store3(i_7*64+32, asuint(_value3.weight));
-            vertices_.Store(i_7*64+44, asuint(_value3.pad1_));
-            vertices_.Store3(i_7*64+48, asuint(_value3.gnormal));
-            vertices_.Store(i_7*64+60, asuint(_value3.pad2_));
+            vertices_.Store3(i_8*64+0, asuint(_value3.position));
+            vertices_.Store(i_8*64+12, asuint(_value3.alive));
+            vertices_.Store3(i_8*64+16, asuint(_value3.normal));
+            vertices_.Store(i_8*64+28, asuint(_value3.pad));
+            vertices_.Store3(i_8*64+32, asuint(_value3.weight));
+            vertices_.Store(i_8*64+44, asuint(_value3.pad1_));
+            vertices_.Store3(i_8*64+48, asuint(_value3.gnormal));
+            vertices_.Store(i_8*64+60, asuint(_value3.pad2_));
         }
         return;
     }
@@ -1929,10 +1979,10 @@ void main(uint3 gid : SV_DispatchThreadID)
     const float3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     float3 _e122 = st.dir;
     const float3 _e123 = face_against(_e120, _e122);
-    uint b_11 = (_e94.tri * 3u);
-    float4 _e129 = asfloat(geo_normals.Load4(b_11*16));
-    float4 _e135 = asfloat(geo_normals.Load4((b_11 + 1u)*16));
-    float4 _e141 = asfloat(geo_normals.Load4((b_11 + 2u)*16));
+    uint b_10 = (_e94.tri * 3u);
+    float4 _e129 = asfloat(geo_normals.Load4(b_10*16));
+    float4 _e135 = asfloat(geo_normals.Load4((b_10 + 1u)*16));
+    float4 _e141 = asfloat(geo_normals.Load4((b_10 + 2u)*16));
     const float3 _e146 = barycentric(x_21, tri.v0_, tri.v1_, tri.v2_);
     const float3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if ((tri.light != NO_LIGHT)) {
@@ -1953,7 +2003,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             float _e177 = st.pdf_bsdf;
             float3 _e180 = st.prev;
             float3 _e182 = st.prev_normal;
-            uint _e185 = asuint(candidates.Load(i_7*4));
+            uint _e185 = asuint(candidates.Load(i_8*4));
             const float _e186 = light_pdf(tri.light, _e180, _e182, x_21, _e185, _e175);
             const float _e187 = mis_weight(_e177, _e186);
             w = _e187;
@@ -1964,8 +2014,8 @@ void main(uint3 gid : SV_DispatchThreadID)
         float3 add = ((_e189 * _e194) * _e196);
         const bool _e198 = finite3_(add);
         if (_e198) {
-            float4 _e201 = asfloat(radiance.Load4(i_7*16));
-            radiance.Store4(i_7*16, asuint((_e201 + float4(add, 0.0))));
+            float4 _e201 = asfloat(radiance.Load4(i_8*16));
+            radiance.Store4(i_8*16, asuint((_e201 + float4(add, 0.0))));
         }
     }
     float4 _e208 = asfloat(albedo_1.Load4(tri.material*16));
@@ -1980,14 +2030,14 @@ void main(uint3 gid : SV_DispatchThreadID)
     GpuPathVertex _e222 = v;
     {
         GpuPathVertex _value2 = _e222;
-        vertices_.Store3(i_7*64+0, asuint(_value2.position));
-        vertices_.Store(i_7*64+12, asuint(_value2.alive));
-        vertices_.Store3(i_7*64+16, asuint(_value2.normal));
-        vertices_.Store(i_7*64+28, asuint(_value2.pad));
-        vertices_.Store3(i_7*64+32, asuint(_value2.weight));
-        vertices_.Store(i_7*64+44, asuint(_value2.pad1_));
-        vertices_.Store3(i_7*64+48, asuint(_value2.gnormal));
-        vertices_.Store(i_7*64+60, asuint(_value2.pad2_));
+        vertices_.Store3(i_8*64+0, asuint(_value2.position));
+        vertices_.Store(i_8*64+12, asuint(_value2.alive));
+        vertices_.Store3(i_8*64+16, asuint(_value2.normal));
+        vertices_.Store(i_8*64+28, asuint(_value2.pad));
+        vertices_.Store3(i_8*64+32, asuint(_value2.weight));
+        vertices_.Store(i_8*64+44, asuint(_value2.pad1_));
+        vertices_.Store3(i_8*64+48, asuint(_value2.gnormal));
+        vertices_.Store(i_8*64+60, asuint(_value2.pad2_));
     }
     uint _e224 = st.rng;
     rng = _e224;
@@ -2041,16 +2091,16 @@ void main(uint3 gid : SV_DispatchThreadID)
     GpuPathState _e289 = st;
     {
         GpuPathState _value2 = _e289;
-        paths.Store3(i_7*80+0, asuint(_value2.origin));
-        paths.Store(i_7*80+12, asuint(_value2.alive));
-        paths.Store3(i_7*80+16, asuint(_value2.dir));
-        paths.Store(i_7*80+28, asuint(_value2.rng));
-        paths.Store3(i_7*80+32, asuint(_value2.beta));
-        paths.Store(i_7*80+44, asuint(_value2.pdf_bsdf));
-        paths.Store3(i_7*80+48, asuint(_value2.prev));
-        paths.Store(i_7*80+60, asuint(_value2.pad));
-        paths.Store3(i_7*80+64, asuint(_value2.prev_normal));
-        paths.Store(i_7*80+76, asuint(_value2.pad2_));
+        paths.Store3(i_8*80+0, asuint(_value2.origin));
+        paths.Store(i_8*80+12, asuint(_value2.alive));
+        paths.Store3(i_8*80+16, asuint(_value2.dir));
+        paths.Store(i_8*80+28, asuint(_value2.rng));
+        paths.Store3(i_8*80+32, asuint(_value2.beta));
+        paths.Store(i_8*80+44, asuint(_value2.pdf_bsdf));
+        paths.Store3(i_8*80+48, asuint(_value2.prev));
+        paths.Store(i_8*80+60, asuint(_value2.pad));
+        paths.Store3(i_8*80+64, asuint(_value2.prev_normal));
+        paths.Store(i_8*80+76, asuint(_value2.pad2_));
     }
     return;
 }

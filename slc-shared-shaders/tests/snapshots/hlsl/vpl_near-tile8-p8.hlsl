@@ -20,17 +20,6 @@ struct GpuLightCone {
     uint pad;
 };
 
-struct GpuLightBvhNode {
-    float3 center_;
-    float radius;
-    float3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint second;
-    uint light;
-};
-
 struct GpuGeoNode {
     float3 bmin;
     uint first;
@@ -197,6 +186,17 @@ struct BshNode {
     uint next;
     uint light;
     uint pad;
+};
+
+struct GpuLightBvhNode {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
 };
 
 struct WorkgroupBox {

@@ -29,16 +29,6 @@ struct GpuLightCone {
     uint bvh_leaf;
     uint pad;
 };
-struct GpuLightBvhNode {
-    metal::packed_float3 center;
-    float radius;
-    metal::packed_float3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint second;
-    uint light;
-};
 struct GpuGeoNode {
     metal::packed_float3 bmin;
     uint first;
@@ -191,6 +181,16 @@ struct BshNode {
     uint next;
     uint light;
     uint pad;
+};
+struct GpuLightBvhNode {
+    metal::packed_float3 center;
+    float radius;
+    metal::packed_float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
 };
 typedef metal::float4 type_7[1];
 constant uint LIGHT_POINT = 0u;

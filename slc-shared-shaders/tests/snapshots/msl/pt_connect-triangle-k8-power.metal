@@ -40,16 +40,6 @@ struct GpuLightCone {
     uint bvh_leaf;
     uint pad;
 };
-struct GpuLightBvhNode {
-    metal::packed_float3 center;
-    float radius;
-    metal::packed_float3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint second;
-    uint light;
-};
 struct GpuGeoNode {
     metal::packed_float3 bmin;
     uint first;
@@ -203,6 +193,16 @@ struct BshNode {
     uint light;
     uint pad;
 };
+struct GpuLightBvhNode {
+    metal::packed_float3 center;
+    float radius;
+    metal::packed_float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
+};
 struct GeoHit {
     float t;
     uint tri;
@@ -230,6 +230,7 @@ typedef GpuLight type_11[1];
 typedef metal::float4 type_12[1];
 typedef GpuLightCone type_13[1];
 typedef GpuLightBvhNode type_14[1];
+typedef uint BvhNodes;
 struct BvhPick {
     uint light;
     float pmf;
@@ -266,6 +267,7 @@ constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
 constant uint K = 8u;
 constant BshNodes BSH = 0u;
+constant BvhNodes BVH = 0u;
 
 float at(
     Table tab,
@@ -2077,147 +2079,204 @@ float light_weight(
     return _e15;
 }
 
-float bvh_importance(
+GpuLightBvhNode light_bvh_node(
+    BvhNodes nodes_4,
     uint i_6,
+    device type_14 const& light_bvh,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLightBvhNode _e4 = light_bvh[i_6];
+    return _e4;
+}
+
+uint light_bvh_count(
+    BvhNodes nodes_5,
+    device type_14 const& light_bvh,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    return 1 + (_buffer_sizes.size9 - 0 - 48) / 48;
+}
+
+float bvh_importance(
+    BvhNodes nodes_6,
+    uint i_7,
     metal::float3 x_18,
     metal::float3 n_19,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightBvhNode b_10 = light_bvh[i_6];
-    float _e12 = light_importance(b_10.center, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_18, n_19);
-    return _e12;
+    GpuLightBvhNode _e4 = light_bvh_node(nodes_6, i_7, light_bvh, _buffer_sizes);
+    float _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_18, n_19);
+    return _e11;
 }
 
 float bvh_first(
-    uint i_7,
+    BvhNodes nodes_7,
+    uint i_8,
     metal::float3 x_19,
     metal::float3 n_20,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool local_17 = {};
-    uint j = light_bvh[i_7].second;
-    if (!((j <= (i_7 + 1u)))) {
-        local_17 = j >= (1 + (_buffer_sizes.size9 - 0 - 48) / 48);
+    GpuLightBvhNode _e4 = light_bvh_node(nodes_7, i_8, light_bvh, _buffer_sizes);
+    uint j = _e4.second;
+    if (!((j <= (i_8 + 1u)))) {
+        uint _e12 = light_bvh_count(nodes_7, light_bvh, _buffer_sizes);
+        local_17 = j >= _e12;
     } else {
         local_17 = true;
     }
-    bool _e17 = local_17;
-    if (_e17) {
+    bool _e15 = local_17;
+    if (_e15) {
         return -1.0;
     }
-    float _e21 = bvh_importance(i_7 + 1u, x_19, n_20, light_bvh, _buffer_sizes);
-    float _e22 = bvh_importance(j, x_19, n_20, light_bvh, _buffer_sizes);
-    float _e23 = bvh_first_prob(_e21, _e22);
-    return _e23;
+    float _e19 = bvh_importance(nodes_7, i_8 + 1u, x_19, n_20, light_bvh, _buffer_sizes);
+    float _e20 = bvh_importance(nodes_7, j, x_19, n_20, light_bvh, _buffer_sizes);
+    float _e21 = bvh_first_prob(_e19, _e20);
+    return _e21;
+}
+
+BvhPick bvh_pick_none(
+) {
+    return BvhPick {0u, 0.0};
 }
 
 BvhPick light_bvh_sample(
+    BvhNodes nodes_8,
     metal::float3 x_20,
     metal::float3 n_21,
     float u_in,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    BvhPick pick = {};
     float u_5 = {};
-    uint i_8 = 0u;
+    uint i_9 = 0u;
     float pmf = 1.0;
     bool local_18 = {};
+    BvhPick _e4 = bvh_pick_none();
+    pick = _e4;
     u_5 = u_in;
     uint2 loop_bound_5 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        uint _e9 = i_8;
-        GpuLightBvhNode node_1 = light_bvh[_e9];
-        if (node_1.second == LIGHT_BVH_LEAF) {
-            uint _e15 = i_8;
-            if (!((_e15 > 0u))) {
-                float _e22 = bvh_importance(0u, x_20, n_21, light_bvh, _buffer_sizes);
-                local_18 = _e22 > 0.0;
-            } else {
-                local_18 = true;
+        uint _e11 = i_9;
+        uint _e12 = light_bvh_count(nodes_8, light_bvh, _buffer_sizes);
+        if (_e11 < _e12) {
+        } else {
+            break;
+        }
+        {
+            uint _e14 = i_9;
+            GpuLightBvhNode _e15 = light_bvh_node(nodes_8, _e14, light_bvh, _buffer_sizes);
+            if (_e15.second == LIGHT_BVH_LEAF) {
+                uint _e19 = i_9;
+                if (!((_e19 > 0u))) {
+                    float _e26 = bvh_importance(nodes_8, 0u, x_20, n_21, light_bvh, _buffer_sizes);
+                    local_18 = _e26 > 0.0;
+                } else {
+                    local_18 = true;
+                }
+                bool _e30 = local_18;
+                if (_e30) {
+                    pick.light = _e15.light;
+                    float _e34 = pmf;
+                    pick.pmf = _e34;
+                }
+                BvhPick _e35 = pick;
+                return _e35;
             }
-            bool reaches = local_18;
-            float _e28 = pmf;
-            return BvhPick {node_1.light, reaches ? _e28 : 0.0};
+            uint _e36 = i_9;
+            float _e37 = bvh_first(nodes_8, _e36, x_20, n_21, light_bvh, _buffer_sizes);
+            if (_e37 < 0.0) {
+                BvhPick _e40 = pick;
+                return _e40;
+            }
+            float _e41 = u_5;
+            bool first_1 = _e41 < _e37;
+            float _e43 = pmf;
+            pmf = _e43 * (first_1 ? _e37 : (1.0 - _e37));
+            float _e48 = u_5;
+            float _e49 = bvh_remap_u(_e48, _e37, first_1);
+            u_5 = _e49;
+            uint _e51 = i_9;
+            i_9 = first_1 ? (_e51 + 1u) : _e15.second;
         }
-        uint _e32 = i_8;
-        float _e33 = bvh_first(_e32, x_20, n_21, light_bvh, _buffer_sizes);
-        if (_e33 < 0.0) {
-            return BvhPick {0u, 0.0};
-        }
-        float _e39 = u_5;
-        bool first_1 = _e39 < _e33;
-        float _e41 = pmf;
-        pmf = _e41 * (first_1 ? _e33 : (1.0 - _e33));
-        float _e46 = u_5;
-        float _e47 = bvh_remap_u(_e46, _e33, first_1);
-        u_5 = _e47;
-        uint _e49 = i_8;
-        i_8 = first_1 ? (_e49 + 1u) : node_1.second;
     }
-    return BvhPick {0u, 0.0};
+    BvhPick _e55 = pick;
+    return _e55;
 }
 
 float light_bvh_pmf(
-    uint li_2,
+    BvhNodes nodes_9,
+    uint leaf,
     metal::float3 x_21,
     metal::float3 n_22,
-    device type_13 const& light_cones,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_9 = 0u;
+    uint i_10 = 0u;
     float pmf_1 = 1.0;
     bool local_19 = {};
     bool local_20 = {};
-    uint leaf = light_cones[li_2].bvh_leaf;
-    if (leaf >= (1 + (_buffer_sizes.size9 - 0 - 48) / 48)) {
+    uint _e4 = light_bvh_count(nodes_9, light_bvh, _buffer_sizes);
+    if (leaf >= _e4) {
         return 0.0;
     }
     uint2 loop_bound_6 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e16 = i_9;
-        GpuLightBvhNode node_2 = light_bvh[_e16];
-        if (node_2.second == LIGHT_BVH_LEAF) {
-            uint _e22 = i_9;
-            if (!((_e22 > 0u))) {
-                float _e29 = bvh_importance(0u, x_21, n_22, light_bvh, _buffer_sizes);
-                local_19 = _e29 > 0.0;
-            } else {
-                local_19 = true;
-            }
-            bool reaches_1 = local_19;
-            float _e34 = pmf_1;
-            uint _e35 = i_9;
-            if (_e35 == leaf) {
-                local_20 = reaches_1;
-            } else {
-                local_20 = false;
-            }
-            bool _e40 = local_20;
-            return _e40 ? _e34 : 0.0;
+        uint _e11 = i_10;
+        uint _e12 = light_bvh_count(nodes_9, light_bvh, _buffer_sizes);
+        if (_e11 < _e12) {
+        } else {
+            break;
         }
-        uint _e43 = i_9;
-        float _e44 = bvh_first(_e43, x_21, n_22, light_bvh, _buffer_sizes);
-        if (_e44 < 0.0) {
-            return 0.0;
+        {
+            uint _e14 = i_10;
+            GpuLightBvhNode _e15 = light_bvh_node(nodes_9, _e14, light_bvh, _buffer_sizes);
+            if (_e15.second == LIGHT_BVH_LEAF) {
+                uint _e19 = i_10;
+                if (_e19 == leaf) {
+                    uint _e23 = i_10;
+                    if (!((_e23 > 0u))) {
+                        float _e30 = bvh_importance(nodes_9, 0u, x_21, n_22, light_bvh, _buffer_sizes);
+                        local_20 = _e30 > 0.0;
+                    } else {
+                        local_20 = true;
+                    }
+                    bool _e34 = local_20;
+                    local_19 = _e34;
+                } else {
+                    local_19 = false;
+                }
+                bool _e36 = local_19;
+                if (_e36) {
+                    float _e37 = pmf_1;
+                    return _e37;
+                }
+                return 0.0;
+            }
+            uint _e39 = i_10;
+            float _e40 = bvh_first(nodes_9, _e39, x_21, n_22, light_bvh, _buffer_sizes);
+            if (_e40 < 0.0) {
+                return 0.0;
+            }
+            bool first_2 = leaf < _e15.second;
+            float _e46 = pmf_1;
+            pmf_1 = _e46 * (first_2 ? _e40 : (1.0 - _e40));
+            uint _e52 = i_10;
+            i_10 = first_2 ? (_e52 + 1u) : _e15.second;
         }
-        bool first_2 = leaf < node_2.second;
-        float _e50 = pmf_1;
-        pmf_1 = _e50 * (first_2 ? _e44 : (1.0 - _e44));
-        uint _e56 = i_9;
-        i_9 = first_2 ? (_e56 + 1u) : node_2.second;
     }
     return 0.0;
 }
 
 float select_pdf(
-    uint li_3,
+    uint li_2,
     metal::float3 x_22,
     metal::float3 n_23,
     uint nee,
@@ -2228,7 +2287,7 @@ float select_pdf(
 }
 
 float light_pdf(
-    uint li_4,
+    uint li_3,
     metal::float3 x_23,
     metal::float3 n_24,
     metal::float3 y_3,
@@ -2238,20 +2297,20 @@ float light_pdf(
     device type_4 const& rt2_7,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight l_5 = lights[li_4];
+    GpuLight l_5 = lights[li_3];
     metal::float3 v_13 = x_23 - y_3;
     float d2_15 = metal::dot(v_13, v_13);
     metal::float3 _e11 = light_normal(l_5);
     float cos_y_1 = (d2_15 > 0.0) ? metal::dot(_e11, v_13 / metal::float3(metal::sqrt(d2_15))) : 0.0;
-    float _e20 = select_pdf(li_4, x_23, n_24, nee_1, in_range_3);
-    float _e23 = rt2_7[li_4];
+    float _e20 = select_pdf(li_3, x_23, n_24, nee_1, in_range_3);
+    float _e23 = rt2_7[li_3];
     float _e24 = light_area(l_5);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_15, _e24, cos_y_1);
     return _e25;
 }
 
 metal::float3 shade_pick(
-    uint li_5,
+    uint li_4,
     metal::float3 x_24,
     metal::float3 n_25,
     metal::float3 ng_3,
@@ -2270,8 +2329,8 @@ metal::float3 shade_pick(
     float mis = 1.0;
     bool local_21 = {};
     float _e10 = params.eps;
-    Connection _e11 = connect(li_5, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10, geo_nodes, geo_tris, lights, r2_6, rt2_7, _buffer_sizes);
-    GpuLight _e16 = lights[li_5];
+    Connection _e11 = connect(li_4, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10, geo_nodes, geo_tris, lights, r2_6, rt2_7, _buffer_sizes);
+    GpuLight _e16 = lights[li_4];
     float _e17 = light_area(_e16);
     if (_e17 > 0.0) {
         local_21 = _e11.cos_x > 0.0;
@@ -2280,7 +2339,7 @@ metal::float3 shade_pick(
     }
     bool _e26 = local_21;
     if (_e26) {
-        float _e29 = light_pdf(li_5, x_24, n_25, _e11.y, nee_2, true, lights, rt2_7, _buffer_sizes);
+        float _e29 = light_pdf(li_4, x_24, n_25, _e11.y, nee_2, true, lights, rt2_7, _buffer_sizes);
         float _e31 = cosine_pdf(_e11.cos_x);
         float _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -2308,14 +2367,14 @@ kernel void main_(
     uint h = {};
     metal::float3 sum = metal::float3(0.0);
     uint s = 0u;
-    uint i_10 = gid.x;
+    uint i_11 = gid.x;
     uint _e4 = params.point_count;
-    if (i_10 >= _e4) {
+    if (i_11 >= _e4) {
         return;
     }
-    GpuPathVertex vtx = vertices[i_10];
+    GpuPathVertex vtx = vertices[i_11];
     if (vtx.alive == 0u) {
-        candidates[i_10] = 0u;
+        candidates[i_11] = 0u;
         return;
     }
     metal::float3 x_25 = vtx.position;
@@ -2323,11 +2382,11 @@ kernel void main_(
     metal::float3 ng_4 = vtx.gnormal;
     uint _e20 = params.seed;
     uint _e23 = params.frame;
-    uint _e24 = point_stream(_e20, i_10, _e23);
+    uint _e24 = point_stream(_e20, i_11, _e23);
     uint _e25 = pick_stream(_e24);
     h = _e25;
     Picks _e30 = bsh_collect(x_25, _e24, bsh_nodes, _buffer_sizes);
-    candidates[i_10] = _e30.n;
+    candidates[i_11] = _e30.n;
     float _e36 = reservoir_weight(_e30.n, K);
     uint2 loop_bound_7 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -2365,8 +2424,8 @@ kernel void main_(
     metal::float3 add = vtx.weight * _e63;
     bool _e65 = finite3_(add);
     if (_e65) {
-        metal::float4 _e68 = radiance[i_10];
-        radiance[i_10] = _e68 + metal::float4(add, 0.0);
+        metal::float4 _e68 = radiance[i_11];
+        radiance[i_11] = _e68 + metal::float4(add, 0.0);
         return;
     } else {
         return;

@@ -43,16 +43,6 @@ struct GpuLightCone {
     uint bvh_leaf;
     uint pad;
 };
-struct GpuLightBvhNode {
-    metal::packed_float3 center;
-    float radius;
-    metal::packed_float3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint second;
-    uint light;
-};
 struct GpuGeoNode {
     metal::packed_float3 bmin;
     uint first;
@@ -206,6 +196,16 @@ struct BshNode {
     uint light;
     uint pad;
 };
+struct GpuLightBvhNode {
+    metal::packed_float3 center;
+    float radius;
+    metal::packed_float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
+};
 struct GeoHit {
     float t;
     uint tri;
@@ -218,6 +218,7 @@ struct type_8 {
 typedef metal::float4 type_9[1];
 typedef GpuLightCone type_10[1];
 typedef GpuLightBvhNode type_11[1];
+typedef uint BvhNodes;
 struct BvhPick {
     uint light;
     float pmf;
@@ -256,6 +257,7 @@ constant float COVER_WEIGHT = 0.1;
 constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
 constant uint K = 8u;
+constant BvhNodes BVH = 0u;
 
 float at(
     Table tab,
@@ -1894,147 +1896,204 @@ float light_weight(
     return _e15;
 }
 
-float bvh_importance(
+GpuLightBvhNode light_bvh_node(
+    BvhNodes nodes,
     uint i_3,
+    device type_11 const& light_bvh,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLightBvhNode _e4 = light_bvh[i_3];
+    return _e4;
+}
+
+uint light_bvh_count(
+    BvhNodes nodes_1,
+    device type_11 const& light_bvh,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    return 1 + (_buffer_sizes.size5 - 0 - 48) / 48;
+}
+
+float bvh_importance(
+    BvhNodes nodes_2,
+    uint i_4,
     metal::float3 x_15,
     metal::float3 n_18,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightBvhNode b_10 = light_bvh[i_3];
-    float _e12 = light_importance(b_10.center, b_10.radius, b_10.phi, b_10.axis, b_10.cos_o, b_10.cos_e, x_15, n_18);
-    return _e12;
+    GpuLightBvhNode _e4 = light_bvh_node(nodes_2, i_4, light_bvh, _buffer_sizes);
+    float _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_15, n_18);
+    return _e11;
 }
 
 float bvh_first(
-    uint i_4,
+    BvhNodes nodes_3,
+    uint i_5,
     metal::float3 x_16,
     metal::float3 n_19,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool local_19 = {};
-    uint j = light_bvh[i_4].second;
-    if (!((j <= (i_4 + 1u)))) {
-        local_19 = j >= (1 + (_buffer_sizes.size5 - 0 - 48) / 48);
+    GpuLightBvhNode _e4 = light_bvh_node(nodes_3, i_5, light_bvh, _buffer_sizes);
+    uint j = _e4.second;
+    if (!((j <= (i_5 + 1u)))) {
+        uint _e12 = light_bvh_count(nodes_3, light_bvh, _buffer_sizes);
+        local_19 = j >= _e12;
     } else {
         local_19 = true;
     }
-    bool _e17 = local_19;
-    if (_e17) {
+    bool _e15 = local_19;
+    if (_e15) {
         return -1.0;
     }
-    float _e21 = bvh_importance(i_4 + 1u, x_16, n_19, light_bvh, _buffer_sizes);
-    float _e22 = bvh_importance(j, x_16, n_19, light_bvh, _buffer_sizes);
-    float _e23 = bvh_first_prob(_e21, _e22);
-    return _e23;
+    float _e19 = bvh_importance(nodes_3, i_5 + 1u, x_16, n_19, light_bvh, _buffer_sizes);
+    float _e20 = bvh_importance(nodes_3, j, x_16, n_19, light_bvh, _buffer_sizes);
+    float _e21 = bvh_first_prob(_e19, _e20);
+    return _e21;
+}
+
+BvhPick bvh_pick_none(
+) {
+    return BvhPick {0u, 0.0};
 }
 
 BvhPick light_bvh_sample(
+    BvhNodes nodes_4,
     metal::float3 x_17,
     metal::float3 n_20,
     float u_in,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    BvhPick pick = {};
     float u_5 = {};
-    uint i_5 = 0u;
+    uint i_6 = 0u;
     float pmf = 1.0;
     bool local_20 = {};
+    BvhPick _e4 = bvh_pick_none();
+    pick = _e4;
     u_5 = u_in;
     uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e9 = i_5;
-        GpuLightBvhNode node_1 = light_bvh[_e9];
-        if (node_1.second == LIGHT_BVH_LEAF) {
-            uint _e15 = i_5;
-            if (!((_e15 > 0u))) {
-                float _e22 = bvh_importance(0u, x_17, n_20, light_bvh, _buffer_sizes);
-                local_20 = _e22 > 0.0;
-            } else {
-                local_20 = true;
+        uint _e11 = i_6;
+        uint _e12 = light_bvh_count(nodes_4, light_bvh, _buffer_sizes);
+        if (_e11 < _e12) {
+        } else {
+            break;
+        }
+        {
+            uint _e14 = i_6;
+            GpuLightBvhNode _e15 = light_bvh_node(nodes_4, _e14, light_bvh, _buffer_sizes);
+            if (_e15.second == LIGHT_BVH_LEAF) {
+                uint _e19 = i_6;
+                if (!((_e19 > 0u))) {
+                    float _e26 = bvh_importance(nodes_4, 0u, x_17, n_20, light_bvh, _buffer_sizes);
+                    local_20 = _e26 > 0.0;
+                } else {
+                    local_20 = true;
+                }
+                bool _e30 = local_20;
+                if (_e30) {
+                    pick.light = _e15.light;
+                    float _e34 = pmf;
+                    pick.pmf = _e34;
+                }
+                BvhPick _e35 = pick;
+                return _e35;
             }
-            bool reaches = local_20;
-            float _e28 = pmf;
-            return BvhPick {node_1.light, reaches ? _e28 : 0.0};
+            uint _e36 = i_6;
+            float _e37 = bvh_first(nodes_4, _e36, x_17, n_20, light_bvh, _buffer_sizes);
+            if (_e37 < 0.0) {
+                BvhPick _e40 = pick;
+                return _e40;
+            }
+            float _e41 = u_5;
+            bool first_1 = _e41 < _e37;
+            float _e43 = pmf;
+            pmf = _e43 * (first_1 ? _e37 : (1.0 - _e37));
+            float _e48 = u_5;
+            float _e49 = bvh_remap_u(_e48, _e37, first_1);
+            u_5 = _e49;
+            uint _e51 = i_6;
+            i_6 = first_1 ? (_e51 + 1u) : _e15.second;
         }
-        uint _e32 = i_5;
-        float _e33 = bvh_first(_e32, x_17, n_20, light_bvh, _buffer_sizes);
-        if (_e33 < 0.0) {
-            return BvhPick {0u, 0.0};
-        }
-        float _e39 = u_5;
-        bool first_1 = _e39 < _e33;
-        float _e41 = pmf;
-        pmf = _e41 * (first_1 ? _e33 : (1.0 - _e33));
-        float _e46 = u_5;
-        float _e47 = bvh_remap_u(_e46, _e33, first_1);
-        u_5 = _e47;
-        uint _e49 = i_5;
-        i_5 = first_1 ? (_e49 + 1u) : node_1.second;
     }
-    return BvhPick {0u, 0.0};
+    BvhPick _e55 = pick;
+    return _e55;
 }
 
 float light_bvh_pmf(
-    uint li_1,
+    BvhNodes nodes_5,
+    uint leaf,
     metal::float3 x_18,
     metal::float3 n_21,
-    device type_10 const& light_cones,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_6 = 0u;
+    uint i_7 = 0u;
     float pmf_1 = 1.0;
     bool local_21 = {};
     bool local_22 = {};
-    uint leaf = light_cones[li_1].bvh_leaf;
-    if (leaf >= (1 + (_buffer_sizes.size5 - 0 - 48) / 48)) {
+    uint _e4 = light_bvh_count(nodes_5, light_bvh, _buffer_sizes);
+    if (leaf >= _e4) {
         return 0.0;
     }
     uint2 loop_bound_4 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        uint _e16 = i_6;
-        GpuLightBvhNode node_2 = light_bvh[_e16];
-        if (node_2.second == LIGHT_BVH_LEAF) {
-            uint _e22 = i_6;
-            if (!((_e22 > 0u))) {
-                float _e29 = bvh_importance(0u, x_18, n_21, light_bvh, _buffer_sizes);
-                local_21 = _e29 > 0.0;
-            } else {
-                local_21 = true;
-            }
-            bool reaches_1 = local_21;
-            float _e34 = pmf_1;
-            uint _e35 = i_6;
-            if (_e35 == leaf) {
-                local_22 = reaches_1;
-            } else {
-                local_22 = false;
-            }
-            bool _e40 = local_22;
-            return _e40 ? _e34 : 0.0;
+        uint _e11 = i_7;
+        uint _e12 = light_bvh_count(nodes_5, light_bvh, _buffer_sizes);
+        if (_e11 < _e12) {
+        } else {
+            break;
         }
-        uint _e43 = i_6;
-        float _e44 = bvh_first(_e43, x_18, n_21, light_bvh, _buffer_sizes);
-        if (_e44 < 0.0) {
-            return 0.0;
+        {
+            uint _e14 = i_7;
+            GpuLightBvhNode _e15 = light_bvh_node(nodes_5, _e14, light_bvh, _buffer_sizes);
+            if (_e15.second == LIGHT_BVH_LEAF) {
+                uint _e19 = i_7;
+                if (_e19 == leaf) {
+                    uint _e23 = i_7;
+                    if (!((_e23 > 0u))) {
+                        float _e30 = bvh_importance(nodes_5, 0u, x_18, n_21, light_bvh, _buffer_sizes);
+                        local_22 = _e30 > 0.0;
+                    } else {
+                        local_22 = true;
+                    }
+                    bool _e34 = local_22;
+                    local_21 = _e34;
+                } else {
+                    local_21 = false;
+                }
+                bool _e36 = local_21;
+                if (_e36) {
+                    float _e37 = pmf_1;
+                    return _e37;
+                }
+                return 0.0;
+            }
+            uint _e39 = i_7;
+            float _e40 = bvh_first(nodes_5, _e39, x_18, n_21, light_bvh, _buffer_sizes);
+            if (_e40 < 0.0) {
+                return 0.0;
+            }
+            bool first_2 = leaf < _e15.second;
+            float _e46 = pmf_1;
+            pmf_1 = _e46 * (first_2 ? _e40 : (1.0 - _e40));
+            uint _e52 = i_7;
+            i_7 = first_2 ? (_e52 + 1u) : _e15.second;
         }
-        bool first_2 = leaf < node_2.second;
-        float _e50 = pmf_1;
-        pmf_1 = _e50 * (first_2 ? _e44 : (1.0 - _e44));
-        uint _e56 = i_6;
-        i_6 = first_2 ? (_e56 + 1u) : node_2.second;
     }
     return 0.0;
 }
 
 float select_pdf(
-    uint li_2,
+    uint li_1,
     metal::float3 x_19,
     metal::float3 n_22,
     uint nee,
@@ -2045,7 +2104,7 @@ float select_pdf(
 }
 
 float light_pdf(
-    uint li_3,
+    uint li_2,
     metal::float3 x_20,
     metal::float3 n_23,
     metal::float3 y_3,
@@ -2055,13 +2114,13 @@ float light_pdf(
     device type_12 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight l_4 = lights[li_3];
+    GpuLight l_4 = lights[li_2];
     metal::float3 v_13 = x_20 - y_3;
     float d2_14 = metal::dot(v_13, v_13);
     metal::float3 _e11 = light_normal(l_4);
     float cos_y_1 = (d2_14 > 0.0) ? metal::dot(_e11, v_13 / metal::float3(metal::sqrt(d2_14))) : 0.0;
-    float _e20 = select_pdf(li_3, x_20, n_23, nee_1, in_range_3);
-    float _e23 = rt2_7[li_3];
+    float _e20 = select_pdf(li_2, x_20, n_23, nee_1, in_range_3);
+    float _e23 = rt2_7[li_2];
     float _e24 = light_area(l_4);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_14, _e24, cos_y_1);
     return _e25;
@@ -2105,24 +2164,24 @@ kernel void main_(
     uint rng = {};
     bool local_1 = {};
     bool local_2 = {};
-    uint i_7 = gid.x;
+    uint i_8 = gid.x;
     uint _e4 = params.width;
     uint _e7 = params.height;
-    if (i_7 >= (_e4 * _e7)) {
+    if (i_8 >= (_e4 * _e7)) {
         return;
     }
     uint _e13 = params.depth;
     if (_e13 == 0u) {
         uint _e18 = params.seed;
         uint _e21 = params.pass_index;
-        uint _e22 = path_stream(_e18, i_7, _e21);
+        uint _e22 = path_stream(_e18, i_8, _e21);
         h = _e22;
         uint _e26 = params.width;
         float _e28 = next_uniform(h);
-        float _e29 = jittered_pixel(naga_mod(i_7, _e26), _e28);
+        float _e29 = jittered_pixel(naga_mod(i_8, _e26), _e28);
         uint _e32 = params.width;
         float _e34 = next_uniform(h);
-        float _e35 = jittered_pixel(naga_div(i_7, _e32), _e34);
+        float _e35 = jittered_pixel(naga_div(i_8, _e32), _e34);
         metal::float3 _e39 = params.cam_pos;
         st.origin = _e39;
         metal::float3 _e43 = params.cam_forward;
@@ -2140,14 +2199,14 @@ kernel void main_(
         metal::float3 _e71 = params.cam_pos;
         st.prev = _e71;
     } else {
-        GpuPathState _e74 = paths[i_7];
+        GpuPathState _e74 = paths[i_8];
         st = _e74;
     }
     v.alive = 0u;
     uint _e79 = st.alive;
     if (_e79 == 0u) {
         GpuPathVertex _e84 = v;
-        vertices[i_7] = _e84;
+        vertices[i_8] = _e84;
         return;
     }
     metal::float3 _e86 = st.origin;
@@ -2157,9 +2216,9 @@ kernel void main_(
     if (_e94.tri == NO_LIGHT) {
         st.alive = 0u;
         GpuPathState _e102 = st;
-        paths[i_7] = _e102;
+        paths[i_8] = _e102;
         GpuPathVertex _e105 = v;
-        vertices[i_7] = _e105;
+        vertices[i_8] = _e105;
         return;
     }
     GpuTriangle tri = geo_tris[_e94.tri];
@@ -2169,10 +2228,10 @@ kernel void main_(
     metal::float3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e122 = st.dir;
     metal::float3 _e123 = face_against(_e120, _e122);
-    uint b_11 = _e94.tri * 3u;
-    metal::float4 _e129 = geo_normals[b_11];
-    metal::float4 _e135 = geo_normals[b_11 + 1u];
-    metal::float4 _e141 = geo_normals[b_11 + 2u];
+    uint b_10 = _e94.tri * 3u;
+    metal::float4 _e129 = geo_normals[b_10];
+    metal::float4 _e135 = geo_normals[b_10 + 1u];
+    metal::float4 _e141 = geo_normals[b_10 + 2u];
     metal::float3 _e146 = barycentric(x_21, tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if (tri.light != NO_LIGHT) {
@@ -2193,7 +2252,7 @@ kernel void main_(
             float _e177 = st.pdf_bsdf;
             metal::float3 _e180 = st.prev;
             metal::float3 _e182 = st.prev_normal;
-            uint _e185 = candidates[i_7];
+            uint _e185 = candidates[i_8];
             float _e186 = light_pdf(tri.light, _e180, _e182, x_21, _e185, _e175, rt2_7, lights, _buffer_sizes);
             float _e187 = mis_weight(_e177, _e186);
             w = _e187;
@@ -2204,8 +2263,8 @@ kernel void main_(
         metal::float3 add = (_e189 * _e194) * _e196;
         bool _e198 = finite3_(add);
         if (_e198) {
-            metal::float4 _e201 = radiance[i_7];
-            radiance[i_7] = _e201 + metal::float4(add, 0.0);
+            metal::float4 _e201 = radiance[i_8];
+            radiance[i_8] = _e201 + metal::float4(add, 0.0);
         }
     }
     metal::float4 _e208 = albedo_1[tri.material];
@@ -2218,7 +2277,7 @@ kernel void main_(
     v.weight = _e215 * _e216;
     v.alive = 1u;
     GpuPathVertex _e222 = v;
-    vertices[i_7] = _e222;
+    vertices[i_8] = _e222;
     uint _e224 = st.rng;
     rng = _e224;
     float _e226 = next_uniform(rng);
@@ -2269,6 +2328,6 @@ kernel void main_(
     uint _e286 = rng;
     st.rng = _e286;
     GpuPathState _e289 = st;
-    paths[i_7] = _e289;
+    paths[i_8] = _e289;
     return;
 }
