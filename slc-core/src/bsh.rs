@@ -70,7 +70,7 @@ pub fn bsh_count(nodes: BshNodes) -> u32 {
 /// kernels that bind one declare (their WGSL is [`walk::WGSL`]).
 pub mod walk {
     use super::{BSH_NONE, BshNode, BshNodes, bsh_count, bsh_node};
-    use crate::sphere::sphere_contains_point;
+    use crate::sphere::{sphere_contains_point, sphere_union};
     use crate::wgsl::*;
 
     crate::shared! {
@@ -101,6 +101,16 @@ pub mod walk {
                 }
             }
             return BSH_NONE;
+        }
+
+        /// The refit's step at inner node `i`: the union of its two
+        /// children's spheres (its first child is `child`, the second that
+        /// child's `next`), `(centre, radius)`. Leaves take
+        /// `range_radius(R, r²)` around their light.
+        pub fn bsh_children_sphere(nodes: BshNodes, i: u32) -> vec4f {
+            let left: BshNode = bsh_node(nodes, bsh_node(nodes, i).child);
+            let right: BshNode = bsh_node(nodes, left.next);
+            return sphere_union(left.center, left.radius, right.center, right.radius);
         }
     }
 }
@@ -188,9 +198,8 @@ impl Bsh {
             let s = if n.child == BSH_NONE {
                 self.bounds[n.light as usize].range_sphere(r2(n.light as usize))
             } else {
-                let l = self.nodes[n.child as usize];
-                let r = self.nodes[l.next as usize];
-                Sphere::new(l.center, l.radius).union(&Sphere::new(r.center, r.radius))
+                let u = walk::bsh_children_sphere(&self.nodes, i as u32);
+                Sphere::new(Vec3::new(u.x, u.y, u.z), u.w)
             };
             self.nodes[i].center = s.center;
             self.nodes[i].radius = s.radius;

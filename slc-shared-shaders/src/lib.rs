@@ -465,11 +465,12 @@ impl Default for Features {
     }
 }
 
-const TEMPLATES: [(&str, &str); 21] = [
+const TEMPLATES: [(&str, &str); 22] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("workgroup_box.wgsl", include_str!("templates/workgroup_box.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
     ("geometry.wgsl", include_str!("templates/geometry.wgsl")),
+    ("bsh_walk.wgsl", include_str!("templates/bsh_walk.wgsl")),
     ("bsh_collect.wgsl", include_str!("templates/bsh_collect.wgsl")),
     ("light_update", include_str!("templates/light_update.wgsl")),
     ("bsh_refit", include_str!("templates/bsh_refit.wgsl")),

@@ -10,17 +10,7 @@ struct Picks {
     n: u32,
 }
 
-/// The kernel's `bsh_nodes` buffer as slc-core's shared traversal steps
-/// (`bsh_first`, `bsh_next_leaf`, below) read it.
-alias BshNodes = u32;
-const BSH: BshNodes = 0u;
-fn bsh_node(nodes: BshNodes, i: u32) -> BshNode {
-    return bsh_nodes[i];
-}
-fn bsh_count(nodes: BshNodes) -> u32 {
-    return arrayLength(&bsh_nodes);
-}
-{{ bsh_walk }}
+{% include "bsh_walk.wgsl" %}
 
 /// Lights whose range sphere contains `x`, streamed through the reservoir;
 /// `seed` drives the reservoir's random choices.

@@ -10,6 +10,8 @@
 @group(0) @binding(4) var<storage, read_write> bsh_nodes: array<BshNode>;
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
 
+{% include "bsh_walk.wgsl" %}
+
 @compute @workgroup_size({{ wg }})
 fn main(@builtin(global_invocation_id) gid: vec3u) {
     if gid.x >= params.count {
@@ -21,9 +23,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         bsh_nodes[i].radius = range_radius(extent[node.light], r2[node.light]);
         return;
     }
-    let left = bsh_nodes[node.child];
-    let right = bsh_nodes[left.next];
-    let u = sphere_union(left.center, left.radius, right.center, right.radius);
+    let u = bsh_children_sphere(BSH, i);
     bsh_nodes[i].center = u.xyz;
     bsh_nodes[i].radius = u.w;
 }

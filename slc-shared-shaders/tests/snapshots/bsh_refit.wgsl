@@ -227,6 +227,7 @@ const DEPTH_SIGMA: f32 = 0.05f;
 const COVER_WEIGHT: f32 = 0.1f;
 const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
+const BSH: u32 = 0u;
 
 @group(1) @binding(0) 
 var<storage> slc_table: array<f32>;
@@ -1269,6 +1270,59 @@ fn diffuse_radiance(albedo: vec3<f32>, emission: vec3<f32>, e_2: vec3<f32>) -> v
     return (emission + ((albedo * INV_PI) * e_2));
 }
 
+fn bsh_node(nodes: u32, i_2: u32) -> BshNode {
+    let _e4 = bsh_nodes[i_2];
+    return _e4;
+}
+
+fn bsh_count(nodes_1: u32) -> u32 {
+    return arrayLength((&bsh_nodes));
+}
+
+fn bsh_first(nodes_2: u32) -> u32 {
+    let _e1 = bsh_count(nodes_2);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+fn bsh_next_leaf(nodes_3: u32, start_1: u32, x_14: vec3<f32>) -> u32 {
+    var i_3: u32;
+
+    i_3 = start_1;
+    loop {
+        let _e4 = i_3;
+        if (_e4 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            let _e7 = i_3;
+            let _e8 = bsh_node(nodes_3, _e7);
+            let _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            if _e11 {
+                if (_e8.child == BSH_NONE) {
+                    let _e15 = i_3;
+                    return _e15;
+                }
+                i_3 = _e8.child;
+            } else {
+                i_3 = _e8.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+fn bsh_children_sphere(nodes_4: u32, i_4: u32) -> vec4<f32> {
+    let _e2 = bsh_node(nodes_4, i_4);
+    let _e4 = bsh_node(nodes_4, _e2.child);
+    let _e6 = bsh_node(nodes_4, _e4.next);
+    let _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
+    return _e11;
+}
+
 @compute @workgroup_size(64, 1, 1) 
 fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e4 = params.count;
@@ -1276,19 +1330,17 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     let _e9 = params.first;
-    let i_2 = order[(_e9 + gid.x)];
-    let node = bsh_nodes[i_2];
+    let i_5 = order[(_e9 + gid.x)];
+    let node = bsh_nodes[i_5];
     if (node.child == BSH_NONE) {
         let _e26 = extent_4[node.light];
         let _e30 = r2_6[node.light];
         let _e31 = range_radius(_e26, _e30);
-        bsh_nodes[i_2].radius = _e31;
+        bsh_nodes[i_5].radius = _e31;
         return;
     }
-    let left = bsh_nodes[node.child];
-    let right_1 = bsh_nodes[left.next];
-    let _e44 = sphere_union(left.center, left.radius, right_1.center, right_1.radius);
-    bsh_nodes[i_2].center = _e44.xyz;
-    bsh_nodes[i_2].radius = _e44.w;
+    let _e33 = bsh_children_sphere(BSH, i_5);
+    bsh_nodes[i_5].center = _e33.xyz;
+    bsh_nodes[i_5].radius = _e33.w;
     return;
 }

@@ -1458,18 +1458,26 @@ fn bsh_next_leaf(nodes_3: u32, start_1: u32, x_14: vec3<f32>) -> u32 {
     return BSH_NONE;
 }
 
+fn bsh_children_sphere(nodes_4: u32, i_5: u32) -> vec4<f32> {
+    let _e2 = bsh_node(nodes_4, i_5);
+    let _e4 = bsh_node(nodes_4, _e2.child);
+    let _e6 = bsh_node(nodes_4, _e4.next);
+    let _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
+    return _e11;
+}
+
 fn bsh_collect(x_15: vec3<f32>, seed_3: u32) -> Picks {
     var picks: Picks;
     var h_2: u32;
-    var i_5: u32;
+    var i_6: u32;
 
     picks.n = 0u;
     h_2 = seed_3;
     let _e8 = bsh_first(BSH);
     let _e9 = bsh_next_leaf(BSH, _e8, x_15);
-    i_5 = _e9;
+    i_6 = _e9;
     loop {
-        let _e11 = i_5;
+        let _e11 = i_6;
         if (_e11 != BSH_NONE) {
         } else {
             break;
@@ -1491,17 +1499,17 @@ fn bsh_collect(x_15: vec3<f32>, seed_3: u32) -> Picks {
                 let _e29 = h_2;
                 let _e30 = reservoir_slot(_e27, K, hi_4, _e29);
                 if (_e30 < K) {
-                    let _e36 = i_5;
+                    let _e36 = i_6;
                     let _e39 = bsh_nodes[_e36].light;
                     picks.light[_e30] = _e39;
                 }
             }
         }
         continuing {
-            let _e42 = i_5;
+            let _e42 = i_6;
             let _e45 = bsh_nodes[_e42].next;
             let _e46 = bsh_next_leaf(BSH, _e45, x_15);
-            i_5 = _e46;
+            i_6 = _e46;
         }
     }
     let _e47 = picks;
@@ -1551,22 +1559,22 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var e: vec3<f32> = vec3(0f);
     var s: u32 = 0u;
 
-    let i_6 = gid.x;
+    let i_7 = gid.x;
     let _e4 = params.point_count;
-    if (i_6 >= _e4) {
+    if (i_7 >= _e4) {
         return;
     }
-    let p_4 = points[i_6];
+    let p_4 = points[i_7];
     if (p_4.w <= 0f) {
-        irradiance[i_6] = vec4(0f);
+        irradiance[i_7] = vec4(0f);
         return;
     }
     let x_17 = p_4.xyz;
-    let _e19 = normals[i_6];
+    let _e19 = normals[i_7];
     let n_21 = _e19.xyz;
     let _e23 = params.seed;
     let _e26 = params.frame;
-    let _e27 = point_stream(_e23, i_6, _e26);
+    let _e27 = point_stream(_e23, i_7, _e26);
     let _e28 = bsh_collect(x_17, _e27);
     let _e31 = reservoir_weight(_e28.n, K);
     let _e32 = pick_stream(_e27);
@@ -1600,6 +1608,6 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
     }
     let _e67 = e;
-    irradiance[i_6] = vec4<f32>(_e67, f32(_e28.n));
+    irradiance[i_7] = vec4<f32>(_e67, f32(_e28.n));
     return;
 }

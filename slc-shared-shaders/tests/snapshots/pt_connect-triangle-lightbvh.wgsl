@@ -1475,18 +1475,26 @@ fn bsh_next_leaf(nodes_3: u32, start_1: u32, x_14: vec3<f32>) -> u32 {
     return BSH_NONE;
 }
 
+fn bsh_children_sphere(nodes_4: u32, i_5: u32) -> vec4<f32> {
+    let _e2 = bsh_node(nodes_4, i_5);
+    let _e4 = bsh_node(nodes_4, _e2.child);
+    let _e6 = bsh_node(nodes_4, _e4.next);
+    let _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
+    return _e11;
+}
+
 fn bsh_collect(x_15: vec3<f32>, seed_3: u32) -> Picks {
     var picks: Picks;
     var h_2: u32;
-    var i_5: u32;
+    var i_6: u32;
 
     picks.n = 0u;
     h_2 = seed_3;
     let _e8 = bsh_first(BSH);
     let _e9 = bsh_next_leaf(BSH, _e8, x_15);
-    i_5 = _e9;
+    i_6 = _e9;
     loop {
-        let _e11 = i_5;
+        let _e11 = i_6;
         if (_e11 != BSH_NONE) {
         } else {
             break;
@@ -1508,17 +1516,17 @@ fn bsh_collect(x_15: vec3<f32>, seed_3: u32) -> Picks {
                 let _e29 = h_2;
                 let _e30 = reservoir_slot(_e27, K, hi_4, _e29);
                 if (_e30 < K) {
-                    let _e36 = i_5;
+                    let _e36 = i_6;
                     let _e39 = bsh_nodes[_e36].light;
                     picks.light[_e30] = _e39;
                 }
             }
         }
         continuing {
-            let _e42 = i_5;
+            let _e42 = i_6;
             let _e45 = bsh_nodes[_e42].next;
             let _e46 = bsh_next_leaf(BSH, _e45, x_15);
-            i_5 = _e46;
+            i_6 = _e46;
         }
     }
     let _e47 = picks;
@@ -1574,28 +1582,28 @@ fn light_weight(li_1: u32, x_17: vec3<f32>, n_18: vec3<f32>) -> f32 {
     return _e15;
 }
 
-fn light_bvh_node(nodes_4: u32, i_6: u32) -> GpuLightBvhNode {
-    let _e4 = light_bvh[i_6];
+fn light_bvh_node(nodes_5: u32, i_7: u32) -> GpuLightBvhNode {
+    let _e4 = light_bvh[i_7];
     return _e4;
 }
 
-fn light_bvh_count(nodes_5: u32) -> u32 {
+fn light_bvh_count(nodes_6: u32) -> u32 {
     return arrayLength((&light_bvh));
 }
 
-fn bvh_importance(nodes_6: u32, i_7: u32, x_18: vec3<f32>, n_19: vec3<f32>) -> f32 {
-    let _e4 = light_bvh_node(nodes_6, i_7);
+fn bvh_importance(nodes_7: u32, i_8: u32, x_18: vec3<f32>, n_19: vec3<f32>) -> f32 {
+    let _e4 = light_bvh_node(nodes_7, i_8);
     let _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_18, n_19);
     return _e11;
 }
 
-fn bvh_first(nodes_7: u32, i_8: u32, x_19: vec3<f32>, n_20: vec3<f32>) -> f32 {
+fn bvh_first(nodes_8: u32, i_9: u32, x_19: vec3<f32>, n_20: vec3<f32>) -> f32 {
     var local_17: bool;
 
-    let _e4 = light_bvh_node(nodes_7, i_8);
+    let _e4 = light_bvh_node(nodes_8, i_9);
     let j = _e4.second;
-    if !((j <= (i_8 + 1u))) {
-        let _e12 = light_bvh_count(nodes_7);
+    if !((j <= (i_9 + 1u))) {
+        let _e12 = light_bvh_count(nodes_8);
         local_17 = (j >= _e12);
     } else {
         local_17 = true;
@@ -1604,8 +1612,8 @@ fn bvh_first(nodes_7: u32, i_8: u32, x_19: vec3<f32>, n_20: vec3<f32>) -> f32 {
     if _e15 {
         return -1f;
     }
-    let _e19 = bvh_importance(nodes_7, (i_8 + 1u), x_19, n_20);
-    let _e20 = bvh_importance(nodes_7, j, x_19, n_20);
+    let _e19 = bvh_importance(nodes_8, (i_9 + 1u), x_19, n_20);
+    let _e20 = bvh_importance(nodes_8, j, x_19, n_20);
     let _e21 = bvh_first_prob(_e19, _e20);
     return _e21;
 }
@@ -1614,10 +1622,10 @@ fn bvh_pick_none() -> BvhPick {
     return BvhPick(0u, 0f);
 }
 
-fn light_bvh_sample(nodes_8: u32, x_20: vec3<f32>, n_21: vec3<f32>, u_in: f32) -> BvhPick {
+fn light_bvh_sample(nodes_9: u32, x_20: vec3<f32>, n_21: vec3<f32>, u_in: f32) -> BvhPick {
     var pick: BvhPick;
     var u_5: f32;
-    var i_9: u32 = 0u;
+    var i_10: u32 = 0u;
     var pmf: f32 = 1f;
     var local_18: bool;
 
@@ -1625,19 +1633,19 @@ fn light_bvh_sample(nodes_8: u32, x_20: vec3<f32>, n_21: vec3<f32>, u_in: f32) -
     pick = _e4;
     u_5 = u_in;
     loop {
-        let _e11 = i_9;
-        let _e12 = light_bvh_count(nodes_8);
+        let _e11 = i_10;
+        let _e12 = light_bvh_count(nodes_9);
         if (_e11 < _e12) {
         } else {
             break;
         }
         {
-            let _e14 = i_9;
-            let _e15 = light_bvh_node(nodes_8, _e14);
+            let _e14 = i_10;
+            let _e15 = light_bvh_node(nodes_9, _e14);
             if (_e15.second == LIGHT_BVH_LEAF) {
-                let _e19 = i_9;
+                let _e19 = i_10;
                 if !((_e19 > 0u)) {
-                    let _e26 = bvh_importance(nodes_8, 0u, x_20, n_21);
+                    let _e26 = bvh_importance(nodes_9, 0u, x_20, n_21);
                     local_18 = (_e26 > 0f);
                 } else {
                     local_18 = true;
@@ -1651,8 +1659,8 @@ fn light_bvh_sample(nodes_8: u32, x_20: vec3<f32>, n_21: vec3<f32>, u_in: f32) -
                 let _e35 = pick;
                 return _e35;
             }
-            let _e36 = i_9;
-            let _e37 = bvh_first(nodes_8, _e36, x_20, n_21);
+            let _e36 = i_10;
+            let _e37 = bvh_first(nodes_9, _e36, x_20, n_21);
             if (_e37 < 0f) {
                 let _e40 = pick;
                 return _e40;
@@ -1664,40 +1672,40 @@ fn light_bvh_sample(nodes_8: u32, x_20: vec3<f32>, n_21: vec3<f32>, u_in: f32) -
             let _e48 = u_5;
             let _e49 = bvh_remap_u(_e48, _e37, first_1);
             u_5 = _e49;
-            let _e51 = i_9;
-            i_9 = select(_e15.second, (_e51 + 1u), first_1);
+            let _e51 = i_10;
+            i_10 = select(_e15.second, (_e51 + 1u), first_1);
         }
     }
     let _e55 = pick;
     return _e55;
 }
 
-fn light_bvh_pmf(nodes_9: u32, leaf: u32, x_21: vec3<f32>, n_22: vec3<f32>) -> f32 {
-    var i_10: u32 = 0u;
+fn light_bvh_pmf(nodes_10: u32, leaf: u32, x_21: vec3<f32>, n_22: vec3<f32>) -> f32 {
+    var i_11: u32 = 0u;
     var pmf_1: f32 = 1f;
     var local_19: bool;
     var local_20: bool;
 
-    let _e4 = light_bvh_count(nodes_9);
+    let _e4 = light_bvh_count(nodes_10);
     if (leaf >= _e4) {
         return 0f;
     }
     loop {
-        let _e11 = i_10;
-        let _e12 = light_bvh_count(nodes_9);
+        let _e11 = i_11;
+        let _e12 = light_bvh_count(nodes_10);
         if (_e11 < _e12) {
         } else {
             break;
         }
         {
-            let _e14 = i_10;
-            let _e15 = light_bvh_node(nodes_9, _e14);
+            let _e14 = i_11;
+            let _e15 = light_bvh_node(nodes_10, _e14);
             if (_e15.second == LIGHT_BVH_LEAF) {
-                let _e19 = i_10;
+                let _e19 = i_11;
                 if (_e19 == leaf) {
-                    let _e23 = i_10;
+                    let _e23 = i_11;
                     if !((_e23 > 0u)) {
-                        let _e30 = bvh_importance(nodes_9, 0u, x_21, n_22);
+                        let _e30 = bvh_importance(nodes_10, 0u, x_21, n_22);
                         local_20 = (_e30 > 0f);
                     } else {
                         local_20 = true;
@@ -1714,16 +1722,16 @@ fn light_bvh_pmf(nodes_9: u32, leaf: u32, x_21: vec3<f32>, n_22: vec3<f32>) -> f
                 }
                 return 0f;
             }
-            let _e39 = i_10;
-            let _e40 = bvh_first(nodes_9, _e39, x_21, n_22);
+            let _e39 = i_11;
+            let _e40 = bvh_first(nodes_10, _e39, x_21, n_22);
             if (_e40 < 0f) {
                 return 0f;
             }
             let first_2 = (leaf < _e15.second);
             let _e46 = pmf_1;
             pmf_1 = (_e46 * select((1f - _e40), _e40, first_2));
-            let _e52 = i_10;
-            i_10 = select(_e15.second, (_e52 + 1u), first_2);
+            let _e52 = i_11;
+            i_11 = select(_e15.second, (_e52 + 1u), first_2);
         }
     }
     return 0f;
@@ -1777,14 +1785,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var h: u32;
     var sum: vec3<f32> = vec3(0f);
 
-    let i_11 = gid.x;
+    let i_12 = gid.x;
     let _e4 = params.point_count;
-    if (i_11 >= _e4) {
+    if (i_12 >= _e4) {
         return;
     }
-    let vtx = vertices[i_11];
+    let vtx = vertices[i_12];
     if (vtx.alive == 0u) {
-        candidates[i_11] = 0u;
+        candidates[i_12] = 0u;
         return;
     }
     let x_25 = vtx.position;
@@ -1792,10 +1800,10 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let ng_4 = vtx.gnormal;
     let _e20 = params.seed;
     let _e23 = params.frame;
-    let _e24 = point_stream(_e20, i_11, _e23);
+    let _e24 = point_stream(_e20, i_12, _e23);
     let _e25 = pick_stream(_e24);
     h = _e25;
-    candidates[i_11] = 0u;
+    candidates[i_12] = 0u;
     let _e33 = h;
     let _e34 = pcg_hash(_e33);
     h = _e34;
@@ -1822,8 +1830,8 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let add = (vtx.weight * _e56);
     let _e58 = finite3_(add);
     if _e58 {
-        let _e61 = radiance[i_11];
-        radiance[i_11] = (_e61 + vec4<f32>(add, 0f));
+        let _e61 = radiance[i_12];
+        radiance[i_12] = (_e61 + vec4<f32>(add, 0f));
         return;
     } else {
         return;

@@ -212,6 +212,7 @@ const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
 const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
+const uint BSH = 0u;
 
 layout(std140) uniform RefitParams_block_0Compute { RefitParams _group_0_binding_0_cs; };
 
@@ -1143,6 +1144,46 @@ vec3 diffuse_radiance(vec3 albedo, vec3 emission, vec3 e_2) {
     return (emission + ((albedo * INV_PI) * e_2));
 }
 
+BshNode bsh_node(uint nodes, uint i_2) {
+    BshNode _e4 = _group_0_binding_4_cs[i_2];
+    return _e4;
+}
+
+uint bsh_next_leaf(uint nodes_3, uint start_1, vec3 x_14) {
+    uint i_3 = 0u;
+    i_3 = start_1;
+    while(true) {
+        uint _e4 = i_3;
+        if ((_e4 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e7 = i_3;
+            BshNode _e8 = bsh_node(nodes_3, _e7);
+            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            if (_e11) {
+                if ((_e8.child == BSH_NONE)) {
+                    uint _e15 = i_3;
+                    return _e15;
+                }
+                i_3 = _e8.child;
+            } else {
+                i_3 = _e8.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+vec4 bsh_children_sphere(uint nodes_4, uint i_4) {
+    BshNode _e2 = bsh_node(nodes_4, i_4);
+    BshNode _e4 = bsh_node(nodes_4, _e2.child);
+    BshNode _e6 = bsh_node(nodes_4, _e4.next);
+    vec4 _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
+    return _e11;
+}
+
 void main() {
     uvec3 gid = gl_GlobalInvocationID;
     uint _e4 = _group_0_binding_0_cs.count;
@@ -1150,20 +1191,18 @@ void main() {
         return;
     }
     uint _e9 = _group_0_binding_0_cs.first;
-    uint i_2 = _group_0_binding_1_cs[(_e9 + gid.x)];
-    BshNode node = _group_0_binding_4_cs[i_2];
+    uint i_5 = _group_0_binding_1_cs[(_e9 + gid.x)];
+    BshNode node = _group_0_binding_4_cs[i_5];
     if ((node.child == BSH_NONE)) {
         float _e26 = _group_0_binding_2_cs[node.light];
         float _e30 = _group_0_binding_3_cs[node.light];
         float _e31 = range_radius(_e26, _e30);
-        _group_0_binding_4_cs[i_2].radius = _e31;
+        _group_0_binding_4_cs[i_5].radius = _e31;
         return;
     }
-    BshNode left = _group_0_binding_4_cs[node.child];
-    BshNode right_1 = _group_0_binding_4_cs[left.next];
-    vec4 _e44 = sphere_union(left.center, left.radius, right_1.center, right_1.radius);
-    _group_0_binding_4_cs[i_2].center = _e44.xyz;
-    _group_0_binding_4_cs[i_2].radius = _e44.w;
+    vec4 _e33 = bsh_children_sphere(BSH, i_5);
+    _group_0_binding_4_cs[i_5].center = _e33.xyz;
+    _group_0_binding_4_cs[i_5].radius = _e33.w;
     return;
 }
 

@@ -1424,25 +1424,33 @@ uint bsh_next_leaf(uint nodes_3, uint start_1, vec3 x_14) {
     return BSH_NONE;
 }
 
+vec4 bsh_children_sphere(uint nodes_4, uint i_5) {
+    BshNode _e2 = bsh_node(nodes_4, i_5);
+    BshNode _e4 = bsh_node(nodes_4, _e2.child);
+    BshNode _e6 = bsh_node(nodes_4, _e4.next);
+    vec4 _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
+    return _e11;
+}
+
 Picks bsh_collect(vec3 x_15, uint seed_3) {
     Picks picks = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_2 = 0u;
-    uint i_5 = 0u;
+    uint i_6 = 0u;
     picks.n = 0u;
     h_2 = seed_3;
     uint _e8 = bsh_first(BSH);
     uint _e9 = bsh_next_leaf(BSH, _e8, x_15);
-    i_5 = _e9;
+    i_6 = _e9;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e42 = i_5;
+            uint _e42 = i_6;
             uint _e45 = _group_0_binding_6_cs[_e42].next;
             uint _e46 = bsh_next_leaf(BSH, _e45, x_15);
-            i_5 = _e46;
+            i_6 = _e46;
         }
         loop_init_1 = false;
-        uint _e11 = i_5;
+        uint _e11 = i_6;
         if ((_e11 != BSH_NONE)) {
         } else {
             break;
@@ -1464,7 +1472,7 @@ Picks bsh_collect(vec3 x_15, uint seed_3) {
                 uint _e29 = h_2;
                 uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
                 if ((_e30 < K)) {
-                    uint _e36 = i_5;
+                    uint _e36 = i_6;
                     uint _e39 = _group_0_binding_6_cs[_e36].light;
                     picks.light[_e30] = _e39;
                 }
@@ -1516,22 +1524,22 @@ void main() {
     uint h = 0u;
     vec3 e = vec3(0.0);
     uint s = 0u;
-    uint i_6 = gid.x;
+    uint i_7 = gid.x;
     uint _e4 = _group_0_binding_0_cs.point_count;
-    if ((i_6 >= _e4)) {
+    if ((i_7 >= _e4)) {
         return;
     }
-    vec4 p_4 = _group_0_binding_1_cs[i_6];
+    vec4 p_4 = _group_0_binding_1_cs[i_7];
     if ((p_4.w <= 0.0)) {
-        _group_0_binding_9_cs[i_6] = vec4(0.0);
+        _group_0_binding_9_cs[i_7] = vec4(0.0);
         return;
     }
     vec3 x_17 = p_4.xyz;
-    vec4 _e19 = _group_0_binding_2_cs[i_6];
+    vec4 _e19 = _group_0_binding_2_cs[i_7];
     vec3 n_21 = _e19.xyz;
     uint _e23 = _group_0_binding_0_cs.seed;
     uint _e26 = _group_0_binding_0_cs.frame;
-    uint _e27 = point_stream(_e23, i_6, _e26);
+    uint _e27 = point_stream(_e23, i_7, _e26);
     Picks _e28 = bsh_collect(x_17, _e27);
     float _e31 = reservoir_weight(_e28.n, K);
     uint _e32 = pick_stream(_e27);
@@ -1567,7 +1575,7 @@ void main() {
         }
     }
     vec3 _e67 = e;
-    _group_0_binding_9_cs[i_6] = vec4(_e67, float(_e28.n));
+    _group_0_binding_9_cs[i_7] = vec4(_e67, float(_e28.n));
     return;
 }
 

@@ -1449,25 +1449,33 @@ uint bsh_next_leaf(uint nodes_3, uint start_1, vec3 x_14) {
     return BSH_NONE;
 }
 
+vec4 bsh_children_sphere(uint nodes_4, uint i_5) {
+    BshNode _e2 = bsh_node(nodes_4, i_5);
+    BshNode _e4 = bsh_node(nodes_4, _e2.child);
+    BshNode _e6 = bsh_node(nodes_4, _e4.next);
+    vec4 _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
+    return _e11;
+}
+
 Picks bsh_collect(vec3 x_15, uint seed_3) {
     Picks picks = Picks(uint[16](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_2 = 0u;
-    uint i_5 = 0u;
+    uint i_6 = 0u;
     picks.n = 0u;
     h_2 = seed_3;
     uint _e8 = bsh_first(BSH);
     uint _e9 = bsh_next_leaf(BSH, _e8, x_15);
-    i_5 = _e9;
+    i_6 = _e9;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e42 = i_5;
+            uint _e42 = i_6;
             uint _e45 = _group_0_binding_5_cs[_e42].next;
             uint _e46 = bsh_next_leaf(BSH, _e45, x_15);
-            i_5 = _e46;
+            i_6 = _e46;
         }
         loop_init_1 = false;
-        uint _e11 = i_5;
+        uint _e11 = i_6;
         if ((_e11 != BSH_NONE)) {
         } else {
             break;
@@ -1489,7 +1497,7 @@ Picks bsh_collect(vec3 x_15, uint seed_3) {
                 uint _e29 = h_2;
                 uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
                 if ((_e30 < K)) {
-                    uint _e36 = i_5;
+                    uint _e36 = i_6;
                     uint _e39 = _group_0_binding_5_cs[_e36].light;
                     picks.light[_e30] = _e39;
                 }
@@ -1591,14 +1599,14 @@ void main() {
     uint h = 0u;
     vec3 sum = vec3(0.0);
     uint s = 0u;
-    uint i_11 = gid.x;
+    uint i_12 = gid.x;
     uint _e4 = _group_0_binding_0_cs.point_count;
-    if ((i_11 >= _e4)) {
+    if ((i_12 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = _group_0_binding_1_cs[i_11];
+    GpuPathVertex vtx = _group_0_binding_1_cs[i_12];
     if ((vtx.alive == 0u)) {
-        _group_0_binding_9_cs[i_11] = 0u;
+        _group_0_binding_9_cs[i_12] = 0u;
         return;
     }
     vec3 x_25 = vtx.position;
@@ -1606,11 +1614,11 @@ void main() {
     vec3 ng_4 = vtx.gnormal;
     uint _e20 = _group_0_binding_0_cs.seed;
     uint _e23 = _group_0_binding_0_cs.frame;
-    uint _e24 = point_stream(_e20, i_11, _e23);
+    uint _e24 = point_stream(_e20, i_12, _e23);
     uint _e25 = pick_stream(_e24);
     h = _e25;
     Picks _e30 = bsh_collect(x_25, _e24);
-    _group_0_binding_9_cs[i_11] = _e30.n;
+    _group_0_binding_9_cs[i_12] = _e30.n;
     float _e36 = reservoir_weight(_e30.n, K);
     bool loop_init_2 = true;
     while(true) {
@@ -1645,8 +1653,8 @@ void main() {
     vec3 add = (vtx.weight * _e63);
     bool _e65 = finite3_(add);
     if (_e65) {
-        vec4 _e68 = _group_0_binding_8_cs[i_11];
-        _group_0_binding_8_cs[i_11] = (_e68 + vec4(add, 0.0));
+        vec4 _e68 = _group_0_binding_8_cs[i_12];
+        _group_0_binding_8_cs[i_12] = (_e68 + vec4(add, 0.0));
         return;
     } else {
         return;

@@ -1345,27 +1345,27 @@ float light_weight(uint li_1, vec3 x_17, vec3 n_18) {
     return _e15;
 }
 
-GpuLightBvhNode light_bvh_node(uint nodes_4, uint i_6) {
-    GpuLightBvhNode _e4 = _group_1_binding_3_cs[i_6];
+GpuLightBvhNode light_bvh_node(uint nodes_5, uint i_7) {
+    GpuLightBvhNode _e4 = _group_1_binding_3_cs[i_7];
     return _e4;
 }
 
-uint light_bvh_count(uint nodes_5) {
+uint light_bvh_count(uint nodes_6) {
     return uint(_group_1_binding_3_cs.length());
 }
 
-float bvh_importance(uint nodes_6, uint i_7, vec3 x_18, vec3 n_19) {
-    GpuLightBvhNode _e4 = light_bvh_node(nodes_6, i_7);
+float bvh_importance(uint nodes_7, uint i_8, vec3 x_18, vec3 n_19) {
+    GpuLightBvhNode _e4 = light_bvh_node(nodes_7, i_8);
     float _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_18, n_19);
     return _e11;
 }
 
-float bvh_first(uint nodes_7, uint i_8, vec3 x_19, vec3 n_20) {
+float bvh_first(uint nodes_8, uint i_9, vec3 x_19, vec3 n_20) {
     bool local_17 = false;
-    GpuLightBvhNode _e4 = light_bvh_node(nodes_7, i_8);
+    GpuLightBvhNode _e4 = light_bvh_node(nodes_8, i_9);
     uint j = _e4.second;
-    if (!((j <= (i_8 + 1u)))) {
-        uint _e12 = light_bvh_count(nodes_7);
+    if (!((j <= (i_9 + 1u)))) {
+        uint _e12 = light_bvh_count(nodes_8);
         local_17 = (j >= _e12);
     } else {
         local_17 = true;
@@ -1374,8 +1374,8 @@ float bvh_first(uint nodes_7, uint i_8, vec3 x_19, vec3 n_20) {
     if (_e15) {
         return -1.0;
     }
-    float _e19 = bvh_importance(nodes_7, (i_8 + 1u), x_19, n_20);
-    float _e20 = bvh_importance(nodes_7, j, x_19, n_20);
+    float _e19 = bvh_importance(nodes_8, (i_9 + 1u), x_19, n_20);
+    float _e20 = bvh_importance(nodes_8, j, x_19, n_20);
     float _e21 = bvh_first_prob(_e19, _e20);
     return _e21;
 }
@@ -1384,29 +1384,29 @@ BvhPick bvh_pick_none() {
     return BvhPick(0u, 0.0);
 }
 
-BvhPick light_bvh_sample(uint nodes_8, vec3 x_20, vec3 n_21, float u_in) {
+BvhPick light_bvh_sample(uint nodes_9, vec3 x_20, vec3 n_21, float u_in) {
     BvhPick pick = BvhPick(0u, 0.0);
     float u_5 = 0.0;
-    uint i_9 = 0u;
+    uint i_10 = 0u;
     float pmf = 1.0;
     bool local_18 = false;
     BvhPick _e4 = bvh_pick_none();
     pick = _e4;
     u_5 = u_in;
     while(true) {
-        uint _e11 = i_9;
-        uint _e12 = light_bvh_count(nodes_8);
+        uint _e11 = i_10;
+        uint _e12 = light_bvh_count(nodes_9);
         if ((_e11 < _e12)) {
         } else {
             break;
         }
         {
-            uint _e14 = i_9;
-            GpuLightBvhNode _e15 = light_bvh_node(nodes_8, _e14);
+            uint _e14 = i_10;
+            GpuLightBvhNode _e15 = light_bvh_node(nodes_9, _e14);
             if ((_e15.second == LIGHT_BVH_LEAF)) {
-                uint _e19 = i_9;
+                uint _e19 = i_10;
                 if (!((_e19 > 0u))) {
-                    float _e26 = bvh_importance(nodes_8, 0u, x_20, n_21);
+                    float _e26 = bvh_importance(nodes_9, 0u, x_20, n_21);
                     local_18 = (_e26 > 0.0);
                 } else {
                     local_18 = true;
@@ -1420,8 +1420,8 @@ BvhPick light_bvh_sample(uint nodes_8, vec3 x_20, vec3 n_21, float u_in) {
                 BvhPick _e35 = pick;
                 return _e35;
             }
-            uint _e36 = i_9;
-            float _e37 = bvh_first(nodes_8, _e36, x_20, n_21);
+            uint _e36 = i_10;
+            float _e37 = bvh_first(nodes_9, _e36, x_20, n_21);
             if ((_e37 < 0.0)) {
                 BvhPick _e40 = pick;
                 return _e40;
@@ -1433,39 +1433,39 @@ BvhPick light_bvh_sample(uint nodes_8, vec3 x_20, vec3 n_21, float u_in) {
             float _e48 = u_5;
             float _e49 = bvh_remap_u(_e48, _e37, first_1);
             u_5 = _e49;
-            uint _e51 = i_9;
-            i_9 = (first_1 ? (_e51 + 1u) : _e15.second);
+            uint _e51 = i_10;
+            i_10 = (first_1 ? (_e51 + 1u) : _e15.second);
         }
     }
     BvhPick _e55 = pick;
     return _e55;
 }
 
-float light_bvh_pmf(uint nodes_9, uint leaf, vec3 x_21, vec3 n_22) {
-    uint i_10 = 0u;
+float light_bvh_pmf(uint nodes_10, uint leaf, vec3 x_21, vec3 n_22) {
+    uint i_11 = 0u;
     float pmf_1 = 1.0;
     bool local_19 = false;
     bool local_20 = false;
-    uint _e4 = light_bvh_count(nodes_9);
+    uint _e4 = light_bvh_count(nodes_10);
     if ((leaf >= _e4)) {
         return 0.0;
     }
     while(true) {
-        uint _e11 = i_10;
-        uint _e12 = light_bvh_count(nodes_9);
+        uint _e11 = i_11;
+        uint _e12 = light_bvh_count(nodes_10);
         if ((_e11 < _e12)) {
         } else {
             break;
         }
         {
-            uint _e14 = i_10;
-            GpuLightBvhNode _e15 = light_bvh_node(nodes_9, _e14);
+            uint _e14 = i_11;
+            GpuLightBvhNode _e15 = light_bvh_node(nodes_10, _e14);
             if ((_e15.second == LIGHT_BVH_LEAF)) {
-                uint _e19 = i_10;
+                uint _e19 = i_11;
                 if ((_e19 == leaf)) {
-                    uint _e23 = i_10;
+                    uint _e23 = i_11;
                     if (!((_e23 > 0u))) {
-                        float _e30 = bvh_importance(nodes_9, 0u, x_21, n_22);
+                        float _e30 = bvh_importance(nodes_10, 0u, x_21, n_22);
                         local_20 = (_e30 > 0.0);
                     } else {
                         local_20 = true;
@@ -1482,16 +1482,16 @@ float light_bvh_pmf(uint nodes_9, uint leaf, vec3 x_21, vec3 n_22) {
                 }
                 return 0.0;
             }
-            uint _e39 = i_10;
-            float _e40 = bvh_first(nodes_9, _e39, x_21, n_22);
+            uint _e39 = i_11;
+            float _e40 = bvh_first(nodes_10, _e39, x_21, n_22);
             if ((_e40 < 0.0)) {
                 return 0.0;
             }
             bool first_2 = (leaf < _e15.second);
             float _e46 = pmf_1;
             pmf_1 = (_e46 * (first_2 ? _e40 : (1.0 - _e40)));
-            uint _e52 = i_10;
-            i_10 = (first_2 ? (_e52 + 1u) : _e15.second);
+            uint _e52 = i_11;
+            i_11 = (first_2 ? (_e52 + 1u) : _e15.second);
         }
     }
     return 0.0;
@@ -1543,14 +1543,14 @@ void main() {
     uvec3 gid = gl_GlobalInvocationID;
     uint h = 0u;
     vec3 sum = vec3(0.0);
-    uint i_11 = gid.x;
+    uint i_12 = gid.x;
     uint _e4 = _group_0_binding_0_cs.point_count;
-    if ((i_11 >= _e4)) {
+    if ((i_12 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = _group_0_binding_1_cs[i_11];
+    GpuPathVertex vtx = _group_0_binding_1_cs[i_12];
     if ((vtx.alive == 0u)) {
-        _group_0_binding_9_cs[i_11] = 0u;
+        _group_0_binding_9_cs[i_12] = 0u;
         return;
     }
     vec3 x_25 = vtx.position;
@@ -1558,10 +1558,10 @@ void main() {
     vec3 ng_4 = vtx.gnormal;
     uint _e20 = _group_0_binding_0_cs.seed;
     uint _e23 = _group_0_binding_0_cs.frame;
-    uint _e24 = point_stream(_e20, i_11, _e23);
+    uint _e24 = point_stream(_e20, i_12, _e23);
     uint _e25 = pick_stream(_e24);
     h = _e25;
-    _group_0_binding_9_cs[i_11] = 0u;
+    _group_0_binding_9_cs[i_12] = 0u;
     uint _e33 = h;
     uint _e34 = pcg_hash(_e33);
     h = _e34;
@@ -1588,8 +1588,8 @@ void main() {
     vec3 add = (vtx.weight * _e56);
     bool _e58 = finite3_(add);
     if (_e58) {
-        vec4 _e61 = _group_0_binding_8_cs[i_11];
-        _group_0_binding_8_cs[i_11] = (_e61 + vec4(add, 0.0));
+        vec4 _e61 = _group_0_binding_8_cs[i_12];
+        _group_0_binding_8_cs[i_12] = (_e61 + vec4(add, 0.0));
         return;
     } else {
         return;

@@ -227,6 +227,7 @@ static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
 static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
+static const uint BSH = 0u;
 
 ByteAddressBuffer slc_table : register(t0, space1);
 cbuffer params : register(b0) { RefitParams params; }
@@ -1402,6 +1403,75 @@ BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg
     return ret;
 }
 
+BshNode bsh_node(uint nodes, uint i_2)
+{
+    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_2*32+0)), asfloat(bsh_nodes.Load(i_2*32+12)), asuint(bsh_nodes.Load(i_2*32+16)), asuint(bsh_nodes.Load(i_2*32+20)), asuint(bsh_nodes.Load(i_2*32+24)), asuint(bsh_nodes.Load(i_2*32+28)));
+    const BshNode bshnode = _e4;
+    return bshnode;
+}
+
+uint NagaBufferLengthRW(RWByteAddressBuffer buffer)
+{
+    uint ret;
+    buffer.GetDimensions(ret);
+    return ret;
+}
+
+uint bsh_count(uint nodes_1)
+{
+    return ((NagaBufferLengthRW(bsh_nodes) - 0) / 32);
+}
+
+uint bsh_first(uint nodes_2)
+{
+    const uint _e1 = bsh_count(nodes_2);
+    if ((_e1 > 0u)) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_14)
+{
+    uint i_3 = (uint)0;
+
+    i_3 = start_1;
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e4 = i_3;
+        if ((_e4 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e7 = i_3;
+            const BshNode _e8 = bsh_node(nodes_3, _e7);
+            const bool _e11 = sphere_contains_point(_e8.center_, _e8.radius, x_14);
+            if (_e11) {
+                if ((_e8.child == BSH_NONE)) {
+                    uint _e15 = i_3;
+                    return _e15;
+                }
+                i_3 = _e8.child;
+            } else {
+                i_3 = _e8.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+float4 bsh_children_sphere(uint nodes_4, uint i_4)
+{
+    const BshNode _e2 = bsh_node(nodes_4, i_4);
+    const BshNode _e4 = bsh_node(nodes_4, _e2.child);
+    const BshNode _e6 = bsh_node(nodes_4, _e4.next);
+    const float4 _e11 = sphere_union(_e4.center_, _e4.radius, _e6.center_, _e6.radius);
+    return _e11;
+}
+
 [numthreads(64, 1, 1)]
 void main(uint3 gid : SV_DispatchThreadID)
 {
@@ -1410,19 +1480,17 @@ void main(uint3 gid : SV_DispatchThreadID)
         return;
     }
     uint _e9 = params.first;
-    uint i_2 = asuint(order.Load((_e9 + gid.x)*4));
-    BshNode node = ConstructBshNode(asfloat(bsh_nodes.Load3(i_2*32+0)), asfloat(bsh_nodes.Load(i_2*32+12)), asuint(bsh_nodes.Load(i_2*32+16)), asuint(bsh_nodes.Load(i_2*32+20)), asuint(bsh_nodes.Load(i_2*32+24)), asuint(bsh_nodes.Load(i_2*32+28)));
+    uint i_5 = asuint(order.Load((_e9 + gid.x)*4));
+    BshNode node = ConstructBshNode(asfloat(bsh_nodes.Load3(i_5*32+0)), asfloat(bsh_nodes.Load(i_5*32+12)), asuint(bsh_nodes.Load(i_5*32+16)), asuint(bsh_nodes.Load(i_5*32+20)), asuint(bsh_nodes.Load(i_5*32+24)), asuint(bsh_nodes.Load(i_5*32+28)));
     if ((node.child == BSH_NONE)) {
         float _e26 = asfloat(extent_4.Load(node.light*4));
         float _e30 = asfloat(r2_6.Load(node.light*4));
         const float _e31 = range_radius(_e26, _e30);
-        bsh_nodes.Store(12+i_2*32, asuint(_e31));
+        bsh_nodes.Store(12+i_5*32, asuint(_e31));
         return;
     }
-    BshNode left = ConstructBshNode(asfloat(bsh_nodes.Load3(node.child*32+0)), asfloat(bsh_nodes.Load(node.child*32+12)), asuint(bsh_nodes.Load(node.child*32+16)), asuint(bsh_nodes.Load(node.child*32+20)), asuint(bsh_nodes.Load(node.child*32+24)), asuint(bsh_nodes.Load(node.child*32+28)));
-    BshNode right_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(left.next*32+0)), asfloat(bsh_nodes.Load(left.next*32+12)), asuint(bsh_nodes.Load(left.next*32+16)), asuint(bsh_nodes.Load(left.next*32+20)), asuint(bsh_nodes.Load(left.next*32+24)), asuint(bsh_nodes.Load(left.next*32+28)));
-    const float4 _e44 = sphere_union(left.center_, left.radius, right_1.center_, right_1.radius);
-    bsh_nodes.Store3(0+i_2*32, asuint(_e44.xyz));
-    bsh_nodes.Store(12+i_2*32, asuint(_e44.w));
+    const float4 _e33 = bsh_children_sphere(BSH, i_5);
+    bsh_nodes.Store3(0+i_5*32, asuint(_e33.xyz));
+    bsh_nodes.Store(12+i_5*32, asuint(_e33.w));
     return;
 }

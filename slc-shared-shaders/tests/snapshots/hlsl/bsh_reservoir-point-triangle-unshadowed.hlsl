@@ -1527,30 +1527,39 @@ uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_14)
     return BSH_NONE;
 }
 
+float4 bsh_children_sphere(uint nodes_4, uint i_4)
+{
+    const BshNode _e2 = bsh_node(nodes_4, i_4);
+    const BshNode _e4 = bsh_node(nodes_4, _e2.child);
+    const BshNode _e6 = bsh_node(nodes_4, _e4.next);
+    const float4 _e11 = sphere_union(_e4.center_, _e4.radius, _e6.center_, _e6.radius);
+    return _e11;
+}
+
 Picks bsh_collect(float3 x_15, uint seed_3)
 {
     Picks picks = (Picks)0;
     uint h_2 = (uint)0;
-    uint i_4 = (uint)0;
+    uint i_5 = (uint)0;
 
     picks.n = 0u;
     h_2 = seed_3;
     const uint _e8 = bsh_first(BSH);
     const uint _e9 = bsh_next_leaf(BSH, _e8, x_15);
-    i_4 = _e9;
+    i_5 = _e9;
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init) {
-            uint _e42 = i_4;
+            uint _e42 = i_5;
             uint _e45 = asuint(bsh_nodes.Load(20+_e42*32));
             const uint _e46 = bsh_next_leaf(BSH, _e45, x_15);
-            i_4 = _e46;
+            i_5 = _e46;
         }
         loop_init = false;
-        uint _e11 = i_4;
+        uint _e11 = i_5;
         if ((_e11 != BSH_NONE)) {
         } else {
             break;
@@ -1572,7 +1581,7 @@ Picks bsh_collect(float3 x_15, uint seed_3)
                 uint _e29 = h_2;
                 const uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
                 if ((_e30 < K)) {
-                    uint _e36 = i_4;
+                    uint _e36 = i_5;
                     uint _e39 = asuint(bsh_nodes.Load(24+_e36*32));
                     picks.light[min(uint(_e30), 7u)] = _e39;
                 }
@@ -1644,22 +1653,22 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 e = (0.0).xxx;
     uint s = 0u;
 
-    uint i_5 = gid.x;
+    uint i_6 = gid.x;
     uint _e4 = params.point_count;
-    if ((i_5 >= _e4)) {
+    if ((i_6 >= _e4)) {
         return;
     }
-    float4 p_4 = asfloat(points.Load4(i_5*16));
+    float4 p_4 = asfloat(points.Load4(i_6*16));
     if ((p_4.w <= 0.0)) {
-        irradiance.Store4(i_5*16, asuint((0.0).xxxx));
+        irradiance.Store4(i_6*16, asuint((0.0).xxxx));
         return;
     }
     float3 x_17 = p_4.xyz;
-    float4 _e19 = asfloat(normals.Load4(i_5*16));
+    float4 _e19 = asfloat(normals.Load4(i_6*16));
     float3 n_20 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
-    const uint _e27 = point_stream(_e23, i_5, _e26);
+    const uint _e27 = point_stream(_e23, i_6, _e26);
     const Picks _e28 = bsh_collect(x_17, _e27);
     const float _e31 = reservoir_weight(_e28.n, K);
     const uint _e32 = pick_stream(_e27);
@@ -1698,6 +1707,6 @@ void main(uint3 gid : SV_DispatchThreadID)
         }
     }
     float3 _e67 = e;
-    irradiance.Store4(i_5*16, asuint(float4(_e67, float(_e28.n))));
+    irradiance.Store4(i_6*16, asuint(float4(_e67, float(_e28.n))));
     return;
 }

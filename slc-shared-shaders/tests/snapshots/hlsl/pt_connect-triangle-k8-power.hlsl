@@ -1653,30 +1653,39 @@ uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_14)
     return BSH_NONE;
 }
 
+float4 bsh_children_sphere(uint nodes_4, uint i_5)
+{
+    const BshNode _e2 = bsh_node(nodes_4, i_5);
+    const BshNode _e4 = bsh_node(nodes_4, _e2.child);
+    const BshNode _e6 = bsh_node(nodes_4, _e4.next);
+    const float4 _e11 = sphere_union(_e4.center_, _e4.radius, _e6.center_, _e6.radius);
+    return _e11;
+}
+
 Picks bsh_collect(float3 x_15, uint seed_3)
 {
     Picks picks = (Picks)0;
     uint h_2 = (uint)0;
-    uint i_5 = (uint)0;
+    uint i_6 = (uint)0;
 
     picks.n = 0u;
     h_2 = seed_3;
     const uint _e8 = bsh_first(BSH);
     const uint _e9 = bsh_next_leaf(BSH, _e8, x_15);
-    i_5 = _e9;
+    i_6 = _e9;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e42 = i_5;
+            uint _e42 = i_6;
             uint _e45 = asuint(bsh_nodes.Load(20+_e42*32));
             const uint _e46 = bsh_next_leaf(BSH, _e45, x_15);
-            i_5 = _e46;
+            i_6 = _e46;
         }
         loop_init_1 = false;
-        uint _e11 = i_5;
+        uint _e11 = i_6;
         if ((_e11 != BSH_NONE)) {
         } else {
             break;
@@ -1698,7 +1707,7 @@ Picks bsh_collect(float3 x_15, uint seed_3)
                 uint _e29 = h_2;
                 const uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
                 if ((_e30 < K)) {
-                    uint _e36 = i_5;
+                    uint _e36 = i_6;
                     uint _e39 = asuint(bsh_nodes.Load(24+_e36*32));
                     picks.light[min(uint(_e30), 7u)] = _e39;
                 }
@@ -1803,33 +1812,33 @@ GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, f
     return ret;
 }
 
-GpuLightBvhNode light_bvh_node(uint nodes_4, uint i_6)
+GpuLightBvhNode light_bvh_node(uint nodes_5, uint i_7)
 {
-    GpuLightBvhNode _e4 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_6*48+0)), asfloat(light_bvh.Load(i_6*48+12)), asfloat(light_bvh.Load3(i_6*48+16)), asfloat(light_bvh.Load(i_6*48+28)), asfloat(light_bvh.Load(i_6*48+32)), asfloat(light_bvh.Load(i_6*48+36)), asuint(light_bvh.Load(i_6*48+40)), asuint(light_bvh.Load(i_6*48+44)));
+    GpuLightBvhNode _e4 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_7*48+0)), asfloat(light_bvh.Load(i_7*48+12)), asfloat(light_bvh.Load3(i_7*48+16)), asfloat(light_bvh.Load(i_7*48+28)), asfloat(light_bvh.Load(i_7*48+32)), asfloat(light_bvh.Load(i_7*48+36)), asuint(light_bvh.Load(i_7*48+40)), asuint(light_bvh.Load(i_7*48+44)));
     const GpuLightBvhNode gpulightbvhnode = _e4;
     return gpulightbvhnode;
 }
 
-uint light_bvh_count(uint nodes_5)
+uint light_bvh_count(uint nodes_6)
 {
     return ((NagaBufferLength(light_bvh) - 0) / 48);
 }
 
-float bvh_importance(uint nodes_6, uint i_7, float3 x_18, float3 n_19)
+float bvh_importance(uint nodes_7, uint i_8, float3 x_18, float3 n_19)
 {
-    const GpuLightBvhNode _e4 = light_bvh_node(nodes_6, i_7);
+    const GpuLightBvhNode _e4 = light_bvh_node(nodes_7, i_8);
     const float _e11 = light_importance(_e4.center_, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_18, n_19);
     return _e11;
 }
 
-float bvh_first(uint nodes_7, uint i_8, float3 x_19, float3 n_20)
+float bvh_first(uint nodes_8, uint i_9, float3 x_19, float3 n_20)
 {
     bool local_17 = (bool)0;
 
-    const GpuLightBvhNode _e4 = light_bvh_node(nodes_7, i_8);
+    const GpuLightBvhNode _e4 = light_bvh_node(nodes_8, i_9);
     uint j = _e4.second;
-    if (!((j <= (i_8 + 1u)))) {
-        const uint _e12 = light_bvh_count(nodes_7);
+    if (!((j <= (i_9 + 1u)))) {
+        const uint _e12 = light_bvh_count(nodes_8);
         local_17 = (j >= _e12);
     } else {
         local_17 = true;
@@ -1838,8 +1847,8 @@ float bvh_first(uint nodes_7, uint i_8, float3 x_19, float3 n_20)
     if (_e15) {
         return -1.0;
     }
-    const float _e19 = bvh_importance(nodes_7, (i_8 + 1u), x_19, n_20);
-    const float _e20 = bvh_importance(nodes_7, j, x_19, n_20);
+    const float _e19 = bvh_importance(nodes_8, (i_9 + 1u), x_19, n_20);
+    const float _e20 = bvh_importance(nodes_8, j, x_19, n_20);
     const float _e21 = bvh_first_prob(_e19, _e20);
     return _e21;
 }
@@ -1857,11 +1866,11 @@ BvhPick bvh_pick_none()
     return bvhpick;
 }
 
-BvhPick light_bvh_sample(uint nodes_8, float3 x_20, float3 n_21, float u_in)
+BvhPick light_bvh_sample(uint nodes_9, float3 x_20, float3 n_21, float u_in)
 {
     BvhPick pick = (BvhPick)0;
     float u_5 = (float)0;
-    uint i_9 = 0u;
+    uint i_10 = 0u;
     float pmf = 1.0;
     bool local_18 = (bool)0;
 
@@ -1872,19 +1881,19 @@ BvhPick light_bvh_sample(uint nodes_8, float3 x_20, float3 n_21, float u_in)
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        uint _e11 = i_9;
-        const uint _e12 = light_bvh_count(nodes_8);
+        uint _e11 = i_10;
+        const uint _e12 = light_bvh_count(nodes_9);
         if ((_e11 < _e12)) {
         } else {
             break;
         }
         {
-            uint _e14 = i_9;
-            const GpuLightBvhNode _e15 = light_bvh_node(nodes_8, _e14);
+            uint _e14 = i_10;
+            const GpuLightBvhNode _e15 = light_bvh_node(nodes_9, _e14);
             if ((_e15.second == LIGHT_BVH_LEAF)) {
-                uint _e19 = i_9;
+                uint _e19 = i_10;
                 if (!((_e19 > 0u))) {
-                    const float _e26 = bvh_importance(nodes_8, 0u, x_20, n_21);
+                    const float _e26 = bvh_importance(nodes_9, 0u, x_20, n_21);
                     local_18 = (_e26 > 0.0);
                 } else {
                     local_18 = true;
@@ -1899,8 +1908,8 @@ BvhPick light_bvh_sample(uint nodes_8, float3 x_20, float3 n_21, float u_in)
                 const BvhPick bvhpick_1 = _e35;
                 return bvhpick_1;
             }
-            uint _e36 = i_9;
-            const float _e37 = bvh_first(nodes_8, _e36, x_20, n_21);
+            uint _e36 = i_10;
+            const float _e37 = bvh_first(nodes_9, _e36, x_20, n_21);
             if ((_e37 < 0.0)) {
                 BvhPick _e40 = pick;
                 const BvhPick bvhpick_2 = _e40;
@@ -1913,8 +1922,8 @@ BvhPick light_bvh_sample(uint nodes_8, float3 x_20, float3 n_21, float u_in)
             float _e48 = u_5;
             const float _e49 = bvh_remap_u(_e48, _e37, first_1);
             u_5 = _e49;
-            uint _e51 = i_9;
-            i_9 = (first_1 ? (_e51 + 1u) : _e15.second);
+            uint _e51 = i_10;
+            i_10 = (first_1 ? (_e51 + 1u) : _e15.second);
         }
     }
     BvhPick _e55 = pick;
@@ -1922,14 +1931,14 @@ BvhPick light_bvh_sample(uint nodes_8, float3 x_20, float3 n_21, float u_in)
     return bvhpick_3;
 }
 
-float light_bvh_pmf(uint nodes_9, uint leaf, float3 x_21, float3 n_22)
+float light_bvh_pmf(uint nodes_10, uint leaf, float3 x_21, float3 n_22)
 {
-    uint i_10 = 0u;
+    uint i_11 = 0u;
     float pmf_1 = 1.0;
     bool local_19 = (bool)0;
     bool local_20 = (bool)0;
 
-    const uint _e4 = light_bvh_count(nodes_9);
+    const uint _e4 = light_bvh_count(nodes_10);
     if ((leaf >= _e4)) {
         return 0.0;
     }
@@ -1937,21 +1946,21 @@ float light_bvh_pmf(uint nodes_9, uint leaf, float3 x_21, float3 n_22)
     while(true) {
         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e11 = i_10;
-        const uint _e12 = light_bvh_count(nodes_9);
+        uint _e11 = i_11;
+        const uint _e12 = light_bvh_count(nodes_10);
         if ((_e11 < _e12)) {
         } else {
             break;
         }
         {
-            uint _e14 = i_10;
-            const GpuLightBvhNode _e15 = light_bvh_node(nodes_9, _e14);
+            uint _e14 = i_11;
+            const GpuLightBvhNode _e15 = light_bvh_node(nodes_10, _e14);
             if ((_e15.second == LIGHT_BVH_LEAF)) {
-                uint _e19 = i_10;
+                uint _e19 = i_11;
                 if ((_e19 == leaf)) {
-                    uint _e23 = i_10;
+                    uint _e23 = i_11;
                     if (!((_e23 > 0u))) {
-                        const float _e30 = bvh_importance(nodes_9, 0u, x_21, n_22);
+                        const float _e30 = bvh_importance(nodes_10, 0u, x_21, n_22);
                         local_20 = (_e30 > 0.0);
                     } else {
                         local_20 = true;
@@ -1968,16 +1977,16 @@ float light_bvh_pmf(uint nodes_9, uint leaf, float3 x_21, float3 n_22)
                 }
                 return 0.0;
             }
-            uint _e39 = i_10;
-            const float _e40 = bvh_first(nodes_9, _e39, x_21, n_22);
+            uint _e39 = i_11;
+            const float _e40 = bvh_first(nodes_10, _e39, x_21, n_22);
             if ((_e40 < 0.0)) {
                 return 0.0;
             }
             bool first_2 = (leaf < _e15.second);
             float _e46 = pmf_1;
             pmf_1 = (_e46 * (first_2 ? _e40 : (1.0 - _e40)));
-            uint _e52 = i_10;
-            i_10 = (first_2 ? (_e52 + 1u) : _e15.second);
+            uint _e52 = i_11;
+            i_11 = (first_2 ? (_e52 + 1u) : _e15.second);
         }
     }
     return 0.0;
@@ -2048,14 +2057,14 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 sum = (0.0).xxx;
     uint s = 0u;
 
-    uint i_11 = gid.x;
+    uint i_12 = gid.x;
     uint _e4 = params.point_count;
-    if ((i_11 >= _e4)) {
+    if ((i_12 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_11*64+0)), asuint(vertices_.Load(i_11*64+12)), asfloat(vertices_.Load3(i_11*64+16)), asfloat(vertices_.Load(i_11*64+28)), asfloat(vertices_.Load3(i_11*64+32)), asfloat(vertices_.Load(i_11*64+44)), asfloat(vertices_.Load3(i_11*64+48)), asfloat(vertices_.Load(i_11*64+60)));
+    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_12*64+0)), asuint(vertices_.Load(i_12*64+12)), asfloat(vertices_.Load3(i_12*64+16)), asfloat(vertices_.Load(i_12*64+28)), asfloat(vertices_.Load3(i_12*64+32)), asfloat(vertices_.Load(i_12*64+44)), asfloat(vertices_.Load3(i_12*64+48)), asfloat(vertices_.Load(i_12*64+60)));
     if ((vtx.alive == 0u)) {
-        candidates.Store(i_11*4, asuint(0u));
+        candidates.Store(i_12*4, asuint(0u));
         return;
     }
     float3 x_25 = vtx.position;
@@ -2063,11 +2072,11 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 ng_4 = vtx.gnormal;
     uint _e20 = params.seed;
     uint _e23 = params.frame;
-    const uint _e24 = point_stream(_e20, i_11, _e23);
+    const uint _e24 = point_stream(_e20, i_12, _e23);
     const uint _e25 = pick_stream(_e24);
     h = _e25;
     const Picks _e30 = bsh_collect(x_25, _e24);
-    candidates.Store(i_11*4, asuint(_e30.n));
+    candidates.Store(i_12*4, asuint(_e30.n));
     const float _e36 = reservoir_weight(_e30.n, K);
     uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
@@ -2105,8 +2114,8 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 add = (vtx.weight * _e63);
     const bool _e65 = finite3_(add);
     if (_e65) {
-        float4 _e68 = asfloat(radiance.Load4(i_11*16));
-        radiance.Store4(i_11*16, asuint((_e68 + float4(add, 0.0))));
+        float4 _e68 = asfloat(radiance.Load4(i_12*16));
+        radiance.Store4(i_12*16, asuint((_e68 + float4(add, 0.0))));
         return;
     } else {
         return;

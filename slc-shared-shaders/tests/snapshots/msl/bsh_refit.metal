@@ -197,6 +197,7 @@ struct GpuLightBvhNode {
 };
 typedef uint type_6[1];
 typedef BshNode type_7[1];
+typedef uint BshNodes;
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -225,6 +226,7 @@ constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
 constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
+constant BshNodes BSH = 0u;
 
 float at(
     Table tab,
@@ -1684,6 +1686,85 @@ metal::float3 diffuse_radiance(
     return emission + ((albedo * INV_PI) * e_2);
 }
 
+BshNode bsh_node(
+    BshNodes nodes,
+    uint i_2,
+    device type_7 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshNode _e4 = bsh_nodes[i_2];
+    return _e4;
+}
+
+uint bsh_count(
+    BshNodes nodes_1,
+    device type_7 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    return 1 + (_buffer_sizes.size5 - 0 - 32) / 32;
+}
+
+uint bsh_first(
+    BshNodes nodes_2,
+    device type_7 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e1 = bsh_count(nodes_2, bsh_nodes, _buffer_sizes);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+uint bsh_next_leaf(
+    BshNodes nodes_3,
+    uint start_1,
+    metal::float3 x_14,
+    device type_7 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint i_3 = {};
+    i_3 = start_1;
+    uint2 loop_bound_1 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e4 = i_3;
+        if (_e4 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            uint _e7 = i_3;
+            BshNode _e8 = bsh_node(nodes_3, _e7, bsh_nodes, _buffer_sizes);
+            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            if (_e11) {
+                if (_e8.child == BSH_NONE) {
+                    uint _e15 = i_3;
+                    return _e15;
+                }
+                i_3 = _e8.child;
+            } else {
+                i_3 = _e8.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+metal::float4 bsh_children_sphere(
+    BshNodes nodes_4,
+    uint i_4,
+    device type_7 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshNode _e2 = bsh_node(nodes_4, i_4, bsh_nodes, _buffer_sizes);
+    BshNode _e4 = bsh_node(nodes_4, _e2.child, bsh_nodes, _buffer_sizes);
+    BshNode _e6 = bsh_node(nodes_4, _e4.next, bsh_nodes, _buffer_sizes);
+    metal::float4 _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
+    return _e11;
+}
+
 struct main_Input {
 };
 kernel void main_(
@@ -1700,19 +1781,17 @@ kernel void main_(
         return;
     }
     uint _e9 = params.first;
-    uint i_2 = order[_e9 + gid.x];
-    BshNode node = bsh_nodes[i_2];
+    uint i_5 = order[_e9 + gid.x];
+    BshNode node = bsh_nodes[i_5];
     if (node.child == BSH_NONE) {
         float _e26 = extent_4[node.light];
         float _e30 = r2_6[node.light];
         float _e31 = range_radius(_e26, _e30);
-        bsh_nodes[i_2].radius = _e31;
+        bsh_nodes[i_5].radius = _e31;
         return;
     }
-    BshNode left = bsh_nodes[node.child];
-    BshNode right_1 = bsh_nodes[left.next];
-    metal::float4 _e44 = sphere_union(left.center, left.radius, right_1.center, right_1.radius);
-    bsh_nodes[i_2].center = _e44.xyz;
-    bsh_nodes[i_2].radius = _e44.w;
+    metal::float4 _e33 = bsh_children_sphere(BSH, i_5, bsh_nodes, _buffer_sizes);
+    bsh_nodes[i_5].center = _e33.xyz;
+    bsh_nodes[i_5].radius = _e33.w;
     return;
 }

@@ -1826,6 +1826,19 @@ uint bsh_next_leaf(
     return BSH_NONE;
 }
 
+metal::float4 bsh_children_sphere(
+    BshNodes nodes_4,
+    uint i_4,
+    device type_7 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshNode _e2 = bsh_node(nodes_4, i_4, bsh_nodes, _buffer_sizes);
+    BshNode _e4 = bsh_node(nodes_4, _e2.child, bsh_nodes, _buffer_sizes);
+    BshNode _e6 = bsh_node(nodes_4, _e4.next, bsh_nodes, _buffer_sizes);
+    metal::float4 _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
+    return _e11;
+}
+
 Picks bsh_collect(
     metal::float3 x_15,
     uint seed_3,
@@ -1834,25 +1847,25 @@ Picks bsh_collect(
 ) {
     Picks picks = {};
     uint h_2 = {};
-    uint i_4 = {};
+    uint i_5 = {};
     picks.n = 0u;
     h_2 = seed_3;
     uint _e8 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
     uint _e9 = bsh_next_leaf(BSH, _e8, x_15, bsh_nodes, _buffer_sizes);
-    i_4 = _e9;
+    i_5 = _e9;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init) {
-            uint _e42 = i_4;
+            uint _e42 = i_5;
             uint _e45 = bsh_nodes[_e42].next;
             uint _e46 = bsh_next_leaf(BSH, _e45, x_15, bsh_nodes, _buffer_sizes);
-            i_4 = _e46;
+            i_5 = _e46;
         }
         loop_init = false;
-        uint _e11 = i_4;
+        uint _e11 = i_5;
         if (_e11 != BSH_NONE) {
         } else {
             break;
@@ -1874,7 +1887,7 @@ Picks bsh_collect(
                 uint _e29 = h_2;
                 uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
                 if (_e30 < K) {
-                    uint _e36 = i_4;
+                    uint _e36 = i_5;
                     uint _e39 = bsh_nodes[_e36].light;
                     picks.light.inner[_e30] = _e39;
                 }
@@ -1951,22 +1964,22 @@ kernel void main_(
     uint h = {};
     metal::float3 e = metal::float3(0.0);
     uint s = 0u;
-    uint i_5 = gid.x;
+    uint i_6 = gid.x;
     uint _e4 = params.point_count;
-    if (i_5 >= _e4) {
+    if (i_6 >= _e4) {
         return;
     }
-    metal::float4 p_4 = points[i_5];
+    metal::float4 p_4 = points[i_6];
     if (p_4.w <= 0.0) {
-        irradiance[i_5] = metal::float4(0.0);
+        irradiance[i_6] = metal::float4(0.0);
         return;
     }
     metal::float3 x_17 = p_4.xyz;
-    metal::float4 _e19 = normals[i_5];
+    metal::float4 _e19 = normals[i_6];
     metal::float3 n_20 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
-    uint _e27 = point_stream(_e23, i_5, _e26);
+    uint _e27 = point_stream(_e23, i_6, _e26);
     Picks _e28 = bsh_collect(x_17, _e27, bsh_nodes, _buffer_sizes);
     float _e31 = reservoir_weight(_e28.n, K);
     uint _e32 = pick_stream(_e27);
@@ -2005,6 +2018,6 @@ kernel void main_(
         }
     }
     metal::float3 _e67 = e;
-    irradiance[i_5] = metal::float4(_e67, static_cast<float>(_e28.n));
+    irradiance[i_6] = metal::float4(_e67, static_cast<float>(_e28.n));
     return;
 }

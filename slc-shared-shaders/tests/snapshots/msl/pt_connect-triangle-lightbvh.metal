@@ -1947,6 +1947,19 @@ uint bsh_next_leaf(
     return BSH_NONE;
 }
 
+metal::float4 bsh_children_sphere(
+    BshNodes nodes_4,
+    uint i_5,
+    device type_10 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshNode _e2 = bsh_node(nodes_4, i_5, bsh_nodes, _buffer_sizes);
+    BshNode _e4 = bsh_node(nodes_4, _e2.child, bsh_nodes, _buffer_sizes);
+    BshNode _e6 = bsh_node(nodes_4, _e4.next, bsh_nodes, _buffer_sizes);
+    metal::float4 _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
+    return _e11;
+}
+
 Picks bsh_collect(
     metal::float3 x_15,
     uint seed_3,
@@ -1955,25 +1968,25 @@ Picks bsh_collect(
 ) {
     Picks picks = {};
     uint h_2 = {};
-    uint i_5 = {};
+    uint i_6 = {};
     picks.n = 0u;
     h_2 = seed_3;
     uint _e8 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
     uint _e9 = bsh_next_leaf(BSH, _e8, x_15, bsh_nodes, _buffer_sizes);
-    i_5 = _e9;
+    i_6 = _e9;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e42 = i_5;
+            uint _e42 = i_6;
             uint _e45 = bsh_nodes[_e42].next;
             uint _e46 = bsh_next_leaf(BSH, _e45, x_15, bsh_nodes, _buffer_sizes);
-            i_5 = _e46;
+            i_6 = _e46;
         }
         loop_init_1 = false;
-        uint _e11 = i_5;
+        uint _e11 = i_6;
         if (_e11 != BSH_NONE) {
         } else {
             break;
@@ -1995,7 +2008,7 @@ Picks bsh_collect(
                 uint _e29 = h_2;
                 uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
                 if (_e30 < K) {
-                    uint _e36 = i_5;
+                    uint _e36 = i_6;
                     uint _e39 = bsh_nodes[_e36].light;
                     picks.light.inner[_e30] = _e39;
                 }
@@ -2080,17 +2093,17 @@ float light_weight(
 }
 
 GpuLightBvhNode light_bvh_node(
-    BvhNodes nodes_4,
-    uint i_6,
+    BvhNodes nodes_5,
+    uint i_7,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightBvhNode _e4 = light_bvh[i_6];
+    GpuLightBvhNode _e4 = light_bvh[i_7];
     return _e4;
 }
 
 uint light_bvh_count(
-    BvhNodes nodes_5,
+    BvhNodes nodes_6,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2098,31 +2111,31 @@ uint light_bvh_count(
 }
 
 float bvh_importance(
-    BvhNodes nodes_6,
-    uint i_7,
+    BvhNodes nodes_7,
+    uint i_8,
     metal::float3 x_18,
     metal::float3 n_19,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightBvhNode _e4 = light_bvh_node(nodes_6, i_7, light_bvh, _buffer_sizes);
+    GpuLightBvhNode _e4 = light_bvh_node(nodes_7, i_8, light_bvh, _buffer_sizes);
     float _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_18, n_19);
     return _e11;
 }
 
 float bvh_first(
-    BvhNodes nodes_7,
-    uint i_8,
+    BvhNodes nodes_8,
+    uint i_9,
     metal::float3 x_19,
     metal::float3 n_20,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool local_17 = {};
-    GpuLightBvhNode _e4 = light_bvh_node(nodes_7, i_8, light_bvh, _buffer_sizes);
+    GpuLightBvhNode _e4 = light_bvh_node(nodes_8, i_9, light_bvh, _buffer_sizes);
     uint j = _e4.second;
-    if (!((j <= (i_8 + 1u)))) {
-        uint _e12 = light_bvh_count(nodes_7, light_bvh, _buffer_sizes);
+    if (!((j <= (i_9 + 1u)))) {
+        uint _e12 = light_bvh_count(nodes_8, light_bvh, _buffer_sizes);
         local_17 = j >= _e12;
     } else {
         local_17 = true;
@@ -2131,8 +2144,8 @@ float bvh_first(
     if (_e15) {
         return -1.0;
     }
-    float _e19 = bvh_importance(nodes_7, i_8 + 1u, x_19, n_20, light_bvh, _buffer_sizes);
-    float _e20 = bvh_importance(nodes_7, j, x_19, n_20, light_bvh, _buffer_sizes);
+    float _e19 = bvh_importance(nodes_8, i_9 + 1u, x_19, n_20, light_bvh, _buffer_sizes);
+    float _e20 = bvh_importance(nodes_8, j, x_19, n_20, light_bvh, _buffer_sizes);
     float _e21 = bvh_first_prob(_e19, _e20);
     return _e21;
 }
@@ -2143,7 +2156,7 @@ BvhPick bvh_pick_none(
 }
 
 BvhPick light_bvh_sample(
-    BvhNodes nodes_8,
+    BvhNodes nodes_9,
     metal::float3 x_20,
     metal::float3 n_21,
     float u_in,
@@ -2152,7 +2165,7 @@ BvhPick light_bvh_sample(
 ) {
     BvhPick pick = {};
     float u_5 = {};
-    uint i_9 = 0u;
+    uint i_10 = 0u;
     float pmf = 1.0;
     bool local_18 = {};
     BvhPick _e4 = bvh_pick_none();
@@ -2162,19 +2175,19 @@ BvhPick light_bvh_sample(
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        uint _e11 = i_9;
-        uint _e12 = light_bvh_count(nodes_8, light_bvh, _buffer_sizes);
+        uint _e11 = i_10;
+        uint _e12 = light_bvh_count(nodes_9, light_bvh, _buffer_sizes);
         if (_e11 < _e12) {
         } else {
             break;
         }
         {
-            uint _e14 = i_9;
-            GpuLightBvhNode _e15 = light_bvh_node(nodes_8, _e14, light_bvh, _buffer_sizes);
+            uint _e14 = i_10;
+            GpuLightBvhNode _e15 = light_bvh_node(nodes_9, _e14, light_bvh, _buffer_sizes);
             if (_e15.second == LIGHT_BVH_LEAF) {
-                uint _e19 = i_9;
+                uint _e19 = i_10;
                 if (!((_e19 > 0u))) {
-                    float _e26 = bvh_importance(nodes_8, 0u, x_20, n_21, light_bvh, _buffer_sizes);
+                    float _e26 = bvh_importance(nodes_9, 0u, x_20, n_21, light_bvh, _buffer_sizes);
                     local_18 = _e26 > 0.0;
                 } else {
                     local_18 = true;
@@ -2188,8 +2201,8 @@ BvhPick light_bvh_sample(
                 BvhPick _e35 = pick;
                 return _e35;
             }
-            uint _e36 = i_9;
-            float _e37 = bvh_first(nodes_8, _e36, x_20, n_21, light_bvh, _buffer_sizes);
+            uint _e36 = i_10;
+            float _e37 = bvh_first(nodes_9, _e36, x_20, n_21, light_bvh, _buffer_sizes);
             if (_e37 < 0.0) {
                 BvhPick _e40 = pick;
                 return _e40;
@@ -2201,8 +2214,8 @@ BvhPick light_bvh_sample(
             float _e48 = u_5;
             float _e49 = bvh_remap_u(_e48, _e37, first_1);
             u_5 = _e49;
-            uint _e51 = i_9;
-            i_9 = first_1 ? (_e51 + 1u) : _e15.second;
+            uint _e51 = i_10;
+            i_10 = first_1 ? (_e51 + 1u) : _e15.second;
         }
     }
     BvhPick _e55 = pick;
@@ -2210,18 +2223,18 @@ BvhPick light_bvh_sample(
 }
 
 float light_bvh_pmf(
-    BvhNodes nodes_9,
+    BvhNodes nodes_10,
     uint leaf,
     metal::float3 x_21,
     metal::float3 n_22,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_10 = 0u;
+    uint i_11 = 0u;
     float pmf_1 = 1.0;
     bool local_19 = {};
     bool local_20 = {};
-    uint _e4 = light_bvh_count(nodes_9, light_bvh, _buffer_sizes);
+    uint _e4 = light_bvh_count(nodes_10, light_bvh, _buffer_sizes);
     if (leaf >= _e4) {
         return 0.0;
     }
@@ -2229,21 +2242,21 @@ float light_bvh_pmf(
     while(true) {
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e11 = i_10;
-        uint _e12 = light_bvh_count(nodes_9, light_bvh, _buffer_sizes);
+        uint _e11 = i_11;
+        uint _e12 = light_bvh_count(nodes_10, light_bvh, _buffer_sizes);
         if (_e11 < _e12) {
         } else {
             break;
         }
         {
-            uint _e14 = i_10;
-            GpuLightBvhNode _e15 = light_bvh_node(nodes_9, _e14, light_bvh, _buffer_sizes);
+            uint _e14 = i_11;
+            GpuLightBvhNode _e15 = light_bvh_node(nodes_10, _e14, light_bvh, _buffer_sizes);
             if (_e15.second == LIGHT_BVH_LEAF) {
-                uint _e19 = i_10;
+                uint _e19 = i_11;
                 if (_e19 == leaf) {
-                    uint _e23 = i_10;
+                    uint _e23 = i_11;
                     if (!((_e23 > 0u))) {
-                        float _e30 = bvh_importance(nodes_9, 0u, x_21, n_22, light_bvh, _buffer_sizes);
+                        float _e30 = bvh_importance(nodes_10, 0u, x_21, n_22, light_bvh, _buffer_sizes);
                         local_20 = _e30 > 0.0;
                     } else {
                         local_20 = true;
@@ -2260,16 +2273,16 @@ float light_bvh_pmf(
                 }
                 return 0.0;
             }
-            uint _e39 = i_10;
-            float _e40 = bvh_first(nodes_9, _e39, x_21, n_22, light_bvh, _buffer_sizes);
+            uint _e39 = i_11;
+            float _e40 = bvh_first(nodes_10, _e39, x_21, n_22, light_bvh, _buffer_sizes);
             if (_e40 < 0.0) {
                 return 0.0;
             }
             bool first_2 = leaf < _e15.second;
             float _e46 = pmf_1;
             pmf_1 = _e46 * (first_2 ? _e40 : (1.0 - _e40));
-            uint _e52 = i_10;
-            i_10 = first_2 ? (_e52 + 1u) : _e15.second;
+            uint _e52 = i_11;
+            i_11 = first_2 ? (_e52 + 1u) : _e15.second;
         }
     }
     return 0.0;
@@ -2375,14 +2388,14 @@ kernel void main_(
 ) {
     uint h = {};
     metal::float3 sum = metal::float3(0.0);
-    uint i_11 = gid.x;
+    uint i_12 = gid.x;
     uint _e4 = params.point_count;
-    if (i_11 >= _e4) {
+    if (i_12 >= _e4) {
         return;
     }
-    GpuPathVertex vtx = vertices[i_11];
+    GpuPathVertex vtx = vertices[i_12];
     if (vtx.alive == 0u) {
-        candidates[i_11] = 0u;
+        candidates[i_12] = 0u;
         return;
     }
     metal::float3 x_25 = vtx.position;
@@ -2390,10 +2403,10 @@ kernel void main_(
     metal::float3 ng_4 = vtx.gnormal;
     uint _e20 = params.seed;
     uint _e23 = params.frame;
-    uint _e24 = point_stream(_e20, i_11, _e23);
+    uint _e24 = point_stream(_e20, i_12, _e23);
     uint _e25 = pick_stream(_e24);
     h = _e25;
-    candidates[i_11] = 0u;
+    candidates[i_12] = 0u;
     uint _e33 = h;
     uint _e34 = pcg_hash(_e33);
     h = _e34;
@@ -2420,8 +2433,8 @@ kernel void main_(
     metal::float3 add = vtx.weight * _e56;
     bool _e58 = finite3_(add);
     if (_e58) {
-        metal::float4 _e61 = radiance[i_11];
-        radiance[i_11] = _e61 + metal::float4(add, 0.0);
+        metal::float4 _e61 = radiance[i_12];
+        radiance[i_12] = _e61 + metal::float4(add, 0.0);
         return;
     } else {
         return;
