@@ -97,6 +97,14 @@ crate::shared! {
         return 1.0 / reservoir_weight(others + 1, k);
     }
 
+    /// Walker's alias method's second choice: the table column `column`
+    /// (drawn by [`uniform_light`]) keeps its own index when `u < keep`
+    /// (its probability of staying) and gives its alias `other` otherwise;
+    /// `u` uniform in `[0, 1)`.
+    pub fn alias_choice(column: u32, other: u32, keep: f32, u: f32) -> u32 {
+        return select(other, column, u < keep);
+    }
+
     /// Light `⌊u·n⌋` (at most `n − 1`) of `n > 0`, for uniform `u ∈ [0, 1)`:
     /// the uniform one-light pick, each light with probability `1/n`.
     pub fn uniform_light(u: f32, n: u32) -> u32 {

@@ -37,11 +37,13 @@ impl AliasTable {
         AliasTable { prob, alias, pdf }
     }
 
-    /// Index for uniforms `u1, u2 ∈ [0, 1)`.
-    pub fn sample(&self, u1: f64, u2: f64) -> usize {
-        let n = self.prob.len();
-        let i = ((u1 * n as f64) as usize).min(n - 1);
-        if u2 < self.prob[i] { i } else { self.alias[i] }
+    /// Index for uniforms `u1, u2 ∈ [0, 1)`, as the GPU draws it from
+    /// [`AliasTable::entries`] in f32: the column by slc-core's
+    /// `uniform_light`, then `alias_choice` against the column's keep
+    /// probability.
+    pub fn sample(&self, u1: f32, u2: f32) -> usize {
+        let i = slc_core::reservoir::uniform_light(u1, self.prob.len() as u32);
+        slc_core::reservoir::alias_choice(i, self.alias[i as usize] as u32, self.prob[i as usize] as f32, u2) as usize
     }
 
     /// Probability of index `i`.
@@ -71,7 +73,7 @@ mod tests {
         let mut count = [0usize; 5];
         for a in 0..m {
             for b in 0..m {
-                count[t.sample((a as f64 + 0.5) / m as f64, (b as f64 + 0.5) / m as f64)] += 1;
+                count[t.sample((a as f32 + 0.5) / m as f32, (b as f32 + 0.5) / m as f32)] += 1;
             }
         }
         for i in 0..5 {

@@ -267,7 +267,7 @@ impl CpuPathTracer {
                     }
                     PtMethod::Power => {
                         let alias = self.pts.light_set().alias();
-                        let l = alias.sample(u as f64, xi_from_bits(rng.next_u32()) as f64);
+                        let l = alias.sample(u, xi_from_bits(rng.next_u32()));
                         Some((l, alias.pdf(l) as f32))
                     }
                     _ => self.pts.light_bvh().sample(x, n, u),

@@ -119,7 +119,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
 {% if selection == "power" %}
     h = pcg_hash(h);
     let entry = power_table[li];
-    li = select(bitcast<u32>(entry.y), li, xi_from_bits(h) < entry.x);
+    li = alias_choice(li, bitcast<u32>(entry.y), entry.x, xi_from_bits(h));
 {% endif %}
     let pmf = select_pdf(li, x, n, 0u, true);
 {% endif %}

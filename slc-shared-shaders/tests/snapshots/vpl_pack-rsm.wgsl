@@ -798,9 +798,13 @@ fn reservoir_select_pdf(seen: u32, in_range: bool, k_3: u32) -> f32 {
     return (1f / _e15);
 }
 
-fn uniform_light(u_2: f32, n_8: u32) -> u32 {
+fn alias_choice(column: u32, other: u32, keep: f32, u_2: f32) -> u32 {
+    return select(other, column, (u_2 < keep));
+}
+
+fn uniform_light(u_3: f32, n_8: u32) -> u32 {
     let _e2 = to_f32_(n_8);
-    let _e4 = to_u32_((u_2 * _e2));
+    let _e4 = to_u32_((u_3 * _e2));
     return min(_e4, (n_8 - 1u));
 }
 
@@ -883,11 +887,11 @@ fn bvh_first_prob(c0_: f32, c1_2: f32) -> f32 {
     return -1f;
 }
 
-fn bvh_remap_u(u_3: f32, p0_: f32, first: bool) -> f32 {
+fn bvh_remap_u(u_4: f32, p0_: f32, first: bool) -> f32 {
     if first {
-        return min((u_3 / p0_), ONE_MINUS_EPSILON);
+        return min((u_4 / p0_), ONE_MINUS_EPSILON);
     }
-    return clamp(((u_3 - p0_) / (1f - p0_)), 0f, ONE_MINUS_EPSILON);
+    return clamp(((u_4 - p0_) / (1f - p0_)), 0f, ONE_MINUS_EPSILON);
 }
 
 fn surface_offset(diag: f32) -> f32 {
@@ -995,9 +999,9 @@ fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
     }
     let inv = (1f / det);
     let s_2 = (o_1 - a_7);
-    let u_5 = (dot(s_2, p_4) * inv);
-    if !((u_5 < 0f)) {
-        local_8 = (u_5 > 1f);
+    let u_6 = (dot(s_2, p_4) * inv);
+    if !((u_6 < 0f)) {
+        local_8 = (u_6 > 1f);
     } else {
         local_8 = true;
     }
@@ -1008,7 +1012,7 @@ fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
     let q_5 = cross(s_2, e1_2);
     let v_11 = (dot(d_1, q_5) * inv);
     if !((v_11 < 0f)) {
-        local_9 = ((u_5 + v_11) > 1f);
+        local_9 = ((u_6 + v_11) > 1f);
     } else {
         local_9 = true;
     }
@@ -1179,9 +1183,9 @@ fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: 
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
 
-fn jittered_pixel(coord: u32, u_4: f32) -> f32 {
+fn jittered_pixel(coord: u32, u_5: f32) -> f32 {
     let _e2 = to_f32_(coord);
-    return (_e2 + u_4);
+    return (_e2 + u_5);
 }
 
 fn plays_roulette(depth: u32) -> bool {

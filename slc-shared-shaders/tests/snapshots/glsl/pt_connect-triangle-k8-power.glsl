@@ -691,9 +691,13 @@ float reservoir_select_pdf(uint seen, bool in_range, uint k_3) {
     return (1.0 / _e15);
 }
 
-uint uniform_light(float u_2, uint n_8) {
+uint alias_choice(uint column, uint other, float keep, float u_2) {
+    return ((u_2 < keep) ? column : other);
+}
+
+uint uniform_light(float u_3, uint n_8) {
     float _e2 = to_f32_(n_8);
-    uint _e4 = to_u32_((u_2 * _e2));
+    uint _e4 = to_u32_((u_3 * _e2));
     return min(_e4, (n_8 - 1u));
 }
 
@@ -775,11 +779,11 @@ float bvh_first_prob(float c0_, float c1_2) {
     return -1.0;
 }
 
-float bvh_remap_u(float u_3, float p0_, bool first) {
+float bvh_remap_u(float u_4, float p0_, bool first) {
     if (first) {
-        return min((u_3 / p0_), ONE_MINUS_EPSILON);
+        return min((u_4 / p0_), ONE_MINUS_EPSILON);
     }
-    return clamp(((u_3 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+    return clamp(((u_4 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
 }
 
 float surface_offset(float diag) {
@@ -884,9 +888,9 @@ float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_7, vec3 b_6, vec3 c_8, float t_min
     }
     float inv = (1.0 / det);
     vec3 s_3 = (o_1 - a_7);
-    float u_6 = (dot(s_3, p_3) * inv);
-    if (!((u_6 < 0.0))) {
-        local_7 = (u_6 > 1.0);
+    float u_7 = (dot(s_3, p_3) * inv);
+    if (!((u_7 < 0.0))) {
+        local_7 = (u_7 > 1.0);
     } else {
         local_7 = true;
     }
@@ -897,7 +901,7 @@ float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_7, vec3 b_6, vec3 c_8, float t_min
     vec3 q_5 = cross(s_3, e1_2);
     float v_11 = (dot(d_1, q_5) * inv);
     if (!((v_11 < 0.0))) {
-        local_8 = ((u_6 + v_11) > 1.0);
+        local_8 = ((u_7 + v_11) > 1.0);
     } else {
         local_8 = true;
     }
@@ -1067,9 +1071,9 @@ vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_8
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
 
-float jittered_pixel(uint coord, float u_4) {
+float jittered_pixel(uint coord, float u_5) {
     float _e2 = to_f32_(coord);
-    return (_e2 + u_4);
+    return (_e2 + u_5);
 }
 
 bool plays_roulette(uint depth) {

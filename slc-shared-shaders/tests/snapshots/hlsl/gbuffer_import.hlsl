@@ -833,10 +833,15 @@ float reservoir_select_pdf(uint seen, bool in_range, uint k_3)
     return (1.0 / _e15);
 }
 
-uint uniform_light(float u_2, uint n_8)
+uint alias_choice(uint column, uint other, float keep, float u_2)
+{
+    return ((u_2 < keep) ? column : other);
+}
+
+uint uniform_light(float u_3, uint n_8)
 {
     const float _e2 = to_f32_(n_8);
-    const uint _e4 = to_u32_((u_2 * _e2));
+    const uint _e4 = to_u32_((u_3 * _e2));
     return min(_e4, (n_8 - 1u));
 }
 
@@ -927,12 +932,12 @@ float bvh_first_prob(float c0_, float c1_2)
     return -1.0;
 }
 
-float bvh_remap_u(float u_3, float p0_, bool first)
+float bvh_remap_u(float u_4, float p0_, bool first)
 {
     if (first) {
-        return min((u_3 / p0_), ONE_MINUS_EPSILON);
+        return min((u_4 / p0_), ONE_MINUS_EPSILON);
     }
-    return clamp(((u_3 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+    return clamp(((u_4 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
 }
 
 float surface_offset(float diag)
@@ -1051,9 +1056,9 @@ float ray_triangle(float3 o_1, float3 d_1, float3 a_7, float3 b_6, float3 c_8, f
     }
     float inv = (1.0 / det);
     float3 s_2 = (o_1 - a_7);
-    float u_5 = (dot(s_2, p_3) * inv);
-    if (!((u_5 < 0.0))) {
-        local_9 = (u_5 > 1.0);
+    float u_6 = (dot(s_2, p_3) * inv);
+    if (!((u_6 < 0.0))) {
+        local_9 = (u_6 > 1.0);
     } else {
         local_9 = true;
     }
@@ -1064,7 +1069,7 @@ float ray_triangle(float3 o_1, float3 d_1, float3 a_7, float3 b_6, float3 c_8, f
     float3 q_5 = cross(s_2, e1_2);
     float v_11 = (dot(d_1, q_5) * inv);
     if (!((v_11 < 0.0))) {
-        local_10 = ((u_5 + v_11) > 1.0);
+        local_10 = ((u_6 + v_11) > 1.0);
     } else {
         local_10 = true;
     }
@@ -1266,10 +1271,10 @@ float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, f
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
 
-float jittered_pixel(uint coord, float u_4)
+float jittered_pixel(uint coord, float u_5)
 {
     const float _e2 = to_f32_(coord);
-    return (_e2 + u_4);
+    return (_e2 + u_5);
 }
 
 bool plays_roulette(uint depth)

@@ -996,12 +996,21 @@ float reservoir_select_pdf(
     return 1.0 / _e15;
 }
 
+uint alias_choice(
+    uint column,
+    uint other,
+    float keep,
+    float u_2
+) {
+    return (u_2 < keep) ? column : other;
+}
+
 uint uniform_light(
-    float u_2,
+    float u_3,
     uint n_8
 ) {
     float _e2 = to_f32_(n_8);
-    uint _e4 = to_u32_(u_2 * _e2);
+    uint _e4 = to_u32_(u_3 * _e2);
     return metal::min(_e4, n_8 - 1u);
 }
 
@@ -1127,14 +1136,14 @@ float bvh_first_prob(
 }
 
 float bvh_remap_u(
-    float u_3,
+    float u_4,
     float p0_,
     bool first
 ) {
     if (first) {
-        return metal::min(u_3 / p0_, ONE_MINUS_EPSILON);
+        return metal::min(u_4 / p0_, ONE_MINUS_EPSILON);
     }
-    return metal::clamp((u_3 - p0_) / (1.0 - p0_), 0.0, ONE_MINUS_EPSILON);
+    return metal::clamp((u_4 - p0_) / (1.0 - p0_), 0.0, ONE_MINUS_EPSILON);
 }
 
 float surface_offset(
@@ -1281,9 +1290,9 @@ float ray_triangle(
     }
     float inv = 1.0 / det;
     metal::float3 s_2 = o_1 - a_7;
-    float u_6 = metal::dot(s_2, p_3) * inv;
-    if (!((u_6 < 0.0))) {
-        local_10 = u_6 > 1.0;
+    float u_7 = metal::dot(s_2, p_3) * inv;
+    if (!((u_7 < 0.0))) {
+        local_10 = u_7 > 1.0;
     } else {
         local_10 = true;
     }
@@ -1294,7 +1303,7 @@ float ray_triangle(
     metal::float3 q_5 = metal::cross(s_2, e1_2);
     float v_12 = metal::dot(d_1, q_5) * inv;
     if (!((v_12 < 0.0))) {
-        local_11 = (u_6 + v_12) > 1.0;
+        local_11 = (u_7 + v_12) > 1.0;
     } else {
         local_11 = true;
     }
@@ -1557,10 +1566,10 @@ metal::float3 camera_dir(
 
 float jittered_pixel(
     uint coord,
-    float u_4
+    float u_5
 ) {
     float _e2 = to_f32_(coord);
-    return _e2 + u_4;
+    return _e2 + u_5;
 }
 
 bool plays_roulette(
@@ -1968,13 +1977,13 @@ BvhPick light_bvh_sample(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BvhPick pick = {};
-    float u_5 = {};
+    float u_6 = {};
     uint i_6 = 0u;
     float pmf = 1.0;
     bool local_20 = {};
     BvhPick _e4 = bvh_pick_none();
     pick = _e4;
-    u_5 = u_in;
+    u_6 = u_in;
     uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
@@ -2011,13 +2020,13 @@ BvhPick light_bvh_sample(
                 BvhPick _e40 = pick;
                 return _e40;
             }
-            float _e41 = u_5;
+            float _e41 = u_6;
             bool first_1 = _e41 < _e37;
             float _e43 = pmf;
             pmf = _e43 * (first_1 ? _e37 : (1.0 - _e37));
-            float _e48 = u_5;
+            float _e48 = u_6;
             float _e49 = bvh_remap_u(_e48, _e37, first_1);
-            u_5 = _e49;
+            u_6 = _e49;
             uint _e51 = i_6;
             i_6 = first_1 ? (_e51 + 1u) : _e15.second;
         }

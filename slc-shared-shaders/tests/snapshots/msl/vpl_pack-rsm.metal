@@ -975,12 +975,21 @@ float reservoir_select_pdf(
     return 1.0 / _e15;
 }
 
+uint alias_choice(
+    uint column,
+    uint other,
+    float keep,
+    float u_2
+) {
+    return (u_2 < keep) ? column : other;
+}
+
 uint uniform_light(
-    float u_2,
+    float u_3,
     uint n_8
 ) {
     float _e2 = to_f32_(n_8);
-    uint _e4 = to_u32_(u_2 * _e2);
+    uint _e4 = to_u32_(u_3 * _e2);
     return metal::min(_e4, n_8 - 1u);
 }
 
@@ -1106,14 +1115,14 @@ float bvh_first_prob(
 }
 
 float bvh_remap_u(
-    float u_3,
+    float u_4,
     float p0_,
     bool first
 ) {
     if (first) {
-        return metal::min(u_3 / p0_, ONE_MINUS_EPSILON);
+        return metal::min(u_4 / p0_, ONE_MINUS_EPSILON);
     }
-    return metal::clamp((u_3 - p0_) / (1.0 - p0_), 0.0, ONE_MINUS_EPSILON);
+    return metal::clamp((u_4 - p0_) / (1.0 - p0_), 0.0, ONE_MINUS_EPSILON);
 }
 
 float surface_offset(
@@ -1260,9 +1269,9 @@ float ray_triangle(
     }
     float inv = 1.0 / det;
     metal::float3 s_2 = o_1 - a_7;
-    float u_5 = metal::dot(s_2, p_4) * inv;
-    if (!((u_5 < 0.0))) {
-        local_8 = u_5 > 1.0;
+    float u_6 = metal::dot(s_2, p_4) * inv;
+    if (!((u_6 < 0.0))) {
+        local_8 = u_6 > 1.0;
     } else {
         local_8 = true;
     }
@@ -1273,7 +1282,7 @@ float ray_triangle(
     metal::float3 q_5 = metal::cross(s_2, e1_2);
     float v_11 = metal::dot(d_1, q_5) * inv;
     if (!((v_11 < 0.0))) {
-        local_9 = (u_5 + v_11) > 1.0;
+        local_9 = (u_6 + v_11) > 1.0;
     } else {
         local_9 = true;
     }
@@ -1536,10 +1545,10 @@ metal::float3 camera_dir(
 
 float jittered_pixel(
     uint coord,
-    float u_4
+    float u_5
 ) {
     float _e2 = to_f32_(coord);
-    return _e2 + u_4;
+    return _e2 + u_5;
 }
 
 bool plays_roulette(
