@@ -5,7 +5,6 @@ use slc_cpu::vpl::VplContext;
 use slc_scene::SceneError;
 use slc_scene::scene::Scene;
 use slc_scene::vpl::{VplMethod, VplSettings};
-use std::path::PathBuf;
 
 fn settings(method: VplMethod, frame: u32) -> VplSettings {
     VplSettings { method, frame, denoise: false, error_bound: 0.01, ..VplSettings::default() }
@@ -163,16 +162,9 @@ fn interleaved_image_is_the_interleaved_estimator_of_the_reference() {
     }
 }
 
-/// `../shared/data/<rel>`; missing test data is a failure, not a skip.
-fn shared(rel: &str) -> PathBuf {
-    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data").join(rel);
-    assert!(p.exists(), "test data {} is missing: the tests need ../shared (the team data) beside the checkout", p.display());
-    p
-}
-
 #[test]
 fn shared_cornell_obj_loads_and_renders() {
-    let path = shared("scenes/cornell-box/CornellBox-Original.obj");
+    let path = slc_test_data::shared_data("scenes/cornell-box/CornellBox-Original.obj");
     let scene = Scene::load_obj(&path).unwrap();
     // 5 walls + 2 boxes + light, quads split in two.
     assert_eq!(scene.triangles.len(), 36);

@@ -109,13 +109,6 @@ macro_rules! harness {
     };
 }
 
-/// A file under `../shared/data` beside the checkout.
-///
-/// # Panics
-/// When it is missing: missing test data is a failure, never a silent
-/// downgrade of what a test covers.
-pub fn shared_data(rel: &str) -> std::path::PathBuf {
-    let p = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data").join(rel);
-    assert!(p.exists(), "test data {} is missing: the tests need ../shared (the team data) beside the checkout", p.display());
-    p
-}
+/// A file under `../shared/data` beside the checkout (panics when it is
+/// missing; see [`slc_test_data::shared_data`]).
+pub use slc_test_data::shared_data;

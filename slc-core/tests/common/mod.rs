@@ -1,8 +1,6 @@
 //! Test helpers shared by slc-core's integration tests.
 #![allow(dead_code)]
 
-use std::path::PathBuf;
-
 /// `assert_approx_eq!(a, b, tol)`: `|a − b| ≤ tol`, with both values in the
 /// message.
 #[macro_export]
@@ -17,12 +15,5 @@ macro_rules! assert_approx_eq {
     }};
 }
 
-/// `../shared/data/<rel>` from the workspace root.
-///
-/// # Panics
-/// When it is missing: missing test data is a failure, never a silent skip.
-pub fn shared_data(rel: &str) -> PathBuf {
-    let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data").join(rel);
-    assert!(p.exists(), "test data {} is missing: the tests need ../shared (the team data) beside the checkout", p.display());
-    p
-}
+#[allow(unused_imports)]
+pub use slc_test_data::shared_data;
