@@ -81,7 +81,7 @@ pub fn clamped_sum<L>(lights: impl IntoIterator<Item = L>, d2_range2: impl Fn(&L
     let mut evaluated = 0;
     for l in lights {
         let (d2, range2) = d2_range2(&l);
-        if d2 < range2 {
+        if crate::range::clamp_keep(range2, d2) {
             sum.add(contribution(&l));
             evaluated += 1;
         }

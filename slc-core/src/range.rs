@@ -65,6 +65,13 @@ crate::shared! {
         return d2 < r2;
     }
 
+    /// The clamped-range test (the biased baseline, and the near field's
+    /// radius): a light counts, at full weight, iff `d² < R²` for its fixed
+    /// range `R`; a zero range counts nothing.
+    pub fn clamp_keep(range2: f32, d2: f32) -> bool {
+        return d2 < range2;
+    }
+
     /// Threshold squared range `r_t² = E · I / (2π ε)` from a scalar peak
     /// intensity `I`, exposure `E` and error bound `ε`, evaluated as
     /// `(E/ε)·I/2π` so that no valid input makes `∞/∞` or `∞·0` (NaN) and

@@ -46,6 +46,7 @@ fn templates_do_not_contain_core_formulas() {
         "P * P",
         "size / 2u",
         "cross(l.p2",
+        "d2 < r2",
     ];
     let mut n = 0;
     for (name, src) in slc_shared_shaders::templates() {

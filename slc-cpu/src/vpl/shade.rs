@@ -10,7 +10,7 @@
 use glam::Vec3;
 use slc_core::interleave::{vpl_far_weight, vpl_near_weight};
 use slc_core::light::vpl_transfer;
-use slc_core::range::{cull_radius, slc_keep, slc_weight};
+use slc_core::range::{clamp_keep, cull_radius, slc_keep, slc_weight};
 use slc_core::sphere::sphere_overlaps_aabb;
 
 /// How a light list is evaluated.
@@ -237,10 +237,10 @@ fn term<const MODE: u8>(p: Vec3, nl: Vec3, rt2: f32, r2: f32, x: Vec3, n: Vec3, 
     let far = vpl_far_weight(d2, near_r2);
     let (keep, w) = match MODE {
         0 => (slc_keep(r2, d2) & (far > 0.0), t * slc_weight(rt2, d2) * far),
-        1 => ((d2 < r2) & (far > 0.0), t * far),
+        1 => (clamp_keep(r2, d2) & (far > 0.0), t * far),
         2 => (far > 0.0, t * far),
         // r² = R_n² (0 for padding, which is never kept).
-        _ => ((d2 < r2) & (near > 0.0), t * near),
+        _ => (clamp_keep(r2, d2) & (near > 0.0), t * near),
     };
     (if keep { w } else { 0.0 }, if keep { 1.0 } else { 0.0 })
 }

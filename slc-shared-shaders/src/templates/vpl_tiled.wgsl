@@ -97,7 +97,7 @@ fn main(
                     kept += 1u;
                 }
 {% else %}
-                if d2 < r2[j] && far > 0.0 {
+                if clamp_keep(r2[j], d2) && far > 0.0 {
                     e += l.intensity * (t * far);
                     kept += 1u;
                 }

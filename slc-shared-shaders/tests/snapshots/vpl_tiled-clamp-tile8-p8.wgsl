@@ -362,6 +362,10 @@ fn slc_keep(r2_: f32, d2_2: f32) -> bool {
     return (d2_2 < r2_);
 }
 
+fn clamp_keep(range2_: f32, d2_3: f32) -> bool {
+    return (d2_3 < range2_);
+}
+
 fn threshold_range2_(intensity: f32, exposure: f32, error_bound: f32) -> f32 {
     if (intensity <= 0f) {
         return 0f;
@@ -380,10 +384,10 @@ fn cull_radius(r2_1: f32) -> f32 {
     return (sqrt(r2_1) * CULL_RADIUS_SCALE);
 }
 
-fn windowed_falloff(d2_3: f32, range2_: f32) -> f32 {
-    let q_2 = (d2_3 / range2_);
+fn windowed_falloff(d2_4: f32, range2_1: f32) -> f32 {
+    let q_2 = (d2_4 / range2_1);
     let w_10 = saturate((1f - (q_2 * q_2)));
-    return ((w_10 * w_10) / max(d2_3, 0.0001f));
+    return ((w_10 * w_10) / max(d2_4, 0.0001f));
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_3: vec3<f32>) -> bool {
@@ -458,13 +462,13 @@ fn range_radius(extent: f32, r2_4: f32) -> f32 {
     return (extent + sqrt(r2_4));
 }
 
-fn inverse_square(d2_4: f32) -> f32 {
-    return (1f / max(d2_4, MIN_D2_));
+fn inverse_square(d2_5: f32) -> f32 {
+    return (1f / max(d2_5, MIN_D2_));
 }
 
-fn connection_factor(cos_x: f32, d2_5: f32, rt2_3: f32, w: f32) -> f32 {
-    let _e4 = inverse_square(d2_5);
-    let _e6 = slc_weight(rt2_3, d2_5);
+fn connection_factor(cos_x: f32, d2_6: f32, rt2_3: f32, w: f32) -> f32 {
+    let _e4 = inverse_square(d2_6);
+    let _e6 = slc_weight(rt2_3, d2_6);
     return (((cos_x * _e4) * _e6) * w);
 }
 
@@ -473,10 +477,10 @@ fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_5: bool;
 
     let v_8 = (x_4 - y);
-    let d2_11 = dot(v_8, v_8);
-    let _e7 = slc_keep(r2_5, d2_11);
+    let d2_12 = dot(v_8, v_8);
+    let _e7 = slc_keep(r2_5, d2_12);
     if !(!(_e7)) {
-        local_4 = !((d2_11 > 0f));
+        local_4 = !((d2_12 > 0f));
     } else {
         local_4 = true;
     }
@@ -484,7 +488,7 @@ fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_11 = (v_8 / vec3(sqrt(d2_11)));
+    let w_11 = (v_8 / vec3(sqrt(d2_12)));
     let cos_x_1 = -(dot(n, w_11));
     if !((cos_x_1 <= 0f)) {
         local_5 = (dot(ng, w_11) >= 0f);
@@ -526,12 +530,12 @@ fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_3: vec3<f32>, u1_: f32, u2_
     return (((a_2 * b0_) + (b_2 * b1_)) + (c_3 * ((1f - b0_) - b1_)));
 }
 
-fn area_to_solid_angle_pdf(pdf_area: f32, d2_6: f32, cos_light: f32) -> f32 {
+fn area_to_solid_angle_pdf(pdf_area: f32, d2_7: f32, cos_light: f32) -> f32 {
     let c_10 = abs(cos_light);
     if (c_10 <= 0f) {
         return 0f;
     }
-    return ((pdf_area * d2_6) / c_10);
+    return ((pdf_area * d2_7) / c_10);
 }
 
 fn atan_portable(x_5: f32) -> f32 {
@@ -831,7 +835,7 @@ fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, c
     let v_9 = (p - center);
     let dist2_ = dot(v_9, v_9);
     let r2_7 = (radius * radius);
-    let d2_12 = max(max(dist2_, r2_7), MIN_D2_);
+    let d2_13 = max(max(dist2_, r2_7), MIN_D2_);
     let wi = select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_))), (dist2_ > 0f));
     let cos_w = dot(axis, wi);
     let _e28 = safe_sqrt((1f - (cos_w * cos_w)));
@@ -845,7 +849,7 @@ fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, c
     if (_e46 <= cos_e) {
         return 0f;
     }
-    imp = ((phi * _e46) / d2_12);
+    imp = ((phi * _e46) / d2_13);
     if (dot(n_9, n_9) > 0f) {
         let cos_i = -(dot(wi, n_9));
         let _e60 = safe_sqrt((1f - (cos_i * cos_i)));
@@ -857,8 +861,8 @@ fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, c
     return max(_e66, 0f);
 }
 
-fn candidate_weight(importance: f32, rt2_4: f32, d2_7: f32) -> f32 {
-    let _e3 = slc_weight(rt2_4, d2_7);
+fn candidate_weight(importance: f32, rt2_4: f32, d2_8: f32) -> f32 {
+    let _e3 = slc_weight(rt2_4, d2_8);
     return (importance * _e3);
 }
 
@@ -1049,11 +1053,11 @@ fn mis_power(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     return (a2_ / s_4);
 }
 
-fn light_strategy_pdf(select_: f32, rt2_6: f32, d2_8: f32, area_1: f32, cos_y: f32) -> f32 {
+fn light_strategy_pdf(select_: f32, rt2_6: f32, d2_9: f32, area_1: f32, cos_y: f32) -> f32 {
     var local_13: bool;
     var local_14: bool;
 
-    if !((d2_8 <= 0f)) {
+    if !((d2_9 <= 0f)) {
         local_13 = (area_1 <= 0f);
     } else {
         local_13 = true;
@@ -1068,8 +1072,8 @@ fn light_strategy_pdf(select_: f32, rt2_6: f32, d2_8: f32, area_1: f32, cos_y: f
     if _e20 {
         return 0f;
     }
-    let _e22 = rr_probability(rt2_6, d2_8);
-    let _e26 = area_to_solid_angle_pdf((1f / area_1), d2_8, cos_y);
+    let _e22 = rr_probability(rt2_6, d2_9);
+    let _e26 = area_to_solid_angle_pdf((1f / area_1), d2_9, cos_y);
     return ((select_ * _e22) * _e26);
 }
 
@@ -1163,16 +1167,16 @@ fn near_block_ty(q_1: u32, size_5: u32) -> u32 {
     return ((((q_1 / NEAR_BLOCK) / (size_5 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
 }
 
-fn vpl_near_weight(d2_9: f32, near_r2_: f32) -> f32 {
+fn vpl_near_weight(d2_10: f32, near_r2_: f32) -> f32 {
     if (near_r2_ <= 0f) {
         return 0f;
     }
-    let t_6 = clamp(((near_r2_ - d2_9) / (0.75f * near_r2_)), 0f, 1f);
+    let t_6 = clamp(((near_r2_ - d2_10) / (0.75f * near_r2_)), 0f, 1f);
     return ((t_6 * t_6) * (3f - (2f * t_6)));
 }
 
-fn vpl_far_weight(d2_10: f32, near_r2_1: f32) -> f32 {
-    let _e2 = vpl_near_weight(d2_10, near_r2_1);
+fn vpl_far_weight(d2_11: f32, near_r2_1: f32) -> f32 {
+    let _e2 = vpl_near_weight(d2_11, near_r2_1);
     return (1f - _e2);
 }
 
@@ -1252,9 +1256,9 @@ fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
 }
 
 fn point_irradiance(intensity_1: vec3<f32>, n_15: vec3<f32>, v_3: vec3<f32>) -> vec3<f32> {
-    let d2_13 = dot(v_3, v_3);
-    let cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_13, MIN_D2_)));
-    let _e11 = inverse_square(d2_13);
+    let d2_14 = dot(v_3, v_3);
+    let cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
+    let _e11 = inverse_square(d2_14);
     return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }
 
@@ -1459,11 +1463,12 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                         let _e144 = nrm;
                         let _e147 = params.min_d2_;
                         let _e148 = vpl_transfer(l_4.p1_, _e144, v_12, _e147);
-                        let d2_14 = dot(v_12, v_12);
+                        let d2_15 = dot(v_12, v_12);
                         let _e152 = params.near_r2_;
-                        let _e153 = vpl_far_weight(d2_14, _e152);
+                        let _e153 = vpl_far_weight(d2_15, _e152);
                         let _e156 = r2_6[j_1];
-                        if (d2_14 < _e156) {
+                        let _e157 = clamp_keep(_e156, d2_15);
+                        if _e157 {
                             local_2 = (_e153 > 0f);
                         } else {
                             local_2 = false;

@@ -358,6 +358,10 @@ bool slc_keep(float r2_, float d2_2) {
     return (d2_2 < r2_);
 }
 
+bool clamp_keep(float range2_, float d2_3) {
+    return (d2_3 < range2_);
+}
+
 float threshold_range2_(float intensity, float exposure, float error_bound) {
     if ((intensity <= 0.0)) {
         return 0.0;
@@ -376,10 +380,10 @@ float cull_radius(float r2_1) {
     return (sqrt(r2_1) * CULL_RADIUS_SCALE);
 }
 
-float windowed_falloff(float d2_3, float range2_) {
-    float q_2 = (d2_3 / range2_);
+float windowed_falloff(float d2_4, float range2_1) {
+    float q_2 = (d2_4 / range2_1);
     float w_11 = clamp((1.0 - (q_2 * q_2)), 0.0, 1.0);
-    return ((w_11 * w_11) / max(d2_3, 0.0001));
+    return ((w_11 * w_11) / max(d2_4, 0.0001));
 }
 
 bool sphere_contains_point(vec3 c, float r, vec3 x_3) {
@@ -453,13 +457,13 @@ float range_radius(float extent, float r2_4) {
     return (extent + sqrt(r2_4));
 }
 
-float inverse_square(float d2_4) {
-    return (1.0 / max(d2_4, MIN_D2_));
+float inverse_square(float d2_5) {
+    return (1.0 / max(d2_5, MIN_D2_));
 }
 
-float connection_factor(float cos_x, float d2_5, float rt2_3, float w) {
-    float _e4 = inverse_square(d2_5);
-    float _e6 = slc_weight(rt2_3, d2_5);
+float connection_factor(float cos_x, float d2_6, float rt2_3, float w) {
+    float _e4 = inverse_square(d2_6);
+    float _e6 = slc_weight(rt2_3, d2_6);
     return (((cos_x * _e4) * _e6) * w);
 }
 
@@ -467,10 +471,10 @@ float connection_cosine(vec3 x_4, vec3 y, vec3 n, vec3 ng, float r2_5) {
     bool local_1 = false;
     bool local_2 = false;
     vec3 v_8 = (x_4 - y);
-    float d2_11 = dot(v_8, v_8);
-    bool _e7 = slc_keep(r2_5, d2_11);
+    float d2_12 = dot(v_8, v_8);
+    bool _e7 = slc_keep(r2_5, d2_12);
     if (!(!(_e7))) {
-        local_1 = !((d2_11 > 0.0));
+        local_1 = !((d2_12 > 0.0));
     } else {
         local_1 = true;
     }
@@ -478,7 +482,7 @@ float connection_cosine(vec3 x_4, vec3 y, vec3 n, vec3 ng, float r2_5) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_12 = (v_8 / vec3(sqrt(d2_11)));
+    vec3 w_12 = (v_8 / vec3(sqrt(d2_12)));
     float cos_x_1 = -(dot(n, w_12));
     if (!((cos_x_1 <= 0.0))) {
         local_2 = (dot(ng, w_12) >= 0.0);
@@ -520,12 +524,12 @@ vec3 triangle_sample(vec3 a_2, vec3 b_2, vec3 c_3, float u1_, float u2_) {
     return (((a_2 * b0_) + (b_2 * b1_)) + (c_3 * ((1.0 - b0_) - b1_)));
 }
 
-float area_to_solid_angle_pdf(float pdf_area, float d2_6, float cos_light) {
+float area_to_solid_angle_pdf(float pdf_area, float d2_7, float cos_light) {
     float c_11 = abs(cos_light);
     if ((c_11 <= 0.0)) {
         return 0.0;
     }
-    return ((pdf_area * d2_6) / c_11);
+    return ((pdf_area * d2_7) / c_11);
 }
 
 float atan_portable(float x_5) {
@@ -819,7 +823,7 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     vec3 v_9 = (p - center);
     float dist2_ = dot(v_9, v_9);
     float r2_7 = (radius * radius);
-    float d2_12 = max(max(dist2_, r2_7), MIN_D2_);
+    float d2_13 = max(max(dist2_, r2_7), MIN_D2_);
     vec3 wi = ((dist2_ > 0.0) ? (v_9 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
@@ -833,7 +837,7 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_12);
+    imp = ((phi * _e46) / d2_13);
     if ((dot(n_9, n_9) > 0.0)) {
         float cos_i = -(dot(wi, n_9));
         float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -845,8 +849,8 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     return max(_e66, 0.0);
 }
 
-float candidate_weight(float importance, float rt2_4, float d2_7) {
-    float _e3 = slc_weight(rt2_4, d2_7);
+float candidate_weight(float importance, float rt2_4, float d2_8) {
+    float _e3 = slc_weight(rt2_4, d2_8);
     return (importance * _e3);
 }
 
@@ -1034,10 +1038,10 @@ float mis_power(float pdf_a_1, float pdf_b_1) {
     return (a2_ / s_5);
 }
 
-float light_strategy_pdf(float select, float rt2_6, float d2_8, float area_1, float cos_y) {
+float light_strategy_pdf(float select, float rt2_6, float d2_9, float area_1, float cos_y) {
     bool local_10 = false;
     bool local_11 = false;
-    if (!((d2_8 <= 0.0))) {
+    if (!((d2_9 <= 0.0))) {
         local_10 = (area_1 <= 0.0);
     } else {
         local_10 = true;
@@ -1052,8 +1056,8 @@ float light_strategy_pdf(float select, float rt2_6, float d2_8, float area_1, fl
     if (_e20) {
         return 0.0;
     }
-    float _e22 = rr_probability(rt2_6, d2_8);
-    float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_8, cos_y);
+    float _e22 = rr_probability(rt2_6, d2_9);
+    float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_9, cos_y);
     return ((select * _e22) * _e26);
 }
 
@@ -1147,16 +1151,16 @@ uint near_block_ty(uint q_1, uint size_5) {
     return ((((q_1 / NEAR_BLOCK) / (size_5 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
 }
 
-float vpl_near_weight(float d2_9, float near_r2_) {
+float vpl_near_weight(float d2_10, float near_r2_) {
     if ((near_r2_ <= 0.0)) {
         return 0.0;
     }
-    float t_6 = clamp(((near_r2_ - d2_9) / (0.75 * near_r2_)), 0.0, 1.0);
+    float t_6 = clamp(((near_r2_ - d2_10) / (0.75 * near_r2_)), 0.0, 1.0);
     return ((t_6 * t_6) * (3.0 - (2.0 * t_6)));
 }
 
-float vpl_far_weight(float d2_10, float near_r2_1) {
-    float _e2 = vpl_near_weight(d2_10, near_r2_1);
+float vpl_far_weight(float d2_11, float near_r2_1) {
+    float _e2 = vpl_near_weight(d2_11, near_r2_1);
     return (1.0 - _e2);
 }
 
@@ -1234,9 +1238,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis) {
 }
 
 vec3 point_irradiance(vec3 intensity_1, vec3 n_15, vec3 v_3) {
-    float d2_13 = dot(v_3, v_3);
-    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_13, MIN_D2_)));
-    float _e11 = inverse_square(d2_13);
+    float d2_14 = dot(v_3, v_3);
+    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
+    float _e11 = inverse_square(d2_14);
     return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
@@ -1538,11 +1542,11 @@ Connection connect(uint li, vec3 x_16, vec3 n_17, vec3 ng_2, float w_res, float 
     }
     vec3 _e40 = c_9.y;
     vec3 v_12 = (x_16 - _e40);
-    float d2_14 = dot(v_12, v_12);
-    vec3 _e47 = light_intensity(l_4, (v_12 / vec3(sqrt(d2_14))));
+    float d2_15 = dot(v_12, v_12);
+    vec3 _e47 = light_intensity(l_4, (v_12 / vec3(sqrt(d2_15))));
     float _e49 = c_9.cos_x;
     float _e52 = _group_0_binding_3_cs[li];
-    float _e53 = connection_factor(_e49, d2_14, _e52, w_res);
+    float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
     c_9.e = (_e47 * _e53);
     Connection _e55 = c_9;
     return _e55;
@@ -1565,13 +1569,13 @@ float select_pdf(uint li_2, vec3 x_22, vec3 n_23, uint nee, bool in_range_2) {
 float light_pdf(uint li_3, vec3 x_23, vec3 n_24, vec3 y_3, uint nee_1, bool in_range_3) {
     GpuLight l_5 = _group_0_binding_2_cs[li_3];
     vec3 v_13 = (x_23 - y_3);
-    float d2_15 = dot(v_13, v_13);
+    float d2_16 = dot(v_13, v_13);
     vec3 _e11 = light_normal(l_5);
-    float cos_y_1 = ((d2_15 > 0.0) ? dot(_e11, (v_13 / vec3(sqrt(d2_15)))) : 0.0);
+    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e11, (v_13 / vec3(sqrt(d2_16)))) : 0.0);
     float _e20 = select_pdf(li_3, x_23, n_24, nee_1, in_range_3);
     float _e23 = _group_0_binding_3_cs[li_3];
     float _e24 = light_area(l_5);
-    float _e25 = light_strategy_pdf(_e20, _e23, d2_15, _e24, cos_y_1);
+    float _e25 = light_strategy_pdf(_e20, _e23, d2_16, _e24, cos_y_1);
     return _e25;
 }
 

@@ -357,6 +357,11 @@ bool slc_keep(float r2_, float d2_2)
     return (d2_2 < r2_);
 }
 
+bool clamp_keep(float range2_, float d2_3)
+{
+    return (d2_3 < range2_);
+}
+
 float threshold_range2_(float intensity, float exposure, float error_bound)
 {
     if ((intensity <= 0.0)) {
@@ -378,11 +383,11 @@ float cull_radius(float r2_1)
     return (sqrt(r2_1) * CULL_RADIUS_SCALE);
 }
 
-float windowed_falloff(float d2_3, float range2_)
+float windowed_falloff(float d2_4, float range2_1)
 {
-    float q_2 = (d2_3 / range2_);
+    float q_2 = (d2_4 / range2_1);
     float w_9 = saturate((1.0 - (q_2 * q_2)));
-    return ((w_9 * w_9) / max(d2_3, 0.0001));
+    return ((w_9 * w_9) / max(d2_4, 0.0001));
 }
 
 bool sphere_contains_point(float3 c, float r, float3 x_3)
@@ -464,15 +469,15 @@ float range_radius(float extent, float r2_4)
     return (extent + sqrt(r2_4));
 }
 
-float inverse_square(float d2_4)
+float inverse_square(float d2_5)
 {
-    return (1.0 / max(d2_4, MIN_D2_));
+    return (1.0 / max(d2_5, MIN_D2_));
 }
 
-float connection_factor(float cos_x, float d2_5, float rt2_3, float w)
+float connection_factor(float cos_x, float d2_6, float rt2_3, float w)
 {
-    const float _e4 = inverse_square(d2_5);
-    const float _e6 = slc_weight(rt2_3, d2_5);
+    const float _e4 = inverse_square(d2_6);
+    const float _e6 = slc_weight(rt2_3, d2_6);
     return (((cos_x * _e4) * _e6) * w);
 }
 
@@ -482,10 +487,10 @@ float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
     bool local_3 = (bool)0;
 
     float3 v_8 = (x_4 - y);
-    float d2_11 = dot(v_8, v_8);
-    const bool _e7 = slc_keep(r2_5, d2_11);
+    float d2_12 = dot(v_8, v_8);
+    const bool _e7 = slc_keep(r2_5, d2_12);
     if (!(!(_e7))) {
-        local_2 = !((d2_11 > 0.0));
+        local_2 = !((d2_12 > 0.0));
     } else {
         local_2 = true;
     }
@@ -493,7 +498,7 @@ float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
     if (_e16) {
         return 0.0;
     }
-    float3 w_10 = (v_8 / (sqrt(d2_11)).xxx);
+    float3 w_10 = (v_8 / (sqrt(d2_12)).xxx);
     float cos_x_1 = -(dot(n, w_10));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = (dot(ng, w_10) >= 0.0);
@@ -540,13 +545,13 @@ float3 triangle_sample(float3 a_2, float3 b_2, float3 c_3, float u1_, float u2_)
     return (((a_2 * b0_) + (b_2 * b1_)) + (c_3 * ((1.0 - b0_) - b1_)));
 }
 
-float area_to_solid_angle_pdf(float pdf_area, float d2_6, float cos_light)
+float area_to_solid_angle_pdf(float pdf_area, float d2_7, float cos_light)
 {
     float c_10 = abs(cos_light);
     if ((c_10 <= 0.0)) {
         return 0.0;
     }
-    return ((pdf_area * d2_6) / c_10);
+    return ((pdf_area * d2_7) / c_10);
 }
 
 float atan_portable(float x_5)
@@ -871,7 +876,7 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     float3 v_9 = (p - center_);
     float dist2_ = dot(v_9, v_9);
     float r2_6 = (radius * radius);
-    float d2_12 = max(max(dist2_, r2_6), MIN_D2_);
+    float d2_13 = max(max(dist2_, r2_6), MIN_D2_);
     float3 wi = ((dist2_ > 0.0) ? (v_9 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
@@ -885,7 +890,7 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_12);
+    imp = ((phi * _e46) / d2_13);
     if ((dot(n_9, n_9) > 0.0)) {
         float cos_i = -(dot(wi, n_9));
         const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -897,9 +902,9 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     return max(_e66, 0.0);
 }
 
-float candidate_weight(float importance, float rt2_4, float d2_7)
+float candidate_weight(float importance, float rt2_4, float d2_8)
 {
-    const float _e3 = slc_weight(rt2_4, d2_7);
+    const float _e3 = slc_weight(rt2_4, d2_8);
     return (importance * _e3);
 }
 
@@ -1107,12 +1112,12 @@ float mis_power(float pdf_a_1, float pdf_b_1)
     return (a2_ / s_4);
 }
 
-float light_strategy_pdf(float select_, float rt2_6, float d2_8, float area_1, float cos_y)
+float light_strategy_pdf(float select_, float rt2_6, float d2_9, float area_1, float cos_y)
 {
     bool local_11 = (bool)0;
     bool local_12 = (bool)0;
 
-    if (!((d2_8 <= 0.0))) {
+    if (!((d2_9 <= 0.0))) {
         local_11 = (area_1 <= 0.0);
     } else {
         local_11 = true;
@@ -1127,8 +1132,8 @@ float light_strategy_pdf(float select_, float rt2_6, float d2_8, float area_1, f
     if (_e20) {
         return 0.0;
     }
-    const float _e22 = rr_probability(rt2_6, d2_8);
-    const float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_8, cos_y);
+    const float _e22 = rr_probability(rt2_6, d2_9);
+    const float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_9, cos_y);
     return ((select_ * _e22) * _e26);
 }
 
@@ -1247,18 +1252,18 @@ uint near_block_ty(uint q_1, uint size_5)
     return ((naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_5, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u));
 }
 
-float vpl_near_weight(float d2_9, float near_r2_)
+float vpl_near_weight(float d2_10, float near_r2_)
 {
     if ((near_r2_ <= 0.0)) {
         return 0.0;
     }
-    float t_6 = clamp(((near_r2_ - d2_9) / (0.75 * near_r2_)), 0.0, 1.0);
+    float t_6 = clamp(((near_r2_ - d2_10) / (0.75 * near_r2_)), 0.0, 1.0);
     return ((t_6 * t_6) * (3.0 - (2.0 * t_6)));
 }
 
-float vpl_far_weight(float d2_10, float near_r2_1)
+float vpl_far_weight(float d2_11, float near_r2_1)
 {
-    const float _e2 = vpl_near_weight(d2_10, near_r2_1);
+    const float _e2 = vpl_near_weight(d2_11, near_r2_1);
     return (1.0 - _e2);
 }
 
@@ -1350,9 +1355,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
 
 float3 point_irradiance(float3 intensity_1, float3 n_15, float3 v_3)
 {
-    float d2_13 = dot(v_3, v_3);
-    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_13, MIN_D2_)));
-    const float _e11 = inverse_square(d2_13);
+    float d2_14 = dot(v_3, v_3);
+    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
+    const float _e11 = inverse_square(d2_14);
     return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 

@@ -393,6 +393,13 @@ bool slc_keep(
     return d2_2 < r2_;
 }
 
+bool clamp_keep(
+    float range2_,
+    float d2_3
+) {
+    return d2_3 < range2_;
+}
+
 float threshold_range2_(
     float intensity,
     float exposure,
@@ -421,12 +428,12 @@ float cull_radius(
 }
 
 float windowed_falloff(
-    float d2_3,
-    float range2_
+    float d2_4,
+    float range2_1
 ) {
-    float q_2 = d2_3 / range2_;
+    float q_2 = d2_4 / range2_1;
     float w_9 = metal::saturate(1.0 - (q_2 * q_2));
-    return (w_9 * w_9) / metal::max(d2_3, 0.0001);
+    return (w_9 * w_9) / metal::max(d2_4, 0.0001);
 }
 
 bool sphere_contains_point(
@@ -531,19 +538,19 @@ float range_radius(
 }
 
 float inverse_square(
-    float d2_4
+    float d2_5
 ) {
-    return 1.0 / metal::max(d2_4, MIN_D2_);
+    return 1.0 / metal::max(d2_5, MIN_D2_);
 }
 
 float connection_factor(
     float cos_x,
-    float d2_5,
+    float d2_6,
     float rt2_3,
     float w
 ) {
-    float _e4 = inverse_square(d2_5);
-    float _e6 = slc_weight(rt2_3, d2_5);
+    float _e4 = inverse_square(d2_6);
+    float _e6 = slc_weight(rt2_3, d2_6);
     return ((cos_x * _e4) * _e6) * w;
 }
 
@@ -557,10 +564,10 @@ float connection_cosine(
     bool local_2 = {};
     bool local_3 = {};
     metal::float3 v_8 = x_4 - y;
-    float d2_11 = metal::dot(v_8, v_8);
-    bool _e7 = slc_keep(r2_5, d2_11);
+    float d2_12 = metal::dot(v_8, v_8);
+    bool _e7 = slc_keep(r2_5, d2_12);
     if (!(!(_e7))) {
-        local_2 = !((d2_11 > 0.0));
+        local_2 = !((d2_12 > 0.0));
     } else {
         local_2 = true;
     }
@@ -568,7 +575,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_10 = v_8 / metal::float3(metal::sqrt(d2_11));
+    metal::float3 w_10 = v_8 / metal::float3(metal::sqrt(d2_12));
     float cos_x_1 = -(metal::dot(n, w_10));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = metal::dot(ng, w_10) >= 0.0;
@@ -634,14 +641,14 @@ metal::float3 triangle_sample(
 
 float area_to_solid_angle_pdf(
     float pdf_area,
-    float d2_6,
+    float d2_7,
     float cos_light
 ) {
     float c_10 = metal::abs(cos_light);
     if (c_10 <= 0.0) {
         return 0.0;
     }
-    return (pdf_area * d2_6) / c_10;
+    return (pdf_area * d2_7) / c_10;
 }
 
 float atan_portable(
@@ -1039,7 +1046,7 @@ float light_importance(
     metal::float3 v_9 = p - center;
     float dist2_ = metal::dot(v_9, v_9);
     float r2_7 = radius * radius;
-    float d2_12 = metal::max(metal::max(dist2_, r2_7), MIN_D2_);
+    float d2_13 = metal::max(metal::max(dist2_, r2_7), MIN_D2_);
     metal::float3 wi = (dist2_ > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
@@ -1053,7 +1060,7 @@ float light_importance(
     if (_e46 <= cos_e) {
         return 0.0;
     }
-    imp = (phi * _e46) / d2_12;
+    imp = (phi * _e46) / d2_13;
     if (metal::dot(n_9, n_9) > 0.0) {
         float cos_i = -(metal::dot(wi, n_9));
         float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
@@ -1068,9 +1075,9 @@ float light_importance(
 float candidate_weight(
     float importance,
     float rt2_4,
-    float d2_7
+    float d2_8
 ) {
-    float _e3 = slc_weight(rt2_4, d2_7);
+    float _e3 = slc_weight(rt2_4, d2_8);
     return importance * _e3;
 }
 
@@ -1331,13 +1338,13 @@ float mis_power(
 float light_strategy_pdf(
     float select,
     float rt2_6,
-    float d2_8,
+    float d2_9,
     float area_1,
     float cos_y
 ) {
     bool local_11 = {};
     bool local_12 = {};
-    if (!((d2_8 <= 0.0))) {
+    if (!((d2_9 <= 0.0))) {
         local_11 = area_1 <= 0.0;
     } else {
         local_11 = true;
@@ -1352,8 +1359,8 @@ float light_strategy_pdf(
     if (_e20) {
         return 0.0;
     }
-    float _e22 = rr_probability(rt2_6, d2_8);
-    float _e26 = area_to_solid_angle_pdf(1.0 / area_1, d2_8, cos_y);
+    float _e22 = rr_probability(rt2_6, d2_9);
+    float _e26 = area_to_solid_angle_pdf(1.0 / area_1, d2_9, cos_y);
     return (select * _e22) * _e26;
 }
 
@@ -1513,21 +1520,21 @@ uint near_block_ty(
 }
 
 float vpl_near_weight(
-    float d2_9,
+    float d2_10,
     float near_r2_
 ) {
     if (near_r2_ <= 0.0) {
         return 0.0;
     }
-    float t_6 = metal::clamp((near_r2_ - d2_9) / (0.75 * near_r2_), 0.0, 1.0);
+    float t_6 = metal::clamp((near_r2_ - d2_10) / (0.75 * near_r2_), 0.0, 1.0);
     return (t_6 * t_6) * (3.0 - (2.0 * t_6));
 }
 
 float vpl_far_weight(
-    float d2_10,
+    float d2_11,
     float near_r2_1
 ) {
-    float _e2 = vpl_near_weight(d2_10, near_r2_1);
+    float _e2 = vpl_near_weight(d2_11, near_r2_1);
     return 1.0 - _e2;
 }
 
@@ -1646,9 +1653,9 @@ metal::float3 point_irradiance(
     metal::float3 n_15,
     metal::float3 v_3
 ) {
-    float d2_13 = metal::dot(v_3, v_3);
-    float cos_x_2 = metal::dot(n_15, v_3) / metal::sqrt(metal::max(d2_13, MIN_D2_));
-    float _e11 = inverse_square(d2_13);
+    float d2_14 = metal::dot(v_3, v_3);
+    float cos_x_2 = metal::dot(n_15, v_3) / metal::sqrt(metal::max(d2_14, MIN_D2_));
+    float _e11 = inverse_square(d2_14);
     return intensity_1 * (metal::max(cos_x_2, 0.0) * _e11);
 }
 
