@@ -25,8 +25,9 @@ crate::shared! {
     /// the tree (zero power).
     pub const LIGHT_BVH_LEAF: u32 = 4294967295;
 
-    /// A light-BVH node as both walks read it ([`LightBvhNode`] packed),
-    /// 48 bytes, the same layout in Rust and in WGSL storage buffers.
+    /// A light-BVH node, as both backends' walks read it: its lights'
+    /// importance bounds and its links; 48 bytes, the same layout in Rust
+    /// and in WGSL storage buffers.
     pub struct GpuLightBvhNode {
         /// Bounding-sphere centre.
         pub center: vec3f,
@@ -73,37 +74,21 @@ crate::shared! {
     }
 }
 
-/// One node of a light BVH: the bounds of its lights (a sphere, their
-/// total power, the cone of their normals) and its links.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LightBvhNode {
-    /// Bounds of the node's lights.
-    pub cone: LightCone,
-    /// Interior node: the second child's index (the first is the next
-    /// node); leaf: [`LIGHT_BVH_LEAF`].
-    pub second: u32,
-    /// Leaf: its light's index; interior: [`LIGHT_BVH_LEAF`].
-    pub light: u32,
-}
-
-impl LightBvhNode {
-    /// Whether the node is a leaf.
-    pub fn is_leaf(&self) -> bool {
-        self.second == LIGHT_BVH_LEAF
-    }
-
-    /// The node as the walks read it.
-    pub fn packed(&self) -> GpuLightBvhNode {
-        let c = &self.cone;
+impl GpuLightBvhNode {
+    /// A node bounding its lights by `cone` (a sphere, their total power,
+    /// the cone of their normals), with its links: `second` the second
+    /// child of an interior node (the first is the next node) or
+    /// [`LIGHT_BVH_LEAF`], `light` a leaf's light or [`LIGHT_BVH_LEAF`].
+    pub fn new(cone: &LightCone, second: u32, light: u32) -> GpuLightBvhNode {
         GpuLightBvhNode {
-            center: c.center,
-            radius: c.radius,
-            axis: c.axis,
-            cos_o: c.cos_o,
-            phi: c.phi,
-            cos_e: c.cos_e,
-            second: self.second,
-            light: self.light,
+            center: cone.center,
+            radius: cone.radius,
+            axis: cone.axis,
+            cos_o: cone.cos_o,
+            phi: cone.phi,
+            cos_e: cone.cos_e,
+            second,
+            light,
         }
     }
 }

@@ -7,8 +7,8 @@
 //!
 //! Every node bounds its lights by a [`LightBounds`]: an AABB, the power
 //! `φ`, and an orientation cone `(w, θ_o)` of emitter normals plus the
-//! emission spread `θ_e`. A node's [`LightBvhNode`] holds them as the
-//! [`LightCone`] that slc-core's importance reads: the AABB's bounding
+//! emission spread `θ_e`. A node ([`GpuLightBvhNode`]) holds them as the
+//! [`LightCone`] fields that slc-core's importance reads: the AABB's bounding
 //! sphere for interior nodes, the light's own (tighter) cone for leaves.
 //! Built top-down by the surface-area-orientation heuristic over 12 buckets
 //! per axis, one light per leaf, in preorder.
@@ -19,7 +19,7 @@ use slc_core::importance::light_importance;
 use slc_core::importance::{LightCone, safe_sqrt};
 use slc_core::light::Light;
 use slc_core::light_bvh::walk::{light_bvh_pmf, light_bvh_sample};
-use slc_core::light_bvh::{GpuLightBvhNode, LIGHT_BVH_LEAF, LightBvhNode};
+use slc_core::light_bvh::{GpuLightBvhNode, LIGHT_BVH_LEAF};
 use std::f32::consts::PI;
 
 /// Bounds of a set of lights (pbrt-v4 `LightBounds`).
@@ -142,9 +142,7 @@ fn cone_union(a: Vec3, cos_a: f32, b: Vec3, cos_b: f32) -> (Vec3, f32) {
 /// ([`slc_core::light_bvh`] samples it).
 #[derive(Clone, Debug)]
 pub struct LightBvh {
-    nodes: Vec<LightBvhNode>,
-    /// The nodes as the shared walks read them.
-    packed: Vec<GpuLightBvhNode>,
+    nodes: Vec<GpuLightBvhNode>,
     leaf_of_light: Vec<u32>,
 }
 
@@ -160,7 +158,7 @@ impl LightBvh {
     pub fn new(lights: &[Light], cones: &[LightCone]) -> LightBvh {
         let mut items: Vec<(u32, LightBounds)> =
             lights.iter().zip(cones).enumerate().map(|(i, (l, c))| (i as u32, LightBounds::of_light(l, c))).filter(|(_, b)| b.phi > 0.0).collect();
-        let mut nodes: Vec<LightBvhNode> = Vec::with_capacity(2 * items.len());
+        let mut nodes: Vec<GpuLightBvhNode> = Vec::with_capacity(2 * items.len());
         let mut leaf_of_light = vec![LIGHT_BVH_LEAF; lights.len()];
         // (start, end, parent node, whether this is the parent's second child)
         let mut stack = vec![(0usize, items.len(), usize::MAX, false)];
@@ -177,21 +175,20 @@ impl LightBvh {
             if set.len() == 1 {
                 let light = set[0].0;
                 leaf_of_light[light as usize] = me;
-                nodes.push(LightBvhNode { cone: cones[light as usize], second: LIGHT_BVH_LEAF, light });
+                nodes.push(GpuLightBvhNode::new(&cones[light as usize], LIGHT_BVH_LEAF, light));
                 continue;
             }
             let mid = start + split(set, &bounds);
-            nodes.push(LightBvhNode { cone: bounds.cone(), second: LIGHT_BVH_LEAF, light: LIGHT_BVH_LEAF });
+            nodes.push(GpuLightBvhNode::new(&bounds.cone(), LIGHT_BVH_LEAF, LIGHT_BVH_LEAF));
             // Second child pushed first, so the first child is next in preorder.
             stack.push((mid, end, me as usize, true));
             stack.push((start, mid, me as usize, false));
         }
-        let packed = nodes.iter().map(|n| n.packed()).collect();
-        LightBvh { nodes, packed, leaf_of_light }
+        LightBvh { nodes, leaf_of_light }
     }
 
     /// The nodes, in preorder (empty when no light has power).
-    pub fn nodes(&self) -> &[LightBvhNode] {
+    pub fn nodes(&self) -> &[GpuLightBvhNode] {
         &self.nodes
     }
 
@@ -204,14 +201,14 @@ impl LightBvh {
     /// `u ∈ [0, 1)`: `(light, pmf)`, or `None` where every light has zero
     /// importance ([`light_bvh_sample`], the walk the GPU takes).
     pub fn sample(&self, p: Vec3, n: Vec3, u: f32) -> Option<(usize, f32)> {
-        let pick = light_bvh_sample(&self.packed, p, n, u);
+        let pick = light_bvh_sample(&self.nodes, p, n, u);
         (pick.pmf > 0.0).then_some((pick.light as usize, pick.pmf))
     }
 
     /// Probability that [`LightBvh::sample`] at `(p, n)` picks `light`
     /// ([`light_bvh_pmf`]).
     pub fn pmf(&self, p: Vec3, n: Vec3, light: usize) -> f32 {
-        self.leaf_of_light.get(light).map_or(0.0, |&leaf| light_bvh_pmf(&self.packed, leaf, p, n))
+        self.leaf_of_light.get(light).map_or(0.0, |&leaf| light_bvh_pmf(&self.nodes, leaf, p, n))
     }
 }
 

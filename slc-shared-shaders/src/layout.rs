@@ -399,12 +399,12 @@ pub fn pack_cones(cones: &[slc_core::importance::LightCone], bvh_leaf: &[u32]) -
 
 /// The light BVH as the kernels read it. An empty tree becomes one leaf of
 /// zero power (a binding cannot be empty), which samples nothing.
-pub fn pack_light_bvh(nodes: &[slc_core::light_bvh::LightBvhNode]) -> Vec<GpuLightBvhNode> {
+pub fn pack_light_bvh(nodes: &[GpuLightBvhNode]) -> Vec<GpuLightBvhNode> {
     use slc_core::light_bvh::LIGHT_BVH_LEAF;
     if nodes.is_empty() {
         return vec![GpuLightBvhNode { second: LIGHT_BVH_LEAF, light: 0, ..GpuLightBvhNode::default() }];
     }
-    nodes.iter().map(|n| n.packed()).collect()
+    nodes.to_vec()
 }
 
 impl GpuLight {
