@@ -136,12 +136,15 @@ struct PtCsvRow<'a> {
 
 /// Writes `rows` as CSV with a header line (the `csv` crate).
 fn write_csv<R: Serialize>(path: &Path, rows: impl IntoIterator<Item = R>) -> anyhow::Result<()> {
-    let mut w = csv::Writer::from_path(path).with_context(|| format!("cannot write {}", path.display()))?;
-    for r in rows {
-        w.serialize(r).with_context(|| format!("cannot write {}", path.display()))?;
-    }
-    w.flush().with_context(|| format!("cannot write {}", path.display()))?;
-    Ok(())
+    let write = || -> anyhow::Result<()> {
+        let mut w = csv::Writer::from_path(path)?;
+        for r in rows {
+            w.serialize(r)?;
+        }
+        w.flush()?;
+        Ok(())
+    };
+    write().with_context(|| format!("cannot write {}", path.display()))
 }
 
 /// Writes the VPL runs to `path` as CSV, one line per configuration.
