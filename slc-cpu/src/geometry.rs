@@ -50,6 +50,18 @@ impl Geometry {
         }
     }
 
+    /// The ray `origin + t·dir`, `t ∈ [t_min, t_max]`, for [`Geometry::hit_t`].
+    pub fn ray(origin: Vec3, dir: Vec3, t_min: f32, t_max: f32) -> Ray {
+        Ray::new(Vec3A::from(origin), Vec3A::from(dir), t_min, t_max)
+    }
+
+    /// Distance along `ray` to triangle `tri` (∞ on a miss): the test
+    /// [`Geometry::intersect`] runs on each BVH leaf's triangles.
+    #[inline]
+    pub fn hit_t(&self, tri: u32, ray: &Ray) -> f32 {
+        self.tris[tri as usize].intersect(ray)
+    }
+
     /// `true` when the open segment from `a` to `b` hits a triangle (a
     /// relative epsilon keeps the end points' own surfaces out).
     pub fn occluded(&self, a: Vec3, b: Vec3) -> bool {

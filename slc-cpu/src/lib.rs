@@ -37,4 +37,5 @@ pub mod gbuffer;
 pub mod geometry;
 pub mod pt;
 pub mod reference;
+pub mod simd;
 pub mod vpl;

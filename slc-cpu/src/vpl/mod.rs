@@ -46,6 +46,7 @@ pub const SUPER: usize = 2;
 /// and direct light, computed once.
 pub struct VplContext {
     scene: Scene,
+    geo: Geometry,
     inputs: VplInputs,
     direct: Vec<Vec3>,
     base: VplStats,
@@ -58,20 +59,19 @@ impl VplContext {
     /// (`None`: 1% of the scene's diagonal).
     pub fn new(scene: &Scene, width: u32, height: u32, rsm_size: u32, min_distance: Option<f32>) -> Result<Self, RenderError> {
         let min_distance = slc_scene::vpl::check_frame(scene, width, height, rsm_size, min_distance)?;
-        let mut base = VplStats::default();
-        let t = Instant::now();
         let geo = Geometry::new(&scene.triangles);
-        let (gbuffer, geometric_normal) = render_gbuffer(scene, &geo, width, height);
-        base.gbuffer_ms = ms(t);
-        let t = Instant::now();
-        let vpls = rsm::reflective_shadow_map(scene, &geo, rsm_size);
-        base.rsm_ms = ms(t);
-        let t = Instant::now();
-        let direct = direct_light(scene, &geo, &gbuffer, &geometric_normal);
-        base.direct_ms = ms(t);
-        base.vpls = vpls.len();
-        let inputs = VplInputs { gbuffer, vpls, min_d2: min_distance * min_distance };
-        Ok(VplContext { scene: scene.clone(), inputs, direct, base })
+        let (inputs, direct, base) = frame_inputs(scene, &geo, width, height, rsm_size, min_distance * min_distance);
+        Ok(VplContext { scene: scene.clone(), geo, inputs, direct, base })
+    }
+
+    /// Renders the G-buffer, the RSM and the direct light again, as a frame
+    /// whose camera or light moves does every frame, and returns their times
+    /// (the statistics [`VplContext::render`] reports hold the first, cold
+    /// run: thread start-up, first touches of memory). The context is
+    /// unchanged: the same scene gives the same buffers.
+    pub fn time_inputs(&self) -> VplStats {
+        let gb = &self.inputs.gbuffer;
+        frame_inputs(&self.scene, &self.geo, gb.width, gb.height, self.inputs.vpls.size, self.inputs.min_d2).2
     }
 
     /// What a backend shades: G-buffer, VPLs, clamp distance.
@@ -137,15 +137,16 @@ impl VplContext {
                 denoise::cross_bilateral(&shaded.irradiance, gb, PERIOD)
             } else {
                 // The near field is exact: only the interleaved far field is filtered.
-                let far: Vec<Vec3> = shaded.irradiance.iter().zip(&shaded.near).map(|(&e, &n)| e - n).collect();
+                let far: Vec<Vec3> = shaded.irradiance.par_iter().zip(&shaded.near).map(|(&e, &n)| e - n).collect();
                 let mut f = denoise::cross_bilateral(&far, gb, PERIOD);
-                f.iter_mut().zip(&shaded.near).for_each(|(e, &n)| *e += n);
+                f.par_iter_mut().zip(&shaded.near).for_each(|(e, &n)| *e += n);
                 f
             }
         } else {
             shaded.irradiance
         };
-        let data = (0..filtered.len()).map(|i| diffuse_radiance(gb.albedo[i], gb.emission[i], self.direct[i] + filtered[i])).collect();
+        let data =
+            (0..filtered.len()).into_par_iter().map(|i| diffuse_radiance(gb.albedo[i], gb.emission[i], self.direct[i] + filtered[i])).collect();
         stats.denoise_ms = ms(t) + shaded.denoised_ms.unwrap_or(0.0);
         stats.total_ms = stats.gbuffer_ms + stats.rsm_ms + stats.direct_ms + stats.shading_ms + stats.denoise_ms;
         VplFrame { image: Image { width: gb.width, height: gb.height, data }, stats }
@@ -223,6 +224,7 @@ impl VplContext {
                 let mut out = Vec::with_capacity(sw * sh);
                 let (mut coarse, mut fine) = (LightList::default(), LightList::default());
                 let (mut pixels, mut hits) = (Vec::new(), Vec::new());
+                let (mut receivers, mut shaded) = (Vec::new(), Vec::new());
                 let mut evals = 0u64;
                 // Pixels of sub-image rectangle [x0, x1) × [y0, y1) that see a surface.
                 let gather = |pixels: &mut Vec<usize>, (x0, x1): (usize, usize), (y0, y1): (usize, usize)| {
@@ -263,10 +265,11 @@ impl VplContext {
                                     coarse.cull_into(lo, hi, &mut hits, &mut fine);
                                     &fine
                                 };
-                                for &i in &pixels {
-                                    let (e, k) = shade::shade(lights, gb.position[i], gb.normal[i], self.inputs.min_d2, near_r2, cull);
-                                    out.push((i, e, k));
-                                }
+                                receivers.clear();
+                                receivers.extend(pixels.iter().map(|&i| (gb.position[i], gb.normal[i])));
+                                shaded.clear();
+                                shade::shade_all(lights, &receivers, self.inputs.min_d2, near_r2, cull, &mut shaded);
+                                out.extend(pixels.iter().zip(&shaded).map(|(&i, &(e, k))| (i, e, k)));
                                 evals += (lights.len_unpadded() * pixels.len()) as u64;
                             }
                         }
@@ -329,6 +332,7 @@ impl VplContext {
                 let (y0, y1) = (ry * region, ((ry + 1) * region).min(h));
                 let mut out = vec![(Vec3::ZERO, 0u32); (y1 - y0) * w];
                 let (mut coarse, mut fine, mut hits) = (LightList::default(), LightList::default(), Vec::new());
+                let (mut pixels, mut receivers, mut shaded) = (Vec::new(), Vec::new(), Vec::new());
                 let mut evals = 0u64;
                 for x0 in (0..w).step_by(region) {
                     let x1 = (x0 + region).min(w);
@@ -339,15 +343,16 @@ impl VplContext {
                             let (tx1, ty1) = ((tx + tile).min(x1), (ty + tile).min(y1));
                             let Some((lo, hi)) = bounds((tx, tx1), (ty, ty1)) else { continue };
                             coarse.cull_into(lo, hi, &mut hits, &mut fine);
-                            for y in ty..ty1 {
-                                for x in tx..tx1 {
-                                    let i = y * w + x;
-                                    if gb.valid(i) {
-                                        out[i - y0 * w] = shade::shade(&fine, gb.position[i], gb.normal[i], self.inputs.min_d2, near_r2, Cull::Near);
-                                        evals += fine.len_unpadded() as u64;
-                                    }
-                                }
+                            pixels.clear();
+                            pixels.extend((ty..ty1).flat_map(|y| (tx..tx1).map(move |x| y * w + x)).filter(|&i| gb.valid(i)));
+                            receivers.clear();
+                            receivers.extend(pixels.iter().map(|&i| (gb.position[i], gb.normal[i])));
+                            shaded.clear();
+                            shade::shade_all(&fine, &receivers, self.inputs.min_d2, near_r2, Cull::Near, &mut shaded);
+                            for (&i, &s) in pixels.iter().zip(&shaded) {
+                                out[i - y0 * w] = s;
                             }
+                            evals += (fine.len_unpadded() * pixels.len()) as u64;
                         }
                     }
                 }
@@ -358,6 +363,23 @@ impl VplContext {
         let (e, kept) = rows.into_iter().flat_map(|r| r.0).unzip();
         (e, kept, evals)
     }
+}
+
+/// The method-independent part of a frame: G-buffer, VPLs (RSM) and direct
+/// light, with their times in the returned statistics.
+fn frame_inputs(scene: &Scene, geo: &Geometry, width: u32, height: u32, rsm_size: u32, min_d2: f32) -> (VplInputs, Vec<Vec3>, VplStats) {
+    let mut base = VplStats::default();
+    let t = Instant::now();
+    let (gbuffer, geometric_normal) = render_gbuffer(scene, geo, width, height);
+    base.gbuffer_ms = ms(t);
+    let t = Instant::now();
+    let vpls = rsm::reflective_shadow_map(scene, geo, rsm_size);
+    base.rsm_ms = ms(t);
+    let t = Instant::now();
+    let direct = direct_light(scene, geo, &gbuffer, &geometric_normal);
+    base.direct_ms = ms(t);
+    base.vpls = vpls.len();
+    (VplInputs { gbuffer, vpls, min_d2 }, direct, base)
 }
 
 /// The box `(lo, hi)` of the G-buffer positions of `pixels` (`lo > hi`
@@ -374,8 +396,11 @@ pub const NEAR_TILE: usize = 8;
 
 /// Direct irradiance from the primary light, with shadow rays offset along
 /// the geometric normal `geo_n` (cosines use the G-buffer's shading normal).
+/// The shadow ray is cast only where the light would add something (facing
+/// the light, inside a spot's cone).
 fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer, geo_n: &[Vec3]) -> Vec<Vec3> {
     let diag = scene.diagonal();
+    let spot = scene.primary.spot().map(Light::Spot);
     (0..gb.position.len())
         .into_par_iter()
         .map(|i| {
@@ -383,22 +408,25 @@ fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer, geo_n: &[Vec3]) -> 
                 return Vec3::ZERO;
             }
             let (x, n) = (gb.position[i], gb.normal[i]);
-            match scene.primary {
-                PrimaryLight::Spot { position, .. } => {
-                    let spot = Light::Spot(scene.primary.spot().expect("validated scene"));
+            let from = x + geo_n[i] * surface_offset(diag);
+            match (scene.primary, &spot) {
+                (PrimaryLight::Spot { position, .. }, Some(spot)) => {
                     let v = position - x;
-                    if n.dot(v) <= 0.0 || geo.occluded(x + geo_n[i] * surface_offset(diag), position) {
+                    if n.dot(v) <= 0.0 {
                         return Vec3::ZERO;
                     }
-                    point_irradiance(spot.intensity(-v.normalize()), n, v)
+                    let e = point_irradiance(spot.intensity(-v.normalize()), n, v);
+                    if e == Vec3::ZERO || geo.occluded(from, position) { Vec3::ZERO } else { e }
                 }
-                PrimaryLight::Directional { direction, irradiance } => {
+                (PrimaryLight::Directional { direction, irradiance }, _) => {
                     let wi = -direction.normalize();
-                    if n.dot(wi) <= 0.0 || geo.occluded(x + geo_n[i] * surface_offset(diag), x + wi * 2.0 * diag) {
+                    if n.dot(wi) <= 0.0 || geo.occluded(from, x + wi * 2.0 * diag) {
                         return Vec3::ZERO;
                     }
                     directional_irradiance(irradiance, n, wi)
                 }
+                // A spot light's parameters are checked when the scene is.
+                (PrimaryLight::Spot { .. }, None) => Vec3::ZERO,
             }
         })
         .collect()

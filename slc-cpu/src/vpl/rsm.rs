@@ -18,14 +18,17 @@ pub fn reflective_shadow_map(scene: &Scene, geo: &Geometry, size: u32) -> Vpls {
     let n = size as usize * size as usize;
     let diag = scene.diagonal();
     let map = scene.primary.light_map(scene.bounds());
+    let spot = scene.primary.spot().map(Light::Spot);
     let texels: Vec<(Vec3, Vec3, Vec3)> = (0..n)
         .into_par_iter()
         .map(|i| {
             let (tx, ty) = ((i % size as usize) as u32, (i / size as usize) as u32);
             let (origin, dir, gathered) = map.texel_ray(tx, ty, size);
-            let incident = match scene.primary {
-                PrimaryLight::Spot { .. } => Light::Spot(scene.primary.spot().expect("validated scene")).intensity(dir) * gathered,
-                PrimaryLight::Directional { irradiance, .. } => irradiance * gathered,
+            let incident = match (scene.primary, &spot) {
+                (PrimaryLight::Spot { .. }, Some(spot)) => spot.intensity(dir) * gathered,
+                (PrimaryLight::Directional { irradiance, .. }, _) => irradiance * gathered,
+                // A spot light's parameters are checked when the scene is.
+                (PrimaryLight::Spot { .. }, None) => Vec3::ZERO,
             };
             hit_texel(scene, geo, origin, dir, incident, diag)
         })
