@@ -114,6 +114,17 @@ fn vpl_run(settings: &VplSettings, param: Option<f32>, st: &slc_scene::vpl::VplS
         kept_per_pixel: st.kept_per_pixel,
         evaluations_per_second: st.evaluations as f64 / (st.shading_ms * 1e-3).max(1e-12),
         stages,
+        shading_speedup: None,
+        frame_speedup: None,
+    }
+}
+
+/// Fills each run's speed-ups over the unculled (`none`) run, if there is one.
+fn speedups(runs: &mut [Run]) {
+    let Some((shading, frame)) = runs.iter().find(|r| r.method == "none").map(|r| (r.shading_ms, r.total_ms)) else { return };
+    for r in runs {
+        r.shading_speedup = Some(shading / r.shading_ms.max(1e-12));
+        r.frame_speedup = Some(frame / r.total_ms.max(1e-12));
     }
 }
 
@@ -145,11 +156,25 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
     let mut runs = Vec::new();
     for (param, settings) in configs {
         bar.set_message(run_label(&settings, param));
-        let f = fastest(a.repeat, || ctx.render(&settings).map_err(anyhow::Error::from), |f: &VplFrame| f.stats.shading_ms)?;
-        runs.push(vpl_run(&settings, param, &f.stats, f.image.rmse(&reference), Vec::new()));
+        // Each run renders the method-independent stages again (warm), as
+        // a frame whose light or camera moves must.
+        let timed = || -> anyhow::Result<VplFrame> {
+            let inputs = ctx.time_inputs();
+            let mut f = ctx.render(&settings)?;
+            f.stats = f.stats.with_input_times(&inputs);
+            Ok(f)
+        };
+        let f = fastest(a.repeat, timed, |f: &VplFrame| f.stats.total_ms)?;
+        let st = &f.stats;
+        let stages =
+            [("G-buffer", st.gbuffer_ms), ("RSM", st.rsm_ms), ("direct", st.direct_ms), ("shading", st.shading_ms), ("denoise", st.denoise_ms)]
+                .map(|(name, ms)| StageMs { name: name.into(), ms })
+                .to_vec();
+        runs.push(vpl_run(&settings, param, st, f.image.rmse(&reference), stages));
         bar.inc(1);
     }
     bar.finish_and_clear();
+    speedups(&mut runs);
     let report = Report {
         app: "vpl".into(),
         backend: "cpu".into(),
@@ -157,9 +182,10 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
         width: loaded.width,
         height: loaded.height,
         lights: ctx.vpls().len(),
-        timing: "wall clock, fastest of --repeat runs".into(),
+        timing: "wall clock, fastest of --repeat whole frames (every stage re-run, warm)".into(),
         threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
         reference_from_cache: cached,
+        simd: Some(slc_cpu::simd::SimdPath::best().name().into()),
         runs,
     };
     write_report(&a, &report)
@@ -197,6 +223,7 @@ fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
         bar.inc(1);
     }
     bar.finish_and_clear();
+    speedups(&mut runs);
     let report = Report {
         app: "vpl".into(),
         backend: format!("gpu: {}", gpu.describe()),
@@ -207,6 +234,7 @@ fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
         timing: format!("{}; the whole frame on the GPU; fastest of --repeat runs by shading time", crate::timing_note(timing)),
         threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
         reference_from_cache: false,
+        simd: None,
         runs,
     };
     for run in &report.runs {
@@ -235,23 +263,25 @@ fn write_report(a: &BenchArgs, report: &Report) -> anyhow::Result<()> {
         crate::plot::speed_vs_error(report, plot)?;
     }
     println!(
-        "{} {}x{}, {} VPLs, {} threads (reference {})",
+        "{} {}x{}, {} VPLs, {} threads{} (reference {})",
         report.scene,
         report.width,
         report.height,
         report.lights,
         report.threads,
+        report.simd.as_ref().map_or(String::new(), |s| format!(", {s} loops")),
         if report.reference_from_cache { "from cache" } else { "rendered" }
     );
     println!(
-        "{:<8} {:>8} {:>11} {:>10} {:>9} {:>9} {:>9} {:>10}",
-        "method", "param", "shading ms", "total ms", "rmse", "lights/px", "kept/px", "evals/s"
+        "{:<8} {:>8} {:>11} {:>10} {:>9} {:>9} {:>9} {:>10} {:>8} {:>8}",
+        "method", "param", "shading ms", "total ms", "rmse", "lights/px", "kept/px", "evals/s", "shade x", "frame x"
     );
+    let speedup = |x: Option<f64>| x.map_or("-".into(), |x| format!("{x:.2}"));
     for r in &report.runs {
         // The GPU frame does not count loop evaluations: "-".
         let counted = r.evaluations_per_second > 0.0;
         println!(
-            "{:<8} {:>8} {:>11.2} {:>10.2} {:>9.5} {:>9} {:>9.1} {:>10}",
+            "{:<8} {:>8} {:>11.2} {:>10.2} {:>9.5} {:>9} {:>9.1} {:>10} {:>8} {:>8}",
             r.method,
             r.param.map_or("-".into(), |p| p.to_string()),
             r.shading_ms,
@@ -259,8 +289,20 @@ fn write_report(a: &BenchArgs, report: &Report) -> anyhow::Result<()> {
             r.rmse,
             if counted { format!("{:.1}", r.lights_per_pixel) } else { "-".into() },
             r.kept_per_pixel,
-            if counted { format!("{:.3e}", r.evaluations_per_second) } else { "-".into() }
+            if counted { format!("{:.3e}", r.evaluations_per_second) } else { "-".into() },
+            speedup(r.shading_speedup),
+            speedup(r.frame_speedup),
         );
+    }
+    if report.backend == "cpu" {
+        println!(
+            "stages (ms): {}",
+            report.runs.first().map_or(String::new(), |r| r.stages.iter().map(|s| s.name.as_str()).collect::<Vec<_>>().join(", "))
+        );
+        for r in &report.runs {
+            let ms: Vec<String> = r.stages.iter().map(|s| format!("{:.1}", s.ms)).collect();
+            println!("  {:<8} {:>8}: {}", r.method, r.param.map_or("-".into(), |p| p.to_string()), ms.join(", "));
+        }
     }
     Ok(())
 }

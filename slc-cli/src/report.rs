@@ -25,9 +25,16 @@ pub struct Run {
     /// Loop evaluations per second of shading time (culling included; 0
     /// where the backend does not count them).
     pub evaluations_per_second: f64,
-    /// Every stage's time, in order (the GPU frame; empty for the CPU).
+    /// Every stage's time, in order (G-buffer, RSM, direct light, shading,
+    /// denoise on the CPU; the GPU frame's passes on the GPU).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub stages: Vec<StageMs>,
+    /// The unculled (`none`) run's shading time over this one's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shading_speedup: Option<f64>,
+    /// The unculled run's whole frame over this one's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub frame_speedup: Option<f64>,
 }
 
 /// One stage's time in a [`Run`].
@@ -60,6 +67,10 @@ pub struct Report {
     pub threads: usize,
     /// Whether the reference came from the cache.
     pub reference_from_cache: bool,
+    /// The instruction set of the CPU's hot loops (`avx512`, `avx2`,
+    /// `baseline`); absent for the GPU.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub simd: Option<String>,
     /// One entry per configuration.
     pub runs: Vec<Run>,
 }

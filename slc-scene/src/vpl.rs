@@ -166,6 +166,16 @@ pub struct VplStats {
     pub evaluations: u64,
 }
 
+impl VplStats {
+    /// These statistics with the G-buffer, RSM and direct-light times of
+    /// `inputs` (a warm re-run of those stages) and the total summed again.
+    pub fn with_input_times(mut self, inputs: &VplStats) -> VplStats {
+        (self.gbuffer_ms, self.rsm_ms, self.direct_ms) = (inputs.gbuffer_ms, inputs.rsm_ms, inputs.direct_ms);
+        self.total_ms = self.gbuffer_ms + self.rsm_ms + self.direct_ms + self.shading_ms + self.denoise_ms;
+        self
+    }
+}
+
 /// Indirect irradiance of one frame before denoise and composition (what a
 /// backend computes).
 #[derive(Clone, Debug)]
