@@ -171,8 +171,13 @@ impl VplStats {
     /// `inputs` (a warm re-run of those stages) and the total summed again.
     pub fn with_input_times(mut self, inputs: &VplStats) -> VplStats {
         (self.gbuffer_ms, self.rsm_ms, self.direct_ms) = (inputs.gbuffer_ms, inputs.rsm_ms, inputs.direct_ms);
-        self.total_ms = self.gbuffer_ms + self.rsm_ms + self.direct_ms + self.shading_ms + self.denoise_ms;
+        self.total_ms = self.stage_sum();
         self
+    }
+
+    /// The frame's time: G-buffer + RSM + direct + shading + denoise.
+    pub fn stage_sum(&self) -> f64 {
+        self.gbuffer_ms + self.rsm_ms + self.direct_ms + self.shading_ms + self.denoise_ms
     }
 }
 

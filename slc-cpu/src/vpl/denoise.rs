@@ -63,27 +63,33 @@ pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
 /// [`cross_bilateral`] on a chosen [`SimdPath`] (the baseline where the CPU
 /// lacks it).
 pub fn cross_bilateral_on(path: SimdPath, e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
-    let (w, h) = (gb.width as usize, gb.height as usize);
-    let split = |f: fn(Vec3) -> f32, v: &[Vec3]| -> Vec<f32> { v.par_iter().map(|&x| f(x)).collect() };
-    // DEPTH_NONE stands for "no surface": every δ to it is huge, weight 0.
-    let z: Vec<f32> = gb.depth.par_iter().map(|&d| if d.is_finite() { d } else { DEPTH_NONE }).collect();
-    let planes = Planes {
-        e,
-        er: split(|v| v.x, e),
-        eg: split(|v| v.y, e),
-        eb: split(|v| v.z, e),
-        nx: split(|v| v.x, &gb.normal),
-        ny: split(|v| v.y, &gb.normal),
-        nz: split(|v| v.z, &gb.normal),
-        inv: z.par_iter().map(|&z| inv_sigma_z(z)).collect(),
-        z,
-        w,
-        h,
-        period,
-    };
-    let mut out = vec![Vec3::ZERO; w * h];
-    out.par_chunks_mut(w.max(1)).enumerate().for_each(|(y, row)| path.run(FilterRow { p: &planes, gb, y, row }));
+    let planes = Planes::new(e, gb, period);
+    let mut out = vec![Vec3::ZERO; planes.w * planes.h];
+    out.par_chunks_mut(planes.w.max(1)).enumerate().for_each(|(y, row)| path.run(FilterRow { p: &planes, gb, y, row }));
     out
+}
+
+impl<'a> Planes<'a> {
+    /// Splits `e` and the G-buffer into planes (in parallel).
+    fn new(e: &'a [Vec3], gb: &GBuffer, period: u32) -> Self {
+        let split = |f: fn(Vec3) -> f32, v: &[Vec3]| -> Vec<f32> { v.par_iter().map(|&x| f(x)).collect() };
+        // DEPTH_NONE stands for "no surface": every δ to it is huge, weight 0.
+        let z: Vec<f32> = gb.depth.par_iter().map(|&d| if d.is_finite() { d } else { DEPTH_NONE }).collect();
+        Planes {
+            e,
+            er: split(|v| v.x, e),
+            eg: split(|v| v.y, e),
+            eb: split(|v| v.z, e),
+            nx: split(|v| v.x, &gb.normal),
+            ny: split(|v| v.y, &gb.normal),
+            nz: split(|v| v.z, &gb.normal),
+            inv: z.par_iter().map(|&z| inv_sigma_z(z)).collect(),
+            z,
+            w: gb.width as usize,
+            h: gb.height as usize,
+            period,
+        }
+    }
 }
 
 /// One output row as a pulp operation, so [`SimdPath::run`] compiles it per
@@ -241,21 +247,7 @@ mod tests {
         let shaded = ctx.shade(&VplSettings { method: VplMethod::None, near_radius: Some(0.0), ..VplSettings::default() }).unwrap();
         let gb = ctx.gbuffer();
         let e = &shaded.irradiance;
-        let z: Vec<f32> = gb.depth.iter().map(|&d| if d.is_finite() { d } else { DEPTH_NONE }).collect();
-        let planes = Planes {
-            e,
-            er: e.iter().map(|v| v.x).collect(),
-            eg: e.iter().map(|v| v.y).collect(),
-            eb: e.iter().map(|v| v.z).collect(),
-            nx: gb.normal.iter().map(|v| v.x).collect(),
-            ny: gb.normal.iter().map(|v| v.y).collect(),
-            nz: gb.normal.iter().map(|v| v.z).collect(),
-            inv: z.iter().map(|&z| inv_sigma_z(z)).collect(),
-            z,
-            w: 72,
-            h: 40,
-            period: PERIOD,
-        };
+        let planes = Planes::new(e, gb, PERIOD);
         let expected: Vec<Vec3> = (0..e.len()).map(|i| if gb.valid(i) { filter_pixel(&planes, i % 72, i / 72) } else { Vec3::ZERO }).collect();
         let widened = (0..e.len()).filter(|&i| gb.valid(i) && misses_subset(window_sum(&planes, i % 72, i / 72, PERIOD).2, PERIOD)).count();
         assert!(widened > 0 && widened < e.len() / 2, "both window sizes occur ({widened} widened)");

@@ -148,7 +148,7 @@ impl VplContext {
         let data =
             (0..filtered.len()).into_par_iter().map(|i| diffuse_radiance(gb.albedo[i], gb.emission[i], self.direct[i] + filtered[i])).collect();
         stats.denoise_ms = ms(t) + shaded.denoised_ms.unwrap_or(0.0);
-        stats.total_ms = stats.gbuffer_ms + stats.rsm_ms + stats.direct_ms + stats.shading_ms + stats.denoise_ms;
+        stats.total_ms = stats.stage_sum();
         VplFrame { image: Image { width: gb.width, height: gb.height, data }, stats }
     }
 
@@ -409,24 +409,21 @@ fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer, geo_n: &[Vec3]) -> 
             }
             let (x, n) = (gb.position[i], gb.normal[i]);
             let from = x + geo_n[i] * surface_offset(diag);
-            match (scene.primary, &spot) {
-                (PrimaryLight::Spot { position, .. }, Some(spot)) => {
+            match scene.primary {
+                PrimaryLight::Spot { position, .. } => {
                     let v = position - x;
-                    if n.dot(v) <= 0.0 {
-                        return Vec3::ZERO;
-                    }
+                    // A spot light's parameters are checked when the scene is.
+                    let Some(spot) = spot.as_ref().filter(|_| n.dot(v) > 0.0) else { return Vec3::ZERO };
                     let e = point_irradiance(spot.intensity(-v.normalize()), n, v);
                     if e == Vec3::ZERO || geo.occluded(from, position) { Vec3::ZERO } else { e }
                 }
-                (PrimaryLight::Directional { direction, irradiance }, _) => {
+                PrimaryLight::Directional { direction, irradiance } => {
                     let wi = -direction.normalize();
                     if n.dot(wi) <= 0.0 || geo.occluded(from, x + wi * 2.0 * diag) {
                         return Vec3::ZERO;
                     }
                     directional_irradiance(irradiance, n, wi)
                 }
-                // A spot light's parameters are checked when the scene is.
-                (PrimaryLight::Spot { .. }, None) => Vec3::ZERO,
             }
         })
         .collect()

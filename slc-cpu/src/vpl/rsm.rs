@@ -24,11 +24,10 @@ pub fn reflective_shadow_map(scene: &Scene, geo: &Geometry, size: u32) -> Vpls {
         .map(|i| {
             let (tx, ty) = ((i % size as usize) as u32, (i / size as usize) as u32);
             let (origin, dir, gathered) = map.texel_ray(tx, ty, size);
-            let incident = match (scene.primary, &spot) {
-                (PrimaryLight::Spot { .. }, Some(spot)) => spot.intensity(dir) * gathered,
-                (PrimaryLight::Directional { irradiance, .. }, _) => irradiance * gathered,
+            let incident = match scene.primary {
                 // A spot light's parameters are checked when the scene is.
-                (PrimaryLight::Spot { .. }, None) => Vec3::ZERO,
+                PrimaryLight::Spot { .. } => spot.as_ref().map_or(Vec3::ZERO, |s| s.intensity(dir)) * gathered,
+                PrimaryLight::Directional { irradiance, .. } => irradiance * gathered,
             };
             hit_texel(scene, geo, origin, dir, incident, diag)
         })
