@@ -21,6 +21,16 @@ crate::shared! {
         return to_u32(clamp(floor((a + 1.0) * 0.5 * to_f32(size)), 0.0, to_f32(size) - 1.0));
     }
 
+    /// Map coordinate along the unit map direction `dir` (its right or
+    /// up) of a point at offset `rel` from the map's origin: the inverse of
+    /// the map's rays, `rel·dir / (z·extent)` with `z = rel·axis` the depth
+    /// along the unit `axis` (perspective map, `extent = tan` of the
+    /// half-angle; meaningful where `z > 0`), or `rel·dir / extent`
+    /// (orthographic map, `extent` its half-edge).
+    pub fn light_map_coord_at(rel: vec3f, dir: vec3f, axis: vec3f, extent: f32, perspective: bool) -> f32 {
+        return dot(rel, dir) / (select(1.0, dot(rel, axis), perspective) * extent);
+    }
+
     /// Depth a light map stores for a point at offset `rel` from the map's
     /// origin: the distance from the light (perspective map) or the
     /// distance along the unit `axis` from the map's plane (orthographic).
@@ -138,6 +148,18 @@ mod tests {
         let d = directional_irradiance(Vec3::splat(2.0), n, Vec3::new(0.0, 0.5f32.sqrt(), 0.5f32.sqrt()));
         assert!((d.x - 2.0 * 0.5f32.sqrt()).abs() < 1e-6);
         assert_eq!(directional_irradiance(Vec3::ONE, n, -Vec3::Y), Vec3::ZERO);
+    }
+
+    #[test]
+    fn map_coord_inverts_the_map_rays() {
+        // A perspective ray axis + right·a·tan + up·b·tan at any depth.
+        let (axis, right, up, tan) = (Vec3::NEG_Y, Vec3::X, Vec3::Z, 0.5);
+        let rel = (axis + right * (0.25 * tan) + up * (-0.75 * tan)) * 3.0;
+        assert!((light_map_coord_at(rel, right, axis, tan, true) - 0.25).abs() < 1e-6);
+        assert!((light_map_coord_at(rel, up, axis, tan, true) + 0.75).abs() < 1e-6);
+        // An orthographic point right·a·half + axis·anything.
+        let rel = right * (0.5 * 2.0) + axis * 7.0;
+        assert!((light_map_coord_at(rel, right, axis, 2.0, false) - 0.5).abs() < 1e-6);
     }
 
     #[test]

@@ -68,15 +68,29 @@ impl Geometry {
         if self.tris.is_empty() {
             return false;
         }
+        let Some(ray) = Self::segment(a, b) else { return false };
+        let idx = &self.bvh.primitive_indices;
+        !self.bvh.ray_traverse_miss(ray, |r, id| self.tris[idx[id] as usize].intersect(r))
+    }
+
+    /// The ray [`Geometry::occluded`] tests for the segment from `a` to `b`:
+    /// unit direction, `t` within [`slc_core::ray::shadow_margin`] of both
+    /// ends; `None` for a degenerate segment (nothing blocks it).
+    pub fn segment(a: Vec3, b: Vec3) -> Option<Ray> {
         let d = b - a;
         let len = d.length();
         if !(len > 0.0) {
-            return false;
+            return None;
         }
         let eps = slc_core::ray::shadow_margin(len);
-        let ray = Ray::new(Vec3A::from(a), Vec3A::from(d / len), eps, len - eps);
-        let idx = &self.bvh.primitive_indices;
-        !self.bvh.ray_traverse_miss(ray, |r, id| self.tris[idx[id] as usize].intersect(r))
+        Some(Ray::new(Vec3A::from(a), Vec3A::from(d / len), eps, len - eps))
+    }
+
+    /// `true` when triangle `tri` blocks the segment `ray` (from
+    /// [`Geometry::segment`]): the test [`Geometry::occluded`] runs per leaf.
+    #[inline]
+    pub fn blocks(&self, tri: u32, ray: &Ray) -> bool {
+        self.hit_t(tri, ray) < ray.tmax
     }
 
     /// Geometric unit normal of triangle `i` (from its winding).

@@ -36,6 +36,7 @@ pub mod direct;
 pub mod gbuffer;
 pub mod geometry;
 pub mod pt;
+pub mod raster;
 pub mod reference;
 pub mod simd;
 pub mod vpl;

@@ -23,6 +23,7 @@ pub mod shade;
 
 use crate::gbuffer::render_gbuffer;
 use crate::geometry::Geometry;
+use crate::raster::{MapView, Occluders};
 use glam::Vec3;
 use rayon::prelude::*;
 use shade::{Cull, LightList};
@@ -394,13 +395,21 @@ pub const NEAR_REGION: usize = 32;
 /// Tile edge (pixels) of the near field's second culling level.
 pub const NEAR_TILE: usize = 8;
 
-/// Direct irradiance from the primary light, with shadow rays offset along
-/// the geometric normal `geo_n` (cosines use the G-buffer's shading normal).
-/// The shadow ray is cast only where the light would add something (facing
-/// the light, inside a spot's cone).
+/// Texels per edge of the light-space grid the primary light's shadow
+/// segments are binned to (see [`Occluders`]).
+const SHADOW_GRID: usize = 64;
+
+/// Direct irradiance from the primary light, with shadow segments offset
+/// along the geometric normal `geo_n` (cosines use the G-buffer's shading
+/// normal). Every shadow segment runs along a ray of the light's map, so
+/// it is tested against the triangles binned to its texel ([`Occluders`],
+/// the ray caster's answer without a BVH walk), and only where the light
+/// would add something (facing the light, inside a spot's cone).
 fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer, geo_n: &[Vec3]) -> Vec<Vec3> {
     let diag = scene.diagonal();
     let spot = scene.primary.spot().map(Light::Spot);
+    let map = MapView { map: scene.primary.light_map(scene.bounds()), size: SHADOW_GRID, t_min: surface_offset(diag) };
+    let occluders = Occluders::new(map, geo, &scene.triangles);
     (0..gb.position.len())
         .into_par_iter()
         .map(|i| {
@@ -415,11 +424,11 @@ fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer, geo_n: &[Vec3]) -> 
                     // A spot light's parameters are checked when the scene is.
                     let Some(spot) = spot.as_ref().filter(|_| n.dot(v) > 0.0) else { return Vec3::ZERO };
                     let e = point_irradiance(spot.intensity(-v.normalize()), n, v);
-                    if e == Vec3::ZERO || geo.occluded(from, position) { Vec3::ZERO } else { e }
+                    if e == Vec3::ZERO || occluders.occluded(from, position) { Vec3::ZERO } else { e }
                 }
                 PrimaryLight::Directional { direction, irradiance } => {
                     let wi = -direction.normalize();
-                    if n.dot(wi) <= 0.0 || geo.occluded(from, x + wi * 2.0 * diag) {
+                    if n.dot(wi) <= 0.0 || occluders.occluded(from, x + wi * 2.0 * diag) {
                         return Vec3::ZERO;
                     }
                     directional_irradiance(irradiance, n, wi)

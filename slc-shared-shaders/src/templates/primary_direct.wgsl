@@ -46,14 +46,14 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             direct[i] = vec4f(0.0);
             return;
         }
-        a = dot(rel, params.right) / (z * params.extent);
-        b = dot(rel, params.up) / (z * params.extent);
+        a = light_map_coord_at(rel, params.right, params.axis, params.extent, true);
+        b = light_map_coord_at(rel, params.up, params.axis, params.extent, true);
         width = perspective_texel_width(params.extent, d, z, size);
         cos_light = dot(n, v) / d;
         e = point_irradiance(light_intensity(params.light, rel / d), n, v);
     } else {
-        a = dot(rel, params.right) / params.extent;
-        b = dot(rel, params.up) / params.extent;
+        a = light_map_coord_at(rel, params.right, params.axis, params.extent, false);
+        b = light_map_coord_at(rel, params.up, params.axis, params.extent, false);
         width = ortho_texel_width(params.extent, size);
         cos_light = -dot(n, params.axis);
         e = directional_irradiance(params.light.intensity, n, -params.axis);

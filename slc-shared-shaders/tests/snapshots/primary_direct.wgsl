@@ -1231,8 +1231,12 @@ fn light_map_texel(a_9: f32, size_7: u32) -> u32 {
     return _e14;
 }
 
-fn light_map_depth(rel: vec3<f32>, axis_2: vec3<f32>, perspective: bool) -> f32 {
-    return select(dot(rel, axis_2), sqrt(dot(rel, rel)), perspective);
+fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_2: vec3<f32>, extent_2: f32, perspective: bool) -> f32 {
+    return (dot(rel, dir_2) / (select(1f, dot(rel, axis_2), perspective) * extent_2));
+}
+
+fn light_map_depth(rel_1: vec3<f32>, axis_3: vec3<f32>, perspective_1: bool) -> f32 {
+    return select(dot(rel_1, axis_3), sqrt(dot(rel_1, rel_1)), perspective_1);
 }
 
 fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
@@ -1250,12 +1254,12 @@ fn directional_irradiance(e_2: vec3<f32>, n_16: vec3<f32>, to_light: vec3<f32>) 
     return (e_2 * max(dot(n_16, to_light), 0f));
 }
 
-fn perspective_texel_width(extent_2: f32, d_2: f32, z_2: f32, size_8: f32) -> f32 {
-    return ((((2f * extent_2) * d_2) * d_2) / (size_8 * z_2));
+fn perspective_texel_width(extent_3: f32, d_2: f32, z_2: f32, size_8: f32) -> f32 {
+    return ((((2f * extent_3) * d_2) * d_2) / (size_8 * z_2));
 }
 
-fn ortho_texel_width(extent_3: f32, size_9: f32) -> f32 {
-    return ((2f * extent_3) / size_9);
+fn ortho_texel_width(extent_4: f32, size_9: f32) -> f32 {
+    return ((2f * extent_4) / size_9);
 }
 
 fn shadow_bias(texel: f32, cos_light_2: f32) -> f32 {
@@ -1347,15 +1351,15 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e55 = params.size;
     let size_10 = f32(_e55);
     let _e66 = params.origin;
-    let rel_1 = (x_14 - _e66);
+    let rel_2 = (x_14 - _e66);
     let _e70 = params.axis;
     let _e73 = params.mode;
-    let _e76 = light_map_depth(rel_1, _e70, (_e73 == MAP_PERSPECTIVE));
+    let _e76 = light_map_depth(rel_2, _e70, (_e73 == MAP_PERSPECTIVE));
     let _e83 = params.mode;
     if (_e83 == MAP_PERSPECTIVE) {
-        let v_12 = -(rel_1);
+        let v_12 = -(rel_2);
         let _e89 = params.axis;
-        let z_4 = dot(rel_1, _e89);
+        let z_4 = dot(rel_2, _e89);
         if !((z_4 <= 0f)) {
             local_2 = (_e76 <= 0f);
         } else {
@@ -1367,62 +1371,70 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             return;
         }
         let _e106 = params.right;
-        let _e110 = params.extent;
-        a = (dot(rel_1, _e106) / (z_4 * _e110));
-        let _e115 = params.up;
-        let _e119 = params.extent;
-        b = (dot(rel_1, _e115) / (z_4 * _e119));
-        let _e124 = params.extent;
-        let _e125 = perspective_texel_width(_e124, _e76, z_4, size_10);
-        width = _e125;
+        let _e109 = params.axis;
+        let _e112 = params.extent;
+        let _e114 = light_map_coord_at(rel_2, _e106, _e109, _e112, true);
+        a = _e114;
+        let _e117 = params.up;
+        let _e120 = params.axis;
+        let _e123 = params.extent;
+        let _e125 = light_map_coord_at(rel_2, _e117, _e120, _e123, true);
+        b = _e125;
+        let _e128 = params.extent;
+        let _e129 = perspective_texel_width(_e128, _e76, z_4, size_10);
+        width = _e129;
         cos_light = (dot(n_19, v_12) / _e76);
-        let _e130 = params.light;
-        let _e133 = light_intensity(_e130, (rel_1 / vec3(_e76)));
-        let _e134 = point_irradiance(_e133, n_19, v_12);
-        e = _e134;
+        let _e134 = params.light;
+        let _e137 = light_intensity(_e134, (rel_2 / vec3(_e76)));
+        let _e138 = point_irradiance(_e137, n_19, v_12);
+        e = _e138;
     } else {
-        let _e137 = params.right;
-        let _e141 = params.extent;
-        a = (dot(rel_1, _e137) / _e141);
-        let _e145 = params.up;
-        let _e149 = params.extent;
-        b = (dot(rel_1, _e145) / _e149);
-        let _e153 = params.extent;
-        let _e154 = ortho_texel_width(_e153, size_10);
-        width = _e154;
-        let _e157 = params.axis;
-        cos_light = -(dot(n_19, _e157));
-        let _e163 = params.light.intensity;
-        let _e166 = params.axis;
-        let _e168 = directional_irradiance(_e163, n_19, -(_e166));
-        e = _e168;
+        let _e141 = params.right;
+        let _e144 = params.axis;
+        let _e147 = params.extent;
+        let _e149 = light_map_coord_at(rel_2, _e141, _e144, _e147, false);
+        a = _e149;
+        let _e152 = params.up;
+        let _e155 = params.axis;
+        let _e158 = params.extent;
+        let _e160 = light_map_coord_at(rel_2, _e152, _e155, _e158, false);
+        b = _e160;
+        let _e163 = params.extent;
+        let _e164 = ortho_texel_width(_e163, size_10);
+        width = _e164;
+        let _e167 = params.axis;
+        cos_light = -(dot(n_19, _e167));
+        let _e173 = params.light.intensity;
+        let _e176 = params.axis;
+        let _e178 = directional_irradiance(_e173, n_19, -(_e176));
+        e = _e178;
     }
-    let _e169 = a;
-    if (abs(_e169) <= 1f) {
-        let _e175 = b;
-        local_3 = (abs(_e175) <= 1f);
+    let _e179 = a;
+    if (abs(_e179) <= 1f) {
+        let _e185 = b;
+        local_3 = (abs(_e185) <= 1f);
     } else {
         local_3 = false;
     }
-    let _e180 = local_3;
-    if _e180 {
-        let _e182 = a;
-        let _e185 = params.size;
-        let _e186 = light_map_texel(_e182, _e185);
-        let _e188 = b;
-        let _e191 = params.size;
-        let _e192 = light_map_texel(_e188, _e191);
-        let _e196 = textureLoad(shadow_map, vec2<i32>(i32(_e186), i32(_e192)), 0i);
-        let d_map_1 = _e196.x;
-        let _e198 = width;
-        let _e199 = cos_light;
-        let _e200 = shadow_bias(_e198, _e199);
-        let _e201 = shadow_lit(_e76, d_map_1, _e200);
-        if !(_e201) {
+    let _e190 = local_3;
+    if _e190 {
+        let _e192 = a;
+        let _e195 = params.size;
+        let _e196 = light_map_texel(_e192, _e195);
+        let _e198 = b;
+        let _e201 = params.size;
+        let _e202 = light_map_texel(_e198, _e201);
+        let _e206 = textureLoad(shadow_map, vec2<i32>(i32(_e196), i32(_e202)), 0i);
+        let d_map_1 = _e206.x;
+        let _e208 = width;
+        let _e209 = cos_light;
+        let _e210 = shadow_bias(_e208, _e209);
+        let _e211 = shadow_lit(_e76, d_map_1, _e210);
+        if !(_e211) {
             e = vec3(0f);
         }
     }
-    let _e207 = e;
-    direct[i_2] = vec4<f32>(_e207, 0f);
+    let _e217 = e;
+    direct[i_2] = vec4<f32>(_e217, 0f);
     return;
 }

@@ -1247,8 +1247,12 @@ fn light_map_texel(a_8: f32, size_7: u32) -> u32 {
     return _e14;
 }
 
-fn light_map_depth(rel: vec3<f32>, axis_2: vec3<f32>, perspective: bool) -> f32 {
-    return select(dot(rel, axis_2), sqrt(dot(rel, rel)), perspective);
+fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_2: vec3<f32>, extent_2: f32, perspective: bool) -> f32 {
+    return (dot(rel, dir_2) / (select(1f, dot(rel, axis_2), perspective) * extent_2));
+}
+
+fn light_map_depth(rel_1: vec3<f32>, axis_3: vec3<f32>, perspective_1: bool) -> f32 {
+    return select(dot(rel_1, axis_3), sqrt(dot(rel_1, rel_1)), perspective_1);
 }
 
 fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
@@ -1266,12 +1270,12 @@ fn directional_irradiance(e_2: vec3<f32>, n_16: vec3<f32>, to_light: vec3<f32>) 
     return (e_2 * max(dot(n_16, to_light), 0f));
 }
 
-fn perspective_texel_width(extent_2: f32, d_2: f32, z_2: f32, size_8: f32) -> f32 {
-    return ((((2f * extent_2) * d_2) * d_2) / (size_8 * z_2));
+fn perspective_texel_width(extent_3: f32, d_2: f32, z_2: f32, size_8: f32) -> f32 {
+    return ((((2f * extent_3) * d_2) * d_2) / (size_8 * z_2));
 }
 
-fn ortho_texel_width(extent_3: f32, size_9: f32) -> f32 {
-    return ((2f * extent_3) / size_9);
+fn ortho_texel_width(extent_4: f32, size_9: f32) -> f32 {
+    return ((2f * extent_4) / size_9);
 }
 
 fn shadow_bias(texel: f32, cos_light_1: f32) -> f32 {

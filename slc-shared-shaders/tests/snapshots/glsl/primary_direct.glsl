@@ -1106,8 +1106,12 @@ uint light_map_texel(float a_9, uint size_7) {
     return _e14;
 }
 
-float light_map_depth(vec3 rel, vec3 axis_2, bool perspective) {
-    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis_2));
+float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_2, float extent_2, bool perspective) {
+    return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
+}
+
+float light_map_depth(vec3 rel_1, vec3 axis_3, bool perspective_1) {
+    return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
 }
 
 float rsm_texel_solid_angle(float texel_area, float cos_axis) {
@@ -1125,12 +1129,12 @@ vec3 directional_irradiance(vec3 e_2, vec3 n_16, vec3 to_light) {
     return (e_2 * max(dot(n_16, to_light), 0.0));
 }
 
-float perspective_texel_width(float extent_2, float d_2, float z_2, float size_8) {
-    return ((((2.0 * extent_2) * d_2) * d_2) / (size_8 * z_2));
+float perspective_texel_width(float extent_3, float d_2, float z_2, float size_8) {
+    return ((((2.0 * extent_3) * d_2) * d_2) / (size_8 * z_2));
 }
 
-float ortho_texel_width(float extent_3, float size_9) {
-    return ((2.0 * extent_3) / size_9);
+float ortho_texel_width(float extent_4, float size_9) {
+    return ((2.0 * extent_4) / size_9);
 }
 
 float shadow_bias(float texel, float cos_light_2) {
@@ -1220,15 +1224,15 @@ void main() {
     uint _e55 = _group_0_binding_0_cs.size;
     float size_10 = float(_e55);
     vec3 _e66 = _group_0_binding_0_cs.origin;
-    vec3 rel_1 = (x_14 - _e66);
+    vec3 rel_2 = (x_14 - _e66);
     vec3 _e70 = _group_0_binding_0_cs.axis;
     uint _e73 = _group_0_binding_0_cs.mode;
-    float _e76 = light_map_depth(rel_1, _e70, (_e73 == MAP_PERSPECTIVE));
+    float _e76 = light_map_depth(rel_2, _e70, (_e73 == MAP_PERSPECTIVE));
     uint _e83 = _group_0_binding_0_cs.mode;
     if ((_e83 == MAP_PERSPECTIVE)) {
-        vec3 v_12 = -(rel_1);
+        vec3 v_12 = -(rel_2);
         vec3 _e89 = _group_0_binding_0_cs.axis;
-        float z_4 = dot(rel_1, _e89);
+        float z_4 = dot(rel_2, _e89);
         if (!((z_4 <= 0.0))) {
             local_2 = (_e76 <= 0.0);
         } else {
@@ -1240,63 +1244,71 @@ void main() {
             return;
         }
         vec3 _e106 = _group_0_binding_0_cs.right;
-        float _e110 = _group_0_binding_0_cs.extent;
-        a = (dot(rel_1, _e106) / (z_4 * _e110));
-        vec3 _e115 = _group_0_binding_0_cs.up;
-        float _e119 = _group_0_binding_0_cs.extent;
-        b = (dot(rel_1, _e115) / (z_4 * _e119));
-        float _e124 = _group_0_binding_0_cs.extent;
-        float _e125 = perspective_texel_width(_e124, _e76, z_4, size_10);
-        width = _e125;
+        vec3 _e109 = _group_0_binding_0_cs.axis;
+        float _e112 = _group_0_binding_0_cs.extent;
+        float _e114 = light_map_coord_at(rel_2, _e106, _e109, _e112, true);
+        a = _e114;
+        vec3 _e117 = _group_0_binding_0_cs.up;
+        vec3 _e120 = _group_0_binding_0_cs.axis;
+        float _e123 = _group_0_binding_0_cs.extent;
+        float _e125 = light_map_coord_at(rel_2, _e117, _e120, _e123, true);
+        b = _e125;
+        float _e128 = _group_0_binding_0_cs.extent;
+        float _e129 = perspective_texel_width(_e128, _e76, z_4, size_10);
+        width = _e129;
         cos_light = (dot(n_19, v_12) / _e76);
-        GpuLight _e130 = _group_0_binding_0_cs.light;
-        vec3 _e133 = light_intensity(_e130, (rel_1 / vec3(_e76)));
-        vec3 _e134 = point_irradiance(_e133, n_19, v_12);
-        e = _e134;
+        GpuLight _e134 = _group_0_binding_0_cs.light;
+        vec3 _e137 = light_intensity(_e134, (rel_2 / vec3(_e76)));
+        vec3 _e138 = point_irradiance(_e137, n_19, v_12);
+        e = _e138;
     } else {
-        vec3 _e137 = _group_0_binding_0_cs.right;
-        float _e141 = _group_0_binding_0_cs.extent;
-        a = (dot(rel_1, _e137) / _e141);
-        vec3 _e145 = _group_0_binding_0_cs.up;
-        float _e149 = _group_0_binding_0_cs.extent;
-        b = (dot(rel_1, _e145) / _e149);
-        float _e153 = _group_0_binding_0_cs.extent;
-        float _e154 = ortho_texel_width(_e153, size_10);
-        width = _e154;
-        vec3 _e157 = _group_0_binding_0_cs.axis;
-        cos_light = -(dot(n_19, _e157));
-        vec3 _e163 = _group_0_binding_0_cs.light.intensity;
-        vec3 _e166 = _group_0_binding_0_cs.axis;
-        vec3 _e168 = directional_irradiance(_e163, n_19, -(_e166));
-        e = _e168;
+        vec3 _e141 = _group_0_binding_0_cs.right;
+        vec3 _e144 = _group_0_binding_0_cs.axis;
+        float _e147 = _group_0_binding_0_cs.extent;
+        float _e149 = light_map_coord_at(rel_2, _e141, _e144, _e147, false);
+        a = _e149;
+        vec3 _e152 = _group_0_binding_0_cs.up;
+        vec3 _e155 = _group_0_binding_0_cs.axis;
+        float _e158 = _group_0_binding_0_cs.extent;
+        float _e160 = light_map_coord_at(rel_2, _e152, _e155, _e158, false);
+        b = _e160;
+        float _e163 = _group_0_binding_0_cs.extent;
+        float _e164 = ortho_texel_width(_e163, size_10);
+        width = _e164;
+        vec3 _e167 = _group_0_binding_0_cs.axis;
+        cos_light = -(dot(n_19, _e167));
+        vec3 _e173 = _group_0_binding_0_cs.light.intensity;
+        vec3 _e176 = _group_0_binding_0_cs.axis;
+        vec3 _e178 = directional_irradiance(_e173, n_19, -(_e176));
+        e = _e178;
     }
-    float _e169 = a;
-    if ((abs(_e169) <= 1.0)) {
-        float _e175 = b;
-        local_3 = (abs(_e175) <= 1.0);
+    float _e179 = a;
+    if ((abs(_e179) <= 1.0)) {
+        float _e185 = b;
+        local_3 = (abs(_e185) <= 1.0);
     } else {
         local_3 = false;
     }
-    bool _e180 = local_3;
-    if (_e180) {
-        float _e182 = a;
-        uint _e185 = _group_0_binding_0_cs.size;
-        uint _e186 = light_map_texel(_e182, _e185);
-        float _e188 = b;
-        uint _e191 = _group_0_binding_0_cs.size;
-        uint _e192 = light_map_texel(_e188, _e191);
-        vec4 _e196 = texelFetch(_group_0_binding_4_cs, ivec2(int(_e186), int(_e192)), 0);
-        float d_map_1 = _e196.x;
-        float _e198 = width;
-        float _e199 = cos_light;
-        float _e200 = shadow_bias(_e198, _e199);
-        bool _e201 = shadow_lit(_e76, d_map_1, _e200);
-        if (!(_e201)) {
+    bool _e190 = local_3;
+    if (_e190) {
+        float _e192 = a;
+        uint _e195 = _group_0_binding_0_cs.size;
+        uint _e196 = light_map_texel(_e192, _e195);
+        float _e198 = b;
+        uint _e201 = _group_0_binding_0_cs.size;
+        uint _e202 = light_map_texel(_e198, _e201);
+        vec4 _e206 = texelFetch(_group_0_binding_4_cs, ivec2(int(_e196), int(_e202)), 0);
+        float d_map_1 = _e206.x;
+        float _e208 = width;
+        float _e209 = cos_light;
+        float _e210 = shadow_bias(_e208, _e209);
+        bool _e211 = shadow_lit(_e76, d_map_1, _e210);
+        if (!(_e211)) {
             e = vec3(0.0);
         }
     }
-    vec3 _e207 = e;
-    _group_0_binding_5_cs[i_2] = vec4(_e207, 0.0);
+    vec3 _e217 = e;
+    _group_0_binding_5_cs[i_2] = vec4(_e217, 0.0);
     return;
 }
 

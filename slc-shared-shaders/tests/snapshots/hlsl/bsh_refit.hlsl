@@ -232,7 +232,7 @@ static const uint BSH = 0u;
 ByteAddressBuffer slc_table : register(t0, space1);
 cbuffer params : register(b0) { RefitParams params; }
 ByteAddressBuffer order : register(t1);
-ByteAddressBuffer extent_4 : register(t2);
+ByteAddressBuffer extent_5 : register(t2);
 ByteAddressBuffer r2_6 : register(t3);
 RWByteAddressBuffer bsh_nodes : register(u4);
 
@@ -1345,9 +1345,14 @@ uint light_map_texel(float a_8, uint size_7)
     return _e14;
 }
 
-float light_map_depth(float3 rel, float3 axis_2, bool perspective)
+float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2, bool perspective)
 {
-    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis_2));
+    return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
+}
+
+float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
+{
+    return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
 }
 
 float rsm_texel_solid_angle(float texel_area, float cos_axis)
@@ -1368,14 +1373,14 @@ float3 directional_irradiance(float3 e_1, float3 n_16, float3 to_light)
     return (e_1 * max(dot(n_16, to_light), 0.0));
 }
 
-float perspective_texel_width(float extent_2, float d_2, float z_2, float size_8)
+float perspective_texel_width(float extent_3, float d_2, float z_2, float size_8)
 {
-    return ((((2.0 * extent_2) * d_2) * d_2) / (size_8 * z_2));
+    return ((((2.0 * extent_3) * d_2) * d_2) / (size_8 * z_2));
 }
 
-float ortho_texel_width(float extent_3, float size_9)
+float ortho_texel_width(float extent_4, float size_9)
 {
-    return ((2.0 * extent_3) / size_9);
+    return ((2.0 * extent_4) / size_9);
 }
 
 float shadow_bias(float texel, float cos_light_1)
@@ -1493,7 +1498,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint i_5 = asuint(order.Load((_e9 + gid.x)*4));
     BshNode node = ConstructBshNode(asfloat(bsh_nodes.Load3(i_5*32+0)), asfloat(bsh_nodes.Load(i_5*32+12)), asuint(bsh_nodes.Load(i_5*32+16)), asuint(bsh_nodes.Load(i_5*32+20)), asuint(bsh_nodes.Load(i_5*32+24)), asuint(bsh_nodes.Load(i_5*32+28)));
     if ((node.child == BSH_NONE)) {
-        float _e26 = asfloat(extent_4.Load(node.light*4));
+        float _e26 = asfloat(extent_5.Load(node.light*4));
         float _e30 = asfloat(r2_6.Load(node.light*4));
         const float _e31 = range_radius(_e26, _e30);
         bsh_nodes.Store(12+i_5*32, asuint(_e31));

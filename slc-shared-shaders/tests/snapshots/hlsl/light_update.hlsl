@@ -1343,9 +1343,14 @@ uint light_map_texel(float a_8, uint size_7)
     return _e14;
 }
 
-float light_map_depth(float3 rel, float3 axis_2, bool perspective)
+float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2, bool perspective)
 {
-    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis_2));
+    return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
+}
+
+float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
+{
+    return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
 }
 
 float rsm_texel_solid_angle(float texel_area, float cos_axis)
@@ -1366,14 +1371,14 @@ float3 directional_irradiance(float3 e_1, float3 n_16, float3 to_light)
     return (e_1 * max(dot(n_16, to_light), 0.0));
 }
 
-float perspective_texel_width(float extent_2, float d_2, float z_2, float size_8)
+float perspective_texel_width(float extent_3, float d_2, float z_2, float size_8)
 {
-    return ((((2.0 * extent_2) * d_2) * d_2) / (size_8 * z_2));
+    return ((((2.0 * extent_3) * d_2) * d_2) / (size_8 * z_2));
 }
 
-float ortho_texel_width(float extent_3, float size_9)
+float ortho_texel_width(float extent_4, float size_9)
 {
-    return ((2.0 * extent_3) / size_9);
+    return ((2.0 * extent_4) / size_9);
 }
 
 float shadow_bias(float texel, float cos_light_1)

@@ -1345,9 +1345,14 @@ uint light_map_texel(float a_9, uint size_7)
     return _e14;
 }
 
-float light_map_depth(float3 rel, float3 axis_2, bool perspective)
+float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2, bool perspective)
 {
-    return (perspective ? sqrt(dot(rel, rel)) : dot(rel, axis_2));
+    return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
+}
+
+float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
+{
+    return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
 }
 
 float rsm_texel_solid_angle(float texel_area, float cos_axis)
@@ -1368,14 +1373,14 @@ float3 directional_irradiance(float3 e_2, float3 n_16, float3 to_light)
     return (e_2 * max(dot(n_16, to_light), 0.0));
 }
 
-float perspective_texel_width(float extent_2, float d_2, float z_2, float size_8)
+float perspective_texel_width(float extent_3, float d_2, float z_2, float size_8)
 {
-    return ((((2.0 * extent_2) * d_2) * d_2) / (size_8 * z_2));
+    return ((((2.0 * extent_3) * d_2) * d_2) / (size_8 * z_2));
 }
 
-float ortho_texel_width(float extent_3, float size_9)
+float ortho_texel_width(float extent_4, float size_9)
 {
-    return ((2.0 * extent_3) / size_9);
+    return ((2.0 * extent_4) / size_9);
 }
 
 float shadow_bias(float texel, float cos_light_2)
@@ -1475,15 +1480,15 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint _e55 = params.size;
     float size_10 = float(_e55);
     float3 _e66 = params.origin;
-    float3 rel_1 = (x_14 - _e66);
+    float3 rel_2 = (x_14 - _e66);
     float3 _e70 = params.axis;
     uint _e73 = params.mode;
-    const float _e76 = light_map_depth(rel_1, _e70, (_e73 == MAP_PERSPECTIVE));
+    const float _e76 = light_map_depth(rel_2, _e70, (_e73 == MAP_PERSPECTIVE));
     uint _e83 = params.mode;
     if ((_e83 == MAP_PERSPECTIVE)) {
-        float3 v_12 = -(rel_1);
+        float3 v_12 = -(rel_2);
         float3 _e89 = params.axis;
-        float z_4 = dot(rel_1, _e89);
+        float z_4 = dot(rel_2, _e89);
         if (!((z_4 <= 0.0))) {
             local_2 = (_e76 <= 0.0);
         } else {
@@ -1495,62 +1500,70 @@ void main(uint3 gid : SV_DispatchThreadID)
             return;
         }
         float3 _e106 = params.right;
-        float _e110 = params.extent;
-        a = (dot(rel_1, _e106) / (z_4 * _e110));
-        float3 _e115 = params.up;
-        float _e119 = params.extent;
-        b = (dot(rel_1, _e115) / (z_4 * _e119));
-        float _e124 = params.extent;
-        const float _e125 = perspective_texel_width(_e124, _e76, z_4, size_10);
-        width = _e125;
+        float3 _e109 = params.axis;
+        float _e112 = params.extent;
+        const float _e114 = light_map_coord_at(rel_2, _e106, _e109, _e112, true);
+        a = _e114;
+        float3 _e117 = params.up;
+        float3 _e120 = params.axis;
+        float _e123 = params.extent;
+        const float _e125 = light_map_coord_at(rel_2, _e117, _e120, _e123, true);
+        b = _e125;
+        float _e128 = params.extent;
+        const float _e129 = perspective_texel_width(_e128, _e76, z_4, size_10);
+        width = _e129;
         cos_light = (dot(n_19, v_12) / _e76);
-        GpuLight _e130 = params.light;
-        const float3 _e133 = light_intensity(_e130, (rel_1 / (_e76).xxx));
-        const float3 _e134 = point_irradiance(_e133, n_19, v_12);
-        e = _e134;
+        GpuLight _e134 = params.light;
+        const float3 _e137 = light_intensity(_e134, (rel_2 / (_e76).xxx));
+        const float3 _e138 = point_irradiance(_e137, n_19, v_12);
+        e = _e138;
     } else {
-        float3 _e137 = params.right;
-        float _e141 = params.extent;
-        a = (dot(rel_1, _e137) / _e141);
-        float3 _e145 = params.up;
-        float _e149 = params.extent;
-        b = (dot(rel_1, _e145) / _e149);
-        float _e153 = params.extent;
-        const float _e154 = ortho_texel_width(_e153, size_10);
-        width = _e154;
-        float3 _e157 = params.axis;
-        cos_light = -(dot(n_19, _e157));
-        float3 _e163 = params.light.intensity;
-        float3 _e166 = params.axis;
-        const float3 _e168 = directional_irradiance(_e163, n_19, -(_e166));
-        e = _e168;
+        float3 _e141 = params.right;
+        float3 _e144 = params.axis;
+        float _e147 = params.extent;
+        const float _e149 = light_map_coord_at(rel_2, _e141, _e144, _e147, false);
+        a = _e149;
+        float3 _e152 = params.up;
+        float3 _e155 = params.axis;
+        float _e158 = params.extent;
+        const float _e160 = light_map_coord_at(rel_2, _e152, _e155, _e158, false);
+        b = _e160;
+        float _e163 = params.extent;
+        const float _e164 = ortho_texel_width(_e163, size_10);
+        width = _e164;
+        float3 _e167 = params.axis;
+        cos_light = -(dot(n_19, _e167));
+        float3 _e173 = params.light.intensity;
+        float3 _e176 = params.axis;
+        const float3 _e178 = directional_irradiance(_e173, n_19, -(_e176));
+        e = _e178;
     }
-    float _e169 = a;
-    if ((abs(_e169) <= 1.0)) {
-        float _e175 = b;
-        local_3 = (abs(_e175) <= 1.0);
+    float _e179 = a;
+    if ((abs(_e179) <= 1.0)) {
+        float _e185 = b;
+        local_3 = (abs(_e185) <= 1.0);
     } else {
         local_3 = false;
     }
-    bool _e180 = local_3;
-    if (_e180) {
-        float _e182 = a;
-        uint _e185 = params.size;
-        const uint _e186 = light_map_texel(_e182, _e185);
-        float _e188 = b;
-        uint _e191 = params.size;
-        const uint _e192 = light_map_texel(_e188, _e191);
-        float4 _e196 = shadow_map.Load(int3(int2(int(_e186), int(_e192)), int(0)));
-        float d_map_1 = _e196.x;
-        float _e198 = width;
-        float _e199 = cos_light;
-        const float _e200 = shadow_bias(_e198, _e199);
-        const bool _e201 = shadow_lit(_e76, d_map_1, _e200);
-        if (!(_e201)) {
+    bool _e190 = local_3;
+    if (_e190) {
+        float _e192 = a;
+        uint _e195 = params.size;
+        const uint _e196 = light_map_texel(_e192, _e195);
+        float _e198 = b;
+        uint _e201 = params.size;
+        const uint _e202 = light_map_texel(_e198, _e201);
+        float4 _e206 = shadow_map.Load(int3(int2(int(_e196), int(_e202)), int(0)));
+        float d_map_1 = _e206.x;
+        float _e208 = width;
+        float _e209 = cos_light;
+        const float _e210 = shadow_bias(_e208, _e209);
+        const bool _e211 = shadow_lit(_e76, d_map_1, _e210);
+        if (!(_e211)) {
             e = (0.0).xxx;
         }
     }
-    float3 _e207 = e;
-    direct.Store4(i_2*16, asuint(float4(_e207, 0.0)));
+    float3 _e217 = e;
+    direct.Store4(i_2*16, asuint(float4(_e217, 0.0)));
     return;
 }

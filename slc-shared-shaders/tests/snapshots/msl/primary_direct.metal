@@ -1615,12 +1615,22 @@ uint light_map_texel(
     return _e14;
 }
 
-float light_map_depth(
+float light_map_coord_at(
     metal::float3 rel,
+    metal::float3 dir_2,
     metal::float3 axis_2,
+    float extent_2,
     bool perspective
 ) {
-    return perspective ? metal::sqrt(metal::dot(rel, rel)) : metal::dot(rel, axis_2);
+    return metal::dot(rel, dir_2) / ((perspective ? metal::dot(rel, axis_2) : 1.0) * extent_2);
+}
+
+float light_map_depth(
+    metal::float3 rel_1,
+    metal::float3 axis_3,
+    bool perspective_1
+) {
+    return perspective_1 ? metal::sqrt(metal::dot(rel_1, rel_1)) : metal::dot(rel_1, axis_3);
 }
 
 float rsm_texel_solid_angle(
@@ -1650,19 +1660,19 @@ metal::float3 directional_irradiance(
 }
 
 float perspective_texel_width(
-    float extent_2,
+    float extent_3,
     float d_2,
     float z_2,
     float size_8
 ) {
-    return (((2.0 * extent_2) * d_2) * d_2) / (size_8 * z_2);
+    return (((2.0 * extent_3) * d_2) * d_2) / (size_8 * z_2);
 }
 
 float ortho_texel_width(
-    float extent_3,
+    float extent_4,
     float size_9
 ) {
-    return (2.0 * extent_3) / size_9;
+    return (2.0 * extent_4) / size_9;
 }
 
 float shadow_bias(
@@ -1784,15 +1794,15 @@ kernel void main_(
     uint _e55 = params.size;
     float size_10 = static_cast<float>(_e55);
     metal::float3 _e66 = params.origin;
-    metal::float3 rel_1 = x_14 - _e66;
+    metal::float3 rel_2 = x_14 - _e66;
     metal::float3 _e70 = params.axis;
     uint _e73 = params.mode;
-    float _e76 = light_map_depth(rel_1, _e70, _e73 == MAP_PERSPECTIVE);
+    float _e76 = light_map_depth(rel_2, _e70, _e73 == MAP_PERSPECTIVE);
     uint _e83 = params.mode;
     if (_e83 == MAP_PERSPECTIVE) {
-        metal::float3 v_12 = -(rel_1);
+        metal::float3 v_12 = -(rel_2);
         metal::float3 _e89 = params.axis;
-        float z_4 = metal::dot(rel_1, _e89);
+        float z_4 = metal::dot(rel_2, _e89);
         if (!((z_4 <= 0.0))) {
             local_2 = _e76 <= 0.0;
         } else {
@@ -1804,62 +1814,70 @@ kernel void main_(
             return;
         }
         metal::float3 _e106 = params.right;
-        float _e110 = params.extent;
-        a = metal::dot(rel_1, _e106) / (z_4 * _e110);
-        metal::float3 _e115 = params.up;
-        float _e119 = params.extent;
-        b = metal::dot(rel_1, _e115) / (z_4 * _e119);
-        float _e124 = params.extent;
-        float _e125 = perspective_texel_width(_e124, _e76, z_4, size_10);
-        width = _e125;
+        metal::float3 _e109 = params.axis;
+        float _e112 = params.extent;
+        float _e114 = light_map_coord_at(rel_2, _e106, _e109, _e112, true);
+        a = _e114;
+        metal::float3 _e117 = params.up;
+        metal::float3 _e120 = params.axis;
+        float _e123 = params.extent;
+        float _e125 = light_map_coord_at(rel_2, _e117, _e120, _e123, true);
+        b = _e125;
+        float _e128 = params.extent;
+        float _e129 = perspective_texel_width(_e128, _e76, z_4, size_10);
+        width = _e129;
         cos_light = metal::dot(n_19, v_12) / _e76;
-        GpuLight _e130 = params.light;
-        metal::float3 _e133 = light_intensity(_e130, rel_1 / metal::float3(_e76));
-        metal::float3 _e134 = point_irradiance(_e133, n_19, v_12);
-        e = _e134;
+        GpuLight _e134 = params.light;
+        metal::float3 _e137 = light_intensity(_e134, rel_2 / metal::float3(_e76));
+        metal::float3 _e138 = point_irradiance(_e137, n_19, v_12);
+        e = _e138;
     } else {
-        metal::float3 _e137 = params.right;
-        float _e141 = params.extent;
-        a = metal::dot(rel_1, _e137) / _e141;
-        metal::float3 _e145 = params.up;
-        float _e149 = params.extent;
-        b = metal::dot(rel_1, _e145) / _e149;
-        float _e153 = params.extent;
-        float _e154 = ortho_texel_width(_e153, size_10);
-        width = _e154;
-        metal::float3 _e157 = params.axis;
-        cos_light = -(metal::dot(n_19, _e157));
-        metal::float3 _e163 = params.light.intensity;
-        metal::float3 _e166 = params.axis;
-        metal::float3 _e168 = directional_irradiance(_e163, n_19, -(_e166));
-        e = _e168;
+        metal::float3 _e141 = params.right;
+        metal::float3 _e144 = params.axis;
+        float _e147 = params.extent;
+        float _e149 = light_map_coord_at(rel_2, _e141, _e144, _e147, false);
+        a = _e149;
+        metal::float3 _e152 = params.up;
+        metal::float3 _e155 = params.axis;
+        float _e158 = params.extent;
+        float _e160 = light_map_coord_at(rel_2, _e152, _e155, _e158, false);
+        b = _e160;
+        float _e163 = params.extent;
+        float _e164 = ortho_texel_width(_e163, size_10);
+        width = _e164;
+        metal::float3 _e167 = params.axis;
+        cos_light = -(metal::dot(n_19, _e167));
+        metal::float3 _e173 = params.light.intensity;
+        metal::float3 _e176 = params.axis;
+        metal::float3 _e178 = directional_irradiance(_e173, n_19, -(_e176));
+        e = _e178;
     }
-    float _e169 = a;
-    if (metal::abs(_e169) <= 1.0) {
-        float _e175 = b;
-        local_3 = metal::abs(_e175) <= 1.0;
+    float _e179 = a;
+    if (metal::abs(_e179) <= 1.0) {
+        float _e185 = b;
+        local_3 = metal::abs(_e185) <= 1.0;
     } else {
         local_3 = false;
     }
-    bool _e180 = local_3;
-    if (_e180) {
-        float _e182 = a;
-        uint _e185 = params.size;
-        uint _e186 = light_map_texel(_e182, _e185);
-        float _e188 = b;
-        uint _e191 = params.size;
-        uint _e192 = light_map_texel(_e188, _e191);
-        metal::float4 _e196 = shadow_map.read(metal::uint2(metal::int2(static_cast<int>(_e186), static_cast<int>(_e192))), 0);
-        float d_map_1 = _e196.x;
-        float _e198 = width;
-        float _e199 = cos_light;
-        float _e200 = shadow_bias(_e198, _e199);
-        bool _e201 = shadow_lit(_e76, d_map_1, _e200);
-        if (!(_e201)) {
+    bool _e190 = local_3;
+    if (_e190) {
+        float _e192 = a;
+        uint _e195 = params.size;
+        uint _e196 = light_map_texel(_e192, _e195);
+        float _e198 = b;
+        uint _e201 = params.size;
+        uint _e202 = light_map_texel(_e198, _e201);
+        metal::float4 _e206 = shadow_map.read(metal::uint2(metal::int2(static_cast<int>(_e196), static_cast<int>(_e202))), 0);
+        float d_map_1 = _e206.x;
+        float _e208 = width;
+        float _e209 = cos_light;
+        float _e210 = shadow_bias(_e208, _e209);
+        bool _e211 = shadow_lit(_e76, d_map_1, _e210);
+        if (!(_e211)) {
             e = metal::float3(0.0);
         }
     }
-    metal::float3 _e207 = e;
-    direct[i_2] = metal::float4(_e207, 0.0);
+    metal::float3 _e217 = e;
+    direct[i_2] = metal::float4(_e217, 0.0);
     return;
 }

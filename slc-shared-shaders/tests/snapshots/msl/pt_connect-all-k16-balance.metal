@@ -1662,12 +1662,22 @@ uint light_map_texel(
     return _e14;
 }
 
-float light_map_depth(
+float light_map_coord_at(
     metal::float3 rel,
+    metal::float3 dir_2,
     metal::float3 axis_2,
+    float extent_2,
     bool perspective
 ) {
-    return perspective ? metal::sqrt(metal::dot(rel, rel)) : metal::dot(rel, axis_2);
+    return metal::dot(rel, dir_2) / ((perspective ? metal::dot(rel, axis_2) : 1.0) * extent_2);
+}
+
+float light_map_depth(
+    metal::float3 rel_1,
+    metal::float3 axis_3,
+    bool perspective_1
+) {
+    return perspective_1 ? metal::sqrt(metal::dot(rel_1, rel_1)) : metal::dot(rel_1, axis_3);
 }
 
 float rsm_texel_solid_angle(
@@ -1697,19 +1707,19 @@ metal::float3 directional_irradiance(
 }
 
 float perspective_texel_width(
-    float extent_2,
+    float extent_3,
     float d_2,
     float z_2,
     float size_8
 ) {
-    return (((2.0 * extent_2) * d_2) * d_2) / (size_8 * z_2);
+    return (((2.0 * extent_3) * d_2) * d_2) / (size_8 * z_2);
 }
 
 float ortho_texel_width(
-    float extent_3,
+    float extent_4,
     float size_9
 ) {
-    return (2.0 * extent_3) / size_9;
+    return (2.0 * extent_4) / size_9;
 }
 
 float shadow_bias(
