@@ -192,8 +192,9 @@ impl VplContext {
         let tile = s.tile as usize;
         let big = tile * SUPER;
         let near_r2 = s.near_r2(self.inputs.min_d2);
-        // Per subset: (pixel, irradiance, kept) triples and loop evaluations.
-        type SubsetResult = (Vec<(usize, Vec3, u32)>, u64);
+        // Per subset: its sub-image of (irradiance, kept), row-major, and
+        // the loop evaluations.
+        type SubsetResult = (Vec<(Vec3, u32)>, u64);
         let results: Vec<SubsetResult> = (0..subsets)
             .into_par_iter()
             .map(|sub| {
@@ -222,74 +223,72 @@ impl VplContext {
                 }
                 all.build_chunks();
                 let (sw, sh) = ((w + p - 1 - sx) / p, (h + p - 1 - sy) / p);
-                let mut out = Vec::with_capacity(sw * sh);
+                let mut out = vec![(Vec3::ZERO, 0); sw * sh];
                 let (mut coarse, mut fine) = (LightList::default(), LightList::default());
-                let (mut pixels, mut hits) = (Vec::new(), Vec::new());
-                let (mut receivers, mut shaded) = (Vec::new(), Vec::new());
+                let mut hits = Vec::new();
+                let mut shaded = Vec::new();
+                // The receivers of each tile of a super-tile (sub-image index,
+                // position and normal of every pixel that sees a surface) and
+                // their box, gathered in one pass per tile.
+                let mut tiles: Vec<Receivers> = (0..SUPER * SUPER).map(|_| Receivers::default()).collect();
                 let mut evals = 0u64;
-                // Pixels of sub-image rectangle [x0, x1) × [y0, y1) that see a surface.
-                let gather = |pixels: &mut Vec<usize>, (x0, x1): (usize, usize), (y0, y1): (usize, usize)| {
-                    pixels.clear();
-                    for j in y0..y1 {
-                        for i in x0..x1 {
-                            let px = (sy + j * p) * w + sx + i * p;
-                            if gb.valid(px) {
-                                pixels.push(px);
-                            }
-                        }
-                    }
-                };
-                let bounds = |pixels: &[usize]| position_box(gb, pixels.iter().copied());
                 // Two-level tiled culling: super-tiles of SUPER × tile cull the
                 // subset; their tiles cull the super-tile's list.
                 for by in (0..sh).step_by(big) {
                     for bx in (0..sw).step_by(big) {
                         let (bx1, by1) = ((bx + big).min(sw), (by + big).min(sh));
-                        if cull != Cull::None {
-                            gather(&mut pixels, (bx, bx1), (by, by1));
-                            if pixels.is_empty() {
-                                continue;
+                        let (mut lo, mut hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
+                        for (k, r) in tiles.iter_mut().enumerate() {
+                            let (tx, ty) = (bx + (k % SUPER) * tile, by + (k / SUPER) * tile);
+                            r.clear();
+                            for j in ty..(ty + tile).min(by1) {
+                                for i in tx..(tx + tile).min(bx1) {
+                                    let px = (sy + j * p) * w + sx + i * p;
+                                    if gb.valid(px) {
+                                        r.push(j * sw + i, gb.position[px], gb.normal[px]);
+                                    }
+                                }
                             }
-                            let (lo, hi) = bounds(&pixels);
+                            (lo, hi) = (lo.min(r.lo), hi.max(r.hi));
+                        }
+                        if !lo.cmple(hi).all() {
+                            continue;
+                        }
+                        if cull != Cull::None {
                             all.cull_chunked_into(lo, hi, &mut hits, &mut coarse);
                         }
-                        for ty in (by..by1).step_by(tile) {
-                            for tx in (bx..bx1).step_by(tile) {
-                                gather(&mut pixels, (tx, (tx + tile).min(bx1)), (ty, (ty + tile).min(by1)));
-                                if pixels.is_empty() {
-                                    continue;
-                                }
-                                let lights = if cull == Cull::None {
-                                    &all
-                                } else {
-                                    let (lo, hi) = bounds(&pixels);
-                                    coarse.cull_into(lo, hi, &mut hits, &mut fine);
-                                    &fine
-                                };
-                                receivers.clear();
-                                receivers.extend(pixels.iter().map(|&i| (gb.position[i], gb.normal[i])));
-                                shaded.clear();
-                                shade::shade_all(lights, &receivers, self.inputs.min_d2, near_r2, cull, &mut shaded);
-                                out.extend(pixels.iter().zip(&shaded).map(|(&i, &(e, k))| (i, e, k)));
-                                evals += (lights.len_unpadded() * pixels.len()) as u64;
+                        for r in tiles.iter().filter(|r| !r.index.is_empty()) {
+                            let lights = if cull == Cull::None {
+                                &all
+                            } else {
+                                coarse.cull_into(r.lo, r.hi, &mut hits, &mut fine);
+                                &fine
+                            };
+                            shaded.clear();
+                            shade::shade_all(lights, &r.points, self.inputs.min_d2, near_r2, cull, &mut shaded);
+                            for (&i, &e) in r.index.iter().zip(&shaded) {
+                                out[i] = e;
                             }
+                            evals += (lights.len_unpadded() * r.index.len()) as u64;
                         }
                     }
                 }
                 (out, evals)
             })
             .collect();
-        let (near, mut kept, mut evals) = self.shade_near(near_r2);
-        let mut e = near.clone();
-        e.resize(w * h, Vec3::ZERO);
-        for (out, ev) in results {
-            for (i, v, k) in out {
-                e[i] += v;
-                kept[i] += k;
-            }
-            evals += ev;
-        }
-        (e, near, kept, evals)
+        let (near, near_kept, near_evals) = self.shade_near(near_r2);
+        // Each pixel adds its subset's result to its near field, in parallel.
+        let (e, kept) = (0..w * h)
+            .into_par_iter()
+            .map(|i| {
+                let (x, y) = (i % w, i / w);
+                let (sx, sy) = (x % p, y % p);
+                let sw = (w + p - 1 - sx) / p;
+                let (far, k) = results[sy * p + sx].0[(y / p) * sw + x / p];
+                (near.get(i).map_or(far, |&n| n + far), near_kept[i] + k)
+            })
+            .unzip();
+        (e, near, kept, near_evals + results.iter().map(|r| r.1).sum::<u64>())
     }
 
     /// The near field of the split ([`slc_core::interleave::vpl_near_weight`]):
@@ -381,6 +380,30 @@ fn frame_inputs(scene: &Scene, geo: &Geometry, width: u32, height: u32, rsm_size
     base.direct_ms = ms(t);
     base.vpls = vpls.len();
     (VplInputs { gbuffer, vpls, min_d2 }, direct, base)
+}
+
+/// One tile's receivers: an index per pixel (where its result goes), its
+/// position and normal, and the box of the positions (`lo > hi` when empty).
+#[derive(Default)]
+struct Receivers {
+    index: Vec<usize>,
+    points: Vec<(Vec3, Vec3)>,
+    lo: Vec3,
+    hi: Vec3,
+}
+
+impl Receivers {
+    fn clear(&mut self) {
+        self.index.clear();
+        self.points.clear();
+        (self.lo, self.hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
+    }
+
+    fn push(&mut self, index: usize, x: Vec3, n: Vec3) {
+        self.index.push(index);
+        self.points.push((x, n));
+        (self.lo, self.hi) = (self.lo.min(x), self.hi.max(x));
+    }
 }
 
 /// The box `(lo, hi)` of the G-buffer positions of `pixels` (`lo > hi`

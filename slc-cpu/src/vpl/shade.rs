@@ -117,36 +117,17 @@ impl LightList {
     /// `[lo, hi]`; the result is the same set (the chunk box contains its
     /// lights' spheres). Needs [`LightList::build_chunks`].
     pub fn cull_chunked_into(&self, lo: Vec3, hi: Vec3, hits: &mut Vec<u32>, out: &mut LightList) {
-        hits.clear();
-        for (c, &(clo, chi)) in self.chunks.iter().enumerate() {
-            if clo.cmple(hi).all() && lo.cmple(chi).all() {
-                for j in c * CHUNK..((c + 1) * CHUNK).min(self.len()) {
-                    let p = Vec3::new(self.px[j], self.py[j], self.pz[j]);
-                    if sphere_overlaps_aabb(p, self.radius[j], lo, hi) {
-                        hits.push(j as u32);
-                    }
-                }
-            }
-        }
+        SimdPath::best().run(CullOp { list: self, lo, hi, chunked: true, hits });
         self.gather_into(hits, out);
     }
 
     /// Tile culling: replaces `out` with the lights whose range sphere
     /// `(p, √r²)` overlaps the box `[lo, hi]`
-    /// ([`slc_core::sphere::sphere_overlaps_aabb`]). The test runs
-    /// branch-free over all lights, then each array is gathered in one pass.
+    /// ([`slc_core::sphere::sphere_overlaps_aabb`]). The test runs on the
+    /// CPU's best [`SimdPath`] over all lights, then each array is gathered
+    /// in one pass.
     pub fn cull_into(&self, lo: Vec3, hi: Vec3, hits: &mut Vec<u32>, out: &mut LightList) {
-        let n = self.len();
-        let (px, py, pz, radius) = (&self.px[..n], &self.py[..n], &self.pz[..n], &self.radius[..n]);
-        hits.clear();
-        hits.resize(n + 1, 0);
-        let mut k = 0;
-        for (j, (((&x, &y), &z), &r)) in px.iter().zip(py).zip(pz).zip(radius).enumerate() {
-            // Branch-free compaction: always write, advance only on a hit.
-            hits[k.min(n)] = j as u32;
-            k += sphere_overlaps_aabb(Vec3::new(x, y, z), r, lo, hi) as usize;
-        }
-        hits.truncate(k);
+        SimdPath::best().run(CullOp { list: self, lo, hi, chunked: false, hits });
         self.gather_into(hits, out);
     }
 
@@ -157,39 +138,8 @@ impl LightList {
     fn gather_into(&self, hits: &[u32], out: &mut LightList) {
         out.chunks.clear();
         out.real = hits.len();
-        let pad = hits.len().next_multiple_of(LANES) - hits.len();
-        let gather = |dst: &mut Vec<f32>, src: &[f32]| {
-            dst.clear();
-            dst.extend(hits.iter().map(|&j| src[j as usize]));
-        };
-        gather(&mut out.px, &self.px);
-        gather(&mut out.py, &self.py);
-        gather(&mut out.pz, &self.pz);
-        gather(&mut out.nx, &self.nx);
-        gather(&mut out.ny, &self.ny);
-        gather(&mut out.nz, &self.nz);
-        gather(&mut out.fr, &self.fr);
-        gather(&mut out.fg, &self.fg);
-        gather(&mut out.fb, &self.fb);
-        gather(&mut out.rt2, &self.rt2);
-        gather(&mut out.r2, &self.r2);
-        gather(&mut out.radius, &self.radius);
-        for v in [
-            &mut out.px,
-            &mut out.py,
-            &mut out.pz,
-            &mut out.nx,
-            &mut out.ny,
-            &mut out.nz,
-            &mut out.fr,
-            &mut out.fg,
-            &mut out.fb,
-            &mut out.rt2,
-            &mut out.r2,
-            &mut out.radius,
-        ] {
-            v.extend(std::iter::repeat_n(0.0, pad));
-        }
+        let len = hits.len().next_multiple_of(LANES);
+        SimdPath::best().run(GatherOp { from: self, hits, to: out, len });
     }
 
     /// Real lights in the list (padding excluded).
@@ -205,6 +155,98 @@ impl LightList {
     /// `true` when empty.
     pub fn is_empty(&self) -> bool {
         self.px.is_empty()
+    }
+}
+
+/// The culling test of [`LightList::cull_into`] (every light) or
+/// [`LightList::cull_chunked_into`] (the lights of chunks whose box meets
+/// the tile's) as a pulp operation: a branch-free pass writes each light's
+/// overlap flag (vectorized across lights), a second compacts the indices.
+struct CullOp<'a> {
+    list: &'a LightList,
+    lo: Vec3,
+    hi: Vec3,
+    chunked: bool,
+    hits: &'a mut Vec<u32>,
+}
+
+impl pulp::WithSimd for CullOp<'_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _: S) {
+        let (l, lo, hi) = (self.list, self.lo, self.hi);
+        let n = l.len();
+        let mut flags = [0u8; CHUNK];
+        self.hits.clear();
+        self.hits.resize(n + 1, 0);
+        let mut k = 0;
+        // Plain loops over chunk-sized runs: a closure would not be compiled
+        // with the path's target features.
+        for c in 0..n.div_ceil(CHUNK) {
+            if self.chunked {
+                let (clo, chi) = l.chunks[c];
+                if !(clo.cmple(hi).all() && lo.cmple(chi).all()) {
+                    continue;
+                }
+            }
+            let (a, b) = (c * CHUNK, ((c + 1) * CHUNK).min(n));
+            let (px, py, pz, r) = (&l.px[a..b], &l.py[a..b], &l.pz[a..b], &l.radius[a..b]);
+            for ((((f, &x), &y), &z), &r) in flags.iter_mut().zip(px).zip(py).zip(pz).zip(r) {
+                *f = sphere_overlaps_aabb(Vec3::new(x, y, z), r, lo, hi) as u8;
+            }
+            for (j, &f) in (a..b).zip(&flags) {
+                // Branch-free compaction: always write, advance on a hit.
+                self.hits[k] = j as u32;
+                k += f as usize;
+            }
+        }
+        self.hits.truncate(k);
+    }
+}
+
+/// [`LightList::gather_into`]'s copies as a pulp operation: each array's
+/// entries `hits` (a vectorized gather where the path has one), then zeros
+/// up to `len`.
+struct GatherOp<'a> {
+    from: &'a LightList,
+    hits: &'a [u32],
+    to: &'a mut LightList,
+    len: usize,
+}
+
+impl pulp::WithSimd for GatherOp<'_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _: S) {
+        let (f, t) = (self.from, self.to);
+        let pairs: [(&mut Vec<f32>, &[f32]); 12] = [
+            (&mut t.px, &f.px),
+            (&mut t.py, &f.py),
+            (&mut t.pz, &f.pz),
+            (&mut t.nx, &f.nx),
+            (&mut t.ny, &f.ny),
+            (&mut t.nz, &f.nz),
+            (&mut t.fr, &f.fr),
+            (&mut t.fg, &f.fg),
+            (&mut t.fb, &f.fb),
+            (&mut t.rt2, &f.rt2),
+            (&mut t.r2, &f.r2),
+            (&mut t.radius, &f.radius),
+        ];
+        for (dst, src) in pairs {
+            dst.clear();
+            dst.resize(self.len, 0.0);
+            if src.is_empty() {
+                continue;
+            }
+            // `min` proves the index in bounds, so the loop has no branch.
+            let last = src.len() - 1;
+            for (d, &j) in dst.iter_mut().zip(self.hits) {
+                *d = src[(j as usize).min(last)];
+            }
+        }
     }
 }
 
