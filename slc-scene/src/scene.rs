@@ -89,6 +89,26 @@ impl PrimaryLight {
         }
     }
 
+    /// Checks the light: a valid spot ([`SpotLight::new`]) with an outer
+    /// angle below 85°, or a finite, non-zero direction with finite,
+    /// non-negative irradiance.
+    pub fn validate(&self) -> Result<(), SceneError> {
+        match *self {
+            PrimaryLight::Spot { outer, .. } => {
+                self.spot().ok_or_else(|| SceneError::Invalid("primary spot light is invalid".into()))?;
+                if outer >= 85f32.to_radians() {
+                    return Err(SceneError::Invalid("primary spot outer angle must be below 85 degrees".into()));
+                }
+            }
+            PrimaryLight::Directional { direction, irradiance } => {
+                if !(direction.is_finite() && direction.length() > 0.0 && irradiance.is_finite() && irradiance.min_element() >= 0.0) {
+                    return Err(SceneError::Invalid("primary directional light is invalid".into()));
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// The frame of this light's map in a scene with bounds `(lo, hi)`.
     pub fn light_map(&self, (lo, hi): (Vec3, Vec3)) -> LightMap {
         match *self {
@@ -264,20 +284,7 @@ impl Scene {
         if !(c.vfov_deg > 0.0 && c.vfov_deg < 180.0) {
             return Err(SceneError::Invalid(format!("camera: vertical fov {} must be in (0, 180)", c.vfov_deg)));
         }
-        match self.primary {
-            PrimaryLight::Spot { outer, .. } => {
-                self.primary.spot().ok_or_else(|| SceneError::Invalid("primary spot light is invalid".into()))?;
-                if outer >= 85f32.to_radians() {
-                    return Err(SceneError::Invalid("primary spot outer angle must be below 85 degrees".into()));
-                }
-            }
-            PrimaryLight::Directional { direction, irradiance } => {
-                if !(direction.is_finite() && direction.length() > 0.0 && irradiance.is_finite() && irradiance.min_element() >= 0.0) {
-                    return Err(SceneError::Invalid("primary directional light is invalid".into()));
-                }
-            }
-        }
-        Ok(())
+        self.primary.validate()
     }
 
     /// `true` when some triangle has vertex normals that differ from its

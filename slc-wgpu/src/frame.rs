@@ -129,6 +129,48 @@ fn columns(m: Mat4) -> [Vec4; 4] {
     [m.x_axis, m.y_axis, m.z_axis, m.w_axis]
 }
 
+/// Depth range of a raster view from `eye` over the scene's bounding sphere
+/// (bounds `(lo, hi)`), the near plane no closer than 1/1000 of the far one
+/// (a 32-bit depth buffer then resolves 0.05 mm at 2 m, enough for a light
+/// quad under its ceiling).
+fn depth_range((lo, hi): (Vec3, Vec3), eye: Vec3) -> std::ops::Range<f32> {
+    let (centre, radius) = ((lo + hi) * 0.5, 0.5 * (hi - lo).length());
+    let far = (eye - centre).length() + radius;
+    (((eye - centre).length() - radius) * 0.9).max(far * 1e-3)..far * 1.01
+}
+
+/// The RSM's and the shadow map's raster uniforms for `primary` in a scene
+/// with bounds `bounds`: the light's map ([`PrimaryLight::light_map`]) in
+/// the Y-down convention (map row 0 toward −up, the CPU's texel order),
+/// `rsm_size` and `shadow_size` texels per edge.
+fn light_uniforms(primary: &PrimaryLight, bounds: (Vec3, Vec3), rsm_size: u32, shadow_size: u32) -> (MapParams, MapParams) {
+    use glam::camera::rh::{proj, view::look_to_mat4};
+    let light = match *primary {
+        PrimaryLight::Spot { position, direction, intensity, .. } => {
+            let (cos_outer, cos_inner) = primary.spot().map(|s| s.cone_cosines()).unwrap_or((0.0, 0.0));
+            GpuLight { p0: position, kind: LIGHT_SPOT, p1: direction.normalize(), a: cos_outer, p2: Vec3::ZERO, b: cos_inner, intensity, ies_base: 0 }
+        }
+        PrimaryLight::Directional { irradiance, .. } => {
+            GpuLight { p0: Vec3::ZERO, kind: LIGHT_SPOT, p1: Vec3::ZERO, a: 0.0, p2: Vec3::ZERO, b: 0.0, intensity: irradiance, ies_base: 0 }
+        }
+    };
+    let (vp, origin, axis, right, up, extent, mode) = match primary.light_map(bounds) {
+        LightMap::Perspective { origin, axis, right, up, tan } => {
+            let r = depth_range(bounds, origin);
+            let vp = proj::vulkan::perspective(2.0 * tan.atan(), 1.0, r.start, r.end) * look_to_mat4(origin, axis, up);
+            (vp, origin, axis, right, up, tan, MAP_PERSPECTIVE)
+        }
+        LightMap::Orthographic { origin, axis, right, up, half } => {
+            let vp = proj::vulkan::orthographic(-half, half, -half, half, 0.0, 4.0 * half) * look_to_mat4(origin, axis, up);
+            (vp, origin, axis, right, up, half, MAP_ORTHOGRAPHIC)
+        }
+    };
+    let texel = (2.0 * extent / rsm_size as f32).powi(2);
+    let [c0, c1, c2, c3] = columns(vp);
+    let rsm = MapParams { c0, c1, c2, c3, light, origin, mode, axis, size: rsm_size, right, extent, up, texel };
+    (rsm, MapParams { size: shadow_size, ..rsm })
+}
+
 /// The VPL frame of one scene at one size, wholly on the GPU.
 pub struct GpuVplFrame<'a> {
     gpu: &'a GpuContext,
@@ -138,6 +180,9 @@ pub struct GpuVplFrame<'a> {
     materials: Vec<Material>,
     vertices: wgpu::Buffer,
     vertex_count: u32,
+    bounds: (Vec3, Vec3),
+    light_params: wgpu::Buffer,
+    shadow_params: wgpu::Buffer,
     camera_group: wgpu::BindGroup,
     light_group: wgpu::BindGroup,
     shadow_group: wgpu::BindGroup,
@@ -167,7 +212,7 @@ impl<'a> GpuVplFrame<'a> {
     pub fn new(gpu: &'a GpuContext, scene: &Scene, desc: &FrameDesc) -> Result<Self, GpuError> {
         let min_distance = slc_scene::vpl::check_frame(scene, desc.width, desc.height, desc.rsm_size, desc.min_distance)
             .map_err(|e| GpuError::Setting(e.to_string()))?;
-        let (size, diag) = (desc.rsm_size, scene.diagonal());
+        let size = desc.rsm_size;
         let (w, h) = (desc.width, desc.height);
         let lim = &gpu.limits;
         let shadow = desc.shadow_size;
@@ -201,67 +246,27 @@ impl<'a> GpuVplFrame<'a> {
         // The camera's and the light's raster parameters.
         let (lo, hi) = scene.bounds();
         let cam = &scene.camera;
-        // Depth range: the scene's bounding sphere, the near plane no closer
-        // than 1/1000 of the far one (a 32-bit depth buffer then resolves
-        // 0.05 mm at 2 m, enough for a light quad under its ceiling).
-        let (centre, radius) = ((lo + hi) * 0.5, 0.5 * diag);
-        let range_of = |p: Vec3| {
-            let far = (p - centre).length() + radius;
-            (((p - centre).length() - radius) * 0.9).max(far * 1e-3)..far * 1.01
-        };
         // Views and projections from glam's camera module: right-handed,
-        // depth in [0, 1]; the light maps in the Y-down convention, so map
-        // row 0 lies toward −up (the CPU's texel order).
+        // depth in [0, 1].
         use glam::camera::rh::{proj, view::look_to_mat4};
         let (_, cam_up, cam_forward) = cam.basis();
-        let r = range_of(cam.position);
+        let r = depth_range((lo, hi), cam.position);
         let camera_vp = proj::directx::perspective(cam.vfov_deg.to_radians(), w as f32 / h as f32, r.start, r.end)
             * look_to_mat4(cam.position, cam_forward, cam_up);
-        let map = scene.primary.light_map((lo, hi));
-        let light = match scene.primary {
-            PrimaryLight::Spot { position, direction, intensity, .. } => {
-                let (cos_outer, cos_inner) = scene.primary.spot().map(|s| s.cone_cosines()).unwrap_or((0.0, 0.0));
-                GpuLight {
-                    p0: position,
-                    kind: LIGHT_SPOT,
-                    p1: direction.normalize(),
-                    a: cos_outer,
-                    p2: Vec3::ZERO,
-                    b: cos_inner,
-                    intensity,
-                    ies_base: 0,
-                }
-            }
-            PrimaryLight::Directional { irradiance, .. } => {
-                GpuLight { p0: Vec3::ZERO, kind: LIGHT_SPOT, p1: Vec3::ZERO, a: 0.0, p2: Vec3::ZERO, b: 0.0, intensity: irradiance, ies_base: 0 }
-            }
-        };
-        let (light_vp, origin, axis, right, up, extent, mode) = match map {
-            LightMap::Perspective { origin, axis, right, up, tan } => {
-                let r = range_of(origin);
-                let vp = proj::vulkan::perspective(2.0 * tan.atan(), 1.0, r.start, r.end) * look_to_mat4(origin, axis, up);
-                (vp, origin, axis, right, up, tan, MAP_PERSPECTIVE)
-            }
-            LightMap::Orthographic { origin, axis, right, up, half } => {
-                let vp = proj::vulkan::orthographic(-half, half, -half, half, 0.0, 4.0 * half) * look_to_mat4(origin, axis, up);
-                (vp, origin, axis, right, up, half, MAP_ORTHOGRAPHIC)
-            }
-        };
-        let texel = (2.0 * extent / size as f32).powi(2);
-        let params = |vp: Mat4, origin: Vec3, mode: u32, size: u32| {
-            let [c0, c1, c2, c3] = columns(vp);
-            MapParams { c0, c1, c2, c3, light, origin, mode, axis, size, right, extent, up, texel }
-        };
+        let (light, shadow_light) = light_uniforms(&scene.primary, (lo, hi), size, shadow);
         let uniform = |label: &str, bytes: &[u8]| {
             gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some(label),
                 contents: bytes,
-                usage: wgpu::BufferUsages::UNIFORM,
+                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             })
         };
-        let camera_params = uniform("slc camera params", bytemuck::bytes_of(&params(camera_vp, cam.position, MAP_CAMERA, 0)));
-        let light_params = uniform("slc light params", bytemuck::bytes_of(&params(light_vp, origin, mode, size)));
-        let shadow_params = uniform("slc shadow params", bytemuck::bytes_of(&params(light_vp, origin, mode, shadow)));
+        let camera_map =
+            MapParams { c0: Vec4::ZERO, c1: Vec4::ZERO, c2: Vec4::ZERO, c3: Vec4::ZERO, origin: cam.position, mode: MAP_CAMERA, size: 0, ..light };
+        let [c0, c1, c2, c3] = columns(camera_vp);
+        let camera_params = uniform("slc camera params", bytemuck::bytes_of(&MapParams { c0, c1, c2, c3, ..camera_map }));
+        let light_params = uniform("slc light params", bytemuck::bytes_of(&light));
+        let shadow_params = uniform("slc shadow params", bytemuck::bytes_of(&shadow_light));
         let image_params =
             uniform("slc frame image", bytemuck::bytes_of(&ImageParams { eye: cam.position, width: w, height: h, pad0: 0, pad1: 0, pad2: 0 }));
 
@@ -402,6 +407,9 @@ impl<'a> GpuVplFrame<'a> {
             materials: scene.materials.clone(),
             vertices,
             vertex_count: verts.len() as u32,
+            bounds: (lo, hi),
+            light_params,
+            shadow_params,
             camera_group,
             light_group,
             shadow_group,
@@ -437,6 +445,53 @@ impl<'a> GpuVplFrame<'a> {
     /// COPY_SRC`): radiance, alpha 1, after the recorded frame.
     pub fn output(&self) -> &wgpu::Texture {
         &self.output.texture
+    }
+
+    /// Moves or changes the primary light (a viewer animating it, an
+    /// engine's sun): rewrites the RSM's and the shadow map's uniforms, so
+    /// the next recorded frame renders with it. The light is checked as
+    /// the scene's is ([`PrimaryLight::validate`]).
+    pub fn set_primary(&self, primary: &PrimaryLight) -> Result<(), GpuError> {
+        primary.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
+        let (light, shadow) = light_uniforms(primary, self.bounds, self.desc.rsm_size, self.desc.shadow_size);
+        self.gpu.queue.write_buffer(&self.light_params, 0, bytemuck::bytes_of(&light));
+        self.gpu.queue.write_buffer(&self.shadow_params, 0, bytemuck::bytes_of(&shadow));
+        Ok(())
+    }
+
+    /// [`GpuVplFrame::record`] with a GPU timestamp around every stage
+    /// where the adapter has usable ones (not on software adapters); read
+    /// them with [`GpuVplFrame::stage_times`] once the encoder's commands
+    /// are submitted. Returns whether the stages are timed.
+    pub fn record_timed(&self, encoder: &mut wgpu::CommandEncoder, settings: &VplSettings) -> Result<bool, GpuError> {
+        let mut timer = self.busy.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
+        let stages = self.stages(settings)?;
+        match timer.as_mut() {
+            Some(t) => {
+                t.reset();
+                for stage in &stages {
+                    self.record_stage(encoder, stage, Some(t));
+                }
+                t.resolve(encoder);
+                Ok(true)
+            }
+            None => {
+                for stage in &stages {
+                    self.record_stage(encoder, stage, None);
+                }
+                Ok(false)
+            }
+        }
+    }
+
+    /// Every stage's GPU time of the last frame recorded by
+    /// [`GpuVplFrame::record_timed`] (waits for it to finish); `None`
+    /// where the adapter has no usable timestamps.
+    pub fn stage_times(&self, settings: &VplSettings) -> Result<Option<Vec<StageTime>>, GpuError> {
+        let timer = self.busy.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
+        let Some(t) = timer.as_ref() else { return Ok(None) };
+        let names: Vec<&'static str> = self.stages(settings)?.iter().map(|s| s.name()).collect();
+        Ok(Some(names.into_iter().zip(t.durations_ms(self.gpu)?).map(|(name, ms)| StageTime { name, ms }).collect()))
     }
 
     /// The frame's stages for `settings`, each recordable on its own.

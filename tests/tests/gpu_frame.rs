@@ -162,6 +162,48 @@ fn every_stage_is_timed() {
     assert!(!none.stages.iter().any(|s| s.name == "light update" || s.name == "denoise"));
 }
 
+/// Moving the primary light with [`GpuVplFrame::set_primary`] renders the
+/// image of a frame built with the moved light (the same uniforms: equal
+/// bit for bit) and not the old one; an invalid light is refused and
+/// leaves the frame as it was. Recording with timestamps
+/// ([`GpuVplFrame::record_timed`]) times every stage where the adapter
+/// has usable timestamps, and says so otherwise.
+fn moved_light_renders_as_a_new_frame() {
+    let Some(gpu) = gpu() else { return };
+    let desc = FrameDesc { width: 64, height: 48, rsm_size: 16, shadow_size: 128, min_distance: None };
+    let mut scene = Scene::cornell_box();
+    let frame = GpuVplFrame::new(gpu, &scene, &desc).unwrap();
+    let s = settings(VplMethod::Slc, true);
+    let before = frame.render(&s).unwrap().image;
+    let PrimaryLight::Spot { position, direction, intensity, inner, outer } = scene.primary else { unreachable!("a spot") };
+    scene.primary = PrimaryLight::Spot {
+        position: position + Vec3::new(0.15, -0.05, 0.1),
+        direction: direction + Vec3::new(0.2, 0.0, 0.0),
+        intensity,
+        inner,
+        outer,
+    };
+    frame.set_primary(&scene.primary).unwrap();
+    let moved = frame.render(&s).unwrap().image;
+    let fresh = GpuVplFrame::new(gpu, &scene, &desc).unwrap().render(&s).unwrap().image;
+    assert_eq!(moved.data, fresh.data, "the moved light renders as a frame built with it");
+    let changed = moved.data.iter().zip(&before.data).filter(|(a, b)| (**a - **b).abs().max_element() > 1e-3).count();
+    assert!(changed > moved.data.len() / 10, "only {changed} pixels changed");
+    let bad = PrimaryLight::Spot { position, direction: Vec3::ZERO, intensity, inner, outer };
+    assert!(frame.set_primary(&bad).is_err());
+    assert_eq!(frame.render(&s).unwrap().image.data, moved.data, "a refused light changes nothing");
+    let mut enc = gpu.device.create_command_encoder(&Default::default());
+    let timed = frame.record_timed(&mut enc, &s).unwrap();
+    gpu.queue.submit([enc.finish()]);
+    gpu.wait().unwrap();
+    let software = gpu.adapter.device_type == wgpu::DeviceType::Cpu;
+    assert_eq!(timed, gpu.timestamps && !software);
+    match frame.stage_times(&s).unwrap() {
+        Some(times) => assert!(times.len() == 12 && times.iter().all(|t| t.ms.is_finite() && t.ms >= 0.0), "{times:?}"),
+        None => assert!(!timed),
+    }
+}
+
 /// Bad sizes and settings are typed errors, not panics.
 fn bad_frames_are_errors() {
     let Some(gpu) = gpu() else { return };
@@ -185,4 +227,5 @@ slc_tests::harness!(
     Gpu: gpu_vpls_match_cpu_vpls,
     Gpu: every_stage_is_timed,
     Gpu: bad_frames_are_errors,
+    Gpu: moved_light_renders_as_a_new_frame,
 );
