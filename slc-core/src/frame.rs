@@ -31,6 +31,17 @@ crate::shared! {
         return dot(rel, dir) / (select(1.0, dot(rel, axis), perspective) * extent);
     }
 
+    /// A linear channel value `x ≥ 0` (after exposure) as the display
+    /// value in `[0, 1]` of slc's previews: the curve `t = 2x/(1 + 2x)`
+    /// (½ at `x = ½`, white only at ∞), then the sRGB transfer function
+    /// (IEC 61966-2-1: `12.92·t` up to `0.0031308`, else
+    /// `1.055·t^(1/2.4) − 0.055`). The PNG writer and the viewer share it.
+    pub fn display_encode(x: f32) -> f32 {
+        let v: f32 = max(x, 0.0);
+        let t: f32 = 2.0 * v / (1.0 + 2.0 * v);
+        return select(1.055 * pow(t, 1.0 / 2.4) - 0.055, 12.92 * t, t <= 0.0031308);
+    }
+
     /// Depth a light map stores for a point at offset `rel` from the map's
     /// origin: the distance from the light (perspective map) or the
     /// distance along the unit `axis` from the map's plane (orthographic).
@@ -160,6 +171,21 @@ mod tests {
         // An orthographic point right·a·half + axis·anything.
         let rel = right * (0.5 * 2.0) + axis * 7.0;
         assert!((light_map_coord_at(rel, right, axis, 2.0, false) - 0.5).abs() < 1e-6);
+    }
+
+    #[test]
+    fn display_encoding() {
+        assert_eq!(display_encode(0.0), 0.0);
+        assert_eq!(display_encode(-1.0), 0.0);
+        // x = ½ maps to t = ½, sRGB-encoded 0.7354.
+        assert!((display_encode(0.5) - 0.735_357).abs() < 1e-5);
+        assert!(display_encode(1e30) <= 1.0 && display_encode(1e30) > 0.999);
+        let mut last = 0.0;
+        for k in 1..1000 {
+            let v = display_encode(k as f32 * 1e-3);
+            assert!(v > last, "monotone");
+            last = v;
+        }
     }
 
     #[test]

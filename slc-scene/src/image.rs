@@ -95,9 +95,7 @@ pub fn write_rgb8_png(path: &Path, width: u32, height: u32, bytes: &[u8]) -> Res
 pub fn tonemap(c: Vec3) -> [u8; 3] {
     let map = |x: f32| {
         let x = if x.is_finite() { x.max(0.0) } else { 0.0 };
-        let t = 2.0 * x / (1.0 + 2.0 * x);
-        let s = if t <= 0.003_130_8 { 12.92 * t } else { 1.055 * t.powf(1.0 / 2.4) - 0.055 };
-        (s * 255.0 + 0.5).clamp(0.0, 255.0) as u8
+        (slc_core::frame::display_encode(x) * 255.0 + 0.5).clamp(0.0, 255.0) as u8
     };
     [map(c.x), map(c.y), map(c.z)]
 }

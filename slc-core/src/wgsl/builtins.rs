@@ -143,6 +143,11 @@ pub fn normalize(v: Vec3) -> Vec3 {
 pub fn sqrt(x: f32) -> f32 {
     libm::sqrtf(x)
 }
+/// WGSL `pow` (`x ≥ 0`).
+#[inline]
+pub fn pow(x: f32, y: f32) -> f32 {
+    libm::powf(x, y)
+}
 /// WGSL `floor`.
 #[inline]
 pub fn floor(x: f32) -> f32 {

@@ -1261,6 +1261,12 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_2: vec3<f32>, exten
     return (dot(rel, dir_2) / (select(1f, dot(rel, axis_2), perspective) * extent_2));
 }
 
+fn display_encode(x_14: f32) -> f32 {
+    let v_12 = max(x_14, 0f);
+    let t_7 = ((2f * v_12) / (1f + (2f * v_12)));
+    return select(((1.055f * pow(t_7, 0.41666666f)) - 0.055f), (12.92f * t_7), (t_7 <= 0.0031308f));
+}
+
 fn light_map_depth(rel_1: vec3<f32>, axis_3: vec3<f32>, perspective_1: bool) -> f32 {
     return select(dot(rel_1, axis_3), sqrt(dot(rel_1, rel_1)), perspective_1);
 }
@@ -1370,9 +1376,9 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     }
                     {
                         let _e42 = i_2;
-                        let t_7 = geo_tris[_e42];
+                        let t_8 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_4, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i_2;
@@ -1442,7 +1448,7 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_next_leaf(nodes_3: u32, start_1: u32, x_14: vec3<f32>) -> u32 {
+fn bsh_next_leaf(nodes_3: u32, start_1: u32, x_15: vec3<f32>) -> u32 {
     var i_4: u32;
 
     i_4 = start_1;
@@ -1455,7 +1461,7 @@ fn bsh_next_leaf(nodes_3: u32, start_1: u32, x_14: vec3<f32>) -> u32 {
         {
             let _e7 = i_4;
             let _e8 = bsh_node(nodes_3, _e7);
-            let _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            let _e11 = sphere_contains_point(_e8.center, _e8.radius, x_15);
             if _e11 {
                 if (_e8.child == BSH_NONE) {
                     let _e15 = i_4;
@@ -1478,7 +1484,7 @@ fn bsh_children_sphere(nodes_4: u32, i_5: u32) -> vec4<f32> {
     return _e11;
 }
 
-fn bsh_collect(x_15: vec3<f32>, seed_3: u32) -> Picks {
+fn bsh_collect(x_16: vec3<f32>, seed_3: u32) -> Picks {
     var picks: Picks;
     var h_2: u32;
     var i_6: u32;
@@ -1486,7 +1492,7 @@ fn bsh_collect(x_15: vec3<f32>, seed_3: u32) -> Picks {
     picks.n = 0u;
     h_2 = seed_3;
     let _e8 = bsh_first(BSH);
-    let _e9 = bsh_next_leaf(BSH, _e8, x_15);
+    let _e9 = bsh_next_leaf(BSH, _e8, x_16);
     i_6 = _e9;
     loop {
         let _e11 = i_6;
@@ -1520,7 +1526,7 @@ fn bsh_collect(x_15: vec3<f32>, seed_3: u32) -> Picks {
         continuing {
             let _e42 = i_6;
             let _e45 = bsh_nodes[_e42].next;
-            let _e46 = bsh_next_leaf(BSH, _e45, x_15);
+            let _e46 = bsh_next_leaf(BSH, _e45, x_16);
             i_6 = _e46;
         }
     }
@@ -1528,7 +1534,7 @@ fn bsh_collect(x_15: vec3<f32>, seed_3: u32) -> Picks {
     return _e47;
 }
 
-fn connect(li: u32, x_16: vec3<f32>, n_17: vec3<f32>, ng_2: vec3<f32>, w_res: f32, u1_3: f32, u2_3: f32, eps: f32) -> Connection {
+fn connect(li: u32, x_17: vec3<f32>, n_17: vec3<f32>, ng_2: vec3<f32>, w_res: f32, u1_3: f32, u2_3: f32, eps: f32) -> Connection {
     var c_9: Connection;
     var local_16: bool;
 
@@ -1538,12 +1544,12 @@ fn connect(li: u32, x_16: vec3<f32>, n_17: vec3<f32>, ng_2: vec3<f32>, w_res: f3
     c_9.y = _e16;
     let _e19 = c_9.y;
     let _e22 = r2_6[li];
-    let _e23 = connection_cosine(x_16, _e19, n_17, ng_2, _e22);
+    let _e23 = connection_cosine(x_17, _e19, n_17, ng_2, _e22);
     c_9.cos_x = _e23;
     let _e25 = c_9.cos_x;
     if !((_e25 <= 0f)) {
         let _e34 = c_9.y;
-        let _e35 = occluded((x_16 + (ng_2 * eps)), _e34);
+        let _e35 = occluded((x_17 + (ng_2 * eps)), _e34);
         local_16 = _e35;
     } else {
         local_16 = true;
@@ -1554,9 +1560,9 @@ fn connect(li: u32, x_16: vec3<f32>, n_17: vec3<f32>, ng_2: vec3<f32>, w_res: f3
         return _e38;
     }
     let _e40 = c_9.y;
-    let v_12 = (x_16 - _e40);
-    let d2_15 = dot(v_12, v_12);
-    let _e47 = light_intensity(l_4, (v_12 / vec3(sqrt(d2_15))));
+    let v_13 = (x_17 - _e40);
+    let d2_15 = dot(v_13, v_13);
+    let _e47 = light_intensity(l_4, (v_13 / vec3(sqrt(d2_15))));
     let _e49 = c_9.cos_x;
     let _e52 = rt2_7[li];
     let _e53 = connection_factor(_e49, d2_15, _e52, w_res);
@@ -1581,13 +1587,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         irradiance[i_7] = vec4(0f);
         return;
     }
-    let x_17 = p_4.xyz;
+    let x_18 = p_4.xyz;
     let _e19 = normals[i_7];
     let n_21 = _e19.xyz;
     let _e23 = params.seed;
     let _e26 = params.frame;
     let _e27 = point_stream(_e23, i_7, _e26);
-    let _e28 = bsh_collect(x_17, _e27);
+    let _e28 = bsh_collect(x_18, _e27);
     let _e31 = reservoir_weight(_e28.n, K);
     let _e32 = pick_stream(_e27);
     h = _e32;
@@ -1611,7 +1617,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e54 = h;
             let _e55 = xi_from_bits(_e54);
             let _e58 = params.eps;
-            let _e59 = connect(_e28.light[_e52], x_17, n_21, n_21, _e31, _e47, _e55, _e58);
+            let _e59 = connect(_e28.light[_e52], x_18, n_21, n_21, _e31, _e47, _e55, _e58);
             e = (_e50 + _e59.e);
         }
         continuing {

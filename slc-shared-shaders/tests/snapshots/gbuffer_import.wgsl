@@ -1235,6 +1235,12 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_2: vec3<f32>, exten
     return (dot(rel, dir_2) / (select(1f, dot(rel, axis_2), perspective) * extent_2));
 }
 
+fn display_encode(x_14: f32) -> f32 {
+    let v_12 = max(x_14, 0f);
+    let t_7 = ((2f * v_12) / (1f + (2f * v_12)));
+    return select(((1.055f * pow(t_7, 0.41666666f)) - 0.055f), (12.92f * t_7), (t_7 <= 0.0031308f));
+}
+
 fn light_map_depth(rel_1: vec3<f32>, axis_3: vec3<f32>, perspective_1: bool) -> f32 {
     return select(dot(rel_1, axis_3), sqrt(dot(rel_1, rel_1)), perspective_1);
 }
@@ -1313,9 +1319,9 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     }
     let valid = local_1;
     let _e48 = params.eye;
-    let v_12 = (p_4.xyz - _e48);
+    let v_13 = (p_4.xyz - _e48);
     gb_position[i_2] = vec4<f32>(p_4.xyz, select(0f, 1f, valid));
-    gb_normal[i_2] = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_19 / vec3(sqrt(len2_))), sqrt(dot(v_12, v_12))), valid);
+    gb_normal[i_2] = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_19 / vec3(sqrt(len2_))), sqrt(dot(v_13, v_13))), valid);
     irradiance[i_2] = vec4(0f);
     return;
 }

@@ -1231,6 +1231,12 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_2: vec3<f32>, exten
     return (dot(rel, dir_2) / (select(1f, dot(rel, axis_2), perspective) * extent_2));
 }
 
+fn display_encode(x_14: f32) -> f32 {
+    let v_12 = max(x_14, 0f);
+    let t_7 = ((2f * v_12) / (1f + (2f * v_12)));
+    return select(((1.055f * pow(t_7, 0.41666666f)) - 0.055f), (12.92f * t_7), (t_7 <= 0.0031308f));
+}
+
 fn light_map_depth(rel_1: vec3<f32>, axis_3: vec3<f32>, perspective_1: bool) -> f32 {
     return select(dot(rel_1, axis_3), sqrt(dot(rel_1, rel_1)), perspective_1);
 }

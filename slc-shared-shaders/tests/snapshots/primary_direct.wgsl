@@ -1235,6 +1235,12 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_2: vec3<f32>, exten
     return (dot(rel, dir_2) / (select(1f, dot(rel, axis_2), perspective) * extent_2));
 }
 
+fn display_encode(x_14: f32) -> f32 {
+    let v_12 = max(x_14, 0f);
+    let t_7 = ((2f * v_12) / (1f + (2f * v_12)));
+    return select(((1.055f * pow(t_7, 0.41666666f)) - 0.055f), (12.92f * t_7), (t_7 <= 0.0031308f));
+}
+
 fn light_map_depth(rel_1: vec3<f32>, axis_3: vec3<f32>, perspective_1: bool) -> f32 {
     return select(dot(rel_1, axis_3), sqrt(dot(rel_1, rel_1)), perspective_1);
 }
@@ -1346,18 +1352,18 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         direct[i_2] = vec4(0f);
         return;
     }
-    let x_14 = p_4.xyz;
+    let x_15 = p_4.xyz;
     let n_19 = normalize(nn);
     let _e55 = params.size;
     let size_10 = f32(_e55);
     let _e66 = params.origin;
-    let rel_2 = (x_14 - _e66);
+    let rel_2 = (x_15 - _e66);
     let _e70 = params.axis;
     let _e73 = params.mode;
     let _e76 = light_map_depth(rel_2, _e70, (_e73 == MAP_PERSPECTIVE));
     let _e83 = params.mode;
     if (_e83 == MAP_PERSPECTIVE) {
-        let v_12 = -(rel_2);
+        let v_13 = -(rel_2);
         let _e89 = params.axis;
         let z_4 = dot(rel_2, _e89);
         if !((z_4 <= 0f)) {
@@ -1383,10 +1389,10 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         let _e128 = params.extent;
         let _e129 = perspective_texel_width(_e128, _e76, z_4, size_10);
         width = _e129;
-        cos_light = (dot(n_19, v_12) / _e76);
+        cos_light = (dot(n_19, v_13) / _e76);
         let _e134 = params.light;
         let _e137 = light_intensity(_e134, (rel_2 / vec3(_e76)));
-        let _e138 = point_irradiance(_e137, n_19, v_12);
+        let _e138 = point_irradiance(_e137, n_19, v_13);
         e = _e138;
     } else {
         let _e141 = params.right;

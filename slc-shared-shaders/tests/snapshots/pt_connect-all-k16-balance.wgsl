@@ -1273,6 +1273,12 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_2: vec3<f32>, exten
     return (dot(rel, dir_2) / (select(1f, dot(rel, axis_2), perspective) * extent_2));
 }
 
+fn display_encode(x_14: f32) -> f32 {
+    let v_12 = max(x_14, 0f);
+    let t_7 = ((2f * v_12) / (1f + (2f * v_12)));
+    return select(((1.055f * pow(t_7, 0.41666666f)) - 0.055f), (12.92f * t_7), (t_7 <= 0.0031308f));
+}
+
 fn light_map_depth(rel_1: vec3<f32>, axis_3: vec3<f32>, perspective_1: bool) -> f32 {
     return select(dot(rel_1, axis_3), sqrt(dot(rel_1, rel_1)), perspective_1);
 }
@@ -1402,9 +1408,9 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     }
                     {
                         let _e42 = i_2;
-                        let t_7 = geo_tris[_e42];
+                        let t_8 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_4, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i_2;
@@ -1474,7 +1480,7 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_next_leaf(nodes_3: u32, start_1: u32, x_14: vec3<f32>) -> u32 {
+fn bsh_next_leaf(nodes_3: u32, start_1: u32, x_15: vec3<f32>) -> u32 {
     var i_4: u32;
 
     i_4 = start_1;
@@ -1487,7 +1493,7 @@ fn bsh_next_leaf(nodes_3: u32, start_1: u32, x_14: vec3<f32>) -> u32 {
         {
             let _e7 = i_4;
             let _e8 = bsh_node(nodes_3, _e7);
-            let _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            let _e11 = sphere_contains_point(_e8.center, _e8.radius, x_15);
             if _e11 {
                 if (_e8.child == BSH_NONE) {
                     let _e15 = i_4;
@@ -1510,7 +1516,7 @@ fn bsh_children_sphere(nodes_4: u32, i_5: u32) -> vec4<f32> {
     return _e11;
 }
 
-fn bsh_collect(x_15: vec3<f32>, seed_3: u32) -> Picks {
+fn bsh_collect(x_16: vec3<f32>, seed_3: u32) -> Picks {
     var picks: Picks;
     var h_2: u32;
     var i_6: u32;
@@ -1518,7 +1524,7 @@ fn bsh_collect(x_15: vec3<f32>, seed_3: u32) -> Picks {
     picks.n = 0u;
     h_2 = seed_3;
     let _e8 = bsh_first(BSH);
-    let _e9 = bsh_next_leaf(BSH, _e8, x_15);
+    let _e9 = bsh_next_leaf(BSH, _e8, x_16);
     i_6 = _e9;
     loop {
         let _e11 = i_6;
@@ -1552,7 +1558,7 @@ fn bsh_collect(x_15: vec3<f32>, seed_3: u32) -> Picks {
         continuing {
             let _e42 = i_6;
             let _e45 = bsh_nodes[_e42].next;
-            let _e46 = bsh_next_leaf(BSH, _e45, x_15);
+            let _e46 = bsh_next_leaf(BSH, _e45, x_16);
             i_6 = _e46;
         }
     }
@@ -1560,7 +1566,7 @@ fn bsh_collect(x_15: vec3<f32>, seed_3: u32) -> Picks {
     return _e47;
 }
 
-fn connect(li: u32, x_16: vec3<f32>, n_17: vec3<f32>, ng_2: vec3<f32>, w_res: f32, u1_3: f32, u2_3: f32, eps: f32) -> Connection {
+fn connect(li: u32, x_17: vec3<f32>, n_17: vec3<f32>, ng_2: vec3<f32>, w_res: f32, u1_3: f32, u2_3: f32, eps: f32) -> Connection {
     var c_9: Connection;
     var local_16: bool;
 
@@ -1570,12 +1576,12 @@ fn connect(li: u32, x_16: vec3<f32>, n_17: vec3<f32>, ng_2: vec3<f32>, w_res: f3
     c_9.y = _e16;
     let _e19 = c_9.y;
     let _e22 = r2_6[li];
-    let _e23 = connection_cosine(x_16, _e19, n_17, ng_2, _e22);
+    let _e23 = connection_cosine(x_17, _e19, n_17, ng_2, _e22);
     c_9.cos_x = _e23;
     let _e25 = c_9.cos_x;
     if !((_e25 <= 0f)) {
         let _e34 = c_9.y;
-        let _e35 = occluded((x_16 + (ng_2 * eps)), _e34);
+        let _e35 = occluded((x_17 + (ng_2 * eps)), _e34);
         local_16 = _e35;
     } else {
         local_16 = true;
@@ -1586,9 +1592,9 @@ fn connect(li: u32, x_16: vec3<f32>, n_17: vec3<f32>, ng_2: vec3<f32>, w_res: f3
         return _e38;
     }
     let _e40 = c_9.y;
-    let v_12 = (x_16 - _e40);
-    let d2_15 = dot(v_12, v_12);
-    let _e47 = light_intensity(l_4, (v_12 / vec3(sqrt(d2_15))));
+    let v_13 = (x_17 - _e40);
+    let d2_15 = dot(v_13, v_13);
+    let _e47 = light_intensity(l_4, (v_13 / vec3(sqrt(d2_15))));
     let _e49 = c_9.cos_x;
     let _e52 = rt2_7[li];
     let _e53 = connection_factor(_e49, d2_15, _e52, w_res);
@@ -1602,10 +1608,10 @@ fn mis_weight(pdf_a_2: f32, pdf_b_2: f32) -> f32 {
     return _e2;
 }
 
-fn light_weight(li_1: u32, x_17: vec3<f32>, n_18: vec3<f32>) -> f32 {
+fn light_weight(li_1: u32, x_18: vec3<f32>, n_18: vec3<f32>) -> f32 {
     let c_14 = light_cones[li_1];
     let _e14 = rt2_7[li_1];
-    let _e15 = cone_weight(c_14.center, c_14.radius, c_14.phi, c_14.axis, c_14.cos_o, c_14.cos_e, _e14, x_17, n_18);
+    let _e15 = cone_weight(c_14.center, c_14.radius, c_14.phi, c_14.axis, c_14.cos_o, c_14.cos_e, _e14, x_18, n_18);
     return _e15;
 }
 
@@ -1618,13 +1624,13 @@ fn light_bvh_count(nodes_6: u32) -> u32 {
     return arrayLength((&light_bvh));
 }
 
-fn bvh_importance(nodes_7: u32, i_8: u32, x_18: vec3<f32>, n_19: vec3<f32>) -> f32 {
+fn bvh_importance(nodes_7: u32, i_8: u32, x_19: vec3<f32>, n_19: vec3<f32>) -> f32 {
     let _e4 = light_bvh_node(nodes_7, i_8);
-    let _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_18, n_19);
+    let _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_19, n_19);
     return _e11;
 }
 
-fn bvh_first(nodes_8: u32, i_9: u32, x_19: vec3<f32>, n_20: vec3<f32>) -> f32 {
+fn bvh_first(nodes_8: u32, i_9: u32, x_20: vec3<f32>, n_20: vec3<f32>) -> f32 {
     var local_17: bool;
 
     let _e4 = light_bvh_node(nodes_8, i_9);
@@ -1639,8 +1645,8 @@ fn bvh_first(nodes_8: u32, i_9: u32, x_19: vec3<f32>, n_20: vec3<f32>) -> f32 {
     if _e15 {
         return -1f;
     }
-    let _e19 = bvh_importance(nodes_8, (i_9 + 1u), x_19, n_20);
-    let _e20 = bvh_importance(nodes_8, j, x_19, n_20);
+    let _e19 = bvh_importance(nodes_8, (i_9 + 1u), x_20, n_20);
+    let _e20 = bvh_importance(nodes_8, j, x_20, n_20);
     let _e21 = bvh_first_prob(_e19, _e20);
     return _e21;
 }
@@ -1649,7 +1655,7 @@ fn bvh_pick_none() -> BvhPick {
     return BvhPick(0u, 0f);
 }
 
-fn light_bvh_sample(nodes_9: u32, x_20: vec3<f32>, n_21: vec3<f32>, u_in: f32) -> BvhPick {
+fn light_bvh_sample(nodes_9: u32, x_21: vec3<f32>, n_21: vec3<f32>, u_in: f32) -> BvhPick {
     var pick: BvhPick;
     var u_6: f32;
     var i_10: u32 = 0u;
@@ -1672,7 +1678,7 @@ fn light_bvh_sample(nodes_9: u32, x_20: vec3<f32>, n_21: vec3<f32>, u_in: f32) -
             if (_e15.second == LIGHT_BVH_LEAF) {
                 let _e19 = i_10;
                 if !((_e19 > 0u)) {
-                    let _e26 = bvh_importance(nodes_9, 0u, x_20, n_21);
+                    let _e26 = bvh_importance(nodes_9, 0u, x_21, n_21);
                     local_18 = (_e26 > 0f);
                 } else {
                     local_18 = true;
@@ -1687,7 +1693,7 @@ fn light_bvh_sample(nodes_9: u32, x_20: vec3<f32>, n_21: vec3<f32>, u_in: f32) -
                 return _e35;
             }
             let _e36 = i_10;
-            let _e37 = bvh_first(nodes_9, _e36, x_20, n_21);
+            let _e37 = bvh_first(nodes_9, _e36, x_21, n_21);
             if (_e37 < 0f) {
                 let _e40 = pick;
                 return _e40;
@@ -1707,7 +1713,7 @@ fn light_bvh_sample(nodes_9: u32, x_20: vec3<f32>, n_21: vec3<f32>, u_in: f32) -
     return _e55;
 }
 
-fn light_bvh_pmf(nodes_10: u32, leaf: u32, x_21: vec3<f32>, n_22: vec3<f32>) -> f32 {
+fn light_bvh_pmf(nodes_10: u32, leaf: u32, x_22: vec3<f32>, n_22: vec3<f32>) -> f32 {
     var i_11: u32 = 0u;
     var pmf_1: f32 = 1f;
     var local_19: bool;
@@ -1732,7 +1738,7 @@ fn light_bvh_pmf(nodes_10: u32, leaf: u32, x_21: vec3<f32>, n_22: vec3<f32>) -> 
                 if (_e19 == leaf) {
                     let _e23 = i_11;
                     if !((_e23 > 0u)) {
-                        let _e30 = bvh_importance(nodes_10, 0u, x_21, n_22);
+                        let _e30 = bvh_importance(nodes_10, 0u, x_22, n_22);
                         local_20 = (_e30 > 0f);
                     } else {
                         local_20 = true;
@@ -1750,7 +1756,7 @@ fn light_bvh_pmf(nodes_10: u32, leaf: u32, x_21: vec3<f32>, n_22: vec3<f32>) -> 
                 return 0f;
             }
             let _e39 = i_11;
-            let _e40 = bvh_first(nodes_10, _e39, x_21, n_22);
+            let _e40 = bvh_first(nodes_10, _e39, x_22, n_22);
             if (_e40 < 0f) {
                 return 0f;
             }
@@ -1764,30 +1770,30 @@ fn light_bvh_pmf(nodes_10: u32, leaf: u32, x_21: vec3<f32>, n_22: vec3<f32>) -> 
     return 0f;
 }
 
-fn select_pdf(li_2: u32, x_22: vec3<f32>, n_23: vec3<f32>, nee: u32, in_range_2: bool) -> f32 {
+fn select_pdf(li_2: u32, x_23: vec3<f32>, n_23: vec3<f32>, nee: u32, in_range_2: bool) -> f32 {
     let _e6 = reservoir_select_pdf(nee, in_range_2, K);
     return _e6;
 }
 
-fn light_pdf(li_3: u32, x_23: vec3<f32>, n_24: vec3<f32>, y_3: vec3<f32>, nee_1: u32, in_range_3: bool) -> f32 {
+fn light_pdf(li_3: u32, x_24: vec3<f32>, n_24: vec3<f32>, y_3: vec3<f32>, nee_1: u32, in_range_3: bool) -> f32 {
     let l_5 = lights[li_3];
-    let v_13 = (x_23 - y_3);
-    let d2_16 = dot(v_13, v_13);
+    let v_14 = (x_24 - y_3);
+    let d2_16 = dot(v_14, v_14);
     let _e11 = light_normal(l_5);
-    let cos_y_1 = select(0f, dot(_e11, (v_13 / vec3(sqrt(d2_16)))), (d2_16 > 0f));
-    let _e20 = select_pdf(li_3, x_23, n_24, nee_1, in_range_3);
+    let cos_y_1 = select(0f, dot(_e11, (v_14 / vec3(sqrt(d2_16)))), (d2_16 > 0f));
+    let _e20 = select_pdf(li_3, x_24, n_24, nee_1, in_range_3);
     let _e23 = rt2_7[li_3];
     let _e24 = light_area(l_5);
     let _e25 = light_strategy_pdf(_e20, _e23, d2_16, _e24, cos_y_1);
     return _e25;
 }
 
-fn shade_pick(li_4: u32, x_24: vec3<f32>, n_25: vec3<f32>, ng_3: vec3<f32>, w_10: f32, nee_2: u32, u1_4: f32, u2_4: f32) -> vec3<f32> {
+fn shade_pick(li_4: u32, x_25: vec3<f32>, n_25: vec3<f32>, ng_3: vec3<f32>, w_10: f32, nee_2: u32, u1_4: f32, u2_4: f32) -> vec3<f32> {
     var mis: f32 = 1f;
     var local_21: bool;
 
     let _e10 = params.eps;
-    let _e11 = connect(li_4, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10);
+    let _e11 = connect(li_4, x_25, n_25, ng_3, w_10, u1_4, u2_4, _e10);
     let _e16 = lights[li_4];
     let _e17 = light_area(_e16);
     if (_e17 > 0f) {
@@ -1797,7 +1803,7 @@ fn shade_pick(li_4: u32, x_24: vec3<f32>, n_25: vec3<f32>, ng_3: vec3<f32>, w_10
     }
     let _e26 = local_21;
     if _e26 {
-        let _e29 = light_pdf(li_4, x_24, n_25, _e11.y, nee_2, true);
+        let _e29 = light_pdf(li_4, x_25, n_25, _e11.y, nee_2, true);
         let _e31 = cosine_pdf(_e11.cos_x);
         let _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -1822,7 +1828,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         candidates[i_12] = 0u;
         return;
     }
-    let x_25 = vtx.position;
+    let x_26 = vtx.position;
     let n_29 = vtx.normal;
     let ng_4 = vtx.gnormal;
     let _e20 = params.seed;
@@ -1830,7 +1836,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e24 = point_stream(_e20, i_12, _e23);
     let _e25 = pick_stream(_e24);
     h = _e25;
-    let _e30 = bsh_collect(x_25, _e24);
+    let _e30 = bsh_collect(x_26, _e24);
     candidates[i_12] = _e30.n;
     let _e36 = reservoir_weight(_e30.n, K);
     loop {
@@ -1852,7 +1858,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e52 = s;
             let _e55 = h;
             let _e56 = xi_from_bits(_e55);
-            let _e57 = shade_pick(_e30.light[_e52], x_25, n_29, ng_4, _e36, _e30.n, _e47, _e56);
+            let _e57 = shade_pick(_e30.light[_e52], x_26, n_29, ng_4, _e36, _e30.n, _e47, _e56);
             sum = (_e50 + _e57);
         }
         continuing {

@@ -1267,6 +1267,12 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_2: vec3<f32>, exten
     return (dot(rel, dir_2) / (select(1f, dot(rel, axis_2), perspective) * extent_2));
 }
 
+fn display_encode(x_14: f32) -> f32 {
+    let v_13 = max(x_14, 0f);
+    let t_7 = ((2f * v_13) / (1f + (2f * v_13)));
+    return select(((1.055f * pow(t_7, 0.41666666f)) - 0.055f), (12.92f * t_7), (t_7 <= 0.0031308f));
+}
+
 fn light_map_depth(rel_1: vec3<f32>, axis_3: vec3<f32>, perspective_1: bool) -> f32 {
     return select(dot(rel_1, axis_3), sqrt(dot(rel_1, rel_1)), perspective_1);
 }
@@ -1384,9 +1390,9 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     }
                     {
                         let _e42 = i_2;
-                        let t_7 = geo_tris[_e42];
+                        let t_8 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_4, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i_2;
@@ -1444,10 +1450,10 @@ fn mis_weight(pdf_a_2: f32, pdf_b_2: f32) -> f32 {
     return _e2;
 }
 
-fn light_weight(li: u32, x_14: vec3<f32>, n_17: vec3<f32>) -> f32 {
+fn light_weight(li: u32, x_15: vec3<f32>, n_17: vec3<f32>) -> f32 {
     let c_13 = light_cones[li];
     let _e14 = rt2_7[li];
-    let _e15 = cone_weight(c_13.center, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_14, n_17);
+    let _e15 = cone_weight(c_13.center, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_15, n_17);
     return _e15;
 }
 
@@ -1460,13 +1466,13 @@ fn light_bvh_count(nodes_1: u32) -> u32 {
     return arrayLength((&light_bvh));
 }
 
-fn bvh_importance(nodes_2: u32, i_4: u32, x_15: vec3<f32>, n_18: vec3<f32>) -> f32 {
+fn bvh_importance(nodes_2: u32, i_4: u32, x_16: vec3<f32>, n_18: vec3<f32>) -> f32 {
     let _e4 = light_bvh_node(nodes_2, i_4);
-    let _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_15, n_18);
+    let _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_16, n_18);
     return _e11;
 }
 
-fn bvh_first(nodes_3: u32, i_5: u32, x_16: vec3<f32>, n_19: vec3<f32>) -> f32 {
+fn bvh_first(nodes_3: u32, i_5: u32, x_17: vec3<f32>, n_19: vec3<f32>) -> f32 {
     var local_19: bool;
 
     let _e4 = light_bvh_node(nodes_3, i_5);
@@ -1481,8 +1487,8 @@ fn bvh_first(nodes_3: u32, i_5: u32, x_16: vec3<f32>, n_19: vec3<f32>) -> f32 {
     if _e15 {
         return -1f;
     }
-    let _e19 = bvh_importance(nodes_3, (i_5 + 1u), x_16, n_19);
-    let _e20 = bvh_importance(nodes_3, j, x_16, n_19);
+    let _e19 = bvh_importance(nodes_3, (i_5 + 1u), x_17, n_19);
+    let _e20 = bvh_importance(nodes_3, j, x_17, n_19);
     let _e21 = bvh_first_prob(_e19, _e20);
     return _e21;
 }
@@ -1491,7 +1497,7 @@ fn bvh_pick_none() -> BvhPick {
     return BvhPick(0u, 0f);
 }
 
-fn light_bvh_sample(nodes_4: u32, x_17: vec3<f32>, n_20: vec3<f32>, u_in: f32) -> BvhPick {
+fn light_bvh_sample(nodes_4: u32, x_18: vec3<f32>, n_20: vec3<f32>, u_in: f32) -> BvhPick {
     var pick: BvhPick;
     var u_6: f32;
     var i_6: u32 = 0u;
@@ -1514,7 +1520,7 @@ fn light_bvh_sample(nodes_4: u32, x_17: vec3<f32>, n_20: vec3<f32>, u_in: f32) -
             if (_e15.second == LIGHT_BVH_LEAF) {
                 let _e19 = i_6;
                 if !((_e19 > 0u)) {
-                    let _e26 = bvh_importance(nodes_4, 0u, x_17, n_20);
+                    let _e26 = bvh_importance(nodes_4, 0u, x_18, n_20);
                     local_20 = (_e26 > 0f);
                 } else {
                     local_20 = true;
@@ -1529,7 +1535,7 @@ fn light_bvh_sample(nodes_4: u32, x_17: vec3<f32>, n_20: vec3<f32>, u_in: f32) -
                 return _e35;
             }
             let _e36 = i_6;
-            let _e37 = bvh_first(nodes_4, _e36, x_17, n_20);
+            let _e37 = bvh_first(nodes_4, _e36, x_18, n_20);
             if (_e37 < 0f) {
                 let _e40 = pick;
                 return _e40;
@@ -1549,7 +1555,7 @@ fn light_bvh_sample(nodes_4: u32, x_17: vec3<f32>, n_20: vec3<f32>, u_in: f32) -
     return _e55;
 }
 
-fn light_bvh_pmf(nodes_5: u32, leaf: u32, x_18: vec3<f32>, n_21: vec3<f32>) -> f32 {
+fn light_bvh_pmf(nodes_5: u32, leaf: u32, x_19: vec3<f32>, n_21: vec3<f32>) -> f32 {
     var i_7: u32 = 0u;
     var pmf_1: f32 = 1f;
     var local_21: bool;
@@ -1574,7 +1580,7 @@ fn light_bvh_pmf(nodes_5: u32, leaf: u32, x_18: vec3<f32>, n_21: vec3<f32>) -> f
                 if (_e19 == leaf) {
                     let _e23 = i_7;
                     if !((_e23 > 0u)) {
-                        let _e30 = bvh_importance(nodes_5, 0u, x_18, n_21);
+                        let _e30 = bvh_importance(nodes_5, 0u, x_19, n_21);
                         local_22 = (_e30 > 0f);
                     } else {
                         local_22 = true;
@@ -1592,7 +1598,7 @@ fn light_bvh_pmf(nodes_5: u32, leaf: u32, x_18: vec3<f32>, n_21: vec3<f32>) -> f
                 return 0f;
             }
             let _e39 = i_7;
-            let _e40 = bvh_first(nodes_5, _e39, x_18, n_21);
+            let _e40 = bvh_first(nodes_5, _e39, x_19, n_21);
             if (_e40 < 0f) {
                 return 0f;
             }
@@ -1606,18 +1612,18 @@ fn light_bvh_pmf(nodes_5: u32, leaf: u32, x_18: vec3<f32>, n_21: vec3<f32>) -> f
     return 0f;
 }
 
-fn select_pdf(li_1: u32, x_19: vec3<f32>, n_22: vec3<f32>, nee: u32, in_range_2: bool) -> f32 {
+fn select_pdf(li_1: u32, x_20: vec3<f32>, n_22: vec3<f32>, nee: u32, in_range_2: bool) -> f32 {
     let _e6 = reservoir_select_pdf(nee, in_range_2, K);
     return _e6;
 }
 
-fn light_pdf(li_2: u32, x_20: vec3<f32>, n_23: vec3<f32>, y_3: vec3<f32>, nee_1: u32, in_range_3: bool) -> f32 {
+fn light_pdf(li_2: u32, x_21: vec3<f32>, n_23: vec3<f32>, y_3: vec3<f32>, nee_1: u32, in_range_3: bool) -> f32 {
     let l_4 = lights[li_2];
-    let v_13 = (x_20 - y_3);
-    let d2_15 = dot(v_13, v_13);
+    let v_14 = (x_21 - y_3);
+    let d2_15 = dot(v_14, v_14);
     let _e11 = light_normal(l_4);
-    let cos_y_1 = select(0f, dot(_e11, (v_13 / vec3(sqrt(d2_15)))), (d2_15 > 0f));
-    let _e20 = select_pdf(li_2, x_20, n_23, nee_1, in_range_3);
+    let cos_y_1 = select(0f, dot(_e11, (v_14 / vec3(sqrt(d2_15)))), (d2_15 > 0f));
+    let _e20 = select_pdf(li_2, x_21, n_23, nee_1, in_range_3);
     let _e23 = rt2_7[li_2];
     let _e24 = light_area(l_4);
     let _e25 = light_strategy_pdf(_e20, _e23, d2_15, _e24, cos_y_1);
@@ -1704,7 +1710,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let tri = geo_tris[_e94.tri];
     let _e111 = st.origin;
     let _e113 = st.dir;
-    let x_21 = (_e111 + (_e113 * _e94.t));
+    let x_22 = (_e111 + (_e113 * _e94.t));
     let _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     let _e122 = st.dir;
     let _e123 = face_against(_e120, _e122);
@@ -1712,7 +1718,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e129 = geo_normals[b_10];
     let _e135 = geo_normals[(b_10 + 1u)];
     let _e141 = geo_normals[(b_10 + 2u)];
-    let _e146 = barycentric(x_21, tri.v0_, tri.v1_, tri.v2_);
+    let _e146 = barycentric(x_22, tri.v0_, tri.v1_, tri.v2_);
     let _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if (tri.light != NO_LIGHT) {
         let _e154 = st.dir;
@@ -1733,7 +1739,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e180 = st.prev;
             let _e182 = st.prev_normal;
             let _e185 = candidates[i_8];
-            let _e186 = light_pdf(tri.light, _e180, _e182, x_21, _e185, _e175);
+            let _e186 = light_pdf(tri.light, _e180, _e182, x_22, _e185, _e175);
             let _e187 = mis_weight(_e177, _e186);
             w = _e187;
         }
@@ -1749,7 +1755,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     }
     let _e208 = albedo_1[tri.material];
     let rho_1 = _e208.xyz;
-    v.position = x_21;
+    v.position = x_22;
     v.normal = _e147;
     v.gnormal = _e123;
     let _e215 = st.beta;
@@ -1766,12 +1772,12 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let cos_o_2 = dot(_e228, _e147);
     let _e231 = st.beta;
     st.beta = (_e231 * rho_1);
-    st.prev = x_21;
+    st.prev = x_22;
     st.prev_normal = _e147;
     let _e236 = cosine_pdf(cos_o_2);
     st.pdf_bsdf = _e236;
     let _e240 = params.eps;
-    st.origin = (x_21 + (_e123 * _e240));
+    st.origin = (x_22 + (_e123 * _e240));
     st.dir = _e228;
     let _e244 = continues_path(_e228, _e147, _e123);
     if !(!(_e244)) {

@@ -1240,6 +1240,12 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_2: vec3<f32>, exten
     return (dot(rel, dir_2) / (select(1f, dot(rel, axis_2), perspective) * extent_2));
 }
 
+fn display_encode(x_14: f32) -> f32 {
+    let v_12 = max(x_14, 0f);
+    let t_7 = ((2f * v_12) / (1f + (2f * v_12)));
+    return select(((1.055f * pow(t_7, 0.41666666f)) - 0.055f), (12.92f * t_7), (t_7 <= 0.0031308f));
+}
+
 fn light_map_depth(rel_1: vec3<f32>, axis_3: vec3<f32>, perspective_1: bool) -> f32 {
     return select(dot(rel_1, axis_3), sqrt(dot(rel_1, rel_1)), perspective_1);
 }
@@ -1294,15 +1300,15 @@ fn depth_of(i_2: u32) -> f32 {
     return select(DEPTH_NONE, _e5, (_e9 > 0f));
 }
 
-fn window_sum(x_14: u32, y_3: u32, size_10: u32, n_17: vec3<f32>, z_3: f32, inv: f32) -> Window {
+fn window_sum(x_15: u32, y_3: u32, size_10: u32, n_17: vec3<f32>, z_3: f32, inv: f32) -> Window {
     var win: Window;
     var yy: u32;
     var xx: u32;
 
     let w_11 = params.width;
     let h_1 = params.height;
-    let _e12 = window_start(x_14, size_10);
-    let _e13 = window_end(x_14, size_10, w_11);
+    let _e12 = window_start(x_15, size_10);
+    let _e13 = window_end(x_15, size_10, w_11);
     let _e14 = window_start(y_3, size_10);
     let _e15 = window_end(y_3, size_10, h_1);
     win.sum = vec3(0f);

@@ -1251,6 +1251,12 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_2: vec3<f32>, exten
     return (dot(rel, dir_2) / (select(1f, dot(rel, axis_2), perspective) * extent_2));
 }
 
+fn display_encode(x_14: f32) -> f32 {
+    let v_12 = max(x_14, 0f);
+    let t_7 = ((2f * v_12) / (1f + (2f * v_12)));
+    return select(((1.055f * pow(t_7, 0.41666666f)) - 0.055f), (12.92f * t_7), (t_7 <= 0.0031308f));
+}
+
 fn light_map_depth(rel_1: vec3<f32>, axis_3: vec3<f32>, perspective_1: bool) -> f32 {
     return select(dot(rel_1, axis_3), sqrt(dot(rel_1, rel_1)), perspective_1);
 }
@@ -1481,14 +1487,14 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                         let _e153 = light_list[_e151];
                         let l_5 = lights[_e153];
                         let _e156 = pos;
-                        let v_12 = (_e156.xyz - l_5.p0_);
+                        let v_13 = (_e156.xyz - l_5.p0_);
                         let _e163 = params.near_r2_;
-                        let _e164 = vpl_near_weight(dot(v_12, v_12), _e163);
+                        let _e164 = vpl_near_weight(dot(v_13, v_13), _e163);
                         if (_e164 > 0f) {
                             let _e167 = e;
                             let _e170 = nrm;
                             let _e173 = params.min_d2_;
-                            let _e174 = vpl_transfer(l_5.p1_, _e170, v_12, _e173);
+                            let _e174 = vpl_transfer(l_5.p1_, _e170, v_13, _e173);
                             e = (_e167 + (l_5.intensity * ((_e174 * _e164) * unscale)));
                             let _e179 = kept;
                             kept = (_e179 + 1u);

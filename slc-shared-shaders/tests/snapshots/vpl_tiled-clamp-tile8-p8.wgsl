@@ -1251,6 +1251,12 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_2: vec3<f32>, exten
     return (dot(rel, dir_2) / (select(1f, dot(rel, axis_2), perspective) * extent_2));
 }
 
+fn display_encode(x_14: f32) -> f32 {
+    let v_12 = max(x_14, 0f);
+    let t_7 = ((2f * v_12) / (1f + (2f * v_12)));
+    return select(((1.055f * pow(t_7, 0.41666666f)) - 0.055f), (12.92f * t_7), (t_7 <= 0.0031308f));
+}
+
 fn light_map_depth(rel_1: vec3<f32>, axis_3: vec3<f32>, perspective_1: bool) -> f32 {
     return select(dot(rel_1, axis_3), sqrt(dot(rel_1, rel_1)), perspective_1);
 }
@@ -1463,11 +1469,11 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                         let j_1 = (base_4 + _e134);
                         let l_4 = lights[j_1];
                         let _e139 = pos;
-                        let v_12 = (_e139.xyz - l_4.p0_);
+                        let v_13 = (_e139.xyz - l_4.p0_);
                         let _e144 = nrm;
                         let _e147 = params.min_d2_;
-                        let _e148 = vpl_transfer(l_4.p1_, _e144, v_12, _e147);
-                        let d2_15 = dot(v_12, v_12);
+                        let _e148 = vpl_transfer(l_4.p1_, _e144, v_13, _e147);
+                        let d2_15 = dot(v_13, v_13);
                         let _e152 = params.near_r2_;
                         let _e153 = vpl_far_weight(d2_15, _e152);
                         let _e156 = r2_6[j_1];

@@ -1125,6 +1125,12 @@ float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_2, float extent_2, bool
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14) {
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(vec3 rel_1, vec3 axis_3, bool perspective_1) {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
 }
@@ -1232,7 +1238,7 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-uint bsh_next_leaf(uint nodes_3, uint start_1, vec3 x_14) {
+uint bsh_next_leaf(uint nodes_3, uint start_1, vec3 x_15) {
     uint i_3 = 0u;
     i_3 = start_1;
     while(true) {
@@ -1244,7 +1250,7 @@ uint bsh_next_leaf(uint nodes_3, uint start_1, vec3 x_14) {
         {
             uint _e7 = i_3;
             BshNode _e8 = bsh_node(nodes_3, _e7);
-            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_15);
             if (_e11) {
                 if ((_e8.child == BSH_NONE)) {
                     uint _e15 = i_3;
@@ -1267,21 +1273,21 @@ vec4 bsh_children_sphere(uint nodes_4, uint i_4) {
     return _e11;
 }
 
-Picks bsh_collect(vec3 x_15, uint seed_3) {
+Picks bsh_collect(vec3 x_16, uint seed_3) {
     Picks picks = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_2 = 0u;
     uint i_5 = 0u;
     picks.n = 0u;
     h_2 = seed_3;
     uint _e8 = bsh_first(BSH);
-    uint _e9 = bsh_next_leaf(BSH, _e8, x_15);
+    uint _e9 = bsh_next_leaf(BSH, _e8, x_16);
     i_5 = _e9;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
             uint _e42 = i_5;
             uint _e45 = _group_0_binding_6_cs[_e42].next;
-            uint _e46 = bsh_next_leaf(BSH, _e45, x_15);
+            uint _e46 = bsh_next_leaf(BSH, _e45, x_16);
             i_5 = _e46;
         }
         loop_init = false;
@@ -1318,7 +1324,7 @@ Picks bsh_collect(vec3 x_15, uint seed_3) {
     return _e47;
 }
 
-Connection connect(uint li, vec3 x_16, vec3 n_17, vec3 ng_2, float w_res, float u1_3, float u2_3, float eps) {
+Connection connect(uint li, vec3 x_17, vec3 n_17, vec3 ng_2, float w_res, float u1_3, float u2_3, float eps) {
     Connection c_9 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_16 = false;
     c_9.e = vec3(0.0);
@@ -1327,12 +1333,12 @@ Connection connect(uint li, vec3 x_16, vec3 n_17, vec3 ng_2, float w_res, float 
     c_9.y = _e16;
     vec3 _e19 = c_9.y;
     float _e22 = _group_0_binding_5_cs[li];
-    float _e23 = connection_cosine(x_16, _e19, n_17, ng_2, _e22);
+    float _e23 = connection_cosine(x_17, _e19, n_17, ng_2, _e22);
     c_9.cos_x = _e23;
     float _e25 = c_9.cos_x;
     if (!((_e25 <= 0.0))) {
         vec3 _e34 = c_9.y;
-        bool _e35 = occluded((x_16 + (ng_2 * eps)), _e34);
+        bool _e35 = occluded((x_17 + (ng_2 * eps)), _e34);
         local_16 = _e35;
     } else {
         local_16 = true;
@@ -1343,9 +1349,9 @@ Connection connect(uint li, vec3 x_16, vec3 n_17, vec3 ng_2, float w_res, float 
         return _e38;
     }
     vec3 _e40 = c_9.y;
-    vec3 v_12 = (x_16 - _e40);
-    float d2_15 = dot(v_12, v_12);
-    vec3 _e47 = light_intensity(l_4, (v_12 / vec3(sqrt(d2_15))));
+    vec3 v_13 = (x_17 - _e40);
+    float d2_15 = dot(v_13, v_13);
+    vec3 _e47 = light_intensity(l_4, (v_13 / vec3(sqrt(d2_15))));
     float _e49 = c_9.cos_x;
     float _e52 = _group_0_binding_4_cs[li];
     float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
@@ -1369,13 +1375,13 @@ void main() {
         _group_0_binding_9_cs[i_6] = vec4(0.0);
         return;
     }
-    vec3 x_17 = p_4.xyz;
+    vec3 x_18 = p_4.xyz;
     vec4 _e19 = _group_0_binding_2_cs[i_6];
     vec3 n_20 = _e19.xyz;
     uint _e23 = _group_0_binding_0_cs.seed;
     uint _e26 = _group_0_binding_0_cs.frame;
     uint _e27 = point_stream(_e23, i_6, _e26);
-    Picks _e28 = bsh_collect(x_17, _e27);
+    Picks _e28 = bsh_collect(x_18, _e27);
     float _e31 = reservoir_weight(_e28.n, K);
     uint _e32 = pick_stream(_e27);
     h = _e32;
@@ -1405,7 +1411,7 @@ void main() {
             uint _e54 = h;
             float _e55 = xi_from_bits(_e54);
             float _e58 = _group_0_binding_0_cs.eps;
-            Connection _e59 = connect(_e28.light[_e52], x_17, n_20, n_20, _e31, _e47, _e55, _e58);
+            Connection _e59 = connect(_e28.light[_e52], x_18, n_20, n_20, _e31, _e47, _e55, _e58);
             e = (_e50 + _e59.e);
         }
     }

@@ -1110,6 +1110,12 @@ float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_2, float extent_2, bool
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14) {
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(vec3 rel_1, vec3 axis_3, bool perspective_1) {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
 }
@@ -1186,9 +1192,9 @@ void main() {
     }
     bool valid = local_1;
     vec3 _e48 = _group_0_binding_0_cs.eye;
-    vec3 v_12 = (p_4.xyz - _e48);
+    vec3 v_13 = (p_4.xyz - _e48);
     _group_0_binding_3_cs[i_2] = vec4(p_4.xyz, (valid ? 1.0 : 0.0));
-    _group_0_binding_4_cs[i_2] = (valid ? vec4((n_19 / vec3(sqrt(len2_))), sqrt(dot(v_12, v_12))) : vec4(0.0, 0.0, 0.0, 1e30));
+    _group_0_binding_4_cs[i_2] = (valid ? vec4((n_19 / vec3(sqrt(len2_))), sqrt(dot(v_13, v_13))) : vec4(0.0, 0.0, 0.0, 1e30));
     _group_0_binding_5_cs[i_2] = vec4(0.0);
     return;
 }

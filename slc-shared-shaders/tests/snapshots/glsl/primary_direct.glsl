@@ -1110,6 +1110,12 @@ float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_2, float extent_2, bool
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14) {
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(vec3 rel_1, vec3 axis_3, bool perspective_1) {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
 }
@@ -1219,18 +1225,18 @@ void main() {
         _group_0_binding_5_cs[i_2] = vec4(0.0);
         return;
     }
-    vec3 x_14 = p_4.xyz;
+    vec3 x_15 = p_4.xyz;
     vec3 n_19 = normalize(nn);
     uint _e55 = _group_0_binding_0_cs.size;
     float size_10 = float(_e55);
     vec3 _e66 = _group_0_binding_0_cs.origin;
-    vec3 rel_2 = (x_14 - _e66);
+    vec3 rel_2 = (x_15 - _e66);
     vec3 _e70 = _group_0_binding_0_cs.axis;
     uint _e73 = _group_0_binding_0_cs.mode;
     float _e76 = light_map_depth(rel_2, _e70, (_e73 == MAP_PERSPECTIVE));
     uint _e83 = _group_0_binding_0_cs.mode;
     if ((_e83 == MAP_PERSPECTIVE)) {
-        vec3 v_12 = -(rel_2);
+        vec3 v_13 = -(rel_2);
         vec3 _e89 = _group_0_binding_0_cs.axis;
         float z_4 = dot(rel_2, _e89);
         if (!((z_4 <= 0.0))) {
@@ -1256,10 +1262,10 @@ void main() {
         float _e128 = _group_0_binding_0_cs.extent;
         float _e129 = perspective_texel_width(_e128, _e76, z_4, size_10);
         width = _e129;
-        cos_light = (dot(n_19, v_12) / _e76);
+        cos_light = (dot(n_19, v_13) / _e76);
         GpuLight _e134 = _group_0_binding_0_cs.light;
         vec3 _e137 = light_intensity(_e134, (rel_2 / vec3(_e76)));
-        vec3 _e138 = point_irradiance(_e137, n_19, v_12);
+        vec3 _e138 = point_irradiance(_e137, n_19, v_13);
         e = _e138;
     } else {
         vec3 _e141 = _group_0_binding_0_cs.right;

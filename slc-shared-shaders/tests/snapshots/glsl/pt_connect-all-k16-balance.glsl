@@ -1233,6 +1233,12 @@ float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_2, float extent_2, bool
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14) {
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(vec3 rel_1, vec3 axis_3, bool perspective_1) {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
 }
@@ -1366,9 +1372,9 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     {
                         uint _e42 = i_2;
-                        GpuTriangle t_7 = _group_0_binding_7_cs[_e42];
+                        GpuTriangle t_8 = _group_0_binding_7_cs[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i_2;
@@ -1434,7 +1440,7 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-uint bsh_next_leaf(uint nodes_3, uint start_1, vec3 x_14) {
+uint bsh_next_leaf(uint nodes_3, uint start_1, vec3 x_15) {
     uint i_4 = 0u;
     i_4 = start_1;
     while(true) {
@@ -1446,7 +1452,7 @@ uint bsh_next_leaf(uint nodes_3, uint start_1, vec3 x_14) {
         {
             uint _e7 = i_4;
             BshNode _e8 = bsh_node(nodes_3, _e7);
-            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_15);
             if (_e11) {
                 if ((_e8.child == BSH_NONE)) {
                     uint _e15 = i_4;
@@ -1469,21 +1475,21 @@ vec4 bsh_children_sphere(uint nodes_4, uint i_5) {
     return _e11;
 }
 
-Picks bsh_collect(vec3 x_15, uint seed_3) {
+Picks bsh_collect(vec3 x_16, uint seed_3) {
     Picks picks = Picks(uint[16](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_2 = 0u;
     uint i_6 = 0u;
     picks.n = 0u;
     h_2 = seed_3;
     uint _e8 = bsh_first(BSH);
-    uint _e9 = bsh_next_leaf(BSH, _e8, x_15);
+    uint _e9 = bsh_next_leaf(BSH, _e8, x_16);
     i_6 = _e9;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
             uint _e42 = i_6;
             uint _e45 = _group_0_binding_5_cs[_e42].next;
-            uint _e46 = bsh_next_leaf(BSH, _e45, x_15);
+            uint _e46 = bsh_next_leaf(BSH, _e45, x_16);
             i_6 = _e46;
         }
         loop_init_1 = false;
@@ -1520,7 +1526,7 @@ Picks bsh_collect(vec3 x_15, uint seed_3) {
     return _e47;
 }
 
-Connection connect(uint li, vec3 x_16, vec3 n_17, vec3 ng_2, float w_res, float u1_3, float u2_3, float eps) {
+Connection connect(uint li, vec3 x_17, vec3 n_17, vec3 ng_2, float w_res, float u1_3, float u2_3, float eps) {
     Connection c_9 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_16 = false;
     c_9.e = vec3(0.0);
@@ -1529,12 +1535,12 @@ Connection connect(uint li, vec3 x_16, vec3 n_17, vec3 ng_2, float w_res, float 
     c_9.y = _e16;
     vec3 _e19 = c_9.y;
     float _e22 = _group_0_binding_4_cs[li];
-    float _e23 = connection_cosine(x_16, _e19, n_17, ng_2, _e22);
+    float _e23 = connection_cosine(x_17, _e19, n_17, ng_2, _e22);
     c_9.cos_x = _e23;
     float _e25 = c_9.cos_x;
     if (!((_e25 <= 0.0))) {
         vec3 _e34 = c_9.y;
-        bool _e35 = occluded((x_16 + (ng_2 * eps)), _e34);
+        bool _e35 = occluded((x_17 + (ng_2 * eps)), _e34);
         local_16 = _e35;
     } else {
         local_16 = true;
@@ -1545,9 +1551,9 @@ Connection connect(uint li, vec3 x_16, vec3 n_17, vec3 ng_2, float w_res, float 
         return _e38;
     }
     vec3 _e40 = c_9.y;
-    vec3 v_12 = (x_16 - _e40);
-    float d2_15 = dot(v_12, v_12);
-    vec3 _e47 = light_intensity(l_4, (v_12 / vec3(sqrt(d2_15))));
+    vec3 v_13 = (x_17 - _e40);
+    float d2_15 = dot(v_13, v_13);
+    vec3 _e47 = light_intensity(l_4, (v_13 / vec3(sqrt(d2_15))));
     float _e49 = c_9.cos_x;
     float _e52 = _group_0_binding_3_cs[li];
     float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
@@ -1565,29 +1571,29 @@ BvhPick bvh_pick_none() {
     return BvhPick(0u, 0.0);
 }
 
-float select_pdf(uint li_2, vec3 x_22, vec3 n_23, uint nee, bool in_range_2) {
+float select_pdf(uint li_2, vec3 x_23, vec3 n_23, uint nee, bool in_range_2) {
     float _e6 = reservoir_select_pdf(nee, in_range_2, K);
     return _e6;
 }
 
-float light_pdf(uint li_3, vec3 x_23, vec3 n_24, vec3 y_3, uint nee_1, bool in_range_3) {
+float light_pdf(uint li_3, vec3 x_24, vec3 n_24, vec3 y_3, uint nee_1, bool in_range_3) {
     GpuLight l_5 = _group_0_binding_2_cs[li_3];
-    vec3 v_13 = (x_23 - y_3);
-    float d2_16 = dot(v_13, v_13);
+    vec3 v_14 = (x_24 - y_3);
+    float d2_16 = dot(v_14, v_14);
     vec3 _e11 = light_normal(l_5);
-    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e11, (v_13 / vec3(sqrt(d2_16)))) : 0.0);
-    float _e20 = select_pdf(li_3, x_23, n_24, nee_1, in_range_3);
+    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e11, (v_14 / vec3(sqrt(d2_16)))) : 0.0);
+    float _e20 = select_pdf(li_3, x_24, n_24, nee_1, in_range_3);
     float _e23 = _group_0_binding_3_cs[li_3];
     float _e24 = light_area(l_5);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_16, _e24, cos_y_1);
     return _e25;
 }
 
-vec3 shade_pick(uint li_4, vec3 x_24, vec3 n_25, vec3 ng_3, float w_10, uint nee_2, float u1_4, float u2_4) {
+vec3 shade_pick(uint li_4, vec3 x_25, vec3 n_25, vec3 ng_3, float w_10, uint nee_2, float u1_4, float u2_4) {
     float mis = 1.0;
     bool local_21 = false;
     float _e10 = _group_0_binding_0_cs.eps;
-    Connection _e11 = connect(li_4, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10);
+    Connection _e11 = connect(li_4, x_25, n_25, ng_3, w_10, u1_4, u2_4, _e10);
     GpuLight _e16 = _group_0_binding_2_cs[li_4];
     float _e17 = light_area(_e16);
     if ((_e17 > 0.0)) {
@@ -1597,7 +1603,7 @@ vec3 shade_pick(uint li_4, vec3 x_24, vec3 n_25, vec3 ng_3, float w_10, uint nee
     }
     bool _e26 = local_21;
     if (_e26) {
-        float _e29 = light_pdf(li_4, x_24, n_25, _e11.y, nee_2, true);
+        float _e29 = light_pdf(li_4, x_25, n_25, _e11.y, nee_2, true);
         float _e31 = cosine_pdf(_e11.cos_x);
         float _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -1621,7 +1627,7 @@ void main() {
         _group_0_binding_9_cs[i_12] = 0u;
         return;
     }
-    vec3 x_25 = vtx.position;
+    vec3 x_26 = vtx.position;
     vec3 n_29 = vtx.normal;
     vec3 ng_4 = vtx.gnormal;
     uint _e20 = _group_0_binding_0_cs.seed;
@@ -1629,7 +1635,7 @@ void main() {
     uint _e24 = point_stream(_e20, i_12, _e23);
     uint _e25 = pick_stream(_e24);
     h = _e25;
-    Picks _e30 = bsh_collect(x_25, _e24);
+    Picks _e30 = bsh_collect(x_26, _e24);
     _group_0_binding_9_cs[i_12] = _e30.n;
     float _e36 = reservoir_weight(_e30.n, K);
     bool loop_init_2 = true;
@@ -1657,7 +1663,7 @@ void main() {
             uint _e52 = s;
             uint _e55 = h;
             float _e56 = xi_from_bits(_e55);
-            vec3 _e57 = shade_pick(_e30.light[_e52], x_25, n_29, ng_4, _e36, _e30.n, _e47, _e56);
+            vec3 _e57 = shade_pick(_e30.light[_e52], x_26, n_29, ng_4, _e36, _e30.n, _e47, _e56);
             sum = (_e50 + _e57);
         }
     }

@@ -1140,6 +1140,12 @@ float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_2, float extent_2, bool
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14) {
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(vec3 rel_1, vec3 axis_3, bool perspective_1) {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
 }
@@ -1258,9 +1264,9 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     {
                         uint _e42 = i_2;
-                        GpuTriangle t_7 = _group_0_binding_7_cs[_e42];
+                        GpuTriangle t_8 = _group_0_binding_7_cs[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i_2;
@@ -1309,7 +1315,7 @@ bool occluded(vec3 a_9, vec3 b_7) {
     return (_e12.tri != NO_LIGHT);
 }
 
-Connection connect(uint li, vec3 x_16, vec3 n_17, vec3 ng_2, float w_res, float u1_3, float u2_3, float eps) {
+Connection connect(uint li, vec3 x_17, vec3 n_17, vec3 ng_2, float w_res, float u1_3, float u2_3, float eps) {
     Connection c_9 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_16 = false;
     c_9.e = vec3(0.0);
@@ -1318,12 +1324,12 @@ Connection connect(uint li, vec3 x_16, vec3 n_17, vec3 ng_2, float w_res, float 
     c_9.y = _e16;
     vec3 _e19 = c_9.y;
     float _e22 = _group_0_binding_4_cs[li];
-    float _e23 = connection_cosine(x_16, _e19, n_17, ng_2, _e22);
+    float _e23 = connection_cosine(x_17, _e19, n_17, ng_2, _e22);
     c_9.cos_x = _e23;
     float _e25 = c_9.cos_x;
     if (!((_e25 <= 0.0))) {
         vec3 _e34 = c_9.y;
-        bool _e35 = occluded((x_16 + (ng_2 * eps)), _e34);
+        bool _e35 = occluded((x_17 + (ng_2 * eps)), _e34);
         local_16 = _e35;
     } else {
         local_16 = true;
@@ -1334,9 +1340,9 @@ Connection connect(uint li, vec3 x_16, vec3 n_17, vec3 ng_2, float w_res, float 
         return _e38;
     }
     vec3 _e40 = c_9.y;
-    vec3 v_12 = (x_16 - _e40);
-    float d2_15 = dot(v_12, v_12);
-    vec3 _e47 = light_intensity(l_4, (v_12 / vec3(sqrt(d2_15))));
+    vec3 v_13 = (x_17 - _e40);
+    float d2_15 = dot(v_13, v_13);
+    vec3 _e47 = light_intensity(l_4, (v_13 / vec3(sqrt(d2_15))));
     float _e49 = c_9.cos_x;
     float _e52 = _group_0_binding_3_cs[li];
     float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
@@ -1350,10 +1356,10 @@ float mis_weight(float pdf_a_2, float pdf_b_2) {
     return _e2;
 }
 
-float light_weight(uint li_1, vec3 x_17, vec3 n_18) {
+float light_weight(uint li_1, vec3 x_18, vec3 n_18) {
     GpuLightCone c_13 = _group_1_binding_2_cs[li_1];
     float _e14 = _group_0_binding_3_cs[li_1];
-    float _e15 = cone_weight(c_13.center, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_17, n_18);
+    float _e15 = cone_weight(c_13.center, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_18, n_18);
     return _e15;
 }
 
@@ -1366,13 +1372,13 @@ uint light_bvh_count(uint nodes_6) {
     return uint(_group_1_binding_3_cs.length());
 }
 
-float bvh_importance(uint nodes_7, uint i_8, vec3 x_18, vec3 n_19) {
+float bvh_importance(uint nodes_7, uint i_8, vec3 x_19, vec3 n_19) {
     GpuLightBvhNode _e4 = light_bvh_node(nodes_7, i_8);
-    float _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_18, n_19);
+    float _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_19, n_19);
     return _e11;
 }
 
-float bvh_first(uint nodes_8, uint i_9, vec3 x_19, vec3 n_20) {
+float bvh_first(uint nodes_8, uint i_9, vec3 x_20, vec3 n_20) {
     bool local_17 = false;
     GpuLightBvhNode _e4 = light_bvh_node(nodes_8, i_9);
     uint j = _e4.second;
@@ -1386,8 +1392,8 @@ float bvh_first(uint nodes_8, uint i_9, vec3 x_19, vec3 n_20) {
     if (_e15) {
         return -1.0;
     }
-    float _e19 = bvh_importance(nodes_8, (i_9 + 1u), x_19, n_20);
-    float _e20 = bvh_importance(nodes_8, j, x_19, n_20);
+    float _e19 = bvh_importance(nodes_8, (i_9 + 1u), x_20, n_20);
+    float _e20 = bvh_importance(nodes_8, j, x_20, n_20);
     float _e21 = bvh_first_prob(_e19, _e20);
     return _e21;
 }
@@ -1396,7 +1402,7 @@ BvhPick bvh_pick_none() {
     return BvhPick(0u, 0.0);
 }
 
-BvhPick light_bvh_sample(uint nodes_9, vec3 x_20, vec3 n_21, float u_in) {
+BvhPick light_bvh_sample(uint nodes_9, vec3 x_21, vec3 n_21, float u_in) {
     BvhPick pick = BvhPick(0u, 0.0);
     float u_6 = 0.0;
     uint i_10 = 0u;
@@ -1418,7 +1424,7 @@ BvhPick light_bvh_sample(uint nodes_9, vec3 x_20, vec3 n_21, float u_in) {
             if ((_e15.second == LIGHT_BVH_LEAF)) {
                 uint _e19 = i_10;
                 if (!((_e19 > 0u))) {
-                    float _e26 = bvh_importance(nodes_9, 0u, x_20, n_21);
+                    float _e26 = bvh_importance(nodes_9, 0u, x_21, n_21);
                     local_18 = (_e26 > 0.0);
                 } else {
                     local_18 = true;
@@ -1433,7 +1439,7 @@ BvhPick light_bvh_sample(uint nodes_9, vec3 x_20, vec3 n_21, float u_in) {
                 return _e35;
             }
             uint _e36 = i_10;
-            float _e37 = bvh_first(nodes_9, _e36, x_20, n_21);
+            float _e37 = bvh_first(nodes_9, _e36, x_21, n_21);
             if ((_e37 < 0.0)) {
                 BvhPick _e40 = pick;
                 return _e40;
@@ -1453,7 +1459,7 @@ BvhPick light_bvh_sample(uint nodes_9, vec3 x_20, vec3 n_21, float u_in) {
     return _e55;
 }
 
-float light_bvh_pmf(uint nodes_10, uint leaf, vec3 x_21, vec3 n_22) {
+float light_bvh_pmf(uint nodes_10, uint leaf, vec3 x_22, vec3 n_22) {
     uint i_11 = 0u;
     float pmf_1 = 1.0;
     bool local_19 = false;
@@ -1477,7 +1483,7 @@ float light_bvh_pmf(uint nodes_10, uint leaf, vec3 x_21, vec3 n_22) {
                 if ((_e19 == leaf)) {
                     uint _e23 = i_11;
                     if (!((_e23 > 0u))) {
-                        float _e30 = bvh_importance(nodes_10, 0u, x_21, n_22);
+                        float _e30 = bvh_importance(nodes_10, 0u, x_22, n_22);
                         local_20 = (_e30 > 0.0);
                     } else {
                         local_20 = true;
@@ -1495,7 +1501,7 @@ float light_bvh_pmf(uint nodes_10, uint leaf, vec3 x_21, vec3 n_22) {
                 return 0.0;
             }
             uint _e39 = i_11;
-            float _e40 = bvh_first(nodes_10, _e39, x_21, n_22);
+            float _e40 = bvh_first(nodes_10, _e39, x_22, n_22);
             if ((_e40 < 0.0)) {
                 return 0.0;
             }
@@ -1509,30 +1515,30 @@ float light_bvh_pmf(uint nodes_10, uint leaf, vec3 x_21, vec3 n_22) {
     return 0.0;
 }
 
-float select_pdf(uint li_2, vec3 x_22, vec3 n_23, uint nee, bool in_range_2) {
+float select_pdf(uint li_2, vec3 x_23, vec3 n_23, uint nee, bool in_range_2) {
     uint _e9 = _group_1_binding_2_cs[li_2].bvh_leaf;
-    float _e10 = light_bvh_pmf(BVH, _e9, x_22, n_23);
+    float _e10 = light_bvh_pmf(BVH, _e9, x_23, n_23);
     return _e10;
 }
 
-float light_pdf(uint li_3, vec3 x_23, vec3 n_24, vec3 y_3, uint nee_1, bool in_range_3) {
+float light_pdf(uint li_3, vec3 x_24, vec3 n_24, vec3 y_3, uint nee_1, bool in_range_3) {
     GpuLight l_5 = _group_0_binding_2_cs[li_3];
-    vec3 v_13 = (x_23 - y_3);
-    float d2_16 = dot(v_13, v_13);
+    vec3 v_14 = (x_24 - y_3);
+    float d2_16 = dot(v_14, v_14);
     vec3 _e11 = light_normal(l_5);
-    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e11, (v_13 / vec3(sqrt(d2_16)))) : 0.0);
-    float _e20 = select_pdf(li_3, x_23, n_24, nee_1, in_range_3);
+    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e11, (v_14 / vec3(sqrt(d2_16)))) : 0.0);
+    float _e20 = select_pdf(li_3, x_24, n_24, nee_1, in_range_3);
     float _e23 = _group_0_binding_3_cs[li_3];
     float _e24 = light_area(l_5);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_16, _e24, cos_y_1);
     return _e25;
 }
 
-vec3 shade_pick(uint li_4, vec3 x_24, vec3 n_25, vec3 ng_3, float w_10, uint nee_2, float u1_4, float u2_4) {
+vec3 shade_pick(uint li_4, vec3 x_25, vec3 n_25, vec3 ng_3, float w_10, uint nee_2, float u1_4, float u2_4) {
     float mis = 1.0;
     bool local_21 = false;
     float _e10 = _group_0_binding_0_cs.eps;
-    Connection _e11 = connect(li_4, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10);
+    Connection _e11 = connect(li_4, x_25, n_25, ng_3, w_10, u1_4, u2_4, _e10);
     GpuLight _e16 = _group_0_binding_2_cs[li_4];
     float _e17 = light_area(_e16);
     if ((_e17 > 0.0)) {
@@ -1542,7 +1548,7 @@ vec3 shade_pick(uint li_4, vec3 x_24, vec3 n_25, vec3 ng_3, float w_10, uint nee
     }
     bool _e26 = local_21;
     if (_e26) {
-        float _e29 = light_pdf(li_4, x_24, n_25, _e11.y, nee_2, true);
+        float _e29 = light_pdf(li_4, x_25, n_25, _e11.y, nee_2, true);
         float _e31 = cosine_pdf(_e11.cos_x);
         float _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -1565,7 +1571,7 @@ void main() {
         _group_0_binding_9_cs[i_12] = 0u;
         return;
     }
-    vec3 x_25 = vtx.position;
+    vec3 x_26 = vtx.position;
     vec3 n_29 = vtx.normal;
     vec3 ng_4 = vtx.gnormal;
     uint _e20 = _group_0_binding_0_cs.seed;
@@ -1579,7 +1585,7 @@ void main() {
     h = _e34;
     uint _e35 = h;
     float _e36 = xi_from_bits(_e35);
-    BvhPick _e38 = light_bvh_sample(BVH, x_25, n_29, _e36);
+    BvhPick _e38 = light_bvh_sample(BVH, x_26, n_29, _e36);
     uint li_5 = _e38.light;
     float pmf_2 = _e38.pmf;
     uint _e41 = h;
@@ -1593,7 +1599,7 @@ void main() {
     uint _e47 = h;
     float _e48 = xi_from_bits(_e47);
     if ((pmf_2 > 0.0)) {
-        vec3 _e54 = shade_pick(li_5, x_25, n_29, ng_4, (1.0 / pmf_2), 0u, _e44, _e48);
+        vec3 _e54 = shade_pick(li_5, x_26, n_29, ng_4, (1.0 / pmf_2), 0u, _e44, _e48);
         sum = _e54;
     }
     vec3 _e56 = sum;

@@ -1134,6 +1134,12 @@ float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_2, float extent_2, bool
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14) {
+    float v_13 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_13) / (1.0 + (2.0 * v_13)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(vec3 rel_1, vec3 axis_3, bool perspective_1) {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
 }
@@ -1255,9 +1261,9 @@ GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     {
                         uint _e42 = i_2;
-                        GpuTriangle t_7 = _group_0_binding_6_cs[_e42];
+                        GpuTriangle t_8 = _group_0_binding_6_cs[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i_2;
@@ -1315,18 +1321,18 @@ BvhPick bvh_pick_none() {
     return BvhPick(0u, 0.0);
 }
 
-float select_pdf(uint li_1, vec3 x_19, vec3 n_22, uint nee, bool in_range_2) {
+float select_pdf(uint li_1, vec3 x_20, vec3 n_22, uint nee, bool in_range_2) {
     float _e6 = reservoir_select_pdf(nee, in_range_2, K);
     return _e6;
 }
 
-float light_pdf(uint li_2, vec3 x_20, vec3 n_23, vec3 y_3, uint nee_1, bool in_range_3) {
+float light_pdf(uint li_2, vec3 x_21, vec3 n_23, vec3 y_3, uint nee_1, bool in_range_3) {
     GpuLight l_4 = _group_0_binding_1_cs[li_2];
-    vec3 v_13 = (x_20 - y_3);
-    float d2_15 = dot(v_13, v_13);
+    vec3 v_14 = (x_21 - y_3);
+    float d2_15 = dot(v_14, v_14);
     vec3 _e11 = light_normal(l_4);
-    float cos_y_1 = ((d2_15 > 0.0) ? dot(_e11, (v_13 / vec3(sqrt(d2_15)))) : 0.0);
-    float _e20 = select_pdf(li_2, x_20, n_23, nee_1, in_range_3);
+    float cos_y_1 = ((d2_15 > 0.0) ? dot(_e11, (v_14 / vec3(sqrt(d2_15)))) : 0.0);
+    float _e20 = select_pdf(li_2, x_21, n_23, nee_1, in_range_3);
     float _e23 = _group_0_binding_2_cs[li_2];
     float _e24 = light_area(l_4);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_15, _e24, cos_y_1);
@@ -1412,7 +1418,7 @@ void main() {
     GpuTriangle tri = _group_0_binding_6_cs[_e94.tri];
     vec3 _e111 = st.origin;
     vec3 _e113 = st.dir;
-    vec3 x_21 = (_e111 + (_e113 * _e94.t));
+    vec3 x_22 = (_e111 + (_e113 * _e94.t));
     vec3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     vec3 _e122 = st.dir;
     vec3 _e123 = face_against(_e120, _e122);
@@ -1420,7 +1426,7 @@ void main() {
     vec4 _e129 = _group_0_binding_8_cs[b_9];
     vec4 _e135 = _group_0_binding_8_cs[(b_9 + 1u)];
     vec4 _e141 = _group_0_binding_8_cs[(b_9 + 2u)];
-    vec3 _e146 = barycentric(x_21, tri.v0_, tri.v1_, tri.v2_);
+    vec3 _e146 = barycentric(x_22, tri.v0_, tri.v1_, tri.v2_);
     vec3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if ((tri.light != NO_LIGHT)) {
         vec3 _e154 = st.dir;
@@ -1441,7 +1447,7 @@ void main() {
             vec3 _e180 = st.prev;
             vec3 _e182 = st.prev_normal;
             uint _e185 = _group_0_binding_9_cs[i_8];
-            float _e186 = light_pdf(tri.light, _e180, _e182, x_21, _e185, _e175);
+            float _e186 = light_pdf(tri.light, _e180, _e182, x_22, _e185, _e175);
             float _e187 = mis_weight(_e177, _e186);
             w = _e187;
         }
@@ -1457,7 +1463,7 @@ void main() {
     }
     vec4 _e208 = _group_0_binding_7_cs[tri.material];
     vec3 rho_1 = _e208.xyz;
-    v.position = x_21;
+    v.position = x_22;
     v.normal = _e147;
     v.gnormal = _e123;
     vec3 _e215 = st.beta;
@@ -1474,12 +1480,12 @@ void main() {
     float cos_o_2 = dot(_e228, _e147);
     vec3 _e231 = st.beta;
     st.beta = (_e231 * rho_1);
-    st.prev = x_21;
+    st.prev = x_22;
     st.prev_normal = _e147;
     float _e236 = cosine_pdf(cos_o_2);
     st.pdf_bsdf = _e236;
     float _e240 = _group_0_binding_0_cs.eps;
-    st.origin = (x_21 + (_e123 * _e240));
+    st.origin = (x_22 + (_e123 * _e240));
     st.dir = _e228;
     bool _e244 = continues_path(_e228, _e147, _e123);
     if (!(!(_e244))) {

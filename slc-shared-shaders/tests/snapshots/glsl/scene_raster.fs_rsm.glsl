@@ -1122,6 +1122,12 @@ float light_map_coord_at(vec3 rel, vec3 dir_3, vec3 axis_2, float extent_2, bool
     return (dot(rel, dir_3) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14) {
+    float v_16 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_16) / (1.0 + (2.0 * v_16)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(vec3 rel_1, vec3 axis_3, bool perspective_1) {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
 }

@@ -1114,6 +1114,12 @@ float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_2, float extent_2, bool
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14) {
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(vec3 rel_1, vec3 axis_3, bool perspective_1) {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
 }
@@ -1167,14 +1173,14 @@ float depth_of(uint i_2) {
     return ((_e9 > 0.0) ? _e5 : DEPTH_NONE);
 }
 
-Window window_sum(uint x_14, uint y_3, uint size_10, vec3 n_17, float z_3, float inv) {
+Window window_sum(uint x_15, uint y_3, uint size_10, vec3 n_17, float z_3, float inv) {
     Window win = Window(vec3(0.0), 0.0, 0u);
     uint yy = 0u;
     uint xx = 0u;
     uint w_11 = _group_0_binding_0_cs.width;
     uint h_1 = _group_0_binding_0_cs.height;
-    uint _e12 = window_start(x_14, size_10);
-    uint _e13 = window_end(x_14, size_10, w_11);
+    uint _e12 = window_start(x_15, size_10);
+    uint _e13 = window_end(x_15, size_10, w_11);
     uint _e14 = window_start(y_3, size_10);
     uint _e15 = window_end(y_3, size_10, h_1);
     win.sum = vec3(0.0);

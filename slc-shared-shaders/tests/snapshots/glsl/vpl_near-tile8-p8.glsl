@@ -1129,6 +1129,12 @@ float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_2, float extent_2, bool
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14) {
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(vec3 rel_1, vec3 axis_3, bool perspective_1) {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
 }
@@ -1389,14 +1395,14 @@ void main() {
                         uint _e153 = light_list[_e151];
                         GpuLight l_5 = _group_0_binding_3_cs[_e153];
                         vec4 _e156 = pos;
-                        vec3 v_12 = (_e156.xyz - l_5.p0_);
+                        vec3 v_13 = (_e156.xyz - l_5.p0_);
                         float _e163 = _group_0_binding_0_cs.near_r2_;
-                        float _e164 = vpl_near_weight(dot(v_12, v_12), _e163);
+                        float _e164 = vpl_near_weight(dot(v_13, v_13), _e163);
                         if ((_e164 > 0.0)) {
                             vec3 _e167 = e;
                             vec3 _e170 = nrm;
                             float _e173 = _group_0_binding_0_cs.min_d2_;
-                            float _e174 = vpl_transfer(l_5.p1_, _e170, v_12, _e173);
+                            float _e174 = vpl_transfer(l_5.p1_, _e170, v_13, _e173);
                             e = (_e167 + (l_5.intensity * ((_e174 * _e164) * unscale)));
                             uint _e179 = kept;
                             kept = (_e179 + 1u);

@@ -1127,6 +1127,12 @@ float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_2, float extent_2, bool
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14) {
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(vec3 rel_1, vec3 axis_3, bool perspective_1) {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
 }
@@ -1369,11 +1375,11 @@ void main() {
                         uint j_1 = (base_4 + _e134);
                         GpuLight l_4 = _group_0_binding_3_cs[j_1];
                         vec4 _e139 = pos;
-                        vec3 v_12 = (_e139.xyz - l_4.p0_);
+                        vec3 v_13 = (_e139.xyz - l_4.p0_);
                         vec3 _e144 = nrm;
                         float _e147 = _group_0_binding_0_cs.min_d2_;
-                        float _e148 = vpl_transfer(l_4.p1_, _e144, v_12, _e147);
-                        float d2_15 = dot(v_12, v_12);
+                        float _e148 = vpl_transfer(l_4.p1_, _e144, v_13, _e147);
+                        float d2_15 = dot(v_13, v_13);
                         float _e152 = _group_0_binding_0_cs.near_r2_;
                         float _e153 = vpl_far_weight(d2_15, _e152);
                         float _e156 = _group_0_binding_5_cs[j_1];

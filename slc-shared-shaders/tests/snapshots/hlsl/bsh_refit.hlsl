@@ -1350,6 +1350,13 @@ float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14)
+{
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
 {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
@@ -1446,7 +1453,7 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_14)
+uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_15)
 {
     uint i_3 = (uint)0;
 
@@ -1463,7 +1470,7 @@ uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_14)
         {
             uint _e7 = i_3;
             const BshNode _e8 = bsh_node(nodes_3, _e7);
-            const bool _e11 = sphere_contains_point(_e8.center_, _e8.radius, x_14);
+            const bool _e11 = sphere_contains_point(_e8.center_, _e8.radius, x_15);
             if (_e11) {
                 if ((_e8.child == BSH_NONE)) {
                     uint _e15 = i_3;

@@ -1366,6 +1366,13 @@ float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14)
+{
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
 {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
@@ -1510,7 +1517,7 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_14)
+uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_15)
 {
     uint i_3 = (uint)0;
 
@@ -1527,7 +1534,7 @@ uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_14)
         {
             uint _e7 = i_3;
             const BshNode _e8 = bsh_node(nodes_3, _e7);
-            const bool _e11 = sphere_contains_point(_e8.center_, _e8.radius, x_14);
+            const bool _e11 = sphere_contains_point(_e8.center_, _e8.radius, x_15);
             if (_e11) {
                 if ((_e8.child == BSH_NONE)) {
                     uint _e15 = i_3;
@@ -1551,7 +1558,7 @@ float4 bsh_children_sphere(uint nodes_4, uint i_4)
     return _e11;
 }
 
-Picks bsh_collect(float3 x_15, uint seed_3)
+Picks bsh_collect(float3 x_16, uint seed_3)
 {
     Picks picks = (Picks)0;
     uint h_2 = (uint)0;
@@ -1560,7 +1567,7 @@ Picks bsh_collect(float3 x_15, uint seed_3)
     picks.n = 0u;
     h_2 = seed_3;
     const uint _e8 = bsh_first(BSH);
-    const uint _e9 = bsh_next_leaf(BSH, _e8, x_15);
+    const uint _e9 = bsh_next_leaf(BSH, _e8, x_16);
     i_5 = _e9;
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
@@ -1570,7 +1577,7 @@ Picks bsh_collect(float3 x_15, uint seed_3)
         if (!loop_init) {
             uint _e42 = i_5;
             uint _e45 = asuint(bsh_nodes.Load(20+_e42*32));
-            const uint _e46 = bsh_next_leaf(BSH, _e45, x_15);
+            const uint _e46 = bsh_next_leaf(BSH, _e45, x_16);
             i_5 = _e46;
         }
         loop_init = false;
@@ -1621,7 +1628,7 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_16, float3 n_17, float3 ng_2, float w_res, float u1_3, float u2_3, float eps)
+Connection connect(uint li, float3 x_17, float3 n_17, float3 ng_2, float w_res, float u1_3, float u2_3, float eps)
 {
     Connection c_9 = (Connection)0;
     bool local_16 = (bool)0;
@@ -1632,12 +1639,12 @@ Connection connect(uint li, float3 x_16, float3 n_17, float3 ng_2, float w_res, 
     c_9.y = _e16;
     float3 _e19 = c_9.y;
     float _e22 = asfloat(r2_6.Load(li*4));
-    const float _e23 = connection_cosine(x_16, _e19, n_17, ng_2, _e22);
+    const float _e23 = connection_cosine(x_17, _e19, n_17, ng_2, _e22);
     c_9.cos_x = _e23;
     float _e25 = c_9.cos_x;
     if (!((_e25 <= 0.0))) {
         float3 _e34 = c_9.y;
-        const bool _e35 = occluded((x_16 + (ng_2 * eps)), _e34);
+        const bool _e35 = occluded((x_17 + (ng_2 * eps)), _e34);
         local_16 = _e35;
     } else {
         local_16 = true;
@@ -1649,9 +1656,9 @@ Connection connect(uint li, float3 x_16, float3 n_17, float3 ng_2, float w_res, 
         return connection;
     }
     float3 _e40 = c_9.y;
-    float3 v_12 = (x_16 - _e40);
-    float d2_15 = dot(v_12, v_12);
-    const float3 _e47 = light_intensity(l_4, (v_12 / (sqrt(d2_15)).xxx));
+    float3 v_13 = (x_17 - _e40);
+    float d2_15 = dot(v_13, v_13);
+    const float3 _e47 = light_intensity(l_4, (v_13 / (sqrt(d2_15)).xxx));
     float _e49 = c_9.cos_x;
     float _e52 = asfloat(rt2_7.Load(li*4));
     const float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
@@ -1678,13 +1685,13 @@ void main(uint3 gid : SV_DispatchThreadID)
         irradiance.Store4(i_6*16, asuint((0.0).xxxx));
         return;
     }
-    float3 x_17 = p_4.xyz;
+    float3 x_18 = p_4.xyz;
     float4 _e19 = asfloat(normals.Load4(i_6*16));
     float3 n_20 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     const uint _e27 = point_stream(_e23, i_6, _e26);
-    const Picks _e28 = bsh_collect(x_17, _e27);
+    const Picks _e28 = bsh_collect(x_18, _e27);
     const float _e31 = reservoir_weight(_e28.n, K);
     const uint _e32 = pick_stream(_e27);
     h = _e32;
@@ -1717,7 +1724,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             uint _e54 = h;
             const float _e55 = xi_from_bits(_e54);
             float _e58 = params.eps;
-            const Connection _e59 = connect(_e28.light[min(uint(_e52), 7u)], x_17, n_20, n_20, _e31, _e47, _e55, _e58);
+            const Connection _e59 = connect(_e28.light[min(uint(_e52), 7u)], x_18, n_20, n_20, _e31, _e47, _e55, _e58);
             e = (_e50 + _e59.e);
         }
     }

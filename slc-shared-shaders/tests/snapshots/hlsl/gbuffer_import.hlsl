@@ -1350,6 +1350,13 @@ float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14)
+{
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
 {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
@@ -1438,9 +1445,9 @@ void main(uint3 gid : SV_DispatchThreadID)
     }
     bool valid = local_1;
     float3 _e48 = params.eye;
-    float3 v_12 = (p_4.xyz - _e48);
+    float3 v_13 = (p_4.xyz - _e48);
     gb_position.Store4(i_2*16, asuint(float4(p_4.xyz, (valid ? 1.0 : 0.0))));
-    gb_normal.Store4(i_2*16, asuint((valid ? float4((n_19 / (sqrt(len2_)).xxx), sqrt(dot(v_12, v_12))) : float4(0.0, 0.0, 0.0, 1e30))));
+    gb_normal.Store4(i_2*16, asuint((valid ? float4((n_19 / (sqrt(len2_)).xxx), sqrt(dot(v_13, v_13))) : float4(0.0, 0.0, 0.0, 1e30))));
     irradiance.Store4(i_2*16, asuint((0.0).xxxx));
     return;
 }

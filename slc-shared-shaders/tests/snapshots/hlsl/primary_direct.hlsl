@@ -1350,6 +1350,13 @@ float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14)
+{
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
 {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
@@ -1475,18 +1482,18 @@ void main(uint3 gid : SV_DispatchThreadID)
         direct.Store4(i_2*16, asuint((0.0).xxxx));
         return;
     }
-    float3 x_14 = p_4.xyz;
+    float3 x_15 = p_4.xyz;
     float3 n_19 = normalize(nn);
     uint _e55 = params.size;
     float size_10 = float(_e55);
     float3 _e66 = params.origin;
-    float3 rel_2 = (x_14 - _e66);
+    float3 rel_2 = (x_15 - _e66);
     float3 _e70 = params.axis;
     uint _e73 = params.mode;
     const float _e76 = light_map_depth(rel_2, _e70, (_e73 == MAP_PERSPECTIVE));
     uint _e83 = params.mode;
     if ((_e83 == MAP_PERSPECTIVE)) {
-        float3 v_12 = -(rel_2);
+        float3 v_13 = -(rel_2);
         float3 _e89 = params.axis;
         float z_4 = dot(rel_2, _e89);
         if (!((z_4 <= 0.0))) {
@@ -1512,10 +1519,10 @@ void main(uint3 gid : SV_DispatchThreadID)
         float _e128 = params.extent;
         const float _e129 = perspective_texel_width(_e128, _e76, z_4, size_10);
         width = _e129;
-        cos_light = (dot(n_19, v_12) / _e76);
+        cos_light = (dot(n_19, v_13) / _e76);
         GpuLight _e134 = params.light;
         const float3 _e137 = light_intensity(_e134, (rel_2 / (_e76).xxx));
-        const float3 _e138 = point_irradiance(_e137, n_19, v_12);
+        const float3 _e138 = point_irradiance(_e137, n_19, v_13);
         e = _e138;
     } else {
         float3 _e141 = params.right;

@@ -1382,6 +1382,13 @@ float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14)
+{
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
 {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
@@ -1565,9 +1572,9 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     }
                     {
                         uint _e42 = i_2;
-                        GpuTriangle t_7 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        GpuTriangle t_8 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_4, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i_2;
@@ -1651,7 +1658,7 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_14)
+uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_15)
 {
     uint i_4 = (uint)0;
 
@@ -1668,7 +1675,7 @@ uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_14)
         {
             uint _e7 = i_4;
             const BshNode _e8 = bsh_node(nodes_3, _e7);
-            const bool _e11 = sphere_contains_point(_e8.center_, _e8.radius, x_14);
+            const bool _e11 = sphere_contains_point(_e8.center_, _e8.radius, x_15);
             if (_e11) {
                 if ((_e8.child == BSH_NONE)) {
                     uint _e15 = i_4;
@@ -1692,7 +1699,7 @@ float4 bsh_children_sphere(uint nodes_4, uint i_5)
     return _e11;
 }
 
-Picks bsh_collect(float3 x_15, uint seed_3)
+Picks bsh_collect(float3 x_16, uint seed_3)
 {
     Picks picks = (Picks)0;
     uint h_2 = (uint)0;
@@ -1701,7 +1708,7 @@ Picks bsh_collect(float3 x_15, uint seed_3)
     picks.n = 0u;
     h_2 = seed_3;
     const uint _e8 = bsh_first(BSH);
-    const uint _e9 = bsh_next_leaf(BSH, _e8, x_15);
+    const uint _e9 = bsh_next_leaf(BSH, _e8, x_16);
     i_6 = _e9;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
@@ -1711,7 +1718,7 @@ Picks bsh_collect(float3 x_15, uint seed_3)
         if (!loop_init_1) {
             uint _e42 = i_6;
             uint _e45 = asuint(bsh_nodes.Load(20+_e42*32));
-            const uint _e46 = bsh_next_leaf(BSH, _e45, x_15);
+            const uint _e46 = bsh_next_leaf(BSH, _e45, x_16);
             i_6 = _e46;
         }
         loop_init_1 = false;
@@ -1762,7 +1769,7 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_16, float3 n_17, float3 ng_2, float w_res, float u1_3, float u2_3, float eps)
+Connection connect(uint li, float3 x_17, float3 n_17, float3 ng_2, float w_res, float u1_3, float u2_3, float eps)
 {
     Connection c_9 = (Connection)0;
     bool local_16 = (bool)0;
@@ -1773,12 +1780,12 @@ Connection connect(uint li, float3 x_16, float3 n_17, float3 ng_2, float w_res, 
     c_9.y = _e16;
     float3 _e19 = c_9.y;
     float _e22 = asfloat(r2_6.Load(li*4));
-    const float _e23 = connection_cosine(x_16, _e19, n_17, ng_2, _e22);
+    const float _e23 = connection_cosine(x_17, _e19, n_17, ng_2, _e22);
     c_9.cos_x = _e23;
     float _e25 = c_9.cos_x;
     if (!((_e25 <= 0.0))) {
         float3 _e34 = c_9.y;
-        const bool _e35 = occluded((x_16 + (ng_2 * eps)), _e34);
+        const bool _e35 = occluded((x_17 + (ng_2 * eps)), _e34);
         local_16 = _e35;
     } else {
         local_16 = true;
@@ -1790,9 +1797,9 @@ Connection connect(uint li, float3 x_16, float3 n_17, float3 ng_2, float w_res, 
         return connection;
     }
     float3 _e40 = c_9.y;
-    float3 v_12 = (x_16 - _e40);
-    float d2_15 = dot(v_12, v_12);
-    const float3 _e47 = light_intensity(l_4, (v_12 / (sqrt(d2_15)).xxx));
+    float3 v_13 = (x_17 - _e40);
+    float d2_15 = dot(v_13, v_13);
+    const float3 _e47 = light_intensity(l_4, (v_13 / (sqrt(d2_15)).xxx));
     float _e49 = c_9.cos_x;
     float _e52 = asfloat(rt2_7.Load(li*4));
     const float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
@@ -1821,11 +1828,11 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_weight(uint li_1, float3 x_17, float3 n_18)
+float light_weight(uint li_1, float3 x_18, float3 n_18)
 {
     GpuLightCone c_14 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
     float _e14 = asfloat(rt2_7.Load(li_1*4));
-    const float _e15 = cone_weight(c_14.center_, c_14.radius, c_14.phi, c_14.axis, c_14.cos_o, c_14.cos_e, _e14, x_17, n_18);
+    const float _e15 = cone_weight(c_14.center_, c_14.radius, c_14.phi, c_14.axis, c_14.cos_o, c_14.cos_e, _e14, x_18, n_18);
     return _e15;
 }
 
@@ -1854,14 +1861,14 @@ uint light_bvh_count(uint nodes_6)
     return ((NagaBufferLength(light_bvh) - 0) / 48);
 }
 
-float bvh_importance(uint nodes_7, uint i_8, float3 x_18, float3 n_19)
+float bvh_importance(uint nodes_7, uint i_8, float3 x_19, float3 n_19)
 {
     const GpuLightBvhNode _e4 = light_bvh_node(nodes_7, i_8);
-    const float _e11 = light_importance(_e4.center_, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_18, n_19);
+    const float _e11 = light_importance(_e4.center_, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_19, n_19);
     return _e11;
 }
 
-float bvh_first(uint nodes_8, uint i_9, float3 x_19, float3 n_20)
+float bvh_first(uint nodes_8, uint i_9, float3 x_20, float3 n_20)
 {
     bool local_17 = (bool)0;
 
@@ -1877,8 +1884,8 @@ float bvh_first(uint nodes_8, uint i_9, float3 x_19, float3 n_20)
     if (_e15) {
         return -1.0;
     }
-    const float _e19 = bvh_importance(nodes_8, (i_9 + 1u), x_19, n_20);
-    const float _e20 = bvh_importance(nodes_8, j, x_19, n_20);
+    const float _e19 = bvh_importance(nodes_8, (i_9 + 1u), x_20, n_20);
+    const float _e20 = bvh_importance(nodes_8, j, x_20, n_20);
     const float _e21 = bvh_first_prob(_e19, _e20);
     return _e21;
 }
@@ -1896,7 +1903,7 @@ BvhPick bvh_pick_none()
     return bvhpick;
 }
 
-BvhPick light_bvh_sample(uint nodes_9, float3 x_20, float3 n_21, float u_in)
+BvhPick light_bvh_sample(uint nodes_9, float3 x_21, float3 n_21, float u_in)
 {
     BvhPick pick = (BvhPick)0;
     float u_6 = (float)0;
@@ -1923,7 +1930,7 @@ BvhPick light_bvh_sample(uint nodes_9, float3 x_20, float3 n_21, float u_in)
             if ((_e15.second == LIGHT_BVH_LEAF)) {
                 uint _e19 = i_10;
                 if (!((_e19 > 0u))) {
-                    const float _e26 = bvh_importance(nodes_9, 0u, x_20, n_21);
+                    const float _e26 = bvh_importance(nodes_9, 0u, x_21, n_21);
                     local_18 = (_e26 > 0.0);
                 } else {
                     local_18 = true;
@@ -1939,7 +1946,7 @@ BvhPick light_bvh_sample(uint nodes_9, float3 x_20, float3 n_21, float u_in)
                 return bvhpick_1;
             }
             uint _e36 = i_10;
-            const float _e37 = bvh_first(nodes_9, _e36, x_20, n_21);
+            const float _e37 = bvh_first(nodes_9, _e36, x_21, n_21);
             if ((_e37 < 0.0)) {
                 BvhPick _e40 = pick;
                 const BvhPick bvhpick_2 = _e40;
@@ -1961,7 +1968,7 @@ BvhPick light_bvh_sample(uint nodes_9, float3 x_20, float3 n_21, float u_in)
     return bvhpick_3;
 }
 
-float light_bvh_pmf(uint nodes_10, uint leaf, float3 x_21, float3 n_22)
+float light_bvh_pmf(uint nodes_10, uint leaf, float3 x_22, float3 n_22)
 {
     uint i_11 = 0u;
     float pmf_1 = 1.0;
@@ -1990,7 +1997,7 @@ float light_bvh_pmf(uint nodes_10, uint leaf, float3 x_21, float3 n_22)
                 if ((_e19 == leaf)) {
                     uint _e23 = i_11;
                     if (!((_e23 > 0u))) {
-                        const float _e30 = bvh_importance(nodes_10, 0u, x_21, n_22);
+                        const float _e30 = bvh_importance(nodes_10, 0u, x_22, n_22);
                         local_20 = (_e30 > 0.0);
                     } else {
                         local_20 = true;
@@ -2008,7 +2015,7 @@ float light_bvh_pmf(uint nodes_10, uint leaf, float3 x_21, float3 n_22)
                 return 0.0;
             }
             uint _e39 = i_11;
-            const float _e40 = bvh_first(nodes_10, _e39, x_21, n_22);
+            const float _e40 = bvh_first(nodes_10, _e39, x_22, n_22);
             if ((_e40 < 0.0)) {
                 return 0.0;
             }
@@ -2022,33 +2029,33 @@ float light_bvh_pmf(uint nodes_10, uint leaf, float3 x_21, float3 n_22)
     return 0.0;
 }
 
-float select_pdf(uint li_2, float3 x_22, float3 n_23, uint nee, bool in_range_2)
+float select_pdf(uint li_2, float3 x_23, float3 n_23, uint nee, bool in_range_2)
 {
     const float _e6 = reservoir_select_pdf(nee, in_range_2, K);
     return _e6;
 }
 
-float light_pdf(uint li_3, float3 x_23, float3 n_24, float3 y_3, uint nee_1, bool in_range_3)
+float light_pdf(uint li_3, float3 x_24, float3 n_24, float3 y_3, uint nee_1, bool in_range_3)
 {
     GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
-    float3 v_13 = (x_23 - y_3);
-    float d2_16 = dot(v_13, v_13);
+    float3 v_14 = (x_24 - y_3);
+    float d2_16 = dot(v_14, v_14);
     const float3 _e11 = light_normal(l_5);
-    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e11, (v_13 / (sqrt(d2_16)).xxx)) : 0.0);
-    const float _e20 = select_pdf(li_3, x_23, n_24, nee_1, in_range_3);
+    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e11, (v_14 / (sqrt(d2_16)).xxx)) : 0.0);
+    const float _e20 = select_pdf(li_3, x_24, n_24, nee_1, in_range_3);
     float _e23 = asfloat(rt2_7.Load(li_3*4));
     const float _e24 = light_area(l_5);
     const float _e25 = light_strategy_pdf(_e20, _e23, d2_16, _e24, cos_y_1);
     return _e25;
 }
 
-float3 shade_pick(uint li_4, float3 x_24, float3 n_25, float3 ng_3, float w_10, uint nee_2, float u1_4, float u2_4)
+float3 shade_pick(uint li_4, float3 x_25, float3 n_25, float3 ng_3, float w_10, uint nee_2, float u1_4, float u2_4)
 {
     float mis = 1.0;
     bool local_21 = (bool)0;
 
     float _e10 = params.eps;
-    const Connection _e11 = connect(li_4, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10);
+    const Connection _e11 = connect(li_4, x_25, n_25, ng_3, w_10, u1_4, u2_4, _e10);
     GpuLight _e16 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
     const float _e17 = light_area(_e16);
     if ((_e17 > 0.0)) {
@@ -2058,7 +2065,7 @@ float3 shade_pick(uint li_4, float3 x_24, float3 n_25, float3 ng_3, float w_10, 
     }
     bool _e26 = local_21;
     if (_e26) {
-        const float _e29 = light_pdf(li_4, x_24, n_25, _e11.y, nee_2, true);
+        const float _e29 = light_pdf(li_4, x_25, n_25, _e11.y, nee_2, true);
         const float _e31 = cosine_pdf(_e11.cos_x);
         const float _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -2097,7 +2104,7 @@ void main(uint3 gid : SV_DispatchThreadID)
         candidates.Store(i_12*4, asuint(0u));
         return;
     }
-    float3 x_25 = vtx.position;
+    float3 x_26 = vtx.position;
     float3 n_29 = vtx.normal;
     float3 ng_4 = vtx.gnormal;
     uint _e20 = params.seed;
@@ -2105,7 +2112,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     const uint _e24 = point_stream(_e20, i_12, _e23);
     const uint _e25 = pick_stream(_e24);
     h = _e25;
-    const Picks _e30 = bsh_collect(x_25, _e24);
+    const Picks _e30 = bsh_collect(x_26, _e24);
     candidates.Store(i_12*4, asuint(_e30.n));
     const float _e36 = reservoir_weight(_e30.n, K);
     uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
@@ -2136,7 +2143,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             uint _e52 = s;
             uint _e55 = h;
             const float _e56 = xi_from_bits(_e55);
-            const float3 _e57 = shade_pick(_e30.light[min(uint(_e52), 15u)], x_25, n_29, ng_4, _e36, _e30.n, _e47, _e56);
+            const float3 _e57 = shade_pick(_e30.light[min(uint(_e52), 15u)], x_26, n_29, ng_4, _e36, _e30.n, _e47, _e56);
             sum = (_e50 + _e57);
         }
     }

@@ -1372,6 +1372,13 @@ float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14)
+{
+    float v_13 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_13) / (1.0 + (2.0 * v_13)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
 {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
@@ -1543,9 +1550,9 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                     }
                     {
                         uint _e42 = i_2;
-                        GpuTriangle t_7 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        GpuTriangle t_8 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_4, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i_2;
@@ -1616,11 +1623,11 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_weight(uint li, float3 x_14, float3 n_17)
+float light_weight(uint li, float3 x_15, float3 n_17)
 {
     GpuLightCone c_13 = ConstructGpuLightCone(asfloat(light_cones.Load3(li*48+0)), asfloat(light_cones.Load(li*48+12)), asfloat(light_cones.Load3(li*48+16)), asfloat(light_cones.Load(li*48+28)), asfloat(light_cones.Load(li*48+32)), asfloat(light_cones.Load(li*48+36)), asuint(light_cones.Load(li*48+40)), asuint(light_cones.Load(li*48+44)));
     float _e14 = asfloat(rt2_7.Load(li*4));
-    const float _e15 = cone_weight(c_13.center_, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_14, n_17);
+    const float _e15 = cone_weight(c_13.center_, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_15, n_17);
     return _e15;
 }
 
@@ -1649,14 +1656,14 @@ uint light_bvh_count(uint nodes_1)
     return ((NagaBufferLength(light_bvh) - 0) / 48);
 }
 
-float bvh_importance(uint nodes_2, uint i_4, float3 x_15, float3 n_18)
+float bvh_importance(uint nodes_2, uint i_4, float3 x_16, float3 n_18)
 {
     const GpuLightBvhNode _e4 = light_bvh_node(nodes_2, i_4);
-    const float _e11 = light_importance(_e4.center_, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_15, n_18);
+    const float _e11 = light_importance(_e4.center_, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_16, n_18);
     return _e11;
 }
 
-float bvh_first(uint nodes_3, uint i_5, float3 x_16, float3 n_19)
+float bvh_first(uint nodes_3, uint i_5, float3 x_17, float3 n_19)
 {
     bool local_19 = (bool)0;
 
@@ -1672,8 +1679,8 @@ float bvh_first(uint nodes_3, uint i_5, float3 x_16, float3 n_19)
     if (_e15) {
         return -1.0;
     }
-    const float _e19 = bvh_importance(nodes_3, (i_5 + 1u), x_16, n_19);
-    const float _e20 = bvh_importance(nodes_3, j, x_16, n_19);
+    const float _e19 = bvh_importance(nodes_3, (i_5 + 1u), x_17, n_19);
+    const float _e20 = bvh_importance(nodes_3, j, x_17, n_19);
     const float _e21 = bvh_first_prob(_e19, _e20);
     return _e21;
 }
@@ -1691,7 +1698,7 @@ BvhPick bvh_pick_none()
     return bvhpick;
 }
 
-BvhPick light_bvh_sample(uint nodes_4, float3 x_17, float3 n_20, float u_in)
+BvhPick light_bvh_sample(uint nodes_4, float3 x_18, float3 n_20, float u_in)
 {
     BvhPick pick = (BvhPick)0;
     float u_6 = (float)0;
@@ -1718,7 +1725,7 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_17, float3 n_20, float u_in)
             if ((_e15.second == LIGHT_BVH_LEAF)) {
                 uint _e19 = i_6;
                 if (!((_e19 > 0u))) {
-                    const float _e26 = bvh_importance(nodes_4, 0u, x_17, n_20);
+                    const float _e26 = bvh_importance(nodes_4, 0u, x_18, n_20);
                     local_20 = (_e26 > 0.0);
                 } else {
                     local_20 = true;
@@ -1734,7 +1741,7 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_17, float3 n_20, float u_in)
                 return bvhpick_1;
             }
             uint _e36 = i_6;
-            const float _e37 = bvh_first(nodes_4, _e36, x_17, n_20);
+            const float _e37 = bvh_first(nodes_4, _e36, x_18, n_20);
             if ((_e37 < 0.0)) {
                 BvhPick _e40 = pick;
                 const BvhPick bvhpick_2 = _e40;
@@ -1756,7 +1763,7 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_17, float3 n_20, float u_in)
     return bvhpick_3;
 }
 
-float light_bvh_pmf(uint nodes_5, uint leaf, float3 x_18, float3 n_21)
+float light_bvh_pmf(uint nodes_5, uint leaf, float3 x_19, float3 n_21)
 {
     uint i_7 = 0u;
     float pmf_1 = 1.0;
@@ -1785,7 +1792,7 @@ float light_bvh_pmf(uint nodes_5, uint leaf, float3 x_18, float3 n_21)
                 if ((_e19 == leaf)) {
                     uint _e23 = i_7;
                     if (!((_e23 > 0u))) {
-                        const float _e30 = bvh_importance(nodes_5, 0u, x_18, n_21);
+                        const float _e30 = bvh_importance(nodes_5, 0u, x_19, n_21);
                         local_22 = (_e30 > 0.0);
                     } else {
                         local_22 = true;
@@ -1803,7 +1810,7 @@ float light_bvh_pmf(uint nodes_5, uint leaf, float3 x_18, float3 n_21)
                 return 0.0;
             }
             uint _e39 = i_7;
-            const float _e40 = bvh_first(nodes_5, _e39, x_18, n_21);
+            const float _e40 = bvh_first(nodes_5, _e39, x_19, n_21);
             if ((_e40 < 0.0)) {
                 return 0.0;
             }
@@ -1817,7 +1824,7 @@ float light_bvh_pmf(uint nodes_5, uint leaf, float3 x_18, float3 n_21)
     return 0.0;
 }
 
-float select_pdf(uint li_1, float3 x_19, float3 n_22, uint nee, bool in_range_2)
+float select_pdf(uint li_1, float3 x_20, float3 n_22, uint nee, bool in_range_2)
 {
     const float _e6 = reservoir_select_pdf(nee, in_range_2, K);
     return _e6;
@@ -1836,14 +1843,14 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-float light_pdf(uint li_2, float3 x_20, float3 n_23, float3 y_3, uint nee_1, bool in_range_3)
+float light_pdf(uint li_2, float3 x_21, float3 n_23, float3 y_3, uint nee_1, bool in_range_3)
 {
     GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
-    float3 v_13 = (x_20 - y_3);
-    float d2_15 = dot(v_13, v_13);
+    float3 v_14 = (x_21 - y_3);
+    float d2_15 = dot(v_14, v_14);
     const float3 _e11 = light_normal(l_4);
-    float cos_y_1 = ((d2_15 > 0.0) ? dot(_e11, (v_13 / (sqrt(d2_15)).xxx)) : 0.0);
-    const float _e20 = select_pdf(li_2, x_20, n_23, nee_1, in_range_3);
+    float cos_y_1 = ((d2_15 > 0.0) ? dot(_e11, (v_14 / (sqrt(d2_15)).xxx)) : 0.0);
+    const float _e20 = select_pdf(li_2, x_21, n_23, nee_1, in_range_3);
     float _e23 = asfloat(rt2_7.Load(li_2*4));
     const float _e24 = light_area(l_4);
     const float _e25 = light_strategy_pdf(_e20, _e23, d2_15, _e24, cos_y_1);
@@ -1990,7 +1997,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     GpuTriangle tri = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e94.tri*48+0)), asuint(geo_tris.Load(_e94.tri*48+12)), asfloat(geo_tris.Load3(_e94.tri*48+16)), asuint(geo_tris.Load(_e94.tri*48+28)), asfloat(geo_tris.Load3(_e94.tri*48+32)), asuint(geo_tris.Load(_e94.tri*48+44)));
     float3 _e111 = st.origin;
     float3 _e113 = st.dir;
-    float3 x_21 = (_e111 + (_e113 * _e94.t));
+    float3 x_22 = (_e111 + (_e113 * _e94.t));
     const float3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     float3 _e122 = st.dir;
     const float3 _e123 = face_against(_e120, _e122);
@@ -1998,7 +2005,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     float4 _e129 = asfloat(geo_normals.Load4(b_10*16));
     float4 _e135 = asfloat(geo_normals.Load4((b_10 + 1u)*16));
     float4 _e141 = asfloat(geo_normals.Load4((b_10 + 2u)*16));
-    const float3 _e146 = barycentric(x_21, tri.v0_, tri.v1_, tri.v2_);
+    const float3 _e146 = barycentric(x_22, tri.v0_, tri.v1_, tri.v2_);
     const float3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if ((tri.light != NO_LIGHT)) {
         float3 _e154 = st.dir;
@@ -2019,7 +2026,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             float3 _e180 = st.prev;
             float3 _e182 = st.prev_normal;
             uint _e185 = asuint(candidates.Load(i_8*4));
-            const float _e186 = light_pdf(tri.light, _e180, _e182, x_21, _e185, _e175);
+            const float _e186 = light_pdf(tri.light, _e180, _e182, x_22, _e185, _e175);
             const float _e187 = mis_weight(_e177, _e186);
             w = _e187;
         }
@@ -2035,7 +2042,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     }
     float4 _e208 = asfloat(albedo_1.Load4(tri.material*16));
     float3 rho_1 = _e208.xyz;
-    v.position = x_21;
+    v.position = x_22;
     v.normal = _e147;
     v.gnormal = _e123;
     float3 _e215 = st.beta;
@@ -2062,12 +2069,12 @@ void main(uint3 gid : SV_DispatchThreadID)
     float cos_o_2 = dot(_e228, _e147);
     float3 _e231 = st.beta;
     st.beta = (_e231 * rho_1);
-    st.prev = x_21;
+    st.prev = x_22;
     st.prev_normal = _e147;
     const float _e236 = cosine_pdf(cos_o_2);
     st.pdf_bsdf = _e236;
     float _e240 = params.eps;
-    st.origin = (x_21 + (_e123 * _e240));
+    st.origin = (x_22 + (_e123 * _e240));
     st.dir = _e228;
     const bool _e244 = continues_path(_e228, _e147, _e123);
     if (!(!(_e244))) {

@@ -1359,6 +1359,13 @@ float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14)
+{
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
 {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
@@ -1423,7 +1430,7 @@ float depth_of(uint i_2)
     return ((_e9 > 0.0) ? _e5 : DEPTH_NONE);
 }
 
-Window window_sum(uint x_14, uint y_3, uint size_10, float3 n_17, float z_3, float inv)
+Window window_sum(uint x_15, uint y_3, uint size_10, float3 n_17, float z_3, float inv)
 {
     Window win = (Window)0;
     uint yy = (uint)0;
@@ -1431,8 +1438,8 @@ Window window_sum(uint x_14, uint y_3, uint size_10, float3 n_17, float z_3, flo
 
     uint w_11 = params.width;
     uint h_1 = params.height;
-    const uint _e12 = window_start(x_14, size_10);
-    const uint _e13 = window_end(x_14, size_10, w_11);
+    const uint _e12 = window_start(x_15, size_10);
+    const uint _e13 = window_end(x_15, size_10, w_11);
     const uint _e14 = window_start(y_3, size_10);
     const uint _e15 = window_end(y_3, size_10, h_1);
     win.sum = (0.0).xxx;

@@ -1367,6 +1367,13 @@ float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14)
+{
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
 {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
@@ -1679,14 +1686,14 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         uint _e153 = light_list[min(uint(_e151), 2047u)];
                         GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(_e153*64+0)), asuint(lights.Load(_e153*64+12)), asfloat(lights.Load3(_e153*64+16)), asfloat(lights.Load(_e153*64+28)), asfloat(lights.Load3(_e153*64+32)), asfloat(lights.Load(_e153*64+44)), asfloat(lights.Load3(_e153*64+48)), asuint(lights.Load(_e153*64+60)));
                         float4 _e156 = pos;
-                        float3 v_12 = (_e156.xyz - l_5.p0_);
+                        float3 v_13 = (_e156.xyz - l_5.p0_);
                         float _e163 = params.near_r2_;
-                        const float _e164 = vpl_near_weight(dot(v_12, v_12), _e163);
+                        const float _e164 = vpl_near_weight(dot(v_13, v_13), _e163);
                         if ((_e164 > 0.0)) {
                             float3 _e167 = e;
                             float3 _e170 = nrm;
                             float _e173 = params.min_d2_;
-                            const float _e174 = vpl_transfer(l_5.p1_, _e170, v_12, _e173);
+                            const float _e174 = vpl_transfer(l_5.p1_, _e170, v_13, _e173);
                             e = (_e167 + (l_5.intensity * ((_e174 * _e164) * unscale)));
                             uint _e179 = kept;
                             kept = (_e179 + 1u);

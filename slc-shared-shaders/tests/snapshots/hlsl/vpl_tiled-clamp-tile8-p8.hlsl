@@ -1367,6 +1367,13 @@ float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2
     return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
 }
 
+float display_encode(float x_14)
+{
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
 float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
 {
     return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
@@ -1652,11 +1659,11 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         uint j_1 = (base_4 + _e134);
                         GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(j_1*64+0)), asuint(lights.Load(j_1*64+12)), asfloat(lights.Load3(j_1*64+16)), asfloat(lights.Load(j_1*64+28)), asfloat(lights.Load3(j_1*64+32)), asfloat(lights.Load(j_1*64+44)), asfloat(lights.Load3(j_1*64+48)), asuint(lights.Load(j_1*64+60)));
                         float4 _e139 = pos;
-                        float3 v_12 = (_e139.xyz - l_4.p0_);
+                        float3 v_13 = (_e139.xyz - l_4.p0_);
                         float3 _e144 = nrm;
                         float _e147 = params.min_d2_;
-                        const float _e148 = vpl_transfer(l_4.p1_, _e144, v_12, _e147);
-                        float d2_15 = dot(v_12, v_12);
+                        const float _e148 = vpl_transfer(l_4.p1_, _e144, v_13, _e147);
+                        float d2_15 = dot(v_13, v_13);
                         float _e152 = params.near_r2_;
                         const float _e153 = vpl_far_weight(d2_15, _e152);
                         float _e156 = asfloat(r2_6.Load(j_1*4));

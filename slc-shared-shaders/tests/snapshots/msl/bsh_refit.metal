@@ -1631,6 +1631,14 @@ float light_map_coord_at(
     return metal::dot(rel, dir_2) / ((perspective ? metal::dot(rel, axis_2) : 1.0) * extent_2);
 }
 
+float display_encode(
+    float x_14
+) {
+    float v_12 = metal::max(x_14, 0.0);
+    float t_7 = (2.0 * v_12) / (1.0 + (2.0 * v_12));
+    return (t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * metal::pow(t_7, 0.41666666)) - 0.055);
+}
+
 float light_map_depth(
     metal::float3 rel_1,
     metal::float3 axis_3,
@@ -1745,7 +1753,7 @@ uint bsh_first(
 uint bsh_next_leaf(
     BshNodes nodes_3,
     uint start_1,
-    metal::float3 x_14,
+    metal::float3 x_15,
     device type_7 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1763,7 +1771,7 @@ uint bsh_next_leaf(
         {
             uint _e7 = i_3;
             BshNode _e8 = bsh_node(nodes_3, _e7, bsh_nodes, _buffer_sizes);
-            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_15);
             if (_e11) {
                 if (_e8.child == BSH_NONE) {
                     uint _e15 = i_3;

@@ -1648,6 +1648,14 @@ float light_map_coord_at(
     return metal::dot(rel, dir_2) / ((perspective ? metal::dot(rel, axis_2) : 1.0) * extent_2);
 }
 
+float display_encode(
+    float x_14
+) {
+    float v_12 = metal::max(x_14, 0.0);
+    float t_7 = (2.0 * v_12) / (1.0 + (2.0 * v_12));
+    return (t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * metal::pow(t_7, 0.41666666)) - 0.055);
+}
+
 float light_map_depth(
     metal::float3 rel_1,
     metal::float3 axis_3,
@@ -1819,7 +1827,7 @@ uint bsh_first(
 uint bsh_next_leaf(
     BshNodes nodes_3,
     uint start_1,
-    metal::float3 x_14,
+    metal::float3 x_15,
     device type_7 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1837,7 +1845,7 @@ uint bsh_next_leaf(
         {
             uint _e7 = i_3;
             BshNode _e8 = bsh_node(nodes_3, _e7, bsh_nodes, _buffer_sizes);
-            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_15);
             if (_e11) {
                 if (_e8.child == BSH_NONE) {
                     uint _e15 = i_3;
@@ -1866,7 +1874,7 @@ metal::float4 bsh_children_sphere(
 }
 
 Picks bsh_collect(
-    metal::float3 x_15,
+    metal::float3 x_16,
     uint seed_3,
     device type_7 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
@@ -1877,7 +1885,7 @@ Picks bsh_collect(
     picks.n = 0u;
     h_2 = seed_3;
     uint _e8 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e9 = bsh_next_leaf(BSH, _e8, x_15, bsh_nodes, _buffer_sizes);
+    uint _e9 = bsh_next_leaf(BSH, _e8, x_16, bsh_nodes, _buffer_sizes);
     i_5 = _e9;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init = true;
@@ -1887,7 +1895,7 @@ Picks bsh_collect(
         if (!loop_init) {
             uint _e42 = i_5;
             uint _e45 = bsh_nodes[_e42].next;
-            uint _e46 = bsh_next_leaf(BSH, _e45, x_15, bsh_nodes, _buffer_sizes);
+            uint _e46 = bsh_next_leaf(BSH, _e45, x_16, bsh_nodes, _buffer_sizes);
             i_5 = _e46;
         }
         loop_init = false;
@@ -1926,7 +1934,7 @@ Picks bsh_collect(
 
 Connection connect(
     uint li,
-    metal::float3 x_16,
+    metal::float3 x_17,
     metal::float3 n_17,
     metal::float3 ng_2,
     float w_res,
@@ -1946,12 +1954,12 @@ Connection connect(
     c_9.y = _e16;
     metal::float3 _e19 = c_9.y;
     float _e22 = r2_6[li];
-    float _e23 = connection_cosine(x_16, _e19, n_17, ng_2, _e22);
+    float _e23 = connection_cosine(x_17, _e19, n_17, ng_2, _e22);
     c_9.cos_x = _e23;
     float _e25 = c_9.cos_x;
     if (!((_e25 <= 0.0))) {
         metal::float3 _e34 = c_9.y;
-        bool _e35 = occluded(x_16 + (ng_2 * eps), _e34);
+        bool _e35 = occluded(x_17 + (ng_2 * eps), _e34);
         local_16 = _e35;
     } else {
         local_16 = true;
@@ -1962,9 +1970,9 @@ Connection connect(
         return _e38;
     }
     metal::float3 _e40 = c_9.y;
-    metal::float3 v_12 = x_16 - _e40;
-    float d2_15 = metal::dot(v_12, v_12);
-    metal::float3 _e47 = light_intensity(l_4, v_12 / metal::float3(metal::sqrt(d2_15)));
+    metal::float3 v_13 = x_17 - _e40;
+    float d2_15 = metal::dot(v_13, v_13);
+    metal::float3 _e47 = light_intensity(l_4, v_13 / metal::float3(metal::sqrt(d2_15)));
     float _e49 = c_9.cos_x;
     float _e52 = rt2_7[li];
     float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
@@ -2000,13 +2008,13 @@ kernel void main_(
         irradiance[i_6] = metal::float4(0.0);
         return;
     }
-    metal::float3 x_17 = p_4.xyz;
+    metal::float3 x_18 = p_4.xyz;
     metal::float4 _e19 = normals[i_6];
     metal::float3 n_20 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     uint _e27 = point_stream(_e23, i_6, _e26);
-    Picks _e28 = bsh_collect(x_17, _e27, bsh_nodes, _buffer_sizes);
+    Picks _e28 = bsh_collect(x_18, _e27, bsh_nodes, _buffer_sizes);
     float _e31 = reservoir_weight(_e28.n, K);
     uint _e32 = pick_stream(_e27);
     h = _e32;
@@ -2039,7 +2047,7 @@ kernel void main_(
             uint _e54 = h;
             float _e55 = xi_from_bits(_e54);
             float _e58 = params.eps;
-            Connection _e59 = connect(_e28.light.inner[_e52], x_17, n_20, n_20, _e31, _e47, _e55, _e58, lights, r2_6, rt2_7, _buffer_sizes);
+            Connection _e59 = connect(_e28.light.inner[_e52], x_18, n_20, n_20, _e31, _e47, _e55, _e58, lights, r2_6, rt2_7, _buffer_sizes);
             e = _e50 + _e59.e;
         }
     }

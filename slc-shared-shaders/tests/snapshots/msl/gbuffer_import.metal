@@ -1627,6 +1627,14 @@ float light_map_coord_at(
     return metal::dot(rel, dir_2) / ((perspective ? metal::dot(rel, axis_2) : 1.0) * extent_2);
 }
 
+float display_encode(
+    float x_14
+) {
+    float v_12 = metal::max(x_14, 0.0);
+    float t_7 = (2.0 * v_12) / (1.0 + (2.0 * v_12));
+    return (t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * metal::pow(t_7, 0.41666666)) - 0.055);
+}
+
 float light_map_depth(
     metal::float3 rel_1,
     metal::float3 axis_3,
@@ -1747,9 +1755,9 @@ kernel void main_(
     }
     bool valid = local_1;
     metal::float3 _e48 = params.eye;
-    metal::float3 v_12 = p_4.xyz - _e48;
+    metal::float3 v_13 = p_4.xyz - _e48;
     gb_position[i_2] = metal::float4(p_4.xyz, valid ? 1.0 : 0.0);
-    gb_normal[i_2] = valid ? metal::float4(n_19 / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_12, v_12))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
+    gb_normal[i_2] = valid ? metal::float4(n_19 / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_13, v_13))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
     irradiance[i_2] = metal::float4(0.0);
     return;
 }

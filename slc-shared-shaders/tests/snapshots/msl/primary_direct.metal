@@ -1625,6 +1625,14 @@ float light_map_coord_at(
     return metal::dot(rel, dir_2) / ((perspective ? metal::dot(rel, axis_2) : 1.0) * extent_2);
 }
 
+float display_encode(
+    float x_14
+) {
+    float v_12 = metal::max(x_14, 0.0);
+    float t_7 = (2.0 * v_12) / (1.0 + (2.0 * v_12));
+    return (t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * metal::pow(t_7, 0.41666666)) - 0.055);
+}
+
 float light_map_depth(
     metal::float3 rel_1,
     metal::float3 axis_3,
@@ -1789,18 +1797,18 @@ kernel void main_(
         direct[i_2] = metal::float4(0.0);
         return;
     }
-    metal::float3 x_14 = p_4.xyz;
+    metal::float3 x_15 = p_4.xyz;
     metal::float3 n_19 = metal::normalize(nn);
     uint _e55 = params.size;
     float size_10 = static_cast<float>(_e55);
     metal::float3 _e66 = params.origin;
-    metal::float3 rel_2 = x_14 - _e66;
+    metal::float3 rel_2 = x_15 - _e66;
     metal::float3 _e70 = params.axis;
     uint _e73 = params.mode;
     float _e76 = light_map_depth(rel_2, _e70, _e73 == MAP_PERSPECTIVE);
     uint _e83 = params.mode;
     if (_e83 == MAP_PERSPECTIVE) {
-        metal::float3 v_12 = -(rel_2);
+        metal::float3 v_13 = -(rel_2);
         metal::float3 _e89 = params.axis;
         float z_4 = metal::dot(rel_2, _e89);
         if (!((z_4 <= 0.0))) {
@@ -1826,10 +1834,10 @@ kernel void main_(
         float _e128 = params.extent;
         float _e129 = perspective_texel_width(_e128, _e76, z_4, size_10);
         width = _e129;
-        cos_light = metal::dot(n_19, v_12) / _e76;
+        cos_light = metal::dot(n_19, v_13) / _e76;
         GpuLight _e134 = params.light;
         metal::float3 _e137 = light_intensity(_e134, rel_2 / metal::float3(_e76));
-        metal::float3 _e138 = point_irradiance(_e137, n_19, v_12);
+        metal::float3 _e138 = point_irradiance(_e137, n_19, v_13);
         e = _e138;
     } else {
         metal::float3 _e141 = params.right;

@@ -1672,6 +1672,14 @@ float light_map_coord_at(
     return metal::dot(rel, dir_2) / ((perspective ? metal::dot(rel, axis_2) : 1.0) * extent_2);
 }
 
+float display_encode(
+    float x_14
+) {
+    float v_12 = metal::max(x_14, 0.0);
+    float t_7 = (2.0 * v_12) / (1.0 + (2.0 * v_12));
+    return (t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * metal::pow(t_7, 0.41666666)) - 0.055);
+}
+
 float light_map_depth(
     metal::float3 rel_1,
     metal::float3 axis_3,
@@ -1867,9 +1875,9 @@ GeoHit trace(
                     }
                     {
                         uint _e42 = i_2;
-                        GpuTriangle t_7 = geo_tris[_e42];
+                        GpuTriangle t_8 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i_2;
@@ -1957,7 +1965,7 @@ uint bsh_first(
 uint bsh_next_leaf(
     BshNodes nodes_3,
     uint start_1,
-    metal::float3 x_14,
+    metal::float3 x_15,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1975,7 +1983,7 @@ uint bsh_next_leaf(
         {
             uint _e7 = i_4;
             BshNode _e8 = bsh_node(nodes_3, _e7, bsh_nodes, _buffer_sizes);
-            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_14);
+            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_15);
             if (_e11) {
                 if (_e8.child == BSH_NONE) {
                     uint _e15 = i_4;
@@ -2004,7 +2012,7 @@ metal::float4 bsh_children_sphere(
 }
 
 Picks bsh_collect(
-    metal::float3 x_15,
+    metal::float3 x_16,
     uint seed_3,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
@@ -2015,7 +2023,7 @@ Picks bsh_collect(
     picks.n = 0u;
     h_2 = seed_3;
     uint _e8 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e9 = bsh_next_leaf(BSH, _e8, x_15, bsh_nodes, _buffer_sizes);
+    uint _e9 = bsh_next_leaf(BSH, _e8, x_16, bsh_nodes, _buffer_sizes);
     i_6 = _e9;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_1 = true;
@@ -2025,7 +2033,7 @@ Picks bsh_collect(
         if (!loop_init_1) {
             uint _e42 = i_6;
             uint _e45 = bsh_nodes[_e42].next;
-            uint _e46 = bsh_next_leaf(BSH, _e45, x_15, bsh_nodes, _buffer_sizes);
+            uint _e46 = bsh_next_leaf(BSH, _e45, x_16, bsh_nodes, _buffer_sizes);
             i_6 = _e46;
         }
         loop_init_1 = false;
@@ -2064,7 +2072,7 @@ Picks bsh_collect(
 
 Connection connect(
     uint li,
-    metal::float3 x_16,
+    metal::float3 x_17,
     metal::float3 n_17,
     metal::float3 ng_2,
     float w_res,
@@ -2087,12 +2095,12 @@ Connection connect(
     c_9.y = _e16;
     metal::float3 _e19 = c_9.y;
     float _e22 = r2_6[li];
-    float _e23 = connection_cosine(x_16, _e19, n_17, ng_2, _e22);
+    float _e23 = connection_cosine(x_17, _e19, n_17, ng_2, _e22);
     c_9.cos_x = _e23;
     float _e25 = c_9.cos_x;
     if (!((_e25 <= 0.0))) {
         metal::float3 _e34 = c_9.y;
-        bool _e35 = occluded(x_16 + (ng_2 * eps), _e34, geo_nodes, geo_tris, _buffer_sizes);
+        bool _e35 = occluded(x_17 + (ng_2 * eps), _e34, geo_nodes, geo_tris, _buffer_sizes);
         local_16 = _e35;
     } else {
         local_16 = true;
@@ -2103,9 +2111,9 @@ Connection connect(
         return _e38;
     }
     metal::float3 _e40 = c_9.y;
-    metal::float3 v_12 = x_16 - _e40;
-    float d2_15 = metal::dot(v_12, v_12);
-    metal::float3 _e47 = light_intensity(l_4, v_12 / metal::float3(metal::sqrt(d2_15)), slc_table, _buffer_sizes);
+    metal::float3 v_13 = x_17 - _e40;
+    float d2_15 = metal::dot(v_13, v_13);
+    metal::float3 _e47 = light_intensity(l_4, v_13 / metal::float3(metal::sqrt(d2_15)), slc_table, _buffer_sizes);
     float _e49 = c_9.cos_x;
     float _e52 = rt2_7[li];
     float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
@@ -2124,7 +2132,7 @@ float mis_weight(
 
 float light_weight(
     uint li_1,
-    metal::float3 x_17,
+    metal::float3 x_18,
     metal::float3 n_18,
     device type_4 const& rt2_7,
     device type_13 const& light_cones,
@@ -2132,7 +2140,7 @@ float light_weight(
 ) {
     GpuLightCone c_14 = light_cones[li_1];
     float _e14 = rt2_7[li_1];
-    float _e15 = cone_weight(c_14.center, c_14.radius, c_14.phi, c_14.axis, c_14.cos_o, c_14.cos_e, _e14, x_17, n_18);
+    float _e15 = cone_weight(c_14.center, c_14.radius, c_14.phi, c_14.axis, c_14.cos_o, c_14.cos_e, _e14, x_18, n_18);
     return _e15;
 }
 
@@ -2157,20 +2165,20 @@ uint light_bvh_count(
 float bvh_importance(
     BvhNodes nodes_7,
     uint i_8,
-    metal::float3 x_18,
+    metal::float3 x_19,
     metal::float3 n_19,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightBvhNode _e4 = light_bvh_node(nodes_7, i_8, light_bvh, _buffer_sizes);
-    float _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_18, n_19);
+    float _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_19, n_19);
     return _e11;
 }
 
 float bvh_first(
     BvhNodes nodes_8,
     uint i_9,
-    metal::float3 x_19,
+    metal::float3 x_20,
     metal::float3 n_20,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
@@ -2188,8 +2196,8 @@ float bvh_first(
     if (_e15) {
         return -1.0;
     }
-    float _e19 = bvh_importance(nodes_8, i_9 + 1u, x_19, n_20, light_bvh, _buffer_sizes);
-    float _e20 = bvh_importance(nodes_8, j, x_19, n_20, light_bvh, _buffer_sizes);
+    float _e19 = bvh_importance(nodes_8, i_9 + 1u, x_20, n_20, light_bvh, _buffer_sizes);
+    float _e20 = bvh_importance(nodes_8, j, x_20, n_20, light_bvh, _buffer_sizes);
     float _e21 = bvh_first_prob(_e19, _e20);
     return _e21;
 }
@@ -2201,7 +2209,7 @@ BvhPick bvh_pick_none(
 
 BvhPick light_bvh_sample(
     BvhNodes nodes_9,
-    metal::float3 x_20,
+    metal::float3 x_21,
     metal::float3 n_21,
     float u_in,
     device type_14 const& light_bvh,
@@ -2231,7 +2239,7 @@ BvhPick light_bvh_sample(
             if (_e15.second == LIGHT_BVH_LEAF) {
                 uint _e19 = i_10;
                 if (!((_e19 > 0u))) {
-                    float _e26 = bvh_importance(nodes_9, 0u, x_20, n_21, light_bvh, _buffer_sizes);
+                    float _e26 = bvh_importance(nodes_9, 0u, x_21, n_21, light_bvh, _buffer_sizes);
                     local_18 = _e26 > 0.0;
                 } else {
                     local_18 = true;
@@ -2246,7 +2254,7 @@ BvhPick light_bvh_sample(
                 return _e35;
             }
             uint _e36 = i_10;
-            float _e37 = bvh_first(nodes_9, _e36, x_20, n_21, light_bvh, _buffer_sizes);
+            float _e37 = bvh_first(nodes_9, _e36, x_21, n_21, light_bvh, _buffer_sizes);
             if (_e37 < 0.0) {
                 BvhPick _e40 = pick;
                 return _e40;
@@ -2269,7 +2277,7 @@ BvhPick light_bvh_sample(
 float light_bvh_pmf(
     BvhNodes nodes_10,
     uint leaf,
-    metal::float3 x_21,
+    metal::float3 x_22,
     metal::float3 n_22,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
@@ -2300,7 +2308,7 @@ float light_bvh_pmf(
                 if (_e19 == leaf) {
                     uint _e23 = i_11;
                     if (!((_e23 > 0u))) {
-                        float _e30 = bvh_importance(nodes_10, 0u, x_21, n_22, light_bvh, _buffer_sizes);
+                        float _e30 = bvh_importance(nodes_10, 0u, x_22, n_22, light_bvh, _buffer_sizes);
                         local_20 = _e30 > 0.0;
                     } else {
                         local_20 = true;
@@ -2318,7 +2326,7 @@ float light_bvh_pmf(
                 return 0.0;
             }
             uint _e39 = i_11;
-            float _e40 = bvh_first(nodes_10, _e39, x_21, n_22, light_bvh, _buffer_sizes);
+            float _e40 = bvh_first(nodes_10, _e39, x_22, n_22, light_bvh, _buffer_sizes);
             if (_e40 < 0.0) {
                 return 0.0;
             }
@@ -2334,7 +2342,7 @@ float light_bvh_pmf(
 
 float select_pdf(
     uint li_2,
-    metal::float3 x_22,
+    metal::float3 x_23,
     metal::float3 n_23,
     uint nee,
     bool in_range_2
@@ -2345,7 +2353,7 @@ float select_pdf(
 
 float light_pdf(
     uint li_3,
-    metal::float3 x_23,
+    metal::float3 x_24,
     metal::float3 n_24,
     metal::float3 y_3,
     uint nee_1,
@@ -2355,11 +2363,11 @@ float light_pdf(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_5 = lights[li_3];
-    metal::float3 v_13 = x_23 - y_3;
-    float d2_16 = metal::dot(v_13, v_13);
+    metal::float3 v_14 = x_24 - y_3;
+    float d2_16 = metal::dot(v_14, v_14);
     metal::float3 _e11 = light_normal(l_5);
-    float cos_y_1 = (d2_16 > 0.0) ? metal::dot(_e11, v_13 / metal::float3(metal::sqrt(d2_16))) : 0.0;
-    float _e20 = select_pdf(li_3, x_23, n_24, nee_1, in_range_3);
+    float cos_y_1 = (d2_16 > 0.0) ? metal::dot(_e11, v_14 / metal::float3(metal::sqrt(d2_16))) : 0.0;
+    float _e20 = select_pdf(li_3, x_24, n_24, nee_1, in_range_3);
     float _e23 = rt2_7[li_3];
     float _e24 = light_area(l_5);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_16, _e24, cos_y_1);
@@ -2368,7 +2376,7 @@ float light_pdf(
 
 metal::float3 shade_pick(
     uint li_4,
-    metal::float3 x_24,
+    metal::float3 x_25,
     metal::float3 n_25,
     metal::float3 ng_3,
     float w_10,
@@ -2387,7 +2395,7 @@ metal::float3 shade_pick(
     float mis = 1.0;
     bool local_21 = {};
     float _e10 = params.eps;
-    Connection _e11 = connect(li_4, x_24, n_25, ng_3, w_10, u1_4, u2_4, _e10, slc_table, geo_nodes, geo_tris, lights, r2_6, rt2_7, _buffer_sizes);
+    Connection _e11 = connect(li_4, x_25, n_25, ng_3, w_10, u1_4, u2_4, _e10, slc_table, geo_nodes, geo_tris, lights, r2_6, rt2_7, _buffer_sizes);
     GpuLight _e16 = lights[li_4];
     float _e17 = light_area(_e16);
     if (_e17 > 0.0) {
@@ -2397,7 +2405,7 @@ metal::float3 shade_pick(
     }
     bool _e26 = local_21;
     if (_e26) {
-        float _e29 = light_pdf(li_4, x_24, n_25, _e11.y, nee_2, true, lights, rt2_7, _buffer_sizes);
+        float _e29 = light_pdf(li_4, x_25, n_25, _e11.y, nee_2, true, lights, rt2_7, _buffer_sizes);
         float _e31 = cosine_pdf(_e11.cos_x);
         float _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -2436,7 +2444,7 @@ kernel void main_(
         candidates[i_12] = 0u;
         return;
     }
-    metal::float3 x_25 = vtx.position;
+    metal::float3 x_26 = vtx.position;
     metal::float3 n_29 = vtx.normal;
     metal::float3 ng_4 = vtx.gnormal;
     uint _e20 = params.seed;
@@ -2444,7 +2452,7 @@ kernel void main_(
     uint _e24 = point_stream(_e20, i_12, _e23);
     uint _e25 = pick_stream(_e24);
     h = _e25;
-    Picks _e30 = bsh_collect(x_25, _e24, bsh_nodes, _buffer_sizes);
+    Picks _e30 = bsh_collect(x_26, _e24, bsh_nodes, _buffer_sizes);
     candidates[i_12] = _e30.n;
     float _e36 = reservoir_weight(_e30.n, K);
     uint2 loop_bound_7 = uint2(4294967295u);
@@ -2475,7 +2483,7 @@ kernel void main_(
             uint _e52 = s;
             uint _e55 = h;
             float _e56 = xi_from_bits(_e55);
-            metal::float3 _e57 = shade_pick(_e30.light.inner[_e52], x_25, n_29, ng_4, _e36, _e30.n, _e47, _e56, slc_table, geo_nodes, geo_tris, lights, r2_6, rt2_7, params, _buffer_sizes);
+            metal::float3 _e57 = shade_pick(_e30.light.inner[_e52], x_26, n_29, ng_4, _e36, _e30.n, _e47, _e56, slc_table, geo_nodes, geo_tris, lights, r2_6, rt2_7, params, _buffer_sizes);
             sum = _e50 + _e57;
         }
     }

@@ -1662,6 +1662,14 @@ float light_map_coord_at(
     return metal::dot(rel, dir_2) / ((perspective ? metal::dot(rel, axis_2) : 1.0) * extent_2);
 }
 
+float display_encode(
+    float x_14
+) {
+    float v_13 = metal::max(x_14, 0.0);
+    float t_7 = (2.0 * v_13) / (1.0 + (2.0 * v_13));
+    return (t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * metal::pow(t_7, 0.41666666)) - 0.055);
+}
+
 float light_map_depth(
     metal::float3 rel_1,
     metal::float3 axis_3,
@@ -1843,9 +1851,9 @@ GeoHit trace(
                     }
                     {
                         uint _e42 = i_2;
-                        GpuTriangle t_7 = geo_tris[_e42];
+                        GpuTriangle t_8 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_4, t_7.v0_, t_7.v1_, t_7.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i_2;
@@ -1910,7 +1918,7 @@ float mis_weight(
 
 float light_weight(
     uint li,
-    metal::float3 x_14,
+    metal::float3 x_15,
     metal::float3 n_17,
     device type_10 const& light_cones,
     device type_4 const& rt2_7,
@@ -1918,7 +1926,7 @@ float light_weight(
 ) {
     GpuLightCone c_13 = light_cones[li];
     float _e14 = rt2_7[li];
-    float _e15 = cone_weight(c_13.center, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_14, n_17);
+    float _e15 = cone_weight(c_13.center, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_15, n_17);
     return _e15;
 }
 
@@ -1943,20 +1951,20 @@ uint light_bvh_count(
 float bvh_importance(
     BvhNodes nodes_2,
     uint i_4,
-    metal::float3 x_15,
+    metal::float3 x_16,
     metal::float3 n_18,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightBvhNode _e4 = light_bvh_node(nodes_2, i_4, light_bvh, _buffer_sizes);
-    float _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_15, n_18);
+    float _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_16, n_18);
     return _e11;
 }
 
 float bvh_first(
     BvhNodes nodes_3,
     uint i_5,
-    metal::float3 x_16,
+    metal::float3 x_17,
     metal::float3 n_19,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
@@ -1974,8 +1982,8 @@ float bvh_first(
     if (_e15) {
         return -1.0;
     }
-    float _e19 = bvh_importance(nodes_3, i_5 + 1u, x_16, n_19, light_bvh, _buffer_sizes);
-    float _e20 = bvh_importance(nodes_3, j, x_16, n_19, light_bvh, _buffer_sizes);
+    float _e19 = bvh_importance(nodes_3, i_5 + 1u, x_17, n_19, light_bvh, _buffer_sizes);
+    float _e20 = bvh_importance(nodes_3, j, x_17, n_19, light_bvh, _buffer_sizes);
     float _e21 = bvh_first_prob(_e19, _e20);
     return _e21;
 }
@@ -1987,7 +1995,7 @@ BvhPick bvh_pick_none(
 
 BvhPick light_bvh_sample(
     BvhNodes nodes_4,
-    metal::float3 x_17,
+    metal::float3 x_18,
     metal::float3 n_20,
     float u_in,
     device type_11 const& light_bvh,
@@ -2017,7 +2025,7 @@ BvhPick light_bvh_sample(
             if (_e15.second == LIGHT_BVH_LEAF) {
                 uint _e19 = i_6;
                 if (!((_e19 > 0u))) {
-                    float _e26 = bvh_importance(nodes_4, 0u, x_17, n_20, light_bvh, _buffer_sizes);
+                    float _e26 = bvh_importance(nodes_4, 0u, x_18, n_20, light_bvh, _buffer_sizes);
                     local_20 = _e26 > 0.0;
                 } else {
                     local_20 = true;
@@ -2032,7 +2040,7 @@ BvhPick light_bvh_sample(
                 return _e35;
             }
             uint _e36 = i_6;
-            float _e37 = bvh_first(nodes_4, _e36, x_17, n_20, light_bvh, _buffer_sizes);
+            float _e37 = bvh_first(nodes_4, _e36, x_18, n_20, light_bvh, _buffer_sizes);
             if (_e37 < 0.0) {
                 BvhPick _e40 = pick;
                 return _e40;
@@ -2055,7 +2063,7 @@ BvhPick light_bvh_sample(
 float light_bvh_pmf(
     BvhNodes nodes_5,
     uint leaf,
-    metal::float3 x_18,
+    metal::float3 x_19,
     metal::float3 n_21,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
@@ -2086,7 +2094,7 @@ float light_bvh_pmf(
                 if (_e19 == leaf) {
                     uint _e23 = i_7;
                     if (!((_e23 > 0u))) {
-                        float _e30 = bvh_importance(nodes_5, 0u, x_18, n_21, light_bvh, _buffer_sizes);
+                        float _e30 = bvh_importance(nodes_5, 0u, x_19, n_21, light_bvh, _buffer_sizes);
                         local_22 = _e30 > 0.0;
                     } else {
                         local_22 = true;
@@ -2104,7 +2112,7 @@ float light_bvh_pmf(
                 return 0.0;
             }
             uint _e39 = i_7;
-            float _e40 = bvh_first(nodes_5, _e39, x_18, n_21, light_bvh, _buffer_sizes);
+            float _e40 = bvh_first(nodes_5, _e39, x_19, n_21, light_bvh, _buffer_sizes);
             if (_e40 < 0.0) {
                 return 0.0;
             }
@@ -2120,7 +2128,7 @@ float light_bvh_pmf(
 
 float select_pdf(
     uint li_1,
-    metal::float3 x_19,
+    metal::float3 x_20,
     metal::float3 n_22,
     uint nee,
     bool in_range_2
@@ -2131,7 +2139,7 @@ float select_pdf(
 
 float light_pdf(
     uint li_2,
-    metal::float3 x_20,
+    metal::float3 x_21,
     metal::float3 n_23,
     metal::float3 y_3,
     uint nee_1,
@@ -2141,11 +2149,11 @@ float light_pdf(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_4 = lights[li_2];
-    metal::float3 v_13 = x_20 - y_3;
-    float d2_15 = metal::dot(v_13, v_13);
+    metal::float3 v_14 = x_21 - y_3;
+    float d2_15 = metal::dot(v_14, v_14);
     metal::float3 _e11 = light_normal(l_4);
-    float cos_y_1 = (d2_15 > 0.0) ? metal::dot(_e11, v_13 / metal::float3(metal::sqrt(d2_15))) : 0.0;
-    float _e20 = select_pdf(li_2, x_20, n_23, nee_1, in_range_3);
+    float cos_y_1 = (d2_15 > 0.0) ? metal::dot(_e11, v_14 / metal::float3(metal::sqrt(d2_15))) : 0.0;
+    float _e20 = select_pdf(li_2, x_21, n_23, nee_1, in_range_3);
     float _e23 = rt2_7[li_2];
     float _e24 = light_area(l_4);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_15, _e24, cos_y_1);
@@ -2250,7 +2258,7 @@ kernel void main_(
     GpuTriangle tri = geo_tris[_e94.tri];
     metal::float3 _e111 = st.origin;
     metal::float3 _e113 = st.dir;
-    metal::float3 x_21 = _e111 + (_e113 * _e94.t);
+    metal::float3 x_22 = _e111 + (_e113 * _e94.t);
     metal::float3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e122 = st.dir;
     metal::float3 _e123 = face_against(_e120, _e122);
@@ -2258,7 +2266,7 @@ kernel void main_(
     metal::float4 _e129 = geo_normals[b_10];
     metal::float4 _e135 = geo_normals[b_10 + 1u];
     metal::float4 _e141 = geo_normals[b_10 + 2u];
-    metal::float3 _e146 = barycentric(x_21, tri.v0_, tri.v1_, tri.v2_);
+    metal::float3 _e146 = barycentric(x_22, tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if (tri.light != NO_LIGHT) {
         metal::float3 _e154 = st.dir;
@@ -2279,7 +2287,7 @@ kernel void main_(
             metal::float3 _e180 = st.prev;
             metal::float3 _e182 = st.prev_normal;
             uint _e185 = candidates[i_8];
-            float _e186 = light_pdf(tri.light, _e180, _e182, x_21, _e185, _e175, rt2_7, lights, _buffer_sizes);
+            float _e186 = light_pdf(tri.light, _e180, _e182, x_22, _e185, _e175, rt2_7, lights, _buffer_sizes);
             float _e187 = mis_weight(_e177, _e186);
             w = _e187;
         }
@@ -2295,7 +2303,7 @@ kernel void main_(
     }
     metal::float4 _e208 = albedo_1[tri.material];
     metal::float3 rho_1 = _e208.xyz;
-    v.position = x_21;
+    v.position = x_22;
     v.normal = _e147;
     v.gnormal = _e123;
     metal::float3 _e215 = st.beta;
@@ -2312,12 +2320,12 @@ kernel void main_(
     float cos_o_2 = metal::dot(_e228, _e147);
     metal::float3 _e231 = st.beta;
     st.beta = _e231 * rho_1;
-    st.prev = x_21;
+    st.prev = x_22;
     st.prev_normal = _e147;
     float _e236 = cosine_pdf(cos_o_2);
     st.pdf_bsdf = _e236;
     float _e240 = params.eps;
-    st.origin = x_21 + (_e123 * _e240);
+    st.origin = x_22 + (_e123 * _e240);
     st.dir = _e228;
     bool _e244 = continues_path(_e228, _e147, _e123);
     if (!(!(_e244))) {

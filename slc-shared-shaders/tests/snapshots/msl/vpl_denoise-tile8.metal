@@ -1635,6 +1635,14 @@ float light_map_coord_at(
     return metal::dot(rel, dir_2) / ((perspective ? metal::dot(rel, axis_2) : 1.0) * extent_2);
 }
 
+float display_encode(
+    float x_14
+) {
+    float v_12 = metal::max(x_14, 0.0);
+    float t_7 = (2.0 * v_12) / (1.0 + (2.0 * v_12));
+    return (t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * metal::pow(t_7, 0.41666666)) - 0.055);
+}
+
 float light_map_depth(
     metal::float3 rel_1,
     metal::float3 axis_3,
@@ -1728,7 +1736,7 @@ float depth_of(
 }
 
 Window window_sum(
-    uint x_14,
+    uint x_15,
     uint y_3,
     uint size_10,
     metal::float3 n_17,
@@ -1745,8 +1753,8 @@ Window window_sum(
     uint xx = {};
     uint w_11 = params.width;
     uint h_1 = params.height;
-    uint _e12 = window_start(x_14, size_10);
-    uint _e13 = window_end(x_14, size_10, w_11);
+    uint _e12 = window_start(x_15, size_10);
+    uint _e13 = window_end(x_15, size_10, w_11);
     uint _e14 = window_start(y_3, size_10);
     uint _e15 = window_end(y_3, size_10, h_1);
     win.sum = metal::float3(0.0);

@@ -1648,6 +1648,14 @@ float light_map_coord_at(
     return metal::dot(rel, dir_2) / ((perspective ? metal::dot(rel, axis_2) : 1.0) * extent_2);
 }
 
+float display_encode(
+    float x_14
+) {
+    float v_12 = metal::max(x_14, 0.0);
+    float t_7 = (2.0 * v_12) / (1.0 + (2.0 * v_12));
+    return (t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * metal::pow(t_7, 0.41666666)) - 0.055);
+}
+
 float light_map_depth(
     metal::float3 rel_1,
     metal::float3 axis_3,
@@ -1980,14 +1988,14 @@ kernel void main_(
                         uint _e153 = light_list.inner[_e151];
                         GpuLight l_5 = lights[_e153];
                         metal::float4 _e156 = pos;
-                        metal::float3 v_12 = _e156.xyz - l_5.p0_;
+                        metal::float3 v_13 = _e156.xyz - l_5.p0_;
                         float _e163 = params.near_r2_;
-                        float _e164 = vpl_near_weight(metal::dot(v_12, v_12), _e163);
+                        float _e164 = vpl_near_weight(metal::dot(v_13, v_13), _e163);
                         if (_e164 > 0.0) {
                             metal::float3 _e167 = e;
                             metal::float3 _e170 = nrm;
                             float _e173 = params.min_d2_;
-                            float _e174 = vpl_transfer(l_5.p1_, _e170, v_12, _e173);
+                            float _e174 = vpl_transfer(l_5.p1_, _e170, v_13, _e173);
                             e = _e167 + (l_5.intensity * ((_e174 * _e164) * unscale));
                             uint _e179 = kept;
                             kept = _e179 + 1u;

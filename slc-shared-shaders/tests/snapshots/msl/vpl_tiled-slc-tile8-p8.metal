@@ -1646,6 +1646,14 @@ float light_map_coord_at(
     return metal::dot(rel, dir_2) / ((perspective ? metal::dot(rel, axis_2) : 1.0) * extent_2);
 }
 
+float display_encode(
+    float x_14
+) {
+    float v_12 = metal::max(x_14, 0.0);
+    float t_7 = (2.0 * v_12) / (1.0 + (2.0 * v_12));
+    return (t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * metal::pow(t_7, 0.41666666)) - 0.055);
+}
+
 float light_map_depth(
     metal::float3 rel_1,
     metal::float3 axis_3,
@@ -1960,11 +1968,11 @@ kernel void main_(
                         uint j_1 = base_4 + _e134;
                         GpuLight l_4 = lights[j_1];
                         metal::float4 _e139 = pos;
-                        metal::float3 v_12 = _e139.xyz - l_4.p0_;
+                        metal::float3 v_13 = _e139.xyz - l_4.p0_;
                         metal::float3 _e144 = nrm;
                         float _e147 = params.min_d2_;
-                        float _e148 = vpl_transfer(l_4.p1_, _e144, v_12, _e147);
-                        float d2_15 = metal::dot(v_12, v_12);
+                        float _e148 = vpl_transfer(l_4.p1_, _e144, v_13, _e147);
+                        float d2_15 = metal::dot(v_13, v_13);
                         float _e152 = params.near_r2_;
                         float _e153 = vpl_far_weight(d2_15, _e152);
                         float _e156 = r2_6[j_1];
