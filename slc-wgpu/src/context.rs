@@ -25,8 +25,7 @@ impl GpuContext {
     /// device with the adapter's full limits.
     pub fn new() -> Result<GpuContext, GpuError> {
         let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
-        let adapter = pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None))
-            .map_err(|e| GpuError::NoAdapter(e.to_string()))?;
+        let adapter = pick_adapter(&instance, None)?;
         let info = adapter.get_info();
         let limits = adapter.limits();
         let timestamps = adapter.features().contains(wgpu::Features::TIMESTAMP_QUERY);
@@ -94,4 +93,29 @@ impl GpuContext {
         self.device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| GpuError::Device(e.to_string()))?;
         self.take_errors()
     }
+}
+
+/// The adapter slc runs on, compatible with `surface` when one is given:
+/// the one whose name contains `WGPU_ADAPTER_NAME` (case-insensitive)
+/// where that variable is set, else wgpu's choice under `WGPU_POWER_PREF`
+/// (`WGPU_BACKEND` is the instance's). wgpu's own
+/// `initialize_adapter_from_env` panics on a name nothing matches; this
+/// says which adapters there are instead.
+pub fn pick_adapter(instance: &wgpu::Instance, surface: Option<&wgpu::Surface<'_>>) -> Result<wgpu::Adapter, GpuError> {
+    let usable = |a: &wgpu::Adapter| surface.is_none_or(|s| a.is_surface_supported(s));
+    if let Some(want) = std::env::var("WGPU_ADAPTER_NAME").ok().filter(|n| !n.is_empty()) {
+        let adapters: Vec<wgpu::Adapter> =
+            pollster::block_on(instance.enumerate_adapters(wgpu::Backends::all())).into_iter().filter(usable).collect();
+        let names: Vec<String> = adapters.iter().map(|a| a.get_info().name).collect();
+        return adapters
+            .into_iter()
+            .find(|a| a.get_info().name.to_lowercase().contains(&want.to_lowercase()))
+            .ok_or_else(|| GpuError::NoAdapter(format!("WGPU_ADAPTER_NAME={want} matches none of the adapters [{}]", names.join(", "))));
+    }
+    pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+        power_preference: wgpu::PowerPreference::from_env().unwrap_or_default(),
+        compatible_surface: surface,
+        ..Default::default()
+    }))
+    .map_err(|e| GpuError::NoAdapter(e.to_string()))
 }

@@ -56,7 +56,7 @@ pub mod passes;
 pub mod pt;
 pub mod vpl;
 
-pub use context::GpuContext;
+pub use context::{GpuContext, pick_adapter};
 
 use thiserror::Error;
 
