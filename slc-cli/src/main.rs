@@ -12,6 +12,7 @@ mod diff;
 mod plot;
 mod report;
 mod scene_args;
+mod view;
 
 use backends::{Backend, GPU_BATCH, gpu_context, path_tracer};
 use clap::{Args, Parser, Subcommand};
@@ -44,6 +45,9 @@ enum Command {
     Render(RenderArgs),
     /// Speed against error: every method and parameter against the reference.
     Bench(bench::BenchArgs),
+    /// The GPU VPL frame in a real-time window: move the light, switch
+    /// slc / clamp / none, change ε and the VPL count, see each pass's GPU time.
+    View(view::ViewArgs),
     /// Inspect an IES (LM-63) photometric file.
     Ies {
         /// The .ies file.
@@ -78,7 +82,7 @@ enum Command {
 }
 
 /// A VPL method name.
-fn vpl_method(name: &str) -> anyhow::Result<VplMethod> {
+pub(crate) fn vpl_method(name: &str) -> anyhow::Result<VplMethod> {
     match name {
         "slc" => Ok(VplMethod::Slc),
         "clamp" => Ok(VplMethod::Clamp),
@@ -157,6 +161,7 @@ fn main() -> ExitCode {
         None => Err(anyhow!("no command")),
         Some(Command::Render(a)) => render(a),
         Some(Command::Bench(a)) => bench::run(a),
+        Some(Command::View(a)) => view::run(a),
         Some(Command::Ies { file, plot }) => ies(&file, plot.as_deref()),
         Some(Command::Diff(a)) => diff::run(a),
         Some(Command::Plot { json, out }) => replot(&json, &out),

@@ -408,6 +408,85 @@ fn unmodelled_mtl_features_are_warned_about_once() {
 }
 
 // GPU tests show as ignored without an adapter, and fail under SLC_REQUIRE_GPU=1.
+/// An 8-bit RGB PNG's size and bytes.
+fn read_png(path: &Path) -> (u32, u32, Vec<u8>) {
+    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).expect("the PNG exists")));
+    let mut reader = decoder.read_info().expect("a PNG");
+    let mut bytes = vec![0; reader.output_buffer_size().expect("a size")];
+    let info = reader.next_frame(&mut bytes).expect("a frame");
+    assert_eq!(info.color_type, png::ColorType::Rgb, "{}", path.display());
+    bytes.truncate(info.buffer_size());
+    (info.width, info.height, bytes)
+}
+
+/// README and CI: `slc view --frames 30 --screenshot FILE.png` opens the
+/// window (under xvfb-run where no display is set), renders 30 frames with
+/// the light animated and saves the last: the right size, the lit box (more
+/// than half the pixels lit), its mean within 5% of the CPU backend's frame of the same
+/// scene and size (the GPU frame is tested against the CPU's to 1% in
+/// tests/tests/gpu_frame.rs; the light has moved a sixteenth of its circle,
+/// about 4 cm, and 8-bit tone-mapped means are compared).
+/// With no adapter for the window it fails with one line naming the ones
+/// there are.
+fn view_renders_frames_and_saves_a_screenshot() {
+    let d = tempdir("view");
+    let size = ["--width", "96", "--height", "72", "--vpls", "4096"];
+    let out = slc_tests::windowed(Path::new(env!("CARGO_BIN_EXE_slc")))
+        .args(["view", "--frames", "30", "--animate", "--screenshot", "view.png"])
+        .args(size)
+        .current_dir(&d)
+        .output()
+        .expect("run slc view");
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "slc view failed:\n{text}\n{}", String::from_utf8_lossy(&out.stderr));
+    assert!(text.contains("30 frames on"), "{text}");
+    let (w, h, view) = read_png(&d.join("view.png"));
+    assert_eq!((w, h), (96, 72));
+    let lit = view.chunks(3).filter(|p| p.iter().any(|&c| c > 16)).count();
+    assert!(lit > (w * h) as usize / 2, "only {lit} of {} pixels lit", w * h);
+    ok(&d, &["render", "--out", "cpu.exr"].into_iter().chain(size).collect::<Vec<_>>());
+    let (_, _, cpu) = read_png(&d.join("cpu.png"));
+    let mean = |b: &[u8]| b.iter().map(|&c| c as f64).sum::<f64>() / b.len() as f64;
+    let (mv, mc) = (mean(&view), mean(&cpu));
+    assert!((mv - mc).abs() <= 0.05 * mc, "screenshot mean {mv:.1} vs the CPU frame's {mc:.1}");
+    // No adapter for the window: one line naming the ones there are.
+    let out = slc_tests::windowed(Path::new(env!("CARGO_BIN_EXE_slc")))
+        .args(["view", "--frames", "1"])
+        .env("WGPU_ADAPTER_NAME", "no-such-adapter")
+        .current_dir(&d)
+        .output()
+        .expect("run slc view");
+    let err = String::from_utf8_lossy(&out.stderr);
+    let lines: Vec<&str> = err.lines().filter(|l| l.starts_with("error:") && !l.contains("XDG_RUNTIME_DIR")).collect();
+    assert!(!out.status.success() && lines.len() == 1 && lines[0].contains("no GPU adapter") && lines[0].contains("no-such-adapter"), "{err}");
+    std::fs::remove_dir_all(&d).ok();
+}
+
+/// Without a display `slc view` fails with one line that says so and how
+/// to get one, and bad options fail before any window opens.
+fn view_without_a_display_is_a_clear_error() {
+    let d = tempdir("view-headless");
+    let out = Command::new(env!("CARGO_BIN_EXE_slc"))
+        .args(["view", "--frames", "1"])
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .env_remove("WAYLAND_SOCKET")
+        .current_dir(&d)
+        .output()
+        .expect("run slc view");
+    let err = String::from_utf8_lossy(&out.stderr);
+    let line = err.lines().filter(|l| l.starts_with("error:") && !l.contains("XDG_RUNTIME_DIR")).collect::<Vec<_>>();
+    assert!(!out.status.success() && line.len() == 1, "{err}");
+    assert!(line[0].contains("no display") && line[0].contains("xvfb-run"), "{err}");
+    for args in [&["view", "--screenshot", "x.png"][..], &["view", "--frames", "0"], &["view", "--method", "reference"], &["view", "--vpls", "1000"]]
+    {
+        let out = slc(&d, args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success() && err.lines().filter(|l| l.starts_with("error:")).count() == 1, "{args:?}: {err}");
+    }
+    std::fs::remove_dir_all(&d).ok();
+}
+
 slc_tests::harness!(
     Cpu: main_job_with_no_arguments,
     Cpu: render_commands,
@@ -425,4 +504,6 @@ slc_tests::harness!(
     Cpu: path_tracer_renders,
     Cpu: path_tracer_bench,
     Cpu: unmodelled_mtl_features_are_warned_about_once,
+    Display: view_renders_frames_and_saves_a_screenshot,
+    Cpu: view_without_a_display_is_a_clear_error,
 );

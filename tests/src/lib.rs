@@ -54,6 +54,40 @@ pub enum Needs {
     Cpu,
     /// A GPU adapter (a real GPU or lavapipe).
     Gpu,
+    /// A GPU adapter and a display to open a window on: `DISPLAY` or
+    /// `WAYLAND_DISPLAY`, else `xvfb-run` on the `PATH` ([`windowed`] runs
+    /// the program under it). Without one the test shows as ignored;
+    /// under `SLC_REQUIRE_DISPLAY=1` (CI, which installs Xvfb) it fails.
+    Display,
+}
+
+/// Why no window can be opened here, or `None` when a display exists or
+/// `xvfb-run` can make one.
+fn display_missing() -> Option<String> {
+    let set = |k: &str| std::env::var_os(k).is_some_and(|v| !v.is_empty());
+    if set("DISPLAY") || set("WAYLAND_DISPLAY") || xvfb_run().is_some() {
+        return None;
+    }
+    Some("no DISPLAY or WAYLAND_DISPLAY, and no xvfb-run on the PATH (apt-get install xvfb)".into())
+}
+
+/// `xvfb-run` on the `PATH`, if any.
+fn xvfb_run() -> Option<std::path::PathBuf> {
+    std::env::split_paths(&std::env::var_os("PATH")?).map(|d| d.join("xvfb-run")).find(|p| p.is_file())
+}
+
+/// A command running `program` with a window: directly where a display is
+/// set, else under `xvfb-run -a` (a 1024×768 virtual screen).
+pub fn windowed(program: &std::path::Path) -> std::process::Command {
+    let set = |k: &str| std::env::var_os(k).is_some_and(|v| !v.is_empty());
+    match xvfb_run().filter(|_| !set("DISPLAY") && !set("WAYLAND_DISPLAY")) {
+        Some(xvfb) => {
+            let mut c = std::process::Command::new(xvfb);
+            c.args(["-a", "-s", "-screen 0 1024x768x24"]).arg(program);
+            c
+        }
+        None => std::process::Command::new(program),
+    }
 }
 
 /// Why no GPU test can run here, or `None` when an adapter exists.
@@ -65,31 +99,50 @@ fn gpu_missing() -> Option<String> {
 /// `--ignored`, threads), each `(name, needs, test)`. GPU tests without an
 /// adapter are ignored with the reason printed once; run anyway
 /// (`--ignored`) they fail with it; under `SLC_REQUIRE_GPU=1` they fail.
+/// Window tests ([`Needs::Display`]) need a display too: without one they
+/// are ignored the same way, and fail under `SLC_REQUIRE_DISPLAY=1`.
 pub fn run(tests: &[(&'static str, Needs, fn())]) -> std::process::ExitCode {
     let args = libtest_mimic::Arguments::from_args();
-    let missing = if tests.iter().any(|t| t.1 == Needs::Gpu) { gpu_missing() } else { None };
+    let on_gpu = |n: Needs| matches!(n, Needs::Gpu | Needs::Display);
+    let missing = if tests.iter().any(|t| on_gpu(t.1)) { gpu_missing() } else { None };
     let required = std::env::var("SLC_REQUIRE_GPU").as_deref() == Ok("1");
     if let Some(reason) = &missing {
         if required {
             eprintln!("SLC_REQUIRE_GPU=1, so the GPU tests fail: {reason}");
         } else {
-            let n = tests.iter().filter(|t| t.1 == Needs::Gpu).count();
+            let n = tests.iter().filter(|t| on_gpu(t.1)).count();
             eprintln!("{n} GPU test(s) ignored: {reason}");
         }
     }
+    let no_display = if tests.iter().any(|t| t.1 == Needs::Display) { display_missing() } else { None };
+    let display_required = std::env::var("SLC_REQUIRE_DISPLAY").as_deref() == Ok("1");
+    if let Some(reason) = &no_display {
+        let n = tests.iter().filter(|t| t.1 == Needs::Display).count();
+        let verb = if display_required { "fail (SLC_REQUIRE_DISPLAY=1)" } else { "ignored" };
+        eprintln!("{n} window test(s) {verb}: {reason}");
+    }
     let trials = tests
         .iter()
-        .map(|&(name, needs, test)| match (needs, &missing) {
-            (Needs::Gpu, Some(reason)) => {
+        .map(|&(name, needs, test)| match (needs, &missing, &no_display) {
+            (Needs::Gpu | Needs::Display, Some(reason), _) => {
                 let why = format!("needs a GPU adapter: {reason}");
                 libtest_mimic::Trial::test(name, move || Err(why.into())).with_kind("gpu").with_ignored_flag(!required)
             }
-            (Needs::Gpu, None) => libtest_mimic::Trial::test(name, move || {
+            (Needs::Display, None, Some(reason)) => {
+                let why = format!("needs a display: {reason}");
+                libtest_mimic::Trial::test(name, move || Err(why.into())).with_kind("window").with_ignored_flag(!display_required)
+            }
+            (Needs::Gpu, None, _) => libtest_mimic::Trial::test(name, move || {
                 test();
                 Ok(())
             })
             .with_kind("gpu"),
-            (Needs::Cpu, _) => libtest_mimic::Trial::test(name, move || {
+            (Needs::Display, None, None) => libtest_mimic::Trial::test(name, move || {
+                test();
+                Ok(())
+            })
+            .with_kind("window"),
+            (Needs::Cpu, _, _) => libtest_mimic::Trial::test(name, move || {
                 test();
                 Ok(())
             }),

@@ -1,0 +1,192 @@
+//! What the viewer's user controls, and the keys that change it: the
+//! method and its parameter, the denoise, frozen ξ, the VPL count, and the
+//! primary light (moved, aimed, or animated on a circle).
+
+use glam::{Quat, Vec3};
+use slc_scene::scene::PrimaryLight;
+use slc_scene::vpl::{VplMethod, VplSettings};
+use winit::keyboard::{Key, NamedKey};
+
+/// RSM edges the VPL count cycles through (`edge²` VPLs).
+pub const VPL_EDGES: [u32; 4] = [64, 128, 256, 512];
+
+/// Seconds per turn of the animated light.
+const TURN_SECONDS: f32 = 8.0;
+
+/// The viewer's settings and the light's pose.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Controls {
+    /// Method, parameters, denoise and near field of the frame.
+    pub settings: VplSettings,
+    /// Keep ξ of frame 0 on every frame (no temporal change of SLC's noise).
+    pub freeze: bool,
+    /// Move the light on a horizontal circle.
+    pub animate: bool,
+    /// RSM edge (`edge²` VPLs).
+    pub rsm_edge: u32,
+    /// The scene's primary light.
+    base: PrimaryLight,
+    /// Offset of the light's position from the scene's (spot).
+    pub offset: Vec3,
+    /// Rotation of the light's direction about the vertical axis (radians).
+    pub yaw: f32,
+    /// Tilt of the light's direction toward its right (radians).
+    pub pitch: f32,
+    /// The animation's angle (radians).
+    pub phase: f32,
+    /// A step of the keys, in scene units (2% of the scene's diagonal).
+    step: f32,
+}
+
+impl Controls {
+    /// Controls at `settings`, the scene's primary light `base`, a scene of
+    /// diagonal `diag`, `rsm_edge²` VPLs.
+    pub fn new(settings: VplSettings, base: PrimaryLight, diag: f32, rsm_edge: u32) -> Controls {
+        Controls { settings, freeze: false, animate: false, rsm_edge, base, offset: Vec3::ZERO, yaw: 0.0, pitch: 0.0, phase: 0.0, step: 0.02 * diag }
+    }
+
+    /// The primary light now: the scene's, moved by `offset` plus the
+    /// animation's circle (radius five steps), its direction turned by
+    /// `yaw` about +y and tilted by `pitch`.
+    pub fn light(&self) -> PrimaryLight {
+        let circle =
+            if self.animate || self.phase != 0.0 { Vec3::new(self.phase.cos() - 1.0, 0.0, self.phase.sin()) * (5.0 * self.step) } else { Vec3::ZERO };
+        let turn = |d: Vec3| {
+            let d = Quat::from_rotation_y(self.yaw) * d;
+            let right = d.cross(Vec3::Y);
+            if right.length_squared() > 1e-12 { Quat::from_axis_angle(right.normalize(), self.pitch) * d } else { d }
+        };
+        match self.base {
+            PrimaryLight::Spot { position, direction, intensity, inner, outer } => {
+                PrimaryLight::Spot { position: position + self.offset + circle, direction: turn(direction), intensity, inner, outer }
+            }
+            PrimaryLight::Directional { direction, irradiance } => {
+                PrimaryLight::Directional { direction: Quat::from_rotation_y(self.phase) * turn(direction), irradiance }
+            }
+        }
+    }
+
+    /// Advances the animation by `dt` seconds (when on).
+    pub fn tick(&mut self, dt: f32) {
+        if self.animate {
+            self.phase = (self.phase + dt * std::f32::consts::TAU / TURN_SECONDS) % std::f32::consts::TAU;
+        }
+    }
+
+    /// The frame's settings for frame number `frame` (0 while ξ is frozen).
+    pub fn frame_settings(&self, frame: u32) -> VplSettings {
+        VplSettings { frame: if self.freeze { 0 } else { frame }, ..self.settings }
+    }
+
+    /// Applies a key; `true` when it changed something. Keys: `1` `2` `3`
+    /// method slc / clamp / none; `+` `-` the error bound ×2 / ÷2 (slc) or
+    /// the range ×1.25 / ÷1.25 (clamp); `d` denoise; `f` freeze ξ; `v` the
+    /// next VPL count; space animation; arrows move the light across,
+    /// PageUp / PageDown up and down; `r` resets the light.
+    pub fn key(&mut self, key: &Key) -> bool {
+        let s = &mut self.settings;
+        match key {
+            Key::Character(c) => match c.as_str() {
+                "1" => s.method = VplMethod::Slc,
+                "2" => s.method = VplMethod::Clamp,
+                "3" => s.method = VplMethod::None,
+                "+" | "=" => self.scale_parameter(true),
+                "-" => self.scale_parameter(false),
+                "d" | "D" => s.denoise = !s.denoise,
+                "f" | "F" => self.freeze = !self.freeze,
+                "v" | "V" => self.rsm_edge = next_edge(self.rsm_edge),
+                "r" | "R" => (self.offset, self.yaw, self.pitch, self.phase) = (Vec3::ZERO, 0.0, 0.0, 0.0),
+                _ => return false,
+            },
+            Key::Named(NamedKey::Space) => self.animate = !self.animate,
+            Key::Named(NamedKey::ArrowLeft) => self.offset.x -= self.step,
+            Key::Named(NamedKey::ArrowRight) => self.offset.x += self.step,
+            Key::Named(NamedKey::ArrowUp) => self.offset.z -= self.step,
+            Key::Named(NamedKey::ArrowDown) => self.offset.z += self.step,
+            Key::Named(NamedKey::PageUp) => self.offset.y += self.step,
+            Key::Named(NamedKey::PageDown) => self.offset.y -= self.step,
+            _ => return false,
+        }
+        true
+    }
+
+    /// Aims the light by a mouse drag of `(dx, dy)` pixels (a full window
+    /// width turns it by about a quarter turn).
+    pub fn drag(&mut self, (dx, dy): (f32, f32), width: f32) {
+        let k = std::f32::consts::FRAC_PI_2 / width.max(1.0);
+        self.yaw -= dx * k;
+        self.pitch = (self.pitch - dy * k).clamp(-1.2, 1.2);
+    }
+
+    /// Doubles or halves the error bound (slc), or scales the clamp range
+    /// by 1.25 (clamp); clamped to sane bounds.
+    fn scale_parameter(&mut self, up: bool) {
+        let s = &mut self.settings;
+        match s.method {
+            VplMethod::Clamp => s.range = (if up { s.range * 1.25 } else { s.range / 1.25 }).clamp(1e-3, 1e3),
+            _ => s.error_bound = (if up { s.error_bound * 2.0 } else { s.error_bound * 0.5 }).clamp(1e-5, 10.0),
+        }
+    }
+}
+
+/// The VPL count after `edge²`: the next of [`VPL_EDGES`], round the list.
+pub fn next_edge(edge: u32) -> u32 {
+    let i = VPL_EDGES.iter().position(|&e| e == edge).map_or(0, |i| (i + 1) % VPL_EDGES.len());
+    VPL_EDGES[i]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use slc_scene::scene::Scene;
+
+    fn controls() -> Controls {
+        let scene = Scene::cornell_box();
+        Controls::new(VplSettings::default(), scene.primary, scene.diagonal(), 256)
+    }
+
+    /// Keys change what they say, and unknown keys nothing.
+    #[test]
+    fn keys_change_the_settings() {
+        let mut c = controls();
+        let eps = c.settings.error_bound;
+        assert!(c.key(&Key::Character("+".into())));
+        assert_eq!(c.settings.error_bound, 2.0 * eps);
+        assert!(c.key(&Key::Character("2".into())));
+        assert_eq!(c.settings.method, VplMethod::Clamp);
+        let r = c.settings.range;
+        c.key(&Key::Character("-".into()));
+        assert!((c.settings.range - r / 1.25).abs() < 1e-6);
+        c.key(&Key::Character("d".into()));
+        assert!(!c.settings.denoise);
+        c.key(&Key::Character("f".into()));
+        assert_eq!(c.frame_settings(7).frame, 0, "frozen ξ");
+        c.key(&Key::Character("v".into()));
+        assert_eq!(c.rsm_edge, 512);
+        let before = c.clone();
+        assert!(!c.key(&Key::Character("q".into())));
+        assert_eq!(c, before);
+    }
+
+    /// The light at rest is the scene's; moved, aimed and animated lights
+    /// stay valid and move; `r` puts the scene's light back.
+    #[test]
+    fn the_light_moves_and_stays_valid() {
+        let mut c = controls();
+        assert_eq!(c.light(), Scene::cornell_box().primary);
+        c.key(&Key::Named(NamedKey::ArrowLeft));
+        c.drag((40.0, -25.0), 512.0);
+        c.key(&Key::Named(NamedKey::Space));
+        for _ in 0..100 {
+            c.tick(0.05);
+            c.light().validate().expect("a valid light");
+        }
+        let PrimaryLight::Spot { position: p, .. } = c.light() else { unreachable!("a spot") };
+        c.tick(TURN_SECONDS - 5.0);
+        let PrimaryLight::Spot { position: q, .. } = c.light() else { unreachable!("a spot") };
+        assert!((p - q).length() > 1e-3, "the light moved");
+        c.tick(5.0);
+        c.key(&Key::Character("r".into()));
+        assert_eq!(c.light(), Scene::cornell_box().primary, "reset");
+    }
+}
