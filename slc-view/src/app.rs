@@ -239,8 +239,11 @@ impl State {
         // With --frames the light moves by a fixed step per frame, so a
         // screenshot does not depend on the machine's speed.
         self.controls.tick(if opts.frames.is_some() { 1.0 / 60.0 } else { dt });
-        if self.controls.rsm_edge != self.desc.rsm_size {
-            self.desc.rsm_size = self.controls.rsm_edge;
+        // The frame follows the window's size (not with --frames, whose
+        // screenshot has the asked size) and the VPL count.
+        let size = if opts.frames.is_some() { (self.desc.width, self.desc.height) } else { (self.config.width, self.config.height) };
+        if self.controls.rsm_edge != self.desc.rsm_size || size != (self.desc.width, self.desc.height) {
+            (self.desc.rsm_size, self.desc.width, self.desc.height) = (self.controls.rsm_edge, size.0, size.1);
             self.frame = GpuVplFrame::new(self.gpu, &opts.scene, &self.desc)?;
             self.present.bind(&self.gpu.device, self.frame.output());
             self.stage_times = None;
@@ -293,16 +296,17 @@ impl State {
         let input = self.egui_state.take_egui_input(&self.window);
         let (c, fps) = (&mut self.controls, 1.0 / self.frame_seconds.max(1e-6));
         let (adapter, times, frame_ms) = (self.gpu.describe(), &self.stage_times, 1e3 * self.frame_seconds);
-        let output = self.egui_ctx.run_pass(input, |ctx| {
+        let mut output = self.egui_ctx.run_pass(input, |ctx| {
             egui::Window::new("slc").default_pos([8.0, 8.0]).show(ctx, |ui| panel(ui, c, &adapter, fps, frame_ms, times));
         });
         self.egui_state.handle_platform_output(&self.window, output.platform_output);
         let jobs = self.egui_ctx.tessellate(output.shapes, output.pixels_per_point);
         let screen = egui_wgpu::ScreenDescriptor { size_in_pixels: [w, h], pixels_per_point: output.pixels_per_point };
         let (device, queue) = (&self.gpu.device, &self.gpu.queue);
-        for (id, deltas) in &output.textures_delta.set {
-            for delta in deltas {
-                self.egui_renderer.update_texture(device, queue, *id, delta);
+        // Drained: epaint checks (in debug builds) that every delta is applied.
+        for (id, deltas) in output.textures_delta.set.drain() {
+            for delta in &deltas {
+                self.egui_renderer.update_texture(device, queue, id, delta);
             }
         }
         self.egui_renderer.update_buffers(device, queue, encoder, &jobs, &screen);
@@ -322,8 +326,8 @@ impl State {
             });
             self.egui_renderer.render(&mut pass.forget_lifetime(), &jobs, &screen);
         }
-        for id in &output.textures_delta.free {
-            self.egui_renderer.free_texture(id);
+        for id in output.textures_delta.free.drain() {
+            self.egui_renderer.free_texture(&id);
         }
     }
 }

@@ -1,6 +1,6 @@
 //! Shows the frame's HDR output on the window: a full-screen triangle
-//! reads the output texel under each window pixel (nearest, the frame
-//! stretched to the window), scales it by the exposure and encodes it with
+//! reads the output texel under each window pixel (nearest: the frame is
+//! rendered at the window's size, stretched only while they differ), scales it by the exposure and encodes it with
 //! slc-core's [`display_encode`](slc_core::frame::display_encode), the
 //! mapping of the PNG previews, into a non-sRGB view of the swap-chain
 //! image (so the encoding happens once).
