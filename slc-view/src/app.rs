@@ -284,7 +284,7 @@ impl State {
         self.window.pre_present_notify();
         gpu.queue.present(surface_texture);
         if timed {
-            self.stage_times = self.frame.stage_times(&settings)?;
+            self.stage_times = self.frame.stage_times()?;
         }
         self.check_errors()?;
         self.frame_index += 1;

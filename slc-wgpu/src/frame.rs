@@ -201,6 +201,8 @@ pub struct GpuVplFrame<'a> {
     compose_group: wgpu::BindGroup,
     output: Target,
     busy: std::sync::Mutex<Option<Timer>>,
+    /// The stages the last [`GpuVplFrame::record_timed`] timed, in order.
+    timed_stages: std::sync::Mutex<Vec<&'static str>>,
 }
 
 /// Number of stages that can be timed in one frame.
@@ -431,6 +433,7 @@ impl<'a> GpuVplFrame<'a> {
             // worker threads do (lavapipe reports microseconds for
             // 10⁸-evaluation dispatches): time it by the clock instead.
             busy: std::sync::Mutex::new(if gpu.adapter.device_type == wgpu::DeviceType::Cpu { None } else { Timer::new(gpu, MAX_STAGES) }),
+            timed_stages: std::sync::Mutex::new(Vec::new()),
         };
         gpu.take_errors()?;
         Ok(s)
@@ -464,7 +467,8 @@ impl<'a> GpuVplFrame<'a> {
     /// them with [`GpuVplFrame::stage_times`] once the encoder's commands
     /// are submitted. Returns whether the stages are timed.
     pub fn record_timed(&self, encoder: &mut wgpu::CommandEncoder, settings: &VplSettings) -> Result<bool, GpuError> {
-        let mut timer = self.busy.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
+        let poisoned = || GpuError::Device("a previous frame panicked".into());
+        let mut timer = self.busy.lock().map_err(|_| poisoned())?;
         let stages = self.stages(settings)?;
         match timer.as_mut() {
             Some(t) => {
@@ -473,6 +477,7 @@ impl<'a> GpuVplFrame<'a> {
                     self.record_stage(encoder, stage, Some(t));
                 }
                 t.resolve(encoder);
+                *self.timed_stages.lock().map_err(|_| poisoned())? = stages.iter().map(|s| s.name()).collect();
                 Ok(true)
             }
             None => {
@@ -486,12 +491,13 @@ impl<'a> GpuVplFrame<'a> {
 
     /// Every stage's GPU time of the last frame recorded by
     /// [`GpuVplFrame::record_timed`] (waits for it to finish); `None`
-    /// where the adapter has no usable timestamps.
-    pub fn stage_times(&self, settings: &VplSettings) -> Result<Option<Vec<StageTime>>, GpuError> {
-        let timer = self.busy.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
-        let Some(t) = timer.as_ref() else { return Ok(None) };
-        let names: Vec<&'static str> = self.stages(settings)?.iter().map(|s| s.name()).collect();
-        Ok(Some(names.into_iter().zip(t.durations_ms(self.gpu)?).map(|(name, ms)| StageTime { name, ms }).collect()))
+    /// where the adapter has no usable timestamps or no frame was timed.
+    pub fn stage_times(&self) -> Result<Option<Vec<StageTime>>, GpuError> {
+        let poisoned = || GpuError::Device("a previous frame panicked".into());
+        let timer = self.busy.lock().map_err(|_| poisoned())?;
+        let names = self.timed_stages.lock().map_err(|_| poisoned())?;
+        let Some(t) = timer.as_ref().filter(|_| !names.is_empty()) else { return Ok(None) };
+        Ok(Some(names.iter().zip(t.durations_ms(self.gpu)?).map(|(&name, ms)| StageTime { name, ms }).collect()))
     }
 
     /// The frame's stages for `settings`, each recordable on its own.
@@ -586,6 +592,9 @@ impl<'a> GpuVplFrame<'a> {
                     self.record_stage(&mut encoder, stage, Some(t));
                 }
                 t.resolve(&mut encoder);
+                if let Ok(mut names) = self.timed_stages.lock() {
+                    *names = stages.iter().map(|s| s.name()).collect();
+                }
                 gpu.queue.submit([encoder.finish()]);
                 gpu.wait()?;
                 for (stage, ms) in stages.iter().zip(t.durations_ms(gpu)?) {
