@@ -36,6 +36,9 @@ pub trait View: Sync {
     /// orthographic view).
     fn project(&self, p: Vec3) -> (f32, f32, f32);
 
+    /// The `depth` of [`View::project`] alone (an affine function of `p`).
+    fn depth(&self, p: Vec3) -> f32;
+
     /// The ray of pixel `(x, y)`.
     fn ray(&self, x: usize, y: usize) -> Ray;
 
@@ -60,6 +63,10 @@ pub struct Pinhole {
 impl View for Pinhole {
     fn size(&self) -> (usize, usize) {
         self.size
+    }
+
+    fn depth(&self, p: Vec3) -> f32 {
+        (p - self.eye).dot(self.basis.0)
     }
 
     fn project(&self, p: Vec3) -> (f32, f32, f32) {
@@ -97,6 +104,13 @@ pub struct MapView {
 impl View for MapView {
     fn size(&self) -> (usize, usize) {
         (self.size, self.size)
+    }
+
+    fn depth(&self, p: Vec3) -> f32 {
+        match self.map {
+            LightMap::Perspective { origin, axis, .. } => (p - origin).dot(axis),
+            LightMap::Orthographic { .. } => 1.0,
+        }
     }
 
     fn project(&self, p: Vec3) -> (f32, f32, f32) {
@@ -151,7 +165,7 @@ struct PixelBox {
 /// nearer than `near` or the box misses the image.
 fn pixel_box(view: &impl View, t: &[Vec3; 3], near: f32) -> Option<PixelBox> {
     let (w, h) = view.size();
-    let depth = t.map(|v| view.project(v).0);
+    let depth = t.map(|v| view.depth(v));
     if depth.iter().all(|&d| d < near) {
         return None;
     }
@@ -316,8 +330,10 @@ impl<'g, V: View> Occluders<'g, V> {
         let Some(ray) = Geometry::segment(a, b) else { return false };
         let (w, h) = self.view.size();
         let (depth, px, py) = self.view.project(a);
-        let end = self.view.project(Vec3::from(ray.origin + ray.direction * ray.tmax)).0;
-        let (x, y) = ((px + 0.5).floor(), (py + 0.5).floor());
+        let end = self.view.depth(Vec3::from(ray.origin + ray.direction * ray.tmax));
+        // Pixel i covers [i − ½, i + ½): truncation is the floor here, as
+        // negative coordinates are outside.
+        let (x, y) = (px + 0.5, py + 0.5);
         let near = self.view.near();
         if !(depth >= near && end >= near && depth > 0.0 && x >= 0.0 && y >= 0.0 && x < w as f32 && y < h as f32) {
             return self.geo.occluded(a, b);
@@ -385,7 +401,9 @@ mod tests {
             let (w, h) = view.size();
             for (x, y) in [(0, 0), (w / 3, h / 2), (w - 1, h - 1)] {
                 let r = view.ray(x, y);
-                let (depth, px, py) = view.project(Vec3::from(r.origin + r.direction * 2.5));
+                let p = Vec3::from(r.origin + r.direction * 2.5);
+                let (depth, px, py) = view.project(p);
+                assert_eq!(view.depth(p), depth, "depth is project's");
                 assert!(depth > 0.0 && (px - x as f32).abs() < 1e-3 && (py - y as f32).abs() < 1e-3, "({x}, {y}) → ({px}, {py})");
             }
         }
