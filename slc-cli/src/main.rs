@@ -25,13 +25,6 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
-/// Every frame allocates its buffers afresh (G-buffer, RSM, direct light,
-/// irradiance); mimalloc hands the previous frame's memory back instead of
-/// returning it to the kernel, whose page faults on a fresh 3 MB buffer
-/// cost more than the pass writing it.
-#[global_allocator]
-static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
-
 #[derive(Parser)]
 #[command(name = "slc", version, about = "Stochastic light culling (Tokuyoshi & Harada 2016): render, bench, inspect")]
 struct Cli {
