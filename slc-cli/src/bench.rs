@@ -142,9 +142,9 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
     if a.scene.backend == Backend::Gpu {
         return run_vpl_gpu(a);
     }
-    let loaded = a.scene.load()?;
-    let ctx = &loaded.ctx;
+    let mut loaded = a.scene.load()?;
     let configs = vpl_configs(&a, loaded.exposure);
+    let ctx = &mut loaded.ctx;
     let bar = progress(configs.len())?;
     bar.set_message("reference (all VPLs at every pixel; cached for the next run)");
     // The reference is one long call and is not timed: let the bar tick on

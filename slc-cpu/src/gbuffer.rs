@@ -20,30 +20,48 @@ use slc_scene::vpl::GBuffer;
 /// face the camera; the second vector holds each pixel's geometric normal on
 /// the same side (for ray offsets).
 pub fn render_gbuffer(scene: &Scene, geo: &Geometry, width: u32, height: u32) -> (GBuffer, Vec<Vec3>) {
-    let (w, h) = (width as usize, height as usize);
+    let mut gb = GBuffer { width, height, position: Vec::new(), normal: Vec::new(), albedo: Vec::new(), emission: Vec::new(), depth: Vec::new() };
+    let mut geometric = Vec::new();
+    render_gbuffer_into(scene, geo, &mut gb, &mut geometric);
+    (gb, geometric)
+}
+
+/// [`render_gbuffer`] at `gb`'s size into `gb` and `geometric`, reusing
+/// their memory when they already hold that many pixels (a frame loop's
+/// case: no fresh pages for the kernel to fault in), else into new
+/// buffers.
+pub fn render_gbuffer_into(scene: &Scene, geo: &Geometry, gb: &mut GBuffer, geometric: &mut Vec<Vec3>) {
+    let (w, h) = (gb.width as usize, gb.height as usize);
     let cam = &scene.camera;
-    let view = Pinhole { eye: cam.position, basis: cam.scaled_basis(width, height), size: (w, h) };
+    let view = Pinhole { eye: cam.position, basis: cam.scaled_basis(gb.width, gb.height), size: (w, h) };
     let hits = closest_hits(&view, geo, &scene.triangles);
-    // One parallel pass writes every buffer straight into fresh memory (a
-    // zero-filled buffer first would cost as much as the pass).
     type Texel = ((Vec3, Vec3), ((Vec3, Vec3), (f32, Vec3)));
-    type Buffers = ((Vec<Vec3>, Vec<Vec3>), ((Vec<Vec3>, Vec<Vec3>), (Vec<f32>, Vec<Vec3>)));
-    let ((position, normal), ((albedo, emission), (depth, geometric))): Buffers = (0..w * h)
-        .into_par_iter()
-        .map(|i| -> Texel {
-            let (x, y) = (i % w, i / w);
-            let (t, tri) = hits.at(x, y);
-            if tri == u32::MAX {
-                return ((Vec3::ZERO, Vec3::ZERO), ((Vec3::ZERO, Vec3::ZERO), (f32::INFINITY, Vec3::ZERO)));
-            }
-            let dir = Vec3::from(view.ray(x, y).direction);
-            let p = cam.position + dir * t;
-            let gn = face_against(geo.normal(tri), dir);
-            let m = scene.materials[scene.material_of[tri as usize] as usize];
-            ((p, scene.shading_normal(tri as usize, p, gn)), ((m.albedo, m.emission), (t, gn)))
-        })
-        .unzip();
-    (GBuffer { width, height, position, normal, albedo, emission, depth }, geometric)
+    let texel = |i: usize| -> Texel {
+        let (x, y) = (i % w, i / w);
+        let (t, tri) = hits.at(x, y);
+        if tri == u32::MAX {
+            return ((Vec3::ZERO, Vec3::ZERO), ((Vec3::ZERO, Vec3::ZERO), (f32::INFINITY, Vec3::ZERO)));
+        }
+        let dir = Vec3::from(view.ray(x, y).direction);
+        let p = cam.position + dir * t;
+        let gn = face_against(geo.normal(tri), dir);
+        let m = scene.materials[scene.material_of[tri as usize] as usize];
+        ((p, scene.shading_normal(tri as usize, p, gn)), ((m.albedo, m.emission), (t, gn)))
+    };
+    let n = w * h;
+    let sized = [gb.position.len(), gb.normal.len(), gb.albedo.len(), gb.emission.len(), gb.depth.len(), geometric.len()].iter().all(|&l| l == n);
+    if sized {
+        (&mut gb.position, &mut gb.normal, &mut gb.albedo, &mut gb.emission, &mut gb.depth, &mut *geometric)
+            .into_par_iter()
+            .enumerate()
+            .for_each(|(i, (p, nrm, a, e, d, g))| ((*p, *nrm), ((*a, *e), (*d, *g))) = texel(i));
+    } else {
+        // One parallel pass writes every buffer straight into fresh memory
+        // (a zero-filled buffer first would cost as much as the pass).
+        type Buffers = ((Vec<Vec3>, Vec<Vec3>), ((Vec<Vec3>, Vec<Vec3>), (Vec<f32>, Vec<Vec3>)));
+        let ((position, normal), ((albedo, emission), (depth, geo_n))): Buffers = (0..n).into_par_iter().map(texel).unzip();
+        (gb.position, gb.normal, gb.albedo, gb.emission, gb.depth, *geometric) = (position, normal, albedo, emission, depth, geo_n);
+    }
 }
 
 #[cfg(test)]

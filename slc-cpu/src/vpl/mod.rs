@@ -1,7 +1,7 @@
 //! Application A of the paper: real-time indirect illumination with VPLs.
 //!
 //! Pipeline (every step a function with a typed input and output):
-//! [`render_gbuffer`] → [`rsm::reflective_shadow_map`] (`size²` VPLs) →
+//! [`render_gbuffer_into`] → [`rsm::reflective_shadow_map_into`] (`size²` VPLs) →
 //! 8×8 interleaved sampling (pixel `(x, y)` uses VPL subset
 //! `(y mod 8)·8 + x mod 8`; subset of RSM texel `(tx, ty)` likewise, each
 //! subset's flux scaled by 64) → tiled shading of each sub-image with the
@@ -21,7 +21,7 @@ pub mod denoise;
 pub mod rsm;
 pub mod shade;
 
-use crate::gbuffer::render_gbuffer;
+use crate::gbuffer::render_gbuffer_into;
 use crate::geometry::Geometry;
 use crate::raster::{MapView, Occluders};
 use glam::Vec3;
@@ -49,6 +49,8 @@ pub struct VplContext {
     scene: Scene,
     geo: Geometry,
     inputs: VplInputs,
+    /// Each pixel's geometric normal (shadow-ray offsets).
+    geometric: Vec<Vec3>,
     direct: Vec<Vec3>,
     base: VplStats,
 }
@@ -61,18 +63,36 @@ impl VplContext {
     pub fn new(scene: &Scene, width: u32, height: u32, rsm_size: u32, min_distance: Option<f32>) -> Result<Self, RenderError> {
         let min_distance = slc_scene::vpl::check_frame(scene, width, height, rsm_size, min_distance)?;
         let geo = Geometry::new(&scene.triangles);
-        let (inputs, direct, base) = frame_inputs(scene, &geo, width, height, rsm_size, min_distance * min_distance);
-        Ok(VplContext { scene: scene.clone(), geo, inputs, direct, base })
+        let gbuffer =
+            GBuffer { width, height, position: Vec::new(), normal: Vec::new(), albedo: Vec::new(), emission: Vec::new(), depth: Vec::new() };
+        let vpls = Vpls { size: rsm_size, position: Vec::new(), normal: Vec::new(), flux: Vec::new() };
+        let mut inputs = VplInputs { gbuffer, vpls, min_d2: min_distance * min_distance };
+        let (mut geometric, mut direct) = (Vec::new(), Vec::new());
+        let base = frame_inputs(scene, &geo, true, &mut inputs, &mut geometric, &mut direct);
+        Ok(VplContext { scene: scene.clone(), geo, inputs, geometric, direct, base })
     }
 
-    /// Renders the G-buffer, the RSM and the direct light again, as a frame
-    /// whose camera or light moves does every frame, and returns their times
-    /// (the statistics [`VplContext::render`] reports hold the first, cold
-    /// run: thread start-up, first touches of memory). The context is
-    /// unchanged: the same scene gives the same buffers.
-    pub fn time_inputs(&self) -> VplStats {
-        let gb = &self.inputs.gbuffer;
-        frame_inputs(&self.scene, &self.geo, gb.width, gb.height, self.inputs.vpls.size, self.inputs.min_d2).2
+    /// Renders the G-buffer, the RSM and the direct light again into the
+    /// context's buffers, as a frame whose camera and light move does every
+    /// frame, and returns their times (the statistics
+    /// [`VplContext::render`] reports hold the first, cold run: thread
+    /// start-up, first touches of memory). The same scene gives the same
+    /// buffers.
+    pub fn time_inputs(&mut self) -> VplStats {
+        frame_inputs(&self.scene, &self.geo, true, &mut self.inputs, &mut self.geometric, &mut self.direct)
+    }
+
+    /// Moves or changes the primary light (the CPU twin of the GPU frame's
+    /// `set_primary`): the RSM and the direct light are rendered again into
+    /// the context's buffers (the G-buffer stands), and their times are
+    /// returned and kept for [`VplContext::render`]'s statistics. The light
+    /// is checked as the scene's is; a refused light changes nothing.
+    pub fn set_primary(&mut self, primary: PrimaryLight) -> Result<VplStats, RenderError> {
+        primary.validate().map_err(|e| RenderError::Setting(e.to_string()))?;
+        self.scene.primary = primary;
+        let t = frame_inputs(&self.scene, &self.geo, false, &mut self.inputs, &mut self.geometric, &mut self.direct);
+        (self.base.rsm_ms, self.base.direct_ms) = (t.rsm_ms, t.direct_ms);
+        Ok(t)
     }
 
     /// What a backend shades: G-buffer, VPLs, clamp distance.
@@ -365,21 +385,32 @@ impl VplContext {
     }
 }
 
-/// The method-independent part of a frame: G-buffer, VPLs (RSM) and direct
-/// light, with their times in the returned statistics.
-fn frame_inputs(scene: &Scene, geo: &Geometry, width: u32, height: u32, rsm_size: u32, min_d2: f32) -> (VplInputs, Vec<Vec3>, VplStats) {
+/// The method-independent part of a frame: G-buffer (unless `camera_moved`
+/// is false), VPLs (RSM) and direct light, rendered into `inputs`,
+/// `geometric` and `direct` (their memory reused at the same size), with
+/// their times in the returned statistics (G-buffer 0 when not rendered).
+fn frame_inputs(
+    scene: &Scene,
+    geo: &Geometry,
+    camera_moved: bool,
+    inputs: &mut VplInputs,
+    geometric: &mut Vec<Vec3>,
+    direct: &mut Vec<Vec3>,
+) -> VplStats {
     let mut base = VplStats::default();
+    if camera_moved {
+        let t = Instant::now();
+        render_gbuffer_into(scene, geo, &mut inputs.gbuffer, geometric);
+        base.gbuffer_ms = ms(t);
+    }
     let t = Instant::now();
-    let (gbuffer, geometric_normal) = render_gbuffer(scene, geo, width, height);
-    base.gbuffer_ms = ms(t);
-    let t = Instant::now();
-    let vpls = rsm::reflective_shadow_map(scene, geo, rsm_size);
+    rsm::reflective_shadow_map_into(scene, geo, &mut inputs.vpls);
     base.rsm_ms = ms(t);
     let t = Instant::now();
-    let direct = direct_light(scene, geo, &gbuffer, &geometric_normal);
+    direct_light(scene, geo, &inputs.gbuffer, geometric, direct);
     base.direct_ms = ms(t);
-    base.vpls = vpls.len();
-    (VplInputs { gbuffer, vpls, min_d2 }, direct, base)
+    base.vpls = inputs.vpls.len();
+    base
 }
 
 /// One tile's receivers: an index per pixel (where its result goes), its
@@ -422,43 +453,47 @@ pub const NEAR_TILE: usize = 8;
 /// segments are binned to (see [`Occluders`]).
 const SHADOW_GRID: usize = 64;
 
-/// Direct irradiance from the primary light, with shadow segments offset
+/// Direct irradiance from the primary light into `out` (one value per
+/// pixel), with shadow segments offset
 /// along the geometric normal `geo_n` (cosines use the G-buffer's shading
 /// normal). Every shadow segment runs along a ray of the light's map, so
 /// it is tested against the triangles binned to its texel ([`Occluders`],
 /// the ray caster's answer without a BVH walk), and only where the light
 /// would add something (facing the light, inside a spot's cone).
-fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer, geo_n: &[Vec3]) -> Vec<Vec3> {
+fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer, geo_n: &[Vec3], out: &mut Vec<Vec3>) {
     let diag = scene.diagonal();
     let spot = scene.primary.spot().map(Light::Spot);
     let map = MapView { map: scene.primary.light_map(scene.bounds()), size: SHADOW_GRID, t_min: surface_offset(diag) };
     let occluders = Occluders::new(map, geo, &scene.triangles);
-    (0..gb.position.len())
-        .into_par_iter()
-        .map(|i| {
-            if !gb.valid(i) {
-                return Vec3::ZERO;
+    let pixel = |i: usize| -> Vec3 {
+        if !gb.valid(i) {
+            return Vec3::ZERO;
+        }
+        let (x, n) = (gb.position[i], gb.normal[i]);
+        let from = x + geo_n[i] * surface_offset(diag);
+        match scene.primary {
+            PrimaryLight::Spot { position, .. } => {
+                let v = position - x;
+                // A spot light's parameters are checked when the scene is.
+                let Some(spot) = spot.as_ref().filter(|_| n.dot(v) > 0.0) else { return Vec3::ZERO };
+                let e = point_irradiance(spot.intensity(-v.normalize()), n, v);
+                if e == Vec3::ZERO || occluders.occluded(from, position) { Vec3::ZERO } else { e }
             }
-            let (x, n) = (gb.position[i], gb.normal[i]);
-            let from = x + geo_n[i] * surface_offset(diag);
-            match scene.primary {
-                PrimaryLight::Spot { position, .. } => {
-                    let v = position - x;
-                    // A spot light's parameters are checked when the scene is.
-                    let Some(spot) = spot.as_ref().filter(|_| n.dot(v) > 0.0) else { return Vec3::ZERO };
-                    let e = point_irradiance(spot.intensity(-v.normalize()), n, v);
-                    if e == Vec3::ZERO || occluders.occluded(from, position) { Vec3::ZERO } else { e }
+            PrimaryLight::Directional { direction, irradiance } => {
+                let wi = -direction.normalize();
+                if n.dot(wi) <= 0.0 || occluders.occluded(from, x + wi * 2.0 * diag) {
+                    return Vec3::ZERO;
                 }
-                PrimaryLight::Directional { direction, irradiance } => {
-                    let wi = -direction.normalize();
-                    if n.dot(wi) <= 0.0 || occluders.occluded(from, x + wi * 2.0 * diag) {
-                        return Vec3::ZERO;
-                    }
-                    directional_irradiance(irradiance, n, wi)
-                }
+                directional_irradiance(irradiance, n, wi)
             }
-        })
-        .collect()
+        }
+    };
+    // In place when the buffer has the frame's size (no fresh pages).
+    if out.len() == gb.position.len() {
+        out.par_iter_mut().enumerate().for_each(|(i, e)| *e = pixel(i));
+    } else {
+        *out = (0..gb.position.len()).into_par_iter().map(pixel).collect();
+    }
 }
 
 impl IndirectShader for VplContext {

@@ -17,37 +17,42 @@ use slc_scene::vpl::Vpls;
 /// times its solid angle (spot) or the irradiance times its area
 /// (directional).
 pub fn reflective_shadow_map(scene: &Scene, geo: &Geometry, size: u32) -> Vpls {
+    let mut vpls = Vpls { size, position: Vec::new(), normal: Vec::new(), flux: Vec::new() };
+    reflective_shadow_map_into(scene, geo, &mut vpls);
+    vpls
+}
+
+/// [`reflective_shadow_map`] at `vpls.size` into `vpls`, reusing its memory
+/// when it already holds that many texels, else into new buffers.
+pub fn reflective_shadow_map_into(scene: &Scene, geo: &Geometry, vpls: &mut Vpls) {
+    let size = vpls.size;
     let n = size as usize * size as usize;
     let map = scene.primary.light_map(scene.bounds());
     let hits = closest_hits(&MapView { map, size: size as usize, t_min: surface_offset(scene.diagonal()) }, geo, &scene.triangles);
     let spot = scene.primary.spot().map(Light::Spot);
-    let texels: Vec<(Vec3, Vec3, Vec3)> = (0..n)
-        .into_par_iter()
-        .map(|i| {
-            let (tx, ty) = (i % size as usize, i / size as usize);
-            let (origin, dir, gathered) = map.texel_ray(tx as u32, ty as u32, size);
-            let (t, tri) = hits.at(tx, ty);
-            if tri == u32::MAX {
-                return (origin, -dir, Vec3::ZERO);
-            }
-            let incident = match scene.primary {
-                // A spot light's parameters are checked when the scene is.
-                PrimaryLight::Spot { .. } => spot.as_ref().map_or(Vec3::ZERO, |s| s.intensity(dir)) * gathered,
-                PrimaryLight::Directional { irradiance, .. } => irradiance * gathered,
-            };
-            // The VPL: the hit point, its normal toward the light, the
-            // incident flux times the surface albedo.
-            let gn = face_against(geo.normal(tri), dir);
-            let p = origin + dir * t;
-            let albedo = scene.materials[scene.material_of[tri as usize] as usize].albedo;
-            (p, scene.shading_normal(tri as usize, p, gn), incident * albedo)
-        })
-        .collect();
-    Vpls {
-        size,
-        position: texels.iter().map(|t| t.0).collect(),
-        normal: texels.iter().map(|t| t.1).collect(),
-        flux: texels.iter().map(|t| t.2).collect(),
+    let texel = |i: usize| -> (Vec3, (Vec3, Vec3)) {
+        let (tx, ty) = (i % size as usize, i / size as usize);
+        let (origin, dir, gathered) = map.texel_ray(tx as u32, ty as u32, size);
+        let (t, tri) = hits.at(tx, ty);
+        if tri == u32::MAX {
+            return (origin, (-dir, Vec3::ZERO));
+        }
+        let incident = match scene.primary {
+            // A spot light's parameters are checked when the scene is.
+            PrimaryLight::Spot { .. } => spot.as_ref().map_or(Vec3::ZERO, |s| s.intensity(dir)) * gathered,
+            PrimaryLight::Directional { irradiance, .. } => irradiance * gathered,
+        };
+        // The VPL: the hit point, its normal toward the light, the
+        // incident flux times the surface albedo.
+        let gn = face_against(geo.normal(tri), dir);
+        let p = origin + dir * t;
+        let albedo = scene.materials[scene.material_of[tri as usize] as usize].albedo;
+        (p, (scene.shading_normal(tri as usize, p, gn), incident * albedo))
+    };
+    if [vpls.position.len(), vpls.normal.len(), vpls.flux.len()].iter().all(|&l| l == n) {
+        (&mut vpls.position, &mut vpls.normal, &mut vpls.flux).into_par_iter().enumerate().for_each(|(i, (p, nrm, f))| (*p, (*nrm, *f)) = texel(i));
+    } else {
+        (vpls.position, (vpls.normal, vpls.flux)) = (0..n).into_par_iter().map(texel).unzip();
     }
 }
 
