@@ -20,7 +20,7 @@ use slc_scene::vpl::GBuffer;
 /// face the camera; the second vector holds each pixel's geometric normal on
 /// the same side (for ray offsets).
 pub fn render_gbuffer(scene: &Scene, geo: &Geometry, width: u32, height: u32) -> (GBuffer, Vec<Vec3>) {
-    let mut gb = GBuffer { width, height, position: Vec::new(), normal: Vec::new(), albedo: Vec::new(), emission: Vec::new(), depth: Vec::new() };
+    let mut gb = GBuffer { width, height, ..GBuffer::default() };
     let mut geometric = Vec::new();
     render_gbuffer_into(scene, geo, &mut gb, &mut geometric);
     (gb, geometric)

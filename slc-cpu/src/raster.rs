@@ -315,7 +315,11 @@ impl<'g, V: View> Occluders<'g, V> {
     /// `view`.
     pub fn new(view: V, geo: &'g Geometry, triangles: &[[Vec3; 3]]) -> Self {
         let bins = Bins::new(&view, triangles, 1, view.near());
-        let planes = triangles.iter().enumerate().map(|(i, t)| (geo.normal(i as u32), geo.normal(i as u32).dot(t[0]))).collect();
+        let plane = |(i, t): (usize, &[Vec3; 3])| {
+            let n = geo.normal(i as u32);
+            (n, n.dot(t[0]))
+        };
+        let planes = triangles.iter().enumerate().map(plane).collect();
         let extent = triangles.iter().flatten().fold(0.0f32, |m, v| m.max(v.abs().max_element()));
         Occluders { view, geo, bins, planes, margin: 1e-6 * extent }
     }

@@ -215,7 +215,7 @@ pub struct VplFrame {
 
 /// Per-pixel surface attributes (row-major, y down). Pixels that see no
 /// surface have `depth = ∞` and zero attributes.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Default)]
 pub struct GBuffer {
     /// Width in pixels.
     pub width: u32,

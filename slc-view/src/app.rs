@@ -9,7 +9,7 @@ use crate::{ViewError, ViewOptions, ViewSummary};
 use slc_scene::vpl::VplMethod;
 use slc_wgpu::GpuContext;
 use slc_wgpu::frame::{FrameDesc, GpuVplFrame, StageTime};
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 use std::time::Instant;
 use winit::application::ApplicationHandler;
 use winit::dpi::PhysicalSize;
@@ -102,7 +102,6 @@ struct State {
     view_format: wgpu::TextureFormat,
     /// Leaked once per run: the frame borrows it for the program's life.
     gpu: &'static GpuContext,
-    errors: Arc<Mutex<Vec<String>>>,
     frame: GpuVplFrame<'static>,
     desc: FrameDesc,
     present: Present,
@@ -130,21 +129,7 @@ impl State {
             slc_wgpu::GpuError::NoAdapter(why) => ViewError::NoAdapter(why),
             e => e.into(),
         })?;
-        let timestamps = adapter.features().contains(wgpu::Features::TIMESTAMP_QUERY);
-        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
-            label: Some("slc view"),
-            required_features: if timestamps { wgpu::Features::TIMESTAMP_QUERY } else { wgpu::Features::empty() },
-            required_limits: adapter.limits(),
-            ..Default::default()
-        }))
-        .map_err(|e| ViewError::NoAdapter(format!("the adapter opened no device: {e}")))?;
-        let errors: Arc<Mutex<Vec<String>>> = Arc::default();
-        let sink = errors.clone();
-        device.on_uncaptured_error(Arc::new(move |e: wgpu::Error| {
-            if let Ok(mut v) = sink.lock() {
-                v.push(e.to_string());
-            }
-        }));
+        let gpu: &'static GpuContext = Box::leak(Box::new(GpuContext::open(&adapter)?));
         // The swap chain: 8-bit, drawn through a non-sRGB view (the present
         // pass encodes once).
         let caps = surface.get_capabilities(&adapter);
@@ -168,8 +153,7 @@ impl State {
             alpha_mode: caps.alpha_modes.first().copied().unwrap_or(wgpu::CompositeAlphaMode::Auto),
             view_formats: if view_format == format { Vec::new() } else { vec![view_format] },
         };
-        surface.configure(&device, &config);
-        let gpu: &'static GpuContext = Box::leak(Box::new(GpuContext::from_device(device, queue)));
+        surface.configure(&gpu.device, &config);
         let desc = FrameDesc {
             width: opts.width,
             height: opts.height,
@@ -191,7 +175,6 @@ impl State {
             config,
             view_format,
             gpu,
-            errors,
             frame,
             desc,
             present,
@@ -206,7 +189,7 @@ impl State {
             dragging: false,
             cursor: None,
         };
-        state.check_errors()?;
+        gpu.take_errors()?;
         Ok(state)
     }
 
@@ -216,16 +199,6 @@ impl State {
             self.config.height = size.height;
             self.surface.configure(&self.gpu.device, &self.config);
         }
-    }
-
-    fn check_errors(&self) -> Result<(), ViewError> {
-        let mut v = self.errors.lock().map_err(|_| ViewError::Gpu("the device's error log is poisoned".into()))?;
-        if v.is_empty() {
-            return Ok(());
-        }
-        let msg = v.join("; ");
-        v.clear();
-        Err(ViewError::Gpu(msg))
     }
 
     /// One frame: the light and settings of the controls, the GPU frame,
@@ -286,7 +259,7 @@ impl State {
         if timed {
             self.stage_times = self.frame.stage_times()?;
         }
-        self.check_errors()?;
+        self.gpu.take_errors()?;
         self.frame_index += 1;
         Ok(opts.frames.is_some_and(|n| self.frame_index >= n))
     }

@@ -49,8 +49,8 @@ impl Controls {
     /// animation's circle (radius five steps), its direction turned by
     /// `yaw` about +y and tilted by `pitch`.
     pub fn light(&self) -> PrimaryLight {
-        let circle =
-            if self.animate || self.phase != 0.0 { Vec3::new(self.phase.cos() - 1.0, 0.0, self.phase.sin()) * (5.0 * self.step) } else { Vec3::ZERO };
+        // Zero at phase 0: the light starts, and resets, at the scene's.
+        let circle = Vec3::new(self.phase.cos() - 1.0, 0.0, self.phase.sin()) * (5.0 * self.step);
         let turn = |d: Vec3| {
             let d = Quat::from_rotation_y(self.yaw) * d;
             let right = d.cross(Vec3::Y);

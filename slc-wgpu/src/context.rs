@@ -25,7 +25,15 @@ impl GpuContext {
     /// device with the adapter's full limits.
     pub fn new() -> Result<GpuContext, GpuError> {
         let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
-        let adapter = pick_adapter(&instance, None)?;
+        GpuContext::open(&pick_adapter(&instance, None)?)
+    }
+
+    /// Opens a device on `adapter` with the adapter's full limits and
+    /// timestamp queries where it has them, and installs an error handler
+    /// and a device-lost callback that [`GpuContext::take_errors`] reports.
+    /// An application that picks its own adapter (one that can present to
+    /// its window, as `slc view` does) starts here.
+    pub fn open(adapter: &wgpu::Adapter) -> Result<GpuContext, GpuError> {
         let info = adapter.get_info();
         let limits = adapter.limits();
         let timestamps = adapter.features().contains(wgpu::Features::TIMESTAMP_QUERY);

@@ -263,10 +263,9 @@ impl<'a> GpuVplFrame<'a> {
                 usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             })
         };
-        let camera_map =
-            MapParams { c0: Vec4::ZERO, c1: Vec4::ZERO, c2: Vec4::ZERO, c3: Vec4::ZERO, origin: cam.position, mode: MAP_CAMERA, size: 0, ..light };
         let [c0, c1, c2, c3] = columns(camera_vp);
-        let camera_params = uniform("slc camera params", bytemuck::bytes_of(&MapParams { c0, c1, c2, c3, ..camera_map }));
+        let camera_params =
+            uniform("slc camera params", bytemuck::bytes_of(&MapParams { c0, c1, c2, c3, origin: cam.position, mode: MAP_CAMERA, size: 0, ..light }));
         let light_params = uniform("slc light params", bytemuck::bytes_of(&light));
         let shadow_params = uniform("slc shadow params", bytemuck::bytes_of(&shadow_light));
         let image_params =
@@ -467,25 +466,30 @@ impl<'a> GpuVplFrame<'a> {
     /// them with [`GpuVplFrame::stage_times`] once the encoder's commands
     /// are submitted. Returns whether the stages are timed.
     pub fn record_timed(&self, encoder: &mut wgpu::CommandEncoder, settings: &VplSettings) -> Result<bool, GpuError> {
-        let poisoned = || GpuError::Device("a previous frame panicked".into());
-        let mut timer = self.busy.lock().map_err(|_| poisoned())?;
+        let mut timer = self.busy.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
         let stages = self.stages(settings)?;
         match timer.as_mut() {
-            Some(t) => {
-                t.reset();
-                for stage in &stages {
-                    self.record_stage(encoder, stage, Some(t));
-                }
-                t.resolve(encoder);
-                *self.timed_stages.lock().map_err(|_| poisoned())? = stages.iter().map(|s| s.name()).collect();
-                Ok(true)
-            }
+            Some(t) => self.record_with_timestamps(encoder, &stages, t),
             None => {
                 for stage in &stages {
                     self.record_stage(encoder, stage, None);
                 }
-                Ok(false)
             }
+        }
+        Ok(timer.is_some())
+    }
+
+    /// Records `stages` with a timestamp pair around each, resolves the
+    /// queries and remembers the stages' names for
+    /// [`GpuVplFrame::stage_times`].
+    fn record_with_timestamps(&self, encoder: &mut wgpu::CommandEncoder, stages: &[Stage], t: &mut Timer) {
+        t.reset();
+        for stage in stages {
+            self.record_stage(encoder, stage, Some(t));
+        }
+        t.resolve(encoder);
+        if let Ok(mut names) = self.timed_stages.lock() {
+            *names = stages.iter().map(|s| s.name()).collect();
         }
     }
 
@@ -586,15 +590,8 @@ impl<'a> GpuVplFrame<'a> {
         let mut times = Vec::with_capacity(stages.len());
         let timing = match timer.as_mut() {
             Some(t) => {
-                t.reset();
                 let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc frame") });
-                for stage in &stages {
-                    self.record_stage(&mut encoder, stage, Some(t));
-                }
-                t.resolve(&mut encoder);
-                if let Ok(mut names) = self.timed_stages.lock() {
-                    *names = stages.iter().map(|s| s.name()).collect();
-                }
+                self.record_with_timestamps(&mut encoder, &stages, t);
                 gpu.queue.submit([encoder.finish()]);
                 gpu.wait()?;
                 for (stage, ms) in stages.iter().zip(t.durations_ms(gpu)?) {

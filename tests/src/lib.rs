@@ -64,11 +64,15 @@ pub enum Needs {
 /// Why no window can be opened here, or `None` when a display exists or
 /// `xvfb-run` can make one.
 fn display_missing() -> Option<String> {
-    let set = |k: &str| std::env::var_os(k).is_some_and(|v| !v.is_empty());
-    if set("DISPLAY") || set("WAYLAND_DISPLAY") || xvfb_run().is_some() {
+    if display_set() || xvfb_run().is_some() {
         return None;
     }
     Some("no DISPLAY or WAYLAND_DISPLAY, and no xvfb-run on the PATH (apt-get install xvfb)".into())
+}
+
+/// `true` when `DISPLAY` or `WAYLAND_DISPLAY` names a display.
+fn display_set() -> bool {
+    ["DISPLAY", "WAYLAND_DISPLAY"].iter().any(|k| std::env::var_os(k).is_some_and(|v| !v.is_empty()))
 }
 
 /// `xvfb-run` on the `PATH`, if any.
@@ -79,8 +83,7 @@ fn xvfb_run() -> Option<std::path::PathBuf> {
 /// A command running `program` with a window: directly where a display is
 /// set, else under `xvfb-run -a` (a 1024×768 virtual screen).
 pub fn windowed(program: &std::path::Path) -> std::process::Command {
-    let set = |k: &str| std::env::var_os(k).is_some_and(|v| !v.is_empty());
-    match xvfb_run().filter(|_| !set("DISPLAY") && !set("WAYLAND_DISPLAY")) {
+    match xvfb_run().filter(|_| !display_set()) {
         Some(xvfb) => {
             let mut c = std::process::Command::new(xvfb);
             c.args(["-a", "-s", "-screen 0 1024x768x24"]).arg(program);

@@ -63,9 +63,7 @@ impl VplContext {
     pub fn new(scene: &Scene, width: u32, height: u32, rsm_size: u32, min_distance: Option<f32>) -> Result<Self, RenderError> {
         let min_distance = slc_scene::vpl::check_frame(scene, width, height, rsm_size, min_distance)?;
         let geo = Geometry::new(&scene.triangles);
-        let gbuffer =
-            GBuffer { width, height, position: Vec::new(), normal: Vec::new(), albedo: Vec::new(), emission: Vec::new(), depth: Vec::new() };
-        let vpls = Vpls { size: rsm_size, position: Vec::new(), normal: Vec::new(), flux: Vec::new() };
+        let (gbuffer, vpls) = (GBuffer { width, height, ..GBuffer::default() }, Vpls { size: rsm_size, ..Vpls::default() });
         let mut inputs = VplInputs { gbuffer, vpls, min_d2: min_distance * min_distance };
         let (mut geometric, mut direct) = (Vec::new(), Vec::new());
         let base = frame_inputs(scene, &geo, true, &mut inputs, &mut geometric, &mut direct);

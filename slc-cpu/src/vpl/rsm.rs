@@ -17,7 +17,7 @@ use slc_scene::vpl::Vpls;
 /// times its solid angle (spot) or the irradiance times its area
 /// (directional).
 pub fn reflective_shadow_map(scene: &Scene, geo: &Geometry, size: u32) -> Vpls {
-    let mut vpls = Vpls { size, position: Vec::new(), normal: Vec::new(), flux: Vec::new() };
+    let mut vpls = Vpls { size, ..Vpls::default() };
     reflective_shadow_map_into(scene, geo, &mut vpls);
     vpls
 }
