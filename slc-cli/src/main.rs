@@ -174,20 +174,46 @@ fn main() -> ExitCode {
     }
 }
 
-/// The VPL settings of a render: flags, else the scene file's, else the defaults.
-fn vpl_settings(a: &RenderArgs, f: &slc_scene::scene_file::RenderSettings, exposure: f32) -> anyhow::Result<VplSettings> {
+/// The flags that choose a VPL method and its parameters (`render` and `view`).
+pub(crate) struct MethodFlags<'a> {
+    pub method: Option<&'a str>,
+    pub error_bound: Option<f32>,
+    pub range: Option<f32>,
+    pub seed: Option<u32>,
+    pub no_denoise: bool,
+    pub tile: u32,
+    pub near_radius: Option<f32>,
+}
+
+/// The VPL settings of a run: flags, else the scene file's, else the defaults.
+pub(crate) fn vpl_settings(m: &MethodFlags, f: &slc_scene::scene_file::RenderSettings, exposure: f32) -> anyhow::Result<VplSettings> {
     let d = VplSettings::default();
     Ok(VplSettings {
-        method: vpl_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or("slc"))?,
-        error_bound: a.error_bound.or(f.error_bound).unwrap_or(d.error_bound),
-        range: a.range.or(f.range).unwrap_or(d.range),
+        method: vpl_method(m.method.or(f.method.as_deref()).unwrap_or("slc"))?,
+        error_bound: m.error_bound.or(f.error_bound).unwrap_or(d.error_bound),
+        range: m.range.or(f.range).unwrap_or(d.range),
         exposure,
-        seed: a.seed.or(f.seed).unwrap_or(d.seed),
-        denoise: !a.no_denoise,
-        tile: a.scene.tile,
-        near_radius: a.scene.near_radius,
+        seed: m.seed.or(f.seed).unwrap_or(d.seed),
+        denoise: !m.no_denoise,
+        tile: m.tile,
+        near_radius: m.near_radius,
         ..d
     })
+}
+
+impl RenderArgs {
+    /// The VPL method flags of this render.
+    fn method_flags(&self) -> MethodFlags<'_> {
+        MethodFlags {
+            method: self.method.as_deref(),
+            error_bound: self.error_bound,
+            range: self.range,
+            seed: self.seed,
+            no_denoise: self.no_denoise,
+            tile: self.scene.tile,
+            near_radius: self.scene.near_radius,
+        }
+    }
 }
 
 fn render(a: RenderArgs) -> anyhow::Result<()> {
@@ -203,7 +229,7 @@ fn render(a: RenderArgs) -> anyhow::Result<()> {
     let spinner = spinner("scene, G-buffer, reflective shadow map, direct light");
     let loaded = a.scene.load()?;
     let (ctx, f) = (&loaded.ctx, &loaded.file);
-    let settings = vpl_settings(&a, f, loaded.exposure)?;
+    let settings = vpl_settings(&a.method_flags(), f, loaded.exposure)?;
     spinner.set_message(format!("shading ({}, cpu)", settings.method.name()));
     let frame = ctx.render(&settings)?;
     spinner.set_message("writing images");
@@ -238,7 +264,7 @@ fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
     let t0 = Instant::now();
     let spinner = spinner("scene and GPU pipelines");
     let r = a.scene.resolve()?;
-    let settings = vpl_settings(&a, &r.file, r.exposure)?;
+    let settings = vpl_settings(&a.method_flags(), &r.file, r.exposure)?;
     if settings.method == VplMethod::Reference {
         return Err(anyhow!("--method reference (every VPL at every pixel) runs on the CPU; use --backend cpu"));
     }

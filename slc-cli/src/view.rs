@@ -73,22 +73,19 @@ pub fn run(a: ViewArgs) -> anyhow::Result<()> {
         shadow_size: a.shadow_size,
     };
     let r = scene_args.resolve()?;
-    let f = &r.file;
-    let d = VplSettings::default();
-    let method = crate::vpl_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or("slc"))?;
-    if method == VplMethod::Reference {
+    let flags = crate::MethodFlags {
+        method: a.method.as_deref(),
+        error_bound: a.error_bound,
+        range: a.range,
+        seed: None,
+        no_denoise: a.no_denoise,
+        tile: VplSettings::default().tile,
+        near_radius: a.near_radius,
+    };
+    let settings = crate::vpl_settings(&flags, &r.file, r.exposure)?;
+    if settings.method == VplMethod::Reference {
         return Err(anyhow!("--method reference (every VPL at every pixel) is not a real-time method; use slc, clamp or none"));
     }
-    let settings = VplSettings {
-        method,
-        error_bound: a.error_bound.or(f.error_bound).unwrap_or(d.error_bound),
-        range: a.range.or(f.range).unwrap_or(d.range),
-        exposure: r.exposure,
-        seed: f.seed.unwrap_or(d.seed),
-        denoise: !a.no_denoise,
-        near_radius: a.near_radius,
-        ..d
-    };
     let opts = slc_view::ViewOptions {
         scene: r.scene,
         width: r.width,
