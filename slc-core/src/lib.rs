@@ -18,6 +18,7 @@
 //! | [`light_bvh`] | the light BVH's descent steps, sample and pmf (the `lightbvh` baseline) |
 //! | [`reservoir`] | k-slot Algorithm R and a weighted variant |
 //! | [`estimator`] | SLC, clamped-range and unculled sums at one shading point |
+//! | [`brdf`] | glTF 2.0 metallic-roughness BRDF (Lambert + GGX, height-correlated Smith, Schlick), bounded-VNDF sampling, lobe choice and pdf |
 //! | [`mis`] | balance and power heuristics, cosine pdf and cosine-weighted directions (light pdfs include `p_rr`) |
 //! | [`ray`] | ray–box and ray–triangle tests for the GPU's geometry BVH |
 //! | [`path`] | the camera ray and Russian roulette on path length of both path tracers |
@@ -49,6 +50,7 @@ extern crate alloc;
 #[macro_use]
 pub mod wgsl;
 
+pub mod brdf;
 pub mod bsh;
 pub mod denoise;
 pub mod estimator;

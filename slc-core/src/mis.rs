@@ -59,20 +59,42 @@ crate::shared! {
         return max(cos_theta, 0.0) * INV_PI;
     }
 
-    /// Cosine-weighted direction about the unit normal `n` for `u1, u2 ∈
-    /// [0, 1)` (Malley's method: a uniform disk point `(√u1, 2πu2)` lifted
-    /// to the hemisphere), in the branchless orthonormal basis of Duff et
-    /// al., "Building an Orthonormal Basis, Revisited" (JCGT 2017). Its pdf
-    /// is [`cosine_pdf`] of the cosine with `n`.
-    pub fn cosine_direction(n: vec3f, u1: f32, u2: f32) -> vec3f {
+    /// Tangent of the branchless orthonormal basis about the unit normal
+    /// `n` (Duff et al., "Building an Orthonormal Basis, Revisited", JCGT
+    /// 2017): with [`onb_bitangent`] and `n` a right-handed frame.
+    pub fn onb_tangent(n: vec3f) -> vec3f {
         let s: f32 = select(-1.0, 1.0, n.z >= 0.0);
         let a: f32 = -1.0 / (s + n.z);
-        let b: f32 = n.x * n.y * a;
-        let t: vec3f = vec3f(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
-        let bt: vec3f = vec3f(b, s + n.y * n.y * a, -n.y);
+        return vec3f(1.0 + s * n.x * n.x * a, s * n.x * n.y * a, -s * n.x);
+    }
+
+    /// Bitangent of the basis of [`onb_tangent`].
+    pub fn onb_bitangent(n: vec3f) -> vec3f {
+        let s: f32 = select(-1.0, 1.0, n.z >= 0.0);
+        let a: f32 = -1.0 / (s + n.z);
+        return vec3f(n.x * n.y * a, s + n.y * n.y * a, -n.y);
+    }
+
+    /// World direction of the local direction `d` (`z` along `n`) in the
+    /// basis of [`onb_tangent`].
+    pub fn onb_to_world(n: vec3f, d: vec3f) -> vec3f {
+        return onb_tangent(n) * d.x + onb_bitangent(n) * d.y + n * d.z;
+    }
+
+    /// Local coordinates (`z` along `n`) of the world direction `w` in the
+    /// basis of [`onb_tangent`].
+    pub fn onb_to_local(n: vec3f, w: vec3f) -> vec3f {
+        return vec3f(dot(w, onb_tangent(n)), dot(w, onb_bitangent(n)), dot(w, n));
+    }
+
+    /// Cosine-weighted direction about the unit normal `n` for `u1, u2 ∈
+    /// [0, 1)` (Malley's method: a uniform disk point `(√u1, 2πu2)` lifted
+    /// to the hemisphere) in the basis of [`onb_tangent`]. Its pdf is
+    /// [`cosine_pdf`] of the cosine with `n`.
+    pub fn cosine_direction(n: vec3f, u1: f32, u2: f32) -> vec3f {
         let r: f32 = sqrt(u1);
         let phi: f32 = 6.2831855 * u2;
-        return normalize(t * (r * cos(phi)) + bt * (r * sin(phi)) + n * sqrt(max(1.0 - u1, 0.0)));
+        return normalize(onb_to_world(n, vec3f(r * cos(phi), r * sin(phi), sqrt(max(1.0 - u1, 0.0)))));
     }
 }
 

@@ -54,7 +54,7 @@ const NUMERIC_PRELUDE: &str = numeric_helpers!();
 const IES_TABLE: &str = concat!(composable_table_binding!(), table_reader!());
 
 /// Every module's name and shared items, in dependency order, as raw text.
-const MODULES: [(&str, &str); 15] = [
+const MODULES: [(&str, &str); 16] = [
     ("xi", crate::xi::WGSL),
     ("range", crate::range::WGSL),
     ("sphere", crate::sphere::WGSL),
@@ -66,6 +66,7 @@ const MODULES: [(&str, &str); 15] = [
     ("light_bvh", crate::light_bvh::WGSL),
     ("ray", crate::ray::WGSL),
     ("mis", crate::mis::WGSL),
+    ("brdf", crate::brdf::WGSL),
     ("denoise", crate::denoise::WGSL),
     ("interleave", crate::interleave::WGSL),
     ("path", crate::path::WGSL),

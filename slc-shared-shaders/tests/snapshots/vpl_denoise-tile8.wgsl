@@ -228,6 +228,7 @@ const RESERVOIR_FULL: u32 = 4294967295u;
 const LIGHT_BVH_LEAF: u32 = 4294967295u;
 const ONE_MINUS_EPSILON: f32 = 0.99999994f;
 const F32_MAX: f32 = 340282350000000000000000000000000000000f;
+const GGX_ALPHA_MIN: f32 = 0.001f;
 const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
 const DEPTH_SIGMA: f32 = 0.05f;
 const COVER_WEIGHT: f32 = 0.1f;
@@ -375,19 +376,19 @@ fn cull_radius(r2_1: f32) -> f32 {
 
 fn windowed_falloff(d2_4: f32, range2_1: f32) -> f32 {
     let q_2 = (d2_4 / range2_1);
-    let w_9 = saturate((1f - (q_2 * q_2)));
-    return ((w_9 * w_9) / max(d2_4, 0.0001f));
+    let w_10 = saturate((1f - (q_2 * q_2)));
+    return ((w_10 * w_10) / max(d2_4, 0.0001f));
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_3: vec3<f32>) -> bool {
-    let v_4 = (x_3 - c);
-    return (dot(v_4, v_4) <= (r * r));
+    let v_9 = (x_3 - c);
+    return (dot(v_9, v_9) <= (r * r));
 }
 
 fn sphere_overlaps_sphere(c1_: vec3<f32>, r1_: f32, c2_: vec3<f32>, r2_2: f32) -> bool {
-    let v_5 = (c2_ - c1_);
+    let v_10 = (c2_ - c1_);
     let r_3 = (r1_ + r2_2);
-    return (dot(v_5, v_5) <= (r_3 * r_3));
+    return (dot(v_10, v_10) <= (r_3 * r_3));
 }
 
 fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
@@ -397,18 +398,18 @@ fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
 fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<f32> {
     var local_1: bool;
 
-    let v_6 = (c2_1 - c1_1);
-    let d_4 = sqrt(dot(v_6, v_6));
+    let v_11 = (c2_1 - c1_1);
+    let d_5 = sqrt(dot(v_11, v_11));
     let _e8 = sphere_pad(r1_1, c1_1);
-    if (r1_1 >= ((d_4 + r2_3) + _e8)) {
+    if (r1_1 >= ((d_5 + r2_3) + _e8)) {
         return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     let _e16 = sphere_pad(r2_3, c2_1);
-    if (r2_3 >= ((d_4 + r1_1) + _e16)) {
+    if (r2_3 >= ((d_5 + r1_1) + _e16)) {
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if !((d_4 >= SPHERE_HUGE)) {
-        local_1 = ((0.5f * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if !((d_5 >= SPHERE_HUGE)) {
+        local_1 = ((0.5f * ((d_5 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local_1 = true;
     }
@@ -416,29 +417,29 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
     if _e35 {
         return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if (abs((r1_1 - r2_3)) >= d_4) {
+    if (abs((r1_1 - r2_3)) >= d_5) {
         if (r1_1 >= r2_3) {
-            let rn = max(r1_1, (d_4 + r2_3));
+            let rn = max(r1_1, (d_5 + r2_3));
             let _e50 = sphere_pad(rn, c1_1);
             return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        let rm = max(r2_3, (d_4 + r1_1));
+        let rm = max(r2_3, (d_5 + r1_1));
         let _e58 = sphere_pad(rm, c2_1);
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    let r0_ = (0.5f * ((d_4 + r1_1) + r2_3));
-    let c_9 = (c1_1 + (v_6 * ((r0_ - r1_1) / d_4)));
-    let e1_ = (c_9 - c1_1);
-    let e2_ = (c_9 - c2_1);
+    let r0_ = (0.5f * ((d_5 + r1_1) + r2_3));
+    let c_10 = (c1_1 + (v_11 * ((r0_ - r1_1) / d_5)));
+    let e1_ = (c_10 - c1_1);
+    let e2_ = (c_10 - c2_1);
     let r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    let _e82 = sphere_pad(r_4, c_9);
-    return vec4<f32>(c_9.x, c_9.y, c_9.z, (r_4 + _e82));
+    let _e82 = sphere_pad(r_4, c_10);
+    return vec4<f32>(c_10.x, c_10.y, c_10.z, (r_4 + _e82));
 }
 
 fn sphere_overlaps_aabb(c_2: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
     let q_3 = clamp(c_2, bmin, bmax);
-    let v_7 = (q_3 - c_2);
-    return (dot(v_7, v_7) <= (r_2 * r_2));
+    let v_12 = (q_3 - c_2);
+    return (dot(v_12, v_12) <= (r_2 * r_2));
 }
 
 fn vpl_rt2_(flux: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32) -> f32 {
@@ -465,8 +466,8 @@ fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_2: bool;
     var local_3: bool;
 
-    let v_8 = (x_4 - y);
-    let d2_12 = dot(v_8, v_8);
+    let v_13 = (x_4 - y);
+    let d2_12 = dot(v_13, v_13);
     let _e7 = slc_keep(r2_5, d2_12);
     if !(!(_e7)) {
         local_2 = !((d2_12 > 0f));
@@ -477,10 +478,10 @@ fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_10 = (v_8 / vec3(sqrt(d2_12)));
-    let cos_x_1 = -(dot(n, w_10));
+    let w_11 = (v_13 / vec3(sqrt(d2_12)));
+    let cos_x_1 = -(dot(n, w_11));
     if !((cos_x_1 <= 0f)) {
-        local_3 = (dot(ng, w_10) >= 0f);
+        local_3 = (dot(ng, w_11) >= 0f);
     } else {
         local_3 = true;
     }
@@ -520,11 +521,11 @@ fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_3: vec3<f32>, u1_: f32, u2_
 }
 
 fn area_to_solid_angle_pdf(pdf_area: f32, d2_7: f32, cos_light: f32) -> f32 {
-    let c_10 = abs(cos_light);
-    if (c_10 <= 0f) {
+    let c_11 = abs(cos_light);
+    if (c_11 <= 0f) {
         return 0f;
     }
-    return ((pdf_area * d2_7) / c_10);
+    return ((pdf_area * d2_7) / c_11);
 }
 
 fn atan_portable(x_5: f32) -> f32 {
@@ -707,8 +708,8 @@ fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
     let gamma_1 = degrees(_e9);
     let on_axis = ((abs(wr) + abs(ws)) <= 0f);
     let _e16 = atan2_portable(ws, wr);
-    let c_11 = select(degrees(_e16), 0f, on_axis);
-    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_11);
+    let c_12 = select(degrees(_e16), 0f, on_axis);
+    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_12);
     return _e20;
 }
 
@@ -821,12 +822,12 @@ fn safe_sqrt(x_9: f32) -> f32 {
 fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, cos_o: f32, cos_e: f32, p: vec3<f32>, n_9: vec3<f32>) -> f32 {
     var imp: f32;
 
-    let v_9 = (p - center);
-    let dist2_ = dot(v_9, v_9);
+    let v_14 = (p - center);
+    let dist2_ = dot(v_14, v_14);
     let r2_6 = (radius * radius);
     let d2_13 = max(max(dist2_, r2_6), MIN_D2_);
-    let wi = select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_))), (dist2_ > 0f));
-    let cos_w = dot(axis, wi);
+    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_14 / vec3(sqrt(dist2_))), (dist2_ > 0f));
+    let cos_w = dot(axis, wi_3);
     let _e28 = safe_sqrt((1f - (cos_w * cos_w)));
     let _e32 = safe_sqrt((1f - (r2_6 / dist2_)));
     let cos_b_2 = select(_e32, -1f, (dist2_ <= r2_6));
@@ -840,7 +841,7 @@ fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, c
     }
     imp = ((phi * _e46) / d2_13);
     if (dot(n_9, n_9) > 0f) {
-        let cos_i = -(dot(wi, n_9));
+        let cos_i = -(dot(wi_3, n_9));
         let _e60 = safe_sqrt((1f - (cos_i * cos_i)));
         let _e61 = imp;
         let _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
@@ -856,9 +857,9 @@ fn candidate_weight(importance: f32, rt2_4: f32, d2_8: f32) -> f32 {
 }
 
 fn cone_weight(center_1: vec3<f32>, radius_1: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, rt2_5: f32, p_1: vec3<f32>, n_10: vec3<f32>) -> f32 {
-    let v_10 = (p_1 - center_1);
+    let v_15 = (p_1 - center_1);
     let _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
-    let _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_10, v_10));
+    let _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_15, v_15));
     return _e14;
 }
 
@@ -925,8 +926,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> {
     var local_6: bool;
 
-    let n_18 = cross((b_4 - a_5), (c_6 - a_5));
-    let l2_ = dot(n_18, n_18);
+    let n_26 = cross((b_4 - a_5), (c_6 - a_5));
+    let l2_ = dot(n_26, n_26);
     if !(!((l2_ > 0f))) {
         local_6 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -936,7 +937,7 @@ fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_18 / vec3(sqrt(l2_)));
+    return (n_26 / vec3(sqrt(l2_)));
 }
 
 fn face_against(n_11: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
@@ -973,8 +974,8 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_7: vec3<f32>
     if _e24 {
         return facing;
     }
-    let n_19 = (s_2 / vec3(sqrt(l2_1)));
-    return select(n_19, -(n_19), (dot(n_19, facing) < 0f));
+    let n_27 = (s_2 / vec3(sqrt(l2_1)));
+    return select(n_27, -(n_27), (dot(n_27, facing) < 0f));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, c_8: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -1002,9 +1003,9 @@ fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
         return -1f;
     }
     let q_5 = cross(s_3, e1_2);
-    let v_11 = (dot(d_1, q_5) * inv_1);
-    if !((v_11 < 0f)) {
-        local_9 = ((u_6 + v_11) > 1f);
+    let v_16 = (dot(d_1, q_5) * inv_1);
+    if !((v_16 < 0f)) {
+        local_9 = ((u_6 + v_16) > 1f);
     } else {
         local_9 = true;
     }
@@ -1074,15 +1075,244 @@ fn cosine_pdf(cos_theta_1: f32) -> f32 {
     return (max(cos_theta_1, 0f) * INV_PI);
 }
 
-fn cosine_direction(n_12: vec3<f32>, u1_1: f32, u2_1: f32) -> vec3<f32> {
+fn onb_tangent(n_12: vec3<f32>) -> vec3<f32> {
     let s_6 = select(-1f, 1f, (n_12.z >= 0f));
     let a_11 = (-1f / (s_6 + n_12.z));
-    let b_8 = ((n_12.x * n_12.y) * a_11);
-    let t_4 = vec3<f32>((1f + (((s_6 * n_12.x) * n_12.x) * a_11)), (s_6 * b_8), (-(s_6) * n_12.x));
-    let bt = vec3<f32>(b_8, (s_6 + ((n_12.y * n_12.y) * a_11)), -(n_12.y));
+    return vec3<f32>((1f + (((s_6 * n_12.x) * n_12.x) * a_11)), (((s_6 * n_12.x) * n_12.y) * a_11), (-(s_6) * n_12.x));
+}
+
+fn onb_bitangent(n_13: vec3<f32>) -> vec3<f32> {
+    let s_7 = select(-1f, 1f, (n_13.z >= 0f));
+    let a_12 = (-1f / (s_7 + n_13.z));
+    return vec3<f32>(((n_13.x * n_13.y) * a_12), (s_7 + ((n_13.y * n_13.y) * a_12)), -(n_13.y));
+}
+
+fn onb_to_world(n_14: vec3<f32>, d_2: vec3<f32>) -> vec3<f32> {
+    let _e2 = onb_tangent(n_14);
+    let _e5 = onb_bitangent(n_14);
+    return (((_e2 * d_2.x) + (_e5 * d_2.y)) + (n_14 * d_2.z));
+}
+
+fn onb_to_local(n_15: vec3<f32>, w_8: vec3<f32>) -> vec3<f32> {
+    let _e2 = onb_tangent(n_15);
+    let _e4 = onb_bitangent(n_15);
+    return vec3<f32>(dot(w_8, _e2), dot(w_8, _e4), dot(w_8, n_15));
+}
+
+fn cosine_direction(n_16: vec3<f32>, u1_1: f32, u2_1: f32) -> vec3<f32> {
     let r_6 = sqrt(u1_1);
     let phi_2 = (6.2831855f * u2_1);
-    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_12 * sqrt(max((1f - u1_1), 0f)))));
+    let _e16 = onb_to_world(n_16, vec3<f32>((r_6 * cos(phi_2)), (r_6 * sin(phi_2)), sqrt(max((1f - u1_1), 0f))));
+    return normalize(_e16);
+}
+
+fn ggx_alpha(roughness: f32) -> f32 {
+    return max((roughness * roughness), GGX_ALPHA_MIN);
+}
+
+fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
+    if (cos_h <= 0f) {
+        return 0f;
+    }
+    let a2_1 = (alpha * alpha);
+    let t_4 = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t_4 * t_4));
+}
+
+fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
+    let a2_2 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1f - a2_2)) + a2_2));
+}
+
+fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
+    var local_13: bool;
+
+    if !((n_l_1 <= 0f)) {
+        local_13 = (n_v <= 0f);
+    } else {
+        local_13 = true;
+    }
+    let _e11 = local_13;
+    if _e11 {
+        return 0f;
+    }
+    let _e13 = smith_root(n_v, alpha_2);
+    let _e15 = smith_root(n_l_1, alpha_2);
+    return (0.5f / ((n_l_1 * _e13) + (n_v * _e15)));
+}
+
+fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
+    let c_13 = saturate((1f - v_h));
+    let c2_2 = (c_13 * c_13);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_2 * c2_2) * c_13)));
+}
+
+fn specular_fresnel(base_4: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
+    let _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    let _e10 = fresnel_schlick(base_4, 1f, v_h_1);
+    return ((_e5 * (1f - metallic)) + (_e10 * metallic));
+}
+
+fn diffuse_brdf(base_5: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32, v_h_2: f32) -> vec3<f32> {
+    let _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return ((((vec3<f32>(1f, 1f, 1f) - _e9) * base_5) * (1f - metallic_1)) * INV_PI);
+}
+
+fn half_cosine(v_2: vec3<f32>, l: vec3<f32>) -> f32 {
+    let h_1 = (v_2 + l);
+    let len2_ = dot(h_1, h_1);
+    if (len2_ <= 0f) {
+        return 0f;
+    }
+    return saturate((dot(v_2, h_1) / sqrt(len2_)));
+}
+
+fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_17: vec3<f32>, v_3: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
+    var local_14: bool;
+
+    let n_l_2 = dot(n_17, l_1);
+    let n_v_2 = dot(n_17, v_3);
+    if !((n_l_2 <= 0f)) {
+        local_14 = (n_v_2 <= 0f);
+    } else {
+        local_14 = true;
+    }
+    let _e18 = local_14;
+    if _e18 {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    let hs = (v_3 + l_1);
+    let inv_2 = (1f / sqrt(dot(hs, hs)));
+    let h_2 = (hs * inv_2);
+    let c_14 = cross(n_17, h_2);
+    let _e32 = ggx_d(dot(n_17, h_2), dot(c_14, c_14), alpha_3);
+    let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_3, h_2));
+    let _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
+    return (_e34 * (_e32 * _e35));
+}
+
+fn brdf_eval(base_7: vec3<f32>, metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32, alpha_4: f32, n_18: vec3<f32>, v_4: vec3<f32>, l_2: vec3<f32>) -> vec3<f32> {
+    if (dot(n_18, l_2) <= 0f) {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    let _e15 = half_cosine(v_4, l_2);
+    let _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
+    let _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_18, v_4, l_2);
+    return (_e16 + _e17);
+}
+
+fn has_specular(metallic_4: f32, f0_d_4: vec3<f32>, f90_d_4: f32) -> bool {
+    var local_15: bool;
+    var local_16: bool;
+
+    if !((metallic_4 > 0f)) {
+        local_15 = (f90_d_4 > 0f);
+    } else {
+        local_15 = true;
+    }
+    let _e11 = local_15;
+    if !(_e11) {
+        local_16 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0f);
+    } else {
+        local_16 = true;
+    }
+    let _e23 = local_16;
+    return _e23;
+}
+
+fn channel_mean(c_9: vec3<f32>) -> f32 {
+    return (((c_9.x + c_9.y) + c_9.z) * 0.33333334f);
+}
+
+fn specular_probability(base_8: vec3<f32>, metallic_5: f32, f0_d_5: vec3<f32>, f90_d_5: f32, n_v_1: f32) -> f32 {
+    var local_17: bool;
+
+    if !((n_v_1 <= 0f)) {
+        let _e10 = has_specular(metallic_5, f0_d_5, f90_d_5);
+        local_17 = !(_e10);
+    } else {
+        local_17 = true;
+    }
+    let _e13 = local_17;
+    if _e13 {
+        return 0f;
+    }
+    let _e15 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    let _e16 = channel_mean(_e15);
+    let _e21 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
+    let _e27 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e21) * base_8) * (1f - metallic_5)));
+    if (_e27 <= 0f) {
+        return 1f;
+    }
+    if (_e16 <= 0f) {
+        return 0f;
+    }
+    return clamp((_e16 / (_e16 + _e27)), 0.1f, 0.9f);
+}
+
+fn bounded_vndf_k(wi: vec3<f32>, alpha_5: f32) -> f32 {
+    let a_13 = saturate(alpha_5);
+    let s_8 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    let a2_3 = (a_13 * a_13);
+    let s2_ = (s_8 * s_8);
+    return (((1f - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
+}
+
+fn ggx_vndf_sample(wi_1: vec3<f32>, alpha_6: f32, u1_2: f32, u2_2: f32) -> vec3<f32> {
+    let wi_std = normalize(vec3<f32>((wi_1.x * alpha_6), (wi_1.y * alpha_6), wi_1.z));
+    let _e12 = bounded_vndf_k(wi_1, alpha_6);
+    let b_8 = select(wi_std.z, (_e12 * wi_std.z), (wi_1.z > 0f));
+    let phi_3 = (6.2831855f * u1_2);
+    let z_5 = (((1f - u2_2) * (1f + b_8)) - b_8);
+    let sin_t = sqrt(saturate((1f - (z_5 * z_5))));
+    let m_std = (wi_std + vec3<f32>((sin_t * cos(phi_3)), (sin_t * sin(phi_3)), z_5));
+    let m_1 = normalize(vec3<f32>((m_std.x * alpha_6), (m_std.y * alpha_6), m_std.z));
+    return ((m_1 * (2f * dot(wi_1, m_1))) - wi_1);
+}
+
+fn ggx_vndf_pdf(wi_2: vec3<f32>, wo: vec3<f32>, alpha_7: f32) -> f32 {
+    var local_18: bool;
+
+    if !((wi_2.z <= 0f)) {
+        local_18 = (wo.z <= 0f);
+    } else {
+        local_18 = true;
+    }
+    let _e13 = local_18;
+    if _e13 {
+        return 0f;
+    }
+    let hs_1 = (wi_2 + wo);
+    let m_2 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
+    let _e28 = ggx_d(m_2.z, ((m_2.x * m_2.x) + (m_2.y * m_2.y)), alpha_7);
+    let t_5 = sqrt((((alpha_7 * alpha_7) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
+    let _e43 = bounded_vndf_k(wi_2, alpha_7);
+    return (_e28 / (2f * ((_e43 * wi_2.z) + t_5)));
+}
+
+fn bsdf_sample(n_19: vec3<f32>, v_5: vec3<f32>, alpha_8: f32, p_spec: f32, u1_3: f32, u2_3: f32) -> vec3<f32> {
+    if (u1_3 < p_spec) {
+        if (dot(n_19, v_5) <= 0f) {
+            return -(n_19);
+        }
+        let _e11 = onb_to_local(n_19, v_5);
+        let _e13 = ggx_vndf_sample(_e11, alpha_8, (u1_3 / p_spec), u2_3);
+        let _e14 = onb_to_world(n_19, _e13);
+        return normalize(_e14);
+    }
+    let _e20 = cosine_direction(n_19, ((u1_3 - p_spec) / (1f - p_spec)), u2_3);
+    return _e20;
+}
+
+fn bsdf_pdf(n_20: vec3<f32>, v_6: vec3<f32>, l_3: vec3<f32>, alpha_9: f32, p_spec_1: f32) -> f32 {
+    let _e6 = cosine_pdf(dot(n_20, l_3));
+    if (p_spec_1 <= 0f) {
+        return _e6;
+    }
+    let _e9 = onb_to_local(n_20, v_6);
+    let _e10 = onb_to_local(n_20, l_3);
+    let _e11 = ggx_vndf_pdf(_e9, _e10, alpha_9);
+    return ((p_spec_1 * _e11) + ((1f - p_spec_1) * _e6));
 }
 
 fn inv_sigma_z(z: f32) -> f32 {
@@ -1113,14 +1343,14 @@ fn filtered_irradiance(e: vec3<f32>, sum: vec3<f32>, weight: f32) -> vec3<f32> {
     return e;
 }
 
-fn bilateral_weight(n_13: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f32) -> f32 {
-    let dn = max(dot(n_13, nj), 0f);
+fn bilateral_weight(n_21: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f32) -> f32 {
+    let dn = max(dot(n_21, nj), 0f);
     let dn2_ = (dn * dn);
     let dn4_ = (dn2_ * dn2_);
     let dn8_ = (dn4_ * dn4_);
-    let d_5 = ((zj - z_1) * inv_sz);
-    let t_5 = max((1f - (d_5 * d_5)), 0f);
-    return (((dn8_ * dn8_) * t_5) * t_5);
+    let d_6 = ((zj - z_1) * inv_sz);
+    let t_6 = max((1f - (d_6 * d_6)), 0f);
+    return (((dn8_ * dn8_) * t_6) * t_6);
 }
 
 fn interleave_subset(x_13: u32, y_2: u32, period_2: u32) -> u32 {
@@ -1160,8 +1390,8 @@ fn vpl_near_weight(d2_10: f32, near_r2_: f32) -> f32 {
     if (near_r2_ <= 0f) {
         return 0f;
     }
-    let t_6 = clamp(((near_r2_ - d2_10) / (0.75f * near_r2_)), 0f, 1f);
-    return ((t_6 * t_6) * (3f - (2f * t_6)));
+    let t_7 = clamp(((near_r2_ - d2_10) / (0.75f * near_r2_)), 0f, 1f);
+    return ((t_7 * t_7) * (3f - (2f * t_7)));
 }
 
 fn vpl_far_weight(d2_11: f32, near_r2_1: f32) -> f32 {
@@ -1169,8 +1399,8 @@ fn vpl_far_weight(d2_11: f32, near_r2_1: f32) -> f32 {
     return (1f - _e2);
 }
 
-fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_8: f32, h: f32) -> vec3<f32> {
-    let sx = (((2f * px) / w_8) - 1f);
+fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_9: f32, h: f32) -> vec3<f32> {
+    let sx = (((2f * px) / w_9) - 1f);
     let sy = (1f - ((2f * py) / h));
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
@@ -1188,34 +1418,34 @@ fn sees_emission(gn: vec3<f32>, dir_1: vec3<f32>) -> bool {
     return (dot(gn, dir_1) < 0f);
 }
 
-fn continues_path(nd: vec3<f32>, n_14: vec3<f32>, ng_1: vec3<f32>) -> bool {
-    var local_13: bool;
+fn continues_path(nd: vec3<f32>, n_22: vec3<f32>, ng_1: vec3<f32>) -> bool {
+    var local_19: bool;
 
-    if (dot(nd, n_14) > 0f) {
-        local_13 = (dot(nd, ng_1) > 0f);
+    if (dot(nd, n_22) > 0f) {
+        local_19 = (dot(nd, ng_1) > 0f);
     } else {
-        local_13 = false;
+        local_19 = false;
     }
-    let _e12 = local_13;
+    let _e12 = local_19;
     return _e12;
 }
 
-fn finite3_(v_2: vec3<f32>) -> bool {
-    var local_14: bool;
-    var local_15: bool;
+fn finite3_(v_7: vec3<f32>) -> bool {
+    var local_20: bool;
+    var local_21: bool;
 
-    if (abs(v_2.x) <= F32_MAX) {
-        local_14 = (abs(v_2.y) <= F32_MAX);
+    if (abs(v_7.x) <= F32_MAX) {
+        local_20 = (abs(v_7.y) <= F32_MAX);
     } else {
-        local_14 = false;
+        local_20 = false;
     }
-    let _e12 = local_14;
+    let _e12 = local_20;
     if _e12 {
-        local_15 = (abs(v_2.z) <= F32_MAX);
+        local_21 = (abs(v_7.z) <= F32_MAX);
     } else {
-        local_15 = false;
+        local_21 = false;
     }
-    let _e20 = local_15;
+    let _e20 = local_21;
     return _e20;
 }
 
@@ -1241,9 +1471,9 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_2: vec3<f32>, exten
 }
 
 fn display_encode(x_14: f32) -> f32 {
-    let v_12 = max(x_14, 0f);
-    let t_7 = ((2f * v_12) / (1f + (2f * v_12)));
-    return select(((1.055f * pow(t_7, 0.41666666f)) - 0.055f), (12.92f * t_7), (t_7 <= 0.0031308f));
+    let v_17 = max(x_14, 0f);
+    let t_8 = ((2f * v_17) / (1f + (2f * v_17)));
+    return select(((1.055f * pow(t_8, 0.41666666f)) - 0.055f), (12.92f * t_8), (t_8 <= 0.0031308f));
 }
 
 fn light_map_depth(rel_1: vec3<f32>, axis_3: vec3<f32>, perspective_1: bool) -> f32 {
@@ -1254,19 +1484,19 @@ fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-fn point_irradiance(intensity_1: vec3<f32>, n_15: vec3<f32>, v_3: vec3<f32>) -> vec3<f32> {
-    let d2_14 = dot(v_3, v_3);
-    let cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
+fn point_irradiance(intensity_1: vec3<f32>, n_23: vec3<f32>, v_8: vec3<f32>) -> vec3<f32> {
+    let d2_14 = dot(v_8, v_8);
+    let cos_x_2 = (dot(n_23, v_8) / sqrt(max(d2_14, MIN_D2_)));
     let _e11 = inverse_square(d2_14);
     return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }
 
-fn directional_irradiance(e_1: vec3<f32>, n_16: vec3<f32>, to_light: vec3<f32>) -> vec3<f32> {
-    return (e_1 * max(dot(n_16, to_light), 0f));
+fn directional_irradiance(e_1: vec3<f32>, n_24: vec3<f32>, to_light: vec3<f32>) -> vec3<f32> {
+    return (e_1 * max(dot(n_24, to_light), 0f));
 }
 
-fn perspective_texel_width(extent_3: f32, d_2: f32, z_2: f32, size_8: f32) -> f32 {
-    return ((((2f * extent_3) * d_2) * d_2) / (size_8 * z_2));
+fn perspective_texel_width(extent_3: f32, d_3: f32, z_2: f32, size_8: f32) -> f32 {
+    return ((((2f * extent_3) * d_3) * d_3) / (size_8 * z_2));
 }
 
 fn ortho_texel_width(extent_4: f32, size_9: f32) -> f32 {
@@ -1274,19 +1504,19 @@ fn ortho_texel_width(extent_4: f32, size_9: f32) -> f32 {
 }
 
 fn shadow_bias(texel: f32, cos_light_1: f32) -> f32 {
-    let c_12 = clamp(cos_light_1, 0.02f, 1f);
-    return (texel * (1.5f + (sqrt((1f - (c_12 * c_12))) / c_12)));
+    let c_15 = clamp(cos_light_1, 0.02f, 1f);
+    return (texel * (1.5f + (sqrt((1f - (c_15 * c_15))) / c_15)));
 }
 
-fn shadow_lit(d_3: f32, d_map: f32, bias: f32) -> bool {
-    var local_16: bool;
+fn shadow_lit(d_4: f32, d_map: f32, bias: f32) -> bool {
+    var local_22: bool;
 
     if !((d_map <= 0f)) {
-        local_16 = (d_3 <= (d_map + bias));
+        local_22 = (d_4 <= (d_map + bias));
     } else {
-        local_16 = true;
+        local_22 = true;
     }
-    let _e11 = local_16;
+    let _e11 = local_22;
     return _e11;
 }
 
@@ -1300,17 +1530,17 @@ fn depth_of(i_2: u32) -> f32 {
     return select(DEPTH_NONE, _e5, (_e9 > 0f));
 }
 
-fn window_sum(x_15: u32, y_3: u32, size_10: u32, n_17: vec3<f32>, z_3: f32, inv: f32) -> Window {
+fn window_sum(x_15: u32, y_3: u32, size_10: u32, n_25: vec3<f32>, z_3: f32, inv: f32) -> Window {
     var win: Window;
     var yy: u32;
     var xx: u32;
 
-    let w_11 = params.width;
-    let h_1 = params.height;
+    let w_12 = params.width;
+    let h_3 = params.height;
     let _e12 = window_start(x_15, size_10);
-    let _e13 = window_end(x_15, size_10, w_11);
+    let _e13 = window_end(x_15, size_10, w_12);
     let _e14 = window_start(y_3, size_10);
-    let _e15 = window_end(y_3, size_10, h_1);
+    let _e15 = window_end(y_3, size_10, h_3);
     win.sum = vec3(0f);
     win.weight = 0f;
     win.covered = 0u;
@@ -1332,10 +1562,10 @@ fn window_sum(x_15: u32, y_3: u32, size_10: u32, n_17: vec3<f32>, z_3: f32, inv:
                 {
                     let _e30 = yy;
                     let _e32 = xx;
-                    let j = ((_e30 * w_11) + _e32);
+                    let j = ((_e30 * w_12) + _e32);
                     let _e36 = gb_normal[j];
                     let _e38 = depth_of(j);
-                    let _e39 = bilateral_weight(n_17, _e36.xyz, z_3, _e38, inv);
+                    let _e39 = bilateral_weight(n_25, _e36.xyz, z_3, _e38, inv);
                     let _e41 = win.sum;
                     let _e44 = irradiance[j];
                     win.sum = (_e41 + (_e44.xyz * _e39));
@@ -1364,10 +1594,10 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var local: bool;
     var s: Window;
 
-    let w_12 = params.width;
-    let h_2 = params.height;
-    if !((gid.x >= w_12)) {
-        local = (gid.y >= h_2);
+    let w_13 = params.width;
+    let h_4 = params.height;
+    if !((gid.x >= w_13)) {
+        local = (gid.y >= h_4);
     } else {
         local = true;
     }
@@ -1375,7 +1605,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     if _e15 {
         return;
     }
-    let i_3 = ((gid.y * w_12) + gid.x);
+    let i_3 = ((gid.y * w_13) + gid.x);
     let e_3 = irradiance[i_3];
     let _e26 = gb_position[i_3].w;
     if (_e26 <= 0f) {
@@ -1383,16 +1613,16 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     let _e38 = gb_normal[i_3];
-    let n_20 = _e38.xyz;
+    let n_28 = _e38.xyz;
     let _e40 = depth_of(i_3);
     let _e41 = inv_sigma_z(_e40);
-    let _e45 = window_sum(gid.x, gid.y, PERIOD, n_20, _e40, _e41);
+    let _e45 = window_sum(gid.x, gid.y, PERIOD, n_28, _e40, _e41);
     s = _e45;
     let _e48 = s.covered;
     let _e50 = misses_subset(_e48, PERIOD);
     if _e50 {
         let _e54 = wide_window(PERIOD);
-        let _e55 = window_sum(gid.x, gid.y, _e54, n_20, _e40, _e41);
+        let _e55 = window_sum(gid.x, gid.y, _e54, n_28, _e40, _e41);
         s = _e55;
     }
     let _e60 = s.sum;

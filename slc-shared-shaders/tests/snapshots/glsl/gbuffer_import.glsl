@@ -207,6 +207,7 @@ const uint RESERVOIR_FULL = 4294967295u;
 const uint LIGHT_BVH_LEAF = 4294967295u;
 const float ONE_MINUS_EPSILON = 0.99999994;
 const float F32_MAX = 3.4028235e38;
+const float GGX_ALPHA_MIN = 0.001;
 const float DEPTH_NONE = 1e30;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
@@ -347,19 +348,19 @@ float cull_radius(float r2_1) {
 
 float windowed_falloff(float d2_4, float range2_1) {
     float q_2 = (d2_4 / range2_1);
-    float w_9 = clamp((1.0 - (q_2 * q_2)), 0.0, 1.0);
-    return ((w_9 * w_9) / max(d2_4, 0.0001));
+    float w_10 = clamp((1.0 - (q_2 * q_2)), 0.0, 1.0);
+    return ((w_10 * w_10) / max(d2_4, 0.0001));
 }
 
 bool sphere_contains_point(vec3 c, float r, vec3 x_3) {
-    vec3 v_4 = (x_3 - c);
-    return (dot(v_4, v_4) <= (r * r));
+    vec3 v_9 = (x_3 - c);
+    return (dot(v_9, v_9) <= (r * r));
 }
 
 bool sphere_overlaps_sphere(vec3 c1_, float r1_, vec3 c2_, float r2_2) {
-    vec3 v_5 = (c2_ - c1_);
+    vec3 v_10 = (c2_ - c1_);
     float r_3 = (r1_ + r2_2);
-    return (dot(v_5, v_5) <= (r_3 * r_3));
+    return (dot(v_10, v_10) <= (r_3 * r_3));
 }
 
 float sphere_pad(float r_1, vec3 c_1) {
@@ -368,18 +369,18 @@ float sphere_pad(float r_1, vec3 c_1) {
 
 vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
     bool local_2 = false;
-    vec3 v_6 = (c2_1 - c1_1);
-    float d_4 = sqrt(dot(v_6, v_6));
+    vec3 v_11 = (c2_1 - c1_1);
+    float d_5 = sqrt(dot(v_11, v_11));
     float _e8 = sphere_pad(r1_1, c1_1);
-    if ((r1_1 >= ((d_4 + r2_3) + _e8))) {
+    if ((r1_1 >= ((d_5 + r2_3) + _e8))) {
         return vec4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     float _e16 = sphere_pad(r2_3, c2_1);
-    if ((r2_3 >= ((d_4 + r1_1) + _e16))) {
+    if ((r2_3 >= ((d_5 + r1_1) + _e16))) {
         return vec4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_4 >= SPHERE_HUGE))) {
-        local_2 = ((0.5 * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if (!((d_5 >= SPHERE_HUGE))) {
+        local_2 = ((0.5 * ((d_5 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local_2 = true;
     }
@@ -387,29 +388,29 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
     if (_e35) {
         return vec4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if ((abs((r1_1 - r2_3)) >= d_4)) {
+    if ((abs((r1_1 - r2_3)) >= d_5)) {
         if ((r1_1 >= r2_3)) {
-            float rn = max(r1_1, (d_4 + r2_3));
+            float rn = max(r1_1, (d_5 + r2_3));
             float _e50 = sphere_pad(rn, c1_1);
             return vec4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        float rm = max(r2_3, (d_4 + r1_1));
+        float rm = max(r2_3, (d_5 + r1_1));
         float _e58 = sphere_pad(rm, c2_1);
         return vec4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    float r0_ = (0.5 * ((d_4 + r1_1) + r2_3));
-    vec3 c_9 = (c1_1 + (v_6 * ((r0_ - r1_1) / d_4)));
-    vec3 e1_ = (c_9 - c1_1);
-    vec3 e2_ = (c_9 - c2_1);
+    float r0_ = (0.5 * ((d_5 + r1_1) + r2_3));
+    vec3 c_10 = (c1_1 + (v_11 * ((r0_ - r1_1) / d_5)));
+    vec3 e1_ = (c_10 - c1_1);
+    vec3 e2_ = (c_10 - c2_1);
     float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    float _e82 = sphere_pad(r_4, c_9);
-    return vec4(c_9.x, c_9.y, c_9.z, (r_4 + _e82));
+    float _e82 = sphere_pad(r_4, c_10);
+    return vec4(c_10.x, c_10.y, c_10.z, (r_4 + _e82));
 }
 
 bool sphere_overlaps_aabb(vec3 c_2, float r_2, vec3 bmin, vec3 bmax) {
     vec3 q_3 = clamp(c_2, bmin, bmax);
-    vec3 v_7 = (q_3 - c_2);
-    return (dot(v_7, v_7) <= (r_2 * r_2));
+    vec3 v_12 = (q_3 - c_2);
+    return (dot(v_12, v_12) <= (r_2 * r_2));
 }
 
 float vpl_rt2_(vec3 flux, float exposure_1, float error_bound_1, uint mode_1) {
@@ -435,8 +436,8 @@ float connection_factor(float cos_x, float d2_6, float rt2_3, float w) {
 float connection_cosine(vec3 x_4, vec3 y, vec3 n, vec3 ng, float r2_5) {
     bool local_3 = false;
     bool local_4 = false;
-    vec3 v_8 = (x_4 - y);
-    float d2_12 = dot(v_8, v_8);
+    vec3 v_13 = (x_4 - y);
+    float d2_12 = dot(v_13, v_13);
     bool _e7 = slc_keep(r2_5, d2_12);
     if (!(!(_e7))) {
         local_3 = !((d2_12 > 0.0));
@@ -447,10 +448,10 @@ float connection_cosine(vec3 x_4, vec3 y, vec3 n, vec3 ng, float r2_5) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_10 = (v_8 / vec3(sqrt(d2_12)));
-    float cos_x_1 = -(dot(n, w_10));
+    vec3 w_11 = (v_13 / vec3(sqrt(d2_12)));
+    float cos_x_1 = -(dot(n, w_11));
     if (!((cos_x_1 <= 0.0))) {
-        local_4 = (dot(ng, w_10) >= 0.0);
+        local_4 = (dot(ng, w_11) >= 0.0);
     } else {
         local_4 = true;
     }
@@ -490,11 +491,11 @@ vec3 triangle_sample(vec3 a_2, vec3 b_2, vec3 c_3, float u1_, float u2_) {
 }
 
 float area_to_solid_angle_pdf(float pdf_area, float d2_7, float cos_light) {
-    float c_10 = abs(cos_light);
-    if ((c_10 <= 0.0)) {
+    float c_11 = abs(cos_light);
+    if ((c_11 <= 0.0)) {
         return 0.0;
     }
-    return ((pdf_area * d2_7) / c_10);
+    return ((pdf_area * d2_7) / c_11);
 }
 
 float atan_portable(float x_5) {
@@ -697,12 +698,12 @@ float safe_sqrt(float x_9) {
 
 float light_importance(vec3 center, float radius, float phi, vec3 axis, float cos_o, float cos_e, vec3 p, vec3 n_9) {
     float imp = 0.0;
-    vec3 v_9 = (p - center);
-    float dist2_ = dot(v_9, v_9);
+    vec3 v_14 = (p - center);
+    float dist2_ = dot(v_14, v_14);
     float r2_6 = (radius * radius);
     float d2_13 = max(max(dist2_, r2_6), MIN_D2_);
-    vec3 wi = ((dist2_ > 0.0) ? (v_9 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
-    float cos_w = dot(axis, wi);
+    vec3 wi_3 = ((dist2_ > 0.0) ? (v_14 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi_3);
     float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
     float _e32 = safe_sqrt((1.0 - (r2_6 / dist2_)));
     float cos_b_2 = ((dist2_ <= r2_6) ? -1.0 : _e32);
@@ -716,7 +717,7 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     }
     imp = ((phi * _e46) / d2_13);
     if ((dot(n_9, n_9) > 0.0)) {
-        float cos_i = -(dot(wi, n_9));
+        float cos_i = -(dot(wi_3, n_9));
         float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
         float _e61 = imp;
         float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
@@ -732,9 +733,9 @@ float candidate_weight(float importance, float rt2_4, float d2_8) {
 }
 
 float cone_weight(vec3 center_1, float radius_1, float phi_1, vec3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, vec3 p_1, vec3 n_10) {
-    vec3 v_10 = (p_1 - center_1);
+    vec3 v_15 = (p_1 - center_1);
     float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
-    float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_10, v_10));
+    float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_15, v_15));
     return _e14;
 }
 
@@ -800,8 +801,8 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 
 vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
     bool local_7 = false;
-    vec3 n_17 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_17, n_17);
+    vec3 n_25 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_25, n_25);
     if (!(!((l2_ > 0.0)))) {
         local_7 = !((l2_ < 3e38));
     } else {
@@ -811,7 +812,7 @@ vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_17 / vec3(sqrt(l2_)));
+    return (n_25 / vec3(sqrt(l2_)));
 }
 
 vec3 face_against(vec3 n_11, vec3 dir) {
@@ -847,8 +848,8 @@ vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_7, vec3 facing) {
     if (_e24) {
         return facing;
     }
-    vec3 n_18 = (s_1 / vec3(sqrt(l2_1)));
-    return ((dot(n_18, facing) < 0.0) ? -(n_18) : n_18);
+    vec3 n_26 = (s_1 / vec3(sqrt(l2_1)));
+    return ((dot(n_26, facing) < 0.0) ? -(n_26) : n_26);
 }
 
 float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, float t_max_1) {
@@ -875,9 +876,9 @@ float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_7, vec3 b_6, vec3 c_8, float t_min
         return -1.0;
     }
     vec3 q_5 = cross(s_2, e1_2);
-    float v_11 = (dot(d_1, q_5) * inv);
-    if (!((v_11 < 0.0))) {
-        local_10 = ((u_6 + v_11) > 1.0);
+    float v_16 = (dot(d_1, q_5) * inv);
+    if (!((v_16 < 0.0))) {
+        local_10 = ((u_6 + v_16) > 1.0);
     } else {
         local_10 = true;
     }
@@ -946,15 +947,239 @@ float cosine_pdf(float cos_theta_1) {
     return (max(cos_theta_1, 0.0) * INV_PI);
 }
 
-vec3 cosine_direction(vec3 n_12, float u1_1, float u2_1) {
+vec3 onb_tangent(vec3 n_12) {
     float s_5 = ((n_12.z >= 0.0) ? 1.0 : -1.0);
     float a_10 = (-1.0 / (s_5 + n_12.z));
-    float b_7 = ((n_12.x * n_12.y) * a_10);
-    vec3 t_4 = vec3((1.0 + (((s_5 * n_12.x) * n_12.x) * a_10)), (s_5 * b_7), (-(s_5) * n_12.x));
-    vec3 bt = vec3(b_7, (s_5 + ((n_12.y * n_12.y) * a_10)), -(n_12.y));
+    return vec3((1.0 + (((s_5 * n_12.x) * n_12.x) * a_10)), (((s_5 * n_12.x) * n_12.y) * a_10), (-(s_5) * n_12.x));
+}
+
+vec3 onb_bitangent(vec3 n_13) {
+    float s_6 = ((n_13.z >= 0.0) ? 1.0 : -1.0);
+    float a_11 = (-1.0 / (s_6 + n_13.z));
+    return vec3(((n_13.x * n_13.y) * a_11), (s_6 + ((n_13.y * n_13.y) * a_11)), -(n_13.y));
+}
+
+vec3 onb_to_world(vec3 n_14, vec3 d_2) {
+    vec3 _e2 = onb_tangent(n_14);
+    vec3 _e5 = onb_bitangent(n_14);
+    return (((_e2 * d_2.x) + (_e5 * d_2.y)) + (n_14 * d_2.z));
+}
+
+vec3 onb_to_local(vec3 n_15, vec3 w_8) {
+    vec3 _e2 = onb_tangent(n_15);
+    vec3 _e4 = onb_bitangent(n_15);
+    return vec3(dot(w_8, _e2), dot(w_8, _e4), dot(w_8, n_15));
+}
+
+vec3 cosine_direction(vec3 n_16, float u1_1, float u2_1) {
     float r_6 = sqrt(u1_1);
     float phi_2 = (6.2831855 * u2_1);
-    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_12 * sqrt(max((1.0 - u1_1), 0.0)))));
+    vec3 _e16 = onb_to_world(n_16, vec3((r_6 * cos(phi_2)), (r_6 * sin(phi_2)), sqrt(max((1.0 - u1_1), 0.0))));
+    return normalize(_e16);
+}
+
+float ggx_alpha(float roughness) {
+    return max((roughness * roughness), GGX_ALPHA_MIN);
+}
+
+float ggx_d(float cos_h, float sin2_h, float alpha) {
+    if ((cos_h <= 0.0)) {
+        return 0.0;
+    }
+    float a2_1 = (alpha * alpha);
+    float t_4 = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t_4 * t_4));
+}
+
+float smith_root(float cos_, float alpha_1) {
+    float a2_2 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1.0 - a2_2)) + a2_2));
+}
+
+float smith_visibility(float n_l_1, float n_v, float alpha_2) {
+    bool local_14 = false;
+    if (!((n_l_1 <= 0.0))) {
+        local_14 = (n_v <= 0.0);
+    } else {
+        local_14 = true;
+    }
+    bool _e11 = local_14;
+    if (_e11) {
+        return 0.0;
+    }
+    float _e13 = smith_root(n_v, alpha_2);
+    float _e15 = smith_root(n_l_1, alpha_2);
+    return (0.5 / ((n_l_1 * _e13) + (n_v * _e15)));
+}
+
+vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
+    float c_12 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_2 = (c_12 * c_12);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_2 * c2_2) * c_12)));
+}
+
+vec3 specular_fresnel(vec3 base_4, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
+    vec3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    vec3 _e10 = fresnel_schlick(base_4, 1.0, v_h_1);
+    return ((_e5 * (1.0 - metallic)) + (_e10 * metallic));
+}
+
+vec3 diffuse_brdf(vec3 base_5, float metallic_1, vec3 f0_d_1, float f90_d_1, float v_h_2) {
+    vec3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return ((((vec3(1.0, 1.0, 1.0) - _e9) * base_5) * (1.0 - metallic_1)) * INV_PI);
+}
+
+float half_cosine(vec3 v_2, vec3 l) {
+    vec3 h_1 = (v_2 + l);
+    float len2_ = dot(h_1, h_1);
+    if ((len2_ <= 0.0)) {
+        return 0.0;
+    }
+    return clamp((dot(v_2, h_1) / sqrt(len2_)), 0.0, 1.0);
+}
+
+vec3 specular_brdf(vec3 base_6, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n_17, vec3 v_3, vec3 l_1) {
+    bool local_15 = false;
+    float n_l_2 = dot(n_17, l_1);
+    float n_v_2 = dot(n_17, v_3);
+    if (!((n_l_2 <= 0.0))) {
+        local_15 = (n_v_2 <= 0.0);
+    } else {
+        local_15 = true;
+    }
+    bool _e18 = local_15;
+    if (_e18) {
+        return vec3(0.0, 0.0, 0.0);
+    }
+    vec3 hs = (v_3 + l_1);
+    float inv_1 = (1.0 / sqrt(dot(hs, hs)));
+    vec3 h_2 = (hs * inv_1);
+    vec3 c_13 = cross(n_17, h_2);
+    float _e32 = ggx_d(dot(n_17, h_2), dot(c_13, c_13), alpha_3);
+    vec3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_3, h_2));
+    float _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
+    return (_e34 * (_e32 * _e35));
+}
+
+vec3 brdf_eval(vec3 base_7, float metallic_3, vec3 f0_d_3, float f90_d_3, float alpha_4, vec3 n_18, vec3 v_4, vec3 l_2) {
+    if ((dot(n_18, l_2) <= 0.0)) {
+        return vec3(0.0, 0.0, 0.0);
+    }
+    float _e15 = half_cosine(v_4, l_2);
+    vec3 _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
+    vec3 _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_18, v_4, l_2);
+    return (_e16 + _e17);
+}
+
+bool has_specular(float metallic_4, vec3 f0_d_4, float f90_d_4) {
+    bool local_16 = false;
+    bool local_17 = false;
+    if (!((metallic_4 > 0.0))) {
+        local_16 = (f90_d_4 > 0.0);
+    } else {
+        local_16 = true;
+    }
+    bool _e11 = local_16;
+    if (!(_e11)) {
+        local_17 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
+    } else {
+        local_17 = true;
+    }
+    bool _e23 = local_17;
+    return _e23;
+}
+
+float channel_mean(vec3 c_9) {
+    return (((c_9.x + c_9.y) + c_9.z) * 0.33333334);
+}
+
+float specular_probability(vec3 base_8, float metallic_5, vec3 f0_d_5, float f90_d_5, float n_v_1) {
+    bool local_18 = false;
+    if (!((n_v_1 <= 0.0))) {
+        bool _e10 = has_specular(metallic_5, f0_d_5, f90_d_5);
+        local_18 = !(_e10);
+    } else {
+        local_18 = true;
+    }
+    bool _e13 = local_18;
+    if (_e13) {
+        return 0.0;
+    }
+    vec3 _e15 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    float _e16 = channel_mean(_e15);
+    vec3 _e21 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
+    float _e27 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e21) * base_8) * (1.0 - metallic_5)));
+    if ((_e27 <= 0.0)) {
+        return 1.0;
+    }
+    if ((_e16 <= 0.0)) {
+        return 0.0;
+    }
+    return clamp((_e16 / (_e16 + _e27)), 0.1, 0.9);
+}
+
+float bounded_vndf_k(vec3 wi, float alpha_5) {
+    float a_12 = clamp(alpha_5, 0.0, 1.0);
+    float s_7 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    float a2_3 = (a_12 * a_12);
+    float s2_ = (s_7 * s_7);
+    return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
+}
+
+vec3 ggx_vndf_sample(vec3 wi_1, float alpha_6, float u1_2, float u2_2) {
+    vec3 wi_std = normalize(vec3((wi_1.x * alpha_6), (wi_1.y * alpha_6), wi_1.z));
+    float _e12 = bounded_vndf_k(wi_1, alpha_6);
+    float b_7 = ((wi_1.z > 0.0) ? (_e12 * wi_std.z) : wi_std.z);
+    float phi_3 = (6.2831855 * u1_2);
+    float z_4 = (((1.0 - u2_2) * (1.0 + b_7)) - b_7);
+    float sin_t = sqrt(clamp((1.0 - (z_4 * z_4)), 0.0, 1.0));
+    vec3 m_std = (wi_std + vec3((sin_t * cos(phi_3)), (sin_t * sin(phi_3)), z_4));
+    vec3 m_1 = normalize(vec3((m_std.x * alpha_6), (m_std.y * alpha_6), m_std.z));
+    return ((m_1 * (2.0 * dot(wi_1, m_1))) - wi_1);
+}
+
+float ggx_vndf_pdf(vec3 wi_2, vec3 wo, float alpha_7) {
+    bool local_19 = false;
+    if (!((wi_2.z <= 0.0))) {
+        local_19 = (wo.z <= 0.0);
+    } else {
+        local_19 = true;
+    }
+    bool _e13 = local_19;
+    if (_e13) {
+        return 0.0;
+    }
+    vec3 hs_1 = (wi_2 + wo);
+    vec3 m_2 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
+    float _e28 = ggx_d(m_2.z, ((m_2.x * m_2.x) + (m_2.y * m_2.y)), alpha_7);
+    float t_5 = sqrt((((alpha_7 * alpha_7) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
+    float _e43 = bounded_vndf_k(wi_2, alpha_7);
+    return (_e28 / (2.0 * ((_e43 * wi_2.z) + t_5)));
+}
+
+vec3 bsdf_sample(vec3 n_19, vec3 v_5, float alpha_8, float p_spec, float u1_3, float u2_3) {
+    if ((u1_3 < p_spec)) {
+        if ((dot(n_19, v_5) <= 0.0)) {
+            return -(n_19);
+        }
+        vec3 _e11 = onb_to_local(n_19, v_5);
+        vec3 _e13 = ggx_vndf_sample(_e11, alpha_8, (u1_3 / p_spec), u2_3);
+        vec3 _e14 = onb_to_world(n_19, _e13);
+        return normalize(_e14);
+    }
+    vec3 _e20 = cosine_direction(n_19, ((u1_3 - p_spec) / (1.0 - p_spec)), u2_3);
+    return _e20;
+}
+
+float bsdf_pdf(vec3 n_20, vec3 v_6, vec3 l_3, float alpha_9, float p_spec_1) {
+    float _e6 = cosine_pdf(dot(n_20, l_3));
+    if ((p_spec_1 <= 0.0)) {
+        return _e6;
+    }
+    vec3 _e9 = onb_to_local(n_20, v_6);
+    vec3 _e10 = onb_to_local(n_20, l_3);
+    float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_9);
+    return ((p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6));
 }
 
 float inv_sigma_z(float z) {
@@ -985,14 +1210,14 @@ vec3 filtered_irradiance(vec3 e, vec3 sum, float weight) {
     return e;
 }
 
-float bilateral_weight(vec3 n_13, vec3 nj, float z_1, float zj, float inv_sz) {
-    float dn = max(dot(n_13, nj), 0.0);
+float bilateral_weight(vec3 n_21, vec3 nj, float z_1, float zj, float inv_sz) {
+    float dn = max(dot(n_21, nj), 0.0);
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
-    float d_5 = ((zj - z_1) * inv_sz);
-    float t_5 = max((1.0 - (d_5 * d_5)), 0.0);
-    return (((dn8_ * dn8_) * t_5) * t_5);
+    float d_6 = ((zj - z_1) * inv_sz);
+    float t_6 = max((1.0 - (d_6 * d_6)), 0.0);
+    return (((dn8_ * dn8_) * t_6) * t_6);
 }
 
 uint interleave_subset(uint x_13, uint y_2, uint period_2) {
@@ -1032,8 +1257,8 @@ float vpl_near_weight(float d2_10, float near_r2_) {
     if ((near_r2_ <= 0.0)) {
         return 0.0;
     }
-    float t_6 = clamp(((near_r2_ - d2_10) / (0.75 * near_r2_)), 0.0, 1.0);
-    return ((t_6 * t_6) * (3.0 - (2.0 * t_6)));
+    float t_7 = clamp(((near_r2_ - d2_10) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_7 * t_7) * (3.0 - (2.0 * t_7)));
 }
 
 float vpl_far_weight(float d2_11, float near_r2_1) {
@@ -1041,8 +1266,8 @@ float vpl_far_weight(float d2_11, float near_r2_1) {
     return (1.0 - _e2);
 }
 
-vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_8, float h) {
-    float sx = (((2.0 * px) / w_8) - 1.0);
+vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_9, float h) {
+    float sx = (((2.0 * px) / w_9) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h));
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
@@ -1060,32 +1285,32 @@ bool sees_emission(vec3 gn, vec3 dir_1) {
     return (dot(gn, dir_1) < 0.0);
 }
 
-bool continues_path(vec3 nd, vec3 n_14, vec3 ng_1) {
-    bool local_14 = false;
-    if ((dot(nd, n_14) > 0.0)) {
-        local_14 = (dot(nd, ng_1) > 0.0);
+bool continues_path(vec3 nd, vec3 n_22, vec3 ng_1) {
+    bool local_20 = false;
+    if ((dot(nd, n_22) > 0.0)) {
+        local_20 = (dot(nd, ng_1) > 0.0);
     } else {
-        local_14 = false;
+        local_20 = false;
     }
-    bool _e12 = local_14;
+    bool _e12 = local_20;
     return _e12;
 }
 
-bool finite3_(vec3 v_2) {
-    bool local_15 = false;
-    bool local_16 = false;
-    if ((abs(v_2.x) <= F32_MAX)) {
-        local_15 = (abs(v_2.y) <= F32_MAX);
+bool finite3_(vec3 v_7) {
+    bool local_21 = false;
+    bool local_22 = false;
+    if ((abs(v_7.x) <= F32_MAX)) {
+        local_21 = (abs(v_7.y) <= F32_MAX);
     } else {
-        local_15 = false;
+        local_21 = false;
     }
-    bool _e12 = local_15;
+    bool _e12 = local_21;
     if (_e12) {
-        local_16 = (abs(v_2.z) <= F32_MAX);
+        local_22 = (abs(v_7.z) <= F32_MAX);
     } else {
-        local_16 = false;
+        local_22 = false;
     }
-    bool _e20 = local_16;
+    bool _e20 = local_22;
     return _e20;
 }
 
@@ -1111,9 +1336,9 @@ float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_2, float extent_2, bool
 }
 
 float display_encode(float x_14) {
-    float v_12 = max(x_14, 0.0);
-    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
-    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+    float v_17 = max(x_14, 0.0);
+    float t_8 = ((2.0 * v_17) / (1.0 + (2.0 * v_17)));
+    return ((t_8 <= 0.0031308) ? (12.92 * t_8) : ((1.055 * pow(t_8, 0.41666666)) - 0.055));
 }
 
 float light_map_depth(vec3 rel_1, vec3 axis_3, bool perspective_1) {
@@ -1124,19 +1349,19 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis) {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-vec3 point_irradiance(vec3 intensity_1, vec3 n_15, vec3 v_3) {
-    float d2_14 = dot(v_3, v_3);
-    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
+vec3 point_irradiance(vec3 intensity_1, vec3 n_23, vec3 v_8) {
+    float d2_14 = dot(v_8, v_8);
+    float cos_x_2 = (dot(n_23, v_8) / sqrt(max(d2_14, MIN_D2_)));
     float _e11 = inverse_square(d2_14);
     return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
-vec3 directional_irradiance(vec3 e_1, vec3 n_16, vec3 to_light) {
-    return (e_1 * max(dot(n_16, to_light), 0.0));
+vec3 directional_irradiance(vec3 e_1, vec3 n_24, vec3 to_light) {
+    return (e_1 * max(dot(n_24, to_light), 0.0));
 }
 
-float perspective_texel_width(float extent_3, float d_2, float z_2, float size_8) {
-    return ((((2.0 * extent_3) * d_2) * d_2) / (size_8 * z_2));
+float perspective_texel_width(float extent_3, float d_3, float z_2, float size_8) {
+    return ((((2.0 * extent_3) * d_3) * d_3) / (size_8 * z_2));
 }
 
 float ortho_texel_width(float extent_4, float size_9) {
@@ -1144,18 +1369,18 @@ float ortho_texel_width(float extent_4, float size_9) {
 }
 
 float shadow_bias(float texel, float cos_light_1) {
-    float c_11 = clamp(cos_light_1, 0.02, 1.0);
-    return (texel * (1.5 + (sqrt((1.0 - (c_11 * c_11))) / c_11)));
+    float c_14 = clamp(cos_light_1, 0.02, 1.0);
+    return (texel * (1.5 + (sqrt((1.0 - (c_14 * c_14))) / c_14)));
 }
 
-bool shadow_lit(float d_3, float d_map, float bias) {
-    bool local_17 = false;
+bool shadow_lit(float d_4, float d_map, float bias) {
+    bool local_23 = false;
     if (!((d_map <= 0.0))) {
-        local_17 = (d_3 <= (d_map + bias));
+        local_23 = (d_4 <= (d_map + bias));
     } else {
-        local_17 = true;
+        local_23 = true;
     }
-    bool _e11 = local_17;
+    bool _e11 = local_23;
     return _e11;
 }
 
@@ -1183,18 +1408,18 @@ void main() {
     ivec2 texel_1 = ivec2(int(gid.x), int(gid.y));
     vec4 p_4 = texelFetch(_group_0_binding_1_cs, texel_1, 0);
     vec4 _e33 = texelFetch(_group_0_binding_2_cs, texel_1, 0);
-    vec3 n_19 = _e33.xyz;
-    float len2_ = dot(n_19, n_19);
+    vec3 n_27 = _e33.xyz;
+    float len2_1 = dot(n_27, n_27);
     if ((p_4.w > 0.0)) {
-        local_1 = (len2_ > 0.0);
+        local_1 = (len2_1 > 0.0);
     } else {
         local_1 = false;
     }
     bool valid = local_1;
     vec3 _e48 = _group_0_binding_0_cs.eye;
-    vec3 v_13 = (p_4.xyz - _e48);
+    vec3 v_18 = (p_4.xyz - _e48);
     _group_0_binding_3_cs[i_2] = vec4(p_4.xyz, (valid ? 1.0 : 0.0));
-    _group_0_binding_4_cs[i_2] = (valid ? vec4((n_19 / vec3(sqrt(len2_))), sqrt(dot(v_13, v_13))) : vec4(0.0, 0.0, 0.0, 1e30));
+    _group_0_binding_4_cs[i_2] = (valid ? vec4((n_27 / vec3(sqrt(len2_1))), sqrt(dot(v_18, v_18))) : vec4(0.0, 0.0, 0.0, 1e30));
     _group_0_binding_5_cs[i_2] = vec4(0.0);
     return;
 }

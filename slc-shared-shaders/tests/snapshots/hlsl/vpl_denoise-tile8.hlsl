@@ -231,6 +231,7 @@ static const uint RESERVOIR_FULL = 4294967295u;
 static const uint LIGHT_BVH_LEAF = 4294967295u;
 static const float ONE_MINUS_EPSILON = 0.99999994;
 static const float F32_MAX = 3.4028235e38;
+static const float GGX_ALPHA_MIN = 0.001;
 static const float DEPTH_NONE = 1e30;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
@@ -397,21 +398,21 @@ float cull_radius(float r2_1)
 float windowed_falloff(float d2_4, float range2_1)
 {
     float q_2 = (d2_4 / range2_1);
-    float w_9 = saturate((1.0 - (q_2 * q_2)));
-    return ((w_9 * w_9) / max(d2_4, 0.0001));
+    float w_10 = saturate((1.0 - (q_2 * q_2)));
+    return ((w_10 * w_10) / max(d2_4, 0.0001));
 }
 
 bool sphere_contains_point(float3 c, float r, float3 x_3)
 {
-    float3 v_4 = (x_3 - c);
-    return (dot(v_4, v_4) <= (r * r));
+    float3 v_9 = (x_3 - c);
+    return (dot(v_9, v_9) <= (r * r));
 }
 
 bool sphere_overlaps_sphere(float3 c1_, float r1_, float3 c2_, float r2_2)
 {
-    float3 v_5 = (c2_ - c1_);
+    float3 v_10 = (c2_ - c1_);
     float r_3 = (r1_ + r2_2);
-    return (dot(v_5, v_5) <= (r_3 * r_3));
+    return (dot(v_10, v_10) <= (r_3 * r_3));
 }
 
 float sphere_pad(float r_1, float3 c_1)
@@ -423,18 +424,18 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 {
     bool local_1 = (bool)0;
 
-    float3 v_6 = (c2_1 - c1_1);
-    float d_4 = sqrt(dot(v_6, v_6));
+    float3 v_11 = (c2_1 - c1_1);
+    float d_5 = sqrt(dot(v_11, v_11));
     const float _e8 = sphere_pad(r1_1, c1_1);
-    if ((r1_1 >= ((d_4 + r2_3) + _e8))) {
+    if ((r1_1 >= ((d_5 + r2_3) + _e8))) {
         return float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     const float _e16 = sphere_pad(r2_3, c2_1);
-    if ((r2_3 >= ((d_4 + r1_1) + _e16))) {
+    if ((r2_3 >= ((d_5 + r1_1) + _e16))) {
         return float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_4 >= SPHERE_HUGE))) {
-        local_1 = ((0.5 * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if (!((d_5 >= SPHERE_HUGE))) {
+        local_1 = ((0.5 * ((d_5 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local_1 = true;
     }
@@ -442,30 +443,30 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
     if (_e35) {
         return float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if ((abs((r1_1 - r2_3)) >= d_4)) {
+    if ((abs((r1_1 - r2_3)) >= d_5)) {
         if ((r1_1 >= r2_3)) {
-            float rn = max(r1_1, (d_4 + r2_3));
+            float rn = max(r1_1, (d_5 + r2_3));
             const float _e50 = sphere_pad(rn, c1_1);
             return float4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        float rm = max(r2_3, (d_4 + r1_1));
+        float rm = max(r2_3, (d_5 + r1_1));
         const float _e58 = sphere_pad(rm, c2_1);
         return float4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    float r0_ = (0.5 * ((d_4 + r1_1) + r2_3));
-    float3 c_9 = (c1_1 + (v_6 * ((r0_ - r1_1) / d_4)));
-    float3 e1_ = (c_9 - c1_1);
-    float3 e2_ = (c_9 - c2_1);
+    float r0_ = (0.5 * ((d_5 + r1_1) + r2_3));
+    float3 c_10 = (c1_1 + (v_11 * ((r0_ - r1_1) / d_5)));
+    float3 e1_ = (c_10 - c1_1);
+    float3 e2_ = (c_10 - c2_1);
     float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    const float _e82 = sphere_pad(r_4, c_9);
-    return float4(c_9.x, c_9.y, c_9.z, (r_4 + _e82));
+    const float _e82 = sphere_pad(r_4, c_10);
+    return float4(c_10.x, c_10.y, c_10.z, (r_4 + _e82));
 }
 
 bool sphere_overlaps_aabb(float3 c_2, float r_2, float3 bmin, float3 bmax)
 {
     float3 q_3 = clamp(c_2, bmin, bmax);
-    float3 v_7 = (q_3 - c_2);
-    return (dot(v_7, v_7) <= (r_2 * r_2));
+    float3 v_12 = (q_3 - c_2);
+    return (dot(v_12, v_12) <= (r_2 * r_2));
 }
 
 float vpl_rt2_(float3 flux, float exposure_1, float error_bound_1, uint mode_1)
@@ -497,8 +498,8 @@ float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
     bool local_2 = (bool)0;
     bool local_3 = (bool)0;
 
-    float3 v_8 = (x_4 - y);
-    float d2_12 = dot(v_8, v_8);
+    float3 v_13 = (x_4 - y);
+    float d2_12 = dot(v_13, v_13);
     const bool _e7 = slc_keep(r2_5, d2_12);
     if (!(!(_e7))) {
         local_2 = !((d2_12 > 0.0));
@@ -509,10 +510,10 @@ float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
     if (_e16) {
         return 0.0;
     }
-    float3 w_10 = (v_8 / (sqrt(d2_12)).xxx);
-    float cos_x_1 = -(dot(n, w_10));
+    float3 w_11 = (v_13 / (sqrt(d2_12)).xxx);
+    float cos_x_1 = -(dot(n, w_11));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = (dot(ng, w_10) >= 0.0);
+        local_3 = (dot(ng, w_11) >= 0.0);
     } else {
         local_3 = true;
     }
@@ -558,11 +559,11 @@ float3 triangle_sample(float3 a_2, float3 b_2, float3 c_3, float u1_, float u2_)
 
 float area_to_solid_angle_pdf(float pdf_area, float d2_7, float cos_light)
 {
-    float c_10 = abs(cos_light);
-    if ((c_10 <= 0.0)) {
+    float c_11 = abs(cos_light);
+    if ((c_11 <= 0.0)) {
         return 0.0;
     }
-    return ((pdf_area * d2_7) / c_10);
+    return ((pdf_area * d2_7) / c_11);
 }
 
 float atan_portable(float x_5)
@@ -755,8 +756,8 @@ float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
     float gamma_1 = degrees(_e9);
     bool on_axis = ((abs(wr) + abs(ws)) <= 0.0);
     const float _e16 = atan2_portable(ws, wr);
-    float c_11 = (on_axis ? 0.0 : degrees(_e16));
-    const float _e20 = ies_candela(tab_3, base_2, gamma_1, c_11);
+    float c_12 = (on_axis ? 0.0 : degrees(_e16));
+    const float _e20 = ies_candela(tab_3, base_2, gamma_1, c_12);
     return _e20;
 }
 
@@ -884,12 +885,12 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
 {
     float imp = (float)0;
 
-    float3 v_9 = (p - center_);
-    float dist2_ = dot(v_9, v_9);
+    float3 v_14 = (p - center_);
+    float dist2_ = dot(v_14, v_14);
     float r2_6 = (radius * radius);
     float d2_13 = max(max(dist2_, r2_6), MIN_D2_);
-    float3 wi = ((dist2_ > 0.0) ? (v_9 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
-    float cos_w = dot(axis, wi);
+    float3 wi_3 = ((dist2_ > 0.0) ? (v_14 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi_3);
     const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
     const float _e32 = safe_sqrt((1.0 - (r2_6 / dist2_)));
     float cos_b_2 = ((dist2_ <= r2_6) ? -1.0 : _e32);
@@ -903,7 +904,7 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     }
     imp = ((phi * _e46) / d2_13);
     if ((dot(n_9, n_9) > 0.0)) {
-        float cos_i = -(dot(wi, n_9));
+        float cos_i = -(dot(wi_3, n_9));
         const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
         float _e61 = imp;
         const float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
@@ -921,9 +922,9 @@ float candidate_weight(float importance, float rt2_4, float d2_8)
 
 float cone_weight(float3 center_1, float radius_1, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, float3 p_1, float3 n_10)
 {
-    float3 v_10 = (p_1 - center_1);
+    float3 v_15 = (p_1 - center_1);
     const float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
-    const float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_10, v_10));
+    const float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_15, v_15));
     return _e14;
 }
 
@@ -1000,8 +1001,8 @@ float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
 {
     bool local_6 = (bool)0;
 
-    float3 n_18 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_18, n_18);
+    float3 n_26 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_26, n_26);
     if (!(!((l2_ > 0.0)))) {
         local_6 = !((l2_ < 3e38));
     } else {
@@ -1011,7 +1012,7 @@ float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_18 / (sqrt(l2_)).xxx);
+    return (n_26 / (sqrt(l2_)).xxx);
 }
 
 float3 face_against(float3 n_11, float3 dir)
@@ -1051,8 +1052,8 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_7, float3 fac
     if (_e24) {
         return facing;
     }
-    float3 n_19 = (s_2 / (sqrt(l2_1)).xxx);
-    return ((dot(n_19, facing) < 0.0) ? -(n_19) : n_19);
+    float3 n_27 = (s_2 / (sqrt(l2_1)).xxx);
+    return ((dot(n_27, facing) < 0.0) ? -(n_27) : n_27);
 }
 
 float ray_triangle(float3 o_1, float3 d_1, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
@@ -1081,9 +1082,9 @@ float ray_triangle(float3 o_1, float3 d_1, float3 a_7, float3 b_6, float3 c_8, f
         return -1.0;
     }
     float3 q_5 = cross(s_3, e1_2);
-    float v_11 = (dot(d_1, q_5) * inv_1);
-    if (!((v_11 < 0.0))) {
-        local_9 = ((u_6 + v_11) > 1.0);
+    float v_16 = (dot(d_1, q_5) * inv_1);
+    if (!((v_16 < 0.0))) {
+        local_9 = ((u_6 + v_16) > 1.0);
     } else {
         local_9 = true;
     }
@@ -1158,16 +1159,267 @@ float cosine_pdf(float cos_theta_1)
     return (max(cos_theta_1, 0.0) * INV_PI);
 }
 
-float3 cosine_direction(float3 n_12, float u1_1, float u2_1)
+float3 onb_tangent(float3 n_12)
 {
     float s_6 = ((n_12.z >= 0.0) ? 1.0 : -1.0);
     float a_11 = (-1.0 / (s_6 + n_12.z));
-    float b_8 = ((n_12.x * n_12.y) * a_11);
-    float3 t_4 = float3((1.0 + (((s_6 * n_12.x) * n_12.x) * a_11)), (s_6 * b_8), (-(s_6) * n_12.x));
-    float3 bt = float3(b_8, (s_6 + ((n_12.y * n_12.y) * a_11)), -(n_12.y));
+    return float3((1.0 + (((s_6 * n_12.x) * n_12.x) * a_11)), (((s_6 * n_12.x) * n_12.y) * a_11), (-(s_6) * n_12.x));
+}
+
+float3 onb_bitangent(float3 n_13)
+{
+    float s_7 = ((n_13.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_7 + n_13.z));
+    return float3(((n_13.x * n_13.y) * a_12), (s_7 + ((n_13.y * n_13.y) * a_12)), -(n_13.y));
+}
+
+float3 onb_to_world(float3 n_14, float3 d_2)
+{
+    const float3 _e2 = onb_tangent(n_14);
+    const float3 _e5 = onb_bitangent(n_14);
+    return (((_e2 * d_2.x) + (_e5 * d_2.y)) + (n_14 * d_2.z));
+}
+
+float3 onb_to_local(float3 n_15, float3 w_8)
+{
+    const float3 _e2 = onb_tangent(n_15);
+    const float3 _e4 = onb_bitangent(n_15);
+    return float3(dot(w_8, _e2), dot(w_8, _e4), dot(w_8, n_15));
+}
+
+float3 cosine_direction(float3 n_16, float u1_1, float u2_1)
+{
     float r_6 = sqrt(u1_1);
     float phi_2 = (6.2831855 * u2_1);
-    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_12 * sqrt(max((1.0 - u1_1), 0.0)))));
+    const float3 _e16 = onb_to_world(n_16, float3((r_6 * cos(phi_2)), (r_6 * sin(phi_2)), sqrt(max((1.0 - u1_1), 0.0))));
+    return normalize(_e16);
+}
+
+float ggx_alpha(float roughness)
+{
+    return max((roughness * roughness), GGX_ALPHA_MIN);
+}
+
+float ggx_d(float cos_h, float sin2_h, float alpha)
+{
+    if ((cos_h <= 0.0)) {
+        return 0.0;
+    }
+    float a2_1 = (alpha * alpha);
+    float t_4 = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t_4 * t_4));
+}
+
+float smith_root(float cos_, float alpha_1)
+{
+    float a2_2 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1.0 - a2_2)) + a2_2));
+}
+
+float smith_visibility(float n_l_1, float n_v, float alpha_2)
+{
+    bool local_13 = (bool)0;
+
+    if (!((n_l_1 <= 0.0))) {
+        local_13 = (n_v <= 0.0);
+    } else {
+        local_13 = true;
+    }
+    bool _e11 = local_13;
+    if (_e11) {
+        return 0.0;
+    }
+    const float _e13 = smith_root(n_v, alpha_2);
+    const float _e15 = smith_root(n_l_1, alpha_2);
+    return (0.5 / ((n_l_1 * _e13) + (n_v * _e15)));
+}
+
+float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
+{
+    float c_13 = saturate((1.0 - v_h));
+    float c2_2 = (c_13 * c_13);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_2 * c2_2) * c_13)));
+}
+
+float3 specular_fresnel(float3 base_4, float metallic, float3 f0_d, float f90_d, float v_h_1)
+{
+    const float3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    const float3 _e10 = fresnel_schlick(base_4, 1.0, v_h_1);
+    return ((_e5 * (1.0 - metallic)) + (_e10 * metallic));
+}
+
+float3 diffuse_brdf(float3 base_5, float metallic_1, float3 f0_d_1, float f90_d_1, float v_h_2)
+{
+    const float3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return ((((float3(1.0, 1.0, 1.0) - _e9) * base_5) * (1.0 - metallic_1)) * INV_PI);
+}
+
+float half_cosine(float3 v_2, float3 l)
+{
+    float3 h_1 = (v_2 + l);
+    float len2_ = dot(h_1, h_1);
+    if ((len2_ <= 0.0)) {
+        return 0.0;
+    }
+    return saturate((dot(v_2, h_1) / sqrt(len2_)));
+}
+
+float3 specular_brdf(float3 base_6, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_17, float3 v_3, float3 l_1)
+{
+    bool local_14 = (bool)0;
+
+    float n_l_2 = dot(n_17, l_1);
+    float n_v_2 = dot(n_17, v_3);
+    if (!((n_l_2 <= 0.0))) {
+        local_14 = (n_v_2 <= 0.0);
+    } else {
+        local_14 = true;
+    }
+    bool _e18 = local_14;
+    if (_e18) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    float3 hs = (v_3 + l_1);
+    float inv_2 = (1.0 / sqrt(dot(hs, hs)));
+    float3 h_2 = (hs * inv_2);
+    float3 c_14 = cross(n_17, h_2);
+    const float _e32 = ggx_d(dot(n_17, h_2), dot(c_14, c_14), alpha_3);
+    const float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_3, h_2));
+    const float _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
+    return (_e34 * (_e32 * _e35));
+}
+
+float3 brdf_eval(float3 base_7, float metallic_3, float3 f0_d_3, float f90_d_3, float alpha_4, float3 n_18, float3 v_4, float3 l_2)
+{
+    if ((dot(n_18, l_2) <= 0.0)) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    const float _e15 = half_cosine(v_4, l_2);
+    const float3 _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
+    const float3 _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_18, v_4, l_2);
+    return (_e16 + _e17);
+}
+
+bool has_specular(float metallic_4, float3 f0_d_4, float f90_d_4)
+{
+    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
+
+    if (!((metallic_4 > 0.0))) {
+        local_15 = (f90_d_4 > 0.0);
+    } else {
+        local_15 = true;
+    }
+    bool _e11 = local_15;
+    if (!(_e11)) {
+        local_16 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
+    } else {
+        local_16 = true;
+    }
+    bool _e23 = local_16;
+    return _e23;
+}
+
+float channel_mean(float3 c_9)
+{
+    return (((c_9.x + c_9.y) + c_9.z) * 0.33333334);
+}
+
+float specular_probability(float3 base_8, float metallic_5, float3 f0_d_5, float f90_d_5, float n_v_1)
+{
+    bool local_17 = (bool)0;
+
+    if (!((n_v_1 <= 0.0))) {
+        const bool _e10 = has_specular(metallic_5, f0_d_5, f90_d_5);
+        local_17 = !(_e10);
+    } else {
+        local_17 = true;
+    }
+    bool _e13 = local_17;
+    if (_e13) {
+        return 0.0;
+    }
+    const float3 _e15 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    const float _e16 = channel_mean(_e15);
+    const float3 _e21 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
+    const float _e27 = channel_mean((((float3(1.0, 1.0, 1.0) - _e21) * base_8) * (1.0 - metallic_5)));
+    if ((_e27 <= 0.0)) {
+        return 1.0;
+    }
+    if ((_e16 <= 0.0)) {
+        return 0.0;
+    }
+    return clamp((_e16 / (_e16 + _e27)), 0.1, 0.9);
+}
+
+float bounded_vndf_k(float3 wi, float alpha_5)
+{
+    float a_13 = saturate(alpha_5);
+    float s_8 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    float a2_3 = (a_13 * a_13);
+    float s2_ = (s_8 * s_8);
+    return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
+}
+
+float3 ggx_vndf_sample(float3 wi_1, float alpha_6, float u1_2, float u2_2)
+{
+    float3 wi_std = normalize(float3((wi_1.x * alpha_6), (wi_1.y * alpha_6), wi_1.z));
+    const float _e12 = bounded_vndf_k(wi_1, alpha_6);
+    float b_8 = ((wi_1.z > 0.0) ? (_e12 * wi_std.z) : wi_std.z);
+    float phi_3 = (6.2831855 * u1_2);
+    float z_5 = (((1.0 - u2_2) * (1.0 + b_8)) - b_8);
+    float sin_t = sqrt(saturate((1.0 - (z_5 * z_5))));
+    float3 m_std = (wi_std + float3((sin_t * cos(phi_3)), (sin_t * sin(phi_3)), z_5));
+    float3 m_1 = normalize(float3((m_std.x * alpha_6), (m_std.y * alpha_6), m_std.z));
+    return ((m_1 * (2.0 * dot(wi_1, m_1))) - wi_1);
+}
+
+float ggx_vndf_pdf(float3 wi_2, float3 wo, float alpha_7)
+{
+    bool local_18 = (bool)0;
+
+    if (!((wi_2.z <= 0.0))) {
+        local_18 = (wo.z <= 0.0);
+    } else {
+        local_18 = true;
+    }
+    bool _e13 = local_18;
+    if (_e13) {
+        return 0.0;
+    }
+    float3 hs_1 = (wi_2 + wo);
+    float3 m_2 = (hs_1 / (sqrt(dot(hs_1, hs_1))).xxx);
+    const float _e28 = ggx_d(m_2.z, ((m_2.x * m_2.x) + (m_2.y * m_2.y)), alpha_7);
+    float t_5 = sqrt((((alpha_7 * alpha_7) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
+    const float _e43 = bounded_vndf_k(wi_2, alpha_7);
+    return (_e28 / (2.0 * ((_e43 * wi_2.z) + t_5)));
+}
+
+float3 bsdf_sample(float3 n_19, float3 v_5, float alpha_8, float p_spec, float u1_3, float u2_3)
+{
+    if ((u1_3 < p_spec)) {
+        if ((dot(n_19, v_5) <= 0.0)) {
+            return -(n_19);
+        }
+        const float3 _e11 = onb_to_local(n_19, v_5);
+        const float3 _e13 = ggx_vndf_sample(_e11, alpha_8, (u1_3 / p_spec), u2_3);
+        const float3 _e14 = onb_to_world(n_19, _e13);
+        return normalize(_e14);
+    }
+    const float3 _e20 = cosine_direction(n_19, ((u1_3 - p_spec) / (1.0 - p_spec)), u2_3);
+    return _e20;
+}
+
+float bsdf_pdf(float3 n_20, float3 v_6, float3 l_3, float alpha_9, float p_spec_1)
+{
+    const float _e6 = cosine_pdf(dot(n_20, l_3));
+    if ((p_spec_1 <= 0.0)) {
+        return _e6;
+    }
+    const float3 _e9 = onb_to_local(n_20, v_6);
+    const float3 _e10 = onb_to_local(n_20, l_3);
+    const float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_9);
+    return ((p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6));
 }
 
 float inv_sigma_z(float z)
@@ -1208,15 +1460,15 @@ float3 filtered_irradiance(float3 e, float3 sum, float weight)
     return e;
 }
 
-float bilateral_weight(float3 n_13, float3 nj, float z_1, float zj, float inv_sz)
+float bilateral_weight(float3 n_21, float3 nj, float z_1, float zj, float inv_sz)
 {
-    float dn = max(dot(n_13, nj), 0.0);
+    float dn = max(dot(n_21, nj), 0.0);
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
-    float d_5 = ((zj - z_1) * inv_sz);
-    float t_5 = max((1.0 - (d_5 * d_5)), 0.0);
-    return (((dn8_ * dn8_) * t_5) * t_5);
+    float d_6 = ((zj - z_1) * inv_sz);
+    float t_6 = max((1.0 - (d_6 * d_6)), 0.0);
+    return (((dn8_ * dn8_) * t_6) * t_6);
 }
 
 uint naga_mod(uint lhs, uint rhs) {
@@ -1268,8 +1520,8 @@ float vpl_near_weight(float d2_10, float near_r2_)
     if ((near_r2_ <= 0.0)) {
         return 0.0;
     }
-    float t_6 = clamp(((near_r2_ - d2_10) / (0.75 * near_r2_)), 0.0, 1.0);
-    return ((t_6 * t_6) * (3.0 - (2.0 * t_6)));
+    float t_7 = clamp(((near_r2_ - d2_10) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_7 * t_7) * (3.0 - (2.0 * t_7)));
 }
 
 float vpl_far_weight(float d2_11, float near_r2_1)
@@ -1278,9 +1530,9 @@ float vpl_far_weight(float d2_11, float near_r2_1)
     return (1.0 - _e2);
 }
 
-float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_8, float h)
+float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_9, float h)
 {
-    float sx = (((2.0 * px) / w_8) - 1.0);
+    float sx = (((2.0 * px) / w_9) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h));
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
@@ -1301,36 +1553,36 @@ bool sees_emission(float3 gn, float3 dir_1)
     return (dot(gn, dir_1) < 0.0);
 }
 
-bool continues_path(float3 nd, float3 n_14, float3 ng_1)
+bool continues_path(float3 nd, float3 n_22, float3 ng_1)
 {
-    bool local_13 = (bool)0;
+    bool local_19 = (bool)0;
 
-    if ((dot(nd, n_14) > 0.0)) {
-        local_13 = (dot(nd, ng_1) > 0.0);
+    if ((dot(nd, n_22) > 0.0)) {
+        local_19 = (dot(nd, ng_1) > 0.0);
     } else {
-        local_13 = false;
+        local_19 = false;
     }
-    bool _e12 = local_13;
+    bool _e12 = local_19;
     return _e12;
 }
 
-bool finite3_(float3 v_2)
+bool finite3_(float3 v_7)
 {
-    bool local_14 = (bool)0;
-    bool local_15 = (bool)0;
+    bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
 
-    if ((abs(v_2.x) <= F32_MAX)) {
-        local_14 = (abs(v_2.y) <= F32_MAX);
+    if ((abs(v_7.x) <= F32_MAX)) {
+        local_20 = (abs(v_7.y) <= F32_MAX);
     } else {
-        local_14 = false;
+        local_20 = false;
     }
-    bool _e12 = local_14;
+    bool _e12 = local_20;
     if (_e12) {
-        local_15 = (abs(v_2.z) <= F32_MAX);
+        local_21 = (abs(v_7.z) <= F32_MAX);
     } else {
-        local_15 = false;
+        local_21 = false;
     }
-    bool _e20 = local_15;
+    bool _e20 = local_21;
     return _e20;
 }
 
@@ -1361,9 +1613,9 @@ float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2
 
 float display_encode(float x_14)
 {
-    float v_12 = max(x_14, 0.0);
-    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
-    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+    float v_17 = max(x_14, 0.0);
+    float t_8 = ((2.0 * v_17) / (1.0 + (2.0 * v_17)));
+    return ((t_8 <= 0.0031308) ? (12.92 * t_8) : ((1.055 * pow(t_8, 0.41666666)) - 0.055));
 }
 
 float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
@@ -1376,22 +1628,22 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-float3 point_irradiance(float3 intensity_1, float3 n_15, float3 v_3)
+float3 point_irradiance(float3 intensity_1, float3 n_23, float3 v_8)
 {
-    float d2_14 = dot(v_3, v_3);
-    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
+    float d2_14 = dot(v_8, v_8);
+    float cos_x_2 = (dot(n_23, v_8) / sqrt(max(d2_14, MIN_D2_)));
     const float _e11 = inverse_square(d2_14);
     return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
-float3 directional_irradiance(float3 e_1, float3 n_16, float3 to_light)
+float3 directional_irradiance(float3 e_1, float3 n_24, float3 to_light)
 {
-    return (e_1 * max(dot(n_16, to_light), 0.0));
+    return (e_1 * max(dot(n_24, to_light), 0.0));
 }
 
-float perspective_texel_width(float extent_3, float d_2, float z_2, float size_8)
+float perspective_texel_width(float extent_3, float d_3, float z_2, float size_8)
 {
-    return ((((2.0 * extent_3) * d_2) * d_2) / (size_8 * z_2));
+    return ((((2.0 * extent_3) * d_3) * d_3) / (size_8 * z_2));
 }
 
 float ortho_texel_width(float extent_4, float size_9)
@@ -1401,20 +1653,20 @@ float ortho_texel_width(float extent_4, float size_9)
 
 float shadow_bias(float texel, float cos_light_1)
 {
-    float c_12 = clamp(cos_light_1, 0.02, 1.0);
-    return (texel * (1.5 + (sqrt((1.0 - (c_12 * c_12))) / c_12)));
+    float c_15 = clamp(cos_light_1, 0.02, 1.0);
+    return (texel * (1.5 + (sqrt((1.0 - (c_15 * c_15))) / c_15)));
 }
 
-bool shadow_lit(float d_3, float d_map, float bias)
+bool shadow_lit(float d_4, float d_map, float bias)
 {
-    bool local_16 = (bool)0;
+    bool local_22 = (bool)0;
 
     if (!((d_map <= 0.0))) {
-        local_16 = (d_3 <= (d_map + bias));
+        local_22 = (d_4 <= (d_map + bias));
     } else {
-        local_16 = true;
+        local_22 = true;
     }
-    bool _e11 = local_16;
+    bool _e11 = local_22;
     return _e11;
 }
 
@@ -1430,18 +1682,18 @@ float depth_of(uint i_2)
     return ((_e9 > 0.0) ? _e5 : DEPTH_NONE);
 }
 
-Window window_sum(uint x_15, uint y_3, uint size_10, float3 n_17, float z_3, float inv)
+Window window_sum(uint x_15, uint y_3, uint size_10, float3 n_25, float z_3, float inv)
 {
     Window win = (Window)0;
     uint yy = (uint)0;
     uint xx = (uint)0;
 
-    uint w_11 = params.width;
-    uint h_1 = params.height;
+    uint w_12 = params.width;
+    uint h_3 = params.height;
     const uint _e12 = window_start(x_15, size_10);
-    const uint _e13 = window_end(x_15, size_10, w_11);
+    const uint _e13 = window_end(x_15, size_10, w_12);
     const uint _e14 = window_start(y_3, size_10);
-    const uint _e15 = window_end(y_3, size_10, h_1);
+    const uint _e15 = window_end(y_3, size_10, h_3);
     win.sum = (0.0).xxx;
     win.weight = 0.0;
     win.covered = 0u;
@@ -1481,10 +1733,10 @@ Window window_sum(uint x_15, uint y_3, uint size_10, float3 n_17, float z_3, flo
                 {
                     uint _e30 = yy;
                     uint _e32 = xx;
-                    uint j = ((_e30 * w_11) + _e32);
+                    uint j = ((_e30 * w_12) + _e32);
                     float4 _e36 = asfloat(gb_normal.Load4(j*16));
                     const float _e38 = depth_of(j);
-                    const float _e39 = bilateral_weight(n_17, _e36.xyz, z_3, _e38, inv);
+                    const float _e39 = bilateral_weight(n_25, _e36.xyz, z_3, _e38, inv);
                     float3 _e41 = win.sum;
                     float4 _e44 = asfloat(irradiance.Load4(j*16));
                     win.sum = (_e41 + (_e44.xyz * _e39));
@@ -1507,10 +1759,10 @@ void main(uint3 gid : SV_DispatchThreadID)
     bool local = (bool)0;
     Window s = (Window)0;
 
-    uint w_12 = params.width;
-    uint h_2 = params.height;
-    if (!((gid.x >= w_12))) {
-        local = (gid.y >= h_2);
+    uint w_13 = params.width;
+    uint h_4 = params.height;
+    if (!((gid.x >= w_13))) {
+        local = (gid.y >= h_4);
     } else {
         local = true;
     }
@@ -1518,7 +1770,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     if (_e15) {
         return;
     }
-    uint i_3 = ((gid.y * w_12) + gid.x);
+    uint i_3 = ((gid.y * w_13) + gid.x);
     float4 e_3 = asfloat(irradiance.Load4(i_3*16));
     float _e26 = asfloat(gb_position.Load(12+i_3*16));
     if ((_e26 <= 0.0)) {
@@ -1526,16 +1778,16 @@ void main(uint3 gid : SV_DispatchThreadID)
         return;
     }
     float4 _e38 = asfloat(gb_normal.Load4(i_3*16));
-    float3 n_20 = _e38.xyz;
+    float3 n_28 = _e38.xyz;
     const float _e40 = depth_of(i_3);
     const float _e41 = inv_sigma_z(_e40);
-    const Window _e45 = window_sum(gid.x, gid.y, PERIOD, n_20, _e40, _e41);
+    const Window _e45 = window_sum(gid.x, gid.y, PERIOD, n_28, _e40, _e41);
     s = _e45;
     uint _e48 = s.covered;
     const bool _e50 = misses_subset(_e48, PERIOD);
     if (_e50) {
         const uint _e54 = wide_window(PERIOD);
-        const Window _e55 = window_sum(gid.x, gid.y, _e54, n_20, _e40, _e41);
+        const Window _e55 = window_sum(gid.x, gid.y, _e54, n_28, _e40, _e41);
         s = _e55;
     }
     float3 _e60 = s.sum;

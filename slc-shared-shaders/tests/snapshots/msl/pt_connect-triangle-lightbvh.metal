@@ -260,6 +260,7 @@ constant uint RESERVOIR_FULL = 4294967295u;
 constant uint LIGHT_BVH_LEAF = 4294967295u;
 constant float ONE_MINUS_EPSILON = 0.99999994;
 constant float F32_MAX = 340282350000000000000000000000000000000.0;
+constant float GGX_ALPHA_MIN = 0.001;
 constant float DEPTH_NONE = 1000000000000000000000000000000.0;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
@@ -461,8 +462,8 @@ float windowed_falloff(
     float range2_1
 ) {
     float q_2 = d2_4 / range2_1;
-    float w_11 = metal::saturate(1.0 - (q_2 * q_2));
-    return (w_11 * w_11) / metal::max(d2_4, 0.0001);
+    float w_12 = metal::saturate(1.0 - (q_2 * q_2));
+    return (w_12 * w_12) / metal::max(d2_4, 0.0001);
 }
 
 bool sphere_contains_point(
@@ -470,8 +471,8 @@ bool sphere_contains_point(
     float r,
     metal::float3 x_3
 ) {
-    metal::float3 v_4 = x_3 - c;
-    return metal::dot(v_4, v_4) <= (r * r);
+    metal::float3 v_9 = x_3 - c;
+    return metal::dot(v_9, v_9) <= (r * r);
 }
 
 bool sphere_overlaps_sphere(
@@ -480,9 +481,9 @@ bool sphere_overlaps_sphere(
     metal::float3 c2_,
     float r2_2
 ) {
-    metal::float3 v_5 = c2_ - c1_;
+    metal::float3 v_10 = c2_ - c1_;
     float r_3 = r1_ + r2_2;
-    return metal::dot(v_5, v_5) <= (r_3 * r_3);
+    return metal::dot(v_10, v_10) <= (r_3 * r_3);
 }
 
 float sphere_pad(
@@ -499,18 +500,18 @@ metal::float4 sphere_union(
     float r2_3
 ) {
     bool local = {};
-    metal::float3 v_6 = c2_1 - c1_1;
-    float d_5 = metal::sqrt(metal::dot(v_6, v_6));
+    metal::float3 v_11 = c2_1 - c1_1;
+    float d_6 = metal::sqrt(metal::dot(v_11, v_11));
     float _e8 = sphere_pad(r1_1, c1_1);
-    if (r1_1 >= ((d_5 + r2_3) + _e8)) {
+    if (r1_1 >= ((d_6 + r2_3) + _e8)) {
         return metal::float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     float _e16 = sphere_pad(r2_3, c2_1);
-    if (r2_3 >= ((d_5 + r1_1) + _e16)) {
+    if (r2_3 >= ((d_6 + r1_1) + _e16)) {
         return metal::float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_5 >= SPHERE_HUGE))) {
-        local = (0.5 * ((d_5 + r1_1) + r2_3)) >= SPHERE_HUGE;
+    if (!((d_6 >= SPHERE_HUGE))) {
+        local = (0.5 * ((d_6 + r1_1) + r2_3)) >= SPHERE_HUGE;
     } else {
         local = true;
     }
@@ -518,23 +519,23 @@ metal::float4 sphere_union(
     if (_e35) {
         return metal::float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if (metal::abs(r1_1 - r2_3) >= d_5) {
+    if (metal::abs(r1_1 - r2_3) >= d_6) {
         if (r1_1 >= r2_3) {
-            float rn = metal::max(r1_1, d_5 + r2_3);
+            float rn = metal::max(r1_1, d_6 + r2_3);
             float _e50 = sphere_pad(rn, c1_1);
             return metal::float4(c1_1.x, c1_1.y, c1_1.z, rn + _e50);
         }
-        float rm = metal::max(r2_3, d_5 + r1_1);
+        float rm = metal::max(r2_3, d_6 + r1_1);
         float _e58 = sphere_pad(rm, c2_1);
         return metal::float4(c2_1.x, c2_1.y, c2_1.z, rm + _e58);
     }
-    float r0_ = 0.5 * ((d_5 + r1_1) + r2_3);
-    metal::float3 c_10 = c1_1 + (v_6 * ((r0_ - r1_1) / d_5));
-    metal::float3 e1_ = c_10 - c1_1;
-    metal::float3 e2_ = c_10 - c2_1;
+    float r0_ = 0.5 * ((d_6 + r1_1) + r2_3);
+    metal::float3 c_11 = c1_1 + (v_11 * ((r0_ - r1_1) / d_6));
+    metal::float3 e1_ = c_11 - c1_1;
+    metal::float3 e2_ = c_11 - c2_1;
     float r_4 = metal::max(r0_, metal::max(metal::sqrt(metal::dot(e1_, e1_)) + r1_1, metal::sqrt(metal::dot(e2_, e2_)) + r2_3));
-    float _e82 = sphere_pad(r_4, c_10);
-    return metal::float4(c_10.x, c_10.y, c_10.z, r_4 + _e82);
+    float _e82 = sphere_pad(r_4, c_11);
+    return metal::float4(c_11.x, c_11.y, c_11.z, r_4 + _e82);
 }
 
 bool sphere_overlaps_aabb(
@@ -544,8 +545,8 @@ bool sphere_overlaps_aabb(
     metal::float3 bmax
 ) {
     metal::float3 q_3 = metal::clamp(c_2, bmin, bmax);
-    metal::float3 v_7 = q_3 - c_2;
-    return metal::dot(v_7, v_7) <= (r_2 * r_2);
+    metal::float3 v_12 = q_3 - c_2;
+    return metal::dot(v_12, v_12) <= (r_2 * r_2);
 }
 
 float vpl_rt2_(
@@ -592,8 +593,8 @@ float connection_cosine(
 ) {
     bool local_1 = {};
     bool local_2 = {};
-    metal::float3 v_8 = x_4 - y;
-    float d2_12 = metal::dot(v_8, v_8);
+    metal::float3 v_13 = x_4 - y;
+    float d2_12 = metal::dot(v_13, v_13);
     bool _e7 = slc_keep(r2_5, d2_12);
     if (!(!(_e7))) {
         local_1 = !((d2_12 > 0.0));
@@ -604,10 +605,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_12 = v_8 / metal::float3(metal::sqrt(d2_12));
-    float cos_x_1 = -(metal::dot(n, w_12));
+    metal::float3 w_13 = v_13 / metal::float3(metal::sqrt(d2_12));
+    float cos_x_1 = -(metal::dot(n, w_13));
     if (!((cos_x_1 <= 0.0))) {
-        local_2 = metal::dot(ng, w_12) >= 0.0;
+        local_2 = metal::dot(ng, w_13) >= 0.0;
     } else {
         local_2 = true;
     }
@@ -673,11 +674,11 @@ float area_to_solid_angle_pdf(
     float d2_7,
     float cos_light
 ) {
-    float c_11 = metal::abs(cos_light);
-    if (c_11 <= 0.0) {
+    float c_12 = metal::abs(cos_light);
+    if (c_12 <= 0.0) {
         return 0.0;
     }
-    return (pdf_area * d2_7) / c_11;
+    return (pdf_area * d2_7) / c_12;
 }
 
 float atan_portable(
@@ -894,8 +895,8 @@ float ies_candela_dir(
     float gamma_1 = ((_e9) * 57.295779513082322865);
     bool on_axis = (metal::abs(wr) + metal::abs(ws)) <= 0.0;
     float _e16 = atan2_portable(ws, wr);
-    float c_12 = on_axis ? 0.0 : ((_e16) * 57.295779513082322865);
-    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_12, slc_table, _buffer_sizes);
+    float c_13 = on_axis ? 0.0 : ((_e16) * 57.295779513082322865);
+    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_13, slc_table, _buffer_sizes);
     return _e20;
 }
 
@@ -1072,12 +1073,12 @@ float light_importance(
     metal::float3 n_9
 ) {
     float imp = {};
-    metal::float3 v_9 = p - center;
-    float dist2_ = metal::dot(v_9, v_9);
+    metal::float3 v_14 = p - center;
+    float dist2_ = metal::dot(v_14, v_14);
     float r2_7 = radius * radius;
     float d2_13 = metal::max(metal::max(dist2_, r2_7), MIN_D2_);
-    metal::float3 wi = (dist2_ > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
-    float cos_w = metal::dot(axis, wi);
+    metal::float3 wi_3 = (dist2_ > 0.0) ? (v_14 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
+    float cos_w = metal::dot(axis, wi_3);
     float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
     float _e32 = safe_sqrt(1.0 - (r2_7 / dist2_));
     float cos_b_2 = (dist2_ <= r2_7) ? -1.0 : _e32;
@@ -1091,7 +1092,7 @@ float light_importance(
     }
     imp = (phi * _e46) / d2_13;
     if (metal::dot(n_9, n_9) > 0.0) {
-        float cos_i = -(metal::dot(wi, n_9));
+        float cos_i = -(metal::dot(wi_3, n_9));
         float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
         float _e61 = imp;
         float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
@@ -1121,9 +1122,9 @@ float cone_weight(
     metal::float3 p_1,
     metal::float3 n_10
 ) {
-    metal::float3 v_10 = p_1 - center_1;
+    metal::float3 v_15 = p_1 - center_1;
     float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
-    float _e14 = candidate_weight(_e10 * INV_PI, rt2_5, metal::dot(v_10, v_10));
+    float _e14 = candidate_weight(_e10 * INV_PI, rt2_5, metal::dot(v_15, v_15));
     return _e14;
 }
 
@@ -1221,8 +1222,8 @@ metal::float3 triangle_normal(
     metal::float3 c_6
 ) {
     bool local_5 = {};
-    metal::float3 n_26 = metal::cross(b_4 - a_5, c_6 - a_5);
-    float l2_ = metal::dot(n_26, n_26);
+    metal::float3 n_34 = metal::cross(b_4 - a_5, c_6 - a_5);
+    float l2_ = metal::dot(n_34, n_34);
     if (!(!((l2_ > 0.0)))) {
         local_5 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -1232,7 +1233,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_26 / metal::float3(metal::sqrt(l2_));
+    return n_34 / metal::float3(metal::sqrt(l2_));
 }
 
 metal::float3 face_against(
@@ -1282,8 +1283,8 @@ metal::float3 shading_normal(
     if (_e24) {
         return facing;
     }
-    metal::float3 n_27 = s_1 / metal::float3(metal::sqrt(l2_1));
-    return (metal::dot(n_27, facing) < 0.0) ? -(n_27) : n_27;
+    metal::float3 n_35 = s_1 / metal::float3(metal::sqrt(l2_1));
+    return (metal::dot(n_35, facing) < 0.0) ? -(n_35) : n_35;
 }
 
 float ray_triangle(
@@ -1318,9 +1319,9 @@ float ray_triangle(
         return -1.0;
     }
     metal::float3 q_5 = metal::cross(s_2, e1_2);
-    float v_11 = metal::dot(d_1, q_5) * inv;
-    if (!((v_11 < 0.0))) {
-        local_8 = (u_7 + v_11) > 1.0;
+    float v_16 = metal::dot(d_1, q_5) * inv;
+    if (!((v_16 < 0.0))) {
+        local_8 = (u_7 + v_16) > 1.0;
     } else {
         local_8 = true;
     }
@@ -1405,19 +1406,340 @@ float cosine_pdf(
     return metal::max(cos_theta_1, 0.0) * INV_PI;
 }
 
-metal::float3 cosine_direction(
-    metal::float3 n_12,
-    float u1_1,
-    float u2_1
+metal::float3 onb_tangent(
+    metal::float3 n_12
 ) {
     float s_5 = (n_12.z >= 0.0) ? 1.0 : -1.0;
     float a_12 = -1.0 / (s_5 + n_12.z);
-    float b_9 = (n_12.x * n_12.y) * a_12;
-    metal::float3 t_4 = metal::float3(1.0 + (((s_5 * n_12.x) * n_12.x) * a_12), s_5 * b_9, -(s_5) * n_12.x);
-    metal::float3 bt = metal::float3(b_9, s_5 + ((n_12.y * n_12.y) * a_12), -(n_12.y));
+    return metal::float3(1.0 + (((s_5 * n_12.x) * n_12.x) * a_12), ((s_5 * n_12.x) * n_12.y) * a_12, -(s_5) * n_12.x);
+}
+
+metal::float3 onb_bitangent(
+    metal::float3 n_13
+) {
+    float s_6 = (n_13.z >= 0.0) ? 1.0 : -1.0;
+    float a_13 = -1.0 / (s_6 + n_13.z);
+    return metal::float3((n_13.x * n_13.y) * a_13, s_6 + ((n_13.y * n_13.y) * a_13), -(n_13.y));
+}
+
+metal::float3 onb_to_world(
+    metal::float3 n_14,
+    metal::float3 d_2
+) {
+    metal::float3 _e2 = onb_tangent(n_14);
+    metal::float3 _e5 = onb_bitangent(n_14);
+    return ((_e2 * d_2.x) + (_e5 * d_2.y)) + (n_14 * d_2.z);
+}
+
+metal::float3 onb_to_local(
+    metal::float3 n_15,
+    metal::float3 w_8
+) {
+    metal::float3 _e2 = onb_tangent(n_15);
+    metal::float3 _e4 = onb_bitangent(n_15);
+    return metal::float3(metal::dot(w_8, _e2), metal::dot(w_8, _e4), metal::dot(w_8, n_15));
+}
+
+metal::float3 cosine_direction(
+    metal::float3 n_16,
+    float u1_1,
+    float u2_1
+) {
     float r_6 = metal::sqrt(u1_1);
     float phi_2 = 6.2831855 * u2_1;
-    return metal::normalize(((t_4 * (r_6 * metal::cos(phi_2))) + (bt * (r_6 * metal::sin(phi_2)))) + (n_12 * metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
+    metal::float3 _e16 = onb_to_world(n_16, metal::float3(r_6 * metal::cos(phi_2), r_6 * metal::sin(phi_2), metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
+    return metal::normalize(_e16);
+}
+
+float ggx_alpha(
+    float roughness
+) {
+    return metal::max(roughness * roughness, GGX_ALPHA_MIN);
+}
+
+float ggx_d(
+    float cos_h,
+    float sin2_h,
+    float alpha
+) {
+    if (cos_h <= 0.0) {
+        return 0.0;
+    }
+    float a2_1 = alpha * alpha;
+    float t_4 = ((cos_h * cos_h) * a2_1) + sin2_h;
+    return (a2_1 * INV_PI) / (t_4 * t_4);
+}
+
+float smith_root(
+    float cos,
+    float alpha_1
+) {
+    float a2_2 = alpha_1 * alpha_1;
+    return metal::sqrt(((cos * cos) * (1.0 - a2_2)) + a2_2);
+}
+
+float smith_visibility(
+    float n_l_1,
+    float n_v,
+    float alpha_2
+) {
+    bool local_12 = {};
+    if (!((n_l_1 <= 0.0))) {
+        local_12 = n_v <= 0.0;
+    } else {
+        local_12 = true;
+    }
+    bool _e11 = local_12;
+    if (_e11) {
+        return 0.0;
+    }
+    float _e13 = smith_root(n_v, alpha_2);
+    float _e15 = smith_root(n_l_1, alpha_2);
+    return 0.5 / ((n_l_1 * _e13) + (n_v * _e15));
+}
+
+metal::float3 fresnel_schlick(
+    metal::float3 f0_,
+    float f90_,
+    float v_h
+) {
+    float c_14 = metal::saturate(1.0 - v_h);
+    float c2_2 = c_14 * c_14;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_2 * c2_2) * c_14));
+}
+
+metal::float3 specular_fresnel(
+    metal::float3 base_4,
+    float metallic,
+    metal::float3 f0_d,
+    float f90_d,
+    float v_h_1
+) {
+    metal::float3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    metal::float3 _e10 = fresnel_schlick(base_4, 1.0, v_h_1);
+    return (_e5 * (1.0 - metallic)) + (_e10 * metallic);
+}
+
+metal::float3 diffuse_brdf(
+    metal::float3 base_5,
+    float metallic_1,
+    metal::float3 f0_d_1,
+    float f90_d_1,
+    float v_h_2
+) {
+    metal::float3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return (((metal::float3(1.0, 1.0, 1.0) - _e9) * base_5) * (1.0 - metallic_1)) * INV_PI;
+}
+
+float half_cosine(
+    metal::float3 v_2,
+    metal::float3 l
+) {
+    metal::float3 h_3 = v_2 + l;
+    float len2_ = metal::dot(h_3, h_3);
+    if (len2_ <= 0.0) {
+        return 0.0;
+    }
+    return metal::saturate(metal::dot(v_2, h_3) / metal::sqrt(len2_));
+}
+
+metal::float3 specular_brdf(
+    metal::float3 base_6,
+    float metallic_2,
+    metal::float3 f0_d_2,
+    float f90_d_2,
+    float alpha_3,
+    metal::float3 n_17,
+    metal::float3 v_3,
+    metal::float3 l_1
+) {
+    bool local_13 = {};
+    float n_l_2 = metal::dot(n_17, l_1);
+    float n_v_2 = metal::dot(n_17, v_3);
+    if (!((n_l_2 <= 0.0))) {
+        local_13 = n_v_2 <= 0.0;
+    } else {
+        local_13 = true;
+    }
+    bool _e18 = local_13;
+    if (_e18) {
+        return metal::float3(0.0, 0.0, 0.0);
+    }
+    metal::float3 hs = v_3 + l_1;
+    float inv_1 = 1.0 / metal::sqrt(metal::dot(hs, hs));
+    metal::float3 h_4 = hs * inv_1;
+    metal::float3 c_15 = metal::cross(n_17, h_4);
+    float _e32 = ggx_d(metal::dot(n_17, h_4), metal::dot(c_15, c_15), alpha_3);
+    metal::float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, metal::dot(v_3, h_4));
+    float _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
+    return _e34 * (_e32 * _e35);
+}
+
+metal::float3 brdf_eval(
+    metal::float3 base_7,
+    float metallic_3,
+    metal::float3 f0_d_3,
+    float f90_d_3,
+    float alpha_4,
+    metal::float3 n_18,
+    metal::float3 v_4,
+    metal::float3 l_2
+) {
+    if (metal::dot(n_18, l_2) <= 0.0) {
+        return metal::float3(0.0, 0.0, 0.0);
+    }
+    float _e15 = half_cosine(v_4, l_2);
+    metal::float3 _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
+    metal::float3 _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_18, v_4, l_2);
+    return _e16 + _e17;
+}
+
+bool has_specular(
+    float metallic_4,
+    metal::float3 f0_d_4,
+    float f90_d_4
+) {
+    bool local_14 = {};
+    bool local_15 = {};
+    if (!((metallic_4 > 0.0))) {
+        local_14 = f90_d_4 > 0.0;
+    } else {
+        local_14 = true;
+    }
+    bool _e11 = local_14;
+    if (!(_e11)) {
+        local_15 = metal::max(metal::max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0;
+    } else {
+        local_15 = true;
+    }
+    bool _e23 = local_15;
+    return _e23;
+}
+
+float channel_mean(
+    metal::float3 c_9
+) {
+    return ((c_9.x + c_9.y) + c_9.z) * 0.33333334;
+}
+
+float specular_probability(
+    metal::float3 base_8,
+    float metallic_5,
+    metal::float3 f0_d_5,
+    float f90_d_5,
+    float n_v_1
+) {
+    bool local_16 = {};
+    if (!((n_v_1 <= 0.0))) {
+        bool _e10 = has_specular(metallic_5, f0_d_5, f90_d_5);
+        local_16 = !(_e10);
+    } else {
+        local_16 = true;
+    }
+    bool _e13 = local_16;
+    if (_e13) {
+        return 0.0;
+    }
+    metal::float3 _e15 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    float _e16 = channel_mean(_e15);
+    metal::float3 _e21 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
+    float _e27 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e21) * base_8) * (1.0 - metallic_5));
+    if (_e27 <= 0.0) {
+        return 1.0;
+    }
+    if (_e16 <= 0.0) {
+        return 0.0;
+    }
+    return metal::clamp(_e16 / (_e16 + _e27), 0.1, 0.9);
+}
+
+float bounded_vndf_k(
+    metal::float3 wi,
+    float alpha_5
+) {
+    float a_14 = metal::saturate(alpha_5);
+    float s_7 = 1.0 + metal::sqrt((wi.x * wi.x) + (wi.y * wi.y));
+    float a2_3 = a_14 * a_14;
+    float s2_ = s_7 * s_7;
+    return ((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z));
+}
+
+metal::float3 ggx_vndf_sample(
+    metal::float3 wi_1,
+    float alpha_6,
+    float u1_2,
+    float u2_2
+) {
+    metal::float3 wi_std = metal::normalize(metal::float3(wi_1.x * alpha_6, wi_1.y * alpha_6, wi_1.z));
+    float _e12 = bounded_vndf_k(wi_1, alpha_6);
+    float b_9 = (wi_1.z > 0.0) ? (_e12 * wi_std.z) : wi_std.z;
+    float phi_3 = 6.2831855 * u1_2;
+    float z_4 = ((1.0 - u2_2) * (1.0 + b_9)) - b_9;
+    float sin_t = metal::sqrt(metal::saturate(1.0 - (z_4 * z_4)));
+    metal::float3 m_std = wi_std + metal::float3(sin_t * metal::cos(phi_3), sin_t * metal::sin(phi_3), z_4);
+    metal::float3 m_1 = metal::normalize(metal::float3(m_std.x * alpha_6, m_std.y * alpha_6, m_std.z));
+    return (m_1 * (2.0 * metal::dot(wi_1, m_1))) - wi_1;
+}
+
+float ggx_vndf_pdf(
+    metal::float3 wi_2,
+    metal::float3 wo,
+    float alpha_7
+) {
+    bool local_17 = {};
+    if (!((wi_2.z <= 0.0))) {
+        local_17 = wo.z <= 0.0;
+    } else {
+        local_17 = true;
+    }
+    bool _e13 = local_17;
+    if (_e13) {
+        return 0.0;
+    }
+    metal::float3 hs_1 = wi_2 + wo;
+    metal::float3 m_2 = hs_1 / metal::float3(metal::sqrt(metal::dot(hs_1, hs_1)));
+    float _e28 = ggx_d(m_2.z, (m_2.x * m_2.x) + (m_2.y * m_2.y), alpha_7);
+    float t_5 = metal::sqrt(((alpha_7 * alpha_7) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z));
+    float _e43 = bounded_vndf_k(wi_2, alpha_7);
+    return _e28 / (2.0 * ((_e43 * wi_2.z) + t_5));
+}
+
+metal::float3 bsdf_sample(
+    metal::float3 n_19,
+    metal::float3 v_5,
+    float alpha_8,
+    float p_spec,
+    float u1_3,
+    float u2_3
+) {
+    if (u1_3 < p_spec) {
+        if (metal::dot(n_19, v_5) <= 0.0) {
+            return -(n_19);
+        }
+        metal::float3 _e11 = onb_to_local(n_19, v_5);
+        metal::float3 _e13 = ggx_vndf_sample(_e11, alpha_8, u1_3 / p_spec, u2_3);
+        metal::float3 _e14 = onb_to_world(n_19, _e13);
+        return metal::normalize(_e14);
+    }
+    metal::float3 _e20 = cosine_direction(n_19, (u1_3 - p_spec) / (1.0 - p_spec), u2_3);
+    return _e20;
+}
+
+float bsdf_pdf(
+    metal::float3 n_20,
+    metal::float3 v_6,
+    metal::float3 l_3,
+    float alpha_9,
+    float p_spec_1
+) {
+    float _e6 = cosine_pdf(metal::dot(n_20, l_3));
+    if (p_spec_1 <= 0.0) {
+        return _e6;
+    }
+    metal::float3 _e9 = onb_to_local(n_20, v_6);
+    metal::float3 _e10 = onb_to_local(n_20, l_3);
+    float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_9);
+    return (p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6);
 }
 
 float inv_sigma_z(
@@ -1471,19 +1793,19 @@ metal::float3 filtered_irradiance(
 }
 
 float bilateral_weight(
-    metal::float3 n_13,
+    metal::float3 n_21,
     metal::float3 nj,
     float z_1,
     float zj,
     float inv_sz
 ) {
-    float dn = metal::max(metal::dot(n_13, nj), 0.0);
+    float dn = metal::max(metal::dot(n_21, nj), 0.0);
     float dn2_ = dn * dn;
     float dn4_ = dn2_ * dn2_;
     float dn8_ = dn4_ * dn4_;
-    float d_6 = (zj - z_1) * inv_sz;
-    float t_5 = metal::max(1.0 - (d_6 * d_6), 0.0);
-    return ((dn8_ * dn8_) * t_5) * t_5;
+    float d_7 = (zj - z_1) * inv_sz;
+    float t_6 = metal::max(1.0 - (d_7 * d_7), 0.0);
+    return ((dn8_ * dn8_) * t_6) * t_6;
 }
 
 uint naga_mod(uint lhs, uint rhs) {
@@ -1555,8 +1877,8 @@ float vpl_near_weight(
     if (near_r2_ <= 0.0) {
         return 0.0;
     }
-    float t_6 = metal::clamp((near_r2_ - d2_10) / (0.75 * near_r2_), 0.0, 1.0);
-    return (t_6 * t_6) * (3.0 - (2.0 * t_6));
+    float t_7 = metal::clamp((near_r2_ - d2_10) / (0.75 * near_r2_), 0.0, 1.0);
+    return (t_7 * t_7) * (3.0 - (2.0 * t_7));
 }
 
 float vpl_far_weight(
@@ -1573,10 +1895,10 @@ metal::float3 camera_dir(
     metal::float3 up,
     float px,
     float py,
-    float w_8,
+    float w_9,
     float h_1
 ) {
-    float sx = ((2.0 * px) / w_8) - 1.0;
+    float sx = ((2.0 * px) / w_9) - 1.0;
     float sy = 1.0 - ((2.0 * py) / h_1);
     return metal::normalize((forward + (right * sx)) + (up * sy));
 }
@@ -1604,36 +1926,36 @@ bool sees_emission(
 
 bool continues_path(
     metal::float3 nd,
-    metal::float3 n_14,
+    metal::float3 n_22,
     metal::float3 ng_1
 ) {
-    bool local_12 = {};
-    if (metal::dot(nd, n_14) > 0.0) {
-        local_12 = metal::dot(nd, ng_1) > 0.0;
+    bool local_18 = {};
+    if (metal::dot(nd, n_22) > 0.0) {
+        local_18 = metal::dot(nd, ng_1) > 0.0;
     } else {
-        local_12 = false;
+        local_18 = false;
     }
-    bool _e12 = local_12;
+    bool _e12 = local_18;
     return _e12;
 }
 
 bool finite3_(
-    metal::float3 v_2
+    metal::float3 v_7
 ) {
-    bool local_13 = {};
-    bool local_14 = {};
-    if (metal::abs(v_2.x) <= F32_MAX) {
-        local_13 = metal::abs(v_2.y) <= F32_MAX;
+    bool local_19 = {};
+    bool local_20 = {};
+    if (metal::abs(v_7.x) <= F32_MAX) {
+        local_19 = metal::abs(v_7.y) <= F32_MAX;
     } else {
-        local_13 = false;
+        local_19 = false;
     }
-    bool _e12 = local_13;
+    bool _e12 = local_19;
     if (_e12) {
-        local_14 = metal::abs(v_2.z) <= F32_MAX;
+        local_20 = metal::abs(v_7.z) <= F32_MAX;
     } else {
-        local_14 = false;
+        local_20 = false;
     }
-    bool _e20 = local_14;
+    bool _e20 = local_20;
     return _e20;
 }
 
@@ -1675,9 +1997,9 @@ float light_map_coord_at(
 float display_encode(
     float x_14
 ) {
-    float v_12 = metal::max(x_14, 0.0);
-    float t_7 = (2.0 * v_12) / (1.0 + (2.0 * v_12));
-    return (t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * metal::pow(t_7, 0.41666666)) - 0.055);
+    float v_17 = metal::max(x_14, 0.0);
+    float t_8 = (2.0 * v_17) / (1.0 + (2.0 * v_17));
+    return (t_8 <= 0.0031308) ? (12.92 * t_8) : ((1.055 * metal::pow(t_8, 0.41666666)) - 0.055);
 }
 
 float light_map_depth(
@@ -1697,30 +2019,30 @@ float rsm_texel_solid_angle(
 
 metal::float3 point_irradiance(
     metal::float3 intensity_1,
-    metal::float3 n_15,
-    metal::float3 v_3
+    metal::float3 n_23,
+    metal::float3 v_8
 ) {
-    float d2_14 = metal::dot(v_3, v_3);
-    float cos_x_2 = metal::dot(n_15, v_3) / metal::sqrt(metal::max(d2_14, MIN_D2_));
+    float d2_14 = metal::dot(v_8, v_8);
+    float cos_x_2 = metal::dot(n_23, v_8) / metal::sqrt(metal::max(d2_14, MIN_D2_));
     float _e11 = inverse_square(d2_14);
     return intensity_1 * (metal::max(cos_x_2, 0.0) * _e11);
 }
 
 metal::float3 directional_irradiance(
     metal::float3 e_1,
-    metal::float3 n_16,
+    metal::float3 n_24,
     metal::float3 to_light
 ) {
-    return e_1 * metal::max(metal::dot(n_16, to_light), 0.0);
+    return e_1 * metal::max(metal::dot(n_24, to_light), 0.0);
 }
 
 float perspective_texel_width(
     float extent_3,
-    float d_2,
+    float d_3,
     float z_2,
     float size_8
 ) {
-    return (((2.0 * extent_3) * d_2) * d_2) / (size_8 * z_2);
+    return (((2.0 * extent_3) * d_3) * d_3) / (size_8 * z_2);
 }
 
 float ortho_texel_width(
@@ -1734,22 +2056,22 @@ float shadow_bias(
     float texel,
     float cos_light_1
 ) {
-    float c_13 = metal::clamp(cos_light_1, 0.02, 1.0);
-    return texel * (1.5 + (metal::sqrt(1.0 - (c_13 * c_13)) / c_13));
+    float c_16 = metal::clamp(cos_light_1, 0.02, 1.0);
+    return texel * (1.5 + (metal::sqrt(1.0 - (c_16 * c_16)) / c_16));
 }
 
 bool shadow_lit(
-    float d_3,
+    float d_4,
     float d_map,
     float bias
 ) {
-    bool local_15 = {};
+    bool local_21 = {};
     if (!((d_map <= 0.0))) {
-        local_15 = d_3 <= (d_map + bias);
+        local_21 = d_4 <= (d_map + bias);
     } else {
-        local_15 = true;
+        local_21 = true;
     }
-    bool _e11 = local_15;
+    bool _e11 = local_21;
     return _e11;
 }
 
@@ -1762,14 +2084,14 @@ metal::float3 diffuse_radiance(
 }
 
 metal::float3 light_intensity(
-    GpuLight l,
-    metal::float3 w_9
+    GpuLight l_4,
+    metal::float3 w_10
 ) {
-    switch(l.kind) {
+    switch(l_4.kind) {
         case 3u: {
-            metal::float3 _e7 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            float _e9 = triangle_lobe(_e7, l.a, w_9);
-            return l.intensity * _e9;
+            metal::float3 _e7 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
+            float _e9 = triangle_lobe(_e7, l_4.a, w_10);
+            return l_4.intensity * _e9;
         }
         default: {
             return metal::float3(0.0);
@@ -1778,31 +2100,31 @@ metal::float3 light_intensity(
 }
 
 metal::float3 light_point(
-    GpuLight l_1,
-    float u1_2,
-    float u2_2
+    GpuLight l_5,
+    float u1_4,
+    float u2_4
 ) {
-    if (l_1.kind == LIGHT_TRIANGLE) {
-        metal::float3 _e9 = triangle_sample(l_1.p0_, l_1.p1_, l_1.p2_, u1_2, u2_2);
+    if (l_5.kind == LIGHT_TRIANGLE) {
+        metal::float3 _e9 = triangle_sample(l_5.p0_, l_5.p1_, l_5.p2_, u1_4, u2_4);
         return _e9;
     }
-    return l_1.p0_;
+    return l_5.p0_;
 }
 
 float light_area(
-    GpuLight l_2
+    GpuLight l_6
 ) {
-    if (l_2.kind == LIGHT_TRIANGLE) {
-        return l_2.a;
+    if (l_6.kind == LIGHT_TRIANGLE) {
+        return l_6.a;
     }
     return 0.0;
 }
 
 metal::float3 light_normal(
-    GpuLight l_3
+    GpuLight l_7
 ) {
-    if (l_3.kind == LIGHT_TRIANGLE) {
-        metal::float3 _e7 = triangle_normal(l_3.p0_, l_3.p1_, l_3.p2_);
+    if (l_7.kind == LIGHT_TRIANGLE) {
+        metal::float3 _e7 = triangle_normal(l_7.p0_, l_7.p1_, l_7.p2_);
         return _e7;
     }
     return metal::float3(0.0);
@@ -1810,7 +2132,7 @@ metal::float3 light_normal(
 
 GeoHit trace(
     metal::float3 o_2,
-    metal::float3 d_4,
+    metal::float3 d_5,
     float t_min_1,
     float t_max_2,
     bool any_hit,
@@ -1829,18 +2151,18 @@ GeoHit trace(
         GeoHit _e13 = hit;
         return _e13;
     }
-    metal::float3 _e14 = ray_inverse3_(d_4);
+    metal::float3 _e14 = ray_inverse3_(d_5);
     uint2 loop_bound_1 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         uint _e21 = node;
-        GpuGeoNode n_28 = geo_nodes[_e21];
+        GpuGeoNode n_36 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_28.bmin, n_28.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_36.bmin, n_36.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_28.count > 0u) {
-                i_2 = n_28.first;
+            if (n_36.count > 0u) {
+                i_2 = n_36.first;
                 uint2 loop_bound_2 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1852,15 +2174,15 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i_2;
-                    if (_e36 < (n_28.first + n_28.count)) {
+                    if (_e36 < (n_36.first + n_36.count)) {
                     } else {
                         break;
                     }
                     {
                         uint _e42 = i_2;
-                        GpuTriangle t_8 = geo_tris[_e42];
+                        GpuTriangle t_9 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_4, t_8.v0_, t_8.v1_, t_8.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_5, t_9.v0_, t_9.v1_, t_9.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i_2;
@@ -1876,11 +2198,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_28.first + 1u;
+                    stack.inner[_e63] = n_36.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node = n_28.first;
+                node = n_36.first;
                 continue;
             }
         }
@@ -2056,11 +2378,11 @@ Picks bsh_collect(
 Connection connect(
     uint li,
     metal::float3 x_17,
-    metal::float3 n_17,
+    metal::float3 n_25,
     metal::float3 ng_2,
     float w_res,
-    float u1_3,
-    float u2_3,
+    float u1_5,
+    float u2_5,
     float eps,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
@@ -2069,38 +2391,38 @@ Connection connect(
     device type_4 const& rt2_7,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection c_9 = {};
-    bool local_16 = {};
-    c_9.e = metal::float3(0.0);
-    GpuLight l_4 = lights[li];
-    metal::float3 _e16 = light_point(l_4, u1_3, u2_3);
-    c_9.y = _e16;
-    metal::float3 _e19 = c_9.y;
+    Connection c_10 = {};
+    bool local_22 = {};
+    c_10.e = metal::float3(0.0);
+    GpuLight l_8 = lights[li];
+    metal::float3 _e16 = light_point(l_8, u1_5, u2_5);
+    c_10.y = _e16;
+    metal::float3 _e19 = c_10.y;
     float _e22 = r2_6[li];
-    float _e23 = connection_cosine(x_17, _e19, n_17, ng_2, _e22);
-    c_9.cos_x = _e23;
-    float _e25 = c_9.cos_x;
+    float _e23 = connection_cosine(x_17, _e19, n_25, ng_2, _e22);
+    c_10.cos_x = _e23;
+    float _e25 = c_10.cos_x;
     if (!((_e25 <= 0.0))) {
-        metal::float3 _e34 = c_9.y;
+        metal::float3 _e34 = c_10.y;
         bool _e35 = occluded(x_17 + (ng_2 * eps), _e34, geo_nodes, geo_tris, _buffer_sizes);
-        local_16 = _e35;
+        local_22 = _e35;
     } else {
-        local_16 = true;
+        local_22 = true;
     }
-    bool _e37 = local_16;
+    bool _e37 = local_22;
     if (_e37) {
-        Connection _e38 = c_9;
+        Connection _e38 = c_10;
         return _e38;
     }
-    metal::float3 _e40 = c_9.y;
-    metal::float3 v_13 = x_17 - _e40;
-    float d2_15 = metal::dot(v_13, v_13);
-    metal::float3 _e47 = light_intensity(l_4, v_13 / metal::float3(metal::sqrt(d2_15)));
-    float _e49 = c_9.cos_x;
+    metal::float3 _e40 = c_10.y;
+    metal::float3 v_18 = x_17 - _e40;
+    float d2_15 = metal::dot(v_18, v_18);
+    metal::float3 _e47 = light_intensity(l_8, v_18 / metal::float3(metal::sqrt(d2_15)));
+    float _e49 = c_10.cos_x;
     float _e52 = rt2_7[li];
     float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
-    c_9.e = _e47 * _e53;
-    Connection _e55 = c_9;
+    c_10.e = _e47 * _e53;
+    Connection _e55 = c_10;
     return _e55;
 }
 
@@ -2115,14 +2437,14 @@ float mis_weight(
 float light_weight(
     uint li_1,
     metal::float3 x_18,
-    metal::float3 n_18,
+    metal::float3 n_26,
     device type_4 const& rt2_7,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_14 = light_cones[li_1];
+    GpuLightCone c_17 = light_cones[li_1];
     float _e14 = rt2_7[li_1];
-    float _e15 = cone_weight(c_14.center, c_14.radius, c_14.phi, c_14.axis, c_14.cos_o, c_14.cos_e, _e14, x_18, n_18);
+    float _e15 = cone_weight(c_17.center, c_17.radius, c_17.phi, c_17.axis, c_17.cos_o, c_17.cos_e, _e14, x_18, n_26);
     return _e15;
 }
 
@@ -2148,12 +2470,12 @@ float bvh_importance(
     BvhNodes nodes_7,
     uint i_8,
     metal::float3 x_19,
-    metal::float3 n_19,
+    metal::float3 n_27,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightBvhNode _e4 = light_bvh_node(nodes_7, i_8, light_bvh, _buffer_sizes);
-    float _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_19, n_19);
+    float _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_19, n_27);
     return _e11;
 }
 
@@ -2161,25 +2483,25 @@ float bvh_first(
     BvhNodes nodes_8,
     uint i_9,
     metal::float3 x_20,
-    metal::float3 n_20,
+    metal::float3 n_28,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_17 = {};
+    bool local_23 = {};
     GpuLightBvhNode _e4 = light_bvh_node(nodes_8, i_9, light_bvh, _buffer_sizes);
     uint j = _e4.second;
     if (!((j <= (i_9 + 1u)))) {
         uint _e12 = light_bvh_count(nodes_8, light_bvh, _buffer_sizes);
-        local_17 = j >= _e12;
+        local_23 = j >= _e12;
     } else {
-        local_17 = true;
+        local_23 = true;
     }
-    bool _e15 = local_17;
+    bool _e15 = local_23;
     if (_e15) {
         return -1.0;
     }
-    float _e19 = bvh_importance(nodes_8, i_9 + 1u, x_20, n_20, light_bvh, _buffer_sizes);
-    float _e20 = bvh_importance(nodes_8, j, x_20, n_20, light_bvh, _buffer_sizes);
+    float _e19 = bvh_importance(nodes_8, i_9 + 1u, x_20, n_28, light_bvh, _buffer_sizes);
+    float _e20 = bvh_importance(nodes_8, j, x_20, n_28, light_bvh, _buffer_sizes);
     float _e21 = bvh_first_prob(_e19, _e20);
     return _e21;
 }
@@ -2192,7 +2514,7 @@ BvhPick bvh_pick_none(
 BvhPick light_bvh_sample(
     BvhNodes nodes_9,
     metal::float3 x_21,
-    metal::float3 n_21,
+    metal::float3 n_29,
     float u_in,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
@@ -2201,7 +2523,7 @@ BvhPick light_bvh_sample(
     float u_6 = {};
     uint i_10 = 0u;
     float pmf = 1.0;
-    bool local_18 = {};
+    bool local_24 = {};
     BvhPick _e4 = bvh_pick_none();
     pick = _e4;
     u_6 = u_in;
@@ -2221,12 +2543,12 @@ BvhPick light_bvh_sample(
             if (_e15.second == LIGHT_BVH_LEAF) {
                 uint _e19 = i_10;
                 if (!((_e19 > 0u))) {
-                    float _e26 = bvh_importance(nodes_9, 0u, x_21, n_21, light_bvh, _buffer_sizes);
-                    local_18 = _e26 > 0.0;
+                    float _e26 = bvh_importance(nodes_9, 0u, x_21, n_29, light_bvh, _buffer_sizes);
+                    local_24 = _e26 > 0.0;
                 } else {
-                    local_18 = true;
+                    local_24 = true;
                 }
-                bool _e30 = local_18;
+                bool _e30 = local_24;
                 if (_e30) {
                     pick.light = _e15.light;
                     float _e34 = pmf;
@@ -2236,7 +2558,7 @@ BvhPick light_bvh_sample(
                 return _e35;
             }
             uint _e36 = i_10;
-            float _e37 = bvh_first(nodes_9, _e36, x_21, n_21, light_bvh, _buffer_sizes);
+            float _e37 = bvh_first(nodes_9, _e36, x_21, n_29, light_bvh, _buffer_sizes);
             if (_e37 < 0.0) {
                 BvhPick _e40 = pick;
                 return _e40;
@@ -2260,14 +2582,14 @@ float light_bvh_pmf(
     BvhNodes nodes_10,
     uint leaf,
     metal::float3 x_22,
-    metal::float3 n_22,
+    metal::float3 n_30,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint i_11 = 0u;
     float pmf_1 = 1.0;
-    bool local_19 = {};
-    bool local_20 = {};
+    bool local_25 = {};
+    bool local_26 = {};
     uint _e4 = light_bvh_count(nodes_10, light_bvh, _buffer_sizes);
     if (leaf >= _e4) {
         return 0.0;
@@ -2290,17 +2612,17 @@ float light_bvh_pmf(
                 if (_e19 == leaf) {
                     uint _e23 = i_11;
                     if (!((_e23 > 0u))) {
-                        float _e30 = bvh_importance(nodes_10, 0u, x_22, n_22, light_bvh, _buffer_sizes);
-                        local_20 = _e30 > 0.0;
+                        float _e30 = bvh_importance(nodes_10, 0u, x_22, n_30, light_bvh, _buffer_sizes);
+                        local_26 = _e30 > 0.0;
                     } else {
-                        local_20 = true;
+                        local_26 = true;
                     }
-                    bool _e34 = local_20;
-                    local_19 = _e34;
+                    bool _e34 = local_26;
+                    local_25 = _e34;
                 } else {
-                    local_19 = false;
+                    local_25 = false;
                 }
-                bool _e36 = local_19;
+                bool _e36 = local_25;
                 if (_e36) {
                     float _e37 = pmf_1;
                     return _e37;
@@ -2308,7 +2630,7 @@ float light_bvh_pmf(
                 return 0.0;
             }
             uint _e39 = i_11;
-            float _e40 = bvh_first(nodes_10, _e39, x_22, n_22, light_bvh, _buffer_sizes);
+            float _e40 = bvh_first(nodes_10, _e39, x_22, n_30, light_bvh, _buffer_sizes);
             if (_e40 < 0.0) {
                 return 0.0;
             }
@@ -2325,7 +2647,7 @@ float light_bvh_pmf(
 float select_pdf(
     uint li_2,
     metal::float3 x_23,
-    metal::float3 n_23,
+    metal::float3 n_31,
     uint nee,
     bool in_range_2,
     device type_13 const& light_cones,
@@ -2333,14 +2655,14 @@ float select_pdf(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e9 = light_cones[li_2].bvh_leaf;
-    float _e10 = light_bvh_pmf(BVH, _e9, x_23, n_23, light_bvh, _buffer_sizes);
+    float _e10 = light_bvh_pmf(BVH, _e9, x_23, n_31, light_bvh, _buffer_sizes);
     return _e10;
 }
 
 float light_pdf(
     uint li_3,
     metal::float3 x_24,
-    metal::float3 n_24,
+    metal::float3 n_32,
     metal::float3 y_3,
     uint nee_1,
     bool in_range_3,
@@ -2350,14 +2672,14 @@ float light_pdf(
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight l_5 = lights[li_3];
-    metal::float3 v_14 = x_24 - y_3;
-    float d2_16 = metal::dot(v_14, v_14);
-    metal::float3 _e11 = light_normal(l_5);
-    float cos_y_1 = (d2_16 > 0.0) ? metal::dot(_e11, v_14 / metal::float3(metal::sqrt(d2_16))) : 0.0;
-    float _e20 = select_pdf(li_3, x_24, n_24, nee_1, in_range_3, light_cones, light_bvh, _buffer_sizes);
+    GpuLight l_9 = lights[li_3];
+    metal::float3 v_19 = x_24 - y_3;
+    float d2_16 = metal::dot(v_19, v_19);
+    metal::float3 _e11 = light_normal(l_9);
+    float cos_y_1 = (d2_16 > 0.0) ? metal::dot(_e11, v_19 / metal::float3(metal::sqrt(d2_16))) : 0.0;
+    float _e20 = select_pdf(li_3, x_24, n_32, nee_1, in_range_3, light_cones, light_bvh, _buffer_sizes);
     float _e23 = rt2_7[li_3];
-    float _e24 = light_area(l_5);
+    float _e24 = light_area(l_9);
     float _e25 = light_strategy_pdf(_e20, _e23, d2_16, _e24, cos_y_1);
     return _e25;
 }
@@ -2365,12 +2687,12 @@ float light_pdf(
 metal::float3 shade_pick(
     uint li_4,
     metal::float3 x_25,
-    metal::float3 n_25,
+    metal::float3 n_33,
     metal::float3 ng_3,
-    float w_10,
+    float w_11,
     uint nee_2,
-    float u1_4,
-    float u2_4,
+    float u1_6,
+    float u2_6,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
@@ -2382,19 +2704,19 @@ metal::float3 shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    bool local_21 = {};
+    bool local_27 = {};
     float _e10 = params.eps;
-    Connection _e11 = connect(li_4, x_25, n_25, ng_3, w_10, u1_4, u2_4, _e10, geo_nodes, geo_tris, lights, r2_6, rt2_7, _buffer_sizes);
+    Connection _e11 = connect(li_4, x_25, n_33, ng_3, w_11, u1_6, u2_6, _e10, geo_nodes, geo_tris, lights, r2_6, rt2_7, _buffer_sizes);
     GpuLight _e16 = lights[li_4];
     float _e17 = light_area(_e16);
     if (_e17 > 0.0) {
-        local_21 = _e11.cos_x > 0.0;
+        local_27 = _e11.cos_x > 0.0;
     } else {
-        local_21 = false;
+        local_27 = false;
     }
-    bool _e26 = local_21;
+    bool _e26 = local_27;
     if (_e26) {
-        float _e29 = light_pdf(li_4, x_25, n_25, _e11.y, nee_2, true, lights, rt2_7, light_cones, light_bvh, _buffer_sizes);
+        float _e29 = light_pdf(li_4, x_25, n_33, _e11.y, nee_2, true, lights, rt2_7, light_cones, light_bvh, _buffer_sizes);
         float _e31 = cosine_pdf(_e11.cos_x);
         float _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -2433,7 +2755,7 @@ kernel void main_(
         return;
     }
     metal::float3 x_26 = vtx.position;
-    metal::float3 n_29 = vtx.normal;
+    metal::float3 n_37 = vtx.normal;
     metal::float3 ng_4 = vtx.gnormal;
     uint _e20 = params.seed;
     uint _e23 = params.frame;
@@ -2446,7 +2768,7 @@ kernel void main_(
     h = _e34;
     uint _e35 = h;
     float _e36 = xi_from_bits(_e35);
-    BvhPick _e38 = light_bvh_sample(BVH, x_26, n_29, _e36, light_bvh, _buffer_sizes);
+    BvhPick _e38 = light_bvh_sample(BVH, x_26, n_37, _e36, light_bvh, _buffer_sizes);
     uint li_5 = _e38.light;
     float pmf_2 = _e38.pmf;
     uint _e41 = h;
@@ -2460,7 +2782,7 @@ kernel void main_(
     uint _e47 = h;
     float _e48 = xi_from_bits(_e47);
     if (pmf_2 > 0.0) {
-        metal::float3 _e54 = shade_pick(li_5, x_26, n_29, ng_4, 1.0 / pmf_2, 0u, _e44, _e48, geo_nodes, geo_tris, lights, r2_6, rt2_7, light_cones, light_bvh, params, _buffer_sizes);
+        metal::float3 _e54 = shade_pick(li_5, x_26, n_37, ng_4, 1.0 / pmf_2, 0u, _e44, _e48, geo_nodes, geo_tris, lights, r2_6, rt2_7, light_cones, light_bvh, params, _buffer_sizes);
         sum = _e54;
     }
     metal::float3 _e56 = sum;

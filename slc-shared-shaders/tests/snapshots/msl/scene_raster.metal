@@ -232,6 +232,7 @@ constant uint RESERVOIR_FULL = 4294967295u;
 constant uint LIGHT_BVH_LEAF = 4294967295u;
 constant float ONE_MINUS_EPSILON = 0.99999994;
 constant float F32_MAX = 340282350000000000000000000000000000000.0;
+constant float GGX_ALPHA_MIN = 0.001;
 constant float DEPTH_NONE = 1000000000000000000000000000000.0;
 constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
@@ -430,8 +431,8 @@ float windowed_falloff(
     float range2_1
 ) {
     float q_2 = d2_4 / range2_1;
-    float w_10 = metal::saturate(1.0 - (q_2 * q_2));
-    return (w_10 * w_10) / metal::max(d2_4, 0.0001);
+    float w_11 = metal::saturate(1.0 - (q_2 * q_2));
+    return (w_11 * w_11) / metal::max(d2_4, 0.0001);
 }
 
 bool sphere_contains_point(
@@ -439,8 +440,8 @@ bool sphere_contains_point(
     float r,
     metal::float3 x_3
 ) {
-    metal::float3 v_8 = x_3 - c;
-    return metal::dot(v_8, v_8) <= (r * r);
+    metal::float3 v_13 = x_3 - c;
+    return metal::dot(v_13, v_13) <= (r * r);
 }
 
 bool sphere_overlaps_sphere(
@@ -449,9 +450,9 @@ bool sphere_overlaps_sphere(
     metal::float3 c2_,
     float r2_2
 ) {
-    metal::float3 v_9 = c2_ - c1_;
+    metal::float3 v_14 = c2_ - c1_;
     float r_3 = r1_ + r2_2;
-    return metal::dot(v_9, v_9) <= (r_3 * r_3);
+    return metal::dot(v_14, v_14) <= (r_3 * r_3);
 }
 
 float sphere_pad(
@@ -468,18 +469,18 @@ metal::float4 sphere_union(
     float r2_3
 ) {
     bool local = {};
-    metal::float3 v_10 = c2_1 - c1_1;
-    float d_4 = metal::sqrt(metal::dot(v_10, v_10));
+    metal::float3 v_15 = c2_1 - c1_1;
+    float d_5 = metal::sqrt(metal::dot(v_15, v_15));
     float _e8 = sphere_pad(r1_1, c1_1);
-    if (r1_1 >= ((d_4 + r2_3) + _e8)) {
+    if (r1_1 >= ((d_5 + r2_3) + _e8)) {
         return metal::float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     float _e16 = sphere_pad(r2_3, c2_1);
-    if (r2_3 >= ((d_4 + r1_1) + _e16)) {
+    if (r2_3 >= ((d_5 + r1_1) + _e16)) {
         return metal::float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_4 >= SPHERE_HUGE))) {
-        local = (0.5 * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE;
+    if (!((d_5 >= SPHERE_HUGE))) {
+        local = (0.5 * ((d_5 + r1_1) + r2_3)) >= SPHERE_HUGE;
     } else {
         local = true;
     }
@@ -487,23 +488,23 @@ metal::float4 sphere_union(
     if (_e35) {
         return metal::float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if (metal::abs(r1_1 - r2_3) >= d_4) {
+    if (metal::abs(r1_1 - r2_3) >= d_5) {
         if (r1_1 >= r2_3) {
-            float rn = metal::max(r1_1, d_4 + r2_3);
+            float rn = metal::max(r1_1, d_5 + r2_3);
             float _e50 = sphere_pad(rn, c1_1);
             return metal::float4(c1_1.x, c1_1.y, c1_1.z, rn + _e50);
         }
-        float rm = metal::max(r2_3, d_4 + r1_1);
+        float rm = metal::max(r2_3, d_5 + r1_1);
         float _e58 = sphere_pad(rm, c2_1);
         return metal::float4(c2_1.x, c2_1.y, c2_1.z, rm + _e58);
     }
-    float r0_ = 0.5 * ((d_4 + r1_1) + r2_3);
-    metal::float3 c_9 = c1_1 + (v_10 * ((r0_ - r1_1) / d_4));
-    metal::float3 e1_ = c_9 - c1_1;
-    metal::float3 e2_ = c_9 - c2_1;
+    float r0_ = 0.5 * ((d_5 + r1_1) + r2_3);
+    metal::float3 c_10 = c1_1 + (v_15 * ((r0_ - r1_1) / d_5));
+    metal::float3 e1_ = c_10 - c1_1;
+    metal::float3 e2_ = c_10 - c2_1;
     float r_4 = metal::max(r0_, metal::max(metal::sqrt(metal::dot(e1_, e1_)) + r1_1, metal::sqrt(metal::dot(e2_, e2_)) + r2_3));
-    float _e82 = sphere_pad(r_4, c_9);
-    return metal::float4(c_9.x, c_9.y, c_9.z, r_4 + _e82);
+    float _e82 = sphere_pad(r_4, c_10);
+    return metal::float4(c_10.x, c_10.y, c_10.z, r_4 + _e82);
 }
 
 bool sphere_overlaps_aabb(
@@ -513,8 +514,8 @@ bool sphere_overlaps_aabb(
     metal::float3 bmax
 ) {
     metal::float3 q_3 = metal::clamp(c_2, bmin, bmax);
-    metal::float3 v_11 = q_3 - c_2;
-    return metal::dot(v_11, v_11) <= (r_2 * r_2);
+    metal::float3 v_16 = q_3 - c_2;
+    return metal::dot(v_16, v_16) <= (r_2 * r_2);
 }
 
 float vpl_rt2_(
@@ -561,8 +562,8 @@ float connection_cosine(
 ) {
     bool local_1 = {};
     bool local_2 = {};
-    metal::float3 v_12 = x_4 - y;
-    float d2_12 = metal::dot(v_12, v_12);
+    metal::float3 v_17 = x_4 - y;
+    float d2_12 = metal::dot(v_17, v_17);
     bool _e7 = slc_keep(r2_5, d2_12);
     if (!(!(_e7))) {
         local_1 = !((d2_12 > 0.0));
@@ -573,10 +574,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_11 = v_12 / metal::float3(metal::sqrt(d2_12));
-    float cos_x_1 = -(metal::dot(n, w_11));
+    metal::float3 w_12 = v_17 / metal::float3(metal::sqrt(d2_12));
+    float cos_x_1 = -(metal::dot(n, w_12));
     if (!((cos_x_1 <= 0.0))) {
-        local_2 = metal::dot(ng, w_11) >= 0.0;
+        local_2 = metal::dot(ng, w_12) >= 0.0;
     } else {
         local_2 = true;
     }
@@ -642,11 +643,11 @@ float area_to_solid_angle_pdf(
     float d2_7,
     float cos_light
 ) {
-    float c_10 = metal::abs(cos_light);
-    if (c_10 <= 0.0) {
+    float c_11 = metal::abs(cos_light);
+    if (c_11 <= 0.0) {
         return 0.0;
     }
-    return (pdf_area * d2_7) / c_10;
+    return (pdf_area * d2_7) / c_11;
 }
 
 float atan_portable(
@@ -863,8 +864,8 @@ float ies_candela_dir(
     float gamma_1 = ((_e9) * 57.295779513082322865);
     bool on_axis = (metal::abs(wr) + metal::abs(ws)) <= 0.0;
     float _e16 = atan2_portable(ws, wr);
-    float c_11 = on_axis ? 0.0 : ((_e16) * 57.295779513082322865);
-    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_11, slc_table, _buffer_sizes);
+    float c_12 = on_axis ? 0.0 : ((_e16) * 57.295779513082322865);
+    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_12, slc_table, _buffer_sizes);
     return _e20;
 }
 
@@ -1041,12 +1042,12 @@ float light_importance(
     metal::float3 n_9
 ) {
     float imp = {};
-    metal::float3 v_13 = p - center;
-    float dist2_ = metal::dot(v_13, v_13);
+    metal::float3 v_18 = p - center;
+    float dist2_ = metal::dot(v_18, v_18);
     float r2_6 = radius * radius;
     float d2_13 = metal::max(metal::max(dist2_, r2_6), MIN_D2_);
-    metal::float3 wi = (dist2_ > 0.0) ? (v_13 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
-    float cos_w = metal::dot(axis, wi);
+    metal::float3 wi_3 = (dist2_ > 0.0) ? (v_18 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
+    float cos_w = metal::dot(axis, wi_3);
     float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
     float _e32 = safe_sqrt(1.0 - (r2_6 / dist2_));
     float cos_b_2 = (dist2_ <= r2_6) ? -1.0 : _e32;
@@ -1060,7 +1061,7 @@ float light_importance(
     }
     imp = (phi * _e46) / d2_13;
     if (metal::dot(n_9, n_9) > 0.0) {
-        float cos_i = -(metal::dot(wi, n_9));
+        float cos_i = -(metal::dot(wi_3, n_9));
         float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
         float _e61 = imp;
         float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
@@ -1090,9 +1091,9 @@ float cone_weight(
     metal::float3 p_1,
     metal::float3 n_10
 ) {
-    metal::float3 v_14 = p_1 - center_1;
+    metal::float3 v_19 = p_1 - center_1;
     float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
-    float _e14 = candidate_weight(_e10 * INV_PI, rt2_5, metal::dot(v_14, v_14));
+    float _e14 = candidate_weight(_e10 * INV_PI, rt2_5, metal::dot(v_19, v_19));
     return _e14;
 }
 
@@ -1190,8 +1191,8 @@ metal::float3 triangle_normal(
     metal::float3 c_6
 ) {
     bool local_5 = {};
-    metal::float3 n_17 = metal::cross(b_4 - a_5, c_6 - a_5);
-    float l2_ = metal::dot(n_17, n_17);
+    metal::float3 n_25 = metal::cross(b_4 - a_5, c_6 - a_5);
+    float l2_ = metal::dot(n_25, n_25);
     if (!(!((l2_ > 0.0)))) {
         local_5 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -1201,7 +1202,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_17 / metal::float3(metal::sqrt(l2_));
+    return n_25 / metal::float3(metal::sqrt(l2_));
 }
 
 metal::float3 face_against(
@@ -1251,8 +1252,8 @@ metal::float3 shading_normal(
     if (_e24) {
         return facing;
     }
-    metal::float3 n_18 = s_1 / metal::float3(metal::sqrt(l2_1));
-    return (metal::dot(n_18, facing) < 0.0) ? -(n_18) : n_18;
+    metal::float3 n_26 = s_1 / metal::float3(metal::sqrt(l2_1));
+    return (metal::dot(n_26, facing) < 0.0) ? -(n_26) : n_26;
 }
 
 float ray_triangle(
@@ -1287,9 +1288,9 @@ float ray_triangle(
         return -1.0;
     }
     metal::float3 q_5 = metal::cross(s_2, e1_2);
-    float v_15 = metal::dot(d_1, q_5) * inv;
-    if (!((v_15 < 0.0))) {
-        local_8 = (u_6 + v_15) > 1.0;
+    float v_20 = metal::dot(d_1, q_5) * inv;
+    if (!((v_20 < 0.0))) {
+        local_8 = (u_6 + v_20) > 1.0;
     } else {
         local_8 = true;
     }
@@ -1374,19 +1375,340 @@ float cosine_pdf(
     return metal::max(cos_theta_1, 0.0) * INV_PI;
 }
 
-metal::float3 cosine_direction(
-    metal::float3 n_12,
-    float u1_1,
-    float u2_1
+metal::float3 onb_tangent(
+    metal::float3 n_12
 ) {
     float s_5 = (n_12.z >= 0.0) ? 1.0 : -1.0;
     float a_11 = -1.0 / (s_5 + n_12.z);
-    float b_8 = (n_12.x * n_12.y) * a_11;
-    metal::float3 t_4 = metal::float3(1.0 + (((s_5 * n_12.x) * n_12.x) * a_11), s_5 * b_8, -(s_5) * n_12.x);
-    metal::float3 bt = metal::float3(b_8, s_5 + ((n_12.y * n_12.y) * a_11), -(n_12.y));
+    return metal::float3(1.0 + (((s_5 * n_12.x) * n_12.x) * a_11), ((s_5 * n_12.x) * n_12.y) * a_11, -(s_5) * n_12.x);
+}
+
+metal::float3 onb_bitangent(
+    metal::float3 n_13
+) {
+    float s_6 = (n_13.z >= 0.0) ? 1.0 : -1.0;
+    float a_12 = -1.0 / (s_6 + n_13.z);
+    return metal::float3((n_13.x * n_13.y) * a_12, s_6 + ((n_13.y * n_13.y) * a_12), -(n_13.y));
+}
+
+metal::float3 onb_to_world(
+    metal::float3 n_14,
+    metal::float3 d_2
+) {
+    metal::float3 _e2 = onb_tangent(n_14);
+    metal::float3 _e5 = onb_bitangent(n_14);
+    return ((_e2 * d_2.x) + (_e5 * d_2.y)) + (n_14 * d_2.z);
+}
+
+metal::float3 onb_to_local(
+    metal::float3 n_15,
+    metal::float3 w_8
+) {
+    metal::float3 _e2 = onb_tangent(n_15);
+    metal::float3 _e4 = onb_bitangent(n_15);
+    return metal::float3(metal::dot(w_8, _e2), metal::dot(w_8, _e4), metal::dot(w_8, n_15));
+}
+
+metal::float3 cosine_direction(
+    metal::float3 n_16,
+    float u1_1,
+    float u2_1
+) {
     float r_6 = metal::sqrt(u1_1);
     float phi_2 = 6.2831855 * u2_1;
-    return metal::normalize(((t_4 * (r_6 * metal::cos(phi_2))) + (bt * (r_6 * metal::sin(phi_2)))) + (n_12 * metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
+    metal::float3 _e16 = onb_to_world(n_16, metal::float3(r_6 * metal::cos(phi_2), r_6 * metal::sin(phi_2), metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
+    return metal::normalize(_e16);
+}
+
+float ggx_alpha(
+    float roughness
+) {
+    return metal::max(roughness * roughness, GGX_ALPHA_MIN);
+}
+
+float ggx_d(
+    float cos_h,
+    float sin2_h,
+    float alpha
+) {
+    if (cos_h <= 0.0) {
+        return 0.0;
+    }
+    float a2_1 = alpha * alpha;
+    float t_4 = ((cos_h * cos_h) * a2_1) + sin2_h;
+    return (a2_1 * INV_PI) / (t_4 * t_4);
+}
+
+float smith_root(
+    float cos,
+    float alpha_1
+) {
+    float a2_2 = alpha_1 * alpha_1;
+    return metal::sqrt(((cos * cos) * (1.0 - a2_2)) + a2_2);
+}
+
+float smith_visibility(
+    float n_l_1,
+    float n_v,
+    float alpha_2
+) {
+    bool local_12 = {};
+    if (!((n_l_1 <= 0.0))) {
+        local_12 = n_v <= 0.0;
+    } else {
+        local_12 = true;
+    }
+    bool _e11 = local_12;
+    if (_e11) {
+        return 0.0;
+    }
+    float _e13 = smith_root(n_v, alpha_2);
+    float _e15 = smith_root(n_l_1, alpha_2);
+    return 0.5 / ((n_l_1 * _e13) + (n_v * _e15));
+}
+
+metal::float3 fresnel_schlick(
+    metal::float3 f0_,
+    float f90_,
+    float v_h
+) {
+    float c_13 = metal::saturate(1.0 - v_h);
+    float c2_2 = c_13 * c_13;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_2 * c2_2) * c_13));
+}
+
+metal::float3 specular_fresnel(
+    metal::float3 base_4,
+    float metallic,
+    metal::float3 f0_d,
+    float f90_d,
+    float v_h_1
+) {
+    metal::float3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    metal::float3 _e10 = fresnel_schlick(base_4, 1.0, v_h_1);
+    return (_e5 * (1.0 - metallic)) + (_e10 * metallic);
+}
+
+metal::float3 diffuse_brdf(
+    metal::float3 base_5,
+    float metallic_1,
+    metal::float3 f0_d_1,
+    float f90_d_1,
+    float v_h_2
+) {
+    metal::float3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return (((metal::float3(1.0, 1.0, 1.0) - _e9) * base_5) * (1.0 - metallic_1)) * INV_PI;
+}
+
+float half_cosine(
+    metal::float3 v_5,
+    metal::float3 l
+) {
+    metal::float3 h_1 = v_5 + l;
+    float len2_ = metal::dot(h_1, h_1);
+    if (len2_ <= 0.0) {
+        return 0.0;
+    }
+    return metal::saturate(metal::dot(v_5, h_1) / metal::sqrt(len2_));
+}
+
+metal::float3 specular_brdf(
+    metal::float3 base_6,
+    float metallic_2,
+    metal::float3 f0_d_2,
+    float f90_d_2,
+    float alpha_3,
+    metal::float3 n_17,
+    metal::float3 v_6,
+    metal::float3 l_1
+) {
+    bool local_13 = {};
+    float n_l_2 = metal::dot(n_17, l_1);
+    float n_v_2 = metal::dot(n_17, v_6);
+    if (!((n_l_2 <= 0.0))) {
+        local_13 = n_v_2 <= 0.0;
+    } else {
+        local_13 = true;
+    }
+    bool _e18 = local_13;
+    if (_e18) {
+        return metal::float3(0.0, 0.0, 0.0);
+    }
+    metal::float3 hs = v_6 + l_1;
+    float inv_1 = 1.0 / metal::sqrt(metal::dot(hs, hs));
+    metal::float3 h_2 = hs * inv_1;
+    metal::float3 c_14 = metal::cross(n_17, h_2);
+    float _e32 = ggx_d(metal::dot(n_17, h_2), metal::dot(c_14, c_14), alpha_3);
+    metal::float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, metal::dot(v_6, h_2));
+    float _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
+    return _e34 * (_e32 * _e35);
+}
+
+metal::float3 brdf_eval(
+    metal::float3 base_7,
+    float metallic_3,
+    metal::float3 f0_d_3,
+    float f90_d_3,
+    float alpha_4,
+    metal::float3 n_18,
+    metal::float3 v_7,
+    metal::float3 l_2
+) {
+    if (metal::dot(n_18, l_2) <= 0.0) {
+        return metal::float3(0.0, 0.0, 0.0);
+    }
+    float _e15 = half_cosine(v_7, l_2);
+    metal::float3 _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
+    metal::float3 _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_18, v_7, l_2);
+    return _e16 + _e17;
+}
+
+bool has_specular(
+    float metallic_4,
+    metal::float3 f0_d_4,
+    float f90_d_4
+) {
+    bool local_14 = {};
+    bool local_15 = {};
+    if (!((metallic_4 > 0.0))) {
+        local_14 = f90_d_4 > 0.0;
+    } else {
+        local_14 = true;
+    }
+    bool _e11 = local_14;
+    if (!(_e11)) {
+        local_15 = metal::max(metal::max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0;
+    } else {
+        local_15 = true;
+    }
+    bool _e23 = local_15;
+    return _e23;
+}
+
+float channel_mean(
+    metal::float3 c_9
+) {
+    return ((c_9.x + c_9.y) + c_9.z) * 0.33333334;
+}
+
+float specular_probability(
+    metal::float3 base_8,
+    float metallic_5,
+    metal::float3 f0_d_5,
+    float f90_d_5,
+    float n_v_1
+) {
+    bool local_16 = {};
+    if (!((n_v_1 <= 0.0))) {
+        bool _e10 = has_specular(metallic_5, f0_d_5, f90_d_5);
+        local_16 = !(_e10);
+    } else {
+        local_16 = true;
+    }
+    bool _e13 = local_16;
+    if (_e13) {
+        return 0.0;
+    }
+    metal::float3 _e15 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    float _e16 = channel_mean(_e15);
+    metal::float3 _e21 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
+    float _e27 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e21) * base_8) * (1.0 - metallic_5));
+    if (_e27 <= 0.0) {
+        return 1.0;
+    }
+    if (_e16 <= 0.0) {
+        return 0.0;
+    }
+    return metal::clamp(_e16 / (_e16 + _e27), 0.1, 0.9);
+}
+
+float bounded_vndf_k(
+    metal::float3 wi,
+    float alpha_5
+) {
+    float a_13 = metal::saturate(alpha_5);
+    float s_7 = 1.0 + metal::sqrt((wi.x * wi.x) + (wi.y * wi.y));
+    float a2_3 = a_13 * a_13;
+    float s2_ = s_7 * s_7;
+    return ((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z));
+}
+
+metal::float3 ggx_vndf_sample(
+    metal::float3 wi_1,
+    float alpha_6,
+    float u1_2,
+    float u2_2
+) {
+    metal::float3 wi_std = metal::normalize(metal::float3(wi_1.x * alpha_6, wi_1.y * alpha_6, wi_1.z));
+    float _e12 = bounded_vndf_k(wi_1, alpha_6);
+    float b_8 = (wi_1.z > 0.0) ? (_e12 * wi_std.z) : wi_std.z;
+    float phi_3 = 6.2831855 * u1_2;
+    float z_4 = ((1.0 - u2_2) * (1.0 + b_8)) - b_8;
+    float sin_t = metal::sqrt(metal::saturate(1.0 - (z_4 * z_4)));
+    metal::float3 m_std = wi_std + metal::float3(sin_t * metal::cos(phi_3), sin_t * metal::sin(phi_3), z_4);
+    metal::float3 m_1 = metal::normalize(metal::float3(m_std.x * alpha_6, m_std.y * alpha_6, m_std.z));
+    return (m_1 * (2.0 * metal::dot(wi_1, m_1))) - wi_1;
+}
+
+float ggx_vndf_pdf(
+    metal::float3 wi_2,
+    metal::float3 wo,
+    float alpha_7
+) {
+    bool local_17 = {};
+    if (!((wi_2.z <= 0.0))) {
+        local_17 = wo.z <= 0.0;
+    } else {
+        local_17 = true;
+    }
+    bool _e13 = local_17;
+    if (_e13) {
+        return 0.0;
+    }
+    metal::float3 hs_1 = wi_2 + wo;
+    metal::float3 m_2 = hs_1 / metal::float3(metal::sqrt(metal::dot(hs_1, hs_1)));
+    float _e28 = ggx_d(m_2.z, (m_2.x * m_2.x) + (m_2.y * m_2.y), alpha_7);
+    float t_5 = metal::sqrt(((alpha_7 * alpha_7) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z));
+    float _e43 = bounded_vndf_k(wi_2, alpha_7);
+    return _e28 / (2.0 * ((_e43 * wi_2.z) + t_5));
+}
+
+metal::float3 bsdf_sample(
+    metal::float3 n_19,
+    metal::float3 v_8,
+    float alpha_8,
+    float p_spec,
+    float u1_3,
+    float u2_3
+) {
+    if (u1_3 < p_spec) {
+        if (metal::dot(n_19, v_8) <= 0.0) {
+            return -(n_19);
+        }
+        metal::float3 _e11 = onb_to_local(n_19, v_8);
+        metal::float3 _e13 = ggx_vndf_sample(_e11, alpha_8, u1_3 / p_spec, u2_3);
+        metal::float3 _e14 = onb_to_world(n_19, _e13);
+        return metal::normalize(_e14);
+    }
+    metal::float3 _e20 = cosine_direction(n_19, (u1_3 - p_spec) / (1.0 - p_spec), u2_3);
+    return _e20;
+}
+
+float bsdf_pdf(
+    metal::float3 n_20,
+    metal::float3 v_9,
+    metal::float3 l_3,
+    float alpha_9,
+    float p_spec_1
+) {
+    float _e6 = cosine_pdf(metal::dot(n_20, l_3));
+    if (p_spec_1 <= 0.0) {
+        return _e6;
+    }
+    metal::float3 _e9 = onb_to_local(n_20, v_9);
+    metal::float3 _e10 = onb_to_local(n_20, l_3);
+    float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_9);
+    return (p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6);
 }
 
 float inv_sigma_z(
@@ -1440,19 +1762,19 @@ metal::float3 filtered_irradiance(
 }
 
 float bilateral_weight(
-    metal::float3 n_13,
+    metal::float3 n_21,
     metal::float3 nj,
     float z_1,
     float zj,
     float inv_sz
 ) {
-    float dn = metal::max(metal::dot(n_13, nj), 0.0);
+    float dn = metal::max(metal::dot(n_21, nj), 0.0);
     float dn2_ = dn * dn;
     float dn4_ = dn2_ * dn2_;
     float dn8_ = dn4_ * dn4_;
-    float d_5 = (zj - z_1) * inv_sz;
-    float t_5 = metal::max(1.0 - (d_5 * d_5), 0.0);
-    return ((dn8_ * dn8_) * t_5) * t_5;
+    float d_6 = (zj - z_1) * inv_sz;
+    float t_6 = metal::max(1.0 - (d_6 * d_6), 0.0);
+    return ((dn8_ * dn8_) * t_6) * t_6;
 }
 
 uint naga_mod(uint lhs, uint rhs) {
@@ -1524,8 +1846,8 @@ float vpl_near_weight(
     if (near_r2_ <= 0.0) {
         return 0.0;
     }
-    float t_6 = metal::clamp((near_r2_ - d2_10) / (0.75 * near_r2_), 0.0, 1.0);
-    return (t_6 * t_6) * (3.0 - (2.0 * t_6));
+    float t_7 = metal::clamp((near_r2_ - d2_10) / (0.75 * near_r2_), 0.0, 1.0);
+    return (t_7 * t_7) * (3.0 - (2.0 * t_7));
 }
 
 float vpl_far_weight(
@@ -1542,10 +1864,10 @@ metal::float3 camera_dir(
     metal::float3 up,
     float px,
     float py,
-    float w_8,
+    float w_9,
     float h
 ) {
-    float sx = ((2.0 * px) / w_8) - 1.0;
+    float sx = ((2.0 * px) / w_9) - 1.0;
     float sy = 1.0 - ((2.0 * py) / h);
     return metal::normalize((forward + (right * sx)) + (up * sy));
 }
@@ -1573,36 +1895,36 @@ bool sees_emission(
 
 bool continues_path(
     metal::float3 nd,
-    metal::float3 n_14,
+    metal::float3 n_22,
     metal::float3 ng_1
 ) {
-    bool local_12 = {};
-    if (metal::dot(nd, n_14) > 0.0) {
-        local_12 = metal::dot(nd, ng_1) > 0.0;
+    bool local_18 = {};
+    if (metal::dot(nd, n_22) > 0.0) {
+        local_18 = metal::dot(nd, ng_1) > 0.0;
     } else {
-        local_12 = false;
+        local_18 = false;
     }
-    bool _e12 = local_12;
+    bool _e12 = local_18;
     return _e12;
 }
 
 bool finite3_(
-    metal::float3 v_5
+    metal::float3 v_10
 ) {
-    bool local_13 = {};
-    bool local_14 = {};
-    if (metal::abs(v_5.x) <= F32_MAX) {
-        local_13 = metal::abs(v_5.y) <= F32_MAX;
+    bool local_19 = {};
+    bool local_20 = {};
+    if (metal::abs(v_10.x) <= F32_MAX) {
+        local_19 = metal::abs(v_10.y) <= F32_MAX;
     } else {
-        local_13 = false;
+        local_19 = false;
     }
-    bool _e12 = local_13;
+    bool _e12 = local_19;
     if (_e12) {
-        local_14 = metal::abs(v_5.z) <= F32_MAX;
+        local_20 = metal::abs(v_10.z) <= F32_MAX;
     } else {
-        local_14 = false;
+        local_20 = false;
     }
-    bool _e20 = local_14;
+    bool _e20 = local_20;
     return _e20;
 }
 
@@ -1644,9 +1966,9 @@ float light_map_coord_at(
 float display_encode(
     float x_14
 ) {
-    float v_16 = metal::max(x_14, 0.0);
-    float t_7 = (2.0 * v_16) / (1.0 + (2.0 * v_16));
-    return (t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * metal::pow(t_7, 0.41666666)) - 0.055);
+    float v_21 = metal::max(x_14, 0.0);
+    float t_8 = (2.0 * v_21) / (1.0 + (2.0 * v_21));
+    return (t_8 <= 0.0031308) ? (12.92 * t_8) : ((1.055 * metal::pow(t_8, 0.41666666)) - 0.055);
 }
 
 float light_map_depth(
@@ -1666,30 +1988,30 @@ float rsm_texel_solid_angle(
 
 metal::float3 point_irradiance(
     metal::float3 intensity_1,
-    metal::float3 n_15,
-    metal::float3 v_6
+    metal::float3 n_23,
+    metal::float3 v_11
 ) {
-    float d2_14 = metal::dot(v_6, v_6);
-    float cos_x_2 = metal::dot(n_15, v_6) / metal::sqrt(metal::max(d2_14, MIN_D2_));
+    float d2_14 = metal::dot(v_11, v_11);
+    float cos_x_2 = metal::dot(n_23, v_11) / metal::sqrt(metal::max(d2_14, MIN_D2_));
     float _e11 = inverse_square(d2_14);
     return intensity_1 * (metal::max(cos_x_2, 0.0) * _e11);
 }
 
 metal::float3 directional_irradiance(
     metal::float3 e_1,
-    metal::float3 n_16,
+    metal::float3 n_24,
     metal::float3 to_light
 ) {
-    return e_1 * metal::max(metal::dot(n_16, to_light), 0.0);
+    return e_1 * metal::max(metal::dot(n_24, to_light), 0.0);
 }
 
 float perspective_texel_width(
     float extent_3,
-    float d_2,
+    float d_3,
     float z_2,
     float size_8
 ) {
-    return (((2.0 * extent_3) * d_2) * d_2) / (size_8 * z_2);
+    return (((2.0 * extent_3) * d_3) * d_3) / (size_8 * z_2);
 }
 
 float ortho_texel_width(
@@ -1703,22 +2025,22 @@ float shadow_bias(
     float texel,
     float cos_light_1
 ) {
-    float c_12 = metal::clamp(cos_light_1, 0.02, 1.0);
-    return texel * (1.5 + (metal::sqrt(1.0 - (c_12 * c_12)) / c_12));
+    float c_15 = metal::clamp(cos_light_1, 0.02, 1.0);
+    return texel * (1.5 + (metal::sqrt(1.0 - (c_15 * c_15)) / c_15));
 }
 
 bool shadow_lit(
-    float d_3,
+    float d_4,
     float d_map,
     float bias
 ) {
-    bool local_15 = {};
+    bool local_21 = {};
     if (!((d_map <= 0.0))) {
-        local_15 = d_3 <= (d_map + bias);
+        local_21 = d_4 <= (d_map + bias);
     } else {
-        local_15 = true;
+        local_21 = true;
     }
-    bool _e11 = local_15;
+    bool _e11 = local_21;
     return _e11;
 }
 
@@ -1731,13 +2053,13 @@ metal::float3 diffuse_radiance(
 }
 
 metal::float3 light_intensity(
-    GpuLight l,
-    metal::float3 w_9
+    GpuLight l_4,
+    metal::float3 w_10
 ) {
-    switch(l.kind) {
+    switch(l_4.kind) {
         case 1u: {
-            float _e8 = spot_falloff(metal::dot(l.p1_, w_9), l.a, l.b);
-            return l.intensity * _e8;
+            float _e8 = spot_falloff(metal::dot(l_4.p1_, w_10), l_4.a, l_4.b);
+            return l_4.intensity * _e8;
         }
         default: {
             return metal::float3(0.0);
@@ -1746,31 +2068,31 @@ metal::float3 light_intensity(
 }
 
 metal::float3 light_point(
-    GpuLight l_1,
-    float u1_2,
-    float u2_2
+    GpuLight l_5,
+    float u1_4,
+    float u2_4
 ) {
-    return l_1.p0_;
+    return l_5.p0_;
 }
 
 float light_area(
-    GpuLight l_2
+    GpuLight l_6
 ) {
     return 0.0;
 }
 
 metal::float3 light_normal(
-    GpuLight l_3
+    GpuLight l_7
 ) {
     return metal::float3(0.0);
 }
 
 metal::float3 seen_normal(
-    VsOut v_7,
+    VsOut v_12,
     metal::float3 dir_4
 ) {
-    metal::float3 _e12 = face_against(v_7.geo, dir_4);
-    metal::float3 _e13 = shading_normal(v_7.normal, metal::float3(0.0), metal::float3(0.0), metal::float3(1.0, 0.0, 0.0), _e12);
+    metal::float3 _e12 = face_against(v_12.geo, dir_4);
+    metal::float3 _e13 = shading_normal(v_12.normal, metal::float3(0.0), metal::float3(0.0), metal::float3(1.0, 0.0, 0.0), _e12);
     return _e13;
 }
 
@@ -1799,8 +2121,8 @@ vertex vs_mainOutput vs_main(
     metal::float4 _e9 = params.c1_;
     metal::float4 _e12 = params.c2_;
     metal::float4 _e15 = params.c3_;
-    metal::float4x4 m_1 = metal::float4x4(_e6, _e9, _e12, _e15);
-    const auto _tmp = VsOut {m_1 * metal::float4(position, 1.0), position, normal, geo, material};
+    metal::float4x4 m_3 = metal::float4x4(_e6, _e9, _e12, _e15);
+    const auto _tmp = VsOut {m_3 * metal::float4(position, 1.0), position, normal, geo, material};
     return vs_mainOutput { _tmp.clip, _tmp.world, _tmp.normal, _tmp.geo, _tmp.material };
 }
 
