@@ -6,7 +6,8 @@
 //! | module | holds |
 //! |---|---|
 //! | [`scene`] | the scene model: triangles with optional vertex normals, materials, camera, primary light, validation |
-//! | [`cornell`], [`obj`], [`scene_file`] | the built-in Cornell box, OBJ+MTL through tobj, TOML scene files |
+//! | [`cornell`], [`obj`], [`gltf`], [`scene_file`] | the built-in Cornell box, OBJ+MTL through tobj, glTF 2.0 (`.gltf`/`.glb`) through the gltf crate, TOML scene files |
+//! | [`shapes`] | built-in shapes of scene files (the unit sphere) |
 //! | [`lights`] | a light set with its BSH and power alias table; emissive triangles → triangle lights |
 //! | [`light_bvh`] | the light BVH of the `lightbvh` baseline (built here, sampled by slc-core on both backends) |
 //! | [`alias`] | Walker's alias table (the `power` baseline) |
@@ -29,6 +30,7 @@
 pub mod alias;
 pub mod backend;
 pub mod cornell;
+pub mod gltf;
 pub mod image;
 pub mod light_bvh;
 pub mod lights;
@@ -36,6 +38,7 @@ pub mod obj;
 pub mod pt;
 pub mod scene;
 pub mod scene_file;
+pub mod shapes;
 pub mod vpl;
 
 use thiserror::Error;
@@ -49,6 +52,9 @@ pub enum SceneError {
     /// The OBJ/MTL could not be parsed.
     #[error("invalid OBJ/MTL {0}: {1}")]
     Obj(String, String),
+    /// The glTF file could not be parsed or holds a bad value.
+    #[error("invalid glTF {0}: {1}")]
+    Gltf(String, String),
     /// No triangles.
     #[error("the scene has no triangles")]
     Empty,
