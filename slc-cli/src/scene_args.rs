@@ -30,7 +30,7 @@ pub struct SceneArgs {
     /// Backend.
     #[arg(long, value_enum, default_value = "cpu")]
     pub backend: Backend,
-    /// `cornell` (built in), an OBJ file (with its MTL), a glTF 2.0 file (`.gltf`, `.glb`), or a TOML scene file.
+    /// `cornell` or `cornell-glossy` (built in), an OBJ file (with its MTL), a glTF 2.0 file (`.gltf`, `.glb`), or a TOML scene file.
     #[arg(long, default_value = "cornell")]
     pub scene: String,
     /// Image width [default: 512; 128 for `bench --app pt`].
@@ -96,6 +96,8 @@ impl SceneArgs {
     pub fn scene(&self) -> anyhow::Result<(Scene, Vec<slc_core::light::Light>, RenderSettings)> {
         let loaded = if self.scene == "cornell" {
             (Scene::cornell_box(), Vec::new(), RenderSettings::default())
+        } else if self.scene == "cornell-glossy" {
+            (Scene::cornell_box_glossy(), Vec::new(), RenderSettings::default())
         } else if self.scene.ends_with(".toml") {
             let f = SceneFile::load(Path::new(&self.scene))?;
             (f.scene, f.lights, f.render)

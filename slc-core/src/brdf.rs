@@ -169,24 +169,37 @@ crate::shared! {
         return (c.x + c.y + c.z) * 0.33333334;
     }
 
-    /// Probability of sampling the specular lobe seen at `n·v`: its share
-    /// of the two lobes' albedos, estimated with the Fresnel at `n·v`
-    /// (`F_s` against `(1 − m)(1 − F_d)·b`, channel means), kept in
-    /// `[0.1, 0.9]` when both lobes exist so neither is starved; 0 without
-    /// a specular lobe or for a view below `n`, 1 without a diffuse lobe.
-    pub fn specular_probability(base: vec3f, metallic: f32, f0_d: vec3f, f90_d: f32, n_v: f32) -> f32 {
+    /// The lobes of a receiver seen at `n·v`, as light selection and lobe
+    /// sampling use them: `(k_d, k_s, α, n·v)` with `k_d` the diffuse and
+    /// `k_s` the specular albedo estimated with the Fresnel at `n·v`
+    /// (channel means of `(1 − m)(1 − F_d)·b` and `F_s`); `k_s = 0` without
+    /// a specular lobe or for a view below `n` (only the diffuse lobe is
+    /// seen there).
+    pub fn receiver_lobe(base: vec3f, metallic: f32, f0_d: vec3f, f90_d: f32, alpha: f32, n_v: f32) -> vec4f {
+        let d: f32 = channel_mean((vec3f(1.0, 1.0, 1.0) - fresnel_schlick(f0_d, f90_d, n_v)) * base * (1.0 - metallic));
         if n_v <= 0.0 || !has_specular(metallic, f0_d, f90_d) {
+            return vec4f(d, 0.0, alpha, n_v);
+        }
+        return vec4f(d, channel_mean(specular_fresnel(base, metallic, f0_d, f90_d, n_v)), alpha, n_v);
+    }
+
+    /// Probability of sampling the specular lobe of a receiver with lobe
+    /// `lobe` ([`receiver_lobe`]): its share `k_s/(k_s + k_d)` of the two
+    /// albedos, kept in `[0.1, 0.9]` when both lobes exist so neither is
+    /// starved; 0 without a specular lobe, 1 without a diffuse one.
+    pub fn specular_probability(lobe: vec4f) -> f32 {
+        if lobe.y <= 0.0 {
             return 0.0;
         }
-        let s: f32 = channel_mean(specular_fresnel(base, metallic, f0_d, f90_d, n_v));
-        let d: f32 = channel_mean((vec3f(1.0, 1.0, 1.0) - fresnel_schlick(f0_d, f90_d, n_v)) * base * (1.0 - metallic));
-        if d <= 0.0 {
+        if lobe.x <= 0.0 {
             return 1.0;
         }
-        if s <= 0.0 {
-            return 0.0;
-        }
-        return clamp(s / (s + d), 0.1, 0.9);
+        return clamp(lobe.y / (lobe.y + lobe.x), 0.1, 0.9);
+    }
+
+    /// The view direction `v` mirrored about the unit normal `n`: `2(n·v)n − v`.
+    pub fn mirror_dir(n: vec3f, v: vec3f) -> vec3f {
+        return n * (2.0 * dot(n, v)) - v;
     }
 
     /// `k` of the bounded VNDF (Eto & Tokuyoshi 2023, eq. 5) for a local
@@ -318,7 +331,7 @@ mod tests {
             assert_eq!(brdf_eval(b, 0.0, Vec3::ZERO, 0.0, 0.3, n, v, l), b * INV_PI);
             assert_eq!(bsdf_pdf(n, v, l, 0.3, 0.0), cosine_pdf(l.z));
         }
-        assert_eq!(specular_probability(b, 0.0, Vec3::ZERO, 0.0, 0.5), 0.0);
+        assert_eq!(specular_probability(receiver_lobe(b, 0.0, Vec3::ZERO, 0.0, 0.3, 0.5)), 0.0);
         for (u1, u2) in [(0.0, 0.0), (0.3, 0.7), (0.999, 0.5)] {
             assert_eq!(bsdf_sample(n, view(0.5), 0.3, 0.0, u1, u2), cosine_direction(n, u1, u2));
         }
@@ -493,7 +506,7 @@ mod tests {
                 for &l in &dirs {
                     let f = brdf_eval(b, 0.5, Vec3::splat(0.04), 1.0, alpha, Vec3::Z, v, l);
                     assert!(f.is_finite() && f.min_element() >= 0.0, "r {rough}: f({v}, {l}) = {f}");
-                    let p = bsdf_pdf(Vec3::Z, v, l, alpha, specular_probability(b, 0.5, Vec3::splat(0.04), 1.0, v.z));
+                    let p = bsdf_pdf(Vec3::Z, v, l, alpha, specular_probability(receiver_lobe(b, 0.5, Vec3::splat(0.04), 1.0, alpha, v.z)));
                     assert!(p.is_finite() && p >= 0.0, "r {rough}: pdf({v}, {l}) = {p}");
                 }
                 for (u1, u2) in [(0.0, 0.0), (below_one, below_one), (0.5, below_one), (0.05, 0.0)] {
@@ -516,7 +529,7 @@ mod tests {
         for alpha in [0.002f32, 0.05, 0.3, 1.0] {
             for cos_v in [0.99f32, 0.5, 0.1] {
                 let v = view(cos_v);
-                let p_s = specular_probability(b, 1.0, Vec3::ZERO, 0.0, v.z);
+                let p_s = specular_probability(receiver_lobe(b, 1.0, Vec3::ZERO, 0.0, alpha, v.z));
                 assert_eq!(p_s, 1.0);
                 for i in 0..50 {
                     for j in 0..50 {
@@ -528,6 +541,56 @@ mod tests {
                         assert!(w.is_finite() && w.max_element() <= 1.0 + 1e-3, "α {alpha}, cos {cos_v}: weight {w}");
                     }
                 }
+            }
+        }
+    }
+
+    /// SLC's error bound on a glossy receiver. The range `r_t² = E·I/(2π ε)`
+    /// caps one light's roulette deviation `σ(d) = √(1/p − 1) · g(d)` at ε
+    /// for a receiver whose `f·cos ≤ 1/π` (a white Lambertian one); for a
+    /// receiver whose `f·cos` toward the light is `P`, `max_d σ(d) = π·P·ε`
+    /// (at `d² = 2 r_t²`). Checked through the real roulette (`random_range2`,
+    /// `slc_keep`, `slc_weight`, quadrature over ξ) for a point light on a
+    /// glossy metal's mirror direction, where `π·P = F/(4α²)` at normal view.
+    #[test]
+    fn slc_deviation_on_a_glossy_receiver_is_pi_p_epsilon() {
+        use crate::range::{RangeParams, random_range2, slc_keep, slc_weight};
+        let params = RangeParams::new(0.01, 1.0).unwrap();
+        let intensity = Vec3::splat(2.0);
+        let rt2 = params.threshold_range2(intensity);
+        let n = Vec3::Z;
+        for (base, metallic, rough, f0, f90) in [
+            (Vec3::ONE, 0.0, 1.0, Vec3::ZERO, 0.0), // white Lambertian: σ ≤ ε
+            (Vec3::ONE, 1.0, 0.5, Vec3::ZERO, 0.0),
+            (Vec3::ONE, 1.0, 0.2, Vec3::ZERO, 0.0),
+            (Vec3::splat(0.5), 0.0, 0.3, Vec3::splat(0.04), 1.0),
+        ] {
+            let alpha = ggx_alpha(rough);
+            let p = brdf_eval(base, metallic, f0, f90, alpha, n, n, n).x; // f·cos at the mirror direction, cos = 1
+            let mut worst = 0.0f64;
+            for k in 1..400 {
+                let d2 = rt2 * (k as f32 * 0.02);
+                let g = (p * intensity.x / d2) as f64;
+                // E[X] and E[X²] over ξ by the midpoint rule: X = g·1/p if kept.
+                let m = 20_000;
+                let (mut s1, mut s2) = (0.0f64, 0.0f64);
+                for j in 0..m {
+                    let xi = (j as f32 + 0.5) / m as f32;
+                    if slc_keep(random_range2(rt2, xi), d2) {
+                        let x = g * slc_weight(rt2, d2) as f64;
+                        s1 += x;
+                        s2 += x * x;
+                    }
+                }
+                let (m1, m2) = (s1 / m as f64, s2 / m as f64);
+                assert!((m1 - g).abs() <= 2e-3 * g, "unbiased: {m1} vs {g}");
+                worst = worst.max((m2 - m1 * m1).max(0.0).sqrt());
+            }
+            let bound = core::f64::consts::PI * p as f64 * 0.01;
+            assert!((worst - bound).abs() <= 0.01 * bound, "P = {p}: max σ {worst:.5} vs π·P·ε {bound:.5}");
+            if metallic == 1.0 {
+                let peak = 1.0 / (4.0 * alpha as f64 * alpha as f64);
+                assert!((core::f64::consts::PI * p as f64 - peak).abs() <= 1e-3 * peak, "π·P = F/(4α²)");
             }
         }
     }

@@ -21,6 +21,7 @@
 // Shared (WGSL) functions take their bounds as scalars and vectors.
 #![allow(clippy::too_many_arguments)]
 
+use crate::brdf::{ggx_d, smith_root};
 use crate::light::{INV_PI, Light, MIN_D2};
 use crate::range::slc_weight;
 use crate::wgsl::*;
@@ -49,17 +50,15 @@ crate::shared! {
         return sqrt(max(x, 0.0));
     }
 
-    /// Importance at point `p` (receiver normal `n`, or zero for none) of
-    /// lights inside the sphere `(center, radius)` emitting power `phi`
-    /// with normals in the cone `(axis, cos_o)` and emission spread `cos_e`
-    /// around each normal: `φ · cos θ' / max(d², R², MIN_D2)`, `θ'` the angle
-    /// from the direction to `p` to the normal cone, less the angle the
-    /// sphere subtends (0 when `θ' ≥ θ_e`); times `max(cos θ'_i, 0)`, `θ'_i`
-    /// the receiver's angle to the sphere's centre less the same subtended
-    /// angle. The receiver is one-sided (reflection only; pbrt-v4 takes
-    /// `|cos|` for transmission), so only lights wholly below its horizon
-    /// get 0.
-    pub fn light_importance(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, p: vec3f, n: vec3f) -> f32 {
+    /// `cos` of the half-angle the sphere of radius² `r2` subtends at
+    /// distance² `dist2` from its centre (−1 from inside it).
+    pub fn subtended_cos(dist2: f32, r2: f32) -> f32 {
+        return select(safe_sqrt(1.0 - r2 / dist2), -1.0, dist2 <= r2);
+    }
+
+    /// The emitter's half of [`light_importance`] at `p`: `φ · cos θ' /
+    /// max(d², R², MIN_D2)`, 0 where `θ' ≥ θ_e`.
+    pub fn emitter_importance(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, p: vec3f) -> f32 {
         let v: vec3f = p - center;
         let dist2: f32 = dot(v, v);
         let r2: f32 = radius * radius;
@@ -67,7 +66,7 @@ crate::shared! {
         let wi: vec3f = select(vec3f(0.0, 0.0, 0.0), v / sqrt(dist2), dist2 > 0.0);
         let cos_w: f32 = dot(axis, wi);
         let sin_w: f32 = safe_sqrt(1.0 - cos_w * cos_w);
-        let cos_b: f32 = select(safe_sqrt(1.0 - r2 / dist2), -1.0, dist2 <= r2);
+        let cos_b: f32 = subtended_cos(dist2, r2);
         let sin_b: f32 = safe_sqrt(1.0 - cos_b * cos_b);
         let sin_o: f32 = safe_sqrt(1.0 - cos_o * cos_o);
         let cos_x: f32 = cos_sub_clamped(sin_w, cos_w, sin_o, cos_o);
@@ -76,13 +75,76 @@ crate::shared! {
         if cos_p <= cos_e {
             return 0.0;
         }
-        let mut imp: f32 = phi * cos_p / d2;
+        return phi * cos_p / d2;
+    }
+
+    /// The largest cosine between the unit direction `d` at `p` and a
+    /// direction from `p` into the sphere `(center, radius)`: `cos(θ − θ_b)`
+    /// with `θ` the angle to the centre and `θ_b` the half-angle the sphere
+    /// subtends (1 inside it or within `θ_b`). With the receiver's normal it
+    /// is pbrt-v4's widened `cos θ'_i`; with a glossy receiver's mirror
+    /// direction, how near the sphere comes to the lobe's peak.
+    pub fn cone_cos_toward(center: vec3f, radius: f32, p: vec3f, d: vec3f) -> f32 {
+        let v: vec3f = center - p;
+        let dist2: f32 = dot(v, v);
+        let w: vec3f = select(vec3f(0.0, 0.0, 0.0), v / sqrt(dist2), dist2 > 0.0);
+        let cos_b: f32 = subtended_cos(dist2, radius * radius);
+        let cos_i: f32 = dot(w, d);
+        return cos_sub_clamped(safe_sqrt(1.0 - cos_i * cos_i), cos_i, safe_sqrt(1.0 - cos_b * cos_b), cos_b);
+    }
+
+    /// Importance at point `p` (receiver normal `n`, or zero for none) of
+    /// lights inside the sphere `(center, radius)` emitting power `phi`
+    /// with normals in the cone `(axis, cos_o)` and emission spread `cos_e`
+    /// around each normal: [`emitter_importance`] (`φ · cos θ' / max(d²,
+    /// R², MIN_D2)`, `θ'` the angle from the direction to `p` to the normal
+    /// cone, less the angle the sphere subtends; 0 when `θ' ≥ θ_e`) times
+    /// `max(cos θ'_i, 0)`, `θ'_i` the receiver's angle to the sphere's
+    /// centre less the same subtended angle ([`cone_cos_toward`]). The
+    /// receiver is one-sided (reflection only; pbrt-v4 takes `|cos|` for
+    /// transmission), so only lights wholly below its horizon get 0.
+    pub fn light_importance(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, p: vec3f, n: vec3f) -> f32 {
+        let mut imp: f32 = emitter_importance(center, radius, phi, axis, cos_o, cos_e, p);
         if dot(n, n) > 0.0 {
-            let cos_i: f32 = -dot(wi, n);
-            let sin_i: f32 = safe_sqrt(1.0 - cos_i * cos_i);
-            imp = imp * max(cos_sub_clamped(sin_i, cos_i, sin_b, cos_b), 0.0);
+            imp = imp * max(cone_cos_toward(center, radius, p, n), 0.0);
         }
         return max(imp, 0.0);
+    }
+
+    /// [`light_importance`] for a glossy receiver at `p` with normal `n`,
+    /// mirror direction `r` (the view reflected about `n`) and lobe `lobe`
+    /// ([`crate::brdf::receiver_lobe`]: diffuse and specular albedo, `α`,
+    /// `n·v`): [`emitter_importance`] times a bound of `f cos` toward the
+    /// sphere, `k_d/π · cos θ'_i + k_s · D(cos θ'_h) / (4 √(n·v²(1−α²)+α²))`
+    /// with `θ'_h` half the angle from `r` to the sphere
+    /// ([`cone_cos_toward`]; the half vector turns by half as much as the
+    /// light for a view along the normal) and the lobe's `V · n·l` at the
+    /// mirror direction; 0 only where the light is wholly below the horizon
+    /// or outside its emission cone (GGX's `D` is positive wherever the
+    /// half vector is above the surface). Beyond pbrt-v4, whose bound is
+    /// the cosine alone; in the spirit of Tokuyoshi et al., "Hierarchical
+    /// Light Sampling with Accurate Spherical Gaussian Lighting" (SIGGRAPH
+    /// Asia 2024), whose receivers weigh lights by their BRDF lobe.
+    pub fn glossy_importance(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, p: vec3f, n: vec3f, r: vec3f, lobe: vec4f) -> f32 {
+        let e: f32 = emitter_importance(center, radius, phi, axis, cos_o, cos_e, p);
+        let ci: f32 = cone_cos_toward(center, radius, p, n);
+        if e <= 0.0 || ci <= 0.0 {
+            return 0.0;
+        }
+        let cos_h: f32 = safe_sqrt(0.5 + 0.5 * cone_cos_toward(center, radius, p, r));
+        let spec: f32 = lobe.y * ggx_d(cos_h, 1.0 - cos_h * cos_h, lobe.z) * 0.25 / smith_root(lobe.w, lobe.z);
+        return e * (lobe.x * INV_PI * ci + spec);
+    }
+
+    /// The importance a receiver with lobe `lobe` gives the bounded lights
+    /// at `p` (normal `n`, mirror direction `r`): [`light_importance`] for
+    /// a receiver without a specular lobe (`lobe.y = 0`: Lambertian, or
+    /// seen from below), else [`glossy_importance`].
+    pub fn receiver_importance(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, p: vec3f, n: vec3f, r: vec3f, lobe: vec4f) -> f32 {
+        if lobe.y <= 0.0 {
+            return light_importance(center, radius, phi, axis, cos_o, cos_e, p, n);
+        }
+        return glossy_importance(center, radius, phi, axis, cos_o, cos_e, p, n, r, lobe);
     }
 
     /// `slc-weighted`'s weight of an in-range candidate of importance
@@ -93,13 +155,19 @@ crate::shared! {
     }
 
     /// [`candidate_weight`] of a light bounded by the cone `(center,
-    /// radius, phi, axis, cos_o, cos_e)` at `p` (normal `n`) for threshold
-    /// range² `rt2`: its importance times the Lambertian `1/π` (the same for
-    /// every candidate; it keeps `W` on the radiance's scale) over its
-    /// roulette probability at the centre.
-    pub fn cone_weight(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, rt2: f32, p: vec3f, n: vec3f) -> f32 {
+    /// radius, phi, axis, cos_o, cos_e)` at `p` (normal `n`, mirror
+    /// direction `r`, lobe `lobe`) for threshold range² `rt2`: its
+    /// importance over its roulette probability at the centre. A receiver
+    /// without a specular lobe weighs [`light_importance`] by the
+    /// Lambertian `1/π` (the same for every candidate; it keeps `W` on the
+    /// radiance's scale); a glossy one by [`glossy_importance`], which
+    /// holds its lobes' albedos.
+    pub fn cone_weight(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, rt2: f32, p: vec3f, n: vec3f, r: vec3f, lobe: vec4f) -> f32 {
         let v: vec3f = p - center;
-        return candidate_weight(light_importance(center, radius, phi, axis, cos_o, cos_e, p, n) * INV_PI, rt2, dot(v, v));
+        if lobe.y <= 0.0 {
+            return candidate_weight(light_importance(center, radius, phi, axis, cos_o, cos_e, p, n) * INV_PI, rt2, dot(v, v));
+        }
+        return candidate_weight(glossy_importance(center, radius, phi, axis, cos_o, cos_e, p, n, r, lobe), rt2, dot(v, v));
     }
 
     /// Expected number of times `k` independent one-slot weighted
@@ -164,10 +232,38 @@ impl LightCone {
         light_importance(self.center, self.radius, self.phi, self.axis, self.cos_o, self.cos_e, p, n)
     }
 
-    /// `slc-weighted`'s [`cone_weight`] of this light at `p` (normal `n`)
-    /// for threshold range² `rt2`.
-    pub fn weight(&self, p: Vec3, n: Vec3, rt2: f32) -> f32 {
-        cone_weight(self.center, self.radius, self.phi, self.axis, self.cos_o, self.cos_e, rt2, p, n)
+    /// `slc-weighted`'s [`cone_weight`] of this light for the receiver `rc`
+    /// and threshold range² `rt2`.
+    pub fn weight(&self, rc: &Receiver, rt2: f32) -> f32 {
+        cone_weight(self.center, self.radius, self.phi, self.axis, self.cos_o, self.cos_e, rt2, rc.p, rc.n, rc.r, rc.lobe)
+    }
+}
+
+/// A shading point as light selection sees it: position `p`, unit shading
+/// normal `n`, mirror direction `r` of the view and the BRDF lobe
+/// ([`crate::brdf::receiver_lobe`]). The shared functions take the four
+/// fields one by one; this keeps them together on the CPU.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Receiver {
+    /// Position.
+    pub p: Vec3,
+    /// Unit shading normal (zero: no receiver normal, as pbrt-v4 allows).
+    pub n: Vec3,
+    /// The view direction mirrored about `n` (unused for a Lambertian lobe).
+    pub r: Vec3,
+    /// `(k_d, k_s, α, n·v)`; `k_s = 0` for a Lambertian receiver.
+    pub lobe: glam::Vec4,
+}
+
+impl Receiver {
+    /// A Lambertian receiver at `p` with normal `n`.
+    pub fn lambertian(p: Vec3, n: Vec3) -> Receiver {
+        Receiver { p, n, r: n, lobe: glam::Vec4::new(1.0, 0.0, 1.0, 1.0) }
+    }
+
+    /// [`receiver_importance`] of the light bounded by `cone`.
+    pub fn importance(&self, cone: &LightCone) -> f32 {
+        receiver_importance(cone.center, cone.radius, cone.phi, cone.axis, cone.cos_o, cone.cos_e, self.p, self.n, self.r, self.lobe)
     }
 }
 

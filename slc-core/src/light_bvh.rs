@@ -7,7 +7,9 @@
 //! `i`'s first child is `i + 1` and its second child `second`, so the first
 //! child's subtree is the index range `i + 1 .. second`. A sample walks from
 //! the root, at each node choosing a child with probability proportional to
-//! the [`light_importance`](crate::importance::light_importance) of its bounds at the shading point
+//! the [`receiver_importance`](crate::importance::receiver_importance) of its bounds at the shading point
+//! (pbrt-v4's importance for a Lambertian receiver; a glossy receiver's
+//! lobe weighs it too)
 //! ([`bvh_first_prob`]) and reusing the uniform number ([`bvh_remap_u`]);
 //! the light's pmf is the product of the choices. The pmf of a given light
 //! (for MIS at a BSDF-sampled hit) takes the same walk towards its leaf,
@@ -127,7 +129,7 @@ pub const WALK_WGSL_PRELUDE: &str = "fn bvh_pick_none() -> BvhPick { return BvhP
 /// path tracer's kernels bind (their WGSL is [`walk::WGSL`]).
 pub mod walk {
     use super::{BvhNodes, GpuLightBvhNode, LIGHT_BVH_LEAF, bvh_first_prob, bvh_pick_none, bvh_remap_u, light_bvh_count, light_bvh_node};
-    use crate::importance::light_importance;
+    use crate::importance::receiver_importance;
     use crate::wgsl::*;
 
     crate::shared! {
@@ -139,29 +141,31 @@ pub mod walk {
             pub pmf: f32,
         }
 
-        /// Importance of node `i` at `x` (normal `n`).
-        pub fn bvh_importance(nodes: BvhNodes, i: u32, x: vec3f, n: vec3f) -> f32 {
+        /// Importance of node `i` for the receiver at `x` (normal `n`,
+        /// mirror direction `r`, lobe `lobe`;
+        /// [`receiver_importance`](crate::importance::receiver_importance)).
+        pub fn bvh_importance(nodes: BvhNodes, i: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f) -> f32 {
             let b: GpuLightBvhNode = light_bvh_node(nodes, i);
-            return light_importance(b.center, b.radius, b.phi, b.axis, b.cos_o, b.cos_e, x, n);
+            return receiver_importance(b.center, b.radius, b.phi, b.axis, b.cos_o, b.cos_e, x, n, r, lobe);
         }
 
-        /// First-child probability at interior node `i` for `x` (normal
-        /// `n`), or −1 where the walk ends: a second child out of the table
+        /// First-child probability at interior node `i` for the receiver
+        /// `(x, n, r, lobe)`, or −1 where the walk ends: a second child out of the table
         /// or not after the first, or [`bvh_first_prob`] < 0.
-        pub fn bvh_first(nodes: BvhNodes, i: u32, x: vec3f, n: vec3f) -> f32 {
+        pub fn bvh_first(nodes: BvhNodes, i: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f) -> f32 {
             let j: u32 = light_bvh_node(nodes, i).second;
             if j <= i + 1 || j >= light_bvh_count(nodes) {
                 return -1.0;
             }
-            return bvh_first_prob(bvh_importance(nodes, i + 1, x, n), bvh_importance(nodes, j, x, n));
+            return bvh_first_prob(bvh_importance(nodes, i + 1, x, n, r, lobe), bvh_importance(nodes, j, x, n, r, lobe));
         }
 
-        /// Samples one light for shading point `x` with normal `n` and
-        /// uniform `u_in ∈ [0, 1)`, walking from the root and choosing each
+        /// Samples one light for the receiver at `x` (normal `n`, mirror
+        /// direction `r`, lobe `lobe`) and uniform `u_in ∈ [0, 1)`, walking from the root and choosing each
         /// child by its importance: the light and its pmf, or pmf 0 where no
         /// light can light the point (or the tree is empty). A lone leaf is
         /// sampled only where its importance is positive.
-        pub fn light_bvh_sample(nodes: BvhNodes, x: vec3f, n: vec3f, u_in: f32) -> BvhPick {
+        pub fn light_bvh_sample(nodes: BvhNodes, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, u_in: f32) -> BvhPick {
             let mut pick: BvhPick = bvh_pick_none();
             let mut u: f32 = u_in;
             let mut i: u32 = 0;
@@ -169,13 +173,13 @@ pub mod walk {
             while i < light_bvh_count(nodes) {
                 let node: GpuLightBvhNode = light_bvh_node(nodes, i);
                 if node.second == LIGHT_BVH_LEAF {
-                    if i > 0 || bvh_importance(nodes, 0, x, n) > 0.0 {
+                    if i > 0 || bvh_importance(nodes, 0, x, n, r, lobe) > 0.0 {
                         pick.light = node.light;
                         pick.pmf = pmf;
                     }
                     return pick;
                 }
-                let p0: f32 = bvh_first(nodes, i, x, n);
+                let p0: f32 = bvh_first(nodes, i, x, n, r, lobe);
                 if p0 < 0.0 {
                     return pick;
                 }
@@ -187,11 +191,12 @@ pub mod walk {
             return pick;
         }
 
-        /// Probability that [`light_bvh_sample`] at `x` (normal `n`) picks
+        /// Probability that [`light_bvh_sample`] for the receiver `(x, n, r,
+        /// lobe)` picks
         /// the light whose leaf is node `leaf` (`LIGHT_BVH_LEAF` or out of
         /// the table: 0): the same walk towards that leaf, choosing the
         /// child whose index range holds it.
-        pub fn light_bvh_pmf(nodes: BvhNodes, leaf: u32, x: vec3f, n: vec3f) -> f32 {
+        pub fn light_bvh_pmf(nodes: BvhNodes, leaf: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f) -> f32 {
             if leaf >= light_bvh_count(nodes) {
                 return 0.0;
             }
@@ -200,12 +205,12 @@ pub mod walk {
             while i < light_bvh_count(nodes) {
                 let node: GpuLightBvhNode = light_bvh_node(nodes, i);
                 if node.second == LIGHT_BVH_LEAF {
-                    if i == leaf && (i > 0 || bvh_importance(nodes, 0, x, n) > 0.0) {
+                    if i == leaf && (i > 0 || bvh_importance(nodes, 0, x, n, r, lobe) > 0.0) {
                         return pmf;
                     }
                     return 0.0;
                 }
-                let p0: f32 = bvh_first(nodes, i, x, n);
+                let p0: f32 = bvh_first(nodes, i, x, n, r, lobe);
                 if p0 < 0.0 {
                     return 0.0;
                 }

@@ -7,17 +7,18 @@ use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings};
 use slc_scene::scene::Scene;
 
 /// The Cornell box with its ceiling light split into 8×8 quads (128
-/// triangle lights), so SLC has many lights to cull.
-fn many_light_box() -> Scene {
-    Scene::cornell_box_split_light(8)
+/// triangle lights), so SLC has many lights to cull; diffuse, or with the
+/// glossy floor, blocks and ball of [`Scene::cornell_box_glossy`].
+fn many_light_box(glossy: bool) -> Scene {
+    if glossy { Scene::cornell_box_glossy().split_light(8) } else { Scene::cornell_box_split_light(8) }
 }
 
 /// Per-pass images of a method, RGB interleaved (`3·pixel + channel`).
 /// Passes draw new samples and new ξ; the ξ are stratified over passes
 /// (`slc_core::xi::xi_for`), which only lowers the variance of their mean,
 /// so variances estimated as if passes were independent are upper bounds.
-fn pass_images(method: PtMethod, seed: u32, passes: u32) -> Vec<Vec<f64>> {
-    let mut pts = CpuPathTracer::new(&PtScene::new(&many_light_box(), &[]).unwrap());
+fn pass_images(glossy: bool, method: PtMethod, seed: u32, passes: u32) -> Vec<Vec<f64>> {
+    let mut pts = CpuPathTracer::new(&PtScene::new(&many_light_box(glossy), &[]).unwrap());
     assert_eq!(pts.light_count(), 128);
     let s = PtSettings { method, error_bound: 0.05, seed, ..PtSettings::default() };
     let mut acc = PtRender::new(32, 32);
@@ -43,7 +44,8 @@ fn mean_var(p: &[Vec<f64>], f: impl Fn(&[f64]) -> f64) -> (f64, f64) {
 
 /// SLC, its reservoir, its weighted picks, power and light-BVH sampling
 /// against uniform light sampling: all estimate the same image (fixed
-/// seeds, 400 passes each).
+/// seeds, 400 passes each), on diffuse surfaces and on glossy ones (where
+/// the BRDF also weighs the lights of slc-weighted and the light BVH).
 /// - Each channel's image mean agrees within 5σ of the difference
 ///   (σ² = σ²_a/n + σ²_b/n from the per-pass sample variances).
 /// - Per pixel (channel mean): RMSE(mean image, uniform's mean image) ≤ 1.5 × the RMSE the
@@ -53,13 +55,22 @@ fn mean_var(p: &[Vec<f64>], f: impl Fn(&[f64]) -> f64) -> (f64, f64) {
 ///   the predicted noise fails.
 #[test]
 fn slc_and_reservoir_match_uniform_in_expectation() {
+    match_uniform_in_expectation(false);
+}
+
+#[test]
+fn methods_match_uniform_in_expectation_on_glossy_surfaces() {
+    match_uniform_in_expectation(true);
+}
+
+fn match_uniform_in_expectation(glossy: bool) {
     // Different seeds: the images must be independent for the bounds.
-    let uniform = pass_images(PtMethod::Uniform, 101, 400);
+    let uniform = pass_images(glossy, PtMethod::Uniform, 101, 400);
     let channel = |c: usize| move |v: &[f64]| v.iter().skip(c).step_by(3).sum::<f64>() / (v.len() / 3) as f64;
     let px = uniform[0].len() / 3;
     let pixel = |p: &[Vec<f64>], i: usize| mean_var(p, |v| v[3 * i..3 * i + 3].iter().sum::<f64>() / 3.0);
     for method in [PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::SlcWeighted, PtMethod::Power, PtMethod::LightBvh] {
-        let images = pass_images(method, 1, 400);
+        let images = pass_images(glossy, method, 1, 400);
         for c in 0..3 {
             let ((m, vm), (mu, vu)) = (mean_var(&images, channel(c)), mean_var(&uniform, channel(c)));
             assert!(mu > 0.0);

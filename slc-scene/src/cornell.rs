@@ -71,11 +71,42 @@ impl Scene {
         }
     }
 
+    /// The built-in Cornell box with glossy surfaces (glTF
+    /// metallic-roughness): a varnished floor (a white dielectric, IOR 1.5,
+    /// roughness 0.3), a polished metal tall block (roughness 0.15), a
+    /// brushed gold short block (roughness 0.4) and a red plastic ball
+    /// (roughness 0.2, radius 8 cm) on the short block; the walls stay
+    /// Lambertian.
+    pub fn cornell_box_glossy() -> Scene {
+        let mut s = Scene::cornell_box();
+        let floor = Material::gltf(Vec3::new(0.725, 0.71, 0.68), 0.0, 0.3);
+        let silver = Material::gltf(Vec3::new(0.95, 0.93, 0.88), 1.0, 0.15);
+        let gold = Material::gltf(Vec3::new(1.0, 0.78, 0.34), 1.0, 0.4);
+        let plastic = Material::gltf(Vec3::new(0.7, 0.08, 0.06), 0.0, 0.2);
+        let base = s.materials.len() as u32;
+        s.materials.extend([floor, silver, gold, plastic]);
+        // Triangles 0–1 are the floor, 10–19 the short block, 20–29 the tall one.
+        for (range, m) in [(0..2, base), (10..20, base + 2), (20..30, base + 1)] {
+            s.material_of[range].iter_mut().for_each(|k| *k = m);
+        }
+        let mut ball = crate::shapes::sphere(3);
+        ball.materials = vec![plastic];
+        s.append(ball, 0.08, Vec3::new(0.185, 0.165 + 0.08, 0.169));
+        s.name = "cornell-glossy".into();
+        s
+    }
+
     /// The built-in Cornell box with its ceiling light split into `n × n`
     /// quads (`2n²` triangle lights, same total emission): a small many-light
     /// scene for tests of light selection.
     pub fn cornell_box_split_light(n: u32) -> Scene {
-        let mut s = Scene::cornell_box();
+        Scene::cornell_box().split_light(n)
+    }
+
+    /// This scene with its first emissive quad (two triangles: the Cornell
+    /// box's ceiling light) split into `n × n` quads of the same emission.
+    pub fn split_light(mut self, n: u32) -> Scene {
+        let s = &mut self;
         let light = s.material_of.iter().position(|&m| s.materials[m as usize].emission.max_element() > 0.0).expect("the box has a light");
         let [a, b, _] = s.triangles[light];
         let c = s.triangles[light + 1][2];
@@ -83,6 +114,10 @@ impl Scene {
         let m = s.material_of[light];
         s.triangles.drain(light..light + 2);
         s.material_of.drain(light..light + 2);
+        let flat = !s.normals.is_empty();
+        if flat {
+            s.normals.drain(light..light + 2);
+        }
         let (e1, e2) = (b - a, c - a);
         let n = n.max(1);
         for i in 0..n {
@@ -92,8 +127,12 @@ impl Scene {
                 s.triangles.push([p00, p10, p11]);
                 s.triangles.push([p00, p11, p01]);
                 s.material_of.extend([m, m]);
+                if flat {
+                    let g = slc_core::ray::triangle_normal(p00, p10, p11);
+                    s.normals.extend([[g; 3], [g; 3]]);
+                }
             }
         }
-        s
+        self
     }
 }

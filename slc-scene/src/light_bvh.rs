@@ -14,6 +14,7 @@
 //! per axis, one light per leaf, in preorder.
 
 use glam::Vec3;
+use slc_core::importance::Receiver;
 #[cfg(doc)]
 use slc_core::importance::light_importance;
 use slc_core::importance::{LightCone, safe_sqrt};
@@ -197,18 +198,18 @@ impl LightBvh {
         &self.leaf_of_light
     }
 
-    /// Samples one light for shading point `p` with normal `n` and uniform
-    /// `u ∈ [0, 1)`: `(light, pmf)`, or `None` where every light has zero
-    /// importance ([`light_bvh_sample`], the walk the GPU takes).
-    pub fn sample(&self, p: Vec3, n: Vec3, u: f32) -> Option<(usize, f32)> {
-        let pick = light_bvh_sample(&self.nodes, p, n, u);
+    /// Samples one light for the receiver `rc` and uniform `u ∈ [0, 1)`:
+    /// `(light, pmf)`, or `None` where every light has zero importance
+    /// ([`light_bvh_sample`], the walk the GPU takes).
+    pub fn sample(&self, rc: &Receiver, u: f32) -> Option<(usize, f32)> {
+        let pick = light_bvh_sample(&self.nodes, rc.p, rc.n, rc.r, rc.lobe, u);
         (pick.pmf > 0.0).then_some((pick.light as usize, pick.pmf))
     }
 
-    /// Probability that [`LightBvh::sample`] at `(p, n)` picks `light`
+    /// Probability that [`LightBvh::sample`] for `rc` picks `light`
     /// ([`light_bvh_pmf`]).
-    pub fn pmf(&self, p: Vec3, n: Vec3, light: usize) -> f32 {
-        self.leaf_of_light.get(light).map_or(0.0, |&leaf| light_bvh_pmf(&self.nodes, leaf, p, n))
+    pub fn pmf(&self, rc: &Receiver, light: usize) -> f32 {
+        self.leaf_of_light.get(light).map_or(0.0, |&leaf| light_bvh_pmf(&self.nodes, leaf, rc.p, rc.n, rc.r, rc.lobe))
     }
 }
 
@@ -285,24 +286,31 @@ mod tests {
     /// sampling fails (a node whose children both have zero importance,
     /// which only holds lights that cannot reach the point); and every light
     /// that does reach the point has pmf > 0 (the bounds are conservative).
+    /// For Lambertian receivers and for a glossy metal's, whose lobe weighs
+    /// the nodes.
     #[test]
     fn pmf_matches_sampling_and_covers_every_contributing_light() {
         let ls = lights();
         let bvh = LightBvh::new(&ls, &cones(&ls));
-        for (p, n) in [
-            (Vec3::splat(2.0), Vec3::Y),
-            (Vec3::new(-1.0, 0.5, 3.0), Vec3::X),
-            (Vec3::splat(2.0), Vec3::ZERO),
-            (Vec3::new(2.0, 5.0, 2.0), Vec3::NEG_Y),
+        let metal = crate::scene::Material::gltf(Vec3::splat(0.9), 1.0, 0.3);
+        let view = Vec3::new(0.3, 0.9, 0.2).normalize();
+        for rc in [
+            Receiver::lambertian(Vec3::splat(2.0), Vec3::Y),
+            Receiver::lambertian(Vec3::new(-1.0, 0.5, 3.0), Vec3::X),
+            Receiver::lambertian(Vec3::splat(2.0), Vec3::ZERO),
+            Receiver::lambertian(Vec3::new(2.0, 5.0, 2.0), Vec3::NEG_Y),
+            metal.receiver(Vec3::splat(2.0), Vec3::Y, view),
+            metal.receiver(Vec3::new(2.0, 5.0, 2.0), Vec3::NEG_Y, -view),
         ] {
-            let pmfs: Vec<f32> = (0..ls.len()).map(|l| bvh.pmf(p, n, l)).collect();
+            let (p, n) = (rc.p, rc.n);
+            let pmfs: Vec<f32> = (0..ls.len()).map(|l| bvh.pmf(&rc, l)).collect();
             let total: f64 = pmfs.iter().map(|&x| x as f64).sum();
             assert!(total <= 1.0 + 1e-4 && total > 0.1, "Σ pmf = {total}");
             let m = 200_000;
             let mut count = vec![0u32; ls.len()];
             let mut failed = 0;
             for k in 0..m {
-                let Some((l, pmf)) = bvh.sample(p, n, (k as f32 + 0.5) / m as f32) else {
+                let Some((l, pmf)) = bvh.sample(&rc, (k as f32 + 0.5) / m as f32) else {
                     failed += 1;
                     continue;
                 };
@@ -352,8 +360,8 @@ mod tests {
         // 4,096 coincident point lights: no axis splits, so halves.
         let ls: Vec<Light> = (0..4096).map(|_| Light::Point(PointLight::new(Vec3::ONE, Vec3::ONE).unwrap())).collect();
         let bvh = LightBvh::new(&ls, &cones(&ls));
-        let total: f32 = (0..ls.len()).map(|l| bvh.pmf(Vec3::ZERO, Vec3::ZERO, l)).sum();
+        let total: f32 = (0..ls.len()).map(|l| bvh.pmf(&Receiver::lambertian(Vec3::ZERO, Vec3::ZERO), l)).sum();
         assert!((total - 1.0).abs() < 1e-3);
-        assert!((bvh.pmf(Vec3::ZERO, Vec3::ZERO, 7) - 1.0 / 4096.0).abs() < 1e-7);
+        assert!((bvh.pmf(&Receiver::lambertian(Vec3::ZERO, Vec3::ZERO), 7) - 1.0 / 4096.0).abs() < 1e-7);
     }
 }

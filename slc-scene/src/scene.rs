@@ -5,6 +5,7 @@
 
 use crate::SceneError;
 use glam::Vec3;
+use slc_core::importance::Receiver;
 use slc_core::light::SpotLight;
 
 /// A glTF 2.0 metallic-roughness material with emission, as
@@ -67,10 +68,15 @@ impl Material {
         slc_core::brdf::brdf_eval(self.albedo, self.metallic, self.f0, self.f90, self.alpha(), n, v, l)
     }
 
-    /// Probability that BSDF sampling seen at `n·v` draws the specular lobe
-    /// ([`slc_core::brdf::specular_probability`]).
-    pub fn specular_probability(&self, n_v: f32) -> f32 {
-        slc_core::brdf::specular_probability(self.albedo, self.metallic, self.f0, self.f90, n_v)
+    /// The lobes seen at `n·v` ([`slc_core::brdf::receiver_lobe`]).
+    pub fn lobe(&self, n_v: f32) -> glam::Vec4 {
+        slc_core::brdf::receiver_lobe(self.albedo, self.metallic, self.f0, self.f90, self.alpha(), n_v)
+    }
+
+    /// The receiver at `p` with unit shading normal `n` seen from the unit
+    /// direction `v` (toward the viewer), as light selection weighs it.
+    pub fn receiver(&self, p: Vec3, n: Vec3, v: Vec3) -> Receiver {
+        Receiver { p, n, r: slc_core::brdf::mirror_dir(n, v), lobe: self.lobe(n.dot(v)) }
     }
 
     /// Checks every field's range; `i` names the material in the error.

@@ -11,7 +11,7 @@
 //! fov = 39.3                       # vertical, degrees; `up` defaults to +y
 //!
 //! [[geometry]]
-//! builtin = "cornell"              # or "sphere" (unit, smooth); or obj = "room.obj", or gltf = "room.glb"
+//! builtin = "cornell"              # or "cornell-glossy", "sphere" (unit, smooth); or obj = "room.obj", or gltf = "room.glb"
 //! scale = 1.0
 //! translate = [0, 0, 0]
 //! emission_scale = 1.0             # 0 switches this geometry's emitters off
@@ -414,8 +414,9 @@ impl SceneFile {
             }
             let mut part = match (&g.builtin, &g.obj, &g.gltf) {
                 (Some(b), None, None) if b == "cornell" => Scene::cornell_box(),
+                (Some(b), None, None) if b == "cornell-glossy" => Scene::cornell_box_glossy(),
                 (Some(b), None, None) if b == "sphere" => crate::shapes::sphere(4),
-                (Some(b), None, None) => return Err(bad(format!("geometry {i}: unknown builtin '{b}' (known: cornell, sphere)"))),
+                (Some(b), None, None) => return Err(bad(format!("geometry {i}: unknown builtin '{b}' (known: cornell, cornell-glossy, sphere)"))),
                 (None, Some(p), None) => Scene::load_obj(&dir.join(p))?,
                 (None, None, Some(p)) => {
                     let g = GltfScene::load(&dir.join(p))?;
@@ -477,7 +478,7 @@ impl SceneFile {
         }
         if let Some(c) = f.camera {
             scene.camera = Camera { position: v3(c.position), target: v3(c.look_at), up: v3(c.up), vfov_deg: c.fov };
-        } else if !f.geometry.iter().any(|g| g.builtin.as_deref() == Some("cornell")) {
+        } else if !f.geometry.iter().any(|g| matches!(g.builtin.as_deref(), Some("cornell" | "cornell-glossy"))) {
             // No camera: frame the bounds (built-in geometry keeps its own,
             // the published Cornell camera set above).
             let primary = scene.primary;
@@ -505,7 +506,7 @@ impl SceneFile {
                 }
             }
             Some(l) => return Err(bad(format!("[primary]: type \"{}\" is not \"spot\" or \"directional\"", l.kind))),
-            None if f.geometry.iter().any(|g| g.builtin.as_deref() == Some("cornell")) => {}
+            None if f.geometry.iter().any(|g| matches!(g.builtin.as_deref(), Some("cornell" | "cornell-glossy"))) => {}
             None => {
                 let camera = scene.camera;
                 scene.frame_default_view();

@@ -102,7 +102,7 @@ slc_core::shared! {
     /// [`GpuTriangle::light`] of a triangle that does not emit.
     pub const NO_LIGHT: u32 = 4294967295;
 
-    /// A path vertex waiting for its explicit light connection, 48 bytes.
+    /// A path vertex waiting for its explicit light connection, 80 bytes.
     pub struct GpuPathVertex {
         /// Position.
         pub position: vec3f,
@@ -110,9 +110,10 @@ slc_core::shared! {
         pub alive: u32,
         /// Unit shading normal.
         pub normal: vec3f,
-        /// Padding.
-        pub pad: f32,
-        /// Path throughput times the diffuse BRDF `ρ/π`.
+        /// Material index (into the materials buffer).
+        pub material: u32,
+        /// Path throughput up to this vertex (the BRDF is evaluated per
+        /// connection).
         pub weight: vec3f,
         /// Padding.
         pub pad1: f32,
@@ -121,9 +122,13 @@ slc_core::shared! {
         pub gnormal: vec3f,
         /// Padding.
         pub pad2: f32,
+        /// Unit direction back along the path (toward the previous vertex).
+        pub wo: vec3f,
+        /// Padding.
+        pub pad3: f32,
     }
 
-    /// Per-pixel state of a path between `pt_extend` dispatches, 64 bytes.
+    /// Per-pixel state of a path between `pt_extend` dispatches, 96 bytes.
     pub struct GpuPathState {
         /// Origin of the next ray.
         pub origin: vec3f,
@@ -146,6 +151,12 @@ slc_core::shared! {
         pub prev_normal: vec3f,
         /// Padding.
         pub pad2: u32,
+        /// Mirror direction of the view at `prev` (a glossy lobe's weights).
+        pub prev_r: vec3f,
+        /// Padding.
+        pub pad3: u32,
+        /// The BRDF lobe at `prev` (`slc_core::brdf::receiver_lobe`).
+        pub prev_lobe: vec4f,
     }
 
     /// Uniforms of `pt_extend`: camera, image, pass and depth.
@@ -313,16 +324,21 @@ slc_core::shared! {
         pub pad1: u32,
     }
 
-    /// A diffuse material of the VPL frame, 32 bytes.
+    /// A material as the VPL frame's and the path tracer's kernels read it
+    /// (`slc_scene::scene::Material`, glTF metallic-roughness), 48 bytes.
     pub struct GpuMaterial {
-        /// Albedo ρ.
+        /// Base colour (a dielectric's albedo, a metal's `F0`).
         pub albedo: vec3f,
-        /// Padding.
-        pub pad0: u32,
+        /// Metallic factor.
+        pub metallic: f32,
         /// Emitted radiance.
         pub emission: vec3f,
-        /// Padding.
-        pub pad1: u32,
+        /// GGX `α` (`slc_core::brdf::ggx_alpha` of the roughness).
+        pub alpha: f32,
+        /// The dielectric's Fresnel reflectance at normal incidence.
+        pub f0: vec3f,
+        /// The dielectric's Fresnel reflectance at grazing incidence.
+        pub f90: f32,
     }
 
     /// The primary light's map (RSM and shadow map) for `scene_raster` and
@@ -379,6 +395,15 @@ slc_core::shared! {
 }
 
 /// The importance cones as the kernels read them, each with its light's
+impl GpuMaterial {
+    /// A glTF metallic-roughness material as the kernels read it: base
+    /// colour, emission, metallic, perceptual roughness (stored as GGX `α`,
+    /// `slc_core::brdf::ggx_alpha`), and the dielectric's `F0`/`F90`.
+    pub fn new(albedo: vec3f, emission: vec3f, metallic: f32, roughness: f32, f0: vec3f, f90: f32) -> GpuMaterial {
+        GpuMaterial { albedo, metallic, emission, alpha: slc_core::brdf::ggx_alpha(roughness), f0, f90 }
+    }
+}
+
 /// leaf in the light BVH (`bvh_leaf[i]`; missing entries: none).
 pub fn pack_cones(cones: &[slc_core::importance::LightCone], bvh_leaf: &[u32]) -> Vec<GpuLightCone> {
     cones

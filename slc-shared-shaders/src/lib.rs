@@ -87,15 +87,16 @@
 //! **`pt_connect`** (1-D): explicit light connection of a path tracer with
 //! MIS; bindings 0.0, 0.2–0.7 as `bsh_reservoir` shifted by one, plus
 //! `0.1 vertices: array<GpuPathVertex>` (host or bounce kernel),
-//! `0.8 radiance: array<vec4f>` (accumulated, read_write) and
-//! `0.9 candidates: array<u32>` (in-range lights per vertex, for the MIS
-//! weight of implicit hits via `light_pdf`).
+//! `0.8 materials: array<GpuMaterial>` (host), `0.9 radiance:
+//! array<vec4f>` (accumulated, read_write) and `0.10 candidates:
+//! array<u32>` (in-range lights per vertex, for the MIS weight of implicit
+//! hits via `light_pdf`).
 //!
 //! **`pt_extend`** (1-D, one dispatch per bounce, `depth` in `PtParams`):
 //! per pixel, the camera ray (depth 0) or the ray sampled at the previous
 //! vertex; closest hit; emission weighted by MIS against the light strategy
 //! (whose pdf uses the previous vertex's `candidates`); the vertex for
-//! `pt_connect`; the next cosine-sampled ray and Russian roulette.
+//! `pt_connect`; the next BSDF-sampled ray and Russian roulette.
 //!
 //! | group.binding | type | written by |
 //! |---|---|---|
@@ -106,7 +107,7 @@
 //! | 0.4 | `storage<read> light_leaf: array<u32>` (BSH leaf of each light) | host |
 //! | 0.5 | `storage<read> geo_nodes: array<GpuGeoNode>` | host |
 //! | 0.6 | `storage<read> geo_tris: array<GpuTriangle>` (material, light) | host |
-//! | 0.7 | `storage<read> albedo: array<vec4f>` (per material) | host |
+//! | 0.7 | `storage<read> materials: array<GpuMaterial>` | host |
 //! | 0.8 | `storage<read> candidates: array<u32>` | `pt_connect` |
 //! | 0.9 | `storage<read_write> paths: array<GpuPathState>` | this kernel |
 //! | 0.10 | `storage<read_write> vertices: array<GpuPathVertex>` | this kernel |

@@ -241,8 +241,7 @@ impl<'a> GpuVplFrame<'a> {
             contents: bytemuck::cast_slice(&verts),
             usage: wgpu::BufferUsages::VERTEX,
         });
-        let mats: Vec<GpuMaterial> =
-            scene.materials.iter().map(|m| GpuMaterial { albedo: m.albedo, pad0: 0, emission: m.emission, pad1: 0 }).collect();
+        let mats: Vec<GpuMaterial> = scene.materials.iter().map(crate::pt::gpu_material).collect();
         let materials = storage(gpu, "slc frame materials", bytemuck::cast_slice(&mats), wgpu::BufferUsages::empty());
 
         // The camera's and the light's raster parameters.

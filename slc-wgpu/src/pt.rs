@@ -30,7 +30,8 @@ use slc_core::range::RangeParams;
 use slc_core::ray::{ray_t_min, surface_offset};
 use slc_scene::backend::{PathTracer, Timing};
 use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K, WEIGHTED_K};
-use slc_shared_shaders::layout::{GpuGeoNode, GpuPathState, GpuPathVertex, GpuTriangle, NO_LIGHT, PtParams, ShadeParams};
+use slc_scene::scene::Material;
+use slc_shared_shaders::layout::{GpuGeoNode, GpuMaterial, GpuPathState, GpuPathVertex, GpuTriangle, NO_LIGHT, PtParams, ShadeParams};
 use slc_shared_shaders::{Features, Heuristic, Kernel, Selection, generate};
 use std::time::{Duration, Instant};
 
@@ -84,6 +85,11 @@ fn geometry(pts: &PtScene) -> (Vec<GpuGeoNode>, Vec<GpuTriangle>, Vec<[f32; 4]>,
     (nodes, gpu_tris, normals, depth)
 }
 
+/// A scene material as the kernels read it.
+pub(crate) fn gpu_material(m: &Material) -> GpuMaterial {
+    GpuMaterial::new(m.albedo, m.emission, m.metallic, m.roughness, m.f0, m.f90)
+}
+
 /// The kernels' light selection for `method`, and its `k`.
 fn selection(method: PtMethod) -> (Selection, usize) {
     match method {
@@ -132,8 +138,8 @@ impl<'a> GpuPt<'a> {
         let max_binding = lim.max_storage_buffer_binding_size;
         gpu.require("max_storage_buffer_binding_size (geometry)", geo_tris.len() as u64 * 48, max_binding)?;
         gpu.require("max_storage_buffer_binding_size (path states)", pixels * std::mem::size_of::<GpuPathState>() as u64, max_binding)?;
-        // pt_extend: 12 in group 0; the IES, power and cone tables and the
-        // light BVH in group 1.
+        // pt_extend: 12 in group 0 (pt_connect: 10); the IES, power and
+        // cone tables and the light BVH in group 1.
         gpu.require("max_storage_buffers_per_shader_stage", 16, lim.max_storage_buffers_per_shader_stage as u64)?;
         gpu.require("max_storage_buffer_binding_size (vertex normals)", geo_tris.len() as u64 * 48, max_binding)?;
         gpu.require("max_compute_workgroups_per_dimension (pixels)", pixels.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
@@ -145,8 +151,8 @@ impl<'a> GpuPt<'a> {
         let geo_nodes_buf = s("geo nodes", bytemuck::cast_slice(&geo_nodes));
         let geo_tris_buf = s("geo tris", bytemuck::cast_slice(&geo_tris));
         let geo_normals_buf = s("geo normals", bytemuck::cast_slice(&geo_normals));
-        let albedo: Vec<[f32; 4]> = pts.scene().materials.iter().map(|m| [m.albedo.x, m.albedo.y, m.albedo.z, 0.0]).collect();
-        let albedo_buf = s("albedo", bytemuck::cast_slice(&albedo));
+        let materials: Vec<GpuMaterial> = pts.scene().materials.iter().map(gpu_material).collect();
+        let materials_buf = s("materials", bytemuck::cast_slice(&materials));
         let rw = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::COPY_SRC;
         let candidates = zeroed(gpu, "candidates", pixels * 4, rw);
         let paths = zeroed(gpu, "paths", pixels * std::mem::size_of::<GpuPathState>() as u64, rw);
@@ -181,7 +187,7 @@ impl<'a> GpuPt<'a> {
                 &set.leaf,
                 &geo_nodes_buf,
                 &geo_tris_buf,
-                &albedo_buf,
+                &materials_buf,
                 &geo_normals_buf,
                 &candidates,
                 &paths,
@@ -192,9 +198,21 @@ impl<'a> GpuPt<'a> {
         )?;
         let connect = kernel(
             Kernel::PtConnect,
-            7,
+            8,
             2,
-            &[&shade_params.buffer, &vertices, &set.lights, &set.rt2, &set.r2, &set.bsh, &geo_nodes_buf, &geo_tris_buf, &radiance, &candidates],
+            &[
+                &shade_params.buffer,
+                &vertices,
+                &set.lights,
+                &set.rt2,
+                &set.r2,
+                &set.bsh,
+                &geo_nodes_buf,
+                &geo_tris_buf,
+                &materials_buf,
+                &radiance,
+                &candidates,
+            ],
             shade_params.size,
         )?;
         let cam = &pts.scene().camera;

@@ -33,8 +33,10 @@ const H: u32 = 16;
 /// The Cornell box with its ceiling light split into 4×4 quads (32
 /// triangle lights), plus a point, a spot and an IES light: every light
 /// type of the path tracer, with more lights in range than reservoir slots.
-fn scene(extra_intensity: f32) -> (Scene, Vec<Light>) {
-    let s = Scene::cornell_box_split_light(4);
+/// Diffuse, or with [`Scene::cornell_box_glossy`]'s GGX floor, blocks and
+/// ball.
+fn scene(extra_intensity: f32, glossy: bool) -> (Scene, Vec<Light>) {
+    let s = if glossy { Scene::cornell_box_glossy().split_light(4) } else { Scene::cornell_box_split_light(4) };
     let mut lights = vec![
         Light::Point(PointLight::new(Vec3::new(0.15, 0.45, 0.2), Vec3::splat(0.01 * extra_intensity)).unwrap()),
         Light::Spot(SpotLight::new(Vec3::new(0.4, 0.5, 0.4), Vec3::NEG_Y, Vec3::new(0.05, 0.03, 0.01) * extra_intensity, 0.3, 0.6).unwrap()),
@@ -104,9 +106,9 @@ fn all_finite(p: &[Vec<f64>]) -> bool {
 
 /// Per-pass statistics of `method` on the GPU and on the CPU (same seed),
 /// and of the CPU's unculled `uniform` estimator (its own seed).
-fn run(method: PtMethod, eps: f32, intensity: f32, n: u32) -> Option<(Stats, Stats, Stats)> {
+fn run(method: PtMethod, eps: f32, intensity: f32, glossy: bool, n: u32) -> Option<(Stats, Stats, Stats)> {
     let g = gpu()?;
-    let (s, lights) = scene(intensity);
+    let (s, lights) = scene(intensity, glossy);
     let scene = PtScene::new(&s, &lights).unwrap();
     let gpt = GpuPt::new(g, &scene, W, H).unwrap();
     let mut pts = CpuPathTracer::new(&scene);
@@ -124,8 +126,18 @@ fn run(method: PtMethod, eps: f32, intensity: f32, n: u32) -> Option<(Stats, Sta
 /// images within the variance bound, and the same mean as the CPU's
 /// unculled estimator.
 fn gpu_path_tracer_matches_cpu_and_unculled_in_expectation() {
+    matches_cpu_and_unculled(false);
+}
+
+/// The same on glossy surfaces (GGX BRDF, bounded-VNDF sampling, lobe-aware
+/// light weights): every method.
+fn gpu_path_tracer_matches_cpu_on_glossy_surfaces() {
+    matches_cpu_and_unculled(true);
+}
+
+fn matches_cpu_and_unculled(glossy: bool) {
     for method in PtMethod::ALL {
-        let Some((g, c, u)) = run(method, 0.05, 1.0, 400) else { return };
+        let Some((g, c, u)) = run(method, 0.05, 1.0, glossy, 400) else { return };
         let name = method.name();
         assert!(g.image_mean.iter().all(|&m| m > 0.0));
         assert_means_agree(&format!("GPU vs CPU {name}"), &g, &c);
@@ -142,7 +154,7 @@ fn gpu_path_tracer_matches_cpu_and_unculled_in_expectation() {
 /// subnormal intensities: finite, non-negative, and the same mean as the CPU.
 fn gpu_path_tracer_hard_cases() {
     for (eps, intensity) in [(1e-30f32, 1.0f32), (1e30, 1.0), (0.05, 1e36), (0.05, 1e-40)] {
-        let Some((g, c, _)) = run(PtMethod::SlcReservoir, eps, intensity, 40) else { return };
+        let Some((g, c, _)) = run(PtMethod::SlcReservoir, eps, intensity, false, 40) else { return };
         assert!(g.image_mean.iter().all(|m| m.is_finite()));
         assert_means_agree(&format!("ε = {eps:e}, intensity ×{intensity:e}"), &g, &c);
     }
@@ -152,7 +164,7 @@ fn gpu_path_tracer_hard_cases() {
 /// typed errors on the GPU.
 fn gpu_path_tracer_rejects_bad_settings() {
     let Some(g) = gpu() else { return };
-    let (s, lights) = scene(1.0);
+    let (s, lights) = scene(1.0, false);
     let pts = PtScene::new(&s, &lights).unwrap();
     let gpt = GpuPt::new(g, &pts, W, H).unwrap();
     let ok = PtSettings { method: PtMethod::SlcReservoir, ..PtSettings::default() };
@@ -163,6 +175,7 @@ fn gpu_path_tracer_rejects_bad_settings() {
 
 slc_tests::harness!(
     Gpu: gpu_path_tracer_matches_cpu_and_unculled_in_expectation,
+    Gpu: gpu_path_tracer_matches_cpu_on_glossy_surfaces,
     Gpu: gpu_path_tracer_hard_cases,
     Gpu: gpu_path_tracer_rejects_bad_settings,
 );

@@ -39,10 +39,12 @@ use glam::Vec3;
 use rand_core::RngCore;
 use rand_pcg::Pcg32;
 use rayon::prelude::*;
+use slc_core::brdf::{bsdf_pdf, bsdf_sample, specular_probability};
 use slc_core::bsh::Bsh;
+use slc_core::importance::Receiver;
 use slc_core::importance::weighted_select_pdf;
 use slc_core::light::{Light, connection_cosine, connection_factor};
-use slc_core::mis::{cosine_direction, cosine_pdf, lambert_brdf, light_strategy_pdf, mis_power};
+use slc_core::mis::{light_strategy_pdf, mis_power};
 use slc_core::path::{camera_dir, continues_path, jittered_pixel, path_survival, plays_roulette, sees_emission};
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::ray::{face_against, ray_t_min, surface_offset};
@@ -52,6 +54,7 @@ use slc_core::xi::{xi_for, xi_from_bits};
 use slc_scene::RenderError;
 use slc_scene::backend::{PathTracer, Timing};
 use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K, WEIGHTED_K};
+use slc_scene::scene::Material;
 use std::time::Instant;
 
 /// The CPU path tracer over a [`PtScene`]: the scene's geometry in a BVH,
@@ -149,10 +152,11 @@ impl CpuPathTracer {
     /// plus this one (`seen` counts in-range lights at `x`; `in_nee` says
     /// the light is known to be one of them). The weighted picks select with
     /// `k·w/(W₋ⱼ + w)`, `W₋ⱼ` the weight of the others (`W` from `nee`).
-    /// `n` is the normal at `x` (importance uses it).
+    /// `rc` is the receiver at `x` (its normal and lobe weigh the lights).
     #[allow(clippy::too_many_arguments)]
-    fn light_pdf(&self, s: &PtSettings, st: &Pass, l: usize, x: Vec3, n: Vec3, y: Vec3, nee: NeeState, in_nee: bool) -> f32 {
+    fn light_pdf(&self, s: &PtSettings, st: &Pass, l: usize, rc: &Receiver, y: Vec3, nee: NeeState, in_nee: bool) -> f32 {
         let Light::Triangle(t) = &self.lights()[l] else { return 0.0 };
+        let x = rc.p;
         let v = x - y;
         let d2 = v.length_squared();
         let cos_y = if d2 > 0.0 { t.normal().dot(v / d2.sqrt()) } else { 0.0 };
@@ -161,35 +165,24 @@ impl CpuPathTracer {
             PtMethod::Slc => (1.0, st.rt2[l]),
             PtMethod::SlcReservoir => (reservoir_select_pdf(nee.seen, in_nee || st.spheres[l].contains(x), RESERVOIR_K as u32), st.rt2[l]),
             PtMethod::SlcWeighted => {
-                let w = self.pts.light_set().cones()[l].weight(x, n, st.rt2[l]);
+                let w = self.pts.light_set().cones()[l].weight(rc, st.rt2[l]);
                 (weighted_select_pdf(w, nee.w_sum, in_nee || st.spheres[l].contains(x), WEIGHTED_K as u32), st.rt2[l])
             }
             PtMethod::Uniform => (1.0 / self.lights().len() as f32, f32::INFINITY),
             PtMethod::Power => (self.pts.light_set().alias().pdf(l) as f32, f32::INFINITY),
-            PtMethod::LightBvh => (self.pts.light_bvh().pmf(x, n, l), f32::INFINITY),
+            PtMethod::LightBvh => (self.pts.light_bvh().pmf(rc, l), f32::INFINITY),
         };
         light_strategy_pdf(select, rt2, d2, t.area(), cos_y)
     }
 
-    /// Contribution of light `l` at `x` (shading normal `n`, geometric
-    /// normal `ng` on the same side, albedo `rho`) through a
-    /// sampled point, weighted by `extra` (the reservoir weight, or 1/the
-    /// selection probability of the one-light methods) and, when `rr`, by
-    /// the RR weight `1/p`, with the MIS weight against BSDF sampling for
-    /// area lights.
+    /// Contribution of light `l` at the vertex `vx` (its BRDF seen from
+    /// `wo`) through a sampled point, weighted by `extra` (the reservoir
+    /// weight, or 1/the selection probability of the one-light methods)
+    /// and, when `rr`, by the RR weight `1/p`, with the MIS weight against
+    /// BSDF sampling for area lights.
     #[allow(clippy::too_many_arguments)]
-    fn connect(
-        &self,
-        s: &PtSettings,
-        st: &Pass,
-        l: usize,
-        (x, n, ng): (Vec3, Vec3, Vec3),
-        rho: Vec3,
-        rng: &mut Pcg32,
-        nee: NeeState,
-        rr: bool,
-        extra: f32,
-    ) -> Option<Vec3> {
+    fn connect(&self, s: &PtSettings, st: &Pass, l: usize, vx: &Vertex, rng: &mut Pcg32, nee: NeeState, rr: bool, extra: f32) -> Option<Vec3> {
+        let (x, n, ng) = (vx.rc.p, vx.rc.n, vx.ng);
         let light = &self.lights()[l];
         let (u1, u2) = (xi_from_bits(rng.next_u32()), xi_from_bits(rng.next_u32()));
         let y = match light {
@@ -214,16 +207,18 @@ impl CpuPathTracer {
         }
         // The baselines cull nothing: r_t² = +∞ makes 1/p = 1.
         let rt2 = if rr { st.rt2[l] } else { f32::INFINITY };
+        let to_light = -wdir;
         let mis = match light {
-            Light::Triangle(_) => mis_power(self.light_pdf(s, st, l, x, n, y, nee, true), cosine_pdf(cos_x)),
+            Light::Triangle(_) => mis_power(self.light_pdf(s, st, l, &vx.rc, y, nee, true), vx.bsdf_pdf(to_light)),
             _ => 1.0,
         };
-        Some(lambert_brdf(rho) * i * connection_factor(cos_x, d2, rt2, extra * mis))
+        Some(vx.mat.eval(n, vx.wo, to_light) * i * connection_factor(cos_x, d2, rt2, extra * mis))
     }
 
-    /// Next-event estimate at `x`; returns the radiance and what MIS at the
-    /// next hit needs of it.
-    fn nee(&self, s: &PtSettings, st: &Pass, (x, n, ng): (Vec3, Vec3, Vec3), rho: Vec3, rng: &mut Pcg32) -> (Vec3, NeeState) {
+    /// Next-event estimate at the vertex `vx`; returns the radiance and
+    /// what MIS at the next hit needs of it.
+    fn nee(&self, s: &PtSettings, st: &Pass, vx: &Vertex, rng: &mut Pcg32) -> (Vec3, NeeState) {
+        let x = vx.rc.p;
         let mut sum = Vec3::ZERO;
         match s.method {
             PtMethod::Slc => {
@@ -231,7 +226,7 @@ impl CpuPathTracer {
                 self.bsh.for_each_containing(x, |l| cand.push(l));
                 let nee = NeeState { seen: cand.len() as u32, w_sum: 0.0 };
                 for l in cand {
-                    if let Some(c) = self.connect(s, st, l as usize, (x, n, ng), rho, rng, nee, true, 1.0) {
+                    if let Some(c) = self.connect(s, st, l as usize, vx, rng, nee, true, 1.0) {
                         sum += c;
                     }
                 }
@@ -242,17 +237,17 @@ impl CpuPathTracer {
                 self.bsh.for_each_containing(x, |l| res.push(l, rng.next_u32(), rng.next_u32()));
                 let (nee, w) = (NeeState { seen: res.seen(), w_sum: 0.0 }, res.weight());
                 for &l in res.picks() {
-                    if let Some(c) = self.connect(s, st, l as usize, (x, n, ng), rho, rng, nee, true, w) {
+                    if let Some(c) = self.connect(s, st, l as usize, vx, rng, nee, true, w) {
                         sum += c;
                     }
                 }
                 (sum, nee)
             }
             PtMethod::SlcWeighted => {
-                let (res, seen) = self.weighted_picks(st, x, n, rng);
+                let (res, seen) = self.weighted_picks(st, &vx.rc, rng);
                 let nee = NeeState { seen, w_sum: res.total_weight() };
                 for (l, w) in res.picks() {
-                    if let Some(c) = self.connect(s, st, l as usize, (x, n, ng), rho, rng, nee, true, w) {
+                    if let Some(c) = self.connect(s, st, l as usize, vx, rng, nee, true, w) {
                         sum += c;
                     }
                 }
@@ -270,10 +265,10 @@ impl CpuPathTracer {
                         let l = alias.sample(u, xi_from_bits(rng.next_u32()));
                         Some((l, alias.pdf(l) as f32))
                     }
-                    _ => self.pts.light_bvh().sample(x, n, u),
+                    _ => self.pts.light_bvh().sample(&vx.rc, u),
                 };
                 if let Some((l, select)) = picked.filter(|&(_, p)| p > 0.0)
-                    && let Some(c) = self.connect(s, st, l, (x, n, ng), rho, rng, NeeState::default(), false, 1.0 / select)
+                    && let Some(c) = self.connect(s, st, l, vx, rng, NeeState::default(), false, 1.0 / select)
                 {
                     sum += c;
                 }
@@ -283,17 +278,17 @@ impl CpuPathTracer {
         }
     }
 
-    /// `slc-weighted`'s traversal at `x` (normal `n`): every in-range
+    /// `slc-weighted`'s traversal for the receiver `rc`: every in-range
     /// candidate offered to [`WEIGHTED_K`] one-slot weighted reservoirs
     /// with its weight ([`slc_core::importance::LightCone::weight`]); also
     /// the number of candidates.
-    fn weighted_picks(&self, st: &Pass, x: Vec3, n: Vec3, rng: &mut Pcg32) -> (WeightedReservoir<WEIGHTED_K>, u32) {
+    fn weighted_picks(&self, st: &Pass, rc: &Receiver, rng: &mut Pcg32) -> (WeightedReservoir<WEIGHTED_K>, u32) {
         let mut res = WeightedReservoir::<WEIGHTED_K>::new();
         let cones = self.pts.light_set().cones();
         let mut seen = 0;
-        self.bsh.for_each_containing(x, |l| {
+        self.bsh.for_each_containing(rc.p, |l| {
             seen += 1;
-            let w = cones[l as usize].weight(x, n, st.rt2[l as usize]);
+            let w = cones[l as usize].weight(rc, st.rt2[l as usize]);
             // Zero weight: never picked (and its MIS pdf is 0), so no draws.
             if w > 0.0 {
                 let u = [(); WEIGHTED_K].map(|_| xi_from_bits(rng.next_u32()));
@@ -315,8 +310,9 @@ impl CpuPathTracer {
         let mut beta = Vec3::ONE;
         let mut radiance = Vec3::ZERO;
         let diag = self.diag;
-        // Previous vertex for MIS at implicit hits: (x, n, its NEE, bsdf pdf).
-        let mut prev: Option<(Vec3, Vec3, NeeState, f32)> = None;
+        // Previous vertex for MIS at implicit hits: its receiver, its NEE,
+        // the pdf of the BSDF sample that left it.
+        let mut prev: Option<(Receiver, NeeState, f32)> = None;
         for depth in 0..s.max_depth {
             let Some(hit) = self.geo.intersect(org, dir, ray_t_min(diag), f32::INFINITY) else { break };
             let x = org + dir * hit.t;
@@ -329,25 +325,32 @@ impl CpuPathTracer {
             let l = self.pts.light_of_triangle()[tri];
             if l != u32::MAX && sees_emission(geo_n, dir) {
                 let le = mat.emission;
-                match prev {
+                match &prev {
                     None => radiance += beta * le,
-                    Some((xp, np, nee, pdf_bsdf)) => {
-                        let pdf_light = self.light_pdf(s, st, l as usize, xp, np, x, nee, false);
-                        radiance += beta * le * mis_power(pdf_bsdf, pdf_light);
+                    Some((rc, nee, pdf_bsdf)) => {
+                        let pdf_light = self.light_pdf(s, st, l as usize, rc, x, *nee, false);
+                        radiance += beta * le * mis_power(*pdf_bsdf, pdf_light);
                     }
                 }
             }
-            let (direct, nee) = self.nee(s, st, (x, n, ng), mat.albedo, rng);
+            let vx = Vertex::new(mat, x, n, ng, -dir);
+            let (direct, nee) = self.nee(s, st, &vx, rng);
             radiance += beta * direct;
-            // Cosine-weighted BSDF sample about the shading normal: f·cos/pdf
-            // = ρ. A direction below the surface itself ends the path.
+            // A BSDF sample about the shading normal (cosine, or the GGX
+            // lobe's visible normals); a direction below the surface itself
+            // ends the path.
             let (u1, u2) = (xi_from_bits(rng.next_u32()), xi_from_bits(rng.next_u32()));
-            let nd = cosine_direction(n, u1, u2);
+            let nd = bsdf_sample(n, vx.wo, vx.alpha, vx.p_spec, u1, u2);
             if !continues_path(nd, n, ng) {
                 break;
             }
-            beta *= mat.albedo;
-            prev = Some((x, n, nee, cosine_pdf(nd.dot(n))));
+            let pdf = vx.bsdf_pdf(nd);
+            if !(pdf > 0.0) {
+                break;
+            }
+            // f·cos/pdf; for a Lambertian surface exactly its albedo.
+            beta *= if mat.has_specular() { mat.eval(n, vx.wo, nd) * (nd.dot(n) / pdf) } else { mat.albedo };
+            prev = Some((vx.rc, nee, pdf));
             org = x + ng * surface_offset(diag);
             dir = nd;
             // Russian roulette on path length from the third bounce.
@@ -360,6 +363,32 @@ impl CpuPathTracer {
             }
         }
         radiance
+    }
+}
+
+/// A path vertex as next-event estimation and BSDF sampling see it: the
+/// receiver (position, shading normal, mirror direction, lobe), the
+/// geometric normal on the shading normal's side, the material, the unit
+/// direction `wo` back along the path, and the material's `α` and
+/// specular-lobe probability there.
+struct Vertex {
+    rc: Receiver,
+    ng: Vec3,
+    mat: Material,
+    wo: Vec3,
+    alpha: f32,
+    p_spec: f32,
+}
+
+impl Vertex {
+    fn new(mat: Material, x: Vec3, n: Vec3, ng: Vec3, wo: Vec3) -> Vertex {
+        let rc = mat.receiver(x, n, wo);
+        Vertex { rc, ng, mat, wo, alpha: mat.alpha(), p_spec: specular_probability(rc.lobe) }
+    }
+
+    /// The BSDF sampling pdf of the unit direction `l` ([`bsdf_pdf`]).
+    fn bsdf_pdf(&self, l: Vec3) -> f32 {
+        bsdf_pdf(self.rc.n, self.wo, l, self.alpha, self.p_spec)
     }
 }
 
@@ -389,20 +418,26 @@ mod tests {
     /// pdf an implicit hit uses is still positive, with `W₋ⱼ = W` (the
     /// weighted picks) or the count of the others (the reservoir): what NEE
     /// would use in a pass whose ξ put the light in range with the same
-    /// other candidates.
+    /// other candidates. For a Lambertian and a glossy receiver.
     #[test]
     fn mis_weights_sum_to_one() {
         let mut pts = CpuPathTracer::new(&PtScene::new(&Scene::cornell_box_split_light(4), &[]).unwrap());
         let (x, n) = (Vec3::new(0.3, 0.0, 0.3), Vec3::Y);
         let params = RangeParams::new(0.005, 1.0).unwrap();
         let st = pts.pass_state(&params, 7, 0).unwrap();
-        let mut nee = NeeState::default();
-        pts.bsh.for_each_containing(x, |l| {
-            nee.seen += 1;
-            nee.w_sum += pts.pts.light_set().cones()[l as usize].weight(x, n, st.rt2[l as usize]);
-        });
+        let wo = Vec3::new(0.3, 0.8, -0.2).normalize();
         let (mut inside, mut outside) = (0, 0);
-        for method in PtMethod::ALL {
+        for (mat, method) in [Material::lambertian(Vec3::splat(0.5), Vec3::ZERO), Material::gltf(Vec3::splat(0.9), 1.0, 0.4)]
+            .into_iter()
+            .flat_map(|m| PtMethod::ALL.map(|method| (m, method)))
+        {
+            let vx = Vertex::new(mat, x, n, n, wo);
+            let rc = vx.rc;
+            let mut nee = NeeState::default();
+            pts.bsh.for_each_containing(x, |l| {
+                nee.seen += 1;
+                nee.w_sum += pts.pts.light_set().cones()[l as usize].weight(&rc, st.rt2[l as usize]);
+            });
             let s = PtSettings { method, error_bound: 0.005, ..PtSettings::default() };
             for l in 0..pts.light_count() {
                 let Light::Triangle(t) = &pts.lights()[l] else { continue };
@@ -410,12 +445,12 @@ mod tests {
                 for (u1, u2) in [(0.1, 0.2), (0.5, 0.5), (0.9, 0.05)] {
                     let y = t.sample(u1, u2);
                     let cos_x = n.dot((y - x).normalize());
-                    let p_light_hit = pts.light_pdf(&s, &st, l, x, n, y, nee, false);
+                    let p_light_hit = pts.light_pdf(&s, &st, l, &rc, y, nee, false);
                     assert!(p_light_hit > 0.0 && cos_x > 0.0, "{}", method.name());
                     if !in_range {
                         outside += 1;
                         if method == PtMethod::SlcWeighted {
-                            let w = pts.pts.light_set().cones()[l].weight(x, n, st.rt2[l]);
+                            let w = pts.pts.light_set().cones()[l].weight(&rc, st.rt2[l]);
                             let select = weighted_select_pdf(w, nee.w_sum + w, true, WEIGHTED_K as u32);
                             let expect =
                                 light_strategy_pdf(select, st.rt2[l], (x - y).length_squared(), t.area(), t.normal().dot((x - y).normalize()));
@@ -423,23 +458,26 @@ mod tests {
                         }
                         continue;
                     }
-                    let p_light_nee = pts.light_pdf(&s, &st, l, x, n, y, nee, true);
+                    let p_light_nee = pts.light_pdf(&s, &st, l, &rc, y, nee, true);
                     assert_eq!(p_light_nee, p_light_hit, "{}", method.name());
-                    let w_light = mis_power(p_light_nee, cosine_pdf(cos_x));
-                    let w_bsdf = mis_power(cosine_pdf(cos_x), p_light_hit);
+                    let p_bsdf = vx.bsdf_pdf((y - x).normalize());
+                    assert!(p_bsdf > 0.0);
+                    let w_light = mis_power(p_light_nee, p_bsdf);
+                    let w_bsdf = mis_power(p_bsdf, p_light_hit);
                     assert!((w_light + w_bsdf - 1.0).abs() < 1e-6, "{}: {w_light} + {w_bsdf}", method.name());
                     inside += 1;
                 }
             }
         }
-        assert!(inside >= 2 * PtMethod::ALL.len() * 3 && outside >= 2 * PtMethod::ALL.len() * 3, "{inside} in range, {outside} outside");
+        assert!(inside >= 4 * PtMethod::ALL.len() * 3 && outside >= 4 * PtMethod::ALL.len() * 3, "{inside} in range, {outside} outside");
     }
 
     /// `slc-weighted` against brute-force enumeration of the candidates:
     /// the traversal's `W` is the sum of the weights of exactly the lights
     /// whose range sphere holds `x` (every light tested), and over 40,000
     /// traversals each light is picked `k·w/W` times per traversal on
-    /// average (within 5σ of the binomial count, per slot `w/W`).
+    /// average (within 5σ of the binomial count, per slot `w/W`); for a
+    /// glossy receiver, whose lobe weighs the candidates.
     #[test]
     fn weighted_picks_match_brute_force_enumeration() {
         let pts = {
@@ -449,16 +487,18 @@ mod tests {
         };
         let (pts, st) = (&pts.0, &pts.1);
         let (x, n) = (Vec3::new(0.3, 0.0, 0.3), Vec3::Y);
+        let rc = Material::gltf(Vec3::splat(0.9), 1.0, 0.2).receiver(x, n, Vec3::new(0.5, 0.5, 0.1).normalize());
+        assert!(rc.lobe.y > 0.0);
         let cones = pts.pts.light_set().cones();
         let brute: Vec<(usize, f64)> =
-            (0..pts.light_count()).filter(|&l| st.spheres[l].contains(x)).map(|l| (l, cones[l].weight(x, n, st.rt2[l]) as f64)).collect();
+            (0..pts.light_count()).filter(|&l| st.spheres[l].contains(x)).map(|l| (l, cones[l].weight(&rc, st.rt2[l]) as f64)).collect();
         let w_brute: f64 = brute.iter().map(|&(_, w)| w).sum();
         assert!(brute.len() >= 10 && brute.len() < pts.light_count(), "{} candidates", brute.len());
         let mut rng = Pcg32::new(11, 5);
         let trials = 40_000;
         let mut count = vec![0u32; pts.light_count()];
         for _ in 0..trials {
-            let (res, seen) = pts.weighted_picks(st, x, n, &mut rng);
+            let (res, seen) = pts.weighted_picks(st, &rc, &mut rng);
             assert_eq!(seen as usize, brute.len());
             assert!((res.total_weight() as f64 - w_brute).abs() <= 1e-5 * w_brute, "W {} vs {w_brute}", res.total_weight());
             for (l, _) in res.picks() {

@@ -6,8 +6,9 @@
 // Explicit light connection of a progressive path tracer: at every live path
 // vertex, the BSH and a {{ k }}-slot reservoir pick lights ({{ selection }}
 // selection; the uniform and power baselines pick one light); each pick is
-// sampled, passes the RR test at the sampled point, casts a shadow ray and is
-// weighted by MIS ({{ heuristic }} heuristic) against cosine BSDF sampling.
+// sampled, passes the RR test at the sampled point, casts a shadow ray, is
+// shaded with the vertex's BRDF (slc-core's glTF metallic-roughness) and is
+// weighted by MIS ({{ heuristic }} heuristic) against BSDF sampling.
 // The light strategy's pdf includes the RR probability and the reservoir's
 // selection probability (talk: "Multiple importance sampling").
 
@@ -19,21 +20,28 @@
 @group(0) @binding(5) var<storage, read> bsh_nodes: array<BshNode>;
 @group(0) @binding(6) var<storage, read> geo_nodes: array<GpuGeoNode>;
 @group(0) @binding(7) var<storage, read> geo_tris: array<GpuTriangle>;
-@group(0) @binding(8) var<storage, read_write> radiance: array<vec4f>;
-@group(0) @binding(9) var<storage, read_write> candidates: array<u32>;
+@group(0) @binding(8) var<storage, read> materials: array<GpuMaterial>;
+@group(0) @binding(9) var<storage, read_write> radiance: array<vec4f>;
+@group(0) @binding(10) var<storage, read_write> candidates: array<u32>;
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
 
-/// One pick connected to `x`: its contribution times the MIS weight (area
-/// lights) against BSDF sampling; `w` is the selection weight (the
-/// reservoir's n/k, the weighted picks' W/(k·w), or 1/pmf), `nee` what the
-/// traversal found (`select_pdf`; the pick is in range).
-fn shade_pick(li: u32, x: vec3f, n: vec3f, ng: vec3f, w: f32, nee: u32, u1: f32, u2: f32) -> vec3f {
+/// One pick connected to the vertex `x` (material `m` seen from `wo`,
+/// mirror direction `r`, lobe `lobe`): its contribution through the BRDF
+/// times the MIS weight (area lights) against BSDF sampling; `w` is the
+/// selection weight (the reservoir's n/k, the weighted picks' W/(k·w), or
+/// 1/pmf), `nee` what the traversal found (`select_pdf`; the pick is in
+/// range).
+fn shade_pick(li: u32, x: vec3f, n: vec3f, ng: vec3f, m: GpuMaterial, wo: vec3f, r: vec3f, lobe: vec4f, w: f32, nee: u32, u1: f32, u2: f32) -> vec3f {
     let c = connect(li, x, n, ng, w, u1, u2, params.eps);
-    var mis = 1.0;
-    if light_area(lights[li]) > 0.0 && c.cos_x > 0.0 {
-        mis = mis_weight(light_pdf(li, x, n, c.y, nee, true), cosine_pdf(c.cos_x));
+    if c.cos_x <= 0.0 {
+        return vec3f(0.0);
     }
-    return c.e * mis;
+    let l = normalize(c.y - x);
+    var mis = 1.0;
+    if light_area(lights[li]) > 0.0 {
+        mis = mis_weight(light_pdf(li, x, n, r, lobe, c.y, nee, true), bsdf_pdf(n, wo, l, m.alpha, specular_probability(lobe)));
+    }
+    return brdf_eval(m.albedo, m.metallic, m.f0, m.f90, m.alpha, n, wo, l) * c.e * mis;
 }
 
 @compute @workgroup_size({{ wg }})
@@ -50,6 +58,10 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let x = vtx.position;
     let n = vtx.normal;
     let ng = vtx.gnormal;
+    let m = materials[vtx.material];
+    let wo = vtx.wo;
+    let r = mirror_dir(n, wo);
+    let lobe = receiver_lobe(m.albedo, m.metallic, m.f0, m.f90, m.alpha, dot(n, wo));
     let seed = point_stream(params.seed, i, params.frame);
     var h = pick_stream(seed);
     var sum = vec3f(0.0);
@@ -61,7 +73,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        sum += shade_pick(picks.light[s], x, n, ng, w_res, picks.n, u1, xi_from_bits(h));
+        sum += shade_pick(picks.light[s], x, n, ng, m, wo, r, lobe, w_res, picks.n, u1, xi_from_bits(h));
     }
 {% elif selection == "weighted" %}
     // K independent one-slot weighted reservoirs over the in-range lights,
@@ -72,7 +84,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var w_sum = 0.0;
     for (var b = bsh_next_leaf(BSH, bsh_first(BSH), x); b != BSH_NONE; b = bsh_next_leaf(BSH, bsh_nodes[b].next, x)) {
         let li = bsh_nodes[b].light;
-        let w = light_weight(li, x, n);
+        let w = light_weight(li, x, n, r, lobe);
         if w > 0.0 {
             w_sum += w;
             for (var s = 0u; s < K; s++) {
@@ -90,7 +102,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             h = pcg_hash(h);
             let u1 = xi_from_bits(h);
             h = pcg_hash(h);
-            sum += shade_pick(pick[s], x, n, ng, weighted_pick_weight(w_sum, pick_w[s], K), bitcast<u32>(w_sum), u1, xi_from_bits(h));
+            sum += shade_pick(pick[s], x, n, ng, m, wo, r, lobe, weighted_pick_weight(w_sum, pick_w[s], K), bitcast<u32>(w_sum), u1, xi_from_bits(h));
         }
     }
 {% elif selection == "all" %}
@@ -101,7 +113,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        sum += shade_pick(bsh_nodes[b].light, x, n, ng, 1.0, 0u, u1, xi_from_bits(h));
+        sum += shade_pick(bsh_nodes[b].light, x, n, ng, m, wo, r, lobe, 1.0, 0u, u1, xi_from_bits(h));
     }
     candidates[i] = count;
 {% else %}
@@ -110,7 +122,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     h = pcg_hash(h);
     let us = xi_from_bits(h);
 {% if selection == "lightbvh" %}
-    let bp = light_bvh_sample(BVH, x, n, us);
+    let bp = light_bvh_sample(BVH, x, n, r, lobe, us);
     let li = bp.light;
     let pmf = bp.pmf;
 {% else %}
@@ -121,14 +133,14 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let entry = power_table[li];
     li = alias_choice(li, bitcast<u32>(entry.y), entry.x, xi_from_bits(h));
 {% endif %}
-    let pmf = select_pdf(li, x, n, 0u, true);
+    let pmf = select_pdf(li, x, n, r, lobe, 0u, true);
 {% endif %}
     h = pcg_hash(h);
     let u1 = xi_from_bits(h);
     h = pcg_hash(h);
     let u2 = xi_from_bits(h);
     if pmf > 0.0 {
-        sum = shade_pick(li, x, n, ng, 1.0 / pmf, 0u, u1, u2);
+        sum = shade_pick(li, x, n, ng, m, wo, r, lobe, 1.0 / pmf, 0u, u1, u2);
     }
 {% endif %}
     let add = vtx.weight * sum;

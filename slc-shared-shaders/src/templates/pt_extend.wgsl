@@ -7,9 +7,10 @@ const K: u32 = {{ k }}u;
 // camera ray, later the ray `pt_extend` sampled at the previous vertex. The
 // closest hit adds emission (MIS-weighted against the light strategy, whose
 // pdf at the previous vertex uses the in-range count `pt_connect` left in
-// `candidates`), writes the vertex for `pt_connect`, samples the cosine
-// BSDF for the next ray and plays Russian roulette on path length from the
-// third bounce, as the CPU path tracer does.
+// `candidates`), writes the vertex for `pt_connect`, samples the BSDF
+// (slc-core's glTF metallic-roughness: cosine or bounded-VNDF GGX lobe) for
+// the next ray and plays Russian roulette on path length from the third
+// bounce, as the CPU path tracer does.
 
 @group(0) @binding(0) var<uniform> params: PtParams;
 @group(0) @binding(1) var<storage, read> lights: array<GpuLight>;
@@ -18,7 +19,7 @@ const K: u32 = {{ k }}u;
 @group(0) @binding(4) var<storage, read> light_leaf: array<u32>;
 @group(0) @binding(5) var<storage, read> geo_nodes: array<GpuGeoNode>;
 @group(0) @binding(6) var<storage, read> geo_tris: array<GpuTriangle>;
-@group(0) @binding(7) var<storage, read> albedo: array<vec4f>;
+@group(0) @binding(7) var<storage, read> materials: array<GpuMaterial>;
 // Vertex normals, three per triangle in geo_tris order.
 @group(0) @binding(8) var<storage, read> geo_normals: array<vec4f>;
 @group(0) @binding(9) var<storage, read> candidates: array<u32>;
@@ -79,34 +80,46 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         if st.pdf_bsdf > 0.0 {
             let leaf = bsh_nodes[light_leaf[tri.light]];
             let in_range = sphere_contains_point(leaf.center, leaf.radius, st.prev);
-            w = mis_weight(st.pdf_bsdf, light_pdf(tri.light, st.prev, st.prev_normal, x, candidates[i], in_range));
+            w = mis_weight(st.pdf_bsdf, light_pdf(tri.light, st.prev, st.prev_normal, st.prev_r, st.prev_lobe, x, candidates[i], in_range));
         }
         let add = st.beta * lights[tri.light].intensity * w;
         if finite3(add) {
             radiance[i] += vec4f(add, 0.0);
         }
     }
-    let rho = albedo[tri.material].xyz;
+    let m = materials[tri.material];
+    let wo = -st.dir;
+    let lobe = receiver_lobe(m.albedo, m.metallic, m.f0, m.f90, m.alpha, dot(n, wo));
     v.position = x;
     v.normal = n;
+    v.material = tri.material;
     v.gnormal = ng;
-    v.weight = st.beta * lambert_brdf(rho);
+    v.weight = st.beta;
+    v.wo = wo;
     v.alive = 1u;
     vertices[i] = v;
-    // Cosine-weighted BSDF sample about the shading normal: f·cos/pdf = ρ.
+    // A BSDF sample about the shading normal (cosine, or the GGX lobe's
+    // visible normals); f·cos/pdf is exactly ρ for a Lambertian surface.
     var rng = st.rng;
     let u1 = next_uniform(&rng);
     let u2 = next_uniform(&rng);
-    let nd = cosine_direction(n, u1, u2);
-    let cos_o = dot(nd, n);
-    st.beta *= rho;
+    let p_spec = specular_probability(lobe);
+    let nd = bsdf_sample(n, wo, m.alpha, p_spec, u1, u2);
+    let pdf = bsdf_pdf(n, wo, nd, m.alpha, p_spec);
+    if has_specular(m.metallic, m.f0, m.f90) {
+        st.beta *= brdf_eval(m.albedo, m.metallic, m.f0, m.f90, m.alpha, n, wo, nd) * (dot(nd, n) / pdf);
+    } else {
+        st.beta *= m.albedo;
+    }
     st.prev = x;
     st.prev_normal = n;
-    st.pdf_bsdf = cosine_pdf(cos_o);
+    st.prev_r = mirror_dir(n, wo);
+    st.prev_lobe = lobe;
+    st.pdf_bsdf = pdf;
     st.origin = x + ng * params.eps;
     st.dir = nd;
     // A direction below the surface itself ends the path.
-    if !continues_path(nd, n, ng) || params.depth + 1u >= params.max_depth {
+    if !continues_path(nd, n, ng) || !(pdf > 0.0) || params.depth + 1u >= params.max_depth {
         st.alive = 0u;
     }
     // Russian roulette on path length from the third bounce.

@@ -1,6 +1,9 @@
 // MIS of the path tracer's two strategies ({{ heuristic }} heuristic): the
-// light strategy (BSH + {{ k }}-slot reservoir + RR) against cosine BSDF
-// sampling. Needs bindings `lights` and `rt2`.
+// light strategy (BSH + {{ k }}-slot reservoir + RR) against BSDF sampling.
+// Needs bindings `lights` and `rt2`. A receiver is `x`, its shading normal
+// `n`, the view's mirror direction `r` and its BRDF lobe `lobe`
+// (slc-core's `receiver_lobe`), which weigh the lights of slc-weighted and
+// the light BVH.
 
 /// MIS weight of strategy `a` against strategy `b`.
 fn mis_weight(pdf_a: f32, pdf_b: f32) -> f32 {
@@ -15,11 +18,11 @@ fn mis_weight(pdf_a: f32, pdf_b: f32) -> f32 {
 @group(1) @binding(2) var<storage, read> light_cones: array<GpuLightCone>;
 @group(1) @binding(3) var<storage, read> light_bvh: array<GpuLightBvhNode>;
 
-/// `slc-weighted`'s weight of light `li` at `x` with normal `n`
+/// `slc-weighted`'s weight of light `li` for the receiver `(x, n, r, lobe)`
 /// (slc-core's `cone_weight`).
-fn light_weight(li: u32, x: vec3f, n: vec3f) -> f32 {
+fn light_weight(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f) -> f32 {
     let c = light_cones[li];
-    return cone_weight(c.center, c.radius, c.phi, c.axis, c.cos_o, c.cos_e, rt2[li], x, n);
+    return cone_weight(c.center, c.radius, c.phi, c.axis, c.cos_o, c.cos_e, rt2[li], x, n, r, lobe);
 }
 
 /// The kernel's `light_bvh` buffer as slc-core's shared walks
@@ -35,30 +38,30 @@ fn light_bvh_count(nodes: BvhNodes) -> u32 {
 {{ bvh_walk }}
 
 /// Probability (expected count, for the weighted picks) that the light
-/// strategy at `x` (normal `n`) selects light `li` ({{ selection }}
+/// strategy for the receiver `(x, n, r, lobe)` selects light `li` ({{ selection }}
 /// selection). `nee` is what the traversal at `x` left: the in-range count
 /// (reservoir) or the bits of the candidates' total weight (weighted);
 /// `in_range` says this pass's range of `li` reaches `x`, so that the
 /// probability is the one of the *other* candidates, independent of the
 /// light's own ξ.
-fn select_pdf(li: u32, x: vec3f, n: vec3f, nee: u32, in_range: bool) -> f32 {
+fn select_pdf(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, nee: u32, in_range: bool) -> f32 {
 {% if selection == "reservoir" %}
     return reservoir_select_pdf(nee, in_range, K);
 {% elif selection == "weighted" %}
-    return weighted_select_pdf(light_weight(li, x, n), bitcast<f32>(nee), in_range, K);
+    return weighted_select_pdf(light_weight(li, x, n, r, lobe), bitcast<f32>(nee), in_range, K);
 {% elif selection == "all" %}
     return 1.0;
 {% elif selection == "uniform" %}
     return 1.0 / f32(arrayLength(&lights));
 {% elif selection == "lightbvh" %}
-    return light_bvh_pmf(BVH, light_cones[li].bvh_leaf, x, n);
+    return light_bvh_pmf(BVH, light_cones[li].bvh_leaf, x, n, r, lobe);
 {% else %}
     return power_table[li].z;
 {% endif %}
 }
 
-/// Solid-angle pdf with which the light strategy at `x` (normal `n`)
-/// produces the point `y` on area light `li` ([`select_pdf`]'s `nee` and
+/// Solid-angle pdf with which the light strategy for the receiver `(x, n,
+/// r, lobe)` produces the point `y` on area light `li` ([`select_pdf`]'s `nee` and
 /// `in_range`): the selection probability, the RR probability at |x − y|
 /// (1 for the baselines, whose ranges are +∞) and the area pdf converted
 /// to solid angle (talk: "Multiple importance sampling"). It must not
@@ -66,10 +69,10 @@ fn select_pdf(li: u32, x: vec3f, n: vec3f, nee: u32, in_range: bool) -> f32 {
 /// a pdf that is 0 when the sphere misses makes the two weights sum to more
 /// than one in expectation and biases the image (the CPU path tracer's
 /// test found +40%).
-fn light_pdf(li: u32, x: vec3f, n: vec3f, y: vec3f, nee: u32, in_range: bool) -> f32 {
+fn light_pdf(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, y: vec3f, nee: u32, in_range: bool) -> f32 {
     let l = lights[li];
     let v = x - y;
     let d2 = dot(v, v);
     let cos_y = select(0.0, dot(light_normal(l), v / sqrt(d2)), d2 > 0.0);
-    return light_strategy_pdf(select_pdf(li, x, n, nee, in_range), rt2[li], d2, light_area(l), cos_y);
+    return light_strategy_pdf(select_pdf(li, x, n, r, lobe, nee, in_range), rt2[li], d2, light_area(l), cos_y);
 }

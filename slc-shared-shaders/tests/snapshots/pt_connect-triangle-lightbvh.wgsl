@@ -40,11 +40,13 @@ struct GpuPathVertex {
     position: vec3<f32>,
     alive: u32,
     normal: vec3<f32>,
-    pad: f32,
+    material: u32,
     weight: vec3<f32>,
     pad1_: f32,
     gnormal: vec3<f32>,
     pad2_: f32,
+    wo: vec3<f32>,
+    pad3_: f32,
 }
 
 struct GpuPathState {
@@ -58,6 +60,9 @@ struct GpuPathState {
     pad: u32,
     prev_normal: vec3<f32>,
     pad2_: u32,
+    prev_r: vec3<f32>,
+    pad3_: u32,
+    prev_lobe: vec4<f32>,
 }
 
 struct PtParams {
@@ -151,9 +156,11 @@ struct GpuVertex {
 
 struct GpuMaterial {
     albedo: vec3<f32>,
-    pad0_: u32,
+    metallic: f32,
     emission: vec3<f32>,
-    pad1_: u32,
+    alpha: f32,
+    f0_: vec3<f32>,
+    f90_: f32,
 }
 
 struct MapParams {
@@ -240,10 +247,10 @@ const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
+const GGX_ALPHA_MIN: f32 = 0.001f;
 const LIGHT_BVH_LEAF: u32 = 4294967295u;
 const ONE_MINUS_EPSILON: f32 = 0.99999994f;
 const F32_MAX: f32 = 340282350000000000000000000000000000000f;
-const GGX_ALPHA_MIN: f32 = 0.001f;
 const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
 const DEPTH_SIGMA: f32 = 0.05f;
 const COVER_WEIGHT: f32 = 0.1f;
@@ -264,7 +271,7 @@ var<storage> bsh_nodes: array<BshNode>;
 @group(0) @binding(2) 
 var<storage> lights: array<GpuLight>;
 @group(0) @binding(4) 
-var<storage> r2_6: array<f32>;
+var<storage> r2_7: array<f32>;
 @group(0) @binding(3) 
 var<storage> rt2_7: array<f32>;
 @group(1) @binding(1) 
@@ -278,8 +285,10 @@ var<uniform> params: ShadeParams;
 @group(0) @binding(1) 
 var<storage> vertices: array<GpuPathVertex>;
 @group(0) @binding(8) 
-var<storage, read_write> radiance: array<vec4<f32>>;
+var<storage> materials: array<GpuMaterial>;
 @group(0) @binding(9) 
+var<storage, read_write> radiance: array<vec4<f32>>;
+@group(0) @binding(10) 
 var<storage, read_write> candidates: array<u32>;
 
 fn at(tab: u32, i: u32) -> f32 {
@@ -414,14 +423,14 @@ fn windowed_falloff(d2_4: f32, range2_1: f32) -> f32 {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_3: vec3<f32>) -> bool {
-    let v_9 = (x_3 - c);
-    return (dot(v_9, v_9) <= (r * r));
+    let v_10 = (x_3 - c);
+    return (dot(v_10, v_10) <= (r * r));
 }
 
 fn sphere_overlaps_sphere(c1_: vec3<f32>, r1_: f32, c2_: vec3<f32>, r2_2: f32) -> bool {
-    let v_10 = (c2_ - c1_);
-    let r_3 = (r1_ + r2_2);
-    return (dot(v_10, v_10) <= (r_3 * r_3));
+    let v_11 = (c2_ - c1_);
+    let r_14 = (r1_ + r2_2);
+    return (dot(v_11, v_11) <= (r_14 * r_14));
 }
 
 fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
@@ -431,18 +440,18 @@ fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
 fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<f32> {
     var local: bool;
 
-    let v_11 = (c2_1 - c1_1);
-    let d_6 = sqrt(dot(v_11, v_11));
+    let v_12 = (c2_1 - c1_1);
+    let d_7 = sqrt(dot(v_12, v_12));
     let _e8 = sphere_pad(r1_1, c1_1);
-    if (r1_1 >= ((d_6 + r2_3) + _e8)) {
+    if (r1_1 >= ((d_7 + r2_3) + _e8)) {
         return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     let _e16 = sphere_pad(r2_3, c2_1);
-    if (r2_3 >= ((d_6 + r1_1) + _e16)) {
+    if (r2_3 >= ((d_7 + r1_1) + _e16)) {
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if !((d_6 >= SPHERE_HUGE)) {
-        local = ((0.5f * ((d_6 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if !((d_7 >= SPHERE_HUGE)) {
+        local = ((0.5f * ((d_7 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local = true;
     }
@@ -450,29 +459,29 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
     if _e35 {
         return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if (abs((r1_1 - r2_3)) >= d_6) {
+    if (abs((r1_1 - r2_3)) >= d_7) {
         if (r1_1 >= r2_3) {
-            let rn = max(r1_1, (d_6 + r2_3));
+            let rn = max(r1_1, (d_7 + r2_3));
             let _e50 = sphere_pad(rn, c1_1);
             return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        let rm = max(r2_3, (d_6 + r1_1));
+        let rm = max(r2_3, (d_7 + r1_1));
         let _e58 = sphere_pad(rm, c2_1);
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    let r0_ = (0.5f * ((d_6 + r1_1) + r2_3));
-    let c_11 = (c1_1 + (v_11 * ((r0_ - r1_1) / d_6)));
+    let r0_ = (0.5f * ((d_7 + r1_1) + r2_3));
+    let c_11 = (c1_1 + (v_12 * ((r0_ - r1_1) / d_7)));
     let e1_ = (c_11 - c1_1);
     let e2_ = (c_11 - c2_1);
-    let r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    let _e82 = sphere_pad(r_4, c_11);
-    return vec4<f32>(c_11.x, c_11.y, c_11.z, (r_4 + _e82));
+    let r_15 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
+    let _e82 = sphere_pad(r_15, c_11);
+    return vec4<f32>(c_11.x, c_11.y, c_11.z, (r_15 + _e82));
 }
 
 fn sphere_overlaps_aabb(c_2: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
     let q_3 = clamp(c_2, bmin, bmax);
-    let v_12 = (q_3 - c_2);
-    return (dot(v_12, v_12) <= (r_2 * r_2));
+    let v_13 = (q_3 - c_2);
+    return (dot(v_13, v_13) <= (r_2 * r_2));
 }
 
 fn vpl_rt2_(flux: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32) -> f32 {
@@ -499,8 +508,8 @@ fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_1: bool;
     var local_2: bool;
 
-    let v_13 = (x_4 - y);
-    let d2_12 = dot(v_13, v_13);
+    let v_14 = (x_4 - y);
+    let d2_12 = dot(v_14, v_14);
     let _e7 = slc_keep(r2_5, d2_12);
     if !(!(_e7)) {
         local_1 = !((d2_12 > 0f));
@@ -511,7 +520,7 @@ fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_13 = (v_13 / vec3(sqrt(d2_12)));
+    let w_13 = (v_14 / vec3(sqrt(d2_12)));
     let cos_x_1 = -(dot(n, w_13));
     if !((cos_x_1 <= 0f)) {
         local_2 = (dot(ng, w_13) >= 0f);
@@ -530,8 +539,8 @@ fn vpl_lobe(n_1: vec3<f32>, w_1: vec3<f32>) -> f32 {
 }
 
 fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v_1: vec3<f32>, min_d2_: f32) -> f32 {
-    let m = max(dot(v_1, v_1), min_d2_);
-    return (((max(dot(n_l, v_1), 0f) * max(-(dot(n_x, v_1)), 0f)) * INV_PI) / (m * m));
+    let m_1 = max(dot(v_1, v_1), min_d2_);
+    return (((max(dot(n_l, v_1), 0f) * max(-(dot(n_x, v_1)), 0f)) * INV_PI) / (m_1 * m_1));
 }
 
 fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
@@ -582,8 +591,8 @@ fn atan_portable(x_5: f32) -> f32 {
     let _e21 = base;
     let _e33 = t;
     let _e35 = t;
-    let r_5 = (_e21 + (((((((((0.080537446f * z_3) - 0.13877685f) * z_3) + 0.19977711f) * z_3) - 0.3333295f) * z_3) * _e33) + _e35));
-    return select(r_5, -(r_5), (x_5 < 0f));
+    let r_16 = (_e21 + (((((((((0.080537446f * z_3) - 0.13877685f) * z_3) + 0.19977711f) * z_3) - 0.3333295f) * z_3) * _e33) + _e35));
+    return select(r_16, -(r_16), (x_5 < 0f));
 }
 
 fn atan2_portable(y_1: f32, x_6: f32) -> f32 {
@@ -834,269 +843,44 @@ fn uniform_light(u_3: f32, n_8: u32) -> u32 {
     return min(_e4, (n_8 - 1u));
 }
 
-fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
-    if (cos_a > cos_b) {
-        return 1f;
-    }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
-}
-
-fn sin_sub_clamped(sin_a_1: f32, cos_a_1: f32, sin_b_1: f32, cos_b_1: f32) -> f32 {
-    if (cos_a_1 > cos_b_1) {
-        return 0f;
-    }
-    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
-}
-
-fn safe_sqrt(x_9: f32) -> f32 {
-    return sqrt(max(x_9, 0f));
-}
-
-fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, cos_o: f32, cos_e: f32, p: vec3<f32>, n_9: vec3<f32>) -> f32 {
-    var imp: f32;
-
-    let v_14 = (p - center);
-    let dist2_ = dot(v_14, v_14);
-    let r2_7 = (radius * radius);
-    let d2_13 = max(max(dist2_, r2_7), MIN_D2_);
-    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_14 / vec3(sqrt(dist2_))), (dist2_ > 0f));
-    let cos_w = dot(axis, wi_3);
-    let _e28 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e32 = safe_sqrt((1f - (r2_7 / dist2_)));
-    let cos_b_2 = select(_e32, -1f, (dist2_ <= r2_7));
-    let _e39 = safe_sqrt((1f - (cos_b_2 * cos_b_2)));
-    let _e43 = safe_sqrt((1f - (cos_o * cos_o)));
-    let _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
-    let _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
-    let _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
-    if (_e46 <= cos_e) {
-        return 0f;
-    }
-    imp = ((phi * _e46) / d2_13);
-    if (dot(n_9, n_9) > 0f) {
-        let cos_i = -(dot(wi_3, n_9));
-        let _e60 = safe_sqrt((1f - (cos_i * cos_i)));
-        let _e61 = imp;
-        let _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
-        imp = (_e61 * max(_e62, 0f));
-    }
-    let _e66 = imp;
-    return max(_e66, 0f);
-}
-
-fn candidate_weight(importance: f32, rt2_4: f32, d2_8: f32) -> f32 {
-    let _e3 = slc_weight(rt2_4, d2_8);
-    return (importance * _e3);
-}
-
-fn cone_weight(center_1: vec3<f32>, radius_1: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, rt2_5: f32, p_1: vec3<f32>, n_10: vec3<f32>) -> f32 {
-    let v_15 = (p_1 - center_1);
-    let _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
-    let _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_15, v_15));
-    return _e14;
-}
-
-fn weighted_select_pdf(w_6: f32, w_sum_2: f32, in_range_1: bool, k_4: u32) -> f32 {
-    if (w_6 <= 0f) {
-        return 0f;
-    }
-    let total = select((w_sum_2 + w_6), w_sum_2, in_range_1);
-    let _e9 = to_f32_(k_4);
-    return ((_e9 * w_6) / total);
-}
-
-fn bvh_first_prob(c0_: f32, c1_2: f32) -> f32 {
-    let s = (c0_ + c1_2);
-    if (s > 0f) {
-        return (c0_ / s);
-    }
-    return -1f;
-}
-
-fn bvh_remap_u(u_4: f32, p0_: f32, first: bool) -> f32 {
-    if first {
-        return min((u_4 / p0_), ONE_MINUS_EPSILON);
-    }
-    return clamp(((u_4 - p0_) / (1f - p0_)), 0f, ONE_MINUS_EPSILON);
-}
-
-fn surface_offset(diag: f32) -> f32 {
-    return (0.00001f * diag);
-}
-
-fn ray_t_min(diag_1: f32) -> f32 {
-    return (0.000001f * diag_1);
-}
-
-fn shadow_margin(len: f32) -> f32 {
-    return (0.0001f * len);
-}
-
-fn ray_inverse(x_10: f32) -> f32 {
-    return (1f / select(x_10, 0.000000000000000000000000000001f, (abs(x_10) < 0.000000000000000000000000000001f)));
-}
-
-fn ray_inverse3_(d: vec3<f32>) -> vec3<f32> {
-    let _e2 = ray_inverse(d.x);
-    let _e4 = ray_inverse(d.y);
-    let _e6 = ray_inverse(d.z);
-    return vec3<f32>(_e2, _e4, _e6);
-}
-
-fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>, t_max: f32) -> f32 {
-    let t0_ = ((bmin_1 - o) * inv_d);
-    let t1_ = ((bmax_1 - o) * inv_d);
-    let lo_3 = min(t0_, t1_);
-    let hi_3 = max(t0_, t1_);
-    let t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0f));
-    let t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
-    if (t_in <= t_out) {
-        return t_in;
-    }
-    return -1f;
-}
-
-fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> {
-    var local_5: bool;
-
-    let n_34 = cross((b_4 - a_5), (c_6 - a_5));
-    let l2_ = dot(n_34, n_34);
-    if !(!((l2_ > 0f))) {
-        local_5 = !((l2_ < 300000000000000000000000000000000000000f));
-    } else {
-        local_5 = true;
-    }
-    let _e17 = local_5;
-    if _e17 {
-        return vec3<f32>(0f, 0f, 0f);
-    }
-    return (n_34 / vec3(sqrt(l2_)));
-}
-
-fn face_against(n_11: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
-    return select(n_11, -(n_11), (dot(n_11, dir) > 0f));
-}
-
-fn barycentric(p_2: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> {
-    let e1_1 = (b_5 - a_6);
-    let e2_1 = (c_7 - a_6);
-    let q_4 = (p_2 - a_6);
-    let d11_ = dot(e1_1, e1_1);
-    let d12_ = dot(e1_1, e2_1);
-    let d22_ = dot(e2_1, e2_1);
-    let den = ((d11_ * d22_) - (d12_ * d12_));
-    if !((abs(den) > 0f)) {
-        return vec3<f32>(1f, 0f, 0f);
-    }
-    let w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
-    let w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
-    return vec3<f32>(((1f - w1_) - w2_), w1_, w2_);
-}
-
-fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_7: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
-    var local_6: bool;
-
-    let s_1 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
-    let l2_1 = dot(s_1, s_1);
-    if !(!((l2_1 > 0.000000000001f))) {
-        local_6 = !((l2_1 < 300000000000000000000000000000000000000f));
-    } else {
-        local_6 = true;
-    }
-    let _e24 = local_6;
-    if _e24 {
-        return facing;
-    }
-    let n_35 = (s_1 / vec3(sqrt(l2_1)));
-    return select(n_35, -(n_35), (dot(n_35, facing) < 0f));
-}
-
-fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, c_8: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_7: bool;
-    var local_8: bool;
-    var local_9: bool;
-
-    let e1_2 = (b_6 - a_7);
-    let e2_2 = (c_8 - a_7);
-    let p_3 = cross(d_1, e2_2);
-    let det = dot(e1_2, p_3);
-    if (abs(det) <= 0f) {
-        return -1f;
-    }
-    let inv = (1f / det);
-    let s_2 = (o_1 - a_7);
-    let u_7 = (dot(s_2, p_3) * inv);
-    if !((u_7 < 0f)) {
-        local_7 = (u_7 > 1f);
-    } else {
-        local_7 = true;
-    }
-    let _e28 = local_7;
-    if _e28 {
-        return -1f;
-    }
-    let q_5 = cross(s_2, e1_2);
-    let v_16 = (dot(d_1, q_5) * inv);
-    if !((v_16 < 0f)) {
-        local_8 = ((u_7 + v_16) > 1f);
-    } else {
-        local_8 = true;
-    }
-    let _e42 = local_8;
-    if _e42 {
-        return -1f;
-    }
-    let t_3 = (dot(e2_2, q_5) * inv);
-    if (t_3 > t_min) {
-        local_9 = (t_3 < t_max_1);
-    } else {
-        local_9 = false;
-    }
-    let _e51 = local_9;
-    if _e51 {
-        return t_3;
-    }
-    return -1f;
-}
-
 fn mis_balance(pdf_a: f32, pdf_b: f32) -> f32 {
-    let s_3 = (pdf_a + pdf_b);
-    if (s_3 <= 0f) {
+    let s = (pdf_a + pdf_b);
+    if (s <= 0f) {
         return 0f;
     }
-    return (pdf_a / s_3);
+    return (pdf_a / s);
 }
 
 fn mis_power(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     let a2_ = (pdf_a_1 * pdf_a_1);
-    let s_4 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if (s_4 <= 0f) {
+    let s_1 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if (s_1 <= 0f) {
         return 0f;
     }
-    return (a2_ / s_4);
+    return (a2_ / s_1);
 }
 
-fn light_strategy_pdf(select_: f32, rt2_6: f32, d2_9: f32, area_1: f32, cos_y: f32) -> f32 {
-    var local_10: bool;
-    var local_11: bool;
+fn light_strategy_pdf(select_: f32, rt2_4: f32, d2_8: f32, area_1: f32, cos_y: f32) -> f32 {
+    var local_5: bool;
+    var local_6: bool;
 
-    if !((d2_9 <= 0f)) {
-        local_10 = (area_1 <= 0f);
+    if !((d2_8 <= 0f)) {
+        local_5 = (area_1 <= 0f);
     } else {
-        local_10 = true;
+        local_5 = true;
     }
-    let _e13 = local_10;
+    let _e13 = local_5;
     if !(_e13) {
-        local_11 = (cos_y <= 0f);
+        local_6 = (cos_y <= 0f);
     } else {
-        local_11 = true;
+        local_6 = true;
     }
-    let _e20 = local_11;
+    let _e20 = local_6;
     if _e20 {
         return 0f;
     }
-    let _e22 = rr_probability(rt2_6, d2_9);
-    let _e26 = area_to_solid_angle_pdf((1f / area_1), d2_9, cos_y);
+    let _e22 = rr_probability(rt2_4, d2_8);
+    let _e26 = area_to_solid_angle_pdf((1f / area_1), d2_8, cos_y);
     return ((select_ * _e22) * _e26);
 }
 
@@ -1108,34 +892,34 @@ fn cosine_pdf(cos_theta_1: f32) -> f32 {
     return (max(cos_theta_1, 0f) * INV_PI);
 }
 
-fn onb_tangent(n_12: vec3<f32>) -> vec3<f32> {
-    let s_5 = select(-1f, 1f, (n_12.z >= 0f));
-    let a_12 = (-1f / (s_5 + n_12.z));
-    return vec3<f32>((1f + (((s_5 * n_12.x) * n_12.x) * a_12)), (((s_5 * n_12.x) * n_12.y) * a_12), (-(s_5) * n_12.x));
+fn onb_tangent(n_9: vec3<f32>) -> vec3<f32> {
+    let s_2 = select(-1f, 1f, (n_9.z >= 0f));
+    let a_12 = (-1f / (s_2 + n_9.z));
+    return vec3<f32>((1f + (((s_2 * n_9.x) * n_9.x) * a_12)), (((s_2 * n_9.x) * n_9.y) * a_12), (-(s_2) * n_9.x));
 }
 
-fn onb_bitangent(n_13: vec3<f32>) -> vec3<f32> {
-    let s_6 = select(-1f, 1f, (n_13.z >= 0f));
-    let a_13 = (-1f / (s_6 + n_13.z));
-    return vec3<f32>(((n_13.x * n_13.y) * a_13), (s_6 + ((n_13.y * n_13.y) * a_13)), -(n_13.y));
+fn onb_bitangent(n_10: vec3<f32>) -> vec3<f32> {
+    let s_3 = select(-1f, 1f, (n_10.z >= 0f));
+    let a_13 = (-1f / (s_3 + n_10.z));
+    return vec3<f32>(((n_10.x * n_10.y) * a_13), (s_3 + ((n_10.y * n_10.y) * a_13)), -(n_10.y));
 }
 
-fn onb_to_world(n_14: vec3<f32>, d_2: vec3<f32>) -> vec3<f32> {
-    let _e2 = onb_tangent(n_14);
-    let _e5 = onb_bitangent(n_14);
-    return (((_e2 * d_2.x) + (_e5 * d_2.y)) + (n_14 * d_2.z));
+fn onb_to_world(n_11: vec3<f32>, d: vec3<f32>) -> vec3<f32> {
+    let _e2 = onb_tangent(n_11);
+    let _e5 = onb_bitangent(n_11);
+    return (((_e2 * d.x) + (_e5 * d.y)) + (n_11 * d.z));
 }
 
-fn onb_to_local(n_15: vec3<f32>, w_8: vec3<f32>) -> vec3<f32> {
-    let _e2 = onb_tangent(n_15);
-    let _e4 = onb_bitangent(n_15);
-    return vec3<f32>(dot(w_8, _e2), dot(w_8, _e4), dot(w_8, n_15));
+fn onb_to_local(n_12: vec3<f32>, w_6: vec3<f32>) -> vec3<f32> {
+    let _e2 = onb_tangent(n_12);
+    let _e4 = onb_bitangent(n_12);
+    return vec3<f32>(dot(w_6, _e2), dot(w_6, _e4), dot(w_6, n_12));
 }
 
-fn cosine_direction(n_16: vec3<f32>, u1_1: f32, u2_1: f32) -> vec3<f32> {
-    let r_6 = sqrt(u1_1);
-    let phi_2 = (6.2831855f * u2_1);
-    let _e16 = onb_to_world(n_16, vec3<f32>((r_6 * cos(phi_2)), (r_6 * sin(phi_2)), sqrt(max((1f - u1_1), 0f))));
+fn cosine_direction(n_13: vec3<f32>, u1_1: f32, u2_1: f32) -> vec3<f32> {
+    let r_17 = sqrt(u1_1);
+    let phi_5 = (6.2831855f * u2_1);
+    let _e16 = onb_to_world(n_13, vec3<f32>((r_17 * cos(phi_5)), (r_17 * sin(phi_5)), sqrt(max((1f - u1_1), 0f))));
     return normalize(_e16);
 }
 
@@ -1148,8 +932,8 @@ fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
         return 0f;
     }
     let a2_1 = (alpha * alpha);
-    let t_4 = (((cos_h * cos_h) * a2_1) + sin2_h);
-    return ((a2_1 * INV_PI) / (t_4 * t_4));
+    let t_3 = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t_3 * t_3));
 }
 
 fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
@@ -1158,14 +942,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_12: bool;
+    var local_7: bool;
 
     if !((n_l_1 <= 0f)) {
-        local_12 = (n_v <= 0f);
+        local_7 = (n_v <= 0f);
     } else {
-        local_12 = true;
+        local_7 = true;
     }
-    let _e11 = local_12;
+    let _e11 = local_7;
     if _e11 {
         return 0f;
     }
@@ -1200,152 +984,440 @@ fn half_cosine(v_2: vec3<f32>, l: vec3<f32>) -> f32 {
     return saturate((dot(v_2, h_3) / sqrt(len2_)));
 }
 
-fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_17: vec3<f32>, v_3: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
-    var local_13: bool;
+fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_14: vec3<f32>, v_3: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
+    var local_8: bool;
 
-    let n_l_2 = dot(n_17, l_1);
-    let n_v_2 = dot(n_17, v_3);
+    let n_l_2 = dot(n_14, l_1);
+    let n_v_2 = dot(n_14, v_3);
     if !((n_l_2 <= 0f)) {
-        local_13 = (n_v_2 <= 0f);
+        local_8 = (n_v_2 <= 0f);
     } else {
-        local_13 = true;
+        local_8 = true;
     }
-    let _e18 = local_13;
+    let _e18 = local_8;
     if _e18 {
         return vec3<f32>(0f, 0f, 0f);
     }
     let hs = (v_3 + l_1);
-    let inv_1 = (1f / sqrt(dot(hs, hs)));
-    let h_4 = (hs * inv_1);
-    let c_15 = cross(n_17, h_4);
-    let _e32 = ggx_d(dot(n_17, h_4), dot(c_15, c_15), alpha_3);
+    let inv = (1f / sqrt(dot(hs, hs)));
+    let h_4 = (hs * inv);
+    let c_15 = cross(n_14, h_4);
+    let _e32 = ggx_d(dot(n_14, h_4), dot(c_15, c_15), alpha_3);
     let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_3, h_4));
     let _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
 
-fn brdf_eval(base_7: vec3<f32>, metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32, alpha_4: f32, n_18: vec3<f32>, v_4: vec3<f32>, l_2: vec3<f32>) -> vec3<f32> {
-    if (dot(n_18, l_2) <= 0f) {
+fn brdf_eval(base_7: vec3<f32>, metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32, alpha_4: f32, n_15: vec3<f32>, v_4: vec3<f32>, l_2: vec3<f32>) -> vec3<f32> {
+    if (dot(n_15, l_2) <= 0f) {
         return vec3<f32>(0f, 0f, 0f);
     }
     let _e15 = half_cosine(v_4, l_2);
     let _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
-    let _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_18, v_4, l_2);
+    let _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_15, v_4, l_2);
     return (_e16 + _e17);
 }
 
 fn has_specular(metallic_4: f32, f0_d_4: vec3<f32>, f90_d_4: f32) -> bool {
-    var local_14: bool;
-    var local_15: bool;
+    var local_9: bool;
+    var local_10: bool;
 
     if !((metallic_4 > 0f)) {
-        local_14 = (f90_d_4 > 0f);
+        local_9 = (f90_d_4 > 0f);
     } else {
-        local_14 = true;
+        local_9 = true;
     }
-    let _e11 = local_14;
+    let _e11 = local_9;
     if !(_e11) {
-        local_15 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0f);
+        local_10 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0f);
     } else {
-        local_15 = true;
+        local_10 = true;
     }
-    let _e23 = local_15;
+    let _e23 = local_10;
     return _e23;
 }
 
-fn channel_mean(c_9: vec3<f32>) -> f32 {
-    return (((c_9.x + c_9.y) + c_9.z) * 0.33333334f);
+fn channel_mean(c_6: vec3<f32>) -> f32 {
+    return (((c_6.x + c_6.y) + c_6.z) * 0.33333334f);
 }
 
-fn specular_probability(base_8: vec3<f32>, metallic_5: f32, f0_d_5: vec3<f32>, f90_d_5: f32, n_v_1: f32) -> f32 {
-    var local_16: bool;
+fn receiver_lobe(base_8: vec3<f32>, metallic_5: f32, f0_d_5: vec3<f32>, f90_d_5: f32, alpha_5: f32, n_v_1: f32) -> vec4<f32> {
+    var local_11: bool;
 
+    let _e10 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
+    let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_8) * (1f - metallic_5)));
     if !((n_v_1 <= 0f)) {
-        let _e10 = has_specular(metallic_5, f0_d_5, f90_d_5);
-        local_16 = !(_e10);
+        let _e22 = has_specular(metallic_5, f0_d_5, f90_d_5);
+        local_11 = !(_e22);
     } else {
-        local_16 = true;
+        local_11 = true;
     }
-    let _e13 = local_16;
-    if _e13 {
+    let _e25 = local_11;
+    if _e25 {
+        return vec4<f32>(_e16, 0f, alpha_5, n_v_1);
+    }
+    let _e28 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    let _e29 = channel_mean(_e28);
+    return vec4<f32>(_e16, _e29, alpha_5, n_v_1);
+}
+
+fn specular_probability(lobe: vec4<f32>) -> f32 {
+    if (lobe.y <= 0f) {
         return 0f;
     }
-    let _e15 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
-    let _e16 = channel_mean(_e15);
-    let _e21 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
-    let _e27 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e21) * base_8) * (1f - metallic_5)));
-    if (_e27 <= 0f) {
+    if (lobe.x <= 0f) {
         return 1f;
     }
-    if (_e16 <= 0f) {
-        return 0f;
-    }
-    return clamp((_e16 / (_e16 + _e27)), 0.1f, 0.9f);
+    return clamp((lobe.y / (lobe.y + lobe.x)), 0.1f, 0.9f);
 }
 
-fn bounded_vndf_k(wi: vec3<f32>, alpha_5: f32) -> f32 {
-    let a_14 = saturate(alpha_5);
-    let s_7 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+fn mirror_dir(n_16: vec3<f32>, v_5: vec3<f32>) -> vec3<f32> {
+    return ((n_16 * (2f * dot(n_16, v_5))) - v_5);
+}
+
+fn bounded_vndf_k(wi: vec3<f32>, alpha_6: f32) -> f32 {
+    let a_14 = saturate(alpha_6);
+    let s_4 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
     let a2_3 = (a_14 * a_14);
-    let s2_ = (s_7 * s_7);
+    let s2_ = (s_4 * s_4);
     return (((1f - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
-fn ggx_vndf_sample(wi_1: vec3<f32>, alpha_6: f32, u1_2: f32, u2_2: f32) -> vec3<f32> {
-    let wi_std = normalize(vec3<f32>((wi_1.x * alpha_6), (wi_1.y * alpha_6), wi_1.z));
-    let _e12 = bounded_vndf_k(wi_1, alpha_6);
+fn ggx_vndf_sample(wi_1: vec3<f32>, alpha_7: f32, u1_2: f32, u2_2: f32) -> vec3<f32> {
+    let wi_std = normalize(vec3<f32>((wi_1.x * alpha_7), (wi_1.y * alpha_7), wi_1.z));
+    let _e12 = bounded_vndf_k(wi_1, alpha_7);
     let b_9 = select(wi_std.z, (_e12 * wi_std.z), (wi_1.z > 0f));
-    let phi_3 = (6.2831855f * u1_2);
+    let phi_6 = (6.2831855f * u1_2);
     let z_4 = (((1f - u2_2) * (1f + b_9)) - b_9);
     let sin_t = sqrt(saturate((1f - (z_4 * z_4))));
-    let m_std = (wi_std + vec3<f32>((sin_t * cos(phi_3)), (sin_t * sin(phi_3)), z_4));
-    let m_1 = normalize(vec3<f32>((m_std.x * alpha_6), (m_std.y * alpha_6), m_std.z));
-    return ((m_1 * (2f * dot(wi_1, m_1))) - wi_1);
+    let m_std = (wi_std + vec3<f32>((sin_t * cos(phi_6)), (sin_t * sin(phi_6)), z_4));
+    let m_2 = normalize(vec3<f32>((m_std.x * alpha_7), (m_std.y * alpha_7), m_std.z));
+    return ((m_2 * (2f * dot(wi_1, m_2))) - wi_1);
 }
 
-fn ggx_vndf_pdf(wi_2: vec3<f32>, wo: vec3<f32>, alpha_7: f32) -> f32 {
-    var local_17: bool;
+fn ggx_vndf_pdf(wi_2: vec3<f32>, wo: vec3<f32>, alpha_8: f32) -> f32 {
+    var local_12: bool;
 
     if !((wi_2.z <= 0f)) {
-        local_17 = (wo.z <= 0f);
+        local_12 = (wo.z <= 0f);
     } else {
-        local_17 = true;
+        local_12 = true;
     }
-    let _e13 = local_17;
+    let _e13 = local_12;
     if _e13 {
         return 0f;
     }
     let hs_1 = (wi_2 + wo);
-    let m_2 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
-    let _e28 = ggx_d(m_2.z, ((m_2.x * m_2.x) + (m_2.y * m_2.y)), alpha_7);
-    let t_5 = sqrt((((alpha_7 * alpha_7) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
-    let _e43 = bounded_vndf_k(wi_2, alpha_7);
-    return (_e28 / (2f * ((_e43 * wi_2.z) + t_5)));
+    let m_3 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
+    let _e28 = ggx_d(m_3.z, ((m_3.x * m_3.x) + (m_3.y * m_3.y)), alpha_8);
+    let t_4 = sqrt((((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
+    let _e43 = bounded_vndf_k(wi_2, alpha_8);
+    return (_e28 / (2f * ((_e43 * wi_2.z) + t_4)));
 }
 
-fn bsdf_sample(n_19: vec3<f32>, v_5: vec3<f32>, alpha_8: f32, p_spec: f32, u1_3: f32, u2_3: f32) -> vec3<f32> {
+fn bsdf_sample(n_17: vec3<f32>, v_6: vec3<f32>, alpha_9: f32, p_spec: f32, u1_3: f32, u2_3: f32) -> vec3<f32> {
     if (u1_3 < p_spec) {
-        if (dot(n_19, v_5) <= 0f) {
-            return -(n_19);
+        if (dot(n_17, v_6) <= 0f) {
+            return -(n_17);
         }
-        let _e11 = onb_to_local(n_19, v_5);
-        let _e13 = ggx_vndf_sample(_e11, alpha_8, (u1_3 / p_spec), u2_3);
-        let _e14 = onb_to_world(n_19, _e13);
+        let _e11 = onb_to_local(n_17, v_6);
+        let _e13 = ggx_vndf_sample(_e11, alpha_9, (u1_3 / p_spec), u2_3);
+        let _e14 = onb_to_world(n_17, _e13);
         return normalize(_e14);
     }
-    let _e20 = cosine_direction(n_19, ((u1_3 - p_spec) / (1f - p_spec)), u2_3);
+    let _e20 = cosine_direction(n_17, ((u1_3 - p_spec) / (1f - p_spec)), u2_3);
     return _e20;
 }
 
-fn bsdf_pdf(n_20: vec3<f32>, v_6: vec3<f32>, l_3: vec3<f32>, alpha_9: f32, p_spec_1: f32) -> f32 {
-    let _e6 = cosine_pdf(dot(n_20, l_3));
+fn bsdf_pdf(n_18: vec3<f32>, v_7: vec3<f32>, l_3: vec3<f32>, alpha_10: f32, p_spec_1: f32) -> f32 {
+    let _e6 = cosine_pdf(dot(n_18, l_3));
     if (p_spec_1 <= 0f) {
         return _e6;
     }
-    let _e9 = onb_to_local(n_20, v_6);
-    let _e10 = onb_to_local(n_20, l_3);
-    let _e11 = ggx_vndf_pdf(_e9, _e10, alpha_9);
+    let _e9 = onb_to_local(n_18, v_7);
+    let _e10 = onb_to_local(n_18, l_3);
+    let _e11 = ggx_vndf_pdf(_e9, _e10, alpha_10);
     return ((p_spec_1 * _e11) + ((1f - p_spec_1) * _e6));
+}
+
+fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+    if (cos_a > cos_b) {
+        return 1f;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+fn sin_sub_clamped(sin_a_1: f32, cos_a_1: f32, sin_b_1: f32, cos_b_1: f32) -> f32 {
+    if (cos_a_1 > cos_b_1) {
+        return 0f;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+fn safe_sqrt(x_9: f32) -> f32 {
+    return sqrt(max(x_9, 0f));
+}
+
+fn subtended_cos(dist2_: f32, r2_6: f32) -> f32 {
+    let _e5 = safe_sqrt((1f - (r2_6 / dist2_)));
+    return select(_e5, -1f, (dist2_ <= r2_6));
+}
+
+fn emitter_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, cos_o: f32, cos_e: f32, p: vec3<f32>) -> f32 {
+    let v_15 = (p - center);
+    let dist2_1 = dot(v_15, v_15);
+    let r2_8 = (radius * radius);
+    let d2_13 = max(max(dist2_1, r2_8), MIN_D2_);
+    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_15 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let cos_w = dot(axis, wi_3);
+    let _e27 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e28 = subtended_cos(dist2_1, r2_8);
+    let _e32 = safe_sqrt((1f - (_e28 * _e28)));
+    let _e36 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
+    let _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
+    let _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
+    if (_e39 <= cos_e) {
+        return 0f;
+    }
+    return ((phi * _e39) / d2_13);
+}
+
+fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d_1: vec3<f32>) -> f32 {
+    let v_16 = (center_1 - p_1);
+    let dist2_2 = dot(v_16, v_16);
+    let w_14 = select(vec3<f32>(0f, 0f, 0f), (v_16 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
+    let _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
+    let cos_i = dot(w_14, d_1);
+    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
+    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
+    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+fn light_importance(center_2: vec3<f32>, radius_2: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, p_2: vec3<f32>, n_19: vec3<f32>) -> f32 {
+    var imp: f32;
+
+    let _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
+    imp = _e8;
+    if (dot(n_19, n_19) > 0f) {
+        let _e13 = imp;
+        let _e14 = cone_cos_toward(center_2, radius_2, p_2, n_19);
+        imp = (_e13 * max(_e14, 0f));
+    }
+    let _e18 = imp;
+    return max(_e18, 0f);
+}
+
+fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_20: vec3<f32>, r_3: vec3<f32>, lobe_1: vec4<f32>) -> f32 {
+    var local_13: bool;
+
+    let _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
+    let _e11 = cone_cos_toward(center_3, radius_3, p_3, n_20);
+    if !((_e10 <= 0f)) {
+        local_13 = (_e11 <= 0f);
+    } else {
+        local_13 = true;
+    }
+    let _e20 = local_13;
+    if _e20 {
+        return 0f;
+    }
+    let _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
+    let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
+    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_1.z);
+    let _e39 = smith_root(lobe_1.w, lobe_1.z);
+    let spec = (((lobe_1.y * _e33) * 0.25f) / _e39);
+    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+}
+
+fn receiver_importance(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, p_4: vec3<f32>, n_21: vec3<f32>, r_4: vec3<f32>, lobe_2: vec4<f32>) -> f32 {
+    if (lobe_2.y <= 0f) {
+        let _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
+        return _e13;
+    }
+    let _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    return _e14;
+}
+
+fn candidate_weight(importance: f32, rt2_5: f32, d2_9: f32) -> f32 {
+    let _e3 = slc_weight(rt2_5, d2_9);
+    return (importance * _e3);
+}
+
+fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_4: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_4: f32, rt2_6: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+    let v_17 = (p_5 - center_5);
+    if (lobe_3.y <= 0f) {
+        let _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
+        return _e19;
+    }
+    let _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    let _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
+    return _e22;
+}
+
+fn weighted_select_pdf(w_7: f32, w_sum_2: f32, in_range_1: bool, k_4: u32) -> f32 {
+    if (w_7 <= 0f) {
+        return 0f;
+    }
+    let total = select((w_sum_2 + w_7), w_sum_2, in_range_1);
+    let _e9 = to_f32_(k_4);
+    return ((_e9 * w_7) / total);
+}
+
+fn bvh_first_prob(c0_: f32, c1_2: f32) -> f32 {
+    let s_5 = (c0_ + c1_2);
+    if (s_5 > 0f) {
+        return (c0_ / s_5);
+    }
+    return -1f;
+}
+
+fn bvh_remap_u(u_4: f32, p0_: f32, first: bool) -> f32 {
+    if first {
+        return min((u_4 / p0_), ONE_MINUS_EPSILON);
+    }
+    return clamp(((u_4 - p0_) / (1f - p0_)), 0f, ONE_MINUS_EPSILON);
+}
+
+fn surface_offset(diag: f32) -> f32 {
+    return (0.00001f * diag);
+}
+
+fn ray_t_min(diag_1: f32) -> f32 {
+    return (0.000001f * diag_1);
+}
+
+fn shadow_margin(len: f32) -> f32 {
+    return (0.0001f * len);
+}
+
+fn ray_inverse(x_10: f32) -> f32 {
+    return (1f / select(x_10, 0.000000000000000000000000000001f, (abs(x_10) < 0.000000000000000000000000000001f)));
+}
+
+fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d_2.x);
+    let _e4 = ray_inverse(d_2.y);
+    let _e6 = ray_inverse(d_2.z);
+    return vec3<f32>(_e2, _e4, _e6);
+}
+
+fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>, t_max: f32) -> f32 {
+    let t0_ = ((bmin_1 - o) * inv_d);
+    let t1_ = ((bmax_1 - o) * inv_d);
+    let lo_3 = min(t0_, t1_);
+    let hi_3 = max(t0_, t1_);
+    let t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0f));
+    let t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
+    if (t_in <= t_out) {
+        return t_in;
+    }
+    return -1f;
+}
+
+fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> {
+    var local_14: bool;
+
+    let n_37 = cross((b_4 - a_5), (c_7 - a_5));
+    let l2_ = dot(n_37, n_37);
+    if !(!((l2_ > 0f))) {
+        local_14 = !((l2_ < 300000000000000000000000000000000000000f));
+    } else {
+        local_14 = true;
+    }
+    let _e17 = local_14;
+    if _e17 {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    return (n_37 / vec3(sqrt(l2_)));
+}
+
+fn face_against(n_23: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+    return select(n_23, -(n_23), (dot(n_23, dir) > 0f));
+}
+
+fn barycentric(p_6: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -> vec3<f32> {
+    let e1_1 = (b_5 - a_6);
+    let e2_1 = (c_8 - a_6);
+    let q_4 = (p_6 - a_6);
+    let d11_ = dot(e1_1, e1_1);
+    let d12_ = dot(e1_1, e2_1);
+    let d22_ = dot(e2_1, e2_1);
+    let den = ((d11_ * d22_) - (d12_ * d12_));
+    if !((abs(den) > 0f)) {
+        return vec3<f32>(1f, 0f, 0f);
+    }
+    let w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
+    let w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
+    return vec3<f32>(((1f - w1_) - w2_), w1_, w2_);
+}
+
+fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
+    var local_15: bool;
+
+    let s_6 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
+    let l2_1 = dot(s_6, s_6);
+    if !(!((l2_1 > 0.000000000001f))) {
+        local_15 = !((l2_1 < 300000000000000000000000000000000000000f));
+    } else {
+        local_15 = true;
+    }
+    let _e24 = local_15;
+    if _e24 {
+        return facing;
+    }
+    let n_38 = (s_6 / vec3(sqrt(l2_1)));
+    return select(n_38, -(n_38), (dot(n_38, facing) < 0f));
+}
+
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, c_9: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_16: bool;
+    var local_17: bool;
+    var local_18: bool;
+
+    let e1_2 = (b_6 - a_7);
+    let e2_2 = (c_9 - a_7);
+    let p_7 = cross(d_3, e2_2);
+    let det = dot(e1_2, p_7);
+    if (abs(det) <= 0f) {
+        return -1f;
+    }
+    let inv_1 = (1f / det);
+    let s_7 = (o_1 - a_7);
+    let u_7 = (dot(s_7, p_7) * inv_1);
+    if !((u_7 < 0f)) {
+        local_16 = (u_7 > 1f);
+    } else {
+        local_16 = true;
+    }
+    let _e28 = local_16;
+    if _e28 {
+        return -1f;
+    }
+    let q_5 = cross(s_7, e1_2);
+    let v_18 = (dot(d_3, q_5) * inv_1);
+    if !((v_18 < 0f)) {
+        local_17 = ((u_7 + v_18) > 1f);
+    } else {
+        local_17 = true;
+    }
+    let _e42 = local_17;
+    if _e42 {
+        return -1f;
+    }
+    let t_5 = (dot(e2_2, q_5) * inv_1);
+    if (t_5 > t_min) {
+        local_18 = (t_5 < t_max_1);
+    } else {
+        local_18 = false;
+    }
+    let _e51 = local_18;
+    if _e51 {
+        return t_5;
+    }
+    return -1f;
 }
 
 fn inv_sigma_z(z: f32) -> f32 {
@@ -1376,13 +1448,13 @@ fn filtered_irradiance(e: vec3<f32>, sum_1: vec3<f32>, weight: f32) -> vec3<f32>
     return e;
 }
 
-fn bilateral_weight(n_21: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f32) -> f32 {
-    let dn = max(dot(n_21, nj), 0f);
+fn bilateral_weight(n_24: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f32) -> f32 {
+    let dn = max(dot(n_24, nj), 0f);
     let dn2_ = (dn * dn);
     let dn4_ = (dn2_ * dn2_);
     let dn8_ = (dn4_ * dn4_);
-    let d_7 = ((zj - z_1) * inv_sz);
-    let t_6 = max((1f - (d_7 * d_7)), 0f);
+    let d_8 = ((zj - z_1) * inv_sz);
+    let t_6 = max((1f - (d_8 * d_8)), 0f);
     return (((dn8_ * dn8_) * t_6) * t_6);
 }
 
@@ -1451,34 +1523,34 @@ fn sees_emission(gn: vec3<f32>, dir_1: vec3<f32>) -> bool {
     return (dot(gn, dir_1) < 0f);
 }
 
-fn continues_path(nd: vec3<f32>, n_22: vec3<f32>, ng_1: vec3<f32>) -> bool {
-    var local_18: bool;
-
-    if (dot(nd, n_22) > 0f) {
-        local_18 = (dot(nd, ng_1) > 0f);
-    } else {
-        local_18 = false;
-    }
-    let _e12 = local_18;
-    return _e12;
-}
-
-fn finite3_(v_7: vec3<f32>) -> bool {
+fn continues_path(nd: vec3<f32>, n_25: vec3<f32>, ng_1: vec3<f32>) -> bool {
     var local_19: bool;
-    var local_20: bool;
 
-    if (abs(v_7.x) <= F32_MAX) {
-        local_19 = (abs(v_7.y) <= F32_MAX);
+    if (dot(nd, n_25) > 0f) {
+        local_19 = (dot(nd, ng_1) > 0f);
     } else {
         local_19 = false;
     }
     let _e12 = local_19;
-    if _e12 {
-        local_20 = (abs(v_7.z) <= F32_MAX);
+    return _e12;
+}
+
+fn finite3_(v_8: vec3<f32>) -> bool {
+    var local_20: bool;
+    var local_21: bool;
+
+    if (abs(v_8.x) <= F32_MAX) {
+        local_20 = (abs(v_8.y) <= F32_MAX);
     } else {
         local_20 = false;
     }
-    let _e20 = local_20;
+    let _e12 = local_20;
+    if _e12 {
+        local_21 = (abs(v_8.z) <= F32_MAX);
+    } else {
+        local_21 = false;
+    }
+    let _e20 = local_21;
     return _e20;
 }
 
@@ -1499,37 +1571,37 @@ fn light_map_texel(a_8: f32, size_7: u32) -> u32 {
     return _e14;
 }
 
-fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_2: vec3<f32>, extent_2: f32, perspective: bool) -> f32 {
-    return (dot(rel, dir_2) / (select(1f, dot(rel, axis_2), perspective) * extent_2));
+fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_5: vec3<f32>, extent_2: f32, perspective: bool) -> f32 {
+    return (dot(rel, dir_2) / (select(1f, dot(rel, axis_5), perspective) * extent_2));
 }
 
 fn display_encode(x_14: f32) -> f32 {
-    let v_17 = max(x_14, 0f);
-    let t_8 = ((2f * v_17) / (1f + (2f * v_17)));
+    let v_19 = max(x_14, 0f);
+    let t_8 = ((2f * v_19) / (1f + (2f * v_19)));
     return select(((1.055f * pow(t_8, 0.41666666f)) - 0.055f), (12.92f * t_8), (t_8 <= 0.0031308f));
 }
 
-fn light_map_depth(rel_1: vec3<f32>, axis_3: vec3<f32>, perspective_1: bool) -> f32 {
-    return select(dot(rel_1, axis_3), sqrt(dot(rel_1, rel_1)), perspective_1);
+fn light_map_depth(rel_1: vec3<f32>, axis_6: vec3<f32>, perspective_1: bool) -> f32 {
+    return select(dot(rel_1, axis_6), sqrt(dot(rel_1, rel_1)), perspective_1);
 }
 
 fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-fn point_irradiance(intensity_1: vec3<f32>, n_23: vec3<f32>, v_8: vec3<f32>) -> vec3<f32> {
-    let d2_14 = dot(v_8, v_8);
-    let cos_x_2 = (dot(n_23, v_8) / sqrt(max(d2_14, MIN_D2_)));
+fn point_irradiance(intensity_1: vec3<f32>, n_26: vec3<f32>, v_9: vec3<f32>) -> vec3<f32> {
+    let d2_14 = dot(v_9, v_9);
+    let cos_x_2 = (dot(n_26, v_9) / sqrt(max(d2_14, MIN_D2_)));
     let _e11 = inverse_square(d2_14);
     return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }
 
-fn directional_irradiance(e_1: vec3<f32>, n_24: vec3<f32>, to_light: vec3<f32>) -> vec3<f32> {
-    return (e_1 * max(dot(n_24, to_light), 0f));
+fn directional_irradiance(e_1: vec3<f32>, n_27: vec3<f32>, to_light: vec3<f32>) -> vec3<f32> {
+    return (e_1 * max(dot(n_27, to_light), 0f));
 }
 
-fn perspective_texel_width(extent_3: f32, d_3: f32, z_2: f32, size_8: f32) -> f32 {
-    return ((((2f * extent_3) * d_3) * d_3) / (size_8 * z_2));
+fn perspective_texel_width(extent_3: f32, d_4: f32, z_2: f32, size_8: f32) -> f32 {
+    return ((((2f * extent_3) * d_4) * d_4) / (size_8 * z_2));
 }
 
 fn ortho_texel_width(extent_4: f32, size_9: f32) -> f32 {
@@ -1541,15 +1613,15 @@ fn shadow_bias(texel: f32, cos_light_1: f32) -> f32 {
     return (texel * (1.5f + (sqrt((1f - (c_16 * c_16))) / c_16)));
 }
 
-fn shadow_lit(d_4: f32, d_map: f32, bias: f32) -> bool {
-    var local_21: bool;
+fn shadow_lit(d_5: f32, d_map: f32, bias: f32) -> bool {
+    var local_22: bool;
 
     if !((d_map <= 0f)) {
-        local_21 = (d_4 <= (d_map + bias));
+        local_22 = (d_5 <= (d_map + bias));
     } else {
-        local_21 = true;
+        local_22 = true;
     }
-    let _e11 = local_21;
+    let _e11 = local_22;
     return _e11;
 }
 
@@ -1593,7 +1665,7 @@ fn light_normal(l_7: GpuLight) -> vec3<f32> {
     return vec3(0f);
 }
 
-fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
+fn trace(o_2: vec3<f32>, d_6: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
@@ -1606,18 +1678,18 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         let _e13 = hit;
         return _e13;
     }
-    let _e14 = ray_inverse3_(d_5);
+    let _e14 = ray_inverse3_(d_6);
     loop {
         let _e21 = node;
-        let n_36 = geo_nodes[_e21];
+        let n_39 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_36.bmin, n_36.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_39.bmin, n_39.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_36.count > 0u) {
-                i_2 = n_36.first;
+            if (n_39.count > 0u) {
+                i_2 = n_39.first;
                 loop {
                     let _e36 = i_2;
-                    if (_e36 < (n_36.first + n_36.count)) {
+                    if (_e36 < (n_39.first + n_39.count)) {
                     } else {
                         break;
                     }
@@ -1625,7 +1697,7 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                         let _e42 = i_2;
                         let t_9 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_5, t_9.v0_, t_9.v1_, t_9.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_6, t_9.v0_, t_9.v1_, t_9.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i_2;
@@ -1645,11 +1717,11 @@ fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_36.first + 1u);
+                    stack[_e63] = (n_39.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_36.first;
+                node = n_39.first;
                 continue;
             }
         }
@@ -1781,35 +1853,35 @@ fn bsh_collect(x_16: vec3<f32>, seed_3: u32) -> Picks {
     return _e47;
 }
 
-fn connect(li: u32, x_17: vec3<f32>, n_25: vec3<f32>, ng_2: vec3<f32>, w_res: f32, u1_5: f32, u2_5: f32, eps: f32) -> Connection {
+fn connect(li: u32, x_17: vec3<f32>, n_28: vec3<f32>, ng_2: vec3<f32>, w_res: f32, u1_5: f32, u2_5: f32, eps: f32) -> Connection {
     var c_10: Connection;
-    var local_22: bool;
+    var local_23: bool;
 
     c_10.e = vec3(0f);
     let l_8 = lights[li];
     let _e16 = light_point(l_8, u1_5, u2_5);
     c_10.y = _e16;
     let _e19 = c_10.y;
-    let _e22 = r2_6[li];
-    let _e23 = connection_cosine(x_17, _e19, n_25, ng_2, _e22);
+    let _e22 = r2_7[li];
+    let _e23 = connection_cosine(x_17, _e19, n_28, ng_2, _e22);
     c_10.cos_x = _e23;
     let _e25 = c_10.cos_x;
     if !((_e25 <= 0f)) {
         let _e34 = c_10.y;
         let _e35 = occluded((x_17 + (ng_2 * eps)), _e34);
-        local_22 = _e35;
+        local_23 = _e35;
     } else {
-        local_22 = true;
+        local_23 = true;
     }
-    let _e37 = local_22;
+    let _e37 = local_23;
     if _e37 {
         let _e38 = c_10;
         return _e38;
     }
     let _e40 = c_10.y;
-    let v_18 = (x_17 - _e40);
-    let d2_15 = dot(v_18, v_18);
-    let _e47 = light_intensity(l_8, (v_18 / vec3(sqrt(d2_15))));
+    let v_20 = (x_17 - _e40);
+    let d2_15 = dot(v_20, v_20);
+    let _e47 = light_intensity(l_8, (v_20 / vec3(sqrt(d2_15))));
     let _e49 = c_10.cos_x;
     let _e52 = rt2_7[li];
     let _e53 = connection_factor(_e49, d2_15, _e52, w_res);
@@ -1823,11 +1895,11 @@ fn mis_weight(pdf_a_2: f32, pdf_b_2: f32) -> f32 {
     return _e2;
 }
 
-fn light_weight(li_1: u32, x_18: vec3<f32>, n_26: vec3<f32>) -> f32 {
+fn light_weight(li_1: u32, x_18: vec3<f32>, n_29: vec3<f32>, r_6: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
     let c_17 = light_cones[li_1];
-    let _e14 = rt2_7[li_1];
-    let _e15 = cone_weight(c_17.center, c_17.radius, c_17.phi, c_17.axis, c_17.cos_o, c_17.cos_e, _e14, x_18, n_26);
-    return _e15;
+    let _e16 = rt2_7[li_1];
+    let _e17 = cone_weight(c_17.center, c_17.radius, c_17.phi, c_17.axis, c_17.cos_o, c_17.cos_e, _e16, x_18, n_29, r_6, lobe_4);
+    return _e17;
 }
 
 fn light_bvh_node(nodes_5: u32, i_7: u32) -> GpuLightBvhNode {
@@ -1839,193 +1911,192 @@ fn light_bvh_count(nodes_6: u32) -> u32 {
     return arrayLength((&light_bvh));
 }
 
-fn bvh_importance(nodes_7: u32, i_8: u32, x_19: vec3<f32>, n_27: vec3<f32>) -> f32 {
-    let _e4 = light_bvh_node(nodes_7, i_8);
-    let _e11 = light_importance(_e4.center, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_19, n_27);
-    return _e11;
+fn bvh_importance(nodes_7: u32, i_8: u32, x_19: vec3<f32>, n_30: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
+    let _e6 = light_bvh_node(nodes_7, i_8);
+    let _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_19, n_30, r_7, lobe_5);
+    return _e13;
 }
 
-fn bvh_first(nodes_8: u32, i_9: u32, x_20: vec3<f32>, n_28: vec3<f32>) -> f32 {
-    var local_23: bool;
+fn bvh_first(nodes_8: u32, i_9: u32, x_20: vec3<f32>, n_31: vec3<f32>, r_8: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
+    var local_24: bool;
 
-    let _e4 = light_bvh_node(nodes_8, i_9);
-    let j = _e4.second;
+    let _e6 = light_bvh_node(nodes_8, i_9);
+    let j = _e6.second;
     if !((j <= (i_9 + 1u))) {
-        let _e12 = light_bvh_count(nodes_8);
-        local_23 = (j >= _e12);
+        let _e14 = light_bvh_count(nodes_8);
+        local_24 = (j >= _e14);
     } else {
-        local_23 = true;
+        local_24 = true;
     }
-    let _e15 = local_23;
-    if _e15 {
+    let _e17 = local_24;
+    if _e17 {
         return -1f;
     }
-    let _e19 = bvh_importance(nodes_8, (i_9 + 1u), x_20, n_28);
-    let _e20 = bvh_importance(nodes_8, j, x_20, n_28);
-    let _e21 = bvh_first_prob(_e19, _e20);
-    return _e21;
+    let _e21 = bvh_importance(nodes_8, (i_9 + 1u), x_20, n_31, r_8, lobe_6);
+    let _e22 = bvh_importance(nodes_8, j, x_20, n_31, r_8, lobe_6);
+    let _e23 = bvh_first_prob(_e21, _e22);
+    return _e23;
 }
 
 fn bvh_pick_none() -> BvhPick {
     return BvhPick(0u, 0f);
 }
 
-fn light_bvh_sample(nodes_9: u32, x_21: vec3<f32>, n_29: vec3<f32>, u_in: f32) -> BvhPick {
+fn light_bvh_sample(nodes_9: u32, x_21: vec3<f32>, n_32: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, u_in: f32) -> BvhPick {
     var pick: BvhPick;
     var u_6: f32;
     var i_10: u32 = 0u;
     var pmf: f32 = 1f;
-    var local_24: bool;
+    var local_25: bool;
 
-    let _e4 = bvh_pick_none();
-    pick = _e4;
+    let _e6 = bvh_pick_none();
+    pick = _e6;
     u_6 = u_in;
     loop {
-        let _e11 = i_10;
-        let _e12 = light_bvh_count(nodes_9);
-        if (_e11 < _e12) {
+        let _e13 = i_10;
+        let _e14 = light_bvh_count(nodes_9);
+        if (_e13 < _e14) {
         } else {
             break;
         }
         {
-            let _e14 = i_10;
-            let _e15 = light_bvh_node(nodes_9, _e14);
-            if (_e15.second == LIGHT_BVH_LEAF) {
-                let _e19 = i_10;
-                if !((_e19 > 0u)) {
-                    let _e26 = bvh_importance(nodes_9, 0u, x_21, n_29);
-                    local_24 = (_e26 > 0f);
+            let _e16 = i_10;
+            let _e17 = light_bvh_node(nodes_9, _e16);
+            if (_e17.second == LIGHT_BVH_LEAF) {
+                let _e21 = i_10;
+                if !((_e21 > 0u)) {
+                    let _e28 = bvh_importance(nodes_9, 0u, x_21, n_32, r_9, lobe_7);
+                    local_25 = (_e28 > 0f);
                 } else {
-                    local_24 = true;
+                    local_25 = true;
                 }
-                let _e30 = local_24;
-                if _e30 {
-                    pick.light = _e15.light;
-                    let _e34 = pmf;
-                    pick.pmf = _e34;
+                let _e32 = local_25;
+                if _e32 {
+                    pick.light = _e17.light;
+                    let _e36 = pmf;
+                    pick.pmf = _e36;
                 }
-                let _e35 = pick;
-                return _e35;
+                let _e37 = pick;
+                return _e37;
             }
-            let _e36 = i_10;
-            let _e37 = bvh_first(nodes_9, _e36, x_21, n_29);
-            if (_e37 < 0f) {
-                let _e40 = pick;
-                return _e40;
+            let _e38 = i_10;
+            let _e39 = bvh_first(nodes_9, _e38, x_21, n_32, r_9, lobe_7);
+            if (_e39 < 0f) {
+                let _e42 = pick;
+                return _e42;
             }
-            let _e41 = u_6;
-            let first_1 = (_e41 < _e37);
-            let _e43 = pmf;
-            pmf = (_e43 * select((1f - _e37), _e37, first_1));
-            let _e48 = u_6;
-            let _e49 = bvh_remap_u(_e48, _e37, first_1);
-            u_6 = _e49;
-            let _e51 = i_10;
-            i_10 = select(_e15.second, (_e51 + 1u), first_1);
+            let _e43 = u_6;
+            let first_1 = (_e43 < _e39);
+            let _e45 = pmf;
+            pmf = (_e45 * select((1f - _e39), _e39, first_1));
+            let _e50 = u_6;
+            let _e51 = bvh_remap_u(_e50, _e39, first_1);
+            u_6 = _e51;
+            let _e53 = i_10;
+            i_10 = select(_e17.second, (_e53 + 1u), first_1);
         }
     }
-    let _e55 = pick;
-    return _e55;
+    let _e57 = pick;
+    return _e57;
 }
 
-fn light_bvh_pmf(nodes_10: u32, leaf: u32, x_22: vec3<f32>, n_30: vec3<f32>) -> f32 {
+fn light_bvh_pmf(nodes_10: u32, leaf: u32, x_22: vec3<f32>, n_33: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>) -> f32 {
     var i_11: u32 = 0u;
     var pmf_1: f32 = 1f;
-    var local_25: bool;
     var local_26: bool;
+    var local_27: bool;
 
-    let _e4 = light_bvh_count(nodes_10);
-    if (leaf >= _e4) {
+    let _e6 = light_bvh_count(nodes_10);
+    if (leaf >= _e6) {
         return 0f;
     }
     loop {
-        let _e11 = i_11;
-        let _e12 = light_bvh_count(nodes_10);
-        if (_e11 < _e12) {
+        let _e13 = i_11;
+        let _e14 = light_bvh_count(nodes_10);
+        if (_e13 < _e14) {
         } else {
             break;
         }
         {
-            let _e14 = i_11;
-            let _e15 = light_bvh_node(nodes_10, _e14);
-            if (_e15.second == LIGHT_BVH_LEAF) {
-                let _e19 = i_11;
-                if (_e19 == leaf) {
-                    let _e23 = i_11;
-                    if !((_e23 > 0u)) {
-                        let _e30 = bvh_importance(nodes_10, 0u, x_22, n_30);
-                        local_26 = (_e30 > 0f);
+            let _e16 = i_11;
+            let _e17 = light_bvh_node(nodes_10, _e16);
+            if (_e17.second == LIGHT_BVH_LEAF) {
+                let _e21 = i_11;
+                if (_e21 == leaf) {
+                    let _e25 = i_11;
+                    if !((_e25 > 0u)) {
+                        let _e32 = bvh_importance(nodes_10, 0u, x_22, n_33, r_10, lobe_8);
+                        local_27 = (_e32 > 0f);
                     } else {
-                        local_26 = true;
+                        local_27 = true;
                     }
-                    let _e34 = local_26;
-                    local_25 = _e34;
+                    let _e36 = local_27;
+                    local_26 = _e36;
                 } else {
-                    local_25 = false;
+                    local_26 = false;
                 }
-                let _e36 = local_25;
-                if _e36 {
-                    let _e37 = pmf_1;
-                    return _e37;
+                let _e38 = local_26;
+                if _e38 {
+                    let _e39 = pmf_1;
+                    return _e39;
                 }
                 return 0f;
             }
-            let _e39 = i_11;
-            let _e40 = bvh_first(nodes_10, _e39, x_22, n_30);
-            if (_e40 < 0f) {
+            let _e41 = i_11;
+            let _e42 = bvh_first(nodes_10, _e41, x_22, n_33, r_10, lobe_8);
+            if (_e42 < 0f) {
                 return 0f;
             }
-            let first_2 = (leaf < _e15.second);
-            let _e46 = pmf_1;
-            pmf_1 = (_e46 * select((1f - _e40), _e40, first_2));
-            let _e52 = i_11;
-            i_11 = select(_e15.second, (_e52 + 1u), first_2);
+            let first_2 = (leaf < _e17.second);
+            let _e48 = pmf_1;
+            pmf_1 = (_e48 * select((1f - _e42), _e42, first_2));
+            let _e54 = i_11;
+            i_11 = select(_e17.second, (_e54 + 1u), first_2);
         }
     }
     return 0f;
 }
 
-fn select_pdf(li_2: u32, x_23: vec3<f32>, n_31: vec3<f32>, nee: u32, in_range_2: bool) -> f32 {
-    let _e9 = light_cones[li_2].bvh_leaf;
-    let _e10 = light_bvh_pmf(BVH, _e9, x_23, n_31);
-    return _e10;
+fn select_pdf(li_2: u32, x_23: vec3<f32>, n_34: vec3<f32>, r_11: vec3<f32>, lobe_9: vec4<f32>, nee: u32, in_range_2: bool) -> f32 {
+    let _e11 = light_cones[li_2].bvh_leaf;
+    let _e12 = light_bvh_pmf(BVH, _e11, x_23, n_34, r_11, lobe_9);
+    return _e12;
 }
 
-fn light_pdf(li_3: u32, x_24: vec3<f32>, n_32: vec3<f32>, y_3: vec3<f32>, nee_1: u32, in_range_3: bool) -> f32 {
+fn light_pdf(li_3: u32, x_24: vec3<f32>, n_35: vec3<f32>, r_12: vec3<f32>, lobe_10: vec4<f32>, y_3: vec3<f32>, nee_1: u32, in_range_3: bool) -> f32 {
     let l_9 = lights[li_3];
-    let v_19 = (x_24 - y_3);
-    let d2_16 = dot(v_19, v_19);
-    let _e11 = light_normal(l_9);
-    let cos_y_1 = select(0f, dot(_e11, (v_19 / vec3(sqrt(d2_16)))), (d2_16 > 0f));
-    let _e20 = select_pdf(li_3, x_24, n_32, nee_1, in_range_3);
-    let _e23 = rt2_7[li_3];
-    let _e24 = light_area(l_9);
-    let _e25 = light_strategy_pdf(_e20, _e23, d2_16, _e24, cos_y_1);
-    return _e25;
+    let v_21 = (x_24 - y_3);
+    let d2_16 = dot(v_21, v_21);
+    let _e13 = light_normal(l_9);
+    let cos_y_1 = select(0f, dot(_e13, (v_21 / vec3(sqrt(d2_16)))), (d2_16 > 0f));
+    let _e22 = select_pdf(li_3, x_24, n_35, r_12, lobe_10, nee_1, in_range_3);
+    let _e25 = rt2_7[li_3];
+    let _e26 = light_area(l_9);
+    let _e27 = light_strategy_pdf(_e22, _e25, d2_16, _e26, cos_y_1);
+    return _e27;
 }
 
-fn shade_pick(li_4: u32, x_25: vec3<f32>, n_33: vec3<f32>, ng_3: vec3<f32>, w_11: f32, nee_2: u32, u1_6: f32, u2_6: f32) -> vec3<f32> {
+fn shade_pick(li_4: u32, x_25: vec3<f32>, n_36: vec3<f32>, ng_3: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_13: vec3<f32>, lobe_11: vec4<f32>, w_11: f32, nee_2: u32, u1_6: f32, u2_6: f32) -> vec3<f32> {
     var mis: f32 = 1f;
-    var local_27: bool;
 
-    let _e10 = params.eps;
-    let _e11 = connect(li_4, x_25, n_33, ng_3, w_11, u1_6, u2_6, _e10);
-    let _e16 = lights[li_4];
-    let _e17 = light_area(_e16);
-    if (_e17 > 0f) {
-        local_27 = (_e11.cos_x > 0f);
-    } else {
-        local_27 = false;
+    let _e14 = params.eps;
+    let _e15 = connect(li_4, x_25, n_36, ng_3, w_11, u1_6, u2_6, _e14);
+    if (_e15.cos_x <= 0f) {
+        return vec3(0f);
     }
-    let _e26 = local_27;
-    if _e26 {
-        let _e29 = light_pdf(li_4, x_25, n_33, _e11.y, nee_2, true);
-        let _e31 = cosine_pdf(_e11.cos_x);
-        let _e32 = mis_weight(_e29, _e31);
-        mis = _e32;
+    let l_10 = normalize((_e15.y - x_25));
+    let _e28 = lights[li_4];
+    let _e29 = light_area(_e28);
+    if (_e29 > 0f) {
+        let _e34 = light_pdf(li_4, x_25, n_36, r_13, lobe_11, _e15.y, nee_2, true);
+        let _e36 = specular_probability(lobe_11);
+        let _e37 = bsdf_pdf(n_36, wo_1, l_10, m.alpha, _e36);
+        let _e38 = mis_weight(_e34, _e37);
+        mis = _e38;
     }
-    let _e34 = mis;
-    return (_e11.e * _e34);
+    let _e44 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_36, wo_1, l_10);
+    let _e47 = mis;
+    return ((_e44 * _e15.e) * _e47);
 }
 
 @compute @workgroup_size(64, 1, 1) 
@@ -2044,42 +2115,46 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     let x_26 = vtx.position;
-    let n_37 = vtx.normal;
+    let n_40 = vtx.normal;
     let ng_4 = vtx.gnormal;
-    let _e20 = params.seed;
-    let _e23 = params.frame;
-    let _e24 = point_stream(_e20, i_12, _e23);
-    let _e25 = pick_stream(_e24);
-    h = _e25;
+    let m_4 = materials[vtx.material];
+    let wo_2 = vtx.wo;
+    let _e23 = mirror_dir(n_40, wo_2);
+    let _e30 = receiver_lobe(m_4.albedo, m_4.metallic, m_4.f0_, m_4.f90_, m_4.alpha, dot(n_40, wo_2));
+    let _e33 = params.seed;
+    let _e36 = params.frame;
+    let _e37 = point_stream(_e33, i_12, _e36);
+    let _e38 = pick_stream(_e37);
+    h = _e38;
     candidates[i_12] = 0u;
-    let _e33 = h;
-    let _e34 = pcg_hash(_e33);
-    h = _e34;
-    let _e35 = h;
-    let _e36 = xi_from_bits(_e35);
-    let _e38 = light_bvh_sample(BVH, x_26, n_37, _e36);
-    let li_5 = _e38.light;
-    let pmf_2 = _e38.pmf;
-    let _e41 = h;
-    let _e42 = pcg_hash(_e41);
-    h = _e42;
-    let _e43 = h;
-    let _e44 = xi_from_bits(_e43);
-    let _e45 = h;
-    let _e46 = pcg_hash(_e45);
-    h = _e46;
-    let _e47 = h;
-    let _e48 = xi_from_bits(_e47);
+    let _e46 = h;
+    let _e47 = pcg_hash(_e46);
+    h = _e47;
+    let _e48 = h;
+    let _e49 = xi_from_bits(_e48);
+    let _e51 = light_bvh_sample(BVH, x_26, n_40, _e23, _e30, _e49);
+    let li_5 = _e51.light;
+    let pmf_2 = _e51.pmf;
+    let _e54 = h;
+    let _e55 = pcg_hash(_e54);
+    h = _e55;
+    let _e56 = h;
+    let _e57 = xi_from_bits(_e56);
+    let _e58 = h;
+    let _e59 = pcg_hash(_e58);
+    h = _e59;
+    let _e60 = h;
+    let _e61 = xi_from_bits(_e60);
     if (pmf_2 > 0f) {
-        let _e54 = shade_pick(li_5, x_26, n_37, ng_4, (1f / pmf_2), 0u, _e44, _e48);
-        sum = _e54;
+        let _e67 = shade_pick(li_5, x_26, n_40, ng_4, m_4, wo_2, _e23, _e30, (1f / pmf_2), 0u, _e57, _e61);
+        sum = _e67;
     }
-    let _e56 = sum;
-    let add = (vtx.weight * _e56);
-    let _e58 = finite3_(add);
-    if _e58 {
-        let _e61 = radiance[i_12];
-        radiance[i_12] = (_e61 + vec4<f32>(add, 0f));
+    let _e69 = sum;
+    let add = (vtx.weight * _e69);
+    let _e71 = finite3_(add);
+    if _e71 {
+        let _e74 = radiance[i_12];
+        radiance[i_12] = (_e74 + vec4<f32>(add, 0f));
         return;
     } else {
         return;

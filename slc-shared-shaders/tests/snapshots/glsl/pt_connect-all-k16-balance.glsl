@@ -41,11 +41,13 @@ struct GpuPathVertex {
     vec3 position;
     uint alive;
     vec3 normal;
-    float pad;
+    uint material;
     vec3 weight;
     float pad1_;
     vec3 gnormal;
     float pad2_;
+    vec3 wo;
+    float pad3_;
 };
 struct GpuPathState {
     vec3 origin;
@@ -58,6 +60,9 @@ struct GpuPathState {
     uint pad;
     vec3 prev_normal;
     uint pad2_;
+    vec3 prev_r;
+    uint pad3_;
+    vec4 prev_lobe;
 };
 struct PtParams {
     vec3 cam_pos;
@@ -141,9 +146,11 @@ struct GpuVertex {
 };
 struct GpuMaterial {
     vec3 albedo;
-    uint pad0_;
+    float metallic;
     vec3 emission;
-    uint pad1_;
+    float alpha;
+    vec3 f0_;
+    float f90_;
 };
 struct MapParams {
     vec4 c0_;
@@ -221,10 +228,10 @@ const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
+const float GGX_ALPHA_MIN = 0.001;
 const uint LIGHT_BVH_LEAF = 4294967295u;
 const float ONE_MINUS_EPSILON = 0.99999994;
 const float F32_MAX = 3.4028235e38;
-const float GGX_ALPHA_MIN = 0.001;
 const float DEPTH_NONE = 1e30;
 const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
@@ -252,9 +259,11 @@ layout(std140) uniform ShadeParams_block_7Compute { ShadeParams _group_0_binding
 
 layout(std430) readonly buffer type_15_block_8Compute { GpuPathVertex _group_0_binding_1_cs[]; };
 
-layout(std430) buffer type_12_block_9Compute { vec4 _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_16_block_9Compute { GpuMaterial _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_16_block_10Compute { uint _group_0_binding_9_cs[]; };
+layout(std430) buffer type_12_block_10Compute { vec4 _group_0_binding_9_cs[]; };
+
+layout(std430) buffer type_17_block_11Compute { uint _group_0_binding_10_cs[]; };
 
 
 float at(uint tab, uint i) {
@@ -388,14 +397,14 @@ float windowed_falloff(float d2_4, float range2_1) {
 }
 
 bool sphere_contains_point(vec3 c, float r, vec3 x_3) {
-    vec3 v_9 = (x_3 - c);
-    return (dot(v_9, v_9) <= (r * r));
+    vec3 v_10 = (x_3 - c);
+    return (dot(v_10, v_10) <= (r * r));
 }
 
 bool sphere_overlaps_sphere(vec3 c1_, float r1_, vec3 c2_, float r2_2) {
-    vec3 v_10 = (c2_ - c1_);
-    float r_3 = (r1_ + r2_2);
-    return (dot(v_10, v_10) <= (r_3 * r_3));
+    vec3 v_11 = (c2_ - c1_);
+    float r_14 = (r1_ + r2_2);
+    return (dot(v_11, v_11) <= (r_14 * r_14));
 }
 
 float sphere_pad(float r_1, vec3 c_1) {
@@ -404,18 +413,18 @@ float sphere_pad(float r_1, vec3 c_1) {
 
 vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
     bool local = false;
-    vec3 v_11 = (c2_1 - c1_1);
-    float d_6 = sqrt(dot(v_11, v_11));
+    vec3 v_12 = (c2_1 - c1_1);
+    float d_7 = sqrt(dot(v_12, v_12));
     float _e8 = sphere_pad(r1_1, c1_1);
-    if ((r1_1 >= ((d_6 + r2_3) + _e8))) {
+    if ((r1_1 >= ((d_7 + r2_3) + _e8))) {
         return vec4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     float _e16 = sphere_pad(r2_3, c2_1);
-    if ((r2_3 >= ((d_6 + r1_1) + _e16))) {
+    if ((r2_3 >= ((d_7 + r1_1) + _e16))) {
         return vec4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_6 >= SPHERE_HUGE))) {
-        local = ((0.5 * ((d_6 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if (!((d_7 >= SPHERE_HUGE))) {
+        local = ((0.5 * ((d_7 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local = true;
     }
@@ -423,29 +432,29 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
     if (_e35) {
         return vec4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if ((abs((r1_1 - r2_3)) >= d_6)) {
+    if ((abs((r1_1 - r2_3)) >= d_7)) {
         if ((r1_1 >= r2_3)) {
-            float rn = max(r1_1, (d_6 + r2_3));
+            float rn = max(r1_1, (d_7 + r2_3));
             float _e50 = sphere_pad(rn, c1_1);
             return vec4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        float rm = max(r2_3, (d_6 + r1_1));
+        float rm = max(r2_3, (d_7 + r1_1));
         float _e58 = sphere_pad(rm, c2_1);
         return vec4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    float r0_ = (0.5 * ((d_6 + r1_1) + r2_3));
-    vec3 c_11 = (c1_1 + (v_11 * ((r0_ - r1_1) / d_6)));
+    float r0_ = (0.5 * ((d_7 + r1_1) + r2_3));
+    vec3 c_11 = (c1_1 + (v_12 * ((r0_ - r1_1) / d_7)));
     vec3 e1_ = (c_11 - c1_1);
     vec3 e2_ = (c_11 - c2_1);
-    float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    float _e82 = sphere_pad(r_4, c_11);
-    return vec4(c_11.x, c_11.y, c_11.z, (r_4 + _e82));
+    float r_15 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
+    float _e82 = sphere_pad(r_15, c_11);
+    return vec4(c_11.x, c_11.y, c_11.z, (r_15 + _e82));
 }
 
 bool sphere_overlaps_aabb(vec3 c_2, float r_2, vec3 bmin, vec3 bmax) {
     vec3 q_3 = clamp(c_2, bmin, bmax);
-    vec3 v_12 = (q_3 - c_2);
-    return (dot(v_12, v_12) <= (r_2 * r_2));
+    vec3 v_13 = (q_3 - c_2);
+    return (dot(v_13, v_13) <= (r_2 * r_2));
 }
 
 float vpl_rt2_(vec3 flux, float exposure_1, float error_bound_1, uint mode_1) {
@@ -471,8 +480,8 @@ float connection_factor(float cos_x, float d2_6, float rt2_3, float w) {
 float connection_cosine(vec3 x_4, vec3 y, vec3 n, vec3 ng, float r2_5) {
     bool local_1 = false;
     bool local_2 = false;
-    vec3 v_13 = (x_4 - y);
-    float d2_12 = dot(v_13, v_13);
+    vec3 v_14 = (x_4 - y);
+    float d2_12 = dot(v_14, v_14);
     bool _e7 = slc_keep(r2_5, d2_12);
     if (!(!(_e7))) {
         local_1 = !((d2_12 > 0.0));
@@ -483,7 +492,7 @@ float connection_cosine(vec3 x_4, vec3 y, vec3 n, vec3 ng, float r2_5) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_13 = (v_13 / vec3(sqrt(d2_12)));
+    vec3 w_13 = (v_14 / vec3(sqrt(d2_12)));
     float cos_x_1 = -(dot(n, w_13));
     if (!((cos_x_1 <= 0.0))) {
         local_2 = (dot(ng, w_13) >= 0.0);
@@ -502,8 +511,8 @@ float vpl_lobe(vec3 n_1, vec3 w_1) {
 }
 
 float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v_1, float min_d2_) {
-    float m = max(dot(v_1, v_1), min_d2_);
-    return (((max(dot(n_l, v_1), 0.0) * max(-(dot(n_x, v_1)), 0.0)) * INV_PI) / (m * m));
+    float m_1 = max(dot(v_1, v_1), min_d2_);
+    return (((max(dot(n_l, v_1), 0.0) * max(-(dot(n_x, v_1)), 0.0)) * INV_PI) / (m_1 * m_1));
 }
 
 float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
@@ -553,8 +562,8 @@ float atan_portable(float x_5) {
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_5 = (_e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35));
-    return ((x_5 < 0.0) ? -(r_5) : r_5);
+    float r_16 = (_e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35));
+    return ((x_5 < 0.0) ? -(r_16) : r_16);
 }
 
 float atan2_portable(float y_1, float x_6) {
@@ -801,264 +810,43 @@ uint uniform_light(float u_3, uint n_8) {
     return min(_e4, (n_8 - 1u));
 }
 
-float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
-    if ((cos_a > cos_b)) {
-        return 1.0;
-    }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
-}
-
-float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1) {
-    if ((cos_a_1 > cos_b_1)) {
-        return 0.0;
-    }
-    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
-}
-
-float safe_sqrt(float x_9) {
-    return sqrt(max(x_9, 0.0));
-}
-
-float light_importance(vec3 center, float radius, float phi, vec3 axis, float cos_o, float cos_e, vec3 p, vec3 n_9) {
-    float imp = 0.0;
-    vec3 v_14 = (p - center);
-    float dist2_ = dot(v_14, v_14);
-    float r2_7 = (radius * radius);
-    float d2_13 = max(max(dist2_, r2_7), MIN_D2_);
-    vec3 wi_3 = ((dist2_ > 0.0) ? (v_14 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
-    float cos_w = dot(axis, wi_3);
-    float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    float _e32 = safe_sqrt((1.0 - (r2_7 / dist2_)));
-    float cos_b_2 = ((dist2_ <= r2_7) ? -1.0 : _e32);
-    float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
-    float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
-    float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
-    float _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
-    float _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
-    if ((_e46 <= cos_e)) {
-        return 0.0;
-    }
-    imp = ((phi * _e46) / d2_13);
-    if ((dot(n_9, n_9) > 0.0)) {
-        float cos_i = -(dot(wi_3, n_9));
-        float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
-        float _e61 = imp;
-        float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
-        imp = (_e61 * max(_e62, 0.0));
-    }
-    float _e66 = imp;
-    return max(_e66, 0.0);
-}
-
-float candidate_weight(float importance, float rt2_4, float d2_8) {
-    float _e3 = slc_weight(rt2_4, d2_8);
-    return (importance * _e3);
-}
-
-float cone_weight(vec3 center_1, float radius_1, float phi_1, vec3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, vec3 p_1, vec3 n_10) {
-    vec3 v_15 = (p_1 - center_1);
-    float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
-    float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_15, v_15));
-    return _e14;
-}
-
-float weighted_select_pdf(float w_6, float w_sum_2, bool in_range_1, uint k_4) {
-    if ((w_6 <= 0.0)) {
-        return 0.0;
-    }
-    float total = (in_range_1 ? w_sum_2 : (w_sum_2 + w_6));
-    float _e9 = to_f32_(k_4);
-    return ((_e9 * w_6) / total);
-}
-
-float bvh_first_prob(float c0_, float c1_2) {
-    float s_1 = (c0_ + c1_2);
-    if ((s_1 > 0.0)) {
-        return (c0_ / s_1);
-    }
-    return -1.0;
-}
-
-float bvh_remap_u(float u_4, float p0_, bool first) {
-    if (first) {
-        return min((u_4 / p0_), ONE_MINUS_EPSILON);
-    }
-    return clamp(((u_4 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
-}
-
-float surface_offset(float diag) {
-    return (1e-5 * diag);
-}
-
-float ray_t_min(float diag_1) {
-    return (1e-6 * diag_1);
-}
-
-float shadow_margin(float len) {
-    return (0.0001 * len);
-}
-
-float ray_inverse(float x_10) {
-    return (1.0 / ((abs(x_10) < 1e-30) ? 1e-30 : x_10));
-}
-
-vec3 ray_inverse3_(vec3 d) {
-    float _e2 = ray_inverse(d.x);
-    float _e4 = ray_inverse(d.y);
-    float _e6 = ray_inverse(d.z);
-    return vec3(_e2, _e4, _e6);
-}
-
-float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
-    vec3 t0_ = ((bmin_1 - o) * inv_d);
-    vec3 t1_ = ((bmax_1 - o) * inv_d);
-    vec3 lo_3 = min(t0_, t1_);
-    vec3 hi_3 = max(t0_, t1_);
-    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
-    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
-    if ((t_in <= t_out)) {
-        return t_in;
-    }
-    return -1.0;
-}
-
-vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
-    bool local_5 = false;
-    vec3 n_34 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_34, n_34);
-    if (!(!((l2_ > 0.0)))) {
-        local_5 = !((l2_ < 3e38));
-    } else {
-        local_5 = true;
-    }
-    bool _e17 = local_5;
-    if (_e17) {
-        return vec3(0.0, 0.0, 0.0);
-    }
-    return (n_34 / vec3(sqrt(l2_)));
-}
-
-vec3 face_against(vec3 n_11, vec3 dir) {
-    return ((dot(n_11, dir) > 0.0) ? -(n_11) : n_11);
-}
-
-vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
-    vec3 e1_1 = (b_5 - a_6);
-    vec3 e2_1 = (c_7 - a_6);
-    vec3 q_4 = (p_2 - a_6);
-    float d11_ = dot(e1_1, e1_1);
-    float d12_ = dot(e1_1, e2_1);
-    float d22_ = dot(e2_1, e2_1);
-    float den = ((d11_ * d22_) - (d12_ * d12_));
-    if (!((abs(den) > 0.0))) {
-        return vec3(1.0, 0.0, 0.0);
-    }
-    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
-    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
-    return vec3(((1.0 - w1_) - w2_), w1_, w2_);
-}
-
-vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_7, vec3 facing) {
-    bool local_6 = false;
-    vec3 s_2 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
-    float l2_1 = dot(s_2, s_2);
-    if (!(!((l2_1 > 1e-12)))) {
-        local_6 = !((l2_1 < 3e38));
-    } else {
-        local_6 = true;
-    }
-    bool _e24 = local_6;
-    if (_e24) {
-        return facing;
-    }
-    vec3 n_35 = (s_2 / vec3(sqrt(l2_1)));
-    return ((dot(n_35, facing) < 0.0) ? -(n_35) : n_35);
-}
-
-float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, float t_max_1) {
-    bool local_7 = false;
-    bool local_8 = false;
-    bool local_9 = false;
-    vec3 e1_2 = (b_6 - a_7);
-    vec3 e2_2 = (c_8 - a_7);
-    vec3 p_3 = cross(d_1, e2_2);
-    float det = dot(e1_2, p_3);
-    if ((abs(det) <= 0.0)) {
-        return -1.0;
-    }
-    float inv = (1.0 / det);
-    vec3 s_3 = (o_1 - a_7);
-    float u_7 = (dot(s_3, p_3) * inv);
-    if (!((u_7 < 0.0))) {
-        local_7 = (u_7 > 1.0);
-    } else {
-        local_7 = true;
-    }
-    bool _e28 = local_7;
-    if (_e28) {
-        return -1.0;
-    }
-    vec3 q_5 = cross(s_3, e1_2);
-    float v_16 = (dot(d_1, q_5) * inv);
-    if (!((v_16 < 0.0))) {
-        local_8 = ((u_7 + v_16) > 1.0);
-    } else {
-        local_8 = true;
-    }
-    bool _e42 = local_8;
-    if (_e42) {
-        return -1.0;
-    }
-    float t_3 = (dot(e2_2, q_5) * inv);
-    if ((t_3 > t_min)) {
-        local_9 = (t_3 < t_max_1);
-    } else {
-        local_9 = false;
-    }
-    bool _e51 = local_9;
-    if (_e51) {
-        return t_3;
-    }
-    return -1.0;
-}
-
 float mis_balance(float pdf_a, float pdf_b) {
-    float s_4 = (pdf_a + pdf_b);
-    if ((s_4 <= 0.0)) {
+    float s_1 = (pdf_a + pdf_b);
+    if ((s_1 <= 0.0)) {
         return 0.0;
     }
-    return (pdf_a / s_4);
+    return (pdf_a / s_1);
 }
 
 float mis_power(float pdf_a_1, float pdf_b_1) {
     float a2_ = (pdf_a_1 * pdf_a_1);
-    float s_5 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if ((s_5 <= 0.0)) {
+    float s_2 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_2 <= 0.0)) {
         return 0.0;
     }
-    return (a2_ / s_5);
+    return (a2_ / s_2);
 }
 
-float light_strategy_pdf(float select, float rt2_6, float d2_9, float area_1, float cos_y) {
-    bool local_10 = false;
-    bool local_11 = false;
-    if (!((d2_9 <= 0.0))) {
-        local_10 = (area_1 <= 0.0);
+float light_strategy_pdf(float select, float rt2_4, float d2_8, float area_1, float cos_y) {
+    bool local_5 = false;
+    bool local_6 = false;
+    if (!((d2_8 <= 0.0))) {
+        local_5 = (area_1 <= 0.0);
     } else {
-        local_10 = true;
+        local_5 = true;
     }
-    bool _e13 = local_10;
+    bool _e13 = local_5;
     if (!(_e13)) {
-        local_11 = (cos_y <= 0.0);
+        local_6 = (cos_y <= 0.0);
     } else {
-        local_11 = true;
+        local_6 = true;
     }
-    bool _e20 = local_11;
+    bool _e20 = local_6;
     if (_e20) {
         return 0.0;
     }
-    float _e22 = rr_probability(rt2_6, d2_9);
-    float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_9, cos_y);
+    float _e22 = rr_probability(rt2_4, d2_8);
+    float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_8, cos_y);
     return ((select * _e22) * _e26);
 }
 
@@ -1070,34 +858,34 @@ float cosine_pdf(float cos_theta_1) {
     return (max(cos_theta_1, 0.0) * INV_PI);
 }
 
-vec3 onb_tangent(vec3 n_12) {
-    float s_6 = ((n_12.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_6 + n_12.z));
-    return vec3((1.0 + (((s_6 * n_12.x) * n_12.x) * a_12)), (((s_6 * n_12.x) * n_12.y) * a_12), (-(s_6) * n_12.x));
+vec3 onb_tangent(vec3 n_9) {
+    float s_3 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_3 + n_9.z));
+    return vec3((1.0 + (((s_3 * n_9.x) * n_9.x) * a_12)), (((s_3 * n_9.x) * n_9.y) * a_12), (-(s_3) * n_9.x));
 }
 
-vec3 onb_bitangent(vec3 n_13) {
-    float s_7 = ((n_13.z >= 0.0) ? 1.0 : -1.0);
-    float a_13 = (-1.0 / (s_7 + n_13.z));
-    return vec3(((n_13.x * n_13.y) * a_13), (s_7 + ((n_13.y * n_13.y) * a_13)), -(n_13.y));
+vec3 onb_bitangent(vec3 n_10) {
+    float s_4 = ((n_10.z >= 0.0) ? 1.0 : -1.0);
+    float a_13 = (-1.0 / (s_4 + n_10.z));
+    return vec3(((n_10.x * n_10.y) * a_13), (s_4 + ((n_10.y * n_10.y) * a_13)), -(n_10.y));
 }
 
-vec3 onb_to_world(vec3 n_14, vec3 d_2) {
-    vec3 _e2 = onb_tangent(n_14);
-    vec3 _e5 = onb_bitangent(n_14);
-    return (((_e2 * d_2.x) + (_e5 * d_2.y)) + (n_14 * d_2.z));
+vec3 onb_to_world(vec3 n_11, vec3 d) {
+    vec3 _e2 = onb_tangent(n_11);
+    vec3 _e5 = onb_bitangent(n_11);
+    return (((_e2 * d.x) + (_e5 * d.y)) + (n_11 * d.z));
 }
 
-vec3 onb_to_local(vec3 n_15, vec3 w_8) {
-    vec3 _e2 = onb_tangent(n_15);
-    vec3 _e4 = onb_bitangent(n_15);
-    return vec3(dot(w_8, _e2), dot(w_8, _e4), dot(w_8, n_15));
+vec3 onb_to_local(vec3 n_12, vec3 w_6) {
+    vec3 _e2 = onb_tangent(n_12);
+    vec3 _e4 = onb_bitangent(n_12);
+    return vec3(dot(w_6, _e2), dot(w_6, _e4), dot(w_6, n_12));
 }
 
-vec3 cosine_direction(vec3 n_16, float u1_1, float u2_1) {
-    float r_6 = sqrt(u1_1);
-    float phi_2 = (6.2831855 * u2_1);
-    vec3 _e16 = onb_to_world(n_16, vec3((r_6 * cos(phi_2)), (r_6 * sin(phi_2)), sqrt(max((1.0 - u1_1), 0.0))));
+vec3 cosine_direction(vec3 n_13, float u1_1, float u2_1) {
+    float r_17 = sqrt(u1_1);
+    float phi_5 = (6.2831855 * u2_1);
+    vec3 _e16 = onb_to_world(n_13, vec3((r_17 * cos(phi_5)), (r_17 * sin(phi_5)), sqrt(max((1.0 - u1_1), 0.0))));
     return normalize(_e16);
 }
 
@@ -1110,8 +898,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha) {
         return 0.0;
     }
     float a2_1 = (alpha * alpha);
-    float t_4 = (((cos_h * cos_h) * a2_1) + sin2_h);
-    return ((a2_1 * INV_PI) / (t_4 * t_4));
+    float t_3 = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t_3 * t_3));
 }
 
 float smith_root(float cos_, float alpha_1) {
@@ -1120,13 +908,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l_1, float n_v, float alpha_2) {
-    bool local_12 = false;
+    bool local_7 = false;
     if (!((n_l_1 <= 0.0))) {
-        local_12 = (n_v <= 0.0);
+        local_7 = (n_v <= 0.0);
     } else {
-        local_12 = true;
+        local_7 = true;
     }
-    bool _e11 = local_12;
+    bool _e11 = local_7;
     if (_e11) {
         return 0.0;
     }
@@ -1161,148 +949,431 @@ float half_cosine(vec3 v_2, vec3 l) {
     return clamp((dot(v_2, h_3) / sqrt(len2_)), 0.0, 1.0);
 }
 
-vec3 specular_brdf(vec3 base_6, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n_17, vec3 v_3, vec3 l_1) {
-    bool local_13 = false;
-    float n_l_2 = dot(n_17, l_1);
-    float n_v_2 = dot(n_17, v_3);
+vec3 specular_brdf(vec3 base_6, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n_14, vec3 v_3, vec3 l_1) {
+    bool local_8 = false;
+    float n_l_2 = dot(n_14, l_1);
+    float n_v_2 = dot(n_14, v_3);
     if (!((n_l_2 <= 0.0))) {
-        local_13 = (n_v_2 <= 0.0);
+        local_8 = (n_v_2 <= 0.0);
     } else {
-        local_13 = true;
+        local_8 = true;
     }
-    bool _e18 = local_13;
+    bool _e18 = local_8;
     if (_e18) {
         return vec3(0.0, 0.0, 0.0);
     }
     vec3 hs = (v_3 + l_1);
-    float inv_1 = (1.0 / sqrt(dot(hs, hs)));
-    vec3 h_4 = (hs * inv_1);
-    vec3 c_15 = cross(n_17, h_4);
-    float _e32 = ggx_d(dot(n_17, h_4), dot(c_15, c_15), alpha_3);
+    float inv = (1.0 / sqrt(dot(hs, hs)));
+    vec3 h_4 = (hs * inv);
+    vec3 c_15 = cross(n_14, h_4);
+    float _e32 = ggx_d(dot(n_14, h_4), dot(c_15, c_15), alpha_3);
     vec3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_3, h_4));
     float _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
 
-vec3 brdf_eval(vec3 base_7, float metallic_3, vec3 f0_d_3, float f90_d_3, float alpha_4, vec3 n_18, vec3 v_4, vec3 l_2) {
-    if ((dot(n_18, l_2) <= 0.0)) {
+vec3 brdf_eval(vec3 base_7, float metallic_3, vec3 f0_d_3, float f90_d_3, float alpha_4, vec3 n_15, vec3 v_4, vec3 l_2) {
+    if ((dot(n_15, l_2) <= 0.0)) {
         return vec3(0.0, 0.0, 0.0);
     }
     float _e15 = half_cosine(v_4, l_2);
     vec3 _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
-    vec3 _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_18, v_4, l_2);
+    vec3 _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_15, v_4, l_2);
     return (_e16 + _e17);
 }
 
 bool has_specular(float metallic_4, vec3 f0_d_4, float f90_d_4) {
-    bool local_14 = false;
-    bool local_15 = false;
+    bool local_9 = false;
+    bool local_10 = false;
     if (!((metallic_4 > 0.0))) {
-        local_14 = (f90_d_4 > 0.0);
+        local_9 = (f90_d_4 > 0.0);
     } else {
-        local_14 = true;
+        local_9 = true;
     }
-    bool _e11 = local_14;
+    bool _e11 = local_9;
     if (!(_e11)) {
-        local_15 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
+        local_10 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
     } else {
-        local_15 = true;
+        local_10 = true;
     }
-    bool _e23 = local_15;
+    bool _e23 = local_10;
     return _e23;
 }
 
-float channel_mean(vec3 c_9) {
-    return (((c_9.x + c_9.y) + c_9.z) * 0.33333334);
+float channel_mean(vec3 c_6) {
+    return (((c_6.x + c_6.y) + c_6.z) * 0.33333334);
 }
 
-float specular_probability(vec3 base_8, float metallic_5, vec3 f0_d_5, float f90_d_5, float n_v_1) {
-    bool local_16 = false;
+vec4 receiver_lobe(vec3 base_8, float metallic_5, vec3 f0_d_5, float f90_d_5, float alpha_5, float n_v_1) {
+    bool local_11 = false;
+    vec3 _e10 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
+    float _e16 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e10) * base_8) * (1.0 - metallic_5)));
     if (!((n_v_1 <= 0.0))) {
-        bool _e10 = has_specular(metallic_5, f0_d_5, f90_d_5);
-        local_16 = !(_e10);
+        bool _e22 = has_specular(metallic_5, f0_d_5, f90_d_5);
+        local_11 = !(_e22);
     } else {
-        local_16 = true;
+        local_11 = true;
     }
-    bool _e13 = local_16;
-    if (_e13) {
+    bool _e25 = local_11;
+    if (_e25) {
+        return vec4(_e16, 0.0, alpha_5, n_v_1);
+    }
+    vec3 _e28 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    float _e29 = channel_mean(_e28);
+    return vec4(_e16, _e29, alpha_5, n_v_1);
+}
+
+float specular_probability(vec4 lobe) {
+    if ((lobe.y <= 0.0)) {
         return 0.0;
     }
-    vec3 _e15 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
-    float _e16 = channel_mean(_e15);
-    vec3 _e21 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
-    float _e27 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e21) * base_8) * (1.0 - metallic_5)));
-    if ((_e27 <= 0.0)) {
+    if ((lobe.x <= 0.0)) {
         return 1.0;
     }
-    if ((_e16 <= 0.0)) {
-        return 0.0;
-    }
-    return clamp((_e16 / (_e16 + _e27)), 0.1, 0.9);
+    return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
-float bounded_vndf_k(vec3 wi, float alpha_5) {
-    float a_14 = clamp(alpha_5, 0.0, 1.0);
-    float s_8 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+vec3 mirror_dir(vec3 n_16, vec3 v_5) {
+    return ((n_16 * (2.0 * dot(n_16, v_5))) - v_5);
+}
+
+float bounded_vndf_k(vec3 wi, float alpha_6) {
+    float a_14 = clamp(alpha_6, 0.0, 1.0);
+    float s_5 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
     float a2_3 = (a_14 * a_14);
-    float s2_ = (s_8 * s_8);
+    float s2_ = (s_5 * s_5);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
-vec3 ggx_vndf_sample(vec3 wi_1, float alpha_6, float u1_2, float u2_2) {
-    vec3 wi_std = normalize(vec3((wi_1.x * alpha_6), (wi_1.y * alpha_6), wi_1.z));
-    float _e12 = bounded_vndf_k(wi_1, alpha_6);
+vec3 ggx_vndf_sample(vec3 wi_1, float alpha_7, float u1_2, float u2_2) {
+    vec3 wi_std = normalize(vec3((wi_1.x * alpha_7), (wi_1.y * alpha_7), wi_1.z));
+    float _e12 = bounded_vndf_k(wi_1, alpha_7);
     float b_9 = ((wi_1.z > 0.0) ? (_e12 * wi_std.z) : wi_std.z);
-    float phi_3 = (6.2831855 * u1_2);
+    float phi_6 = (6.2831855 * u1_2);
     float z_4 = (((1.0 - u2_2) * (1.0 + b_9)) - b_9);
     float sin_t = sqrt(clamp((1.0 - (z_4 * z_4)), 0.0, 1.0));
-    vec3 m_std = (wi_std + vec3((sin_t * cos(phi_3)), (sin_t * sin(phi_3)), z_4));
-    vec3 m_1 = normalize(vec3((m_std.x * alpha_6), (m_std.y * alpha_6), m_std.z));
-    return ((m_1 * (2.0 * dot(wi_1, m_1))) - wi_1);
+    vec3 m_std = (wi_std + vec3((sin_t * cos(phi_6)), (sin_t * sin(phi_6)), z_4));
+    vec3 m_2 = normalize(vec3((m_std.x * alpha_7), (m_std.y * alpha_7), m_std.z));
+    return ((m_2 * (2.0 * dot(wi_1, m_2))) - wi_1);
 }
 
-float ggx_vndf_pdf(vec3 wi_2, vec3 wo, float alpha_7) {
-    bool local_17 = false;
+float ggx_vndf_pdf(vec3 wi_2, vec3 wo, float alpha_8) {
+    bool local_12 = false;
     if (!((wi_2.z <= 0.0))) {
-        local_17 = (wo.z <= 0.0);
+        local_12 = (wo.z <= 0.0);
     } else {
-        local_17 = true;
+        local_12 = true;
     }
-    bool _e13 = local_17;
+    bool _e13 = local_12;
     if (_e13) {
         return 0.0;
     }
     vec3 hs_1 = (wi_2 + wo);
-    vec3 m_2 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
-    float _e28 = ggx_d(m_2.z, ((m_2.x * m_2.x) + (m_2.y * m_2.y)), alpha_7);
-    float t_5 = sqrt((((alpha_7 * alpha_7) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
-    float _e43 = bounded_vndf_k(wi_2, alpha_7);
-    return (_e28 / (2.0 * ((_e43 * wi_2.z) + t_5)));
+    vec3 m_3 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
+    float _e28 = ggx_d(m_3.z, ((m_3.x * m_3.x) + (m_3.y * m_3.y)), alpha_8);
+    float t_4 = sqrt((((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
+    float _e43 = bounded_vndf_k(wi_2, alpha_8);
+    return (_e28 / (2.0 * ((_e43 * wi_2.z) + t_4)));
 }
 
-vec3 bsdf_sample(vec3 n_19, vec3 v_5, float alpha_8, float p_spec, float u1_3, float u2_3) {
+vec3 bsdf_sample(vec3 n_17, vec3 v_6, float alpha_9, float p_spec, float u1_3, float u2_3) {
     if ((u1_3 < p_spec)) {
-        if ((dot(n_19, v_5) <= 0.0)) {
-            return -(n_19);
+        if ((dot(n_17, v_6) <= 0.0)) {
+            return -(n_17);
         }
-        vec3 _e11 = onb_to_local(n_19, v_5);
-        vec3 _e13 = ggx_vndf_sample(_e11, alpha_8, (u1_3 / p_spec), u2_3);
-        vec3 _e14 = onb_to_world(n_19, _e13);
+        vec3 _e11 = onb_to_local(n_17, v_6);
+        vec3 _e13 = ggx_vndf_sample(_e11, alpha_9, (u1_3 / p_spec), u2_3);
+        vec3 _e14 = onb_to_world(n_17, _e13);
         return normalize(_e14);
     }
-    vec3 _e20 = cosine_direction(n_19, ((u1_3 - p_spec) / (1.0 - p_spec)), u2_3);
+    vec3 _e20 = cosine_direction(n_17, ((u1_3 - p_spec) / (1.0 - p_spec)), u2_3);
     return _e20;
 }
 
-float bsdf_pdf(vec3 n_20, vec3 v_6, vec3 l_3, float alpha_9, float p_spec_1) {
-    float _e6 = cosine_pdf(dot(n_20, l_3));
+float bsdf_pdf(vec3 n_18, vec3 v_7, vec3 l_3, float alpha_10, float p_spec_1) {
+    float _e6 = cosine_pdf(dot(n_18, l_3));
     if ((p_spec_1 <= 0.0)) {
         return _e6;
     }
-    vec3 _e9 = onb_to_local(n_20, v_6);
-    vec3 _e10 = onb_to_local(n_20, l_3);
-    float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_9);
+    vec3 _e9 = onb_to_local(n_18, v_7);
+    vec3 _e10 = onb_to_local(n_18, l_3);
+    float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_10);
     return ((p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6));
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1) {
+    if ((cos_a_1 > cos_b_1)) {
+        return 0.0;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+float safe_sqrt(float x_9) {
+    return sqrt(max(x_9, 0.0));
+}
+
+float subtended_cos(float dist2_, float r2_6) {
+    float _e5 = safe_sqrt((1.0 - (r2_6 / dist2_)));
+    return ((dist2_ <= r2_6) ? -1.0 : _e5);
+}
+
+float emitter_importance(vec3 center, float radius, float phi, vec3 axis, float cos_o, float cos_e, vec3 p) {
+    vec3 v_15 = (p - center);
+    float dist2_1 = dot(v_15, v_15);
+    float r2_8 = (radius * radius);
+    float d2_13 = max(max(dist2_1, r2_8), MIN_D2_);
+    vec3 wi_3 = ((dist2_1 > 0.0) ? (v_15 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi_3);
+    float _e27 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    float _e28 = subtended_cos(dist2_1, r2_8);
+    float _e32 = safe_sqrt((1.0 - (_e28 * _e28)));
+    float _e36 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    float _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
+    float _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
+    float _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
+    if ((_e39 <= cos_e)) {
+        return 0.0;
+    }
+    return ((phi * _e39) / d2_13);
+}
+
+float cone_cos_toward(vec3 center_1, float radius_1, vec3 p_1, vec3 d_1) {
+    vec3 v_16 = (center_1 - p_1);
+    float dist2_2 = dot(v_16, v_16);
+    vec3 w_14 = ((dist2_2 > 0.0) ? (v_16 / vec3(sqrt(dist2_2))) : vec3(0.0, 0.0, 0.0));
+    float _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
+    float cos_i = dot(w_14, d_1);
+    float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
+    float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
+    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float light_importance(vec3 center_2, float radius_2, float phi_1, vec3 axis_1, float cos_o_1, float cos_e_1, vec3 p_2, vec3 n_19) {
+    float imp = 0.0;
+    float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
+    imp = _e8;
+    if ((dot(n_19, n_19) > 0.0)) {
+        float _e13 = imp;
+        float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_19);
+        imp = (_e13 * max(_e14, 0.0));
+    }
+    float _e18 = imp;
+    return max(_e18, 0.0);
+}
+
+float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_20, vec3 r_3, vec4 lobe_1) {
+    bool local_13 = false;
+    float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
+    float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_20);
+    if (!((_e10 <= 0.0))) {
+        local_13 = (_e11 <= 0.0);
+    } else {
+        local_13 = true;
+    }
+    bool _e20 = local_13;
+    if (_e20) {
+        return 0.0;
+    }
+    float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
+    float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
+    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_1.z);
+    float _e39 = smith_root(lobe_1.w, lobe_1.z);
+    float spec = (((lobe_1.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+}
+
+float receiver_importance(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, vec3 p_4, vec3 n_21, vec3 r_4, vec4 lobe_2) {
+    if ((lobe_2.y <= 0.0)) {
+        float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
+        return _e13;
+    }
+    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    return _e14;
+}
+
+float candidate_weight(float importance, float rt2_5, float d2_9) {
+    float _e3 = slc_weight(rt2_5, d2_9);
+    return (importance * _e3);
+}
+
+float cone_weight(vec3 center_5, float radius_5, float phi_4, vec3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, vec3 p_5, vec3 n_22, vec3 r_5, vec4 lobe_3) {
+    vec3 v_17 = (p_5 - center_5);
+    if ((lobe_3.y <= 0.0)) {
+        float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
+        float _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
+        return _e19;
+    }
+    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    float _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
+    return _e22;
+}
+
+float weighted_select_pdf(float w_7, float w_sum_2, bool in_range_1, uint k_4) {
+    if ((w_7 <= 0.0)) {
+        return 0.0;
+    }
+    float total = (in_range_1 ? w_sum_2 : (w_sum_2 + w_7));
+    float _e9 = to_f32_(k_4);
+    return ((_e9 * w_7) / total);
+}
+
+float bvh_first_prob(float c0_, float c1_2) {
+    float s_6 = (c0_ + c1_2);
+    if ((s_6 > 0.0)) {
+        return (c0_ / s_6);
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(float u_4, float p0_, bool first) {
+    if (first) {
+        return min((u_4 / p0_), ONE_MINUS_EPSILON);
+    }
+    return clamp(((u_4 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
+float surface_offset(float diag) {
+    return (1e-5 * diag);
+}
+
+float ray_t_min(float diag_1) {
+    return (1e-6 * diag_1);
+}
+
+float shadow_margin(float len) {
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_10) {
+    return (1.0 / ((abs(x_10) < 1e-30) ? 1e-30 : x_10));
+}
+
+vec3 ray_inverse3_(vec3 d_2) {
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
+    return vec3(_e2, _e4, _e6);
+}
+
+float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
+    vec3 t0_ = ((bmin_1 - o) * inv_d);
+    vec3 t1_ = ((bmax_1 - o) * inv_d);
+    vec3 lo_3 = min(t0_, t1_);
+    vec3 hi_3 = max(t0_, t1_);
+    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
+    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_7) {
+    bool local_14 = false;
+    vec3 n_37 = cross((b_4 - a_5), (c_7 - a_5));
+    float l2_ = dot(n_37, n_37);
+    if (!(!((l2_ > 0.0)))) {
+        local_14 = !((l2_ < 3e38));
+    } else {
+        local_14 = true;
+    }
+    bool _e17 = local_14;
+    if (_e17) {
+        return vec3(0.0, 0.0, 0.0);
+    }
+    return (n_37 / vec3(sqrt(l2_)));
+}
+
+vec3 face_against(vec3 n_23, vec3 dir) {
+    return ((dot(n_23, dir) > 0.0) ? -(n_23) : n_23);
+}
+
+vec3 barycentric(vec3 p_6, vec3 a_6, vec3 b_5, vec3 c_8) {
+    vec3 e1_1 = (b_5 - a_6);
+    vec3 e2_1 = (c_8 - a_6);
+    vec3 q_4 = (p_6 - a_6);
+    float d11_ = dot(e1_1, e1_1);
+    float d12_ = dot(e1_1, e2_1);
+    float d22_ = dot(e2_1, e2_1);
+    float den = ((d11_ * d22_) - (d12_ * d12_));
+    if (!((abs(den) > 0.0))) {
+        return vec3(1.0, 0.0, 0.0);
+    }
+    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
+    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
+    return vec3(((1.0 - w1_) - w2_), w1_, w2_);
+}
+
+vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_8, vec3 facing) {
+    bool local_15 = false;
+    vec3 s_7 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
+    float l2_1 = dot(s_7, s_7);
+    if (!(!((l2_1 > 1e-12)))) {
+        local_15 = !((l2_1 < 3e38));
+    } else {
+        local_15 = true;
+    }
+    bool _e24 = local_15;
+    if (_e24) {
+        return facing;
+    }
+    vec3 n_38 = (s_7 / vec3(sqrt(l2_1)));
+    return ((dot(n_38, facing) < 0.0) ? -(n_38) : n_38);
+}
+
+float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_7, vec3 b_6, vec3 c_9, float t_min, float t_max_1) {
+    bool local_16 = false;
+    bool local_17 = false;
+    bool local_18 = false;
+    vec3 e1_2 = (b_6 - a_7);
+    vec3 e2_2 = (c_9 - a_7);
+    vec3 p_7 = cross(d_3, e2_2);
+    float det = dot(e1_2, p_7);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv_1 = (1.0 / det);
+    vec3 s_8 = (o_1 - a_7);
+    float u_7 = (dot(s_8, p_7) * inv_1);
+    if (!((u_7 < 0.0))) {
+        local_16 = (u_7 > 1.0);
+    } else {
+        local_16 = true;
+    }
+    bool _e28 = local_16;
+    if (_e28) {
+        return -1.0;
+    }
+    vec3 q_5 = cross(s_8, e1_2);
+    float v_18 = (dot(d_3, q_5) * inv_1);
+    if (!((v_18 < 0.0))) {
+        local_17 = ((u_7 + v_18) > 1.0);
+    } else {
+        local_17 = true;
+    }
+    bool _e42 = local_17;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_5 = (dot(e2_2, q_5) * inv_1);
+    if ((t_5 > t_min)) {
+        local_18 = (t_5 < t_max_1);
+    } else {
+        local_18 = false;
+    }
+    bool _e51 = local_18;
+    if (_e51) {
+        return t_5;
+    }
+    return -1.0;
 }
 
 float inv_sigma_z(float z) {
@@ -1333,13 +1404,13 @@ vec3 filtered_irradiance(vec3 e, vec3 sum_1, float weight) {
     return e;
 }
 
-float bilateral_weight(vec3 n_21, vec3 nj, float z_1, float zj, float inv_sz) {
-    float dn = max(dot(n_21, nj), 0.0);
+float bilateral_weight(vec3 n_24, vec3 nj, float z_1, float zj, float inv_sz) {
+    float dn = max(dot(n_24, nj), 0.0);
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
-    float d_7 = ((zj - z_1) * inv_sz);
-    float t_6 = max((1.0 - (d_7 * d_7)), 0.0);
+    float d_8 = ((zj - z_1) * inv_sz);
+    float t_6 = max((1.0 - (d_8 * d_8)), 0.0);
     return (((dn8_ * dn8_) * t_6) * t_6);
 }
 
@@ -1408,32 +1479,32 @@ bool sees_emission(vec3 gn, vec3 dir_1) {
     return (dot(gn, dir_1) < 0.0);
 }
 
-bool continues_path(vec3 nd, vec3 n_22, vec3 ng_1) {
-    bool local_18 = false;
-    if ((dot(nd, n_22) > 0.0)) {
-        local_18 = (dot(nd, ng_1) > 0.0);
-    } else {
-        local_18 = false;
-    }
-    bool _e12 = local_18;
-    return _e12;
-}
-
-bool finite3_(vec3 v_7) {
+bool continues_path(vec3 nd, vec3 n_25, vec3 ng_1) {
     bool local_19 = false;
-    bool local_20 = false;
-    if ((abs(v_7.x) <= F32_MAX)) {
-        local_19 = (abs(v_7.y) <= F32_MAX);
+    if ((dot(nd, n_25) > 0.0)) {
+        local_19 = (dot(nd, ng_1) > 0.0);
     } else {
         local_19 = false;
     }
     bool _e12 = local_19;
-    if (_e12) {
-        local_20 = (abs(v_7.z) <= F32_MAX);
+    return _e12;
+}
+
+bool finite3_(vec3 v_8) {
+    bool local_20 = false;
+    bool local_21 = false;
+    if ((abs(v_8.x) <= F32_MAX)) {
+        local_20 = (abs(v_8.y) <= F32_MAX);
     } else {
         local_20 = false;
     }
-    bool _e20 = local_20;
+    bool _e12 = local_20;
+    if (_e12) {
+        local_21 = (abs(v_8.z) <= F32_MAX);
+    } else {
+        local_21 = false;
+    }
+    bool _e20 = local_21;
     return _e20;
 }
 
@@ -1454,37 +1525,37 @@ uint light_map_texel(float a_8, uint size_7) {
     return _e14;
 }
 
-float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_2, float extent_2, bool perspective) {
-    return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
+float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_5, float extent_2, bool perspective) {
+    return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_5) : 1.0) * extent_2));
 }
 
 float display_encode(float x_14) {
-    float v_17 = max(x_14, 0.0);
-    float t_8 = ((2.0 * v_17) / (1.0 + (2.0 * v_17)));
+    float v_19 = max(x_14, 0.0);
+    float t_8 = ((2.0 * v_19) / (1.0 + (2.0 * v_19)));
     return ((t_8 <= 0.0031308) ? (12.92 * t_8) : ((1.055 * pow(t_8, 0.41666666)) - 0.055));
 }
 
-float light_map_depth(vec3 rel_1, vec3 axis_3, bool perspective_1) {
-    return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
+float light_map_depth(vec3 rel_1, vec3 axis_6, bool perspective_1) {
+    return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_6));
 }
 
 float rsm_texel_solid_angle(float texel_area, float cos_axis) {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-vec3 point_irradiance(vec3 intensity_1, vec3 n_23, vec3 v_8) {
-    float d2_14 = dot(v_8, v_8);
-    float cos_x_2 = (dot(n_23, v_8) / sqrt(max(d2_14, MIN_D2_)));
+vec3 point_irradiance(vec3 intensity_1, vec3 n_26, vec3 v_9) {
+    float d2_14 = dot(v_9, v_9);
+    float cos_x_2 = (dot(n_26, v_9) / sqrt(max(d2_14, MIN_D2_)));
     float _e11 = inverse_square(d2_14);
     return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
-vec3 directional_irradiance(vec3 e_1, vec3 n_24, vec3 to_light) {
-    return (e_1 * max(dot(n_24, to_light), 0.0));
+vec3 directional_irradiance(vec3 e_1, vec3 n_27, vec3 to_light) {
+    return (e_1 * max(dot(n_27, to_light), 0.0));
 }
 
-float perspective_texel_width(float extent_3, float d_3, float z_2, float size_8) {
-    return ((((2.0 * extent_3) * d_3) * d_3) / (size_8 * z_2));
+float perspective_texel_width(float extent_3, float d_4, float z_2, float size_8) {
+    return ((((2.0 * extent_3) * d_4) * d_4) / (size_8 * z_2));
 }
 
 float ortho_texel_width(float extent_4, float size_9) {
@@ -1496,14 +1567,14 @@ float shadow_bias(float texel, float cos_light_1) {
     return (texel * (1.5 + (sqrt((1.0 - (c_16 * c_16))) / c_16)));
 }
 
-bool shadow_lit(float d_4, float d_map, float bias) {
-    bool local_21 = false;
+bool shadow_lit(float d_5, float d_map, float bias) {
+    bool local_22 = false;
     if (!((d_map <= 0.0))) {
-        local_21 = (d_4 <= (d_map + bias));
+        local_22 = (d_5 <= (d_map + bias));
     } else {
-        local_21 = true;
+        local_22 = true;
     }
-    bool _e11 = local_21;
+    bool _e11 = local_22;
     return _e11;
 }
 
@@ -1562,7 +1633,7 @@ vec3 light_normal(GpuLight l_7) {
     return vec3(0.0);
 }
 
-GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
+GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
@@ -1574,15 +1645,15 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
         GeoHit _e13 = hit;
         return _e13;
     }
-    vec3 _e14 = ray_inverse3_(d_5);
+    vec3 _e14 = ray_inverse3_(d_6);
     while(true) {
         uint _e21 = node;
-        GpuGeoNode n_36 = _group_0_binding_6_cs[_e21];
+        GpuGeoNode n_39 = _group_0_binding_6_cs[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_36.bmin, n_36.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_39.bmin, n_39.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_36.count > 0u)) {
-                i_2 = n_36.first;
+            if ((n_39.count > 0u)) {
+                i_2 = n_39.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -1591,7 +1662,7 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e36 = i_2;
-                    if ((_e36 < (n_36.first + n_36.count))) {
+                    if ((_e36 < (n_39.first + n_39.count))) {
                     } else {
                         break;
                     }
@@ -1599,7 +1670,7 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
                         uint _e42 = i_2;
                         GpuTriangle t_9 = _group_0_binding_7_cs[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_5, t_9.v0_, t_9.v1_, t_9.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_6, t_9.v0_, t_9.v1_, t_9.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i_2;
@@ -1615,11 +1686,11 @@ GeoHit trace(vec3 o_2, vec3 d_5, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[_e63] = (n_36.first + 1u);
+                    stack[_e63] = (n_39.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_36.first;
+                node = n_39.first;
                 continue;
             }
         }
@@ -1751,34 +1822,34 @@ Picks bsh_collect(vec3 x_16, uint seed_3) {
     return _e47;
 }
 
-Connection connect(uint li, vec3 x_17, vec3 n_25, vec3 ng_2, float w_res, float u1_5, float u2_5, float eps) {
+Connection connect(uint li, vec3 x_17, vec3 n_28, vec3 ng_2, float w_res, float u1_5, float u2_5, float eps) {
     Connection c_10 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_22 = false;
+    bool local_23 = false;
     c_10.e = vec3(0.0);
     GpuLight l_8 = _group_0_binding_2_cs[li];
     vec3 _e16 = light_point(l_8, u1_5, u2_5);
     c_10.y = _e16;
     vec3 _e19 = c_10.y;
     float _e22 = _group_0_binding_4_cs[li];
-    float _e23 = connection_cosine(x_17, _e19, n_25, ng_2, _e22);
+    float _e23 = connection_cosine(x_17, _e19, n_28, ng_2, _e22);
     c_10.cos_x = _e23;
     float _e25 = c_10.cos_x;
     if (!((_e25 <= 0.0))) {
         vec3 _e34 = c_10.y;
         bool _e35 = occluded((x_17 + (ng_2 * eps)), _e34);
-        local_22 = _e35;
+        local_23 = _e35;
     } else {
-        local_22 = true;
+        local_23 = true;
     }
-    bool _e37 = local_22;
+    bool _e37 = local_23;
     if (_e37) {
         Connection _e38 = c_10;
         return _e38;
     }
     vec3 _e40 = c_10.y;
-    vec3 v_18 = (x_17 - _e40);
-    float d2_15 = dot(v_18, v_18);
-    vec3 _e47 = light_intensity(l_8, (v_18 / vec3(sqrt(d2_15))));
+    vec3 v_20 = (x_17 - _e40);
+    float d2_15 = dot(v_20, v_20);
+    vec3 _e47 = light_intensity(l_8, (v_20 / vec3(sqrt(d2_15))));
     float _e49 = c_10.cos_x;
     float _e52 = _group_0_binding_3_cs[li];
     float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
@@ -1796,45 +1867,44 @@ BvhPick bvh_pick_none() {
     return BvhPick(0u, 0.0);
 }
 
-float select_pdf(uint li_2, vec3 x_23, vec3 n_31, uint nee, bool in_range_2) {
-    float _e6 = reservoir_select_pdf(nee, in_range_2, K);
-    return _e6;
+float select_pdf(uint li_2, vec3 x_23, vec3 n_34, vec3 r_11, vec4 lobe_9, uint nee, bool in_range_2) {
+    float _e8 = reservoir_select_pdf(nee, in_range_2, K);
+    return _e8;
 }
 
-float light_pdf(uint li_3, vec3 x_24, vec3 n_32, vec3 y_3, uint nee_1, bool in_range_3) {
+float light_pdf(uint li_3, vec3 x_24, vec3 n_35, vec3 r_12, vec4 lobe_10, vec3 y_3, uint nee_1, bool in_range_3) {
     GpuLight l_9 = _group_0_binding_2_cs[li_3];
-    vec3 v_19 = (x_24 - y_3);
-    float d2_16 = dot(v_19, v_19);
-    vec3 _e11 = light_normal(l_9);
-    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e11, (v_19 / vec3(sqrt(d2_16)))) : 0.0);
-    float _e20 = select_pdf(li_3, x_24, n_32, nee_1, in_range_3);
-    float _e23 = _group_0_binding_3_cs[li_3];
-    float _e24 = light_area(l_9);
-    float _e25 = light_strategy_pdf(_e20, _e23, d2_16, _e24, cos_y_1);
-    return _e25;
+    vec3 v_21 = (x_24 - y_3);
+    float d2_16 = dot(v_21, v_21);
+    vec3 _e13 = light_normal(l_9);
+    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e13, (v_21 / vec3(sqrt(d2_16)))) : 0.0);
+    float _e22 = select_pdf(li_3, x_24, n_35, r_12, lobe_10, nee_1, in_range_3);
+    float _e25 = _group_0_binding_3_cs[li_3];
+    float _e26 = light_area(l_9);
+    float _e27 = light_strategy_pdf(_e22, _e25, d2_16, _e26, cos_y_1);
+    return _e27;
 }
 
-vec3 shade_pick(uint li_4, vec3 x_25, vec3 n_33, vec3 ng_3, float w_11, uint nee_2, float u1_6, float u2_6) {
+vec3 shade_pick(uint li_4, vec3 x_25, vec3 n_36, vec3 ng_3, GpuMaterial m, vec3 wo_1, vec3 r_13, vec4 lobe_11, float w_11, uint nee_2, float u1_6, float u2_6) {
     float mis = 1.0;
-    bool local_27 = false;
-    float _e10 = _group_0_binding_0_cs.eps;
-    Connection _e11 = connect(li_4, x_25, n_33, ng_3, w_11, u1_6, u2_6, _e10);
-    GpuLight _e16 = _group_0_binding_2_cs[li_4];
-    float _e17 = light_area(_e16);
-    if ((_e17 > 0.0)) {
-        local_27 = (_e11.cos_x > 0.0);
-    } else {
-        local_27 = false;
+    float _e14 = _group_0_binding_0_cs.eps;
+    Connection _e15 = connect(li_4, x_25, n_36, ng_3, w_11, u1_6, u2_6, _e14);
+    if ((_e15.cos_x <= 0.0)) {
+        return vec3(0.0);
     }
-    bool _e26 = local_27;
-    if (_e26) {
-        float _e29 = light_pdf(li_4, x_25, n_33, _e11.y, nee_2, true);
-        float _e31 = cosine_pdf(_e11.cos_x);
-        float _e32 = mis_weight(_e29, _e31);
-        mis = _e32;
+    vec3 l_10 = normalize((_e15.y - x_25));
+    GpuLight _e28 = _group_0_binding_2_cs[li_4];
+    float _e29 = light_area(_e28);
+    if ((_e29 > 0.0)) {
+        float _e34 = light_pdf(li_4, x_25, n_36, r_13, lobe_11, _e15.y, nee_2, true);
+        float _e36 = specular_probability(lobe_11);
+        float _e37 = bsdf_pdf(n_36, wo_1, l_10, m.alpha, _e36);
+        float _e38 = mis_weight(_e34, _e37);
+        mis = _e38;
     }
-    float _e34 = mis;
-    return (_e11.e * _e34);
+    vec3 _e44 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_36, wo_1, l_10);
+    float _e47 = mis;
+    return ((_e44 * _e15.e) * _e47);
 }
 
 void main() {
@@ -1849,55 +1919,59 @@ void main() {
     }
     GpuPathVertex vtx = _group_0_binding_1_cs[i_12];
     if ((vtx.alive == 0u)) {
-        _group_0_binding_9_cs[i_12] = 0u;
+        _group_0_binding_10_cs[i_12] = 0u;
         return;
     }
     vec3 x_26 = vtx.position;
-    vec3 n_37 = vtx.normal;
+    vec3 n_40 = vtx.normal;
     vec3 ng_4 = vtx.gnormal;
-    uint _e20 = _group_0_binding_0_cs.seed;
-    uint _e23 = _group_0_binding_0_cs.frame;
-    uint _e24 = point_stream(_e20, i_12, _e23);
-    uint _e25 = pick_stream(_e24);
-    h = _e25;
-    Picks _e30 = bsh_collect(x_26, _e24);
-    _group_0_binding_9_cs[i_12] = _e30.n;
-    float _e36 = reservoir_weight(_e30.n, K);
+    GpuMaterial m_4 = _group_0_binding_8_cs[vtx.material];
+    vec3 wo_2 = vtx.wo;
+    vec3 _e23 = mirror_dir(n_40, wo_2);
+    vec4 _e30 = receiver_lobe(m_4.albedo, m_4.metallic, m_4.f0_, m_4.f90_, m_4.alpha, dot(n_40, wo_2));
+    uint _e33 = _group_0_binding_0_cs.seed;
+    uint _e36 = _group_0_binding_0_cs.frame;
+    uint _e37 = point_stream(_e33, i_12, _e36);
+    uint _e38 = pick_stream(_e37);
+    h = _e38;
+    Picks _e43 = bsh_collect(x_26, _e37);
+    _group_0_binding_10_cs[i_12] = _e43.n;
+    float _e49 = reservoir_weight(_e43.n, K);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e60 = s;
-            s = (_e60 + 1u);
+            uint _e73 = s;
+            s = (_e73 + 1u);
         }
         loop_init_2 = false;
-        uint _e39 = s;
-        if ((_e39 < min(_e30.n, K))) {
+        uint _e52 = s;
+        if ((_e52 < min(_e43.n, K))) {
         } else {
             break;
         }
         {
-            uint _e44 = h;
-            uint _e45 = pcg_hash(_e44);
-            h = _e45;
-            uint _e46 = h;
-            float _e47 = xi_from_bits(_e46);
-            uint _e48 = h;
-            uint _e49 = pcg_hash(_e48);
-            h = _e49;
-            vec3 _e50 = sum;
-            uint _e52 = s;
-            uint _e55 = h;
-            float _e56 = xi_from_bits(_e55);
-            vec3 _e57 = shade_pick(_e30.light[_e52], x_26, n_37, ng_4, _e36, _e30.n, _e47, _e56);
-            sum = (_e50 + _e57);
+            uint _e57 = h;
+            uint _e58 = pcg_hash(_e57);
+            h = _e58;
+            uint _e59 = h;
+            float _e60 = xi_from_bits(_e59);
+            uint _e61 = h;
+            uint _e62 = pcg_hash(_e61);
+            h = _e62;
+            vec3 _e63 = sum;
+            uint _e65 = s;
+            uint _e68 = h;
+            float _e69 = xi_from_bits(_e68);
+            vec3 _e70 = shade_pick(_e43.light[_e65], x_26, n_40, ng_4, m_4, wo_2, _e23, _e30, _e49, _e43.n, _e60, _e69);
+            sum = (_e63 + _e70);
         }
     }
-    vec3 _e63 = sum;
-    vec3 add = (vtx.weight * _e63);
-    bool _e65 = finite3_(add);
-    if (_e65) {
-        vec4 _e68 = _group_0_binding_8_cs[i_12];
-        _group_0_binding_8_cs[i_12] = (_e68 + vec4(add, 0.0));
+    vec3 _e76 = sum;
+    vec3 add = (vtx.weight * _e76);
+    bool _e78 = finite3_(add);
+    if (_e78) {
+        vec4 _e81 = _group_0_binding_9_cs[i_12];
+        _group_0_binding_9_cs[i_12] = (_e81 + vec4(add, 0.0));
         return;
     } else {
         return;

@@ -40,11 +40,13 @@ struct GpuPathVertex {
     float3 position;
     uint alive;
     float3 normal;
-    float pad;
+    uint material;
     float3 weight;
     float pad1_;
     float3 gnormal;
     float pad2_;
+    float3 wo;
+    float pad3_;
 };
 
 struct GpuPathState {
@@ -58,6 +60,9 @@ struct GpuPathState {
     uint pad;
     float3 prev_normal;
     uint pad2_;
+    float3 prev_r;
+    uint pad3_;
+    float4 prev_lobe;
 };
 
 struct PtParams {
@@ -151,9 +156,11 @@ struct GpuVertex {
 
 struct GpuMaterial {
     float3 albedo;
-    uint pad0_;
+    float metallic;
     float3 emission;
-    uint pad1_;
+    float alpha;
+    float3 f0_;
+    float f90_;
 };
 
 struct MapParams {
@@ -241,10 +248,10 @@ static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
+static const float GGX_ALPHA_MIN = 0.001;
 static const uint LIGHT_BVH_LEAF = 4294967295u;
 static const float ONE_MINUS_EPSILON = 0.99999994;
 static const float F32_MAX = 3.4028235e38;
-static const float GGX_ALPHA_MIN = 0.001;
 static const float DEPTH_NONE = 1e30;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
@@ -259,15 +266,16 @@ ByteAddressBuffer geo_nodes : register(t6);
 ByteAddressBuffer geo_tris : register(t7);
 ByteAddressBuffer bsh_nodes : register(t5);
 ByteAddressBuffer lights : register(t2);
-ByteAddressBuffer r2_6 : register(t4);
+ByteAddressBuffer r2_7 : register(t4);
 ByteAddressBuffer rt2_7 : register(t3);
 ByteAddressBuffer power_table : register(t1, space1);
 ByteAddressBuffer light_cones : register(t2, space1);
 ByteAddressBuffer light_bvh : register(t3, space1);
 cbuffer params : register(b0) { ShadeParams params; }
 ByteAddressBuffer vertices_ : register(t1);
-RWByteAddressBuffer radiance : register(u8);
-RWByteAddressBuffer candidates : register(u9);
+ByteAddressBuffer materials : register(t8);
+RWByteAddressBuffer radiance : register(u9);
+RWByteAddressBuffer candidates : register(u10);
 
 float at(uint tab, uint i)
 {
@@ -427,15 +435,15 @@ float windowed_falloff(float d2_4, float range2_1)
 
 bool sphere_contains_point(float3 c, float r, float3 x_3)
 {
-    float3 v_9 = (x_3 - c);
-    return (dot(v_9, v_9) <= (r * r));
+    float3 v_10 = (x_3 - c);
+    return (dot(v_10, v_10) <= (r * r));
 }
 
 bool sphere_overlaps_sphere(float3 c1_, float r1_, float3 c2_, float r2_2)
 {
-    float3 v_10 = (c2_ - c1_);
-    float r_3 = (r1_ + r2_2);
-    return (dot(v_10, v_10) <= (r_3 * r_3));
+    float3 v_11 = (c2_ - c1_);
+    float r_14 = (r1_ + r2_2);
+    return (dot(v_11, v_11) <= (r_14 * r_14));
 }
 
 float sphere_pad(float r_1, float3 c_1)
@@ -447,18 +455,18 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 {
     bool local = (bool)0;
 
-    float3 v_11 = (c2_1 - c1_1);
-    float d_6 = sqrt(dot(v_11, v_11));
+    float3 v_12 = (c2_1 - c1_1);
+    float d_7 = sqrt(dot(v_12, v_12));
     const float _e8 = sphere_pad(r1_1, c1_1);
-    if ((r1_1 >= ((d_6 + r2_3) + _e8))) {
+    if ((r1_1 >= ((d_7 + r2_3) + _e8))) {
         return float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     const float _e16 = sphere_pad(r2_3, c2_1);
-    if ((r2_3 >= ((d_6 + r1_1) + _e16))) {
+    if ((r2_3 >= ((d_7 + r1_1) + _e16))) {
         return float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_6 >= SPHERE_HUGE))) {
-        local = ((0.5 * ((d_6 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if (!((d_7 >= SPHERE_HUGE))) {
+        local = ((0.5 * ((d_7 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local = true;
     }
@@ -466,30 +474,30 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
     if (_e35) {
         return float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if ((abs((r1_1 - r2_3)) >= d_6)) {
+    if ((abs((r1_1 - r2_3)) >= d_7)) {
         if ((r1_1 >= r2_3)) {
-            float rn = max(r1_1, (d_6 + r2_3));
+            float rn = max(r1_1, (d_7 + r2_3));
             const float _e50 = sphere_pad(rn, c1_1);
             return float4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        float rm = max(r2_3, (d_6 + r1_1));
+        float rm = max(r2_3, (d_7 + r1_1));
         const float _e58 = sphere_pad(rm, c2_1);
         return float4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    float r0_ = (0.5 * ((d_6 + r1_1) + r2_3));
-    float3 c_11 = (c1_1 + (v_11 * ((r0_ - r1_1) / d_6)));
+    float r0_ = (0.5 * ((d_7 + r1_1) + r2_3));
+    float3 c_11 = (c1_1 + (v_12 * ((r0_ - r1_1) / d_7)));
     float3 e1_ = (c_11 - c1_1);
     float3 e2_ = (c_11 - c2_1);
-    float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    const float _e82 = sphere_pad(r_4, c_11);
-    return float4(c_11.x, c_11.y, c_11.z, (r_4 + _e82));
+    float r_15 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
+    const float _e82 = sphere_pad(r_15, c_11);
+    return float4(c_11.x, c_11.y, c_11.z, (r_15 + _e82));
 }
 
 bool sphere_overlaps_aabb(float3 c_2, float r_2, float3 bmin, float3 bmax)
 {
     float3 q_3 = clamp(c_2, bmin, bmax);
-    float3 v_12 = (q_3 - c_2);
-    return (dot(v_12, v_12) <= (r_2 * r_2));
+    float3 v_13 = (q_3 - c_2);
+    return (dot(v_13, v_13) <= (r_2 * r_2));
 }
 
 float vpl_rt2_(float3 flux, float exposure_1, float error_bound_1, uint mode_1)
@@ -521,8 +529,8 @@ float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
     bool local_1 = (bool)0;
     bool local_2 = (bool)0;
 
-    float3 v_13 = (x_4 - y);
-    float d2_12 = dot(v_13, v_13);
+    float3 v_14 = (x_4 - y);
+    float d2_12 = dot(v_14, v_14);
     const bool _e7 = slc_keep(r2_5, d2_12);
     if (!(!(_e7))) {
         local_1 = !((d2_12 > 0.0));
@@ -533,7 +541,7 @@ float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
     if (_e16) {
         return 0.0;
     }
-    float3 w_13 = (v_13 / (sqrt(d2_12)).xxx);
+    float3 w_13 = (v_14 / (sqrt(d2_12)).xxx);
     float cos_x_1 = -(dot(n, w_13));
     if (!((cos_x_1 <= 0.0))) {
         local_2 = (dot(ng, w_13) >= 0.0);
@@ -554,8 +562,8 @@ float vpl_lobe(float3 n_1, float3 w_1)
 
 float vpl_transfer(float3 n_l, float3 n_x, float3 v_1, float min_d2_)
 {
-    float m = max(dot(v_1, v_1), min_d2_);
-    return (((max(dot(n_l, v_1), 0.0) * max(-(dot(n_x, v_1)), 0.0)) * INV_PI) / (m * m));
+    float m_1 = max(dot(v_1, v_1), min_d2_);
+    return (((max(dot(n_l, v_1), 0.0) * max(-(dot(n_x, v_1)), 0.0)) * INV_PI) / (m_1 * m_1));
 }
 
 float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
@@ -611,8 +619,8 @@ float atan_portable(float x_5)
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_5 = (_e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35));
-    return ((x_5 < 0.0) ? -(r_5) : r_5);
+    float r_16 = (_e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35));
+    return ((x_5 < 0.0) ? -(r_16) : r_16);
 }
 
 float atan2_portable(float y_1, float x_6)
@@ -883,292 +891,47 @@ uint uniform_light(float u_3, uint n_8)
     return min(_e4, (n_8 - 1u));
 }
 
-float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
-{
-    if ((cos_a > cos_b)) {
-        return 1.0;
-    }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
-}
-
-float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1)
-{
-    if ((cos_a_1 > cos_b_1)) {
-        return 0.0;
-    }
-    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
-}
-
-float safe_sqrt(float x_9)
-{
-    return sqrt(max(x_9, 0.0));
-}
-
-float light_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p, float3 n_9)
-{
-    float imp = (float)0;
-
-    float3 v_14 = (p - center_);
-    float dist2_ = dot(v_14, v_14);
-    float r2_7 = (radius * radius);
-    float d2_13 = max(max(dist2_, r2_7), MIN_D2_);
-    float3 wi_3 = ((dist2_ > 0.0) ? (v_14 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
-    float cos_w = dot(axis, wi_3);
-    const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e32 = safe_sqrt((1.0 - (r2_7 / dist2_)));
-    float cos_b_2 = ((dist2_ <= r2_7) ? -1.0 : _e32);
-    const float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
-    const float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
-    const float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
-    const float _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
-    const float _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
-    if ((_e46 <= cos_e)) {
-        return 0.0;
-    }
-    imp = ((phi * _e46) / d2_13);
-    if ((dot(n_9, n_9) > 0.0)) {
-        float cos_i = -(dot(wi_3, n_9));
-        const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
-        float _e61 = imp;
-        const float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
-        imp = (_e61 * max(_e62, 0.0));
-    }
-    float _e66 = imp;
-    return max(_e66, 0.0);
-}
-
-float candidate_weight(float importance, float rt2_4, float d2_8)
-{
-    const float _e3 = slc_weight(rt2_4, d2_8);
-    return (importance * _e3);
-}
-
-float cone_weight(float3 center_1, float radius_1, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, float3 p_1, float3 n_10)
-{
-    float3 v_15 = (p_1 - center_1);
-    const float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
-    const float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_15, v_15));
-    return _e14;
-}
-
-float weighted_select_pdf(float w_6, float w_sum_2, bool in_range_1, uint k_4)
-{
-    if ((w_6 <= 0.0)) {
-        return 0.0;
-    }
-    float total = (in_range_1 ? w_sum_2 : (w_sum_2 + w_6));
-    const float _e9 = to_f32_(k_4);
-    return ((_e9 * w_6) / total);
-}
-
-float bvh_first_prob(float c0_, float c1_2)
-{
-    float s = (c0_ + c1_2);
-    if ((s > 0.0)) {
-        return (c0_ / s);
-    }
-    return -1.0;
-}
-
-float bvh_remap_u(float u_4, float p0_, bool first)
-{
-    if (first) {
-        return min((u_4 / p0_), ONE_MINUS_EPSILON);
-    }
-    return clamp(((u_4 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
-}
-
-float surface_offset(float diag)
-{
-    return (1e-5 * diag);
-}
-
-float ray_t_min(float diag_1)
-{
-    return (1e-6 * diag_1);
-}
-
-float shadow_margin(float len)
-{
-    return (0.0001 * len);
-}
-
-float ray_inverse(float x_10)
-{
-    return (1.0 / ((abs(x_10) < 1e-30) ? 1e-30 : x_10));
-}
-
-float3 ray_inverse3_(float3 d)
-{
-    const float _e2 = ray_inverse(d.x);
-    const float _e4 = ray_inverse(d.y);
-    const float _e6 = ray_inverse(d.z);
-    return float3(_e2, _e4, _e6);
-}
-
-float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
-{
-    float3 t0_ = ((bmin_1 - o) * inv_d);
-    float3 t1_ = ((bmax_1 - o) * inv_d);
-    float3 lo_3 = min(t0_, t1_);
-    float3 hi_3 = max(t0_, t1_);
-    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
-    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
-    if ((t_in <= t_out)) {
-        return t_in;
-    }
-    return -1.0;
-}
-
-float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
-{
-    bool local_5 = (bool)0;
-
-    float3 n_34 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_34, n_34);
-    if (!(!((l2_ > 0.0)))) {
-        local_5 = !((l2_ < 3e38));
-    } else {
-        local_5 = true;
-    }
-    bool _e17 = local_5;
-    if (_e17) {
-        return float3(0.0, 0.0, 0.0);
-    }
-    return (n_34 / (sqrt(l2_)).xxx);
-}
-
-float3 face_against(float3 n_11, float3 dir)
-{
-    return ((dot(n_11, dir) > 0.0) ? -(n_11) : n_11);
-}
-
-float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
-{
-    float3 e1_1 = (b_5 - a_6);
-    float3 e2_1 = (c_7 - a_6);
-    float3 q_4 = (p_2 - a_6);
-    float d11_ = dot(e1_1, e1_1);
-    float d12_ = dot(e1_1, e2_1);
-    float d22_ = dot(e2_1, e2_1);
-    float den = ((d11_ * d22_) - (d12_ * d12_));
-    if (!((abs(den) > 0.0))) {
-        return float3(1.0, 0.0, 0.0);
-    }
-    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
-    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
-    return float3(((1.0 - w1_) - w2_), w1_, w2_);
-}
-
-float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_7, float3 facing)
-{
-    bool local_6 = (bool)0;
-
-    float3 s_1 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
-    float l2_1 = dot(s_1, s_1);
-    if (!(!((l2_1 > 1e-12)))) {
-        local_6 = !((l2_1 < 3e38));
-    } else {
-        local_6 = true;
-    }
-    bool _e24 = local_6;
-    if (_e24) {
-        return facing;
-    }
-    float3 n_35 = (s_1 / (sqrt(l2_1)).xxx);
-    return ((dot(n_35, facing) < 0.0) ? -(n_35) : n_35);
-}
-
-float ray_triangle(float3 o_1, float3 d_1, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
-{
-    bool local_7 = (bool)0;
-    bool local_8 = (bool)0;
-    bool local_9 = (bool)0;
-
-    float3 e1_2 = (b_6 - a_7);
-    float3 e2_2 = (c_8 - a_7);
-    float3 p_3 = cross(d_1, e2_2);
-    float det = dot(e1_2, p_3);
-    if ((abs(det) <= 0.0)) {
-        return -1.0;
-    }
-    float inv = (1.0 / det);
-    float3 s_2 = (o_1 - a_7);
-    float u_7 = (dot(s_2, p_3) * inv);
-    if (!((u_7 < 0.0))) {
-        local_7 = (u_7 > 1.0);
-    } else {
-        local_7 = true;
-    }
-    bool _e28 = local_7;
-    if (_e28) {
-        return -1.0;
-    }
-    float3 q_5 = cross(s_2, e1_2);
-    float v_16 = (dot(d_1, q_5) * inv);
-    if (!((v_16 < 0.0))) {
-        local_8 = ((u_7 + v_16) > 1.0);
-    } else {
-        local_8 = true;
-    }
-    bool _e42 = local_8;
-    if (_e42) {
-        return -1.0;
-    }
-    float t_3 = (dot(e2_2, q_5) * inv);
-    if ((t_3 > t_min)) {
-        local_9 = (t_3 < t_max_1);
-    } else {
-        local_9 = false;
-    }
-    bool _e51 = local_9;
-    if (_e51) {
-        return t_3;
-    }
-    return -1.0;
-}
-
 float mis_balance(float pdf_a, float pdf_b)
 {
-    float s_3 = (pdf_a + pdf_b);
-    if ((s_3 <= 0.0)) {
+    float s = (pdf_a + pdf_b);
+    if ((s <= 0.0)) {
         return 0.0;
     }
-    return (pdf_a / s_3);
+    return (pdf_a / s);
 }
 
 float mis_power(float pdf_a_1, float pdf_b_1)
 {
     float a2_ = (pdf_a_1 * pdf_a_1);
-    float s_4 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if ((s_4 <= 0.0)) {
+    float s_1 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_1 <= 0.0)) {
         return 0.0;
     }
-    return (a2_ / s_4);
+    return (a2_ / s_1);
 }
 
-float light_strategy_pdf(float select_, float rt2_6, float d2_9, float area_1, float cos_y)
+float light_strategy_pdf(float select_, float rt2_4, float d2_8, float area_1, float cos_y)
 {
-    bool local_10 = (bool)0;
-    bool local_11 = (bool)0;
+    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
 
-    if (!((d2_9 <= 0.0))) {
-        local_10 = (area_1 <= 0.0);
+    if (!((d2_8 <= 0.0))) {
+        local_5 = (area_1 <= 0.0);
     } else {
-        local_10 = true;
+        local_5 = true;
     }
-    bool _e13 = local_10;
+    bool _e13 = local_5;
     if (!(_e13)) {
-        local_11 = (cos_y <= 0.0);
+        local_6 = (cos_y <= 0.0);
     } else {
-        local_11 = true;
+        local_6 = true;
     }
-    bool _e20 = local_11;
+    bool _e20 = local_6;
     if (_e20) {
         return 0.0;
     }
-    const float _e22 = rr_probability(rt2_6, d2_9);
-    const float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_9, cos_y);
+    const float _e22 = rr_probability(rt2_4, d2_8);
+    const float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_8, cos_y);
     return ((select_ * _e22) * _e26);
 }
 
@@ -1182,39 +945,39 @@ float cosine_pdf(float cos_theta_1)
     return (max(cos_theta_1, 0.0) * INV_PI);
 }
 
-float3 onb_tangent(float3 n_12)
+float3 onb_tangent(float3 n_9)
 {
-    float s_5 = ((n_12.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_5 + n_12.z));
-    return float3((1.0 + (((s_5 * n_12.x) * n_12.x) * a_12)), (((s_5 * n_12.x) * n_12.y) * a_12), (-(s_5) * n_12.x));
+    float s_2 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_2 + n_9.z));
+    return float3((1.0 + (((s_2 * n_9.x) * n_9.x) * a_12)), (((s_2 * n_9.x) * n_9.y) * a_12), (-(s_2) * n_9.x));
 }
 
-float3 onb_bitangent(float3 n_13)
+float3 onb_bitangent(float3 n_10)
 {
-    float s_6 = ((n_13.z >= 0.0) ? 1.0 : -1.0);
-    float a_13 = (-1.0 / (s_6 + n_13.z));
-    return float3(((n_13.x * n_13.y) * a_13), (s_6 + ((n_13.y * n_13.y) * a_13)), -(n_13.y));
+    float s_3 = ((n_10.z >= 0.0) ? 1.0 : -1.0);
+    float a_13 = (-1.0 / (s_3 + n_10.z));
+    return float3(((n_10.x * n_10.y) * a_13), (s_3 + ((n_10.y * n_10.y) * a_13)), -(n_10.y));
 }
 
-float3 onb_to_world(float3 n_14, float3 d_2)
+float3 onb_to_world(float3 n_11, float3 d)
 {
-    const float3 _e2 = onb_tangent(n_14);
-    const float3 _e5 = onb_bitangent(n_14);
-    return (((_e2 * d_2.x) + (_e5 * d_2.y)) + (n_14 * d_2.z));
+    const float3 _e2 = onb_tangent(n_11);
+    const float3 _e5 = onb_bitangent(n_11);
+    return (((_e2 * d.x) + (_e5 * d.y)) + (n_11 * d.z));
 }
 
-float3 onb_to_local(float3 n_15, float3 w_8)
+float3 onb_to_local(float3 n_12, float3 w_6)
 {
-    const float3 _e2 = onb_tangent(n_15);
-    const float3 _e4 = onb_bitangent(n_15);
-    return float3(dot(w_8, _e2), dot(w_8, _e4), dot(w_8, n_15));
+    const float3 _e2 = onb_tangent(n_12);
+    const float3 _e4 = onb_bitangent(n_12);
+    return float3(dot(w_6, _e2), dot(w_6, _e4), dot(w_6, n_12));
 }
 
-float3 cosine_direction(float3 n_16, float u1_1, float u2_1)
+float3 cosine_direction(float3 n_13, float u1_1, float u2_1)
 {
-    float r_6 = sqrt(u1_1);
-    float phi_2 = (6.2831855 * u2_1);
-    const float3 _e16 = onb_to_world(n_16, float3((r_6 * cos(phi_2)), (r_6 * sin(phi_2)), sqrt(max((1.0 - u1_1), 0.0))));
+    float r_17 = sqrt(u1_1);
+    float phi_5 = (6.2831855 * u2_1);
+    const float3 _e16 = onb_to_world(n_13, float3((r_17 * cos(phi_5)), (r_17 * sin(phi_5)), sqrt(max((1.0 - u1_1), 0.0))));
     return normalize(_e16);
 }
 
@@ -1229,8 +992,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha)
         return 0.0;
     }
     float a2_1 = (alpha * alpha);
-    float t_4 = (((cos_h * cos_h) * a2_1) + sin2_h);
-    return ((a2_1 * INV_PI) / (t_4 * t_4));
+    float t_3 = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t_3 * t_3));
 }
 
 float smith_root(float cos_, float alpha_1)
@@ -1241,14 +1004,14 @@ float smith_root(float cos_, float alpha_1)
 
 float smith_visibility(float n_l_1, float n_v, float alpha_2)
 {
-    bool local_12 = (bool)0;
+    bool local_7 = (bool)0;
 
     if (!((n_l_1 <= 0.0))) {
-        local_12 = (n_v <= 0.0);
+        local_7 = (n_v <= 0.0);
     } else {
-        local_12 = true;
+        local_7 = true;
     }
-    bool _e11 = local_12;
+    bool _e11 = local_7;
     if (_e11) {
         return 0.0;
     }
@@ -1287,162 +1050,477 @@ float half_cosine(float3 v_2, float3 l)
     return saturate((dot(v_2, h_3) / sqrt(len2_)));
 }
 
-float3 specular_brdf(float3 base_6, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_17, float3 v_3, float3 l_1)
+float3 specular_brdf(float3 base_6, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_14, float3 v_3, float3 l_1)
 {
-    bool local_13 = (bool)0;
+    bool local_8 = (bool)0;
 
-    float n_l_2 = dot(n_17, l_1);
-    float n_v_2 = dot(n_17, v_3);
+    float n_l_2 = dot(n_14, l_1);
+    float n_v_2 = dot(n_14, v_3);
     if (!((n_l_2 <= 0.0))) {
-        local_13 = (n_v_2 <= 0.0);
+        local_8 = (n_v_2 <= 0.0);
     } else {
-        local_13 = true;
+        local_8 = true;
     }
-    bool _e18 = local_13;
+    bool _e18 = local_8;
     if (_e18) {
         return float3(0.0, 0.0, 0.0);
     }
     float3 hs = (v_3 + l_1);
-    float inv_1 = (1.0 / sqrt(dot(hs, hs)));
-    float3 h_4 = (hs * inv_1);
-    float3 c_15 = cross(n_17, h_4);
-    const float _e32 = ggx_d(dot(n_17, h_4), dot(c_15, c_15), alpha_3);
+    float inv = (1.0 / sqrt(dot(hs, hs)));
+    float3 h_4 = (hs * inv);
+    float3 c_15 = cross(n_14, h_4);
+    const float _e32 = ggx_d(dot(n_14, h_4), dot(c_15, c_15), alpha_3);
     const float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_3, h_4));
     const float _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
 
-float3 brdf_eval(float3 base_7, float metallic_3, float3 f0_d_3, float f90_d_3, float alpha_4, float3 n_18, float3 v_4, float3 l_2)
+float3 brdf_eval(float3 base_7, float metallic_3, float3 f0_d_3, float f90_d_3, float alpha_4, float3 n_15, float3 v_4, float3 l_2)
 {
-    if ((dot(n_18, l_2) <= 0.0)) {
+    if ((dot(n_15, l_2) <= 0.0)) {
         return float3(0.0, 0.0, 0.0);
     }
     const float _e15 = half_cosine(v_4, l_2);
     const float3 _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
-    const float3 _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_18, v_4, l_2);
+    const float3 _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_15, v_4, l_2);
     return (_e16 + _e17);
 }
 
 bool has_specular(float metallic_4, float3 f0_d_4, float f90_d_4)
 {
-    bool local_14 = (bool)0;
-    bool local_15 = (bool)0;
+    bool local_9 = (bool)0;
+    bool local_10 = (bool)0;
 
     if (!((metallic_4 > 0.0))) {
-        local_14 = (f90_d_4 > 0.0);
+        local_9 = (f90_d_4 > 0.0);
     } else {
-        local_14 = true;
+        local_9 = true;
     }
-    bool _e11 = local_14;
+    bool _e11 = local_9;
     if (!(_e11)) {
-        local_15 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
+        local_10 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
     } else {
-        local_15 = true;
+        local_10 = true;
     }
-    bool _e23 = local_15;
+    bool _e23 = local_10;
     return _e23;
 }
 
-float channel_mean(float3 c_9)
+float channel_mean(float3 c_6)
 {
-    return (((c_9.x + c_9.y) + c_9.z) * 0.33333334);
+    return (((c_6.x + c_6.y) + c_6.z) * 0.33333334);
 }
 
-float specular_probability(float3 base_8, float metallic_5, float3 f0_d_5, float f90_d_5, float n_v_1)
+float4 receiver_lobe(float3 base_8, float metallic_5, float3 f0_d_5, float f90_d_5, float alpha_5, float n_v_1)
 {
-    bool local_16 = (bool)0;
+    bool local_11 = (bool)0;
 
+    const float3 _e10 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
+    const float _e16 = channel_mean((((float3(1.0, 1.0, 1.0) - _e10) * base_8) * (1.0 - metallic_5)));
     if (!((n_v_1 <= 0.0))) {
-        const bool _e10 = has_specular(metallic_5, f0_d_5, f90_d_5);
-        local_16 = !(_e10);
+        const bool _e22 = has_specular(metallic_5, f0_d_5, f90_d_5);
+        local_11 = !(_e22);
     } else {
-        local_16 = true;
+        local_11 = true;
     }
-    bool _e13 = local_16;
-    if (_e13) {
+    bool _e25 = local_11;
+    if (_e25) {
+        return float4(_e16, 0.0, alpha_5, n_v_1);
+    }
+    const float3 _e28 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    const float _e29 = channel_mean(_e28);
+    return float4(_e16, _e29, alpha_5, n_v_1);
+}
+
+float specular_probability(float4 lobe)
+{
+    if ((lobe.y <= 0.0)) {
         return 0.0;
     }
-    const float3 _e15 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
-    const float _e16 = channel_mean(_e15);
-    const float3 _e21 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
-    const float _e27 = channel_mean((((float3(1.0, 1.0, 1.0) - _e21) * base_8) * (1.0 - metallic_5)));
-    if ((_e27 <= 0.0)) {
+    if ((lobe.x <= 0.0)) {
         return 1.0;
     }
-    if ((_e16 <= 0.0)) {
-        return 0.0;
-    }
-    return clamp((_e16 / (_e16 + _e27)), 0.1, 0.9);
+    return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
-float bounded_vndf_k(float3 wi, float alpha_5)
+float3 mirror_dir(float3 n_16, float3 v_5)
 {
-    float a_14 = saturate(alpha_5);
-    float s_7 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    return ((n_16 * (2.0 * dot(n_16, v_5))) - v_5);
+}
+
+float bounded_vndf_k(float3 wi, float alpha_6)
+{
+    float a_14 = saturate(alpha_6);
+    float s_4 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
     float a2_3 = (a_14 * a_14);
-    float s2_ = (s_7 * s_7);
+    float s2_ = (s_4 * s_4);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
-float3 ggx_vndf_sample(float3 wi_1, float alpha_6, float u1_2, float u2_2)
+float3 ggx_vndf_sample(float3 wi_1, float alpha_7, float u1_2, float u2_2)
 {
-    float3 wi_std = normalize(float3((wi_1.x * alpha_6), (wi_1.y * alpha_6), wi_1.z));
-    const float _e12 = bounded_vndf_k(wi_1, alpha_6);
+    float3 wi_std = normalize(float3((wi_1.x * alpha_7), (wi_1.y * alpha_7), wi_1.z));
+    const float _e12 = bounded_vndf_k(wi_1, alpha_7);
     float b_9 = ((wi_1.z > 0.0) ? (_e12 * wi_std.z) : wi_std.z);
-    float phi_3 = (6.2831855 * u1_2);
+    float phi_6 = (6.2831855 * u1_2);
     float z_4 = (((1.0 - u2_2) * (1.0 + b_9)) - b_9);
     float sin_t = sqrt(saturate((1.0 - (z_4 * z_4))));
-    float3 m_std = (wi_std + float3((sin_t * cos(phi_3)), (sin_t * sin(phi_3)), z_4));
-    float3 m_1 = normalize(float3((m_std.x * alpha_6), (m_std.y * alpha_6), m_std.z));
-    return ((m_1 * (2.0 * dot(wi_1, m_1))) - wi_1);
+    float3 m_std = (wi_std + float3((sin_t * cos(phi_6)), (sin_t * sin(phi_6)), z_4));
+    float3 m_2 = normalize(float3((m_std.x * alpha_7), (m_std.y * alpha_7), m_std.z));
+    return ((m_2 * (2.0 * dot(wi_1, m_2))) - wi_1);
 }
 
-float ggx_vndf_pdf(float3 wi_2, float3 wo, float alpha_7)
+float ggx_vndf_pdf(float3 wi_2, float3 wo, float alpha_8)
 {
-    bool local_17 = (bool)0;
+    bool local_12 = (bool)0;
 
     if (!((wi_2.z <= 0.0))) {
-        local_17 = (wo.z <= 0.0);
+        local_12 = (wo.z <= 0.0);
     } else {
-        local_17 = true;
+        local_12 = true;
     }
-    bool _e13 = local_17;
+    bool _e13 = local_12;
     if (_e13) {
         return 0.0;
     }
     float3 hs_1 = (wi_2 + wo);
-    float3 m_2 = (hs_1 / (sqrt(dot(hs_1, hs_1))).xxx);
-    const float _e28 = ggx_d(m_2.z, ((m_2.x * m_2.x) + (m_2.y * m_2.y)), alpha_7);
-    float t_5 = sqrt((((alpha_7 * alpha_7) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
-    const float _e43 = bounded_vndf_k(wi_2, alpha_7);
-    return (_e28 / (2.0 * ((_e43 * wi_2.z) + t_5)));
+    float3 m_3 = (hs_1 / (sqrt(dot(hs_1, hs_1))).xxx);
+    const float _e28 = ggx_d(m_3.z, ((m_3.x * m_3.x) + (m_3.y * m_3.y)), alpha_8);
+    float t_4 = sqrt((((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
+    const float _e43 = bounded_vndf_k(wi_2, alpha_8);
+    return (_e28 / (2.0 * ((_e43 * wi_2.z) + t_4)));
 }
 
-float3 bsdf_sample(float3 n_19, float3 v_5, float alpha_8, float p_spec, float u1_3, float u2_3)
+float3 bsdf_sample(float3 n_17, float3 v_6, float alpha_9, float p_spec, float u1_3, float u2_3)
 {
     if ((u1_3 < p_spec)) {
-        if ((dot(n_19, v_5) <= 0.0)) {
-            return -(n_19);
+        if ((dot(n_17, v_6) <= 0.0)) {
+            return -(n_17);
         }
-        const float3 _e11 = onb_to_local(n_19, v_5);
-        const float3 _e13 = ggx_vndf_sample(_e11, alpha_8, (u1_3 / p_spec), u2_3);
-        const float3 _e14 = onb_to_world(n_19, _e13);
+        const float3 _e11 = onb_to_local(n_17, v_6);
+        const float3 _e13 = ggx_vndf_sample(_e11, alpha_9, (u1_3 / p_spec), u2_3);
+        const float3 _e14 = onb_to_world(n_17, _e13);
         return normalize(_e14);
     }
-    const float3 _e20 = cosine_direction(n_19, ((u1_3 - p_spec) / (1.0 - p_spec)), u2_3);
+    const float3 _e20 = cosine_direction(n_17, ((u1_3 - p_spec) / (1.0 - p_spec)), u2_3);
     return _e20;
 }
 
-float bsdf_pdf(float3 n_20, float3 v_6, float3 l_3, float alpha_9, float p_spec_1)
+float bsdf_pdf(float3 n_18, float3 v_7, float3 l_3, float alpha_10, float p_spec_1)
 {
-    const float _e6 = cosine_pdf(dot(n_20, l_3));
+    const float _e6 = cosine_pdf(dot(n_18, l_3));
     if ((p_spec_1 <= 0.0)) {
         return _e6;
     }
-    const float3 _e9 = onb_to_local(n_20, v_6);
-    const float3 _e10 = onb_to_local(n_20, l_3);
-    const float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_9);
+    const float3 _e9 = onb_to_local(n_18, v_7);
+    const float3 _e10 = onb_to_local(n_18, l_3);
+    const float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_10);
     return ((p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6));
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+{
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1)
+{
+    if ((cos_a_1 > cos_b_1)) {
+        return 0.0;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+float safe_sqrt(float x_9)
+{
+    return sqrt(max(x_9, 0.0));
+}
+
+float subtended_cos(float dist2_, float r2_6)
+{
+    const float _e5 = safe_sqrt((1.0 - (r2_6 / dist2_)));
+    return ((dist2_ <= r2_6) ? -1.0 : _e5);
+}
+
+float emitter_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p)
+{
+    float3 v_15 = (p - center_);
+    float dist2_1 = dot(v_15, v_15);
+    float r2_8 = (radius * radius);
+    float d2_13 = max(max(dist2_1, r2_8), MIN_D2_);
+    float3 wi_3 = ((dist2_1 > 0.0) ? (v_15 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi_3);
+    const float _e27 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    const float _e28 = subtended_cos(dist2_1, r2_8);
+    const float _e32 = safe_sqrt((1.0 - (_e28 * _e28)));
+    const float _e36 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    const float _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
+    const float _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
+    const float _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
+    if ((_e39 <= cos_e)) {
+        return 0.0;
+    }
+    return ((phi * _e39) / d2_13);
+}
+
+float cone_cos_toward(float3 center_1, float radius_1, float3 p_1, float3 d_1)
+{
+    float3 v_16 = (center_1 - p_1);
+    float dist2_2 = dot(v_16, v_16);
+    float3 w_14 = ((dist2_2 > 0.0) ? (v_16 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0));
+    const float _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
+    float cos_i = dot(w_14, d_1);
+    const float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
+    const float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
+    const float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float light_importance(float3 center_2, float radius_2, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float3 p_2, float3 n_19)
+{
+    float imp = (float)0;
+
+    const float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
+    imp = _e8;
+    if ((dot(n_19, n_19) > 0.0)) {
+        float _e13 = imp;
+        const float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_19);
+        imp = (_e13 * max(_e14, 0.0));
+    }
+    float _e18 = imp;
+    return max(_e18, 0.0);
+}
+
+float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_20, float3 r_3, float4 lobe_1)
+{
+    bool local_13 = (bool)0;
+
+    const float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
+    const float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_20);
+    if (!((_e10 <= 0.0))) {
+        local_13 = (_e11 <= 0.0);
+    } else {
+        local_13 = true;
+    }
+    bool _e20 = local_13;
+    if (_e20) {
+        return 0.0;
+    }
+    const float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
+    const float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
+    const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_1.z);
+    const float _e39 = smith_root(lobe_1.w, lobe_1.z);
+    float spec = (((lobe_1.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+}
+
+float receiver_importance(float3 center_4, float radius_4, float phi_3, float3 axis_3, float cos_o_3, float cos_e_3, float3 p_4, float3 n_21, float3 r_4, float4 lobe_2)
+{
+    if ((lobe_2.y <= 0.0)) {
+        const float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
+        return _e13;
+    }
+    const float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    return _e14;
+}
+
+float candidate_weight(float importance, float rt2_5, float d2_9)
+{
+    const float _e3 = slc_weight(rt2_5, d2_9);
+    return (importance * _e3);
+}
+
+float cone_weight(float3 center_5, float radius_5, float phi_4, float3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, float3 p_5, float3 n_22, float3 r_5, float4 lobe_3)
+{
+    float3 v_17 = (p_5 - center_5);
+    if ((lobe_3.y <= 0.0)) {
+        const float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
+        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
+        return _e19;
+    }
+    const float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    const float _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
+    return _e22;
+}
+
+float weighted_select_pdf(float w_7, float w_sum_2, bool in_range_1, uint k_4)
+{
+    if ((w_7 <= 0.0)) {
+        return 0.0;
+    }
+    float total = (in_range_1 ? w_sum_2 : (w_sum_2 + w_7));
+    const float _e9 = to_f32_(k_4);
+    return ((_e9 * w_7) / total);
+}
+
+float bvh_first_prob(float c0_, float c1_2)
+{
+    float s_5 = (c0_ + c1_2);
+    if ((s_5 > 0.0)) {
+        return (c0_ / s_5);
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(float u_4, float p0_, bool first)
+{
+    if (first) {
+        return min((u_4 / p0_), ONE_MINUS_EPSILON);
+    }
+    return clamp(((u_4 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
+float surface_offset(float diag)
+{
+    return (1e-5 * diag);
+}
+
+float ray_t_min(float diag_1)
+{
+    return (1e-6 * diag_1);
+}
+
+float shadow_margin(float len)
+{
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_10)
+{
+    return (1.0 / ((abs(x_10) < 1e-30) ? 1e-30 : x_10));
+}
+
+float3 ray_inverse3_(float3 d_2)
+{
+    const float _e2 = ray_inverse(d_2.x);
+    const float _e4 = ray_inverse(d_2.y);
+    const float _e6 = ray_inverse(d_2.z);
+    return float3(_e2, _e4, _e6);
+}
+
+float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
+{
+    float3 t0_ = ((bmin_1 - o) * inv_d);
+    float3 t1_ = ((bmax_1 - o) * inv_d);
+    float3 lo_3 = min(t0_, t1_);
+    float3 hi_3 = max(t0_, t1_);
+    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
+    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+float3 triangle_normal(float3 a_5, float3 b_4, float3 c_7)
+{
+    bool local_14 = (bool)0;
+
+    float3 n_37 = cross((b_4 - a_5), (c_7 - a_5));
+    float l2_ = dot(n_37, n_37);
+    if (!(!((l2_ > 0.0)))) {
+        local_14 = !((l2_ < 3e38));
+    } else {
+        local_14 = true;
+    }
+    bool _e17 = local_14;
+    if (_e17) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    return (n_37 / (sqrt(l2_)).xxx);
+}
+
+float3 face_against(float3 n_23, float3 dir)
+{
+    return ((dot(n_23, dir) > 0.0) ? -(n_23) : n_23);
+}
+
+float3 barycentric(float3 p_6, float3 a_6, float3 b_5, float3 c_8)
+{
+    float3 e1_1 = (b_5 - a_6);
+    float3 e2_1 = (c_8 - a_6);
+    float3 q_4 = (p_6 - a_6);
+    float d11_ = dot(e1_1, e1_1);
+    float d12_ = dot(e1_1, e2_1);
+    float d22_ = dot(e2_1, e2_1);
+    float den = ((d11_ * d22_) - (d12_ * d12_));
+    if (!((abs(den) > 0.0))) {
+        return float3(1.0, 0.0, 0.0);
+    }
+    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
+    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
+    return float3(((1.0 - w1_) - w2_), w1_, w2_);
+}
+
+float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_8, float3 facing)
+{
+    bool local_15 = (bool)0;
+
+    float3 s_6 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
+    float l2_1 = dot(s_6, s_6);
+    if (!(!((l2_1 > 1e-12)))) {
+        local_15 = !((l2_1 < 3e38));
+    } else {
+        local_15 = true;
+    }
+    bool _e24 = local_15;
+    if (_e24) {
+        return facing;
+    }
+    float3 n_38 = (s_6 / (sqrt(l2_1)).xxx);
+    return ((dot(n_38, facing) < 0.0) ? -(n_38) : n_38);
+}
+
+float ray_triangle(float3 o_1, float3 d_3, float3 a_7, float3 b_6, float3 c_9, float t_min, float t_max_1)
+{
+    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
+    bool local_18 = (bool)0;
+
+    float3 e1_2 = (b_6 - a_7);
+    float3 e2_2 = (c_9 - a_7);
+    float3 p_7 = cross(d_3, e2_2);
+    float det = dot(e1_2, p_7);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv_1 = (1.0 / det);
+    float3 s_7 = (o_1 - a_7);
+    float u_7 = (dot(s_7, p_7) * inv_1);
+    if (!((u_7 < 0.0))) {
+        local_16 = (u_7 > 1.0);
+    } else {
+        local_16 = true;
+    }
+    bool _e28 = local_16;
+    if (_e28) {
+        return -1.0;
+    }
+    float3 q_5 = cross(s_7, e1_2);
+    float v_18 = (dot(d_3, q_5) * inv_1);
+    if (!((v_18 < 0.0))) {
+        local_17 = ((u_7 + v_18) > 1.0);
+    } else {
+        local_17 = true;
+    }
+    bool _e42 = local_17;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_5 = (dot(e2_2, q_5) * inv_1);
+    if ((t_5 > t_min)) {
+        local_18 = (t_5 < t_max_1);
+    } else {
+        local_18 = false;
+    }
+    bool _e51 = local_18;
+    if (_e51) {
+        return t_5;
+    }
+    return -1.0;
 }
 
 float inv_sigma_z(float z)
@@ -1483,14 +1561,14 @@ float3 filtered_irradiance(float3 e, float3 sum_1, float weight)
     return e;
 }
 
-float bilateral_weight(float3 n_21, float3 nj, float z_1, float zj, float inv_sz)
+float bilateral_weight(float3 n_24, float3 nj, float z_1, float zj, float inv_sz)
 {
-    float dn = max(dot(n_21, nj), 0.0);
+    float dn = max(dot(n_24, nj), 0.0);
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
-    float d_7 = ((zj - z_1) * inv_sz);
-    float t_6 = max((1.0 - (d_7 * d_7)), 0.0);
+    float d_8 = ((zj - z_1) * inv_sz);
+    float t_6 = max((1.0 - (d_8 * d_8)), 0.0);
     return (((dn8_ * dn8_) * t_6) * t_6);
 }
 
@@ -1576,36 +1654,36 @@ bool sees_emission(float3 gn, float3 dir_1)
     return (dot(gn, dir_1) < 0.0);
 }
 
-bool continues_path(float3 nd, float3 n_22, float3 ng_1)
-{
-    bool local_18 = (bool)0;
-
-    if ((dot(nd, n_22) > 0.0)) {
-        local_18 = (dot(nd, ng_1) > 0.0);
-    } else {
-        local_18 = false;
-    }
-    bool _e12 = local_18;
-    return _e12;
-}
-
-bool finite3_(float3 v_7)
+bool continues_path(float3 nd, float3 n_25, float3 ng_1)
 {
     bool local_19 = (bool)0;
-    bool local_20 = (bool)0;
 
-    if ((abs(v_7.x) <= F32_MAX)) {
-        local_19 = (abs(v_7.y) <= F32_MAX);
+    if ((dot(nd, n_25) > 0.0)) {
+        local_19 = (dot(nd, ng_1) > 0.0);
     } else {
         local_19 = false;
     }
     bool _e12 = local_19;
-    if (_e12) {
-        local_20 = (abs(v_7.z) <= F32_MAX);
+    return _e12;
+}
+
+bool finite3_(float3 v_8)
+{
+    bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
+
+    if ((abs(v_8.x) <= F32_MAX)) {
+        local_20 = (abs(v_8.y) <= F32_MAX);
     } else {
         local_20 = false;
     }
-    bool _e20 = local_20;
+    bool _e12 = local_20;
+    if (_e12) {
+        local_21 = (abs(v_8.z) <= F32_MAX);
+    } else {
+        local_21 = false;
+    }
+    bool _e20 = local_21;
     return _e20;
 }
 
@@ -1629,21 +1707,21 @@ uint light_map_texel(float a_8, uint size_7)
     return _e14;
 }
 
-float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2, bool perspective)
+float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_5, float extent_2, bool perspective)
 {
-    return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
+    return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_5) : 1.0) * extent_2));
 }
 
 float display_encode(float x_14)
 {
-    float v_17 = max(x_14, 0.0);
-    float t_8 = ((2.0 * v_17) / (1.0 + (2.0 * v_17)));
+    float v_19 = max(x_14, 0.0);
+    float t_8 = ((2.0 * v_19) / (1.0 + (2.0 * v_19)));
     return ((t_8 <= 0.0031308) ? (12.92 * t_8) : ((1.055 * pow(t_8, 0.41666666)) - 0.055));
 }
 
-float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
+float light_map_depth(float3 rel_1, float3 axis_6, bool perspective_1)
 {
-    return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
+    return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_6));
 }
 
 float rsm_texel_solid_angle(float texel_area, float cos_axis)
@@ -1651,22 +1729,22 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-float3 point_irradiance(float3 intensity_1, float3 n_23, float3 v_8)
+float3 point_irradiance(float3 intensity_1, float3 n_26, float3 v_9)
 {
-    float d2_14 = dot(v_8, v_8);
-    float cos_x_2 = (dot(n_23, v_8) / sqrt(max(d2_14, MIN_D2_)));
+    float d2_14 = dot(v_9, v_9);
+    float cos_x_2 = (dot(n_26, v_9) / sqrt(max(d2_14, MIN_D2_)));
     const float _e11 = inverse_square(d2_14);
     return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
-float3 directional_irradiance(float3 e_1, float3 n_24, float3 to_light)
+float3 directional_irradiance(float3 e_1, float3 n_27, float3 to_light)
 {
-    return (e_1 * max(dot(n_24, to_light), 0.0));
+    return (e_1 * max(dot(n_27, to_light), 0.0));
 }
 
-float perspective_texel_width(float extent_3, float d_3, float z_2, float size_8)
+float perspective_texel_width(float extent_3, float d_4, float z_2, float size_8)
 {
-    return ((((2.0 * extent_3) * d_3) * d_3) / (size_8 * z_2));
+    return ((((2.0 * extent_3) * d_4) * d_4) / (size_8 * z_2));
 }
 
 float ortho_texel_width(float extent_4, float size_9)
@@ -1680,16 +1758,16 @@ float shadow_bias(float texel, float cos_light_1)
     return (texel * (1.5 + (sqrt((1.0 - (c_16 * c_16))) / c_16)));
 }
 
-bool shadow_lit(float d_4, float d_map, float bias)
+bool shadow_lit(float d_5, float d_map, float bias)
 {
-    bool local_21 = (bool)0;
+    bool local_22 = (bool)0;
 
     if (!((d_map <= 0.0))) {
-        local_21 = (d_4 <= (d_map + bias));
+        local_22 = (d_5 <= (d_map + bias));
     } else {
-        local_21 = true;
+        local_22 = true;
     }
-    bool _e11 = local_21;
+    bool _e11 = local_22;
     return _e11;
 }
 
@@ -1765,7 +1843,7 @@ GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3,
     return ret;
 }
 
-GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
+GeoHit trace(float3 o_2, float3 d_6, float t_min_1, float t_max_2, bool any_hit)
 {
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
@@ -1780,18 +1858,18 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
         const GeoHit geohit = _e13;
         return geohit;
     }
-    const float3 _e14 = ray_inverse3_(d_5);
+    const float3 _e14 = ray_inverse3_(d_6);
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         uint _e21 = node;
-        GpuGeoNode n_36 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_39 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_36.bmin, n_36.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_39.bmin, n_39.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_36.count > 0u)) {
-                i_2 = n_36.first;
+            if ((n_39.count > 0u)) {
+                i_2 = n_39.first;
                 uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1803,7 +1881,7 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e36 = i_2;
-                    if ((_e36 < (n_36.first + n_36.count))) {
+                    if ((_e36 < (n_39.first + n_39.count))) {
                     } else {
                         break;
                     }
@@ -1811,7 +1889,7 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                         uint _e42 = i_2;
                         GpuTriangle t_9 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_5, t_9.v0_, t_9.v1_, t_9.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_6, t_9.v0_, t_9.v1_, t_9.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i_2;
@@ -1828,11 +1906,11 @@ GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_36.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_39.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_36.first;
+                node = n_39.first;
                 continue;
             }
         }
@@ -2006,37 +2084,37 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_17, float3 n_25, float3 ng_2, float w_res, float u1_5, float u2_5, float eps)
+Connection connect(uint li, float3 x_17, float3 n_28, float3 ng_2, float w_res, float u1_5, float u2_5, float eps)
 {
     Connection c_10 = (Connection)0;
-    bool local_22 = (bool)0;
+    bool local_23 = (bool)0;
 
     c_10.e = (0.0).xxx;
     GpuLight l_8 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     const float3 _e16 = light_point(l_8, u1_5, u2_5);
     c_10.y = _e16;
     float3 _e19 = c_10.y;
-    float _e22 = asfloat(r2_6.Load(li*4));
-    const float _e23 = connection_cosine(x_17, _e19, n_25, ng_2, _e22);
+    float _e22 = asfloat(r2_7.Load(li*4));
+    const float _e23 = connection_cosine(x_17, _e19, n_28, ng_2, _e22);
     c_10.cos_x = _e23;
     float _e25 = c_10.cos_x;
     if (!((_e25 <= 0.0))) {
         float3 _e34 = c_10.y;
         const bool _e35 = occluded((x_17 + (ng_2 * eps)), _e34);
-        local_22 = _e35;
+        local_23 = _e35;
     } else {
-        local_22 = true;
+        local_23 = true;
     }
-    bool _e37 = local_22;
+    bool _e37 = local_23;
     if (_e37) {
         Connection _e38 = c_10;
         const Connection connection = _e38;
         return connection;
     }
     float3 _e40 = c_10.y;
-    float3 v_18 = (x_17 - _e40);
-    float d2_15 = dot(v_18, v_18);
-    const float3 _e47 = light_intensity(l_8, (v_18 / (sqrt(d2_15)).xxx));
+    float3 v_20 = (x_17 - _e40);
+    float d2_15 = dot(v_20, v_20);
+    const float3 _e47 = light_intensity(l_8, (v_20 / (sqrt(d2_15)).xxx));
     float _e49 = c_10.cos_x;
     float _e52 = asfloat(rt2_7.Load(li*4));
     const float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
@@ -2065,12 +2143,12 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_weight(uint li_1, float3 x_18, float3 n_26)
+float light_weight(uint li_1, float3 x_18, float3 n_29, float3 r_6, float4 lobe_4)
 {
     GpuLightCone c_17 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    float _e14 = asfloat(rt2_7.Load(li_1*4));
-    const float _e15 = cone_weight(c_17.center_, c_17.radius, c_17.phi, c_17.axis, c_17.cos_o, c_17.cos_e, _e14, x_18, n_26);
-    return _e15;
+    float _e16 = asfloat(rt2_7.Load(li_1*4));
+    const float _e17 = cone_weight(c_17.center_, c_17.radius, c_17.phi, c_17.axis, c_17.cos_o, c_17.cos_e, _e16, x_18, n_29, r_6, lobe_4);
+    return _e17;
 }
 
 GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
@@ -2098,33 +2176,33 @@ uint light_bvh_count(uint nodes_6)
     return ((NagaBufferLength(light_bvh) - 0) / 48);
 }
 
-float bvh_importance(uint nodes_7, uint i_8, float3 x_19, float3 n_27)
+float bvh_importance(uint nodes_7, uint i_8, float3 x_19, float3 n_30, float3 r_7, float4 lobe_5)
 {
-    const GpuLightBvhNode _e4 = light_bvh_node(nodes_7, i_8);
-    const float _e11 = light_importance(_e4.center_, _e4.radius, _e4.phi, _e4.axis, _e4.cos_o, _e4.cos_e, x_19, n_27);
-    return _e11;
+    const GpuLightBvhNode _e6 = light_bvh_node(nodes_7, i_8);
+    const float _e13 = receiver_importance(_e6.center_, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_19, n_30, r_7, lobe_5);
+    return _e13;
 }
 
-float bvh_first(uint nodes_8, uint i_9, float3 x_20, float3 n_28)
+float bvh_first(uint nodes_8, uint i_9, float3 x_20, float3 n_31, float3 r_8, float4 lobe_6)
 {
-    bool local_23 = (bool)0;
+    bool local_24 = (bool)0;
 
-    const GpuLightBvhNode _e4 = light_bvh_node(nodes_8, i_9);
-    uint j = _e4.second;
+    const GpuLightBvhNode _e6 = light_bvh_node(nodes_8, i_9);
+    uint j = _e6.second;
     if (!((j <= (i_9 + 1u)))) {
-        const uint _e12 = light_bvh_count(nodes_8);
-        local_23 = (j >= _e12);
+        const uint _e14 = light_bvh_count(nodes_8);
+        local_24 = (j >= _e14);
     } else {
-        local_23 = true;
+        local_24 = true;
     }
-    bool _e15 = local_23;
-    if (_e15) {
+    bool _e17 = local_24;
+    if (_e17) {
         return -1.0;
     }
-    const float _e19 = bvh_importance(nodes_8, (i_9 + 1u), x_20, n_28);
-    const float _e20 = bvh_importance(nodes_8, j, x_20, n_28);
-    const float _e21 = bvh_first_prob(_e19, _e20);
-    return _e21;
+    const float _e21 = bvh_importance(nodes_8, (i_9 + 1u), x_20, n_31, r_8, lobe_6);
+    const float _e22 = bvh_importance(nodes_8, j, x_20, n_31, r_8, lobe_6);
+    const float _e23 = bvh_first_prob(_e21, _e22);
+    return _e23;
 }
 
 BvhPick ConstructBvhPick(uint arg0, float arg1) {
@@ -2140,188 +2218,200 @@ BvhPick bvh_pick_none()
     return bvhpick;
 }
 
-BvhPick light_bvh_sample(uint nodes_9, float3 x_21, float3 n_29, float u_in)
+BvhPick light_bvh_sample(uint nodes_9, float3 x_21, float3 n_32, float3 r_9, float4 lobe_7, float u_in)
 {
     BvhPick pick = (BvhPick)0;
     float u_6 = (float)0;
     uint i_10 = 0u;
     float pmf = 1.0;
-    bool local_24 = (bool)0;
+    bool local_25 = (bool)0;
 
-    const BvhPick _e4 = bvh_pick_none();
-    pick = _e4;
+    const BvhPick _e6 = bvh_pick_none();
+    pick = _e6;
     u_6 = u_in;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        uint _e11 = i_10;
-        const uint _e12 = light_bvh_count(nodes_9);
-        if ((_e11 < _e12)) {
+        uint _e13 = i_10;
+        const uint _e14 = light_bvh_count(nodes_9);
+        if ((_e13 < _e14)) {
         } else {
             break;
         }
         {
-            uint _e14 = i_10;
-            const GpuLightBvhNode _e15 = light_bvh_node(nodes_9, _e14);
-            if ((_e15.second == LIGHT_BVH_LEAF)) {
-                uint _e19 = i_10;
-                if (!((_e19 > 0u))) {
-                    const float _e26 = bvh_importance(nodes_9, 0u, x_21, n_29);
-                    local_24 = (_e26 > 0.0);
+            uint _e16 = i_10;
+            const GpuLightBvhNode _e17 = light_bvh_node(nodes_9, _e16);
+            if ((_e17.second == LIGHT_BVH_LEAF)) {
+                uint _e21 = i_10;
+                if (!((_e21 > 0u))) {
+                    const float _e28 = bvh_importance(nodes_9, 0u, x_21, n_32, r_9, lobe_7);
+                    local_25 = (_e28 > 0.0);
                 } else {
-                    local_24 = true;
+                    local_25 = true;
                 }
-                bool _e30 = local_24;
-                if (_e30) {
-                    pick.light = _e15.light;
-                    float _e34 = pmf;
-                    pick.pmf = _e34;
+                bool _e32 = local_25;
+                if (_e32) {
+                    pick.light = _e17.light;
+                    float _e36 = pmf;
+                    pick.pmf = _e36;
                 }
-                BvhPick _e35 = pick;
-                const BvhPick bvhpick_1 = _e35;
+                BvhPick _e37 = pick;
+                const BvhPick bvhpick_1 = _e37;
                 return bvhpick_1;
             }
-            uint _e36 = i_10;
-            const float _e37 = bvh_first(nodes_9, _e36, x_21, n_29);
-            if ((_e37 < 0.0)) {
-                BvhPick _e40 = pick;
-                const BvhPick bvhpick_2 = _e40;
+            uint _e38 = i_10;
+            const float _e39 = bvh_first(nodes_9, _e38, x_21, n_32, r_9, lobe_7);
+            if ((_e39 < 0.0)) {
+                BvhPick _e42 = pick;
+                const BvhPick bvhpick_2 = _e42;
                 return bvhpick_2;
             }
-            float _e41 = u_6;
-            bool first_1 = (_e41 < _e37);
-            float _e43 = pmf;
-            pmf = (_e43 * (first_1 ? _e37 : (1.0 - _e37)));
-            float _e48 = u_6;
-            const float _e49 = bvh_remap_u(_e48, _e37, first_1);
-            u_6 = _e49;
-            uint _e51 = i_10;
-            i_10 = (first_1 ? (_e51 + 1u) : _e15.second);
+            float _e43 = u_6;
+            bool first_1 = (_e43 < _e39);
+            float _e45 = pmf;
+            pmf = (_e45 * (first_1 ? _e39 : (1.0 - _e39)));
+            float _e50 = u_6;
+            const float _e51 = bvh_remap_u(_e50, _e39, first_1);
+            u_6 = _e51;
+            uint _e53 = i_10;
+            i_10 = (first_1 ? (_e53 + 1u) : _e17.second);
         }
     }
-    BvhPick _e55 = pick;
-    const BvhPick bvhpick_3 = _e55;
+    BvhPick _e57 = pick;
+    const BvhPick bvhpick_3 = _e57;
     return bvhpick_3;
 }
 
-float light_bvh_pmf(uint nodes_10, uint leaf, float3 x_22, float3 n_30)
+float light_bvh_pmf(uint nodes_10, uint leaf, float3 x_22, float3 n_33, float3 r_10, float4 lobe_8)
 {
     uint i_11 = 0u;
     float pmf_1 = 1.0;
-    bool local_25 = (bool)0;
     bool local_26 = (bool)0;
+    bool local_27 = (bool)0;
 
-    const uint _e4 = light_bvh_count(nodes_10);
-    if ((leaf >= _e4)) {
+    const uint _e6 = light_bvh_count(nodes_10);
+    if ((leaf >= _e6)) {
         return 0.0;
     }
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e11 = i_11;
-        const uint _e12 = light_bvh_count(nodes_10);
-        if ((_e11 < _e12)) {
+        uint _e13 = i_11;
+        const uint _e14 = light_bvh_count(nodes_10);
+        if ((_e13 < _e14)) {
         } else {
             break;
         }
         {
-            uint _e14 = i_11;
-            const GpuLightBvhNode _e15 = light_bvh_node(nodes_10, _e14);
-            if ((_e15.second == LIGHT_BVH_LEAF)) {
-                uint _e19 = i_11;
-                if ((_e19 == leaf)) {
-                    uint _e23 = i_11;
-                    if (!((_e23 > 0u))) {
-                        const float _e30 = bvh_importance(nodes_10, 0u, x_22, n_30);
-                        local_26 = (_e30 > 0.0);
+            uint _e16 = i_11;
+            const GpuLightBvhNode _e17 = light_bvh_node(nodes_10, _e16);
+            if ((_e17.second == LIGHT_BVH_LEAF)) {
+                uint _e21 = i_11;
+                if ((_e21 == leaf)) {
+                    uint _e25 = i_11;
+                    if (!((_e25 > 0u))) {
+                        const float _e32 = bvh_importance(nodes_10, 0u, x_22, n_33, r_10, lobe_8);
+                        local_27 = (_e32 > 0.0);
                     } else {
-                        local_26 = true;
+                        local_27 = true;
                     }
-                    bool _e34 = local_26;
-                    local_25 = _e34;
+                    bool _e36 = local_27;
+                    local_26 = _e36;
                 } else {
-                    local_25 = false;
+                    local_26 = false;
                 }
-                bool _e36 = local_25;
-                if (_e36) {
-                    float _e37 = pmf_1;
-                    return _e37;
+                bool _e38 = local_26;
+                if (_e38) {
+                    float _e39 = pmf_1;
+                    return _e39;
                 }
                 return 0.0;
             }
-            uint _e39 = i_11;
-            const float _e40 = bvh_first(nodes_10, _e39, x_22, n_30);
-            if ((_e40 < 0.0)) {
+            uint _e41 = i_11;
+            const float _e42 = bvh_first(nodes_10, _e41, x_22, n_33, r_10, lobe_8);
+            if ((_e42 < 0.0)) {
                 return 0.0;
             }
-            bool first_2 = (leaf < _e15.second);
-            float _e46 = pmf_1;
-            pmf_1 = (_e46 * (first_2 ? _e40 : (1.0 - _e40)));
-            uint _e52 = i_11;
-            i_11 = (first_2 ? (_e52 + 1u) : _e15.second);
+            bool first_2 = (leaf < _e17.second);
+            float _e48 = pmf_1;
+            pmf_1 = (_e48 * (first_2 ? _e42 : (1.0 - _e42)));
+            uint _e54 = i_11;
+            i_11 = (first_2 ? (_e54 + 1u) : _e17.second);
         }
     }
     return 0.0;
 }
 
-float select_pdf(uint li_2, float3 x_23, float3 n_31, uint nee, bool in_range_2)
+float select_pdf(uint li_2, float3 x_23, float3 n_34, float3 r_11, float4 lobe_9, uint nee, bool in_range_2)
 {
-    uint _e9 = asuint(light_cones.Load(40+li_2*48));
-    const float _e10 = light_bvh_pmf(BVH, _e9, x_23, n_31);
-    return _e10;
+    uint _e11 = asuint(light_cones.Load(40+li_2*48));
+    const float _e12 = light_bvh_pmf(BVH, _e11, x_23, n_34, r_11, lobe_9);
+    return _e12;
 }
 
-float light_pdf(uint li_3, float3 x_24, float3 n_32, float3 y_3, uint nee_1, bool in_range_3)
+float light_pdf(uint li_3, float3 x_24, float3 n_35, float3 r_12, float4 lobe_10, float3 y_3, uint nee_1, bool in_range_3)
 {
     GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
-    float3 v_19 = (x_24 - y_3);
-    float d2_16 = dot(v_19, v_19);
-    const float3 _e11 = light_normal(l_9);
-    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e11, (v_19 / (sqrt(d2_16)).xxx)) : 0.0);
-    const float _e20 = select_pdf(li_3, x_24, n_32, nee_1, in_range_3);
-    float _e23 = asfloat(rt2_7.Load(li_3*4));
-    const float _e24 = light_area(l_9);
-    const float _e25 = light_strategy_pdf(_e20, _e23, d2_16, _e24, cos_y_1);
-    return _e25;
+    float3 v_21 = (x_24 - y_3);
+    float d2_16 = dot(v_21, v_21);
+    const float3 _e13 = light_normal(l_9);
+    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e13, (v_21 / (sqrt(d2_16)).xxx)) : 0.0);
+    const float _e22 = select_pdf(li_3, x_24, n_35, r_12, lobe_10, nee_1, in_range_3);
+    float _e25 = asfloat(rt2_7.Load(li_3*4));
+    const float _e26 = light_area(l_9);
+    const float _e27 = light_strategy_pdf(_e22, _e25, d2_16, _e26, cos_y_1);
+    return _e27;
 }
 
-float3 shade_pick(uint li_4, float3 x_25, float3 n_33, float3 ng_3, float w_11, uint nee_2, float u1_6, float u2_6)
+float3 shade_pick(uint li_4, float3 x_25, float3 n_36, float3 ng_3, GpuMaterial m, float3 wo_1, float3 r_13, float4 lobe_11, float w_11, uint nee_2, float u1_6, float u2_6)
 {
     float mis = 1.0;
-    bool local_27 = (bool)0;
 
-    float _e10 = params.eps;
-    const Connection _e11 = connect(li_4, x_25, n_33, ng_3, w_11, u1_6, u2_6, _e10);
-    GpuLight _e16 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
-    const float _e17 = light_area(_e16);
-    if ((_e17 > 0.0)) {
-        local_27 = (_e11.cos_x > 0.0);
-    } else {
-        local_27 = false;
+    float _e14 = params.eps;
+    const Connection _e15 = connect(li_4, x_25, n_36, ng_3, w_11, u1_6, u2_6, _e14);
+    if ((_e15.cos_x <= 0.0)) {
+        return (0.0).xxx;
     }
-    bool _e26 = local_27;
-    if (_e26) {
-        const float _e29 = light_pdf(li_4, x_25, n_33, _e11.y, nee_2, true);
-        const float _e31 = cosine_pdf(_e11.cos_x);
-        const float _e32 = mis_weight(_e29, _e31);
-        mis = _e32;
+    float3 l_10 = normalize((_e15.y - x_25));
+    GpuLight _e28 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
+    const float _e29 = light_area(_e28);
+    if ((_e29 > 0.0)) {
+        const float _e34 = light_pdf(li_4, x_25, n_36, r_13, lobe_11, _e15.y, nee_2, true);
+        const float _e36 = specular_probability(lobe_11);
+        const float _e37 = bsdf_pdf(n_36, wo_1, l_10, m.alpha, _e36);
+        const float _e38 = mis_weight(_e34, _e37);
+        mis = _e38;
     }
-    float _e34 = mis;
-    return (_e11.e * _e34);
+    const float3 _e44 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_36, wo_1, l_10);
+    float _e47 = mis;
+    return ((_e44 * _e15.e) * _e47);
 }
 
-GpuPathVertex ConstructGpuPathVertex(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, float arg7) {
+GpuPathVertex ConstructGpuPathVertex(float3 arg0, uint arg1, float3 arg2, uint arg3, float3 arg4, float arg5, float3 arg6, float arg7, float3 arg8, float arg9) {
     GpuPathVertex ret = (GpuPathVertex)0;
     ret.position = arg0;
     ret.alive = arg1;
     ret.normal = arg2;
-    ret.pad = arg3;
+    ret.material = arg3;
     ret.weight = arg4;
     ret.pad1_ = arg5;
     ret.gnormal = arg6;
     ret.pad2_ = arg7;
+    ret.wo = arg8;
+    ret.pad3_ = arg9;
+    return ret;
+}
+
+GpuMaterial ConstructGpuMaterial(float3 arg0, float arg1, float3 arg2, float arg3, float3 arg4, float arg5) {
+    GpuMaterial ret = (GpuMaterial)0;
+    ret.albedo = arg0;
+    ret.metallic = arg1;
+    ret.emission = arg2;
+    ret.alpha = arg3;
+    ret.f0_ = arg4;
+    ret.f90_ = arg5;
     return ret;
 }
 
@@ -2336,48 +2426,52 @@ void main(uint3 gid : SV_DispatchThreadID)
     if ((i_12 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_12*64+0)), asuint(vertices_.Load(i_12*64+12)), asfloat(vertices_.Load3(i_12*64+16)), asfloat(vertices_.Load(i_12*64+28)), asfloat(vertices_.Load3(i_12*64+32)), asfloat(vertices_.Load(i_12*64+44)), asfloat(vertices_.Load3(i_12*64+48)), asfloat(vertices_.Load(i_12*64+60)));
+    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_12*80+0)), asuint(vertices_.Load(i_12*80+12)), asfloat(vertices_.Load3(i_12*80+16)), asuint(vertices_.Load(i_12*80+28)), asfloat(vertices_.Load3(i_12*80+32)), asfloat(vertices_.Load(i_12*80+44)), asfloat(vertices_.Load3(i_12*80+48)), asfloat(vertices_.Load(i_12*80+60)), asfloat(vertices_.Load3(i_12*80+64)), asfloat(vertices_.Load(i_12*80+76)));
     if ((vtx.alive == 0u)) {
         candidates.Store(i_12*4, asuint(0u));
         return;
     }
     float3 x_26 = vtx.position;
-    float3 n_37 = vtx.normal;
+    float3 n_40 = vtx.normal;
     float3 ng_4 = vtx.gnormal;
-    uint _e20 = params.seed;
-    uint _e23 = params.frame;
-    const uint _e24 = point_stream(_e20, i_12, _e23);
-    const uint _e25 = pick_stream(_e24);
-    h = _e25;
+    GpuMaterial m_4 = ConstructGpuMaterial(asfloat(materials.Load3(vtx.material*48+0)), asfloat(materials.Load(vtx.material*48+12)), asfloat(materials.Load3(vtx.material*48+16)), asfloat(materials.Load(vtx.material*48+28)), asfloat(materials.Load3(vtx.material*48+32)), asfloat(materials.Load(vtx.material*48+44)));
+    float3 wo_2 = vtx.wo;
+    const float3 _e23 = mirror_dir(n_40, wo_2);
+    const float4 _e30 = receiver_lobe(m_4.albedo, m_4.metallic, m_4.f0_, m_4.f90_, m_4.alpha, dot(n_40, wo_2));
+    uint _e33 = params.seed;
+    uint _e36 = params.frame;
+    const uint _e37 = point_stream(_e33, i_12, _e36);
+    const uint _e38 = pick_stream(_e37);
+    h = _e38;
     candidates.Store(i_12*4, asuint(0u));
-    uint _e33 = h;
-    const uint _e34 = pcg_hash(_e33);
-    h = _e34;
-    uint _e35 = h;
-    const float _e36 = xi_from_bits(_e35);
-    const BvhPick _e38 = light_bvh_sample(BVH, x_26, n_37, _e36);
-    uint li_5 = _e38.light;
-    float pmf_2 = _e38.pmf;
-    uint _e41 = h;
-    const uint _e42 = pcg_hash(_e41);
-    h = _e42;
-    uint _e43 = h;
-    const float _e44 = xi_from_bits(_e43);
-    uint _e45 = h;
-    const uint _e46 = pcg_hash(_e45);
-    h = _e46;
-    uint _e47 = h;
-    const float _e48 = xi_from_bits(_e47);
+    uint _e46 = h;
+    const uint _e47 = pcg_hash(_e46);
+    h = _e47;
+    uint _e48 = h;
+    const float _e49 = xi_from_bits(_e48);
+    const BvhPick _e51 = light_bvh_sample(BVH, x_26, n_40, _e23, _e30, _e49);
+    uint li_5 = _e51.light;
+    float pmf_2 = _e51.pmf;
+    uint _e54 = h;
+    const uint _e55 = pcg_hash(_e54);
+    h = _e55;
+    uint _e56 = h;
+    const float _e57 = xi_from_bits(_e56);
+    uint _e58 = h;
+    const uint _e59 = pcg_hash(_e58);
+    h = _e59;
+    uint _e60 = h;
+    const float _e61 = xi_from_bits(_e60);
     if ((pmf_2 > 0.0)) {
-        const float3 _e54 = shade_pick(li_5, x_26, n_37, ng_4, (1.0 / pmf_2), 0u, _e44, _e48);
-        sum = _e54;
+        const float3 _e67 = shade_pick(li_5, x_26, n_40, ng_4, m_4, wo_2, _e23, _e30, (1.0 / pmf_2), 0u, _e57, _e61);
+        sum = _e67;
     }
-    float3 _e56 = sum;
-    float3 add = (vtx.weight * _e56);
-    const bool _e58 = finite3_(add);
-    if (_e58) {
-        float4 _e61 = asfloat(radiance.Load4(i_12*16));
-        radiance.Store4(i_12*16, asuint((_e61 + float4(add, 0.0))));
+    float3 _e69 = sum;
+    float3 add = (vtx.weight * _e69);
+    const bool _e71 = finite3_(add);
+    if (_e71) {
+        float4 _e74 = asfloat(radiance.Load4(i_12*16));
+        radiance.Store4(i_12*16, asuint((_e74 + float4(add, 0.0))));
         return;
     } else {
         return;

@@ -40,11 +40,13 @@ struct GpuPathVertex {
     float3 position;
     uint alive;
     float3 normal;
-    float pad;
+    uint material;
     float3 weight;
     float pad1_;
     float3 gnormal;
     float pad2_;
+    float3 wo;
+    float pad3_;
 };
 
 struct GpuPathState {
@@ -58,6 +60,9 @@ struct GpuPathState {
     uint pad;
     float3 prev_normal;
     uint pad2_;
+    float3 prev_r;
+    uint pad3_;
+    float4 prev_lobe;
 };
 
 struct PtParams {
@@ -151,9 +156,11 @@ struct GpuVertex {
 
 struct GpuMaterial {
     float3 albedo;
-    uint pad0_;
+    float metallic;
     float3 emission;
-    uint pad1_;
+    float alpha;
+    float3 f0_;
+    float f90_;
 };
 
 struct MapParams {
@@ -226,10 +233,10 @@ static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
+static const float GGX_ALPHA_MIN = 0.001;
 static const uint LIGHT_BVH_LEAF = 4294967295u;
 static const float ONE_MINUS_EPSILON = 0.99999994;
 static const float F32_MAX = 3.4028235e38;
-static const float GGX_ALPHA_MIN = 0.001;
 static const float DEPTH_NONE = 1e30;
 static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
@@ -249,7 +256,7 @@ ByteAddressBuffer gb_position : register(t1);
 ByteAddressBuffer gb_normal : register(t2);
 ByteAddressBuffer lights : register(t3);
 ByteAddressBuffer rt2_7 : register(t4);
-ByteAddressBuffer r2_6 : register(t5);
+ByteAddressBuffer r2_7 : register(t5);
 RWByteAddressBuffer irradiance : register(u6);
 groupshared uint tile_count;
 groupshared uint tile_lights[1024];
@@ -412,15 +419,15 @@ float windowed_falloff(float d2_4, float range2_1)
 
 bool sphere_contains_point(float3 c, float r, float3 x_3)
 {
-    float3 v_9 = (x_3 - c);
-    return (dot(v_9, v_9) <= (r * r));
+    float3 v_10 = (x_3 - c);
+    return (dot(v_10, v_10) <= (r * r));
 }
 
 bool sphere_overlaps_sphere(float3 c1_, float r1_, float3 c2_, float r2_2)
 {
-    float3 v_10 = (c2_ - c1_);
-    float r_3 = (r1_ + r2_2);
-    return (dot(v_10, v_10) <= (r_3 * r_3));
+    float3 v_11 = (c2_ - c1_);
+    float r_6 = (r1_ + r2_2);
+    return (dot(v_11, v_11) <= (r_6 * r_6));
 }
 
 float sphere_pad(float r_1, float3 c_1)
@@ -432,18 +439,18 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 {
     bool local_3 = (bool)0;
 
-    float3 v_11 = (c2_1 - c1_1);
-    float d_5 = sqrt(dot(v_11, v_11));
+    float3 v_12 = (c2_1 - c1_1);
+    float d_6 = sqrt(dot(v_12, v_12));
     const float _e8 = sphere_pad(r1_1, c1_1);
-    if ((r1_1 >= ((d_5 + r2_3) + _e8))) {
+    if ((r1_1 >= ((d_6 + r2_3) + _e8))) {
         return float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     const float _e16 = sphere_pad(r2_3, c2_1);
-    if ((r2_3 >= ((d_5 + r1_1) + _e16))) {
+    if ((r2_3 >= ((d_6 + r1_1) + _e16))) {
         return float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if (!((d_5 >= SPHERE_HUGE))) {
-        local_3 = ((0.5 * ((d_5 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if (!((d_6 >= SPHERE_HUGE))) {
+        local_3 = ((0.5 * ((d_6 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local_3 = true;
     }
@@ -451,30 +458,30 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
     if (_e35) {
         return float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if ((abs((r1_1 - r2_3)) >= d_5)) {
+    if ((abs((r1_1 - r2_3)) >= d_6)) {
         if ((r1_1 >= r2_3)) {
-            float rn = max(r1_1, (d_5 + r2_3));
+            float rn = max(r1_1, (d_6 + r2_3));
             const float _e50 = sphere_pad(rn, c1_1);
             return float4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        float rm = max(r2_3, (d_5 + r1_1));
+        float rm = max(r2_3, (d_6 + r1_1));
         const float _e58 = sphere_pad(rm, c2_1);
         return float4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    float r0_ = (0.5 * ((d_5 + r1_1) + r2_3));
-    float3 c_10 = (c1_1 + (v_11 * ((r0_ - r1_1) / d_5)));
+    float r0_ = (0.5 * ((d_6 + r1_1) + r2_3));
+    float3 c_10 = (c1_1 + (v_12 * ((r0_ - r1_1) / d_6)));
     float3 e1_ = (c_10 - c1_1);
     float3 e2_ = (c_10 - c2_1);
-    float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    const float _e82 = sphere_pad(r_4, c_10);
-    return float4(c_10.x, c_10.y, c_10.z, (r_4 + _e82));
+    float r_7 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
+    const float _e82 = sphere_pad(r_7, c_10);
+    return float4(c_10.x, c_10.y, c_10.z, (r_7 + _e82));
 }
 
 bool sphere_overlaps_aabb(float3 c_2, float r_2, float3 bmin, float3 bmax)
 {
     float3 q_3 = clamp(c_2, bmin, bmax);
-    float3 v_12 = (q_3 - c_2);
-    return (dot(v_12, v_12) <= (r_2 * r_2));
+    float3 v_13 = (q_3 - c_2);
+    return (dot(v_13, v_13) <= (r_2 * r_2));
 }
 
 float vpl_rt2_(float3 flux, float exposure_1, float error_bound_1, uint mode_1)
@@ -506,8 +513,8 @@ float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
     bool local_4 = (bool)0;
     bool local_5 = (bool)0;
 
-    float3 v_13 = (x_4 - y);
-    float d2_12 = dot(v_13, v_13);
+    float3 v_14 = (x_4 - y);
+    float d2_12 = dot(v_14, v_14);
     const bool _e7 = slc_keep(r2_5, d2_12);
     if (!(!(_e7))) {
         local_4 = !((d2_12 > 0.0));
@@ -518,7 +525,7 @@ float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
     if (_e16) {
         return 0.0;
     }
-    float3 w_12 = (v_13 / (sqrt(d2_12)).xxx);
+    float3 w_12 = (v_14 / (sqrt(d2_12)).xxx);
     float cos_x_1 = -(dot(n, w_12));
     if (!((cos_x_1 <= 0.0))) {
         local_5 = (dot(ng, w_12) >= 0.0);
@@ -596,8 +603,8 @@ float atan_portable(float x_5)
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_5 = (_e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35));
-    return ((x_5 < 0.0) ? -(r_5) : r_5);
+    float r_8 = (_e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35));
+    return ((x_5 < 0.0) ? -(r_8) : r_8);
 }
 
 float atan2_portable(float y_1, float x_6)
@@ -868,292 +875,47 @@ uint uniform_light(float u_3, uint n_8)
     return min(_e4, (n_8 - 1u));
 }
 
-float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
-{
-    if ((cos_a > cos_b)) {
-        return 1.0;
-    }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
-}
-
-float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1)
-{
-    if ((cos_a_1 > cos_b_1)) {
-        return 0.0;
-    }
-    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
-}
-
-float safe_sqrt(float x_9)
-{
-    return sqrt(max(x_9, 0.0));
-}
-
-float light_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p, float3 n_9)
-{
-    float imp = (float)0;
-
-    float3 v_14 = (p - center_);
-    float dist2_ = dot(v_14, v_14);
-    float r2_7 = (radius * radius);
-    float d2_13 = max(max(dist2_, r2_7), MIN_D2_);
-    float3 wi_3 = ((dist2_ > 0.0) ? (v_14 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
-    float cos_w = dot(axis, wi_3);
-    const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e32 = safe_sqrt((1.0 - (r2_7 / dist2_)));
-    float cos_b_2 = ((dist2_ <= r2_7) ? -1.0 : _e32);
-    const float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
-    const float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
-    const float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
-    const float _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
-    const float _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
-    if ((_e46 <= cos_e)) {
-        return 0.0;
-    }
-    imp = ((phi * _e46) / d2_13);
-    if ((dot(n_9, n_9) > 0.0)) {
-        float cos_i = -(dot(wi_3, n_9));
-        const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
-        float _e61 = imp;
-        const float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
-        imp = (_e61 * max(_e62, 0.0));
-    }
-    float _e66 = imp;
-    return max(_e66, 0.0);
-}
-
-float candidate_weight(float importance, float rt2_4, float d2_8)
-{
-    const float _e3 = slc_weight(rt2_4, d2_8);
-    return (importance * _e3);
-}
-
-float cone_weight(float3 center_1, float radius_1, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, float3 p_1, float3 n_10)
-{
-    float3 v_15 = (p_1 - center_1);
-    const float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
-    const float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_15, v_15));
-    return _e14;
-}
-
-float weighted_select_pdf(float w_6, float w_sum_2, bool in_range_1, uint k_5)
-{
-    if ((w_6 <= 0.0)) {
-        return 0.0;
-    }
-    float total = (in_range_1 ? w_sum_2 : (w_sum_2 + w_6));
-    const float _e9 = to_f32_(k_5);
-    return ((_e9 * w_6) / total);
-}
-
-float bvh_first_prob(float c0_, float c1_2)
-{
-    float s = (c0_ + c1_2);
-    if ((s > 0.0)) {
-        return (c0_ / s);
-    }
-    return -1.0;
-}
-
-float bvh_remap_u(float u_4, float p0_, bool first_1)
-{
-    if (first_1) {
-        return min((u_4 / p0_), ONE_MINUS_EPSILON);
-    }
-    return clamp(((u_4 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
-}
-
-float surface_offset(float diag)
-{
-    return (1e-5 * diag);
-}
-
-float ray_t_min(float diag_1)
-{
-    return (1e-6 * diag_1);
-}
-
-float shadow_margin(float len)
-{
-    return (0.0001 * len);
-}
-
-float ray_inverse(float x_10)
-{
-    return (1.0 / ((abs(x_10) < 1e-30) ? 1e-30 : x_10));
-}
-
-float3 ray_inverse3_(float3 d)
-{
-    const float _e2 = ray_inverse(d.x);
-    const float _e4 = ray_inverse(d.y);
-    const float _e6 = ray_inverse(d.z);
-    return float3(_e2, _e4, _e6);
-}
-
-float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
-{
-    float3 t0_ = ((bmin_1 - o) * inv_d);
-    float3 t1_ = ((bmax_1 - o) * inv_d);
-    float3 lo_3 = min(t0_, t1_);
-    float3 hi_3 = max(t0_, t1_);
-    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
-    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
-    if ((t_in <= t_out)) {
-        return t_in;
-    }
-    return -1.0;
-}
-
-float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
-{
-    bool local_8 = (bool)0;
-
-    float3 n_25 = cross((b_4 - a_5), (c_6 - a_5));
-    float l2_ = dot(n_25, n_25);
-    if (!(!((l2_ > 0.0)))) {
-        local_8 = !((l2_ < 3e38));
-    } else {
-        local_8 = true;
-    }
-    bool _e17 = local_8;
-    if (_e17) {
-        return float3(0.0, 0.0, 0.0);
-    }
-    return (n_25 / (sqrt(l2_)).xxx);
-}
-
-float3 face_against(float3 n_11, float3 dir)
-{
-    return ((dot(n_11, dir) > 0.0) ? -(n_11) : n_11);
-}
-
-float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
-{
-    float3 e1_1 = (b_5 - a_6);
-    float3 e2_1 = (c_7 - a_6);
-    float3 q_4 = (p_2 - a_6);
-    float d11_ = dot(e1_1, e1_1);
-    float d12_ = dot(e1_1, e2_1);
-    float d22_ = dot(e2_1, e2_1);
-    float den = ((d11_ * d22_) - (d12_ * d12_));
-    if (!((abs(den) > 0.0))) {
-        return float3(1.0, 0.0, 0.0);
-    }
-    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
-    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
-    return float3(((1.0 - w1_) - w2_), w1_, w2_);
-}
-
-float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_7, float3 facing)
-{
-    bool local_9 = (bool)0;
-
-    float3 s_1 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
-    float l2_1 = dot(s_1, s_1);
-    if (!(!((l2_1 > 1e-12)))) {
-        local_9 = !((l2_1 < 3e38));
-    } else {
-        local_9 = true;
-    }
-    bool _e24 = local_9;
-    if (_e24) {
-        return facing;
-    }
-    float3 n_26 = (s_1 / (sqrt(l2_1)).xxx);
-    return ((dot(n_26, facing) < 0.0) ? -(n_26) : n_26);
-}
-
-float ray_triangle(float3 o_1, float3 d_1, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
-{
-    bool local_10 = (bool)0;
-    bool local_11 = (bool)0;
-    bool local_12 = (bool)0;
-
-    float3 e1_2 = (b_6 - a_7);
-    float3 e2_2 = (c_8 - a_7);
-    float3 p_4 = cross(d_1, e2_2);
-    float det = dot(e1_2, p_4);
-    if ((abs(det) <= 0.0)) {
-        return -1.0;
-    }
-    float inv = (1.0 / det);
-    float3 s_2 = (o_1 - a_7);
-    float u_6 = (dot(s_2, p_4) * inv);
-    if (!((u_6 < 0.0))) {
-        local_10 = (u_6 > 1.0);
-    } else {
-        local_10 = true;
-    }
-    bool _e28 = local_10;
-    if (_e28) {
-        return -1.0;
-    }
-    float3 q_5 = cross(s_2, e1_2);
-    float v_16 = (dot(d_1, q_5) * inv);
-    if (!((v_16 < 0.0))) {
-        local_11 = ((u_6 + v_16) > 1.0);
-    } else {
-        local_11 = true;
-    }
-    bool _e42 = local_11;
-    if (_e42) {
-        return -1.0;
-    }
-    float t_3 = (dot(e2_2, q_5) * inv);
-    if ((t_3 > t_min)) {
-        local_12 = (t_3 < t_max_1);
-    } else {
-        local_12 = false;
-    }
-    bool _e51 = local_12;
-    if (_e51) {
-        return t_3;
-    }
-    return -1.0;
-}
-
 float mis_balance(float pdf_a, float pdf_b)
 {
-    float s_3 = (pdf_a + pdf_b);
-    if ((s_3 <= 0.0)) {
+    float s = (pdf_a + pdf_b);
+    if ((s <= 0.0)) {
         return 0.0;
     }
-    return (pdf_a / s_3);
+    return (pdf_a / s);
 }
 
 float mis_power(float pdf_a_1, float pdf_b_1)
 {
     float a2_ = (pdf_a_1 * pdf_a_1);
-    float s_4 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if ((s_4 <= 0.0)) {
+    float s_1 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_1 <= 0.0)) {
         return 0.0;
     }
-    return (a2_ / s_4);
+    return (a2_ / s_1);
 }
 
-float light_strategy_pdf(float select_, float rt2_6, float d2_9, float area_1, float cos_y)
+float light_strategy_pdf(float select_, float rt2_4, float d2_8, float area_1, float cos_y)
 {
-    bool local_13 = (bool)0;
-    bool local_14 = (bool)0;
+    bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
 
-    if (!((d2_9 <= 0.0))) {
-        local_13 = (area_1 <= 0.0);
+    if (!((d2_8 <= 0.0))) {
+        local_8 = (area_1 <= 0.0);
     } else {
-        local_13 = true;
+        local_8 = true;
     }
-    bool _e13 = local_13;
+    bool _e13 = local_8;
     if (!(_e13)) {
-        local_14 = (cos_y <= 0.0);
+        local_9 = (cos_y <= 0.0);
     } else {
-        local_14 = true;
+        local_9 = true;
     }
-    bool _e20 = local_14;
+    bool _e20 = local_9;
     if (_e20) {
         return 0.0;
     }
-    const float _e22 = rr_probability(rt2_6, d2_9);
-    const float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_9, cos_y);
+    const float _e22 = rr_probability(rt2_4, d2_8);
+    const float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_8, cos_y);
     return ((select_ * _e22) * _e26);
 }
 
@@ -1167,39 +929,39 @@ float cosine_pdf(float cos_theta_1)
     return (max(cos_theta_1, 0.0) * INV_PI);
 }
 
-float3 onb_tangent(float3 n_12)
+float3 onb_tangent(float3 n_9)
 {
-    float s_5 = ((n_12.z >= 0.0) ? 1.0 : -1.0);
-    float a_11 = (-1.0 / (s_5 + n_12.z));
-    return float3((1.0 + (((s_5 * n_12.x) * n_12.x) * a_11)), (((s_5 * n_12.x) * n_12.y) * a_11), (-(s_5) * n_12.x));
+    float s_2 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_11 = (-1.0 / (s_2 + n_9.z));
+    return float3((1.0 + (((s_2 * n_9.x) * n_9.x) * a_11)), (((s_2 * n_9.x) * n_9.y) * a_11), (-(s_2) * n_9.x));
 }
 
-float3 onb_bitangent(float3 n_13)
+float3 onb_bitangent(float3 n_10)
 {
-    float s_6 = ((n_13.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_6 + n_13.z));
-    return float3(((n_13.x * n_13.y) * a_12), (s_6 + ((n_13.y * n_13.y) * a_12)), -(n_13.y));
+    float s_3 = ((n_10.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_3 + n_10.z));
+    return float3(((n_10.x * n_10.y) * a_12), (s_3 + ((n_10.y * n_10.y) * a_12)), -(n_10.y));
 }
 
-float3 onb_to_world(float3 n_14, float3 d_2)
+float3 onb_to_world(float3 n_11, float3 d)
 {
-    const float3 _e2 = onb_tangent(n_14);
-    const float3 _e5 = onb_bitangent(n_14);
-    return (((_e2 * d_2.x) + (_e5 * d_2.y)) + (n_14 * d_2.z));
+    const float3 _e2 = onb_tangent(n_11);
+    const float3 _e5 = onb_bitangent(n_11);
+    return (((_e2 * d.x) + (_e5 * d.y)) + (n_11 * d.z));
 }
 
-float3 onb_to_local(float3 n_15, float3 w_8)
+float3 onb_to_local(float3 n_12, float3 w_6)
 {
-    const float3 _e2 = onb_tangent(n_15);
-    const float3 _e4 = onb_bitangent(n_15);
-    return float3(dot(w_8, _e2), dot(w_8, _e4), dot(w_8, n_15));
+    const float3 _e2 = onb_tangent(n_12);
+    const float3 _e4 = onb_bitangent(n_12);
+    return float3(dot(w_6, _e2), dot(w_6, _e4), dot(w_6, n_12));
 }
 
-float3 cosine_direction(float3 n_16, float u1_1, float u2_1)
+float3 cosine_direction(float3 n_13, float u1_1, float u2_1)
 {
-    float r_6 = sqrt(u1_1);
-    float phi_2 = (6.2831855 * u2_1);
-    const float3 _e16 = onb_to_world(n_16, float3((r_6 * cos(phi_2)), (r_6 * sin(phi_2)), sqrt(max((1.0 - u1_1), 0.0))));
+    float r_9 = sqrt(u1_1);
+    float phi_5 = (6.2831855 * u2_1);
+    const float3 _e16 = onb_to_world(n_13, float3((r_9 * cos(phi_5)), (r_9 * sin(phi_5)), sqrt(max((1.0 - u1_1), 0.0))));
     return normalize(_e16);
 }
 
@@ -1214,8 +976,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha)
         return 0.0;
     }
     float a2_1 = (alpha * alpha);
-    float t_4 = (((cos_h * cos_h) * a2_1) + sin2_h);
-    return ((a2_1 * INV_PI) / (t_4 * t_4));
+    float t_3 = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t_3 * t_3));
 }
 
 float smith_root(float cos_, float alpha_1)
@@ -1226,14 +988,14 @@ float smith_root(float cos_, float alpha_1)
 
 float smith_visibility(float n_l_1, float n_v, float alpha_2)
 {
-    bool local_15 = (bool)0;
+    bool local_10 = (bool)0;
 
     if (!((n_l_1 <= 0.0))) {
-        local_15 = (n_v <= 0.0);
+        local_10 = (n_v <= 0.0);
     } else {
-        local_15 = true;
+        local_10 = true;
     }
-    bool _e11 = local_15;
+    bool _e11 = local_10;
     if (_e11) {
         return 0.0;
     }
@@ -1272,162 +1034,477 @@ float half_cosine(float3 v_2, float3 l)
     return saturate((dot(v_2, h_1) / sqrt(len2_)));
 }
 
-float3 specular_brdf(float3 base_6, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_17, float3 v_3, float3 l_1)
+float3 specular_brdf(float3 base_6, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_14, float3 v_3, float3 l_1)
 {
-    bool local_16 = (bool)0;
+    bool local_11 = (bool)0;
 
-    float n_l_2 = dot(n_17, l_1);
-    float n_v_2 = dot(n_17, v_3);
+    float n_l_2 = dot(n_14, l_1);
+    float n_v_2 = dot(n_14, v_3);
     if (!((n_l_2 <= 0.0))) {
-        local_16 = (n_v_2 <= 0.0);
+        local_11 = (n_v_2 <= 0.0);
     } else {
-        local_16 = true;
+        local_11 = true;
     }
-    bool _e18 = local_16;
+    bool _e18 = local_11;
     if (_e18) {
         return float3(0.0, 0.0, 0.0);
     }
     float3 hs = (v_3 + l_1);
-    float inv_1 = (1.0 / sqrt(dot(hs, hs)));
-    float3 h_2 = (hs * inv_1);
-    float3 c_14 = cross(n_17, h_2);
-    const float _e32 = ggx_d(dot(n_17, h_2), dot(c_14, c_14), alpha_3);
+    float inv = (1.0 / sqrt(dot(hs, hs)));
+    float3 h_2 = (hs * inv);
+    float3 c_14 = cross(n_14, h_2);
+    const float _e32 = ggx_d(dot(n_14, h_2), dot(c_14, c_14), alpha_3);
     const float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_3, h_2));
     const float _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
 
-float3 brdf_eval(float3 base_7, float metallic_3, float3 f0_d_3, float f90_d_3, float alpha_4, float3 n_18, float3 v_4, float3 l_2)
+float3 brdf_eval(float3 base_7, float metallic_3, float3 f0_d_3, float f90_d_3, float alpha_4, float3 n_15, float3 v_4, float3 l_2)
 {
-    if ((dot(n_18, l_2) <= 0.0)) {
+    if ((dot(n_15, l_2) <= 0.0)) {
         return float3(0.0, 0.0, 0.0);
     }
     const float _e15 = half_cosine(v_4, l_2);
     const float3 _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
-    const float3 _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_18, v_4, l_2);
+    const float3 _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_15, v_4, l_2);
     return (_e16 + _e17);
 }
 
 bool has_specular(float metallic_4, float3 f0_d_4, float f90_d_4)
 {
-    bool local_17 = (bool)0;
-    bool local_18 = (bool)0;
+    bool local_12 = (bool)0;
+    bool local_13 = (bool)0;
 
     if (!((metallic_4 > 0.0))) {
-        local_17 = (f90_d_4 > 0.0);
+        local_12 = (f90_d_4 > 0.0);
     } else {
-        local_17 = true;
+        local_12 = true;
     }
-    bool _e11 = local_17;
+    bool _e11 = local_12;
     if (!(_e11)) {
-        local_18 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
+        local_13 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
     } else {
-        local_18 = true;
+        local_13 = true;
     }
-    bool _e23 = local_18;
+    bool _e23 = local_13;
     return _e23;
 }
 
-float channel_mean(float3 c_9)
+float channel_mean(float3 c_6)
 {
-    return (((c_9.x + c_9.y) + c_9.z) * 0.33333334);
+    return (((c_6.x + c_6.y) + c_6.z) * 0.33333334);
 }
 
-float specular_probability(float3 base_8, float metallic_5, float3 f0_d_5, float f90_d_5, float n_v_1)
+float4 receiver_lobe(float3 base_8, float metallic_5, float3 f0_d_5, float f90_d_5, float alpha_5, float n_v_1)
 {
-    bool local_19 = (bool)0;
+    bool local_14 = (bool)0;
 
+    const float3 _e10 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
+    const float _e16 = channel_mean((((float3(1.0, 1.0, 1.0) - _e10) * base_8) * (1.0 - metallic_5)));
     if (!((n_v_1 <= 0.0))) {
-        const bool _e10 = has_specular(metallic_5, f0_d_5, f90_d_5);
-        local_19 = !(_e10);
+        const bool _e22 = has_specular(metallic_5, f0_d_5, f90_d_5);
+        local_14 = !(_e22);
     } else {
-        local_19 = true;
+        local_14 = true;
     }
-    bool _e13 = local_19;
-    if (_e13) {
+    bool _e25 = local_14;
+    if (_e25) {
+        return float4(_e16, 0.0, alpha_5, n_v_1);
+    }
+    const float3 _e28 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    const float _e29 = channel_mean(_e28);
+    return float4(_e16, _e29, alpha_5, n_v_1);
+}
+
+float specular_probability(float4 lobe)
+{
+    if ((lobe.y <= 0.0)) {
         return 0.0;
     }
-    const float3 _e15 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
-    const float _e16 = channel_mean(_e15);
-    const float3 _e21 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
-    const float _e27 = channel_mean((((float3(1.0, 1.0, 1.0) - _e21) * base_8) * (1.0 - metallic_5)));
-    if ((_e27 <= 0.0)) {
+    if ((lobe.x <= 0.0)) {
         return 1.0;
     }
-    if ((_e16 <= 0.0)) {
-        return 0.0;
-    }
-    return clamp((_e16 / (_e16 + _e27)), 0.1, 0.9);
+    return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
-float bounded_vndf_k(float3 wi, float alpha_5)
+float3 mirror_dir(float3 n_16, float3 v_5)
 {
-    float a_13 = saturate(alpha_5);
-    float s_7 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    return ((n_16 * (2.0 * dot(n_16, v_5))) - v_5);
+}
+
+float bounded_vndf_k(float3 wi, float alpha_6)
+{
+    float a_13 = saturate(alpha_6);
+    float s_4 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
     float a2_3 = (a_13 * a_13);
-    float s2_ = (s_7 * s_7);
+    float s2_ = (s_4 * s_4);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
-float3 ggx_vndf_sample(float3 wi_1, float alpha_6, float u1_2, float u2_2)
+float3 ggx_vndf_sample(float3 wi_1, float alpha_7, float u1_2, float u2_2)
 {
-    float3 wi_std = normalize(float3((wi_1.x * alpha_6), (wi_1.y * alpha_6), wi_1.z));
-    const float _e12 = bounded_vndf_k(wi_1, alpha_6);
+    float3 wi_std = normalize(float3((wi_1.x * alpha_7), (wi_1.y * alpha_7), wi_1.z));
+    const float _e12 = bounded_vndf_k(wi_1, alpha_7);
     float b_8 = ((wi_1.z > 0.0) ? (_e12 * wi_std.z) : wi_std.z);
-    float phi_3 = (6.2831855 * u1_2);
+    float phi_6 = (6.2831855 * u1_2);
     float z_4 = (((1.0 - u2_2) * (1.0 + b_8)) - b_8);
     float sin_t = sqrt(saturate((1.0 - (z_4 * z_4))));
-    float3 m_std = (wi_std + float3((sin_t * cos(phi_3)), (sin_t * sin(phi_3)), z_4));
-    float3 m_1 = normalize(float3((m_std.x * alpha_6), (m_std.y * alpha_6), m_std.z));
+    float3 m_std = (wi_std + float3((sin_t * cos(phi_6)), (sin_t * sin(phi_6)), z_4));
+    float3 m_1 = normalize(float3((m_std.x * alpha_7), (m_std.y * alpha_7), m_std.z));
     return ((m_1 * (2.0 * dot(wi_1, m_1))) - wi_1);
 }
 
-float ggx_vndf_pdf(float3 wi_2, float3 wo, float alpha_7)
+float ggx_vndf_pdf(float3 wi_2, float3 wo, float alpha_8)
 {
-    bool local_20 = (bool)0;
+    bool local_15 = (bool)0;
 
     if (!((wi_2.z <= 0.0))) {
-        local_20 = (wo.z <= 0.0);
+        local_15 = (wo.z <= 0.0);
     } else {
-        local_20 = true;
+        local_15 = true;
     }
-    bool _e13 = local_20;
+    bool _e13 = local_15;
     if (_e13) {
         return 0.0;
     }
     float3 hs_1 = (wi_2 + wo);
     float3 m_2 = (hs_1 / (sqrt(dot(hs_1, hs_1))).xxx);
-    const float _e28 = ggx_d(m_2.z, ((m_2.x * m_2.x) + (m_2.y * m_2.y)), alpha_7);
-    float t_5 = sqrt((((alpha_7 * alpha_7) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
-    const float _e43 = bounded_vndf_k(wi_2, alpha_7);
-    return (_e28 / (2.0 * ((_e43 * wi_2.z) + t_5)));
+    const float _e28 = ggx_d(m_2.z, ((m_2.x * m_2.x) + (m_2.y * m_2.y)), alpha_8);
+    float t_4 = sqrt((((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
+    const float _e43 = bounded_vndf_k(wi_2, alpha_8);
+    return (_e28 / (2.0 * ((_e43 * wi_2.z) + t_4)));
 }
 
-float3 bsdf_sample(float3 n_19, float3 v_5, float alpha_8, float p_spec, float u1_3, float u2_3)
+float3 bsdf_sample(float3 n_17, float3 v_6, float alpha_9, float p_spec, float u1_3, float u2_3)
 {
     if ((u1_3 < p_spec)) {
-        if ((dot(n_19, v_5) <= 0.0)) {
-            return -(n_19);
+        if ((dot(n_17, v_6) <= 0.0)) {
+            return -(n_17);
         }
-        const float3 _e11 = onb_to_local(n_19, v_5);
-        const float3 _e13 = ggx_vndf_sample(_e11, alpha_8, (u1_3 / p_spec), u2_3);
-        const float3 _e14 = onb_to_world(n_19, _e13);
+        const float3 _e11 = onb_to_local(n_17, v_6);
+        const float3 _e13 = ggx_vndf_sample(_e11, alpha_9, (u1_3 / p_spec), u2_3);
+        const float3 _e14 = onb_to_world(n_17, _e13);
         return normalize(_e14);
     }
-    const float3 _e20 = cosine_direction(n_19, ((u1_3 - p_spec) / (1.0 - p_spec)), u2_3);
+    const float3 _e20 = cosine_direction(n_17, ((u1_3 - p_spec) / (1.0 - p_spec)), u2_3);
     return _e20;
 }
 
-float bsdf_pdf(float3 n_20, float3 v_6, float3 l_3, float alpha_9, float p_spec_1)
+float bsdf_pdf(float3 n_18, float3 v_7, float3 l_3, float alpha_10, float p_spec_1)
 {
-    const float _e6 = cosine_pdf(dot(n_20, l_3));
+    const float _e6 = cosine_pdf(dot(n_18, l_3));
     if ((p_spec_1 <= 0.0)) {
         return _e6;
     }
-    const float3 _e9 = onb_to_local(n_20, v_6);
-    const float3 _e10 = onb_to_local(n_20, l_3);
-    const float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_9);
+    const float3 _e9 = onb_to_local(n_18, v_7);
+    const float3 _e10 = onb_to_local(n_18, l_3);
+    const float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_10);
     return ((p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6));
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+{
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1)
+{
+    if ((cos_a_1 > cos_b_1)) {
+        return 0.0;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+float safe_sqrt(float x_9)
+{
+    return sqrt(max(x_9, 0.0));
+}
+
+float subtended_cos(float dist2_, float r2_6)
+{
+    const float _e5 = safe_sqrt((1.0 - (r2_6 / dist2_)));
+    return ((dist2_ <= r2_6) ? -1.0 : _e5);
+}
+
+float emitter_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p)
+{
+    float3 v_15 = (p - center_);
+    float dist2_1 = dot(v_15, v_15);
+    float r2_8 = (radius * radius);
+    float d2_13 = max(max(dist2_1, r2_8), MIN_D2_);
+    float3 wi_3 = ((dist2_1 > 0.0) ? (v_15 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi_3);
+    const float _e27 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    const float _e28 = subtended_cos(dist2_1, r2_8);
+    const float _e32 = safe_sqrt((1.0 - (_e28 * _e28)));
+    const float _e36 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    const float _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
+    const float _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
+    const float _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
+    if ((_e39 <= cos_e)) {
+        return 0.0;
+    }
+    return ((phi * _e39) / d2_13);
+}
+
+float cone_cos_toward(float3 center_1, float radius_1, float3 p_1, float3 d_1)
+{
+    float3 v_16 = (center_1 - p_1);
+    float dist2_2 = dot(v_16, v_16);
+    float3 w_13 = ((dist2_2 > 0.0) ? (v_16 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0));
+    const float _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
+    float cos_i = dot(w_13, d_1);
+    const float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
+    const float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
+    const float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float light_importance(float3 center_2, float radius_2, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float3 p_2, float3 n_19)
+{
+    float imp = (float)0;
+
+    const float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
+    imp = _e8;
+    if ((dot(n_19, n_19) > 0.0)) {
+        float _e13 = imp;
+        const float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_19);
+        imp = (_e13 * max(_e14, 0.0));
+    }
+    float _e18 = imp;
+    return max(_e18, 0.0);
+}
+
+float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_20, float3 r_3, float4 lobe_1)
+{
+    bool local_16 = (bool)0;
+
+    const float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
+    const float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_20);
+    if (!((_e10 <= 0.0))) {
+        local_16 = (_e11 <= 0.0);
+    } else {
+        local_16 = true;
+    }
+    bool _e20 = local_16;
+    if (_e20) {
+        return 0.0;
+    }
+    const float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
+    const float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
+    const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_1.z);
+    const float _e39 = smith_root(lobe_1.w, lobe_1.z);
+    float spec = (((lobe_1.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+}
+
+float receiver_importance(float3 center_4, float radius_4, float phi_3, float3 axis_3, float cos_o_3, float cos_e_3, float3 p_4, float3 n_21, float3 r_4, float4 lobe_2)
+{
+    if ((lobe_2.y <= 0.0)) {
+        const float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
+        return _e13;
+    }
+    const float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    return _e14;
+}
+
+float candidate_weight(float importance, float rt2_5, float d2_9)
+{
+    const float _e3 = slc_weight(rt2_5, d2_9);
+    return (importance * _e3);
+}
+
+float cone_weight(float3 center_5, float radius_5, float phi_4, float3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, float3 p_5, float3 n_22, float3 r_5, float4 lobe_3)
+{
+    float3 v_17 = (p_5 - center_5);
+    if ((lobe_3.y <= 0.0)) {
+        const float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
+        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
+        return _e19;
+    }
+    const float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    const float _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
+    return _e22;
+}
+
+float weighted_select_pdf(float w_7, float w_sum_2, bool in_range_1, uint k_5)
+{
+    if ((w_7 <= 0.0)) {
+        return 0.0;
+    }
+    float total = (in_range_1 ? w_sum_2 : (w_sum_2 + w_7));
+    const float _e9 = to_f32_(k_5);
+    return ((_e9 * w_7) / total);
+}
+
+float bvh_first_prob(float c0_, float c1_2)
+{
+    float s_5 = (c0_ + c1_2);
+    if ((s_5 > 0.0)) {
+        return (c0_ / s_5);
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(float u_4, float p0_, bool first_1)
+{
+    if (first_1) {
+        return min((u_4 / p0_), ONE_MINUS_EPSILON);
+    }
+    return clamp(((u_4 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
+float surface_offset(float diag)
+{
+    return (1e-5 * diag);
+}
+
+float ray_t_min(float diag_1)
+{
+    return (1e-6 * diag_1);
+}
+
+float shadow_margin(float len)
+{
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_10)
+{
+    return (1.0 / ((abs(x_10) < 1e-30) ? 1e-30 : x_10));
+}
+
+float3 ray_inverse3_(float3 d_2)
+{
+    const float _e2 = ray_inverse(d_2.x);
+    const float _e4 = ray_inverse(d_2.y);
+    const float _e6 = ray_inverse(d_2.z);
+    return float3(_e2, _e4, _e6);
+}
+
+float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
+{
+    float3 t0_ = ((bmin_1 - o) * inv_d);
+    float3 t1_ = ((bmax_1 - o) * inv_d);
+    float3 lo_3 = min(t0_, t1_);
+    float3 hi_3 = max(t0_, t1_);
+    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
+    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+float3 triangle_normal(float3 a_5, float3 b_4, float3 c_7)
+{
+    bool local_17 = (bool)0;
+
+    float3 n_28 = cross((b_4 - a_5), (c_7 - a_5));
+    float l2_ = dot(n_28, n_28);
+    if (!(!((l2_ > 0.0)))) {
+        local_17 = !((l2_ < 3e38));
+    } else {
+        local_17 = true;
+    }
+    bool _e17 = local_17;
+    if (_e17) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    return (n_28 / (sqrt(l2_)).xxx);
+}
+
+float3 face_against(float3 n_23, float3 dir)
+{
+    return ((dot(n_23, dir) > 0.0) ? -(n_23) : n_23);
+}
+
+float3 barycentric(float3 p_6, float3 a_6, float3 b_5, float3 c_8)
+{
+    float3 e1_1 = (b_5 - a_6);
+    float3 e2_1 = (c_8 - a_6);
+    float3 q_4 = (p_6 - a_6);
+    float d11_ = dot(e1_1, e1_1);
+    float d12_ = dot(e1_1, e2_1);
+    float d22_ = dot(e2_1, e2_1);
+    float den = ((d11_ * d22_) - (d12_ * d12_));
+    if (!((abs(den) > 0.0))) {
+        return float3(1.0, 0.0, 0.0);
+    }
+    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
+    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
+    return float3(((1.0 - w1_) - w2_), w1_, w2_);
+}
+
+float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_8, float3 facing)
+{
+    bool local_18 = (bool)0;
+
+    float3 s_6 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
+    float l2_1 = dot(s_6, s_6);
+    if (!(!((l2_1 > 1e-12)))) {
+        local_18 = !((l2_1 < 3e38));
+    } else {
+        local_18 = true;
+    }
+    bool _e24 = local_18;
+    if (_e24) {
+        return facing;
+    }
+    float3 n_29 = (s_6 / (sqrt(l2_1)).xxx);
+    return ((dot(n_29, facing) < 0.0) ? -(n_29) : n_29);
+}
+
+float ray_triangle(float3 o_1, float3 d_3, float3 a_7, float3 b_6, float3 c_9, float t_min, float t_max_1)
+{
+    bool local_19 = (bool)0;
+    bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
+
+    float3 e1_2 = (b_6 - a_7);
+    float3 e2_2 = (c_9 - a_7);
+    float3 p_8 = cross(d_3, e2_2);
+    float det = dot(e1_2, p_8);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv_1 = (1.0 / det);
+    float3 s_7 = (o_1 - a_7);
+    float u_6 = (dot(s_7, p_8) * inv_1);
+    if (!((u_6 < 0.0))) {
+        local_19 = (u_6 > 1.0);
+    } else {
+        local_19 = true;
+    }
+    bool _e28 = local_19;
+    if (_e28) {
+        return -1.0;
+    }
+    float3 q_5 = cross(s_7, e1_2);
+    float v_18 = (dot(d_3, q_5) * inv_1);
+    if (!((v_18 < 0.0))) {
+        local_20 = ((u_6 + v_18) > 1.0);
+    } else {
+        local_20 = true;
+    }
+    bool _e42 = local_20;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_5 = (dot(e2_2, q_5) * inv_1);
+    if ((t_5 > t_min)) {
+        local_21 = (t_5 < t_max_1);
+    } else {
+        local_21 = false;
+    }
+    bool _e51 = local_21;
+    if (_e51) {
+        return t_5;
+    }
+    return -1.0;
 }
 
 float inv_sigma_z(float z)
@@ -1468,14 +1545,14 @@ float3 filtered_irradiance(float3 e_1, float3 sum, float weight)
     return e_1;
 }
 
-float bilateral_weight(float3 n_21, float3 nj, float z_1, float zj, float inv_sz)
+float bilateral_weight(float3 n_24, float3 nj, float z_1, float zj, float inv_sz)
 {
-    float dn = max(dot(n_21, nj), 0.0);
+    float dn = max(dot(n_24, nj), 0.0);
     float dn2_ = (dn * dn);
     float dn4_ = (dn2_ * dn2_);
     float dn8_ = (dn4_ * dn4_);
-    float d_6 = ((zj - z_1) * inv_sz);
-    float t_6 = max((1.0 - (d_6 * d_6)), 0.0);
+    float d_7 = ((zj - z_1) * inv_sz);
+    float t_6 = max((1.0 - (d_7 * d_7)), 0.0);
     return (((dn8_ * dn8_) * t_6) * t_6);
 }
 
@@ -1561,36 +1638,36 @@ bool sees_emission(float3 gn, float3 dir_1)
     return (dot(gn, dir_1) < 0.0);
 }
 
-bool continues_path(float3 nd, float3 n_22, float3 ng_1)
-{
-    bool local_21 = (bool)0;
-
-    if ((dot(nd, n_22) > 0.0)) {
-        local_21 = (dot(nd, ng_1) > 0.0);
-    } else {
-        local_21 = false;
-    }
-    bool _e12 = local_21;
-    return _e12;
-}
-
-bool finite3_(float3 v_7)
+bool continues_path(float3 nd, float3 n_25, float3 ng_1)
 {
     bool local_22 = (bool)0;
-    bool local_23 = (bool)0;
 
-    if ((abs(v_7.x) <= F32_MAX)) {
-        local_22 = (abs(v_7.y) <= F32_MAX);
+    if ((dot(nd, n_25) > 0.0)) {
+        local_22 = (dot(nd, ng_1) > 0.0);
     } else {
         local_22 = false;
     }
     bool _e12 = local_22;
-    if (_e12) {
-        local_23 = (abs(v_7.z) <= F32_MAX);
+    return _e12;
+}
+
+bool finite3_(float3 v_8)
+{
+    bool local_23 = (bool)0;
+    bool local_24 = (bool)0;
+
+    if ((abs(v_8.x) <= F32_MAX)) {
+        local_23 = (abs(v_8.y) <= F32_MAX);
     } else {
         local_23 = false;
     }
-    bool _e20 = local_23;
+    bool _e12 = local_23;
+    if (_e12) {
+        local_24 = (abs(v_8.z) <= F32_MAX);
+    } else {
+        local_24 = false;
+    }
+    bool _e20 = local_24;
     return _e20;
 }
 
@@ -1614,21 +1691,21 @@ uint light_map_texel(float a_8, uint size_7)
     return _e14;
 }
 
-float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_2, float extent_2, bool perspective)
+float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_5, float extent_2, bool perspective)
 {
-    return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
+    return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_5) : 1.0) * extent_2));
 }
 
 float display_encode(float x_14)
 {
-    float v_17 = max(x_14, 0.0);
-    float t_8 = ((2.0 * v_17) / (1.0 + (2.0 * v_17)));
+    float v_19 = max(x_14, 0.0);
+    float t_8 = ((2.0 * v_19) / (1.0 + (2.0 * v_19)));
     return ((t_8 <= 0.0031308) ? (12.92 * t_8) : ((1.055 * pow(t_8, 0.41666666)) - 0.055));
 }
 
-float light_map_depth(float3 rel_1, float3 axis_3, bool perspective_1)
+float light_map_depth(float3 rel_1, float3 axis_6, bool perspective_1)
 {
-    return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
+    return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_6));
 }
 
 float rsm_texel_solid_angle(float texel_area, float cos_axis)
@@ -1636,22 +1713,22 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-float3 point_irradiance(float3 intensity_1, float3 n_23, float3 v_8)
+float3 point_irradiance(float3 intensity_1, float3 n_26, float3 v_9)
 {
-    float d2_14 = dot(v_8, v_8);
-    float cos_x_2 = (dot(n_23, v_8) / sqrt(max(d2_14, MIN_D2_)));
+    float d2_14 = dot(v_9, v_9);
+    float cos_x_2 = (dot(n_26, v_9) / sqrt(max(d2_14, MIN_D2_)));
     const float _e11 = inverse_square(d2_14);
     return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
-float3 directional_irradiance(float3 e_2, float3 n_24, float3 to_light)
+float3 directional_irradiance(float3 e_2, float3 n_27, float3 to_light)
 {
-    return (e_2 * max(dot(n_24, to_light), 0.0));
+    return (e_2 * max(dot(n_27, to_light), 0.0));
 }
 
-float perspective_texel_width(float extent_3, float d_3, float z_2, float size_8)
+float perspective_texel_width(float extent_3, float d_4, float z_2, float size_8)
 {
-    return ((((2.0 * extent_3) * d_3) * d_3) / (size_8 * z_2));
+    return ((((2.0 * extent_3) * d_4) * d_4) / (size_8 * z_2));
 }
 
 float ortho_texel_width(float extent_4, float size_9)
@@ -1665,16 +1742,16 @@ float shadow_bias(float texel, float cos_light_1)
     return (texel * (1.5 + (sqrt((1.0 - (c_15 * c_15))) / c_15)));
 }
 
-bool shadow_lit(float d_4, float d_map, float bias)
+bool shadow_lit(float d_5, float d_map, float bias)
 {
-    bool local_24 = (bool)0;
+    bool local_25 = (bool)0;
 
     if (!((d_map <= 0.0))) {
-        local_24 = (d_4 <= (d_map + bias));
+        local_25 = (d_5 <= (d_map + bias));
     } else {
-        local_24 = true;
+        local_25 = true;
     }
-    bool _e11 = local_24;
+    bool _e11 = local_25;
     return _e11;
 }
 
@@ -1718,12 +1795,12 @@ WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
     return ret;
 }
 
-WorkgroupBox workgroup_box(uint li_1, float3 p_3, bool has)
+WorkgroupBox workgroup_box(uint li_1, float3 p_7, bool has)
 {
     uint stride = 32u;
 
-    wg_lo[min(uint(li_1), 63u)] = (has ? p_3 : (3.4028235e38).xxx);
-    wg_hi[min(uint(li_1), 63u)] = (has ? p_3 : (-3.4028235e38).xxx);
+    wg_lo[min(uint(li_1), 63u)] = (has ? p_7 : (3.4028235e38).xxx);
+    wg_hi[min(uint(li_1), 63u)] = (has ? p_7 : (-3.4028235e38).xxx);
     GroupMemoryBarrierWithGroupSync();
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
@@ -1872,7 +1949,7 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     uint _e100 = j;
                     float3 _e104 = asfloat(lights.Load3(0+(base_9 + _e100)*64));
                     uint _e106 = j;
-                    float _e109 = asfloat(r2_6.Load((base_9 + _e106)*4));
+                    float _e109 = asfloat(r2_7.Load((base_9 + _e106)*4));
                     const float _e110 = cull_radius(_e109);
                     const bool _e111 = sphere_overlaps_aabb(_e104, _e110, lo_4, hi_4);
                     if (_e111) {
@@ -1911,14 +1988,14 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         uint j_1 = (base_9 + _e134);
                         GpuLight l_8 = ConstructGpuLight(asfloat(lights.Load3(j_1*64+0)), asuint(lights.Load(j_1*64+12)), asfloat(lights.Load3(j_1*64+16)), asfloat(lights.Load(j_1*64+28)), asfloat(lights.Load3(j_1*64+32)), asfloat(lights.Load(j_1*64+44)), asfloat(lights.Load3(j_1*64+48)), asuint(lights.Load(j_1*64+60)));
                         float4 _e139 = pos;
-                        float3 v_18 = (_e139.xyz - l_8.p0_);
+                        float3 v_20 = (_e139.xyz - l_8.p0_);
                         float3 _e144 = nrm;
                         float _e147 = params.min_d2_;
-                        const float _e148 = vpl_transfer(l_8.p1_, _e144, v_18, _e147);
-                        float d2_15 = dot(v_18, v_18);
+                        const float _e148 = vpl_transfer(l_8.p1_, _e144, v_20, _e147);
+                        float d2_15 = dot(v_20, v_20);
                         float _e152 = params.near_r2_;
                         const float _e153 = vpl_far_weight(d2_15, _e152);
-                        float _e156 = asfloat(r2_6.Load(j_1*4));
+                        float _e156 = asfloat(r2_7.Load(j_1*4));
                         const bool _e157 = slc_keep(_e156, d2_15);
                         if (_e157) {
                             local_2 = (_e153 > 0.0);
