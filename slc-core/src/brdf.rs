@@ -197,6 +197,32 @@ crate::shared! {
         return clamp(lobe.y / (lobe.y + lobe.x), 0.1, 0.9);
     }
 
+    /// `π` times a receiver's largest `f·cos`, estimated from its lobe
+    /// `lobe` ([`receiver_lobe`]): `k_d + k_s / (4α² √(n·v²(1−α²)+α²))`,
+    /// the diffuse lobe's `k_d/π` plus the specular lobe's `F·D·V·n·l` on
+    /// its mirror direction; 1 for a white Lambertian receiver.
+    pub fn receiver_peak(lobe: vec4f) -> f32 {
+        return lobe.x + lobe.y * 0.25 / (lobe.z * lobe.z * smith_root(lobe.w, lobe.z));
+    }
+
+    /// Largest factor by which a receiver scales SLC's range² ([`range_scale`]).
+    pub const RANGE_SCALE_MAX: f32 = 64.0;
+
+    /// The factor `s` by which a receiver with lobe `lobe` scales every
+    /// light's threshold and random range² (same ξ, so the estimate stays
+    /// unbiased and the spheres stay one per light): `s = π·P`, the
+    /// receiver's [`receiver_peak`], which keeps one light's roulette
+    /// deviation at the receiver within ε (it is `π·P·ε` unscaled, see
+    /// `crate::range`); at least 1, at most [`RANGE_SCALE_MAX`] (a
+    /// sharper lobe keeps `π·P/64` times ε: its range grows 8× already);
+    /// exactly 1 without a specular lobe.
+    pub fn range_scale(lobe: vec4f) -> f32 {
+        if lobe.y <= 0.0 {
+            return 1.0;
+        }
+        return clamp(receiver_peak(lobe), 1.0, RANGE_SCALE_MAX);
+    }
+
     /// The view direction `v` mirrored about the unit normal `n`: `2(n·v)n − v`.
     pub fn mirror_dir(n: vec3f, v: vec3f) -> vec3f {
         return n * (2.0 * dot(n, v)) - v;

@@ -42,8 +42,24 @@ crate::shared! {
         pub next: u32,
         /// Light index for a leaf, `BSH_NONE` for an inner node.
         pub light: u32,
-        /// Padding to 32 bytes.
-        pub pad: u32,
+        /// A leaf's light extent `R` (its radius is `R + r`); 0 for an
+        /// inner node.
+        pub extent: f32,
+    }
+
+    /// Radius within which node `node` holds the points a receiver that
+    /// scales SLC's range² by `s` (`scale = √s ≥ 1`; [`crate::brdf::range_scale`])
+    /// can reach: a leaf's `R + √s·r`, an inner node's radius times `√s`
+    /// (which holds its children's scaled spheres: `|C − c| + √s·r_c ≤
+    /// √s·(|C − c| + r_c) ≤ √s·R_C`); the radius itself for `scale = 1`.
+    pub fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
+        if scale == 1.0 {
+            return node.radius;
+        }
+        if node.child == BSH_NONE {
+            return node.extent + scale * (node.radius - node.extent);
+        }
+        return node.radius * scale;
     }
 }
 
@@ -69,7 +85,7 @@ pub fn bsh_count(nodes: BshNodes) -> u32 {
 /// part of [`crate::wgsl::library`]: they read a BSH buffer, which only the
 /// kernels that bind one declare (their WGSL is [`walk::WGSL`]).
 pub mod walk {
-    use super::{BSH_NONE, BshNode, BshNodes, bsh_count, bsh_node};
+    use super::{BSH_NONE, BshNode, BshNodes, bsh_count, bsh_node, bsh_scaled_radius};
     use crate::sphere::{sphere_contains_point, sphere_union};
     use crate::wgsl::*;
 
@@ -88,10 +104,17 @@ pub mod walk {
         /// talk's stackless traversal. Start at [`bsh_first`] and continue
         /// from the found leaf's `next`.
         pub fn bsh_next_leaf(nodes: BshNodes, start: u32, x: vec3f) -> u32 {
+            return bsh_next_leaf_scaled(nodes, start, x, 1.0);
+        }
+
+        /// [`bsh_next_leaf`] for a receiver that scales SLC's range² by `s`
+        /// (`scale = √s`): the leaves whose sphere `(c, R + √s·r)` contains
+        /// `x` ([`bsh_scaled_radius`]).
+        pub fn bsh_next_leaf_scaled(nodes: BshNodes, start: u32, x: vec3f, scale: f32) -> u32 {
             let mut i: u32 = start;
             while i != BSH_NONE {
                 let node: BshNode = bsh_node(nodes, i);
-                if sphere_contains_point(node.center, node.radius, x) {
+                if sphere_contains_point(node.center, bsh_scaled_radius(node, scale), x) {
                     if node.child == BSH_NONE {
                         return i;
                     }
@@ -154,10 +177,10 @@ impl Bsh {
         let me = self.nodes.len() as u32;
         if idx.len() == 1 {
             let c = self.bounds[idx[0] as usize].center;
-            self.nodes.push(BshNode { center: c, radius: 0.0, child: BSH_NONE, next, light: idx[0], pad: 0 });
+            self.nodes.push(BshNode { center: c, radius: 0.0, child: BSH_NONE, next, light: idx[0], extent: self.bounds[idx[0] as usize].extent });
             return;
         }
-        self.nodes.push(BshNode { center: Vec3::ZERO, radius: 0.0, child: me + 1, next, light: BSH_NONE, pad: 0 });
+        self.nodes.push(BshNode { center: Vec3::ZERO, radius: 0.0, child: me + 1, next, light: BSH_NONE, extent: 0.0 });
         let b = idx.iter().fold(Aabb::EMPTY, |b, &i| b.grow(self.bounds[i as usize].center));
         let ext = b.max - b.min;
         let axis = if ext.x >= ext.y && ext.x >= ext.z {
@@ -248,16 +271,22 @@ impl Bsh {
 
     /// Lights whose range sphere contains `x` (none for a NaN point), by
     /// the shared traversal steps ([`walk`]) the GPU kernels take.
-    pub fn for_each_containing(&self, x: Vec3, mut visit: impl FnMut(u32)) {
+    pub fn for_each_containing(&self, x: Vec3, visit: impl FnMut(u32)) {
+        self.for_each_containing_scaled(x, 1.0, visit);
+    }
+
+    /// Lights whose range sphere scaled for a receiver (`scale = √s`,
+    /// [`bsh_scaled_radius`]) contains `x`.
+    pub fn for_each_containing_scaled(&self, x: Vec3, scale: f32, mut visit: impl FnMut(u32)) {
         if x.is_nan() {
             return;
         }
         let nodes = &self.nodes[..];
-        let mut i = walk::bsh_next_leaf(nodes, walk::bsh_first(nodes), x);
+        let mut i = walk::bsh_next_leaf_scaled(nodes, walk::bsh_first(nodes), x, scale);
         while i != BSH_NONE {
             let leaf = bsh_node(nodes, i);
             visit(leaf.light);
-            i = walk::bsh_next_leaf(nodes, leaf.next, x);
+            i = walk::bsh_next_leaf_scaled(nodes, leaf.next, x, scale);
         }
     }
 

@@ -261,6 +261,12 @@ impl Receiver {
         Receiver { p, n, r: n, lobe: glam::Vec4::new(1.0, 0.0, 1.0, 1.0) }
     }
 
+    /// The factor by which this receiver scales SLC's ranges²
+    /// ([`crate::brdf::range_scale`]; 1 for a Lambertian receiver).
+    pub fn range_scale(&self) -> f32 {
+        crate::brdf::range_scale(self.lobe)
+    }
+
     /// [`receiver_importance`] of the light bounded by `cone`.
     pub fn importance(&self, cone: &LightCone) -> f32 {
         receiver_importance(cone.center, cone.radius, cone.phi, cone.axis, cone.cos_o, cone.cos_e, self.p, self.n, self.r, self.lobe)

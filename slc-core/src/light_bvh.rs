@@ -143,7 +143,7 @@ pub mod walk {
 
         /// Importance of node `i` for the receiver at `x` (normal `n`,
         /// mirror direction `r`, lobe `lobe`;
-        /// [`receiver_importance`](crate::importance::receiver_importance)).
+        /// [`receiver_importance`]).
         pub fn bvh_importance(nodes: BvhNodes, i: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f) -> f32 {
             let b: GpuLightBvhNode = light_bvh_node(nodes, i);
             return receiver_importance(b.center, b.radius, b.phi, b.axis, b.cos_o, b.cos_e, x, n, r, lobe);

@@ -109,7 +109,7 @@ fn bsh_node_layout_matches_wgsl() {
         ("child", std::mem::offset_of!(slc_core::bsh::BshNode, child)),
         ("next", std::mem::offset_of!(slc_core::bsh::BshNode, next)),
         ("light", std::mem::offset_of!(slc_core::bsh::BshNode, light)),
-        ("pad", std::mem::offset_of!(slc_core::bsh::BshNode, pad)),
+        ("extent", std::mem::offset_of!(slc_core::bsh::BshNode, extent)),
     ];
     assert_eq!(members.len(), rust.len());
     for (m, (name, off)) in members.iter().zip(rust) {

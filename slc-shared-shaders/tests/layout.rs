@@ -41,7 +41,7 @@ fn rust_twins_match_naga_layout() {
         fields!(GpuVertex, position, material, normal, pad0, geo_normal, pad1),
         fields!(GpuMaterial, albedo, metallic, emission, alpha, f0, f90),
         fields!(MapParams, c0, c1, c2, c3, light, origin, mode, axis, size, right, extent, up, texel),
-        fields!(slc_core::bsh::BshNode, center, radius, child, next, light, pad),
+        fields!(slc_core::bsh::BshNode, center, radius, child, next, light, extent),
     ];
     for (name, size, offsets) in structs {
         let name = name.rsplit("::").next().unwrap().trim();

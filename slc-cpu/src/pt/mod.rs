@@ -40,7 +40,7 @@ use rand_core::RngCore;
 use rand_pcg::Pcg32;
 use rayon::prelude::*;
 use slc_core::brdf::{bsdf_pdf, bsdf_sample, specular_probability};
-use slc_core::bsh::Bsh;
+use slc_core::bsh::{BSH_NONE, Bsh, BshNode, bsh_scaled_radius};
 use slc_core::importance::Receiver;
 use slc_core::importance::weighted_select_pdf;
 use slc_core::light::{Light, connection_cosine, connection_factor};
@@ -49,7 +49,7 @@ use slc_core::path::{camera_dir, continues_path, jittered_pixel, path_survival, 
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::ray::{face_against, ray_t_min, surface_offset};
 use slc_core::reservoir::{Reservoir, WeightedReservoir, reservoir_select_pdf, uniform_light};
-use slc_core::sphere::Sphere;
+use slc_core::sphere::sphere_contains_point;
 use slc_core::xi::{xi_for, xi_from_bits};
 use slc_scene::RenderError;
 use slc_scene::backend::{PathTracer, Timing};
@@ -98,12 +98,22 @@ struct NeeState {
     w_sum: f32,
 }
 
-/// Per-pass light state: ξ-dependent ranges and each light's range sphere
+/// Per-pass light state: ξ-dependent ranges and each light's BSH leaf
 /// (the BSH itself is refitted in place).
 struct Pass {
     rt2: Vec<f32>,
     r2: Vec<f32>,
-    spheres: Vec<Sphere>,
+    leaves: Vec<BshNode>,
+}
+
+impl Pass {
+    /// Whether light `l`'s range sphere, scaled for a receiver by `scale =
+    /// √s` ([`bsh_scaled_radius`]), holds `x`: it is one of the receiver's
+    /// candidates.
+    fn in_range(&self, l: usize, x: Vec3, scale: f32) -> bool {
+        let leaf = self.leaves[l];
+        sphere_contains_point(leaf.center, bsh_scaled_radius(leaf, scale), x)
+    }
 }
 
 impl CpuPathTracer {
@@ -112,9 +122,12 @@ impl CpuPathTracer {
     fn pass_state(&mut self, params: &RangeParams, seed: u32, pass: u32) -> Result<Pass, RenderError> {
         let rt2: Vec<f32> = self.lights().iter().map(|l| params.threshold_range2(l.peak())).collect();
         let r2: Vec<f32> = rt2.iter().enumerate().map(|(i, &t)| random_range2(t, xi_for(seed, pass, i as u32))).collect();
-        let spheres = self.pts.light_set().bounds().iter().zip(&r2).map(|(b, &r)| b.range_sphere(r)).collect();
         self.bsh.refit(&r2).map_err(|e| RenderError::Setting(e.to_string()))?;
-        Ok(Pass { rt2, r2, spheres })
+        let mut leaves = vec![BshNode::default(); r2.len()];
+        for n in self.bsh.nodes().iter().filter(|n| n.child == BSH_NONE) {
+            leaves[n.light as usize] = *n;
+        }
+        Ok(Pass { rt2, r2, leaves })
     }
 
     /// Renders `passes` more passes of one sample per pixel into `acc`
@@ -157,16 +170,19 @@ impl CpuPathTracer {
     fn light_pdf(&self, s: &PtSettings, st: &Pass, l: usize, rc: &Receiver, y: Vec3, nee: NeeState, in_nee: bool) -> f32 {
         let Light::Triangle(t) = &self.lights()[l] else { return 0.0 };
         let x = rc.p;
+        // The receiver's range scale s (1 for a Lambertian one).
+        let rs = rc.range_scale();
+        let in_range = in_nee || st.in_range(l, x, rs.sqrt());
         let v = x - y;
         let d2 = v.length_squared();
         let cos_y = if d2 > 0.0 { t.normal().dot(v / d2.sqrt()) } else { 0.0 };
         // (selection probability, r_t² of the RR test; +∞ for the baselines)
         let (select, rt2) = match s.method {
-            PtMethod::Slc => (1.0, st.rt2[l]),
-            PtMethod::SlcReservoir => (reservoir_select_pdf(nee.seen, in_nee || st.spheres[l].contains(x), RESERVOIR_K as u32), st.rt2[l]),
+            PtMethod::Slc => (1.0, rs * st.rt2[l]),
+            PtMethod::SlcReservoir => (reservoir_select_pdf(nee.seen, in_range, RESERVOIR_K as u32), rs * st.rt2[l]),
             PtMethod::SlcWeighted => {
-                let w = self.pts.light_set().cones()[l].weight(rc, st.rt2[l]);
-                (weighted_select_pdf(w, nee.w_sum, in_nee || st.spheres[l].contains(x), WEIGHTED_K as u32), st.rt2[l])
+                let w = self.pts.light_set().cones()[l].weight(rc, rs * st.rt2[l]);
+                (weighted_select_pdf(w, nee.w_sum, in_range, WEIGHTED_K as u32), rs * st.rt2[l])
             }
             PtMethod::Uniform => (1.0 / self.lights().len() as f32, f32::INFINITY),
             PtMethod::Power => (self.pts.light_set().alias().pdf(l) as f32, f32::INFINITY),
@@ -190,7 +206,7 @@ impl CpuPathTracer {
             _ => light.bound().center,
         };
         // The baselines cull nothing: r² = +∞ keeps every light.
-        let cos_x = connection_cosine(x, y, n, ng, if rr { st.r2[l] } else { f32::INFINITY });
+        let cos_x = connection_cosine(x, y, n, ng, if rr { vx.range_scale * st.r2[l] } else { f32::INFINITY });
         if cos_x <= 0.0 {
             return None;
         }
@@ -206,7 +222,7 @@ impl CpuPathTracer {
             return None;
         }
         // The baselines cull nothing: r_t² = +∞ makes 1/p = 1.
-        let rt2 = if rr { st.rt2[l] } else { f32::INFINITY };
+        let rt2 = if rr { vx.range_scale * st.rt2[l] } else { f32::INFINITY };
         let to_light = -wdir;
         let mis = match light {
             Light::Triangle(_) => mis_power(self.light_pdf(s, st, l, &vx.rc, y, nee, true), vx.bsdf_pdf(to_light)),
@@ -223,7 +239,7 @@ impl CpuPathTracer {
         match s.method {
             PtMethod::Slc => {
                 let mut cand = Vec::new();
-                self.bsh.for_each_containing(x, |l| cand.push(l));
+                self.bsh.for_each_containing_scaled(x, vx.range_scale.sqrt(), |l| cand.push(l));
                 let nee = NeeState { seen: cand.len() as u32, w_sum: 0.0 };
                 for l in cand {
                     if let Some(c) = self.connect(s, st, l as usize, vx, rng, nee, true, 1.0) {
@@ -234,7 +250,7 @@ impl CpuPathTracer {
             }
             PtMethod::SlcReservoir => {
                 let mut res = Reservoir::<RESERVOIR_K>::new();
-                self.bsh.for_each_containing(x, |l| res.push(l, rng.next_u32(), rng.next_u32()));
+                self.bsh.for_each_containing_scaled(x, vx.range_scale.sqrt(), |l| res.push(l, rng.next_u32(), rng.next_u32()));
                 let (nee, w) = (NeeState { seen: res.seen(), w_sum: 0.0 }, res.weight());
                 for &l in res.picks() {
                     if let Some(c) = self.connect(s, st, l as usize, vx, rng, nee, true, w) {
@@ -286,9 +302,10 @@ impl CpuPathTracer {
         let mut res = WeightedReservoir::<WEIGHTED_K>::new();
         let cones = self.pts.light_set().cones();
         let mut seen = 0;
-        self.bsh.for_each_containing(rc.p, |l| {
+        let rs = rc.range_scale();
+        self.bsh.for_each_containing_scaled(rc.p, rs.sqrt(), |l| {
             seen += 1;
-            let w = cones[l as usize].weight(rc, st.rt2[l as usize]);
+            let w = cones[l as usize].weight(rc, rs * st.rt2[l as usize]);
             // Zero weight: never picked (and its MIS pdf is 0), so no draws.
             if w > 0.0 {
                 let u = [(); WEIGHTED_K].map(|_| xi_from_bits(rng.next_u32()));
@@ -378,12 +395,14 @@ struct Vertex {
     wo: Vec3,
     alpha: f32,
     p_spec: f32,
+    /// The factor `s` the receiver scales SLC's ranges² by ([`Receiver::range_scale`]).
+    range_scale: f32,
 }
 
 impl Vertex {
     fn new(mat: Material, x: Vec3, n: Vec3, ng: Vec3, wo: Vec3) -> Vertex {
         let rc = mat.receiver(x, n, wo);
-        Vertex { rc, ng, mat, wo, alpha: mat.alpha(), p_spec: specular_probability(rc.lobe) }
+        Vertex { rc, ng, mat, wo, alpha: mat.alpha(), p_spec: specular_probability(rc.lobe), range_scale: rc.range_scale() }
     }
 
     /// The BSDF sampling pdf of the unit direction `l` ([`bsdf_pdf`]).
@@ -434,14 +453,15 @@ mod tests {
             let vx = Vertex::new(mat, x, n, n, wo);
             let rc = vx.rc;
             let mut nee = NeeState::default();
-            pts.bsh.for_each_containing(x, |l| {
+            let rs = rc.range_scale();
+            pts.bsh.for_each_containing_scaled(x, rs.sqrt(), |l| {
                 nee.seen += 1;
-                nee.w_sum += pts.pts.light_set().cones()[l as usize].weight(&rc, st.rt2[l as usize]);
+                nee.w_sum += pts.pts.light_set().cones()[l as usize].weight(&rc, rs * st.rt2[l as usize]);
             });
             let s = PtSettings { method, error_bound: 0.005, ..PtSettings::default() };
             for l in 0..pts.light_count() {
                 let Light::Triangle(t) = &pts.lights()[l] else { continue };
-                let in_range = st.spheres[l].contains(x);
+                let in_range = st.in_range(l, x, rs.sqrt());
                 for (u1, u2) in [(0.1, 0.2), (0.5, 0.5), (0.9, 0.05)] {
                     let y = t.sample(u1, u2);
                     let cos_x = n.dot((y - x).normalize());
@@ -450,10 +470,10 @@ mod tests {
                     if !in_range {
                         outside += 1;
                         if method == PtMethod::SlcWeighted {
-                            let w = pts.pts.light_set().cones()[l].weight(&rc, st.rt2[l]);
+                            let w = pts.pts.light_set().cones()[l].weight(&rc, rs * st.rt2[l]);
                             let select = weighted_select_pdf(w, nee.w_sum + w, true, WEIGHTED_K as u32);
                             let expect =
-                                light_strategy_pdf(select, st.rt2[l], (x - y).length_squared(), t.area(), t.normal().dot((x - y).normalize()));
+                                light_strategy_pdf(select, rs * st.rt2[l], (x - y).length_squared(), t.area(), t.normal().dot((x - y).normalize()));
                             assert!((p_light_hit - expect).abs() <= 1e-5 * expect, "{p_light_hit} vs {expect}");
                         }
                         continue;
@@ -482,16 +502,17 @@ mod tests {
     fn weighted_picks_match_brute_force_enumeration() {
         let pts = {
             let mut p = CpuPathTracer::new(&PtScene::new(&Scene::cornell_box_split_light(8), &[]).unwrap());
-            let st = p.pass_state(&RangeParams::new(0.002, 1.0).unwrap(), 3, 0).unwrap();
+            let st = p.pass_state(&RangeParams::new(0.016, 1.0).unwrap(), 3, 0).unwrap();
             (p, st)
         };
         let (pts, st) = (&pts.0, &pts.1);
         let (x, n) = (Vec3::new(0.3, 0.0, 0.3), Vec3::Y);
-        let rc = Material::gltf(Vec3::splat(0.9), 1.0, 0.2).receiver(x, n, Vec3::new(0.5, 0.5, 0.1).normalize());
-        assert!(rc.lobe.y > 0.0);
+        let rc = Material::gltf(Vec3::splat(0.9), 1.0, 0.45).receiver(x, n, Vec3::new(0.5, 0.5, 0.1).normalize());
+        let rs = rc.range_scale();
+        assert!(rc.lobe.y > 0.0 && rs > 1.0, "a glossy receiver scales its ranges: {rs}");
         let cones = pts.pts.light_set().cones();
         let brute: Vec<(usize, f64)> =
-            (0..pts.light_count()).filter(|&l| st.spheres[l].contains(x)).map(|l| (l, cones[l].weight(&rc, st.rt2[l]) as f64)).collect();
+            (0..pts.light_count()).filter(|&l| st.in_range(l, x, rs.sqrt())).map(|l| (l, cones[l].weight(&rc, rs * st.rt2[l]) as f64)).collect();
         let w_brute: f64 = brute.iter().map(|&(_, w)| w).sum();
         assert!(brute.len() >= 10 && brute.len() < pts.light_count(), "{} candidates", brute.len());
         let mut rng = Pcg32::new(11, 5);

@@ -12,13 +12,14 @@ struct Picks {
 
 {% include "bsh_walk.wgsl" %}
 
-/// Lights whose range sphere contains `x`, streamed through the reservoir;
-/// `seed` drives the reservoir's random choices.
-fn bsh_collect(x: vec3f, seed: u32) -> Picks {
+/// Lights whose range sphere, scaled for the receiver by `scale` (√s, 1
+/// for a Lambertian one; slc-core's `bsh_scaled_radius`), contains `x`,
+/// streamed through the reservoir; `seed` drives its random choices.
+fn bsh_collect(x: vec3f, scale: f32, seed: u32) -> Picks {
     var picks: Picks;
     picks.n = 0u;
     var h = seed;
-    for (var i = bsh_next_leaf(BSH, bsh_first(BSH), x); i != BSH_NONE; i = bsh_next_leaf(BSH, bsh_nodes[i].next, x)) {
+    for (var i = bsh_next_leaf_scaled(BSH, bsh_first(BSH), x, scale); i != BSH_NONE; i = bsh_next_leaf_scaled(BSH, bsh_nodes[i].next, x, scale)) {
         if reservoir_takes(picks.n) {
             picks.n += 1u;
             h = pcg_hash(h);
@@ -46,20 +47,21 @@ struct Connection {
 }
 
 /// Samples pick `li` at `(u1, u2)`, applies the RR test with the light's own
-/// range at the sampled point's distance, casts the shadow ray (offset `eps`
-/// along `n`) and weights by `1/p` and the reservoir weight `w_res`.
-fn connect(li: u32, x: vec3f, n: vec3f, ng: vec3f, w_res: f32, u1: f32, u2: f32, eps: f32) -> Connection {
+/// range² (scaled by the receiver's `s`, 1 for a Lambertian one) at the
+/// sampled point's distance, casts the shadow ray (offset `eps` along `n`)
+/// and weights by `1/p` and the reservoir weight `w_res`.
+fn connect(li: u32, x: vec3f, n: vec3f, ng: vec3f, s: f32, w_res: f32, u1: f32, u2: f32, eps: f32) -> Connection {
     var c: Connection;
     c.e = vec3f(0.0);
     let l = lights[li];
     c.y = light_point(l, u1, u2);
-    c.cos_x = connection_cosine(x, c.y, n, ng, r2[li]);
+    c.cos_x = connection_cosine(x, c.y, n, ng, s * r2[li]);
     // The shadow ray leaves along the geometric normal `ng`.
     if c.cos_x <= 0.0 || occluded(x + ng * eps, c.y) {
         return c;
     }
     let v = x - c.y;
     let d2 = dot(v, v);
-    c.e = light_intensity(l, v / sqrt(d2)) * connection_factor(c.cos_x, d2, rt2[li], w_res);
+    c.e = light_intensity(l, v / sqrt(d2)) * connection_factor(c.cos_x, d2, s * rt2[li], w_res);
     return c;
 }

@@ -43,7 +43,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let x = p.xyz;
     let n = normals[i].xyz;
     let seed = point_stream(params.seed, i, params.frame);
-    let picks = bsh_collect(x, seed);
+    let picks = bsh_collect(x, 1.0, seed);
     let w_res = reservoir_weight(picks.n, K);
     var h = pick_stream(seed);
     var e = vec3f(0.0);
@@ -51,7 +51,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        e += connect(picks.light[s], x, n, n, w_res, u1, xi_from_bits(h), params.eps).e;
+        e += connect(picks.light[s], x, n, n, 1.0, w_res, u1, xi_from_bits(h), params.eps).e;
     }
     irradiance[i] = vec4f(e, f32(picks.n));
 }

@@ -32,7 +32,7 @@
 /// 1/pmf), `nee` what the traversal found (`select_pdf`; the pick is in
 /// range).
 fn shade_pick(li: u32, x: vec3f, n: vec3f, ng: vec3f, m: GpuMaterial, wo: vec3f, r: vec3f, lobe: vec4f, w: f32, nee: u32, u1: f32, u2: f32) -> vec3f {
-    let c = connect(li, x, n, ng, w, u1, u2, params.eps);
+    let c = connect(li, x, n, ng, range_scale(lobe), w, u1, u2, params.eps);
     if c.cos_x <= 0.0 {
         return vec3f(0.0);
     }
@@ -62,11 +62,13 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let wo = vtx.wo;
     let r = mirror_dir(n, wo);
     let lobe = receiver_lobe(m.albedo, m.metallic, m.f0, m.f90, m.alpha, dot(n, wo));
+    // The receiver's range scale √s: a glossy lobe reaches farther lights.
+    let scale = sqrt(range_scale(lobe));
     let seed = point_stream(params.seed, i, params.frame);
     var h = pick_stream(seed);
     var sum = vec3f(0.0);
 {% if selection == "reservoir" %}
-    let picks = bsh_collect(x, seed);
+    let picks = bsh_collect(x, scale, seed);
     candidates[i] = picks.n;
     let w_res = reservoir_weight(picks.n, K);
     for (var s = 0u; s < min(picks.n, K); s++) {
@@ -82,7 +84,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var pick: array<u32, K>;
     var pick_w: array<f32, K>;
     var w_sum = 0.0;
-    for (var b = bsh_next_leaf(BSH, bsh_first(BSH), x); b != BSH_NONE; b = bsh_next_leaf(BSH, bsh_nodes[b].next, x)) {
+    for (var b = bsh_next_leaf_scaled(BSH, bsh_first(BSH), x, scale); b != BSH_NONE; b = bsh_next_leaf_scaled(BSH, bsh_nodes[b].next, x, scale)) {
         let li = bsh_nodes[b].light;
         let w = light_weight(li, x, n, r, lobe);
         if w > 0.0 {
@@ -108,7 +110,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
 {% elif selection == "all" %}
     // Every in-range light, each connected as the traversal finds it.
     var count = 0u;
-    for (var b = bsh_next_leaf(BSH, bsh_first(BSH), x); b != BSH_NONE; b = bsh_next_leaf(BSH, bsh_nodes[b].next, x)) {
+    for (var b = bsh_next_leaf_scaled(BSH, bsh_first(BSH), x, scale); b != BSH_NONE; b = bsh_next_leaf_scaled(BSH, bsh_nodes[b].next, x, scale)) {
         count += 1u;
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);

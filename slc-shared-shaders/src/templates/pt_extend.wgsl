@@ -79,7 +79,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         var w = 1.0;
         if st.pdf_bsdf > 0.0 {
             let leaf = bsh_nodes[light_leaf[tri.light]];
-            let in_range = sphere_contains_point(leaf.center, leaf.radius, st.prev);
+            let in_range = sphere_contains_point(leaf.center, bsh_scaled_radius(leaf, sqrt(range_scale(st.prev_lobe))), st.prev);
             w = mis_weight(st.pdf_bsdf, light_pdf(tri.light, st.prev, st.prev_normal, st.prev_r, st.prev_lobe, x, candidates[i], in_range));
         }
         let add = st.beta * lights[tri.light].intensity * w;

@@ -19,10 +19,10 @@ fn mis_weight(pdf_a: f32, pdf_b: f32) -> f32 {
 @group(1) @binding(3) var<storage, read> light_bvh: array<GpuLightBvhNode>;
 
 /// `slc-weighted`'s weight of light `li` for the receiver `(x, n, r, lobe)`
-/// (slc-core's `cone_weight`).
+/// (slc-core's `cone_weight`, with the receiver's range scale).
 fn light_weight(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f) -> f32 {
     let c = light_cones[li];
-    return cone_weight(c.center, c.radius, c.phi, c.axis, c.cos_o, c.cos_e, rt2[li], x, n, r, lobe);
+    return cone_weight(c.center, c.radius, c.phi, c.axis, c.cos_o, c.cos_e, range_scale(lobe) * rt2[li], x, n, r, lobe);
 }
 
 /// The kernel's `light_bvh` buffer as slc-core's shared walks
@@ -74,5 +74,5 @@ fn light_pdf(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, y: vec3f, nee: 
     let v = x - y;
     let d2 = dot(v, v);
     let cos_y = select(0.0, dot(light_normal(l), v / sqrt(d2)), d2 > 0.0);
-    return light_strategy_pdf(select_pdf(li, x, n, r, lobe, nee, in_range), rt2[li], d2, light_area(l), cos_y);
+    return light_strategy_pdf(select_pdf(li, x, n, r, lobe, nee, in_range), range_scale(lobe) * rt2[li], d2, light_area(l), cos_y);
 }

@@ -192,7 +192,7 @@ struct BshNode {
     child: u32,
     next: u32,
     light: u32,
-    pad: u32,
+    extent: f32,
 }
 
 struct GpuLightBvhNode {
@@ -227,6 +227,7 @@ const MIN_D2_: f32 = 0.000000000001f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
+const RANGE_SCALE_MAX: f32 = 64f;
 const LIGHT_BVH_LEAF: u32 = 4294967295u;
 const ONE_MINUS_EPSILON: f32 = 0.99999994f;
 const F32_MAX: f32 = 340282350000000000000000000000000000000f;
@@ -720,6 +721,16 @@ fn ies_light_candela(tab_4: u32, base_3: u32, nadir: vec3<f32>, reference: vec3<
     return _e9;
 }
 
+fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
+    if (scale == 1f) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
 fn mul_hi_u32_(a_4: u32, b_3: u32) -> u32 {
     let a_lo = (a_4 & 65535u);
     let a_hi = (a_4 >> 16u);
@@ -1030,6 +1041,19 @@ fn specular_probability(lobe: vec4<f32>) -> f32 {
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1f, 0.9f);
 }
 
+fn receiver_peak(lobe_1: vec4<f32>) -> f32 {
+    let _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25f) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+fn range_scale(lobe_2: vec4<f32>) -> f32 {
+    if (lobe_2.y <= 0f) {
+        return 1f;
+    }
+    let _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
 fn mirror_dir(n_16: vec3<f32>, v_5: vec3<f32>) -> vec3<f32> {
     return ((n_16 * (2f * dot(n_16, v_5))) - v_5);
 }
@@ -1168,7 +1192,7 @@ fn light_importance(center_2: vec3<f32>, radius_2: f32, phi_1: f32, axis_1: vec3
     return max(_e18, 0f);
 }
 
-fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_20: vec3<f32>, r_3: vec3<f32>, lobe_1: vec4<f32>) -> f32 {
+fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_20: vec3<f32>, r_3: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
     var local_13: bool;
 
     let _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
@@ -1184,18 +1208,18 @@ fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec
     }
     let _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
-    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_1.z);
-    let _e39 = smith_root(lobe_1.w, lobe_1.z);
-    let spec = (((lobe_1.y * _e33) * 0.25f) / _e39);
-    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_3.z);
+    let _e39 = smith_root(lobe_3.w, lobe_3.z);
+    let spec = (((lobe_3.y * _e33) * 0.25f) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-fn receiver_importance(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, p_4: vec3<f32>, n_21: vec3<f32>, r_4: vec3<f32>, lobe_2: vec4<f32>) -> f32 {
-    if (lobe_2.y <= 0f) {
+fn receiver_importance(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, p_4: vec3<f32>, n_21: vec3<f32>, r_4: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
+    if (lobe_4.y <= 0f) {
         let _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    let _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    let _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1204,14 +1228,14 @@ fn candidate_weight(importance: f32, rt2_5: f32, d2_9: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_4: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_4: f32, rt2_6: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_4: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_4: f32, rt2_6: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
     let v_17 = (p_5 - center_5);
-    if (lobe_3.y <= 0f) {
+    if (lobe_5.y <= 0f) {
         let _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
         return _e19;
     }
-    let _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    let _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     let _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
     return _e22;
 }
@@ -1605,38 +1629,44 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_next_leaf(nodes_3: u32, start_1: u32, x_15: vec3<f32>) -> u32 {
+fn bsh_next_leaf_scaled(nodes_3: u32, start_1: u32, x_15: vec3<f32>, scale_1: f32) -> u32 {
     var i_3: u32;
 
     i_3 = start_1;
     loop {
-        let _e4 = i_3;
-        if (_e4 != BSH_NONE) {
+        let _e5 = i_3;
+        if (_e5 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e7 = i_3;
-            let _e8 = bsh_node(nodes_3, _e7);
-            let _e11 = sphere_contains_point(_e8.center, _e8.radius, x_15);
-            if _e11 {
-                if (_e8.child == BSH_NONE) {
-                    let _e15 = i_3;
-                    return _e15;
+            let _e8 = i_3;
+            let _e9 = bsh_node(nodes_3, _e8);
+            let _e11 = bsh_scaled_radius(_e9, scale_1);
+            let _e12 = sphere_contains_point(_e9.center, _e11, x_15);
+            if _e12 {
+                if (_e9.child == BSH_NONE) {
+                    let _e16 = i_3;
+                    return _e16;
                 }
-                i_3 = _e8.child;
+                i_3 = _e9.child;
             } else {
-                i_3 = _e8.next;
+                i_3 = _e9.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-fn bsh_children_sphere(nodes_4: u32, i_4: u32) -> vec4<f32> {
-    let _e2 = bsh_node(nodes_4, i_4);
-    let _e4 = bsh_node(nodes_4, _e2.child);
-    let _e6 = bsh_node(nodes_4, _e4.next);
+fn bsh_next_leaf(nodes_4: u32, start_2: u32, x_16: vec3<f32>) -> u32 {
+    let _e4 = bsh_next_leaf_scaled(nodes_4, start_2, x_16, 1f);
+    return _e4;
+}
+
+fn bsh_children_sphere(nodes_5: u32, i_4: u32) -> vec4<f32> {
+    let _e2 = bsh_node(nodes_5, i_4);
+    let _e4 = bsh_node(nodes_5, _e2.child);
+    let _e6 = bsh_node(nodes_5, _e4.next);
     let _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
     return _e11;
 }
@@ -1649,10 +1679,10 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     }
     let _e9 = params.first;
     let i_5 = order[(_e9 + gid.x)];
-    let node = bsh_nodes[i_5];
-    if (node.child == BSH_NONE) {
-        let _e26 = extent_5[node.light];
-        let _e30 = r2_7[node.light];
+    let node_1 = bsh_nodes[i_5];
+    if (node_1.child == BSH_NONE) {
+        let _e26 = extent_5[node_1.light];
+        let _e30 = r2_7[node_1.light];
         let _e31 = range_radius(_e26, _e30);
         bsh_nodes[i_5].radius = _e31;
         return;

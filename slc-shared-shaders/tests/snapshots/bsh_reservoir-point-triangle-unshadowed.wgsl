@@ -192,7 +192,7 @@ struct BshNode {
     child: u32,
     next: u32,
     light: u32,
-    pad: u32,
+    extent: f32,
 }
 
 struct GpuLightBvhNode {
@@ -238,6 +238,7 @@ const MIN_D2_: f32 = 0.000000000001f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
+const RANGE_SCALE_MAX: f32 = 64f;
 const LIGHT_BVH_LEAF: u32 = 4294967295u;
 const ONE_MINUS_EPSILON: f32 = 0.99999994f;
 const F32_MAX: f32 = 340282350000000000000000000000000000000f;
@@ -738,6 +739,16 @@ fn ies_light_candela(tab_4: u32, base_3: u32, nadir: vec3<f32>, reference: vec3<
     return _e9;
 }
 
+fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
+    if (scale == 1f) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
 fn mul_hi_u32_(a_4: u32, b_3: u32) -> u32 {
     let a_lo = (a_4 & 65535u);
     let a_hi = (a_4 >> 16u);
@@ -821,20 +832,20 @@ fn uniform_light(u_3: f32, n_8: u32) -> u32 {
 }
 
 fn mis_balance(pdf_a: f32, pdf_b: f32) -> f32 {
-    let s_1 = (pdf_a + pdf_b);
-    if (s_1 <= 0f) {
+    let s_2 = (pdf_a + pdf_b);
+    if (s_2 <= 0f) {
         return 0f;
     }
-    return (pdf_a / s_1);
+    return (pdf_a / s_2);
 }
 
 fn mis_power(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     let a2_ = (pdf_a_1 * pdf_a_1);
-    let s_2 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if (s_2 <= 0f) {
+    let s_3 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if (s_3 <= 0f) {
         return 0f;
     }
-    return (a2_ / s_2);
+    return (a2_ / s_3);
 }
 
 fn light_strategy_pdf(select_: f32, rt2_4: f32, d2_8: f32, area_1: f32, cos_y: f32) -> f32 {
@@ -870,15 +881,15 @@ fn cosine_pdf(cos_theta_1: f32) -> f32 {
 }
 
 fn onb_tangent(n_9: vec3<f32>) -> vec3<f32> {
-    let s_3 = select(-1f, 1f, (n_9.z >= 0f));
-    let a_12 = (-1f / (s_3 + n_9.z));
-    return vec3<f32>((1f + (((s_3 * n_9.x) * n_9.x) * a_12)), (((s_3 * n_9.x) * n_9.y) * a_12), (-(s_3) * n_9.x));
+    let s_4 = select(-1f, 1f, (n_9.z >= 0f));
+    let a_12 = (-1f / (s_4 + n_9.z));
+    return vec3<f32>((1f + (((s_4 * n_9.x) * n_9.x) * a_12)), (((s_4 * n_9.x) * n_9.y) * a_12), (-(s_4) * n_9.x));
 }
 
 fn onb_bitangent(n_10: vec3<f32>) -> vec3<f32> {
-    let s_4 = select(-1f, 1f, (n_10.z >= 0f));
-    let a_13 = (-1f / (s_4 + n_10.z));
-    return vec3<f32>(((n_10.x * n_10.y) * a_13), (s_4 + ((n_10.y * n_10.y) * a_13)), -(n_10.y));
+    let s_5 = select(-1f, 1f, (n_10.z >= 0f));
+    let a_13 = (-1f / (s_5 + n_10.z));
+    return vec3<f32>(((n_10.x * n_10.y) * a_13), (s_5 + ((n_10.y * n_10.y) * a_13)), -(n_10.y));
 }
 
 fn onb_to_world(n_11: vec3<f32>, d: vec3<f32>) -> vec3<f32> {
@@ -1048,15 +1059,28 @@ fn specular_probability(lobe: vec4<f32>) -> f32 {
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1f, 0.9f);
 }
 
+fn receiver_peak(lobe_1: vec4<f32>) -> f32 {
+    let _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25f) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+fn range_scale(lobe_2: vec4<f32>) -> f32 {
+    if (lobe_2.y <= 0f) {
+        return 1f;
+    }
+    let _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
 fn mirror_dir(n_16: vec3<f32>, v_5: vec3<f32>) -> vec3<f32> {
     return ((n_16 * (2f * dot(n_16, v_5))) - v_5);
 }
 
 fn bounded_vndf_k(wi: vec3<f32>, alpha_6: f32) -> f32 {
     let a_14 = saturate(alpha_6);
-    let s_5 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    let s_6 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
     let a2_3 = (a_14 * a_14);
-    let s2_ = (s_5 * s_5);
+    let s2_ = (s_6 * s_6);
     return (((1f - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
@@ -1186,7 +1210,7 @@ fn light_importance(center_2: vec3<f32>, radius_2: f32, phi_1: f32, axis_1: vec3
     return max(_e18, 0f);
 }
 
-fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_20: vec3<f32>, r_3: vec3<f32>, lobe_1: vec4<f32>) -> f32 {
+fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_20: vec3<f32>, r_3: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
     var local_13: bool;
 
     let _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
@@ -1202,18 +1226,18 @@ fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec
     }
     let _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
-    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_1.z);
-    let _e39 = smith_root(lobe_1.w, lobe_1.z);
-    let spec = (((lobe_1.y * _e33) * 0.25f) / _e39);
-    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_3.z);
+    let _e39 = smith_root(lobe_3.w, lobe_3.z);
+    let spec = (((lobe_3.y * _e33) * 0.25f) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-fn receiver_importance(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, p_4: vec3<f32>, n_21: vec3<f32>, r_4: vec3<f32>, lobe_2: vec4<f32>) -> f32 {
-    if (lobe_2.y <= 0f) {
+fn receiver_importance(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, p_4: vec3<f32>, n_21: vec3<f32>, r_4: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
+    if (lobe_4.y <= 0f) {
         let _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    let _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    let _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1222,14 +1246,14 @@ fn candidate_weight(importance: f32, rt2_5: f32, d2_9: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_4: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_4: f32, rt2_6: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_4: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_4: f32, rt2_6: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
     let v_17 = (p_5 - center_5);
-    if (lobe_3.y <= 0f) {
+    if (lobe_5.y <= 0f) {
         let _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
         return _e19;
     }
-    let _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    let _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     let _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
     return _e22;
 }
@@ -1244,9 +1268,9 @@ fn weighted_select_pdf(w_7: f32, w_sum_2: f32, in_range_1: bool, k_4: u32) -> f3
 }
 
 fn bvh_first_prob(c0_: f32, c1_2: f32) -> f32 {
-    let s_6 = (c0_ + c1_2);
-    if (s_6 > 0f) {
-        return (c0_ / s_6);
+    let s_7 = (c0_ + c1_2);
+    if (s_7 > 0f) {
+        return (c0_ / s_7);
     }
     return -1f;
 }
@@ -1334,8 +1358,8 @@ fn barycentric(p_6: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -
 fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
     var local_15: bool;
 
-    let s_7 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
-    let l2_1 = dot(s_7, s_7);
+    let s_8 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
+    let l2_1 = dot(s_8, s_8);
     if !(!((l2_1 > 0.000000000001f))) {
         local_15 = !((l2_1 < 300000000000000000000000000000000000000f));
     } else {
@@ -1345,7 +1369,7 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>
     if _e24 {
         return facing;
     }
-    let n_30 = (s_7 / vec3(sqrt(l2_1)));
+    let n_30 = (s_8 / vec3(sqrt(l2_1)));
     return select(n_30, -(n_30), (dot(n_30, facing) < 0f));
 }
 
@@ -1362,8 +1386,8 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
         return -1f;
     }
     let inv_1 = (1f / det);
-    let s_8 = (o_1 - a_7);
-    let u_6 = (dot(s_8, p_7) * inv_1);
+    let s_9 = (o_1 - a_7);
+    let u_6 = (dot(s_9, p_7) * inv_1);
     if !((u_6 < 0f)) {
         local_16 = (u_6 > 1f);
     } else {
@@ -1373,7 +1397,7 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
     if _e28 {
         return -1f;
     }
-    let q_5 = cross(s_8, e1_2);
+    let q_5 = cross(s_9, e1_2);
     let v_18 = (dot(d_3, q_5) * inv_1);
     if !((v_18 < 0f)) {
         local_17 = ((u_6 + v_18) > 1f);
@@ -1666,127 +1690,133 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_next_leaf(nodes_3: u32, start_1: u32, x_15: vec3<f32>) -> u32 {
+fn bsh_next_leaf_scaled(nodes_3: u32, start_1: u32, x_15: vec3<f32>, scale_1: f32) -> u32 {
     var i_3: u32;
 
     i_3 = start_1;
     loop {
-        let _e4 = i_3;
-        if (_e4 != BSH_NONE) {
+        let _e5 = i_3;
+        if (_e5 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e7 = i_3;
-            let _e8 = bsh_node(nodes_3, _e7);
-            let _e11 = sphere_contains_point(_e8.center, _e8.radius, x_15);
-            if _e11 {
-                if (_e8.child == BSH_NONE) {
-                    let _e15 = i_3;
-                    return _e15;
+            let _e8 = i_3;
+            let _e9 = bsh_node(nodes_3, _e8);
+            let _e11 = bsh_scaled_radius(_e9, scale_1);
+            let _e12 = sphere_contains_point(_e9.center, _e11, x_15);
+            if _e12 {
+                if (_e9.child == BSH_NONE) {
+                    let _e16 = i_3;
+                    return _e16;
                 }
-                i_3 = _e8.child;
+                i_3 = _e9.child;
             } else {
-                i_3 = _e8.next;
+                i_3 = _e9.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-fn bsh_children_sphere(nodes_4: u32, i_4: u32) -> vec4<f32> {
-    let _e2 = bsh_node(nodes_4, i_4);
-    let _e4 = bsh_node(nodes_4, _e2.child);
-    let _e6 = bsh_node(nodes_4, _e4.next);
+fn bsh_next_leaf(nodes_4: u32, start_2: u32, x_16: vec3<f32>) -> u32 {
+    let _e4 = bsh_next_leaf_scaled(nodes_4, start_2, x_16, 1f);
+    return _e4;
+}
+
+fn bsh_children_sphere(nodes_5: u32, i_4: u32) -> vec4<f32> {
+    let _e2 = bsh_node(nodes_5, i_4);
+    let _e4 = bsh_node(nodes_5, _e2.child);
+    let _e6 = bsh_node(nodes_5, _e4.next);
     let _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
     return _e11;
 }
 
-fn bsh_collect(x_16: vec3<f32>, seed_3: u32) -> Picks {
+fn bsh_collect(x_17: vec3<f32>, scale_2: f32, seed_3: u32) -> Picks {
     var picks: Picks;
     var h_2: u32;
     var i_5: u32;
 
     picks.n = 0u;
     h_2 = seed_3;
-    let _e8 = bsh_first(BSH);
-    let _e9 = bsh_next_leaf(BSH, _e8, x_16);
-    i_5 = _e9;
+    let _e9 = bsh_first(BSH);
+    let _e10 = bsh_next_leaf_scaled(BSH, _e9, x_17, scale_2);
+    i_5 = _e10;
     loop {
-        let _e11 = i_5;
-        if (_e11 != BSH_NONE) {
+        let _e12 = i_5;
+        if (_e12 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e15 = picks.n;
-            let _e16 = reservoir_takes(_e15);
-            if _e16 {
-                let _e18 = picks.n;
-                picks.n = (_e18 + 1u);
-                let _e21 = h_2;
-                let _e22 = pcg_hash(_e21);
-                h_2 = _e22;
+            let _e16 = picks.n;
+            let _e17 = reservoir_takes(_e16);
+            if _e17 {
+                let _e19 = picks.n;
+                picks.n = (_e19 + 1u);
+                let _e22 = h_2;
+                let _e23 = pcg_hash(_e22);
+                h_2 = _e23;
                 let hi_4 = h_2;
-                let _e24 = h_2;
-                let _e25 = pcg_hash(_e24);
-                h_2 = _e25;
-                let _e27 = picks.n;
-                let _e29 = h_2;
-                let _e30 = reservoir_slot(_e27, K, hi_4, _e29);
-                if (_e30 < K) {
-                    let _e36 = i_5;
-                    let _e39 = bsh_nodes[_e36].light;
-                    picks.light[_e30] = _e39;
+                let _e25 = h_2;
+                let _e26 = pcg_hash(_e25);
+                h_2 = _e26;
+                let _e28 = picks.n;
+                let _e30 = h_2;
+                let _e31 = reservoir_slot(_e28, K, hi_4, _e30);
+                if (_e31 < K) {
+                    let _e37 = i_5;
+                    let _e40 = bsh_nodes[_e37].light;
+                    picks.light[_e31] = _e40;
                 }
             }
         }
         continuing {
-            let _e42 = i_5;
-            let _e45 = bsh_nodes[_e42].next;
-            let _e46 = bsh_next_leaf(BSH, _e45, x_16);
-            i_5 = _e46;
+            let _e43 = i_5;
+            let _e46 = bsh_nodes[_e43].next;
+            let _e47 = bsh_next_leaf_scaled(BSH, _e46, x_17, scale_2);
+            i_5 = _e47;
         }
     }
-    let _e47 = picks;
-    return _e47;
+    let _e48 = picks;
+    return _e48;
 }
 
-fn connect(li: u32, x_17: vec3<f32>, n_28: vec3<f32>, ng_2: vec3<f32>, w_res: f32, u1_5: f32, u2_5: f32, eps: f32) -> Connection {
+fn connect(li: u32, x_18: vec3<f32>, n_28: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res: f32, u1_5: f32, u2_5: f32, eps: f32) -> Connection {
     var c_10: Connection;
     var local_23: bool;
 
     c_10.e = vec3(0f);
     let l_8 = lights[li];
-    let _e16 = light_point(l_8, u1_5, u2_5);
-    c_10.y = _e16;
-    let _e19 = c_10.y;
-    let _e22 = r2_7[li];
-    let _e23 = connection_cosine(x_17, _e19, n_28, ng_2, _e22);
-    c_10.cos_x = _e23;
-    let _e25 = c_10.cos_x;
-    if !((_e25 <= 0f)) {
-        let _e34 = c_10.y;
-        let _e35 = occluded((x_17 + (ng_2 * eps)), _e34);
-        local_23 = _e35;
+    let _e17 = light_point(l_8, u1_5, u2_5);
+    c_10.y = _e17;
+    let _e20 = c_10.y;
+    let _e23 = r2_7[li];
+    let _e25 = connection_cosine(x_18, _e20, n_28, ng_2, (s_1 * _e23));
+    c_10.cos_x = _e25;
+    let _e27 = c_10.cos_x;
+    if !((_e27 <= 0f)) {
+        let _e36 = c_10.y;
+        let _e37 = occluded((x_18 + (ng_2 * eps)), _e36);
+        local_23 = _e37;
     } else {
         local_23 = true;
     }
-    let _e37 = local_23;
-    if _e37 {
-        let _e38 = c_10;
-        return _e38;
+    let _e39 = local_23;
+    if _e39 {
+        let _e40 = c_10;
+        return _e40;
     }
-    let _e40 = c_10.y;
-    let v_20 = (x_17 - _e40);
+    let _e42 = c_10.y;
+    let v_20 = (x_18 - _e42);
     let d2_15 = dot(v_20, v_20);
-    let _e47 = light_intensity(l_8, (v_20 / vec3(sqrt(d2_15))));
-    let _e49 = c_10.cos_x;
-    let _e52 = rt2_7[li];
-    let _e53 = connection_factor(_e49, d2_15, _e52, w_res);
-    c_10.e = (_e47 * _e53);
-    let _e55 = c_10;
-    return _e55;
+    let _e49 = light_intensity(l_8, (v_20 / vec3(sqrt(d2_15))));
+    let _e51 = c_10.cos_x;
+    let _e54 = rt2_7[li];
+    let _e56 = connection_factor(_e51, d2_15, (s_1 * _e54), w_res);
+    c_10.e = (_e49 * _e56);
+    let _e58 = c_10;
+    return _e58;
 }
 
 @compute @workgroup_size(64, 1, 1) 
@@ -1805,45 +1835,45 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         irradiance[i_6] = vec4(0f);
         return;
     }
-    let x_18 = p_8.xyz;
+    let x_19 = p_8.xyz;
     let _e19 = normals[i_6];
     let n_31 = _e19.xyz;
     let _e23 = params.seed;
     let _e26 = params.frame;
     let _e27 = point_stream(_e23, i_6, _e26);
-    let _e28 = bsh_collect(x_18, _e27);
-    let _e31 = reservoir_weight(_e28.n, K);
-    let _e32 = pick_stream(_e27);
-    h = _e32;
+    let _e29 = bsh_collect(x_19, 1f, _e27);
+    let _e32 = reservoir_weight(_e29.n, K);
+    let _e33 = pick_stream(_e27);
+    h = _e33;
     loop {
-        let _e39 = s;
-        if (_e39 < min(_e28.n, K)) {
+        let _e40 = s;
+        if (_e40 < min(_e29.n, K)) {
         } else {
             break;
         }
         {
-            let _e44 = h;
-            let _e45 = pcg_hash(_e44);
-            h = _e45;
-            let _e46 = h;
-            let _e47 = xi_from_bits(_e46);
-            let _e48 = h;
-            let _e49 = pcg_hash(_e48);
-            h = _e49;
-            let _e50 = e;
-            let _e52 = s;
-            let _e54 = h;
-            let _e55 = xi_from_bits(_e54);
-            let _e58 = params.eps;
-            let _e59 = connect(_e28.light[_e52], x_18, n_31, n_31, _e31, _e47, _e55, _e58);
-            e = (_e50 + _e59.e);
+            let _e45 = h;
+            let _e46 = pcg_hash(_e45);
+            h = _e46;
+            let _e47 = h;
+            let _e48 = xi_from_bits(_e47);
+            let _e49 = h;
+            let _e50 = pcg_hash(_e49);
+            h = _e50;
+            let _e51 = e;
+            let _e53 = s;
+            let _e56 = h;
+            let _e57 = xi_from_bits(_e56);
+            let _e60 = params.eps;
+            let _e61 = connect(_e29.light[_e53], x_19, n_31, n_31, 1f, _e32, _e48, _e57, _e60);
+            e = (_e51 + _e61.e);
         }
         continuing {
-            let _e63 = s;
-            s = (_e63 + 1u);
+            let _e65 = s;
+            s = (_e65 + 1u);
         }
     }
-    let _e67 = e;
-    irradiance[i_6] = vec4<f32>(_e67, f32(_e28.n));
+    let _e69 = e;
+    irradiance[i_6] = vec4<f32>(_e69, f32(_e29.n));
     return;
 }

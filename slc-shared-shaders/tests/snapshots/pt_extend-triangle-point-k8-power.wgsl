@@ -192,7 +192,7 @@ struct BshNode {
     child: u32,
     next: u32,
     light: u32,
-    pad: u32,
+    extent: f32,
 }
 
 struct GpuLightBvhNode {
@@ -237,6 +237,7 @@ const MIN_D2_: f32 = 0.000000000001f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
+const RANGE_SCALE_MAX: f32 = 64f;
 const LIGHT_BVH_LEAF: u32 = 4294967295u;
 const ONE_MINUS_EPSILON: f32 = 0.99999994f;
 const F32_MAX: f32 = 340282350000000000000000000000000000000f;
@@ -753,6 +754,16 @@ fn ies_light_candela(tab_4: u32, base_3: u32, nadir: vec3<f32>, reference: vec3<
     return _e9;
 }
 
+fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
+    if (scale == 1f) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
 fn mul_hi_u32_(a_4: u32, b_3: u32) -> u32 {
     let a_lo = (a_4 & 65535u);
     let a_hi = (a_4 >> 16u);
@@ -1063,6 +1074,19 @@ fn specular_probability(lobe: vec4<f32>) -> f32 {
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1f, 0.9f);
 }
 
+fn receiver_peak(lobe_1: vec4<f32>) -> f32 {
+    let _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25f) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+fn range_scale(lobe_2: vec4<f32>) -> f32 {
+    if (lobe_2.y <= 0f) {
+        return 1f;
+    }
+    let _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
 fn mirror_dir(n_16: vec3<f32>, v_6: vec3<f32>) -> vec3<f32> {
     return ((n_16 * (2f * dot(n_16, v_6))) - v_6);
 }
@@ -1201,7 +1225,7 @@ fn light_importance(center_2: vec3<f32>, radius_2: f32, phi_1: f32, axis_1: vec3
     return max(_e18, 0f);
 }
 
-fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_20: vec3<f32>, r_3: vec3<f32>, lobe_1: vec4<f32>) -> f32 {
+fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_20: vec3<f32>, r_3: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
     var local_17: bool;
 
     let _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
@@ -1217,18 +1241,18 @@ fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec
     }
     let _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
-    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_1.z);
-    let _e39 = smith_root(lobe_1.w, lobe_1.z);
-    let spec = (((lobe_1.y * _e33) * 0.25f) / _e39);
-    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_3.z);
+    let _e39 = smith_root(lobe_3.w, lobe_3.z);
+    let spec = (((lobe_3.y * _e33) * 0.25f) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-fn receiver_importance(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, p_4: vec3<f32>, n_21: vec3<f32>, r_4: vec3<f32>, lobe_2: vec4<f32>) -> f32 {
-    if (lobe_2.y <= 0f) {
+fn receiver_importance(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, p_4: vec3<f32>, n_21: vec3<f32>, r_4: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
+    if (lobe_4.y <= 0f) {
         let _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    let _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    let _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1237,14 +1261,14 @@ fn candidate_weight(importance: f32, rt2_5: f32, d2_9: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_4: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_4: f32, rt2_6: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_4: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_4: f32, rt2_6: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
     let v_18 = (p_5 - center_5);
-    if (lobe_3.y <= 0f) {
+    if (lobe_5.y <= 0f) {
         let _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_18, v_18));
         return _e19;
     }
-    let _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    let _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     let _e22 = candidate_weight(_e20, rt2_6, dot(v_18, v_18));
     return _e22;
 }
@@ -1664,7 +1688,7 @@ fn trace(o_2: vec3<f32>, d_6: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
-    var node: u32 = 0u;
+    var node_1: u32 = 0u;
     var i_2: u32;
 
     hit.t = t_max_2;
@@ -1675,7 +1699,7 @@ fn trace(o_2: vec3<f32>, d_6: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     }
     let _e14 = ray_inverse3_(d_6);
     loop {
-        let _e21 = node;
+        let _e21 = node_1;
         let n_37 = geo_nodes[_e21];
         let _e27 = hit.t;
         let _e28 = ray_aabb(o_2, _e14, n_37.bmin, n_37.bmax, _e27);
@@ -1716,7 +1740,7 @@ fn trace(o_2: vec3<f32>, d_6: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_37.first;
+                node_1 = n_37.first;
                 continue;
             }
         }
@@ -1728,7 +1752,7 @@ fn trace(o_2: vec3<f32>, d_6: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         sp = (_e75 - 1u);
         let _e78 = sp;
         let _e80 = stack[_e78];
-        node = _e80;
+        node_1 = _e80;
     }
     let _e81 = hit;
     return _e81;
@@ -1750,11 +1774,12 @@ fn mis_weight(pdf_a_2: f32, pdf_b_2: f32) -> f32 {
     return _e2;
 }
 
-fn light_weight(li: u32, x_15: vec3<f32>, n_28: vec3<f32>, r_6: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
+fn light_weight(li: u32, x_15: vec3<f32>, n_28: vec3<f32>, r_6: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
     let c_16 = light_cones[li];
-    let _e16 = rt2_7[li];
-    let _e17 = cone_weight(c_16.center, c_16.radius, c_16.phi, c_16.axis, c_16.cos_o, c_16.cos_e, _e16, x_15, n_28, r_6, lobe_4);
-    return _e17;
+    let _e14 = range_scale(lobe_6);
+    let _e17 = rt2_7[li];
+    let _e19 = cone_weight(c_16.center, c_16.radius, c_16.phi, c_16.axis, c_16.cos_o, c_16.cos_e, (_e14 * _e17), x_15, n_28, r_6, lobe_6);
+    return _e19;
 }
 
 fn light_bvh_node(nodes: u32, i_3: u32) -> GpuLightBvhNode {
@@ -1766,13 +1791,13 @@ fn light_bvh_count(nodes_1: u32) -> u32 {
     return arrayLength((&light_bvh));
 }
 
-fn bvh_importance(nodes_2: u32, i_4: u32, x_16: vec3<f32>, n_29: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
+fn bvh_importance(nodes_2: u32, i_4: u32, x_16: vec3<f32>, n_29: vec3<f32>, r_7: vec3<f32>, lobe_7: vec4<f32>) -> f32 {
     let _e6 = light_bvh_node(nodes_2, i_4);
-    let _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_16, n_29, r_7, lobe_5);
+    let _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_16, n_29, r_7, lobe_7);
     return _e13;
 }
 
-fn bvh_first(nodes_3: u32, i_5: u32, x_17: vec3<f32>, n_30: vec3<f32>, r_8: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
+fn bvh_first(nodes_3: u32, i_5: u32, x_17: vec3<f32>, n_30: vec3<f32>, r_8: vec3<f32>, lobe_8: vec4<f32>) -> f32 {
     var local_27: bool;
 
     let _e6 = light_bvh_node(nodes_3, i_5);
@@ -1787,8 +1812,8 @@ fn bvh_first(nodes_3: u32, i_5: u32, x_17: vec3<f32>, n_30: vec3<f32>, r_8: vec3
     if _e17 {
         return -1f;
     }
-    let _e21 = bvh_importance(nodes_3, (i_5 + 1u), x_17, n_30, r_8, lobe_6);
-    let _e22 = bvh_importance(nodes_3, j, x_17, n_30, r_8, lobe_6);
+    let _e21 = bvh_importance(nodes_3, (i_5 + 1u), x_17, n_30, r_8, lobe_8);
+    let _e22 = bvh_importance(nodes_3, j, x_17, n_30, r_8, lobe_8);
     let _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -1797,7 +1822,7 @@ fn bvh_pick_none() -> BvhPick {
     return BvhPick(0u, 0f);
 }
 
-fn light_bvh_sample(nodes_4: u32, x_18: vec3<f32>, n_31: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, u_in: f32) -> BvhPick {
+fn light_bvh_sample(nodes_4: u32, x_18: vec3<f32>, n_31: vec3<f32>, r_9: vec3<f32>, lobe_9: vec4<f32>, u_in: f32) -> BvhPick {
     var pick: BvhPick;
     var u_6: f32;
     var i_6: u32 = 0u;
@@ -1820,7 +1845,7 @@ fn light_bvh_sample(nodes_4: u32, x_18: vec3<f32>, n_31: vec3<f32>, r_9: vec3<f3
             if (_e17.second == LIGHT_BVH_LEAF) {
                 let _e21 = i_6;
                 if !((_e21 > 0u)) {
-                    let _e28 = bvh_importance(nodes_4, 0u, x_18, n_31, r_9, lobe_7);
+                    let _e28 = bvh_importance(nodes_4, 0u, x_18, n_31, r_9, lobe_9);
                     local_28 = (_e28 > 0f);
                 } else {
                     local_28 = true;
@@ -1835,7 +1860,7 @@ fn light_bvh_sample(nodes_4: u32, x_18: vec3<f32>, n_31: vec3<f32>, r_9: vec3<f3
                 return _e37;
             }
             let _e38 = i_6;
-            let _e39 = bvh_first(nodes_4, _e38, x_18, n_31, r_9, lobe_7);
+            let _e39 = bvh_first(nodes_4, _e38, x_18, n_31, r_9, lobe_9);
             if (_e39 < 0f) {
                 let _e42 = pick;
                 return _e42;
@@ -1855,7 +1880,7 @@ fn light_bvh_sample(nodes_4: u32, x_18: vec3<f32>, n_31: vec3<f32>, r_9: vec3<f3
     return _e57;
 }
 
-fn light_bvh_pmf(nodes_5: u32, leaf: u32, x_19: vec3<f32>, n_32: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>) -> f32 {
+fn light_bvh_pmf(nodes_5: u32, leaf: u32, x_19: vec3<f32>, n_32: vec3<f32>, r_10: vec3<f32>, lobe_10: vec4<f32>) -> f32 {
     var i_7: u32 = 0u;
     var pmf_1: f32 = 1f;
     var local_29: bool;
@@ -1880,7 +1905,7 @@ fn light_bvh_pmf(nodes_5: u32, leaf: u32, x_19: vec3<f32>, n_32: vec3<f32>, r_10
                 if (_e21 == leaf) {
                     let _e25 = i_7;
                     if !((_e25 > 0u)) {
-                        let _e32 = bvh_importance(nodes_5, 0u, x_19, n_32, r_10, lobe_8);
+                        let _e32 = bvh_importance(nodes_5, 0u, x_19, n_32, r_10, lobe_10);
                         local_30 = (_e32 > 0f);
                     } else {
                         local_30 = true;
@@ -1898,7 +1923,7 @@ fn light_bvh_pmf(nodes_5: u32, leaf: u32, x_19: vec3<f32>, n_32: vec3<f32>, r_10
                 return 0f;
             }
             let _e41 = i_7;
-            let _e42 = bvh_first(nodes_5, _e41, x_19, n_32, r_10, lobe_8);
+            let _e42 = bvh_first(nodes_5, _e41, x_19, n_32, r_10, lobe_10);
             if (_e42 < 0f) {
                 return 0f;
             }
@@ -1912,22 +1937,23 @@ fn light_bvh_pmf(nodes_5: u32, leaf: u32, x_19: vec3<f32>, n_32: vec3<f32>, r_10
     return 0f;
 }
 
-fn select_pdf(li_1: u32, x_20: vec3<f32>, n_33: vec3<f32>, r_11: vec3<f32>, lobe_9: vec4<f32>, nee: u32, in_range_2: bool) -> f32 {
+fn select_pdf(li_1: u32, x_20: vec3<f32>, n_33: vec3<f32>, r_11: vec3<f32>, lobe_11: vec4<f32>, nee: u32, in_range_2: bool) -> f32 {
     let _e8 = reservoir_select_pdf(nee, in_range_2, K);
     return _e8;
 }
 
-fn light_pdf(li_2: u32, x_21: vec3<f32>, n_34: vec3<f32>, r_12: vec3<f32>, lobe_10: vec4<f32>, y_3: vec3<f32>, nee_1: u32, in_range_3: bool) -> f32 {
+fn light_pdf(li_2: u32, x_21: vec3<f32>, n_34: vec3<f32>, r_12: vec3<f32>, lobe_12: vec4<f32>, y_3: vec3<f32>, nee_1: u32, in_range_3: bool) -> f32 {
     let l_8 = lights[li_2];
     let v_21 = (x_21 - y_3);
     let d2_15 = dot(v_21, v_21);
     let _e13 = light_normal(l_8);
     let cos_y_1 = select(0f, dot(_e13, (v_21 / vec3(sqrt(d2_15)))), (d2_15 > 0f));
-    let _e22 = select_pdf(li_2, x_21, n_34, r_12, lobe_10, nee_1, in_range_3);
-    let _e25 = rt2_7[li_2];
-    let _e26 = light_area(l_8);
-    let _e27 = light_strategy_pdf(_e22, _e25, d2_15, _e26, cos_y_1);
-    return _e27;
+    let _e22 = select_pdf(li_2, x_21, n_34, r_12, lobe_12, nee_1, in_range_3);
+    let _e23 = range_scale(lobe_12);
+    let _e26 = rt2_7[li_2];
+    let _e28 = light_area(l_8);
+    let _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_15, _e28, cos_y_1);
+    return _e29;
 }
 
 fn next_uniform(state: ptr<function, u32>) -> f32 {
@@ -2034,108 +2060,111 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         if (_e161 > 0f) {
             let _e168 = light_leaf[tri.light];
             let leaf_1 = bsh_nodes[_e168];
-            let _e174 = st.prev;
-            let _e175 = sphere_contains_point(leaf_1.center, leaf_1.radius, _e174);
-            let _e177 = st.pdf_bsdf;
-            let _e180 = st.prev;
-            let _e182 = st.prev_normal;
-            let _e184 = st.prev_r;
-            let _e186 = st.prev_lobe;
-            let _e189 = candidates[i_8];
-            let _e190 = light_pdf(tri.light, _e180, _e182, _e184, _e186, x_22, _e189, _e175);
-            let _e191 = mis_weight(_e177, _e190);
-            w = _e191;
+            let _e173 = st.prev_lobe;
+            let _e174 = range_scale(_e173);
+            let _e176 = bsh_scaled_radius(leaf_1, sqrt(_e174));
+            let _e178 = st.prev;
+            let _e179 = sphere_contains_point(leaf_1.center, _e176, _e178);
+            let _e181 = st.pdf_bsdf;
+            let _e184 = st.prev;
+            let _e186 = st.prev_normal;
+            let _e188 = st.prev_r;
+            let _e190 = st.prev_lobe;
+            let _e193 = candidates[i_8];
+            let _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_22, _e193, _e179);
+            let _e195 = mis_weight(_e181, _e194);
+            w = _e195;
         }
-        let _e193 = st.beta;
-        let _e198 = lights[tri.light].intensity;
-        let _e200 = w;
-        let add = ((_e193 * _e198) * _e200);
-        let _e202 = finite3_(add);
-        if _e202 {
-            let _e205 = radiance[i_8];
-            radiance[i_8] = (_e205 + vec4<f32>(add, 0f));
+        let _e197 = st.beta;
+        let _e202 = lights[tri.light].intensity;
+        let _e204 = w;
+        let add = ((_e197 * _e202) * _e204);
+        let _e206 = finite3_(add);
+        if _e206 {
+            let _e209 = radiance[i_8];
+            radiance[i_8] = (_e209 + vec4<f32>(add, 0f));
         }
     }
     let m_3 = materials[tri.material];
-    let _e214 = st.dir;
-    let wo_1 = -(_e214);
-    let _e222 = receiver_lobe(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, dot(_e147, wo_1));
+    let _e218 = st.dir;
+    let wo_1 = -(_e218);
+    let _e226 = receiver_lobe(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, dot(_e147, wo_1));
     v.position = x_22;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    let _e230 = st.beta;
-    v.weight = _e230;
+    let _e234 = st.beta;
+    v.weight = _e234;
     v.wo = wo_1;
     v.alive = 1u;
-    let _e236 = v;
-    vertices[i_8] = _e236;
-    let _e238 = st.rng;
-    rng = _e238;
-    let _e240 = next_uniform((&rng));
-    let _e241 = next_uniform((&rng));
-    let _e242 = specular_probability(_e222);
-    let _e244 = bsdf_sample(_e147, wo_1, m_3.alpha, _e242, _e240, _e241);
-    let _e246 = bsdf_pdf(_e147, wo_1, _e244, m_3.alpha, _e242);
-    let _e250 = has_specular(m_3.metallic, m_3.f0_, m_3.f90_);
-    if _e250 {
-        let _e252 = st.beta;
-        let _e258 = brdf_eval(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, _e147, wo_1, _e244);
-        st.beta = (_e252 * (_e258 * (dot(_e244, _e147) / _e246)));
+    let _e240 = v;
+    vertices[i_8] = _e240;
+    let _e242 = st.rng;
+    rng = _e242;
+    let _e244 = next_uniform((&rng));
+    let _e245 = next_uniform((&rng));
+    let _e246 = specular_probability(_e226);
+    let _e248 = bsdf_sample(_e147, wo_1, m_3.alpha, _e246, _e244, _e245);
+    let _e250 = bsdf_pdf(_e147, wo_1, _e248, m_3.alpha, _e246);
+    let _e254 = has_specular(m_3.metallic, m_3.f0_, m_3.f90_);
+    if _e254 {
+        let _e256 = st.beta;
+        let _e262 = brdf_eval(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, _e147, wo_1, _e248);
+        st.beta = (_e256 * (_e262 * (dot(_e248, _e147) / _e250)));
     } else {
-        let _e264 = st.beta;
-        st.beta = (_e264 * m_3.albedo);
+        let _e268 = st.beta;
+        st.beta = (_e268 * m_3.albedo);
     }
     st.prev = x_22;
     st.prev_normal = _e147;
-    let _e270 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e270;
-    st.prev_lobe = _e222;
-    st.pdf_bsdf = _e246;
-    let _e276 = params.eps;
-    st.origin = (x_22 + (_e123 * _e276));
-    st.dir = _e244;
-    let _e280 = continues_path(_e244, _e147, _e123);
-    if !(!(_e280)) {
-        local_1 = !((_e246 > 0f));
+    let _e274 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e274;
+    st.prev_lobe = _e226;
+    st.pdf_bsdf = _e250;
+    let _e280 = params.eps;
+    st.origin = (x_22 + (_e123 * _e280));
+    st.dir = _e248;
+    let _e284 = continues_path(_e248, _e147, _e123);
+    if !(!(_e284)) {
+        local_1 = !((_e250 > 0f));
     } else {
         local_1 = true;
     }
-    let _e289 = local_1;
-    if !(_e289) {
-        let _e295 = params.depth;
-        let _e300 = params.max_depth;
-        local_2 = ((_e295 + 1u) >= _e300);
+    let _e293 = local_1;
+    if !(_e293) {
+        let _e299 = params.depth;
+        let _e304 = params.max_depth;
+        local_2 = ((_e299 + 1u) >= _e304);
     } else {
         local_2 = true;
     }
-    let _e303 = local_2;
-    if _e303 {
+    let _e307 = local_2;
+    if _e307 {
         st.alive = 0u;
     }
-    let _e308 = params.depth;
-    let _e309 = plays_roulette(_e308);
-    if _e309 {
-        let _e313 = st.alive;
-        local_3 = (_e313 == 1u);
+    let _e312 = params.depth;
+    let _e313 = plays_roulette(_e312);
+    if _e313 {
+        let _e317 = st.alive;
+        local_3 = (_e317 == 1u);
     } else {
         local_3 = false;
     }
-    let _e317 = local_3;
-    if _e317 {
-        let _e319 = st.beta;
-        let _e320 = path_survival(_e319);
-        let _e321 = next_uniform((&rng));
-        if (_e321 >= _e320) {
+    let _e321 = local_3;
+    if _e321 {
+        let _e323 = st.beta;
+        let _e324 = path_survival(_e323);
+        let _e325 = next_uniform((&rng));
+        if (_e325 >= _e324) {
             st.alive = 0u;
         } else {
-            let _e326 = st.beta;
-            st.beta = (_e326 / vec3(_e320));
+            let _e330 = st.beta;
+            st.beta = (_e330 / vec3(_e324));
         }
     }
-    let _e330 = rng;
-    st.rng = _e330;
-    let _e333 = st;
-    paths[i_8] = _e333;
+    let _e334 = rng;
+    st.rng = _e334;
+    let _e337 = st;
+    paths[i_8] = _e337;
     return;
 }

@@ -192,7 +192,7 @@ struct BshNode {
     child: u32,
     next: u32,
     light: u32,
-    pad: u32,
+    extent: f32,
 }
 
 struct GpuLightBvhNode {
@@ -232,6 +232,7 @@ const MIN_D2_: f32 = 0.000000000001f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
+const RANGE_SCALE_MAX: f32 = 64f;
 const LIGHT_BVH_LEAF: u32 = 4294967295u;
 const ONE_MINUS_EPSILON: f32 = 0.99999994f;
 const F32_MAX: f32 = 340282350000000000000000000000000000000f;
@@ -737,6 +738,16 @@ fn ies_light_candela(tab_4: u32, base_3: u32, nadir: vec3<f32>, reference: vec3<
     return _e9;
 }
 
+fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
+    if (scale == 1f) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
 fn mul_hi_u32_(a_4: u32, b_3: u32) -> u32 {
     let a_lo = (a_4 & 65535u);
     let a_hi = (a_4 >> 16u);
@@ -1047,6 +1058,19 @@ fn specular_probability(lobe: vec4<f32>) -> f32 {
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1f, 0.9f);
 }
 
+fn receiver_peak(lobe_1: vec4<f32>) -> f32 {
+    let _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25f) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+fn range_scale(lobe_2: vec4<f32>) -> f32 {
+    if (lobe_2.y <= 0f) {
+        return 1f;
+    }
+    let _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
 fn mirror_dir(n_16: vec3<f32>, v_5: vec3<f32>) -> vec3<f32> {
     return ((n_16 * (2f * dot(n_16, v_5))) - v_5);
 }
@@ -1185,7 +1209,7 @@ fn light_importance(center_2: vec3<f32>, radius_2: f32, phi_1: f32, axis_1: vec3
     return max(_e18, 0f);
 }
 
-fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_20: vec3<f32>, r_3: vec3<f32>, lobe_1: vec4<f32>) -> f32 {
+fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_20: vec3<f32>, r_3: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
     var local_16: bool;
 
     let _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
@@ -1201,18 +1225,18 @@ fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec
     }
     let _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
-    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_1.z);
-    let _e39 = smith_root(lobe_1.w, lobe_1.z);
-    let spec = (((lobe_1.y * _e33) * 0.25f) / _e39);
-    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_3.z);
+    let _e39 = smith_root(lobe_3.w, lobe_3.z);
+    let spec = (((lobe_3.y * _e33) * 0.25f) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-fn receiver_importance(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, p_4: vec3<f32>, n_21: vec3<f32>, r_4: vec3<f32>, lobe_2: vec4<f32>) -> f32 {
-    if (lobe_2.y <= 0f) {
+fn receiver_importance(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, p_4: vec3<f32>, n_21: vec3<f32>, r_4: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
+    if (lobe_4.y <= 0f) {
         let _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    let _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    let _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1221,14 +1245,14 @@ fn candidate_weight(importance: f32, rt2_5: f32, d2_9: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_4: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_4: f32, rt2_6: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_4: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_4: f32, rt2_6: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
     let v_17 = (p_5 - center_5);
-    if (lobe_3.y <= 0f) {
+    if (lobe_5.y <= 0f) {
         let _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
         return _e19;
     }
-    let _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    let _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     let _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
     return _e22;
 }

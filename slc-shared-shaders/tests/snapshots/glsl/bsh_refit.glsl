@@ -179,7 +179,7 @@ struct BshNode {
     uint child;
     uint next;
     uint light;
-    uint pad;
+    float extent;
 };
 struct GpuLightBvhNode {
     vec3 center;
@@ -212,6 +212,7 @@ const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
 const uint LIGHT_BVH_LEAF = 4294967295u;
 const float ONE_MINUS_EPSILON = 0.99999994;
 const float F32_MAX = 3.4028235e38;
@@ -603,6 +604,16 @@ float ies_lerp_t(float a0_, float a1_, float x_8) {
     return clamp(((x_8 - a0_) / (a1_ - a0_)), 0.0, 1.0);
 }
 
+float bsh_scaled_radius(BshNode node, float scale) {
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3) {
     uint a_lo = (a_4 & 65535u);
     uint a_hi = (a_4 >> 16u);
@@ -907,6 +918,19 @@ float specular_probability(vec4 lobe) {
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
+float receiver_peak(vec4 lobe_1) {
+    float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+float range_scale(vec4 lobe_2) {
+    if ((lobe_2.y <= 0.0)) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
 vec3 mirror_dir(vec3 n_16, vec3 v_5) {
     return ((n_16 * (2.0 * dot(n_16, v_5))) - v_5);
 }
@@ -1043,7 +1067,7 @@ float light_importance(vec3 center_2, float radius_2, float phi_1, vec3 axis_1, 
     return max(_e18, 0.0);
 }
 
-float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_20, vec3 r_3, vec4 lobe_1) {
+float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_20, vec3 r_3, vec4 lobe_3) {
     bool local_13 = false;
     float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
     float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_20);
@@ -1058,18 +1082,18 @@ float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2,
     }
     float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
-    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_1.z);
-    float _e39 = smith_root(lobe_1.w, lobe_1.z);
-    float spec = (((lobe_1.y * _e33) * 0.25) / _e39);
-    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
+    float _e39 = smith_root(lobe_3.w, lobe_3.z);
+    float spec = (((lobe_3.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-float receiver_importance(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, vec3 p_4, vec3 n_21, vec3 r_4, vec4 lobe_2) {
-    if ((lobe_2.y <= 0.0)) {
+float receiver_importance(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, vec3 p_4, vec3 n_21, vec3 r_4, vec4 lobe_4) {
+    if ((lobe_4.y <= 0.0)) {
         float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1078,14 +1102,14 @@ float candidate_weight(float importance, float rt2_5, float d2_9) {
     return (importance * _e3);
 }
 
-float cone_weight(vec3 center_5, float radius_5, float phi_4, vec3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, vec3 p_5, vec3 n_22, vec3 r_5, vec4 lobe_3) {
+float cone_weight(vec3 center_5, float radius_5, float phi_4, vec3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, vec3 p_5, vec3 n_22, vec3 r_5, vec4 lobe_5) {
     vec3 v_17 = (p_5 - center_5);
-    if ((lobe_3.y <= 0.0)) {
+    if ((lobe_5.y <= 0.0)) {
         float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         float _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
         return _e19;
     }
-    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     float _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
     return _e22;
 }
@@ -1461,37 +1485,43 @@ BshNode bsh_node(uint nodes, uint i_2) {
     return _e4;
 }
 
-uint bsh_next_leaf(uint nodes_3, uint start_1, vec3 x_15) {
+uint bsh_next_leaf_scaled(uint nodes_3, uint start_1, vec3 x_15, float scale_1) {
     uint i_3 = 0u;
     i_3 = start_1;
     while(true) {
-        uint _e4 = i_3;
-        if ((_e4 != BSH_NONE)) {
+        uint _e5 = i_3;
+        if ((_e5 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e7 = i_3;
-            BshNode _e8 = bsh_node(nodes_3, _e7);
-            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_15);
-            if (_e11) {
-                if ((_e8.child == BSH_NONE)) {
-                    uint _e15 = i_3;
-                    return _e15;
+            uint _e8 = i_3;
+            BshNode _e9 = bsh_node(nodes_3, _e8);
+            float _e11 = bsh_scaled_radius(_e9, scale_1);
+            bool _e12 = sphere_contains_point(_e9.center, _e11, x_15);
+            if (_e12) {
+                if ((_e9.child == BSH_NONE)) {
+                    uint _e16 = i_3;
+                    return _e16;
                 }
-                i_3 = _e8.child;
+                i_3 = _e9.child;
             } else {
-                i_3 = _e8.next;
+                i_3 = _e9.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-vec4 bsh_children_sphere(uint nodes_4, uint i_4) {
-    BshNode _e2 = bsh_node(nodes_4, i_4);
-    BshNode _e4 = bsh_node(nodes_4, _e2.child);
-    BshNode _e6 = bsh_node(nodes_4, _e4.next);
+uint bsh_next_leaf(uint nodes_4, uint start_2, vec3 x_16) {
+    uint _e4 = bsh_next_leaf_scaled(nodes_4, start_2, x_16, 1.0);
+    return _e4;
+}
+
+vec4 bsh_children_sphere(uint nodes_5, uint i_4) {
+    BshNode _e2 = bsh_node(nodes_5, i_4);
+    BshNode _e4 = bsh_node(nodes_5, _e2.child);
+    BshNode _e6 = bsh_node(nodes_5, _e4.next);
     vec4 _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
     return _e11;
 }
@@ -1504,10 +1534,10 @@ void main() {
     }
     uint _e9 = _group_0_binding_0_cs.first;
     uint i_5 = _group_0_binding_1_cs[(_e9 + gid.x)];
-    BshNode node = _group_0_binding_4_cs[i_5];
-    if ((node.child == BSH_NONE)) {
-        float _e26 = _group_0_binding_2_cs[node.light];
-        float _e30 = _group_0_binding_3_cs[node.light];
+    BshNode node_1 = _group_0_binding_4_cs[i_5];
+    if ((node_1.child == BSH_NONE)) {
+        float _e26 = _group_0_binding_2_cs[node_1.light];
+        float _e30 = _group_0_binding_3_cs[node_1.light];
         float _e31 = range_radius(_e26, _e30);
         _group_0_binding_4_cs[i_5].radius = _e31;
         return;

@@ -179,7 +179,7 @@ struct BshNode {
     uint child;
     uint next;
     uint light;
-    uint pad;
+    float extent;
 };
 struct GpuLightBvhNode {
     vec3 center;
@@ -225,6 +225,7 @@ const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
 const uint LIGHT_BVH_LEAF = 4294967295u;
 const float ONE_MINUS_EPSILON = 0.99999994;
 const float F32_MAX = 3.4028235e38;
@@ -722,6 +723,16 @@ float ies_light_candela(uint tab_4, uint base_3, vec3 nadir, vec3 reference, vec
     return _e9;
 }
 
+float bsh_scaled_radius(BshNode node, float scale) {
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3) {
     uint a_lo = (a_4 & 65535u);
     uint a_hi = (a_4 >> 16u);
@@ -804,20 +815,20 @@ uint uniform_light(float u_3, uint n_8) {
 }
 
 float mis_balance(float pdf_a, float pdf_b) {
-    float s_1 = (pdf_a + pdf_b);
-    if ((s_1 <= 0.0)) {
+    float s_2 = (pdf_a + pdf_b);
+    if ((s_2 <= 0.0)) {
         return 0.0;
     }
-    return (pdf_a / s_1);
+    return (pdf_a / s_2);
 }
 
 float mis_power(float pdf_a_1, float pdf_b_1) {
     float a2_ = (pdf_a_1 * pdf_a_1);
-    float s_2 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if ((s_2 <= 0.0)) {
+    float s_3 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_3 <= 0.0)) {
         return 0.0;
     }
-    return (a2_ / s_2);
+    return (a2_ / s_3);
 }
 
 float light_strategy_pdf(float select, float rt2_4, float d2_8, float area_1, float cos_y) {
@@ -852,15 +863,15 @@ float cosine_pdf(float cos_theta_1) {
 }
 
 vec3 onb_tangent(vec3 n_9) {
-    float s_3 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_3 + n_9.z));
-    return vec3((1.0 + (((s_3 * n_9.x) * n_9.x) * a_12)), (((s_3 * n_9.x) * n_9.y) * a_12), (-(s_3) * n_9.x));
+    float s_4 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_4 + n_9.z));
+    return vec3((1.0 + (((s_4 * n_9.x) * n_9.x) * a_12)), (((s_4 * n_9.x) * n_9.y) * a_12), (-(s_4) * n_9.x));
 }
 
 vec3 onb_bitangent(vec3 n_10) {
-    float s_4 = ((n_10.z >= 0.0) ? 1.0 : -1.0);
-    float a_13 = (-1.0 / (s_4 + n_10.z));
-    return vec3(((n_10.x * n_10.y) * a_13), (s_4 + ((n_10.y * n_10.y) * a_13)), -(n_10.y));
+    float s_5 = ((n_10.z >= 0.0) ? 1.0 : -1.0);
+    float a_13 = (-1.0 / (s_5 + n_10.z));
+    return vec3(((n_10.x * n_10.y) * a_13), (s_5 + ((n_10.y * n_10.y) * a_13)), -(n_10.y));
 }
 
 vec3 onb_to_world(vec3 n_11, vec3 d) {
@@ -1026,15 +1037,28 @@ float specular_probability(vec4 lobe) {
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
+float receiver_peak(vec4 lobe_1) {
+    float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+float range_scale(vec4 lobe_2) {
+    if ((lobe_2.y <= 0.0)) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
 vec3 mirror_dir(vec3 n_16, vec3 v_5) {
     return ((n_16 * (2.0 * dot(n_16, v_5))) - v_5);
 }
 
 float bounded_vndf_k(vec3 wi, float alpha_6) {
     float a_14 = clamp(alpha_6, 0.0, 1.0);
-    float s_5 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    float s_6 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
     float a2_3 = (a_14 * a_14);
-    float s2_ = (s_5 * s_5);
+    float s2_ = (s_6 * s_6);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
@@ -1162,7 +1186,7 @@ float light_importance(vec3 center_2, float radius_2, float phi_1, vec3 axis_1, 
     return max(_e18, 0.0);
 }
 
-float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_20, vec3 r_3, vec4 lobe_1) {
+float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_20, vec3 r_3, vec4 lobe_3) {
     bool local_13 = false;
     float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
     float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_20);
@@ -1177,18 +1201,18 @@ float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2,
     }
     float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
-    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_1.z);
-    float _e39 = smith_root(lobe_1.w, lobe_1.z);
-    float spec = (((lobe_1.y * _e33) * 0.25) / _e39);
-    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
+    float _e39 = smith_root(lobe_3.w, lobe_3.z);
+    float spec = (((lobe_3.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-float receiver_importance(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, vec3 p_4, vec3 n_21, vec3 r_4, vec4 lobe_2) {
-    if ((lobe_2.y <= 0.0)) {
+float receiver_importance(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, vec3 p_4, vec3 n_21, vec3 r_4, vec4 lobe_4) {
+    if ((lobe_4.y <= 0.0)) {
         float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1197,14 +1221,14 @@ float candidate_weight(float importance, float rt2_5, float d2_9) {
     return (importance * _e3);
 }
 
-float cone_weight(vec3 center_5, float radius_5, float phi_4, vec3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, vec3 p_5, vec3 n_22, vec3 r_5, vec4 lobe_3) {
+float cone_weight(vec3 center_5, float radius_5, float phi_4, vec3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, vec3 p_5, vec3 n_22, vec3 r_5, vec4 lobe_5) {
     vec3 v_17 = (p_5 - center_5);
-    if ((lobe_3.y <= 0.0)) {
+    if ((lobe_5.y <= 0.0)) {
         float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         float _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
         return _e19;
     }
-    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     float _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
     return _e22;
 }
@@ -1219,9 +1243,9 @@ float weighted_select_pdf(float w_7, float w_sum_2, bool in_range_1, uint k_4) {
 }
 
 float bvh_first_prob(float c0_, float c1_2) {
-    float s_6 = (c0_ + c1_2);
-    if ((s_6 > 0.0)) {
-        return (c0_ / s_6);
+    float s_7 = (c0_ + c1_2);
+    if ((s_7 > 0.0)) {
+        return (c0_ / s_7);
     }
     return -1.0;
 }
@@ -1307,8 +1331,8 @@ vec3 barycentric(vec3 p_6, vec3 a_6, vec3 b_5, vec3 c_8) {
 
 vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_8, vec3 facing) {
     bool local_15 = false;
-    vec3 s_7 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
-    float l2_1 = dot(s_7, s_7);
+    vec3 s_8 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
+    float l2_1 = dot(s_8, s_8);
     if (!(!((l2_1 > 1e-12)))) {
         local_15 = !((l2_1 < 3e38));
     } else {
@@ -1318,7 +1342,7 @@ vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_8, vec3 facing) {
     if (_e24) {
         return facing;
     }
-    vec3 n_30 = (s_7 / vec3(sqrt(l2_1)));
+    vec3 n_30 = (s_8 / vec3(sqrt(l2_1)));
     return ((dot(n_30, facing) < 0.0) ? -(n_30) : n_30);
 }
 
@@ -1334,8 +1358,8 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_7, vec3 b_6, vec3 c_9, float t_min
         return -1.0;
     }
     float inv_1 = (1.0 / det);
-    vec3 s_8 = (o_1 - a_7);
-    float u_6 = (dot(s_8, p_7) * inv_1);
+    vec3 s_9 = (o_1 - a_7);
+    float u_6 = (dot(s_9, p_7) * inv_1);
     if (!((u_6 < 0.0))) {
         local_16 = (u_6 > 1.0);
     } else {
@@ -1345,7 +1369,7 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_7, vec3 b_6, vec3 c_9, float t_min
     if (_e28) {
         return -1.0;
     }
-    vec3 q_5 = cross(s_8, e1_2);
+    vec3 q_5 = cross(s_9, e1_2);
     float v_18 = (dot(d_3, q_5) * inv_1);
     if (!((v_18 < 0.0))) {
         local_17 = ((u_6 + v_18) > 1.0);
@@ -1610,7 +1634,7 @@ GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
-    uint node = 0u;
+    uint node_1 = 0u;
     uint i_2 = 0u;
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -1620,7 +1644,7 @@ GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
     }
     vec3 _e14 = ray_inverse3_(d_6);
     while(true) {
-        uint _e21 = node;
+        uint _e21 = node_1;
         GpuGeoNode n_31 = _group_0_binding_7_cs[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_31.bmin, n_31.bmax, _e27);
@@ -1663,7 +1687,7 @@ GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_31.first;
+                node_1 = n_31.first;
                 continue;
             }
         }
@@ -1675,7 +1699,7 @@ GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[_e78];
-        node = _e80;
+        node_1 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -1709,126 +1733,132 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-uint bsh_next_leaf(uint nodes_3, uint start_1, vec3 x_15) {
+uint bsh_next_leaf_scaled(uint nodes_3, uint start_1, vec3 x_15, float scale_1) {
     uint i_4 = 0u;
     i_4 = start_1;
     while(true) {
-        uint _e4 = i_4;
-        if ((_e4 != BSH_NONE)) {
+        uint _e5 = i_4;
+        if ((_e5 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e7 = i_4;
-            BshNode _e8 = bsh_node(nodes_3, _e7);
-            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_15);
-            if (_e11) {
-                if ((_e8.child == BSH_NONE)) {
-                    uint _e15 = i_4;
-                    return _e15;
+            uint _e8 = i_4;
+            BshNode _e9 = bsh_node(nodes_3, _e8);
+            float _e11 = bsh_scaled_radius(_e9, scale_1);
+            bool _e12 = sphere_contains_point(_e9.center, _e11, x_15);
+            if (_e12) {
+                if ((_e9.child == BSH_NONE)) {
+                    uint _e16 = i_4;
+                    return _e16;
                 }
-                i_4 = _e8.child;
+                i_4 = _e9.child;
             } else {
-                i_4 = _e8.next;
+                i_4 = _e9.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-vec4 bsh_children_sphere(uint nodes_4, uint i_5) {
-    BshNode _e2 = bsh_node(nodes_4, i_5);
-    BshNode _e4 = bsh_node(nodes_4, _e2.child);
-    BshNode _e6 = bsh_node(nodes_4, _e4.next);
+uint bsh_next_leaf(uint nodes_4, uint start_2, vec3 x_16) {
+    uint _e4 = bsh_next_leaf_scaled(nodes_4, start_2, x_16, 1.0);
+    return _e4;
+}
+
+vec4 bsh_children_sphere(uint nodes_5, uint i_5) {
+    BshNode _e2 = bsh_node(nodes_5, i_5);
+    BshNode _e4 = bsh_node(nodes_5, _e2.child);
+    BshNode _e6 = bsh_node(nodes_5, _e4.next);
     vec4 _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
     return _e11;
 }
 
-Picks bsh_collect(vec3 x_16, uint seed_3) {
+Picks bsh_collect(vec3 x_17, float scale_2, uint seed_3) {
     Picks picks = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_2 = 0u;
     uint i_6 = 0u;
     picks.n = 0u;
     h_2 = seed_3;
-    uint _e8 = bsh_first(BSH);
-    uint _e9 = bsh_next_leaf(BSH, _e8, x_16);
-    i_6 = _e9;
+    uint _e9 = bsh_first(BSH);
+    uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_17, scale_2);
+    i_6 = _e10;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e42 = i_6;
-            uint _e45 = _group_0_binding_6_cs[_e42].next;
-            uint _e46 = bsh_next_leaf(BSH, _e45, x_16);
-            i_6 = _e46;
+            uint _e43 = i_6;
+            uint _e46 = _group_0_binding_6_cs[_e43].next;
+            uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_17, scale_2);
+            i_6 = _e47;
         }
         loop_init_1 = false;
-        uint _e11 = i_6;
-        if ((_e11 != BSH_NONE)) {
+        uint _e12 = i_6;
+        if ((_e12 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e15 = picks.n;
-            bool _e16 = reservoir_takes(_e15);
-            if (_e16) {
-                uint _e18 = picks.n;
-                picks.n = (_e18 + 1u);
-                uint _e21 = h_2;
-                uint _e22 = pcg_hash(_e21);
-                h_2 = _e22;
+            uint _e16 = picks.n;
+            bool _e17 = reservoir_takes(_e16);
+            if (_e17) {
+                uint _e19 = picks.n;
+                picks.n = (_e19 + 1u);
+                uint _e22 = h_2;
+                uint _e23 = pcg_hash(_e22);
+                h_2 = _e23;
                 uint hi_4 = h_2;
-                uint _e24 = h_2;
-                uint _e25 = pcg_hash(_e24);
-                h_2 = _e25;
-                uint _e27 = picks.n;
-                uint _e29 = h_2;
-                uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
-                if ((_e30 < K)) {
-                    uint _e36 = i_6;
-                    uint _e39 = _group_0_binding_6_cs[_e36].light;
-                    picks.light[_e30] = _e39;
+                uint _e25 = h_2;
+                uint _e26 = pcg_hash(_e25);
+                h_2 = _e26;
+                uint _e28 = picks.n;
+                uint _e30 = h_2;
+                uint _e31 = reservoir_slot(_e28, K, hi_4, _e30);
+                if ((_e31 < K)) {
+                    uint _e37 = i_6;
+                    uint _e40 = _group_0_binding_6_cs[_e37].light;
+                    picks.light[_e31] = _e40;
                 }
             }
         }
     }
-    Picks _e47 = picks;
-    return _e47;
+    Picks _e48 = picks;
+    return _e48;
 }
 
-Connection connect(uint li, vec3 x_17, vec3 n_28, vec3 ng_2, float w_res, float u1_5, float u2_5, float eps) {
+Connection connect(uint li, vec3 x_18, vec3 n_28, vec3 ng_2, float s_1, float w_res, float u1_5, float u2_5, float eps) {
     Connection c_10 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_23 = false;
     c_10.e = vec3(0.0);
     GpuLight l_8 = _group_0_binding_3_cs[li];
-    vec3 _e16 = light_point(l_8, u1_5, u2_5);
-    c_10.y = _e16;
-    vec3 _e19 = c_10.y;
-    float _e22 = _group_0_binding_5_cs[li];
-    float _e23 = connection_cosine(x_17, _e19, n_28, ng_2, _e22);
-    c_10.cos_x = _e23;
-    float _e25 = c_10.cos_x;
-    if (!((_e25 <= 0.0))) {
-        vec3 _e34 = c_10.y;
-        bool _e35 = occluded((x_17 + (ng_2 * eps)), _e34);
-        local_23 = _e35;
+    vec3 _e17 = light_point(l_8, u1_5, u2_5);
+    c_10.y = _e17;
+    vec3 _e20 = c_10.y;
+    float _e23 = _group_0_binding_5_cs[li];
+    float _e25 = connection_cosine(x_18, _e20, n_28, ng_2, (s_1 * _e23));
+    c_10.cos_x = _e25;
+    float _e27 = c_10.cos_x;
+    if (!((_e27 <= 0.0))) {
+        vec3 _e36 = c_10.y;
+        bool _e37 = occluded((x_18 + (ng_2 * eps)), _e36);
+        local_23 = _e37;
     } else {
         local_23 = true;
     }
-    bool _e37 = local_23;
-    if (_e37) {
-        Connection _e38 = c_10;
-        return _e38;
+    bool _e39 = local_23;
+    if (_e39) {
+        Connection _e40 = c_10;
+        return _e40;
     }
-    vec3 _e40 = c_10.y;
-    vec3 v_20 = (x_17 - _e40);
+    vec3 _e42 = c_10.y;
+    vec3 v_20 = (x_18 - _e42);
     float d2_15 = dot(v_20, v_20);
-    vec3 _e47 = light_intensity(l_8, (v_20 / vec3(sqrt(d2_15))));
-    float _e49 = c_10.cos_x;
-    float _e52 = _group_0_binding_4_cs[li];
-    float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
-    c_10.e = (_e47 * _e53);
-    Connection _e55 = c_10;
-    return _e55;
+    vec3 _e49 = light_intensity(l_8, (v_20 / vec3(sqrt(d2_15))));
+    float _e51 = c_10.cos_x;
+    float _e54 = _group_0_binding_4_cs[li];
+    float _e56 = connection_factor(_e51, d2_15, (s_1 * _e54), w_res);
+    c_10.e = (_e49 * _e56);
+    Connection _e58 = c_10;
+    return _e58;
 }
 
 void main() {
@@ -1846,48 +1876,48 @@ void main() {
         _group_0_binding_9_cs[i_7] = vec4(0.0);
         return;
     }
-    vec3 x_18 = p_8.xyz;
+    vec3 x_19 = p_8.xyz;
     vec4 _e19 = _group_0_binding_2_cs[i_7];
     vec3 n_32 = _e19.xyz;
     uint _e23 = _group_0_binding_0_cs.seed;
     uint _e26 = _group_0_binding_0_cs.frame;
     uint _e27 = point_stream(_e23, i_7, _e26);
-    Picks _e28 = bsh_collect(x_18, _e27);
-    float _e31 = reservoir_weight(_e28.n, K);
-    uint _e32 = pick_stream(_e27);
-    h = _e32;
+    Picks _e29 = bsh_collect(x_19, 1.0, _e27);
+    float _e32 = reservoir_weight(_e29.n, K);
+    uint _e33 = pick_stream(_e27);
+    h = _e33;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e63 = s;
-            s = (_e63 + 1u);
+            uint _e65 = s;
+            s = (_e65 + 1u);
         }
         loop_init_2 = false;
-        uint _e39 = s;
-        if ((_e39 < min(_e28.n, K))) {
+        uint _e40 = s;
+        if ((_e40 < min(_e29.n, K))) {
         } else {
             break;
         }
         {
-            uint _e44 = h;
-            uint _e45 = pcg_hash(_e44);
-            h = _e45;
-            uint _e46 = h;
-            float _e47 = xi_from_bits(_e46);
-            uint _e48 = h;
-            uint _e49 = pcg_hash(_e48);
-            h = _e49;
-            vec3 _e50 = e;
-            uint _e52 = s;
-            uint _e54 = h;
-            float _e55 = xi_from_bits(_e54);
-            float _e58 = _group_0_binding_0_cs.eps;
-            Connection _e59 = connect(_e28.light[_e52], x_18, n_32, n_32, _e31, _e47, _e55, _e58);
-            e = (_e50 + _e59.e);
+            uint _e45 = h;
+            uint _e46 = pcg_hash(_e45);
+            h = _e46;
+            uint _e47 = h;
+            float _e48 = xi_from_bits(_e47);
+            uint _e49 = h;
+            uint _e50 = pcg_hash(_e49);
+            h = _e50;
+            vec3 _e51 = e;
+            uint _e53 = s;
+            uint _e56 = h;
+            float _e57 = xi_from_bits(_e56);
+            float _e60 = _group_0_binding_0_cs.eps;
+            Connection _e61 = connect(_e29.light[_e53], x_19, n_32, n_32, 1.0, _e32, _e48, _e57, _e60);
+            e = (_e51 + _e61.e);
         }
     }
-    vec3 _e67 = e;
-    _group_0_binding_9_cs[i_7] = vec4(_e67, float(_e28.n));
+    vec3 _e69 = e;
+    _group_0_binding_9_cs[i_7] = vec4(_e69, float(_e29.n));
     return;
 }
 

@@ -179,7 +179,7 @@ struct BshNode {
     uint child;
     uint next;
     uint light;
-    uint pad;
+    float extent;
 };
 struct GpuLightBvhNode {
     vec3 center;
@@ -212,6 +212,7 @@ const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
 const uint LIGHT_BVH_LEAF = 4294967295u;
 const float ONE_MINUS_EPSILON = 0.99999994;
 const float F32_MAX = 3.4028235e38;
@@ -600,6 +601,16 @@ float ies_lerp_t(float a0_, float a1_, float x_8) {
     return clamp(((x_8 - a0_) / (a1_ - a0_)), 0.0, 1.0);
 }
 
+float bsh_scaled_radius(BshNode node, float scale) {
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3) {
     uint a_lo = (a_4 & 65535u);
     uint a_hi = (a_4 >> 16u);
@@ -904,6 +915,19 @@ float specular_probability(vec4 lobe) {
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
+float receiver_peak(vec4 lobe_1) {
+    float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+float range_scale(vec4 lobe_2) {
+    if ((lobe_2.y <= 0.0)) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
 vec3 mirror_dir(vec3 n_16, vec3 v_5) {
     return ((n_16 * (2.0 * dot(n_16, v_5))) - v_5);
 }
@@ -1040,7 +1064,7 @@ float light_importance(vec3 center_2, float radius_2, float phi_1, vec3 axis_1, 
     return max(_e18, 0.0);
 }
 
-float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_20, vec3 r_3, vec4 lobe_1) {
+float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_20, vec3 r_3, vec4 lobe_3) {
     bool local_14 = false;
     float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
     float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_20);
@@ -1055,18 +1079,18 @@ float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2,
     }
     float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
-    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_1.z);
-    float _e39 = smith_root(lobe_1.w, lobe_1.z);
-    float spec = (((lobe_1.y * _e33) * 0.25) / _e39);
-    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
+    float _e39 = smith_root(lobe_3.w, lobe_3.z);
+    float spec = (((lobe_3.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-float receiver_importance(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, vec3 p_4, vec3 n_21, vec3 r_4, vec4 lobe_2) {
-    if ((lobe_2.y <= 0.0)) {
+float receiver_importance(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, vec3 p_4, vec3 n_21, vec3 r_4, vec4 lobe_4) {
+    if ((lobe_4.y <= 0.0)) {
         float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1075,14 +1099,14 @@ float candidate_weight(float importance, float rt2_5, float d2_9) {
     return (importance * _e3);
 }
 
-float cone_weight(vec3 center_5, float radius_5, float phi_4, vec3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, vec3 p_5, vec3 n_22, vec3 r_5, vec4 lobe_3) {
+float cone_weight(vec3 center_5, float radius_5, float phi_4, vec3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, vec3 p_5, vec3 n_22, vec3 r_5, vec4 lobe_5) {
     vec3 v_17 = (p_5 - center_5);
-    if ((lobe_3.y <= 0.0)) {
+    if ((lobe_5.y <= 0.0)) {
         float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         float _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
         return _e19;
     }
-    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     float _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
     return _e22;
 }

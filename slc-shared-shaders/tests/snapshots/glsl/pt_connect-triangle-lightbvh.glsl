@@ -179,7 +179,7 @@ struct BshNode {
     uint child;
     uint next;
     uint light;
-    uint pad;
+    float extent;
 };
 struct GpuLightBvhNode {
     vec3 center;
@@ -229,6 +229,7 @@ const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
 const uint LIGHT_BVH_LEAF = 4294967295u;
 const float ONE_MINUS_EPSILON = 0.99999994;
 const float F32_MAX = 3.4028235e38;
@@ -636,6 +637,16 @@ float ies_lerp_t(float a0_, float a1_, float x_8) {
     return clamp(((x_8 - a0_) / (a1_ - a0_)), 0.0, 1.0);
 }
 
+float bsh_scaled_radius(BshNode node, float scale) {
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3) {
     uint a_lo = (a_4 & 65535u);
     uint a_hi = (a_4 >> 16u);
@@ -718,20 +729,20 @@ uint uniform_light(float u_3, uint n_8) {
 }
 
 float mis_balance(float pdf_a, float pdf_b) {
-    float s = (pdf_a + pdf_b);
-    if ((s <= 0.0)) {
+    float s_1 = (pdf_a + pdf_b);
+    if ((s_1 <= 0.0)) {
         return 0.0;
     }
-    return (pdf_a / s);
+    return (pdf_a / s_1);
 }
 
 float mis_power(float pdf_a_1, float pdf_b_1) {
     float a2_ = (pdf_a_1 * pdf_a_1);
-    float s_1 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if ((s_1 <= 0.0)) {
+    float s_2 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_2 <= 0.0)) {
         return 0.0;
     }
-    return (a2_ / s_1);
+    return (a2_ / s_2);
 }
 
 float light_strategy_pdf(float select, float rt2_4, float d2_8, float area_1, float cos_y) {
@@ -766,15 +777,15 @@ float cosine_pdf(float cos_theta_1) {
 }
 
 vec3 onb_tangent(vec3 n_9) {
-    float s_2 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_11 = (-1.0 / (s_2 + n_9.z));
-    return vec3((1.0 + (((s_2 * n_9.x) * n_9.x) * a_11)), (((s_2 * n_9.x) * n_9.y) * a_11), (-(s_2) * n_9.x));
+    float s_3 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_11 = (-1.0 / (s_3 + n_9.z));
+    return vec3((1.0 + (((s_3 * n_9.x) * n_9.x) * a_11)), (((s_3 * n_9.x) * n_9.y) * a_11), (-(s_3) * n_9.x));
 }
 
 vec3 onb_bitangent(vec3 n_10) {
-    float s_3 = ((n_10.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_3 + n_10.z));
-    return vec3(((n_10.x * n_10.y) * a_12), (s_3 + ((n_10.y * n_10.y) * a_12)), -(n_10.y));
+    float s_4 = ((n_10.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_4 + n_10.z));
+    return vec3(((n_10.x * n_10.y) * a_12), (s_4 + ((n_10.y * n_10.y) * a_12)), -(n_10.y));
 }
 
 vec3 onb_to_world(vec3 n_11, vec3 d) {
@@ -940,15 +951,28 @@ float specular_probability(vec4 lobe) {
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
+float receiver_peak(vec4 lobe_1) {
+    float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+float range_scale(vec4 lobe_2) {
+    if ((lobe_2.y <= 0.0)) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
 vec3 mirror_dir(vec3 n_16, vec3 v_5) {
     return ((n_16 * (2.0 * dot(n_16, v_5))) - v_5);
 }
 
 float bounded_vndf_k(vec3 wi, float alpha_6) {
     float a_13 = clamp(alpha_6, 0.0, 1.0);
-    float s_4 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    float s_5 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
     float a2_3 = (a_13 * a_13);
-    float s2_ = (s_4 * s_4);
+    float s2_ = (s_5 * s_5);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
@@ -1076,7 +1100,7 @@ float light_importance(vec3 center_2, float radius_2, float phi_1, vec3 axis_1, 
     return max(_e18, 0.0);
 }
 
-float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_20, vec3 r_3, vec4 lobe_1) {
+float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_20, vec3 r_3, vec4 lobe_3) {
     bool local_13 = false;
     float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
     float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_20);
@@ -1091,18 +1115,18 @@ float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2,
     }
     float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
-    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_1.z);
-    float _e39 = smith_root(lobe_1.w, lobe_1.z);
-    float spec = (((lobe_1.y * _e33) * 0.25) / _e39);
-    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
+    float _e39 = smith_root(lobe_3.w, lobe_3.z);
+    float spec = (((lobe_3.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-float receiver_importance(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, vec3 p_4, vec3 n_21, vec3 r_4, vec4 lobe_2) {
-    if ((lobe_2.y <= 0.0)) {
+float receiver_importance(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, vec3 p_4, vec3 n_21, vec3 r_4, vec4 lobe_4) {
+    if ((lobe_4.y <= 0.0)) {
         float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1111,14 +1135,14 @@ float candidate_weight(float importance, float rt2_5, float d2_9) {
     return (importance * _e3);
 }
 
-float cone_weight(vec3 center_5, float radius_5, float phi_4, vec3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, vec3 p_5, vec3 n_22, vec3 r_5, vec4 lobe_3) {
+float cone_weight(vec3 center_5, float radius_5, float phi_4, vec3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, vec3 p_5, vec3 n_22, vec3 r_5, vec4 lobe_5) {
     vec3 v_17 = (p_5 - center_5);
-    if ((lobe_3.y <= 0.0)) {
+    if ((lobe_5.y <= 0.0)) {
         float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         float _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
         return _e19;
     }
-    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     float _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
     return _e22;
 }
@@ -1133,9 +1157,9 @@ float weighted_select_pdf(float w_7, float w_sum_2, bool in_range_1, uint k_4) {
 }
 
 float bvh_first_prob(float c0_, float c1_2) {
-    float s_5 = (c0_ + c1_2);
-    if ((s_5 > 0.0)) {
-        return (c0_ / s_5);
+    float s_6 = (c0_ + c1_2);
+    if ((s_6 > 0.0)) {
+        return (c0_ / s_6);
     }
     return -1.0;
 }
@@ -1221,8 +1245,8 @@ vec3 barycentric(vec3 p_6, vec3 a_6, vec3 b_5, vec3 c_8) {
 
 vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_8, vec3 facing) {
     bool local_15 = false;
-    vec3 s_6 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
-    float l2_1 = dot(s_6, s_6);
+    vec3 s_7 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
+    float l2_1 = dot(s_7, s_7);
     if (!(!((l2_1 > 1e-12)))) {
         local_15 = !((l2_1 < 3e38));
     } else {
@@ -1232,7 +1256,7 @@ vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_8, vec3 facing) {
     if (_e24) {
         return facing;
     }
-    vec3 n_38 = (s_6 / vec3(sqrt(l2_1)));
+    vec3 n_38 = (s_7 / vec3(sqrt(l2_1)));
     return ((dot(n_38, facing) < 0.0) ? -(n_38) : n_38);
 }
 
@@ -1248,8 +1272,8 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_7, vec3 b_6, vec3 c_9, float t_min
         return -1.0;
     }
     float inv_1 = (1.0 / det);
-    vec3 s_7 = (o_1 - a_7);
-    float u_7 = (dot(s_7, p_7) * inv_1);
+    vec3 s_8 = (o_1 - a_7);
+    float u_7 = (dot(s_8, p_7) * inv_1);
     if (!((u_7 < 0.0))) {
         local_16 = (u_7 > 1.0);
     } else {
@@ -1259,7 +1283,7 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_7, vec3 b_6, vec3 c_9, float t_min
     if (_e28) {
         return -1.0;
     }
-    vec3 q_5 = cross(s_7, e1_2);
+    vec3 q_5 = cross(s_8, e1_2);
     float v_18 = (dot(d_3, q_5) * inv_1);
     if (!((v_18 < 0.0))) {
         local_17 = ((u_7 + v_18) > 1.0);
@@ -1529,7 +1553,7 @@ GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
-    uint node = 0u;
+    uint node_1 = 0u;
     uint i_2 = 0u;
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -1539,7 +1563,7 @@ GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
     }
     vec3 _e14 = ray_inverse3_(d_6);
     while(true) {
-        uint _e21 = node;
+        uint _e21 = node_1;
         GpuGeoNode n_39 = _group_0_binding_6_cs[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_39.bmin, n_39.bmax, _e27);
@@ -1582,7 +1606,7 @@ GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_39.first;
+                node_1 = n_39.first;
                 continue;
             }
         }
@@ -1594,7 +1618,7 @@ GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[_e78];
-        node = _e80;
+        node_1 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -1611,40 +1635,40 @@ bool occluded(vec3 a_9, vec3 b_7) {
     return (_e12.tri != NO_LIGHT);
 }
 
-Connection connect(uint li, vec3 x_17, vec3 n_28, vec3 ng_2, float w_res, float u1_5, float u2_5, float eps) {
+Connection connect(uint li, vec3 x_18, vec3 n_28, vec3 ng_2, float s, float w_res, float u1_5, float u2_5, float eps) {
     Connection c_10 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_23 = false;
     c_10.e = vec3(0.0);
     GpuLight l_8 = _group_0_binding_2_cs[li];
-    vec3 _e16 = light_point(l_8, u1_5, u2_5);
-    c_10.y = _e16;
-    vec3 _e19 = c_10.y;
-    float _e22 = _group_0_binding_4_cs[li];
-    float _e23 = connection_cosine(x_17, _e19, n_28, ng_2, _e22);
-    c_10.cos_x = _e23;
-    float _e25 = c_10.cos_x;
-    if (!((_e25 <= 0.0))) {
-        vec3 _e34 = c_10.y;
-        bool _e35 = occluded((x_17 + (ng_2 * eps)), _e34);
-        local_23 = _e35;
+    vec3 _e17 = light_point(l_8, u1_5, u2_5);
+    c_10.y = _e17;
+    vec3 _e20 = c_10.y;
+    float _e23 = _group_0_binding_4_cs[li];
+    float _e25 = connection_cosine(x_18, _e20, n_28, ng_2, (s * _e23));
+    c_10.cos_x = _e25;
+    float _e27 = c_10.cos_x;
+    if (!((_e27 <= 0.0))) {
+        vec3 _e36 = c_10.y;
+        bool _e37 = occluded((x_18 + (ng_2 * eps)), _e36);
+        local_23 = _e37;
     } else {
         local_23 = true;
     }
-    bool _e37 = local_23;
-    if (_e37) {
-        Connection _e38 = c_10;
-        return _e38;
+    bool _e39 = local_23;
+    if (_e39) {
+        Connection _e40 = c_10;
+        return _e40;
     }
-    vec3 _e40 = c_10.y;
-    vec3 v_20 = (x_17 - _e40);
+    vec3 _e42 = c_10.y;
+    vec3 v_20 = (x_18 - _e42);
     float d2_15 = dot(v_20, v_20);
-    vec3 _e47 = light_intensity(l_8, (v_20 / vec3(sqrt(d2_15))));
-    float _e49 = c_10.cos_x;
-    float _e52 = _group_0_binding_3_cs[li];
-    float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
-    c_10.e = (_e47 * _e53);
-    Connection _e55 = c_10;
-    return _e55;
+    vec3 _e49 = light_intensity(l_8, (v_20 / vec3(sqrt(d2_15))));
+    float _e51 = c_10.cos_x;
+    float _e54 = _group_0_binding_3_cs[li];
+    float _e56 = connection_factor(_e51, d2_15, (s * _e54), w_res);
+    c_10.e = (_e49 * _e56);
+    Connection _e58 = c_10;
+    return _e58;
 }
 
 float mis_weight(float pdf_a_2, float pdf_b_2) {
@@ -1652,34 +1676,35 @@ float mis_weight(float pdf_a_2, float pdf_b_2) {
     return _e2;
 }
 
-float light_weight(uint li_1, vec3 x_18, vec3 n_29, vec3 r_6, vec4 lobe_4) {
+float light_weight(uint li_1, vec3 x_19, vec3 n_29, vec3 r_6, vec4 lobe_6) {
     GpuLightCone c_16 = _group_1_binding_2_cs[li_1];
-    float _e16 = _group_0_binding_3_cs[li_1];
-    float _e17 = cone_weight(c_16.center, c_16.radius, c_16.phi, c_16.axis, c_16.cos_o, c_16.cos_e, _e16, x_18, n_29, r_6, lobe_4);
-    return _e17;
+    float _e14 = range_scale(lobe_6);
+    float _e17 = _group_0_binding_3_cs[li_1];
+    float _e19 = cone_weight(c_16.center, c_16.radius, c_16.phi, c_16.axis, c_16.cos_o, c_16.cos_e, (_e14 * _e17), x_19, n_29, r_6, lobe_6);
+    return _e19;
 }
 
-GpuLightBvhNode light_bvh_node(uint nodes_5, uint i_7) {
+GpuLightBvhNode light_bvh_node(uint nodes_6, uint i_7) {
     GpuLightBvhNode _e4 = _group_1_binding_3_cs[i_7];
     return _e4;
 }
 
-uint light_bvh_count(uint nodes_6) {
+uint light_bvh_count(uint nodes_7) {
     return uint(_group_1_binding_3_cs.length());
 }
 
-float bvh_importance(uint nodes_7, uint i_8, vec3 x_19, vec3 n_30, vec3 r_7, vec4 lobe_5) {
-    GpuLightBvhNode _e6 = light_bvh_node(nodes_7, i_8);
-    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_19, n_30, r_7, lobe_5);
+float bvh_importance(uint nodes_8, uint i_8, vec3 x_20, vec3 n_30, vec3 r_7, vec4 lobe_7) {
+    GpuLightBvhNode _e6 = light_bvh_node(nodes_8, i_8);
+    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_20, n_30, r_7, lobe_7);
     return _e13;
 }
 
-float bvh_first(uint nodes_8, uint i_9, vec3 x_20, vec3 n_31, vec3 r_8, vec4 lobe_6) {
+float bvh_first(uint nodes_9, uint i_9, vec3 x_21, vec3 n_31, vec3 r_8, vec4 lobe_8) {
     bool local_24 = false;
-    GpuLightBvhNode _e6 = light_bvh_node(nodes_8, i_9);
+    GpuLightBvhNode _e6 = light_bvh_node(nodes_9, i_9);
     uint j = _e6.second;
     if (!((j <= (i_9 + 1u)))) {
-        uint _e14 = light_bvh_count(nodes_8);
+        uint _e14 = light_bvh_count(nodes_9);
         local_24 = (j >= _e14);
     } else {
         local_24 = true;
@@ -1688,8 +1713,8 @@ float bvh_first(uint nodes_8, uint i_9, vec3 x_20, vec3 n_31, vec3 r_8, vec4 lob
     if (_e17) {
         return -1.0;
     }
-    float _e21 = bvh_importance(nodes_8, (i_9 + 1u), x_20, n_31, r_8, lobe_6);
-    float _e22 = bvh_importance(nodes_8, j, x_20, n_31, r_8, lobe_6);
+    float _e21 = bvh_importance(nodes_9, (i_9 + 1u), x_21, n_31, r_8, lobe_8);
+    float _e22 = bvh_importance(nodes_9, j, x_21, n_31, r_8, lobe_8);
     float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -1698,7 +1723,7 @@ BvhPick bvh_pick_none() {
     return BvhPick(0u, 0.0);
 }
 
-BvhPick light_bvh_sample(uint nodes_9, vec3 x_21, vec3 n_32, vec3 r_9, vec4 lobe_7, float u_in) {
+BvhPick light_bvh_sample(uint nodes_10, vec3 x_22, vec3 n_32, vec3 r_9, vec4 lobe_9, float u_in) {
     BvhPick pick = BvhPick(0u, 0.0);
     float u_6 = 0.0;
     uint i_10 = 0u;
@@ -1709,18 +1734,18 @@ BvhPick light_bvh_sample(uint nodes_9, vec3 x_21, vec3 n_32, vec3 r_9, vec4 lobe
     u_6 = u_in;
     while(true) {
         uint _e13 = i_10;
-        uint _e14 = light_bvh_count(nodes_9);
+        uint _e14 = light_bvh_count(nodes_10);
         if ((_e13 < _e14)) {
         } else {
             break;
         }
         {
             uint _e16 = i_10;
-            GpuLightBvhNode _e17 = light_bvh_node(nodes_9, _e16);
+            GpuLightBvhNode _e17 = light_bvh_node(nodes_10, _e16);
             if ((_e17.second == LIGHT_BVH_LEAF)) {
                 uint _e21 = i_10;
                 if (!((_e21 > 0u))) {
-                    float _e28 = bvh_importance(nodes_9, 0u, x_21, n_32, r_9, lobe_7);
+                    float _e28 = bvh_importance(nodes_10, 0u, x_22, n_32, r_9, lobe_9);
                     local_25 = (_e28 > 0.0);
                 } else {
                     local_25 = true;
@@ -1735,7 +1760,7 @@ BvhPick light_bvh_sample(uint nodes_9, vec3 x_21, vec3 n_32, vec3 r_9, vec4 lobe
                 return _e37;
             }
             uint _e38 = i_10;
-            float _e39 = bvh_first(nodes_9, _e38, x_21, n_32, r_9, lobe_7);
+            float _e39 = bvh_first(nodes_10, _e38, x_22, n_32, r_9, lobe_9);
             if ((_e39 < 0.0)) {
                 BvhPick _e42 = pick;
                 return _e42;
@@ -1755,31 +1780,31 @@ BvhPick light_bvh_sample(uint nodes_9, vec3 x_21, vec3 n_32, vec3 r_9, vec4 lobe
     return _e57;
 }
 
-float light_bvh_pmf(uint nodes_10, uint leaf, vec3 x_22, vec3 n_33, vec3 r_10, vec4 lobe_8) {
+float light_bvh_pmf(uint nodes_11, uint leaf, vec3 x_23, vec3 n_33, vec3 r_10, vec4 lobe_10) {
     uint i_11 = 0u;
     float pmf_1 = 1.0;
     bool local_26 = false;
     bool local_27 = false;
-    uint _e6 = light_bvh_count(nodes_10);
+    uint _e6 = light_bvh_count(nodes_11);
     if ((leaf >= _e6)) {
         return 0.0;
     }
     while(true) {
         uint _e13 = i_11;
-        uint _e14 = light_bvh_count(nodes_10);
+        uint _e14 = light_bvh_count(nodes_11);
         if ((_e13 < _e14)) {
         } else {
             break;
         }
         {
             uint _e16 = i_11;
-            GpuLightBvhNode _e17 = light_bvh_node(nodes_10, _e16);
+            GpuLightBvhNode _e17 = light_bvh_node(nodes_11, _e16);
             if ((_e17.second == LIGHT_BVH_LEAF)) {
                 uint _e21 = i_11;
                 if ((_e21 == leaf)) {
                     uint _e25 = i_11;
                     if (!((_e25 > 0u))) {
-                        float _e32 = bvh_importance(nodes_10, 0u, x_22, n_33, r_10, lobe_8);
+                        float _e32 = bvh_importance(nodes_11, 0u, x_23, n_33, r_10, lobe_10);
                         local_27 = (_e32 > 0.0);
                     } else {
                         local_27 = true;
@@ -1797,7 +1822,7 @@ float light_bvh_pmf(uint nodes_10, uint leaf, vec3 x_22, vec3 n_33, vec3 r_10, v
                 return 0.0;
             }
             uint _e41 = i_11;
-            float _e42 = bvh_first(nodes_10, _e41, x_22, n_33, r_10, lobe_8);
+            float _e42 = bvh_first(nodes_11, _e41, x_23, n_33, r_10, lobe_10);
             if ((_e42 < 0.0)) {
                 return 0.0;
             }
@@ -1811,45 +1836,47 @@ float light_bvh_pmf(uint nodes_10, uint leaf, vec3 x_22, vec3 n_33, vec3 r_10, v
     return 0.0;
 }
 
-float select_pdf(uint li_2, vec3 x_23, vec3 n_34, vec3 r_11, vec4 lobe_9, uint nee, bool in_range_2) {
+float select_pdf(uint li_2, vec3 x_24, vec3 n_34, vec3 r_11, vec4 lobe_11, uint nee, bool in_range_2) {
     uint _e11 = _group_1_binding_2_cs[li_2].bvh_leaf;
-    float _e12 = light_bvh_pmf(BVH, _e11, x_23, n_34, r_11, lobe_9);
+    float _e12 = light_bvh_pmf(BVH, _e11, x_24, n_34, r_11, lobe_11);
     return _e12;
 }
 
-float light_pdf(uint li_3, vec3 x_24, vec3 n_35, vec3 r_12, vec4 lobe_10, vec3 y_3, uint nee_1, bool in_range_3) {
+float light_pdf(uint li_3, vec3 x_25, vec3 n_35, vec3 r_12, vec4 lobe_12, vec3 y_3, uint nee_1, bool in_range_3) {
     GpuLight l_9 = _group_0_binding_2_cs[li_3];
-    vec3 v_21 = (x_24 - y_3);
+    vec3 v_21 = (x_25 - y_3);
     float d2_16 = dot(v_21, v_21);
     vec3 _e13 = light_normal(l_9);
     float cos_y_1 = ((d2_16 > 0.0) ? dot(_e13, (v_21 / vec3(sqrt(d2_16)))) : 0.0);
-    float _e22 = select_pdf(li_3, x_24, n_35, r_12, lobe_10, nee_1, in_range_3);
-    float _e25 = _group_0_binding_3_cs[li_3];
-    float _e26 = light_area(l_9);
-    float _e27 = light_strategy_pdf(_e22, _e25, d2_16, _e26, cos_y_1);
-    return _e27;
+    float _e22 = select_pdf(li_3, x_25, n_35, r_12, lobe_12, nee_1, in_range_3);
+    float _e23 = range_scale(lobe_12);
+    float _e26 = _group_0_binding_3_cs[li_3];
+    float _e28 = light_area(l_9);
+    float _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_16, _e28, cos_y_1);
+    return _e29;
 }
 
-vec3 shade_pick(uint li_4, vec3 x_25, vec3 n_36, vec3 ng_3, GpuMaterial m, vec3 wo_1, vec3 r_13, vec4 lobe_11, float w_11, uint nee_2, float u1_6, float u2_6) {
+vec3 shade_pick(uint li_4, vec3 x_26, vec3 n_36, vec3 ng_3, GpuMaterial m, vec3 wo_1, vec3 r_13, vec4 lobe_13, float w_11, uint nee_2, float u1_6, float u2_6) {
     float mis = 1.0;
-    float _e14 = _group_0_binding_0_cs.eps;
-    Connection _e15 = connect(li_4, x_25, n_36, ng_3, w_11, u1_6, u2_6, _e14);
-    if ((_e15.cos_x <= 0.0)) {
+    float _e12 = range_scale(lobe_13);
+    float _e15 = _group_0_binding_0_cs.eps;
+    Connection _e16 = connect(li_4, x_26, n_36, ng_3, _e12, w_11, u1_6, u2_6, _e15);
+    if ((_e16.cos_x <= 0.0)) {
         return vec3(0.0);
     }
-    vec3 l_10 = normalize((_e15.y - x_25));
-    GpuLight _e28 = _group_0_binding_2_cs[li_4];
-    float _e29 = light_area(_e28);
-    if ((_e29 > 0.0)) {
-        float _e34 = light_pdf(li_4, x_25, n_36, r_13, lobe_11, _e15.y, nee_2, true);
-        float _e36 = specular_probability(lobe_11);
-        float _e37 = bsdf_pdf(n_36, wo_1, l_10, m.alpha, _e36);
-        float _e38 = mis_weight(_e34, _e37);
-        mis = _e38;
+    vec3 l_10 = normalize((_e16.y - x_26));
+    GpuLight _e29 = _group_0_binding_2_cs[li_4];
+    float _e30 = light_area(_e29);
+    if ((_e30 > 0.0)) {
+        float _e35 = light_pdf(li_4, x_26, n_36, r_13, lobe_13, _e16.y, nee_2, true);
+        float _e37 = specular_probability(lobe_13);
+        float _e38 = bsdf_pdf(n_36, wo_1, l_10, m.alpha, _e37);
+        float _e39 = mis_weight(_e35, _e38);
+        mis = _e39;
     }
-    vec3 _e44 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_36, wo_1, l_10);
-    float _e47 = mis;
-    return ((_e44 * _e15.e) * _e47);
+    vec3 _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_36, wo_1, l_10);
+    float _e48 = mis;
+    return ((_e45 * _e16.e) * _e48);
 }
 
 void main() {
@@ -1866,47 +1893,49 @@ void main() {
         _group_0_binding_10_cs[i_12] = 0u;
         return;
     }
-    vec3 x_26 = vtx.position;
+    vec3 x_27 = vtx.position;
     vec3 n_40 = vtx.normal;
     vec3 ng_4 = vtx.gnormal;
     GpuMaterial m_4 = _group_0_binding_8_cs[vtx.material];
     vec3 wo_2 = vtx.wo;
     vec3 _e23 = mirror_dir(n_40, wo_2);
     vec4 _e30 = receiver_lobe(m_4.albedo, m_4.metallic, m_4.f0_, m_4.f90_, m_4.alpha, dot(n_40, wo_2));
-    uint _e33 = _group_0_binding_0_cs.seed;
-    uint _e36 = _group_0_binding_0_cs.frame;
-    uint _e37 = point_stream(_e33, i_12, _e36);
-    uint _e38 = pick_stream(_e37);
-    h = _e38;
+    float _e31 = range_scale(_e30);
+    float scale_3 = sqrt(_e31);
+    uint _e35 = _group_0_binding_0_cs.seed;
+    uint _e38 = _group_0_binding_0_cs.frame;
+    uint _e39 = point_stream(_e35, i_12, _e38);
+    uint _e40 = pick_stream(_e39);
+    h = _e40;
     _group_0_binding_10_cs[i_12] = 0u;
-    uint _e46 = h;
-    uint _e47 = pcg_hash(_e46);
-    h = _e47;
     uint _e48 = h;
-    float _e49 = xi_from_bits(_e48);
-    BvhPick _e51 = light_bvh_sample(BVH, x_26, n_40, _e23, _e30, _e49);
-    uint li_5 = _e51.light;
-    float pmf_2 = _e51.pmf;
-    uint _e54 = h;
-    uint _e55 = pcg_hash(_e54);
-    h = _e55;
+    uint _e49 = pcg_hash(_e48);
+    h = _e49;
+    uint _e50 = h;
+    float _e51 = xi_from_bits(_e50);
+    BvhPick _e53 = light_bvh_sample(BVH, x_27, n_40, _e23, _e30, _e51);
+    uint li_5 = _e53.light;
+    float pmf_2 = _e53.pmf;
     uint _e56 = h;
-    float _e57 = xi_from_bits(_e56);
+    uint _e57 = pcg_hash(_e56);
+    h = _e57;
     uint _e58 = h;
-    uint _e59 = pcg_hash(_e58);
-    h = _e59;
+    float _e59 = xi_from_bits(_e58);
     uint _e60 = h;
-    float _e61 = xi_from_bits(_e60);
+    uint _e61 = pcg_hash(_e60);
+    h = _e61;
+    uint _e62 = h;
+    float _e63 = xi_from_bits(_e62);
     if ((pmf_2 > 0.0)) {
-        vec3 _e67 = shade_pick(li_5, x_26, n_40, ng_4, m_4, wo_2, _e23, _e30, (1.0 / pmf_2), 0u, _e57, _e61);
-        sum = _e67;
+        vec3 _e69 = shade_pick(li_5, x_27, n_40, ng_4, m_4, wo_2, _e23, _e30, (1.0 / pmf_2), 0u, _e59, _e63);
+        sum = _e69;
     }
-    vec3 _e69 = sum;
-    vec3 add = (vtx.weight * _e69);
-    bool _e71 = finite3_(add);
-    if (_e71) {
-        vec4 _e74 = _group_0_binding_9_cs[i_12];
-        _group_0_binding_9_cs[i_12] = (_e74 + vec4(add, 0.0));
+    vec3 _e71 = sum;
+    vec3 add = (vtx.weight * _e71);
+    bool _e73 = finite3_(add);
+    if (_e73) {
+        vec4 _e76 = _group_0_binding_9_cs[i_12];
+        _group_0_binding_9_cs[i_12] = (_e76 + vec4(add, 0.0));
         return;
     } else {
         return;

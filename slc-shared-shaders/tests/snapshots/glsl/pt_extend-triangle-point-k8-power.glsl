@@ -179,7 +179,7 @@ struct BshNode {
     uint child;
     uint next;
     uint light;
-    uint pad;
+    float extent;
 };
 struct GpuLightBvhNode {
     vec3 center;
@@ -220,6 +220,7 @@ const float MIN_D2_ = 1e-12;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
 const uint LIGHT_BVH_LEAF = 4294967295u;
 const float ONE_MINUS_EPSILON = 0.99999994;
 const float F32_MAX = 3.4028235e38;
@@ -628,6 +629,16 @@ float ies_lerp_t(float a0_, float a1_, float x_8) {
     return clamp(((x_8 - a0_) / (a1_ - a0_)), 0.0, 1.0);
 }
 
+float bsh_scaled_radius(BshNode node, float scale) {
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3) {
     uint a_lo = (a_4 & 65535u);
     uint a_hi = (a_4 >> 16u);
@@ -932,6 +943,19 @@ float specular_probability(vec4 lobe) {
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
+float receiver_peak(vec4 lobe_1) {
+    float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+float range_scale(vec4 lobe_2) {
+    if ((lobe_2.y <= 0.0)) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
 vec3 mirror_dir(vec3 n_16, vec3 v_6) {
     return ((n_16 * (2.0 * dot(n_16, v_6))) - v_6);
 }
@@ -1068,7 +1092,7 @@ float light_importance(vec3 center_2, float radius_2, float phi_1, vec3 axis_1, 
     return max(_e18, 0.0);
 }
 
-float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_20, vec3 r_3, vec4 lobe_1) {
+float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_20, vec3 r_3, vec4 lobe_3) {
     bool local_17 = false;
     float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
     float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_20);
@@ -1083,18 +1107,18 @@ float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2,
     }
     float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
-    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_1.z);
-    float _e39 = smith_root(lobe_1.w, lobe_1.z);
-    float spec = (((lobe_1.y * _e33) * 0.25) / _e39);
-    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
+    float _e39 = smith_root(lobe_3.w, lobe_3.z);
+    float spec = (((lobe_3.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-float receiver_importance(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, vec3 p_4, vec3 n_21, vec3 r_4, vec4 lobe_2) {
-    if ((lobe_2.y <= 0.0)) {
+float receiver_importance(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, vec3 p_4, vec3 n_21, vec3 r_4, vec4 lobe_4) {
+    if ((lobe_4.y <= 0.0)) {
         float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1103,14 +1127,14 @@ float candidate_weight(float importance, float rt2_5, float d2_9) {
     return (importance * _e3);
 }
 
-float cone_weight(vec3 center_5, float radius_5, float phi_4, vec3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, vec3 p_5, vec3 n_22, vec3 r_5, vec4 lobe_3) {
+float cone_weight(vec3 center_5, float radius_5, float phi_4, vec3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, vec3 p_5, vec3 n_22, vec3 r_5, vec4 lobe_5) {
     vec3 v_18 = (p_5 - center_5);
-    if ((lobe_3.y <= 0.0)) {
+    if ((lobe_5.y <= 0.0)) {
         float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         float _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_18, v_18));
         return _e19;
     }
-    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     float _e22 = candidate_weight(_e20, rt2_6, dot(v_18, v_18));
     return _e22;
 }
@@ -1524,7 +1548,7 @@ GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
-    uint node = 0u;
+    uint node_1 = 0u;
     uint i_2 = 0u;
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -1534,7 +1558,7 @@ GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
     }
     vec3 _e14 = ray_inverse3_(d_6);
     while(true) {
-        uint _e21 = node;
+        uint _e21 = node_1;
         GpuGeoNode n_37 = _group_0_binding_5_cs[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_37.bmin, n_37.bmax, _e27);
@@ -1577,7 +1601,7 @@ GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_37.first;
+                node_1 = n_37.first;
                 continue;
             }
         }
@@ -1589,7 +1613,7 @@ GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[_e78];
-        node = _e80;
+        node_1 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -1615,22 +1639,23 @@ BvhPick bvh_pick_none() {
     return BvhPick(0u, 0.0);
 }
 
-float select_pdf(uint li_1, vec3 x_20, vec3 n_33, vec3 r_11, vec4 lobe_9, uint nee, bool in_range_2) {
+float select_pdf(uint li_1, vec3 x_20, vec3 n_33, vec3 r_11, vec4 lobe_11, uint nee, bool in_range_2) {
     float _e8 = reservoir_select_pdf(nee, in_range_2, K);
     return _e8;
 }
 
-float light_pdf(uint li_2, vec3 x_21, vec3 n_34, vec3 r_12, vec4 lobe_10, vec3 y_3, uint nee_1, bool in_range_3) {
+float light_pdf(uint li_2, vec3 x_21, vec3 n_34, vec3 r_12, vec4 lobe_12, vec3 y_3, uint nee_1, bool in_range_3) {
     GpuLight l_8 = _group_0_binding_1_cs[li_2];
     vec3 v_21 = (x_21 - y_3);
     float d2_15 = dot(v_21, v_21);
     vec3 _e13 = light_normal(l_8);
     float cos_y_1 = ((d2_15 > 0.0) ? dot(_e13, (v_21 / vec3(sqrt(d2_15)))) : 0.0);
-    float _e22 = select_pdf(li_2, x_21, n_34, r_12, lobe_10, nee_1, in_range_3);
-    float _e25 = _group_0_binding_2_cs[li_2];
-    float _e26 = light_area(l_8);
-    float _e27 = light_strategy_pdf(_e22, _e25, d2_15, _e26, cos_y_1);
-    return _e27;
+    float _e22 = select_pdf(li_2, x_21, n_34, r_12, lobe_12, nee_1, in_range_3);
+    float _e23 = range_scale(lobe_12);
+    float _e26 = _group_0_binding_2_cs[li_2];
+    float _e28 = light_area(l_8);
+    float _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_15, _e28, cos_y_1);
+    return _e29;
 }
 
 float next_uniform(inout uint state) {
@@ -1736,109 +1761,112 @@ void main() {
         if ((_e161 > 0.0)) {
             uint _e168 = _group_0_binding_4_cs[tri.light];
             BshNode leaf_1 = _group_0_binding_3_cs[_e168];
-            vec3 _e174 = st.prev;
-            bool _e175 = sphere_contains_point(leaf_1.center, leaf_1.radius, _e174);
-            float _e177 = st.pdf_bsdf;
-            vec3 _e180 = st.prev;
-            vec3 _e182 = st.prev_normal;
-            vec3 _e184 = st.prev_r;
-            vec4 _e186 = st.prev_lobe;
-            uint _e189 = _group_0_binding_9_cs[i_8];
-            float _e190 = light_pdf(tri.light, _e180, _e182, _e184, _e186, x_22, _e189, _e175);
-            float _e191 = mis_weight(_e177, _e190);
-            w = _e191;
+            vec4 _e173 = st.prev_lobe;
+            float _e174 = range_scale(_e173);
+            float _e176 = bsh_scaled_radius(leaf_1, sqrt(_e174));
+            vec3 _e178 = st.prev;
+            bool _e179 = sphere_contains_point(leaf_1.center, _e176, _e178);
+            float _e181 = st.pdf_bsdf;
+            vec3 _e184 = st.prev;
+            vec3 _e186 = st.prev_normal;
+            vec3 _e188 = st.prev_r;
+            vec4 _e190 = st.prev_lobe;
+            uint _e193 = _group_0_binding_9_cs[i_8];
+            float _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_22, _e193, _e179);
+            float _e195 = mis_weight(_e181, _e194);
+            w = _e195;
         }
-        vec3 _e193 = st.beta;
-        vec3 _e198 = _group_0_binding_1_cs[tri.light].intensity;
-        float _e200 = w;
-        vec3 add = ((_e193 * _e198) * _e200);
-        bool _e202 = finite3_(add);
-        if (_e202) {
-            vec4 _e205 = _group_0_binding_12_cs[i_8];
-            _group_0_binding_12_cs[i_8] = (_e205 + vec4(add, 0.0));
+        vec3 _e197 = st.beta;
+        vec3 _e202 = _group_0_binding_1_cs[tri.light].intensity;
+        float _e204 = w;
+        vec3 add = ((_e197 * _e202) * _e204);
+        bool _e206 = finite3_(add);
+        if (_e206) {
+            vec4 _e209 = _group_0_binding_12_cs[i_8];
+            _group_0_binding_12_cs[i_8] = (_e209 + vec4(add, 0.0));
         }
     }
     GpuMaterial m_3 = _group_0_binding_7_cs[tri.material];
-    vec3 _e214 = st.dir;
-    vec3 wo_1 = -(_e214);
-    vec4 _e222 = receiver_lobe(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, dot(_e147, wo_1));
+    vec3 _e218 = st.dir;
+    vec3 wo_1 = -(_e218);
+    vec4 _e226 = receiver_lobe(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, dot(_e147, wo_1));
     v.position = x_22;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    vec3 _e230 = st.beta;
-    v.weight = _e230;
+    vec3 _e234 = st.beta;
+    v.weight = _e234;
     v.wo = wo_1;
     v.alive = 1u;
-    GpuPathVertex _e236 = v;
-    _group_0_binding_11_cs[i_8] = _e236;
-    uint _e238 = st.rng;
-    rng = _e238;
-    float _e240 = next_uniform(rng);
-    float _e241 = next_uniform(rng);
-    float _e242 = specular_probability(_e222);
-    vec3 _e244 = bsdf_sample(_e147, wo_1, m_3.alpha, _e242, _e240, _e241);
-    float _e246 = bsdf_pdf(_e147, wo_1, _e244, m_3.alpha, _e242);
-    bool _e250 = has_specular(m_3.metallic, m_3.f0_, m_3.f90_);
-    if (_e250) {
-        vec3 _e252 = st.beta;
-        vec3 _e258 = brdf_eval(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, _e147, wo_1, _e244);
-        st.beta = (_e252 * (_e258 * (dot(_e244, _e147) / _e246)));
+    GpuPathVertex _e240 = v;
+    _group_0_binding_11_cs[i_8] = _e240;
+    uint _e242 = st.rng;
+    rng = _e242;
+    float _e244 = next_uniform(rng);
+    float _e245 = next_uniform(rng);
+    float _e246 = specular_probability(_e226);
+    vec3 _e248 = bsdf_sample(_e147, wo_1, m_3.alpha, _e246, _e244, _e245);
+    float _e250 = bsdf_pdf(_e147, wo_1, _e248, m_3.alpha, _e246);
+    bool _e254 = has_specular(m_3.metallic, m_3.f0_, m_3.f90_);
+    if (_e254) {
+        vec3 _e256 = st.beta;
+        vec3 _e262 = brdf_eval(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, _e147, wo_1, _e248);
+        st.beta = (_e256 * (_e262 * (dot(_e248, _e147) / _e250)));
     } else {
-        vec3 _e264 = st.beta;
-        st.beta = (_e264 * m_3.albedo);
+        vec3 _e268 = st.beta;
+        st.beta = (_e268 * m_3.albedo);
     }
     st.prev = x_22;
     st.prev_normal = _e147;
-    vec3 _e270 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e270;
-    st.prev_lobe = _e222;
-    st.pdf_bsdf = _e246;
-    float _e276 = _group_0_binding_0_cs.eps;
-    st.origin = (x_22 + (_e123 * _e276));
-    st.dir = _e244;
-    bool _e280 = continues_path(_e244, _e147, _e123);
-    if (!(!(_e280))) {
-        local_1 = !((_e246 > 0.0));
+    vec3 _e274 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e274;
+    st.prev_lobe = _e226;
+    st.pdf_bsdf = _e250;
+    float _e280 = _group_0_binding_0_cs.eps;
+    st.origin = (x_22 + (_e123 * _e280));
+    st.dir = _e248;
+    bool _e284 = continues_path(_e248, _e147, _e123);
+    if (!(!(_e284))) {
+        local_1 = !((_e250 > 0.0));
     } else {
         local_1 = true;
     }
-    bool _e289 = local_1;
-    if (!(_e289)) {
-        uint _e295 = _group_0_binding_0_cs.depth;
-        uint _e300 = _group_0_binding_0_cs.max_depth;
-        local_2 = ((_e295 + 1u) >= _e300);
+    bool _e293 = local_1;
+    if (!(_e293)) {
+        uint _e299 = _group_0_binding_0_cs.depth;
+        uint _e304 = _group_0_binding_0_cs.max_depth;
+        local_2 = ((_e299 + 1u) >= _e304);
     } else {
         local_2 = true;
     }
-    bool _e303 = local_2;
-    if (_e303) {
+    bool _e307 = local_2;
+    if (_e307) {
         st.alive = 0u;
     }
-    uint _e308 = _group_0_binding_0_cs.depth;
-    bool _e309 = plays_roulette(_e308);
-    if (_e309) {
-        uint _e313 = st.alive;
-        local_3 = (_e313 == 1u);
+    uint _e312 = _group_0_binding_0_cs.depth;
+    bool _e313 = plays_roulette(_e312);
+    if (_e313) {
+        uint _e317 = st.alive;
+        local_3 = (_e317 == 1u);
     } else {
         local_3 = false;
     }
-    bool _e317 = local_3;
-    if (_e317) {
-        vec3 _e319 = st.beta;
-        float _e320 = path_survival(_e319);
-        float _e321 = next_uniform(rng);
-        if ((_e321 >= _e320)) {
+    bool _e321 = local_3;
+    if (_e321) {
+        vec3 _e323 = st.beta;
+        float _e324 = path_survival(_e323);
+        float _e325 = next_uniform(rng);
+        if ((_e325 >= _e324)) {
             st.alive = 0u;
         } else {
-            vec3 _e326 = st.beta;
-            st.beta = (_e326 / vec3(_e320));
+            vec3 _e330 = st.beta;
+            st.beta = (_e330 / vec3(_e324));
         }
     }
-    uint _e330 = rng;
-    st.rng = _e330;
-    GpuPathState _e333 = st;
-    _group_0_binding_10_cs[i_8] = _e333;
+    uint _e334 = rng;
+    st.rng = _e334;
+    GpuPathState _e337 = st;
+    _group_0_binding_10_cs[i_8] = _e337;
     return;
 }
 

@@ -192,7 +192,7 @@ struct BshNode {
     uint child;
     uint next;
     uint light;
-    uint pad;
+    float extent;
 };
 
 struct GpuLightBvhNode {
@@ -227,6 +227,7 @@ static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
+static const float RANGE_SCALE_MAX = 64.0;
 static const uint LIGHT_BVH_LEAF = 4294967295u;
 static const float ONE_MINUS_EPSILON = 0.99999994;
 static const float F32_MAX = 3.4028235e38;
@@ -766,6 +767,17 @@ float ies_light_candela(uint tab_4, uint base_3, float3 nadir, float3 reference,
     return _e9;
 }
 
+float bsh_scaled_radius(BshNode node, float scale)
+{
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3)
 {
     uint a_lo = (a_4 & 65535u);
@@ -1110,6 +1122,21 @@ float specular_probability(float4 lobe)
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
+float receiver_peak(float4 lobe_1)
+{
+    const float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+float range_scale(float4 lobe_2)
+{
+    if ((lobe_2.y <= 0.0)) {
+        return 1.0;
+    }
+    const float _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
 float3 mirror_dir(float3 n_16, float3 v_5)
 {
     return ((n_16 * (2.0 * dot(n_16, v_5))) - v_5);
@@ -1261,7 +1288,7 @@ float light_importance(float3 center_2, float radius_2, float phi_1, float3 axis
     return max(_e18, 0.0);
 }
 
-float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_20, float3 r_3, float4 lobe_1)
+float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_20, float3 r_3, float4 lobe_3)
 {
     bool local_13 = (bool)0;
 
@@ -1278,19 +1305,19 @@ float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axi
     }
     const float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     const float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
-    const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_1.z);
-    const float _e39 = smith_root(lobe_1.w, lobe_1.z);
-    float spec = (((lobe_1.y * _e33) * 0.25) / _e39);
-    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+    const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
+    const float _e39 = smith_root(lobe_3.w, lobe_3.z);
+    float spec = (((lobe_3.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-float receiver_importance(float3 center_4, float radius_4, float phi_3, float3 axis_3, float cos_o_3, float cos_e_3, float3 p_4, float3 n_21, float3 r_4, float4 lobe_2)
+float receiver_importance(float3 center_4, float radius_4, float phi_3, float3 axis_3, float cos_o_3, float cos_e_3, float3 p_4, float3 n_21, float3 r_4, float4 lobe_4)
 {
-    if ((lobe_2.y <= 0.0)) {
+    if ((lobe_4.y <= 0.0)) {
         const float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    const float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    const float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1300,15 +1327,15 @@ float candidate_weight(float importance, float rt2_5, float d2_9)
     return (importance * _e3);
 }
 
-float cone_weight(float3 center_5, float radius_5, float phi_4, float3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, float3 p_5, float3 n_22, float3 r_5, float4 lobe_3)
+float cone_weight(float3 center_5, float radius_5, float phi_4, float3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, float3 p_5, float3 n_22, float3 r_5, float4 lobe_5)
 {
     float3 v_17 = (p_5 - center_5);
-    if ((lobe_3.y <= 0.0)) {
+    if ((lobe_5.y <= 0.0)) {
         const float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         const float _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
         return _e19;
     }
-    const float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    const float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     const float _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
     return _e22;
 }
@@ -1743,20 +1770,20 @@ float3 diffuse_radiance(float3 albedo, float3 emission, float3 e_2)
     return (emission + ((albedo * INV_PI) * e_2));
 }
 
-BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, uint arg5) {
+BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
     BshNode ret = (BshNode)0;
     ret.center_ = arg0;
     ret.radius = arg1;
     ret.child = arg2;
     ret.next = arg3;
     ret.light = arg4;
-    ret.pad = arg5;
+    ret.extent = arg5;
     return ret;
 }
 
 BshNode bsh_node(uint nodes, uint i_2)
 {
-    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_2*32+0)), asfloat(bsh_nodes.Load(i_2*32+12)), asuint(bsh_nodes.Load(i_2*32+16)), asuint(bsh_nodes.Load(i_2*32+20)), asuint(bsh_nodes.Load(i_2*32+24)), asuint(bsh_nodes.Load(i_2*32+28)));
+    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_2*32+0)), asfloat(bsh_nodes.Load(i_2*32+12)), asuint(bsh_nodes.Load(i_2*32+16)), asuint(bsh_nodes.Load(i_2*32+20)), asuint(bsh_nodes.Load(i_2*32+24)), asfloat(bsh_nodes.Load(i_2*32+28)));
     const BshNode bshnode = _e4;
     return bshnode;
 }
@@ -1782,7 +1809,7 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_15)
+uint bsh_next_leaf_scaled(uint nodes_3, uint start_1, float3 x_15, float scale_1)
 {
     uint i_3 = (uint)0;
 
@@ -1791,34 +1818,41 @@ uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_15)
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e4 = i_3;
-        if ((_e4 != BSH_NONE)) {
+        uint _e5 = i_3;
+        if ((_e5 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e7 = i_3;
-            const BshNode _e8 = bsh_node(nodes_3, _e7);
-            const bool _e11 = sphere_contains_point(_e8.center_, _e8.radius, x_15);
-            if (_e11) {
-                if ((_e8.child == BSH_NONE)) {
-                    uint _e15 = i_3;
-                    return _e15;
+            uint _e8 = i_3;
+            const BshNode _e9 = bsh_node(nodes_3, _e8);
+            const float _e11 = bsh_scaled_radius(_e9, scale_1);
+            const bool _e12 = sphere_contains_point(_e9.center_, _e11, x_15);
+            if (_e12) {
+                if ((_e9.child == BSH_NONE)) {
+                    uint _e16 = i_3;
+                    return _e16;
                 }
-                i_3 = _e8.child;
+                i_3 = _e9.child;
             } else {
-                i_3 = _e8.next;
+                i_3 = _e9.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-float4 bsh_children_sphere(uint nodes_4, uint i_4)
+uint bsh_next_leaf(uint nodes_4, uint start_2, float3 x_16)
 {
-    const BshNode _e2 = bsh_node(nodes_4, i_4);
-    const BshNode _e4 = bsh_node(nodes_4, _e2.child);
-    const BshNode _e6 = bsh_node(nodes_4, _e4.next);
+    const uint _e4 = bsh_next_leaf_scaled(nodes_4, start_2, x_16, 1.0);
+    return _e4;
+}
+
+float4 bsh_children_sphere(uint nodes_5, uint i_4)
+{
+    const BshNode _e2 = bsh_node(nodes_5, i_4);
+    const BshNode _e4 = bsh_node(nodes_5, _e2.child);
+    const BshNode _e6 = bsh_node(nodes_5, _e4.next);
     const float4 _e11 = sphere_union(_e4.center_, _e4.radius, _e6.center_, _e6.radius);
     return _e11;
 }
@@ -1832,10 +1866,10 @@ void main(uint3 gid : SV_DispatchThreadID)
     }
     uint _e9 = params.first;
     uint i_5 = asuint(order.Load((_e9 + gid.x)*4));
-    BshNode node = ConstructBshNode(asfloat(bsh_nodes.Load3(i_5*32+0)), asfloat(bsh_nodes.Load(i_5*32+12)), asuint(bsh_nodes.Load(i_5*32+16)), asuint(bsh_nodes.Load(i_5*32+20)), asuint(bsh_nodes.Load(i_5*32+24)), asuint(bsh_nodes.Load(i_5*32+28)));
-    if ((node.child == BSH_NONE)) {
-        float _e26 = asfloat(extent_5.Load(node.light*4));
-        float _e30 = asfloat(r2_7.Load(node.light*4));
+    BshNode node_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_5*32+0)), asfloat(bsh_nodes.Load(i_5*32+12)), asuint(bsh_nodes.Load(i_5*32+16)), asuint(bsh_nodes.Load(i_5*32+20)), asuint(bsh_nodes.Load(i_5*32+24)), asfloat(bsh_nodes.Load(i_5*32+28)));
+    if ((node_1.child == BSH_NONE)) {
+        float _e26 = asfloat(extent_5.Load(node_1.light*4));
+        float _e30 = asfloat(r2_7.Load(node_1.light*4));
         const float _e31 = range_radius(_e26, _e30);
         bsh_nodes.Store(12+i_5*32, asuint(_e31));
         return;

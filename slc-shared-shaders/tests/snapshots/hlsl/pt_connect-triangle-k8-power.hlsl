@@ -192,7 +192,7 @@ struct BshNode {
     uint child;
     uint next;
     uint light;
-    uint pad;
+    float extent;
 };
 
 struct GpuLightBvhNode {
@@ -249,6 +249,7 @@ static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
+static const float RANGE_SCALE_MAX = 64.0;
 static const uint LIGHT_BVH_LEAF = 4294967295u;
 static const float ONE_MINUS_EPSILON = 0.99999994;
 static const float F32_MAX = 3.4028235e38;
@@ -799,6 +800,17 @@ float ies_light_candela(uint tab_4, uint base_3, float3 nadir, float3 reference,
     return _e9;
 }
 
+float bsh_scaled_radius(BshNode node, float scale)
+{
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3)
 {
     uint a_lo = (a_4 & 65535u);
@@ -893,21 +905,21 @@ uint uniform_light(float u_3, uint n_8)
 
 float mis_balance(float pdf_a, float pdf_b)
 {
-    float s_1 = (pdf_a + pdf_b);
-    if ((s_1 <= 0.0)) {
+    float s_2 = (pdf_a + pdf_b);
+    if ((s_2 <= 0.0)) {
         return 0.0;
     }
-    return (pdf_a / s_1);
+    return (pdf_a / s_2);
 }
 
 float mis_power(float pdf_a_1, float pdf_b_1)
 {
     float a2_ = (pdf_a_1 * pdf_a_1);
-    float s_2 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if ((s_2 <= 0.0)) {
+    float s_3 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_3 <= 0.0)) {
         return 0.0;
     }
-    return (a2_ / s_2);
+    return (a2_ / s_3);
 }
 
 float light_strategy_pdf(float select_, float rt2_4, float d2_8, float area_1, float cos_y)
@@ -947,16 +959,16 @@ float cosine_pdf(float cos_theta_1)
 
 float3 onb_tangent(float3 n_9)
 {
-    float s_3 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_3 + n_9.z));
-    return float3((1.0 + (((s_3 * n_9.x) * n_9.x) * a_12)), (((s_3 * n_9.x) * n_9.y) * a_12), (-(s_3) * n_9.x));
+    float s_4 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
+    float a_12 = (-1.0 / (s_4 + n_9.z));
+    return float3((1.0 + (((s_4 * n_9.x) * n_9.x) * a_12)), (((s_4 * n_9.x) * n_9.y) * a_12), (-(s_4) * n_9.x));
 }
 
 float3 onb_bitangent(float3 n_10)
 {
-    float s_4 = ((n_10.z >= 0.0) ? 1.0 : -1.0);
-    float a_13 = (-1.0 / (s_4 + n_10.z));
-    return float3(((n_10.x * n_10.y) * a_13), (s_4 + ((n_10.y * n_10.y) * a_13)), -(n_10.y));
+    float s_5 = ((n_10.z >= 0.0) ? 1.0 : -1.0);
+    float a_13 = (-1.0 / (s_5 + n_10.z));
+    return float3(((n_10.x * n_10.y) * a_13), (s_5 + ((n_10.y * n_10.y) * a_13)), -(n_10.y));
 }
 
 float3 onb_to_world(float3 n_11, float3 d)
@@ -1143,6 +1155,21 @@ float specular_probability(float4 lobe)
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
+float receiver_peak(float4 lobe_1)
+{
+    const float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+float range_scale(float4 lobe_2)
+{
+    if ((lobe_2.y <= 0.0)) {
+        return 1.0;
+    }
+    const float _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
 float3 mirror_dir(float3 n_16, float3 v_5)
 {
     return ((n_16 * (2.0 * dot(n_16, v_5))) - v_5);
@@ -1151,9 +1178,9 @@ float3 mirror_dir(float3 n_16, float3 v_5)
 float bounded_vndf_k(float3 wi, float alpha_6)
 {
     float a_14 = saturate(alpha_6);
-    float s_5 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    float s_6 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
     float a2_3 = (a_14 * a_14);
-    float s2_ = (s_5 * s_5);
+    float s2_ = (s_6 * s_6);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
@@ -1294,7 +1321,7 @@ float light_importance(float3 center_2, float radius_2, float phi_1, float3 axis
     return max(_e18, 0.0);
 }
 
-float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_20, float3 r_3, float4 lobe_1)
+float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_20, float3 r_3, float4 lobe_3)
 {
     bool local_13 = (bool)0;
 
@@ -1311,19 +1338,19 @@ float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axi
     }
     const float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     const float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
-    const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_1.z);
-    const float _e39 = smith_root(lobe_1.w, lobe_1.z);
-    float spec = (((lobe_1.y * _e33) * 0.25) / _e39);
-    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+    const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
+    const float _e39 = smith_root(lobe_3.w, lobe_3.z);
+    float spec = (((lobe_3.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-float receiver_importance(float3 center_4, float radius_4, float phi_3, float3 axis_3, float cos_o_3, float cos_e_3, float3 p_4, float3 n_21, float3 r_4, float4 lobe_2)
+float receiver_importance(float3 center_4, float radius_4, float phi_3, float3 axis_3, float cos_o_3, float cos_e_3, float3 p_4, float3 n_21, float3 r_4, float4 lobe_4)
 {
-    if ((lobe_2.y <= 0.0)) {
+    if ((lobe_4.y <= 0.0)) {
         const float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    const float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    const float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1333,15 +1360,15 @@ float candidate_weight(float importance, float rt2_5, float d2_9)
     return (importance * _e3);
 }
 
-float cone_weight(float3 center_5, float radius_5, float phi_4, float3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, float3 p_5, float3 n_22, float3 r_5, float4 lobe_3)
+float cone_weight(float3 center_5, float radius_5, float phi_4, float3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, float3 p_5, float3 n_22, float3 r_5, float4 lobe_5)
 {
     float3 v_17 = (p_5 - center_5);
-    if ((lobe_3.y <= 0.0)) {
+    if ((lobe_5.y <= 0.0)) {
         const float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         const float _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
         return _e19;
     }
-    const float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    const float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     const float _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
     return _e22;
 }
@@ -1358,9 +1385,9 @@ float weighted_select_pdf(float w_7, float w_sum_2, bool in_range_1, uint k_4)
 
 float bvh_first_prob(float c0_, float c1_2)
 {
-    float s_6 = (c0_ + c1_2);
-    if ((s_6 > 0.0)) {
-        return (c0_ / s_6);
+    float s_7 = (c0_ + c1_2);
+    if ((s_7 > 0.0)) {
+        return (c0_ / s_7);
     }
     return -1.0;
 }
@@ -1459,8 +1486,8 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_8, float3 fac
 {
     bool local_15 = (bool)0;
 
-    float3 s_7 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
-    float l2_1 = dot(s_7, s_7);
+    float3 s_8 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
+    float l2_1 = dot(s_8, s_8);
     if (!(!((l2_1 > 1e-12)))) {
         local_15 = !((l2_1 < 3e38));
     } else {
@@ -1470,7 +1497,7 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_8, float3 fac
     if (_e24) {
         return facing;
     }
-    float3 n_38 = (s_7 / (sqrt(l2_1)).xxx);
+    float3 n_38 = (s_8 / (sqrt(l2_1)).xxx);
     return ((dot(n_38, facing) < 0.0) ? -(n_38) : n_38);
 }
 
@@ -1488,8 +1515,8 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_7, float3 b_6, float3 c_9, f
         return -1.0;
     }
     float inv_1 = (1.0 / det);
-    float3 s_8 = (o_1 - a_7);
-    float u_7 = (dot(s_8, p_7) * inv_1);
+    float3 s_9 = (o_1 - a_7);
+    float u_7 = (dot(s_9, p_7) * inv_1);
     if (!((u_7 < 0.0))) {
         local_16 = (u_7 > 1.0);
     } else {
@@ -1499,7 +1526,7 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_7, float3 b_6, float3 c_9, f
     if (_e28) {
         return -1.0;
     }
-    float3 q_5 = cross(s_8, e1_2);
+    float3 q_5 = cross(s_9, e1_2);
     float v_18 = (dot(d_3, q_5) * inv_1);
     if (!((v_18 < 0.0))) {
         local_17 = ((u_7 + v_18) > 1.0);
@@ -1848,7 +1875,7 @@ GeoHit trace(float3 o_2, float3 d_6, float t_min_1, float t_max_2, bool any_hit)
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
     uint sp = 0u;
-    uint node = 0u;
+    uint node_1 = 0u;
     uint i_2 = (uint)0;
 
     hit.t = t_max_2;
@@ -1863,7 +1890,7 @@ GeoHit trace(float3 o_2, float3 d_6, float t_min_1, float t_max_2, bool any_hit)
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e21 = node;
+        uint _e21 = node_1;
         GpuGeoNode n_39 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
         const float _e28 = ray_aabb(o_2, _e14, n_39.bmin, n_39.bmax, _e27);
@@ -1910,7 +1937,7 @@ GeoHit trace(float3 o_2, float3 d_6, float t_min_1, float t_max_2, bool any_hit)
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_39.first;
+                node_1 = n_39.first;
                 continue;
             }
         }
@@ -1922,7 +1949,7 @@ GeoHit trace(float3 o_2, float3 d_6, float t_min_1, float t_max_2, bool any_hit)
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[min(uint(_e78), 63u)];
-        node = _e80;
+        node_1 = _e80;
     }
     GeoHit _e81 = hit;
     const GeoHit geohit_2 = _e81;
@@ -1941,20 +1968,20 @@ bool occluded(float3 a_9, float3 b_7)
     return (_e12.tri != NO_LIGHT);
 }
 
-BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, uint arg5) {
+BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
     BshNode ret = (BshNode)0;
     ret.center_ = arg0;
     ret.radius = arg1;
     ret.child = arg2;
     ret.next = arg3;
     ret.light = arg4;
-    ret.pad = arg5;
+    ret.extent = arg5;
     return ret;
 }
 
 BshNode bsh_node(uint nodes, uint i_3)
 {
-    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_3*32+0)), asfloat(bsh_nodes.Load(i_3*32+12)), asuint(bsh_nodes.Load(i_3*32+16)), asuint(bsh_nodes.Load(i_3*32+20)), asuint(bsh_nodes.Load(i_3*32+24)), asuint(bsh_nodes.Load(i_3*32+28)));
+    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_3*32+0)), asfloat(bsh_nodes.Load(i_3*32+12)), asuint(bsh_nodes.Load(i_3*32+16)), asuint(bsh_nodes.Load(i_3*32+20)), asuint(bsh_nodes.Load(i_3*32+24)), asfloat(bsh_nodes.Load(i_3*32+28)));
     const BshNode bshnode = _e4;
     return bshnode;
 }
@@ -1973,7 +2000,7 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_15)
+uint bsh_next_leaf_scaled(uint nodes_3, uint start_1, float3 x_15, float scale_1)
 {
     uint i_4 = (uint)0;
 
@@ -1982,39 +2009,46 @@ uint bsh_next_leaf(uint nodes_3, uint start_1, float3 x_15)
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e4 = i_4;
-        if ((_e4 != BSH_NONE)) {
+        uint _e5 = i_4;
+        if ((_e5 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e7 = i_4;
-            const BshNode _e8 = bsh_node(nodes_3, _e7);
-            const bool _e11 = sphere_contains_point(_e8.center_, _e8.radius, x_15);
-            if (_e11) {
-                if ((_e8.child == BSH_NONE)) {
-                    uint _e15 = i_4;
-                    return _e15;
+            uint _e8 = i_4;
+            const BshNode _e9 = bsh_node(nodes_3, _e8);
+            const float _e11 = bsh_scaled_radius(_e9, scale_1);
+            const bool _e12 = sphere_contains_point(_e9.center_, _e11, x_15);
+            if (_e12) {
+                if ((_e9.child == BSH_NONE)) {
+                    uint _e16 = i_4;
+                    return _e16;
                 }
-                i_4 = _e8.child;
+                i_4 = _e9.child;
             } else {
-                i_4 = _e8.next;
+                i_4 = _e9.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-float4 bsh_children_sphere(uint nodes_4, uint i_5)
+uint bsh_next_leaf(uint nodes_4, uint start_2, float3 x_16)
 {
-    const BshNode _e2 = bsh_node(nodes_4, i_5);
-    const BshNode _e4 = bsh_node(nodes_4, _e2.child);
-    const BshNode _e6 = bsh_node(nodes_4, _e4.next);
+    const uint _e4 = bsh_next_leaf_scaled(nodes_4, start_2, x_16, 1.0);
+    return _e4;
+}
+
+float4 bsh_children_sphere(uint nodes_5, uint i_5)
+{
+    const BshNode _e2 = bsh_node(nodes_5, i_5);
+    const BshNode _e4 = bsh_node(nodes_5, _e2.child);
+    const BshNode _e6 = bsh_node(nodes_5, _e4.next);
     const float4 _e11 = sphere_union(_e4.center_, _e4.radius, _e6.center_, _e6.radius);
     return _e11;
 }
 
-Picks bsh_collect(float3 x_16, uint seed_3)
+Picks bsh_collect(float3 x_17, float scale_2, uint seed_3)
 {
     Picks picks = (Picks)0;
     uint h_2 = (uint)0;
@@ -2022,52 +2056,52 @@ Picks bsh_collect(float3 x_16, uint seed_3)
 
     picks.n = 0u;
     h_2 = seed_3;
-    const uint _e8 = bsh_first(BSH);
-    const uint _e9 = bsh_next_leaf(BSH, _e8, x_16);
-    i_6 = _e9;
+    const uint _e9 = bsh_first(BSH);
+    const uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_17, scale_2);
+    i_6 = _e10;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e42 = i_6;
-            uint _e45 = asuint(bsh_nodes.Load(20+_e42*32));
-            const uint _e46 = bsh_next_leaf(BSH, _e45, x_16);
-            i_6 = _e46;
+            uint _e43 = i_6;
+            uint _e46 = asuint(bsh_nodes.Load(20+_e43*32));
+            const uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_17, scale_2);
+            i_6 = _e47;
         }
         loop_init_1 = false;
-        uint _e11 = i_6;
-        if ((_e11 != BSH_NONE)) {
+        uint _e12 = i_6;
+        if ((_e12 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e15 = picks.n;
-            const bool _e16 = reservoir_takes(_e15);
-            if (_e16) {
-                uint _e18 = picks.n;
-                picks.n = (_e18 + 1u);
-                uint _e21 = h_2;
-                const uint _e22 = pcg_hash(_e21);
-                h_2 = _e22;
+            uint _e16 = picks.n;
+            const bool _e17 = reservoir_takes(_e16);
+            if (_e17) {
+                uint _e19 = picks.n;
+                picks.n = (_e19 + 1u);
+                uint _e22 = h_2;
+                const uint _e23 = pcg_hash(_e22);
+                h_2 = _e23;
                 uint hi_4 = h_2;
-                uint _e24 = h_2;
-                const uint _e25 = pcg_hash(_e24);
-                h_2 = _e25;
-                uint _e27 = picks.n;
-                uint _e29 = h_2;
-                const uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
-                if ((_e30 < K)) {
-                    uint _e36 = i_6;
-                    uint _e39 = asuint(bsh_nodes.Load(24+_e36*32));
-                    picks.light[min(uint(_e30), 7u)] = _e39;
+                uint _e25 = h_2;
+                const uint _e26 = pcg_hash(_e25);
+                h_2 = _e26;
+                uint _e28 = picks.n;
+                uint _e30 = h_2;
+                const uint _e31 = reservoir_slot(_e28, K, hi_4, _e30);
+                if ((_e31 < K)) {
+                    uint _e37 = i_6;
+                    uint _e40 = asuint(bsh_nodes.Load(24+_e37*32));
+                    picks.light[min(uint(_e31), 7u)] = _e40;
                 }
             }
         }
     }
-    Picks _e47 = picks;
-    const Picks picks_1 = _e47;
+    Picks _e48 = picks;
+    const Picks picks_1 = _e48;
     return picks_1;
 }
 
@@ -2084,43 +2118,43 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_17, float3 n_28, float3 ng_2, float w_res, float u1_5, float u2_5, float eps)
+Connection connect(uint li, float3 x_18, float3 n_28, float3 ng_2, float s_1, float w_res, float u1_5, float u2_5, float eps)
 {
     Connection c_10 = (Connection)0;
     bool local_23 = (bool)0;
 
     c_10.e = (0.0).xxx;
     GpuLight l_8 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
-    const float3 _e16 = light_point(l_8, u1_5, u2_5);
-    c_10.y = _e16;
-    float3 _e19 = c_10.y;
-    float _e22 = asfloat(r2_7.Load(li*4));
-    const float _e23 = connection_cosine(x_17, _e19, n_28, ng_2, _e22);
-    c_10.cos_x = _e23;
-    float _e25 = c_10.cos_x;
-    if (!((_e25 <= 0.0))) {
-        float3 _e34 = c_10.y;
-        const bool _e35 = occluded((x_17 + (ng_2 * eps)), _e34);
-        local_23 = _e35;
+    const float3 _e17 = light_point(l_8, u1_5, u2_5);
+    c_10.y = _e17;
+    float3 _e20 = c_10.y;
+    float _e23 = asfloat(r2_7.Load(li*4));
+    const float _e25 = connection_cosine(x_18, _e20, n_28, ng_2, (s_1 * _e23));
+    c_10.cos_x = _e25;
+    float _e27 = c_10.cos_x;
+    if (!((_e27 <= 0.0))) {
+        float3 _e36 = c_10.y;
+        const bool _e37 = occluded((x_18 + (ng_2 * eps)), _e36);
+        local_23 = _e37;
     } else {
         local_23 = true;
     }
-    bool _e37 = local_23;
-    if (_e37) {
-        Connection _e38 = c_10;
-        const Connection connection = _e38;
+    bool _e39 = local_23;
+    if (_e39) {
+        Connection _e40 = c_10;
+        const Connection connection = _e40;
         return connection;
     }
-    float3 _e40 = c_10.y;
-    float3 v_20 = (x_17 - _e40);
+    float3 _e42 = c_10.y;
+    float3 v_20 = (x_18 - _e42);
     float d2_15 = dot(v_20, v_20);
-    const float3 _e47 = light_intensity(l_8, (v_20 / (sqrt(d2_15)).xxx));
-    float _e49 = c_10.cos_x;
-    float _e52 = asfloat(rt2_7.Load(li*4));
-    const float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
-    c_10.e = (_e47 * _e53);
-    Connection _e55 = c_10;
-    const Connection connection_1 = _e55;
+    const float3 _e49 = light_intensity(l_8, (v_20 / (sqrt(d2_15)).xxx));
+    float _e51 = c_10.cos_x;
+    float _e54 = asfloat(rt2_7.Load(li*4));
+    const float _e56 = connection_factor(_e51, d2_15, (s_1 * _e54), w_res);
+    c_10.e = (_e49 * _e56);
+    Connection _e58 = c_10;
+    const Connection connection_1 = _e58;
     return connection_1;
 }
 
@@ -2143,12 +2177,13 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_weight(uint li_1, float3 x_18, float3 n_29, float3 r_6, float4 lobe_4)
+float light_weight(uint li_1, float3 x_19, float3 n_29, float3 r_6, float4 lobe_6)
 {
     GpuLightCone c_17 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    float _e16 = asfloat(rt2_7.Load(li_1*4));
-    const float _e17 = cone_weight(c_17.center_, c_17.radius, c_17.phi, c_17.axis, c_17.cos_o, c_17.cos_e, _e16, x_18, n_29, r_6, lobe_4);
-    return _e17;
+    const float _e14 = range_scale(lobe_6);
+    float _e17 = asfloat(rt2_7.Load(li_1*4));
+    const float _e19 = cone_weight(c_17.center_, c_17.radius, c_17.phi, c_17.axis, c_17.cos_o, c_17.cos_e, (_e14 * _e17), x_19, n_29, r_6, lobe_6);
+    return _e19;
 }
 
 GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
@@ -2164,33 +2199,33 @@ GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, f
     return ret;
 }
 
-GpuLightBvhNode light_bvh_node(uint nodes_5, uint i_7)
+GpuLightBvhNode light_bvh_node(uint nodes_6, uint i_7)
 {
     GpuLightBvhNode _e4 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_7*48+0)), asfloat(light_bvh.Load(i_7*48+12)), asfloat(light_bvh.Load3(i_7*48+16)), asfloat(light_bvh.Load(i_7*48+28)), asfloat(light_bvh.Load(i_7*48+32)), asfloat(light_bvh.Load(i_7*48+36)), asuint(light_bvh.Load(i_7*48+40)), asuint(light_bvh.Load(i_7*48+44)));
     const GpuLightBvhNode gpulightbvhnode = _e4;
     return gpulightbvhnode;
 }
 
-uint light_bvh_count(uint nodes_6)
+uint light_bvh_count(uint nodes_7)
 {
     return ((NagaBufferLength(light_bvh) - 0) / 48);
 }
 
-float bvh_importance(uint nodes_7, uint i_8, float3 x_19, float3 n_30, float3 r_7, float4 lobe_5)
+float bvh_importance(uint nodes_8, uint i_8, float3 x_20, float3 n_30, float3 r_7, float4 lobe_7)
 {
-    const GpuLightBvhNode _e6 = light_bvh_node(nodes_7, i_8);
-    const float _e13 = receiver_importance(_e6.center_, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_19, n_30, r_7, lobe_5);
+    const GpuLightBvhNode _e6 = light_bvh_node(nodes_8, i_8);
+    const float _e13 = receiver_importance(_e6.center_, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_20, n_30, r_7, lobe_7);
     return _e13;
 }
 
-float bvh_first(uint nodes_8, uint i_9, float3 x_20, float3 n_31, float3 r_8, float4 lobe_6)
+float bvh_first(uint nodes_9, uint i_9, float3 x_21, float3 n_31, float3 r_8, float4 lobe_8)
 {
     bool local_24 = (bool)0;
 
-    const GpuLightBvhNode _e6 = light_bvh_node(nodes_8, i_9);
+    const GpuLightBvhNode _e6 = light_bvh_node(nodes_9, i_9);
     uint j = _e6.second;
     if (!((j <= (i_9 + 1u)))) {
-        const uint _e14 = light_bvh_count(nodes_8);
+        const uint _e14 = light_bvh_count(nodes_9);
         local_24 = (j >= _e14);
     } else {
         local_24 = true;
@@ -2199,8 +2234,8 @@ float bvh_first(uint nodes_8, uint i_9, float3 x_20, float3 n_31, float3 r_8, fl
     if (_e17) {
         return -1.0;
     }
-    const float _e21 = bvh_importance(nodes_8, (i_9 + 1u), x_20, n_31, r_8, lobe_6);
-    const float _e22 = bvh_importance(nodes_8, j, x_20, n_31, r_8, lobe_6);
+    const float _e21 = bvh_importance(nodes_9, (i_9 + 1u), x_21, n_31, r_8, lobe_8);
+    const float _e22 = bvh_importance(nodes_9, j, x_21, n_31, r_8, lobe_8);
     const float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -2218,7 +2253,7 @@ BvhPick bvh_pick_none()
     return bvhpick;
 }
 
-BvhPick light_bvh_sample(uint nodes_9, float3 x_21, float3 n_32, float3 r_9, float4 lobe_7, float u_in)
+BvhPick light_bvh_sample(uint nodes_10, float3 x_22, float3 n_32, float3 r_9, float4 lobe_9, float u_in)
 {
     BvhPick pick = (BvhPick)0;
     float u_6 = (float)0;
@@ -2234,18 +2269,18 @@ BvhPick light_bvh_sample(uint nodes_9, float3 x_21, float3 n_32, float3 r_9, flo
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         uint _e13 = i_10;
-        const uint _e14 = light_bvh_count(nodes_9);
+        const uint _e14 = light_bvh_count(nodes_10);
         if ((_e13 < _e14)) {
         } else {
             break;
         }
         {
             uint _e16 = i_10;
-            const GpuLightBvhNode _e17 = light_bvh_node(nodes_9, _e16);
+            const GpuLightBvhNode _e17 = light_bvh_node(nodes_10, _e16);
             if ((_e17.second == LIGHT_BVH_LEAF)) {
                 uint _e21 = i_10;
                 if (!((_e21 > 0u))) {
-                    const float _e28 = bvh_importance(nodes_9, 0u, x_21, n_32, r_9, lobe_7);
+                    const float _e28 = bvh_importance(nodes_10, 0u, x_22, n_32, r_9, lobe_9);
                     local_25 = (_e28 > 0.0);
                 } else {
                     local_25 = true;
@@ -2261,7 +2296,7 @@ BvhPick light_bvh_sample(uint nodes_9, float3 x_21, float3 n_32, float3 r_9, flo
                 return bvhpick_1;
             }
             uint _e38 = i_10;
-            const float _e39 = bvh_first(nodes_9, _e38, x_21, n_32, r_9, lobe_7);
+            const float _e39 = bvh_first(nodes_10, _e38, x_22, n_32, r_9, lobe_9);
             if ((_e39 < 0.0)) {
                 BvhPick _e42 = pick;
                 const BvhPick bvhpick_2 = _e42;
@@ -2283,14 +2318,14 @@ BvhPick light_bvh_sample(uint nodes_9, float3 x_21, float3 n_32, float3 r_9, flo
     return bvhpick_3;
 }
 
-float light_bvh_pmf(uint nodes_10, uint leaf, float3 x_22, float3 n_33, float3 r_10, float4 lobe_8)
+float light_bvh_pmf(uint nodes_11, uint leaf, float3 x_23, float3 n_33, float3 r_10, float4 lobe_10)
 {
     uint i_11 = 0u;
     float pmf_1 = 1.0;
     bool local_26 = (bool)0;
     bool local_27 = (bool)0;
 
-    const uint _e6 = light_bvh_count(nodes_10);
+    const uint _e6 = light_bvh_count(nodes_11);
     if ((leaf >= _e6)) {
         return 0.0;
     }
@@ -2299,20 +2334,20 @@ float light_bvh_pmf(uint nodes_10, uint leaf, float3 x_22, float3 n_33, float3 r
         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         uint _e13 = i_11;
-        const uint _e14 = light_bvh_count(nodes_10);
+        const uint _e14 = light_bvh_count(nodes_11);
         if ((_e13 < _e14)) {
         } else {
             break;
         }
         {
             uint _e16 = i_11;
-            const GpuLightBvhNode _e17 = light_bvh_node(nodes_10, _e16);
+            const GpuLightBvhNode _e17 = light_bvh_node(nodes_11, _e16);
             if ((_e17.second == LIGHT_BVH_LEAF)) {
                 uint _e21 = i_11;
                 if ((_e21 == leaf)) {
                     uint _e25 = i_11;
                     if (!((_e25 > 0u))) {
-                        const float _e32 = bvh_importance(nodes_10, 0u, x_22, n_33, r_10, lobe_8);
+                        const float _e32 = bvh_importance(nodes_11, 0u, x_23, n_33, r_10, lobe_10);
                         local_27 = (_e32 > 0.0);
                     } else {
                         local_27 = true;
@@ -2330,7 +2365,7 @@ float light_bvh_pmf(uint nodes_10, uint leaf, float3 x_22, float3 n_33, float3 r
                 return 0.0;
             }
             uint _e41 = i_11;
-            const float _e42 = bvh_first(nodes_10, _e41, x_22, n_33, r_10, lobe_8);
+            const float _e42 = bvh_first(nodes_11, _e41, x_23, n_33, r_10, lobe_10);
             if ((_e42 < 0.0)) {
                 return 0.0;
             }
@@ -2344,48 +2379,50 @@ float light_bvh_pmf(uint nodes_10, uint leaf, float3 x_22, float3 n_33, float3 r
     return 0.0;
 }
 
-float select_pdf(uint li_2, float3 x_23, float3 n_34, float3 r_11, float4 lobe_9, uint nee, bool in_range_2)
+float select_pdf(uint li_2, float3 x_24, float3 n_34, float3 r_11, float4 lobe_11, uint nee, bool in_range_2)
 {
     const float _e8 = reservoir_select_pdf(nee, in_range_2, K);
     return _e8;
 }
 
-float light_pdf(uint li_3, float3 x_24, float3 n_35, float3 r_12, float4 lobe_10, float3 y_3, uint nee_1, bool in_range_3)
+float light_pdf(uint li_3, float3 x_25, float3 n_35, float3 r_12, float4 lobe_12, float3 y_3, uint nee_1, bool in_range_3)
 {
     GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
-    float3 v_21 = (x_24 - y_3);
+    float3 v_21 = (x_25 - y_3);
     float d2_16 = dot(v_21, v_21);
     const float3 _e13 = light_normal(l_9);
     float cos_y_1 = ((d2_16 > 0.0) ? dot(_e13, (v_21 / (sqrt(d2_16)).xxx)) : 0.0);
-    const float _e22 = select_pdf(li_3, x_24, n_35, r_12, lobe_10, nee_1, in_range_3);
-    float _e25 = asfloat(rt2_7.Load(li_3*4));
-    const float _e26 = light_area(l_9);
-    const float _e27 = light_strategy_pdf(_e22, _e25, d2_16, _e26, cos_y_1);
-    return _e27;
+    const float _e22 = select_pdf(li_3, x_25, n_35, r_12, lobe_12, nee_1, in_range_3);
+    const float _e23 = range_scale(lobe_12);
+    float _e26 = asfloat(rt2_7.Load(li_3*4));
+    const float _e28 = light_area(l_9);
+    const float _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_16, _e28, cos_y_1);
+    return _e29;
 }
 
-float3 shade_pick(uint li_4, float3 x_25, float3 n_36, float3 ng_3, GpuMaterial m, float3 wo_1, float3 r_13, float4 lobe_11, float w_11, uint nee_2, float u1_6, float u2_6)
+float3 shade_pick(uint li_4, float3 x_26, float3 n_36, float3 ng_3, GpuMaterial m, float3 wo_1, float3 r_13, float4 lobe_13, float w_11, uint nee_2, float u1_6, float u2_6)
 {
     float mis = 1.0;
 
-    float _e14 = params.eps;
-    const Connection _e15 = connect(li_4, x_25, n_36, ng_3, w_11, u1_6, u2_6, _e14);
-    if ((_e15.cos_x <= 0.0)) {
+    const float _e12 = range_scale(lobe_13);
+    float _e15 = params.eps;
+    const Connection _e16 = connect(li_4, x_26, n_36, ng_3, _e12, w_11, u1_6, u2_6, _e15);
+    if ((_e16.cos_x <= 0.0)) {
         return (0.0).xxx;
     }
-    float3 l_10 = normalize((_e15.y - x_25));
-    GpuLight _e28 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
-    const float _e29 = light_area(_e28);
-    if ((_e29 > 0.0)) {
-        const float _e34 = light_pdf(li_4, x_25, n_36, r_13, lobe_11, _e15.y, nee_2, true);
-        const float _e36 = specular_probability(lobe_11);
-        const float _e37 = bsdf_pdf(n_36, wo_1, l_10, m.alpha, _e36);
-        const float _e38 = mis_weight(_e34, _e37);
-        mis = _e38;
+    float3 l_10 = normalize((_e16.y - x_26));
+    GpuLight _e29 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
+    const float _e30 = light_area(_e29);
+    if ((_e30 > 0.0)) {
+        const float _e35 = light_pdf(li_4, x_26, n_36, r_13, lobe_13, _e16.y, nee_2, true);
+        const float _e37 = specular_probability(lobe_13);
+        const float _e38 = bsdf_pdf(n_36, wo_1, l_10, m.alpha, _e37);
+        const float _e39 = mis_weight(_e35, _e38);
+        mis = _e39;
     }
-    const float3 _e44 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_36, wo_1, l_10);
-    float _e47 = mis;
-    return ((_e44 * _e15.e) * _e47);
+    const float3 _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_36, wo_1, l_10);
+    float _e48 = mis;
+    return ((_e45 * _e16.e) * _e48);
 }
 
 GpuPathVertex ConstructGpuPathVertex(float3 arg0, uint arg1, float3 arg2, uint arg3, float3 arg4, float arg5, float3 arg6, float arg7, float3 arg8, float arg9) {
@@ -2431,59 +2468,61 @@ void main(uint3 gid : SV_DispatchThreadID)
         candidates.Store(i_12*4, asuint(0u));
         return;
     }
-    float3 x_26 = vtx.position;
+    float3 x_27 = vtx.position;
     float3 n_40 = vtx.normal;
     float3 ng_4 = vtx.gnormal;
     GpuMaterial m_4 = ConstructGpuMaterial(asfloat(materials.Load3(vtx.material*48+0)), asfloat(materials.Load(vtx.material*48+12)), asfloat(materials.Load3(vtx.material*48+16)), asfloat(materials.Load(vtx.material*48+28)), asfloat(materials.Load3(vtx.material*48+32)), asfloat(materials.Load(vtx.material*48+44)));
     float3 wo_2 = vtx.wo;
     const float3 _e23 = mirror_dir(n_40, wo_2);
     const float4 _e30 = receiver_lobe(m_4.albedo, m_4.metallic, m_4.f0_, m_4.f90_, m_4.alpha, dot(n_40, wo_2));
-    uint _e33 = params.seed;
-    uint _e36 = params.frame;
-    const uint _e37 = point_stream(_e33, i_12, _e36);
-    const uint _e38 = pick_stream(_e37);
-    h = _e38;
-    const Picks _e43 = bsh_collect(x_26, _e37);
-    candidates.Store(i_12*4, asuint(_e43.n));
-    const float _e49 = reservoir_weight(_e43.n, K);
+    const float _e31 = range_scale(_e30);
+    float scale_3 = sqrt(_e31);
+    uint _e35 = params.seed;
+    uint _e38 = params.frame;
+    const uint _e39 = point_stream(_e35, i_12, _e38);
+    const uint _e40 = pick_stream(_e39);
+    h = _e40;
+    const Picks _e45 = bsh_collect(x_27, scale_3, _e39);
+    candidates.Store(i_12*4, asuint(_e45.n));
+    const float _e51 = reservoir_weight(_e45.n, K);
     uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e73 = s;
-            s = (_e73 + 1u);
+            uint _e75 = s;
+            s = (_e75 + 1u);
         }
         loop_init_2 = false;
-        uint _e52 = s;
-        if ((_e52 < min(_e43.n, K))) {
+        uint _e54 = s;
+        if ((_e54 < min(_e45.n, K))) {
         } else {
             break;
         }
         {
-            uint _e57 = h;
-            const uint _e58 = pcg_hash(_e57);
-            h = _e58;
             uint _e59 = h;
-            const float _e60 = xi_from_bits(_e59);
+            const uint _e60 = pcg_hash(_e59);
+            h = _e60;
             uint _e61 = h;
-            const uint _e62 = pcg_hash(_e61);
-            h = _e62;
-            float3 _e63 = sum;
-            uint _e65 = s;
-            uint _e68 = h;
-            const float _e69 = xi_from_bits(_e68);
-            const float3 _e70 = shade_pick(_e43.light[min(uint(_e65), 7u)], x_26, n_40, ng_4, m_4, wo_2, _e23, _e30, _e49, _e43.n, _e60, _e69);
-            sum = (_e63 + _e70);
+            const float _e62 = xi_from_bits(_e61);
+            uint _e63 = h;
+            const uint _e64 = pcg_hash(_e63);
+            h = _e64;
+            float3 _e65 = sum;
+            uint _e67 = s;
+            uint _e70 = h;
+            const float _e71 = xi_from_bits(_e70);
+            const float3 _e72 = shade_pick(_e45.light[min(uint(_e67), 7u)], x_27, n_40, ng_4, m_4, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71);
+            sum = (_e65 + _e72);
         }
     }
-    float3 _e76 = sum;
-    float3 add = (vtx.weight * _e76);
-    const bool _e78 = finite3_(add);
-    if (_e78) {
-        float4 _e81 = asfloat(radiance.Load4(i_12*16));
-        radiance.Store4(i_12*16, asuint((_e81 + float4(add, 0.0))));
+    float3 _e78 = sum;
+    float3 add = (vtx.weight * _e78);
+    const bool _e80 = finite3_(add);
+    if (_e80) {
+        float4 _e83 = asfloat(radiance.Load4(i_12*16));
+        radiance.Store4(i_12*16, asuint((_e83 + float4(add, 0.0))));
         return;
     } else {
         return;

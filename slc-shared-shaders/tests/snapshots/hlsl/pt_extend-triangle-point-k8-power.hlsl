@@ -192,7 +192,7 @@ struct BshNode {
     uint child;
     uint next;
     uint light;
-    uint pad;
+    float extent;
 };
 
 struct GpuLightBvhNode {
@@ -237,6 +237,7 @@ static const float MIN_D2_ = 1e-12;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
+static const float RANGE_SCALE_MAX = 64.0;
 static const uint LIGHT_BVH_LEAF = 4294967295u;
 static const float ONE_MINUS_EPSILON = 0.99999994;
 static const float F32_MAX = 3.4028235e38;
@@ -788,6 +789,17 @@ float ies_light_candela(uint tab_4, uint base_3, float3 nadir, float3 reference,
     return _e9;
 }
 
+float bsh_scaled_radius(BshNode node, float scale)
+{
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3)
 {
     uint a_lo = (a_4 & 65535u);
@@ -1132,6 +1144,21 @@ float specular_probability(float4 lobe)
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
+float receiver_peak(float4 lobe_1)
+{
+    const float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+float range_scale(float4 lobe_2)
+{
+    if ((lobe_2.y <= 0.0)) {
+        return 1.0;
+    }
+    const float _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
 float3 mirror_dir(float3 n_16, float3 v_6)
 {
     return ((n_16 * (2.0 * dot(n_16, v_6))) - v_6);
@@ -1283,7 +1310,7 @@ float light_importance(float3 center_2, float radius_2, float phi_1, float3 axis
     return max(_e18, 0.0);
 }
 
-float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_20, float3 r_3, float4 lobe_1)
+float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_20, float3 r_3, float4 lobe_3)
 {
     bool local_17 = (bool)0;
 
@@ -1300,19 +1327,19 @@ float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axi
     }
     const float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     const float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
-    const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_1.z);
-    const float _e39 = smith_root(lobe_1.w, lobe_1.z);
-    float spec = (((lobe_1.y * _e33) * 0.25) / _e39);
-    return (_e10 * (((lobe_1.x * INV_PI) * _e11) + spec));
+    const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
+    const float _e39 = smith_root(lobe_3.w, lobe_3.z);
+    float spec = (((lobe_3.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-float receiver_importance(float3 center_4, float radius_4, float phi_3, float3 axis_3, float cos_o_3, float cos_e_3, float3 p_4, float3 n_21, float3 r_4, float4 lobe_2)
+float receiver_importance(float3 center_4, float radius_4, float phi_3, float3 axis_3, float cos_o_3, float cos_e_3, float3 p_4, float3 n_21, float3 r_4, float4 lobe_4)
 {
-    if ((lobe_2.y <= 0.0)) {
+    if ((lobe_4.y <= 0.0)) {
         const float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    const float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    const float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1322,15 +1349,15 @@ float candidate_weight(float importance, float rt2_5, float d2_9)
     return (importance * _e3);
 }
 
-float cone_weight(float3 center_5, float radius_5, float phi_4, float3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, float3 p_5, float3 n_22, float3 r_5, float4 lobe_3)
+float cone_weight(float3 center_5, float radius_5, float phi_4, float3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, float3 p_5, float3 n_22, float3 r_5, float4 lobe_5)
 {
     float3 v_18 = (p_5 - center_5);
-    if ((lobe_3.y <= 0.0)) {
+    if ((lobe_5.y <= 0.0)) {
         const float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         const float _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_18, v_18));
         return _e19;
     }
-    const float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    const float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     const float _e22 = candidate_weight(_e20, rt2_6, dot(v_18, v_18));
     return _e22;
 }
@@ -1840,7 +1867,7 @@ GeoHit trace(float3 o_2, float3 d_6, float t_min_1, float t_max_2, bool any_hit)
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
     uint sp = 0u;
-    uint node = 0u;
+    uint node_1 = 0u;
     uint i_2 = (uint)0;
 
     hit.t = t_max_2;
@@ -1855,7 +1882,7 @@ GeoHit trace(float3 o_2, float3 d_6, float t_min_1, float t_max_2, bool any_hit)
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e21 = node;
+        uint _e21 = node_1;
         GpuGeoNode n_37 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
         const float _e28 = ray_aabb(o_2, _e14, n_37.bmin, n_37.bmax, _e27);
@@ -1902,7 +1929,7 @@ GeoHit trace(float3 o_2, float3 d_6, float t_min_1, float t_max_2, bool any_hit)
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_37.first;
+                node_1 = n_37.first;
                 continue;
             }
         }
@@ -1914,7 +1941,7 @@ GeoHit trace(float3 o_2, float3 d_6, float t_min_1, float t_max_2, bool any_hit)
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[min(uint(_e78), 63u)];
-        node = _e80;
+        node_1 = _e80;
     }
     GeoHit _e81 = hit;
     const GeoHit geohit_2 = _e81;
@@ -1952,12 +1979,13 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_weight(uint li, float3 x_15, float3 n_28, float3 r_6, float4 lobe_4)
+float light_weight(uint li, float3 x_15, float3 n_28, float3 r_6, float4 lobe_6)
 {
     GpuLightCone c_16 = ConstructGpuLightCone(asfloat(light_cones.Load3(li*48+0)), asfloat(light_cones.Load(li*48+12)), asfloat(light_cones.Load3(li*48+16)), asfloat(light_cones.Load(li*48+28)), asfloat(light_cones.Load(li*48+32)), asfloat(light_cones.Load(li*48+36)), asuint(light_cones.Load(li*48+40)), asuint(light_cones.Load(li*48+44)));
-    float _e16 = asfloat(rt2_7.Load(li*4));
-    const float _e17 = cone_weight(c_16.center_, c_16.radius, c_16.phi, c_16.axis, c_16.cos_o, c_16.cos_e, _e16, x_15, n_28, r_6, lobe_4);
-    return _e17;
+    const float _e14 = range_scale(lobe_6);
+    float _e17 = asfloat(rt2_7.Load(li*4));
+    const float _e19 = cone_weight(c_16.center_, c_16.radius, c_16.phi, c_16.axis, c_16.cos_o, c_16.cos_e, (_e14 * _e17), x_15, n_28, r_6, lobe_6);
+    return _e19;
 }
 
 GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
@@ -1985,14 +2013,14 @@ uint light_bvh_count(uint nodes_1)
     return ((NagaBufferLength(light_bvh) - 0) / 48);
 }
 
-float bvh_importance(uint nodes_2, uint i_4, float3 x_16, float3 n_29, float3 r_7, float4 lobe_5)
+float bvh_importance(uint nodes_2, uint i_4, float3 x_16, float3 n_29, float3 r_7, float4 lobe_7)
 {
     const GpuLightBvhNode _e6 = light_bvh_node(nodes_2, i_4);
-    const float _e13 = receiver_importance(_e6.center_, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_16, n_29, r_7, lobe_5);
+    const float _e13 = receiver_importance(_e6.center_, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_16, n_29, r_7, lobe_7);
     return _e13;
 }
 
-float bvh_first(uint nodes_3, uint i_5, float3 x_17, float3 n_30, float3 r_8, float4 lobe_6)
+float bvh_first(uint nodes_3, uint i_5, float3 x_17, float3 n_30, float3 r_8, float4 lobe_8)
 {
     bool local_27 = (bool)0;
 
@@ -2008,8 +2036,8 @@ float bvh_first(uint nodes_3, uint i_5, float3 x_17, float3 n_30, float3 r_8, fl
     if (_e17) {
         return -1.0;
     }
-    const float _e21 = bvh_importance(nodes_3, (i_5 + 1u), x_17, n_30, r_8, lobe_6);
-    const float _e22 = bvh_importance(nodes_3, j, x_17, n_30, r_8, lobe_6);
+    const float _e21 = bvh_importance(nodes_3, (i_5 + 1u), x_17, n_30, r_8, lobe_8);
+    const float _e22 = bvh_importance(nodes_3, j, x_17, n_30, r_8, lobe_8);
     const float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -2027,7 +2055,7 @@ BvhPick bvh_pick_none()
     return bvhpick;
 }
 
-BvhPick light_bvh_sample(uint nodes_4, float3 x_18, float3 n_31, float3 r_9, float4 lobe_7, float u_in)
+BvhPick light_bvh_sample(uint nodes_4, float3 x_18, float3 n_31, float3 r_9, float4 lobe_9, float u_in)
 {
     BvhPick pick = (BvhPick)0;
     float u_6 = (float)0;
@@ -2054,7 +2082,7 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_18, float3 n_31, float3 r_9, flo
             if ((_e17.second == LIGHT_BVH_LEAF)) {
                 uint _e21 = i_6;
                 if (!((_e21 > 0u))) {
-                    const float _e28 = bvh_importance(nodes_4, 0u, x_18, n_31, r_9, lobe_7);
+                    const float _e28 = bvh_importance(nodes_4, 0u, x_18, n_31, r_9, lobe_9);
                     local_28 = (_e28 > 0.0);
                 } else {
                     local_28 = true;
@@ -2070,7 +2098,7 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_18, float3 n_31, float3 r_9, flo
                 return bvhpick_1;
             }
             uint _e38 = i_6;
-            const float _e39 = bvh_first(nodes_4, _e38, x_18, n_31, r_9, lobe_7);
+            const float _e39 = bvh_first(nodes_4, _e38, x_18, n_31, r_9, lobe_9);
             if ((_e39 < 0.0)) {
                 BvhPick _e42 = pick;
                 const BvhPick bvhpick_2 = _e42;
@@ -2092,7 +2120,7 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_18, float3 n_31, float3 r_9, flo
     return bvhpick_3;
 }
 
-float light_bvh_pmf(uint nodes_5, uint leaf, float3 x_19, float3 n_32, float3 r_10, float4 lobe_8)
+float light_bvh_pmf(uint nodes_5, uint leaf, float3 x_19, float3 n_32, float3 r_10, float4 lobe_10)
 {
     uint i_7 = 0u;
     float pmf_1 = 1.0;
@@ -2121,7 +2149,7 @@ float light_bvh_pmf(uint nodes_5, uint leaf, float3 x_19, float3 n_32, float3 r_
                 if ((_e21 == leaf)) {
                     uint _e25 = i_7;
                     if (!((_e25 > 0u))) {
-                        const float _e32 = bvh_importance(nodes_5, 0u, x_19, n_32, r_10, lobe_8);
+                        const float _e32 = bvh_importance(nodes_5, 0u, x_19, n_32, r_10, lobe_10);
                         local_30 = (_e32 > 0.0);
                     } else {
                         local_30 = true;
@@ -2139,7 +2167,7 @@ float light_bvh_pmf(uint nodes_5, uint leaf, float3 x_19, float3 n_32, float3 r_
                 return 0.0;
             }
             uint _e41 = i_7;
-            const float _e42 = bvh_first(nodes_5, _e41, x_19, n_32, r_10, lobe_8);
+            const float _e42 = bvh_first(nodes_5, _e41, x_19, n_32, r_10, lobe_10);
             if ((_e42 < 0.0)) {
                 return 0.0;
             }
@@ -2153,7 +2181,7 @@ float light_bvh_pmf(uint nodes_5, uint leaf, float3 x_19, float3 n_32, float3 r_
     return 0.0;
 }
 
-float select_pdf(uint li_1, float3 x_20, float3 n_33, float3 r_11, float4 lobe_9, uint nee, bool in_range_2)
+float select_pdf(uint li_1, float3 x_20, float3 n_33, float3 r_11, float4 lobe_11, uint nee, bool in_range_2)
 {
     const float _e8 = reservoir_select_pdf(nee, in_range_2, K);
     return _e8;
@@ -2172,18 +2200,19 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-float light_pdf(uint li_2, float3 x_21, float3 n_34, float3 r_12, float4 lobe_10, float3 y_3, uint nee_1, bool in_range_3)
+float light_pdf(uint li_2, float3 x_21, float3 n_34, float3 r_12, float4 lobe_12, float3 y_3, uint nee_1, bool in_range_3)
 {
     GpuLight l_8 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
     float3 v_21 = (x_21 - y_3);
     float d2_15 = dot(v_21, v_21);
     const float3 _e13 = light_normal(l_8);
     float cos_y_1 = ((d2_15 > 0.0) ? dot(_e13, (v_21 / (sqrt(d2_15)).xxx)) : 0.0);
-    const float _e22 = select_pdf(li_2, x_21, n_34, r_12, lobe_10, nee_1, in_range_3);
-    float _e25 = asfloat(rt2_7.Load(li_2*4));
-    const float _e26 = light_area(l_8);
-    const float _e27 = light_strategy_pdf(_e22, _e25, d2_15, _e26, cos_y_1);
-    return _e27;
+    const float _e22 = select_pdf(li_2, x_21, n_34, r_12, lobe_12, nee_1, in_range_3);
+    const float _e23 = range_scale(lobe_12);
+    float _e26 = asfloat(rt2_7.Load(li_2*4));
+    const float _e28 = light_area(l_8);
+    const float _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_15, _e28, cos_y_1);
+    return _e29;
 }
 
 float next_uniform(inout uint state)
@@ -2214,14 +2243,14 @@ GpuPathState ConstructGpuPathState(float3 arg0, uint arg1, float3 arg2, uint arg
     return ret;
 }
 
-BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, uint arg5) {
+BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
     BshNode ret = (BshNode)0;
     ret.center_ = arg0;
     ret.radius = arg1;
     ret.child = arg2;
     ret.next = arg3;
     ret.light = arg4;
-    ret.pad = arg5;
+    ret.extent = arg5;
     return ret;
 }
 
@@ -2370,44 +2399,47 @@ void main(uint3 gid : SV_DispatchThreadID)
         float _e161 = st.pdf_bsdf;
         if ((_e161 > 0.0)) {
             uint _e168 = asuint(light_leaf.Load(tri.light*4));
-            BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e168*32+0)), asfloat(bsh_nodes.Load(_e168*32+12)), asuint(bsh_nodes.Load(_e168*32+16)), asuint(bsh_nodes.Load(_e168*32+20)), asuint(bsh_nodes.Load(_e168*32+24)), asuint(bsh_nodes.Load(_e168*32+28)));
-            float3 _e174 = st.prev;
-            const bool _e175 = sphere_contains_point(leaf_1.center_, leaf_1.radius, _e174);
-            float _e177 = st.pdf_bsdf;
-            float3 _e180 = st.prev;
-            float3 _e182 = st.prev_normal;
-            float3 _e184 = st.prev_r;
-            float4 _e186 = st.prev_lobe;
-            uint _e189 = asuint(candidates.Load(i_8*4));
-            const float _e190 = light_pdf(tri.light, _e180, _e182, _e184, _e186, x_22, _e189, _e175);
-            const float _e191 = mis_weight(_e177, _e190);
-            w = _e191;
+            BshNode leaf_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(_e168*32+0)), asfloat(bsh_nodes.Load(_e168*32+12)), asuint(bsh_nodes.Load(_e168*32+16)), asuint(bsh_nodes.Load(_e168*32+20)), asuint(bsh_nodes.Load(_e168*32+24)), asfloat(bsh_nodes.Load(_e168*32+28)));
+            float4 _e173 = st.prev_lobe;
+            const float _e174 = range_scale(_e173);
+            const float _e176 = bsh_scaled_radius(leaf_1, sqrt(_e174));
+            float3 _e178 = st.prev;
+            const bool _e179 = sphere_contains_point(leaf_1.center_, _e176, _e178);
+            float _e181 = st.pdf_bsdf;
+            float3 _e184 = st.prev;
+            float3 _e186 = st.prev_normal;
+            float3 _e188 = st.prev_r;
+            float4 _e190 = st.prev_lobe;
+            uint _e193 = asuint(candidates.Load(i_8*4));
+            const float _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_22, _e193, _e179);
+            const float _e195 = mis_weight(_e181, _e194);
+            w = _e195;
         }
-        float3 _e193 = st.beta;
-        float3 _e198 = asfloat(lights.Load3(48+tri.light*64));
-        float _e200 = w;
-        float3 add = ((_e193 * _e198) * _e200);
-        const bool _e202 = finite3_(add);
-        if (_e202) {
-            float4 _e205 = asfloat(radiance.Load4(i_8*16));
-            radiance.Store4(i_8*16, asuint((_e205 + float4(add, 0.0))));
+        float3 _e197 = st.beta;
+        float3 _e202 = asfloat(lights.Load3(48+tri.light*64));
+        float _e204 = w;
+        float3 add = ((_e197 * _e202) * _e204);
+        const bool _e206 = finite3_(add);
+        if (_e206) {
+            float4 _e209 = asfloat(radiance.Load4(i_8*16));
+            radiance.Store4(i_8*16, asuint((_e209 + float4(add, 0.0))));
         }
     }
     GpuMaterial m_3 = ConstructGpuMaterial(asfloat(materials.Load3(tri.material*48+0)), asfloat(materials.Load(tri.material*48+12)), asfloat(materials.Load3(tri.material*48+16)), asfloat(materials.Load(tri.material*48+28)), asfloat(materials.Load3(tri.material*48+32)), asfloat(materials.Load(tri.material*48+44)));
-    float3 _e214 = st.dir;
-    float3 wo_1 = -(_e214);
-    const float4 _e222 = receiver_lobe(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, dot(_e147, wo_1));
+    float3 _e218 = st.dir;
+    float3 wo_1 = -(_e218);
+    const float4 _e226 = receiver_lobe(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, dot(_e147, wo_1));
     v.position = x_22;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    float3 _e230 = st.beta;
-    v.weight = _e230;
+    float3 _e234 = st.beta;
+    v.weight = _e234;
     v.wo = wo_1;
     v.alive = 1u;
-    GpuPathVertex _e236 = v;
+    GpuPathVertex _e240 = v;
     {
-        GpuPathVertex _value2 = _e236;
+        GpuPathVertex _value2 = _e240;
         vertices_.Store3(i_8*80+0, asuint(_value2.position));
         vertices_.Store(i_8*80+12, asuint(_value2.alive));
         vertices_.Store3(i_8*80+16, asuint(_value2.normal));
@@ -2419,74 +2451,74 @@ void main(uint3 gid : SV_DispatchThreadID)
         vertices_.Store3(i_8*80+64, asuint(_value2.wo));
         vertices_.Store(i_8*80+76, asuint(_value2.pad3_));
     }
-    uint _e238 = st.rng;
-    rng = _e238;
-    const float _e240 = next_uniform(rng);
-    const float _e241 = next_uniform(rng);
-    const float _e242 = specular_probability(_e222);
-    const float3 _e244 = bsdf_sample(_e147, wo_1, m_3.alpha, _e242, _e240, _e241);
-    const float _e246 = bsdf_pdf(_e147, wo_1, _e244, m_3.alpha, _e242);
-    const bool _e250 = has_specular(m_3.metallic, m_3.f0_, m_3.f90_);
-    if (_e250) {
-        float3 _e252 = st.beta;
-        const float3 _e258 = brdf_eval(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, _e147, wo_1, _e244);
-        st.beta = (_e252 * (_e258 * (dot(_e244, _e147) / _e246)));
+    uint _e242 = st.rng;
+    rng = _e242;
+    const float _e244 = next_uniform(rng);
+    const float _e245 = next_uniform(rng);
+    const float _e246 = specular_probability(_e226);
+    const float3 _e248 = bsdf_sample(_e147, wo_1, m_3.alpha, _e246, _e244, _e245);
+    const float _e250 = bsdf_pdf(_e147, wo_1, _e248, m_3.alpha, _e246);
+    const bool _e254 = has_specular(m_3.metallic, m_3.f0_, m_3.f90_);
+    if (_e254) {
+        float3 _e256 = st.beta;
+        const float3 _e262 = brdf_eval(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, _e147, wo_1, _e248);
+        st.beta = (_e256 * (_e262 * (dot(_e248, _e147) / _e250)));
     } else {
-        float3 _e264 = st.beta;
-        st.beta = (_e264 * m_3.albedo);
+        float3 _e268 = st.beta;
+        st.beta = (_e268 * m_3.albedo);
     }
     st.prev = x_22;
     st.prev_normal = _e147;
-    const float3 _e270 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e270;
-    st.prev_lobe = _e222;
-    st.pdf_bsdf = _e246;
-    float _e276 = params.eps;
-    st.origin = (x_22 + (_e123 * _e276));
-    st.dir = _e244;
-    const bool _e280 = continues_path(_e244, _e147, _e123);
-    if (!(!(_e280))) {
-        local_1 = !((_e246 > 0.0));
+    const float3 _e274 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e274;
+    st.prev_lobe = _e226;
+    st.pdf_bsdf = _e250;
+    float _e280 = params.eps;
+    st.origin = (x_22 + (_e123 * _e280));
+    st.dir = _e248;
+    const bool _e284 = continues_path(_e248, _e147, _e123);
+    if (!(!(_e284))) {
+        local_1 = !((_e250 > 0.0));
     } else {
         local_1 = true;
     }
-    bool _e289 = local_1;
-    if (!(_e289)) {
-        uint _e295 = params.depth;
-        uint _e300 = params.max_depth;
-        local_2 = ((_e295 + 1u) >= _e300);
+    bool _e293 = local_1;
+    if (!(_e293)) {
+        uint _e299 = params.depth;
+        uint _e304 = params.max_depth;
+        local_2 = ((_e299 + 1u) >= _e304);
     } else {
         local_2 = true;
     }
-    bool _e303 = local_2;
-    if (_e303) {
+    bool _e307 = local_2;
+    if (_e307) {
         st.alive = 0u;
     }
-    uint _e308 = params.depth;
-    const bool _e309 = plays_roulette(_e308);
-    if (_e309) {
-        uint _e313 = st.alive;
-        local_3 = (_e313 == 1u);
+    uint _e312 = params.depth;
+    const bool _e313 = plays_roulette(_e312);
+    if (_e313) {
+        uint _e317 = st.alive;
+        local_3 = (_e317 == 1u);
     } else {
         local_3 = false;
     }
-    bool _e317 = local_3;
-    if (_e317) {
-        float3 _e319 = st.beta;
-        const float _e320 = path_survival(_e319);
-        const float _e321 = next_uniform(rng);
-        if ((_e321 >= _e320)) {
+    bool _e321 = local_3;
+    if (_e321) {
+        float3 _e323 = st.beta;
+        const float _e324 = path_survival(_e323);
+        const float _e325 = next_uniform(rng);
+        if ((_e325 >= _e324)) {
             st.alive = 0u;
         } else {
-            float3 _e326 = st.beta;
-            st.beta = (_e326 / (_e320).xxx);
+            float3 _e330 = st.beta;
+            st.beta = (_e330 / (_e324).xxx);
         }
     }
-    uint _e330 = rng;
-    st.rng = _e330;
-    GpuPathState _e333 = st;
+    uint _e334 = rng;
+    st.rng = _e334;
+    GpuPathState _e337 = st;
     {
-        GpuPathState _value2 = _e333;
+        GpuPathState _value2 = _e337;
         paths.Store3(i_8*112+0, asuint(_value2.origin));
         paths.Store(i_8*112+12, asuint(_value2.alive));
         paths.Store3(i_8*112+16, asuint(_value2.dir));

@@ -190,7 +190,7 @@ struct BshNode {
     uint child;
     uint next;
     uint light;
-    uint pad;
+    float extent;
 };
 struct GpuLightBvhNode {
     metal::packed_float3 center;
@@ -226,6 +226,7 @@ constant float MIN_D2_ = 0.000000000001;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
+constant float RANGE_SCALE_MAX = 64.0;
 constant uint LIGHT_BVH_LEAF = 4294967295u;
 constant float ONE_MINUS_EPSILON = 0.99999994;
 constant float F32_MAX = 340282350000000000000000000000000000000.0;
@@ -880,6 +881,19 @@ float ies_light_candela(
     return _e9;
 }
 
+float bsh_scaled_radius(
+    BshNode node,
+    float scale
+) {
+    if (scale == 1.0) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return node.extent + (scale * (node.radius - node.extent));
+    }
+    return node.radius * scale;
+}
+
 uint mul_hi_u32_(
     uint a_4,
     uint b_3
@@ -1316,6 +1330,23 @@ float specular_probability(
     return metal::clamp(lobe.y / (lobe.y + lobe.x), 0.1, 0.9);
 }
 
+float receiver_peak(
+    metal::float4 lobe_1
+) {
+    float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10));
+}
+
+float range_scale(
+    metal::float4 lobe_2
+) {
+    if (lobe_2.y <= 0.0) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_2);
+    return metal::clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
 metal::float3 mirror_dir(
     metal::float3 n_16,
     metal::float3 v_5
@@ -1527,7 +1558,7 @@ float glossy_importance(
     metal::float3 p_3,
     metal::float3 n_20,
     metal::float3 r_3,
-    metal::float4 lobe_1
+    metal::float4 lobe_3
 ) {
     bool local_13 = {};
     float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
@@ -1543,10 +1574,10 @@ float glossy_importance(
     }
     float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     float _e27 = safe_sqrt(0.5 + (0.5 * _e22));
-    float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_1.z);
-    float _e39 = smith_root(lobe_1.w, lobe_1.z);
-    float spec = ((lobe_1.y * _e33) * 0.25) / _e39;
-    return _e10 * (((lobe_1.x * INV_PI) * _e11) + spec);
+    float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_3.z);
+    float _e39 = smith_root(lobe_3.w, lobe_3.z);
+    float spec = ((lobe_3.y * _e33) * 0.25) / _e39;
+    return _e10 * (((lobe_3.x * INV_PI) * _e11) + spec);
 }
 
 float receiver_importance(
@@ -1559,13 +1590,13 @@ float receiver_importance(
     metal::float3 p_4,
     metal::float3 n_21,
     metal::float3 r_4,
-    metal::float4 lobe_2
+    metal::float4 lobe_4
 ) {
-    if (lobe_2.y <= 0.0) {
+    if (lobe_4.y <= 0.0) {
         float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1589,15 +1620,15 @@ float cone_weight(
     metal::float3 p_5,
     metal::float3 n_22,
     metal::float3 r_5,
-    metal::float4 lobe_3
+    metal::float4 lobe_5
 ) {
     metal::float3 v_17 = p_5 - center_5;
-    if (lobe_3.y <= 0.0) {
+    if (lobe_5.y <= 0.0) {
         float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         float _e19 = candidate_weight(_e15 * INV_PI, rt2_6, metal::dot(v_17, v_17));
         return _e19;
     }
-    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     float _e22 = candidate_weight(_e20, rt2_6, metal::dot(v_17, v_17));
     return _e22;
 }
@@ -2187,10 +2218,11 @@ uint bsh_first(
     return BSH_NONE;
 }
 
-uint bsh_next_leaf(
+uint bsh_next_leaf_scaled(
     BshNodes nodes_3,
     uint start_1,
     metal::float3 x_15,
+    float scale_1,
     device type_7 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2200,38 +2232,50 @@ uint bsh_next_leaf(
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e4 = i_3;
-        if (_e4 != BSH_NONE) {
+        uint _e5 = i_3;
+        if (_e5 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e7 = i_3;
-            BshNode _e8 = bsh_node(nodes_3, _e7, bsh_nodes, _buffer_sizes);
-            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_15);
-            if (_e11) {
-                if (_e8.child == BSH_NONE) {
-                    uint _e15 = i_3;
-                    return _e15;
+            uint _e8 = i_3;
+            BshNode _e9 = bsh_node(nodes_3, _e8, bsh_nodes, _buffer_sizes);
+            float _e11 = bsh_scaled_radius(_e9, scale_1);
+            bool _e12 = sphere_contains_point(_e9.center, _e11, x_15);
+            if (_e12) {
+                if (_e9.child == BSH_NONE) {
+                    uint _e16 = i_3;
+                    return _e16;
                 }
-                i_3 = _e8.child;
+                i_3 = _e9.child;
             } else {
-                i_3 = _e8.next;
+                i_3 = _e9.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-metal::float4 bsh_children_sphere(
+uint bsh_next_leaf(
     BshNodes nodes_4,
+    uint start_2,
+    metal::float3 x_16,
+    device type_7 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e4 = bsh_next_leaf_scaled(nodes_4, start_2, x_16, 1.0, bsh_nodes, _buffer_sizes);
+    return _e4;
+}
+
+metal::float4 bsh_children_sphere(
+    BshNodes nodes_5,
     uint i_4,
     device type_7 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    BshNode _e2 = bsh_node(nodes_4, i_4, bsh_nodes, _buffer_sizes);
-    BshNode _e4 = bsh_node(nodes_4, _e2.child, bsh_nodes, _buffer_sizes);
-    BshNode _e6 = bsh_node(nodes_4, _e4.next, bsh_nodes, _buffer_sizes);
+    BshNode _e2 = bsh_node(nodes_5, i_4, bsh_nodes, _buffer_sizes);
+    BshNode _e4 = bsh_node(nodes_5, _e2.child, bsh_nodes, _buffer_sizes);
+    BshNode _e6 = bsh_node(nodes_5, _e4.next, bsh_nodes, _buffer_sizes);
     metal::float4 _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
     return _e11;
 }
@@ -2253,10 +2297,10 @@ kernel void main_(
     }
     uint _e9 = params.first;
     uint i_5 = order[_e9 + gid.x];
-    BshNode node = bsh_nodes[i_5];
-    if (node.child == BSH_NONE) {
-        float _e26 = extent_5[node.light];
-        float _e30 = r2_7[node.light];
+    BshNode node_1 = bsh_nodes[i_5];
+    if (node_1.child == BSH_NONE) {
+        float _e26 = extent_5[node_1.light];
+        float _e30 = r2_7[node_1.light];
         float _e31 = range_radius(_e26, _e30);
         bsh_nodes[i_5].radius = _e31;
         return;

@@ -187,7 +187,7 @@ struct BshNode {
     uint child;
     uint next;
     uint light;
-    uint pad;
+    float extent;
 };
 struct GpuLightBvhNode {
     metal::packed_float3 center;
@@ -221,6 +221,7 @@ constant float MIN_D2_ = 0.000000000001;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
+constant float RANGE_SCALE_MAX = 64.0;
 constant uint LIGHT_BVH_LEAF = 4294967295u;
 constant float ONE_MINUS_EPSILON = 0.99999994;
 constant float F32_MAX = 340282350000000000000000000000000000000.0;
@@ -874,6 +875,19 @@ float ies_light_candela(
     return _e9;
 }
 
+float bsh_scaled_radius(
+    BshNode node,
+    float scale
+) {
+    if (scale == 1.0) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return node.extent + (scale * (node.radius - node.extent));
+    }
+    return node.radius * scale;
+}
+
 uint mul_hi_u32_(
     uint a_5,
     uint b_4
@@ -1310,6 +1324,23 @@ float specular_probability(
     return metal::clamp(lobe.y / (lobe.y + lobe.x), 0.1, 0.9);
 }
 
+float receiver_peak(
+    metal::float4 lobe_1
+) {
+    float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10));
+}
+
+float range_scale(
+    metal::float4 lobe_2
+) {
+    if (lobe_2.y <= 0.0) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_2);
+    return metal::clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
 metal::float3 mirror_dir(
     metal::float3 n_16,
     metal::float3 v_5
@@ -1521,7 +1552,7 @@ float glossy_importance(
     metal::float3 p_3,
     metal::float3 n_20,
     metal::float3 r_3,
-    metal::float4 lobe_1
+    metal::float4 lobe_3
 ) {
     bool local_17 = {};
     float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
@@ -1537,10 +1568,10 @@ float glossy_importance(
     }
     float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     float _e27 = safe_sqrt(0.5 + (0.5 * _e22));
-    float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_1.z);
-    float _e39 = smith_root(lobe_1.w, lobe_1.z);
-    float spec = ((lobe_1.y * _e33) * 0.25) / _e39;
-    return _e10 * (((lobe_1.x * INV_PI) * _e11) + spec);
+    float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_3.z);
+    float _e39 = smith_root(lobe_3.w, lobe_3.z);
+    float spec = ((lobe_3.y * _e33) * 0.25) / _e39;
+    return _e10 * (((lobe_3.x * INV_PI) * _e11) + spec);
 }
 
 float receiver_importance(
@@ -1553,13 +1584,13 @@ float receiver_importance(
     metal::float3 p_4,
     metal::float3 n_21,
     metal::float3 r_4,
-    metal::float4 lobe_2
+    metal::float4 lobe_4
 ) {
-    if (lobe_2.y <= 0.0) {
+    if (lobe_4.y <= 0.0) {
         float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1583,15 +1614,15 @@ float cone_weight(
     metal::float3 p_5,
     metal::float3 n_22,
     metal::float3 r_5,
-    metal::float4 lobe_3
+    metal::float4 lobe_5
 ) {
     metal::float3 v_17 = p_5 - center_5;
-    if (lobe_3.y <= 0.0) {
+    if (lobe_5.y <= 0.0) {
         float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         float _e19 = candidate_weight(_e15 * INV_PI, rt2_6, metal::dot(v_17, v_17));
         return _e19;
     }
-    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     float _e22 = candidate_weight(_e20, rt2_6, metal::dot(v_17, v_17));
     return _e22;
 }

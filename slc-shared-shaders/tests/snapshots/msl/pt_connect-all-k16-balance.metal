@@ -199,7 +199,7 @@ struct BshNode {
     uint child;
     uint next;
     uint light;
-    uint pad;
+    float extent;
 };
 struct GpuLightBvhNode {
     metal::packed_float3 center;
@@ -267,6 +267,7 @@ constant float MIN_D2_ = 0.000000000001;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
+constant float RANGE_SCALE_MAX = 64.0;
 constant uint LIGHT_BVH_LEAF = 4294967295u;
 constant float ONE_MINUS_EPSILON = 0.99999994;
 constant float F32_MAX = 340282350000000000000000000000000000000.0;
@@ -923,6 +924,19 @@ float ies_light_candela(
     return _e9;
 }
 
+float bsh_scaled_radius(
+    BshNode node,
+    float scale
+) {
+    if (scale == 1.0) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return node.extent + (scale * (node.radius - node.extent));
+    }
+    return node.radius * scale;
+}
+
 uint mul_hi_u32_(
     uint a_4,
     uint b_3
@@ -1045,11 +1059,11 @@ float mis_balance(
     float pdf_a,
     float pdf_b
 ) {
-    float s_1 = pdf_a + pdf_b;
-    if (s_1 <= 0.0) {
+    float s_2 = pdf_a + pdf_b;
+    if (s_2 <= 0.0) {
         return 0.0;
     }
-    return pdf_a / s_1;
+    return pdf_a / s_2;
 }
 
 float mis_power(
@@ -1057,11 +1071,11 @@ float mis_power(
     float pdf_b_1
 ) {
     float a2_ = pdf_a_1 * pdf_a_1;
-    float s_2 = a2_ + (pdf_b_1 * pdf_b_1);
-    if (s_2 <= 0.0) {
+    float s_3 = a2_ + (pdf_b_1 * pdf_b_1);
+    if (s_3 <= 0.0) {
         return 0.0;
     }
-    return a2_ / s_2;
+    return a2_ / s_3;
 }
 
 float light_strategy_pdf(
@@ -1108,17 +1122,17 @@ float cosine_pdf(
 metal::float3 onb_tangent(
     metal::float3 n_9
 ) {
-    float s_3 = (n_9.z >= 0.0) ? 1.0 : -1.0;
-    float a_12 = -1.0 / (s_3 + n_9.z);
-    return metal::float3(1.0 + (((s_3 * n_9.x) * n_9.x) * a_12), ((s_3 * n_9.x) * n_9.y) * a_12, -(s_3) * n_9.x);
+    float s_4 = (n_9.z >= 0.0) ? 1.0 : -1.0;
+    float a_12 = -1.0 / (s_4 + n_9.z);
+    return metal::float3(1.0 + (((s_4 * n_9.x) * n_9.x) * a_12), ((s_4 * n_9.x) * n_9.y) * a_12, -(s_4) * n_9.x);
 }
 
 metal::float3 onb_bitangent(
     metal::float3 n_10
 ) {
-    float s_4 = (n_10.z >= 0.0) ? 1.0 : -1.0;
-    float a_13 = -1.0 / (s_4 + n_10.z);
-    return metal::float3((n_10.x * n_10.y) * a_13, s_4 + ((n_10.y * n_10.y) * a_13), -(n_10.y));
+    float s_5 = (n_10.z >= 0.0) ? 1.0 : -1.0;
+    float a_13 = -1.0 / (s_5 + n_10.z);
+    return metal::float3((n_10.x * n_10.y) * a_13, s_5 + ((n_10.y * n_10.y) * a_13), -(n_10.y));
 }
 
 metal::float3 onb_to_world(
@@ -1359,6 +1373,23 @@ float specular_probability(
     return metal::clamp(lobe.y / (lobe.y + lobe.x), 0.1, 0.9);
 }
 
+float receiver_peak(
+    metal::float4 lobe_1
+) {
+    float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10));
+}
+
+float range_scale(
+    metal::float4 lobe_2
+) {
+    if (lobe_2.y <= 0.0) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_2);
+    return metal::clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
 metal::float3 mirror_dir(
     metal::float3 n_16,
     metal::float3 v_5
@@ -1371,9 +1402,9 @@ float bounded_vndf_k(
     float alpha_6
 ) {
     float a_14 = metal::saturate(alpha_6);
-    float s_5 = 1.0 + metal::sqrt((wi.x * wi.x) + (wi.y * wi.y));
+    float s_6 = 1.0 + metal::sqrt((wi.x * wi.x) + (wi.y * wi.y));
     float a2_3 = a_14 * a_14;
-    float s2_ = s_5 * s_5;
+    float s2_ = s_6 * s_6;
     return ((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z));
 }
 
@@ -1570,7 +1601,7 @@ float glossy_importance(
     metal::float3 p_3,
     metal::float3 n_20,
     metal::float3 r_3,
-    metal::float4 lobe_1
+    metal::float4 lobe_3
 ) {
     bool local_13 = {};
     float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
@@ -1586,10 +1617,10 @@ float glossy_importance(
     }
     float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     float _e27 = safe_sqrt(0.5 + (0.5 * _e22));
-    float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_1.z);
-    float _e39 = smith_root(lobe_1.w, lobe_1.z);
-    float spec = ((lobe_1.y * _e33) * 0.25) / _e39;
-    return _e10 * (((lobe_1.x * INV_PI) * _e11) + spec);
+    float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_3.z);
+    float _e39 = smith_root(lobe_3.w, lobe_3.z);
+    float spec = ((lobe_3.y * _e33) * 0.25) / _e39;
+    return _e10 * (((lobe_3.x * INV_PI) * _e11) + spec);
 }
 
 float receiver_importance(
@@ -1602,13 +1633,13 @@ float receiver_importance(
     metal::float3 p_4,
     metal::float3 n_21,
     metal::float3 r_4,
-    metal::float4 lobe_2
+    metal::float4 lobe_4
 ) {
-    if (lobe_2.y <= 0.0) {
+    if (lobe_4.y <= 0.0) {
         float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1632,15 +1663,15 @@ float cone_weight(
     metal::float3 p_5,
     metal::float3 n_22,
     metal::float3 r_5,
-    metal::float4 lobe_3
+    metal::float4 lobe_5
 ) {
     metal::float3 v_17 = p_5 - center_5;
-    if (lobe_3.y <= 0.0) {
+    if (lobe_5.y <= 0.0) {
         float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         float _e19 = candidate_weight(_e15 * INV_PI, rt2_6, metal::dot(v_17, v_17));
         return _e19;
     }
-    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     float _e22 = candidate_weight(_e20, rt2_6, metal::dot(v_17, v_17));
     return _e22;
 }
@@ -1663,9 +1694,9 @@ float bvh_first_prob(
     float c0_,
     float c1_2
 ) {
-    float s_6 = c0_ + c1_2;
-    if (s_6 > 0.0) {
-        return c0_ / s_6;
+    float s_7 = c0_ + c1_2;
+    if (s_7 > 0.0) {
+        return c0_ / s_7;
     }
     return -1.0;
 }
@@ -1789,8 +1820,8 @@ metal::float3 shading_normal(
     metal::float3 facing
 ) {
     bool local_15 = {};
-    metal::float3 s_7 = ((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z);
-    float l2_1 = metal::dot(s_7, s_7);
+    metal::float3 s_8 = ((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z);
+    float l2_1 = metal::dot(s_8, s_8);
     if (!(!((l2_1 > 0.000000000001)))) {
         local_15 = !((l2_1 < 300000000000000000000000000000000000000.0));
     } else {
@@ -1800,7 +1831,7 @@ metal::float3 shading_normal(
     if (_e24) {
         return facing;
     }
-    metal::float3 n_38 = s_7 / metal::float3(metal::sqrt(l2_1));
+    metal::float3 n_38 = s_8 / metal::float3(metal::sqrt(l2_1));
     return (metal::dot(n_38, facing) < 0.0) ? -(n_38) : n_38;
 }
 
@@ -1824,8 +1855,8 @@ float ray_triangle(
         return -1.0;
     }
     float inv_1 = 1.0 / det;
-    metal::float3 s_8 = o_1 - a_7;
-    float u_7 = metal::dot(s_8, p_7) * inv_1;
+    metal::float3 s_9 = o_1 - a_7;
+    float u_7 = metal::dot(s_9, p_7) * inv_1;
     if (!((u_7 < 0.0))) {
         local_16 = u_7 > 1.0;
     } else {
@@ -1835,7 +1866,7 @@ float ray_triangle(
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q_5 = metal::cross(s_8, e1_2);
+    metal::float3 q_5 = metal::cross(s_9, e1_2);
     float v_18 = metal::dot(d_3, q_5) * inv_1;
     if (!((v_18 < 0.0))) {
         local_17 = (u_7 + v_18) > 1.0;
@@ -2277,7 +2308,7 @@ GeoHit trace(
     GeoHit hit = {};
     type_8 stack = {};
     uint sp = 0u;
-    uint node = 0u;
+    uint node_1 = 0u;
     uint i_2 = {};
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -2290,7 +2321,7 @@ GeoHit trace(
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e21 = node;
+        uint _e21 = node_1;
         GpuGeoNode n_39 = geo_nodes[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_39.bmin, n_39.bmax, _e27);
@@ -2336,7 +2367,7 @@ GeoHit trace(
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node = n_39.first;
+                node_1 = n_39.first;
                 continue;
             }
         }
@@ -2348,7 +2379,7 @@ GeoHit trace(
         sp = _e75 - 1u;
         uint _e78 = sp;
         uint _e80 = stack.inner[_e78];
-        node = _e80;
+        node_1 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -2401,10 +2432,11 @@ uint bsh_first(
     return BSH_NONE;
 }
 
-uint bsh_next_leaf(
+uint bsh_next_leaf_scaled(
     BshNodes nodes_3,
     uint start_1,
     metal::float3 x_15,
+    float scale_1,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2414,44 +2446,57 @@ uint bsh_next_leaf(
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e4 = i_4;
-        if (_e4 != BSH_NONE) {
+        uint _e5 = i_4;
+        if (_e5 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e7 = i_4;
-            BshNode _e8 = bsh_node(nodes_3, _e7, bsh_nodes, _buffer_sizes);
-            bool _e11 = sphere_contains_point(_e8.center, _e8.radius, x_15);
-            if (_e11) {
-                if (_e8.child == BSH_NONE) {
-                    uint _e15 = i_4;
-                    return _e15;
+            uint _e8 = i_4;
+            BshNode _e9 = bsh_node(nodes_3, _e8, bsh_nodes, _buffer_sizes);
+            float _e11 = bsh_scaled_radius(_e9, scale_1);
+            bool _e12 = sphere_contains_point(_e9.center, _e11, x_15);
+            if (_e12) {
+                if (_e9.child == BSH_NONE) {
+                    uint _e16 = i_4;
+                    return _e16;
                 }
-                i_4 = _e8.child;
+                i_4 = _e9.child;
             } else {
-                i_4 = _e8.next;
+                i_4 = _e9.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-metal::float4 bsh_children_sphere(
+uint bsh_next_leaf(
     BshNodes nodes_4,
+    uint start_2,
+    metal::float3 x_16,
+    device type_10 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e4 = bsh_next_leaf_scaled(nodes_4, start_2, x_16, 1.0, bsh_nodes, _buffer_sizes);
+    return _e4;
+}
+
+metal::float4 bsh_children_sphere(
+    BshNodes nodes_5,
     uint i_5,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    BshNode _e2 = bsh_node(nodes_4, i_5, bsh_nodes, _buffer_sizes);
-    BshNode _e4 = bsh_node(nodes_4, _e2.child, bsh_nodes, _buffer_sizes);
-    BshNode _e6 = bsh_node(nodes_4, _e4.next, bsh_nodes, _buffer_sizes);
+    BshNode _e2 = bsh_node(nodes_5, i_5, bsh_nodes, _buffer_sizes);
+    BshNode _e4 = bsh_node(nodes_5, _e2.child, bsh_nodes, _buffer_sizes);
+    BshNode _e6 = bsh_node(nodes_5, _e4.next, bsh_nodes, _buffer_sizes);
     metal::float4 _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
     return _e11;
 }
 
 Picks bsh_collect(
-    metal::float3 x_16,
+    metal::float3 x_17,
+    float scale_2,
     uint seed_3,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
@@ -2461,59 +2506,60 @@ Picks bsh_collect(
     uint i_6 = {};
     picks.n = 0u;
     h_2 = seed_3;
-    uint _e8 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e9 = bsh_next_leaf(BSH, _e8, x_16, bsh_nodes, _buffer_sizes);
-    i_6 = _e9;
+    uint _e9 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_17, scale_2, bsh_nodes, _buffer_sizes);
+    i_6 = _e10;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e42 = i_6;
-            uint _e45 = bsh_nodes[_e42].next;
-            uint _e46 = bsh_next_leaf(BSH, _e45, x_16, bsh_nodes, _buffer_sizes);
-            i_6 = _e46;
+            uint _e43 = i_6;
+            uint _e46 = bsh_nodes[_e43].next;
+            uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_17, scale_2, bsh_nodes, _buffer_sizes);
+            i_6 = _e47;
         }
         loop_init_1 = false;
-        uint _e11 = i_6;
-        if (_e11 != BSH_NONE) {
+        uint _e12 = i_6;
+        if (_e12 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e15 = picks.n;
-            bool _e16 = reservoir_takes(_e15);
-            if (_e16) {
-                uint _e18 = picks.n;
-                picks.n = _e18 + 1u;
-                uint _e21 = h_2;
-                uint _e22 = pcg_hash(_e21);
-                h_2 = _e22;
+            uint _e16 = picks.n;
+            bool _e17 = reservoir_takes(_e16);
+            if (_e17) {
+                uint _e19 = picks.n;
+                picks.n = _e19 + 1u;
+                uint _e22 = h_2;
+                uint _e23 = pcg_hash(_e22);
+                h_2 = _e23;
                 uint hi_4 = h_2;
-                uint _e24 = h_2;
-                uint _e25 = pcg_hash(_e24);
-                h_2 = _e25;
-                uint _e27 = picks.n;
-                uint _e29 = h_2;
-                uint _e30 = reservoir_slot(_e27, K, hi_4, _e29);
-                if (_e30 < K) {
-                    uint _e36 = i_6;
-                    uint _e39 = bsh_nodes[_e36].light;
-                    picks.light.inner[_e30] = _e39;
+                uint _e25 = h_2;
+                uint _e26 = pcg_hash(_e25);
+                h_2 = _e26;
+                uint _e28 = picks.n;
+                uint _e30 = h_2;
+                uint _e31 = reservoir_slot(_e28, K, hi_4, _e30);
+                if (_e31 < K) {
+                    uint _e37 = i_6;
+                    uint _e40 = bsh_nodes[_e37].light;
+                    picks.light.inner[_e31] = _e40;
                 }
             }
         }
     }
-    Picks _e47 = picks;
-    return _e47;
+    Picks _e48 = picks;
+    return _e48;
 }
 
 Connection connect(
     uint li,
-    metal::float3 x_17,
+    metal::float3 x_18,
     metal::float3 n_28,
     metal::float3 ng_2,
+    float s_1,
     float w_res,
     float u1_5,
     float u2_5,
@@ -2530,35 +2576,35 @@ Connection connect(
     bool local_23 = {};
     c_10.e = metal::float3(0.0);
     GpuLight l_8 = lights[li];
-    metal::float3 _e16 = light_point(l_8, u1_5, u2_5);
-    c_10.y = _e16;
-    metal::float3 _e19 = c_10.y;
-    float _e22 = r2_7[li];
-    float _e23 = connection_cosine(x_17, _e19, n_28, ng_2, _e22);
-    c_10.cos_x = _e23;
-    float _e25 = c_10.cos_x;
-    if (!((_e25 <= 0.0))) {
-        metal::float3 _e34 = c_10.y;
-        bool _e35 = occluded(x_17 + (ng_2 * eps), _e34, geo_nodes, geo_tris, _buffer_sizes);
-        local_23 = _e35;
+    metal::float3 _e17 = light_point(l_8, u1_5, u2_5);
+    c_10.y = _e17;
+    metal::float3 _e20 = c_10.y;
+    float _e23 = r2_7[li];
+    float _e25 = connection_cosine(x_18, _e20, n_28, ng_2, s_1 * _e23);
+    c_10.cos_x = _e25;
+    float _e27 = c_10.cos_x;
+    if (!((_e27 <= 0.0))) {
+        metal::float3 _e36 = c_10.y;
+        bool _e37 = occluded(x_18 + (ng_2 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
+        local_23 = _e37;
     } else {
         local_23 = true;
     }
-    bool _e37 = local_23;
-    if (_e37) {
-        Connection _e38 = c_10;
-        return _e38;
+    bool _e39 = local_23;
+    if (_e39) {
+        Connection _e40 = c_10;
+        return _e40;
     }
-    metal::float3 _e40 = c_10.y;
-    metal::float3 v_20 = x_17 - _e40;
+    metal::float3 _e42 = c_10.y;
+    metal::float3 v_20 = x_18 - _e42;
     float d2_15 = metal::dot(v_20, v_20);
-    metal::float3 _e47 = light_intensity(l_8, v_20 / metal::float3(metal::sqrt(d2_15)), slc_table, _buffer_sizes);
-    float _e49 = c_10.cos_x;
-    float _e52 = rt2_7[li];
-    float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
-    c_10.e = _e47 * _e53;
-    Connection _e55 = c_10;
-    return _e55;
+    metal::float3 _e49 = light_intensity(l_8, v_20 / metal::float3(metal::sqrt(d2_15)), slc_table, _buffer_sizes);
+    float _e51 = c_10.cos_x;
+    float _e54 = rt2_7[li];
+    float _e56 = connection_factor(_e51, d2_15, s_1 * _e54, w_res);
+    c_10.e = _e49 * _e56;
+    Connection _e58 = c_10;
+    return _e58;
 }
 
 float mis_weight(
@@ -2571,22 +2617,23 @@ float mis_weight(
 
 float light_weight(
     uint li_1,
-    metal::float3 x_18,
+    metal::float3 x_19,
     metal::float3 n_29,
     metal::float3 r_6,
-    metal::float4 lobe_4,
+    metal::float4 lobe_6,
     device type_4 const& rt2_7,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_17 = light_cones[li_1];
-    float _e16 = rt2_7[li_1];
-    float _e17 = cone_weight(c_17.center, c_17.radius, c_17.phi, c_17.axis, c_17.cos_o, c_17.cos_e, _e16, x_18, n_29, r_6, lobe_4);
-    return _e17;
+    float _e14 = range_scale(lobe_6);
+    float _e17 = rt2_7[li_1];
+    float _e19 = cone_weight(c_17.center, c_17.radius, c_17.phi, c_17.axis, c_17.cos_o, c_17.cos_e, _e14 * _e17, x_19, n_29, r_6, lobe_6);
+    return _e19;
 }
 
 GpuLightBvhNode light_bvh_node(
-    BvhNodes nodes_5,
+    BvhNodes nodes_6,
     uint i_7,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
@@ -2596,7 +2643,7 @@ GpuLightBvhNode light_bvh_node(
 }
 
 uint light_bvh_count(
-    BvhNodes nodes_6,
+    BvhNodes nodes_7,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2604,35 +2651,35 @@ uint light_bvh_count(
 }
 
 float bvh_importance(
-    BvhNodes nodes_7,
+    BvhNodes nodes_8,
     uint i_8,
-    metal::float3 x_19,
+    metal::float3 x_20,
     metal::float3 n_30,
     metal::float3 r_7,
-    metal::float4 lobe_5,
+    metal::float4 lobe_7,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightBvhNode _e6 = light_bvh_node(nodes_7, i_8, light_bvh, _buffer_sizes);
-    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_19, n_30, r_7, lobe_5);
+    GpuLightBvhNode _e6 = light_bvh_node(nodes_8, i_8, light_bvh, _buffer_sizes);
+    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_20, n_30, r_7, lobe_7);
     return _e13;
 }
 
 float bvh_first(
-    BvhNodes nodes_8,
+    BvhNodes nodes_9,
     uint i_9,
-    metal::float3 x_20,
+    metal::float3 x_21,
     metal::float3 n_31,
     metal::float3 r_8,
-    metal::float4 lobe_6,
+    metal::float4 lobe_8,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool local_24 = {};
-    GpuLightBvhNode _e6 = light_bvh_node(nodes_8, i_9, light_bvh, _buffer_sizes);
+    GpuLightBvhNode _e6 = light_bvh_node(nodes_9, i_9, light_bvh, _buffer_sizes);
     uint j = _e6.second;
     if (!((j <= (i_9 + 1u)))) {
-        uint _e14 = light_bvh_count(nodes_8, light_bvh, _buffer_sizes);
+        uint _e14 = light_bvh_count(nodes_9, light_bvh, _buffer_sizes);
         local_24 = j >= _e14;
     } else {
         local_24 = true;
@@ -2641,8 +2688,8 @@ float bvh_first(
     if (_e17) {
         return -1.0;
     }
-    float _e21 = bvh_importance(nodes_8, i_9 + 1u, x_20, n_31, r_8, lobe_6, light_bvh, _buffer_sizes);
-    float _e22 = bvh_importance(nodes_8, j, x_20, n_31, r_8, lobe_6, light_bvh, _buffer_sizes);
+    float _e21 = bvh_importance(nodes_9, i_9 + 1u, x_21, n_31, r_8, lobe_8, light_bvh, _buffer_sizes);
+    float _e22 = bvh_importance(nodes_9, j, x_21, n_31, r_8, lobe_8, light_bvh, _buffer_sizes);
     float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -2653,11 +2700,11 @@ BvhPick bvh_pick_none(
 }
 
 BvhPick light_bvh_sample(
-    BvhNodes nodes_9,
-    metal::float3 x_21,
+    BvhNodes nodes_10,
+    metal::float3 x_22,
     metal::float3 n_32,
     metal::float3 r_9,
-    metal::float4 lobe_7,
+    metal::float4 lobe_9,
     float u_in,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
@@ -2675,18 +2722,18 @@ BvhPick light_bvh_sample(
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         uint _e13 = i_10;
-        uint _e14 = light_bvh_count(nodes_9, light_bvh, _buffer_sizes);
+        uint _e14 = light_bvh_count(nodes_10, light_bvh, _buffer_sizes);
         if (_e13 < _e14) {
         } else {
             break;
         }
         {
             uint _e16 = i_10;
-            GpuLightBvhNode _e17 = light_bvh_node(nodes_9, _e16, light_bvh, _buffer_sizes);
+            GpuLightBvhNode _e17 = light_bvh_node(nodes_10, _e16, light_bvh, _buffer_sizes);
             if (_e17.second == LIGHT_BVH_LEAF) {
                 uint _e21 = i_10;
                 if (!((_e21 > 0u))) {
-                    float _e28 = bvh_importance(nodes_9, 0u, x_21, n_32, r_9, lobe_7, light_bvh, _buffer_sizes);
+                    float _e28 = bvh_importance(nodes_10, 0u, x_22, n_32, r_9, lobe_9, light_bvh, _buffer_sizes);
                     local_25 = _e28 > 0.0;
                 } else {
                     local_25 = true;
@@ -2701,7 +2748,7 @@ BvhPick light_bvh_sample(
                 return _e37;
             }
             uint _e38 = i_10;
-            float _e39 = bvh_first(nodes_9, _e38, x_21, n_32, r_9, lobe_7, light_bvh, _buffer_sizes);
+            float _e39 = bvh_first(nodes_10, _e38, x_22, n_32, r_9, lobe_9, light_bvh, _buffer_sizes);
             if (_e39 < 0.0) {
                 BvhPick _e42 = pick;
                 return _e42;
@@ -2722,12 +2769,12 @@ BvhPick light_bvh_sample(
 }
 
 float light_bvh_pmf(
-    BvhNodes nodes_10,
+    BvhNodes nodes_11,
     uint leaf,
-    metal::float3 x_22,
+    metal::float3 x_23,
     metal::float3 n_33,
     metal::float3 r_10,
-    metal::float4 lobe_8,
+    metal::float4 lobe_10,
     device type_14 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2735,7 +2782,7 @@ float light_bvh_pmf(
     float pmf_1 = 1.0;
     bool local_26 = {};
     bool local_27 = {};
-    uint _e6 = light_bvh_count(nodes_10, light_bvh, _buffer_sizes);
+    uint _e6 = light_bvh_count(nodes_11, light_bvh, _buffer_sizes);
     if (leaf >= _e6) {
         return 0.0;
     }
@@ -2744,20 +2791,20 @@ float light_bvh_pmf(
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         uint _e13 = i_11;
-        uint _e14 = light_bvh_count(nodes_10, light_bvh, _buffer_sizes);
+        uint _e14 = light_bvh_count(nodes_11, light_bvh, _buffer_sizes);
         if (_e13 < _e14) {
         } else {
             break;
         }
         {
             uint _e16 = i_11;
-            GpuLightBvhNode _e17 = light_bvh_node(nodes_10, _e16, light_bvh, _buffer_sizes);
+            GpuLightBvhNode _e17 = light_bvh_node(nodes_11, _e16, light_bvh, _buffer_sizes);
             if (_e17.second == LIGHT_BVH_LEAF) {
                 uint _e21 = i_11;
                 if (_e21 == leaf) {
                     uint _e25 = i_11;
                     if (!((_e25 > 0u))) {
-                        float _e32 = bvh_importance(nodes_10, 0u, x_22, n_33, r_10, lobe_8, light_bvh, _buffer_sizes);
+                        float _e32 = bvh_importance(nodes_11, 0u, x_23, n_33, r_10, lobe_10, light_bvh, _buffer_sizes);
                         local_27 = _e32 > 0.0;
                     } else {
                         local_27 = true;
@@ -2775,7 +2822,7 @@ float light_bvh_pmf(
                 return 0.0;
             }
             uint _e41 = i_11;
-            float _e42 = bvh_first(nodes_10, _e41, x_22, n_33, r_10, lobe_8, light_bvh, _buffer_sizes);
+            float _e42 = bvh_first(nodes_11, _e41, x_23, n_33, r_10, lobe_10, light_bvh, _buffer_sizes);
             if (_e42 < 0.0) {
                 return 0.0;
             }
@@ -2791,10 +2838,10 @@ float light_bvh_pmf(
 
 float select_pdf(
     uint li_2,
-    metal::float3 x_23,
+    metal::float3 x_24,
     metal::float3 n_34,
     metal::float3 r_11,
-    metal::float4 lobe_9,
+    metal::float4 lobe_11,
     uint nee,
     bool in_range_2
 ) {
@@ -2804,10 +2851,10 @@ float select_pdf(
 
 float light_pdf(
     uint li_3,
-    metal::float3 x_24,
+    metal::float3 x_25,
     metal::float3 n_35,
     metal::float3 r_12,
-    metal::float4 lobe_10,
+    metal::float4 lobe_12,
     metal::float3 y_3,
     uint nee_1,
     bool in_range_3,
@@ -2816,26 +2863,27 @@ float light_pdf(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_9 = lights[li_3];
-    metal::float3 v_21 = x_24 - y_3;
+    metal::float3 v_21 = x_25 - y_3;
     float d2_16 = metal::dot(v_21, v_21);
     metal::float3 _e13 = light_normal(l_9);
     float cos_y_1 = (d2_16 > 0.0) ? metal::dot(_e13, v_21 / metal::float3(metal::sqrt(d2_16))) : 0.0;
-    float _e22 = select_pdf(li_3, x_24, n_35, r_12, lobe_10, nee_1, in_range_3);
-    float _e25 = rt2_7[li_3];
-    float _e26 = light_area(l_9);
-    float _e27 = light_strategy_pdf(_e22, _e25, d2_16, _e26, cos_y_1);
-    return _e27;
+    float _e22 = select_pdf(li_3, x_25, n_35, r_12, lobe_12, nee_1, in_range_3);
+    float _e23 = range_scale(lobe_12);
+    float _e26 = rt2_7[li_3];
+    float _e28 = light_area(l_9);
+    float _e29 = light_strategy_pdf(_e22, _e23 * _e26, d2_16, _e28, cos_y_1);
+    return _e29;
 }
 
 metal::float3 shade_pick(
     uint li_4,
-    metal::float3 x_25,
+    metal::float3 x_26,
     metal::float3 n_36,
     metal::float3 ng_3,
     GpuMaterial m,
     metal::float3 wo_1,
     metal::float3 r_13,
-    metal::float4 lobe_11,
+    metal::float4 lobe_13,
     float w_11,
     uint nee_2,
     float u1_6,
@@ -2850,24 +2898,25 @@ metal::float3 shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e14 = params.eps;
-    Connection _e15 = connect(li_4, x_25, n_36, ng_3, w_11, u1_6, u2_6, _e14, slc_table, geo_nodes, geo_tris, lights, r2_7, rt2_7, _buffer_sizes);
-    if (_e15.cos_x <= 0.0) {
+    float _e12 = range_scale(lobe_13);
+    float _e15 = params.eps;
+    Connection _e16 = connect(li_4, x_26, n_36, ng_3, _e12, w_11, u1_6, u2_6, _e15, slc_table, geo_nodes, geo_tris, lights, r2_7, rt2_7, _buffer_sizes);
+    if (_e16.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
-    metal::float3 l_10 = metal::normalize(_e15.y - x_25);
-    GpuLight _e28 = lights[li_4];
-    float _e29 = light_area(_e28);
-    if (_e29 > 0.0) {
-        float _e34 = light_pdf(li_4, x_25, n_36, r_13, lobe_11, _e15.y, nee_2, true, lights, rt2_7, _buffer_sizes);
-        float _e36 = specular_probability(lobe_11);
-        float _e37 = bsdf_pdf(n_36, wo_1, l_10, m.alpha, _e36);
-        float _e38 = mis_weight(_e34, _e37);
-        mis = _e38;
+    metal::float3 l_10 = metal::normalize(_e16.y - x_26);
+    GpuLight _e29 = lights[li_4];
+    float _e30 = light_area(_e29);
+    if (_e30 > 0.0) {
+        float _e35 = light_pdf(li_4, x_26, n_36, r_13, lobe_13, _e16.y, nee_2, true, lights, rt2_7, _buffer_sizes);
+        float _e37 = specular_probability(lobe_13);
+        float _e38 = bsdf_pdf(n_36, wo_1, l_10, m.alpha, _e37);
+        float _e39 = mis_weight(_e35, _e38);
+        mis = _e39;
     }
-    metal::float3 _e44 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_36, wo_1, l_10);
-    float _e47 = mis;
-    return (_e44 * _e15.e) * _e47;
+    metal::float3 _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_36, wo_1, l_10);
+    float _e48 = mis;
+    return (_e45 * _e16.e) * _e48;
 }
 
 struct main_Input {
@@ -2901,59 +2950,61 @@ kernel void main_(
         candidates[i_12] = 0u;
         return;
     }
-    metal::float3 x_26 = vtx.position;
+    metal::float3 x_27 = vtx.position;
     metal::float3 n_40 = vtx.normal;
     metal::float3 ng_4 = vtx.gnormal;
     GpuMaterial m_4 = materials[vtx.material];
     metal::float3 wo_2 = vtx.wo;
     metal::float3 _e23 = mirror_dir(n_40, wo_2);
     metal::float4 _e30 = receiver_lobe(m_4.albedo, m_4.metallic, m_4.f0_, m_4.f90_, m_4.alpha, metal::dot(n_40, wo_2));
-    uint _e33 = params.seed;
-    uint _e36 = params.frame;
-    uint _e37 = point_stream(_e33, i_12, _e36);
-    uint _e38 = pick_stream(_e37);
-    h = _e38;
-    Picks _e43 = bsh_collect(x_26, _e37, bsh_nodes, _buffer_sizes);
-    candidates[i_12] = _e43.n;
-    float _e49 = reservoir_weight(_e43.n, K);
+    float _e31 = range_scale(_e30);
+    float scale_3 = metal::sqrt(_e31);
+    uint _e35 = params.seed;
+    uint _e38 = params.frame;
+    uint _e39 = point_stream(_e35, i_12, _e38);
+    uint _e40 = pick_stream(_e39);
+    h = _e40;
+    Picks _e45 = bsh_collect(x_27, scale_3, _e39, bsh_nodes, _buffer_sizes);
+    candidates[i_12] = _e45.n;
+    float _e51 = reservoir_weight(_e45.n, K);
     uint2 loop_bound_7 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_7 == uint2(0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e73 = s;
-            s = _e73 + 1u;
+            uint _e75 = s;
+            s = _e75 + 1u;
         }
         loop_init_2 = false;
-        uint _e52 = s;
-        if (_e52 < metal::min(_e43.n, K)) {
+        uint _e54 = s;
+        if (_e54 < metal::min(_e45.n, K)) {
         } else {
             break;
         }
         {
-            uint _e57 = h;
-            uint _e58 = pcg_hash(_e57);
-            h = _e58;
             uint _e59 = h;
-            float _e60 = xi_from_bits(_e59);
+            uint _e60 = pcg_hash(_e59);
+            h = _e60;
             uint _e61 = h;
-            uint _e62 = pcg_hash(_e61);
-            h = _e62;
-            metal::float3 _e63 = sum;
-            uint _e65 = s;
-            uint _e68 = h;
-            float _e69 = xi_from_bits(_e68);
-            metal::float3 _e70 = shade_pick(_e43.light.inner[_e65], x_26, n_40, ng_4, m_4, wo_2, _e23, _e30, _e49, _e43.n, _e60, _e69, slc_table, geo_nodes, geo_tris, lights, r2_7, rt2_7, params, _buffer_sizes);
-            sum = _e63 + _e70;
+            float _e62 = xi_from_bits(_e61);
+            uint _e63 = h;
+            uint _e64 = pcg_hash(_e63);
+            h = _e64;
+            metal::float3 _e65 = sum;
+            uint _e67 = s;
+            uint _e70 = h;
+            float _e71 = xi_from_bits(_e70);
+            metal::float3 _e72 = shade_pick(_e45.light.inner[_e67], x_27, n_40, ng_4, m_4, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71, slc_table, geo_nodes, geo_tris, lights, r2_7, rt2_7, params, _buffer_sizes);
+            sum = _e65 + _e72;
         }
     }
-    metal::float3 _e76 = sum;
-    metal::float3 add = vtx.weight * _e76;
-    bool _e78 = finite3_(add);
-    if (_e78) {
-        metal::float4 _e81 = radiance[i_12];
-        radiance[i_12] = _e81 + metal::float4(add, 0.0);
+    metal::float3 _e78 = sum;
+    metal::float3 add = vtx.weight * _e78;
+    bool _e80 = finite3_(add);
+    if (_e80) {
+        metal::float4 _e83 = radiance[i_12];
+        radiance[i_12] = _e83 + metal::float4(add, 0.0);
         return;
     } else {
         return;

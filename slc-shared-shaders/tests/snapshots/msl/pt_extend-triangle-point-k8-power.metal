@@ -201,7 +201,7 @@ struct BshNode {
     uint child;
     uint next;
     uint light;
-    uint pad;
+    float extent;
 };
 struct GpuLightBvhNode {
     metal::packed_float3 center;
@@ -257,6 +257,7 @@ constant float MIN_D2_ = 0.000000000001;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
+constant float RANGE_SCALE_MAX = 64.0;
 constant uint LIGHT_BVH_LEAF = 4294967295u;
 constant float ONE_MINUS_EPSILON = 0.99999994;
 constant float F32_MAX = 340282350000000000000000000000000000000.0;
@@ -912,6 +913,19 @@ float ies_light_candela(
     return _e9;
 }
 
+float bsh_scaled_radius(
+    BshNode node,
+    float scale
+) {
+    if (scale == 1.0) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return node.extent + (scale * (node.radius - node.extent));
+    }
+    return node.radius * scale;
+}
+
 uint mul_hi_u32_(
     uint a_4,
     uint b_3
@@ -1348,6 +1362,23 @@ float specular_probability(
     return metal::clamp(lobe.y / (lobe.y + lobe.x), 0.1, 0.9);
 }
 
+float receiver_peak(
+    metal::float4 lobe_1
+) {
+    float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10));
+}
+
+float range_scale(
+    metal::float4 lobe_2
+) {
+    if (lobe_2.y <= 0.0) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_2);
+    return metal::clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
 metal::float3 mirror_dir(
     metal::float3 n_16,
     metal::float3 v_6
@@ -1559,7 +1590,7 @@ float glossy_importance(
     metal::float3 p_3,
     metal::float3 n_20,
     metal::float3 r_3,
-    metal::float4 lobe_1
+    metal::float4 lobe_3
 ) {
     bool local_17 = {};
     float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
@@ -1575,10 +1606,10 @@ float glossy_importance(
     }
     float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
     float _e27 = safe_sqrt(0.5 + (0.5 * _e22));
-    float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_1.z);
-    float _e39 = smith_root(lobe_1.w, lobe_1.z);
-    float spec = ((lobe_1.y * _e33) * 0.25) / _e39;
-    return _e10 * (((lobe_1.x * INV_PI) * _e11) + spec);
+    float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_3.z);
+    float _e39 = smith_root(lobe_3.w, lobe_3.z);
+    float spec = ((lobe_3.y * _e33) * 0.25) / _e39;
+    return _e10 * (((lobe_3.x * INV_PI) * _e11) + spec);
 }
 
 float receiver_importance(
@@ -1591,13 +1622,13 @@ float receiver_importance(
     metal::float3 p_4,
     metal::float3 n_21,
     metal::float3 r_4,
-    metal::float4 lobe_2
+    metal::float4 lobe_4
 ) {
-    if (lobe_2.y <= 0.0) {
+    if (lobe_4.y <= 0.0) {
         float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
         return _e13;
     }
-    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_2);
+    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1621,15 +1652,15 @@ float cone_weight(
     metal::float3 p_5,
     metal::float3 n_22,
     metal::float3 r_5,
-    metal::float4 lobe_3
+    metal::float4 lobe_5
 ) {
     metal::float3 v_18 = p_5 - center_5;
-    if (lobe_3.y <= 0.0) {
+    if (lobe_5.y <= 0.0) {
         float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
         float _e19 = candidate_weight(_e15 * INV_PI, rt2_6, metal::dot(v_18, v_18));
         return _e19;
     }
-    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_3);
+    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
     float _e22 = candidate_weight(_e20, rt2_6, metal::dot(v_18, v_18));
     return _e22;
 }
@@ -2252,7 +2283,7 @@ GeoHit trace(
     GeoHit hit = {};
     type_8 stack = {};
     uint sp = 0u;
-    uint node = 0u;
+    uint node_1 = 0u;
     uint i_2 = {};
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -2265,7 +2296,7 @@ GeoHit trace(
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e21 = node;
+        uint _e21 = node_1;
         GpuGeoNode n_37 = geo_nodes[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_37.bmin, n_37.bmax, _e27);
@@ -2311,7 +2342,7 @@ GeoHit trace(
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node = n_37.first;
+                node_1 = n_37.first;
                 continue;
             }
         }
@@ -2323,7 +2354,7 @@ GeoHit trace(
         sp = _e75 - 1u;
         uint _e78 = sp;
         uint _e80 = stack.inner[_e78];
-        node = _e80;
+        node_1 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -2359,15 +2390,16 @@ float light_weight(
     metal::float3 x_15,
     metal::float3 n_28,
     metal::float3 r_6,
-    metal::float4 lobe_4,
+    metal::float4 lobe_6,
     device type_10 const& light_cones,
     device type_4 const& rt2_7,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_16 = light_cones[li];
-    float _e16 = rt2_7[li];
-    float _e17 = cone_weight(c_16.center, c_16.radius, c_16.phi, c_16.axis, c_16.cos_o, c_16.cos_e, _e16, x_15, n_28, r_6, lobe_4);
-    return _e17;
+    float _e14 = range_scale(lobe_6);
+    float _e17 = rt2_7[li];
+    float _e19 = cone_weight(c_16.center, c_16.radius, c_16.phi, c_16.axis, c_16.cos_o, c_16.cos_e, _e14 * _e17, x_15, n_28, r_6, lobe_6);
+    return _e19;
 }
 
 GpuLightBvhNode light_bvh_node(
@@ -2394,12 +2426,12 @@ float bvh_importance(
     metal::float3 x_16,
     metal::float3 n_29,
     metal::float3 r_7,
-    metal::float4 lobe_5,
+    metal::float4 lobe_7,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightBvhNode _e6 = light_bvh_node(nodes_2, i_4, light_bvh, _buffer_sizes);
-    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_16, n_29, r_7, lobe_5);
+    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_16, n_29, r_7, lobe_7);
     return _e13;
 }
 
@@ -2409,7 +2441,7 @@ float bvh_first(
     metal::float3 x_17,
     metal::float3 n_30,
     metal::float3 r_8,
-    metal::float4 lobe_6,
+    metal::float4 lobe_8,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2426,8 +2458,8 @@ float bvh_first(
     if (_e17) {
         return -1.0;
     }
-    float _e21 = bvh_importance(nodes_3, i_5 + 1u, x_17, n_30, r_8, lobe_6, light_bvh, _buffer_sizes);
-    float _e22 = bvh_importance(nodes_3, j, x_17, n_30, r_8, lobe_6, light_bvh, _buffer_sizes);
+    float _e21 = bvh_importance(nodes_3, i_5 + 1u, x_17, n_30, r_8, lobe_8, light_bvh, _buffer_sizes);
+    float _e22 = bvh_importance(nodes_3, j, x_17, n_30, r_8, lobe_8, light_bvh, _buffer_sizes);
     float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -2442,7 +2474,7 @@ BvhPick light_bvh_sample(
     metal::float3 x_18,
     metal::float3 n_31,
     metal::float3 r_9,
-    metal::float4 lobe_7,
+    metal::float4 lobe_9,
     float u_in,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
@@ -2471,7 +2503,7 @@ BvhPick light_bvh_sample(
             if (_e17.second == LIGHT_BVH_LEAF) {
                 uint _e21 = i_6;
                 if (!((_e21 > 0u))) {
-                    float _e28 = bvh_importance(nodes_4, 0u, x_18, n_31, r_9, lobe_7, light_bvh, _buffer_sizes);
+                    float _e28 = bvh_importance(nodes_4, 0u, x_18, n_31, r_9, lobe_9, light_bvh, _buffer_sizes);
                     local_28 = _e28 > 0.0;
                 } else {
                     local_28 = true;
@@ -2486,7 +2518,7 @@ BvhPick light_bvh_sample(
                 return _e37;
             }
             uint _e38 = i_6;
-            float _e39 = bvh_first(nodes_4, _e38, x_18, n_31, r_9, lobe_7, light_bvh, _buffer_sizes);
+            float _e39 = bvh_first(nodes_4, _e38, x_18, n_31, r_9, lobe_9, light_bvh, _buffer_sizes);
             if (_e39 < 0.0) {
                 BvhPick _e42 = pick;
                 return _e42;
@@ -2512,7 +2544,7 @@ float light_bvh_pmf(
     metal::float3 x_19,
     metal::float3 n_32,
     metal::float3 r_10,
-    metal::float4 lobe_8,
+    metal::float4 lobe_10,
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2542,7 +2574,7 @@ float light_bvh_pmf(
                 if (_e21 == leaf) {
                     uint _e25 = i_7;
                     if (!((_e25 > 0u))) {
-                        float _e32 = bvh_importance(nodes_5, 0u, x_19, n_32, r_10, lobe_8, light_bvh, _buffer_sizes);
+                        float _e32 = bvh_importance(nodes_5, 0u, x_19, n_32, r_10, lobe_10, light_bvh, _buffer_sizes);
                         local_30 = _e32 > 0.0;
                     } else {
                         local_30 = true;
@@ -2560,7 +2592,7 @@ float light_bvh_pmf(
                 return 0.0;
             }
             uint _e41 = i_7;
-            float _e42 = bvh_first(nodes_5, _e41, x_19, n_32, r_10, lobe_8, light_bvh, _buffer_sizes);
+            float _e42 = bvh_first(nodes_5, _e41, x_19, n_32, r_10, lobe_10, light_bvh, _buffer_sizes);
             if (_e42 < 0.0) {
                 return 0.0;
             }
@@ -2579,7 +2611,7 @@ float select_pdf(
     metal::float3 x_20,
     metal::float3 n_33,
     metal::float3 r_11,
-    metal::float4 lobe_9,
+    metal::float4 lobe_11,
     uint nee,
     bool in_range_2
 ) {
@@ -2592,7 +2624,7 @@ float light_pdf(
     metal::float3 x_21,
     metal::float3 n_34,
     metal::float3 r_12,
-    metal::float4 lobe_10,
+    metal::float4 lobe_12,
     metal::float3 y_3,
     uint nee_1,
     bool in_range_3,
@@ -2605,11 +2637,12 @@ float light_pdf(
     float d2_15 = metal::dot(v_21, v_21);
     metal::float3 _e13 = light_normal(l_8);
     float cos_y_1 = (d2_15 > 0.0) ? metal::dot(_e13, v_21 / metal::float3(metal::sqrt(d2_15))) : 0.0;
-    float _e22 = select_pdf(li_2, x_21, n_34, r_12, lobe_10, nee_1, in_range_3);
-    float _e25 = rt2_7[li_2];
-    float _e26 = light_area(l_8);
-    float _e27 = light_strategy_pdf(_e22, _e25, d2_15, _e26, cos_y_1);
-    return _e27;
+    float _e22 = select_pdf(li_2, x_21, n_34, r_12, lobe_12, nee_1, in_range_3);
+    float _e23 = range_scale(lobe_12);
+    float _e26 = rt2_7[li_2];
+    float _e28 = light_area(l_8);
+    float _e29 = light_strategy_pdf(_e22, _e23 * _e26, d2_15, _e28, cos_y_1);
+    return _e29;
 }
 
 float next_uniform(
@@ -2734,108 +2767,111 @@ kernel void main_(
         if (_e161 > 0.0) {
             uint _e168 = light_leaf[tri.light];
             BshNode leaf_1 = bsh_nodes[_e168];
-            metal::float3 _e174 = st.prev;
-            bool _e175 = sphere_contains_point(leaf_1.center, leaf_1.radius, _e174);
-            float _e177 = st.pdf_bsdf;
-            metal::float3 _e180 = st.prev;
-            metal::float3 _e182 = st.prev_normal;
-            metal::float3 _e184 = st.prev_r;
-            metal::float4 _e186 = st.prev_lobe;
-            uint _e189 = candidates[i_8];
-            float _e190 = light_pdf(tri.light, _e180, _e182, _e184, _e186, x_22, _e189, _e175, rt2_7, lights, _buffer_sizes);
-            float _e191 = mis_weight(_e177, _e190);
-            w = _e191;
+            metal::float4 _e173 = st.prev_lobe;
+            float _e174 = range_scale(_e173);
+            float _e176 = bsh_scaled_radius(leaf_1, metal::sqrt(_e174));
+            metal::float3 _e178 = st.prev;
+            bool _e179 = sphere_contains_point(leaf_1.center, _e176, _e178);
+            float _e181 = st.pdf_bsdf;
+            metal::float3 _e184 = st.prev;
+            metal::float3 _e186 = st.prev_normal;
+            metal::float3 _e188 = st.prev_r;
+            metal::float4 _e190 = st.prev_lobe;
+            uint _e193 = candidates[i_8];
+            float _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_22, _e193, _e179, rt2_7, lights, _buffer_sizes);
+            float _e195 = mis_weight(_e181, _e194);
+            w = _e195;
         }
-        metal::float3 _e193 = st.beta;
-        metal::float3 _e198 = lights[tri.light].intensity;
-        float _e200 = w;
-        metal::float3 add = (_e193 * _e198) * _e200;
-        bool _e202 = finite3_(add);
-        if (_e202) {
-            metal::float4 _e205 = radiance[i_8];
-            radiance[i_8] = _e205 + metal::float4(add, 0.0);
+        metal::float3 _e197 = st.beta;
+        metal::float3 _e202 = lights[tri.light].intensity;
+        float _e204 = w;
+        metal::float3 add = (_e197 * _e202) * _e204;
+        bool _e206 = finite3_(add);
+        if (_e206) {
+            metal::float4 _e209 = radiance[i_8];
+            radiance[i_8] = _e209 + metal::float4(add, 0.0);
         }
     }
     GpuMaterial m_3 = materials[tri.material];
-    metal::float3 _e214 = st.dir;
-    metal::float3 wo_1 = -(_e214);
-    metal::float4 _e222 = receiver_lobe(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, metal::dot(_e147, wo_1));
+    metal::float3 _e218 = st.dir;
+    metal::float3 wo_1 = -(_e218);
+    metal::float4 _e226 = receiver_lobe(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, metal::dot(_e147, wo_1));
     v.position = x_22;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    metal::float3 _e230 = st.beta;
-    v.weight = _e230;
+    metal::float3 _e234 = st.beta;
+    v.weight = _e234;
     v.wo = wo_1;
     v.alive = 1u;
-    GpuPathVertex _e236 = v;
-    vertices[i_8] = _e236;
-    uint _e238 = st.rng;
-    rng = _e238;
-    float _e240 = next_uniform(rng);
-    float _e241 = next_uniform(rng);
-    float _e242 = specular_probability(_e222);
-    metal::float3 _e244 = bsdf_sample(_e147, wo_1, m_3.alpha, _e242, _e240, _e241);
-    float _e246 = bsdf_pdf(_e147, wo_1, _e244, m_3.alpha, _e242);
-    bool _e250 = has_specular(m_3.metallic, m_3.f0_, m_3.f90_);
-    if (_e250) {
-        metal::float3 _e252 = st.beta;
-        metal::float3 _e258 = brdf_eval(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, _e147, wo_1, _e244);
-        st.beta = _e252 * (_e258 * (metal::dot(_e244, _e147) / _e246));
+    GpuPathVertex _e240 = v;
+    vertices[i_8] = _e240;
+    uint _e242 = st.rng;
+    rng = _e242;
+    float _e244 = next_uniform(rng);
+    float _e245 = next_uniform(rng);
+    float _e246 = specular_probability(_e226);
+    metal::float3 _e248 = bsdf_sample(_e147, wo_1, m_3.alpha, _e246, _e244, _e245);
+    float _e250 = bsdf_pdf(_e147, wo_1, _e248, m_3.alpha, _e246);
+    bool _e254 = has_specular(m_3.metallic, m_3.f0_, m_3.f90_);
+    if (_e254) {
+        metal::float3 _e256 = st.beta;
+        metal::float3 _e262 = brdf_eval(m_3.albedo, m_3.metallic, m_3.f0_, m_3.f90_, m_3.alpha, _e147, wo_1, _e248);
+        st.beta = _e256 * (_e262 * (metal::dot(_e248, _e147) / _e250));
     } else {
-        metal::float3 _e264 = st.beta;
-        st.beta = _e264 * m_3.albedo;
+        metal::float3 _e268 = st.beta;
+        st.beta = _e268 * m_3.albedo;
     }
     st.prev = x_22;
     st.prev_normal = _e147;
-    metal::float3 _e270 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e270;
-    st.prev_lobe = _e222;
-    st.pdf_bsdf = _e246;
-    float _e276 = params.eps;
-    st.origin = x_22 + (_e123 * _e276);
-    st.dir = _e244;
-    bool _e280 = continues_path(_e244, _e147, _e123);
-    if (!(!(_e280))) {
-        local_1 = !((_e246 > 0.0));
+    metal::float3 _e274 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e274;
+    st.prev_lobe = _e226;
+    st.pdf_bsdf = _e250;
+    float _e280 = params.eps;
+    st.origin = x_22 + (_e123 * _e280);
+    st.dir = _e248;
+    bool _e284 = continues_path(_e248, _e147, _e123);
+    if (!(!(_e284))) {
+        local_1 = !((_e250 > 0.0));
     } else {
         local_1 = true;
     }
-    bool _e289 = local_1;
-    if (!(_e289)) {
-        uint _e295 = params.depth;
-        uint _e300 = params.max_depth;
-        local_2 = (_e295 + 1u) >= _e300;
+    bool _e293 = local_1;
+    if (!(_e293)) {
+        uint _e299 = params.depth;
+        uint _e304 = params.max_depth;
+        local_2 = (_e299 + 1u) >= _e304;
     } else {
         local_2 = true;
     }
-    bool _e303 = local_2;
-    if (_e303) {
+    bool _e307 = local_2;
+    if (_e307) {
         st.alive = 0u;
     }
-    uint _e308 = params.depth;
-    bool _e309 = plays_roulette(_e308);
-    if (_e309) {
-        uint _e313 = st.alive;
-        local_3 = _e313 == 1u;
+    uint _e312 = params.depth;
+    bool _e313 = plays_roulette(_e312);
+    if (_e313) {
+        uint _e317 = st.alive;
+        local_3 = _e317 == 1u;
     } else {
         local_3 = false;
     }
-    bool _e317 = local_3;
-    if (_e317) {
-        metal::float3 _e319 = st.beta;
-        float _e320 = path_survival(_e319);
-        float _e321 = next_uniform(rng);
-        if (_e321 >= _e320) {
+    bool _e321 = local_3;
+    if (_e321) {
+        metal::float3 _e323 = st.beta;
+        float _e324 = path_survival(_e323);
+        float _e325 = next_uniform(rng);
+        if (_e325 >= _e324) {
             st.alive = 0u;
         } else {
-            metal::float3 _e326 = st.beta;
-            st.beta = _e326 / metal::float3(_e320);
+            metal::float3 _e330 = st.beta;
+            st.beta = _e330 / metal::float3(_e324);
         }
     }
-    uint _e330 = rng;
-    st.rng = _e330;
-    GpuPathState _e333 = st;
-    paths[i_8] = _e333;
+    uint _e334 = rng;
+    st.rng = _e334;
+    GpuPathState _e337 = st;
+    paths[i_8] = _e337;
     return;
 }
