@@ -4,7 +4,11 @@
 use crate::GpuError;
 use std::sync::{Arc, Mutex};
 
-/// A device, its queue, and what adapter it runs on.
+/// A device, its queue, and what adapter it runs on. Cloning is cheap
+/// (every field is a reference-counted handle or a small value) and shares
+/// the device, the queue and the error log: passes and frames keep a clone
+/// instead of borrowing the context.
+#[derive(Clone, Debug)]
 pub struct GpuContext {
     /// Device.
     pub device: wgpu::Device,
