@@ -135,6 +135,8 @@
 //! ```
 #![deny(missing_docs)]
 
+pub mod bindings;
+pub mod engine;
 pub mod layout;
 
 use minijinja::{Environment, context};
@@ -269,11 +271,18 @@ pub enum Kernel {
     PrimaryDirect,
     /// Direct plus indirect light into the frame's HDR target.
     FrameCompose,
+    /// The direct pass's per-record ranges: `r_t²` from each light's peak
+    /// and the record's culling, then `r²`.
+    LightRanges,
+    /// The direct pass's shading: an engine's G-buffer read in place, the
+    /// BSH traversed, the picks (weighted, uniform or every light in range)
+    /// connected, irradiance into the engine's storage texture.
+    DirectLight,
 }
 
 impl Kernel {
     /// All kernels.
-    pub const ALL: [Kernel; 14] = [
+    pub const ALL: [Kernel; 16] = [
         Kernel::LightUpdate,
         Kernel::BshRefit,
         Kernel::VplTiled,
@@ -288,6 +297,8 @@ impl Kernel {
         Kernel::SceneRaster,
         Kernel::PrimaryDirect,
         Kernel::FrameCompose,
+        Kernel::LightRanges,
+        Kernel::DirectLight,
     ];
 
     /// File stem / name.
@@ -307,6 +318,8 @@ impl Kernel {
             Kernel::SceneRaster => "scene_raster",
             Kernel::PrimaryDirect => "primary_direct",
             Kernel::FrameCompose => "frame_compose",
+            Kernel::LightRanges => "light_ranges",
+            Kernel::DirectLight => "direct_light",
         }
     }
 
@@ -414,6 +427,21 @@ impl OutputFormat {
     }
 }
 
+/// Where the engine passes' kernels (`gbuffer_import`, `direct_light`)
+/// read the G-buffer's surface.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SurfaceSource {
+    /// A world-position texture (`texture_2d<f32>`, `w > 0` where a
+    /// surface is).
+    Position,
+    /// A `Depth32Float` depth texture (`texture_depth_2d`) and the view's
+    /// inverse view-projection.
+    Depth,
+    /// An `R32Float` depth texture (`texture_2d<f32>`, depth in x) and the
+    /// view's inverse view-projection.
+    R32Depth,
+}
+
 /// What a kernel is specialised to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Features {
@@ -444,6 +472,8 @@ pub struct Features {
     /// neither (8 storage buffers per stage instead of 10, WebGPU's default
     /// limit).
     pub shadows: bool,
+    /// Where `gbuffer_import` and `direct_light` read the surface.
+    pub surface: SurfaceSource,
 }
 
 impl Default for Features {
@@ -461,11 +491,12 @@ impl Default for Features {
             vpl_source: VplSource::Rsm,
             output_format: OutputFormat::Rgba16Float,
             shadows: true,
+            surface: SurfaceSource::Position,
         }
     }
 }
 
-const TEMPLATES: [(&str, &str); 22] = [
+const TEMPLATES: [(&str, &str); 26] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("workgroup_box.wgsl", include_str!("templates/workgroup_box.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
@@ -487,6 +518,10 @@ const TEMPLATES: [(&str, &str); 22] = [
     ("scene_raster", include_str!("templates/scene_raster.wgsl")),
     ("primary_direct", include_str!("templates/primary_direct.wgsl")),
     ("frame_compose", include_str!("templates/frame_compose.wgsl")),
+    ("gbuffer_read.wgsl", include_str!("templates/gbuffer_read.wgsl")),
+    ("bsh_weighted.wgsl", include_str!("templates/bsh_weighted.wgsl")),
+    ("light_ranges", include_str!("templates/light_ranges.wgsl")),
+    ("direct_light", include_str!("templates/direct_light.wgsl")),
     ("layout", ""),
 ];
 
@@ -545,6 +580,17 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
             // light list of one block, two counters; at most 256 threads.
             if !(1..=16).contains(&f.tile_size) || !f.tile_size.is_power_of_two() || !(1..=16).contains(&f.interleave) {
                 return bad(format!("vpl_near: tile {} must be a power of two in 1..=16, period {} in 1..=16", f.tile_size, f.interleave));
+            }
+        }
+        Kernel::DirectLight => {
+            if f.lights.is_empty() {
+                return bad("direct_light needs at least one light type".into());
+            }
+            if !matches!(f.selection, Selection::Reservoir | Selection::Weighted | Selection::All) {
+                return bad(format!("direct_light picks lights by reservoir, weighted or all, not {:?}", f.selection));
+            }
+            if !(1..=16).contains(&f.tile_size) {
+                return bad(format!("direct_light: tile {} must be in 1..=16", f.tile_size));
             }
         }
         Kernel::BshReservoir | Kernel::PtConnect | Kernel::PtExtend if f.lights.is_empty() => {
@@ -618,6 +664,9 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         source => match features.vpl_source { VplSource::Rsm => "rsm", VplSource::Buffer => "buffer" },
         out_format => features.output_format.wgsl(),
         shadows => features.shadows,
+        surface => match features.surface { SurfaceSource::Position => "position", SurfaceSource::Depth => "depth", SurfaceSource::R32Depth => "r32" },
+        bindings => bindings::declarations(&bindings::bindings(kernel, features)),
+        engine => slc_core::wgsl::translate(engine::WGSL),
     };
     let source = env
         .get_template(kernel.name())
@@ -625,6 +674,21 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         .map_err(|e| ShaderError::Template { kernel: kernel.name(), message: e.to_string() })?;
     let (module, info) = validate(kernel.name(), &source)?;
     Ok(Generated { kernel, source, module, info })
+}
+
+impl Generated {
+    /// The kernel as naga's compaction leaves it (as naga's own snapshot
+    /// tests keep their outputs): only what the entry points use, so a
+    /// kernel's snapshot and translations hold that kernel, not the whole
+    /// shared library; validated again.
+    pub fn compacted(&self) -> Result<Generated, ShaderError> {
+        let mut module = self.module.clone();
+        naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+        let info = Validator::new(ValidationFlags::all(), Capabilities::default())
+            .validate(&module)
+            .map_err(|e| ShaderError::Naga { kernel: self.kernel.name(), message: format!("after compaction: {e}") })?;
+        Ok(Generated { kernel: self.kernel, source: self.source.clone(), module, info })
+    }
 }
 
 /// [`generate_module`]'s WGSL source.
@@ -697,6 +761,7 @@ pub fn all_kernels(features: &Features) -> Result<Vec<Generated>, ShaderError> {
     Kernel::ALL
         .iter()
         .filter(|&&k| !k.is_vpl_frame() || features.lights == LightSet { vpl: true, ..LightSet::default() })
+        .filter(|&&k| k != Kernel::DirectLight || matches!(features.selection, Selection::Reservoir | Selection::Weighted | Selection::All))
         .map(|&k| generate_module(k, features))
         .collect()
 }

@@ -1,0 +1,564 @@
+struct GpuLight {
+    p0_: vec3<f32>,
+    kind: u32,
+    p1_: vec3<f32>,
+    a: f32,
+    p2_: vec3<f32>,
+    b: f32,
+    intensity: vec3<f32>,
+    ies_base: u32,
+}
+
+struct GpuLightCone {
+    center: vec3<f32>,
+    radius: f32,
+    axis: vec3<f32>,
+    cos_o: f32,
+    phi: f32,
+    cos_e: f32,
+    bvh_leaf: u32,
+    pad: u32,
+}
+
+struct ViewParams {
+    c0_: vec4<f32>,
+    c1_: vec4<f32>,
+    c2_: vec4<f32>,
+    c3_: vec4<f32>,
+    eye: vec3<f32>,
+    width: u32,
+    height: u32,
+    background: f32,
+    seed: u32,
+    frame: u32,
+}
+
+struct BshNode {
+    center: vec3<f32>,
+    radius: f32,
+    child: u32,
+    next: u32,
+    light: u32,
+    pad: u32,
+}
+
+struct Connection {
+    e: vec3<f32>,
+    y: vec3<f32>,
+    cos_x: f32,
+}
+
+struct WeightedPicks {
+    light: array<u32, 8>,
+    w: array<f32, 8>,
+    w_sum: f32,
+    n: u32,
+}
+
+const LIGHT_POINT: u32 = 0u;
+const LIGHT_SPOT: u32 = 1u;
+const LIGHT_IES: u32 = 2u;
+const LIGHT_TRIANGLE: u32 = 3u;
+const LIGHT_VPL: u32 = 4u;
+const NO_LIGHT: u32 = 4294967295u;
+const MAP_CAMERA: u32 = 0u;
+const MAP_PERSPECTIVE: u32 = 1u;
+const MAP_ORTHOGRAPHIC: u32 = 2u;
+const XI_STEP: f32 = 0.000000059604645f;
+const PICK_STREAM: u32 = 2654435769u;
+const TWO_PI: f32 = 6.2831855f;
+const CULL_RADIUS_SCALE: f32 = 1.000001f;
+const SPHERE_PAD: f32 = 0.00000047683716f;
+const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
+const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const INV_PI: f32 = 0.31830987f;
+const MIN_D2_: f32 = 0.000000000001f;
+const BSH_NONE: u32 = 4294967295u;
+const RESERVOIR_FULL: u32 = 4294967295u;
+const LIGHT_BVH_LEAF: u32 = 4294967295u;
+const ONE_MINUS_EPSILON: f32 = 0.99999994f;
+const F32_MAX: f32 = 340282350000000000000000000000000000000f;
+const GGX_ALPHA_MIN: f32 = 0.001f;
+const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
+const DEPTH_SIGMA: f32 = 0.05f;
+const COVER_WEIGHT: f32 = 0.1f;
+const NEAR_BLOCK: u32 = 64u;
+const ROULETTE_DEPTH: u32 = 2u;
+const K: u32 = 8u;
+const BSH: u32 = 0u;
+
+@group(0) @binding(0) 
+var<uniform> view: ViewParams;
+@group(0) @binding(1) 
+var depth_tex: texture_2d<f32>;
+@group(0) @binding(2) 
+var normal_tex: texture_2d<f32>;
+@group(0) @binding(3) 
+var out_tex: texture_storage_2d<rgba16float,write>;
+@group(1) @binding(1) 
+var<storage> lights: array<GpuLight>;
+@group(1) @binding(2) 
+var<storage> rt2_4: array<f32>;
+@group(1) @binding(3) 
+var<storage> r2_2: array<f32>;
+@group(1) @binding(4) 
+var<storage> bsh_nodes: array<BshNode>;
+@group(1) @binding(5) 
+var<storage> light_cones: array<GpuLightCone>;
+
+fn to_f32_(u: u32) -> f32 {
+    return f32(u);
+}
+
+fn mul_lo_u32_(a: u32, b: u32) -> u32 {
+    return (a * b);
+}
+
+fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
+    return (a_1 + b_1);
+}
+
+fn xi_from_bits(bits: u32) -> f32 {
+    let _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+fn pcg_hash(x: u32) -> u32 {
+    let _e2 = mul_lo_u32_(x, 747796405u);
+    let _e4 = add_wrap_u32_(_e2, 2891336453u);
+    let _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+fn point_stream(seed: u32, point: u32, frame: u32) -> u32 {
+    let _e3 = pcg_hash(frame);
+    let _e5 = pcg_hash((point ^ _e3));
+    let _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+fn pick_stream(stream: u32) -> u32 {
+    let _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+fn slc_weight(rt2_: f32, d2_: f32) -> f32 {
+    if (d2_ <= rt2_) {
+        return 1f;
+    }
+    return (d2_ / rt2_);
+}
+
+fn slc_keep(r2_: f32, d2_1: f32) -> bool {
+    return (d2_1 < r2_);
+}
+
+fn sphere_contains_point(c: vec3<f32>, r: f32, x_1: vec3<f32>) -> bool {
+    let v = (x_1 - c);
+    return (dot(v, v) <= (r * r));
+}
+
+fn inverse_square(d2_2: f32) -> f32 {
+    return (1f / max(d2_2, MIN_D2_));
+}
+
+fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
+    let _e4 = inverse_square(d2_3);
+    let _e6 = slc_weight(rt2_1, d2_3);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_2: bool;
+    var local_3: bool;
+
+    let v_1 = (x_2 - y);
+    let d2_5 = dot(v_1, v_1);
+    let _e7 = slc_keep(r2_1, d2_5);
+    if !(!(_e7)) {
+        local_2 = !((d2_5 > 0f));
+    } else {
+        local_2 = true;
+    }
+    let _e16 = local_2;
+    if _e16 {
+        return 0f;
+    }
+    let w_4 = (v_1 / vec3(sqrt(d2_5)));
+    let cos_x_1 = -(dot(n, w_4));
+    if !((cos_x_1 <= 0f)) {
+        local_3 = (dot(ng, w_4) >= 0f);
+    } else {
+        local_3 = true;
+    }
+    let _e32 = local_3;
+    if _e32 {
+        return 0f;
+    }
+    return cos_x_1;
+}
+
+fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
+    if (cos_inner <= cos_outer) {
+        return select(0f, 1f, (cos_theta >= cos_outer));
+    }
+    let t = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return ((t * t) * (3f - (2f * t)));
+}
+
+fn weighted_replace(w_1: f32, w_sum: f32, u_1: f32) -> bool {
+    return ((u_1 * w_sum) < w_1);
+}
+
+fn weighted_pick_weight(w_sum_1: f32, w_2: f32, k_1: u32) -> f32 {
+    let _e3 = to_f32_(k_1);
+    return (w_sum_1 / (_e3 * w_2));
+}
+
+fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+    if (cos_a > cos_b) {
+        return 1f;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+fn sin_sub_clamped(sin_a_1: f32, cos_a_1: f32, sin_b_1: f32, cos_b_1: f32) -> f32 {
+    if (cos_a_1 > cos_b_1) {
+        return 0f;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+fn safe_sqrt(x_3: f32) -> f32 {
+    return sqrt(max(x_3, 0f));
+}
+
+fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, cos_o: f32, cos_e: f32, p: vec3<f32>, n_1: vec3<f32>) -> f32 {
+    var imp: f32;
+
+    let v_2 = (p - center);
+    let dist2_ = dot(v_2, v_2);
+    let r2_3 = (radius * radius);
+    let d2_6 = max(max(dist2_, r2_3), MIN_D2_);
+    let wi = select(vec3<f32>(0f, 0f, 0f), (v_2 / vec3(sqrt(dist2_))), (dist2_ > 0f));
+    let cos_w = dot(axis, wi);
+    let _e28 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e32 = safe_sqrt((1f - (r2_3 / dist2_)));
+    let cos_b_2 = select(_e32, -1f, (dist2_ <= r2_3));
+    let _e39 = safe_sqrt((1f - (cos_b_2 * cos_b_2)));
+    let _e43 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
+    let _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
+    let _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
+    if (_e46 <= cos_e) {
+        return 0f;
+    }
+    imp = ((phi * _e46) / d2_6);
+    if (dot(n_1, n_1) > 0f) {
+        let cos_i = -(dot(wi, n_1));
+        let _e60 = safe_sqrt((1f - (cos_i * cos_i)));
+        let _e61 = imp;
+        let _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
+        imp = (_e61 * max(_e62, 0f));
+    }
+    let _e66 = imp;
+    return max(_e66, 0f);
+}
+
+fn candidate_weight(importance: f32, rt2_2: f32, d2_4: f32) -> f32 {
+    let _e3 = slc_weight(rt2_2, d2_4);
+    return (importance * _e3);
+}
+
+fn cone_weight(center_1: vec3<f32>, radius_1: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, rt2_3: f32, p_1: vec3<f32>, n_2: vec3<f32>) -> f32 {
+    let v_3 = (p_1 - center_1);
+    let _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_2);
+    let _e14 = candidate_weight((_e10 * INV_PI), rt2_3, dot(v_3, v_3));
+    return _e14;
+}
+
+fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
+    switch l.kind {
+        case 0u: {
+            return l.intensity;
+        }
+        case 1u: {
+            let _e9 = spot_falloff(dot(l.p1_, w_3), l.a, l.b);
+            return (l.intensity * _e9);
+        }
+        default: {
+            return vec3(0f);
+        }
+    }
+}
+
+fn light_point(l_1: GpuLight, u1_: f32, u2_: f32) -> vec3<f32> {
+    return l_1.p0_;
+}
+
+fn occluded(a_2: vec3<f32>, b_2: vec3<f32>) -> bool {
+    return false;
+}
+
+fn bsh_node(nodes: u32, i: u32) -> BshNode {
+    let _e4 = bsh_nodes[i];
+    return _e4;
+}
+
+fn bsh_count(nodes_1: u32) -> u32 {
+    return arrayLength((&bsh_nodes));
+}
+
+fn bsh_first(nodes_2: u32) -> u32 {
+    let _e1 = bsh_count(nodes_2);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+fn bsh_next_leaf(nodes_3: u32, start: u32, x_4: vec3<f32>) -> u32 {
+    var i_1: u32;
+
+    i_1 = start;
+    loop {
+        let _e4 = i_1;
+        if (_e4 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            let _e7 = i_1;
+            let _e8 = bsh_node(nodes_3, _e7);
+            let _e11 = sphere_contains_point(_e8.center, _e8.radius, x_4);
+            if _e11 {
+                if (_e8.child == BSH_NONE) {
+                    let _e15 = i_1;
+                    return _e15;
+                }
+                i_1 = _e8.child;
+            } else {
+                i_1 = _e8.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+fn connect(li: u32, x_5: vec3<f32>, n_3: vec3<f32>, ng_1: vec3<f32>, w_res: f32, u1_1: f32, u2_1: f32, eps: f32) -> Connection {
+    var c_1: Connection;
+    var local_4: bool;
+
+    c_1.e = vec3(0f);
+    let l_2 = lights[li];
+    let _e16 = light_point(l_2, u1_1, u2_1);
+    c_1.y = _e16;
+    let _e19 = c_1.y;
+    let _e22 = r2_2[li];
+    let _e23 = connection_cosine(x_5, _e19, n_3, ng_1, _e22);
+    c_1.cos_x = _e23;
+    let _e25 = c_1.cos_x;
+    if !((_e25 <= 0f)) {
+        let _e34 = c_1.y;
+        let _e35 = occluded((x_5 + (ng_1 * eps)), _e34);
+        local_4 = _e35;
+    } else {
+        local_4 = true;
+    }
+    let _e37 = local_4;
+    if _e37 {
+        let _e38 = c_1;
+        return _e38;
+    }
+    let _e40 = c_1.y;
+    let v_4 = (x_5 - _e40);
+    let d2_7 = dot(v_4, v_4);
+    let _e47 = light_intensity(l_2, (v_4 / vec3(sqrt(d2_7))));
+    let _e49 = c_1.cos_x;
+    let _e52 = rt2_4[li];
+    let _e53 = connection_factor(_e49, d2_7, _e52, w_res);
+    c_1.e = (_e47 * _e53);
+    let _e55 = c_1;
+    return _e55;
+}
+
+fn light_weight(li_1: u32, x_6: vec3<f32>, n_4: vec3<f32>) -> f32 {
+    let c_2 = light_cones[li_1];
+    let _e14 = rt2_4[li_1];
+    let _e15 = cone_weight(c_2.center, c_2.radius, c_2.phi, c_2.axis, c_2.cos_o, c_2.cos_e, _e14, x_6, n_4);
+    return _e15;
+}
+
+fn bsh_weighted_collect(x_7: vec3<f32>, n_5: vec3<f32>, seed_1: u32) -> WeightedPicks {
+    var picks: WeightedPicks;
+    var h_1: u32;
+    var b_3: u32;
+    var s: u32;
+
+    picks.w_sum = 0f;
+    picks.n = 0u;
+    h_1 = seed_1;
+    let _e11 = bsh_first(BSH);
+    let _e12 = bsh_next_leaf(BSH, _e11, x_7);
+    b_3 = _e12;
+    loop {
+        let _e14 = b_3;
+        if (_e14 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            let _e18 = picks.n;
+            picks.n = (_e18 + 1u);
+            let _e22 = b_3;
+            let li_2 = bsh_nodes[_e22].light;
+            let _e26 = light_weight(li_2, x_7, n_5);
+            if (_e26 > 0f) {
+                let _e30 = picks.w_sum;
+                picks.w_sum = (_e30 + _e26);
+                s = 0u;
+                loop {
+                    let _e34 = s;
+                    if (_e34 < K) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e37 = h_1;
+                        let _e38 = pcg_hash(_e37);
+                        h_1 = _e38;
+                        let _e40 = picks.w_sum;
+                        let _e41 = h_1;
+                        let _e42 = xi_from_bits(_e41);
+                        let _e43 = weighted_replace(_e26, _e40, _e42);
+                        if _e43 {
+                            let _e45 = s;
+                            picks.light[_e45] = li_2;
+                            let _e48 = s;
+                            picks.w[_e48] = _e26;
+                        }
+                    }
+                    continuing {
+                        let _e51 = s;
+                        s = (_e51 + 1u);
+                    }
+                }
+            }
+        }
+        continuing {
+            let _e55 = b_3;
+            let _e58 = bsh_nodes[_e55].next;
+            let _e59 = bsh_next_leaf(BSH, _e58, x_7);
+            b_3 = _e59;
+        }
+    }
+    let _e60 = picks;
+    return _e60;
+}
+
+fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, px: f32, py: f32, width: f32, height: f32, depth: f32, background: f32) -> vec4<f32> {
+    if (depth == background) {
+        return vec4<f32>(0f, 0f, 0f, 0f);
+    }
+    let x_8 = ((((px + 0.5f) / width) * 2f) - 1f);
+    let y_1 = (1f - (((py + 0.5f) / height) * 2f));
+    let p_2 = ((((c0_ * x_8) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    if !((abs(p_2.w) > 0f)) {
+        return vec4<f32>(0f, 0f, 0f, 0f);
+    }
+    return vec4<f32>((p_2.x / p_2.w), (p_2.y / p_2.w), (p_2.z / p_2.w), 1f);
+}
+
+fn surface_at(texel: vec2<i32>) -> vec4<f32> {
+    let _e3 = textureLoad(depth_tex, texel, 0i);
+    let d = _e3.x;
+    let _e7 = view.c0_;
+    let _e10 = view.c1_;
+    let _e13 = view.c2_;
+    let _e16 = view.c3_;
+    let _e23 = view.width;
+    let _e27 = view.height;
+    let _e31 = view.background;
+    let _e32 = unproject_pixel(_e7, _e10, _e13, _e16, f32(texel.x), f32(texel.y), f32(_e23), f32(_e27), d, _e31);
+    return _e32;
+}
+
+@compute @workgroup_size(8, 8, 1) 
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+    var local: bool;
+    var local_1: bool;
+    var h: u32;
+    var e: vec3<f32> = vec3(0f);
+    var k: u32 = 0u;
+
+    let _e4 = view.width;
+    if !((gid.x >= _e4)) {
+        let _e12 = view.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    let _e15 = local;
+    if _e15 {
+        return;
+    }
+    let texel_1 = vec2<i32>(i32(gid.x), i32(gid.y));
+    let _e21 = surface_at(texel_1);
+    let _e24 = textureLoad(normal_tex, texel_1, 0i);
+    let nn = _e24.xyz;
+    let len2_ = dot(nn, nn);
+    if !((_e21.w <= 0f)) {
+        local_1 = !((len2_ > 0f));
+    } else {
+        local_1 = true;
+    }
+    let _e37 = local_1;
+    if _e37 {
+        textureStore(out_tex, texel_1, vec4(0f));
+        return;
+    }
+    let x_9 = _e21.xyz;
+    let n_6 = (nn / vec3(sqrt(len2_)));
+    let _e47 = view.seed;
+    let _e51 = view.width;
+    let _e57 = view.frame;
+    let _e58 = point_stream(_e47, ((gid.y * _e51) + gid.x), _e57);
+    let _e59 = pick_stream(_e58);
+    h = _e59;
+    let _e64 = bsh_weighted_collect(x_9, n_6, _e58);
+    if (_e64.w_sum > 0f) {
+        loop {
+            let _e70 = k;
+            if (_e70 < K) {
+            } else {
+                break;
+            }
+            {
+                let _e73 = h;
+                let _e74 = pcg_hash(_e73);
+                h = _e74;
+                let _e75 = h;
+                let _e76 = xi_from_bits(_e75);
+                let _e77 = h;
+                let _e78 = pcg_hash(_e77);
+                h = _e78;
+                let _e79 = e;
+                let _e81 = k;
+                let _e85 = k;
+                let _e88 = weighted_pick_weight(_e64.w_sum, _e64.w[_e85], K);
+                let _e89 = h;
+                let _e90 = xi_from_bits(_e89);
+                let _e92 = connect(_e64.light[_e81], x_9, n_6, n_6, _e88, _e76, _e90, 0f);
+                e = (_e79 + _e92.e);
+            }
+            continuing {
+                let _e96 = k;
+                k = (_e96 + 1u);
+            }
+        }
+    }
+    let count = _e64.n;
+    let _e100 = e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e100, f32(count)));
+    return;
+}
