@@ -269,7 +269,7 @@ fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
         return Err(anyhow!("--method reference (every VPL at every pixel) runs on the CPU; use --backend cpu"));
     }
     let gpu = gpu_context(Backend::Gpu)?.context("no GPU context")?;
-    let frame = a.scene.gpu_frame(&gpu, &r)?;
+    let mut frame = a.scene.gpu_frame(&gpu, &r)?;
     spinner.set_message(format!("frame on the GPU ({})", settings.method.name()));
     // The first frame pays for the driver's pipeline compilation: measure the second.
     frame.render(&settings)?;

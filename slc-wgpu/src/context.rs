@@ -84,8 +84,8 @@ impl GpuContext {
 
     /// Fails with [`GpuError::Limit`] when `need` exceeds the device limit
     /// `have` called `name`.
-    pub fn require(&self, name: &'static str, need: u64, have: u64) -> Result<(), GpuError> {
-        if need > have { Err(GpuError::Limit { name, need, have }) } else { Ok(()) }
+    pub fn require(&self, name: impl Into<String>, need: u64, have: u64) -> Result<(), GpuError> {
+        if need > have { Err(GpuError::Limit { name: name.into(), need, have }) } else { Ok(()) }
     }
 
     /// Errors the device reported since the last call (validation, out of

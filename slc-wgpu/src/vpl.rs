@@ -33,8 +33,8 @@ struct Layout {
 }
 
 /// GPU buffers and pipelines for one [`VplInputs`] (one G-buffer and VPL set).
-pub struct GpuVpl<'a> {
-    gpu: &'a GpuContext,
+pub struct GpuVpl {
+    gpu: GpuContext,
     width: u32,
     height: u32,
     /// Pixels that see a surface.
@@ -72,18 +72,18 @@ pub struct GpuVpl<'a> {
     frame: std::sync::Mutex<()>,
 }
 
-impl<'a> GpuVpl<'a> {
+impl GpuVpl {
     /// Uploads the G-buffer and VPLs of `inputs` and builds the pipelines.
     /// Checks buffer, dispatch and workgroup-memory limits first. The tile
     /// light list holds up to [`TILE_LIST`] lights; larger subsets stream
     /// through it in chunks.
-    pub fn new(gpu: &'a GpuContext, inputs: &VplInputs) -> Result<Self, GpuError> {
+    pub fn new(gpu: &GpuContext, inputs: &VplInputs) -> Result<Self, GpuError> {
         Self::with_tile_list(gpu, inputs, TILE_LIST)
     }
 
     /// [`GpuVpl::new`] with a tile light list of `capacity` lights (at
     /// least 1): smaller lists take less workgroup memory and more chunks.
-    pub fn with_tile_list(gpu: &'a GpuContext, inputs: &VplInputs, capacity: u32) -> Result<Self, GpuError> {
+    pub fn with_tile_list(gpu: &GpuContext, inputs: &VplInputs, capacity: u32) -> Result<Self, GpuError> {
         let gb = &inputs.gbuffer;
         let v = &inputs.vpls;
         let (w, h) = (gb.width, gb.height);
@@ -173,7 +173,7 @@ impl<'a> GpuVpl<'a> {
             },
         ));
         let s = GpuVpl {
-            gpu,
+            gpu: gpu.clone(),
             width: w,
             height: h,
             valid: (0..gb.position.len()).map(|i| gb.valid(i)).collect(),
@@ -217,7 +217,7 @@ impl<'a> GpuVpl<'a> {
     pub fn shade(&self, settings: &VplSettings) -> Result<Shaded, GpuError> {
         let params = settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
         let _frame = self.frame.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
-        let gpu = self.gpu;
+        let gpu = &self.gpu;
         let (_, layout) = self.tiled.iter().find(|(m, _)| *m == settings.method).ok_or(GpuError::Setting("unknown method".into()))?;
         let n = self.flux.len();
         // Threshold ranges on the host with the core's function; r² on the GPU.
@@ -374,7 +374,7 @@ impl<'a> GpuVpl<'a> {
     }
 }
 
-impl IndirectShader for GpuVpl<'_> {
+impl IndirectShader for GpuVpl {
     type Error = GpuError;
 
     fn describe(&self) -> String {
