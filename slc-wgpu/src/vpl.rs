@@ -105,6 +105,13 @@ impl GpuVpl {
         let wg_bytes = slc_shared_shaders::vpl_tiled_workgroup_bytes(TILE, list);
         gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes, lim.max_compute_workgroup_storage_size as u64)?;
 
+        let vpl_only = LightSet { vpl: true, ..LightSet::default() };
+        let checked = Features { lights: vpl_only, tile_size: TILE, interleave: PERIOD, max_tile_lights: list, workgroup_size: WG, ..Features::default() };
+        crate::kernel::check_kernels(
+            gpu,
+            &[Kernel::LightUpdate, Kernel::VplTiled, Kernel::VplDenoise, Kernel::VplNear].map(|k| (k, &checked, 0)),
+        )?;
+
         let pos: Vec<[f32; 4]> = (0..gb.position.len())
             .map(|i| {
                 let p = gb.position[i];
@@ -153,7 +160,6 @@ impl GpuVpl {
         let denoise = pipeline(gpu, "vpl_denoise", generate(Kernel::VplDenoise, &df)?, &[&denoise_layout]);
         let near_layout = bind_layout(gpu, "vpl_near", 5, 1, false);
         let near = pipeline(gpu, "vpl_near", generate(Kernel::VplNear, &df)?, &[&near_layout]);
-        let vpl_only = LightSet { vpl: true, ..LightSet::default() };
         let mut tiled = Vec::new();
         for (m, cm) in [(VplMethod::Slc, CullMethod::Slc), (VplMethod::Clamp, CullMethod::Clamp), (VplMethod::None, CullMethod::None)] {
             let f = Features { lights: vpl_only, tile_size: TILE, interleave: PERIOD, max_tile_lights: list, method: cm, ..Features::default() };
