@@ -6,11 +6,11 @@
 //! | module | holds |
 //! |---|---|
 //! | [`scene`] | the scene model: triangles with optional vertex normals, materials, camera, primary light, validation |
-//! | [`cornell`], [`obj`], [`scene_file`] | the built-in Cornell box, OBJ+MTL through tobj, TOML scene files |
+//! | [`cornell`], `obj`, `scene_file` | the built-in Cornell box; OBJ+MTL through tobj and TOML scene files (feature `io`, on by default) |
 //! | [`lights`] | a light set with its BSH and power alias table; emissive triangles → triangle lights |
 //! | [`light_bvh`] | the light BVH of the `lightbvh` baseline (built here, sampled by slc-core on both backends) |
 //! | [`alias`] | Walker's alias table (the `power` baseline) |
-//! | [`image`] | linear HDR images: EXR/PNG I/O, RMSE |
+//! | [`image`] | linear HDR images, RMSE; EXR/PNG I/O (feature `io`) |
 //! | [`vpl`] | application A's settings, G-buffer, VPLs, shaded irradiance and frame |
 //! | [`pt`] | application B's settings, method enum, prepared scene and accumulation |
 //! | [`backend`] | the contract both backends implement, one trait per application |
@@ -32,9 +32,11 @@ pub mod cornell;
 pub mod image;
 pub mod light_bvh;
 pub mod lights;
+#[cfg(feature = "io")]
 pub mod obj;
 pub mod pt;
 pub mod scene;
+#[cfg(feature = "io")]
 pub mod scene_file;
 pub mod vpl;
 

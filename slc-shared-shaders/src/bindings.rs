@@ -11,7 +11,7 @@
 //! still declare their bindings in their templates; their tables here are
 //! checked against those declarations the same way.
 
-use crate::{Features, Kernel, OutputFormat, Selection, SurfaceSource, VplSource};
+use crate::{DirectOutput, Features, Kernel, OutputFormat, Selection, SurfaceSource, VplSource};
 
 /// What is bound at one binding.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -178,8 +178,21 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
                 uniform(0, "view", "ViewParams", true, "inverse view-projection, eye, image size, depth background, seed, frame"),
                 surface(1, f.surface),
                 texture(2, "normal_tex", "world unit normal (xyz)", "engine (G-buffer)"),
-                out(3, "irradiance (rgb), in-range lights (a); 0 where no surface is"),
+                out(
+                    3,
+                    match f.direct_output {
+                        DirectOutput::Radiance => "outgoing radiance (rgb), in-range lights (a); 0 where no surface is",
+                        _ => "irradiance (rgb), in-range lights (a); 0 where no surface is",
+                    },
+                ),
             ];
+            if f.direct_output != DirectOutput::Irradiance {
+                v.push(texture(4, "base_color_tex", "linear base colour (rgb)", "engine (G-buffer)"));
+                v.push(texture(5, "metal_rough_tex", "glTF metallic-roughness: roughness (g), metallic (b)", "engine (G-buffer)"));
+            }
+            if f.direct_output == DirectOutput::Split {
+                v.push(b(0, 6, "specular_tex", Resource::StorageTexture(f.output_format), "specular radiance (rgb); 0 where no surface is", "this kernel"));
+            }
             v.push(ies_table(ies));
             v.push(b(1, 1, "lights", Resource::Read("array<GpuLight>"), "the lights", "host"));
             v.push(b(1, 2, "rt2", Resource::Read("array<f32>"), "threshold range²", "`light_ranges`"));

@@ -368,7 +368,7 @@ slc_core::shared! {
     /// Uniforms of the engine passes' G-buffer readers (`gbuffer_import`,
     /// `irradiance_export`, `direct_light`), one slot per record: the view
     /// that made the depth buffer, the image and the record's random
-    /// streams, 96 bytes.
+    /// streams, the dielectric's Fresnel terms, 112 bytes.
     pub struct ViewParams {
         /// Column 0 of the inverse view-projection (depth input).
         pub c0: vec4f,
@@ -390,6 +390,12 @@ slc_core::shared! {
         pub seed: u32,
         /// Frame number.
         pub frame: u32,
+        /// The dielectric's Fresnel reflectance at normal incidence `F0_d`
+        /// (`direct_light`'s material outputs; glTF: 0.04).
+        pub f0_d: vec3f,
+        /// The dielectric's Fresnel reflectance at grazing incidence `F90_d`
+        /// (glTF: 1).
+        pub f90_d: f32,
     }
 
     /// Uniforms of `light_ranges`, one slot per record: the lights, the

@@ -137,6 +137,7 @@
 
 pub mod bindings;
 pub mod engine;
+pub mod wesl;
 pub mod layout;
 
 use minijinja::{Environment, context};
@@ -442,6 +443,20 @@ pub enum SurfaceSource {
     R32Depth,
 }
 
+/// What `direct_light` writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DirectOutput {
+    /// Irradiance (rgb) and the lights in range (a).
+    Irradiance,
+    /// Outgoing radiance toward the eye under the glTF metallic-roughness
+    /// BRDF (slc-core's `brdf`) of the G-buffer's material (rgb), and the
+    /// lights in range (a).
+    Radiance,
+    /// Irradiance (rgb, a: lights in range) and, in a second target, the
+    /// specular lobe's outgoing radiance (rgb).
+    Split,
+}
+
 /// What a kernel is specialised to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Features {
@@ -474,6 +489,9 @@ pub struct Features {
     pub shadows: bool,
     /// Where `gbuffer_import` and `direct_light` read the surface.
     pub surface: SurfaceSource,
+    /// What `direct_light` writes (with a material input unless
+    /// `Irradiance`).
+    pub direct_output: DirectOutput,
 }
 
 impl Default for Features {
@@ -492,6 +510,7 @@ impl Default for Features {
             output_format: OutputFormat::Rgba16Float,
             shadows: true,
             surface: SurfaceSource::Position,
+            direct_output: DirectOutput::Irradiance,
         }
     }
 }
@@ -664,6 +683,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         source => match features.vpl_source { VplSource::Rsm => "rsm", VplSource::Buffer => "buffer" },
         out_format => features.output_format.wgsl(),
         shadows => features.shadows,
+        pbr => match features.direct_output { DirectOutput::Irradiance => "none", DirectOutput::Radiance => "radiance", DirectOutput::Split => "split" },
         surface => match features.surface { SurfaceSource::Position => "position", SurfaceSource::Depth => "depth", SurfaceSource::R32Depth => "r32" },
         bindings => bindings::declarations(&bindings::bindings(kernel, features)),
         engine => slc_core::wgsl::translate(engine::WGSL),

@@ -17,8 +17,10 @@ fn feature_sets() -> Vec<Features> {
             (Selection::Weighted, SurfaceSource::Depth),
             (Selection::All, SurfaceSource::R32Depth),
         ] {
-            for (shadows, vpl_source) in [(true, VplSource::Rsm), (false, VplSource::Buffer)] {
-                v.push(Features { lights, selection, surface, shadows, vpl_source, ..Features::default() });
+            for (shadows, vpl_source, direct_output) in
+                [(true, VplSource::Rsm, DirectOutput::Irradiance), (false, VplSource::Buffer, DirectOutput::Split), (true, VplSource::Rsm, DirectOutput::Radiance)]
+            {
+                v.push(Features { lights, selection, surface, shadows, vpl_source, direct_output, ..Features::default() });
             }
         }
     }

@@ -72,6 +72,16 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
             Kernel::DirectLight,
             Features { lights: LightSet::parse("point,spot,ies,triangle").unwrap(), output_format: OutputFormat::Rgba32Float, ..Features::default() },
         ),
+        (
+            "direct_light-triangle-weighted-split",
+            Kernel::DirectLight,
+            Features {
+                lights: LightSet::parse("triangle").unwrap(),
+                selection: Selection::Weighted,
+                direct_output: DirectOutput::Split,
+                ..Features::default()
+            },
+        ),
     ]
 }
 

@@ -344,7 +344,7 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
         let culling = slc_wgpu::Culling::Stochastic(RangeParams::new(settings.error_bound, settings.exposure)?);
         direct_pass.record(
             &mut encoder,
-            &DirectInputs { gbuffer, output: &direct_view },
+            &DirectInputs::new(gbuffer, &direct_view),
             &DirectSettings { culling, seed: settings.seed, frame: settings.frame },
         )?;
         queue.submit([encoder.finish()]);

@@ -83,7 +83,7 @@ fn pass_matches_the_cpu_twin() {
     let out_view = out.create_view(&Default::default());
     let mut pass = DirectPass::new(gpu, &set, &position_desc(DirectSelection::Uniform { k: 8 })).unwrap();
     let mut cpu = DirectLights::new(&set);
-    let inputs = DirectInputs { gbuffer: GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye: Vec3::ZERO }, output: &out_view };
+    let inputs = DirectInputs::new(GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye: Vec3::ZERO }, &out_view);
     for (eps, frame) in [(0.002, 0), (0.02, 5)] {
         let params = RangeParams::new(eps, 1.0).unwrap();
         let mut enc = gpu.device.create_command_encoder(&Default::default());
@@ -133,8 +133,8 @@ fn records_share_a_submission() {
     let gb = GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye: Vec3::ZERO };
     let settings = |frame, eps| DirectSettings { culling: Culling::Stochastic(RangeParams::new(eps, 1.0).unwrap()), seed: 3, frame };
     let mut enc = gpu.device.create_command_encoder(&Default::default());
-    pass.record(&mut enc, &DirectInputs { gbuffer: gb, output: &views[0] }, &settings(0, 0.01)).unwrap();
-    pass.record(&mut enc, &DirectInputs { gbuffer: gb, output: &views[1] }, &settings(1, 0.002)).unwrap();
+    pass.record(&mut enc, &DirectInputs::new(gb, &views[0]), &settings(0, 0.01)).unwrap();
+    pass.record(&mut enc, &DirectInputs::new(gb, &views[1]), &settings(1, 0.002)).unwrap();
     gpu.queue.submit([enc.finish()]);
     let together = [engine::submit_and_read(gpu, gpu.device.create_command_encoder(&Default::default()), &outs[0]), engine::submit_and_read(
         gpu,
@@ -143,7 +143,7 @@ fn records_share_a_submission() {
     )];
     for (k, (frame, eps)) in [(0, 0.01), (1, 0.002)].into_iter().enumerate() {
         let mut enc = gpu.device.create_command_encoder(&Default::default());
-        pass.record(&mut enc, &DirectInputs { gbuffer: gb, output: &views[k] }, &settings(frame, eps)).unwrap();
+        pass.record(&mut enc, &DirectInputs::new(gb, &views[k]), &settings(frame, eps)).unwrap();
         assert_eq!(engine::submit_and_read(gpu, enc, &outs[k]), together[k], "record {k}");
     }
     assert_ne!(together[0], together[1]);
@@ -164,7 +164,7 @@ fn moved_lights_shade_as_a_new_pass() {
     let mut pass = DirectPass::new(gpu, &set, &desc).unwrap();
     let out = engine::output(gpu, (W, H));
     let out_view = out.create_view(&Default::default());
-    let inputs = DirectInputs { gbuffer: GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye: Vec3::ZERO }, output: &out_view };
+    let inputs = DirectInputs::new(GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye: Vec3::ZERO }, &out_view);
     let settings = DirectSettings { culling: Culling::Stochastic(RangeParams::new(0.004, 1.0).unwrap()), seed: 2, frame: 1 };
     let moved: Vec<Light> = set
         .lights()
@@ -265,11 +265,11 @@ fn depth_input_matches_positions() {
     let mut by_position = DirectPass::new(gpu, &set, &position_desc(DirectSelection::All)).unwrap();
     let mut enc = gpu.device.create_command_encoder(&Default::default());
     let gb = GBuffer { surface: Surface::Depth { depth: &r32_view, inv_view_proj: inv }, normal: &g.normal, eye: cam.position };
-    by_depth.record(&mut enc, &DirectInputs { gbuffer: gb, output: &out_view }, &settings).unwrap();
+    by_depth.record(&mut enc, &DirectInputs::new(gb, &out_view), &settings).unwrap();
     let a = engine::submit_and_read(gpu, enc, &out);
     let mut enc = gpu.device.create_command_encoder(&Default::default());
     let gb = GBuffer { surface: Surface::Position(&positions), ..gb };
-    by_position.record(&mut enc, &DirectInputs { gbuffer: gb, output: &out_view }, &settings).unwrap();
+    by_position.record(&mut enc, &DirectInputs::new(gb, &out_view), &settings).unwrap();
     let b = engine::submit_and_read(gpu, enc, &out);
     let (mut valid, mut far) = (0, 0);
     for i in 0..a.len() {
@@ -299,7 +299,7 @@ fn wrong_inputs_are_typed_errors() {
     let settings = DirectSettings { culling: Culling::None, seed: 1, frame: 0 };
     let mut bad = |surface, normal, output, what: &str| {
         let mut enc = gpu.device.create_command_encoder(&Default::default());
-        let inputs = DirectInputs { gbuffer: GBuffer { surface, normal, eye: Vec3::ZERO }, output };
+        let inputs = DirectInputs::new(GBuffer { surface, normal, eye: Vec3::ZERO }, output);
         let e = pass.record(&mut enc, &inputs, &settings).unwrap_err();
         assert!(matches!(e, GpuError::Binding { .. }), "{what}: {e}");
         eprintln!("{what}: {e}");
@@ -310,7 +310,7 @@ fn wrong_inputs_are_typed_errors() {
     bad(Surface::Position(&good), &good, &good, "output of another format");
     bad(Surface::Depth { depth: &good, inv_view_proj: Mat4::IDENTITY }, &good, &out16, "depth for a position pass");
     let mut enc = gpu.device.create_command_encoder(&Default::default());
-    let ok = DirectInputs { gbuffer: GBuffer { surface: Surface::Position(&good), normal: &good, eye: Vec3::ZERO }, output: &out16 };
+    let ok = DirectInputs::new(GBuffer { surface: Surface::Position(&good), normal: &good, eye: Vec3::ZERO }, &out16);
     pass.record(&mut enc, &ok, &settings).unwrap();
     let clamp = DirectSettings { culling: Culling::Clamped { range: f32::NAN }, ..settings };
     assert!(matches!(pass.record(&mut enc, &ok, &clamp), Err(GpuError::Setting(_))));
@@ -325,7 +325,80 @@ fn wrong_inputs_are_typed_errors() {
     gpu.take_errors().unwrap();
 }
 
+/// The material outputs: with every point and spot light in range and no
+/// culling the sum is exact, so each pixel's outgoing radiance
+/// (`Radiance`) and specular radiance (`Split`) equal slc-core's glTF BRDF
+/// (`brdf_eval`, `specular_brdf`) summed over every light on the CPU, for
+/// base colours, metallic and roughness varying by pixel.
+fn material_outputs_match_the_brdf() {
+    use slc_core::brdf::{brdf_eval, ggx_alpha, specular_brdf};
+    use slc_core::light::{connection_cosine, connection_factor};
+    use slc_wgpu::passes::{Dielectric, DirectOutputs, MaterialInputs};
+    let Some(gpu) = gpu() else { return };
+    let g = gbuffer(gpu);
+    let set = LightSet::new(lights().lights().iter().filter(|l| !matches!(l, Light::Triangle(_))).cloned().collect()).unwrap();
+    let n = (W * H) as usize;
+    let base: Vec<[f32; 4]> = (0..n).map(|i| [0.2 + 0.6 * (i % 7) as f32 / 6.0, 0.5, 0.9 - 0.7 * (i % 5) as f32 / 4.0, 1.0]).collect();
+    let mr: Vec<[f32; 4]> = (0..n).map(|i| [0.0, 0.05 + 0.9 * (i % 4) as f32 / 3.0, (i % 3) as f32 / 2.0, 0.0]).collect();
+    let (bc, mrv) = (upload(gpu, "base colour", (W, H), &base), upload(gpu, "metal rough", (W, H), &mr));
+    let eye = Scene::cornell_box().camera.position;
+    let dielectric = Dielectric::default();
+    let outs = [engine::output(gpu, (W, H)), engine::output(gpu, (W, H))];
+    let views: Vec<wgpu::TextureView> = outs.iter().map(|t| t.create_view(&Default::default())).collect();
+    let settings = DirectSettings { culling: Culling::None, seed: 1, frame: 0 };
+    let gb = GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye };
+    let material = Some(MaterialInputs { base_color: &bc, metallic_roughness: &mrv });
+    let run = |outputs, specular: Option<&wgpu::TextureView>| {
+        let mut pass = DirectPass::new(gpu, &set, &DirectPassDesc { outputs, ..position_desc(DirectSelection::All) }).unwrap();
+        let mut enc = gpu.device.create_command_encoder(&Default::default());
+        pass.record(&mut enc, &DirectInputs { material, specular, ..DirectInputs::new(gb, &views[0]) }, &settings).unwrap();
+        gpu.queue.submit([enc.finish()]);
+        let a = engine::submit_and_read(gpu, gpu.device.create_command_encoder(&Default::default()), &outs[0]);
+        let b = engine::submit_and_read(gpu, gpu.device.create_command_encoder(&Default::default()), &outs[1]);
+        (a, b)
+    };
+    let (radiance, _) = run(DirectOutputs::Radiance(dielectric), None);
+    let (irradiance, specular) = run(DirectOutputs::Split(dielectric), Some(&views[1]));
+    let (mut worst, mut shaded) = (0.0f64, 0);
+    for i in (0..n).filter(|&i| g.valid[i]) {
+        let (x, nn) = (g.points[i], g.normals[i]);
+        let (b, m, alpha) = (Vec3::new(base[i][0], base[i][1], base[i][2]), mr[i][2], ggx_alpha(mr[i][1]));
+        let v = (eye - x).normalize();
+        let (mut l_out, mut e, mut spec) = (glam::DVec3::ZERO, glam::DVec3::ZERO, glam::DVec3::ZERO);
+        for light in set.lights() {
+            let y = light.bound().center;
+            let cos = connection_cosine(x, y, nn, nn, f32::INFINITY);
+            if cos <= 0.0 {
+                continue;
+            }
+            let w = x - y;
+            let d2 = w.dot(w);
+            let c = light.intensity(w / d2.sqrt()) * connection_factor(cos, d2, f32::INFINITY, 1.0);
+            let l = (y - x).normalize();
+            e += c.as_dvec3();
+            l_out += (brdf_eval(b, m, dielectric.f0, dielectric.f90, alpha, nn, v, l) * c).as_dvec3();
+            spec += (specular_brdf(b, m, dielectric.f0, dielectric.f90, alpha, nn, v, l) * c).as_dvec3();
+        }
+        let rel = |got: &[f32; 4], want: glam::DVec3| {
+            let g = glam::DVec3::new(got[0] as f64, got[1] as f64, got[2] as f64);
+            ((g - want).abs().max_element() - 1e-9).max(0.0) / want.abs().max_element().max(1e-12)
+        };
+        worst = worst.max(rel(&radiance[i], l_out)).max(rel(&irradiance[i], e)).max(rel(&specular[i], spec));
+        shaded += 1;
+    }
+    eprintln!("material outputs: {shaded} pixels, worst relative difference {worst:.2e}");
+    assert!(shaded > 1000);
+    assert!(worst <= 1e-4, "{worst:.3e}");
+    // Missing material or specular target: typed errors.
+    let mut pass = DirectPass::new(gpu, &set, &DirectPassDesc { outputs: DirectOutputs::Split(dielectric), ..position_desc(DirectSelection::All) }).unwrap();
+    let mut enc = gpu.device.create_command_encoder(&Default::default());
+    assert!(matches!(pass.record(&mut enc, &DirectInputs::new(gb, &views[0]), &settings), Err(GpuError::Binding { .. })));
+    assert!(matches!(pass.record(&mut enc, &DirectInputs { material, ..DirectInputs::new(gb, &views[0]) }, &settings), Err(GpuError::Binding { .. })));
+    gpu.take_errors().unwrap();
+}
+
 slc_tests::harness!(
+    Gpu: material_outputs_match_the_brdf,
     Gpu: pass_matches_the_cpu_twin,
     Gpu: records_share_a_submission,
     Gpu: moved_lights_shade_as_a_new_pass,

@@ -262,7 +262,7 @@ fn engine_program_matches_brute_force() {
         view_formats: &[],
     });
     let ov = output.create_view(&Default::default());
-    let inputs = DirectInputs { gbuffer: GBuffer { surface: Surface::Depth { depth: &dv, inv_view_proj: inv }, normal: &nv, eye }, output: &ov };
+    let inputs = DirectInputs::new(GBuffer { surface: Surface::Depth { depth: &dv, inv_view_proj: inv }, normal: &nv, eye }, &ov);
     let culling = Culling::Stochastic(RangeParams::new(EPS, 1.0).unwrap());
     let desc = |selection| DirectPassDesc { output_format: wgpu::TextureFormat::Rgba32Float, selection, ..DirectPassDesc::new(W, H) };
     let set = LightSet::new(layouts[0].clone()).unwrap();

@@ -123,7 +123,7 @@ fn ten_thousand_records_allocate_nothing() {
             for r in batch..batch + 10 {
                 let output = &views[(r / 2 % 2) as usize];
                 if r % 2 == 0 {
-                    direct.record(&mut enc, &DirectInputs { gbuffer, output }, &DirectSettings { culling, seed: 1, frame: r }).unwrap();
+                    direct.record(&mut enc, &DirectInputs::new(gbuffer, output), &DirectSettings { culling, seed: 1, frame: r }).unwrap();
                 } else {
                     let vpls = VplInput::Rsm { position: &rsm[0], normal: &rsm[1], flux: &rsm[2] };
                     let st = IndirectSettings { culling, frame: r, min_distance: 0.01, ..IndirectSettings::default() };

@@ -20,6 +20,8 @@ struct ViewParams {
     background: f32,
     seed: u32,
     frame: u32,
+    f0_d: vec3<f32>,
+    f90_d: f32,
 }
 
 struct BshNode {
@@ -40,6 +42,19 @@ struct Connection {
     e: vec3<f32>,
     y: vec3<f32>,
     cos_x: f32,
+}
+
+struct Shaded {
+    e: vec3<f32>,
+    diffuse: vec3<f32>,
+    specular: vec3<f32>,
+}
+
+struct Material {
+    base: vec3<f32>,
+    metallic: f32,
+    alpha: f32,
+    v: vec3<f32>,
 }
 
 const LIGHT_POINT: u32 = 0u;
@@ -180,10 +195,10 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_4 = (v_1 / vec3(sqrt(d2_4)));
-    let cos_x_1 = -(dot(n, w_4));
+    let w_5 = (v_1 / vec3(sqrt(d2_4)));
+    let cos_x_1 = -(dot(n, w_5));
     if !((cos_x_1 <= 0f)) {
-        local_3 = (dot(ng, w_4) >= 0f);
+        local_3 = (dot(ng, w_5) >= 0f);
     } else {
         local_3 = true;
     }
@@ -198,8 +213,8 @@ fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
     if (cos_inner <= cos_outer) {
         return select(0f, 1f, (cos_theta >= cos_outer));
     }
-    let t_1 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t_1 * t_1) * (3f - (2f * t_1)));
+    let t_2 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return ((t_2 * t_2) * (3f - (2f * t_2)));
 }
 
 fn triangle_lobe(n_1: vec3<f32>, area: f32, w_1: vec3<f32>) -> f32 {
@@ -215,25 +230,25 @@ fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_1: vec3<f32>, u1_: f32, u2_
 
 fn atan_portable(x_4: f32) -> f32 {
     var base: f32 = 0f;
-    var t: f32;
+    var t_1: f32;
 
-    let a_7 = abs(x_4);
-    t = a_7;
-    if (a_7 > 2.4142137f) {
+    let a_8 = abs(x_4);
+    t_1 = a_8;
+    if (a_8 > 2.4142137f) {
         base = 1.5707964f;
-        t = (-1f / a_7);
+        t_1 = (-1f / a_8);
     } else {
-        if (a_7 > 0.41421357f) {
+        if (a_8 > 0.41421357f) {
             base = 0.7853982f;
-            t = ((a_7 - 1f) / (a_7 + 1f));
+            t_1 = ((a_8 - 1f) / (a_8 + 1f));
         }
     }
-    let _e18 = t;
-    let _e19 = t;
+    let _e18 = t_1;
+    let _e19 = t_1;
     let z = (_e18 * _e19);
     let _e21 = base;
-    let _e33 = t;
-    let _e35 = t;
+    let _e33 = t_1;
+    let _e35 = t_1;
     let r_1 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
     return select(r_1, -(r_1), (x_4 < 0f));
 }
@@ -381,11 +396,11 @@ fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_3: f32) -> f32 {
     let _e54 = ies_lerp_t(_e51, _e53, _e32);
     let _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
     let _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
-    let a_8 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
+    let a_9 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
     let _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     let _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
-    let b_6 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
-    return ((a_8 * (1f - _e54)) + (b_6 * _e54));
+    let b_7 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
+    return ((a_9 * (1f - _e54)) + (b_7 * _e54));
 }
 
 fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
@@ -451,8 +466,8 @@ fn reservoir_weight(n_6: u32, k_2: u32) -> f32 {
 fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
     var local_5: bool;
 
-    let n_8 = cross((b_4 - a_5), (c_4 - a_5));
-    let l2_ = dot(n_8, n_8);
+    let n_9 = cross((b_4 - a_5), (c_4 - a_5));
+    let l2_ = dot(n_9, n_9);
     if !(!((l2_ > 0f))) {
         local_5 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -462,7 +477,7 @@ fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_8 / vec3(sqrt(l2_)));
+    return (n_9 / vec3(sqrt(l2_)));
 }
 
 fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
@@ -638,12 +653,28 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return select(vec4(0f), vec4<f32>(p.xyz, 1f), (p.w > 0f));
 }
 
+fn shade_pick(li_1: u32, x_11: vec3<f32>, n_8: vec3<f32>, m_1: Material, w_4: f32, u1_3: f32, u2_3: f32) -> Shaded {
+    var s: Shaded;
+
+    let _e9 = connect(li_1, x_11, n_8, n_8, w_4, u1_3, u2_3, 0f);
+    s.e = _e9.e;
+    s.diffuse = vec3(0f);
+    s.specular = vec3(0f);
+    let _e18 = s;
+    return _e18;
+}
+
+fn add(a_7: Shaded, b_6: Shaded) -> Shaded {
+    return Shaded((a_7.e + b_6.e), (a_7.diffuse + b_6.diffuse), (a_7.specular + b_6.specular));
+}
+
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var local: bool;
     var local_1: bool;
+    var m: Material;
     var h: u32;
-    var e: vec3<f32> = vec3(0f);
+    var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
     var k: u32 = 0u;
 
     let _e4 = view.width;
@@ -672,45 +703,47 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(out_tex, texel_1, vec4(0f));
         return;
     }
-    let x_11 = _e21.xyz;
-    let n_9 = (nn / vec3(sqrt(len2_)));
-    let _e47 = view.seed;
-    let _e51 = view.width;
-    let _e57 = view.frame;
-    let _e58 = point_stream(_e47, ((gid.y * _e51) + gid.x), _e57);
-    let _e59 = pick_stream(_e58);
-    h = _e59;
-    let _e64 = bsh_collect(x_11, _e58);
-    let _e67 = reservoir_weight(_e64.n, K);
+    let x_12 = _e21.xyz;
+    let n_10 = (nn / vec3(sqrt(len2_)));
+    let _e48 = view.seed;
+    let _e52 = view.width;
+    let _e58 = view.frame;
+    let _e59 = point_stream(_e48, ((gid.y * _e52) + gid.x), _e58);
+    let _e60 = pick_stream(_e59);
+    h = _e60;
+    let _e70 = bsh_collect(x_12, _e59);
+    let _e73 = reservoir_weight(_e70.n, K);
     loop {
-        let _e70 = k;
-        if (_e70 < min(_e64.n, K)) {
+        let _e76 = k;
+        if (_e76 < min(_e70.n, K)) {
         } else {
             break;
         }
         {
-            let _e75 = h;
-            let _e76 = pcg_hash(_e75);
-            h = _e76;
-            let _e77 = h;
-            let _e78 = xi_from_bits(_e77);
-            let _e79 = h;
-            let _e80 = pcg_hash(_e79);
-            h = _e80;
-            let _e81 = e;
-            let _e83 = k;
+            let _e81 = h;
+            let _e82 = pcg_hash(_e81);
+            h = _e82;
+            let _e83 = h;
+            let _e84 = xi_from_bits(_e83);
             let _e85 = h;
-            let _e86 = xi_from_bits(_e85);
-            let _e88 = connect(_e64.light[_e83], x_11, n_9, n_9, _e67, _e78, _e86, 0f);
-            e = (_e81 + _e88.e);
+            let _e86 = pcg_hash(_e85);
+            h = _e86;
+            let _e87 = t;
+            let _e89 = k;
+            let _e91 = m;
+            let _e92 = h;
+            let _e93 = xi_from_bits(_e92);
+            let _e94 = shade_pick(_e70.light[_e89], x_12, n_10, _e91, _e73, _e84, _e93);
+            let _e95 = add(_e87, _e94);
+            t = _e95;
         }
         continuing {
-            let _e92 = k;
-            k = (_e92 + 1u);
+            let _e97 = k;
+            k = (_e97 + 1u);
         }
     }
-    let count = _e64.n;
-    let _e96 = e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e96, f32(count)));
+    let count = _e70.n;
+    let _e102 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e102, f32(count)));
     return;
 }

@@ -31,6 +31,8 @@ struct ViewParams {
     background: f32,
     seed: u32,
     frame: u32,
+    f0_d: vec3<f32>,
+    f90_d: f32,
 }
 
 struct BshNode {
@@ -53,6 +55,19 @@ struct WeightedPicks {
     w: array<f32, 8>,
     w_sum: f32,
     n: u32,
+}
+
+struct Shaded {
+    e: vec3<f32>,
+    diffuse: vec3<f32>,
+    specular: vec3<f32>,
+}
+
+struct Material {
+    base: vec3<f32>,
+    metallic: f32,
+    alpha: f32,
+    v: vec3<f32>,
 }
 
 const LIGHT_POINT: u32 = 0u;
@@ -184,10 +199,10 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_4 = (v_1 / vec3(sqrt(d2_5)));
-    let cos_x_1 = -(dot(n, w_4));
+    let w_5 = (v_1 / vec3(sqrt(d2_5)));
+    let cos_x_1 = -(dot(n, w_5));
     if !((cos_x_1 <= 0f)) {
-        local_3 = (dot(ng, w_4) >= 0f);
+        local_3 = (dot(ng, w_5) >= 0f);
     } else {
         local_3 = true;
     }
@@ -202,8 +217,8 @@ fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
     if (cos_inner <= cos_outer) {
         return select(0f, 1f, (cos_theta >= cos_outer));
     }
-    let t = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t * t) * (3f - (2f * t)));
+    let t_1 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return ((t_1 * t_1) * (3f - (2f * t_1)));
 }
 
 fn weighted_replace(w_1: f32, w_sum: f32, u_1: f32) -> bool {
@@ -411,8 +426,8 @@ fn bsh_weighted_collect(x_7: vec3<f32>, n_5: vec3<f32>, seed_1: u32) -> Weighted
             let _e18 = picks.n;
             picks.n = (_e18 + 1u);
             let _e22 = b_3;
-            let li_2 = bsh_nodes[_e22].light;
-            let _e26 = light_weight(li_2, x_7, n_5);
+            let li_3 = bsh_nodes[_e22].light;
+            let _e26 = light_weight(li_3, x_7, n_5);
             if (_e26 > 0f) {
                 let _e30 = picks.w_sum;
                 picks.w_sum = (_e30 + _e26);
@@ -433,7 +448,7 @@ fn bsh_weighted_collect(x_7: vec3<f32>, n_5: vec3<f32>, seed_1: u32) -> Weighted
                         let _e43 = weighted_replace(_e26, _e40, _e42);
                         if _e43 {
                             let _e45 = s;
-                            picks.light[_e45] = li_2;
+                            picks.light[_e45] = li_3;
                             let _e48 = s;
                             picks.w[_e48] = _e26;
                         }
@@ -460,9 +475,9 @@ fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32
     if (depth == background) {
         return vec4<f32>(0f, 0f, 0f, 0f);
     }
-    let x_8 = ((((px + 0.5f) / width) * 2f) - 1f);
+    let x_9 = ((((px + 0.5f) / width) * 2f) - 1f);
     let y_1 = (1f - (((py + 0.5f) / height) * 2f));
-    let p_2 = ((((c0_ * x_8) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    let p_2 = ((((c0_ * x_9) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
     if !((abs(p_2.w) > 0f)) {
         return vec4<f32>(0f, 0f, 0f, 0f);
     }
@@ -483,12 +498,28 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return _e32;
 }
 
+fn shade_pick(li_2: u32, x_8: vec3<f32>, n_6: vec3<f32>, m_1: Material, w_4: f32, u1_2: f32, u2_2: f32) -> Shaded {
+    var s_1: Shaded;
+
+    let _e9 = connect(li_2, x_8, n_6, n_6, w_4, u1_2, u2_2, 0f);
+    s_1.e = _e9.e;
+    s_1.diffuse = vec3(0f);
+    s_1.specular = vec3(0f);
+    let _e18 = s_1;
+    return _e18;
+}
+
+fn add(a_3: Shaded, b_4: Shaded) -> Shaded {
+    return Shaded((a_3.e + b_4.e), (a_3.diffuse + b_4.diffuse), (a_3.specular + b_4.specular));
+}
+
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var local: bool;
     var local_1: bool;
+    var m: Material;
     var h: u32;
-    var e: vec3<f32> = vec3(0f);
+    var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
     var k: u32 = 0u;
 
     let _e4 = view.width;
@@ -517,48 +548,50 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(out_tex, texel_1, vec4(0f));
         return;
     }
-    let x_9 = _e21.xyz;
-    let n_6 = (nn / vec3(sqrt(len2_)));
-    let _e47 = view.seed;
-    let _e51 = view.width;
-    let _e57 = view.frame;
-    let _e58 = point_stream(_e47, ((gid.y * _e51) + gid.x), _e57);
-    let _e59 = pick_stream(_e58);
-    h = _e59;
-    let _e64 = bsh_weighted_collect(x_9, n_6, _e58);
-    if (_e64.w_sum > 0f) {
+    let x_10 = _e21.xyz;
+    let n_7 = (nn / vec3(sqrt(len2_)));
+    let _e48 = view.seed;
+    let _e52 = view.width;
+    let _e58 = view.frame;
+    let _e59 = point_stream(_e48, ((gid.y * _e52) + gid.x), _e58);
+    let _e60 = pick_stream(_e59);
+    h = _e60;
+    let _e70 = bsh_weighted_collect(x_10, n_7, _e59);
+    if (_e70.w_sum > 0f) {
         loop {
-            let _e70 = k;
-            if (_e70 < K) {
+            let _e76 = k;
+            if (_e76 < K) {
             } else {
                 break;
             }
             {
-                let _e73 = h;
-                let _e74 = pcg_hash(_e73);
-                h = _e74;
-                let _e75 = h;
-                let _e76 = xi_from_bits(_e75);
-                let _e77 = h;
-                let _e78 = pcg_hash(_e77);
-                h = _e78;
-                let _e79 = e;
-                let _e81 = k;
-                let _e85 = k;
-                let _e88 = weighted_pick_weight(_e64.w_sum, _e64.w[_e85], K);
-                let _e89 = h;
-                let _e90 = xi_from_bits(_e89);
-                let _e92 = connect(_e64.light[_e81], x_9, n_6, n_6, _e88, _e76, _e90, 0f);
-                e = (_e79 + _e92.e);
+                let _e79 = h;
+                let _e80 = pcg_hash(_e79);
+                h = _e80;
+                let _e81 = h;
+                let _e82 = xi_from_bits(_e81);
+                let _e83 = h;
+                let _e84 = pcg_hash(_e83);
+                h = _e84;
+                let _e85 = t;
+                let _e87 = k;
+                let _e89 = m;
+                let _e92 = k;
+                let _e95 = weighted_pick_weight(_e70.w_sum, _e70.w[_e92], K);
+                let _e96 = h;
+                let _e97 = xi_from_bits(_e96);
+                let _e98 = shade_pick(_e70.light[_e87], x_10, n_7, _e89, _e95, _e82, _e97);
+                let _e99 = add(_e85, _e98);
+                t = _e99;
             }
             continuing {
-                let _e96 = k;
-                k = (_e96 + 1u);
+                let _e101 = k;
+                k = (_e101 + 1u);
             }
         }
     }
-    let count = _e64.n;
-    let _e100 = e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e100, f32(count)));
+    let count = _e70.n;
+    let _e106 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e106, f32(count)));
     return;
 }

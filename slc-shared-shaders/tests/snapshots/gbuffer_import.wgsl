@@ -9,6 +9,8 @@ struct ViewParams {
     background: f32,
     seed: u32,
     frame: u32,
+    f0_d: vec3<f32>,
+    f90_d: f32,
 }
 
 const LIGHT_POINT: u32 = 0u;

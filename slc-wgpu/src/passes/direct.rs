@@ -18,7 +18,25 @@
 //! | `gbuffer.normal` | `Rgba32Float` or `Rgba16Float` | `width × height` | `TEXTURE_BINDING` | world normal facing the camera (xyz; `w` unused) |
 //! | `output` | the descriptor's `output_format` (`Rgba16Float` or `Rgba32Float`) | `width × height` | `STORAGE_BINDING` | written: irradiance (rgb), lights in range (a); 0 where no surface is |
 //!
-//! The engine multiplies the irradiance by `albedo/π` (a diffuse surface).
+//! The engine multiplies the irradiance by `albedo/π` (a diffuse surface),
+//! or asks for more ([`DirectOutputs`]) and gives the G-buffer's glTF
+//! metallic-roughness material ([`MaterialInputs`]):
+//!
+//! | input | format | size | usage | content |
+//! |---|---|---|---|---|
+//! | `material.base_color` | `Rgba8Unorm`, `Rgba8UnormSrgb`, `Rgba16Float` or `Rgba32Float` | `width × height` | `TEXTURE_BINDING` | linear base colour (rgb) |
+//! | `material.metallic_roughness` | the same formats | `width × height` | `TEXTURE_BINDING` | glTF's layout: perceptual roughness (g), metallic (b) |
+//! | `specular` (`Split` only) | the output format | `width × height` | `STORAGE_BINDING` | written: the specular lobe's outgoing radiance (rgb) |
+//!
+//! `Radiance` writes the outgoing radiance toward the eye `Σ f(v, l) I cos θ / d²`
+//! with slc-core's `brdf` (the glTF 2.0 reference BRDF: Lambert diffuse
+//! weighted by `1 − F`, GGX with height-correlated Smith visibility,
+//! Schlick Fresnel, the metal/dielectric mix); `Split` writes the
+//! irradiance (the engine applies its own diffuse lobe) and, to a second
+//! target, the specular radiance. On a glossy receiver the error bound ε no
+//! longer caps one light's deviation (its derivation assumes `ρ ≤ 1/π`):
+//! a sharp highlight of a light just inside its range is weighted by `1/p`
+//! like any other pick, unbiased but noisier.
 //!
 //! **The estimator.** At a pixel `x`, the lights whose random range
 //! reaches it are the candidates (the BSH finds them). The pass shades `k`
@@ -63,20 +81,21 @@
 //!     // ... the engine's depth and normal passes ...
 //!     let gbuffer = GBuffer { surface: Surface::Depth { depth: &depth, inv_view_proj }, normal: &normal, eye: Vec3::new(0.0, 1.7, 5.0) };
 //!     let settings = DirectSettings { culling: Culling::Stochastic(RangeParams::new(0.008, 1.0)?), seed: 1, frame };
-//!     pass.record(&mut encoder, &DirectInputs { gbuffer, output: &output }, &settings)?;
+//!     pass.record(&mut encoder, &DirectInputs::new(gbuffer, &output), &settings)?;
 //!     queue.submit([encoder.finish()]);
 //! }
 //! # Ok(()) }
 //! ```
 
 use super::{Culling, GBuffer, RECORDS_PER_SUBMISSION, RecordSlots, SurfaceDesc, ViewCache, check_size, check_view, output_format};
+use glam::Vec3;
 use crate::kernel::{KernelLayout, UniformSlots, check_kernels};
 use crate::lights::{GpuLightSet, TABLES, WG, check_light_limits, light_set, types_within};
 use crate::{GpuContext, GpuError};
 use slc_core::light::Light;
 use slc_scene::lights::LightSet;
 use slc_shared_shaders::layout::{CullParams, ViewParams};
-use slc_shared_shaders::{Features, Kernel, Selection};
+use slc_shared_shaders::{DirectOutput, Features, Kernel, Selection};
 
 /// Tile edge of the 2-D kernels, in pixels.
 const TILE: u32 = 8;
@@ -98,8 +117,57 @@ pub enum DirectSelection {
     All,
 }
 
+/// The dielectric part of the glTF material: its Fresnel reflectance at
+/// normal (`f0`) and grazing (`f90`) incidence; glTF's default (IOR 1.5)
+/// is `0.04` and `1`, `KHR_materials_specular` scales and tints them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dielectric {
+    /// `F0_d` (RGB).
+    pub f0: Vec3,
+    /// `F90_d`.
+    pub f90: f32,
+}
+
+impl Default for Dielectric {
+    /// glTF's default: IOR 1.5.
+    fn default() -> Self {
+        Dielectric { f0: Vec3::splat(0.04), f90: 1.0 }
+    }
+}
+
+/// What the direct pass writes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum DirectOutputs {
+    /// Irradiance (rgb) and the lights in range (a); the engine applies
+    /// its BRDF.
+    Irradiance,
+    /// Outgoing radiance toward the eye under the G-buffer's glTF
+    /// material ([`MaterialInputs`]), and the lights in range (a).
+    Radiance(Dielectric),
+    /// Irradiance into the output and the specular lobe's outgoing
+    /// radiance into [`DirectInputs::specular`].
+    Split(Dielectric),
+}
+
+/// The G-buffer's glTF metallic-roughness material (see the module table).
+#[derive(Clone, Copy, Debug)]
+pub struct MaterialInputs<'a> {
+    /// Linear base colour (rgb).
+    pub base_color: &'a wgpu::TextureView,
+    /// Perceptual roughness (g) and metallic (b), glTF's layout.
+    pub metallic_roughness: &'a wgpu::TextureView,
+}
+
+/// The formats the material textures are read in.
+const MATERIAL_FORMATS: [wgpu::TextureFormat; 4] = [
+    wgpu::TextureFormat::Rgba8Unorm,
+    wgpu::TextureFormat::Rgba8UnormSrgb,
+    wgpu::TextureFormat::Rgba16Float,
+    wgpu::TextureFormat::Rgba32Float,
+];
+
 /// What a [`DirectPass`] is built for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DirectPassDesc {
     /// G-buffer and output width.
     pub width: u32,
@@ -117,6 +185,8 @@ pub struct DirectPassDesc {
     pub light_types: slc_shared_shaders::LightSet,
     /// Records of this pass one submission may hold (uniform slots).
     pub records_per_submission: u32,
+    /// What the pass writes.
+    pub outputs: DirectOutputs,
 }
 
 impl DirectPassDesc {
@@ -132,6 +202,7 @@ impl DirectPassDesc {
             selection: DirectSelection::Weighted { k: 8 },
             light_types: slc_shared_shaders::LightSet { point: true, spot: true, ies: true, triangle: true, vpl: false },
             records_per_submission: RECORDS_PER_SUBMISSION,
+            outputs: DirectOutputs::Irradiance,
         }
     }
 }
@@ -141,8 +212,20 @@ impl DirectPassDesc {
 pub struct DirectInputs<'a> {
     /// The G-buffer.
     pub gbuffer: GBuffer<'a>,
-    /// Where the irradiance goes.
+    /// Where the irradiance (or radiance) goes.
     pub output: &'a wgpu::TextureView,
+    /// The material, for [`DirectOutputs::Radiance`] and
+    /// [`DirectOutputs::Split`].
+    pub material: Option<MaterialInputs<'a>>,
+    /// The specular radiance's target, for [`DirectOutputs::Split`].
+    pub specular: Option<&'a wgpu::TextureView>,
+}
+
+impl<'a> DirectInputs<'a> {
+    /// Inputs for [`DirectOutputs::Irradiance`]: the G-buffer and the output.
+    pub fn new(gbuffer: GBuffer<'a>, output: &'a wgpu::TextureView) -> Self {
+        DirectInputs { gbuffer, output, material: None, specular: None }
+    }
 }
 
 /// Per-record settings of the direct pass: all it honours.
@@ -169,7 +252,7 @@ pub struct DirectPass {
     cull: UniformSlots,
     view: UniformSlots,
     slots: RecordSlots,
-    cache: ViewCache<(wgpu::TextureView, wgpu::TextureView, wgpu::TextureView)>,
+    cache: ViewCache<Vec<wgpu::TextureView>>,
 }
 
 impl DirectPass {
@@ -196,7 +279,17 @@ impl DirectPass {
                 desc.light_types.names().join(", ")
             )));
         }
+        let direct_output = match desc.outputs {
+            DirectOutputs::Irradiance => DirectOutput::Irradiance,
+            DirectOutputs::Radiance(d) | DirectOutputs::Split(d) => {
+                if !(d.f0.is_finite() && d.f0.min_element() >= 0.0 && d.f90.is_finite() && d.f90 >= 0.0) {
+                    return Err(GpuError::Setting(format!("direct pass: dielectric F0 {} and F90 {} must be finite and non-negative", d.f0, d.f90)));
+                }
+                if matches!(desc.outputs, DirectOutputs::Radiance(_)) { DirectOutput::Radiance } else { DirectOutput::Split }
+            }
+        };
         let features = Features {
+            direct_output,
             lights: desc.light_types,
             reservoir_k: k,
             selection,
@@ -304,8 +397,26 @@ impl DirectPass {
 
     fn check_inputs(&self, inputs: &DirectInputs, seed: u32, frame: u32) -> Result<ViewParams, GpuError> {
         let size = (self.desc.width, self.desc.height);
-        let view = inputs.gbuffer.check(self.desc.surface, size, seed, frame)?;
-        check_view("output", inputs.output, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)?;
+        let mut view = inputs.gbuffer.check(self.desc.surface, size, seed, frame)?;
+        let storage = wgpu::TextureUsages::STORAGE_BINDING;
+        check_view("output", inputs.output, size, &[self.desc.output_format], storage)?;
+        let missing = |name, what: &str| GpuError::Binding { name, expected: what.into(), found: "none".into() };
+        let (material, split) = match self.desc.outputs {
+            DirectOutputs::Irradiance => (None, false),
+            DirectOutputs::Radiance(d) => (Some(d), false),
+            DirectOutputs::Split(d) => (Some(d), true),
+        };
+        if let Some(d) = material {
+            let m = inputs.material.ok_or_else(|| missing("material", "the G-buffer's base colour and metallic-roughness"))?;
+            let tex = wgpu::TextureUsages::TEXTURE_BINDING;
+            check_view("material base colour", m.base_color, size, &MATERIAL_FORMATS, tex)?;
+            check_view("material metallic-roughness", m.metallic_roughness, size, &MATERIAL_FORMATS, tex)?;
+            (view.f0_d, view.f90_d) = (d.f0, d.f90);
+        }
+        if split {
+            let s = inputs.specular.ok_or_else(|| missing("specular", "a target for the specular radiance"))?;
+            check_view("specular", s, size, &[self.desc.output_format], storage)?;
+        }
         Ok(view)
     }
 
@@ -338,19 +449,24 @@ impl DirectPass {
         self.cull.write_slot(&self.gpu, slot, &cull);
         self.view.write_slot(&self.gpu, slot, &view);
         let g = inputs.gbuffer;
-        let key = (g.surface_view().clone(), g.normal.clone(), inputs.output.clone());
+        let tex = wgpu::BindingResource::TextureView;
+        let mut views = vec![("view", None), (g.surface_name(), Some(g.surface_view())), ("normal_tex", Some(g.normal)), ("out_tex", Some(inputs.output))];
+        if self.desc.outputs != DirectOutputs::Irradiance
+            && let Some(m) = inputs.material
+        {
+            views.extend([("base_color_tex", Some(m.base_color)), ("metal_rough_tex", Some(m.metallic_roughness))]);
+        }
+        if matches!(self.desc.outputs, DirectOutputs::Split(_))
+            && let Some(s) = inputs.specular
+        {
+            views.push(("specular_tex", Some(s)));
+        }
+        let key: Vec<wgpu::TextureView> = views.iter().filter_map(|(_, v)| v.cloned()).collect();
         let (gpu, shade, view_slots) = (&self.gpu, &self.shade.1, &self.view);
         let group0 = self.cache.get(key, || {
-            shade.group(
-                gpu,
-                0,
-                &[
-                    ("view", view_slots.binding()),
-                    (g.surface_name(), wgpu::BindingResource::TextureView(g.surface_view())),
-                    ("normal_tex", wgpu::BindingResource::TextureView(g.normal)),
-                    ("out_tex", wgpu::BindingResource::TextureView(inputs.output)),
-                ],
-            )
+            let res: Vec<(&str, wgpu::BindingResource)> =
+                views.iter().map(|&(name, v)| (name, v.map_or_else(|| view_slots.binding(), tex))).collect();
+            shade.group(gpu, 0, &res)
         });
         let (w, h) = (self.desc.width, self.desc.height);
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc direct"), timestamp_writes: None });

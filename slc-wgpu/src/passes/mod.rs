@@ -40,7 +40,7 @@
 pub mod direct;
 pub mod indirect;
 
-pub use direct::{DirectInputs, DirectPass, DirectPassDesc, DirectSettings, DirectSelection};
+pub use direct::{Dielectric, DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, MaterialInputs};
 pub use indirect::{IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings, VplInput, VplSourceDesc, vpl_buffer};
 pub use slc_shared_shaders::layout::GpuVplRecord;
 
@@ -208,6 +208,8 @@ impl GBuffer<'_> {
             background: surface.background(),
             seed,
             frame,
+            f0_d: Vec3::ZERO,
+            f90_d: 0.0,
         })
     }
 

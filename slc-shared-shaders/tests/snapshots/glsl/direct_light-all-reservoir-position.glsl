@@ -24,6 +24,8 @@ struct ViewParams {
     float background;
     uint seed;
     uint frame;
+    vec3 f0_d;
+    float f90_d;
 };
 struct BshNode {
     vec3 center;
@@ -41,6 +43,17 @@ struct Connection {
     vec3 e;
     vec3 y;
     float cos_x;
+};
+struct Shaded {
+    vec3 e;
+    vec3 diffuse;
+    vec3 specular;
+};
+struct Material {
+    vec3 base;
+    float metallic;
+    float alpha;
+    vec3 v;
 };
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
@@ -179,10 +192,10 @@ float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_4 = (v_1 / vec3(sqrt(d2_4)));
-    float cos_x_1 = -(dot(n, w_4));
+    vec3 w_5 = (v_1 / vec3(sqrt(d2_4)));
+    float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = (dot(ng, w_4) >= 0.0);
+        local_3 = (dot(ng, w_5) >= 0.0);
     } else {
         local_3 = true;
     }
@@ -197,8 +210,8 @@ float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
-    float t_1 = clamp(((cos_theta - cos_outer) / (cos_inner - cos_outer)), 0.0, 1.0);
-    return ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
+    float t_2 = clamp(((cos_theta - cos_outer) / (cos_inner - cos_outer)), 0.0, 1.0);
+    return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
 }
 
 float triangle_lobe(vec3 n_1, float area, vec3 w_1) {
@@ -214,24 +227,24 @@ vec3 triangle_sample(vec3 a_2, vec3 b_2, vec3 c_1, float u1_, float u2_) {
 
 float atan_portable(float x_4) {
     float base = 0.0;
-    float t = 0.0;
-    float a_7 = abs(x_4);
-    t = a_7;
-    if ((a_7 > 2.4142137)) {
+    float t_1 = 0.0;
+    float a_8 = abs(x_4);
+    t_1 = a_8;
+    if ((a_8 > 2.4142137)) {
         base = 1.5707964;
-        t = (-1.0 / a_7);
+        t_1 = (-1.0 / a_8);
     } else {
-        if ((a_7 > 0.41421357)) {
+        if ((a_8 > 0.41421357)) {
             base = 0.7853982;
-            t = ((a_7 - 1.0) / (a_7 + 1.0));
+            t_1 = ((a_8 - 1.0) / (a_8 + 1.0));
         }
     }
-    float _e18 = t;
-    float _e19 = t;
+    float _e18 = t_1;
+    float _e19 = t_1;
     float z = (_e18 * _e19);
     float _e21 = base;
-    float _e33 = t;
-    float _e35 = t;
+    float _e33 = t_1;
+    float _e35 = t_1;
     float r_1 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
     return ((x_4 < 0.0) ? -(r_1) : r_1);
 }
@@ -376,11 +389,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_3) {
     float _e54 = ies_lerp_t(_e51, _e53, _e32);
     float _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
     float _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
-    float a_8 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
+    float a_9 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
     float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
-    float b_6 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
-    return ((a_8 * (1.0 - _e54)) + (b_6 * _e54));
+    float b_7 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
+    return ((a_9 * (1.0 - _e54)) + (b_7 * _e54));
 }
 
 float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws) {
@@ -445,8 +458,8 @@ float reservoir_weight(uint n_6, uint k_2) {
 
 vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_4) {
     bool local_5 = false;
-    vec3 n_8 = cross((b_4 - a_5), (c_4 - a_5));
-    float l2_ = dot(n_8, n_8);
+    vec3 n_9 = cross((b_4 - a_5), (c_4 - a_5));
+    float l2_ = dot(n_9, n_9);
     if (!(!((l2_ > 0.0)))) {
         local_5 = !((l2_ < 3e38));
     } else {
@@ -456,7 +469,7 @@ vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_4) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_8 / vec3(sqrt(l2_)));
+    return (n_9 / vec3(sqrt(l2_)));
 }
 
 vec3 light_intensity(GpuLight l, vec3 w_3) {
@@ -631,12 +644,27 @@ vec4 surface_at(ivec2 texel) {
     return ((p.w > 0.0) ? vec4(p.xyz, 1.0) : vec4(0.0));
 }
 
+Shaded shade_pick(uint li_1, vec3 x_11, vec3 n_8, Material m_1, float w_4, float u1_3, float u2_3) {
+    Shaded s = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+    Connection _e9 = connect(li_1, x_11, n_8, n_8, w_4, u1_3, u2_3, 0.0);
+    s.e = _e9.e;
+    s.diffuse = vec3(0.0);
+    s.specular = vec3(0.0);
+    Shaded _e18 = s;
+    return _e18;
+}
+
+Shaded add(Shaded a_7, Shaded b_6) {
+    return Shaded((a_7.e + b_6.e), (a_7.diffuse + b_6.diffuse), (a_7.specular + b_6.specular));
+}
+
 void main() {
     uvec3 gid = gl_GlobalInvocationID;
     bool local = false;
     bool local_1 = false;
+    Material m = Material(vec3(0.0), 0.0, 0.0, vec3(0.0));
     uint h = 0u;
-    vec3 e = vec3(0.0);
+    Shaded t = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
     uint k = 0u;
     uint _e4 = _group_0_binding_0_cs.width;
     if (!((gid.x >= _e4))) {
@@ -664,48 +692,50 @@ void main() {
         imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
         return;
     }
-    vec3 x_11 = _e21.xyz;
-    vec3 n_9 = (nn / vec3(sqrt(len2_)));
-    uint _e47 = _group_0_binding_0_cs.seed;
-    uint _e51 = _group_0_binding_0_cs.width;
-    uint _e57 = _group_0_binding_0_cs.frame;
-    uint _e58 = point_stream(_e47, ((gid.y * _e51) + gid.x), _e57);
-    uint _e59 = pick_stream(_e58);
-    h = _e59;
-    Picks _e64 = bsh_collect(x_11, _e58);
-    float _e67 = reservoir_weight(_e64.n, K);
+    vec3 x_12 = _e21.xyz;
+    vec3 n_10 = (nn / vec3(sqrt(len2_)));
+    uint _e48 = _group_0_binding_0_cs.seed;
+    uint _e52 = _group_0_binding_0_cs.width;
+    uint _e58 = _group_0_binding_0_cs.frame;
+    uint _e59 = point_stream(_e48, ((gid.y * _e52) + gid.x), _e58);
+    uint _e60 = pick_stream(_e59);
+    h = _e60;
+    Picks _e70 = bsh_collect(x_12, _e59);
+    float _e73 = reservoir_weight(_e70.n, K);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e92 = k;
-            k = (_e92 + 1u);
+            uint _e97 = k;
+            k = (_e97 + 1u);
         }
         loop_init_1 = false;
-        uint _e70 = k;
-        if ((_e70 < min(_e64.n, K))) {
+        uint _e76 = k;
+        if ((_e76 < min(_e70.n, K))) {
         } else {
             break;
         }
         {
-            uint _e75 = h;
-            uint _e76 = pcg_hash(_e75);
-            h = _e76;
-            uint _e77 = h;
-            float _e78 = xi_from_bits(_e77);
-            uint _e79 = h;
-            uint _e80 = pcg_hash(_e79);
-            h = _e80;
-            vec3 _e81 = e;
-            uint _e83 = k;
+            uint _e81 = h;
+            uint _e82 = pcg_hash(_e81);
+            h = _e82;
+            uint _e83 = h;
+            float _e84 = xi_from_bits(_e83);
             uint _e85 = h;
-            float _e86 = xi_from_bits(_e85);
-            Connection _e88 = connect(_e64.light[_e83], x_11, n_9, n_9, _e67, _e78, _e86, 0.0);
-            e = (_e81 + _e88.e);
+            uint _e86 = pcg_hash(_e85);
+            h = _e86;
+            Shaded _e87 = t;
+            uint _e89 = k;
+            Material _e91 = m;
+            uint _e92 = h;
+            float _e93 = xi_from_bits(_e92);
+            Shaded _e94 = shade_pick(_e70.light[_e89], x_12, n_10, _e91, _e73, _e84, _e93);
+            Shaded _e95 = add(_e87, _e94);
+            t = _e95;
         }
     }
-    uint count = _e64.n;
-    vec3 _e96 = e;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e96, float(count)));
+    uint count = _e70.n;
+    vec3 _e102 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e102, float(count)));
     return;
 }
 

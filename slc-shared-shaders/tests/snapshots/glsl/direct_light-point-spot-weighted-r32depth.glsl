@@ -34,6 +34,8 @@ struct ViewParams {
     float background;
     uint seed;
     uint frame;
+    vec3 f0_d;
+    float f90_d;
 };
 struct BshNode {
     vec3 center;
@@ -53,6 +55,17 @@ struct WeightedPicks {
     float w[8];
     float w_sum;
     uint n;
+};
+struct Shaded {
+    vec3 e;
+    vec3 diffuse;
+    vec3 specular;
+};
+struct Material {
+    vec3 base;
+    float metallic;
+    float alpha;
+    vec3 v;
 };
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
@@ -182,10 +195,10 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_4 = (v_1 / vec3(sqrt(d2_5)));
-    float cos_x_1 = -(dot(n, w_4));
+    vec3 w_5 = (v_1 / vec3(sqrt(d2_5)));
+    float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = (dot(ng, w_4) >= 0.0);
+        local_3 = (dot(ng, w_5) >= 0.0);
     } else {
         local_3 = true;
     }
@@ -200,8 +213,8 @@ float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
-    float t = clamp(((cos_theta - cos_outer) / (cos_inner - cos_outer)), 0.0, 1.0);
-    return ((t * t) * (3.0 - (2.0 * t)));
+    float t_1 = clamp(((cos_theta - cos_outer) / (cos_inner - cos_outer)), 0.0, 1.0);
+    return ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
 }
 
 bool weighted_replace(float w_1, float w_sum, float u_1) {
@@ -413,8 +426,8 @@ WeightedPicks bsh_weighted_collect(vec3 x_7, vec3 n_5, uint seed_1) {
             uint _e18 = picks.n;
             picks.n = (_e18 + 1u);
             uint _e22 = b_3;
-            uint li_2 = _group_1_binding_4_cs[_e22].light;
-            float _e26 = light_weight(li_2, x_7, n_5);
+            uint li_3 = _group_1_binding_4_cs[_e22].light;
+            float _e26 = light_weight(li_3, x_7, n_5);
             if ((_e26 > 0.0)) {
                 float _e30 = picks.w_sum;
                 picks.w_sum = (_e30 + _e26);
@@ -441,7 +454,7 @@ WeightedPicks bsh_weighted_collect(vec3 x_7, vec3 n_5, uint seed_1) {
                         bool _e43 = weighted_replace(_e26, _e40, _e42);
                         if (_e43) {
                             uint _e45 = s;
-                            picks.light[_e45] = li_2;
+                            picks.light[_e45] = li_3;
                             uint _e48 = s;
                             picks.w[_e48] = _e26;
                         }
@@ -458,9 +471,9 @@ vec4 unproject_pixel(vec4 c0_, vec4 c1_, vec4 c2_, vec4 c3_, float px, float py,
     if ((depth == background)) {
         return vec4(0.0, 0.0, 0.0, 0.0);
     }
-    float x_8 = ((((px + 0.5) / width) * 2.0) - 1.0);
+    float x_9 = ((((px + 0.5) / width) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
-    vec4 p_2 = ((((c0_ * x_8) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    vec4 p_2 = ((((c0_ * x_9) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
     if (!((abs(p_2.w) > 0.0))) {
         return vec4(0.0, 0.0, 0.0, 0.0);
     }
@@ -481,12 +494,27 @@ vec4 surface_at(ivec2 texel) {
     return _e32;
 }
 
+Shaded shade_pick(uint li_2, vec3 x_8, vec3 n_6, Material m_1, float w_4, float u1_2, float u2_2) {
+    Shaded s_1 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+    Connection _e9 = connect(li_2, x_8, n_6, n_6, w_4, u1_2, u2_2, 0.0);
+    s_1.e = _e9.e;
+    s_1.diffuse = vec3(0.0);
+    s_1.specular = vec3(0.0);
+    Shaded _e18 = s_1;
+    return _e18;
+}
+
+Shaded add(Shaded a_3, Shaded b_4) {
+    return Shaded((a_3.e + b_4.e), (a_3.diffuse + b_4.diffuse), (a_3.specular + b_4.specular));
+}
+
 void main() {
     uvec3 gid = gl_GlobalInvocationID;
     bool local = false;
     bool local_1 = false;
+    Material m = Material(vec3(0.0), 0.0, 0.0, vec3(0.0));
     uint h = 0u;
-    vec3 e = vec3(0.0);
+    Shaded t = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
     uint k = 0u;
     uint _e4 = _group_0_binding_0_cs.width;
     if (!((gid.x >= _e4))) {
@@ -514,51 +542,53 @@ void main() {
         imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
         return;
     }
-    vec3 x_9 = _e21.xyz;
-    vec3 n_6 = (nn / vec3(sqrt(len2_)));
-    uint _e47 = _group_0_binding_0_cs.seed;
-    uint _e51 = _group_0_binding_0_cs.width;
-    uint _e57 = _group_0_binding_0_cs.frame;
-    uint _e58 = point_stream(_e47, ((gid.y * _e51) + gid.x), _e57);
-    uint _e59 = pick_stream(_e58);
-    h = _e59;
-    WeightedPicks _e64 = bsh_weighted_collect(x_9, n_6, _e58);
-    if ((_e64.w_sum > 0.0)) {
+    vec3 x_10 = _e21.xyz;
+    vec3 n_7 = (nn / vec3(sqrt(len2_)));
+    uint _e48 = _group_0_binding_0_cs.seed;
+    uint _e52 = _group_0_binding_0_cs.width;
+    uint _e58 = _group_0_binding_0_cs.frame;
+    uint _e59 = point_stream(_e48, ((gid.y * _e52) + gid.x), _e58);
+    uint _e60 = pick_stream(_e59);
+    h = _e60;
+    WeightedPicks _e70 = bsh_weighted_collect(x_10, n_7, _e59);
+    if ((_e70.w_sum > 0.0)) {
         bool loop_init_2 = true;
         while(true) {
             if (!loop_init_2) {
-                uint _e96 = k;
-                k = (_e96 + 1u);
+                uint _e101 = k;
+                k = (_e101 + 1u);
             }
             loop_init_2 = false;
-            uint _e70 = k;
-            if ((_e70 < K)) {
+            uint _e76 = k;
+            if ((_e76 < K)) {
             } else {
                 break;
             }
             {
-                uint _e73 = h;
-                uint _e74 = pcg_hash(_e73);
-                h = _e74;
-                uint _e75 = h;
-                float _e76 = xi_from_bits(_e75);
-                uint _e77 = h;
-                uint _e78 = pcg_hash(_e77);
-                h = _e78;
-                vec3 _e79 = e;
-                uint _e81 = k;
-                uint _e85 = k;
-                float _e88 = weighted_pick_weight(_e64.w_sum, _e64.w[_e85], K);
-                uint _e89 = h;
-                float _e90 = xi_from_bits(_e89);
-                Connection _e92 = connect(_e64.light[_e81], x_9, n_6, n_6, _e88, _e76, _e90, 0.0);
-                e = (_e79 + _e92.e);
+                uint _e79 = h;
+                uint _e80 = pcg_hash(_e79);
+                h = _e80;
+                uint _e81 = h;
+                float _e82 = xi_from_bits(_e81);
+                uint _e83 = h;
+                uint _e84 = pcg_hash(_e83);
+                h = _e84;
+                Shaded _e85 = t;
+                uint _e87 = k;
+                Material _e89 = m;
+                uint _e92 = k;
+                float _e95 = weighted_pick_weight(_e70.w_sum, _e70.w[_e92], K);
+                uint _e96 = h;
+                float _e97 = xi_from_bits(_e96);
+                Shaded _e98 = shade_pick(_e70.light[_e87], x_10, n_7, _e89, _e95, _e82, _e97);
+                Shaded _e99 = add(_e85, _e98);
+                t = _e99;
             }
         }
     }
-    uint count = _e64.n;
-    vec3 _e100 = e;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e100, float(count)));
+    uint count = _e70.n;
+    vec3 _e106 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e106, float(count)));
     return;
 }
 

@@ -14,6 +14,8 @@ struct ViewParams {
     float background;
     uint seed;
     uint frame;
+    vec3 f0_d;
+    float f90_d;
 };
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;

@@ -20,6 +20,8 @@ struct ViewParams {
     float background;
     uint seed;
     uint frame;
+    float3 f0_d;
+    float f90_d;
 };
 
 struct BshNode {
@@ -41,6 +43,26 @@ struct Connection {
     int _pad1_0;
     float3 y;
     float cos_x;
+};
+
+struct Shaded {
+    float3 e;
+    int _pad1_0;
+    float3 diffuse;
+    int _pad2_0;
+    float3 specular;
+    int _end_pad_0;
+};
+
+struct Material {
+    float3 base;
+    float metallic;
+    float alpha;
+    int _pad3_0;
+    int _pad3_1;
+    int _pad3_2;
+    float3 v;
+    int _end_pad_0;
 };
 
 static const uint LIGHT_POINT = 0u;
@@ -191,10 +213,10 @@ float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_4 = (v_1 / (sqrt(d2_4)).xxx);
-    float cos_x_1 = -(dot(n, w_4));
+    float3 w_5 = (v_1 / (sqrt(d2_4)).xxx);
+    float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = (dot(ng, w_4) >= 0.0);
+        local_3 = (dot(ng, w_5) >= 0.0);
     } else {
         local_3 = true;
     }
@@ -210,8 +232,8 @@ float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
-    float t_1 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
+    float t_2 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
 }
 
 float triangle_lobe(float3 n_1, float area, float3 w_1)
@@ -230,25 +252,25 @@ float3 triangle_sample(float3 a_2, float3 b_2, float3 c_1, float u1_, float u2_)
 float atan_portable(float x_4)
 {
     float base = 0.0;
-    float t = (float)0;
+    float t_1 = (float)0;
 
-    float a_7 = abs(x_4);
-    t = a_7;
-    if ((a_7 > 2.4142137)) {
+    float a_8 = abs(x_4);
+    t_1 = a_8;
+    if ((a_8 > 2.4142137)) {
         base = 1.5707964;
-        t = (-1.0 / a_7);
+        t_1 = (-1.0 / a_8);
     } else {
-        if ((a_7 > 0.41421357)) {
+        if ((a_8 > 0.41421357)) {
             base = 0.7853982;
-            t = ((a_7 - 1.0) / (a_7 + 1.0));
+            t_1 = ((a_8 - 1.0) / (a_8 + 1.0));
         }
     }
-    float _e18 = t;
-    float _e19 = t;
+    float _e18 = t_1;
+    float _e19 = t_1;
     float z = (_e18 * _e19);
     float _e21 = base;
-    float _e33 = t;
-    float _e35 = t;
+    float _e33 = t_1;
+    float _e35 = t_1;
     float r_1 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
     return ((x_4 < 0.0) ? -(r_1) : r_1);
 }
@@ -404,11 +426,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_3)
     const float _e54 = ies_lerp_t(_e51, _e53, _e32);
     const float _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
     const float _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
-    float a_8 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
+    float a_9 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
     const float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     const float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
-    float b_6 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
-    return ((a_8 * (1.0 - _e54)) + (b_6 * _e54));
+    float b_7 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
+    return ((a_9 * (1.0 - _e54)) + (b_7 * _e54));
 }
 
 float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
@@ -482,8 +504,8 @@ float3 triangle_normal(float3 a_5, float3 b_4, float3 c_4)
 {
     bool local_5 = (bool)0;
 
-    float3 n_8 = cross((b_4 - a_5), (c_4 - a_5));
-    float l2_ = dot(n_8, n_8);
+    float3 n_9 = cross((b_4 - a_5), (c_4 - a_5));
+    float l2_ = dot(n_9, n_9);
     if (!(!((l2_ > 0.0)))) {
         local_5 = !((l2_ < 3e38));
     } else {
@@ -493,7 +515,7 @@ float3 triangle_normal(float3 a_5, float3 b_4, float3 c_4)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_8 / (sqrt(l2_)).xxx);
+    return (n_9 / (sqrt(l2_)).xxx);
 }
 
 float3 light_intensity(GpuLight l, float3 w_3)
@@ -722,13 +744,41 @@ float4 surface_at(int2 texel)
     return ((p.w > 0.0) ? float4(p.xyz, 1.0) : (0.0).xxxx);
 }
 
+Shaded shade_pick(uint li_1, float3 x_11, float3 n_8, Material m_1, float w_4, float u1_3, float u2_3)
+{
+    Shaded s = (Shaded)0;
+
+    const Connection _e9 = connect(li_1, x_11, n_8, n_8, w_4, u1_3, u2_3, 0.0);
+    s.e = _e9.e;
+    s.diffuse = (0.0).xxx;
+    s.specular = (0.0).xxx;
+    Shaded _e18 = s;
+    const Shaded shaded = _e18;
+    return shaded;
+}
+
+Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
+    Shaded ret = (Shaded)0;
+    ret.e = arg0;
+    ret.diffuse = arg1;
+    ret.specular = arg2;
+    return ret;
+}
+
+Shaded add(Shaded a_7, Shaded b_6)
+{
+    const Shaded shaded_1 = ConstructShaded((a_7.e + b_6.e), (a_7.diffuse + b_6.diffuse), (a_7.specular + b_6.specular));
+    return shaded_1;
+}
+
 [numthreads(8, 8, 1)]
 void main(uint3 gid : SV_DispatchThreadID)
 {
     bool local = (bool)0;
     bool local_1 = (bool)0;
+    Material m = (Material)0;
     uint h = (uint)0;
-    float3 e = (0.0).xxx;
+    Shaded t = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
     uint k = 0u;
 
     uint _e4 = view.width;
@@ -757,50 +807,52 @@ void main(uint3 gid : SV_DispatchThreadID)
         out_tex[texel_1] = (0.0).xxxx;
         return;
     }
-    float3 x_11 = _e21.xyz;
-    float3 n_9 = (nn / (sqrt(len2_)).xxx);
-    uint _e47 = view.seed;
-    uint _e51 = view.width;
-    uint _e57 = view.frame;
-    const uint _e58 = point_stream(_e47, ((gid.y * _e51) + gid.x), _e57);
-    const uint _e59 = pick_stream(_e58);
-    h = _e59;
-    const Picks _e64 = bsh_collect(x_11, _e58);
-    const float _e67 = reservoir_weight(_e64.n, K);
+    float3 x_12 = _e21.xyz;
+    float3 n_10 = (nn / (sqrt(len2_)).xxx);
+    uint _e48 = view.seed;
+    uint _e52 = view.width;
+    uint _e58 = view.frame;
+    const uint _e59 = point_stream(_e48, ((gid.y * _e52) + gid.x), _e58);
+    const uint _e60 = pick_stream(_e59);
+    h = _e60;
+    const Picks _e70 = bsh_collect(x_12, _e59);
+    const float _e73 = reservoir_weight(_e70.n, K);
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e92 = k;
-            k = (_e92 + 1u);
+            uint _e97 = k;
+            k = (_e97 + 1u);
         }
         loop_init_1 = false;
-        uint _e70 = k;
-        if ((_e70 < min(_e64.n, K))) {
+        uint _e76 = k;
+        if ((_e76 < min(_e70.n, K))) {
         } else {
             break;
         }
         {
-            uint _e75 = h;
-            const uint _e76 = pcg_hash(_e75);
-            h = _e76;
-            uint _e77 = h;
-            const float _e78 = xi_from_bits(_e77);
-            uint _e79 = h;
-            const uint _e80 = pcg_hash(_e79);
-            h = _e80;
-            float3 _e81 = e;
-            uint _e83 = k;
+            uint _e81 = h;
+            const uint _e82 = pcg_hash(_e81);
+            h = _e82;
+            uint _e83 = h;
+            const float _e84 = xi_from_bits(_e83);
             uint _e85 = h;
-            const float _e86 = xi_from_bits(_e85);
-            const Connection _e88 = connect(_e64.light[min(uint(_e83), 7u)], x_11, n_9, n_9, _e67, _e78, _e86, 0.0);
-            e = (_e81 + _e88.e);
+            const uint _e86 = pcg_hash(_e85);
+            h = _e86;
+            Shaded _e87 = t;
+            uint _e89 = k;
+            Material _e91 = m;
+            uint _e92 = h;
+            const float _e93 = xi_from_bits(_e92);
+            const Shaded _e94 = shade_pick(_e70.light[min(uint(_e89), 7u)], x_12, n_10, _e91, _e73, _e84, _e93);
+            const Shaded _e95 = add(_e87, _e94);
+            t = _e95;
         }
     }
-    uint count = _e64.n;
-    float3 _e96 = e;
-    out_tex[texel_1] = float4(_e96, float(count));
+    uint count = _e70.n;
+    float3 _e102 = t.e;
+    out_tex[texel_1] = float4(_e102, float(count));
     return;
 }

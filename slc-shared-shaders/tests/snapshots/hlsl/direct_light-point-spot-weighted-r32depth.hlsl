@@ -31,6 +31,8 @@ struct ViewParams {
     float background;
     uint seed;
     uint frame;
+    float3 f0_d;
+    float f90_d;
 };
 
 struct BshNode {
@@ -54,6 +56,26 @@ struct WeightedPicks {
     float w[8];
     float w_sum;
     uint n;
+};
+
+struct Shaded {
+    float3 e;
+    int _pad1_0;
+    float3 diffuse;
+    int _pad2_0;
+    float3 specular;
+    int _end_pad_0;
+};
+
+struct Material {
+    float3 base;
+    float metallic;
+    float alpha;
+    int _pad3_0;
+    int _pad3_1;
+    int _pad3_2;
+    float3 v;
+    int _end_pad_0;
 };
 
 static const uint LIGHT_POINT = 0u;
@@ -189,10 +211,10 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_4 = (v_1 / (sqrt(d2_5)).xxx);
-    float cos_x_1 = -(dot(n, w_4));
+    float3 w_5 = (v_1 / (sqrt(d2_5)).xxx);
+    float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = (dot(ng, w_4) >= 0.0);
+        local_3 = (dot(ng, w_5) >= 0.0);
     } else {
         local_3 = true;
     }
@@ -208,8 +230,8 @@ float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
-    float t = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t * t) * (3.0 - (2.0 * t)));
+    float t_1 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
 }
 
 bool weighted_replace(float w_1, float w_sum, float u_1)
@@ -496,8 +518,8 @@ WeightedPicks bsh_weighted_collect(float3 x_7, float3 n_5, uint seed_1)
             uint _e18 = picks.n;
             picks.n = (_e18 + 1u);
             uint _e22 = b_3;
-            uint li_2 = asuint(bsh_nodes.Load(24+_e22*32));
-            const float _e26 = light_weight(li_2, x_7, n_5);
+            uint li_3 = asuint(bsh_nodes.Load(24+_e22*32));
+            const float _e26 = light_weight(li_3, x_7, n_5);
             if ((_e26 > 0.0)) {
                 float _e30 = picks.w_sum;
                 picks.w_sum = (_e30 + _e26);
@@ -527,7 +549,7 @@ WeightedPicks bsh_weighted_collect(float3 x_7, float3 n_5, uint seed_1)
                         const bool _e43 = weighted_replace(_e26, _e40, _e42);
                         if (_e43) {
                             uint _e45 = s;
-                            picks.light[min(uint(_e45), 7u)] = li_2;
+                            picks.light[min(uint(_e45), 7u)] = li_3;
                             uint _e48 = s;
                             picks.w[min(uint(_e48), 7u)] = _e26;
                         }
@@ -546,9 +568,9 @@ float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px,
     if ((depth == background)) {
         return float4(0.0, 0.0, 0.0, 0.0);
     }
-    float x_8 = ((((px + 0.5) / width) * 2.0) - 1.0);
+    float x_9 = ((((px + 0.5) / width) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
-    float4 p_2 = ((((c0_ * x_8) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    float4 p_2 = ((((c0_ * x_9) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
     if (!((abs(p_2.w) > 0.0))) {
         return float4(0.0, 0.0, 0.0, 0.0);
     }
@@ -570,13 +592,41 @@ float4 surface_at(int2 texel)
     return _e32;
 }
 
+Shaded shade_pick(uint li_2, float3 x_8, float3 n_6, Material m_1, float w_4, float u1_2, float u2_2)
+{
+    Shaded s_1 = (Shaded)0;
+
+    const Connection _e9 = connect(li_2, x_8, n_6, n_6, w_4, u1_2, u2_2, 0.0);
+    s_1.e = _e9.e;
+    s_1.diffuse = (0.0).xxx;
+    s_1.specular = (0.0).xxx;
+    Shaded _e18 = s_1;
+    const Shaded shaded = _e18;
+    return shaded;
+}
+
+Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
+    Shaded ret = (Shaded)0;
+    ret.e = arg0;
+    ret.diffuse = arg1;
+    ret.specular = arg2;
+    return ret;
+}
+
+Shaded add(Shaded a_3, Shaded b_4)
+{
+    const Shaded shaded_1 = ConstructShaded((a_3.e + b_4.e), (a_3.diffuse + b_4.diffuse), (a_3.specular + b_4.specular));
+    return shaded_1;
+}
+
 [numthreads(8, 8, 1)]
 void main(uint3 gid : SV_DispatchThreadID)
 {
     bool local = (bool)0;
     bool local_1 = (bool)0;
+    Material m = (Material)0;
     uint h = (uint)0;
-    float3 e = (0.0).xxx;
+    Shaded t = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
     uint k = 0u;
 
     uint _e4 = view.width;
@@ -605,53 +655,55 @@ void main(uint3 gid : SV_DispatchThreadID)
         out_tex[texel_1] = (0.0).xxxx;
         return;
     }
-    float3 x_9 = _e21.xyz;
-    float3 n_6 = (nn / (sqrt(len2_)).xxx);
-    uint _e47 = view.seed;
-    uint _e51 = view.width;
-    uint _e57 = view.frame;
-    const uint _e58 = point_stream(_e47, ((gid.y * _e51) + gid.x), _e57);
-    const uint _e59 = pick_stream(_e58);
-    h = _e59;
-    const WeightedPicks _e64 = bsh_weighted_collect(x_9, n_6, _e58);
-    if ((_e64.w_sum > 0.0)) {
+    float3 x_10 = _e21.xyz;
+    float3 n_7 = (nn / (sqrt(len2_)).xxx);
+    uint _e48 = view.seed;
+    uint _e52 = view.width;
+    uint _e58 = view.frame;
+    const uint _e59 = point_stream(_e48, ((gid.y * _e52) + gid.x), _e58);
+    const uint _e60 = pick_stream(_e59);
+    h = _e60;
+    const WeightedPicks _e70 = bsh_weighted_collect(x_10, n_7, _e59);
+    if ((_e70.w_sum > 0.0)) {
         uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
         bool loop_init_2 = true;
         while(true) {
             if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
             loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
             if (!loop_init_2) {
-                uint _e96 = k;
-                k = (_e96 + 1u);
+                uint _e101 = k;
+                k = (_e101 + 1u);
             }
             loop_init_2 = false;
-            uint _e70 = k;
-            if ((_e70 < K)) {
+            uint _e76 = k;
+            if ((_e76 < K)) {
             } else {
                 break;
             }
             {
-                uint _e73 = h;
-                const uint _e74 = pcg_hash(_e73);
-                h = _e74;
-                uint _e75 = h;
-                const float _e76 = xi_from_bits(_e75);
-                uint _e77 = h;
-                const uint _e78 = pcg_hash(_e77);
-                h = _e78;
-                float3 _e79 = e;
-                uint _e81 = k;
-                uint _e85 = k;
-                const float _e88 = weighted_pick_weight(_e64.w_sum, _e64.w[min(uint(_e85), 7u)], K);
-                uint _e89 = h;
-                const float _e90 = xi_from_bits(_e89);
-                const Connection _e92 = connect(_e64.light[min(uint(_e81), 7u)], x_9, n_6, n_6, _e88, _e76, _e90, 0.0);
-                e = (_e79 + _e92.e);
+                uint _e79 = h;
+                const uint _e80 = pcg_hash(_e79);
+                h = _e80;
+                uint _e81 = h;
+                const float _e82 = xi_from_bits(_e81);
+                uint _e83 = h;
+                const uint _e84 = pcg_hash(_e83);
+                h = _e84;
+                Shaded _e85 = t;
+                uint _e87 = k;
+                Material _e89 = m;
+                uint _e92 = k;
+                const float _e95 = weighted_pick_weight(_e70.w_sum, _e70.w[min(uint(_e92), 7u)], K);
+                uint _e96 = h;
+                const float _e97 = xi_from_bits(_e96);
+                const Shaded _e98 = shade_pick(_e70.light[min(uint(_e87), 7u)], x_10, n_7, _e89, _e95, _e82, _e97);
+                const Shaded _e99 = add(_e85, _e98);
+                t = _e99;
             }
         }
     }
-    uint count = _e64.n;
-    float3 _e100 = e;
-    out_tex[texel_1] = float4(_e100, float(count));
+    uint count = _e70.n;
+    float3 _e106 = t.e;
+    out_tex[texel_1] = float4(_e106, float(count));
     return;
 }

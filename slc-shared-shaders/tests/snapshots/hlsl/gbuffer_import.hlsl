@@ -9,6 +9,8 @@ struct ViewParams {
     float background;
     uint seed;
     uint frame;
+    float3 f0_d;
+    float f90_d;
 };
 
 static const uint LIGHT_POINT = 0u;

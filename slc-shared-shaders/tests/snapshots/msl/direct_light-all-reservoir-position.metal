@@ -33,6 +33,8 @@ struct ViewParams {
     float background;
     uint seed;
     uint frame;
+    metal::packed_float3 f0_d;
+    float f90_d;
 };
 typedef uint Table;
 typedef float type_4[1];
@@ -58,6 +60,18 @@ struct Connection {
     metal::float3 e;
     metal::packed_float3 y;
     float cos_x;
+};
+struct Shaded {
+    metal::float3 e;
+    metal::float3 diffuse;
+    metal::float3 specular;
+};
+struct Material {
+    metal::packed_float3 base;
+    float metallic;
+    float alpha;
+    char _pad3[12];
+    metal::float3 v;
 };
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
@@ -229,10 +243,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_4 = v_1 / metal::float3(metal::sqrt(d2_4));
-    float cos_x_1 = -(metal::dot(n, w_4));
+    metal::float3 w_5 = v_1 / metal::float3(metal::sqrt(d2_4));
+    float cos_x_1 = -(metal::dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = metal::dot(ng, w_4) >= 0.0;
+        local_3 = metal::dot(ng, w_5) >= 0.0;
     } else {
         local_3 = true;
     }
@@ -251,8 +265,8 @@ float spot_falloff(
     if (cos_inner <= cos_outer) {
         return (cos_theta >= cos_outer) ? 1.0 : 0.0;
     }
-    float t_1 = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
-    return (t_1 * t_1) * (3.0 - (2.0 * t_1));
+    float t_2 = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
+    return (t_2 * t_2) * (3.0 - (2.0 * t_2));
 }
 
 float triangle_lobe(
@@ -280,24 +294,24 @@ float atan_portable(
     float x_4
 ) {
     float base = 0.0;
-    float t = {};
-    float a_7 = metal::abs(x_4);
-    t = a_7;
-    if (a_7 > 2.4142137) {
+    float t_1 = {};
+    float a_8 = metal::abs(x_4);
+    t_1 = a_8;
+    if (a_8 > 2.4142137) {
         base = 1.5707964;
-        t = -1.0 / a_7;
+        t_1 = -1.0 / a_8;
     } else {
-        if (a_7 > 0.41421357) {
+        if (a_8 > 0.41421357) {
             base = 0.7853982;
-            t = (a_7 - 1.0) / (a_7 + 1.0);
+            t_1 = (a_8 - 1.0) / (a_8 + 1.0);
         }
     }
-    float _e18 = t;
-    float _e19 = t;
+    float _e18 = t_1;
+    float _e19 = t_1;
     float z = _e18 * _e19;
     float _e21 = base;
-    float _e33 = t;
-    float _e35 = t;
+    float _e33 = t_1;
+    float _e35 = t_1;
     float r_1 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
     return (x_4 < 0.0) ? -(r_1) : r_1;
 }
@@ -470,11 +484,11 @@ float ies_candela(
     float _e54 = ies_lerp_t(_e51, _e53, _e32);
     float _e58 = at(tab_2, (c0_ + (_e34 * _e5)) + _e33, slc_table, _buffer_sizes);
     float _e65 = at(tab_2, (c0_ + (_e34 * _e5)) + iv1_, slc_table, _buffer_sizes);
-    float a_8 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
+    float a_9 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
     float _e71 = at(tab_2, (c0_ + (ih1_ * _e5)) + _e33, slc_table, _buffer_sizes);
     float _e78 = at(tab_2, (c0_ + (ih1_ * _e5)) + iv1_, slc_table, _buffer_sizes);
-    float b_6 = (_e71 * (1.0 - _e49)) + (_e78 * _e49);
-    return (a_8 * (1.0 - _e54)) + (b_6 * _e54);
+    float b_7 = (_e71 * (1.0 - _e49)) + (_e78 * _e49);
+    return (a_9 * (1.0 - _e54)) + (b_7 * _e54);
 }
 
 float ies_candela_dir(
@@ -576,8 +590,8 @@ metal::float3 triangle_normal(
     metal::float3 c_4
 ) {
     bool local_5 = {};
-    metal::float3 n_8 = metal::cross(b_4 - a_5, c_4 - a_5);
-    float l2_ = metal::dot(n_8, n_8);
+    metal::float3 n_9 = metal::cross(b_4 - a_5, c_4 - a_5);
+    float l2_ = metal::dot(n_9, n_9);
     if (!(!((l2_ > 0.0)))) {
         local_5 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -587,7 +601,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_8 / metal::float3(metal::sqrt(l2_));
+    return n_9 / metal::float3(metal::sqrt(l2_));
 }
 
 metal::float3 light_intensity(
@@ -821,6 +835,36 @@ metal::float4 surface_at(
     return (p.w > 0.0) ? metal::float4(p.xyz, 1.0) : metal::float4(0.0);
 }
 
+Shaded shade_pick(
+    uint li_1,
+    metal::float3 x_11,
+    metal::float3 n_8,
+    Material m_1,
+    float w_4,
+    float u1_3,
+    float u2_3,
+    device type_4 const& slc_table,
+    device type_8 const& lights,
+    device type_4 const& rt2_2,
+    device type_4 const& r2_2,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Shaded s = {};
+    Connection _e9 = connect(li_1, x_11, n_8, n_8, w_4, u1_3, u2_3, 0.0, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
+    s.e = _e9.e;
+    s.diffuse = metal::float3(0.0);
+    s.specular = metal::float3(0.0);
+    Shaded _e18 = s;
+    return _e18;
+}
+
+Shaded add(
+    Shaded a_7,
+    Shaded b_6
+) {
+    return Shaded {a_7.e + b_6.e, a_7.diffuse + b_6.diffuse, a_7.specular + b_6.specular};
+}
+
 struct main_Input {
 };
 kernel void main_(
@@ -838,8 +882,9 @@ kernel void main_(
 ) {
     bool local = {};
     bool local_1 = {};
+    Material m = {};
     uint h = {};
-    metal::float3 e = metal::float3(0.0);
+    Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     uint k = 0u;
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
@@ -867,50 +912,52 @@ kernel void main_(
         out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_11 = _e21.xyz;
-    metal::float3 n_9 = nn / metal::float3(metal::sqrt(len2_));
-    uint _e47 = view.seed;
-    uint _e51 = view.width;
-    uint _e57 = view.frame;
-    uint _e58 = point_stream(_e47, (gid.y * _e51) + gid.x, _e57);
-    uint _e59 = pick_stream(_e58);
-    h = _e59;
-    Picks _e64 = bsh_collect(x_11, _e58, bsh_nodes, _buffer_sizes);
-    float _e67 = reservoir_weight(_e64.n, K);
+    metal::float3 x_12 = _e21.xyz;
+    metal::float3 n_10 = nn / metal::float3(metal::sqrt(len2_));
+    uint _e48 = view.seed;
+    uint _e52 = view.width;
+    uint _e58 = view.frame;
+    uint _e59 = point_stream(_e48, (gid.y * _e52) + gid.x, _e58);
+    uint _e60 = pick_stream(_e59);
+    h = _e60;
+    Picks _e70 = bsh_collect(x_12, _e59, bsh_nodes, _buffer_sizes);
+    float _e73 = reservoir_weight(_e70.n, K);
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e92 = k;
-            k = _e92 + 1u;
+            uint _e97 = k;
+            k = _e97 + 1u;
         }
         loop_init_1 = false;
-        uint _e70 = k;
-        if (_e70 < metal::min(_e64.n, K)) {
+        uint _e76 = k;
+        if (_e76 < metal::min(_e70.n, K)) {
         } else {
             break;
         }
         {
-            uint _e75 = h;
-            uint _e76 = pcg_hash(_e75);
-            h = _e76;
-            uint _e77 = h;
-            float _e78 = xi_from_bits(_e77);
-            uint _e79 = h;
-            uint _e80 = pcg_hash(_e79);
-            h = _e80;
-            metal::float3 _e81 = e;
-            uint _e83 = k;
+            uint _e81 = h;
+            uint _e82 = pcg_hash(_e81);
+            h = _e82;
+            uint _e83 = h;
+            float _e84 = xi_from_bits(_e83);
             uint _e85 = h;
-            float _e86 = xi_from_bits(_e85);
-            Connection _e88 = connect(_e64.light.inner[_e83], x_11, n_9, n_9, _e67, _e78, _e86, 0.0, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
-            e = _e81 + _e88.e;
+            uint _e86 = pcg_hash(_e85);
+            h = _e86;
+            Shaded _e87 = t;
+            uint _e89 = k;
+            Material _e91 = m;
+            uint _e92 = h;
+            float _e93 = xi_from_bits(_e92);
+            Shaded _e94 = shade_pick(_e70.light.inner[_e89], x_12, n_10, _e91, _e73, _e84, _e93, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
+            Shaded _e95 = add(_e87, _e94);
+            t = _e95;
         }
     }
-    uint count = _e64.n;
-    metal::float3 _e96 = e;
-    out_tex.write(metal::float4(_e96, static_cast<float>(count)), metal::uint2(texel_1));
+    uint count = _e70.n;
+    metal::float3 _e102 = t.e;
+    out_tex.write(metal::float4(_e102, static_cast<float>(count)), metal::uint2(texel_1));
     return;
 }

@@ -43,6 +43,8 @@ struct ViewParams {
     float background;
     uint seed;
     uint frame;
+    metal::packed_float3 f0_d;
+    float f90_d;
 };
 typedef float type_4[1];
 struct BshNode {
@@ -73,6 +75,18 @@ struct WeightedPicks {
     type_12 w;
     float w_sum;
     uint n;
+};
+struct Shaded {
+    metal::float3 e;
+    metal::float3 diffuse;
+    metal::float3 specular;
+};
+struct Material {
+    metal::packed_float3 base;
+    float metallic;
+    float alpha;
+    char _pad3[12];
+    metal::float3 v;
 };
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
@@ -224,10 +238,10 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_4 = v_1 / metal::float3(metal::sqrt(d2_5));
-    float cos_x_1 = -(metal::dot(n, w_4));
+    metal::float3 w_5 = v_1 / metal::float3(metal::sqrt(d2_5));
+    float cos_x_1 = -(metal::dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
-        local_3 = metal::dot(ng, w_4) >= 0.0;
+        local_3 = metal::dot(ng, w_5) >= 0.0;
     } else {
         local_3 = true;
     }
@@ -246,8 +260,8 @@ float spot_falloff(
     if (cos_inner <= cos_outer) {
         return (cos_theta >= cos_outer) ? 1.0 : 0.0;
     }
-    float t = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
-    return (t * t) * (3.0 - (2.0 * t));
+    float t_1 = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
+    return (t_1 * t_1) * (3.0 - (2.0 * t_1));
 }
 
 bool weighted_replace(
@@ -565,8 +579,8 @@ WeightedPicks bsh_weighted_collect(
             uint _e18 = picks.n;
             picks.n = _e18 + 1u;
             uint _e22 = b_3;
-            uint li_2 = bsh_nodes[_e22].light;
-            float _e26 = light_weight(li_2, x_7, n_5, rt2_4, light_cones, _buffer_sizes);
+            uint li_3 = bsh_nodes[_e22].light;
+            float _e26 = light_weight(li_3, x_7, n_5, rt2_4, light_cones, _buffer_sizes);
             if (_e26 > 0.0) {
                 float _e30 = picks.w_sum;
                 picks.w_sum = _e30 + _e26;
@@ -596,7 +610,7 @@ WeightedPicks bsh_weighted_collect(
                         bool _e43 = weighted_replace(_e26, _e40, _e42);
                         if (_e43) {
                             uint _e45 = s;
-                            picks.light.inner[_e45] = li_2;
+                            picks.light.inner[_e45] = li_3;
                             uint _e48 = s;
                             picks.w.inner[_e48] = _e26;
                         }
@@ -624,9 +638,9 @@ metal::float4 unproject_pixel(
     if (depth == background) {
         return metal::float4(0.0, 0.0, 0.0, 0.0);
     }
-    float x_8 = (((px + 0.5) / width) * 2.0) - 1.0;
+    float x_9 = (((px + 0.5) / width) * 2.0) - 1.0;
     float y_1 = 1.0 - (((py + 0.5) / height) * 2.0);
-    metal::float4 p_2 = (((c0_ * x_8) + (c1_ * y_1)) + (c2_ * depth)) + c3_;
+    metal::float4 p_2 = (((c0_ * x_9) + (c1_ * y_1)) + (c2_ * depth)) + c3_;
     if (!((metal::abs(p_2.w) > 0.0))) {
         return metal::float4(0.0, 0.0, 0.0, 0.0);
     }
@@ -651,6 +665,35 @@ metal::float4 surface_at(
     return _e32;
 }
 
+Shaded shade_pick(
+    uint li_2,
+    metal::float3 x_8,
+    metal::float3 n_6,
+    Material m_1,
+    float w_4,
+    float u1_2,
+    float u2_2,
+    device type_8 const& lights,
+    device type_4 const& rt2_4,
+    device type_4 const& r2_2,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Shaded s_1 = {};
+    Connection _e9 = connect(li_2, x_8, n_6, n_6, w_4, u1_2, u2_2, 0.0, lights, rt2_4, r2_2, _buffer_sizes);
+    s_1.e = _e9.e;
+    s_1.diffuse = metal::float3(0.0);
+    s_1.specular = metal::float3(0.0);
+    Shaded _e18 = s_1;
+    return _e18;
+}
+
+Shaded add(
+    Shaded a_3,
+    Shaded b_4
+) {
+    return Shaded {a_3.e + b_4.e, a_3.diffuse + b_4.diffuse, a_3.specular + b_4.specular};
+}
+
 struct main_Input {
 };
 kernel void main_(
@@ -668,8 +711,9 @@ kernel void main_(
 ) {
     bool local = {};
     bool local_1 = {};
+    Material m = {};
     uint h = {};
-    metal::float3 e = metal::float3(0.0);
+    Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
     uint k = 0u;
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
@@ -697,53 +741,55 @@ kernel void main_(
         out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_9 = _e21.xyz;
-    metal::float3 n_6 = nn / metal::float3(metal::sqrt(len2_));
-    uint _e47 = view.seed;
-    uint _e51 = view.width;
-    uint _e57 = view.frame;
-    uint _e58 = point_stream(_e47, (gid.y * _e51) + gid.x, _e57);
-    uint _e59 = pick_stream(_e58);
-    h = _e59;
-    WeightedPicks _e64 = bsh_weighted_collect(x_9, n_6, _e58, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
-    if (_e64.w_sum > 0.0) {
+    metal::float3 x_10 = _e21.xyz;
+    metal::float3 n_7 = nn / metal::float3(metal::sqrt(len2_));
+    uint _e48 = view.seed;
+    uint _e52 = view.width;
+    uint _e58 = view.frame;
+    uint _e59 = point_stream(_e48, (gid.y * _e52) + gid.x, _e58);
+    uint _e60 = pick_stream(_e59);
+    h = _e60;
+    WeightedPicks _e70 = bsh_weighted_collect(x_10, n_7, _e59, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
+    if (_e70.w_sum > 0.0) {
         uint2 loop_bound_3 = uint2(4294967295u);
         bool loop_init_2 = true;
         while(true) {
             if (metal::all(loop_bound_3 == uint2(0u))) { break; }
             loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
             if (!loop_init_2) {
-                uint _e96 = k;
-                k = _e96 + 1u;
+                uint _e101 = k;
+                k = _e101 + 1u;
             }
             loop_init_2 = false;
-            uint _e70 = k;
-            if (_e70 < K) {
+            uint _e76 = k;
+            if (_e76 < K) {
             } else {
                 break;
             }
             {
-                uint _e73 = h;
-                uint _e74 = pcg_hash(_e73);
-                h = _e74;
-                uint _e75 = h;
-                float _e76 = xi_from_bits(_e75);
-                uint _e77 = h;
-                uint _e78 = pcg_hash(_e77);
-                h = _e78;
-                metal::float3 _e79 = e;
-                uint _e81 = k;
-                uint _e85 = k;
-                float _e88 = weighted_pick_weight(_e64.w_sum, _e64.w.inner[_e85], K);
-                uint _e89 = h;
-                float _e90 = xi_from_bits(_e89);
-                Connection _e92 = connect(_e64.light.inner[_e81], x_9, n_6, n_6, _e88, _e76, _e90, 0.0, lights, rt2_4, r2_2, _buffer_sizes);
-                e = _e79 + _e92.e;
+                uint _e79 = h;
+                uint _e80 = pcg_hash(_e79);
+                h = _e80;
+                uint _e81 = h;
+                float _e82 = xi_from_bits(_e81);
+                uint _e83 = h;
+                uint _e84 = pcg_hash(_e83);
+                h = _e84;
+                Shaded _e85 = t;
+                uint _e87 = k;
+                Material _e89 = m;
+                uint _e92 = k;
+                float _e95 = weighted_pick_weight(_e70.w_sum, _e70.w.inner[_e92], K);
+                uint _e96 = h;
+                float _e97 = xi_from_bits(_e96);
+                Shaded _e98 = shade_pick(_e70.light.inner[_e87], x_10, n_7, _e89, _e95, _e82, _e97, lights, rt2_4, r2_2, _buffer_sizes);
+                Shaded _e99 = add(_e85, _e98);
+                t = _e99;
             }
         }
     }
-    uint count = _e64.n;
-    metal::float3 _e100 = e;
-    out_tex.write(metal::float4(_e100, static_cast<float>(count)), metal::uint2(texel_1));
+    uint count = _e70.n;
+    metal::float3 _e106 = t.e;
+    out_tex.write(metal::float4(_e106, static_cast<float>(count)), metal::uint2(texel_1));
     return;
 }

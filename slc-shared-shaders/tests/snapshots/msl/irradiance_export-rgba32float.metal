@@ -20,6 +20,8 @@ struct ViewParams {
     float background;
     uint seed;
     uint frame;
+    metal::packed_float3 f0_d;
+    float f90_d;
 };
 typedef metal::float4 type_5[1];
 constant uint LIGHT_POINT = 0u;

@@ -1,0 +1,708 @@
+struct GpuLight {
+    p0_: vec3<f32>,
+    kind: u32,
+    p1_: vec3<f32>,
+    a: f32,
+    p2_: vec3<f32>,
+    b: f32,
+    intensity: vec3<f32>,
+    ies_base: u32,
+}
+
+struct GpuLightCone {
+    center: vec3<f32>,
+    radius: f32,
+    axis: vec3<f32>,
+    cos_o: f32,
+    phi: f32,
+    cos_e: f32,
+    bvh_leaf: u32,
+    pad: u32,
+}
+
+struct ViewParams {
+    c0_: vec4<f32>,
+    c1_: vec4<f32>,
+    c2_: vec4<f32>,
+    c3_: vec4<f32>,
+    eye: vec3<f32>,
+    width: u32,
+    height: u32,
+    background: f32,
+    seed: u32,
+    frame: u32,
+    f0_d: vec3<f32>,
+    f90_d: f32,
+}
+
+struct BshNode {
+    center: vec3<f32>,
+    radius: f32,
+    child: u32,
+    next: u32,
+    light: u32,
+    pad: u32,
+}
+
+struct Connection {
+    e: vec3<f32>,
+    y: vec3<f32>,
+    cos_x: f32,
+}
+
+struct WeightedPicks {
+    light: array<u32, 8>,
+    w: array<f32, 8>,
+    w_sum: f32,
+    n: u32,
+}
+
+struct Shaded {
+    e: vec3<f32>,
+    diffuse: vec3<f32>,
+    specular: vec3<f32>,
+}
+
+struct Material {
+    base: vec3<f32>,
+    metallic: f32,
+    alpha: f32,
+    v: vec3<f32>,
+}
+
+const LIGHT_POINT: u32 = 0u;
+const LIGHT_SPOT: u32 = 1u;
+const LIGHT_IES: u32 = 2u;
+const LIGHT_TRIANGLE: u32 = 3u;
+const LIGHT_VPL: u32 = 4u;
+const NO_LIGHT: u32 = 4294967295u;
+const MAP_CAMERA: u32 = 0u;
+const MAP_PERSPECTIVE: u32 = 1u;
+const MAP_ORTHOGRAPHIC: u32 = 2u;
+const XI_STEP: f32 = 0.000000059604645f;
+const PICK_STREAM: u32 = 2654435769u;
+const TWO_PI: f32 = 6.2831855f;
+const CULL_RADIUS_SCALE: f32 = 1.000001f;
+const SPHERE_PAD: f32 = 0.00000047683716f;
+const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
+const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const INV_PI: f32 = 0.31830987f;
+const MIN_D2_: f32 = 0.000000000001f;
+const BSH_NONE: u32 = 4294967295u;
+const RESERVOIR_FULL: u32 = 4294967295u;
+const LIGHT_BVH_LEAF: u32 = 4294967295u;
+const ONE_MINUS_EPSILON: f32 = 0.99999994f;
+const F32_MAX: f32 = 340282350000000000000000000000000000000f;
+const GGX_ALPHA_MIN: f32 = 0.001f;
+const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
+const DEPTH_SIGMA: f32 = 0.05f;
+const COVER_WEIGHT: f32 = 0.1f;
+const NEAR_BLOCK: u32 = 64u;
+const ROULETTE_DEPTH: u32 = 2u;
+const K: u32 = 8u;
+const BSH: u32 = 0u;
+
+@group(0) @binding(0) 
+var<uniform> view: ViewParams;
+@group(0) @binding(1) 
+var position_tex: texture_2d<f32>;
+@group(0) @binding(2) 
+var normal_tex: texture_2d<f32>;
+@group(0) @binding(3) 
+var out_tex: texture_storage_2d<rgba16float,write>;
+@group(0) @binding(4) 
+var base_color_tex: texture_2d<f32>;
+@group(0) @binding(5) 
+var metal_rough_tex: texture_2d<f32>;
+@group(0) @binding(6) 
+var specular_tex: texture_storage_2d<rgba16float,write>;
+@group(1) @binding(1) 
+var<storage> lights: array<GpuLight>;
+@group(1) @binding(2) 
+var<storage> rt2_4: array<f32>;
+@group(1) @binding(3) 
+var<storage> r2_2: array<f32>;
+@group(1) @binding(4) 
+var<storage> bsh_nodes: array<BshNode>;
+@group(1) @binding(5) 
+var<storage> light_cones: array<GpuLightCone>;
+
+fn to_f32_(u: u32) -> f32 {
+    return f32(u);
+}
+
+fn mul_lo_u32_(a: u32, b: u32) -> u32 {
+    return (a * b);
+}
+
+fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
+    return (a_1 + b_1);
+}
+
+fn xi_from_bits(bits: u32) -> f32 {
+    let _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+fn pcg_hash(x: u32) -> u32 {
+    let _e2 = mul_lo_u32_(x, 747796405u);
+    let _e4 = add_wrap_u32_(_e2, 2891336453u);
+    let _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+fn point_stream(seed: u32, point: u32, frame: u32) -> u32 {
+    let _e3 = pcg_hash(frame);
+    let _e5 = pcg_hash((point ^ _e3));
+    let _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+fn pick_stream(stream: u32) -> u32 {
+    let _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+fn slc_weight(rt2_: f32, d2_: f32) -> f32 {
+    if (d2_ <= rt2_) {
+        return 1f;
+    }
+    return (d2_ / rt2_);
+}
+
+fn slc_keep(r2_: f32, d2_1: f32) -> bool {
+    return (d2_1 < r2_);
+}
+
+fn sphere_contains_point(c: vec3<f32>, r: f32, x_1: vec3<f32>) -> bool {
+    let v_2 = (x_1 - c);
+    return (dot(v_2, v_2) <= (r * r));
+}
+
+fn inverse_square(d2_2: f32) -> f32 {
+    return (1f / max(d2_2, MIN_D2_));
+}
+
+fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
+    let _e4 = inverse_square(d2_3);
+    let _e6 = slc_weight(rt2_1, d2_3);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_2: bool;
+    var local_3: bool;
+
+    let v_3 = (x_2 - y);
+    let d2_5 = dot(v_3, v_3);
+    let _e7 = slc_keep(r2_1, d2_5);
+    if !(!(_e7)) {
+        local_2 = !((d2_5 > 0f));
+    } else {
+        local_2 = true;
+    }
+    let _e16 = local_2;
+    if _e16 {
+        return 0f;
+    }
+    let w_6 = (v_3 / vec3(sqrt(d2_5)));
+    let cos_x_1 = -(dot(n, w_6));
+    if !((cos_x_1 <= 0f)) {
+        local_3 = (dot(ng, w_6) >= 0f);
+    } else {
+        local_3 = true;
+    }
+    let _e32 = local_3;
+    if _e32 {
+        return 0f;
+    }
+    return cos_x_1;
+}
+
+fn triangle_lobe(n_1: vec3<f32>, area: f32, w_1: vec3<f32>) -> f32 {
+    return (area * max(dot(n_1, w_1), 0f));
+}
+
+fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_1: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
+    let su = sqrt(u1_);
+    let b0_ = (1f - su);
+    let b1_ = (u2_ * su);
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1f - b0_) - b1_)));
+}
+
+fn weighted_replace(w_2: f32, w_sum: f32, u_1: f32) -> bool {
+    return ((u_1 * w_sum) < w_2);
+}
+
+fn weighted_pick_weight(w_sum_1: f32, w_3: f32, k_1: u32) -> f32 {
+    let _e3 = to_f32_(k_1);
+    return (w_sum_1 / (_e3 * w_3));
+}
+
+fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+    if (cos_a > cos_b) {
+        return 1f;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+fn sin_sub_clamped(sin_a_1: f32, cos_a_1: f32, sin_b_1: f32, cos_b_1: f32) -> f32 {
+    if (cos_a_1 > cos_b_1) {
+        return 0f;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+fn safe_sqrt(x_3: f32) -> f32 {
+    return sqrt(max(x_3, 0f));
+}
+
+fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, cos_o: f32, cos_e: f32, p: vec3<f32>, n_2: vec3<f32>) -> f32 {
+    var imp: f32;
+
+    let v_4 = (p - center);
+    let dist2_ = dot(v_4, v_4);
+    let r2_3 = (radius * radius);
+    let d2_6 = max(max(dist2_, r2_3), MIN_D2_);
+    let wi = select(vec3<f32>(0f, 0f, 0f), (v_4 / vec3(sqrt(dist2_))), (dist2_ > 0f));
+    let cos_w = dot(axis, wi);
+    let _e28 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e32 = safe_sqrt((1f - (r2_3 / dist2_)));
+    let cos_b_2 = select(_e32, -1f, (dist2_ <= r2_3));
+    let _e39 = safe_sqrt((1f - (cos_b_2 * cos_b_2)));
+    let _e43 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
+    let _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
+    let _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
+    if (_e46 <= cos_e) {
+        return 0f;
+    }
+    imp = ((phi * _e46) / d2_6);
+    if (dot(n_2, n_2) > 0f) {
+        let cos_i = -(dot(wi, n_2));
+        let _e60 = safe_sqrt((1f - (cos_i * cos_i)));
+        let _e61 = imp;
+        let _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
+        imp = (_e61 * max(_e62, 0f));
+    }
+    let _e66 = imp;
+    return max(_e66, 0f);
+}
+
+fn candidate_weight(importance: f32, rt2_2: f32, d2_4: f32) -> f32 {
+    let _e3 = slc_weight(rt2_2, d2_4);
+    return (importance * _e3);
+}
+
+fn cone_weight(center_1: vec3<f32>, radius_1: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, rt2_3: f32, p_1: vec3<f32>, n_3: vec3<f32>) -> f32 {
+    let v_5 = (p_1 - center_1);
+    let _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_3);
+    let _e14 = candidate_weight((_e10 * INV_PI), rt2_3, dot(v_5, v_5));
+    return _e14;
+}
+
+fn triangle_normal(a_3: vec3<f32>, b_3: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
+    var local_4: bool;
+
+    let n_9 = cross((b_3 - a_3), (c_2 - a_3));
+    let l2_ = dot(n_9, n_9);
+    if !(!((l2_ > 0f))) {
+        local_4 = !((l2_ < 300000000000000000000000000000000000000f));
+    } else {
+        local_4 = true;
+    }
+    let _e17 = local_4;
+    if _e17 {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    return (n_9 / vec3(sqrt(l2_)));
+}
+
+fn ggx_alpha(roughness: f32) -> f32 {
+    return max((roughness * roughness), GGX_ALPHA_MIN);
+}
+
+fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
+    if (cos_h <= 0f) {
+        return 0f;
+    }
+    let a2_ = (alpha * alpha);
+    let t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
+}
+
+fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
+    let a2_1 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1f - a2_1)) + a2_1));
+}
+
+fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
+    var local_5: bool;
+
+    if !((n_l <= 0f)) {
+        local_5 = (n_v <= 0f);
+    } else {
+        local_5 = true;
+    }
+    let _e11 = local_5;
+    if _e11 {
+        return 0f;
+    }
+    let _e13 = smith_root(n_v, alpha_2);
+    let _e15 = smith_root(n_l, alpha_2);
+    return (0.5f / ((n_l * _e13) + (n_v * _e15)));
+}
+
+fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
+    let c_4 = saturate((1f - v_h));
+    let c2_ = (c_4 * c_4);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_4)));
+}
+
+fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
+    let _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    let _e10 = fresnel_schlick(base, 1f, v_h_1);
+    return ((_e5 * (1f - metallic)) + (_e10 * metallic));
+}
+
+fn diffuse_brdf(base_1: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32, v_h_2: f32) -> vec3<f32> {
+    let _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return ((((vec3<f32>(1f, 1f, 1f) - _e9) * base_1) * (1f - metallic_1)) * INV_PI);
+}
+
+fn half_cosine(v: vec3<f32>, l: vec3<f32>) -> f32 {
+    let h_2 = (v + l);
+    let len2_ = dot(h_2, h_2);
+    if (len2_ <= 0f) {
+        return 0f;
+    }
+    return saturate((dot(v, h_2) / sqrt(len2_)));
+}
+
+fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_4: vec3<f32>, v_1: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
+    var local_6: bool;
+
+    let n_l_1 = dot(n_4, l_1);
+    let n_v_1 = dot(n_4, v_1);
+    if !((n_l_1 <= 0f)) {
+        local_6 = (n_v_1 <= 0f);
+    } else {
+        local_6 = true;
+    }
+    let _e18 = local_6;
+    if _e18 {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    let hs = (v_1 + l_1);
+    let inv = (1f / sqrt(dot(hs, hs)));
+    let h_3 = (hs * inv);
+    let c_5 = cross(n_4, h_3);
+    let _e32 = ggx_d(dot(n_4, h_3), dot(c_5, c_5), alpha_3);
+    let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
+    let _e35 = smith_visibility(n_l_1, n_v_1, alpha_3);
+    return (_e34 * (_e32 * _e35));
+}
+
+fn light_intensity(l_2: GpuLight, w_4: vec3<f32>) -> vec3<f32> {
+    switch l_2.kind {
+        case 3u: {
+            let _e7 = triangle_normal(l_2.p0_, l_2.p1_, l_2.p2_);
+            let _e9 = triangle_lobe(_e7, l_2.a, w_4);
+            return (l_2.intensity * _e9);
+        }
+        default: {
+            return vec3(0f);
+        }
+    }
+}
+
+fn light_point(l_3: GpuLight, u1_1: f32, u2_1: f32) -> vec3<f32> {
+    if (l_3.kind == LIGHT_TRIANGLE) {
+        let _e9 = triangle_sample(l_3.p0_, l_3.p1_, l_3.p2_, u1_1, u2_1);
+        return _e9;
+    }
+    return l_3.p0_;
+}
+
+fn occluded(a_4: vec3<f32>, b_4: vec3<f32>) -> bool {
+    return false;
+}
+
+fn bsh_node(nodes: u32, i: u32) -> BshNode {
+    let _e4 = bsh_nodes[i];
+    return _e4;
+}
+
+fn bsh_count(nodes_1: u32) -> u32 {
+    return arrayLength((&bsh_nodes));
+}
+
+fn bsh_first(nodes_2: u32) -> u32 {
+    let _e1 = bsh_count(nodes_2);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+fn bsh_next_leaf(nodes_3: u32, start: u32, x_4: vec3<f32>) -> u32 {
+    var i_1: u32;
+
+    i_1 = start;
+    loop {
+        let _e4 = i_1;
+        if (_e4 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            let _e7 = i_1;
+            let _e8 = bsh_node(nodes_3, _e7);
+            let _e11 = sphere_contains_point(_e8.center, _e8.radius, x_4);
+            if _e11 {
+                if (_e8.child == BSH_NONE) {
+                    let _e15 = i_1;
+                    return _e15;
+                }
+                i_1 = _e8.child;
+            } else {
+                i_1 = _e8.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+fn connect(li: u32, x_5: vec3<f32>, n_5: vec3<f32>, ng_1: vec3<f32>, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+    var c_3: Connection;
+    var local_7: bool;
+
+    c_3.e = vec3(0f);
+    let l_4 = lights[li];
+    let _e16 = light_point(l_4, u1_2, u2_2);
+    c_3.y = _e16;
+    let _e19 = c_3.y;
+    let _e22 = r2_2[li];
+    let _e23 = connection_cosine(x_5, _e19, n_5, ng_1, _e22);
+    c_3.cos_x = _e23;
+    let _e25 = c_3.cos_x;
+    if !((_e25 <= 0f)) {
+        let _e34 = c_3.y;
+        let _e35 = occluded((x_5 + (ng_1 * eps)), _e34);
+        local_7 = _e35;
+    } else {
+        local_7 = true;
+    }
+    let _e37 = local_7;
+    if _e37 {
+        let _e38 = c_3;
+        return _e38;
+    }
+    let _e40 = c_3.y;
+    let v_6 = (x_5 - _e40);
+    let d2_7 = dot(v_6, v_6);
+    let _e47 = light_intensity(l_4, (v_6 / vec3(sqrt(d2_7))));
+    let _e49 = c_3.cos_x;
+    let _e52 = rt2_4[li];
+    let _e53 = connection_factor(_e49, d2_7, _e52, w_res);
+    c_3.e = (_e47 * _e53);
+    let _e55 = c_3;
+    return _e55;
+}
+
+fn light_weight(li_1: u32, x_6: vec3<f32>, n_6: vec3<f32>) -> f32 {
+    let c_6 = light_cones[li_1];
+    let _e14 = rt2_4[li_1];
+    let _e15 = cone_weight(c_6.center, c_6.radius, c_6.phi, c_6.axis, c_6.cos_o, c_6.cos_e, _e14, x_6, n_6);
+    return _e15;
+}
+
+fn bsh_weighted_collect(x_7: vec3<f32>, n_7: vec3<f32>, seed_1: u32) -> WeightedPicks {
+    var picks: WeightedPicks;
+    var h_1: u32;
+    var b_5: u32;
+    var s: u32;
+
+    picks.w_sum = 0f;
+    picks.n = 0u;
+    h_1 = seed_1;
+    let _e11 = bsh_first(BSH);
+    let _e12 = bsh_next_leaf(BSH, _e11, x_7);
+    b_5 = _e12;
+    loop {
+        let _e14 = b_5;
+        if (_e14 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            let _e18 = picks.n;
+            picks.n = (_e18 + 1u);
+            let _e22 = b_5;
+            let li_3 = bsh_nodes[_e22].light;
+            let _e26 = light_weight(li_3, x_7, n_7);
+            if (_e26 > 0f) {
+                let _e30 = picks.w_sum;
+                picks.w_sum = (_e30 + _e26);
+                s = 0u;
+                loop {
+                    let _e34 = s;
+                    if (_e34 < K) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e37 = h_1;
+                        let _e38 = pcg_hash(_e37);
+                        h_1 = _e38;
+                        let _e40 = picks.w_sum;
+                        let _e41 = h_1;
+                        let _e42 = xi_from_bits(_e41);
+                        let _e43 = weighted_replace(_e26, _e40, _e42);
+                        if _e43 {
+                            let _e45 = s;
+                            picks.light[_e45] = li_3;
+                            let _e48 = s;
+                            picks.w[_e48] = _e26;
+                        }
+                    }
+                    continuing {
+                        let _e51 = s;
+                        s = (_e51 + 1u);
+                    }
+                }
+            }
+        }
+        continuing {
+            let _e55 = b_5;
+            let _e58 = bsh_nodes[_e55].next;
+            let _e59 = bsh_next_leaf(BSH, _e58, x_7);
+            b_5 = _e59;
+        }
+    }
+    let _e60 = picks;
+    return _e60;
+}
+
+fn surface_at(texel: vec2<i32>) -> vec4<f32> {
+    let p_2 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
+}
+
+fn shade_pick(li_2: u32, x_8: vec3<f32>, n_8: vec3<f32>, m_1: Material, w_5: f32, u1_3: f32, u2_3: f32) -> Shaded {
+    var s_1: Shaded;
+
+    let _e9 = connect(li_2, x_8, n_8, n_8, w_5, u1_3, u2_3, 0f);
+    s_1.e = _e9.e;
+    s_1.diffuse = vec3(0f);
+    s_1.specular = vec3(0f);
+    if (_e9.cos_x > 0f) {
+        let l_5 = normalize((_e9.y - x_8));
+        let _e29 = view.f0_d;
+        let _e32 = view.f90_d;
+        let _e34 = half_cosine(m_1.v, l_5);
+        let _e35 = diffuse_brdf(m_1.base, m_1.metallic, _e29, _e32, _e34);
+        s_1.diffuse = (_e35 * _e9.e);
+        let _e43 = view.f0_d;
+        let _e46 = view.f90_d;
+        let _e49 = specular_brdf(m_1.base, m_1.metallic, _e43, _e46, m_1.alpha, n_8, m_1.v, l_5);
+        s_1.specular = (_e49 * _e9.e);
+    }
+    let _e52 = s_1;
+    return _e52;
+}
+
+fn add(a_5: Shaded, b_6: Shaded) -> Shaded {
+    return Shaded((a_5.e + b_6.e), (a_5.diffuse + b_6.diffuse), (a_5.specular + b_6.specular));
+}
+
+@compute @workgroup_size(8, 8, 1) 
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+    var local: bool;
+    var local_1: bool;
+    var m: Material;
+    var h: u32;
+    var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
+    var k: u32 = 0u;
+
+    let _e4 = view.width;
+    if !((gid.x >= _e4)) {
+        let _e12 = view.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    let _e15 = local;
+    if _e15 {
+        return;
+    }
+    let texel_1 = vec2<i32>(i32(gid.x), i32(gid.y));
+    let _e21 = surface_at(texel_1);
+    let _e24 = textureLoad(normal_tex, texel_1, 0i);
+    let nn = _e24.xyz;
+    let len2_1 = dot(nn, nn);
+    if !((_e21.w <= 0f)) {
+        local_1 = !((len2_1 > 0f));
+    } else {
+        local_1 = true;
+    }
+    let _e37 = local_1;
+    if _e37 {
+        textureStore(out_tex, texel_1, vec4(0f));
+        textureStore(specular_tex, texel_1, vec4(0f));
+        return;
+    }
+    let x_9 = _e21.xyz;
+    let n_10 = (nn / vec3(sqrt(len2_1)));
+    let mr = textureLoad(metal_rough_tex, texel_1, 0i);
+    let _e54 = textureLoad(base_color_tex, texel_1, 0i);
+    let _e60 = ggx_alpha(saturate(mr.y));
+    let _e63 = view.eye;
+    m = Material(_e54.xyz, saturate(mr.z), _e60, normalize((_e63 - x_9)));
+    let _e69 = view.seed;
+    let _e73 = view.width;
+    let _e79 = view.frame;
+    let _e80 = point_stream(_e69, ((gid.y * _e73) + gid.x), _e79);
+    let _e81 = pick_stream(_e80);
+    h = _e81;
+    let _e91 = bsh_weighted_collect(x_9, n_10, _e80);
+    if (_e91.w_sum > 0f) {
+        loop {
+            let _e97 = k;
+            if (_e97 < K) {
+            } else {
+                break;
+            }
+            {
+                let _e100 = h;
+                let _e101 = pcg_hash(_e100);
+                h = _e101;
+                let _e102 = h;
+                let _e103 = xi_from_bits(_e102);
+                let _e104 = h;
+                let _e105 = pcg_hash(_e104);
+                h = _e105;
+                let _e106 = t;
+                let _e108 = k;
+                let _e110 = m;
+                let _e113 = k;
+                let _e116 = weighted_pick_weight(_e91.w_sum, _e91.w[_e113], K);
+                let _e117 = h;
+                let _e118 = xi_from_bits(_e117);
+                let _e119 = shade_pick(_e91.light[_e108], x_9, n_10, _e110, _e116, _e103, _e118);
+                let _e120 = add(_e106, _e119);
+                t = _e120;
+            }
+            continuing {
+                let _e122 = k;
+                k = (_e122 + 1u);
+            }
+        }
+    }
+    let count = _e91.n;
+    let _e127 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e127, f32(count)));
+    let _e132 = t.specular;
+    textureStore(specular_tex, texel_1, vec4<f32>(_e132, 0f));
+    return;
+}

@@ -1,0 +1,836 @@
+struct GpuLight {
+    float3 p0_;
+    uint kind;
+    float3 p1_;
+    float a;
+    float3 p2_;
+    float b;
+    float3 intensity;
+    uint ies_base;
+};
+
+struct GpuLightCone {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
+
+struct ViewParams {
+    float4 c0_;
+    float4 c1_;
+    float4 c2_;
+    float4 c3_;
+    float3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    float3 f0_d;
+    float f90_d;
+};
+
+struct BshNode {
+    float3 center_;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    uint pad;
+};
+
+struct Connection {
+    float3 e;
+    int _pad1_0;
+    float3 y;
+    float cos_x;
+};
+
+struct WeightedPicks {
+    uint light[8];
+    float w[8];
+    float w_sum;
+    uint n;
+};
+
+struct Shaded {
+    float3 e;
+    int _pad1_0;
+    float3 diffuse;
+    int _pad2_0;
+    float3 specular;
+    int _end_pad_0;
+};
+
+struct Material {
+    float3 base;
+    float metallic;
+    float alpha;
+    int _pad3_0;
+    int _pad3_1;
+    int _pad3_2;
+    float3 v;
+    int _end_pad_0;
+};
+
+static const uint LIGHT_POINT = 0u;
+static const uint LIGHT_SPOT = 1u;
+static const uint LIGHT_IES = 2u;
+static const uint LIGHT_TRIANGLE = 3u;
+static const uint LIGHT_VPL = 4u;
+static const uint NO_LIGHT = 4294967295u;
+static const uint MAP_CAMERA = 0u;
+static const uint MAP_PERSPECTIVE = 1u;
+static const uint MAP_ORTHOGRAPHIC = 2u;
+static const float XI_STEP = 5.9604645e-8;
+static const uint PICK_STREAM = 2654435769u;
+static const float TWO_PI = 6.2831855;
+static const float CULL_RADIUS_SCALE = 1.000001;
+static const float SPHERE_PAD = 4.7683716e-7;
+static const float SPHERE_HUGE = 3.4028235e38;
+static const float SPHERE_PAD_ABS = 1e-18;
+static const float INV_PI = 0.31830987;
+static const float MIN_D2_ = 1e-12;
+static const uint BSH_NONE = 4294967295u;
+static const uint RESERVOIR_FULL = 4294967295u;
+static const uint LIGHT_BVH_LEAF = 4294967295u;
+static const float ONE_MINUS_EPSILON = 0.99999994;
+static const float F32_MAX = 3.4028235e38;
+static const float GGX_ALPHA_MIN = 0.001;
+static const float DEPTH_NONE = 1e30;
+static const float DEPTH_SIGMA = 0.05;
+static const float COVER_WEIGHT = 0.1;
+static const uint NEAR_BLOCK = 64u;
+static const uint ROULETTE_DEPTH = 2u;
+static const uint K = 8u;
+static const uint BSH = 0u;
+
+cbuffer view : register(b0) { ViewParams view; }
+Texture2D<float4> position_tex : register(t1);
+Texture2D<float4> normal_tex : register(t2);
+RWTexture2D<float4> out_tex : register(u3);
+Texture2D<float4> base_color_tex : register(t4);
+Texture2D<float4> metal_rough_tex : register(t5);
+RWTexture2D<float4> specular_tex : register(u6);
+ByteAddressBuffer lights : register(t1, space1);
+ByteAddressBuffer rt2_4 : register(t2, space1);
+ByteAddressBuffer r2_2 : register(t3, space1);
+ByteAddressBuffer bsh_nodes : register(t4, space1);
+ByteAddressBuffer light_cones : register(t5, space1);
+
+float to_f32_(uint u)
+{
+    return float(u);
+}
+
+uint mul_lo_u32_(uint a, uint b)
+{
+    return (a * b);
+}
+
+uint add_wrap_u32_(uint a_1, uint b_1)
+{
+    return (a_1 + b_1);
+}
+
+float xi_from_bits(uint bits)
+{
+    const float _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+uint pcg_hash(uint x)
+{
+    const uint _e2 = mul_lo_u32_(x, 747796405u);
+    const uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    const uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+uint point_stream(uint seed, uint point_, uint frame)
+{
+    const uint _e3 = pcg_hash(frame);
+    const uint _e5 = pcg_hash((point_ ^ _e3));
+    const uint _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+uint pick_stream(uint stream)
+{
+    const uint _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+float slc_weight(float rt2_, float d2_)
+{
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (d2_ / rt2_);
+}
+
+bool slc_keep(float r2_, float d2_1)
+{
+    return (d2_1 < r2_);
+}
+
+bool sphere_contains_point(float3 c, float r, float3 x_1)
+{
+    float3 v_2 = (x_1 - c);
+    return (dot(v_2, v_2) <= (r * r));
+}
+
+float inverse_square(float d2_2)
+{
+    return (1.0 / max(d2_2, MIN_D2_));
+}
+
+float connection_factor(float cos_x, float d2_3, float rt2_1, float w)
+{
+    const float _e4 = inverse_square(d2_3);
+    const float _e6 = slc_weight(rt2_1, d2_3);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
+{
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+
+    float3 v_3 = (x_2 - y);
+    float d2_5 = dot(v_3, v_3);
+    const bool _e7 = slc_keep(r2_1, d2_5);
+    if (!(!(_e7))) {
+        local_2 = !((d2_5 > 0.0));
+    } else {
+        local_2 = true;
+    }
+    bool _e16 = local_2;
+    if (_e16) {
+        return 0.0;
+    }
+    float3 w_6 = (v_3 / (sqrt(d2_5)).xxx);
+    float cos_x_1 = -(dot(n, w_6));
+    if (!((cos_x_1 <= 0.0))) {
+        local_3 = (dot(ng, w_6) >= 0.0);
+    } else {
+        local_3 = true;
+    }
+    bool _e32 = local_3;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float triangle_lobe(float3 n_1, float area, float3 w_1)
+{
+    return (area * max(dot(n_1, w_1), 0.0));
+}
+
+float3 triangle_sample(float3 a_2, float3 b_2, float3 c_1, float u1_, float u2_)
+{
+    float su = sqrt(u1_);
+    float b0_ = (1.0 - su);
+    float b1_ = (u2_ * su);
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1.0 - b0_) - b1_)));
+}
+
+bool weighted_replace(float w_2, float w_sum, float u_1)
+{
+    return ((u_1 * w_sum) < w_2);
+}
+
+float weighted_pick_weight(float w_sum_1, float w_3, uint k_1)
+{
+    const float _e3 = to_f32_(k_1);
+    return (w_sum_1 / (_e3 * w_3));
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+{
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1)
+{
+    if ((cos_a_1 > cos_b_1)) {
+        return 0.0;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+float safe_sqrt(float x_3)
+{
+    return sqrt(max(x_3, 0.0));
+}
+
+float light_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p, float3 n_2)
+{
+    float imp = (float)0;
+
+    float3 v_4 = (p - center_);
+    float dist2_ = dot(v_4, v_4);
+    float r2_3 = (radius * radius);
+    float d2_6 = max(max(dist2_, r2_3), MIN_D2_);
+    float3 wi = ((dist2_ > 0.0) ? (v_4 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi);
+    const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    const float _e32 = safe_sqrt((1.0 - (r2_3 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_3) ? -1.0 : _e32);
+    const float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
+    const float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    const float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
+    const float _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
+    const float _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
+    if ((_e46 <= cos_e)) {
+        return 0.0;
+    }
+    imp = ((phi * _e46) / d2_6);
+    if ((dot(n_2, n_2) > 0.0)) {
+        float cos_i = -(dot(wi, n_2));
+        const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
+        float _e61 = imp;
+        const float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
+        imp = (_e61 * max(_e62, 0.0));
+    }
+    float _e66 = imp;
+    return max(_e66, 0.0);
+}
+
+float candidate_weight(float importance, float rt2_2, float d2_4)
+{
+    const float _e3 = slc_weight(rt2_2, d2_4);
+    return (importance * _e3);
+}
+
+float cone_weight(float3 center_1, float radius_1, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float rt2_3, float3 p_1, float3 n_3)
+{
+    float3 v_5 = (p_1 - center_1);
+    const float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_3);
+    const float _e14 = candidate_weight((_e10 * INV_PI), rt2_3, dot(v_5, v_5));
+    return _e14;
+}
+
+float3 triangle_normal(float3 a_3, float3 b_3, float3 c_2)
+{
+    bool local_4 = (bool)0;
+
+    float3 n_9 = cross((b_3 - a_3), (c_2 - a_3));
+    float l2_ = dot(n_9, n_9);
+    if (!(!((l2_ > 0.0)))) {
+        local_4 = !((l2_ < 3e38));
+    } else {
+        local_4 = true;
+    }
+    bool _e17 = local_4;
+    if (_e17) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    return (n_9 / (sqrt(l2_)).xxx);
+}
+
+float ggx_alpha(float roughness)
+{
+    return max((roughness * roughness), GGX_ALPHA_MIN);
+}
+
+float ggx_d(float cos_h, float sin2_h, float alpha)
+{
+    if ((cos_h <= 0.0)) {
+        return 0.0;
+    }
+    float a2_ = (alpha * alpha);
+    float t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
+}
+
+float smith_root(float cos_, float alpha_1)
+{
+    float a2_1 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1.0 - a2_1)) + a2_1));
+}
+
+float smith_visibility(float n_l, float n_v, float alpha_2)
+{
+    bool local_5 = (bool)0;
+
+    if (!((n_l <= 0.0))) {
+        local_5 = (n_v <= 0.0);
+    } else {
+        local_5 = true;
+    }
+    bool _e11 = local_5;
+    if (_e11) {
+        return 0.0;
+    }
+    const float _e13 = smith_root(n_v, alpha_2);
+    const float _e15 = smith_root(n_l, alpha_2);
+    return (0.5 / ((n_l * _e13) + (n_v * _e15)));
+}
+
+float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
+{
+    float c_4 = saturate((1.0 - v_h));
+    float c2_ = (c_4 * c_4);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_4)));
+}
+
+float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, float v_h_1)
+{
+    const float3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    const float3 _e10 = fresnel_schlick(base, 1.0, v_h_1);
+    return ((_e5 * (1.0 - metallic)) + (_e10 * metallic));
+}
+
+float3 diffuse_brdf(float3 base_1, float metallic_1, float3 f0_d_1, float f90_d_1, float v_h_2)
+{
+    const float3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return ((((float3(1.0, 1.0, 1.0) - _e9) * base_1) * (1.0 - metallic_1)) * INV_PI);
+}
+
+float half_cosine(float3 v, float3 l)
+{
+    float3 h_2 = (v + l);
+    float len2_ = dot(h_2, h_2);
+    if ((len2_ <= 0.0)) {
+        return 0.0;
+    }
+    return saturate((dot(v, h_2) / sqrt(len2_)));
+}
+
+float3 specular_brdf(float3 base_2, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_4, float3 v_1, float3 l_1)
+{
+    bool local_6 = (bool)0;
+
+    float n_l_1 = dot(n_4, l_1);
+    float n_v_1 = dot(n_4, v_1);
+    if (!((n_l_1 <= 0.0))) {
+        local_6 = (n_v_1 <= 0.0);
+    } else {
+        local_6 = true;
+    }
+    bool _e18 = local_6;
+    if (_e18) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    float3 hs = (v_1 + l_1);
+    float inv = (1.0 / sqrt(dot(hs, hs)));
+    float3 h_3 = (hs * inv);
+    float3 c_5 = cross(n_4, h_3);
+    const float _e32 = ggx_d(dot(n_4, h_3), dot(c_5, c_5), alpha_3);
+    const float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
+    const float _e35 = smith_visibility(n_l_1, n_v_1, alpha_3);
+    return (_e34 * (_e32 * _e35));
+}
+
+float3 light_intensity(GpuLight l_2, float3 w_4)
+{
+    switch(l_2.kind) {
+        case 3u: {
+            const float3 _e7 = triangle_normal(l_2.p0_, l_2.p1_, l_2.p2_);
+            const float _e9 = triangle_lobe(_e7, l_2.a, w_4);
+            return (l_2.intensity * _e9);
+        }
+        default: {
+            return (0.0).xxx;
+        }
+    }
+}
+
+float3 light_point(GpuLight l_3, float u1_1, float u2_1)
+{
+    if ((l_3.kind == LIGHT_TRIANGLE)) {
+        const float3 _e9 = triangle_sample(l_3.p0_, l_3.p1_, l_3.p2_, u1_1, u2_1);
+        return _e9;
+    }
+    return l_3.p0_;
+}
+
+bool occluded(float3 a_4, float3 b_4)
+{
+    return false;
+}
+
+BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, uint arg5) {
+    BshNode ret = (BshNode)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.child = arg2;
+    ret.next = arg3;
+    ret.light = arg4;
+    ret.pad = arg5;
+    return ret;
+}
+
+BshNode bsh_node(uint nodes, uint i)
+{
+    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i*32+0)), asfloat(bsh_nodes.Load(i*32+12)), asuint(bsh_nodes.Load(i*32+16)), asuint(bsh_nodes.Load(i*32+20)), asuint(bsh_nodes.Load(i*32+24)), asuint(bsh_nodes.Load(i*32+28)));
+    const BshNode bshnode = _e4;
+    return bshnode;
+}
+
+uint NagaBufferLength(ByteAddressBuffer buffer)
+{
+    uint ret;
+    buffer.GetDimensions(ret);
+    return ret;
+}
+
+uint bsh_count(uint nodes_1)
+{
+    return ((NagaBufferLength(bsh_nodes) - 0) / 32);
+}
+
+uint bsh_first(uint nodes_2)
+{
+    const uint _e1 = bsh_count(nodes_2);
+    if ((_e1 > 0u)) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+uint bsh_next_leaf(uint nodes_3, uint start, float3 x_4)
+{
+    uint i_1 = (uint)0;
+
+    i_1 = start;
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e4 = i_1;
+        if ((_e4 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e7 = i_1;
+            const BshNode _e8 = bsh_node(nodes_3, _e7);
+            const bool _e11 = sphere_contains_point(_e8.center_, _e8.radius, x_4);
+            if (_e11) {
+                if ((_e8.child == BSH_NONE)) {
+                    uint _e15 = i_1;
+                    return _e15;
+                }
+                i_1 = _e8.child;
+            } else {
+                i_1 = _e8.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
+    GpuLight ret = (GpuLight)0;
+    ret.p0_ = arg0;
+    ret.kind = arg1;
+    ret.p1_ = arg2;
+    ret.a = arg3;
+    ret.p2_ = arg4;
+    ret.b = arg5;
+    ret.intensity = arg6;
+    ret.ies_base = arg7;
+    return ret;
+}
+
+Connection connect(uint li, float3 x_5, float3 n_5, float3 ng_1, float w_res, float u1_2, float u2_2, float eps)
+{
+    Connection c_3 = (Connection)0;
+    bool local_7 = (bool)0;
+
+    c_3.e = (0.0).xxx;
+    GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
+    const float3 _e16 = light_point(l_4, u1_2, u2_2);
+    c_3.y = _e16;
+    float3 _e19 = c_3.y;
+    float _e22 = asfloat(r2_2.Load(li*4));
+    const float _e23 = connection_cosine(x_5, _e19, n_5, ng_1, _e22);
+    c_3.cos_x = _e23;
+    float _e25 = c_3.cos_x;
+    if (!((_e25 <= 0.0))) {
+        float3 _e34 = c_3.y;
+        const bool _e35 = occluded((x_5 + (ng_1 * eps)), _e34);
+        local_7 = _e35;
+    } else {
+        local_7 = true;
+    }
+    bool _e37 = local_7;
+    if (_e37) {
+        Connection _e38 = c_3;
+        const Connection connection = _e38;
+        return connection;
+    }
+    float3 _e40 = c_3.y;
+    float3 v_6 = (x_5 - _e40);
+    float d2_7 = dot(v_6, v_6);
+    const float3 _e47 = light_intensity(l_4, (v_6 / (sqrt(d2_7)).xxx));
+    float _e49 = c_3.cos_x;
+    float _e52 = asfloat(rt2_4.Load(li*4));
+    const float _e53 = connection_factor(_e49, d2_7, _e52, w_res);
+    c_3.e = (_e47 * _e53);
+    Connection _e55 = c_3;
+    const Connection connection_1 = _e55;
+    return connection_1;
+}
+
+GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
+    GpuLightCone ret = (GpuLightCone)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.axis = arg2;
+    ret.cos_o = arg3;
+    ret.phi = arg4;
+    ret.cos_e = arg5;
+    ret.bvh_leaf = arg6;
+    ret.pad = arg7;
+    return ret;
+}
+
+float light_weight(uint li_1, float3 x_6, float3 n_6)
+{
+    GpuLightCone c_6 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    float _e14 = asfloat(rt2_4.Load(li_1*4));
+    const float _e15 = cone_weight(c_6.center_, c_6.radius, c_6.phi, c_6.axis, c_6.cos_o, c_6.cos_e, _e14, x_6, n_6);
+    return _e15;
+}
+
+WeightedPicks bsh_weighted_collect(float3 x_7, float3 n_7, uint seed_1)
+{
+    WeightedPicks picks = (WeightedPicks)0;
+    uint h_1 = (uint)0;
+    uint b_5 = (uint)0;
+    uint s = (uint)0;
+
+    picks.w_sum = 0.0;
+    picks.n = 0u;
+    h_1 = seed_1;
+    const uint _e11 = bsh_first(BSH);
+    const uint _e12 = bsh_next_leaf(BSH, _e11, x_7);
+    b_5 = _e12;
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e55 = b_5;
+            uint _e58 = asuint(bsh_nodes.Load(20+_e55*32));
+            const uint _e59 = bsh_next_leaf(BSH, _e58, x_7);
+            b_5 = _e59;
+        }
+        loop_init = false;
+        uint _e14 = b_5;
+        if ((_e14 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = picks.n;
+            picks.n = (_e18 + 1u);
+            uint _e22 = b_5;
+            uint li_3 = asuint(bsh_nodes.Load(24+_e22*32));
+            const float _e26 = light_weight(li_3, x_7, n_7);
+            if ((_e26 > 0.0)) {
+                float _e30 = picks.w_sum;
+                picks.w_sum = (_e30 + _e26);
+                s = 0u;
+                uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+                bool loop_init_1 = true;
+                while(true) {
+                    if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                    if (!loop_init_1) {
+                        uint _e51 = s;
+                        s = (_e51 + 1u);
+                    }
+                    loop_init_1 = false;
+                    uint _e34 = s;
+                    if ((_e34 < K)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e37 = h_1;
+                        const uint _e38 = pcg_hash(_e37);
+                        h_1 = _e38;
+                        float _e40 = picks.w_sum;
+                        uint _e41 = h_1;
+                        const float _e42 = xi_from_bits(_e41);
+                        const bool _e43 = weighted_replace(_e26, _e40, _e42);
+                        if (_e43) {
+                            uint _e45 = s;
+                            picks.light[min(uint(_e45), 7u)] = li_3;
+                            uint _e48 = s;
+                            picks.w[min(uint(_e48), 7u)] = _e26;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    WeightedPicks _e60 = picks;
+    const WeightedPicks weightedpicks = _e60;
+    return weightedpicks;
+}
+
+float4 surface_at(int2 texel)
+{
+    float4 p_2 = position_tex.Load(int3(texel, int(0)));
+    return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
+}
+
+Shaded shade_pick(uint li_2, float3 x_8, float3 n_8, Material m_1, float w_5, float u1_3, float u2_3)
+{
+    Shaded s_1 = (Shaded)0;
+
+    const Connection _e9 = connect(li_2, x_8, n_8, n_8, w_5, u1_3, u2_3, 0.0);
+    s_1.e = _e9.e;
+    s_1.diffuse = (0.0).xxx;
+    s_1.specular = (0.0).xxx;
+    if ((_e9.cos_x > 0.0)) {
+        float3 l_5 = normalize((_e9.y - x_8));
+        float3 _e29 = view.f0_d;
+        float _e32 = view.f90_d;
+        const float _e34 = half_cosine(m_1.v, l_5);
+        const float3 _e35 = diffuse_brdf(m_1.base, m_1.metallic, _e29, _e32, _e34);
+        s_1.diffuse = (_e35 * _e9.e);
+        float3 _e43 = view.f0_d;
+        float _e46 = view.f90_d;
+        const float3 _e49 = specular_brdf(m_1.base, m_1.metallic, _e43, _e46, m_1.alpha, n_8, m_1.v, l_5);
+        s_1.specular = (_e49 * _e9.e);
+    }
+    Shaded _e52 = s_1;
+    const Shaded shaded = _e52;
+    return shaded;
+}
+
+Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
+    Shaded ret = (Shaded)0;
+    ret.e = arg0;
+    ret.diffuse = arg1;
+    ret.specular = arg2;
+    return ret;
+}
+
+Shaded add(Shaded a_5, Shaded b_6)
+{
+    const Shaded shaded_1 = ConstructShaded((a_5.e + b_6.e), (a_5.diffuse + b_6.diffuse), (a_5.specular + b_6.specular));
+    return shaded_1;
+}
+
+Material ConstructMaterial(float3 arg0, float arg1, float arg2, float3 arg3) {
+    Material ret = (Material)0;
+    ret.base = arg0;
+    ret.metallic = arg1;
+    ret.alpha = arg2;
+    ret.v = arg3;
+    return ret;
+}
+
+[numthreads(8, 8, 1)]
+void main(uint3 gid : SV_DispatchThreadID)
+{
+    bool local = (bool)0;
+    bool local_1 = (bool)0;
+    Material m = (Material)0;
+    uint h = (uint)0;
+    Shaded t = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
+    uint k = 0u;
+
+    uint _e4 = view.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = view.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    int2 texel_1 = int2(int(gid.x), int(gid.y));
+    const float4 _e21 = surface_at(texel_1);
+    float4 _e24 = normal_tex.Load(int3(texel_1, int(0)));
+    float3 nn = _e24.xyz;
+    float len2_1 = dot(nn, nn);
+    if (!((_e21.w <= 0.0))) {
+        local_1 = !((len2_1 > 0.0));
+    } else {
+        local_1 = true;
+    }
+    bool _e37 = local_1;
+    if (_e37) {
+        out_tex[texel_1] = (0.0).xxxx;
+        specular_tex[texel_1] = (0.0).xxxx;
+        return;
+    }
+    float3 x_9 = _e21.xyz;
+    float3 n_10 = (nn / (sqrt(len2_1)).xxx);
+    float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
+    float4 _e54 = base_color_tex.Load(int3(texel_1, int(0)));
+    const float _e60 = ggx_alpha(saturate(mr.y));
+    float3 _e63 = view.eye;
+    m = ConstructMaterial(_e54.xyz, saturate(mr.z), _e60, normalize((_e63 - x_9)));
+    uint _e69 = view.seed;
+    uint _e73 = view.width;
+    uint _e79 = view.frame;
+    const uint _e80 = point_stream(_e69, ((gid.y * _e73) + gid.x), _e79);
+    const uint _e81 = pick_stream(_e80);
+    h = _e81;
+    const WeightedPicks _e91 = bsh_weighted_collect(x_9, n_10, _e80);
+    if ((_e91.w_sum > 0.0)) {
+        uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+        bool loop_init_2 = true;
+        while(true) {
+            if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+            loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+            if (!loop_init_2) {
+                uint _e122 = k;
+                k = (_e122 + 1u);
+            }
+            loop_init_2 = false;
+            uint _e97 = k;
+            if ((_e97 < K)) {
+            } else {
+                break;
+            }
+            {
+                uint _e100 = h;
+                const uint _e101 = pcg_hash(_e100);
+                h = _e101;
+                uint _e102 = h;
+                const float _e103 = xi_from_bits(_e102);
+                uint _e104 = h;
+                const uint _e105 = pcg_hash(_e104);
+                h = _e105;
+                Shaded _e106 = t;
+                uint _e108 = k;
+                Material _e110 = m;
+                uint _e113 = k;
+                const float _e116 = weighted_pick_weight(_e91.w_sum, _e91.w[min(uint(_e113), 7u)], K);
+                uint _e117 = h;
+                const float _e118 = xi_from_bits(_e117);
+                const Shaded _e119 = shade_pick(_e91.light[min(uint(_e108), 7u)], x_9, n_10, _e110, _e116, _e103, _e118);
+                const Shaded _e120 = add(_e106, _e119);
+                t = _e120;
+            }
+        }
+    }
+    uint count = _e91.n;
+    float3 _e127 = t.e;
+    out_tex[texel_1] = float4(_e127, float(count));
+    float3 _e132 = t.specular;
+    specular_tex[texel_1] = float4(_e132, 0.0);
+    return;
+}
