@@ -1,16 +1,27 @@
-//! The OBJ/MTL loader and the TOML scene-file parser on arbitrary text:
-//! typed errors, never panics; accepted scenes validate.
+//! The OBJ/MTL loader, the glTF loader (JSON or GLB bytes) and the TOML
+//! scene-file parser on arbitrary input: typed errors, never panics;
+//! accepted scenes validate.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
+use slc_scene::gltf::GltfScene;
 use slc_scene::scene::Scene;
 use slc_scene::scene_file::SceneFile;
 use std::path::Path;
 
 fuzz_target!(|data: &[u8]| {
-    // First byte chooses the loader; an OBJ's MTL is the text after a NUL.
+    // First byte chooses the loader; an OBJ's MTL is the text after a NUL,
+    // a glTF's external buffers are the bytes after the first NUL.
     let Some((&which, rest)) = data.split_first() else { return };
-    if which % 2 == 0 {
+    if which % 3 == 2 {
+        let (file, bin) = match rest.iter().position(|&b| b == 0) {
+            Some(i) => (&rest[..i], Some(rest[i + 1..].to_vec())),
+            None => (rest, None),
+        };
+        if let Ok(g) = GltfScene::parse(file, "fuzz.gltf", |_| bin.clone()) {
+            g.scene.validate().expect("a loaded glTF scene validates");
+        }
+    } else if which % 3 == 0 {
         let (obj, mtl) = match rest.iter().position(|&b| b == 0) {
             Some(i) => (&rest[..i], Some(rest[i + 1..].to_vec())),
             None => (rest, None),

@@ -5,6 +5,7 @@ use crate::backends::Backend;
 use clap::{Args, ValueEnum};
 use slc_cpu::vpl::VplContext;
 use slc_scene::RenderError;
+use slc_scene::gltf::GltfScene;
 use slc_scene::scene::Scene;
 use slc_scene::scene_file::{RenderSettings, SceneFile};
 use slc_scene::vpl::VplSettings;
@@ -29,7 +30,7 @@ pub struct SceneArgs {
     /// Backend.
     #[arg(long, value_enum, default_value = "cpu")]
     pub backend: Backend,
-    /// `cornell` (built in), an OBJ file (with its MTL), or a TOML scene file.
+    /// `cornell` (built in), an OBJ file (with its MTL), a glTF 2.0 file (`.gltf`, `.glb`), or a TOML scene file.
     #[arg(long, default_value = "cornell")]
     pub scene: String,
     /// Image width [default: 512; 128 for `bench --app pt`].
@@ -98,6 +99,9 @@ impl SceneArgs {
         } else if self.scene.ends_with(".toml") {
             let f = SceneFile::load(Path::new(&self.scene))?;
             (f.scene, f.lights, f.render)
+        } else if self.scene.ends_with(".gltf") || self.scene.ends_with(".glb") {
+            let g = GltfScene::load(Path::new(&self.scene))?;
+            (g.scene, g.lights, RenderSettings::default())
         } else {
             (Scene::load_obj(Path::new(&self.scene))?, Vec::new(), RenderSettings::default())
         };

@@ -407,6 +407,23 @@ pub enum Light {
 }
 
 impl Light {
+    /// The light with every point `p` of it moved to `p·scale + offset`
+    /// (`scale > 0`; directions, intensities and radiance unchanged), as a
+    /// scene file places the geometry that holds it.
+    pub fn placed(&self, scale: f32, offset: Vec3) -> Result<Light, LightError> {
+        let at = |p: Vec3| p * scale + offset;
+        Ok(match self {
+            Light::Point(l) => Light::Point(PointLight::new(at(l.position), l.intensity)?),
+            Light::Vpl(l) => Light::Vpl(Vpl::new(at(l.position), l.normal, l.flux)?),
+            Light::Spot(l) => Light::Spot(SpotLight { position: at(l.position), ..*l }),
+            Light::Ies(l) => Light::Ies(IesLight { position: at(l.position), ..l.clone() }),
+            Light::Triangle(l) => {
+                let [a, b, c] = l.v;
+                Light::Triangle(TriangleLight::new(at(a), at(b), at(c), l.radiance)?)
+            }
+        })
+    }
+
     /// RGB peak radiant intensity `I_max` per channel: point `I`, VPL `Φ/π`,
     /// spot `I₀`, IES max candela × tint, triangle `L·A`.
     pub fn peak(&self) -> Vec3 {

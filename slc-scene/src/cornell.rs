@@ -12,10 +12,10 @@ impl Scene {
     /// measured light (radiance `(17, 12, 4)` times its 0.130 × 0.105 m area).
     pub fn cornell_box() -> Scene {
         let mm = |x: f32, y: f32, z: f32| Vec3::new(x, y, z) * 0.001;
-        let white = Material { albedo: Vec3::new(0.725, 0.71, 0.68), emission: Vec3::ZERO };
-        let red = Material { albedo: Vec3::new(0.63, 0.065, 0.05), emission: Vec3::ZERO };
-        let green = Material { albedo: Vec3::new(0.14, 0.45, 0.091), emission: Vec3::ZERO };
-        let light = Material { albedo: Vec3::splat(0.78), emission: Vec3::new(17.0, 12.0, 4.0) };
+        let white = Material::lambertian(Vec3::new(0.725, 0.71, 0.68), Vec3::ZERO);
+        let red = Material::lambertian(Vec3::new(0.63, 0.065, 0.05), Vec3::ZERO);
+        let green = Material::lambertian(Vec3::new(0.14, 0.45, 0.091), Vec3::ZERO);
+        let light = Material::lambertian(Vec3::splat(0.78), Vec3::new(17.0, 12.0, 4.0));
         let quads: [([[f32; 3]; 4], u32); 16] = [
             // Floor, ceiling, back wall (white), right wall (green), left wall (red).
             ([[552.8, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 559.2], [549.6, 0.0, 559.2]], 0),

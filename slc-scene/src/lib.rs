@@ -6,7 +6,8 @@
 //! | module | holds |
 //! |---|---|
 //! | [`scene`] | the scene model: triangles with optional vertex normals, materials, camera, primary light, validation |
-//! | [`cornell`], `obj`, `scene_file` | the built-in Cornell box; OBJ+MTL through tobj and TOML scene files (feature `io`, on by default) |
+//! | [`cornell`], `obj`, `gltf`, `scene_file` | the built-in Cornell box; OBJ+MTL through tobj, glTF 2.0 (`.gltf`/`.glb`) through the gltf crate and TOML scene files (feature `io`, on by default) |
+//! | `shapes` | built-in shapes of scene files (the unit sphere; feature `io`) |
 //! | [`lights`] | a light set with its BSH and power alias table; emissive triangles → triangle lights |
 //! | [`light_bvh`] | the light BVH of the `lightbvh` baseline (built here, sampled by slc-core on both backends) |
 //! | [`alias`] | Walker's alias table (the `power` baseline) |
@@ -29,6 +30,8 @@
 pub mod alias;
 pub mod backend;
 pub mod cornell;
+#[cfg(feature = "io")]
+pub mod gltf;
 pub mod image;
 pub mod light_bvh;
 pub mod lights;
@@ -38,6 +41,8 @@ pub mod pt;
 pub mod scene;
 #[cfg(feature = "io")]
 pub mod scene_file;
+#[cfg(feature = "io")]
+pub mod shapes;
 pub mod vpl;
 
 use thiserror::Error;
@@ -51,6 +56,9 @@ pub enum SceneError {
     /// The OBJ/MTL could not be parsed.
     #[error("invalid OBJ/MTL {0}: {1}")]
     Obj(String, String),
+    /// The glTF file could not be parsed or holds a bad value.
+    #[error("invalid glTF {0}: {1}")]
+    Gltf(String, String),
     /// No triangles.
     #[error("the scene has no triangles")]
     Empty,

@@ -1,7 +1,8 @@
 //! OBJ + MTL loading through tobj: positions, per-corner normals (`vn`,
-//! smooth shading), `Kd` albedo and `Ke` emission. MTL features the renderer
-//! does not model (`Ks`, `Ns`, `d`, `map_*`, ...) are returned in
-//! [`Scene::unsupported`] for the caller to report.
+//! smooth shading), and materials ([`mtl_material`]: `Kd` base colour,
+//! `Ks`/`Ns` or the PBR extension's `Pr`/`Pm` as glTF metallic-roughness,
+//! `Ke` emission). MTL features the renderer does not model (`d`, `map_*`,
+//! ...) are returned in [`Scene::unsupported`] for the caller to report.
 
 use crate::SceneError;
 use crate::scene::{Camera, Material, PrimaryLight, Scene, Unsupported};
@@ -20,18 +21,11 @@ fn short_colour_line(mtl: &[u8]) -> bool {
 }
 
 /// The MTL features of `m` that would change its look but that slc ignores:
-/// a non-zero specular colour (with its exponent), transparency (with its
-/// index of refraction), texture maps, and keys tobj does not know. `Ka`,
-/// `illum` and a zero `Ks` (how most exporters write "diffuse") are silent.
+/// transparency (with its index of refraction), texture maps, and keys
+/// neither slc nor tobj knows. `Ka`, `illum` and the keys [`mtl_material`]
+/// maps are silent.
 fn unsupported_features(m: &tobj::Material) -> Vec<String> {
     let mut out = Vec::new();
-    let specular = m.specular.is_some_and(|ks| ks.iter().any(|&k| k > 0.0));
-    if specular {
-        out.push("Ks".to_string());
-        if m.shininess.is_some() {
-            out.push("Ns".to_string());
-        }
-    }
     if m.dissolve.is_some_and(|d| d < 1.0) {
         out.push("d".to_string());
         if m.optical_density.is_some() {
@@ -50,10 +44,58 @@ fn unsupported_features(m: &tobj::Material) -> Vec<String> {
             out.push(key.to_string());
         }
     }
-    let mut unknown: Vec<&String> = m.unknown_param.keys().filter(|k| !matches!(k.as_str(), "Tf" | "Ke")).collect();
+    let mut unknown: Vec<&String> = m.unknown_param.keys().filter(|k| !matches!(k.as_str(), "Tf" | "Ke" | "Pr" | "Pm")).collect();
     unknown.sort();
     out.extend(unknown.into_iter().cloned());
     out
+}
+
+/// The slc material of an MTL material (`name` labels errors):
+/// - `Kd` is the base colour (0.8 grey when absent), `Ke` the emission.
+/// - With the PBR extension's `Pr` or `Pm` (Exocortex/Blender's MTL PBR
+///   keys): glTF's metallic-roughness material, `Pr` its perceptual
+///   roughness (`α = Pr²`; 1 when absent), `Pm` its metallic factor (0 when
+///   absent), the dielectric's `F0 = ((Ni − 1)/(Ni + 1))²` (0.04 without
+///   `Ni`) and `F90 = 1`; `Ks`/`Ns` are then ignored.
+/// - Else a non-zero `Ks` (Blinn-Phong): a dielectric whose Fresnel is
+///   `F0 = Ks`, `F90 = max(Ks)` (Phong's specular albedo, constant over
+///   angles for a grey `Ks`), with the GGX `α = √(2/(Ns + 2))` of the
+///   Blinn-Phong equivalence (Walter et al. 2007; `Ns` 0 when absent, so
+///   `α = 1`), diffuse `Kd` weighted by `1 − F` as glTF's dielectric is.
+/// - Else Lambertian: `f = Kd/π`.
+pub fn mtl_material(m: &tobj::Material, name: &str) -> Result<Material, SceneError> {
+    let kd = m.diffuse.map(Vec3::from).unwrap_or(Vec3::splat(0.8));
+    let ke = m.emissive.map(Vec3::from).unwrap_or(Vec3::ZERO);
+    let param = |key: &str| -> Result<Option<f32>, SceneError> {
+        match m.unknown_param.get(key) {
+            None => Ok(None),
+            Some(v) => match v.trim().parse::<f32>() {
+                Ok(x) if (0.0..=1.0).contains(&x) => Ok(Some(x)),
+                _ => Err(SceneError::Obj(name.to_string(), format!("material '{}': {key} '{v}' must be a number in [0, 1]", m.name))),
+            },
+        }
+    };
+    let (pr, pm) = (param("Pr")?, param("Pm")?);
+    let ks = m.specular.map(Vec3::from).unwrap_or(Vec3::ZERO);
+    let mut mat = if pr.is_some() || pm.is_some() {
+        let f0 = match m.optical_density {
+            Some(ni) if ni.is_finite() && ni >= 1.0 => ((ni - 1.0) / (ni + 1.0)).powi(2),
+            Some(ni) => return Err(SceneError::Obj(name.to_string(), format!("material '{}': Ni {ni} must be finite and >= 1", m.name))),
+            None => 0.04,
+        };
+        Material { f0: Vec3::splat(f0), ..Material::gltf(kd, pm.unwrap_or(0.0), pr.unwrap_or(1.0)) }
+    } else if ks.max_element() > 0.0 {
+        let ns = m.shininess.unwrap_or(0.0);
+        if !ns.is_finite() {
+            return Err(SceneError::Obj(name.to_string(), format!("material '{}': Ns {ns} must be finite", m.name)));
+        }
+        let alpha = (2.0 / (ns.max(0.0) + 2.0)).sqrt();
+        Material { f0: ks, f90: ks.max_element(), ..Material::gltf(kd, 0.0, alpha.sqrt()) }
+    } else {
+        Material::lambertian(kd, Vec3::ZERO)
+    };
+    mat.emission = ke;
+    Ok(mat)
 }
 
 impl Scene {
@@ -103,16 +145,9 @@ impl Scene {
                 (!features.is_empty()).then(|| Unsupported { source: file.clone(), material: m.name.clone(), features })
             })
             .collect();
-        let mut materials: Vec<Material> = mats
-            .iter()
-            .map(|m| {
-                let kd = m.diffuse.map(Vec3::from).unwrap_or(Vec3::splat(0.8));
-                let ke = m.emissive.map(Vec3::from).unwrap_or(Vec3::ZERO);
-                Material { albedo: kd, emission: ke }
-            })
-            .collect();
+        let mut materials: Vec<Material> = mats.iter().map(|m| mtl_material(m, name)).collect::<Result<_, _>>()?;
         let default_mat = materials.len() as u32;
-        materials.push(Material { albedo: Vec3::splat(0.8), emission: Vec3::ZERO });
+        materials.push(Material::lambertian(Vec3::splat(0.8), Vec3::ZERO));
         let mut triangles = Vec::new();
         let mut normals = Vec::new();
         let mut material_of = Vec::new();
@@ -208,14 +243,41 @@ mod tests {
     }
 
     #[test]
-    fn specular_and_textured_materials_are_reported_not_rejected() {
-        let mtl = "newmtl glossy\nKd 0.5 0.5 0.5\nKs 0.4 0.4 0.4\nNs 80\nnewmtl matte\nKd 0.5 0.5 0.5\nKs 0 0 0\nNs 10\nKa 1 1 1\nillum 2\nnewmtl tex\nKd 1 1 1\nmap_Kd wood.png\nd 0.5\n";
+    fn textured_and_transparent_materials_are_reported_not_rejected() {
+        let mtl = "newmtl glossy\nKd 0.5 0.5 0.5\nKs 0.4 0.4 0.4\nNs 80\nnewmtl matte\nKd 0.5 0.5 0.5\nKs 0 0 0\nNs 10\nKa 1 1 1\nillum 2\nnewmtl tex\nKd 1 1 1\nmap_Kd wood.png\nd 0.5\nPs 0.3\n";
         let obj = format!("mtllib t.mtl\n{QUAD}usemtl glossy\nf 1 2 3\nusemtl matte\nf 1 3 4\n");
         let s = parse(&obj, Some(mtl)).unwrap();
         let by = |name: &str| s.unsupported.iter().find(|u| u.material == name).map(|u| u.features.clone());
-        assert_eq!(by("glossy"), Some(vec!["Ks".to_string(), "Ns".to_string()]));
+        assert_eq!(by("glossy"), None);
         assert_eq!(by("matte"), None);
-        assert_eq!(by("tex"), Some(vec!["d".to_string(), "map_Kd".to_string()]));
-        assert!(s.unsupported[0].message().contains("material 'glossy' has Ks, Ns"));
+        assert_eq!(by("tex"), Some(vec!["d".to_string(), "map_Kd".to_string(), "Ps".to_string()]));
+        assert!(s.unsupported[0].message().contains("material 'tex' has d, map_Kd, Ps"));
+    }
+
+    /// `Ks`/`Ns` become a glossy dielectric, `Pr`/`Pm` glTF's factors, and
+    /// a `Kd`-only material stays exactly Lambertian.
+    #[test]
+    fn mtl_keys_map_to_metallic_roughness() {
+        let mtl = "newmtl phong\nKd 0.2 0.3 0.4\nKs 0.9 0.9 0.9\nNs 60\n\
+                   newmtl pbr\nKd 0.9 0.6 0.3\nPr 0.25\nPm 1\nKs 0.5 0.5 0.5\n\
+                   newmtl ior\nKd 0.5 0.5 0.5\nPr 0.5\nNi 2.0\n\
+                   newmtl matte\nKd 0.5 0.5 0.5\nKe 1 2 3\n";
+        let obj = format!("mtllib t.mtl\n{QUAD}usemtl phong\nf 1 2 3\nusemtl pbr\nf 1 3 4\nusemtl ior\nf 1 2 4\nusemtl matte\nf 2 3 4\n");
+        let s = parse(&obj, Some(mtl)).unwrap();
+        let [phong, pbr, ior, matte] = [0, 1, 2, 3].map(|i| s.materials[i]);
+        // α = √(2/62) for Ns 60; roughness = √α.
+        assert!((phong.alpha() - (2.0f32 / 62.0).sqrt()).abs() < 1e-6, "{}", phong.alpha());
+        assert_eq!((phong.f0, phong.f90, phong.metallic, phong.albedo), (Vec3::splat(0.9), 0.9, 0.0, Vec3::new(0.2, 0.3, 0.4)));
+        assert!(phong.has_specular());
+        assert_eq!((pbr.metallic, pbr.roughness, pbr.f0, pbr.f90), (1.0, 0.25, Vec3::splat(0.04), 1.0));
+        assert!((ior.f0.x - 1.0 / 9.0).abs() < 1e-6 && ior.metallic == 0.0);
+        assert_eq!(matte, Material::lambertian(Vec3::splat(0.5), Vec3::new(1.0, 2.0, 3.0)));
+        assert!(!matte.has_specular());
+        // Out-of-range PBR keys are errors naming the key.
+        for bad in ["Pr 1.5", "Pm -0.1", "Pr nan", "Pm x"] {
+            let e = parse(&format!("mtllib t.mtl\n{QUAD}usemtl m\nf 1 2 3\n"), Some(&format!("newmtl m\nKd 1 1 1\n{bad}\n")));
+            let key = &bad[..2];
+            assert!(matches!(&e, Err(SceneError::Obj(_, what)) if what.contains(key)), "{bad}: {e:?}");
+        }
     }
 }

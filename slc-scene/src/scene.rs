@@ -1,5 +1,5 @@
 //! The scene model both backends take: triangles (with optional per-vertex
-//! shading normals) with diffuse albedo and emission, a pinhole camera and
+//! shading normals) with glTF metallic-roughness materials and emission, a pinhole camera and
 //! the VPL application's primary light. Loaded from OBJ+MTL ([`crate::obj`]),
 //! scene files ([`crate::scene_file`]) or built in ([`crate::cornell`]).
 
@@ -7,13 +7,94 @@ use crate::SceneError;
 use glam::Vec3;
 use slc_core::light::SpotLight;
 
-/// A diffuse material.
+/// A glTF 2.0 metallic-roughness material with emission, as
+/// [`slc_core::brdf`] evaluates it: `f = mix(dielectric, metal, metallic)`
+/// with a Lambertian diffuse lobe and a GGX specular lobe of `α =
+/// roughness²`. [`Material::lambertian`] (no specular lobe: `f = albedo/π`)
+/// is what the OBJ loader makes of a diffuse MTL material and what the
+/// built-in Cornell box uses; [`Material::gltf`] is glTF's dielectric (IOR
+/// 1.5) or metal.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Material {
-    /// Diffuse reflectance ρ per channel, in `[0, 1]`.
+    /// Base colour per channel, in `[0, 1]` (glTF `baseColorFactor`; MTL
+    /// `Kd`): a dielectric's diffuse albedo, a metal's Fresnel reflectance
+    /// at normal incidence.
     pub albedo: Vec3,
-    /// Emitted radiance (`Ke`), `≥ 0`.
+    /// Emitted radiance (`Ke`; glTF `emissiveFactor` × emissive strength), `≥ 0`.
     pub emission: Vec3,
+    /// Metallic factor in `[0, 1]` (glTF `metallicFactor`; MTL `Pm`).
+    pub metallic: f32,
+    /// Perceptual roughness in `[0, 1]` (glTF `roughnessFactor`; MTL `Pr`);
+    /// GGX `α = roughness²` ([`slc_core::brdf::ggx_alpha`]).
+    pub roughness: f32,
+    /// The dielectric's Fresnel reflectance at normal incidence, per
+    /// channel in `[0, 1]`: `((ior − 1)/(ior + 1))²` (0.04 at glTF's IOR
+    /// 1.5), times `KHR_materials_specular`'s colour and factor.
+    pub f0: Vec3,
+    /// The dielectric's Fresnel reflectance at grazing incidence, in `[0,
+    /// 1]`: 1, or `KHR_materials_specular`'s factor. With `f0 = 0` and
+    /// `f90 = 0` the dielectric is Lambertian.
+    pub f90: f32,
+}
+
+impl Material {
+    /// A Lambertian material: diffuse albedo `albedo` (`f = albedo/π`), no
+    /// specular lobe, emitting `emission`.
+    pub fn lambertian(albedo: Vec3, emission: Vec3) -> Material {
+        Material { albedo, emission, metallic: 0.0, roughness: 1.0, f0: Vec3::ZERO, f90: 0.0 }
+    }
+
+    /// glTF's metallic-roughness material without extensions: base colour
+    /// `albedo`, `metallic`, perceptual `roughness`, a dielectric of IOR
+    /// 1.5 (`f0 = 0.04`, `f90 = 1`), no emission.
+    pub fn gltf(albedo: Vec3, metallic: f32, roughness: f32) -> Material {
+        Material { albedo, emission: Vec3::ZERO, metallic, roughness, f0: Vec3::splat(0.04), f90: 1.0 }
+    }
+
+    /// GGX `α` ([`slc_core::brdf::ggx_alpha`] of the roughness).
+    pub fn alpha(&self) -> f32 {
+        slc_core::brdf::ggx_alpha(self.roughness)
+    }
+
+    /// `true` when the material has a specular lobe (not Lambertian).
+    pub fn has_specular(&self) -> bool {
+        slc_core::brdf::has_specular(self.metallic, self.f0, self.f90)
+    }
+
+    /// The BRDF `f(v, l)` at unit shading normal `n`
+    /// ([`slc_core::brdf::brdf_eval`]).
+    pub fn eval(&self, n: Vec3, v: Vec3, l: Vec3) -> Vec3 {
+        slc_core::brdf::brdf_eval(self.albedo, self.metallic, self.f0, self.f90, self.alpha(), n, v, l)
+    }
+
+    /// Probability that BSDF sampling seen at `n·v` draws the specular lobe
+    /// ([`slc_core::brdf::specular_probability`]).
+    pub fn specular_probability(&self, n_v: f32) -> f32 {
+        slc_core::brdf::specular_probability(self.albedo, self.metallic, self.f0, self.f90, n_v)
+    }
+
+    /// Checks every field's range; `i` names the material in the error.
+    pub fn validate(&self, i: usize) -> Result<(), SceneError> {
+        let unit = |v: Vec3| v.is_finite() && v.min_element() >= 0.0 && v.max_element() <= 1.0;
+        let unit1 = |x: f32| (0.0..=1.0).contains(&x);
+        let bad = |what: String| Err(SceneError::Invalid(format!("material {i}: {what}")));
+        if !unit(self.albedo) {
+            return bad(format!("base colour (albedo) {:?} outside [0, 1]", self.albedo));
+        }
+        if !(self.emission.is_finite() && self.emission.min_element() >= 0.0) {
+            return bad(format!("emission {:?} must be finite and >= 0", self.emission));
+        }
+        if !unit1(self.metallic) {
+            return bad(format!("metallic {} outside [0, 1]", self.metallic));
+        }
+        if !unit1(self.roughness) {
+            return bad(format!("roughness {} outside [0, 1]", self.roughness));
+        }
+        if !unit(self.f0) || !unit1(self.f90) {
+            return bad(format!("dielectric Fresnel f0 {:?}, f90 {} outside [0, 1]", self.f0, self.f90));
+        }
+        Ok(())
+    }
 }
 
 /// A pinhole camera.
@@ -218,22 +299,23 @@ pub struct Scene {
 }
 
 /// Material features of a loaded file that the renderer ignores (it models
-/// diffuse albedo and emission only), by material.
+/// the metallic-roughness factors and emission: no textures, transparency
+/// or refraction), by material.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Unsupported {
     /// Where the material comes from (the OBJ's name).
     pub source: String,
     /// Material name.
     pub material: String,
-    /// MTL keys that are ignored (`Ks`, `Ns`, `map_Kd`, `d`, ...).
+    /// Keys that are ignored (`map_Kd`, `d`, `Ni`, glTF's `baseColorTexture`, ...).
     pub features: Vec<String>,
 }
 
 impl Unsupported {
-    /// One line for a user: `"bunny.obj: material 'glossy' has Ks, Ns (ignored: slc renders diffuse albedo and emission only)"`.
+    /// One line for a user: `"bunny.obj: material 'glass' has d, map_Kd (ignored: slc renders the material's factors, no textures, transparency or refraction)"`.
     pub fn message(&self) -> String {
         format!(
-            "{}: material '{}' has {} (ignored: slc renders diffuse albedo and emission only)",
+            "{}: material '{}' has {} (ignored: slc renders the material's factors, no textures, transparency or refraction)",
             self.source,
             self.material,
             self.features.join(", ")
@@ -243,8 +325,8 @@ impl Unsupported {
 
 impl Scene {
     /// Checks the invariants every renderer relies on: finite vertices,
-    /// valid material indices, albedo in `[0, 1]`, non-negative finite
-    /// emission, a usable camera and primary light.
+    /// valid material indices, valid materials ([`Material::validate`]), a
+    /// usable camera and primary light.
     pub fn validate(&self) -> Result<(), SceneError> {
         if self.triangles.is_empty() {
             return Err(SceneError::Empty);
@@ -269,12 +351,7 @@ impl Scene {
             }
         }
         for (i, m) in self.materials.iter().enumerate() {
-            if !(m.albedo.is_finite() && m.albedo.min_element() >= 0.0 && m.albedo.max_element() <= 1.0) {
-                return Err(SceneError::Invalid(format!("material {i}: albedo {:?} outside [0, 1]", m.albedo)));
-            }
-            if !(m.emission.is_finite() && m.emission.min_element() >= 0.0) {
-                return Err(SceneError::Invalid(format!("material {i}: emission {:?} must be finite and >= 0", m.emission)));
-            }
+            m.validate(i)?;
         }
         let c = &self.camera;
         let fwd = c.target - c.position;

@@ -1,4 +1,5 @@
-//! Scene files (TOML): camera, OBJ geometry, emissive meshes, point/spot/IES
+//! Scene files (TOML): camera, OBJ/glTF/built-in geometry with optional
+//! material overrides, emissive meshes, point/spot/IES
 //! lights, the primary light of the VPL application, and render settings.
 //! Paths are relative to the scene file. Unknown keys and bad values are
 //! errors that name the key and the line.
@@ -10,8 +11,12 @@
 //! fov = 39.3                       # vertical, degrees; `up` defaults to +y
 //!
 //! [[geometry]]
-//! builtin = "cornell"              # or: obj = "room.obj", scale = 1.0, translate = [0, 0, 0]
+//! builtin = "cornell"              # or "sphere" (unit, smooth); or obj = "room.obj", or gltf = "room.glb"
+//! scale = 1.0
+//! translate = [0, 0, 0]
 //! emission_scale = 1.0             # 0 switches this geometry's emitters off
+//! # Replaces the geometry's materials (glTF metallic-roughness; defaults shown):
+//! material = { base_color = [0.8, 0.8, 0.8], metallic = 0.0, roughness = 0.5, ior = 1.5, specular = 1.0, emission = [0, 0, 0] }
 //!
 //! [[emissive_mesh]]
 //! obj = "../../shared/data/meshes/bunny.obj"
@@ -49,6 +54,7 @@
 //! ```
 
 use crate::SceneError;
+use crate::gltf::GltfScene;
 use crate::scene::{Camera, Material, PrimaryLight, Scene};
 use glam::Vec3;
 use serde::Deserialize;
@@ -100,6 +106,9 @@ fn one() -> f32 {
 struct GeometryDef {
     builtin: Option<String>,
     obj: Option<PathBuf>,
+    gltf: Option<PathBuf>,
+    /// Replaces every material of this geometry.
+    material: Option<MaterialDef>,
     #[serde(default = "one")]
     scale: f32,
     #[serde(default)]
@@ -121,6 +130,57 @@ struct EmissiveDef {
     scale: f32,
     #[serde(default)]
     translate: [f32; 3],
+}
+
+/// `material = { ... }` of a `[[geometry]]`: glTF's metallic-roughness
+/// material (base colour, metallic, perceptual roughness), its dielectric's
+/// IOR and `KHR_materials_specular` factor (0: a Lambertian dielectric),
+/// and emission.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MaterialDef {
+    #[serde(default = "grey")]
+    base_color: [f32; 3],
+    #[serde(default)]
+    metallic: f32,
+    #[serde(default = "half")]
+    roughness: f32,
+    #[serde(default = "ior")]
+    ior: f32,
+    #[serde(default = "one")]
+    specular: f32,
+    #[serde(default)]
+    emission: [f32; 3],
+}
+
+fn grey() -> [f32; 3] {
+    [0.8; 3]
+}
+fn half() -> f32 {
+    0.5
+}
+fn ior() -> f32 {
+    1.5
+}
+
+impl MaterialDef {
+    fn material(&self) -> Result<Material, String> {
+        if !(self.ior.is_finite() && self.ior >= 1.0) {
+            return Err(format!("material: ior {} must be finite and >= 1", self.ior));
+        }
+        if !(0.0..=1.0).contains(&self.specular) {
+            return Err(format!("material: specular {} must be in [0, 1]", self.specular));
+        }
+        let f0 = ((self.ior - 1.0) / (self.ior + 1.0)).powi(2) * self.specular;
+        let m = Material {
+            f0: Vec3::splat(f0),
+            f90: self.specular,
+            emission: v3(self.emission),
+            ..Material::gltf(v3(self.base_color), self.metallic, self.roughness)
+        };
+        m.validate(0).map_err(|e| e.to_string().replace("invalid scene: material 0: ", "material: "))?;
+        Ok(m)
+    }
 }
 
 /// `[[scatter_lights]]`: `count` small equilateral triangle lights of edge
@@ -340,6 +400,8 @@ impl SceneFile {
             unsupported: Vec::new(),
         };
         let append = |scene: &mut Scene, other: Scene, scale: f32, translate: [f32; 3]| scene.append(other, scale, v3(translate));
+        // glTF punctual lights, with the index of the geometry that placed them.
+        let mut gltf_lights: Vec<(Light, usize)> = Vec::new();
         if f.geometry.is_empty() && f.emissive_mesh.is_empty() {
             return Err(bad("the scene needs at least one [[geometry]] or [[emissive_mesh]]".into()));
         }
@@ -350,12 +412,23 @@ impl SceneFile {
             if !(g.emission_scale.is_finite() && g.emission_scale >= 0.0) {
                 return Err(bad(format!("geometry {i}: emission_scale {} must be finite and >= 0", g.emission_scale)));
             }
-            let mut part = match (&g.builtin, &g.obj) {
-                (Some(b), None) if b == "cornell" => Scene::cornell_box(),
-                (Some(b), None) => return Err(bad(format!("geometry {i}: unknown builtin '{b}' (known: cornell)"))),
-                (None, Some(p)) => Scene::load_obj(&dir.join(p))?,
-                _ => return Err(bad(format!("geometry {i}: give exactly one of `builtin` or `obj`"))),
+            let mut part = match (&g.builtin, &g.obj, &g.gltf) {
+                (Some(b), None, None) if b == "cornell" => Scene::cornell_box(),
+                (Some(b), None, None) if b == "sphere" => crate::shapes::sphere(4),
+                (Some(b), None, None) => return Err(bad(format!("geometry {i}: unknown builtin '{b}' (known: cornell, sphere)"))),
+                (None, Some(p), None) => Scene::load_obj(&dir.join(p))?,
+                (None, None, Some(p)) => {
+                    let g = GltfScene::load(&dir.join(p))?;
+                    gltf_lights.extend(g.lights.iter().map(|l| (l.clone(), i)));
+                    g.scene
+                }
+                _ => return Err(bad(format!("geometry {i}: give exactly one of `builtin`, `obj` or `gltf`"))),
             };
+            if let Some(m) = &g.material {
+                let m = m.material().map_err(|e| bad(format!("geometry {i}: {e}")))?;
+                part.materials = vec![m];
+                part.material_of.iter_mut().for_each(|k| *k = 0);
+            }
             for m in &mut part.materials {
                 m.emission *= g.emission_scale;
             }
@@ -375,7 +448,7 @@ impl SceneFile {
             }
             mesh.triangles = subdivide(&mesh.triangles, e.subdivide);
             mesh.material_of = vec![0; mesh.triangles.len()];
-            mesh.materials = vec![Material { albedo: Vec3::splat(0.5), emission }];
+            mesh.materials = vec![Material::lambertian(Vec3::splat(0.5), emission)];
             append(&mut scene, mesh, e.scale, e.translate);
         }
         for (i, d) in f.scatter_lights.iter().enumerate() {
@@ -395,7 +468,7 @@ impl SceneFile {
                 material_of: vec![0; triangles.len()],
                 normals: Vec::new(),
                 triangles,
-                materials: vec![Material { albedo: Vec3::splat(0.5), emission }],
+                materials: vec![Material::lambertian(Vec3::splat(0.5), emission)],
                 camera: scene.camera,
                 primary: scene.primary,
                 unsupported: Vec::new(),
@@ -404,7 +477,7 @@ impl SceneFile {
         }
         if let Some(c) = f.camera {
             scene.camera = Camera { position: v3(c.position), target: v3(c.look_at), up: v3(c.up), vfov_deg: c.fov };
-        } else if !f.geometry.iter().any(|g| g.builtin.is_some()) {
+        } else if !f.geometry.iter().any(|g| g.builtin.as_deref() == Some("cornell")) {
             // No camera: frame the bounds (built-in geometry keeps its own,
             // the published Cornell camera set above).
             let primary = scene.primary;
@@ -432,7 +505,7 @@ impl SceneFile {
                 }
             }
             Some(l) => return Err(bad(format!("[primary]: type \"{}\" is not \"spot\" or \"directional\"", l.kind))),
-            None if f.geometry.iter().any(|g| g.builtin.is_some()) => {}
+            None if f.geometry.iter().any(|g| g.builtin.as_deref() == Some("cornell")) => {}
             None => {
                 let camera = scene.camera;
                 scene.frame_default_view();
@@ -440,7 +513,11 @@ impl SceneFile {
             }
         }
         scene.validate().map_err(|e| bad(e.to_string()))?;
+        // glTF lights move and scale with their geometry.
         let mut lights = Vec::new();
+        for (l, i) in gltf_lights {
+            lights.push(l.placed(f.geometry[i].scale, v3(f.geometry[i].translate)).map_err(|e| bad(format!("geometry {i}: light {e}")))?);
+        }
         for (i, l) in f.light.iter().enumerate() {
             let w = format!("[[light]] {i}");
             let err = |e: slc_core::LightError| bad(format!("{w}: {e}"));

@@ -751,7 +751,7 @@ impl GpuVplFrame {
         for i in 0..n {
             if position[i][3] > 0.0 {
                 let p = Vec3::new(position[i][0], position[i][1], position[i][2]);
-                let m = self.materials.get(normal[i][3] as usize).copied().unwrap_or(Material { albedo: Vec3::ZERO, emission: Vec3::ZERO });
+                let m = self.materials.get(normal[i][3] as usize).copied().unwrap_or(Material::lambertian(Vec3::ZERO, Vec3::ZERO));
                 gb.position[i] = p;
                 gb.normal[i] = Vec3::new(normal[i][0], normal[i][1], normal[i][2]);
                 gb.albedo[i] = m.albedo;

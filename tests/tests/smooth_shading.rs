@@ -43,7 +43,7 @@ fn sphere(smooth: bool) -> Scene {
         material_of: vec![0; triangles.len()],
         triangles,
         normals,
-        materials: vec![Material { albedo: Vec3::splat(RHO), emission: Vec3::ZERO }],
+        materials: vec![Material::lambertian(Vec3::splat(RHO), Vec3::ZERO)],
         camera: Camera { position: Vec3::new(0.0, 0.0, 4.0), target: Vec3::ZERO, up: Vec3::Y, vfov_deg: 35.0 },
         primary: PrimaryLight::Spot { position: LIGHT, direction: -LIGHT.normalize(), intensity: Vec3::ONE, inner: 0.0, outer: 1.0 },
         unsupported: Vec::new(),
