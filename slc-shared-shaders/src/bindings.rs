@@ -80,10 +80,7 @@ const fn texture(binding: u32, name: &'static str, content: &'static str, writer
 /// The IES table at group 1, binding 0: bound where IES lights are compiled
 /// in, else only declared.
 fn ies_table(bound: bool) -> Binding {
-    Binding {
-        bound,
-        ..b(1, 0, "slc_table", Resource::Read("array<f32>"), "IES profiles, concatenated (a light's `ies_base` is its offset)", "host")
-    }
+    Binding { bound, ..b(1, 0, "slc_table", Resource::Read("array<f32>"), "IES profiles, concatenated (a light's `ies_base` is its offset)", "host") }
 }
 
 /// The G-buffer surface an engine pass reads for `surface`: a depth
@@ -100,9 +97,7 @@ fn surface(binding: u32, surface: SurfaceSource) -> Binding {
             "`Depth32Float` depth; `view.background` where no surface is",
             "engine (depth pre-pass)",
         ),
-        SurfaceSource::R32Depth => {
-            texture(binding, "depth_tex", "`R32Float` depth (x); `view.background` where no surface is", "engine (G-buffer)")
-        }
+        SurfaceSource::R32Depth => texture(binding, "depth_tex", "`R32Float` depth (x); `view.background` where no surface is", "engine (G-buffer)"),
     }
 }
 
@@ -191,7 +186,14 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
                 v.push(texture(5, "metal_rough_tex", "glTF metallic-roughness: roughness (g), metallic (b)", "engine (G-buffer)"));
             }
             if f.direct_output == DirectOutput::Split {
-                v.push(b(0, 6, "specular_tex", Resource::StorageTexture(f.output_format), "specular radiance (rgb); 0 where no surface is", "this kernel"));
+                v.push(b(
+                    0,
+                    6,
+                    "specular_tex",
+                    Resource::StorageTexture(f.output_format),
+                    "specular radiance (rgb); 0 where no surface is",
+                    "this kernel",
+                ));
             }
             v.push(ies_table(ies));
             v.push(b(1, 1, "lights", Resource::Read("array<GpuLight>"), "the lights", "host"));

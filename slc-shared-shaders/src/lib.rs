@@ -137,8 +137,8 @@
 
 pub mod bindings;
 pub mod engine;
-pub mod wesl;
 pub mod layout;
+pub mod wesl;
 
 use minijinja::{Environment, context};
 use naga::valid::{Capabilities, ModuleInfo, ValidationFlags, Validator};

@@ -12,14 +12,14 @@ fn feature_sets() -> Vec<Features> {
     let vpl = LightSet { vpl: true, ..LightSet::default() };
     let mut v = Vec::new();
     for lights in [LightSet::ALL, vpl, LightSet::parse("point,ies").unwrap(), LightSet::parse("triangle").unwrap()] {
-        for (selection, surface) in [
-            (Selection::Reservoir, SurfaceSource::Position),
-            (Selection::Weighted, SurfaceSource::Depth),
-            (Selection::All, SurfaceSource::R32Depth),
-        ] {
-            for (shadows, vpl_source, direct_output) in
-                [(true, VplSource::Rsm, DirectOutput::Irradiance), (false, VplSource::Buffer, DirectOutput::Split), (true, VplSource::Rsm, DirectOutput::Radiance)]
-            {
+        for (selection, surface) in
+            [(Selection::Reservoir, SurfaceSource::Position), (Selection::Weighted, SurfaceSource::Depth), (Selection::All, SurfaceSource::R32Depth)]
+        {
+            for (shadows, vpl_source, direct_output) in [
+                (true, VplSource::Rsm, DirectOutput::Irradiance),
+                (false, VplSource::Buffer, DirectOutput::Split),
+                (true, VplSource::Rsm, DirectOutput::Radiance),
+            ] {
                 v.push(Features { lights, selection, surface, shadows, vpl_source, direct_output, ..Features::default() });
             }
         }

@@ -270,7 +270,11 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
     let gpu = GpuContext::from_device(device.clone(), queue.clone());
     let mut pass = IndirectPass::new(
         &gpu,
-        &IndirectPassDesc { surface: SurfaceDesc::Position, output_format: Rgba32Float, ..IndirectPassDesc::new(W, H, VplSourceDesc::Rsm { size: RSM }) },
+        &IndirectPassDesc {
+            surface: SurfaceDesc::Position,
+            output_format: Rgba32Float,
+            ..IndirectPassDesc::new(W, H, VplSourceDesc::Rsm { size: RSM })
+        },
     )?;
     // The small lights with uniform picks: the CPU's twin (slc_cpu::direct)
     // draws the same numbers.

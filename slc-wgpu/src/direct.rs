@@ -67,7 +67,8 @@ impl GpuDirect {
         let upload = |label: &str, data: &[[f32; 4]]| crate::frame::upload_rgba32(&gpu, label, (w, h), data);
         let (position, normal) = (upload("slc points", &p4), upload("slc normals", &n4));
         let output = crate::frame::rgba32_target(&gpu, "slc direct", (w, h), wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
-        let (pv, nv, ov) = (position.create_view(&Default::default()), normal.create_view(&Default::default()), output.create_view(&Default::default()));
+        let (pv, nv, ov) =
+            (position.create_view(&Default::default()), normal.create_view(&Default::default()), output.create_view(&Default::default()));
         let inputs = DirectInputs::new(GBuffer { surface: Surface::Position(&pv), normal: &nv, eye: Vec3::ZERO }, &ov);
         let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc direct") });
         pass.record(&mut enc, &inputs, &DirectSettings { culling: Culling::Stochastic(*params), seed, frame })?;

@@ -34,7 +34,9 @@
 
 use crate::kernel::{KernelLayout, Timer, check_kernels, read_back, storage, zeroed};
 use crate::passes::indirect::Dispatch;
-use crate::passes::{Culling, GBuffer, IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, VplInput, VplSourceDesc};
+use crate::passes::{
+    Culling, GBuffer, IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, VplInput, VplSourceDesc,
+};
 use crate::{GpuContext, GpuError};
 use glam::{Mat4, Vec3, Vec4};
 use slc_core::frame::diffuse_radiance;
@@ -173,7 +175,14 @@ pub fn indirect_settings(settings: &VplSettings, min_distance: f32) -> Result<In
     if settings.fixed_xi.is_some() {
         return Err(GpuError::Setting("the GPU frame draws ξ per frame (fixed ξ is GpuVpl's)".into()));
     }
-    Ok(IndirectSettings { culling, seed: settings.seed, frame: settings.frame, denoise: settings.denoise, min_distance, near_radius: settings.near_radius })
+    Ok(IndirectSettings {
+        culling,
+        seed: settings.seed,
+        frame: settings.frame,
+        denoise: settings.denoise,
+        min_distance,
+        near_radius: settings.near_radius,
+    })
 }
 
 /// A rendered frame read back.
@@ -322,7 +331,10 @@ impl GpuVplFrame {
         gpu.require("max_buffer_size (vertices)", vertex_bytes, lim.max_buffer_size)?;
         let features = Features { lights: LightSet { vpl: true, ..LightSet::default() }, tile_size: TILE, interleave: PERIOD, ..Features::default() };
         let compose_features = Features { output_format: OutputFormat::Rgba32Float, ..features };
-        check_kernels(gpu, &[(Kernel::SceneRaster, &features, 0), (Kernel::PrimaryDirect, &features, 0), (Kernel::FrameCompose, &compose_features, 0)])?;
+        check_kernels(
+            gpu,
+            &[(Kernel::SceneRaster, &features, 0), (Kernel::PrimaryDirect, &features, 0), (Kernel::FrameCompose, &compose_features, 0)],
+        )?;
         let indirect_desc =
             IndirectPassDesc { surface: SurfaceDesc::Position, output_format: F32, ..IndirectPassDesc::new(w, h, VplSourceDesc::Rsm { size }) };
         // The indirect pass checks its own limits before it creates
@@ -374,7 +386,9 @@ impl GpuVplFrame {
 
         // Raster pipelines.
         let raster_layout = KernelLayout::with_visibility(gpu, Kernel::SceneRaster, &features, wgpu::ShaderStages::VERTEX_FRAGMENT)?;
-        let raster_group = |params: &wgpu::Buffer| raster_layout.group(gpu, 0, &[("params", params.as_entire_binding()), ("materials", materials.as_entire_binding())]);
+        let raster_group = |params: &wgpu::Buffer| {
+            raster_layout.group(gpu, 0, &[("params", params.as_entire_binding()), ("materials", materials.as_entire_binding())])
+        };
         let (camera_group, light_group, shadow_group) = (raster_group(&camera_params), raster_group(&light_params), raster_group(&shadow_params));
         let module = gpu.device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("scene_raster"),

@@ -102,7 +102,12 @@ impl KernelLayout {
 
     /// The compute pipeline of the kernel generated for `features` over
     /// these layouts; `group1` replaces group 1 (the path tracer's tables).
-    pub(crate) fn pipeline(&self, gpu: &GpuContext, features: &Features, group1: Option<&wgpu::BindGroupLayout>) -> Result<wgpu::ComputePipeline, GpuError> {
+    pub(crate) fn pipeline(
+        &self,
+        gpu: &GpuContext,
+        features: &Features,
+        group1: Option<&wgpu::BindGroupLayout>,
+    ) -> Result<wgpu::ComputePipeline, GpuError> {
         let mut layouts: Vec<&wgpu::BindGroupLayout> = self.groups.iter().collect();
         if let Some(g1) = group1 {
             if layouts.len() > 1 {
@@ -125,15 +130,17 @@ impl KernelLayout {
         let entries: Vec<wgpu::BindGroupEntry> = res
             .iter()
             .map(|(name, r)| {
-                let b = wanted
-                    .iter()
-                    .find(|b| b.name == *name)
-                    .unwrap_or_else(|| panic!("{} group {g} has no bound binding {name}", self.kernel.name()));
+                let b =
+                    wanted.iter().find(|b| b.name == *name).unwrap_or_else(|| panic!("{} group {g} has no bound binding {name}", self.kernel.name()));
                 wgpu::BindGroupEntry { binding: b.binding, resource: r.clone() }
             })
             .collect();
         assert_eq!(entries.len(), wanted.len(), "{} group {g}: {} of {} bindings given", self.kernel.name(), entries.len(), wanted.len());
-        gpu.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(self.kernel.name()), layout: &self.groups[g as usize], entries: &entries })
+        gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some(self.kernel.name()),
+            layout: &self.groups[g as usize],
+            entries: &entries,
+        })
     }
 }
 

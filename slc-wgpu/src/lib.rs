@@ -61,10 +61,10 @@ pub use passes::{Culling, GBuffer, Surface, SurfaceDesc};
 /// The lights the passes shade (slc-core's), re-exported so that an engine
 /// needs no other slc crate to build them.
 pub use slc_core::light::{IesLight, Light, PointLight, SpotLight, TriangleLight};
-/// A light set with its bounding-sphere hierarchy (slc-scene's).
-pub use slc_scene::lights::LightSet;
 /// SLC's error bound and exposure (slc-core's).
 pub use slc_core::range::{IntensityMeasure, RangeParams};
+/// A light set with its bounding-sphere hierarchy (slc-scene's).
+pub use slc_scene::lights::LightSet;
 
 use thiserror::Error;
 

@@ -171,7 +171,8 @@ impl GpuLightSet {
         let update = update_layout.pipeline(gpu, &features, Some(&table_layout))?;
         let refit = refit_layout.pipeline(gpu, &features, Some(&table_layout))?;
         let frame_params = UniformSlots::new::<FrameParams>(gpu, "frame params", 1);
-        let b = LightBuffers::new(gpu, lights, bounds, bsh, power, cones, &bvh, light_bvh, &update_layout, &refit_layout, &table_layout, &frame_params)?;
+        let b =
+            LightBuffers::new(gpu, lights, bounds, bsh, power, cones, &bvh, light_bvh, &update_layout, &refit_layout, &table_layout, &frame_params)?;
         gpu.take_errors()?;
         Ok(GpuLightSet { b, frame_params, update: (update, update_layout), refit: (refit, refit_layout), table_layout })
     }

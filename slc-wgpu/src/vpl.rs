@@ -106,11 +106,9 @@ impl GpuVpl {
         gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes, lim.max_compute_workgroup_storage_size as u64)?;
 
         let vpl_only = LightSet { vpl: true, ..LightSet::default() };
-        let checked = Features { lights: vpl_only, tile_size: TILE, interleave: PERIOD, max_tile_lights: list, workgroup_size: WG, ..Features::default() };
-        crate::kernel::check_kernels(
-            gpu,
-            &[Kernel::LightUpdate, Kernel::VplTiled, Kernel::VplDenoise, Kernel::VplNear].map(|k| (k, &checked, 0)),
-        )?;
+        let checked =
+            Features { lights: vpl_only, tile_size: TILE, interleave: PERIOD, max_tile_lights: list, workgroup_size: WG, ..Features::default() };
+        crate::kernel::check_kernels(gpu, &[Kernel::LightUpdate, Kernel::VplTiled, Kernel::VplDenoise, Kernel::VplNear].map(|k| (k, &checked, 0)))?;
 
         let pos: Vec<[f32; 4]> = (0..gb.position.len())
             .map(|i| {

@@ -136,11 +136,10 @@ fn records_share_a_submission() {
     pass.record(&mut enc, &DirectInputs::new(gb, &views[0]), &settings(0, 0.01)).unwrap();
     pass.record(&mut enc, &DirectInputs::new(gb, &views[1]), &settings(1, 0.002)).unwrap();
     gpu.queue.submit([enc.finish()]);
-    let together = [engine::submit_and_read(gpu, gpu.device.create_command_encoder(&Default::default()), &outs[0]), engine::submit_and_read(
-        gpu,
-        gpu.device.create_command_encoder(&Default::default()),
-        &outs[1],
-    )];
+    let together = [
+        engine::submit_and_read(gpu, gpu.device.create_command_encoder(&Default::default()), &outs[0]),
+        engine::submit_and_read(gpu, gpu.device.create_command_encoder(&Default::default()), &outs[1]),
+    ];
     for (k, (frame, eps)) in [(0, 0.01), (1, 0.002)].into_iter().enumerate() {
         let mut enc = gpu.device.create_command_encoder(&Default::default());
         pass.record(&mut enc, &DirectInputs::new(gb, &views[k]), &settings(frame, eps)).unwrap();
@@ -184,7 +183,8 @@ fn moved_lights_shade_as_a_new_pass() {
     let after = run(&mut pass);
     let fresh = run(&mut DirectPass::new(gpu, &LightSet::new(moved.clone()).unwrap(), &desc).unwrap());
     let close = |a: &[[f32; 4]], b: &[[f32; 4]]| {
-        let bad: Vec<_> = a.iter().zip(b).filter(|(p, q)| !(p[3] == q[3] && (0..3).all(|c| (p[c] - q[c]).abs() <= 1e-5 * q[c].abs().max(1e-6)))).collect();
+        let bad: Vec<_> =
+            a.iter().zip(b).filter(|(p, q)| !(p[3] == q[3] && (0..3).all(|c| (p[c] - q[c]).abs() <= 1e-5 * q[c].abs().max(1e-6)))).collect();
         if let Some(first) = bad.first() {
             eprintln!("{} pixels differ, e.g. {:?}", bad.len(), first);
         }
@@ -259,7 +259,10 @@ fn depth_input_matches_positions() {
     let mut by_depth = DirectPass::new(
         gpu,
         &set,
-        &DirectPassDesc { surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::R32Float, reversed: false }, ..position_desc(DirectSelection::All) },
+        &DirectPassDesc {
+            surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::R32Float, reversed: false },
+            ..position_desc(DirectSelection::All)
+        },
     )
     .unwrap();
     let mut by_position = DirectPass::new(gpu, &set, &position_desc(DirectSelection::All)).unwrap();
@@ -390,10 +393,14 @@ fn material_outputs_match_the_brdf() {
     assert!(shaded > 1000);
     assert!(worst <= 1e-4, "{worst:.3e}");
     // Missing material or specular target: typed errors.
-    let mut pass = DirectPass::new(gpu, &set, &DirectPassDesc { outputs: DirectOutputs::Split(dielectric), ..position_desc(DirectSelection::All) }).unwrap();
+    let mut pass =
+        DirectPass::new(gpu, &set, &DirectPassDesc { outputs: DirectOutputs::Split(dielectric), ..position_desc(DirectSelection::All) }).unwrap();
     let mut enc = gpu.device.create_command_encoder(&Default::default());
     assert!(matches!(pass.record(&mut enc, &DirectInputs::new(gb, &views[0]), &settings), Err(GpuError::Binding { .. })));
-    assert!(matches!(pass.record(&mut enc, &DirectInputs { material, ..DirectInputs::new(gb, &views[0]) }, &settings), Err(GpuError::Binding { .. })));
+    assert!(matches!(
+        pass.record(&mut enc, &DirectInputs { material, ..DirectInputs::new(gb, &views[0]) }, &settings),
+        Err(GpuError::Binding { .. })
+    ));
     gpu.take_errors().unwrap();
 }
 

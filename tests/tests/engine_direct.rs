@@ -98,7 +98,11 @@ struct V { @builtin(position) clip: vec4f, @location(0) n: vec3f }
 "#;
     let module = device.create_shader_module(wgpu::ShaderModuleDescriptor { label: None, source: wgpu::ShaderSource::Wgsl(SHADER.into()) });
     let verts = scene();
-    let vbuf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor { label: None, contents: bytemuck::cast_slice(&verts), usage: wgpu::BufferUsages::VERTEX });
+    let vbuf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: None,
+        contents: bytemuck::cast_slice(&verts),
+        usage: wgpu::BufferUsages::VERTEX,
+    });
     let ubuf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: None,
         contents: bytemuck::cast_slice(&vp.to_cols_array()),
@@ -199,7 +203,10 @@ fn read<T: bytemuck::Pod>(device: &wgpu::Device, queue: &wgpu::Queue, t: &wgpu::
     let mut enc = device.create_command_encoder(&Default::default());
     enc.copy_texture_to_buffer(
         wgpu::TexelCopyTextureInfo { aspect, ..t.as_image_copy() },
-        wgpu::TexelCopyBufferInfo { buffer: &staging, layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(row), rows_per_image: None } },
+        wgpu::TexelCopyBufferInfo {
+            buffer: &staging,
+            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(row), rows_per_image: None },
+        },
         t.size(),
     );
     queue.submit([enc.finish()]);
@@ -240,7 +247,18 @@ fn engine_program_matches_brute_force() {
     // the same function, the normal renormalised.
     let points: Vec<Option<(Vec3, Vec3)>> = (0..(W * H) as usize)
         .map(|i| {
-            let p = unproject_pixel(inv.x_axis, inv.y_axis, inv.z_axis, inv.w_axis, (i as u32 % W) as f32, (i as u32 / W) as f32, W as f32, H as f32, depths[i], 1.0);
+            let p = unproject_pixel(
+                inv.x_axis,
+                inv.y_axis,
+                inv.z_axis,
+                inv.w_axis,
+                (i as u32 % W) as f32,
+                (i as u32 / W) as f32,
+                W as f32,
+                H as f32,
+                depths[i],
+                1.0,
+            );
             let n = normals[i];
             (p.w > 0.0 && n.length_squared() > 0.0).then(|| (p.truncate(), n / n.length_squared().sqrt()))
         })
@@ -250,7 +268,10 @@ fn engine_program_matches_brute_force() {
     let layouts: Vec<Vec<Light>> = (0..LAYOUTS).map(lights).collect();
     let truth: Vec<Vec<DVec3>> = layouts.iter().map(|l| brute_force(&points, l)).collect();
 
-    let (dv, nv) = (depth.create_view(&wgpu::TextureViewDescriptor { aspect: wgpu::TextureAspect::DepthOnly, ..Default::default() }), normal.create_view(&Default::default()));
+    let (dv, nv) = (
+        depth.create_view(&wgpu::TextureViewDescriptor { aspect: wgpu::TextureAspect::DepthOnly, ..Default::default() }),
+        normal.create_view(&Default::default()),
+    );
     let output = device.create_texture(&wgpu::TextureDescriptor {
         label: Some("direct"),
         size: wgpu::Extent3d { width: W, height: H, depth_or_array_layers: 1 },
@@ -290,7 +311,10 @@ fn engine_program_matches_brute_force() {
     let mut uniform = DirectPass::new(&gpu, &set, &desc(DirectSelection::Uniform { k: 8 })).unwrap();
     let (ew, eu) = (rel_error(&frame_of(&mut weighted, 0)), rel_error(&frame_of(&mut uniform, 0)));
     let in_range = frame_of(&mut uniform, 0).iter().map(|p| p[3] as f64).sum::<f64>() / shaded as f64;
-    eprintln!("one frame, k = 8, eps = {EPS}: mean relative error weighted {ew:.4}, uniform {eu:.4} (ratio {:.3}); {in_range:.1} lights in range per pixel", ew / eu);
+    eprintln!(
+        "one frame, k = 8, eps = {EPS}: mean relative error weighted {ew:.4}, uniform {eu:.4} (ratio {:.3}); {in_range:.1} lights in range per pixel",
+        ew / eu
+    );
     assert!(ew <= 0.5 * eu, "weighted picks' error {ew:.4} is not at most half of uniform's {eu:.4}");
 
     // 256 frames, the lights moved every frame.

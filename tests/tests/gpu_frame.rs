@@ -133,8 +133,9 @@ fn gpu_vpls_match_cpu_vpls() {
 /// them.
 fn every_stage_is_timed() {
     let Some(gpu) = gpu() else { return };
-    let mut frame = GpuVplFrame::new(gpu, &Scene::cornell_box(), &FrameDesc { width: 64, height: 64, rsm_size: 16, shadow_size: 64, min_distance: None })
-        .unwrap();
+    let mut frame =
+        GpuVplFrame::new(gpu, &Scene::cornell_box(), &FrameDesc { width: 64, height: 64, rsm_size: 16, shadow_size: 64, min_distance: None })
+            .unwrap();
     let out = frame.render(&settings(VplMethod::Slc, true)).unwrap();
     let names: Vec<&str> = out.stages.iter().map(|s| s.name).collect();
     assert_eq!(
@@ -232,8 +233,9 @@ fn timestamp_path_times_every_stage() {
     if !gpu.timestamps {
         panic!("the test adapter ({}) has no TIMESTAMP_QUERY: the timestamp path cannot be tested", gpu.describe());
     }
-    let mut frame = GpuVplFrame::new(gpu, &Scene::cornell_box(), &FrameDesc { width: 32, height: 32, rsm_size: 16, shadow_size: 64, min_distance: None })
-        .unwrap();
+    let mut frame =
+        GpuVplFrame::new(gpu, &Scene::cornell_box(), &FrameDesc { width: 32, height: 32, rsm_size: 16, shadow_size: 64, min_distance: None })
+            .unwrap();
     assert!(frame.use_timestamps(true));
     let s = settings(VplMethod::Slc, true);
     let out = frame.render(&s).unwrap();

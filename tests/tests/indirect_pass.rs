@@ -22,7 +22,9 @@ use slc_tests::engine::{self, texture, upload};
 use slc_tests::gpu;
 use slc_wgpu::GpuContext;
 use slc_wgpu::GpuError;
-use slc_wgpu::passes::{GBuffer, GpuVplRecord, IndirectInputs, IndirectPass, IndirectPassDesc, Surface, SurfaceDesc, VplInput, VplSourceDesc, vpl_buffer};
+use slc_wgpu::passes::{
+    GBuffer, GpuVplRecord, IndirectInputs, IndirectPass, IndirectPassDesc, Surface, SurfaceDesc, VplInput, VplSourceDesc, vpl_buffer,
+};
 use slc_wgpu::vpl::GpuVpl;
 
 const W: u32 = 64;

@@ -88,10 +88,10 @@
 //! ```
 
 use super::{Culling, GBuffer, RECORDS_PER_SUBMISSION, RecordSlots, SurfaceDesc, ViewCache, check_size, check_view, output_format};
-use glam::Vec3;
 use crate::kernel::{KernelLayout, UniformSlots, check_kernels};
 use crate::lights::{GpuLightSet, TABLES, WG, check_light_limits, light_set, types_within};
 use crate::{GpuContext, GpuError};
+use glam::Vec3;
 use slc_core::light::Light;
 use slc_scene::lights::LightSet;
 use slc_shared_shaders::layout::{CullParams, ViewParams};
@@ -159,12 +159,8 @@ pub struct MaterialInputs<'a> {
 }
 
 /// The formats the material textures are read in.
-const MATERIAL_FORMATS: [wgpu::TextureFormat; 4] = [
-    wgpu::TextureFormat::Rgba8Unorm,
-    wgpu::TextureFormat::Rgba8UnormSrgb,
-    wgpu::TextureFormat::Rgba16Float,
-    wgpu::TextureFormat::Rgba32Float,
-];
+const MATERIAL_FORMATS: [wgpu::TextureFormat; 4] =
+    [wgpu::TextureFormat::Rgba8Unorm, wgpu::TextureFormat::Rgba8UnormSrgb, wgpu::TextureFormat::Rgba16Float, wgpu::TextureFormat::Rgba32Float];
 
 /// What a [`DirectPass`] is built for.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -319,19 +315,8 @@ impl DirectPass {
         let cull = UniformSlots::new::<CullParams>(gpu, "slc direct cull", slots.len());
         let view = UniformSlots::new::<ViewParams>(gpu, "slc direct view", slots.len());
         let (ranges_group, lights_group) = groups(gpu, &set, &ranges.1, &shade.1, &cull, selection == Selection::Weighted, desc.light_types.ies);
-        let s = DirectPass {
-            gpu: gpu.clone(),
-            desc: *desc,
-            set,
-            ranges,
-            ranges_group,
-            shade,
-            lights_group,
-            cull,
-            view,
-            slots,
-            cache: ViewCache::new(),
-        };
+        let s =
+            DirectPass { gpu: gpu.clone(), desc: *desc, set, ranges, ranges_group, shade, lights_group, cull, view, slots, cache: ViewCache::new() };
         gpu.take_errors()?;
         Ok(s)
     }
@@ -387,7 +372,8 @@ impl DirectPass {
 
     fn remake_groups(&mut self) {
         let weighted = matches!(self.desc.selection, DirectSelection::Weighted { .. });
-        (self.ranges_group, self.lights_group) = groups(&self.gpu, &self.set, &self.ranges.1, &self.shade.1, &self.cull, weighted, self.desc.light_types.ies);
+        (self.ranges_group, self.lights_group) =
+            groups(&self.gpu, &self.set, &self.ranges.1, &self.shade.1, &self.cull, weighted, self.desc.light_types.ies);
     }
 
     /// Checks `inputs` against the descriptor (formats, sizes, usages).
@@ -450,7 +436,8 @@ impl DirectPass {
         self.view.write_slot(&self.gpu, slot, &view);
         let g = inputs.gbuffer;
         let tex = wgpu::BindingResource::TextureView;
-        let mut views = vec![("view", None), (g.surface_name(), Some(g.surface_view())), ("normal_tex", Some(g.normal)), ("out_tex", Some(inputs.output))];
+        let mut views =
+            vec![("view", None), (g.surface_name(), Some(g.surface_view())), ("normal_tex", Some(g.normal)), ("out_tex", Some(inputs.output))];
         if self.desc.outputs != DirectOutputs::Irradiance
             && let Some(m) = inputs.material
         {

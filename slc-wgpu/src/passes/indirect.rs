@@ -216,7 +216,6 @@ impl Dispatch {
     pub(crate) fn new(stage: Stage, pipeline: &wgpu::ComputePipeline, group: wgpu::BindGroup, offset: Option<u32>, groups: [u32; 3]) -> Self {
         Dispatch { stage, pipeline: pipeline.clone(), group, offsets: offset.into_iter().collect(), groups }
     }
-
 }
 
 /// A kernel's layout and pipeline.
@@ -316,7 +315,15 @@ impl IndirectPass {
             vpl_source,
             ..Features::default()
         };
-        let kernels = [Kernel::GbufferImport, Kernel::VplPack, Kernel::LightUpdate, Kernel::VplTiled, Kernel::VplDenoise, Kernel::VplNear, Kernel::IrradianceExport];
+        let kernels = [
+            Kernel::GbufferImport,
+            Kernel::VplPack,
+            Kernel::LightUpdate,
+            Kernel::VplTiled,
+            Kernel::VplDenoise,
+            Kernel::VplNear,
+            Kernel::IrradianceExport,
+        ];
         check_kernels(gpu, &kernels.map(|k| (k, &base, 0)))?;
         let mut tiled = Vec::new();
         let tiled_layout = KernelLayout::new(gpu, Kernel::VplTiled, &base)?;
@@ -541,7 +548,8 @@ impl IndirectPass {
         let tex = wgpu::BindingResource::TextureView;
         let b = crate::kernel::whole;
         let g = inputs.gbuffer;
-        let (import, gb_position, gb_normal, irradiance, view_slots) = (&self.import.layout, &self.gb_position, &self.gb_normal_buf, &self.irradiance, &self.view);
+        let (import, gb_position, gb_normal, irradiance, view_slots) =
+            (&self.import.layout, &self.gb_position, &self.gb_normal_buf, &self.irradiance, &self.view);
         let import_group = self.import_cache.get((g.surface_view().clone(), g.normal.clone()), || {
             import.group(
                 gpu,
@@ -600,7 +608,13 @@ impl IndirectPass {
         if slc {
             out.push(d(Stage::LightUpdate, &self.update.pipeline, self.update_group.clone(), off(&self.frame_params), [count.div_ceil(WG), 1, 1]));
         }
-        out.push(d(Stage::Shading, tiled, self.tiled_group.clone(), off(&self.vpl_params), [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), PERIOD * PERIOD]));
+        out.push(d(
+            Stage::Shading,
+            tiled,
+            self.tiled_group.clone(),
+            off(&self.vpl_params),
+            [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), PERIOD * PERIOD],
+        ));
         if st.denoise {
             out.push(d(Stage::Denoise, &self.denoise.pipeline, self.denoise_group.clone(), off(&self.vpl_params), [gx, gy, 1]));
         }

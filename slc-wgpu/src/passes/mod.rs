@@ -273,7 +273,11 @@ pub(crate) fn check_size(gpu: &crate::GpuContext, what: &str, (w, h): (u32, u32)
     }
     let lim = &gpu.limits;
     gpu.require("max_texture_dimension_2d", w.max(h) as u64, lim.max_texture_dimension_2d as u64)?;
-    gpu.require("max_compute_workgroups_per_dimension", w.div_ceil(tile).max(h.div_ceil(tile)) as u64, lim.max_compute_workgroups_per_dimension as u64)
+    gpu.require(
+        "max_compute_workgroups_per_dimension",
+        w.div_ceil(tile).max(h.div_ceil(tile)) as u64,
+        lim.max_compute_workgroups_per_dimension as u64,
+    )
 }
 
 /// A few bind groups kept by the identity of what they bind (the engine's
