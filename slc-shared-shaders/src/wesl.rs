@@ -2,7 +2,7 @@
 //! 0.20 composes with `wesl` 0.6): one module per concern, the same split
 //! and the same text as the naga_oil modules
 //! ([`slc_core::wgsl::modules`]), each importing what it uses from the
-//! others (`import super::prelude::{…};`). A user's shader imports them by
+//! others (`import super::prelude::{…};`), every item `public`. A user's shader imports them by
 //! path, e.g. `import slc::range::{random_range2, slc_keep, slc_weight};`,
 //! once the modules are mounted under the package name `slc` (with `wesl`:
 //! a resolver that maps the module path `slc::{name}` to
@@ -32,10 +32,25 @@ pub fn modules() -> Vec<WeslModule> {
                 source.push_str(&format!("import super::{dep}::{{{}}};\n", items.join(", ")));
             }
             source.push('\n');
-            source.push_str(&plain_table_binding(&m.wgsl));
+            source.push_str(&public(&plain_table_binding(&m.wgsl)));
             WeslModule { name: m.name, source }
         })
         .collect()
+}
+
+/// `wgsl` with every top-level function, constant, struct and alias
+/// declared `public` (WESL keeps a package's declarations to itself
+/// otherwise).
+fn public(wgsl: &str) -> String {
+    let mut out = String::new();
+    for line in wgsl.lines() {
+        if ["fn ", "const ", "struct ", "alias "].iter().any(|k| line.starts_with(k)) {
+            out.push_str("public ");
+        }
+        out.push_str(line);
+        out.push('\n');
+    }
+    out
 }
 
 /// `wgsl` with naga_oil's `#ifdef SLC_TABLE_GROUP … #else … #endif` table
@@ -59,7 +74,13 @@ fn plain_table_binding(wgsl: &str) -> String {
 }
 
 #[cfg(test)]
+fn range_has_public(m: &[WeslModule]) -> bool {
+    m.iter().any(|m| m.name == "range" && m.source.contains("public fn random_range2("))
+}
+
+#[cfg(test)]
 mod tests {
+    use super::*;
     #[test]
     fn modules_are_plain_wesl() {
         let m = super::modules();
@@ -67,5 +88,6 @@ mod tests {
         assert!(ies.source.contains("@group(1) @binding(0) var<storage, read> slc_table: array<f32>;"), "{}", ies.source);
         assert!(m.iter().all(|m| !m.source.contains('#')), "no naga_oil directives");
         assert!(m.iter().filter(|m| m.source.contains("\nimport super::")).count() > 5, "the modules import each other");
+        assert!(range_has_public(&m), "items are public");
     }
 }
