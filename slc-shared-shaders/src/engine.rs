@@ -25,10 +25,10 @@ slc_core::shared! {
         let x: f32 = (px + 0.5) / width * 2.0 - 1.0;
         let y: f32 = 1.0 - (py + 0.5) / height * 2.0;
         let p: vec4f = c0 * x + c1 * y + c2 * depth + c3;
-        if !(abs(p.w) > 0.0) {
-            return vec4f(0.0, 0.0, 0.0, 0.0);
+        if abs(p.w) > 0.0 {
+            return vec4f(p.x / p.w, p.y / p.w, p.z / p.w, 1.0);
         }
-        return vec4f(p.x / p.w, p.y / p.w, p.z / p.w, 1.0);
+        return vec4f(0.0, 0.0, 0.0, 0.0);
     }
 
     /// A record's threshold range² of a light with RGB peak intensity

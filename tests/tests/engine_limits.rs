@@ -28,6 +28,9 @@ fn point_lights(n: usize) -> LightSet {
     LightSet::new(lights).unwrap()
 }
 
+/// A constructor under test.
+type Constructor<'a> = Box<dyn Fn() -> Result<(), GpuError> + 'a>;
+
 fn downlevel_constructors_are_typed_errors() {
     let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
     let adapter = pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None)).expect("an adapter");
@@ -46,7 +49,7 @@ fn downlevel_constructors_are_typed_errors() {
     let scene = Scene::cornell_box();
     let cpu = slc_cpu::vpl::VplContext::new(&scene, 16, 16, 8, None).unwrap();
     let pts = slc_scene::pt::PtScene::new(&scene, &[]).unwrap();
-    let constructors: Vec<(&str, Box<dyn Fn() -> Result<(), GpuError>>)> = vec![
+    let constructors: Vec<(&str, Constructor)> = vec![
         ("DirectPass", Box::new(|| DirectPass::new(&gpu, &set, &DirectPassDesc::new(64, 64)).map(|_| ()))),
         ("IndirectPass (RSM)", Box::new(|| IndirectPass::new(&gpu, &IndirectPassDesc::new(64, 64, VplSourceDesc::Rsm { size: 16 })).map(|_| ()))),
         (

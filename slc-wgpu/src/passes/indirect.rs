@@ -268,7 +268,7 @@ pub struct IndirectPass {
 /// What `vpl_pack`'s cached bind group binds: RSM views or a buffer.
 #[derive(PartialEq)]
 enum PackKey {
-    Rsm(wgpu::TextureView, wgpu::TextureView, wgpu::TextureView),
+    Rsm(Box<[wgpu::TextureView; 3]>),
     Buffer(wgpu::Buffer),
 }
 
@@ -566,7 +566,7 @@ impl IndirectPass {
         });
         let (pack, outs, pack_slots) = (&self.pack.layout, &self.pack_outputs, &self.pack_params);
         let key = match inputs.vpls {
-            VplInput::Rsm { position, normal, flux } => PackKey::Rsm(position.clone(), normal.clone(), flux.clone()),
+            VplInput::Rsm { position, normal, flux } => PackKey::Rsm(Box::new([position.clone(), normal.clone(), flux.clone()])),
             VplInput::Buffer(buf) => PackKey::Buffer(buf.clone()),
         };
         let pack_group = self.pack_cache.get(key, || {
