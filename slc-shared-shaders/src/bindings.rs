@@ -10,6 +10,11 @@
 //! The path tracer's kernels (`pt_extend`, `pt_connect`) and `vpl_near`
 //! still declare their bindings in their templates; their tables here are
 //! checked against those declarations the same way.
+//!
+//! The tables below are [`docs`]'s output, committed in
+//! `docs/bindings.md` (a test regenerates it; `SLC_BLESS=1` accepts a
+//! change).
+#![doc = include_str!("../docs/bindings.md")]
 
 use crate::{DirectOutput, Features, Kernel, OutputFormat, Selection, SurfaceSource, VplSource};
 
@@ -382,4 +387,31 @@ pub fn counts(bindings: &[Binding]) -> BindingCounts {
         c.bind_groups = c.bind_groups.max(b.group + 1);
     }
     c
+}
+
+/// Every kernel's binding table as Markdown, for the feature sets the
+/// backends use: the VPL kernels for VPLs, the direct pass's kernel with
+/// weighted picks of IES lights from a depth buffer with split outputs,
+/// the others with [`Features::default`].
+pub fn docs() -> String {
+    use crate::LightSet;
+    let vpl = Features { lights: LightSet { vpl: true, ..LightSet::default() }, ..Features::default() };
+    let direct = Features {
+        selection: Selection::Weighted,
+        surface: SurfaceSource::Depth,
+        direct_output: DirectOutput::Split,
+        shadows: false,
+        ..Features::default()
+    };
+    let mut s = String::new();
+    for &k in &Kernel::ALL {
+        let f = match k {
+            Kernel::DirectLight => direct,
+            k if k.is_vpl_frame() => vpl,
+            _ => Features::default(),
+        };
+        s.push_str(&format!("\n### `{}`\n\n", k.name()));
+        s.push_str(&markdown(&bindings(k, &f)));
+    }
+    s
 }

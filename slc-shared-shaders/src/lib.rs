@@ -12,108 +12,18 @@
 //!
 //! ## Kernels and bindings
 //!
-//! Every kernel also declares `@group(1) @binding(0) slc_table:
-//! array<f32>` (read): the IES profiles
+//! Each kernel's bindings are data ([`bindings::bindings`]): the templates'
+//! declarations, slc-wgpu's bind-group layouts and bind groups, and the
+//! tables in [`bindings`]'s docs all come from them, and a test checks them
+//! against every variant's naga module. Every kernel declares
+//! `@group(1) @binding(0) slc_table: array<f32>` (read), the IES profiles
 //! ([`slc_core::ies::IesProfile::table`], concatenated; a light's
-//! `ies_base` is its offset). The path-tracing kernels also declare
-//! `@group(1) @binding(1) power_table: array<vec4f>` (read): per light the
-//! alias table's `(probability, alias as bits, pmf, 0)` of the `power`
-//! baseline ([`Selection`]). Host = written by the host before dispatch.
-//!
-//! **`light_update`** (1-D, `workgroup_size`): per light, `r² = r_t²/(1−ξ)`
-//! with `ξ = xi_for(seed, frame, id)`.
-//!
-//! | group.binding | type | written by |
-//! |---|---|---|
-//! | 0.0 | `uniform FrameParams` | host |
-//! | 0.1 | `storage<read> ids: array<u32>` (ξ id of each light) | host |
-//! | 0.2 | `storage<read> rt2: array<f32>` | host |
-//! | 0.3 | `storage<read_write> r2: array<f32>` | this kernel |
-//!
-//! **`bsh_refit`** (1-D, one dispatch per tree level, deepest first, with a
-//! dynamic uniform offset selecting the level's `RefitParams`).
-//!
-//! | group.binding | type | written by |
-//! |---|---|---|
-//! | 0.0 | `uniform RefitParams` | host |
-//! | 0.1 | `storage<read> order: array<u32>` (node indices by level) | host |
-//! | 0.2 | `storage<read> extent: array<f32>` (per light `R`) | host |
-//! | 0.3 | `storage<read> r2: array<f32>` | `light_update` |
-//! | 0.4 | `storage<read_write> bsh_nodes: array<BshNode>` | host (build), this kernel (refit) |
-//!
-//! **`vpl_tiled`** (workgroup `tile × tile`, grid
-//! `(⌈sub_w/tile⌉, ⌈sub_h/tile⌉, period²)`): tiled culling and VPL shading
-//! of each interleaved sub-image.
-//!
-//! | group.binding | type | written by |
-//! |---|---|---|
-//! | 0.0 | `uniform VplParams` | host |
-//! | 0.1 | `storage<read> gb_position: array<vec4f>` (w > 0: surface) | host / G-buffer pass |
-//! | 0.2 | `storage<read> gb_normal: array<vec4f>` | host / G-buffer pass |
-//! | 0.3 | `storage<read> lights: array<GpuLight>` (VPLs by subset, flux × period²) | host |
-//! | 0.4 | `storage<read> rt2: array<f32>` | host |
-//! | 0.5 | `storage<read> r2: array<f32>` | `light_update` (SLC) or host (clamp: R²) |
-//! | 0.6 | `storage<read_write> irradiance: array<vec4f>` (rgb, kept) | this kernel |
-//!
-//! **`vpl_denoise`** (workgroup `tile × tile`, grid `(⌈w/tile⌉, ⌈h/tile⌉)`):
-//! cross-bilateral filter of the irradiance over the `period × period`
-//! window, weighted by `bilateral_weight` (normal, depth).
-//!
-//! | group.binding | type | written by |
-//! |---|---|---|
-//! | 0.0 | `uniform VplParams` | host |
-//! | 0.1 | `storage<read> gb_position: array<vec4f>` (w > 0: surface) | host / G-buffer pass |
-//! | 0.2 | `storage<read> gb_normal: array<vec4f>` (w: depth) | host / G-buffer pass |
-//! | 0.3 | `storage<read> irradiance: array<vec4f>` | `vpl_tiled` |
-//! | 0.4 | `storage<read_write> filtered: array<vec4f>` | this kernel |
-//!
-//! **`bsh_reservoir`** (1-D): direct light at shading points through the BSH
-//! and a k-slot reservoir, with shadow rays (without 0.7 and 0.8 when
-//! `Features::shadows` is off).
-//!
-//! | group.binding | type | written by |
-//! |---|---|---|
-//! | 0.0 | `uniform ShadeParams` | host |
-//! | 0.1 | `storage<read> points: array<vec4f>` (w > 0: valid) | host |
-//! | 0.2 | `storage<read> normals: array<vec4f>` | host |
-//! | 0.3 | `storage<read> lights: array<GpuLight>` | host |
-//! | 0.4 | `storage<read> rt2: array<f32>` | host |
-//! | 0.5 | `storage<read> r2: array<f32>` | `light_update` |
-//! | 0.6 | `storage<read> bsh_nodes: array<BshNode>` | `bsh_refit` |
-//! | 0.7 | `storage<read> geo_nodes: array<GpuGeoNode>` | host |
-//! | 0.8 | `storage<read> geo_tris: array<GpuTriangle>` | host |
-//! | 0.9 | `storage<read_write> irradiance: array<vec4f>` (rgb, in-range lights) | this kernel |
-//!
-//! **`pt_connect`** (1-D): explicit light connection of a path tracer with
-//! MIS; bindings 0.0, 0.2–0.7 as `bsh_reservoir` shifted by one, plus
-//! `0.1 vertices: array<GpuPathVertex>` (host or bounce kernel),
-//! `0.8 radiance: array<vec4f>` (accumulated, read_write) and
-//! `0.9 candidates: array<u32>` (in-range lights per vertex, for the MIS
-//! weight of implicit hits via `light_pdf`).
-//!
-//! **`pt_extend`** (1-D, one dispatch per bounce, `depth` in `PtParams`):
-//! per pixel, the camera ray (depth 0) or the ray sampled at the previous
-//! vertex; closest hit; emission weighted by MIS against the light strategy
-//! (whose pdf uses the previous vertex's `candidates`); the vertex for
-//! `pt_connect`; the next cosine-sampled ray and Russian roulette.
-//!
-//! | group.binding | type | written by |
-//! |---|---|---|
-//! | 0.0 | `uniform PtParams` | host |
-//! | 0.1 | `storage<read> lights: array<GpuLight>` | host |
-//! | 0.2 | `storage<read> rt2: array<f32>` | host |
-//! | 0.3 | `storage<read> bsh_nodes: array<BshNode>` | `bsh_refit` |
-//! | 0.4 | `storage<read> light_leaf: array<u32>` (BSH leaf of each light) | host |
-//! | 0.5 | `storage<read> geo_nodes: array<GpuGeoNode>` | host |
-//! | 0.6 | `storage<read> geo_tris: array<GpuTriangle>` (material, light) | host |
-//! | 0.7 | `storage<read> albedo: array<vec4f>` (per material) | host |
-//! | 0.8 | `storage<read> candidates: array<u32>` | `pt_connect` |
-//! | 0.9 | `storage<read_write> paths: array<GpuPathState>` | this kernel |
-//! | 0.10 | `storage<read_write> vertices: array<GpuPathVertex>` | this kernel |
-//! | 0.11 | `storage<read_write> radiance: array<vec4f>` (accumulated) | this kernel, `pt_connect` |
-//!
-//! A pass of the path tracer: `light_update`, `bsh_refit` (every level),
-//! then `pt_extend` and `pt_connect` once per depth (slc-wgpu's `pt`).
+//! `ies_base` is its offset), bound where IES lights are compiled in; the
+//! path-tracing kernels' group 1 also holds the power alias table, the
+//! importance cones and the light BVH ([`Selection`]). A pass of the path
+//! tracer: `light_update`, `bsh_refit` (every level), then `pt_extend` and
+//! `pt_connect` once per depth (slc-wgpu's `pt`); the engine's direct
+//! pass: `light_ranges`, `bsh_refit`, `direct_light`.
 //!
 //! ## Embedding one kernel in your own wgpu pass
 //!

@@ -86,3 +86,16 @@ fn declarations_are_the_tables() {
     }
     assert!(decl.contains("@group(0) @binding(1) var depth_tex: texture_depth_2d;"), "{decl}");
 }
+
+/// `docs/bindings.md` (the binding tables in the crate docs) is the
+/// tables' current form; `SLC_BLESS=1` rewrites it.
+#[test]
+fn binding_docs_are_current() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/bindings.md");
+    let want = bindings::docs();
+    if std::env::var_os("SLC_BLESS").is_some() {
+        std::fs::write(&path, &want).unwrap();
+    }
+    let have = std::fs::read_to_string(&path).unwrap_or_default();
+    assert!(have == want, "docs/bindings.md is stale: run SLC_BLESS=1 cargo test -p slc-shared-shaders --test bindings");
+}

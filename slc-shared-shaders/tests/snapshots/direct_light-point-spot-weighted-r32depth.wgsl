@@ -478,10 +478,10 @@ fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32
     let x_9 = ((((px + 0.5f) / width) * 2f) - 1f);
     let y_1 = (1f - (((py + 0.5f) / height) * 2f));
     let p_2 = ((((c0_ * x_9) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
-    if !((abs(p_2.w) > 0f)) {
-        return vec4<f32>(0f, 0f, 0f, 0f);
+    if (abs(p_2.w) > 0f) {
+        return vec4<f32>((p_2.x / p_2.w), (p_2.y / p_2.w), (p_2.z / p_2.w), 1f);
     }
-    return vec4<f32>((p_2.x / p_2.w), (p_2.y / p_2.w), (p_2.z / p_2.w), 1f);
+    return vec4<f32>(0f, 0f, 0f, 0f);
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {

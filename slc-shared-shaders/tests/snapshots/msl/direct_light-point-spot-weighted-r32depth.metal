@@ -641,10 +641,10 @@ metal::float4 unproject_pixel(
     float x_9 = (((px + 0.5) / width) * 2.0) - 1.0;
     float y_1 = 1.0 - (((py + 0.5) / height) * 2.0);
     metal::float4 p_2 = (((c0_ * x_9) + (c1_ * y_1)) + (c2_ * depth)) + c3_;
-    if (!((metal::abs(p_2.w) > 0.0))) {
-        return metal::float4(0.0, 0.0, 0.0, 0.0);
+    if (metal::abs(p_2.w) > 0.0) {
+        return metal::float4(p_2.x / p_2.w, p_2.y / p_2.w, p_2.z / p_2.w, 1.0);
     }
-    return metal::float4(p_2.x / p_2.w, p_2.y / p_2.w, p_2.z / p_2.w, 1.0);
+    return metal::float4(0.0, 0.0, 0.0, 0.0);
 }
 
 metal::float4 surface_at(
