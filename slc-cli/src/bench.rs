@@ -205,7 +205,7 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
 fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
     let r = a.scene.resolve()?;
     let gpu = gpu_context(Backend::Gpu)?.context("no GPU context")?;
-    let frame = a.scene.gpu_frame(&gpu, &r)?;
+    let mut frame = a.scene.gpu_frame(&gpu, &r)?;
     let configs = vpl_configs(&a, r.exposure);
     let bar = progress(configs.len())?;
     bar.set_message("reference (all VPLs at every pixel, on the GPU)");

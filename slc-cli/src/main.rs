@@ -269,7 +269,7 @@ fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
         return Err(anyhow!("--method reference (every VPL at every pixel) runs on the CPU; use --backend cpu"));
     }
     let gpu = gpu_context(Backend::Gpu)?.context("no GPU context")?;
-    let frame = a.scene.gpu_frame(&gpu, &r)?;
+    let mut frame = a.scene.gpu_frame(&gpu, &r)?;
     spinner.set_message(format!("frame on the GPU ({})", settings.method.name()));
     // The first frame pays for the driver's pipeline compilation: measure the second.
     frame.render(&settings)?;
@@ -470,8 +470,17 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
         let p = dir.join(format!("{}.wgsl", m.name));
         std::fs::write(&p, m.composable()).with_context(|| format!("cannot write {}", p.display()))?;
     }
+    // The same as a WESL package (`import slc::range::{...};`).
+    let wesl = slc_shared_shaders::wesl::modules();
+    let wesl_dir = out.join("wesl").join("slc");
+    std::fs::create_dir_all(&wesl_dir).with_context(|| format!("cannot create {}", wesl_dir.display()))?;
+    for m in &wesl {
+        let p = wesl_dir.join(format!("{}.wesl", m.name));
+        std::fs::write(&p, &m.source).with_context(|| format!("cannot write {}", p.display()))?;
+    }
     println!("wrote {} kernels to {} (lights: {})", jobs.len(), out.display(), lights.names().join(", "));
     println!("wrote {} naga_oil modules to {} (#import slc::<module>::<item>)", modules.len(), dir.display());
+    println!("wrote {} WESL modules to {} (import slc::<module>::{{<items>}};)", wesl.len(), wesl_dir.display());
     Ok(())
 }
 

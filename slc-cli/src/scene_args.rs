@@ -140,7 +140,7 @@ impl SceneArgs {
     }
 
     /// The whole-GPU VPL frame of the resolved scene.
-    pub fn gpu_frame<'g>(&self, gpu: &'g slc_wgpu::GpuContext, r: &Resolved) -> anyhow::Result<slc_wgpu::frame::GpuVplFrame<'g>> {
+    pub fn gpu_frame(&self, gpu: &slc_wgpu::GpuContext, r: &Resolved) -> anyhow::Result<slc_wgpu::frame::GpuVplFrame> {
         let desc = slc_wgpu::frame::FrameDesc {
             width: r.width,
             height: r.height,

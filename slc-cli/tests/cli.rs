@@ -278,7 +278,10 @@ fn shaders_command_exports_every_kernel() {
             assert!(std::fs::metadata(&p).map(|m| m.len() > 100).unwrap_or(false), "{} missing or empty", p.display());
         }
     }
-    assert!(text.contains("17 naga_oil modules"), "{text}");
+    // slc-core's modules (brdf included), as naga_oil and as WESL modules.
+    assert!(text.contains("17 naga_oil modules") && text.contains("17 WESL modules"), "{text}");
+    let wesl = std::fs::read_to_string(d.join("k/wesl/slc/range.wesl")).unwrap();
+    assert!(wesl.contains("public fn slc_keep("), "{wesl}");
     let range = std::fs::read_to_string(d.join("k/slc/range.wgsl")).unwrap();
     assert!(range.starts_with("#define_import_path slc::range") && range.contains("fn slc_keep("), "{range}");
     let pt = std::fs::read_to_string(d.join("k/pt_connect.wgsl")).unwrap();

@@ -1,7 +1,9 @@
 //! Linear RGB images: EXR and PNG output, RMSE.
 
+#[cfg(feature = "io")]
 use crate::OutputError;
 use glam::Vec3;
+#[cfg(feature = "io")]
 use std::path::Path;
 
 /// A linear HDR RGB image, row-major, y down.
@@ -47,6 +49,7 @@ impl Image {
         self.data.iter().all(|p| p.is_finite())
     }
 
+    #[cfg(feature = "io")]
     /// Writes a linear half-float RGB OpenEXR file.
     pub fn write_exr(&self, path: &Path) -> Result<(), OutputError> {
         let w = self.width as usize;
@@ -57,6 +60,7 @@ impl Image {
         .map_err(|e| OutputError(path.display().to_string(), e.to_string()))
     }
 
+    #[cfg(feature = "io")]
     /// Reads the first RGB(A) layer of an OpenEXR file.
     pub fn read_exr(path: &Path) -> Result<Image, OutputError> {
         let img = exr::prelude::read_first_rgba_layer_from_file(
@@ -71,6 +75,7 @@ impl Image {
         Ok(img.layer_data.channel_data.pixels)
     }
 
+    #[cfg(feature = "io")]
     /// Writes an 8-bit sRGB PNG preview: `exposure · L`, then Reinhard-style
     /// `x/(1+x)` per channel scaled so that 1.0 maps near white, then sRGB.
     pub fn write_png(&self, path: &Path, exposure: f32) -> Result<(), OutputError> {
@@ -79,6 +84,7 @@ impl Image {
     }
 }
 
+#[cfg(feature = "io")]
 /// Writes 8-bit RGB bytes (`width × height × 3`, row-major) as a PNG.
 pub fn write_rgb8_png(path: &Path, width: u32, height: u32, bytes: &[u8]) -> Result<(), OutputError> {
     let err = |e: String| OutputError(path.display().to_string(), e);

@@ -6,12 +6,12 @@
 //! | module | holds |
 //! |---|---|
 //! | [`scene`] | the scene model: triangles with optional vertex normals, materials, camera, primary light, validation |
-//! | [`cornell`], [`obj`], [`gltf`], [`scene_file`] | the built-in Cornell box, OBJ+MTL through tobj, glTF 2.0 (`.gltf`/`.glb`) through the gltf crate, TOML scene files |
-//! | [`shapes`] | built-in shapes of scene files (the unit sphere) |
+//! | [`cornell`], `obj`, `gltf`, `scene_file` | the built-in Cornell box; OBJ+MTL through tobj, glTF 2.0 (`.gltf`/`.glb`) through the gltf crate and TOML scene files (feature `io`, on by default) |
+//! | `shapes` | built-in shapes of scene files (the unit sphere; feature `io`) |
 //! | [`lights`] | a light set with its BSH and power alias table; emissive triangles → triangle lights |
 //! | [`light_bvh`] | the light BVH of the `lightbvh` baseline (built here, sampled by slc-core on both backends) |
 //! | [`alias`] | Walker's alias table (the `power` baseline) |
-//! | [`image`] | linear HDR images: EXR/PNG I/O, RMSE |
+//! | [`image`] | linear HDR images, RMSE; EXR/PNG I/O (feature `io`) |
 //! | [`vpl`] | application A's settings, G-buffer, VPLs, shaded irradiance and frame |
 //! | [`pt`] | application B's settings, method enum, prepared scene and accumulation |
 //! | [`backend`] | the contract both backends implement, one trait per application |
@@ -30,14 +30,18 @@
 pub mod alias;
 pub mod backend;
 pub mod cornell;
+#[cfg(feature = "io")]
 pub mod gltf;
 pub mod image;
 pub mod light_bvh;
 pub mod lights;
+#[cfg(feature = "io")]
 pub mod obj;
 pub mod pt;
 pub mod scene;
+#[cfg(feature = "io")]
 pub mod scene_file;
+#[cfg(feature = "io")]
 pub mod shapes;
 pub mod vpl;
 

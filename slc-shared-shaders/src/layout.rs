@@ -381,6 +381,69 @@ slc_core::shared! {
     /// [`MapParams::mode`] of a directional light's orthographic map.
     pub const MAP_ORTHOGRAPHIC: u32 = 2;
 
+    /// Uniforms of the engine passes' G-buffer readers (`gbuffer_import`,
+    /// `irradiance_export`, `direct_light`), one slot per record: the view
+    /// that made the depth buffer, the image and the record's random
+    /// streams, the dielectric's Fresnel terms, 112 bytes.
+    pub struct ViewParams {
+        /// Column 0 of the inverse view-projection (depth input).
+        pub c0: vec4f,
+        /// Column 1.
+        pub c1: vec4f,
+        /// Column 2.
+        pub c2: vec4f,
+        /// Column 3.
+        pub c3: vec4f,
+        /// Eye position.
+        pub eye: vec3f,
+        /// Image width.
+        pub width: u32,
+        /// Image height.
+        pub height: u32,
+        /// Depth where no surface is (the depth buffer's clear value).
+        pub background: f32,
+        /// Seed of the record's random streams.
+        pub seed: u32,
+        /// Frame number.
+        pub frame: u32,
+        /// The dielectric's Fresnel reflectance at normal incidence `F0_d`
+        /// (`direct_light`'s material outputs; glTF: 0.04).
+        pub f0_d: vec3f,
+        /// The dielectric's Fresnel reflectance at grazing incidence `F90_d`
+        /// (glTF: 1).
+        pub f90_d: f32,
+    }
+
+    /// Uniforms of `light_ranges`, one slot per record: the lights, the
+    /// record's ξ and its culling, 48 bytes.
+    pub struct CullParams {
+        /// Number of lights.
+        pub light_count: u32,
+        /// Seed of ξ.
+        pub seed: u32,
+        /// Frame number.
+        pub frame: u32,
+        /// 1: stochastic culling (`r_t²` from ε and `E`); 0: `r_t² =
+        /// unculled` and `r² = fixed_r2`.
+        pub slc: u32,
+        /// Intensity measure of `r_t²` (`IntensityMeasure::mode`).
+        pub mode: u32,
+        /// Exposure `E`.
+        pub exposure: f32,
+        /// Error bound `ε`.
+        pub error_bound: f32,
+        /// `r²` without stochastic culling: a clamp range `R²`, or +∞.
+        pub fixed_r2: f32,
+        /// `r_t²` without stochastic culling: +∞ (weight 1).
+        pub unculled: f32,
+        /// Padding.
+        pub pad0: u32,
+        /// Padding.
+        pub pad1: u32,
+        /// Padding.
+        pub pad2: u32,
+    }
+
     /// Uniforms of `bsh_reservoir` and `pt_connect`.
     pub struct ShadeParams {
         /// Shading points (or path vertices).

@@ -12,109 +12,18 @@
 //!
 //! ## Kernels and bindings
 //!
-//! Every kernel also declares `@group(1) @binding(0) slc_table:
-//! array<f32>` (read): the IES profiles
+//! Each kernel's bindings are data ([`bindings::bindings`]): the templates'
+//! declarations, slc-wgpu's bind-group layouts and bind groups, and the
+//! tables in [`bindings`]'s docs all come from them, and a test checks them
+//! against every variant's naga module. Every kernel declares
+//! `@group(1) @binding(0) slc_table: array<f32>` (read), the IES profiles
 //! ([`slc_core::ies::IesProfile::table`], concatenated; a light's
-//! `ies_base` is its offset). The path-tracing kernels also declare
-//! `@group(1) @binding(1) power_table: array<vec4f>` (read): per light the
-//! alias table's `(probability, alias as bits, pmf, 0)` of the `power`
-//! baseline ([`Selection`]). Host = written by the host before dispatch.
-//!
-//! **`light_update`** (1-D, `workgroup_size`): per light, `r² = r_t²/(1−ξ)`
-//! with `ξ = xi_for(seed, frame, id)`.
-//!
-//! | group.binding | type | written by |
-//! |---|---|---|
-//! | 0.0 | `uniform FrameParams` | host |
-//! | 0.1 | `storage<read> ids: array<u32>` (ξ id of each light) | host |
-//! | 0.2 | `storage<read> rt2: array<f32>` | host |
-//! | 0.3 | `storage<read_write> r2: array<f32>` | this kernel |
-//!
-//! **`bsh_refit`** (1-D, one dispatch per tree level, deepest first, with a
-//! dynamic uniform offset selecting the level's `RefitParams`).
-//!
-//! | group.binding | type | written by |
-//! |---|---|---|
-//! | 0.0 | `uniform RefitParams` | host |
-//! | 0.1 | `storage<read> order: array<u32>` (node indices by level) | host |
-//! | 0.2 | `storage<read> extent: array<f32>` (per light `R`) | host |
-//! | 0.3 | `storage<read> r2: array<f32>` | `light_update` |
-//! | 0.4 | `storage<read_write> bsh_nodes: array<BshNode>` | host (build), this kernel (refit) |
-//!
-//! **`vpl_tiled`** (workgroup `tile × tile`, grid
-//! `(⌈sub_w/tile⌉, ⌈sub_h/tile⌉, period²)`): tiled culling and VPL shading
-//! of each interleaved sub-image.
-//!
-//! | group.binding | type | written by |
-//! |---|---|---|
-//! | 0.0 | `uniform VplParams` | host |
-//! | 0.1 | `storage<read> gb_position: array<vec4f>` (w > 0: surface) | host / G-buffer pass |
-//! | 0.2 | `storage<read> gb_normal: array<vec4f>` | host / G-buffer pass |
-//! | 0.3 | `storage<read> lights: array<GpuLight>` (VPLs by subset, flux × period²) | host |
-//! | 0.4 | `storage<read> rt2: array<f32>` | host |
-//! | 0.5 | `storage<read> r2: array<f32>` | `light_update` (SLC) or host (clamp: R²) |
-//! | 0.6 | `storage<read_write> irradiance: array<vec4f>` (rgb, kept) | this kernel |
-//!
-//! **`vpl_denoise`** (workgroup `tile × tile`, grid `(⌈w/tile⌉, ⌈h/tile⌉)`):
-//! cross-bilateral filter of the irradiance over the `period × period`
-//! window, weighted by `bilateral_weight` (normal, depth).
-//!
-//! | group.binding | type | written by |
-//! |---|---|---|
-//! | 0.0 | `uniform VplParams` | host |
-//! | 0.1 | `storage<read> gb_position: array<vec4f>` (w > 0: surface) | host / G-buffer pass |
-//! | 0.2 | `storage<read> gb_normal: array<vec4f>` (w: depth) | host / G-buffer pass |
-//! | 0.3 | `storage<read> irradiance: array<vec4f>` | `vpl_tiled` |
-//! | 0.4 | `storage<read_write> filtered: array<vec4f>` | this kernel |
-//!
-//! **`bsh_reservoir`** (1-D): direct light at shading points through the BSH
-//! and a k-slot reservoir, with shadow rays (without 0.7 and 0.8 when
-//! `Features::shadows` is off).
-//!
-//! | group.binding | type | written by |
-//! |---|---|---|
-//! | 0.0 | `uniform ShadeParams` | host |
-//! | 0.1 | `storage<read> points: array<vec4f>` (w > 0: valid) | host |
-//! | 0.2 | `storage<read> normals: array<vec4f>` | host |
-//! | 0.3 | `storage<read> lights: array<GpuLight>` | host |
-//! | 0.4 | `storage<read> rt2: array<f32>` | host |
-//! | 0.5 | `storage<read> r2: array<f32>` | `light_update` |
-//! | 0.6 | `storage<read> bsh_nodes: array<BshNode>` | `bsh_refit` |
-//! | 0.7 | `storage<read> geo_nodes: array<GpuGeoNode>` | host |
-//! | 0.8 | `storage<read> geo_tris: array<GpuTriangle>` | host |
-//! | 0.9 | `storage<read_write> irradiance: array<vec4f>` (rgb, in-range lights) | this kernel |
-//!
-//! **`pt_connect`** (1-D): explicit light connection of a path tracer with
-//! MIS; bindings 0.0, 0.2–0.7 as `bsh_reservoir` shifted by one, plus
-//! `0.1 vertices: array<GpuPathVertex>` (host or bounce kernel),
-//! `0.8 materials: array<GpuMaterial>` (host), `0.9 radiance:
-//! array<vec4f>` (accumulated, read_write) and `0.10 candidates:
-//! array<u32>` (in-range lights per vertex, for the MIS weight of implicit
-//! hits via `light_pdf`).
-//!
-//! **`pt_extend`** (1-D, one dispatch per bounce, `depth` in `PtParams`):
-//! per pixel, the camera ray (depth 0) or the ray sampled at the previous
-//! vertex; closest hit; emission weighted by MIS against the light strategy
-//! (whose pdf uses the previous vertex's `candidates`); the vertex for
-//! `pt_connect`; the next BSDF-sampled ray and Russian roulette.
-//!
-//! | group.binding | type | written by |
-//! |---|---|---|
-//! | 0.0 | `uniform PtParams` | host |
-//! | 0.1 | `storage<read> lights: array<GpuLight>` | host |
-//! | 0.2 | `storage<read> rt2: array<f32>` | host |
-//! | 0.3 | `storage<read> bsh_nodes: array<BshNode>` | `bsh_refit` |
-//! | 0.4 | `storage<read> light_leaf: array<u32>` (BSH leaf of each light) | host |
-//! | 0.5 | `storage<read> geo_nodes: array<GpuGeoNode>` | host |
-//! | 0.6 | `storage<read> geo_tris: array<GpuTriangle>` (material, light) | host |
-//! | 0.7 | `storage<read> materials: array<GpuMaterial>` | host |
-//! | 0.8 | `storage<read> candidates: array<u32>` | `pt_connect` |
-//! | 0.9 | `storage<read_write> paths: array<GpuPathState>` | this kernel |
-//! | 0.10 | `storage<read_write> vertices: array<GpuPathVertex>` | this kernel |
-//! | 0.11 | `storage<read_write> radiance: array<vec4f>` (accumulated) | this kernel, `pt_connect` |
-//!
-//! A pass of the path tracer: `light_update`, `bsh_refit` (every level),
-//! then `pt_extend` and `pt_connect` once per depth (slc-wgpu's `pt`).
+//! `ies_base` is its offset), bound where IES lights are compiled in; the
+//! path-tracing kernels' group 1 also holds the power alias table, the
+//! importance cones and the light BVH ([`Selection`]). A pass of the path
+//! tracer: `light_update`, `bsh_refit` (every level), then `pt_extend` and
+//! `pt_connect` once per depth (slc-wgpu's `pt`); the engine's direct
+//! pass: `light_ranges`, `bsh_refit`, `direct_light`.
 //!
 //! ## Embedding one kernel in your own wgpu pass
 //!
@@ -136,7 +45,10 @@
 //! ```
 #![deny(missing_docs)]
 
+pub mod bindings;
+pub mod engine;
 pub mod layout;
+pub mod wesl;
 
 use minijinja::{Environment, context};
 use naga::valid::{Capabilities, ModuleInfo, ValidationFlags, Validator};
@@ -270,11 +182,18 @@ pub enum Kernel {
     PrimaryDirect,
     /// Direct plus indirect light into the frame's HDR target.
     FrameCompose,
+    /// The direct pass's per-record ranges: `r_t²` from each light's peak
+    /// and the record's culling, then `r²`.
+    LightRanges,
+    /// The direct pass's shading: an engine's G-buffer read in place, the
+    /// BSH traversed, the picks (weighted, uniform or every light in range)
+    /// connected, irradiance into the engine's storage texture.
+    DirectLight,
 }
 
 impl Kernel {
     /// All kernels.
-    pub const ALL: [Kernel; 14] = [
+    pub const ALL: [Kernel; 16] = [
         Kernel::LightUpdate,
         Kernel::BshRefit,
         Kernel::VplTiled,
@@ -289,6 +208,8 @@ impl Kernel {
         Kernel::SceneRaster,
         Kernel::PrimaryDirect,
         Kernel::FrameCompose,
+        Kernel::LightRanges,
+        Kernel::DirectLight,
     ];
 
     /// File stem / name.
@@ -308,6 +229,8 @@ impl Kernel {
             Kernel::SceneRaster => "scene_raster",
             Kernel::PrimaryDirect => "primary_direct",
             Kernel::FrameCompose => "frame_compose",
+            Kernel::LightRanges => "light_ranges",
+            Kernel::DirectLight => "direct_light",
         }
     }
 
@@ -415,6 +338,35 @@ impl OutputFormat {
     }
 }
 
+/// Where the engine passes' kernels (`gbuffer_import`, `direct_light`)
+/// read the G-buffer's surface.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SurfaceSource {
+    /// A world-position texture (`texture_2d<f32>`, `w > 0` where a
+    /// surface is).
+    Position,
+    /// A `Depth32Float` depth texture (`texture_depth_2d`) and the view's
+    /// inverse view-projection.
+    Depth,
+    /// An `R32Float` depth texture (`texture_2d<f32>`, depth in x) and the
+    /// view's inverse view-projection.
+    R32Depth,
+}
+
+/// What `direct_light` writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DirectOutput {
+    /// Irradiance (rgb) and the lights in range (a).
+    Irradiance,
+    /// Outgoing radiance toward the eye under the glTF metallic-roughness
+    /// BRDF (slc-core's `brdf`) of the G-buffer's material (rgb), and the
+    /// lights in range (a).
+    Radiance,
+    /// Irradiance (rgb, a: lights in range) and, in a second target, the
+    /// specular lobe's outgoing radiance (rgb).
+    Split,
+}
+
 /// What a kernel is specialised to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Features {
@@ -445,6 +397,11 @@ pub struct Features {
     /// neither (8 storage buffers per stage instead of 10, WebGPU's default
     /// limit).
     pub shadows: bool,
+    /// Where `gbuffer_import` and `direct_light` read the surface.
+    pub surface: SurfaceSource,
+    /// What `direct_light` writes (with a material input unless
+    /// `Irradiance`).
+    pub direct_output: DirectOutput,
 }
 
 impl Default for Features {
@@ -462,11 +419,13 @@ impl Default for Features {
             vpl_source: VplSource::Rsm,
             output_format: OutputFormat::Rgba16Float,
             shadows: true,
+            surface: SurfaceSource::Position,
+            direct_output: DirectOutput::Irradiance,
         }
     }
 }
 
-const TEMPLATES: [(&str, &str); 22] = [
+const TEMPLATES: [(&str, &str); 27] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("workgroup_box.wgsl", include_str!("templates/workgroup_box.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
@@ -488,6 +447,11 @@ const TEMPLATES: [(&str, &str); 22] = [
     ("scene_raster", include_str!("templates/scene_raster.wgsl")),
     ("primary_direct", include_str!("templates/primary_direct.wgsl")),
     ("frame_compose", include_str!("templates/frame_compose.wgsl")),
+    ("gbuffer_read.wgsl", include_str!("templates/gbuffer_read.wgsl")),
+    ("bsh_weighted.wgsl", include_str!("templates/bsh_weighted.wgsl")),
+    ("light_weight.wgsl", include_str!("templates/light_weight.wgsl")),
+    ("light_ranges", include_str!("templates/light_ranges.wgsl")),
+    ("direct_light", include_str!("templates/direct_light.wgsl")),
     ("layout", ""),
 ];
 
@@ -546,6 +510,17 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
             // light list of one block, two counters; at most 256 threads.
             if !(1..=16).contains(&f.tile_size) || !f.tile_size.is_power_of_two() || !(1..=16).contains(&f.interleave) {
                 return bad(format!("vpl_near: tile {} must be a power of two in 1..=16, period {} in 1..=16", f.tile_size, f.interleave));
+            }
+        }
+        Kernel::DirectLight => {
+            if f.lights.is_empty() {
+                return bad("direct_light needs at least one light type".into());
+            }
+            if !matches!(f.selection, Selection::Reservoir | Selection::Weighted | Selection::All) {
+                return bad(format!("direct_light picks lights by reservoir, weighted or all, not {:?}", f.selection));
+            }
+            if !(1..=16).contains(&f.tile_size) {
+                return bad(format!("direct_light: tile {} must be in 1..=16", f.tile_size));
             }
         }
         Kernel::BshReservoir | Kernel::PtConnect | Kernel::PtExtend if f.lights.is_empty() => {
@@ -619,6 +594,10 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         source => match features.vpl_source { VplSource::Rsm => "rsm", VplSource::Buffer => "buffer" },
         out_format => features.output_format.wgsl(),
         shadows => features.shadows,
+        pbr => match features.direct_output { DirectOutput::Irradiance => "none", DirectOutput::Radiance => "radiance", DirectOutput::Split => "split" },
+        surface => match features.surface { SurfaceSource::Position => "position", SurfaceSource::Depth => "depth", SurfaceSource::R32Depth => "r32" },
+        bindings => bindings::declarations(&bindings::bindings(kernel, features)),
+        engine => slc_core::wgsl::translate(engine::WGSL),
     };
     let source = env
         .get_template(kernel.name())
@@ -626,6 +605,21 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         .map_err(|e| ShaderError::Template { kernel: kernel.name(), message: e.to_string() })?;
     let (module, info) = validate(kernel.name(), &source)?;
     Ok(Generated { kernel, source, module, info })
+}
+
+impl Generated {
+    /// The kernel as naga's compaction leaves it (as naga's own snapshot
+    /// tests keep their outputs): only what the entry points use, so a
+    /// kernel's snapshot and translations hold that kernel, not the whole
+    /// shared library; validated again.
+    pub fn compacted(&self) -> Result<Generated, ShaderError> {
+        let mut module = self.module.clone();
+        naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+        let info = Validator::new(ValidationFlags::all(), Capabilities::default())
+            .validate(&module)
+            .map_err(|e| ShaderError::Naga { kernel: self.kernel.name(), message: format!("after compaction: {e}") })?;
+        Ok(Generated { kernel: self.kernel, source: self.source.clone(), module, info })
+    }
 }
 
 /// [`generate_module`]'s WGSL source.
@@ -698,6 +692,7 @@ pub fn all_kernels(features: &Features) -> Result<Vec<Generated>, ShaderError> {
     Kernel::ALL
         .iter()
         .filter(|&&k| !k.is_vpl_frame() || features.lights == LightSet { vpl: true, ..LightSet::default() })
+        .filter(|&&k| k != Kernel::DirectLight || matches!(features.selection, Selection::Reservoir | Selection::Weighted | Selection::All))
         .map(|&k| generate_module(k, features))
         .collect()
 }

@@ -38,6 +38,8 @@ fn rust_twins_match_naga_layout() {
         fields!(GpuVplRecord, position, pad0, normal, pad1, flux, pad2),
         fields!(PackParams, count, size, per_subset, mode, exposure, error_bound, scale, slc, fixed_r2, pad0, pad1, pad2),
         fields!(ImageParams, eye, width, height, pad0, pad1, pad2),
+        fields!(ViewParams, c0, c1, c2, c3, eye, width, height, background, seed, frame, f0_d, f90_d),
+        fields!(CullParams, light_count, seed, frame, slc, mode, exposure, error_bound, fixed_r2, unculled, pad0, pad1, pad2),
         fields!(GpuVertex, position, material, normal, pad0, geo_normal, pad1),
         fields!(GpuMaterial, albedo, metallic, emission, alpha, f0, f90),
         fields!(MapParams, c0, c1, c2, c3, light, origin, mode, axis, size, right, extent, up, texel),

@@ -4,7 +4,9 @@
 //! a change in the core's math, a template or naga's back ends shows up as
 //! a readable diff. The WGSL is kept as naga's WGSL writer prints the
 //! validated module, so the snapshots do not depend on how rustc's
-//! `stringify!` spaces the shared code's tokens.
+//! `stringify!` spaces the shared code's tokens, and compacted by naga
+//! first ([`Generated::compacted`]), so that a kernel's snapshot holds what
+//! it uses rather than the whole shared library.
 //! `SLC_BLESS=1 cargo test -p slc-shared-shaders --test snapshots` rewrites
 //! them after a deliberate change.
 
@@ -53,6 +55,33 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
         ("scene_raster", Kernel::SceneRaster, Features { lights: vpl, ..Features::default() }),
         ("primary_direct", Kernel::PrimaryDirect, Features { lights: vpl, ..Features::default() }),
         ("frame_compose-rgba16float", Kernel::FrameCompose, Features { lights: vpl, ..Features::default() }),
+        ("light_ranges", Kernel::LightRanges, Features::default()),
+        (
+            "direct_light-point-spot-weighted-r32depth",
+            Kernel::DirectLight,
+            Features {
+                lights: LightSet::parse("point,spot").unwrap(),
+                selection: Selection::Weighted,
+                // naga's GLSL writer cannot load from a depth texture.
+                surface: SurfaceSource::R32Depth,
+                ..Features::default()
+            },
+        ),
+        (
+            "direct_light-all-reservoir-position",
+            Kernel::DirectLight,
+            Features { lights: LightSet::parse("point,spot,ies,triangle").unwrap(), output_format: OutputFormat::Rgba32Float, ..Features::default() },
+        ),
+        (
+            "direct_light-triangle-weighted-split",
+            Kernel::DirectLight,
+            Features {
+                lights: LightSet::parse("triangle").unwrap(),
+                selection: Selection::Weighted,
+                direct_output: DirectOutput::Split,
+                ..Features::default()
+            },
+        ),
     ]
 }
 
@@ -96,7 +125,8 @@ fn generated_kernels_match_snapshots() {
     let (module, info) = validate("library", &lib).unwrap();
     compare(&dir.join("library.wgsl"), &normalised_wgsl(&module, &info), bless, &mut failures);
     for (name, kernel, features) in variants() {
-        let g = generate_module(kernel, &features).unwrap();
+        // Compacted, as naga's snapshot tests are: what the kernel uses.
+        let g = generate_module(kernel, &features).unwrap().compacted().unwrap();
         compare(&dir.join(format!("{name}.wgsl")), &normalised_wgsl(&g.module, &g.info), bless, &mut failures);
         let t = translate(&g).unwrap();
         compare(&dir.join("spv").join(format!("{name}.spvasm")), &spvasm(&t.spv), bless, &mut failures);

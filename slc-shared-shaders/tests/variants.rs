@@ -121,3 +121,24 @@ fn naga_errors_quote_the_source_line() {
     let ShaderError::Naga { message, .. } = e else { panic!("not a naga error") };
     assert!(message.contains("return vec3f(1.0)"), "{message}");
 }
+
+/// The direct pass's kernel for every light-type subset, selection, surface
+/// source and a few k.
+#[test]
+fn every_direct_light_variant_validates() {
+    let mut n = 0;
+    for bits in 1..32 {
+        for selection in [Selection::Reservoir, Selection::Weighted, Selection::All] {
+            for surface in [SurfaceSource::Position, SurfaceSource::Depth, SurfaceSource::R32Depth] {
+                for (k, direct_output) in [(1, DirectOutput::Irradiance), (8, DirectOutput::Radiance), (8, DirectOutput::Split)] {
+                    let f = Features { lights: LightSet::from_bits(bits), selection, surface, reservoir_k: k, direct_output, ..Features::default() };
+                    generate_module(Kernel::DirectLight, &f).unwrap_or_else(|e| panic!("{f:?}: {e}"));
+                    n += 1;
+                }
+            }
+        }
+    }
+    assert_eq!(n, 31 * 3 * 3 * 3);
+    let bad = Features { selection: Selection::Power, ..Features::default() };
+    assert!(matches!(generate_module(Kernel::DirectLight, &bad), Err(ShaderError::Unsupported(_))));
+}

@@ -100,9 +100,8 @@ struct State {
     config: wgpu::SurfaceConfiguration,
     /// The format the present pass and egui draw in (non-sRGB).
     view_format: wgpu::TextureFormat,
-    /// Leaked once per run: the frame borrows it for the program's life.
-    gpu: &'static GpuContext,
-    frame: GpuVplFrame<'static>,
+    gpu: GpuContext,
+    frame: GpuVplFrame,
     desc: FrameDesc,
     present: Present,
     egui_ctx: egui::Context,
@@ -129,7 +128,7 @@ impl State {
             slc_wgpu::GpuError::NoAdapter(why) => ViewError::NoAdapter(why),
             e => e.into(),
         })?;
-        let gpu: &'static GpuContext = Box::leak(Box::new(GpuContext::open(&adapter)?));
+        let gpu = GpuContext::open(&adapter)?;
         // The swap chain: 8-bit, drawn through a non-sRGB view (the present
         // pass encodes once).
         let caps = surface.get_capabilities(&adapter);
@@ -161,7 +160,7 @@ impl State {
             shadow_size: opts.shadow_size,
             min_distance: opts.min_distance,
         };
-        let frame = GpuVplFrame::new(gpu, &opts.scene, &desc)?;
+        let frame = GpuVplFrame::new(&gpu, &opts.scene, &desc)?;
         let mut present = Present::new(&gpu.device, view_format).map_err(ViewError::Setting)?;
         present.bind(&gpu.device, frame.output());
         let egui_ctx = egui::Context::default();
@@ -189,7 +188,7 @@ impl State {
             dragging: false,
             cursor: None,
         };
-        gpu.take_errors()?;
+        state.gpu.take_errors()?;
         Ok(state)
     }
 
@@ -217,7 +216,7 @@ impl State {
         let size = if opts.frames.is_some() { (self.desc.width, self.desc.height) } else { (self.config.width, self.config.height) };
         if self.controls.rsm_edge != self.desc.rsm_size || size != (self.desc.width, self.desc.height) {
             (self.desc.rsm_size, self.desc.width, self.desc.height) = (self.controls.rsm_edge, size.0, size.1);
-            self.frame = GpuVplFrame::new(self.gpu, &opts.scene, &self.desc)?;
+            self.frame = GpuVplFrame::new(&self.gpu, &opts.scene, &self.desc)?;
             self.present.bind(&self.gpu.device, self.frame.output());
             self.stage_times = None;
         }
@@ -232,7 +231,7 @@ impl State {
             self.frame_index += 1;
             return Ok(true);
         }
-        let gpu = self.gpu;
+        let gpu = self.gpu.clone();
         let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc view frame") });
         let timed = self.frame.record_timed(&mut encoder, &settings)?;
         let surface_texture = match self.surface.get_current_texture() {

@@ -16,16 +16,14 @@
 //! backend's ray-cast frame of the same scene.
 
 use glam::Vec3;
-use slc_core::light::{Light, PointLight};
-use slc_core::range::RangeParams;
 use slc_scene::image::Image;
-use slc_scene::lights::LightSet;
 use slc_scene::scene::{LightMap, PrimaryLight, Scene};
 use slc_scene::vpl::{VplMethod, VplSettings};
-use slc_wgpu::GpuContext;
 use slc_wgpu::passes::{
-    DirectFrame, DirectInputs, DirectPass, DirectPassDesc, IndirectFrame, IndirectInputs, IndirectPass, IndirectPassDesc, VplInput, VplSourceDesc,
+    DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, IndirectInputs, IndirectPass, IndirectPassDesc, VplInput,
+    VplSourceDesc,
 };
+use slc_wgpu::{GBuffer, GpuContext, Light, LightSet, PointLight, RangeParams, Surface, SurfaceDesc};
 use wgpu::util::DeviceExt;
 
 /// One vertex of the engine's mesh.
@@ -270,9 +268,23 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
 
     // slc's pass, on the engine's device.
     let gpu = GpuContext::from_device(device.clone(), queue.clone());
-    let pass =
-        IndirectPass::new(&gpu, &IndirectPassDesc { width: W, height: H, vpls: VplSourceDesc::Rsm { size: RSM }, output_format: Rgba32Float })?;
-    let direct_pass = DirectPass::new(&gpu, &small_lights(), &DirectPassDesc { width: W, height: H, output_format: Rgba32Float })?;
+    let mut pass = IndirectPass::new(
+        &gpu,
+        &IndirectPassDesc {
+            surface: SurfaceDesc::Position,
+            output_format: Rgba32Float,
+            ..IndirectPassDesc::new(W, H, VplSourceDesc::Rsm { size: RSM })
+        },
+    )?;
+    // The small lights with uniform picks: the CPU's twin (slc_cpu::direct)
+    // draws the same numbers.
+    let direct_desc = DirectPassDesc {
+        surface: SurfaceDesc::Position,
+        output_format: Rgba32Float,
+        selection: DirectSelection::Uniform { k: 8 },
+        ..DirectPassDesc::new(W, H)
+    };
+    let mut direct_pass = DirectPass::new(&gpu, &small_lights(), &direct_desc)?;
 
     let draw = |encoder: &mut wgpu::CommandEncoder,
                 pipeline: &wgpu::RenderPipeline,
@@ -325,17 +337,20 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
         draw(&mut encoder, &gbuffer_pipeline, &camera, &gb_views, &gb_depth);
         draw(&mut encoder, &rsm_pipeline, &light, &rsm_views, &rsm_depth);
+        let gbuffer = GBuffer { surface: Surface::Position(&gb_views[0]), normal: &gb_views[1], eye: cam.position };
         let inputs = IndirectInputs {
-            position: &gb_views[0],
-            normal: &gb_views[1],
+            gbuffer,
             vpls: VplInput::Rsm { position: &rsm_views[0], normal: &rsm_views[1], flux: &rsm_views[2] },
             output: &output_view,
         };
         let settings = VplSettings { frame: settings.frame + f, ..*settings };
-        pass.record(&gpu, &mut encoder, &inputs, &IndirectFrame { settings, eye: cam.position, min_distance })?;
-        let direct_inputs = DirectInputs { position: &gb_views[0], normal: &gb_views[1], output: &direct_view };
-        let culling = Some(RangeParams::new(settings.error_bound, settings.exposure)?);
-        direct_pass.record(&gpu, &mut encoder, &direct_inputs, &DirectFrame { culling, seed: settings.seed, frame: settings.frame })?;
+        pass.record(&mut encoder, &inputs, &slc_wgpu::frame::indirect_settings(&settings, min_distance)?)?;
+        let culling = slc_wgpu::Culling::Stochastic(RangeParams::new(settings.error_bound, settings.exposure)?);
+        direct_pass.record(
+            &mut encoder,
+            &DirectInputs::new(gbuffer, &direct_view),
+            &DirectSettings { culling, seed: settings.seed, frame: settings.frame },
+        )?;
         queue.submit([encoder.finish()]);
         // The engine's accumulation (here on the host, from the read-backs).
         for (sum, new) in [(&mut irradiance, read_rgba32(&device, &queue, &output)), (&mut direct, read_rgba32(&device, &queue, &direct_target))] {

@@ -4,7 +4,11 @@
 use crate::GpuError;
 use std::sync::{Arc, Mutex};
 
-/// A device, its queue, and what adapter it runs on.
+/// A device, its queue, and what adapter it runs on. Cloning is cheap
+/// (every field is a reference-counted handle or a small value) and shares
+/// the device, the queue and the error log: passes and frames keep a clone
+/// instead of borrowing the context.
+#[derive(Clone, Debug)]
 pub struct GpuContext {
     /// Device.
     pub device: wgpu::Device,
@@ -80,8 +84,8 @@ impl GpuContext {
 
     /// Fails with [`GpuError::Limit`] when `need` exceeds the device limit
     /// `have` called `name`.
-    pub fn require(&self, name: &'static str, need: u64, have: u64) -> Result<(), GpuError> {
-        if need > have { Err(GpuError::Limit { name, need, have }) } else { Ok(()) }
+    pub fn require(&self, name: impl Into<String>, need: u64, have: u64) -> Result<(), GpuError> {
+        if need > have { Err(GpuError::Limit { name: name.into(), need, have }) } else { Ok(()) }
     }
 
     /// Errors the device reported since the last call (validation, out of

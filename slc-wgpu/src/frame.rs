@@ -23,7 +23,7 @@
 //! use slc_wgpu::frame::{FrameDesc, GpuVplFrame};
 //!
 //! let gpu = GpuContext::new()?;
-//! let frame = GpuVplFrame::new(&gpu, &Scene::cornell_box(), &FrameDesc { width: 512, height: 512, rsm_size: 256, shadow_size: 2048, min_distance: None })?;
+//! let mut frame = GpuVplFrame::new(&gpu, &Scene::cornell_box(), &FrameDesc { width: 512, height: 512, rsm_size: 256, shadow_size: 2048, min_distance: None })?;
 //! let out = frame.render(&VplSettings::default())?;
 //! for s in &out.stages {
 //!     println!("{:>18} {:.3} ms", s.name, s.ms);
@@ -32,15 +32,18 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use crate::kernel::{B, Timer, layout, layout_for, pipeline, read_back, storage, zeroed};
-use crate::passes::{Dispatch, IndirectFrame, IndirectInputs, IndirectPass, IndirectPassDesc, VplInput, VplSourceDesc};
+use crate::kernel::{KernelLayout, Timer, check_kernels, read_back, storage, zeroed};
+use crate::passes::indirect::Dispatch;
+use crate::passes::{
+    Culling, GBuffer, IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, VplInput, VplSourceDesc,
+};
 use crate::{GpuContext, GpuError};
 use glam::{Mat4, Vec3, Vec4};
 use slc_core::frame::diffuse_radiance;
 use slc_scene::backend::Timing;
 use slc_scene::image::Image;
 use slc_scene::scene::{LightMap, Material, PrimaryLight, Scene};
-use slc_scene::vpl::{GBuffer, PERIOD, VplInputs, VplSettings, VplStats, Vpls};
+use slc_scene::vpl::{PERIOD, VplInputs, VplMethod, VplSettings, VplStats, Vpls};
 use slc_shared_shaders::layout::{
     GpuLight, GpuMaterial, GpuVertex, ImageParams, LIGHT_SPOT, MAP_CAMERA, MAP_ORTHOGRAPHIC, MAP_PERSPECTIVE, MapParams,
 };
@@ -72,15 +75,114 @@ pub struct FrameDesc {
     pub min_distance: Option<f32>,
 }
 
+/// The frame's stages, in the order a frame runs them (a frame runs a
+/// subset: `light update` with SLC only, `denoise` and `near field` when
+/// asked for).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Stage {
+    /// The camera's G-buffer (raster).
+    GBuffer,
+    /// The primary light's reflective shadow map (raster).
+    Rsm,
+    /// The primary light's shadow map (raster).
+    ShadowMap,
+    /// The G-buffer into the shading buffers.
+    GbufferImport,
+    /// VPLs from the RSM.
+    VplGeneration,
+    /// Random ranges from ξ.
+    LightUpdate,
+    /// Tiled SLC shading of the interleaved sub-images.
+    Shading,
+    /// The cross-bilateral filter.
+    Denoise,
+    /// The near field of the VPL split.
+    NearField,
+    /// The irradiance into the frame's texture.
+    IrradianceExport,
+    /// The primary light's shadowed direct term.
+    Direct,
+    /// Direct plus indirect light into the HDR target.
+    Composition,
+}
+
+impl Stage {
+    /// Every stage, in order: the timer holds a timestamp pair for each.
+    pub const ALL: [Stage; 12] = [
+        Stage::GBuffer,
+        Stage::Rsm,
+        Stage::ShadowMap,
+        Stage::GbufferImport,
+        Stage::VplGeneration,
+        Stage::LightUpdate,
+        Stage::Shading,
+        Stage::Denoise,
+        Stage::NearField,
+        Stage::IrradianceExport,
+        Stage::Direct,
+        Stage::Composition,
+    ];
+
+    /// The stage's name as reports print it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Stage::GBuffer => "G-buffer",
+            Stage::Rsm => "RSM",
+            Stage::ShadowMap => "shadow map",
+            Stage::GbufferImport => "G-buffer import",
+            Stage::VplGeneration => "VPL generation",
+            Stage::LightUpdate => "light update",
+            Stage::Shading => "shading",
+            Stage::Denoise => "denoise",
+            Stage::NearField => "near field",
+            Stage::IrradianceExport => "irradiance export",
+            Stage::Direct => "direct",
+            Stage::Composition => "composition",
+        }
+    }
+}
+
 /// One stage's time.
 #[derive(Clone, Debug, PartialEq)]
 pub struct StageTime {
-    /// Stage name: `G-buffer`, `RSM`, `shadow map`, `G-buffer import`, `VPL generation`,
-    /// `light update`, `shading`, `denoise`, `irradiance export`, `direct`,
-    /// `composition`.
+    /// The stage.
+    pub stage: Stage,
+    /// Its name ([`Stage::name`]).
     pub name: &'static str,
     /// Milliseconds.
     pub ms: f64,
+}
+
+impl StageTime {
+    fn new(stage: Stage, ms: f64) -> StageTime {
+        StageTime { stage, name: stage.name(), ms }
+    }
+}
+
+/// The indirect pass's settings for a frame's VPL settings: methods `slc`,
+/// `clamp` and `none` with per-frame ξ (the CPU's `tile` has no GPU
+/// counterpart; fixed ξ and the reference are [`crate::vpl::GpuVpl`]'s).
+pub fn indirect_settings(settings: &VplSettings, min_distance: f32) -> Result<IndirectSettings, GpuError> {
+    let params = settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
+    let culling = match settings.method {
+        VplMethod::Slc => Culling::Stochastic(params),
+        VplMethod::Clamp => Culling::Clamped { range: settings.range },
+        VplMethod::None => Culling::None,
+        VplMethod::Reference => {
+            return Err(GpuError::Setting("the GPU frame runs slc, clamp or none (the reference is GpuVpl's)".into()));
+        }
+    };
+    if settings.fixed_xi.is_some() {
+        return Err(GpuError::Setting("the GPU frame draws ξ per frame (fixed ξ is GpuVpl's)".into()));
+    }
+    Ok(IndirectSettings {
+        culling,
+        seed: settings.seed,
+        frame: settings.frame,
+        denoise: settings.denoise,
+        min_distance,
+        near_radius: settings.near_radius,
+    })
 }
 
 /// A rendered frame read back.
@@ -172,8 +274,8 @@ fn light_uniforms(primary: &PrimaryLight, bounds: (Vec3, Vec3), rsm_size: u32, s
 }
 
 /// The VPL frame of one scene at one size, wholly on the GPU.
-pub struct GpuVplFrame<'a> {
-    gpu: &'a GpuContext,
+pub struct GpuVplFrame {
+    gpu: GpuContext,
     desc: FrameDesc,
     eye: Vec3,
     min_distance: f32,
@@ -200,18 +302,18 @@ pub struct GpuVplFrame<'a> {
     compose_pipeline: wgpu::ComputePipeline,
     compose_group: wgpu::BindGroup,
     output: Target,
-    busy: std::sync::Mutex<Option<Timer>>,
-    /// The stages the last [`GpuVplFrame::record_timed`] timed, in order.
-    timed_stages: std::sync::Mutex<Vec<&'static str>>,
+    /// GPU timestamps around the stages, sized for every [`Stage`]; `None`
+    /// where the frame times by the host's clock.
+    timer: Option<Timer>,
+    /// The stages the last timestamped recording timed, in order.
+    timed_stages: Vec<Stage>,
 }
 
-/// Number of stages that can be timed in one frame.
-const MAX_STAGES: u32 = 11;
-
-impl<'a> GpuVplFrame<'a> {
-    /// Validates the scene and sizes as the CPU's frame does, uploads the
-    /// triangles and materials, and builds the pipelines and targets.
-    pub fn new(gpu: &'a GpuContext, scene: &Scene, desc: &FrameDesc) -> Result<Self, GpuError> {
+impl GpuVplFrame {
+    /// Validates the scene and sizes as the CPU's frame does, checks every
+    /// device limit, uploads the triangles and materials, and builds the
+    /// pipelines and targets.
+    pub fn new(gpu: &GpuContext, scene: &Scene, desc: &FrameDesc) -> Result<Self, GpuError> {
         let min_distance = slc_scene::vpl::check_frame(scene, desc.width, desc.height, desc.rsm_size, desc.min_distance)
             .map_err(|e| GpuError::Setting(e.to_string()))?;
         let size = desc.rsm_size;
@@ -227,6 +329,17 @@ impl<'a> GpuVplFrame<'a> {
         gpu.require("max_storage_buffers_per_shader_stage (fragment)", 1, lim.max_storage_buffers_per_shader_stage as u64)?;
         let vertex_bytes = scene.triangles.len() as u64 * 3 * std::mem::size_of::<GpuVertex>() as u64;
         gpu.require("max_buffer_size (vertices)", vertex_bytes, lim.max_buffer_size)?;
+        let features = Features { lights: LightSet { vpl: true, ..LightSet::default() }, tile_size: TILE, interleave: PERIOD, ..Features::default() };
+        let compose_features = Features { output_format: OutputFormat::Rgba32Float, ..features };
+        check_kernels(
+            gpu,
+            &[(Kernel::SceneRaster, &features, 0), (Kernel::PrimaryDirect, &features, 0), (Kernel::FrameCompose, &compose_features, 0)],
+        )?;
+        let indirect_desc =
+            IndirectPassDesc { surface: SurfaceDesc::Position, output_format: F32, ..IndirectPassDesc::new(w, h, VplSourceDesc::Rsm { size }) };
+        // The indirect pass checks its own limits before it creates
+        // anything; built first, so that no raster pipeline precedes them.
+        let indirect = IndirectPass::new(gpu, &indirect_desc)?;
 
         // Triangles as vertices: position, material, vertex normal, geometric normal.
         let mut verts = Vec::with_capacity(scene.triangles.len() * 3);
@@ -271,21 +384,18 @@ impl<'a> GpuVplFrame<'a> {
             uniform("slc frame image", bytemuck::bytes_of(&ImageParams { eye: cam.position, width: w, height: h, pad0: 0, pad1: 0, pad2: 0 }));
 
         // Raster pipelines.
-        let features = Features { lights: LightSet { vpl: true, ..LightSet::default() }, tile_size: TILE, interleave: PERIOD, ..Features::default() };
-        let raster_layout = layout_for(gpu, "scene_raster", &[(0, B::Uniform), (1, B::Read)], wgpu::ShaderStages::VERTEX_FRAGMENT);
-        let group = |label: &str, layout: &wgpu::BindGroupLayout, res: &[(u32, wgpu::BindingResource)]| crate::kernel::group(gpu, label, layout, res);
-        let camera_group =
-            group("scene_raster camera", &raster_layout, &[(0, camera_params.as_entire_binding()), (1, materials.as_entire_binding())]);
-        let light_group = group("scene_raster light", &raster_layout, &[(0, light_params.as_entire_binding()), (1, materials.as_entire_binding())]);
-        let shadow_group =
-            group("scene_raster shadow", &raster_layout, &[(0, shadow_params.as_entire_binding()), (1, materials.as_entire_binding())]);
+        let raster_layout = KernelLayout::with_visibility(gpu, Kernel::SceneRaster, &features, wgpu::ShaderStages::VERTEX_FRAGMENT)?;
+        let raster_group = |params: &wgpu::Buffer| {
+            raster_layout.group(gpu, 0, &[("params", params.as_entire_binding()), ("materials", materials.as_entire_binding())])
+        };
+        let (camera_group, light_group, shadow_group) = (raster_group(&camera_params), raster_group(&light_params), raster_group(&shadow_params));
         let module = gpu.device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("scene_raster"),
             source: wgpu::ShaderSource::Wgsl(generate(Kernel::SceneRaster, &features)?.into()),
         });
         let pipeline_layout = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("scene_raster"),
-            bind_group_layouts: &[Some(&raster_layout)],
+            bind_group_layouts: &[Some(raster_layout.group_layout(0))],
             immediate_size: 0,
         });
         // GpuVertex's offsets (its padding keeps the WGSL layout).
@@ -358,49 +468,40 @@ impl<'a> GpuVplFrame<'a> {
         let sampled_storage = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
         let irradiance = target(gpu, "slc frame irradiance", (w, h), F32, sampled_storage);
         let output = target(gpu, "slc frame output", (w, h), F32, sampled_storage);
-        let indirect = IndirectPass::new(gpu, &IndirectPassDesc { width: w, height: h, vpls: VplSourceDesc::Rsm { size }, output_format: F32 })?;
 
         // Direct light and composition: fixed resources, bound once.
-        let kernel = |k: Kernel, f: &Features, l: &wgpu::BindGroupLayout| -> Result<wgpu::ComputePipeline, GpuError> {
-            Ok(pipeline(gpu, k.name(), generate(k, f)?, &[l]))
-        };
         let direct = zeroed(gpu, "slc frame direct", w as u64 * h as u64 * 16, wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC);
-        let direct_layout =
-            layout(gpu, "primary_direct", &[(0, B::Uniform), (1, B::Uniform), (2, B::Texture), (3, B::Texture), (4, B::Texture), (5, B::Write)]);
-        let direct_pipeline = kernel(Kernel::PrimaryDirect, &features, &direct_layout)?;
-        let direct_group = group(
-            "primary_direct",
-            &direct_layout,
+        let direct_layout = KernelLayout::new(gpu, Kernel::PrimaryDirect, &features)?;
+        let direct_pipeline = direct_layout.pipeline(gpu, &features, None)?;
+        let direct_group = direct_layout.group(
+            gpu,
+            0,
             &[
-                (0, shadow_params.as_entire_binding()),
-                (1, image_params.as_entire_binding()),
-                (2, tex(&gb[0])),
-                (3, tex(&gb[1])),
-                (4, tex(&shadow_map[0])),
-                (5, direct.as_entire_binding()),
+                ("params", shadow_params.as_entire_binding()),
+                ("image", image_params.as_entire_binding()),
+                ("position_tex", tex(&gb[0])),
+                ("normal_tex", tex(&gb[1])),
+                ("shadow_map", tex(&shadow_map[0])),
+                ("direct", direct.as_entire_binding()),
             ],
         );
-        let compose_layout = layout(
+        let compose_layout = KernelLayout::new(gpu, Kernel::FrameCompose, &compose_features)?;
+        let compose_pipeline = compose_layout.pipeline(gpu, &compose_features, None)?;
+        let compose_group = compose_layout.group(
             gpu,
-            "frame_compose",
-            &[(0, B::Uniform), (1, B::Texture), (2, B::Texture), (3, B::Texture), (4, B::Read), (5, B::Read), (6, B::Storage(F32))],
-        );
-        let compose_pipeline = kernel(Kernel::FrameCompose, &Features { output_format: OutputFormat::Rgba32Float, ..features }, &compose_layout)?;
-        let compose_group = group(
-            "frame_compose",
-            &compose_layout,
+            0,
             &[
-                (0, image_params.as_entire_binding()),
-                (1, tex(&gb[0])),
-                (2, tex(&gb[1])),
-                (3, tex(&irradiance)),
-                (4, direct.as_entire_binding()),
-                (5, materials.as_entire_binding()),
-                (6, tex(&output)),
+                ("image", image_params.as_entire_binding()),
+                ("position_tex", tex(&gb[0])),
+                ("normal_tex", tex(&gb[1])),
+                ("indirect_tex", tex(&irradiance)),
+                ("direct", direct.as_entire_binding()),
+                ("materials", materials.as_entire_binding()),
+                ("out_tex", tex(&output)),
             ],
         );
         let s = GpuVplFrame {
-            gpu,
+            gpu: gpu.clone(),
             desc: *desc,
             eye: cam.position,
             min_distance,
@@ -430,8 +531,8 @@ impl<'a> GpuVplFrame<'a> {
             // A software adapter's timestamps do not bracket the work its
             // worker threads do (lavapipe reports microseconds for
             // 10⁸-evaluation dispatches): time it by the clock instead.
-            busy: std::sync::Mutex::new(if gpu.adapter.device_type == wgpu::DeviceType::Cpu { None } else { Timer::new(gpu, MAX_STAGES) }),
-            timed_stages: std::sync::Mutex::new(Vec::new()),
+            timer: if gpu.adapter.device_type == wgpu::DeviceType::Cpu { None } else { Timer::new(gpu, Stage::ALL.len() as u32) },
+            timed_stages: Vec::new(),
         };
         gpu.take_errors()?;
         Ok(s)
@@ -460,83 +561,92 @@ impl<'a> GpuVplFrame<'a> {
         Ok(())
     }
 
+    /// Whether stages are timed by GPU timestamps. A software adapter's
+    /// timestamps do not bracket its worker threads' work, so the frame
+    /// times it by the host's clock unless `on` asks for timestamps anyway
+    /// (their values then mean little; the test of the timestamp path runs
+    /// on lavapipe this way). Returns whether timestamps are now used:
+    /// never without the device's `TIMESTAMP_QUERY`.
+    pub fn use_timestamps(&mut self, on: bool) -> bool {
+        self.timer = if on { Timer::new(&self.gpu, Stage::ALL.len() as u32) } else { None };
+        self.timed_stages.clear();
+        self.timer.is_some()
+    }
+
     /// [`GpuVplFrame::record`] with a GPU timestamp around every stage
-    /// where the adapter has usable ones (not on software adapters); read
-    /// them with [`GpuVplFrame::stage_times`] once the encoder's commands
-    /// are submitted. Returns whether the stages are timed.
-    pub fn record_timed(&self, encoder: &mut wgpu::CommandEncoder, settings: &VplSettings) -> Result<bool, GpuError> {
-        let mut timer = self.busy.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
-        let stages = self.stages(settings)?;
+    /// where the adapter has usable ones (not on software adapters, unless
+    /// [`GpuVplFrame::use_timestamps`]); read them with
+    /// [`GpuVplFrame::stage_times`] once the encoder's commands are
+    /// submitted. Returns whether the stages are timed.
+    pub fn record_timed(&mut self, encoder: &mut wgpu::CommandEncoder, settings: &VplSettings) -> Result<bool, GpuError> {
+        let steps = self.steps(settings)?;
+        let mut timer = self.timer.take();
         match timer.as_mut() {
-            Some(t) => self.record_with_timestamps(encoder, &stages, t),
+            Some(t) => self.record_with_timestamps(encoder, &steps, t),
             None => {
-                for stage in &stages {
-                    self.record_stage(encoder, stage, None);
+                for step in &steps {
+                    self.record_step(encoder, step, None);
                 }
             }
         }
-        Ok(timer.is_some())
+        let timed = timer.is_some();
+        self.timer = timer;
+        Ok(timed)
     }
 
-    /// Records `stages` with a timestamp pair around each, resolves the
-    /// queries and remembers the stages' names for
-    /// [`GpuVplFrame::stage_times`].
-    fn record_with_timestamps(&self, encoder: &mut wgpu::CommandEncoder, stages: &[Stage], t: &mut Timer) {
+    /// Records `steps` with a timestamp pair around each, resolves the
+    /// queries and remembers the stages for [`GpuVplFrame::stage_times`].
+    fn record_with_timestamps(&mut self, encoder: &mut wgpu::CommandEncoder, steps: &[Step], t: &mut Timer) {
         t.reset();
-        for stage in stages {
-            self.record_stage(encoder, stage, Some(t));
+        for step in steps {
+            self.record_step(encoder, step, Some(t));
         }
         t.resolve(encoder);
-        if let Ok(mut names) = self.timed_stages.lock() {
-            *names = stages.iter().map(|s| s.name()).collect();
-        }
+        self.timed_stages = steps.iter().map(Step::stage).collect();
     }
 
-    /// Every stage's GPU time of the last frame recorded by
-    /// [`GpuVplFrame::record_timed`] (waits for it to finish); `None`
-    /// where the adapter has no usable timestamps or no frame was timed.
+    /// Every stage's GPU time of the last frame recorded with timestamps
+    /// (waits for it to finish), in order, each stage with its own
+    /// duration; `None` where the frame does not use timestamps or no frame
+    /// was timed yet.
     pub fn stage_times(&self) -> Result<Option<Vec<StageTime>>, GpuError> {
-        let poisoned = || GpuError::Device("a previous frame panicked".into());
-        let timer = self.busy.lock().map_err(|_| poisoned())?;
-        let names = self.timed_stages.lock().map_err(|_| poisoned())?;
-        let Some(t) = timer.as_ref().filter(|_| !names.is_empty()) else { return Ok(None) };
-        Ok(Some(names.iter().zip(t.durations_ms(self.gpu)?).map(|(&name, ms)| StageTime { name, ms }).collect()))
+        let Some(t) = self.timer.as_ref().filter(|_| !self.timed_stages.is_empty()) else { return Ok(None) };
+        let ms = t.durations_ms(&self.gpu)?;
+        if ms.len() != self.timed_stages.len() {
+            return Err(GpuError::Device(format!("{} timestamp pairs for {} stages", ms.len(), self.timed_stages.len())));
+        }
+        Ok(Some(self.timed_stages.iter().zip(ms).map(|(&stage, ms)| StageTime::new(stage, ms)).collect()))
     }
 
-    /// The frame's stages for `settings`, each recordable on its own.
-    fn stages(&self, settings: &VplSettings) -> Result<Vec<Stage<'_>>, GpuError> {
+    /// The frame's steps for `settings`, each recordable on its own.
+    fn steps(&mut self, settings: &VplSettings) -> Result<Vec<Step>, GpuError> {
+        let st = indirect_settings(settings, self.min_distance)?;
         let inputs = IndirectInputs {
-            position: &self.gb[0].view,
-            normal: &self.gb[1].view,
+            gbuffer: GBuffer { surface: Surface::Position(&self.gb[0].view), normal: &self.gb[1].view, eye: self.eye },
             vpls: VplInput::Rsm { position: &self.rsm[0].view, normal: &self.rsm[1].view, flux: &self.rsm[2].view },
             output: &self.irradiance.view,
         };
-        let frame = IndirectFrame { settings: *settings, eye: self.eye, min_distance: self.min_distance };
-        let indirect = self.indirect.dispatches(self.gpu, &inputs, &frame)?;
+        let indirect = self.indirect.dispatches(&inputs, &st)?;
         let (gx, gy) = (self.desc.width.div_ceil(TILE), self.desc.height.div_ceil(TILE));
-        let mut stages = vec![
-            Stage::Raster { name: "G-buffer", view: View::Camera },
-            Stage::Raster { name: "RSM", view: View::Rsm },
-            Stage::Raster { name: "shadow map", view: View::Shadow },
-        ];
-        stages.extend(indirect.into_iter().map(Stage::Compute));
-        stages.push(Stage::Compute(Dispatch::new("direct", &self.direct_pipeline, self.direct_group.clone(), [gx, gy, 1])));
-        stages.push(Stage::Compute(Dispatch::new("composition", &self.compose_pipeline, self.compose_group.clone(), [gx, gy, 1])));
-        Ok(stages)
+        let mut steps = vec![Step::Raster(Stage::GBuffer), Step::Raster(Stage::Rsm), Step::Raster(Stage::ShadowMap)];
+        steps.extend(indirect.into_iter().map(Step::Compute));
+        steps.push(Step::Compute(Dispatch::new(Stage::Direct, &self.direct_pipeline, self.direct_group.clone(), None, [gx, gy, 1])));
+        steps.push(Step::Compute(Dispatch::new(Stage::Composition, &self.compose_pipeline, self.compose_group.clone(), None, [gx, gy, 1])));
+        Ok(steps)
     }
 
-    fn record_stage(&self, encoder: &mut wgpu::CommandEncoder, stage: &Stage, timer: Option<&mut Timer>) {
-        match stage {
-            Stage::Compute(d) => {
+    fn record_step(&self, encoder: &mut wgpu::CommandEncoder, step: &Step, timer: Option<&mut Timer>) {
+        match step {
+            Step::Compute(d) => {
                 let timestamp_writes = timer.and_then(|t| t.next());
-                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(d.stage), timestamp_writes });
+                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(d.stage.name()), timestamp_writes });
                 d.record(&mut pass);
             }
-            Stage::Raster { name, view } => {
-                let (colors, depth, pipeline, group) = match view {
-                    View::Camera => (&self.gb[..2], &self.gb[2], &self.gbuffer_pipeline, &self.camera_group),
-                    View::Rsm => (&self.rsm[..3], &self.rsm[3], &self.rsm_pipeline, &self.light_group),
-                    View::Shadow => (&self.shadow_map[..1], &self.shadow_map[1], &self.shadow_pipeline, &self.shadow_group),
+            Step::Raster(stage) => {
+                let (colors, depth, pipeline, group) = match stage {
+                    Stage::GBuffer => (&self.gb[..2], &self.gb[2], &self.gbuffer_pipeline, &self.camera_group),
+                    Stage::Rsm => (&self.rsm[..3], &self.rsm[3], &self.rsm_pipeline, &self.light_group),
+                    _ => (&self.shadow_map[..1], &self.shadow_map[1], &self.shadow_pipeline, &self.shadow_group),
                 };
                 let attachments: Vec<Option<wgpu::RenderPassColorAttachment>> = colors
                     .iter()
@@ -551,7 +661,7 @@ impl<'a> GpuVplFrame<'a> {
                     .collect();
                 let timestamp_writes = timer.and_then(|t| t.next_render());
                 let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                    label: Some(name),
+                    label: Some(stage.name()),
                     color_attachments: &attachments,
                     depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                         view: &depth.view,
@@ -572,9 +682,9 @@ impl<'a> GpuVplFrame<'a> {
 
     /// Records the whole frame into `encoder` (render and compute passes;
     /// nothing is submitted or read back). Methods `slc`, `clamp`, `none`.
-    pub fn record(&self, encoder: &mut wgpu::CommandEncoder, settings: &VplSettings) -> Result<(), GpuError> {
-        for stage in &self.stages(settings)? {
-            self.record_stage(encoder, stage, None);
+    pub fn record(&mut self, encoder: &mut wgpu::CommandEncoder, settings: &VplSettings) -> Result<(), GpuError> {
+        for step in &self.steps(settings)? {
+            self.record_step(encoder, step, None);
         }
         Ok(())
     }
@@ -582,50 +692,49 @@ impl<'a> GpuVplFrame<'a> {
     /// Renders one frame in one command encoder, reads the image back and
     /// times every stage (GPU timestamps, else each stage submitted alone
     /// under the host clock).
-    pub fn render(&self, settings: &VplSettings) -> Result<FrameRender, GpuError> {
-        let gpu = self.gpu;
-        let mut timer = self.busy.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
-        let stages = self.stages(settings)?;
-        let mut times = Vec::with_capacity(stages.len());
+    pub fn render(&mut self, settings: &VplSettings) -> Result<FrameRender, GpuError> {
+        let steps = self.steps(settings)?;
+        let gpu = self.gpu.clone();
+        let mut times = Vec::with_capacity(steps.len());
+        let mut timer = self.timer.take();
         let timing = match timer.as_mut() {
             Some(t) => {
                 let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc frame") });
-                self.record_with_timestamps(&mut encoder, &stages, t);
+                self.record_with_timestamps(&mut encoder, &steps, t);
                 gpu.queue.submit([encoder.finish()]);
                 gpu.wait()?;
-                for (stage, ms) in stages.iter().zip(t.durations_ms(gpu)?) {
-                    times.push(StageTime { name: stage.name(), ms });
-                }
+                let ms = t.durations_ms(&gpu)?;
+                times.extend(steps.iter().zip(ms).map(|(step, ms)| StageTime::new(step.stage(), ms)));
                 Timing::GpuTimestamps
             }
             None => {
                 gpu.wait()?;
-                for stage in &stages {
+                for step in &steps {
                     let t0 = Instant::now();
-                    let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(stage.name()) });
-                    self.record_stage(&mut encoder, stage, None);
+                    let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(step.stage().name()) });
+                    self.record_step(&mut encoder, step, None);
                     gpu.queue.submit([encoder.finish()]);
                     gpu.wait()?;
-                    times.push(StageTime { name: stage.name(), ms: t0.elapsed().as_secs_f64() * 1e3 });
+                    times.push(StageTime::new(step.stage(), t0.elapsed().as_secs_f64() * 1e3));
                 }
                 Timing::Wall
             }
         };
-        drop(stages);
+        self.timer = timer;
         let (w, h) = (self.desc.width, self.desc.height);
-        let radiance = read_texture(gpu, &self.output.texture)?;
-        let irradiance = read_texture(gpu, &self.irradiance.texture)?;
-        let positions = read_texture(gpu, &self.gb[0].texture)?;
+        let radiance = read_texture(&gpu, &self.output.texture)?;
+        let irradiance = read_texture(&gpu, &self.irradiance.texture)?;
+        let positions = read_texture(&gpu, &self.gb[0].texture)?;
         let image = Image { width: w, height: h, data: radiance.iter().map(|p| Vec3::new(p[0], p[1], p[2])).collect() };
         let shaded = positions.iter().filter(|p| p[3] > 0.0).count().max(1) as f64;
-        let sum = |names: &[&str]| times.iter().filter(|t| names.contains(&t.name)).map(|t| t.ms).sum::<f64>();
+        let sum = |stages: &[Stage]| times.iter().filter(|t| stages.contains(&t.stage)).map(|t| t.ms).sum::<f64>();
         let stats = VplStats {
-            gbuffer_ms: sum(&["G-buffer", "G-buffer import"]),
+            gbuffer_ms: sum(&[Stage::GBuffer, Stage::GbufferImport]),
             // The CPU's "direct" includes its shadow rays.
-            direct_ms: sum(&["shadow map", "direct"]),
-            rsm_ms: sum(&["RSM", "VPL generation"]),
-            shading_ms: sum(&["light update", "shading", "near field"]),
-            denoise_ms: sum(&["denoise", "irradiance export", "composition"]),
+            direct_ms: sum(&[Stage::ShadowMap, Stage::Direct]),
+            rsm_ms: sum(&[Stage::Rsm, Stage::VplGeneration]),
+            shading_ms: sum(&[Stage::LightUpdate, Stage::Shading, Stage::NearField]),
+            denoise_ms: sum(&[Stage::Denoise, Stage::IrradianceExport, Stage::Composition]),
             total_ms: times.iter().map(|t| t.ms).sum(),
             vpls: (self.desc.rsm_size as usize).pow(2),
             lights_per_pixel: 0.0,
@@ -640,10 +749,10 @@ impl<'a> GpuVplFrame<'a> {
     /// or to compare with the CPU's ray-cast ones). Depth is the distance
     /// from the eye.
     pub fn read_inputs(&self) -> Result<VplInputs, GpuError> {
-        let gpu = self.gpu;
+        let gpu = &self.gpu;
         let (position, normal) = (read_texture(gpu, &self.gb[0].texture)?, read_texture(gpu, &self.gb[1].texture)?);
         let n = position.len();
-        let mut gb = GBuffer {
+        let mut gb = slc_scene::vpl::GBuffer {
             width: self.desc.width,
             height: self.desc.height,
             position: vec![Vec3::ZERO; n],
@@ -672,8 +781,8 @@ impl<'a> GpuVplFrame<'a> {
 
     /// The primary light's direct irradiance of the last frame, per pixel.
     pub fn read_direct(&self) -> Result<Vec<Vec3>, GpuError> {
-        let staging = zeroed(self.gpu, "slc direct readback", self.direct.size(), wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
-        let d: Vec<[f32; 4]> = read_back(self.gpu, &self.direct, &staging)?;
+        let staging = zeroed(&self.gpu, "slc direct readback", self.direct.size(), wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
+        let d: Vec<[f32; 4]> = read_back(&self.gpu, &self.direct, &staging)?;
         Ok(d.iter().map(|x| Vec3::new(x[0], x[1], x[2])).collect())
     }
 
@@ -694,36 +803,25 @@ impl<'a> GpuVplFrame<'a> {
     }
 }
 
-/// What a raster pass draws.
-enum View {
-    /// The camera's G-buffer.
-    Camera,
-    /// The light's RSM.
-    Rsm,
-    /// The light's shadow map.
-    Shadow,
+/// A step of the frame: a raster pass (G-buffer, RSM or shadow map) or a
+/// compute dispatch.
+enum Step {
+    Raster(Stage),
+    Compute(Dispatch),
 }
 
-/// A stage of the frame.
-enum Stage<'p> {
-    /// A raster pass.
-    Raster { name: &'static str, view: View },
-    /// A compute dispatch.
-    Compute(Dispatch<'p>),
-}
-
-impl Stage<'_> {
-    fn name(&self) -> &'static str {
+impl Step {
+    fn stage(&self) -> Stage {
         match self {
-            Stage::Raster { name, .. } => name,
-            Stage::Compute(d) => d.stage,
+            Step::Raster(s) => *s,
+            Step::Compute(d) => d.stage,
         }
     }
 }
 
 /// Reads an `Rgba32Float` or `Rgba16Float` texture back as `[f32; 4]` per
 /// texel (rows padded to the copy alignment on the GPU side).
-fn read_texture(gpu: &GpuContext, t: &wgpu::Texture) -> Result<Vec<[f32; 4]>, GpuError> {
+pub(crate) fn read_texture(gpu: &GpuContext, t: &wgpu::Texture) -> Result<Vec<[f32; 4]>, GpuError> {
     let (w, h) = (t.width(), t.height());
     let texel = match t.format() {
         F32 => 16,
@@ -758,4 +856,21 @@ fn read_texture(gpu: &GpuContext, t: &wgpu::Texture) -> Result<Vec<[f32; 4]>, Gp
         }
     }
     Ok(out)
+}
+
+/// An `Rgba32Float` texture of `size` with `usage`.
+pub(crate) fn rgba32_target(gpu: &GpuContext, label: &str, size: (u32, u32), usage: wgpu::TextureUsages) -> wgpu::Texture {
+    target(gpu, label, size, F32, usage).texture
+}
+
+/// An `Rgba32Float` texture (`TEXTURE_BINDING`) holding `texels`, row-major.
+pub(crate) fn upload_rgba32(gpu: &GpuContext, label: &str, size: (u32, u32), texels: &[[f32; 4]]) -> wgpu::Texture {
+    let t = rgba32_target(gpu, label, size, wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST);
+    gpu.queue.write_texture(
+        t.as_image_copy(),
+        bytemuck::cast_slice(texels),
+        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size.0 * 16), rows_per_image: None },
+        t.size(),
+    );
+    t
 }

@@ -57,6 +57,14 @@ pub mod pt;
 pub mod vpl;
 
 pub use context::{GpuContext, pick_adapter};
+pub use passes::{Culling, GBuffer, Surface, SurfaceDesc};
+/// The lights the passes shade (slc-core's), re-exported so that an engine
+/// needs no other slc crate to build them.
+pub use slc_core::light::{IesLight, Light, PointLight, SpotLight, TriangleLight};
+/// SLC's error bound and exposure (slc-core's).
+pub use slc_core::range::{IntensityMeasure, RangeParams};
+/// A light set with its bounding-sphere hierarchy (slc-scene's).
+pub use slc_scene::lights::LightSet;
 
 use thiserror::Error;
 
@@ -70,10 +78,10 @@ pub enum GpuError {
     #[error("GPU device error: {0}")]
     Device(String),
     /// A device limit is too small for the scene.
-    #[error("the scene needs {name} >= {need}, the device allows {have}; use the CPU backend or a smaller setting")]
+    #[error("needs {name} >= {need}, the device allows {have}")]
     Limit {
-        /// The limit.
-        name: &'static str,
+        /// The limit (and what needs it).
+        name: String,
         /// What the scene needs.
         need: u64,
         /// What the device allows.

@@ -1,10 +1,11 @@
 //! A light set on the GPU with its bounding-sphere hierarchy: the lights
 //! and IES table as the kernels read them, the per-pass random ranges
-//! (`light_update`) and the BSH refitted to them level by level
-//! (`bsh_refit`, deepest level first). Shared by the path tracer and the
-//! direct-light shader.
+//! (`light_update`, or the direct pass's `light_ranges`) and the BSH
+//! refitted to them level by level (`bsh_refit`, deepest level first, leaf
+//! centres read from the lights' bounds so that moved lights refit in
+//! place). Shared by the path tracer and the direct pass.
 
-use crate::kernel::{UniformSlots, bind_group, bind_layout, pipeline, storage, zeroed};
+use crate::kernel::{KernelLayout, UniformSlots, check_kernels, storage, zeroed};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use slc_core::bsh::{BSH_NONE, Bsh};
@@ -12,8 +13,8 @@ use slc_core::importance::LightCone;
 use slc_core::light::{Light, LightBound};
 use slc_core::range::RangeParams;
 use slc_scene::light_bvh::LightBvh;
-use slc_shared_shaders::layout::{FrameParams, GpuLightCone, RefitParams, pack_cones, pack_light_bvh, pack_lights};
-use slc_shared_shaders::{Features, Kernel, LightSet, generate};
+use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuLightCone, RefitParams, pack_cones, pack_light_bvh, pack_lights};
+use slc_shared_shaders::{Features, Kernel, LightSet};
 
 /// Workgroup size of the 1-D kernels.
 pub(crate) const WG: u32 = 64;
@@ -28,6 +29,12 @@ pub(crate) fn light_set(lights: &[Light]) -> LightSet {
         triangle: has(|l| matches!(l, Light::Triangle(_))),
         vpl: has(|l| matches!(l, Light::Vpl(_))),
     }
+}
+
+/// `true` when every type of `inner` is in `outer`.
+pub(crate) fn types_within(inner: LightSet, outer: LightSet) -> bool {
+    let (a, b) = (inner.names(), outer.names());
+    a.iter().all(|n| b.contains(n))
 }
 
 /// BSH node indices level by level, deepest level first, and each level's
@@ -57,38 +64,81 @@ fn refit_order(bsh: &Bsh, n_lights: usize) -> (Vec<u32>, Vec<(u32, u32)>, Vec<u3
     (order, levels, leaf)
 }
 
-/// Lights, ranges and BSH on the GPU.
-pub(crate) struct GpuLightSet {
+/// Each light's bound as `bsh_refit` reads it: centre (xyz), extent (w).
+fn pack_bounds(bounds: &[LightBound]) -> Vec<[f32; 4]> {
+    bounds.iter().map(|b| [b.center.x, b.center.y, b.center.z, b.extent]).collect()
+}
+
+/// Each light's RGB peak intensity as `light_ranges` reads it.
+fn pack_peaks(lights: &[Light]) -> Vec<[f32; 4]> {
+    lights.iter().map(|l| l.peak().extend(0.0).to_array()).collect()
+}
+
+/// The limits a light set of `n` lights and a light BVH of `bvh_bytes`
+/// bytes need.
+pub(crate) fn check_light_limits(gpu: &GpuContext, n: u64, bvh_bytes: u64) -> Result<(), GpuError> {
+    let lim = &gpu.limits;
+    let binding = lim.max_storage_buffer_binding_size.min(lim.max_buffer_size);
+    gpu.require("max_storage_buffer_binding_size (lights)", n * std::mem::size_of::<GpuLight>() as u64, binding)?;
+    gpu.require("max_storage_buffer_binding_size (light BVH)", bvh_bytes, binding)?;
+    gpu.require("max_compute_workgroups_per_dimension (lights)", n.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)
+}
+
+/// A light set's buffers and bind groups (rebuilt when the count changes).
+pub(crate) struct LightBuffers {
     pub(crate) n: u32,
-    peaks: Vec<Vec3>,
+    peaks_host: Vec<Vec3>,
     pub(crate) types: LightSet,
     pub(crate) lights: wgpu::Buffer,
+    /// The IES table (`slc_table`).
+    pub(crate) table_buf: wgpu::Buffer,
+    /// Each light's importance cone (`slc-weighted`).
+    pub(crate) cones: wgpu::Buffer,
+    /// Each light's RGB peak (`light_ranges`).
+    pub(crate) peaks: wgpu::Buffer,
     pub(crate) rt2: wgpu::Buffer,
     pub(crate) r2: wgpu::Buffer,
     pub(crate) bsh: wgpu::Buffer,
     /// BSH leaf of each light.
     pub(crate) leaf: wgpu::Buffer,
+    bounds: wgpu::Buffer,
     levels: Vec<(u32, u32)>,
-    frame_params: wgpu::Buffer,
     refit_params: UniformSlots,
-    update: (wgpu::ComputePipeline, wgpu::BindGroup),
-    refit: (wgpu::ComputePipeline, wgpu::BindGroup),
-    /// Group 1 of every kernel: the IES table, the power alias table, the
-    /// importance cones and the light BVH.
-    pub(crate) table_layout: wgpu::BindGroupLayout,
-    /// Group 1 with the IES table only (binding 0), for `bsh_reservoir`.
-    pub(crate) ies_layout: wgpu::BindGroupLayout,
-    /// Its bind group.
-    pub(crate) ies_table: wgpu::BindGroup,
+    power: wgpu::Buffer,
+    bvh: wgpu::Buffer,
+    update_group: wgpu::BindGroup,
+    refit_group: wgpu::BindGroup,
     pub(crate) table: wgpu::BindGroup,
 }
+
+/// Lights, ranges and BSH on the GPU, with the range-update and refit
+/// pipelines (kept when the set is rebuilt).
+pub(crate) struct GpuLightSet {
+    b: LightBuffers,
+    frame_params: UniformSlots,
+    update: (wgpu::ComputePipeline, KernelLayout),
+    refit: (wgpu::ComputePipeline, KernelLayout),
+    /// Group 1 of the path tracer's kernels: the IES table, the power alias
+    /// table, the importance cones and the light BVH.
+    pub(crate) table_layout: wgpu::BindGroupLayout,
+}
+
+impl std::ops::Deref for GpuLightSet {
+    type Target = LightBuffers;
+    fn deref(&self) -> &LightBuffers {
+        &self.b
+    }
+}
+
+/// Storage buffers in the path tracer's group 1 (`table_layout`).
+pub(crate) const TABLES: u32 = 4;
 
 impl GpuLightSet {
     /// Uploads `lights` (with their `bounds`, the `bsh` built over them and
     /// the path tracer's `power` alias table, importance `cones`
     /// ([`slc_scene::lights::LightSet::cones`]) and light BVH, any of which
-    /// may be empty or absent) after checking the buffer and dispatch
-    /// limits.
+    /// may be empty or absent) after checking the buffer, dispatch and
+    /// binding limits, and builds the range-update and refit pipelines.
     pub(crate) fn new(
         gpu: &GpuContext,
         lights: &[Light],
@@ -98,37 +148,13 @@ impl GpuLightSet {
         cones: &[LightCone],
         light_bvh: Option<&LightBvh>,
     ) -> Result<GpuLightSet, GpuError> {
-        let n = lights.len() as u64;
-        let lim = &gpu.limits;
-        gpu.require("max_storage_buffer_binding_size (lights)", n * 64, lim.max_storage_buffer_binding_size)?;
-        gpu.require("max_compute_workgroups_per_dimension (lights)", n.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
-        let (order, levels, leaf) = refit_order(bsh, lights.len());
-        let (gpu_lights, table) = pack_lights(lights);
-        let s = |label: &str, bytes: &[u8]| storage(gpu, label, bytes, wgpu::BufferUsages::empty());
-        let ids: Vec<u32> = (0..n as u32).collect();
-        let extent: Vec<f32> = bounds.iter().map(|b| b.extent).collect();
-        let lights_buf = s("lights", bytemuck::cast_slice(&gpu_lights));
-        let table_buf = s("slc_table", bytemuck::cast_slice(&table));
-        // A binding cannot be empty: a zeroed entry stands in.
-        let power_buf = s("power_table", bytemuck::cast_slice(if power.is_empty() { &[[0.0f32; 4]][..] } else { power }));
-        let cones = if cones.is_empty() { vec![GpuLightCone::default()] } else { pack_cones(cones, light_bvh.map_or(&[], |b| b.leaf_of_light())) };
-        let cones_buf = s("light_cones", bytemuck::cast_slice(&cones));
         let bvh = pack_light_bvh(light_bvh.map_or(&[], |b| b.nodes()));
-        gpu.require(
-            "max_storage_buffer_binding_size (light BVH)",
-            std::mem::size_of_val(bvh.as_slice()) as u64,
-            lim.max_storage_buffer_binding_size,
-        )?;
-        let bvh_buf = s("light_bvh", bytemuck::cast_slice(&bvh));
-        let ids_buf = s("ids", bytemuck::cast_slice(&ids));
-        let extent_buf = s("extent", bytemuck::cast_slice(&extent));
-        let rt2 = zeroed(gpu, "rt2", n * 4, wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST);
-        let r2 = zeroed(gpu, "r2", n * 4, wgpu::BufferUsages::STORAGE);
-        let order_buf = s("bsh order", bytemuck::cast_slice(&order));
-        let bsh_buf = s("bsh nodes", bytemuck::cast_slice(bsh.nodes()));
-        let leaf_buf = s("light leaf", bytemuck::cast_slice(&leaf));
-        let frame_params = zeroed(gpu, "frame params", 16, wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST);
-        let refit_params = UniformSlots::new::<RefitParams>(gpu, "refit params", levels.len() as u64);
+        check_light_limits(gpu, lights.len() as u64, std::mem::size_of_val(bvh.as_slice()) as u64)?;
+        let features = Features { workgroup_size: WG, ..Features::default() };
+        check_kernels(gpu, &[(Kernel::LightUpdate, &features, TABLES), (Kernel::BshRefit, &features, TABLES)])?;
+        let update_layout = KernelLayout::new(gpu, Kernel::LightUpdate, &features)?;
+        let refit_layout = KernelLayout::new(gpu, Kernel::BshRefit, &features)?;
+        // Group 1 of the path tracer: four read-only tables.
         let table_layout = {
             let e = |binding| wgpu::BindGroupLayoutEntry {
                 binding,
@@ -142,95 +168,183 @@ impl GpuLightSet {
             };
             gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some("scene tables"), entries: &[e(0), e(1), e(2), e(3)] })
         };
-        // The IES table alone, for kernels that do not read the power table
-        // (one storage binding fewer, within WebGPU's default 8 per stage).
-        let ies_layout = gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("ies table"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::COMPUTE,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Storage { read_only: true },
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-                count: None,
-            }],
-        });
-        let ies_table = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("ies table"),
-            layout: &ies_layout,
-            entries: &[wgpu::BindGroupEntry { binding: 0, resource: table_buf.as_entire_binding() }],
-        });
-        let table_bg = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("scene tables"),
-            layout: &table_layout,
-            entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: table_buf.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 1, resource: power_buf.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 2, resource: cones_buf.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 3, resource: bvh_buf.as_entire_binding() },
-            ],
-        });
-        let features = Features { workgroup_size: WG, ..Features::default() };
-        let update_layout = bind_layout(gpu, "light_update", 2, 1, false);
-        let update = (
-            pipeline(gpu, "light_update", generate(Kernel::LightUpdate, &features)?, &[&update_layout, &table_layout]),
-            bind_group(gpu, "light_update", &update_layout, &[&frame_params, &ids_buf, &rt2, &r2], None),
-        );
-        let refit_layout = bind_layout(gpu, "bsh_refit", 3, 1, true);
-        let refit = (
-            pipeline(gpu, "bsh_refit", generate(Kernel::BshRefit, &features)?, &[&refit_layout, &table_layout]),
-            bind_group(gpu, "bsh_refit", &refit_layout, &[&refit_params.buffer, &order_buf, &extent_buf, &r2, &bsh_buf], Some(refit_params.size)),
-        );
-        let values: Vec<RefitParams> = levels.iter().map(|&(first, count)| RefitParams { first, count, pad0: 0, pad1: 0 }).collect();
-        refit_params.write(gpu, &values);
-        Ok(GpuLightSet {
-            n: n as u32,
-            peaks: lights.iter().map(Light::peak).collect(),
-            types: light_set(lights),
-            lights: lights_buf,
-            rt2,
-            r2,
-            bsh: bsh_buf,
-            leaf: leaf_buf,
-            levels,
-            frame_params,
-            refit_params,
+        let update = update_layout.pipeline(gpu, &features, Some(&table_layout))?;
+        let refit = refit_layout.pipeline(gpu, &features, Some(&table_layout))?;
+        let frame_params = UniformSlots::new::<FrameParams>(gpu, "frame params", 1);
+        let b =
+            LightBuffers::new(gpu, lights, bounds, bsh, power, cones, &bvh, light_bvh, &update_layout, &refit_layout, &table_layout, &frame_params)?;
+        gpu.take_errors()?;
+        Ok(GpuLightSet { b, frame_params, update: (update, update_layout), refit: (refit, refit_layout), table_layout })
+    }
+
+    /// Replaces the set with `set` (any count; new buffers and bind groups,
+    /// the BSH as `set` built it, the pipelines kept).
+    pub(crate) fn replace(&mut self, gpu: &GpuContext, set: &slc_scene::lights::LightSet) -> Result<(), GpuError> {
+        let (update, refit) = (&self.update.1, &self.refit.1);
+        self.b = LightBuffers::new(
+            gpu,
+            set.lights(),
+            set.bounds(),
+            set.bsh(),
+            &[],
+            set.cones(),
+            &pack_light_bvh(&[]),
+            None,
             update,
             refit,
-            table_layout,
-            ies_layout,
-            ies_table,
-            table: table_bg,
-        })
+            &self.table_layout,
+            &self.frame_params,
+        )?;
+        Ok(())
+    }
+
+    /// Moves, turns or recolours the lights in place: `lights` has the
+    /// set's count (light `i` replaces light `i`), so the BSH keeps its
+    /// topology and the next refit moves its leaves to the new centres (a
+    /// valid hierarchy, looser the further the lights wandered from where
+    /// it was built). Writes the lights, their bounds, peaks, cones and
+    /// the IES table (a new table buffer only when its size changes).
+    /// Returns whether a buffer was replaced (bind groups then need
+    /// remaking).
+    pub(crate) fn update(&mut self, gpu: &GpuContext, lights: &[Light]) -> Result<bool, GpuError> {
+        let b = &mut self.b;
+        if lights.len() != b.n as usize {
+            return Err(GpuError::Setting(format!("update_lights: {} lights for a set of {} (a new count needs set_lights)", lights.len(), b.n)));
+        }
+        let (gpu_lights, table) = pack_lights(lights);
+        let bounds: Vec<LightBound> = lights.iter().map(Light::bound).collect();
+        let powers = slc_core::light::emitted_powers(lights);
+        let cones: Vec<LightCone> = lights.iter().zip(&powers).map(|(l, &p)| LightCone::of_light(l, p)).collect();
+        let q = &gpu.queue;
+        q.write_buffer(&b.lights, 0, bytemuck::cast_slice(&gpu_lights));
+        q.write_buffer(&b.bounds, 0, bytemuck::cast_slice(&pack_bounds(&bounds)));
+        q.write_buffer(&b.peaks, 0, bytemuck::cast_slice(&pack_peaks(lights)));
+        q.write_buffer(&b.cones, 0, bytemuck::cast_slice(&pack_cones(&cones, &[])));
+        b.peaks_host = lights.iter().map(Light::peak).collect();
+        let table_bytes: &[u8] = bytemuck::cast_slice(&table);
+        let replaced = table_bytes.len() as u64 != b.table_buf.size();
+        if replaced {
+            b.table_buf = storage(gpu, "slc_table", table_bytes, wgpu::BufferUsages::COPY_DST);
+            b.table = table_group(gpu, &self.table_layout, [&b.table_buf, &b.power, &b.cones, &b.bvh]);
+        } else {
+            q.write_buffer(&b.table_buf, 0, table_bytes);
+        }
+        b.types = light_set(lights);
+        Ok(replaced)
     }
 
     /// Threshold ranges `r_t²` for `params` (host, the core's function),
     /// or +∞ for every light (`None`: nothing culled, p = 1).
     pub(crate) fn set_threshold(&self, gpu: &GpuContext, params: Option<&RangeParams>) {
-        let rt2: Vec<f32> = self.peaks.iter().map(|&p| params.map_or(f32::INFINITY, |q| q.threshold_range2(p))).collect();
+        let rt2: Vec<f32> = self.b.peaks_host.iter().map(|&p| params.map_or(f32::INFINITY, |q| q.threshold_range2(p))).collect();
         gpu.queue.write_buffer(&self.rt2, 0, bytemuck::cast_slice(&rt2));
     }
 
     /// Seed and frame (pass) of the next [`GpuLightSet::encode`]d update
     /// (staged until the next submit).
     pub(crate) fn set_frame(&self, gpu: &GpuContext, seed: u32, frame: u32) {
-        let f = FrameParams { light_count: self.n, seed, frame, pad: 0 };
-        gpu.queue.write_buffer(&self.frame_params, 0, bytemuck::bytes_of(&f));
+        self.frame_params.write(gpu, &[FrameParams { light_count: self.b.n, seed, frame, pad: 0 }]);
     }
 
     /// Records the range update and the BSH refit into `cp` (and binds the
-    /// IES table as group 1).
+    /// scene tables as group 1).
     pub(crate) fn encode(&self, cp: &mut wgpu::ComputePass) {
         cp.set_bind_group(1, &self.table, &[]);
         cp.set_pipeline(&self.update.0);
-        cp.set_bind_group(0, &self.update.1, &[]);
+        cp.set_bind_group(0, &self.b.update_group, &[0]);
         cp.dispatch_workgroups(self.n.div_ceil(WG), 1, 1);
+        self.encode_refit(cp);
+    }
+
+    /// Records the BSH refit alone (every level, deepest first), for ranges
+    /// another kernel wrote.
+    pub(crate) fn encode_refit(&self, cp: &mut wgpu::ComputePass) {
+        cp.set_bind_group(1, &self.table, &[]);
         cp.set_pipeline(&self.refit.0);
-        for (i, &(_, count)) in self.levels.iter().enumerate() {
-            cp.set_bind_group(0, &self.refit.1, &[self.refit_params.offset(i)]);
+        for (i, &(_, count)) in self.b.levels.iter().enumerate() {
+            cp.set_bind_group(0, &self.b.refit_group, &[self.b.refit_params.offset(i)]);
             cp.dispatch_workgroups(count.div_ceil(WG), 1, 1);
         }
     }
+}
+
+impl LightBuffers {
+    /// Uploads a light set and binds it to the update, refit and table
+    /// layouts.
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        gpu: &GpuContext,
+        lights: &[Light],
+        bounds: &[LightBound],
+        bsh: &Bsh,
+        power: &[[f32; 4]],
+        cones: &[LightCone],
+        bvh: &[slc_shared_shaders::layout::GpuLightBvhNode],
+        light_bvh: Option<&LightBvh>,
+        update: &KernelLayout,
+        refit: &KernelLayout,
+        table_layout: &wgpu::BindGroupLayout,
+        frame_params: &UniformSlots,
+    ) -> Result<LightBuffers, GpuError> {
+        check_light_limits(gpu, lights.len() as u64, std::mem::size_of_val(bvh) as u64)?;
+        let n = lights.len() as u64;
+        let (order, levels, leaf) = refit_order(bsh, lights.len());
+        let (gpu_lights, table) = pack_lights(lights);
+        let dst = wgpu::BufferUsages::COPY_DST;
+        let s = |label: &str, bytes: &[u8]| storage(gpu, label, bytes, wgpu::BufferUsages::empty());
+        let ids: Vec<u32> = (0..n as u32).collect();
+        let cones = if cones.is_empty() { vec![GpuLightCone::default()] } else { pack_cones(cones, light_bvh.map_or(&[], |b| b.leaf_of_light())) };
+        let refit_params = UniformSlots::new::<RefitParams>(gpu, "refit params", levels.len() as u64);
+        let values: Vec<RefitParams> = levels.iter().map(|&(first, count)| RefitParams { first, count, pad0: 0, pad1: 0 }).collect();
+        refit_params.write(gpu, &values);
+        let rt2 = zeroed(gpu, "rt2", n * 4, wgpu::BufferUsages::STORAGE | dst);
+        let r2 = zeroed(gpu, "r2", n * 4, wgpu::BufferUsages::STORAGE);
+        let ids = s("ids", bytemuck::cast_slice(&ids));
+        let order = s("bsh order", bytemuck::cast_slice(&order));
+        let bounds = storage(gpu, "light bounds", bytemuck::cast_slice(&pack_bounds(bounds)), dst);
+        let bsh = s("bsh nodes", bytemuck::cast_slice(bsh.nodes()));
+        let res = crate::kernel::whole;
+        let update_group = update.group(gpu, 0, &[("params", frame_params.binding()), ("ids", res(&ids)), ("rt2", res(&rt2)), ("r2", res(&r2))]);
+        let refit_group = refit.group(
+            gpu,
+            0,
+            &[("params", refit_params.binding()), ("order", res(&order)), ("bounds", res(&bounds)), ("r2", res(&r2)), ("bsh_nodes", res(&bsh))],
+        );
+        // The path tracer's tables (a binding cannot be empty: a zeroed
+        // entry stands in for a missing one).
+        let power = s("power_table", bytemuck::cast_slice(if power.is_empty() { &[[0.0f32; 4]][..] } else { power }));
+        let bvh = s("light_bvh", bytemuck::cast_slice(bvh));
+        let table_buf = storage(gpu, "slc_table", bytemuck::cast_slice(&table), dst);
+        let cones = storage(gpu, "light_cones", bytemuck::cast_slice(&cones), dst);
+        let table = table_group(gpu, table_layout, [&table_buf, &power, &cones, &bvh]);
+        Ok(LightBuffers {
+            n: n as u32,
+            peaks_host: lights.iter().map(Light::peak).collect(),
+            types: light_set(lights),
+            lights: storage(gpu, "lights", bytemuck::cast_slice(&gpu_lights), dst),
+            table_buf,
+            cones,
+            peaks: storage(gpu, "light peaks", bytemuck::cast_slice(&pack_peaks(lights)), dst),
+            rt2,
+            r2,
+            bsh,
+            leaf: s("light leaf", bytemuck::cast_slice(&leaf)),
+            bounds,
+            levels,
+            refit_params,
+            power,
+            bvh,
+            update_group,
+            refit_group,
+            table,
+        })
+    }
+}
+
+/// The path tracer's group 1 over a set's tables: the IES table, the power
+/// alias table, the importance cones and the light BVH.
+fn table_group(gpu: &GpuContext, layout: &wgpu::BindGroupLayout, bufs: [&wgpu::Buffer; 4]) -> wgpu::BindGroup {
+    let entries: Vec<wgpu::BindGroupEntry> =
+        bufs.iter().enumerate().map(|(i, b)| wgpu::BindGroupEntry { binding: i as u32, resource: b.as_entire_binding() }).collect();
+    gpu.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some("scene tables"), layout, entries: &entries })
 }

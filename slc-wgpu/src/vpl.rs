@@ -33,8 +33,8 @@ struct Layout {
 }
 
 /// GPU buffers and pipelines for one [`VplInputs`] (one G-buffer and VPL set).
-pub struct GpuVpl<'a> {
-    gpu: &'a GpuContext,
+pub struct GpuVpl {
+    gpu: GpuContext,
     width: u32,
     height: u32,
     /// Pixels that see a surface.
@@ -72,18 +72,18 @@ pub struct GpuVpl<'a> {
     frame: std::sync::Mutex<()>,
 }
 
-impl<'a> GpuVpl<'a> {
+impl GpuVpl {
     /// Uploads the G-buffer and VPLs of `inputs` and builds the pipelines.
     /// Checks buffer, dispatch and workgroup-memory limits first. The tile
     /// light list holds up to [`TILE_LIST`] lights; larger subsets stream
     /// through it in chunks.
-    pub fn new(gpu: &'a GpuContext, inputs: &VplInputs) -> Result<Self, GpuError> {
+    pub fn new(gpu: &GpuContext, inputs: &VplInputs) -> Result<Self, GpuError> {
         Self::with_tile_list(gpu, inputs, TILE_LIST)
     }
 
     /// [`GpuVpl::new`] with a tile light list of `capacity` lights (at
     /// least 1): smaller lists take less workgroup memory and more chunks.
-    pub fn with_tile_list(gpu: &'a GpuContext, inputs: &VplInputs, capacity: u32) -> Result<Self, GpuError> {
+    pub fn with_tile_list(gpu: &GpuContext, inputs: &VplInputs, capacity: u32) -> Result<Self, GpuError> {
         let gb = &inputs.gbuffer;
         let v = &inputs.vpls;
         let (w, h) = (gb.width, gb.height);
@@ -104,6 +104,11 @@ impl<'a> GpuVpl<'a> {
         let list = per_subset.min(capacity).max(1);
         let wg_bytes = slc_shared_shaders::vpl_tiled_workgroup_bytes(TILE, list);
         gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes, lim.max_compute_workgroup_storage_size as u64)?;
+
+        let vpl_only = LightSet { vpl: true, ..LightSet::default() };
+        let checked =
+            Features { lights: vpl_only, tile_size: TILE, interleave: PERIOD, max_tile_lights: list, workgroup_size: WG, ..Features::default() };
+        crate::kernel::check_kernels(gpu, &[Kernel::LightUpdate, Kernel::VplTiled, Kernel::VplDenoise, Kernel::VplNear].map(|k| (k, &checked, 0)))?;
 
         let pos: Vec<[f32; 4]> = (0..gb.position.len())
             .map(|i| {
@@ -153,7 +158,6 @@ impl<'a> GpuVpl<'a> {
         let denoise = pipeline(gpu, "vpl_denoise", generate(Kernel::VplDenoise, &df)?, &[&denoise_layout]);
         let near_layout = bind_layout(gpu, "vpl_near", 5, 1, false);
         let near = pipeline(gpu, "vpl_near", generate(Kernel::VplNear, &df)?, &[&near_layout]);
-        let vpl_only = LightSet { vpl: true, ..LightSet::default() };
         let mut tiled = Vec::new();
         for (m, cm) in [(VplMethod::Slc, CullMethod::Slc), (VplMethod::Clamp, CullMethod::Clamp), (VplMethod::None, CullMethod::None)] {
             let f = Features { lights: vpl_only, tile_size: TILE, interleave: PERIOD, max_tile_lights: list, method: cm, ..Features::default() };
@@ -173,7 +177,7 @@ impl<'a> GpuVpl<'a> {
             },
         ));
         let s = GpuVpl {
-            gpu,
+            gpu: gpu.clone(),
             width: w,
             height: h,
             valid: (0..gb.position.len()).map(|i| gb.valid(i)).collect(),
@@ -217,7 +221,7 @@ impl<'a> GpuVpl<'a> {
     pub fn shade(&self, settings: &VplSettings) -> Result<Shaded, GpuError> {
         let params = settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
         let _frame = self.frame.lock().map_err(|_| GpuError::Device("a previous frame panicked".into()))?;
-        let gpu = self.gpu;
+        let gpu = &self.gpu;
         let (_, layout) = self.tiled.iter().find(|(m, _)| *m == settings.method).ok_or(GpuError::Setting("unknown method".into()))?;
         let n = self.flux.len();
         // Threshold ranges on the host with the core's function; r² on the GPU.
@@ -374,7 +378,7 @@ impl<'a> GpuVpl<'a> {
     }
 }
 
-impl IndirectShader for GpuVpl<'_> {
+impl IndirectShader for GpuVpl {
     type Error = GpuError;
 
     fn describe(&self) -> String {

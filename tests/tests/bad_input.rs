@@ -163,7 +163,7 @@ fn path_tracer_and_direct_light_settings() {
         rejects("gpu pt error bound", "error bound", AssertUnwindSafe(|| gpt.render(&mut PtRender::new(4, 4), &s, 1)));
     }
     let d = LightSet::new(vec![light]).unwrap();
-    let gd = slc_wgpu::direct::GpuDirect::new(g, &d).unwrap();
+    let mut gd = slc_wgpu::direct::GpuDirect::new(g, &d).unwrap();
     rejects("gpu points vs normals", "normals", AssertUnwindSafe(|| gd.shade(&[Vec3::ONE, Vec3::ZERO], &[Vec3::Y], &params, 1, 0)));
 }
 

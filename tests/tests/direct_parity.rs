@@ -91,7 +91,7 @@ fn compare(seed: u32, n_lights: usize, log_intensity: (f32, f32), eps: f32, fram
     let params = RangeParams::new(eps, 1.0).unwrap();
     let set = LightSet::new(lights).unwrap();
     let mut cpu = DirectLights::new(&set);
-    let gpu_lights = GpuDirect::new(g, &set).unwrap();
+    let mut gpu_lights = GpuDirect::new(g, &set).unwrap();
     // Points: random ones, and ones on a light's threshold sphere r_t (where
     // p = 1 turns into p < 1) and at 0.999× and 1.001× of it.
     let mut points = Vec::new();

@@ -22,7 +22,9 @@ use slc_tests::engine::{self, texture, upload};
 use slc_tests::gpu;
 use slc_wgpu::GpuContext;
 use slc_wgpu::GpuError;
-use slc_wgpu::passes::{GpuVplRecord, IndirectFrame, IndirectInputs, IndirectPass, IndirectPassDesc, VplInput, VplSourceDesc, vpl_buffer};
+use slc_wgpu::passes::{
+    GBuffer, GpuVplRecord, IndirectInputs, IndirectPass, IndirectPassDesc, Surface, SurfaceDesc, VplInput, VplSourceDesc, vpl_buffer,
+};
 use slc_wgpu::vpl::GpuVpl;
 
 const W: u32 = 64;
@@ -48,6 +50,17 @@ struct Engine {
     output_view: wgpu::TextureView,
     eye: Vec3,
     min_distance: f32,
+}
+
+impl Engine {
+    fn gbuffer(&self) -> GBuffer<'_> {
+        GBuffer { surface: Surface::Position(&self.position), normal: &self.normal, eye: self.eye }
+    }
+}
+
+/// A position-input pass for `vpls`.
+fn desc(vpls: VplSourceDesc) -> IndirectPassDesc {
+    IndirectPassDesc { surface: SurfaceDesc::Position, output_format: wgpu::TextureFormat::Rgba32Float, ..IndirectPassDesc::new(W, H, vpls) }
 }
 
 fn engine(gpu: &GpuContext, ctx: &VplContext) -> Engine {
@@ -86,11 +99,11 @@ fn engine(gpu: &GpuContext, ctx: &VplContext) -> Engine {
 
 /// Records the pass into an encoder of ours, submits it and reads the
 /// output texture back.
-fn run(gpu: &GpuContext, pass: &IndirectPass, e: &Engine, vpls: VplInput, settings: &VplSettings) -> Vec<[f32; 4]> {
-    let inputs = IndirectInputs { position: &e.position, normal: &e.normal, vpls, output: &e.output_view };
-    let frame = IndirectFrame { settings: *settings, eye: e.eye, min_distance: e.min_distance };
+fn run(gpu: &GpuContext, pass: &mut IndirectPass, e: &Engine, vpls: VplInput, settings: &VplSettings) -> Vec<[f32; 4]> {
+    let inputs = IndirectInputs { gbuffer: e.gbuffer(), vpls, output: &e.output_view };
+    let st = slc_wgpu::frame::indirect_settings(settings, e.min_distance).unwrap();
     let mut enc = gpu.device.create_command_encoder(&Default::default());
-    pass.record(gpu, &mut enc, &inputs, &frame).unwrap();
+    pass.record(&mut enc, &inputs, &st).unwrap();
     engine::submit_and_read(gpu, enc, &e.output)
 }
 
@@ -127,8 +140,7 @@ fn pass_matches_gpu_vpl_for_every_method() {
     let ctx = cpu_ctx();
     let e = engine(gpu, &ctx);
     let reference = GpuVpl::new(gpu, ctx.inputs()).unwrap();
-    let desc = IndirectPassDesc { width: W, height: H, vpls: VplSourceDesc::Rsm { size: RSM }, output_format: wgpu::TextureFormat::Rgba32Float };
-    let pass = IndirectPass::new(gpu, &desc).unwrap();
+    let mut pass = IndirectPass::new(gpu, &desc(VplSourceDesc::Rsm { size: RSM })).unwrap();
     let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
     // Without the near-field split (R_n = 0) and with the default one
     // (NEAR_FACTOR clamp distances).
@@ -137,7 +149,7 @@ fn pass_matches_gpu_vpl_for_every_method() {
     for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
         for (denoise, near_radius) in [false, true].into_iter().flat_map(|d| [(d, Some(0.0)), (d, None)]) {
             let s = VplSettings { near_radius, ..settings(method, denoise) };
-            let got = run(gpu, &pass, &e, rsm, &s);
+            let got = run(gpu, &mut pass, &e, rsm, &s);
             if near_radius == Some(0.0) {
                 without_split = got.clone();
             } else {
@@ -175,17 +187,13 @@ fn vpl_buffer_source_gives_the_rsm_image() {
     let Some(gpu) = gpu() else { return };
     let ctx = cpu_ctx();
     let e = engine(gpu, &ctx);
-    let fmt = wgpu::TextureFormat::Rgba32Float;
-    let from_rsm =
-        IndirectPass::new(gpu, &IndirectPassDesc { width: W, height: H, vpls: VplSourceDesc::Rsm { size: RSM }, output_format: fmt }).unwrap();
-    let from_buffer =
-        IndirectPass::new(gpu, &IndirectPassDesc { width: W, height: H, vpls: VplSourceDesc::Buffer { count: RSM * RSM }, output_format: fmt })
-            .unwrap();
+    let mut from_rsm = IndirectPass::new(gpu, &desc(VplSourceDesc::Rsm { size: RSM })).unwrap();
+    let mut from_buffer = IndirectPass::new(gpu, &desc(VplSourceDesc::Buffer { count: RSM * RSM })).unwrap();
     let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
     for method in [VplMethod::Clamp, VplMethod::None] {
         let s = settings(method, true);
-        let a = run(gpu, &from_rsm, &e, rsm, &s);
-        let b = run(gpu, &from_buffer, &e, VplInput::Buffer(&e.records), &s);
+        let a = run(gpu, &mut from_rsm, &e, rsm, &s);
+        let b = run(gpu, &mut from_buffer, &e, VplInput::Buffer(&e.records), &s);
         assert_eq!(a, b, "{}", method.name());
         assert!(a.iter().any(|p| p[0] > 0.0), "{}: the image is black", method.name());
     }
@@ -198,8 +206,8 @@ fn wrong_inputs_are_typed_errors() {
     let ctx = cpu_ctx();
     let e = engine(gpu, &ctx);
     let fmt = wgpu::TextureFormat::Rgba32Float;
-    let desc = IndirectPassDesc { width: W, height: H, vpls: VplSourceDesc::Rsm { size: RSM }, output_format: fmt };
-    let pass = IndirectPass::new(gpu, &desc).unwrap();
+    let desc = desc(VplSourceDesc::Rsm { size: RSM });
+    let mut pass = IndirectPass::new(gpu, &desc).unwrap();
     let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
     let tex = |size, format, usage| texture(gpu, "bad", size, format, usage).create_view(&Default::default());
     let sampled = wgpu::TextureUsages::TEXTURE_BINDING;
@@ -208,20 +216,21 @@ fn wrong_inputs_are_typed_errors() {
     let bad_usage = tex((W, H), fmt, wgpu::TextureUsages::COPY_DST);
     let small_rsm = tex((RSM / 2, RSM / 2), fmt, sampled);
     let out16 = tex((W, H), wgpu::TextureFormat::Rgba16Float, wgpu::TextureUsages::STORAGE_BINDING);
-    let ok = IndirectInputs { position: &e.position, normal: &e.normal, vpls: rsm, output: &e.output_view };
+    let ok = IndirectInputs { gbuffer: e.gbuffer(), vpls: rsm, output: &e.output_view };
     assert!(pass.check(&ok).is_ok());
+    let with = |surface, normal| GBuffer { surface, normal, eye: e.eye };
     let cases: [(&str, IndirectInputs); 6] = [
-        ("G-buffer position", IndirectInputs { position: &bad_format, ..ok }),
-        ("G-buffer normal", IndirectInputs { normal: &bad_size, ..ok }),
-        ("G-buffer position", IndirectInputs { position: &bad_usage, ..ok }),
+        ("G-buffer position", IndirectInputs { gbuffer: with(Surface::Position(&bad_format), &e.normal), ..ok }),
+        ("G-buffer normal", IndirectInputs { gbuffer: with(Surface::Position(&e.position), &bad_size), ..ok }),
+        ("G-buffer position", IndirectInputs { gbuffer: with(Surface::Position(&bad_usage), &e.normal), ..ok }),
         ("output", IndirectInputs { output: &out16, ..ok }),
         ("RSM flux", IndirectInputs { vpls: VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &small_rsm }, ..ok }),
         ("VPLs", IndirectInputs { vpls: VplInput::Buffer(&e.records), ..ok }),
     ];
     for (name, inputs) in cases {
         let mut enc = gpu.device.create_command_encoder(&Default::default());
-        let frame = IndirectFrame { settings: settings(VplMethod::Slc, false), eye: e.eye, min_distance: 0.01 };
-        match pass.record(gpu, &mut enc, &inputs, &frame) {
+        let st = slc_wgpu::frame::indirect_settings(&settings(VplMethod::Slc, false), 0.01).unwrap();
+        match pass.record(&mut enc, &inputs, &st) {
             Err(GpuError::Binding { name: n, .. }) => assert_eq!(n, name),
             other => panic!("{name}: expected a binding error, got {:?}", other.err()),
         }
@@ -239,9 +248,10 @@ fn wrong_inputs_are_typed_errors() {
         IndirectPass::new(gpu, &IndirectPassDesc { output_format: wgpu::TextureFormat::Rgba8Unorm, ..desc }),
         Err(GpuError::Binding { name: "output_format", .. })
     ));
+    assert!(slc_wgpu::frame::indirect_settings(&VplSettings { error_bound: -1.0, ..settings(VplMethod::Slc, false) }, 0.01).is_err());
     let mut enc = gpu.device.create_command_encoder(&Default::default());
-    let frame = IndirectFrame { settings: VplSettings { error_bound: -1.0, ..settings(VplMethod::Slc, false) }, eye: e.eye, min_distance: 0.01 };
-    assert!(matches!(pass.record(gpu, &mut enc, &ok, &frame), Err(GpuError::Setting(_))));
+    let st = slc_wgpu::passes::IndirectSettings { min_distance: f32::NAN, ..slc_wgpu::passes::IndirectSettings::default() };
+    assert!(matches!(pass.record(&mut enc, &ok, &st), Err(GpuError::Setting(_))));
     gpu.take_errors().unwrap();
 }
 

@@ -30,8 +30,8 @@ fn cpu_ctx() -> &'static VplContext {
 }
 
 /// The GPU scene for [`cpu_ctx`], uploaded once for all tests.
-fn gpu_vpl() -> Option<&'static GpuVpl<'static>> {
-    static G: OnceLock<GpuVpl<'static>> = OnceLock::new();
+fn gpu_vpl() -> Option<&'static GpuVpl> {
+    static G: OnceLock<GpuVpl> = OnceLock::new();
     let g = gpu()?;
     Some(G.get_or_init(|| GpuVpl::new(g, cpu_ctx().inputs()).unwrap()))
 }

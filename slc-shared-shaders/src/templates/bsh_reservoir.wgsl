@@ -15,19 +15,7 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
 // ({% if shadows %}through geo_nodes/geo_tris{% else %}none in this variant: the caller owns visibility{% endif %}).
 // Output: irradiance (rgb) and the number of in-range lights (w).
 
-@group(0) @binding(0) var<uniform> params: ShadeParams;
-@group(0) @binding(1) var<storage, read> points: array<vec4f>;
-@group(0) @binding(2) var<storage, read> normals: array<vec4f>;
-@group(0) @binding(3) var<storage, read> lights: array<GpuLight>;
-@group(0) @binding(4) var<storage, read> rt2: array<f32>;
-@group(0) @binding(5) var<storage, read> r2: array<f32>;
-@group(0) @binding(6) var<storage, read> bsh_nodes: array<BshNode>;
-{% if shadows %}
-@group(0) @binding(7) var<storage, read> geo_nodes: array<GpuGeoNode>;
-@group(0) @binding(8) var<storage, read> geo_tris: array<GpuTriangle>;
-{% endif %}
-@group(0) @binding(9) var<storage, read_write> irradiance: array<vec4f>;
-@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+{{ bindings }}
 
 @compute @workgroup_size({{ wg }})
 fn main(@builtin(global_invocation_id) gid: vec3u) {

@@ -3,15 +3,7 @@
 // `L_e + ρ/π · (E_direct + E_indirect)` per G-buffer pixel (material from
 // the normal's w), zero where no surface; alpha 1.
 
-@group(0) @binding(0) var<uniform> image: ImageParams;
-@group(0) @binding(1) var position_tex: texture_2d<f32>;
-@group(0) @binding(2) var normal_tex: texture_2d<f32>;
-@group(0) @binding(3) var indirect_tex: texture_2d<f32>;
-@group(0) @binding(4) var<storage, read> direct: array<vec4f>;
-@group(0) @binding(5) var<storage, read> materials: array<GpuMaterial>;
-@group(0) @binding(6) var out_tex: texture_storage_2d<{{ out_format }}, write>;
-// Declared because the shared library reads it; unused here, so not bound.
-@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+{{ bindings }}
 
 @compute @workgroup_size({{ tile }}, {{ tile }})
 fn main(@builtin(global_invocation_id) gid: vec3u) {

@@ -5,14 +5,7 @@
 // ray to the first surface, 0 where none): the receiver is lit when that
 // surface lies no nearer to the light (less the slope-scaled bias).
 
-@group(0) @binding(0) var<uniform> params: MapParams;
-@group(0) @binding(1) var<uniform> image: ImageParams;
-@group(0) @binding(2) var position_tex: texture_2d<f32>;
-@group(0) @binding(3) var normal_tex: texture_2d<f32>;
-@group(0) @binding(4) var shadow_map: texture_2d<f32>;
-@group(0) @binding(5) var<storage, read_write> direct: array<vec4f>;
-// Declared because the shared library reads it; unused here, so not bound.
-@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+{{ bindings }}
 
 @compute @workgroup_size({{ tile }}, {{ tile }})
 fn main(@builtin(global_invocation_id) gid: vec3u) {

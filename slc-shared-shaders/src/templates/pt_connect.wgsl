@@ -3,6 +3,9 @@
 {% include "geometry.wgsl" %}
 {% include "bsh_collect.wgsl" %}
 {% include "pt_mis.wgsl" %}
+{% if selection == "weighted" %}
+{% include "bsh_weighted.wgsl" %}
+{% endif %}
 // Explicit light connection of a progressive path tracer: at every live path
 // vertex, the BSH and a {{ k }}-slot reservoir pick lights ({{ selection }}
 // selection; the uniform and power baselines pick one light); each pick is
@@ -78,33 +81,17 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         sum += shade_pick(picks.light[s], x, n, ng, m, wo, r, lobe, w_res, picks.n, u1, xi_from_bits(h));
     }
 {% elif selection == "weighted" %}
-    // K independent one-slot weighted reservoirs over the in-range lights,
-    // each candidate weighted by its importance over its roulette
-    // probability; a zero weight is never picked and draws nothing.
-    var pick: array<u32, K>;
-    var pick_w: array<f32, K>;
-    var w_sum = 0.0;
-    for (var b = bsh_next_leaf_scaled(BSH, bsh_first(BSH), x, scale); b != BSH_NONE; b = bsh_next_leaf_scaled(BSH, bsh_nodes[b].next, x, scale)) {
-        let li = bsh_nodes[b].light;
-        let w = light_weight(li, x, n, r, lobe);
-        if w > 0.0 {
-            w_sum += w;
-            for (var s = 0u; s < K; s++) {
-                h = pcg_hash(h);
-                if weighted_replace(w, w_sum, xi_from_bits(h)) {
-                    pick[s] = li;
-                    pick_w[s] = w;
-                }
-            }
-        }
-    }
+    // K independent one-slot weighted reservoirs over the in-range lights.
+    let picks = bsh_weighted_collect(x, n, r, lobe, scale, h);
+    h = picks.h;
+    let w_sum = picks.w_sum;
     candidates[i] = bitcast<u32>(w_sum);
     if w_sum > 0.0 {
         for (var s = 0u; s < K; s++) {
             h = pcg_hash(h);
             let u1 = xi_from_bits(h);
             h = pcg_hash(h);
-            sum += shade_pick(pick[s], x, n, ng, m, wo, r, lobe, weighted_pick_weight(w_sum, pick_w[s], K), bitcast<u32>(w_sum), u1, xi_from_bits(h));
+            sum += shade_pick(picks.light[s], x, n, ng, m, wo, r, lobe, weighted_pick_weight(w_sum, picks.w[s], K), bitcast<u32>(w_sum), u1, xi_from_bits(h));
         }
     }
 {% elif selection == "all" %}

@@ -18,12 +18,7 @@ fn mis_weight(pdf_a: f32, pdf_b: f32) -> f32 {
 @group(1) @binding(2) var<storage, read> light_cones: array<GpuLightCone>;
 @group(1) @binding(3) var<storage, read> light_bvh: array<GpuLightBvhNode>;
 
-/// `slc-weighted`'s weight of light `li` for the receiver `(x, n, r, lobe)`
-/// (slc-core's `cone_weight`, with the receiver's range scale).
-fn light_weight(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f) -> f32 {
-    let c = light_cones[li];
-    return cone_weight(c.center, c.radius, c.phi, c.axis, c.cos_o, c.cos_e, range_scale(lobe) * rt2[li], x, n, r, lobe);
-}
+{% include "light_weight.wgsl" %}
 
 /// The kernel's `light_bvh` buffer as slc-core's shared walks
 /// (`light_bvh_sample`, `light_bvh_pmf`, below) read it.

@@ -5,10 +5,7 @@
 // reflective shadow map) or `fs_shadow` (its shadow map). Normals are the shading normal on the side the
 // viewer (camera or light) sees, as the CPU's ray casting makes them.
 
-@group(0) @binding(0) var<uniform> params: MapParams;
-@group(0) @binding(1) var<storage, read> materials: array<GpuMaterial>;
-// Declared because the shared library reads it; unused here, so not bound.
-@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+{{ bindings }}
 
 struct VsOut {
     @builtin(position) clip: vec4f,

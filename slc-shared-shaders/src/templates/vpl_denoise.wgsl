@@ -4,12 +4,7 @@
 // core's bilateral_weight on normal and depth, widened to twice the period
 // where a VPL subset is missing from the window; the CPU's filter, per pixel.
 
-@group(0) @binding(0) var<uniform> params: VplParams;
-@group(0) @binding(1) var<storage, read> gb_position: array<vec4f>;
-@group(0) @binding(2) var<storage, read> gb_normal: array<vec4f>;
-@group(0) @binding(3) var<storage, read> irradiance: array<vec4f>;
-@group(0) @binding(4) var<storage, read_write> filtered: array<vec4f>;
-@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+{{ bindings }}
 
 const PERIOD: u32 = {{ period }}u;
 

@@ -8,22 +8,7 @@
 
 const P: u32 = {{ period }}u;
 
-@group(0) @binding(0) var<uniform> params: PackParams;
-{% if source == "rsm" %}
-@group(0) @binding(1) var rsm_position: texture_2d<f32>;
-@group(0) @binding(2) var rsm_normal: texture_2d<f32>;
-@group(0) @binding(3) var rsm_flux: texture_2d<f32>;
-{% else %}
-@group(0) @binding(1) var<storage, read> records: array<GpuVplRecord>;
-{% endif %}
-@group(0) @binding(4) var<storage, read_write> lights: array<GpuLight>;
-@group(0) @binding(5) var<storage, read_write> ids: array<u32>;
-@group(0) @binding(6) var<storage, read_write> rt2: array<f32>;
-@group(0) @binding(7) var<storage, read_write> r2: array<f32>;
-@group(0) @binding(8) var<storage, read_write> near_slots: array<u32>;
-@group(0) @binding(9) var<storage, read_write> near_boxes: array<GpuNearBox>;
-// Declared because the shared library reads it; unused here, so not bound.
-@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+{{ bindings }}
 
 const BOX_THREADS: u32 = NEAR_BLOCK;
 {% include "workgroup_box.wgsl" %}

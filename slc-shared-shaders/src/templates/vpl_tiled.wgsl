@@ -17,14 +17,7 @@ const BOX_THREADS: u32 = THREADS;
 {% include "workgroup_box.wgsl" %}
 const MAX_TILE_LIGHTS: u32 = {{ max_tile_lights }}u;
 
-@group(0) @binding(0) var<uniform> params: VplParams;
-@group(0) @binding(1) var<storage, read> gb_position: array<vec4f>;
-@group(0) @binding(2) var<storage, read> gb_normal: array<vec4f>;
-@group(0) @binding(3) var<storage, read> lights: array<GpuLight>;
-@group(0) @binding(4) var<storage, read> rt2: array<f32>;
-@group(0) @binding(5) var<storage, read> r2: array<f32>;
-@group(0) @binding(6) var<storage, read_write> irradiance: array<vec4f>;
-@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+{{ bindings }}
 
 var<workgroup> tile_count: atomic<u32>;
 var<workgroup> tile_lights: array<u32, MAX_TILE_LIGHTS>;

@@ -9,17 +9,6 @@ struct GpuLight {
     ies_base: u32,
 }
 
-struct GpuLightCone {
-    center: vec3<f32>,
-    radius: f32,
-    axis: vec3<f32>,
-    cos_o: f32,
-    phi: f32,
-    cos_e: f32,
-    bvh_leaf: u32,
-    pad: u32,
-}
-
 struct GpuGeoNode {
     bmin: vec3<f32>,
     first: u32,
@@ -49,111 +38,6 @@ struct GpuPathVertex {
     pad3_: f32,
 }
 
-struct GpuPathState {
-    origin: vec3<f32>,
-    alive: u32,
-    dir: vec3<f32>,
-    rng: u32,
-    beta: vec3<f32>,
-    pdf_bsdf: f32,
-    prev: vec3<f32>,
-    pad: u32,
-    prev_normal: vec3<f32>,
-    pad2_: u32,
-    prev_r: vec3<f32>,
-    pad3_: u32,
-    prev_lobe: vec4<f32>,
-}
-
-struct PtParams {
-    cam_pos: vec3<f32>,
-    width: u32,
-    cam_right: vec3<f32>,
-    height: u32,
-    cam_up: vec3<f32>,
-    depth: u32,
-    cam_forward: vec3<f32>,
-    seed: u32,
-    pass_index: u32,
-    max_depth: u32,
-    eps: f32,
-    t_min: f32,
-}
-
-struct FrameParams {
-    light_count: u32,
-    seed: u32,
-    frame: u32,
-    pad: u32,
-}
-
-struct RefitParams {
-    first: u32,
-    count: u32,
-    pad0_: u32,
-    pad1_: u32,
-}
-
-struct VplParams {
-    width: u32,
-    height: u32,
-    lights_per_subset: u32,
-    min_d2_: f32,
-    near_r2_: f32,
-    near_blocks: u32,
-    pad0_: u32,
-    pad1_: u32,
-}
-
-struct GpuNearBox {
-    lo: vec3<f32>,
-    pad0_: f32,
-    hi: vec3<f32>,
-    pad1_: f32,
-}
-
-struct GpuVplRecord {
-    position: vec3<f32>,
-    pad0_: f32,
-    normal: vec3<f32>,
-    pad1_: f32,
-    flux: vec3<f32>,
-    pad2_: f32,
-}
-
-struct PackParams {
-    count: u32,
-    size: u32,
-    per_subset: u32,
-    mode: u32,
-    exposure: f32,
-    error_bound: f32,
-    scale: f32,
-    slc: u32,
-    fixed_r2_: f32,
-    pad0_: u32,
-    pad1_: u32,
-    pad2_: u32,
-}
-
-struct ImageParams {
-    eye: vec3<f32>,
-    width: u32,
-    height: u32,
-    pad0_: u32,
-    pad1_: u32,
-    pad2_: u32,
-}
-
-struct GpuVertex {
-    position: vec3<f32>,
-    material: u32,
-    normal: vec3<f32>,
-    pad0_: u32,
-    geo_normal: vec3<f32>,
-    pad1_: u32,
-}
-
 struct GpuMaterial {
     albedo: vec3<f32>,
     metallic: f32,
@@ -161,22 +45,6 @@ struct GpuMaterial {
     alpha: f32,
     f0_: vec3<f32>,
     f90_: f32,
-}
-
-struct MapParams {
-    c0_: vec4<f32>,
-    c1_: vec4<f32>,
-    c2_: vec4<f32>,
-    c3_: vec4<f32>,
-    light: GpuLight,
-    origin: vec3<f32>,
-    mode: u32,
-    axis: vec3<f32>,
-    size: u32,
-    right: vec3<f32>,
-    extent: f32,
-    up: vec3<f32>,
-    texel: f32,
 }
 
 struct ShadeParams {
@@ -195,17 +63,6 @@ struct BshNode {
     extent: f32,
 }
 
-struct GpuLightBvhNode {
-    center: vec3<f32>,
-    radius: f32,
-    axis: vec3<f32>,
-    cos_o: f32,
-    phi: f32,
-    cos_e: f32,
-    second: u32,
-    light: u32,
-}
-
 struct GeoHit {
     t: f32,
     tri: u32,
@@ -220,11 +77,6 @@ struct Connection {
     e: vec3<f32>,
     y: vec3<f32>,
     cos_x: f32,
-}
-
-struct BvhPick {
-    light: u32,
-    pmf: f32,
 }
 
 const LIGHT_POINT: u32 = 0u;
@@ -261,8 +113,6 @@ const K: u32 = 8u;
 const BSH: u32 = 0u;
 const BVH: u32 = 0u;
 
-@group(1) @binding(0) 
-var<storage> slc_table: array<f32>;
 @group(0) @binding(6) 
 var<storage> geo_nodes: array<GpuGeoNode>;
 @group(0) @binding(7) 
@@ -272,15 +122,9 @@ var<storage> bsh_nodes: array<BshNode>;
 @group(0) @binding(2) 
 var<storage> lights: array<GpuLight>;
 @group(0) @binding(4) 
-var<storage> r2_7: array<f32>;
+var<storage> r2_2: array<f32>;
 @group(0) @binding(3) 
-var<storage> rt2_7: array<f32>;
-@group(1) @binding(1) 
-var<storage> power_table: array<vec4<f32>>;
-@group(1) @binding(2) 
-var<storage> light_cones: array<GpuLightCone>;
-@group(1) @binding(3) 
-var<storage> light_bvh: array<GpuLightBvhNode>;
+var<storage> rt2_4: array<f32>;
 @group(0) @binding(0) 
 var<uniform> params: ShadeParams;
 @group(0) @binding(1) 
@@ -292,17 +136,8 @@ var<storage, read_write> radiance: array<vec4<f32>>;
 @group(0) @binding(10) 
 var<storage, read_write> candidates: array<u32>;
 
-fn at(tab: u32, i: u32) -> f32 {
-    let _e4 = slc_table[i];
-    return _e4;
-}
-
 fn to_f32_(u: u32) -> f32 {
     return f32(u);
-}
-
-fn to_u32_(x: f32) -> u32 {
-    return u32(x);
 }
 
 fn mul_lo_u32_(a: u32, b: u32) -> u32 {
@@ -318,59 +153,23 @@ fn xi_from_bits(bits: u32) -> f32 {
     return (_e3 * XI_STEP);
 }
 
-fn pcg_hash(x_1: u32) -> u32 {
-    let _e2 = mul_lo_u32_(x_1, 747796405u);
+fn pcg_hash(x: u32) -> u32 {
+    let _e2 = mul_lo_u32_(x, 747796405u);
     let _e4 = add_wrap_u32_(_e2, 2891336453u);
     let _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
     return ((_e12 >> 22u) ^ _e12);
 }
 
-fn reverse_bits(x_2: u32) -> u32 {
-    var v: u32;
-
-    v = (((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u));
-    let _e11 = v;
-    let _e16 = v;
-    v = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
-    let _e22 = v;
-    let _e27 = v;
-    v = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
-    let _e33 = v;
-    let _e38 = v;
-    v = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
-    let _e44 = v;
-    let _e49 = v;
-    v = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
-    let _e55 = v;
-    return _e55;
-}
-
-fn xi_for(seed: u32, frame: u32, light: u32) -> f32 {
-    let _e3 = pcg_hash(seed);
-    let _e4 = pcg_hash(_e3);
-    let _e6 = pcg_hash((_e4 ^ light));
-    let _e7 = reverse_bits(frame);
-    let _e8 = add_wrap_u32_(_e6, _e7);
-    let _e9 = xi_from_bits(_e8);
-    return _e9;
-}
-
-fn point_stream(seed_1: u32, point: u32, frame_1: u32) -> u32 {
-    let _e3 = pcg_hash(frame_1);
+fn point_stream(seed: u32, point: u32, frame: u32) -> u32 {
+    let _e3 = pcg_hash(frame);
     let _e5 = pcg_hash((point ^ _e3));
-    let _e7 = pcg_hash((seed_1 ^ _e5));
+    let _e7 = pcg_hash((seed ^ _e5));
     return _e7;
 }
 
 fn pick_stream(stream: u32) -> u32 {
     let _e3 = pcg_hash((stream ^ PICK_STREAM));
     return _e3;
-}
-
-fn path_stream(seed_2: u32, pixel: u32, pass_index: u32) -> u32 {
-    let _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
-    let _e5 = point_stream(seed_2, pixel, _e4);
-    return _e5;
 }
 
 fn rr_probability(rt2_: f32, d2_: f32) -> f32 {
@@ -387,379 +186,72 @@ fn slc_weight(rt2_1: f32, d2_1: f32) -> f32 {
     return (d2_1 / rt2_1);
 }
 
-fn random_range2_(rt2_2: f32, xi: f32) -> f32 {
-    return (rt2_2 / (1f - xi));
-}
-
 fn slc_keep(r2_: f32, d2_2: f32) -> bool {
     return (d2_2 < r2_);
 }
 
-fn clamp_keep(range2_: f32, d2_3: f32) -> bool {
-    return (d2_3 < range2_);
+fn sphere_contains_point(c: vec3<f32>, r: f32, x_1: vec3<f32>) -> bool {
+    let v_6 = (x_1 - c);
+    return (dot(v_6, v_6) <= (r * r));
 }
 
-fn threshold_range2_(intensity: f32, exposure: f32, error_bound: f32) -> f32 {
-    if (intensity <= 0f) {
-        return 0f;
-    }
-    return (((exposure / error_bound) * intensity) / TWO_PI);
+fn inverse_square(d2_3: f32) -> f32 {
+    return (1f / max(d2_3, MIN_D2_));
 }
 
-fn intensity_measure(rgb: vec3<f32>, mode: u32) -> f32 {
-    if (mode == 1u) {
-        return (((rgb.x + rgb.y) + rgb.z) / 3f);
-    }
-    return max(rgb.x, max(rgb.y, rgb.z));
-}
-
-fn cull_radius(r2_1: f32) -> f32 {
-    return (sqrt(r2_1) * CULL_RADIUS_SCALE);
-}
-
-fn windowed_falloff(d2_4: f32, range2_1: f32) -> f32 {
-    let q_2 = (d2_4 / range2_1);
-    let w_12 = saturate((1f - (q_2 * q_2)));
-    return ((w_12 * w_12) / max(d2_4, 0.0001f));
-}
-
-fn sphere_contains_point(c: vec3<f32>, r: f32, x_3: vec3<f32>) -> bool {
-    let v_10 = (x_3 - c);
-    return (dot(v_10, v_10) <= (r * r));
-}
-
-fn sphere_overlaps_sphere(c1_: vec3<f32>, r1_: f32, c2_: vec3<f32>, r2_2: f32) -> bool {
-    let v_11 = (c2_ - c1_);
-    let r_14 = (r1_ + r2_2);
-    return (dot(v_11, v_11) <= (r_14 * r_14));
-}
-
-fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
-    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
-}
-
-fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<f32> {
-    var local: bool;
-
-    let v_12 = (c2_1 - c1_1);
-    let d_7 = sqrt(dot(v_12, v_12));
-    let _e8 = sphere_pad(r1_1, c1_1);
-    if (r1_1 >= ((d_7 + r2_3) + _e8)) {
-        return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, r1_1);
-    }
-    let _e16 = sphere_pad(r2_3, c2_1);
-    if (r2_3 >= ((d_7 + r1_1) + _e16)) {
-        return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, r2_3);
-    }
-    if !((d_7 >= SPHERE_HUGE)) {
-        local = ((0.5f * ((d_7 + r1_1) + r2_3)) >= SPHERE_HUGE);
-    } else {
-        local = true;
-    }
-    let _e35 = local;
-    if _e35 {
-        return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
-    }
-    if (abs((r1_1 - r2_3)) >= d_7) {
-        if (r1_1 >= r2_3) {
-            let rn = max(r1_1, (d_7 + r2_3));
-            let _e50 = sphere_pad(rn, c1_1);
-            return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
-        }
-        let rm = max(r2_3, (d_7 + r1_1));
-        let _e58 = sphere_pad(rm, c2_1);
-        return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
-    }
-    let r0_ = (0.5f * ((d_7 + r1_1) + r2_3));
-    let c_11 = (c1_1 + (v_12 * ((r0_ - r1_1) / d_7)));
-    let e1_ = (c_11 - c1_1);
-    let e2_ = (c_11 - c2_1);
-    let r_15 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    let _e82 = sphere_pad(r_15, c_11);
-    return vec4<f32>(c_11.x, c_11.y, c_11.z, (r_15 + _e82));
-}
-
-fn sphere_overlaps_aabb(c_2: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
-    let q_3 = clamp(c_2, bmin, bmax);
-    let v_13 = (q_3 - c_2);
-    return (dot(v_13, v_13) <= (r_2 * r_2));
-}
-
-fn vpl_rt2_(flux: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32) -> f32 {
-    let _e6 = intensity_measure((flux * INV_PI), mode_1);
-    let _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
-    return _e7;
-}
-
-fn range_radius(extent: f32, r2_4: f32) -> f32 {
-    return (extent + sqrt(r2_4));
-}
-
-fn inverse_square(d2_5: f32) -> f32 {
-    return (1f / max(d2_5, MIN_D2_));
-}
-
-fn connection_factor(cos_x: f32, d2_6: f32, rt2_3: f32, w: f32) -> f32 {
-    let _e4 = inverse_square(d2_6);
-    let _e6 = slc_weight(rt2_3, d2_6);
+fn connection_factor(cos_x: f32, d2_4: f32, rt2_2: f32, w: f32) -> f32 {
+    let _e4 = inverse_square(d2_4);
+    let _e6 = slc_weight(rt2_2, d2_4);
     return (((cos_x * _e4) * _e6) * w);
 }
 
-fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_5: f32) -> f32 {
+fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local: bool;
     var local_1: bool;
-    var local_2: bool;
 
-    let v_14 = (x_4 - y);
-    let d2_12 = dot(v_14, v_14);
-    let _e7 = slc_keep(r2_5, d2_12);
+    let v_7 = (x_2 - y);
+    let d2_7 = dot(v_7, v_7);
+    let _e7 = slc_keep(r2_1, d2_7);
     if !(!(_e7)) {
-        local_1 = !((d2_12 > 0f));
+        local = !((d2_7 > 0f));
     } else {
-        local_1 = true;
+        local = true;
     }
-    let _e16 = local_1;
+    let _e16 = local;
     if _e16 {
         return 0f;
     }
-    let w_13 = (v_14 / vec3(sqrt(d2_12)));
-    let cos_x_1 = -(dot(n, w_13));
+    let w_5 = (v_7 / vec3(sqrt(d2_7)));
+    let cos_x_1 = -(dot(n, w_5));
     if !((cos_x_1 <= 0f)) {
-        local_2 = (dot(ng, w_13) >= 0f);
+        local_1 = (dot(ng, w_5) >= 0f);
     } else {
-        local_2 = true;
+        local_1 = true;
     }
-    let _e32 = local_2;
+    let _e32 = local_1;
     if _e32 {
         return 0f;
     }
     return cos_x_1;
 }
 
-fn vpl_lobe(n_1: vec3<f32>, w_1: vec3<f32>) -> f32 {
-    return (max(dot(n_1, w_1), 0f) * INV_PI);
+fn triangle_lobe(n_1: vec3<f32>, area: f32, w_1: vec3<f32>) -> f32 {
+    return (area * max(dot(n_1, w_1), 0f));
 }
 
-fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v_1: vec3<f32>, min_d2_: f32) -> f32 {
-    let m_1 = max(dot(v_1, v_1), min_d2_);
-    return (((max(dot(n_l, v_1), 0f) * max(-(dot(n_x, v_1)), 0f)) * INV_PI) / (m_1 * m_1));
-}
-
-fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
-    if (cos_inner <= cos_outer) {
-        return select(0f, 1f, (cos_theta >= cos_outer));
-    }
-    let t_2 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t_2 * t_2) * (3f - (2f * t_2)));
-}
-
-fn triangle_lobe(n_2: vec3<f32>, area: f32, w_2: vec3<f32>) -> f32 {
-    return (area * max(dot(n_2, w_2), 0f));
-}
-
-fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_3: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
+fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_1: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
     let su = sqrt(u1_);
     let b0_ = (1f - su);
     let b1_ = (u2_ * su);
-    return (((a_2 * b0_) + (b_2 * b1_)) + (c_3 * ((1f - b0_) - b1_)));
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1f - b0_) - b1_)));
 }
 
-fn area_to_solid_angle_pdf(pdf_area: f32, d2_7: f32, cos_light: f32) -> f32 {
-    let c_12 = abs(cos_light);
-    if (c_12 <= 0f) {
+fn area_to_solid_angle_pdf(pdf_area: f32, d2_5: f32, cos_light: f32) -> f32 {
+    let c_6 = abs(cos_light);
+    if (c_6 <= 0f) {
         return 0f;
     }
-    return ((pdf_area * d2_7) / c_12);
-}
-
-fn atan_portable(x_5: f32) -> f32 {
-    var base: f32 = 0f;
-    var t: f32;
-
-    let a_10 = abs(x_5);
-    t = a_10;
-    if (a_10 > 2.4142137f) {
-        base = 1.5707964f;
-        t = (-1f / a_10);
-    } else {
-        if (a_10 > 0.41421357f) {
-            base = 0.7853982f;
-            t = ((a_10 - 1f) / (a_10 + 1f));
-        }
-    }
-    let _e18 = t;
-    let _e19 = t;
-    let z_3 = (_e18 * _e19);
-    let _e21 = base;
-    let _e33 = t;
-    let _e35 = t;
-    let r_16 = (_e21 + (((((((((0.080537446f * z_3) - 0.13877685f) * z_3) + 0.19977711f) * z_3) - 0.3333295f) * z_3) * _e33) + _e35));
-    return select(r_16, -(r_16), (x_5 < 0f));
-}
-
-fn atan2_portable(y_1: f32, x_6: f32) -> f32 {
-    if (x_6 == 0f) {
-        if (y_1 > 0f) {
-            return 1.5707964f;
-        }
-        if (y_1 < 0f) {
-            return -1.5707964f;
-        }
-        return 0f;
-    }
-    let _e12 = atan_portable((y_1 / x_6));
-    if (x_6 > 0f) {
-        return _e12;
-    }
-    if (y_1 >= 0f) {
-        return (_e12 + 3.1415927f);
-    }
-    return (_e12 - 3.1415927f);
-}
-
-fn ies_fold_c(c_4: f32, h_first: f32, h_last: f32) -> f32 {
-    var a_3: f32;
-
-    a_3 = (c_4 - (360f * floor((c_4 / 360f))));
-    if (h_last <= 0f) {
-        return 0f;
-    }
-    if (h_last <= 90f) {
-        let _e15 = a_3;
-        if (_e15 > 180f) {
-            let _e18 = a_3;
-            a_3 = (360f - _e18);
-        }
-        let _e21 = a_3;
-        if (_e21 > 90f) {
-            let _e24 = a_3;
-            a_3 = (180f - _e24);
-        }
-        let _e27 = a_3;
-        return _e27;
-    }
-    if (h_first >= 90f) {
-        let _e30 = a_3;
-        if (_e30 < 90f) {
-            let _e33 = a_3;
-            a_3 = (180f - _e33);
-        } else {
-            let _e36 = a_3;
-            if (_e36 > 270f) {
-                let _e39 = a_3;
-                a_3 = (540f - _e39);
-            }
-        }
-        let _e42 = a_3;
-        return _e42;
-    }
-    if (h_last <= 180f) {
-        let _e45 = a_3;
-        if (_e45 > 180f) {
-            let _e48 = a_3;
-            a_3 = (360f - _e48);
-        }
-        let _e51 = a_3;
-        return _e51;
-    }
-    let _e52 = a_3;
-    return _e52;
-}
-
-fn ies_segment(tab_1: u32, start: u32, n_3: u32, x_7: f32) -> u32 {
-    var lo: u32 = 0u;
-    var hi: u32;
-
-    if (n_3 < 2u) {
-        return 0u;
-    }
-    hi = (n_3 - 1u);
-    loop {
-        let _e12 = hi;
-        let _e13 = lo;
-        if ((_e12 - _e13) > 1u) {
-        } else {
-            break;
-        }
-        {
-            let _e17 = lo;
-            let _e18 = hi;
-            let mid = ((_e17 + _e18) >> 1u);
-            let _e23 = at(tab_1, (start + mid));
-            if (_e23 <= x_7) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-    }
-    let _e25 = lo;
-    return _e25;
-}
-
-fn ies_lerp_t(a0_: f32, a1_: f32, x_8: f32) -> f32 {
-    if (a1_ <= a0_) {
-        return 0f;
-    }
-    return saturate(((x_8 - a0_) / (a1_ - a0_)));
-}
-
-fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_5: f32) -> f32 {
-    var local_3: bool;
-
-    let _e4 = at(tab_2, base_1);
-    let _e5 = to_u32_(_e4);
-    let _e8 = at(tab_2, (base_1 + 1u));
-    let _e9 = to_u32_(_e8);
-    let v0_ = (base_1 + 2u);
-    let h0_ = (v0_ + _e5);
-    let c0_1 = (h0_ + _e9);
-    let _e14 = at(tab_2, v0_);
-    if !((gamma < _e14)) {
-        let _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_3 = (gamma > _e22);
-    } else {
-        local_3 = true;
-    }
-    let _e25 = local_3;
-    if _e25 {
-        return 0f;
-    }
-    let _e27 = at(tab_2, h0_);
-    let _e31 = at(tab_2, ((h0_ + _e9) - 1u));
-    let _e32 = ies_fold_c(c_5, _e27, _e31);
-    let _e33 = ies_segment(tab_2, v0_, _e5, gamma);
-    let _e34 = ies_segment(tab_2, h0_, _e9, _e32);
-    let iv1_ = min((_e33 + 1u), (_e5 - 1u));
-    let ih1_ = min((_e34 + 1u), (_e9 - 1u));
-    let _e46 = at(tab_2, (v0_ + _e33));
-    let _e48 = at(tab_2, (v0_ + iv1_));
-    let _e49 = ies_lerp_t(_e46, _e48, gamma);
-    let _e51 = at(tab_2, (h0_ + _e34));
-    let _e53 = at(tab_2, (h0_ + ih1_));
-    let _e54 = ies_lerp_t(_e51, _e53, _e32);
-    let _e58 = at(tab_2, ((c0_1 + (_e34 * _e5)) + _e33));
-    let _e65 = at(tab_2, ((c0_1 + (_e34 * _e5)) + iv1_));
-    let a_11 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
-    let _e71 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + _e33));
-    let _e78 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + iv1_));
-    let b_8 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
-    return ((a_11 * (1f - _e54)) + (b_8 * _e54));
-}
-
-fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
-    let _e9 = atan2_portable(sqrt(((wr * wr) + (ws * ws))), wn);
-    let gamma_1 = degrees(_e9);
-    let on_axis = ((abs(wr) + abs(ws)) <= 0f);
-    let _e16 = atan2_portable(ws, wr);
-    let c_13 = select(degrees(_e16), 0f, on_axis);
-    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_13);
-    return _e20;
-}
-
-fn ies_light_candela(tab_4: u32, base_3: u32, nadir: vec3<f32>, reference: vec3<f32>, w_3: vec3<f32>) -> f32 {
-    let side = cross(reference, nadir);
-    let _e9 = ies_candela_dir(tab_4, base_3, dot(w_3, nadir), dot(w_3, reference), dot(w_3, side));
-    return _e9;
+    return ((pdf_area * d2_5) / c_6);
 }
 
 fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
@@ -772,170 +264,122 @@ fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
     return (node.radius * scale);
 }
 
-fn mul_hi_u32_(a_4: u32, b_3: u32) -> u32 {
-    let a_lo = (a_4 & 65535u);
-    let a_hi = (a_4 >> 16u);
+fn mul_hi_u32_(a_3: u32, b_3: u32) -> u32 {
+    let a_lo = (a_3 & 65535u);
+    let a_hi = (a_3 >> 16u);
     let b_lo = (b_3 & 65535u);
     let b_hi = (b_3 >> 16u);
     let ll = (a_lo * b_lo);
     let lh = (a_lo * b_hi);
     let hl = (a_hi * b_lo);
     let hh = (a_hi * b_hi);
-    let mid_1 = (((ll >> 16u) + (lh & 65535u)) + (hl & 65535u));
-    return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u));
+    let mid = (((ll >> 16u) + (lh & 65535u)) + (hl & 65535u));
+    return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid >> 16u));
 }
 
-fn uniform_index(n_4: u32, hi_1: u32, lo_1: u32) -> u32 {
-    let _e3 = mul_lo_u32_(hi_1, n_4);
-    let _e4 = mul_hi_u32_(hi_1, n_4);
-    let _e5 = mul_hi_u32_(lo_1, n_4);
+fn uniform_index(n_2: u32, hi: u32, lo: u32) -> u32 {
+    let _e3 = mul_lo_u32_(hi, n_2);
+    let _e4 = mul_hi_u32_(hi, n_2);
+    let _e5 = mul_hi_u32_(lo, n_2);
     if (_e3 > (4294967295u - _e5)) {
         return (_e4 + 1u);
     }
     return _e4;
 }
 
-fn reservoir_slot(n_5: u32, k: u32, hi_2: u32, lo_2: u32) -> u32 {
-    if (n_5 <= k) {
-        return (n_5 - 1u);
+fn reservoir_slot(n_3: u32, k: u32, hi_1: u32, lo_1: u32) -> u32 {
+    if (n_3 <= k) {
+        return (n_3 - 1u);
     }
-    let _e7 = uniform_index(n_5, hi_2, lo_2);
+    let _e7 = uniform_index(n_3, hi_1, lo_1);
     if (_e7 < k) {
         return _e7;
     }
     return k;
 }
 
-fn reservoir_takes(n_6: u32) -> bool {
-    return (n_6 < RESERVOIR_FULL);
+fn reservoir_takes(n_4: u32) -> bool {
+    return (n_4 < RESERVOIR_FULL);
 }
 
-fn reservoir_weight(n_7: u32, k_1: u32) -> f32 {
-    let _e2 = to_f32_(n_7);
+fn reservoir_weight(n_5: u32, k_1: u32) -> f32 {
+    let _e2 = to_f32_(n_5);
     let _e3 = to_f32_(k_1);
     return max((_e2 / _e3), 1f);
 }
 
-fn weighted_replace(w_4: f32, w_sum: f32, u_1: f32) -> bool {
-    return ((u_1 * w_sum) < w_4);
-}
-
-fn weighted_pick_weight(w_sum_1: f32, w_5: f32, k_2: u32) -> f32 {
-    let _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_5));
-}
-
-fn reservoir_select_pdf(seen: u32, in_range: bool, k_3: u32) -> f32 {
+fn reservoir_select_pdf(seen: u32, in_range: bool, k_2: u32) -> f32 {
     var others: u32;
-    var local_4: bool;
+    var local_2: bool;
 
     others = seen;
     if in_range {
-        local_4 = (seen > 0u);
+        local_2 = (seen > 0u);
     } else {
-        local_4 = false;
+        local_2 = false;
     }
-    let _e9 = local_4;
+    let _e9 = local_2;
     if _e9 {
         others = (seen - 1u);
     }
     let _e12 = others;
-    let _e15 = reservoir_weight((_e12 + 1u), k_3);
+    let _e15 = reservoir_weight((_e12 + 1u), k_2);
     return (1f / _e15);
 }
 
-fn alias_choice(column: u32, other: u32, keep: f32, u_2: f32) -> u32 {
-    return select(other, column, (u_2 < keep));
-}
-
-fn uniform_light(u_3: f32, n_8: u32) -> u32 {
-    let _e2 = to_f32_(n_8);
-    let _e4 = to_u32_((u_3 * _e2));
-    return min(_e4, (n_8 - 1u));
-}
-
-fn mis_balance(pdf_a: f32, pdf_b: f32) -> f32 {
-    let s_2 = (pdf_a + pdf_b);
+fn mis_power(pdf_a: f32, pdf_b: f32) -> f32 {
+    let a2_ = (pdf_a * pdf_a);
+    let s_2 = (a2_ + (pdf_b * pdf_b));
     if (s_2 <= 0f) {
         return 0f;
     }
-    return (pdf_a / s_2);
+    return (a2_ / s_2);
 }
 
-fn mis_power(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
-    let a2_ = (pdf_a_1 * pdf_a_1);
-    let s_3 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if (s_3 <= 0f) {
-        return 0f;
-    }
-    return (a2_ / s_3);
-}
+fn light_strategy_pdf(select_: f32, rt2_3: f32, d2_6: f32, area_1: f32, cos_y: f32) -> f32 {
+    var local_3: bool;
+    var local_4: bool;
 
-fn light_strategy_pdf(select_: f32, rt2_4: f32, d2_8: f32, area_1: f32, cos_y: f32) -> f32 {
-    var local_5: bool;
-    var local_6: bool;
-
-    if !((d2_8 <= 0f)) {
-        local_5 = (area_1 <= 0f);
+    if !((d2_6 <= 0f)) {
+        local_3 = (area_1 <= 0f);
     } else {
-        local_5 = true;
+        local_3 = true;
     }
-    let _e13 = local_5;
+    let _e13 = local_3;
     if !(_e13) {
-        local_6 = (cos_y <= 0f);
+        local_4 = (cos_y <= 0f);
     } else {
-        local_6 = true;
+        local_4 = true;
     }
-    let _e20 = local_6;
+    let _e20 = local_4;
     if _e20 {
         return 0f;
     }
-    let _e22 = rr_probability(rt2_4, d2_8);
-    let _e26 = area_to_solid_angle_pdf((1f / area_1), d2_8, cos_y);
+    let _e22 = rr_probability(rt2_3, d2_6);
+    let _e26 = area_to_solid_angle_pdf((1f / area_1), d2_6, cos_y);
     return ((select_ * _e22) * _e26);
 }
 
-fn lambert_brdf(rho: vec3<f32>) -> vec3<f32> {
-    return (rho * INV_PI);
+fn cosine_pdf(cos_theta: f32) -> f32 {
+    return (max(cos_theta, 0f) * INV_PI);
 }
 
-fn cosine_pdf(cos_theta_1: f32) -> f32 {
-    return (max(cos_theta_1, 0f) * INV_PI);
+fn onb_tangent(n_6: vec3<f32>) -> vec3<f32> {
+    let s_3 = select(-1f, 1f, (n_6.z >= 0f));
+    let a_7 = (-1f / (s_3 + n_6.z));
+    return vec3<f32>((1f + (((s_3 * n_6.x) * n_6.x) * a_7)), (((s_3 * n_6.x) * n_6.y) * a_7), (-(s_3) * n_6.x));
 }
 
-fn onb_tangent(n_9: vec3<f32>) -> vec3<f32> {
-    let s_4 = select(-1f, 1f, (n_9.z >= 0f));
-    let a_12 = (-1f / (s_4 + n_9.z));
-    return vec3<f32>((1f + (((s_4 * n_9.x) * n_9.x) * a_12)), (((s_4 * n_9.x) * n_9.y) * a_12), (-(s_4) * n_9.x));
+fn onb_bitangent(n_7: vec3<f32>) -> vec3<f32> {
+    let s_4 = select(-1f, 1f, (n_7.z >= 0f));
+    let a_8 = (-1f / (s_4 + n_7.z));
+    return vec3<f32>(((n_7.x * n_7.y) * a_8), (s_4 + ((n_7.y * n_7.y) * a_8)), -(n_7.y));
 }
 
-fn onb_bitangent(n_10: vec3<f32>) -> vec3<f32> {
-    let s_5 = select(-1f, 1f, (n_10.z >= 0f));
-    let a_13 = (-1f / (s_5 + n_10.z));
-    return vec3<f32>(((n_10.x * n_10.y) * a_13), (s_5 + ((n_10.y * n_10.y) * a_13)), -(n_10.y));
-}
-
-fn onb_to_world(n_11: vec3<f32>, d: vec3<f32>) -> vec3<f32> {
-    let _e2 = onb_tangent(n_11);
-    let _e5 = onb_bitangent(n_11);
-    return (((_e2 * d.x) + (_e5 * d.y)) + (n_11 * d.z));
-}
-
-fn onb_to_local(n_12: vec3<f32>, w_6: vec3<f32>) -> vec3<f32> {
-    let _e2 = onb_tangent(n_12);
-    let _e4 = onb_bitangent(n_12);
-    return vec3<f32>(dot(w_6, _e2), dot(w_6, _e4), dot(w_6, n_12));
-}
-
-fn cosine_direction(n_13: vec3<f32>, u1_1: f32, u2_1: f32) -> vec3<f32> {
-    let r_17 = sqrt(u1_1);
-    let phi_5 = (6.2831855f * u2_1);
-    let _e16 = onb_to_world(n_13, vec3<f32>((r_17 * cos(phi_5)), (r_17 * sin(phi_5)), sqrt(max((1f - u1_1), 0f))));
-    return normalize(_e16);
-}
-
-fn ggx_alpha(roughness: f32) -> f32 {
-    return max((roughness * roughness), GGX_ALPHA_MIN);
+fn onb_to_local(n_8: vec3<f32>, w_2: vec3<f32>) -> vec3<f32> {
+    let _e2 = onb_tangent(n_8);
+    let _e4 = onb_bitangent(n_8);
+    return vec3<f32>(dot(w_2, _e2), dot(w_2, _e4), dot(w_2, n_8));
 }
 
 fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
@@ -943,8 +387,8 @@ fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
         return 0f;
     }
     let a2_1 = (alpha * alpha);
-    let t_3 = (((cos_h * cos_h) * a2_1) + sin2_h);
-    return ((a2_1 * INV_PI) / (t_3 * t_3));
+    let t = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t * t));
 }
 
 fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
@@ -952,122 +396,122 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
     return sqrt((((cos_ * cos_) * (1f - a2_2)) + a2_2));
 }
 
-fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_7: bool;
+fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
+    var local_5: bool;
 
-    if !((n_l_1 <= 0f)) {
-        local_7 = (n_v <= 0f);
+    if !((n_l <= 0f)) {
+        local_5 = (n_v <= 0f);
     } else {
-        local_7 = true;
+        local_5 = true;
     }
-    let _e11 = local_7;
+    let _e11 = local_5;
     if _e11 {
         return 0f;
     }
     let _e13 = smith_root(n_v, alpha_2);
-    let _e15 = smith_root(n_l_1, alpha_2);
-    return (0.5f / ((n_l_1 * _e13) + (n_v * _e15)));
+    let _e15 = smith_root(n_l, alpha_2);
+    return (0.5f / ((n_l * _e13) + (n_v * _e15)));
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_14 = saturate((1f - v_h));
-    let c2_2 = (c_14 * c_14);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_2 * c2_2) * c_14)));
+    let c_7 = saturate((1f - v_h));
+    let c2_ = (c_7 * c_7);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7)));
 }
 
-fn specular_fresnel(base_4: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
+fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
     let _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
-    let _e10 = fresnel_schlick(base_4, 1f, v_h_1);
+    let _e10 = fresnel_schlick(base, 1f, v_h_1);
     return ((_e5 * (1f - metallic)) + (_e10 * metallic));
 }
 
-fn diffuse_brdf(base_5: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32, v_h_2: f32) -> vec3<f32> {
+fn diffuse_brdf(base_1: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32, v_h_2: f32) -> vec3<f32> {
     let _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
-    return ((((vec3<f32>(1f, 1f, 1f) - _e9) * base_5) * (1f - metallic_1)) * INV_PI);
+    return ((((vec3<f32>(1f, 1f, 1f) - _e9) * base_1) * (1f - metallic_1)) * INV_PI);
 }
 
-fn half_cosine(v_2: vec3<f32>, l: vec3<f32>) -> f32 {
-    let h_3 = (v_2 + l);
-    let len2_ = dot(h_3, h_3);
+fn half_cosine(v: vec3<f32>, l: vec3<f32>) -> f32 {
+    let h_2 = (v + l);
+    let len2_ = dot(h_2, h_2);
     if (len2_ <= 0f) {
         return 0f;
     }
-    return saturate((dot(v_2, h_3) / sqrt(len2_)));
+    return saturate((dot(v, h_2) / sqrt(len2_)));
 }
 
-fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_14: vec3<f32>, v_3: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
-    var local_8: bool;
+fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_9: vec3<f32>, v_1: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
+    var local_6: bool;
 
-    let n_l_2 = dot(n_14, l_1);
-    let n_v_2 = dot(n_14, v_3);
-    if !((n_l_2 <= 0f)) {
-        local_8 = (n_v_2 <= 0f);
+    let n_l_1 = dot(n_9, l_1);
+    let n_v_2 = dot(n_9, v_1);
+    if !((n_l_1 <= 0f)) {
+        local_6 = (n_v_2 <= 0f);
     } else {
-        local_8 = true;
+        local_6 = true;
     }
-    let _e18 = local_8;
+    let _e18 = local_6;
     if _e18 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    let hs = (v_3 + l_1);
+    let hs = (v_1 + l_1);
     let inv = (1f / sqrt(dot(hs, hs)));
-    let h_4 = (hs * inv);
-    let c_15 = cross(n_14, h_4);
-    let _e32 = ggx_d(dot(n_14, h_4), dot(c_15, c_15), alpha_3);
-    let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_3, h_4));
-    let _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
+    let h_3 = (hs * inv);
+    let c_8 = cross(n_9, h_3);
+    let _e32 = ggx_d(dot(n_9, h_3), dot(c_8, c_8), alpha_3);
+    let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
+    let _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
 
-fn brdf_eval(base_7: vec3<f32>, metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32, alpha_4: f32, n_15: vec3<f32>, v_4: vec3<f32>, l_2: vec3<f32>) -> vec3<f32> {
-    if (dot(n_15, l_2) <= 0f) {
+fn brdf_eval(base_3: vec3<f32>, metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32, alpha_4: f32, n_10: vec3<f32>, v_2: vec3<f32>, l_2: vec3<f32>) -> vec3<f32> {
+    if (dot(n_10, l_2) <= 0f) {
         return vec3<f32>(0f, 0f, 0f);
     }
-    let _e15 = half_cosine(v_4, l_2);
-    let _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
-    let _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_15, v_4, l_2);
+    let _e15 = half_cosine(v_2, l_2);
+    let _e16 = diffuse_brdf(base_3, metallic_3, f0_d_3, f90_d_3, _e15);
+    let _e17 = specular_brdf(base_3, metallic_3, f0_d_3, f90_d_3, alpha_4, n_10, v_2, l_2);
     return (_e16 + _e17);
 }
 
 fn has_specular(metallic_4: f32, f0_d_4: vec3<f32>, f90_d_4: f32) -> bool {
-    var local_9: bool;
-    var local_10: bool;
+    var local_7: bool;
+    var local_8: bool;
 
     if !((metallic_4 > 0f)) {
-        local_9 = (f90_d_4 > 0f);
+        local_7 = (f90_d_4 > 0f);
     } else {
-        local_9 = true;
+        local_7 = true;
     }
-    let _e11 = local_9;
+    let _e11 = local_7;
     if !(_e11) {
-        local_10 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0f);
+        local_8 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0f);
     } else {
-        local_10 = true;
+        local_8 = true;
     }
-    let _e23 = local_10;
+    let _e23 = local_8;
     return _e23;
 }
 
-fn channel_mean(c_6: vec3<f32>) -> f32 {
-    return (((c_6.x + c_6.y) + c_6.z) * 0.33333334f);
+fn channel_mean(c_2: vec3<f32>) -> f32 {
+    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334f);
 }
 
-fn receiver_lobe(base_8: vec3<f32>, metallic_5: f32, f0_d_5: vec3<f32>, f90_d_5: f32, alpha_5: f32, n_v_1: f32) -> vec4<f32> {
-    var local_11: bool;
+fn receiver_lobe(base_4: vec3<f32>, metallic_5: f32, f0_d_5: vec3<f32>, f90_d_5: f32, alpha_5: f32, n_v_1: f32) -> vec4<f32> {
+    var local_9: bool;
 
     let _e10 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
-    let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_8) * (1f - metallic_5)));
+    let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_4) * (1f - metallic_5)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_5, f0_d_5, f90_d_5);
-        local_11 = !(_e22);
+        local_9 = !(_e22);
     } else {
-        local_11 = true;
+        local_9 = true;
     }
-    let _e25 = local_11;
+    let _e25 = local_9;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_5, n_v_1);
     }
-    let _e28 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    let _e28 = specular_fresnel(base_4, metallic_5, f0_d_5, f90_d_5, n_v_1);
     let _e29 = channel_mean(_e28);
     return vec4<f32>(_e16, _e29, alpha_5, n_v_1);
 }
@@ -1095,569 +539,166 @@ fn range_scale(lobe_2: vec4<f32>) -> f32 {
     return clamp(_e5, 1f, RANGE_SCALE_MAX);
 }
 
-fn mirror_dir(n_16: vec3<f32>, v_5: vec3<f32>) -> vec3<f32> {
-    return ((n_16 * (2f * dot(n_16, v_5))) - v_5);
+fn mirror_dir(n_11: vec3<f32>, v_3: vec3<f32>) -> vec3<f32> {
+    return ((n_11 * (2f * dot(n_11, v_3))) - v_3);
 }
 
 fn bounded_vndf_k(wi: vec3<f32>, alpha_6: f32) -> f32 {
-    let a_14 = saturate(alpha_6);
-    let s_6 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    let a2_3 = (a_14 * a_14);
-    let s2_ = (s_6 * s_6);
+    let a_9 = saturate(alpha_6);
+    let s_5 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    let a2_3 = (a_9 * a_9);
+    let s2_ = (s_5 * s_5);
     return (((1f - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
-fn ggx_vndf_sample(wi_1: vec3<f32>, alpha_7: f32, u1_2: f32, u2_2: f32) -> vec3<f32> {
-    let wi_std = normalize(vec3<f32>((wi_1.x * alpha_7), (wi_1.y * alpha_7), wi_1.z));
-    let _e12 = bounded_vndf_k(wi_1, alpha_7);
-    let b_9 = select(wi_std.z, (_e12 * wi_std.z), (wi_1.z > 0f));
-    let phi_6 = (6.2831855f * u1_2);
-    let z_4 = (((1f - u2_2) * (1f + b_9)) - b_9);
-    let sin_t = sqrt(saturate((1f - (z_4 * z_4))));
-    let m_std = (wi_std + vec3<f32>((sin_t * cos(phi_6)), (sin_t * sin(phi_6)), z_4));
-    let m_2 = normalize(vec3<f32>((m_std.x * alpha_7), (m_std.y * alpha_7), m_std.z));
-    return ((m_2 * (2f * dot(wi_1, m_2))) - wi_1);
-}
+fn ggx_vndf_pdf(wi_1: vec3<f32>, wo: vec3<f32>, alpha_7: f32) -> f32 {
+    var local_10: bool;
 
-fn ggx_vndf_pdf(wi_2: vec3<f32>, wo: vec3<f32>, alpha_8: f32) -> f32 {
-    var local_12: bool;
-
-    if !((wi_2.z <= 0f)) {
-        local_12 = (wo.z <= 0f);
+    if !((wi_1.z <= 0f)) {
+        local_10 = (wo.z <= 0f);
     } else {
-        local_12 = true;
+        local_10 = true;
     }
-    let _e13 = local_12;
+    let _e13 = local_10;
     if _e13 {
         return 0f;
     }
-    let hs_1 = (wi_2 + wo);
-    let m_3 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
-    let _e28 = ggx_d(m_3.z, ((m_3.x * m_3.x) + (m_3.y * m_3.y)), alpha_8);
-    let t_4 = sqrt((((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
-    let _e43 = bounded_vndf_k(wi_2, alpha_8);
-    return (_e28 / (2f * ((_e43 * wi_2.z) + t_4)));
+    let hs_1 = (wi_1 + wo);
+    let m_1 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
+    let _e28 = ggx_d(m_1.z, ((m_1.x * m_1.x) + (m_1.y * m_1.y)), alpha_7);
+    let t_1 = sqrt((((alpha_7 * alpha_7) * ((wi_1.x * wi_1.x) + (wi_1.y * wi_1.y))) + (wi_1.z * wi_1.z)));
+    let _e43 = bounded_vndf_k(wi_1, alpha_7);
+    return (_e28 / (2f * ((_e43 * wi_1.z) + t_1)));
 }
 
-fn bsdf_sample(n_17: vec3<f32>, v_6: vec3<f32>, alpha_9: f32, p_spec: f32, u1_3: f32, u2_3: f32) -> vec3<f32> {
-    if (u1_3 < p_spec) {
-        if (dot(n_17, v_6) <= 0f) {
-            return -(n_17);
-        }
-        let _e11 = onb_to_local(n_17, v_6);
-        let _e13 = ggx_vndf_sample(_e11, alpha_9, (u1_3 / p_spec), u2_3);
-        let _e14 = onb_to_world(n_17, _e13);
-        return normalize(_e14);
-    }
-    let _e20 = cosine_direction(n_17, ((u1_3 - p_spec) / (1f - p_spec)), u2_3);
-    return _e20;
-}
-
-fn bsdf_pdf(n_18: vec3<f32>, v_7: vec3<f32>, l_3: vec3<f32>, alpha_10: f32, p_spec_1: f32) -> f32 {
-    let _e6 = cosine_pdf(dot(n_18, l_3));
-    if (p_spec_1 <= 0f) {
+fn bsdf_pdf(n_12: vec3<f32>, v_4: vec3<f32>, l_3: vec3<f32>, alpha_8: f32, p_spec: f32) -> f32 {
+    let _e6 = cosine_pdf(dot(n_12, l_3));
+    if (p_spec <= 0f) {
         return _e6;
     }
-    let _e9 = onb_to_local(n_18, v_7);
-    let _e10 = onb_to_local(n_18, l_3);
-    let _e11 = ggx_vndf_pdf(_e9, _e10, alpha_10);
-    return ((p_spec_1 * _e11) + ((1f - p_spec_1) * _e6));
-}
-
-fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
-    if (cos_a > cos_b) {
-        return 1f;
-    }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
-}
-
-fn sin_sub_clamped(sin_a_1: f32, cos_a_1: f32, sin_b_1: f32, cos_b_1: f32) -> f32 {
-    if (cos_a_1 > cos_b_1) {
-        return 0f;
-    }
-    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
-}
-
-fn safe_sqrt(x_9: f32) -> f32 {
-    return sqrt(max(x_9, 0f));
-}
-
-fn subtended_cos(dist2_: f32, r2_6: f32) -> f32 {
-    let _e5 = safe_sqrt((1f - (r2_6 / dist2_)));
-    return select(_e5, -1f, (dist2_ <= r2_6));
-}
-
-fn emitter_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, cos_o: f32, cos_e: f32, p: vec3<f32>) -> f32 {
-    let v_15 = (p - center);
-    let dist2_1 = dot(v_15, v_15);
-    let r2_8 = (radius * radius);
-    let d2_13 = max(max(dist2_1, r2_8), MIN_D2_);
-    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_15 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
-    let cos_w = dot(axis, wi_3);
-    let _e27 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e28 = subtended_cos(dist2_1, r2_8);
-    let _e32 = safe_sqrt((1f - (_e28 * _e28)));
-    let _e36 = safe_sqrt((1f - (cos_o * cos_o)));
-    let _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
-    let _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
-    let _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
-    if (_e39 <= cos_e) {
-        return 0f;
-    }
-    return ((phi * _e39) / d2_13);
-}
-
-fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_16 = (center_1 - p_1);
-    let dist2_2 = dot(v_16, v_16);
-    let w_14 = select(vec3<f32>(0f, 0f, 0f), (v_16 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
-    let _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
-    let cos_i = dot(w_14, d_1);
-    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
-    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
-    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
-}
-
-fn light_importance(center_2: vec3<f32>, radius_2: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, p_2: vec3<f32>, n_19: vec3<f32>) -> f32 {
-    var imp: f32;
-
-    let _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if (dot(n_19, n_19) > 0f) {
-        let _e13 = imp;
-        let _e14 = cone_cos_toward(center_2, radius_2, p_2, n_19);
-        imp = (_e13 * max(_e14, 0f));
-    }
-    let _e18 = imp;
-    return max(_e18, 0f);
-}
-
-fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_20: vec3<f32>, r_3: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
-    var local_13: bool;
-
-    let _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
-    let _e11 = cone_cos_toward(center_3, radius_3, p_3, n_20);
-    if !((_e10 <= 0f)) {
-        local_13 = (_e11 <= 0f);
-    } else {
-        local_13 = true;
-    }
-    let _e20 = local_13;
-    if _e20 {
-        return 0f;
-    }
-    let _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
-    let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
-    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_3.z);
-    let _e39 = smith_root(lobe_3.w, lobe_3.z);
-    let spec = (((lobe_3.y * _e33) * 0.25f) / _e39);
-    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
-}
-
-fn receiver_importance(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, p_4: vec3<f32>, n_21: vec3<f32>, r_4: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
-    if (lobe_4.y <= 0f) {
-        let _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
-        return _e13;
-    }
-    let _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
-    return _e14;
-}
-
-fn candidate_weight(importance: f32, rt2_5: f32, d2_9: f32) -> f32 {
-    let _e3 = slc_weight(rt2_5, d2_9);
-    return (importance * _e3);
-}
-
-fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_4: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_4: f32, rt2_6: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    let v_17 = (p_5 - center_5);
-    if (lobe_5.y <= 0f) {
-        let _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
-        return _e19;
-    }
-    let _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
-    let _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
-    return _e22;
-}
-
-fn weighted_select_pdf(w_7: f32, w_sum_2: f32, in_range_1: bool, k_4: u32) -> f32 {
-    if (w_7 <= 0f) {
-        return 0f;
-    }
-    let total = select((w_sum_2 + w_7), w_sum_2, in_range_1);
-    let _e9 = to_f32_(k_4);
-    return ((_e9 * w_7) / total);
-}
-
-fn bvh_first_prob(c0_: f32, c1_2: f32) -> f32 {
-    let s_7 = (c0_ + c1_2);
-    if (s_7 > 0f) {
-        return (c0_ / s_7);
-    }
-    return -1f;
-}
-
-fn bvh_remap_u(u_4: f32, p0_: f32, first: bool) -> f32 {
-    if first {
-        return min((u_4 / p0_), ONE_MINUS_EPSILON);
-    }
-    return clamp(((u_4 - p0_) / (1f - p0_)), 0f, ONE_MINUS_EPSILON);
-}
-
-fn surface_offset(diag: f32) -> f32 {
-    return (0.00001f * diag);
-}
-
-fn ray_t_min(diag_1: f32) -> f32 {
-    return (0.000001f * diag_1);
+    let _e9 = onb_to_local(n_12, v_4);
+    let _e10 = onb_to_local(n_12, l_3);
+    let _e11 = ggx_vndf_pdf(_e9, _e10, alpha_8);
+    return ((p_spec * _e11) + ((1f - p_spec) * _e6));
 }
 
 fn shadow_margin(len: f32) -> f32 {
     return (0.0001f * len);
 }
 
-fn ray_inverse(x_10: f32) -> f32 {
-    return (1f / select(x_10, 0.000000000000000000000000000001f, (abs(x_10) < 0.000000000000000000000000000001f)));
+fn ray_inverse(x_3: f32) -> f32 {
+    return (1f / select(x_3, 0.000000000000000000000000000001f, (abs(x_3) < 0.000000000000000000000000000001f)));
 }
 
-fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
-    let _e2 = ray_inverse(d_2.x);
-    let _e4 = ray_inverse(d_2.y);
-    let _e6 = ray_inverse(d_2.z);
+fn ray_inverse3_(d: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d.x);
+    let _e4 = ray_inverse(d.y);
+    let _e6 = ray_inverse(d.z);
     return vec3<f32>(_e2, _e4, _e6);
 }
 
-fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>, t_max: f32) -> f32 {
-    let t0_ = ((bmin_1 - o) * inv_d);
-    let t1_ = ((bmax_1 - o) * inv_d);
-    let lo_3 = min(t0_, t1_);
-    let hi_3 = max(t0_, t1_);
-    let t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0f));
-    let t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
+fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_max: f32) -> f32 {
+    let t0_ = ((bmin - o) * inv_d);
+    let t1_ = ((bmax - o) * inv_d);
+    let lo_2 = min(t0_, t1_);
+    let hi_2 = max(t0_, t1_);
+    let t_in = max(max(lo_2.x, lo_2.y), max(lo_2.z, 0f));
+    let t_out = min(min(hi_2.x, hi_2.y), min(hi_2.z, t_max));
     if (t_in <= t_out) {
         return t_in;
     }
     return -1f;
 }
 
-fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> {
-    var local_14: bool;
+fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
+    var local_11: bool;
 
-    let n_37 = cross((b_4 - a_5), (c_7 - a_5));
-    let l2_ = dot(n_37, n_37);
+    let n_17 = cross((b_4 - a_4), (c_3 - a_4));
+    let l2_ = dot(n_17, n_17);
     if !(!((l2_ > 0f))) {
-        local_14 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_11 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_14 = true;
+        local_11 = true;
     }
-    let _e17 = local_14;
+    let _e17 = local_11;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_37 / vec3(sqrt(l2_)));
+    return (n_17 / vec3(sqrt(l2_)));
 }
 
-fn face_against(n_23: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
-    return select(n_23, -(n_23), (dot(n_23, dir) > 0f));
-}
+fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_12: bool;
+    var local_13: bool;
+    var local_14: bool;
 
-fn barycentric(p_6: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -> vec3<f32> {
-    let e1_1 = (b_5 - a_6);
-    let e2_1 = (c_8 - a_6);
-    let q_4 = (p_6 - a_6);
-    let d11_ = dot(e1_1, e1_1);
-    let d12_ = dot(e1_1, e2_1);
-    let d22_ = dot(e2_1, e2_1);
-    let den = ((d11_ * d22_) - (d12_ * d12_));
-    if !((abs(den) > 0f)) {
-        return vec3<f32>(1f, 0f, 0f);
-    }
-    let w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
-    let w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
-    return vec3<f32>(((1f - w1_) - w2_), w1_, w2_);
-}
-
-fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
-    var local_15: bool;
-
-    let s_8 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
-    let l2_1 = dot(s_8, s_8);
-    if !(!((l2_1 > 0.000000000001f))) {
-        local_15 = !((l2_1 < 300000000000000000000000000000000000000f));
-    } else {
-        local_15 = true;
-    }
-    let _e24 = local_15;
-    if _e24 {
-        return facing;
-    }
-    let n_38 = (s_8 / vec3(sqrt(l2_1)));
-    return select(n_38, -(n_38), (dot(n_38, facing) < 0f));
-}
-
-fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, c_9: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_16: bool;
-    var local_17: bool;
-    var local_18: bool;
-
-    let e1_2 = (b_6 - a_7);
-    let e2_2 = (c_9 - a_7);
-    let p_7 = cross(d_3, e2_2);
-    let det = dot(e1_2, p_7);
+    let e1_ = (b_5 - a_5);
+    let e2_ = (c_4 - a_5);
+    let p = cross(d_1, e2_);
+    let det = dot(e1_, p);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv_1 = (1f / det);
-    let s_9 = (o_1 - a_7);
-    let u_7 = (dot(s_9, p_7) * inv_1);
-    if !((u_7 < 0f)) {
-        local_16 = (u_7 > 1f);
+    let s_6 = (o_1 - a_5);
+    let u_1 = (dot(s_6, p) * inv_1);
+    if !((u_1 < 0f)) {
+        local_12 = (u_1 > 1f);
     } else {
-        local_16 = true;
+        local_12 = true;
     }
-    let _e28 = local_16;
+    let _e28 = local_12;
     if _e28 {
         return -1f;
     }
-    let q_5 = cross(s_9, e1_2);
-    let v_18 = (dot(d_3, q_5) * inv_1);
-    if !((v_18 < 0f)) {
-        local_17 = ((u_7 + v_18) > 1f);
+    let q = cross(s_6, e1_);
+    let v_8 = (dot(d_1, q) * inv_1);
+    if !((v_8 < 0f)) {
+        local_13 = ((u_1 + v_8) > 1f);
     } else {
-        local_17 = true;
+        local_13 = true;
     }
-    let _e42 = local_17;
+    let _e42 = local_13;
     if _e42 {
         return -1f;
     }
-    let t_5 = (dot(e2_2, q_5) * inv_1);
-    if (t_5 > t_min) {
-        local_18 = (t_5 < t_max_1);
+    let t_2 = (dot(e2_, q) * inv_1);
+    if (t_2 > t_min) {
+        local_14 = (t_2 < t_max_1);
     } else {
-        local_18 = false;
+        local_14 = false;
     }
-    let _e51 = local_18;
+    let _e51 = local_14;
     if _e51 {
-        return t_5;
+        return t_2;
     }
     return -1f;
 }
 
-fn inv_sigma_z(z: f32) -> f32 {
-    return (1f / (DEPTH_SIGMA * z));
-}
+fn finite3_(v_5: vec3<f32>) -> bool {
+    var local_15: bool;
+    var local_16: bool;
 
-fn window_start(x_11: u32, size: u32) -> u32 {
-    let half = (size / 2u);
-    return (max(x_11, half) - half);
-}
-
-fn window_end(x_12: u32, size_1: u32, extent_1: u32) -> u32 {
-    return min(((x_12 + size_1) - (size_1 / 2u)), extent_1);
-}
-
-fn wide_window(period: u32) -> u32 {
-    return (2u * period);
-}
-
-fn misses_subset(covered: u32, period_1: u32) -> bool {
-    return (covered < (period_1 * period_1));
-}
-
-fn filtered_irradiance(e: vec3<f32>, sum_1: vec3<f32>, weight: f32) -> vec3<f32> {
-    if (weight > 0f) {
-        return (sum_1 / vec3(weight));
-    }
-    return e;
-}
-
-fn bilateral_weight(n_24: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f32) -> f32 {
-    let dn = max(dot(n_24, nj), 0f);
-    let dn2_ = (dn * dn);
-    let dn4_ = (dn2_ * dn2_);
-    let dn8_ = (dn4_ * dn4_);
-    let d_8 = ((zj - z_1) * inv_sz);
-    let t_6 = max((1f - (d_8 * d_8)), 0f);
-    return (((dn8_ * dn8_) * t_6) * t_6);
-}
-
-fn interleave_subset(x_13: u32, y_2: u32, period_2: u32) -> u32 {
-    return (((y_2 % period_2) * period_2) + (x_13 % period_2));
-}
-
-fn interleave_slot(tx: u32, ty: u32, size_2: u32, period_3: u32) -> u32 {
-    let side_1 = (size_2 / period_3);
-    let _e5 = interleave_subset(tx, ty, period_3);
-    return ((((_e5 * side_1) * side_1) + ((ty / period_3) * side_1)) + (tx / period_3));
-}
-
-fn interleave_slot_linear(i_1: u32, per_subset: u32, period_4: u32) -> u32 {
-    let subsets = (period_4 * period_4);
-    return (((i_1 % subsets) * per_subset) + (i_1 / subsets));
-}
-
-fn interleave_flux_scale(period_5: u32) -> f32 {
-    let _e2 = to_f32_((period_5 * period_5));
-    return _e2;
-}
-
-fn near_block_index(tx_1: u32, ty_1: u32, size_3: u32) -> u32 {
-    let side_2 = (size_3 / 8u);
-    return ((((((ty_1 / 8u) * side_2) + (tx_1 / 8u)) * NEAR_BLOCK) + ((ty_1 % 8u) * 8u)) + (tx_1 % 8u));
-}
-
-fn near_block_tx(q: u32, size_4: u32) -> u32 {
-    return ((((q / NEAR_BLOCK) % (size_4 / 8u)) * 8u) + (q % 8u));
-}
-
-fn near_block_ty(q_1: u32, size_5: u32) -> u32 {
-    return ((((q_1 / NEAR_BLOCK) / (size_5 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
-}
-
-fn vpl_near_weight(d2_10: f32, near_r2_: f32) -> f32 {
-    if (near_r2_ <= 0f) {
-        return 0f;
-    }
-    let t_7 = clamp(((near_r2_ - d2_10) / (0.75f * near_r2_)), 0f, 1f);
-    return ((t_7 * t_7) * (3f - (2f * t_7)));
-}
-
-fn vpl_far_weight(d2_11: f32, near_r2_1: f32) -> f32 {
-    let _e2 = vpl_near_weight(d2_11, near_r2_1);
-    return (1f - _e2);
-}
-
-fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_9: f32, h_1: f32) -> vec3<f32> {
-    let sx = (((2f * px) / w_9) - 1f);
-    let sy = (1f - ((2f * py) / h_1));
-    return normalize(((forward + (right * sx)) + (up * sy)));
-}
-
-fn jittered_pixel(coord: u32, u_5: f32) -> f32 {
-    let _e2 = to_f32_(coord);
-    return (_e2 + u_5);
-}
-
-fn plays_roulette(depth: u32) -> bool {
-    return (depth >= ROULETTE_DEPTH);
-}
-
-fn sees_emission(gn: vec3<f32>, dir_1: vec3<f32>) -> bool {
-    return (dot(gn, dir_1) < 0f);
-}
-
-fn continues_path(nd: vec3<f32>, n_25: vec3<f32>, ng_1: vec3<f32>) -> bool {
-    var local_19: bool;
-
-    if (dot(nd, n_25) > 0f) {
-        local_19 = (dot(nd, ng_1) > 0f);
+    if (abs(v_5.x) <= F32_MAX) {
+        local_15 = (abs(v_5.y) <= F32_MAX);
     } else {
-        local_19 = false;
+        local_15 = false;
     }
-    let _e12 = local_19;
-    return _e12;
-}
-
-fn finite3_(v_8: vec3<f32>) -> bool {
-    var local_20: bool;
-    var local_21: bool;
-
-    if (abs(v_8.x) <= F32_MAX) {
-        local_20 = (abs(v_8.y) <= F32_MAX);
-    } else {
-        local_20 = false;
-    }
-    let _e12 = local_20;
+    let _e12 = local_15;
     if _e12 {
-        local_21 = (abs(v_8.z) <= F32_MAX);
+        local_16 = (abs(v_5.z) <= F32_MAX);
     } else {
-        local_21 = false;
+        local_16 = false;
     }
-    let _e20 = local_21;
+    let _e20 = local_16;
     return _e20;
 }
 
-fn path_survival(beta: vec3<f32>) -> f32 {
-    return clamp(max(max(beta.x, beta.y), beta.z), 0.05f, 0.95f);
-}
-
-fn light_map_coord(t_1: u32, size_6: u32) -> f32 {
-    let _e2 = to_f32_(t_1);
-    let _e7 = to_f32_(size_6);
-    return (((2f * (_e2 + 0.5f)) / _e7) - 1f);
-}
-
-fn light_map_texel(a_8: f32, size_7: u32) -> u32 {
-    let _e6 = to_f32_(size_7);
-    let _e9 = to_f32_(size_7);
-    let _e14 = to_u32_(clamp(floor((((a_8 + 1f) * 0.5f) * _e6)), 0f, (_e9 - 1f)));
-    return _e14;
-}
-
-fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_5: vec3<f32>, extent_2: f32, perspective: bool) -> f32 {
-    return (dot(rel, dir_2) / (select(1f, dot(rel, axis_5), perspective) * extent_2));
-}
-
-fn display_encode(x_14: f32) -> f32 {
-    let v_19 = max(x_14, 0f);
-    let t_8 = ((2f * v_19) / (1f + (2f * v_19)));
-    return select(((1.055f * pow(t_8, 0.41666666f)) - 0.055f), (12.92f * t_8), (t_8 <= 0.0031308f));
-}
-
-fn light_map_depth(rel_1: vec3<f32>, axis_6: vec3<f32>, perspective_1: bool) -> f32 {
-    return select(dot(rel_1, axis_6), sqrt(dot(rel_1, rel_1)), perspective_1);
-}
-
-fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
-    return (((texel_area * cos_axis) * cos_axis) * cos_axis);
-}
-
-fn point_irradiance(intensity_1: vec3<f32>, n_26: vec3<f32>, v_9: vec3<f32>) -> vec3<f32> {
-    let d2_14 = dot(v_9, v_9);
-    let cos_x_2 = (dot(n_26, v_9) / sqrt(max(d2_14, MIN_D2_)));
-    let _e11 = inverse_square(d2_14);
-    return (intensity_1 * (max(cos_x_2, 0f) * _e11));
-}
-
-fn directional_irradiance(e_1: vec3<f32>, n_27: vec3<f32>, to_light: vec3<f32>) -> vec3<f32> {
-    return (e_1 * max(dot(n_27, to_light), 0f));
-}
-
-fn perspective_texel_width(extent_3: f32, d_4: f32, z_2: f32, size_8: f32) -> f32 {
-    return ((((2f * extent_3) * d_4) * d_4) / (size_8 * z_2));
-}
-
-fn ortho_texel_width(extent_4: f32, size_9: f32) -> f32 {
-    return ((2f * extent_4) / size_9);
-}
-
-fn shadow_bias(texel: f32, cos_light_1: f32) -> f32 {
-    let c_16 = clamp(cos_light_1, 0.02f, 1f);
-    return (texel * (1.5f + (sqrt((1f - (c_16 * c_16))) / c_16)));
-}
-
-fn shadow_lit(d_5: f32, d_map: f32, bias: f32) -> bool {
-    var local_22: bool;
-
-    if !((d_map <= 0f)) {
-        local_22 = (d_5 <= (d_map + bias));
-    } else {
-        local_22 = true;
-    }
-    let _e11 = local_22;
-    return _e11;
-}
-
-fn diffuse_radiance(albedo: vec3<f32>, emission: vec3<f32>, e_2: vec3<f32>) -> vec3<f32> {
-    return (emission + ((albedo * INV_PI) * e_2));
-}
-
-fn light_intensity(l_4: GpuLight, w_10: vec3<f32>) -> vec3<f32> {
+fn light_intensity(l_4: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
     switch l_4.kind {
         case 3u: {
             let _e7 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
-            let _e9 = triangle_lobe(_e7, l_4.a, w_10);
+            let _e9 = triangle_lobe(_e7, l_4.a, w_3);
             return (l_4.intensity * _e9);
         }
         default: {
@@ -1666,9 +707,9 @@ fn light_intensity(l_4: GpuLight, w_10: vec3<f32>) -> vec3<f32> {
     }
 }
 
-fn light_point(l_5: GpuLight, u1_4: f32, u2_4: f32) -> vec3<f32> {
+fn light_point(l_5: GpuLight, u1_1: f32, u2_1: f32) -> vec3<f32> {
     if (l_5.kind == LIGHT_TRIANGLE) {
-        let _e9 = triangle_sample(l_5.p0_, l_5.p1_, l_5.p2_, u1_4, u2_4);
+        let _e9 = triangle_sample(l_5.p0_, l_5.p1_, l_5.p2_, u1_1, u2_1);
         return _e9;
     }
     return l_5.p0_;
@@ -1689,12 +730,12 @@ fn light_normal(l_7: GpuLight) -> vec3<f32> {
     return vec3(0f);
 }
 
-fn trace(o_2: vec3<f32>, d_6: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
+fn trace(o_2: vec3<f32>, d_2: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
     var node_1: u32 = 0u;
-    var i_2: u32;
+    var i: u32;
 
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -1702,29 +743,29 @@ fn trace(o_2: vec3<f32>, d_6: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         let _e13 = hit;
         return _e13;
     }
-    let _e14 = ray_inverse3_(d_6);
+    let _e14 = ray_inverse3_(d_2);
     loop {
         let _e21 = node_1;
-        let n_39 = geo_nodes[_e21];
+        let n_18 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_39.bmin, n_39.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_39.count > 0u) {
-                i_2 = n_39.first;
+            if (n_18.count > 0u) {
+                i = n_18.first;
                 loop {
-                    let _e36 = i_2;
-                    if (_e36 < (n_39.first + n_39.count)) {
+                    let _e36 = i;
+                    if (_e36 < (n_18.first + n_18.count)) {
                     } else {
                         break;
                     }
                     {
-                        let _e42 = i_2;
-                        let t_9 = geo_tris[_e42];
+                        let _e42 = i;
+                        let t_3 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_6, t_9.v0_, t_9.v1_, t_9.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_2, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
-                            let _e55 = i_2;
+                            let _e55 = i;
                             hit.tri = _e55;
                             if any_hit {
                                 let _e56 = hit;
@@ -1733,19 +774,19 @@ fn trace(o_2: vec3<f32>, d_6: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                         }
                     }
                     continuing {
-                        let _e58 = i_2;
-                        i_2 = (_e58 + 1u);
+                        let _e58 = i;
+                        i = (_e58 + 1u);
                     }
                 }
             } else {
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_39.first + 1u);
+                    stack[_e63] = (n_18.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_1 = n_39.first;
+                node_1 = n_18.first;
                 continue;
             }
         }
@@ -1763,19 +804,19 @@ fn trace(o_2: vec3<f32>, d_6: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     return _e81;
 }
 
-fn occluded(a_9: vec3<f32>, b_7: vec3<f32>) -> bool {
-    let dv = (b_7 - a_9);
+fn occluded(a_6: vec3<f32>, b_6: vec3<f32>) -> bool {
+    let dv = (b_6 - a_6);
     let len_1 = length(dv);
     if (len_1 <= 0f) {
         return false;
     }
     let _e7 = shadow_margin(len_1);
-    let _e12 = trace(a_9, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    let _e12 = trace(a_6, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
     return (_e12.tri != NO_LIGHT);
 }
 
-fn bsh_node(nodes: u32, i_3: u32) -> BshNode {
-    let _e4 = bsh_nodes[i_3];
+fn bsh_node(nodes: u32, i_1: u32) -> BshNode {
+    let _e4 = bsh_nodes[i_1];
     return _e4;
 }
 
@@ -1791,60 +832,47 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_next_leaf_scaled(nodes_3: u32, start_1: u32, x_15: vec3<f32>, scale_1: f32) -> u32 {
-    var i_4: u32;
+fn bsh_next_leaf_scaled(nodes_3: u32, start: u32, x_4: vec3<f32>, scale_1: f32) -> u32 {
+    var i_2: u32;
 
-    i_4 = start_1;
+    i_2 = start;
     loop {
-        let _e5 = i_4;
+        let _e5 = i_2;
         if (_e5 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e8 = i_4;
+            let _e8 = i_2;
             let _e9 = bsh_node(nodes_3, _e8);
             let _e11 = bsh_scaled_radius(_e9, scale_1);
-            let _e12 = sphere_contains_point(_e9.center, _e11, x_15);
+            let _e12 = sphere_contains_point(_e9.center, _e11, x_4);
             if _e12 {
                 if (_e9.child == BSH_NONE) {
-                    let _e16 = i_4;
+                    let _e16 = i_2;
                     return _e16;
                 }
-                i_4 = _e9.child;
+                i_2 = _e9.child;
             } else {
-                i_4 = _e9.next;
+                i_2 = _e9.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-fn bsh_next_leaf(nodes_4: u32, start_2: u32, x_16: vec3<f32>) -> u32 {
-    let _e4 = bsh_next_leaf_scaled(nodes_4, start_2, x_16, 1f);
-    return _e4;
-}
-
-fn bsh_children_sphere(nodes_5: u32, i_5: u32) -> vec4<f32> {
-    let _e2 = bsh_node(nodes_5, i_5);
-    let _e4 = bsh_node(nodes_5, _e2.child);
-    let _e6 = bsh_node(nodes_5, _e4.next);
-    let _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
-    return _e11;
-}
-
-fn bsh_collect(x_17: vec3<f32>, scale_2: f32, seed_3: u32) -> Picks {
+fn bsh_collect(x_5: vec3<f32>, scale_2: f32, seed_1: u32) -> Picks {
     var picks: Picks;
-    var h_2: u32;
-    var i_6: u32;
+    var h_1: u32;
+    var i_3: u32;
 
     picks.n = 0u;
-    h_2 = seed_3;
+    h_1 = seed_1;
     let _e9 = bsh_first(BSH);
-    let _e10 = bsh_next_leaf_scaled(BSH, _e9, x_17, scale_2);
-    i_6 = _e10;
+    let _e10 = bsh_next_leaf_scaled(BSH, _e9, x_5, scale_2);
+    i_3 = _e10;
     loop {
-        let _e12 = i_6;
+        let _e12 = i_3;
         if (_e12 != BSH_NONE) {
         } else {
             break;
@@ -1855,278 +883,115 @@ fn bsh_collect(x_17: vec3<f32>, scale_2: f32, seed_3: u32) -> Picks {
             if _e17 {
                 let _e19 = picks.n;
                 picks.n = (_e19 + 1u);
-                let _e22 = h_2;
+                let _e22 = h_1;
                 let _e23 = pcg_hash(_e22);
-                h_2 = _e23;
-                let hi_4 = h_2;
-                let _e25 = h_2;
+                h_1 = _e23;
+                let hi_3 = h_1;
+                let _e25 = h_1;
                 let _e26 = pcg_hash(_e25);
-                h_2 = _e26;
+                h_1 = _e26;
                 let _e28 = picks.n;
-                let _e30 = h_2;
-                let _e31 = reservoir_slot(_e28, K, hi_4, _e30);
+                let _e30 = h_1;
+                let _e31 = reservoir_slot(_e28, K, hi_3, _e30);
                 if (_e31 < K) {
-                    let _e37 = i_6;
+                    let _e37 = i_3;
                     let _e40 = bsh_nodes[_e37].light;
                     picks.light[_e31] = _e40;
                 }
             }
         }
         continuing {
-            let _e43 = i_6;
+            let _e43 = i_3;
             let _e46 = bsh_nodes[_e43].next;
-            let _e47 = bsh_next_leaf_scaled(BSH, _e46, x_17, scale_2);
-            i_6 = _e47;
+            let _e47 = bsh_next_leaf_scaled(BSH, _e46, x_5, scale_2);
+            i_3 = _e47;
         }
     }
     let _e48 = picks;
     return _e48;
 }
 
-fn connect(li: u32, x_18: vec3<f32>, n_28: vec3<f32>, ng_2: vec3<f32>, s_1: f32, w_res: f32, u1_5: f32, u2_5: f32, eps: f32) -> Connection {
-    var c_10: Connection;
-    var local_23: bool;
+fn connect(li: u32, x_6: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+    var c_5: Connection;
+    var local_17: bool;
 
-    c_10.e = vec3(0f);
+    c_5.e = vec3(0f);
     let l_8 = lights[li];
-    let _e17 = light_point(l_8, u1_5, u2_5);
-    c_10.y = _e17;
-    let _e20 = c_10.y;
-    let _e23 = r2_7[li];
-    let _e25 = connection_cosine(x_18, _e20, n_28, ng_2, (s_1 * _e23));
-    c_10.cos_x = _e25;
-    let _e27 = c_10.cos_x;
+    let _e17 = light_point(l_8, u1_2, u2_2);
+    c_5.y = _e17;
+    let _e20 = c_5.y;
+    let _e23 = r2_2[li];
+    let _e25 = connection_cosine(x_6, _e20, n_13, ng_1, (s_1 * _e23));
+    c_5.cos_x = _e25;
+    let _e27 = c_5.cos_x;
     if !((_e27 <= 0f)) {
-        let _e36 = c_10.y;
-        let _e37 = occluded((x_18 + (ng_2 * eps)), _e36);
-        local_23 = _e37;
+        let _e36 = c_5.y;
+        let _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
+        local_17 = _e37;
     } else {
-        local_23 = true;
+        local_17 = true;
     }
-    let _e39 = local_23;
+    let _e39 = local_17;
     if _e39 {
-        let _e40 = c_10;
+        let _e40 = c_5;
         return _e40;
     }
-    let _e42 = c_10.y;
-    let v_20 = (x_18 - _e42);
-    let d2_15 = dot(v_20, v_20);
-    let _e49 = light_intensity(l_8, (v_20 / vec3(sqrt(d2_15))));
-    let _e51 = c_10.cos_x;
-    let _e54 = rt2_7[li];
-    let _e56 = connection_factor(_e51, d2_15, (s_1 * _e54), w_res);
-    c_10.e = (_e49 * _e56);
-    let _e58 = c_10;
+    let _e42 = c_5.y;
+    let v_9 = (x_6 - _e42);
+    let d2_8 = dot(v_9, v_9);
+    let _e49 = light_intensity(l_8, (v_9 / vec3(sqrt(d2_8))));
+    let _e51 = c_5.cos_x;
+    let _e54 = rt2_4[li];
+    let _e56 = connection_factor(_e51, d2_8, (s_1 * _e54), w_res);
+    c_5.e = (_e49 * _e56);
+    let _e58 = c_5;
     return _e58;
 }
 
-fn mis_weight(pdf_a_2: f32, pdf_b_2: f32) -> f32 {
-    let _e2 = mis_power(pdf_a_2, pdf_b_2);
+fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
+    let _e2 = mis_power(pdf_a_1, pdf_b_1);
     return _e2;
 }
 
-fn light_weight(li_1: u32, x_19: vec3<f32>, n_29: vec3<f32>, r_6: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
-    let c_17 = light_cones[li_1];
-    let _e14 = range_scale(lobe_6);
-    let _e17 = rt2_7[li_1];
-    let _e19 = cone_weight(c_17.center, c_17.radius, c_17.phi, c_17.axis, c_17.cos_o, c_17.cos_e, (_e14 * _e17), x_19, n_29, r_6, lobe_6);
-    return _e19;
-}
-
-fn light_bvh_node(nodes_6: u32, i_7: u32) -> GpuLightBvhNode {
-    let _e4 = light_bvh[i_7];
-    return _e4;
-}
-
-fn light_bvh_count(nodes_7: u32) -> u32 {
-    return arrayLength((&light_bvh));
-}
-
-fn bvh_importance(nodes_8: u32, i_8: u32, x_20: vec3<f32>, n_30: vec3<f32>, r_7: vec3<f32>, lobe_7: vec4<f32>) -> f32 {
-    let _e6 = light_bvh_node(nodes_8, i_8);
-    let _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_20, n_30, r_7, lobe_7);
-    return _e13;
-}
-
-fn bvh_first(nodes_9: u32, i_9: u32, x_21: vec3<f32>, n_31: vec3<f32>, r_8: vec3<f32>, lobe_8: vec4<f32>) -> f32 {
-    var local_24: bool;
-
-    let _e6 = light_bvh_node(nodes_9, i_9);
-    let j = _e6.second;
-    if !((j <= (i_9 + 1u))) {
-        let _e14 = light_bvh_count(nodes_9);
-        local_24 = (j >= _e14);
-    } else {
-        local_24 = true;
-    }
-    let _e17 = local_24;
-    if _e17 {
-        return -1f;
-    }
-    let _e21 = bvh_importance(nodes_9, (i_9 + 1u), x_21, n_31, r_8, lobe_8);
-    let _e22 = bvh_importance(nodes_9, j, x_21, n_31, r_8, lobe_8);
-    let _e23 = bvh_first_prob(_e21, _e22);
-    return _e23;
-}
-
-fn bvh_pick_none() -> BvhPick {
-    return BvhPick(0u, 0f);
-}
-
-fn light_bvh_sample(nodes_10: u32, x_22: vec3<f32>, n_32: vec3<f32>, r_9: vec3<f32>, lobe_9: vec4<f32>, u_in: f32) -> BvhPick {
-    var pick: BvhPick;
-    var u_6: f32;
-    var i_10: u32 = 0u;
-    var pmf: f32 = 1f;
-    var local_25: bool;
-
-    let _e6 = bvh_pick_none();
-    pick = _e6;
-    u_6 = u_in;
-    loop {
-        let _e13 = i_10;
-        let _e14 = light_bvh_count(nodes_10);
-        if (_e13 < _e14) {
-        } else {
-            break;
-        }
-        {
-            let _e16 = i_10;
-            let _e17 = light_bvh_node(nodes_10, _e16);
-            if (_e17.second == LIGHT_BVH_LEAF) {
-                let _e21 = i_10;
-                if !((_e21 > 0u)) {
-                    let _e28 = bvh_importance(nodes_10, 0u, x_22, n_32, r_9, lobe_9);
-                    local_25 = (_e28 > 0f);
-                } else {
-                    local_25 = true;
-                }
-                let _e32 = local_25;
-                if _e32 {
-                    pick.light = _e17.light;
-                    let _e36 = pmf;
-                    pick.pmf = _e36;
-                }
-                let _e37 = pick;
-                return _e37;
-            }
-            let _e38 = i_10;
-            let _e39 = bvh_first(nodes_10, _e38, x_22, n_32, r_9, lobe_9);
-            if (_e39 < 0f) {
-                let _e42 = pick;
-                return _e42;
-            }
-            let _e43 = u_6;
-            let first_1 = (_e43 < _e39);
-            let _e45 = pmf;
-            pmf = (_e45 * select((1f - _e39), _e39, first_1));
-            let _e50 = u_6;
-            let _e51 = bvh_remap_u(_e50, _e39, first_1);
-            u_6 = _e51;
-            let _e53 = i_10;
-            i_10 = select(_e17.second, (_e53 + 1u), first_1);
-        }
-    }
-    let _e57 = pick;
-    return _e57;
-}
-
-fn light_bvh_pmf(nodes_11: u32, leaf: u32, x_23: vec3<f32>, n_33: vec3<f32>, r_10: vec3<f32>, lobe_10: vec4<f32>) -> f32 {
-    var i_11: u32 = 0u;
-    var pmf_1: f32 = 1f;
-    var local_26: bool;
-    var local_27: bool;
-
-    let _e6 = light_bvh_count(nodes_11);
-    if (leaf >= _e6) {
-        return 0f;
-    }
-    loop {
-        let _e13 = i_11;
-        let _e14 = light_bvh_count(nodes_11);
-        if (_e13 < _e14) {
-        } else {
-            break;
-        }
-        {
-            let _e16 = i_11;
-            let _e17 = light_bvh_node(nodes_11, _e16);
-            if (_e17.second == LIGHT_BVH_LEAF) {
-                let _e21 = i_11;
-                if (_e21 == leaf) {
-                    let _e25 = i_11;
-                    if !((_e25 > 0u)) {
-                        let _e32 = bvh_importance(nodes_11, 0u, x_23, n_33, r_10, lobe_10);
-                        local_27 = (_e32 > 0f);
-                    } else {
-                        local_27 = true;
-                    }
-                    let _e36 = local_27;
-                    local_26 = _e36;
-                } else {
-                    local_26 = false;
-                }
-                let _e38 = local_26;
-                if _e38 {
-                    let _e39 = pmf_1;
-                    return _e39;
-                }
-                return 0f;
-            }
-            let _e41 = i_11;
-            let _e42 = bvh_first(nodes_11, _e41, x_23, n_33, r_10, lobe_10);
-            if (_e42 < 0f) {
-                return 0f;
-            }
-            let first_2 = (leaf < _e17.second);
-            let _e48 = pmf_1;
-            pmf_1 = (_e48 * select((1f - _e42), _e42, first_2));
-            let _e54 = i_11;
-            i_11 = select(_e17.second, (_e54 + 1u), first_2);
-        }
-    }
-    return 0f;
-}
-
-fn select_pdf(li_2: u32, x_24: vec3<f32>, n_34: vec3<f32>, r_11: vec3<f32>, lobe_11: vec4<f32>, nee: u32, in_range_2: bool) -> f32 {
-    let _e8 = reservoir_select_pdf(nee, in_range_2, K);
+fn select_pdf(li_1: u32, x_7: vec3<f32>, n_14: vec3<f32>, r_1: vec3<f32>, lobe_3: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
+    let _e8 = reservoir_select_pdf(nee, in_range_1, K);
     return _e8;
 }
 
-fn light_pdf(li_3: u32, x_25: vec3<f32>, n_35: vec3<f32>, r_12: vec3<f32>, lobe_12: vec4<f32>, y_3: vec3<f32>, nee_1: u32, in_range_3: bool) -> f32 {
-    let l_9 = lights[li_3];
-    let v_21 = (x_25 - y_3);
-    let d2_16 = dot(v_21, v_21);
+fn light_pdf(li_2: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_2: vec3<f32>, lobe_4: vec4<f32>, y_1: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let l_9 = lights[li_2];
+    let v_10 = (x_8 - y_1);
+    let d2_9 = dot(v_10, v_10);
     let _e13 = light_normal(l_9);
-    let cos_y_1 = select(0f, dot(_e13, (v_21 / vec3(sqrt(d2_16)))), (d2_16 > 0f));
-    let _e22 = select_pdf(li_3, x_25, n_35, r_12, lobe_12, nee_1, in_range_3);
-    let _e23 = range_scale(lobe_12);
-    let _e26 = rt2_7[li_3];
+    let cos_y_1 = select(0f, dot(_e13, (v_10 / vec3(sqrt(d2_9)))), (d2_9 > 0f));
+    let _e22 = select_pdf(li_2, x_8, n_15, r_2, lobe_4, nee_1, in_range_2);
+    let _e23 = range_scale(lobe_4);
+    let _e26 = rt2_4[li_2];
     let _e28 = light_area(l_9);
-    let _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_16, _e28, cos_y_1);
+    let _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_9, _e28, cos_y_1);
     return _e29;
 }
 
-fn shade_pick(li_4: u32, x_26: vec3<f32>, n_36: vec3<f32>, ng_3: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_13: vec3<f32>, lobe_13: vec4<f32>, w_11: f32, nee_2: u32, u1_6: f32, u2_6: f32) -> vec3<f32> {
+fn shade_pick(li_3: u32, x_9: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>, w_4: f32, nee_2: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e12 = range_scale(lobe_13);
+    let _e12 = range_scale(lobe_5);
     let _e15 = params.eps;
-    let _e16 = connect(li_4, x_26, n_36, ng_3, _e12, w_11, u1_6, u2_6, _e15);
+    let _e16 = connect(li_3, x_9, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15);
     if (_e16.cos_x <= 0f) {
         return vec3(0f);
     }
-    let l_10 = normalize((_e16.y - x_26));
-    let _e29 = lights[li_4];
+    let l_10 = normalize((_e16.y - x_9));
+    let _e29 = lights[li_3];
     let _e30 = light_area(_e29);
     if (_e30 > 0f) {
-        let _e35 = light_pdf(li_4, x_26, n_36, r_13, lobe_13, _e16.y, nee_2, true);
-        let _e37 = specular_probability(lobe_13);
-        let _e38 = bsdf_pdf(n_36, wo_1, l_10, m.alpha, _e37);
+        let _e35 = light_pdf(li_3, x_9, n_16, r_3, lobe_5, _e16.y, nee_2, true);
+        let _e37 = specular_probability(lobe_5);
+        let _e38 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e37);
         let _e39 = mis_weight(_e35, _e38);
         mis = _e39;
     }
-    let _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_36, wo_1, l_10);
+    let _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
     let _e48 = mis;
     return ((_e45 * _e16.e) * _e48);
 }
@@ -2137,32 +1002,32 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var sum: vec3<f32> = vec3(0f);
     var s: u32 = 0u;
 
-    let i_12 = gid.x;
+    let i_4 = gid.x;
     let _e4 = params.point_count;
-    if (i_12 >= _e4) {
+    if (i_4 >= _e4) {
         return;
     }
-    let vtx = vertices[i_12];
+    let vtx = vertices[i_4];
     if (vtx.alive == 0u) {
-        candidates[i_12] = 0u;
+        candidates[i_4] = 0u;
         return;
     }
-    let x_27 = vtx.position;
-    let n_40 = vtx.normal;
-    let ng_4 = vtx.gnormal;
-    let m_4 = materials[vtx.material];
+    let x_10 = vtx.position;
+    let n_19 = vtx.normal;
+    let ng_3 = vtx.gnormal;
+    let m_2 = materials[vtx.material];
     let wo_2 = vtx.wo;
-    let _e23 = mirror_dir(n_40, wo_2);
-    let _e30 = receiver_lobe(m_4.albedo, m_4.metallic, m_4.f0_, m_4.f90_, m_4.alpha, dot(n_40, wo_2));
+    let _e23 = mirror_dir(n_19, wo_2);
+    let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_19, wo_2));
     let _e31 = range_scale(_e30);
     let scale_3 = sqrt(_e31);
     let _e35 = params.seed;
     let _e38 = params.frame;
-    let _e39 = point_stream(_e35, i_12, _e38);
+    let _e39 = point_stream(_e35, i_4, _e38);
     let _e40 = pick_stream(_e39);
     h = _e40;
-    let _e45 = bsh_collect(x_27, scale_3, _e39);
-    candidates[i_12] = _e45.n;
+    let _e45 = bsh_collect(x_10, scale_3, _e39);
+    candidates[i_4] = _e45.n;
     let _e51 = reservoir_weight(_e45.n, K);
     loop {
         let _e54 = s;
@@ -2183,7 +1048,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e67 = s;
             let _e70 = h;
             let _e71 = xi_from_bits(_e70);
-            let _e72 = shade_pick(_e45.light[_e67], x_27, n_40, ng_4, m_4, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71);
+            let _e72 = shade_pick(_e45.light[_e67], x_10, n_19, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71);
             sum = (_e65 + _e72);
         }
         continuing {
@@ -2195,8 +1060,8 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let add = (vtx.weight * _e78);
     let _e80 = finite3_(add);
     if _e80 {
-        let _e83 = radiance[i_12];
-        radiance[i_12] = (_e83 + vec4<f32>(add, 0f));
+        let _e83 = radiance[i_4];
+        radiance[i_4] = (_e83 + vec4<f32>(add, 0f));
         return;
     } else {
         return;

@@ -1,185 +1,322 @@
 //! The many-lights direct pass: SLC shading of point, spot, IES and
 //! triangle lights on an engine's G-buffer (the deferred many-lights case
 //! that clustered renderers solve with hard, biased light ranges), into a
-//! texture the engine owns.
+//! texture the engine owns, with the lights movable every frame.
 //!
-//! Recorded dispatches, in one compute pass: `gbuffer_import` (textures →
-//! shading points), `light_update` (`r² = r_t²/(1−ξ)` with
-//! `ξ = xi_for(seed, frame, light)`), `bsh_refit` (every level, deepest
-//! first), `bsh_reservoir` (BSH traversal into a k-slot reservoir, the
-//! picks RR-tested at their sampled points and weighted by `1/p · n/k`) and
-//! `irradiance_export`. The numbers are those of `slc_cpu::direct` and
-//! [`crate::direct::GpuDirect`] for the same seed and frame. **Unshadowed**:
-//! the engine owns visibility (its shadow maps, or a ray query of its own).
+//! Recorded dispatches, in one compute pass: `light_ranges` (this record's
+//! `r_t²` from each light's peak and the settings' culling, then
+//! `r² = r_t²/(1−ξ)` with `ξ = xi_for(seed, frame, light)`), `bsh_refit`
+//! (every level, deepest first, leaves moved to their lights' centres) and
+//! `direct_light`, which reads the G-buffer in place (depth unprojected, or
+//! positions) and writes the output texture: no G-buffer copy, no
+//! intermediate image. **Unshadowed**: the engine owns visibility (its
+//! shadow maps, or a ray query of its own).
 //!
 //! | input | format | size | usage | content |
 //! |---|---|---|---|---|
-//! | `position` | `Rgba32Float` or `Rgba16Float` | `width × height` | `TEXTURE_BINDING` | world position; `w > 0` where a surface is |
-//! | `normal` | `Rgba32Float` or `Rgba16Float` | `width × height` | `TEXTURE_BINDING` | world unit normal facing the camera (`w` unused) |
-//! | `output` | the descriptor's `output_format` (`Rgba16Float` or `Rgba32Float`) | `width × height` | `STORAGE_BINDING` | written: irradiance (rgb), lights in range (a); 0 where no surface |
+//! | `gbuffer.surface` | `Depth32Float` or `R32Float` (depth), or `Rgba32Float`/`Rgba16Float` (positions) as the descriptor's [`SurfaceDesc`] says | `width × height` | `TEXTURE_BINDING` | depth with the view's inverse view-projection, or world position (`w > 0` where a surface is) |
+//! | `gbuffer.normal` | `Rgba32Float` or `Rgba16Float` | `width × height` | `TEXTURE_BINDING` | world normal facing the camera (xyz; `w` unused) |
+//! | `output` | the descriptor's `output_format` (`Rgba16Float` or `Rgba32Float`) | `width × height` | `STORAGE_BINDING` | written: irradiance (rgb), lights in range (a); 0 where no surface is |
 //!
-//! The engine multiplies the irradiance by `albedo/π` (a diffuse surface).
+//! The engine multiplies the irradiance by `albedo/π` (a diffuse surface),
+//! or asks for more ([`DirectOutputs`]) and gives the G-buffer's glTF
+//! metallic-roughness material ([`MaterialInputs`]):
+//!
+//! | input | format | size | usage | content |
+//! |---|---|---|---|---|
+//! | `material.base_color` | `Rgba8Unorm`, `Rgba8UnormSrgb`, `Rgba16Float` or `Rgba32Float` | `width × height` | `TEXTURE_BINDING` | linear base colour (rgb) |
+//! | `material.metallic_roughness` | the same formats | `width × height` | `TEXTURE_BINDING` | glTF's layout: perceptual roughness (g), metallic (b) |
+//! | `specular` (`Split` only) | the output format | `width × height` | `STORAGE_BINDING` | written: the specular lobe's outgoing radiance (rgb) |
+//!
+//! `Radiance` writes the outgoing radiance toward the eye `Σ f(v, l) I cos θ / d²`
+//! with slc-core's `brdf` (the glTF 2.0 reference BRDF: Lambert diffuse
+//! weighted by `1 − F`, GGX with height-correlated Smith visibility,
+//! Schlick Fresnel, the metal/dielectric mix); `Split` writes the
+//! irradiance (the engine applies its own diffuse lobe) and, to a second
+//! target, the specular radiance. On a glossy receiver the error bound ε no
+//! longer caps one light's deviation (its derivation assumes `ρ ≤ 1/π`):
+//! a sharp highlight of a light just inside its range is weighted by `1/p`
+//! like any other pick, unbiased but noisier.
+//!
+//! **The estimator.** At a pixel `x`, the lights whose random range
+//! reaches it are the candidates (the BSH finds them). The pass shades `k`
+//! of them ([`DirectSelection`]) and weights each so that the expectation
+//! over ξ and the picks is the unculled sum `Σᵢ Iᵢ(ω) cos θ / d²`:
+//! - `Weighted { k }` (the default, `slc-weighted`): each candidate gets
+//!   `wᵢ = ĝᵢ/pᵢ` (its importance bound over its roulette probability), `k`
+//!   independent picks with probability `wᵢ/W`, each weighted `W/(k·wᵢ)`
+//!   and `1/p`. Its noise is smallest where one light dominates.
+//! - `Uniform { k }`: `k` picks uniform among the `n` candidates (Algorithm
+//!   R), weighted `n/k` and `1/p`: the paper's reservoir.
+//! - `All`: every candidate, weighted `1/p` (exact given ξ): for small
+//!   ranges; its cost grows with the number in range.
+//!
+//! With stochastic culling each light adds at most ε to a pixel's standard
+//! deviation (Lambertian receiver) and the picks add their own noise: a
+//! single frame is noisy by design. Vary `frame` every frame and
+//! accumulate (a temporal filter, or a denoiser): the mean over frames
+//! converges to the unculled light. [`Culling::None`] makes every light a
+//! candidate everywhere, so the `k` picks are spread over all of them:
+//! exact in expectation and the noisiest setting, not a reference image.
 //!
 //! ```no_run
-//! # fn frame(device: wgpu::Device, queue: wgpu::Queue, gb_position: wgpu::TextureView,
-//! #          gb_normal: wgpu::TextureView, output: wgpu::TextureView)
+//! # fn frame(device: wgpu::Device, queue: wgpu::Queue, depth: wgpu::TextureView,
+//! #          normal: wgpu::TextureView, output: wgpu::TextureView, inv_view_proj: glam::Mat4)
 //! #          -> Result<(), Box<dyn std::error::Error>> {
 //! use glam::Vec3;
-//! use slc_core::light::{Light, PointLight};
-//! use slc_core::range::RangeParams;
-//! use slc_scene::lights::LightSet;
-//! use slc_wgpu::GpuContext;
-//! use slc_wgpu::passes::{DirectFrame, DirectInputs, DirectPass, DirectPassDesc};
+//! use slc_wgpu::{GpuContext, Light, LightSet, PointLight, RangeParams};
+//! use slc_wgpu::passes::{Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, GBuffer, Surface};
 //!
 //! let gpu = GpuContext::from_device(device.clone(), queue.clone());
 //! // The engine's lights (here 10,000 points on a grid).
-//! let lights: Vec<Light> = (0..10_000)
+//! let mut lights: Vec<Light> = (0..10_000)
 //!     .map(|i| Light::Point(PointLight::new(Vec3::new((i % 100) as f32, 3.0, (i / 100) as f32), Vec3::splat(5.0)).unwrap()))
 //!     .collect();
-//! let set = LightSet::new(lights)?;
-//! let pass = DirectPass::new(&gpu, &set, &DirectPassDesc { width: 1920, height: 1080, output_format: wgpu::TextureFormat::Rgba16Float })?;
-//! let mut encoder = device.create_command_encoder(&Default::default());
-//! // ... the engine's G-buffer pass ...
-//! let frame = DirectFrame { culling: Some(RangeParams::new(0.008, 1.0)?), seed: 1, frame: 0 };
-//! pass.record(&gpu, &mut encoder, &DirectInputs { position: &gb_position, normal: &gb_normal, output: &output }, &frame)?;
-//! queue.submit([encoder.finish()]);
+//! let mut pass = DirectPass::new(&gpu, &LightSet::new(lights.clone())?, &DirectPassDesc::new(1920, 1080))?;
+//! for frame in 0..3 {
+//!     // The lights move: rewritten in place, no pipeline rebuilt.
+//!     lights[0] = Light::Point(PointLight::new(Vec3::new(frame as f32, 3.0, 0.0), Vec3::splat(5.0))?);
+//!     pass.update_lights(&lights)?;
+//!     let mut encoder = device.create_command_encoder(&Default::default());
+//!     // ... the engine's depth and normal passes ...
+//!     let gbuffer = GBuffer { surface: Surface::Depth { depth: &depth, inv_view_proj }, normal: &normal, eye: Vec3::new(0.0, 1.7, 5.0) };
+//!     let settings = DirectSettings { culling: Culling::Stochastic(RangeParams::new(0.008, 1.0)?), seed: 1, frame };
+//!     pass.record(&mut encoder, &DirectInputs::new(gbuffer, &output), &settings)?;
+//!     queue.submit([encoder.finish()]);
+//! }
 //! # Ok(()) }
 //! ```
 
-use super::{check_gbuffer, check_view, output_format};
-use crate::direct::reservoir_pipeline;
-use crate::kernel::{B, layout, pipeline, zeroed};
-use crate::lights::{GpuLightSet, WG};
+use super::{Culling, GBuffer, RECORDS_PER_SUBMISSION, RecordSlots, SurfaceDesc, ViewCache, check_size, check_view, output_format};
+use crate::kernel::{KernelLayout, UniformSlots, check_kernels};
+use crate::lights::{GpuLightSet, TABLES, WG, check_light_limits, light_set, types_within};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
-use slc_core::range::RangeParams;
+use slc_core::light::Light;
 use slc_scene::lights::LightSet;
-use slc_shared_shaders::layout::{ImageParams, ShadeParams};
-use slc_shared_shaders::{Features, Kernel, generate};
-use wgpu::util::DeviceExt;
+use slc_shared_shaders::layout::{CullParams, ViewParams};
+use slc_shared_shaders::{DirectOutput, Features, Kernel, Selection};
 
 /// Tile edge of the 2-D kernels, in pixels.
-const TILE: u32 = crate::vpl::TILE;
+const TILE: u32 = 8;
+
+/// How the direct pass picks among the lights in range at a pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DirectSelection {
+    /// `k` importance-weighted picks (`slc-weighted`), `k` in `1..=64`.
+    Weighted {
+        /// Picks per pixel.
+        k: u32,
+    },
+    /// `k` uniform picks (a `k`-slot reservoir), `k` in `1..=64`.
+    Uniform {
+        /// Picks per pixel.
+        k: u32,
+    },
+    /// Every light in range (exact given ξ).
+    All,
+}
+
+/// The dielectric part of the glTF material: its Fresnel reflectance at
+/// normal (`f0`) and grazing (`f90`) incidence; glTF's default (IOR 1.5)
+/// is `0.04` and `1`, `KHR_materials_specular` scales and tints them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dielectric {
+    /// `F0_d` (RGB).
+    pub f0: Vec3,
+    /// `F90_d`.
+    pub f90: f32,
+}
+
+impl Default for Dielectric {
+    /// glTF's default: IOR 1.5.
+    fn default() -> Self {
+        Dielectric { f0: Vec3::splat(0.04), f90: 1.0 }
+    }
+}
+
+/// What the direct pass writes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum DirectOutputs {
+    /// Irradiance (rgb) and the lights in range (a); the engine applies
+    /// its BRDF.
+    Irradiance,
+    /// Outgoing radiance toward the eye under the G-buffer's glTF
+    /// material ([`MaterialInputs`]), and the lights in range (a).
+    Radiance(Dielectric),
+    /// Irradiance into the output and the specular lobe's outgoing
+    /// radiance into [`DirectInputs::specular`].
+    Split(Dielectric),
+}
+
+/// The G-buffer's glTF metallic-roughness material (see the module table).
+#[derive(Clone, Copy, Debug)]
+pub struct MaterialInputs<'a> {
+    /// Linear base colour (rgb).
+    pub base_color: &'a wgpu::TextureView,
+    /// Perceptual roughness (g) and metallic (b), glTF's layout.
+    pub metallic_roughness: &'a wgpu::TextureView,
+}
+
+/// The formats the material textures are read in.
+const MATERIAL_FORMATS: [wgpu::TextureFormat; 4] =
+    [wgpu::TextureFormat::Rgba8Unorm, wgpu::TextureFormat::Rgba8UnormSrgb, wgpu::TextureFormat::Rgba16Float, wgpu::TextureFormat::Rgba32Float];
 
 /// What a [`DirectPass`] is built for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DirectPassDesc {
     /// G-buffer and output width.
     pub width: u32,
     /// G-buffer and output height.
     pub height: u32,
+    /// Where the G-buffer's surface comes from.
+    pub surface: SurfaceDesc,
     /// Format of the output storage texture: `Rgba16Float` or `Rgba32Float`.
     pub output_format: wgpu::TextureFormat,
+    /// How lights in range are picked.
+    pub selection: DirectSelection,
+    /// The light types compiled in: lights given later
+    /// ([`DirectPass::update_lights`], [`DirectPass::set_lights`]) must be
+    /// of these types.
+    pub light_types: slc_shared_shaders::LightSet,
+    /// Records of this pass one submission may hold (uniform slots).
+    pub records_per_submission: u32,
+    /// What the pass writes.
+    pub outputs: DirectOutputs,
 }
 
-/// The engine's resources for one frame.
+impl DirectPassDesc {
+    /// `width × height`, a standard `Depth32Float` depth buffer,
+    /// `Rgba16Float` output, 8 weighted picks, point, spot, IES and
+    /// triangle lights, [`RECORDS_PER_SUBMISSION`] records per submission.
+    pub fn new(width: u32, height: u32) -> DirectPassDesc {
+        DirectPassDesc {
+            width,
+            height,
+            surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float, reversed: false },
+            output_format: wgpu::TextureFormat::Rgba16Float,
+            selection: DirectSelection::Weighted { k: 8 },
+            light_types: slc_shared_shaders::LightSet { point: true, spot: true, ies: true, triangle: true, vpl: false },
+            records_per_submission: RECORDS_PER_SUBMISSION,
+            outputs: DirectOutputs::Irradiance,
+        }
+    }
+}
+
+/// The engine's resources for one record.
 #[derive(Clone, Copy, Debug)]
 pub struct DirectInputs<'a> {
-    /// G-buffer world positions (`w > 0`: surface).
-    pub position: &'a wgpu::TextureView,
-    /// G-buffer unit normals facing the camera.
-    pub normal: &'a wgpu::TextureView,
-    /// Where the irradiance goes.
+    /// The G-buffer.
+    pub gbuffer: GBuffer<'a>,
+    /// Where the irradiance (or radiance) goes.
     pub output: &'a wgpu::TextureView,
+    /// The material, for [`DirectOutputs::Radiance`] and
+    /// [`DirectOutputs::Split`].
+    pub material: Option<MaterialInputs<'a>>,
+    /// The specular radiance's target, for [`DirectOutputs::Split`].
+    pub specular: Option<&'a wgpu::TextureView>,
 }
 
-/// Per-frame settings of the direct pass.
-#[derive(Clone, Copy, Debug)]
-pub struct DirectFrame {
-    /// SLC's error bound and exposure (`r_t²` per light); `None` keeps
-    /// every light in range (`r_t² = ∞`: unculled, the reference).
-    pub culling: Option<RangeParams>,
-    /// Seed of the per-light ξ and the reservoir's random numbers.
+impl<'a> DirectInputs<'a> {
+    /// Inputs for [`DirectOutputs::Irradiance`]: the G-buffer and the output.
+    pub fn new(gbuffer: GBuffer<'a>, output: &'a wgpu::TextureView) -> Self {
+        DirectInputs { gbuffer, output, material: None, specular: None }
+    }
+}
+
+/// Per-record settings of the direct pass: all it honours.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DirectSettings {
+    /// How lights are culled.
+    pub culling: Culling,
+    /// Seed of the per-light ξ and the picks' random numbers.
     pub seed: u32,
-    /// Frame number (a new ξ set per frame).
+    /// Frame number (a new ξ set and new picks per frame).
     pub frame: u32,
 }
 
-/// SLC direct light from a [`LightSet`] on an engine's G-buffer (see the
+/// SLC direct light from a light set on an engine's G-buffer (see the
 /// module docs for the inputs it expects).
 pub struct DirectPass {
+    gpu: GpuContext,
     desc: DirectPassDesc,
     set: GpuLightSet,
-    image: wgpu::Buffer,
-    shade_params: wgpu::Buffer,
-    points: wgpu::Buffer,
-    irradiance: wgpu::Buffer,
-    import: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
-    reservoir: wgpu::ComputePipeline,
-    reservoir_group: wgpu::BindGroup,
-    export: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
-    normals: wgpu::Buffer,
+    ranges: (wgpu::ComputePipeline, KernelLayout),
+    ranges_group: wgpu::BindGroup,
+    shade: (wgpu::ComputePipeline, KernelLayout),
+    lights_group: wgpu::BindGroup,
+    cull: UniformSlots,
+    view: UniformSlots,
+    slots: RecordSlots,
+    cache: ViewCache<Vec<wgpu::TextureView>>,
 }
 
 impl DirectPass {
-    /// Uploads the lights and their BSH and builds the pipelines and
-    /// intermediate buffers for `desc`; checks the sizes and device limits
-    /// first.
+    /// Uploads the lights and their BSH and builds the pipelines for
+    /// `desc`; checks the sizes, the light types and every device limit
+    /// first, before anything is created on the device.
     pub fn new(gpu: &GpuContext, lights: &LightSet, desc: &DirectPassDesc) -> Result<Self, GpuError> {
         let (w, h) = (desc.width, desc.height);
-        if w == 0 || h == 0 {
-            return Err(GpuError::Setting(format!("direct pass: image size {w}×{h} must be non-zero")));
-        }
+        check_size(gpu, "direct pass", (w, h), TILE)?;
         let output = output_format(desc.output_format)?;
-        let pixels = w as u64 * h as u64;
-        let lim = &gpu.limits;
-        gpu.require("max_storage_buffer_binding_size (G-buffer)", pixels * 16, lim.max_storage_buffer_binding_size)?;
-        let groups = lim.max_compute_workgroups_per_dimension as u64;
-        gpu.require("max_compute_workgroups_per_dimension", w.div_ceil(TILE).max(h.div_ceil(TILE)) as u64, groups)?;
-        gpu.require("max_compute_workgroups_per_dimension (pixels)", pixels.div_ceil(WG as u64), groups)?;
-        gpu.require("max_storage_textures_per_shader_stage", 1, lim.max_storage_textures_per_shader_stage as u64)?;
-        let set = GpuLightSet::new(gpu, lights.lights(), lights.bounds(), lights.bsh(), &[], &[], None)?;
-        let (reservoir, reservoir_layout) = reservoir_pipeline(gpu, &set)?;
-        let base = Features { tile_size: TILE, workgroup_size: WG, output_format: output, ..Features::default() };
-        let kernel = |k: Kernel, l: &wgpu::BindGroupLayout| -> Result<wgpu::ComputePipeline, GpuError> {
-            Ok(pipeline(gpu, k.name(), generate(k, &base)?, &[l]))
+        let surface = desc.surface.source()?;
+        let (selection, k) = match desc.selection {
+            DirectSelection::Weighted { k } => (Selection::Weighted, k),
+            DirectSelection::Uniform { k } => (Selection::Reservoir, k),
+            DirectSelection::All => (Selection::All, 1),
         };
-        use B::*;
-        let import_layout = layout(gpu, "gbuffer_import", &[(0, Uniform), (1, Texture), (2, Texture), (3, Write), (4, Write), (5, Write)]);
-        let export_layout = layout(gpu, "irradiance_export", &[(0, Uniform), (1, Read), (2, Read), (3, Storage(desc.output_format))]);
-        let rw = wgpu::BufferUsages::STORAGE;
-        let points = zeroed(gpu, "slc direct points", pixels * 16, rw);
-        let normals = zeroed(gpu, "slc direct normals", pixels * 16, rw);
-        let irradiance = zeroed(gpu, "slc direct irradiance", pixels * 16, rw);
-        let uniform = |label: &str, bytes: &[u8]| {
-            gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some(label),
-                contents: bytes,
-                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            })
+        if !(1..=64).contains(&k) {
+            return Err(GpuError::Setting(format!("direct pass: k = {k} picks must be in 1..=64")));
+        }
+        if desc.light_types.is_empty() || !types_within(light_set(lights.lights()), desc.light_types) {
+            return Err(GpuError::Setting(format!(
+                "direct pass: the lights are [{}], the pass compiles [{}]",
+                light_set(lights.lights()).names().join(", "),
+                desc.light_types.names().join(", ")
+            )));
+        }
+        let direct_output = match desc.outputs {
+            DirectOutputs::Irradiance => DirectOutput::Irradiance,
+            DirectOutputs::Radiance(d) | DirectOutputs::Split(d) => {
+                if !(d.f0.is_finite() && d.f0.min_element() >= 0.0 && d.f90.is_finite() && d.f90 >= 0.0) {
+                    return Err(GpuError::Setting(format!("direct pass: dielectric F0 {} and F90 {} must be finite and non-negative", d.f0, d.f90)));
+                }
+                if matches!(desc.outputs, DirectOutputs::Radiance(_)) { DirectOutput::Radiance } else { DirectOutput::Split }
+            }
         };
-        let image = uniform("slc direct image", bytemuck::bytes_of(&ImageParams { eye: Vec3::ZERO, width: w, height: h, pad0: 0, pad1: 0, pad2: 0 }));
-        let shade_params =
-            uniform("slc direct shade params", bytemuck::bytes_of(&ShadeParams { point_count: (pixels) as u32, seed: 0, frame: 0, eps: 0.0 }));
-        let b = crate::kernel::whole;
-        let reservoir_group = crate::kernel::group(
+        let features = Features {
+            direct_output,
+            lights: desc.light_types,
+            reservoir_k: k,
+            selection,
+            surface,
+            output_format: output,
+            tile_size: TILE,
+            workgroup_size: WG,
+            shadows: false,
+            ..Features::default()
+        };
+        check_light_limits(gpu, lights.len() as u64, 0)?;
+        check_kernels(
             gpu,
-            "bsh_reservoir",
-            &reservoir_layout,
             &[
-                (0, b(&shade_params)),
-                (1, b(&points)),
-                (2, b(&normals)),
-                (3, b(&set.lights)),
-                (4, b(&set.rt2)),
-                (5, b(&set.r2)),
-                (6, b(&set.bsh)),
-                (9, b(&irradiance)),
+                (Kernel::LightRanges, &features, 0),
+                (Kernel::DirectLight, &features, 0),
+                (Kernel::LightUpdate, &features, TABLES),
+                (Kernel::BshRefit, &features, TABLES),
             ],
-        );
-        let s = DirectPass {
-            desc: *desc,
-            import: (kernel(Kernel::GbufferImport, &import_layout)?, import_layout),
-            export: (kernel(Kernel::IrradianceExport, &export_layout)?, export_layout),
-            set,
-            image,
-            shade_params,
-            points,
-            normals,
-            irradiance,
-            reservoir,
-            reservoir_group,
-        };
+        )?;
+        let set = GpuLightSet::new(gpu, lights.lights(), lights.bounds(), lights.bsh(), &[], lights.cones(), None)?;
+        let ranges_layout = KernelLayout::new(gpu, Kernel::LightRanges, &features)?;
+        let shade_layout = KernelLayout::new(gpu, Kernel::DirectLight, &features)?;
+        let ranges = (ranges_layout.pipeline(gpu, &features, None)?, ranges_layout);
+        let shade = (shade_layout.pipeline(gpu, &features, None)?, shade_layout);
+        let slots = RecordSlots::new(desc.records_per_submission);
+        let cull = UniformSlots::new::<CullParams>(gpu, "slc direct cull", slots.len());
+        let view = UniformSlots::new::<ViewParams>(gpu, "slc direct view", slots.len());
+        let (ranges_group, lights_group) = groups(gpu, &set, &ranges.1, &shade.1, &cull, selection == Selection::Weighted, desc.light_types.ies);
+        let s =
+            DirectPass { gpu: gpu.clone(), desc: *desc, set, ranges, ranges_group, shade, lights_group, cull, view, slots, cache: ViewCache::new() };
         gpu.take_errors()?;
         Ok(s)
     }
@@ -189,59 +326,167 @@ impl DirectPass {
         &self.desc
     }
 
+    /// Number of lights.
+    pub fn light_count(&self) -> u32 {
+        self.set.n
+    }
+
+    /// Moves, turns or recolours the lights: `lights` holds as many lights
+    /// as the pass has (light `i` replaces light `i`), of the compiled-in
+    /// types. Their records, bounds and importance cones are rewritten in
+    /// place (staged for the next submission) and every record refits the
+    /// BSH to them on the GPU; no pipeline or bind group is rebuilt. The
+    /// tree keeps the topology it was built with, so lights that wander far
+    /// make it looser (slower, never wrong): [`DirectPass::set_lights`]
+    /// builds it anew.
+    pub fn update_lights(&mut self, lights: &[Light]) -> Result<(), GpuError> {
+        self.check_types(lights)?;
+        if self.set.update(&self.gpu, lights)? {
+            self.remake_groups();
+        }
+        Ok(())
+    }
+
+    /// Replaces the lights with `lights` (any count): new light buffers and
+    /// BSH (built on the CPU by [`LightSet::new`]), new bind groups, the
+    /// same pipelines.
+    pub fn set_lights(&mut self, lights: &LightSet) -> Result<(), GpuError> {
+        self.check_types(lights.lights())?;
+        check_light_limits(&self.gpu, lights.len() as u64, 0)?;
+        self.set.replace(&self.gpu, lights)?;
+        self.remake_groups();
+        Ok(())
+    }
+
+    fn check_types(&self, lights: &[Light]) -> Result<(), GpuError> {
+        let types = light_set(lights);
+        if !types_within(types, self.desc.light_types) {
+            return Err(GpuError::Setting(format!(
+                "direct pass: lights of types [{}], the pass compiles [{}] (DirectPassDesc::light_types)",
+                types.names().join(", "),
+                self.desc.light_types.names().join(", ")
+            )));
+        }
+        Ok(())
+    }
+
+    fn remake_groups(&mut self) {
+        let weighted = matches!(self.desc.selection, DirectSelection::Weighted { .. });
+        (self.ranges_group, self.lights_group) =
+            groups(&self.gpu, &self.set, &self.ranges.1, &self.shade.1, &self.cull, weighted, self.desc.light_types.ies);
+    }
+
     /// Checks `inputs` against the descriptor (formats, sizes, usages).
     pub fn check(&self, inputs: &DirectInputs) -> Result<(), GpuError> {
+        self.check_inputs(inputs, 0, 0).map(|_| ())
+    }
+
+    fn check_inputs(&self, inputs: &DirectInputs, seed: u32, frame: u32) -> Result<ViewParams, GpuError> {
         let size = (self.desc.width, self.desc.height);
-        check_gbuffer(inputs.position, inputs.normal, size)?;
-        check_view("output", inputs.output, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)
+        let mut view = inputs.gbuffer.check(self.desc.surface, size, seed, frame)?;
+        let storage = wgpu::TextureUsages::STORAGE_BINDING;
+        check_view("output", inputs.output, size, &[self.desc.output_format], storage)?;
+        let missing = |name, what: &str| GpuError::Binding { name, expected: what.into(), found: "none".into() };
+        let (material, split) = match self.desc.outputs {
+            DirectOutputs::Irradiance => (None, false),
+            DirectOutputs::Radiance(d) => (Some(d), false),
+            DirectOutputs::Split(d) => (Some(d), true),
+        };
+        if let Some(d) = material {
+            let m = inputs.material.ok_or_else(|| missing("material", "the G-buffer's base colour and metallic-roughness"))?;
+            let tex = wgpu::TextureUsages::TEXTURE_BINDING;
+            check_view("material base colour", m.base_color, size, &MATERIAL_FORMATS, tex)?;
+            check_view("material metallic-roughness", m.metallic_roughness, size, &MATERIAL_FORMATS, tex)?;
+            (view.f0_d, view.f90_d) = (d.f0, d.f90);
+        }
+        if split {
+            let s = inputs.specular.ok_or_else(|| missing("specular", "a target for the specular radiance"))?;
+            check_view("specular", s, size, &[self.desc.output_format], storage)?;
+        }
+        Ok(view)
     }
 
     /// Records the frame into `encoder` (one compute pass) and stages its
-    /// uniforms (seed, frame, `r_t²`) for the next submission; checks the
-    /// inputs first and records nothing when they are wrong.
-    pub fn record(&self, gpu: &GpuContext, encoder: &mut wgpu::CommandEncoder, inputs: &DirectInputs, frame: &DirectFrame) -> Result<(), GpuError> {
-        self.check(inputs)?;
+    /// uniforms in this record's slot; checks the inputs and settings first
+    /// and records nothing when they are wrong. Creates nothing on the
+    /// device when the views are those of a recent record.
+    pub fn record(&mut self, encoder: &mut wgpu::CommandEncoder, inputs: &DirectInputs, settings: &DirectSettings) -> Result<(), GpuError> {
+        let view = self.check_inputs(inputs, settings.seed, settings.frame)?;
+        let (slc, fixed_r2) = settings.culling.kernel_form()?;
+        let (mode, exposure, error_bound) = match settings.culling {
+            Culling::Stochastic(p) => (p.measure().mode(), p.exposure(), p.error_bound()),
+            _ => (0, 1.0, 1.0),
+        };
+        let slot = self.slots.take();
+        let cull = CullParams {
+            light_count: self.set.n,
+            seed: settings.seed,
+            frame: settings.frame,
+            slc: slc as u32,
+            mode,
+            exposure,
+            error_bound,
+            fixed_r2,
+            unculled: f32::INFINITY,
+            pad0: 0,
+            pad1: 0,
+            pad2: 0,
+        };
+        self.cull.write_slot(&self.gpu, slot, &cull);
+        self.view.write_slot(&self.gpu, slot, &view);
+        let g = inputs.gbuffer;
+        let tex = wgpu::BindingResource::TextureView;
+        let mut views =
+            vec![("view", None), (g.surface_name(), Some(g.surface_view())), ("normal_tex", Some(g.normal)), ("out_tex", Some(inputs.output))];
+        if self.desc.outputs != DirectOutputs::Irradiance
+            && let Some(m) = inputs.material
+        {
+            views.extend([("base_color_tex", Some(m.base_color)), ("metal_rough_tex", Some(m.metallic_roughness))]);
+        }
+        if matches!(self.desc.outputs, DirectOutputs::Split(_))
+            && let Some(s) = inputs.specular
+        {
+            views.push(("specular_tex", Some(s)));
+        }
+        let key: Vec<wgpu::TextureView> = views.iter().filter_map(|(_, v)| v.cloned()).collect();
+        let (gpu, shade, view_slots) = (&self.gpu, &self.shade.1, &self.view);
+        let group0 = self.cache.get(key, || {
+            let res: Vec<(&str, wgpu::BindingResource)> =
+                views.iter().map(|&(name, v)| (name, v.map_or_else(|| view_slots.binding(), tex))).collect();
+            shade.group(gpu, 0, &res)
+        });
         let (w, h) = (self.desc.width, self.desc.height);
-        let sp = ShadeParams { point_count: w * h, seed: frame.seed, frame: frame.frame, eps: 0.0 };
-        gpu.queue.write_buffer(&self.shade_params, 0, bytemuck::bytes_of(&sp));
-        self.set.set_threshold(gpu, frame.culling.as_ref());
-        self.set.set_frame(gpu, frame.seed, frame.frame);
-        let group = |label: &str, layout: &wgpu::BindGroupLayout, res: &[(u32, wgpu::BindingResource)]| crate::kernel::group(gpu, label, layout, res);
-        let import = group(
-            "gbuffer_import",
-            &self.import.1,
-            &[
-                (0, self.image.as_entire_binding()),
-                (1, wgpu::BindingResource::TextureView(inputs.position)),
-                (2, wgpu::BindingResource::TextureView(inputs.normal)),
-                (3, self.points.as_entire_binding()),
-                (4, self.normals.as_entire_binding()),
-                (5, self.irradiance.as_entire_binding()),
-            ],
-        );
-        let export = group(
-            "irradiance_export",
-            &self.export.1,
-            &[
-                (0, self.image.as_entire_binding()),
-                (1, self.points.as_entire_binding()),
-                (2, self.irradiance.as_entire_binding()),
-                (3, wgpu::BindingResource::TextureView(inputs.output)),
-            ],
-        );
-        let (gx, gy) = (w.div_ceil(TILE), h.div_ceil(TILE));
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc direct"), timestamp_writes: None });
-        pass.set_pipeline(&self.import.0);
-        pass.set_bind_group(0, &import, &[]);
-        pass.dispatch_workgroups(gx, gy, 1);
-        self.set.encode(&mut pass);
-        pass.set_pipeline(&self.reservoir);
-        pass.set_bind_group(0, &self.reservoir_group, &[]);
-        pass.set_bind_group(1, &self.set.ies_table, &[]);
-        pass.dispatch_workgroups((w * h).div_ceil(WG), 1, 1);
-        pass.set_pipeline(&self.export.0);
-        pass.set_bind_group(0, &export, &[]);
-        pass.dispatch_workgroups(gx, gy, 1);
+        pass.set_pipeline(&self.ranges.0);
+        pass.set_bind_group(0, &self.ranges_group, &[self.cull.offset(slot)]);
+        pass.dispatch_workgroups(self.set.n.div_ceil(WG), 1, 1);
+        self.set.encode_refit(&mut pass);
+        pass.set_pipeline(&self.shade.0);
+        pass.set_bind_group(0, &group0, &[self.view.offset(slot)]);
+        pass.set_bind_group(1, &self.lights_group, &[]);
+        pass.dispatch_workgroups(w.div_ceil(TILE), h.div_ceil(TILE), 1);
         Ok(())
     }
+}
+
+/// `light_ranges`' group 0 and `direct_light`'s group 1 over `set`.
+fn groups(
+    gpu: &GpuContext,
+    set: &GpuLightSet,
+    ranges: &KernelLayout,
+    shade: &KernelLayout,
+    cull: &UniformSlots,
+    weighted: bool,
+    ies: bool,
+) -> (wgpu::BindGroup, wgpu::BindGroup) {
+    let res = crate::kernel::whole;
+    let ranges_group = ranges.group(gpu, 0, &[("params", cull.binding()), ("peaks", res(&set.peaks)), ("rt2", res(&set.rt2)), ("r2", res(&set.r2))]);
+    let mut lights = vec![("lights", res(&set.lights)), ("rt2", res(&set.rt2)), ("r2", res(&set.r2)), ("bsh_nodes", res(&set.bsh))];
+    if weighted {
+        lights.push(("light_cones", res(&set.cones)));
+    }
+    if ies {
+        lights.push(("slc_table", res(&set.table_buf)));
+    }
+    (ranges_group, shade.group(gpu, 1, &lights))
 }

@@ -14,8 +14,8 @@
 //!
 //! | input | format | size | usage | content |
 //! |---|---|---|---|---|
-//! | `position` | `Rgba32Float` or `Rgba16Float` | `width × height` | `TEXTURE_BINDING` | world position; `w > 0` where a surface is |
-//! | `normal` | `Rgba32Float` or `Rgba16Float` | `width × height` | `TEXTURE_BINDING` | world unit normal facing the camera (`w` unused) |
+//! | `gbuffer.surface` | `Depth32Float` or `R32Float` (depth), or `Rgba32Float`/`Rgba16Float` (positions) as the descriptor's [`SurfaceDesc`] says | `width × height` | `TEXTURE_BINDING` | depth with the view's inverse view-projection, or world position (`w > 0` where a surface is) |
+//! | `gbuffer.normal` | `Rgba32Float` or `Rgba16Float` | `width × height` | `TEXTURE_BINDING` | world normal facing the camera (xyz; `w` unused) |
 //! | RSM `position`, `normal`, `flux` | `Rgba32Float` or `Rgba16Float` | `s × s`, `s` a multiple of 8 | `TEXTURE_BINDING` | per texel the surface the light sees, its normal and the flux it reflects (incident × albedo); zero flux where nothing is hit; a texel's flux shrinks as `1/s²`, so prefer `Rgba32Float` for flux (half floats go subnormal below 6·10⁻⁵: at 256² a half-float flux target zeroed 28% of the default box's lit texels) |
 //! | VPL buffer | [`GpuVplRecord`] array | `count` records, `count` a multiple of 64 | `STORAGE` | position, normal, flux |
 //! | `output` | the `output_format` of the descriptor (`Rgba16Float` or `Rgba32Float`) | `width × height` | `STORAGE_BINDING` | written: irradiance (rgb), lights kept (a); 0 where no surface |
@@ -24,48 +24,41 @@
 //! wrong format, size or usage is a [`GpuError::Binding`] before anything is
 //! recorded; limits the device lacks are [`GpuError::Limit`]s at
 //! [`IndirectPass::new`]. The pass keeps its own intermediate buffers
-//! (G-buffer copies, light buffer, ranges, irradiance): one `record` per
-//! frame, since a second one in the same submission overwrites them.
+//! (the G-buffer as the interleaved kernels read it, light buffer, ranges,
+//! irradiance), reused by every record: records run in order, and each
+//! has its own uniform slot, so several may share a submission.
 //!
 //! ```no_run
 //! # fn frame(device: wgpu::Device, queue: wgpu::Queue, gb_position: wgpu::TextureView,
 //! #          gb_normal: wgpu::TextureView, rsm: [wgpu::TextureView; 3], output: wgpu::TextureView)
-//! #          -> Result<(), slc_wgpu::GpuError> {
-//! use slc_scene::vpl::VplSettings;
-//! use slc_wgpu::GpuContext;
-//! use slc_wgpu::passes::{IndirectFrame, IndirectInputs, IndirectPass, IndirectPassDesc, VplInput, VplSourceDesc};
+//! #          -> Result<(), Box<dyn std::error::Error>> {
+//! use slc_wgpu::{GpuContext, RangeParams};
+//! use slc_wgpu::passes::{Culling, GBuffer, IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings, Surface, VplInput, VplSourceDesc};
 //!
 //! let gpu = GpuContext::from_device(device.clone(), queue.clone());
-//! let pass = IndirectPass::new(&gpu, &IndirectPassDesc {
-//!     width: 1920,
-//!     height: 1080,
-//!     vpls: VplSourceDesc::Rsm { size: 256 },
-//!     output_format: wgpu::TextureFormat::Rgba16Float,
-//! })?;
+//! let mut pass = IndirectPass::new(&gpu, &IndirectPassDesc::new(1920, 1080, VplSourceDesc::Rsm { size: 256 }))?;
 //! let mut encoder = device.create_command_encoder(&Default::default());
 //! // ... the engine's G-buffer and RSM passes ...
 //! let inputs = IndirectInputs {
-//!     position: &gb_position,
-//!     normal: &gb_normal,
+//!     gbuffer: GBuffer { surface: Surface::Position(&gb_position), normal: &gb_normal, eye: glam::Vec3::new(0.0, 1.0, 3.5) },
 //!     vpls: VplInput::Rsm { position: &rsm[0], normal: &rsm[1], flux: &rsm[2] },
 //!     output: &output,
 //! };
-//! let frame = IndirectFrame { settings: VplSettings::default(), eye: glam::Vec3::new(0.0, 1.0, 3.5), min_distance: 0.05 };
-//! pass.record(&gpu, &mut encoder, &inputs, &frame)?;
+//! let settings = IndirectSettings { culling: Culling::Stochastic(RangeParams::new(0.008, 1.0)?), ..IndirectSettings::default() };
+//! pass.record(&mut encoder, &inputs, &settings)?;
 //! // ... the engine composes `output` × albedo with its direct light ...
 //! queue.submit([encoder.finish()]);
 //! # Ok(()) }
 //! ```
 
-use super::{Dispatch, FLOAT_INPUTS, check_gbuffer, check_view, output_format};
-use crate::kernel::{B, layout, pipeline, storage, zeroed};
+use super::{Culling, FLOAT_INPUTS, GBuffer, RECORDS_PER_SUBMISSION, RecordSlots, SurfaceDesc, ViewCache, check_size, check_view, output_format};
+use crate::frame::Stage;
+use crate::kernel::{KernelLayout, UniformSlots, check_kernels, storage, zeroed};
 use crate::{GpuContext, GpuError};
-use glam::Vec3;
 use slc_core::interleave::NEAR_BLOCK;
-use slc_scene::vpl::{PERIOD, VplMethod, VplSettings};
-use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuNearBox, GpuVplRecord, ImageParams, PackParams, VplParams};
-use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, VplSource, generate};
-use wgpu::util::DeviceExt;
+use slc_scene::vpl::{NEAR_FACTOR, PERIOD};
+use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuNearBox, GpuVplRecord, PackParams, ViewParams, VplParams};
+use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, VplSource};
 
 /// Tile edge of the 2-D kernels, in pixels.
 const TILE: u32 = crate::vpl::TILE;
@@ -104,10 +97,30 @@ pub struct IndirectPassDesc {
     pub width: u32,
     /// G-buffer and output height.
     pub height: u32,
+    /// Where the G-buffer's surface comes from.
+    pub surface: SurfaceDesc,
     /// The VPL source.
     pub vpls: VplSourceDesc,
     /// Format of the output storage texture: `Rgba16Float` or `Rgba32Float`.
     pub output_format: wgpu::TextureFormat,
+    /// Records of this pass one submission may hold (uniform slots).
+    pub records_per_submission: u32,
+}
+
+impl IndirectPassDesc {
+    /// `width × height` with VPLs from `vpls`, a standard `Depth32Float`
+    /// depth buffer, `Rgba16Float` output, [`RECORDS_PER_SUBMISSION`]
+    /// records per submission.
+    pub fn new(width: u32, height: u32, vpls: VplSourceDesc) -> IndirectPassDesc {
+        IndirectPassDesc {
+            width,
+            height,
+            surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float, reversed: false },
+            vpls,
+            output_format: wgpu::TextureFormat::Rgba16Float,
+            records_per_submission: RECORDS_PER_SUBMISSION,
+        }
+    }
 }
 
 /// The VPLs of one frame.
@@ -126,69 +139,147 @@ pub enum VplInput<'a> {
     Buffer(&'a wgpu::Buffer),
 }
 
-/// The engine's resources for one frame.
+/// The engine's resources for one record.
 #[derive(Clone, Copy, Debug)]
 pub struct IndirectInputs<'a> {
-    /// G-buffer world positions (`w > 0`: surface).
-    pub position: &'a wgpu::TextureView,
-    /// G-buffer unit normals facing the camera.
-    pub normal: &'a wgpu::TextureView,
+    /// The G-buffer.
+    pub gbuffer: GBuffer<'a>,
     /// The VPLs.
     pub vpls: VplInput<'a>,
     /// Where the irradiance goes.
     pub output: &'a wgpu::TextureView,
 }
 
-/// Per-frame settings of the indirect pass.
-#[derive(Clone, Debug)]
-pub struct IndirectFrame {
-    /// Method (`slc`, `clamp`, `none`), ε, exposure, clamp range, seed,
-    /// frame number and denoise, as for the CPU backend. `fixed_xi` and the
-    /// `reference` method are not offered here (use [`crate::vpl::GpuVpl`]).
-    pub settings: VplSettings,
-    /// Eye position (the denoise's depth is the distance from it).
-    pub eye: Vec3,
-    /// Clamp distance of the VPL fall-off `1/max(d², min_distance²)`; the
-    /// default near radius is [`slc_scene::vpl::NEAR_FACTOR`] times it
-    /// ([`VplSettings::near_radius`]).
+/// Per-record settings of the indirect pass: all it honours.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct IndirectSettings {
+    /// How VPLs are culled (stochastic, clamped or not at all).
+    pub culling: Culling,
+    /// Seed of the per-VPL ξ.
+    pub seed: u32,
+    /// Frame number (a new ξ set per frame).
+    pub frame: u32,
+    /// Cross-bilateral filter over the interleaving window.
+    pub denoise: bool,
+    /// Clamp distance of the VPL fall-off `1/max(d², min_distance²)`
+    /// (scene units, finite, ≥ 0).
     pub min_distance: f32,
+    /// Near-field radius `R_n`: VPLs closer than it are shaded at every
+    /// pixel, unscaled and undenoised (`None`:
+    /// [`NEAR_FACTOR`] × `min_distance`; `Some(0)`: no split).
+    pub near_radius: Option<f32>,
+}
+
+impl Default for IndirectSettings {
+    /// Stochastic culling at ε = 0.008, exposure 1; seed 1, frame 0;
+    /// denoised; 5 cm clamp distance, the default near field.
+    fn default() -> Self {
+        IndirectSettings {
+            culling: Culling::Stochastic(slc_core::range::RangeParams::new(0.008, 1.0).expect("valid defaults")),
+            seed: 1,
+            frame: 0,
+            denoise: true,
+            min_distance: 0.05,
+            near_radius: None,
+        }
+    }
+}
+
+impl IndirectSettings {
+    /// `R_n²` of the near-field split.
+    fn near_r2(&self) -> f32 {
+        let r = self.near_radius.unwrap_or(NEAR_FACTOR * self.min_distance);
+        r * r
+    }
+}
+
+/// One recorded dispatch of a pass: its stage, pipeline, bind group (group
+/// 0) with its dynamic offset (none when `offsets` is empty), and workgroup counts.
+pub(crate) struct Dispatch {
+    pub(crate) stage: Stage,
+    pipeline: wgpu::ComputePipeline,
+    group: wgpu::BindGroup,
+    offsets: Vec<u32>,
+    groups: [u32; 3],
+}
+
+impl Dispatch {
+    /// Records the dispatch into `pass`.
+    pub(crate) fn record(&self, pass: &mut wgpu::ComputePass) {
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &self.group, &self.offsets);
+        pass.dispatch_workgroups(self.groups[0], self.groups[1], self.groups[2]);
+    }
+
+    /// A dispatch of `pipeline` with `group` at uniform offset `offset`
+    /// over `groups` workgroups.
+    pub(crate) fn new(stage: Stage, pipeline: &wgpu::ComputePipeline, group: wgpu::BindGroup, offset: Option<u32>, groups: [u32; 3]) -> Self {
+        Dispatch { stage, pipeline: pipeline.clone(), group, offsets: offset.into_iter().collect(), groups }
+    }
+}
+
+/// A kernel's layout and pipeline.
+struct Pipe {
+    layout: KernelLayout,
+    pipeline: wgpu::ComputePipeline,
+}
+
+impl Pipe {
+    fn new(gpu: &GpuContext, kernel: Kernel, f: &Features) -> Result<Pipe, GpuError> {
+        let layout = KernelLayout::new(gpu, kernel, f)?;
+        Ok(Pipe { pipeline: layout.pipeline(gpu, f, None)?, layout })
+    }
 }
 
 /// SLC indirect light from VPLs on an engine's G-buffer (see the module
 /// docs for the inputs it expects).
 pub struct IndirectPass {
+    gpu: GpuContext,
     desc: IndirectPassDesc,
     count: u32,
     per_subset: u32,
     gb_position: wgpu::Buffer,
-    gb_normal: wgpu::Buffer,
+    gb_normal_buf: wgpu::Buffer,
+    import: Pipe,
+    pack: Pipe,
+    update: Pipe,
+    tiled: Vec<(CullMethod, wgpu::ComputePipeline)>,
+    denoise: Pipe,
+    near: Pipe,
+    export: Pipe,
+    view: UniformSlots,
+    pack_params: UniformSlots,
+    frame_params: UniformSlots,
+    vpl_params: UniformSlots,
+    slots: RecordSlots,
+    update_group: wgpu::BindGroup,
+    tiled_group: wgpu::BindGroup,
+    denoise_group: wgpu::BindGroup,
+    /// `vpl_near` adding to the raw irradiance (0) or the denoised one (1).
+    near_groups: [wgpu::BindGroup; 2],
+    import_cache: ViewCache<(wgpu::TextureView, wgpu::TextureView)>,
+    pack_cache: ViewCache<PackKey>,
+    export_cache: ViewCache<(wgpu::TextureView, bool)>,
     irradiance: wgpu::Buffer,
     filtered: wgpu::Buffer,
-    lights: wgpu::Buffer,
-    ids: wgpu::Buffer,
-    rt2: wgpu::Buffer,
-    r2: wgpu::Buffer,
-    near_slots: wgpu::Buffer,
-    near_boxes: wgpu::Buffer,
-    import: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
-    pack: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
-    update: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
-    tiled: Vec<(VplMethod, wgpu::ComputePipeline)>,
-    tiled_layout: wgpu::BindGroupLayout,
-    denoise: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
-    near: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
-    export: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
+    pack_outputs: [wgpu::Buffer; 6],
+}
+
+/// What `vpl_pack`'s cached bind group binds: RSM views or a buffer.
+#[derive(PartialEq)]
+enum PackKey {
+    Rsm(Box<[wgpu::TextureView; 3]>),
+    Buffer(wgpu::Buffer),
 }
 
 impl IndirectPass {
     /// Builds the pipelines and intermediate buffers for `desc`. Checks the
     /// sizes (non-zero image, RSM edge or VPL count a multiple of the
-    /// interleave period) and the device limits first.
+    /// interleave period) and every device limit first, before anything is
+    /// created on the device.
     pub fn new(gpu: &GpuContext, desc: &IndirectPassDesc) -> Result<Self, GpuError> {
         let (w, h) = (desc.width, desc.height);
-        if w == 0 || h == 0 {
-            return Err(GpuError::Setting(format!("indirect pass: image size {w}×{h} must be non-zero")));
-        }
+        check_size(gpu, "indirect pass", (w, h), TILE)?;
         let subsets = PERIOD * PERIOD;
         let (count, vpl_source) = match desc.vpls {
             VplSourceDesc::Rsm { size } if size == 0 || size % PERIOD != 0 => {
@@ -201,68 +292,139 @@ impl IndirectPass {
             VplSourceDesc::Buffer { .. } => (desc.vpls.count(), VplSource::Buffer),
         };
         let output = output_format(desc.output_format)?;
+        let surface = desc.surface.source()?;
         let lim = &gpu.limits;
-        let max_binding = lim.max_storage_buffer_binding_size;
+        let max_binding = lim.max_storage_buffer_binding_size.min(lim.max_buffer_size);
         gpu.require("max_storage_buffer_binding_size (G-buffer)", w as u64 * h as u64 * 16, max_binding)?;
         gpu.require("max_storage_buffer_binding_size (lights)", count * std::mem::size_of::<GpuLight>() as u64, max_binding)?;
-        let groups = lim.max_compute_workgroups_per_dimension as u64;
-        gpu.require("max_compute_workgroups_per_dimension", w.div_ceil(TILE).max(h.div_ceil(TILE)) as u64, groups)?;
-        gpu.require("max_compute_workgroups_per_dimension (VPLs)", count.div_ceil(WG as u64), groups)?;
-        gpu.require("max_storage_buffers_per_shader_stage", 7, lim.max_storage_buffers_per_shader_stage as u64)?;
-        gpu.require("max_storage_textures_per_shader_stage", 1, lim.max_storage_textures_per_shader_stage as u64)?;
+        gpu.require("max_compute_workgroups_per_dimension (VPLs)", count.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
         let per_subset = (count / subsets as u64) as u32;
         let list = per_subset.clamp(1, crate::vpl::TILE_LIST);
         let wg_bytes = slc_shared_shaders::vpl_tiled_workgroup_bytes(TILE, list);
         gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes, lim.max_compute_workgroup_storage_size as u64)?;
 
         let vpl = LightSet { vpl: true, ..LightSet::default() };
-        let base = Features { lights: vpl, tile_size: TILE, interleave: PERIOD, workgroup_size: WG, max_tile_lights: list, ..Features::default() };
-        let kernel = |k: Kernel, f: &Features, l: &wgpu::BindGroupLayout| -> Result<wgpu::ComputePipeline, GpuError> {
-            Ok(pipeline(gpu, k.name(), generate(k, f)?, &[l]))
+        let base = Features {
+            lights: vpl,
+            tile_size: TILE,
+            interleave: PERIOD,
+            workgroup_size: WG,
+            max_tile_lights: list,
+            surface,
+            output_format: output,
+            vpl_source,
+            ..Features::default()
         };
-        use B::*;
-        let import_layout = layout(gpu, "gbuffer_import", &[(0, Uniform), (1, Texture), (2, Texture), (3, Write), (4, Write), (5, Write)]);
-        let pack_inputs: &[(u32, B)] = match vpl_source {
-            VplSource::Rsm => &[(1, Texture), (2, Texture), (3, Texture)],
-            VplSource::Buffer => &[(1, Read)],
-        };
-        let mut pack_entries = vec![(0, Uniform)];
-        pack_entries.extend_from_slice(pack_inputs);
-        pack_entries.extend([(4, Write), (5, Write), (6, Write), (7, Write), (8, Write), (9, Write)]);
-        let pack_layout = layout(gpu, "vpl_pack", &pack_entries);
-        let update_layout = layout(gpu, "light_update", &[(0, Uniform), (1, Read), (2, Read), (3, Write)]);
-        let tiled_layout = layout(gpu, "vpl_tiled", &[(0, Uniform), (1, Read), (2, Read), (3, Read), (4, Read), (5, Read), (6, Write)]);
-        let denoise_layout = layout(gpu, "vpl_denoise", &[(0, Uniform), (1, Read), (2, Read), (3, Read), (4, Write)]);
-        let near_layout = layout(gpu, "vpl_near", &[(0, Uniform), (1, Read), (2, Read), (3, Read), (4, Read), (5, Read), (6, Write)]);
-        let export_layout = layout(gpu, "irradiance_export", &[(0, Uniform), (1, Read), (2, Read), (3, Storage(desc.output_format))]);
+        let kernels = [
+            Kernel::GbufferImport,
+            Kernel::VplPack,
+            Kernel::LightUpdate,
+            Kernel::VplTiled,
+            Kernel::VplDenoise,
+            Kernel::VplNear,
+            Kernel::IrradianceExport,
+        ];
+        check_kernels(gpu, &kernels.map(|k| (k, &base, 0)))?;
         let mut tiled = Vec::new();
-        for (m, cm) in [(VplMethod::Slc, CullMethod::Slc), (VplMethod::Clamp, CullMethod::Clamp), (VplMethod::None, CullMethod::None)] {
-            tiled.push((m, kernel(Kernel::VplTiled, &Features { method: cm, ..base }, &tiled_layout)?));
+        let tiled_layout = KernelLayout::new(gpu, Kernel::VplTiled, &base)?;
+        for m in [CullMethod::Slc, CullMethod::Clamp, CullMethod::None] {
+            tiled.push((m, tiled_layout.pipeline(gpu, &Features { method: m, ..base }, None)?));
         }
         let pixels = w as u64 * h as u64 * 16;
         let rw = wgpu::BufferUsages::STORAGE;
+        let slots = RecordSlots::new(desc.records_per_submission);
+        let n = slots.len();
+        let view = UniformSlots::new::<ViewParams>(gpu, "slc indirect view", n);
+        let pack_params = UniformSlots::new::<PackParams>(gpu, "slc pack params", n);
+        let frame_params = UniformSlots::new::<FrameParams>(gpu, "slc frame params", n);
+        let vpl_params = UniformSlots::new::<VplParams>(gpu, "slc vpl params", n);
+        let gb_position = zeroed(gpu, "slc gb_position", pixels, rw);
+        let gb_normal = zeroed(gpu, "slc gb_normal", pixels, rw);
+        let irradiance = zeroed(gpu, "slc irradiance", pixels, rw);
+        let filtered = zeroed(gpu, "slc filtered", pixels, rw);
+        let lights = zeroed(gpu, "slc lights", count * std::mem::size_of::<GpuLight>() as u64, rw);
+        let ids = zeroed(gpu, "slc ids", count * 4, rw);
+        let rt2 = zeroed(gpu, "slc rt2", count * 4, rw);
+        let r2 = zeroed(gpu, "slc r2", count * 4, rw);
+        let near_slots = zeroed(gpu, "slc near_slots", count * 4, rw);
+        let near_boxes = zeroed(gpu, "slc near_boxes", count / NEAR_BLOCK as u64 * std::mem::size_of::<GpuNearBox>() as u64, rw);
+        let import = Pipe::new(gpu, Kernel::GbufferImport, &base)?;
+        let pack = Pipe::new(gpu, Kernel::VplPack, &base)?;
+        let update = Pipe::new(gpu, Kernel::LightUpdate, &base)?;
+        let denoise = Pipe::new(gpu, Kernel::VplDenoise, &base)?;
+        let near = Pipe::new(gpu, Kernel::VplNear, &base)?;
+        let export = Pipe::new(gpu, Kernel::IrradianceExport, &base)?;
+        let b = crate::kernel::whole;
+        let update_group = update.layout.group(gpu, 0, &[("params", frame_params.binding()), ("ids", b(&ids)), ("rt2", b(&rt2)), ("r2", b(&r2))]);
+        let tiled_group = tiled_layout.group(
+            gpu,
+            0,
+            &[
+                ("params", vpl_params.binding()),
+                ("gb_position", b(&gb_position)),
+                ("gb_normal", b(&gb_normal)),
+                ("lights", b(&lights)),
+                ("rt2", b(&rt2)),
+                ("r2", b(&r2)),
+                ("irradiance", b(&irradiance)),
+            ],
+        );
+        let denoise_group = denoise.layout.group(
+            gpu,
+            0,
+            &[
+                ("params", vpl_params.binding()),
+                ("gb_position", b(&gb_position)),
+                ("gb_normal", b(&gb_normal)),
+                ("irradiance", b(&irradiance)),
+                ("filtered", b(&filtered)),
+            ],
+        );
+        let near_group = |target: &wgpu::Buffer| {
+            near.layout.group(
+                gpu,
+                0,
+                &[
+                    ("params", vpl_params.binding()),
+                    ("gb_position", b(&gb_position)),
+                    ("gb_normal", b(&gb_normal)),
+                    ("lights", b(&lights)),
+                    ("near_slots", b(&near_slots)),
+                    ("near_boxes", b(&near_boxes)),
+                    ("irradiance", b(target)),
+                ],
+            )
+        };
+        let near_groups = [near_group(&irradiance), near_group(&filtered)];
         let s = IndirectPass {
+            gpu: gpu.clone(),
             desc: *desc,
             count: count as u32,
             per_subset,
-            gb_position: zeroed(gpu, "slc gb_position", pixels, rw),
-            gb_normal: zeroed(gpu, "slc gb_normal", pixels, rw),
-            irradiance: zeroed(gpu, "slc irradiance", pixels, rw),
-            filtered: zeroed(gpu, "slc filtered", pixels, rw),
-            lights: zeroed(gpu, "slc lights", count * std::mem::size_of::<GpuLight>() as u64, rw),
-            ids: zeroed(gpu, "slc ids", count * 4, rw),
-            rt2: zeroed(gpu, "slc rt2", count * 4, rw),
-            r2: zeroed(gpu, "slc r2", count * 4, rw),
-            near_slots: zeroed(gpu, "slc near_slots", count * 4, rw),
-            near_boxes: zeroed(gpu, "slc near_boxes", count / NEAR_BLOCK as u64 * std::mem::size_of::<GpuNearBox>() as u64, rw),
-            import: (kernel(Kernel::GbufferImport, &base, &import_layout)?, import_layout),
-            pack: (kernel(Kernel::VplPack, &Features { vpl_source, ..base }, &pack_layout)?, pack_layout),
-            update: (kernel(Kernel::LightUpdate, &base, &update_layout)?, update_layout),
+            import,
+            pack,
+            update,
             tiled,
-            tiled_layout,
-            denoise: (kernel(Kernel::VplDenoise, &base, &denoise_layout)?, denoise_layout),
-            near: (kernel(Kernel::VplNear, &base, &near_layout)?, near_layout),
-            export: (kernel(Kernel::IrradianceExport, &Features { output_format: output, ..base }, &export_layout)?, export_layout),
+            denoise,
+            near,
+            export,
+            view,
+            pack_params,
+            frame_params,
+            vpl_params,
+            slots,
+            update_group,
+            tiled_group,
+            denoise_group,
+            near_groups,
+            import_cache: ViewCache::new(),
+            pack_cache: ViewCache::new(),
+            export_cache: ViewCache::new(),
+            pack_outputs: [lights, ids, rt2, r2, near_slots, near_boxes],
+            gb_position,
+            irradiance,
+            filtered,
+            gb_normal_buf: gb_normal,
         };
         gpu.take_errors()?;
         Ok(s)
@@ -275,9 +437,13 @@ impl IndirectPass {
 
     /// Checks `inputs` against the descriptor (formats, sizes, usages).
     pub fn check(&self, inputs: &IndirectInputs) -> Result<(), GpuError> {
+        self.check_inputs(inputs, 0, 0).map(|_| ())
+    }
+
+    fn check_inputs(&self, inputs: &IndirectInputs, seed: u32, frame: u32) -> Result<ViewParams, GpuError> {
         let size = (self.desc.width, self.desc.height);
         let tex = wgpu::TextureUsages::TEXTURE_BINDING;
-        check_gbuffer(inputs.position, inputs.normal, size)?;
+        let view = inputs.gbuffer.check(self.desc.surface, size, seed, frame)?;
         check_view("output", inputs.output, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)?;
         match (inputs.vpls, self.desc.vpls) {
             (VplInput::Rsm { position, normal, flux }, VplSourceDesc::Rsm { size }) => {
@@ -310,19 +476,15 @@ impl IndirectPass {
                 });
             }
         }
-        Ok(())
+        Ok(view)
     }
 
     /// Records the frame into `encoder` (one compute pass); checks the
     /// inputs and settings first and records nothing when they are wrong.
-    pub fn record(
-        &self,
-        gpu: &GpuContext,
-        encoder: &mut wgpu::CommandEncoder,
-        inputs: &IndirectInputs,
-        frame: &IndirectFrame,
-    ) -> Result<(), GpuError> {
-        let dispatches = self.dispatches(gpu, inputs, frame)?;
+    /// Creates nothing on the device when the views are those of a recent
+    /// record.
+    pub fn record(&mut self, encoder: &mut wgpu::CommandEncoder, inputs: &IndirectInputs, settings: &IndirectSettings) -> Result<(), GpuError> {
+        let dispatches = self.dispatches(inputs, settings)?;
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc indirect"), timestamp_writes: None });
         for d in &dispatches {
             d.record(&mut pass);
@@ -330,161 +492,143 @@ impl IndirectPass {
         Ok(())
     }
 
-    /// The frame's dispatches in order (only those its settings run), with
-    /// their bind groups made; checks the inputs and settings first.
-    pub(crate) fn dispatches<'a>(&'a self, gpu: &GpuContext, inputs: &IndirectInputs, frame: &IndirectFrame) -> Result<Vec<Dispatch<'a>>, GpuError> {
-        self.check(inputs)?;
-        let st = &frame.settings;
-        let params = st.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
-        if st.fixed_xi.is_some() || st.method == VplMethod::Reference {
-            return Err(GpuError::Setting(
-                "the indirect pass runs slc, clamp or none with per-frame ξ (fixed ξ and the reference are GpuVpl's)".into(),
-            ));
+    /// The record's dispatches in order (only those its settings run), its
+    /// uniforms staged in its slot; checks the inputs and settings first.
+    pub(crate) fn dispatches(&mut self, inputs: &IndirectInputs, st: &IndirectSettings) -> Result<Vec<Dispatch>, GpuError> {
+        let view = self.check_inputs(inputs, st.seed, st.frame)?;
+        let (slc, fixed_r2) = st.culling.kernel_form()?;
+        if !(st.min_distance.is_finite() && st.min_distance >= 0.0) {
+            return Err(GpuError::Setting(format!("indirect pass: min distance {} must be finite and non-negative", st.min_distance)));
         }
-        if !(frame.min_distance.is_finite() && frame.min_distance >= 0.0 && frame.eye.is_finite()) {
-            return Err(GpuError::Setting(format!("indirect pass: min distance {} and eye {} must be finite", frame.min_distance, frame.eye)));
+        if let Some(r) = st.near_radius
+            && !(r.is_finite() && r >= 0.0)
+        {
+            return Err(GpuError::Setting(format!("indirect pass: near radius {r} must be finite and non-negative")));
         }
         let (w, h) = (self.desc.width, self.desc.height);
-        let slc = st.method == VplMethod::Slc;
-        let uniform = |label: &str, bytes: &[u8]| {
-            gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some(label),
-                contents: bytes,
-                usage: wgpu::BufferUsages::UNIFORM,
-            })
-        };
-        let image = uniform("slc image params", bytemuck::bytes_of(&ImageParams { eye: frame.eye, width: w, height: h, pad0: 0, pad1: 0, pad2: 0 }));
         let (rsm_size, count) = match self.desc.vpls {
             VplSourceDesc::Rsm { size } => (size, self.count),
             VplSourceDesc::Buffer { count } => (0, count),
         };
-        let pack = uniform(
-            "slc pack params",
-            bytemuck::bytes_of(&PackParams {
+        let (mode, exposure, error_bound) = match st.culling {
+            Culling::Stochastic(p) => (p.measure().mode(), p.exposure(), p.error_bound()),
+            _ => (0, 1.0, 1.0),
+        };
+        let min_d2 = st.min_distance * st.min_distance;
+        let near_r2 = st.near_r2();
+        let near_blocks = count / NEAR_BLOCK;
+        let slot = self.slots.take();
+        let gpu = &self.gpu;
+        self.view.write_slot(gpu, slot, &view);
+        self.pack_params.write_slot(
+            gpu,
+            slot,
+            &PackParams {
                 count,
                 size: rsm_size,
                 per_subset: self.per_subset,
-                mode: params.measure().mode(),
-                exposure: params.exposure(),
-                error_bound: params.error_bound(),
+                mode,
+                exposure,
+                error_bound,
                 scale: slc_core::interleave::interleave_flux_scale(PERIOD),
                 slc: slc as u32,
-                fixed_r2: if st.method == VplMethod::Clamp { st.range * st.range } else { f32::MAX },
+                // No culling: the kernel's finite stand-in for +∞.
+                fixed_r2: if fixed_r2.is_finite() { fixed_r2 } else { f32::MAX },
                 pad0: 0,
                 pad1: 0,
                 pad2: 0,
-            }),
+            },
         );
-        let fp = uniform("slc frame params", bytemuck::bytes_of(&FrameParams { light_count: count, seed: st.seed, frame: st.frame, pad: 0 }));
-        let min_d2 = frame.min_distance * frame.min_distance;
-        let near_r2 = st.near_r2(min_d2);
-        let near_blocks = count / NEAR_BLOCK;
-        let vp = uniform(
-            "slc vpl params",
-            bytemuck::bytes_of(&VplParams {
-                width: w,
-                height: h,
-                lights_per_subset: self.per_subset,
-                min_d2,
-                near_r2,
-                near_blocks,
-                pad0: 0,
-                pad1: 0,
-            }),
+        self.frame_params.write_slot(gpu, slot, &FrameParams { light_count: count, seed: st.seed, frame: st.frame, pad: 0 });
+        self.vpl_params.write_slot(
+            gpu,
+            slot,
+            &VplParams { width: w, height: h, lights_per_subset: self.per_subset, min_d2, near_r2, near_blocks, pad0: 0, pad1: 0 },
         );
-        let group = |label: &str, layout: &wgpu::BindGroupLayout, res: &[(u32, wgpu::BindingResource)]| crate::kernel::group(gpu, label, layout, res);
-        let buf = crate::kernel::whole;
-        let import = group(
-            "gbuffer_import",
-            &self.import.1,
-            &[
-                (0, buf(&image)),
-                (1, wgpu::BindingResource::TextureView(inputs.position)),
-                (2, wgpu::BindingResource::TextureView(inputs.normal)),
-                (3, buf(&self.gb_position)),
-                (4, buf(&self.gb_normal)),
-                (5, buf(&self.irradiance)),
-            ],
-        );
-        let mut pack_res = vec![(0, buf(&pack))];
-        match inputs.vpls {
-            VplInput::Rsm { position, normal, flux } => pack_res.extend([
-                (1, wgpu::BindingResource::TextureView(position)),
-                (2, wgpu::BindingResource::TextureView(normal)),
-                (3, wgpu::BindingResource::TextureView(flux)),
-            ]),
-            VplInput::Buffer(b) => pack_res.push((1, buf(b))),
-        }
-        pack_res.extend([
-            (4, buf(&self.lights)),
-            (5, buf(&self.ids)),
-            (6, buf(&self.rt2)),
-            (7, buf(&self.r2)),
-            (8, buf(&self.near_slots)),
-            (9, buf(&self.near_boxes)),
-        ]);
-        let pack_bg = group("vpl_pack", &self.pack.1, &pack_res);
-        let update_bg = group("light_update", &self.update.1, &[(0, buf(&fp)), (1, buf(&self.ids)), (2, buf(&self.rt2)), (3, buf(&self.r2))]);
-        let tiled_bg = group(
-            "vpl_tiled",
-            &self.tiled_layout,
-            &[
-                (0, buf(&vp)),
-                (1, buf(&self.gb_position)),
-                (2, buf(&self.gb_normal)),
-                (3, buf(&self.lights)),
-                (4, buf(&self.rt2)),
-                (5, buf(&self.r2)),
-                (6, buf(&self.irradiance)),
-            ],
-        );
+        let tex = wgpu::BindingResource::TextureView;
+        let b = crate::kernel::whole;
+        let g = inputs.gbuffer;
+        let (import, gb_position, gb_normal, irradiance, view_slots) =
+            (&self.import.layout, &self.gb_position, &self.gb_normal_buf, &self.irradiance, &self.view);
+        let import_group = self.import_cache.get((g.surface_view().clone(), g.normal.clone()), || {
+            import.group(
+                gpu,
+                0,
+                &[
+                    ("view", view_slots.binding()),
+                    (g.surface_name(), tex(g.surface_view())),
+                    ("normal_tex", tex(g.normal)),
+                    ("gb_position", b(gb_position)),
+                    ("gb_normal", b(gb_normal)),
+                    ("irradiance", b(irradiance)),
+                ],
+            )
+        });
+        let (pack, outs, pack_slots) = (&self.pack.layout, &self.pack_outputs, &self.pack_params);
+        let key = match inputs.vpls {
+            VplInput::Rsm { position, normal, flux } => PackKey::Rsm(Box::new([position.clone(), normal.clone(), flux.clone()])),
+            VplInput::Buffer(buf) => PackKey::Buffer(buf.clone()),
+        };
+        let pack_group = self.pack_cache.get(key, || {
+            let mut res = vec![("params", pack_slots.binding())];
+            match inputs.vpls {
+                VplInput::Rsm { position, normal, flux } => {
+                    res.extend([("rsm_position", tex(position)), ("rsm_normal", tex(normal)), ("rsm_flux", tex(flux))])
+                }
+                VplInput::Buffer(buf) => res.push(("records", b(buf))),
+            }
+            for (name, buf) in ["lights", "ids", "rt2", "r2", "near_slots", "near_boxes"].into_iter().zip(outs) {
+                res.push((name, b(buf)));
+            }
+            pack.group(gpu, 0, &res)
+        });
         let result = if st.denoise { &self.filtered } else { &self.irradiance };
-        let denoise_bg = group(
-            "vpl_denoise",
-            &self.denoise.1,
-            &[(0, buf(&vp)), (1, buf(&self.gb_position)), (2, buf(&self.gb_normal)), (3, buf(&self.irradiance)), (4, buf(&self.filtered))],
-        );
-        let near_bg = group(
-            "vpl_near",
-            &self.near.1,
-            &[
-                (0, buf(&vp)),
-                (1, buf(&self.gb_position)),
-                (2, buf(&self.gb_normal)),
-                (3, buf(&self.lights)),
-                (4, buf(&self.near_slots)),
-                (5, buf(&self.near_boxes)),
-                (6, buf(result)),
-            ],
-        );
-        let export_bg = group(
-            "irradiance_export",
-            &self.export.1,
-            &[(0, buf(&image)), (1, buf(&self.gb_position)), (2, buf(result)), (3, wgpu::BindingResource::TextureView(inputs.output))],
-        );
-        let tiled = &self.tiled.iter().find(|(m, _)| *m == st.method).ok_or(GpuError::Setting("unknown method".into()))?.1;
+        let (export, gb_pos) = (&self.export.layout, &self.gb_position);
+        let export_group = self.export_cache.get((inputs.output.clone(), st.denoise), || {
+            export.group(
+                gpu,
+                0,
+                &[("view", view_slots.binding()), ("gb_position", b(gb_pos)), ("irradiance", b(result)), ("out_tex", tex(inputs.output))],
+            )
+        });
+        let method = match st.culling {
+            Culling::Stochastic(_) => CullMethod::Slc,
+            Culling::Clamped { .. } => CullMethod::Clamp,
+            Culling::None => CullMethod::None,
+        };
+        let tiled = &self.tiled.iter().find(|(m, _)| *m == method).ok_or(GpuError::Setting("unknown method".into()))?.1;
         let (gx, gy) = (w.div_ceil(TILE), h.div_ceil(TILE));
         let (sub_w, sub_h) = (w.div_ceil(PERIOD), h.div_ceil(PERIOD));
+        let off = |s: &UniformSlots| Some(s.offset(slot));
         let d = Dispatch::new;
-        let mut out =
-            vec![d("G-buffer import", &self.import.0, import, [gx, gy, 1]), d("VPL generation", &self.pack.0, pack_bg, [near_blocks, 1, 1])];
+        let mut out = vec![
+            d(Stage::GbufferImport, &self.import.pipeline, import_group, off(&self.view), [gx, gy, 1]),
+            d(Stage::VplGeneration, &self.pack.pipeline, pack_group, off(&self.pack_params), [near_blocks, 1, 1]),
+        ];
         if slc {
-            out.push(d("light update", &self.update.0, update_bg, [count.div_ceil(WG), 1, 1]));
+            out.push(d(Stage::LightUpdate, &self.update.pipeline, self.update_group.clone(), off(&self.frame_params), [count.div_ceil(WG), 1, 1]));
         }
-        out.push(d("shading", tiled, tiled_bg, [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), PERIOD * PERIOD]));
+        out.push(d(
+            Stage::Shading,
+            tiled,
+            self.tiled_group.clone(),
+            off(&self.vpl_params),
+            [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), PERIOD * PERIOD],
+        ));
         if st.denoise {
-            out.push(d("denoise", &self.denoise.0, denoise_bg, [gx, gy, 1]));
+            out.push(d(Stage::Denoise, &self.denoise.pipeline, self.denoise_group.clone(), off(&self.vpl_params), [gx, gy, 1]));
         }
         if near_r2 > 0.0 {
-            out.push(d("near field", &self.near.0, near_bg, [gx, gy, 1]));
+            let g = self.near_groups[st.denoise as usize].clone();
+            out.push(d(Stage::NearField, &self.near.pipeline, g, off(&self.vpl_params), [gx, gy, 1]));
         }
-        out.push(d("irradiance export", &self.export.0, export_bg, [gx, gy, 1]));
+        out.push(d(Stage::IrradianceExport, &self.export.pipeline, export_group, off(&self.view), [gx, gy, 1]));
         Ok(out)
     }
 }
 
-/// Uploads `data` as a storage buffer of the device (a helper for engines
-/// and tests that make VPL records on the host).
+/// Uploads `records` as a storage buffer of the device (a helper for
+/// engines and tests that make VPL records on the host).
 pub fn vpl_buffer(gpu: &GpuContext, records: &[GpuVplRecord]) -> wgpu::Buffer {
     storage(gpu, "slc vpl records", bytemuck::cast_slice(records), wgpu::BufferUsages::empty())
 }

@@ -3,34 +3,232 @@
 //! The engine owns the device, the queue, the frame graph and the G-buffer.
 //! It wraps its device once ([`GpuContext::from_device`]: no adapter is
 //! requested, no error handler is installed), builds the passes it needs
-//! for its image size, and each frame calls their `record` with its own
-//! `CommandEncoder`: a pass records compute work only, submits nothing and
-//! reads nothing back.
+//! for its image size (each pass keeps a clone of the context: no lifetime
+//! ties it to the engine's), and each frame calls their `record` with its
+//! own `CommandEncoder`: a pass records compute work only, submits nothing
+//! and reads nothing back.
 //!
 //! - [`IndirectPass`] ([`indirect`]): SLC indirect light from VPLs (an RSM
 //!   or a VPL buffer) on the engine's G-buffer.
 //! - [`DirectPass`] ([`direct`]): SLC direct light from many point, spot,
-//!   IES and triangle lights on the engine's G-buffer.
+//!   IES and triangle lights on the engine's G-buffer, the lights movable
+//!   every frame.
 //!
-//! Each pass documents the textures it expects; a wrong format, size or
-//! usage is a [`GpuError::Binding`] before anything is recorded, and a limit
-//! the device lacks a [`GpuError::Limit`] when the pass is built. A pass
-//! keeps its intermediate buffers and writes its per-frame uniforms through
-//! the queue: record it once per submission.
+//! **The G-buffer** ([`GBuffer`]): the surface as the engine's depth buffer
+//! (`Depth32Float`, or `R32Float` depth in x) with the view's inverse
+//! view-projection, or as world positions (`Rgba32Float` or
+//! `Rgba16Float`), plus world normals (`Rgba32Float` or `Rgba16Float`, need
+//! not be unit length). Precision: a `Depth32Float` depth unprojects to
+//! within `~2⁻²⁴ · d²/n` of the true position for a standard projection
+//! (near plane `n`; 10 m at `n = 0.1 m`: 0.06 mm) and to `~2⁻²⁴ · d` with
+//! reversed Z; half-float positions step by `2⁻¹⁰` of their magnitude
+//! (8 mm at 10 m), which moves shading points off their surfaces; half-float
+//! normals hold `~5·10⁻⁴` rad. Every texture must be single-sampled, the
+//! pass's size, `TEXTURE_BINDING`; the output `STORAGE_BINDING` in the
+//! pass's output format.
+//!
+//! **Per record**: a wrong format, size or usage is a [`GpuError::Binding`]
+//! before anything is recorded, and a limit the device lacks a
+//! [`GpuError::Limit`] when the pass is built, before any pipeline is
+//! made. A record writes its uniforms into its own slot (the pass's desc
+//! says how many records of it one submission may hold, 16 by default),
+//! so several records of one pass may share a submission; its bind groups are cached by the
+//! views' identity (the same views every frame create nothing), and the
+//! light and intermediate buffers are reused, so recording allocates no GPU
+//! object.
 
 pub mod direct;
 pub mod indirect;
 
-pub use direct::{DirectFrame, DirectInputs, DirectPass, DirectPassDesc};
-pub use indirect::{IndirectFrame, IndirectInputs, IndirectPass, IndirectPassDesc, VplInput, VplSourceDesc, vpl_buffer};
+pub use direct::{Dielectric, DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, MaterialInputs};
+pub use indirect::{IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings, VplInput, VplSourceDesc, vpl_buffer};
 pub use slc_shared_shaders::layout::GpuVplRecord;
 
 #[cfg(doc)]
 use crate::GpuContext;
 use crate::GpuError;
+use glam::{Mat4, Vec3};
+use slc_core::range::RangeParams;
+use slc_shared_shaders::SurfaceSource;
+use slc_shared_shaders::layout::ViewParams;
 
 /// The float formats the passes read G-buffer and RSM textures in.
 pub(crate) const FLOAT_INPUTS: [wgpu::TextureFormat; 2] = [wgpu::TextureFormat::Rgba32Float, wgpu::TextureFormat::Rgba16Float];
+
+/// Default number of records one submission may hold per pass.
+pub const RECORDS_PER_SUBMISSION: u32 = 16;
+
+/// How a pass culls lights, per record (both passes honour every mode).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Culling {
+    /// Stochastic light culling: each light's range `r² = r_t²/(1 − ξ)`
+    /// from the error bound ε and exposure `E` (`r_t² = E·I/(2π ε)`), a
+    /// kept light weighted `1/p`. Unbiased; its noise (per light at most ε
+    /// in standard deviation, Lambertian receiver) changes with `frame`.
+    Stochastic(RangeParams),
+    /// The biased baseline engines ship: lights beyond `range` are dropped,
+    /// none reweighted (darkens).
+    Clamped {
+        /// The range R (scene units, positive and finite).
+        range: f32,
+    },
+    /// Every light everywhere (`r² = ∞`): no culling. The expensive exact
+    /// sum for the indirect pass; for the direct pass, every light is a
+    /// candidate at every pixel, so its `k` picks are spread over all of
+    /// them — exact in expectation, and the noisiest setting.
+    None,
+}
+
+impl Culling {
+    /// `(slc, r_t² when not SLC, r² when not SLC)` as the kernels take them,
+    /// after checking a clamp range.
+    pub(crate) fn kernel_form(&self) -> Result<(bool, f32), GpuError> {
+        match *self {
+            Culling::Stochastic(_) => Ok((true, 0.0)),
+            Culling::Clamped { range } if range.is_finite() && range > 0.0 => Ok((false, range * range)),
+            Culling::Clamped { range } => Err(GpuError::Setting(format!("clamp range {range} must be positive and finite"))),
+            Culling::None => Ok((false, f32::INFINITY)),
+        }
+    }
+}
+
+/// Where a pass reads the surface of the engine's G-buffer, fixed when the
+/// pass is built.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SurfaceDesc {
+    /// A depth texture: `Depth32Float` (`texture_depth_2d`) or `R32Float`
+    /// (depth in x); `reversed`: the depth buffer clears to 0 and nearer is
+    /// larger (reversed Z, as Bevy uses), else it clears to 1.
+    Depth {
+        /// `Depth32Float` or `R32Float`.
+        format: wgpu::TextureFormat,
+        /// Reversed Z (background depth 0); else standard (background 1).
+        reversed: bool,
+    },
+    /// World positions (`Rgba32Float` or `Rgba16Float`, `w > 0` where a
+    /// surface is).
+    Position,
+}
+
+impl SurfaceDesc {
+    /// The kernels' surface source, or a typed error for a depth format the
+    /// passes do not read.
+    pub(crate) fn source(self) -> Result<SurfaceSource, GpuError> {
+        match self {
+            SurfaceDesc::Position => Ok(SurfaceSource::Position),
+            SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float, .. } => Ok(SurfaceSource::Depth),
+            SurfaceDesc::Depth { format: wgpu::TextureFormat::R32Float, .. } => Ok(SurfaceSource::R32Depth),
+            SurfaceDesc::Depth { format, .. } => {
+                Err(GpuError::Binding { name: "surface format", expected: "Depth32Float or R32Float".into(), found: format!("{format:?}") })
+            }
+        }
+    }
+
+    /// The depth where no surface is.
+    fn background(self) -> f32 {
+        match self {
+            SurfaceDesc::Depth { reversed: true, .. } => 0.0,
+            _ => 1.0,
+        }
+    }
+}
+
+/// The surface of one frame's G-buffer.
+#[derive(Clone, Copy, Debug)]
+pub enum Surface<'a> {
+    /// The depth buffer and the view that made it.
+    Depth {
+        /// The depth texture's view (the pass's [`SurfaceDesc::Depth`]
+        /// format; a depth-stencil texture needs a depth-only view).
+        depth: &'a wgpu::TextureView,
+        /// The inverse of the view-projection the depth was rendered with
+        /// (wgpu's clip space: y up, depth in `[0, 1]`).
+        inv_view_proj: Mat4,
+    },
+    /// World positions.
+    Position(&'a wgpu::TextureView),
+}
+
+/// An engine's G-buffer for one frame.
+#[derive(Clone, Copy, Debug)]
+pub struct GBuffer<'a> {
+    /// The surface: depth or positions.
+    pub surface: Surface<'a>,
+    /// World normals (xyz; normalised by the pass), facing the camera.
+    pub normal: &'a wgpu::TextureView,
+    /// The eye's world position (the indirect pass's denoise weighs by the
+    /// distance from it; glossy shading looks from it).
+    pub eye: Vec3,
+}
+
+impl GBuffer<'_> {
+    /// Checks the G-buffer against the pass's `surface` and size, and makes
+    /// the record's [`ViewParams`] (`seed`, `frame`: its random streams).
+    pub(crate) fn check(&self, surface: SurfaceDesc, size: (u32, u32), seed: u32, frame: u32) -> Result<ViewParams, GpuError> {
+        let tex = wgpu::TextureUsages::TEXTURE_BINDING;
+        check_view("G-buffer normal", self.normal, size, &FLOAT_INPUTS, tex)?;
+        if !self.eye.is_finite() {
+            return Err(GpuError::Setting(format!("eye {} must be finite", self.eye)));
+        }
+        let m = match (self.surface, surface) {
+            (Surface::Position(p), SurfaceDesc::Position) => {
+                check_view("G-buffer position", p, size, &FLOAT_INPUTS, tex)?;
+                Mat4::IDENTITY
+            }
+            (Surface::Depth { depth, inv_view_proj }, SurfaceDesc::Depth { format, .. }) => {
+                check_view("G-buffer depth", depth, size, &[format], tex)?;
+                if !inv_view_proj.is_finite() {
+                    return Err(GpuError::Setting("inverse view-projection must be finite".into()));
+                }
+                inv_view_proj
+            }
+            (Surface::Position(_), SurfaceDesc::Depth { .. }) => {
+                return Err(GpuError::Binding {
+                    name: "G-buffer surface",
+                    expected: "a depth texture (the pass was built for depth)".into(),
+                    found: "positions".into(),
+                });
+            }
+            (Surface::Depth { .. }, SurfaceDesc::Position) => {
+                return Err(GpuError::Binding {
+                    name: "G-buffer surface",
+                    expected: "positions (the pass was built for positions)".into(),
+                    found: "a depth texture".into(),
+                });
+            }
+        };
+        Ok(ViewParams {
+            c0: m.x_axis,
+            c1: m.y_axis,
+            c2: m.z_axis,
+            c3: m.w_axis,
+            eye: self.eye,
+            width: size.0,
+            height: size.1,
+            background: surface.background(),
+            seed,
+            frame,
+            f0_d: Vec3::ZERO,
+            f90_d: 0.0,
+        })
+    }
+
+    /// The surface's view.
+    pub(crate) fn surface_view(&self) -> &wgpu::TextureView {
+        match self.surface {
+            Surface::Depth { depth, .. } => depth,
+            Surface::Position(p) => p,
+        }
+    }
+
+    /// The surface's binding name in the kernels' tables.
+    pub(crate) fn surface_name(&self) -> &'static str {
+        match self.surface {
+            Surface::Depth { .. } => "depth_tex",
+            Surface::Position(_) => "position_tex",
+        }
+    }
+}
 
 /// Checks that `view` shows a `w × h` 2-D texture of an accepted format with
 /// `usage`.
@@ -58,14 +256,6 @@ pub(crate) fn check_view(
     Ok(())
 }
 
-/// Checks an engine's G-buffer views: position and normal, `size`, a float
-/// format, `TEXTURE_BINDING`.
-pub(crate) fn check_gbuffer(position: &wgpu::TextureView, normal: &wgpu::TextureView, size: (u32, u32)) -> Result<(), GpuError> {
-    let tex = wgpu::TextureUsages::TEXTURE_BINDING;
-    check_view("G-buffer position", position, size, &FLOAT_INPUTS, tex)?;
-    check_view("G-buffer normal", normal, size, &FLOAT_INPUTS, tex)
-}
-
 /// The kernels' output format for a pass's `output_format`:
 /// `Rgba16Float` or `Rgba32Float`, else a [`GpuError::Binding`].
 pub(crate) fn output_format(f: wgpu::TextureFormat) -> Result<slc_shared_shaders::OutputFormat, GpuError> {
@@ -76,25 +266,77 @@ pub(crate) fn output_format(f: wgpu::TextureFormat) -> Result<slc_shared_shaders
     }
 }
 
-/// One recorded dispatch of a pass: its stage name, pipeline, bind group
-/// (group 0) and workgroup counts.
-pub(crate) struct Dispatch<'a> {
-    pub(crate) stage: &'static str,
-    pipeline: &'a wgpu::ComputePipeline,
-    group: wgpu::BindGroup,
-    groups: [u32; 3],
+/// Checks an image size against the 2-D dispatch limits.
+pub(crate) fn check_size(gpu: &crate::GpuContext, what: &str, (w, h): (u32, u32), tile: u32) -> Result<(), GpuError> {
+    if w == 0 || h == 0 {
+        return Err(GpuError::Setting(format!("{what}: image size {w}×{h} must be non-zero")));
+    }
+    let lim = &gpu.limits;
+    gpu.require("max_texture_dimension_2d", w.max(h) as u64, lim.max_texture_dimension_2d as u64)?;
+    gpu.require(
+        "max_compute_workgroups_per_dimension",
+        w.div_ceil(tile).max(h.div_ceil(tile)) as u64,
+        lim.max_compute_workgroups_per_dimension as u64,
+    )
 }
 
-impl<'a> Dispatch<'a> {
-    /// Records the dispatch into `pass`.
-    pub(crate) fn record(&self, pass: &mut wgpu::ComputePass) {
-        pass.set_pipeline(self.pipeline);
-        pass.set_bind_group(0, &self.group, &[]);
-        pass.dispatch_workgroups(self.groups[0], self.groups[1], self.groups[2]);
+/// A few bind groups kept by the identity of what they bind (the engine's
+/// views): the same views every frame make no new bind group. Holds at
+/// most [`ViewCache::CAPACITY`] entries, the least recently used dropped
+/// first (with it its clones of the views).
+pub(crate) struct ViewCache<K> {
+    entries: Vec<(K, wgpu::BindGroup)>,
+}
+
+impl<K: PartialEq> ViewCache<K> {
+    /// Entries kept (double- or triple-buffered targets fit).
+    pub(crate) const CAPACITY: usize = 4;
+
+    pub(crate) fn new() -> Self {
+        ViewCache { entries: Vec::new() }
     }
 
-    /// A dispatch of `pipeline` with `group` over `groups` workgroups.
-    pub(crate) fn new(stage: &'static str, pipeline: &'a wgpu::ComputePipeline, group: wgpu::BindGroup, groups: [u32; 3]) -> Self {
-        Dispatch { stage, pipeline, group, groups }
+    /// The bind group for `key`, made by `make` when not cached.
+    pub(crate) fn get(&mut self, key: K, make: impl FnOnce() -> wgpu::BindGroup) -> wgpu::BindGroup {
+        if let Some(i) = self.entries.iter().position(|(k, _)| *k == key) {
+            let e = self.entries.remove(i);
+            let g = e.1.clone();
+            self.entries.push(e);
+            return g;
+        }
+        let g = make();
+        if self.entries.len() == Self::CAPACITY {
+            self.entries.remove(0);
+        }
+        self.entries.push((key, g.clone()));
+        g
+    }
+}
+
+/// The per-record uniform slots of a pass: record `i` uses slot `i mod n`,
+/// so up to `n` records of the pass may share one submission (a uniform
+/// written through the queue lands at the next submission, before its
+/// commands run: two records sharing a slot in one submission would both
+/// see the second's values).
+pub(crate) struct RecordSlots {
+    n: usize,
+    next: usize,
+}
+
+impl RecordSlots {
+    pub(crate) fn new(n: u32) -> RecordSlots {
+        RecordSlots { n: n.max(1) as usize, next: 0 }
+    }
+
+    /// Slots.
+    pub(crate) fn len(&self) -> u64 {
+        self.n as u64
+    }
+
+    /// The slot of the next record.
+    pub(crate) fn take(&mut self) -> usize {
+        let slot = self.next;
+        self.next = (self.next + 1) % self.n;
+        slot
     }
 }

@@ -13,16 +13,6 @@ struct GpuLight {
     vec3 intensity;
     uint ies_base;
 };
-struct GpuLightCone {
-    vec3 center;
-    float radius;
-    vec3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint bvh_leaf;
-    uint pad;
-};
 struct GpuGeoNode {
     vec3 bmin;
     uint first;
@@ -49,101 +39,6 @@ struct GpuPathVertex {
     vec3 wo;
     float pad3_;
 };
-struct GpuPathState {
-    vec3 origin;
-    uint alive;
-    vec3 dir;
-    uint rng;
-    vec3 beta;
-    float pdf_bsdf;
-    vec3 prev;
-    uint pad;
-    vec3 prev_normal;
-    uint pad2_;
-    vec3 prev_r;
-    uint pad3_;
-    vec4 prev_lobe;
-};
-struct PtParams {
-    vec3 cam_pos;
-    uint width;
-    vec3 cam_right;
-    uint height;
-    vec3 cam_up;
-    uint depth;
-    vec3 cam_forward;
-    uint seed;
-    uint pass_index;
-    uint max_depth;
-    float eps;
-    float t_min;
-};
-struct FrameParams {
-    uint light_count;
-    uint seed;
-    uint frame;
-    uint pad;
-};
-struct RefitParams {
-    uint first;
-    uint count;
-    uint pad0_;
-    uint pad1_;
-};
-struct VplParams {
-    uint width;
-    uint height;
-    uint lights_per_subset;
-    float min_d2_;
-    float near_r2_;
-    uint near_blocks;
-    uint pad0_;
-    uint pad1_;
-};
-struct GpuNearBox {
-    vec3 lo;
-    float pad0_;
-    vec3 hi;
-    float pad1_;
-};
-struct GpuVplRecord {
-    vec3 position;
-    float pad0_;
-    vec3 normal;
-    float pad1_;
-    vec3 flux;
-    float pad2_;
-};
-struct PackParams {
-    uint count;
-    uint size;
-    uint per_subset;
-    uint mode;
-    float exposure;
-    float error_bound;
-    float scale;
-    uint slc;
-    float fixed_r2_;
-    uint pad0_;
-    uint pad1_;
-    uint pad2_;
-};
-struct ImageParams {
-    vec3 eye;
-    uint width;
-    uint height;
-    uint pad0_;
-    uint pad1_;
-    uint pad2_;
-};
-struct GpuVertex {
-    vec3 position;
-    uint material;
-    vec3 normal;
-    uint pad0_;
-    vec3 geo_normal;
-    uint pad1_;
-};
 struct GpuMaterial {
     vec3 albedo;
     float metallic;
@@ -151,21 +46,6 @@ struct GpuMaterial {
     float alpha;
     vec3 f0_;
     float f90_;
-};
-struct MapParams {
-    vec4 c0_;
-    vec4 c1_;
-    vec4 c2_;
-    vec4 c3_;
-    GpuLight light;
-    vec3 origin;
-    uint mode;
-    vec3 axis;
-    uint size;
-    vec3 right;
-    float extent;
-    vec3 up;
-    float texel;
 };
 struct ShadeParams {
     uint point_count;
@@ -181,16 +61,6 @@ struct BshNode {
     uint light;
     float extent;
 };
-struct GpuLightBvhNode {
-    vec3 center;
-    float radius;
-    vec3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint second;
-    uint light;
-};
 struct GeoHit {
     float t;
     uint tri;
@@ -203,10 +73,6 @@ struct Connection {
     vec3 e;
     vec3 y;
     float cos_x;
-};
-struct BvhPick {
-    uint light;
-    float pmf;
 };
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
@@ -256,21 +122,17 @@ layout(std430) readonly buffer type_4_block_5Compute { float _group_0_binding_3_
 
 layout(std140) uniform ShadeParams_block_6Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_15_block_7Compute { GpuPathVertex _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_13_block_7Compute { GpuPathVertex _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_16_block_8Compute { GpuMaterial _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_14_block_8Compute { GpuMaterial _group_0_binding_8_cs[]; };
 
 layout(std430) buffer type_12_block_9Compute { vec4 _group_0_binding_9_cs[]; };
 
-layout(std430) buffer type_17_block_10Compute { uint _group_0_binding_10_cs[]; };
+layout(std430) buffer type_15_block_10Compute { uint _group_0_binding_10_cs[]; };
 
 
 float to_f32_(uint u) {
     return float(u);
-}
-
-uint to_u32_(float x) {
-    return uint(x);
 }
 
 uint mul_lo_u32_(uint a, uint b) {
@@ -286,58 +148,23 @@ float xi_from_bits(uint bits) {
     return (_e3 * XI_STEP);
 }
 
-uint pcg_hash(uint x_1) {
-    uint _e2 = mul_lo_u32_(x_1, 747796405u);
+uint pcg_hash(uint x) {
+    uint _e2 = mul_lo_u32_(x, 747796405u);
     uint _e4 = add_wrap_u32_(_e2, 2891336453u);
     uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
     return ((_e12 >> 22u) ^ _e12);
 }
 
-uint reverse_bits(uint x_2) {
-    uint v = 0u;
-    v = (((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u));
-    uint _e11 = v;
-    uint _e16 = v;
-    v = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
-    uint _e22 = v;
-    uint _e27 = v;
-    v = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
-    uint _e33 = v;
-    uint _e38 = v;
-    v = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
-    uint _e44 = v;
-    uint _e49 = v;
-    v = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
-    uint _e55 = v;
-    return _e55;
-}
-
-float xi_for(uint seed, uint frame, uint light) {
-    uint _e3 = pcg_hash(seed);
-    uint _e4 = pcg_hash(_e3);
-    uint _e6 = pcg_hash((_e4 ^ light));
-    uint _e7 = reverse_bits(frame);
-    uint _e8 = add_wrap_u32_(_e6, _e7);
-    float _e9 = xi_from_bits(_e8);
-    return _e9;
-}
-
-uint point_stream(uint seed_1, uint point, uint frame_1) {
-    uint _e3 = pcg_hash(frame_1);
+uint point_stream(uint seed, uint point, uint frame) {
+    uint _e3 = pcg_hash(frame);
     uint _e5 = pcg_hash((point ^ _e3));
-    uint _e7 = pcg_hash((seed_1 ^ _e5));
+    uint _e7 = pcg_hash((seed ^ _e5));
     return _e7;
 }
 
 uint pick_stream(uint stream) {
     uint _e3 = pcg_hash((stream ^ PICK_STREAM));
     return _e3;
-}
-
-uint path_stream(uint seed_2, uint pixel, uint pass_index) {
-    uint _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
-    uint _e5 = point_stream(seed_2, pixel, _e4);
-    return _e5;
 }
 
 float rr_probability(float rt2_, float d2_) {
@@ -354,285 +181,71 @@ float slc_weight(float rt2_1, float d2_1) {
     return (d2_1 / rt2_1);
 }
 
-float random_range2_(float rt2_2, float xi) {
-    return (rt2_2 / (1.0 - xi));
-}
-
 bool slc_keep(float r2_, float d2_2) {
     return (d2_2 < r2_);
 }
 
-bool clamp_keep(float range2_, float d2_3) {
-    return (d2_3 < range2_);
+bool sphere_contains_point(vec3 c, float r, vec3 x_1) {
+    vec3 v_6 = (x_1 - c);
+    return (dot(v_6, v_6) <= (r * r));
 }
 
-float threshold_range2_(float intensity, float exposure, float error_bound) {
-    if ((intensity <= 0.0)) {
-        return 0.0;
-    }
-    return (((exposure / error_bound) * intensity) / TWO_PI);
+float inverse_square(float d2_3) {
+    return (1.0 / max(d2_3, MIN_D2_));
 }
 
-float intensity_measure(vec3 rgb, uint mode) {
-    if ((mode == 1u)) {
-        return (((rgb.x + rgb.y) + rgb.z) / 3.0);
-    }
-    return max(rgb.x, max(rgb.y, rgb.z));
-}
-
-float cull_radius(float r2_1) {
-    return (sqrt(r2_1) * CULL_RADIUS_SCALE);
-}
-
-float windowed_falloff(float d2_4, float range2_1) {
-    float q_2 = (d2_4 / range2_1);
-    float w_12 = clamp((1.0 - (q_2 * q_2)), 0.0, 1.0);
-    return ((w_12 * w_12) / max(d2_4, 0.0001));
-}
-
-bool sphere_contains_point(vec3 c, float r, vec3 x_3) {
-    vec3 v_10 = (x_3 - c);
-    return (dot(v_10, v_10) <= (r * r));
-}
-
-bool sphere_overlaps_sphere(vec3 c1_, float r1_, vec3 c2_, float r2_2) {
-    vec3 v_11 = (c2_ - c1_);
-    float r_14 = (r1_ + r2_2);
-    return (dot(v_11, v_11) <= (r_14 * r_14));
-}
-
-float sphere_pad(float r_1, vec3 c_1) {
-    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
-}
-
-vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
-    bool local = false;
-    vec3 v_12 = (c2_1 - c1_1);
-    float d_7 = sqrt(dot(v_12, v_12));
-    float _e8 = sphere_pad(r1_1, c1_1);
-    if ((r1_1 >= ((d_7 + r2_3) + _e8))) {
-        return vec4(c1_1.x, c1_1.y, c1_1.z, r1_1);
-    }
-    float _e16 = sphere_pad(r2_3, c2_1);
-    if ((r2_3 >= ((d_7 + r1_1) + _e16))) {
-        return vec4(c2_1.x, c2_1.y, c2_1.z, r2_3);
-    }
-    if (!((d_7 >= SPHERE_HUGE))) {
-        local = ((0.5 * ((d_7 + r1_1) + r2_3)) >= SPHERE_HUGE);
-    } else {
-        local = true;
-    }
-    bool _e35 = local;
-    if (_e35) {
-        return vec4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
-    }
-    if ((abs((r1_1 - r2_3)) >= d_7)) {
-        if ((r1_1 >= r2_3)) {
-            float rn = max(r1_1, (d_7 + r2_3));
-            float _e50 = sphere_pad(rn, c1_1);
-            return vec4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
-        }
-        float rm = max(r2_3, (d_7 + r1_1));
-        float _e58 = sphere_pad(rm, c2_1);
-        return vec4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
-    }
-    float r0_ = (0.5 * ((d_7 + r1_1) + r2_3));
-    vec3 c_11 = (c1_1 + (v_12 * ((r0_ - r1_1) / d_7)));
-    vec3 e1_ = (c_11 - c1_1);
-    vec3 e2_ = (c_11 - c2_1);
-    float r_15 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    float _e82 = sphere_pad(r_15, c_11);
-    return vec4(c_11.x, c_11.y, c_11.z, (r_15 + _e82));
-}
-
-bool sphere_overlaps_aabb(vec3 c_2, float r_2, vec3 bmin, vec3 bmax) {
-    vec3 q_3 = clamp(c_2, bmin, bmax);
-    vec3 v_13 = (q_3 - c_2);
-    return (dot(v_13, v_13) <= (r_2 * r_2));
-}
-
-float vpl_rt2_(vec3 flux, float exposure_1, float error_bound_1, uint mode_1) {
-    float _e6 = intensity_measure((flux * INV_PI), mode_1);
-    float _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
-    return _e7;
-}
-
-float range_radius(float extent, float r2_4) {
-    return (extent + sqrt(r2_4));
-}
-
-float inverse_square(float d2_5) {
-    return (1.0 / max(d2_5, MIN_D2_));
-}
-
-float connection_factor(float cos_x, float d2_6, float rt2_3, float w) {
-    float _e4 = inverse_square(d2_6);
-    float _e6 = slc_weight(rt2_3, d2_6);
+float connection_factor(float cos_x, float d2_4, float rt2_2, float w) {
+    float _e4 = inverse_square(d2_4);
+    float _e6 = slc_weight(rt2_2, d2_4);
     return (((cos_x * _e4) * _e6) * w);
 }
 
-float connection_cosine(vec3 x_4, vec3 y, vec3 n, vec3 ng, float r2_5) {
+float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
+    bool local = false;
     bool local_1 = false;
-    bool local_2 = false;
-    vec3 v_14 = (x_4 - y);
-    float d2_12 = dot(v_14, v_14);
-    bool _e7 = slc_keep(r2_5, d2_12);
+    vec3 v_7 = (x_2 - y);
+    float d2_7 = dot(v_7, v_7);
+    bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_1 = !((d2_12 > 0.0));
+        local = !((d2_7 > 0.0));
     } else {
-        local_1 = true;
+        local = true;
     }
-    bool _e16 = local_1;
+    bool _e16 = local;
     if (_e16) {
         return 0.0;
     }
-    vec3 w_13 = (v_14 / vec3(sqrt(d2_12)));
-    float cos_x_1 = -(dot(n, w_13));
+    vec3 w_5 = (v_7 / vec3(sqrt(d2_7)));
+    float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
-        local_2 = (dot(ng, w_13) >= 0.0);
+        local_1 = (dot(ng, w_5) >= 0.0);
     } else {
-        local_2 = true;
+        local_1 = true;
     }
-    bool _e32 = local_2;
+    bool _e32 = local_1;
     if (_e32) {
         return 0.0;
     }
     return cos_x_1;
 }
 
-float vpl_lobe(vec3 n_1, vec3 w_1) {
-    return (max(dot(n_1, w_1), 0.0) * INV_PI);
+float triangle_lobe(vec3 n_1, float area, vec3 w_1) {
+    return (area * max(dot(n_1, w_1), 0.0));
 }
 
-float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v_1, float min_d2_) {
-    float m_1 = max(dot(v_1, v_1), min_d2_);
-    return (((max(dot(n_l, v_1), 0.0) * max(-(dot(n_x, v_1)), 0.0)) * INV_PI) / (m_1 * m_1));
-}
-
-float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
-    if ((cos_inner <= cos_outer)) {
-        return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
-    }
-    float t_2 = clamp(((cos_theta - cos_outer) / (cos_inner - cos_outer)), 0.0, 1.0);
-    return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
-}
-
-float triangle_lobe(vec3 n_2, float area, vec3 w_2) {
-    return (area * max(dot(n_2, w_2), 0.0));
-}
-
-vec3 triangle_sample(vec3 a_2, vec3 b_2, vec3 c_3, float u1_, float u2_) {
+vec3 triangle_sample(vec3 a_2, vec3 b_2, vec3 c_1, float u1_, float u2_) {
     float su = sqrt(u1_);
     float b0_ = (1.0 - su);
     float b1_ = (u2_ * su);
-    return (((a_2 * b0_) + (b_2 * b1_)) + (c_3 * ((1.0 - b0_) - b1_)));
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1.0 - b0_) - b1_)));
 }
 
-float area_to_solid_angle_pdf(float pdf_area, float d2_7, float cos_light) {
-    float c_12 = abs(cos_light);
-    if ((c_12 <= 0.0)) {
+float area_to_solid_angle_pdf(float pdf_area, float d2_5, float cos_light) {
+    float c_6 = abs(cos_light);
+    if ((c_6 <= 0.0)) {
         return 0.0;
     }
-    return ((pdf_area * d2_7) / c_12);
-}
-
-float atan_portable(float x_5) {
-    float base = 0.0;
-    float t = 0.0;
-    float a_10 = abs(x_5);
-    t = a_10;
-    if ((a_10 > 2.4142137)) {
-        base = 1.5707964;
-        t = (-1.0 / a_10);
-    } else {
-        if ((a_10 > 0.41421357)) {
-            base = 0.7853982;
-            t = ((a_10 - 1.0) / (a_10 + 1.0));
-        }
-    }
-    float _e18 = t;
-    float _e19 = t;
-    float z_3 = (_e18 * _e19);
-    float _e21 = base;
-    float _e33 = t;
-    float _e35 = t;
-    float r_16 = (_e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35));
-    return ((x_5 < 0.0) ? -(r_16) : r_16);
-}
-
-float atan2_portable(float y_1, float x_6) {
-    if ((x_6 == 0.0)) {
-        if ((y_1 > 0.0)) {
-            return 1.5707964;
-        }
-        if ((y_1 < 0.0)) {
-            return -1.5707964;
-        }
-        return 0.0;
-    }
-    float _e12 = atan_portable((y_1 / x_6));
-    if ((x_6 > 0.0)) {
-        return _e12;
-    }
-    if ((y_1 >= 0.0)) {
-        return (_e12 + 3.1415927);
-    }
-    return (_e12 - 3.1415927);
-}
-
-float ies_fold_c(float c_4, float h_first, float h_last) {
-    float a_3 = 0.0;
-    a_3 = (c_4 - (360.0 * floor((c_4 / 360.0))));
-    if ((h_last <= 0.0)) {
-        return 0.0;
-    }
-    if ((h_last <= 90.0)) {
-        float _e15 = a_3;
-        if ((_e15 > 180.0)) {
-            float _e18 = a_3;
-            a_3 = (360.0 - _e18);
-        }
-        float _e21 = a_3;
-        if ((_e21 > 90.0)) {
-            float _e24 = a_3;
-            a_3 = (180.0 - _e24);
-        }
-        float _e27 = a_3;
-        return _e27;
-    }
-    if ((h_first >= 90.0)) {
-        float _e30 = a_3;
-        if ((_e30 < 90.0)) {
-            float _e33 = a_3;
-            a_3 = (180.0 - _e33);
-        } else {
-            float _e36 = a_3;
-            if ((_e36 > 270.0)) {
-                float _e39 = a_3;
-                a_3 = (540.0 - _e39);
-            }
-        }
-        float _e42 = a_3;
-        return _e42;
-    }
-    if ((h_last <= 180.0)) {
-        float _e45 = a_3;
-        if ((_e45 > 180.0)) {
-            float _e48 = a_3;
-            a_3 = (360.0 - _e48);
-        }
-        float _e51 = a_3;
-        return _e51;
-    }
-    float _e52 = a_3;
-    return _e52;
-}
-
-float ies_lerp_t(float a0_, float a1_, float x_8) {
-    if ((a1_ <= a0_)) {
-        return 0.0;
-    }
-    return clamp(((x_8 - a0_) / (a1_ - a0_)), 0.0, 1.0);
+    return ((pdf_area * d2_5) / c_6);
 }
 
 float bsh_scaled_radius(BshNode node, float scale) {
@@ -645,9 +258,9 @@ float bsh_scaled_radius(BshNode node, float scale) {
     return (node.radius * scale);
 }
 
-uint mul_hi_u32_(uint a_4, uint b_3) {
-    uint a_lo = (a_4 & 65535u);
-    uint a_hi = (a_4 >> 16u);
+uint mul_hi_u32_(uint a_3, uint b_3) {
+    uint a_lo = (a_3 & 65535u);
+    uint a_hi = (a_3 >> 16u);
     uint b_lo = (b_3 & 65535u);
     uint b_hi = (b_3 >> 16u);
     uint ll = (a_lo * b_lo);
@@ -658,155 +271,107 @@ uint mul_hi_u32_(uint a_4, uint b_3) {
     return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid >> 16u));
 }
 
-uint uniform_index(uint n_4, uint hi_1, uint lo_1) {
-    uint _e3 = mul_lo_u32_(hi_1, n_4);
-    uint _e4 = mul_hi_u32_(hi_1, n_4);
-    uint _e5 = mul_hi_u32_(lo_1, n_4);
+uint uniform_index(uint n_2, uint hi, uint lo) {
+    uint _e3 = mul_lo_u32_(hi, n_2);
+    uint _e4 = mul_hi_u32_(hi, n_2);
+    uint _e5 = mul_hi_u32_(lo, n_2);
     if ((_e3 > (4294967295u - _e5))) {
         return (_e4 + 1u);
     }
     return _e4;
 }
 
-uint reservoir_slot(uint n_5, uint k, uint hi_2, uint lo_2) {
-    if ((n_5 <= k)) {
-        return (n_5 - 1u);
+uint reservoir_slot(uint n_3, uint k, uint hi_1, uint lo_1) {
+    if ((n_3 <= k)) {
+        return (n_3 - 1u);
     }
-    uint _e7 = uniform_index(n_5, hi_2, lo_2);
+    uint _e7 = uniform_index(n_3, hi_1, lo_1);
     if ((_e7 < k)) {
         return _e7;
     }
     return k;
 }
 
-bool reservoir_takes(uint n_6) {
-    return (n_6 < RESERVOIR_FULL);
+bool reservoir_takes(uint n_4) {
+    return (n_4 < RESERVOIR_FULL);
 }
 
-float reservoir_weight(uint n_7, uint k_1) {
-    float _e2 = to_f32_(n_7);
+float reservoir_weight(uint n_5, uint k_1) {
+    float _e2 = to_f32_(n_5);
     float _e3 = to_f32_(k_1);
     return max((_e2 / _e3), 1.0);
 }
 
-bool weighted_replace(float w_4, float w_sum, float u_1) {
-    return ((u_1 * w_sum) < w_4);
-}
-
-float weighted_pick_weight(float w_sum_1, float w_5, uint k_2) {
-    float _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_5));
-}
-
-float reservoir_select_pdf(uint seen, bool in_range, uint k_3) {
+float reservoir_select_pdf(uint seen, bool in_range, uint k_2) {
     uint others = 0u;
-    bool local_4 = false;
+    bool local_2 = false;
     others = seen;
     if (in_range) {
-        local_4 = (seen > 0u);
+        local_2 = (seen > 0u);
     } else {
-        local_4 = false;
+        local_2 = false;
     }
-    bool _e9 = local_4;
+    bool _e9 = local_2;
     if (_e9) {
         others = (seen - 1u);
     }
     uint _e12 = others;
-    float _e15 = reservoir_weight((_e12 + 1u), k_3);
+    float _e15 = reservoir_weight((_e12 + 1u), k_2);
     return (1.0 / _e15);
 }
 
-uint alias_choice(uint column, uint other, float keep, float u_2) {
-    return ((u_2 < keep) ? column : other);
-}
-
-uint uniform_light(float u_3, uint n_8) {
-    float _e2 = to_f32_(n_8);
-    uint _e4 = to_u32_((u_3 * _e2));
-    return min(_e4, (n_8 - 1u));
-}
-
-float mis_balance(float pdf_a, float pdf_b) {
-    float s_2 = (pdf_a + pdf_b);
+float mis_power(float pdf_a, float pdf_b) {
+    float a2_ = (pdf_a * pdf_a);
+    float s_2 = (a2_ + (pdf_b * pdf_b));
     if ((s_2 <= 0.0)) {
         return 0.0;
     }
-    return (pdf_a / s_2);
+    return (a2_ / s_2);
 }
 
-float mis_power(float pdf_a_1, float pdf_b_1) {
-    float a2_ = (pdf_a_1 * pdf_a_1);
-    float s_3 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if ((s_3 <= 0.0)) {
-        return 0.0;
-    }
-    return (a2_ / s_3);
-}
-
-float light_strategy_pdf(float select, float rt2_4, float d2_8, float area_1, float cos_y) {
-    bool local_5 = false;
-    bool local_6 = false;
-    if (!((d2_8 <= 0.0))) {
-        local_5 = (area_1 <= 0.0);
+float light_strategy_pdf(float select, float rt2_3, float d2_6, float area_1, float cos_y) {
+    bool local_3 = false;
+    bool local_4 = false;
+    if (!((d2_6 <= 0.0))) {
+        local_3 = (area_1 <= 0.0);
     } else {
-        local_5 = true;
+        local_3 = true;
     }
-    bool _e13 = local_5;
+    bool _e13 = local_3;
     if (!(_e13)) {
-        local_6 = (cos_y <= 0.0);
+        local_4 = (cos_y <= 0.0);
     } else {
-        local_6 = true;
+        local_4 = true;
     }
-    bool _e20 = local_6;
+    bool _e20 = local_4;
     if (_e20) {
         return 0.0;
     }
-    float _e22 = rr_probability(rt2_4, d2_8);
-    float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_8, cos_y);
+    float _e22 = rr_probability(rt2_3, d2_6);
+    float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_6, cos_y);
     return ((select * _e22) * _e26);
 }
 
-vec3 lambert_brdf(vec3 rho) {
-    return (rho * INV_PI);
+float cosine_pdf(float cos_theta) {
+    return (max(cos_theta, 0.0) * INV_PI);
 }
 
-float cosine_pdf(float cos_theta_1) {
-    return (max(cos_theta_1, 0.0) * INV_PI);
+vec3 onb_tangent(vec3 n_6) {
+    float s_3 = ((n_6.z >= 0.0) ? 1.0 : -1.0);
+    float a_7 = (-1.0 / (s_3 + n_6.z));
+    return vec3((1.0 + (((s_3 * n_6.x) * n_6.x) * a_7)), (((s_3 * n_6.x) * n_6.y) * a_7), (-(s_3) * n_6.x));
 }
 
-vec3 onb_tangent(vec3 n_9) {
-    float s_4 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_11 = (-1.0 / (s_4 + n_9.z));
-    return vec3((1.0 + (((s_4 * n_9.x) * n_9.x) * a_11)), (((s_4 * n_9.x) * n_9.y) * a_11), (-(s_4) * n_9.x));
+vec3 onb_bitangent(vec3 n_7) {
+    float s_4 = ((n_7.z >= 0.0) ? 1.0 : -1.0);
+    float a_8 = (-1.0 / (s_4 + n_7.z));
+    return vec3(((n_7.x * n_7.y) * a_8), (s_4 + ((n_7.y * n_7.y) * a_8)), -(n_7.y));
 }
 
-vec3 onb_bitangent(vec3 n_10) {
-    float s_5 = ((n_10.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_5 + n_10.z));
-    return vec3(((n_10.x * n_10.y) * a_12), (s_5 + ((n_10.y * n_10.y) * a_12)), -(n_10.y));
-}
-
-vec3 onb_to_world(vec3 n_11, vec3 d) {
-    vec3 _e2 = onb_tangent(n_11);
-    vec3 _e5 = onb_bitangent(n_11);
-    return (((_e2 * d.x) + (_e5 * d.y)) + (n_11 * d.z));
-}
-
-vec3 onb_to_local(vec3 n_12, vec3 w_6) {
-    vec3 _e2 = onb_tangent(n_12);
-    vec3 _e4 = onb_bitangent(n_12);
-    return vec3(dot(w_6, _e2), dot(w_6, _e4), dot(w_6, n_12));
-}
-
-vec3 cosine_direction(vec3 n_13, float u1_1, float u2_1) {
-    float r_17 = sqrt(u1_1);
-    float phi_5 = (6.2831855 * u2_1);
-    vec3 _e16 = onb_to_world(n_13, vec3((r_17 * cos(phi_5)), (r_17 * sin(phi_5)), sqrt(max((1.0 - u1_1), 0.0))));
-    return normalize(_e16);
-}
-
-float ggx_alpha(float roughness) {
-    return max((roughness * roughness), GGX_ALPHA_MIN);
+vec3 onb_to_local(vec3 n_8, vec3 w_2) {
+    vec3 _e2 = onb_tangent(n_8);
+    vec3 _e4 = onb_bitangent(n_8);
+    return vec3(dot(w_2, _e2), dot(w_2, _e4), dot(w_2, n_8));
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha) {
@@ -814,8 +379,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha) {
         return 0.0;
     }
     float a2_1 = (alpha * alpha);
-    float t_3 = (((cos_h * cos_h) * a2_1) + sin2_h);
-    return ((a2_1 * INV_PI) / (t_3 * t_3));
+    float t = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t * t));
 }
 
 float smith_root(float cos_, float alpha_1) {
@@ -823,118 +388,118 @@ float smith_root(float cos_, float alpha_1) {
     return sqrt((((cos_ * cos_) * (1.0 - a2_2)) + a2_2));
 }
 
-float smith_visibility(float n_l_1, float n_v, float alpha_2) {
-    bool local_7 = false;
-    if (!((n_l_1 <= 0.0))) {
-        local_7 = (n_v <= 0.0);
+float smith_visibility(float n_l, float n_v, float alpha_2) {
+    bool local_5 = false;
+    if (!((n_l <= 0.0))) {
+        local_5 = (n_v <= 0.0);
     } else {
-        local_7 = true;
+        local_5 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_5;
     if (_e11) {
         return 0.0;
     }
     float _e13 = smith_root(n_v, alpha_2);
-    float _e15 = smith_root(n_l_1, alpha_2);
-    return (0.5 / ((n_l_1 * _e13) + (n_v * _e15)));
+    float _e15 = smith_root(n_l, alpha_2);
+    return (0.5 / ((n_l * _e13) + (n_v * _e15)));
 }
 
 vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
-    float c_13 = clamp((1.0 - v_h), 0.0, 1.0);
-    float c2_2 = (c_13 * c_13);
-    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_2 * c2_2) * c_13)));
+    float c_7 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_ = (c_7 * c_7);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7)));
 }
 
-vec3 specular_fresnel(vec3 base_4, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
+vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
     vec3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
-    vec3 _e10 = fresnel_schlick(base_4, 1.0, v_h_1);
+    vec3 _e10 = fresnel_schlick(base, 1.0, v_h_1);
     return ((_e5 * (1.0 - metallic)) + (_e10 * metallic));
 }
 
-vec3 diffuse_brdf(vec3 base_5, float metallic_1, vec3 f0_d_1, float f90_d_1, float v_h_2) {
+vec3 diffuse_brdf(vec3 base_1, float metallic_1, vec3 f0_d_1, float f90_d_1, float v_h_2) {
     vec3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
-    return ((((vec3(1.0, 1.0, 1.0) - _e9) * base_5) * (1.0 - metallic_1)) * INV_PI);
+    return ((((vec3(1.0, 1.0, 1.0) - _e9) * base_1) * (1.0 - metallic_1)) * INV_PI);
 }
 
-float half_cosine(vec3 v_2, vec3 l) {
-    vec3 h_3 = (v_2 + l);
-    float len2_ = dot(h_3, h_3);
+float half_cosine(vec3 v, vec3 l) {
+    vec3 h_2 = (v + l);
+    float len2_ = dot(h_2, h_2);
     if ((len2_ <= 0.0)) {
         return 0.0;
     }
-    return clamp((dot(v_2, h_3) / sqrt(len2_)), 0.0, 1.0);
+    return clamp((dot(v, h_2) / sqrt(len2_)), 0.0, 1.0);
 }
 
-vec3 specular_brdf(vec3 base_6, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n_14, vec3 v_3, vec3 l_1) {
-    bool local_8 = false;
-    float n_l_2 = dot(n_14, l_1);
-    float n_v_2 = dot(n_14, v_3);
-    if (!((n_l_2 <= 0.0))) {
-        local_8 = (n_v_2 <= 0.0);
+vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n_9, vec3 v_1, vec3 l_1) {
+    bool local_6 = false;
+    float n_l_1 = dot(n_9, l_1);
+    float n_v_2 = dot(n_9, v_1);
+    if (!((n_l_1 <= 0.0))) {
+        local_6 = (n_v_2 <= 0.0);
     } else {
-        local_8 = true;
+        local_6 = true;
     }
-    bool _e18 = local_8;
+    bool _e18 = local_6;
     if (_e18) {
         return vec3(0.0, 0.0, 0.0);
     }
-    vec3 hs = (v_3 + l_1);
+    vec3 hs = (v_1 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
-    vec3 h_4 = (hs * inv);
-    vec3 c_14 = cross(n_14, h_4);
-    float _e32 = ggx_d(dot(n_14, h_4), dot(c_14, c_14), alpha_3);
-    vec3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_3, h_4));
-    float _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
+    vec3 h_3 = (hs * inv);
+    vec3 c_8 = cross(n_9, h_3);
+    float _e32 = ggx_d(dot(n_9, h_3), dot(c_8, c_8), alpha_3);
+    vec3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
+    float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
 
-vec3 brdf_eval(vec3 base_7, float metallic_3, vec3 f0_d_3, float f90_d_3, float alpha_4, vec3 n_15, vec3 v_4, vec3 l_2) {
-    if ((dot(n_15, l_2) <= 0.0)) {
+vec3 brdf_eval(vec3 base_3, float metallic_3, vec3 f0_d_3, float f90_d_3, float alpha_4, vec3 n_10, vec3 v_2, vec3 l_2) {
+    if ((dot(n_10, l_2) <= 0.0)) {
         return vec3(0.0, 0.0, 0.0);
     }
-    float _e15 = half_cosine(v_4, l_2);
-    vec3 _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
-    vec3 _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_15, v_4, l_2);
+    float _e15 = half_cosine(v_2, l_2);
+    vec3 _e16 = diffuse_brdf(base_3, metallic_3, f0_d_3, f90_d_3, _e15);
+    vec3 _e17 = specular_brdf(base_3, metallic_3, f0_d_3, f90_d_3, alpha_4, n_10, v_2, l_2);
     return (_e16 + _e17);
 }
 
 bool has_specular(float metallic_4, vec3 f0_d_4, float f90_d_4) {
-    bool local_9 = false;
-    bool local_10 = false;
+    bool local_7 = false;
+    bool local_8 = false;
     if (!((metallic_4 > 0.0))) {
-        local_9 = (f90_d_4 > 0.0);
+        local_7 = (f90_d_4 > 0.0);
     } else {
-        local_9 = true;
+        local_7 = true;
     }
-    bool _e11 = local_9;
+    bool _e11 = local_7;
     if (!(_e11)) {
-        local_10 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
+        local_8 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
     } else {
-        local_10 = true;
+        local_8 = true;
     }
-    bool _e23 = local_10;
+    bool _e23 = local_8;
     return _e23;
 }
 
-float channel_mean(vec3 c_6) {
-    return (((c_6.x + c_6.y) + c_6.z) * 0.33333334);
+float channel_mean(vec3 c_2) {
+    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334);
 }
 
-vec4 receiver_lobe(vec3 base_8, float metallic_5, vec3 f0_d_5, float f90_d_5, float alpha_5, float n_v_1) {
-    bool local_11 = false;
+vec4 receiver_lobe(vec3 base_4, float metallic_5, vec3 f0_d_5, float f90_d_5, float alpha_5, float n_v_1) {
+    bool local_9 = false;
     vec3 _e10 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
-    float _e16 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e10) * base_8) * (1.0 - metallic_5)));
+    float _e16 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e10) * base_4) * (1.0 - metallic_5)));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_5, f0_d_5, f90_d_5);
-        local_11 = !(_e22);
+        local_9 = !(_e22);
     } else {
-        local_11 = true;
+        local_9 = true;
     }
-    bool _e25 = local_11;
+    bool _e25 = local_9;
     if (_e25) {
         return vec4(_e16, 0.0, alpha_5, n_v_1);
     }
-    vec3 _e28 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    vec3 _e28 = specular_fresnel(base_4, metallic_5, f0_d_5, f90_d_5, n_v_1);
     float _e29 = channel_mean(_e28);
     return vec4(_e16, _e29, alpha_5, n_v_1);
 }
@@ -962,560 +527,162 @@ float range_scale(vec4 lobe_2) {
     return clamp(_e5, 1.0, RANGE_SCALE_MAX);
 }
 
-vec3 mirror_dir(vec3 n_16, vec3 v_5) {
-    return ((n_16 * (2.0 * dot(n_16, v_5))) - v_5);
+vec3 mirror_dir(vec3 n_11, vec3 v_3) {
+    return ((n_11 * (2.0 * dot(n_11, v_3))) - v_3);
 }
 
 float bounded_vndf_k(vec3 wi, float alpha_6) {
-    float a_13 = clamp(alpha_6, 0.0, 1.0);
-    float s_6 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    float a2_3 = (a_13 * a_13);
-    float s2_ = (s_6 * s_6);
+    float a_9 = clamp(alpha_6, 0.0, 1.0);
+    float s_5 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    float a2_3 = (a_9 * a_9);
+    float s2_ = (s_5 * s_5);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
-vec3 ggx_vndf_sample(vec3 wi_1, float alpha_7, float u1_2, float u2_2) {
-    vec3 wi_std = normalize(vec3((wi_1.x * alpha_7), (wi_1.y * alpha_7), wi_1.z));
-    float _e12 = bounded_vndf_k(wi_1, alpha_7);
-    float b_8 = ((wi_1.z > 0.0) ? (_e12 * wi_std.z) : wi_std.z);
-    float phi_6 = (6.2831855 * u1_2);
-    float z_4 = (((1.0 - u2_2) * (1.0 + b_8)) - b_8);
-    float sin_t = sqrt(clamp((1.0 - (z_4 * z_4)), 0.0, 1.0));
-    vec3 m_std = (wi_std + vec3((sin_t * cos(phi_6)), (sin_t * sin(phi_6)), z_4));
-    vec3 m_2 = normalize(vec3((m_std.x * alpha_7), (m_std.y * alpha_7), m_std.z));
-    return ((m_2 * (2.0 * dot(wi_1, m_2))) - wi_1);
-}
-
-float ggx_vndf_pdf(vec3 wi_2, vec3 wo, float alpha_8) {
-    bool local_12 = false;
-    if (!((wi_2.z <= 0.0))) {
-        local_12 = (wo.z <= 0.0);
+float ggx_vndf_pdf(vec3 wi_1, vec3 wo, float alpha_7) {
+    bool local_10 = false;
+    if (!((wi_1.z <= 0.0))) {
+        local_10 = (wo.z <= 0.0);
     } else {
-        local_12 = true;
+        local_10 = true;
     }
-    bool _e13 = local_12;
+    bool _e13 = local_10;
     if (_e13) {
         return 0.0;
     }
-    vec3 hs_1 = (wi_2 + wo);
-    vec3 m_3 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
-    float _e28 = ggx_d(m_3.z, ((m_3.x * m_3.x) + (m_3.y * m_3.y)), alpha_8);
-    float t_4 = sqrt((((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
-    float _e43 = bounded_vndf_k(wi_2, alpha_8);
-    return (_e28 / (2.0 * ((_e43 * wi_2.z) + t_4)));
+    vec3 hs_1 = (wi_1 + wo);
+    vec3 m_1 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
+    float _e28 = ggx_d(m_1.z, ((m_1.x * m_1.x) + (m_1.y * m_1.y)), alpha_7);
+    float t_1 = sqrt((((alpha_7 * alpha_7) * ((wi_1.x * wi_1.x) + (wi_1.y * wi_1.y))) + (wi_1.z * wi_1.z)));
+    float _e43 = bounded_vndf_k(wi_1, alpha_7);
+    return (_e28 / (2.0 * ((_e43 * wi_1.z) + t_1)));
 }
 
-vec3 bsdf_sample(vec3 n_17, vec3 v_6, float alpha_9, float p_spec, float u1_3, float u2_3) {
-    if ((u1_3 < p_spec)) {
-        if ((dot(n_17, v_6) <= 0.0)) {
-            return -(n_17);
-        }
-        vec3 _e11 = onb_to_local(n_17, v_6);
-        vec3 _e13 = ggx_vndf_sample(_e11, alpha_9, (u1_3 / p_spec), u2_3);
-        vec3 _e14 = onb_to_world(n_17, _e13);
-        return normalize(_e14);
-    }
-    vec3 _e20 = cosine_direction(n_17, ((u1_3 - p_spec) / (1.0 - p_spec)), u2_3);
-    return _e20;
-}
-
-float bsdf_pdf(vec3 n_18, vec3 v_7, vec3 l_3, float alpha_10, float p_spec_1) {
-    float _e6 = cosine_pdf(dot(n_18, l_3));
-    if ((p_spec_1 <= 0.0)) {
+float bsdf_pdf(vec3 n_12, vec3 v_4, vec3 l_3, float alpha_8, float p_spec) {
+    float _e6 = cosine_pdf(dot(n_12, l_3));
+    if ((p_spec <= 0.0)) {
         return _e6;
     }
-    vec3 _e9 = onb_to_local(n_18, v_7);
-    vec3 _e10 = onb_to_local(n_18, l_3);
-    float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_10);
-    return ((p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6));
-}
-
-float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
-    if ((cos_a > cos_b)) {
-        return 1.0;
-    }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
-}
-
-float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1) {
-    if ((cos_a_1 > cos_b_1)) {
-        return 0.0;
-    }
-    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
-}
-
-float safe_sqrt(float x_9) {
-    return sqrt(max(x_9, 0.0));
-}
-
-float subtended_cos(float dist2_, float r2_6) {
-    float _e5 = safe_sqrt((1.0 - (r2_6 / dist2_)));
-    return ((dist2_ <= r2_6) ? -1.0 : _e5);
-}
-
-float emitter_importance(vec3 center, float radius, float phi, vec3 axis, float cos_o, float cos_e, vec3 p) {
-    vec3 v_15 = (p - center);
-    float dist2_1 = dot(v_15, v_15);
-    float r2_8 = (radius * radius);
-    float d2_13 = max(max(dist2_1, r2_8), MIN_D2_);
-    vec3 wi_3 = ((dist2_1 > 0.0) ? (v_15 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
-    float cos_w = dot(axis, wi_3);
-    float _e27 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    float _e28 = subtended_cos(dist2_1, r2_8);
-    float _e32 = safe_sqrt((1.0 - (_e28 * _e28)));
-    float _e36 = safe_sqrt((1.0 - (cos_o * cos_o)));
-    float _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
-    float _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
-    float _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
-    if ((_e39 <= cos_e)) {
-        return 0.0;
-    }
-    return ((phi * _e39) / d2_13);
-}
-
-float cone_cos_toward(vec3 center_1, float radius_1, vec3 p_1, vec3 d_1) {
-    vec3 v_16 = (center_1 - p_1);
-    float dist2_2 = dot(v_16, v_16);
-    vec3 w_14 = ((dist2_2 > 0.0) ? (v_16 / vec3(sqrt(dist2_2))) : vec3(0.0, 0.0, 0.0));
-    float _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
-    float cos_i = dot(w_14, d_1);
-    float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
-    float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
-    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
-}
-
-float light_importance(vec3 center_2, float radius_2, float phi_1, vec3 axis_1, float cos_o_1, float cos_e_1, vec3 p_2, vec3 n_19) {
-    float imp = 0.0;
-    float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if ((dot(n_19, n_19) > 0.0)) {
-        float _e13 = imp;
-        float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_19);
-        imp = (_e13 * max(_e14, 0.0));
-    }
-    float _e18 = imp;
-    return max(_e18, 0.0);
-}
-
-float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_20, vec3 r_3, vec4 lobe_3) {
-    bool local_13 = false;
-    float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
-    float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_20);
-    if (!((_e10 <= 0.0))) {
-        local_13 = (_e11 <= 0.0);
-    } else {
-        local_13 = true;
-    }
-    bool _e20 = local_13;
-    if (_e20) {
-        return 0.0;
-    }
-    float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
-    float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
-    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
-    float _e39 = smith_root(lobe_3.w, lobe_3.z);
-    float spec = (((lobe_3.y * _e33) * 0.25) / _e39);
-    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
-}
-
-float receiver_importance(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, vec3 p_4, vec3 n_21, vec3 r_4, vec4 lobe_4) {
-    if ((lobe_4.y <= 0.0)) {
-        float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
-        return _e13;
-    }
-    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
-    return _e14;
-}
-
-float candidate_weight(float importance, float rt2_5, float d2_9) {
-    float _e3 = slc_weight(rt2_5, d2_9);
-    return (importance * _e3);
-}
-
-float cone_weight(vec3 center_5, float radius_5, float phi_4, vec3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, vec3 p_5, vec3 n_22, vec3 r_5, vec4 lobe_5) {
-    vec3 v_17 = (p_5 - center_5);
-    if ((lobe_5.y <= 0.0)) {
-        float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
-        float _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
-        return _e19;
-    }
-    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
-    float _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
-    return _e22;
-}
-
-float weighted_select_pdf(float w_7, float w_sum_2, bool in_range_1, uint k_4) {
-    if ((w_7 <= 0.0)) {
-        return 0.0;
-    }
-    float total = (in_range_1 ? w_sum_2 : (w_sum_2 + w_7));
-    float _e9 = to_f32_(k_4);
-    return ((_e9 * w_7) / total);
-}
-
-float bvh_first_prob(float c0_, float c1_2) {
-    float s_7 = (c0_ + c1_2);
-    if ((s_7 > 0.0)) {
-        return (c0_ / s_7);
-    }
-    return -1.0;
-}
-
-float bvh_remap_u(float u_4, float p0_, bool first) {
-    if (first) {
-        return min((u_4 / p0_), ONE_MINUS_EPSILON);
-    }
-    return clamp(((u_4 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
-}
-
-float surface_offset(float diag) {
-    return (1e-5 * diag);
-}
-
-float ray_t_min(float diag_1) {
-    return (1e-6 * diag_1);
+    vec3 _e9 = onb_to_local(n_12, v_4);
+    vec3 _e10 = onb_to_local(n_12, l_3);
+    float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_8);
+    return ((p_spec * _e11) + ((1.0 - p_spec) * _e6));
 }
 
 float shadow_margin(float len) {
     return (0.0001 * len);
 }
 
-float ray_inverse(float x_10) {
-    return (1.0 / ((abs(x_10) < 1e-30) ? 1e-30 : x_10));
+float ray_inverse(float x_3) {
+    return (1.0 / ((abs(x_3) < 1e-30) ? 1e-30 : x_3));
 }
 
-vec3 ray_inverse3_(vec3 d_2) {
-    float _e2 = ray_inverse(d_2.x);
-    float _e4 = ray_inverse(d_2.y);
-    float _e6 = ray_inverse(d_2.z);
+vec3 ray_inverse3_(vec3 d) {
+    float _e2 = ray_inverse(d.x);
+    float _e4 = ray_inverse(d.y);
+    float _e6 = ray_inverse(d.z);
     return vec3(_e2, _e4, _e6);
 }
 
-float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
-    vec3 t0_ = ((bmin_1 - o) * inv_d);
-    vec3 t1_ = ((bmax_1 - o) * inv_d);
-    vec3 lo_3 = min(t0_, t1_);
-    vec3 hi_3 = max(t0_, t1_);
-    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
-    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
+float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
+    vec3 t0_ = ((bmin - o) * inv_d);
+    vec3 t1_ = ((bmax - o) * inv_d);
+    vec3 lo_2 = min(t0_, t1_);
+    vec3 hi_2 = max(t0_, t1_);
+    float t_in = max(max(lo_2.x, lo_2.y), max(lo_2.z, 0.0));
+    float t_out = min(min(hi_2.x, hi_2.y), min(hi_2.z, t_max));
     if ((t_in <= t_out)) {
         return t_in;
     }
     return -1.0;
 }
 
-vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_7) {
-    bool local_14 = false;
-    vec3 n_37 = cross((b_4 - a_5), (c_7 - a_5));
-    float l2_ = dot(n_37, n_37);
+vec3 triangle_normal(vec3 a_4, vec3 b_4, vec3 c_3) {
+    bool local_11 = false;
+    vec3 n_17 = cross((b_4 - a_4), (c_3 - a_4));
+    float l2_ = dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
-        local_14 = !((l2_ < 3e38));
+        local_11 = !((l2_ < 3e38));
     } else {
-        local_14 = true;
+        local_11 = true;
     }
-    bool _e17 = local_14;
+    bool _e17 = local_11;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_37 / vec3(sqrt(l2_)));
+    return (n_17 / vec3(sqrt(l2_)));
 }
 
-vec3 face_against(vec3 n_23, vec3 dir) {
-    return ((dot(n_23, dir) > 0.0) ? -(n_23) : n_23);
-}
-
-vec3 barycentric(vec3 p_6, vec3 a_6, vec3 b_5, vec3 c_8) {
-    vec3 e1_1 = (b_5 - a_6);
-    vec3 e2_1 = (c_8 - a_6);
-    vec3 q_4 = (p_6 - a_6);
-    float d11_ = dot(e1_1, e1_1);
-    float d12_ = dot(e1_1, e2_1);
-    float d22_ = dot(e2_1, e2_1);
-    float den = ((d11_ * d22_) - (d12_ * d12_));
-    if (!((abs(den) > 0.0))) {
-        return vec3(1.0, 0.0, 0.0);
-    }
-    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
-    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
-    return vec3(((1.0 - w1_) - w2_), w1_, w2_);
-}
-
-vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_8, vec3 facing) {
-    bool local_15 = false;
-    vec3 s_8 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
-    float l2_1 = dot(s_8, s_8);
-    if (!(!((l2_1 > 1e-12)))) {
-        local_15 = !((l2_1 < 3e38));
-    } else {
-        local_15 = true;
-    }
-    bool _e24 = local_15;
-    if (_e24) {
-        return facing;
-    }
-    vec3 n_38 = (s_8 / vec3(sqrt(l2_1)));
-    return ((dot(n_38, facing) < 0.0) ? -(n_38) : n_38);
-}
-
-float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_7, vec3 b_6, vec3 c_9, float t_min, float t_max_1) {
-    bool local_16 = false;
-    bool local_17 = false;
-    bool local_18 = false;
-    vec3 e1_2 = (b_6 - a_7);
-    vec3 e2_2 = (c_9 - a_7);
-    vec3 p_7 = cross(d_3, e2_2);
-    float det = dot(e1_2, p_7);
+float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_5, vec3 b_5, vec3 c_4, float t_min, float t_max_1) {
+    bool local_12 = false;
+    bool local_13 = false;
+    bool local_14 = false;
+    vec3 e1_ = (b_5 - a_5);
+    vec3 e2_ = (c_4 - a_5);
+    vec3 p = cross(d_1, e2_);
+    float det = dot(e1_, p);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
-    vec3 s_9 = (o_1 - a_7);
-    float u_7 = (dot(s_9, p_7) * inv_1);
-    if (!((u_7 < 0.0))) {
-        local_16 = (u_7 > 1.0);
+    vec3 s_6 = (o_1 - a_5);
+    float u_1 = (dot(s_6, p) * inv_1);
+    if (!((u_1 < 0.0))) {
+        local_12 = (u_1 > 1.0);
     } else {
-        local_16 = true;
+        local_12 = true;
     }
-    bool _e28 = local_16;
+    bool _e28 = local_12;
     if (_e28) {
         return -1.0;
     }
-    vec3 q_5 = cross(s_9, e1_2);
-    float v_18 = (dot(d_3, q_5) * inv_1);
-    if (!((v_18 < 0.0))) {
-        local_17 = ((u_7 + v_18) > 1.0);
+    vec3 q = cross(s_6, e1_);
+    float v_8 = (dot(d_1, q) * inv_1);
+    if (!((v_8 < 0.0))) {
+        local_13 = ((u_1 + v_8) > 1.0);
     } else {
-        local_17 = true;
+        local_13 = true;
     }
-    bool _e42 = local_17;
+    bool _e42 = local_13;
     if (_e42) {
         return -1.0;
     }
-    float t_5 = (dot(e2_2, q_5) * inv_1);
-    if ((t_5 > t_min)) {
-        local_18 = (t_5 < t_max_1);
+    float t_2 = (dot(e2_, q) * inv_1);
+    if ((t_2 > t_min)) {
+        local_14 = (t_2 < t_max_1);
     } else {
-        local_18 = false;
+        local_14 = false;
     }
-    bool _e51 = local_18;
+    bool _e51 = local_14;
     if (_e51) {
-        return t_5;
+        return t_2;
     }
     return -1.0;
 }
 
-float inv_sigma_z(float z) {
-    return (1.0 / (DEPTH_SIGMA * z));
-}
-
-uint window_start(uint x_11, uint size) {
-    uint half_ = (size / 2u);
-    return (max(x_11, half_) - half_);
-}
-
-uint window_end(uint x_12, uint size_1, uint extent_1) {
-    return min(((x_12 + size_1) - (size_1 / 2u)), extent_1);
-}
-
-uint wide_window(uint period) {
-    return (2u * period);
-}
-
-bool misses_subset(uint covered, uint period_1) {
-    return (covered < (period_1 * period_1));
-}
-
-vec3 filtered_irradiance(vec3 e, vec3 sum_1, float weight) {
-    if ((weight > 0.0)) {
-        return (sum_1 / vec3(weight));
-    }
-    return e;
-}
-
-float bilateral_weight(vec3 n_24, vec3 nj, float z_1, float zj, float inv_sz) {
-    float dn = max(dot(n_24, nj), 0.0);
-    float dn2_ = (dn * dn);
-    float dn4_ = (dn2_ * dn2_);
-    float dn8_ = (dn4_ * dn4_);
-    float d_8 = ((zj - z_1) * inv_sz);
-    float t_6 = max((1.0 - (d_8 * d_8)), 0.0);
-    return (((dn8_ * dn8_) * t_6) * t_6);
-}
-
-uint interleave_subset(uint x_13, uint y_2, uint period_2) {
-    return (((y_2 % period_2) * period_2) + (x_13 % period_2));
-}
-
-uint interleave_slot(uint tx, uint ty, uint size_2, uint period_3) {
-    uint side = (size_2 / period_3);
-    uint _e5 = interleave_subset(tx, ty, period_3);
-    return ((((_e5 * side) * side) + ((ty / period_3) * side)) + (tx / period_3));
-}
-
-uint interleave_slot_linear(uint i_1, uint per_subset, uint period_4) {
-    uint subsets = (period_4 * period_4);
-    return (((i_1 % subsets) * per_subset) + (i_1 / subsets));
-}
-
-float interleave_flux_scale(uint period_5) {
-    float _e2 = to_f32_((period_5 * period_5));
-    return _e2;
-}
-
-uint near_block_index(uint tx_1, uint ty_1, uint size_3) {
-    uint side_1 = (size_3 / 8u);
-    return ((((((ty_1 / 8u) * side_1) + (tx_1 / 8u)) * NEAR_BLOCK) + ((ty_1 % 8u) * 8u)) + (tx_1 % 8u));
-}
-
-uint near_block_tx(uint q, uint size_4) {
-    return ((((q / NEAR_BLOCK) % (size_4 / 8u)) * 8u) + (q % 8u));
-}
-
-uint near_block_ty(uint q_1, uint size_5) {
-    return ((((q_1 / NEAR_BLOCK) / (size_5 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
-}
-
-float vpl_near_weight(float d2_10, float near_r2_) {
-    if ((near_r2_ <= 0.0)) {
-        return 0.0;
-    }
-    float t_7 = clamp(((near_r2_ - d2_10) / (0.75 * near_r2_)), 0.0, 1.0);
-    return ((t_7 * t_7) * (3.0 - (2.0 * t_7)));
-}
-
-float vpl_far_weight(float d2_11, float near_r2_1) {
-    float _e2 = vpl_near_weight(d2_11, near_r2_1);
-    return (1.0 - _e2);
-}
-
-vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_9, float h_1) {
-    float sx = (((2.0 * px) / w_9) - 1.0);
-    float sy = (1.0 - ((2.0 * py) / h_1));
-    return normalize(((forward + (right * sx)) + (up * sy)));
-}
-
-float jittered_pixel(uint coord, float u_5) {
-    float _e2 = to_f32_(coord);
-    return (_e2 + u_5);
-}
-
-bool plays_roulette(uint depth) {
-    return (depth >= ROULETTE_DEPTH);
-}
-
-bool sees_emission(vec3 gn, vec3 dir_1) {
-    return (dot(gn, dir_1) < 0.0);
-}
-
-bool continues_path(vec3 nd, vec3 n_25, vec3 ng_1) {
-    bool local_19 = false;
-    if ((dot(nd, n_25) > 0.0)) {
-        local_19 = (dot(nd, ng_1) > 0.0);
+bool finite3_(vec3 v_5) {
+    bool local_15 = false;
+    bool local_16 = false;
+    if ((abs(v_5.x) <= F32_MAX)) {
+        local_15 = (abs(v_5.y) <= F32_MAX);
     } else {
-        local_19 = false;
+        local_15 = false;
     }
-    bool _e12 = local_19;
-    return _e12;
-}
-
-bool finite3_(vec3 v_8) {
-    bool local_20 = false;
-    bool local_21 = false;
-    if ((abs(v_8.x) <= F32_MAX)) {
-        local_20 = (abs(v_8.y) <= F32_MAX);
-    } else {
-        local_20 = false;
-    }
-    bool _e12 = local_20;
+    bool _e12 = local_15;
     if (_e12) {
-        local_21 = (abs(v_8.z) <= F32_MAX);
+        local_16 = (abs(v_5.z) <= F32_MAX);
     } else {
-        local_21 = false;
+        local_16 = false;
     }
-    bool _e20 = local_21;
+    bool _e20 = local_16;
     return _e20;
 }
 
-float path_survival(vec3 beta) {
-    return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
-}
-
-float light_map_coord(uint t_1, uint size_6) {
-    float _e2 = to_f32_(t_1);
-    float _e7 = to_f32_(size_6);
-    return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
-}
-
-uint light_map_texel(float a_8, uint size_7) {
-    float _e6 = to_f32_(size_7);
-    float _e9 = to_f32_(size_7);
-    uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
-    return _e14;
-}
-
-float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_5, float extent_2, bool perspective) {
-    return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_5) : 1.0) * extent_2));
-}
-
-float display_encode(float x_14) {
-    float v_19 = max(x_14, 0.0);
-    float t_8 = ((2.0 * v_19) / (1.0 + (2.0 * v_19)));
-    return ((t_8 <= 0.0031308) ? (12.92 * t_8) : ((1.055 * pow(t_8, 0.41666666)) - 0.055));
-}
-
-float light_map_depth(vec3 rel_1, vec3 axis_6, bool perspective_1) {
-    return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_6));
-}
-
-float rsm_texel_solid_angle(float texel_area, float cos_axis) {
-    return (((texel_area * cos_axis) * cos_axis) * cos_axis);
-}
-
-vec3 point_irradiance(vec3 intensity_1, vec3 n_26, vec3 v_9) {
-    float d2_14 = dot(v_9, v_9);
-    float cos_x_2 = (dot(n_26, v_9) / sqrt(max(d2_14, MIN_D2_)));
-    float _e11 = inverse_square(d2_14);
-    return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
-}
-
-vec3 directional_irradiance(vec3 e_1, vec3 n_27, vec3 to_light) {
-    return (e_1 * max(dot(n_27, to_light), 0.0));
-}
-
-float perspective_texel_width(float extent_3, float d_4, float z_2, float size_8) {
-    return ((((2.0 * extent_3) * d_4) * d_4) / (size_8 * z_2));
-}
-
-float ortho_texel_width(float extent_4, float size_9) {
-    return ((2.0 * extent_4) / size_9);
-}
-
-float shadow_bias(float texel, float cos_light_1) {
-    float c_15 = clamp(cos_light_1, 0.02, 1.0);
-    return (texel * (1.5 + (sqrt((1.0 - (c_15 * c_15))) / c_15)));
-}
-
-bool shadow_lit(float d_5, float d_map, float bias) {
-    bool local_22 = false;
-    if (!((d_map <= 0.0))) {
-        local_22 = (d_5 <= (d_map + bias));
-    } else {
-        local_22 = true;
-    }
-    bool _e11 = local_22;
-    return _e11;
-}
-
-vec3 diffuse_radiance(vec3 albedo, vec3 emission, vec3 e_2) {
-    return (emission + ((albedo * INV_PI) * e_2));
-}
-
-vec3 light_intensity(GpuLight l_4, vec3 w_10) {
+vec3 light_intensity(GpuLight l_4, vec3 w_3) {
     switch(l_4.kind) {
         case 3u: {
             vec3 _e7 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
-            float _e9 = triangle_lobe(_e7, l_4.a, w_10);
+            float _e9 = triangle_lobe(_e7, l_4.a, w_3);
             return (l_4.intensity * _e9);
         }
         default: {
@@ -1524,9 +691,9 @@ vec3 light_intensity(GpuLight l_4, vec3 w_10) {
     }
 }
 
-vec3 light_point(GpuLight l_5, float u1_4, float u2_4) {
+vec3 light_point(GpuLight l_5, float u1_1, float u2_1) {
     if ((l_5.kind == LIGHT_TRIANGLE)) {
-        vec3 _e9 = triangle_sample(l_5.p0_, l_5.p1_, l_5.p2_, u1_4, u2_4);
+        vec3 _e9 = triangle_sample(l_5.p0_, l_5.p1_, l_5.p2_, u1_1, u2_1);
         return _e9;
     }
     return l_5.p0_;
@@ -1547,47 +714,47 @@ vec3 light_normal(GpuLight l_7) {
     return vec3(0.0);
 }
 
-GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
+GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
     uint node_1 = 0u;
-    uint i_2 = 0u;
+    uint i = 0u;
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
     if ((uint(_group_0_binding_6_cs.length()) == 0u)) {
         GeoHit _e13 = hit;
         return _e13;
     }
-    vec3 _e14 = ray_inverse3_(d_6);
+    vec3 _e14 = ray_inverse3_(d_2);
     while(true) {
         uint _e21 = node_1;
-        GpuGeoNode n_39 = _group_0_binding_6_cs[_e21];
+        GpuGeoNode n_18 = _group_0_binding_6_cs[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_39.bmin, n_39.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_39.count > 0u)) {
-                i_2 = n_39.first;
+            if ((n_18.count > 0u)) {
+                i = n_18.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
-                        uint _e58 = i_2;
-                        i_2 = (_e58 + 1u);
+                        uint _e58 = i;
+                        i = (_e58 + 1u);
                     }
                     loop_init = false;
-                    uint _e36 = i_2;
-                    if ((_e36 < (n_39.first + n_39.count))) {
+                    uint _e36 = i;
+                    if ((_e36 < (n_18.first + n_18.count))) {
                     } else {
                         break;
                     }
                     {
-                        uint _e42 = i_2;
-                        GpuTriangle t_9 = _group_0_binding_7_cs[_e42];
+                        uint _e42 = i;
+                        GpuTriangle t_3 = _group_0_binding_7_cs[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_6, t_9.v0_, t_9.v1_, t_9.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_2, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
-                            uint _e55 = i_2;
+                            uint _e55 = i;
                             hit.tri = _e55;
                             if (any_hit) {
                                 GeoHit _e56 = hit;
@@ -1600,11 +767,11 @@ GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[_e63] = (n_39.first + 1u);
+                    stack[_e63] = (n_18.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_1 = n_39.first;
+                node_1 = n_18.first;
                 continue;
             }
         }
@@ -1622,19 +789,19 @@ GeoHit trace(vec3 o_2, vec3 d_6, float t_min_1, float t_max_2, bool any_hit) {
     return _e81;
 }
 
-bool occluded(vec3 a_9, vec3 b_7) {
-    vec3 dv = (b_7 - a_9);
+bool occluded(vec3 a_6, vec3 b_6) {
+    vec3 dv = (b_6 - a_6);
     float len_1 = length(dv);
     if ((len_1 <= 0.0)) {
         return false;
     }
     float _e7 = shadow_margin(len_1);
-    GeoHit _e12 = trace(a_9, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    GeoHit _e12 = trace(a_6, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
     return (_e12.tri != NO_LIGHT);
 }
 
-BshNode bsh_node(uint nodes, uint i_3) {
-    BshNode _e4 = _group_0_binding_5_cs[i_3];
+BshNode bsh_node(uint nodes, uint i_1) {
+    BshNode _e4 = _group_0_binding_5_cs[i_1];
     return _e4;
 }
 
@@ -1650,66 +817,53 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-uint bsh_next_leaf_scaled(uint nodes_3, uint start_1, vec3 x_15, float scale_1) {
-    uint i_4 = 0u;
-    i_4 = start_1;
+uint bsh_next_leaf_scaled(uint nodes_3, uint start, vec3 x_4, float scale_1) {
+    uint i_2 = 0u;
+    i_2 = start;
     while(true) {
-        uint _e5 = i_4;
+        uint _e5 = i_2;
         if ((_e5 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e8 = i_4;
+            uint _e8 = i_2;
             BshNode _e9 = bsh_node(nodes_3, _e8);
             float _e11 = bsh_scaled_radius(_e9, scale_1);
-            bool _e12 = sphere_contains_point(_e9.center, _e11, x_15);
+            bool _e12 = sphere_contains_point(_e9.center, _e11, x_4);
             if (_e12) {
                 if ((_e9.child == BSH_NONE)) {
-                    uint _e16 = i_4;
+                    uint _e16 = i_2;
                     return _e16;
                 }
-                i_4 = _e9.child;
+                i_2 = _e9.child;
             } else {
-                i_4 = _e9.next;
+                i_2 = _e9.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-uint bsh_next_leaf(uint nodes_4, uint start_2, vec3 x_16) {
-    uint _e4 = bsh_next_leaf_scaled(nodes_4, start_2, x_16, 1.0);
-    return _e4;
-}
-
-vec4 bsh_children_sphere(uint nodes_5, uint i_5) {
-    BshNode _e2 = bsh_node(nodes_5, i_5);
-    BshNode _e4 = bsh_node(nodes_5, _e2.child);
-    BshNode _e6 = bsh_node(nodes_5, _e4.next);
-    vec4 _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
-    return _e11;
-}
-
-Picks bsh_collect(vec3 x_17, float scale_2, uint seed_3) {
+Picks bsh_collect(vec3 x_5, float scale_2, uint seed_1) {
     Picks picks = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
-    uint h_2 = 0u;
-    uint i_6 = 0u;
+    uint h_1 = 0u;
+    uint i_3 = 0u;
     picks.n = 0u;
-    h_2 = seed_3;
+    h_1 = seed_1;
     uint _e9 = bsh_first(BSH);
-    uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_17, scale_2);
-    i_6 = _e10;
+    uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_5, scale_2);
+    i_3 = _e10;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e43 = i_6;
+            uint _e43 = i_3;
             uint _e46 = _group_0_binding_5_cs[_e43].next;
-            uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_17, scale_2);
-            i_6 = _e47;
+            uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_5, scale_2);
+            i_3 = _e47;
         }
         loop_init_1 = false;
-        uint _e12 = i_6;
+        uint _e12 = i_3;
         if ((_e12 != BSH_NONE)) {
         } else {
             break;
@@ -1720,18 +874,18 @@ Picks bsh_collect(vec3 x_17, float scale_2, uint seed_3) {
             if (_e17) {
                 uint _e19 = picks.n;
                 picks.n = (_e19 + 1u);
-                uint _e22 = h_2;
+                uint _e22 = h_1;
                 uint _e23 = pcg_hash(_e22);
-                h_2 = _e23;
-                uint hi_4 = h_2;
-                uint _e25 = h_2;
+                h_1 = _e23;
+                uint hi_3 = h_1;
+                uint _e25 = h_1;
                 uint _e26 = pcg_hash(_e25);
-                h_2 = _e26;
+                h_1 = _e26;
                 uint _e28 = picks.n;
-                uint _e30 = h_2;
-                uint _e31 = reservoir_slot(_e28, K, hi_4, _e30);
+                uint _e30 = h_1;
+                uint _e31 = reservoir_slot(_e28, K, hi_3, _e30);
                 if ((_e31 < K)) {
-                    uint _e37 = i_6;
+                    uint _e37 = i_3;
                     uint _e40 = _group_0_binding_5_cs[_e37].light;
                     picks.light[_e31] = _e40;
                 }
@@ -1742,89 +896,85 @@ Picks bsh_collect(vec3 x_17, float scale_2, uint seed_3) {
     return _e48;
 }
 
-Connection connect(uint li, vec3 x_18, vec3 n_28, vec3 ng_2, float s_1, float w_res, float u1_5, float u2_5, float eps) {
-    Connection c_10 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_23 = false;
-    c_10.e = vec3(0.0);
+Connection connect(uint li, vec3 x_6, vec3 n_13, vec3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps) {
+    Connection c_5 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_17 = false;
+    c_5.e = vec3(0.0);
     GpuLight l_8 = _group_0_binding_2_cs[li];
-    vec3 _e17 = light_point(l_8, u1_5, u2_5);
-    c_10.y = _e17;
-    vec3 _e20 = c_10.y;
+    vec3 _e17 = light_point(l_8, u1_2, u2_2);
+    c_5.y = _e17;
+    vec3 _e20 = c_5.y;
     float _e23 = _group_0_binding_4_cs[li];
-    float _e25 = connection_cosine(x_18, _e20, n_28, ng_2, (s_1 * _e23));
-    c_10.cos_x = _e25;
-    float _e27 = c_10.cos_x;
+    float _e25 = connection_cosine(x_6, _e20, n_13, ng_1, (s_1 * _e23));
+    c_5.cos_x = _e25;
+    float _e27 = c_5.cos_x;
     if (!((_e27 <= 0.0))) {
-        vec3 _e36 = c_10.y;
-        bool _e37 = occluded((x_18 + (ng_2 * eps)), _e36);
-        local_23 = _e37;
+        vec3 _e36 = c_5.y;
+        bool _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
+        local_17 = _e37;
     } else {
-        local_23 = true;
+        local_17 = true;
     }
-    bool _e39 = local_23;
+    bool _e39 = local_17;
     if (_e39) {
-        Connection _e40 = c_10;
+        Connection _e40 = c_5;
         return _e40;
     }
-    vec3 _e42 = c_10.y;
-    vec3 v_20 = (x_18 - _e42);
-    float d2_15 = dot(v_20, v_20);
-    vec3 _e49 = light_intensity(l_8, (v_20 / vec3(sqrt(d2_15))));
-    float _e51 = c_10.cos_x;
+    vec3 _e42 = c_5.y;
+    vec3 v_9 = (x_6 - _e42);
+    float d2_8 = dot(v_9, v_9);
+    vec3 _e49 = light_intensity(l_8, (v_9 / vec3(sqrt(d2_8))));
+    float _e51 = c_5.cos_x;
     float _e54 = _group_0_binding_3_cs[li];
-    float _e56 = connection_factor(_e51, d2_15, (s_1 * _e54), w_res);
-    c_10.e = (_e49 * _e56);
-    Connection _e58 = c_10;
+    float _e56 = connection_factor(_e51, d2_8, (s_1 * _e54), w_res);
+    c_5.e = (_e49 * _e56);
+    Connection _e58 = c_5;
     return _e58;
 }
 
-float mis_weight(float pdf_a_2, float pdf_b_2) {
-    float _e2 = mis_power(pdf_a_2, pdf_b_2);
+float mis_weight(float pdf_a_1, float pdf_b_1) {
+    float _e2 = mis_power(pdf_a_1, pdf_b_1);
     return _e2;
 }
 
-BvhPick bvh_pick_none() {
-    return BvhPick(0u, 0.0);
-}
-
-float select_pdf(uint li_2, vec3 x_24, vec3 n_34, vec3 r_11, vec4 lobe_11, uint nee, bool in_range_2) {
-    float _e8 = reservoir_select_pdf(nee, in_range_2, K);
+float select_pdf(uint li_1, vec3 x_7, vec3 n_14, vec3 r_1, vec4 lobe_3, uint nee, bool in_range_1) {
+    float _e8 = reservoir_select_pdf(nee, in_range_1, K);
     return _e8;
 }
 
-float light_pdf(uint li_3, vec3 x_25, vec3 n_35, vec3 r_12, vec4 lobe_12, vec3 y_3, uint nee_1, bool in_range_3) {
-    GpuLight l_9 = _group_0_binding_2_cs[li_3];
-    vec3 v_21 = (x_25 - y_3);
-    float d2_16 = dot(v_21, v_21);
+float light_pdf(uint li_2, vec3 x_8, vec3 n_15, vec3 r_2, vec4 lobe_4, vec3 y_1, uint nee_1, bool in_range_2) {
+    GpuLight l_9 = _group_0_binding_2_cs[li_2];
+    vec3 v_10 = (x_8 - y_1);
+    float d2_9 = dot(v_10, v_10);
     vec3 _e13 = light_normal(l_9);
-    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e13, (v_21 / vec3(sqrt(d2_16)))) : 0.0);
-    float _e22 = select_pdf(li_3, x_25, n_35, r_12, lobe_12, nee_1, in_range_3);
-    float _e23 = range_scale(lobe_12);
-    float _e26 = _group_0_binding_3_cs[li_3];
+    float cos_y_1 = ((d2_9 > 0.0) ? dot(_e13, (v_10 / vec3(sqrt(d2_9)))) : 0.0);
+    float _e22 = select_pdf(li_2, x_8, n_15, r_2, lobe_4, nee_1, in_range_2);
+    float _e23 = range_scale(lobe_4);
+    float _e26 = _group_0_binding_3_cs[li_2];
     float _e28 = light_area(l_9);
-    float _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_16, _e28, cos_y_1);
+    float _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_9, _e28, cos_y_1);
     return _e29;
 }
 
-vec3 shade_pick(uint li_4, vec3 x_26, vec3 n_36, vec3 ng_3, GpuMaterial m, vec3 wo_1, vec3 r_13, vec4 lobe_13, float w_11, uint nee_2, float u1_6, float u2_6) {
+vec3 shade_pick(uint li_3, vec3 x_9, vec3 n_16, vec3 ng_2, GpuMaterial m, vec3 wo_1, vec3 r_3, vec4 lobe_5, float w_4, uint nee_2, float u1_3, float u2_3) {
     float mis = 1.0;
-    float _e12 = range_scale(lobe_13);
+    float _e12 = range_scale(lobe_5);
     float _e15 = _group_0_binding_0_cs.eps;
-    Connection _e16 = connect(li_4, x_26, n_36, ng_3, _e12, w_11, u1_6, u2_6, _e15);
+    Connection _e16 = connect(li_3, x_9, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15);
     if ((_e16.cos_x <= 0.0)) {
         return vec3(0.0);
     }
-    vec3 l_10 = normalize((_e16.y - x_26));
-    GpuLight _e29 = _group_0_binding_2_cs[li_4];
+    vec3 l_10 = normalize((_e16.y - x_9));
+    GpuLight _e29 = _group_0_binding_2_cs[li_3];
     float _e30 = light_area(_e29);
     if ((_e30 > 0.0)) {
-        float _e35 = light_pdf(li_4, x_26, n_36, r_13, lobe_13, _e16.y, nee_2, true);
-        float _e37 = specular_probability(lobe_13);
-        float _e38 = bsdf_pdf(n_36, wo_1, l_10, m.alpha, _e37);
+        float _e35 = light_pdf(li_3, x_9, n_16, r_3, lobe_5, _e16.y, nee_2, true);
+        float _e37 = specular_probability(lobe_5);
+        float _e38 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e37);
         float _e39 = mis_weight(_e35, _e38);
         mis = _e39;
     }
-    vec3 _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_36, wo_1, l_10);
+    vec3 _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
     float _e48 = mis;
     return ((_e45 * _e16.e) * _e48);
 }
@@ -1834,32 +984,32 @@ void main() {
     uint h = 0u;
     vec3 sum = vec3(0.0);
     uint s = 0u;
-    uint i_12 = gid.x;
+    uint i_4 = gid.x;
     uint _e4 = _group_0_binding_0_cs.point_count;
-    if ((i_12 >= _e4)) {
+    if ((i_4 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = _group_0_binding_1_cs[i_12];
+    GpuPathVertex vtx = _group_0_binding_1_cs[i_4];
     if ((vtx.alive == 0u)) {
-        _group_0_binding_10_cs[i_12] = 0u;
+        _group_0_binding_10_cs[i_4] = 0u;
         return;
     }
-    vec3 x_27 = vtx.position;
-    vec3 n_40 = vtx.normal;
-    vec3 ng_4 = vtx.gnormal;
-    GpuMaterial m_4 = _group_0_binding_8_cs[vtx.material];
+    vec3 x_10 = vtx.position;
+    vec3 n_19 = vtx.normal;
+    vec3 ng_3 = vtx.gnormal;
+    GpuMaterial m_2 = _group_0_binding_8_cs[vtx.material];
     vec3 wo_2 = vtx.wo;
-    vec3 _e23 = mirror_dir(n_40, wo_2);
-    vec4 _e30 = receiver_lobe(m_4.albedo, m_4.metallic, m_4.f0_, m_4.f90_, m_4.alpha, dot(n_40, wo_2));
+    vec3 _e23 = mirror_dir(n_19, wo_2);
+    vec4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_19, wo_2));
     float _e31 = range_scale(_e30);
     float scale_3 = sqrt(_e31);
     uint _e35 = _group_0_binding_0_cs.seed;
     uint _e38 = _group_0_binding_0_cs.frame;
-    uint _e39 = point_stream(_e35, i_12, _e38);
+    uint _e39 = point_stream(_e35, i_4, _e38);
     uint _e40 = pick_stream(_e39);
     h = _e40;
-    Picks _e45 = bsh_collect(x_27, scale_3, _e39);
-    _group_0_binding_10_cs[i_12] = _e45.n;
+    Picks _e45 = bsh_collect(x_10, scale_3, _e39);
+    _group_0_binding_10_cs[i_4] = _e45.n;
     float _e51 = reservoir_weight(_e45.n, K);
     bool loop_init_2 = true;
     while(true) {
@@ -1886,7 +1036,7 @@ void main() {
             uint _e67 = s;
             uint _e70 = h;
             float _e71 = xi_from_bits(_e70);
-            vec3 _e72 = shade_pick(_e45.light[_e67], x_27, n_40, ng_4, m_4, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71);
+            vec3 _e72 = shade_pick(_e45.light[_e67], x_10, n_19, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71);
             sum = (_e65 + _e72);
         }
     }
@@ -1894,8 +1044,8 @@ void main() {
     vec3 add = (vtx.weight * _e78);
     bool _e80 = finite3_(add);
     if (_e80) {
-        vec4 _e83 = _group_0_binding_9_cs[i_12];
-        _group_0_binding_9_cs[i_12] = (_e83 + vec4(add, 0.0));
+        vec4 _e83 = _group_0_binding_9_cs[i_4];
+        _group_0_binding_9_cs[i_4] = (_e83 + vec4(add, 0.0));
         return;
     } else {
         return;

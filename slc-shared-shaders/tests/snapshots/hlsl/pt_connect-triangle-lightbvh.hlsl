@@ -49,111 +49,6 @@ struct GpuPathVertex {
     float pad3_;
 };
 
-struct GpuPathState {
-    float3 origin;
-    uint alive;
-    float3 dir;
-    uint rng;
-    float3 beta;
-    float pdf_bsdf;
-    float3 prev;
-    uint pad;
-    float3 prev_normal;
-    uint pad2_;
-    float3 prev_r;
-    uint pad3_;
-    float4 prev_lobe;
-};
-
-struct PtParams {
-    float3 cam_pos;
-    uint width;
-    float3 cam_right;
-    uint height;
-    float3 cam_up;
-    uint depth;
-    float3 cam_forward;
-    uint seed;
-    uint pass_index;
-    uint max_depth;
-    float eps;
-    float t_min;
-};
-
-struct FrameParams {
-    uint light_count;
-    uint seed;
-    uint frame;
-    uint pad;
-};
-
-struct RefitParams {
-    uint first;
-    uint count;
-    uint pad0_;
-    uint pad1_;
-};
-
-struct VplParams {
-    uint width;
-    uint height;
-    uint lights_per_subset;
-    float min_d2_;
-    float near_r2_;
-    uint near_blocks;
-    uint pad0_;
-    uint pad1_;
-};
-
-struct GpuNearBox {
-    float3 lo;
-    float pad0_;
-    float3 hi;
-    float pad1_;
-};
-
-struct GpuVplRecord {
-    float3 position;
-    float pad0_;
-    float3 normal;
-    float pad1_;
-    float3 flux;
-    float pad2_;
-};
-
-struct PackParams {
-    uint count;
-    uint size;
-    uint per_subset;
-    uint mode;
-    float exposure;
-    float error_bound;
-    float scale;
-    uint slc;
-    float fixed_r2_;
-    uint pad0_;
-    uint pad1_;
-    uint pad2_;
-};
-
-struct ImageParams {
-    float3 eye;
-    uint width;
-    uint height;
-    uint pad0_;
-    uint pad1_;
-    uint pad2_;
-};
-
-struct GpuVertex {
-    float3 position;
-    uint material;
-    float3 normal;
-    uint pad0_;
-    float3 geo_normal;
-    uint pad1_;
-};
-
 struct GpuMaterial {
     float3 albedo;
     float metallic;
@@ -163,36 +58,11 @@ struct GpuMaterial {
     float f90_;
 };
 
-struct MapParams {
-    float4 c0_;
-    float4 c1_;
-    float4 c2_;
-    float4 c3_;
-    GpuLight light;
-    float3 origin;
-    uint mode;
-    float3 axis;
-    uint size;
-    float3 right;
-    float extent;
-    float3 up;
-    float texel;
-};
-
 struct ShadeParams {
     uint point_count;
     uint seed;
     uint frame;
     float eps;
-};
-
-struct BshNode {
-    float3 center_;
-    float radius;
-    uint child;
-    uint next;
-    uint light;
-    float extent;
 };
 
 struct GpuLightBvhNode {
@@ -209,11 +79,6 @@ struct GpuLightBvhNode {
 struct GeoHit {
     float t;
     uint tri;
-};
-
-struct Picks {
-    uint light[8];
-    uint n;
 };
 
 struct Connection {
@@ -262,14 +127,11 @@ static const uint K = 8u;
 static const uint BSH = 0u;
 static const uint BVH = 0u;
 
-ByteAddressBuffer slc_table : register(t0, space1);
 ByteAddressBuffer geo_nodes : register(t6);
 ByteAddressBuffer geo_tris : register(t7);
-ByteAddressBuffer bsh_nodes : register(t5);
 ByteAddressBuffer lights : register(t2);
-ByteAddressBuffer r2_7 : register(t4);
-ByteAddressBuffer rt2_7 : register(t3);
-ByteAddressBuffer power_table : register(t1, space1);
+ByteAddressBuffer r2_3 : register(t4);
+ByteAddressBuffer rt2_4 : register(t3);
 ByteAddressBuffer light_cones : register(t2, space1);
 ByteAddressBuffer light_bvh : register(t3, space1);
 cbuffer params : register(b0) { ShadeParams params; }
@@ -278,24 +140,9 @@ ByteAddressBuffer materials : register(t8);
 RWByteAddressBuffer radiance : register(u9);
 RWByteAddressBuffer candidates : register(u10);
 
-float at(uint tab, uint i)
-{
-    float _e4 = asfloat(slc_table.Load(i*4));
-    return _e4;
-}
-
 float to_f32_(uint u)
 {
     return float(u);
-}
-
-uint naga_f2u32(float value) {
-    return uint(clamp(value, 0.0, 4294967000.0));
-}
-
-uint to_u32_(float x)
-{
-    return naga_f2u32(x);
 }
 
 uint mul_lo_u32_(uint a, uint b)
@@ -314,51 +161,19 @@ float xi_from_bits(uint bits)
     return (_e3 * XI_STEP);
 }
 
-uint pcg_hash(uint x_1)
+uint pcg_hash(uint x)
 {
-    const uint _e2 = mul_lo_u32_(x_1, 747796405u);
+    const uint _e2 = mul_lo_u32_(x, 747796405u);
     const uint _e4 = add_wrap_u32_(_e2, 2891336453u);
     const uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
     return ((_e12 >> 22u) ^ _e12);
 }
 
-uint reverse_bits(uint x_2)
+uint point_stream(uint seed, uint point_, uint frame)
 {
-    uint v = (uint)0;
-
-    v = (((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u));
-    uint _e11 = v;
-    uint _e16 = v;
-    v = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
-    uint _e22 = v;
-    uint _e27 = v;
-    v = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
-    uint _e33 = v;
-    uint _e38 = v;
-    v = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
-    uint _e44 = v;
-    uint _e49 = v;
-    v = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
-    uint _e55 = v;
-    return _e55;
-}
-
-float xi_for(uint seed, uint frame, uint light)
-{
-    const uint _e3 = pcg_hash(seed);
-    const uint _e4 = pcg_hash(_e3);
-    const uint _e6 = pcg_hash((_e4 ^ light));
-    const uint _e7 = reverse_bits(frame);
-    const uint _e8 = add_wrap_u32_(_e6, _e7);
-    const float _e9 = xi_from_bits(_e8);
-    return _e9;
-}
-
-uint point_stream(uint seed_1, uint point_, uint frame_1)
-{
-    const uint _e3 = pcg_hash(frame_1);
+    const uint _e3 = pcg_hash(frame);
     const uint _e5 = pcg_hash((point_ ^ _e3));
-    const uint _e7 = pcg_hash((seed_1 ^ _e5));
+    const uint _e7 = pcg_hash((seed ^ _e5));
     return _e7;
 }
 
@@ -366,13 +181,6 @@ uint pick_stream(uint stream)
 {
     const uint _e3 = pcg_hash((stream ^ PICK_STREAM));
     return _e3;
-}
-
-uint path_stream(uint seed_2, uint pixel, uint pass_index)
-{
-    const uint _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
-    const uint _e5 = point_stream(seed_2, pixel, _e4);
-    return _e5;
 }
 
 float rr_probability(float rt2_, float d2_)
@@ -391,611 +199,135 @@ float slc_weight(float rt2_1, float d2_1)
     return (d2_1 / rt2_1);
 }
 
-float random_range2_(float rt2_2, float xi)
-{
-    return (rt2_2 / (1.0 - xi));
-}
-
 bool slc_keep(float r2_, float d2_2)
 {
     return (d2_2 < r2_);
 }
 
-bool clamp_keep(float range2_, float d2_3)
+float inverse_square(float d2_3)
 {
-    return (d2_3 < range2_);
+    return (1.0 / max(d2_3, MIN_D2_));
 }
 
-float threshold_range2_(float intensity, float exposure, float error_bound)
+float connection_factor(float cos_x, float d2_4, float rt2_2, float w)
 {
-    if ((intensity <= 0.0)) {
-        return 0.0;
-    }
-    return (((exposure / error_bound) * intensity) / TWO_PI);
-}
-
-float intensity_measure(float3 rgb, uint mode)
-{
-    if ((mode == 1u)) {
-        return (((rgb.x + rgb.y) + rgb.z) / 3.0);
-    }
-    return max(rgb.x, max(rgb.y, rgb.z));
-}
-
-float cull_radius(float r2_1)
-{
-    return (sqrt(r2_1) * CULL_RADIUS_SCALE);
-}
-
-float windowed_falloff(float d2_4, float range2_1)
-{
-    float q_2 = (d2_4 / range2_1);
-    float w_12 = saturate((1.0 - (q_2 * q_2)));
-    return ((w_12 * w_12) / max(d2_4, 0.0001));
-}
-
-bool sphere_contains_point(float3 c, float r, float3 x_3)
-{
-    float3 v_10 = (x_3 - c);
-    return (dot(v_10, v_10) <= (r * r));
-}
-
-bool sphere_overlaps_sphere(float3 c1_, float r1_, float3 c2_, float r2_2)
-{
-    float3 v_11 = (c2_ - c1_);
-    float r_14 = (r1_ + r2_2);
-    return (dot(v_11, v_11) <= (r_14 * r_14));
-}
-
-float sphere_pad(float r_1, float3 c_1)
-{
-    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
-}
-
-float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
-{
-    bool local = (bool)0;
-
-    float3 v_12 = (c2_1 - c1_1);
-    float d_7 = sqrt(dot(v_12, v_12));
-    const float _e8 = sphere_pad(r1_1, c1_1);
-    if ((r1_1 >= ((d_7 + r2_3) + _e8))) {
-        return float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
-    }
-    const float _e16 = sphere_pad(r2_3, c2_1);
-    if ((r2_3 >= ((d_7 + r1_1) + _e16))) {
-        return float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
-    }
-    if (!((d_7 >= SPHERE_HUGE))) {
-        local = ((0.5 * ((d_7 + r1_1) + r2_3)) >= SPHERE_HUGE);
-    } else {
-        local = true;
-    }
-    bool _e35 = local;
-    if (_e35) {
-        return float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
-    }
-    if ((abs((r1_1 - r2_3)) >= d_7)) {
-        if ((r1_1 >= r2_3)) {
-            float rn = max(r1_1, (d_7 + r2_3));
-            const float _e50 = sphere_pad(rn, c1_1);
-            return float4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
-        }
-        float rm = max(r2_3, (d_7 + r1_1));
-        const float _e58 = sphere_pad(rm, c2_1);
-        return float4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
-    }
-    float r0_ = (0.5 * ((d_7 + r1_1) + r2_3));
-    float3 c_11 = (c1_1 + (v_12 * ((r0_ - r1_1) / d_7)));
-    float3 e1_ = (c_11 - c1_1);
-    float3 e2_ = (c_11 - c2_1);
-    float r_15 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    const float _e82 = sphere_pad(r_15, c_11);
-    return float4(c_11.x, c_11.y, c_11.z, (r_15 + _e82));
-}
-
-bool sphere_overlaps_aabb(float3 c_2, float r_2, float3 bmin, float3 bmax)
-{
-    float3 q_3 = clamp(c_2, bmin, bmax);
-    float3 v_13 = (q_3 - c_2);
-    return (dot(v_13, v_13) <= (r_2 * r_2));
-}
-
-float vpl_rt2_(float3 flux, float exposure_1, float error_bound_1, uint mode_1)
-{
-    const float _e6 = intensity_measure((flux * INV_PI), mode_1);
-    const float _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
-    return _e7;
-}
-
-float range_radius(float extent, float r2_4)
-{
-    return (extent + sqrt(r2_4));
-}
-
-float inverse_square(float d2_5)
-{
-    return (1.0 / max(d2_5, MIN_D2_));
-}
-
-float connection_factor(float cos_x, float d2_6, float rt2_3, float w)
-{
-    const float _e4 = inverse_square(d2_6);
-    const float _e6 = slc_weight(rt2_3, d2_6);
+    const float _e4 = inverse_square(d2_4);
+    const float _e6 = slc_weight(rt2_2, d2_4);
     return (((cos_x * _e4) * _e6) * w);
 }
 
-float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
+float connection_cosine(float3 x_1, float3 y, float3 n, float3 ng, float r2_1)
 {
+    bool local = (bool)0;
     bool local_1 = (bool)0;
-    bool local_2 = (bool)0;
 
-    float3 v_14 = (x_4 - y);
-    float d2_12 = dot(v_14, v_14);
-    const bool _e7 = slc_keep(r2_5, d2_12);
+    float3 v_6 = (x_1 - y);
+    float d2_7 = dot(v_6, v_6);
+    const bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_1 = !((d2_12 > 0.0));
+        local = !((d2_7 > 0.0));
     } else {
-        local_1 = true;
+        local = true;
     }
-    bool _e16 = local_1;
+    bool _e16 = local;
     if (_e16) {
         return 0.0;
     }
-    float3 w_13 = (v_14 / (sqrt(d2_12)).xxx);
-    float cos_x_1 = -(dot(n, w_13));
+    float3 w_5 = (v_6 / (sqrt(d2_7)).xxx);
+    float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
-        local_2 = (dot(ng, w_13) >= 0.0);
+        local_1 = (dot(ng, w_5) >= 0.0);
     } else {
-        local_2 = true;
+        local_1 = true;
     }
-    bool _e32 = local_2;
+    bool _e32 = local_1;
     if (_e32) {
         return 0.0;
     }
     return cos_x_1;
 }
 
-float vpl_lobe(float3 n_1, float3 w_1)
+float triangle_lobe(float3 n_1, float area, float3 w_1)
 {
-    return (max(dot(n_1, w_1), 0.0) * INV_PI);
+    return (area * max(dot(n_1, w_1), 0.0));
 }
 
-float vpl_transfer(float3 n_l, float3 n_x, float3 v_1, float min_d2_)
-{
-    float m_1 = max(dot(v_1, v_1), min_d2_);
-    return (((max(dot(n_l, v_1), 0.0) * max(-(dot(n_x, v_1)), 0.0)) * INV_PI) / (m_1 * m_1));
-}
-
-float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
-{
-    if ((cos_inner <= cos_outer)) {
-        return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
-    }
-    float t_2 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
-}
-
-float triangle_lobe(float3 n_2, float area, float3 w_2)
-{
-    return (area * max(dot(n_2, w_2), 0.0));
-}
-
-float3 triangle_sample(float3 a_2, float3 b_2, float3 c_3, float u1_, float u2_)
+float3 triangle_sample(float3 a_2, float3 b_2, float3 c, float u1_, float u2_)
 {
     float su = sqrt(u1_);
     float b0_ = (1.0 - su);
     float b1_ = (u2_ * su);
-    return (((a_2 * b0_) + (b_2 * b1_)) + (c_3 * ((1.0 - b0_) - b1_)));
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c * ((1.0 - b0_) - b1_)));
 }
 
-float area_to_solid_angle_pdf(float pdf_area, float d2_7, float cos_light)
+float area_to_solid_angle_pdf(float pdf_area, float d2_5, float cos_light)
 {
-    float c_12 = abs(cos_light);
-    if ((c_12 <= 0.0)) {
+    float c_5 = abs(cos_light);
+    if ((c_5 <= 0.0)) {
         return 0.0;
     }
-    return ((pdf_area * d2_7) / c_12);
+    return ((pdf_area * d2_5) / c_5);
 }
 
-float atan_portable(float x_5)
+float mis_power(float pdf_a, float pdf_b)
 {
-    float base = 0.0;
-    float t = (float)0;
-
-    float a_10 = abs(x_5);
-    t = a_10;
-    if ((a_10 > 2.4142137)) {
-        base = 1.5707964;
-        t = (-1.0 / a_10);
-    } else {
-        if ((a_10 > 0.41421357)) {
-            base = 0.7853982;
-            t = ((a_10 - 1.0) / (a_10 + 1.0));
-        }
-    }
-    float _e18 = t;
-    float _e19 = t;
-    float z_3 = (_e18 * _e19);
-    float _e21 = base;
-    float _e33 = t;
-    float _e35 = t;
-    float r_16 = (_e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35));
-    return ((x_5 < 0.0) ? -(r_16) : r_16);
-}
-
-float atan2_portable(float y_1, float x_6)
-{
-    if ((x_6 == 0.0)) {
-        if ((y_1 > 0.0)) {
-            return 1.5707964;
-        }
-        if ((y_1 < 0.0)) {
-            return -1.5707964;
-        }
-        return 0.0;
-    }
-    const float _e12 = atan_portable((y_1 / x_6));
-    if ((x_6 > 0.0)) {
-        return _e12;
-    }
-    if ((y_1 >= 0.0)) {
-        return (_e12 + 3.1415927);
-    }
-    return (_e12 - 3.1415927);
-}
-
-float ies_fold_c(float c_4, float h_first, float h_last)
-{
-    float a_3 = (float)0;
-
-    a_3 = (c_4 - (360.0 * floor((c_4 / 360.0))));
-    if ((h_last <= 0.0)) {
-        return 0.0;
-    }
-    if ((h_last <= 90.0)) {
-        float _e15 = a_3;
-        if ((_e15 > 180.0)) {
-            float _e18 = a_3;
-            a_3 = (360.0 - _e18);
-        }
-        float _e21 = a_3;
-        if ((_e21 > 90.0)) {
-            float _e24 = a_3;
-            a_3 = (180.0 - _e24);
-        }
-        float _e27 = a_3;
-        return _e27;
-    }
-    if ((h_first >= 90.0)) {
-        float _e30 = a_3;
-        if ((_e30 < 90.0)) {
-            float _e33 = a_3;
-            a_3 = (180.0 - _e33);
-        } else {
-            float _e36 = a_3;
-            if ((_e36 > 270.0)) {
-                float _e39 = a_3;
-                a_3 = (540.0 - _e39);
-            }
-        }
-        float _e42 = a_3;
-        return _e42;
-    }
-    if ((h_last <= 180.0)) {
-        float _e45 = a_3;
-        if ((_e45 > 180.0)) {
-            float _e48 = a_3;
-            a_3 = (360.0 - _e48);
-        }
-        float _e51 = a_3;
-        return _e51;
-    }
-    float _e52 = a_3;
-    return _e52;
-}
-
-uint ies_segment(uint tab_1, uint start, uint n_3, float x_7)
-{
-    uint lo = 0u;
-    uint hi = (uint)0;
-
-    if ((n_3 < 2u)) {
-        return 0u;
-    }
-    hi = (n_3 - 1u);
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
-    while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e12 = hi;
-        uint _e13 = lo;
-        if (((_e12 - _e13) > 1u)) {
-        } else {
-            break;
-        }
-        {
-            uint _e17 = lo;
-            uint _e18 = hi;
-            uint mid = ((_e17 + _e18) >> 1u);
-            const float _e23 = at(tab_1, (start + mid));
-            if ((_e23 <= x_7)) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-    }
-    uint _e25 = lo;
-    return _e25;
-}
-
-float ies_lerp_t(float a0_, float a1_, float x_8)
-{
-    if ((a1_ <= a0_)) {
-        return 0.0;
-    }
-    return saturate(((x_8 - a0_) / (a1_ - a0_)));
-}
-
-float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
-{
-    bool local_3 = (bool)0;
-
-    const float _e4 = at(tab_2, base_1);
-    const uint _e5 = to_u32_(_e4);
-    const float _e8 = at(tab_2, (base_1 + 1u));
-    const uint _e9 = to_u32_(_e8);
-    uint v0_ = (base_1 + 2u);
-    uint h0_ = (v0_ + _e5);
-    uint c0_1 = (h0_ + _e9);
-    const float _e14 = at(tab_2, v0_);
-    if (!((gamma < _e14))) {
-        const float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_3 = (gamma > _e22);
-    } else {
-        local_3 = true;
-    }
-    bool _e25 = local_3;
-    if (_e25) {
-        return 0.0;
-    }
-    const float _e27 = at(tab_2, h0_);
-    const float _e31 = at(tab_2, ((h0_ + _e9) - 1u));
-    const float _e32 = ies_fold_c(c_5, _e27, _e31);
-    const uint _e33 = ies_segment(tab_2, v0_, _e5, gamma);
-    const uint _e34 = ies_segment(tab_2, h0_, _e9, _e32);
-    uint iv1_ = min((_e33 + 1u), (_e5 - 1u));
-    uint ih1_ = min((_e34 + 1u), (_e9 - 1u));
-    const float _e46 = at(tab_2, (v0_ + _e33));
-    const float _e48 = at(tab_2, (v0_ + iv1_));
-    const float _e49 = ies_lerp_t(_e46, _e48, gamma);
-    const float _e51 = at(tab_2, (h0_ + _e34));
-    const float _e53 = at(tab_2, (h0_ + ih1_));
-    const float _e54 = ies_lerp_t(_e51, _e53, _e32);
-    const float _e58 = at(tab_2, ((c0_1 + (_e34 * _e5)) + _e33));
-    const float _e65 = at(tab_2, ((c0_1 + (_e34 * _e5)) + iv1_));
-    float a_11 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
-    const float _e71 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + _e33));
-    const float _e78 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + iv1_));
-    float b_8 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
-    return ((a_11 * (1.0 - _e54)) + (b_8 * _e54));
-}
-
-float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
-{
-    const float _e9 = atan2_portable(sqrt(((wr * wr) + (ws * ws))), wn);
-    float gamma_1 = degrees(_e9);
-    bool on_axis = ((abs(wr) + abs(ws)) <= 0.0);
-    const float _e16 = atan2_portable(ws, wr);
-    float c_13 = (on_axis ? 0.0 : degrees(_e16));
-    const float _e20 = ies_candela(tab_3, base_2, gamma_1, c_13);
-    return _e20;
-}
-
-float ies_light_candela(uint tab_4, uint base_3, float3 nadir, float3 reference, float3 w_3)
-{
-    float3 side = cross(reference, nadir);
-    const float _e9 = ies_candela_dir(tab_4, base_3, dot(w_3, nadir), dot(w_3, reference), dot(w_3, side));
-    return _e9;
-}
-
-float bsh_scaled_radius(BshNode node, float scale)
-{
-    if ((scale == 1.0)) {
-        return node.radius;
-    }
-    if ((node.child == BSH_NONE)) {
-        return (node.extent + (scale * (node.radius - node.extent)));
-    }
-    return (node.radius * scale);
-}
-
-uint mul_hi_u32_(uint a_4, uint b_3)
-{
-    uint a_lo = (a_4 & 65535u);
-    uint a_hi = (a_4 >> 16u);
-    uint b_lo = (b_3 & 65535u);
-    uint b_hi = (b_3 >> 16u);
-    uint ll = (a_lo * b_lo);
-    uint lh = (a_lo * b_hi);
-    uint hl = (a_hi * b_lo);
-    uint hh = (a_hi * b_hi);
-    uint mid_1 = (((ll >> 16u) + (lh & 65535u)) + (hl & 65535u));
-    return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u));
-}
-
-uint uniform_index(uint n_4, uint hi_1, uint lo_1)
-{
-    const uint _e3 = mul_lo_u32_(hi_1, n_4);
-    const uint _e4 = mul_hi_u32_(hi_1, n_4);
-    const uint _e5 = mul_hi_u32_(lo_1, n_4);
-    if ((_e3 > (4294967295u - _e5))) {
-        return (_e4 + 1u);
-    }
-    return _e4;
-}
-
-uint reservoir_slot(uint n_5, uint k, uint hi_2, uint lo_2)
-{
-    if ((n_5 <= k)) {
-        return (n_5 - 1u);
-    }
-    const uint _e7 = uniform_index(n_5, hi_2, lo_2);
-    if ((_e7 < k)) {
-        return _e7;
-    }
-    return k;
-}
-
-bool reservoir_takes(uint n_6)
-{
-    return (n_6 < RESERVOIR_FULL);
-}
-
-float reservoir_weight(uint n_7, uint k_1)
-{
-    const float _e2 = to_f32_(n_7);
-    const float _e3 = to_f32_(k_1);
-    return max((_e2 / _e3), 1.0);
-}
-
-bool weighted_replace(float w_4, float w_sum, float u_1)
-{
-    return ((u_1 * w_sum) < w_4);
-}
-
-float weighted_pick_weight(float w_sum_1, float w_5, uint k_2)
-{
-    const float _e3 = to_f32_(k_2);
-    return (w_sum_1 / (_e3 * w_5));
-}
-
-float reservoir_select_pdf(uint seen, bool in_range, uint k_3)
-{
-    uint others = (uint)0;
-    bool local_4 = (bool)0;
-
-    others = seen;
-    if (in_range) {
-        local_4 = (seen > 0u);
-    } else {
-        local_4 = false;
-    }
-    bool _e9 = local_4;
-    if (_e9) {
-        others = (seen - 1u);
-    }
-    uint _e12 = others;
-    const float _e15 = reservoir_weight((_e12 + 1u), k_3);
-    return (1.0 / _e15);
-}
-
-uint alias_choice(uint column, uint other, float keep, float u_2)
-{
-    return ((u_2 < keep) ? column : other);
-}
-
-uint uniform_light(float u_3, uint n_8)
-{
-    const float _e2 = to_f32_(n_8);
-    const uint _e4 = to_u32_((u_3 * _e2));
-    return min(_e4, (n_8 - 1u));
-}
-
-float mis_balance(float pdf_a, float pdf_b)
-{
-    float s_1 = (pdf_a + pdf_b);
+    float a2_ = (pdf_a * pdf_a);
+    float s_1 = (a2_ + (pdf_b * pdf_b));
     if ((s_1 <= 0.0)) {
         return 0.0;
     }
-    return (pdf_a / s_1);
+    return (a2_ / s_1);
 }
 
-float mis_power(float pdf_a_1, float pdf_b_1)
+float light_strategy_pdf(float select_, float rt2_3, float d2_6, float area_1, float cos_y)
 {
-    float a2_ = (pdf_a_1 * pdf_a_1);
-    float s_2 = (a2_ + (pdf_b_1 * pdf_b_1));
-    if ((s_2 <= 0.0)) {
-        return 0.0;
-    }
-    return (a2_ / s_2);
-}
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
 
-float light_strategy_pdf(float select_, float rt2_4, float d2_8, float area_1, float cos_y)
-{
-    bool local_5 = (bool)0;
-    bool local_6 = (bool)0;
-
-    if (!((d2_8 <= 0.0))) {
-        local_5 = (area_1 <= 0.0);
+    if (!((d2_6 <= 0.0))) {
+        local_2 = (area_1 <= 0.0);
     } else {
-        local_5 = true;
+        local_2 = true;
     }
-    bool _e13 = local_5;
+    bool _e13 = local_2;
     if (!(_e13)) {
-        local_6 = (cos_y <= 0.0);
+        local_3 = (cos_y <= 0.0);
     } else {
-        local_6 = true;
+        local_3 = true;
     }
-    bool _e20 = local_6;
+    bool _e20 = local_3;
     if (_e20) {
         return 0.0;
     }
-    const float _e22 = rr_probability(rt2_4, d2_8);
-    const float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_8, cos_y);
+    const float _e22 = rr_probability(rt2_3, d2_6);
+    const float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_6, cos_y);
     return ((select_ * _e22) * _e26);
 }
 
-float3 lambert_brdf(float3 rho)
+float cosine_pdf(float cos_theta)
 {
-    return (rho * INV_PI);
+    return (max(cos_theta, 0.0) * INV_PI);
 }
 
-float cosine_pdf(float cos_theta_1)
+float3 onb_tangent(float3 n_2)
 {
-    return (max(cos_theta_1, 0.0) * INV_PI);
+    float s_2 = ((n_2.z >= 0.0) ? 1.0 : -1.0);
+    float a_6 = (-1.0 / (s_2 + n_2.z));
+    return float3((1.0 + (((s_2 * n_2.x) * n_2.x) * a_6)), (((s_2 * n_2.x) * n_2.y) * a_6), (-(s_2) * n_2.x));
 }
 
-float3 onb_tangent(float3 n_9)
+float3 onb_bitangent(float3 n_3)
 {
-    float s_3 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_3 + n_9.z));
-    return float3((1.0 + (((s_3 * n_9.x) * n_9.x) * a_12)), (((s_3 * n_9.x) * n_9.y) * a_12), (-(s_3) * n_9.x));
+    float s_3 = ((n_3.z >= 0.0) ? 1.0 : -1.0);
+    float a_7 = (-1.0 / (s_3 + n_3.z));
+    return float3(((n_3.x * n_3.y) * a_7), (s_3 + ((n_3.y * n_3.y) * a_7)), -(n_3.y));
 }
 
-float3 onb_bitangent(float3 n_10)
+float3 onb_to_local(float3 n_4, float3 w_2)
 {
-    float s_4 = ((n_10.z >= 0.0) ? 1.0 : -1.0);
-    float a_13 = (-1.0 / (s_4 + n_10.z));
-    return float3(((n_10.x * n_10.y) * a_13), (s_4 + ((n_10.y * n_10.y) * a_13)), -(n_10.y));
-}
-
-float3 onb_to_world(float3 n_11, float3 d)
-{
-    const float3 _e2 = onb_tangent(n_11);
-    const float3 _e5 = onb_bitangent(n_11);
-    return (((_e2 * d.x) + (_e5 * d.y)) + (n_11 * d.z));
-}
-
-float3 onb_to_local(float3 n_12, float3 w_6)
-{
-    const float3 _e2 = onb_tangent(n_12);
-    const float3 _e4 = onb_bitangent(n_12);
-    return float3(dot(w_6, _e2), dot(w_6, _e4), dot(w_6, n_12));
-}
-
-float3 cosine_direction(float3 n_13, float u1_1, float u2_1)
-{
-    float r_17 = sqrt(u1_1);
-    float phi_5 = (6.2831855 * u2_1);
-    const float3 _e16 = onb_to_world(n_13, float3((r_17 * cos(phi_5)), (r_17 * sin(phi_5)), sqrt(max((1.0 - u1_1), 0.0))));
-    return normalize(_e16);
-}
-
-float ggx_alpha(float roughness)
-{
-    return max((roughness * roughness), GGX_ALPHA_MIN);
+    const float3 _e2 = onb_tangent(n_4);
+    const float3 _e4 = onb_bitangent(n_4);
+    return float3(dot(w_2, _e2), dot(w_2, _e4), dot(w_2, n_4));
 }
 
 float ggx_d(float cos_h, float sin2_h, float alpha)
@@ -1004,8 +336,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha)
         return 0.0;
     }
     float a2_1 = (alpha * alpha);
-    float t_3 = (((cos_h * cos_h) * a2_1) + sin2_h);
-    return ((a2_1 * INV_PI) / (t_3 * t_3));
+    float t = (((cos_h * cos_h) * a2_1) + sin2_h);
+    return ((a2_1 * INV_PI) / (t * t));
 }
 
 float smith_root(float cos_, float alpha_1)
@@ -1014,132 +346,132 @@ float smith_root(float cos_, float alpha_1)
     return sqrt((((cos_ * cos_) * (1.0 - a2_2)) + a2_2));
 }
 
-float smith_visibility(float n_l_1, float n_v, float alpha_2)
+float smith_visibility(float n_l, float n_v, float alpha_2)
 {
-    bool local_7 = (bool)0;
+    bool local_4 = (bool)0;
 
-    if (!((n_l_1 <= 0.0))) {
-        local_7 = (n_v <= 0.0);
+    if (!((n_l <= 0.0))) {
+        local_4 = (n_v <= 0.0);
     } else {
-        local_7 = true;
+        local_4 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_4;
     if (_e11) {
         return 0.0;
     }
     const float _e13 = smith_root(n_v, alpha_2);
-    const float _e15 = smith_root(n_l_1, alpha_2);
-    return (0.5 / ((n_l_1 * _e13) + (n_v * _e15)));
+    const float _e15 = smith_root(n_l, alpha_2);
+    return (0.5 / ((n_l * _e13) + (n_v * _e15)));
 }
 
 float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
 {
-    float c_14 = saturate((1.0 - v_h));
-    float c2_2 = (c_14 * c_14);
-    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_2 * c2_2) * c_14)));
+    float c_6 = saturate((1.0 - v_h));
+    float c2_ = (c_6 * c_6);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_6)));
 }
 
-float3 specular_fresnel(float3 base_4, float metallic, float3 f0_d, float f90_d, float v_h_1)
+float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, float v_h_1)
 {
     const float3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
-    const float3 _e10 = fresnel_schlick(base_4, 1.0, v_h_1);
+    const float3 _e10 = fresnel_schlick(base, 1.0, v_h_1);
     return ((_e5 * (1.0 - metallic)) + (_e10 * metallic));
 }
 
-float3 diffuse_brdf(float3 base_5, float metallic_1, float3 f0_d_1, float f90_d_1, float v_h_2)
+float3 diffuse_brdf(float3 base_1, float metallic_1, float3 f0_d_1, float f90_d_1, float v_h_2)
 {
     const float3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
-    return ((((float3(1.0, 1.0, 1.0) - _e9) * base_5) * (1.0 - metallic_1)) * INV_PI);
+    return ((((float3(1.0, 1.0, 1.0) - _e9) * base_1) * (1.0 - metallic_1)) * INV_PI);
 }
 
-float half_cosine(float3 v_2, float3 l)
+float half_cosine(float3 v, float3 l)
 {
-    float3 h_3 = (v_2 + l);
-    float len2_ = dot(h_3, h_3);
+    float3 h_1 = (v + l);
+    float len2_ = dot(h_1, h_1);
     if ((len2_ <= 0.0)) {
         return 0.0;
     }
-    return saturate((dot(v_2, h_3) / sqrt(len2_)));
+    return saturate((dot(v, h_1) / sqrt(len2_)));
 }
 
-float3 specular_brdf(float3 base_6, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_14, float3 v_3, float3 l_1)
+float3 specular_brdf(float3 base_2, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_5, float3 v_1, float3 l_1)
 {
-    bool local_8 = (bool)0;
+    bool local_5 = (bool)0;
 
-    float n_l_2 = dot(n_14, l_1);
-    float n_v_2 = dot(n_14, v_3);
-    if (!((n_l_2 <= 0.0))) {
-        local_8 = (n_v_2 <= 0.0);
+    float n_l_1 = dot(n_5, l_1);
+    float n_v_2 = dot(n_5, v_1);
+    if (!((n_l_1 <= 0.0))) {
+        local_5 = (n_v_2 <= 0.0);
     } else {
-        local_8 = true;
+        local_5 = true;
     }
-    bool _e18 = local_8;
+    bool _e18 = local_5;
     if (_e18) {
         return float3(0.0, 0.0, 0.0);
     }
-    float3 hs = (v_3 + l_1);
+    float3 hs = (v_1 + l_1);
     float inv = (1.0 / sqrt(dot(hs, hs)));
-    float3 h_4 = (hs * inv);
-    float3 c_15 = cross(n_14, h_4);
-    const float _e32 = ggx_d(dot(n_14, h_4), dot(c_15, c_15), alpha_3);
-    const float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_3, h_4));
-    const float _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
+    float3 h_2 = (hs * inv);
+    float3 c_7 = cross(n_5, h_2);
+    const float _e32 = ggx_d(dot(n_5, h_2), dot(c_7, c_7), alpha_3);
+    const float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_2));
+    const float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
 
-float3 brdf_eval(float3 base_7, float metallic_3, float3 f0_d_3, float f90_d_3, float alpha_4, float3 n_15, float3 v_4, float3 l_2)
+float3 brdf_eval(float3 base_3, float metallic_3, float3 f0_d_3, float f90_d_3, float alpha_4, float3 n_6, float3 v_2, float3 l_2)
 {
-    if ((dot(n_15, l_2) <= 0.0)) {
+    if ((dot(n_6, l_2) <= 0.0)) {
         return float3(0.0, 0.0, 0.0);
     }
-    const float _e15 = half_cosine(v_4, l_2);
-    const float3 _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
-    const float3 _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_15, v_4, l_2);
+    const float _e15 = half_cosine(v_2, l_2);
+    const float3 _e16 = diffuse_brdf(base_3, metallic_3, f0_d_3, f90_d_3, _e15);
+    const float3 _e17 = specular_brdf(base_3, metallic_3, f0_d_3, f90_d_3, alpha_4, n_6, v_2, l_2);
     return (_e16 + _e17);
 }
 
 bool has_specular(float metallic_4, float3 f0_d_4, float f90_d_4)
 {
-    bool local_9 = (bool)0;
-    bool local_10 = (bool)0;
+    bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
 
     if (!((metallic_4 > 0.0))) {
-        local_9 = (f90_d_4 > 0.0);
+        local_6 = (f90_d_4 > 0.0);
     } else {
-        local_9 = true;
+        local_6 = true;
     }
-    bool _e11 = local_9;
+    bool _e11 = local_6;
     if (!(_e11)) {
-        local_10 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
+        local_7 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
     } else {
-        local_10 = true;
+        local_7 = true;
     }
-    bool _e23 = local_10;
+    bool _e23 = local_7;
     return _e23;
 }
 
-float channel_mean(float3 c_6)
+float channel_mean(float3 c_1)
 {
-    return (((c_6.x + c_6.y) + c_6.z) * 0.33333334);
+    return (((c_1.x + c_1.y) + c_1.z) * 0.33333334);
 }
 
-float4 receiver_lobe(float3 base_8, float metallic_5, float3 f0_d_5, float f90_d_5, float alpha_5, float n_v_1)
+float4 receiver_lobe(float3 base_4, float metallic_5, float3 f0_d_5, float f90_d_5, float alpha_5, float n_v_1)
 {
-    bool local_11 = (bool)0;
+    bool local_8 = (bool)0;
 
     const float3 _e10 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
-    const float _e16 = channel_mean((((float3(1.0, 1.0, 1.0) - _e10) * base_8) * (1.0 - metallic_5)));
+    const float _e16 = channel_mean((((float3(1.0, 1.0, 1.0) - _e10) * base_4) * (1.0 - metallic_5)));
     if (!((n_v_1 <= 0.0))) {
         const bool _e22 = has_specular(metallic_5, f0_d_5, f90_d_5);
-        local_11 = !(_e22);
+        local_8 = !(_e22);
     } else {
-        local_11 = true;
+        local_8 = true;
     }
-    bool _e25 = local_11;
+    bool _e25 = local_8;
     if (_e25) {
         return float4(_e16, 0.0, alpha_5, n_v_1);
     }
-    const float3 _e28 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    const float3 _e28 = specular_fresnel(base_4, metallic_5, f0_d_5, f90_d_5, n_v_1);
     const float _e29 = channel_mean(_e28);
     return float4(_e16, _e29, alpha_5, n_v_1);
 }
@@ -1170,79 +502,51 @@ float range_scale(float4 lobe_2)
     return clamp(_e5, 1.0, RANGE_SCALE_MAX);
 }
 
-float3 mirror_dir(float3 n_16, float3 v_5)
+float3 mirror_dir(float3 n_7, float3 v_3)
 {
-    return ((n_16 * (2.0 * dot(n_16, v_5))) - v_5);
+    return ((n_7 * (2.0 * dot(n_7, v_3))) - v_3);
 }
 
 float bounded_vndf_k(float3 wi, float alpha_6)
 {
-    float a_14 = saturate(alpha_6);
-    float s_5 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    float a2_3 = (a_14 * a_14);
-    float s2_ = (s_5 * s_5);
+    float a_8 = saturate(alpha_6);
+    float s_4 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
+    float a2_3 = (a_8 * a_8);
+    float s2_ = (s_4 * s_4);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
-float3 ggx_vndf_sample(float3 wi_1, float alpha_7, float u1_2, float u2_2)
+float ggx_vndf_pdf(float3 wi_1, float3 wo, float alpha_7)
 {
-    float3 wi_std = normalize(float3((wi_1.x * alpha_7), (wi_1.y * alpha_7), wi_1.z));
-    const float _e12 = bounded_vndf_k(wi_1, alpha_7);
-    float b_9 = ((wi_1.z > 0.0) ? (_e12 * wi_std.z) : wi_std.z);
-    float phi_6 = (6.2831855 * u1_2);
-    float z_4 = (((1.0 - u2_2) * (1.0 + b_9)) - b_9);
-    float sin_t = sqrt(saturate((1.0 - (z_4 * z_4))));
-    float3 m_std = (wi_std + float3((sin_t * cos(phi_6)), (sin_t * sin(phi_6)), z_4));
-    float3 m_2 = normalize(float3((m_std.x * alpha_7), (m_std.y * alpha_7), m_std.z));
-    return ((m_2 * (2.0 * dot(wi_1, m_2))) - wi_1);
-}
+    bool local_9 = (bool)0;
 
-float ggx_vndf_pdf(float3 wi_2, float3 wo, float alpha_8)
-{
-    bool local_12 = (bool)0;
-
-    if (!((wi_2.z <= 0.0))) {
-        local_12 = (wo.z <= 0.0);
+    if (!((wi_1.z <= 0.0))) {
+        local_9 = (wo.z <= 0.0);
     } else {
-        local_12 = true;
+        local_9 = true;
     }
-    bool _e13 = local_12;
+    bool _e13 = local_9;
     if (_e13) {
         return 0.0;
     }
-    float3 hs_1 = (wi_2 + wo);
-    float3 m_3 = (hs_1 / (sqrt(dot(hs_1, hs_1))).xxx);
-    const float _e28 = ggx_d(m_3.z, ((m_3.x * m_3.x) + (m_3.y * m_3.y)), alpha_8);
-    float t_4 = sqrt((((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
-    const float _e43 = bounded_vndf_k(wi_2, alpha_8);
-    return (_e28 / (2.0 * ((_e43 * wi_2.z) + t_4)));
+    float3 hs_1 = (wi_1 + wo);
+    float3 m_1 = (hs_1 / (sqrt(dot(hs_1, hs_1))).xxx);
+    const float _e28 = ggx_d(m_1.z, ((m_1.x * m_1.x) + (m_1.y * m_1.y)), alpha_7);
+    float t_1 = sqrt((((alpha_7 * alpha_7) * ((wi_1.x * wi_1.x) + (wi_1.y * wi_1.y))) + (wi_1.z * wi_1.z)));
+    const float _e43 = bounded_vndf_k(wi_1, alpha_7);
+    return (_e28 / (2.0 * ((_e43 * wi_1.z) + t_1)));
 }
 
-float3 bsdf_sample(float3 n_17, float3 v_6, float alpha_9, float p_spec, float u1_3, float u2_3)
+float bsdf_pdf(float3 n_8, float3 v_4, float3 l_3, float alpha_8, float p_spec)
 {
-    if ((u1_3 < p_spec)) {
-        if ((dot(n_17, v_6) <= 0.0)) {
-            return -(n_17);
-        }
-        const float3 _e11 = onb_to_local(n_17, v_6);
-        const float3 _e13 = ggx_vndf_sample(_e11, alpha_9, (u1_3 / p_spec), u2_3);
-        const float3 _e14 = onb_to_world(n_17, _e13);
-        return normalize(_e14);
-    }
-    const float3 _e20 = cosine_direction(n_17, ((u1_3 - p_spec) / (1.0 - p_spec)), u2_3);
-    return _e20;
-}
-
-float bsdf_pdf(float3 n_18, float3 v_7, float3 l_3, float alpha_10, float p_spec_1)
-{
-    const float _e6 = cosine_pdf(dot(n_18, l_3));
-    if ((p_spec_1 <= 0.0)) {
+    const float _e6 = cosine_pdf(dot(n_8, l_3));
+    if ((p_spec <= 0.0)) {
         return _e6;
     }
-    const float3 _e9 = onb_to_local(n_18, v_7);
-    const float3 _e10 = onb_to_local(n_18, l_3);
-    const float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_10);
-    return ((p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6));
+    const float3 _e9 = onb_to_local(n_8, v_4);
+    const float3 _e10 = onb_to_local(n_8, l_3);
+    const float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_8);
+    return ((p_spec * _e11) + ((1.0 - p_spec) * _e6));
 }
 
 float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
@@ -1261,27 +565,27 @@ float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1
     return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
 }
 
-float safe_sqrt(float x_9)
+float safe_sqrt(float x_2)
 {
-    return sqrt(max(x_9, 0.0));
+    return sqrt(max(x_2, 0.0));
 }
 
-float subtended_cos(float dist2_, float r2_6)
+float subtended_cos(float dist2_, float r2_2)
 {
-    const float _e5 = safe_sqrt((1.0 - (r2_6 / dist2_)));
-    return ((dist2_ <= r2_6) ? -1.0 : _e5);
+    const float _e5 = safe_sqrt((1.0 - (r2_2 / dist2_)));
+    return ((dist2_ <= r2_2) ? -1.0 : _e5);
 }
 
 float emitter_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p)
 {
-    float3 v_15 = (p - center_);
-    float dist2_1 = dot(v_15, v_15);
-    float r2_8 = (radius * radius);
-    float d2_13 = max(max(dist2_1, r2_8), MIN_D2_);
-    float3 wi_3 = ((dist2_1 > 0.0) ? (v_15 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
-    float cos_w = dot(axis, wi_3);
+    float3 v_7 = (p - center_);
+    float dist2_1 = dot(v_7, v_7);
+    float r2_4 = (radius * radius);
+    float d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
+    float3 wi_2 = ((dist2_1 > 0.0) ? (v_7 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi_2);
     const float _e27 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e28 = subtended_cos(dist2_1, r2_8);
+    const float _e28 = subtended_cos(dist2_1, r2_4);
     const float _e32 = safe_sqrt((1.0 - (_e28 * _e28)));
     const float _e36 = safe_sqrt((1.0 - (cos_o * cos_o)));
     const float _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
@@ -1290,53 +594,53 @@ float emitter_importance(float3 center_, float radius, float phi, float3 axis, f
     if ((_e39 <= cos_e)) {
         return 0.0;
     }
-    return ((phi * _e39) / d2_13);
+    return ((phi * _e39) / d2_8);
 }
 
-float cone_cos_toward(float3 center_1, float radius_1, float3 p_1, float3 d_1)
+float cone_cos_toward(float3 center_1, float radius_1, float3 p_1, float3 d)
 {
-    float3 v_16 = (center_1 - p_1);
-    float dist2_2 = dot(v_16, v_16);
-    float3 w_14 = ((dist2_2 > 0.0) ? (v_16 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0));
+    float3 v_8 = (center_1 - p_1);
+    float dist2_2 = dot(v_8, v_8);
+    float3 w_6 = ((dist2_2 > 0.0) ? (v_8 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0));
     const float _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
-    float cos_i = dot(w_14, d_1);
+    float cos_i = dot(w_6, d);
     const float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
     const float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
     const float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
     return _e27;
 }
 
-float light_importance(float3 center_2, float radius_2, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float3 p_2, float3 n_19)
+float light_importance(float3 center_2, float radius_2, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float3 p_2, float3 n_9)
 {
     float imp = (float)0;
 
     const float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
     imp = _e8;
-    if ((dot(n_19, n_19) > 0.0)) {
+    if ((dot(n_9, n_9) > 0.0)) {
         float _e13 = imp;
-        const float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_19);
+        const float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_9);
         imp = (_e13 * max(_e14, 0.0));
     }
     float _e18 = imp;
     return max(_e18, 0.0);
 }
 
-float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_20, float3 r_3, float4 lobe_3)
+float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_10, float3 r, float4 lobe_3)
 {
-    bool local_13 = (bool)0;
+    bool local_10 = (bool)0;
 
     const float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
-    const float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_20);
+    const float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_10);
     if (!((_e10 <= 0.0))) {
-        local_13 = (_e11 <= 0.0);
+        local_10 = (_e11 <= 0.0);
     } else {
-        local_13 = true;
+        local_10 = true;
     }
-    bool _e20 = local_13;
+    bool _e20 = local_10;
     if (_e20) {
         return 0.0;
     }
-    const float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
+    const float _e22 = cone_cos_toward(center_3, radius_3, p_3, r);
     const float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
     const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
     const float _e39 = smith_root(lobe_3.w, lobe_3.z);
@@ -1344,70 +648,31 @@ float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axi
     return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-float receiver_importance(float3 center_4, float radius_4, float phi_3, float3 axis_3, float cos_o_3, float cos_e_3, float3 p_4, float3 n_21, float3 r_4, float4 lobe_4)
+float receiver_importance(float3 center_4, float radius_4, float phi_3, float3 axis_3, float cos_o_3, float cos_e_3, float3 p_4, float3 n_11, float3 r_1, float4 lobe_4)
 {
     if ((lobe_4.y <= 0.0)) {
-        const float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
+        const float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_11);
         return _e13;
     }
-    const float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
+    const float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_11, r_1, lobe_4);
     return _e14;
 }
 
-float candidate_weight(float importance, float rt2_5, float d2_9)
+float bvh_first_prob(float c0_, float c1_)
 {
-    const float _e3 = slc_weight(rt2_5, d2_9);
-    return (importance * _e3);
-}
-
-float cone_weight(float3 center_5, float radius_5, float phi_4, float3 axis_4, float cos_o_4, float cos_e_4, float rt2_6, float3 p_5, float3 n_22, float3 r_5, float4 lobe_5)
-{
-    float3 v_17 = (p_5 - center_5);
-    if ((lobe_5.y <= 0.0)) {
-        const float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
-        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
-        return _e19;
-    }
-    const float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
-    const float _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
-    return _e22;
-}
-
-float weighted_select_pdf(float w_7, float w_sum_2, bool in_range_1, uint k_4)
-{
-    if ((w_7 <= 0.0)) {
-        return 0.0;
-    }
-    float total = (in_range_1 ? w_sum_2 : (w_sum_2 + w_7));
-    const float _e9 = to_f32_(k_4);
-    return ((_e9 * w_7) / total);
-}
-
-float bvh_first_prob(float c0_, float c1_2)
-{
-    float s_6 = (c0_ + c1_2);
-    if ((s_6 > 0.0)) {
-        return (c0_ / s_6);
+    float s_5 = (c0_ + c1_);
+    if ((s_5 > 0.0)) {
+        return (c0_ / s_5);
     }
     return -1.0;
 }
 
-float bvh_remap_u(float u_4, float p0_, bool first)
+float bvh_remap_u(float u_1, float p0_, bool first)
 {
     if (first) {
-        return min((u_4 / p0_), ONE_MINUS_EPSILON);
+        return min((u_1 / p0_), ONE_MINUS_EPSILON);
     }
-    return clamp(((u_4 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
-}
-
-float surface_offset(float diag)
-{
-    return (1e-5 * diag);
-}
-
-float ray_t_min(float diag_1)
-{
-    return (1e-6 * diag_1);
+    return clamp(((u_1 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
 }
 
 float shadow_margin(float len)
@@ -1415,400 +680,126 @@ float shadow_margin(float len)
     return (0.0001 * len);
 }
 
-float ray_inverse(float x_10)
+float ray_inverse(float x_3)
 {
-    return (1.0 / ((abs(x_10) < 1e-30) ? 1e-30 : x_10));
+    return (1.0 / ((abs(x_3) < 1e-30) ? 1e-30 : x_3));
 }
 
-float3 ray_inverse3_(float3 d_2)
+float3 ray_inverse3_(float3 d_1)
 {
-    const float _e2 = ray_inverse(d_2.x);
-    const float _e4 = ray_inverse(d_2.y);
-    const float _e6 = ray_inverse(d_2.z);
+    const float _e2 = ray_inverse(d_1.x);
+    const float _e4 = ray_inverse(d_1.y);
+    const float _e6 = ray_inverse(d_1.z);
     return float3(_e2, _e4, _e6);
 }
 
-float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max)
+float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
 {
-    float3 t0_ = ((bmin_1 - o) * inv_d);
-    float3 t1_ = ((bmax_1 - o) * inv_d);
-    float3 lo_3 = min(t0_, t1_);
-    float3 hi_3 = max(t0_, t1_);
-    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
-    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
+    float3 t0_ = ((bmin - o) * inv_d);
+    float3 t1_ = ((bmax - o) * inv_d);
+    float3 lo = min(t0_, t1_);
+    float3 hi = max(t0_, t1_);
+    float t_in = max(max(lo.x, lo.y), max(lo.z, 0.0));
+    float t_out = min(min(hi.x, hi.y), min(hi.z, t_max));
     if ((t_in <= t_out)) {
         return t_in;
     }
     return -1.0;
 }
 
-float3 triangle_normal(float3 a_5, float3 b_4, float3 c_7)
+float3 triangle_normal(float3 a_3, float3 b_3, float3 c_2)
 {
-    bool local_14 = (bool)0;
+    bool local_11 = (bool)0;
 
-    float3 n_37 = cross((b_4 - a_5), (c_7 - a_5));
-    float l2_ = dot(n_37, n_37);
+    float3 n_20 = cross((b_3 - a_3), (c_2 - a_3));
+    float l2_ = dot(n_20, n_20);
     if (!(!((l2_ > 0.0)))) {
-        local_14 = !((l2_ < 3e38));
+        local_11 = !((l2_ < 3e38));
     } else {
-        local_14 = true;
+        local_11 = true;
     }
-    bool _e17 = local_14;
+    bool _e17 = local_11;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_37 / (sqrt(l2_)).xxx);
+    return (n_20 / (sqrt(l2_)).xxx);
 }
 
-float3 face_against(float3 n_23, float3 dir)
+float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_4, float3 c_3, float t_min, float t_max_1)
 {
-    return ((dot(n_23, dir) > 0.0) ? -(n_23) : n_23);
-}
+    bool local_12 = (bool)0;
+    bool local_13 = (bool)0;
+    bool local_14 = (bool)0;
 
-float3 barycentric(float3 p_6, float3 a_6, float3 b_5, float3 c_8)
-{
-    float3 e1_1 = (b_5 - a_6);
-    float3 e2_1 = (c_8 - a_6);
-    float3 q_4 = (p_6 - a_6);
-    float d11_ = dot(e1_1, e1_1);
-    float d12_ = dot(e1_1, e2_1);
-    float d22_ = dot(e2_1, e2_1);
-    float den = ((d11_ * d22_) - (d12_ * d12_));
-    if (!((abs(den) > 0.0))) {
-        return float3(1.0, 0.0, 0.0);
-    }
-    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
-    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
-    return float3(((1.0 - w1_) - w2_), w1_, w2_);
-}
-
-float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_8, float3 facing)
-{
-    bool local_15 = (bool)0;
-
-    float3 s_7 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
-    float l2_1 = dot(s_7, s_7);
-    if (!(!((l2_1 > 1e-12)))) {
-        local_15 = !((l2_1 < 3e38));
-    } else {
-        local_15 = true;
-    }
-    bool _e24 = local_15;
-    if (_e24) {
-        return facing;
-    }
-    float3 n_38 = (s_7 / (sqrt(l2_1)).xxx);
-    return ((dot(n_38, facing) < 0.0) ? -(n_38) : n_38);
-}
-
-float ray_triangle(float3 o_1, float3 d_3, float3 a_7, float3 b_6, float3 c_9, float t_min, float t_max_1)
-{
-    bool local_16 = (bool)0;
-    bool local_17 = (bool)0;
-    bool local_18 = (bool)0;
-
-    float3 e1_2 = (b_6 - a_7);
-    float3 e2_2 = (c_9 - a_7);
-    float3 p_7 = cross(d_3, e2_2);
-    float det = dot(e1_2, p_7);
+    float3 e1_ = (b_4 - a_4);
+    float3 e2_ = (c_3 - a_4);
+    float3 p_5 = cross(d_2, e2_);
+    float det = dot(e1_, p_5);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
-    float3 s_8 = (o_1 - a_7);
-    float u_7 = (dot(s_8, p_7) * inv_1);
-    if (!((u_7 < 0.0))) {
-        local_16 = (u_7 > 1.0);
+    float3 s_6 = (o_1 - a_4);
+    float u_3 = (dot(s_6, p_5) * inv_1);
+    if (!((u_3 < 0.0))) {
+        local_12 = (u_3 > 1.0);
     } else {
-        local_16 = true;
+        local_12 = true;
     }
-    bool _e28 = local_16;
+    bool _e28 = local_12;
     if (_e28) {
         return -1.0;
     }
-    float3 q_5 = cross(s_8, e1_2);
-    float v_18 = (dot(d_3, q_5) * inv_1);
-    if (!((v_18 < 0.0))) {
-        local_17 = ((u_7 + v_18) > 1.0);
+    float3 q = cross(s_6, e1_);
+    float v_9 = (dot(d_2, q) * inv_1);
+    if (!((v_9 < 0.0))) {
+        local_13 = ((u_3 + v_9) > 1.0);
     } else {
-        local_17 = true;
+        local_13 = true;
     }
-    bool _e42 = local_17;
+    bool _e42 = local_13;
     if (_e42) {
         return -1.0;
     }
-    float t_5 = (dot(e2_2, q_5) * inv_1);
-    if ((t_5 > t_min)) {
-        local_18 = (t_5 < t_max_1);
+    float t_2 = (dot(e2_, q) * inv_1);
+    if ((t_2 > t_min)) {
+        local_14 = (t_2 < t_max_1);
     } else {
-        local_18 = false;
+        local_14 = false;
     }
-    bool _e51 = local_18;
+    bool _e51 = local_14;
     if (_e51) {
-        return t_5;
+        return t_2;
     }
     return -1.0;
 }
 
-float inv_sigma_z(float z)
+bool finite3_(float3 v_5)
 {
-    return (1.0 / (DEPTH_SIGMA * z));
-}
+    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
 
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / (rhs == 0u ? 1u : rhs);
-}
-
-uint window_start(uint x_11, uint size)
-{
-    uint half_ = naga_div(size, 2u);
-    return (max(x_11, half_) - half_);
-}
-
-uint window_end(uint x_12, uint size_1, uint extent_1)
-{
-    return min(((x_12 + size_1) - naga_div(size_1, 2u)), extent_1);
-}
-
-uint wide_window(uint period)
-{
-    return (2u * period);
-}
-
-bool misses_subset(uint covered, uint period_1)
-{
-    return (covered < (period_1 * period_1));
-}
-
-float3 filtered_irradiance(float3 e, float3 sum_1, float weight)
-{
-    if ((weight > 0.0)) {
-        return (sum_1 / (weight).xxx);
-    }
-    return e;
-}
-
-float bilateral_weight(float3 n_24, float3 nj, float z_1, float zj, float inv_sz)
-{
-    float dn = max(dot(n_24, nj), 0.0);
-    float dn2_ = (dn * dn);
-    float dn4_ = (dn2_ * dn2_);
-    float dn8_ = (dn4_ * dn4_);
-    float d_8 = ((zj - z_1) * inv_sz);
-    float t_6 = max((1.0 - (d_8 * d_8)), 0.0);
-    return (((dn8_ * dn8_) * t_6) * t_6);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % (rhs == 0u ? 1u : rhs);
-}
-
-uint interleave_subset(uint x_13, uint y_2, uint period_2)
-{
-    return ((naga_mod(y_2, period_2) * period_2) + naga_mod(x_13, period_2));
-}
-
-uint interleave_slot(uint tx, uint ty, uint size_2, uint period_3)
-{
-    uint side_1 = naga_div(size_2, period_3);
-    const uint _e5 = interleave_subset(tx, ty, period_3);
-    return ((((_e5 * side_1) * side_1) + (naga_div(ty, period_3) * side_1)) + naga_div(tx, period_3));
-}
-
-uint interleave_slot_linear(uint i_1, uint per_subset, uint period_4)
-{
-    uint subsets = (period_4 * period_4);
-    return ((naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets));
-}
-
-float interleave_flux_scale(uint period_5)
-{
-    const float _e2 = to_f32_((period_5 * period_5));
-    return _e2;
-}
-
-uint near_block_index(uint tx_1, uint ty_1, uint size_3)
-{
-    uint side_2 = naga_div(size_3, 8u);
-    return (((((naga_div(ty_1, 8u) * side_2) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u));
-}
-
-uint near_block_tx(uint q, uint size_4)
-{
-    return ((naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_4, 8u)) * 8u) + naga_mod(q, 8u));
-}
-
-uint near_block_ty(uint q_1, uint size_5)
-{
-    return ((naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_5, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u));
-}
-
-float vpl_near_weight(float d2_10, float near_r2_)
-{
-    if ((near_r2_ <= 0.0)) {
-        return 0.0;
-    }
-    float t_7 = clamp(((near_r2_ - d2_10) / (0.75 * near_r2_)), 0.0, 1.0);
-    return ((t_7 * t_7) * (3.0 - (2.0 * t_7)));
-}
-
-float vpl_far_weight(float d2_11, float near_r2_1)
-{
-    const float _e2 = vpl_near_weight(d2_11, near_r2_1);
-    return (1.0 - _e2);
-}
-
-float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_9, float h_1)
-{
-    float sx = (((2.0 * px) / w_9) - 1.0);
-    float sy = (1.0 - ((2.0 * py) / h_1));
-    return normalize(((forward + (right * sx)) + (up * sy)));
-}
-
-float jittered_pixel(uint coord, float u_5)
-{
-    const float _e2 = to_f32_(coord);
-    return (_e2 + u_5);
-}
-
-bool plays_roulette(uint depth)
-{
-    return (depth >= ROULETTE_DEPTH);
-}
-
-bool sees_emission(float3 gn, float3 dir_1)
-{
-    return (dot(gn, dir_1) < 0.0);
-}
-
-bool continues_path(float3 nd, float3 n_25, float3 ng_1)
-{
-    bool local_19 = (bool)0;
-
-    if ((dot(nd, n_25) > 0.0)) {
-        local_19 = (dot(nd, ng_1) > 0.0);
+    if ((abs(v_5.x) <= F32_MAX)) {
+        local_15 = (abs(v_5.y) <= F32_MAX);
     } else {
-        local_19 = false;
+        local_15 = false;
     }
-    bool _e12 = local_19;
-    return _e12;
-}
-
-bool finite3_(float3 v_8)
-{
-    bool local_20 = (bool)0;
-    bool local_21 = (bool)0;
-
-    if ((abs(v_8.x) <= F32_MAX)) {
-        local_20 = (abs(v_8.y) <= F32_MAX);
-    } else {
-        local_20 = false;
-    }
-    bool _e12 = local_20;
+    bool _e12 = local_15;
     if (_e12) {
-        local_21 = (abs(v_8.z) <= F32_MAX);
+        local_16 = (abs(v_5.z) <= F32_MAX);
     } else {
-        local_21 = false;
+        local_16 = false;
     }
-    bool _e20 = local_21;
+    bool _e20 = local_16;
     return _e20;
 }
 
-float path_survival(float3 beta)
-{
-    return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
-}
-
-float light_map_coord(uint t_1, uint size_6)
-{
-    const float _e2 = to_f32_(t_1);
-    const float _e7 = to_f32_(size_6);
-    return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
-}
-
-uint light_map_texel(float a_8, uint size_7)
-{
-    const float _e6 = to_f32_(size_7);
-    const float _e9 = to_f32_(size_7);
-    const uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
-    return _e14;
-}
-
-float light_map_coord_at(float3 rel, float3 dir_2, float3 axis_5, float extent_2, bool perspective)
-{
-    return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_5) : 1.0) * extent_2));
-}
-
-float display_encode(float x_14)
-{
-    float v_19 = max(x_14, 0.0);
-    float t_8 = ((2.0 * v_19) / (1.0 + (2.0 * v_19)));
-    return ((t_8 <= 0.0031308) ? (12.92 * t_8) : ((1.055 * pow(t_8, 0.41666666)) - 0.055));
-}
-
-float light_map_depth(float3 rel_1, float3 axis_6, bool perspective_1)
-{
-    return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_6));
-}
-
-float rsm_texel_solid_angle(float texel_area, float cos_axis)
-{
-    return (((texel_area * cos_axis) * cos_axis) * cos_axis);
-}
-
-float3 point_irradiance(float3 intensity_1, float3 n_26, float3 v_9)
-{
-    float d2_14 = dot(v_9, v_9);
-    float cos_x_2 = (dot(n_26, v_9) / sqrt(max(d2_14, MIN_D2_)));
-    const float _e11 = inverse_square(d2_14);
-    return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
-}
-
-float3 directional_irradiance(float3 e_1, float3 n_27, float3 to_light)
-{
-    return (e_1 * max(dot(n_27, to_light), 0.0));
-}
-
-float perspective_texel_width(float extent_3, float d_4, float z_2, float size_8)
-{
-    return ((((2.0 * extent_3) * d_4) * d_4) / (size_8 * z_2));
-}
-
-float ortho_texel_width(float extent_4, float size_9)
-{
-    return ((2.0 * extent_4) / size_9);
-}
-
-float shadow_bias(float texel, float cos_light_1)
-{
-    float c_16 = clamp(cos_light_1, 0.02, 1.0);
-    return (texel * (1.5 + (sqrt((1.0 - (c_16 * c_16))) / c_16)));
-}
-
-bool shadow_lit(float d_5, float d_map, float bias)
-{
-    bool local_22 = (bool)0;
-
-    if (!((d_map <= 0.0))) {
-        local_22 = (d_5 <= (d_map + bias));
-    } else {
-        local_22 = true;
-    }
-    bool _e11 = local_22;
-    return _e11;
-}
-
-float3 diffuse_radiance(float3 albedo, float3 emission, float3 e_2)
-{
-    return (emission + ((albedo * INV_PI) * e_2));
-}
-
-float3 light_intensity(GpuLight l_4, float3 w_10)
+float3 light_intensity(GpuLight l_4, float3 w_3)
 {
     switch(l_4.kind) {
         case 3u: {
             const float3 _e7 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
-            const float _e9 = triangle_lobe(_e7, l_4.a, w_10);
+            const float _e9 = triangle_lobe(_e7, l_4.a, w_3);
             return (l_4.intensity * _e9);
         }
         default: {
@@ -1817,10 +808,10 @@ float3 light_intensity(GpuLight l_4, float3 w_10)
     }
 }
 
-float3 light_point(GpuLight l_5, float u1_4, float u2_4)
+float3 light_point(GpuLight l_5, float u1_1, float u2_1)
 {
     if ((l_5.kind == LIGHT_TRIANGLE)) {
-        const float3 _e9 = triangle_sample(l_5.p0_, l_5.p1_, l_5.p2_, u1_4, u2_4);
+        const float3 _e9 = triangle_sample(l_5.p0_, l_5.p1_, l_5.p2_, u1_1, u2_1);
         return _e9;
     }
     return l_5.p0_;
@@ -1870,13 +861,13 @@ GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3,
     return ret;
 }
 
-GeoHit trace(float3 o_2, float3 d_6, float t_min_1, float t_max_2, bool any_hit)
+GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
 {
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
     uint sp = 0u;
-    uint node_1 = 0u;
-    uint i_2 = (uint)0;
+    uint node = 0u;
+    uint i = (uint)0;
 
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -1885,41 +876,41 @@ GeoHit trace(float3 o_2, float3 d_6, float t_min_1, float t_max_2, bool any_hit)
         const GeoHit geohit = _e13;
         return geohit;
     }
-    const float3 _e14 = ray_inverse3_(d_6);
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    const float3 _e14 = ray_inverse3_(d_3);
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e21 = node_1;
-        GpuGeoNode n_39 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e21 = node;
+        GpuGeoNode n_21 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_39.bmin, n_39.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_21.bmin, n_21.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_39.count > 0u)) {
-                i_2 = n_39.first;
-                uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+            if ((n_21.count > 0u)) {
+                i = n_21.first;
+                uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
-                    if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                    if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+                    loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                     if (!loop_init) {
-                        uint _e58 = i_2;
-                        i_2 = (_e58 + 1u);
+                        uint _e58 = i;
+                        i = (_e58 + 1u);
                     }
                     loop_init = false;
-                    uint _e36 = i_2;
-                    if ((_e36 < (n_39.first + n_39.count))) {
+                    uint _e36 = i;
+                    if ((_e36 < (n_21.first + n_21.count))) {
                     } else {
                         break;
                     }
                     {
-                        uint _e42 = i_2;
-                        GpuTriangle t_9 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        uint _e42 = i;
+                        GpuTriangle t_3 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_6, t_9.v0_, t_9.v1_, t_9.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_3, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
-                            uint _e55 = i_2;
+                            uint _e55 = i;
                             hit.tri = _e55;
                             if (any_hit) {
                                 GeoHit _e56 = hit;
@@ -1933,11 +924,11 @@ GeoHit trace(float3 o_2, float3 d_6, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_39.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_21.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_1 = n_39.first;
+                node = n_21.first;
                 continue;
             }
         }
@@ -1949,160 +940,23 @@ GeoHit trace(float3 o_2, float3 d_6, float t_min_1, float t_max_2, bool any_hit)
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[min(uint(_e78), 63u)];
-        node_1 = _e80;
+        node = _e80;
     }
     GeoHit _e81 = hit;
     const GeoHit geohit_2 = _e81;
     return geohit_2;
 }
 
-bool occluded(float3 a_9, float3 b_7)
+bool occluded(float3 a_5, float3 b_5)
 {
-    float3 dv = (b_7 - a_9);
+    float3 dv = (b_5 - a_5);
     float len_1 = length(dv);
     if ((len_1 <= 0.0)) {
         return false;
     }
     const float _e7 = shadow_margin(len_1);
-    const GeoHit _e12 = trace(a_9, (dv / (len_1).xxx), _e7, (len_1 - _e7), true);
+    const GeoHit _e12 = trace(a_5, (dv / (len_1).xxx), _e7, (len_1 - _e7), true);
     return (_e12.tri != NO_LIGHT);
-}
-
-BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
-    BshNode ret = (BshNode)0;
-    ret.center_ = arg0;
-    ret.radius = arg1;
-    ret.child = arg2;
-    ret.next = arg3;
-    ret.light = arg4;
-    ret.extent = arg5;
-    return ret;
-}
-
-BshNode bsh_node(uint nodes, uint i_3)
-{
-    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_3*32+0)), asfloat(bsh_nodes.Load(i_3*32+12)), asuint(bsh_nodes.Load(i_3*32+16)), asuint(bsh_nodes.Load(i_3*32+20)), asuint(bsh_nodes.Load(i_3*32+24)), asfloat(bsh_nodes.Load(i_3*32+28)));
-    const BshNode bshnode = _e4;
-    return bshnode;
-}
-
-uint bsh_count(uint nodes_1)
-{
-    return ((NagaBufferLength(bsh_nodes) - 0) / 32);
-}
-
-uint bsh_first(uint nodes_2)
-{
-    const uint _e1 = bsh_count(nodes_2);
-    if ((_e1 > 0u)) {
-        return 0u;
-    }
-    return BSH_NONE;
-}
-
-uint bsh_next_leaf_scaled(uint nodes_3, uint start_1, float3 x_15, float scale_1)
-{
-    uint i_4 = (uint)0;
-
-    i_4 = start_1;
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e5 = i_4;
-        if ((_e5 != BSH_NONE)) {
-        } else {
-            break;
-        }
-        {
-            uint _e8 = i_4;
-            const BshNode _e9 = bsh_node(nodes_3, _e8);
-            const float _e11 = bsh_scaled_radius(_e9, scale_1);
-            const bool _e12 = sphere_contains_point(_e9.center_, _e11, x_15);
-            if (_e12) {
-                if ((_e9.child == BSH_NONE)) {
-                    uint _e16 = i_4;
-                    return _e16;
-                }
-                i_4 = _e9.child;
-            } else {
-                i_4 = _e9.next;
-            }
-        }
-    }
-    return BSH_NONE;
-}
-
-uint bsh_next_leaf(uint nodes_4, uint start_2, float3 x_16)
-{
-    const uint _e4 = bsh_next_leaf_scaled(nodes_4, start_2, x_16, 1.0);
-    return _e4;
-}
-
-float4 bsh_children_sphere(uint nodes_5, uint i_5)
-{
-    const BshNode _e2 = bsh_node(nodes_5, i_5);
-    const BshNode _e4 = bsh_node(nodes_5, _e2.child);
-    const BshNode _e6 = bsh_node(nodes_5, _e4.next);
-    const float4 _e11 = sphere_union(_e4.center_, _e4.radius, _e6.center_, _e6.radius);
-    return _e11;
-}
-
-Picks bsh_collect(float3 x_17, float scale_2, uint seed_3)
-{
-    Picks picks = (Picks)0;
-    uint h_2 = (uint)0;
-    uint i_6 = (uint)0;
-
-    picks.n = 0u;
-    h_2 = seed_3;
-    const uint _e9 = bsh_first(BSH);
-    const uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_17, scale_2);
-    i_6 = _e10;
-    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-    bool loop_init_1 = true;
-    while(true) {
-        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        if (!loop_init_1) {
-            uint _e43 = i_6;
-            uint _e46 = asuint(bsh_nodes.Load(20+_e43*32));
-            const uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_17, scale_2);
-            i_6 = _e47;
-        }
-        loop_init_1 = false;
-        uint _e12 = i_6;
-        if ((_e12 != BSH_NONE)) {
-        } else {
-            break;
-        }
-        {
-            uint _e16 = picks.n;
-            const bool _e17 = reservoir_takes(_e16);
-            if (_e17) {
-                uint _e19 = picks.n;
-                picks.n = (_e19 + 1u);
-                uint _e22 = h_2;
-                const uint _e23 = pcg_hash(_e22);
-                h_2 = _e23;
-                uint hi_4 = h_2;
-                uint _e25 = h_2;
-                const uint _e26 = pcg_hash(_e25);
-                h_2 = _e26;
-                uint _e28 = picks.n;
-                uint _e30 = h_2;
-                const uint _e31 = reservoir_slot(_e28, K, hi_4, _e30);
-                if ((_e31 < K)) {
-                    uint _e37 = i_6;
-                    uint _e40 = asuint(bsh_nodes.Load(24+_e37*32));
-                    picks.light[min(uint(_e31), 7u)] = _e40;
-                }
-            }
-        }
-    }
-    Picks _e48 = picks;
-    const Picks picks_1 = _e48;
-    return picks_1;
 }
 
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
@@ -2118,72 +972,50 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_18, float3 n_28, float3 ng_2, float s, float w_res, float u1_5, float u2_5, float eps)
+Connection connect(uint li, float3 x_4, float3 n_12, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps)
 {
-    Connection c_10 = (Connection)0;
-    bool local_23 = (bool)0;
+    Connection c_4 = (Connection)0;
+    bool local_17 = (bool)0;
 
-    c_10.e = (0.0).xxx;
+    c_4.e = (0.0).xxx;
     GpuLight l_8 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
-    const float3 _e17 = light_point(l_8, u1_5, u2_5);
-    c_10.y = _e17;
-    float3 _e20 = c_10.y;
-    float _e23 = asfloat(r2_7.Load(li*4));
-    const float _e25 = connection_cosine(x_18, _e20, n_28, ng_2, (s * _e23));
-    c_10.cos_x = _e25;
-    float _e27 = c_10.cos_x;
+    const float3 _e17 = light_point(l_8, u1_2, u2_2);
+    c_4.y = _e17;
+    float3 _e20 = c_4.y;
+    float _e23 = asfloat(r2_3.Load(li*4));
+    const float _e25 = connection_cosine(x_4, _e20, n_12, ng_1, (s * _e23));
+    c_4.cos_x = _e25;
+    float _e27 = c_4.cos_x;
     if (!((_e27 <= 0.0))) {
-        float3 _e36 = c_10.y;
-        const bool _e37 = occluded((x_18 + (ng_2 * eps)), _e36);
-        local_23 = _e37;
+        float3 _e36 = c_4.y;
+        const bool _e37 = occluded((x_4 + (ng_1 * eps)), _e36);
+        local_17 = _e37;
     } else {
-        local_23 = true;
+        local_17 = true;
     }
-    bool _e39 = local_23;
+    bool _e39 = local_17;
     if (_e39) {
-        Connection _e40 = c_10;
+        Connection _e40 = c_4;
         const Connection connection = _e40;
         return connection;
     }
-    float3 _e42 = c_10.y;
-    float3 v_20 = (x_18 - _e42);
-    float d2_15 = dot(v_20, v_20);
-    const float3 _e49 = light_intensity(l_8, (v_20 / (sqrt(d2_15)).xxx));
-    float _e51 = c_10.cos_x;
-    float _e54 = asfloat(rt2_7.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_15, (s * _e54), w_res);
-    c_10.e = (_e49 * _e56);
-    Connection _e58 = c_10;
+    float3 _e42 = c_4.y;
+    float3 v_10 = (x_4 - _e42);
+    float d2_9 = dot(v_10, v_10);
+    const float3 _e49 = light_intensity(l_8, (v_10 / (sqrt(d2_9)).xxx));
+    float _e51 = c_4.cos_x;
+    float _e54 = asfloat(rt2_4.Load(li*4));
+    const float _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
+    c_4.e = (_e49 * _e56);
+    Connection _e58 = c_4;
     const Connection connection_1 = _e58;
     return connection_1;
 }
 
-float mis_weight(float pdf_a_2, float pdf_b_2)
+float mis_weight(float pdf_a_1, float pdf_b_1)
 {
-    const float _e2 = mis_power(pdf_a_2, pdf_b_2);
+    const float _e2 = mis_power(pdf_a_1, pdf_b_1);
     return _e2;
-}
-
-GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
-    GpuLightCone ret = (GpuLightCone)0;
-    ret.center_ = arg0;
-    ret.radius = arg1;
-    ret.axis = arg2;
-    ret.cos_o = arg3;
-    ret.phi = arg4;
-    ret.cos_e = arg5;
-    ret.bvh_leaf = arg6;
-    ret.pad = arg7;
-    return ret;
-}
-
-float light_weight(uint li_1, float3 x_19, float3 n_29, float3 r_6, float4 lobe_6)
-{
-    GpuLightCone c_17 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e14 = range_scale(lobe_6);
-    float _e17 = asfloat(rt2_7.Load(li_1*4));
-    const float _e19 = cone_weight(c_17.center_, c_17.radius, c_17.phi, c_17.axis, c_17.cos_o, c_17.cos_e, (_e14 * _e17), x_19, n_29, r_6, lobe_6);
-    return _e19;
 }
 
 GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
@@ -2199,43 +1031,43 @@ GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, f
     return ret;
 }
 
-GpuLightBvhNode light_bvh_node(uint nodes_6, uint i_7)
+GpuLightBvhNode light_bvh_node(uint nodes, uint i_1)
 {
-    GpuLightBvhNode _e4 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_7*48+0)), asfloat(light_bvh.Load(i_7*48+12)), asfloat(light_bvh.Load3(i_7*48+16)), asfloat(light_bvh.Load(i_7*48+28)), asfloat(light_bvh.Load(i_7*48+32)), asfloat(light_bvh.Load(i_7*48+36)), asuint(light_bvh.Load(i_7*48+40)), asuint(light_bvh.Load(i_7*48+44)));
+    GpuLightBvhNode _e4 = ConstructGpuLightBvhNode(asfloat(light_bvh.Load3(i_1*48+0)), asfloat(light_bvh.Load(i_1*48+12)), asfloat(light_bvh.Load3(i_1*48+16)), asfloat(light_bvh.Load(i_1*48+28)), asfloat(light_bvh.Load(i_1*48+32)), asfloat(light_bvh.Load(i_1*48+36)), asuint(light_bvh.Load(i_1*48+40)), asuint(light_bvh.Load(i_1*48+44)));
     const GpuLightBvhNode gpulightbvhnode = _e4;
     return gpulightbvhnode;
 }
 
-uint light_bvh_count(uint nodes_7)
+uint light_bvh_count(uint nodes_1)
 {
     return ((NagaBufferLength(light_bvh) - 0) / 48);
 }
 
-float bvh_importance(uint nodes_8, uint i_8, float3 x_20, float3 n_30, float3 r_7, float4 lobe_7)
+float bvh_importance(uint nodes_2, uint i_2, float3 x_5, float3 n_13, float3 r_2, float4 lobe_5)
 {
-    const GpuLightBvhNode _e6 = light_bvh_node(nodes_8, i_8);
-    const float _e13 = receiver_importance(_e6.center_, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_20, n_30, r_7, lobe_7);
+    const GpuLightBvhNode _e6 = light_bvh_node(nodes_2, i_2);
+    const float _e13 = receiver_importance(_e6.center_, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_5, n_13, r_2, lobe_5);
     return _e13;
 }
 
-float bvh_first(uint nodes_9, uint i_9, float3 x_21, float3 n_31, float3 r_8, float4 lobe_8)
+float bvh_first(uint nodes_3, uint i_3, float3 x_6, float3 n_14, float3 r_3, float4 lobe_6)
 {
-    bool local_24 = (bool)0;
+    bool local_18 = (bool)0;
 
-    const GpuLightBvhNode _e6 = light_bvh_node(nodes_9, i_9);
+    const GpuLightBvhNode _e6 = light_bvh_node(nodes_3, i_3);
     uint j = _e6.second;
-    if (!((j <= (i_9 + 1u)))) {
-        const uint _e14 = light_bvh_count(nodes_9);
-        local_24 = (j >= _e14);
+    if (!((j <= (i_3 + 1u)))) {
+        const uint _e14 = light_bvh_count(nodes_3);
+        local_18 = (j >= _e14);
     } else {
-        local_24 = true;
+        local_18 = true;
     }
-    bool _e17 = local_24;
+    bool _e17 = local_18;
     if (_e17) {
         return -1.0;
     }
-    const float _e21 = bvh_importance(nodes_9, (i_9 + 1u), x_21, n_31, r_8, lobe_8);
-    const float _e22 = bvh_importance(nodes_9, j, x_21, n_31, r_8, lobe_8);
+    const float _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_6, n_14, r_3, lobe_6);
+    const float _e22 = bvh_importance(nodes_3, j, x_6, n_14, r_3, lobe_6);
     const float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -2253,39 +1085,39 @@ BvhPick bvh_pick_none()
     return bvhpick;
 }
 
-BvhPick light_bvh_sample(uint nodes_10, float3 x_22, float3 n_32, float3 r_9, float4 lobe_9, float u_in)
+BvhPick light_bvh_sample(uint nodes_4, float3 x_7, float3 n_15, float3 r_4, float4 lobe_7, float u_in)
 {
     BvhPick pick = (BvhPick)0;
-    float u_6 = (float)0;
-    uint i_10 = 0u;
+    float u_2 = (float)0;
+    uint i_4 = 0u;
     float pmf = 1.0;
-    bool local_25 = (bool)0;
+    bool local_19 = (bool)0;
 
     const BvhPick _e6 = bvh_pick_none();
     pick = _e6;
-    u_6 = u_in;
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    u_2 = u_in;
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        uint _e13 = i_10;
-        const uint _e14 = light_bvh_count(nodes_10);
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        uint _e13 = i_4;
+        const uint _e14 = light_bvh_count(nodes_4);
         if ((_e13 < _e14)) {
         } else {
             break;
         }
         {
-            uint _e16 = i_10;
-            const GpuLightBvhNode _e17 = light_bvh_node(nodes_10, _e16);
+            uint _e16 = i_4;
+            const GpuLightBvhNode _e17 = light_bvh_node(nodes_4, _e16);
             if ((_e17.second == LIGHT_BVH_LEAF)) {
-                uint _e21 = i_10;
+                uint _e21 = i_4;
                 if (!((_e21 > 0u))) {
-                    const float _e28 = bvh_importance(nodes_10, 0u, x_22, n_32, r_9, lobe_9);
-                    local_25 = (_e28 > 0.0);
+                    const float _e28 = bvh_importance(nodes_4, 0u, x_7, n_15, r_4, lobe_7);
+                    local_19 = (_e28 > 0.0);
                 } else {
-                    local_25 = true;
+                    local_19 = true;
                 }
-                bool _e32 = local_25;
+                bool _e32 = local_19;
                 if (_e32) {
                     pick.light = _e17.light;
                     float _e36 = pmf;
@@ -2295,22 +1127,22 @@ BvhPick light_bvh_sample(uint nodes_10, float3 x_22, float3 n_32, float3 r_9, fl
                 const BvhPick bvhpick_1 = _e37;
                 return bvhpick_1;
             }
-            uint _e38 = i_10;
-            const float _e39 = bvh_first(nodes_10, _e38, x_22, n_32, r_9, lobe_9);
+            uint _e38 = i_4;
+            const float _e39 = bvh_first(nodes_4, _e38, x_7, n_15, r_4, lobe_7);
             if ((_e39 < 0.0)) {
                 BvhPick _e42 = pick;
                 const BvhPick bvhpick_2 = _e42;
                 return bvhpick_2;
             }
-            float _e43 = u_6;
+            float _e43 = u_2;
             bool first_1 = (_e43 < _e39);
             float _e45 = pmf;
             pmf = (_e45 * (first_1 ? _e39 : (1.0 - _e39)));
-            float _e50 = u_6;
+            float _e50 = u_2;
             const float _e51 = bvh_remap_u(_e50, _e39, first_1);
-            u_6 = _e51;
-            uint _e53 = i_10;
-            i_10 = (first_1 ? (_e53 + 1u) : _e17.second);
+            u_2 = _e51;
+            uint _e53 = i_4;
+            i_4 = (first_1 ? (_e53 + 1u) : _e17.second);
         }
     }
     BvhPick _e57 = pick;
@@ -2318,110 +1150,110 @@ BvhPick light_bvh_sample(uint nodes_10, float3 x_22, float3 n_32, float3 r_9, fl
     return bvhpick_3;
 }
 
-float light_bvh_pmf(uint nodes_11, uint leaf, float3 x_23, float3 n_33, float3 r_10, float4 lobe_10)
+float light_bvh_pmf(uint nodes_5, uint leaf, float3 x_8, float3 n_16, float3 r_5, float4 lobe_8)
 {
-    uint i_11 = 0u;
+    uint i_5 = 0u;
     float pmf_1 = 1.0;
-    bool local_26 = (bool)0;
-    bool local_27 = (bool)0;
+    bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
 
-    const uint _e6 = light_bvh_count(nodes_11);
+    const uint _e6 = light_bvh_count(nodes_5);
     if ((leaf >= _e6)) {
         return 0.0;
     }
-    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e13 = i_11;
-        const uint _e14 = light_bvh_count(nodes_11);
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e13 = i_5;
+        const uint _e14 = light_bvh_count(nodes_5);
         if ((_e13 < _e14)) {
         } else {
             break;
         }
         {
-            uint _e16 = i_11;
-            const GpuLightBvhNode _e17 = light_bvh_node(nodes_11, _e16);
+            uint _e16 = i_5;
+            const GpuLightBvhNode _e17 = light_bvh_node(nodes_5, _e16);
             if ((_e17.second == LIGHT_BVH_LEAF)) {
-                uint _e21 = i_11;
+                uint _e21 = i_5;
                 if ((_e21 == leaf)) {
-                    uint _e25 = i_11;
+                    uint _e25 = i_5;
                     if (!((_e25 > 0u))) {
-                        const float _e32 = bvh_importance(nodes_11, 0u, x_23, n_33, r_10, lobe_10);
-                        local_27 = (_e32 > 0.0);
+                        const float _e32 = bvh_importance(nodes_5, 0u, x_8, n_16, r_5, lobe_8);
+                        local_21 = (_e32 > 0.0);
                     } else {
-                        local_27 = true;
+                        local_21 = true;
                     }
-                    bool _e36 = local_27;
-                    local_26 = _e36;
+                    bool _e36 = local_21;
+                    local_20 = _e36;
                 } else {
-                    local_26 = false;
+                    local_20 = false;
                 }
-                bool _e38 = local_26;
+                bool _e38 = local_20;
                 if (_e38) {
                     float _e39 = pmf_1;
                     return _e39;
                 }
                 return 0.0;
             }
-            uint _e41 = i_11;
-            const float _e42 = bvh_first(nodes_11, _e41, x_23, n_33, r_10, lobe_10);
+            uint _e41 = i_5;
+            const float _e42 = bvh_first(nodes_5, _e41, x_8, n_16, r_5, lobe_8);
             if ((_e42 < 0.0)) {
                 return 0.0;
             }
             bool first_2 = (leaf < _e17.second);
             float _e48 = pmf_1;
             pmf_1 = (_e48 * (first_2 ? _e42 : (1.0 - _e42)));
-            uint _e54 = i_11;
-            i_11 = (first_2 ? (_e54 + 1u) : _e17.second);
+            uint _e54 = i_5;
+            i_5 = (first_2 ? (_e54 + 1u) : _e17.second);
         }
     }
     return 0.0;
 }
 
-float select_pdf(uint li_2, float3 x_24, float3 n_34, float3 r_11, float4 lobe_11, uint nee, bool in_range_2)
+float select_pdf(uint li_1, float3 x_9, float3 n_17, float3 r_6, float4 lobe_9, uint nee, bool in_range)
 {
-    uint _e11 = asuint(light_cones.Load(40+li_2*48));
-    const float _e12 = light_bvh_pmf(BVH, _e11, x_24, n_34, r_11, lobe_11);
+    uint _e11 = asuint(light_cones.Load(40+li_1*48));
+    const float _e12 = light_bvh_pmf(BVH, _e11, x_9, n_17, r_6, lobe_9);
     return _e12;
 }
 
-float light_pdf(uint li_3, float3 x_25, float3 n_35, float3 r_12, float4 lobe_12, float3 y_3, uint nee_1, bool in_range_3)
+float light_pdf(uint li_2, float3 x_10, float3 n_18, float3 r_7, float4 lobe_10, float3 y_1, uint nee_1, bool in_range_1)
 {
-    GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
-    float3 v_21 = (x_25 - y_3);
-    float d2_16 = dot(v_21, v_21);
+    GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
+    float3 v_11 = (x_10 - y_1);
+    float d2_10 = dot(v_11, v_11);
     const float3 _e13 = light_normal(l_9);
-    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e13, (v_21 / (sqrt(d2_16)).xxx)) : 0.0);
-    const float _e22 = select_pdf(li_3, x_25, n_35, r_12, lobe_12, nee_1, in_range_3);
-    const float _e23 = range_scale(lobe_12);
-    float _e26 = asfloat(rt2_7.Load(li_3*4));
+    float cos_y_1 = ((d2_10 > 0.0) ? dot(_e13, (v_11 / (sqrt(d2_10)).xxx)) : 0.0);
+    const float _e22 = select_pdf(li_2, x_10, n_18, r_7, lobe_10, nee_1, in_range_1);
+    const float _e23 = range_scale(lobe_10);
+    float _e26 = asfloat(rt2_4.Load(li_2*4));
     const float _e28 = light_area(l_9);
-    const float _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_16, _e28, cos_y_1);
+    const float _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_10, _e28, cos_y_1);
     return _e29;
 }
 
-float3 shade_pick(uint li_4, float3 x_26, float3 n_36, float3 ng_3, GpuMaterial m, float3 wo_1, float3 r_13, float4 lobe_13, float w_11, uint nee_2, float u1_6, float u2_6)
+float3 shade_pick(uint li_3, float3 x_11, float3 n_19, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_8, float4 lobe_11, float w_4, uint nee_2, float u1_3, float u2_3)
 {
     float mis = 1.0;
 
-    const float _e12 = range_scale(lobe_13);
+    const float _e12 = range_scale(lobe_11);
     float _e15 = params.eps;
-    const Connection _e16 = connect(li_4, x_26, n_36, ng_3, _e12, w_11, u1_6, u2_6, _e15);
+    const Connection _e16 = connect(li_3, x_11, n_19, ng_2, _e12, w_4, u1_3, u2_3, _e15);
     if ((_e16.cos_x <= 0.0)) {
         return (0.0).xxx;
     }
-    float3 l_10 = normalize((_e16.y - x_26));
-    GpuLight _e29 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
+    float3 l_10 = normalize((_e16.y - x_11));
+    GpuLight _e29 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
     const float _e30 = light_area(_e29);
     if ((_e30 > 0.0)) {
-        const float _e35 = light_pdf(li_4, x_26, n_36, r_13, lobe_13, _e16.y, nee_2, true);
-        const float _e37 = specular_probability(lobe_13);
-        const float _e38 = bsdf_pdf(n_36, wo_1, l_10, m.alpha, _e37);
+        const float _e35 = light_pdf(li_3, x_11, n_19, r_8, lobe_11, _e16.y, nee_2, true);
+        const float _e37 = specular_probability(lobe_11);
+        const float _e38 = bsdf_pdf(n_19, wo_1, l_10, m.alpha, _e37);
         const float _e39 = mis_weight(_e35, _e38);
         mis = _e39;
     }
-    const float3 _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_36, wo_1, l_10);
+    const float3 _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_19, wo_1, l_10);
     float _e48 = mis;
     return ((_e45 * _e16.e) * _e48);
 }
@@ -2458,38 +1290,38 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint h = (uint)0;
     float3 sum = (0.0).xxx;
 
-    uint i_12 = gid.x;
+    uint i_6 = gid.x;
     uint _e4 = params.point_count;
-    if ((i_12 >= _e4)) {
+    if ((i_6 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_12*80+0)), asuint(vertices_.Load(i_12*80+12)), asfloat(vertices_.Load3(i_12*80+16)), asuint(vertices_.Load(i_12*80+28)), asfloat(vertices_.Load3(i_12*80+32)), asfloat(vertices_.Load(i_12*80+44)), asfloat(vertices_.Load3(i_12*80+48)), asfloat(vertices_.Load(i_12*80+60)), asfloat(vertices_.Load3(i_12*80+64)), asfloat(vertices_.Load(i_12*80+76)));
+    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_6*80+0)), asuint(vertices_.Load(i_6*80+12)), asfloat(vertices_.Load3(i_6*80+16)), asuint(vertices_.Load(i_6*80+28)), asfloat(vertices_.Load3(i_6*80+32)), asfloat(vertices_.Load(i_6*80+44)), asfloat(vertices_.Load3(i_6*80+48)), asfloat(vertices_.Load(i_6*80+60)), asfloat(vertices_.Load3(i_6*80+64)), asfloat(vertices_.Load(i_6*80+76)));
     if ((vtx.alive == 0u)) {
-        candidates.Store(i_12*4, asuint(0u));
+        candidates.Store(i_6*4, asuint(0u));
         return;
     }
-    float3 x_27 = vtx.position;
-    float3 n_40 = vtx.normal;
-    float3 ng_4 = vtx.gnormal;
-    GpuMaterial m_4 = ConstructGpuMaterial(asfloat(materials.Load3(vtx.material*48+0)), asfloat(materials.Load(vtx.material*48+12)), asfloat(materials.Load3(vtx.material*48+16)), asfloat(materials.Load(vtx.material*48+28)), asfloat(materials.Load3(vtx.material*48+32)), asfloat(materials.Load(vtx.material*48+44)));
+    float3 x_12 = vtx.position;
+    float3 n_22 = vtx.normal;
+    float3 ng_3 = vtx.gnormal;
+    GpuMaterial m_2 = ConstructGpuMaterial(asfloat(materials.Load3(vtx.material*48+0)), asfloat(materials.Load(vtx.material*48+12)), asfloat(materials.Load3(vtx.material*48+16)), asfloat(materials.Load(vtx.material*48+28)), asfloat(materials.Load3(vtx.material*48+32)), asfloat(materials.Load(vtx.material*48+44)));
     float3 wo_2 = vtx.wo;
-    const float3 _e23 = mirror_dir(n_40, wo_2);
-    const float4 _e30 = receiver_lobe(m_4.albedo, m_4.metallic, m_4.f0_, m_4.f90_, m_4.alpha, dot(n_40, wo_2));
+    const float3 _e23 = mirror_dir(n_22, wo_2);
+    const float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_22, wo_2));
     const float _e31 = range_scale(_e30);
-    float scale_3 = sqrt(_e31);
+    float scale = sqrt(_e31);
     uint _e35 = params.seed;
     uint _e38 = params.frame;
-    const uint _e39 = point_stream(_e35, i_12, _e38);
+    const uint _e39 = point_stream(_e35, i_6, _e38);
     const uint _e40 = pick_stream(_e39);
     h = _e40;
-    candidates.Store(i_12*4, asuint(0u));
+    candidates.Store(i_6*4, asuint(0u));
     uint _e48 = h;
     const uint _e49 = pcg_hash(_e48);
     h = _e49;
     uint _e50 = h;
     const float _e51 = xi_from_bits(_e50);
-    const BvhPick _e53 = light_bvh_sample(BVH, x_27, n_40, _e23, _e30, _e51);
-    uint li_5 = _e53.light;
+    const BvhPick _e53 = light_bvh_sample(BVH, x_12, n_22, _e23, _e30, _e51);
+    uint li_4 = _e53.light;
     float pmf_2 = _e53.pmf;
     uint _e56 = h;
     const uint _e57 = pcg_hash(_e56);
@@ -2502,15 +1334,15 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint _e62 = h;
     const float _e63 = xi_from_bits(_e62);
     if ((pmf_2 > 0.0)) {
-        const float3 _e69 = shade_pick(li_5, x_27, n_40, ng_4, m_4, wo_2, _e23, _e30, (1.0 / pmf_2), 0u, _e59, _e63);
+        const float3 _e69 = shade_pick(li_4, x_12, n_22, ng_3, m_2, wo_2, _e23, _e30, (1.0 / pmf_2), 0u, _e59, _e63);
         sum = _e69;
     }
     float3 _e71 = sum;
     float3 add = (vtx.weight * _e71);
     const bool _e73 = finite3_(add);
     if (_e73) {
-        float4 _e76 = asfloat(radiance.Load4(i_12*16));
-        radiance.Store4(i_12*16, asuint((_e76 + float4(add, 0.0))));
+        float4 _e76 = asfloat(radiance.Load4(i_6*16));
+        radiance.Store4(i_6*16, asuint((_e76 + float4(add, 0.0))));
         return;
     } else {
         return;

@@ -11,14 +11,10 @@ struct _mslBufferSizes {
     uint size3;
     uint size4;
     uint size5;
-    uint size6;
     uint size7;
     uint size8;
     uint size9;
-    uint size11;
-    uint size12;
-    uint size13;
-    uint size14;
+    uint size10;
 };
 
 struct GpuLight {
@@ -30,16 +26,6 @@ struct GpuLight {
     float b;
     metal::packed_float3 intensity;
     uint ies_base;
-};
-struct GpuLightCone {
-    metal::packed_float3 center;
-    float radius;
-    metal::packed_float3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint bvh_leaf;
-    uint pad;
 };
 struct GpuGeoNode {
     metal::packed_float3 bmin;
@@ -67,101 +53,6 @@ struct GpuPathVertex {
     metal::packed_float3 wo;
     float pad3_;
 };
-struct GpuPathState {
-    metal::packed_float3 origin;
-    uint alive;
-    metal::packed_float3 dir;
-    uint rng;
-    metal::packed_float3 beta;
-    float pdf_bsdf;
-    metal::packed_float3 prev;
-    uint pad;
-    metal::packed_float3 prev_normal;
-    uint pad2_;
-    metal::packed_float3 prev_r;
-    uint pad3_;
-    metal::float4 prev_lobe;
-};
-struct PtParams {
-    metal::packed_float3 cam_pos;
-    uint width;
-    metal::packed_float3 cam_right;
-    uint height;
-    metal::packed_float3 cam_up;
-    uint depth;
-    metal::packed_float3 cam_forward;
-    uint seed;
-    uint pass_index;
-    uint max_depth;
-    float eps;
-    float t_min;
-};
-struct FrameParams {
-    uint light_count;
-    uint seed;
-    uint frame;
-    uint pad;
-};
-struct RefitParams {
-    uint first;
-    uint count;
-    uint pad0_;
-    uint pad1_;
-};
-struct VplParams {
-    uint width;
-    uint height;
-    uint lights_per_subset;
-    float min_d2_;
-    float near_r2_;
-    uint near_blocks;
-    uint pad0_;
-    uint pad1_;
-};
-struct GpuNearBox {
-    metal::packed_float3 lo;
-    float pad0_;
-    metal::packed_float3 hi;
-    float pad1_;
-};
-struct GpuVplRecord {
-    metal::packed_float3 position;
-    float pad0_;
-    metal::packed_float3 normal;
-    float pad1_;
-    metal::packed_float3 flux;
-    float pad2_;
-};
-struct PackParams {
-    uint count;
-    uint size;
-    uint per_subset;
-    uint mode;
-    float exposure;
-    float error_bound;
-    float scale;
-    uint slc;
-    float fixed_r2_;
-    uint pad0_;
-    uint pad1_;
-    uint pad2_;
-};
-struct ImageParams {
-    metal::packed_float3 eye;
-    uint width;
-    uint height;
-    uint pad0_;
-    uint pad1_;
-    uint pad2_;
-};
-struct GpuVertex {
-    metal::packed_float3 position;
-    uint material;
-    metal::packed_float3 normal;
-    uint pad0_;
-    metal::packed_float3 geo_normal;
-    uint pad1_;
-};
 struct GpuMaterial {
     metal::packed_float3 albedo;
     float metallic;
@@ -170,28 +61,12 @@ struct GpuMaterial {
     metal::packed_float3 f0_;
     float f90_;
 };
-struct MapParams {
-    metal::float4 c0_;
-    metal::float4 c1_;
-    metal::float4 c2_;
-    metal::float4 c3_;
-    GpuLight light;
-    metal::packed_float3 origin;
-    uint mode;
-    metal::packed_float3 axis;
-    uint size;
-    metal::packed_float3 right;
-    float extent;
-    metal::packed_float3 up;
-    float texel;
-};
 struct ShadeParams {
     uint point_count;
     uint seed;
     uint frame;
     float eps;
 };
-typedef uint Table;
 typedef float type_4[1];
 struct BshNode {
     metal::packed_float3 center;
@@ -200,16 +75,6 @@ struct BshNode {
     uint next;
     uint light;
     float extent;
-};
-struct GpuLightBvhNode {
-    metal::packed_float3 center;
-    float radius;
-    metal::packed_float3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint second;
-    uint light;
 };
 struct GeoHit {
     float t;
@@ -236,16 +101,10 @@ struct Connection {
 };
 typedef GpuLight type_11[1];
 typedef metal::float4 type_12[1];
-typedef GpuLightCone type_13[1];
-typedef GpuLightBvhNode type_14[1];
 typedef uint BvhNodes;
-struct BvhPick {
-    uint light;
-    float pmf;
-};
-typedef GpuPathVertex type_15[1];
-typedef GpuMaterial type_16[1];
-typedef uint type_17[1];
+typedef GpuPathVertex type_13[1];
+typedef GpuMaterial type_14[1];
+typedef uint type_15[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -280,30 +139,10 @@ constant uint K = 8u;
 constant BshNodes BSH = 0u;
 constant BvhNodes BVH = 0u;
 
-float at(
-    Table tab,
-    uint i,
-    device type_4 const& slc_table,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    float _e4 = slc_table[i];
-    return _e4;
-}
-
 float to_f32_(
     uint u
 ) {
     return static_cast<float>(u);
-}
-
-uint naga_f2u32(float value) {
-    return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
-}
-
-uint to_u32_(
-    float x
-) {
-    return naga_f2u32(x);
 }
 
 uint mul_lo_u32_(
@@ -328,57 +167,22 @@ float xi_from_bits(
 }
 
 uint pcg_hash(
-    uint x_1
+    uint x
 ) {
-    uint _e2 = mul_lo_u32_(x_1, 747796405u);
+    uint _e2 = mul_lo_u32_(x, 747796405u);
     uint _e4 = add_wrap_u32_(_e2, 2891336453u);
     uint _e12 = mul_lo_u32_((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4, 277803737u);
     return (_e12 >> 22u) ^ _e12;
 }
 
-uint reverse_bits(
-    uint x_2
-) {
-    uint v = {};
-    v = ((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u);
-    uint _e11 = v;
-    uint _e16 = v;
-    v = ((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u);
-    uint _e22 = v;
-    uint _e27 = v;
-    v = ((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u);
-    uint _e33 = v;
-    uint _e38 = v;
-    v = ((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u);
-    uint _e44 = v;
-    uint _e49 = v;
-    v = ((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u);
-    uint _e55 = v;
-    return _e55;
-}
-
-float xi_for(
-    uint seed,
-    uint frame,
-    uint light
-) {
-    uint _e3 = pcg_hash(seed);
-    uint _e4 = pcg_hash(_e3);
-    uint _e6 = pcg_hash(_e4 ^ light);
-    uint _e7 = reverse_bits(frame);
-    uint _e8 = add_wrap_u32_(_e6, _e7);
-    float _e9 = xi_from_bits(_e8);
-    return _e9;
-}
-
 uint point_stream(
-    uint seed_1,
+    uint seed,
     uint point,
-    uint frame_1
+    uint frame
 ) {
-    uint _e3 = pcg_hash(frame_1);
+    uint _e3 = pcg_hash(frame);
     uint _e5 = pcg_hash(point ^ _e3);
-    uint _e7 = pcg_hash(seed_1 ^ _e5);
+    uint _e7 = pcg_hash(seed ^ _e5);
     return _e7;
 }
 
@@ -387,16 +191,6 @@ uint pick_stream(
 ) {
     uint _e3 = pcg_hash(stream ^ PICK_STREAM);
     return _e3;
-}
-
-uint path_stream(
-    uint seed_2,
-    uint pixel,
-    uint pass_index
-) {
-    uint _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
-    uint _e5 = point_stream(seed_2, pixel, _e4);
-    return _e5;
 }
 
 float rr_probability(
@@ -419,13 +213,6 @@ float slc_weight(
     return d2_1 / rt2_1;
 }
 
-float random_range2_(
-    float rt2_2,
-    float xi
-) {
-    return rt2_2 / (1.0 - xi);
-}
-
 bool slc_keep(
     float r2_,
     float d2_2
@@ -433,495 +220,98 @@ bool slc_keep(
     return d2_2 < r2_;
 }
 
-bool clamp_keep(
-    float range2_,
-    float d2_3
-) {
-    return d2_3 < range2_;
-}
-
-float threshold_range2_(
-    float intensity,
-    float exposure,
-    float error_bound
-) {
-    if (intensity <= 0.0) {
-        return 0.0;
-    }
-    return ((exposure / error_bound) * intensity) / TWO_PI;
-}
-
-float intensity_measure(
-    metal::float3 rgb,
-    uint mode
-) {
-    if (mode == 1u) {
-        return ((rgb.x + rgb.y) + rgb.z) / 3.0;
-    }
-    return metal::max(rgb.x, metal::max(rgb.y, rgb.z));
-}
-
-float cull_radius(
-    float r2_1
-) {
-    return metal::sqrt(r2_1) * CULL_RADIUS_SCALE;
-}
-
-float windowed_falloff(
-    float d2_4,
-    float range2_1
-) {
-    float q_2 = d2_4 / range2_1;
-    float w_12 = metal::saturate(1.0 - (q_2 * q_2));
-    return (w_12 * w_12) / metal::max(d2_4, 0.0001);
-}
-
 bool sphere_contains_point(
     metal::float3 c,
     float r,
-    metal::float3 x_3
+    metal::float3 x_1
 ) {
-    metal::float3 v_10 = x_3 - c;
-    return metal::dot(v_10, v_10) <= (r * r);
-}
-
-bool sphere_overlaps_sphere(
-    metal::float3 c1_,
-    float r1_,
-    metal::float3 c2_,
-    float r2_2
-) {
-    metal::float3 v_11 = c2_ - c1_;
-    float r_14 = r1_ + r2_2;
-    return metal::dot(v_11, v_11) <= (r_14 * r_14);
-}
-
-float sphere_pad(
-    float r_1,
-    metal::float3 c_1
-) {
-    return ((r_1 + metal::max(metal::abs(c_1.x), metal::max(metal::abs(c_1.y), metal::abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS;
-}
-
-metal::float4 sphere_union(
-    metal::float3 c1_1,
-    float r1_1,
-    metal::float3 c2_1,
-    float r2_3
-) {
-    bool local = {};
-    metal::float3 v_12 = c2_1 - c1_1;
-    float d_7 = metal::sqrt(metal::dot(v_12, v_12));
-    float _e8 = sphere_pad(r1_1, c1_1);
-    if (r1_1 >= ((d_7 + r2_3) + _e8)) {
-        return metal::float4(c1_1.x, c1_1.y, c1_1.z, r1_1);
-    }
-    float _e16 = sphere_pad(r2_3, c2_1);
-    if (r2_3 >= ((d_7 + r1_1) + _e16)) {
-        return metal::float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
-    }
-    if (!((d_7 >= SPHERE_HUGE))) {
-        local = (0.5 * ((d_7 + r1_1) + r2_3)) >= SPHERE_HUGE;
-    } else {
-        local = true;
-    }
-    bool _e35 = local;
-    if (_e35) {
-        return metal::float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
-    }
-    if (metal::abs(r1_1 - r2_3) >= d_7) {
-        if (r1_1 >= r2_3) {
-            float rn = metal::max(r1_1, d_7 + r2_3);
-            float _e50 = sphere_pad(rn, c1_1);
-            return metal::float4(c1_1.x, c1_1.y, c1_1.z, rn + _e50);
-        }
-        float rm = metal::max(r2_3, d_7 + r1_1);
-        float _e58 = sphere_pad(rm, c2_1);
-        return metal::float4(c2_1.x, c2_1.y, c2_1.z, rm + _e58);
-    }
-    float r0_ = 0.5 * ((d_7 + r1_1) + r2_3);
-    metal::float3 c_11 = c1_1 + (v_12 * ((r0_ - r1_1) / d_7));
-    metal::float3 e1_ = c_11 - c1_1;
-    metal::float3 e2_ = c_11 - c2_1;
-    float r_15 = metal::max(r0_, metal::max(metal::sqrt(metal::dot(e1_, e1_)) + r1_1, metal::sqrt(metal::dot(e2_, e2_)) + r2_3));
-    float _e82 = sphere_pad(r_15, c_11);
-    return metal::float4(c_11.x, c_11.y, c_11.z, r_15 + _e82);
-}
-
-bool sphere_overlaps_aabb(
-    metal::float3 c_2,
-    float r_2,
-    metal::float3 bmin,
-    metal::float3 bmax
-) {
-    metal::float3 q_3 = metal::clamp(c_2, bmin, bmax);
-    metal::float3 v_13 = q_3 - c_2;
-    return metal::dot(v_13, v_13) <= (r_2 * r_2);
-}
-
-float vpl_rt2_(
-    metal::float3 flux,
-    float exposure_1,
-    float error_bound_1,
-    uint mode_1
-) {
-    float _e6 = intensity_measure(flux * INV_PI, mode_1);
-    float _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
-    return _e7;
-}
-
-float range_radius(
-    float extent,
-    float r2_4
-) {
-    return extent + metal::sqrt(r2_4);
+    metal::float3 v_6 = x_1 - c;
+    return metal::dot(v_6, v_6) <= (r * r);
 }
 
 float inverse_square(
-    float d2_5
+    float d2_3
 ) {
-    return 1.0 / metal::max(d2_5, MIN_D2_);
+    return 1.0 / metal::max(d2_3, MIN_D2_);
 }
 
 float connection_factor(
     float cos_x,
-    float d2_6,
-    float rt2_3,
+    float d2_4,
+    float rt2_2,
     float w
 ) {
-    float _e4 = inverse_square(d2_6);
-    float _e6 = slc_weight(rt2_3, d2_6);
+    float _e4 = inverse_square(d2_4);
+    float _e6 = slc_weight(rt2_2, d2_4);
     return ((cos_x * _e4) * _e6) * w;
 }
 
 float connection_cosine(
-    metal::float3 x_4,
+    metal::float3 x_2,
     metal::float3 y,
     metal::float3 n,
     metal::float3 ng,
-    float r2_5
+    float r2_1
 ) {
+    bool local = {};
     bool local_1 = {};
-    bool local_2 = {};
-    metal::float3 v_14 = x_4 - y;
-    float d2_12 = metal::dot(v_14, v_14);
-    bool _e7 = slc_keep(r2_5, d2_12);
+    metal::float3 v_7 = x_2 - y;
+    float d2_7 = metal::dot(v_7, v_7);
+    bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_1 = !((d2_12 > 0.0));
+        local = !((d2_7 > 0.0));
     } else {
-        local_1 = true;
+        local = true;
     }
-    bool _e16 = local_1;
+    bool _e16 = local;
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_13 = v_14 / metal::float3(metal::sqrt(d2_12));
-    float cos_x_1 = -(metal::dot(n, w_13));
+    metal::float3 w_5 = v_7 / metal::float3(metal::sqrt(d2_7));
+    float cos_x_1 = -(metal::dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
-        local_2 = metal::dot(ng, w_13) >= 0.0;
+        local_1 = metal::dot(ng, w_5) >= 0.0;
     } else {
-        local_2 = true;
+        local_1 = true;
     }
-    bool _e32 = local_2;
+    bool _e32 = local_1;
     if (_e32) {
         return 0.0;
     }
     return cos_x_1;
 }
 
-float vpl_lobe(
+float triangle_lobe(
     metal::float3 n_1,
+    float area,
     metal::float3 w_1
 ) {
-    return metal::max(metal::dot(n_1, w_1), 0.0) * INV_PI;
-}
-
-float vpl_transfer(
-    metal::float3 n_l,
-    metal::float3 n_x,
-    metal::float3 v_1,
-    float min_d2_
-) {
-    float m_1 = metal::max(metal::dot(v_1, v_1), min_d2_);
-    return ((metal::max(metal::dot(n_l, v_1), 0.0) * metal::max(-(metal::dot(n_x, v_1)), 0.0)) * INV_PI) / (m_1 * m_1);
-}
-
-float spot_falloff(
-    float cos_theta,
-    float cos_outer,
-    float cos_inner
-) {
-    if (cos_inner <= cos_outer) {
-        return (cos_theta >= cos_outer) ? 1.0 : 0.0;
-    }
-    float t_2 = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
-    return (t_2 * t_2) * (3.0 - (2.0 * t_2));
-}
-
-float triangle_lobe(
-    metal::float3 n_2,
-    float area,
-    metal::float3 w_2
-) {
-    return area * metal::max(metal::dot(n_2, w_2), 0.0);
+    return area * metal::max(metal::dot(n_1, w_1), 0.0);
 }
 
 metal::float3 triangle_sample(
     metal::float3 a_2,
     metal::float3 b_2,
-    metal::float3 c_3,
+    metal::float3 c_1,
     float u1_,
     float u2_
 ) {
     float su = metal::sqrt(u1_);
     float b0_ = 1.0 - su;
     float b1_ = u2_ * su;
-    return ((a_2 * b0_) + (b_2 * b1_)) + (c_3 * ((1.0 - b0_) - b1_));
+    return ((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1.0 - b0_) - b1_));
 }
 
 float area_to_solid_angle_pdf(
     float pdf_area,
-    float d2_7,
+    float d2_5,
     float cos_light
 ) {
-    float c_12 = metal::abs(cos_light);
-    if (c_12 <= 0.0) {
+    float c_6 = metal::abs(cos_light);
+    if (c_6 <= 0.0) {
         return 0.0;
     }
-    return (pdf_area * d2_7) / c_12;
-}
-
-float atan_portable(
-    float x_5
-) {
-    float base = 0.0;
-    float t = {};
-    float a_10 = metal::abs(x_5);
-    t = a_10;
-    if (a_10 > 2.4142137) {
-        base = 1.5707964;
-        t = -1.0 / a_10;
-    } else {
-        if (a_10 > 0.41421357) {
-            base = 0.7853982;
-            t = (a_10 - 1.0) / (a_10 + 1.0);
-        }
-    }
-    float _e18 = t;
-    float _e19 = t;
-    float z_3 = _e18 * _e19;
-    float _e21 = base;
-    float _e33 = t;
-    float _e35 = t;
-    float r_16 = _e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35);
-    return (x_5 < 0.0) ? -(r_16) : r_16;
-}
-
-float atan2_portable(
-    float y_1,
-    float x_6
-) {
-    if (x_6 == 0.0) {
-        if (y_1 > 0.0) {
-            return 1.5707964;
-        }
-        if (y_1 < 0.0) {
-            return -1.5707964;
-        }
-        return 0.0;
-    }
-    float _e12 = atan_portable(y_1 / x_6);
-    if (x_6 > 0.0) {
-        return _e12;
-    }
-    if (y_1 >= 0.0) {
-        return _e12 + 3.1415927;
-    }
-    return _e12 - 3.1415927;
-}
-
-float ies_fold_c(
-    float c_4,
-    float h_first,
-    float h_last
-) {
-    float a_3 = {};
-    a_3 = c_4 - (360.0 * metal::floor(c_4 / 360.0));
-    if (h_last <= 0.0) {
-        return 0.0;
-    }
-    if (h_last <= 90.0) {
-        float _e15 = a_3;
-        if (_e15 > 180.0) {
-            float _e18 = a_3;
-            a_3 = 360.0 - _e18;
-        }
-        float _e21 = a_3;
-        if (_e21 > 90.0) {
-            float _e24 = a_3;
-            a_3 = 180.0 - _e24;
-        }
-        float _e27 = a_3;
-        return _e27;
-    }
-    if (h_first >= 90.0) {
-        float _e30 = a_3;
-        if (_e30 < 90.0) {
-            float _e33 = a_3;
-            a_3 = 180.0 - _e33;
-        } else {
-            float _e36 = a_3;
-            if (_e36 > 270.0) {
-                float _e39 = a_3;
-                a_3 = 540.0 - _e39;
-            }
-        }
-        float _e42 = a_3;
-        return _e42;
-    }
-    if (h_last <= 180.0) {
-        float _e45 = a_3;
-        if (_e45 > 180.0) {
-            float _e48 = a_3;
-            a_3 = 360.0 - _e48;
-        }
-        float _e51 = a_3;
-        return _e51;
-    }
-    float _e52 = a_3;
-    return _e52;
-}
-
-uint ies_segment(
-    Table tab_1,
-    uint start,
-    uint n_3,
-    float x_7,
-    device type_4 const& slc_table,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint lo = 0u;
-    uint hi = {};
-    if (n_3 < 2u) {
-        return 0u;
-    }
-    hi = n_3 - 1u;
-    uint2 loop_bound = uint2(4294967295u);
-    while(true) {
-        if (metal::all(loop_bound == uint2(0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e12 = hi;
-        uint _e13 = lo;
-        if ((_e12 - _e13) > 1u) {
-        } else {
-            break;
-        }
-        {
-            uint _e17 = lo;
-            uint _e18 = hi;
-            uint mid = (_e17 + _e18) >> 1u;
-            float _e23 = at(tab_1, start + mid, slc_table, _buffer_sizes);
-            if (_e23 <= x_7) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-    }
-    uint _e25 = lo;
-    return _e25;
-}
-
-float ies_lerp_t(
-    float a0_,
-    float a1_,
-    float x_8
-) {
-    if (a1_ <= a0_) {
-        return 0.0;
-    }
-    return metal::saturate((x_8 - a0_) / (a1_ - a0_));
-}
-
-float ies_candela(
-    Table tab_2,
-    uint base_1,
-    float gamma,
-    float c_5,
-    device type_4 const& slc_table,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    bool local_3 = {};
-    float _e4 = at(tab_2, base_1, slc_table, _buffer_sizes);
-    uint _e5 = to_u32_(_e4);
-    float _e8 = at(tab_2, base_1 + 1u, slc_table, _buffer_sizes);
-    uint _e9 = to_u32_(_e8);
-    uint v0_ = base_1 + 2u;
-    uint h0_ = v0_ + _e5;
-    uint c0_1 = h0_ + _e9;
-    float _e14 = at(tab_2, v0_, slc_table, _buffer_sizes);
-    if (!((gamma < _e14))) {
-        float _e22 = at(tab_2, (v0_ + _e5) - 1u, slc_table, _buffer_sizes);
-        local_3 = gamma > _e22;
-    } else {
-        local_3 = true;
-    }
-    bool _e25 = local_3;
-    if (_e25) {
-        return 0.0;
-    }
-    float _e27 = at(tab_2, h0_, slc_table, _buffer_sizes);
-    float _e31 = at(tab_2, (h0_ + _e9) - 1u, slc_table, _buffer_sizes);
-    float _e32 = ies_fold_c(c_5, _e27, _e31);
-    uint _e33 = ies_segment(tab_2, v0_, _e5, gamma, slc_table, _buffer_sizes);
-    uint _e34 = ies_segment(tab_2, h0_, _e9, _e32, slc_table, _buffer_sizes);
-    uint iv1_ = metal::min(_e33 + 1u, _e5 - 1u);
-    uint ih1_ = metal::min(_e34 + 1u, _e9 - 1u);
-    float _e46 = at(tab_2, v0_ + _e33, slc_table, _buffer_sizes);
-    float _e48 = at(tab_2, v0_ + iv1_, slc_table, _buffer_sizes);
-    float _e49 = ies_lerp_t(_e46, _e48, gamma);
-    float _e51 = at(tab_2, h0_ + _e34, slc_table, _buffer_sizes);
-    float _e53 = at(tab_2, h0_ + ih1_, slc_table, _buffer_sizes);
-    float _e54 = ies_lerp_t(_e51, _e53, _e32);
-    float _e58 = at(tab_2, (c0_1 + (_e34 * _e5)) + _e33, slc_table, _buffer_sizes);
-    float _e65 = at(tab_2, (c0_1 + (_e34 * _e5)) + iv1_, slc_table, _buffer_sizes);
-    float a_11 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
-    float _e71 = at(tab_2, (c0_1 + (ih1_ * _e5)) + _e33, slc_table, _buffer_sizes);
-    float _e78 = at(tab_2, (c0_1 + (ih1_ * _e5)) + iv1_, slc_table, _buffer_sizes);
-    float b_8 = (_e71 * (1.0 - _e49)) + (_e78 * _e49);
-    return (a_11 * (1.0 - _e54)) + (b_8 * _e54);
-}
-
-float ies_candela_dir(
-    Table tab_3,
-    uint base_2,
-    float wn,
-    float wr,
-    float ws,
-    device type_4 const& slc_table,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    float _e9 = atan2_portable(metal::sqrt((wr * wr) + (ws * ws)), wn);
-    float gamma_1 = ((_e9) * 57.295779513082322865);
-    bool on_axis = (metal::abs(wr) + metal::abs(ws)) <= 0.0;
-    float _e16 = atan2_portable(ws, wr);
-    float c_13 = on_axis ? 0.0 : ((_e16) * 57.295779513082322865);
-    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_13, slc_table, _buffer_sizes);
-    return _e20;
-}
-
-float ies_light_candela(
-    Table tab_4,
-    uint base_3,
-    metal::float3 nadir,
-    metal::float3 reference,
-    metal::float3 w_3,
-    device type_4 const& slc_table,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    metal::float3 side = metal::cross(reference, nadir);
-    float _e9 = ies_candela_dir(tab_4, base_3, metal::dot(w_3, nadir), metal::dot(w_3, reference), metal::dot(w_3, side), slc_table, _buffer_sizes);
-    return _e9;
+    return (pdf_area * d2_5) / c_6;
 }
 
 float bsh_scaled_radius(
@@ -938,29 +328,29 @@ float bsh_scaled_radius(
 }
 
 uint mul_hi_u32_(
-    uint a_4,
+    uint a_3,
     uint b_3
 ) {
-    uint a_lo = a_4 & 65535u;
-    uint a_hi = a_4 >> 16u;
+    uint a_lo = a_3 & 65535u;
+    uint a_hi = a_3 >> 16u;
     uint b_lo = b_3 & 65535u;
     uint b_hi = b_3 >> 16u;
     uint ll = a_lo * b_lo;
     uint lh = a_lo * b_hi;
     uint hl = a_hi * b_lo;
     uint hh = a_hi * b_hi;
-    uint mid_1 = ((ll >> 16u) + (lh & 65535u)) + (hl & 65535u);
-    return ((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u);
+    uint mid = ((ll >> 16u) + (lh & 65535u)) + (hl & 65535u);
+    return ((hh + (lh >> 16u)) + (hl >> 16u)) + (mid >> 16u);
 }
 
 uint uniform_index(
-    uint n_4,
-    uint hi_1,
-    uint lo_1
+    uint n_2,
+    uint hi,
+    uint lo
 ) {
-    uint _e3 = mul_lo_u32_(hi_1, n_4);
-    uint _e4 = mul_hi_u32_(hi_1, n_4);
-    uint _e5 = mul_hi_u32_(lo_1, n_4);
+    uint _e3 = mul_lo_u32_(hi, n_2);
+    uint _e4 = mul_hi_u32_(hi, n_2);
+    uint _e5 = mul_hi_u32_(lo, n_2);
     if (_e3 > (4294967295u - _e5)) {
         return _e4 + 1u;
     }
@@ -968,15 +358,15 @@ uint uniform_index(
 }
 
 uint reservoir_slot(
-    uint n_5,
+    uint n_3,
     uint k,
-    uint hi_2,
-    uint lo_2
+    uint hi_1,
+    uint lo_1
 ) {
-    if (n_5 <= k) {
-        return n_5 - 1u;
+    if (n_3 <= k) {
+        return n_3 - 1u;
     }
-    uint _e7 = uniform_index(n_5, hi_2, lo_2);
+    uint _e7 = uniform_index(n_3, hi_1, lo_1);
     if (_e7 < k) {
         return _e7;
     }
@@ -984,190 +374,112 @@ uint reservoir_slot(
 }
 
 bool reservoir_takes(
-    uint n_6
+    uint n_4
 ) {
-    return n_6 < RESERVOIR_FULL;
+    return n_4 < RESERVOIR_FULL;
 }
 
 float reservoir_weight(
-    uint n_7,
+    uint n_5,
     uint k_1
 ) {
-    float _e2 = to_f32_(n_7);
+    float _e2 = to_f32_(n_5);
     float _e3 = to_f32_(k_1);
     return metal::max(_e2 / _e3, 1.0);
-}
-
-bool weighted_replace(
-    float w_4,
-    float w_sum,
-    float u_1
-) {
-    return (u_1 * w_sum) < w_4;
-}
-
-float weighted_pick_weight(
-    float w_sum_1,
-    float w_5,
-    uint k_2
-) {
-    float _e3 = to_f32_(k_2);
-    return w_sum_1 / (_e3 * w_5);
 }
 
 float reservoir_select_pdf(
     uint seen,
     bool in_range,
-    uint k_3
+    uint k_2
 ) {
     uint others = {};
-    bool local_4 = {};
+    bool local_2 = {};
     others = seen;
     if (in_range) {
-        local_4 = seen > 0u;
+        local_2 = seen > 0u;
     } else {
-        local_4 = false;
+        local_2 = false;
     }
-    bool _e9 = local_4;
+    bool _e9 = local_2;
     if (_e9) {
         others = seen - 1u;
     }
     uint _e12 = others;
-    float _e15 = reservoir_weight(_e12 + 1u, k_3);
+    float _e15 = reservoir_weight(_e12 + 1u, k_2);
     return 1.0 / _e15;
 }
 
-uint alias_choice(
-    uint column,
-    uint other,
-    float keep,
-    float u_2
-) {
-    return (u_2 < keep) ? column : other;
-}
-
-uint uniform_light(
-    float u_3,
-    uint n_8
-) {
-    float _e2 = to_f32_(n_8);
-    uint _e4 = to_u32_(u_3 * _e2);
-    return metal::min(_e4, n_8 - 1u);
-}
-
-float mis_balance(
+float mis_power(
     float pdf_a,
     float pdf_b
 ) {
-    float s_2 = pdf_a + pdf_b;
+    float a2_ = pdf_a * pdf_a;
+    float s_2 = a2_ + (pdf_b * pdf_b);
     if (s_2 <= 0.0) {
         return 0.0;
     }
-    return pdf_a / s_2;
-}
-
-float mis_power(
-    float pdf_a_1,
-    float pdf_b_1
-) {
-    float a2_ = pdf_a_1 * pdf_a_1;
-    float s_3 = a2_ + (pdf_b_1 * pdf_b_1);
-    if (s_3 <= 0.0) {
-        return 0.0;
-    }
-    return a2_ / s_3;
+    return a2_ / s_2;
 }
 
 float light_strategy_pdf(
     float select,
-    float rt2_4,
-    float d2_8,
+    float rt2_3,
+    float d2_6,
     float area_1,
     float cos_y
 ) {
-    bool local_5 = {};
-    bool local_6 = {};
-    if (!((d2_8 <= 0.0))) {
-        local_5 = area_1 <= 0.0;
+    bool local_3 = {};
+    bool local_4 = {};
+    if (!((d2_6 <= 0.0))) {
+        local_3 = area_1 <= 0.0;
     } else {
-        local_5 = true;
+        local_3 = true;
     }
-    bool _e13 = local_5;
+    bool _e13 = local_3;
     if (!(_e13)) {
-        local_6 = cos_y <= 0.0;
+        local_4 = cos_y <= 0.0;
     } else {
-        local_6 = true;
+        local_4 = true;
     }
-    bool _e20 = local_6;
+    bool _e20 = local_4;
     if (_e20) {
         return 0.0;
     }
-    float _e22 = rr_probability(rt2_4, d2_8);
-    float _e26 = area_to_solid_angle_pdf(1.0 / area_1, d2_8, cos_y);
+    float _e22 = rr_probability(rt2_3, d2_6);
+    float _e26 = area_to_solid_angle_pdf(1.0 / area_1, d2_6, cos_y);
     return (select * _e22) * _e26;
 }
 
-metal::float3 lambert_brdf(
-    metal::float3 rho
-) {
-    return rho * INV_PI;
-}
-
 float cosine_pdf(
-    float cos_theta_1
+    float cos_theta
 ) {
-    return metal::max(cos_theta_1, 0.0) * INV_PI;
+    return metal::max(cos_theta, 0.0) * INV_PI;
 }
 
 metal::float3 onb_tangent(
-    metal::float3 n_9
+    metal::float3 n_6
 ) {
-    float s_4 = (n_9.z >= 0.0) ? 1.0 : -1.0;
-    float a_12 = -1.0 / (s_4 + n_9.z);
-    return metal::float3(1.0 + (((s_4 * n_9.x) * n_9.x) * a_12), ((s_4 * n_9.x) * n_9.y) * a_12, -(s_4) * n_9.x);
+    float s_3 = (n_6.z >= 0.0) ? 1.0 : -1.0;
+    float a_7 = -1.0 / (s_3 + n_6.z);
+    return metal::float3(1.0 + (((s_3 * n_6.x) * n_6.x) * a_7), ((s_3 * n_6.x) * n_6.y) * a_7, -(s_3) * n_6.x);
 }
 
 metal::float3 onb_bitangent(
-    metal::float3 n_10
+    metal::float3 n_7
 ) {
-    float s_5 = (n_10.z >= 0.0) ? 1.0 : -1.0;
-    float a_13 = -1.0 / (s_5 + n_10.z);
-    return metal::float3((n_10.x * n_10.y) * a_13, s_5 + ((n_10.y * n_10.y) * a_13), -(n_10.y));
-}
-
-metal::float3 onb_to_world(
-    metal::float3 n_11,
-    metal::float3 d
-) {
-    metal::float3 _e2 = onb_tangent(n_11);
-    metal::float3 _e5 = onb_bitangent(n_11);
-    return ((_e2 * d.x) + (_e5 * d.y)) + (n_11 * d.z);
+    float s_4 = (n_7.z >= 0.0) ? 1.0 : -1.0;
+    float a_8 = -1.0 / (s_4 + n_7.z);
+    return metal::float3((n_7.x * n_7.y) * a_8, s_4 + ((n_7.y * n_7.y) * a_8), -(n_7.y));
 }
 
 metal::float3 onb_to_local(
-    metal::float3 n_12,
-    metal::float3 w_6
+    metal::float3 n_8,
+    metal::float3 w_2
 ) {
-    metal::float3 _e2 = onb_tangent(n_12);
-    metal::float3 _e4 = onb_bitangent(n_12);
-    return metal::float3(metal::dot(w_6, _e2), metal::dot(w_6, _e4), metal::dot(w_6, n_12));
-}
-
-metal::float3 cosine_direction(
-    metal::float3 n_13,
-    float u1_1,
-    float u2_1
-) {
-    float r_17 = metal::sqrt(u1_1);
-    float phi_5 = 6.2831855 * u2_1;
-    metal::float3 _e16 = onb_to_world(n_13, metal::float3(r_17 * metal::cos(phi_5), r_17 * metal::sin(phi_5), metal::sqrt(metal::max(1.0 - u1_1, 0.0))));
-    return metal::normalize(_e16);
-}
-
-float ggx_alpha(
-    float roughness
-) {
-    return metal::max(roughness * roughness, GGX_ALPHA_MIN);
+    metal::float3 _e2 = onb_tangent(n_8);
+    metal::float3 _e4 = onb_bitangent(n_8);
+    return metal::float3(metal::dot(w_2, _e2), metal::dot(w_2, _e4), metal::dot(w_2, n_8));
 }
 
 float ggx_d(
@@ -1179,8 +491,8 @@ float ggx_d(
         return 0.0;
     }
     float a2_1 = alpha * alpha;
-    float t_3 = ((cos_h * cos_h) * a2_1) + sin2_h;
-    return (a2_1 * INV_PI) / (t_3 * t_3);
+    float t = ((cos_h * cos_h) * a2_1) + sin2_h;
+    return (a2_1 * INV_PI) / (t * t);
 }
 
 float smith_root(
@@ -1192,23 +504,23 @@ float smith_root(
 }
 
 float smith_visibility(
-    float n_l_1,
+    float n_l,
     float n_v,
     float alpha_2
 ) {
-    bool local_7 = {};
-    if (!((n_l_1 <= 0.0))) {
-        local_7 = n_v <= 0.0;
+    bool local_5 = {};
+    if (!((n_l <= 0.0))) {
+        local_5 = n_v <= 0.0;
     } else {
-        local_7 = true;
+        local_5 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_5;
     if (_e11) {
         return 0.0;
     }
     float _e13 = smith_root(n_v, alpha_2);
-    float _e15 = smith_root(n_l_1, alpha_2);
-    return 0.5 / ((n_l_1 * _e13) + (n_v * _e15));
+    float _e15 = smith_root(n_l, alpha_2);
+    return 0.5 / ((n_l * _e13) + (n_v * _e15));
 }
 
 metal::float3 fresnel_schlick(
@@ -1216,94 +528,94 @@ metal::float3 fresnel_schlick(
     float f90_,
     float v_h
 ) {
-    float c_14 = metal::saturate(1.0 - v_h);
-    float c2_2 = c_14 * c_14;
-    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_2 * c2_2) * c_14));
+    float c_7 = metal::saturate(1.0 - v_h);
+    float c2_ = c_7 * c_7;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_7));
 }
 
 metal::float3 specular_fresnel(
-    metal::float3 base_4,
+    metal::float3 base,
     float metallic,
     metal::float3 f0_d,
     float f90_d,
     float v_h_1
 ) {
     metal::float3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
-    metal::float3 _e10 = fresnel_schlick(base_4, 1.0, v_h_1);
+    metal::float3 _e10 = fresnel_schlick(base, 1.0, v_h_1);
     return (_e5 * (1.0 - metallic)) + (_e10 * metallic);
 }
 
 metal::float3 diffuse_brdf(
-    metal::float3 base_5,
+    metal::float3 base_1,
     float metallic_1,
     metal::float3 f0_d_1,
     float f90_d_1,
     float v_h_2
 ) {
     metal::float3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
-    return (((metal::float3(1.0, 1.0, 1.0) - _e9) * base_5) * (1.0 - metallic_1)) * INV_PI;
+    return (((metal::float3(1.0, 1.0, 1.0) - _e9) * base_1) * (1.0 - metallic_1)) * INV_PI;
 }
 
 float half_cosine(
-    metal::float3 v_2,
+    metal::float3 v,
     metal::float3 l
 ) {
-    metal::float3 h_3 = v_2 + l;
-    float len2_ = metal::dot(h_3, h_3);
+    metal::float3 h_2 = v + l;
+    float len2_ = metal::dot(h_2, h_2);
     if (len2_ <= 0.0) {
         return 0.0;
     }
-    return metal::saturate(metal::dot(v_2, h_3) / metal::sqrt(len2_));
+    return metal::saturate(metal::dot(v, h_2) / metal::sqrt(len2_));
 }
 
 metal::float3 specular_brdf(
-    metal::float3 base_6,
+    metal::float3 base_2,
     float metallic_2,
     metal::float3 f0_d_2,
     float f90_d_2,
     float alpha_3,
-    metal::float3 n_14,
-    metal::float3 v_3,
+    metal::float3 n_9,
+    metal::float3 v_1,
     metal::float3 l_1
 ) {
-    bool local_8 = {};
-    float n_l_2 = metal::dot(n_14, l_1);
-    float n_v_2 = metal::dot(n_14, v_3);
-    if (!((n_l_2 <= 0.0))) {
-        local_8 = n_v_2 <= 0.0;
+    bool local_6 = {};
+    float n_l_1 = metal::dot(n_9, l_1);
+    float n_v_2 = metal::dot(n_9, v_1);
+    if (!((n_l_1 <= 0.0))) {
+        local_6 = n_v_2 <= 0.0;
     } else {
-        local_8 = true;
+        local_6 = true;
     }
-    bool _e18 = local_8;
+    bool _e18 = local_6;
     if (_e18) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    metal::float3 hs = v_3 + l_1;
+    metal::float3 hs = v_1 + l_1;
     float inv = 1.0 / metal::sqrt(metal::dot(hs, hs));
-    metal::float3 h_4 = hs * inv;
-    metal::float3 c_15 = metal::cross(n_14, h_4);
-    float _e32 = ggx_d(metal::dot(n_14, h_4), metal::dot(c_15, c_15), alpha_3);
-    metal::float3 _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, metal::dot(v_3, h_4));
-    float _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
+    metal::float3 h_3 = hs * inv;
+    metal::float3 c_8 = metal::cross(n_9, h_3);
+    float _e32 = ggx_d(metal::dot(n_9, h_3), metal::dot(c_8, c_8), alpha_3);
+    metal::float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, metal::dot(v_1, h_3));
+    float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
     return _e34 * (_e32 * _e35);
 }
 
 metal::float3 brdf_eval(
-    metal::float3 base_7,
+    metal::float3 base_3,
     float metallic_3,
     metal::float3 f0_d_3,
     float f90_d_3,
     float alpha_4,
-    metal::float3 n_15,
-    metal::float3 v_4,
+    metal::float3 n_10,
+    metal::float3 v_2,
     metal::float3 l_2
 ) {
-    if (metal::dot(n_15, l_2) <= 0.0) {
+    if (metal::dot(n_10, l_2) <= 0.0) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    float _e15 = half_cosine(v_4, l_2);
-    metal::float3 _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
-    metal::float3 _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_15, v_4, l_2);
+    float _e15 = half_cosine(v_2, l_2);
+    metal::float3 _e16 = diffuse_brdf(base_3, metallic_3, f0_d_3, f90_d_3, _e15);
+    metal::float3 _e17 = specular_brdf(base_3, metallic_3, f0_d_3, f90_d_3, alpha_4, n_10, v_2, l_2);
     return _e16 + _e17;
 }
 
@@ -1312,51 +624,51 @@ bool has_specular(
     metal::float3 f0_d_4,
     float f90_d_4
 ) {
-    bool local_9 = {};
-    bool local_10 = {};
+    bool local_7 = {};
+    bool local_8 = {};
     if (!((metallic_4 > 0.0))) {
-        local_9 = f90_d_4 > 0.0;
+        local_7 = f90_d_4 > 0.0;
     } else {
-        local_9 = true;
+        local_7 = true;
     }
-    bool _e11 = local_9;
+    bool _e11 = local_7;
     if (!(_e11)) {
-        local_10 = metal::max(metal::max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0;
+        local_8 = metal::max(metal::max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0;
     } else {
-        local_10 = true;
+        local_8 = true;
     }
-    bool _e23 = local_10;
+    bool _e23 = local_8;
     return _e23;
 }
 
 float channel_mean(
-    metal::float3 c_6
+    metal::float3 c_2
 ) {
-    return ((c_6.x + c_6.y) + c_6.z) * 0.33333334;
+    return ((c_2.x + c_2.y) + c_2.z) * 0.33333334;
 }
 
 metal::float4 receiver_lobe(
-    metal::float3 base_8,
+    metal::float3 base_4,
     float metallic_5,
     metal::float3 f0_d_5,
     float f90_d_5,
     float alpha_5,
     float n_v_1
 ) {
-    bool local_11 = {};
+    bool local_9 = {};
     metal::float3 _e10 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
-    float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_8) * (1.0 - metallic_5));
+    float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_4) * (1.0 - metallic_5));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_5, f0_d_5, f90_d_5);
-        local_11 = !(_e22);
+        local_9 = !(_e22);
     } else {
-        local_11 = true;
+        local_9 = true;
     }
-    bool _e25 = local_11;
+    bool _e25 = local_9;
     if (_e25) {
         return metal::float4(_e16, 0.0, alpha_5, n_v_1);
     }
-    metal::float3 _e28 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    metal::float3 _e28 = specular_fresnel(base_4, metallic_5, f0_d_5, f90_d_5, n_v_1);
     float _e29 = channel_mean(_e28);
     return metal::float4(_e16, _e29, alpha_5, n_v_1);
 }
@@ -1391,337 +703,61 @@ float range_scale(
 }
 
 metal::float3 mirror_dir(
-    metal::float3 n_16,
-    metal::float3 v_5
+    metal::float3 n_11,
+    metal::float3 v_3
 ) {
-    return (n_16 * (2.0 * metal::dot(n_16, v_5))) - v_5;
+    return (n_11 * (2.0 * metal::dot(n_11, v_3))) - v_3;
 }
 
 float bounded_vndf_k(
     metal::float3 wi,
     float alpha_6
 ) {
-    float a_14 = metal::saturate(alpha_6);
-    float s_6 = 1.0 + metal::sqrt((wi.x * wi.x) + (wi.y * wi.y));
-    float a2_3 = a_14 * a_14;
-    float s2_ = s_6 * s_6;
+    float a_9 = metal::saturate(alpha_6);
+    float s_5 = 1.0 + metal::sqrt((wi.x * wi.x) + (wi.y * wi.y));
+    float a2_3 = a_9 * a_9;
+    float s2_ = s_5 * s_5;
     return ((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z));
 }
 
-metal::float3 ggx_vndf_sample(
-    metal::float3 wi_1,
-    float alpha_7,
-    float u1_2,
-    float u2_2
-) {
-    metal::float3 wi_std = metal::normalize(metal::float3(wi_1.x * alpha_7, wi_1.y * alpha_7, wi_1.z));
-    float _e12 = bounded_vndf_k(wi_1, alpha_7);
-    float b_9 = (wi_1.z > 0.0) ? (_e12 * wi_std.z) : wi_std.z;
-    float phi_6 = 6.2831855 * u1_2;
-    float z_4 = ((1.0 - u2_2) * (1.0 + b_9)) - b_9;
-    float sin_t = metal::sqrt(metal::saturate(1.0 - (z_4 * z_4)));
-    metal::float3 m_std = wi_std + metal::float3(sin_t * metal::cos(phi_6), sin_t * metal::sin(phi_6), z_4);
-    metal::float3 m_2 = metal::normalize(metal::float3(m_std.x * alpha_7, m_std.y * alpha_7, m_std.z));
-    return (m_2 * (2.0 * metal::dot(wi_1, m_2))) - wi_1;
-}
-
 float ggx_vndf_pdf(
-    metal::float3 wi_2,
+    metal::float3 wi_1,
     metal::float3 wo,
-    float alpha_8
+    float alpha_7
 ) {
-    bool local_12 = {};
-    if (!((wi_2.z <= 0.0))) {
-        local_12 = wo.z <= 0.0;
+    bool local_10 = {};
+    if (!((wi_1.z <= 0.0))) {
+        local_10 = wo.z <= 0.0;
     } else {
-        local_12 = true;
+        local_10 = true;
     }
-    bool _e13 = local_12;
+    bool _e13 = local_10;
     if (_e13) {
         return 0.0;
     }
-    metal::float3 hs_1 = wi_2 + wo;
-    metal::float3 m_3 = hs_1 / metal::float3(metal::sqrt(metal::dot(hs_1, hs_1)));
-    float _e28 = ggx_d(m_3.z, (m_3.x * m_3.x) + (m_3.y * m_3.y), alpha_8);
-    float t_4 = metal::sqrt(((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z));
-    float _e43 = bounded_vndf_k(wi_2, alpha_8);
-    return _e28 / (2.0 * ((_e43 * wi_2.z) + t_4));
-}
-
-metal::float3 bsdf_sample(
-    metal::float3 n_17,
-    metal::float3 v_6,
-    float alpha_9,
-    float p_spec,
-    float u1_3,
-    float u2_3
-) {
-    if (u1_3 < p_spec) {
-        if (metal::dot(n_17, v_6) <= 0.0) {
-            return -(n_17);
-        }
-        metal::float3 _e11 = onb_to_local(n_17, v_6);
-        metal::float3 _e13 = ggx_vndf_sample(_e11, alpha_9, u1_3 / p_spec, u2_3);
-        metal::float3 _e14 = onb_to_world(n_17, _e13);
-        return metal::normalize(_e14);
-    }
-    metal::float3 _e20 = cosine_direction(n_17, (u1_3 - p_spec) / (1.0 - p_spec), u2_3);
-    return _e20;
+    metal::float3 hs_1 = wi_1 + wo;
+    metal::float3 m_1 = hs_1 / metal::float3(metal::sqrt(metal::dot(hs_1, hs_1)));
+    float _e28 = ggx_d(m_1.z, (m_1.x * m_1.x) + (m_1.y * m_1.y), alpha_7);
+    float t_1 = metal::sqrt(((alpha_7 * alpha_7) * ((wi_1.x * wi_1.x) + (wi_1.y * wi_1.y))) + (wi_1.z * wi_1.z));
+    float _e43 = bounded_vndf_k(wi_1, alpha_7);
+    return _e28 / (2.0 * ((_e43 * wi_1.z) + t_1));
 }
 
 float bsdf_pdf(
-    metal::float3 n_18,
-    metal::float3 v_7,
+    metal::float3 n_12,
+    metal::float3 v_4,
     metal::float3 l_3,
-    float alpha_10,
-    float p_spec_1
+    float alpha_8,
+    float p_spec
 ) {
-    float _e6 = cosine_pdf(metal::dot(n_18, l_3));
-    if (p_spec_1 <= 0.0) {
+    float _e6 = cosine_pdf(metal::dot(n_12, l_3));
+    if (p_spec <= 0.0) {
         return _e6;
     }
-    metal::float3 _e9 = onb_to_local(n_18, v_7);
-    metal::float3 _e10 = onb_to_local(n_18, l_3);
-    float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_10);
-    return (p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6);
-}
-
-float cos_sub_clamped(
-    float sin_a,
-    float cos_a,
-    float sin_b,
-    float cos_b
-) {
-    if (cos_a > cos_b) {
-        return 1.0;
-    }
-    return (cos_a * cos_b) + (sin_a * sin_b);
-}
-
-float sin_sub_clamped(
-    float sin_a_1,
-    float cos_a_1,
-    float sin_b_1,
-    float cos_b_1
-) {
-    if (cos_a_1 > cos_b_1) {
-        return 0.0;
-    }
-    return (sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1);
-}
-
-float safe_sqrt(
-    float x_9
-) {
-    return metal::sqrt(metal::max(x_9, 0.0));
-}
-
-float subtended_cos(
-    float dist2_,
-    float r2_6
-) {
-    float _e5 = safe_sqrt(1.0 - (r2_6 / dist2_));
-    return (dist2_ <= r2_6) ? -1.0 : _e5;
-}
-
-float emitter_importance(
-    metal::float3 center,
-    float radius,
-    float phi,
-    metal::float3 axis,
-    float cos_o,
-    float cos_e,
-    metal::float3 p
-) {
-    metal::float3 v_15 = p - center;
-    float dist2_1 = metal::dot(v_15, v_15);
-    float r2_8 = radius * radius;
-    float d2_13 = metal::max(metal::max(dist2_1, r2_8), MIN_D2_);
-    metal::float3 wi_3 = (dist2_1 > 0.0) ? (v_15 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
-    float cos_w = metal::dot(axis, wi_3);
-    float _e27 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e28 = subtended_cos(dist2_1, r2_8);
-    float _e32 = safe_sqrt(1.0 - (_e28 * _e28));
-    float _e36 = safe_sqrt(1.0 - (cos_o * cos_o));
-    float _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
-    float _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
-    float _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
-    if (_e39 <= cos_e) {
-        return 0.0;
-    }
-    return (phi * _e39) / d2_13;
-}
-
-float cone_cos_toward(
-    metal::float3 center_1,
-    float radius_1,
-    metal::float3 p_1,
-    metal::float3 d_1
-) {
-    metal::float3 v_16 = center_1 - p_1;
-    float dist2_2 = metal::dot(v_16, v_16);
-    metal::float3 w_14 = (dist2_2 > 0.0) ? (v_16 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0);
-    float _e17 = subtended_cos(dist2_2, radius_1 * radius_1);
-    float cos_i = metal::dot(w_14, d_1);
-    float _e22 = safe_sqrt(1.0 - (cos_i * cos_i));
-    float _e26 = safe_sqrt(1.0 - (_e17 * _e17));
-    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
-}
-
-float light_importance(
-    metal::float3 center_2,
-    float radius_2,
-    float phi_1,
-    metal::float3 axis_1,
-    float cos_o_1,
-    float cos_e_1,
-    metal::float3 p_2,
-    metal::float3 n_19
-) {
-    float imp = {};
-    float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if (metal::dot(n_19, n_19) > 0.0) {
-        float _e13 = imp;
-        float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_19);
-        imp = _e13 * metal::max(_e14, 0.0);
-    }
-    float _e18 = imp;
-    return metal::max(_e18, 0.0);
-}
-
-float glossy_importance(
-    metal::float3 center_3,
-    float radius_3,
-    float phi_2,
-    metal::float3 axis_2,
-    float cos_o_2,
-    float cos_e_2,
-    metal::float3 p_3,
-    metal::float3 n_20,
-    metal::float3 r_3,
-    metal::float4 lobe_3
-) {
-    bool local_13 = {};
-    float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
-    float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_20);
-    if (!((_e10 <= 0.0))) {
-        local_13 = _e11 <= 0.0;
-    } else {
-        local_13 = true;
-    }
-    bool _e20 = local_13;
-    if (_e20) {
-        return 0.0;
-    }
-    float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
-    float _e27 = safe_sqrt(0.5 + (0.5 * _e22));
-    float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_3.z);
-    float _e39 = smith_root(lobe_3.w, lobe_3.z);
-    float spec = ((lobe_3.y * _e33) * 0.25) / _e39;
-    return _e10 * (((lobe_3.x * INV_PI) * _e11) + spec);
-}
-
-float receiver_importance(
-    metal::float3 center_4,
-    float radius_4,
-    float phi_3,
-    metal::float3 axis_3,
-    float cos_o_3,
-    float cos_e_3,
-    metal::float3 p_4,
-    metal::float3 n_21,
-    metal::float3 r_4,
-    metal::float4 lobe_4
-) {
-    if (lobe_4.y <= 0.0) {
-        float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
-        return _e13;
-    }
-    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
-    return _e14;
-}
-
-float candidate_weight(
-    float importance,
-    float rt2_5,
-    float d2_9
-) {
-    float _e3 = slc_weight(rt2_5, d2_9);
-    return importance * _e3;
-}
-
-float cone_weight(
-    metal::float3 center_5,
-    float radius_5,
-    float phi_4,
-    metal::float3 axis_4,
-    float cos_o_4,
-    float cos_e_4,
-    float rt2_6,
-    metal::float3 p_5,
-    metal::float3 n_22,
-    metal::float3 r_5,
-    metal::float4 lobe_5
-) {
-    metal::float3 v_17 = p_5 - center_5;
-    if (lobe_5.y <= 0.0) {
-        float _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
-        float _e19 = candidate_weight(_e15 * INV_PI, rt2_6, metal::dot(v_17, v_17));
-        return _e19;
-    }
-    float _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
-    float _e22 = candidate_weight(_e20, rt2_6, metal::dot(v_17, v_17));
-    return _e22;
-}
-
-float weighted_select_pdf(
-    float w_7,
-    float w_sum_2,
-    bool in_range_1,
-    uint k_4
-) {
-    if (w_7 <= 0.0) {
-        return 0.0;
-    }
-    float total = in_range_1 ? w_sum_2 : (w_sum_2 + w_7);
-    float _e9 = to_f32_(k_4);
-    return (_e9 * w_7) / total;
-}
-
-float bvh_first_prob(
-    float c0_,
-    float c1_2
-) {
-    float s_7 = c0_ + c1_2;
-    if (s_7 > 0.0) {
-        return c0_ / s_7;
-    }
-    return -1.0;
-}
-
-float bvh_remap_u(
-    float u_4,
-    float p0_,
-    bool first
-) {
-    if (first) {
-        return metal::min(u_4 / p0_, ONE_MINUS_EPSILON);
-    }
-    return metal::clamp((u_4 - p0_) / (1.0 - p0_), 0.0, ONE_MINUS_EPSILON);
-}
-
-float surface_offset(
-    float diag
-) {
-    return 0.00001 * diag;
-}
-
-float ray_t_min(
-    float diag_1
-) {
-    return 0.000001 * diag_1;
+    metal::float3 _e9 = onb_to_local(n_12, v_4);
+    metal::float3 _e10 = onb_to_local(n_12, l_3);
+    float _e11 = ggx_vndf_pdf(_e9, _e10, alpha_8);
+    return (p_spec * _e11) + ((1.0 - p_spec) * _e6);
 }
 
 float shadow_margin(
@@ -1731,33 +767,33 @@ float shadow_margin(
 }
 
 float ray_inverse(
-    float x_10
+    float x_3
 ) {
-    return 1.0 / ((metal::abs(x_10) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_10);
+    return 1.0 / ((metal::abs(x_3) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_3);
 }
 
 metal::float3 ray_inverse3_(
-    metal::float3 d_2
+    metal::float3 d
 ) {
-    float _e2 = ray_inverse(d_2.x);
-    float _e4 = ray_inverse(d_2.y);
-    float _e6 = ray_inverse(d_2.z);
+    float _e2 = ray_inverse(d.x);
+    float _e4 = ray_inverse(d.y);
+    float _e6 = ray_inverse(d.z);
     return metal::float3(_e2, _e4, _e6);
 }
 
 float ray_aabb(
     metal::float3 o,
     metal::float3 inv_d,
-    metal::float3 bmin_1,
-    metal::float3 bmax_1,
+    metal::float3 bmin,
+    metal::float3 bmax,
     float t_max
 ) {
-    metal::float3 t0_ = (bmin_1 - o) * inv_d;
-    metal::float3 t1_ = (bmax_1 - o) * inv_d;
-    metal::float3 lo_3 = metal::min(t0_, t1_);
-    metal::float3 hi_3 = metal::max(t0_, t1_);
-    float t_in = metal::max(metal::max(lo_3.x, lo_3.y), metal::max(lo_3.z, 0.0));
-    float t_out = metal::min(metal::min(hi_3.x, hi_3.y), metal::min(hi_3.z, t_max));
+    metal::float3 t0_ = (bmin - o) * inv_d;
+    metal::float3 t1_ = (bmax - o) * inv_d;
+    metal::float3 lo_2 = metal::min(t0_, t1_);
+    metal::float3 hi_2 = metal::max(t0_, t1_);
+    float t_in = metal::max(metal::max(lo_2.x, lo_2.y), metal::max(lo_2.z, 0.0));
+    float t_out = metal::min(metal::min(hi_2.x, hi_2.y), metal::min(hi_2.z, t_max));
     if (t_in <= t_out) {
         return t_in;
     }
@@ -1765,480 +801,108 @@ float ray_aabb(
 }
 
 metal::float3 triangle_normal(
-    metal::float3 a_5,
+    metal::float3 a_4,
     metal::float3 b_4,
-    metal::float3 c_7
+    metal::float3 c_3
 ) {
-    bool local_14 = {};
-    metal::float3 n_37 = metal::cross(b_4 - a_5, c_7 - a_5);
-    float l2_ = metal::dot(n_37, n_37);
+    bool local_11 = {};
+    metal::float3 n_17 = metal::cross(b_4 - a_4, c_3 - a_4);
+    float l2_ = metal::dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
-        local_14 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_11 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_14 = true;
+        local_11 = true;
     }
-    bool _e17 = local_14;
+    bool _e17 = local_11;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_37 / metal::float3(metal::sqrt(l2_));
-}
-
-metal::float3 face_against(
-    metal::float3 n_23,
-    metal::float3 dir
-) {
-    return (metal::dot(n_23, dir) > 0.0) ? -(n_23) : n_23;
-}
-
-metal::float3 barycentric(
-    metal::float3 p_6,
-    metal::float3 a_6,
-    metal::float3 b_5,
-    metal::float3 c_8
-) {
-    metal::float3 e1_1 = b_5 - a_6;
-    metal::float3 e2_1 = c_8 - a_6;
-    metal::float3 q_4 = p_6 - a_6;
-    float d11_ = metal::dot(e1_1, e1_1);
-    float d12_ = metal::dot(e1_1, e2_1);
-    float d22_ = metal::dot(e2_1, e2_1);
-    float den = (d11_ * d22_) - (d12_ * d12_);
-    if (!((metal::abs(den) > 0.0))) {
-        return metal::float3(1.0, 0.0, 0.0);
-    }
-    float w1_ = ((d22_ * metal::dot(q_4, e1_1)) - (d12_ * metal::dot(q_4, e2_1))) / den;
-    float w2_ = ((d11_ * metal::dot(q_4, e2_1)) - (d12_ * metal::dot(q_4, e1_1))) / den;
-    return metal::float3((1.0 - w1_) - w2_, w1_, w2_);
-}
-
-metal::float3 shading_normal(
-    metal::float3 n0_,
-    metal::float3 n1_,
-    metal::float3 n2_,
-    metal::float3 w_8,
-    metal::float3 facing
-) {
-    bool local_15 = {};
-    metal::float3 s_8 = ((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z);
-    float l2_1 = metal::dot(s_8, s_8);
-    if (!(!((l2_1 > 0.000000000001)))) {
-        local_15 = !((l2_1 < 300000000000000000000000000000000000000.0));
-    } else {
-        local_15 = true;
-    }
-    bool _e24 = local_15;
-    if (_e24) {
-        return facing;
-    }
-    metal::float3 n_38 = s_8 / metal::float3(metal::sqrt(l2_1));
-    return (metal::dot(n_38, facing) < 0.0) ? -(n_38) : n_38;
+    return n_17 / metal::float3(metal::sqrt(l2_));
 }
 
 float ray_triangle(
     metal::float3 o_1,
-    metal::float3 d_3,
-    metal::float3 a_7,
-    metal::float3 b_6,
-    metal::float3 c_9,
+    metal::float3 d_1,
+    metal::float3 a_5,
+    metal::float3 b_5,
+    metal::float3 c_4,
     float t_min,
     float t_max_1
 ) {
-    bool local_16 = {};
-    bool local_17 = {};
-    bool local_18 = {};
-    metal::float3 e1_2 = b_6 - a_7;
-    metal::float3 e2_2 = c_9 - a_7;
-    metal::float3 p_7 = metal::cross(d_3, e2_2);
-    float det = metal::dot(e1_2, p_7);
+    bool local_12 = {};
+    bool local_13 = {};
+    bool local_14 = {};
+    metal::float3 e1_ = b_5 - a_5;
+    metal::float3 e2_ = c_4 - a_5;
+    metal::float3 p = metal::cross(d_1, e2_);
+    float det = metal::dot(e1_, p);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv_1 = 1.0 / det;
-    metal::float3 s_9 = o_1 - a_7;
-    float u_7 = metal::dot(s_9, p_7) * inv_1;
-    if (!((u_7 < 0.0))) {
-        local_16 = u_7 > 1.0;
+    metal::float3 s_6 = o_1 - a_5;
+    float u_1 = metal::dot(s_6, p) * inv_1;
+    if (!((u_1 < 0.0))) {
+        local_12 = u_1 > 1.0;
     } else {
-        local_16 = true;
+        local_12 = true;
     }
-    bool _e28 = local_16;
+    bool _e28 = local_12;
     if (_e28) {
         return -1.0;
     }
-    metal::float3 q_5 = metal::cross(s_9, e1_2);
-    float v_18 = metal::dot(d_3, q_5) * inv_1;
-    if (!((v_18 < 0.0))) {
-        local_17 = (u_7 + v_18) > 1.0;
+    metal::float3 q = metal::cross(s_6, e1_);
+    float v_8 = metal::dot(d_1, q) * inv_1;
+    if (!((v_8 < 0.0))) {
+        local_13 = (u_1 + v_8) > 1.0;
     } else {
-        local_17 = true;
+        local_13 = true;
     }
-    bool _e42 = local_17;
+    bool _e42 = local_13;
     if (_e42) {
         return -1.0;
     }
-    float t_5 = metal::dot(e2_2, q_5) * inv_1;
-    if (t_5 > t_min) {
-        local_18 = t_5 < t_max_1;
+    float t_2 = metal::dot(e2_, q) * inv_1;
+    if (t_2 > t_min) {
+        local_14 = t_2 < t_max_1;
     } else {
-        local_18 = false;
+        local_14 = false;
     }
-    bool _e51 = local_18;
+    bool _e51 = local_14;
     if (_e51) {
-        return t_5;
+        return t_2;
     }
     return -1.0;
 }
 
-float inv_sigma_z(
-    float z
-) {
-    return 1.0 / (DEPTH_SIGMA * z);
-}
-
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / metal::select(rhs, 1u, rhs == 0u);
-}
-
-uint window_start(
-    uint x_11,
-    uint size
-) {
-    uint half_ = naga_div(size, 2u);
-    return metal::max(x_11, half_) - half_;
-}
-
-uint window_end(
-    uint x_12,
-    uint size_1,
-    uint extent_1
-) {
-    return metal::min((x_12 + size_1) - naga_div(size_1, 2u), extent_1);
-}
-
-uint wide_window(
-    uint period
-) {
-    return 2u * period;
-}
-
-bool misses_subset(
-    uint covered,
-    uint period_1
-) {
-    return covered < (period_1 * period_1);
-}
-
-metal::float3 filtered_irradiance(
-    metal::float3 e,
-    metal::float3 sum_1,
-    float weight
-) {
-    if (weight > 0.0) {
-        return sum_1 / metal::float3(weight);
-    }
-    return e;
-}
-
-float bilateral_weight(
-    metal::float3 n_24,
-    metal::float3 nj,
-    float z_1,
-    float zj,
-    float inv_sz
-) {
-    float dn = metal::max(metal::dot(n_24, nj), 0.0);
-    float dn2_ = dn * dn;
-    float dn4_ = dn2_ * dn2_;
-    float dn8_ = dn4_ * dn4_;
-    float d_8 = (zj - z_1) * inv_sz;
-    float t_6 = metal::max(1.0 - (d_8 * d_8), 0.0);
-    return ((dn8_ * dn8_) * t_6) * t_6;
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % metal::select(rhs, 1u, rhs == 0u);
-}
-
-uint interleave_subset(
-    uint x_13,
-    uint y_2,
-    uint period_2
-) {
-    return (naga_mod(y_2, period_2) * period_2) + naga_mod(x_13, period_2);
-}
-
-uint interleave_slot(
-    uint tx,
-    uint ty,
-    uint size_2,
-    uint period_3
-) {
-    uint side_1 = naga_div(size_2, period_3);
-    uint _e5 = interleave_subset(tx, ty, period_3);
-    return (((_e5 * side_1) * side_1) + (naga_div(ty, period_3) * side_1)) + naga_div(tx, period_3);
-}
-
-uint interleave_slot_linear(
-    uint i_1,
-    uint per_subset,
-    uint period_4
-) {
-    uint subsets = period_4 * period_4;
-    return (naga_mod(i_1, subsets) * per_subset) + naga_div(i_1, subsets);
-}
-
-float interleave_flux_scale(
-    uint period_5
-) {
-    float _e2 = to_f32_(period_5 * period_5);
-    return _e2;
-}
-
-uint near_block_index(
-    uint tx_1,
-    uint ty_1,
-    uint size_3
-) {
-    uint side_2 = naga_div(size_3, 8u);
-    return ((((naga_div(ty_1, 8u) * side_2) + naga_div(tx_1, 8u)) * NEAR_BLOCK) + (naga_mod(ty_1, 8u) * 8u)) + naga_mod(tx_1, 8u);
-}
-
-uint near_block_tx(
-    uint q,
-    uint size_4
-) {
-    return (naga_mod(naga_div(q, NEAR_BLOCK), naga_div(size_4, 8u)) * 8u) + naga_mod(q, 8u);
-}
-
-uint near_block_ty(
-    uint q_1,
-    uint size_5
-) {
-    return (naga_div(naga_div(q_1, NEAR_BLOCK), naga_div(size_5, 8u)) * 8u) + naga_div(naga_mod(q_1, NEAR_BLOCK), 8u);
-}
-
-float vpl_near_weight(
-    float d2_10,
-    float near_r2_
-) {
-    if (near_r2_ <= 0.0) {
-        return 0.0;
-    }
-    float t_7 = metal::clamp((near_r2_ - d2_10) / (0.75 * near_r2_), 0.0, 1.0);
-    return (t_7 * t_7) * (3.0 - (2.0 * t_7));
-}
-
-float vpl_far_weight(
-    float d2_11,
-    float near_r2_1
-) {
-    float _e2 = vpl_near_weight(d2_11, near_r2_1);
-    return 1.0 - _e2;
-}
-
-metal::float3 camera_dir(
-    metal::float3 forward,
-    metal::float3 right,
-    metal::float3 up,
-    float px,
-    float py,
-    float w_9,
-    float h_1
-) {
-    float sx = ((2.0 * px) / w_9) - 1.0;
-    float sy = 1.0 - ((2.0 * py) / h_1);
-    return metal::normalize((forward + (right * sx)) + (up * sy));
-}
-
-float jittered_pixel(
-    uint coord,
-    float u_5
-) {
-    float _e2 = to_f32_(coord);
-    return _e2 + u_5;
-}
-
-bool plays_roulette(
-    uint depth
-) {
-    return depth >= ROULETTE_DEPTH;
-}
-
-bool sees_emission(
-    metal::float3 gn,
-    metal::float3 dir_1
-) {
-    return metal::dot(gn, dir_1) < 0.0;
-}
-
-bool continues_path(
-    metal::float3 nd,
-    metal::float3 n_25,
-    metal::float3 ng_1
-) {
-    bool local_19 = {};
-    if (metal::dot(nd, n_25) > 0.0) {
-        local_19 = metal::dot(nd, ng_1) > 0.0;
-    } else {
-        local_19 = false;
-    }
-    bool _e12 = local_19;
-    return _e12;
-}
-
 bool finite3_(
-    metal::float3 v_8
+    metal::float3 v_5
 ) {
-    bool local_20 = {};
-    bool local_21 = {};
-    if (metal::abs(v_8.x) <= F32_MAX) {
-        local_20 = metal::abs(v_8.y) <= F32_MAX;
+    bool local_15 = {};
+    bool local_16 = {};
+    if (metal::abs(v_5.x) <= F32_MAX) {
+        local_15 = metal::abs(v_5.y) <= F32_MAX;
     } else {
-        local_20 = false;
+        local_15 = false;
     }
-    bool _e12 = local_20;
+    bool _e12 = local_15;
     if (_e12) {
-        local_21 = metal::abs(v_8.z) <= F32_MAX;
+        local_16 = metal::abs(v_5.z) <= F32_MAX;
     } else {
-        local_21 = false;
+        local_16 = false;
     }
-    bool _e20 = local_21;
+    bool _e20 = local_16;
     return _e20;
-}
-
-float path_survival(
-    metal::float3 beta
-) {
-    return metal::clamp(metal::max(metal::max(beta.x, beta.y), beta.z), 0.05, 0.95);
-}
-
-float light_map_coord(
-    uint t_1,
-    uint size_6
-) {
-    float _e2 = to_f32_(t_1);
-    float _e7 = to_f32_(size_6);
-    return ((2.0 * (_e2 + 0.5)) / _e7) - 1.0;
-}
-
-uint light_map_texel(
-    float a_8,
-    uint size_7
-) {
-    float _e6 = to_f32_(size_7);
-    float _e9 = to_f32_(size_7);
-    uint _e14 = to_u32_(metal::clamp(metal::floor(((a_8 + 1.0) * 0.5) * _e6), 0.0, _e9 - 1.0));
-    return _e14;
-}
-
-float light_map_coord_at(
-    metal::float3 rel,
-    metal::float3 dir_2,
-    metal::float3 axis_5,
-    float extent_2,
-    bool perspective
-) {
-    return metal::dot(rel, dir_2) / ((perspective ? metal::dot(rel, axis_5) : 1.0) * extent_2);
-}
-
-float display_encode(
-    float x_14
-) {
-    float v_19 = metal::max(x_14, 0.0);
-    float t_8 = (2.0 * v_19) / (1.0 + (2.0 * v_19));
-    return (t_8 <= 0.0031308) ? (12.92 * t_8) : ((1.055 * metal::pow(t_8, 0.41666666)) - 0.055);
-}
-
-float light_map_depth(
-    metal::float3 rel_1,
-    metal::float3 axis_6,
-    bool perspective_1
-) {
-    return perspective_1 ? metal::sqrt(metal::dot(rel_1, rel_1)) : metal::dot(rel_1, axis_6);
-}
-
-float rsm_texel_solid_angle(
-    float texel_area,
-    float cos_axis
-) {
-    return ((texel_area * cos_axis) * cos_axis) * cos_axis;
-}
-
-metal::float3 point_irradiance(
-    metal::float3 intensity_1,
-    metal::float3 n_26,
-    metal::float3 v_9
-) {
-    float d2_14 = metal::dot(v_9, v_9);
-    float cos_x_2 = metal::dot(n_26, v_9) / metal::sqrt(metal::max(d2_14, MIN_D2_));
-    float _e11 = inverse_square(d2_14);
-    return intensity_1 * (metal::max(cos_x_2, 0.0) * _e11);
-}
-
-metal::float3 directional_irradiance(
-    metal::float3 e_1,
-    metal::float3 n_27,
-    metal::float3 to_light
-) {
-    return e_1 * metal::max(metal::dot(n_27, to_light), 0.0);
-}
-
-float perspective_texel_width(
-    float extent_3,
-    float d_4,
-    float z_2,
-    float size_8
-) {
-    return (((2.0 * extent_3) * d_4) * d_4) / (size_8 * z_2);
-}
-
-float ortho_texel_width(
-    float extent_4,
-    float size_9
-) {
-    return (2.0 * extent_4) / size_9;
-}
-
-float shadow_bias(
-    float texel,
-    float cos_light_1
-) {
-    float c_16 = metal::clamp(cos_light_1, 0.02, 1.0);
-    return texel * (1.5 + (metal::sqrt(1.0 - (c_16 * c_16)) / c_16));
-}
-
-bool shadow_lit(
-    float d_5,
-    float d_map,
-    float bias
-) {
-    bool local_22 = {};
-    if (!((d_map <= 0.0))) {
-        local_22 = d_5 <= (d_map + bias);
-    } else {
-        local_22 = true;
-    }
-    bool _e11 = local_22;
-    return _e11;
-}
-
-metal::float3 diffuse_radiance(
-    metal::float3 albedo,
-    metal::float3 emission,
-    metal::float3 e_2
-) {
-    return emission + ((albedo * INV_PI) * e_2);
 }
 
 metal::float3 light_intensity(
     GpuLight l_4,
-    metal::float3 w_10
+    metal::float3 w_3
 ) {
     switch(l_4.kind) {
         case 3u: {
             metal::float3 _e7 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
-            float _e9 = triangle_lobe(_e7, l_4.a, w_10);
+            float _e9 = triangle_lobe(_e7, l_4.a, w_3);
             return l_4.intensity * _e9;
         }
         default: {
@@ -2249,11 +913,11 @@ metal::float3 light_intensity(
 
 metal::float3 light_point(
     GpuLight l_5,
-    float u1_4,
-    float u2_4
+    float u1_1,
+    float u2_1
 ) {
     if (l_5.kind == LIGHT_TRIANGLE) {
-        metal::float3 _e9 = triangle_sample(l_5.p0_, l_5.p1_, l_5.p2_, u1_4, u2_4);
+        metal::float3 _e9 = triangle_sample(l_5.p0_, l_5.p1_, l_5.p2_, u1_1, u2_1);
         return _e9;
     }
     return l_5.p0_;
@@ -2280,7 +944,7 @@ metal::float3 light_normal(
 
 GeoHit trace(
     metal::float3 o_2,
-    metal::float3 d_6,
+    metal::float3 d_2,
     float t_min_1,
     float t_max_2,
     bool any_hit,
@@ -2292,48 +956,48 @@ GeoHit trace(
     type_8 stack = {};
     uint sp = 0u;
     uint node_1 = 0u;
-    uint i_2 = {};
+    uint i = {};
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
-    if ((1 + (_buffer_sizes.size1 - 0 - 32) / 32) == 0u) {
+    if ((1 + (_buffer_sizes.size0 - 0 - 32) / 32) == 0u) {
         GeoHit _e13 = hit;
         return _e13;
     }
-    metal::float3 _e14 = ray_inverse3_(d_6);
-    uint2 loop_bound_1 = uint2(4294967295u);
+    metal::float3 _e14 = ray_inverse3_(d_2);
+    uint2 loop_bound = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node_1;
-        GpuGeoNode n_39 = geo_nodes[_e21];
+        GpuGeoNode n_18 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_39.bmin, n_39.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_39.count > 0u) {
-                i_2 = n_39.first;
-                uint2 loop_bound_2 = uint2(4294967295u);
+            if (n_18.count > 0u) {
+                i = n_18.first;
+                uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
-                    if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                    if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+                    loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                     if (!loop_init) {
-                        uint _e58 = i_2;
-                        i_2 = _e58 + 1u;
+                        uint _e58 = i;
+                        i = _e58 + 1u;
                     }
                     loop_init = false;
-                    uint _e36 = i_2;
-                    if (_e36 < (n_39.first + n_39.count)) {
+                    uint _e36 = i;
+                    if (_e36 < (n_18.first + n_18.count)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e42 = i_2;
-                        GpuTriangle t_9 = geo_tris[_e42];
+                        uint _e42 = i;
+                        GpuTriangle t_3 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_6, t_9.v0_, t_9.v1_, t_9.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_2, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
-                            uint _e55 = i_2;
+                            uint _e55 = i;
                             hit.tri = _e55;
                             if (any_hit) {
                                 GeoHit _e56 = hit;
@@ -2346,11 +1010,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_39.first + 1u;
+                    stack.inner[_e63] = n_18.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_1 = n_39.first;
+                node_1 = n_18.first;
                 continue;
             }
         }
@@ -2369,29 +1033,29 @@ GeoHit trace(
 }
 
 bool occluded(
-    metal::float3 a_9,
-    metal::float3 b_7,
+    metal::float3 a_6,
+    metal::float3 b_6,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 dv = b_7 - a_9;
+    metal::float3 dv = b_6 - a_6;
     float len_1 = metal::length(dv);
     if (len_1 <= 0.0) {
         return false;
     }
     float _e7 = shadow_margin(len_1);
-    GeoHit _e12 = trace(a_9, dv / metal::float3(len_1), _e7, len_1 - _e7, true, geo_nodes, geo_tris, _buffer_sizes);
+    GeoHit _e12 = trace(a_6, dv / metal::float3(len_1), _e7, len_1 - _e7, true, geo_nodes, geo_tris, _buffer_sizes);
     return _e12.tri != NO_LIGHT;
 }
 
 BshNode bsh_node(
     BshNodes nodes,
-    uint i_3,
+    uint i_1,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    BshNode _e4 = bsh_nodes[i_3];
+    BshNode _e4 = bsh_nodes[i_1];
     return _e4;
 }
 
@@ -2400,7 +1064,7 @@ uint bsh_count(
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    return 1 + (_buffer_sizes.size3 - 0 - 32) / 32;
+    return 1 + (_buffer_sizes.size2 - 0 - 32) / 32;
 }
 
 uint bsh_first(
@@ -2417,94 +1081,70 @@ uint bsh_first(
 
 uint bsh_next_leaf_scaled(
     BshNodes nodes_3,
-    uint start_1,
-    metal::float3 x_15,
+    uint start,
+    metal::float3 x_4,
     float scale_1,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_4 = {};
-    i_4 = start_1;
-    uint2 loop_bound_3 = uint2(4294967295u);
+    uint i_2 = {};
+    i_2 = start;
+    uint2 loop_bound_2 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e5 = i_4;
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        uint _e5 = i_2;
         if (_e5 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e8 = i_4;
+            uint _e8 = i_2;
             BshNode _e9 = bsh_node(nodes_3, _e8, bsh_nodes, _buffer_sizes);
             float _e11 = bsh_scaled_radius(_e9, scale_1);
-            bool _e12 = sphere_contains_point(_e9.center, _e11, x_15);
+            bool _e12 = sphere_contains_point(_e9.center, _e11, x_4);
             if (_e12) {
                 if (_e9.child == BSH_NONE) {
-                    uint _e16 = i_4;
+                    uint _e16 = i_2;
                     return _e16;
                 }
-                i_4 = _e9.child;
+                i_2 = _e9.child;
             } else {
-                i_4 = _e9.next;
+                i_2 = _e9.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-uint bsh_next_leaf(
-    BshNodes nodes_4,
-    uint start_2,
-    metal::float3 x_16,
-    device type_10 const& bsh_nodes,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint _e4 = bsh_next_leaf_scaled(nodes_4, start_2, x_16, 1.0, bsh_nodes, _buffer_sizes);
-    return _e4;
-}
-
-metal::float4 bsh_children_sphere(
-    BshNodes nodes_5,
-    uint i_5,
-    device type_10 const& bsh_nodes,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    BshNode _e2 = bsh_node(nodes_5, i_5, bsh_nodes, _buffer_sizes);
-    BshNode _e4 = bsh_node(nodes_5, _e2.child, bsh_nodes, _buffer_sizes);
-    BshNode _e6 = bsh_node(nodes_5, _e4.next, bsh_nodes, _buffer_sizes);
-    metal::float4 _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
-    return _e11;
-}
-
 Picks bsh_collect(
-    metal::float3 x_17,
+    metal::float3 x_5,
     float scale_2,
-    uint seed_3,
+    uint seed_1,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Picks picks = {};
-    uint h_2 = {};
-    uint i_6 = {};
+    uint h_1 = {};
+    uint i_3 = {};
     picks.n = 0u;
-    h_2 = seed_3;
+    h_1 = seed_1;
     uint _e9 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_17, scale_2, bsh_nodes, _buffer_sizes);
-    i_6 = _e10;
-    uint2 loop_bound_4 = uint2(4294967295u);
+    uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_5, scale_2, bsh_nodes, _buffer_sizes);
+    i_3 = _e10;
+    uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
-        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e43 = i_6;
+            uint _e43 = i_3;
             uint _e46 = bsh_nodes[_e43].next;
-            uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_17, scale_2, bsh_nodes, _buffer_sizes);
-            i_6 = _e47;
+            uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_5, scale_2, bsh_nodes, _buffer_sizes);
+            i_3 = _e47;
         }
         loop_init_1 = false;
-        uint _e12 = i_6;
+        uint _e12 = i_3;
         if (_e12 != BSH_NONE) {
         } else {
             break;
@@ -2515,18 +1155,18 @@ Picks bsh_collect(
             if (_e17) {
                 uint _e19 = picks.n;
                 picks.n = _e19 + 1u;
-                uint _e22 = h_2;
+                uint _e22 = h_1;
                 uint _e23 = pcg_hash(_e22);
-                h_2 = _e23;
-                uint hi_4 = h_2;
-                uint _e25 = h_2;
+                h_1 = _e23;
+                uint hi_3 = h_1;
+                uint _e25 = h_1;
                 uint _e26 = pcg_hash(_e25);
-                h_2 = _e26;
+                h_1 = _e26;
                 uint _e28 = picks.n;
-                uint _e30 = h_2;
-                uint _e31 = reservoir_slot(_e28, K, hi_4, _e30);
+                uint _e30 = h_1;
+                uint _e31 = reservoir_slot(_e28, K, hi_3, _e30);
                 if (_e31 < K) {
-                    uint _e37 = i_6;
+                    uint _e37 = i_3;
                     uint _e40 = bsh_nodes[_e37].light;
                     picks.light.inner[_e31] = _e40;
                 }
@@ -2539,363 +1179,142 @@ Picks bsh_collect(
 
 Connection connect(
     uint li,
-    metal::float3 x_18,
-    metal::float3 n_28,
-    metal::float3 ng_2,
+    metal::float3 x_6,
+    metal::float3 n_13,
+    metal::float3 ng_1,
     float s_1,
     float w_res,
-    float u1_5,
-    float u2_5,
+    float u1_2,
+    float u2_2,
     float eps,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
-    device type_4 const& r2_7,
-    device type_4 const& rt2_7,
+    device type_4 const& r2_2,
+    device type_4 const& rt2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Connection c_10 = {};
-    bool local_23 = {};
-    c_10.e = metal::float3(0.0);
+    Connection c_5 = {};
+    bool local_17 = {};
+    c_5.e = metal::float3(0.0);
     GpuLight l_8 = lights[li];
-    metal::float3 _e17 = light_point(l_8, u1_5, u2_5);
-    c_10.y = _e17;
-    metal::float3 _e20 = c_10.y;
-    float _e23 = r2_7[li];
-    float _e25 = connection_cosine(x_18, _e20, n_28, ng_2, s_1 * _e23);
-    c_10.cos_x = _e25;
-    float _e27 = c_10.cos_x;
+    metal::float3 _e17 = light_point(l_8, u1_2, u2_2);
+    c_5.y = _e17;
+    metal::float3 _e20 = c_5.y;
+    float _e23 = r2_2[li];
+    float _e25 = connection_cosine(x_6, _e20, n_13, ng_1, s_1 * _e23);
+    c_5.cos_x = _e25;
+    float _e27 = c_5.cos_x;
     if (!((_e27 <= 0.0))) {
-        metal::float3 _e36 = c_10.y;
-        bool _e37 = occluded(x_18 + (ng_2 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
-        local_23 = _e37;
+        metal::float3 _e36 = c_5.y;
+        bool _e37 = occluded(x_6 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
+        local_17 = _e37;
     } else {
-        local_23 = true;
+        local_17 = true;
     }
-    bool _e39 = local_23;
+    bool _e39 = local_17;
     if (_e39) {
-        Connection _e40 = c_10;
+        Connection _e40 = c_5;
         return _e40;
     }
-    metal::float3 _e42 = c_10.y;
-    metal::float3 v_20 = x_18 - _e42;
-    float d2_15 = metal::dot(v_20, v_20);
-    metal::float3 _e49 = light_intensity(l_8, v_20 / metal::float3(metal::sqrt(d2_15)));
-    float _e51 = c_10.cos_x;
-    float _e54 = rt2_7[li];
-    float _e56 = connection_factor(_e51, d2_15, s_1 * _e54, w_res);
-    c_10.e = _e49 * _e56;
-    Connection _e58 = c_10;
+    metal::float3 _e42 = c_5.y;
+    metal::float3 v_9 = x_6 - _e42;
+    float d2_8 = metal::dot(v_9, v_9);
+    metal::float3 _e49 = light_intensity(l_8, v_9 / metal::float3(metal::sqrt(d2_8)));
+    float _e51 = c_5.cos_x;
+    float _e54 = rt2_4[li];
+    float _e56 = connection_factor(_e51, d2_8, s_1 * _e54, w_res);
+    c_5.e = _e49 * _e56;
+    Connection _e58 = c_5;
     return _e58;
 }
 
 float mis_weight(
-    float pdf_a_2,
-    float pdf_b_2
+    float pdf_a_1,
+    float pdf_b_1
 ) {
-    float _e2 = mis_power(pdf_a_2, pdf_b_2);
+    float _e2 = mis_power(pdf_a_1, pdf_b_1);
     return _e2;
 }
 
-float light_weight(
-    uint li_1,
-    metal::float3 x_19,
-    metal::float3 n_29,
-    metal::float3 r_6,
-    metal::float4 lobe_6,
-    device type_4 const& rt2_7,
-    device type_13 const& light_cones,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    GpuLightCone c_17 = light_cones[li_1];
-    float _e14 = range_scale(lobe_6);
-    float _e17 = rt2_7[li_1];
-    float _e19 = cone_weight(c_17.center, c_17.radius, c_17.phi, c_17.axis, c_17.cos_o, c_17.cos_e, _e14 * _e17, x_19, n_29, r_6, lobe_6);
-    return _e19;
-}
-
-GpuLightBvhNode light_bvh_node(
-    BvhNodes nodes_6,
-    uint i_7,
-    device type_14 const& light_bvh,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    GpuLightBvhNode _e4 = light_bvh[i_7];
-    return _e4;
-}
-
-uint light_bvh_count(
-    BvhNodes nodes_7,
-    device type_14 const& light_bvh,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    return 1 + (_buffer_sizes.size9 - 0 - 48) / 48;
-}
-
-float bvh_importance(
-    BvhNodes nodes_8,
-    uint i_8,
-    metal::float3 x_20,
-    metal::float3 n_30,
-    metal::float3 r_7,
-    metal::float4 lobe_7,
-    device type_14 const& light_bvh,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    GpuLightBvhNode _e6 = light_bvh_node(nodes_8, i_8, light_bvh, _buffer_sizes);
-    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_20, n_30, r_7, lobe_7);
-    return _e13;
-}
-
-float bvh_first(
-    BvhNodes nodes_9,
-    uint i_9,
-    metal::float3 x_21,
-    metal::float3 n_31,
-    metal::float3 r_8,
-    metal::float4 lobe_8,
-    device type_14 const& light_bvh,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    bool local_24 = {};
-    GpuLightBvhNode _e6 = light_bvh_node(nodes_9, i_9, light_bvh, _buffer_sizes);
-    uint j = _e6.second;
-    if (!((j <= (i_9 + 1u)))) {
-        uint _e14 = light_bvh_count(nodes_9, light_bvh, _buffer_sizes);
-        local_24 = j >= _e14;
-    } else {
-        local_24 = true;
-    }
-    bool _e17 = local_24;
-    if (_e17) {
-        return -1.0;
-    }
-    float _e21 = bvh_importance(nodes_9, i_9 + 1u, x_21, n_31, r_8, lobe_8, light_bvh, _buffer_sizes);
-    float _e22 = bvh_importance(nodes_9, j, x_21, n_31, r_8, lobe_8, light_bvh, _buffer_sizes);
-    float _e23 = bvh_first_prob(_e21, _e22);
-    return _e23;
-}
-
-BvhPick bvh_pick_none(
-) {
-    return BvhPick {0u, 0.0};
-}
-
-BvhPick light_bvh_sample(
-    BvhNodes nodes_10,
-    metal::float3 x_22,
-    metal::float3 n_32,
-    metal::float3 r_9,
-    metal::float4 lobe_9,
-    float u_in,
-    device type_14 const& light_bvh,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    BvhPick pick = {};
-    float u_6 = {};
-    uint i_10 = 0u;
-    float pmf = 1.0;
-    bool local_25 = {};
-    BvhPick _e6 = bvh_pick_none();
-    pick = _e6;
-    u_6 = u_in;
-    uint2 loop_bound_5 = uint2(4294967295u);
-    while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        uint _e13 = i_10;
-        uint _e14 = light_bvh_count(nodes_10, light_bvh, _buffer_sizes);
-        if (_e13 < _e14) {
-        } else {
-            break;
-        }
-        {
-            uint _e16 = i_10;
-            GpuLightBvhNode _e17 = light_bvh_node(nodes_10, _e16, light_bvh, _buffer_sizes);
-            if (_e17.second == LIGHT_BVH_LEAF) {
-                uint _e21 = i_10;
-                if (!((_e21 > 0u))) {
-                    float _e28 = bvh_importance(nodes_10, 0u, x_22, n_32, r_9, lobe_9, light_bvh, _buffer_sizes);
-                    local_25 = _e28 > 0.0;
-                } else {
-                    local_25 = true;
-                }
-                bool _e32 = local_25;
-                if (_e32) {
-                    pick.light = _e17.light;
-                    float _e36 = pmf;
-                    pick.pmf = _e36;
-                }
-                BvhPick _e37 = pick;
-                return _e37;
-            }
-            uint _e38 = i_10;
-            float _e39 = bvh_first(nodes_10, _e38, x_22, n_32, r_9, lobe_9, light_bvh, _buffer_sizes);
-            if (_e39 < 0.0) {
-                BvhPick _e42 = pick;
-                return _e42;
-            }
-            float _e43 = u_6;
-            bool first_1 = _e43 < _e39;
-            float _e45 = pmf;
-            pmf = _e45 * (first_1 ? _e39 : (1.0 - _e39));
-            float _e50 = u_6;
-            float _e51 = bvh_remap_u(_e50, _e39, first_1);
-            u_6 = _e51;
-            uint _e53 = i_10;
-            i_10 = first_1 ? (_e53 + 1u) : _e17.second;
-        }
-    }
-    BvhPick _e57 = pick;
-    return _e57;
-}
-
-float light_bvh_pmf(
-    BvhNodes nodes_11,
-    uint leaf,
-    metal::float3 x_23,
-    metal::float3 n_33,
-    metal::float3 r_10,
-    metal::float4 lobe_10,
-    device type_14 const& light_bvh,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint i_11 = 0u;
-    float pmf_1 = 1.0;
-    bool local_26 = {};
-    bool local_27 = {};
-    uint _e6 = light_bvh_count(nodes_11, light_bvh, _buffer_sizes);
-    if (leaf >= _e6) {
-        return 0.0;
-    }
-    uint2 loop_bound_6 = uint2(4294967295u);
-    while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e13 = i_11;
-        uint _e14 = light_bvh_count(nodes_11, light_bvh, _buffer_sizes);
-        if (_e13 < _e14) {
-        } else {
-            break;
-        }
-        {
-            uint _e16 = i_11;
-            GpuLightBvhNode _e17 = light_bvh_node(nodes_11, _e16, light_bvh, _buffer_sizes);
-            if (_e17.second == LIGHT_BVH_LEAF) {
-                uint _e21 = i_11;
-                if (_e21 == leaf) {
-                    uint _e25 = i_11;
-                    if (!((_e25 > 0u))) {
-                        float _e32 = bvh_importance(nodes_11, 0u, x_23, n_33, r_10, lobe_10, light_bvh, _buffer_sizes);
-                        local_27 = _e32 > 0.0;
-                    } else {
-                        local_27 = true;
-                    }
-                    bool _e36 = local_27;
-                    local_26 = _e36;
-                } else {
-                    local_26 = false;
-                }
-                bool _e38 = local_26;
-                if (_e38) {
-                    float _e39 = pmf_1;
-                    return _e39;
-                }
-                return 0.0;
-            }
-            uint _e41 = i_11;
-            float _e42 = bvh_first(nodes_11, _e41, x_23, n_33, r_10, lobe_10, light_bvh, _buffer_sizes);
-            if (_e42 < 0.0) {
-                return 0.0;
-            }
-            bool first_2 = leaf < _e17.second;
-            float _e48 = pmf_1;
-            pmf_1 = _e48 * (first_2 ? _e42 : (1.0 - _e42));
-            uint _e54 = i_11;
-            i_11 = first_2 ? (_e54 + 1u) : _e17.second;
-        }
-    }
-    return 0.0;
-}
-
 float select_pdf(
-    uint li_2,
-    metal::float3 x_24,
-    metal::float3 n_34,
-    metal::float3 r_11,
-    metal::float4 lobe_11,
+    uint li_1,
+    metal::float3 x_7,
+    metal::float3 n_14,
+    metal::float3 r_1,
+    metal::float4 lobe_3,
     uint nee,
-    bool in_range_2
+    bool in_range_1
 ) {
-    float _e8 = reservoir_select_pdf(nee, in_range_2, K);
+    float _e8 = reservoir_select_pdf(nee, in_range_1, K);
     return _e8;
 }
 
 float light_pdf(
-    uint li_3,
-    metal::float3 x_25,
-    metal::float3 n_35,
-    metal::float3 r_12,
-    metal::float4 lobe_12,
-    metal::float3 y_3,
+    uint li_2,
+    metal::float3 x_8,
+    metal::float3 n_15,
+    metal::float3 r_2,
+    metal::float4 lobe_4,
+    metal::float3 y_1,
     uint nee_1,
-    bool in_range_3,
+    bool in_range_2,
     device type_11 const& lights,
-    device type_4 const& rt2_7,
+    device type_4 const& rt2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight l_9 = lights[li_3];
-    metal::float3 v_21 = x_25 - y_3;
-    float d2_16 = metal::dot(v_21, v_21);
+    GpuLight l_9 = lights[li_2];
+    metal::float3 v_10 = x_8 - y_1;
+    float d2_9 = metal::dot(v_10, v_10);
     metal::float3 _e13 = light_normal(l_9);
-    float cos_y_1 = (d2_16 > 0.0) ? metal::dot(_e13, v_21 / metal::float3(metal::sqrt(d2_16))) : 0.0;
-    float _e22 = select_pdf(li_3, x_25, n_35, r_12, lobe_12, nee_1, in_range_3);
-    float _e23 = range_scale(lobe_12);
-    float _e26 = rt2_7[li_3];
+    float cos_y_1 = (d2_9 > 0.0) ? metal::dot(_e13, v_10 / metal::float3(metal::sqrt(d2_9))) : 0.0;
+    float _e22 = select_pdf(li_2, x_8, n_15, r_2, lobe_4, nee_1, in_range_2);
+    float _e23 = range_scale(lobe_4);
+    float _e26 = rt2_4[li_2];
     float _e28 = light_area(l_9);
-    float _e29 = light_strategy_pdf(_e22, _e23 * _e26, d2_16, _e28, cos_y_1);
+    float _e29 = light_strategy_pdf(_e22, _e23 * _e26, d2_9, _e28, cos_y_1);
     return _e29;
 }
 
 metal::float3 shade_pick(
-    uint li_4,
-    metal::float3 x_26,
-    metal::float3 n_36,
-    metal::float3 ng_3,
+    uint li_3,
+    metal::float3 x_9,
+    metal::float3 n_16,
+    metal::float3 ng_2,
     GpuMaterial m,
     metal::float3 wo_1,
-    metal::float3 r_13,
-    metal::float4 lobe_13,
-    float w_11,
+    metal::float3 r_3,
+    metal::float4 lobe_5,
+    float w_4,
     uint nee_2,
-    float u1_6,
-    float u2_6,
+    float u1_3,
+    float u2_3,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
-    device type_4 const& r2_7,
-    device type_4 const& rt2_7,
+    device type_4 const& r2_2,
+    device type_4 const& rt2_4,
     constant ShadeParams& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e12 = range_scale(lobe_13);
+    float _e12 = range_scale(lobe_5);
     float _e15 = params.eps;
-    Connection _e16 = connect(li_4, x_26, n_36, ng_3, _e12, w_11, u1_6, u2_6, _e15, geo_nodes, geo_tris, lights, r2_7, rt2_7, _buffer_sizes);
+    Connection _e16 = connect(li_3, x_9, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15, geo_nodes, geo_tris, lights, r2_2, rt2_4, _buffer_sizes);
     if (_e16.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
-    metal::float3 l_10 = metal::normalize(_e16.y - x_26);
-    GpuLight _e29 = lights[li_4];
+    metal::float3 l_10 = metal::normalize(_e16.y - x_9);
+    GpuLight _e29 = lights[li_3];
     float _e30 = light_area(_e29);
     if (_e30 > 0.0) {
-        float _e35 = light_pdf(li_4, x_26, n_36, r_13, lobe_13, _e16.y, nee_2, true, lights, rt2_7, _buffer_sizes);
-        float _e37 = specular_probability(lobe_13);
-        float _e38 = bsdf_pdf(n_36, wo_1, l_10, m.alpha, _e37);
+        float _e35 = light_pdf(li_3, x_9, n_16, r_3, lobe_5, _e16.y, nee_2, true, lights, rt2_4, _buffer_sizes);
+        float _e37 = specular_probability(lobe_5);
+        float _e38 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e37);
         float _e39 = mis_weight(_e35, _e38);
         mis = _e39;
     }
-    metal::float3 _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_36, wo_1, l_10);
+    metal::float3 _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
     float _e48 = mis;
     return (_e45 * _e16.e) * _e48;
 }
@@ -2908,50 +1327,50 @@ kernel void main_(
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_10 const& bsh_nodes [[user(fake0)]]
 , device type_11 const& lights [[user(fake0)]]
-, device type_4 const& r2_7 [[user(fake0)]]
-, device type_4 const& rt2_7 [[user(fake0)]]
+, device type_4 const& r2_2 [[user(fake0)]]
+, device type_4 const& rt2_4 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_15 const& vertices [[user(fake0)]]
-, device type_16 const& materials [[user(fake0)]]
+, device type_13 const& vertices [[user(fake0)]]
+, device type_14 const& materials [[user(fake0)]]
 , device type_12& radiance [[user(fake0)]]
-, device type_17& candidates [[user(fake0)]]
+, device type_15& candidates [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};
     metal::float3 sum = metal::float3(0.0);
     uint s = 0u;
-    uint i_12 = gid.x;
+    uint i_4 = gid.x;
     uint _e4 = params.point_count;
-    if (i_12 >= _e4) {
+    if (i_4 >= _e4) {
         return;
     }
-    GpuPathVertex vtx = vertices[i_12];
+    GpuPathVertex vtx = vertices[i_4];
     if (vtx.alive == 0u) {
-        candidates[i_12] = 0u;
+        candidates[i_4] = 0u;
         return;
     }
-    metal::float3 x_27 = vtx.position;
-    metal::float3 n_40 = vtx.normal;
-    metal::float3 ng_4 = vtx.gnormal;
-    GpuMaterial m_4 = materials[vtx.material];
+    metal::float3 x_10 = vtx.position;
+    metal::float3 n_19 = vtx.normal;
+    metal::float3 ng_3 = vtx.gnormal;
+    GpuMaterial m_2 = materials[vtx.material];
     metal::float3 wo_2 = vtx.wo;
-    metal::float3 _e23 = mirror_dir(n_40, wo_2);
-    metal::float4 _e30 = receiver_lobe(m_4.albedo, m_4.metallic, m_4.f0_, m_4.f90_, m_4.alpha, metal::dot(n_40, wo_2));
+    metal::float3 _e23 = mirror_dir(n_19, wo_2);
+    metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_19, wo_2));
     float _e31 = range_scale(_e30);
     float scale_3 = metal::sqrt(_e31);
     uint _e35 = params.seed;
     uint _e38 = params.frame;
-    uint _e39 = point_stream(_e35, i_12, _e38);
+    uint _e39 = point_stream(_e35, i_4, _e38);
     uint _e40 = pick_stream(_e39);
     h = _e40;
-    Picks _e45 = bsh_collect(x_27, scale_3, _e39, bsh_nodes, _buffer_sizes);
-    candidates[i_12] = _e45.n;
+    Picks _e45 = bsh_collect(x_10, scale_3, _e39, bsh_nodes, _buffer_sizes);
+    candidates[i_4] = _e45.n;
     float _e51 = reservoir_weight(_e45.n, K);
-    uint2 loop_bound_7 = uint2(4294967295u);
+    uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
             uint _e75 = s;
             s = _e75 + 1u;
@@ -2975,7 +1394,7 @@ kernel void main_(
             uint _e67 = s;
             uint _e70 = h;
             float _e71 = xi_from_bits(_e70);
-            metal::float3 _e72 = shade_pick(_e45.light.inner[_e67], x_27, n_40, ng_4, m_4, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71, geo_nodes, geo_tris, lights, r2_7, rt2_7, params, _buffer_sizes);
+            metal::float3 _e72 = shade_pick(_e45.light.inner[_e67], x_10, n_19, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71, geo_nodes, geo_tris, lights, r2_2, rt2_4, params, _buffer_sizes);
             sum = _e65 + _e72;
         }
     }
@@ -2983,8 +1402,8 @@ kernel void main_(
     metal::float3 add = vtx.weight * _e78;
     bool _e80 = finite3_(add);
     if (_e80) {
-        metal::float4 _e83 = radiance[i_12];
-        radiance[i_12] = _e83 + metal::float4(add, 0.0);
+        metal::float4 _e83 = radiance[i_4];
+        radiance[i_4] = _e83 + metal::float4(add, 0.0);
         return;
     } else {
         return;

@@ -1,0 +1,418 @@
+//! Every kernel's bindings as data: one table per kernel and feature set
+//! ([`bindings`]), from which the templates' WGSL declarations
+//! ([`declarations`]), slc-wgpu's bind-group layouts and bind groups (by
+//! name) and the binding tables of the docs ([`markdown`], the crate's
+//! `docs/bindings.md`) all come. A test checks every kernel variant's
+//! table against the globals of its naga-validated module (group, binding,
+//! name, address space, access), so a table cannot drift from the
+//! kernel it describes.
+//!
+//! The path tracer's kernels (`pt_extend`, `pt_connect`) and `vpl_near`
+//! still declare their bindings in their templates; their tables here are
+//! checked against those declarations the same way.
+//!
+//! The tables below are [`docs`]'s output, committed in
+//! `docs/bindings.md` (a test regenerates it; `SLC_BLESS=1` accepts a
+//! change).
+#![doc = include_str!("../docs/bindings.md")]
+
+use crate::{DirectOutput, Features, Kernel, OutputFormat, Selection, SurfaceSource, VplSource};
+
+/// What is bound at one binding.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Resource {
+    /// `var<uniform>` of the named struct; `dynamic`: bound with a dynamic
+    /// offset (one slot per record or per dispatch).
+    Uniform {
+        /// WGSL type.
+        ty: &'static str,
+        /// Bound with a dynamic offset.
+        dynamic: bool,
+    },
+    /// `var<storage, read>` of the WGSL type.
+    Read(&'static str),
+    /// `var<storage, read_write>` of the WGSL type.
+    ReadWrite(&'static str),
+    /// `texture_2d<f32>`, read with `textureLoad` (unfilterable float).
+    Texture,
+    /// `texture_depth_2d`, read with `textureLoad`.
+    DepthTexture,
+    /// `texture_storage_2d<format, write>`.
+    StorageTexture(OutputFormat),
+}
+
+/// One binding of a kernel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Binding {
+    /// Bind group.
+    pub group: u32,
+    /// Binding number.
+    pub binding: u32,
+    /// The WGSL variable's name (bind groups are filled by it).
+    pub name: &'static str,
+    /// What is bound.
+    pub resource: Resource,
+    /// `false` for a table the shared library declares but this kernel
+    /// never reads (slc-core's IES lookup reads `slc_table`): declared, left
+    /// out of the bind-group layout.
+    pub bound: bool,
+    /// What it holds.
+    pub content: &'static str,
+    /// Who writes it.
+    pub writer: &'static str,
+}
+
+const fn b(group: u32, binding: u32, name: &'static str, resource: Resource, content: &'static str, writer: &'static str) -> Binding {
+    Binding { group, binding, name, resource, bound: true, content, writer }
+}
+
+const fn uniform(binding: u32, name: &'static str, ty: &'static str, dynamic: bool, content: &'static str) -> Binding {
+    b(0, binding, name, Resource::Uniform { ty, dynamic }, content, "host")
+}
+
+const fn read(binding: u32, name: &'static str, ty: &'static str, content: &'static str, writer: &'static str) -> Binding {
+    b(0, binding, name, Resource::Read(ty), content, writer)
+}
+
+const fn write(binding: u32, name: &'static str, ty: &'static str, content: &'static str) -> Binding {
+    b(0, binding, name, Resource::ReadWrite(ty), content, "this kernel")
+}
+
+const fn texture(binding: u32, name: &'static str, content: &'static str, writer: &'static str) -> Binding {
+    b(0, binding, name, Resource::Texture, content, writer)
+}
+
+/// The IES table at group 1, binding 0: bound where IES lights are compiled
+/// in, else only declared.
+fn ies_table(bound: bool) -> Binding {
+    Binding { bound, ..b(1, 0, "slc_table", Resource::Read("array<f32>"), "IES profiles, concatenated (a light's `ies_base` is its offset)", "host") }
+}
+
+/// The G-buffer surface an engine pass reads for `surface`: a depth
+/// texture (with the view's inverse view-projection in `view`) or world
+/// positions.
+fn surface(binding: u32, surface: SurfaceSource) -> Binding {
+    match surface {
+        SurfaceSource::Position => texture(binding, "position_tex", "world position; `w > 0` where a surface is", "engine (G-buffer)"),
+        SurfaceSource::Depth => b(
+            0,
+            binding,
+            "depth_tex",
+            Resource::DepthTexture,
+            "`Depth32Float` depth; `view.background` where no surface is",
+            "engine (depth pre-pass)",
+        ),
+        SurfaceSource::R32Depth => texture(binding, "depth_tex", "`R32Float` depth (x); `view.background` where no surface is", "engine (G-buffer)"),
+    }
+}
+
+/// The bindings of `kernel` specialised to `f`, in declaration order.
+pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
+    let ies = f.lights.ies;
+    let vec4 = "array<vec4f>";
+    let out = |binding, content| b(0, binding, "out_tex", Resource::StorageTexture(f.output_format), content, "this kernel");
+    let mut v = match kernel {
+        Kernel::LightUpdate => vec![
+            uniform(0, "params", "FrameParams", true, "light count, seed, frame"),
+            read(1, "ids", "array<u32>", "ξ id of each light", "host or `vpl_pack`"),
+            read(2, "rt2", "array<f32>", "threshold range² `r_t²`", "host or `vpl_pack`"),
+            write(3, "r2", "array<f32>", "random range² `r² = r_t²/(1−ξ)`"),
+        ],
+        Kernel::LightRanges => vec![
+            uniform(0, "params", "CullParams", true, "light count, seed, frame, the record's culling"),
+            read(1, "peaks", vec4, "each light's RGB peak intensity (xyz)", "host"),
+            write(2, "rt2", "array<f32>", "threshold range² (+∞: never culled)"),
+            write(3, "r2", "array<f32>", "random range²"),
+        ],
+        Kernel::BshRefit => vec![
+            uniform(0, "params", "RefitParams", true, "the level's first entry in `order` and node count"),
+            read(1, "order", "array<u32>", "node indices level by level, deepest first", "host"),
+            read(2, "bounds", vec4, "each light's bound: centre (xyz) and extent `R` (w)", "host"),
+            read(3, "r2", "array<f32>", "random range²", "`light_update` or `light_ranges`"),
+            b(0, 4, "bsh_nodes", Resource::ReadWrite("array<BshNode>"), "the BSH", "host (build), this kernel (refit)"),
+        ],
+        Kernel::VplTiled => vec![
+            uniform(0, "params", "VplParams", true, "image size, VPLs per subset, clamp distance, near field"),
+            read(1, "gb_position", vec4, "world position (w > 0: surface)", "host or `gbuffer_import`"),
+            read(2, "gb_normal", vec4, "unit normal (w: depth)", "host or `gbuffer_import`"),
+            read(3, "lights", "array<GpuLight>", "VPLs by subset, flux × period²", "host or `vpl_pack`"),
+            read(4, "rt2", "array<f32>", "threshold range²", "host or `vpl_pack`"),
+            read(5, "r2", "array<f32>", "random range² (clamp: R²)", "`light_update` or host"),
+            write(6, "irradiance", vec4, "irradiance (rgb), lights kept (w)"),
+        ],
+        Kernel::VplDenoise => vec![
+            uniform(0, "params", "VplParams", true, "image size"),
+            read(1, "gb_position", vec4, "world position (w > 0: surface)", "host or `gbuffer_import`"),
+            read(2, "gb_normal", vec4, "unit normal (w: depth)", "host or `gbuffer_import`"),
+            read(3, "irradiance", vec4, "interleaved irradiance", "`vpl_tiled`"),
+            write(4, "filtered", vec4, "denoised irradiance"),
+        ],
+        Kernel::VplNear => vec![
+            uniform(0, "params", "VplParams", true, "image size, `R_n²`, near blocks"),
+            read(1, "gb_position", vec4, "world position (w > 0: surface)", "host or `gbuffer_import`"),
+            read(2, "gb_normal", vec4, "unit normal (w: depth)", "host or `gbuffer_import`"),
+            read(3, "lights", "array<GpuLight>", "VPLs by subset, flux × period²", "host or `vpl_pack`"),
+            read(4, "near_slots", "array<u32>", "slot in `lights` of each VPL in near-block order", "host or `vpl_pack`"),
+            read(5, "near_boxes", "array<GpuNearBox>", "box of each near block", "host or `vpl_pack`"),
+            write(6, "irradiance", vec4, "the (denoised) far field, the near field added"),
+        ],
+        Kernel::BshReservoir => {
+            let mut v = vec![
+                uniform(0, "params", "ShadeParams", false, "point count, seed, frame, shadow-ray offset"),
+                read(1, "points", vec4, "shading points (w > 0: valid)", "host"),
+                read(2, "normals", vec4, "unit normals", "host"),
+                read(3, "lights", "array<GpuLight>", "the lights", "host"),
+                read(4, "rt2", "array<f32>", "threshold range²", "host"),
+                read(5, "r2", "array<f32>", "random range²", "`light_update`"),
+                read(6, "bsh_nodes", "array<BshNode>", "the refitted BSH", "`bsh_refit`"),
+            ];
+            if f.shadows {
+                v.push(read(7, "geo_nodes", "array<GpuGeoNode>", "geometry BVH nodes", "host"));
+                v.push(read(8, "geo_tris", "array<GpuTriangle>", "geometry BVH triangles", "host"));
+            }
+            v.push(write(9, "irradiance", vec4, "irradiance (rgb), in-range lights (w)"));
+            v
+        }
+        Kernel::DirectLight => {
+            let mut v = vec![
+                uniform(0, "view", "ViewParams", true, "inverse view-projection, eye, image size, depth background, seed, frame"),
+                surface(1, f.surface),
+                texture(2, "normal_tex", "world unit normal (xyz)", "engine (G-buffer)"),
+                out(
+                    3,
+                    match f.direct_output {
+                        DirectOutput::Radiance => "outgoing radiance (rgb), in-range lights (a); 0 where no surface is",
+                        _ => "irradiance (rgb), in-range lights (a); 0 where no surface is",
+                    },
+                ),
+            ];
+            if f.direct_output != DirectOutput::Irradiance {
+                v.push(texture(4, "base_color_tex", "linear base colour (rgb)", "engine (G-buffer)"));
+                v.push(texture(5, "metal_rough_tex", "glTF metallic-roughness: roughness (g), metallic (b)", "engine (G-buffer)"));
+            }
+            if f.direct_output == DirectOutput::Split {
+                v.push(b(
+                    0,
+                    6,
+                    "specular_tex",
+                    Resource::StorageTexture(f.output_format),
+                    "specular radiance (rgb); 0 where no surface is",
+                    "this kernel",
+                ));
+            }
+            v.push(ies_table(ies));
+            v.push(b(1, 1, "lights", Resource::Read("array<GpuLight>"), "the lights", "host"));
+            v.push(b(1, 2, "rt2", Resource::Read("array<f32>"), "threshold range²", "`light_ranges`"));
+            v.push(b(1, 3, "r2", Resource::Read("array<f32>"), "random range²", "`light_ranges`"));
+            v.push(b(1, 4, "bsh_nodes", Resource::Read("array<BshNode>"), "the refitted BSH", "`bsh_refit`"));
+            if f.selection == Selection::Weighted {
+                v.push(b(1, 5, "light_cones", Resource::Read("array<GpuLightCone>"), "each light's importance cone", "host"));
+            }
+            return v;
+        }
+        Kernel::PtConnect => {
+            let mut v = vec![
+                uniform(0, "params", "ShadeParams", true, "vertex count, seed, frame, shadow-ray offset"),
+                read(1, "vertices", "array<GpuPathVertex>", "path vertices", "`pt_extend`"),
+                read(2, "lights", "array<GpuLight>", "the lights", "host"),
+                read(3, "rt2", "array<f32>", "threshold range²", "host"),
+                read(4, "r2", "array<f32>", "random range²", "`light_update`"),
+                read(5, "bsh_nodes", "array<BshNode>", "the refitted BSH", "`bsh_refit`"),
+                read(6, "geo_nodes", "array<GpuGeoNode>", "geometry BVH nodes", "host"),
+                read(7, "geo_tris", "array<GpuTriangle>", "geometry BVH triangles", "host"),
+                read(8, "materials", "array<GpuMaterial>", "glTF metallic-roughness per material", "host"),
+                write(9, "radiance", vec4, "accumulated radiance"),
+                write(10, "candidates", "array<u32>", "what the traversal found per vertex (MIS)"),
+            ];
+            v.extend(pt_tables(ies));
+            return v;
+        }
+        Kernel::PtExtend => {
+            let mut v = vec![
+                uniform(0, "params", "PtParams", true, "camera, image, pass, depth"),
+                read(1, "lights", "array<GpuLight>", "the lights", "host"),
+                read(2, "rt2", "array<f32>", "threshold range²", "host"),
+                read(3, "bsh_nodes", "array<BshNode>", "the refitted BSH", "`bsh_refit`"),
+                read(4, "light_leaf", "array<u32>", "BSH leaf of each light", "host"),
+                read(5, "geo_nodes", "array<GpuGeoNode>", "geometry BVH nodes", "host"),
+                read(6, "geo_tris", "array<GpuTriangle>", "geometry BVH triangles (material, light)", "host"),
+                read(7, "materials", "array<GpuMaterial>", "glTF metallic-roughness per material", "host"),
+                read(8, "geo_normals", vec4, "vertex normals", "host"),
+                read(9, "candidates", "array<u32>", "what the last connection's traversal found", "`pt_connect`"),
+                write(10, "paths", "array<GpuPathState>", "per-pixel path state"),
+                write(11, "vertices", "array<GpuPathVertex>", "the vertex for `pt_connect`"),
+                write(12, "radiance", vec4, "accumulated radiance"),
+            ];
+            v.extend(pt_tables(ies));
+            return v;
+        }
+        Kernel::GbufferImport => vec![
+            uniform(0, "view", "ViewParams", true, "inverse view-projection, eye, image size, depth background"),
+            surface(1, f.surface),
+            texture(2, "normal_tex", "world unit normal (xyz)", "engine (G-buffer)"),
+            write(3, "gb_position", vec4, "world position (w: 1 where a surface is)"),
+            write(4, "gb_normal", vec4, "unit normal (w: distance from the eye)"),
+            write(5, "irradiance", vec4, "cleared"),
+        ],
+        Kernel::VplPack => {
+            let mut v = vec![uniform(0, "params", "PackParams", true, "count, RSM size, subset size, SLC parameters")];
+            match f.vpl_source {
+                VplSource::Rsm => v.extend([
+                    texture(1, "rsm_position", "RSM world position", "engine (RSM)"),
+                    texture(2, "rsm_normal", "RSM unit normal", "engine (RSM)"),
+                    texture(3, "rsm_flux", "RSM reflected flux", "engine (RSM)"),
+                ]),
+                VplSource::Buffer => v.push(read(1, "records", "array<GpuVplRecord>", "the engine's VPLs", "engine")),
+            }
+            v.extend([
+                write(4, "lights", "array<GpuLight>", "VPLs by subset, flux × period²"),
+                write(5, "ids", "array<u32>", "ξ id of each VPL"),
+                write(6, "rt2", "array<f32>", "threshold range² (0 when not SLC)"),
+                write(7, "r2", "array<f32>", "the fixed r² when not SLC"),
+                write(8, "near_slots", "array<u32>", "slot of each VPL in near-block order"),
+                write(9, "near_boxes", "array<GpuNearBox>", "box of each near block"),
+            ]);
+            v
+        }
+        Kernel::IrradianceExport => vec![
+            uniform(0, "view", "ViewParams", true, "image size"),
+            read(1, "gb_position", vec4, "world position (w > 0: surface)", "`gbuffer_import`"),
+            read(2, "irradiance", vec4, "irradiance (rgb), lights kept (w)", "`vpl_tiled`, `vpl_denoise`, `vpl_near`"),
+            out(3, "irradiance (rgb), lights kept (a); 0 where no surface is"),
+        ],
+        Kernel::SceneRaster => vec![
+            uniform(0, "params", "MapParams", false, "view-projection and the map's frame"),
+            read(1, "materials", "array<GpuMaterial>", "albedo and emission per material", "host"),
+        ],
+        Kernel::PrimaryDirect => vec![
+            uniform(0, "params", "MapParams", false, "the primary light's shadow map"),
+            uniform(1, "image", "ImageParams", false, "eye, image size"),
+            texture(2, "position_tex", "G-buffer world position", "`scene_raster`"),
+            texture(3, "normal_tex", "G-buffer normal", "`scene_raster`"),
+            texture(4, "shadow_map", "distance to the first surface per texel", "`scene_raster`"),
+            write(5, "direct", vec4, "the primary light's direct irradiance"),
+        ],
+        Kernel::FrameCompose => vec![
+            uniform(0, "image", "ImageParams", false, "eye, image size"),
+            texture(1, "position_tex", "G-buffer world position", "`scene_raster`"),
+            texture(2, "normal_tex", "G-buffer normal (w: material)", "`scene_raster`"),
+            texture(3, "indirect_tex", "indirect irradiance", "`irradiance_export`"),
+            read(4, "direct", vec4, "direct irradiance", "`primary_direct`"),
+            read(5, "materials", "array<GpuMaterial>", "albedo and emission per material", "host"),
+            out(6, "radiance `L_e + ρ/π·(E_direct + E_indirect)`"),
+        ],
+    };
+    v.push(ies_table(ies && kernel == Kernel::BshReservoir));
+    v
+}
+
+/// Group 1 of the path tracer's kernels: the IES table, the power alias
+/// table, the importance cones and the light BVH.
+fn pt_tables(ies: bool) -> [Binding; 4] {
+    [
+        Binding { bound: true, ..ies_table(ies) },
+        b(1, 1, "power_table", Resource::Read("array<vec4f>"), "alias table `(keep, alias bits, pmf, 0)` per light", "host"),
+        b(1, 2, "light_cones", Resource::Read("array<GpuLightCone>"), "importance cone and light-BVH leaf per light", "host"),
+        b(1, 3, "light_bvh", Resource::Read("array<GpuLightBvhNode>"), "the light BVH", "host"),
+    ]
+}
+
+/// WGSL declarations of `bindings` (one line each).
+pub fn declarations(bindings: &[Binding]) -> String {
+    let mut s = String::new();
+    for b in bindings {
+        let ty = match b.resource {
+            Resource::Uniform { ty, .. } => format!("var<uniform> {}: {ty}", b.name),
+            Resource::Read(ty) => format!("var<storage, read> {}: {ty}", b.name),
+            Resource::ReadWrite(ty) => format!("var<storage, read_write> {}: {ty}", b.name),
+            Resource::Texture => format!("var {}: texture_2d<f32>", b.name),
+            Resource::DepthTexture => format!("var {}: texture_depth_2d", b.name),
+            Resource::StorageTexture(f) => format!("var {}: texture_storage_2d<{}, write>", b.name, f.wgsl()),
+        };
+        s.push_str(&format!("@group({}) @binding({}) {ty};\n", b.group, b.binding));
+    }
+    s
+}
+
+/// The bindings as a Markdown table (`group.binding | type | content |
+/// written by`); bindings a kernel only declares are marked so.
+pub fn markdown(bindings: &[Binding]) -> String {
+    let mut s = String::from("| group.binding | type | content | written by |\n|---|---|---|---|\n");
+    for b in bindings {
+        let ty = match b.resource {
+            Resource::Uniform { ty, dynamic: true } => format!("`uniform {ty}` (dynamic offset)"),
+            Resource::Uniform { ty, dynamic: false } => format!("`uniform {ty}`"),
+            Resource::Read(ty) => format!("`storage<read> {}: {ty}`", b.name),
+            Resource::ReadWrite(ty) => format!("`storage<read_write> {}: {ty}`", b.name),
+            Resource::Texture => format!("`{}: texture_2d<f32>`", b.name),
+            Resource::DepthTexture => format!("`{}: texture_depth_2d`", b.name),
+            Resource::StorageTexture(f) => format!("`{}: texture_storage_2d<{}, write>`", b.name, f.wgsl()),
+        };
+        let content = if b.bound { b.content.to_string() } else { format!("{} (declared, not read: not bound)", b.content) };
+        s.push_str(&format!("| {}.{} | {ty} | {content} | {} |\n", b.group, b.binding, b.writer));
+    }
+    s
+}
+
+/// How many of each kind of binding a kernel's bind-group layouts hold
+/// (the ones it binds), per shader stage: what device limits it needs.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct BindingCounts {
+    /// Uniform buffers.
+    pub uniform_buffers: u32,
+    /// Of which bound with dynamic offsets.
+    pub dynamic_uniform_buffers: u32,
+    /// Storage buffers.
+    pub storage_buffers: u32,
+    /// Sampled textures.
+    pub sampled_textures: u32,
+    /// Storage textures.
+    pub storage_textures: u32,
+    /// Bind groups (highest group + 1).
+    pub bind_groups: u32,
+}
+
+/// [`BindingCounts`] of the bound entries of `bindings`.
+pub fn counts(bindings: &[Binding]) -> BindingCounts {
+    let mut c = BindingCounts::default();
+    for b in bindings.iter().filter(|b| b.bound) {
+        match b.resource {
+            Resource::Uniform { dynamic, .. } => {
+                c.uniform_buffers += 1;
+                c.dynamic_uniform_buffers += dynamic as u32;
+            }
+            Resource::Read(_) | Resource::ReadWrite(_) => c.storage_buffers += 1,
+            Resource::Texture | Resource::DepthTexture => c.sampled_textures += 1,
+            Resource::StorageTexture(_) => c.storage_textures += 1,
+        }
+        c.bind_groups = c.bind_groups.max(b.group + 1);
+    }
+    c
+}
+
+/// Every kernel's binding table as Markdown, for the feature sets the
+/// backends use: the VPL kernels for VPLs, the direct pass's kernel with
+/// weighted picks of IES lights from a depth buffer with split outputs,
+/// the others with [`Features::default`].
+pub fn docs() -> String {
+    use crate::LightSet;
+    let vpl = Features { lights: LightSet { vpl: true, ..LightSet::default() }, ..Features::default() };
+    let direct = Features {
+        selection: Selection::Weighted,
+        surface: SurfaceSource::Depth,
+        direct_output: DirectOutput::Split,
+        shadows: false,
+        ..Features::default()
+    };
+    let mut s = String::new();
+    for &k in &Kernel::ALL {
+        let f = match k {
+            Kernel::DirectLight => direct,
+            k if k.is_vpl_frame() => vpl,
+            _ => Features::default(),
+        };
+        s.push_str(&format!("\n### `{}`\n\n", k.name()));
+        s.push_str(&markdown(&bindings(k, &f)));
+    }
+    s
+}

@@ -1,0 +1,44 @@
+// slc-weighted over the BSH: every in-range candidate gets the weight
+// w = ĝ/p (slc-core's cone_weight through `light_weight`: its importance for
+// the receiver over its roulette probability), and K independent one-slot
+// weighted reservoirs pick among them (a pick of weight w is then weighted
+// W/(K·w)). A zero weight (no light can arrive) is never picked.
+
+/// The weighted picks at a point: each slot's light and weight, the
+/// candidates' total weight, how many candidates the traversal found and
+/// the random stream's state after the traversal.
+struct WeightedPicks {
+    light: array<u32, K>,
+    w: array<f32, K>,
+    w_sum: f32,
+    n: u32,
+    h: u32,
+}
+
+/// The lights whose range sphere, scaled for the receiver by `scale` (√s;
+/// slc-core's `bsh_scaled_radius`), contains `x`, weighed for the receiver
+/// `(x, n, r, lobe)` and streamed through K weighted one-slot reservoirs
+/// driven by the stream `h`.
+fn bsh_weighted_collect(x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, scale: f32, h0: u32) -> WeightedPicks {
+    var picks: WeightedPicks;
+    picks.w_sum = 0.0;
+    picks.n = 0u;
+    var h = h0;
+    for (var b = bsh_next_leaf_scaled(BSH, bsh_first(BSH), x, scale); b != BSH_NONE; b = bsh_next_leaf_scaled(BSH, bsh_nodes[b].next, x, scale)) {
+        picks.n += 1u;
+        let li = bsh_nodes[b].light;
+        let w = light_weight(li, x, n, r, lobe);
+        if w > 0.0 {
+            picks.w_sum += w;
+            for (var s = 0u; s < K; s++) {
+                h = pcg_hash(h);
+                if weighted_replace(w, picks.w_sum, xi_from_bits(h)) {
+                    picks.light[s] = li;
+                    picks.w[s] = w;
+                }
+            }
+        }
+    }
+    picks.h = h;
+    return picks;
+}

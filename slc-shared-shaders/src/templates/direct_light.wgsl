@@ -1,0 +1,133 @@
+{% include "header.wgsl" %}
+{% include "lights.wgsl" %}
+/// Unshadowed: the engine owns visibility.
+fn occluded(a: vec3f, b: vec3f) -> bool {
+    return false;
+}
+{{ bindings }}
+{% include "bsh_collect.wgsl" %}
+{% if selection == "weighted" %}
+{% include "light_weight.wgsl" %}
+{% include "bsh_weighted.wgsl" %}
+{% endif %}
+{% include "gbuffer_read.wgsl" %}
+// The engine's direct pass: at every G-buffer pixel, the lights whose random
+// range reaches it (BSH traversal), {% if selection == "weighted" %}{{ k }} importance-weighted picks among them{% elif selection == "all" %}every one of them (exact given ξ){% else %}{{ k }} uniform picks among them (Algorithm R){% endif %},
+// each sampled (a point on a triangle), RR-tested at that point with its own
+// range and weighted by 1/p and its selection weight. Output: {% if pbr == "radiance" %}outgoing radiance
+// under the G-buffer's glTF metallic-roughness material{% elif pbr == "split" %}irradiance, and the
+// specular radiance of the G-buffer's material in specular_tex{% else %}irradiance{% endif %} (rgb) and the number of
+// in-range lights (a); zero where no surface is.
+
+/// What the picks add at a pixel: irradiance{% if pbr != "none" %}, and the material's diffuse and specular radiance{% endif %}.
+struct Shaded {
+    e: vec3f,
+    diffuse: vec3f,
+    specular: vec3f,
+}
+
+/// The surface's material (glTF metallic-roughness) and view.
+struct Material {
+    base: vec3f,
+    metallic: f32,
+    alpha: f32,
+    v: vec3f,
+}
+
+/// One pick of light `li` at `x` (normal `n`) with selection weight `w`,
+/// its ranges² scaled by the receiver's `s` (slc-core's `range_scale`).
+fn shade_pick(li: u32, x: vec3f, n: vec3f, m: Material, s2: f32, w: f32, u1: f32, u2: f32) -> Shaded {
+    var s: Shaded;
+    let c = connect(li, x, n, n, s2, w, u1, u2, 0.0);
+    s.e = c.e;
+    s.diffuse = vec3f(0.0);
+    s.specular = vec3f(0.0);
+{% if pbr != "none" %}
+    if c.cos_x > 0.0 {
+        let l = normalize(c.y - x);
+        s.diffuse = diffuse_brdf(m.base, m.metallic, view.f0_d, view.f90_d, half_cosine(m.v, l)) * c.e;
+        s.specular = specular_brdf(m.base, m.metallic, view.f0_d, view.f90_d, m.alpha, n, m.v, l) * c.e;
+    }
+{% endif %}
+    return s;
+}
+
+fn add(a: Shaded, b: Shaded) -> Shaded {
+    return Shaded(a.e + b.e, a.diffuse + b.diffuse, a.specular + b.specular);
+}
+
+@compute @workgroup_size({{ tile }}, {{ tile }})
+fn main(@builtin(global_invocation_id) gid: vec3u) {
+    if gid.x >= view.width || gid.y >= view.height {
+        return;
+    }
+    let texel = vec2i(i32(gid.x), i32(gid.y));
+    let s = surface_at(texel);
+    let nn = textureLoad(normal_tex, texel, 0).xyz;
+    let len2 = dot(nn, nn);
+    if s.w <= 0.0 || !(len2 > 0.0) {
+        textureStore(out_tex, texel, vec4f(0.0));
+{% if pbr == "split" %}
+        textureStore(specular_tex, texel, vec4f(0.0));
+{% endif %}
+        return;
+    }
+    let x = s.xyz;
+    let n = nn / sqrt(len2);
+    var m: Material;
+    // The receiver as light selection sees it: Lambertian for irradiance;
+    // with a material, its lobe, mirror direction and range scale s (a
+    // glossy lobe reaches farther lights; slc-core's `range_scale`).
+    var lobe = vec4f(1.0, 0.0, 1.0, 1.0);
+    var r = n;
+{% if pbr != "none" %}
+    let mr = textureLoad(metal_rough_tex, texel, 0);
+    m = Material(textureLoad(base_color_tex, texel, 0).xyz, saturate(mr.z), ggx_alpha(saturate(mr.y)), normalize(view.eye - x));
+    lobe = receiver_lobe(m.base, m.metallic, view.f0_d, view.f90_d, m.alpha, dot(n, m.v));
+    r = mirror_dir(n, m.v);
+{% endif %}
+    let s2 = range_scale(lobe);
+    let scale = sqrt(s2);
+    let seed = point_stream(view.seed, gid.y * view.width + gid.x, view.frame);
+    var h = pick_stream(seed);
+    var t = Shaded(vec3f(0.0), vec3f(0.0), vec3f(0.0));
+{% if selection == "weighted" %}
+    let picks = bsh_weighted_collect(x, n, r, lobe, scale, seed);
+    if picks.w_sum > 0.0 {
+        for (var k = 0u; k < K; k++) {
+            h = pcg_hash(h);
+            let u1 = xi_from_bits(h);
+            h = pcg_hash(h);
+            t = add(t, shade_pick(picks.light[k], x, n, m, s2, weighted_pick_weight(picks.w_sum, picks.w[k], K), u1, xi_from_bits(h)));
+        }
+    }
+    let count = picks.n;
+{% elif selection == "all" %}
+    var count = 0u;
+    for (var b = bsh_next_leaf_scaled(BSH, bsh_first(BSH), x, scale); b != BSH_NONE; b = bsh_next_leaf_scaled(BSH, bsh_nodes[b].next, x, scale)) {
+        count += 1u;
+        h = pcg_hash(h);
+        let u1 = xi_from_bits(h);
+        h = pcg_hash(h);
+        t = add(t, shade_pick(bsh_nodes[b].light, x, n, m, s2, 1.0, u1, xi_from_bits(h)));
+    }
+{% else %}
+    let picks = bsh_collect(x, scale, seed);
+    let w_res = reservoir_weight(picks.n, K);
+    for (var k = 0u; k < min(picks.n, K); k++) {
+        h = pcg_hash(h);
+        let u1 = xi_from_bits(h);
+        h = pcg_hash(h);
+        t = add(t, shade_pick(picks.light[k], x, n, m, s2, w_res, u1, xi_from_bits(h)));
+    }
+    let count = picks.n;
+{% endif %}
+{% if pbr == "radiance" %}
+    textureStore(out_tex, texel, vec4f(t.diffuse + t.specular, f32(count)));
+{% else %}
+    textureStore(out_tex, texel, vec4f(t.e, f32(count)));
+{% endif %}
+{% if pbr == "split" %}
+    textureStore(specular_tex, texel, vec4f(t.specular, 0.0));
+{% endif %}
+}

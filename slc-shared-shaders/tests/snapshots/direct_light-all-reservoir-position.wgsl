@@ -1,0 +1,785 @@
+struct GpuLight {
+    p0_: vec3<f32>,
+    kind: u32,
+    p1_: vec3<f32>,
+    a: f32,
+    p2_: vec3<f32>,
+    b: f32,
+    intensity: vec3<f32>,
+    ies_base: u32,
+}
+
+struct ViewParams {
+    c0_: vec4<f32>,
+    c1_: vec4<f32>,
+    c2_: vec4<f32>,
+    c3_: vec4<f32>,
+    eye: vec3<f32>,
+    width: u32,
+    height: u32,
+    background: f32,
+    seed: u32,
+    frame: u32,
+    f0_d: vec3<f32>,
+    f90_d: f32,
+}
+
+struct BshNode {
+    center: vec3<f32>,
+    radius: f32,
+    child: u32,
+    next: u32,
+    light: u32,
+    extent: f32,
+}
+
+struct Picks {
+    light: array<u32, 8>,
+    n: u32,
+}
+
+struct Connection {
+    e: vec3<f32>,
+    y: vec3<f32>,
+    cos_x: f32,
+}
+
+struct Shaded {
+    e: vec3<f32>,
+    diffuse: vec3<f32>,
+    specular: vec3<f32>,
+}
+
+struct Material {
+    base: vec3<f32>,
+    metallic: f32,
+    alpha: f32,
+    v: vec3<f32>,
+}
+
+const LIGHT_POINT: u32 = 0u;
+const LIGHT_SPOT: u32 = 1u;
+const LIGHT_IES: u32 = 2u;
+const LIGHT_TRIANGLE: u32 = 3u;
+const LIGHT_VPL: u32 = 4u;
+const NO_LIGHT: u32 = 4294967295u;
+const MAP_CAMERA: u32 = 0u;
+const MAP_PERSPECTIVE: u32 = 1u;
+const MAP_ORTHOGRAPHIC: u32 = 2u;
+const XI_STEP: f32 = 0.000000059604645f;
+const PICK_STREAM: u32 = 2654435769u;
+const TWO_PI: f32 = 6.2831855f;
+const CULL_RADIUS_SCALE: f32 = 1.000001f;
+const SPHERE_PAD: f32 = 0.00000047683716f;
+const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
+const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const INV_PI: f32 = 0.31830987f;
+const MIN_D2_: f32 = 0.000000000001f;
+const BSH_NONE: u32 = 4294967295u;
+const RESERVOIR_FULL: u32 = 4294967295u;
+const GGX_ALPHA_MIN: f32 = 0.001f;
+const RANGE_SCALE_MAX: f32 = 64f;
+const LIGHT_BVH_LEAF: u32 = 4294967295u;
+const ONE_MINUS_EPSILON: f32 = 0.99999994f;
+const F32_MAX: f32 = 340282350000000000000000000000000000000f;
+const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
+const DEPTH_SIGMA: f32 = 0.05f;
+const COVER_WEIGHT: f32 = 0.1f;
+const NEAR_BLOCK: u32 = 64u;
+const ROULETTE_DEPTH: u32 = 2u;
+const K: u32 = 8u;
+const BSH: u32 = 0u;
+
+@group(1) @binding(0) 
+var<storage> slc_table: array<f32>;
+@group(0) @binding(0) 
+var<uniform> view: ViewParams;
+@group(0) @binding(1) 
+var position_tex: texture_2d<f32>;
+@group(0) @binding(2) 
+var normal_tex: texture_2d<f32>;
+@group(0) @binding(3) 
+var out_tex: texture_storage_2d<rgba32float,write>;
+@group(1) @binding(1) 
+var<storage> lights: array<GpuLight>;
+@group(1) @binding(2) 
+var<storage> rt2_2: array<f32>;
+@group(1) @binding(3) 
+var<storage> r2_2: array<f32>;
+@group(1) @binding(4) 
+var<storage> bsh_nodes: array<BshNode>;
+
+fn at(tab: u32, i: u32) -> f32 {
+    let _e4 = slc_table[i];
+    return _e4;
+}
+
+fn to_f32_(u: u32) -> f32 {
+    return f32(u);
+}
+
+fn to_u32_(x: f32) -> u32 {
+    return u32(x);
+}
+
+fn mul_lo_u32_(a: u32, b: u32) -> u32 {
+    return (a * b);
+}
+
+fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
+    return (a_1 + b_1);
+}
+
+fn xi_from_bits(bits: u32) -> f32 {
+    let _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+fn pcg_hash(x_1: u32) -> u32 {
+    let _e2 = mul_lo_u32_(x_1, 747796405u);
+    let _e4 = add_wrap_u32_(_e2, 2891336453u);
+    let _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+fn point_stream(seed: u32, point: u32, frame: u32) -> u32 {
+    let _e3 = pcg_hash(frame);
+    let _e5 = pcg_hash((point ^ _e3));
+    let _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+fn pick_stream(stream: u32) -> u32 {
+    let _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+fn slc_weight(rt2_: f32, d2_: f32) -> f32 {
+    if (d2_ <= rt2_) {
+        return 1f;
+    }
+    return (d2_ / rt2_);
+}
+
+fn slc_keep(r2_: f32, d2_1: f32) -> bool {
+    return (d2_1 < r2_);
+}
+
+fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_2: vec3<f32>) -> bool {
+    let v = (x_2 - c);
+    return (dot(v, v) <= (r_1 * r_1));
+}
+
+fn inverse_square(d2_2: f32) -> f32 {
+    return (1f / max(d2_2, MIN_D2_));
+}
+
+fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
+    let _e4 = inverse_square(d2_3);
+    let _e6 = slc_weight(rt2_1, d2_3);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_2: bool;
+    var local_3: bool;
+
+    let v_1 = (x_3 - y);
+    let d2_4 = dot(v_1, v_1);
+    let _e7 = slc_keep(r2_1, d2_4);
+    if !(!(_e7)) {
+        local_2 = !((d2_4 > 0f));
+    } else {
+        local_2 = true;
+    }
+    let _e16 = local_2;
+    if _e16 {
+        return 0f;
+    }
+    let w_5 = (v_1 / vec3(sqrt(d2_4)));
+    let cos_x_1 = -(dot(n, w_5));
+    if !((cos_x_1 <= 0f)) {
+        local_3 = (dot(ng, w_5) >= 0f);
+    } else {
+        local_3 = true;
+    }
+    let _e32 = local_3;
+    if _e32 {
+        return 0f;
+    }
+    return cos_x_1;
+}
+
+fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
+    if (cos_inner <= cos_outer) {
+        return select(0f, 1f, (cos_theta >= cos_outer));
+    }
+    let t_2 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
+    return ((t_2 * t_2) * (3f - (2f * t_2)));
+}
+
+fn triangle_lobe(n_1: vec3<f32>, area: f32, w_1: vec3<f32>) -> f32 {
+    return (area * max(dot(n_1, w_1), 0f));
+}
+
+fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_1: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
+    let su = sqrt(u1_);
+    let b0_ = (1f - su);
+    let b1_ = (u2_ * su);
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1f - b0_) - b1_)));
+}
+
+fn atan_portable(x_4: f32) -> f32 {
+    var base: f32 = 0f;
+    var t_1: f32;
+
+    let a_8 = abs(x_4);
+    t_1 = a_8;
+    if (a_8 > 2.4142137f) {
+        base = 1.5707964f;
+        t_1 = (-1f / a_8);
+    } else {
+        if (a_8 > 0.41421357f) {
+            base = 0.7853982f;
+            t_1 = ((a_8 - 1f) / (a_8 + 1f));
+        }
+    }
+    let _e18 = t_1;
+    let _e19 = t_1;
+    let z = (_e18 * _e19);
+    let _e21 = base;
+    let _e33 = t_1;
+    let _e35 = t_1;
+    let r_2 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
+    return select(r_2, -(r_2), (x_4 < 0f));
+}
+
+fn atan2_portable(y_1: f32, x_5: f32) -> f32 {
+    if (x_5 == 0f) {
+        if (y_1 > 0f) {
+            return 1.5707964f;
+        }
+        if (y_1 < 0f) {
+            return -1.5707964f;
+        }
+        return 0f;
+    }
+    let _e12 = atan_portable((y_1 / x_5));
+    if (x_5 > 0f) {
+        return _e12;
+    }
+    if (y_1 >= 0f) {
+        return (_e12 + 3.1415927f);
+    }
+    return (_e12 - 3.1415927f);
+}
+
+fn ies_fold_c(c_2: f32, h_first: f32, h_last: f32) -> f32 {
+    var a_3: f32;
+
+    a_3 = (c_2 - (360f * floor((c_2 / 360f))));
+    if (h_last <= 0f) {
+        return 0f;
+    }
+    if (h_last <= 90f) {
+        let _e15 = a_3;
+        if (_e15 > 180f) {
+            let _e18 = a_3;
+            a_3 = (360f - _e18);
+        }
+        let _e21 = a_3;
+        if (_e21 > 90f) {
+            let _e24 = a_3;
+            a_3 = (180f - _e24);
+        }
+        let _e27 = a_3;
+        return _e27;
+    }
+    if (h_first >= 90f) {
+        let _e30 = a_3;
+        if (_e30 < 90f) {
+            let _e33 = a_3;
+            a_3 = (180f - _e33);
+        } else {
+            let _e36 = a_3;
+            if (_e36 > 270f) {
+                let _e39 = a_3;
+                a_3 = (540f - _e39);
+            }
+        }
+        let _e42 = a_3;
+        return _e42;
+    }
+    if (h_last <= 180f) {
+        let _e45 = a_3;
+        if (_e45 > 180f) {
+            let _e48 = a_3;
+            a_3 = (360f - _e48);
+        }
+        let _e51 = a_3;
+        return _e51;
+    }
+    let _e52 = a_3;
+    return _e52;
+}
+
+fn ies_segment(tab_1: u32, start: u32, n_2: u32, x_6: f32) -> u32 {
+    var lo: u32 = 0u;
+    var hi: u32;
+
+    if (n_2 < 2u) {
+        return 0u;
+    }
+    hi = (n_2 - 1u);
+    loop {
+        let _e12 = hi;
+        let _e13 = lo;
+        if ((_e12 - _e13) > 1u) {
+        } else {
+            break;
+        }
+        {
+            let _e17 = lo;
+            let _e18 = hi;
+            let mid = ((_e17 + _e18) >> 1u);
+            let _e23 = at(tab_1, (start + mid));
+            if (_e23 <= x_6) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+    }
+    let _e25 = lo;
+    return _e25;
+}
+
+fn ies_lerp_t(a0_: f32, a1_: f32, x_7: f32) -> f32 {
+    if (a1_ <= a0_) {
+        return 0f;
+    }
+    return saturate(((x_7 - a0_) / (a1_ - a0_)));
+}
+
+fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_3: f32) -> f32 {
+    var local_4: bool;
+
+    let _e4 = at(tab_2, base_1);
+    let _e5 = to_u32_(_e4);
+    let _e8 = at(tab_2, (base_1 + 1u));
+    let _e9 = to_u32_(_e8);
+    let v0_ = (base_1 + 2u);
+    let h0_ = (v0_ + _e5);
+    let c0_ = (h0_ + _e9);
+    let _e14 = at(tab_2, v0_);
+    if !((gamma < _e14)) {
+        let _e22 = at(tab_2, ((v0_ + _e5) - 1u));
+        local_4 = (gamma > _e22);
+    } else {
+        local_4 = true;
+    }
+    let _e25 = local_4;
+    if _e25 {
+        return 0f;
+    }
+    let _e27 = at(tab_2, h0_);
+    let _e31 = at(tab_2, ((h0_ + _e9) - 1u));
+    let _e32 = ies_fold_c(c_3, _e27, _e31);
+    let _e33 = ies_segment(tab_2, v0_, _e5, gamma);
+    let _e34 = ies_segment(tab_2, h0_, _e9, _e32);
+    let iv1_ = min((_e33 + 1u), (_e5 - 1u));
+    let ih1_ = min((_e34 + 1u), (_e9 - 1u));
+    let _e46 = at(tab_2, (v0_ + _e33));
+    let _e48 = at(tab_2, (v0_ + iv1_));
+    let _e49 = ies_lerp_t(_e46, _e48, gamma);
+    let _e51 = at(tab_2, (h0_ + _e34));
+    let _e53 = at(tab_2, (h0_ + ih1_));
+    let _e54 = ies_lerp_t(_e51, _e53, _e32);
+    let _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
+    let _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
+    let a_9 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
+    let _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
+    let _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
+    let b_7 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
+    return ((a_9 * (1f - _e54)) + (b_7 * _e54));
+}
+
+fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
+    let _e9 = atan2_portable(sqrt(((wr * wr) + (ws * ws))), wn);
+    let gamma_1 = degrees(_e9);
+    let on_axis = ((abs(wr) + abs(ws)) <= 0f);
+    let _e16 = atan2_portable(ws, wr);
+    let c_6 = select(degrees(_e16), 0f, on_axis);
+    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_6);
+    return _e20;
+}
+
+fn ies_light_candela(tab_4: u32, base_3: u32, nadir: vec3<f32>, reference: vec3<f32>, w_2: vec3<f32>) -> f32 {
+    let side = cross(reference, nadir);
+    let _e9 = ies_candela_dir(tab_4, base_3, dot(w_2, nadir), dot(w_2, reference), dot(w_2, side));
+    return _e9;
+}
+
+fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
+    if (scale == 1f) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
+fn mul_hi_u32_(a_4: u32, b_3: u32) -> u32 {
+    let a_lo = (a_4 & 65535u);
+    let a_hi = (a_4 >> 16u);
+    let b_lo = (b_3 & 65535u);
+    let b_hi = (b_3 >> 16u);
+    let ll = (a_lo * b_lo);
+    let lh = (a_lo * b_hi);
+    let hl = (a_hi * b_lo);
+    let hh = (a_hi * b_hi);
+    let mid_1 = (((ll >> 16u) + (lh & 65535u)) + (hl & 65535u));
+    return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u));
+}
+
+fn uniform_index(n_3: u32, hi_1: u32, lo_1: u32) -> u32 {
+    let _e3 = mul_lo_u32_(hi_1, n_3);
+    let _e4 = mul_hi_u32_(hi_1, n_3);
+    let _e5 = mul_hi_u32_(lo_1, n_3);
+    if (_e3 > (4294967295u - _e5)) {
+        return (_e4 + 1u);
+    }
+    return _e4;
+}
+
+fn reservoir_slot(n_4: u32, k_1: u32, hi_2: u32, lo_2: u32) -> u32 {
+    if (n_4 <= k_1) {
+        return (n_4 - 1u);
+    }
+    let _e7 = uniform_index(n_4, hi_2, lo_2);
+    if (_e7 < k_1) {
+        return _e7;
+    }
+    return k_1;
+}
+
+fn reservoir_takes(n_5: u32) -> bool {
+    return (n_5 < RESERVOIR_FULL);
+}
+
+fn reservoir_weight(n_6: u32, k_2: u32) -> f32 {
+    let _e2 = to_f32_(n_6);
+    let _e3 = to_f32_(k_2);
+    return max((_e2 / _e3), 1f);
+}
+
+fn smith_root(cos_: f32, alpha: f32) -> f32 {
+    let a2_ = (alpha * alpha);
+    return sqrt((((cos_ * cos_) * (1f - a2_)) + a2_));
+}
+
+fn receiver_peak(lobe_1: vec4<f32>) -> f32 {
+    let _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25f) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+fn range_scale(lobe_2: vec4<f32>) -> f32 {
+    if (lobe_2.y <= 0f) {
+        return 1f;
+    }
+    let _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
+fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
+    var local_5: bool;
+
+    let n_9 = cross((b_4 - a_5), (c_4 - a_5));
+    let l2_ = dot(n_9, n_9);
+    if !(!((l2_ > 0f))) {
+        local_5 = !((l2_ < 300000000000000000000000000000000000000f));
+    } else {
+        local_5 = true;
+    }
+    let _e17 = local_5;
+    if _e17 {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    return (n_9 / vec3(sqrt(l2_)));
+}
+
+fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
+    switch l.kind {
+        case 0u: {
+            return l.intensity;
+        }
+        case 1u: {
+            let _e9 = spot_falloff(dot(l.p1_, w_3), l.a, l.b);
+            return (l.intensity * _e9);
+        }
+        case 2u: {
+            let _e16 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3);
+            return (l.intensity * _e16);
+        }
+        case 3u: {
+            let _e22 = triangle_normal(l.p0_, l.p1_, l.p2_);
+            let _e24 = triangle_lobe(_e22, l.a, w_3);
+            return (l.intensity * _e24);
+        }
+        default: {
+            return vec3(0f);
+        }
+    }
+}
+
+fn light_point(l_1: GpuLight, u1_1: f32, u2_1: f32) -> vec3<f32> {
+    if (l_1.kind == LIGHT_TRIANGLE) {
+        let _e9 = triangle_sample(l_1.p0_, l_1.p1_, l_1.p2_, u1_1, u2_1);
+        return _e9;
+    }
+    return l_1.p0_;
+}
+
+fn occluded(a_6: vec3<f32>, b_5: vec3<f32>) -> bool {
+    return false;
+}
+
+fn bsh_node(nodes: u32, i_1: u32) -> BshNode {
+    let _e4 = bsh_nodes[i_1];
+    return _e4;
+}
+
+fn bsh_count(nodes_1: u32) -> u32 {
+    return arrayLength((&bsh_nodes));
+}
+
+fn bsh_first(nodes_2: u32) -> u32 {
+    let _e1 = bsh_count(nodes_2);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+fn bsh_next_leaf_scaled(nodes_3: u32, start_1: u32, x_8: vec3<f32>, scale_1: f32) -> u32 {
+    var i_2: u32;
+
+    i_2 = start_1;
+    loop {
+        let _e5 = i_2;
+        if (_e5 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            let _e8 = i_2;
+            let _e9 = bsh_node(nodes_3, _e8);
+            let _e11 = bsh_scaled_radius(_e9, scale_1);
+            let _e12 = sphere_contains_point(_e9.center, _e11, x_8);
+            if _e12 {
+                if (_e9.child == BSH_NONE) {
+                    let _e16 = i_2;
+                    return _e16;
+                }
+                i_2 = _e9.child;
+            } else {
+                i_2 = _e9.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+fn bsh_collect(x_9: vec3<f32>, scale_2: f32, seed_1: u32) -> Picks {
+    var picks: Picks;
+    var h_1: u32;
+    var i_3: u32;
+
+    picks.n = 0u;
+    h_1 = seed_1;
+    let _e9 = bsh_first(BSH);
+    let _e10 = bsh_next_leaf_scaled(BSH, _e9, x_9, scale_2);
+    i_3 = _e10;
+    loop {
+        let _e12 = i_3;
+        if (_e12 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            let _e16 = picks.n;
+            let _e17 = reservoir_takes(_e16);
+            if _e17 {
+                let _e19 = picks.n;
+                picks.n = (_e19 + 1u);
+                let _e22 = h_1;
+                let _e23 = pcg_hash(_e22);
+                h_1 = _e23;
+                let hi_3 = h_1;
+                let _e25 = h_1;
+                let _e26 = pcg_hash(_e25);
+                h_1 = _e26;
+                let _e28 = picks.n;
+                let _e30 = h_1;
+                let _e31 = reservoir_slot(_e28, K, hi_3, _e30);
+                if (_e31 < K) {
+                    let _e37 = i_3;
+                    let _e40 = bsh_nodes[_e37].light;
+                    picks.light[_e31] = _e40;
+                }
+            }
+        }
+        continuing {
+            let _e43 = i_3;
+            let _e46 = bsh_nodes[_e43].next;
+            let _e47 = bsh_next_leaf_scaled(BSH, _e46, x_9, scale_2);
+            i_3 = _e47;
+        }
+    }
+    let _e48 = picks;
+    return _e48;
+}
+
+fn connect(li: u32, x_10: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+    var c_5: Connection;
+    var local_6: bool;
+
+    c_5.e = vec3(0f);
+    let l_2 = lights[li];
+    let _e17 = light_point(l_2, u1_2, u2_2);
+    c_5.y = _e17;
+    let _e20 = c_5.y;
+    let _e23 = r2_2[li];
+    let _e25 = connection_cosine(x_10, _e20, n_7, ng_1, (s * _e23));
+    c_5.cos_x = _e25;
+    let _e27 = c_5.cos_x;
+    if !((_e27 <= 0f)) {
+        let _e36 = c_5.y;
+        let _e37 = occluded((x_10 + (ng_1 * eps)), _e36);
+        local_6 = _e37;
+    } else {
+        local_6 = true;
+    }
+    let _e39 = local_6;
+    if _e39 {
+        let _e40 = c_5;
+        return _e40;
+    }
+    let _e42 = c_5.y;
+    let v_2 = (x_10 - _e42);
+    let d2_5 = dot(v_2, v_2);
+    let _e49 = light_intensity(l_2, (v_2 / vec3(sqrt(d2_5))));
+    let _e51 = c_5.cos_x;
+    let _e54 = rt2_2[li];
+    let _e56 = connection_factor(_e51, d2_5, (s * _e54), w_res);
+    c_5.e = (_e49 * _e56);
+    let _e58 = c_5;
+    return _e58;
+}
+
+fn surface_at(texel: vec2<i32>) -> vec4<f32> {
+    let p = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p.xyz, 1f), (p.w > 0f));
+}
+
+fn shade_pick(li_1: u32, x_11: vec3<f32>, n_8: vec3<f32>, m_1: Material, s2_: f32, w_4: f32, u1_3: f32, u2_3: f32) -> Shaded {
+    var s_1: Shaded;
+
+    let _e10 = connect(li_1, x_11, n_8, n_8, s2_, w_4, u1_3, u2_3, 0f);
+    s_1.e = _e10.e;
+    s_1.diffuse = vec3(0f);
+    s_1.specular = vec3(0f);
+    let _e19 = s_1;
+    return _e19;
+}
+
+fn add(a_7: Shaded, b_6: Shaded) -> Shaded {
+    return Shaded((a_7.e + b_6.e), (a_7.diffuse + b_6.diffuse), (a_7.specular + b_6.specular));
+}
+
+@compute @workgroup_size(8, 8, 1) 
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+    var local: bool;
+    var local_1: bool;
+    var m: Material;
+    var lobe: vec4<f32> = vec4<f32>(1f, 0f, 1f, 1f);
+    var r: vec3<f32>;
+    var h: u32;
+    var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
+    var k: u32 = 0u;
+
+    let _e4 = view.width;
+    if !((gid.x >= _e4)) {
+        let _e12 = view.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    let _e15 = local;
+    if _e15 {
+        return;
+    }
+    let texel_1 = vec2<i32>(i32(gid.x), i32(gid.y));
+    let _e21 = surface_at(texel_1);
+    let _e24 = textureLoad(normal_tex, texel_1, 0i);
+    let nn = _e24.xyz;
+    let len2_ = dot(nn, nn);
+    if !((_e21.w <= 0f)) {
+        local_1 = !((len2_ > 0f));
+    } else {
+        local_1 = true;
+    }
+    let _e37 = local_1;
+    if _e37 {
+        textureStore(out_tex, texel_1, vec4(0f));
+        return;
+    }
+    let x_12 = _e21.xyz;
+    let n_10 = (nn / vec3(sqrt(len2_)));
+    r = n_10;
+    let _e53 = lobe;
+    let _e54 = range_scale(_e53);
+    let scale_3 = sqrt(_e54);
+    let _e58 = view.seed;
+    let _e62 = view.width;
+    let _e68 = view.frame;
+    let _e69 = point_stream(_e58, ((gid.y * _e62) + gid.x), _e68);
+    let _e70 = pick_stream(_e69);
+    h = _e70;
+    let _e80 = bsh_collect(x_12, scale_3, _e69);
+    let _e83 = reservoir_weight(_e80.n, K);
+    loop {
+        let _e86 = k;
+        if (_e86 < min(_e80.n, K)) {
+        } else {
+            break;
+        }
+        {
+            let _e91 = h;
+            let _e92 = pcg_hash(_e91);
+            h = _e92;
+            let _e93 = h;
+            let _e94 = xi_from_bits(_e93);
+            let _e95 = h;
+            let _e96 = pcg_hash(_e95);
+            h = _e96;
+            let _e97 = t;
+            let _e99 = k;
+            let _e101 = m;
+            let _e102 = h;
+            let _e103 = xi_from_bits(_e102);
+            let _e104 = shade_pick(_e80.light[_e99], x_12, n_10, _e101, _e54, _e83, _e94, _e103);
+            let _e105 = add(_e97, _e104);
+            t = _e105;
+        }
+        continuing {
+            let _e107 = k;
+            k = (_e107 + 1u);
+        }
+    }
+    let count = _e80.n;
+    let _e112 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e112, f32(count)));
+    return;
+}

@@ -1,0 +1,849 @@
+struct GpuLight {
+    p0_: vec3<f32>,
+    kind: u32,
+    p1_: vec3<f32>,
+    a: f32,
+    p2_: vec3<f32>,
+    b: f32,
+    intensity: vec3<f32>,
+    ies_base: u32,
+}
+
+struct GpuLightCone {
+    center: vec3<f32>,
+    radius: f32,
+    axis: vec3<f32>,
+    cos_o: f32,
+    phi: f32,
+    cos_e: f32,
+    bvh_leaf: u32,
+    pad: u32,
+}
+
+struct ViewParams {
+    c0_: vec4<f32>,
+    c1_: vec4<f32>,
+    c2_: vec4<f32>,
+    c3_: vec4<f32>,
+    eye: vec3<f32>,
+    width: u32,
+    height: u32,
+    background: f32,
+    seed: u32,
+    frame: u32,
+    f0_d: vec3<f32>,
+    f90_d: f32,
+}
+
+struct BshNode {
+    center: vec3<f32>,
+    radius: f32,
+    child: u32,
+    next: u32,
+    light: u32,
+    extent: f32,
+}
+
+struct Connection {
+    e: vec3<f32>,
+    y: vec3<f32>,
+    cos_x: f32,
+}
+
+struct WeightedPicks {
+    light: array<u32, 8>,
+    w: array<f32, 8>,
+    w_sum: f32,
+    n: u32,
+    h: u32,
+}
+
+struct Shaded {
+    e: vec3<f32>,
+    diffuse: vec3<f32>,
+    specular: vec3<f32>,
+}
+
+struct Material {
+    base: vec3<f32>,
+    metallic: f32,
+    alpha: f32,
+    v: vec3<f32>,
+}
+
+const LIGHT_POINT: u32 = 0u;
+const LIGHT_SPOT: u32 = 1u;
+const LIGHT_IES: u32 = 2u;
+const LIGHT_TRIANGLE: u32 = 3u;
+const LIGHT_VPL: u32 = 4u;
+const NO_LIGHT: u32 = 4294967295u;
+const MAP_CAMERA: u32 = 0u;
+const MAP_PERSPECTIVE: u32 = 1u;
+const MAP_ORTHOGRAPHIC: u32 = 2u;
+const XI_STEP: f32 = 0.000000059604645f;
+const PICK_STREAM: u32 = 2654435769u;
+const TWO_PI: f32 = 6.2831855f;
+const CULL_RADIUS_SCALE: f32 = 1.000001f;
+const SPHERE_PAD: f32 = 0.00000047683716f;
+const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
+const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const INV_PI: f32 = 0.31830987f;
+const MIN_D2_: f32 = 0.000000000001f;
+const BSH_NONE: u32 = 4294967295u;
+const RESERVOIR_FULL: u32 = 4294967295u;
+const GGX_ALPHA_MIN: f32 = 0.001f;
+const RANGE_SCALE_MAX: f32 = 64f;
+const LIGHT_BVH_LEAF: u32 = 4294967295u;
+const ONE_MINUS_EPSILON: f32 = 0.99999994f;
+const F32_MAX: f32 = 340282350000000000000000000000000000000f;
+const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
+const DEPTH_SIGMA: f32 = 0.05f;
+const COVER_WEIGHT: f32 = 0.1f;
+const NEAR_BLOCK: u32 = 64u;
+const ROULETTE_DEPTH: u32 = 2u;
+const K: u32 = 8u;
+const BSH: u32 = 0u;
+
+@group(0) @binding(0) 
+var<uniform> view: ViewParams;
+@group(0) @binding(1) 
+var position_tex: texture_2d<f32>;
+@group(0) @binding(2) 
+var normal_tex: texture_2d<f32>;
+@group(0) @binding(3) 
+var out_tex: texture_storage_2d<rgba16float,write>;
+@group(0) @binding(4) 
+var base_color_tex: texture_2d<f32>;
+@group(0) @binding(5) 
+var metal_rough_tex: texture_2d<f32>;
+@group(0) @binding(6) 
+var specular_tex: texture_storage_2d<rgba16float,write>;
+@group(1) @binding(1) 
+var<storage> lights: array<GpuLight>;
+@group(1) @binding(2) 
+var<storage> rt2_4: array<f32>;
+@group(1) @binding(3) 
+var<storage> r2_3: array<f32>;
+@group(1) @binding(4) 
+var<storage> bsh_nodes: array<BshNode>;
+@group(1) @binding(5) 
+var<storage> light_cones: array<GpuLightCone>;
+
+fn to_f32_(u: u32) -> f32 {
+    return f32(u);
+}
+
+fn mul_lo_u32_(a: u32, b: u32) -> u32 {
+    return (a * b);
+}
+
+fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
+    return (a_1 + b_1);
+}
+
+fn xi_from_bits(bits: u32) -> f32 {
+    let _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+fn pcg_hash(x: u32) -> u32 {
+    let _e2 = mul_lo_u32_(x, 747796405u);
+    let _e4 = add_wrap_u32_(_e2, 2891336453u);
+    let _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+fn point_stream(seed: u32, point: u32, frame: u32) -> u32 {
+    let _e3 = pcg_hash(frame);
+    let _e5 = pcg_hash((point ^ _e3));
+    let _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+fn pick_stream(stream: u32) -> u32 {
+    let _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+fn slc_weight(rt2_: f32, d2_: f32) -> f32 {
+    if (d2_ <= rt2_) {
+        return 1f;
+    }
+    return (d2_ / rt2_);
+}
+
+fn slc_keep(r2_: f32, d2_1: f32) -> bool {
+    return (d2_1 < r2_);
+}
+
+fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
+    let v_3 = (x_1 - c);
+    return (dot(v_3, v_3) <= (r_1 * r_1));
+}
+
+fn inverse_square(d2_2: f32) -> f32 {
+    return (1f / max(d2_2, MIN_D2_));
+}
+
+fn connection_factor(cos_x: f32, d2_3: f32, rt2_1: f32, w: f32) -> f32 {
+    let _e4 = inverse_square(d2_3);
+    let _e6 = slc_weight(rt2_1, d2_3);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_1: f32) -> f32 {
+    var local_2: bool;
+    var local_3: bool;
+
+    let v_4 = (x_2 - y);
+    let d2_5 = dot(v_4, v_4);
+    let _e7 = slc_keep(r2_1, d2_5);
+    if !(!(_e7)) {
+        local_2 = !((d2_5 > 0f));
+    } else {
+        local_2 = true;
+    }
+    let _e16 = local_2;
+    if _e16 {
+        return 0f;
+    }
+    let w_6 = (v_4 / vec3(sqrt(d2_5)));
+    let cos_x_1 = -(dot(n, w_6));
+    if !((cos_x_1 <= 0f)) {
+        local_3 = (dot(ng, w_6) >= 0f);
+    } else {
+        local_3 = true;
+    }
+    let _e32 = local_3;
+    if _e32 {
+        return 0f;
+    }
+    return cos_x_1;
+}
+
+fn triangle_lobe(n_1: vec3<f32>, area: f32, w_1: vec3<f32>) -> f32 {
+    return (area * max(dot(n_1, w_1), 0f));
+}
+
+fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_1: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
+    let su = sqrt(u1_);
+    let b0_ = (1f - su);
+    let b1_ = (u2_ * su);
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1f - b0_) - b1_)));
+}
+
+fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
+    if (scale == 1f) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
+fn weighted_replace(w_2: f32, w_sum: f32, u_1: f32) -> bool {
+    return ((u_1 * w_sum) < w_2);
+}
+
+fn weighted_pick_weight(w_sum_1: f32, w_3: f32, k_1: u32) -> f32 {
+    let _e3 = to_f32_(k_1);
+    return (w_sum_1 / (_e3 * w_3));
+}
+
+fn ggx_alpha(roughness: f32) -> f32 {
+    return max((roughness * roughness), GGX_ALPHA_MIN);
+}
+
+fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
+    if (cos_h <= 0f) {
+        return 0f;
+    }
+    let a2_ = (alpha * alpha);
+    let t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
+}
+
+fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
+    let a2_1 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1f - a2_1)) + a2_1));
+}
+
+fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
+    var local_4: bool;
+
+    if !((n_l <= 0f)) {
+        local_4 = (n_v <= 0f);
+    } else {
+        local_4 = true;
+    }
+    let _e11 = local_4;
+    if _e11 {
+        return 0f;
+    }
+    let _e13 = smith_root(n_v, alpha_2);
+    let _e15 = smith_root(n_l, alpha_2);
+    return (0.5f / ((n_l * _e13) + (n_v * _e15)));
+}
+
+fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
+    let c_5 = saturate((1f - v_h));
+    let c2_ = (c_5 * c_5);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_5)));
+}
+
+fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
+    let _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    let _e10 = fresnel_schlick(base, 1f, v_h_1);
+    return ((_e5 * (1f - metallic)) + (_e10 * metallic));
+}
+
+fn diffuse_brdf(base_1: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32, v_h_2: f32) -> vec3<f32> {
+    let _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return ((((vec3<f32>(1f, 1f, 1f) - _e9) * base_1) * (1f - metallic_1)) * INV_PI);
+}
+
+fn half_cosine(v: vec3<f32>, l: vec3<f32>) -> f32 {
+    let h_2 = (v + l);
+    let len2_ = dot(h_2, h_2);
+    if (len2_ <= 0f) {
+        return 0f;
+    }
+    return saturate((dot(v, h_2) / sqrt(len2_)));
+}
+
+fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_2: vec3<f32>, v_1: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
+    var local_5: bool;
+
+    let n_l_1 = dot(n_2, l_1);
+    let n_v_2 = dot(n_2, v_1);
+    if !((n_l_1 <= 0f)) {
+        local_5 = (n_v_2 <= 0f);
+    } else {
+        local_5 = true;
+    }
+    let _e18 = local_5;
+    if _e18 {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    let hs = (v_1 + l_1);
+    let inv = (1f / sqrt(dot(hs, hs)));
+    let h_3 = (hs * inv);
+    let c_6 = cross(n_2, h_3);
+    let _e32 = ggx_d(dot(n_2, h_3), dot(c_6, c_6), alpha_3);
+    let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
+    let _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
+    return (_e34 * (_e32 * _e35));
+}
+
+fn has_specular(metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32) -> bool {
+    var local_6: bool;
+    var local_7: bool;
+
+    if !((metallic_3 > 0f)) {
+        local_6 = (f90_d_3 > 0f);
+    } else {
+        local_6 = true;
+    }
+    let _e11 = local_6;
+    if !(_e11) {
+        local_7 = (max(max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0f);
+    } else {
+        local_7 = true;
+    }
+    let _e23 = local_7;
+    return _e23;
+}
+
+fn channel_mean(c_2: vec3<f32>) -> f32 {
+    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334f);
+}
+
+fn receiver_lobe(base_3: vec3<f32>, metallic_4: f32, f0_d_4: vec3<f32>, f90_d_4: f32, alpha_4: f32, n_v_1: f32) -> vec4<f32> {
+    var local_8: bool;
+
+    let _e10 = fresnel_schlick(f0_d_4, f90_d_4, n_v_1);
+    let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_3) * (1f - metallic_4)));
+    if !((n_v_1 <= 0f)) {
+        let _e22 = has_specular(metallic_4, f0_d_4, f90_d_4);
+        local_8 = !(_e22);
+    } else {
+        local_8 = true;
+    }
+    let _e25 = local_8;
+    if _e25 {
+        return vec4<f32>(_e16, 0f, alpha_4, n_v_1);
+    }
+    let _e28 = specular_fresnel(base_3, metallic_4, f0_d_4, f90_d_4, n_v_1);
+    let _e29 = channel_mean(_e28);
+    return vec4<f32>(_e16, _e29, alpha_4, n_v_1);
+}
+
+fn receiver_peak(lobe_1: vec4<f32>) -> f32 {
+    let _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25f) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+fn range_scale(lobe_2: vec4<f32>) -> f32 {
+    if (lobe_2.y <= 0f) {
+        return 1f;
+    }
+    let _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
+fn mirror_dir(n_3: vec3<f32>, v_2: vec3<f32>) -> vec3<f32> {
+    return ((n_3 * (2f * dot(n_3, v_2))) - v_2);
+}
+
+fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+    if (cos_a > cos_b) {
+        return 1f;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+fn sin_sub_clamped(sin_a_1: f32, cos_a_1: f32, sin_b_1: f32, cos_b_1: f32) -> f32 {
+    if (cos_a_1 > cos_b_1) {
+        return 0f;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+fn safe_sqrt(x_3: f32) -> f32 {
+    return sqrt(max(x_3, 0f));
+}
+
+fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
+    let _e5 = safe_sqrt((1f - (r2_2 / dist2_)));
+    return select(_e5, -1f, (dist2_ <= r2_2));
+}
+
+fn emitter_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, cos_o: f32, cos_e: f32, p: vec3<f32>) -> f32 {
+    let v_5 = (p - center);
+    let dist2_1 = dot(v_5, v_5);
+    let r2_4 = (radius * radius);
+    let d2_6 = max(max(dist2_1, r2_4), MIN_D2_);
+    let wi = select(vec3<f32>(0f, 0f, 0f), (v_5 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let cos_w = dot(axis, wi);
+    let _e27 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e28 = subtended_cos(dist2_1, r2_4);
+    let _e32 = safe_sqrt((1f - (_e28 * _e28)));
+    let _e36 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
+    let _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
+    let _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
+    if (_e39 <= cos_e) {
+        return 0f;
+    }
+    return ((phi * _e39) / d2_6);
+}
+
+fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d: vec3<f32>) -> f32 {
+    let v_6 = (center_1 - p_1);
+    let dist2_2 = dot(v_6, v_6);
+    let w_7 = select(vec3<f32>(0f, 0f, 0f), (v_6 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
+    let _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
+    let cos_i = dot(w_7, d);
+    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
+    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
+    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+fn light_importance(center_2: vec3<f32>, radius_2: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, p_2: vec3<f32>, n_4: vec3<f32>) -> f32 {
+    var imp: f32;
+
+    let _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
+    imp = _e8;
+    if (dot(n_4, n_4) > 0f) {
+        let _e13 = imp;
+        let _e14 = cone_cos_toward(center_2, radius_2, p_2, n_4);
+        imp = (_e13 * max(_e14, 0f));
+    }
+    let _e18 = imp;
+    return max(_e18, 0f);
+}
+
+fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_5: vec3<f32>, r_2: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+    var local_9: bool;
+
+    let _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
+    let _e11 = cone_cos_toward(center_3, radius_3, p_3, n_5);
+    if !((_e10 <= 0f)) {
+        local_9 = (_e11 <= 0f);
+    } else {
+        local_9 = true;
+    }
+    let _e20 = local_9;
+    if _e20 {
+        return 0f;
+    }
+    let _e22 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
+    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_3.z);
+    let _e39 = smith_root(lobe_3.w, lobe_3.z);
+    let spec = (((lobe_3.y * _e33) * 0.25f) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
+}
+
+fn candidate_weight(importance: f32, rt2_2: f32, d2_4: f32) -> f32 {
+    let _e3 = slc_weight(rt2_2, d2_4);
+    return (importance * _e3);
+}
+
+fn cone_weight(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, rt2_3: f32, p_4: vec3<f32>, n_6: vec3<f32>, r_3: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
+    let v_7 = (p_4 - center_4);
+    if (lobe_4.y <= 0f) {
+        let _e15 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6);
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_7, v_7));
+        return _e19;
+    }
+    let _e20 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6, r_3, lobe_4);
+    let _e22 = candidate_weight(_e20, rt2_3, dot(v_7, v_7));
+    return _e22;
+}
+
+fn triangle_normal(a_3: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
+    var local_10: bool;
+
+    let n_11 = cross((b_3 - a_3), (c_3 - a_3));
+    let l2_ = dot(n_11, n_11);
+    if !(!((l2_ > 0f))) {
+        local_10 = !((l2_ < 300000000000000000000000000000000000000f));
+    } else {
+        local_10 = true;
+    }
+    let _e17 = local_10;
+    if _e17 {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    return (n_11 / vec3(sqrt(l2_)));
+}
+
+fn light_intensity(l_2: GpuLight, w_4: vec3<f32>) -> vec3<f32> {
+    switch l_2.kind {
+        case 3u: {
+            let _e7 = triangle_normal(l_2.p0_, l_2.p1_, l_2.p2_);
+            let _e9 = triangle_lobe(_e7, l_2.a, w_4);
+            return (l_2.intensity * _e9);
+        }
+        default: {
+            return vec3(0f);
+        }
+    }
+}
+
+fn light_point(l_3: GpuLight, u1_1: f32, u2_1: f32) -> vec3<f32> {
+    if (l_3.kind == LIGHT_TRIANGLE) {
+        let _e9 = triangle_sample(l_3.p0_, l_3.p1_, l_3.p2_, u1_1, u2_1);
+        return _e9;
+    }
+    return l_3.p0_;
+}
+
+fn occluded(a_4: vec3<f32>, b_4: vec3<f32>) -> bool {
+    return false;
+}
+
+fn bsh_node(nodes: u32, i: u32) -> BshNode {
+    let _e4 = bsh_nodes[i];
+    return _e4;
+}
+
+fn bsh_count(nodes_1: u32) -> u32 {
+    return arrayLength((&bsh_nodes));
+}
+
+fn bsh_first(nodes_2: u32) -> u32 {
+    let _e1 = bsh_count(nodes_2);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+fn bsh_next_leaf_scaled(nodes_3: u32, start: u32, x_4: vec3<f32>, scale_1: f32) -> u32 {
+    var i_1: u32;
+
+    i_1 = start;
+    loop {
+        let _e5 = i_1;
+        if (_e5 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            let _e8 = i_1;
+            let _e9 = bsh_node(nodes_3, _e8);
+            let _e11 = bsh_scaled_radius(_e9, scale_1);
+            let _e12 = sphere_contains_point(_e9.center, _e11, x_4);
+            if _e12 {
+                if (_e9.child == BSH_NONE) {
+                    let _e16 = i_1;
+                    return _e16;
+                }
+                i_1 = _e9.child;
+            } else {
+                i_1 = _e9.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+fn connect(li: u32, x_5: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+    var c_4: Connection;
+    var local_11: bool;
+
+    c_4.e = vec3(0f);
+    let l_4 = lights[li];
+    let _e17 = light_point(l_4, u1_2, u2_2);
+    c_4.y = _e17;
+    let _e20 = c_4.y;
+    let _e23 = r2_3[li];
+    let _e25 = connection_cosine(x_5, _e20, n_7, ng_1, (s * _e23));
+    c_4.cos_x = _e25;
+    let _e27 = c_4.cos_x;
+    if !((_e27 <= 0f)) {
+        let _e36 = c_4.y;
+        let _e37 = occluded((x_5 + (ng_1 * eps)), _e36);
+        local_11 = _e37;
+    } else {
+        local_11 = true;
+    }
+    let _e39 = local_11;
+    if _e39 {
+        let _e40 = c_4;
+        return _e40;
+    }
+    let _e42 = c_4.y;
+    let v_8 = (x_5 - _e42);
+    let d2_7 = dot(v_8, v_8);
+    let _e49 = light_intensity(l_4, (v_8 / vec3(sqrt(d2_7))));
+    let _e51 = c_4.cos_x;
+    let _e54 = rt2_4[li];
+    let _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
+    c_4.e = (_e49 * _e56);
+    let _e58 = c_4;
+    return _e58;
+}
+
+fn light_weight(li_1: u32, x_6: vec3<f32>, n_8: vec3<f32>, r_4: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
+    let c_7 = light_cones[li_1];
+    let _e14 = range_scale(lobe_5);
+    let _e17 = rt2_4[li_1];
+    let _e19 = cone_weight(c_7.center, c_7.radius, c_7.phi, c_7.axis, c_7.cos_o, c_7.cos_e, (_e14 * _e17), x_6, n_8, r_4, lobe_5);
+    return _e19;
+}
+
+fn bsh_weighted_collect(x_7: vec3<f32>, n_9: vec3<f32>, r_5: vec3<f32>, lobe_6: vec4<f32>, scale_2: f32, h0_: u32) -> WeightedPicks {
+    var picks: WeightedPicks;
+    var h_1: u32;
+    var b_5: u32;
+    var s_1: u32;
+
+    picks.w_sum = 0f;
+    picks.n = 0u;
+    h_1 = h0_;
+    let _e14 = bsh_first(BSH);
+    let _e15 = bsh_next_leaf_scaled(BSH, _e14, x_7, scale_2);
+    b_5 = _e15;
+    loop {
+        let _e17 = b_5;
+        if (_e17 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            let _e21 = picks.n;
+            picks.n = (_e21 + 1u);
+            let _e25 = b_5;
+            let li_3 = bsh_nodes[_e25].light;
+            let _e29 = light_weight(li_3, x_7, n_9, r_5, lobe_6);
+            if (_e29 > 0f) {
+                let _e33 = picks.w_sum;
+                picks.w_sum = (_e33 + _e29);
+                s_1 = 0u;
+                loop {
+                    let _e37 = s_1;
+                    if (_e37 < K) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e40 = h_1;
+                        let _e41 = pcg_hash(_e40);
+                        h_1 = _e41;
+                        let _e43 = picks.w_sum;
+                        let _e44 = h_1;
+                        let _e45 = xi_from_bits(_e44);
+                        let _e46 = weighted_replace(_e29, _e43, _e45);
+                        if _e46 {
+                            let _e48 = s_1;
+                            picks.light[_e48] = li_3;
+                            let _e51 = s_1;
+                            picks.w[_e51] = _e29;
+                        }
+                    }
+                    continuing {
+                        let _e54 = s_1;
+                        s_1 = (_e54 + 1u);
+                    }
+                }
+            }
+        }
+        continuing {
+            let _e58 = b_5;
+            let _e61 = bsh_nodes[_e58].next;
+            let _e62 = bsh_next_leaf_scaled(BSH, _e61, x_7, scale_2);
+            b_5 = _e62;
+        }
+    }
+    let _e64 = h_1;
+    picks.h = _e64;
+    let _e65 = picks;
+    return _e65;
+}
+
+fn surface_at(texel: vec2<i32>) -> vec4<f32> {
+    let p_5 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_5.xyz, 1f), (p_5.w > 0f));
+}
+
+fn shade_pick(li_2: u32, x_8: vec3<f32>, n_10: vec3<f32>, m_1: Material, s2_: f32, w_5: f32, u1_3: f32, u2_3: f32) -> Shaded {
+    var s_2: Shaded;
+
+    let _e10 = connect(li_2, x_8, n_10, n_10, s2_, w_5, u1_3, u2_3, 0f);
+    s_2.e = _e10.e;
+    s_2.diffuse = vec3(0f);
+    s_2.specular = vec3(0f);
+    if (_e10.cos_x > 0f) {
+        let l_5 = normalize((_e10.y - x_8));
+        let _e30 = view.f0_d;
+        let _e33 = view.f90_d;
+        let _e35 = half_cosine(m_1.v, l_5);
+        let _e36 = diffuse_brdf(m_1.base, m_1.metallic, _e30, _e33, _e35);
+        s_2.diffuse = (_e36 * _e10.e);
+        let _e44 = view.f0_d;
+        let _e47 = view.f90_d;
+        let _e50 = specular_brdf(m_1.base, m_1.metallic, _e44, _e47, m_1.alpha, n_10, m_1.v, l_5);
+        s_2.specular = (_e50 * _e10.e);
+    }
+    let _e53 = s_2;
+    return _e53;
+}
+
+fn add(a_5: Shaded, b_6: Shaded) -> Shaded {
+    return Shaded((a_5.e + b_6.e), (a_5.diffuse + b_6.diffuse), (a_5.specular + b_6.specular));
+}
+
+@compute @workgroup_size(8, 8, 1) 
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+    var local: bool;
+    var local_1: bool;
+    var m: Material;
+    var lobe: vec4<f32> = vec4<f32>(1f, 0f, 1f, 1f);
+    var r: vec3<f32>;
+    var h: u32;
+    var t: Shaded = Shaded(vec3(0f), vec3(0f), vec3(0f));
+    var k: u32 = 0u;
+
+    let _e4 = view.width;
+    if !((gid.x >= _e4)) {
+        let _e12 = view.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    let _e15 = local;
+    if _e15 {
+        return;
+    }
+    let texel_1 = vec2<i32>(i32(gid.x), i32(gid.y));
+    let _e21 = surface_at(texel_1);
+    let _e24 = textureLoad(normal_tex, texel_1, 0i);
+    let nn = _e24.xyz;
+    let len2_1 = dot(nn, nn);
+    if !((_e21.w <= 0f)) {
+        local_1 = !((len2_1 > 0f));
+    } else {
+        local_1 = true;
+    }
+    let _e37 = local_1;
+    if _e37 {
+        textureStore(out_tex, texel_1, vec4(0f));
+        textureStore(specular_tex, texel_1, vec4(0f));
+        return;
+    }
+    let x_9 = _e21.xyz;
+    let n_12 = (nn / vec3(sqrt(len2_1)));
+    r = n_12;
+    let mr = textureLoad(metal_rough_tex, texel_1, 0i);
+    let _e61 = textureLoad(base_color_tex, texel_1, 0i);
+    let _e67 = ggx_alpha(saturate(mr.y));
+    let _e70 = view.eye;
+    m = Material(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_9)));
+    let _e75 = m.base;
+    let _e77 = m.metallic;
+    let _e80 = view.f0_d;
+    let _e83 = view.f90_d;
+    let _e85 = m.alpha;
+    let _e87 = m.v;
+    let _e89 = receiver_lobe(_e75, _e77, _e80, _e83, _e85, dot(n_12, _e87));
+    lobe = _e89;
+    let _e91 = m.v;
+    let _e92 = mirror_dir(n_12, _e91);
+    r = _e92;
+    let _e93 = lobe;
+    let _e94 = range_scale(_e93);
+    let scale_3 = sqrt(_e94);
+    let _e98 = view.seed;
+    let _e102 = view.width;
+    let _e108 = view.frame;
+    let _e109 = point_stream(_e98, ((gid.y * _e102) + gid.x), _e108);
+    let _e110 = pick_stream(_e109);
+    h = _e110;
+    let _e120 = r;
+    let _e121 = lobe;
+    let _e122 = bsh_weighted_collect(x_9, n_12, _e120, _e121, scale_3, _e109);
+    if (_e122.w_sum > 0f) {
+        loop {
+            let _e128 = k;
+            if (_e128 < K) {
+            } else {
+                break;
+            }
+            {
+                let _e131 = h;
+                let _e132 = pcg_hash(_e131);
+                h = _e132;
+                let _e133 = h;
+                let _e134 = xi_from_bits(_e133);
+                let _e135 = h;
+                let _e136 = pcg_hash(_e135);
+                h = _e136;
+                let _e137 = t;
+                let _e139 = k;
+                let _e141 = m;
+                let _e144 = k;
+                let _e147 = weighted_pick_weight(_e122.w_sum, _e122.w[_e144], K);
+                let _e148 = h;
+                let _e149 = xi_from_bits(_e148);
+                let _e150 = shade_pick(_e122.light[_e139], x_9, n_12, _e141, _e94, _e147, _e134, _e149);
+                let _e151 = add(_e137, _e150);
+                t = _e151;
+            }
+            continuing {
+                let _e153 = k;
+                k = (_e153 + 1u);
+            }
+        }
+    }
+    let count = _e122.n;
+    let _e158 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e158, f32(count)));
+    let _e163 = t.specular;
+    textureStore(specular_tex, texel_1, vec4<f32>(_e163, 0f));
+    return;
+}

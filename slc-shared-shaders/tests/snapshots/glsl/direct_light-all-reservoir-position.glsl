@@ -1,0 +1,777 @@
+#version 430 core
+#extension GL_ARB_compute_shader : require
+#extension GL_ARB_shader_storage_buffer_object : require
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+struct GpuLight {
+    vec3 p0_;
+    uint kind;
+    vec3 p1_;
+    float a;
+    vec3 p2_;
+    float b;
+    vec3 intensity;
+    uint ies_base;
+};
+struct ViewParams {
+    vec4 c0_;
+    vec4 c1_;
+    vec4 c2_;
+    vec4 c3_;
+    vec3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    vec3 f0_d;
+    float f90_d;
+};
+struct BshNode {
+    vec3 center;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    float extent;
+};
+struct Picks {
+    uint light[8];
+    uint n;
+};
+struct Connection {
+    vec3 e;
+    vec3 y;
+    float cos_x;
+};
+struct Shaded {
+    vec3 e;
+    vec3 diffuse;
+    vec3 specular;
+};
+struct Material {
+    vec3 base;
+    float metallic;
+    float alpha;
+    vec3 v;
+};
+const uint LIGHT_POINT = 0u;
+const uint LIGHT_SPOT = 1u;
+const uint LIGHT_IES = 2u;
+const uint LIGHT_TRIANGLE = 3u;
+const uint LIGHT_VPL = 4u;
+const uint NO_LIGHT = 4294967295u;
+const uint MAP_CAMERA = 0u;
+const uint MAP_PERSPECTIVE = 1u;
+const uint MAP_ORTHOGRAPHIC = 2u;
+const float XI_STEP = 5.9604645e-8;
+const uint PICK_STREAM = 2654435769u;
+const float TWO_PI = 6.2831855;
+const float CULL_RADIUS_SCALE = 1.000001;
+const float SPHERE_PAD = 4.7683716e-7;
+const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
+const float INV_PI = 0.31830987;
+const float MIN_D2_ = 1e-12;
+const uint BSH_NONE = 4294967295u;
+const uint RESERVOIR_FULL = 4294967295u;
+const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
+const float F32_MAX = 3.4028235e38;
+const float DEPTH_NONE = 1e30;
+const float DEPTH_SIGMA = 0.05;
+const float COVER_WEIGHT = 0.1;
+const uint NEAR_BLOCK = 64u;
+const uint ROULETTE_DEPTH = 2u;
+const uint K = 8u;
+const uint BSH = 0u;
+
+layout(std430) readonly buffer type_4_block_0Compute { float _group_1_binding_0_cs[]; };
+
+layout(std140) uniform ViewParams_block_1Compute { ViewParams _group_0_binding_0_cs; };
+
+uniform sampler2D _group_0_binding_1_cs;
+
+uniform sampler2D _group_0_binding_2_cs;
+
+layout(rgba32f) writeonly uniform image2D _group_0_binding_3_cs;
+
+layout(std430) readonly buffer type_8_block_2Compute { GpuLight _group_1_binding_1_cs[]; };
+
+layout(std430) readonly buffer type_4_block_3Compute { float _group_1_binding_2_cs[]; };
+
+layout(std430) readonly buffer type_4_block_4Compute { float _group_1_binding_3_cs[]; };
+
+layout(std430) readonly buffer type_9_block_5Compute { BshNode _group_1_binding_4_cs[]; };
+
+
+float at(uint tab, uint i) {
+    float _e4 = _group_1_binding_0_cs[i];
+    return _e4;
+}
+
+float to_f32_(uint u) {
+    return float(u);
+}
+
+uint to_u32_(float x) {
+    return uint(x);
+}
+
+uint mul_lo_u32_(uint a, uint b) {
+    return (a * b);
+}
+
+uint add_wrap_u32_(uint a_1, uint b_1) {
+    return (a_1 + b_1);
+}
+
+float xi_from_bits(uint bits) {
+    float _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+uint pcg_hash(uint x_1) {
+    uint _e2 = mul_lo_u32_(x_1, 747796405u);
+    uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+uint point_stream(uint seed, uint point, uint frame) {
+    uint _e3 = pcg_hash(frame);
+    uint _e5 = pcg_hash((point ^ _e3));
+    uint _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+uint pick_stream(uint stream) {
+    uint _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+float slc_weight(float rt2_, float d2_) {
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (d2_ / rt2_);
+}
+
+bool slc_keep(float r2_, float d2_1) {
+    return (d2_1 < r2_);
+}
+
+bool sphere_contains_point(vec3 c, float r_1, vec3 x_2) {
+    vec3 v = (x_2 - c);
+    return (dot(v, v) <= (r_1 * r_1));
+}
+
+float inverse_square(float d2_2) {
+    return (1.0 / max(d2_2, MIN_D2_));
+}
+
+float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
+    float _e4 = inverse_square(d2_3);
+    float _e6 = slc_weight(rt2_1, d2_3);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
+    bool local_2 = false;
+    bool local_3 = false;
+    vec3 v_1 = (x_3 - y);
+    float d2_4 = dot(v_1, v_1);
+    bool _e7 = slc_keep(r2_1, d2_4);
+    if (!(!(_e7))) {
+        local_2 = !((d2_4 > 0.0));
+    } else {
+        local_2 = true;
+    }
+    bool _e16 = local_2;
+    if (_e16) {
+        return 0.0;
+    }
+    vec3 w_5 = (v_1 / vec3(sqrt(d2_4)));
+    float cos_x_1 = -(dot(n, w_5));
+    if (!((cos_x_1 <= 0.0))) {
+        local_3 = (dot(ng, w_5) >= 0.0);
+    } else {
+        local_3 = true;
+    }
+    bool _e32 = local_3;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
+    if ((cos_inner <= cos_outer)) {
+        return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
+    }
+    float t_2 = clamp(((cos_theta - cos_outer) / (cos_inner - cos_outer)), 0.0, 1.0);
+    return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
+}
+
+float triangle_lobe(vec3 n_1, float area, vec3 w_1) {
+    return (area * max(dot(n_1, w_1), 0.0));
+}
+
+vec3 triangle_sample(vec3 a_2, vec3 b_2, vec3 c_1, float u1_, float u2_) {
+    float su = sqrt(u1_);
+    float b0_ = (1.0 - su);
+    float b1_ = (u2_ * su);
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1.0 - b0_) - b1_)));
+}
+
+float atan_portable(float x_4) {
+    float base = 0.0;
+    float t_1 = 0.0;
+    float a_8 = abs(x_4);
+    t_1 = a_8;
+    if ((a_8 > 2.4142137)) {
+        base = 1.5707964;
+        t_1 = (-1.0 / a_8);
+    } else {
+        if ((a_8 > 0.41421357)) {
+            base = 0.7853982;
+            t_1 = ((a_8 - 1.0) / (a_8 + 1.0));
+        }
+    }
+    float _e18 = t_1;
+    float _e19 = t_1;
+    float z = (_e18 * _e19);
+    float _e21 = base;
+    float _e33 = t_1;
+    float _e35 = t_1;
+    float r_2 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_2) : r_2);
+}
+
+float atan2_portable(float y_1, float x_5) {
+    if ((x_5 == 0.0)) {
+        if ((y_1 > 0.0)) {
+            return 1.5707964;
+        }
+        if ((y_1 < 0.0)) {
+            return -1.5707964;
+        }
+        return 0.0;
+    }
+    float _e12 = atan_portable((y_1 / x_5));
+    if ((x_5 > 0.0)) {
+        return _e12;
+    }
+    if ((y_1 >= 0.0)) {
+        return (_e12 + 3.1415927);
+    }
+    return (_e12 - 3.1415927);
+}
+
+float ies_fold_c(float c_2, float h_first, float h_last) {
+    float a_3 = 0.0;
+    a_3 = (c_2 - (360.0 * floor((c_2 / 360.0))));
+    if ((h_last <= 0.0)) {
+        return 0.0;
+    }
+    if ((h_last <= 90.0)) {
+        float _e15 = a_3;
+        if ((_e15 > 180.0)) {
+            float _e18 = a_3;
+            a_3 = (360.0 - _e18);
+        }
+        float _e21 = a_3;
+        if ((_e21 > 90.0)) {
+            float _e24 = a_3;
+            a_3 = (180.0 - _e24);
+        }
+        float _e27 = a_3;
+        return _e27;
+    }
+    if ((h_first >= 90.0)) {
+        float _e30 = a_3;
+        if ((_e30 < 90.0)) {
+            float _e33 = a_3;
+            a_3 = (180.0 - _e33);
+        } else {
+            float _e36 = a_3;
+            if ((_e36 > 270.0)) {
+                float _e39 = a_3;
+                a_3 = (540.0 - _e39);
+            }
+        }
+        float _e42 = a_3;
+        return _e42;
+    }
+    if ((h_last <= 180.0)) {
+        float _e45 = a_3;
+        if ((_e45 > 180.0)) {
+            float _e48 = a_3;
+            a_3 = (360.0 - _e48);
+        }
+        float _e51 = a_3;
+        return _e51;
+    }
+    float _e52 = a_3;
+    return _e52;
+}
+
+uint ies_segment(uint tab_1, uint start, uint n_2, float x_6) {
+    uint lo = 0u;
+    uint hi = 0u;
+    if ((n_2 < 2u)) {
+        return 0u;
+    }
+    hi = (n_2 - 1u);
+    while(true) {
+        uint _e12 = hi;
+        uint _e13 = lo;
+        if (((_e12 - _e13) > 1u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e17 = lo;
+            uint _e18 = hi;
+            uint mid = ((_e17 + _e18) >> 1u);
+            float _e23 = at(tab_1, (start + mid));
+            if ((_e23 <= x_6)) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+    }
+    uint _e25 = lo;
+    return _e25;
+}
+
+float ies_lerp_t(float a0_, float a1_, float x_7) {
+    if ((a1_ <= a0_)) {
+        return 0.0;
+    }
+    return clamp(((x_7 - a0_) / (a1_ - a0_)), 0.0, 1.0);
+}
+
+float ies_candela(uint tab_2, uint base_1, float gamma, float c_3) {
+    bool local_4 = false;
+    float _e4 = at(tab_2, base_1);
+    uint _e5 = to_u32_(_e4);
+    float _e8 = at(tab_2, (base_1 + 1u));
+    uint _e9 = to_u32_(_e8);
+    uint v0_ = (base_1 + 2u);
+    uint h0_ = (v0_ + _e5);
+    uint c0_ = (h0_ + _e9);
+    float _e14 = at(tab_2, v0_);
+    if (!((gamma < _e14))) {
+        float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
+        local_4 = (gamma > _e22);
+    } else {
+        local_4 = true;
+    }
+    bool _e25 = local_4;
+    if (_e25) {
+        return 0.0;
+    }
+    float _e27 = at(tab_2, h0_);
+    float _e31 = at(tab_2, ((h0_ + _e9) - 1u));
+    float _e32 = ies_fold_c(c_3, _e27, _e31);
+    uint _e33 = ies_segment(tab_2, v0_, _e5, gamma);
+    uint _e34 = ies_segment(tab_2, h0_, _e9, _e32);
+    uint iv1_ = min((_e33 + 1u), (_e5 - 1u));
+    uint ih1_ = min((_e34 + 1u), (_e9 - 1u));
+    float _e46 = at(tab_2, (v0_ + _e33));
+    float _e48 = at(tab_2, (v0_ + iv1_));
+    float _e49 = ies_lerp_t(_e46, _e48, gamma);
+    float _e51 = at(tab_2, (h0_ + _e34));
+    float _e53 = at(tab_2, (h0_ + ih1_));
+    float _e54 = ies_lerp_t(_e51, _e53, _e32);
+    float _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
+    float _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
+    float a_9 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
+    float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
+    float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
+    float b_7 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
+    return ((a_9 * (1.0 - _e54)) + (b_7 * _e54));
+}
+
+float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws) {
+    float _e9 = atan2_portable(sqrt(((wr * wr) + (ws * ws))), wn);
+    float gamma_1 = degrees(_e9);
+    bool on_axis = ((abs(wr) + abs(ws)) <= 0.0);
+    float _e16 = atan2_portable(ws, wr);
+    float c_6 = (on_axis ? 0.0 : degrees(_e16));
+    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_6);
+    return _e20;
+}
+
+float ies_light_candela(uint tab_4, uint base_3, vec3 nadir, vec3 reference, vec3 w_2) {
+    vec3 side = cross(reference, nadir);
+    float _e9 = ies_candela_dir(tab_4, base_3, dot(w_2, nadir), dot(w_2, reference), dot(w_2, side));
+    return _e9;
+}
+
+float bsh_scaled_radius(BshNode node, float scale) {
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
+uint mul_hi_u32_(uint a_4, uint b_3) {
+    uint a_lo = (a_4 & 65535u);
+    uint a_hi = (a_4 >> 16u);
+    uint b_lo = (b_3 & 65535u);
+    uint b_hi = (b_3 >> 16u);
+    uint ll = (a_lo * b_lo);
+    uint lh = (a_lo * b_hi);
+    uint hl = (a_hi * b_lo);
+    uint hh = (a_hi * b_hi);
+    uint mid_1 = (((ll >> 16u) + (lh & 65535u)) + (hl & 65535u));
+    return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u));
+}
+
+uint uniform_index(uint n_3, uint hi_1, uint lo_1) {
+    uint _e3 = mul_lo_u32_(hi_1, n_3);
+    uint _e4 = mul_hi_u32_(hi_1, n_3);
+    uint _e5 = mul_hi_u32_(lo_1, n_3);
+    if ((_e3 > (4294967295u - _e5))) {
+        return (_e4 + 1u);
+    }
+    return _e4;
+}
+
+uint reservoir_slot(uint n_4, uint k_1, uint hi_2, uint lo_2) {
+    if ((n_4 <= k_1)) {
+        return (n_4 - 1u);
+    }
+    uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    if ((_e7 < k_1)) {
+        return _e7;
+    }
+    return k_1;
+}
+
+bool reservoir_takes(uint n_5) {
+    return (n_5 < RESERVOIR_FULL);
+}
+
+float reservoir_weight(uint n_6, uint k_2) {
+    float _e2 = to_f32_(n_6);
+    float _e3 = to_f32_(k_2);
+    return max((_e2 / _e3), 1.0);
+}
+
+float smith_root(float cos_, float alpha) {
+    float a2_ = (alpha * alpha);
+    return sqrt((((cos_ * cos_) * (1.0 - a2_)) + a2_));
+}
+
+float receiver_peak(vec4 lobe_1) {
+    float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+float range_scale(vec4 lobe_2) {
+    if ((lobe_2.y <= 0.0)) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_4) {
+    bool local_5 = false;
+    vec3 n_9 = cross((b_4 - a_5), (c_4 - a_5));
+    float l2_ = dot(n_9, n_9);
+    if (!(!((l2_ > 0.0)))) {
+        local_5 = !((l2_ < 3e38));
+    } else {
+        local_5 = true;
+    }
+    bool _e17 = local_5;
+    if (_e17) {
+        return vec3(0.0, 0.0, 0.0);
+    }
+    return (n_9 / vec3(sqrt(l2_)));
+}
+
+vec3 light_intensity(GpuLight l, vec3 w_3) {
+    switch(l.kind) {
+        case 0u: {
+            return l.intensity;
+        }
+        case 1u: {
+            float _e9 = spot_falloff(dot(l.p1_, w_3), l.a, l.b);
+            return (l.intensity * _e9);
+        }
+        case 2u: {
+            float _e16 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3);
+            return (l.intensity * _e16);
+        }
+        case 3u: {
+            vec3 _e22 = triangle_normal(l.p0_, l.p1_, l.p2_);
+            float _e24 = triangle_lobe(_e22, l.a, w_3);
+            return (l.intensity * _e24);
+        }
+        default: {
+            return vec3(0.0);
+        }
+    }
+}
+
+vec3 light_point(GpuLight l_1, float u1_1, float u2_1) {
+    if ((l_1.kind == LIGHT_TRIANGLE)) {
+        vec3 _e9 = triangle_sample(l_1.p0_, l_1.p1_, l_1.p2_, u1_1, u2_1);
+        return _e9;
+    }
+    return l_1.p0_;
+}
+
+bool occluded(vec3 a_6, vec3 b_5) {
+    return false;
+}
+
+BshNode bsh_node(uint nodes, uint i_1) {
+    BshNode _e4 = _group_1_binding_4_cs[i_1];
+    return _e4;
+}
+
+uint bsh_count(uint nodes_1) {
+    return uint(_group_1_binding_4_cs.length());
+}
+
+uint bsh_first(uint nodes_2) {
+    uint _e1 = bsh_count(nodes_2);
+    if ((_e1 > 0u)) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+uint bsh_next_leaf_scaled(uint nodes_3, uint start_1, vec3 x_8, float scale_1) {
+    uint i_2 = 0u;
+    i_2 = start_1;
+    while(true) {
+        uint _e5 = i_2;
+        if ((_e5 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e8 = i_2;
+            BshNode _e9 = bsh_node(nodes_3, _e8);
+            float _e11 = bsh_scaled_radius(_e9, scale_1);
+            bool _e12 = sphere_contains_point(_e9.center, _e11, x_8);
+            if (_e12) {
+                if ((_e9.child == BSH_NONE)) {
+                    uint _e16 = i_2;
+                    return _e16;
+                }
+                i_2 = _e9.child;
+            } else {
+                i_2 = _e9.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+Picks bsh_collect(vec3 x_9, float scale_2, uint seed_1) {
+    Picks picks = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
+    uint h_1 = 0u;
+    uint i_3 = 0u;
+    picks.n = 0u;
+    h_1 = seed_1;
+    uint _e9 = bsh_first(BSH);
+    uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_9, scale_2);
+    i_3 = _e10;
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e43 = i_3;
+            uint _e46 = _group_1_binding_4_cs[_e43].next;
+            uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_9, scale_2);
+            i_3 = _e47;
+        }
+        loop_init = false;
+        uint _e12 = i_3;
+        if ((_e12 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e16 = picks.n;
+            bool _e17 = reservoir_takes(_e16);
+            if (_e17) {
+                uint _e19 = picks.n;
+                picks.n = (_e19 + 1u);
+                uint _e22 = h_1;
+                uint _e23 = pcg_hash(_e22);
+                h_1 = _e23;
+                uint hi_3 = h_1;
+                uint _e25 = h_1;
+                uint _e26 = pcg_hash(_e25);
+                h_1 = _e26;
+                uint _e28 = picks.n;
+                uint _e30 = h_1;
+                uint _e31 = reservoir_slot(_e28, K, hi_3, _e30);
+                if ((_e31 < K)) {
+                    uint _e37 = i_3;
+                    uint _e40 = _group_1_binding_4_cs[_e37].light;
+                    picks.light[_e31] = _e40;
+                }
+            }
+        }
+    }
+    Picks _e48 = picks;
+    return _e48;
+}
+
+Connection connect(uint li, vec3 x_10, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps) {
+    Connection c_5 = Connection(vec3(0.0), vec3(0.0), 0.0);
+    bool local_6 = false;
+    c_5.e = vec3(0.0);
+    GpuLight l_2 = _group_1_binding_1_cs[li];
+    vec3 _e17 = light_point(l_2, u1_2, u2_2);
+    c_5.y = _e17;
+    vec3 _e20 = c_5.y;
+    float _e23 = _group_1_binding_3_cs[li];
+    float _e25 = connection_cosine(x_10, _e20, n_7, ng_1, (s * _e23));
+    c_5.cos_x = _e25;
+    float _e27 = c_5.cos_x;
+    if (!((_e27 <= 0.0))) {
+        vec3 _e36 = c_5.y;
+        bool _e37 = occluded((x_10 + (ng_1 * eps)), _e36);
+        local_6 = _e37;
+    } else {
+        local_6 = true;
+    }
+    bool _e39 = local_6;
+    if (_e39) {
+        Connection _e40 = c_5;
+        return _e40;
+    }
+    vec3 _e42 = c_5.y;
+    vec3 v_2 = (x_10 - _e42);
+    float d2_5 = dot(v_2, v_2);
+    vec3 _e49 = light_intensity(l_2, (v_2 / vec3(sqrt(d2_5))));
+    float _e51 = c_5.cos_x;
+    float _e54 = _group_1_binding_2_cs[li];
+    float _e56 = connection_factor(_e51, d2_5, (s * _e54), w_res);
+    c_5.e = (_e49 * _e56);
+    Connection _e58 = c_5;
+    return _e58;
+}
+
+vec4 surface_at(ivec2 texel) {
+    vec4 p = texelFetch(_group_0_binding_1_cs, texel, 0);
+    return ((p.w > 0.0) ? vec4(p.xyz, 1.0) : vec4(0.0));
+}
+
+Shaded shade_pick(uint li_1, vec3 x_11, vec3 n_8, Material m_1, float s2_, float w_4, float u1_3, float u2_3) {
+    Shaded s_1 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+    Connection _e10 = connect(li_1, x_11, n_8, n_8, s2_, w_4, u1_3, u2_3, 0.0);
+    s_1.e = _e10.e;
+    s_1.diffuse = vec3(0.0);
+    s_1.specular = vec3(0.0);
+    Shaded _e19 = s_1;
+    return _e19;
+}
+
+Shaded add(Shaded a_7, Shaded b_6) {
+    return Shaded((a_7.e + b_6.e), (a_7.diffuse + b_6.diffuse), (a_7.specular + b_6.specular));
+}
+
+void main() {
+    uvec3 gid = gl_GlobalInvocationID;
+    bool local = false;
+    bool local_1 = false;
+    Material m = Material(vec3(0.0), 0.0, 0.0, vec3(0.0));
+    vec4 lobe = vec4(1.0, 0.0, 1.0, 1.0);
+    vec3 r = vec3(0.0);
+    uint h = 0u;
+    Shaded t = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
+    uint k = 0u;
+    uint _e4 = _group_0_binding_0_cs.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = _group_0_binding_0_cs.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    ivec2 texel_1 = ivec2(int(gid.x), int(gid.y));
+    vec4 _e21 = surface_at(texel_1);
+    vec4 _e24 = texelFetch(_group_0_binding_2_cs, texel_1, 0);
+    vec3 nn = _e24.xyz;
+    float len2_ = dot(nn, nn);
+    if (!((_e21.w <= 0.0))) {
+        local_1 = !((len2_ > 0.0));
+    } else {
+        local_1 = true;
+    }
+    bool _e37 = local_1;
+    if (_e37) {
+        imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
+        return;
+    }
+    vec3 x_12 = _e21.xyz;
+    vec3 n_10 = (nn / vec3(sqrt(len2_)));
+    r = n_10;
+    vec4 _e53 = lobe;
+    float _e54 = range_scale(_e53);
+    float scale_3 = sqrt(_e54);
+    uint _e58 = _group_0_binding_0_cs.seed;
+    uint _e62 = _group_0_binding_0_cs.width;
+    uint _e68 = _group_0_binding_0_cs.frame;
+    uint _e69 = point_stream(_e58, ((gid.y * _e62) + gid.x), _e68);
+    uint _e70 = pick_stream(_e69);
+    h = _e70;
+    Picks _e80 = bsh_collect(x_12, scale_3, _e69);
+    float _e83 = reservoir_weight(_e80.n, K);
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e107 = k;
+            k = (_e107 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e86 = k;
+        if ((_e86 < min(_e80.n, K))) {
+        } else {
+            break;
+        }
+        {
+            uint _e91 = h;
+            uint _e92 = pcg_hash(_e91);
+            h = _e92;
+            uint _e93 = h;
+            float _e94 = xi_from_bits(_e93);
+            uint _e95 = h;
+            uint _e96 = pcg_hash(_e95);
+            h = _e96;
+            Shaded _e97 = t;
+            uint _e99 = k;
+            Material _e101 = m;
+            uint _e102 = h;
+            float _e103 = xi_from_bits(_e102);
+            Shaded _e104 = shade_pick(_e80.light[_e99], x_12, n_10, _e101, _e54, _e83, _e94, _e103);
+            Shaded _e105 = add(_e97, _e104);
+            t = _e105;
+        }
+    }
+    uint count = _e80.n;
+    vec3 _e112 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e112, float(count)));
+    return;
+}
+

@@ -1,0 +1,172 @@
+#version 430 core
+#extension GL_ARB_compute_shader : require
+#extension GL_ARB_shader_storage_buffer_object : require
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+
+struct CullParams {
+    uint light_count;
+    uint seed;
+    uint frame;
+    uint slc;
+    uint mode;
+    float exposure;
+    float error_bound;
+    float fixed_r2_;
+    float unculled;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+const uint LIGHT_POINT = 0u;
+const uint LIGHT_SPOT = 1u;
+const uint LIGHT_IES = 2u;
+const uint LIGHT_TRIANGLE = 3u;
+const uint LIGHT_VPL = 4u;
+const uint NO_LIGHT = 4294967295u;
+const uint MAP_CAMERA = 0u;
+const uint MAP_PERSPECTIVE = 1u;
+const uint MAP_ORTHOGRAPHIC = 2u;
+const float XI_STEP = 5.9604645e-8;
+const uint PICK_STREAM = 2654435769u;
+const float TWO_PI = 6.2831855;
+const float CULL_RADIUS_SCALE = 1.000001;
+const float SPHERE_PAD = 4.7683716e-7;
+const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
+const float INV_PI = 0.31830987;
+const float MIN_D2_ = 1e-12;
+const uint BSH_NONE = 4294967295u;
+const uint RESERVOIR_FULL = 4294967295u;
+const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
+const float F32_MAX = 3.4028235e38;
+const float DEPTH_NONE = 1e30;
+const float DEPTH_SIGMA = 0.05;
+const float COVER_WEIGHT = 0.1;
+const uint NEAR_BLOCK = 64u;
+const uint ROULETTE_DEPTH = 2u;
+
+layout(std140) uniform CullParams_block_0Compute { CullParams _group_0_binding_0_cs; };
+
+layout(std430) readonly buffer type_5_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+
+layout(std430) buffer type_4_block_2Compute { float _group_0_binding_2_cs[]; };
+
+layout(std430) buffer type_4_block_3Compute { float _group_0_binding_3_cs[]; };
+
+
+float to_f32_(uint u) {
+    return float(u);
+}
+
+uint mul_lo_u32_(uint a, uint b) {
+    return (a * b);
+}
+
+uint add_wrap_u32_(uint a_1, uint b_1) {
+    return (a_1 + b_1);
+}
+
+float xi_from_bits(uint bits) {
+    float _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+uint pcg_hash(uint x) {
+    uint _e2 = mul_lo_u32_(x, 747796405u);
+    uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+uint reverse_bits(uint x_1) {
+    uint v = 0u;
+    v = (((x_1 >> 16u) & 65535u) | ((x_1 & 65535u) << 16u));
+    uint _e11 = v;
+    uint _e16 = v;
+    v = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
+    uint _e22 = v;
+    uint _e27 = v;
+    v = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
+    uint _e33 = v;
+    uint _e38 = v;
+    v = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
+    uint _e44 = v;
+    uint _e49 = v;
+    v = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
+    uint _e55 = v;
+    return _e55;
+}
+
+float xi_for(uint seed, uint frame, uint light) {
+    uint _e3 = pcg_hash(seed);
+    uint _e4 = pcg_hash(_e3);
+    uint _e6 = pcg_hash((_e4 ^ light));
+    uint _e7 = reverse_bits(frame);
+    uint _e8 = add_wrap_u32_(_e6, _e7);
+    float _e9 = xi_from_bits(_e8);
+    return _e9;
+}
+
+float random_range2_(float rt2_, float xi) {
+    return (rt2_ / (1.0 - xi));
+}
+
+float threshold_range2_(float intensity, float exposure, float error_bound) {
+    if ((intensity <= 0.0)) {
+        return 0.0;
+    }
+    return (((exposure / error_bound) * intensity) / TWO_PI);
+}
+
+float intensity_measure(vec3 rgb, uint mode) {
+    if ((mode == 1u)) {
+        return (((rgb.x + rgb.y) + rgb.z) / 3.0);
+    }
+    return max(rgb.x, max(rgb.y, rgb.z));
+}
+
+float record_rt2_(vec3 peak, uint slc, uint mode_1, float exposure_1, float error_bound_1, float unculled) {
+    if ((slc == 1u)) {
+        float _e8 = intensity_measure(peak, mode_1);
+        float _e9 = threshold_range2_(_e8, exposure_1, error_bound_1);
+        return _e9;
+    }
+    return unculled;
+}
+
+float record_r2_(float rt2_1, uint slc_1, float fixed_r2_, float xi_1) {
+    if ((slc_1 == 1u)) {
+        float _e6 = random_range2_(rt2_1, xi_1);
+        return _e6;
+    }
+    return fixed_r2_;
+}
+
+void main() {
+    uvec3 gid = gl_GlobalInvocationID;
+    uint i = gid.x;
+    uint _e4 = _group_0_binding_0_cs.light_count;
+    if ((i >= _e4)) {
+        return;
+    }
+    vec4 _e8 = _group_0_binding_1_cs[i];
+    uint _e12 = _group_0_binding_0_cs.slc;
+    uint _e15 = _group_0_binding_0_cs.mode;
+    float _e18 = _group_0_binding_0_cs.exposure;
+    float _e21 = _group_0_binding_0_cs.error_bound;
+    float _e24 = _group_0_binding_0_cs.unculled;
+    float _e25 = record_rt2_(_e8.xyz, _e12, _e15, _e18, _e21, _e24);
+    _group_0_binding_2_cs[i] = _e25;
+    uint _e32 = _group_0_binding_0_cs.slc;
+    float _e35 = _group_0_binding_0_cs.fixed_r2_;
+    uint _e38 = _group_0_binding_0_cs.seed;
+    uint _e41 = _group_0_binding_0_cs.frame;
+    float _e42 = xi_for(_e38, _e41, i);
+    float _e43 = record_r2_(_e25, _e32, _e35, _e42);
+    _group_0_binding_3_cs[i] = _e43;
+    return;
+}
+

@@ -1,0 +1,988 @@
+struct GpuLight {
+    float3 p0_;
+    uint kind;
+    float3 p1_;
+    float a;
+    float3 p2_;
+    float b;
+    float3 intensity;
+    uint ies_base;
+};
+
+struct GpuLightCone {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
+
+struct ViewParams {
+    float4 c0_;
+    float4 c1_;
+    float4 c2_;
+    float4 c3_;
+    float3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    float3 f0_d;
+    float f90_d;
+};
+
+struct BshNode {
+    float3 center_;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    float extent;
+};
+
+struct Connection {
+    float3 e;
+    int _pad1_0;
+    float3 y;
+    float cos_x;
+};
+
+struct WeightedPicks {
+    uint light[8];
+    float w[8];
+    float w_sum;
+    uint n;
+    uint h;
+};
+
+struct Shaded {
+    float3 e;
+    int _pad1_0;
+    float3 diffuse;
+    int _pad2_0;
+    float3 specular;
+    int _end_pad_0;
+};
+
+struct Material {
+    float3 base;
+    float metallic;
+    float alpha;
+    int _pad3_0;
+    int _pad3_1;
+    int _pad3_2;
+    float3 v;
+    int _end_pad_0;
+};
+
+static const uint LIGHT_POINT = 0u;
+static const uint LIGHT_SPOT = 1u;
+static const uint LIGHT_IES = 2u;
+static const uint LIGHT_TRIANGLE = 3u;
+static const uint LIGHT_VPL = 4u;
+static const uint NO_LIGHT = 4294967295u;
+static const uint MAP_CAMERA = 0u;
+static const uint MAP_PERSPECTIVE = 1u;
+static const uint MAP_ORTHOGRAPHIC = 2u;
+static const float XI_STEP = 5.9604645e-8;
+static const uint PICK_STREAM = 2654435769u;
+static const float TWO_PI = 6.2831855;
+static const float CULL_RADIUS_SCALE = 1.000001;
+static const float SPHERE_PAD = 4.7683716e-7;
+static const float SPHERE_HUGE = 3.4028235e38;
+static const float SPHERE_PAD_ABS = 1e-18;
+static const float INV_PI = 0.31830987;
+static const float MIN_D2_ = 1e-12;
+static const uint BSH_NONE = 4294967295u;
+static const uint RESERVOIR_FULL = 4294967295u;
+static const float GGX_ALPHA_MIN = 0.001;
+static const float RANGE_SCALE_MAX = 64.0;
+static const uint LIGHT_BVH_LEAF = 4294967295u;
+static const float ONE_MINUS_EPSILON = 0.99999994;
+static const float F32_MAX = 3.4028235e38;
+static const float DEPTH_NONE = 1e30;
+static const float DEPTH_SIGMA = 0.05;
+static const float COVER_WEIGHT = 0.1;
+static const uint NEAR_BLOCK = 64u;
+static const uint ROULETTE_DEPTH = 2u;
+static const uint K = 8u;
+static const uint BSH = 0u;
+
+cbuffer view : register(b0) { ViewParams view; }
+Texture2D<float4> position_tex : register(t1);
+Texture2D<float4> normal_tex : register(t2);
+RWTexture2D<float4> out_tex : register(u3);
+Texture2D<float4> base_color_tex : register(t4);
+Texture2D<float4> metal_rough_tex : register(t5);
+RWTexture2D<float4> specular_tex : register(u6);
+ByteAddressBuffer lights : register(t1, space1);
+ByteAddressBuffer rt2_4 : register(t2, space1);
+ByteAddressBuffer r2_3 : register(t3, space1);
+ByteAddressBuffer bsh_nodes : register(t4, space1);
+ByteAddressBuffer light_cones : register(t5, space1);
+
+float to_f32_(uint u)
+{
+    return float(u);
+}
+
+uint mul_lo_u32_(uint a, uint b)
+{
+    return (a * b);
+}
+
+uint add_wrap_u32_(uint a_1, uint b_1)
+{
+    return (a_1 + b_1);
+}
+
+float xi_from_bits(uint bits)
+{
+    const float _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+uint pcg_hash(uint x)
+{
+    const uint _e2 = mul_lo_u32_(x, 747796405u);
+    const uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    const uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+uint point_stream(uint seed, uint point_, uint frame)
+{
+    const uint _e3 = pcg_hash(frame);
+    const uint _e5 = pcg_hash((point_ ^ _e3));
+    const uint _e7 = pcg_hash((seed ^ _e5));
+    return _e7;
+}
+
+uint pick_stream(uint stream)
+{
+    const uint _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+float slc_weight(float rt2_, float d2_)
+{
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (d2_ / rt2_);
+}
+
+bool slc_keep(float r2_, float d2_1)
+{
+    return (d2_1 < r2_);
+}
+
+bool sphere_contains_point(float3 c, float r_1, float3 x_1)
+{
+    float3 v_3 = (x_1 - c);
+    return (dot(v_3, v_3) <= (r_1 * r_1));
+}
+
+float inverse_square(float d2_2)
+{
+    return (1.0 / max(d2_2, MIN_D2_));
+}
+
+float connection_factor(float cos_x, float d2_3, float rt2_1, float w)
+{
+    const float _e4 = inverse_square(d2_3);
+    const float _e6 = slc_weight(rt2_1, d2_3);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
+{
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+
+    float3 v_4 = (x_2 - y);
+    float d2_5 = dot(v_4, v_4);
+    const bool _e7 = slc_keep(r2_1, d2_5);
+    if (!(!(_e7))) {
+        local_2 = !((d2_5 > 0.0));
+    } else {
+        local_2 = true;
+    }
+    bool _e16 = local_2;
+    if (_e16) {
+        return 0.0;
+    }
+    float3 w_6 = (v_4 / (sqrt(d2_5)).xxx);
+    float cos_x_1 = -(dot(n, w_6));
+    if (!((cos_x_1 <= 0.0))) {
+        local_3 = (dot(ng, w_6) >= 0.0);
+    } else {
+        local_3 = true;
+    }
+    bool _e32 = local_3;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float triangle_lobe(float3 n_1, float area, float3 w_1)
+{
+    return (area * max(dot(n_1, w_1), 0.0));
+}
+
+float3 triangle_sample(float3 a_2, float3 b_2, float3 c_1, float u1_, float u2_)
+{
+    float su = sqrt(u1_);
+    float b0_ = (1.0 - su);
+    float b1_ = (u2_ * su);
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1.0 - b0_) - b1_)));
+}
+
+float bsh_scaled_radius(BshNode node, float scale)
+{
+    if ((scale == 1.0)) {
+        return node.radius;
+    }
+    if ((node.child == BSH_NONE)) {
+        return (node.extent + (scale * (node.radius - node.extent)));
+    }
+    return (node.radius * scale);
+}
+
+bool weighted_replace(float w_2, float w_sum, float u_1)
+{
+    return ((u_1 * w_sum) < w_2);
+}
+
+float weighted_pick_weight(float w_sum_1, float w_3, uint k_1)
+{
+    const float _e3 = to_f32_(k_1);
+    return (w_sum_1 / (_e3 * w_3));
+}
+
+float ggx_alpha(float roughness)
+{
+    return max((roughness * roughness), GGX_ALPHA_MIN);
+}
+
+float ggx_d(float cos_h, float sin2_h, float alpha)
+{
+    if ((cos_h <= 0.0)) {
+        return 0.0;
+    }
+    float a2_ = (alpha * alpha);
+    float t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
+}
+
+float smith_root(float cos_, float alpha_1)
+{
+    float a2_1 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1.0 - a2_1)) + a2_1));
+}
+
+float smith_visibility(float n_l, float n_v, float alpha_2)
+{
+    bool local_4 = (bool)0;
+
+    if (!((n_l <= 0.0))) {
+        local_4 = (n_v <= 0.0);
+    } else {
+        local_4 = true;
+    }
+    bool _e11 = local_4;
+    if (_e11) {
+        return 0.0;
+    }
+    const float _e13 = smith_root(n_v, alpha_2);
+    const float _e15 = smith_root(n_l, alpha_2);
+    return (0.5 / ((n_l * _e13) + (n_v * _e15)));
+}
+
+float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
+{
+    float c_5 = saturate((1.0 - v_h));
+    float c2_ = (c_5 * c_5);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_5)));
+}
+
+float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, float v_h_1)
+{
+    const float3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    const float3 _e10 = fresnel_schlick(base, 1.0, v_h_1);
+    return ((_e5 * (1.0 - metallic)) + (_e10 * metallic));
+}
+
+float3 diffuse_brdf(float3 base_1, float metallic_1, float3 f0_d_1, float f90_d_1, float v_h_2)
+{
+    const float3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return ((((float3(1.0, 1.0, 1.0) - _e9) * base_1) * (1.0 - metallic_1)) * INV_PI);
+}
+
+float half_cosine(float3 v, float3 l)
+{
+    float3 h_2 = (v + l);
+    float len2_ = dot(h_2, h_2);
+    if ((len2_ <= 0.0)) {
+        return 0.0;
+    }
+    return saturate((dot(v, h_2) / sqrt(len2_)));
+}
+
+float3 specular_brdf(float3 base_2, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_2, float3 v_1, float3 l_1)
+{
+    bool local_5 = (bool)0;
+
+    float n_l_1 = dot(n_2, l_1);
+    float n_v_2 = dot(n_2, v_1);
+    if (!((n_l_1 <= 0.0))) {
+        local_5 = (n_v_2 <= 0.0);
+    } else {
+        local_5 = true;
+    }
+    bool _e18 = local_5;
+    if (_e18) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    float3 hs = (v_1 + l_1);
+    float inv = (1.0 / sqrt(dot(hs, hs)));
+    float3 h_3 = (hs * inv);
+    float3 c_6 = cross(n_2, h_3);
+    const float _e32 = ggx_d(dot(n_2, h_3), dot(c_6, c_6), alpha_3);
+    const float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_3));
+    const float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
+    return (_e34 * (_e32 * _e35));
+}
+
+bool has_specular(float metallic_3, float3 f0_d_3, float f90_d_3)
+{
+    bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
+
+    if (!((metallic_3 > 0.0))) {
+        local_6 = (f90_d_3 > 0.0);
+    } else {
+        local_6 = true;
+    }
+    bool _e11 = local_6;
+    if (!(_e11)) {
+        local_7 = (max(max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0.0);
+    } else {
+        local_7 = true;
+    }
+    bool _e23 = local_7;
+    return _e23;
+}
+
+float channel_mean(float3 c_2)
+{
+    return (((c_2.x + c_2.y) + c_2.z) * 0.33333334);
+}
+
+float4 receiver_lobe(float3 base_3, float metallic_4, float3 f0_d_4, float f90_d_4, float alpha_4, float n_v_1)
+{
+    bool local_8 = (bool)0;
+
+    const float3 _e10 = fresnel_schlick(f0_d_4, f90_d_4, n_v_1);
+    const float _e16 = channel_mean((((float3(1.0, 1.0, 1.0) - _e10) * base_3) * (1.0 - metallic_4)));
+    if (!((n_v_1 <= 0.0))) {
+        const bool _e22 = has_specular(metallic_4, f0_d_4, f90_d_4);
+        local_8 = !(_e22);
+    } else {
+        local_8 = true;
+    }
+    bool _e25 = local_8;
+    if (_e25) {
+        return float4(_e16, 0.0, alpha_4, n_v_1);
+    }
+    const float3 _e28 = specular_fresnel(base_3, metallic_4, f0_d_4, f90_d_4, n_v_1);
+    const float _e29 = channel_mean(_e28);
+    return float4(_e16, _e29, alpha_4, n_v_1);
+}
+
+float receiver_peak(float4 lobe_1)
+{
+    const float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+}
+
+float range_scale(float4 lobe_2)
+{
+    if ((lobe_2.y <= 0.0)) {
+        return 1.0;
+    }
+    const float _e5 = receiver_peak(lobe_2);
+    return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+float3 mirror_dir(float3 n_3, float3 v_2)
+{
+    return ((n_3 * (2.0 * dot(n_3, v_2))) - v_2);
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+{
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1)
+{
+    if ((cos_a_1 > cos_b_1)) {
+        return 0.0;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+float safe_sqrt(float x_3)
+{
+    return sqrt(max(x_3, 0.0));
+}
+
+float subtended_cos(float dist2_, float r2_2)
+{
+    const float _e5 = safe_sqrt((1.0 - (r2_2 / dist2_)));
+    return ((dist2_ <= r2_2) ? -1.0 : _e5);
+}
+
+float emitter_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p)
+{
+    float3 v_5 = (p - center_);
+    float dist2_1 = dot(v_5, v_5);
+    float r2_4 = (radius * radius);
+    float d2_6 = max(max(dist2_1, r2_4), MIN_D2_);
+    float3 wi = ((dist2_1 > 0.0) ? (v_5 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi);
+    const float _e27 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    const float _e28 = subtended_cos(dist2_1, r2_4);
+    const float _e32 = safe_sqrt((1.0 - (_e28 * _e28)));
+    const float _e36 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    const float _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
+    const float _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
+    const float _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
+    if ((_e39 <= cos_e)) {
+        return 0.0;
+    }
+    return ((phi * _e39) / d2_6);
+}
+
+float cone_cos_toward(float3 center_1, float radius_1, float3 p_1, float3 d)
+{
+    float3 v_6 = (center_1 - p_1);
+    float dist2_2 = dot(v_6, v_6);
+    float3 w_7 = ((dist2_2 > 0.0) ? (v_6 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0));
+    const float _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
+    float cos_i = dot(w_7, d);
+    const float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
+    const float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
+    const float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float light_importance(float3 center_2, float radius_2, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float3 p_2, float3 n_4)
+{
+    float imp = (float)0;
+
+    const float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
+    imp = _e8;
+    if ((dot(n_4, n_4) > 0.0)) {
+        float _e13 = imp;
+        const float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_4);
+        imp = (_e13 * max(_e14, 0.0));
+    }
+    float _e18 = imp;
+    return max(_e18, 0.0);
+}
+
+float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_5, float3 r_2, float4 lobe_3)
+{
+    bool local_9 = (bool)0;
+
+    const float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
+    const float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_5);
+    if (!((_e10 <= 0.0))) {
+        local_9 = (_e11 <= 0.0);
+    } else {
+        local_9 = true;
+    }
+    bool _e20 = local_9;
+    if (_e20) {
+        return 0.0;
+    }
+    const float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    const float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
+    const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
+    const float _e39 = smith_root(lobe_3.w, lobe_3.z);
+    float spec = (((lobe_3.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
+}
+
+float candidate_weight(float importance, float rt2_2, float d2_4)
+{
+    const float _e3 = slc_weight(rt2_2, d2_4);
+    return (importance * _e3);
+}
+
+float cone_weight(float3 center_4, float radius_4, float phi_3, float3 axis_3, float cos_o_3, float cos_e_3, float rt2_3, float3 p_4, float3 n_6, float3 r_3, float4 lobe_4)
+{
+    float3 v_7 = (p_4 - center_4);
+    if ((lobe_4.y <= 0.0)) {
+        const float _e15 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6);
+        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_7, v_7));
+        return _e19;
+    }
+    const float _e20 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6, r_3, lobe_4);
+    const float _e22 = candidate_weight(_e20, rt2_3, dot(v_7, v_7));
+    return _e22;
+}
+
+float3 triangle_normal(float3 a_3, float3 b_3, float3 c_3)
+{
+    bool local_10 = (bool)0;
+
+    float3 n_11 = cross((b_3 - a_3), (c_3 - a_3));
+    float l2_ = dot(n_11, n_11);
+    if (!(!((l2_ > 0.0)))) {
+        local_10 = !((l2_ < 3e38));
+    } else {
+        local_10 = true;
+    }
+    bool _e17 = local_10;
+    if (_e17) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    return (n_11 / (sqrt(l2_)).xxx);
+}
+
+float3 light_intensity(GpuLight l_2, float3 w_4)
+{
+    switch(l_2.kind) {
+        case 3u: {
+            const float3 _e7 = triangle_normal(l_2.p0_, l_2.p1_, l_2.p2_);
+            const float _e9 = triangle_lobe(_e7, l_2.a, w_4);
+            return (l_2.intensity * _e9);
+        }
+        default: {
+            return (0.0).xxx;
+        }
+    }
+}
+
+float3 light_point(GpuLight l_3, float u1_1, float u2_1)
+{
+    if ((l_3.kind == LIGHT_TRIANGLE)) {
+        const float3 _e9 = triangle_sample(l_3.p0_, l_3.p1_, l_3.p2_, u1_1, u2_1);
+        return _e9;
+    }
+    return l_3.p0_;
+}
+
+bool occluded(float3 a_4, float3 b_4)
+{
+    return false;
+}
+
+BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
+    BshNode ret = (BshNode)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.child = arg2;
+    ret.next = arg3;
+    ret.light = arg4;
+    ret.extent = arg5;
+    return ret;
+}
+
+BshNode bsh_node(uint nodes, uint i)
+{
+    BshNode _e4 = ConstructBshNode(asfloat(bsh_nodes.Load3(i*32+0)), asfloat(bsh_nodes.Load(i*32+12)), asuint(bsh_nodes.Load(i*32+16)), asuint(bsh_nodes.Load(i*32+20)), asuint(bsh_nodes.Load(i*32+24)), asfloat(bsh_nodes.Load(i*32+28)));
+    const BshNode bshnode = _e4;
+    return bshnode;
+}
+
+uint NagaBufferLength(ByteAddressBuffer buffer)
+{
+    uint ret;
+    buffer.GetDimensions(ret);
+    return ret;
+}
+
+uint bsh_count(uint nodes_1)
+{
+    return ((NagaBufferLength(bsh_nodes) - 0) / 32);
+}
+
+uint bsh_first(uint nodes_2)
+{
+    const uint _e1 = bsh_count(nodes_2);
+    if ((_e1 > 0u)) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+uint bsh_next_leaf_scaled(uint nodes_3, uint start, float3 x_4, float scale_1)
+{
+    uint i_1 = (uint)0;
+
+    i_1 = start;
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e5 = i_1;
+        if ((_e5 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e8 = i_1;
+            const BshNode _e9 = bsh_node(nodes_3, _e8);
+            const float _e11 = bsh_scaled_radius(_e9, scale_1);
+            const bool _e12 = sphere_contains_point(_e9.center_, _e11, x_4);
+            if (_e12) {
+                if ((_e9.child == BSH_NONE)) {
+                    uint _e16 = i_1;
+                    return _e16;
+                }
+                i_1 = _e9.child;
+            } else {
+                i_1 = _e9.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
+    GpuLight ret = (GpuLight)0;
+    ret.p0_ = arg0;
+    ret.kind = arg1;
+    ret.p1_ = arg2;
+    ret.a = arg3;
+    ret.p2_ = arg4;
+    ret.b = arg5;
+    ret.intensity = arg6;
+    ret.ies_base = arg7;
+    return ret;
+}
+
+Connection connect(uint li, float3 x_5, float3 n_7, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps)
+{
+    Connection c_4 = (Connection)0;
+    bool local_11 = (bool)0;
+
+    c_4.e = (0.0).xxx;
+    GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
+    const float3 _e17 = light_point(l_4, u1_2, u2_2);
+    c_4.y = _e17;
+    float3 _e20 = c_4.y;
+    float _e23 = asfloat(r2_3.Load(li*4));
+    const float _e25 = connection_cosine(x_5, _e20, n_7, ng_1, (s * _e23));
+    c_4.cos_x = _e25;
+    float _e27 = c_4.cos_x;
+    if (!((_e27 <= 0.0))) {
+        float3 _e36 = c_4.y;
+        const bool _e37 = occluded((x_5 + (ng_1 * eps)), _e36);
+        local_11 = _e37;
+    } else {
+        local_11 = true;
+    }
+    bool _e39 = local_11;
+    if (_e39) {
+        Connection _e40 = c_4;
+        const Connection connection = _e40;
+        return connection;
+    }
+    float3 _e42 = c_4.y;
+    float3 v_8 = (x_5 - _e42);
+    float d2_7 = dot(v_8, v_8);
+    const float3 _e49 = light_intensity(l_4, (v_8 / (sqrt(d2_7)).xxx));
+    float _e51 = c_4.cos_x;
+    float _e54 = asfloat(rt2_4.Load(li*4));
+    const float _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
+    c_4.e = (_e49 * _e56);
+    Connection _e58 = c_4;
+    const Connection connection_1 = _e58;
+    return connection_1;
+}
+
+GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
+    GpuLightCone ret = (GpuLightCone)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.axis = arg2;
+    ret.cos_o = arg3;
+    ret.phi = arg4;
+    ret.cos_e = arg5;
+    ret.bvh_leaf = arg6;
+    ret.pad = arg7;
+    return ret;
+}
+
+float light_weight(uint li_1, float3 x_6, float3 n_8, float3 r_4, float4 lobe_5)
+{
+    GpuLightCone c_7 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e14 = range_scale(lobe_5);
+    float _e17 = asfloat(rt2_4.Load(li_1*4));
+    const float _e19 = cone_weight(c_7.center_, c_7.radius, c_7.phi, c_7.axis, c_7.cos_o, c_7.cos_e, (_e14 * _e17), x_6, n_8, r_4, lobe_5);
+    return _e19;
+}
+
+WeightedPicks bsh_weighted_collect(float3 x_7, float3 n_9, float3 r_5, float4 lobe_6, float scale_2, uint h0_)
+{
+    WeightedPicks picks = (WeightedPicks)0;
+    uint h_1 = (uint)0;
+    uint b_5 = (uint)0;
+    uint s_1 = (uint)0;
+
+    picks.w_sum = 0.0;
+    picks.n = 0u;
+    h_1 = h0_;
+    const uint _e14 = bsh_first(BSH);
+    const uint _e15 = bsh_next_leaf_scaled(BSH, _e14, x_7, scale_2);
+    b_5 = _e15;
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e58 = b_5;
+            uint _e61 = asuint(bsh_nodes.Load(20+_e58*32));
+            const uint _e62 = bsh_next_leaf_scaled(BSH, _e61, x_7, scale_2);
+            b_5 = _e62;
+        }
+        loop_init = false;
+        uint _e17 = b_5;
+        if ((_e17 != BSH_NONE)) {
+        } else {
+            break;
+        }
+        {
+            uint _e21 = picks.n;
+            picks.n = (_e21 + 1u);
+            uint _e25 = b_5;
+            uint li_3 = asuint(bsh_nodes.Load(24+_e25*32));
+            const float _e29 = light_weight(li_3, x_7, n_9, r_5, lobe_6);
+            if ((_e29 > 0.0)) {
+                float _e33 = picks.w_sum;
+                picks.w_sum = (_e33 + _e29);
+                s_1 = 0u;
+                uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+                bool loop_init_1 = true;
+                while(true) {
+                    if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                    if (!loop_init_1) {
+                        uint _e54 = s_1;
+                        s_1 = (_e54 + 1u);
+                    }
+                    loop_init_1 = false;
+                    uint _e37 = s_1;
+                    if ((_e37 < K)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e40 = h_1;
+                        const uint _e41 = pcg_hash(_e40);
+                        h_1 = _e41;
+                        float _e43 = picks.w_sum;
+                        uint _e44 = h_1;
+                        const float _e45 = xi_from_bits(_e44);
+                        const bool _e46 = weighted_replace(_e29, _e43, _e45);
+                        if (_e46) {
+                            uint _e48 = s_1;
+                            picks.light[min(uint(_e48), 7u)] = li_3;
+                            uint _e51 = s_1;
+                            picks.w[min(uint(_e51), 7u)] = _e29;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    uint _e64 = h_1;
+    picks.h = _e64;
+    WeightedPicks _e65 = picks;
+    const WeightedPicks weightedpicks = _e65;
+    return weightedpicks;
+}
+
+float4 surface_at(int2 texel)
+{
+    float4 p_5 = position_tex.Load(int3(texel, int(0)));
+    return ((p_5.w > 0.0) ? float4(p_5.xyz, 1.0) : (0.0).xxxx);
+}
+
+Shaded shade_pick(uint li_2, float3 x_8, float3 n_10, Material m_1, float s2_, float w_5, float u1_3, float u2_3)
+{
+    Shaded s_2 = (Shaded)0;
+
+    const Connection _e10 = connect(li_2, x_8, n_10, n_10, s2_, w_5, u1_3, u2_3, 0.0);
+    s_2.e = _e10.e;
+    s_2.diffuse = (0.0).xxx;
+    s_2.specular = (0.0).xxx;
+    if ((_e10.cos_x > 0.0)) {
+        float3 l_5 = normalize((_e10.y - x_8));
+        float3 _e30 = view.f0_d;
+        float _e33 = view.f90_d;
+        const float _e35 = half_cosine(m_1.v, l_5);
+        const float3 _e36 = diffuse_brdf(m_1.base, m_1.metallic, _e30, _e33, _e35);
+        s_2.diffuse = (_e36 * _e10.e);
+        float3 _e44 = view.f0_d;
+        float _e47 = view.f90_d;
+        const float3 _e50 = specular_brdf(m_1.base, m_1.metallic, _e44, _e47, m_1.alpha, n_10, m_1.v, l_5);
+        s_2.specular = (_e50 * _e10.e);
+    }
+    Shaded _e53 = s_2;
+    const Shaded shaded = _e53;
+    return shaded;
+}
+
+Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
+    Shaded ret = (Shaded)0;
+    ret.e = arg0;
+    ret.diffuse = arg1;
+    ret.specular = arg2;
+    return ret;
+}
+
+Shaded add(Shaded a_5, Shaded b_6)
+{
+    const Shaded shaded_1 = ConstructShaded((a_5.e + b_6.e), (a_5.diffuse + b_6.diffuse), (a_5.specular + b_6.specular));
+    return shaded_1;
+}
+
+Material ConstructMaterial(float3 arg0, float arg1, float arg2, float3 arg3) {
+    Material ret = (Material)0;
+    ret.base = arg0;
+    ret.metallic = arg1;
+    ret.alpha = arg2;
+    ret.v = arg3;
+    return ret;
+}
+
+[numthreads(8, 8, 1)]
+void main(uint3 gid : SV_DispatchThreadID)
+{
+    bool local = (bool)0;
+    bool local_1 = (bool)0;
+    Material m = (Material)0;
+    float4 lobe = float4(1.0, 0.0, 1.0, 1.0);
+    float3 r = (float3)0;
+    uint h = (uint)0;
+    Shaded t = ConstructShaded((0.0).xxx, (0.0).xxx, (0.0).xxx);
+    uint k = 0u;
+
+    uint _e4 = view.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = view.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    int2 texel_1 = int2(int(gid.x), int(gid.y));
+    const float4 _e21 = surface_at(texel_1);
+    float4 _e24 = normal_tex.Load(int3(texel_1, int(0)));
+    float3 nn = _e24.xyz;
+    float len2_1 = dot(nn, nn);
+    if (!((_e21.w <= 0.0))) {
+        local_1 = !((len2_1 > 0.0));
+    } else {
+        local_1 = true;
+    }
+    bool _e37 = local_1;
+    if (_e37) {
+        out_tex[texel_1] = (0.0).xxxx;
+        specular_tex[texel_1] = (0.0).xxxx;
+        return;
+    }
+    float3 x_9 = _e21.xyz;
+    float3 n_12 = (nn / (sqrt(len2_1)).xxx);
+    r = n_12;
+    float4 mr = metal_rough_tex.Load(int3(texel_1, int(0)));
+    float4 _e61 = base_color_tex.Load(int3(texel_1, int(0)));
+    const float _e67 = ggx_alpha(saturate(mr.y));
+    float3 _e70 = view.eye;
+    m = ConstructMaterial(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_9)));
+    float3 _e75 = m.base;
+    float _e77 = m.metallic;
+    float3 _e80 = view.f0_d;
+    float _e83 = view.f90_d;
+    float _e85 = m.alpha;
+    float3 _e87 = m.v;
+    const float4 _e89 = receiver_lobe(_e75, _e77, _e80, _e83, _e85, dot(n_12, _e87));
+    lobe = _e89;
+    float3 _e91 = m.v;
+    const float3 _e92 = mirror_dir(n_12, _e91);
+    r = _e92;
+    float4 _e93 = lobe;
+    const float _e94 = range_scale(_e93);
+    float scale_3 = sqrt(_e94);
+    uint _e98 = view.seed;
+    uint _e102 = view.width;
+    uint _e108 = view.frame;
+    const uint _e109 = point_stream(_e98, ((gid.y * _e102) + gid.x), _e108);
+    const uint _e110 = pick_stream(_e109);
+    h = _e110;
+    float3 _e120 = r;
+    float4 _e121 = lobe;
+    const WeightedPicks _e122 = bsh_weighted_collect(x_9, n_12, _e120, _e121, scale_3, _e109);
+    if ((_e122.w_sum > 0.0)) {
+        uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+        bool loop_init_2 = true;
+        while(true) {
+            if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+            loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+            if (!loop_init_2) {
+                uint _e153 = k;
+                k = (_e153 + 1u);
+            }
+            loop_init_2 = false;
+            uint _e128 = k;
+            if ((_e128 < K)) {
+            } else {
+                break;
+            }
+            {
+                uint _e131 = h;
+                const uint _e132 = pcg_hash(_e131);
+                h = _e132;
+                uint _e133 = h;
+                const float _e134 = xi_from_bits(_e133);
+                uint _e135 = h;
+                const uint _e136 = pcg_hash(_e135);
+                h = _e136;
+                Shaded _e137 = t;
+                uint _e139 = k;
+                Material _e141 = m;
+                uint _e144 = k;
+                const float _e147 = weighted_pick_weight(_e122.w_sum, _e122.w[min(uint(_e144), 7u)], K);
+                uint _e148 = h;
+                const float _e149 = xi_from_bits(_e148);
+                const Shaded _e150 = shade_pick(_e122.light[min(uint(_e139), 7u)], x_9, n_12, _e141, _e94, _e147, _e134, _e149);
+                const Shaded _e151 = add(_e137, _e150);
+                t = _e151;
+            }
+        }
+    }
+    uint count = _e122.n;
+    float3 _e158 = t.e;
+    out_tex[texel_1] = float4(_e158, float(count));
+    float3 _e163 = t.specular;
+    specular_tex[texel_1] = float4(_e163, 0.0);
+    return;
+}

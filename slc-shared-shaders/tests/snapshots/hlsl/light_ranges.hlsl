@@ -1,0 +1,177 @@
+struct CullParams {
+    uint light_count;
+    uint seed;
+    uint frame;
+    uint slc;
+    uint mode;
+    float exposure;
+    float error_bound;
+    float fixed_r2_;
+    float unculled;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+
+static const uint LIGHT_POINT = 0u;
+static const uint LIGHT_SPOT = 1u;
+static const uint LIGHT_IES = 2u;
+static const uint LIGHT_TRIANGLE = 3u;
+static const uint LIGHT_VPL = 4u;
+static const uint NO_LIGHT = 4294967295u;
+static const uint MAP_CAMERA = 0u;
+static const uint MAP_PERSPECTIVE = 1u;
+static const uint MAP_ORTHOGRAPHIC = 2u;
+static const float XI_STEP = 5.9604645e-8;
+static const uint PICK_STREAM = 2654435769u;
+static const float TWO_PI = 6.2831855;
+static const float CULL_RADIUS_SCALE = 1.000001;
+static const float SPHERE_PAD = 4.7683716e-7;
+static const float SPHERE_HUGE = 3.4028235e38;
+static const float SPHERE_PAD_ABS = 1e-18;
+static const float INV_PI = 0.31830987;
+static const float MIN_D2_ = 1e-12;
+static const uint BSH_NONE = 4294967295u;
+static const uint RESERVOIR_FULL = 4294967295u;
+static const float GGX_ALPHA_MIN = 0.001;
+static const float RANGE_SCALE_MAX = 64.0;
+static const uint LIGHT_BVH_LEAF = 4294967295u;
+static const float ONE_MINUS_EPSILON = 0.99999994;
+static const float F32_MAX = 3.4028235e38;
+static const float DEPTH_NONE = 1e30;
+static const float DEPTH_SIGMA = 0.05;
+static const float COVER_WEIGHT = 0.1;
+static const uint NEAR_BLOCK = 64u;
+static const uint ROULETTE_DEPTH = 2u;
+
+cbuffer params : register(b0) { CullParams params; }
+ByteAddressBuffer peaks : register(t1);
+RWByteAddressBuffer rt2_2 : register(u2);
+RWByteAddressBuffer r2_ : register(u3);
+
+float to_f32_(uint u)
+{
+    return float(u);
+}
+
+uint mul_lo_u32_(uint a, uint b)
+{
+    return (a * b);
+}
+
+uint add_wrap_u32_(uint a_1, uint b_1)
+{
+    return (a_1 + b_1);
+}
+
+float xi_from_bits(uint bits)
+{
+    const float _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+uint pcg_hash(uint x)
+{
+    const uint _e2 = mul_lo_u32_(x, 747796405u);
+    const uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    const uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+uint reverse_bits(uint x_1)
+{
+    uint v = (uint)0;
+
+    v = (((x_1 >> 16u) & 65535u) | ((x_1 & 65535u) << 16u));
+    uint _e11 = v;
+    uint _e16 = v;
+    v = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
+    uint _e22 = v;
+    uint _e27 = v;
+    v = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
+    uint _e33 = v;
+    uint _e38 = v;
+    v = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
+    uint _e44 = v;
+    uint _e49 = v;
+    v = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
+    uint _e55 = v;
+    return _e55;
+}
+
+float xi_for(uint seed, uint frame, uint light)
+{
+    const uint _e3 = pcg_hash(seed);
+    const uint _e4 = pcg_hash(_e3);
+    const uint _e6 = pcg_hash((_e4 ^ light));
+    const uint _e7 = reverse_bits(frame);
+    const uint _e8 = add_wrap_u32_(_e6, _e7);
+    const float _e9 = xi_from_bits(_e8);
+    return _e9;
+}
+
+float random_range2_(float rt2_, float xi)
+{
+    return (rt2_ / (1.0 - xi));
+}
+
+float threshold_range2_(float intensity, float exposure, float error_bound)
+{
+    if ((intensity <= 0.0)) {
+        return 0.0;
+    }
+    return (((exposure / error_bound) * intensity) / TWO_PI);
+}
+
+float intensity_measure(float3 rgb, uint mode)
+{
+    if ((mode == 1u)) {
+        return (((rgb.x + rgb.y) + rgb.z) / 3.0);
+    }
+    return max(rgb.x, max(rgb.y, rgb.z));
+}
+
+float record_rt2_(float3 peak, uint slc, uint mode_1, float exposure_1, float error_bound_1, float unculled)
+{
+    if ((slc == 1u)) {
+        const float _e8 = intensity_measure(peak, mode_1);
+        const float _e9 = threshold_range2_(_e8, exposure_1, error_bound_1);
+        return _e9;
+    }
+    return unculled;
+}
+
+float record_r2_(float rt2_1, uint slc_1, float fixed_r2_, float xi_1)
+{
+    if ((slc_1 == 1u)) {
+        const float _e6 = random_range2_(rt2_1, xi_1);
+        return _e6;
+    }
+    return fixed_r2_;
+}
+
+[numthreads(64, 1, 1)]
+void main(uint3 gid : SV_DispatchThreadID)
+{
+    uint i = gid.x;
+    uint _e4 = params.light_count;
+    if ((i >= _e4)) {
+        return;
+    }
+    float4 _e8 = asfloat(peaks.Load4(i*16));
+    uint _e12 = params.slc;
+    uint _e15 = params.mode;
+    float _e18 = params.exposure;
+    float _e21 = params.error_bound;
+    float _e24 = params.unculled;
+    const float _e25 = record_rt2_(_e8.xyz, _e12, _e15, _e18, _e21, _e24);
+    rt2_2.Store(i*4, asuint(_e25));
+    uint _e32 = params.slc;
+    float _e35 = params.fixed_r2_;
+    uint _e38 = params.seed;
+    uint _e41 = params.frame;
+    const float _e42 = xi_for(_e38, _e41, i);
+    const float _e43 = record_r2_(_e25, _e32, _e35, _e42);
+    r2_.Store(i*4, asuint(_e43));
+    return;
+}

@@ -1,0 +1,1013 @@
+// language: metal1.0
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct _mslBufferSizes {
+    uint size0;
+    uint size5;
+    uint size6;
+    uint size7;
+    uint size8;
+};
+
+struct GpuLight {
+    metal::packed_float3 p0_;
+    uint kind;
+    metal::packed_float3 p1_;
+    float a;
+    metal::packed_float3 p2_;
+    float b;
+    metal::packed_float3 intensity;
+    uint ies_base;
+};
+struct ViewParams {
+    metal::float4 c0_;
+    metal::float4 c1_;
+    metal::float4 c2_;
+    metal::float4 c3_;
+    metal::packed_float3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    metal::packed_float3 f0_d;
+    float f90_d;
+};
+typedef uint Table;
+typedef float type_4[1];
+struct BshNode {
+    metal::packed_float3 center;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    float extent;
+};
+typedef GpuLight type_8[1];
+typedef BshNode type_9[1];
+struct type_10 {
+    uint inner[8];
+};
+struct Picks {
+    type_10 light;
+    uint n;
+};
+typedef uint BshNodes;
+struct Connection {
+    metal::float3 e;
+    metal::packed_float3 y;
+    float cos_x;
+};
+struct Shaded {
+    metal::float3 e;
+    metal::float3 diffuse;
+    metal::float3 specular;
+};
+struct Material {
+    metal::packed_float3 base;
+    float metallic;
+    float alpha;
+    char _pad3[12];
+    metal::float3 v;
+};
+constant uint LIGHT_POINT = 0u;
+constant uint LIGHT_SPOT = 1u;
+constant uint LIGHT_IES = 2u;
+constant uint LIGHT_TRIANGLE = 3u;
+constant uint LIGHT_VPL = 4u;
+constant uint NO_LIGHT = 4294967295u;
+constant uint MAP_CAMERA = 0u;
+constant uint MAP_PERSPECTIVE = 1u;
+constant uint MAP_ORTHOGRAPHIC = 2u;
+constant float XI_STEP = 0.000000059604645;
+constant uint PICK_STREAM = 2654435769u;
+constant float TWO_PI = 6.2831855;
+constant float CULL_RADIUS_SCALE = 1.000001;
+constant float SPHERE_PAD = 0.00000047683716;
+constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
+constant float SPHERE_PAD_ABS = 0.000000000000000001;
+constant float INV_PI = 0.31830987;
+constant float MIN_D2_ = 0.000000000001;
+constant uint BSH_NONE = 4294967295u;
+constant uint RESERVOIR_FULL = 4294967295u;
+constant float GGX_ALPHA_MIN = 0.001;
+constant float RANGE_SCALE_MAX = 64.0;
+constant uint LIGHT_BVH_LEAF = 4294967295u;
+constant float ONE_MINUS_EPSILON = 0.99999994;
+constant float F32_MAX = 340282350000000000000000000000000000000.0;
+constant float DEPTH_NONE = 1000000000000000000000000000000.0;
+constant float DEPTH_SIGMA = 0.05;
+constant float COVER_WEIGHT = 0.1;
+constant uint NEAR_BLOCK = 64u;
+constant uint ROULETTE_DEPTH = 2u;
+constant uint K = 8u;
+constant BshNodes BSH = 0u;
+
+float at(
+    Table tab,
+    uint i,
+    device type_4 const& slc_table,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = slc_table[i];
+    return _e4;
+}
+
+float to_f32_(
+    uint u
+) {
+    return static_cast<float>(u);
+}
+
+uint naga_f2u32(float value) {
+    return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
+}
+
+uint to_u32_(
+    float x
+) {
+    return naga_f2u32(x);
+}
+
+uint mul_lo_u32_(
+    uint a,
+    uint b
+) {
+    return a * b;
+}
+
+uint add_wrap_u32_(
+    uint a_1,
+    uint b_1
+) {
+    return a_1 + b_1;
+}
+
+float xi_from_bits(
+    uint bits
+) {
+    float _e3 = to_f32_(bits >> 8u);
+    return _e3 * XI_STEP;
+}
+
+uint pcg_hash(
+    uint x_1
+) {
+    uint _e2 = mul_lo_u32_(x_1, 747796405u);
+    uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    uint _e12 = mul_lo_u32_((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4, 277803737u);
+    return (_e12 >> 22u) ^ _e12;
+}
+
+uint point_stream(
+    uint seed,
+    uint point,
+    uint frame
+) {
+    uint _e3 = pcg_hash(frame);
+    uint _e5 = pcg_hash(point ^ _e3);
+    uint _e7 = pcg_hash(seed ^ _e5);
+    return _e7;
+}
+
+uint pick_stream(
+    uint stream
+) {
+    uint _e3 = pcg_hash(stream ^ PICK_STREAM);
+    return _e3;
+}
+
+float slc_weight(
+    float rt2_,
+    float d2_
+) {
+    if (d2_ <= rt2_) {
+        return 1.0;
+    }
+    return d2_ / rt2_;
+}
+
+bool slc_keep(
+    float r2_,
+    float d2_1
+) {
+    return d2_1 < r2_;
+}
+
+bool sphere_contains_point(
+    metal::float3 c,
+    float r_1,
+    metal::float3 x_2
+) {
+    metal::float3 v = x_2 - c;
+    return metal::dot(v, v) <= (r_1 * r_1);
+}
+
+float inverse_square(
+    float d2_2
+) {
+    return 1.0 / metal::max(d2_2, MIN_D2_);
+}
+
+float connection_factor(
+    float cos_x,
+    float d2_3,
+    float rt2_1,
+    float w
+) {
+    float _e4 = inverse_square(d2_3);
+    float _e6 = slc_weight(rt2_1, d2_3);
+    return ((cos_x * _e4) * _e6) * w;
+}
+
+float connection_cosine(
+    metal::float3 x_3,
+    metal::float3 y,
+    metal::float3 n,
+    metal::float3 ng,
+    float r2_1
+) {
+    bool local_2 = {};
+    bool local_3 = {};
+    metal::float3 v_1 = x_3 - y;
+    float d2_4 = metal::dot(v_1, v_1);
+    bool _e7 = slc_keep(r2_1, d2_4);
+    if (!(!(_e7))) {
+        local_2 = !((d2_4 > 0.0));
+    } else {
+        local_2 = true;
+    }
+    bool _e16 = local_2;
+    if (_e16) {
+        return 0.0;
+    }
+    metal::float3 w_5 = v_1 / metal::float3(metal::sqrt(d2_4));
+    float cos_x_1 = -(metal::dot(n, w_5));
+    if (!((cos_x_1 <= 0.0))) {
+        local_3 = metal::dot(ng, w_5) >= 0.0;
+    } else {
+        local_3 = true;
+    }
+    bool _e32 = local_3;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float spot_falloff(
+    float cos_theta,
+    float cos_outer,
+    float cos_inner
+) {
+    if (cos_inner <= cos_outer) {
+        return (cos_theta >= cos_outer) ? 1.0 : 0.0;
+    }
+    float t_2 = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
+    return (t_2 * t_2) * (3.0 - (2.0 * t_2));
+}
+
+float triangle_lobe(
+    metal::float3 n_1,
+    float area,
+    metal::float3 w_1
+) {
+    return area * metal::max(metal::dot(n_1, w_1), 0.0);
+}
+
+metal::float3 triangle_sample(
+    metal::float3 a_2,
+    metal::float3 b_2,
+    metal::float3 c_1,
+    float u1_,
+    float u2_
+) {
+    float su = metal::sqrt(u1_);
+    float b0_ = 1.0 - su;
+    float b1_ = u2_ * su;
+    return ((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1.0 - b0_) - b1_));
+}
+
+float atan_portable(
+    float x_4
+) {
+    float base = 0.0;
+    float t_1 = {};
+    float a_8 = metal::abs(x_4);
+    t_1 = a_8;
+    if (a_8 > 2.4142137) {
+        base = 1.5707964;
+        t_1 = -1.0 / a_8;
+    } else {
+        if (a_8 > 0.41421357) {
+            base = 0.7853982;
+            t_1 = (a_8 - 1.0) / (a_8 + 1.0);
+        }
+    }
+    float _e18 = t_1;
+    float _e19 = t_1;
+    float z = _e18 * _e19;
+    float _e21 = base;
+    float _e33 = t_1;
+    float _e35 = t_1;
+    float r_2 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
+    return (x_4 < 0.0) ? -(r_2) : r_2;
+}
+
+float atan2_portable(
+    float y_1,
+    float x_5
+) {
+    if (x_5 == 0.0) {
+        if (y_1 > 0.0) {
+            return 1.5707964;
+        }
+        if (y_1 < 0.0) {
+            return -1.5707964;
+        }
+        return 0.0;
+    }
+    float _e12 = atan_portable(y_1 / x_5);
+    if (x_5 > 0.0) {
+        return _e12;
+    }
+    if (y_1 >= 0.0) {
+        return _e12 + 3.1415927;
+    }
+    return _e12 - 3.1415927;
+}
+
+float ies_fold_c(
+    float c_2,
+    float h_first,
+    float h_last
+) {
+    float a_3 = {};
+    a_3 = c_2 - (360.0 * metal::floor(c_2 / 360.0));
+    if (h_last <= 0.0) {
+        return 0.0;
+    }
+    if (h_last <= 90.0) {
+        float _e15 = a_3;
+        if (_e15 > 180.0) {
+            float _e18 = a_3;
+            a_3 = 360.0 - _e18;
+        }
+        float _e21 = a_3;
+        if (_e21 > 90.0) {
+            float _e24 = a_3;
+            a_3 = 180.0 - _e24;
+        }
+        float _e27 = a_3;
+        return _e27;
+    }
+    if (h_first >= 90.0) {
+        float _e30 = a_3;
+        if (_e30 < 90.0) {
+            float _e33 = a_3;
+            a_3 = 180.0 - _e33;
+        } else {
+            float _e36 = a_3;
+            if (_e36 > 270.0) {
+                float _e39 = a_3;
+                a_3 = 540.0 - _e39;
+            }
+        }
+        float _e42 = a_3;
+        return _e42;
+    }
+    if (h_last <= 180.0) {
+        float _e45 = a_3;
+        if (_e45 > 180.0) {
+            float _e48 = a_3;
+            a_3 = 360.0 - _e48;
+        }
+        float _e51 = a_3;
+        return _e51;
+    }
+    float _e52 = a_3;
+    return _e52;
+}
+
+uint ies_segment(
+    Table tab_1,
+    uint start,
+    uint n_2,
+    float x_6,
+    device type_4 const& slc_table,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint lo = 0u;
+    uint hi = {};
+    if (n_2 < 2u) {
+        return 0u;
+    }
+    hi = n_2 - 1u;
+    uint2 loop_bound = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e12 = hi;
+        uint _e13 = lo;
+        if ((_e12 - _e13) > 1u) {
+        } else {
+            break;
+        }
+        {
+            uint _e17 = lo;
+            uint _e18 = hi;
+            uint mid = (_e17 + _e18) >> 1u;
+            float _e23 = at(tab_1, start + mid, slc_table, _buffer_sizes);
+            if (_e23 <= x_6) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+    }
+    uint _e25 = lo;
+    return _e25;
+}
+
+float ies_lerp_t(
+    float a0_,
+    float a1_,
+    float x_7
+) {
+    if (a1_ <= a0_) {
+        return 0.0;
+    }
+    return metal::saturate((x_7 - a0_) / (a1_ - a0_));
+}
+
+float ies_candela(
+    Table tab_2,
+    uint base_1,
+    float gamma,
+    float c_3,
+    device type_4 const& slc_table,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    bool local_4 = {};
+    float _e4 = at(tab_2, base_1, slc_table, _buffer_sizes);
+    uint _e5 = to_u32_(_e4);
+    float _e8 = at(tab_2, base_1 + 1u, slc_table, _buffer_sizes);
+    uint _e9 = to_u32_(_e8);
+    uint v0_ = base_1 + 2u;
+    uint h0_ = v0_ + _e5;
+    uint c0_ = h0_ + _e9;
+    float _e14 = at(tab_2, v0_, slc_table, _buffer_sizes);
+    if (!((gamma < _e14))) {
+        float _e22 = at(tab_2, (v0_ + _e5) - 1u, slc_table, _buffer_sizes);
+        local_4 = gamma > _e22;
+    } else {
+        local_4 = true;
+    }
+    bool _e25 = local_4;
+    if (_e25) {
+        return 0.0;
+    }
+    float _e27 = at(tab_2, h0_, slc_table, _buffer_sizes);
+    float _e31 = at(tab_2, (h0_ + _e9) - 1u, slc_table, _buffer_sizes);
+    float _e32 = ies_fold_c(c_3, _e27, _e31);
+    uint _e33 = ies_segment(tab_2, v0_, _e5, gamma, slc_table, _buffer_sizes);
+    uint _e34 = ies_segment(tab_2, h0_, _e9, _e32, slc_table, _buffer_sizes);
+    uint iv1_ = metal::min(_e33 + 1u, _e5 - 1u);
+    uint ih1_ = metal::min(_e34 + 1u, _e9 - 1u);
+    float _e46 = at(tab_2, v0_ + _e33, slc_table, _buffer_sizes);
+    float _e48 = at(tab_2, v0_ + iv1_, slc_table, _buffer_sizes);
+    float _e49 = ies_lerp_t(_e46, _e48, gamma);
+    float _e51 = at(tab_2, h0_ + _e34, slc_table, _buffer_sizes);
+    float _e53 = at(tab_2, h0_ + ih1_, slc_table, _buffer_sizes);
+    float _e54 = ies_lerp_t(_e51, _e53, _e32);
+    float _e58 = at(tab_2, (c0_ + (_e34 * _e5)) + _e33, slc_table, _buffer_sizes);
+    float _e65 = at(tab_2, (c0_ + (_e34 * _e5)) + iv1_, slc_table, _buffer_sizes);
+    float a_9 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
+    float _e71 = at(tab_2, (c0_ + (ih1_ * _e5)) + _e33, slc_table, _buffer_sizes);
+    float _e78 = at(tab_2, (c0_ + (ih1_ * _e5)) + iv1_, slc_table, _buffer_sizes);
+    float b_7 = (_e71 * (1.0 - _e49)) + (_e78 * _e49);
+    return (a_9 * (1.0 - _e54)) + (b_7 * _e54);
+}
+
+float ies_candela_dir(
+    Table tab_3,
+    uint base_2,
+    float wn,
+    float wr,
+    float ws,
+    device type_4 const& slc_table,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e9 = atan2_portable(metal::sqrt((wr * wr) + (ws * ws)), wn);
+    float gamma_1 = ((_e9) * 57.295779513082322865);
+    bool on_axis = (metal::abs(wr) + metal::abs(ws)) <= 0.0;
+    float _e16 = atan2_portable(ws, wr);
+    float c_6 = on_axis ? 0.0 : ((_e16) * 57.295779513082322865);
+    float _e20 = ies_candela(tab_3, base_2, gamma_1, c_6, slc_table, _buffer_sizes);
+    return _e20;
+}
+
+float ies_light_candela(
+    Table tab_4,
+    uint base_3,
+    metal::float3 nadir,
+    metal::float3 reference,
+    metal::float3 w_2,
+    device type_4 const& slc_table,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 side = metal::cross(reference, nadir);
+    float _e9 = ies_candela_dir(tab_4, base_3, metal::dot(w_2, nadir), metal::dot(w_2, reference), metal::dot(w_2, side), slc_table, _buffer_sizes);
+    return _e9;
+}
+
+float bsh_scaled_radius(
+    BshNode node,
+    float scale
+) {
+    if (scale == 1.0) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return node.extent + (scale * (node.radius - node.extent));
+    }
+    return node.radius * scale;
+}
+
+uint mul_hi_u32_(
+    uint a_4,
+    uint b_3
+) {
+    uint a_lo = a_4 & 65535u;
+    uint a_hi = a_4 >> 16u;
+    uint b_lo = b_3 & 65535u;
+    uint b_hi = b_3 >> 16u;
+    uint ll = a_lo * b_lo;
+    uint lh = a_lo * b_hi;
+    uint hl = a_hi * b_lo;
+    uint hh = a_hi * b_hi;
+    uint mid_1 = ((ll >> 16u) + (lh & 65535u)) + (hl & 65535u);
+    return ((hh + (lh >> 16u)) + (hl >> 16u)) + (mid_1 >> 16u);
+}
+
+uint uniform_index(
+    uint n_3,
+    uint hi_1,
+    uint lo_1
+) {
+    uint _e3 = mul_lo_u32_(hi_1, n_3);
+    uint _e4 = mul_hi_u32_(hi_1, n_3);
+    uint _e5 = mul_hi_u32_(lo_1, n_3);
+    if (_e3 > (4294967295u - _e5)) {
+        return _e4 + 1u;
+    }
+    return _e4;
+}
+
+uint reservoir_slot(
+    uint n_4,
+    uint k_1,
+    uint hi_2,
+    uint lo_2
+) {
+    if (n_4 <= k_1) {
+        return n_4 - 1u;
+    }
+    uint _e7 = uniform_index(n_4, hi_2, lo_2);
+    if (_e7 < k_1) {
+        return _e7;
+    }
+    return k_1;
+}
+
+bool reservoir_takes(
+    uint n_5
+) {
+    return n_5 < RESERVOIR_FULL;
+}
+
+float reservoir_weight(
+    uint n_6,
+    uint k_2
+) {
+    float _e2 = to_f32_(n_6);
+    float _e3 = to_f32_(k_2);
+    return metal::max(_e2 / _e3, 1.0);
+}
+
+float smith_root(
+    float cos,
+    float alpha
+) {
+    float a2_ = alpha * alpha;
+    return metal::sqrt(((cos * cos) * (1.0 - a2_)) + a2_);
+}
+
+float receiver_peak(
+    metal::float4 lobe_1
+) {
+    float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10));
+}
+
+float range_scale(
+    metal::float4 lobe_2
+) {
+    if (lobe_2.y <= 0.0) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_2);
+    return metal::clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+metal::float3 triangle_normal(
+    metal::float3 a_5,
+    metal::float3 b_4,
+    metal::float3 c_4
+) {
+    bool local_5 = {};
+    metal::float3 n_9 = metal::cross(b_4 - a_5, c_4 - a_5);
+    float l2_ = metal::dot(n_9, n_9);
+    if (!(!((l2_ > 0.0)))) {
+        local_5 = !((l2_ < 300000000000000000000000000000000000000.0));
+    } else {
+        local_5 = true;
+    }
+    bool _e17 = local_5;
+    if (_e17) {
+        return metal::float3(0.0, 0.0, 0.0);
+    }
+    return n_9 / metal::float3(metal::sqrt(l2_));
+}
+
+metal::float3 light_intensity(
+    GpuLight l,
+    metal::float3 w_3,
+    device type_4 const& slc_table,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    switch(l.kind) {
+        case 0u: {
+            return l.intensity;
+        }
+        case 1u: {
+            float _e9 = spot_falloff(metal::dot(l.p1_, w_3), l.a, l.b);
+            return l.intensity * _e9;
+        }
+        case 2u: {
+            float _e16 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3, slc_table, _buffer_sizes);
+            return l.intensity * _e16;
+        }
+        case 3u: {
+            metal::float3 _e22 = triangle_normal(l.p0_, l.p1_, l.p2_);
+            float _e24 = triangle_lobe(_e22, l.a, w_3);
+            return l.intensity * _e24;
+        }
+        default: {
+            return metal::float3(0.0);
+        }
+    }
+}
+
+metal::float3 light_point(
+    GpuLight l_1,
+    float u1_1,
+    float u2_1
+) {
+    if (l_1.kind == LIGHT_TRIANGLE) {
+        metal::float3 _e9 = triangle_sample(l_1.p0_, l_1.p1_, l_1.p2_, u1_1, u2_1);
+        return _e9;
+    }
+    return l_1.p0_;
+}
+
+bool occluded(
+    metal::float3 a_6,
+    metal::float3 b_5
+) {
+    return false;
+}
+
+BshNode bsh_node(
+    BshNodes nodes,
+    uint i_1,
+    device type_9 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshNode _e4 = bsh_nodes[i_1];
+    return _e4;
+}
+
+uint bsh_count(
+    BshNodes nodes_1,
+    device type_9 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    return 1 + (_buffer_sizes.size8 - 0 - 32) / 32;
+}
+
+uint bsh_first(
+    BshNodes nodes_2,
+    device type_9 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e1 = bsh_count(nodes_2, bsh_nodes, _buffer_sizes);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+uint bsh_next_leaf_scaled(
+    BshNodes nodes_3,
+    uint start_1,
+    metal::float3 x_8,
+    float scale_1,
+    device type_9 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint i_2 = {};
+    i_2 = start_1;
+    uint2 loop_bound_1 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e5 = i_2;
+        if (_e5 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            uint _e8 = i_2;
+            BshNode _e9 = bsh_node(nodes_3, _e8, bsh_nodes, _buffer_sizes);
+            float _e11 = bsh_scaled_radius(_e9, scale_1);
+            bool _e12 = sphere_contains_point(_e9.center, _e11, x_8);
+            if (_e12) {
+                if (_e9.child == BSH_NONE) {
+                    uint _e16 = i_2;
+                    return _e16;
+                }
+                i_2 = _e9.child;
+            } else {
+                i_2 = _e9.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+Picks bsh_collect(
+    metal::float3 x_9,
+    float scale_2,
+    uint seed_1,
+    device type_9 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Picks picks = {};
+    uint h_1 = {};
+    uint i_3 = {};
+    picks.n = 0u;
+    h_1 = seed_1;
+    uint _e9 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_9, scale_2, bsh_nodes, _buffer_sizes);
+    i_3 = _e10;
+    uint2 loop_bound_2 = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e43 = i_3;
+            uint _e46 = bsh_nodes[_e43].next;
+            uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_9, scale_2, bsh_nodes, _buffer_sizes);
+            i_3 = _e47;
+        }
+        loop_init = false;
+        uint _e12 = i_3;
+        if (_e12 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            uint _e16 = picks.n;
+            bool _e17 = reservoir_takes(_e16);
+            if (_e17) {
+                uint _e19 = picks.n;
+                picks.n = _e19 + 1u;
+                uint _e22 = h_1;
+                uint _e23 = pcg_hash(_e22);
+                h_1 = _e23;
+                uint hi_3 = h_1;
+                uint _e25 = h_1;
+                uint _e26 = pcg_hash(_e25);
+                h_1 = _e26;
+                uint _e28 = picks.n;
+                uint _e30 = h_1;
+                uint _e31 = reservoir_slot(_e28, K, hi_3, _e30);
+                if (_e31 < K) {
+                    uint _e37 = i_3;
+                    uint _e40 = bsh_nodes[_e37].light;
+                    picks.light.inner[_e31] = _e40;
+                }
+            }
+        }
+    }
+    Picks _e48 = picks;
+    return _e48;
+}
+
+Connection connect(
+    uint li,
+    metal::float3 x_10,
+    metal::float3 n_7,
+    metal::float3 ng_1,
+    float s,
+    float w_res,
+    float u1_2,
+    float u2_2,
+    float eps,
+    device type_4 const& slc_table,
+    device type_8 const& lights,
+    device type_4 const& rt2_2,
+    device type_4 const& r2_2,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Connection c_5 = {};
+    bool local_6 = {};
+    c_5.e = metal::float3(0.0);
+    GpuLight l_2 = lights[li];
+    metal::float3 _e17 = light_point(l_2, u1_2, u2_2);
+    c_5.y = _e17;
+    metal::float3 _e20 = c_5.y;
+    float _e23 = r2_2[li];
+    float _e25 = connection_cosine(x_10, _e20, n_7, ng_1, s * _e23);
+    c_5.cos_x = _e25;
+    float _e27 = c_5.cos_x;
+    if (!((_e27 <= 0.0))) {
+        metal::float3 _e36 = c_5.y;
+        bool _e37 = occluded(x_10 + (ng_1 * eps), _e36);
+        local_6 = _e37;
+    } else {
+        local_6 = true;
+    }
+    bool _e39 = local_6;
+    if (_e39) {
+        Connection _e40 = c_5;
+        return _e40;
+    }
+    metal::float3 _e42 = c_5.y;
+    metal::float3 v_2 = x_10 - _e42;
+    float d2_5 = metal::dot(v_2, v_2);
+    metal::float3 _e49 = light_intensity(l_2, v_2 / metal::float3(metal::sqrt(d2_5)), slc_table, _buffer_sizes);
+    float _e51 = c_5.cos_x;
+    float _e54 = rt2_2[li];
+    float _e56 = connection_factor(_e51, d2_5, s * _e54, w_res);
+    c_5.e = _e49 * _e56;
+    Connection _e58 = c_5;
+    return _e58;
+}
+
+metal::float4 surface_at(
+    metal::int2 texel,
+    metal::texture2d<float, metal::access::sample> position_tex
+) {
+    metal::float4 p = position_tex.read(metal::uint2(texel), 0);
+    return (p.w > 0.0) ? metal::float4(p.xyz, 1.0) : metal::float4(0.0);
+}
+
+Shaded shade_pick(
+    uint li_1,
+    metal::float3 x_11,
+    metal::float3 n_8,
+    Material m_1,
+    float s2_,
+    float w_4,
+    float u1_3,
+    float u2_3,
+    device type_4 const& slc_table,
+    device type_8 const& lights,
+    device type_4 const& rt2_2,
+    device type_4 const& r2_2,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Shaded s_1 = {};
+    Connection _e10 = connect(li_1, x_11, n_8, n_8, s2_, w_4, u1_3, u2_3, 0.0, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
+    s_1.e = _e10.e;
+    s_1.diffuse = metal::float3(0.0);
+    s_1.specular = metal::float3(0.0);
+    Shaded _e19 = s_1;
+    return _e19;
+}
+
+Shaded add(
+    Shaded a_7,
+    Shaded b_6
+) {
+    return Shaded {a_7.e + b_6.e, a_7.diffuse + b_6.diffuse, a_7.specular + b_6.specular};
+}
+
+struct main_Input {
+};
+kernel void main_(
+  metal::uint3 gid [[thread_position_in_grid]]
+, device type_4 const& slc_table [[user(fake0)]]
+, constant ViewParams& view [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
+, device type_8 const& lights [[user(fake0)]]
+, device type_4 const& rt2_2 [[user(fake0)]]
+, device type_4 const& r2_2 [[user(fake0)]]
+, device type_9 const& bsh_nodes [[user(fake0)]]
+, constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
+) {
+    bool local = {};
+    bool local_1 = {};
+    Material m = {};
+    metal::float4 lobe = metal::float4(1.0, 0.0, 1.0, 1.0);
+    metal::float3 r = {};
+    uint h = {};
+    Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
+    uint k = 0u;
+    uint _e4 = view.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = view.height;
+        local = gid.y >= _e12;
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    metal::int2 texel_1 = metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y));
+    metal::float4 _e21 = surface_at(texel_1, position_tex);
+    metal::float4 _e24 = normal_tex.read(metal::uint2(texel_1), 0);
+    metal::float3 nn = _e24.xyz;
+    float len2_ = metal::dot(nn, nn);
+    if (!((_e21.w <= 0.0))) {
+        local_1 = !((len2_ > 0.0));
+    } else {
+        local_1 = true;
+    }
+    bool _e37 = local_1;
+    if (_e37) {
+        out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
+        return;
+    }
+    metal::float3 x_12 = _e21.xyz;
+    metal::float3 n_10 = nn / metal::float3(metal::sqrt(len2_));
+    r = n_10;
+    metal::float4 _e53 = lobe;
+    float _e54 = range_scale(_e53);
+    float scale_3 = metal::sqrt(_e54);
+    uint _e58 = view.seed;
+    uint _e62 = view.width;
+    uint _e68 = view.frame;
+    uint _e69 = point_stream(_e58, (gid.y * _e62) + gid.x, _e68);
+    uint _e70 = pick_stream(_e69);
+    h = _e70;
+    Picks _e80 = bsh_collect(x_12, scale_3, _e69, bsh_nodes, _buffer_sizes);
+    float _e83 = reservoir_weight(_e80.n, K);
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e107 = k;
+            k = _e107 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e86 = k;
+        if (_e86 < metal::min(_e80.n, K)) {
+        } else {
+            break;
+        }
+        {
+            uint _e91 = h;
+            uint _e92 = pcg_hash(_e91);
+            h = _e92;
+            uint _e93 = h;
+            float _e94 = xi_from_bits(_e93);
+            uint _e95 = h;
+            uint _e96 = pcg_hash(_e95);
+            h = _e96;
+            Shaded _e97 = t;
+            uint _e99 = k;
+            Material _e101 = m;
+            uint _e102 = h;
+            float _e103 = xi_from_bits(_e102);
+            Shaded _e104 = shade_pick(_e80.light.inner[_e99], x_12, n_10, _e101, _e54, _e83, _e94, _e103, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
+            Shaded _e105 = add(_e97, _e104);
+            t = _e105;
+        }
+    }
+    uint count = _e80.n;
+    metal::float3 _e112 = t.e;
+    out_tex.write(metal::float4(_e112, static_cast<float>(count)), metal::uint2(texel_1));
+    return;
+}

@@ -1,0 +1,1138 @@
+// language: metal1.0
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct _mslBufferSizes {
+    uint size7;
+    uint size8;
+    uint size9;
+    uint size10;
+    uint size11;
+};
+
+struct GpuLight {
+    metal::packed_float3 p0_;
+    uint kind;
+    metal::packed_float3 p1_;
+    float a;
+    metal::packed_float3 p2_;
+    float b;
+    metal::packed_float3 intensity;
+    uint ies_base;
+};
+struct GpuLightCone {
+    metal::packed_float3 center;
+    float radius;
+    metal::packed_float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
+struct ViewParams {
+    metal::float4 c0_;
+    metal::float4 c1_;
+    metal::float4 c2_;
+    metal::float4 c3_;
+    metal::packed_float3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    metal::packed_float3 f0_d;
+    float f90_d;
+};
+typedef float type_4[1];
+struct BshNode {
+    metal::packed_float3 center;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    float extent;
+};
+typedef GpuLight type_8[1];
+typedef BshNode type_9[1];
+typedef GpuLightCone type_10[1];
+struct type_11 {
+    uint inner[8];
+};
+typedef uint BshNodes;
+struct Connection {
+    metal::float3 e;
+    metal::packed_float3 y;
+    float cos_x;
+};
+struct type_12 {
+    float inner[8];
+};
+struct WeightedPicks {
+    type_11 light;
+    type_12 w;
+    float w_sum;
+    uint n;
+    uint h;
+};
+struct Shaded {
+    metal::float3 e;
+    metal::float3 diffuse;
+    metal::float3 specular;
+};
+struct Material {
+    metal::packed_float3 base;
+    float metallic;
+    float alpha;
+    char _pad3[12];
+    metal::float3 v;
+};
+constant uint LIGHT_POINT = 0u;
+constant uint LIGHT_SPOT = 1u;
+constant uint LIGHT_IES = 2u;
+constant uint LIGHT_TRIANGLE = 3u;
+constant uint LIGHT_VPL = 4u;
+constant uint NO_LIGHT = 4294967295u;
+constant uint MAP_CAMERA = 0u;
+constant uint MAP_PERSPECTIVE = 1u;
+constant uint MAP_ORTHOGRAPHIC = 2u;
+constant float XI_STEP = 0.000000059604645;
+constant uint PICK_STREAM = 2654435769u;
+constant float TWO_PI = 6.2831855;
+constant float CULL_RADIUS_SCALE = 1.000001;
+constant float SPHERE_PAD = 0.00000047683716;
+constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
+constant float SPHERE_PAD_ABS = 0.000000000000000001;
+constant float INV_PI = 0.31830987;
+constant float MIN_D2_ = 0.000000000001;
+constant uint BSH_NONE = 4294967295u;
+constant uint RESERVOIR_FULL = 4294967295u;
+constant float GGX_ALPHA_MIN = 0.001;
+constant float RANGE_SCALE_MAX = 64.0;
+constant uint LIGHT_BVH_LEAF = 4294967295u;
+constant float ONE_MINUS_EPSILON = 0.99999994;
+constant float F32_MAX = 340282350000000000000000000000000000000.0;
+constant float DEPTH_NONE = 1000000000000000000000000000000.0;
+constant float DEPTH_SIGMA = 0.05;
+constant float COVER_WEIGHT = 0.1;
+constant uint NEAR_BLOCK = 64u;
+constant uint ROULETTE_DEPTH = 2u;
+constant uint K = 8u;
+constant BshNodes BSH = 0u;
+
+float to_f32_(
+    uint u
+) {
+    return static_cast<float>(u);
+}
+
+uint mul_lo_u32_(
+    uint a,
+    uint b
+) {
+    return a * b;
+}
+
+uint add_wrap_u32_(
+    uint a_1,
+    uint b_1
+) {
+    return a_1 + b_1;
+}
+
+float xi_from_bits(
+    uint bits
+) {
+    float _e3 = to_f32_(bits >> 8u);
+    return _e3 * XI_STEP;
+}
+
+uint pcg_hash(
+    uint x
+) {
+    uint _e2 = mul_lo_u32_(x, 747796405u);
+    uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    uint _e12 = mul_lo_u32_((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4, 277803737u);
+    return (_e12 >> 22u) ^ _e12;
+}
+
+uint point_stream(
+    uint seed,
+    uint point,
+    uint frame
+) {
+    uint _e3 = pcg_hash(frame);
+    uint _e5 = pcg_hash(point ^ _e3);
+    uint _e7 = pcg_hash(seed ^ _e5);
+    return _e7;
+}
+
+uint pick_stream(
+    uint stream
+) {
+    uint _e3 = pcg_hash(stream ^ PICK_STREAM);
+    return _e3;
+}
+
+float slc_weight(
+    float rt2_,
+    float d2_
+) {
+    if (d2_ <= rt2_) {
+        return 1.0;
+    }
+    return d2_ / rt2_;
+}
+
+bool slc_keep(
+    float r2_,
+    float d2_1
+) {
+    return d2_1 < r2_;
+}
+
+bool sphere_contains_point(
+    metal::float3 c,
+    float r_1,
+    metal::float3 x_1
+) {
+    metal::float3 v_3 = x_1 - c;
+    return metal::dot(v_3, v_3) <= (r_1 * r_1);
+}
+
+float inverse_square(
+    float d2_2
+) {
+    return 1.0 / metal::max(d2_2, MIN_D2_);
+}
+
+float connection_factor(
+    float cos_x,
+    float d2_3,
+    float rt2_1,
+    float w
+) {
+    float _e4 = inverse_square(d2_3);
+    float _e6 = slc_weight(rt2_1, d2_3);
+    return ((cos_x * _e4) * _e6) * w;
+}
+
+float connection_cosine(
+    metal::float3 x_2,
+    metal::float3 y,
+    metal::float3 n,
+    metal::float3 ng,
+    float r2_1
+) {
+    bool local_2 = {};
+    bool local_3 = {};
+    metal::float3 v_4 = x_2 - y;
+    float d2_5 = metal::dot(v_4, v_4);
+    bool _e7 = slc_keep(r2_1, d2_5);
+    if (!(!(_e7))) {
+        local_2 = !((d2_5 > 0.0));
+    } else {
+        local_2 = true;
+    }
+    bool _e16 = local_2;
+    if (_e16) {
+        return 0.0;
+    }
+    metal::float3 w_6 = v_4 / metal::float3(metal::sqrt(d2_5));
+    float cos_x_1 = -(metal::dot(n, w_6));
+    if (!((cos_x_1 <= 0.0))) {
+        local_3 = metal::dot(ng, w_6) >= 0.0;
+    } else {
+        local_3 = true;
+    }
+    bool _e32 = local_3;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float triangle_lobe(
+    metal::float3 n_1,
+    float area,
+    metal::float3 w_1
+) {
+    return area * metal::max(metal::dot(n_1, w_1), 0.0);
+}
+
+metal::float3 triangle_sample(
+    metal::float3 a_2,
+    metal::float3 b_2,
+    metal::float3 c_1,
+    float u1_,
+    float u2_
+) {
+    float su = metal::sqrt(u1_);
+    float b0_ = 1.0 - su;
+    float b1_ = u2_ * su;
+    return ((a_2 * b0_) + (b_2 * b1_)) + (c_1 * ((1.0 - b0_) - b1_));
+}
+
+float bsh_scaled_radius(
+    BshNode node,
+    float scale
+) {
+    if (scale == 1.0) {
+        return node.radius;
+    }
+    if (node.child == BSH_NONE) {
+        return node.extent + (scale * (node.radius - node.extent));
+    }
+    return node.radius * scale;
+}
+
+bool weighted_replace(
+    float w_2,
+    float w_sum,
+    float u_1
+) {
+    return (u_1 * w_sum) < w_2;
+}
+
+float weighted_pick_weight(
+    float w_sum_1,
+    float w_3,
+    uint k_1
+) {
+    float _e3 = to_f32_(k_1);
+    return w_sum_1 / (_e3 * w_3);
+}
+
+float ggx_alpha(
+    float roughness
+) {
+    return metal::max(roughness * roughness, GGX_ALPHA_MIN);
+}
+
+float ggx_d(
+    float cos_h,
+    float sin2_h,
+    float alpha
+) {
+    if (cos_h <= 0.0) {
+        return 0.0;
+    }
+    float a2_ = alpha * alpha;
+    float t_1 = ((cos_h * cos_h) * a2_) + sin2_h;
+    return (a2_ * INV_PI) / (t_1 * t_1);
+}
+
+float smith_root(
+    float cos,
+    float alpha_1
+) {
+    float a2_1 = alpha_1 * alpha_1;
+    return metal::sqrt(((cos * cos) * (1.0 - a2_1)) + a2_1);
+}
+
+float smith_visibility(
+    float n_l,
+    float n_v,
+    float alpha_2
+) {
+    bool local_4 = {};
+    if (!((n_l <= 0.0))) {
+        local_4 = n_v <= 0.0;
+    } else {
+        local_4 = true;
+    }
+    bool _e11 = local_4;
+    if (_e11) {
+        return 0.0;
+    }
+    float _e13 = smith_root(n_v, alpha_2);
+    float _e15 = smith_root(n_l, alpha_2);
+    return 0.5 / ((n_l * _e13) + (n_v * _e15));
+}
+
+metal::float3 fresnel_schlick(
+    metal::float3 f0_,
+    float f90_,
+    float v_h
+) {
+    float c_5 = metal::saturate(1.0 - v_h);
+    float c2_ = c_5 * c_5;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_5));
+}
+
+metal::float3 specular_fresnel(
+    metal::float3 base,
+    float metallic,
+    metal::float3 f0_d,
+    float f90_d,
+    float v_h_1
+) {
+    metal::float3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    metal::float3 _e10 = fresnel_schlick(base, 1.0, v_h_1);
+    return (_e5 * (1.0 - metallic)) + (_e10 * metallic);
+}
+
+metal::float3 diffuse_brdf(
+    metal::float3 base_1,
+    float metallic_1,
+    metal::float3 f0_d_1,
+    float f90_d_1,
+    float v_h_2
+) {
+    metal::float3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return (((metal::float3(1.0, 1.0, 1.0) - _e9) * base_1) * (1.0 - metallic_1)) * INV_PI;
+}
+
+float half_cosine(
+    metal::float3 v,
+    metal::float3 l
+) {
+    metal::float3 h_2 = v + l;
+    float len2_ = metal::dot(h_2, h_2);
+    if (len2_ <= 0.0) {
+        return 0.0;
+    }
+    return metal::saturate(metal::dot(v, h_2) / metal::sqrt(len2_));
+}
+
+metal::float3 specular_brdf(
+    metal::float3 base_2,
+    float metallic_2,
+    metal::float3 f0_d_2,
+    float f90_d_2,
+    float alpha_3,
+    metal::float3 n_2,
+    metal::float3 v_1,
+    metal::float3 l_1
+) {
+    bool local_5 = {};
+    float n_l_1 = metal::dot(n_2, l_1);
+    float n_v_2 = metal::dot(n_2, v_1);
+    if (!((n_l_1 <= 0.0))) {
+        local_5 = n_v_2 <= 0.0;
+    } else {
+        local_5 = true;
+    }
+    bool _e18 = local_5;
+    if (_e18) {
+        return metal::float3(0.0, 0.0, 0.0);
+    }
+    metal::float3 hs = v_1 + l_1;
+    float inv = 1.0 / metal::sqrt(metal::dot(hs, hs));
+    metal::float3 h_3 = hs * inv;
+    metal::float3 c_6 = metal::cross(n_2, h_3);
+    float _e32 = ggx_d(metal::dot(n_2, h_3), metal::dot(c_6, c_6), alpha_3);
+    metal::float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, metal::dot(v_1, h_3));
+    float _e35 = smith_visibility(n_l_1, n_v_2, alpha_3);
+    return _e34 * (_e32 * _e35);
+}
+
+bool has_specular(
+    float metallic_3,
+    metal::float3 f0_d_3,
+    float f90_d_3
+) {
+    bool local_6 = {};
+    bool local_7 = {};
+    if (!((metallic_3 > 0.0))) {
+        local_6 = f90_d_3 > 0.0;
+    } else {
+        local_6 = true;
+    }
+    bool _e11 = local_6;
+    if (!(_e11)) {
+        local_7 = metal::max(metal::max(f0_d_3.x, f0_d_3.y), f0_d_3.z) > 0.0;
+    } else {
+        local_7 = true;
+    }
+    bool _e23 = local_7;
+    return _e23;
+}
+
+float channel_mean(
+    metal::float3 c_2
+) {
+    return ((c_2.x + c_2.y) + c_2.z) * 0.33333334;
+}
+
+metal::float4 receiver_lobe(
+    metal::float3 base_3,
+    float metallic_4,
+    metal::float3 f0_d_4,
+    float f90_d_4,
+    float alpha_4,
+    float n_v_1
+) {
+    bool local_8 = {};
+    metal::float3 _e10 = fresnel_schlick(f0_d_4, f90_d_4, n_v_1);
+    float _e16 = channel_mean(((metal::float3(1.0, 1.0, 1.0) - _e10) * base_3) * (1.0 - metallic_4));
+    if (!((n_v_1 <= 0.0))) {
+        bool _e22 = has_specular(metallic_4, f0_d_4, f90_d_4);
+        local_8 = !(_e22);
+    } else {
+        local_8 = true;
+    }
+    bool _e25 = local_8;
+    if (_e25) {
+        return metal::float4(_e16, 0.0, alpha_4, n_v_1);
+    }
+    metal::float3 _e28 = specular_fresnel(base_3, metallic_4, f0_d_4, f90_d_4, n_v_1);
+    float _e29 = channel_mean(_e28);
+    return metal::float4(_e16, _e29, alpha_4, n_v_1);
+}
+
+float receiver_peak(
+    metal::float4 lobe_1
+) {
+    float _e10 = smith_root(lobe_1.w, lobe_1.z);
+    return lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10));
+}
+
+float range_scale(
+    metal::float4 lobe_2
+) {
+    if (lobe_2.y <= 0.0) {
+        return 1.0;
+    }
+    float _e5 = receiver_peak(lobe_2);
+    return metal::clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+metal::float3 mirror_dir(
+    metal::float3 n_3,
+    metal::float3 v_2
+) {
+    return (n_3 * (2.0 * metal::dot(n_3, v_2))) - v_2;
+}
+
+float cos_sub_clamped(
+    float sin_a,
+    float cos_a,
+    float sin_b,
+    float cos_b
+) {
+    if (cos_a > cos_b) {
+        return 1.0;
+    }
+    return (cos_a * cos_b) + (sin_a * sin_b);
+}
+
+float sin_sub_clamped(
+    float sin_a_1,
+    float cos_a_1,
+    float sin_b_1,
+    float cos_b_1
+) {
+    if (cos_a_1 > cos_b_1) {
+        return 0.0;
+    }
+    return (sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1);
+}
+
+float safe_sqrt(
+    float x_3
+) {
+    return metal::sqrt(metal::max(x_3, 0.0));
+}
+
+float subtended_cos(
+    float dist2_,
+    float r2_2
+) {
+    float _e5 = safe_sqrt(1.0 - (r2_2 / dist2_));
+    return (dist2_ <= r2_2) ? -1.0 : _e5;
+}
+
+float emitter_importance(
+    metal::float3 center,
+    float radius,
+    float phi,
+    metal::float3 axis,
+    float cos_o,
+    float cos_e,
+    metal::float3 p
+) {
+    metal::float3 v_5 = p - center;
+    float dist2_1 = metal::dot(v_5, v_5);
+    float r2_4 = radius * radius;
+    float d2_6 = metal::max(metal::max(dist2_1, r2_4), MIN_D2_);
+    metal::float3 wi = (dist2_1 > 0.0) ? (v_5 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
+    float cos_w = metal::dot(axis, wi);
+    float _e27 = safe_sqrt(1.0 - (cos_w * cos_w));
+    float _e28 = subtended_cos(dist2_1, r2_4);
+    float _e32 = safe_sqrt(1.0 - (_e28 * _e28));
+    float _e36 = safe_sqrt(1.0 - (cos_o * cos_o));
+    float _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
+    float _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
+    float _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
+    if (_e39 <= cos_e) {
+        return 0.0;
+    }
+    return (phi * _e39) / d2_6;
+}
+
+float cone_cos_toward(
+    metal::float3 center_1,
+    float radius_1,
+    metal::float3 p_1,
+    metal::float3 d
+) {
+    metal::float3 v_6 = center_1 - p_1;
+    float dist2_2 = metal::dot(v_6, v_6);
+    metal::float3 w_7 = (dist2_2 > 0.0) ? (v_6 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0);
+    float _e17 = subtended_cos(dist2_2, radius_1 * radius_1);
+    float cos_i = metal::dot(w_7, d);
+    float _e22 = safe_sqrt(1.0 - (cos_i * cos_i));
+    float _e26 = safe_sqrt(1.0 - (_e17 * _e17));
+    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float light_importance(
+    metal::float3 center_2,
+    float radius_2,
+    float phi_1,
+    metal::float3 axis_1,
+    float cos_o_1,
+    float cos_e_1,
+    metal::float3 p_2,
+    metal::float3 n_4
+) {
+    float imp = {};
+    float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
+    imp = _e8;
+    if (metal::dot(n_4, n_4) > 0.0) {
+        float _e13 = imp;
+        float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_4);
+        imp = _e13 * metal::max(_e14, 0.0);
+    }
+    float _e18 = imp;
+    return metal::max(_e18, 0.0);
+}
+
+float glossy_importance(
+    metal::float3 center_3,
+    float radius_3,
+    float phi_2,
+    metal::float3 axis_2,
+    float cos_o_2,
+    float cos_e_2,
+    metal::float3 p_3,
+    metal::float3 n_5,
+    metal::float3 r_2,
+    metal::float4 lobe_3
+) {
+    bool local_9 = {};
+    float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
+    float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_5);
+    if (!((_e10 <= 0.0))) {
+        local_9 = _e11 <= 0.0;
+    } else {
+        local_9 = true;
+    }
+    bool _e20 = local_9;
+    if (_e20) {
+        return 0.0;
+    }
+    float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    float _e27 = safe_sqrt(0.5 + (0.5 * _e22));
+    float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_3.z);
+    float _e39 = smith_root(lobe_3.w, lobe_3.z);
+    float spec = ((lobe_3.y * _e33) * 0.25) / _e39;
+    return _e10 * (((lobe_3.x * INV_PI) * _e11) + spec);
+}
+
+float candidate_weight(
+    float importance,
+    float rt2_2,
+    float d2_4
+) {
+    float _e3 = slc_weight(rt2_2, d2_4);
+    return importance * _e3;
+}
+
+float cone_weight(
+    metal::float3 center_4,
+    float radius_4,
+    float phi_3,
+    metal::float3 axis_3,
+    float cos_o_3,
+    float cos_e_3,
+    float rt2_3,
+    metal::float3 p_4,
+    metal::float3 n_6,
+    metal::float3 r_3,
+    metal::float4 lobe_4
+) {
+    metal::float3 v_7 = p_4 - center_4;
+    if (lobe_4.y <= 0.0) {
+        float _e15 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6);
+        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_7, v_7));
+        return _e19;
+    }
+    float _e20 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6, r_3, lobe_4);
+    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_7, v_7));
+    return _e22;
+}
+
+metal::float3 triangle_normal(
+    metal::float3 a_3,
+    metal::float3 b_3,
+    metal::float3 c_3
+) {
+    bool local_10 = {};
+    metal::float3 n_11 = metal::cross(b_3 - a_3, c_3 - a_3);
+    float l2_ = metal::dot(n_11, n_11);
+    if (!(!((l2_ > 0.0)))) {
+        local_10 = !((l2_ < 300000000000000000000000000000000000000.0));
+    } else {
+        local_10 = true;
+    }
+    bool _e17 = local_10;
+    if (_e17) {
+        return metal::float3(0.0, 0.0, 0.0);
+    }
+    return n_11 / metal::float3(metal::sqrt(l2_));
+}
+
+metal::float3 light_intensity(
+    GpuLight l_2,
+    metal::float3 w_4
+) {
+    switch(l_2.kind) {
+        case 3u: {
+            metal::float3 _e7 = triangle_normal(l_2.p0_, l_2.p1_, l_2.p2_);
+            float _e9 = triangle_lobe(_e7, l_2.a, w_4);
+            return l_2.intensity * _e9;
+        }
+        default: {
+            return metal::float3(0.0);
+        }
+    }
+}
+
+metal::float3 light_point(
+    GpuLight l_3,
+    float u1_1,
+    float u2_1
+) {
+    if (l_3.kind == LIGHT_TRIANGLE) {
+        metal::float3 _e9 = triangle_sample(l_3.p0_, l_3.p1_, l_3.p2_, u1_1, u2_1);
+        return _e9;
+    }
+    return l_3.p0_;
+}
+
+bool occluded(
+    metal::float3 a_4,
+    metal::float3 b_4
+) {
+    return false;
+}
+
+BshNode bsh_node(
+    BshNodes nodes,
+    uint i,
+    device type_9 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshNode _e4 = bsh_nodes[i];
+    return _e4;
+}
+
+uint bsh_count(
+    BshNodes nodes_1,
+    device type_9 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    return 1 + (_buffer_sizes.size10 - 0 - 32) / 32;
+}
+
+uint bsh_first(
+    BshNodes nodes_2,
+    device type_9 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e1 = bsh_count(nodes_2, bsh_nodes, _buffer_sizes);
+    if (_e1 > 0u) {
+        return 0u;
+    }
+    return BSH_NONE;
+}
+
+uint bsh_next_leaf_scaled(
+    BshNodes nodes_3,
+    uint start,
+    metal::float3 x_4,
+    float scale_1,
+    device type_9 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint i_1 = {};
+    i_1 = start;
+    uint2 loop_bound = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e5 = i_1;
+        if (_e5 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            uint _e8 = i_1;
+            BshNode _e9 = bsh_node(nodes_3, _e8, bsh_nodes, _buffer_sizes);
+            float _e11 = bsh_scaled_radius(_e9, scale_1);
+            bool _e12 = sphere_contains_point(_e9.center, _e11, x_4);
+            if (_e12) {
+                if (_e9.child == BSH_NONE) {
+                    uint _e16 = i_1;
+                    return _e16;
+                }
+                i_1 = _e9.child;
+            } else {
+                i_1 = _e9.next;
+            }
+        }
+    }
+    return BSH_NONE;
+}
+
+Connection connect(
+    uint li,
+    metal::float3 x_5,
+    metal::float3 n_7,
+    metal::float3 ng_1,
+    float s,
+    float w_res,
+    float u1_2,
+    float u2_2,
+    float eps,
+    device type_8 const& lights,
+    device type_4 const& rt2_4,
+    device type_4 const& r2_3,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Connection c_4 = {};
+    bool local_11 = {};
+    c_4.e = metal::float3(0.0);
+    GpuLight l_4 = lights[li];
+    metal::float3 _e17 = light_point(l_4, u1_2, u2_2);
+    c_4.y = _e17;
+    metal::float3 _e20 = c_4.y;
+    float _e23 = r2_3[li];
+    float _e25 = connection_cosine(x_5, _e20, n_7, ng_1, s * _e23);
+    c_4.cos_x = _e25;
+    float _e27 = c_4.cos_x;
+    if (!((_e27 <= 0.0))) {
+        metal::float3 _e36 = c_4.y;
+        bool _e37 = occluded(x_5 + (ng_1 * eps), _e36);
+        local_11 = _e37;
+    } else {
+        local_11 = true;
+    }
+    bool _e39 = local_11;
+    if (_e39) {
+        Connection _e40 = c_4;
+        return _e40;
+    }
+    metal::float3 _e42 = c_4.y;
+    metal::float3 v_8 = x_5 - _e42;
+    float d2_7 = metal::dot(v_8, v_8);
+    metal::float3 _e49 = light_intensity(l_4, v_8 / metal::float3(metal::sqrt(d2_7)));
+    float _e51 = c_4.cos_x;
+    float _e54 = rt2_4[li];
+    float _e56 = connection_factor(_e51, d2_7, s * _e54, w_res);
+    c_4.e = _e49 * _e56;
+    Connection _e58 = c_4;
+    return _e58;
+}
+
+float light_weight(
+    uint li_1,
+    metal::float3 x_6,
+    metal::float3 n_8,
+    metal::float3 r_4,
+    metal::float4 lobe_5,
+    device type_4 const& rt2_4,
+    device type_10 const& light_cones,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLightCone c_7 = light_cones[li_1];
+    float _e14 = range_scale(lobe_5);
+    float _e17 = rt2_4[li_1];
+    float _e19 = cone_weight(c_7.center, c_7.radius, c_7.phi, c_7.axis, c_7.cos_o, c_7.cos_e, _e14 * _e17, x_6, n_8, r_4, lobe_5);
+    return _e19;
+}
+
+WeightedPicks bsh_weighted_collect(
+    metal::float3 x_7,
+    metal::float3 n_9,
+    metal::float3 r_5,
+    metal::float4 lobe_6,
+    float scale_2,
+    uint h0_,
+    device type_4 const& rt2_4,
+    device type_9 const& bsh_nodes,
+    device type_10 const& light_cones,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    WeightedPicks picks = {};
+    uint h_1 = {};
+    uint b_5 = {};
+    uint s_1 = {};
+    picks.w_sum = 0.0;
+    picks.n = 0u;
+    h_1 = h0_;
+    uint _e14 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    uint _e15 = bsh_next_leaf_scaled(BSH, _e14, x_7, scale_2, bsh_nodes, _buffer_sizes);
+    b_5 = _e15;
+    uint2 loop_bound_1 = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e58 = b_5;
+            uint _e61 = bsh_nodes[_e58].next;
+            uint _e62 = bsh_next_leaf_scaled(BSH, _e61, x_7, scale_2, bsh_nodes, _buffer_sizes);
+            b_5 = _e62;
+        }
+        loop_init = false;
+        uint _e17 = b_5;
+        if (_e17 != BSH_NONE) {
+        } else {
+            break;
+        }
+        {
+            uint _e21 = picks.n;
+            picks.n = _e21 + 1u;
+            uint _e25 = b_5;
+            uint li_3 = bsh_nodes[_e25].light;
+            float _e29 = light_weight(li_3, x_7, n_9, r_5, lobe_6, rt2_4, light_cones, _buffer_sizes);
+            if (_e29 > 0.0) {
+                float _e33 = picks.w_sum;
+                picks.w_sum = _e33 + _e29;
+                s_1 = 0u;
+                uint2 loop_bound_2 = uint2(4294967295u);
+                bool loop_init_1 = true;
+                while(true) {
+                    if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+                    loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                    if (!loop_init_1) {
+                        uint _e54 = s_1;
+                        s_1 = _e54 + 1u;
+                    }
+                    loop_init_1 = false;
+                    uint _e37 = s_1;
+                    if (_e37 < K) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e40 = h_1;
+                        uint _e41 = pcg_hash(_e40);
+                        h_1 = _e41;
+                        float _e43 = picks.w_sum;
+                        uint _e44 = h_1;
+                        float _e45 = xi_from_bits(_e44);
+                        bool _e46 = weighted_replace(_e29, _e43, _e45);
+                        if (_e46) {
+                            uint _e48 = s_1;
+                            picks.light.inner[_e48] = li_3;
+                            uint _e51 = s_1;
+                            picks.w.inner[_e51] = _e29;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    uint _e64 = h_1;
+    picks.h = _e64;
+    WeightedPicks _e65 = picks;
+    return _e65;
+}
+
+metal::float4 surface_at(
+    metal::int2 texel,
+    metal::texture2d<float, metal::access::sample> position_tex
+) {
+    metal::float4 p_5 = position_tex.read(metal::uint2(texel), 0);
+    return (p_5.w > 0.0) ? metal::float4(p_5.xyz, 1.0) : metal::float4(0.0);
+}
+
+Shaded shade_pick(
+    uint li_2,
+    metal::float3 x_8,
+    metal::float3 n_10,
+    Material m_1,
+    float s2_,
+    float w_5,
+    float u1_3,
+    float u2_3,
+    constant ViewParams& view,
+    device type_8 const& lights,
+    device type_4 const& rt2_4,
+    device type_4 const& r2_3,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Shaded s_2 = {};
+    Connection _e10 = connect(li_2, x_8, n_10, n_10, s2_, w_5, u1_3, u2_3, 0.0, lights, rt2_4, r2_3, _buffer_sizes);
+    s_2.e = _e10.e;
+    s_2.diffuse = metal::float3(0.0);
+    s_2.specular = metal::float3(0.0);
+    if (_e10.cos_x > 0.0) {
+        metal::float3 l_5 = metal::normalize(_e10.y - x_8);
+        metal::float3 _e30 = view.f0_d;
+        float _e33 = view.f90_d;
+        float _e35 = half_cosine(m_1.v, l_5);
+        metal::float3 _e36 = diffuse_brdf(m_1.base, m_1.metallic, _e30, _e33, _e35);
+        s_2.diffuse = _e36 * _e10.e;
+        metal::float3 _e44 = view.f0_d;
+        float _e47 = view.f90_d;
+        metal::float3 _e50 = specular_brdf(m_1.base, m_1.metallic, _e44, _e47, m_1.alpha, n_10, m_1.v, l_5);
+        s_2.specular = _e50 * _e10.e;
+    }
+    Shaded _e53 = s_2;
+    return _e53;
+}
+
+Shaded add(
+    Shaded a_5,
+    Shaded b_6
+) {
+    return Shaded {a_5.e + b_6.e, a_5.diffuse + b_6.diffuse, a_5.specular + b_6.specular};
+}
+
+struct main_Input {
+};
+kernel void main_(
+  metal::uint3 gid [[thread_position_in_grid]]
+, constant ViewParams& view [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> base_color_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> metal_rough_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::write> specular_tex [[user(fake0)]]
+, device type_8 const& lights [[user(fake0)]]
+, device type_4 const& rt2_4 [[user(fake0)]]
+, device type_4 const& r2_3 [[user(fake0)]]
+, device type_9 const& bsh_nodes [[user(fake0)]]
+, device type_10 const& light_cones [[user(fake0)]]
+, constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
+) {
+    bool local = {};
+    bool local_1 = {};
+    Material m = {};
+    metal::float4 lobe = metal::float4(1.0, 0.0, 1.0, 1.0);
+    metal::float3 r = {};
+    uint h = {};
+    Shaded t = Shaded {metal::float3(0.0), metal::float3(0.0), metal::float3(0.0)};
+    uint k = 0u;
+    uint _e4 = view.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = view.height;
+        local = gid.y >= _e12;
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    metal::int2 texel_1 = metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y));
+    metal::float4 _e21 = surface_at(texel_1, position_tex);
+    metal::float4 _e24 = normal_tex.read(metal::uint2(texel_1), 0);
+    metal::float3 nn = _e24.xyz;
+    float len2_1 = metal::dot(nn, nn);
+    if (!((_e21.w <= 0.0))) {
+        local_1 = !((len2_1 > 0.0));
+    } else {
+        local_1 = true;
+    }
+    bool _e37 = local_1;
+    if (_e37) {
+        out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
+        specular_tex.write(metal::float4(0.0), metal::uint2(texel_1));
+        return;
+    }
+    metal::float3 x_9 = _e21.xyz;
+    metal::float3 n_12 = nn / metal::float3(metal::sqrt(len2_1));
+    r = n_12;
+    metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
+    metal::float4 _e61 = base_color_tex.read(metal::uint2(texel_1), 0);
+    float _e67 = ggx_alpha(metal::saturate(mr.y));
+    metal::float3 _e70 = view.eye;
+    m = Material {_e61.xyz, metal::saturate(mr.z), _e67, {}, metal::normalize(_e70 - x_9)};
+    metal::float3 _e75 = m.base;
+    float _e77 = m.metallic;
+    metal::float3 _e80 = view.f0_d;
+    float _e83 = view.f90_d;
+    float _e85 = m.alpha;
+    metal::float3 _e87 = m.v;
+    metal::float4 _e89 = receiver_lobe(_e75, _e77, _e80, _e83, _e85, metal::dot(n_12, _e87));
+    lobe = _e89;
+    metal::float3 _e91 = m.v;
+    metal::float3 _e92 = mirror_dir(n_12, _e91);
+    r = _e92;
+    metal::float4 _e93 = lobe;
+    float _e94 = range_scale(_e93);
+    float scale_3 = metal::sqrt(_e94);
+    uint _e98 = view.seed;
+    uint _e102 = view.width;
+    uint _e108 = view.frame;
+    uint _e109 = point_stream(_e98, (gid.y * _e102) + gid.x, _e108);
+    uint _e110 = pick_stream(_e109);
+    h = _e110;
+    metal::float3 _e120 = r;
+    metal::float4 _e121 = lobe;
+    WeightedPicks _e122 = bsh_weighted_collect(x_9, n_12, _e120, _e121, scale_3, _e109, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
+    if (_e122.w_sum > 0.0) {
+        uint2 loop_bound_3 = uint2(4294967295u);
+        bool loop_init_2 = true;
+        while(true) {
+            if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+            loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+            if (!loop_init_2) {
+                uint _e153 = k;
+                k = _e153 + 1u;
+            }
+            loop_init_2 = false;
+            uint _e128 = k;
+            if (_e128 < K) {
+            } else {
+                break;
+            }
+            {
+                uint _e131 = h;
+                uint _e132 = pcg_hash(_e131);
+                h = _e132;
+                uint _e133 = h;
+                float _e134 = xi_from_bits(_e133);
+                uint _e135 = h;
+                uint _e136 = pcg_hash(_e135);
+                h = _e136;
+                Shaded _e137 = t;
+                uint _e139 = k;
+                Material _e141 = m;
+                uint _e144 = k;
+                float _e147 = weighted_pick_weight(_e122.w_sum, _e122.w.inner[_e144], K);
+                uint _e148 = h;
+                float _e149 = xi_from_bits(_e148);
+                Shaded _e150 = shade_pick(_e122.light.inner[_e139], x_9, n_12, _e141, _e94, _e147, _e134, _e149, view, lights, rt2_4, r2_3, _buffer_sizes);
+                Shaded _e151 = add(_e137, _e150);
+                t = _e151;
+            }
+        }
+    }
+    uint count = _e122.n;
+    metal::float3 _e158 = t.e;
+    out_tex.write(metal::float4(_e158, static_cast<float>(count)), metal::uint2(texel_1));
+    metal::float3 _e163 = t.specular;
+    specular_tex.write(metal::float4(_e163, 0.0), metal::uint2(texel_1));
+    return;
+}

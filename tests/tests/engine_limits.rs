@@ -1,0 +1,170 @@
+//! What an engine's device can rely on:
+//! - on a device with `Limits::downlevel_defaults()` (4 storage buffers per
+//!   stage), every constructor returns a typed [`GpuError::Limit`] and the
+//!   device raises no validation error first (a handler counts them);
+//! - a soak of 10,000 records (5,000 of each pass, into alternating
+//!   outputs, submitted 10 at a time) leaves wgpu's internal resource
+//!   counters (`Device::get_internal_counters`, wgpu's `counters` feature)
+//!   where the first records left them: recording creates no buffer, bind
+//!   group, view or pipeline.
+
+use glam::Vec3;
+use slc_core::light::{Light, PointLight};
+use slc_scene::scene::Scene;
+use slc_tests::engine::{self, upload};
+use slc_tests::gpu;
+use slc_wgpu::passes::{
+    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, GBuffer, IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings,
+    Surface, SurfaceDesc, VplInput, VplSourceDesc,
+};
+use slc_wgpu::{GpuContext, GpuError, LightSet, RangeParams};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+fn point_lights(n: usize) -> LightSet {
+    let lights = (0..n)
+        .map(|i| Light::Point(PointLight::new(Vec3::new((i % 8) as f32 * 0.1, 0.4, (i / 8) as f32 * 0.1), Vec3::splat(0.01)).unwrap()))
+        .collect();
+    LightSet::new(lights).unwrap()
+}
+
+/// A constructor under test.
+type Constructor<'a> = Box<dyn Fn() -> Result<(), GpuError> + 'a>;
+
+fn downlevel_constructors_are_typed_errors() {
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+    let adapter = pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None)).expect("an adapter");
+    let (device, queue) = pollster::block_on(
+        adapter.request_device(&wgpu::DeviceDescriptor { required_limits: wgpu::Limits::downlevel_defaults(), ..Default::default() }),
+    )
+    .expect("a downlevel device");
+    let errors = Arc::new(AtomicUsize::new(0));
+    let seen = errors.clone();
+    device.on_uncaptured_error(Arc::new(move |e: wgpu::Error| {
+        eprintln!("validation error: {e}");
+        seen.fetch_add(1, Ordering::SeqCst);
+    }));
+    let gpu = GpuContext::from_device(device.clone(), queue);
+    let set = point_lights(64);
+    let scene = Scene::cornell_box();
+    let cpu = slc_cpu::vpl::VplContext::new(&scene, 16, 16, 8, None).unwrap();
+    let pts = slc_scene::pt::PtScene::new(&scene, &[]).unwrap();
+    let constructors: Vec<(&str, Constructor)> = vec![
+        ("DirectPass", Box::new(|| DirectPass::new(&gpu, &set, &DirectPassDesc::new(64, 64)).map(|_| ()))),
+        ("IndirectPass (RSM)", Box::new(|| IndirectPass::new(&gpu, &IndirectPassDesc::new(64, 64, VplSourceDesc::Rsm { size: 16 })).map(|_| ()))),
+        (
+            "IndirectPass (buffer)",
+            Box::new(|| IndirectPass::new(&gpu, &IndirectPassDesc::new(64, 64, VplSourceDesc::Buffer { count: 256 })).map(|_| ())),
+        ),
+        (
+            "GpuVplFrame",
+            Box::new(|| {
+                let desc = slc_wgpu::frame::FrameDesc { width: 32, height: 32, rsm_size: 16, shadow_size: 64, min_distance: None };
+                slc_wgpu::frame::GpuVplFrame::new(&gpu, &scene, &desc).map(|_| ())
+            }),
+        ),
+        ("GpuVpl", Box::new(|| slc_wgpu::vpl::GpuVpl::new(&gpu, cpu.inputs()).map(|_| ()))),
+        (
+            "GpuDirect",
+            Box::new(|| {
+                let mut d = slc_wgpu::direct::GpuDirect::new(&gpu, &set)?;
+                d.shade(&[Vec3::ZERO], &[Vec3::Y], &RangeParams::new(0.01, 1.0).unwrap(), 1, 0).map(|_| ())
+            }),
+        ),
+        ("GpuPt", Box::new(|| slc_wgpu::pt::GpuPt::new(&gpu, &pts, 16, 16).map(|_| ()))),
+    ];
+    let mut failures = Vec::new();
+    for (name, make) in constructors {
+        let before = errors.load(Ordering::SeqCst);
+        let r = make();
+        device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
+        let raised = errors.load(Ordering::SeqCst) - before;
+        match r {
+            Err(GpuError::Limit { name: limit, need, have }) if raised == 0 => eprintln!("{name}: typed error, needs {limit} >= {need}, has {have}"),
+            Err(e) => failures.push(format!("{name}: {e} after {raised} validation errors")),
+            Ok(()) => failures.push(format!("{name}: built on a downlevel device ({raised} validation errors)")),
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+fn ten_thousand_records_allocate_nothing() {
+    let Some(gpu) = gpu() else { return };
+    let (w, h) = (16, 16);
+    let ctx = slc_cpu::vpl::VplContext::new(&Scene::cornell_box(), w, h, 8, None).unwrap();
+    let inputs = ctx.inputs();
+    let gb = &inputs.gbuffer;
+    let v4 = |v: Vec3, w: f32| [v.x, v.y, v.z, w];
+    let position = upload(gpu, "p", (w, h), &(0..gb.position.len()).map(|i| v4(gb.position[i], gb.valid(i) as u32 as f32)).collect::<Vec<_>>());
+    let normal = upload(gpu, "n", (w, h), &gb.normal.iter().map(|&n| v4(n, 0.0)).collect::<Vec<_>>());
+    let vp = &inputs.vpls;
+    let rsm = [
+        upload(gpu, "rp", (8, 8), &vp.position.iter().map(|&p| v4(p, 1.0)).collect::<Vec<_>>()),
+        upload(gpu, "rn", (8, 8), &vp.normal.iter().map(|&n| v4(n, 0.0)).collect::<Vec<_>>()),
+        upload(gpu, "rf", (8, 8), &vp.flux.iter().map(|&f| v4(f, 0.0)).collect::<Vec<_>>()),
+    ];
+    let outs = [engine::output(gpu, (w, h)), engine::output(gpu, (w, h))];
+    let views: Vec<wgpu::TextureView> = outs.iter().map(|t| t.create_view(&Default::default())).collect();
+    let f32out = wgpu::TextureFormat::Rgba32Float;
+    let mut direct = DirectPass::new(
+        gpu,
+        &point_lights(64),
+        &DirectPassDesc { surface: SurfaceDesc::Position, output_format: f32out, ..DirectPassDesc::new(w, h) },
+    )
+    .unwrap();
+    let mut indirect = IndirectPass::new(
+        gpu,
+        &IndirectPassDesc { surface: SurfaceDesc::Position, output_format: f32out, ..IndirectPassDesc::new(w, h, VplSourceDesc::Rsm { size: 8 }) },
+    )
+    .unwrap();
+    let gbuffer = GBuffer { surface: Surface::Position(&position), normal: &normal, eye: Scene::cornell_box().camera.position };
+    let culling = Culling::Stochastic(RangeParams::new(0.01, 1.0).unwrap());
+    let mut run = |from: u32, to: u32| {
+        for batch in (from..to).step_by(10) {
+            let mut enc = gpu.device.create_command_encoder(&Default::default());
+            for r in batch..batch + 10 {
+                let output = &views[(r / 2 % 2) as usize];
+                if r % 2 == 0 {
+                    direct.record(&mut enc, &DirectInputs::new(gbuffer, output), &DirectSettings { culling, seed: 1, frame: r }).unwrap();
+                } else {
+                    let vpls = VplInput::Rsm { position: &rsm[0], normal: &rsm[1], flux: &rsm[2] };
+                    let st = IndirectSettings { culling, frame: r, min_distance: 0.01, ..IndirectSettings::default() };
+                    indirect.record(&mut enc, &IndirectInputs { gbuffer, vpls, output }, &st).unwrap();
+                }
+            }
+            gpu.queue.submit([enc.finish()]);
+            if batch % 500 == 0 {
+                gpu.wait().unwrap();
+            }
+        }
+        gpu.wait().unwrap();
+    };
+    let counters = || {
+        let c = gpu.device.get_internal_counters().hal;
+        [
+            ("buffers", c.buffers.read()),
+            ("textures", c.textures.read()),
+            ("texture views", c.texture_views.read()),
+            ("bind groups", c.bind_groups.read()),
+            ("bind group layouts", c.bind_group_layouts.read()),
+            ("compute pipelines", c.compute_pipelines.read()),
+            ("pipeline layouts", c.pipeline_layouts.read()),
+            ("shader modules", c.shader_modules.read()),
+            ("buffer memory", c.buffer_memory.read()),
+            ("texture memory", c.texture_memory.read()),
+        ]
+    };
+    run(0, 100);
+    let before = counters();
+    assert!(before[0].1 > 0 && before[3].1 > 0, "wgpu's counters read zero: build wgpu with its `counters` feature ({before:?})");
+    run(100, 10_000);
+    let after = counters();
+    eprintln!("counters after 100 records: {before:?}\ncounters after 10,000 records: {after:?}");
+    assert_eq!(before, after, "records allocated GPU objects");
+    gpu.take_errors().unwrap();
+}
+
+slc_tests::harness!(
+    Gpu: downlevel_constructors_are_typed_errors,
+    Gpu: ten_thousand_records_allocate_nothing,
+);
