@@ -67,6 +67,24 @@
 //! | 0.3 | `storage<read> irradiance: array<vec4f>` | `vpl_tiled` |
 //! | 0.4 | `storage<read_write> filtered: array<vec4f>` | this kernel |
 //!
+//! **`vpl_near`** (workgroup `tile × tile`, grid `(⌈w/tile⌉, ⌈h/tile⌉)`,
+//! after `vpl_denoise`): the near field of the VPL split, culled as
+//! `Features::method` culls the far field (SLC at each VPL's own ranges,
+//! `vpl_near_range2` of the interleaved light's; clamp at `R`; none), added
+//! to the irradiance.
+//!
+//! | group.binding | type | written by |
+//! |---|---|---|
+//! | 0.0 | `uniform VplParams` | host |
+//! | 0.1 | `storage<read> gb_position: array<vec4f>` (w > 0: surface) | host / G-buffer pass |
+//! | 0.2 | `storage<read> gb_normal: array<vec4f>` | host / G-buffer pass |
+//! | 0.3 | `storage<read> lights: array<GpuLight>` (as `vpl_tiled`'s) | host / `vpl_pack` |
+//! | 0.4 | `storage<read> near_slots: array<u32>` (near-block order → slot in `lights`) | host / `vpl_pack` |
+//! | 0.5 | `storage<read> near_boxes: array<GpuNearBox>` | host / `vpl_pack` |
+//! | 0.6 | `storage<read> rt2: array<f32>` (as `vpl_tiled`'s) | host / `vpl_pack` |
+//! | 0.7 | `storage<read> r2: array<f32>` (as `vpl_tiled`'s) | `light_update` (SLC) or host |
+//! | 0.8 | `storage<read_write> irradiance: array<vec4f>` (rgb, kept; added to) | `vpl_tiled` / `vpl_denoise`, this kernel |
+//!
 //! **`bsh_reservoir`** (1-D): direct light at shading points through the BSH
 //! and a k-slot reservoir, with shadow rays (without 0.7 and 0.8 when
 //! `Features::shadows` is off).
@@ -343,7 +361,7 @@ impl Kernel {
     }
 }
 
-/// Culling method of `vpl_tiled`.
+/// Culling method of `vpl_tiled` and `vpl_near`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum CullMethod {
     /// Stochastic light culling.
@@ -429,7 +447,7 @@ pub struct Features {
     pub interleave: u32,
     /// Capacity of a tile's light list (at least the lights per subset).
     pub max_tile_lights: u32,
-    /// Culling method of `vpl_tiled`.
+    /// Culling method of `vpl_tiled` and `vpl_near`.
     pub method: CullMethod,
     /// MIS heuristic of `pt_connect`.
     pub heuristic: Heuristic,

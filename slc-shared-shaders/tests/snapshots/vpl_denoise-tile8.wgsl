@@ -466,10 +466,10 @@ fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_3: bool;
 
     let v_8 = (x_4 - y);
-    let d2_12 = dot(v_8, v_8);
-    let _e7 = slc_keep(r2_5, d2_12);
+    let d2_16 = dot(v_8, v_8);
+    let _e7 = slc_keep(r2_5, d2_16);
     if !(!(_e7)) {
-        local_2 = !((d2_12 > 0f));
+        local_2 = !((d2_16 > 0f));
     } else {
         local_2 = true;
     }
@@ -477,7 +477,7 @@ fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_10 = (v_8 / vec3(sqrt(d2_12)));
+    let w_10 = (v_8 / vec3(sqrt(d2_16)));
     let cos_x_1 = -(dot(n, w_10));
     if !((cos_x_1 <= 0f)) {
         local_3 = (dot(ng, w_10) >= 0f);
@@ -823,13 +823,13 @@ fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, c
 
     let v_9 = (p - center);
     let dist2_ = dot(v_9, v_9);
-    let r2_6 = (radius * radius);
-    let d2_13 = max(max(dist2_, r2_6), MIN_D2_);
+    let r2_10 = (radius * radius);
+    let d2_17 = max(max(dist2_, r2_10), MIN_D2_);
     let wi = select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_))), (dist2_ > 0f));
     let cos_w = dot(axis, wi);
     let _e28 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e32 = safe_sqrt((1f - (r2_6 / dist2_)));
-    let cos_b_2 = select(_e32, -1f, (dist2_ <= r2_6));
+    let _e32 = safe_sqrt((1f - (r2_10 / dist2_)));
+    let cos_b_2 = select(_e32, -1f, (dist2_ <= r2_10));
     let _e39 = safe_sqrt((1f - (cos_b_2 * cos_b_2)));
     let _e43 = safe_sqrt((1f - (cos_o * cos_o)));
     let _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -838,7 +838,7 @@ fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, c
     if (_e46 <= cos_e) {
         return 0f;
     }
-    imp = ((phi * _e46) / d2_13);
+    imp = ((phi * _e46) / d2_17);
     if (dot(n_9, n_9) > 0f) {
         let cos_i = -(dot(wi, n_9));
         let _e60 = safe_sqrt((1f - (cos_i * cos_i)));
@@ -1169,6 +1169,41 @@ fn vpl_far_weight(d2_11: f32, near_r2_1: f32) -> f32 {
     return (1f - _e2);
 }
 
+fn vpl_far_slc_share(rt2_7: f32, r2_6: f32, d2_12: f32, near_r2_2: f32) -> f32 {
+    let _e4 = vpl_far_weight(d2_12, near_r2_2);
+    let _e5 = slc_weight(rt2_7, d2_12);
+    let _e7 = slc_keep(r2_6, d2_12);
+    return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
+}
+
+fn vpl_far_fixed_share(range2_2: f32, d2_13: f32, near_r2_3: f32) -> f32 {
+    let _e3 = vpl_far_weight(d2_13, near_r2_3);
+    let _e4 = clamp_keep(range2_2, d2_13);
+    return select(0f, _e3, (_e4 & (_e3 > 0f)));
+}
+
+fn vpl_near_range2_(r2_7: f32, period_6: u32) -> f32 {
+    let _e2 = interleave_flux_scale(period_6);
+    return (r2_7 / _e2);
+}
+
+fn vpl_near_cull_range2_(r2_8: f32, near_r2_4: f32) -> f32 {
+    return min(r2_8, near_r2_4);
+}
+
+fn vpl_near_slc_share(rt2_8: f32, r2_9: f32, d2_14: f32, near_r2_5: f32) -> f32 {
+    let _e4 = vpl_near_weight(d2_14, near_r2_5);
+    let _e5 = slc_weight(rt2_8, d2_14);
+    let _e7 = slc_keep(r2_9, d2_14);
+    return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
+}
+
+fn vpl_near_fixed_share(range2_3: f32, d2_15: f32, near_r2_6: f32) -> f32 {
+    let _e3 = vpl_near_weight(d2_15, near_r2_6);
+    let _e4 = clamp_keep(range2_3, d2_15);
+    return select(0f, _e3, (_e4 & (_e3 > 0f)));
+}
+
 fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_8: f32, h: f32) -> vec3<f32> {
     let sx = (((2f * px) / w_8) - 1f);
     let sy = (1f - ((2f * py) / h));
@@ -1255,9 +1290,9 @@ fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
 }
 
 fn point_irradiance(intensity_1: vec3<f32>, n_15: vec3<f32>, v_3: vec3<f32>) -> vec3<f32> {
-    let d2_14 = dot(v_3, v_3);
-    let cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
-    let _e11 = inverse_square(d2_14);
+    let d2_18 = dot(v_3, v_3);
+    let cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_18, MIN_D2_)));
+    let _e11 = inverse_square(d2_18);
     return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }
 

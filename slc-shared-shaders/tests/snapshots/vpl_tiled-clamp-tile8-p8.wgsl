@@ -251,9 +251,9 @@ var<storage> gb_normal: array<vec4<f32>>;
 @group(0) @binding(3) 
 var<storage> lights: array<GpuLight>;
 @group(0) @binding(4) 
-var<storage> rt2_7: array<f32>;
+var<storage> rt2_9: array<f32>;
 @group(0) @binding(5) 
-var<storage> r2_6: array<f32>;
+var<storage> r2_10: array<f32>;
 @group(0) @binding(6) 
 var<storage, read_write> irradiance: array<vec4<f32>>;
 var<workgroup> tile_count: atomic<u32>;
@@ -406,7 +406,7 @@ fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
 }
 
 fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<f32> {
-    var local_3: bool;
+    var local_2: bool;
 
     let v_6 = (c2_1 - c1_1);
     let d_4 = sqrt(dot(v_6, v_6));
@@ -419,11 +419,11 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
     if !((d_4 >= SPHERE_HUGE)) {
-        local_3 = ((0.5f * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE);
+        local_2 = ((0.5f * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    let _e35 = local_3;
+    let _e35 = local_2;
     if _e35 {
         return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
@@ -473,29 +473,29 @@ fn connection_factor(cos_x: f32, d2_6: f32, rt2_3: f32, w: f32) -> f32 {
 }
 
 fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_5: f32) -> f32 {
+    var local_3: bool;
     var local_4: bool;
-    var local_5: bool;
 
     let v_8 = (x_4 - y);
-    let d2_12 = dot(v_8, v_8);
-    let _e7 = slc_keep(r2_5, d2_12);
+    let d2_16 = dot(v_8, v_8);
+    let _e7 = slc_keep(r2_5, d2_16);
     if !(!(_e7)) {
-        local_4 = !((d2_12 > 0f));
+        local_3 = !((d2_16 > 0f));
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    let _e16 = local_4;
+    let _e16 = local_3;
     if _e16 {
         return 0f;
     }
-    let w_11 = (v_8 / vec3(sqrt(d2_12)));
+    let w_11 = (v_8 / vec3(sqrt(d2_16)));
     let cos_x_1 = -(dot(n, w_11));
     if !((cos_x_1 <= 0f)) {
-        local_5 = (dot(ng, w_11) >= 0f);
+        local_4 = (dot(ng, w_11) >= 0f);
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    let _e32 = local_5;
+    let _e32 = local_4;
     if _e32 {
         return 0f;
     }
@@ -671,7 +671,7 @@ fn ies_lerp_t(a0_: f32, a1_: f32, x_8: f32) -> f32 {
 }
 
 fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_5: f32) -> f32 {
-    var local_6: bool;
+    var local_5: bool;
 
     let _e4 = at(tab_2, base_1);
     let _e5 = to_u32_(_e4);
@@ -683,11 +683,11 @@ fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_5: f32) -> f32 {
     let _e14 = at(tab_2, v0_);
     if !((gamma < _e14)) {
         let _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_6 = (gamma > _e22);
+        local_5 = (gamma > _e22);
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    let _e25 = local_6;
+    let _e25 = local_5;
     if _e25 {
         return 0f;
     }
@@ -784,15 +784,15 @@ fn weighted_pick_weight(w_sum_1: f32, w_5: f32, k_3: u32) -> f32 {
 
 fn reservoir_select_pdf(seen: u32, in_range: bool, k_4: u32) -> f32 {
     var others: u32;
-    var local_7: bool;
+    var local_6: bool;
 
     others = seen;
     if in_range {
-        local_7 = (seen > 0u);
+        local_6 = (seen > 0u);
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    let _e9 = local_7;
+    let _e9 = local_6;
     if _e9 {
         others = (seen - 1u);
     }
@@ -834,13 +834,13 @@ fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, c
 
     let v_9 = (p - center);
     let dist2_ = dot(v_9, v_9);
-    let r2_7 = (radius * radius);
-    let d2_13 = max(max(dist2_, r2_7), MIN_D2_);
+    let r2_11 = (radius * radius);
+    let d2_17 = max(max(dist2_, r2_11), MIN_D2_);
     let wi = select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_))), (dist2_ > 0f));
     let cos_w = dot(axis, wi);
     let _e28 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e32 = safe_sqrt((1f - (r2_7 / dist2_)));
-    let cos_b_2 = select(_e32, -1f, (dist2_ <= r2_7));
+    let _e32 = safe_sqrt((1f - (r2_11 / dist2_)));
+    let cos_b_2 = select(_e32, -1f, (dist2_ <= r2_11));
     let _e39 = safe_sqrt((1f - (cos_b_2 * cos_b_2)));
     let _e43 = safe_sqrt((1f - (cos_o * cos_o)));
     let _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -849,7 +849,7 @@ fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, c
     if (_e46 <= cos_e) {
         return 0f;
     }
-    imp = ((phi * _e46) / d2_13);
+    imp = ((phi * _e46) / d2_17);
     if (dot(n_9, n_9) > 0f) {
         let cos_i = -(dot(wi, n_9));
         let _e60 = safe_sqrt((1f - (cos_i * cos_i)));
@@ -934,16 +934,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 }
 
 fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_6: vec3<f32>) -> vec3<f32> {
-    var local_8: bool;
+    var local_7: bool;
 
     let n_17 = cross((b_4 - a_5), (c_6 - a_5));
     let l2_ = dot(n_17, n_17);
     if !(!((l2_ > 0f))) {
-        local_8 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_7 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    let _e17 = local_8;
+    let _e17 = local_7;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -971,16 +971,16 @@ fn barycentric(p_2: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_7: vec3<f32>) -
 }
 
 fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_7: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
-    var local_9: bool;
+    var local_8: bool;
 
     let s_1 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
     let l2_1 = dot(s_1, s_1);
     if !(!((l2_1 > 0.000000000001f))) {
-        local_9 = !((l2_1 < 300000000000000000000000000000000000000f));
+        local_8 = !((l2_1 < 300000000000000000000000000000000000000f));
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    let _e24 = local_9;
+    let _e24 = local_8;
     if _e24 {
         return facing;
     }
@@ -989,9 +989,9 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_7: vec3<f32>
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, c_8: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_9: bool;
     var local_10: bool;
     var local_11: bool;
-    var local_12: bool;
 
     let e1_2 = (b_6 - a_7);
     let e2_2 = (c_8 - a_7);
@@ -1004,32 +1004,32 @@ fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
     let s_2 = (o_1 - a_7);
     let u_6 = (dot(s_2, p_4) * inv);
     if !((u_6 < 0f)) {
-        local_10 = (u_6 > 1f);
+        local_9 = (u_6 > 1f);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    let _e28 = local_10;
+    let _e28 = local_9;
     if _e28 {
         return -1f;
     }
     let q_5 = cross(s_2, e1_2);
     let v_11 = (dot(d_1, q_5) * inv);
     if !((v_11 < 0f)) {
-        local_11 = ((u_6 + v_11) > 1f);
+        local_10 = ((u_6 + v_11) > 1f);
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    let _e42 = local_11;
+    let _e42 = local_10;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_2, q_5) * inv);
     if (t_3 > t_min) {
-        local_12 = (t_3 < t_max_1);
+        local_11 = (t_3 < t_max_1);
     } else {
-        local_12 = false;
+        local_11 = false;
     }
-    let _e51 = local_12;
+    let _e51 = local_11;
     if _e51 {
         return t_3;
     }
@@ -1054,21 +1054,21 @@ fn mis_power(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
 }
 
 fn light_strategy_pdf(select_: f32, rt2_6: f32, d2_9: f32, area_1: f32, cos_y: f32) -> f32 {
+    var local_12: bool;
     var local_13: bool;
-    var local_14: bool;
 
     if !((d2_9 <= 0f)) {
-        local_13 = (area_1 <= 0f);
+        local_12 = (area_1 <= 0f);
+    } else {
+        local_12 = true;
+    }
+    let _e13 = local_12;
+    if !(_e13) {
+        local_13 = (cos_y <= 0f);
     } else {
         local_13 = true;
     }
-    let _e13 = local_13;
-    if !(_e13) {
-        local_14 = (cos_y <= 0f);
-    } else {
-        local_14 = true;
-    }
-    let _e20 = local_14;
+    let _e20 = local_13;
     if _e20 {
         return 0f;
     }
@@ -1180,6 +1180,41 @@ fn vpl_far_weight(d2_11: f32, near_r2_1: f32) -> f32 {
     return (1f - _e2);
 }
 
+fn vpl_far_slc_share(rt2_7: f32, r2_6: f32, d2_12: f32, near_r2_2: f32) -> f32 {
+    let _e4 = vpl_far_weight(d2_12, near_r2_2);
+    let _e5 = slc_weight(rt2_7, d2_12);
+    let _e7 = slc_keep(r2_6, d2_12);
+    return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
+}
+
+fn vpl_far_fixed_share(range2_2: f32, d2_13: f32, near_r2_3: f32) -> f32 {
+    let _e3 = vpl_far_weight(d2_13, near_r2_3);
+    let _e4 = clamp_keep(range2_2, d2_13);
+    return select(0f, _e3, (_e4 & (_e3 > 0f)));
+}
+
+fn vpl_near_range2_(r2_7: f32, period_6: u32) -> f32 {
+    let _e2 = interleave_flux_scale(period_6);
+    return (r2_7 / _e2);
+}
+
+fn vpl_near_cull_range2_(r2_8: f32, near_r2_4: f32) -> f32 {
+    return min(r2_8, near_r2_4);
+}
+
+fn vpl_near_slc_share(rt2_8: f32, r2_9: f32, d2_14: f32, near_r2_5: f32) -> f32 {
+    let _e4 = vpl_near_weight(d2_14, near_r2_5);
+    let _e5 = slc_weight(rt2_8, d2_14);
+    let _e7 = slc_keep(r2_9, d2_14);
+    return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
+}
+
+fn vpl_near_fixed_share(range2_3: f32, d2_15: f32, near_r2_6: f32) -> f32 {
+    let _e3 = vpl_near_weight(d2_15, near_r2_6);
+    let _e4 = clamp_keep(range2_3, d2_15);
+    return select(0f, _e3, (_e4 & (_e3 > 0f)));
+}
+
 fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_8: f32, h: f32) -> vec3<f32> {
     let sx = (((2f * px) / w_8) - 1f);
     let sy = (1f - ((2f * py) / h));
@@ -1200,33 +1235,33 @@ fn sees_emission(gn: vec3<f32>, dir_1: vec3<f32>) -> bool {
 }
 
 fn continues_path(nd: vec3<f32>, n_14: vec3<f32>, ng_1: vec3<f32>) -> bool {
-    var local_15: bool;
+    var local_14: bool;
 
     if (dot(nd, n_14) > 0f) {
-        local_15 = (dot(nd, ng_1) > 0f);
+        local_14 = (dot(nd, ng_1) > 0f);
     } else {
-        local_15 = false;
+        local_14 = false;
     }
-    let _e12 = local_15;
+    let _e12 = local_14;
     return _e12;
 }
 
 fn finite3_(v_2: vec3<f32>) -> bool {
+    var local_15: bool;
     var local_16: bool;
-    var local_17: bool;
 
     if (abs(v_2.x) <= F32_MAX) {
-        local_16 = (abs(v_2.y) <= F32_MAX);
+        local_15 = (abs(v_2.y) <= F32_MAX);
+    } else {
+        local_15 = false;
+    }
+    let _e12 = local_15;
+    if _e12 {
+        local_16 = (abs(v_2.z) <= F32_MAX);
     } else {
         local_16 = false;
     }
-    let _e12 = local_16;
-    if _e12 {
-        local_17 = (abs(v_2.z) <= F32_MAX);
-    } else {
-        local_17 = false;
-    }
-    let _e20 = local_17;
+    let _e20 = local_16;
     return _e20;
 }
 
@@ -1266,9 +1301,9 @@ fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
 }
 
 fn point_irradiance(intensity_1: vec3<f32>, n_15: vec3<f32>, v_3: vec3<f32>) -> vec3<f32> {
-    let d2_14 = dot(v_3, v_3);
-    let cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
-    let _e11 = inverse_square(d2_14);
+    let d2_18 = dot(v_3, v_3);
+    let cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_18, MIN_D2_)));
+    let _e11 = inverse_square(d2_18);
     return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }
 
@@ -1290,14 +1325,14 @@ fn shadow_bias(texel: f32, cos_light_1: f32) -> f32 {
 }
 
 fn shadow_lit(d_3: f32, d_map: f32, bias: f32) -> bool {
-    var local_18: bool;
+    var local_17: bool;
 
     if !((d_map <= 0f)) {
-        local_18 = (d_3 <= (d_map + bias));
+        local_17 = (d_3 <= (d_map + bias));
     } else {
-        local_18 = true;
+        local_17 = true;
     }
-    let _e11 = local_18;
+    let _e11 = local_17;
     return _e11;
 }
 
@@ -1376,7 +1411,6 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     var first: u32 = 0u;
     var j: u32;
     var k: u32;
-    var local_2: bool;
 
     let sub = wg.z;
     let px_1 = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
@@ -1437,7 +1471,7 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                     let _e100 = j;
                     let _e104 = lights[(base_4 + _e100)].p0_;
                     let _e106 = j;
-                    let _e109 = r2_6[(base_4 + _e106)];
+                    let _e109 = r2_10[(base_4 + _e106)];
                     let _e110 = cull_radius(_e109);
                     let _e111 = sphere_overlaps_aabb(_e104, _e110, lo_4, hi_4);
                     if _e111 {
@@ -1470,44 +1504,36 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                         let l_4 = lights[j_1];
                         let _e139 = pos;
                         let v_13 = (_e139.xyz - l_4.p0_);
-                        let _e144 = nrm;
-                        let _e147 = params.min_d2_;
-                        let _e148 = vpl_transfer(l_4.p1_, _e144, v_13, _e147);
-                        let d2_15 = dot(v_13, v_13);
-                        let _e152 = params.near_r2_;
-                        let _e153 = vpl_far_weight(d2_15, _e152);
-                        let _e156 = r2_6[j_1];
-                        let _e157 = clamp_keep(_e156, d2_15);
-                        if _e157 {
-                            local_2 = (_e153 > 0f);
-                        } else {
-                            local_2 = false;
-                        }
-                        let _e163 = local_2;
-                        if _e163 {
-                            let _e164 = e;
-                            e = (_e164 + (l_4.intensity * (_e148 * _e153)));
-                            let _e169 = kept;
-                            kept = (_e169 + 1u);
+                        let _e145 = r2_10[j_1];
+                        let _e149 = params.near_r2_;
+                        let _e150 = vpl_far_fixed_share(_e145, dot(v_13, v_13), _e149);
+                        if (_e150 > 0f) {
+                            let _e153 = e;
+                            let _e156 = nrm;
+                            let _e159 = params.min_d2_;
+                            let _e160 = vpl_transfer(l_4.p1_, _e156, v_13, _e159);
+                            e = (_e153 + (l_4.intensity * (_e160 * _e150)));
+                            let _e164 = kept;
+                            kept = (_e164 + 1u);
                         }
                     }
                     continuing {
-                        let _e173 = k;
-                        k = (_e173 + 1u);
+                        let _e168 = k;
+                        k = (_e168 + 1u);
                     }
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e175 = first;
-            first = (_e175 + MAX_TILE_LIGHTS);
+            let _e170 = first;
+            first = (_e170 + MAX_TILE_LIGHTS);
         }
     }
     if valid {
-        let _e180 = e;
-        let _e181 = kept;
-        irradiance[pix] = vec4<f32>(_e180, f32(_e181));
+        let _e175 = e;
+        let _e176 = kept;
+        irradiance[pix] = vec4<f32>(_e175, f32(_e176));
         return;
     } else {
         return;

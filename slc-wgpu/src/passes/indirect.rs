@@ -176,7 +176,8 @@ pub struct IndirectPass {
     tiled: Vec<(VplMethod, wgpu::ComputePipeline)>,
     tiled_layout: wgpu::BindGroupLayout,
     denoise: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
-    near: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
+    /// `vpl_near` per culling method, and its layout.
+    near: (Vec<(VplMethod, wgpu::ComputePipeline)>, wgpu::BindGroupLayout),
     export: (wgpu::ComputePipeline, wgpu::BindGroupLayout),
 }
 
@@ -208,7 +209,7 @@ impl IndirectPass {
         let groups = lim.max_compute_workgroups_per_dimension as u64;
         gpu.require("max_compute_workgroups_per_dimension", w.div_ceil(TILE).max(h.div_ceil(TILE)) as u64, groups)?;
         gpu.require("max_compute_workgroups_per_dimension (VPLs)", count.div_ceil(WG as u64), groups)?;
-        gpu.require("max_storage_buffers_per_shader_stage", 7, lim.max_storage_buffers_per_shader_stage as u64)?;
+        gpu.require("max_storage_buffers_per_shader_stage", 8, lim.max_storage_buffers_per_shader_stage as u64)?;
         gpu.require("max_storage_textures_per_shader_stage", 1, lim.max_storage_textures_per_shader_stage as u64)?;
         let per_subset = (count / subsets as u64) as u32;
         let list = per_subset.clamp(1, crate::vpl::TILE_LIST);
@@ -233,11 +234,13 @@ impl IndirectPass {
         let update_layout = layout(gpu, "light_update", &[(0, Uniform), (1, Read), (2, Read), (3, Write)]);
         let tiled_layout = layout(gpu, "vpl_tiled", &[(0, Uniform), (1, Read), (2, Read), (3, Read), (4, Read), (5, Read), (6, Write)]);
         let denoise_layout = layout(gpu, "vpl_denoise", &[(0, Uniform), (1, Read), (2, Read), (3, Read), (4, Write)]);
-        let near_layout = layout(gpu, "vpl_near", &[(0, Uniform), (1, Read), (2, Read), (3, Read), (4, Read), (5, Read), (6, Write)]);
+        let near_layout =
+            layout(gpu, "vpl_near", &[(0, Uniform), (1, Read), (2, Read), (3, Read), (4, Read), (5, Read), (6, Read), (7, Read), (8, Write)]);
         let export_layout = layout(gpu, "irradiance_export", &[(0, Uniform), (1, Read), (2, Read), (3, Storage(desc.output_format))]);
-        let mut tiled = Vec::new();
+        let (mut tiled, mut near) = (Vec::new(), Vec::new());
         for (m, cm) in [(VplMethod::Slc, CullMethod::Slc), (VplMethod::Clamp, CullMethod::Clamp), (VplMethod::None, CullMethod::None)] {
             tiled.push((m, kernel(Kernel::VplTiled, &Features { method: cm, ..base }, &tiled_layout)?));
+            near.push((m, kernel(Kernel::VplNear, &Features { method: cm, ..base }, &near_layout)?));
         }
         let pixels = w as u64 * h as u64 * 16;
         let rw = wgpu::BufferUsages::STORAGE;
@@ -261,7 +264,7 @@ impl IndirectPass {
             tiled,
             tiled_layout,
             denoise: (kernel(Kernel::VplDenoise, &base, &denoise_layout)?, denoise_layout),
-            near: (kernel(Kernel::VplNear, &base, &near_layout)?, near_layout),
+            near: (near, near_layout),
             export: (kernel(Kernel::IrradianceExport, &Features { output_format: output, ..base }, &export_layout)?, export_layout),
         };
         gpu.take_errors()?;
@@ -454,7 +457,9 @@ impl IndirectPass {
                 (3, buf(&self.lights)),
                 (4, buf(&self.near_slots)),
                 (5, buf(&self.near_boxes)),
-                (6, buf(result)),
+                (6, buf(&self.rt2)),
+                (7, buf(&self.r2)),
+                (8, buf(result)),
             ],
         );
         let export_bg = group(
@@ -463,6 +468,7 @@ impl IndirectPass {
             &[(0, buf(&image)), (1, buf(&self.gb_position)), (2, buf(result)), (3, wgpu::BindingResource::TextureView(inputs.output))],
         );
         let tiled = &self.tiled.iter().find(|(m, _)| *m == st.method).ok_or(GpuError::Setting("unknown method".into()))?.1;
+        let near = &self.near.0.iter().find(|(m, _)| *m == st.method).ok_or(GpuError::Setting("unknown method".into()))?.1;
         let (gx, gy) = (w.div_ceil(TILE), h.div_ceil(TILE));
         let (sub_w, sub_h) = (w.div_ceil(PERIOD), h.div_ceil(PERIOD));
         let d = Dispatch::new;
@@ -476,7 +482,7 @@ impl IndirectPass {
             out.push(d("denoise", &self.denoise.0, denoise_bg, [gx, gy, 1]));
         }
         if near_r2 > 0.0 {
-            out.push(d("near field", &self.near.0, near_bg, [gx, gy, 1]));
+            out.push(d("near field", near, near_bg, [gx, gy, 1]));
         }
         out.push(d("irradiance export", &self.export.0, export_bg, [gx, gy, 1]));
         Ok(out)

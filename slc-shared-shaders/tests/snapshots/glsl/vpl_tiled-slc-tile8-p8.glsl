@@ -386,7 +386,7 @@ float sphere_pad(float r_1, vec3 c_1) {
 }
 
 vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
-    bool local_3 = false;
+    bool local_2 = false;
     vec3 v_6 = (c2_1 - c1_1);
     float d_4 = sqrt(dot(v_6, v_6));
     float _e8 = sphere_pad(r1_1, c1_1);
@@ -398,11 +398,11 @@ vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
         return vec4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
     if (!((d_4 >= SPHERE_HUGE))) {
-        local_3 = ((0.5 * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE);
+        local_2 = ((0.5 * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    bool _e35 = local_3;
+    bool _e35 = local_2;
     if (_e35) {
         return vec4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
@@ -452,28 +452,28 @@ float connection_factor(float cos_x, float d2_6, float rt2_3, float w) {
 }
 
 float connection_cosine(vec3 x_4, vec3 y, vec3 n, vec3 ng, float r2_5) {
+    bool local_3 = false;
     bool local_4 = false;
-    bool local_5 = false;
     vec3 v_8 = (x_4 - y);
-    float d2_12 = dot(v_8, v_8);
-    bool _e7 = slc_keep(r2_5, d2_12);
+    float d2_16 = dot(v_8, v_8);
+    bool _e7 = slc_keep(r2_5, d2_16);
     if (!(!(_e7))) {
-        local_4 = !((d2_12 > 0.0));
+        local_3 = !((d2_16 > 0.0));
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    bool _e16 = local_4;
+    bool _e16 = local_3;
     if (_e16) {
         return 0.0;
     }
-    vec3 w_11 = (v_8 / vec3(sqrt(d2_12)));
+    vec3 w_11 = (v_8 / vec3(sqrt(d2_16)));
     float cos_x_1 = -(dot(n, w_11));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = (dot(ng, w_11) >= 0.0);
+        local_4 = (dot(ng, w_11) >= 0.0);
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e32 = local_5;
+    bool _e32 = local_4;
     if (_e32) {
         return 0.0;
     }
@@ -670,14 +670,14 @@ float weighted_pick_weight(float w_sum_1, float w_5, uint k_3) {
 
 float reservoir_select_pdf(uint seen, bool in_range, uint k_4) {
     uint others = 0u;
-    bool local_7 = false;
+    bool local_6 = false;
     others = seen;
     if (in_range) {
-        local_7 = (seen > 0u);
+        local_6 = (seen > 0u);
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    bool _e9 = local_7;
+    bool _e9 = local_6;
     if (_e9) {
         others = (seen - 1u);
     }
@@ -718,13 +718,13 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     float imp = 0.0;
     vec3 v_9 = (p - center);
     float dist2_ = dot(v_9, v_9);
-    float r2_7 = (radius * radius);
-    float d2_13 = max(max(dist2_, r2_7), MIN_D2_);
+    float r2_11 = (radius * radius);
+    float d2_17 = max(max(dist2_, r2_11), MIN_D2_);
     vec3 wi = ((dist2_ > 0.0) ? (v_9 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    float _e32 = safe_sqrt((1.0 - (r2_7 / dist2_)));
-    float cos_b_2 = ((dist2_ <= r2_7) ? -1.0 : _e32);
+    float _e32 = safe_sqrt((1.0 - (r2_11 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_11) ? -1.0 : _e32);
     float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
     float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
     float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -733,7 +733,7 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_13);
+    imp = ((phi * _e46) / d2_17);
     if ((dot(n_9, n_9) > 0.0)) {
         float cos_i = -(dot(wi, n_9));
         float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -818,15 +818,15 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
-    bool local_8 = false;
+    bool local_7 = false;
     vec3 n_17 = cross((b_4 - a_5), (c_6 - a_5));
     float l2_ = dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
-        local_8 = !((l2_ < 3e38));
+        local_7 = !((l2_ < 3e38));
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e17 = local_8;
+    bool _e17 = local_7;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -854,15 +854,15 @@ vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
 }
 
 vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_7, vec3 facing) {
-    bool local_9 = false;
+    bool local_8 = false;
     vec3 s_1 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
     float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
-        local_9 = !((l2_1 < 3e38));
+        local_8 = !((l2_1 < 3e38));
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e24 = local_9;
+    bool _e24 = local_8;
     if (_e24) {
         return facing;
     }
@@ -871,9 +871,9 @@ vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_7, vec3 facing) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, float t_max_1) {
+    bool local_9 = false;
     bool local_10 = false;
     bool local_11 = false;
-    bool local_12 = false;
     vec3 e1_2 = (b_6 - a_7);
     vec3 e2_2 = (c_8 - a_7);
     vec3 p_4 = cross(d_1, e2_2);
@@ -885,32 +885,32 @@ float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_7, vec3 b_6, vec3 c_8, float t_min
     vec3 s_2 = (o_1 - a_7);
     float u_6 = (dot(s_2, p_4) * inv);
     if (!((u_6 < 0.0))) {
-        local_10 = (u_6 > 1.0);
+        local_9 = (u_6 > 1.0);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e28 = local_10;
+    bool _e28 = local_9;
     if (_e28) {
         return -1.0;
     }
     vec3 q_5 = cross(s_2, e1_2);
     float v_11 = (dot(d_1, q_5) * inv);
     if (!((v_11 < 0.0))) {
-        local_11 = ((u_6 + v_11) > 1.0);
+        local_10 = ((u_6 + v_11) > 1.0);
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    bool _e42 = local_11;
+    bool _e42 = local_10;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_2, q_5) * inv);
     if ((t_3 > t_min)) {
-        local_12 = (t_3 < t_max_1);
+        local_11 = (t_3 < t_max_1);
     } else {
-        local_12 = false;
+        local_11 = false;
     }
-    bool _e51 = local_12;
+    bool _e51 = local_11;
     if (_e51) {
         return t_3;
     }
@@ -935,20 +935,20 @@ float mis_power(float pdf_a_1, float pdf_b_1) {
 }
 
 float light_strategy_pdf(float select, float rt2_6, float d2_9, float area_1, float cos_y) {
+    bool local_12 = false;
     bool local_13 = false;
-    bool local_14 = false;
     if (!((d2_9 <= 0.0))) {
-        local_13 = (area_1 <= 0.0);
+        local_12 = (area_1 <= 0.0);
+    } else {
+        local_12 = true;
+    }
+    bool _e13 = local_12;
+    if (!(_e13)) {
+        local_13 = (cos_y <= 0.0);
     } else {
         local_13 = true;
     }
-    bool _e13 = local_13;
-    if (!(_e13)) {
-        local_14 = (cos_y <= 0.0);
-    } else {
-        local_14 = true;
-    }
-    bool _e20 = local_14;
+    bool _e20 = local_13;
     if (_e20) {
         return 0.0;
     }
@@ -1060,6 +1060,41 @@ float vpl_far_weight(float d2_11, float near_r2_1) {
     return (1.0 - _e2);
 }
 
+float vpl_far_slc_share(float rt2_7, float r2_6, float d2_12, float near_r2_2) {
+    float _e4 = vpl_far_weight(d2_12, near_r2_2);
+    float _e5 = slc_weight(rt2_7, d2_12);
+    bool _e7 = slc_keep(r2_6, d2_12);
+    return ((_e7 && (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+float vpl_far_fixed_share(float range2_2, float d2_13, float near_r2_3) {
+    float _e3 = vpl_far_weight(d2_13, near_r2_3);
+    bool _e4 = clamp_keep(range2_2, d2_13);
+    return ((_e4 && (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
+float vpl_near_range2_(float r2_7, uint period_6) {
+    float _e2 = interleave_flux_scale(period_6);
+    return (r2_7 / _e2);
+}
+
+float vpl_near_cull_range2_(float r2_8, float near_r2_4) {
+    return min(r2_8, near_r2_4);
+}
+
+float vpl_near_slc_share(float rt2_8, float r2_9, float d2_14, float near_r2_5) {
+    float _e4 = vpl_near_weight(d2_14, near_r2_5);
+    float _e5 = slc_weight(rt2_8, d2_14);
+    bool _e7 = slc_keep(r2_9, d2_14);
+    return ((_e7 && (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+float vpl_near_fixed_share(float range2_3, float d2_15, float near_r2_6) {
+    float _e3 = vpl_near_weight(d2_15, near_r2_6);
+    bool _e4 = clamp_keep(range2_3, d2_15);
+    return ((_e4 && (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
 vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_8, float h) {
     float sx = (((2.0 * px) / w_8) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h));
@@ -1080,31 +1115,31 @@ bool sees_emission(vec3 gn, vec3 dir_1) {
 }
 
 bool continues_path(vec3 nd, vec3 n_14, vec3 ng_1) {
-    bool local_15 = false;
+    bool local_14 = false;
     if ((dot(nd, n_14) > 0.0)) {
-        local_15 = (dot(nd, ng_1) > 0.0);
+        local_14 = (dot(nd, ng_1) > 0.0);
     } else {
-        local_15 = false;
+        local_14 = false;
     }
-    bool _e12 = local_15;
+    bool _e12 = local_14;
     return _e12;
 }
 
 bool finite3_(vec3 v_2) {
+    bool local_15 = false;
     bool local_16 = false;
-    bool local_17 = false;
     if ((abs(v_2.x) <= F32_MAX)) {
-        local_16 = (abs(v_2.y) <= F32_MAX);
+        local_15 = (abs(v_2.y) <= F32_MAX);
+    } else {
+        local_15 = false;
+    }
+    bool _e12 = local_15;
+    if (_e12) {
+        local_16 = (abs(v_2.z) <= F32_MAX);
     } else {
         local_16 = false;
     }
-    bool _e12 = local_16;
-    if (_e12) {
-        local_17 = (abs(v_2.z) <= F32_MAX);
-    } else {
-        local_17 = false;
-    }
-    bool _e20 = local_17;
+    bool _e20 = local_16;
     return _e20;
 }
 
@@ -1144,9 +1179,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis) {
 }
 
 vec3 point_irradiance(vec3 intensity_1, vec3 n_15, vec3 v_3) {
-    float d2_14 = dot(v_3, v_3);
-    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
-    float _e11 = inverse_square(d2_14);
+    float d2_18 = dot(v_3, v_3);
+    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_18, MIN_D2_)));
+    float _e11 = inverse_square(d2_18);
     return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
@@ -1168,13 +1203,13 @@ float shadow_bias(float texel, float cos_light_1) {
 }
 
 bool shadow_lit(float d_3, float d_map, float bias) {
-    bool local_18 = false;
+    bool local_17 = false;
     if (!((d_map <= 0.0))) {
-        local_18 = (d_3 <= (d_map + bias));
+        local_17 = (d_3 <= (d_map + bias));
     } else {
-        local_18 = true;
+        local_17 = true;
     }
-    bool _e11 = local_18;
+    bool _e11 = local_17;
     return _e11;
 }
 
@@ -1266,7 +1301,6 @@ void main() {
     uint first = 0u;
     uint j = 0u;
     uint k = 0u;
-    bool local_2 = false;
     uint sub = wg.z;
     uint px_1 = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
     uint py_1 = ((sub / P) + (((wg.y * TILE) + lid.y) * P));
@@ -1302,8 +1336,8 @@ void main() {
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e180 = first;
-            first = (_e180 + MAX_TILE_LIGHTS);
+            uint _e173 = first;
+            first = (_e173 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
         uint _e78 = first;
@@ -1362,8 +1396,8 @@ void main() {
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e178 = k;
-                        k = (_e178 + 1u);
+                        uint _e171 = k;
+                        k = (_e171 + 1u);
                     }
                     loop_init_3 = false;
                     uint _e129 = k;
@@ -1378,27 +1412,18 @@ void main() {
                         GpuLight l_4 = _group_0_binding_3_cs[j_1];
                         vec4 _e139 = pos;
                         vec3 v_13 = (_e139.xyz - l_4.p0_);
-                        vec3 _e144 = nrm;
-                        float _e147 = _group_0_binding_0_cs.min_d2_;
-                        float _e148 = vpl_transfer(l_4.p1_, _e144, v_13, _e147);
-                        float d2_15 = dot(v_13, v_13);
+                        float _e145 = _group_0_binding_4_cs[j_1];
+                        float _e148 = _group_0_binding_5_cs[j_1];
                         float _e152 = _group_0_binding_0_cs.near_r2_;
-                        float _e153 = vpl_far_weight(d2_15, _e152);
-                        float _e156 = _group_0_binding_5_cs[j_1];
-                        bool _e157 = slc_keep(_e156, d2_15);
-                        if (_e157) {
-                            local_2 = (_e153 > 0.0);
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e163 = local_2;
-                        if (_e163) {
-                            vec3 _e164 = e;
-                            float _e168 = _group_0_binding_4_cs[j_1];
-                            float _e169 = slc_weight(_e168, d2_15);
-                            e = (_e164 + (l_4.intensity * ((_e148 * _e169) * _e153)));
-                            uint _e174 = kept;
-                            kept = (_e174 + 1u);
+                        float _e153 = vpl_far_slc_share(_e145, _e148, dot(v_13, v_13), _e152);
+                        if ((_e153 > 0.0)) {
+                            vec3 _e156 = e;
+                            vec3 _e159 = nrm;
+                            float _e162 = _group_0_binding_0_cs.min_d2_;
+                            float _e163 = vpl_transfer(l_4.p1_, _e159, v_13, _e162);
+                            e = (_e156 + (l_4.intensity * (_e163 * _e153)));
+                            uint _e167 = kept;
+                            kept = (_e167 + 1u);
                         }
                     }
                 }
@@ -1408,9 +1433,9 @@ void main() {
         }
     }
     if (valid) {
-        vec3 _e185 = e;
-        uint _e186 = kept;
-        _group_0_binding_6_cs[pix] = vec4(_e185, float(_e186));
+        vec3 _e178 = e;
+        uint _e179 = kept;
+        _group_0_binding_6_cs[pix] = vec4(_e178, float(_e179));
         return;
     } else {
         return;

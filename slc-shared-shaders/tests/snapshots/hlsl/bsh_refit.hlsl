@@ -233,7 +233,7 @@ ByteAddressBuffer slc_table : register(t0, space1);
 cbuffer params : register(b0) { RefitParams params; }
 ByteAddressBuffer order : register(t1);
 ByteAddressBuffer extent_5 : register(t2);
-ByteAddressBuffer r2_6 : register(t3);
+ByteAddressBuffer r2_10 : register(t3);
 RWByteAddressBuffer bsh_nodes : register(u4);
 
 float at(uint tab, uint i)
@@ -489,10 +489,10 @@ float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
     bool local_2 = (bool)0;
 
     float3 v_8 = (x_4 - y);
-    float d2_12 = dot(v_8, v_8);
-    const bool _e7 = slc_keep(r2_5, d2_12);
+    float d2_16 = dot(v_8, v_8);
+    const bool _e7 = slc_keep(r2_5, d2_16);
     if (!(!(_e7))) {
-        local_1 = !((d2_12 > 0.0));
+        local_1 = !((d2_16 > 0.0));
     } else {
         local_1 = true;
     }
@@ -500,7 +500,7 @@ float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
     if (_e16) {
         return 0.0;
     }
-    float3 w_10 = (v_8 / (sqrt(d2_12)).xxx);
+    float3 w_10 = (v_8 / (sqrt(d2_16)).xxx);
     float cos_x_1 = -(dot(n, w_10));
     if (!((cos_x_1 <= 0.0))) {
         local_2 = (dot(ng, w_10) >= 0.0);
@@ -877,13 +877,13 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
 
     float3 v_9 = (p - center_);
     float dist2_ = dot(v_9, v_9);
-    float r2_7 = (radius * radius);
-    float d2_13 = max(max(dist2_, r2_7), MIN_D2_);
+    float r2_11 = (radius * radius);
+    float d2_17 = max(max(dist2_, r2_11), MIN_D2_);
     float3 wi = ((dist2_ > 0.0) ? (v_9 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e32 = safe_sqrt((1.0 - (r2_7 / dist2_)));
-    float cos_b_2 = ((dist2_ <= r2_7) ? -1.0 : _e32);
+    const float _e32 = safe_sqrt((1.0 - (r2_11 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_11) ? -1.0 : _e32);
     const float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
     const float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
     const float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -892,7 +892,7 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_13);
+    imp = ((phi * _e46) / d2_17);
     if ((dot(n_9, n_9) > 0.0)) {
         float cos_i = -(dot(wi, n_9));
         const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -1269,6 +1269,47 @@ float vpl_far_weight(float d2_11, float near_r2_1)
     return (1.0 - _e2);
 }
 
+float vpl_far_slc_share(float rt2_7, float r2_6, float d2_12, float near_r2_2)
+{
+    const float _e4 = vpl_far_weight(d2_12, near_r2_2);
+    const float _e5 = slc_weight(rt2_7, d2_12);
+    const bool _e7 = slc_keep(r2_6, d2_12);
+    return ((_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+float vpl_far_fixed_share(float range2_2, float d2_13, float near_r2_3)
+{
+    const float _e3 = vpl_far_weight(d2_13, near_r2_3);
+    const bool _e4 = clamp_keep(range2_2, d2_13);
+    return ((_e4 & (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
+float vpl_near_range2_(float r2_7, uint period_6)
+{
+    const float _e2 = interleave_flux_scale(period_6);
+    return (r2_7 / _e2);
+}
+
+float vpl_near_cull_range2_(float r2_8, float near_r2_4)
+{
+    return min(r2_8, near_r2_4);
+}
+
+float vpl_near_slc_share(float rt2_8, float r2_9, float d2_14, float near_r2_5)
+{
+    const float _e4 = vpl_near_weight(d2_14, near_r2_5);
+    const float _e5 = slc_weight(rt2_8, d2_14);
+    const bool _e7 = slc_keep(r2_9, d2_14);
+    return ((_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+float vpl_near_fixed_share(float range2_3, float d2_15, float near_r2_6)
+{
+    const float _e3 = vpl_near_weight(d2_15, near_r2_6);
+    const bool _e4 = clamp_keep(range2_3, d2_15);
+    return ((_e4 & (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
 float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_8, float h)
 {
     float sx = (((2.0 * px) / w_8) - 1.0);
@@ -1369,9 +1410,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
 
 float3 point_irradiance(float3 intensity_1, float3 n_15, float3 v_3)
 {
-    float d2_14 = dot(v_3, v_3);
-    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
-    const float _e11 = inverse_square(d2_14);
+    float d2_18 = dot(v_3, v_3);
+    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_18, MIN_D2_)));
+    const float _e11 = inverse_square(d2_18);
     return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
@@ -1506,7 +1547,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     BshNode node = ConstructBshNode(asfloat(bsh_nodes.Load3(i_5*32+0)), asfloat(bsh_nodes.Load(i_5*32+12)), asuint(bsh_nodes.Load(i_5*32+16)), asuint(bsh_nodes.Load(i_5*32+20)), asuint(bsh_nodes.Load(i_5*32+24)), asuint(bsh_nodes.Load(i_5*32+28)));
     if ((node.child == BSH_NONE)) {
         float _e26 = asfloat(extent_5.Load(node.light*4));
-        float _e30 = asfloat(r2_6.Load(node.light*4));
+        float _e30 = asfloat(r2_10.Load(node.light*4));
         const float _e31 = range_radius(_e26, _e30);
         bsh_nodes.Store(12+i_5*32, asuint(_e31));
         return;

@@ -258,8 +258,8 @@ ByteAddressBuffer geo_nodes : register(t6);
 ByteAddressBuffer geo_tris : register(t7);
 ByteAddressBuffer bsh_nodes : register(t5);
 ByteAddressBuffer lights : register(t2);
-ByteAddressBuffer r2_6 : register(t4);
-ByteAddressBuffer rt2_7 : register(t3);
+ByteAddressBuffer r2_10 : register(t4);
+ByteAddressBuffer rt2_9 : register(t3);
 ByteAddressBuffer power_table : register(t1, space1);
 ByteAddressBuffer light_cones : register(t2, space1);
 ByteAddressBuffer light_bvh : register(t3, space1);
@@ -521,10 +521,10 @@ float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
     bool local_2 = (bool)0;
 
     float3 v_8 = (x_4 - y);
-    float d2_12 = dot(v_8, v_8);
-    const bool _e7 = slc_keep(r2_5, d2_12);
+    float d2_16 = dot(v_8, v_8);
+    const bool _e7 = slc_keep(r2_5, d2_16);
     if (!(!(_e7))) {
-        local_1 = !((d2_12 > 0.0));
+        local_1 = !((d2_16 > 0.0));
     } else {
         local_1 = true;
     }
@@ -532,7 +532,7 @@ float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
     if (_e16) {
         return 0.0;
     }
-    float3 w_12 = (v_8 / (sqrt(d2_12)).xxx);
+    float3 w_12 = (v_8 / (sqrt(d2_16)).xxx);
     float cos_x_1 = -(dot(n, w_12));
     if (!((cos_x_1 <= 0.0))) {
         local_2 = (dot(ng, w_12) >= 0.0);
@@ -909,13 +909,13 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
 
     float3 v_9 = (p - center_);
     float dist2_ = dot(v_9, v_9);
-    float r2_7 = (radius * radius);
-    float d2_13 = max(max(dist2_, r2_7), MIN_D2_);
+    float r2_11 = (radius * radius);
+    float d2_17 = max(max(dist2_, r2_11), MIN_D2_);
     float3 wi = ((dist2_ > 0.0) ? (v_9 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e32 = safe_sqrt((1.0 - (r2_7 / dist2_)));
-    float cos_b_2 = ((dist2_ <= r2_7) ? -1.0 : _e32);
+    const float _e32 = safe_sqrt((1.0 - (r2_11 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_11) ? -1.0 : _e32);
     const float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
     const float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
     const float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -924,7 +924,7 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_13);
+    imp = ((phi * _e46) / d2_17);
     if ((dot(n_9, n_9) > 0.0)) {
         float cos_i = -(dot(wi, n_9));
         const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -1301,6 +1301,47 @@ float vpl_far_weight(float d2_11, float near_r2_1)
     return (1.0 - _e2);
 }
 
+float vpl_far_slc_share(float rt2_7, float r2_6, float d2_12, float near_r2_2)
+{
+    const float _e4 = vpl_far_weight(d2_12, near_r2_2);
+    const float _e5 = slc_weight(rt2_7, d2_12);
+    const bool _e7 = slc_keep(r2_6, d2_12);
+    return ((_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+float vpl_far_fixed_share(float range2_2, float d2_13, float near_r2_3)
+{
+    const float _e3 = vpl_far_weight(d2_13, near_r2_3);
+    const bool _e4 = clamp_keep(range2_2, d2_13);
+    return ((_e4 & (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
+float vpl_near_range2_(float r2_7, uint period_6)
+{
+    const float _e2 = interleave_flux_scale(period_6);
+    return (r2_7 / _e2);
+}
+
+float vpl_near_cull_range2_(float r2_8, float near_r2_4)
+{
+    return min(r2_8, near_r2_4);
+}
+
+float vpl_near_slc_share(float rt2_8, float r2_9, float d2_14, float near_r2_5)
+{
+    const float _e4 = vpl_near_weight(d2_14, near_r2_5);
+    const float _e5 = slc_weight(rt2_8, d2_14);
+    const bool _e7 = slc_keep(r2_9, d2_14);
+    return ((_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+float vpl_near_fixed_share(float range2_3, float d2_15, float near_r2_6)
+{
+    const float _e3 = vpl_near_weight(d2_15, near_r2_6);
+    const bool _e4 = clamp_keep(range2_3, d2_15);
+    return ((_e4 & (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
 float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_8, float h_1)
 {
     float sx = (((2.0 * px) / w_8) - 1.0);
@@ -1401,9 +1442,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
 
 float3 point_irradiance(float3 intensity_1, float3 n_15, float3 v_3)
 {
-    float d2_14 = dot(v_3, v_3);
-    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
-    const float _e11 = inverse_square(d2_14);
+    float d2_18 = dot(v_3, v_3);
+    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_18, MIN_D2_)));
+    const float _e11 = inverse_square(d2_18);
     return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
@@ -1764,7 +1805,7 @@ Connection connect(uint li, float3 x_17, float3 n_17, float3 ng_2, float w_res, 
     const float3 _e16 = light_point(l_4, u1_3, u2_3);
     c_9.y = _e16;
     float3 _e19 = c_9.y;
-    float _e22 = asfloat(r2_6.Load(li*4));
+    float _e22 = asfloat(r2_10.Load(li*4));
     const float _e23 = connection_cosine(x_17, _e19, n_17, ng_2, _e22);
     c_9.cos_x = _e23;
     float _e25 = c_9.cos_x;
@@ -1783,11 +1824,11 @@ Connection connect(uint li, float3 x_17, float3 n_17, float3 ng_2, float w_res, 
     }
     float3 _e40 = c_9.y;
     float3 v_13 = (x_17 - _e40);
-    float d2_15 = dot(v_13, v_13);
-    const float3 _e47 = light_intensity(l_4, (v_13 / (sqrt(d2_15)).xxx));
+    float d2_19 = dot(v_13, v_13);
+    const float3 _e47 = light_intensity(l_4, (v_13 / (sqrt(d2_19)).xxx));
     float _e49 = c_9.cos_x;
-    float _e52 = asfloat(rt2_7.Load(li*4));
-    const float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
+    float _e52 = asfloat(rt2_9.Load(li*4));
+    const float _e53 = connection_factor(_e49, d2_19, _e52, w_res);
     c_9.e = (_e47 * _e53);
     Connection _e55 = c_9;
     const Connection connection_1 = _e55;
@@ -1816,7 +1857,7 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
 float light_weight(uint li_1, float3 x_18, float3 n_18)
 {
     GpuLightCone c_14 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    float _e14 = asfloat(rt2_7.Load(li_1*4));
+    float _e14 = asfloat(rt2_9.Load(li_1*4));
     const float _e15 = cone_weight(c_14.center_, c_14.radius, c_14.phi, c_14.axis, c_14.cos_o, c_14.cos_e, _e14, x_18, n_18);
     return _e15;
 }
@@ -2024,13 +2065,13 @@ float light_pdf(uint li_3, float3 x_24, float3 n_24, float3 y_3, uint nee_1, boo
 {
     GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
     float3 v_14 = (x_24 - y_3);
-    float d2_16 = dot(v_14, v_14);
+    float d2_20 = dot(v_14, v_14);
     const float3 _e11 = light_normal(l_5);
-    float cos_y_1 = ((d2_16 > 0.0) ? dot(_e11, (v_14 / (sqrt(d2_16)).xxx)) : 0.0);
+    float cos_y_1 = ((d2_20 > 0.0) ? dot(_e11, (v_14 / (sqrt(d2_20)).xxx)) : 0.0);
     const float _e20 = select_pdf(li_3, x_24, n_24, nee_1, in_range_3);
-    float _e23 = asfloat(rt2_7.Load(li_3*4));
+    float _e23 = asfloat(rt2_9.Load(li_3*4));
     const float _e24 = light_area(l_5);
-    const float _e25 = light_strategy_pdf(_e20, _e23, d2_16, _e24, cos_y_1);
+    const float _e25 = light_strategy_pdf(_e20, _e23, d2_20, _e24, cos_y_1);
     return _e25;
 }
 

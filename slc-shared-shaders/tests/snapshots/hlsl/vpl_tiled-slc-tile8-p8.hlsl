@@ -247,8 +247,8 @@ cbuffer params : register(b0) { VplParams params; }
 ByteAddressBuffer gb_position : register(t1);
 ByteAddressBuffer gb_normal : register(t2);
 ByteAddressBuffer lights : register(t3);
-ByteAddressBuffer rt2_7 : register(t4);
-ByteAddressBuffer r2_6 : register(t5);
+ByteAddressBuffer rt2_9 : register(t4);
+ByteAddressBuffer r2_10 : register(t5);
 RWByteAddressBuffer irradiance : register(u6);
 groupshared uint tile_count;
 groupshared uint tile_lights[1024];
@@ -429,7 +429,7 @@ float sphere_pad(float r_1, float3 c_1)
 
 float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
 {
-    bool local_3 = (bool)0;
+    bool local_2 = (bool)0;
 
     float3 v_6 = (c2_1 - c1_1);
     float d_4 = sqrt(dot(v_6, v_6));
@@ -442,11 +442,11 @@ float4 sphere_union(float3 c1_1, float r1_1, float3 c2_1, float r2_3)
         return float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
     if (!((d_4 >= SPHERE_HUGE))) {
-        local_3 = ((0.5 * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE);
+        local_2 = ((0.5 * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    bool _e35 = local_3;
+    bool _e35 = local_2;
     if (_e35) {
         return float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
@@ -502,29 +502,29 @@ float connection_factor(float cos_x, float d2_6, float rt2_3, float w)
 
 float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
 {
+    bool local_3 = (bool)0;
     bool local_4 = (bool)0;
-    bool local_5 = (bool)0;
 
     float3 v_8 = (x_4 - y);
-    float d2_12 = dot(v_8, v_8);
-    const bool _e7 = slc_keep(r2_5, d2_12);
+    float d2_16 = dot(v_8, v_8);
+    const bool _e7 = slc_keep(r2_5, d2_16);
     if (!(!(_e7))) {
-        local_4 = !((d2_12 > 0.0));
+        local_3 = !((d2_16 > 0.0));
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    bool _e16 = local_4;
+    bool _e16 = local_3;
     if (_e16) {
         return 0.0;
     }
-    float3 w_11 = (v_8 / (sqrt(d2_12)).xxx);
+    float3 w_11 = (v_8 / (sqrt(d2_16)).xxx);
     float cos_x_1 = -(dot(n, w_11));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = (dot(ng, w_11) >= 0.0);
+        local_4 = (dot(ng, w_11) >= 0.0);
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e32 = local_5;
+    bool _e32 = local_4;
     if (_e32) {
         return 0.0;
     }
@@ -715,7 +715,7 @@ float ies_lerp_t(float a0_, float a1_, float x_8)
 
 float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
 {
-    bool local_6 = (bool)0;
+    bool local_5 = (bool)0;
 
     const float _e4 = at(tab_2, base_1);
     const uint _e5 = to_u32_(_e4);
@@ -727,11 +727,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_5)
     const float _e14 = at(tab_2, v0_);
     if (!((gamma < _e14))) {
         const float _e22 = at(tab_2, ((v0_ + _e5) - 1u));
-        local_6 = (gamma > _e22);
+        local_5 = (gamma > _e22);
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e25 = local_6;
+    bool _e25 = local_5;
     if (_e25) {
         return 0.0;
     }
@@ -838,15 +838,15 @@ float weighted_pick_weight(float w_sum_1, float w_5, uint k_3)
 float reservoir_select_pdf(uint seen, bool in_range, uint k_4)
 {
     uint others = (uint)0;
-    bool local_7 = (bool)0;
+    bool local_6 = (bool)0;
 
     others = seen;
     if (in_range) {
-        local_7 = (seen > 0u);
+        local_6 = (seen > 0u);
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    bool _e9 = local_7;
+    bool _e9 = local_6;
     if (_e9) {
         others = (seen - 1u);
     }
@@ -894,13 +894,13 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
 
     float3 v_9 = (p - center_);
     float dist2_ = dot(v_9, v_9);
-    float r2_7 = (radius * radius);
-    float d2_13 = max(max(dist2_, r2_7), MIN_D2_);
+    float r2_11 = (radius * radius);
+    float d2_17 = max(max(dist2_, r2_11), MIN_D2_);
     float3 wi = ((dist2_ > 0.0) ? (v_9 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e32 = safe_sqrt((1.0 - (r2_7 / dist2_)));
-    float cos_b_2 = ((dist2_ <= r2_7) ? -1.0 : _e32);
+    const float _e32 = safe_sqrt((1.0 - (r2_11 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_11) ? -1.0 : _e32);
     const float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
     const float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
     const float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -909,7 +909,7 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_13);
+    imp = ((phi * _e46) / d2_17);
     if ((dot(n_9, n_9) > 0.0)) {
         float cos_i = -(dot(wi, n_9));
         const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -1006,16 +1006,16 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin_1, float3 bmax_1, float t_max
 
 float3 triangle_normal(float3 a_5, float3 b_4, float3 c_6)
 {
-    bool local_8 = (bool)0;
+    bool local_7 = (bool)0;
 
     float3 n_17 = cross((b_4 - a_5), (c_6 - a_5));
     float l2_ = dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
-        local_8 = !((l2_ < 3e38));
+        local_7 = !((l2_ < 3e38));
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e17 = local_8;
+    bool _e17 = local_7;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -1046,16 +1046,16 @@ float3 barycentric(float3 p_2, float3 a_6, float3 b_5, float3 c_7)
 
 float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_7, float3 facing)
 {
-    bool local_9 = (bool)0;
+    bool local_8 = (bool)0;
 
     float3 s_1 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
     float l2_1 = dot(s_1, s_1);
     if (!(!((l2_1 > 1e-12)))) {
-        local_9 = !((l2_1 < 3e38));
+        local_8 = !((l2_1 < 3e38));
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e24 = local_9;
+    bool _e24 = local_8;
     if (_e24) {
         return facing;
     }
@@ -1065,9 +1065,9 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_7, float3 fac
 
 float ray_triangle(float3 o_1, float3 d_1, float3 a_7, float3 b_6, float3 c_8, float t_min, float t_max_1)
 {
+    bool local_9 = (bool)0;
     bool local_10 = (bool)0;
     bool local_11 = (bool)0;
-    bool local_12 = (bool)0;
 
     float3 e1_2 = (b_6 - a_7);
     float3 e2_2 = (c_8 - a_7);
@@ -1080,32 +1080,32 @@ float ray_triangle(float3 o_1, float3 d_1, float3 a_7, float3 b_6, float3 c_8, f
     float3 s_2 = (o_1 - a_7);
     float u_6 = (dot(s_2, p_4) * inv);
     if (!((u_6 < 0.0))) {
-        local_10 = (u_6 > 1.0);
+        local_9 = (u_6 > 1.0);
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e28 = local_10;
+    bool _e28 = local_9;
     if (_e28) {
         return -1.0;
     }
     float3 q_5 = cross(s_2, e1_2);
     float v_11 = (dot(d_1, q_5) * inv);
     if (!((v_11 < 0.0))) {
-        local_11 = ((u_6 + v_11) > 1.0);
+        local_10 = ((u_6 + v_11) > 1.0);
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    bool _e42 = local_11;
+    bool _e42 = local_10;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_2, q_5) * inv);
     if ((t_3 > t_min)) {
-        local_12 = (t_3 < t_max_1);
+        local_11 = (t_3 < t_max_1);
     } else {
-        local_12 = false;
+        local_11 = false;
     }
-    bool _e51 = local_12;
+    bool _e51 = local_11;
     if (_e51) {
         return t_3;
     }
@@ -1133,21 +1133,21 @@ float mis_power(float pdf_a_1, float pdf_b_1)
 
 float light_strategy_pdf(float select_, float rt2_6, float d2_9, float area_1, float cos_y)
 {
+    bool local_12 = (bool)0;
     bool local_13 = (bool)0;
-    bool local_14 = (bool)0;
 
     if (!((d2_9 <= 0.0))) {
-        local_13 = (area_1 <= 0.0);
+        local_12 = (area_1 <= 0.0);
+    } else {
+        local_12 = true;
+    }
+    bool _e13 = local_12;
+    if (!(_e13)) {
+        local_13 = (cos_y <= 0.0);
     } else {
         local_13 = true;
     }
-    bool _e13 = local_13;
-    if (!(_e13)) {
-        local_14 = (cos_y <= 0.0);
-    } else {
-        local_14 = true;
-    }
-    bool _e20 = local_14;
+    bool _e20 = local_13;
     if (_e20) {
         return 0.0;
     }
@@ -1286,6 +1286,47 @@ float vpl_far_weight(float d2_11, float near_r2_1)
     return (1.0 - _e2);
 }
 
+float vpl_far_slc_share(float rt2_7, float r2_6, float d2_12, float near_r2_2)
+{
+    const float _e4 = vpl_far_weight(d2_12, near_r2_2);
+    const float _e5 = slc_weight(rt2_7, d2_12);
+    const bool _e7 = slc_keep(r2_6, d2_12);
+    return ((_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+float vpl_far_fixed_share(float range2_2, float d2_13, float near_r2_3)
+{
+    const float _e3 = vpl_far_weight(d2_13, near_r2_3);
+    const bool _e4 = clamp_keep(range2_2, d2_13);
+    return ((_e4 & (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
+float vpl_near_range2_(float r2_7, uint period_6)
+{
+    const float _e2 = interleave_flux_scale(period_6);
+    return (r2_7 / _e2);
+}
+
+float vpl_near_cull_range2_(float r2_8, float near_r2_4)
+{
+    return min(r2_8, near_r2_4);
+}
+
+float vpl_near_slc_share(float rt2_8, float r2_9, float d2_14, float near_r2_5)
+{
+    const float _e4 = vpl_near_weight(d2_14, near_r2_5);
+    const float _e5 = slc_weight(rt2_8, d2_14);
+    const bool _e7 = slc_keep(r2_9, d2_14);
+    return ((_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+float vpl_near_fixed_share(float range2_3, float d2_15, float near_r2_6)
+{
+    const float _e3 = vpl_near_weight(d2_15, near_r2_6);
+    const bool _e4 = clamp_keep(range2_3, d2_15);
+    return ((_e4 & (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
 float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_8, float h)
 {
     float sx = (((2.0 * px) / w_8) - 1.0);
@@ -1311,34 +1352,34 @@ bool sees_emission(float3 gn, float3 dir_1)
 
 bool continues_path(float3 nd, float3 n_14, float3 ng_1)
 {
-    bool local_15 = (bool)0;
+    bool local_14 = (bool)0;
 
     if ((dot(nd, n_14) > 0.0)) {
-        local_15 = (dot(nd, ng_1) > 0.0);
+        local_14 = (dot(nd, ng_1) > 0.0);
     } else {
-        local_15 = false;
+        local_14 = false;
     }
-    bool _e12 = local_15;
+    bool _e12 = local_14;
     return _e12;
 }
 
 bool finite3_(float3 v_2)
 {
+    bool local_15 = (bool)0;
     bool local_16 = (bool)0;
-    bool local_17 = (bool)0;
 
     if ((abs(v_2.x) <= F32_MAX)) {
-        local_16 = (abs(v_2.y) <= F32_MAX);
+        local_15 = (abs(v_2.y) <= F32_MAX);
+    } else {
+        local_15 = false;
+    }
+    bool _e12 = local_15;
+    if (_e12) {
+        local_16 = (abs(v_2.z) <= F32_MAX);
     } else {
         local_16 = false;
     }
-    bool _e12 = local_16;
-    if (_e12) {
-        local_17 = (abs(v_2.z) <= F32_MAX);
-    } else {
-        local_17 = false;
-    }
-    bool _e20 = local_17;
+    bool _e20 = local_16;
     return _e20;
 }
 
@@ -1386,9 +1427,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
 
 float3 point_irradiance(float3 intensity_1, float3 n_15, float3 v_3)
 {
-    float d2_14 = dot(v_3, v_3);
-    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
-    const float _e11 = inverse_square(d2_14);
+    float d2_18 = dot(v_3, v_3);
+    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_18, MIN_D2_)));
+    const float _e11 = inverse_square(d2_18);
     return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
@@ -1415,14 +1456,14 @@ float shadow_bias(float texel, float cos_light_1)
 
 bool shadow_lit(float d_3, float d_map, float bias)
 {
-    bool local_18 = (bool)0;
+    bool local_17 = (bool)0;
 
     if (!((d_map <= 0.0))) {
-        local_18 = (d_3 <= (d_map + bias));
+        local_17 = (d_3 <= (d_map + bias));
     } else {
-        local_18 = true;
+        local_17 = true;
     }
-    bool _e11 = local_18;
+    bool _e11 = local_17;
     return _e11;
 }
 
@@ -1541,7 +1582,6 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     uint first = 0u;
     uint j = (uint)0;
     uint k = (uint)0;
-    bool local_2 = (bool)0;
 
     uint sub = wg.z;
     uint px_1 = (naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P));
@@ -1581,8 +1621,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e180 = first;
-            first = (_e180 + MAX_TILE_LIGHTS);
+            uint _e173 = first;
+            first = (_e173 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
         uint _e78 = first;
@@ -1620,7 +1660,7 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     uint _e100 = j;
                     float3 _e104 = asfloat(lights.Load3(0+(base_4 + _e100)*64));
                     uint _e106 = j;
-                    float _e109 = asfloat(r2_6.Load((base_4 + _e106)*4));
+                    float _e109 = asfloat(r2_10.Load((base_4 + _e106)*4));
                     const float _e110 = cull_radius(_e109);
                     const bool _e111 = sphere_overlaps_aabb(_e104, _e110, lo_4, hi_4);
                     if (_e111) {
@@ -1644,8 +1684,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
                     loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e178 = k;
-                        k = (_e178 + 1u);
+                        uint _e171 = k;
+                        k = (_e171 + 1u);
                     }
                     loop_init_3 = false;
                     uint _e129 = k;
@@ -1660,27 +1700,18 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(j_1*64+0)), asuint(lights.Load(j_1*64+12)), asfloat(lights.Load3(j_1*64+16)), asfloat(lights.Load(j_1*64+28)), asfloat(lights.Load3(j_1*64+32)), asfloat(lights.Load(j_1*64+44)), asfloat(lights.Load3(j_1*64+48)), asuint(lights.Load(j_1*64+60)));
                         float4 _e139 = pos;
                         float3 v_13 = (_e139.xyz - l_4.p0_);
-                        float3 _e144 = nrm;
-                        float _e147 = params.min_d2_;
-                        const float _e148 = vpl_transfer(l_4.p1_, _e144, v_13, _e147);
-                        float d2_15 = dot(v_13, v_13);
+                        float _e145 = asfloat(rt2_9.Load(j_1*4));
+                        float _e148 = asfloat(r2_10.Load(j_1*4));
                         float _e152 = params.near_r2_;
-                        const float _e153 = vpl_far_weight(d2_15, _e152);
-                        float _e156 = asfloat(r2_6.Load(j_1*4));
-                        const bool _e157 = slc_keep(_e156, d2_15);
-                        if (_e157) {
-                            local_2 = (_e153 > 0.0);
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e163 = local_2;
-                        if (_e163) {
-                            float3 _e164 = e;
-                            float _e168 = asfloat(rt2_7.Load(j_1*4));
-                            const float _e169 = slc_weight(_e168, d2_15);
-                            e = (_e164 + (l_4.intensity * ((_e148 * _e169) * _e153)));
-                            uint _e174 = kept;
-                            kept = (_e174 + 1u);
+                        const float _e153 = vpl_far_slc_share(_e145, _e148, dot(v_13, v_13), _e152);
+                        if ((_e153 > 0.0)) {
+                            float3 _e156 = e;
+                            float3 _e159 = nrm;
+                            float _e162 = params.min_d2_;
+                            const float _e163 = vpl_transfer(l_4.p1_, _e159, v_13, _e162);
+                            e = (_e156 + (l_4.intensity * (_e163 * _e153)));
+                            uint _e167 = kept;
+                            kept = (_e167 + 1u);
                         }
                     }
                 }
@@ -1689,9 +1720,9 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         }
     }
     if (valid) {
-        float3 _e185 = e;
-        uint _e186 = kept;
-        irradiance.Store4(pix*16, asuint(float4(_e185, float(_e186))));
+        float3 _e178 = e;
+        uint _e179 = kept;
+        irradiance.Store4(pix*16, asuint(float4(_e178, float(_e179))));
         return;
     } else {
         return;

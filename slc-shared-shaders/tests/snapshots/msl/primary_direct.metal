@@ -546,10 +546,10 @@ float connection_cosine(
     bool local_5 = {};
     bool local_6 = {};
     metal::float3 v_8 = x_4 - y;
-    float d2_12 = metal::dot(v_8, v_8);
-    bool _e7 = slc_keep(r2_5, d2_12);
+    float d2_16 = metal::dot(v_8, v_8);
+    bool _e7 = slc_keep(r2_5, d2_16);
     if (!(!(_e7))) {
-        local_5 = !((d2_12 > 0.0));
+        local_5 = !((d2_16 > 0.0));
     } else {
         local_5 = true;
     }
@@ -557,7 +557,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_11 = v_8 / metal::float3(metal::sqrt(d2_12));
+    metal::float3 w_11 = v_8 / metal::float3(metal::sqrt(d2_16));
     float cos_x_1 = -(metal::dot(n, w_11));
     if (!((cos_x_1 <= 0.0))) {
         local_6 = metal::dot(ng, w_11) >= 0.0;
@@ -1027,13 +1027,13 @@ float light_importance(
     float imp = {};
     metal::float3 v_9 = p - center;
     float dist2_ = metal::dot(v_9, v_9);
-    float r2_6 = radius * radius;
-    float d2_13 = metal::max(metal::max(dist2_, r2_6), MIN_D2_);
+    float r2_10 = radius * radius;
+    float d2_17 = metal::max(metal::max(dist2_, r2_10), MIN_D2_);
     metal::float3 wi = (dist2_ > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e32 = safe_sqrt(1.0 - (r2_6 / dist2_));
-    float cos_b_2 = (dist2_ <= r2_6) ? -1.0 : _e32;
+    float _e32 = safe_sqrt(1.0 - (r2_10 / dist2_));
+    float cos_b_2 = (dist2_ <= r2_10) ? -1.0 : _e32;
     float _e39 = safe_sqrt(1.0 - (cos_b_2 * cos_b_2));
     float _e43 = safe_sqrt(1.0 - (cos_o * cos_o));
     float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -1042,7 +1042,7 @@ float light_importance(
     if (_e46 <= cos_e) {
         return 0.0;
     }
-    imp = (phi * _e46) / d2_13;
+    imp = (phi * _e46) / d2_17;
     if (metal::dot(n_9, n_9) > 0.0) {
         float cos_i = -(metal::dot(wi, n_9));
         float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
@@ -1520,6 +1520,65 @@ float vpl_far_weight(
     return 1.0 - _e2;
 }
 
+float vpl_far_slc_share(
+    float rt2_7,
+    float r2_6,
+    float d2_12,
+    float near_r2_2
+) {
+    float _e4 = vpl_far_weight(d2_12, near_r2_2);
+    float _e5 = slc_weight(rt2_7, d2_12);
+    bool _e7 = slc_keep(r2_6, d2_12);
+    return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
+}
+
+float vpl_far_fixed_share(
+    float range2_2,
+    float d2_13,
+    float near_r2_3
+) {
+    float _e3 = vpl_far_weight(d2_13, near_r2_3);
+    bool _e4 = clamp_keep(range2_2, d2_13);
+    return (_e4 & (_e3 > 0.0)) ? _e3 : 0.0;
+}
+
+float vpl_near_range2_(
+    float r2_7,
+    uint period_6
+) {
+    float _e2 = interleave_flux_scale(period_6);
+    return r2_7 / _e2;
+}
+
+float vpl_near_cull_range2_(
+    float r2_8,
+    float near_r2_4
+) {
+    return metal::min(r2_8, near_r2_4);
+}
+
+float vpl_near_slc_share(
+    float rt2_8,
+    float r2_9,
+    float d2_14,
+    float near_r2_5
+) {
+    float _e4 = vpl_near_weight(d2_14, near_r2_5);
+    float _e5 = slc_weight(rt2_8, d2_14);
+    bool _e7 = slc_keep(r2_9, d2_14);
+    return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
+}
+
+float vpl_near_fixed_share(
+    float range2_3,
+    float d2_15,
+    float near_r2_6
+) {
+    float _e3 = vpl_near_weight(d2_15, near_r2_6);
+    bool _e4 = clamp_keep(range2_3, d2_15);
+    return (_e4 & (_e3 > 0.0)) ? _e3 : 0.0;
+}
+
 metal::float3 camera_dir(
     metal::float3 forward,
     metal::float3 right,
@@ -1653,9 +1712,9 @@ metal::float3 point_irradiance(
     metal::float3 n_15,
     metal::float3 v_3
 ) {
-    float d2_14 = metal::dot(v_3, v_3);
-    float cos_x_2 = metal::dot(n_15, v_3) / metal::sqrt(metal::max(d2_14, MIN_D2_));
-    float _e11 = inverse_square(d2_14);
+    float d2_18 = metal::dot(v_3, v_3);
+    float cos_x_2 = metal::dot(n_15, v_3) / metal::sqrt(metal::max(d2_18, MIN_D2_));
+    float _e11 = inverse_square(d2_18);
     return intensity_1 * (metal::max(cos_x_2, 0.0) * _e11);
 }
 

@@ -593,10 +593,10 @@ float connection_cosine(
     bool local_1 = {};
     bool local_2 = {};
     metal::float3 v_8 = x_4 - y;
-    float d2_12 = metal::dot(v_8, v_8);
-    bool _e7 = slc_keep(r2_5, d2_12);
+    float d2_16 = metal::dot(v_8, v_8);
+    bool _e7 = slc_keep(r2_5, d2_16);
     if (!(!(_e7))) {
-        local_1 = !((d2_12 > 0.0));
+        local_1 = !((d2_16 > 0.0));
     } else {
         local_1 = true;
     }
@@ -604,7 +604,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_12 = v_8 / metal::float3(metal::sqrt(d2_12));
+    metal::float3 w_12 = v_8 / metal::float3(metal::sqrt(d2_16));
     float cos_x_1 = -(metal::dot(n, w_12));
     if (!((cos_x_1 <= 0.0))) {
         local_2 = metal::dot(ng, w_12) >= 0.0;
@@ -1074,13 +1074,13 @@ float light_importance(
     float imp = {};
     metal::float3 v_9 = p - center;
     float dist2_ = metal::dot(v_9, v_9);
-    float r2_7 = radius * radius;
-    float d2_13 = metal::max(metal::max(dist2_, r2_7), MIN_D2_);
+    float r2_11 = radius * radius;
+    float d2_17 = metal::max(metal::max(dist2_, r2_11), MIN_D2_);
     metal::float3 wi = (dist2_ > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e32 = safe_sqrt(1.0 - (r2_7 / dist2_));
-    float cos_b_2 = (dist2_ <= r2_7) ? -1.0 : _e32;
+    float _e32 = safe_sqrt(1.0 - (r2_11 / dist2_));
+    float cos_b_2 = (dist2_ <= r2_11) ? -1.0 : _e32;
     float _e39 = safe_sqrt(1.0 - (cos_b_2 * cos_b_2));
     float _e43 = safe_sqrt(1.0 - (cos_o * cos_o));
     float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -1089,7 +1089,7 @@ float light_importance(
     if (_e46 <= cos_e) {
         return 0.0;
     }
-    imp = (phi * _e46) / d2_13;
+    imp = (phi * _e46) / d2_17;
     if (metal::dot(n_9, n_9) > 0.0) {
         float cos_i = -(metal::dot(wi, n_9));
         float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
@@ -1567,6 +1567,65 @@ float vpl_far_weight(
     return 1.0 - _e2;
 }
 
+float vpl_far_slc_share(
+    float rt2_7,
+    float r2_6,
+    float d2_12,
+    float near_r2_2
+) {
+    float _e4 = vpl_far_weight(d2_12, near_r2_2);
+    float _e5 = slc_weight(rt2_7, d2_12);
+    bool _e7 = slc_keep(r2_6, d2_12);
+    return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
+}
+
+float vpl_far_fixed_share(
+    float range2_2,
+    float d2_13,
+    float near_r2_3
+) {
+    float _e3 = vpl_far_weight(d2_13, near_r2_3);
+    bool _e4 = clamp_keep(range2_2, d2_13);
+    return (_e4 & (_e3 > 0.0)) ? _e3 : 0.0;
+}
+
+float vpl_near_range2_(
+    float r2_7,
+    uint period_6
+) {
+    float _e2 = interleave_flux_scale(period_6);
+    return r2_7 / _e2;
+}
+
+float vpl_near_cull_range2_(
+    float r2_8,
+    float near_r2_4
+) {
+    return metal::min(r2_8, near_r2_4);
+}
+
+float vpl_near_slc_share(
+    float rt2_8,
+    float r2_9,
+    float d2_14,
+    float near_r2_5
+) {
+    float _e4 = vpl_near_weight(d2_14, near_r2_5);
+    float _e5 = slc_weight(rt2_8, d2_14);
+    bool _e7 = slc_keep(r2_9, d2_14);
+    return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
+}
+
+float vpl_near_fixed_share(
+    float range2_3,
+    float d2_15,
+    float near_r2_6
+) {
+    float _e3 = vpl_near_weight(d2_15, near_r2_6);
+    bool _e4 = clamp_keep(range2_3, d2_15);
+    return (_e4 & (_e3 > 0.0)) ? _e3 : 0.0;
+}
+
 metal::float3 camera_dir(
     metal::float3 forward,
     metal::float3 right,
@@ -1700,9 +1759,9 @@ metal::float3 point_irradiance(
     metal::float3 n_15,
     metal::float3 v_3
 ) {
-    float d2_14 = metal::dot(v_3, v_3);
-    float cos_x_2 = metal::dot(n_15, v_3) / metal::sqrt(metal::max(d2_14, MIN_D2_));
-    float _e11 = inverse_square(d2_14);
+    float d2_18 = metal::dot(v_3, v_3);
+    float cos_x_2 = metal::dot(n_15, v_3) / metal::sqrt(metal::max(d2_18, MIN_D2_));
+    float _e11 = inverse_square(d2_18);
     return intensity_1 * (metal::max(cos_x_2, 0.0) * _e11);
 }
 
@@ -2065,8 +2124,8 @@ Connection connect(
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
-    device type_4 const& r2_6,
-    device type_4 const& rt2_7,
+    device type_4 const& r2_10,
+    device type_4 const& rt2_9,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_9 = {};
@@ -2076,7 +2135,7 @@ Connection connect(
     metal::float3 _e16 = light_point(l_4, u1_3, u2_3);
     c_9.y = _e16;
     metal::float3 _e19 = c_9.y;
-    float _e22 = r2_6[li];
+    float _e22 = r2_10[li];
     float _e23 = connection_cosine(x_17, _e19, n_17, ng_2, _e22);
     c_9.cos_x = _e23;
     float _e25 = c_9.cos_x;
@@ -2094,11 +2153,11 @@ Connection connect(
     }
     metal::float3 _e40 = c_9.y;
     metal::float3 v_13 = x_17 - _e40;
-    float d2_15 = metal::dot(v_13, v_13);
-    metal::float3 _e47 = light_intensity(l_4, v_13 / metal::float3(metal::sqrt(d2_15)));
+    float d2_19 = metal::dot(v_13, v_13);
+    metal::float3 _e47 = light_intensity(l_4, v_13 / metal::float3(metal::sqrt(d2_19)));
     float _e49 = c_9.cos_x;
-    float _e52 = rt2_7[li];
-    float _e53 = connection_factor(_e49, d2_15, _e52, w_res);
+    float _e52 = rt2_9[li];
+    float _e53 = connection_factor(_e49, d2_19, _e52, w_res);
     c_9.e = _e47 * _e53;
     Connection _e55 = c_9;
     return _e55;
@@ -2116,12 +2175,12 @@ float light_weight(
     uint li_1,
     metal::float3 x_18,
     metal::float3 n_18,
-    device type_4 const& rt2_7,
+    device type_4 const& rt2_9,
     device type_13 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_14 = light_cones[li_1];
-    float _e14 = rt2_7[li_1];
+    float _e14 = rt2_9[li_1];
     float _e15 = cone_weight(c_14.center, c_14.radius, c_14.phi, c_14.axis, c_14.cos_o, c_14.cos_e, _e14, x_18, n_18);
     return _e15;
 }
@@ -2341,18 +2400,18 @@ float light_pdf(
     uint nee_1,
     bool in_range_3,
     device type_11 const& lights,
-    device type_4 const& rt2_7,
+    device type_4 const& rt2_9,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_5 = lights[li_3];
     metal::float3 v_14 = x_24 - y_3;
-    float d2_16 = metal::dot(v_14, v_14);
+    float d2_20 = metal::dot(v_14, v_14);
     metal::float3 _e11 = light_normal(l_5);
-    float cos_y_1 = (d2_16 > 0.0) ? metal::dot(_e11, v_14 / metal::float3(metal::sqrt(d2_16))) : 0.0;
+    float cos_y_1 = (d2_20 > 0.0) ? metal::dot(_e11, v_14 / metal::float3(metal::sqrt(d2_20))) : 0.0;
     float _e20 = select_pdf(li_3, x_24, n_24, nee_1, in_range_3);
-    float _e23 = rt2_7[li_3];
+    float _e23 = rt2_9[li_3];
     float _e24 = light_area(l_5);
-    float _e25 = light_strategy_pdf(_e20, _e23, d2_16, _e24, cos_y_1);
+    float _e25 = light_strategy_pdf(_e20, _e23, d2_20, _e24, cos_y_1);
     return _e25;
 }
 
@@ -2368,15 +2427,15 @@ metal::float3 shade_pick(
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
-    device type_4 const& r2_6,
-    device type_4 const& rt2_7,
+    device type_4 const& r2_10,
+    device type_4 const& rt2_9,
     constant ShadeParams& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
     bool local_21 = {};
     float _e10 = params.eps;
-    Connection _e11 = connect(li_4, x_25, n_25, ng_3, w_10, u1_4, u2_4, _e10, geo_nodes, geo_tris, lights, r2_6, rt2_7, _buffer_sizes);
+    Connection _e11 = connect(li_4, x_25, n_25, ng_3, w_10, u1_4, u2_4, _e10, geo_nodes, geo_tris, lights, r2_10, rt2_9, _buffer_sizes);
     GpuLight _e16 = lights[li_4];
     float _e17 = light_area(_e16);
     if (_e17 > 0.0) {
@@ -2386,7 +2445,7 @@ metal::float3 shade_pick(
     }
     bool _e26 = local_21;
     if (_e26) {
-        float _e29 = light_pdf(li_4, x_25, n_25, _e11.y, nee_2, true, lights, rt2_7, _buffer_sizes);
+        float _e29 = light_pdf(li_4, x_25, n_25, _e11.y, nee_2, true, lights, rt2_9, _buffer_sizes);
         float _e31 = cosine_pdf(_e11.cos_x);
         float _e32 = mis_weight(_e29, _e31);
         mis = _e32;
@@ -2403,8 +2462,8 @@ kernel void main_(
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_10 const& bsh_nodes [[user(fake0)]]
 , device type_11 const& lights [[user(fake0)]]
-, device type_4 const& r2_6 [[user(fake0)]]
-, device type_4 const& rt2_7 [[user(fake0)]]
+, device type_4 const& r2_10 [[user(fake0)]]
+, device type_4 const& rt2_9 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
 , device type_15 const& vertices [[user(fake0)]]
 , device type_12& radiance [[user(fake0)]]
@@ -2463,7 +2522,7 @@ kernel void main_(
             uint _e52 = s;
             uint _e55 = h;
             float _e56 = xi_from_bits(_e55);
-            metal::float3 _e57 = shade_pick(_e30.light.inner[_e52], x_26, n_29, ng_4, _e36, _e30.n, _e47, _e56, geo_nodes, geo_tris, lights, r2_6, rt2_7, params, _buffer_sizes);
+            metal::float3 _e57 = shade_pick(_e30.light.inner[_e52], x_26, n_29, ng_4, _e36, _e30.n, _e47, _e56, geo_nodes, geo_tris, lights, r2_10, rt2_9, params, _buffer_sizes);
             sum = _e50 + _e57;
         }
     }

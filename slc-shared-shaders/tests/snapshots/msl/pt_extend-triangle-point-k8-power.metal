@@ -583,10 +583,10 @@ float connection_cosine(
     bool local_4 = {};
     bool local_5 = {};
     metal::float3 v_9 = x_4 - y;
-    float d2_12 = metal::dot(v_9, v_9);
-    bool _e7 = slc_keep(r2_5, d2_12);
+    float d2_16 = metal::dot(v_9, v_9);
+    bool _e7 = slc_keep(r2_5, d2_16);
     if (!(!(_e7))) {
-        local_4 = !((d2_12 > 0.0));
+        local_4 = !((d2_16 > 0.0));
     } else {
         local_4 = true;
     }
@@ -594,7 +594,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_12 = v_9 / metal::float3(metal::sqrt(d2_12));
+    metal::float3 w_12 = v_9 / metal::float3(metal::sqrt(d2_16));
     float cos_x_1 = -(metal::dot(n, w_12));
     if (!((cos_x_1 <= 0.0))) {
         local_5 = metal::dot(ng, w_12) >= 0.0;
@@ -1064,13 +1064,13 @@ float light_importance(
     float imp = {};
     metal::float3 v_10 = p - center;
     float dist2_ = metal::dot(v_10, v_10);
-    float r2_6 = radius * radius;
-    float d2_13 = metal::max(metal::max(dist2_, r2_6), MIN_D2_);
+    float r2_10 = radius * radius;
+    float d2_17 = metal::max(metal::max(dist2_, r2_10), MIN_D2_);
     metal::float3 wi = (dist2_ > 0.0) ? (v_10 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e32 = safe_sqrt(1.0 - (r2_6 / dist2_));
-    float cos_b_2 = (dist2_ <= r2_6) ? -1.0 : _e32;
+    float _e32 = safe_sqrt(1.0 - (r2_10 / dist2_));
+    float cos_b_2 = (dist2_ <= r2_10) ? -1.0 : _e32;
     float _e39 = safe_sqrt(1.0 - (cos_b_2 * cos_b_2));
     float _e43 = safe_sqrt(1.0 - (cos_o * cos_o));
     float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -1079,7 +1079,7 @@ float light_importance(
     if (_e46 <= cos_e) {
         return 0.0;
     }
-    imp = (phi * _e46) / d2_13;
+    imp = (phi * _e46) / d2_17;
     if (metal::dot(n_9, n_9) > 0.0) {
         float cos_i = -(metal::dot(wi, n_9));
         float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
@@ -1557,6 +1557,65 @@ float vpl_far_weight(
     return 1.0 - _e2;
 }
 
+float vpl_far_slc_share(
+    float rt2_7,
+    float r2_6,
+    float d2_12,
+    float near_r2_2
+) {
+    float _e4 = vpl_far_weight(d2_12, near_r2_2);
+    float _e5 = slc_weight(rt2_7, d2_12);
+    bool _e7 = slc_keep(r2_6, d2_12);
+    return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
+}
+
+float vpl_far_fixed_share(
+    float range2_2,
+    float d2_13,
+    float near_r2_3
+) {
+    float _e3 = vpl_far_weight(d2_13, near_r2_3);
+    bool _e4 = clamp_keep(range2_2, d2_13);
+    return (_e4 & (_e3 > 0.0)) ? _e3 : 0.0;
+}
+
+float vpl_near_range2_(
+    float r2_7,
+    uint period_6
+) {
+    float _e2 = interleave_flux_scale(period_6);
+    return r2_7 / _e2;
+}
+
+float vpl_near_cull_range2_(
+    float r2_8,
+    float near_r2_4
+) {
+    return metal::min(r2_8, near_r2_4);
+}
+
+float vpl_near_slc_share(
+    float rt2_8,
+    float r2_9,
+    float d2_14,
+    float near_r2_5
+) {
+    float _e4 = vpl_near_weight(d2_14, near_r2_5);
+    float _e5 = slc_weight(rt2_8, d2_14);
+    bool _e7 = slc_keep(r2_9, d2_14);
+    return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
+}
+
+float vpl_near_fixed_share(
+    float range2_3,
+    float d2_15,
+    float near_r2_6
+) {
+    float _e3 = vpl_near_weight(d2_15, near_r2_6);
+    bool _e4 = clamp_keep(range2_3, d2_15);
+    return (_e4 & (_e3 > 0.0)) ? _e3 : 0.0;
+}
+
 metal::float3 camera_dir(
     metal::float3 forward,
     metal::float3 right,
@@ -1690,9 +1749,9 @@ metal::float3 point_irradiance(
     metal::float3 n_15,
     metal::float3 v_4
 ) {
-    float d2_14 = metal::dot(v_4, v_4);
-    float cos_x_2 = metal::dot(n_15, v_4) / metal::sqrt(metal::max(d2_14, MIN_D2_));
-    float _e11 = inverse_square(d2_14);
+    float d2_18 = metal::dot(v_4, v_4);
+    float cos_x_2 = metal::dot(n_15, v_4) / metal::sqrt(metal::max(d2_18, MIN_D2_));
+    float _e11 = inverse_square(d2_18);
     return intensity_1 * (metal::max(cos_x_2, 0.0) * _e11);
 }
 
@@ -1921,11 +1980,11 @@ float light_weight(
     metal::float3 x_15,
     metal::float3 n_17,
     device type_10 const& light_cones,
-    device type_4 const& rt2_7,
+    device type_4 const& rt2_9,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_13 = light_cones[li];
-    float _e14 = rt2_7[li];
+    float _e14 = rt2_9[li];
     float _e15 = cone_weight(c_13.center, c_13.radius, c_13.phi, c_13.axis, c_13.cos_o, c_13.cos_e, _e14, x_15, n_17);
     return _e15;
 }
@@ -2144,19 +2203,19 @@ float light_pdf(
     metal::float3 y_3,
     uint nee_1,
     bool in_range_3,
-    device type_4 const& rt2_7,
+    device type_4 const& rt2_9,
     device type_12 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_4 = lights[li_2];
     metal::float3 v_14 = x_21 - y_3;
-    float d2_15 = metal::dot(v_14, v_14);
+    float d2_19 = metal::dot(v_14, v_14);
     metal::float3 _e11 = light_normal(l_4);
-    float cos_y_1 = (d2_15 > 0.0) ? metal::dot(_e11, v_14 / metal::float3(metal::sqrt(d2_15))) : 0.0;
+    float cos_y_1 = (d2_19 > 0.0) ? metal::dot(_e11, v_14 / metal::float3(metal::sqrt(d2_19))) : 0.0;
     float _e20 = select_pdf(li_2, x_21, n_23, nee_1, in_range_3);
-    float _e23 = rt2_7[li_2];
+    float _e23 = rt2_9[li_2];
     float _e24 = light_area(l_4);
-    float _e25 = light_strategy_pdf(_e20, _e23, d2_15, _e24, cos_y_1);
+    float _e25 = light_strategy_pdf(_e20, _e23, d2_19, _e24, cos_y_1);
     return _e25;
 }
 
@@ -2177,7 +2236,7 @@ kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
 , device type_6 const& geo_nodes [[user(fake0)]]
 , device type_7 const& geo_tris [[user(fake0)]]
-, device type_4 const& rt2_7 [[user(fake0)]]
+, device type_4 const& rt2_9 [[user(fake0)]]
 , device type_12 const& lights [[user(fake0)]]
 , constant PtParams& params [[user(fake0)]]
 , device type_13 const& bsh_nodes [[user(fake0)]]
@@ -2287,7 +2346,7 @@ kernel void main_(
             metal::float3 _e180 = st.prev;
             metal::float3 _e182 = st.prev_normal;
             uint _e185 = candidates[i_8];
-            float _e186 = light_pdf(tri.light, _e180, _e182, x_22, _e185, _e175, rt2_7, lights, _buffer_sizes);
+            float _e186 = light_pdf(tri.light, _e180, _e182, x_22, _e185, _e175, rt2_9, lights, _buffer_sizes);
             float _e187 = mis_weight(_e177, _e186);
             w = _e187;
         }

@@ -472,7 +472,7 @@ metal::float4 sphere_union(
     metal::float3 c2_1,
     float r2_3
 ) {
-    bool local_3 = {};
+    bool local_2 = {};
     metal::float3 v_6 = c2_1 - c1_1;
     float d_4 = metal::sqrt(metal::dot(v_6, v_6));
     float _e8 = sphere_pad(r1_1, c1_1);
@@ -484,11 +484,11 @@ metal::float4 sphere_union(
         return metal::float4(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
     if (!((d_4 >= SPHERE_HUGE))) {
-        local_3 = (0.5 * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE;
+        local_2 = (0.5 * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE;
     } else {
-        local_3 = true;
+        local_2 = true;
     }
-    bool _e35 = local_3;
+    bool _e35 = local_2;
     if (_e35) {
         return metal::float4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
@@ -564,28 +564,28 @@ float connection_cosine(
     metal::float3 ng,
     float r2_5
 ) {
+    bool local_3 = {};
     bool local_4 = {};
-    bool local_5 = {};
     metal::float3 v_8 = x_4 - y;
-    float d2_12 = metal::dot(v_8, v_8);
-    bool _e7 = slc_keep(r2_5, d2_12);
+    float d2_16 = metal::dot(v_8, v_8);
+    bool _e7 = slc_keep(r2_5, d2_16);
     if (!(!(_e7))) {
-        local_4 = !((d2_12 > 0.0));
+        local_3 = !((d2_16 > 0.0));
     } else {
-        local_4 = true;
+        local_3 = true;
     }
-    bool _e16 = local_4;
+    bool _e16 = local_3;
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_11 = v_8 / metal::float3(metal::sqrt(d2_12));
+    metal::float3 w_11 = v_8 / metal::float3(metal::sqrt(d2_16));
     float cos_x_1 = -(metal::dot(n, w_11));
     if (!((cos_x_1 <= 0.0))) {
-        local_5 = metal::dot(ng, w_11) >= 0.0;
+        local_4 = metal::dot(ng, w_11) >= 0.0;
     } else {
-        local_5 = true;
+        local_4 = true;
     }
-    bool _e32 = local_5;
+    bool _e32 = local_4;
     if (_e32) {
         return 0.0;
     }
@@ -814,7 +814,7 @@ float ies_candela(
     device type_4 const& slc_table,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_6 = {};
+    bool local_5 = {};
     float _e4 = at(tab_2, base_1, slc_table, _buffer_sizes);
     uint _e5 = to_u32_(_e4);
     float _e8 = at(tab_2, base_1 + 1u, slc_table, _buffer_sizes);
@@ -825,11 +825,11 @@ float ies_candela(
     float _e14 = at(tab_2, v0_, slc_table, _buffer_sizes);
     if (!((gamma < _e14))) {
         float _e22 = at(tab_2, (v0_ + _e5) - 1u, slc_table, _buffer_sizes);
-        local_6 = gamma > _e22;
+        local_5 = gamma > _e22;
     } else {
-        local_6 = true;
+        local_5 = true;
     }
-    bool _e25 = local_6;
+    bool _e25 = local_5;
     if (_e25) {
         return 0.0;
     }
@@ -971,14 +971,14 @@ float reservoir_select_pdf(
     uint k_4
 ) {
     uint others = {};
-    bool local_7 = {};
+    bool local_6 = {};
     others = seen;
     if (in_range) {
-        local_7 = seen > 0u;
+        local_6 = seen > 0u;
     } else {
-        local_7 = false;
+        local_6 = false;
     }
-    bool _e9 = local_7;
+    bool _e9 = local_6;
     if (_e9) {
         others = seen - 1u;
     }
@@ -1048,13 +1048,13 @@ float light_importance(
     float imp = {};
     metal::float3 v_9 = p - center;
     float dist2_ = metal::dot(v_9, v_9);
-    float r2_7 = radius * radius;
-    float d2_13 = metal::max(metal::max(dist2_, r2_7), MIN_D2_);
+    float r2_11 = radius * radius;
+    float d2_17 = metal::max(metal::max(dist2_, r2_11), MIN_D2_);
     metal::float3 wi = (dist2_ > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e32 = safe_sqrt(1.0 - (r2_7 / dist2_));
-    float cos_b_2 = (dist2_ <= r2_7) ? -1.0 : _e32;
+    float _e32 = safe_sqrt(1.0 - (r2_11 / dist2_));
+    float cos_b_2 = (dist2_ <= r2_11) ? -1.0 : _e32;
     float _e39 = safe_sqrt(1.0 - (cos_b_2 * cos_b_2));
     float _e43 = safe_sqrt(1.0 - (cos_o * cos_o));
     float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -1063,7 +1063,7 @@ float light_importance(
     if (_e46 <= cos_e) {
         return 0.0;
     }
-    imp = (phi * _e46) / d2_13;
+    imp = (phi * _e46) / d2_17;
     if (metal::dot(n_9, n_9) > 0.0) {
         float cos_i = -(metal::dot(wi, n_9));
         float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
@@ -1194,15 +1194,15 @@ metal::float3 triangle_normal(
     metal::float3 b_4,
     metal::float3 c_6
 ) {
-    bool local_8 = {};
+    bool local_7 = {};
     metal::float3 n_17 = metal::cross(b_4 - a_5, c_6 - a_5);
     float l2_ = metal::dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
-        local_8 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_7 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e17 = local_8;
+    bool _e17 = local_7;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -1244,15 +1244,15 @@ metal::float3 shading_normal(
     metal::float3 w_7,
     metal::float3 facing
 ) {
-    bool local_9 = {};
+    bool local_8 = {};
     metal::float3 s_1 = ((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z);
     float l2_1 = metal::dot(s_1, s_1);
     if (!(!((l2_1 > 0.000000000001)))) {
-        local_9 = !((l2_1 < 300000000000000000000000000000000000000.0));
+        local_8 = !((l2_1 < 300000000000000000000000000000000000000.0));
     } else {
-        local_9 = true;
+        local_8 = true;
     }
-    bool _e24 = local_9;
+    bool _e24 = local_8;
     if (_e24) {
         return facing;
     }
@@ -1269,9 +1269,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
+    bool local_9 = {};
     bool local_10 = {};
     bool local_11 = {};
-    bool local_12 = {};
     metal::float3 e1_2 = b_6 - a_7;
     metal::float3 e2_2 = c_8 - a_7;
     metal::float3 p_4 = metal::cross(d_1, e2_2);
@@ -1283,32 +1283,32 @@ float ray_triangle(
     metal::float3 s_2 = o_1 - a_7;
     float u_6 = metal::dot(s_2, p_4) * inv;
     if (!((u_6 < 0.0))) {
-        local_10 = u_6 > 1.0;
+        local_9 = u_6 > 1.0;
     } else {
-        local_10 = true;
+        local_9 = true;
     }
-    bool _e28 = local_10;
+    bool _e28 = local_9;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_5 = metal::cross(s_2, e1_2);
     float v_11 = metal::dot(d_1, q_5) * inv;
     if (!((v_11 < 0.0))) {
-        local_11 = (u_6 + v_11) > 1.0;
+        local_10 = (u_6 + v_11) > 1.0;
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    bool _e42 = local_11;
+    bool _e42 = local_10;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_2, q_5) * inv;
     if (t_3 > t_min) {
-        local_12 = t_3 < t_max_1;
+        local_11 = t_3 < t_max_1;
     } else {
-        local_12 = false;
+        local_11 = false;
     }
-    bool _e51 = local_12;
+    bool _e51 = local_11;
     if (_e51) {
         return t_3;
     }
@@ -1345,20 +1345,20 @@ float light_strategy_pdf(
     float area_1,
     float cos_y
 ) {
+    bool local_12 = {};
     bool local_13 = {};
-    bool local_14 = {};
     if (!((d2_9 <= 0.0))) {
-        local_13 = area_1 <= 0.0;
+        local_12 = area_1 <= 0.0;
+    } else {
+        local_12 = true;
+    }
+    bool _e13 = local_12;
+    if (!(_e13)) {
+        local_13 = cos_y <= 0.0;
     } else {
         local_13 = true;
     }
-    bool _e13 = local_13;
-    if (!(_e13)) {
-        local_14 = cos_y <= 0.0;
-    } else {
-        local_14 = true;
-    }
-    bool _e20 = local_14;
+    bool _e20 = local_13;
     if (_e20) {
         return 0.0;
     }
@@ -1541,6 +1541,65 @@ float vpl_far_weight(
     return 1.0 - _e2;
 }
 
+float vpl_far_slc_share(
+    float rt2_7,
+    float r2_6,
+    float d2_12,
+    float near_r2_2
+) {
+    float _e4 = vpl_far_weight(d2_12, near_r2_2);
+    float _e5 = slc_weight(rt2_7, d2_12);
+    bool _e7 = slc_keep(r2_6, d2_12);
+    return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
+}
+
+float vpl_far_fixed_share(
+    float range2_2,
+    float d2_13,
+    float near_r2_3
+) {
+    float _e3 = vpl_far_weight(d2_13, near_r2_3);
+    bool _e4 = clamp_keep(range2_2, d2_13);
+    return (_e4 & (_e3 > 0.0)) ? _e3 : 0.0;
+}
+
+float vpl_near_range2_(
+    float r2_7,
+    uint period_6
+) {
+    float _e2 = interleave_flux_scale(period_6);
+    return r2_7 / _e2;
+}
+
+float vpl_near_cull_range2_(
+    float r2_8,
+    float near_r2_4
+) {
+    return metal::min(r2_8, near_r2_4);
+}
+
+float vpl_near_slc_share(
+    float rt2_8,
+    float r2_9,
+    float d2_14,
+    float near_r2_5
+) {
+    float _e4 = vpl_near_weight(d2_14, near_r2_5);
+    float _e5 = slc_weight(rt2_8, d2_14);
+    bool _e7 = slc_keep(r2_9, d2_14);
+    return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
+}
+
+float vpl_near_fixed_share(
+    float range2_3,
+    float d2_15,
+    float near_r2_6
+) {
+    float _e3 = vpl_near_weight(d2_15, near_r2_6);
+    bool _e4 = clamp_keep(range2_3, d2_15);
+    return (_e4 & (_e3 > 0.0)) ? _e3 : 0.0;
+}
+
 metal::float3 camera_dir(
     metal::float3 forward,
     metal::float3 right,
@@ -1581,33 +1640,33 @@ bool continues_path(
     metal::float3 n_14,
     metal::float3 ng_1
 ) {
-    bool local_15 = {};
+    bool local_14 = {};
     if (metal::dot(nd, n_14) > 0.0) {
-        local_15 = metal::dot(nd, ng_1) > 0.0;
+        local_14 = metal::dot(nd, ng_1) > 0.0;
     } else {
-        local_15 = false;
+        local_14 = false;
     }
-    bool _e12 = local_15;
+    bool _e12 = local_14;
     return _e12;
 }
 
 bool finite3_(
     metal::float3 v_2
 ) {
+    bool local_15 = {};
     bool local_16 = {};
-    bool local_17 = {};
     if (metal::abs(v_2.x) <= F32_MAX) {
-        local_16 = metal::abs(v_2.y) <= F32_MAX;
+        local_15 = metal::abs(v_2.y) <= F32_MAX;
+    } else {
+        local_15 = false;
+    }
+    bool _e12 = local_15;
+    if (_e12) {
+        local_16 = metal::abs(v_2.z) <= F32_MAX;
     } else {
         local_16 = false;
     }
-    bool _e12 = local_16;
-    if (_e12) {
-        local_17 = metal::abs(v_2.z) <= F32_MAX;
-    } else {
-        local_17 = false;
-    }
-    bool _e20 = local_17;
+    bool _e20 = local_16;
     return _e20;
 }
 
@@ -1674,9 +1733,9 @@ metal::float3 point_irradiance(
     metal::float3 n_15,
     metal::float3 v_3
 ) {
-    float d2_14 = metal::dot(v_3, v_3);
-    float cos_x_2 = metal::dot(n_15, v_3) / metal::sqrt(metal::max(d2_14, MIN_D2_));
-    float _e11 = inverse_square(d2_14);
+    float d2_18 = metal::dot(v_3, v_3);
+    float cos_x_2 = metal::dot(n_15, v_3) / metal::sqrt(metal::max(d2_18, MIN_D2_));
+    float _e11 = inverse_square(d2_18);
     return intensity_1 * (metal::max(cos_x_2, 0.0) * _e11);
 }
 
@@ -1717,13 +1776,13 @@ bool shadow_lit(
     float d_map,
     float bias
 ) {
-    bool local_18 = {};
+    bool local_17 = {};
     if (!((d_map <= 0.0))) {
-        local_18 = d_3 <= (d_map + bias);
+        local_17 = d_3 <= (d_map + bias);
     } else {
-        local_18 = true;
+        local_17 = true;
     }
-    bool _e11 = local_18;
+    bool _e11 = local_17;
     return _e11;
 }
 
@@ -1828,7 +1887,7 @@ kernel void main_(
 , device type_7 const& gb_position [[user(fake0)]]
 , device type_7 const& gb_normal [[user(fake0)]]
 , device type_8 const& lights [[user(fake0)]]
-, device type_4 const& r2_6 [[user(fake0)]]
+, device type_4 const& r2_10 [[user(fake0)]]
 , device type_7& irradiance [[user(fake0)]]
 , threadgroup metal::atomic_uint& tile_count
 , threadgroup type_10& tile_lights
@@ -1850,7 +1909,6 @@ kernel void main_(
     uint first = 0u;
     uint j = {};
     uint k = {};
-    bool local_2 = {};
     uint sub = wg.z;
     uint px_1 = naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P);
     uint py_1 = naga_div(sub, P) + (((wg.y * TILE) + lid.y) * P);
@@ -1889,8 +1947,8 @@ kernel void main_(
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e175 = first;
-            first = _e175 + MAX_TILE_LIGHTS;
+            uint _e170 = first;
+            first = _e170 + MAX_TILE_LIGHTS;
         }
         loop_init_1 = false;
         uint _e78 = first;
@@ -1928,7 +1986,7 @@ kernel void main_(
                     uint _e100 = j;
                     metal::float3 _e104 = lights[base_4 + _e100].p0_;
                     uint _e106 = j;
-                    float _e109 = r2_6[base_4 + _e106];
+                    float _e109 = r2_10[base_4 + _e106];
                     float _e110 = cull_radius(_e109);
                     bool _e111 = sphere_overlaps_aabb(_e104, _e110, lo_4, hi_4);
                     if (_e111) {
@@ -1952,8 +2010,8 @@ kernel void main_(
                     if (metal::all(loop_bound_4 == uint2(0u))) { break; }
                     loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e173 = k;
-                        k = _e173 + 1u;
+                        uint _e168 = k;
+                        k = _e168 + 1u;
                     }
                     loop_init_3 = false;
                     uint _e129 = k;
@@ -1968,25 +2026,17 @@ kernel void main_(
                         GpuLight l_4 = lights[j_1];
                         metal::float4 _e139 = pos;
                         metal::float3 v_13 = _e139.xyz - l_4.p0_;
-                        metal::float3 _e144 = nrm;
-                        float _e147 = params.min_d2_;
-                        float _e148 = vpl_transfer(l_4.p1_, _e144, v_13, _e147);
-                        float d2_15 = metal::dot(v_13, v_13);
-                        float _e152 = params.near_r2_;
-                        float _e153 = vpl_far_weight(d2_15, _e152);
-                        float _e156 = r2_6[j_1];
-                        bool _e157 = clamp_keep(_e156, d2_15);
-                        if (_e157) {
-                            local_2 = _e153 > 0.0;
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e163 = local_2;
-                        if (_e163) {
-                            metal::float3 _e164 = e;
-                            e = _e164 + (l_4.intensity * (_e148 * _e153));
-                            uint _e169 = kept;
-                            kept = _e169 + 1u;
+                        float _e145 = r2_10[j_1];
+                        float _e149 = params.near_r2_;
+                        float _e150 = vpl_far_fixed_share(_e145, metal::dot(v_13, v_13), _e149);
+                        if (_e150 > 0.0) {
+                            metal::float3 _e153 = e;
+                            metal::float3 _e156 = nrm;
+                            float _e159 = params.min_d2_;
+                            float _e160 = vpl_transfer(l_4.p1_, _e156, v_13, _e159);
+                            e = _e153 + (l_4.intensity * (_e160 * _e150));
+                            uint _e164 = kept;
+                            kept = _e164 + 1u;
                         }
                     }
                 }
@@ -1995,9 +2045,9 @@ kernel void main_(
         }
     }
     if (valid) {
-        metal::float3 _e180 = e;
-        uint _e181 = kept;
-        irradiance[pix] = metal::float4(_e180, static_cast<float>(_e181));
+        metal::float3 _e175 = e;
+        uint _e176 = kept;
+        irradiance[pix] = metal::float4(_e175, static_cast<float>(_e176));
         return;
     } else {
         return;

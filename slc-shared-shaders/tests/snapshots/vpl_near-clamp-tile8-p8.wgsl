@@ -255,6 +255,10 @@ var<storage> near_slots: array<u32>;
 @group(0) @binding(5) 
 var<storage> near_boxes: array<GpuNearBox>;
 @group(0) @binding(6) 
+var<storage> rt2_9: array<f32>;
+@group(0) @binding(7) 
+var<storage> r2_10: array<f32>;
+@group(0) @binding(8) 
 var<storage, read_write> irradiance: array<vec4<f32>>;
 var<workgroup> light_count: atomic<u32>;
 var<workgroup> light_list: array<u32, 2048>;
@@ -477,10 +481,10 @@ fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_7: bool;
 
     let v_8 = (x_4 - y);
-    let d2_12 = dot(v_8, v_8);
-    let _e7 = slc_keep(r2_5, d2_12);
+    let d2_16 = dot(v_8, v_8);
+    let _e7 = slc_keep(r2_5, d2_16);
     if !(!(_e7)) {
-        local_6 = !((d2_12 > 0f));
+        local_6 = !((d2_16 > 0f));
     } else {
         local_6 = true;
     }
@@ -488,7 +492,7 @@ fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_11 = (v_8 / vec3(sqrt(d2_12)));
+    let w_11 = (v_8 / vec3(sqrt(d2_16)));
     let cos_x_1 = -(dot(n, w_11));
     if !((cos_x_1 <= 0f)) {
         local_7 = (dot(ng, w_11) >= 0f);
@@ -834,13 +838,13 @@ fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, c
 
     let v_9 = (p - center);
     let dist2_ = dot(v_9, v_9);
-    let r2_6 = (radius * radius);
-    let d2_13 = max(max(dist2_, r2_6), MIN_D2_);
+    let r2_11 = (radius * radius);
+    let d2_17 = max(max(dist2_, r2_11), MIN_D2_);
     let wi = select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_))), (dist2_ > 0f));
     let cos_w = dot(axis, wi);
     let _e28 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e32 = safe_sqrt((1f - (r2_6 / dist2_)));
-    let cos_b_2 = select(_e32, -1f, (dist2_ <= r2_6));
+    let _e32 = safe_sqrt((1f - (r2_11 / dist2_)));
+    let cos_b_2 = select(_e32, -1f, (dist2_ <= r2_11));
     let _e39 = safe_sqrt((1f - (cos_b_2 * cos_b_2)));
     let _e43 = safe_sqrt((1f - (cos_o * cos_o)));
     let _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -849,7 +853,7 @@ fn light_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, c
     if (_e46 <= cos_e) {
         return 0f;
     }
-    imp = ((phi * _e46) / d2_13);
+    imp = ((phi * _e46) / d2_17);
     if (dot(n_9, n_9) > 0f) {
         let cos_i = -(dot(wi, n_9));
         let _e60 = safe_sqrt((1f - (cos_i * cos_i)));
@@ -1180,6 +1184,41 @@ fn vpl_far_weight(d2_11: f32, near_r2_1: f32) -> f32 {
     return (1f - _e2);
 }
 
+fn vpl_far_slc_share(rt2_7: f32, r2_6: f32, d2_12: f32, near_r2_2: f32) -> f32 {
+    let _e4 = vpl_far_weight(d2_12, near_r2_2);
+    let _e5 = slc_weight(rt2_7, d2_12);
+    let _e7 = slc_keep(r2_6, d2_12);
+    return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
+}
+
+fn vpl_far_fixed_share(range2_2: f32, d2_13: f32, near_r2_3: f32) -> f32 {
+    let _e3 = vpl_far_weight(d2_13, near_r2_3);
+    let _e4 = clamp_keep(range2_2, d2_13);
+    return select(0f, _e3, (_e4 & (_e3 > 0f)));
+}
+
+fn vpl_near_range2_(r2_7: f32, period_6: u32) -> f32 {
+    let _e2 = interleave_flux_scale(period_6);
+    return (r2_7 / _e2);
+}
+
+fn vpl_near_cull_range2_(r2_8: f32, near_r2_4: f32) -> f32 {
+    return min(r2_8, near_r2_4);
+}
+
+fn vpl_near_slc_share(rt2_8: f32, r2_9: f32, d2_14: f32, near_r2_5: f32) -> f32 {
+    let _e4 = vpl_near_weight(d2_14, near_r2_5);
+    let _e5 = slc_weight(rt2_8, d2_14);
+    let _e7 = slc_keep(r2_9, d2_14);
+    return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
+}
+
+fn vpl_near_fixed_share(range2_3: f32, d2_15: f32, near_r2_6: f32) -> f32 {
+    let _e3 = vpl_near_weight(d2_15, near_r2_6);
+    let _e4 = clamp_keep(range2_3, d2_15);
+    return select(0f, _e3, (_e4 & (_e3 > 0f)));
+}
+
 fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_8: f32, h: f32) -> vec3<f32> {
     let sx = (((2f * px) / w_8) - 1f);
     let sy = (1f - ((2f * py) / h));
@@ -1266,9 +1305,9 @@ fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
 }
 
 fn point_irradiance(intensity_1: vec3<f32>, n_15: vec3<f32>, v_3: vec3<f32>) -> vec3<f32> {
-    let d2_14 = dot(v_3, v_3);
-    let cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
-    let _e11 = inverse_square(d2_14);
+    let d2_18 = dot(v_3, v_3);
+    let cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_18, MIN_D2_)));
+    let _e11 = inverse_square(d2_18);
     return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }
 
@@ -1365,6 +1404,11 @@ fn workgroup_box(li_1: u32, p_3: vec3<f32>, has: bool) -> WorkgroupBox {
     return WorkgroupBox(_e47, _e50);
 }
 
+fn near_r2_of(slot: u32) -> f32 {
+    let _e3 = r2_10[slot];
+    return _e3;
+}
+
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var local: bool;
@@ -1452,72 +1496,77 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                         }
                         {
                             let _e117 = m;
-                            let slot = near_slots[((b_9 * NEAR_BLOCK) + _e117)];
-                            let l_4 = lights[slot];
+                            let slot_1 = near_slots[((b_9 * NEAR_BLOCK) + _e117)];
+                            let l_4 = lights[slot_1];
+                            let _e124 = near_r2_of(slot_1);
+                            let _e127 = params.near_r2_;
+                            let _e128 = vpl_near_cull_range2_(_e124, _e127);
+                            let _e129 = cull_radius(_e128);
                             if any((l_4.intensity != vec3(0f))) {
-                                let _e132 = sphere_overlaps_aabb(l_4.p0_, _e59, lo_4, hi_4);
-                                local_4 = _e132;
+                                let _e138 = sphere_overlaps_aabb(l_4.p0_, _e129, lo_4, hi_4);
+                                local_4 = _e138;
                             } else {
                                 local_4 = false;
                             }
-                            let _e134 = local_4;
-                            if _e134 {
-                                let _e138 = atomicAdd((&light_count), 1u);
-                                light_list[_e138] = slot;
+                            let _e140 = local_4;
+                            if _e140 {
+                                let _e144 = atomicAdd((&light_count), 1u);
+                                light_list[_e144] = slot_1;
                             }
                         }
                         continuing {
-                            let _e141 = m;
-                            m = (_e141 + 1u);
+                            let _e147 = m;
+                            m = (_e147 + 1u);
                         }
                     }
                 }
             }
-            let _e144 = workgroupUniformLoad((&light_count));
+            let _e150 = workgroupUniformLoad((&light_count));
             if valid {
                 m_1 = 0u;
                 loop {
-                    let _e147 = m_1;
-                    if (_e147 < _e144) {
+                    let _e153 = m_1;
+                    if (_e153 < _e150) {
                     } else {
                         break;
                     }
                     {
-                        let _e151 = m_1;
-                        let _e153 = light_list[_e151];
-                        let l_5 = lights[_e153];
-                        let _e156 = pos;
-                        let v_13 = (_e156.xyz - l_5.p0_);
-                        let _e163 = params.near_r2_;
-                        let _e164 = vpl_near_weight(dot(v_13, v_13), _e163);
-                        if (_e164 > 0f) {
-                            let _e167 = e;
-                            let _e170 = nrm;
-                            let _e173 = params.min_d2_;
-                            let _e174 = vpl_transfer(l_5.p1_, _e170, v_13, _e173);
-                            e = (_e167 + (l_5.intensity * ((_e174 * _e164) * unscale)));
-                            let _e179 = kept;
-                            kept = (_e179 + 1u);
+                        let _e156 = m_1;
+                        let slot_2 = light_list[_e156];
+                        let l_5 = lights[slot_2];
+                        let _e162 = pos;
+                        let v_13 = (_e162.xyz - l_5.p0_);
+                        let _e168 = r2_10[slot_2];
+                        let _e172 = params.near_r2_;
+                        let _e173 = vpl_near_fixed_share(_e168, dot(v_13, v_13), _e172);
+                        if (_e173 > 0f) {
+                            let _e176 = e;
+                            let _e179 = nrm;
+                            let _e182 = params.min_d2_;
+                            let _e183 = vpl_transfer(l_5.p1_, _e179, v_13, _e182);
+                            e = (_e176 + (l_5.intensity * ((_e183 * _e173) * unscale)));
+                            let _e188 = kept;
+                            kept = (_e188 + 1u);
                         }
                     }
                     continuing {
-                        let _e183 = m_1;
-                        m_1 = (_e183 + 1u);
+                        let _e192 = m_1;
+                        m_1 = (_e192 + 1u);
                     }
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e185 = first;
-            first = (_e185 + NEAR_CHUNK);
+            let _e194 = first;
+            first = (_e194 + NEAR_CHUNK);
         }
     }
     if valid {
         let old = irradiance[pix];
-        let _e194 = e;
-        let _e197 = kept;
-        irradiance[pix] = vec4<f32>((old.xyz + _e194), (old.w + f32(_e197)));
+        let _e203 = e;
+        let _e206 = kept;
+        irradiance[pix] = vec4<f32>((old.xyz + _e203), (old.w + f32(_e206)));
         return;
     } else {
         return;

@@ -12,6 +12,8 @@ struct _mslBufferSizes {
     uint size7;
     uint size8;
     uint size9;
+    uint size10;
+    uint size11;
 };
 
 struct GpuLight {
@@ -569,10 +571,10 @@ float connection_cosine(
     bool local_6 = {};
     bool local_7 = {};
     metal::float3 v_8 = x_4 - y;
-    float d2_12 = metal::dot(v_8, v_8);
-    bool _e7 = slc_keep(r2_5, d2_12);
+    float d2_16 = metal::dot(v_8, v_8);
+    bool _e7 = slc_keep(r2_5, d2_16);
     if (!(!(_e7))) {
-        local_6 = !((d2_12 > 0.0));
+        local_6 = !((d2_16 > 0.0));
     } else {
         local_6 = true;
     }
@@ -580,7 +582,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_11 = v_8 / metal::float3(metal::sqrt(d2_12));
+    metal::float3 w_11 = v_8 / metal::float3(metal::sqrt(d2_16));
     float cos_x_1 = -(metal::dot(n, w_11));
     if (!((cos_x_1 <= 0.0))) {
         local_7 = metal::dot(ng, w_11) >= 0.0;
@@ -1050,13 +1052,13 @@ float light_importance(
     float imp = {};
     metal::float3 v_9 = p - center;
     float dist2_ = metal::dot(v_9, v_9);
-    float r2_6 = radius * radius;
-    float d2_13 = metal::max(metal::max(dist2_, r2_6), MIN_D2_);
+    float r2_11 = radius * radius;
+    float d2_17 = metal::max(metal::max(dist2_, r2_11), MIN_D2_);
     metal::float3 wi = (dist2_ > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e28 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e32 = safe_sqrt(1.0 - (r2_6 / dist2_));
-    float cos_b_2 = (dist2_ <= r2_6) ? -1.0 : _e32;
+    float _e32 = safe_sqrt(1.0 - (r2_11 / dist2_));
+    float cos_b_2 = (dist2_ <= r2_11) ? -1.0 : _e32;
     float _e39 = safe_sqrt(1.0 - (cos_b_2 * cos_b_2));
     float _e43 = safe_sqrt(1.0 - (cos_o * cos_o));
     float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -1065,7 +1067,7 @@ float light_importance(
     if (_e46 <= cos_e) {
         return 0.0;
     }
-    imp = (phi * _e46) / d2_13;
+    imp = (phi * _e46) / d2_17;
     if (metal::dot(n_9, n_9) > 0.0) {
         float cos_i = -(metal::dot(wi, n_9));
         float _e60 = safe_sqrt(1.0 - (cos_i * cos_i));
@@ -1543,6 +1545,65 @@ float vpl_far_weight(
     return 1.0 - _e2;
 }
 
+float vpl_far_slc_share(
+    float rt2_7,
+    float r2_6,
+    float d2_12,
+    float near_r2_2
+) {
+    float _e4 = vpl_far_weight(d2_12, near_r2_2);
+    float _e5 = slc_weight(rt2_7, d2_12);
+    bool _e7 = slc_keep(r2_6, d2_12);
+    return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
+}
+
+float vpl_far_fixed_share(
+    float range2_2,
+    float d2_13,
+    float near_r2_3
+) {
+    float _e3 = vpl_far_weight(d2_13, near_r2_3);
+    bool _e4 = clamp_keep(range2_2, d2_13);
+    return (_e4 & (_e3 > 0.0)) ? _e3 : 0.0;
+}
+
+float vpl_near_range2_(
+    float r2_7,
+    uint period_6
+) {
+    float _e2 = interleave_flux_scale(period_6);
+    return r2_7 / _e2;
+}
+
+float vpl_near_cull_range2_(
+    float r2_8,
+    float near_r2_4
+) {
+    return metal::min(r2_8, near_r2_4);
+}
+
+float vpl_near_slc_share(
+    float rt2_8,
+    float r2_9,
+    float d2_14,
+    float near_r2_5
+) {
+    float _e4 = vpl_near_weight(d2_14, near_r2_5);
+    float _e5 = slc_weight(rt2_8, d2_14);
+    bool _e7 = slc_keep(r2_9, d2_14);
+    return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
+}
+
+float vpl_near_fixed_share(
+    float range2_3,
+    float d2_15,
+    float near_r2_6
+) {
+    float _e3 = vpl_near_weight(d2_15, near_r2_6);
+    bool _e4 = clamp_keep(range2_3, d2_15);
+    return (_e4 & (_e3 > 0.0)) ? _e3 : 0.0;
+}
+
 metal::float3 camera_dir(
     metal::float3 forward,
     metal::float3 right,
@@ -1676,9 +1737,9 @@ metal::float3 point_irradiance(
     metal::float3 n_15,
     metal::float3 v_3
 ) {
-    float d2_14 = metal::dot(v_3, v_3);
-    float cos_x_2 = metal::dot(n_15, v_3) / metal::sqrt(metal::max(d2_14, MIN_D2_));
-    float _e11 = inverse_square(d2_14);
+    float d2_18 = metal::dot(v_3, v_3);
+    float cos_x_2 = metal::dot(n_15, v_3) / metal::sqrt(metal::max(d2_18, MIN_D2_));
+    float _e11 = inverse_square(d2_18);
     return intensity_1 * (metal::max(cos_x_2, 0.0) * _e11);
 }
 
@@ -1818,6 +1879,15 @@ WorkgroupBox workgroup_box(
     return WorkgroupBox {_e47, _e50};
 }
 
+float near_r2_of(
+    uint slot,
+    device type_4 const& r2_10,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = r2_10[slot];
+    return _e3;
+}
+
 struct main_Input {
 };
 kernel void main_(
@@ -1832,6 +1902,7 @@ kernel void main_(
 , device type_8 const& lights [[user(fake0)]]
 , device type_9 const& near_slots [[user(fake0)]]
 , device type_10 const& near_boxes [[user(fake0)]]
+, device type_4 const& r2_10 [[user(fake0)]]
 , device type_7& irradiance [[user(fake0)]]
 , threadgroup metal::atomic_uint& light_count
 , threadgroup type_12& light_list
@@ -1895,8 +1966,8 @@ kernel void main_(
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e185 = first;
-            first = _e185 + NEAR_CHUNK;
+            uint _e194 = first;
+            first = _e194 + NEAR_CHUNK;
         }
         loop_init_1 = false;
         uint _e71 = first;
@@ -1935,8 +2006,8 @@ kernel void main_(
                         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                         if (!loop_init_2) {
-                            uint _e141 = m;
-                            m = _e141 + 1u;
+                            uint _e147 = m;
+                            m = _e147 + 1u;
                         }
                         loop_init_2 = false;
                         uint _e111 = m;
@@ -1946,18 +2017,22 @@ kernel void main_(
                         }
                         {
                             uint _e117 = m;
-                            uint slot = near_slots[(b_9 * NEAR_BLOCK) + _e117];
-                            GpuLight l_4 = lights[slot];
+                            uint slot_1 = near_slots[(b_9 * NEAR_BLOCK) + _e117];
+                            GpuLight l_4 = lights[slot_1];
+                            float _e124 = near_r2_of(slot_1, r2_10, _buffer_sizes);
+                            float _e127 = params.near_r2_;
+                            float _e128 = vpl_near_cull_range2_(_e124, _e127);
+                            float _e129 = cull_radius(_e128);
                             if (metal::any(l_4.intensity != metal::float3(0.0))) {
-                                bool _e132 = sphere_overlaps_aabb(l_4.p0_, _e59, lo_4, hi_4);
-                                local_4 = _e132;
+                                bool _e138 = sphere_overlaps_aabb(l_4.p0_, _e129, lo_4, hi_4);
+                                local_4 = _e138;
                             } else {
                                 local_4 = false;
                             }
-                            bool _e134 = local_4;
-                            if (_e134) {
-                                uint _e138 = metal::atomic_fetch_add_explicit(&light_count, 1u, metal::memory_order_relaxed);
-                                light_list.inner[_e138] = slot;
+                            bool _e140 = local_4;
+                            if (_e140) {
+                                uint _e144 = metal::atomic_fetch_add_explicit(&light_count, 1u, metal::memory_order_relaxed);
+                                light_list.inner[_e144] = slot_1;
                             }
                         }
                     }
@@ -1974,31 +2049,32 @@ kernel void main_(
                     if (metal::all(loop_bound_4 == uint2(0u))) { break; }
                     loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e183 = m_1;
-                        m_1 = _e183 + 1u;
+                        uint _e192 = m_1;
+                        m_1 = _e192 + 1u;
                     }
                     loop_init_3 = false;
-                    uint _e147 = m_1;
-                    if (_e147 < unnamed) {
+                    uint _e153 = m_1;
+                    if (_e153 < unnamed) {
                     } else {
                         break;
                     }
                     {
-                        uint _e151 = m_1;
-                        uint _e153 = light_list.inner[_e151];
-                        GpuLight l_5 = lights[_e153];
-                        metal::float4 _e156 = pos;
-                        metal::float3 v_13 = _e156.xyz - l_5.p0_;
-                        float _e163 = params.near_r2_;
-                        float _e164 = vpl_near_weight(metal::dot(v_13, v_13), _e163);
-                        if (_e164 > 0.0) {
-                            metal::float3 _e167 = e;
-                            metal::float3 _e170 = nrm;
-                            float _e173 = params.min_d2_;
-                            float _e174 = vpl_transfer(l_5.p1_, _e170, v_13, _e173);
-                            e = _e167 + (l_5.intensity * ((_e174 * _e164) * unscale));
-                            uint _e179 = kept;
-                            kept = _e179 + 1u;
+                        uint _e156 = m_1;
+                        uint slot_2 = light_list.inner[_e156];
+                        GpuLight l_5 = lights[slot_2];
+                        metal::float4 _e162 = pos;
+                        metal::float3 v_13 = _e162.xyz - l_5.p0_;
+                        float _e168 = r2_10[slot_2];
+                        float _e172 = params.near_r2_;
+                        float _e173 = vpl_near_fixed_share(_e168, metal::dot(v_13, v_13), _e172);
+                        if (_e173 > 0.0) {
+                            metal::float3 _e176 = e;
+                            metal::float3 _e179 = nrm;
+                            float _e182 = params.min_d2_;
+                            float _e183 = vpl_transfer(l_5.p1_, _e179, v_13, _e182);
+                            e = _e176 + (l_5.intensity * ((_e183 * _e173) * unscale));
+                            uint _e188 = kept;
+                            kept = _e188 + 1u;
                         }
                     }
                 }
@@ -2008,9 +2084,9 @@ kernel void main_(
     }
     if (valid) {
         metal::float4 old = irradiance[pix];
-        metal::float3 _e194 = e;
-        uint _e197 = kept;
-        irradiance[pix] = metal::float4(old.xyz + _e194, old.w + static_cast<float>(_e197));
+        metal::float3 _e203 = e;
+        uint _e206 = kept;
+        irradiance[pix] = metal::float4(old.xyz + _e203, old.w + static_cast<float>(_e206));
         return;
     } else {
         return;

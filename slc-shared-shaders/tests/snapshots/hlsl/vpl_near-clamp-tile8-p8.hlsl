@@ -249,7 +249,9 @@ ByteAddressBuffer gb_normal : register(t2);
 ByteAddressBuffer lights : register(t3);
 ByteAddressBuffer near_slots : register(t4);
 ByteAddressBuffer near_boxes : register(t5);
-RWByteAddressBuffer irradiance : register(u6);
+ByteAddressBuffer rt2_9 : register(t6);
+ByteAddressBuffer r2_10 : register(t7);
+RWByteAddressBuffer irradiance : register(u8);
 groupshared uint light_count;
 groupshared uint light_list[2048];
 
@@ -506,10 +508,10 @@ float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
     bool local_7 = (bool)0;
 
     float3 v_8 = (x_4 - y);
-    float d2_12 = dot(v_8, v_8);
-    const bool _e7 = slc_keep(r2_5, d2_12);
+    float d2_16 = dot(v_8, v_8);
+    const bool _e7 = slc_keep(r2_5, d2_16);
     if (!(!(_e7))) {
-        local_6 = !((d2_12 > 0.0));
+        local_6 = !((d2_16 > 0.0));
     } else {
         local_6 = true;
     }
@@ -517,7 +519,7 @@ float connection_cosine(float3 x_4, float3 y, float3 n, float3 ng, float r2_5)
     if (_e16) {
         return 0.0;
     }
-    float3 w_11 = (v_8 / (sqrt(d2_12)).xxx);
+    float3 w_11 = (v_8 / (sqrt(d2_16)).xxx);
     float cos_x_1 = -(dot(n, w_11));
     if (!((cos_x_1 <= 0.0))) {
         local_7 = (dot(ng, w_11) >= 0.0);
@@ -894,13 +896,13 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
 
     float3 v_9 = (p - center_);
     float dist2_ = dot(v_9, v_9);
-    float r2_6 = (radius * radius);
-    float d2_13 = max(max(dist2_, r2_6), MIN_D2_);
+    float r2_11 = (radius * radius);
+    float d2_17 = max(max(dist2_, r2_11), MIN_D2_);
     float3 wi = ((dist2_ > 0.0) ? (v_9 / (sqrt(dist2_)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e32 = safe_sqrt((1.0 - (r2_6 / dist2_)));
-    float cos_b_2 = ((dist2_ <= r2_6) ? -1.0 : _e32);
+    const float _e32 = safe_sqrt((1.0 - (r2_11 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_11) ? -1.0 : _e32);
     const float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
     const float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
     const float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -909,7 +911,7 @@ float light_importance(float3 center_, float radius, float phi, float3 axis, flo
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_13);
+    imp = ((phi * _e46) / d2_17);
     if ((dot(n_9, n_9) > 0.0)) {
         float cos_i = -(dot(wi, n_9));
         const float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -1286,6 +1288,47 @@ float vpl_far_weight(float d2_11, float near_r2_1)
     return (1.0 - _e2);
 }
 
+float vpl_far_slc_share(float rt2_7, float r2_6, float d2_12, float near_r2_2)
+{
+    const float _e4 = vpl_far_weight(d2_12, near_r2_2);
+    const float _e5 = slc_weight(rt2_7, d2_12);
+    const bool _e7 = slc_keep(r2_6, d2_12);
+    return ((_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+float vpl_far_fixed_share(float range2_2, float d2_13, float near_r2_3)
+{
+    const float _e3 = vpl_far_weight(d2_13, near_r2_3);
+    const bool _e4 = clamp_keep(range2_2, d2_13);
+    return ((_e4 & (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
+float vpl_near_range2_(float r2_7, uint period_6)
+{
+    const float _e2 = interleave_flux_scale(period_6);
+    return (r2_7 / _e2);
+}
+
+float vpl_near_cull_range2_(float r2_8, float near_r2_4)
+{
+    return min(r2_8, near_r2_4);
+}
+
+float vpl_near_slc_share(float rt2_8, float r2_9, float d2_14, float near_r2_5)
+{
+    const float _e4 = vpl_near_weight(d2_14, near_r2_5);
+    const float _e5 = slc_weight(rt2_8, d2_14);
+    const bool _e7 = slc_keep(r2_9, d2_14);
+    return ((_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+float vpl_near_fixed_share(float range2_3, float d2_15, float near_r2_6)
+{
+    const float _e3 = vpl_near_weight(d2_15, near_r2_6);
+    const bool _e4 = clamp_keep(range2_3, d2_15);
+    return ((_e4 & (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
 float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, float w_8, float h)
 {
     float sx = (((2.0 * px) / w_8) - 1.0);
@@ -1386,9 +1429,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis)
 
 float3 point_irradiance(float3 intensity_1, float3 n_15, float3 v_3)
 {
-    float d2_14 = dot(v_3, v_3);
-    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
-    const float _e11 = inverse_square(d2_14);
+    float d2_18 = dot(v_3, v_3);
+    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_18, MIN_D2_)));
+    const float _e11 = inverse_square(d2_18);
     return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
@@ -1509,6 +1552,12 @@ WorkgroupBox workgroup_box(uint li_1, float3 p_3, bool has)
     return workgroupbox;
 }
 
+float near_r2_of(uint slot)
+{
+    float _e3 = asfloat(r2_10.Load(slot*4));
+    return _e3;
+}
+
 GpuNearBox ConstructGpuNearBox(float3 arg0, float arg1, float3 arg2, float arg3) {
     GpuNearBox ret = (GpuNearBox)0;
     ret.lo = arg0;
@@ -1593,8 +1642,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e185 = first;
-            first = (_e185 + NEAR_CHUNK);
+            uint _e194 = first;
+            first = (_e194 + NEAR_CHUNK);
         }
         loop_init_1 = false;
         uint _e71 = first;
@@ -1633,8 +1682,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                         if (!loop_init_2) {
-                            uint _e141 = m;
-                            m = (_e141 + 1u);
+                            uint _e147 = m;
+                            m = (_e147 + 1u);
                         }
                         loop_init_2 = false;
                         uint _e111 = m;
@@ -1644,25 +1693,29 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         }
                         {
                             uint _e117 = m;
-                            uint slot = asuint(near_slots.Load(((b_9 * NEAR_BLOCK) + _e117)*4));
-                            GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(slot*64+0)), asuint(lights.Load(slot*64+12)), asfloat(lights.Load3(slot*64+16)), asfloat(lights.Load(slot*64+28)), asfloat(lights.Load3(slot*64+32)), asfloat(lights.Load(slot*64+44)), asfloat(lights.Load3(slot*64+48)), asuint(lights.Load(slot*64+60)));
+                            uint slot_1 = asuint(near_slots.Load(((b_9 * NEAR_BLOCK) + _e117)*4));
+                            GpuLight l_4 = ConstructGpuLight(asfloat(lights.Load3(slot_1*64+0)), asuint(lights.Load(slot_1*64+12)), asfloat(lights.Load3(slot_1*64+16)), asfloat(lights.Load(slot_1*64+28)), asfloat(lights.Load3(slot_1*64+32)), asfloat(lights.Load(slot_1*64+44)), asfloat(lights.Load3(slot_1*64+48)), asuint(lights.Load(slot_1*64+60)));
+                            const float _e124 = near_r2_of(slot_1);
+                            float _e127 = params.near_r2_;
+                            const float _e128 = vpl_near_cull_range2_(_e124, _e127);
+                            const float _e129 = cull_radius(_e128);
                             if (any((l_4.intensity != (0.0).xxx))) {
-                                const bool _e132 = sphere_overlaps_aabb(l_4.p0_, _e59, lo_4, hi_4);
-                                local_4 = _e132;
+                                const bool _e138 = sphere_overlaps_aabb(l_4.p0_, _e129, lo_4, hi_4);
+                                local_4 = _e138;
                             } else {
                                 local_4 = false;
                             }
-                            bool _e134 = local_4;
-                            if (_e134) {
-                                uint _e138; InterlockedAdd(light_count, 1u, _e138);
-                                light_list[min(uint(_e138), 2047u)] = slot;
+                            bool _e140 = local_4;
+                            if (_e140) {
+                                uint _e144; InterlockedAdd(light_count, 1u, _e144);
+                                light_list[min(uint(_e144), 2047u)] = slot_1;
                             }
                         }
                     }
                 }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e144 = light_count;
+            uint _e150 = light_count;
             GroupMemoryBarrierWithGroupSync();
             if (valid) {
                 m_1 = 0u;
@@ -1672,31 +1725,32 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
                     loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e183 = m_1;
-                        m_1 = (_e183 + 1u);
+                        uint _e192 = m_1;
+                        m_1 = (_e192 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e147 = m_1;
-                    if ((_e147 < _e144)) {
+                    uint _e153 = m_1;
+                    if ((_e153 < _e150)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e151 = m_1;
-                        uint _e153 = light_list[min(uint(_e151), 2047u)];
-                        GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(_e153*64+0)), asuint(lights.Load(_e153*64+12)), asfloat(lights.Load3(_e153*64+16)), asfloat(lights.Load(_e153*64+28)), asfloat(lights.Load3(_e153*64+32)), asfloat(lights.Load(_e153*64+44)), asfloat(lights.Load3(_e153*64+48)), asuint(lights.Load(_e153*64+60)));
-                        float4 _e156 = pos;
-                        float3 v_13 = (_e156.xyz - l_5.p0_);
-                        float _e163 = params.near_r2_;
-                        const float _e164 = vpl_near_weight(dot(v_13, v_13), _e163);
-                        if ((_e164 > 0.0)) {
-                            float3 _e167 = e;
-                            float3 _e170 = nrm;
-                            float _e173 = params.min_d2_;
-                            const float _e174 = vpl_transfer(l_5.p1_, _e170, v_13, _e173);
-                            e = (_e167 + (l_5.intensity * ((_e174 * _e164) * unscale)));
-                            uint _e179 = kept;
-                            kept = (_e179 + 1u);
+                        uint _e156 = m_1;
+                        uint slot_2 = light_list[min(uint(_e156), 2047u)];
+                        GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(slot_2*64+0)), asuint(lights.Load(slot_2*64+12)), asfloat(lights.Load3(slot_2*64+16)), asfloat(lights.Load(slot_2*64+28)), asfloat(lights.Load3(slot_2*64+32)), asfloat(lights.Load(slot_2*64+44)), asfloat(lights.Load3(slot_2*64+48)), asuint(lights.Load(slot_2*64+60)));
+                        float4 _e162 = pos;
+                        float3 v_13 = (_e162.xyz - l_5.p0_);
+                        float _e168 = asfloat(r2_10.Load(slot_2*4));
+                        float _e172 = params.near_r2_;
+                        const float _e173 = vpl_near_fixed_share(_e168, dot(v_13, v_13), _e172);
+                        if ((_e173 > 0.0)) {
+                            float3 _e176 = e;
+                            float3 _e179 = nrm;
+                            float _e182 = params.min_d2_;
+                            const float _e183 = vpl_transfer(l_5.p1_, _e179, v_13, _e182);
+                            e = (_e176 + (l_5.intensity * ((_e183 * _e173) * unscale)));
+                            uint _e188 = kept;
+                            kept = (_e188 + 1u);
                         }
                     }
                 }
@@ -1706,9 +1760,9 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     }
     if (valid) {
         float4 old = asfloat(irradiance.Load4(pix*16));
-        float3 _e194 = e;
-        uint _e197 = kept;
-        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e194), (old.w + float(_e197)))));
+        float3 _e203 = e;
+        uint _e206 = kept;
+        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e203), (old.w + float(_e206)))));
         return;
     } else {
         return;

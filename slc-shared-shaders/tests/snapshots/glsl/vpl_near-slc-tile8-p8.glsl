@@ -238,7 +238,11 @@ layout(std430) readonly buffer type_9_block_4Compute { uint _group_0_binding_4_c
 
 layout(std430) readonly buffer type_10_block_5Compute { GpuNearBox _group_0_binding_5_cs[]; };
 
-layout(std430) buffer type_7_block_6Compute { vec4 _group_0_binding_6_cs[]; };
+layout(std430) readonly buffer type_4_block_6Compute { float _group_0_binding_6_cs[]; };
+
+layout(std430) readonly buffer type_4_block_7Compute { float _group_0_binding_7_cs[]; };
+
+layout(std430) buffer type_7_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
 shared uint light_count;
 
@@ -455,10 +459,10 @@ float connection_cosine(vec3 x_4, vec3 y, vec3 n, vec3 ng, float r2_5) {
     bool local_6 = false;
     bool local_7 = false;
     vec3 v_8 = (x_4 - y);
-    float d2_12 = dot(v_8, v_8);
-    bool _e7 = slc_keep(r2_5, d2_12);
+    float d2_16 = dot(v_8, v_8);
+    bool _e7 = slc_keep(r2_5, d2_16);
     if (!(!(_e7))) {
-        local_6 = !((d2_12 > 0.0));
+        local_6 = !((d2_16 > 0.0));
     } else {
         local_6 = true;
     }
@@ -466,7 +470,7 @@ float connection_cosine(vec3 x_4, vec3 y, vec3 n, vec3 ng, float r2_5) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_11 = (v_8 / vec3(sqrt(d2_12)));
+    vec3 w_11 = (v_8 / vec3(sqrt(d2_16)));
     float cos_x_1 = -(dot(n, w_11));
     if (!((cos_x_1 <= 0.0))) {
         local_7 = (dot(ng, w_11) >= 0.0);
@@ -718,13 +722,13 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     float imp = 0.0;
     vec3 v_9 = (p - center);
     float dist2_ = dot(v_9, v_9);
-    float r2_6 = (radius * radius);
-    float d2_13 = max(max(dist2_, r2_6), MIN_D2_);
+    float r2_11 = (radius * radius);
+    float d2_17 = max(max(dist2_, r2_11), MIN_D2_);
     vec3 wi = ((dist2_ > 0.0) ? (v_9 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    float _e32 = safe_sqrt((1.0 - (r2_6 / dist2_)));
-    float cos_b_2 = ((dist2_ <= r2_6) ? -1.0 : _e32);
+    float _e32 = safe_sqrt((1.0 - (r2_11 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_11) ? -1.0 : _e32);
     float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
     float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
     float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
@@ -733,7 +737,7 @@ float light_importance(vec3 center, float radius, float phi, vec3 axis, float co
     if ((_e46 <= cos_e)) {
         return 0.0;
     }
-    imp = ((phi * _e46) / d2_13);
+    imp = ((phi * _e46) / d2_17);
     if ((dot(n_9, n_9) > 0.0)) {
         float cos_i = -(dot(wi, n_9));
         float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
@@ -1060,6 +1064,41 @@ float vpl_far_weight(float d2_11, float near_r2_1) {
     return (1.0 - _e2);
 }
 
+float vpl_far_slc_share(float rt2_7, float r2_6, float d2_12, float near_r2_2) {
+    float _e4 = vpl_far_weight(d2_12, near_r2_2);
+    float _e5 = slc_weight(rt2_7, d2_12);
+    bool _e7 = slc_keep(r2_6, d2_12);
+    return ((_e7 && (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+float vpl_far_fixed_share(float range2_2, float d2_13, float near_r2_3) {
+    float _e3 = vpl_far_weight(d2_13, near_r2_3);
+    bool _e4 = clamp_keep(range2_2, d2_13);
+    return ((_e4 && (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
+float vpl_near_range2_(float r2_7, uint period_6) {
+    float _e2 = interleave_flux_scale(period_6);
+    return (r2_7 / _e2);
+}
+
+float vpl_near_cull_range2_(float r2_8, float near_r2_4) {
+    return min(r2_8, near_r2_4);
+}
+
+float vpl_near_slc_share(float rt2_8, float r2_9, float d2_14, float near_r2_5) {
+    float _e4 = vpl_near_weight(d2_14, near_r2_5);
+    float _e5 = slc_weight(rt2_8, d2_14);
+    bool _e7 = slc_keep(r2_9, d2_14);
+    return ((_e7 && (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+float vpl_near_fixed_share(float range2_3, float d2_15, float near_r2_6) {
+    float _e3 = vpl_near_weight(d2_15, near_r2_6);
+    bool _e4 = clamp_keep(range2_3, d2_15);
+    return ((_e4 && (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
 vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_8, float h) {
     float sx = (((2.0 * px) / w_8) - 1.0);
     float sy = (1.0 - ((2.0 * py) / h));
@@ -1144,9 +1183,9 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis) {
 }
 
 vec3 point_irradiance(vec3 intensity_1, vec3 n_15, vec3 v_3) {
-    float d2_14 = dot(v_3, v_3);
-    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_14, MIN_D2_)));
-    float _e11 = inverse_square(d2_14);
+    float d2_18 = dot(v_3, v_3);
+    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_18, MIN_D2_)));
+    float _e11 = inverse_square(d2_18);
     return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
 }
 
@@ -1245,6 +1284,12 @@ WorkgroupBox workgroup_box(uint li_1, vec3 p_3, bool has) {
     return WorkgroupBox(_e47, _e50);
 }
 
+float near_r2_of(uint slot) {
+    float _e3 = _group_0_binding_7_cs[slot];
+    float _e5 = vpl_near_range2_(_e3, P);
+    return _e5;
+}
+
 void main() {
     if (gl_LocalInvocationID == uvec3(0u)) {
         wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
@@ -1305,8 +1350,8 @@ void main() {
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e185 = first;
-            first = (_e185 + NEAR_CHUNK);
+            uint _e197 = first;
+            first = (_e197 + NEAR_CHUNK);
         }
         loop_init_1 = false;
         uint _e71 = first;
@@ -1343,8 +1388,8 @@ void main() {
                     bool loop_init_2 = true;
                     while(true) {
                         if (!loop_init_2) {
-                            uint _e141 = m;
-                            m = (_e141 + 1u);
+                            uint _e147 = m;
+                            m = (_e147 + 1u);
                         }
                         loop_init_2 = false;
                         uint _e111 = m;
@@ -1354,18 +1399,22 @@ void main() {
                         }
                         {
                             uint _e117 = m;
-                            uint slot = _group_0_binding_4_cs[((b_8 * NEAR_BLOCK) + _e117)];
-                            GpuLight l_4 = _group_0_binding_3_cs[slot];
+                            uint slot_1 = _group_0_binding_4_cs[((b_8 * NEAR_BLOCK) + _e117)];
+                            GpuLight l_4 = _group_0_binding_3_cs[slot_1];
+                            float _e124 = near_r2_of(slot_1);
+                            float _e127 = _group_0_binding_0_cs.near_r2_;
+                            float _e128 = vpl_near_cull_range2_(_e124, _e127);
+                            float _e129 = cull_radius(_e128);
                             if (any(notEqual(l_4.intensity, vec3(0.0)))) {
-                                bool _e132 = sphere_overlaps_aabb(l_4.p0_, _e59, lo_4, hi_4);
-                                local_4 = _e132;
+                                bool _e138 = sphere_overlaps_aabb(l_4.p0_, _e129, lo_4, hi_4);
+                                local_4 = _e138;
                             } else {
                                 local_4 = false;
                             }
-                            bool _e134 = local_4;
-                            if (_e134) {
-                                uint _e138 = atomicAdd(light_count, 1u);
-                                light_list[_e138] = slot;
+                            bool _e140 = local_4;
+                            if (_e140) {
+                                uint _e144 = atomicAdd(light_count, 1u);
+                                light_list[_e144] = slot_1;
                             }
                         }
                     }
@@ -1373,7 +1422,7 @@ void main() {
             }
             memoryBarrierShared();
             barrier();
-            uint _e144 = light_count;
+            uint _e150 = light_count;
             memoryBarrierShared();
             barrier();
             if (valid) {
@@ -1381,31 +1430,34 @@ void main() {
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e183 = m_1;
-                        m_1 = (_e183 + 1u);
+                        uint _e195 = m_1;
+                        m_1 = (_e195 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e147 = m_1;
-                    if ((_e147 < _e144)) {
+                    uint _e153 = m_1;
+                    if ((_e153 < _e150)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e151 = m_1;
-                        uint _e153 = light_list[_e151];
-                        GpuLight l_5 = _group_0_binding_3_cs[_e153];
-                        vec4 _e156 = pos;
-                        vec3 v_13 = (_e156.xyz - l_5.p0_);
-                        float _e163 = _group_0_binding_0_cs.near_r2_;
-                        float _e164 = vpl_near_weight(dot(v_13, v_13), _e163);
-                        if ((_e164 > 0.0)) {
-                            vec3 _e167 = e;
-                            vec3 _e170 = nrm;
-                            float _e173 = _group_0_binding_0_cs.min_d2_;
-                            float _e174 = vpl_transfer(l_5.p1_, _e170, v_13, _e173);
-                            e = (_e167 + (l_5.intensity * ((_e174 * _e164) * unscale)));
-                            uint _e179 = kept;
-                            kept = (_e179 + 1u);
+                        uint _e156 = m_1;
+                        uint slot_2 = light_list[_e156];
+                        GpuLight l_5 = _group_0_binding_3_cs[slot_2];
+                        vec4 _e162 = pos;
+                        vec3 v_13 = (_e162.xyz - l_5.p0_);
+                        float _e168 = _group_0_binding_6_cs[slot_2];
+                        float _e170 = vpl_near_range2_(_e168, P);
+                        float _e171 = near_r2_of(slot_2);
+                        float _e175 = _group_0_binding_0_cs.near_r2_;
+                        float _e176 = vpl_near_slc_share(_e170, _e171, dot(v_13, v_13), _e175);
+                        if ((_e176 > 0.0)) {
+                            vec3 _e179 = e;
+                            vec3 _e182 = nrm;
+                            float _e185 = _group_0_binding_0_cs.min_d2_;
+                            float _e186 = vpl_transfer(l_5.p1_, _e182, v_13, _e185);
+                            e = (_e179 + (l_5.intensity * ((_e186 * _e176) * unscale)));
+                            uint _e191 = kept;
+                            kept = (_e191 + 1u);
                         }
                     }
                 }
@@ -1415,10 +1467,10 @@ void main() {
         }
     }
     if (valid) {
-        vec4 old = _group_0_binding_6_cs[pix];
-        vec3 _e194 = e;
-        uint _e197 = kept;
-        _group_0_binding_6_cs[pix] = vec4((old.xyz + _e194), (old.w + float(_e197)));
+        vec4 old = _group_0_binding_8_cs[pix];
+        vec3 _e206 = e;
+        uint _e209 = kept;
+        _group_0_binding_8_cs[pix] = vec4((old.xyz + _e206), (old.w + float(_e209)));
         return;
     } else {
         return;

@@ -1,0 +1,1474 @@
+#version 430 core
+#extension GL_ARB_compute_shader : require
+#extension GL_ARB_shader_storage_buffer_object : require
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+struct GpuLight {
+    vec3 p0_;
+    uint kind;
+    vec3 p1_;
+    float a;
+    vec3 p2_;
+    float b;
+    vec3 intensity;
+    uint ies_base;
+};
+struct GpuLightCone {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
+struct GpuGeoNode {
+    vec3 bmin;
+    uint first;
+    vec3 bmax;
+    uint count;
+};
+struct GpuTriangle {
+    vec3 v0_;
+    uint material;
+    vec3 v1_;
+    uint light;
+    vec3 v2_;
+    uint pad;
+};
+struct GpuPathVertex {
+    vec3 position;
+    uint alive;
+    vec3 normal;
+    float pad;
+    vec3 weight;
+    float pad1_;
+    vec3 gnormal;
+    float pad2_;
+};
+struct GpuPathState {
+    vec3 origin;
+    uint alive;
+    vec3 dir;
+    uint rng;
+    vec3 beta;
+    float pdf_bsdf;
+    vec3 prev;
+    uint pad;
+    vec3 prev_normal;
+    uint pad2_;
+};
+struct PtParams {
+    vec3 cam_pos;
+    uint width;
+    vec3 cam_right;
+    uint height;
+    vec3 cam_up;
+    uint depth;
+    vec3 cam_forward;
+    uint seed;
+    uint pass_index;
+    uint max_depth;
+    float eps;
+    float t_min;
+};
+struct FrameParams {
+    uint light_count;
+    uint seed;
+    uint frame;
+    uint pad;
+};
+struct RefitParams {
+    uint first;
+    uint count;
+    uint pad0_;
+    uint pad1_;
+};
+struct VplParams {
+    uint width;
+    uint height;
+    uint lights_per_subset;
+    float min_d2_;
+    float near_r2_;
+    uint near_blocks;
+    uint pad0_;
+    uint pad1_;
+};
+struct GpuNearBox {
+    vec3 lo;
+    float pad0_;
+    vec3 hi;
+    float pad1_;
+};
+struct GpuVplRecord {
+    vec3 position;
+    float pad0_;
+    vec3 normal;
+    float pad1_;
+    vec3 flux;
+    float pad2_;
+};
+struct PackParams {
+    uint count;
+    uint size;
+    uint per_subset;
+    uint mode;
+    float exposure;
+    float error_bound;
+    float scale;
+    uint slc;
+    float fixed_r2_;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+struct ImageParams {
+    vec3 eye;
+    uint width;
+    uint height;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+struct GpuVertex {
+    vec3 position;
+    uint material;
+    vec3 normal;
+    uint pad0_;
+    vec3 geo_normal;
+    uint pad1_;
+};
+struct GpuMaterial {
+    vec3 albedo;
+    uint pad0_;
+    vec3 emission;
+    uint pad1_;
+};
+struct MapParams {
+    vec4 c0_;
+    vec4 c1_;
+    vec4 c2_;
+    vec4 c3_;
+    GpuLight light;
+    vec3 origin;
+    uint mode;
+    vec3 axis;
+    uint size;
+    vec3 right;
+    float extent;
+    vec3 up;
+    float texel;
+};
+struct ShadeParams {
+    uint point_count;
+    uint seed;
+    uint frame;
+    float eps;
+};
+struct BshNode {
+    vec3 center;
+    float radius;
+    uint child;
+    uint next;
+    uint light;
+    uint pad;
+};
+struct GpuLightBvhNode {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint second;
+    uint light;
+};
+struct WorkgroupBox {
+    vec3 lo;
+    vec3 hi;
+};
+const uint LIGHT_POINT = 0u;
+const uint LIGHT_SPOT = 1u;
+const uint LIGHT_IES = 2u;
+const uint LIGHT_TRIANGLE = 3u;
+const uint LIGHT_VPL = 4u;
+const uint NO_LIGHT = 4294967295u;
+const uint MAP_CAMERA = 0u;
+const uint MAP_PERSPECTIVE = 1u;
+const uint MAP_ORTHOGRAPHIC = 2u;
+const float XI_STEP = 5.9604645e-8;
+const uint PICK_STREAM = 2654435769u;
+const float TWO_PI = 6.2831855;
+const float CULL_RADIUS_SCALE = 1.000001;
+const float SPHERE_PAD = 4.7683716e-7;
+const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
+const float INV_PI = 0.31830987;
+const float MIN_D2_ = 1e-12;
+const uint BSH_NONE = 4294967295u;
+const uint RESERVOIR_FULL = 4294967295u;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
+const float F32_MAX = 3.4028235e38;
+const float DEPTH_NONE = 1e30;
+const float DEPTH_SIGMA = 0.05;
+const float COVER_WEIGHT = 0.1;
+const uint NEAR_BLOCK = 64u;
+const uint ROULETTE_DEPTH = 2u;
+const uint P = 8u;
+const uint TILE = 8u;
+const uint THREADS = 64u;
+const uint BOX_THREADS = 64u;
+const uint NEAR_CHUNK = 32u;
+
+shared vec3 wg_lo[64];
+
+shared vec3 wg_hi[64];
+
+layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
+
+layout(std430) readonly buffer type_7_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+
+layout(std430) readonly buffer type_7_block_2Compute { vec4 _group_0_binding_2_cs[]; };
+
+layout(std430) readonly buffer type_8_block_3Compute { GpuLight _group_0_binding_3_cs[]; };
+
+layout(std430) readonly buffer type_9_block_4Compute { uint _group_0_binding_4_cs[]; };
+
+layout(std430) readonly buffer type_10_block_5Compute { GpuNearBox _group_0_binding_5_cs[]; };
+
+layout(std430) readonly buffer type_4_block_6Compute { float _group_0_binding_7_cs[]; };
+
+layout(std430) buffer type_7_block_7Compute { vec4 _group_0_binding_8_cs[]; };
+
+shared uint light_count;
+
+shared uint light_list[2048];
+
+
+float to_f32_(uint u) {
+    return float(u);
+}
+
+uint to_u32_(float x) {
+    return uint(x);
+}
+
+uint mul_lo_u32_(uint a, uint b) {
+    return (a * b);
+}
+
+uint add_wrap_u32_(uint a_1, uint b_1) {
+    return (a_1 + b_1);
+}
+
+float xi_from_bits(uint bits) {
+    float _e3 = to_f32_((bits >> 8u));
+    return (_e3 * XI_STEP);
+}
+
+uint pcg_hash(uint x_1) {
+    uint _e2 = mul_lo_u32_(x_1, 747796405u);
+    uint _e4 = add_wrap_u32_(_e2, 2891336453u);
+    uint _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
+    return ((_e12 >> 22u) ^ _e12);
+}
+
+uint reverse_bits(uint x_2) {
+    uint v = 0u;
+    v = (((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u));
+    uint _e11 = v;
+    uint _e16 = v;
+    v = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
+    uint _e22 = v;
+    uint _e27 = v;
+    v = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
+    uint _e33 = v;
+    uint _e38 = v;
+    v = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
+    uint _e44 = v;
+    uint _e49 = v;
+    v = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
+    uint _e55 = v;
+    return _e55;
+}
+
+float xi_for(uint seed, uint frame, uint light) {
+    uint _e3 = pcg_hash(seed);
+    uint _e4 = pcg_hash(_e3);
+    uint _e6 = pcg_hash((_e4 ^ light));
+    uint _e7 = reverse_bits(frame);
+    uint _e8 = add_wrap_u32_(_e6, _e7);
+    float _e9 = xi_from_bits(_e8);
+    return _e9;
+}
+
+uint point_stream(uint seed_1, uint point, uint frame_1) {
+    uint _e3 = pcg_hash(frame_1);
+    uint _e5 = pcg_hash((point ^ _e3));
+    uint _e7 = pcg_hash((seed_1 ^ _e5));
+    return _e7;
+}
+
+uint pick_stream(uint stream) {
+    uint _e3 = pcg_hash((stream ^ PICK_STREAM));
+    return _e3;
+}
+
+uint path_stream(uint seed_2, uint pixel, uint pass_index) {
+    uint _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
+    uint _e5 = point_stream(seed_2, pixel, _e4);
+    return _e5;
+}
+
+float rr_probability(float rt2_, float d2_) {
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (rt2_ / d2_);
+}
+
+float slc_weight(float rt2_1, float d2_1) {
+    if ((d2_1 <= rt2_1)) {
+        return 1.0;
+    }
+    return (d2_1 / rt2_1);
+}
+
+float random_range2_(float rt2_2, float xi) {
+    return (rt2_2 / (1.0 - xi));
+}
+
+bool slc_keep(float r2_, float d2_2) {
+    return (d2_2 < r2_);
+}
+
+bool clamp_keep(float range2_, float d2_3) {
+    return (d2_3 < range2_);
+}
+
+float threshold_range2_(float intensity, float exposure, float error_bound) {
+    if ((intensity <= 0.0)) {
+        return 0.0;
+    }
+    return (((exposure / error_bound) * intensity) / TWO_PI);
+}
+
+float intensity_measure(vec3 rgb, uint mode) {
+    if ((mode == 1u)) {
+        return (((rgb.x + rgb.y) + rgb.z) / 3.0);
+    }
+    return max(rgb.x, max(rgb.y, rgb.z));
+}
+
+float cull_radius(float r2_1) {
+    return (sqrt(r2_1) * CULL_RADIUS_SCALE);
+}
+
+float windowed_falloff(float d2_4, float range2_1) {
+    float q_2 = (d2_4 / range2_1);
+    float w_10 = clamp((1.0 - (q_2 * q_2)), 0.0, 1.0);
+    return ((w_10 * w_10) / max(d2_4, 0.0001));
+}
+
+bool sphere_contains_point(vec3 c, float r, vec3 x_3) {
+    vec3 v_4 = (x_3 - c);
+    return (dot(v_4, v_4) <= (r * r));
+}
+
+bool sphere_overlaps_sphere(vec3 c1_, float r1_, vec3 c2_, float r2_2) {
+    vec3 v_5 = (c2_ - c1_);
+    float r_3 = (r1_ + r2_2);
+    return (dot(v_5, v_5) <= (r_3 * r_3));
+}
+
+float sphere_pad(float r_1, vec3 c_1) {
+    return (((r_1 + max(abs(c_1.x), max(abs(c_1.y), abs(c_1.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
+}
+
+vec4 sphere_union(vec3 c1_1, float r1_1, vec3 c2_1, float r2_3) {
+    bool local_5 = false;
+    vec3 v_6 = (c2_1 - c1_1);
+    float d_4 = sqrt(dot(v_6, v_6));
+    float _e8 = sphere_pad(r1_1, c1_1);
+    if ((r1_1 >= ((d_4 + r2_3) + _e8))) {
+        return vec4(c1_1.x, c1_1.y, c1_1.z, r1_1);
+    }
+    float _e16 = sphere_pad(r2_3, c2_1);
+    if ((r2_3 >= ((d_4 + r1_1) + _e16))) {
+        return vec4(c2_1.x, c2_1.y, c2_1.z, r2_3);
+    }
+    if (!((d_4 >= SPHERE_HUGE))) {
+        local_5 = ((0.5 * ((d_4 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    } else {
+        local_5 = true;
+    }
+    bool _e35 = local_5;
+    if (_e35) {
+        return vec4(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
+    }
+    if ((abs((r1_1 - r2_3)) >= d_4)) {
+        if ((r1_1 >= r2_3)) {
+            float rn = max(r1_1, (d_4 + r2_3));
+            float _e50 = sphere_pad(rn, c1_1);
+            return vec4(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
+        }
+        float rm = max(r2_3, (d_4 + r1_1));
+        float _e58 = sphere_pad(rm, c2_1);
+        return vec4(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
+    }
+    float r0_ = (0.5 * ((d_4 + r1_1) + r2_3));
+    vec3 c_9 = (c1_1 + (v_6 * ((r0_ - r1_1) / d_4)));
+    vec3 e1_ = (c_9 - c1_1);
+    vec3 e2_ = (c_9 - c2_1);
+    float r_4 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
+    float _e82 = sphere_pad(r_4, c_9);
+    return vec4(c_9.x, c_9.y, c_9.z, (r_4 + _e82));
+}
+
+bool sphere_overlaps_aabb(vec3 c_2, float r_2, vec3 bmin, vec3 bmax) {
+    vec3 q_3 = clamp(c_2, bmin, bmax);
+    vec3 v_7 = (q_3 - c_2);
+    return (dot(v_7, v_7) <= (r_2 * r_2));
+}
+
+float vpl_rt2_(vec3 flux, float exposure_1, float error_bound_1, uint mode_1) {
+    float _e6 = intensity_measure((flux * INV_PI), mode_1);
+    float _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
+    return _e7;
+}
+
+float range_radius(float extent, float r2_4) {
+    return (extent + sqrt(r2_4));
+}
+
+float inverse_square(float d2_5) {
+    return (1.0 / max(d2_5, MIN_D2_));
+}
+
+float connection_factor(float cos_x, float d2_6, float rt2_3, float w) {
+    float _e4 = inverse_square(d2_6);
+    float _e6 = slc_weight(rt2_3, d2_6);
+    return (((cos_x * _e4) * _e6) * w);
+}
+
+float connection_cosine(vec3 x_4, vec3 y, vec3 n, vec3 ng, float r2_5) {
+    bool local_6 = false;
+    bool local_7 = false;
+    vec3 v_8 = (x_4 - y);
+    float d2_16 = dot(v_8, v_8);
+    bool _e7 = slc_keep(r2_5, d2_16);
+    if (!(!(_e7))) {
+        local_6 = !((d2_16 > 0.0));
+    } else {
+        local_6 = true;
+    }
+    bool _e16 = local_6;
+    if (_e16) {
+        return 0.0;
+    }
+    vec3 w_11 = (v_8 / vec3(sqrt(d2_16)));
+    float cos_x_1 = -(dot(n, w_11));
+    if (!((cos_x_1 <= 0.0))) {
+        local_7 = (dot(ng, w_11) >= 0.0);
+    } else {
+        local_7 = true;
+    }
+    bool _e32 = local_7;
+    if (_e32) {
+        return 0.0;
+    }
+    return cos_x_1;
+}
+
+float vpl_lobe(vec3 n_1, vec3 w_1) {
+    return (max(dot(n_1, w_1), 0.0) * INV_PI);
+}
+
+float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v_1, float min_d2_) {
+    float m_2 = max(dot(v_1, v_1), min_d2_);
+    return (((max(dot(n_l, v_1), 0.0) * max(-(dot(n_x, v_1)), 0.0)) * INV_PI) / (m_2 * m_2));
+}
+
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
+    if ((cos_inner <= cos_outer)) {
+        return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
+    }
+    float t_2 = clamp(((cos_theta - cos_outer) / (cos_inner - cos_outer)), 0.0, 1.0);
+    return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
+}
+
+float triangle_lobe(vec3 n_2, float area, vec3 w_2) {
+    return (area * max(dot(n_2, w_2), 0.0));
+}
+
+vec3 triangle_sample(vec3 a_2, vec3 b_2, vec3 c_3, float u1_, float u2_) {
+    float su = sqrt(u1_);
+    float b0_ = (1.0 - su);
+    float b1_ = (u2_ * su);
+    return (((a_2 * b0_) + (b_2 * b1_)) + (c_3 * ((1.0 - b0_) - b1_)));
+}
+
+float area_to_solid_angle_pdf(float pdf_area, float d2_7, float cos_light) {
+    float c_10 = abs(cos_light);
+    if ((c_10 <= 0.0)) {
+        return 0.0;
+    }
+    return ((pdf_area * d2_7) / c_10);
+}
+
+float atan_portable(float x_5) {
+    float base = 0.0;
+    float t = 0.0;
+    float a_9 = abs(x_5);
+    t = a_9;
+    if ((a_9 > 2.4142137)) {
+        base = 1.5707964;
+        t = (-1.0 / a_9);
+    } else {
+        if ((a_9 > 0.41421357)) {
+            base = 0.7853982;
+            t = ((a_9 - 1.0) / (a_9 + 1.0));
+        }
+    }
+    float _e18 = t;
+    float _e19 = t;
+    float z_3 = (_e18 * _e19);
+    float _e21 = base;
+    float _e33 = t;
+    float _e35 = t;
+    float r_5 = (_e21 + (((((((((0.080537446 * z_3) - 0.13877685) * z_3) + 0.19977711) * z_3) - 0.3333295) * z_3) * _e33) + _e35));
+    return ((x_5 < 0.0) ? -(r_5) : r_5);
+}
+
+float atan2_portable(float y_1, float x_6) {
+    if ((x_6 == 0.0)) {
+        if ((y_1 > 0.0)) {
+            return 1.5707964;
+        }
+        if ((y_1 < 0.0)) {
+            return -1.5707964;
+        }
+        return 0.0;
+    }
+    float _e12 = atan_portable((y_1 / x_6));
+    if ((x_6 > 0.0)) {
+        return _e12;
+    }
+    if ((y_1 >= 0.0)) {
+        return (_e12 + 3.1415927);
+    }
+    return (_e12 - 3.1415927);
+}
+
+float ies_fold_c(float c_4, float h_first, float h_last) {
+    float a_3 = 0.0;
+    a_3 = (c_4 - (360.0 * floor((c_4 / 360.0))));
+    if ((h_last <= 0.0)) {
+        return 0.0;
+    }
+    if ((h_last <= 90.0)) {
+        float _e15 = a_3;
+        if ((_e15 > 180.0)) {
+            float _e18 = a_3;
+            a_3 = (360.0 - _e18);
+        }
+        float _e21 = a_3;
+        if ((_e21 > 90.0)) {
+            float _e24 = a_3;
+            a_3 = (180.0 - _e24);
+        }
+        float _e27 = a_3;
+        return _e27;
+    }
+    if ((h_first >= 90.0)) {
+        float _e30 = a_3;
+        if ((_e30 < 90.0)) {
+            float _e33 = a_3;
+            a_3 = (180.0 - _e33);
+        } else {
+            float _e36 = a_3;
+            if ((_e36 > 270.0)) {
+                float _e39 = a_3;
+                a_3 = (540.0 - _e39);
+            }
+        }
+        float _e42 = a_3;
+        return _e42;
+    }
+    if ((h_last <= 180.0)) {
+        float _e45 = a_3;
+        if ((_e45 > 180.0)) {
+            float _e48 = a_3;
+            a_3 = (360.0 - _e48);
+        }
+        float _e51 = a_3;
+        return _e51;
+    }
+    float _e52 = a_3;
+    return _e52;
+}
+
+float ies_lerp_t(float a0_, float a1_, float x_8) {
+    if ((a1_ <= a0_)) {
+        return 0.0;
+    }
+    return clamp(((x_8 - a0_) / (a1_ - a0_)), 0.0, 1.0);
+}
+
+uint mul_hi_u32_(uint a_4, uint b_3) {
+    uint a_lo = (a_4 & 65535u);
+    uint a_hi = (a_4 >> 16u);
+    uint b_lo = (b_3 & 65535u);
+    uint b_hi = (b_3 >> 16u);
+    uint ll = (a_lo * b_lo);
+    uint lh = (a_lo * b_hi);
+    uint hl = (a_hi * b_lo);
+    uint hh = (a_hi * b_hi);
+    uint mid = (((ll >> 16u) + (lh & 65535u)) + (hl & 65535u));
+    return (((hh + (lh >> 16u)) + (hl >> 16u)) + (mid >> 16u));
+}
+
+uint uniform_index(uint n_4, uint hi_1, uint lo_1) {
+    uint _e3 = mul_lo_u32_(hi_1, n_4);
+    uint _e4 = mul_hi_u32_(hi_1, n_4);
+    uint _e5 = mul_hi_u32_(lo_1, n_4);
+    if ((_e3 > (4294967295u - _e5))) {
+        return (_e4 + 1u);
+    }
+    return _e4;
+}
+
+uint reservoir_slot(uint n_5, uint k, uint hi_2, uint lo_2) {
+    if ((n_5 <= k)) {
+        return (n_5 - 1u);
+    }
+    uint _e7 = uniform_index(n_5, hi_2, lo_2);
+    if ((_e7 < k)) {
+        return _e7;
+    }
+    return k;
+}
+
+bool reservoir_takes(uint n_6) {
+    return (n_6 < RESERVOIR_FULL);
+}
+
+float reservoir_weight(uint n_7, uint k_1) {
+    float _e2 = to_f32_(n_7);
+    float _e3 = to_f32_(k_1);
+    return max((_e2 / _e3), 1.0);
+}
+
+bool weighted_replace(float w_4, float w_sum, float u_1) {
+    return ((u_1 * w_sum) < w_4);
+}
+
+float weighted_pick_weight(float w_sum_1, float w_5, uint k_2) {
+    float _e3 = to_f32_(k_2);
+    return (w_sum_1 / (_e3 * w_5));
+}
+
+float reservoir_select_pdf(uint seen, bool in_range, uint k_3) {
+    uint others = 0u;
+    bool local_9 = false;
+    others = seen;
+    if (in_range) {
+        local_9 = (seen > 0u);
+    } else {
+        local_9 = false;
+    }
+    bool _e9 = local_9;
+    if (_e9) {
+        others = (seen - 1u);
+    }
+    uint _e12 = others;
+    float _e15 = reservoir_weight((_e12 + 1u), k_3);
+    return (1.0 / _e15);
+}
+
+uint alias_choice(uint column, uint other, float keep, float u_2) {
+    return ((u_2 < keep) ? column : other);
+}
+
+uint uniform_light(float u_3, uint n_8) {
+    float _e2 = to_f32_(n_8);
+    uint _e4 = to_u32_((u_3 * _e2));
+    return min(_e4, (n_8 - 1u));
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float sin_sub_clamped(float sin_a_1, float cos_a_1, float sin_b_1, float cos_b_1) {
+    if ((cos_a_1 > cos_b_1)) {
+        return 0.0;
+    }
+    return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
+}
+
+float safe_sqrt(float x_9) {
+    return sqrt(max(x_9, 0.0));
+}
+
+float light_importance(vec3 center, float radius, float phi, vec3 axis, float cos_o, float cos_e, vec3 p, vec3 n_9) {
+    float imp = 0.0;
+    vec3 v_9 = (p - center);
+    float dist2_ = dot(v_9, v_9);
+    float r2_11 = (radius * radius);
+    float d2_17 = max(max(dist2_, r2_11), MIN_D2_);
+    vec3 wi = ((dist2_ > 0.0) ? (v_9 / vec3(sqrt(dist2_))) : vec3(0.0, 0.0, 0.0));
+    float cos_w = dot(axis, wi);
+    float _e28 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    float _e32 = safe_sqrt((1.0 - (r2_11 / dist2_)));
+    float cos_b_2 = ((dist2_ <= r2_11) ? -1.0 : _e32);
+    float _e39 = safe_sqrt((1.0 - (cos_b_2 * cos_b_2)));
+    float _e43 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    float _e44 = cos_sub_clamped(_e28, cos_w, _e43, cos_o);
+    float _e45 = sin_sub_clamped(_e28, cos_w, _e43, cos_o);
+    float _e46 = cos_sub_clamped(_e45, _e44, _e39, cos_b_2);
+    if ((_e46 <= cos_e)) {
+        return 0.0;
+    }
+    imp = ((phi * _e46) / d2_17);
+    if ((dot(n_9, n_9) > 0.0)) {
+        float cos_i = -(dot(wi, n_9));
+        float _e60 = safe_sqrt((1.0 - (cos_i * cos_i)));
+        float _e61 = imp;
+        float _e62 = cos_sub_clamped(_e60, cos_i, _e39, cos_b_2);
+        imp = (_e61 * max(_e62, 0.0));
+    }
+    float _e66 = imp;
+    return max(_e66, 0.0);
+}
+
+float candidate_weight(float importance, float rt2_4, float d2_8) {
+    float _e3 = slc_weight(rt2_4, d2_8);
+    return (importance * _e3);
+}
+
+float cone_weight(vec3 center_1, float radius_1, float phi_1, vec3 axis_1, float cos_o_1, float cos_e_1, float rt2_5, vec3 p_1, vec3 n_10) {
+    vec3 v_10 = (p_1 - center_1);
+    float _e10 = light_importance(center_1, radius_1, phi_1, axis_1, cos_o_1, cos_e_1, p_1, n_10);
+    float _e14 = candidate_weight((_e10 * INV_PI), rt2_5, dot(v_10, v_10));
+    return _e14;
+}
+
+float weighted_select_pdf(float w_6, float w_sum_2, bool in_range_1, uint k_4) {
+    if ((w_6 <= 0.0)) {
+        return 0.0;
+    }
+    float total = (in_range_1 ? w_sum_2 : (w_sum_2 + w_6));
+    float _e9 = to_f32_(k_4);
+    return ((_e9 * w_6) / total);
+}
+
+float bvh_first_prob(float c0_, float c1_2) {
+    float s = (c0_ + c1_2);
+    if ((s > 0.0)) {
+        return (c0_ / s);
+    }
+    return -1.0;
+}
+
+float bvh_remap_u(float u_4, float p0_, bool first_1) {
+    if (first_1) {
+        return min((u_4 / p0_), ONE_MINUS_EPSILON);
+    }
+    return clamp(((u_4 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
+}
+
+float surface_offset(float diag) {
+    return (1e-5 * diag);
+}
+
+float ray_t_min(float diag_1) {
+    return (1e-6 * diag_1);
+}
+
+float shadow_margin(float len) {
+    return (0.0001 * len);
+}
+
+float ray_inverse(float x_10) {
+    return (1.0 / ((abs(x_10) < 1e-30) ? 1e-30 : x_10));
+}
+
+vec3 ray_inverse3_(vec3 d) {
+    float _e2 = ray_inverse(d.x);
+    float _e4 = ray_inverse(d.y);
+    float _e6 = ray_inverse(d.z);
+    return vec3(_e2, _e4, _e6);
+}
+
+float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin_1, vec3 bmax_1, float t_max) {
+    vec3 t0_ = ((bmin_1 - o) * inv_d);
+    vec3 t1_ = ((bmax_1 - o) * inv_d);
+    vec3 lo_3 = min(t0_, t1_);
+    vec3 hi_3 = max(t0_, t1_);
+    float t_in = max(max(lo_3.x, lo_3.y), max(lo_3.z, 0.0));
+    float t_out = min(min(hi_3.x, hi_3.y), min(hi_3.z, t_max));
+    if ((t_in <= t_out)) {
+        return t_in;
+    }
+    return -1.0;
+}
+
+vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_6) {
+    bool local_10 = false;
+    vec3 n_17 = cross((b_4 - a_5), (c_6 - a_5));
+    float l2_ = dot(n_17, n_17);
+    if (!(!((l2_ > 0.0)))) {
+        local_10 = !((l2_ < 3e38));
+    } else {
+        local_10 = true;
+    }
+    bool _e17 = local_10;
+    if (_e17) {
+        return vec3(0.0, 0.0, 0.0);
+    }
+    return (n_17 / vec3(sqrt(l2_)));
+}
+
+vec3 face_against(vec3 n_11, vec3 dir) {
+    return ((dot(n_11, dir) > 0.0) ? -(n_11) : n_11);
+}
+
+vec3 barycentric(vec3 p_2, vec3 a_6, vec3 b_5, vec3 c_7) {
+    vec3 e1_1 = (b_5 - a_6);
+    vec3 e2_1 = (c_7 - a_6);
+    vec3 q_4 = (p_2 - a_6);
+    float d11_ = dot(e1_1, e1_1);
+    float d12_ = dot(e1_1, e2_1);
+    float d22_ = dot(e2_1, e2_1);
+    float den = ((d11_ * d22_) - (d12_ * d12_));
+    if (!((abs(den) > 0.0))) {
+        return vec3(1.0, 0.0, 0.0);
+    }
+    float w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
+    float w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
+    return vec3(((1.0 - w1_) - w2_), w1_, w2_);
+}
+
+vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_7, vec3 facing) {
+    bool local_11 = false;
+    vec3 s_1 = (((n0_ * w_7.x) + (n1_ * w_7.y)) + (n2_ * w_7.z));
+    float l2_1 = dot(s_1, s_1);
+    if (!(!((l2_1 > 1e-12)))) {
+        local_11 = !((l2_1 < 3e38));
+    } else {
+        local_11 = true;
+    }
+    bool _e24 = local_11;
+    if (_e24) {
+        return facing;
+    }
+    vec3 n_18 = (s_1 / vec3(sqrt(l2_1)));
+    return ((dot(n_18, facing) < 0.0) ? -(n_18) : n_18);
+}
+
+float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_7, vec3 b_6, vec3 c_8, float t_min, float t_max_1) {
+    bool local_12 = false;
+    bool local_13 = false;
+    bool local_14 = false;
+    vec3 e1_2 = (b_6 - a_7);
+    vec3 e2_2 = (c_8 - a_7);
+    vec3 p_4 = cross(d_1, e2_2);
+    float det = dot(e1_2, p_4);
+    if ((abs(det) <= 0.0)) {
+        return -1.0;
+    }
+    float inv = (1.0 / det);
+    vec3 s_2 = (o_1 - a_7);
+    float u_6 = (dot(s_2, p_4) * inv);
+    if (!((u_6 < 0.0))) {
+        local_12 = (u_6 > 1.0);
+    } else {
+        local_12 = true;
+    }
+    bool _e28 = local_12;
+    if (_e28) {
+        return -1.0;
+    }
+    vec3 q_5 = cross(s_2, e1_2);
+    float v_11 = (dot(d_1, q_5) * inv);
+    if (!((v_11 < 0.0))) {
+        local_13 = ((u_6 + v_11) > 1.0);
+    } else {
+        local_13 = true;
+    }
+    bool _e42 = local_13;
+    if (_e42) {
+        return -1.0;
+    }
+    float t_3 = (dot(e2_2, q_5) * inv);
+    if ((t_3 > t_min)) {
+        local_14 = (t_3 < t_max_1);
+    } else {
+        local_14 = false;
+    }
+    bool _e51 = local_14;
+    if (_e51) {
+        return t_3;
+    }
+    return -1.0;
+}
+
+float mis_balance(float pdf_a, float pdf_b) {
+    float s_3 = (pdf_a + pdf_b);
+    if ((s_3 <= 0.0)) {
+        return 0.0;
+    }
+    return (pdf_a / s_3);
+}
+
+float mis_power(float pdf_a_1, float pdf_b_1) {
+    float a2_ = (pdf_a_1 * pdf_a_1);
+    float s_4 = (a2_ + (pdf_b_1 * pdf_b_1));
+    if ((s_4 <= 0.0)) {
+        return 0.0;
+    }
+    return (a2_ / s_4);
+}
+
+float light_strategy_pdf(float select, float rt2_6, float d2_9, float area_1, float cos_y) {
+    bool local_15 = false;
+    bool local_16 = false;
+    if (!((d2_9 <= 0.0))) {
+        local_15 = (area_1 <= 0.0);
+    } else {
+        local_15 = true;
+    }
+    bool _e13 = local_15;
+    if (!(_e13)) {
+        local_16 = (cos_y <= 0.0);
+    } else {
+        local_16 = true;
+    }
+    bool _e20 = local_16;
+    if (_e20) {
+        return 0.0;
+    }
+    float _e22 = rr_probability(rt2_6, d2_9);
+    float _e26 = area_to_solid_angle_pdf((1.0 / area_1), d2_9, cos_y);
+    return ((select * _e22) * _e26);
+}
+
+vec3 lambert_brdf(vec3 rho) {
+    return (rho * INV_PI);
+}
+
+float cosine_pdf(float cos_theta_1) {
+    return (max(cos_theta_1, 0.0) * INV_PI);
+}
+
+vec3 cosine_direction(vec3 n_12, float u1_1, float u2_1) {
+    float s_5 = ((n_12.z >= 0.0) ? 1.0 : -1.0);
+    float a_10 = (-1.0 / (s_5 + n_12.z));
+    float b_7 = ((n_12.x * n_12.y) * a_10);
+    vec3 t_4 = vec3((1.0 + (((s_5 * n_12.x) * n_12.x) * a_10)), (s_5 * b_7), (-(s_5) * n_12.x));
+    vec3 bt = vec3(b_7, (s_5 + ((n_12.y * n_12.y) * a_10)), -(n_12.y));
+    float r_6 = sqrt(u1_1);
+    float phi_2 = (6.2831855 * u2_1);
+    return normalize((((t_4 * (r_6 * cos(phi_2))) + (bt * (r_6 * sin(phi_2)))) + (n_12 * sqrt(max((1.0 - u1_1), 0.0)))));
+}
+
+float inv_sigma_z(float z) {
+    return (1.0 / (DEPTH_SIGMA * z));
+}
+
+uint window_start(uint x_11, uint size) {
+    uint half_ = (size / 2u);
+    return (max(x_11, half_) - half_);
+}
+
+uint window_end(uint x_12, uint size_1, uint extent_1) {
+    return min(((x_12 + size_1) - (size_1 / 2u)), extent_1);
+}
+
+uint wide_window(uint period) {
+    return (2u * period);
+}
+
+bool misses_subset(uint covered, uint period_1) {
+    return (covered < (period_1 * period_1));
+}
+
+vec3 filtered_irradiance(vec3 e_1, vec3 sum, float weight) {
+    if ((weight > 0.0)) {
+        return (sum / vec3(weight));
+    }
+    return e_1;
+}
+
+float bilateral_weight(vec3 n_13, vec3 nj, float z_1, float zj, float inv_sz) {
+    float dn = max(dot(n_13, nj), 0.0);
+    float dn2_ = (dn * dn);
+    float dn4_ = (dn2_ * dn2_);
+    float dn8_ = (dn4_ * dn4_);
+    float d_5 = ((zj - z_1) * inv_sz);
+    float t_5 = max((1.0 - (d_5 * d_5)), 0.0);
+    return (((dn8_ * dn8_) * t_5) * t_5);
+}
+
+uint interleave_subset(uint x_13, uint y_2, uint period_2) {
+    return (((y_2 % period_2) * period_2) + (x_13 % period_2));
+}
+
+uint interleave_slot(uint tx, uint ty, uint size_2, uint period_3) {
+    uint side = (size_2 / period_3);
+    uint _e5 = interleave_subset(tx, ty, period_3);
+    return ((((_e5 * side) * side) + ((ty / period_3) * side)) + (tx / period_3));
+}
+
+uint interleave_slot_linear(uint i_1, uint per_subset, uint period_4) {
+    uint subsets = (period_4 * period_4);
+    return (((i_1 % subsets) * per_subset) + (i_1 / subsets));
+}
+
+float interleave_flux_scale(uint period_5) {
+    float _e2 = to_f32_((period_5 * period_5));
+    return _e2;
+}
+
+uint near_block_index(uint tx_1, uint ty_1, uint size_3) {
+    uint side_1 = (size_3 / 8u);
+    return ((((((ty_1 / 8u) * side_1) + (tx_1 / 8u)) * NEAR_BLOCK) + ((ty_1 % 8u) * 8u)) + (tx_1 % 8u));
+}
+
+uint near_block_tx(uint q, uint size_4) {
+    return ((((q / NEAR_BLOCK) % (size_4 / 8u)) * 8u) + (q % 8u));
+}
+
+uint near_block_ty(uint q_1, uint size_5) {
+    return ((((q_1 / NEAR_BLOCK) / (size_5 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
+}
+
+float vpl_near_weight(float d2_10, float near_r2_) {
+    if ((near_r2_ <= 0.0)) {
+        return 0.0;
+    }
+    float t_6 = clamp(((near_r2_ - d2_10) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_6 * t_6) * (3.0 - (2.0 * t_6)));
+}
+
+float vpl_far_weight(float d2_11, float near_r2_1) {
+    float _e2 = vpl_near_weight(d2_11, near_r2_1);
+    return (1.0 - _e2);
+}
+
+float vpl_far_slc_share(float rt2_7, float r2_6, float d2_12, float near_r2_2) {
+    float _e4 = vpl_far_weight(d2_12, near_r2_2);
+    float _e5 = slc_weight(rt2_7, d2_12);
+    bool _e7 = slc_keep(r2_6, d2_12);
+    return ((_e7 && (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+float vpl_far_fixed_share(float range2_2, float d2_13, float near_r2_3) {
+    float _e3 = vpl_far_weight(d2_13, near_r2_3);
+    bool _e4 = clamp_keep(range2_2, d2_13);
+    return ((_e4 && (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
+float vpl_near_range2_(float r2_7, uint period_6) {
+    float _e2 = interleave_flux_scale(period_6);
+    return (r2_7 / _e2);
+}
+
+float vpl_near_cull_range2_(float r2_8, float near_r2_4) {
+    return min(r2_8, near_r2_4);
+}
+
+float vpl_near_slc_share(float rt2_8, float r2_9, float d2_14, float near_r2_5) {
+    float _e4 = vpl_near_weight(d2_14, near_r2_5);
+    float _e5 = slc_weight(rt2_8, d2_14);
+    bool _e7 = slc_keep(r2_9, d2_14);
+    return ((_e7 && (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+float vpl_near_fixed_share(float range2_3, float d2_15, float near_r2_6) {
+    float _e3 = vpl_near_weight(d2_15, near_r2_6);
+    bool _e4 = clamp_keep(range2_3, d2_15);
+    return ((_e4 && (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
+vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_8, float h) {
+    float sx = (((2.0 * px) / w_8) - 1.0);
+    float sy = (1.0 - ((2.0 * py) / h));
+    return normalize(((forward + (right * sx)) + (up * sy)));
+}
+
+float jittered_pixel(uint coord, float u_5) {
+    float _e2 = to_f32_(coord);
+    return (_e2 + u_5);
+}
+
+bool plays_roulette(uint depth) {
+    return (depth >= ROULETTE_DEPTH);
+}
+
+bool sees_emission(vec3 gn, vec3 dir_1) {
+    return (dot(gn, dir_1) < 0.0);
+}
+
+bool continues_path(vec3 nd, vec3 n_14, vec3 ng_1) {
+    bool local_17 = false;
+    if ((dot(nd, n_14) > 0.0)) {
+        local_17 = (dot(nd, ng_1) > 0.0);
+    } else {
+        local_17 = false;
+    }
+    bool _e12 = local_17;
+    return _e12;
+}
+
+bool finite3_(vec3 v_2) {
+    bool local_18 = false;
+    bool local_19 = false;
+    if ((abs(v_2.x) <= F32_MAX)) {
+        local_18 = (abs(v_2.y) <= F32_MAX);
+    } else {
+        local_18 = false;
+    }
+    bool _e12 = local_18;
+    if (_e12) {
+        local_19 = (abs(v_2.z) <= F32_MAX);
+    } else {
+        local_19 = false;
+    }
+    bool _e20 = local_19;
+    return _e20;
+}
+
+float path_survival(vec3 beta) {
+    return clamp(max(max(beta.x, beta.y), beta.z), 0.05, 0.95);
+}
+
+float light_map_coord(uint t_1, uint size_6) {
+    float _e2 = to_f32_(t_1);
+    float _e7 = to_f32_(size_6);
+    return (((2.0 * (_e2 + 0.5)) / _e7) - 1.0);
+}
+
+uint light_map_texel(float a_8, uint size_7) {
+    float _e6 = to_f32_(size_7);
+    float _e9 = to_f32_(size_7);
+    uint _e14 = to_u32_(clamp(floor((((a_8 + 1.0) * 0.5) * _e6)), 0.0, (_e9 - 1.0)));
+    return _e14;
+}
+
+float light_map_coord_at(vec3 rel, vec3 dir_2, vec3 axis_2, float extent_2, bool perspective) {
+    return (dot(rel, dir_2) / ((perspective ? dot(rel, axis_2) : 1.0) * extent_2));
+}
+
+float display_encode(float x_14) {
+    float v_12 = max(x_14, 0.0);
+    float t_7 = ((2.0 * v_12) / (1.0 + (2.0 * v_12)));
+    return ((t_7 <= 0.0031308) ? (12.92 * t_7) : ((1.055 * pow(t_7, 0.41666666)) - 0.055));
+}
+
+float light_map_depth(vec3 rel_1, vec3 axis_3, bool perspective_1) {
+    return (perspective_1 ? sqrt(dot(rel_1, rel_1)) : dot(rel_1, axis_3));
+}
+
+float rsm_texel_solid_angle(float texel_area, float cos_axis) {
+    return (((texel_area * cos_axis) * cos_axis) * cos_axis);
+}
+
+vec3 point_irradiance(vec3 intensity_1, vec3 n_15, vec3 v_3) {
+    float d2_18 = dot(v_3, v_3);
+    float cos_x_2 = (dot(n_15, v_3) / sqrt(max(d2_18, MIN_D2_)));
+    float _e11 = inverse_square(d2_18);
+    return (intensity_1 * (max(cos_x_2, 0.0) * _e11));
+}
+
+vec3 directional_irradiance(vec3 e_2, vec3 n_16, vec3 to_light) {
+    return (e_2 * max(dot(n_16, to_light), 0.0));
+}
+
+float perspective_texel_width(float extent_3, float d_2, float z_2, float size_8) {
+    return ((((2.0 * extent_3) * d_2) * d_2) / (size_8 * z_2));
+}
+
+float ortho_texel_width(float extent_4, float size_9) {
+    return ((2.0 * extent_4) / size_9);
+}
+
+float shadow_bias(float texel, float cos_light_1) {
+    float c_11 = clamp(cos_light_1, 0.02, 1.0);
+    return (texel * (1.5 + (sqrt((1.0 - (c_11 * c_11))) / c_11)));
+}
+
+bool shadow_lit(float d_3, float d_map, float bias) {
+    bool local_20 = false;
+    if (!((d_map <= 0.0))) {
+        local_20 = (d_3 <= (d_map + bias));
+    } else {
+        local_20 = true;
+    }
+    bool _e11 = local_20;
+    return _e11;
+}
+
+vec3 diffuse_radiance(vec3 albedo, vec3 emission, vec3 e_3) {
+    return (emission + ((albedo * INV_PI) * e_3));
+}
+
+vec3 light_intensity(GpuLight l, vec3 w_9) {
+    switch(l.kind) {
+        case 4u: {
+            float _e5 = vpl_lobe(l.p1_, w_9);
+            return (l.intensity * _e5);
+        }
+        default: {
+            return vec3(0.0);
+        }
+    }
+}
+
+vec3 light_point(GpuLight l_1, float u1_2, float u2_2) {
+    return l_1.p0_;
+}
+
+float light_area(GpuLight l_2) {
+    return 0.0;
+}
+
+vec3 light_normal(GpuLight l_3) {
+    return vec3(0.0);
+}
+
+WorkgroupBox workgroup_box(uint li_1, vec3 p_3, bool has) {
+    uint stride = 32u;
+    wg_lo[li_1] = (has ? p_3 : vec3(3.4028235e38));
+    wg_hi[li_1] = (has ? p_3 : vec3(-3.4028235e38));
+    memoryBarrierShared();
+    barrier();
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e42 = stride;
+            stride = (_e42 / 2u);
+        }
+        loop_init = false;
+        uint _e15 = stride;
+        if ((_e15 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = stride;
+            if ((li_1 < _e18)) {
+                vec3 _e24 = wg_lo[li_1];
+                uint _e26 = stride;
+                vec3 _e29 = wg_lo[(li_1 + _e26)];
+                wg_lo[li_1] = min(_e24, _e29);
+                vec3 _e35 = wg_hi[li_1];
+                uint _e37 = stride;
+                vec3 _e40 = wg_hi[(li_1 + _e37)];
+                wg_hi[li_1] = max(_e35, _e40);
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    vec3 _e47 = wg_lo[0];
+    vec3 _e50 = wg_hi[0];
+    return WorkgroupBox(_e47, _e50);
+}
+
+float near_r2_of(uint slot) {
+    float _e3 = _group_0_binding_7_cs[slot];
+    return _e3;
+}
+
+void main() {
+    if (gl_LocalInvocationID == uvec3(0u)) {
+        wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        wg_hi = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        light_count = 0u;
+        light_list = uint[2048](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    }
+    memoryBarrierShared();
+    barrier();
+    uvec3 wg = gl_WorkGroupID;
+    uvec3 lid = gl_LocalInvocationID;
+    uint li = gl_LocalInvocationIndex;
+    bool local = false;
+    vec4 pos = vec4(0.0);
+    vec3 nrm = vec3(0.0);
+    bool local_1 = false;
+    vec3 e = vec3(0.0);
+    uint kept = 0u;
+    uint first = 0u;
+    bool local_2 = false;
+    bool local_3 = false;
+    uint m = 0u;
+    bool local_4 = false;
+    uint m_1 = 0u;
+    uint px_1 = ((wg.x * TILE) + lid.x);
+    uint py_1 = ((wg.y * TILE) + lid.y);
+    uint _e15 = _group_0_binding_0_cs.width;
+    if ((px_1 < _e15)) {
+        uint _e21 = _group_0_binding_0_cs.height;
+        local = (py_1 < _e21);
+    } else {
+        local = false;
+    }
+    bool inside = local;
+    uint _e27 = _group_0_binding_0_cs.width;
+    uint pix = ((py_1 * _e27) + px_1);
+    if (inside) {
+        vec4 _e38 = _group_0_binding_1_cs[pix];
+        pos = _e38;
+        vec4 _e41 = _group_0_binding_2_cs[pix];
+        nrm = _e41.xyz;
+    }
+    if (inside) {
+        float _e46 = pos.w;
+        local_1 = (_e46 > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool valid = local_1;
+    vec4 _e51 = pos;
+    WorkgroupBox _e53 = workgroup_box(li, _e51.xyz, valid);
+    vec3 lo_4 = _e53.lo;
+    vec3 hi_4 = _e53.hi;
+    float _e58 = _group_0_binding_0_cs.near_r2_;
+    float _e59 = cull_radius(_e58);
+    float _e61 = interleave_flux_scale(P);
+    float unscale = (1.0 / _e61);
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e194 = first;
+            first = (_e194 + NEAR_CHUNK);
+        }
+        loop_init_1 = false;
+        uint _e71 = first;
+        uint _e74 = _group_0_binding_0_cs.near_blocks;
+        if ((_e71 < _e74)) {
+        } else {
+            break;
+        }
+        {
+            if ((li == 0u)) {
+                atomicExchange(light_count, 0u);
+            }
+            memoryBarrierShared();
+            barrier();
+            uint _e80 = first;
+            uint b_8 = (_e80 + li);
+            if ((li < NEAR_CHUNK)) {
+                uint _e88 = _group_0_binding_0_cs.near_blocks;
+                local_2 = (b_8 < _e88);
+            } else {
+                local_2 = false;
+            }
+            bool _e91 = local_2;
+            if (_e91) {
+                GpuNearBox nb = _group_0_binding_5_cs[b_8];
+                if (all(lessThanEqual((nb.lo - vec3(_e59)), hi_4))) {
+                    local_3 = all(lessThanEqual(lo_4, (nb.hi + vec3(_e59))));
+                } else {
+                    local_3 = false;
+                }
+                bool _e108 = local_3;
+                if (_e108) {
+                    m = 0u;
+                    bool loop_init_2 = true;
+                    while(true) {
+                        if (!loop_init_2) {
+                            uint _e147 = m;
+                            m = (_e147 + 1u);
+                        }
+                        loop_init_2 = false;
+                        uint _e111 = m;
+                        if ((_e111 < NEAR_BLOCK)) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e117 = m;
+                            uint slot_1 = _group_0_binding_4_cs[((b_8 * NEAR_BLOCK) + _e117)];
+                            GpuLight l_4 = _group_0_binding_3_cs[slot_1];
+                            float _e124 = near_r2_of(slot_1);
+                            float _e127 = _group_0_binding_0_cs.near_r2_;
+                            float _e128 = vpl_near_cull_range2_(_e124, _e127);
+                            float _e129 = cull_radius(_e128);
+                            if (any(notEqual(l_4.intensity, vec3(0.0)))) {
+                                bool _e138 = sphere_overlaps_aabb(l_4.p0_, _e129, lo_4, hi_4);
+                                local_4 = _e138;
+                            } else {
+                                local_4 = false;
+                            }
+                            bool _e140 = local_4;
+                            if (_e140) {
+                                uint _e144 = atomicAdd(light_count, 1u);
+                                light_list[_e144] = slot_1;
+                            }
+                        }
+                    }
+                }
+            }
+            memoryBarrierShared();
+            barrier();
+            uint _e150 = light_count;
+            memoryBarrierShared();
+            barrier();
+            if (valid) {
+                m_1 = 0u;
+                bool loop_init_3 = true;
+                while(true) {
+                    if (!loop_init_3) {
+                        uint _e192 = m_1;
+                        m_1 = (_e192 + 1u);
+                    }
+                    loop_init_3 = false;
+                    uint _e153 = m_1;
+                    if ((_e153 < _e150)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e156 = m_1;
+                        uint slot_2 = light_list[_e156];
+                        GpuLight l_5 = _group_0_binding_3_cs[slot_2];
+                        vec4 _e162 = pos;
+                        vec3 v_13 = (_e162.xyz - l_5.p0_);
+                        float _e168 = _group_0_binding_7_cs[slot_2];
+                        float _e172 = _group_0_binding_0_cs.near_r2_;
+                        float _e173 = vpl_near_fixed_share(_e168, dot(v_13, v_13), _e172);
+                        if ((_e173 > 0.0)) {
+                            vec3 _e176 = e;
+                            vec3 _e179 = nrm;
+                            float _e182 = _group_0_binding_0_cs.min_d2_;
+                            float _e183 = vpl_transfer(l_5.p1_, _e179, v_13, _e182);
+                            e = (_e176 + (l_5.intensity * ((_e183 * _e173) * unscale)));
+                            uint _e188 = kept;
+                            kept = (_e188 + 1u);
+                        }
+                    }
+                }
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    if (valid) {
+        vec4 old = _group_0_binding_8_cs[pix];
+        vec3 _e203 = e;
+        uint _e206 = kept;
+        _group_0_binding_8_cs[pix] = vec4((old.xyz + _e203), (old.w + float(_e206)));
+        return;
+    } else {
+        return;
+    }
+}
+
