@@ -18,7 +18,8 @@
 //! lights, `8 × 8` RSM texels each ([`near_block_index`]), whose boxes are
 //! culled against a tile first.
 
-use crate::wgsl::builtins::{clamp, to_f32};
+use crate::range::{clamp_keep, slc_keep, slc_weight};
+use crate::wgsl::builtins::{clamp, min, select, to_f32};
 
 crate::shared! {
     /// Subset of pixel (or RSM texel) `(x, y)` for period `P > 0`:
@@ -92,6 +93,61 @@ crate::shared! {
     /// ([`vpl_near_weight`]); 1 without a split.
     pub fn vpl_far_weight(d2: f32, near_r2: f32) -> f32 {
         return 1.0 - vpl_near_weight(d2, near_r2);
+    }
+
+    /// The interleaved (far) field's weight of one VPL under stochastic
+    /// light culling (its light's `r_t²`, `r²` at `P²` times the flux): the
+    /// far share `1 − w` ([`vpl_far_weight`]) over the roulette
+    /// probability, `(1 − w) · max(d²/r_t², 1)`, where `d² < r²` and
+    /// `1 − w > 0`, else 0 (culled).
+    pub fn vpl_far_slc_share(rt2: f32, r2: f32, d2: f32, near_r2: f32) -> f32 {
+        let f: f32 = vpl_far_weight(d2, near_r2);
+        return select(0.0, f * slc_weight(rt2, d2), slc_keep(r2, d2) & (f > 0.0));
+    }
+
+    /// The far field's weight of one VPL under a fixed range (the clamp
+    /// method's `R²`, or `∞` unculled): its far share `1 − w` where
+    /// `d² < R²` and `1 − w > 0`, else 0.
+    pub fn vpl_far_fixed_share(range2: f32, d2: f32, near_r2: f32) -> f32 {
+        let f: f32 = vpl_far_weight(d2, near_r2);
+        return select(0.0, f, clamp_keep(range2, d2) & (f > 0.0));
+    }
+
+    /// A VPL's squared range (`r²` or `r_t²`) at its own flux, for the near
+    /// field, from its interleaved light's (flux × `P²`): `r²/P²`. `r_t²`
+    /// is linear in the flux ([`crate::light::vpl_rt2`]) and `r² = r_t²/(1 − ξ)`,
+    /// so this is the range of the VPL's own flux with the *same* ξ; for a
+    /// power-of-two `P` the division is exact, so it equals the range
+    /// computed from the unscaled flux bit for bit.
+    pub fn vpl_near_range2(r2: f32, period: u32) -> f32 {
+        return r2 / interleave_flux_scale(period);
+    }
+
+    /// Squared radius of a near-field light's culling sphere: `min(r², R_n²)`,
+    /// the light's own range `r²` ([`vpl_near_range2`], or a clamp range)
+    /// cut at the near radius, beyond which its near share is 0.
+    pub fn vpl_near_cull_range2(r2: f32, near_r2: f32) -> f32 {
+        return min(r2, near_r2);
+    }
+
+    /// The culled near field's weight of one VPL (stochastic light culling
+    /// at the VPL's own flux): its near share `w` ([`vpl_near_weight`])
+    /// over the roulette probability, `w · max(d²/r_t², 1)`, where the
+    /// keep test `d² < r²` passes and `w > 0`, else 0 (a light it culls).
+    /// `r_t²`, `r²` are the VPL's own ([`vpl_near_range2`]). Over ξ its
+    /// expectation is `w` (`P(d² < r²) = min(r_t²/d², 1)`), so the culled
+    /// near field is unbiased, and the partition `w + (1 − w)` stays smooth.
+    pub fn vpl_near_slc_share(rt2: f32, r2: f32, d2: f32, near_r2: f32) -> f32 {
+        let w: f32 = vpl_near_weight(d2, near_r2);
+        return select(0.0, w * slc_weight(rt2, d2), slc_keep(r2, d2) & (w > 0.0));
+    }
+
+    /// The near field's weight of one VPL under a fixed range (the clamp
+    /// method's `R²`, or `∞` unculled): its near share `w` where
+    /// `d² < R²` and `w > 0`, else 0.
+    pub fn vpl_near_fixed_share(range2: f32, d2: f32, near_r2: f32) -> f32 {
+        let w: f32 = vpl_near_weight(d2, near_r2);
+        return select(0.0, w, clamp_keep(range2, d2) & (w > 0.0));
     }
 }
 

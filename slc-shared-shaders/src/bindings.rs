@@ -154,7 +154,9 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             read(3, "lights", "array<GpuLight>", "VPLs by subset, flux × period²", "host or `vpl_pack`"),
             read(4, "near_slots", "array<u32>", "slot in `lights` of each VPL in near-block order", "host or `vpl_pack`"),
             read(5, "near_boxes", "array<GpuNearBox>", "box of each near block", "host or `vpl_pack`"),
-            write(6, "irradiance", vec4, "the (denoised) far field, the near field added"),
+            read(6, "rt2", "array<f32>", "threshold range² (as `vpl_tiled`'s)", "host or `vpl_pack`"),
+            read(7, "r2", "array<f32>", "range² (as `vpl_tiled`'s)", "`light_update` (SLC) or host"),
+            write(8, "irradiance", vec4, "the (denoised) far field, the near field added"),
         ],
         Kernel::BshReservoir => {
             let mut v = vec![

@@ -21,7 +21,8 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
         ("vpl_tiled-slc-tile8-p8", Kernel::VplTiled, Features { lights: vpl, ..Features::default() }),
         ("vpl_tiled-clamp-tile8-p8", Kernel::VplTiled, Features { lights: vpl, method: CullMethod::Clamp, ..Features::default() }),
         ("vpl_denoise-tile8", Kernel::VplDenoise, Features { lights: vpl, ..Features::default() }),
-        ("vpl_near-tile8-p8", Kernel::VplNear, Features { lights: vpl, ..Features::default() }),
+        ("vpl_near-slc-tile8-p8", Kernel::VplNear, Features { lights: vpl, ..Features::default() }),
+        ("vpl_near-clamp-tile8-p8", Kernel::VplNear, Features { lights: vpl, method: CullMethod::Clamp, ..Features::default() }),
         (
             "bsh_reservoir-point-spot-ies-k8",
             Kernel::BshReservoir,

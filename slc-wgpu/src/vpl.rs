@@ -61,7 +61,8 @@ pub struct GpuVpl {
     readback: wgpu::Buffer,
     denoise: wgpu::ComputePipeline,
     denoise_layout: wgpu::BindGroupLayout,
-    near: wgpu::ComputePipeline,
+    /// `vpl_near` per culling method (the near field culled as the far field is).
+    near: Vec<(VplMethod, wgpu::ComputePipeline)>,
     near_layout: wgpu::BindGroupLayout,
     update: wgpu::ComputePipeline,
     update_layout: wgpu::BindGroupLayout,
@@ -156,10 +157,11 @@ impl GpuVpl {
         let denoise_layout = bind_layout(gpu, "vpl_denoise", 3, 1, false);
         let df = Features { lights: LightSet { vpl: true, ..LightSet::default() }, tile_size: TILE, interleave: PERIOD, ..Features::default() };
         let denoise = pipeline(gpu, "vpl_denoise", generate(Kernel::VplDenoise, &df)?, &[&denoise_layout]);
-        let near_layout = bind_layout(gpu, "vpl_near", 5, 1, false);
-        let near = pipeline(gpu, "vpl_near", generate(Kernel::VplNear, &df)?, &[&near_layout]);
+        let near_layout = bind_layout(gpu, "vpl_near", 7, 1, false);
         let mut tiled = Vec::new();
+        let mut near = Vec::new();
         for (m, cm) in [(VplMethod::Slc, CullMethod::Slc), (VplMethod::Clamp, CullMethod::Clamp), (VplMethod::None, CullMethod::None)] {
+            near.push((m, pipeline(gpu, "vpl_near", generate(Kernel::VplNear, &Features { method: cm, ..df })?, &[&near_layout])));
             let f = Features { lights: vpl_only, tile_size: TILE, interleave: PERIOD, max_tile_lights: list, method: cm, ..Features::default() };
             tiled.push((
                 m,
@@ -334,7 +336,9 @@ impl GpuVpl {
         let result = if denoise { &self.filtered } else { &self.irradiance };
         if near {
             // The near field, added after the denoise (which filters only the
-            // interleaved far field), as its own timed pass.
+            // interleaved far field), culled as the far field (the ranges
+            // the first pass wrote), as its own timed pass.
+            let near_pipeline = &self.near.iter().find(|(m, _)| *m == settings.method).ok_or(GpuError::Setting("unknown method".into()))?.1;
             let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc vpl near") });
             {
                 let writes = timer.as_mut().and_then(|t| t.next());
@@ -342,9 +346,19 @@ impl GpuVpl {
                 let bg = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
                     label: Some("vpl_near"),
                     layout: &self.near_layout,
-                    entries: &entries(&[&vp_buf, &self.gb_position, &self.gb_normal, &self.lights, &self.near_slots, &self.near_boxes, result]),
+                    entries: &entries(&[
+                        &vp_buf,
+                        &self.gb_position,
+                        &self.gb_normal,
+                        &self.lights,
+                        &self.near_slots,
+                        &self.near_boxes,
+                        &self.rt2,
+                        &self.r2,
+                        result,
+                    ]),
                 });
-                pass.set_pipeline(&self.near);
+                pass.set_pipeline(near_pipeline);
                 pass.set_bind_group(0, &bg, &[]);
                 pass.dispatch_workgroups(self.width.div_ceil(TILE), self.height.div_ceil(TILE), 1);
             }

@@ -28,7 +28,7 @@ use glam::Vec3;
 use rayon::prelude::*;
 use shade::{Cull, LightList};
 use slc_core::frame::{diffuse_radiance, directional_irradiance, point_irradiance};
-use slc_core::interleave::interleave_flux_scale;
+use slc_core::interleave::{interleave_flux_scale, vpl_near_range2};
 use slc_core::light::{Light, vpl_threshold_range2};
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::ray::surface_offset;
@@ -227,14 +227,7 @@ impl VplContext {
                         for (u, v_) in (0..16).map(|k| (bx + k % 4, by + k / 4)).filter(|&(u, v_)| u < m && v_ < m) {
                             let i = (sy + v_ * p) * size + sx + u * p;
                             let flux = v.flux[i] * scale;
-                            let (rt2, r2) = match cull {
-                                Cull::Slc => {
-                                    let rt2 = vpl_threshold_range2(params, flux);
-                                    (rt2, random_range2(rt2, s.fixed_xi.unwrap_or_else(|| xi_for(s.seed, s.frame, i as u32))))
-                                }
-                                Cull::Clamp => (0.0, s.range * s.range),
-                                Cull::None | Cull::Near => (f32::INFINITY, f32::INFINITY),
-                            };
+                            let (rt2, r2) = light_ranges(cull, params, s, i, flux);
                             all.push(v.position[i], v.normal[i], flux, rt2, r2);
                         }
                     }
@@ -294,7 +287,7 @@ impl VplContext {
                 (out, evals)
             })
             .collect();
-        let (near, near_kept, near_evals) = self.shade_near(near_r2);
+        let (near, near_kept, near_evals) = self.shade_near(near_r2, cull, params, s);
         // Each pixel adds its subset's result to its near field, in parallel.
         let (e, kept) = (0..w * h)
             .into_par_iter()
@@ -311,31 +304,48 @@ impl VplContext {
 
     /// The near field of the split ([`slc_core::interleave::vpl_near_weight`]):
     /// at every pixel, the near share of the VPLs of every subset closer
-    /// than `R_n = √near_r2`, at their own flux; with the kept counts and loop
-    /// evaluations. Empty when `near_r2 = 0`. Culled in two levels, like the
-    /// interleaved loop but over full-resolution pixels: regions of
-    /// [`NEAR_REGION`]² pixels cull the VPLs (in near-block order, so
-    /// chunks are small RSM patches), tiles of [`NEAR_TILE`]² pixels cull
-    /// their region's list, each light's sphere of radius `R_n` against the
-    /// box of the G-buffer positions.
-    fn shade_near(&self, near_r2: f32) -> (Vec<Vec3>, Vec<u32>, u64) {
-        self.shade_near_in(near_r2, NEAR_REGION, NEAR_TILE)
+    /// than `R_n = √near_r2`, at their own flux, culled as the method culls
+    /// the far field (`cull`, from `shade_interleaved`): SLC with each VPL's
+    /// own ranges and the far field's ξ ([`slc_core::interleave::vpl_near_range2`],
+    /// [`slc_core::interleave::vpl_near_slc_share`]: unbiased), clamp at its
+    /// range, none not at all; with the kept counts and loop evaluations.
+    /// Empty when `near_r2 = 0`. Culled in two levels, like the interleaved
+    /// loop but over full-resolution pixels: regions of [`NEAR_REGION`]²
+    /// pixels cull the VPLs (in near-block order, so chunks are small RSM
+    /// patches), tiles of [`NEAR_TILE`]² pixels cull their region's list,
+    /// each light's sphere of radius `min(r, R_n)`
+    /// ([`slc_core::interleave::vpl_near_cull_range2`]) against the box of
+    /// the G-buffer positions.
+    fn shade_near(&self, near_r2: f32, cull: Cull, params: &RangeParams, s: &VplSettings) -> (Vec<Vec3>, Vec<u32>, u64) {
+        self.shade_near_in(near_r2, cull, params, s, NEAR_REGION, NEAR_TILE)
     }
 
     /// [`VplContext::shade_near`] with regions of `region²` and tiles of
     /// `tile²` pixels.
-    fn shade_near_in(&self, near_r2: f32, region: usize, tile: usize) -> (Vec<Vec3>, Vec<u32>, u64) {
+    fn shade_near_in(
+        &self,
+        near_r2: f32,
+        cull: Cull,
+        params: &RangeParams,
+        s: &VplSettings,
+        region: usize,
+        tile: usize,
+    ) -> (Vec<Vec3>, Vec<u32>, u64) {
         let gb = &self.inputs.gbuffer;
         let (w, h) = (gb.width as usize, gb.height as usize);
         if near_r2 <= 0.0 {
             return (Vec::new(), vec![0; w * h], 0);
         }
         let v = &self.inputs.vpls;
+        let near_cull = if cull == Cull::Slc { Cull::NearSlc } else { Cull::Near };
+        let scale = interleave_flux_scale(PERIOD);
         let mut all = LightList::default();
         for i in v.near_order() {
             if v.flux[i] != Vec3::ZERO {
-                // r² = R_n²: the culling sphere holds every light with a near share.
-                all.push(v.position[i], v.normal[i], v.flux[i], 0.0, near_r2);
+                // The interleaved light's ranges, then the VPL's own.
+                let (rt2, r2) = light_ranges(cull, params, s, i, v.flux[i] * scale);
+                let (rt2, r2) = if cull == Cull::Slc { (vpl_near_range2(rt2, PERIOD), vpl_near_range2(r2, PERIOD)) } else { (rt2, r2) };
+                all.push_near(v.position[i], v.normal[i], v.flux[i], rt2, r2, near_r2);
             }
         }
         all.build_chunks();
@@ -366,7 +376,7 @@ impl VplContext {
                             receivers.clear();
                             receivers.extend(pixels.iter().map(|&i| (gb.position[i], gb.normal[i])));
                             shaded.clear();
-                            shade::shade_all(&fine, &receivers, self.inputs.min_d2, near_r2, Cull::Near, &mut shaded);
+                            shade::shade_all(&fine, &receivers, self.inputs.min_d2, near_r2, near_cull, &mut shaded);
                             for (&i, &s) in pixels.iter().zip(&shaded) {
                                 out[i - y0 * w] = s;
                             }
@@ -380,6 +390,21 @@ impl VplContext {
         let evals = rows.iter().map(|r| r.1).sum();
         let (e, kept) = rows.into_iter().flat_map(|r| r.0).unzip();
         (e, kept, evals)
+    }
+}
+
+/// The ranges `(r_t², r²)` of VPL `i`'s interleaved light (flux `flux`,
+/// already × `P²`) under `cull`: SLC's from the error bound and the VPL's ξ
+/// (`xi_for(seed, frame, i)`, or `fixed_xi`), the clamp range `(0, R²)`,
+/// or `(∞, ∞)` unculled.
+fn light_ranges(cull: Cull, params: &RangeParams, s: &VplSettings, i: usize, flux: Vec3) -> (f32, f32) {
+    match cull {
+        Cull::Slc => {
+            let rt2 = vpl_threshold_range2(params, flux);
+            (rt2, random_range2(rt2, s.fixed_xi.unwrap_or_else(|| xi_for(s.seed, s.frame, i as u32))))
+        }
+        Cull::Clamp => (0.0, s.range * s.range),
+        _ => (f32::INFINITY, f32::INFINITY),
     }
 }
 
@@ -514,31 +539,91 @@ fn ms(t: Instant) -> f64 {
 mod tests {
     use super::*;
 
-    /// The culled near field equals every VPL's near share summed at every
-    /// pixel (culling drops nothing), for any region and tile size.
+    /// The near field's tile culling drops nothing: for every method (SLC
+    /// with its own ranges, clamp, none) it equals every VPL evaluated at
+    /// every pixel by the same loop without culling, for any region and
+    /// tile size.
     #[test]
     fn near_field_culling_drops_nothing() {
         let ctx = VplContext::new(&Scene::cornell_box(), 16, 16, 512, None).unwrap();
         let near_r2 = 9.0 * ctx.min_d2();
         let v = ctx.vpls();
-        let mut all = LightList::default();
-        for i in (0..v.len()).filter(|&i| v.flux[i] != Vec3::ZERO) {
-            all.push(v.position[i], v.normal[i], v.flux[i], 0.0, near_r2);
-        }
         let gb = ctx.gbuffer();
-        let brute: Vec<(Vec3, u32)> = (0..gb.position.len())
-            .map(|i| if gb.valid(i) { shade::shade(&all, gb.position[i], gb.normal[i], ctx.min_d2(), near_r2, Cull::Near) } else { (Vec3::ZERO, 0) })
-            .collect();
-        assert!(brute.iter().map(|b| b.1).sum::<u32>() > 1000, "the near field holds lights");
-        for (region, tile) in [(64, 8), (32, 8), (32, 4), (16, 16), (7, 3)] {
-            let (e, kept, _) = ctx.shade_near_in(near_r2, region, tile);
-            for i in 0..brute.len() {
-                assert_eq!(kept[i], brute[i].1, "pixel {i}, region {region}, tile {tile}");
+        for (cull, near_cull) in [(Cull::Slc, Cull::NearSlc), (Cull::Clamp, Cull::Near), (Cull::None, Cull::Near)] {
+            let s = VplSettings { range: 0.02, error_bound: 0.002, ..VplSettings::default() };
+            let params = s.validate().unwrap();
+            let mut all = LightList::default();
+            for i in (0..v.len()).filter(|&i| v.flux[i] != Vec3::ZERO) {
+                let (rt2, r2) = light_ranges(cull, &params, &s, i, v.flux[i] * interleave_flux_scale(PERIOD));
+                let (rt2, r2) = if cull == Cull::Slc { (vpl_near_range2(rt2, PERIOD), vpl_near_range2(r2, PERIOD)) } else { (rt2, r2) };
+                all.push(v.position[i], v.normal[i], v.flux[i], rt2, r2);
+            }
+            let brute: Vec<(Vec3, u32)> =
+                (0..gb.position.len())
+                    .map(|i| {
+                        if gb.valid(i) { shade::shade(&all, gb.position[i], gb.normal[i], ctx.min_d2(), near_r2, near_cull) } else { (Vec3::ZERO, 0) }
+                    })
+                    .collect();
+            assert!(brute.iter().map(|b| b.1).sum::<u32>() > 1000, "{cull:?}: the near field holds lights");
+            for (region, tile) in [(64, 8), (32, 8), (32, 4), (16, 16), (7, 3)] {
+                let (e, kept, _) = ctx.shade_near_in(near_r2, cull, &params, &s, region, tile);
+                for i in 0..brute.len() {
+                    assert_eq!(kept[i], brute[i].1, "{cull:?}: pixel {i}, region {region}, tile {tile}");
+                    assert!(
+                        (e[i] - brute[i].0).abs().max_element() <= 1e-5 * brute[i].0.max_element().max(1e-3),
+                        "{cull:?}: pixel {i}: {} vs {}",
+                        e[i],
+                        brute[i].0
+                    );
+                }
+            }
+        }
+    }
+
+    /// The culled near field is unbiased: its expectation over ξ equals the
+    /// unculled near field at every pixel, by stratified quadrature through
+    /// the real code (`shade_near` with `fixed_xi` at the midpoints of M
+    /// strata). Each light's term is `w·T/p` on the ξ interval where it is
+    /// kept (which ends at ξ = 1) and 0 elsewhere, so the midpoint rule
+    /// misses each light by at most 2 strata of `w·T/p`: the bound is `2/M`
+    /// of the near field with every light kept (ξ → 1), plus f32 summation.
+    /// The error bound is chosen so that culling drops most near lights.
+    #[test]
+    fn culled_near_field_expectation_equals_unculled() {
+        let ctx = VplContext::new(&Scene::cornell_box(), 24, 24, 256, None).unwrap();
+        let near_r2 = 16.0 * ctx.min_d2();
+        let s = VplSettings { error_bound: 0.02, ..VplSettings::default() };
+        let params = s.validate().unwrap();
+        let (truth, truth_kept, truth_evals) = ctx.shade_near(near_r2, Cull::None, &params, &s);
+        let fixed = |x: f32| ctx.shade_near(near_r2, Cull::Slc, &params, &VplSettings { fixed_xi: Some(x), ..s });
+        let all_kept = fixed(slc_core::range::Xi::MAX.get()).0;
+        const M: usize = 256;
+        let mut mean = vec![glam::DVec3::ZERO; truth.len()];
+        let (mut kept, mut listed) = (0u64, 0u64);
+        for j in 0..M {
+            let (e, k, evals) = fixed((j as f32 + 0.5) / M as f32);
+            for (m, v) in mean.iter_mut().zip(&e) {
+                *m += v.as_dvec3() / M as f64;
+            }
+            kept += k.iter().map(|&k| k as u64).sum::<u64>();
+            listed += evals;
+        }
+        let unculled = truth_kept.iter().map(|&k| k as u64).sum::<u64>() * M as u64;
+        assert!(
+            kept * 4 < unculled && listed < truth_evals * M as u64,
+            "culling must bite: kept {kept} of {unculled}, tested {listed} of {}",
+            truth_evals * M as u64
+        );
+        for i in 0..truth.len() {
+            let t = truth[i].as_dvec3();
+            let bound = all_kept[i].as_dvec3() * (2.0 / M as f64) + t.abs() * 1e-5 + 1e-12;
+            for c in 0..3 {
                 assert!(
-                    (e[i] - brute[i].0).abs().max_element() <= 1e-5 * brute[i].0.max_element().max(1e-3),
-                    "pixel {i}: {} vs {}",
-                    e[i],
-                    brute[i].0
+                    (mean[i][c] - t[c]).abs() <= bound[c],
+                    "pixel {i} channel {c}: E[culled] {} vs unculled {} (bound {})",
+                    mean[i][c],
+                    t[c],
+                    bound[c]
                 );
             }
         }

@@ -8,9 +8,9 @@
 //! ([`slc_core::interleave::vpl_near_weight`]).
 
 use glam::Vec3;
-use slc_core::interleave::{vpl_far_weight, vpl_near_weight};
+use slc_core::interleave::{vpl_far_fixed_share, vpl_far_slc_share, vpl_far_weight, vpl_near_cull_range2, vpl_near_fixed_share, vpl_near_slc_share};
 use slc_core::light::vpl_transfer;
-use slc_core::range::{clamp_keep, cull_radius, slc_keep, slc_weight};
+use slc_core::range::cull_radius;
 use slc_core::sphere::sphere_overlaps_aabb;
 
 pub use crate::simd::SimdPath;
@@ -24,11 +24,24 @@ pub enum Cull {
     Clamp,
     /// Every light counts.
     None,
-    /// The near field of the split: each light weighted by its near share
-    /// [`slc_core::interleave::vpl_near_weight`] (the other methods take
-    /// the rest, `1 − w`).
+    /// The near field of the split under a fixed range (`r²` holds the
+    /// clamp method's `R²`, or `∞`): each light weighted by its near share
+    /// [`slc_core::interleave::vpl_near_weight`] (the other modes take the
+    /// rest, `1 − w`).
     Near,
+    /// The near field culled by stochastic light culling at each VPL's own
+    /// flux (`rt2`, `r2` hold its own ranges,
+    /// [`slc_core::interleave::vpl_near_range2`]):
+    /// [`slc_core::interleave::vpl_near_slc_share`].
+    NearSlc,
 }
+
+/// [`Cull`] as the loop's const parameter.
+const SLC: u8 = 0;
+const CLAMP: u8 = 1;
+const NONE: u8 = 2;
+const NEAR: u8 = 3;
+const NEAR_SLC: u8 = 4;
 
 /// A list of VPLs in SoA layout (one entry per light, same index in every
 /// array). `rt2`/`r2` hold `r_t²` and `r²` for [`Cull::Slc`] and `R²` in
@@ -82,8 +95,20 @@ impl LightList {
     /// Appends one light; its culling sphere has radius
     /// [`slc_core::range::cull_radius`]`(r²)`.
     pub fn push(&mut self, p: Vec3, n: Vec3, flux: Vec3, rt2: f32, r2: f32) {
+        self.push_culled(p, n, flux, rt2, r2, r2);
+    }
+
+    /// Appends one light of the near field: its culling sphere has the
+    /// radius of its range cut at the near radius,
+    /// [`slc_core::interleave::vpl_near_cull_range2`]`(r², R_n²)`.
+    pub fn push_near(&mut self, p: Vec3, n: Vec3, flux: Vec3, rt2: f32, r2: f32, near_r2: f32) {
+        self.push_culled(p, n, flux, rt2, r2, vpl_near_cull_range2(r2, near_r2));
+    }
+
+    /// Appends one light whose culling sphere has squared radius `cull_r2`.
+    fn push_culled(&mut self, p: Vec3, n: Vec3, flux: Vec3, rt2: f32, r2: f32, cull_r2: f32) {
         self.real = self.len() + 1;
-        self.radius.push(cull_radius(r2));
+        self.radius.push(cull_radius(cull_r2));
         self.px.push(p.x);
         self.py.push(p.y);
         self.pz.push(p.z);
@@ -284,10 +309,11 @@ pub fn shade_all(list: &LightList, receivers: &[(Vec3, Vec3)], min_d2: f32, near
 pub fn shade_all_on(path: SimdPath, list: &LightList, receivers: &[(Vec3, Vec3)], min_d2: f32, near_r2: f32, cull: Cull, out: &mut Vec<(Vec3, u32)>) {
     let at = At { list, receivers, min_d2, near_r2, out };
     match cull {
-        Cull::Slc => path.run(ShadeOp::<0>(at)),
-        Cull::Clamp => path.run(ShadeOp::<1>(at)),
-        Cull::None => path.run(ShadeOp::<2>(at)),
-        Cull::Near => path.run(ShadeOp::<3>(at)),
+        Cull::Slc => path.run(ShadeOp::<SLC>(at)),
+        Cull::Clamp => path.run(ShadeOp::<CLAMP>(at)),
+        Cull::None => path.run(ShadeOp::<NONE>(at)),
+        Cull::Near => path.run(ShadeOp::<NEAR>(at)),
+        Cull::NearSlc => path.run(ShadeOp::<NEAR_SLC>(at)),
     }
 }
 
@@ -319,25 +345,47 @@ impl<const MODE: u8> pulp::WithSimd for ShadeOp<'_, MODE> {
     }
 }
 
-/// One light's weighted transfer and keep flag (0 or 1) at `x`.
+/// The per-VPL term: irradiance per unit flux at the receiver `(x, n)`
+/// from the VPL at `p` with normal `nl`, the Lambertian transfer
+/// [`slc_core::light::vpl_transfer`]. The one place a receiver's BRDF
+/// enters the loop: a view-dependent BRDF replaces this function (and the
+/// flux it multiplies); culling and the near/far partition are
+/// [`cull_share`]'s.
+#[inline(always)]
+fn transfer(p: Vec3, nl: Vec3, x: Vec3, n: Vec3, min_d2: f32) -> f32 {
+    vpl_transfer(nl, n, x - p, min_d2)
+}
+
+/// What the loop multiplies a light's transfer by under culling mode
+/// `MODE` (a [`Cull`] as `u8`), from slc-core's shared functions: the keep
+/// test, the `1/p` weight and the near or far share of the split; 0 where
+/// the light is culled (padding entries, `r² = 0`, always are).
+#[inline(always)]
+fn cull_share<const MODE: u8>(rt2: f32, r2: f32, d2: f32, near_r2: f32) -> f32 {
+    match MODE {
+        SLC => vpl_far_slc_share(rt2, r2, d2, near_r2),
+        // Clamp: r² = R².
+        CLAMP => vpl_far_fixed_share(r2, d2, near_r2),
+        // Unculled: the far share alone (no range to load or test).
+        NONE => vpl_far_weight(d2, near_r2),
+        // The near field at the VPL's own flux: r_t², r² its own ranges.
+        NEAR_SLC => vpl_near_slc_share(rt2, r2, d2, near_r2),
+        // The near field under a fixed range (clamp R², or ∞).
+        _ => vpl_near_fixed_share(r2, d2, near_r2),
+    }
+}
+
+/// One light's weighted transfer and keep flag (0 or 1) at `x`. Every
+/// test is evaluated unconditionally so the loop stays branch-free (the
+/// keep test is a coin flip per light: branches mispredict).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn term<const MODE: u8>(p: Vec3, nl: Vec3, rt2: f32, r2: f32, x: Vec3, n: Vec3, min_d2: f32, near_r2: f32) -> (f32, f32) {
     let v = x - p;
-    let t = vpl_transfer(nl, n, v, min_d2);
     let d2 = v.x * v.x + v.y * v.y + v.z * v.z;
-    // Every test evaluated unconditionally so the loop stays branch-free
-    // (the keep test is a coin flip per light: branches mispredict).
-    let near = vpl_near_weight(d2, near_r2);
-    let far = vpl_far_weight(d2, near_r2);
-    let (keep, w) = match MODE {
-        0 => (slc_keep(r2, d2) & (far > 0.0), t * slc_weight(rt2, d2) * far),
-        1 => (clamp_keep(r2, d2) & (far > 0.0), t * far),
-        2 => (far > 0.0, t * far),
-        // r² = R_n² (0 for padding, which is never kept).
-        _ => (clamp_keep(r2, d2) & (near > 0.0), t * near),
-    };
-    (if keep { w } else { 0.0 }, if keep { 1.0 } else { 0.0 })
+    let share = cull_share::<MODE>(rt2, r2, d2, near_r2);
+    let kept = share > 0.0;
+    (if kept { transfer(p, nl, x, n, min_d2) * share } else { 0.0 }, if kept { 1.0 } else { 0.0 })
 }
 
 /// `L` consecutive entries of one SoA array.

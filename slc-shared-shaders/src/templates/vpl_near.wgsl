@@ -1,15 +1,24 @@
 {% include "header.wgsl" %}
 {% include "lights.wgsl" %}
-// The near field of the VPL split (slc_core::interleave): every pixel adds
-// the near share vpl_near_weight of every VPL closer than R_n, at the VPL's
-// own flux (the light buffer holds flux x P^2), to the irradiance vpl_tiled
-// wrote (after the denoise, which filters only the interleaved far field).
+// The near field of the VPL split (slc_core::interleave) with {{ method }}
+// culling: every pixel adds the near share vpl_near_weight of every VPL
+// closer than R_n, at the VPL's own flux (the light buffer holds flux x P^2),
+// to the irradiance vpl_tiled wrote (after the denoise, which filters only
+// the interleaved far field), culled as vpl_tiled culls the far field:
+{% if method == "slc" %}
+// stochastic light culling at the VPL's own ranges (vpl_near_range2 of the
+// interleaved light's r_t^2, r^2: the same xi), vpl_near_slc_share (unbiased).
+{% elif method == "clamp" %}
+// at the clamp range R (r2 holds R^2), vpl_near_fixed_share.
+{% else %}
+// not at all (r2 holds a range beyond every distance), vpl_near_fixed_share.
+{% endif %}
 // Workgroup (x, y) is a {{ tile }}x{{ tile }} tile of full-resolution pixels: the
 // box of its G-buffer positions is reduced in workgroup memory; then, a
 // chunk of NEAR_CHUNK near blocks at a time, one thread per block tests the
 // block's box (widened by R_n) and, where it meets the tile's box, puts
-// the block's VPLs whose sphere of radius R_n meets it into a list every
-// pixel loops over.
+// the block's VPLs whose culling sphere (radius min(r, R_n),
+// vpl_near_cull_range2) meets it into a list every pixel loops over.
 
 const P: u32 = {{ period }}u;
 const TILE: u32 = {{ tile }}u;
@@ -26,8 +35,20 @@ const NEAR_CHUNK: u32 = {% if tile * tile < 32 %}THREADS{% elif tile > 8 %}16u{%
 @group(0) @binding(3) var<storage, read> lights: array<GpuLight>;
 @group(0) @binding(4) var<storage, read> near_slots: array<u32>;
 @group(0) @binding(5) var<storage, read> near_boxes: array<GpuNearBox>;
-@group(0) @binding(6) var<storage, read_write> irradiance: array<vec4f>;
+@group(0) @binding(6) var<storage, read> rt2: array<f32>;
+@group(0) @binding(7) var<storage, read> r2: array<f32>;
+@group(0) @binding(8) var<storage, read_write> irradiance: array<vec4f>;
 @group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+
+/// The r^2 the near field keeps light `slot` by: its own range at the VPL's
+/// flux (slc), or the interleaved light's fixed range (clamp, none).
+fn near_r2_of(slot: u32) -> f32 {
+{% if method == "slc" %}
+    return vpl_near_range2(r2[slot], P);
+{% else %}
+    return r2[slot];
+{% endif %}
+}
 
 var<workgroup> light_count: atomic<u32>;
 var<workgroup> light_list: array<u32, NEAR_CHUNK * NEAR_BLOCK>;
@@ -69,7 +90,8 @@ fn main(
                 for (var m = 0u; m < NEAR_BLOCK; m++) {
                     let slot = near_slots[b * NEAR_BLOCK + m];
                     let l = lights[slot];
-                    if any(l.intensity != vec3f(0.0)) && sphere_overlaps_aabb(l.p0, radius, lo, hi) {
+                    let cull = cull_radius(vpl_near_cull_range2(near_r2_of(slot), params.near_r2));
+                    if any(l.intensity != vec3f(0.0)) && sphere_overlaps_aabb(l.p0, cull, lo, hi) {
                         light_list[atomicAdd(&light_count, 1u)] = slot;
                     }
                 }
@@ -78,11 +100,16 @@ fn main(
         let count = workgroupUniformLoad(&light_count);
         if valid {
             for (var m = 0u; m < count; m++) {
-                let l = lights[light_list[m]];
+                let slot = light_list[m];
+                let l = lights[slot];
                 let v = pos.xyz - l.p0;
-                let near = vpl_near_weight(dot(v, v), params.near_r2);
-                if near > 0.0 {
-                    e += l.intensity * (vpl_transfer(l.p1, nrm, v, params.min_d2) * near * unscale);
+{% if method == "slc" %}
+                let share = vpl_near_slc_share(vpl_near_range2(rt2[slot], P), near_r2_of(slot), dot(v, v), params.near_r2);
+{% else %}
+                let share = vpl_near_fixed_share(r2[slot], dot(v, v), params.near_r2);
+{% endif %}
+                if share > 0.0 {
+                    e += l.intensity * (vpl_transfer(l.p1, nrm, v, params.min_d2) * share * unscale);
                     kept += 1u;
                 }
             }

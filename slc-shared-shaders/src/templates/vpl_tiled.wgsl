@@ -8,7 +8,8 @@
 // subset's range spheres are culled against it into a workgroup list (a
 // chunk of the subset at a time), then each pixel loops over the list with
 // the keep test and 1/p weight. Each light's transfer is weighted by its far
-// share vpl_far_weight (the near share is vpl_near's).
+// share vpl_far_weight (the near share is vpl_near's): vpl_far_slc_share,
+// vpl_far_fixed_share.
 
 const P: u32 = {{ period }}u;
 const TILE: u32 = {{ tile }}u;
@@ -51,9 +52,10 @@ fn main(
         for (var j = base; j < base + params.lights_per_subset; j++) {
             let l = lights[j];
             let v = pos.xyz - l.p0;
-            let far = vpl_far_weight(dot(v, v), params.near_r2);
-            if far > 0.0 {
-                e += l.intensity * (vpl_transfer(l.p1, nrm, v, params.min_d2) * far);
+            // Unculled: the far share alone.
+            let share = vpl_far_weight(dot(v, v), params.near_r2);
+            if share > 0.0 {
+                e += l.intensity * (vpl_transfer(l.p1, nrm, v, params.min_d2) * share);
                 kept += 1u;
             }
         }
@@ -81,20 +83,15 @@ fn main(
                 let j = base + tile_lights[k];
                 let l = lights[j];
                 let v = pos.xyz - l.p0;
-                let t = vpl_transfer(l.p1, nrm, v, params.min_d2);
-                let d2 = dot(v, v);
-                let far = vpl_far_weight(d2, params.near_r2);
 {% if method == "slc" %}
-                if slc_keep(r2[j], d2) && far > 0.0 {
-                    e += l.intensity * (t * slc_weight(rt2[j], d2) * far);
-                    kept += 1u;
-                }
+                let share = vpl_far_slc_share(rt2[j], r2[j], dot(v, v), params.near_r2);
 {% else %}
-                if clamp_keep(r2[j], d2) && far > 0.0 {
-                    e += l.intensity * (t * far);
+                let share = vpl_far_fixed_share(r2[j], dot(v, v), params.near_r2);
+{% endif %}
+                if share > 0.0 {
+                    e += l.intensity * (vpl_transfer(l.p1, nrm, v, params.min_d2) * share);
                     kept += 1u;
                 }
-{% endif %}
             }
         }
         // Every thread is done with the list before the next chunk refills it.

@@ -261,10 +261,10 @@ fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_2: bool;
 
     let v_14 = (x_4 - y);
-    let d2_12 = dot(v_14, v_14);
-    let _e7 = slc_keep(r2_5, d2_12);
+    let d2_16 = dot(v_14, v_14);
+    let _e7 = slc_keep(r2_5, d2_16);
     if !(!(_e7)) {
-        local_1 = !((d2_12 > 0f));
+        local_1 = !((d2_16 > 0f));
     } else {
         local_1 = true;
     }
@@ -272,7 +272,7 @@ fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_11 = (v_14 / vec3(sqrt(d2_12)));
+    let w_11 = (v_14 / vec3(sqrt(d2_16)));
     let cos_x_1 = -(dot(n, w_11));
     if !((cos_x_1 <= 0f)) {
         local_2 = (dot(ng, w_11) >= 0f);
@@ -941,12 +941,12 @@ fn subtended_cos(dist2_: f32, r2_6: f32) -> f32 {
 fn emitter_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, cos_o: f32, cos_e: f32, p: vec3<f32>) -> f32 {
     let v_15 = (p - center);
     let dist2_1 = dot(v_15, v_15);
-    let r2_7 = (radius * radius);
-    let d2_13 = max(max(dist2_1, r2_7), MIN_D2_);
+    let r2_11 = (radius * radius);
+    let d2_17 = max(max(dist2_1, r2_11), MIN_D2_);
     let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_15 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_3);
     let _e27 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e28 = subtended_cos(dist2_1, r2_7);
+    let _e28 = subtended_cos(dist2_1, r2_11);
     let _e32 = safe_sqrt((1f - (_e28 * _e28)));
     let _e36 = safe_sqrt((1f - (cos_o * cos_o)));
     let _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
@@ -955,7 +955,7 @@ fn emitter_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>,
     if (_e39 <= cos_e) {
         return 0f;
     }
-    return ((phi * _e39) / d2_13);
+    return ((phi * _e39) / d2_17);
 }
 
 fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d_1: vec3<f32>) -> f32 {
@@ -1279,6 +1279,41 @@ fn vpl_far_weight(d2_11: f32, near_r2_1: f32) -> f32 {
     return (1f - _e2);
 }
 
+fn vpl_far_slc_share(rt2_7: f32, r2_7: f32, d2_12: f32, near_r2_2: f32) -> f32 {
+    let _e4 = vpl_far_weight(d2_12, near_r2_2);
+    let _e5 = slc_weight(rt2_7, d2_12);
+    let _e7 = slc_keep(r2_7, d2_12);
+    return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
+}
+
+fn vpl_far_fixed_share(range2_2: f32, d2_13: f32, near_r2_3: f32) -> f32 {
+    let _e3 = vpl_far_weight(d2_13, near_r2_3);
+    let _e4 = clamp_keep(range2_2, d2_13);
+    return select(0f, _e3, (_e4 & (_e3 > 0f)));
+}
+
+fn vpl_near_range2_(r2_8: f32, period_6: u32) -> f32 {
+    let _e2 = interleave_flux_scale(period_6);
+    return (r2_8 / _e2);
+}
+
+fn vpl_near_cull_range2_(r2_9: f32, near_r2_4: f32) -> f32 {
+    return min(r2_9, near_r2_4);
+}
+
+fn vpl_near_slc_share(rt2_8: f32, r2_10: f32, d2_14: f32, near_r2_5: f32) -> f32 {
+    let _e4 = vpl_near_weight(d2_14, near_r2_5);
+    let _e5 = slc_weight(rt2_8, d2_14);
+    let _e7 = slc_keep(r2_10, d2_14);
+    return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
+}
+
+fn vpl_near_fixed_share(range2_3: f32, d2_15: f32, near_r2_6: f32) -> f32 {
+    let _e3 = vpl_near_weight(d2_15, near_r2_6);
+    let _e4 = clamp_keep(range2_3, d2_15);
+    return select(0f, _e3, (_e4 & (_e3 > 0f)));
+}
+
 fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: f32, w_9: f32, h: f32) -> vec3<f32> {
     let sx = (((2f * px) / w_9) - 1f);
     let sy = (1f - ((2f * py) / h));
@@ -1365,9 +1400,9 @@ fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
 }
 
 fn point_irradiance(intensity_1: vec3<f32>, n_26: vec3<f32>, v_9: vec3<f32>) -> vec3<f32> {
-    let d2_14 = dot(v_9, v_9);
-    let cos_x_2 = (dot(n_26, v_9) / sqrt(max(d2_14, MIN_D2_)));
-    let _e11 = inverse_square(d2_14);
+    let d2_18 = dot(v_9, v_9);
+    let cos_x_2 = (dot(n_26, v_9) / sqrt(max(d2_18, MIN_D2_)));
+    let _e11 = inverse_square(d2_18);
     return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }
 

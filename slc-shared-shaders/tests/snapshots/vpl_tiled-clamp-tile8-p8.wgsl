@@ -110,6 +110,12 @@ fn vpl_far_weight(d2_2: f32, near_r2_1: f32) -> f32 {
     return (1f - _e2);
 }
 
+fn vpl_far_fixed_share(range2_1: f32, d2_3: f32, near_r2_2: f32) -> f32 {
+    let _e3 = vpl_far_weight(d2_3, near_r2_2);
+    let _e4 = clamp_keep(range2_1, d2_3);
+    return select(0f, _e3, (_e4 & (_e3 > 0f)));
+}
+
 fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
     var stride: u32 = 32u;
 
@@ -157,7 +163,6 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     var first: u32 = 0u;
     var j: u32;
     var k: u32;
-    var local_2: bool;
 
     let sub = wg.z;
     let px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
@@ -251,44 +256,36 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                         let l = lights[j_1];
                         let _e139 = pos;
                         let v_2 = (_e139.xyz - l.p0_);
-                        let _e144 = nrm;
-                        let _e147 = params.min_d2_;
-                        let _e148 = vpl_transfer(l.p1_, _e144, v_2, _e147);
-                        let d2_3 = dot(v_2, v_2);
-                        let _e152 = params.near_r2_;
-                        let _e153 = vpl_far_weight(d2_3, _e152);
-                        let _e156 = r2_1[j_1];
-                        let _e157 = clamp_keep(_e156, d2_3);
-                        if _e157 {
-                            local_2 = (_e153 > 0f);
-                        } else {
-                            local_2 = false;
-                        }
-                        let _e163 = local_2;
-                        if _e163 {
-                            let _e164 = e;
-                            e = (_e164 + (l.intensity * (_e148 * _e153)));
-                            let _e169 = kept;
-                            kept = (_e169 + 1u);
+                        let _e145 = r2_1[j_1];
+                        let _e149 = params.near_r2_;
+                        let _e150 = vpl_far_fixed_share(_e145, dot(v_2, v_2), _e149);
+                        if (_e150 > 0f) {
+                            let _e153 = e;
+                            let _e156 = nrm;
+                            let _e159 = params.min_d2_;
+                            let _e160 = vpl_transfer(l.p1_, _e156, v_2, _e159);
+                            e = (_e153 + (l.intensity * (_e160 * _e150)));
+                            let _e164 = kept;
+                            kept = (_e164 + 1u);
                         }
                     }
                     continuing {
-                        let _e173 = k;
-                        k = (_e173 + 1u);
+                        let _e168 = k;
+                        k = (_e168 + 1u);
                     }
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e175 = first;
-            first = (_e175 + MAX_TILE_LIGHTS);
+            let _e170 = first;
+            first = (_e170 + MAX_TILE_LIGHTS);
         }
     }
     if valid {
-        let _e180 = e;
-        let _e181 = kept;
-        irradiance[pix] = vec4<f32>(_e180, f32(_e181));
+        let _e175 = e;
+        let _e176 = kept;
+        irradiance[pix] = vec4<f32>(_e175, f32(_e176));
         return;
     } else {
         return;

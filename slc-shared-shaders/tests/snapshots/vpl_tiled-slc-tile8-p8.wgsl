@@ -72,9 +72,9 @@ var<storage> gb_normal: array<vec4<f32>>;
 @group(0) @binding(3) 
 var<storage> lights: array<GpuLight>;
 @group(0) @binding(4) 
-var<storage> rt2_1: array<f32>;
+var<storage> rt2_2: array<f32>;
 @group(0) @binding(5) 
-var<storage> r2_2: array<f32>;
+var<storage> r2_3: array<f32>;
 @group(0) @binding(6) 
 var<storage, read_write> irradiance: array<vec4<f32>>;
 var<workgroup> tile_count: atomic<u32>;
@@ -117,6 +117,13 @@ fn vpl_near_weight(d2_2: f32, near_r2_: f32) -> f32 {
 fn vpl_far_weight(d2_3: f32, near_r2_1: f32) -> f32 {
     let _e2 = vpl_near_weight(d2_3, near_r2_1);
     return (1f - _e2);
+}
+
+fn vpl_far_slc_share(rt2_1: f32, r2_2: f32, d2_4: f32, near_r2_2: f32) -> f32 {
+    let _e4 = vpl_far_weight(d2_4, near_r2_2);
+    let _e5 = slc_weight(rt2_1, d2_4);
+    let _e7 = slc_keep(r2_2, d2_4);
+    return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
 }
 
 fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
@@ -166,7 +173,6 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     var first: u32 = 0u;
     var j: u32;
     var k: u32;
-    var local_2: bool;
 
     let sub = wg.z;
     let px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
@@ -227,7 +233,7 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                     let _e100 = j;
                     let _e104 = lights[(base + _e100)].p0_;
                     let _e106 = j;
-                    let _e109 = r2_2[(base + _e106)];
+                    let _e109 = r2_3[(base + _e106)];
                     let _e110 = cull_radius(_e109);
                     let _e111 = sphere_overlaps_aabb(_e104, _e110, lo, hi);
                     if _e111 {
@@ -260,46 +266,37 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                         let l = lights[j_1];
                         let _e139 = pos;
                         let v_2 = (_e139.xyz - l.p0_);
-                        let _e144 = nrm;
-                        let _e147 = params.min_d2_;
-                        let _e148 = vpl_transfer(l.p1_, _e144, v_2, _e147);
-                        let d2_4 = dot(v_2, v_2);
+                        let _e145 = rt2_2[j_1];
+                        let _e148 = r2_3[j_1];
                         let _e152 = params.near_r2_;
-                        let _e153 = vpl_far_weight(d2_4, _e152);
-                        let _e156 = r2_2[j_1];
-                        let _e157 = slc_keep(_e156, d2_4);
-                        if _e157 {
-                            local_2 = (_e153 > 0f);
-                        } else {
-                            local_2 = false;
-                        }
-                        let _e163 = local_2;
-                        if _e163 {
-                            let _e164 = e;
-                            let _e168 = rt2_1[j_1];
-                            let _e169 = slc_weight(_e168, d2_4);
-                            e = (_e164 + (l.intensity * ((_e148 * _e169) * _e153)));
-                            let _e174 = kept;
-                            kept = (_e174 + 1u);
+                        let _e153 = vpl_far_slc_share(_e145, _e148, dot(v_2, v_2), _e152);
+                        if (_e153 > 0f) {
+                            let _e156 = e;
+                            let _e159 = nrm;
+                            let _e162 = params.min_d2_;
+                            let _e163 = vpl_transfer(l.p1_, _e159, v_2, _e162);
+                            e = (_e156 + (l.intensity * (_e163 * _e153)));
+                            let _e167 = kept;
+                            kept = (_e167 + 1u);
                         }
                     }
                     continuing {
-                        let _e178 = k;
-                        k = (_e178 + 1u);
+                        let _e171 = k;
+                        k = (_e171 + 1u);
                     }
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e180 = first;
-            first = (_e180 + MAX_TILE_LIGHTS);
+            let _e173 = first;
+            first = (_e173 + MAX_TILE_LIGHTS);
         }
     }
     if valid {
-        let _e185 = e;
-        let _e186 = kept;
-        irradiance[pix] = vec4<f32>(_e185, f32(_e186));
+        let _e178 = e;
+        let _e179 = kept;
+        irradiance[pix] = vec4<f32>(_e178, f32(_e179));
         return;
     } else {
         return;

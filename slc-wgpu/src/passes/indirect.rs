@@ -245,7 +245,8 @@ pub struct IndirectPass {
     update: Pipe,
     tiled: Vec<(CullMethod, wgpu::ComputePipeline)>,
     denoise: Pipe,
-    near: Pipe,
+    /// `vpl_near` per culling method (its ranges culled as the far field's).
+    near: Vec<(CullMethod, wgpu::ComputePipeline)>,
     export: Pipe,
     view: UniformSlots,
     pack_params: UniformSlots,
@@ -327,8 +328,11 @@ impl IndirectPass {
         check_kernels(gpu, &kernels.map(|k| (k, &base, 0)))?;
         let mut tiled = Vec::new();
         let tiled_layout = KernelLayout::new(gpu, Kernel::VplTiled, &base)?;
+        let near_layout = KernelLayout::new(gpu, Kernel::VplNear, &base)?;
+        let mut near = Vec::new();
         for m in [CullMethod::Slc, CullMethod::Clamp, CullMethod::None] {
             tiled.push((m, tiled_layout.pipeline(gpu, &Features { method: m, ..base }, None)?));
+            near.push((m, near_layout.pipeline(gpu, &Features { method: m, ..base }, None)?));
         }
         let pixels = w as u64 * h as u64 * 16;
         let rw = wgpu::BufferUsages::STORAGE;
@@ -352,7 +356,6 @@ impl IndirectPass {
         let pack = Pipe::new(gpu, Kernel::VplPack, &base)?;
         let update = Pipe::new(gpu, Kernel::LightUpdate, &base)?;
         let denoise = Pipe::new(gpu, Kernel::VplDenoise, &base)?;
-        let near = Pipe::new(gpu, Kernel::VplNear, &base)?;
         let export = Pipe::new(gpu, Kernel::IrradianceExport, &base)?;
         let b = crate::kernel::whole;
         let update_group = update.layout.group(gpu, 0, &[("params", frame_params.binding()), ("ids", b(&ids)), ("rt2", b(&rt2)), ("r2", b(&r2))]);
@@ -381,7 +384,7 @@ impl IndirectPass {
             ],
         );
         let near_group = |target: &wgpu::Buffer| {
-            near.layout.group(
+            near_layout.group(
                 gpu,
                 0,
                 &[
@@ -391,6 +394,8 @@ impl IndirectPass {
                     ("lights", b(&lights)),
                     ("near_slots", b(&near_slots)),
                     ("near_boxes", b(&near_boxes)),
+                    ("rt2", b(&rt2)),
+                    ("r2", b(&r2)),
                     ("irradiance", b(target)),
                 ],
             )
@@ -597,6 +602,7 @@ impl IndirectPass {
             Culling::None => CullMethod::None,
         };
         let tiled = &self.tiled.iter().find(|(m, _)| *m == method).ok_or(GpuError::Setting("unknown method".into()))?.1;
+        let near = &self.near.iter().find(|(m, _)| *m == method).ok_or(GpuError::Setting("unknown method".into()))?.1;
         let (gx, gy) = (w.div_ceil(TILE), h.div_ceil(TILE));
         let (sub_w, sub_h) = (w.div_ceil(PERIOD), h.div_ceil(PERIOD));
         let off = |s: &UniformSlots| Some(s.offset(slot));
@@ -620,7 +626,7 @@ impl IndirectPass {
         }
         if near_r2 > 0.0 {
             let g = self.near_groups[st.denoise as usize].clone();
-            out.push(d(Stage::NearField, &self.near.pipeline, g, off(&self.vpl_params), [gx, gy, 1]));
+            out.push(d(Stage::NearField, near, g, off(&self.vpl_params), [gx, gy, 1]));
         }
         out.push(d(Stage::IrradianceExport, &self.export.pipeline, export_group, off(&self.view), [gx, gy, 1]));
         Ok(out)

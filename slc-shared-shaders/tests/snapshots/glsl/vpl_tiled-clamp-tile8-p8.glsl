@@ -116,6 +116,12 @@ float vpl_far_weight(float d2_2, float near_r2_1) {
     return (1.0 - _e2);
 }
 
+float vpl_far_fixed_share(float range2_1, float d2_3, float near_r2_2) {
+    float _e3 = vpl_far_weight(d2_3, near_r2_2);
+    bool _e4 = clamp_keep(range2_1, d2_3);
+    return ((_e4 && (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
 WorkgroupBox workgroup_box(uint li_1, vec3 p, bool has) {
     uint stride = 32u;
     wg_lo[li_1] = (has ? p : vec3(3.4028235e38));
@@ -176,7 +182,6 @@ void main() {
     uint first = 0u;
     uint j = 0u;
     uint k = 0u;
-    bool local_2 = false;
     uint sub = wg.z;
     uint px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
     uint py = ((sub / P) + (((wg.y * TILE) + lid.y) * P));
@@ -212,8 +217,8 @@ void main() {
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e175 = first;
-            first = (_e175 + MAX_TILE_LIGHTS);
+            uint _e170 = first;
+            first = (_e170 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
         uint _e78 = first;
@@ -272,8 +277,8 @@ void main() {
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e173 = k;
-                        k = (_e173 + 1u);
+                        uint _e168 = k;
+                        k = (_e168 + 1u);
                     }
                     loop_init_3 = false;
                     uint _e129 = k;
@@ -288,25 +293,17 @@ void main() {
                         GpuLight l = _group_0_binding_3_cs[j_1];
                         vec4 _e139 = pos;
                         vec3 v_2 = (_e139.xyz - l.p0_);
-                        vec3 _e144 = nrm;
-                        float _e147 = _group_0_binding_0_cs.min_d2_;
-                        float _e148 = vpl_transfer(l.p1_, _e144, v_2, _e147);
-                        float d2_3 = dot(v_2, v_2);
-                        float _e152 = _group_0_binding_0_cs.near_r2_;
-                        float _e153 = vpl_far_weight(d2_3, _e152);
-                        float _e156 = _group_0_binding_5_cs[j_1];
-                        bool _e157 = clamp_keep(_e156, d2_3);
-                        if (_e157) {
-                            local_2 = (_e153 > 0.0);
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e163 = local_2;
-                        if (_e163) {
-                            vec3 _e164 = e;
-                            e = (_e164 + (l.intensity * (_e148 * _e153)));
-                            uint _e169 = kept;
-                            kept = (_e169 + 1u);
+                        float _e145 = _group_0_binding_5_cs[j_1];
+                        float _e149 = _group_0_binding_0_cs.near_r2_;
+                        float _e150 = vpl_far_fixed_share(_e145, dot(v_2, v_2), _e149);
+                        if ((_e150 > 0.0)) {
+                            vec3 _e153 = e;
+                            vec3 _e156 = nrm;
+                            float _e159 = _group_0_binding_0_cs.min_d2_;
+                            float _e160 = vpl_transfer(l.p1_, _e156, v_2, _e159);
+                            e = (_e153 + (l.intensity * (_e160 * _e150)));
+                            uint _e164 = kept;
+                            kept = (_e164 + 1u);
                         }
                     }
                 }
@@ -316,9 +313,9 @@ void main() {
         }
     }
     if (valid) {
-        vec3 _e180 = e;
-        uint _e181 = kept;
-        _group_0_binding_6_cs[pix] = vec4(_e180, float(_e181));
+        vec3 _e175 = e;
+        uint _e176 = kept;
+        _group_0_binding_6_cs[pix] = vec4(_e175, float(_e176));
         return;
     } else {
         return;

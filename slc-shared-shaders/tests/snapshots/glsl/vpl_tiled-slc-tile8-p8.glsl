@@ -125,6 +125,13 @@ float vpl_far_weight(float d2_3, float near_r2_1) {
     return (1.0 - _e2);
 }
 
+float vpl_far_slc_share(float rt2_1, float r2_2, float d2_4, float near_r2_2) {
+    float _e4 = vpl_far_weight(d2_4, near_r2_2);
+    float _e5 = slc_weight(rt2_1, d2_4);
+    bool _e7 = slc_keep(r2_2, d2_4);
+    return ((_e7 && (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
 WorkgroupBox workgroup_box(uint li_1, vec3 p, bool has) {
     uint stride = 32u;
     wg_lo[li_1] = (has ? p : vec3(3.4028235e38));
@@ -185,7 +192,6 @@ void main() {
     uint first = 0u;
     uint j = 0u;
     uint k = 0u;
-    bool local_2 = false;
     uint sub = wg.z;
     uint px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
     uint py = ((sub / P) + (((wg.y * TILE) + lid.y) * P));
@@ -221,8 +227,8 @@ void main() {
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e180 = first;
-            first = (_e180 + MAX_TILE_LIGHTS);
+            uint _e173 = first;
+            first = (_e173 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
         uint _e78 = first;
@@ -281,8 +287,8 @@ void main() {
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e178 = k;
-                        k = (_e178 + 1u);
+                        uint _e171 = k;
+                        k = (_e171 + 1u);
                     }
                     loop_init_3 = false;
                     uint _e129 = k;
@@ -297,27 +303,18 @@ void main() {
                         GpuLight l = _group_0_binding_3_cs[j_1];
                         vec4 _e139 = pos;
                         vec3 v_2 = (_e139.xyz - l.p0_);
-                        vec3 _e144 = nrm;
-                        float _e147 = _group_0_binding_0_cs.min_d2_;
-                        float _e148 = vpl_transfer(l.p1_, _e144, v_2, _e147);
-                        float d2_4 = dot(v_2, v_2);
+                        float _e145 = _group_0_binding_4_cs[j_1];
+                        float _e148 = _group_0_binding_5_cs[j_1];
                         float _e152 = _group_0_binding_0_cs.near_r2_;
-                        float _e153 = vpl_far_weight(d2_4, _e152);
-                        float _e156 = _group_0_binding_5_cs[j_1];
-                        bool _e157 = slc_keep(_e156, d2_4);
-                        if (_e157) {
-                            local_2 = (_e153 > 0.0);
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e163 = local_2;
-                        if (_e163) {
-                            vec3 _e164 = e;
-                            float _e168 = _group_0_binding_4_cs[j_1];
-                            float _e169 = slc_weight(_e168, d2_4);
-                            e = (_e164 + (l.intensity * ((_e148 * _e169) * _e153)));
-                            uint _e174 = kept;
-                            kept = (_e174 + 1u);
+                        float _e153 = vpl_far_slc_share(_e145, _e148, dot(v_2, v_2), _e152);
+                        if ((_e153 > 0.0)) {
+                            vec3 _e156 = e;
+                            vec3 _e159 = nrm;
+                            float _e162 = _group_0_binding_0_cs.min_d2_;
+                            float _e163 = vpl_transfer(l.p1_, _e159, v_2, _e162);
+                            e = (_e156 + (l.intensity * (_e163 * _e153)));
+                            uint _e167 = kept;
+                            kept = (_e167 + 1u);
                         }
                     }
                 }
@@ -327,9 +324,9 @@ void main() {
         }
     }
     if (valid) {
-        vec3 _e185 = e;
-        uint _e186 = kept;
-        _group_0_binding_6_cs[pix] = vec4(_e185, float(_e186));
+        vec3 _e178 = e;
+        uint _e179 = kept;
+        _group_0_binding_6_cs[pix] = vec4(_e178, float(_e179));
         return;
     } else {
         return;

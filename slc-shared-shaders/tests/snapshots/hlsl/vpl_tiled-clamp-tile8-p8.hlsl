@@ -112,6 +112,13 @@ float vpl_far_weight(float d2_2, float near_r2_1)
     return (1.0 - _e2);
 }
 
+float vpl_far_fixed_share(float range2_1, float d2_3, float near_r2_2)
+{
+    const float _e3 = vpl_far_weight(d2_3, near_r2_2);
+    const bool _e4 = clamp_keep(range2_1, d2_3);
+    return ((_e4 & (_e3 > 0.0)) ? _e3 : 0.0);
+}
+
 uint naga_div(uint lhs, uint rhs) {
     return lhs / (rhs == 0u ? 1u : rhs);
 }
@@ -202,7 +209,6 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     uint first = 0u;
     uint j = (uint)0;
     uint k = (uint)0;
-    bool local_2 = (bool)0;
 
     uint sub = wg.z;
     uint px = (naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P));
@@ -242,8 +248,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e175 = first;
-            first = (_e175 + MAX_TILE_LIGHTS);
+            uint _e170 = first;
+            first = (_e170 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
         uint _e78 = first;
@@ -305,8 +311,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e173 = k;
-                        k = (_e173 + 1u);
+                        uint _e168 = k;
+                        k = (_e168 + 1u);
                     }
                     loop_init_3 = false;
                     uint _e129 = k;
@@ -321,25 +327,17 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         GpuLight l = ConstructGpuLight(asfloat(lights.Load3(j_1*64+0)), asuint(lights.Load(j_1*64+12)), asfloat(lights.Load3(j_1*64+16)), asfloat(lights.Load(j_1*64+28)), asfloat(lights.Load3(j_1*64+32)), asfloat(lights.Load(j_1*64+44)), asfloat(lights.Load3(j_1*64+48)), asuint(lights.Load(j_1*64+60)));
                         float4 _e139 = pos;
                         float3 v_2 = (_e139.xyz - l.p0_);
-                        float3 _e144 = nrm;
-                        float _e147 = params.min_d2_;
-                        const float _e148 = vpl_transfer(l.p1_, _e144, v_2, _e147);
-                        float d2_3 = dot(v_2, v_2);
-                        float _e152 = params.near_r2_;
-                        const float _e153 = vpl_far_weight(d2_3, _e152);
-                        float _e156 = asfloat(r2_1.Load(j_1*4));
-                        const bool _e157 = clamp_keep(_e156, d2_3);
-                        if (_e157) {
-                            local_2 = (_e153 > 0.0);
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e163 = local_2;
-                        if (_e163) {
-                            float3 _e164 = e;
-                            e = (_e164 + (l.intensity * (_e148 * _e153)));
-                            uint _e169 = kept;
-                            kept = (_e169 + 1u);
+                        float _e145 = asfloat(r2_1.Load(j_1*4));
+                        float _e149 = params.near_r2_;
+                        const float _e150 = vpl_far_fixed_share(_e145, dot(v_2, v_2), _e149);
+                        if ((_e150 > 0.0)) {
+                            float3 _e153 = e;
+                            float3 _e156 = nrm;
+                            float _e159 = params.min_d2_;
+                            const float _e160 = vpl_transfer(l.p1_, _e156, v_2, _e159);
+                            e = (_e153 + (l.intensity * (_e160 * _e150)));
+                            uint _e164 = kept;
+                            kept = (_e164 + 1u);
                         }
                     }
                 }
@@ -348,9 +346,9 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         }
     }
     if (valid) {
-        float3 _e180 = e;
-        uint _e181 = kept;
-        irradiance.Store4(pix*16, asuint(float4(_e180, float(_e181))));
+        float3 _e175 = e;
+        uint _e176 = kept;
+        irradiance.Store4(pix*16, asuint(float4(_e175, float(_e176))));
         return;
     } else {
         return;

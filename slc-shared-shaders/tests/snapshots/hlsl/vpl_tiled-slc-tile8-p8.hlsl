@@ -69,8 +69,8 @@ cbuffer params : register(b0) { VplParams params; }
 ByteAddressBuffer gb_position : register(t1);
 ByteAddressBuffer gb_normal : register(t2);
 ByteAddressBuffer lights : register(t3);
-ByteAddressBuffer rt2_1 : register(t4);
-ByteAddressBuffer r2_2 : register(t5);
+ByteAddressBuffer rt2_2 : register(t4);
+ByteAddressBuffer r2_3 : register(t5);
 RWByteAddressBuffer irradiance : register(u6);
 groupshared uint tile_count;
 groupshared uint tile_lights[1024];
@@ -119,6 +119,14 @@ float vpl_far_weight(float d2_3, float near_r2_1)
 {
     const float _e2 = vpl_near_weight(d2_3, near_r2_1);
     return (1.0 - _e2);
+}
+
+float vpl_far_slc_share(float rt2_1, float r2_2, float d2_4, float near_r2_2)
+{
+    const float _e4 = vpl_far_weight(d2_4, near_r2_2);
+    const float _e5 = slc_weight(rt2_1, d2_4);
+    const bool _e7 = slc_keep(r2_2, d2_4);
+    return ((_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -211,7 +219,6 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     uint first = 0u;
     uint j = (uint)0;
     uint k = (uint)0;
-    bool local_2 = (bool)0;
 
     uint sub = wg.z;
     uint px = (naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P));
@@ -251,8 +258,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e180 = first;
-            first = (_e180 + MAX_TILE_LIGHTS);
+            uint _e173 = first;
+            first = (_e173 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
         uint _e78 = first;
@@ -290,7 +297,7 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     uint _e100 = j;
                     float3 _e104 = asfloat(lights.Load3(0+(base + _e100)*64));
                     uint _e106 = j;
-                    float _e109 = asfloat(r2_2.Load((base + _e106)*4));
+                    float _e109 = asfloat(r2_3.Load((base + _e106)*4));
                     const float _e110 = cull_radius(_e109);
                     const bool _e111 = sphere_overlaps_aabb(_e104, _e110, lo, hi);
                     if (_e111) {
@@ -314,8 +321,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e178 = k;
-                        k = (_e178 + 1u);
+                        uint _e171 = k;
+                        k = (_e171 + 1u);
                     }
                     loop_init_3 = false;
                     uint _e129 = k;
@@ -330,27 +337,18 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         GpuLight l = ConstructGpuLight(asfloat(lights.Load3(j_1*64+0)), asuint(lights.Load(j_1*64+12)), asfloat(lights.Load3(j_1*64+16)), asfloat(lights.Load(j_1*64+28)), asfloat(lights.Load3(j_1*64+32)), asfloat(lights.Load(j_1*64+44)), asfloat(lights.Load3(j_1*64+48)), asuint(lights.Load(j_1*64+60)));
                         float4 _e139 = pos;
                         float3 v_2 = (_e139.xyz - l.p0_);
-                        float3 _e144 = nrm;
-                        float _e147 = params.min_d2_;
-                        const float _e148 = vpl_transfer(l.p1_, _e144, v_2, _e147);
-                        float d2_4 = dot(v_2, v_2);
+                        float _e145 = asfloat(rt2_2.Load(j_1*4));
+                        float _e148 = asfloat(r2_3.Load(j_1*4));
                         float _e152 = params.near_r2_;
-                        const float _e153 = vpl_far_weight(d2_4, _e152);
-                        float _e156 = asfloat(r2_2.Load(j_1*4));
-                        const bool _e157 = slc_keep(_e156, d2_4);
-                        if (_e157) {
-                            local_2 = (_e153 > 0.0);
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e163 = local_2;
-                        if (_e163) {
-                            float3 _e164 = e;
-                            float _e168 = asfloat(rt2_1.Load(j_1*4));
-                            const float _e169 = slc_weight(_e168, d2_4);
-                            e = (_e164 + (l.intensity * ((_e148 * _e169) * _e153)));
-                            uint _e174 = kept;
-                            kept = (_e174 + 1u);
+                        const float _e153 = vpl_far_slc_share(_e145, _e148, dot(v_2, v_2), _e152);
+                        if ((_e153 > 0.0)) {
+                            float3 _e156 = e;
+                            float3 _e159 = nrm;
+                            float _e162 = params.min_d2_;
+                            const float _e163 = vpl_transfer(l.p1_, _e159, v_2, _e162);
+                            e = (_e156 + (l.intensity * (_e163 * _e153)));
+                            uint _e167 = kept;
+                            kept = (_e167 + 1u);
                         }
                     }
                 }
@@ -359,9 +357,9 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         }
     }
     if (valid) {
-        float3 _e185 = e;
-        uint _e186 = kept;
-        irradiance.Store4(pix*16, asuint(float4(_e185, float(_e186))));
+        float3 _e178 = e;
+        uint _e179 = kept;
+        irradiance.Store4(pix*16, asuint(float4(_e178, float(_e179))));
         return;
     } else {
         return;

@@ -134,6 +134,16 @@ float vpl_far_weight(
     return 1.0 - _e2;
 }
 
+float vpl_far_fixed_share(
+    float range2_1,
+    float d2_3,
+    float near_r2_2
+) {
+    float _e3 = vpl_far_weight(d2_3, near_r2_2);
+    bool _e4 = clamp_keep(range2_1, d2_3);
+    return (_e4 & (_e3 > 0.0)) ? _e3 : 0.0;
+}
+
 uint naga_div(uint lhs, uint rhs) {
     return lhs / metal::select(rhs, 1u, rhs == 0u);
 }
@@ -222,7 +232,6 @@ kernel void main_(
     uint first = 0u;
     uint j = {};
     uint k = {};
-    bool local_2 = {};
     uint sub = wg.z;
     uint px = naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P);
     uint py = naga_div(sub, P) + (((wg.y * TILE) + lid.y) * P);
@@ -261,8 +270,8 @@ kernel void main_(
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e175 = first;
-            first = _e175 + MAX_TILE_LIGHTS;
+            uint _e170 = first;
+            first = _e170 + MAX_TILE_LIGHTS;
         }
         loop_init_1 = false;
         uint _e78 = first;
@@ -324,8 +333,8 @@ kernel void main_(
                     if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e173 = k;
-                        k = _e173 + 1u;
+                        uint _e168 = k;
+                        k = _e168 + 1u;
                     }
                     loop_init_3 = false;
                     uint _e129 = k;
@@ -340,25 +349,17 @@ kernel void main_(
                         GpuLight l = lights[j_1];
                         metal::float4 _e139 = pos;
                         metal::float3 v_2 = _e139.xyz - l.p0_;
-                        metal::float3 _e144 = nrm;
-                        float _e147 = params.min_d2_;
-                        float _e148 = vpl_transfer(l.p1_, _e144, v_2, _e147);
-                        float d2_3 = metal::dot(v_2, v_2);
-                        float _e152 = params.near_r2_;
-                        float _e153 = vpl_far_weight(d2_3, _e152);
-                        float _e156 = r2_1[j_1];
-                        bool _e157 = clamp_keep(_e156, d2_3);
-                        if (_e157) {
-                            local_2 = _e153 > 0.0;
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e163 = local_2;
-                        if (_e163) {
-                            metal::float3 _e164 = e;
-                            e = _e164 + (l.intensity * (_e148 * _e153));
-                            uint _e169 = kept;
-                            kept = _e169 + 1u;
+                        float _e145 = r2_1[j_1];
+                        float _e149 = params.near_r2_;
+                        float _e150 = vpl_far_fixed_share(_e145, metal::dot(v_2, v_2), _e149);
+                        if (_e150 > 0.0) {
+                            metal::float3 _e153 = e;
+                            metal::float3 _e156 = nrm;
+                            float _e159 = params.min_d2_;
+                            float _e160 = vpl_transfer(l.p1_, _e156, v_2, _e159);
+                            e = _e153 + (l.intensity * (_e160 * _e150));
+                            uint _e164 = kept;
+                            kept = _e164 + 1u;
                         }
                     }
                 }
@@ -367,9 +368,9 @@ kernel void main_(
         }
     }
     if (valid) {
-        metal::float3 _e180 = e;
-        uint _e181 = kept;
-        irradiance[pix] = metal::float4(_e180, static_cast<float>(_e181));
+        metal::float3 _e175 = e;
+        uint _e176 = kept;
+        irradiance[pix] = metal::float4(_e175, static_cast<float>(_e176));
         return;
     } else {
         return;

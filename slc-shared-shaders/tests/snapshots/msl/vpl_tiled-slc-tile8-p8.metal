@@ -145,6 +145,18 @@ float vpl_far_weight(
     return 1.0 - _e2;
 }
 
+float vpl_far_slc_share(
+    float rt2_1,
+    float r2_2,
+    float d2_4,
+    float near_r2_2
+) {
+    float _e4 = vpl_far_weight(d2_4, near_r2_2);
+    float _e5 = slc_weight(rt2_1, d2_4);
+    bool _e7 = slc_keep(r2_2, d2_4);
+    return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
+}
+
 uint naga_div(uint lhs, uint rhs) {
     return lhs / metal::select(rhs, 1u, rhs == 0u);
 }
@@ -211,8 +223,8 @@ kernel void main_(
 , device type_7 const& gb_position [[user(fake0)]]
 , device type_7 const& gb_normal [[user(fake0)]]
 , device type_8 const& lights [[user(fake0)]]
-, device type_4 const& rt2_1 [[user(fake0)]]
-, device type_4 const& r2_2 [[user(fake0)]]
+, device type_4 const& rt2_2 [[user(fake0)]]
+, device type_4 const& r2_3 [[user(fake0)]]
 , device type_7& irradiance [[user(fake0)]]
 , threadgroup metal::atomic_uint& tile_count
 , threadgroup type_10& tile_lights
@@ -234,7 +246,6 @@ kernel void main_(
     uint first = 0u;
     uint j = {};
     uint k = {};
-    bool local_2 = {};
     uint sub = wg.z;
     uint px = naga_mod(sub, P) + (((wg.x * TILE) + lid.x) * P);
     uint py = naga_div(sub, P) + (((wg.y * TILE) + lid.y) * P);
@@ -273,8 +284,8 @@ kernel void main_(
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e180 = first;
-            first = _e180 + MAX_TILE_LIGHTS;
+            uint _e173 = first;
+            first = _e173 + MAX_TILE_LIGHTS;
         }
         loop_init_1 = false;
         uint _e78 = first;
@@ -312,7 +323,7 @@ kernel void main_(
                     uint _e100 = j;
                     metal::float3 _e104 = lights[base + _e100].p0_;
                     uint _e106 = j;
-                    float _e109 = r2_2[base + _e106];
+                    float _e109 = r2_3[base + _e106];
                     float _e110 = cull_radius(_e109);
                     bool _e111 = sphere_overlaps_aabb(_e104, _e110, lo, hi);
                     if (_e111) {
@@ -336,8 +347,8 @@ kernel void main_(
                     if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e178 = k;
-                        k = _e178 + 1u;
+                        uint _e171 = k;
+                        k = _e171 + 1u;
                     }
                     loop_init_3 = false;
                     uint _e129 = k;
@@ -352,27 +363,18 @@ kernel void main_(
                         GpuLight l = lights[j_1];
                         metal::float4 _e139 = pos;
                         metal::float3 v_2 = _e139.xyz - l.p0_;
-                        metal::float3 _e144 = nrm;
-                        float _e147 = params.min_d2_;
-                        float _e148 = vpl_transfer(l.p1_, _e144, v_2, _e147);
-                        float d2_4 = metal::dot(v_2, v_2);
+                        float _e145 = rt2_2[j_1];
+                        float _e148 = r2_3[j_1];
                         float _e152 = params.near_r2_;
-                        float _e153 = vpl_far_weight(d2_4, _e152);
-                        float _e156 = r2_2[j_1];
-                        bool _e157 = slc_keep(_e156, d2_4);
-                        if (_e157) {
-                            local_2 = _e153 > 0.0;
-                        } else {
-                            local_2 = false;
-                        }
-                        bool _e163 = local_2;
-                        if (_e163) {
-                            metal::float3 _e164 = e;
-                            float _e168 = rt2_1[j_1];
-                            float _e169 = slc_weight(_e168, d2_4);
-                            e = _e164 + (l.intensity * ((_e148 * _e169) * _e153));
-                            uint _e174 = kept;
-                            kept = _e174 + 1u;
+                        float _e153 = vpl_far_slc_share(_e145, _e148, metal::dot(v_2, v_2), _e152);
+                        if (_e153 > 0.0) {
+                            metal::float3 _e156 = e;
+                            metal::float3 _e159 = nrm;
+                            float _e162 = params.min_d2_;
+                            float _e163 = vpl_transfer(l.p1_, _e159, v_2, _e162);
+                            e = _e156 + (l.intensity * (_e163 * _e153));
+                            uint _e167 = kept;
+                            kept = _e167 + 1u;
                         }
                     }
                 }
@@ -381,9 +383,9 @@ kernel void main_(
         }
     }
     if (valid) {
-        metal::float3 _e185 = e;
-        uint _e186 = kept;
-        irradiance[pix] = metal::float4(_e185, static_cast<float>(_e186));
+        metal::float3 _e178 = e;
+        uint _e179 = kept;
+        irradiance[pix] = metal::float4(_e178, static_cast<float>(_e179));
         return;
     } else {
         return;

@@ -82,13 +82,19 @@ var<storage> lights: array<GpuLight>;
 var<storage> near_slots: array<u32>;
 @group(0) @binding(5) 
 var<storage> near_boxes: array<GpuNearBox>;
-@group(0) @binding(6) 
+@group(0) @binding(7) 
+var<storage> r2_2: array<f32>;
+@group(0) @binding(8) 
 var<storage, read_write> irradiance: array<vec4<f32>>;
 var<workgroup> light_count: atomic<u32>;
 var<workgroup> light_list: array<u32, 2048>;
 
 fn to_f32_(u: u32) -> f32 {
     return f32(u);
+}
+
+fn clamp_keep(range2_: f32, d2_: f32) -> bool {
+    return (d2_ < range2_);
 }
 
 fn cull_radius(r2_: f32) -> f32 {
@@ -111,12 +117,22 @@ fn interleave_flux_scale(period: u32) -> f32 {
     return _e2;
 }
 
-fn vpl_near_weight(d2_: f32, near_r2_: f32) -> f32 {
+fn vpl_near_weight(d2_1: f32, near_r2_: f32) -> f32 {
     if (near_r2_ <= 0f) {
         return 0f;
     }
-    let t = clamp(((near_r2_ - d2_) / (0.75f * near_r2_)), 0f, 1f);
+    let t = clamp(((near_r2_ - d2_1) / (0.75f * near_r2_)), 0f, 1f);
     return ((t * t) * (3f - (2f * t)));
+}
+
+fn vpl_near_cull_range2_(r2_1: f32, near_r2_1: f32) -> f32 {
+    return min(r2_1, near_r2_1);
+}
+
+fn vpl_near_fixed_share(range2_1: f32, d2_2: f32, near_r2_2: f32) -> f32 {
+    let _e3 = vpl_near_weight(d2_2, near_r2_2);
+    let _e4 = clamp_keep(range2_1, d2_2);
+    return select(0f, _e3, (_e4 & (_e3 > 0f)));
 }
 
 fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
@@ -153,6 +169,11 @@ fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
     let _e47 = wg_lo[0];
     let _e50 = wg_hi[0];
     return WorkgroupBox(_e47, _e50);
+}
+
+fn near_r2_of(slot: u32) -> f32 {
+    let _e3 = r2_2[slot];
+    return _e3;
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -242,72 +263,77 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                         }
                         {
                             let _e117 = m;
-                            let slot = near_slots[((b * NEAR_BLOCK) + _e117)];
-                            let l = lights[slot];
+                            let slot_1 = near_slots[((b * NEAR_BLOCK) + _e117)];
+                            let l = lights[slot_1];
+                            let _e124 = near_r2_of(slot_1);
+                            let _e127 = params.near_r2_;
+                            let _e128 = vpl_near_cull_range2_(_e124, _e127);
+                            let _e129 = cull_radius(_e128);
                             if any((l.intensity != vec3(0f))) {
-                                let _e132 = sphere_overlaps_aabb(l.p0_, _e59, lo, hi);
-                                local_4 = _e132;
+                                let _e138 = sphere_overlaps_aabb(l.p0_, _e129, lo, hi);
+                                local_4 = _e138;
                             } else {
                                 local_4 = false;
                             }
-                            let _e134 = local_4;
-                            if _e134 {
-                                let _e138 = atomicAdd((&light_count), 1u);
-                                light_list[_e138] = slot;
+                            let _e140 = local_4;
+                            if _e140 {
+                                let _e144 = atomicAdd((&light_count), 1u);
+                                light_list[_e144] = slot_1;
                             }
                         }
                         continuing {
-                            let _e141 = m;
-                            m = (_e141 + 1u);
+                            let _e147 = m;
+                            m = (_e147 + 1u);
                         }
                     }
                 }
             }
-            let _e144 = workgroupUniformLoad((&light_count));
+            let _e150 = workgroupUniformLoad((&light_count));
             if valid {
                 m_1 = 0u;
                 loop {
-                    let _e147 = m_1;
-                    if (_e147 < _e144) {
+                    let _e153 = m_1;
+                    if (_e153 < _e150) {
                     } else {
                         break;
                     }
                     {
-                        let _e151 = m_1;
-                        let _e153 = light_list[_e151];
-                        let l_1 = lights[_e153];
-                        let _e156 = pos;
-                        let v_2 = (_e156.xyz - l_1.p0_);
-                        let _e163 = params.near_r2_;
-                        let _e164 = vpl_near_weight(dot(v_2, v_2), _e163);
-                        if (_e164 > 0f) {
-                            let _e167 = e;
-                            let _e170 = nrm;
-                            let _e173 = params.min_d2_;
-                            let _e174 = vpl_transfer(l_1.p1_, _e170, v_2, _e173);
-                            e = (_e167 + (l_1.intensity * ((_e174 * _e164) * unscale)));
-                            let _e179 = kept;
-                            kept = (_e179 + 1u);
+                        let _e156 = m_1;
+                        let slot_2 = light_list[_e156];
+                        let l_1 = lights[slot_2];
+                        let _e162 = pos;
+                        let v_2 = (_e162.xyz - l_1.p0_);
+                        let _e168 = r2_2[slot_2];
+                        let _e172 = params.near_r2_;
+                        let _e173 = vpl_near_fixed_share(_e168, dot(v_2, v_2), _e172);
+                        if (_e173 > 0f) {
+                            let _e176 = e;
+                            let _e179 = nrm;
+                            let _e182 = params.min_d2_;
+                            let _e183 = vpl_transfer(l_1.p1_, _e179, v_2, _e182);
+                            e = (_e176 + (l_1.intensity * ((_e183 * _e173) * unscale)));
+                            let _e188 = kept;
+                            kept = (_e188 + 1u);
                         }
                     }
                     continuing {
-                        let _e183 = m_1;
-                        m_1 = (_e183 + 1u);
+                        let _e192 = m_1;
+                        m_1 = (_e192 + 1u);
                     }
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e185 = first;
-            first = (_e185 + NEAR_CHUNK);
+            let _e194 = first;
+            first = (_e194 + NEAR_CHUNK);
         }
     }
     if valid {
         let old = irradiance[pix];
-        let _e194 = e;
-        let _e197 = kept;
-        irradiance[pix] = vec4<f32>((old.xyz + _e194), (old.w + f32(_e197)));
+        let _e203 = e;
+        let _e206 = kept;
+        irradiance[pix] = vec4<f32>((old.xyz + _e203), (old.w + f32(_e206)));
         return;
     } else {
         return;

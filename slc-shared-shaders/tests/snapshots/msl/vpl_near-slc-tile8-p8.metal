@@ -11,6 +11,8 @@ struct _mslBufferSizes {
     uint size6;
     uint size7;
     uint size8;
+    uint size9;
+    uint size10;
 };
 
 struct GpuLight {
@@ -39,18 +41,19 @@ struct GpuNearBox {
     metal::packed_float3 hi;
     float pad1_;
 };
-struct type_5 {
+typedef float type_4[1];
+struct type_6 {
     metal::float3 inner[64];
 };
 struct WorkgroupBox {
     metal::float3 lo;
     metal::float3 hi;
 };
-typedef metal::float4 type_6[1];
-typedef GpuLight type_7[1];
-typedef uint type_8[1];
-typedef GpuNearBox type_9[1];
-struct type_11 {
+typedef metal::float4 type_7[1];
+typedef GpuLight type_8[1];
+typedef uint type_9[1];
+typedef GpuNearBox type_10[1];
+struct type_12 {
     uint inner[2048];
 };
 constant uint LIGHT_POINT = 0u;
@@ -95,10 +98,27 @@ float to_f32_(
     return static_cast<float>(u);
 }
 
-float cull_radius(
-    float r2_
+float slc_weight(
+    float rt2_,
+    float d2_
 ) {
-    return metal::sqrt(r2_) * CULL_RADIUS_SCALE;
+    if (d2_ <= rt2_) {
+        return 1.0;
+    }
+    return d2_ / rt2_;
+}
+
+bool slc_keep(
+    float r2_,
+    float d2_1
+) {
+    return d2_1 < r2_;
+}
+
+float cull_radius(
+    float r2_1
+) {
+    return metal::sqrt(r2_1) * CULL_RADIUS_SCALE;
 }
 
 bool sphere_overlaps_aabb(
@@ -130,14 +150,41 @@ float interleave_flux_scale(
 }
 
 float vpl_near_weight(
-    float d2_,
+    float d2_2,
     float near_r2_
 ) {
     if (near_r2_ <= 0.0) {
         return 0.0;
     }
-    float t = metal::clamp((near_r2_ - d2_) / (0.75 * near_r2_), 0.0, 1.0);
+    float t = metal::clamp((near_r2_ - d2_2) / (0.75 * near_r2_), 0.0, 1.0);
     return (t * t) * (3.0 - (2.0 * t));
+}
+
+float vpl_near_range2_(
+    float r2_2,
+    uint period_1
+) {
+    float _e2 = interleave_flux_scale(period_1);
+    return r2_2 / _e2;
+}
+
+float vpl_near_cull_range2_(
+    float r2_3,
+    float near_r2_1
+) {
+    return metal::min(r2_3, near_r2_1);
+}
+
+float vpl_near_slc_share(
+    float rt2_1,
+    float r2_4,
+    float d2_3,
+    float near_r2_2
+) {
+    float _e4 = vpl_near_weight(d2_3, near_r2_2);
+    float _e5 = slc_weight(rt2_1, d2_3);
+    bool _e7 = slc_keep(r2_4, d2_3);
+    return (_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0;
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -148,8 +195,8 @@ WorkgroupBox workgroup_box(
     uint li_1,
     metal::float3 p,
     bool has,
-    threadgroup type_5& wg_lo,
-    threadgroup type_5& wg_hi
+    threadgroup type_6& wg_lo,
+    threadgroup type_6& wg_hi
 ) {
     uint stride = 32u;
     wg_lo.inner[li_1] = has ? p : metal::float3(340282350000000000000000000000000000000.0);
@@ -190,23 +237,35 @@ WorkgroupBox workgroup_box(
     return WorkgroupBox {_e47, _e50};
 }
 
+float near_r2_of(
+    uint slot,
+    device type_4 const& r2_5,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e3 = r2_5[slot];
+    float _e5 = vpl_near_range2_(_e3, P);
+    return _e5;
+}
+
 struct main_Input {
 };
 kernel void main_(
   metal::uint3 wg [[threadgroup_position_in_grid]]
 , metal::uint3 lid [[thread_position_in_threadgroup]]
 , uint li [[thread_index_in_threadgroup]]
-, threadgroup type_5& wg_lo
-, threadgroup type_5& wg_hi
+, threadgroup type_6& wg_lo
+, threadgroup type_6& wg_hi
 , constant VplParams& params [[user(fake0)]]
-, device type_6 const& gb_position [[user(fake0)]]
-, device type_6 const& gb_normal [[user(fake0)]]
-, device type_7 const& lights [[user(fake0)]]
-, device type_8 const& near_slots [[user(fake0)]]
-, device type_9 const& near_boxes [[user(fake0)]]
-, device type_6& irradiance [[user(fake0)]]
+, device type_7 const& gb_position [[user(fake0)]]
+, device type_7 const& gb_normal [[user(fake0)]]
+, device type_8 const& lights [[user(fake0)]]
+, device type_9 const& near_slots [[user(fake0)]]
+, device type_10 const& near_boxes [[user(fake0)]]
+, device type_4 const& rt2_2 [[user(fake0)]]
+, device type_4 const& r2_5 [[user(fake0)]]
+, device type_7& irradiance [[user(fake0)]]
 , threadgroup metal::atomic_uint& light_count
-, threadgroup type_11& light_list
+, threadgroup type_12& light_list
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     if (li == 0u) {
@@ -267,8 +326,8 @@ kernel void main_(
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e185 = first;
-            first = _e185 + NEAR_CHUNK;
+            uint _e197 = first;
+            first = _e197 + NEAR_CHUNK;
         }
         loop_init_1 = false;
         uint _e71 = first;
@@ -307,8 +366,8 @@ kernel void main_(
                         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
                         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                         if (!loop_init_2) {
-                            uint _e141 = m;
-                            m = _e141 + 1u;
+                            uint _e147 = m;
+                            m = _e147 + 1u;
                         }
                         loop_init_2 = false;
                         uint _e111 = m;
@@ -318,18 +377,22 @@ kernel void main_(
                         }
                         {
                             uint _e117 = m;
-                            uint slot = near_slots[(b * NEAR_BLOCK) + _e117];
-                            GpuLight l = lights[slot];
+                            uint slot_1 = near_slots[(b * NEAR_BLOCK) + _e117];
+                            GpuLight l = lights[slot_1];
+                            float _e124 = near_r2_of(slot_1, r2_5, _buffer_sizes);
+                            float _e127 = params.near_r2_;
+                            float _e128 = vpl_near_cull_range2_(_e124, _e127);
+                            float _e129 = cull_radius(_e128);
                             if (metal::any(l.intensity != metal::float3(0.0))) {
-                                bool _e132 = sphere_overlaps_aabb(l.p0_, _e59, lo, hi);
-                                local_4 = _e132;
+                                bool _e138 = sphere_overlaps_aabb(l.p0_, _e129, lo, hi);
+                                local_4 = _e138;
                             } else {
                                 local_4 = false;
                             }
-                            bool _e134 = local_4;
-                            if (_e134) {
-                                uint _e138 = metal::atomic_fetch_add_explicit(&light_count, 1u, metal::memory_order_relaxed);
-                                light_list.inner[_e138] = slot;
+                            bool _e140 = local_4;
+                            if (_e140) {
+                                uint _e144 = metal::atomic_fetch_add_explicit(&light_count, 1u, metal::memory_order_relaxed);
+                                light_list.inner[_e144] = slot_1;
                             }
                         }
                     }
@@ -346,31 +409,34 @@ kernel void main_(
                     if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e183 = m_1;
-                        m_1 = _e183 + 1u;
+                        uint _e195 = m_1;
+                        m_1 = _e195 + 1u;
                     }
                     loop_init_3 = false;
-                    uint _e147 = m_1;
-                    if (_e147 < unnamed) {
+                    uint _e153 = m_1;
+                    if (_e153 < unnamed) {
                     } else {
                         break;
                     }
                     {
-                        uint _e151 = m_1;
-                        uint _e153 = light_list.inner[_e151];
-                        GpuLight l_1 = lights[_e153];
-                        metal::float4 _e156 = pos;
-                        metal::float3 v_2 = _e156.xyz - l_1.p0_;
-                        float _e163 = params.near_r2_;
-                        float _e164 = vpl_near_weight(metal::dot(v_2, v_2), _e163);
-                        if (_e164 > 0.0) {
-                            metal::float3 _e167 = e;
-                            metal::float3 _e170 = nrm;
-                            float _e173 = params.min_d2_;
-                            float _e174 = vpl_transfer(l_1.p1_, _e170, v_2, _e173);
-                            e = _e167 + (l_1.intensity * ((_e174 * _e164) * unscale));
-                            uint _e179 = kept;
-                            kept = _e179 + 1u;
+                        uint _e156 = m_1;
+                        uint slot_2 = light_list.inner[_e156];
+                        GpuLight l_1 = lights[slot_2];
+                        metal::float4 _e162 = pos;
+                        metal::float3 v_2 = _e162.xyz - l_1.p0_;
+                        float _e168 = rt2_2[slot_2];
+                        float _e170 = vpl_near_range2_(_e168, P);
+                        float _e171 = near_r2_of(slot_2, r2_5, _buffer_sizes);
+                        float _e175 = params.near_r2_;
+                        float _e176 = vpl_near_slc_share(_e170, _e171, metal::dot(v_2, v_2), _e175);
+                        if (_e176 > 0.0) {
+                            metal::float3 _e179 = e;
+                            metal::float3 _e182 = nrm;
+                            float _e185 = params.min_d2_;
+                            float _e186 = vpl_transfer(l_1.p1_, _e182, v_2, _e185);
+                            e = _e179 + (l_1.intensity * ((_e186 * _e176) * unscale));
+                            uint _e191 = kept;
+                            kept = _e191 + 1u;
                         }
                     }
                 }
@@ -380,9 +446,9 @@ kernel void main_(
     }
     if (valid) {
         metal::float4 old = irradiance[pix];
-        metal::float3 _e194 = e;
-        uint _e197 = kept;
-        irradiance[pix] = metal::float4(old.xyz + _e194, old.w + static_cast<float>(_e197));
+        metal::float3 _e206 = e;
+        uint _e209 = kept;
+        irradiance[pix] = metal::float4(old.xyz + _e206, old.w + static_cast<float>(_e209));
         return;
     } else {
         return;

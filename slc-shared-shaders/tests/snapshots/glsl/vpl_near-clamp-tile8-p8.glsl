@@ -75,17 +75,19 @@ shared vec3 wg_hi[64];
 
 layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_6_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_7_block_1Compute { vec4 _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_6_block_2Compute { vec4 _group_0_binding_2_cs[]; };
+layout(std430) readonly buffer type_7_block_2Compute { vec4 _group_0_binding_2_cs[]; };
 
-layout(std430) readonly buffer type_7_block_3Compute { GpuLight _group_0_binding_3_cs[]; };
+layout(std430) readonly buffer type_8_block_3Compute { GpuLight _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_8_block_4Compute { uint _group_0_binding_4_cs[]; };
+layout(std430) readonly buffer type_9_block_4Compute { uint _group_0_binding_4_cs[]; };
 
-layout(std430) readonly buffer type_9_block_5Compute { GpuNearBox _group_0_binding_5_cs[]; };
+layout(std430) readonly buffer type_10_block_5Compute { GpuNearBox _group_0_binding_5_cs[]; };
 
-layout(std430) buffer type_6_block_6Compute { vec4 _group_0_binding_6_cs[]; };
+layout(std430) readonly buffer type_4_block_6Compute { float _group_0_binding_7_cs[]; };
+
+layout(std430) buffer type_7_block_7Compute { vec4 _group_0_binding_8_cs[]; };
 
 shared uint light_count;
 
@@ -94,6 +96,10 @@ shared uint light_list[2048];
 
 float to_f32_(uint u) {
     return float(u);
+}
+
+bool clamp_keep(float range2_, float d2_) {
+    return (d2_ < range2_);
 }
 
 float cull_radius(float r2_) {
@@ -116,12 +122,22 @@ float interleave_flux_scale(uint period) {
     return _e2;
 }
 
-float vpl_near_weight(float d2_, float near_r2_) {
+float vpl_near_weight(float d2_1, float near_r2_) {
     if ((near_r2_ <= 0.0)) {
         return 0.0;
     }
-    float t = clamp(((near_r2_ - d2_) / (0.75 * near_r2_)), 0.0, 1.0);
+    float t = clamp(((near_r2_ - d2_1) / (0.75 * near_r2_)), 0.0, 1.0);
     return ((t * t) * (3.0 - (2.0 * t)));
+}
+
+float vpl_near_cull_range2_(float r2_1, float near_r2_1) {
+    return min(r2_1, near_r2_1);
+}
+
+float vpl_near_fixed_share(float range2_1, float d2_2, float near_r2_2) {
+    float _e3 = vpl_near_weight(d2_2, near_r2_2);
+    bool _e4 = clamp_keep(range2_1, d2_2);
+    return ((_e4 && (_e3 > 0.0)) ? _e3 : 0.0);
 }
 
 WorkgroupBox workgroup_box(uint li_1, vec3 p, bool has) {
@@ -161,6 +177,11 @@ WorkgroupBox workgroup_box(uint li_1, vec3 p, bool has) {
     vec3 _e47 = wg_lo[0];
     vec3 _e50 = wg_hi[0];
     return WorkgroupBox(_e47, _e50);
+}
+
+float near_r2_of(uint slot) {
+    float _e3 = _group_0_binding_7_cs[slot];
+    return _e3;
 }
 
 void main() {
@@ -223,8 +244,8 @@ void main() {
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e185 = first;
-            first = (_e185 + NEAR_CHUNK);
+            uint _e194 = first;
+            first = (_e194 + NEAR_CHUNK);
         }
         loop_init_1 = false;
         uint _e71 = first;
@@ -261,8 +282,8 @@ void main() {
                     bool loop_init_2 = true;
                     while(true) {
                         if (!loop_init_2) {
-                            uint _e141 = m;
-                            m = (_e141 + 1u);
+                            uint _e147 = m;
+                            m = (_e147 + 1u);
                         }
                         loop_init_2 = false;
                         uint _e111 = m;
@@ -272,18 +293,22 @@ void main() {
                         }
                         {
                             uint _e117 = m;
-                            uint slot = _group_0_binding_4_cs[((b * NEAR_BLOCK) + _e117)];
-                            GpuLight l = _group_0_binding_3_cs[slot];
+                            uint slot_1 = _group_0_binding_4_cs[((b * NEAR_BLOCK) + _e117)];
+                            GpuLight l = _group_0_binding_3_cs[slot_1];
+                            float _e124 = near_r2_of(slot_1);
+                            float _e127 = _group_0_binding_0_cs.near_r2_;
+                            float _e128 = vpl_near_cull_range2_(_e124, _e127);
+                            float _e129 = cull_radius(_e128);
                             if (any(notEqual(l.intensity, vec3(0.0)))) {
-                                bool _e132 = sphere_overlaps_aabb(l.p0_, _e59, lo, hi);
-                                local_4 = _e132;
+                                bool _e138 = sphere_overlaps_aabb(l.p0_, _e129, lo, hi);
+                                local_4 = _e138;
                             } else {
                                 local_4 = false;
                             }
-                            bool _e134 = local_4;
-                            if (_e134) {
-                                uint _e138 = atomicAdd(light_count, 1u);
-                                light_list[_e138] = slot;
+                            bool _e140 = local_4;
+                            if (_e140) {
+                                uint _e144 = atomicAdd(light_count, 1u);
+                                light_list[_e144] = slot_1;
                             }
                         }
                     }
@@ -291,7 +316,7 @@ void main() {
             }
             memoryBarrierShared();
             barrier();
-            uint _e144 = light_count;
+            uint _e150 = light_count;
             memoryBarrierShared();
             barrier();
             if (valid) {
@@ -299,31 +324,32 @@ void main() {
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e183 = m_1;
-                        m_1 = (_e183 + 1u);
+                        uint _e192 = m_1;
+                        m_1 = (_e192 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e147 = m_1;
-                    if ((_e147 < _e144)) {
+                    uint _e153 = m_1;
+                    if ((_e153 < _e150)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e151 = m_1;
-                        uint _e153 = light_list[_e151];
-                        GpuLight l_1 = _group_0_binding_3_cs[_e153];
-                        vec4 _e156 = pos;
-                        vec3 v_2 = (_e156.xyz - l_1.p0_);
-                        float _e163 = _group_0_binding_0_cs.near_r2_;
-                        float _e164 = vpl_near_weight(dot(v_2, v_2), _e163);
-                        if ((_e164 > 0.0)) {
-                            vec3 _e167 = e;
-                            vec3 _e170 = nrm;
-                            float _e173 = _group_0_binding_0_cs.min_d2_;
-                            float _e174 = vpl_transfer(l_1.p1_, _e170, v_2, _e173);
-                            e = (_e167 + (l_1.intensity * ((_e174 * _e164) * unscale)));
-                            uint _e179 = kept;
-                            kept = (_e179 + 1u);
+                        uint _e156 = m_1;
+                        uint slot_2 = light_list[_e156];
+                        GpuLight l_1 = _group_0_binding_3_cs[slot_2];
+                        vec4 _e162 = pos;
+                        vec3 v_2 = (_e162.xyz - l_1.p0_);
+                        float _e168 = _group_0_binding_7_cs[slot_2];
+                        float _e172 = _group_0_binding_0_cs.near_r2_;
+                        float _e173 = vpl_near_fixed_share(_e168, dot(v_2, v_2), _e172);
+                        if ((_e173 > 0.0)) {
+                            vec3 _e176 = e;
+                            vec3 _e179 = nrm;
+                            float _e182 = _group_0_binding_0_cs.min_d2_;
+                            float _e183 = vpl_transfer(l_1.p1_, _e179, v_2, _e182);
+                            e = (_e176 + (l_1.intensity * ((_e183 * _e173) * unscale)));
+                            uint _e188 = kept;
+                            kept = (_e188 + 1u);
                         }
                     }
                 }
@@ -333,10 +359,10 @@ void main() {
         }
     }
     if (valid) {
-        vec4 old = _group_0_binding_6_cs[pix];
-        vec3 _e194 = e;
-        uint _e197 = kept;
-        _group_0_binding_6_cs[pix] = vec4((old.xyz + _e194), (old.w + float(_e197)));
+        vec4 old = _group_0_binding_8_cs[pix];
+        vec3 _e203 = e;
+        uint _e206 = kept;
+        _group_0_binding_8_cs[pix] = vec4((old.xyz + _e203), (old.w + float(_e206)));
         return;
     } else {
         return;

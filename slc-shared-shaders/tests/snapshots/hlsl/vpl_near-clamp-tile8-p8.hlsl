@@ -78,13 +78,19 @@ ByteAddressBuffer gb_normal : register(t2);
 ByteAddressBuffer lights : register(t3);
 ByteAddressBuffer near_slots : register(t4);
 ByteAddressBuffer near_boxes : register(t5);
-RWByteAddressBuffer irradiance : register(u6);
+ByteAddressBuffer r2_2 : register(t7);
+RWByteAddressBuffer irradiance : register(u8);
 groupshared uint light_count;
 groupshared uint light_list[2048];
 
 float to_f32_(uint u)
 {
     return float(u);
+}
+
+bool clamp_keep(float range2_, float d2_)
+{
+    return (d2_ < range2_);
 }
 
 float cull_radius(float r2_)
@@ -111,13 +117,25 @@ float interleave_flux_scale(uint period)
     return _e2;
 }
 
-float vpl_near_weight(float d2_, float near_r2_)
+float vpl_near_weight(float d2_1, float near_r2_)
 {
     if ((near_r2_ <= 0.0)) {
         return 0.0;
     }
-    float t = clamp(((near_r2_ - d2_) / (0.75 * near_r2_)), 0.0, 1.0);
+    float t = clamp(((near_r2_ - d2_1) / (0.75 * near_r2_)), 0.0, 1.0);
     return ((t * t) * (3.0 - (2.0 * t)));
+}
+
+float vpl_near_cull_range2_(float r2_1, float near_r2_1)
+{
+    return min(r2_1, near_r2_1);
+}
+
+float vpl_near_fixed_share(float range2_1, float d2_2, float near_r2_2)
+{
+    const float _e3 = vpl_near_weight(d2_2, near_r2_2);
+    const bool _e4 = clamp_keep(range2_1, d2_2);
+    return ((_e4 & (_e3 > 0.0)) ? _e3 : 0.0);
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -172,6 +190,12 @@ WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
     float3 _e50 = wg_hi[0];
     const WorkgroupBox workgroupbox = ConstructWorkgroupBox(_e47, _e50);
     return workgroupbox;
+}
+
+float near_r2_of(uint slot)
+{
+    float _e3 = asfloat(r2_2.Load(slot*4));
+    return _e3;
 }
 
 GpuNearBox ConstructGpuNearBox(float3 arg0, float arg1, float3 arg2, float arg3) {
@@ -258,8 +282,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e185 = first;
-            first = (_e185 + NEAR_CHUNK);
+            uint _e194 = first;
+            first = (_e194 + NEAR_CHUNK);
         }
         loop_init_1 = false;
         uint _e71 = first;
@@ -298,8 +322,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
                         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                         if (!loop_init_2) {
-                            uint _e141 = m;
-                            m = (_e141 + 1u);
+                            uint _e147 = m;
+                            m = (_e147 + 1u);
                         }
                         loop_init_2 = false;
                         uint _e111 = m;
@@ -309,25 +333,29 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         }
                         {
                             uint _e117 = m;
-                            uint slot = asuint(near_slots.Load(((b * NEAR_BLOCK) + _e117)*4));
-                            GpuLight l = ConstructGpuLight(asfloat(lights.Load3(slot*64+0)), asuint(lights.Load(slot*64+12)), asfloat(lights.Load3(slot*64+16)), asfloat(lights.Load(slot*64+28)), asfloat(lights.Load3(slot*64+32)), asfloat(lights.Load(slot*64+44)), asfloat(lights.Load3(slot*64+48)), asuint(lights.Load(slot*64+60)));
+                            uint slot_1 = asuint(near_slots.Load(((b * NEAR_BLOCK) + _e117)*4));
+                            GpuLight l = ConstructGpuLight(asfloat(lights.Load3(slot_1*64+0)), asuint(lights.Load(slot_1*64+12)), asfloat(lights.Load3(slot_1*64+16)), asfloat(lights.Load(slot_1*64+28)), asfloat(lights.Load3(slot_1*64+32)), asfloat(lights.Load(slot_1*64+44)), asfloat(lights.Load3(slot_1*64+48)), asuint(lights.Load(slot_1*64+60)));
+                            const float _e124 = near_r2_of(slot_1);
+                            float _e127 = params.near_r2_;
+                            const float _e128 = vpl_near_cull_range2_(_e124, _e127);
+                            const float _e129 = cull_radius(_e128);
                             if (any((l.intensity != (0.0).xxx))) {
-                                const bool _e132 = sphere_overlaps_aabb(l.p0_, _e59, lo, hi);
-                                local_4 = _e132;
+                                const bool _e138 = sphere_overlaps_aabb(l.p0_, _e129, lo, hi);
+                                local_4 = _e138;
                             } else {
                                 local_4 = false;
                             }
-                            bool _e134 = local_4;
-                            if (_e134) {
-                                uint _e138; InterlockedAdd(light_count, 1u, _e138);
-                                light_list[min(uint(_e138), 2047u)] = slot;
+                            bool _e140 = local_4;
+                            if (_e140) {
+                                uint _e144; InterlockedAdd(light_count, 1u, _e144);
+                                light_list[min(uint(_e144), 2047u)] = slot_1;
                             }
                         }
                     }
                 }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e144 = light_count;
+            uint _e150 = light_count;
             GroupMemoryBarrierWithGroupSync();
             if (valid) {
                 m_1 = 0u;
@@ -337,31 +365,32 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e183 = m_1;
-                        m_1 = (_e183 + 1u);
+                        uint _e192 = m_1;
+                        m_1 = (_e192 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e147 = m_1;
-                    if ((_e147 < _e144)) {
+                    uint _e153 = m_1;
+                    if ((_e153 < _e150)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e151 = m_1;
-                        uint _e153 = light_list[min(uint(_e151), 2047u)];
-                        GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(_e153*64+0)), asuint(lights.Load(_e153*64+12)), asfloat(lights.Load3(_e153*64+16)), asfloat(lights.Load(_e153*64+28)), asfloat(lights.Load3(_e153*64+32)), asfloat(lights.Load(_e153*64+44)), asfloat(lights.Load3(_e153*64+48)), asuint(lights.Load(_e153*64+60)));
-                        float4 _e156 = pos;
-                        float3 v_2 = (_e156.xyz - l_1.p0_);
-                        float _e163 = params.near_r2_;
-                        const float _e164 = vpl_near_weight(dot(v_2, v_2), _e163);
-                        if ((_e164 > 0.0)) {
-                            float3 _e167 = e;
-                            float3 _e170 = nrm;
-                            float _e173 = params.min_d2_;
-                            const float _e174 = vpl_transfer(l_1.p1_, _e170, v_2, _e173);
-                            e = (_e167 + (l_1.intensity * ((_e174 * _e164) * unscale)));
-                            uint _e179 = kept;
-                            kept = (_e179 + 1u);
+                        uint _e156 = m_1;
+                        uint slot_2 = light_list[min(uint(_e156), 2047u)];
+                        GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(slot_2*64+0)), asuint(lights.Load(slot_2*64+12)), asfloat(lights.Load3(slot_2*64+16)), asfloat(lights.Load(slot_2*64+28)), asfloat(lights.Load3(slot_2*64+32)), asfloat(lights.Load(slot_2*64+44)), asfloat(lights.Load3(slot_2*64+48)), asuint(lights.Load(slot_2*64+60)));
+                        float4 _e162 = pos;
+                        float3 v_2 = (_e162.xyz - l_1.p0_);
+                        float _e168 = asfloat(r2_2.Load(slot_2*4));
+                        float _e172 = params.near_r2_;
+                        const float _e173 = vpl_near_fixed_share(_e168, dot(v_2, v_2), _e172);
+                        if ((_e173 > 0.0)) {
+                            float3 _e176 = e;
+                            float3 _e179 = nrm;
+                            float _e182 = params.min_d2_;
+                            const float _e183 = vpl_transfer(l_1.p1_, _e179, v_2, _e182);
+                            e = (_e176 + (l_1.intensity * ((_e183 * _e173) * unscale)));
+                            uint _e188 = kept;
+                            kept = (_e188 + 1u);
                         }
                     }
                 }
@@ -371,9 +400,9 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     }
     if (valid) {
         float4 old = asfloat(irradiance.Load4(pix*16));
-        float3 _e194 = e;
-        uint _e197 = kept;
-        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e194), (old.w + float(_e197)))));
+        float3 _e203 = e;
+        uint _e206 = kept;
+        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e203), (old.w + float(_e206)))));
         return;
     } else {
         return;

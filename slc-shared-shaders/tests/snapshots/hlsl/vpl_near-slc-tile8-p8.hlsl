@@ -1,0 +1,429 @@
+struct GpuLight {
+    float3 p0_;
+    uint kind;
+    float3 p1_;
+    float a;
+    float3 p2_;
+    float b;
+    float3 intensity;
+    uint ies_base;
+};
+
+struct VplParams {
+    uint width;
+    uint height;
+    uint lights_per_subset;
+    float min_d2_;
+    float near_r2_;
+    uint near_blocks;
+    uint pad0_;
+    uint pad1_;
+};
+
+struct GpuNearBox {
+    float3 lo;
+    float pad0_;
+    float3 hi;
+    float pad1_;
+};
+
+struct WorkgroupBox {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    int _end_pad_0;
+};
+
+static const uint LIGHT_POINT = 0u;
+static const uint LIGHT_SPOT = 1u;
+static const uint LIGHT_IES = 2u;
+static const uint LIGHT_TRIANGLE = 3u;
+static const uint LIGHT_VPL = 4u;
+static const uint NO_LIGHT = 4294967295u;
+static const uint MAP_CAMERA = 0u;
+static const uint MAP_PERSPECTIVE = 1u;
+static const uint MAP_ORTHOGRAPHIC = 2u;
+static const float XI_STEP = 5.9604645e-8;
+static const uint PICK_STREAM = 2654435769u;
+static const float TWO_PI = 6.2831855;
+static const float CULL_RADIUS_SCALE = 1.000001;
+static const float SPHERE_PAD = 4.7683716e-7;
+static const float SPHERE_HUGE = 3.4028235e38;
+static const float SPHERE_PAD_ABS = 1e-18;
+static const float INV_PI = 0.31830987;
+static const float MIN_D2_ = 1e-12;
+static const uint BSH_NONE = 4294967295u;
+static const uint RESERVOIR_FULL = 4294967295u;
+static const float GGX_ALPHA_MIN = 0.001;
+static const float RANGE_SCALE_MAX = 64.0;
+static const uint LIGHT_BVH_LEAF = 4294967295u;
+static const float ONE_MINUS_EPSILON = 0.99999994;
+static const float F32_MAX = 3.4028235e38;
+static const float DEPTH_NONE = 1e30;
+static const float DEPTH_SIGMA = 0.05;
+static const float COVER_WEIGHT = 0.1;
+static const uint NEAR_BLOCK = 64u;
+static const uint ROULETTE_DEPTH = 2u;
+static const uint P = 8u;
+static const uint TILE = 8u;
+static const uint THREADS = 64u;
+static const uint BOX_THREADS = 64u;
+static const uint NEAR_CHUNK = 32u;
+
+groupshared float3 wg_lo[64];
+groupshared float3 wg_hi[64];
+cbuffer params : register(b0) { VplParams params; }
+ByteAddressBuffer gb_position : register(t1);
+ByteAddressBuffer gb_normal : register(t2);
+ByteAddressBuffer lights : register(t3);
+ByteAddressBuffer near_slots : register(t4);
+ByteAddressBuffer near_boxes : register(t5);
+ByteAddressBuffer rt2_2 : register(t6);
+ByteAddressBuffer r2_5 : register(t7);
+RWByteAddressBuffer irradiance : register(u8);
+groupshared uint light_count;
+groupshared uint light_list[2048];
+
+float to_f32_(uint u)
+{
+    return float(u);
+}
+
+float slc_weight(float rt2_, float d2_)
+{
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (d2_ / rt2_);
+}
+
+bool slc_keep(float r2_, float d2_1)
+{
+    return (d2_1 < r2_);
+}
+
+float cull_radius(float r2_1)
+{
+    return (sqrt(r2_1) * CULL_RADIUS_SCALE);
+}
+
+bool sphere_overlaps_aabb(float3 c, float r, float3 bmin, float3 bmax)
+{
+    float3 q = clamp(c, bmin, bmax);
+    float3 v_1 = (q - c);
+    return (dot(v_1, v_1) <= (r * r));
+}
+
+float vpl_transfer(float3 n_l, float3 n_x, float3 v, float min_d2_)
+{
+    float m_2 = max(dot(v, v), min_d2_);
+    return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m_2 * m_2));
+}
+
+float interleave_flux_scale(uint period)
+{
+    const float _e2 = to_f32_((period * period));
+    return _e2;
+}
+
+float vpl_near_weight(float d2_2, float near_r2_)
+{
+    if ((near_r2_ <= 0.0)) {
+        return 0.0;
+    }
+    float t = clamp(((near_r2_ - d2_2) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t * t) * (3.0 - (2.0 * t)));
+}
+
+float vpl_near_range2_(float r2_2, uint period_1)
+{
+    const float _e2 = interleave_flux_scale(period_1);
+    return (r2_2 / _e2);
+}
+
+float vpl_near_cull_range2_(float r2_3, float near_r2_1)
+{
+    return min(r2_3, near_r2_1);
+}
+
+float vpl_near_slc_share(float rt2_1, float r2_4, float d2_3, float near_r2_2)
+{
+    const float _e4 = vpl_near_weight(d2_3, near_r2_2);
+    const float _e5 = slc_weight(rt2_1, d2_3);
+    const bool _e7 = slc_keep(r2_4, d2_3);
+    return ((_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
+    WorkgroupBox ret = (WorkgroupBox)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    return ret;
+}
+
+WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
+{
+    uint stride = 32u;
+
+    wg_lo[min(uint(li_1), 63u)] = (has ? p : (3.4028235e38).xxx);
+    wg_hi[min(uint(li_1), 63u)] = (has ? p : (-3.4028235e38).xxx);
+    GroupMemoryBarrierWithGroupSync();
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e42 = stride;
+            stride = naga_div(_e42, 2u);
+        }
+        loop_init = false;
+        uint _e15 = stride;
+        if ((_e15 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = stride;
+            if ((li_1 < _e18)) {
+                float3 _e24 = wg_lo[min(uint(li_1), 63u)];
+                uint _e26 = stride;
+                float3 _e29 = wg_lo[min(uint((li_1 + _e26)), 63u)];
+                wg_lo[min(uint(li_1), 63u)] = min(_e24, _e29);
+                float3 _e35 = wg_hi[min(uint(li_1), 63u)];
+                uint _e37 = stride;
+                float3 _e40 = wg_hi[min(uint((li_1 + _e37)), 63u)];
+                wg_hi[min(uint(li_1), 63u)] = max(_e35, _e40);
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    float3 _e47 = wg_lo[0];
+    float3 _e50 = wg_hi[0];
+    const WorkgroupBox workgroupbox = ConstructWorkgroupBox(_e47, _e50);
+    return workgroupbox;
+}
+
+float near_r2_of(uint slot)
+{
+    float _e3 = asfloat(r2_5.Load(slot*4));
+    const float _e5 = vpl_near_range2_(_e3, P);
+    return _e5;
+}
+
+GpuNearBox ConstructGpuNearBox(float3 arg0, float arg1, float3 arg2, float arg3) {
+    GpuNearBox ret = (GpuNearBox)0;
+    ret.lo = arg0;
+    ret.pad0_ = arg1;
+    ret.hi = arg2;
+    ret.pad1_ = arg3;
+    return ret;
+}
+
+GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
+    GpuLight ret = (GpuLight)0;
+    ret.p0_ = arg0;
+    ret.kind = arg1;
+    ret.p1_ = arg2;
+    ret.a = arg3;
+    ret.p2_ = arg4;
+    ret.b = arg5;
+    ret.intensity = arg6;
+    ret.ies_base = arg7;
+    return ret;
+}
+
+[numthreads(8, 8, 1)]
+void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_GroupIndex)
+{
+    if (li == 0) {
+        wg_lo = (float3[64])0;
+        wg_hi = (float3[64])0;
+        light_count = (uint)0;
+        light_list = (uint[2048])0;
+    }
+    GroupMemoryBarrierWithGroupSync();
+    bool local = (bool)0;
+    float4 pos = (0.0).xxxx;
+    float3 nrm = (0.0).xxx;
+    bool local_1 = (bool)0;
+    float3 e = (0.0).xxx;
+    uint kept = 0u;
+    uint first = 0u;
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    uint m = (uint)0;
+    bool local_4 = (bool)0;
+    uint m_1 = (uint)0;
+
+    uint px = ((wg.x * TILE) + lid.x);
+    uint py = ((wg.y * TILE) + lid.y);
+    uint _e15 = params.width;
+    if ((px < _e15)) {
+        uint _e21 = params.height;
+        local = (py < _e21);
+    } else {
+        local = false;
+    }
+    bool inside = local;
+    uint _e27 = params.width;
+    uint pix = ((py * _e27) + px);
+    if (inside) {
+        float4 _e38 = asfloat(gb_position.Load4(pix*16));
+        pos = _e38;
+        float4 _e41 = asfloat(gb_normal.Load4(pix*16));
+        nrm = _e41.xyz;
+    }
+    if (inside) {
+        float _e46 = pos.w;
+        local_1 = (_e46 > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool valid = local_1;
+    float4 _e51 = pos;
+    const WorkgroupBox _e53 = workgroup_box(li, _e51.xyz, valid);
+    float3 lo = _e53.lo;
+    float3 hi = _e53.hi;
+    float _e58 = params.near_r2_;
+    const float _e59 = cull_radius(_e58);
+    const float _e61 = interleave_flux_scale(P);
+    float unscale = (1.0 / _e61);
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e197 = first;
+            first = (_e197 + NEAR_CHUNK);
+        }
+        loop_init_1 = false;
+        uint _e71 = first;
+        uint _e74 = params.near_blocks;
+        if ((_e71 < _e74)) {
+        } else {
+            break;
+        }
+        {
+            if ((li == 0u)) {
+                { uint dummy = 0; InterlockedExchange(light_count, 0u, dummy); }
+            }
+            GroupMemoryBarrierWithGroupSync();
+            uint _e80 = first;
+            uint b = (_e80 + li);
+            if ((li < NEAR_CHUNK)) {
+                uint _e88 = params.near_blocks;
+                local_2 = (b < _e88);
+            } else {
+                local_2 = false;
+            }
+            bool _e91 = local_2;
+            if (_e91) {
+                GpuNearBox nb = ConstructGpuNearBox(asfloat(near_boxes.Load3(b*32+0)), asfloat(near_boxes.Load(b*32+12)), asfloat(near_boxes.Load3(b*32+16)), asfloat(near_boxes.Load(b*32+28)));
+                if (all(((nb.lo - (_e59).xxx) <= hi))) {
+                    local_3 = all((lo <= (nb.hi + (_e59).xxx)));
+                } else {
+                    local_3 = false;
+                }
+                bool _e108 = local_3;
+                if (_e108) {
+                    m = 0u;
+                    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_2 = true;
+                    while(true) {
+                        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+                        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                        if (!loop_init_2) {
+                            uint _e147 = m;
+                            m = (_e147 + 1u);
+                        }
+                        loop_init_2 = false;
+                        uint _e111 = m;
+                        if ((_e111 < NEAR_BLOCK)) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e117 = m;
+                            uint slot_1 = asuint(near_slots.Load(((b * NEAR_BLOCK) + _e117)*4));
+                            GpuLight l = ConstructGpuLight(asfloat(lights.Load3(slot_1*64+0)), asuint(lights.Load(slot_1*64+12)), asfloat(lights.Load3(slot_1*64+16)), asfloat(lights.Load(slot_1*64+28)), asfloat(lights.Load3(slot_1*64+32)), asfloat(lights.Load(slot_1*64+44)), asfloat(lights.Load3(slot_1*64+48)), asuint(lights.Load(slot_1*64+60)));
+                            const float _e124 = near_r2_of(slot_1);
+                            float _e127 = params.near_r2_;
+                            const float _e128 = vpl_near_cull_range2_(_e124, _e127);
+                            const float _e129 = cull_radius(_e128);
+                            if (any((l.intensity != (0.0).xxx))) {
+                                const bool _e138 = sphere_overlaps_aabb(l.p0_, _e129, lo, hi);
+                                local_4 = _e138;
+                            } else {
+                                local_4 = false;
+                            }
+                            bool _e140 = local_4;
+                            if (_e140) {
+                                uint _e144; InterlockedAdd(light_count, 1u, _e144);
+                                light_list[min(uint(_e144), 2047u)] = slot_1;
+                            }
+                        }
+                    }
+                }
+            }
+            GroupMemoryBarrierWithGroupSync();
+            uint _e150 = light_count;
+            GroupMemoryBarrierWithGroupSync();
+            if (valid) {
+                m_1 = 0u;
+                uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+                bool loop_init_3 = true;
+                while(true) {
+                    if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+                    loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+                    if (!loop_init_3) {
+                        uint _e195 = m_1;
+                        m_1 = (_e195 + 1u);
+                    }
+                    loop_init_3 = false;
+                    uint _e153 = m_1;
+                    if ((_e153 < _e150)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e156 = m_1;
+                        uint slot_2 = light_list[min(uint(_e156), 2047u)];
+                        GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(slot_2*64+0)), asuint(lights.Load(slot_2*64+12)), asfloat(lights.Load3(slot_2*64+16)), asfloat(lights.Load(slot_2*64+28)), asfloat(lights.Load3(slot_2*64+32)), asfloat(lights.Load(slot_2*64+44)), asfloat(lights.Load3(slot_2*64+48)), asuint(lights.Load(slot_2*64+60)));
+                        float4 _e162 = pos;
+                        float3 v_2 = (_e162.xyz - l_1.p0_);
+                        float _e168 = asfloat(rt2_2.Load(slot_2*4));
+                        const float _e170 = vpl_near_range2_(_e168, P);
+                        const float _e171 = near_r2_of(slot_2);
+                        float _e175 = params.near_r2_;
+                        const float _e176 = vpl_near_slc_share(_e170, _e171, dot(v_2, v_2), _e175);
+                        if ((_e176 > 0.0)) {
+                            float3 _e179 = e;
+                            float3 _e182 = nrm;
+                            float _e185 = params.min_d2_;
+                            const float _e186 = vpl_transfer(l_1.p1_, _e182, v_2, _e185);
+                            e = (_e179 + (l_1.intensity * ((_e186 * _e176) * unscale)));
+                            uint _e191 = kept;
+                            kept = (_e191 + 1u);
+                        }
+                    }
+                }
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    if (valid) {
+        float4 old = asfloat(irradiance.Load4(pix*16));
+        float3 _e206 = e;
+        uint _e209 = kept;
+        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e206), (old.w + float(_e209)))));
+        return;
+    } else {
+        return;
+    }
+}

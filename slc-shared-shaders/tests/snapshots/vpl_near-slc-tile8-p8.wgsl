@@ -1,0 +1,359 @@
+struct GpuLight {
+    p0_: vec3<f32>,
+    kind: u32,
+    p1_: vec3<f32>,
+    a: f32,
+    p2_: vec3<f32>,
+    b: f32,
+    intensity: vec3<f32>,
+    ies_base: u32,
+}
+
+struct VplParams {
+    width: u32,
+    height: u32,
+    lights_per_subset: u32,
+    min_d2_: f32,
+    near_r2_: f32,
+    near_blocks: u32,
+    pad0_: u32,
+    pad1_: u32,
+}
+
+struct GpuNearBox {
+    lo: vec3<f32>,
+    pad0_: f32,
+    hi: vec3<f32>,
+    pad1_: f32,
+}
+
+struct WorkgroupBox {
+    lo: vec3<f32>,
+    hi: vec3<f32>,
+}
+
+const LIGHT_POINT: u32 = 0u;
+const LIGHT_SPOT: u32 = 1u;
+const LIGHT_IES: u32 = 2u;
+const LIGHT_TRIANGLE: u32 = 3u;
+const LIGHT_VPL: u32 = 4u;
+const NO_LIGHT: u32 = 4294967295u;
+const MAP_CAMERA: u32 = 0u;
+const MAP_PERSPECTIVE: u32 = 1u;
+const MAP_ORTHOGRAPHIC: u32 = 2u;
+const XI_STEP: f32 = 0.000000059604645f;
+const PICK_STREAM: u32 = 2654435769u;
+const TWO_PI: f32 = 6.2831855f;
+const CULL_RADIUS_SCALE: f32 = 1.000001f;
+const SPHERE_PAD: f32 = 0.00000047683716f;
+const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
+const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const INV_PI: f32 = 0.31830987f;
+const MIN_D2_: f32 = 0.000000000001f;
+const BSH_NONE: u32 = 4294967295u;
+const RESERVOIR_FULL: u32 = 4294967295u;
+const GGX_ALPHA_MIN: f32 = 0.001f;
+const RANGE_SCALE_MAX: f32 = 64f;
+const LIGHT_BVH_LEAF: u32 = 4294967295u;
+const ONE_MINUS_EPSILON: f32 = 0.99999994f;
+const F32_MAX: f32 = 340282350000000000000000000000000000000f;
+const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
+const DEPTH_SIGMA: f32 = 0.05f;
+const COVER_WEIGHT: f32 = 0.1f;
+const NEAR_BLOCK: u32 = 64u;
+const ROULETTE_DEPTH: u32 = 2u;
+const P: u32 = 8u;
+const TILE: u32 = 8u;
+const THREADS: u32 = 64u;
+const BOX_THREADS: u32 = 64u;
+const NEAR_CHUNK: u32 = 32u;
+
+var<workgroup> wg_lo: array<vec3<f32>, 64>;
+var<workgroup> wg_hi: array<vec3<f32>, 64>;
+@group(0) @binding(0) 
+var<uniform> params: VplParams;
+@group(0) @binding(1) 
+var<storage> gb_position: array<vec4<f32>>;
+@group(0) @binding(2) 
+var<storage> gb_normal: array<vec4<f32>>;
+@group(0) @binding(3) 
+var<storage> lights: array<GpuLight>;
+@group(0) @binding(4) 
+var<storage> near_slots: array<u32>;
+@group(0) @binding(5) 
+var<storage> near_boxes: array<GpuNearBox>;
+@group(0) @binding(6) 
+var<storage> rt2_2: array<f32>;
+@group(0) @binding(7) 
+var<storage> r2_5: array<f32>;
+@group(0) @binding(8) 
+var<storage, read_write> irradiance: array<vec4<f32>>;
+var<workgroup> light_count: atomic<u32>;
+var<workgroup> light_list: array<u32, 2048>;
+
+fn to_f32_(u: u32) -> f32 {
+    return f32(u);
+}
+
+fn slc_weight(rt2_: f32, d2_: f32) -> f32 {
+    if (d2_ <= rt2_) {
+        return 1f;
+    }
+    return (d2_ / rt2_);
+}
+
+fn slc_keep(r2_: f32, d2_1: f32) -> bool {
+    return (d2_1 < r2_);
+}
+
+fn cull_radius(r2_1: f32) -> f32 {
+    return (sqrt(r2_1) * CULL_RADIUS_SCALE);
+}
+
+fn sphere_overlaps_aabb(c: vec3<f32>, r: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
+    let q = clamp(c, bmin, bmax);
+    let v_1 = (q - c);
+    return (dot(v_1, v_1) <= (r * r));
+}
+
+fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v: vec3<f32>, min_d2_: f32) -> f32 {
+    let m_2 = max(dot(v, v), min_d2_);
+    return (((max(dot(n_l, v), 0f) * max(-(dot(n_x, v)), 0f)) * INV_PI) / (m_2 * m_2));
+}
+
+fn interleave_flux_scale(period: u32) -> f32 {
+    let _e2 = to_f32_((period * period));
+    return _e2;
+}
+
+fn vpl_near_weight(d2_2: f32, near_r2_: f32) -> f32 {
+    if (near_r2_ <= 0f) {
+        return 0f;
+    }
+    let t = clamp(((near_r2_ - d2_2) / (0.75f * near_r2_)), 0f, 1f);
+    return ((t * t) * (3f - (2f * t)));
+}
+
+fn vpl_near_range2_(r2_2: f32, period_1: u32) -> f32 {
+    let _e2 = interleave_flux_scale(period_1);
+    return (r2_2 / _e2);
+}
+
+fn vpl_near_cull_range2_(r2_3: f32, near_r2_1: f32) -> f32 {
+    return min(r2_3, near_r2_1);
+}
+
+fn vpl_near_slc_share(rt2_1: f32, r2_4: f32, d2_3: f32, near_r2_2: f32) -> f32 {
+    let _e4 = vpl_near_weight(d2_3, near_r2_2);
+    let _e5 = slc_weight(rt2_1, d2_3);
+    let _e7 = slc_keep(r2_4, d2_3);
+    return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
+}
+
+fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
+    var stride: u32 = 32u;
+
+    wg_lo[li_1] = select(vec3(340282350000000000000000000000000000000f), p, has);
+    wg_hi[li_1] = select(vec3(-340282350000000000000000000000000000000f), p, has);
+    workgroupBarrier();
+    loop {
+        let _e15 = stride;
+        if (_e15 > 0u) {
+        } else {
+            break;
+        }
+        {
+            let _e18 = stride;
+            if (li_1 < _e18) {
+                let _e24 = wg_lo[li_1];
+                let _e26 = stride;
+                let _e29 = wg_lo[(li_1 + _e26)];
+                wg_lo[li_1] = min(_e24, _e29);
+                let _e35 = wg_hi[li_1];
+                let _e37 = stride;
+                let _e40 = wg_hi[(li_1 + _e37)];
+                wg_hi[li_1] = max(_e35, _e40);
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e42 = stride;
+            stride = (_e42 / 2u);
+        }
+    }
+    let _e47 = wg_lo[0];
+    let _e50 = wg_hi[0];
+    return WorkgroupBox(_e47, _e50);
+}
+
+fn near_r2_of(slot: u32) -> f32 {
+    let _e3 = r2_5[slot];
+    let _e5 = vpl_near_range2_(_e3, P);
+    return _e5;
+}
+
+@compute @workgroup_size(8, 8, 1) 
+fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
+    var local: bool;
+    var pos: vec4<f32> = vec4(0f);
+    var nrm: vec3<f32> = vec3(0f);
+    var local_1: bool;
+    var e: vec3<f32> = vec3(0f);
+    var kept: u32 = 0u;
+    var first: u32 = 0u;
+    var local_2: bool;
+    var local_3: bool;
+    var m: u32;
+    var local_4: bool;
+    var m_1: u32;
+
+    let px = ((wg.x * TILE) + lid.x);
+    let py = ((wg.y * TILE) + lid.y);
+    let _e15 = params.width;
+    if (px < _e15) {
+        let _e21 = params.height;
+        local = (py < _e21);
+    } else {
+        local = false;
+    }
+    let inside = local;
+    let _e27 = params.width;
+    let pix = ((py * _e27) + px);
+    if inside {
+        let _e38 = gb_position[pix];
+        pos = _e38;
+        let _e41 = gb_normal[pix];
+        nrm = _e41.xyz;
+    }
+    if inside {
+        let _e46 = pos.w;
+        local_1 = (_e46 > 0f);
+    } else {
+        local_1 = false;
+    }
+    let valid = local_1;
+    let _e51 = pos;
+    let _e53 = workgroup_box(li, _e51.xyz, valid);
+    let lo = _e53.lo;
+    let hi = _e53.hi;
+    let _e58 = params.near_r2_;
+    let _e59 = cull_radius(_e58);
+    let _e61 = interleave_flux_scale(P);
+    let unscale = (1f / _e61);
+    loop {
+        let _e71 = first;
+        let _e74 = params.near_blocks;
+        if (_e71 < _e74) {
+        } else {
+            break;
+        }
+        {
+            if (li == 0u) {
+                atomicStore((&light_count), 0u);
+            }
+            workgroupBarrier();
+            let _e80 = first;
+            let b = (_e80 + li);
+            if (li < NEAR_CHUNK) {
+                let _e88 = params.near_blocks;
+                local_2 = (b < _e88);
+            } else {
+                local_2 = false;
+            }
+            let _e91 = local_2;
+            if _e91 {
+                let nb = near_boxes[b];
+                if all(((nb.lo - vec3(_e59)) <= hi)) {
+                    local_3 = all((lo <= (nb.hi + vec3(_e59))));
+                } else {
+                    local_3 = false;
+                }
+                let _e108 = local_3;
+                if _e108 {
+                    m = 0u;
+                    loop {
+                        let _e111 = m;
+                        if (_e111 < NEAR_BLOCK) {
+                        } else {
+                            break;
+                        }
+                        {
+                            let _e117 = m;
+                            let slot_1 = near_slots[((b * NEAR_BLOCK) + _e117)];
+                            let l = lights[slot_1];
+                            let _e124 = near_r2_of(slot_1);
+                            let _e127 = params.near_r2_;
+                            let _e128 = vpl_near_cull_range2_(_e124, _e127);
+                            let _e129 = cull_radius(_e128);
+                            if any((l.intensity != vec3(0f))) {
+                                let _e138 = sphere_overlaps_aabb(l.p0_, _e129, lo, hi);
+                                local_4 = _e138;
+                            } else {
+                                local_4 = false;
+                            }
+                            let _e140 = local_4;
+                            if _e140 {
+                                let _e144 = atomicAdd((&light_count), 1u);
+                                light_list[_e144] = slot_1;
+                            }
+                        }
+                        continuing {
+                            let _e147 = m;
+                            m = (_e147 + 1u);
+                        }
+                    }
+                }
+            }
+            let _e150 = workgroupUniformLoad((&light_count));
+            if valid {
+                m_1 = 0u;
+                loop {
+                    let _e153 = m_1;
+                    if (_e153 < _e150) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e156 = m_1;
+                        let slot_2 = light_list[_e156];
+                        let l_1 = lights[slot_2];
+                        let _e162 = pos;
+                        let v_2 = (_e162.xyz - l_1.p0_);
+                        let _e168 = rt2_2[slot_2];
+                        let _e170 = vpl_near_range2_(_e168, P);
+                        let _e171 = near_r2_of(slot_2);
+                        let _e175 = params.near_r2_;
+                        let _e176 = vpl_near_slc_share(_e170, _e171, dot(v_2, v_2), _e175);
+                        if (_e176 > 0f) {
+                            let _e179 = e;
+                            let _e182 = nrm;
+                            let _e185 = params.min_d2_;
+                            let _e186 = vpl_transfer(l_1.p1_, _e182, v_2, _e185);
+                            e = (_e179 + (l_1.intensity * ((_e186 * _e176) * unscale)));
+                            let _e191 = kept;
+                            kept = (_e191 + 1u);
+                        }
+                    }
+                    continuing {
+                        let _e195 = m_1;
+                        m_1 = (_e195 + 1u);
+                    }
+                }
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e197 = first;
+            first = (_e197 + NEAR_CHUNK);
+        }
+    }
+    if valid {
+        let old = irradiance[pix];
+        let _e206 = e;
+        let _e209 = kept;
+        irradiance[pix] = vec4<f32>((old.xyz + _e206), (old.w + f32(_e209)));
+        return;
+    } else {
+        return;
+    }
+}
