@@ -6,7 +6,7 @@
 
 use arbitrary::Arbitrary;
 use libfuzzer_sys::fuzz_target;
-use slc_shared_shaders::{CullMethod, Features, Heuristic, Kernel, LightSet, OutputFormat, Selection, ShaderError, VplSource, generate};
+use slc_shared_shaders::{CullMethod, DirectOutput, Features, Heuristic, Kernel, LightSet, OutputFormat, Selection, ShaderError, SurfaceSource, VplSource, generate};
 
 #[derive(Arbitrary, Debug)]
 struct Input {
@@ -23,6 +23,8 @@ struct Input {
     rsm: bool,
     rgba32: bool,
     shadows: bool,
+    surface: u8,
+    direct_output: u8,
 }
 
 fuzz_target!(|i: Input| {
@@ -36,10 +38,12 @@ fuzz_target!(|i: Input| {
         max_tile_lights: i.max_tile_lights as u32,
         method: [CullMethod::Slc, CullMethod::Clamp, CullMethod::None][i.method as usize % 3],
         heuristic: if i.heuristic { Heuristic::Balance } else { Heuristic::Power },
-        selection: [Selection::Reservoir, Selection::All, Selection::Uniform, Selection::Power, Selection::Weighted][i.selection as usize % 5],
+        selection: [Selection::Reservoir, Selection::All, Selection::Uniform, Selection::Power, Selection::Weighted, Selection::LightBvh][i.selection as usize % 6],
         vpl_source: if i.rsm { VplSource::Rsm } else { VplSource::Buffer },
         output_format: if i.rgba32 { OutputFormat::Rgba32Float } else { OutputFormat::Rgba16Float },
         shadows: i.shadows,
+        surface: [SurfaceSource::Position, SurfaceSource::Depth, SurfaceSource::R32Depth][i.surface as usize % 3],
+        direct_output: [DirectOutput::Irradiance, DirectOutput::Radiance, DirectOutput::Split][i.direct_output as usize % 3],
     };
     match generate(kernel, &features) {
         Ok(wgsl) => assert!(wgsl.contains("fn "), "{kernel:?}: empty source"),
