@@ -280,12 +280,13 @@ def compare(name, ours, ref):
                worst_block=[int(worst[0]), int(worst[1])], worst_block_rel=float(rel[worst]),
                worst_block_rel_sigma=float(se_b[worst] / bmr[worst]),
                blocks_beyond_3pct=int(np.sum(np.abs(rel) > 0.03)), blocks=int(lit.sum()),
-               median_block_rel=float(np.median(np.abs(rel[lit]))))
+               median_block_rel=float(np.median(np.abs(rel[lit]))),
+               blocks_beyond_3sigma=int(np.sum(lit & (np.abs(bmo - bmr) > 3 * se_b))))
     print("%-8s image mean %.5f vs Mitsuba %.5f: %+.3f%% (σ %.3f%%); worst 4x4 block %s: %+.2f%% (σ %.2f%%); "
-          "median |block| %.2f%%; %d of %d lit blocks beyond 3%%" % (
+          "median |block| %.2f%%; %d of %d lit blocks beyond 3%%, %d beyond 3σ (their own noise)" % (
               name, res["image_mean"], res["reference_mean"], 100 * mean_rel, 100 * res["mean_rel_sigma"],
               tuple(res["worst_block"]), 100 * res["worst_block_rel"], 100 * res["worst_block_rel_sigma"],
-              100 * res["median_block_rel"], res["blocks_beyond_3pct"], res["blocks"]))
+              100 * res["median_block_rel"], res["blocks_beyond_3pct"], res["blocks"], res["blocks_beyond_3sigma"]))
     return res
 
 
