@@ -1,12 +1,11 @@
 //! Compares the image means of `slc-weighted` and `slc-reservoir` with
 //! `uniform` on a scene file at path depths 1, 2 and 8, with their standard
 //! errors over seeds (README, "Materials": slc-weighted's difference at
-//! small ranges, found against Mitsuba 3). It also shows that the methods
-//! differ at a truncated depth: the last vertex's next-event estimate is
-//! weighted by MIS, but its BSDF sample is never traced, so each method
-//! loses its BSDF strategy's share of the last bounce (at depth 1 on the
-//! Mitsuba scene with Lambertian spheres: slc-reservoir −12%, slc-weighted
-//! −19% against uniform).
+//! small ranges, found against Mitsuba 3). Before the path tracers traced
+//! the last vertex's BSDF sample for its emission, the methods differed at
+//! a truncated depth (at depth 1 on the Mitsuba scene with Lambertian
+//! spheres: slc-reservoir −12%, slc-weighted −19% against uniform); now
+//! they agree at every depth.
 //!
 //!     cargo run --release -p slc-cpu --example weighted_bias -- SCENE.toml [EPS] [PASSES] [SEEDS]
 

@@ -80,7 +80,10 @@ pub struct PtSettings {
     pub exposure: f32,
     /// Seed.
     pub seed: u32,
-    /// Longest path (vertices after the camera).
+    /// Longest path: the surface vertices after the camera that estimate
+    /// next-event light, plus the emission the last one's BSDF sample
+    /// finds (so 1 is the whole direct light; Mitsuba's `max_depth` is this
+    /// plus one).
     pub max_depth: u32,
 }
 

@@ -159,7 +159,9 @@ impl<'a> GpuPt<'a> {
         let vertices = zeroed(gpu, "vertices", pixels * std::mem::size_of::<GpuPathVertex>() as u64, rw);
         let radiance = zeroed(gpu, "radiance", pixels * 16, rw);
         let readback = zeroed(gpu, "radiance readback", pixels * 16, wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
-        let pt_params = UniformSlots::new::<PtParams>(gpu, "pt params", MAX_DEPTH as u64);
+        // One extend per depth and a last one that only adds the emission its
+        // BSDF sample finds.
+        let pt_params = UniformSlots::new::<PtParams>(gpu, "pt params", MAX_DEPTH as u64 + 1);
         let shade_params = UniformSlots::new::<ShadeParams>(gpu, "shade params", MAX_DEPTH as u64);
         // One bind group per kernel; one pipeline per light selection.
         let kernel = |k: Kernel, reads: u32, writes: u32, bufs: &[&wgpu::Buffer], uniform: u64| {
@@ -266,7 +268,7 @@ impl<'a> GpuPt<'a> {
         for k in 0..passes {
             let pass = acc.passes + k;
             self.set.set_frame(gpu, s.seed, pass);
-            let pt: Vec<PtParams> = (0..s.max_depth)
+            let pt: Vec<PtParams> = (0..=s.max_depth)
                 .map(|depth| PtParams {
                     cam_pos: pos,
                     width: self.width,
@@ -297,13 +299,17 @@ impl<'a> GpuPt<'a> {
                 let writes = timer.as_mut().and_then(|t| t.next());
                 let mut cp = enc.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc pt pass"), timestamp_writes: writes });
                 self.set.encode(&mut cp);
-                for depth in 0..s.max_depth as usize {
+                for depth in 0..=s.max_depth as usize {
                     cp.set_pipeline(extend);
                     cp.set_bind_group(0, &self.extend.1, &[self.pt_params.offset(depth)]);
                     cp.dispatch_workgroups(pixels.div_ceil(WG), 1, 1);
-                    cp.set_pipeline(connect);
-                    cp.set_bind_group(0, &self.connect.1, &[self.shade_params.offset(depth)]);
-                    cp.dispatch_workgroups(pixels.div_ceil(WG), 1, 1);
+                    // The last extend only adds the emission its BSDF
+                    // sample finds (MIS's other share of the last vertex).
+                    if depth < s.max_depth as usize {
+                        cp.set_pipeline(connect);
+                        cp.set_bind_group(0, &self.connect.1, &[self.shade_params.offset(depth)]);
+                        cp.dispatch_workgroups(pixels.div_ceil(WG), 1, 1);
+                    }
                 }
             }
             if k + 1 == passes

@@ -330,7 +330,9 @@ impl CpuPathTracer {
         // Previous vertex for MIS at implicit hits: its receiver, its NEE,
         // the pdf of the BSDF sample that left it.
         let mut prev: Option<(Receiver, NeeState, f32)> = None;
-        for depth in 0..s.max_depth {
+        // `max_depth` vertices with next-event estimation, then the emission
+        // the last one's BSDF sample finds (MIS's other share of it).
+        for depth in 0..=s.max_depth {
             let Some(hit) = self.geo.intersect(org, dir, ray_t_min(diag), f32::INFINITY) else { break };
             let x = org + dir * hit.t;
             let tri = hit.triangle as usize;
@@ -349,6 +351,9 @@ impl CpuPathTracer {
                         radiance += beta * le * mis_power(*pdf_bsdf, pdf_light);
                     }
                 }
+            }
+            if depth == s.max_depth {
+                break;
             }
             let vx = Vertex::new(mat, x, n, ng, -dir);
             let (direct, nee) = self.nee(s, st, &vx, rng);

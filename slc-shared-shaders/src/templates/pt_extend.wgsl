@@ -87,6 +87,14 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             radiance[i] += vec4f(add, 0.0);
         }
     }
+    // Past the last vertex: only the emission found by its BSDF sample,
+    // the other share of the last vertex's MIS (no vertex, no NEE).
+    if params.depth >= params.max_depth {
+        st.alive = 0u;
+        paths[i] = st;
+        vertices[i] = v;
+        return;
+    }
     let m = materials[tri.material];
     let wo = -st.dir;
     let lobe = receiver_lobe(m.albedo, m.metallic, m.f0, m.f90, m.alpha, dot(n, wo));
@@ -119,7 +127,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     st.origin = x + ng * params.eps;
     st.dir = nd;
     // A direction below the surface itself ends the path.
-    if !continues_path(nd, n, ng) || !(pdf > 0.0) || params.depth + 1u >= params.max_depth {
+    if !continues_path(nd, n, ng) || !(pdf > 0.0) {
         st.alive = 0u;
     }
     // Russian roulette on path length from the third bounce.

@@ -227,15 +227,15 @@ fn reservoir_weight(n: u32, k: u32) -> f32 {
 
 fn reservoir_select_pdf(seen: u32, in_range: bool, k_1: u32) -> f32 {
     var others: u32;
-    var local_4: bool;
+    var local_3: bool;
 
     others = seen;
     if in_range {
-        local_4 = (seen > 0u);
+        local_3 = (seen > 0u);
     } else {
-        local_4 = false;
+        local_3 = false;
     }
-    let _e9 = local_4;
+    let _e9 = local_3;
     if _e9 {
         others = (seen - 1u);
     }
@@ -254,21 +254,21 @@ fn mis_power(pdf_a: f32, pdf_b: f32) -> f32 {
 }
 
 fn light_strategy_pdf(select_: f32, rt2_1: f32, d2_2: f32, area: f32, cos_y: f32) -> f32 {
+    var local_4: bool;
     var local_5: bool;
-    var local_6: bool;
 
     if !((d2_2 <= 0f)) {
-        local_5 = (area <= 0f);
+        local_4 = (area <= 0f);
+    } else {
+        local_4 = true;
+    }
+    let _e13 = local_4;
+    if !(_e13) {
+        local_5 = (cos_y <= 0f);
     } else {
         local_5 = true;
     }
-    let _e13 = local_5;
-    if !(_e13) {
-        local_6 = (cos_y <= 0f);
-    } else {
-        local_6 = true;
-    }
-    let _e20 = local_6;
+    let _e20 = local_5;
     if _e20 {
         return 0f;
     }
@@ -327,14 +327,14 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
 }
 
 fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
-    var local_7: bool;
+    var local_6: bool;
 
     if !((n_l <= 0f)) {
-        local_7 = (n_v <= 0f);
+        local_6 = (n_v <= 0f);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    let _e11 = local_7;
+    let _e11 = local_6;
     if _e11 {
         return 0f;
     }
@@ -370,16 +370,16 @@ fn half_cosine(v_1: vec3<f32>, l: vec3<f32>) -> f32 {
 }
 
 fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_6: vec3<f32>, v_2: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
-    var local_8: bool;
+    var local_7: bool;
 
     let n_l_1 = dot(n_6, l_1);
     let n_v_2 = dot(n_6, v_2);
     if !((n_l_1 <= 0f)) {
-        local_8 = (n_v_2 <= 0f);
+        local_7 = (n_v_2 <= 0f);
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    let _e18 = local_8;
+    let _e18 = local_7;
     if _e18 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -404,21 +404,21 @@ fn brdf_eval(base_3: vec3<f32>, metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32
 }
 
 fn has_specular(metallic_4: f32, f0_d_4: vec3<f32>, f90_d_4: f32) -> bool {
+    var local_8: bool;
     var local_9: bool;
-    var local_10: bool;
 
     if !((metallic_4 > 0f)) {
-        local_9 = (f90_d_4 > 0f);
+        local_8 = (f90_d_4 > 0f);
+    } else {
+        local_8 = true;
+    }
+    let _e11 = local_8;
+    if !(_e11) {
+        local_9 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0f);
     } else {
         local_9 = true;
     }
-    let _e11 = local_9;
-    if !(_e11) {
-        local_10 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0f);
-    } else {
-        local_10 = true;
-    }
-    let _e23 = local_10;
+    let _e23 = local_9;
     return _e23;
 }
 
@@ -427,17 +427,17 @@ fn channel_mean(c_1: vec3<f32>) -> f32 {
 }
 
 fn receiver_lobe(base_4: vec3<f32>, metallic_5: f32, f0_d_5: vec3<f32>, f90_d_5: f32, alpha_5: f32, n_v_1: f32) -> vec4<f32> {
-    var local_11: bool;
+    var local_10: bool;
 
     let _e10 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
     let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_4) * (1f - metallic_5)));
     if !((n_v_1 <= 0f)) {
         let _e22 = has_specular(metallic_5, f0_d_5, f90_d_5);
-        local_11 = !(_e22);
+        local_10 = !(_e22);
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    let _e25 = local_11;
+    let _e25 = local_10;
     if _e25 {
         return vec4<f32>(_e16, 0f, alpha_5, n_v_1);
     }
@@ -494,14 +494,14 @@ fn ggx_vndf_sample(wi_1: vec3<f32>, alpha_7: f32, u1_1: f32, u2_1: f32) -> vec3<
 }
 
 fn ggx_vndf_pdf(wi_2: vec3<f32>, wo: vec3<f32>, alpha_8: f32) -> f32 {
-    var local_12: bool;
+    var local_11: bool;
 
     if !((wi_2.z <= 0f)) {
-        local_12 = (wo.z <= 0f);
+        local_11 = (wo.z <= 0f);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    let _e13 = local_12;
+    let _e13 = local_11;
     if _e13 {
         return 0f;
     }
@@ -563,16 +563,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 }
 
 fn triangle_normal(a_2: vec3<f32>, b_2: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
-    var local_13: bool;
+    var local_12: bool;
 
     let n_15 = cross((b_2 - a_2), (c_2 - a_2));
     let l2_ = dot(n_15, n_15);
     if !(!((l2_ > 0f))) {
-        local_13 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_12 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    let _e17 = local_13;
+    let _e17 = local_12;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -600,16 +600,16 @@ fn barycentric(p: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> 
 }
 
 fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_2: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
-    var local_14: bool;
+    var local_13: bool;
 
     let s_4 = (((n0_ * w_2.x) + (n1_ * w_2.y)) + (n2_ * w_2.z));
     let l2_1 = dot(s_4, s_4);
     if !(!((l2_1 > 0.000000000001f))) {
-        local_14 = !((l2_1 < 300000000000000000000000000000000000000f));
+        local_13 = !((l2_1 < 300000000000000000000000000000000000000f));
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    let _e24 = local_14;
+    let _e24 = local_13;
     if _e24 {
         return facing;
     }
@@ -618,9 +618,9 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_2: vec3<f32>
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+    var local_14: bool;
     var local_15: bool;
     var local_16: bool;
-    var local_17: bool;
 
     let e1_1 = (b_4 - a_4);
     let e2_1 = (c_4 - a_4);
@@ -633,32 +633,32 @@ fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, 
     let s_5 = (o_1 - a_4);
     let u_2 = (dot(s_5, p_1) * inv_1);
     if !((u_2 < 0f)) {
-        local_15 = (u_2 > 1f);
+        local_14 = (u_2 > 1f);
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    let _e28 = local_15;
+    let _e28 = local_14;
     if _e28 {
         return -1f;
     }
     let q_1 = cross(s_5, e1_1);
     let v_9 = (dot(d_2, q_1) * inv_1);
     if !((v_9 < 0f)) {
-        local_16 = ((u_2 + v_9) > 1f);
+        local_15 = ((u_2 + v_9) > 1f);
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    let _e42 = local_16;
+    let _e42 = local_15;
     if _e42 {
         return -1f;
     }
     let t_2 = (dot(e2_1, q_1) * inv_1);
     if (t_2 > t_min) {
-        local_17 = (t_2 < t_max_1);
+        local_16 = (t_2 < t_max_1);
     } else {
-        local_17 = false;
+        local_16 = false;
     }
-    let _e51 = local_17;
+    let _e51 = local_16;
     if _e51 {
         return t_2;
     }
@@ -685,33 +685,33 @@ fn sees_emission(gn: vec3<f32>, dir_1: vec3<f32>) -> bool {
 }
 
 fn continues_path(nd: vec3<f32>, n_12: vec3<f32>, ng: vec3<f32>) -> bool {
-    var local_18: bool;
+    var local_17: bool;
 
     if (dot(nd, n_12) > 0f) {
-        local_18 = (dot(nd, ng) > 0f);
+        local_17 = (dot(nd, ng) > 0f);
     } else {
-        local_18 = false;
+        local_17 = false;
     }
-    let _e12 = local_18;
+    let _e12 = local_17;
     return _e12;
 }
 
 fn finite3_(v_7: vec3<f32>) -> bool {
+    var local_18: bool;
     var local_19: bool;
-    var local_20: bool;
 
     if (abs(v_7.x) <= F32_MAX) {
-        local_19 = (abs(v_7.y) <= F32_MAX);
+        local_18 = (abs(v_7.y) <= F32_MAX);
+    } else {
+        local_18 = false;
+    }
+    let _e12 = local_18;
+    if _e12 {
+        local_19 = (abs(v_7.z) <= F32_MAX);
     } else {
         local_19 = false;
     }
-    let _e12 = local_19;
-    if _e12 {
-        local_20 = (abs(v_7.z) <= F32_MAX);
-    } else {
-        local_20 = false;
-    }
-    let _e20 = local_20;
+    let _e20 = local_19;
     return _e20;
 }
 
@@ -851,7 +851,6 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var rng: u32;
     var local_1: bool;
     var local_2: bool;
-    var local_3: bool;
 
     let i_1 = gid.x;
     let _e4 = params.width;
@@ -961,86 +960,88 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             radiance[i_1] = (_e209 + vec4<f32>(add, 0f));
         }
     }
+    let _e215 = params.depth;
+    let _e218 = params.max_depth;
+    if (_e215 >= _e218) {
+        st.alive = 0u;
+        let _e224 = st;
+        paths[i_1] = _e224;
+        let _e227 = v;
+        vertices[i_1] = _e227;
+        return;
+    }
     let m_2 = materials[tri.material];
-    let _e218 = st.dir;
-    let wo_1 = -(_e218);
-    let _e226 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
+    let _e233 = st.dir;
+    let wo_1 = -(_e233);
+    let _e241 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
     v.position = x_5;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    let _e234 = st.beta;
-    v.weight = _e234;
+    let _e249 = st.beta;
+    v.weight = _e249;
     v.wo = wo_1;
     v.alive = 1u;
-    let _e240 = v;
-    vertices[i_1] = _e240;
-    let _e242 = st.rng;
-    rng = _e242;
-    let _e244 = next_uniform((&rng));
-    let _e245 = next_uniform((&rng));
-    let _e246 = specular_probability(_e226);
-    let _e248 = bsdf_sample(_e147, wo_1, m_2.alpha, _e246, _e244, _e245);
-    let _e250 = bsdf_pdf(_e147, wo_1, _e248, m_2.alpha, _e246);
-    let _e254 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
-    if _e254 {
-        let _e256 = st.beta;
-        let _e262 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e248);
-        st.beta = (_e256 * (_e262 * (dot(_e248, _e147) / _e250)));
+    let _e255 = v;
+    vertices[i_1] = _e255;
+    let _e257 = st.rng;
+    rng = _e257;
+    let _e259 = next_uniform((&rng));
+    let _e260 = next_uniform((&rng));
+    let _e261 = specular_probability(_e241);
+    let _e263 = bsdf_sample(_e147, wo_1, m_2.alpha, _e261, _e259, _e260);
+    let _e265 = bsdf_pdf(_e147, wo_1, _e263, m_2.alpha, _e261);
+    let _e269 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
+    if _e269 {
+        let _e271 = st.beta;
+        let _e277 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e263);
+        st.beta = (_e271 * (_e277 * (dot(_e263, _e147) / _e265)));
     } else {
-        let _e268 = st.beta;
-        st.beta = (_e268 * m_2.albedo);
+        let _e283 = st.beta;
+        st.beta = (_e283 * m_2.albedo);
     }
     st.prev = x_5;
     st.prev_normal = _e147;
-    let _e274 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e274;
-    st.prev_lobe = _e226;
-    st.pdf_bsdf = _e250;
-    let _e280 = params.eps;
-    st.origin = (x_5 + (_e123 * _e280));
-    st.dir = _e248;
-    let _e284 = continues_path(_e248, _e147, _e123);
-    if !(!(_e284)) {
-        local_1 = !((_e250 > 0f));
+    let _e289 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e289;
+    st.prev_lobe = _e241;
+    st.pdf_bsdf = _e265;
+    let _e295 = params.eps;
+    st.origin = (x_5 + (_e123 * _e295));
+    st.dir = _e263;
+    let _e299 = continues_path(_e263, _e147, _e123);
+    if !(!(_e299)) {
+        local_1 = !((_e265 > 0f));
     } else {
         local_1 = true;
     }
-    let _e293 = local_1;
-    if !(_e293) {
-        let _e299 = params.depth;
-        let _e304 = params.max_depth;
-        local_2 = ((_e299 + 1u) >= _e304);
-    } else {
-        local_2 = true;
-    }
-    let _e307 = local_2;
-    if _e307 {
+    let _e308 = local_1;
+    if _e308 {
         st.alive = 0u;
     }
-    let _e312 = params.depth;
-    let _e313 = plays_roulette(_e312);
-    if _e313 {
-        let _e317 = st.alive;
-        local_3 = (_e317 == 1u);
+    let _e313 = params.depth;
+    let _e314 = plays_roulette(_e313);
+    if _e314 {
+        let _e318 = st.alive;
+        local_2 = (_e318 == 1u);
     } else {
-        local_3 = false;
+        local_2 = false;
     }
-    let _e321 = local_3;
-    if _e321 {
-        let _e323 = st.beta;
-        let _e324 = path_survival(_e323);
-        let _e325 = next_uniform((&rng));
-        if (_e325 >= _e324) {
+    let _e322 = local_2;
+    if _e322 {
+        let _e324 = st.beta;
+        let _e325 = path_survival(_e324);
+        let _e326 = next_uniform((&rng));
+        if (_e326 >= _e325) {
             st.alive = 0u;
         } else {
-            let _e330 = st.beta;
-            st.beta = (_e330 / vec3(_e324));
+            let _e331 = st.beta;
+            st.beta = (_e331 / vec3(_e325));
         }
     }
-    let _e334 = rng;
-    st.rng = _e334;
-    let _e337 = st;
-    paths[i_1] = _e337;
+    let _e335 = rng;
+    st.rng = _e335;
+    let _e338 = st;
+    paths[i_1] = _e338;
     return;
 }

@@ -223,14 +223,14 @@ float reservoir_weight(uint n, uint k) {
 
 float reservoir_select_pdf(uint seen, bool in_range, uint k_1) {
     uint others = 0u;
-    bool local_4 = false;
+    bool local_3 = false;
     others = seen;
     if (in_range) {
-        local_4 = (seen > 0u);
+        local_3 = (seen > 0u);
     } else {
-        local_4 = false;
+        local_3 = false;
     }
-    bool _e9 = local_4;
+    bool _e9 = local_3;
     if (_e9) {
         others = (seen - 1u);
     }
@@ -249,20 +249,20 @@ float mis_power(float pdf_a, float pdf_b) {
 }
 
 float light_strategy_pdf(float select, float rt2_1, float d2_2, float area, float cos_y) {
+    bool local_4 = false;
     bool local_5 = false;
-    bool local_6 = false;
     if (!((d2_2 <= 0.0))) {
-        local_5 = (area <= 0.0);
+        local_4 = (area <= 0.0);
+    } else {
+        local_4 = true;
+    }
+    bool _e13 = local_4;
+    if (!(_e13)) {
+        local_5 = (cos_y <= 0.0);
     } else {
         local_5 = true;
     }
-    bool _e13 = local_5;
-    if (!(_e13)) {
-        local_6 = (cos_y <= 0.0);
-    } else {
-        local_6 = true;
-    }
-    bool _e20 = local_6;
+    bool _e20 = local_5;
     if (_e20) {
         return 0.0;
     }
@@ -321,13 +321,13 @@ float smith_root(float cos_, float alpha_1) {
 }
 
 float smith_visibility(float n_l, float n_v, float alpha_2) {
-    bool local_7 = false;
+    bool local_6 = false;
     if (!((n_l <= 0.0))) {
-        local_7 = (n_v <= 0.0);
+        local_6 = (n_v <= 0.0);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_6;
     if (_e11) {
         return 0.0;
     }
@@ -363,15 +363,15 @@ float half_cosine(vec3 v_1, vec3 l) {
 }
 
 vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n_6, vec3 v_2, vec3 l_1) {
-    bool local_8 = false;
+    bool local_7 = false;
     float n_l_1 = dot(n_6, l_1);
     float n_v_2 = dot(n_6, v_2);
     if (!((n_l_1 <= 0.0))) {
-        local_8 = (n_v_2 <= 0.0);
+        local_7 = (n_v_2 <= 0.0);
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e18 = local_8;
+    bool _e18 = local_7;
     if (_e18) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -396,20 +396,20 @@ vec3 brdf_eval(vec3 base_3, float metallic_3, vec3 f0_d_3, float f90_d_3, float 
 }
 
 bool has_specular(float metallic_4, vec3 f0_d_4, float f90_d_4) {
+    bool local_8 = false;
     bool local_9 = false;
-    bool local_10 = false;
     if (!((metallic_4 > 0.0))) {
-        local_9 = (f90_d_4 > 0.0);
+        local_8 = (f90_d_4 > 0.0);
+    } else {
+        local_8 = true;
+    }
+    bool _e11 = local_8;
+    if (!(_e11)) {
+        local_9 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
     } else {
         local_9 = true;
     }
-    bool _e11 = local_9;
-    if (!(_e11)) {
-        local_10 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
-    } else {
-        local_10 = true;
-    }
-    bool _e23 = local_10;
+    bool _e23 = local_9;
     return _e23;
 }
 
@@ -418,16 +418,16 @@ float channel_mean(vec3 c_1) {
 }
 
 vec4 receiver_lobe(vec3 base_4, float metallic_5, vec3 f0_d_5, float f90_d_5, float alpha_5, float n_v_1) {
-    bool local_11 = false;
+    bool local_10 = false;
     vec3 _e10 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
     float _e16 = channel_mean((((vec3(1.0, 1.0, 1.0) - _e10) * base_4) * (1.0 - metallic_5)));
     if (!((n_v_1 <= 0.0))) {
         bool _e22 = has_specular(metallic_5, f0_d_5, f90_d_5);
-        local_11 = !(_e22);
+        local_10 = !(_e22);
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    bool _e25 = local_11;
+    bool _e25 = local_10;
     if (_e25) {
         return vec4(_e16, 0.0, alpha_5, n_v_1);
     }
@@ -484,13 +484,13 @@ vec3 ggx_vndf_sample(vec3 wi_1, float alpha_7, float u1_1, float u2_1) {
 }
 
 float ggx_vndf_pdf(vec3 wi_2, vec3 wo, float alpha_8) {
-    bool local_12 = false;
+    bool local_11 = false;
     if (!((wi_2.z <= 0.0))) {
-        local_12 = (wo.z <= 0.0);
+        local_11 = (wo.z <= 0.0);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e13 = local_12;
+    bool _e13 = local_11;
     if (_e13) {
         return 0.0;
     }
@@ -552,15 +552,15 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_2, vec3 b_2, vec3 c_2) {
-    bool local_13 = false;
+    bool local_12 = false;
     vec3 n_15 = cross((b_2 - a_2), (c_2 - a_2));
     float l2_ = dot(n_15, n_15);
     if (!(!((l2_ > 0.0)))) {
-        local_13 = !((l2_ < 3e38));
+        local_12 = !((l2_ < 3e38));
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e17 = local_13;
+    bool _e17 = local_12;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -588,15 +588,15 @@ vec3 barycentric(vec3 p, vec3 a_3, vec3 b_3, vec3 c_3) {
 }
 
 vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_2, vec3 facing) {
-    bool local_14 = false;
+    bool local_13 = false;
     vec3 s_4 = (((n0_ * w_2.x) + (n1_ * w_2.y)) + (n2_ * w_2.z));
     float l2_1 = dot(s_4, s_4);
     if (!(!((l2_1 > 1e-12)))) {
-        local_14 = !((l2_1 < 3e38));
+        local_13 = !((l2_1 < 3e38));
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e24 = local_14;
+    bool _e24 = local_13;
     if (_e24) {
         return facing;
     }
@@ -605,9 +605,9 @@ vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_2, vec3 facing) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d_2, vec3 a_4, vec3 b_4, vec3 c_4, float t_min, float t_max_1) {
+    bool local_14 = false;
     bool local_15 = false;
     bool local_16 = false;
-    bool local_17 = false;
     vec3 e1_1 = (b_4 - a_4);
     vec3 e2_1 = (c_4 - a_4);
     vec3 p_1 = cross(d_2, e2_1);
@@ -619,32 +619,32 @@ float ray_triangle(vec3 o_1, vec3 d_2, vec3 a_4, vec3 b_4, vec3 c_4, float t_min
     vec3 s_5 = (o_1 - a_4);
     float u_2 = (dot(s_5, p_1) * inv_1);
     if (!((u_2 < 0.0))) {
-        local_15 = (u_2 > 1.0);
+        local_14 = (u_2 > 1.0);
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    bool _e28 = local_15;
+    bool _e28 = local_14;
     if (_e28) {
         return -1.0;
     }
     vec3 q_1 = cross(s_5, e1_1);
     float v_9 = (dot(d_2, q_1) * inv_1);
     if (!((v_9 < 0.0))) {
-        local_16 = ((u_2 + v_9) > 1.0);
+        local_15 = ((u_2 + v_9) > 1.0);
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    bool _e42 = local_16;
+    bool _e42 = local_15;
     if (_e42) {
         return -1.0;
     }
     float t_2 = (dot(e2_1, q_1) * inv_1);
     if ((t_2 > t_min)) {
-        local_17 = (t_2 < t_max_1);
+        local_16 = (t_2 < t_max_1);
     } else {
-        local_17 = false;
+        local_16 = false;
     }
-    bool _e51 = local_17;
+    bool _e51 = local_16;
     if (_e51) {
         return t_2;
     }
@@ -671,31 +671,31 @@ bool sees_emission(vec3 gn, vec3 dir_1) {
 }
 
 bool continues_path(vec3 nd, vec3 n_12, vec3 ng) {
-    bool local_18 = false;
+    bool local_17 = false;
     if ((dot(nd, n_12) > 0.0)) {
-        local_18 = (dot(nd, ng) > 0.0);
+        local_17 = (dot(nd, ng) > 0.0);
     } else {
-        local_18 = false;
+        local_17 = false;
     }
-    bool _e12 = local_18;
+    bool _e12 = local_17;
     return _e12;
 }
 
 bool finite3_(vec3 v_7) {
+    bool local_18 = false;
     bool local_19 = false;
-    bool local_20 = false;
     if ((abs(v_7.x) <= F32_MAX)) {
-        local_19 = (abs(v_7.y) <= F32_MAX);
+        local_18 = (abs(v_7.y) <= F32_MAX);
+    } else {
+        local_18 = false;
+    }
+    bool _e12 = local_18;
+    if (_e12) {
+        local_19 = (abs(v_7.z) <= F32_MAX);
     } else {
         local_19 = false;
     }
-    bool _e12 = local_19;
-    if (_e12) {
-        local_20 = (abs(v_7.z) <= F32_MAX);
-    } else {
-        local_20 = false;
-    }
-    bool _e20 = local_20;
+    bool _e20 = local_19;
     return _e20;
 }
 
@@ -836,7 +836,6 @@ void main() {
     uint rng = 0u;
     bool local_1 = false;
     bool local_2 = false;
-    bool local_3 = false;
     uint i_1 = gid.x;
     uint _e4 = _group_0_binding_0_cs.width;
     uint _e7 = _group_0_binding_0_cs.height;
@@ -945,87 +944,89 @@ void main() {
             _group_0_binding_12_cs[i_1] = (_e209 + vec4(add, 0.0));
         }
     }
+    uint _e215 = _group_0_binding_0_cs.depth;
+    uint _e218 = _group_0_binding_0_cs.max_depth;
+    if ((_e215 >= _e218)) {
+        st.alive = 0u;
+        GpuPathState _e224 = st;
+        _group_0_binding_10_cs[i_1] = _e224;
+        GpuPathVertex _e227 = v;
+        _group_0_binding_11_cs[i_1] = _e227;
+        return;
+    }
     GpuMaterial m_2 = _group_0_binding_7_cs[tri.material];
-    vec3 _e218 = st.dir;
-    vec3 wo_1 = -(_e218);
-    vec4 _e226 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
+    vec3 _e233 = st.dir;
+    vec3 wo_1 = -(_e233);
+    vec4 _e241 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
     v.position = x_5;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    vec3 _e234 = st.beta;
-    v.weight = _e234;
+    vec3 _e249 = st.beta;
+    v.weight = _e249;
     v.wo = wo_1;
     v.alive = 1u;
-    GpuPathVertex _e240 = v;
-    _group_0_binding_11_cs[i_1] = _e240;
-    uint _e242 = st.rng;
-    rng = _e242;
-    float _e244 = next_uniform(rng);
-    float _e245 = next_uniform(rng);
-    float _e246 = specular_probability(_e226);
-    vec3 _e248 = bsdf_sample(_e147, wo_1, m_2.alpha, _e246, _e244, _e245);
-    float _e250 = bsdf_pdf(_e147, wo_1, _e248, m_2.alpha, _e246);
-    bool _e254 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
-    if (_e254) {
-        vec3 _e256 = st.beta;
-        vec3 _e262 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e248);
-        st.beta = (_e256 * (_e262 * (dot(_e248, _e147) / _e250)));
+    GpuPathVertex _e255 = v;
+    _group_0_binding_11_cs[i_1] = _e255;
+    uint _e257 = st.rng;
+    rng = _e257;
+    float _e259 = next_uniform(rng);
+    float _e260 = next_uniform(rng);
+    float _e261 = specular_probability(_e241);
+    vec3 _e263 = bsdf_sample(_e147, wo_1, m_2.alpha, _e261, _e259, _e260);
+    float _e265 = bsdf_pdf(_e147, wo_1, _e263, m_2.alpha, _e261);
+    bool _e269 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
+    if (_e269) {
+        vec3 _e271 = st.beta;
+        vec3 _e277 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e263);
+        st.beta = (_e271 * (_e277 * (dot(_e263, _e147) / _e265)));
     } else {
-        vec3 _e268 = st.beta;
-        st.beta = (_e268 * m_2.albedo);
+        vec3 _e283 = st.beta;
+        st.beta = (_e283 * m_2.albedo);
     }
     st.prev = x_5;
     st.prev_normal = _e147;
-    vec3 _e274 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e274;
-    st.prev_lobe = _e226;
-    st.pdf_bsdf = _e250;
-    float _e280 = _group_0_binding_0_cs.eps;
-    st.origin = (x_5 + (_e123 * _e280));
-    st.dir = _e248;
-    bool _e284 = continues_path(_e248, _e147, _e123);
-    if (!(!(_e284))) {
-        local_1 = !((_e250 > 0.0));
+    vec3 _e289 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e289;
+    st.prev_lobe = _e241;
+    st.pdf_bsdf = _e265;
+    float _e295 = _group_0_binding_0_cs.eps;
+    st.origin = (x_5 + (_e123 * _e295));
+    st.dir = _e263;
+    bool _e299 = continues_path(_e263, _e147, _e123);
+    if (!(!(_e299))) {
+        local_1 = !((_e265 > 0.0));
     } else {
         local_1 = true;
     }
-    bool _e293 = local_1;
-    if (!(_e293)) {
-        uint _e299 = _group_0_binding_0_cs.depth;
-        uint _e304 = _group_0_binding_0_cs.max_depth;
-        local_2 = ((_e299 + 1u) >= _e304);
-    } else {
-        local_2 = true;
-    }
-    bool _e307 = local_2;
-    if (_e307) {
+    bool _e308 = local_1;
+    if (_e308) {
         st.alive = 0u;
     }
-    uint _e312 = _group_0_binding_0_cs.depth;
-    bool _e313 = plays_roulette(_e312);
-    if (_e313) {
-        uint _e317 = st.alive;
-        local_3 = (_e317 == 1u);
+    uint _e313 = _group_0_binding_0_cs.depth;
+    bool _e314 = plays_roulette(_e313);
+    if (_e314) {
+        uint _e318 = st.alive;
+        local_2 = (_e318 == 1u);
     } else {
-        local_3 = false;
+        local_2 = false;
     }
-    bool _e321 = local_3;
-    if (_e321) {
-        vec3 _e323 = st.beta;
-        float _e324 = path_survival(_e323);
-        float _e325 = next_uniform(rng);
-        if ((_e325 >= _e324)) {
+    bool _e322 = local_2;
+    if (_e322) {
+        vec3 _e324 = st.beta;
+        float _e325 = path_survival(_e324);
+        float _e326 = next_uniform(rng);
+        if ((_e326 >= _e325)) {
             st.alive = 0u;
         } else {
-            vec3 _e330 = st.beta;
-            st.beta = (_e330 / vec3(_e324));
+            vec3 _e331 = st.beta;
+            st.beta = (_e331 / vec3(_e325));
         }
     }
-    uint _e334 = rng;
-    st.rng = _e334;
-    GpuPathState _e337 = st;
-    _group_0_binding_10_cs[i_1] = _e337;
+    uint _e335 = rng;
+    st.rng = _e335;
+    GpuPathState _e338 = st;
+    _group_0_binding_10_cs[i_1] = _e338;
     return;
 }
 

@@ -227,15 +227,15 @@ float reservoir_weight(uint n, uint k)
 float reservoir_select_pdf(uint seen, bool in_range, uint k_1)
 {
     uint others = (uint)0;
-    bool local_4 = (bool)0;
+    bool local_3 = (bool)0;
 
     others = seen;
     if (in_range) {
-        local_4 = (seen > 0u);
+        local_3 = (seen > 0u);
     } else {
-        local_4 = false;
+        local_3 = false;
     }
-    bool _e9 = local_4;
+    bool _e9 = local_3;
     if (_e9) {
         others = (seen - 1u);
     }
@@ -256,21 +256,21 @@ float mis_power(float pdf_a, float pdf_b)
 
 float light_strategy_pdf(float select_, float rt2_1, float d2_2, float area, float cos_y)
 {
+    bool local_4 = (bool)0;
     bool local_5 = (bool)0;
-    bool local_6 = (bool)0;
 
     if (!((d2_2 <= 0.0))) {
-        local_5 = (area <= 0.0);
+        local_4 = (area <= 0.0);
+    } else {
+        local_4 = true;
+    }
+    bool _e13 = local_4;
+    if (!(_e13)) {
+        local_5 = (cos_y <= 0.0);
     } else {
         local_5 = true;
     }
-    bool _e13 = local_5;
-    if (!(_e13)) {
-        local_6 = (cos_y <= 0.0);
-    } else {
-        local_6 = true;
-    }
-    bool _e20 = local_6;
+    bool _e20 = local_5;
     if (_e20) {
         return 0.0;
     }
@@ -338,14 +338,14 @@ float smith_root(float cos_, float alpha_1)
 
 float smith_visibility(float n_l, float n_v, float alpha_2)
 {
-    bool local_7 = (bool)0;
+    bool local_6 = (bool)0;
 
     if (!((n_l <= 0.0))) {
-        local_7 = (n_v <= 0.0);
+        local_6 = (n_v <= 0.0);
     } else {
-        local_7 = true;
+        local_6 = true;
     }
-    bool _e11 = local_7;
+    bool _e11 = local_6;
     if (_e11) {
         return 0.0;
     }
@@ -386,16 +386,16 @@ float half_cosine(float3 v_1, float3 l)
 
 float3 specular_brdf(float3 base_2, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n_6, float3 v_2, float3 l_1)
 {
-    bool local_8 = (bool)0;
+    bool local_7 = (bool)0;
 
     float n_l_1 = dot(n_6, l_1);
     float n_v_2 = dot(n_6, v_2);
     if (!((n_l_1 <= 0.0))) {
-        local_8 = (n_v_2 <= 0.0);
+        local_7 = (n_v_2 <= 0.0);
     } else {
-        local_8 = true;
+        local_7 = true;
     }
-    bool _e18 = local_8;
+    bool _e18 = local_7;
     if (_e18) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -422,21 +422,21 @@ float3 brdf_eval(float3 base_3, float metallic_3, float3 f0_d_3, float f90_d_3, 
 
 bool has_specular(float metallic_4, float3 f0_d_4, float f90_d_4)
 {
+    bool local_8 = (bool)0;
     bool local_9 = (bool)0;
-    bool local_10 = (bool)0;
 
     if (!((metallic_4 > 0.0))) {
-        local_9 = (f90_d_4 > 0.0);
+        local_8 = (f90_d_4 > 0.0);
+    } else {
+        local_8 = true;
+    }
+    bool _e11 = local_8;
+    if (!(_e11)) {
+        local_9 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
     } else {
         local_9 = true;
     }
-    bool _e11 = local_9;
-    if (!(_e11)) {
-        local_10 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
-    } else {
-        local_10 = true;
-    }
-    bool _e23 = local_10;
+    bool _e23 = local_9;
     return _e23;
 }
 
@@ -447,17 +447,17 @@ float channel_mean(float3 c_1)
 
 float4 receiver_lobe(float3 base_4, float metallic_5, float3 f0_d_5, float f90_d_5, float alpha_5, float n_v_1)
 {
-    bool local_11 = (bool)0;
+    bool local_10 = (bool)0;
 
     const float3 _e10 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
     const float _e16 = channel_mean((((float3(1.0, 1.0, 1.0) - _e10) * base_4) * (1.0 - metallic_5)));
     if (!((n_v_1 <= 0.0))) {
         const bool _e22 = has_specular(metallic_5, f0_d_5, f90_d_5);
-        local_11 = !(_e22);
+        local_10 = !(_e22);
     } else {
-        local_11 = true;
+        local_10 = true;
     }
-    bool _e25 = local_11;
+    bool _e25 = local_10;
     if (_e25) {
         return float4(_e16, 0.0, alpha_5, n_v_1);
     }
@@ -521,14 +521,14 @@ float3 ggx_vndf_sample(float3 wi_1, float alpha_7, float u1_1, float u2_1)
 
 float ggx_vndf_pdf(float3 wi_2, float3 wo, float alpha_8)
 {
-    bool local_12 = (bool)0;
+    bool local_11 = (bool)0;
 
     if (!((wi_2.z <= 0.0))) {
-        local_12 = (wo.z <= 0.0);
+        local_11 = (wo.z <= 0.0);
     } else {
-        local_12 = true;
+        local_11 = true;
     }
-    bool _e13 = local_12;
+    bool _e13 = local_11;
     if (_e13) {
         return 0.0;
     }
@@ -596,16 +596,16 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
 
 float3 triangle_normal(float3 a_2, float3 b_2, float3 c_2)
 {
-    bool local_13 = (bool)0;
+    bool local_12 = (bool)0;
 
     float3 n_15 = cross((b_2 - a_2), (c_2 - a_2));
     float l2_ = dot(n_15, n_15);
     if (!(!((l2_ > 0.0)))) {
-        local_13 = !((l2_ < 3e38));
+        local_12 = !((l2_ < 3e38));
     } else {
-        local_13 = true;
+        local_12 = true;
     }
-    bool _e17 = local_13;
+    bool _e17 = local_12;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -636,16 +636,16 @@ float3 barycentric(float3 p, float3 a_3, float3 b_3, float3 c_3)
 
 float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_2, float3 facing)
 {
-    bool local_14 = (bool)0;
+    bool local_13 = (bool)0;
 
     float3 s_4 = (((n0_ * w_2.x) + (n1_ * w_2.y)) + (n2_ * w_2.z));
     float l2_1 = dot(s_4, s_4);
     if (!(!((l2_1 > 1e-12)))) {
-        local_14 = !((l2_1 < 3e38));
+        local_13 = !((l2_1 < 3e38));
     } else {
-        local_14 = true;
+        local_13 = true;
     }
-    bool _e24 = local_14;
+    bool _e24 = local_13;
     if (_e24) {
         return facing;
     }
@@ -655,9 +655,9 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_2, float3 fac
 
 float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_4, float3 c_4, float t_min, float t_max_1)
 {
+    bool local_14 = (bool)0;
     bool local_15 = (bool)0;
     bool local_16 = (bool)0;
-    bool local_17 = (bool)0;
 
     float3 e1_1 = (b_4 - a_4);
     float3 e2_1 = (c_4 - a_4);
@@ -670,32 +670,32 @@ float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_4, float3 c_4, f
     float3 s_5 = (o_1 - a_4);
     float u_2 = (dot(s_5, p_1) * inv_1);
     if (!((u_2 < 0.0))) {
-        local_15 = (u_2 > 1.0);
+        local_14 = (u_2 > 1.0);
     } else {
-        local_15 = true;
+        local_14 = true;
     }
-    bool _e28 = local_15;
+    bool _e28 = local_14;
     if (_e28) {
         return -1.0;
     }
     float3 q_1 = cross(s_5, e1_1);
     float v_9 = (dot(d_2, q_1) * inv_1);
     if (!((v_9 < 0.0))) {
-        local_16 = ((u_2 + v_9) > 1.0);
+        local_15 = ((u_2 + v_9) > 1.0);
     } else {
-        local_16 = true;
+        local_15 = true;
     }
-    bool _e42 = local_16;
+    bool _e42 = local_15;
     if (_e42) {
         return -1.0;
     }
     float t_2 = (dot(e2_1, q_1) * inv_1);
     if ((t_2 > t_min)) {
-        local_17 = (t_2 < t_max_1);
+        local_16 = (t_2 < t_max_1);
     } else {
-        local_17 = false;
+        local_16 = false;
     }
-    bool _e51 = local_17;
+    bool _e51 = local_16;
     if (_e51) {
         return t_2;
     }
@@ -727,34 +727,34 @@ bool sees_emission(float3 gn, float3 dir_1)
 
 bool continues_path(float3 nd, float3 n_12, float3 ng)
 {
-    bool local_18 = (bool)0;
+    bool local_17 = (bool)0;
 
     if ((dot(nd, n_12) > 0.0)) {
-        local_18 = (dot(nd, ng) > 0.0);
+        local_17 = (dot(nd, ng) > 0.0);
     } else {
-        local_18 = false;
+        local_17 = false;
     }
-    bool _e12 = local_18;
+    bool _e12 = local_17;
     return _e12;
 }
 
 bool finite3_(float3 v_7)
 {
+    bool local_18 = (bool)0;
     bool local_19 = (bool)0;
-    bool local_20 = (bool)0;
 
     if ((abs(v_7.x) <= F32_MAX)) {
-        local_19 = (abs(v_7.y) <= F32_MAX);
+        local_18 = (abs(v_7.y) <= F32_MAX);
+    } else {
+        local_18 = false;
+    }
+    bool _e12 = local_18;
+    if (_e12) {
+        local_19 = (abs(v_7.z) <= F32_MAX);
     } else {
         local_19 = false;
     }
-    bool _e12 = local_19;
-    if (_e12) {
-        local_20 = (abs(v_7.z) <= F32_MAX);
-    } else {
-        local_20 = false;
-    }
-    bool _e20 = local_20;
+    bool _e20 = local_19;
     return _e20;
 }
 
@@ -1002,7 +1002,6 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint rng = (uint)0;
     bool local_1 = (bool)0;
     bool local_2 = (bool)0;
-    bool local_3 = (bool)0;
 
     uint i_1 = gid.x;
     uint _e4 = params.width;
@@ -1151,21 +1150,58 @@ void main(uint3 gid : SV_DispatchThreadID)
             radiance.Store4(i_1*16, asuint((_e209 + float4(add, 0.0))));
         }
     }
+    uint _e215 = params.depth;
+    uint _e218 = params.max_depth;
+    if ((_e215 >= _e218)) {
+        st.alive = 0u;
+        GpuPathState _e224 = st;
+        {
+            GpuPathState _value3 = _e224;
+            paths.Store3(i_1*112+0, asuint(_value3.origin));
+            paths.Store(i_1*112+12, asuint(_value3.alive));
+            paths.Store3(i_1*112+16, asuint(_value3.dir));
+            paths.Store(i_1*112+28, asuint(_value3.rng));
+            paths.Store3(i_1*112+32, asuint(_value3.beta));
+            paths.Store(i_1*112+44, asuint(_value3.pdf_bsdf));
+            paths.Store3(i_1*112+48, asuint(_value3.prev));
+            paths.Store(i_1*112+60, asuint(_value3.pad));
+            paths.Store3(i_1*112+64, asuint(_value3.prev_normal));
+            paths.Store(i_1*112+76, asuint(_value3.pad2_));
+            paths.Store3(i_1*112+80, asuint(_value3.prev_r));
+            paths.Store(i_1*112+92, asuint(_value3.pad3_));
+            paths.Store4(i_1*112+96, asuint(_value3.prev_lobe));
+        }
+        GpuPathVertex _e227 = v;
+        {
+            GpuPathVertex _value3 = _e227;
+            vertices_.Store3(i_1*80+0, asuint(_value3.position));
+            vertices_.Store(i_1*80+12, asuint(_value3.alive));
+            vertices_.Store3(i_1*80+16, asuint(_value3.normal));
+            vertices_.Store(i_1*80+28, asuint(_value3.material));
+            vertices_.Store3(i_1*80+32, asuint(_value3.weight));
+            vertices_.Store(i_1*80+44, asuint(_value3.pad1_));
+            vertices_.Store3(i_1*80+48, asuint(_value3.gnormal));
+            vertices_.Store(i_1*80+60, asuint(_value3.pad2_));
+            vertices_.Store3(i_1*80+64, asuint(_value3.wo));
+            vertices_.Store(i_1*80+76, asuint(_value3.pad3_));
+        }
+        return;
+    }
     GpuMaterial m_2 = ConstructGpuMaterial(asfloat(materials.Load3(tri.material*48+0)), asfloat(materials.Load(tri.material*48+12)), asfloat(materials.Load3(tri.material*48+16)), asfloat(materials.Load(tri.material*48+28)), asfloat(materials.Load3(tri.material*48+32)), asfloat(materials.Load(tri.material*48+44)));
-    float3 _e218 = st.dir;
-    float3 wo_1 = -(_e218);
-    const float4 _e226 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
+    float3 _e233 = st.dir;
+    float3 wo_1 = -(_e233);
+    const float4 _e241 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
     v.position = x_5;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    float3 _e234 = st.beta;
-    v.weight = _e234;
+    float3 _e249 = st.beta;
+    v.weight = _e249;
     v.wo = wo_1;
     v.alive = 1u;
-    GpuPathVertex _e240 = v;
+    GpuPathVertex _e255 = v;
     {
-        GpuPathVertex _value2 = _e240;
+        GpuPathVertex _value2 = _e255;
         vertices_.Store3(i_1*80+0, asuint(_value2.position));
         vertices_.Store(i_1*80+12, asuint(_value2.alive));
         vertices_.Store3(i_1*80+16, asuint(_value2.normal));
@@ -1177,74 +1213,66 @@ void main(uint3 gid : SV_DispatchThreadID)
         vertices_.Store3(i_1*80+64, asuint(_value2.wo));
         vertices_.Store(i_1*80+76, asuint(_value2.pad3_));
     }
-    uint _e242 = st.rng;
-    rng = _e242;
-    const float _e244 = next_uniform(rng);
-    const float _e245 = next_uniform(rng);
-    const float _e246 = specular_probability(_e226);
-    const float3 _e248 = bsdf_sample(_e147, wo_1, m_2.alpha, _e246, _e244, _e245);
-    const float _e250 = bsdf_pdf(_e147, wo_1, _e248, m_2.alpha, _e246);
-    const bool _e254 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
-    if (_e254) {
-        float3 _e256 = st.beta;
-        const float3 _e262 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e248);
-        st.beta = (_e256 * (_e262 * (dot(_e248, _e147) / _e250)));
+    uint _e257 = st.rng;
+    rng = _e257;
+    const float _e259 = next_uniform(rng);
+    const float _e260 = next_uniform(rng);
+    const float _e261 = specular_probability(_e241);
+    const float3 _e263 = bsdf_sample(_e147, wo_1, m_2.alpha, _e261, _e259, _e260);
+    const float _e265 = bsdf_pdf(_e147, wo_1, _e263, m_2.alpha, _e261);
+    const bool _e269 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
+    if (_e269) {
+        float3 _e271 = st.beta;
+        const float3 _e277 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e263);
+        st.beta = (_e271 * (_e277 * (dot(_e263, _e147) / _e265)));
     } else {
-        float3 _e268 = st.beta;
-        st.beta = (_e268 * m_2.albedo);
+        float3 _e283 = st.beta;
+        st.beta = (_e283 * m_2.albedo);
     }
     st.prev = x_5;
     st.prev_normal = _e147;
-    const float3 _e274 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e274;
-    st.prev_lobe = _e226;
-    st.pdf_bsdf = _e250;
-    float _e280 = params.eps;
-    st.origin = (x_5 + (_e123 * _e280));
-    st.dir = _e248;
-    const bool _e284 = continues_path(_e248, _e147, _e123);
-    if (!(!(_e284))) {
-        local_1 = !((_e250 > 0.0));
+    const float3 _e289 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e289;
+    st.prev_lobe = _e241;
+    st.pdf_bsdf = _e265;
+    float _e295 = params.eps;
+    st.origin = (x_5 + (_e123 * _e295));
+    st.dir = _e263;
+    const bool _e299 = continues_path(_e263, _e147, _e123);
+    if (!(!(_e299))) {
+        local_1 = !((_e265 > 0.0));
     } else {
         local_1 = true;
     }
-    bool _e293 = local_1;
-    if (!(_e293)) {
-        uint _e299 = params.depth;
-        uint _e304 = params.max_depth;
-        local_2 = ((_e299 + 1u) >= _e304);
-    } else {
-        local_2 = true;
-    }
-    bool _e307 = local_2;
-    if (_e307) {
+    bool _e308 = local_1;
+    if (_e308) {
         st.alive = 0u;
     }
-    uint _e312 = params.depth;
-    const bool _e313 = plays_roulette(_e312);
-    if (_e313) {
-        uint _e317 = st.alive;
-        local_3 = (_e317 == 1u);
+    uint _e313 = params.depth;
+    const bool _e314 = plays_roulette(_e313);
+    if (_e314) {
+        uint _e318 = st.alive;
+        local_2 = (_e318 == 1u);
     } else {
-        local_3 = false;
+        local_2 = false;
     }
-    bool _e321 = local_3;
-    if (_e321) {
-        float3 _e323 = st.beta;
-        const float _e324 = path_survival(_e323);
-        const float _e325 = next_uniform(rng);
-        if ((_e325 >= _e324)) {
+    bool _e322 = local_2;
+    if (_e322) {
+        float3 _e324 = st.beta;
+        const float _e325 = path_survival(_e324);
+        const float _e326 = next_uniform(rng);
+        if ((_e326 >= _e325)) {
             st.alive = 0u;
         } else {
-            float3 _e330 = st.beta;
-            st.beta = (_e330 / (_e324).xxx);
+            float3 _e331 = st.beta;
+            st.beta = (_e331 / (_e325).xxx);
         }
     }
-    uint _e334 = rng;
-    st.rng = _e334;
-    GpuPathState _e337 = st;
+    uint _e335 = rng;
+    st.rng = _e335;
+    GpuPathState _e338 = st;
     {
-        GpuPathState _value2 = _e337;
+        GpuPathState _value2 = _e338;
         paths.Store3(i_1*112+0, asuint(_value2.origin));
         paths.Store(i_1*112+12, asuint(_value2.alive));
         paths.Store3(i_1*112+16, asuint(_value2.dir));
