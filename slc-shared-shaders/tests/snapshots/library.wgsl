@@ -76,40 +76,68 @@ fn pcg_hash(x_1: u32) -> u32 {
     return ((_e12 >> 22u) ^ _e12);
 }
 
-fn reverse_bits(x_2: u32) -> u32 {
+fn laine_karras(x_2: u32, seed: u32) -> u32 {
     var v: u32;
 
-    v = (((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u));
-    let _e11 = v;
-    let _e16 = v;
-    v = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
-    let _e22 = v;
-    let _e27 = v;
-    v = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
-    let _e33 = v;
-    let _e38 = v;
-    v = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
-    let _e44 = v;
-    let _e49 = v;
-    v = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
-    let _e55 = v;
+    let _e2 = add_wrap_u32_(x_2, seed);
+    v = _e2;
+    let _e4 = v;
+    let _e5 = v;
+    let _e7 = mul_lo_u32_(_e5, 1817228412u);
+    v = (_e4 ^ _e7);
+    let _e9 = v;
+    let _e10 = v;
+    let _e12 = mul_lo_u32_(_e10, 3090095698u);
+    v = (_e9 ^ _e12);
+    let _e14 = v;
+    let _e15 = v;
+    let _e17 = mul_lo_u32_(_e15, 3350193720u);
+    v = (_e14 ^ _e17);
+    let _e19 = v;
+    let _e20 = v;
+    let _e22 = mul_lo_u32_(_e20, 2367878886u);
+    v = (_e19 ^ _e22);
+    let _e24 = v;
+    return _e24;
+}
+
+fn reverse_bits(x_3: u32) -> u32 {
+    var v_1: u32;
+
+    v_1 = (((x_3 >> 16u) & 65535u) | ((x_3 & 65535u) << 16u));
+    let _e11 = v_1;
+    let _e16 = v_1;
+    v_1 = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
+    let _e22 = v_1;
+    let _e27 = v_1;
+    v_1 = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
+    let _e33 = v_1;
+    let _e38 = v_1;
+    v_1 = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
+    let _e44 = v_1;
+    let _e49 = v_1;
+    v_1 = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
+    let _e55 = v_1;
     return _e55;
 }
 
-fn xi_for(seed: u32, frame: u32, light: u32) -> f32 {
-    let _e3 = pcg_hash(seed);
+fn xi_for(seed_1: u32, frame: u32, light: u32) -> f32 {
+    let _e3 = pcg_hash(seed_1);
     let _e4 = pcg_hash(_e3);
     let _e6 = pcg_hash((_e4 ^ light));
-    let _e7 = reverse_bits(frame);
-    let _e8 = add_wrap_u32_(_e6, _e7);
-    let _e9 = xi_from_bits(_e8);
-    return _e9;
+    let _e7 = pcg_hash(_e6);
+    let _e8 = reverse_bits(frame);
+    let _e9 = laine_karras(_e8, _e7);
+    let _e11 = laine_karras(0u, _e7);
+    let _e13 = add_wrap_u32_(_e6, (_e9 ^ _e11));
+    let _e14 = xi_from_bits(_e13);
+    return _e14;
 }
 
-fn point_stream(seed_1: u32, point: u32, frame_1: u32) -> u32 {
+fn point_stream(seed_2: u32, point: u32, frame_1: u32) -> u32 {
     let _e3 = pcg_hash(frame_1);
     let _e5 = pcg_hash((point ^ _e3));
-    let _e7 = pcg_hash((seed_1 ^ _e5));
+    let _e7 = pcg_hash((seed_2 ^ _e5));
     return _e7;
 }
 
@@ -118,9 +146,9 @@ fn pick_stream(stream: u32) -> u32 {
     return _e3;
 }
 
-fn path_stream(seed_2: u32, pixel: u32, pass_index: u32) -> u32 {
+fn path_stream(seed_3: u32, pixel: u32, pass_index: u32) -> u32 {
     let _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
-    let _e5 = point_stream(seed_2, pixel, _e4);
+    let _e5 = point_stream(seed_3, pixel, _e4);
     return _e5;
 }
 
@@ -174,15 +202,15 @@ fn windowed_falloff(d2_4: f32, range2_1: f32) -> f32 {
     return ((w_10 * w_10) / max(d2_4, 0.0001f));
 }
 
-fn sphere_contains_point(c: vec3<f32>, r: f32, x_3: vec3<f32>) -> bool {
-    let v_10 = (x_3 - c);
-    return (dot(v_10, v_10) <= (r * r));
+fn sphere_contains_point(c: vec3<f32>, r: f32, x_4: vec3<f32>) -> bool {
+    let v_11 = (x_4 - c);
+    return (dot(v_11, v_11) <= (r * r));
 }
 
 fn sphere_overlaps_sphere(c1_: vec3<f32>, r1_: f32, c2_: vec3<f32>, r2_2: f32) -> bool {
-    let v_11 = (c2_ - c1_);
+    let v_12 = (c2_ - c1_);
     let r_6 = (r1_ + r2_2);
-    return (dot(v_11, v_11) <= (r_6 * r_6));
+    return (dot(v_12, v_12) <= (r_6 * r_6));
 }
 
 fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
@@ -192,8 +220,8 @@ fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
 fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<f32> {
     var local: bool;
 
-    let v_12 = (c2_1 - c1_1);
-    let d_6 = sqrt(dot(v_12, v_12));
+    let v_13 = (c2_1 - c1_1);
+    let d_6 = sqrt(dot(v_13, v_13));
     let _e8 = sphere_pad(r1_1, c1_1);
     if (r1_1 >= ((d_6 + r2_3) + _e8)) {
         return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, r1_1);
@@ -222,7 +250,7 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
     let r0_ = (0.5f * ((d_6 + r1_1) + r2_3));
-    let c_10 = (c1_1 + (v_12 * ((r0_ - r1_1) / d_6)));
+    let c_10 = (c1_1 + (v_13 * ((r0_ - r1_1) / d_6)));
     let e1_ = (c_10 - c1_1);
     let e2_ = (c_10 - c2_1);
     let r_7 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
@@ -232,8 +260,8 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
 
 fn sphere_overlaps_aabb(c_2: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
     let q_3 = clamp(c_2, bmin, bmax);
-    let v_13 = (q_3 - c_2);
-    return (dot(v_13, v_13) <= (r_2 * r_2));
+    let v_14 = (q_3 - c_2);
+    return (dot(v_14, v_14) <= (r_2 * r_2));
 }
 
 fn vpl_rt2_(flux: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32) -> f32 {
@@ -256,12 +284,12 @@ fn connection_factor(cos_x: f32, d2_6: f32, rt2_3: f32, w: f32) -> f32 {
     return (((cos_x * _e4) * _e6) * w);
 }
 
-fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_5: f32) -> f32 {
+fn connection_cosine(x_5: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_5: f32) -> f32 {
     var local_1: bool;
     var local_2: bool;
 
-    let v_14 = (x_4 - y);
-    let d2_16 = dot(v_14, v_14);
+    let v_15 = (x_5 - y);
+    let d2_16 = dot(v_15, v_15);
     let _e7 = slc_keep(r2_5, d2_16);
     if !(!(_e7)) {
         local_1 = !((d2_16 > 0f));
@@ -272,7 +300,7 @@ fn connection_cosine(x_4: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_11 = (v_14 / vec3(sqrt(d2_16)));
+    let w_11 = (v_15 / vec3(sqrt(d2_16)));
     let cos_x_1 = -(dot(n, w_11));
     if !((cos_x_1 <= 0f)) {
         local_2 = (dot(ng, w_11) >= 0f);
@@ -290,9 +318,9 @@ fn vpl_lobe(n_1: vec3<f32>, w_1: vec3<f32>) -> f32 {
     return (max(dot(n_1, w_1), 0f) * INV_PI);
 }
 
-fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v_1: vec3<f32>, min_d2_: f32) -> f32 {
-    let m = max(dot(v_1, v_1), min_d2_);
-    return (((max(dot(n_l, v_1), 0f) * max(-(dot(n_x, v_1)), 0f)) * INV_PI) / (m * m));
+fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v_2: vec3<f32>, min_d2_: f32) -> f32 {
+    let m = max(dot(v_2, v_2), min_d2_);
+    return (((max(dot(n_l, v_2), 0f) * max(-(dot(n_x, v_2)), 0f)) * INV_PI) / (m * m));
 }
 
 fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
@@ -322,11 +350,11 @@ fn area_to_solid_angle_pdf(pdf_area: f32, d2_7: f32, cos_light: f32) -> f32 {
     return ((pdf_area * d2_7) / c_11);
 }
 
-fn atan_portable(x_5: f32) -> f32 {
+fn atan_portable(x_6: f32) -> f32 {
     var base: f32 = 0f;
     var t: f32;
 
-    let a_9 = abs(x_5);
+    let a_9 = abs(x_6);
     t = a_9;
     if (a_9 > 2.4142137f) {
         base = 1.5707964f;
@@ -344,11 +372,11 @@ fn atan_portable(x_5: f32) -> f32 {
     let _e33 = t;
     let _e35 = t;
     let r_8 = (_e21 + (((((((((0.080537446f * z_3) - 0.13877685f) * z_3) + 0.19977711f) * z_3) - 0.3333295f) * z_3) * _e33) + _e35));
-    return select(r_8, -(r_8), (x_5 < 0f));
+    return select(r_8, -(r_8), (x_6 < 0f));
 }
 
-fn atan2_portable(y_1: f32, x_6: f32) -> f32 {
-    if (x_6 == 0f) {
+fn atan2_portable(y_1: f32, x_7: f32) -> f32 {
+    if (x_7 == 0f) {
         if (y_1 > 0f) {
             return 1.5707964f;
         }
@@ -357,8 +385,8 @@ fn atan2_portable(y_1: f32, x_6: f32) -> f32 {
         }
         return 0f;
     }
-    let _e12 = atan_portable((y_1 / x_6));
-    if (x_6 > 0f) {
+    let _e12 = atan_portable((y_1 / x_7));
+    if (x_7 > 0f) {
         return _e12;
     }
     if (y_1 >= 0f) {
@@ -416,7 +444,7 @@ fn ies_fold_c(c_4: f32, h_first: f32, h_last: f32) -> f32 {
     return _e52;
 }
 
-fn ies_segment(tab_1: u32, start: u32, n_3: u32, x_7: f32) -> u32 {
+fn ies_segment(tab_1: u32, start: u32, n_3: u32, x_8: f32) -> u32 {
     var lo: u32 = 0u;
     var hi: u32;
 
@@ -436,7 +464,7 @@ fn ies_segment(tab_1: u32, start: u32, n_3: u32, x_7: f32) -> u32 {
             let _e18 = hi;
             let mid = ((_e17 + _e18) >> 1u);
             let _e23 = at(tab_1, (start + mid));
-            if (_e23 <= x_7) {
+            if (_e23 <= x_8) {
                 lo = mid;
             } else {
                 hi = mid;
@@ -447,11 +475,11 @@ fn ies_segment(tab_1: u32, start: u32, n_3: u32, x_7: f32) -> u32 {
     return _e25;
 }
 
-fn ies_lerp_t(a0_: f32, a1_: f32, x_8: f32) -> f32 {
+fn ies_lerp_t(a0_: f32, a1_: f32, x_9: f32) -> f32 {
     if (a1_ <= a0_) {
         return 0f;
     }
-    return saturate(((x_8 - a0_) / (a1_ - a0_)));
+    return saturate(((x_9 - a0_) / (a1_ - a0_)));
 }
 
 fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_5: f32) -> f32 {
@@ -737,20 +765,20 @@ fn diffuse_brdf(base_5: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: 
     return ((((vec3<f32>(1f, 1f, 1f) - _e9) * base_5) * (1f - metallic_1)) * INV_PI);
 }
 
-fn half_cosine(v_2: vec3<f32>, l: vec3<f32>) -> f32 {
-    let h_1 = (v_2 + l);
+fn half_cosine(v_3: vec3<f32>, l: vec3<f32>) -> f32 {
+    let h_1 = (v_3 + l);
     let len2_ = dot(h_1, h_1);
     if (len2_ <= 0f) {
         return 0f;
     }
-    return saturate((dot(v_2, h_1) / sqrt(len2_)));
+    return saturate((dot(v_3, h_1) / sqrt(len2_)));
 }
 
-fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_14: vec3<f32>, v_3: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
+fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_14: vec3<f32>, v_4: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
     var local_8: bool;
 
     let n_l_2 = dot(n_14, l_1);
-    let n_v_2 = dot(n_14, v_3);
+    let n_v_2 = dot(n_14, v_4);
     if !((n_l_2 <= 0f)) {
         local_8 = (n_v_2 <= 0f);
     } else {
@@ -760,23 +788,23 @@ fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2:
     if _e18 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    let hs = (v_3 + l_1);
+    let hs = (v_4 + l_1);
     let inv = (1f / sqrt(dot(hs, hs)));
     let h_2 = (hs * inv);
     let c_14 = cross(n_14, h_2);
     let _e32 = ggx_d(dot(n_14, h_2), dot(c_14, c_14), alpha_3);
-    let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_3, h_2));
+    let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_4, h_2));
     let _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
 
-fn brdf_eval(base_7: vec3<f32>, metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32, alpha_4: f32, n_15: vec3<f32>, v_4: vec3<f32>, l_2: vec3<f32>) -> vec3<f32> {
+fn brdf_eval(base_7: vec3<f32>, metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32, alpha_4: f32, n_15: vec3<f32>, v_5: vec3<f32>, l_2: vec3<f32>) -> vec3<f32> {
     if (dot(n_15, l_2) <= 0f) {
         return vec3<f32>(0f, 0f, 0f);
     }
-    let _e15 = half_cosine(v_4, l_2);
+    let _e15 = half_cosine(v_5, l_2);
     let _e16 = diffuse_brdf(base_7, metallic_3, f0_d_3, f90_d_3, _e15);
-    let _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_15, v_4, l_2);
+    let _e17 = specular_brdf(base_7, metallic_3, f0_d_3, f90_d_3, alpha_4, n_15, v_5, l_2);
     return (_e16 + _e17);
 }
 
@@ -846,8 +874,8 @@ fn range_scale(lobe_2: vec4<f32>) -> f32 {
     return clamp(_e5, 1f, RANGE_SCALE_MAX);
 }
 
-fn mirror_dir(n_16: vec3<f32>, v_5: vec3<f32>) -> vec3<f32> {
-    return ((n_16 * (2f * dot(n_16, v_5))) - v_5);
+fn mirror_dir(n_16: vec3<f32>, v_6: vec3<f32>) -> vec3<f32> {
+    return ((n_16 * (2f * dot(n_16, v_6))) - v_6);
 }
 
 fn bounded_vndf_k(wi: vec3<f32>, alpha_6: f32) -> f32 {
@@ -890,12 +918,12 @@ fn ggx_vndf_pdf(wi_2: vec3<f32>, wo: vec3<f32>, alpha_8: f32) -> f32 {
     return (_e28 / (2f * ((_e43 * wi_2.z) + t_4)));
 }
 
-fn bsdf_sample(n_17: vec3<f32>, v_6: vec3<f32>, alpha_9: f32, p_spec: f32, u1_3: f32, u2_3: f32) -> vec3<f32> {
+fn bsdf_sample(n_17: vec3<f32>, v_7: vec3<f32>, alpha_9: f32, p_spec: f32, u1_3: f32, u2_3: f32) -> vec3<f32> {
     if (u1_3 < p_spec) {
-        if (dot(n_17, v_6) <= 0f) {
+        if (dot(n_17, v_7) <= 0f) {
             return -(n_17);
         }
-        let _e11 = onb_to_local(n_17, v_6);
+        let _e11 = onb_to_local(n_17, v_7);
         let _e13 = ggx_vndf_sample(_e11, alpha_9, (u1_3 / p_spec), u2_3);
         let _e14 = onb_to_world(n_17, _e13);
         return normalize(_e14);
@@ -904,12 +932,12 @@ fn bsdf_sample(n_17: vec3<f32>, v_6: vec3<f32>, alpha_9: f32, p_spec: f32, u1_3:
     return _e20;
 }
 
-fn bsdf_pdf(n_18: vec3<f32>, v_7: vec3<f32>, l_3: vec3<f32>, alpha_10: f32, p_spec_1: f32) -> f32 {
+fn bsdf_pdf(n_18: vec3<f32>, v_8: vec3<f32>, l_3: vec3<f32>, alpha_10: f32, p_spec_1: f32) -> f32 {
     let _e6 = cosine_pdf(dot(n_18, l_3));
     if (p_spec_1 <= 0f) {
         return _e6;
     }
-    let _e9 = onb_to_local(n_18, v_7);
+    let _e9 = onb_to_local(n_18, v_8);
     let _e10 = onb_to_local(n_18, l_3);
     let _e11 = ggx_vndf_pdf(_e9, _e10, alpha_10);
     return ((p_spec_1 * _e11) + ((1f - p_spec_1) * _e6));
@@ -929,8 +957,8 @@ fn sin_sub_clamped(sin_a_1: f32, cos_a_1: f32, sin_b_1: f32, cos_b_1: f32) -> f3
     return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
 }
 
-fn safe_sqrt(x_9: f32) -> f32 {
-    return sqrt(max(x_9, 0f));
+fn safe_sqrt(x_10: f32) -> f32 {
+    return sqrt(max(x_10, 0f));
 }
 
 fn subtended_cos(dist2_: f32, r2_6: f32) -> f32 {
@@ -939,11 +967,11 @@ fn subtended_cos(dist2_: f32, r2_6: f32) -> f32 {
 }
 
 fn emitter_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, cos_o: f32, cos_e: f32, p: vec3<f32>) -> f32 {
-    let v_15 = (p - center);
-    let dist2_1 = dot(v_15, v_15);
+    let v_16 = (p - center);
+    let dist2_1 = dot(v_16, v_16);
     let r2_11 = (radius * radius);
     let d2_17 = max(max(dist2_1, r2_11), MIN_D2_);
-    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_15 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_16 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_3);
     let _e27 = safe_sqrt((1f - (cos_w * cos_w)));
     let _e28 = subtended_cos(dist2_1, r2_11);
@@ -959,9 +987,9 @@ fn emitter_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>,
 }
 
 fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_16 = (center_1 - p_1);
-    let dist2_2 = dot(v_16, v_16);
-    let w_12 = select(vec3<f32>(0f, 0f, 0f), (v_16 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
+    let v_17 = (center_1 - p_1);
+    let dist2_2 = dot(v_17, v_17);
+    let w_12 = select(vec3<f32>(0f, 0f, 0f), (v_17 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
     let _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
     let cos_i = dot(w_12, d_1);
     let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
@@ -1021,14 +1049,14 @@ fn candidate_weight(importance: f32, rt2_5: f32, d2_9: f32) -> f32 {
 }
 
 fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_4: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_4: f32, rt2_6: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    let v_17 = (p_5 - center_5);
+    let v_18 = (p_5 - center_5);
     if (lobe_5.y <= 0f) {
         let _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_17, v_17));
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_18, v_18));
         return _e19;
     }
     let _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
-    let _e22 = candidate_weight(_e20, rt2_6, dot(v_17, v_17));
+    let _e22 = candidate_weight(_e20, rt2_6, dot(v_18, v_18));
     return _e22;
 }
 
@@ -1068,8 +1096,8 @@ fn shadow_margin(len: f32) -> f32 {
     return (0.0001f * len);
 }
 
-fn ray_inverse(x_10: f32) -> f32 {
-    return (1f / select(x_10, 0.000000000000000000000000000001f, (abs(x_10) < 0.000000000000000000000000000001f)));
+fn ray_inverse(x_11: f32) -> f32 {
+    return (1f / select(x_11, 0.000000000000000000000000000001f, (abs(x_11) < 0.000000000000000000000000000001f)));
 }
 
 fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
@@ -1172,9 +1200,9 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
         return -1f;
     }
     let q_5 = cross(s_7, e1_2);
-    let v_18 = (dot(d_3, q_5) * inv_1);
-    if !((v_18 < 0f)) {
-        local_17 = ((u_6 + v_18) > 1f);
+    let v_19 = (dot(d_3, q_5) * inv_1);
+    if !((v_19 < 0f)) {
+        local_17 = ((u_6 + v_19) > 1f);
     } else {
         local_17 = true;
     }
@@ -1199,13 +1227,13 @@ fn inv_sigma_z(z: f32) -> f32 {
     return (1f / (DEPTH_SIGMA * z));
 }
 
-fn window_start(x_11: u32, size: u32) -> u32 {
+fn window_start(x_12: u32, size: u32) -> u32 {
     let half = (size / 2u);
-    return (max(x_11, half) - half);
+    return (max(x_12, half) - half);
 }
 
-fn window_end(x_12: u32, size_1: u32, extent_1: u32) -> u32 {
-    return min(((x_12 + size_1) - (size_1 / 2u)), extent_1);
+fn window_end(x_13: u32, size_1: u32, extent_1: u32) -> u32 {
+    return min(((x_13 + size_1) - (size_1 / 2u)), extent_1);
 }
 
 fn wide_window(period: u32) -> u32 {
@@ -1233,8 +1261,8 @@ fn bilateral_weight(n_24: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f
     return (((dn8_ * dn8_) * t_6) * t_6);
 }
 
-fn interleave_subset(x_13: u32, y_2: u32, period_2: u32) -> u32 {
-    return (((y_2 % period_2) * period_2) + (x_13 % period_2));
+fn interleave_subset(x_14: u32, y_2: u32, period_2: u32) -> u32 {
+    return (((y_2 % period_2) * period_2) + (x_14 % period_2));
 }
 
 fn interleave_slot(tx: u32, ty: u32, size_2: u32, period_3: u32) -> u32 {
@@ -1345,18 +1373,18 @@ fn continues_path(nd: vec3<f32>, n_25: vec3<f32>, ng_1: vec3<f32>) -> bool {
     return _e12;
 }
 
-fn finite3_(v_8: vec3<f32>) -> bool {
+fn finite3_(v_9: vec3<f32>) -> bool {
     var local_20: bool;
     var local_21: bool;
 
-    if (abs(v_8.x) <= F32_MAX) {
-        local_20 = (abs(v_8.y) <= F32_MAX);
+    if (abs(v_9.x) <= F32_MAX) {
+        local_20 = (abs(v_9.y) <= F32_MAX);
     } else {
         local_20 = false;
     }
     let _e12 = local_20;
     if _e12 {
-        local_21 = (abs(v_8.z) <= F32_MAX);
+        local_21 = (abs(v_9.z) <= F32_MAX);
     } else {
         local_21 = false;
     }
@@ -1385,9 +1413,9 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_5: vec3<f32>, exten
     return (dot(rel, dir_2) / (select(1f, dot(rel, axis_5), perspective) * extent_2));
 }
 
-fn display_encode(x_14: f32) -> f32 {
-    let v_19 = max(x_14, 0f);
-    let t_8 = ((2f * v_19) / (1f + (2f * v_19)));
+fn display_encode(x_15: f32) -> f32 {
+    let v_20 = max(x_15, 0f);
+    let t_8 = ((2f * v_20) / (1f + (2f * v_20)));
     return select(((1.055f * pow(t_8, 0.41666666f)) - 0.055f), (12.92f * t_8), (t_8 <= 0.0031308f));
 }
 
@@ -1399,9 +1427,9 @@ fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-fn point_irradiance(intensity_1: vec3<f32>, n_26: vec3<f32>, v_9: vec3<f32>) -> vec3<f32> {
-    let d2_18 = dot(v_9, v_9);
-    let cos_x_2 = (dot(n_26, v_9) / sqrt(max(d2_18, MIN_D2_)));
+fn point_irradiance(intensity_1: vec3<f32>, n_26: vec3<f32>, v_10: vec3<f32>) -> vec3<f32> {
+    let d2_18 = dot(v_10, v_10);
+    let cos_x_2 = (dot(n_26, v_10) / sqrt(max(d2_18, MIN_D2_)));
     let _e11 = inverse_square(d2_18);
     return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }

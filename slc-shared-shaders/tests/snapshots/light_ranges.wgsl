@@ -77,34 +77,62 @@ fn pcg_hash(x: u32) -> u32 {
     return ((_e12 >> 22u) ^ _e12);
 }
 
-fn reverse_bits(x_1: u32) -> u32 {
+fn laine_karras(x_1: u32, seed: u32) -> u32 {
     var v: u32;
 
-    v = (((x_1 >> 16u) & 65535u) | ((x_1 & 65535u) << 16u));
-    let _e11 = v;
-    let _e16 = v;
-    v = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
-    let _e22 = v;
-    let _e27 = v;
-    v = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
-    let _e33 = v;
-    let _e38 = v;
-    v = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
-    let _e44 = v;
-    let _e49 = v;
-    v = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
-    let _e55 = v;
+    let _e2 = add_wrap_u32_(x_1, seed);
+    v = _e2;
+    let _e4 = v;
+    let _e5 = v;
+    let _e7 = mul_lo_u32_(_e5, 1817228412u);
+    v = (_e4 ^ _e7);
+    let _e9 = v;
+    let _e10 = v;
+    let _e12 = mul_lo_u32_(_e10, 3090095698u);
+    v = (_e9 ^ _e12);
+    let _e14 = v;
+    let _e15 = v;
+    let _e17 = mul_lo_u32_(_e15, 3350193720u);
+    v = (_e14 ^ _e17);
+    let _e19 = v;
+    let _e20 = v;
+    let _e22 = mul_lo_u32_(_e20, 2367878886u);
+    v = (_e19 ^ _e22);
+    let _e24 = v;
+    return _e24;
+}
+
+fn reverse_bits(x_2: u32) -> u32 {
+    var v_1: u32;
+
+    v_1 = (((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u));
+    let _e11 = v_1;
+    let _e16 = v_1;
+    v_1 = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
+    let _e22 = v_1;
+    let _e27 = v_1;
+    v_1 = (((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u));
+    let _e33 = v_1;
+    let _e38 = v_1;
+    v_1 = (((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u));
+    let _e44 = v_1;
+    let _e49 = v_1;
+    v_1 = (((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u));
+    let _e55 = v_1;
     return _e55;
 }
 
-fn xi_for(seed: u32, frame: u32, light: u32) -> f32 {
-    let _e3 = pcg_hash(seed);
+fn xi_for(seed_1: u32, frame: u32, light: u32) -> f32 {
+    let _e3 = pcg_hash(seed_1);
     let _e4 = pcg_hash(_e3);
     let _e6 = pcg_hash((_e4 ^ light));
-    let _e7 = reverse_bits(frame);
-    let _e8 = add_wrap_u32_(_e6, _e7);
-    let _e9 = xi_from_bits(_e8);
-    return _e9;
+    let _e7 = pcg_hash(_e6);
+    let _e8 = reverse_bits(frame);
+    let _e9 = laine_karras(_e8, _e7);
+    let _e11 = laine_karras(0u, _e7);
+    let _e13 = add_wrap_u32_(_e6, (_e9 ^ _e11));
+    let _e14 = xi_from_bits(_e13);
+    return _e14;
 }
 
 fn random_range2_(rt2_: f32, xi: f32) -> f32 {

@@ -93,39 +93,69 @@ uint pcg_hash(
     return (_e12 >> 22u) ^ _e12;
 }
 
-uint reverse_bits(
-    uint x_1
+uint laine_karras(
+    uint x_1,
+    uint seed
 ) {
     uint v = {};
-    v = ((x_1 >> 16u) & 65535u) | ((x_1 & 65535u) << 16u);
-    uint _e11 = v;
-    uint _e16 = v;
-    v = ((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u);
-    uint _e22 = v;
-    uint _e27 = v;
-    v = ((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u);
-    uint _e33 = v;
-    uint _e38 = v;
-    v = ((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u);
-    uint _e44 = v;
-    uint _e49 = v;
-    v = ((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u);
-    uint _e55 = v;
+    uint _e2 = add_wrap_u32_(x_1, seed);
+    v = _e2;
+    uint _e4 = v;
+    uint _e5 = v;
+    uint _e7 = mul_lo_u32_(_e5, 1817228412u);
+    v = _e4 ^ _e7;
+    uint _e9 = v;
+    uint _e10 = v;
+    uint _e12 = mul_lo_u32_(_e10, 3090095698u);
+    v = _e9 ^ _e12;
+    uint _e14 = v;
+    uint _e15 = v;
+    uint _e17 = mul_lo_u32_(_e15, 3350193720u);
+    v = _e14 ^ _e17;
+    uint _e19 = v;
+    uint _e20 = v;
+    uint _e22 = mul_lo_u32_(_e20, 2367878886u);
+    v = _e19 ^ _e22;
+    uint _e24 = v;
+    return _e24;
+}
+
+uint reverse_bits(
+    uint x_2
+) {
+    uint v_1 = {};
+    v_1 = ((x_2 >> 16u) & 65535u) | ((x_2 & 65535u) << 16u);
+    uint _e11 = v_1;
+    uint _e16 = v_1;
+    v_1 = ((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u);
+    uint _e22 = v_1;
+    uint _e27 = v_1;
+    v_1 = ((_e22 >> 4u) & 252645135u) | ((_e27 & 252645135u) << 4u);
+    uint _e33 = v_1;
+    uint _e38 = v_1;
+    v_1 = ((_e33 >> 2u) & 858993459u) | ((_e38 & 858993459u) << 2u);
+    uint _e44 = v_1;
+    uint _e49 = v_1;
+    v_1 = ((_e44 >> 1u) & 1431655765u) | ((_e49 & 1431655765u) << 1u);
+    uint _e55 = v_1;
     return _e55;
 }
 
 float xi_for(
-    uint seed,
+    uint seed_1,
     uint frame,
     uint light
 ) {
-    uint _e3 = pcg_hash(seed);
+    uint _e3 = pcg_hash(seed_1);
     uint _e4 = pcg_hash(_e3);
     uint _e6 = pcg_hash(_e4 ^ light);
-    uint _e7 = reverse_bits(frame);
-    uint _e8 = add_wrap_u32_(_e6, _e7);
-    float _e9 = xi_from_bits(_e8);
-    return _e9;
+    uint _e7 = pcg_hash(_e6);
+    uint _e8 = reverse_bits(frame);
+    uint _e9 = laine_karras(_e8, _e7);
+    uint _e11 = laine_karras(0u, _e7);
+    uint _e13 = add_wrap_u32_(_e6, _e9 ^ _e11);
+    float _e14 = xi_from_bits(_e13);
+    return _e14;
 }
 
 float random_range2_(
