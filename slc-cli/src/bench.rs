@@ -3,13 +3,13 @@
 //! against the (cached) reference, and writes JSON (and optionally CSV).
 
 use crate::backends::{Backend, GPU_BATCH, gpu_context, path_tracer};
+use crate::reference::{pt_reference, vpl_reference};
 use crate::report::{PtReport, PtRun, Report, Run, StageMs, write_pt_csv, write_vpl_csv};
 use crate::scene_args::{App, SceneArgs};
 use anyhow::{Context, anyhow};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use slc_cpu::pt::CpuPathTracer;
-use slc_cpu::reference::vpl_reference;
 use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings};
 use slc_scene::vpl::{VplFrame, VplMethod, VplSettings};
 use std::path::PathBuf;
@@ -54,7 +54,7 @@ pub struct BenchArgs {
     /// Path tracing: the reference's method (any of them is unbiased; its
     /// own seed makes it independent of the runs; the one with the least
     /// noise per second makes the cheapest good reference).
-    #[arg(long, default_value = "power", value_parser = crate::pt_method)]
+    #[arg(long, default_value = "power", value_parser = crate::methods::pt_method)]
     reference_method: PtMethod,
 }
 
@@ -145,7 +145,7 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
     let mut loaded = a.scene.load()?;
     let configs = vpl_configs(&a, loaded.exposure);
     let ctx = &mut loaded.ctx;
-    let bar = progress(configs.len())?;
+    let bar = progress(configs.len() + 1)?;
     bar.set_message("reference (all VPLs at every pixel; cached for the next run)");
     // The reference is one long call and is not timed: let the bar tick on
     // its own meanwhile (never during the measured runs).
@@ -179,6 +179,13 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
         runs.push(vpl_run(&settings, param, st, f.image.rmse(&reference), stages));
         bar.inc(1);
     }
+    // The unculled loop's own speed: `none` without the near field, whose
+    // evaluations are the far field's light loop alone.
+    bar.set_message("unculled loop without the near field (evaluations per second)");
+    let loop_only =
+        VplSettings { method: VplMethod::None, near_radius: Some(0.0), exposure: loaded.exposure, seed: a.seed, ..VplSettings::default() };
+    let f = fastest(a.repeat, || ctx.render(&loop_only).map_err(anyhow::Error::from), |f: &VplFrame| f.stats.shading_ms)?;
+    let loop_speed = f.stats.evaluations as f64 / (f.stats.shading_ms * 1e-3).max(1e-12);
     bar.finish_and_clear();
     speedups(&mut runs);
     let report = Report {
@@ -192,6 +199,7 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
         threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
         reference_from_cache: cached,
         simd: Some(slc_cpu::simd::SimdPath::best().name().into()),
+        unculled_loop_evaluations_per_second: Some(loop_speed),
         runs,
     };
     write_report(&a, &report)
@@ -237,10 +245,11 @@ fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
         width: r.width,
         height: r.height,
         lights: (r.rsm_size as usize).pow(2),
-        timing: format!("{}; the whole frame on the GPU; fastest of --repeat runs by shading time", crate::timing_note(timing)),
+        timing: format!("{}; the whole frame on the GPU; fastest of --repeat runs by shading time", crate::notes::timing_note(timing)),
         threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
         reference_from_cache: false,
         simd: None,
+        unculled_loop_evaluations_per_second: None,
         runs,
     };
     for run in &report.runs {
@@ -310,6 +319,13 @@ fn write_report(a: &BenchArgs, report: &Report) -> anyhow::Result<()> {
             println!("  {:<8} {:>8}: {}", r.method, r.param.map_or("-".into(), |p| p.to_string()), ms.join(", "));
         }
     }
+    if let Some(speed) = report.unculled_loop_evaluations_per_second {
+        println!(
+            "unculled loop: {speed:.3e} light evaluations/s (method none without the near field, {} threads, {} loops)",
+            report.threads,
+            report.simd.as_deref().unwrap_or("?")
+        );
+    }
     Ok(())
 }
 
@@ -332,7 +348,7 @@ fn run_pt(a: BenchArgs) -> anyhow::Result<()> {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     };
-    let r = slc_cpu::reference::pt_reference(&mut CpuPathTracer::new(&pts), w, h, &ref_settings, a.reference_spp, Some(&a.cache_dir), &mut progress)?;
+    let r = pt_reference(&mut CpuPathTracer::new(&pts), w, h, &ref_settings, a.reference_spp, Some(&a.cache_dir), &mut progress)?;
     let (reference, cached) = (r.image, r.cached);
     // The reference stays on the CPU; the methods run on the chosen backend.
     let ctx = gpu_context(a.scene.backend)?;
@@ -395,7 +411,7 @@ fn run_pt(a: BenchArgs) -> anyhow::Result<()> {
     }
     let uniform = report.runs.iter().find(|r| r.method == "uniform").map_or(f64::NAN, |r| r.rmse_net);
     println!("backend {}", report.backend);
-    println!("lights  {}", crate::PT_LIGHTS_NOTE);
+    println!("lights  {}", crate::notes::PT_LIGHTS_NOTE);
     println!(
         "{} {}x{}, {} lights, {:.1} s per method (reference {} {}, its own RMSE about {:.5})",
         report.scene,

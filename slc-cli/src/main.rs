@@ -9,17 +9,22 @@ use anyhow::{Context, anyhow};
 mod backends;
 mod bench;
 mod diff;
+mod methods;
+mod notes;
 mod plot;
+mod reference;
 mod report;
 mod scene_args;
 mod view;
 
 use backends::{Backend, GPU_BATCH, gpu_context, path_tracer};
 use clap::{Args, Parser, Subcommand};
+use methods::{MethodFlags, pt_method, vpl_settings};
+use notes::{PT_LIGHTS_NOTE, timing_note};
 use scene_args::{App, SceneArgs};
 use slc_scene::RenderError;
 use slc_scene::image::Image;
-use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings};
+use slc_scene::pt::{PtRender, PtScene, PtSettings};
 use slc_scene::vpl::{VplMethod, VplSettings};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -72,25 +77,6 @@ enum Command {
         #[arg(long)]
         out: PathBuf,
     },
-}
-
-/// A VPL method name.
-pub(crate) fn vpl_method(name: &str) -> anyhow::Result<VplMethod> {
-    match name {
-        "slc" => Ok(VplMethod::Slc),
-        "clamp" => Ok(VplMethod::Clamp),
-        "none" => Ok(VplMethod::None),
-        "reference" => Ok(VplMethod::Reference),
-        m => Err(anyhow!("method '{m}' is not one of slc, clamp, none, reference (--app vpl)")),
-    }
-}
-
-/// A path-tracing method name.
-pub(crate) fn pt_method(name: &str) -> anyhow::Result<PtMethod> {
-    PtMethod::ALL.into_iter().find(|m| m.name() == name).ok_or_else(|| {
-        let names: Vec<&str> = PtMethod::ALL.iter().map(|m| m.name()).collect();
-        anyhow!("method '{name}' is not one of {} (--app pt)", names.join(", "))
-    })
 }
 
 #[derive(Args)]
@@ -172,33 +158,6 @@ fn main() -> ExitCode {
             ExitCode::FAILURE
         }
     }
-}
-
-/// The flags that choose a VPL method and its parameters (`render` and `view`).
-pub(crate) struct MethodFlags<'a> {
-    pub method: Option<&'a str>,
-    pub error_bound: Option<f32>,
-    pub range: Option<f32>,
-    pub seed: Option<u32>,
-    pub no_denoise: bool,
-    pub tile: u32,
-    pub near_radius: Option<f32>,
-}
-
-/// The VPL settings of a run: flags, else the scene file's, else the defaults.
-pub(crate) fn vpl_settings(m: &MethodFlags, f: &slc_scene::scene_file::RenderSettings, exposure: f32) -> anyhow::Result<VplSettings> {
-    let d = VplSettings::default();
-    Ok(VplSettings {
-        method: vpl_method(m.method.or(f.method.as_deref()).unwrap_or("slc"))?,
-        error_bound: m.error_bound.or(f.error_bound).unwrap_or(d.error_bound),
-        range: m.range.or(f.range).unwrap_or(d.range),
-        exposure,
-        seed: m.seed.or(f.seed).unwrap_or(d.seed),
-        denoise: !m.no_denoise,
-        tile: m.tile,
-        near_radius: m.near_radius,
-        ..d
-    })
 }
 
 impl RenderArgs {
@@ -306,19 +265,6 @@ fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
 fn speed_vs_none(none_ms: f64, method_ms: f64) -> String {
     let r = none_ms / method_ms.max(1e-9);
     if r >= 1.0 { format!("{r:.1}x slower") } else { format!("{:.1}x faster: culling costs more than it saves here", 1.0 / r) }
-}
-
-/// What the path tracer's light count counts, said where it is printed.
-pub const PT_LIGHTS_NOTE: &str = "emissive triangles and the scene file's [[light]] entries; the primary light ([primary]) makes the VPL application's RSM and is not a path-tracing light";
-
-/// How a GPU frame's stages were timed, in words.
-pub fn timing_note(t: slc_scene::backend::Timing) -> &'static str {
-    match t {
-        slc_scene::backend::Timing::GpuTimestamps => "GPU timestamps around each stage's pass, one command encoder per frame",
-        slc_scene::backend::Timing::Wall => {
-            "wall clock per stage (each stage submitted alone: the adapter has no timestamp queries, or is a software one whose timestamps do not bracket the work)"
-        }
-    }
 }
 
 /// `slc render --app pt`: progressive path tracing on the chosen backend.

@@ -71,6 +71,12 @@ pub struct Report {
     /// `baseline`); absent for the GPU.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub simd: Option<String>,
+    /// Light evaluations per second of the unculled loop alone (`none`
+    /// without the near field, the shading loop every method shares), so
+    /// the number compares across machines and settings; absent for the
+    /// GPU, which does not count evaluations.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unculled_loop_evaluations_per_second: Option<f64>,
     /// One entry per configuration.
     pub runs: Vec<Run>,
 }

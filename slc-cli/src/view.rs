@@ -73,7 +73,7 @@ pub fn run(a: ViewArgs) -> anyhow::Result<()> {
         shadow_size: a.shadow_size,
     };
     let r = scene_args.resolve()?;
-    let flags = crate::MethodFlags {
+    let flags = crate::methods::MethodFlags {
         method: a.method.as_deref(),
         error_bound: a.error_bound,
         range: a.range,
@@ -82,7 +82,7 @@ pub fn run(a: ViewArgs) -> anyhow::Result<()> {
         tile: VplSettings::default().tile,
         near_radius: a.near_radius,
     };
-    let settings = crate::vpl_settings(&flags, &r.file, r.exposure)?;
+    let settings = crate::methods::vpl_settings(&flags, &r.file, r.exposure)?;
     if settings.method == VplMethod::Reference {
         return Err(anyhow!("--method reference (every VPL at every pixel) is not a real-time method; use slc, clamp or none"));
     }

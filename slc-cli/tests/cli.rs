@@ -86,10 +86,14 @@ fn bench_and_plot_commands() {
         ],
     );
     assert!(text.contains("slc") && text.contains("clamp") && text.contains("none"));
+    assert!(text.contains("unculled loop:") && text.contains("light evaluations/s"), "{text}");
     let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("b.json")).unwrap()).unwrap();
     for key in ["app", "backend", "scene", "width", "height", "lights", "runs"] {
         assert!(json.get(key).is_some(), "JSON lacks {key}");
     }
+    // The unculled loop's speed, without the near field: positive and finite.
+    let speed = json["unculled_loop_evaluations_per_second"].as_f64().expect("JSON lacks the unculled loop's speed");
+    assert!(speed.is_finite() && speed > 0.0, "{speed}");
     let runs = json["runs"].as_array().unwrap();
     assert_eq!(runs.len(), 5);
     for r in runs {

@@ -15,7 +15,6 @@
 //!   MIS whose light pdf includes the RR probability, and the uniform,
 //!   power and light-BVH baselines on the same renderer;
 //!   [`pt::CpuPathTracer`] is a [`slc_scene::backend::PathTracer`].
-//! - [`mod@reference`]: cached references for both applications.
 //! - [`direct`]: unshadowed direct light at arbitrary shading points through
 //!   the BSH and a k-slot reservoir, number for number as the GPU kernel.
 //!
@@ -37,6 +36,5 @@ pub mod gbuffer;
 pub mod geometry;
 pub mod pt;
 pub mod raster;
-pub mod reference;
 pub mod simd;
 pub mod vpl;

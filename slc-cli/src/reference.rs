@@ -1,9 +1,10 @@
-//! Reference images cached on disk by a hash of the scene and settings, so
-//! benchmarks do not recompute the (expensive) ground truth.
+//! `slc bench`'s reference images, cached on disk by a hash of the scene and
+//! settings, so a bench does not recompute the (expensive) ground truth. The
+//! cache is the bench's business: the CPU backend only renders.
 
-use crate::pt::CpuPathTracer;
-use crate::vpl::VplContext;
 use glam::Vec3;
+use slc_cpu::pt::CpuPathTracer;
+use slc_cpu::vpl::VplContext;
 use slc_scene::image::Image;
 use slc_scene::pt::{PtRender, PtSettings};
 use slc_scene::vpl::{VplMethod, VplSettings};
@@ -12,7 +13,8 @@ use std::path::{Path, PathBuf};
 
 /// Bumped when the reference renderer changes meaning.
 /// 2: vertex normals (smooth shading) and one emitted-power formula.
-const VERSION: u64 = 2;
+/// 3: the lights' ξ over passes shuffled per light (`slc_core::xi::xi_for`).
+const VERSION: u64 = 3;
 
 /// FNV-1a, 64 bit.
 fn fnv(bytes: &[u8], mut h: u64) -> u64 {

@@ -1,0 +1,52 @@
+//! The method flags `render`, `bench` and `view` share: method names and
+//! the VPL settings built from flags, the scene file and the defaults.
+
+use anyhow::anyhow;
+use slc_scene::pt::PtMethod;
+use slc_scene::vpl::{VplMethod, VplSettings};
+
+/// A VPL method name.
+pub fn vpl_method(name: &str) -> anyhow::Result<VplMethod> {
+    match name {
+        "slc" => Ok(VplMethod::Slc),
+        "clamp" => Ok(VplMethod::Clamp),
+        "none" => Ok(VplMethod::None),
+        "reference" => Ok(VplMethod::Reference),
+        m => Err(anyhow!("method '{m}' is not one of slc, clamp, none, reference (--app vpl)")),
+    }
+}
+
+/// A path-tracing method name.
+pub fn pt_method(name: &str) -> anyhow::Result<PtMethod> {
+    PtMethod::ALL.into_iter().find(|m| m.name() == name).ok_or_else(|| {
+        let names: Vec<&str> = PtMethod::ALL.iter().map(|m| m.name()).collect();
+        anyhow!("method '{name}' is not one of {} (--app pt)", names.join(", "))
+    })
+}
+
+/// The flags that choose a VPL method and its parameters (`render` and `view`).
+pub struct MethodFlags<'a> {
+    pub method: Option<&'a str>,
+    pub error_bound: Option<f32>,
+    pub range: Option<f32>,
+    pub seed: Option<u32>,
+    pub no_denoise: bool,
+    pub tile: u32,
+    pub near_radius: Option<f32>,
+}
+
+/// The VPL settings of a run: flags, else the scene file's, else the defaults.
+pub fn vpl_settings(m: &MethodFlags, f: &slc_scene::scene_file::RenderSettings, exposure: f32) -> anyhow::Result<VplSettings> {
+    let d = VplSettings::default();
+    Ok(VplSettings {
+        method: vpl_method(m.method.or(f.method.as_deref()).unwrap_or("slc"))?,
+        error_bound: m.error_bound.or(f.error_bound).unwrap_or(d.error_bound),
+        range: m.range.or(f.range).unwrap_or(d.range),
+        exposure,
+        seed: m.seed.or(f.seed).unwrap_or(d.seed),
+        denoise: !m.no_denoise,
+        tile: m.tile,
+        near_radius: m.near_radius,
+        ..d
+    })
+}
