@@ -37,6 +37,8 @@ pub mod light_bvh;
 pub mod lights;
 #[cfg(feature = "io")]
 pub mod obj;
+#[cfg(feature = "io")]
+pub mod placement;
 pub mod pt;
 pub mod scene;
 #[cfg(feature = "io")]

@@ -55,6 +55,7 @@
 
 use crate::SceneError;
 use crate::gltf::GltfScene;
+use crate::placement::{Stream, Surfaces};
 use crate::scene::{Camera, Material, PrimaryLight, Scene};
 use glam::Vec3;
 use serde::Deserialize;
@@ -187,7 +188,8 @@ impl MaterialDef {
 /// `size`, scattered uniformly by area over the non-emissive surfaces
 /// defined so far, `offset` above them on their front side (the side
 /// their winding's normal points to), emitting `emission` away from the
-/// surface or (`face = "surface"`) toward it; placed by `seed`.
+/// surface, toward it (`face = "surface"`) or any way (`face = "random"`);
+/// placed by `seed`.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct ScatterDef {
@@ -212,6 +214,8 @@ enum Face {
     /// Toward the surface (a small lamp lighting a pool on the wall; seen
     /// from the room it is its dark back).
     Surface,
+    /// Every way: uniform on the sphere, per light.
+    Random,
 }
 
 fn one_u32() -> u32 {
@@ -222,40 +226,25 @@ fn one_u32() -> u32 {
 const MAX_SCATTER: u32 = 1 << 20;
 
 /// The `[[scatter_lights]]` triangles over `scene`'s non-emissive surfaces
-/// (see [`ScatterDef`]): a surface triangle is chosen in proportion to its
-/// area, a point uniformly on it, and the light's normal is the surface's
-/// (front side; the Cornell box's walls face the room, its blocks face
-/// out); each light is rotated about it at random. Random numbers come from `pcg_hash` of the seed and the index.
+/// (see [`ScatterDef`]): a point uniform by area on them
+/// ([`Surfaces::sample`]), the light's normal the surface's (front side;
+/// the Cornell box's walls face the room, its blocks face out), reversed
+/// for `face = "surface"` or uniform on the sphere for `face = "random"`;
+/// each light is rotated about its normal at random. Random numbers come
+/// from the light's [`Stream`].
 fn scatter_lights(scene: &Scene, d: &ScatterDef) -> Result<Vec<[Vec3; 3]>, String> {
-    use slc_core::xi::{pcg_hash, xi_from_bits};
-    let surfaces: Vec<usize> =
-        (0..scene.triangles.len()).filter(|&t| scene.materials[scene.material_of[t] as usize].emission == Vec3::ZERO).collect();
-    let area = |t: &[Vec3; 3]| 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).length();
-    let mut cdf = Vec::with_capacity(surfaces.len());
-    let mut total = 0.0f64;
-    for &t in &surfaces {
-        total += area(&scene.triangles[t]) as f64;
-        cdf.push(total);
-    }
-    if !(total > 0.0) {
-        return Err("no non-emissive surface of positive area to scatter lights over (list [[geometry]] first)".into());
-    }
+    let surfaces = Surfaces::new(scene)?;
     let mut out = Vec::with_capacity(d.count as usize);
     for k in 0..d.count {
-        let mut h = pcg_hash(d.seed ^ pcg_hash(k));
-        let mut u = || {
-            h = pcg_hash(h);
-            xi_from_bits(h)
-        };
-        let pick = (u() as f64 * total, u(), u(), u());
-        let i = cdf.partition_point(|&c| c <= pick.0).min(surfaces.len() - 1);
-        let [a, b, c] = scene.triangles[surfaces[i]];
-        let su = pick.1.sqrt();
-        let p = a * (1.0 - su) + b * (su * (1.0 - pick.2)) + c * (su * pick.2);
-        let n = (b - a).cross(c - a).normalize_or_zero();
-        // An orthonormal frame (t, s, n) rotated by a random angle.
-        let (t0, s0) = n.any_orthonormal_pair();
-        let phi = std::f32::consts::TAU * pick.3;
+        let mut s = Stream::new(d.seed, k);
+        let (p, n) = surfaces.sample(&mut s);
+        let spin = s.next();
+        // The light's plane: the surface's, or any (`random`); its offset
+        // is always to the surface's front.
+        let axis = if d.face == Face::Random { s.direction() } else { n };
+        // An orthonormal frame (t, s, axis) rotated by a random angle.
+        let (t0, s0) = axis.any_orthonormal_pair();
+        let phi = std::f32::consts::TAU * spin;
         let (t, s) = (t0 * phi.cos() + s0 * phi.sin(), s0 * phi.cos() - t0 * phi.sin());
         let r = d.size / 3f32.sqrt();
         let o = p + n * d.offset;
@@ -263,8 +252,8 @@ fn scatter_lights(scene: &Scene, d: &ScatterDef) -> Result<Vec<[Vec3; 3]>, Strin
             let a = std::f32::consts::TAU * k / 3.0;
             o + (t * a.cos() + s * a.sin()) * r
         };
-        // Counter-clockwise about n, so the triangle's normal is n (or
-        // clockwise: −n, facing the surface).
+        // Counter-clockwise about the axis, so the triangle's normal is the
+        // axis (or clockwise: −n, facing the surface).
         out.push(if d.face == Face::Surface { [corner(0.0), corner(2.0), corner(1.0)] } else { [corner(0.0), corner(1.0), corner(2.0)] });
     }
     Ok(out)
