@@ -212,8 +212,8 @@ fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
     let warm = VplSettings { method: VplMethod::None, exposure: r.exposure, ..VplSettings::default() };
     frame.render(&warm)?;
     let inputs = frame.read_inputs()?;
-    let all = slc_wgpu::vpl::GpuVpl::new(&gpu, &inputs)?;
-    let shaded = slc_scene::backend::IndirectShader::shade(&all, &VplSettings { method: VplMethod::Reference, ..warm })?;
+    let mut all = slc_wgpu::vpl::GpuVpl::new(&gpu, &inputs)?;
+    let shaded = all.shade(&VplSettings { method: VplMethod::Reference, ..warm })?;
     let reference = frame.compose_with(&inputs, &shaded.irradiance)?;
     bar.inc(1);
     let mut runs = Vec::new();

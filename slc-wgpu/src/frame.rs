@@ -760,6 +760,7 @@ impl GpuVplFrame {
             albedo: vec![Vec3::ZERO; n],
             emission: vec![Vec3::ZERO; n],
             depth: vec![f32::INFINITY; n],
+            eye: self.eye,
         };
         for i in 0..n {
             if position[i][3] > 0.0 {
@@ -819,22 +820,44 @@ impl Step {
     }
 }
 
-/// Reads an `Rgba32Float` or `Rgba16Float` texture back as `[f32; 4]` per
-/// texel (rows padded to the copy alignment on the GPU side).
-pub(crate) fn read_texture(gpu: &GpuContext, t: &wgpu::Texture) -> Result<Vec<[f32; 4]>, GpuError> {
-    let (w, h) = (t.width(), t.height());
+/// Bytes per texel and per padded row of a read-back of `t`
+/// (`Rgba32Float` or `Rgba16Float`).
+fn readback_rows(t: &wgpu::Texture) -> Result<(u32, u32), GpuError> {
     let texel = match t.format() {
         F32 => 16,
         F16 => 8,
         f => return Err(GpuError::Setting(format!("cannot read back {f:?}"))),
     };
-    let row = (w * texel).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
-    let staging = zeroed(gpu, "slc texture readback", row as u64 * h as u64, wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
+    let row = (t.width() * texel).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+    Ok((texel, row))
+}
+
+/// A mappable buffer for [`read_texture_via`] of `t` (an `Rgba32Float` or
+/// `Rgba16Float` texture; rows padded to the copy alignment).
+pub(crate) fn texture_staging(gpu: &GpuContext, t: &wgpu::Texture) -> wgpu::Buffer {
+    let row = readback_rows(t).map_or(16 * t.width(), |(_, row)| row);
+    zeroed(gpu, "slc texture readback", row as u64 * t.height() as u64, wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST)
+}
+
+/// Reads an `Rgba32Float` or `Rgba16Float` texture back as `[f32; 4]` per
+/// texel (rows padded to the copy alignment on the GPU side).
+pub(crate) fn read_texture(gpu: &GpuContext, t: &wgpu::Texture) -> Result<Vec<[f32; 4]>, GpuError> {
+    read_texture_via(gpu, t, &texture_staging(gpu, t))
+}
+
+/// [`read_texture`] through `staging`, a [`texture_staging`] buffer of `t`
+/// (kept by a caller that reads back every frame).
+pub(crate) fn read_texture_via(gpu: &GpuContext, t: &wgpu::Texture, staging: &wgpu::Buffer) -> Result<Vec<[f32; 4]>, GpuError> {
+    let (w, h) = (t.width(), t.height());
+    let (texel, row) = readback_rows(t)?;
+    if staging.size() < row as u64 * h as u64 {
+        return Err(GpuError::Setting(format!("a read-back buffer of {} bytes for {} rows of {row}", staging.size(), h)));
+    }
     let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc texture readback") });
     enc.copy_texture_to_buffer(
         t.as_image_copy(),
         wgpu::TexelCopyBufferInfo {
-            buffer: &staging,
+            buffer: staging,
             layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(row), rows_per_image: None },
         },
         t.size(),

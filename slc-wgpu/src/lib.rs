@@ -10,7 +10,8 @@
 //! - [`vpl::GpuVpl`]: application A's shading and denoise on the GPU (random
 //!   ranges from the same ξ as the CPU, tiled culling per 8×8 interleaved
 //!   sub-image, SLC shading, cross-bilateral filter) on the G-buffer and
-//!   VPLs of a [`slc_scene::vpl::VplInputs`].
+//!   VPLs of a [`slc_scene::vpl::VplInputs`]: the [`passes::IndirectPass`]
+//!   on them, uploaded once.
 //!
 //! - [`frame::GpuVplFrame`]: application A wholly on the GPU: G-buffer and
 //!   RSM rasterized, VPLs made, shaded and denoised, the primary light's

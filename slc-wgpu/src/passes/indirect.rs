@@ -105,12 +105,23 @@ pub struct IndirectPassDesc {
     pub output_format: wgpu::TextureFormat,
     /// Records of this pass one submission may hold (uniform slots).
     pub records_per_submission: u32,
+    /// Interleaved sampling (the paper's): each pixel of an 8×8 block
+    /// shades its own subset of 1/64 of the VPLs at 64 times their flux,
+    /// and the denoise filters over the block. `false`: every VPL at every
+    /// pixel (period 1), 64 times the work: with [`Culling::None`], no
+    /// denoise and no near field (`near_radius: Some(0.0)`), the exact sum,
+    /// a reference to measure the interleaved image against.
+    pub interleaved: bool,
+    /// Capacity of `vpl_tiled`'s per-tile light list, in lights (at least
+    /// 1; 4 bytes of workgroup memory each): a subset with more lights
+    /// streams through it in chunks. Default [`TILE_LIST`](crate::vpl::TILE_LIST).
+    pub tile_list: u32,
 }
 
 impl IndirectPassDesc {
     /// `width × height` with VPLs from `vpls`, a standard `Depth32Float`
     /// depth buffer, `Rgba16Float` output, [`RECORDS_PER_SUBMISSION`]
-    /// records per submission.
+    /// records per submission, interleaved, the default tile list.
     pub fn new(width: u32, height: u32, vpls: VplSourceDesc) -> IndirectPassDesc {
         IndirectPassDesc {
             width,
@@ -119,7 +130,14 @@ impl IndirectPassDesc {
             vpls,
             output_format: wgpu::TextureFormat::Rgba16Float,
             records_per_submission: RECORDS_PER_SUBMISSION,
+            interleaved: true,
+            tile_list: crate::vpl::TILE_LIST,
         }
+    }
+
+    /// The interleave period: [`PERIOD`], or 1 when not interleaved.
+    fn period(&self) -> u32 {
+        if self.interleaved { PERIOD } else { 1 }
     }
 }
 
@@ -281,7 +299,12 @@ impl IndirectPass {
     pub fn new(gpu: &GpuContext, desc: &IndirectPassDesc) -> Result<Self, GpuError> {
         let (w, h) = (desc.width, desc.height);
         check_size(gpu, "indirect pass", (w, h), TILE)?;
+        // Near blocks are 8×8 texels or 64 records, interleaved or not.
         let subsets = PERIOD * PERIOD;
+        let period = desc.period();
+        if desc.tile_list == 0 {
+            return Err(GpuError::Setting("indirect pass: the tile light list must hold at least 1 light".into()));
+        }
         let (count, vpl_source) = match desc.vpls {
             VplSourceDesc::Rsm { size } if size == 0 || size % PERIOD != 0 => {
                 return Err(GpuError::Setting(format!("indirect pass: RSM size {size} must be a positive multiple of {PERIOD}")));
@@ -299,8 +322,8 @@ impl IndirectPass {
         gpu.require("max_storage_buffer_binding_size (G-buffer)", w as u64 * h as u64 * 16, max_binding)?;
         gpu.require("max_storage_buffer_binding_size (lights)", count * std::mem::size_of::<GpuLight>() as u64, max_binding)?;
         gpu.require("max_compute_workgroups_per_dimension (VPLs)", count.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
-        let per_subset = (count / subsets as u64) as u32;
-        let list = per_subset.clamp(1, crate::vpl::TILE_LIST);
+        let per_subset = (count / (period * period) as u64) as u32;
+        let list = per_subset.clamp(1, desc.tile_list);
         let wg_bytes = slc_shared_shaders::vpl_tiled_workgroup_bytes(TILE, list);
         gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes, lim.max_compute_workgroup_storage_size as u64)?;
 
@@ -308,7 +331,7 @@ impl IndirectPass {
         let base = Features {
             lights: vpl,
             tile_size: TILE,
-            interleave: PERIOD,
+            interleave: period,
             workgroup_size: WG,
             max_tile_lights: list,
             surface,
@@ -349,7 +372,8 @@ impl IndirectPass {
         let lights = zeroed(gpu, "slc lights", count * std::mem::size_of::<GpuLight>() as u64, rw);
         let ids = zeroed(gpu, "slc ids", count * 4, rw);
         let rt2 = zeroed(gpu, "slc rt2", count * 4, rw);
-        let r2 = zeroed(gpu, "slc r2", count * 4, rw);
+        // COPY_DST: GpuVpl's fixed ξ writes r² from the host.
+        let r2 = zeroed(gpu, "slc r2", count * 4, rw | wgpu::BufferUsages::COPY_DST);
         let near_slots = zeroed(gpu, "slc near_slots", count * 4, rw);
         let near_boxes = zeroed(gpu, "slc near_boxes", count / NEAR_BLOCK as u64 * std::mem::size_of::<GpuNearBox>() as u64, rw);
         let import = Pipe::new(gpu, Kernel::GbufferImport, &base)?;
@@ -438,6 +462,14 @@ impl IndirectPass {
     /// The descriptor the pass was built for.
     pub fn desc(&self) -> &IndirectPassDesc {
         &self.desc
+    }
+
+    /// The random ranges `r²` the shading reads, slot by slot (subset
+    /// after subset, [`slc_core::interleave::interleave_slot`]): written by
+    /// `vpl_pack` and `light_update`, or from the host between them
+    /// ([`crate::vpl::GpuVpl`]'s fixed ξ).
+    pub(crate) fn ranges(&self) -> &wgpu::Buffer {
+        &self.pack_outputs[3]
     }
 
     /// Checks `inputs` against the descriptor (formats, sizes, usages).
@@ -535,7 +567,7 @@ impl IndirectPass {
                 mode,
                 exposure,
                 error_bound,
-                scale: slc_core::interleave::interleave_flux_scale(PERIOD),
+                scale: slc_core::interleave::interleave_flux_scale(self.desc.period()),
                 slc: slc as u32,
                 // No culling: the kernel's finite stand-in for +∞.
                 fixed_r2: if fixed_r2.is_finite() { fixed_r2 } else { f32::MAX },
@@ -604,7 +636,8 @@ impl IndirectPass {
         let tiled = &self.tiled.iter().find(|(m, _)| *m == method).ok_or(GpuError::Setting("unknown method".into()))?.1;
         let near = &self.near.iter().find(|(m, _)| *m == method).ok_or(GpuError::Setting("unknown method".into()))?.1;
         let (gx, gy) = (w.div_ceil(TILE), h.div_ceil(TILE));
-        let (sub_w, sub_h) = (w.div_ceil(PERIOD), h.div_ceil(PERIOD));
+        let p = self.desc.period();
+        let (sub_w, sub_h) = (w.div_ceil(p), h.div_ceil(p));
         let off = |s: &UniformSlots| Some(s.offset(slot));
         let d = Dispatch::new;
         let mut out = vec![
@@ -614,13 +647,7 @@ impl IndirectPass {
         if slc {
             out.push(d(Stage::LightUpdate, &self.update.pipeline, self.update_group.clone(), off(&self.frame_params), [count.div_ceil(WG), 1, 1]));
         }
-        out.push(d(
-            Stage::Shading,
-            tiled,
-            self.tiled_group.clone(),
-            off(&self.vpl_params),
-            [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), PERIOD * PERIOD],
-        ));
+        out.push(d(Stage::Shading, tiled, self.tiled_group.clone(), off(&self.vpl_params), [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), p * p]));
         if st.denoise {
             out.push(d(Stage::Denoise, &self.denoise.pipeline, self.denoise_group.clone(), off(&self.vpl_params), [gx, gy, 1]));
         }
