@@ -271,13 +271,14 @@ fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
     let gpu = gpu_context(Backend::Gpu)?.context("no GPU context")?;
     let mut frame = a.scene.gpu_frame(&gpu, &r)?;
     spinner.set_message(format!("frame on the GPU ({})", settings.method.name()));
+    let st = slc_wgpu::frame::indirect_settings(&settings, frame.min_distance())?;
     // The first frame pays for the driver's pipeline compilation: measure the second.
-    frame.render(&settings)?;
-    let out = frame.render(&settings)?;
+    frame.render(&st)?;
+    let out = frame.render(&st)?;
     let written = write_outputs(&out.image, &a.out, r.exposure)?;
     let versus_none = if settings.method != VplMethod::None {
         spinner.set_message("unculled interleaved frame for the RMSE");
-        let none = frame.render(&VplSettings { method: VplMethod::None, ..settings })?;
+        let none = frame.render(&slc_wgpu::passes::IndirectSettings { culling: slc_wgpu::Culling::None, ..st })?;
         Some((out.image.rmse(&none.image), none.stats.shading_ms))
     } else {
         None
