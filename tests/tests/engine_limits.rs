@@ -3,10 +3,11 @@
 //!   stage), every constructor returns a typed [`GpuError::Limit`] and the
 //!   device raises no validation error first (a handler counts them);
 //! - a soak of 10,000 records (5,000 of each pass, into alternating
-//!   outputs, submitted 10 at a time) leaves wgpu's internal resource
-//!   counters (`Device::get_internal_counters`, wgpu's `counters` feature)
-//!   where the first records left them: recording creates no buffer, bind
-//!   group, view or pipeline.
+//!   outputs, submitted 10 at a time, the direct pass's lights moved with
+//!   `update_lights` before each of its records) leaves wgpu's internal
+//!   resource counters (`Device::get_internal_counters`, wgpu's `counters`
+//!   feature) where the first records left them: recording and moving
+//!   lights create no buffer, bind group, view or pipeline.
 
 use glam::Vec3;
 use slc_core::light::{Light, PointLight};
@@ -22,10 +23,18 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 fn point_lights(n: usize) -> LightSet {
-    let lights = (0..n)
-        .map(|i| Light::Point(PointLight::new(Vec3::new((i % 8) as f32 * 0.1, 0.4, (i / 8) as f32 * 0.1), Vec3::splat(0.01)).unwrap()))
-        .collect();
-    LightSet::new(lights).unwrap()
+    LightSet::new(moved_lights(n, 0)).unwrap()
+}
+
+/// `n` point lights on a grid, shifted and recoloured for record `r`.
+fn moved_lights(n: usize, r: u32) -> Vec<Light> {
+    let t = r as f32 * 0.01;
+    (0..n)
+        .map(|i| {
+            let p = Vec3::new((i % 8) as f32 * 0.1 + 0.05 * t.sin(), 0.4, (i / 8) as f32 * 0.1 + 0.05 * t.cos());
+            Light::Point(PointLight::new(p, Vec3::splat(0.01 * (1.5 + t.sin()))).unwrap())
+        })
+        .collect()
 }
 
 /// A constructor under test.
@@ -125,6 +134,7 @@ fn ten_thousand_records_allocate_nothing() {
             for r in batch..batch + 10 {
                 let output = &views[(r / 2 % 2) as usize];
                 if r % 2 == 0 {
+                    direct.update_lights(&moved_lights(64, r)).unwrap();
                     direct.record(&mut enc, &DirectInputs::new(gbuffer, output), &DirectSettings { culling, seed: 1, frame: r }).unwrap();
                 } else {
                     let vpls = VplInput::Rsm { position: &rsm[0], normal: &rsm[1], flux: &rsm[2] };
