@@ -28,6 +28,19 @@
 //! irradiance), reused by every record: records run in order, and each
 //! has its own uniform slot, so several may share a submission.
 //!
+//! Unlike the [`DirectPass`](super::DirectPass), which reads the depth or
+//! position texture in place, this pass first copies the G-buffer
+//! (`gbuffer_import`: the surface unprojected once per pixel, the normal
+//! normalised, the distance from the eye the denoise weighs by) into two
+//! buffers of 16 bytes per pixel that `vpl_tiled`, `vpl_denoise`,
+//! `vpl_near` and `irradiance_export` read. No limit forces the copy
+//! (textures do not count against the 8 storage buffers per stage that
+//! `vpl_near` uses up, so reading in place would free two); the kernels
+//! were written for buffers and the denoise reads every neighbour of its
+//! window, which in place would unproject each of them again. Moving them
+//! to the engine's textures is open. Depth input, standard and reversed Z,
+//! gives the positions' image (`tests/tests/indirect_pass.rs`).
+//!
 //! ```no_run
 //! # fn frame(device: wgpu::Device, queue: wgpu::Queue, gb_position: wgpu::TextureView,
 //! #          gb_normal: wgpu::TextureView, rsm: [wgpu::TextureView; 3], output: wgpu::TextureView)
