@@ -441,7 +441,6 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
     for k in [
         Kernel::VplDenoise,
         Kernel::VplNear,
-        Kernel::GbufferImport,
         Kernel::VplPack,
         Kernel::IrradianceExport,
         Kernel::SceneRaster,

@@ -90,8 +90,6 @@ pub enum Stage {
     Rsm,
     /// The primary light's shadow map (raster).
     ShadowMap,
-    /// The G-buffer into the shading buffers.
-    GbufferImport,
     /// VPLs from the RSM.
     VplGeneration,
     /// Random ranges from ξ.
@@ -112,11 +110,10 @@ pub enum Stage {
 
 impl Stage {
     /// Every stage, in order: the timer holds a timestamp pair for each.
-    pub const ALL: [Stage; 12] = [
+    pub const ALL: [Stage; 11] = [
         Stage::GBuffer,
         Stage::Rsm,
         Stage::ShadowMap,
-        Stage::GbufferImport,
         Stage::VplGeneration,
         Stage::LightUpdate,
         Stage::Shading,
@@ -133,7 +130,6 @@ impl Stage {
             Stage::GBuffer => "G-buffer",
             Stage::Rsm => "RSM",
             Stage::ShadowMap => "shadow map",
-            Stage::GbufferImport => "G-buffer import",
             Stage::VplGeneration => "VPL generation",
             Stage::LightUpdate => "light update",
             Stage::Shading => "shading",
@@ -201,7 +197,7 @@ pub struct FrameRender {
     /// How the stages were timed.
     pub timing: Timing,
     /// The stage times summed into the CPU frame's categories (G-buffer:
-    /// raster and import; RSM: raster and VPL generation; direct: shadow
+    /// raster; RSM: raster and VPL generation; direct: shadow
     /// map and direct; shading: light update and shading; denoise: denoise,
     /// export and composition), the kept lights per shaded pixel and the
     /// VPL count. The GPU does not count loop evaluations (`evaluations`
@@ -747,7 +743,7 @@ impl GpuVplFrame {
         let shaded = positions.iter().filter(|p| p[3] > 0.0).count().max(1) as f64;
         let sum = |stages: &[Stage]| times.iter().filter(|t| stages.contains(&t.stage)).map(|t| t.ms).sum::<f64>();
         let stats = VplStats {
-            gbuffer_ms: sum(&[Stage::GBuffer, Stage::GbufferImport]),
+            gbuffer_ms: sum(&[Stage::GBuffer]),
             // The CPU's "direct" includes its shadow rays.
             direct_ms: sum(&[Stage::ShadowMap, Stage::Direct]),
             rsm_ms: sum(&[Stage::Rsm, Stage::VplGeneration]),

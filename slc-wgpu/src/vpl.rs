@@ -38,7 +38,7 @@ pub const TILE_LIST: u32 = 2048;
 /// submitted (and timed) on its own.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Part {
-    /// G-buffer import and VPL packing (untimed).
+    /// VPL packing (untimed).
     Setup,
     /// Light update and tiled shading.
     Shading,

@@ -151,7 +151,6 @@ fn every_stage_is_timed() {
             "G-buffer",
             "RSM",
             "shadow map",
-            "G-buffer import",
             "VPL generation",
             "light update",
             "shading",
@@ -207,7 +206,7 @@ fn moved_light_renders_as_a_new_frame() {
     let software = gpu.adapter.device_type == wgpu::DeviceType::Cpu;
     assert_eq!(timed, gpu.timestamps && !software);
     match frame.stage_times().unwrap() {
-        Some(times) => assert!(times.len() == 12 && times.iter().all(|t| t.ms.is_finite() && t.ms >= 0.0), "{times:?}"),
+        Some(times) => assert!(times.len() == 11 && times.iter().all(|t| t.ms.is_finite() && t.ms >= 0.0), "{times:?}"),
         None => assert!(!timed),
     }
 }
@@ -237,8 +236,8 @@ fn bad_frames_are_errors() {
 
 /// The timestamp path, forced on whatever adapter runs the tests (lavapipe
 /// has timestamps, though their values do not bracket its threads' work):
-/// with the near field on, the frame has all twelve stages, the timer holds
-/// a pair for each (it once held eleven, and the composition got none while
+/// with the near field on, the frame has all eleven stages, the timer holds
+/// a pair for each (it once held one fewer, and the composition got none while
 /// names and times were zipped out of step), and every stage gets its own
 /// duration, in order, from both `render` and `record_timed`.
 fn timestamp_path_times_every_stage() {
