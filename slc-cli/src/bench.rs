@@ -218,10 +218,13 @@ fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
     let bar = progress(configs.len())?;
     bar.set_message("reference (all VPLs at every pixel, on the GPU)");
     let warm = VplSettings { method: VplMethod::None, exposure: r.exposure, ..VplSettings::default() };
-    frame.render(&warm)?;
+    // The CLI's settings into the frame's own (its indirect pass's).
+    let min_distance = frame.min_distance();
+    let pass_settings = |s: &VplSettings| slc_wgpu::frame::indirect_settings(s, min_distance);
+    frame.render(&pass_settings(&warm)?)?;
     let inputs = frame.read_inputs()?;
-    let all = slc_wgpu::vpl::GpuVpl::new(&gpu, &inputs)?;
-    let shaded = slc_scene::backend::IndirectShader::shade(&all, &VplSettings { method: VplMethod::Reference, ..warm })?;
+    let mut all = slc_wgpu::vpl::GpuVpl::new(&gpu, &inputs)?;
+    let shaded = all.shade(&VplSettings { method: VplMethod::Reference, ..warm })?;
     let reference = frame.compose_with(&inputs, &shaded.irradiance)?;
     bar.inc(1);
     let mut runs = Vec::new();
@@ -229,8 +232,9 @@ fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
     for (param, settings) in configs {
         bar.set_message(run_label(&settings, param));
         // One untimed frame first: drivers compile a pipeline at its first use.
-        frame.render(&settings)?;
-        let f = fastest(a.repeat, || frame.render(&settings).map_err(anyhow::Error::from), |f: &slc_wgpu::frame::FrameRender| f.stats.shading_ms)?;
+        let st = pass_settings(&settings)?;
+        frame.render(&st)?;
+        let f = fastest(a.repeat, || frame.render(&st).map_err(anyhow::Error::from), |f: &slc_wgpu::frame::FrameRender| f.stats.shading_ms)?;
         timing = f.timing;
         let stages = f.stages.iter().map(|s| StageMs { name: s.name.to_string(), ms: s.ms }).collect();
         runs.push(vpl_run(&settings, param, &f.stats, f.image.rmse(&reference), stages));

@@ -230,13 +230,14 @@ fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
     let gpu = gpu_context(Backend::Gpu)?.context("no GPU context")?;
     let mut frame = a.scene.gpu_frame(&gpu, &r)?;
     spinner.set_message(format!("frame on the GPU ({})", settings.method.name()));
+    let st = slc_wgpu::frame::indirect_settings(&settings, frame.min_distance())?;
     // The first frame pays for the driver's pipeline compilation: measure the second.
-    frame.render(&settings)?;
-    let out = frame.render(&settings)?;
+    frame.render(&st)?;
+    let out = frame.render(&st)?;
     let written = write_outputs(&out.image, &a.out, r.exposure)?;
     let versus_none = if settings.method != VplMethod::None {
         spinner.set_message("unculled interleaved frame for the RMSE");
-        let none = frame.render(&VplSettings { method: VplMethod::None, ..settings })?;
+        let none = frame.render(&slc_wgpu::passes::IndirectSettings { culling: slc_wgpu::Culling::None, ..st })?;
         Some((out.image.rmse(&none.image), none.stats.shading_ms))
     } else {
         None
@@ -358,11 +359,15 @@ pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> anyhow::Result<(
 }
 
 /// Writes `name.{wgsl,spv,glsl,hlsl,metal}` for every kernel: the BSH,
-/// path-tracing and update kernels for `lights`, `vpl_tiled_{slc,clamp,none}`
-/// and the VPL frame's kernels (the raster kernel's GLSL as one file per
-/// entry point, `scene_raster.vs_main.glsl` …).
+/// path-tracing and update kernels for `lights`, the direct pass's
+/// `light_ranges` and `direct_light` for `lights` (as `DirectPassDesc::new`
+/// builds them, weighted picks of `reservoir_k`, irradiance out, but the
+/// depth in an `R32Float` texture: naga's GLSL backend cannot load from a
+/// depth texture), `vpl_tiled_{slc,clamp,none}` and the VPL frame's
+/// kernels (the raster kernel's GLSL as one file per entry point,
+/// `scene_raster.vs_main.glsl` …).
 fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
-    use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, generate_module, translate};
+    use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, Selection, SurfaceSource, generate_module, translate};
     let lights = LightSet::parse(lights)?;
     std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
     let base = Features { lights, reservoir_k, ..Features::default() };
@@ -372,13 +377,16 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
             .into_iter()
             .map(|k| (k.name().to_string(), k, base))
             .collect();
+    let direct = Features { selection: Selection::Weighted, surface: SurfaceSource::R32Depth, shadows: false, ..base };
+    for k in [Kernel::LightRanges, Kernel::DirectLight] {
+        jobs.push((k.name().to_string(), k, direct));
+    }
     for (m, name) in [(CullMethod::Slc, "slc"), (CullMethod::Clamp, "clamp"), (CullMethod::None, "none")] {
         jobs.push((format!("vpl_tiled_{name}"), Kernel::VplTiled, Features { lights: vpl, method: m, ..base }));
     }
     for k in [
         Kernel::VplDenoise,
         Kernel::VplNear,
-        Kernel::GbufferImport,
         Kernel::VplPack,
         Kernel::IrradianceExport,
         Kernel::SceneRaster,

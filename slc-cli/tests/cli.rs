@@ -269,13 +269,14 @@ fn gltf_and_glossy_scenes_render() {
 fn shaders_command_exports_every_kernel() {
     let d = tempdir("shaders");
     let text = ok(&d, &["shaders", "--out", "k", "--lights", "point,triangle"]);
-    assert!(text.contains("16 kernels"), "{text}");
+    assert!(text.contains("17 kernels"), "{text}");
     for entry in ["vs_main", "fs_gbuffer", "fs_rsm", "fs_shadow"] {
         let p = d.join("k").join(format!("scene_raster.{entry}.glsl"));
         assert!(std::fs::metadata(&p).map(|m| m.len() > 100).unwrap_or(false), "{} missing or empty", p.display());
     }
-    let names = ["light_update", "bsh_refit", "bsh_reservoir", "pt_connect", "pt_extend", "vpl_tiled_slc", "vpl_tiled_clamp", "vpl_tiled_none"];
-    let frame = ["vpl_denoise", "vpl_near", "gbuffer_import", "vpl_pack", "irradiance_export", "primary_direct", "frame_compose"];
+    let names = ["light_update", "bsh_refit", "bsh_reservoir", "pt_connect", "pt_extend", "light_ranges", "direct_light"];
+    let names = names.into_iter().chain(["vpl_tiled_slc", "vpl_tiled_clamp", "vpl_tiled_none"]);
+    let frame = ["vpl_denoise", "vpl_near", "vpl_pack", "irradiance_export", "primary_direct", "frame_compose"];
     for name in names.into_iter().chain(frame) {
         for ext in ["wgsl", "spv", "glsl", "hlsl", "metal"] {
             let p = d.join("k").join(format!("{name}.{ext}"));
@@ -290,6 +291,9 @@ fn shaders_command_exports_every_kernel() {
     assert!(range.starts_with("#define_import_path slc::range") && range.contains("fn slc_keep("), "{range}");
     let pt = std::fs::read_to_string(d.join("k/pt_connect.wgsl")).unwrap();
     assert!(pt.contains("LIGHT_TRIANGLE:") && !pt.contains("case LIGHT_SPOT:"));
+    // The direct pass's kernel for the asked lights, reading depth (R32Float).
+    let direct = std::fs::read_to_string(d.join("k/direct_light.wgsl")).unwrap();
+    assert!(direct.contains("LIGHT_TRIANGLE:") && !direct.contains("case LIGHT_SPOT:") && direct.contains("depth_tex: texture_2d<f32>"), "{direct}");
     let out = slc(&d, &["shaders", "--out", "k2", "--lights", "laser"]);
     assert!(!out.status.success());
     std::fs::remove_dir_all(&d).ok();

@@ -33,6 +33,7 @@ pub fn render_gbuffer(scene: &Scene, geo: &Geometry, width: u32, height: u32) ->
 pub fn render_gbuffer_into(scene: &Scene, geo: &Geometry, gb: &mut GBuffer, geometric: &mut Vec<Vec3>) {
     let (w, h) = (gb.width as usize, gb.height as usize);
     let cam = &scene.camera;
+    gb.eye = cam.position;
     let view = Pinhole { eye: cam.position, basis: cam.scaled_basis(gb.width, gb.height), size: (w, h) };
     let hits = closest_hits(&view, geo, &scene.triangles);
     type Texel = ((Vec3, Vec3), ((Vec3, Vec3), (f32, Vec3)));

@@ -26,16 +26,18 @@ pub trait IndirectShader {
     /// The backend, for reports (`"cpu (2 threads)"`, the GPU adapter).
     fn describe(&self) -> String;
     /// Shades one frame. `Shaded::denoised_ms` is `Some` when the backend
-    /// already applied the cross-bilateral filter.
-    fn shade(&self, settings: &VplSettings) -> Result<Shaded, Self::Error>;
+    /// already applied the cross-bilateral filter. Takes `&mut self`, as
+    /// [`PathTracer::render`] does: a GPU backend records into buffers and
+    /// uniform slots it owns, so one frame at a time, without a lock.
+    fn shade(&mut self, settings: &VplSettings) -> Result<Shaded, Self::Error>;
 }
 
-impl<T: IndirectShader + ?Sized> IndirectShader for &T {
+impl<T: IndirectShader + ?Sized> IndirectShader for &mut T {
     type Error = T::Error;
     fn describe(&self) -> String {
         (**self).describe()
     }
-    fn shade(&self, settings: &VplSettings) -> Result<Shaded, Self::Error> {
+    fn shade(&mut self, settings: &VplSettings) -> Result<Shaded, Self::Error> {
         (**self).shade(settings)
     }
 }
@@ -63,14 +65,14 @@ pub trait DynIndirectShader {
     /// [`IndirectShader::describe`].
     fn describe(&self) -> String;
     /// [`IndirectShader::shade`].
-    fn shade(&self, settings: &VplSettings) -> Result<Shaded, BoxError>;
+    fn shade(&mut self, settings: &VplSettings) -> Result<Shaded, BoxError>;
 }
 
 impl<T: IndirectShader> DynIndirectShader for T {
     fn describe(&self) -> String {
         IndirectShader::describe(self)
     }
-    fn shade(&self, settings: &VplSettings) -> Result<Shaded, BoxError> {
+    fn shade(&mut self, settings: &VplSettings) -> Result<Shaded, BoxError> {
         IndirectShader::shade(self, settings).map_err(Into::into)
     }
 }

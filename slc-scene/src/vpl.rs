@@ -231,6 +231,10 @@ pub struct GBuffer {
     pub emission: Vec<Vec3>,
     /// Distance from the camera (∞ for background).
     pub depth: Vec<f32>,
+    /// The camera's position, which `depth` is the distance from (a
+    /// backend that recomputes depth from positions, as the GPU's indirect
+    /// pass does, needs it).
+    pub eye: Vec3,
 }
 
 impl GBuffer {

@@ -7,9 +7,9 @@
 //! name, address space, access), so a table cannot drift from the
 //! kernel it describes.
 //!
-//! The path tracer's kernels (`pt_extend`, `pt_connect`) and `vpl_near`
-//! still declare their bindings in their templates; their tables here are
-//! checked against those declarations the same way.
+//! The path tracer's kernels (`pt_extend`, `pt_connect`) still declare
+//! their bindings in their templates; their tables here are checked
+//! against those declarations the same way.
 //!
 //! The tables below are [`docs`]'s output, committed in
 //! `docs/bindings.md` (a test regenerates it; `SLC_BLESS=1` accepts a
@@ -106,6 +106,12 @@ fn surface(binding: u32, surface: SurfaceSource) -> Binding {
     }
 }
 
+/// The view of an engine pass's G-buffer readers, read in place
+/// (`gbuffer_read.wgsl`): the surface's unprojection and the eye.
+const fn view_uniform(binding: u32) -> Binding {
+    uniform(binding, "view", "ViewParams", true, "inverse view-projection, eye, image size, depth background")
+}
+
 /// The bindings of `kernel` specialised to `f`, in declaration order.
 pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
     let ies = f.lights.ies;
@@ -133,30 +139,33 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
         ],
         Kernel::VplTiled => vec![
             uniform(0, "params", "VplParams", true, "image size, VPLs per subset, clamp distance, near field"),
-            read(1, "gb_position", vec4, "world position (w > 0: surface)", "host or `gbuffer_import`"),
-            read(2, "gb_normal", vec4, "unit normal (w: depth)", "host or `gbuffer_import`"),
-            read(3, "lights", "array<GpuLight>", "VPLs by subset, flux × period²", "host or `vpl_pack`"),
-            read(4, "rt2", "array<f32>", "threshold range²", "host or `vpl_pack`"),
-            read(5, "r2", "array<f32>", "random range² (clamp: R²)", "`light_update` or host"),
-            write(6, "irradiance", vec4, "irradiance (rgb), lights kept (w)"),
+            view_uniform(1),
+            surface(2, f.surface),
+            texture(3, "normal_tex", "world normal (xyz)", "engine (G-buffer)"),
+            read(4, "lights", "array<GpuLight>", "VPLs by subset, flux × period²", "`vpl_pack`"),
+            read(5, "rt2", "array<f32>", "threshold range²", "`vpl_pack`"),
+            read(6, "r2", "array<f32>", "random range² (clamp: R²)", "`light_update` or `vpl_pack`"),
+            write(7, "irradiance", vec4, "irradiance (rgb), lights kept (w); 0 where no surface is"),
         ],
         Kernel::VplDenoise => vec![
             uniform(0, "params", "VplParams", true, "image size"),
-            read(1, "gb_position", vec4, "world position (w > 0: surface)", "host or `gbuffer_import`"),
-            read(2, "gb_normal", vec4, "unit normal (w: depth)", "host or `gbuffer_import`"),
-            read(3, "irradiance", vec4, "interleaved irradiance", "`vpl_tiled`"),
-            write(4, "filtered", vec4, "denoised irradiance"),
+            view_uniform(1),
+            surface(2, f.surface),
+            texture(3, "normal_tex", "world normal (xyz)", "engine (G-buffer)"),
+            read(4, "irradiance", vec4, "interleaved irradiance", "`vpl_tiled`"),
+            write(5, "filtered", vec4, "denoised irradiance"),
         ],
         Kernel::VplNear => vec![
             uniform(0, "params", "VplParams", true, "image size, `R_n²`, near blocks"),
-            read(1, "gb_position", vec4, "world position (w > 0: surface)", "host or `gbuffer_import`"),
-            read(2, "gb_normal", vec4, "unit normal (w: depth)", "host or `gbuffer_import`"),
-            read(3, "lights", "array<GpuLight>", "VPLs by subset, flux × period²", "host or `vpl_pack`"),
-            read(4, "near_slots", "array<u32>", "slot in `lights` of each VPL in near-block order", "host or `vpl_pack`"),
-            read(5, "near_boxes", "array<GpuNearBox>", "box of each near block", "host or `vpl_pack`"),
-            read(6, "rt2", "array<f32>", "threshold range² (as `vpl_tiled`'s)", "host or `vpl_pack`"),
-            read(7, "r2", "array<f32>", "range² (as `vpl_tiled`'s)", "`light_update` (SLC) or host"),
-            write(8, "irradiance", vec4, "the (denoised) far field, the near field added"),
+            view_uniform(1),
+            surface(2, f.surface),
+            texture(3, "normal_tex", "world normal (xyz)", "engine (G-buffer)"),
+            read(4, "lights", "array<GpuLight>", "VPLs by subset, flux × period²", "`vpl_pack`"),
+            read(5, "near_slots", "array<u32>", "slot in `lights` of each VPL in near-block order", "`vpl_pack`"),
+            read(6, "near_boxes", "array<GpuNearBox>", "box of each near block", "`vpl_pack`"),
+            read(7, "rt2", "array<f32>", "threshold range² (as `vpl_tiled`'s)", "`vpl_pack`"),
+            read(8, "r2", "array<f32>", "range² (as `vpl_tiled`'s)", "`light_update` (SLC) or `vpl_pack`"),
+            write(9, "irradiance", vec4, "the (denoised) far field, the near field added"),
         ],
         Kernel::BshReservoir => {
             let mut v = vec![
@@ -248,14 +257,6 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             v.extend(pt_tables(ies));
             return v;
         }
-        Kernel::GbufferImport => vec![
-            uniform(0, "view", "ViewParams", true, "inverse view-projection, eye, image size, depth background"),
-            surface(1, f.surface),
-            texture(2, "normal_tex", "world unit normal (xyz)", "engine (G-buffer)"),
-            write(3, "gb_position", vec4, "world position (w: 1 where a surface is)"),
-            write(4, "gb_normal", vec4, "unit normal (w: distance from the eye)"),
-            write(5, "irradiance", vec4, "cleared"),
-        ],
         Kernel::VplPack => {
             let mut v = vec![uniform(0, "params", "PackParams", true, "count, RSM size, subset size, SLC parameters")];
             match f.vpl_source {
@@ -277,10 +278,11 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             v
         }
         Kernel::IrradianceExport => vec![
-            uniform(0, "view", "ViewParams", true, "image size"),
-            read(1, "gb_position", vec4, "world position (w > 0: surface)", "`gbuffer_import`"),
-            read(2, "irradiance", vec4, "irradiance (rgb), lights kept (w)", "`vpl_tiled`, `vpl_denoise`, `vpl_near`"),
-            out(3, "irradiance (rgb), lights kept (a); 0 where no surface is"),
+            view_uniform(0),
+            surface(1, f.surface),
+            texture(2, "normal_tex", "world normal (xyz)", "engine (G-buffer)"),
+            read(3, "irradiance", vec4, "irradiance (rgb), lights kept (w)", "`vpl_tiled`, `vpl_denoise`, `vpl_near`"),
+            out(4, "irradiance (rgb), lights kept (a); 0 where no surface is"),
         ],
         Kernel::SceneRaster => vec![
             uniform(0, "params", "MapParams", false, "view-projection and the map's frame"),

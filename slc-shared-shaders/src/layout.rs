@@ -290,7 +290,7 @@ slc_core::shared! {
         pub pad2: u32,
     }
 
-    /// Uniforms of `gbuffer_import` and `irradiance_export`.
+    /// Uniforms of `primary_direct` and `frame_compose`.
     pub struct ImageParams {
         /// Eye position (depth = distance from it).
         pub eye: vec3f,
@@ -381,8 +381,8 @@ slc_core::shared! {
     /// [`MapParams::mode`] of a directional light's orthographic map.
     pub const MAP_ORTHOGRAPHIC: u32 = 2;
 
-    /// Uniforms of the engine passes' G-buffer readers (`gbuffer_import`,
-    /// `irradiance_export`, `direct_light`), one slot per record: the view
+    /// Uniforms of the engine passes' G-buffer readers (`direct_light`,
+    /// `vpl_tiled`, `vpl_denoise`, `vpl_near`, `irradiance_export`), one slot per record: the view
     /// that made the depth buffer, the image and the record's random
     /// streams, the dielectric's Fresnel terms, 112 bytes.
     pub struct ViewParams {

@@ -168,8 +168,6 @@ pub enum Kernel {
     /// The near field of the VPL split, per full-resolution tile, added to
     /// the (denoised) interleaved irradiance.
     VplNear,
-    /// An engine's G-buffer textures into the shading buffers.
-    GbufferImport,
     /// VPLs (from an RSM or a VPL buffer) into the interleaved light buffer.
     VplPack,
     /// The irradiance into an engine's storage texture.
@@ -193,7 +191,7 @@ pub enum Kernel {
 
 impl Kernel {
     /// All kernels.
-    pub const ALL: [Kernel; 16] = [
+    pub const ALL: [Kernel; 15] = [
         Kernel::LightUpdate,
         Kernel::BshRefit,
         Kernel::VplTiled,
@@ -202,7 +200,6 @@ impl Kernel {
         Kernel::BshReservoir,
         Kernel::PtConnect,
         Kernel::PtExtend,
-        Kernel::GbufferImport,
         Kernel::VplPack,
         Kernel::IrradianceExport,
         Kernel::SceneRaster,
@@ -223,7 +220,6 @@ impl Kernel {
             Kernel::PtExtend => "pt_extend",
             Kernel::VplDenoise => "vpl_denoise",
             Kernel::VplNear => "vpl_near",
-            Kernel::GbufferImport => "gbuffer_import",
             Kernel::VplPack => "vpl_pack",
             Kernel::IrradianceExport => "irradiance_export",
             Kernel::SceneRaster => "scene_raster",
@@ -243,7 +239,6 @@ impl Kernel {
             Kernel::VplTiled
                 | Kernel::VplDenoise
                 | Kernel::VplNear
-                | Kernel::GbufferImport
                 | Kernel::VplPack
                 | Kernel::IrradianceExport
                 | Kernel::SceneRaster
@@ -338,7 +333,8 @@ impl OutputFormat {
     }
 }
 
-/// Where the engine passes' kernels (`gbuffer_import`, `direct_light`)
+/// Where the engine passes' kernels (`direct_light` and the indirect
+/// pass's `vpl_tiled`, `vpl_denoise`, `vpl_near`, `irradiance_export`)
 /// read the G-buffer's surface.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum SurfaceSource {
@@ -397,7 +393,9 @@ pub struct Features {
     /// neither (8 storage buffers per stage instead of 10, WebGPU's default
     /// limit).
     pub shadows: bool,
-    /// Where `gbuffer_import` and `direct_light` read the surface.
+    /// Where the engine passes' G-buffer readers (`direct_light`,
+    /// `vpl_tiled`, `vpl_denoise`, `vpl_near`, `irradiance_export`) read
+    /// the surface.
     pub surface: SurfaceSource,
     /// What `direct_light` writes (with a material input unless
     /// `Irradiance`).
@@ -425,7 +423,7 @@ impl Default for Features {
     }
 }
 
-const TEMPLATES: [(&str, &str); 27] = [
+const TEMPLATES: [(&str, &str); 26] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("workgroup_box.wgsl", include_str!("templates/workgroup_box.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
@@ -441,7 +439,6 @@ const TEMPLATES: [(&str, &str); 27] = [
     ("pt_connect", include_str!("templates/pt_connect.wgsl")),
     ("pt_mis.wgsl", include_str!("templates/pt_mis.wgsl")),
     ("pt_extend", include_str!("templates/pt_extend.wgsl")),
-    ("gbuffer_import", include_str!("templates/gbuffer_import.wgsl")),
     ("vpl_pack", include_str!("templates/vpl_pack.wgsl")),
     ("irradiance_export", include_str!("templates/irradiance_export.wgsl")),
     ("scene_raster", include_str!("templates/scene_raster.wgsl")),
@@ -479,7 +476,7 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
         return bad(format!("workgroup size {} must be in 1..=256", f.workgroup_size));
     }
     match kernel {
-        Kernel::VplDenoise | Kernel::GbufferImport | Kernel::VplPack | Kernel::IrradianceExport | Kernel::PrimaryDirect | Kernel::FrameCompose
+        Kernel::VplDenoise | Kernel::VplPack | Kernel::IrradianceExport | Kernel::PrimaryDirect | Kernel::FrameCompose
             if !(1..=16).contains(&f.tile_size) || !(1..=16).contains(&f.interleave) =>
         {
             return bad(format!("{}: tile {} and period {} must be in 1..=16", kernel.name(), f.tile_size, f.interleave));

@@ -45,7 +45,6 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
             Kernel::PtExtend,
             Features { lights: LightSet::parse("point,triangle").unwrap(), ..Features::default() },
         ),
-        ("gbuffer_import", Kernel::GbufferImport, Features { lights: vpl, ..Features::default() }),
         ("vpl_pack-rsm", Kernel::VplPack, Features { lights: vpl, ..Features::default() }),
         ("vpl_pack-buffer", Kernel::VplPack, Features { lights: vpl, vpl_source: VplSource::Buffer, ..Features::default() }),
         (

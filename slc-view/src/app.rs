@@ -222,18 +222,20 @@ impl State {
         }
         self.frame.set_primary(&self.controls.light())?;
         let settings = self.controls.frame_settings(self.frame_index);
+        // The controls' CPU-frame settings into the frame's own.
+        let st = slc_wgpu::frame::indirect_settings(&settings, self.frame.min_distance())?;
         let last = opts.frames.is_some_and(|n| self.frame_index + 1 >= n);
         if last && let Some(path) = &opts.screenshot {
             // The last frame is read back and saved (with the exposure and
             // the display mapping the window uses).
-            let out = self.frame.render(&settings)?;
+            let out = self.frame.render(&st)?;
             out.image.write_png(path, settings.exposure).map_err(|e| ViewError::Output(e.to_string()))?;
             self.frame_index += 1;
             return Ok(true);
         }
         let gpu = self.gpu.clone();
         let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc view frame") });
-        let timed = self.frame.record_timed(&mut encoder, &settings)?;
+        let timed = self.frame.record_timed(&mut encoder, &st)?;
         let surface_texture = match self.surface.get_current_texture() {
             wgpu::CurrentSurfaceTexture::Success(t) | wgpu::CurrentSurfaceTexture::Suboptimal(t) => t,
             wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {

@@ -1,11 +1,14 @@
 //! Plays the engine: its own device, its own render pipelines rasterizing
-//! the Cornell box's G-buffer and the spot light's reflective shadow map,
-//! then slc's two passes recorded into its own command encoder — the
-//! [`IndirectPass`] (the spot's one-bounce light through 4,096 VPLs) and
-//! the [`DirectPass`] (48 small coloured lights under the ceiling, culled
-//! stochastically) — and its own composition
-//! `emission + albedo/π · (E_indirect + E_direct)`. (The spot's own direct
-//! light, which needs the engine's shadow map, is left out.)
+//! the Cornell box's G-buffer (a `Depth32Float` depth buffer and normals)
+//! and the spot light's reflective shadow map, then slc's two passes
+//! recorded into its own command encoder, both reading the depth buffer
+//! with the camera's inverse view-projection — the [`IndirectPass`] (the
+//! spot's one-bounce light through 16,384 VPLs) and the [`DirectPass`] (48
+//! small coloured lights under the ceiling, culled stochastically, moved
+//! and dimmed every frame with [`DirectPass::update_lights`]) — and its own
+//! composition `emission + albedo/π · (E_indirect + E_direct)`. (The
+//! spot's own direct light, which needs the engine's shadow map, is left
+//! out.)
 //!
 //! ```text
 //! cargo run --release -p slc-wgpu --example embed -- embed.png
@@ -23,7 +26,7 @@ use slc_wgpu::passes::{
     DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, IndirectInputs, IndirectPass, IndirectPassDesc, VplInput,
     VplSourceDesc,
 };
-use slc_wgpu::{GBuffer, GpuContext, Light, LightSet, PointLight, RangeParams, Surface, SurfaceDesc};
+use slc_wgpu::{GBuffer, GpuContext, Light, LightSet, PointLight, RangeParams, Surface};
 use wgpu::util::DeviceExt;
 
 /// One vertex of the engine's mesh.
@@ -67,9 +70,8 @@ fn facing(n: vec3f, p: vec3f) -> vec3f {
     let m = normalize(n);
     return select(-m, m, dot(m, u.eye.xyz - p) >= 0.0);
 }
-struct GOut { @location(0) position: vec4f, @location(1) normal: vec4f }
-@fragment fn gbuffer(v: VsOut) -> GOut {
-    return GOut(vec4f(v.world, 1.0), vec4f(facing(v.normal, v.world), v.material));
+@fragment fn gbuffer(v: VsOut) -> @location(0) vec4f {
+    return vec4f(facing(v.normal, v.world), v.material);
 }
 struct ROut { @location(0) position: vec4f, @location(1) normal: vec4f, @location(2) flux: vec4f }
 @fragment fn rsm(v: VsOut) -> ROut {
@@ -135,21 +137,29 @@ pub struct Frame {
     pub direct: Vec<[f32; 4]>,
 }
 
-/// The engine's small lights: 48 coloured points in a 8 × 6 grid 5 cm
-/// under the ceiling.
-pub fn small_lights() -> LightSet {
+/// The engine's small lights at frame `frame`: 48 coloured points in a
+/// 8 × 6 grid 2 mm under the ceiling, swaying front to back by up to 3 cm
+/// and pulsing between 0.5 and 1.5 times their intensity (frame 0: in
+/// place, at 1×).
+pub fn small_lights_at(frame: u32) -> Vec<Light> {
     let colours = [Vec3::new(1.0, 0.3, 0.2), Vec3::new(0.2, 1.0, 0.3), Vec3::new(0.3, 0.4, 1.0)];
-    let lights = (0..48)
+    let t = frame as f32;
+    (0..48)
         .map(|i| {
-            let p = Vec3::new(0.05 + 0.065 * (i % 8) as f32, 0.498, 0.06 + 0.085 * (i / 8) as f32);
-            Light::Point(PointLight::new(p, colours[i % 3] * 0.004).expect("valid light"))
+            let p = Vec3::new(0.05 + 0.065 * (i % 8) as f32, 0.498, 0.06 + 0.085 * (i / 8) as f32 + 0.03 * (0.7 * t).sin());
+            Light::Point(PointLight::new(p, colours[i % 3] * (0.004 * (1.0 + 0.5 * (0.9 * t).sin()))).expect("valid light"))
         })
-        .collect();
-    LightSet::new(lights).expect("non-empty")
+        .collect()
+}
+
+/// The small lights as the direct pass is built with (frame 0's).
+pub fn small_lights() -> LightSet {
+    LightSet::new(small_lights_at(0)).expect("non-empty")
 }
 
 /// Renders `frames` frames (a new ξ set each, as an engine's frames draw
-/// them) and averages them, as an engine's temporal accumulation would.
+/// them, the small lights at [`small_lights_at`] the frame number) and
+/// averages them, as an engine's temporal accumulation would.
 pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: u32) -> Result<Frame, Box<dyn std::error::Error>> {
     // The engine's device.
     let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
@@ -178,10 +188,12 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
     use glam::camera::rh::{proj, view::look_to_mat4};
     let cam = &scene.camera;
     let (_, cam_up, cam_forward) = cam.basis();
+    // Near and far planes around the box: a 32-bit depth then unprojects
+    // to ~2⁻²⁴·d²/near, a few micrometres here.
+    let camera_view_proj =
+        proj::directx::perspective(cam.vfov_deg.to_radians(), W as f32 / H as f32, 0.1, 10.0) * look_to_mat4(cam.position, cam_forward, cam_up);
     let camera = Uniforms {
-        view_proj: (proj::directx::perspective(cam.vfov_deg.to_radians(), W as f32 / H as f32, 0.01, 100.0)
-            * look_to_mat4(cam.position, cam_forward, cam_up))
-        .to_cols_array_2d(),
+        view_proj: camera_view_proj.to_cols_array_2d(),
         eye: cam.position.extend(1.0).to_array(),
         axis: [0.0; 4],
         intensity: [0.0; 4],
@@ -206,7 +218,7 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
         cone: [inner.cos(), 0.0, 0.0, 0.0],
     };
 
-    // The engine's pipelines: G-buffer (position, normal + material id) and
+    // The engine's pipelines: G-buffer (depth, normal + material id) and
     // RSM (position, normal, flux), each with a depth buffer.
     let source = format!("{}\n{SHADER}", slc_core::wgsl::library());
     let module = device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some("engine"), source: wgpu::ShaderSource::Wgsl(source.into()) });
@@ -247,13 +259,13 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
         })
     };
     use wgpu::TextureFormat::{Rgba16Float, Rgba32Float};
-    let gbuffer_pipeline = raster("gbuffer", &[Rgba32Float, Rgba32Float]);
+    let gbuffer_pipeline = raster("gbuffer", &[Rgba32Float]);
     let rsm_pipeline = raster("rsm", &[Rgba32Float, Rgba16Float, Rgba16Float]);
 
     let rt = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
-    let gb_position = target(&device, "gb position", (W, H), Rgba32Float, rt);
     let gb_normal = target(&device, "gb normal", (W, H), Rgba32Float, rt | wgpu::TextureUsages::COPY_SRC);
-    let gb_depth = target(&device, "gb depth", (W, H), wgpu::TextureFormat::Depth32Float, wgpu::TextureUsages::RENDER_ATTACHMENT);
+    // slc reads the depth buffer: TEXTURE_BINDING as well.
+    let gb_depth = target(&device, "gb depth", (W, H), wgpu::TextureFormat::Depth32Float, rt);
     let rsm = [
         target(&device, "rsm position", (RSM, RSM), Rgba32Float, rt),
         target(&device, "rsm normal", (RSM, RSM), Rgba16Float, rt),
@@ -263,34 +275,24 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
     let output = target(&device, "indirect", (W, H), Rgba32Float, wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
     let direct_target = target(&device, "direct", (W, H), Rgba32Float, wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
     let view = |t: &wgpu::Texture| t.create_view(&Default::default());
-    let (gb_views, rsm_views) = ([view(&gb_position), view(&gb_normal)], [view(&rsm[0]), view(&rsm[1]), view(&rsm[2])]);
+    let (gb_views, rsm_views) = ([view(&gb_depth), view(&gb_normal)], [view(&rsm[0]), view(&rsm[1]), view(&rsm[2])]);
     let (output_view, direct_view) = (view(&output), view(&direct_target));
 
-    // slc's pass, on the engine's device.
+    // slc's passes, on the engine's device, reading its (standard-Z)
+    // Depth32Float depth buffer: the descriptors' default surface.
     let gpu = GpuContext::from_device(device.clone(), queue.clone());
-    let mut pass = IndirectPass::new(
-        &gpu,
-        &IndirectPassDesc {
-            surface: SurfaceDesc::Position,
-            output_format: Rgba32Float,
-            ..IndirectPassDesc::new(W, H, VplSourceDesc::Rsm { size: RSM })
-        },
-    )?;
+    let mut pass =
+        IndirectPass::new(&gpu, &IndirectPassDesc { output_format: Rgba32Float, ..IndirectPassDesc::new(W, H, VplSourceDesc::Rsm { size: RSM }) })?;
     // The small lights with uniform picks: the CPU's twin (slc_cpu::direct)
     // draws the same numbers.
-    let direct_desc = DirectPassDesc {
-        surface: SurfaceDesc::Position,
-        output_format: Rgba32Float,
-        selection: DirectSelection::Uniform { k: 8 },
-        ..DirectPassDesc::new(W, H)
-    };
+    let direct_desc = DirectPassDesc { output_format: Rgba32Float, selection: DirectSelection::Uniform { k: 8 }, ..DirectPassDesc::new(W, H) };
     let mut direct_pass = DirectPass::new(&gpu, &small_lights(), &direct_desc)?;
 
     let draw = |encoder: &mut wgpu::CommandEncoder,
                 pipeline: &wgpu::RenderPipeline,
                 uniforms: &Uniforms,
                 colors: &[wgpu::TextureView],
-                depth: &wgpu::Texture| {
+                depth: &wgpu::TextureView| {
         let ubuf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("uniforms"),
             contents: bytemuck::bytes_of(uniforms),
@@ -312,12 +314,11 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
                 })
             })
             .collect();
-        let depth_view = view(depth);
         let mut rp = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: None,
             color_attachments: &attachments,
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &depth_view,
+                view: depth,
                 depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
                 stencil_ops: None,
             }),
@@ -332,18 +333,22 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
     };
     let n = (W * H) as usize;
     let (mut irradiance, mut direct) = (vec![[0.0f32; 4]; n], vec![[0.0f32; 4]; n]);
+    let rsm_depth = view(&rsm_depth);
+    let inv_view_proj = camera_view_proj.inverse();
     for f in 0..frames {
+        let settings = VplSettings { frame: settings.frame + f, ..*settings };
+        // The small lights move: rewritten in place, the BSH refitted on the GPU.
+        direct_pass.update_lights(&small_lights_at(settings.frame))?;
         // One frame: one encoder with the engine's raster passes and slc's passes.
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
-        draw(&mut encoder, &gbuffer_pipeline, &camera, &gb_views, &gb_depth);
+        draw(&mut encoder, &gbuffer_pipeline, &camera, &gb_views[1..], &gb_views[0]);
         draw(&mut encoder, &rsm_pipeline, &light, &rsm_views, &rsm_depth);
-        let gbuffer = GBuffer { surface: Surface::Position(&gb_views[0]), normal: &gb_views[1], eye: cam.position };
+        let gbuffer = GBuffer { surface: Surface::Depth { depth: &gb_views[0], inv_view_proj }, normal: &gb_views[1], eye: cam.position };
         let inputs = IndirectInputs {
             gbuffer,
             vpls: VplInput::Rsm { position: &rsm_views[0], normal: &rsm_views[1], flux: &rsm_views[2] },
             output: &output_view,
         };
-        let settings = VplSettings { frame: settings.frame + f, ..*settings };
         pass.record(&mut encoder, &inputs, &slc_wgpu::frame::indirect_settings(&settings, min_distance)?)?;
         let culling = slc_wgpu::Culling::Stochastic(RangeParams::new(settings.error_bound, settings.exposure)?);
         direct_pass.record(

@@ -20,11 +20,15 @@
 //! use slc_scene::scene::Scene;
 //! use slc_scene::vpl::VplSettings;
 //! use slc_wgpu::GpuContext;
-//! use slc_wgpu::frame::{FrameDesc, GpuVplFrame};
+//! use slc_wgpu::frame::{FrameDesc, GpuVplFrame, indirect_settings};
+//! use slc_wgpu::passes::IndirectSettings;
 //!
 //! let gpu = GpuContext::new()?;
 //! let mut frame = GpuVplFrame::new(&gpu, &Scene::cornell_box(), &FrameDesc { width: 512, height: 512, rsm_size: 256, shadow_size: 2048, min_distance: None })?;
-//! let out = frame.render(&VplSettings::default())?;
+//! // The indirect pass's own settings, at the frame's clamp distance ...
+//! let out = frame.render(&IndirectSettings { min_distance: frame.min_distance(), ..IndirectSettings::default() })?;
+//! // ... or converted from the CPU frame's (refused: its reference and fixed ξ).
+//! let out = frame.render(&indirect_settings(&VplSettings::default(), frame.min_distance())?)?;
 //! for s in &out.stages {
 //!     println!("{:>18} {:.3} ms", s.name, s.ms);
 //! }
@@ -86,8 +90,6 @@ pub enum Stage {
     Rsm,
     /// The primary light's shadow map (raster).
     ShadowMap,
-    /// The G-buffer into the shading buffers.
-    GbufferImport,
     /// VPLs from the RSM.
     VplGeneration,
     /// Random ranges from ξ.
@@ -108,11 +110,10 @@ pub enum Stage {
 
 impl Stage {
     /// Every stage, in order: the timer holds a timestamp pair for each.
-    pub const ALL: [Stage; 12] = [
+    pub const ALL: [Stage; 11] = [
         Stage::GBuffer,
         Stage::Rsm,
         Stage::ShadowMap,
-        Stage::GbufferImport,
         Stage::VplGeneration,
         Stage::LightUpdate,
         Stage::Shading,
@@ -129,7 +130,6 @@ impl Stage {
             Stage::GBuffer => "G-buffer",
             Stage::Rsm => "RSM",
             Stage::ShadowMap => "shadow map",
-            Stage::GbufferImport => "G-buffer import",
             Stage::VplGeneration => "VPL generation",
             Stage::LightUpdate => "light update",
             Stage::Shading => "shading",
@@ -159,9 +159,11 @@ impl StageTime {
     }
 }
 
-/// The indirect pass's settings for a frame's VPL settings: methods `slc`,
-/// `clamp` and `none` with per-frame ξ (the CPU's `tile` has no GPU
-/// counterpart; fixed ξ and the reference are [`crate::vpl::GpuVpl`]'s).
+/// The indirect pass's settings for the CPU frame's VPL settings at clamp
+/// distance `min_distance` ([`GpuVplFrame::min_distance`] for a frame):
+/// methods `slc`, `clamp` and `none` with per-frame ξ; the reference and a
+/// fixed ξ are refused here ([`crate::vpl::GpuVpl`] shades them), and the
+/// CPU's `tile` (its tile size) has no GPU counterpart.
 pub fn indirect_settings(settings: &VplSettings, min_distance: f32) -> Result<IndirectSettings, GpuError> {
     let params = settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
     let culling = match settings.method {
@@ -195,7 +197,7 @@ pub struct FrameRender {
     /// How the stages were timed.
     pub timing: Timing,
     /// The stage times summed into the CPU frame's categories (G-buffer:
-    /// raster and import; RSM: raster and VPL generation; direct: shadow
+    /// raster; RSM: raster and VPL generation; direct: shadow
     /// map and direct; shading: light update and shading; denoise: denoise,
     /// export and composition), the kept lights per shaded pixel and the
     /// VPL count. The GPU does not count loop evaluations (`evaluations`
@@ -278,7 +280,10 @@ pub struct GpuVplFrame {
     gpu: GpuContext,
     desc: FrameDesc,
     eye: Vec3,
+    /// The clamp distance the frame was built with.
     min_distance: f32,
+    /// The clamp distance of the last recorded frame ([`Self::read_inputs`]).
+    recorded_min_distance: f32,
     materials: Vec<Material>,
     vertices: wgpu::Buffer,
     vertex_count: u32,
@@ -505,6 +510,7 @@ impl GpuVplFrame {
             desc: *desc,
             eye: cam.position,
             min_distance,
+            recorded_min_distance: min_distance,
             materials: scene.materials.clone(),
             vertices,
             vertex_count: verts.len() as u32,
@@ -543,6 +549,13 @@ impl GpuVplFrame {
         &self.desc
     }
 
+    /// The clamp distance of the VPL fall-off the frame was built with
+    /// ([`FrameDesc::min_distance`], or 1% of the scene's diagonal): the
+    /// CPU frame's, for [`IndirectSettings::min_distance`].
+    pub fn min_distance(&self) -> f32 {
+        self.min_distance
+    }
+
     /// The HDR target (`Rgba32Float`, `TEXTURE_BINDING | STORAGE_BINDING |
     /// COPY_SRC`): radiance, alpha 1, after the recorded frame.
     pub fn output(&self) -> &wgpu::Texture {
@@ -578,7 +591,7 @@ impl GpuVplFrame {
     /// [`GpuVplFrame::use_timestamps`]); read them with
     /// [`GpuVplFrame::stage_times`] once the encoder's commands are
     /// submitted. Returns whether the stages are timed.
-    pub fn record_timed(&mut self, encoder: &mut wgpu::CommandEncoder, settings: &VplSettings) -> Result<bool, GpuError> {
+    pub fn record_timed(&mut self, encoder: &mut wgpu::CommandEncoder, settings: &IndirectSettings) -> Result<bool, GpuError> {
         let steps = self.steps(settings)?;
         let mut timer = self.timer.take();
         match timer.as_mut() {
@@ -618,15 +631,15 @@ impl GpuVplFrame {
         Ok(Some(self.timed_stages.iter().zip(ms).map(|(&stage, ms)| StageTime::new(stage, ms)).collect()))
     }
 
-    /// The frame's steps for `settings`, each recordable on its own.
-    fn steps(&mut self, settings: &VplSettings) -> Result<Vec<Step>, GpuError> {
-        let st = indirect_settings(settings, self.min_distance)?;
+    /// The frame's steps for `st`, each recordable on its own.
+    fn steps(&mut self, st: &IndirectSettings) -> Result<Vec<Step>, GpuError> {
         let inputs = IndirectInputs {
             gbuffer: GBuffer { surface: Surface::Position(&self.gb[0].view), normal: &self.gb[1].view, eye: self.eye },
             vpls: VplInput::Rsm { position: &self.rsm[0].view, normal: &self.rsm[1].view, flux: &self.rsm[2].view },
             output: &self.irradiance.view,
         };
-        let indirect = self.indirect.dispatches(&inputs, &st)?;
+        let indirect = self.indirect.dispatches(&inputs, st)?;
+        self.recorded_min_distance = st.min_distance;
         let (gx, gy) = (self.desc.width.div_ceil(TILE), self.desc.height.div_ceil(TILE));
         let mut steps = vec![Step::Raster(Stage::GBuffer), Step::Raster(Stage::Rsm), Step::Raster(Stage::ShadowMap)];
         steps.extend(indirect.into_iter().map(Step::Compute));
@@ -681,8 +694,9 @@ impl GpuVplFrame {
     }
 
     /// Records the whole frame into `encoder` (render and compute passes;
-    /// nothing is submitted or read back). Methods `slc`, `clamp`, `none`.
-    pub fn record(&mut self, encoder: &mut wgpu::CommandEncoder, settings: &VplSettings) -> Result<(), GpuError> {
+    /// nothing is submitted or read back) with the indirect pass's
+    /// `settings` (every one of them honoured).
+    pub fn record(&mut self, encoder: &mut wgpu::CommandEncoder, settings: &IndirectSettings) -> Result<(), GpuError> {
         for step in &self.steps(settings)? {
             self.record_step(encoder, step, None);
         }
@@ -692,7 +706,7 @@ impl GpuVplFrame {
     /// Renders one frame in one command encoder, reads the image back and
     /// times every stage (GPU timestamps, else each stage submitted alone
     /// under the host clock).
-    pub fn render(&mut self, settings: &VplSettings) -> Result<FrameRender, GpuError> {
+    pub fn render(&mut self, settings: &IndirectSettings) -> Result<FrameRender, GpuError> {
         let steps = self.steps(settings)?;
         let gpu = self.gpu.clone();
         let mut times = Vec::with_capacity(steps.len());
@@ -729,7 +743,7 @@ impl GpuVplFrame {
         let shaded = positions.iter().filter(|p| p[3] > 0.0).count().max(1) as f64;
         let sum = |stages: &[Stage]| times.iter().filter(|t| stages.contains(&t.stage)).map(|t| t.ms).sum::<f64>();
         let stats = VplStats {
-            gbuffer_ms: sum(&[Stage::GBuffer, Stage::GbufferImport]),
+            gbuffer_ms: sum(&[Stage::GBuffer]),
             // The CPU's "direct" includes its shadow rays.
             direct_ms: sum(&[Stage::ShadowMap, Stage::Direct]),
             rsm_ms: sum(&[Stage::Rsm, Stage::VplGeneration]),
@@ -746,8 +760,8 @@ impl GpuVplFrame {
 
     /// The G-buffer and VPLs the last frame rasterized, read back as the
     /// backend-neutral [`VplInputs`] (to shade them with another backend,
-    /// or to compare with the CPU's ray-cast ones). Depth is the distance
-    /// from the eye.
+    /// or to compare with the CPU's ray-cast ones), with the last frame's
+    /// clamp distance. Depth is the distance from the eye.
     pub fn read_inputs(&self) -> Result<VplInputs, GpuError> {
         let gpu = &self.gpu;
         let (position, normal) = (read_texture(gpu, &self.gb[0].texture)?, read_texture(gpu, &self.gb[1].texture)?);
@@ -760,6 +774,7 @@ impl GpuVplFrame {
             albedo: vec![Vec3::ZERO; n],
             emission: vec![Vec3::ZERO; n],
             depth: vec![f32::INFINITY; n],
+            eye: self.eye,
         };
         for i in 0..n {
             if position[i][3] > 0.0 {
@@ -776,7 +791,7 @@ impl GpuVplFrame {
         let (p, nn, f) = (p?, nn?, f?);
         let v3 = |t: &[[f32; 4]]| t.iter().map(|x| Vec3::new(x[0], x[1], x[2])).collect::<Vec<_>>();
         let vpls = Vpls { size: self.desc.rsm_size, position: v3(&p), normal: v3(&nn), flux: v3(&f) };
-        Ok(VplInputs { gbuffer: gb, vpls, min_d2: self.min_distance * self.min_distance })
+        Ok(VplInputs { gbuffer: gb, vpls, min_d2: self.recorded_min_distance * self.recorded_min_distance })
     }
 
     /// The primary light's direct irradiance of the last frame, per pixel.
@@ -819,22 +834,44 @@ impl Step {
     }
 }
 
-/// Reads an `Rgba32Float` or `Rgba16Float` texture back as `[f32; 4]` per
-/// texel (rows padded to the copy alignment on the GPU side).
-pub(crate) fn read_texture(gpu: &GpuContext, t: &wgpu::Texture) -> Result<Vec<[f32; 4]>, GpuError> {
-    let (w, h) = (t.width(), t.height());
+/// Bytes per texel and per padded row of a read-back of `t`
+/// (`Rgba32Float` or `Rgba16Float`).
+fn readback_rows(t: &wgpu::Texture) -> Result<(u32, u32), GpuError> {
     let texel = match t.format() {
         F32 => 16,
         F16 => 8,
         f => return Err(GpuError::Setting(format!("cannot read back {f:?}"))),
     };
-    let row = (w * texel).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
-    let staging = zeroed(gpu, "slc texture readback", row as u64 * h as u64, wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
+    let row = (t.width() * texel).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+    Ok((texel, row))
+}
+
+/// A mappable buffer for [`read_texture_via`] of `t` (an `Rgba32Float` or
+/// `Rgba16Float` texture; rows padded to the copy alignment).
+pub(crate) fn texture_staging(gpu: &GpuContext, t: &wgpu::Texture) -> wgpu::Buffer {
+    let row = readback_rows(t).map_or(16 * t.width(), |(_, row)| row);
+    zeroed(gpu, "slc texture readback", row as u64 * t.height() as u64, wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST)
+}
+
+/// Reads an `Rgba32Float` or `Rgba16Float` texture back as `[f32; 4]` per
+/// texel (rows padded to the copy alignment on the GPU side).
+pub(crate) fn read_texture(gpu: &GpuContext, t: &wgpu::Texture) -> Result<Vec<[f32; 4]>, GpuError> {
+    read_texture_via(gpu, t, &texture_staging(gpu, t))
+}
+
+/// [`read_texture`] through `staging`, a [`texture_staging`] buffer of `t`
+/// (kept by a caller that reads back every frame).
+pub(crate) fn read_texture_via(gpu: &GpuContext, t: &wgpu::Texture, staging: &wgpu::Buffer) -> Result<Vec<[f32; 4]>, GpuError> {
+    let (w, h) = (t.width(), t.height());
+    let (texel, row) = readback_rows(t)?;
+    if staging.size() < row as u64 * h as u64 {
+        return Err(GpuError::Setting(format!("a read-back buffer of {} bytes for {} rows of {row}", staging.size(), h)));
+    }
     let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc texture readback") });
     enc.copy_texture_to_buffer(
         t.as_image_copy(),
         wgpu::TexelCopyBufferInfo {
-            buffer: &staging,
+            buffer: staging,
             layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(row), rows_per_image: None },
         },
         t.size(),

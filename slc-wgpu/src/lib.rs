@@ -10,7 +10,8 @@
 //! - [`vpl::GpuVpl`]: application A's shading and denoise on the GPU (random
 //!   ranges from the same ξ as the CPU, tiled culling per 8×8 interleaved
 //!   sub-image, SLC shading, cross-bilateral filter) on the G-buffer and
-//!   VPLs of a [`slc_scene::vpl::VplInputs`].
+//!   VPLs of a [`slc_scene::vpl::VplInputs`]: the [`passes::IndirectPass`]
+//!   on them, uploaded once.
 //!
 //! - [`frame::GpuVplFrame`]: application A wholly on the GPU: G-buffer and
 //!   RSM rasterized, VPLs made, shaded and denoised, the primary light's
@@ -28,7 +29,8 @@
 //! - [`pt::GpuPt`]: application B, a wavefront progressive path tracer
 //!   (`light_update`, `bsh_refit` per level, then `pt_extend` and
 //!   `pt_connect` per bounce), with GPU timestamps where the adapter has
-//!   them.
+//!   them. Like every type here, it keeps a clone of the context (no
+//!   lifetime), and renders through `&mut self`.
 //!
 //! ```no_run
 //! use slc_scene::backend::PathTracer;
@@ -36,13 +38,13 @@
 //! use slc_scene::scene::Scene;
 //! use slc_wgpu::{GpuContext, pt::GpuPt};
 //!
-//! let gpu = GpuContext::new()?;
 //! let scene = PtScene::new(&Scene::cornell_box(), &[])?;
-//! let mut tracer = GpuPt::new(&gpu, &scene, 256, 256)?;
+//! // The tracer keeps its own clone of the context: nothing else to hold.
+//! let mut tracer = GpuPt::new(&GpuContext::new()?, &scene, 256, 256)?;
 //! let mut acc = PtRender::new(256, 256);
 //! let settings = PtSettings { method: PtMethod::SlcReservoir, ..PtSettings::default() };
-//! PathTracer::render(&mut tracer, &mut acc, &settings, 16)?;
-//! println!("{}: {:.2} ms for {} passes", gpu.describe(), acc.time_ms, acc.passes);
+//! let timing = PathTracer::render(&mut tracer, &mut acc, &settings, 16)?;
+//! println!("{}: {:.2} ms for {} passes ({timing:?})", tracer.describe(), acc.time_ms, acc.passes);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 #![deny(missing_docs)]

@@ -106,9 +106,11 @@ fn selection(method: PtMethod) -> (Selection, usize) {
 /// group.
 type Kernels = (Vec<wgpu::ComputePipeline>, wgpu::BindGroup);
 
-/// GPU buffers and pipelines for one [`PtScene`] and image size.
-pub struct GpuPt<'a> {
-    gpu: &'a GpuContext,
+/// GPU buffers and pipelines for one [`PtScene`] and image size. Keeps a
+/// clone of the context (no lifetime ties it to the caller's); a render
+/// takes `&mut self`, since every render writes the same buffers.
+pub struct GpuPt {
+    gpu: GpuContext,
     width: u32,
     height: u32,
     set: GpuLightSet,
@@ -120,15 +122,13 @@ pub struct GpuPt<'a> {
     shade_params: UniformSlots,
     extend: Kernels,
     connect: Kernels,
-    /// One render call at a time (they share every buffer).
-    busy: std::sync::Mutex<()>,
 }
 
-impl<'a> GpuPt<'a> {
+impl GpuPt {
     /// Uploads the scene (lights, IES table, BSH, geometry BVH, materials)
     /// and builds the pipelines for a `width × height` image. Buffer,
     /// binding-count, dispatch and traversal-depth limits are checked first.
-    pub fn new(gpu: &'a GpuContext, pts: &PtScene, width: u32, height: u32) -> Result<Self, GpuError> {
+    pub fn new(gpu: &GpuContext, pts: &PtScene, width: u32, height: u32) -> Result<Self, GpuError> {
         if !(1..=16384).contains(&width) || !(1..=16384).contains(&height) {
             return Err(GpuError::Setting(format!("image size {width}x{height} must be within 1..=16384 on each side")));
         }
@@ -220,7 +220,7 @@ impl<'a> GpuPt<'a> {
         let cam = &pts.scene().camera;
         let (f, r, u) = cam.scaled_basis(width, height);
         let g = GpuPt {
-            gpu,
+            gpu: gpu.clone(),
             width,
             height,
             set,
@@ -232,7 +232,6 @@ impl<'a> GpuPt<'a> {
             shade_params,
             extend,
             connect,
-            busy: std::sync::Mutex::new(()),
         };
         gpu.wait()?;
         Ok(g)
@@ -244,7 +243,7 @@ impl<'a> GpuPt<'a> {
     /// Time is GPU time from timestamps where the adapter has them, else
     /// wall time around the submitted passes; the second value says which
     /// (`true`: timestamps).
-    pub fn render(&self, acc: &mut PtRender, s: &PtSettings, passes: u32) -> Result<bool, GpuError> {
+    pub fn render(&mut self, acc: &mut PtRender, s: &PtSettings, passes: u32) -> Result<bool, GpuError> {
         let (extend, connect) = (&self.extend.0[s.method.index()], &self.connect.0[s.method.index()]);
         if acc.size() != (self.width, self.height) {
             return Err(GpuError::Setting(format!("accumulation is {:?}, the GPU scene was set up for {}x{}", acc.size(), self.width, self.height)));
@@ -253,8 +252,7 @@ impl<'a> GpuPt<'a> {
             return Err(GpuError::Setting(format!("max depth {} must be in 1..={MAX_DEPTH}", s.max_depth)));
         }
         let params = RangeParams::new(s.error_bound, s.exposure).map_err(|e| GpuError::Setting(e.to_string()))?;
-        let _busy = self.busy.lock().map_err(|_| GpuError::Device("a previous render panicked".into()))?;
-        let gpu = self.gpu;
+        let gpu = &self.gpu;
         // The baselines cull nothing: r_t² = +∞ makes p = 1 and r² = +∞.
         self.set.set_threshold(gpu, s.method.culls().then_some(&params));
         let pixels = self.width * self.height;
@@ -332,7 +330,7 @@ impl<'a> GpuPt<'a> {
     }
 }
 
-impl PathTracer for GpuPt<'_> {
+impl PathTracer for GpuPt {
     type Error = GpuError;
 
     fn describe(&self) -> String {

@@ -157,7 +157,7 @@ fn path_tracer_and_direct_light_settings() {
     let Some(g) = slc_tests::gpu() else { return };
     let pts = PtScene::new(&scene, &[]).unwrap();
     rejects("gpu pt size", "size", AssertUnwindSafe(|| slc_wgpu::pt::GpuPt::new(g, &pts, 0, 8).map(|_| ())));
-    let gpt = slc_wgpu::pt::GpuPt::new(g, &pts, 4, 4).unwrap();
+    let mut gpt = slc_wgpu::pt::GpuPt::new(g, &pts, 4, 4).unwrap();
     for b in BAD {
         let s = PtSettings { method: PtMethod::SlcReservoir, error_bound: b, ..PtSettings::default() };
         rejects("gpu pt error bound", "error bound", AssertUnwindSafe(|| gpt.render(&mut PtRender::new(4, 4), &s, 1)));

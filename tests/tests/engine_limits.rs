@@ -3,14 +3,22 @@
 //!   stage), every constructor returns a typed [`GpuError::Limit`] and the
 //!   device raises no validation error first (a handler counts them);
 //! - a soak of 10,000 records (5,000 of each pass, into alternating
-//!   outputs, submitted 10 at a time) leaves wgpu's internal resource
-//!   counters (`Device::get_internal_counters`, wgpu's `counters` feature)
-//!   where the first records left them: recording creates no buffer, bind
-//!   group, view or pipeline.
+//!   outputs, submitted 10 at a time, the direct pass's lights moved with
+//!   `update_lights` before each of its records) leaves wgpu's internal
+//!   resource counters (`Device::get_internal_counters`, wgpu's `counters`
+//!   feature) where the first records left them: recording and moving
+//!   lights create no buffer, bind group, view or pipeline;
+//! - the same of `GpuVpl`'s shades (every method, fixed ξ, the reference)
+//!   once each has run.
+//!
+//! The counters hold what is alive now: they catch what accumulates, not
+//! an object made and dropped within one record (that none is made is by
+//! construction: bind groups cached by the views, buffers kept).
 
 use glam::Vec3;
 use slc_core::light::{Light, PointLight};
 use slc_scene::scene::Scene;
+use slc_scene::vpl::{VplMethod, VplSettings};
 use slc_tests::engine::{self, upload};
 use slc_tests::gpu;
 use slc_wgpu::passes::{
@@ -22,10 +30,18 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 fn point_lights(n: usize) -> LightSet {
-    let lights = (0..n)
-        .map(|i| Light::Point(PointLight::new(Vec3::new((i % 8) as f32 * 0.1, 0.4, (i / 8) as f32 * 0.1), Vec3::splat(0.01)).unwrap()))
-        .collect();
-    LightSet::new(lights).unwrap()
+    LightSet::new(moved_lights(n, 0)).unwrap()
+}
+
+/// `n` point lights on a grid, shifted and recoloured for record `r`.
+fn moved_lights(n: usize, r: u32) -> Vec<Light> {
+    let t = r as f32 * 0.01;
+    (0..n)
+        .map(|i| {
+            let p = Vec3::new((i % 8) as f32 * 0.1 + 0.05 * t.sin(), 0.4, (i / 8) as f32 * 0.1 + 0.05 * t.cos());
+            Light::Point(PointLight::new(p, Vec3::splat(0.01 * (1.5 + t.sin()))).unwrap())
+        })
+        .collect()
 }
 
 /// A constructor under test.
@@ -125,6 +141,7 @@ fn ten_thousand_records_allocate_nothing() {
             for r in batch..batch + 10 {
                 let output = &views[(r / 2 % 2) as usize];
                 if r % 2 == 0 {
+                    direct.update_lights(&moved_lights(64, r)).unwrap();
                     direct.record(&mut enc, &DirectInputs::new(gbuffer, output), &DirectSettings { culling, seed: 1, frame: r }).unwrap();
                 } else {
                     let vpls = VplInput::Rsm { position: &rsm[0], normal: &rsm[1], flux: &rsm[2] };
@@ -161,6 +178,48 @@ fn ten_thousand_records_allocate_nothing() {
     let after = counters();
     eprintln!("counters after 100 records: {before:?}\ncounters after 10,000 records: {after:?}");
     assert_eq!(before, after, "records allocated GPU objects");
+    gpu.take_errors().unwrap();
+    // The counters are the device's: the harness runs tests at once, so
+    // GpuVpl's check runs here, after the soak, not as a test of its own.
+    gpu_vpl_shades_allocate_nothing(gpu);
+}
+
+/// `GpuVpl` records the indirect pass on inputs it uploaded once: after
+/// a first shade of each kind (the reference builds its pass then), 50
+/// more of every kind leave wgpu's counters where they were (views, bind
+/// groups, pipelines, buffers and their memory: nothing accumulates).
+fn gpu_vpl_shades_allocate_nothing(gpu: &GpuContext) {
+    let ctx = slc_cpu::vpl::VplContext::new(&Scene::cornell_box(), 16, 16, 8, None).unwrap();
+    let mut gv = slc_wgpu::vpl::GpuVpl::new(gpu, ctx.inputs()).unwrap();
+    let base = VplSettings { error_bound: 0.01, ..VplSettings::default() };
+    let kinds = [
+        VplSettings { method: VplMethod::Slc, ..base },
+        VplSettings { method: VplMethod::Slc, denoise: false, fixed_xi: Some(0.5), ..base },
+        VplSettings { method: VplMethod::Clamp, range: 0.1, ..base },
+        VplSettings { method: VplMethod::None, near_radius: Some(0.0), ..base },
+        VplSettings { method: VplMethod::Reference, ..base },
+    ];
+    let mut shade_all = |frame: u32| {
+        for s in &kinds {
+            let out = gv.shade(&VplSettings { frame, ..*s }).unwrap();
+            assert!(out.irradiance.iter().any(|e| e.max_element() > 0.0), "{:?}: a black image", s.method);
+        }
+        gpu.wait().unwrap();
+    };
+    shade_all(0);
+    let counters = || {
+        let c = gpu.device.get_internal_counters().hal;
+        [c.buffers.read(), c.textures.read(), c.texture_views.read(), c.bind_groups.read(), c.compute_pipelines.read(), c.buffer_memory.read()]
+    };
+    let before = counters();
+    for frame in 1..=50 {
+        shade_all(frame);
+    }
+    let after = counters();
+    eprintln!(
+        "GpuVpl: counters (buffers, textures, views, bind groups, pipelines, buffer memory) {before:?} after the first shades, {after:?} after 250 more"
+    );
+    assert_eq!(before, after, "shades allocated GPU objects");
     gpu.take_errors().unwrap();
 }
 

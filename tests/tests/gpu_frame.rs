@@ -18,7 +18,8 @@ use slc_scene::backend::Timing;
 use slc_scene::scene::{PrimaryLight, Scene};
 use slc_scene::vpl::{VplMethod, VplSettings};
 use slc_tests::gpu;
-use slc_wgpu::frame::{FrameDesc, GpuVplFrame, Stage};
+use slc_wgpu::frame::{FrameDesc, GpuVplFrame, Stage, indirect_settings};
+use slc_wgpu::passes::IndirectSettings;
 
 const W: u32 = 128;
 const H: u32 = 96;
@@ -26,6 +27,12 @@ const RSM: u32 = 32;
 
 fn settings(method: VplMethod, denoise: bool) -> VplSettings {
     VplSettings { method, denoise, error_bound: 0.008, ..VplSettings::default() }
+}
+
+/// The frame's own settings for the CPU frame's `s`, at the frame's clamp
+/// distance (what the CLI does).
+fn on(frame: &GpuVplFrame, s: &VplSettings) -> IndirectSettings {
+    indirect_settings(s, frame.min_distance()).unwrap()
 }
 
 /// Relative image statistics of `gpu` against `cpu` over the pixels both
@@ -55,7 +62,7 @@ fn check_frame(scene: &Scene, what: &str) {
     let ctx = VplContext::new(scene, W, H, RSM, None).unwrap();
     for (method, denoise) in [(VplMethod::None, false), (VplMethod::Slc, true)] {
         let s = settings(method, denoise);
-        let out = frame.render(&s).unwrap();
+        let out = frame.render(&on(&frame, &s)).unwrap();
         assert!(out.image.is_finite(), "{what}: non-finite pixels");
         let cpu = ctx.render(&s).unwrap();
         let inputs = frame.read_inputs().unwrap();
@@ -100,7 +107,7 @@ fn gpu_vpls_match_cpu_vpls() {
     let Some(gpu) = gpu() else { return };
     let scene = Scene::cornell_box();
     let mut frame = GpuVplFrame::new(gpu, &scene, &FrameDesc { width: W, height: H, rsm_size: 256, shadow_size: 256, min_distance: None }).unwrap();
-    frame.render(&settings(VplMethod::Slc, false)).unwrap();
+    frame.render(&on(&frame, &settings(VplMethod::Slc, false))).unwrap();
     let g = frame.read_inputs().unwrap().vpls;
     let ctx = VplContext::new(&scene, W, H, 256, None).unwrap();
     let c = ctx.vpls();
@@ -136,7 +143,7 @@ fn every_stage_is_timed() {
     let mut frame =
         GpuVplFrame::new(gpu, &Scene::cornell_box(), &FrameDesc { width: 64, height: 64, rsm_size: 16, shadow_size: 64, min_distance: None })
             .unwrap();
-    let out = frame.render(&settings(VplMethod::Slc, true)).unwrap();
+    let out = frame.render(&on(&frame, &settings(VplMethod::Slc, true))).unwrap();
     let names: Vec<&str> = out.stages.iter().map(|s| s.name).collect();
     assert_eq!(
         names,
@@ -144,7 +151,6 @@ fn every_stage_is_timed() {
             "G-buffer",
             "RSM",
             "shadow map",
-            "G-buffer import",
             "VPL generation",
             "light update",
             "shading",
@@ -159,7 +165,7 @@ fn every_stage_is_timed() {
     let software = gpu.adapter.device_type == wgpu::DeviceType::Cpu;
     assert_eq!(out.timing == Timing::GpuTimestamps, gpu.timestamps && !software);
     assert!(out.stats.total_ms > 0.0 && out.stats.kept_per_pixel > 0.0);
-    let none = frame.render(&settings(VplMethod::None, false)).unwrap();
+    let none = frame.render(&on(&frame, &settings(VplMethod::None, false))).unwrap();
     assert!(!none.stages.iter().any(|s| s.name == "light update" || s.name == "denoise"));
 }
 
@@ -174,7 +180,7 @@ fn moved_light_renders_as_a_new_frame() {
     let desc = FrameDesc { width: 64, height: 48, rsm_size: 16, shadow_size: 128, min_distance: None };
     let mut scene = Scene::cornell_box();
     let mut frame = GpuVplFrame::new(gpu, &scene, &desc).unwrap();
-    let s = settings(VplMethod::Slc, true);
+    let s = on(&frame, &settings(VplMethod::Slc, true));
     let before = frame.render(&s).unwrap().image;
     let PrimaryLight::Spot { position, direction, intensity, inner, outer } = scene.primary else { unreachable!("a spot") };
     scene.primary = PrimaryLight::Spot {
@@ -200,7 +206,7 @@ fn moved_light_renders_as_a_new_frame() {
     let software = gpu.adapter.device_type == wgpu::DeviceType::Cpu;
     assert_eq!(timed, gpu.timestamps && !software);
     match frame.stage_times().unwrap() {
-        Some(times) => assert!(times.len() == 12 && times.iter().all(|t| t.ms.is_finite() && t.ms >= 0.0), "{times:?}"),
+        Some(times) => assert!(times.len() == 11 && times.iter().all(|t| t.ms.is_finite() && t.ms >= 0.0), "{times:?}"),
         None => assert!(!timed),
     }
 }
@@ -218,14 +224,20 @@ fn bad_frames_are_errors() {
         assert!(GpuVplFrame::new(gpu, &scene, &desc).is_err(), "{desc:?}");
     }
     let mut frame = GpuVplFrame::new(gpu, &scene, &FrameDesc { width: 16, height: 16, rsm_size: 16, shadow_size: 64, min_distance: None }).unwrap();
-    assert!(frame.render(&settings(VplMethod::Reference, false)).is_err());
-    assert!(frame.render(&VplSettings { error_bound: -1.0, ..VplSettings::default() }).is_err());
+    // The CPU frame's settings the frame has no counterpart for are
+    // refused when converted; the pass's own are checked at the record.
+    assert!(indirect_settings(&settings(VplMethod::Reference, false), frame.min_distance()).is_err());
+    assert!(indirect_settings(&VplSettings { fixed_xi: Some(0.5), ..VplSettings::default() }, frame.min_distance()).is_err());
+    assert!(indirect_settings(&VplSettings { error_bound: -1.0, ..VplSettings::default() }, frame.min_distance()).is_err());
+    assert!(frame.render(&IndirectSettings { min_distance: f32::NAN, ..IndirectSettings::default() }).is_err());
+    assert!(frame.render(&IndirectSettings { culling: slc_wgpu::Culling::Clamped { range: -1.0 }, ..IndirectSettings::default() }).is_err());
+    assert!(frame.render(&IndirectSettings::default()).is_ok());
 }
 
 /// The timestamp path, forced on whatever adapter runs the tests (lavapipe
 /// has timestamps, though their values do not bracket its threads' work):
-/// with the near field on, the frame has all twelve stages, the timer holds
-/// a pair for each (it once held eleven, and the composition got none while
+/// with the near field on, the frame has all eleven stages, the timer holds
+/// a pair for each (it once held one fewer, and the composition got none while
 /// names and times were zipped out of step), and every stage gets its own
 /// duration, in order, from both `render` and `record_timed`.
 fn timestamp_path_times_every_stage() {
@@ -237,7 +249,7 @@ fn timestamp_path_times_every_stage() {
         GpuVplFrame::new(gpu, &Scene::cornell_box(), &FrameDesc { width: 32, height: 32, rsm_size: 16, shadow_size: 64, min_distance: None })
             .unwrap();
     assert!(frame.use_timestamps(true));
-    let s = settings(VplMethod::Slc, true);
+    let s = on(&frame, &settings(VplMethod::Slc, true));
     let out = frame.render(&s).unwrap();
     assert_eq!(out.timing, Timing::GpuTimestamps);
     let all: Vec<Stage> = Stage::ALL.to_vec();
@@ -249,7 +261,7 @@ fn timestamp_path_times_every_stage() {
     let times = frame.stage_times().unwrap().expect("timed");
     assert_eq!(times.iter().map(|t| t.stage).collect::<Vec<_>>(), all);
     // Without denoise and near field: fewer stages, still in step.
-    let s = VplSettings { denoise: false, near_radius: Some(0.0), ..s };
+    let s = IndirectSettings { denoise: false, near_radius: Some(0.0), ..s };
     let out = frame.render(&s).unwrap();
     let want: Vec<Stage> = all.iter().copied().filter(|st| !matches!(st, Stage::Denoise | Stage::NearField)).collect();
     assert_eq!(out.stages.iter().map(|t| t.stage).collect::<Vec<_>>(), want);

@@ -110,7 +110,7 @@ fn run(method: PtMethod, eps: f32, intensity: f32, glossy: bool, n: u32) -> Opti
     let g = gpu()?;
     let (s, lights) = scene(intensity, glossy);
     let scene = PtScene::new(&s, &lights).unwrap();
-    let gpt = GpuPt::new(g, &scene, W, H).unwrap();
+    let mut gpt = GpuPt::new(g, &scene, W, H).unwrap();
     let mut pts = CpuPathTracer::new(&scene);
     let set = PtSettings { method, error_bound: eps, seed: 3, ..PtSettings::default() };
     let gp = passes(|acc| _ = gpt.render(acc, &set, 1).unwrap(), n);
@@ -166,7 +166,7 @@ fn gpu_path_tracer_rejects_bad_settings() {
     let Some(g) = gpu() else { return };
     let (s, lights) = scene(1.0, false);
     let pts = PtScene::new(&s, &lights).unwrap();
-    let gpt = GpuPt::new(g, &pts, W, H).unwrap();
+    let mut gpt = GpuPt::new(g, &pts, W, H).unwrap();
     let ok = PtSettings { method: PtMethod::SlcReservoir, ..PtSettings::default() };
     assert!(gpt.render(&mut PtRender::new(W + 1, H), &ok, 1).is_err());
     assert!(gpt.render(&mut PtRender::new(W, H), &PtSettings { max_depth: 0, ..ok }, 1).is_err());

@@ -22,18 +22,19 @@ use slc_scene::scene::Scene;
 use slc_scene::vpl::{NEAR_FACTOR, Shaded, VplMethod, VplSettings};
 use slc_tests::gpu;
 use slc_wgpu::vpl::GpuVpl;
-use std::sync::OnceLock;
+use std::sync::{Mutex, MutexGuard, OnceLock};
 
 fn cpu_ctx() -> &'static VplContext {
     static C: OnceLock<VplContext> = OnceLock::new();
     C.get_or_init(|| VplContext::new(&Scene::cornell_box(), 64, 48, 64, None).unwrap())
 }
 
-/// The GPU scene for [`cpu_ctx`], uploaded once for all tests.
-fn gpu_vpl() -> Option<&'static GpuVpl> {
-    static G: OnceLock<GpuVpl> = OnceLock::new();
+/// The GPU scene for [`cpu_ctx`], uploaded once for all tests (one test
+/// shades at a time: a shade takes `&mut`).
+fn gpu_vpl() -> Option<MutexGuard<'static, GpuVpl>> {
+    static G: OnceLock<Mutex<GpuVpl>> = OnceLock::new();
     let g = gpu()?;
-    Some(G.get_or_init(|| GpuVpl::new(g, cpu_ctx().inputs()).unwrap()))
+    Some(G.get_or_init(|| Mutex::new(GpuVpl::new(g, cpu_ctx().inputs()).unwrap())).lock().unwrap_or_else(|e| e.into_inner()))
 }
 
 fn settings(method: VplMethod) -> VplSettings {
@@ -68,7 +69,7 @@ fn compare(cpu: &Shaded, gpu: &Shaded, ctx: &VplContext) -> Compared {
 }
 
 fn shading_matches_cpu_for_every_method() {
-    let Some(gv) = gpu_vpl() else { return };
+    let Some(mut gv) = gpu_vpl() else { return };
     let ctx = cpu_ctx();
     for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None, VplMethod::Reference] {
         let s = settings(method);
@@ -94,7 +95,7 @@ proptest! {
     /// the scene down to a few centimetres) and clamp ranges: the same
     /// decisions and sums on both backends.
     fn random_settings_agree(seed in any::<u32>(), frame in 0u32..1000, log_eps in -4.0f32..-1.0, range in 0.01f32..0.5, clamp in any::<bool>()) {
-        let Some(gv) = gpu_vpl() else { return Ok(()) };
+        let Some(mut gv) = gpu_vpl() else { return Ok(()) };
         let ctx = cpu_ctx();
         let s = VplSettings {
             method: if clamp { VplMethod::Clamp } else { VplMethod::Slc },
@@ -110,7 +111,7 @@ proptest! {
 /// End to end (denoise on, each backend with its own implementation of the
 /// one shared filter weight): the same image from both backends.
 fn images_match_end_to_end() {
-    let Some(gv) = gpu_vpl() else { return };
+    let Some(mut gv) = gpu_vpl() else { return };
     let ctx = cpu_ctx();
     for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
         let s = VplSettings { denoise: true, ..settings(method) };
@@ -128,7 +129,7 @@ fn images_match_end_to_end() {
 /// same stratified quadrature over ξ as the CPU test (bound: 2 strata of the
 /// all-kept frame).
 fn gpu_expectation_equals_unculled() {
-    let Some(gv) = gpu_vpl() else { return };
+    let Some(mut gv) = gpu_vpl() else { return };
     let none = gv.shade(&settings(VplMethod::None)).unwrap();
     let fixed = |x: f32| VplSettings { fixed_xi: Some(x), ..settings(VplMethod::Slc) };
     let all = gv.shade(&fixed(slc_core::range::Xi::MAX.get())).unwrap();
@@ -156,7 +157,7 @@ fn gpu_expectation_equals_unculled() {
 fn chunked_tile_lists_match_cpu() {
     let Some(g) = gpu() else { return };
     let ctx = VplContext::new(&Scene::cornell_box(), 48, 32, 64, None).unwrap();
-    let gv = GpuVpl::with_tile_list(g, ctx.inputs(), 16).unwrap();
+    let mut gv = GpuVpl::with_tile_list(g, ctx.inputs(), 16).unwrap();
     for method in [VplMethod::Slc, VplMethod::Clamp] {
         let s = settings(method);
         let c = compare(&ctx.shade(&s).unwrap(), &gv.shade(&s).unwrap(), &ctx);
@@ -168,7 +169,7 @@ fn chunked_tile_lists_match_cpu() {
     // Far field only: 16x16 pixels over 262,144 VPLs would list ~77,000
     // near VPLs per tile, past lavapipe's loop limit (near_field_matches_cpu).
     let ctx = VplContext::new(&Scene::cornell_box(), 16, 16, 512, None).unwrap();
-    let gv = GpuVpl::new(g, ctx.inputs()).unwrap();
+    let mut gv = GpuVpl::new(g, ctx.inputs()).unwrap();
     let s = VplSettings { near_radius: Some(0.0), ..settings(VplMethod::Slc) };
     let c = compare(&ctx.shade(&s).unwrap(), &gv.shade(&s).unwrap(), &ctx);
     eprintln!("262,144 VPLs: {} pixels, kept differs at {}, worst relative {:.2e}", c.pixels, c.kept_differs, c.worst_rel);
@@ -180,7 +181,7 @@ fn chunked_tile_lists_match_cpu() {
 /// (including the largest f32 below 1, where r² = 2²⁴ r_t²). The GPU agrees
 /// with the CPU and no pixel is NaN or infinite.
 fn hard_cases_agree() {
-    let Some(gv) = gpu_vpl() else { return };
+    let Some(mut gv) = gpu_vpl() else { return };
     let ctx = cpu_ctx();
     let xi_max = slc_core::range::Xi::MAX.get();
     for (eps, xi) in [(1e-30f32, None), (1e30, None), (1e30, Some(xi_max)), (0.004, Some(0.0)), (0.004, Some(xi_max)), (f32::MAX, Some(xi_max))] {
@@ -209,7 +210,7 @@ fn near_field_matches_cpu() {
     let Some(g) = gpu() else { return };
     for (w, h, rsm) in [(64u32, 48u32, 64u32), (32, 32, 512), (128, 96, 256)] {
         let ctx = VplContext::new(&Scene::cornell_box(), w, h, rsm, None).unwrap();
-        let gv = GpuVpl::new(g, ctx.inputs()).unwrap();
+        let mut gv = GpuVpl::new(g, ctx.inputs()).unwrap();
         let near_radius = Some(NEAR_FACTOR * ctx.min_d2().sqrt());
         for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
             let s = VplSettings { near_radius, ..settings(method) };

@@ -526,7 +526,7 @@ impl IndirectShader for VplContext {
         format!("cpu ({} threads)", rayon::current_num_threads())
     }
 
-    fn shade(&self, settings: &VplSettings) -> Result<Shaded, RenderError> {
+    fn shade(&mut self, settings: &VplSettings) -> Result<Shaded, RenderError> {
         VplContext::shade(self, settings)
     }
 }

@@ -3,6 +3,7 @@
 // texture ({{ out_format }}); zero where the G-buffer has no surface.
 
 {{ bindings }}
+{% include "gbuffer_read.wgsl" %}
 
 @compute @workgroup_size({{ tile }}, {{ tile }})
 fn main(@builtin(global_invocation_id) gid: vec3u) {
@@ -10,6 +11,6 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         return;
     }
     let i = gid.y * view.width + gid.x;
-    let e = select(vec4f(0.0), irradiance[i], gb_position[i].w > 0.0);
+    let e = select(vec4f(0.0), irradiance[i], gbuffer_at(i).position.w > 0.0);
     textureStore(out_tex, vec2i(i32(gid.x), i32(gid.y)), e);
 }

@@ -5,13 +5,10 @@
 // where a VPL subset is missing from the window; the CPU's filter, per pixel.
 
 {{ bindings }}
+{% include "gbuffer_read.wgsl" %}
 
 const PERIOD: u32 = {{ period }}u;
 
-/// Depth of pixel `i` (`gb_normal.w`), DEPTH_NONE where there is no surface.
-fn depth_of(i: u32) -> f32 {
-    return select(DEPTH_NONE, gb_normal[i].w, gb_position[i].w > 0.0);
-}
 
 /// Weighted irradiance sum, total weight and the number of neighbours
 /// heavier than COVER_WEIGHT over the `size × size` window around pixel
@@ -36,7 +33,9 @@ fn window_sum(x: u32, y: u32, size: u32, n: vec3f, z: f32, inv: f32) -> Window {
     for (var yy = y0; yy < y1; yy++) {
         for (var xx = x0; xx < x1; xx++) {
             let j = yy * w + xx;
-            let wgt = bilateral_weight(n, gb_normal[j].xyz, z, depth_of(j), inv);
+            // The neighbour's surface, read in place (DEPTH_NONE where none is).
+            let g = gbuffer_at(j);
+            let wgt = bilateral_weight(n, g.normal.xyz, z, g.normal.w, inv);
             win.sum += irradiance[j].xyz * wgt;
             win.weight += wgt;
             win.covered += select(0u, 1u, wgt > COVER_WEIGHT);
@@ -54,12 +53,13 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     let i = gid.y * w + gid.x;
     let e = irradiance[i];
-    if gb_position[i].w <= 0.0 {
+    let g = gbuffer_at(i);
+    if g.position.w <= 0.0 {
         filtered[i] = vec4f(0.0, 0.0, 0.0, e.w);
         return;
     }
-    let n = gb_normal[i].xyz;
-    let z = depth_of(i);
+    let n = g.normal.xyz;
+    let z = g.normal.w;
     let inv = inv_sigma_z(z);
     var s = window_sum(gid.x, gid.y, PERIOD, n, z, inv);
     // A VPL subset is missing (an edge, a corner, the border): the doubled

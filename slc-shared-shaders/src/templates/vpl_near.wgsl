@@ -29,16 +29,8 @@ const BOX_THREADS: u32 = THREADS;
 // so the list fits WebGPU's 16 KiB of workgroup memory).
 const NEAR_CHUNK: u32 = {% if tile * tile < 32 %}THREADS{% elif tile > 8 %}16u{% else %}32u{% endif %};
 
-@group(0) @binding(0) var<uniform> params: VplParams;
-@group(0) @binding(1) var<storage, read> gb_position: array<vec4f>;
-@group(0) @binding(2) var<storage, read> gb_normal: array<vec4f>;
-@group(0) @binding(3) var<storage, read> lights: array<GpuLight>;
-@group(0) @binding(4) var<storage, read> near_slots: array<u32>;
-@group(0) @binding(5) var<storage, read> near_boxes: array<GpuNearBox>;
-@group(0) @binding(6) var<storage, read> rt2: array<f32>;
-@group(0) @binding(7) var<storage, read> r2: array<f32>;
-@group(0) @binding(8) var<storage, read_write> irradiance: array<vec4f>;
-@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+{{ bindings }}
+{% include "gbuffer_read.wgsl" %}
 
 /// The r^2 the near field keeps light `slot` by: its own range at the VPL's
 /// flux (slc), or the interleaved light's fixed range (clamp, none).
@@ -66,8 +58,9 @@ fn main(
     var pos = vec4f(0.0);
     var nrm = vec3f(0.0);
     if inside {
-        pos = gb_position[pix];
-        nrm = gb_normal[pix].xyz;
+        let g = gbuffer_at(pix);
+        pos = g.position;
+        nrm = g.normal.xyz;
     }
     let valid = inside && pos.w > 0.0;
     let tile_box = workgroup_box(li, pos.xyz, valid);

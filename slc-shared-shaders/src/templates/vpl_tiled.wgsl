@@ -19,6 +19,7 @@ const BOX_THREADS: u32 = THREADS;
 const MAX_TILE_LIGHTS: u32 = {{ max_tile_lights }}u;
 
 {{ bindings }}
+{% include "gbuffer_read.wgsl" %}
 
 var<workgroup> tile_count: atomic<u32>;
 var<workgroup> tile_lights: array<u32, MAX_TILE_LIGHTS>;
@@ -37,8 +38,9 @@ fn main(
     var pos = vec4f(0.0);
     var nrm = vec3f(0.0);
     if inside {
-        pos = gb_position[pix];
-        nrm = gb_normal[pix].xyz;
+        let g = gbuffer_at(pix);
+        pos = g.position;
+        nrm = g.normal.xyz;
     }
     let valid = inside && pos.w > 0.0;
     let tile_box = workgroup_box(li, pos.xyz, valid);
@@ -98,7 +100,9 @@ fn main(
         workgroupBarrier();
     }
 {% endif %}
-    if valid {
+    // Every pixel is written (zero where no surface is): nothing else
+    // clears the irradiance of the last record.
+    if inside {
         irradiance[pix] = vec4f(e, f32(kept));
     }
 }

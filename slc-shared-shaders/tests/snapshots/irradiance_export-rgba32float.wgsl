@@ -13,6 +13,11 @@ struct ViewParams {
     f90_d: f32,
 }
 
+struct GbTexel {
+    position: vec4<f32>,
+    normal: vec4<f32>,
+}
+
 const LIGHT_POINT: u32 = 0u;
 const LIGHT_SPOT: u32 = 1u;
 const LIGHT_IES: u32 = 2u;
@@ -47,11 +52,41 @@ const ROULETTE_DEPTH: u32 = 2u;
 @group(0) @binding(0) 
 var<uniform> view: ViewParams;
 @group(0) @binding(1) 
-var<storage> gb_position: array<vec4<f32>>;
+var position_tex: texture_2d<f32>;
 @group(0) @binding(2) 
-var<storage> irradiance: array<vec4<f32>>;
+var normal_tex: texture_2d<f32>;
 @group(0) @binding(3) 
+var<storage> irradiance: array<vec4<f32>>;
+@group(0) @binding(4) 
 var out_tex: texture_storage_2d<rgba32float,write>;
+
+fn surface_at(texel: vec2<i32>) -> vec4<f32> {
+    let p = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p.xyz, 1f), (p.w > 0f));
+}
+
+fn gbuffer_at(i: u32) -> GbTexel {
+    var local_1: bool;
+
+    let _e3 = view.width;
+    let _e8 = view.width;
+    let texel_1 = vec2<i32>(i32((i % _e3)), i32((i / _e8)));
+    let _e12 = surface_at(texel_1);
+    let _e15 = textureLoad(normal_tex, texel_1, 0i);
+    let n = _e15.xyz;
+    let len2_ = dot(n, n);
+    if (_e12.w > 0f) {
+        local_1 = (len2_ > 0f);
+    } else {
+        local_1 = false;
+    }
+    let valid = local_1;
+    let _e30 = view.eye;
+    let v = (_e12.xyz - _e30);
+    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n / vec3(sqrt(len2_))), sqrt(dot(v, v))), valid);
+    return GbTexel(position, normal);
+}
 
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
@@ -69,10 +104,10 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     let _e19 = view.width;
-    let i = ((gid.y * _e19) + gid.x);
-    let _e27 = irradiance[i];
-    let _e31 = gb_position[i].w;
-    let e = select(vec4(0f), _e27, (_e31 > 0f));
+    let i_1 = ((gid.y * _e19) + gid.x);
+    let _e27 = irradiance[i_1];
+    let _e28 = gbuffer_at(i_1);
+    let e = select(vec4(0f), _e27, (_e28.position.w > 0f));
     textureStore(out_tex, vec2<i32>(i32(gid.x), i32(gid.y)), e);
     return;
 }

@@ -27,9 +27,29 @@ struct GpuNearBox {
     pad1_: f32,
 }
 
+struct ViewParams {
+    c0_: vec4<f32>,
+    c1_: vec4<f32>,
+    c2_: vec4<f32>,
+    c3_: vec4<f32>,
+    eye: vec3<f32>,
+    width: u32,
+    height: u32,
+    background: f32,
+    seed: u32,
+    frame: u32,
+    f0_d: vec3<f32>,
+    f90_d: f32,
+}
+
 struct WorkgroupBox {
     lo: vec3<f32>,
     hi: vec3<f32>,
+}
+
+struct GbTexel {
+    position: vec4<f32>,
+    normal: vec4<f32>,
 }
 
 const LIGHT_POINT: u32 = 0u;
@@ -73,18 +93,20 @@ var<workgroup> wg_hi: array<vec3<f32>, 64>;
 @group(0) @binding(0) 
 var<uniform> params: VplParams;
 @group(0) @binding(1) 
-var<storage> gb_position: array<vec4<f32>>;
+var<uniform> view: ViewParams;
 @group(0) @binding(2) 
-var<storage> gb_normal: array<vec4<f32>>;
+var position_tex: texture_2d<f32>;
 @group(0) @binding(3) 
-var<storage> lights: array<GpuLight>;
+var normal_tex: texture_2d<f32>;
 @group(0) @binding(4) 
-var<storage> near_slots: array<u32>;
+var<storage> lights: array<GpuLight>;
 @group(0) @binding(5) 
+var<storage> near_slots: array<u32>;
+@group(0) @binding(6) 
 var<storage> near_boxes: array<GpuNearBox>;
-@group(0) @binding(7) 
-var<storage> r2_2: array<f32>;
 @group(0) @binding(8) 
+var<storage> r2_2: array<f32>;
+@group(0) @binding(9) 
 var<storage, read_write> irradiance: array<vec4<f32>>;
 var<workgroup> light_count: atomic<u32>;
 var<workgroup> light_list: array<u32, 2048>;
@@ -171,6 +193,34 @@ fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
     return WorkgroupBox(_e47, _e50);
 }
 
+fn surface_at(texel: vec2<i32>) -> vec4<f32> {
+    let p_1 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_1.xyz, 1f), (p_1.w > 0f));
+}
+
+fn gbuffer_at(i: u32) -> GbTexel {
+    var local_5: bool;
+
+    let _e3 = view.width;
+    let _e8 = view.width;
+    let texel_1 = vec2<i32>(i32((i % _e3)), i32((i / _e8)));
+    let _e12 = surface_at(texel_1);
+    let _e15 = textureLoad(normal_tex, texel_1, 0i);
+    let n = _e15.xyz;
+    let len2_ = dot(n, n);
+    if (_e12.w > 0f) {
+        local_5 = (len2_ > 0f);
+    } else {
+        local_5 = false;
+    }
+    let valid = local_5;
+    let _e30 = view.eye;
+    let v_2 = (_e12.xyz - _e30);
+    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid);
+    return GbTexel(position, normal);
+}
+
 fn near_r2_of(slot: u32) -> f32 {
     let _e3 = r2_2[slot];
     return _e3;
@@ -204,30 +254,29 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     let _e27 = params.width;
     let pix = ((py * _e27) + px);
     if inside {
-        let _e38 = gb_position[pix];
-        pos = _e38;
-        let _e41 = gb_normal[pix];
-        nrm = _e41.xyz;
+        let _e36 = gbuffer_at(pix);
+        pos = _e36.position;
+        nrm = _e36.normal.xyz;
     }
     if inside {
-        let _e46 = pos.w;
-        local_1 = (_e46 > 0f);
+        let _e43 = pos.w;
+        local_1 = (_e43 > 0f);
     } else {
         local_1 = false;
     }
-    let valid = local_1;
-    let _e51 = pos;
-    let _e53 = workgroup_box(li, _e51.xyz, valid);
-    let lo = _e53.lo;
-    let hi = _e53.hi;
-    let _e58 = params.near_r2_;
-    let _e59 = cull_radius(_e58);
-    let _e61 = interleave_flux_scale(P);
-    let unscale = (1f / _e61);
+    let valid_1 = local_1;
+    let _e48 = pos;
+    let _e50 = workgroup_box(li, _e48.xyz, valid_1);
+    let lo = _e50.lo;
+    let hi = _e50.hi;
+    let _e55 = params.near_r2_;
+    let _e56 = cull_radius(_e55);
+    let _e58 = interleave_flux_scale(P);
+    let unscale = (1f / _e58);
     loop {
-        let _e71 = first;
-        let _e74 = params.near_blocks;
-        if (_e71 < _e74) {
+        let _e68 = first;
+        let _e71 = params.near_blocks;
+        if (_e68 < _e71) {
         } else {
             break;
         }
@@ -236,104 +285,104 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                 atomicStore((&light_count), 0u);
             }
             workgroupBarrier();
-            let _e80 = first;
-            let b = (_e80 + li);
+            let _e77 = first;
+            let b = (_e77 + li);
             if (li < NEAR_CHUNK) {
-                let _e88 = params.near_blocks;
-                local_2 = (b < _e88);
+                let _e85 = params.near_blocks;
+                local_2 = (b < _e85);
             } else {
                 local_2 = false;
             }
-            let _e91 = local_2;
-            if _e91 {
+            let _e88 = local_2;
+            if _e88 {
                 let nb = near_boxes[b];
-                if all(((nb.lo - vec3(_e59)) <= hi)) {
-                    local_3 = all((lo <= (nb.hi + vec3(_e59))));
+                if all(((nb.lo - vec3(_e56)) <= hi)) {
+                    local_3 = all((lo <= (nb.hi + vec3(_e56))));
                 } else {
                     local_3 = false;
                 }
-                let _e108 = local_3;
-                if _e108 {
+                let _e105 = local_3;
+                if _e105 {
                     m = 0u;
                     loop {
-                        let _e111 = m;
-                        if (_e111 < NEAR_BLOCK) {
+                        let _e108 = m;
+                        if (_e108 < NEAR_BLOCK) {
                         } else {
                             break;
                         }
                         {
-                            let _e117 = m;
-                            let slot_1 = near_slots[((b * NEAR_BLOCK) + _e117)];
+                            let _e114 = m;
+                            let slot_1 = near_slots[((b * NEAR_BLOCK) + _e114)];
                             let l = lights[slot_1];
-                            let _e124 = near_r2_of(slot_1);
-                            let _e127 = params.near_r2_;
-                            let _e128 = vpl_near_cull_range2_(_e124, _e127);
-                            let _e129 = cull_radius(_e128);
+                            let _e121 = near_r2_of(slot_1);
+                            let _e124 = params.near_r2_;
+                            let _e125 = vpl_near_cull_range2_(_e121, _e124);
+                            let _e126 = cull_radius(_e125);
                             if any((l.intensity != vec3(0f))) {
-                                let _e138 = sphere_overlaps_aabb(l.p0_, _e129, lo, hi);
-                                local_4 = _e138;
+                                let _e135 = sphere_overlaps_aabb(l.p0_, _e126, lo, hi);
+                                local_4 = _e135;
                             } else {
                                 local_4 = false;
                             }
-                            let _e140 = local_4;
-                            if _e140 {
-                                let _e144 = atomicAdd((&light_count), 1u);
-                                light_list[_e144] = slot_1;
+                            let _e137 = local_4;
+                            if _e137 {
+                                let _e141 = atomicAdd((&light_count), 1u);
+                                light_list[_e141] = slot_1;
                             }
                         }
                         continuing {
-                            let _e147 = m;
-                            m = (_e147 + 1u);
+                            let _e144 = m;
+                            m = (_e144 + 1u);
                         }
                     }
                 }
             }
-            let _e150 = workgroupUniformLoad((&light_count));
-            if valid {
+            let _e147 = workgroupUniformLoad((&light_count));
+            if valid_1 {
                 m_1 = 0u;
                 loop {
-                    let _e153 = m_1;
-                    if (_e153 < _e150) {
+                    let _e150 = m_1;
+                    if (_e150 < _e147) {
                     } else {
                         break;
                     }
                     {
-                        let _e156 = m_1;
-                        let slot_2 = light_list[_e156];
+                        let _e153 = m_1;
+                        let slot_2 = light_list[_e153];
                         let l_1 = lights[slot_2];
-                        let _e162 = pos;
-                        let v_2 = (_e162.xyz - l_1.p0_);
-                        let _e168 = r2_2[slot_2];
-                        let _e172 = params.near_r2_;
-                        let _e173 = vpl_near_fixed_share(_e168, dot(v_2, v_2), _e172);
-                        if (_e173 > 0f) {
-                            let _e176 = e;
-                            let _e179 = nrm;
-                            let _e182 = params.min_d2_;
-                            let _e183 = vpl_transfer(l_1.p1_, _e179, v_2, _e182);
-                            e = (_e176 + (l_1.intensity * ((_e183 * _e173) * unscale)));
-                            let _e188 = kept;
-                            kept = (_e188 + 1u);
+                        let _e159 = pos;
+                        let v_3 = (_e159.xyz - l_1.p0_);
+                        let _e165 = r2_2[slot_2];
+                        let _e169 = params.near_r2_;
+                        let _e170 = vpl_near_fixed_share(_e165, dot(v_3, v_3), _e169);
+                        if (_e170 > 0f) {
+                            let _e173 = e;
+                            let _e176 = nrm;
+                            let _e179 = params.min_d2_;
+                            let _e180 = vpl_transfer(l_1.p1_, _e176, v_3, _e179);
+                            e = (_e173 + (l_1.intensity * ((_e180 * _e170) * unscale)));
+                            let _e185 = kept;
+                            kept = (_e185 + 1u);
                         }
                     }
                     continuing {
-                        let _e192 = m_1;
-                        m_1 = (_e192 + 1u);
+                        let _e189 = m_1;
+                        m_1 = (_e189 + 1u);
                     }
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e194 = first;
-            first = (_e194 + NEAR_CHUNK);
+            let _e191 = first;
+            first = (_e191 + NEAR_CHUNK);
         }
     }
-    if valid {
+    if valid_1 {
         let old = irradiance[pix];
-        let _e203 = e;
-        let _e206 = kept;
-        irradiance[pix] = vec4<f32>((old.xyz + _e203), (old.w + f32(_e206)));
+        let _e200 = e;
+        let _e203 = kept;
+        irradiance[pix] = vec4<f32>((old.xyz + _e200), (old.w + f32(_e203)));
         return;
     } else {
         return;

@@ -20,9 +20,29 @@ struct VplParams {
     pad1_: u32,
 }
 
+struct ViewParams {
+    c0_: vec4<f32>,
+    c1_: vec4<f32>,
+    c2_: vec4<f32>,
+    c3_: vec4<f32>,
+    eye: vec3<f32>,
+    width: u32,
+    height: u32,
+    background: f32,
+    seed: u32,
+    frame: u32,
+    f0_d: vec3<f32>,
+    f90_d: f32,
+}
+
 struct WorkgroupBox {
     lo: vec3<f32>,
     hi: vec3<f32>,
+}
+
+struct GbTexel {
+    position: vec4<f32>,
+    normal: vec4<f32>,
 }
 
 const LIGHT_POINT: u32 = 0u;
@@ -66,16 +86,18 @@ var<workgroup> wg_hi: array<vec3<f32>, 64>;
 @group(0) @binding(0) 
 var<uniform> params: VplParams;
 @group(0) @binding(1) 
-var<storage> gb_position: array<vec4<f32>>;
+var<uniform> view: ViewParams;
 @group(0) @binding(2) 
-var<storage> gb_normal: array<vec4<f32>>;
+var position_tex: texture_2d<f32>;
 @group(0) @binding(3) 
-var<storage> lights: array<GpuLight>;
+var normal_tex: texture_2d<f32>;
 @group(0) @binding(4) 
-var<storage> rt2_2: array<f32>;
+var<storage> lights: array<GpuLight>;
 @group(0) @binding(5) 
-var<storage> r2_3: array<f32>;
+var<storage> rt2_2: array<f32>;
 @group(0) @binding(6) 
+var<storage> r2_3: array<f32>;
+@group(0) @binding(7) 
 var<storage, read_write> irradiance: array<vec4<f32>>;
 var<workgroup> tile_count: atomic<u32>;
 var<workgroup> tile_lights: array<u32, 1024>;
@@ -162,6 +184,34 @@ fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
     return WorkgroupBox(_e47, _e50);
 }
 
+fn surface_at(texel: vec2<i32>) -> vec4<f32> {
+    let p_1 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_1.xyz, 1f), (p_1.w > 0f));
+}
+
+fn gbuffer_at(i: u32) -> GbTexel {
+    var local_2: bool;
+
+    let _e3 = view.width;
+    let _e8 = view.width;
+    let texel_1 = vec2<i32>(i32((i % _e3)), i32((i / _e8)));
+    let _e12 = surface_at(texel_1);
+    let _e15 = textureLoad(normal_tex, texel_1, 0i);
+    let n = _e15.xyz;
+    let len2_ = dot(n, n);
+    if (_e12.w > 0f) {
+        local_2 = (len2_ > 0f);
+    } else {
+        local_2 = false;
+    }
+    let valid = local_2;
+    let _e30 = view.eye;
+    let v_2 = (_e12.xyz - _e30);
+    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid);
+    return GbTexel(position, normal);
+}
+
 @compute @workgroup_size(8, 8, 1) 
 fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var local: bool;
@@ -188,115 +238,114 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     let _e38 = params.width;
     let pix = ((py * _e38) + px);
     if inside {
-        let _e49 = gb_position[pix];
-        pos = _e49;
-        let _e52 = gb_normal[pix];
-        nrm = _e52.xyz;
+        let _e47 = gbuffer_at(pix);
+        pos = _e47.position;
+        nrm = _e47.normal.xyz;
     }
     if inside {
-        let _e57 = pos.w;
-        local_1 = (_e57 > 0f);
+        let _e54 = pos.w;
+        local_1 = (_e54 > 0f);
     } else {
         local_1 = false;
     }
-    let valid = local_1;
-    let _e62 = pos;
-    let _e64 = workgroup_box(li, _e62.xyz, valid);
-    let lo = _e64.lo;
-    let hi = _e64.hi;
-    let _e69 = params.lights_per_subset;
-    let base = (sub * _e69);
+    let valid_1 = local_1;
+    let _e59 = pos;
+    let _e61 = workgroup_box(li, _e59.xyz, valid_1);
+    let lo = _e61.lo;
+    let hi = _e61.hi;
+    let _e66 = params.lights_per_subset;
+    let base = (sub * _e66);
     loop {
-        let _e78 = first;
-        let _e81 = params.lights_per_subset;
-        if (_e78 < _e81) {
+        let _e75 = first;
+        let _e78 = params.lights_per_subset;
+        if (_e75 < _e78) {
         } else {
             break;
         }
         {
-            let _e83 = first;
-            let _e88 = params.lights_per_subset;
-            let end = min((_e83 + MAX_TILE_LIGHTS), _e88);
+            let _e80 = first;
+            let _e85 = params.lights_per_subset;
+            let end = min((_e80 + MAX_TILE_LIGHTS), _e85);
             if (li == 0u) {
                 atomicStore((&tile_count), 0u);
             }
             workgroupBarrier();
-            let _e94 = first;
-            j = (_e94 + li);
+            let _e91 = first;
+            j = (_e91 + li);
             loop {
-                let _e97 = j;
-                if (_e97 < end) {
+                let _e94 = j;
+                if (_e94 < end) {
                 } else {
                     break;
                 }
                 {
-                    let _e100 = j;
-                    let _e104 = lights[(base + _e100)].p0_;
-                    let _e106 = j;
-                    let _e109 = r2_3[(base + _e106)];
-                    let _e110 = cull_radius(_e109);
-                    let _e111 = sphere_overlaps_aabb(_e104, _e110, lo, hi);
-                    if _e111 {
-                        let _e114 = atomicAdd((&tile_count), 1u);
-                        if (_e114 < MAX_TILE_LIGHTS) {
-                            let _e119 = j;
-                            tile_lights[_e114] = _e119;
+                    let _e97 = j;
+                    let _e101 = lights[(base + _e97)].p0_;
+                    let _e103 = j;
+                    let _e106 = r2_3[(base + _e103)];
+                    let _e107 = cull_radius(_e106);
+                    let _e108 = sphere_overlaps_aabb(_e101, _e107, lo, hi);
+                    if _e108 {
+                        let _e111 = atomicAdd((&tile_count), 1u);
+                        if (_e111 < MAX_TILE_LIGHTS) {
+                            let _e116 = j;
+                            tile_lights[_e111] = _e116;
                         }
                     }
                 }
                 continuing {
-                    let _e120 = j;
-                    j = (_e120 + THREADS);
+                    let _e117 = j;
+                    j = (_e117 + THREADS);
                 }
             }
-            let _e124 = workgroupUniformLoad((&tile_count));
-            let count = min(_e124, MAX_TILE_LIGHTS);
-            if valid {
+            let _e121 = workgroupUniformLoad((&tile_count));
+            let count = min(_e121, MAX_TILE_LIGHTS);
+            if valid_1 {
                 k = 0u;
                 loop {
-                    let _e129 = k;
-                    if (_e129 < count) {
+                    let _e126 = k;
+                    if (_e126 < count) {
                     } else {
                         break;
                     }
                     {
-                        let _e132 = k;
-                        let _e134 = tile_lights[_e132];
-                        let j_1 = (base + _e134);
+                        let _e129 = k;
+                        let _e131 = tile_lights[_e129];
+                        let j_1 = (base + _e131);
                         let l = lights[j_1];
-                        let _e139 = pos;
-                        let v_2 = (_e139.xyz - l.p0_);
-                        let _e145 = rt2_2[j_1];
-                        let _e148 = r2_3[j_1];
-                        let _e152 = params.near_r2_;
-                        let _e153 = vpl_far_slc_share(_e145, _e148, dot(v_2, v_2), _e152);
-                        if (_e153 > 0f) {
-                            let _e156 = e;
-                            let _e159 = nrm;
-                            let _e162 = params.min_d2_;
-                            let _e163 = vpl_transfer(l.p1_, _e159, v_2, _e162);
-                            e = (_e156 + (l.intensity * (_e163 * _e153)));
-                            let _e167 = kept;
-                            kept = (_e167 + 1u);
+                        let _e136 = pos;
+                        let v_3 = (_e136.xyz - l.p0_);
+                        let _e142 = rt2_2[j_1];
+                        let _e145 = r2_3[j_1];
+                        let _e149 = params.near_r2_;
+                        let _e150 = vpl_far_slc_share(_e142, _e145, dot(v_3, v_3), _e149);
+                        if (_e150 > 0f) {
+                            let _e153 = e;
+                            let _e156 = nrm;
+                            let _e159 = params.min_d2_;
+                            let _e160 = vpl_transfer(l.p1_, _e156, v_3, _e159);
+                            e = (_e153 + (l.intensity * (_e160 * _e150)));
+                            let _e164 = kept;
+                            kept = (_e164 + 1u);
                         }
                     }
                     continuing {
-                        let _e171 = k;
-                        k = (_e171 + 1u);
+                        let _e168 = k;
+                        k = (_e168 + 1u);
                     }
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e173 = first;
-            first = (_e173 + MAX_TILE_LIGHTS);
+            let _e170 = first;
+            first = (_e170 + MAX_TILE_LIGHTS);
         }
     }
-    if valid {
-        let _e178 = e;
-        let _e179 = kept;
-        irradiance[pix] = vec4<f32>(_e178, f32(_e179));
+    if inside {
+        let _e175 = e;
+        let _e176 = kept;
+        irradiance[pix] = vec4<f32>(_e175, f32(_e176));
         return;
     } else {
         return;

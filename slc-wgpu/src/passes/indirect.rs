@@ -2,12 +2,12 @@
 //!
 //! SLC shading of VPLs (the paper's first application) on the engine's
 //! G-buffer, into a texture the engine owns. Recorded dispatches, in one
-//! compute pass: `gbuffer_import` (textures → the shading buffers),
-//! `vpl_pack` (RSM texels or VPL records → the light buffer, subset after
-//! subset, flux × P², `r_t²`), `light_update` (SLC: `r² = r_t²/(1−ξ)` with
-//! `ξ = xi_for(seed, frame, id)`, the CPU's numbers), `vpl_tiled` (tiled
-//! culling and shading per 8×8 interleaved sub-image, the far field of the
-//! near-field split), `vpl_denoise` (cross-bilateral, when
+//! compute pass: `vpl_pack` (RSM texels or VPL records → the light
+//! buffer, subset after subset, flux × P², `r_t²`), `light_update` (SLC:
+//! `r² = r_t²/(1−ξ)` with `ξ = xi_for(seed, frame, id)`, the CPU's
+//! numbers), `vpl_tiled` (tiled culling and shading per 8×8 interleaved
+//! sub-image, the far field of the near-field split; it also writes zero
+//! where no surface is), `vpl_denoise` (cross-bilateral, when
 //! `settings.denoise`), `vpl_near` (the near field: every VPL closer than
 //! `R_n` at every pixel, added after the denoise; when `R_n > 0`) and
 //! `irradiance_export`.
@@ -24,9 +24,18 @@
 //! wrong format, size or usage is a [`GpuError::Binding`] before anything is
 //! recorded; limits the device lacks are [`GpuError::Limit`]s at
 //! [`IndirectPass::new`]. The pass keeps its own intermediate buffers
-//! (the G-buffer as the interleaved kernels read it, light buffer, ranges,
-//! irradiance), reused by every record: records run in order, and each
-//! has its own uniform slot, so several may share a submission.
+//! (light buffer, ranges, irradiance), reused by every record: records run
+//! in order, and each has its own uniform slot, so several may share a
+//! submission.
+//!
+//! The G-buffer is read in place, as the [`DirectPass`](super::DirectPass)
+//! reads it: `vpl_tiled`, `vpl_denoise`, `vpl_near` and
+//! `irradiance_export` load the surface (unprojecting depth with the
+//! view's inverse view-projection) and the normal from the engine's
+//! textures wherever they need a pixel's surface (the denoise: every
+//! neighbour in its window), and take the distance from the eye as the
+//! denoise's depth. Depth input, standard and reversed Z, gives the
+//! positions' image (`tests/tests/indirect_pass.rs`).
 //!
 //! ```no_run
 //! # fn frame(device: wgpu::Device, queue: wgpu::Queue, gb_position: wgpu::TextureView,
@@ -105,12 +114,23 @@ pub struct IndirectPassDesc {
     pub output_format: wgpu::TextureFormat,
     /// Records of this pass one submission may hold (uniform slots).
     pub records_per_submission: u32,
+    /// Interleaved sampling (the paper's): each pixel of an 8×8 block
+    /// shades its own subset of 1/64 of the VPLs at 64 times their flux,
+    /// and the denoise filters over the block. `false`: every VPL at every
+    /// pixel (period 1), 64 times the work: with [`Culling::None`], no
+    /// denoise and no near field (`near_radius: Some(0.0)`), the exact sum,
+    /// a reference to measure the interleaved image against.
+    pub interleaved: bool,
+    /// Capacity of `vpl_tiled`'s per-tile light list, in lights (at least
+    /// 1; 4 bytes of workgroup memory each): a subset with more lights
+    /// streams through it in chunks. Default [`TILE_LIST`](crate::vpl::TILE_LIST).
+    pub tile_list: u32,
 }
 
 impl IndirectPassDesc {
     /// `width × height` with VPLs from `vpls`, a standard `Depth32Float`
     /// depth buffer, `Rgba16Float` output, [`RECORDS_PER_SUBMISSION`]
-    /// records per submission.
+    /// records per submission, interleaved, the default tile list.
     pub fn new(width: u32, height: u32, vpls: VplSourceDesc) -> IndirectPassDesc {
         IndirectPassDesc {
             width,
@@ -119,7 +139,14 @@ impl IndirectPassDesc {
             vpls,
             output_format: wgpu::TextureFormat::Rgba16Float,
             records_per_submission: RECORDS_PER_SUBMISSION,
+            interleaved: true,
+            tile_list: crate::vpl::TILE_LIST,
         }
+    }
+
+    /// The interleave period: [`PERIOD`], or 1 when not interleaved.
+    fn period(&self) -> u32 {
+        if self.interleaved { PERIOD } else { 1 }
     }
 }
 
@@ -214,8 +241,25 @@ impl Dispatch {
     /// A dispatch of `pipeline` with `group` at uniform offset `offset`
     /// over `groups` workgroups.
     pub(crate) fn new(stage: Stage, pipeline: &wgpu::ComputePipeline, group: wgpu::BindGroup, offset: Option<u32>, groups: [u32; 3]) -> Self {
-        Dispatch { stage, pipeline: pipeline.clone(), group, offsets: offset.into_iter().collect(), groups }
+        Dispatch::with_offsets(stage, pipeline, group, offset.into_iter().collect(), groups)
     }
+
+    /// [`Dispatch::new`] with a dynamic offset per dynamic uniform of the
+    /// group, in binding order.
+    fn with_offsets(stage: Stage, pipeline: &wgpu::ComputePipeline, group: wgpu::BindGroup, offsets: Vec<u32>, groups: [u32; 3]) -> Self {
+        Dispatch { stage, pipeline: pipeline.clone(), group, offsets, groups }
+    }
+}
+
+/// The bind groups of the kernels that read the engine's G-buffer in place
+/// (besides the export, whose group also binds the output), for one pair
+/// of surface and normal views.
+#[derive(Clone)]
+struct GbufferGroups {
+    tiled: wgpu::BindGroup,
+    denoise: wgpu::BindGroup,
+    /// `vpl_near` adding to the raw irradiance (0) or the denoised one (1).
+    near: [wgpu::BindGroup; 2],
 }
 
 /// A kernel's layout and pipeline.
@@ -238,13 +282,12 @@ pub struct IndirectPass {
     desc: IndirectPassDesc,
     count: u32,
     per_subset: u32,
-    gb_position: wgpu::Buffer,
-    gb_normal_buf: wgpu::Buffer,
-    import: Pipe,
     pack: Pipe,
     update: Pipe,
+    tiled_layout: KernelLayout,
     tiled: Vec<(CullMethod, wgpu::ComputePipeline)>,
     denoise: Pipe,
+    near_layout: KernelLayout,
     /// `vpl_near` per culling method (its ranges culled as the far field's).
     near: Vec<(CullMethod, wgpu::ComputePipeline)>,
     export: Pipe,
@@ -254,13 +297,11 @@ pub struct IndirectPass {
     vpl_params: UniformSlots,
     slots: RecordSlots,
     update_group: wgpu::BindGroup,
-    tiled_group: wgpu::BindGroup,
-    denoise_group: wgpu::BindGroup,
-    /// `vpl_near` adding to the raw irradiance (0) or the denoised one (1).
-    near_groups: [wgpu::BindGroup; 2],
-    import_cache: ViewCache<(wgpu::TextureView, wgpu::TextureView)>,
+    /// Keyed by the surface and normal views.
+    gbuffer_cache: ViewCache<(wgpu::TextureView, wgpu::TextureView), GbufferGroups>,
     pack_cache: ViewCache<PackKey>,
-    export_cache: ViewCache<(wgpu::TextureView, bool)>,
+    /// Keyed by the surface, normal and output views and the denoise.
+    export_cache: ViewCache<(wgpu::TextureView, wgpu::TextureView, wgpu::TextureView, bool)>,
     irradiance: wgpu::Buffer,
     filtered: wgpu::Buffer,
     pack_outputs: [wgpu::Buffer; 6],
@@ -281,7 +322,12 @@ impl IndirectPass {
     pub fn new(gpu: &GpuContext, desc: &IndirectPassDesc) -> Result<Self, GpuError> {
         let (w, h) = (desc.width, desc.height);
         check_size(gpu, "indirect pass", (w, h), TILE)?;
+        // Near blocks are 8×8 texels or 64 records, interleaved or not.
         let subsets = PERIOD * PERIOD;
+        let period = desc.period();
+        if desc.tile_list == 0 {
+            return Err(GpuError::Setting("indirect pass: the tile light list must hold at least 1 light".into()));
+        }
         let (count, vpl_source) = match desc.vpls {
             VplSourceDesc::Rsm { size } if size == 0 || size % PERIOD != 0 => {
                 return Err(GpuError::Setting(format!("indirect pass: RSM size {size} must be a positive multiple of {PERIOD}")));
@@ -296,11 +342,11 @@ impl IndirectPass {
         let surface = desc.surface.source()?;
         let lim = &gpu.limits;
         let max_binding = lim.max_storage_buffer_binding_size.min(lim.max_buffer_size);
-        gpu.require("max_storage_buffer_binding_size (G-buffer)", w as u64 * h as u64 * 16, max_binding)?;
+        gpu.require("max_storage_buffer_binding_size (irradiance)", w as u64 * h as u64 * 16, max_binding)?;
         gpu.require("max_storage_buffer_binding_size (lights)", count * std::mem::size_of::<GpuLight>() as u64, max_binding)?;
         gpu.require("max_compute_workgroups_per_dimension (VPLs)", count.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
-        let per_subset = (count / subsets as u64) as u32;
-        let list = per_subset.clamp(1, crate::vpl::TILE_LIST);
+        let per_subset = (count / (period * period) as u64) as u32;
+        let list = per_subset.clamp(1, desc.tile_list);
         let wg_bytes = slc_shared_shaders::vpl_tiled_workgroup_bytes(TILE, list);
         gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes, lim.max_compute_workgroup_storage_size as u64)?;
 
@@ -308,7 +354,7 @@ impl IndirectPass {
         let base = Features {
             lights: vpl,
             tile_size: TILE,
-            interleave: PERIOD,
+            interleave: period,
             workgroup_size: WG,
             max_tile_lights: list,
             surface,
@@ -316,15 +362,7 @@ impl IndirectPass {
             vpl_source,
             ..Features::default()
         };
-        let kernels = [
-            Kernel::GbufferImport,
-            Kernel::VplPack,
-            Kernel::LightUpdate,
-            Kernel::VplTiled,
-            Kernel::VplDenoise,
-            Kernel::VplNear,
-            Kernel::IrradianceExport,
-        ];
+        let kernels = [Kernel::VplPack, Kernel::LightUpdate, Kernel::VplTiled, Kernel::VplDenoise, Kernel::VplNear, Kernel::IrradianceExport];
         check_kernels(gpu, &kernels.map(|k| (k, &base, 0)))?;
         let mut tiled = Vec::new();
         let tiled_layout = KernelLayout::new(gpu, Kernel::VplTiled, &base)?;
@@ -342,75 +380,32 @@ impl IndirectPass {
         let pack_params = UniformSlots::new::<PackParams>(gpu, "slc pack params", n);
         let frame_params = UniformSlots::new::<FrameParams>(gpu, "slc frame params", n);
         let vpl_params = UniformSlots::new::<VplParams>(gpu, "slc vpl params", n);
-        let gb_position = zeroed(gpu, "slc gb_position", pixels, rw);
-        let gb_normal = zeroed(gpu, "slc gb_normal", pixels, rw);
         let irradiance = zeroed(gpu, "slc irradiance", pixels, rw);
         let filtered = zeroed(gpu, "slc filtered", pixels, rw);
         let lights = zeroed(gpu, "slc lights", count * std::mem::size_of::<GpuLight>() as u64, rw);
         let ids = zeroed(gpu, "slc ids", count * 4, rw);
         let rt2 = zeroed(gpu, "slc rt2", count * 4, rw);
-        let r2 = zeroed(gpu, "slc r2", count * 4, rw);
+        // COPY_DST: GpuVpl's fixed ξ writes r² from the host.
+        let r2 = zeroed(gpu, "slc r2", count * 4, rw | wgpu::BufferUsages::COPY_DST);
         let near_slots = zeroed(gpu, "slc near_slots", count * 4, rw);
         let near_boxes = zeroed(gpu, "slc near_boxes", count / NEAR_BLOCK as u64 * std::mem::size_of::<GpuNearBox>() as u64, rw);
-        let import = Pipe::new(gpu, Kernel::GbufferImport, &base)?;
         let pack = Pipe::new(gpu, Kernel::VplPack, &base)?;
         let update = Pipe::new(gpu, Kernel::LightUpdate, &base)?;
         let denoise = Pipe::new(gpu, Kernel::VplDenoise, &base)?;
         let export = Pipe::new(gpu, Kernel::IrradianceExport, &base)?;
         let b = crate::kernel::whole;
         let update_group = update.layout.group(gpu, 0, &[("params", frame_params.binding()), ("ids", b(&ids)), ("rt2", b(&rt2)), ("r2", b(&r2))]);
-        let tiled_group = tiled_layout.group(
-            gpu,
-            0,
-            &[
-                ("params", vpl_params.binding()),
-                ("gb_position", b(&gb_position)),
-                ("gb_normal", b(&gb_normal)),
-                ("lights", b(&lights)),
-                ("rt2", b(&rt2)),
-                ("r2", b(&r2)),
-                ("irradiance", b(&irradiance)),
-            ],
-        );
-        let denoise_group = denoise.layout.group(
-            gpu,
-            0,
-            &[
-                ("params", vpl_params.binding()),
-                ("gb_position", b(&gb_position)),
-                ("gb_normal", b(&gb_normal)),
-                ("irradiance", b(&irradiance)),
-                ("filtered", b(&filtered)),
-            ],
-        );
-        let near_group = |target: &wgpu::Buffer| {
-            near_layout.group(
-                gpu,
-                0,
-                &[
-                    ("params", vpl_params.binding()),
-                    ("gb_position", b(&gb_position)),
-                    ("gb_normal", b(&gb_normal)),
-                    ("lights", b(&lights)),
-                    ("near_slots", b(&near_slots)),
-                    ("near_boxes", b(&near_boxes)),
-                    ("rt2", b(&rt2)),
-                    ("r2", b(&r2)),
-                    ("irradiance", b(target)),
-                ],
-            )
-        };
-        let near_groups = [near_group(&irradiance), near_group(&filtered)];
         let s = IndirectPass {
             gpu: gpu.clone(),
             desc: *desc,
             count: count as u32,
             per_subset,
-            import,
             pack,
             update,
+            tiled_layout,
             tiled,
             denoise,
+            near_layout,
             near,
             export,
             view,
@@ -419,17 +414,12 @@ impl IndirectPass {
             vpl_params,
             slots,
             update_group,
-            tiled_group,
-            denoise_group,
-            near_groups,
-            import_cache: ViewCache::new(),
+            gbuffer_cache: ViewCache::new(),
             pack_cache: ViewCache::new(),
             export_cache: ViewCache::new(),
             pack_outputs: [lights, ids, rt2, r2, near_slots, near_boxes],
-            gb_position,
             irradiance,
             filtered,
-            gb_normal_buf: gb_normal,
         };
         gpu.take_errors()?;
         Ok(s)
@@ -438,6 +428,14 @@ impl IndirectPass {
     /// The descriptor the pass was built for.
     pub fn desc(&self) -> &IndirectPassDesc {
         &self.desc
+    }
+
+    /// The random ranges `r²` the shading reads, slot by slot (subset
+    /// after subset, [`slc_core::interleave::interleave_slot`]): written by
+    /// `vpl_pack` and `light_update`, or from the host between them
+    /// ([`crate::vpl::GpuVpl`]'s fixed ξ).
+    pub(crate) fn ranges(&self) -> &wgpu::Buffer {
+        &self.pack_outputs[3]
     }
 
     /// Checks `inputs` against the descriptor (formats, sizes, usages).
@@ -535,7 +533,7 @@ impl IndirectPass {
                 mode,
                 exposure,
                 error_bound,
-                scale: slc_core::interleave::interleave_flux_scale(PERIOD),
+                scale: slc_core::interleave::interleave_flux_scale(self.desc.period()),
                 slc: slc as u32,
                 // No culling: the kernel's finite stand-in for +∞.
                 fixed_r2: if fixed_r2.is_finite() { fixed_r2 } else { f32::MAX },
@@ -553,23 +551,37 @@ impl IndirectPass {
         let tex = wgpu::BindingResource::TextureView;
         let b = crate::kernel::whole;
         let g = inputs.gbuffer;
-        let (import, gb_position, gb_normal, irradiance, view_slots) =
-            (&self.import.layout, &self.gb_position, &self.gb_normal_buf, &self.irradiance, &self.view);
-        let import_group = self.import_cache.get((g.surface_view().clone(), g.normal.clone()), || {
-            import.group(
-                gpu,
-                0,
-                &[
-                    ("view", view_slots.binding()),
-                    (g.surface_name(), tex(g.surface_view())),
-                    ("normal_tex", tex(g.normal)),
-                    ("gb_position", b(gb_position)),
-                    ("gb_normal", b(gb_normal)),
-                    ("irradiance", b(irradiance)),
-                ],
-            )
+        let (view_slots, vpl_slots, irradiance, filtered) = (&self.view, &self.vpl_params, &self.irradiance, &self.filtered);
+        let (tiled_layout, denoise_layout, near_layout, outs) = (&self.tiled_layout, &self.denoise.layout, &self.near_layout, &self.pack_outputs);
+        let [lights, _, rt2, r2, near_slots, near_boxes] = outs;
+        // The kernels that read the G-buffer in place: bound to the
+        // engine's views, cached by them.
+        let groups = self.gbuffer_cache.get((g.surface_view().clone(), g.normal.clone()), || {
+            /// The G-buffer readers' common bindings, then `rest`.
+            fn with<'b>(
+                base: &[(&'static str, wgpu::BindingResource<'b>)],
+                rest: &[(&'static str, &'b wgpu::Buffer)],
+            ) -> Vec<(&'static str, wgpu::BindingResource<'b>)> {
+                base.iter().cloned().chain(rest.iter().map(|&(name, buf)| (name, buf.as_entire_binding()))).collect()
+            }
+            let base = [
+                ("params", vpl_slots.binding()),
+                ("view", view_slots.binding()),
+                (g.surface_name(), tex(g.surface_view())),
+                ("normal_tex", tex(g.normal)),
+            ];
+            let near = |target: &wgpu::Buffer| {
+                let rest =
+                    [("lights", lights), ("near_slots", near_slots), ("near_boxes", near_boxes), ("rt2", rt2), ("r2", r2), ("irradiance", target)];
+                near_layout.group(gpu, 0, &with(&base, &rest))
+            };
+            GbufferGroups {
+                tiled: tiled_layout.group(gpu, 0, &with(&base, &[("lights", lights), ("rt2", rt2), ("r2", r2), ("irradiance", irradiance)])),
+                denoise: denoise_layout.group(gpu, 0, &with(&base, &[("irradiance", irradiance), ("filtered", filtered)])),
+                near: [near(irradiance), near(filtered)],
+            }
         });
-        let (pack, outs, pack_slots) = (&self.pack.layout, &self.pack_outputs, &self.pack_params);
+        let (pack, pack_slots) = (&self.pack.layout, &self.pack_params);
         let key = match inputs.vpls {
             VplInput::Rsm { position, normal, flux } => PackKey::Rsm(Box::new([position.clone(), normal.clone(), flux.clone()])),
             VplInput::Buffer(buf) => PackKey::Buffer(buf.clone()),
@@ -588,12 +600,19 @@ impl IndirectPass {
             pack.group(gpu, 0, &res)
         });
         let result = if st.denoise { &self.filtered } else { &self.irradiance };
-        let (export, gb_pos) = (&self.export.layout, &self.gb_position);
-        let export_group = self.export_cache.get((inputs.output.clone(), st.denoise), || {
+        let export = &self.export.layout;
+        let key = (g.surface_view().clone(), g.normal.clone(), inputs.output.clone(), st.denoise);
+        let export_group = self.export_cache.get(key, || {
             export.group(
                 gpu,
                 0,
-                &[("view", view_slots.binding()), ("gb_position", b(gb_pos)), ("irradiance", b(result)), ("out_tex", tex(inputs.output))],
+                &[
+                    ("view", view_slots.binding()),
+                    (g.surface_name(), tex(g.surface_view())),
+                    ("normal_tex", tex(g.normal)),
+                    ("irradiance", b(result)),
+                    ("out_tex", tex(inputs.output)),
+                ],
             )
         });
         let method = match st.culling {
@@ -604,29 +623,25 @@ impl IndirectPass {
         let tiled = &self.tiled.iter().find(|(m, _)| *m == method).ok_or(GpuError::Setting("unknown method".into()))?.1;
         let near = &self.near.iter().find(|(m, _)| *m == method).ok_or(GpuError::Setting("unknown method".into()))?.1;
         let (gx, gy) = (w.div_ceil(TILE), h.div_ceil(TILE));
-        let (sub_w, sub_h) = (w.div_ceil(PERIOD), h.div_ceil(PERIOD));
+        let p = self.desc.period();
+        let (sub_w, sub_h) = (w.div_ceil(p), h.div_ceil(p));
         let off = |s: &UniformSlots| Some(s.offset(slot));
         let d = Dispatch::new;
-        let mut out = vec![
-            d(Stage::GbufferImport, &self.import.pipeline, import_group, off(&self.view), [gx, gy, 1]),
-            d(Stage::VplGeneration, &self.pack.pipeline, pack_group, off(&self.pack_params), [near_blocks, 1, 1]),
-        ];
+        // The G-buffer readers' two dynamic uniforms, in binding order:
+        // params (VplParams), view (ViewParams).
+        let both = || vec![self.vpl_params.offset(slot), self.view.offset(slot)];
+        let d2 = Dispatch::with_offsets;
+        let mut out = vec![d(Stage::VplGeneration, &self.pack.pipeline, pack_group, off(&self.pack_params), [near_blocks, 1, 1])];
         if slc {
             out.push(d(Stage::LightUpdate, &self.update.pipeline, self.update_group.clone(), off(&self.frame_params), [count.div_ceil(WG), 1, 1]));
         }
-        out.push(d(
-            Stage::Shading,
-            tiled,
-            self.tiled_group.clone(),
-            off(&self.vpl_params),
-            [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), PERIOD * PERIOD],
-        ));
+        out.push(d2(Stage::Shading, tiled, groups.tiled, both(), [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), p * p]));
         if st.denoise {
-            out.push(d(Stage::Denoise, &self.denoise.pipeline, self.denoise_group.clone(), off(&self.vpl_params), [gx, gy, 1]));
+            out.push(d2(Stage::Denoise, &self.denoise.pipeline, groups.denoise, both(), [gx, gy, 1]));
         }
         if near_r2 > 0.0 {
-            let g = self.near_groups[st.denoise as usize].clone();
-            out.push(d(Stage::NearField, near, g, off(&self.vpl_params), [gx, gy, 1]));
+            let [raw, denoised] = groups.near;
+            out.push(d2(Stage::NearField, near, if st.denoise { denoised } else { raw }, both(), [gx, gy, 1]));
         }
         out.push(d(Stage::IrradianceExport, &self.export.pipeline, export_group, off(&self.view), [gx, gy, 1]));
         Ok(out)

@@ -280,15 +280,15 @@ pub(crate) fn check_size(gpu: &crate::GpuContext, what: &str, (w, h): (u32, u32)
     )
 }
 
-/// A few bind groups kept by the identity of what they bind (the engine's
+/// A few bind groups (or sets of them) kept by the identity of what they bind (the engine's
 /// views): the same views every frame make no new bind group. Holds at
 /// most [`ViewCache::CAPACITY`] entries, the least recently used dropped
 /// first (with it its clones of the views).
-pub(crate) struct ViewCache<K> {
-    entries: Vec<(K, wgpu::BindGroup)>,
+pub(crate) struct ViewCache<K, V = wgpu::BindGroup> {
+    entries: Vec<(K, V)>,
 }
 
-impl<K: PartialEq> ViewCache<K> {
+impl<K: PartialEq, V: Clone> ViewCache<K, V> {
     /// Entries kept (double- or triple-buffered targets fit).
     pub(crate) const CAPACITY: usize = 4;
 
@@ -297,7 +297,7 @@ impl<K: PartialEq> ViewCache<K> {
     }
 
     /// The bind group for `key`, made by `make` when not cached.
-    pub(crate) fn get(&mut self, key: K, make: impl FnOnce() -> wgpu::BindGroup) -> wgpu::BindGroup {
+    pub(crate) fn get(&mut self, key: K, make: impl FnOnce() -> V) -> V {
         if let Some(i) = self.entries.iter().position(|(k, _)| *k == key) {
             let e = self.entries.remove(i);
             let g = e.1.clone();

@@ -17,6 +17,10 @@ struct ViewParams {
     vec3 f0_d;
     float f90_d;
 };
+struct GbTexel {
+    vec4 position;
+    vec4 normal;
+};
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
 const uint LIGHT_IES = 2u;
@@ -50,12 +54,41 @@ const uint ROULETTE_DEPTH = 2u;
 
 layout(std140) uniform ViewParams_block_0Compute { ViewParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_5_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+uniform sampler2D _group_0_binding_1_cs;
 
-layout(std430) readonly buffer type_5_block_2Compute { vec4 _group_0_binding_2_cs[]; };
+uniform sampler2D _group_0_binding_2_cs;
 
-layout(rgba32f) writeonly uniform image2D _group_0_binding_3_cs;
+layout(std430) readonly buffer type_6_block_1Compute { vec4 _group_0_binding_3_cs[]; };
 
+layout(rgba32f) writeonly uniform image2D _group_0_binding_4_cs;
+
+
+vec4 surface_at(ivec2 texel) {
+    vec4 p = texelFetch(_group_0_binding_1_cs, texel, 0);
+    return ((p.w > 0.0) ? vec4(p.xyz, 1.0) : vec4(0.0));
+}
+
+GbTexel gbuffer_at(uint i) {
+    bool local_1 = false;
+    uint _e3 = _group_0_binding_0_cs.width;
+    uint _e8 = _group_0_binding_0_cs.width;
+    ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
+    vec4 _e12 = surface_at(texel_1);
+    vec4 _e15 = texelFetch(_group_0_binding_2_cs, texel_1, 0);
+    vec3 n = _e15.xyz;
+    float len2_ = dot(n, n);
+    if ((_e12.w > 0.0)) {
+        local_1 = (len2_ > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool valid = local_1;
+    vec3 _e30 = _group_0_binding_0_cs.eye;
+    vec3 v = (_e12.xyz - _e30);
+    vec4 position = vec4(_e12.xyz, (valid ? 1.0 : 0.0));
+    vec4 normal = (valid ? vec4((n / vec3(sqrt(len2_))), sqrt(dot(v, v))) : vec4(0.0, 0.0, 0.0, 1e30));
+    return GbTexel(position, normal);
+}
 
 void main() {
     uvec3 gid = gl_GlobalInvocationID;
@@ -72,11 +105,11 @@ void main() {
         return;
     }
     uint _e19 = _group_0_binding_0_cs.width;
-    uint i = ((gid.y * _e19) + gid.x);
-    vec4 _e27 = _group_0_binding_2_cs[i];
-    float _e31 = _group_0_binding_1_cs[i].w;
-    vec4 e = ((_e31 > 0.0) ? _e27 : vec4(0.0));
-    imageStore(_group_0_binding_3_cs, ivec2(int(gid.x), int(gid.y)), e);
+    uint i_1 = ((gid.y * _e19) + gid.x);
+    vec4 _e27 = _group_0_binding_3_cs[i_1];
+    GbTexel _e28 = gbuffer_at(i_1);
+    vec4 e = ((_e28.position.w > 0.0) ? _e27 : vec4(0.0));
+    imageStore(_group_0_binding_4_cs, ivec2(int(gid.x), int(gid.y)), e);
     return;
 }
 

@@ -13,6 +13,24 @@ struct VplParams {
     uint pad0_;
     uint pad1_;
 };
+struct ViewParams {
+    vec4 c0_;
+    vec4 c1_;
+    vec4 c2_;
+    vec4 c3_;
+    vec3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    vec3 f0_d;
+    float f90_d;
+};
+struct GbTexel {
+    vec4 position;
+    vec4 normal;
+};
 struct Window {
     vec3 sum;
     float weight;
@@ -52,13 +70,15 @@ const uint PERIOD = 8u;
 
 layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_5_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std140) uniform ViewParams_block_1Compute { ViewParams _group_0_binding_1_cs; };
 
-layout(std430) readonly buffer type_5_block_2Compute { vec4 _group_0_binding_2_cs[]; };
+uniform sampler2D _group_0_binding_2_cs;
 
-layout(std430) readonly buffer type_5_block_3Compute { vec4 _group_0_binding_3_cs[]; };
+uniform sampler2D _group_0_binding_3_cs;
 
-layout(std430) buffer type_5_block_4Compute { vec4 _group_0_binding_4_cs[]; };
+layout(std430) readonly buffer type_6_block_2Compute { vec4 _group_0_binding_4_cs[]; };
+
+layout(std430) buffer type_6_block_3Compute { vec4 _group_0_binding_5_cs[]; };
 
 
 float inv_sigma_z(float z) {
@@ -99,10 +119,31 @@ float bilateral_weight(vec3 n, vec3 nj, float z_1, float zj, float inv_sz) {
     return (((dn8_ * dn8_) * t) * t);
 }
 
-float depth_of(uint i) {
-    float _e5 = _group_0_binding_2_cs[i].w;
-    float _e9 = _group_0_binding_1_cs[i].w;
-    return ((_e9 > 0.0) ? _e5 : DEPTH_NONE);
+vec4 surface_at(ivec2 texel) {
+    vec4 p = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p.w > 0.0) ? vec4(p.xyz, 1.0) : vec4(0.0));
+}
+
+GbTexel gbuffer_at(uint i) {
+    bool local_1 = false;
+    uint _e3 = _group_0_binding_1_cs.width;
+    uint _e8 = _group_0_binding_1_cs.width;
+    ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
+    vec4 _e12 = surface_at(texel_1);
+    vec4 _e15 = texelFetch(_group_0_binding_3_cs, texel_1, 0);
+    vec3 n_2 = _e15.xyz;
+    float len2_ = dot(n_2, n_2);
+    if ((_e12.w > 0.0)) {
+        local_1 = (len2_ > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool valid = local_1;
+    vec3 _e30 = _group_0_binding_1_cs.eye;
+    vec3 v = (_e12.xyz - _e30);
+    vec4 position = vec4(_e12.xyz, (valid ? 1.0 : 0.0));
+    vec4 normal = (valid ? vec4((n_2 / vec3(sqrt(len2_))), sqrt(dot(v, v))) : vec4(0.0, 0.0, 0.0, 1e30));
+    return GbTexel(position, normal);
 }
 
 Window window_sum(uint x_2, uint y, uint size_2, vec3 n_1, float z_2, float inv) {
@@ -149,11 +190,10 @@ Window window_sum(uint x_2, uint y, uint size_2, vec3 n_1, float z_2, float inv)
                     uint _e30 = yy;
                     uint _e32 = xx;
                     uint j = ((_e30 * w) + _e32);
-                    vec4 _e36 = _group_0_binding_2_cs[j];
-                    float _e38 = depth_of(j);
-                    float _e39 = bilateral_weight(n_1, _e36.xyz, z_2, _e38, inv);
+                    GbTexel _e34 = gbuffer_at(j);
+                    float _e39 = bilateral_weight(n_1, _e34.normal.xyz, z_2, _e34.normal.w, inv);
                     vec3 _e41 = win.sum;
-                    vec4 _e44 = _group_0_binding_3_cs[j];
+                    vec4 _e44 = _group_0_binding_4_cs[j];
                     win.sum = (_e41 + (_e44.xyz * _e39));
                     float _e49 = win.weight;
                     win.weight = (_e49 + _e39);
@@ -183,29 +223,28 @@ void main() {
         return;
     }
     uint i_1 = ((gid.y * w_1) + gid.x);
-    vec4 e_1 = _group_0_binding_3_cs[i_1];
-    float _e26 = _group_0_binding_1_cs[i_1].w;
-    if ((_e26 <= 0.0)) {
-        _group_0_binding_4_cs[i_1] = vec4(0.0, 0.0, 0.0, e_1.w);
+    vec4 e_1 = _group_0_binding_4_cs[i_1];
+    GbTexel _e23 = gbuffer_at(i_1);
+    if ((_e23.position.w <= 0.0)) {
+        _group_0_binding_5_cs[i_1] = vec4(0.0, 0.0, 0.0, e_1.w);
         return;
     }
-    vec4 _e38 = _group_0_binding_2_cs[i_1];
-    vec3 n_2 = _e38.xyz;
-    float _e40 = depth_of(i_1);
-    float _e41 = inv_sigma_z(_e40);
-    Window _e45 = window_sum(gid.x, gid.y, PERIOD, n_2, _e40, _e41);
-    s = _e45;
-    uint _e48 = s.covered;
-    bool _e50 = misses_subset(_e48, PERIOD);
-    if (_e50) {
-        uint _e54 = wide_window(PERIOD);
-        Window _e55 = window_sum(gid.x, gid.y, _e54, n_2, _e40, _e41);
-        s = _e55;
+    vec3 n_3 = _e23.normal.xyz;
+    float z_3 = _e23.normal.w;
+    float _e39 = inv_sigma_z(z_3);
+    Window _e43 = window_sum(gid.x, gid.y, PERIOD, n_3, z_3, _e39);
+    s = _e43;
+    uint _e46 = s.covered;
+    bool _e48 = misses_subset(_e46, PERIOD);
+    if (_e48) {
+        uint _e52 = wide_window(PERIOD);
+        Window _e53 = window_sum(gid.x, gid.y, _e52, n_3, z_3, _e39);
+        s = _e53;
     }
-    vec3 _e60 = s.sum;
-    float _e62 = s.weight;
-    vec3 _e63 = filtered_irradiance(e_1.xyz, _e60, _e62);
-    _group_0_binding_4_cs[i_1] = vec4(_e63, e_1.w);
+    vec3 _e58 = s.sum;
+    float _e60 = s.weight;
+    vec3 _e61 = filtered_irradiance(e_1.xyz, _e58, _e60);
+    _group_0_binding_5_cs[i_1] = vec4(_e61, e_1.w);
     return;
 }
 

@@ -29,9 +29,27 @@ struct GpuNearBox {
     vec3 hi;
     float pad1_;
 };
+struct ViewParams {
+    vec4 c0_;
+    vec4 c1_;
+    vec4 c2_;
+    vec4 c3_;
+    vec3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    vec3 f0_d;
+    float f90_d;
+};
 struct WorkgroupBox {
     vec3 lo;
     vec3 hi;
+};
+struct GbTexel {
+    vec4 position;
+    vec4 normal;
 };
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
@@ -75,19 +93,21 @@ shared vec3 wg_hi[64];
 
 layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_7_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std140) uniform ViewParams_block_1Compute { ViewParams _group_0_binding_1_cs; };
 
-layout(std430) readonly buffer type_7_block_2Compute { vec4 _group_0_binding_2_cs[]; };
+uniform sampler2D _group_0_binding_2_cs;
 
-layout(std430) readonly buffer type_8_block_3Compute { GpuLight _group_0_binding_3_cs[]; };
+uniform sampler2D _group_0_binding_3_cs;
 
-layout(std430) readonly buffer type_9_block_4Compute { uint _group_0_binding_4_cs[]; };
+layout(std430) readonly buffer type_8_block_2Compute { GpuLight _group_0_binding_4_cs[]; };
 
-layout(std430) readonly buffer type_10_block_5Compute { GpuNearBox _group_0_binding_5_cs[]; };
+layout(std430) readonly buffer type_9_block_3Compute { uint _group_0_binding_5_cs[]; };
 
-layout(std430) readonly buffer type_4_block_6Compute { float _group_0_binding_7_cs[]; };
+layout(std430) readonly buffer type_10_block_4Compute { GpuNearBox _group_0_binding_6_cs[]; };
 
-layout(std430) buffer type_7_block_7Compute { vec4 _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_4_block_5Compute { float _group_0_binding_8_cs[]; };
+
+layout(std430) buffer type_11_block_6Compute { vec4 _group_0_binding_9_cs[]; };
 
 shared uint light_count;
 
@@ -179,8 +199,35 @@ WorkgroupBox workgroup_box(uint li_1, vec3 p, bool has) {
     return WorkgroupBox(_e47, _e50);
 }
 
+vec4 surface_at(ivec2 texel) {
+    vec4 p_1 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_1.w > 0.0) ? vec4(p_1.xyz, 1.0) : vec4(0.0));
+}
+
+GbTexel gbuffer_at(uint i) {
+    bool local_5 = false;
+    uint _e3 = _group_0_binding_1_cs.width;
+    uint _e8 = _group_0_binding_1_cs.width;
+    ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
+    vec4 _e12 = surface_at(texel_1);
+    vec4 _e15 = texelFetch(_group_0_binding_3_cs, texel_1, 0);
+    vec3 n = _e15.xyz;
+    float len2_ = dot(n, n);
+    if ((_e12.w > 0.0)) {
+        local_5 = (len2_ > 0.0);
+    } else {
+        local_5 = false;
+    }
+    bool valid = local_5;
+    vec3 _e30 = _group_0_binding_1_cs.eye;
+    vec3 v_2 = (_e12.xyz - _e30);
+    vec4 position = vec4(_e12.xyz, (valid ? 1.0 : 0.0));
+    vec4 normal = (valid ? vec4((n / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))) : vec4(0.0, 0.0, 0.0, 1e30));
+    return GbTexel(position, normal);
+}
+
 float near_r2_of(uint slot) {
-    float _e3 = _group_0_binding_7_cs[slot];
+    float _e3 = _group_0_binding_8_cs[slot];
     return _e3;
 }
 
@@ -221,36 +268,35 @@ void main() {
     uint _e27 = _group_0_binding_0_cs.width;
     uint pix = ((py * _e27) + px);
     if (inside) {
-        vec4 _e38 = _group_0_binding_1_cs[pix];
-        pos = _e38;
-        vec4 _e41 = _group_0_binding_2_cs[pix];
-        nrm = _e41.xyz;
+        GbTexel _e36 = gbuffer_at(pix);
+        pos = _e36.position;
+        nrm = _e36.normal.xyz;
     }
     if (inside) {
-        float _e46 = pos.w;
-        local_1 = (_e46 > 0.0);
+        float _e43 = pos.w;
+        local_1 = (_e43 > 0.0);
     } else {
         local_1 = false;
     }
-    bool valid = local_1;
-    vec4 _e51 = pos;
-    WorkgroupBox _e53 = workgroup_box(li, _e51.xyz, valid);
-    vec3 lo = _e53.lo;
-    vec3 hi = _e53.hi;
-    float _e58 = _group_0_binding_0_cs.near_r2_;
-    float _e59 = cull_radius(_e58);
-    float _e61 = interleave_flux_scale(P);
-    float unscale = (1.0 / _e61);
+    bool valid_1 = local_1;
+    vec4 _e48 = pos;
+    WorkgroupBox _e50 = workgroup_box(li, _e48.xyz, valid_1);
+    vec3 lo = _e50.lo;
+    vec3 hi = _e50.hi;
+    float _e55 = _group_0_binding_0_cs.near_r2_;
+    float _e56 = cull_radius(_e55);
+    float _e58 = interleave_flux_scale(P);
+    float unscale = (1.0 / _e58);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e194 = first;
-            first = (_e194 + NEAR_CHUNK);
+            uint _e191 = first;
+            first = (_e191 + NEAR_CHUNK);
         }
         loop_init_1 = false;
-        uint _e71 = first;
-        uint _e74 = _group_0_binding_0_cs.near_blocks;
-        if ((_e71 < _e74)) {
+        uint _e68 = first;
+        uint _e71 = _group_0_binding_0_cs.near_blocks;
+        if ((_e68 < _e71)) {
         } else {
             break;
         }
@@ -260,55 +306,55 @@ void main() {
             }
             memoryBarrierShared();
             barrier();
-            uint _e80 = first;
-            uint b = (_e80 + li);
+            uint _e77 = first;
+            uint b = (_e77 + li);
             if ((li < NEAR_CHUNK)) {
-                uint _e88 = _group_0_binding_0_cs.near_blocks;
-                local_2 = (b < _e88);
+                uint _e85 = _group_0_binding_0_cs.near_blocks;
+                local_2 = (b < _e85);
             } else {
                 local_2 = false;
             }
-            bool _e91 = local_2;
-            if (_e91) {
-                GpuNearBox nb = _group_0_binding_5_cs[b];
-                if (all(lessThanEqual((nb.lo - vec3(_e59)), hi))) {
-                    local_3 = all(lessThanEqual(lo, (nb.hi + vec3(_e59))));
+            bool _e88 = local_2;
+            if (_e88) {
+                GpuNearBox nb = _group_0_binding_6_cs[b];
+                if (all(lessThanEqual((nb.lo - vec3(_e56)), hi))) {
+                    local_3 = all(lessThanEqual(lo, (nb.hi + vec3(_e56))));
                 } else {
                     local_3 = false;
                 }
-                bool _e108 = local_3;
-                if (_e108) {
+                bool _e105 = local_3;
+                if (_e105) {
                     m = 0u;
                     bool loop_init_2 = true;
                     while(true) {
                         if (!loop_init_2) {
-                            uint _e147 = m;
-                            m = (_e147 + 1u);
+                            uint _e144 = m;
+                            m = (_e144 + 1u);
                         }
                         loop_init_2 = false;
-                        uint _e111 = m;
-                        if ((_e111 < NEAR_BLOCK)) {
+                        uint _e108 = m;
+                        if ((_e108 < NEAR_BLOCK)) {
                         } else {
                             break;
                         }
                         {
-                            uint _e117 = m;
-                            uint slot_1 = _group_0_binding_4_cs[((b * NEAR_BLOCK) + _e117)];
-                            GpuLight l = _group_0_binding_3_cs[slot_1];
-                            float _e124 = near_r2_of(slot_1);
-                            float _e127 = _group_0_binding_0_cs.near_r2_;
-                            float _e128 = vpl_near_cull_range2_(_e124, _e127);
-                            float _e129 = cull_radius(_e128);
+                            uint _e114 = m;
+                            uint slot_1 = _group_0_binding_5_cs[((b * NEAR_BLOCK) + _e114)];
+                            GpuLight l = _group_0_binding_4_cs[slot_1];
+                            float _e121 = near_r2_of(slot_1);
+                            float _e124 = _group_0_binding_0_cs.near_r2_;
+                            float _e125 = vpl_near_cull_range2_(_e121, _e124);
+                            float _e126 = cull_radius(_e125);
                             if (any(notEqual(l.intensity, vec3(0.0)))) {
-                                bool _e138 = sphere_overlaps_aabb(l.p0_, _e129, lo, hi);
-                                local_4 = _e138;
+                                bool _e135 = sphere_overlaps_aabb(l.p0_, _e126, lo, hi);
+                                local_4 = _e135;
                             } else {
                                 local_4 = false;
                             }
-                            bool _e140 = local_4;
-                            if (_e140) {
-                                uint _e144 = atomicAdd(light_count, 1u);
-                                light_list[_e144] = slot_1;
+                            bool _e137 = local_4;
+                            if (_e137) {
+                                uint _e141 = atomicAdd(light_count, 1u);
+                                light_list[_e141] = slot_1;
                             }
                         }
                     }
@@ -316,40 +362,40 @@ void main() {
             }
             memoryBarrierShared();
             barrier();
-            uint _e150 = light_count;
+            uint _e147 = light_count;
             memoryBarrierShared();
             barrier();
-            if (valid) {
+            if (valid_1) {
                 m_1 = 0u;
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e192 = m_1;
-                        m_1 = (_e192 + 1u);
+                        uint _e189 = m_1;
+                        m_1 = (_e189 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e153 = m_1;
-                    if ((_e153 < _e150)) {
+                    uint _e150 = m_1;
+                    if ((_e150 < _e147)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e156 = m_1;
-                        uint slot_2 = light_list[_e156];
-                        GpuLight l_1 = _group_0_binding_3_cs[slot_2];
-                        vec4 _e162 = pos;
-                        vec3 v_2 = (_e162.xyz - l_1.p0_);
-                        float _e168 = _group_0_binding_7_cs[slot_2];
-                        float _e172 = _group_0_binding_0_cs.near_r2_;
-                        float _e173 = vpl_near_fixed_share(_e168, dot(v_2, v_2), _e172);
-                        if ((_e173 > 0.0)) {
-                            vec3 _e176 = e;
-                            vec3 _e179 = nrm;
-                            float _e182 = _group_0_binding_0_cs.min_d2_;
-                            float _e183 = vpl_transfer(l_1.p1_, _e179, v_2, _e182);
-                            e = (_e176 + (l_1.intensity * ((_e183 * _e173) * unscale)));
-                            uint _e188 = kept;
-                            kept = (_e188 + 1u);
+                        uint _e153 = m_1;
+                        uint slot_2 = light_list[_e153];
+                        GpuLight l_1 = _group_0_binding_4_cs[slot_2];
+                        vec4 _e159 = pos;
+                        vec3 v_3 = (_e159.xyz - l_1.p0_);
+                        float _e165 = _group_0_binding_8_cs[slot_2];
+                        float _e169 = _group_0_binding_0_cs.near_r2_;
+                        float _e170 = vpl_near_fixed_share(_e165, dot(v_3, v_3), _e169);
+                        if ((_e170 > 0.0)) {
+                            vec3 _e173 = e;
+                            vec3 _e176 = nrm;
+                            float _e179 = _group_0_binding_0_cs.min_d2_;
+                            float _e180 = vpl_transfer(l_1.p1_, _e176, v_3, _e179);
+                            e = (_e173 + (l_1.intensity * ((_e180 * _e170) * unscale)));
+                            uint _e185 = kept;
+                            kept = (_e185 + 1u);
                         }
                     }
                 }
@@ -358,11 +404,11 @@ void main() {
             barrier();
         }
     }
-    if (valid) {
-        vec4 old = _group_0_binding_8_cs[pix];
-        vec3 _e203 = e;
-        uint _e206 = kept;
-        _group_0_binding_8_cs[pix] = vec4((old.xyz + _e203), (old.w + float(_e206)));
+    if (valid_1) {
+        vec4 old = _group_0_binding_9_cs[pix];
+        vec3 _e200 = e;
+        uint _e203 = kept;
+        _group_0_binding_9_cs[pix] = vec4((old.xyz + _e200), (old.w + float(_e203)));
         return;
     } else {
         return;

@@ -23,9 +23,27 @@ struct VplParams {
     uint pad0_;
     uint pad1_;
 };
+struct ViewParams {
+    vec4 c0_;
+    vec4 c1_;
+    vec4 c2_;
+    vec4 c3_;
+    vec3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    vec3 f0_d;
+    float f90_d;
+};
 struct WorkgroupBox {
     vec3 lo;
     vec3 hi;
+};
+struct GbTexel {
+    vec4 position;
+    vec4 normal;
 };
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
@@ -69,17 +87,19 @@ shared vec3 wg_hi[64];
 
 layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_7_block_1Compute { vec4 _group_0_binding_1_cs[]; };
+layout(std140) uniform ViewParams_block_1Compute { ViewParams _group_0_binding_1_cs; };
 
-layout(std430) readonly buffer type_7_block_2Compute { vec4 _group_0_binding_2_cs[]; };
+uniform sampler2D _group_0_binding_2_cs;
 
-layout(std430) readonly buffer type_8_block_3Compute { GpuLight _group_0_binding_3_cs[]; };
+uniform sampler2D _group_0_binding_3_cs;
 
-layout(std430) readonly buffer type_4_block_4Compute { float _group_0_binding_4_cs[]; };
+layout(std430) readonly buffer type_8_block_2Compute { GpuLight _group_0_binding_4_cs[]; };
 
-layout(std430) readonly buffer type_4_block_5Compute { float _group_0_binding_5_cs[]; };
+layout(std430) readonly buffer type_4_block_3Compute { float _group_0_binding_5_cs[]; };
 
-layout(std430) buffer type_7_block_6Compute { vec4 _group_0_binding_6_cs[]; };
+layout(std430) readonly buffer type_4_block_4Compute { float _group_0_binding_6_cs[]; };
+
+layout(std430) buffer type_9_block_5Compute { vec4 _group_0_binding_7_cs[]; };
 
 shared uint tile_count;
 
@@ -171,6 +191,33 @@ WorkgroupBox workgroup_box(uint li_1, vec3 p, bool has) {
     return WorkgroupBox(_e47, _e50);
 }
 
+vec4 surface_at(ivec2 texel) {
+    vec4 p_1 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_1.w > 0.0) ? vec4(p_1.xyz, 1.0) : vec4(0.0));
+}
+
+GbTexel gbuffer_at(uint i) {
+    bool local_2 = false;
+    uint _e3 = _group_0_binding_1_cs.width;
+    uint _e8 = _group_0_binding_1_cs.width;
+    ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
+    vec4 _e12 = surface_at(texel_1);
+    vec4 _e15 = texelFetch(_group_0_binding_3_cs, texel_1, 0);
+    vec3 n = _e15.xyz;
+    float len2_ = dot(n, n);
+    if ((_e12.w > 0.0)) {
+        local_2 = (len2_ > 0.0);
+    } else {
+        local_2 = false;
+    }
+    bool valid = local_2;
+    vec3 _e30 = _group_0_binding_1_cs.eye;
+    vec3 v_2 = (_e12.xyz - _e30);
+    vec4 position = vec4(_e12.xyz, (valid ? 1.0 : 0.0));
+    vec4 normal = (valid ? vec4((n / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))) : vec4(0.0, 0.0, 0.0, 1e30));
+    return GbTexel(position, normal);
+}
+
 void main() {
     if (gl_LocalInvocationID == uvec3(0u)) {
         wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
@@ -206,115 +253,114 @@ void main() {
     uint _e38 = _group_0_binding_0_cs.width;
     uint pix = ((py * _e38) + px);
     if (inside) {
-        vec4 _e49 = _group_0_binding_1_cs[pix];
-        pos = _e49;
-        vec4 _e52 = _group_0_binding_2_cs[pix];
-        nrm = _e52.xyz;
+        GbTexel _e47 = gbuffer_at(pix);
+        pos = _e47.position;
+        nrm = _e47.normal.xyz;
     }
     if (inside) {
-        float _e57 = pos.w;
-        local_1 = (_e57 > 0.0);
+        float _e54 = pos.w;
+        local_1 = (_e54 > 0.0);
     } else {
         local_1 = false;
     }
-    bool valid = local_1;
-    vec4 _e62 = pos;
-    WorkgroupBox _e64 = workgroup_box(li, _e62.xyz, valid);
-    vec3 lo = _e64.lo;
-    vec3 hi = _e64.hi;
-    uint _e69 = _group_0_binding_0_cs.lights_per_subset;
-    uint base = (sub * _e69);
+    bool valid_1 = local_1;
+    vec4 _e59 = pos;
+    WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
+    vec3 lo = _e61.lo;
+    vec3 hi = _e61.hi;
+    uint _e66 = _group_0_binding_0_cs.lights_per_subset;
+    uint base = (sub * _e66);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e173 = first;
-            first = (_e173 + MAX_TILE_LIGHTS);
+            uint _e170 = first;
+            first = (_e170 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
-        uint _e78 = first;
-        uint _e81 = _group_0_binding_0_cs.lights_per_subset;
-        if ((_e78 < _e81)) {
+        uint _e75 = first;
+        uint _e78 = _group_0_binding_0_cs.lights_per_subset;
+        if ((_e75 < _e78)) {
         } else {
             break;
         }
         {
-            uint _e83 = first;
-            uint _e88 = _group_0_binding_0_cs.lights_per_subset;
-            uint end = min((_e83 + MAX_TILE_LIGHTS), _e88);
+            uint _e80 = first;
+            uint _e85 = _group_0_binding_0_cs.lights_per_subset;
+            uint end = min((_e80 + MAX_TILE_LIGHTS), _e85);
             if ((li == 0u)) {
                 atomicExchange(tile_count, 0u);
             }
             memoryBarrierShared();
             barrier();
-            uint _e94 = first;
-            j = (_e94 + li);
+            uint _e91 = first;
+            j = (_e91 + li);
             bool loop_init_2 = true;
             while(true) {
                 if (!loop_init_2) {
-                    uint _e120 = j;
-                    j = (_e120 + THREADS);
+                    uint _e117 = j;
+                    j = (_e117 + THREADS);
                 }
                 loop_init_2 = false;
-                uint _e97 = j;
-                if ((_e97 < end)) {
+                uint _e94 = j;
+                if ((_e94 < end)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e100 = j;
-                    vec3 _e104 = _group_0_binding_3_cs[(base + _e100)].p0_;
-                    uint _e106 = j;
-                    float _e109 = _group_0_binding_5_cs[(base + _e106)];
-                    float _e110 = cull_radius(_e109);
-                    bool _e111 = sphere_overlaps_aabb(_e104, _e110, lo, hi);
-                    if (_e111) {
-                        uint _e114 = atomicAdd(tile_count, 1u);
-                        if ((_e114 < MAX_TILE_LIGHTS)) {
-                            uint _e119 = j;
-                            tile_lights[_e114] = _e119;
+                    uint _e97 = j;
+                    vec3 _e101 = _group_0_binding_4_cs[(base + _e97)].p0_;
+                    uint _e103 = j;
+                    float _e106 = _group_0_binding_6_cs[(base + _e103)];
+                    float _e107 = cull_radius(_e106);
+                    bool _e108 = sphere_overlaps_aabb(_e101, _e107, lo, hi);
+                    if (_e108) {
+                        uint _e111 = atomicAdd(tile_count, 1u);
+                        if ((_e111 < MAX_TILE_LIGHTS)) {
+                            uint _e116 = j;
+                            tile_lights[_e111] = _e116;
                         }
                     }
                 }
             }
             memoryBarrierShared();
             barrier();
-            uint _e124 = tile_count;
+            uint _e121 = tile_count;
             memoryBarrierShared();
             barrier();
-            uint count = min(_e124, MAX_TILE_LIGHTS);
-            if (valid) {
+            uint count = min(_e121, MAX_TILE_LIGHTS);
+            if (valid_1) {
                 k = 0u;
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e171 = k;
-                        k = (_e171 + 1u);
+                        uint _e168 = k;
+                        k = (_e168 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e129 = k;
-                    if ((_e129 < count)) {
+                    uint _e126 = k;
+                    if ((_e126 < count)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e132 = k;
-                        uint _e134 = tile_lights[_e132];
-                        uint j_1 = (base + _e134);
-                        GpuLight l = _group_0_binding_3_cs[j_1];
-                        vec4 _e139 = pos;
-                        vec3 v_2 = (_e139.xyz - l.p0_);
-                        float _e145 = _group_0_binding_4_cs[j_1];
-                        float _e148 = _group_0_binding_5_cs[j_1];
-                        float _e152 = _group_0_binding_0_cs.near_r2_;
-                        float _e153 = vpl_far_slc_share(_e145, _e148, dot(v_2, v_2), _e152);
-                        if ((_e153 > 0.0)) {
-                            vec3 _e156 = e;
-                            vec3 _e159 = nrm;
-                            float _e162 = _group_0_binding_0_cs.min_d2_;
-                            float _e163 = vpl_transfer(l.p1_, _e159, v_2, _e162);
-                            e = (_e156 + (l.intensity * (_e163 * _e153)));
-                            uint _e167 = kept;
-                            kept = (_e167 + 1u);
+                        uint _e129 = k;
+                        uint _e131 = tile_lights[_e129];
+                        uint j_1 = (base + _e131);
+                        GpuLight l = _group_0_binding_4_cs[j_1];
+                        vec4 _e136 = pos;
+                        vec3 v_3 = (_e136.xyz - l.p0_);
+                        float _e142 = _group_0_binding_5_cs[j_1];
+                        float _e145 = _group_0_binding_6_cs[j_1];
+                        float _e149 = _group_0_binding_0_cs.near_r2_;
+                        float _e150 = vpl_far_slc_share(_e142, _e145, dot(v_3, v_3), _e149);
+                        if ((_e150 > 0.0)) {
+                            vec3 _e153 = e;
+                            vec3 _e156 = nrm;
+                            float _e159 = _group_0_binding_0_cs.min_d2_;
+                            float _e160 = vpl_transfer(l.p1_, _e156, v_3, _e159);
+                            e = (_e153 + (l.intensity * (_e160 * _e150)));
+                            uint _e164 = kept;
+                            kept = (_e164 + 1u);
                         }
                     }
                 }
@@ -323,10 +369,10 @@ void main() {
             barrier();
         }
     }
-    if (valid) {
-        vec3 _e178 = e;
-        uint _e179 = kept;
-        _group_0_binding_6_cs[pix] = vec4(_e178, float(_e179));
+    if (inside) {
+        vec3 _e175 = e;
+        uint _e176 = kept;
+        _group_0_binding_7_cs[pix] = vec4(_e175, float(_e176));
         return;
     } else {
         return;

@@ -13,6 +13,11 @@ struct ViewParams {
     float f90_d;
 };
 
+struct GbTexel {
+    float4 position;
+    float4 normal;
+};
+
 static const uint LIGHT_POINT = 0u;
 static const uint LIGHT_SPOT = 1u;
 static const uint LIGHT_IES = 2u;
@@ -45,9 +50,56 @@ static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
 
 cbuffer view : register(b0) { ViewParams view; }
-ByteAddressBuffer gb_position : register(t1);
-ByteAddressBuffer irradiance : register(t2);
-RWTexture2D<float4> out_tex : register(u3);
+Texture2D<float4> position_tex : register(t1);
+Texture2D<float4> normal_tex : register(t2);
+ByteAddressBuffer irradiance : register(t3);
+RWTexture2D<float4> out_tex : register(u4);
+
+float4 surface_at(int2 texel)
+{
+    float4 p = position_tex.Load(int3(texel, int(0)));
+    return ((p.w > 0.0) ? float4(p.xyz, 1.0) : (0.0).xxxx);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
+    GbTexel ret = (GbTexel)0;
+    ret.position = arg0;
+    ret.normal = arg1;
+    return ret;
+}
+
+GbTexel gbuffer_at(uint i)
+{
+    bool local_1 = (bool)0;
+
+    uint _e3 = view.width;
+    uint _e8 = view.width;
+    int2 texel_1 = int2(int(naga_mod(i, _e3)), int(naga_div(i, _e8)));
+    const float4 _e12 = surface_at(texel_1);
+    float4 _e15 = normal_tex.Load(int3(texel_1, int(0)));
+    float3 n = _e15.xyz;
+    float len2_ = dot(n, n);
+    if ((_e12.w > 0.0)) {
+        local_1 = (len2_ > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool valid = local_1;
+    float3 _e30 = view.eye;
+    float3 v = (_e12.xyz - _e30);
+    float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
+    float4 normal = (valid ? float4((n / (sqrt(len2_)).xxx), sqrt(dot(v, v))) : float4(0.0, 0.0, 0.0, 1e30));
+    const GbTexel gbtexel = ConstructGbTexel(position, normal);
+    return gbtexel;
+}
 
 [numthreads(8, 8, 1)]
 void main(uint3 gid : SV_DispatchThreadID)
@@ -66,10 +118,10 @@ void main(uint3 gid : SV_DispatchThreadID)
         return;
     }
     uint _e19 = view.width;
-    uint i = ((gid.y * _e19) + gid.x);
-    float4 _e27 = asfloat(irradiance.Load4(i*16));
-    float _e31 = asfloat(gb_position.Load(12+i*16));
-    float4 e = ((_e31 > 0.0) ? _e27 : (0.0).xxxx);
+    uint i_1 = ((gid.y * _e19) + gid.x);
+    float4 _e27 = asfloat(irradiance.Load4(i_1*16));
+    const GbTexel _e28 = gbuffer_at(i_1);
+    float4 e = ((_e28.position.w > 0.0) ? _e27 : (0.0).xxxx);
     out_tex[int2(int(gid.x), int(gid.y))] = e;
     return;
 }

@@ -9,6 +9,26 @@ struct VplParams {
     uint pad1_;
 };
 
+struct ViewParams {
+    float4 c0_;
+    float4 c1_;
+    float4 c2_;
+    float4 c3_;
+    float3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    float3 f0_d;
+    float f90_d;
+};
+
+struct GbTexel {
+    float4 position;
+    float4 normal;
+};
+
 struct Window {
     float3 sum;
     float weight;
@@ -51,10 +71,11 @@ static const uint ROULETTE_DEPTH = 2u;
 static const uint PERIOD = 8u;
 
 cbuffer params : register(b0) { VplParams params; }
-ByteAddressBuffer gb_position : register(t1);
-ByteAddressBuffer gb_normal : register(t2);
-ByteAddressBuffer irradiance : register(t3);
-RWByteAddressBuffer filtered : register(u4);
+cbuffer view : register(b1) { ViewParams view; }
+Texture2D<float4> position_tex : register(t2);
+Texture2D<float4> normal_tex : register(t3);
+ByteAddressBuffer irradiance : register(t4);
+RWByteAddressBuffer filtered : register(u5);
 
 float inv_sigma_z(float z)
 {
@@ -105,11 +126,46 @@ float bilateral_weight(float3 n, float3 nj, float z_1, float zj, float inv_sz)
     return (((dn8_ * dn8_) * t) * t);
 }
 
-float depth_of(uint i)
+float4 surface_at(int2 texel)
 {
-    float _e5 = asfloat(gb_normal.Load(12+i*16));
-    float _e9 = asfloat(gb_position.Load(12+i*16));
-    return ((_e9 > 0.0) ? _e5 : DEPTH_NONE);
+    float4 p = position_tex.Load(int3(texel, int(0)));
+    return ((p.w > 0.0) ? float4(p.xyz, 1.0) : (0.0).xxxx);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
+    GbTexel ret = (GbTexel)0;
+    ret.position = arg0;
+    ret.normal = arg1;
+    return ret;
+}
+
+GbTexel gbuffer_at(uint i)
+{
+    bool local_1 = (bool)0;
+
+    uint _e3 = view.width;
+    uint _e8 = view.width;
+    int2 texel_1 = int2(int(naga_mod(i, _e3)), int(naga_div(i, _e8)));
+    const float4 _e12 = surface_at(texel_1);
+    float4 _e15 = normal_tex.Load(int3(texel_1, int(0)));
+    float3 n_2 = _e15.xyz;
+    float len2_ = dot(n_2, n_2);
+    if ((_e12.w > 0.0)) {
+        local_1 = (len2_ > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool valid = local_1;
+    float3 _e30 = view.eye;
+    float3 v = (_e12.xyz - _e30);
+    float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
+    float4 normal = (valid ? float4((n_2 / (sqrt(len2_)).xxx), sqrt(dot(v, v))) : float4(0.0, 0.0, 0.0, 1e30));
+    const GbTexel gbtexel = ConstructGbTexel(position, normal);
+    return gbtexel;
 }
 
 Window window_sum(uint x_2, uint y, uint size_2, float3 n_1, float z_2, float inv)
@@ -164,9 +220,8 @@ Window window_sum(uint x_2, uint y, uint size_2, float3 n_1, float z_2, float in
                     uint _e30 = yy;
                     uint _e32 = xx;
                     uint j = ((_e30 * w) + _e32);
-                    float4 _e36 = asfloat(gb_normal.Load4(j*16));
-                    const float _e38 = depth_of(j);
-                    const float _e39 = bilateral_weight(n_1, _e36.xyz, z_2, _e38, inv);
+                    const GbTexel _e34 = gbuffer_at(j);
+                    const float _e39 = bilateral_weight(n_1, _e34.normal.xyz, z_2, _e34.normal.w, inv);
                     float3 _e41 = win.sum;
                     float4 _e44 = asfloat(irradiance.Load4(j*16));
                     win.sum = (_e41 + (_e44.xyz * _e39));
@@ -202,27 +257,26 @@ void main(uint3 gid : SV_DispatchThreadID)
     }
     uint i_1 = ((gid.y * w_1) + gid.x);
     float4 e_1 = asfloat(irradiance.Load4(i_1*16));
-    float _e26 = asfloat(gb_position.Load(12+i_1*16));
-    if ((_e26 <= 0.0)) {
+    const GbTexel _e23 = gbuffer_at(i_1);
+    if ((_e23.position.w <= 0.0)) {
         filtered.Store4(i_1*16, asuint(float4(0.0, 0.0, 0.0, e_1.w)));
         return;
     }
-    float4 _e38 = asfloat(gb_normal.Load4(i_1*16));
-    float3 n_2 = _e38.xyz;
-    const float _e40 = depth_of(i_1);
-    const float _e41 = inv_sigma_z(_e40);
-    const Window _e45 = window_sum(gid.x, gid.y, PERIOD, n_2, _e40, _e41);
-    s = _e45;
-    uint _e48 = s.covered;
-    const bool _e50 = misses_subset(_e48, PERIOD);
-    if (_e50) {
-        const uint _e54 = wide_window(PERIOD);
-        const Window _e55 = window_sum(gid.x, gid.y, _e54, n_2, _e40, _e41);
-        s = _e55;
+    float3 n_3 = _e23.normal.xyz;
+    float z_3 = _e23.normal.w;
+    const float _e39 = inv_sigma_z(z_3);
+    const Window _e43 = window_sum(gid.x, gid.y, PERIOD, n_3, z_3, _e39);
+    s = _e43;
+    uint _e46 = s.covered;
+    const bool _e48 = misses_subset(_e46, PERIOD);
+    if (_e48) {
+        const uint _e52 = wide_window(PERIOD);
+        const Window _e53 = window_sum(gid.x, gid.y, _e52, n_3, z_3, _e39);
+        s = _e53;
     }
-    float3 _e60 = s.sum;
-    float _e62 = s.weight;
-    const float3 _e63 = filtered_irradiance(e_1.xyz, _e60, _e62);
-    filtered.Store4(i_1*16, asuint(float4(_e63, e_1.w)));
+    float3 _e58 = s.sum;
+    float _e60 = s.weight;
+    const float3 _e61 = filtered_irradiance(e_1.xyz, _e58, _e60);
+    filtered.Store4(i_1*16, asuint(float4(_e61, e_1.w)));
     return;
 }

@@ -27,11 +27,31 @@ struct GpuNearBox {
     float pad1_;
 };
 
+struct ViewParams {
+    float4 c0_;
+    float4 c1_;
+    float4 c2_;
+    float4 c3_;
+    float3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    float3 f0_d;
+    float f90_d;
+};
+
 struct WorkgroupBox {
     float3 lo;
     int _pad1_0;
     float3 hi;
     int _end_pad_0;
+};
+
+struct GbTexel {
+    float4 position;
+    float4 normal;
 };
 
 static const uint LIGHT_POINT = 0u;
@@ -73,13 +93,14 @@ static const uint NEAR_CHUNK = 32u;
 groupshared float3 wg_lo[64];
 groupshared float3 wg_hi[64];
 cbuffer params : register(b0) { VplParams params; }
-ByteAddressBuffer gb_position : register(t1);
-ByteAddressBuffer gb_normal : register(t2);
-ByteAddressBuffer lights : register(t3);
-ByteAddressBuffer near_slots : register(t4);
-ByteAddressBuffer near_boxes : register(t5);
-ByteAddressBuffer r2_2 : register(t7);
-RWByteAddressBuffer irradiance : register(u8);
+cbuffer view : register(b1) { ViewParams view; }
+Texture2D<float4> position_tex : register(t2);
+Texture2D<float4> normal_tex : register(t3);
+ByteAddressBuffer lights : register(t4);
+ByteAddressBuffer near_slots : register(t5);
+ByteAddressBuffer near_boxes : register(t6);
+ByteAddressBuffer r2_2 : register(t8);
+RWByteAddressBuffer irradiance : register(u9);
 groupshared uint light_count;
 groupshared uint light_list[2048];
 
@@ -192,6 +213,48 @@ WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
     return workgroupbox;
 }
 
+float4 surface_at(int2 texel)
+{
+    float4 p_1 = position_tex.Load(int3(texel, int(0)));
+    return ((p_1.w > 0.0) ? float4(p_1.xyz, 1.0) : (0.0).xxxx);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
+    GbTexel ret = (GbTexel)0;
+    ret.position = arg0;
+    ret.normal = arg1;
+    return ret;
+}
+
+GbTexel gbuffer_at(uint i)
+{
+    bool local_5 = (bool)0;
+
+    uint _e3 = view.width;
+    uint _e8 = view.width;
+    int2 texel_1 = int2(int(naga_mod(i, _e3)), int(naga_div(i, _e8)));
+    const float4 _e12 = surface_at(texel_1);
+    float4 _e15 = normal_tex.Load(int3(texel_1, int(0)));
+    float3 n = _e15.xyz;
+    float len2_ = dot(n, n);
+    if ((_e12.w > 0.0)) {
+        local_5 = (len2_ > 0.0);
+    } else {
+        local_5 = false;
+    }
+    bool valid = local_5;
+    float3 _e30 = view.eye;
+    float3 v_2 = (_e12.xyz - _e30);
+    float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
+    float4 normal = (valid ? float4((n / (sqrt(len2_)).xxx), sqrt(dot(v_2, v_2))) : float4(0.0, 0.0, 0.0, 1e30));
+    const GbTexel gbtexel = ConstructGbTexel(position, normal);
+    return gbtexel;
+}
+
 float near_r2_of(uint slot)
 {
     float _e3 = asfloat(r2_2.Load(slot*4));
@@ -256,39 +319,38 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     uint _e27 = params.width;
     uint pix = ((py * _e27) + px);
     if (inside) {
-        float4 _e38 = asfloat(gb_position.Load4(pix*16));
-        pos = _e38;
-        float4 _e41 = asfloat(gb_normal.Load4(pix*16));
-        nrm = _e41.xyz;
+        const GbTexel _e36 = gbuffer_at(pix);
+        pos = _e36.position;
+        nrm = _e36.normal.xyz;
     }
     if (inside) {
-        float _e46 = pos.w;
-        local_1 = (_e46 > 0.0);
+        float _e43 = pos.w;
+        local_1 = (_e43 > 0.0);
     } else {
         local_1 = false;
     }
-    bool valid = local_1;
-    float4 _e51 = pos;
-    const WorkgroupBox _e53 = workgroup_box(li, _e51.xyz, valid);
-    float3 lo = _e53.lo;
-    float3 hi = _e53.hi;
-    float _e58 = params.near_r2_;
-    const float _e59 = cull_radius(_e58);
-    const float _e61 = interleave_flux_scale(P);
-    float unscale = (1.0 / _e61);
+    bool valid_1 = local_1;
+    float4 _e48 = pos;
+    const WorkgroupBox _e50 = workgroup_box(li, _e48.xyz, valid_1);
+    float3 lo = _e50.lo;
+    float3 hi = _e50.hi;
+    float _e55 = params.near_r2_;
+    const float _e56 = cull_radius(_e55);
+    const float _e58 = interleave_flux_scale(P);
+    float unscale = (1.0 / _e58);
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e194 = first;
-            first = (_e194 + NEAR_CHUNK);
+            uint _e191 = first;
+            first = (_e191 + NEAR_CHUNK);
         }
         loop_init_1 = false;
-        uint _e71 = first;
-        uint _e74 = params.near_blocks;
-        if ((_e71 < _e74)) {
+        uint _e68 = first;
+        uint _e71 = params.near_blocks;
+        if ((_e68 < _e71)) {
         } else {
             break;
         }
@@ -297,24 +359,24 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                 { uint dummy = 0; InterlockedExchange(light_count, 0u, dummy); }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e80 = first;
-            uint b = (_e80 + li);
+            uint _e77 = first;
+            uint b = (_e77 + li);
             if ((li < NEAR_CHUNK)) {
-                uint _e88 = params.near_blocks;
-                local_2 = (b < _e88);
+                uint _e85 = params.near_blocks;
+                local_2 = (b < _e85);
             } else {
                 local_2 = false;
             }
-            bool _e91 = local_2;
-            if (_e91) {
+            bool _e88 = local_2;
+            if (_e88) {
                 GpuNearBox nb = ConstructGpuNearBox(asfloat(near_boxes.Load3(b*32+0)), asfloat(near_boxes.Load(b*32+12)), asfloat(near_boxes.Load3(b*32+16)), asfloat(near_boxes.Load(b*32+28)));
-                if (all(((nb.lo - (_e59).xxx) <= hi))) {
-                    local_3 = all((lo <= (nb.hi + (_e59).xxx)));
+                if (all(((nb.lo - (_e56).xxx) <= hi))) {
+                    local_3 = all((lo <= (nb.hi + (_e56).xxx)));
                 } else {
                     local_3 = false;
                 }
-                bool _e108 = local_3;
-                if (_e108) {
+                bool _e105 = local_3;
+                if (_e105) {
                     m = 0u;
                     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
                     bool loop_init_2 = true;
@@ -322,42 +384,42 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
                         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                         if (!loop_init_2) {
-                            uint _e147 = m;
-                            m = (_e147 + 1u);
+                            uint _e144 = m;
+                            m = (_e144 + 1u);
                         }
                         loop_init_2 = false;
-                        uint _e111 = m;
-                        if ((_e111 < NEAR_BLOCK)) {
+                        uint _e108 = m;
+                        if ((_e108 < NEAR_BLOCK)) {
                         } else {
                             break;
                         }
                         {
-                            uint _e117 = m;
-                            uint slot_1 = asuint(near_slots.Load(((b * NEAR_BLOCK) + _e117)*4));
+                            uint _e114 = m;
+                            uint slot_1 = asuint(near_slots.Load(((b * NEAR_BLOCK) + _e114)*4));
                             GpuLight l = ConstructGpuLight(asfloat(lights.Load3(slot_1*64+0)), asuint(lights.Load(slot_1*64+12)), asfloat(lights.Load3(slot_1*64+16)), asfloat(lights.Load(slot_1*64+28)), asfloat(lights.Load3(slot_1*64+32)), asfloat(lights.Load(slot_1*64+44)), asfloat(lights.Load3(slot_1*64+48)), asuint(lights.Load(slot_1*64+60)));
-                            const float _e124 = near_r2_of(slot_1);
-                            float _e127 = params.near_r2_;
-                            const float _e128 = vpl_near_cull_range2_(_e124, _e127);
-                            const float _e129 = cull_radius(_e128);
+                            const float _e121 = near_r2_of(slot_1);
+                            float _e124 = params.near_r2_;
+                            const float _e125 = vpl_near_cull_range2_(_e121, _e124);
+                            const float _e126 = cull_radius(_e125);
                             if (any((l.intensity != (0.0).xxx))) {
-                                const bool _e138 = sphere_overlaps_aabb(l.p0_, _e129, lo, hi);
-                                local_4 = _e138;
+                                const bool _e135 = sphere_overlaps_aabb(l.p0_, _e126, lo, hi);
+                                local_4 = _e135;
                             } else {
                                 local_4 = false;
                             }
-                            bool _e140 = local_4;
-                            if (_e140) {
-                                uint _e144; InterlockedAdd(light_count, 1u, _e144);
-                                light_list[min(uint(_e144), 2047u)] = slot_1;
+                            bool _e137 = local_4;
+                            if (_e137) {
+                                uint _e141; InterlockedAdd(light_count, 1u, _e141);
+                                light_list[min(uint(_e141), 2047u)] = slot_1;
                             }
                         }
                     }
                 }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e150 = light_count;
+            uint _e147 = light_count;
             GroupMemoryBarrierWithGroupSync();
-            if (valid) {
+            if (valid_1) {
                 m_1 = 0u;
                 uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
                 bool loop_init_3 = true;
@@ -365,32 +427,32 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e192 = m_1;
-                        m_1 = (_e192 + 1u);
+                        uint _e189 = m_1;
+                        m_1 = (_e189 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e153 = m_1;
-                    if ((_e153 < _e150)) {
+                    uint _e150 = m_1;
+                    if ((_e150 < _e147)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e156 = m_1;
-                        uint slot_2 = light_list[min(uint(_e156), 2047u)];
+                        uint _e153 = m_1;
+                        uint slot_2 = light_list[min(uint(_e153), 2047u)];
                         GpuLight l_1 = ConstructGpuLight(asfloat(lights.Load3(slot_2*64+0)), asuint(lights.Load(slot_2*64+12)), asfloat(lights.Load3(slot_2*64+16)), asfloat(lights.Load(slot_2*64+28)), asfloat(lights.Load3(slot_2*64+32)), asfloat(lights.Load(slot_2*64+44)), asfloat(lights.Load3(slot_2*64+48)), asuint(lights.Load(slot_2*64+60)));
-                        float4 _e162 = pos;
-                        float3 v_2 = (_e162.xyz - l_1.p0_);
-                        float _e168 = asfloat(r2_2.Load(slot_2*4));
-                        float _e172 = params.near_r2_;
-                        const float _e173 = vpl_near_fixed_share(_e168, dot(v_2, v_2), _e172);
-                        if ((_e173 > 0.0)) {
-                            float3 _e176 = e;
-                            float3 _e179 = nrm;
-                            float _e182 = params.min_d2_;
-                            const float _e183 = vpl_transfer(l_1.p1_, _e179, v_2, _e182);
-                            e = (_e176 + (l_1.intensity * ((_e183 * _e173) * unscale)));
-                            uint _e188 = kept;
-                            kept = (_e188 + 1u);
+                        float4 _e159 = pos;
+                        float3 v_3 = (_e159.xyz - l_1.p0_);
+                        float _e165 = asfloat(r2_2.Load(slot_2*4));
+                        float _e169 = params.near_r2_;
+                        const float _e170 = vpl_near_fixed_share(_e165, dot(v_3, v_3), _e169);
+                        if ((_e170 > 0.0)) {
+                            float3 _e173 = e;
+                            float3 _e176 = nrm;
+                            float _e179 = params.min_d2_;
+                            const float _e180 = vpl_transfer(l_1.p1_, _e176, v_3, _e179);
+                            e = (_e173 + (l_1.intensity * ((_e180 * _e170) * unscale)));
+                            uint _e185 = kept;
+                            kept = (_e185 + 1u);
                         }
                     }
                 }
@@ -398,11 +460,11 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    if (valid) {
+    if (valid_1) {
         float4 old = asfloat(irradiance.Load4(pix*16));
-        float3 _e203 = e;
-        uint _e206 = kept;
-        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e203), (old.w + float(_e206)))));
+        float3 _e200 = e;
+        uint _e203 = kept;
+        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e200), (old.w + float(_e203)))));
         return;
     } else {
         return;

@@ -20,11 +20,31 @@ struct VplParams {
     uint pad1_;
 };
 
+struct ViewParams {
+    float4 c0_;
+    float4 c1_;
+    float4 c2_;
+    float4 c3_;
+    float3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    float3 f0_d;
+    float f90_d;
+};
+
 struct WorkgroupBox {
     float3 lo;
     int _pad1_0;
     float3 hi;
     int _end_pad_0;
+};
+
+struct GbTexel {
+    float4 position;
+    float4 normal;
 };
 
 static const uint LIGHT_POINT = 0u;
@@ -66,11 +86,12 @@ static const uint MAX_TILE_LIGHTS = 1024u;
 groupshared float3 wg_lo[64];
 groupshared float3 wg_hi[64];
 cbuffer params : register(b0) { VplParams params; }
-ByteAddressBuffer gb_position : register(t1);
-ByteAddressBuffer gb_normal : register(t2);
-ByteAddressBuffer lights : register(t3);
-ByteAddressBuffer r2_1 : register(t5);
-RWByteAddressBuffer irradiance : register(u6);
+cbuffer view : register(b1) { ViewParams view; }
+Texture2D<float4> position_tex : register(t2);
+Texture2D<float4> normal_tex : register(t3);
+ByteAddressBuffer lights : register(t4);
+ByteAddressBuffer r2_1 : register(t6);
+RWByteAddressBuffer irradiance : register(u7);
 groupshared uint tile_count;
 groupshared uint tile_lights[1024];
 
@@ -173,8 +194,46 @@ WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
     return workgroupbox;
 }
 
+float4 surface_at(int2 texel)
+{
+    float4 p_1 = position_tex.Load(int3(texel, int(0)));
+    return ((p_1.w > 0.0) ? float4(p_1.xyz, 1.0) : (0.0).xxxx);
+}
+
 uint naga_mod(uint lhs, uint rhs) {
     return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
+    GbTexel ret = (GbTexel)0;
+    ret.position = arg0;
+    ret.normal = arg1;
+    return ret;
+}
+
+GbTexel gbuffer_at(uint i)
+{
+    bool local_2 = (bool)0;
+
+    uint _e3 = view.width;
+    uint _e8 = view.width;
+    int2 texel_1 = int2(int(naga_mod(i, _e3)), int(naga_div(i, _e8)));
+    const float4 _e12 = surface_at(texel_1);
+    float4 _e15 = normal_tex.Load(int3(texel_1, int(0)));
+    float3 n = _e15.xyz;
+    float len2_ = dot(n, n);
+    if ((_e12.w > 0.0)) {
+        local_2 = (len2_ > 0.0);
+    } else {
+        local_2 = false;
+    }
+    bool valid = local_2;
+    float3 _e30 = view.eye;
+    float3 v_2 = (_e12.xyz - _e30);
+    float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
+    float4 normal = (valid ? float4((n / (sqrt(len2_)).xxx), sqrt(dot(v_2, v_2))) : float4(0.0, 0.0, 0.0, 1e30));
+    const GbTexel gbtexel = ConstructGbTexel(position, normal);
+    return gbtexel;
 }
 
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
@@ -224,86 +283,85 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     uint _e38 = params.width;
     uint pix = ((py * _e38) + px);
     if (inside) {
-        float4 _e49 = asfloat(gb_position.Load4(pix*16));
-        pos = _e49;
-        float4 _e52 = asfloat(gb_normal.Load4(pix*16));
-        nrm = _e52.xyz;
+        const GbTexel _e47 = gbuffer_at(pix);
+        pos = _e47.position;
+        nrm = _e47.normal.xyz;
     }
     if (inside) {
-        float _e57 = pos.w;
-        local_1 = (_e57 > 0.0);
+        float _e54 = pos.w;
+        local_1 = (_e54 > 0.0);
     } else {
         local_1 = false;
     }
-    bool valid = local_1;
-    float4 _e62 = pos;
-    const WorkgroupBox _e64 = workgroup_box(li, _e62.xyz, valid);
-    float3 lo = _e64.lo;
-    float3 hi = _e64.hi;
-    uint _e69 = params.lights_per_subset;
-    uint base = (sub * _e69);
+    bool valid_1 = local_1;
+    float4 _e59 = pos;
+    const WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
+    float3 lo = _e61.lo;
+    float3 hi = _e61.hi;
+    uint _e66 = params.lights_per_subset;
+    uint base = (sub * _e66);
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e170 = first;
-            first = (_e170 + MAX_TILE_LIGHTS);
+            uint _e167 = first;
+            first = (_e167 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
-        uint _e78 = first;
-        uint _e81 = params.lights_per_subset;
-        if ((_e78 < _e81)) {
+        uint _e75 = first;
+        uint _e78 = params.lights_per_subset;
+        if ((_e75 < _e78)) {
         } else {
             break;
         }
         {
-            uint _e83 = first;
-            uint _e88 = params.lights_per_subset;
-            uint end = min((_e83 + MAX_TILE_LIGHTS), _e88);
+            uint _e80 = first;
+            uint _e85 = params.lights_per_subset;
+            uint end = min((_e80 + MAX_TILE_LIGHTS), _e85);
             if ((li == 0u)) {
                 { uint dummy = 0; InterlockedExchange(tile_count, 0u, dummy); }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e94 = first;
-            j = (_e94 + li);
+            uint _e91 = first;
+            j = (_e91 + li);
             uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
             bool loop_init_2 = true;
             while(true) {
                 if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
                 loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e120 = j;
-                    j = (_e120 + THREADS);
+                    uint _e117 = j;
+                    j = (_e117 + THREADS);
                 }
                 loop_init_2 = false;
-                uint _e97 = j;
-                if ((_e97 < end)) {
+                uint _e94 = j;
+                if ((_e94 < end)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e100 = j;
-                    float3 _e104 = asfloat(lights.Load3(0+(base + _e100)*64));
-                    uint _e106 = j;
-                    float _e109 = asfloat(r2_1.Load((base + _e106)*4));
-                    const float _e110 = cull_radius(_e109);
-                    const bool _e111 = sphere_overlaps_aabb(_e104, _e110, lo, hi);
-                    if (_e111) {
-                        uint _e114; InterlockedAdd(tile_count, 1u, _e114);
-                        if ((_e114 < MAX_TILE_LIGHTS)) {
-                            uint _e119 = j;
-                            tile_lights[min(uint(_e114), 1023u)] = _e119;
+                    uint _e97 = j;
+                    float3 _e101 = asfloat(lights.Load3(0+(base + _e97)*64));
+                    uint _e103 = j;
+                    float _e106 = asfloat(r2_1.Load((base + _e103)*4));
+                    const float _e107 = cull_radius(_e106);
+                    const bool _e108 = sphere_overlaps_aabb(_e101, _e107, lo, hi);
+                    if (_e108) {
+                        uint _e111; InterlockedAdd(tile_count, 1u, _e111);
+                        if ((_e111 < MAX_TILE_LIGHTS)) {
+                            uint _e116 = j;
+                            tile_lights[min(uint(_e111), 1023u)] = _e116;
                         }
                     }
                 }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e124 = tile_count;
+            uint _e121 = tile_count;
             GroupMemoryBarrierWithGroupSync();
-            uint count = min(_e124, MAX_TILE_LIGHTS);
-            if (valid) {
+            uint count = min(_e121, MAX_TILE_LIGHTS);
+            if (valid_1) {
                 k = 0u;
                 uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
                 bool loop_init_3 = true;
@@ -311,33 +369,33 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e168 = k;
-                        k = (_e168 + 1u);
+                        uint _e165 = k;
+                        k = (_e165 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e129 = k;
-                    if ((_e129 < count)) {
+                    uint _e126 = k;
+                    if ((_e126 < count)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e132 = k;
-                        uint _e134 = tile_lights[min(uint(_e132), 1023u)];
-                        uint j_1 = (base + _e134);
+                        uint _e129 = k;
+                        uint _e131 = tile_lights[min(uint(_e129), 1023u)];
+                        uint j_1 = (base + _e131);
                         GpuLight l = ConstructGpuLight(asfloat(lights.Load3(j_1*64+0)), asuint(lights.Load(j_1*64+12)), asfloat(lights.Load3(j_1*64+16)), asfloat(lights.Load(j_1*64+28)), asfloat(lights.Load3(j_1*64+32)), asfloat(lights.Load(j_1*64+44)), asfloat(lights.Load3(j_1*64+48)), asuint(lights.Load(j_1*64+60)));
-                        float4 _e139 = pos;
-                        float3 v_2 = (_e139.xyz - l.p0_);
-                        float _e145 = asfloat(r2_1.Load(j_1*4));
-                        float _e149 = params.near_r2_;
-                        const float _e150 = vpl_far_fixed_share(_e145, dot(v_2, v_2), _e149);
-                        if ((_e150 > 0.0)) {
-                            float3 _e153 = e;
-                            float3 _e156 = nrm;
-                            float _e159 = params.min_d2_;
-                            const float _e160 = vpl_transfer(l.p1_, _e156, v_2, _e159);
-                            e = (_e153 + (l.intensity * (_e160 * _e150)));
-                            uint _e164 = kept;
-                            kept = (_e164 + 1u);
+                        float4 _e136 = pos;
+                        float3 v_3 = (_e136.xyz - l.p0_);
+                        float _e142 = asfloat(r2_1.Load(j_1*4));
+                        float _e146 = params.near_r2_;
+                        const float _e147 = vpl_far_fixed_share(_e142, dot(v_3, v_3), _e146);
+                        if ((_e147 > 0.0)) {
+                            float3 _e150 = e;
+                            float3 _e153 = nrm;
+                            float _e156 = params.min_d2_;
+                            const float _e157 = vpl_transfer(l.p1_, _e153, v_3, _e156);
+                            e = (_e150 + (l.intensity * (_e157 * _e147)));
+                            uint _e161 = kept;
+                            kept = (_e161 + 1u);
                         }
                     }
                 }
@@ -345,10 +403,10 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
             GroupMemoryBarrierWithGroupSync();
         }
     }
-    if (valid) {
-        float3 _e175 = e;
-        uint _e176 = kept;
-        irradiance.Store4(pix*16, asuint(float4(_e175, float(_e176))));
+    if (inside) {
+        float3 _e172 = e;
+        uint _e173 = kept;
+        irradiance.Store4(pix*16, asuint(float4(_e172, float(_e173))));
         return;
     } else {
         return;

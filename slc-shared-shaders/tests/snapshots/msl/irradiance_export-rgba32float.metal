@@ -5,8 +5,7 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size1;
-    uint size2;
+    uint size3;
 };
 
 struct ViewParams {
@@ -23,7 +22,11 @@ struct ViewParams {
     metal::packed_float3 f0_d;
     float f90_d;
 };
-typedef metal::float4 type_5[1];
+typedef metal::float4 type_6[1];
+struct GbTexel {
+    metal::float4 position;
+    metal::float4 normal;
+};
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -55,13 +58,57 @@ constant float COVER_WEIGHT = 0.1;
 constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
 
+metal::float4 surface_at(
+    metal::int2 texel,
+    metal::texture2d<float, metal::access::sample> position_tex
+) {
+    metal::float4 p = position_tex.read(metal::uint2(texel), 0);
+    return (p.w > 0.0) ? metal::float4(p.xyz, 1.0) : metal::float4(0.0);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+GbTexel gbuffer_at(
+    uint i,
+    constant ViewParams& view,
+    metal::texture2d<float, metal::access::sample> position_tex,
+    metal::texture2d<float, metal::access::sample> normal_tex
+) {
+    bool local_1 = {};
+    uint _e3 = view.width;
+    uint _e8 = view.width;
+    metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
+    metal::float4 _e12 = surface_at(texel_1, position_tex);
+    metal::float4 _e15 = normal_tex.read(metal::uint2(texel_1), 0);
+    metal::float3 n = _e15.xyz;
+    float len2_ = metal::dot(n, n);
+    if (_e12.w > 0.0) {
+        local_1 = len2_ > 0.0;
+    } else {
+        local_1 = false;
+    }
+    bool valid = local_1;
+    metal::float3 _e30 = view.eye;
+    metal::float3 v = _e12.xyz - _e30;
+    metal::float4 position = metal::float4(_e12.xyz, valid ? 1.0 : 0.0);
+    metal::float4 normal = valid ? metal::float4(n / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v, v))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
+    return GbTexel {position, normal};
+}
+
 struct main_Input {
 };
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
 , constant ViewParams& view [[user(fake0)]]
-, device type_5 const& gb_position [[user(fake0)]]
-, device type_5 const& irradiance [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
+, device type_6 const& irradiance [[user(fake0)]]
 , metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
@@ -78,10 +125,10 @@ kernel void main_(
         return;
     }
     uint _e19 = view.width;
-    uint i = (gid.y * _e19) + gid.x;
-    metal::float4 _e27 = irradiance[i];
-    float _e31 = gb_position[i].w;
-    metal::float4 e = (_e31 > 0.0) ? _e27 : metal::float4(0.0);
+    uint i_1 = (gid.y * _e19) + gid.x;
+    metal::float4 _e27 = irradiance[i_1];
+    GbTexel _e28 = gbuffer_at(i_1, view, position_tex, normal_tex);
+    metal::float4 e = (_e28.position.w > 0.0) ? _e27 : metal::float4(0.0);
     out_tex.write(e, metal::uint2(metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y))));
     return;
 }

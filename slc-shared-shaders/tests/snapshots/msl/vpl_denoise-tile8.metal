@@ -5,10 +5,8 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size1;
-    uint size2;
-    uint size3;
     uint size4;
+    uint size5;
 };
 
 struct VplParams {
@@ -21,7 +19,25 @@ struct VplParams {
     uint pad0_;
     uint pad1_;
 };
-typedef metal::float4 type_5[1];
+struct ViewParams {
+    metal::float4 c0_;
+    metal::float4 c1_;
+    metal::float4 c2_;
+    metal::float4 c3_;
+    metal::packed_float3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    metal::packed_float3 f0_d;
+    float f90_d;
+};
+typedef metal::float4 type_6[1];
+struct GbTexel {
+    metal::float4 position;
+    metal::float4 normal;
+};
 struct Window {
     metal::packed_float3 sum;
     float weight;
@@ -126,15 +142,43 @@ float bilateral_weight(
     return ((dn8_ * dn8_) * t) * t;
 }
 
-float depth_of(
-    uint i,
-    device type_5 const& gb_position,
-    device type_5 const& gb_normal,
-    constant _mslBufferSizes& _buffer_sizes
+metal::float4 surface_at(
+    metal::int2 texel,
+    metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    float _e5 = gb_normal[i].w;
-    float _e9 = gb_position[i].w;
-    return (_e9 > 0.0) ? _e5 : DEPTH_NONE;
+    metal::float4 p = position_tex.read(metal::uint2(texel), 0);
+    return (p.w > 0.0) ? metal::float4(p.xyz, 1.0) : metal::float4(0.0);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+GbTexel gbuffer_at(
+    uint i,
+    constant ViewParams& view,
+    metal::texture2d<float, metal::access::sample> position_tex,
+    metal::texture2d<float, metal::access::sample> normal_tex
+) {
+    bool local_1 = {};
+    uint _e3 = view.width;
+    uint _e8 = view.width;
+    metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
+    metal::float4 _e12 = surface_at(texel_1, position_tex);
+    metal::float4 _e15 = normal_tex.read(metal::uint2(texel_1), 0);
+    metal::float3 n_2 = _e15.xyz;
+    float len2_ = metal::dot(n_2, n_2);
+    if (_e12.w > 0.0) {
+        local_1 = len2_ > 0.0;
+    } else {
+        local_1 = false;
+    }
+    bool valid = local_1;
+    metal::float3 _e30 = view.eye;
+    metal::float3 v = _e12.xyz - _e30;
+    metal::float4 position = metal::float4(_e12.xyz, valid ? 1.0 : 0.0);
+    metal::float4 normal = valid ? metal::float4(n_2 / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v, v))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
+    return GbTexel {position, normal};
 }
 
 Window window_sum(
@@ -145,9 +189,10 @@ Window window_sum(
     float z_2,
     float inv,
     constant VplParams& params,
-    device type_5 const& gb_position,
-    device type_5 const& gb_normal,
-    device type_5 const& irradiance,
+    constant ViewParams& view,
+    metal::texture2d<float, metal::access::sample> position_tex,
+    metal::texture2d<float, metal::access::sample> normal_tex,
+    device type_6 const& irradiance,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Window win = {};
@@ -199,9 +244,8 @@ Window window_sum(
                     uint _e30 = yy;
                     uint _e32 = xx;
                     uint j = (_e30 * w) + _e32;
-                    metal::float4 _e36 = gb_normal[j];
-                    float _e38 = depth_of(j, gb_position, gb_normal, _buffer_sizes);
-                    float _e39 = bilateral_weight(n_1, _e36.xyz, z_2, _e38, inv);
+                    GbTexel _e34 = gbuffer_at(j, view, position_tex, normal_tex);
+                    float _e39 = bilateral_weight(n_1, _e34.normal.xyz, z_2, _e34.normal.w, inv);
                     metal::float3 _e41 = win.sum;
                     metal::float4 _e44 = irradiance[j];
                     win.sum = _e41 + (_e44.xyz * _e39);
@@ -222,10 +266,11 @@ struct main_Input {
 kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
 , constant VplParams& params [[user(fake0)]]
-, device type_5 const& gb_position [[user(fake0)]]
-, device type_5 const& gb_normal [[user(fake0)]]
-, device type_5 const& irradiance [[user(fake0)]]
-, device type_5& filtered [[user(fake0)]]
+, constant ViewParams& view [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
+, device type_6 const& irradiance [[user(fake0)]]
+, device type_6& filtered [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     bool local = {};
@@ -243,27 +288,26 @@ kernel void main_(
     }
     uint i_1 = (gid.y * w_1) + gid.x;
     metal::float4 e_1 = irradiance[i_1];
-    float _e26 = gb_position[i_1].w;
-    if (_e26 <= 0.0) {
+    GbTexel _e23 = gbuffer_at(i_1, view, position_tex, normal_tex);
+    if (_e23.position.w <= 0.0) {
         filtered[i_1] = metal::float4(0.0, 0.0, 0.0, e_1.w);
         return;
     }
-    metal::float4 _e38 = gb_normal[i_1];
-    metal::float3 n_2 = _e38.xyz;
-    float _e40 = depth_of(i_1, gb_position, gb_normal, _buffer_sizes);
-    float _e41 = inv_sigma_z(_e40);
-    Window _e45 = window_sum(gid.x, gid.y, PERIOD, n_2, _e40, _e41, params, gb_position, gb_normal, irradiance, _buffer_sizes);
-    s = _e45;
-    uint _e48 = s.covered;
-    bool _e50 = misses_subset(_e48, PERIOD);
-    if (_e50) {
-        uint _e54 = wide_window(PERIOD);
-        Window _e55 = window_sum(gid.x, gid.y, _e54, n_2, _e40, _e41, params, gb_position, gb_normal, irradiance, _buffer_sizes);
-        s = _e55;
+    metal::float3 n_3 = _e23.normal.xyz;
+    float z_3 = _e23.normal.w;
+    float _e39 = inv_sigma_z(z_3);
+    Window _e43 = window_sum(gid.x, gid.y, PERIOD, n_3, z_3, _e39, params, view, position_tex, normal_tex, irradiance, _buffer_sizes);
+    s = _e43;
+    uint _e46 = s.covered;
+    bool _e48 = misses_subset(_e46, PERIOD);
+    if (_e48) {
+        uint _e52 = wide_window(PERIOD);
+        Window _e53 = window_sum(gid.x, gid.y, _e52, n_3, z_3, _e39, params, view, position_tex, normal_tex, irradiance, _buffer_sizes);
+        s = _e53;
     }
-    metal::float3 _e60 = s.sum;
-    float _e62 = s.weight;
-    metal::float3 _e63 = filtered_irradiance(e_1.xyz, _e60, _e62);
-    filtered[i_1] = metal::float4(_e63, e_1.w);
+    metal::float3 _e58 = s.sum;
+    float _e60 = s.weight;
+    metal::float3 _e61 = filtered_irradiance(e_1.xyz, _e58, _e60);
+    filtered[i_1] = metal::float4(_e61, e_1.w);
     return;
 }

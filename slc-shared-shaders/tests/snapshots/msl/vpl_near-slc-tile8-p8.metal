@@ -5,14 +5,12 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size3;
-    uint size4;
-    uint size5;
     uint size6;
     uint size7;
     uint size8;
     uint size9;
     uint size10;
+    uint size11;
 };
 
 struct GpuLight {
@@ -41,6 +39,20 @@ struct GpuNearBox {
     metal::packed_float3 hi;
     float pad1_;
 };
+struct ViewParams {
+    metal::float4 c0_;
+    metal::float4 c1_;
+    metal::float4 c2_;
+    metal::float4 c3_;
+    metal::packed_float3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    metal::packed_float3 f0_d;
+    float f90_d;
+};
 typedef float type_4[1];
 struct type_6 {
     metal::float3 inner[64];
@@ -49,11 +61,15 @@ struct WorkgroupBox {
     metal::float3 lo;
     metal::float3 hi;
 };
-typedef metal::float4 type_7[1];
 typedef GpuLight type_8[1];
 typedef uint type_9[1];
 typedef GpuNearBox type_10[1];
-struct type_12 {
+typedef metal::float4 type_11[1];
+struct GbTexel {
+    metal::float4 position;
+    metal::float4 normal;
+};
+struct type_14 {
     uint inner[2048];
 };
 constant uint LIGHT_POINT = 0u;
@@ -237,6 +253,45 @@ WorkgroupBox workgroup_box(
     return WorkgroupBox {_e47, _e50};
 }
 
+metal::float4 surface_at(
+    metal::int2 texel,
+    metal::texture2d<float, metal::access::sample> position_tex
+) {
+    metal::float4 p_1 = position_tex.read(metal::uint2(texel), 0);
+    return (p_1.w > 0.0) ? metal::float4(p_1.xyz, 1.0) : metal::float4(0.0);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+GbTexel gbuffer_at(
+    uint i,
+    constant ViewParams& view,
+    metal::texture2d<float, metal::access::sample> position_tex,
+    metal::texture2d<float, metal::access::sample> normal_tex
+) {
+    bool local_5 = {};
+    uint _e3 = view.width;
+    uint _e8 = view.width;
+    metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
+    metal::float4 _e12 = surface_at(texel_1, position_tex);
+    metal::float4 _e15 = normal_tex.read(metal::uint2(texel_1), 0);
+    metal::float3 n = _e15.xyz;
+    float len2_ = metal::dot(n, n);
+    if (_e12.w > 0.0) {
+        local_5 = len2_ > 0.0;
+    } else {
+        local_5 = false;
+    }
+    bool valid = local_5;
+    metal::float3 _e30 = view.eye;
+    metal::float3 v_2 = _e12.xyz - _e30;
+    metal::float4 position = metal::float4(_e12.xyz, valid ? 1.0 : 0.0);
+    metal::float4 normal = valid ? metal::float4(n / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_2, v_2))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
+    return GbTexel {position, normal};
+}
+
 float near_r2_of(
     uint slot,
     device type_4 const& r2_5,
@@ -256,16 +311,17 @@ kernel void main_(
 , threadgroup type_6& wg_lo
 , threadgroup type_6& wg_hi
 , constant VplParams& params [[user(fake0)]]
-, device type_7 const& gb_position [[user(fake0)]]
-, device type_7 const& gb_normal [[user(fake0)]]
+, constant ViewParams& view [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
 , device type_8 const& lights [[user(fake0)]]
 , device type_9 const& near_slots [[user(fake0)]]
 , device type_10 const& near_boxes [[user(fake0)]]
 , device type_4 const& rt2_2 [[user(fake0)]]
 , device type_4 const& r2_5 [[user(fake0)]]
-, device type_7& irradiance [[user(fake0)]]
+, device type_11& irradiance [[user(fake0)]]
 , threadgroup metal::atomic_uint& light_count
-, threadgroup type_12& light_list
+, threadgroup type_14& light_list
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     if (li == 0u) {
@@ -300,39 +356,38 @@ kernel void main_(
     uint _e27 = params.width;
     uint pix = (py * _e27) + px;
     if (inside) {
-        metal::float4 _e38 = gb_position[pix];
-        pos = _e38;
-        metal::float4 _e41 = gb_normal[pix];
-        nrm = _e41.xyz;
+        GbTexel _e36 = gbuffer_at(pix, view, position_tex, normal_tex);
+        pos = _e36.position;
+        nrm = _e36.normal.xyz;
     }
     if (inside) {
-        float _e46 = pos.w;
-        local_1 = _e46 > 0.0;
+        float _e43 = pos.w;
+        local_1 = _e43 > 0.0;
     } else {
         local_1 = false;
     }
-    bool valid = local_1;
-    metal::float4 _e51 = pos;
-    WorkgroupBox _e53 = workgroup_box(li, _e51.xyz, valid, wg_lo, wg_hi);
-    metal::float3 lo = _e53.lo;
-    metal::float3 hi = _e53.hi;
-    float _e58 = params.near_r2_;
-    float _e59 = cull_radius(_e58);
-    float _e61 = interleave_flux_scale(P);
-    float unscale = 1.0 / _e61;
+    bool valid_1 = local_1;
+    metal::float4 _e48 = pos;
+    WorkgroupBox _e50 = workgroup_box(li, _e48.xyz, valid_1, wg_lo, wg_hi);
+    metal::float3 lo = _e50.lo;
+    metal::float3 hi = _e50.hi;
+    float _e55 = params.near_r2_;
+    float _e56 = cull_radius(_e55);
+    float _e58 = interleave_flux_scale(P);
+    float unscale = 1.0 / _e58;
     uint2 loop_bound_1 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e197 = first;
-            first = _e197 + NEAR_CHUNK;
+            uint _e194 = first;
+            first = _e194 + NEAR_CHUNK;
         }
         loop_init_1 = false;
-        uint _e71 = first;
-        uint _e74 = params.near_blocks;
-        if (_e71 < _e74) {
+        uint _e68 = first;
+        uint _e71 = params.near_blocks;
+        if (_e68 < _e71) {
         } else {
             break;
         }
@@ -341,24 +396,24 @@ kernel void main_(
                 metal::atomic_store_explicit(&light_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint _e80 = first;
-            uint b = _e80 + li;
+            uint _e77 = first;
+            uint b = _e77 + li;
             if (li < NEAR_CHUNK) {
-                uint _e88 = params.near_blocks;
-                local_2 = b < _e88;
+                uint _e85 = params.near_blocks;
+                local_2 = b < _e85;
             } else {
                 local_2 = false;
             }
-            bool _e91 = local_2;
-            if (_e91) {
+            bool _e88 = local_2;
+            if (_e88) {
                 GpuNearBox nb = near_boxes[b];
-                if (metal::all((nb.lo - metal::float3(_e59)) <= hi)) {
-                    local_3 = metal::all(lo <= (nb.hi + metal::float3(_e59)));
+                if (metal::all((nb.lo - metal::float3(_e56)) <= hi)) {
+                    local_3 = metal::all(lo <= (nb.hi + metal::float3(_e56)));
                 } else {
                     local_3 = false;
                 }
-                bool _e108 = local_3;
-                if (_e108) {
+                bool _e105 = local_3;
+                if (_e105) {
                     m = 0u;
                     uint2 loop_bound_2 = uint2(4294967295u);
                     bool loop_init_2 = true;
@@ -366,33 +421,33 @@ kernel void main_(
                         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
                         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                         if (!loop_init_2) {
-                            uint _e147 = m;
-                            m = _e147 + 1u;
+                            uint _e144 = m;
+                            m = _e144 + 1u;
                         }
                         loop_init_2 = false;
-                        uint _e111 = m;
-                        if (_e111 < NEAR_BLOCK) {
+                        uint _e108 = m;
+                        if (_e108 < NEAR_BLOCK) {
                         } else {
                             break;
                         }
                         {
-                            uint _e117 = m;
-                            uint slot_1 = near_slots[(b * NEAR_BLOCK) + _e117];
+                            uint _e114 = m;
+                            uint slot_1 = near_slots[(b * NEAR_BLOCK) + _e114];
                             GpuLight l = lights[slot_1];
-                            float _e124 = near_r2_of(slot_1, r2_5, _buffer_sizes);
-                            float _e127 = params.near_r2_;
-                            float _e128 = vpl_near_cull_range2_(_e124, _e127);
-                            float _e129 = cull_radius(_e128);
+                            float _e121 = near_r2_of(slot_1, r2_5, _buffer_sizes);
+                            float _e124 = params.near_r2_;
+                            float _e125 = vpl_near_cull_range2_(_e121, _e124);
+                            float _e126 = cull_radius(_e125);
                             if (metal::any(l.intensity != metal::float3(0.0))) {
-                                bool _e138 = sphere_overlaps_aabb(l.p0_, _e129, lo, hi);
-                                local_4 = _e138;
+                                bool _e135 = sphere_overlaps_aabb(l.p0_, _e126, lo, hi);
+                                local_4 = _e135;
                             } else {
                                 local_4 = false;
                             }
-                            bool _e140 = local_4;
-                            if (_e140) {
-                                uint _e144 = metal::atomic_fetch_add_explicit(&light_count, 1u, metal::memory_order_relaxed);
-                                light_list.inner[_e144] = slot_1;
+                            bool _e137 = local_4;
+                            if (_e137) {
+                                uint _e141 = metal::atomic_fetch_add_explicit(&light_count, 1u, metal::memory_order_relaxed);
+                                light_list.inner[_e141] = slot_1;
                             }
                         }
                     }
@@ -401,7 +456,7 @@ kernel void main_(
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
             uint unnamed = metal::atomic_load_explicit(&light_count, metal::memory_order_relaxed);
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            if (valid) {
+            if (valid_1) {
                 m_1 = 0u;
                 uint2 loop_bound_3 = uint2(4294967295u);
                 bool loop_init_3 = true;
@@ -409,34 +464,34 @@ kernel void main_(
                     if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e195 = m_1;
-                        m_1 = _e195 + 1u;
+                        uint _e192 = m_1;
+                        m_1 = _e192 + 1u;
                     }
                     loop_init_3 = false;
-                    uint _e153 = m_1;
-                    if (_e153 < unnamed) {
+                    uint _e150 = m_1;
+                    if (_e150 < unnamed) {
                     } else {
                         break;
                     }
                     {
-                        uint _e156 = m_1;
-                        uint slot_2 = light_list.inner[_e156];
+                        uint _e153 = m_1;
+                        uint slot_2 = light_list.inner[_e153];
                         GpuLight l_1 = lights[slot_2];
-                        metal::float4 _e162 = pos;
-                        metal::float3 v_2 = _e162.xyz - l_1.p0_;
-                        float _e168 = rt2_2[slot_2];
-                        float _e170 = vpl_near_range2_(_e168, P);
-                        float _e171 = near_r2_of(slot_2, r2_5, _buffer_sizes);
-                        float _e175 = params.near_r2_;
-                        float _e176 = vpl_near_slc_share(_e170, _e171, metal::dot(v_2, v_2), _e175);
-                        if (_e176 > 0.0) {
-                            metal::float3 _e179 = e;
-                            metal::float3 _e182 = nrm;
-                            float _e185 = params.min_d2_;
-                            float _e186 = vpl_transfer(l_1.p1_, _e182, v_2, _e185);
-                            e = _e179 + (l_1.intensity * ((_e186 * _e176) * unscale));
-                            uint _e191 = kept;
-                            kept = _e191 + 1u;
+                        metal::float4 _e159 = pos;
+                        metal::float3 v_3 = _e159.xyz - l_1.p0_;
+                        float _e165 = rt2_2[slot_2];
+                        float _e167 = vpl_near_range2_(_e165, P);
+                        float _e168 = near_r2_of(slot_2, r2_5, _buffer_sizes);
+                        float _e172 = params.near_r2_;
+                        float _e173 = vpl_near_slc_share(_e167, _e168, metal::dot(v_3, v_3), _e172);
+                        if (_e173 > 0.0) {
+                            metal::float3 _e176 = e;
+                            metal::float3 _e179 = nrm;
+                            float _e182 = params.min_d2_;
+                            float _e183 = vpl_transfer(l_1.p1_, _e179, v_3, _e182);
+                            e = _e176 + (l_1.intensity * ((_e183 * _e173) * unscale));
+                            uint _e188 = kept;
+                            kept = _e188 + 1u;
                         }
                     }
                 }
@@ -444,11 +499,11 @@ kernel void main_(
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    if (valid) {
+    if (valid_1) {
         metal::float4 old = irradiance[pix];
-        metal::float3 _e206 = e;
-        uint _e209 = kept;
-        irradiance[pix] = metal::float4(old.xyz + _e206, old.w + static_cast<float>(_e209));
+        metal::float3 _e203 = e;
+        uint _e206 = kept;
+        irradiance[pix] = metal::float4(old.xyz + _e203, old.w + static_cast<float>(_e206));
         return;
     } else {
         return;

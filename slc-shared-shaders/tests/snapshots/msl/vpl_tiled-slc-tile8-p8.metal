@@ -5,12 +5,10 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size3;
-    uint size4;
-    uint size5;
     uint size6;
     uint size7;
     uint size8;
+    uint size9;
 };
 
 struct GpuLight {
@@ -33,6 +31,20 @@ struct VplParams {
     uint pad0_;
     uint pad1_;
 };
+struct ViewParams {
+    metal::float4 c0_;
+    metal::float4 c1_;
+    metal::float4 c2_;
+    metal::float4 c3_;
+    metal::packed_float3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    metal::packed_float3 f0_d;
+    float f90_d;
+};
 typedef float type_4[1];
 struct type_6 {
     metal::float3 inner[64];
@@ -41,9 +53,13 @@ struct WorkgroupBox {
     metal::float3 lo;
     metal::float3 hi;
 };
-typedef metal::float4 type_7[1];
 typedef GpuLight type_8[1];
-struct type_10 {
+typedef metal::float4 type_9[1];
+struct GbTexel {
+    metal::float4 position;
+    metal::float4 normal;
+};
+struct type_12 {
     uint inner[1024];
 };
 constant uint LIGHT_POINT = 0u;
@@ -206,10 +222,45 @@ WorkgroupBox workgroup_box(
     metal::float3 _e50 = wg_hi.inner[0];
     return WorkgroupBox {_e47, _e50};
 }
+
+metal::float4 surface_at(
+    metal::int2 texel,
+    metal::texture2d<float, metal::access::sample> position_tex
+) {
+    metal::float4 p_1 = position_tex.read(metal::uint2(texel), 0);
+    return (p_1.w > 0.0) ? metal::float4(p_1.xyz, 1.0) : metal::float4(0.0);
+}
+
 uint naga_mod(uint lhs, uint rhs) {
     return lhs % metal::select(rhs, 1u, rhs == 0u);
 }
 
+GbTexel gbuffer_at(
+    uint i,
+    constant ViewParams& view,
+    metal::texture2d<float, metal::access::sample> position_tex,
+    metal::texture2d<float, metal::access::sample> normal_tex
+) {
+    bool local_2 = {};
+    uint _e3 = view.width;
+    uint _e8 = view.width;
+    metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
+    metal::float4 _e12 = surface_at(texel_1, position_tex);
+    metal::float4 _e15 = normal_tex.read(metal::uint2(texel_1), 0);
+    metal::float3 n = _e15.xyz;
+    float len2_ = metal::dot(n, n);
+    if (_e12.w > 0.0) {
+        local_2 = len2_ > 0.0;
+    } else {
+        local_2 = false;
+    }
+    bool valid = local_2;
+    metal::float3 _e30 = view.eye;
+    metal::float3 v_2 = _e12.xyz - _e30;
+    metal::float4 position = metal::float4(_e12.xyz, valid ? 1.0 : 0.0);
+    metal::float4 normal = valid ? metal::float4(n / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_2, v_2))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
+    return GbTexel {position, normal};
+}
 
 struct main_Input {
 };
@@ -220,14 +271,15 @@ kernel void main_(
 , threadgroup type_6& wg_lo
 , threadgroup type_6& wg_hi
 , constant VplParams& params [[user(fake0)]]
-, device type_7 const& gb_position [[user(fake0)]]
-, device type_7 const& gb_normal [[user(fake0)]]
+, constant ViewParams& view [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
 , device type_8 const& lights [[user(fake0)]]
 , device type_4 const& rt2_2 [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
-, device type_7& irradiance [[user(fake0)]]
+, device type_9& irradiance [[user(fake0)]]
 , threadgroup metal::atomic_uint& tile_count
-, threadgroup type_10& tile_lights
+, threadgroup type_12& tile_lights
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     if (li == 0u) {
@@ -260,77 +312,76 @@ kernel void main_(
     uint _e38 = params.width;
     uint pix = (py * _e38) + px;
     if (inside) {
-        metal::float4 _e49 = gb_position[pix];
-        pos = _e49;
-        metal::float4 _e52 = gb_normal[pix];
-        nrm = _e52.xyz;
+        GbTexel _e47 = gbuffer_at(pix, view, position_tex, normal_tex);
+        pos = _e47.position;
+        nrm = _e47.normal.xyz;
     }
     if (inside) {
-        float _e57 = pos.w;
-        local_1 = _e57 > 0.0;
+        float _e54 = pos.w;
+        local_1 = _e54 > 0.0;
     } else {
         local_1 = false;
     }
-    bool valid = local_1;
-    metal::float4 _e62 = pos;
-    WorkgroupBox _e64 = workgroup_box(li, _e62.xyz, valid, wg_lo, wg_hi);
-    metal::float3 lo = _e64.lo;
-    metal::float3 hi = _e64.hi;
-    uint _e69 = params.lights_per_subset;
-    uint base = sub * _e69;
+    bool valid_1 = local_1;
+    metal::float4 _e59 = pos;
+    WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1, wg_lo, wg_hi);
+    metal::float3 lo = _e61.lo;
+    metal::float3 hi = _e61.hi;
+    uint _e66 = params.lights_per_subset;
+    uint base = sub * _e66;
     uint2 loop_bound_1 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e173 = first;
-            first = _e173 + MAX_TILE_LIGHTS;
+            uint _e170 = first;
+            first = _e170 + MAX_TILE_LIGHTS;
         }
         loop_init_1 = false;
-        uint _e78 = first;
-        uint _e81 = params.lights_per_subset;
-        if (_e78 < _e81) {
+        uint _e75 = first;
+        uint _e78 = params.lights_per_subset;
+        if (_e75 < _e78) {
         } else {
             break;
         }
         {
-            uint _e83 = first;
-            uint _e88 = params.lights_per_subset;
-            uint end = metal::min(_e83 + MAX_TILE_LIGHTS, _e88);
+            uint _e80 = first;
+            uint _e85 = params.lights_per_subset;
+            uint end = metal::min(_e80 + MAX_TILE_LIGHTS, _e85);
             if (li == 0u) {
                 metal::atomic_store_explicit(&tile_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint _e94 = first;
-            j = _e94 + li;
+            uint _e91 = first;
+            j = _e91 + li;
             uint2 loop_bound_2 = uint2(4294967295u);
             bool loop_init_2 = true;
             while(true) {
                 if (metal::all(loop_bound_2 == uint2(0u))) { break; }
                 loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e120 = j;
-                    j = _e120 + THREADS;
+                    uint _e117 = j;
+                    j = _e117 + THREADS;
                 }
                 loop_init_2 = false;
-                uint _e97 = j;
-                if (_e97 < end) {
+                uint _e94 = j;
+                if (_e94 < end) {
                 } else {
                     break;
                 }
                 {
-                    uint _e100 = j;
-                    metal::float3 _e104 = lights[base + _e100].p0_;
-                    uint _e106 = j;
-                    float _e109 = r2_3[base + _e106];
-                    float _e110 = cull_radius(_e109);
-                    bool _e111 = sphere_overlaps_aabb(_e104, _e110, lo, hi);
-                    if (_e111) {
-                        uint _e114 = metal::atomic_fetch_add_explicit(&tile_count, 1u, metal::memory_order_relaxed);
-                        if (_e114 < MAX_TILE_LIGHTS) {
-                            uint _e119 = j;
-                            tile_lights.inner[_e114] = _e119;
+                    uint _e97 = j;
+                    metal::float3 _e101 = lights[base + _e97].p0_;
+                    uint _e103 = j;
+                    float _e106 = r2_3[base + _e103];
+                    float _e107 = cull_radius(_e106);
+                    bool _e108 = sphere_overlaps_aabb(_e101, _e107, lo, hi);
+                    if (_e108) {
+                        uint _e111 = metal::atomic_fetch_add_explicit(&tile_count, 1u, metal::memory_order_relaxed);
+                        if (_e111 < MAX_TILE_LIGHTS) {
+                            uint _e116 = j;
+                            tile_lights.inner[_e111] = _e116;
                         }
                     }
                 }
@@ -339,7 +390,7 @@ kernel void main_(
             uint unnamed = metal::atomic_load_explicit(&tile_count, metal::memory_order_relaxed);
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
             uint count = metal::min(unnamed, MAX_TILE_LIGHTS);
-            if (valid) {
+            if (valid_1) {
                 k = 0u;
                 uint2 loop_bound_3 = uint2(4294967295u);
                 bool loop_init_3 = true;
@@ -347,34 +398,34 @@ kernel void main_(
                     if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e171 = k;
-                        k = _e171 + 1u;
+                        uint _e168 = k;
+                        k = _e168 + 1u;
                     }
                     loop_init_3 = false;
-                    uint _e129 = k;
-                    if (_e129 < count) {
+                    uint _e126 = k;
+                    if (_e126 < count) {
                     } else {
                         break;
                     }
                     {
-                        uint _e132 = k;
-                        uint _e134 = tile_lights.inner[_e132];
-                        uint j_1 = base + _e134;
+                        uint _e129 = k;
+                        uint _e131 = tile_lights.inner[_e129];
+                        uint j_1 = base + _e131;
                         GpuLight l = lights[j_1];
-                        metal::float4 _e139 = pos;
-                        metal::float3 v_2 = _e139.xyz - l.p0_;
-                        float _e145 = rt2_2[j_1];
-                        float _e148 = r2_3[j_1];
-                        float _e152 = params.near_r2_;
-                        float _e153 = vpl_far_slc_share(_e145, _e148, metal::dot(v_2, v_2), _e152);
-                        if (_e153 > 0.0) {
-                            metal::float3 _e156 = e;
-                            metal::float3 _e159 = nrm;
-                            float _e162 = params.min_d2_;
-                            float _e163 = vpl_transfer(l.p1_, _e159, v_2, _e162);
-                            e = _e156 + (l.intensity * (_e163 * _e153));
-                            uint _e167 = kept;
-                            kept = _e167 + 1u;
+                        metal::float4 _e136 = pos;
+                        metal::float3 v_3 = _e136.xyz - l.p0_;
+                        float _e142 = rt2_2[j_1];
+                        float _e145 = r2_3[j_1];
+                        float _e149 = params.near_r2_;
+                        float _e150 = vpl_far_slc_share(_e142, _e145, metal::dot(v_3, v_3), _e149);
+                        if (_e150 > 0.0) {
+                            metal::float3 _e153 = e;
+                            metal::float3 _e156 = nrm;
+                            float _e159 = params.min_d2_;
+                            float _e160 = vpl_transfer(l.p1_, _e156, v_3, _e159);
+                            e = _e153 + (l.intensity * (_e160 * _e150));
+                            uint _e164 = kept;
+                            kept = _e164 + 1u;
                         }
                     }
                 }
@@ -382,10 +433,10 @@ kernel void main_(
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
         }
     }
-    if (valid) {
-        metal::float3 _e178 = e;
-        uint _e179 = kept;
-        irradiance[pix] = metal::float4(_e178, static_cast<float>(_e179));
+    if (inside) {
+        metal::float3 _e175 = e;
+        uint _e176 = kept;
+        irradiance[pix] = metal::float4(_e175, static_cast<float>(_e176));
         return;
     } else {
         return;
