@@ -19,20 +19,20 @@ impl Stream {
     }
 
     /// The next number in `[0, 1)`.
-    pub fn next(&mut self) -> f32 {
+    pub fn uniform(&mut self) -> f32 {
         self.0 = pcg_hash(self.0);
         xi_from_bits(self.0)
     }
 
     /// A standard normal deviate (Box–Muller on two of the stream's numbers).
     pub fn normal(&mut self) -> f32 {
-        let (u, v) = (self.next(), self.next());
+        let (u, v) = (self.uniform(), self.uniform());
         (-2.0 * (1.0 - u).ln()).sqrt() * (std::f32::consts::TAU * v).cos()
     }
 
     /// A direction uniform on the unit sphere.
     pub fn direction(&mut self) -> Vec3 {
-        let (u, v) = (self.next(), self.next());
+        let (u, v) = (self.uniform(), self.uniform());
         let z = 1.0 - 2.0 * u;
         let r = (1.0 - z * z).max(0.0).sqrt();
         let phi = std::f32::consts::TAU * v;
@@ -70,7 +70,7 @@ impl<'a> Surfaces<'a> {
     /// winding's), from three numbers of `s`.
     pub fn sample(&self, s: &mut Stream) -> (Vec3, Vec3) {
         let total = self.cdf.last().copied().unwrap_or(0.0);
-        let (pick, u, v) = (s.next() as f64 * total, s.next(), s.next());
+        let (pick, u, v) = (s.uniform() as f64 * total, s.uniform(), s.uniform());
         let i = self.cdf.partition_point(|&c| c <= pick).min(self.triangles.len() - 1);
         let [a, b, c] = self.scene.triangles[self.triangles[i]];
         let su = u.sqrt();

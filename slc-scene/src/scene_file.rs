@@ -238,7 +238,7 @@ fn scatter_lights(scene: &Scene, d: &ScatterDef) -> Result<Vec<[Vec3; 3]>, Strin
     for k in 0..d.count {
         let mut s = Stream::new(d.seed, k);
         let (p, n) = surfaces.sample(&mut s);
-        let spin = s.next();
+        let spin = s.uniform();
         // The light's plane: the surface's, or any (`random`); its offset
         // is always to the surface's front.
         let axis = if d.face == Face::Random { s.direction() } else { n };
