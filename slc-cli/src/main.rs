@@ -15,6 +15,7 @@ mod plot;
 mod reference;
 mod report;
 mod scene_args;
+mod suite;
 mod view;
 
 use backends::{Backend, GPU_BATCH, gpu_context, path_tracer};
@@ -67,6 +68,16 @@ enum Command {
         /// Reservoir slots k of the BSH kernels.
         #[arg(long, default_value_t = 8)]
         reservoir_k: u32,
+    },
+    /// Write the scene suite (many-light families in the Cornell box, each
+    /// at every light count) as scene files.
+    Suite {
+        /// Output folder.
+        #[arg(long, default_value = "scenes/suite")]
+        out: PathBuf,
+        /// Light counts per family (comma-separated).
+        #[arg(long, value_delimiter = ',', default_values_t = suite::DEFAULT_COUNTS)]
+        counts: Vec<u32>,
     },
     /// Plot a `slc bench` JSON report again (.svg or .png): a VPL report as
     /// speed against error, a path-tracing one as RMSE over time.
@@ -145,6 +156,9 @@ fn main() -> ExitCode {
         Some(Command::Diff(a)) => diff::run(a),
         Some(Command::Plot { json, out }) => replot(&json, &out),
         Some(Command::Shaders { out, lights, reservoir_k }) => shaders(&out, &lights, reservoir_k),
+        Some(Command::Suite { out, counts }) => suite::write(&out, &counts).map(|paths| {
+            println!("slc suite: wrote {} scene files to {}", paths.len(), out.display());
+        }),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -34,6 +34,8 @@ pub mod cornell;
 pub mod gltf;
 pub mod image;
 pub mod light_bvh;
+#[cfg(feature = "io")]
+pub mod light_cloud;
 pub mod lights;
 #[cfg(feature = "io")]
 pub mod obj;

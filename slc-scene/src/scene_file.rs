@@ -32,6 +32,11 @@
 //! emission = [0.5, 0.45, 0.4]
 //! seed = 1
 //!
+//! [[light_cloud]]                 # many point/spot/IES lights placed by a seed (see `light_cloud`)
+//! count = 2000
+//! placement = "volume"
+//! intensity = [0.01, 0.01, 0.01]
+//!
 //! [[light]]
 //! type = "ies"                     # or "point", "spot"
 //! file = "../../shared/data/ies/indoor-60w-120deg.ies"
@@ -55,6 +60,7 @@
 
 use crate::SceneError;
 use crate::gltf::GltfScene;
+use crate::light_cloud::LightCloudDef;
 use crate::placement::{Stream, Surfaces};
 use crate::scene::{Camera, Material, PrimaryLight, Scene};
 use glam::Vec3;
@@ -74,6 +80,8 @@ struct File {
     emissive_mesh: Vec<EmissiveDef>,
     #[serde(default)]
     scatter_lights: Vec<ScatterDef>,
+    #[serde(default)]
+    light_cloud: Vec<LightCloudDef>,
     #[serde(default)]
     light: Vec<LightDef>,
     primary: Option<LightDef>,
@@ -549,6 +557,9 @@ impl SceneFile {
                 }
                 other => return Err(bad(format!("{w}: type \"{other}\" is not \"point\", \"spot\" or \"ies\""))),
             });
+        }
+        for (i, c) in f.light_cloud.iter().enumerate() {
+            lights.extend(c.lights(&scene, dir).map_err(|e| bad(format!("light_cloud {i}: {e}")))?);
         }
         Ok(SceneFile { scene, lights, render: f.render })
     }
