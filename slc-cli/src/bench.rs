@@ -17,45 +17,50 @@ use std::path::PathBuf;
 #[derive(Args)]
 pub struct BenchArgs {
     #[command(flatten)]
-    scene: SceneArgs,
+    pub scene: SceneArgs,
     /// Error bounds ε swept for `slc`.
     #[arg(long, value_delimiter = ',', default_values_t = [0.0005f32, 0.001, 0.002, 0.004, 0.008, 0.016])]
-    error_bounds: Vec<f32>,
+    pub error_bounds: Vec<f32>,
     /// Ranges R swept for `clamp` (scene units).
     #[arg(long, value_delimiter = ',', default_values_t = [0.025f32, 0.05, 0.075, 0.1, 0.15, 0.2, 0.3])]
-    ranges: Vec<f32>,
+    pub ranges: Vec<f32>,
     /// Runs per configuration; the fastest shading time is reported.
     #[arg(long, default_value_t = 3)]
-    repeat: u32,
+    pub repeat: u32,
     /// Seed of the per-light random numbers.
     #[arg(long, default_value_t = 1)]
-    seed: u32,
+    pub seed: u32,
     /// Where reference images are cached.
     #[arg(long, default_value = ".slc-cache")]
-    cache_dir: PathBuf,
+    pub cache_dir: PathBuf,
     /// Also write the report as JSON (re-plot it with `slc plot`).
     #[arg(long)]
-    json: Option<PathBuf>,
+    pub json: Option<PathBuf>,
     /// Also write the runs as CSV.
     #[arg(long)]
-    csv: Option<PathBuf>,
+    pub csv: Option<PathBuf>,
     /// Also plot RMSE against shading time (.svg or .png).
     #[arg(long)]
-    plot: Option<PathBuf>,
+    pub plot: Option<PathBuf>,
+    /// Path tracing: run every method on every scene file (`*.toml`) of this
+    /// folder (`scenes/suite` when given without a value; `slc suite`
+    /// writes it) and report them together.
+    #[arg(long, num_args = 0..=1, default_missing_value = "scenes/suite")]
+    pub suite: Option<PathBuf>,
     /// Path tracing: the SLC error bound ε [default: 1].
     #[arg(long)]
-    error_bound: Option<f32>,
+    pub error_bound: Option<f32>,
     /// Path tracing: seconds per method (equal time).
     #[arg(long, default_value_t = 10.0)]
-    seconds: f64,
+    pub seconds: f64,
     /// Path tracing: samples per pixel of the reference.
     #[arg(long, default_value_t = 1024)]
-    reference_spp: u32,
+    pub reference_spp: u32,
     /// Path tracing: the reference's method (any of them is unbiased; its
     /// own seed makes it independent of the runs; the one with the least
     /// noise per second makes the cheapest good reference).
     #[arg(long, default_value = "power", value_parser = crate::methods::pt_method)]
-    reference_method: PtMethod,
+    pub reference_method: PtMethod,
 }
 
 /// The configurations of a VPL bench: `none`, then `slc` per error bound,
@@ -337,9 +342,35 @@ fn run_pt(a: BenchArgs) -> anyhow::Result<()> {
     if !(a.seconds > 0.0 && a.seconds.is_finite()) {
         return Err(anyhow!("--seconds {} must be finite and > 0", a.seconds));
     }
+    if let Some(dir) = &a.suite {
+        return crate::suite_bench::run(&a, dir);
+    }
     let (scene, lights, f) = a.scene.scene()?;
+    let report = pt_equal_time(&a, &scene, &lights, &f)?;
+    let json = serde_json::to_string_pretty(&report)?;
+    if let Some(path) = &a.json {
+        std::fs::write(path, json).with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    if let Some(csv) = &a.csv {
+        write_pt_csv(&report, csv)?;
+    }
+    if let Some(plot) = &a.plot {
+        crate::plot::rmse_over_time(&report, plot)?;
+    }
+    print_pt_report(&a, &report);
+    Ok(())
+}
+
+/// Every method on one scene for `--seconds` each on the chosen backend,
+/// RMSE against a (cached) CPU reference of `--reference-spp`.
+pub fn pt_equal_time(
+    a: &BenchArgs,
+    scene: &slc_scene::scene::Scene,
+    lights: &[slc_core::light::Light],
+    f: &slc_scene::scene_file::RenderSettings,
+) -> anyhow::Result<PtReport> {
     let (w, h) = (a.scene.width.or(f.width).unwrap_or(128), a.scene.height.or(f.height).unwrap_or(128));
-    let pts = PtScene::new(&scene, &lights)?;
+    let pts = PtScene::new(scene, lights)?;
     let eps = a.error_bound.unwrap_or(PtSettings::default().error_bound);
     // A reference that culls nothing does not depend on ε: keyed without
     // it, its cache serves every --error-bound.
@@ -403,16 +434,13 @@ fn run_pt(a: BenchArgs) -> anyhow::Result<()> {
         reference_from_cache: cached,
         runs,
     };
-    let json = serde_json::to_string_pretty(&report)?;
-    if let Some(path) = &a.json {
-        std::fs::write(path, json).with_context(|| format!("cannot write {}", path.display()))?;
-    }
-    if let Some(csv) = &a.csv {
-        write_pt_csv(&report, csv)?;
-    }
-    if let Some(plot) = &a.plot {
-        crate::plot::rmse_over_time(&report, plot)?;
-    }
+    Ok(report)
+}
+
+/// Prints one equal-time report as a table, with warnings where the
+/// reference limits what it can tell.
+fn print_pt_report(a: &BenchArgs, report: &PtReport) {
+    let (w, h) = (report.width, report.height);
     let uniform = report.runs.iter().find(|r| r.method == "uniform").map_or(f64::NAN, |r| r.rmse_net);
     println!("backend {}", report.backend);
     println!("lights  {}", crate::notes::PT_LIGHTS_NOTE);
@@ -451,5 +479,4 @@ fn run_pt(a: BenchArgs) -> anyhow::Result<()> {
             report.reference_noise, r.method, r.rmse_net
         );
     }
-    Ok(())
 }

@@ -16,6 +16,7 @@ mod reference;
 mod report;
 mod scene_args;
 mod suite;
+mod suite_bench;
 mod view;
 
 use backends::{Backend, GPU_BATCH, gpu_context, path_tracer};
@@ -78,6 +79,10 @@ enum Command {
         /// Light counts per family (comma-separated).
         #[arg(long, value_delimiter = ',', default_values_t = suite::DEFAULT_COUNTS)]
         counts: Vec<u32>,
+        /// The IES profile of the mixed family, written as given (relative
+        /// to the scene files, or absolute).
+        #[arg(long, default_value = suite::DEFAULT_IES)]
+        ies: String,
     },
     /// Plot a `slc bench` JSON report again (.svg or .png): a VPL report as
     /// speed against error, a path-tracing one as RMSE over time.
@@ -156,7 +161,7 @@ fn main() -> ExitCode {
         Some(Command::Diff(a)) => diff::run(a),
         Some(Command::Plot { json, out }) => replot(&json, &out),
         Some(Command::Shaders { out, lights, reservoir_k }) => shaders(&out, &lights, reservoir_k),
-        Some(Command::Suite { out, counts }) => suite::write(&out, &counts).map(|paths| {
+        Some(Command::Suite { out, counts, ies }) => suite::write(&out, &counts, &ies).map(|paths| {
             println!("slc suite: wrote {} scene files to {}", paths.len(), out.display());
         }),
     };

@@ -201,6 +201,81 @@ fn rmse_over_time_on<DB: DrawingBackend>(report: &PtReport, root: &DrawingArea<D
     Ok(())
 }
 
+/// A suite's net RMSE per method over uniform sampling's, one column per
+/// scene (log scale; below 1 beats uniform sampling at equal time).
+pub fn suite_vs_uniform(rows: &[crate::suite_bench::SuiteRow], path: &Path) -> anyhow::Result<()> {
+    with_backend(path, (1280, 720), |a| suite_vs_uniform_on(rows, a), |a| suite_vs_uniform_on(rows, a))
+}
+
+fn suite_vs_uniform_on<DB: DrawingBackend>(rows: &[crate::suite_bench::SuiteRow], root: &DrawingArea<DB, Shift>) -> anyhow::Result<()> {
+    let err = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("{e}");
+    root.fill(&WHITE).map_err(err)?;
+    let mut scenes: Vec<&str> = Vec::new();
+    let mut methods: Vec<&str> = Vec::new();
+    for r in rows {
+        if !scenes.contains(&r.scene.as_str()) {
+            scenes.push(&r.scene);
+        }
+        if !methods.contains(&r.method.as_str()) {
+            methods.push(&r.method);
+        }
+    }
+    // Ratios the reference's noise left unmeasurable (NaN) are not drawn;
+    // the axis spans 0.9–1.1 at least.
+    let ys = rows.iter().map(|r| r.rmse_vs_uniform).filter(|v| v.is_finite() && *v > 0.0);
+    let (lo, hi) = ys.fold((1.0f64, 1.0f64), |(a, b), v| (a.min(v), b.max(v)));
+    let (lo, hi) = ((lo.min(0.9) / 1.2).log10(), (hi.max(1.1) * 1.2).log10());
+    let n = scenes.len();
+    // Scenes as rows (their names read across), the ratio along x.
+    let mut chart = ChartBuilder::on(root)
+        .caption("Net RMSE over uniform sampling's at equal time, per suite scene", ("sans-serif", 24))
+        .margin(16)
+        .x_label_area_size(48)
+        .y_label_area_size(220)
+        .build_cartesian_2d(lo..hi, -0.5f64..n as f64 - 0.5)
+        .map_err(err)?;
+    let names: Vec<String> = scenes.iter().map(|s| s.to_string()).collect();
+    chart
+        .configure_mesh()
+        .x_desc("net RMSE / uniform's (log scale; < 1 beats uniform sampling)")
+        .label_style(("sans-serif", 14))
+        .axis_desc_style(("sans-serif", 18))
+        .y_labels(n.max(1))
+        .y_label_formatter(&|v| {
+            let i = v.round();
+            if (v - i).abs() < 1e-6 && i >= 0.0 { names.get(i as usize).cloned().unwrap_or_default() } else { String::new() }
+        })
+        .x_labels(10)
+        .x_label_formatter(&|v| format!("{:.2}", 10f64.powf(*v)))
+        .draw()
+        .map_err(err)?;
+    chart.draw_series(LineSeries::new(vec![(0.0, -0.5), (0.0, n as f64 - 0.5)], BLACK.stroke_width(1))).map_err(err)?;
+    for (k, m) in methods.iter().enumerate() {
+        let color = method_color(m);
+        // Each method a little off the row, so equal values stay visible.
+        let dy = (k as f64 - (methods.len() as f64 - 1.0) / 2.0) * 0.08;
+        let pts: Vec<(f64, f64)> = rows
+            .iter()
+            .filter(|r| r.method == *m && r.rmse_vs_uniform.is_finite() && r.rmse_vs_uniform > 0.0)
+            .filter_map(|r| scenes.iter().position(|s| *s == r.scene).map(|i| (r.rmse_vs_uniform.log10(), i as f64 + dy)))
+            .collect();
+        chart
+            .draw_series(pts.into_iter().map(|p| Circle::new(p, 5, color.filled())))
+            .map_err(err)?
+            .label(m.to_string())
+            .legend(move |(x, y)| Circle::new((x + 10, y), 5, color.filled()));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 16))
+        .position(SeriesLabelPosition::UpperRight)
+        .draw()
+        .map_err(err)?;
+    Ok(())
+}
+
 /// Polar candela plot of an IES profile: the C = 0°/180° and C = 90°/270°
 /// planes, γ = 0° (nadir) pointing down, rings of equal candela.
 pub fn ies_polar(p: &slc_core::ies::IesProfile, title: &str, path: &Path) -> anyhow::Result<()> {

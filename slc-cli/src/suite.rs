@@ -25,16 +25,18 @@ const TRIANGLE_RADIANCE_TOTAL: f64 = 1.0e5;
 /// Total intensity of the punctual families (W/sr, scene units).
 const PUNCTUAL_TOTAL: f64 = 0.2;
 
-/// The IES profile of the mixed family, relative to a scene file in
-/// `scenes/suite/`.
-const IES: &str = "../../../shared/data/ies/indoor-60w-120deg.ies";
+/// The IES profile of the mixed family as written by default: relative to
+/// a scene file in `scenes/suite/` (`slc suite --ies` gives another path,
+/// written as given: a scene file's paths are relative to the file).
+pub const DEFAULT_IES: &str = "../../../shared/data/ies/indoor-60w-120deg.ies";
 
 /// One family: its name, what it tests, and its scene file's body for `n`
 /// lights.
 struct Family {
     name: &'static str,
     about: &'static str,
-    body: fn(u32) -> String,
+    /// The body for `n` lights, with the IES file's path as written.
+    body: fn(u32, &str) -> String,
 }
 
 fn box_only(glossy: bool) -> String {
@@ -61,42 +63,42 @@ const FAMILIES: &[Family] = &[
     Family {
         name: "tri-facing",
         about: "small triangle lights 5 cm off every surface, facing it (pools of light; the camera sees their backs)",
-        body: |n| triangles(n, "surface", 0.05, false),
+        body: |n, _| triangles(n, "surface", 0.05, false),
     },
     Family {
         name: "tri-away",
         about: "small triangle lights just off every surface, facing the room (the camera sees them)",
-        body: |n| triangles(n, "away", 0.002, false),
+        body: |n, _| triangles(n, "away", 0.002, false),
     },
     Family {
         name: "tri-random",
         about: "small triangle lights 5 cm off every surface, each facing any way",
-        body: |n| triangles(n, "random", 0.05, false),
+        body: |n, _| triangles(n, "random", 0.05, false),
     },
-    Family { name: "points-volume", about: "equal point lights spread through the room", body: |n| cloud(n, "placement = \"volume\"") },
+    Family { name: "points-volume", about: "equal point lights spread through the room", body: |n, _| cloud(n, "placement = \"volume\"") },
     Family {
         name: "points-clusters",
         about: "equal point lights in four tight fixtures",
-        body: |n| cloud(n, "placement = \"clusters\"\nclusters = 4\nspread = 0.02"),
+        body: |n, _| cloud(n, "placement = \"clusters\"\nclusters = 4\nspread = 0.02"),
     },
     Family {
         name: "points-lognormal",
         about: "point lights through the room with log-normal powers (σ = 2: a few carry most of the power)",
-        body: |n| cloud(n, "placement = \"volume\"\npower = \"lognormal\"\nsigma = 2.0"),
+        body: |n, _| cloud(n, "placement = \"volume\"\npower = \"lognormal\"\nsigma = 2.0"),
     },
     Family {
         name: "dominant",
         about: "one point light with half the power among many small ones",
-        body: |n| cloud(n, "placement = \"volume\"\npower = \"dominant\"\ndominant_share = 0.5"),
+        body: |n, _| cloud(n, "placement = \"volume\"\npower = \"dominant\"\ndominant_share = 0.5"),
     },
     Family {
         name: "mixed-types",
         about: "point, spot and IES lights 5 cm off the surfaces, aimed any way, log-normal powers (σ = 1)",
-        body: |n| {
+        body: |n, ies| {
             cloud(
                 n,
                 &format!(
-                    "placement = \"surface\"\noffset = 0.05\ntypes = [\"point\", \"spot\", \"ies\"]\nies = \"{IES}\"\naim = \"random\"\nouter = 45.0\npower = \"lognormal\"\nsigma = 1.0"
+                    "placement = \"surface\"\noffset = 0.05\ntypes = [\"point\", \"spot\", \"ies\"]\nies = {ies:?}\naim = \"random\"\nouter = 45.0\npower = \"lognormal\"\nsigma = 1.0"
                 ),
             )
         },
@@ -104,23 +106,23 @@ const FAMILIES: &[Family] = &[
     Family {
         name: "spots-at-camera",
         about: "30° spot lights through the room, each aimed at the camera outside it: most power leaves the room, only cone-aware importance tells which light reaches a point",
-        body: |n| cloud(n, "placement = \"volume\"\ntypes = [\"spot\"]\naim = \"camera\"\nouter = 30.0"),
+        body: |n, _| cloud(n, "placement = \"volume\"\ntypes = [\"spot\"]\naim = \"camera\"\nouter = 30.0"),
     },
     Family {
         name: "glossy-facing",
         about: "tri-facing in the glossy box (glossy floor, metal blocks)",
-        body: |n| triangles(n, "surface", 0.05, true),
+        body: |n, _| triangles(n, "surface", 0.05, true),
     },
 ];
 
 /// The suite's scene files: `(file name, text)` for every family and count,
-/// family by family.
-pub fn scene_files(counts: &[u32]) -> Vec<(String, String)> {
+/// family by family; `ies` is the IES profile's path as written.
+pub fn scene_files(counts: &[u32], ies: &str) -> Vec<(String, String)> {
     let mut out = Vec::new();
     for f in FAMILIES {
         for &n in counts {
             let head = format!("# Scene suite ({}): {}; {n} lights.\n# Written by `slc suite`; do not edit by hand.\n\n", f.name, f.about);
-            out.push((format!("{}-{n}.toml", f.name), head + &(f.body)(n)));
+            out.push((format!("{}-{n}.toml", f.name), head + &(f.body)(n, ies)));
         }
     }
     out
@@ -128,13 +130,13 @@ pub fn scene_files(counts: &[u32]) -> Vec<(String, String)> {
 
 /// Writes the suite's scene files into `dir` (created if missing); returns
 /// their paths.
-pub fn write(dir: &Path, counts: &[u32]) -> anyhow::Result<Vec<PathBuf>> {
+pub fn write(dir: &Path, counts: &[u32], ies: &str) -> anyhow::Result<Vec<PathBuf>> {
     if counts.is_empty() || counts.contains(&0) {
         anyhow::bail!("--counts must list light counts of at least 1");
     }
     std::fs::create_dir_all(dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
     let mut paths = Vec::new();
-    for (name, text) in scene_files(counts) {
+    for (name, text) in scene_files(counts, ies) {
         let p = dir.join(name);
         std::fs::write(&p, text).map_err(|e| anyhow::anyhow!("cannot write {}: {e}", p.display()))?;
         paths.push(p);
@@ -151,7 +153,7 @@ mod tests {
     #[test]
     fn committed_suite_is_current() {
         let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/suite");
-        for (name, text) in scene_files(&DEFAULT_COUNTS) {
+        for (name, text) in scene_files(&DEFAULT_COUNTS, DEFAULT_IES) {
             let have = std::fs::read_to_string(dir.join(&name)).unwrap_or_default();
             assert!(have == text, "scenes/suite/{name} is stale: run `cargo run --release -p slc-cli -- suite --out scenes/suite`");
         }
@@ -165,7 +167,7 @@ mod tests {
     fn every_family_loads_with_its_light_count() {
         assert!(FAMILIES.len() >= 8);
         let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/suite");
-        for (name, text) in scene_files(&[64]) {
+        for (name, text) in scene_files(&[64], DEFAULT_IES) {
             let f = SceneFile::parse(&text, &dir, &name).unwrap_or_else(|e| panic!("{name}: {e}"));
             let emissive = f
                 .scene

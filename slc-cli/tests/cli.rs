@@ -368,6 +368,43 @@ fn path_tracer_renders() {
 
 /// `slc bench --app pt`: equal-time runs with RMSE-over-time series, JSON,
 /// CSV and plot.
+/// README: `slc suite` writes every family at every count, and `slc bench
+/// --app pt --suite` runs every method on each, with one table, JSON
+/// (a report per scene, summary rows), CSV and plot.
+fn suite_commands() {
+    let d = tempdir("suite");
+    let ies = shared("ies/indoor-60w-120deg.ies");
+    let text = ok(&d, &["suite", "--out", "s", "--counts", "16,32", "--ies", ies.to_str().unwrap()]);
+    assert!(text.contains("wrote 20 scene files"), "{text}");
+    assert_eq!(std::fs::read_dir(d.join("s")).unwrap().count(), 20);
+    // Two families at one small count keep the run short.
+    let two = d.join("two");
+    std::fs::create_dir_all(&two).unwrap();
+    for f in ["dominant-16.toml", "mixed-types-16.toml"] {
+        std::fs::copy(d.join("s").join(f), two.join(f)).unwrap();
+    }
+    let args = ["bench", "--app", "pt", "--suite", "two", "--width", "8", "--height", "8", "--seconds", "0.05", "--reference-spp", "16"];
+    let text = ok(&d, &[&args[..], &["--json", "s.json", "--csv", "s.csv", "--plot", "s.svg", "--cache-dir", "cache"]].concat());
+    assert!(text.contains("dominant-16") && text.contains("mixed-types-16") && text.contains("slc-weighted / best peer"), "{text}");
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("s.json")).unwrap()).unwrap();
+    assert_eq!(json["scenes"].as_array().unwrap().len(), 2);
+    let rows = json["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 12);
+    for r in rows.iter().filter(|r| r["method"] == "uniform") {
+        // Uniform's time per sample over its own is 1 (no NaN on the way).
+        assert!((r["time_per_sample_vs_uniform"].as_f64().unwrap() - 1.0).abs() < 1e-9, "{r}");
+    }
+    assert_eq!(std::fs::read_to_string(d.join("s.csv")).unwrap().lines().count(), 13);
+    assert!(std::fs::read_to_string(d.join("s.svg")).unwrap().contains("suite scene"));
+    // A folder without scene files is a one-line error that says how to make one.
+    std::fs::create_dir_all(d.join("empty")).unwrap();
+    let out =
+        std::process::Command::new(env!("CARGO_BIN_EXE_slc")).current_dir(&d).args(["bench", "--app", "pt", "--suite", "empty"]).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success() && err.contains("slc suite --out"), "{err}");
+    std::fs::remove_dir_all(&d).ok();
+}
+
 fn path_tracer_bench() {
     let d = tempdir("ptbench");
     let text = ok(
@@ -536,6 +573,7 @@ slc_tests::harness!(
     Gpu: gpu_path_tracer_renders_and_benches,
     Cpu: path_tracer_renders,
     Cpu: path_tracer_bench,
+    Cpu: suite_commands,
     Cpu: unmodelled_mtl_features_are_warned_about_once,
     Display: view_renders_frames_and_saves_a_screenshot,
     Cpu: view_without_a_display_is_a_clear_error,
