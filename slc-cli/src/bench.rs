@@ -47,9 +47,11 @@ pub struct BenchArgs {
     /// writes it) and report them together.
     #[arg(long, num_args = 0..=1, default_missing_value = "scenes/suite")]
     pub suite: Option<PathBuf>,
-    /// Path tracing: the SLC error bound ε [default: 1].
-    #[arg(long)]
-    pub error_bound: Option<f32>,
+    /// Path tracing: the SLC error bound ε, or `auto` [default: auto: set
+    /// from each scene so that a shading point expects a fixed number of
+    /// candidate lights; `slc_scene::error_bound`].
+    #[arg(long, value_parser = crate::methods::bound_arg)]
+    pub error_bound: Option<crate::methods::BoundArg>,
     /// Path tracing: seconds per method (equal time).
     #[arg(long, default_value_t = 10.0)]
     pub seconds: f64,
@@ -371,7 +373,7 @@ pub fn pt_equal_time(
 ) -> anyhow::Result<PtReport> {
     let (w, h) = (a.scene.width.or(f.width).unwrap_or(128), a.scene.height.or(f.height).unwrap_or(128));
     let pts = PtScene::new(scene, lights)?;
-    let eps = a.error_bound.unwrap_or(PtSettings::default().error_bound);
+    let (eps, eps_note) = crate::methods::pt_error_bound(a.error_bound, f.error_bound, &pts, 1.0);
     // A reference that culls nothing does not depend on ε: keyed without
     // it, its cache serves every --error-bound.
     let ref_eps = if a.reference_method.culls() { eps } else { PtSettings::default().error_bound };
@@ -432,6 +434,7 @@ pub fn pt_equal_time(
         reference: format!("{}, {} spp", a.reference_method.name(), a.reference_spp),
         reference_noise: r.noise,
         reference_from_cache: cached,
+        error_bound_note: eps_note,
         runs,
     };
     Ok(report)
@@ -443,6 +446,9 @@ fn print_pt_report(a: &BenchArgs, report: &PtReport) {
     let (w, h) = (report.width, report.height);
     let uniform = report.runs.iter().find(|r| r.method == "uniform").map_or(f64::NAN, |r| r.rmse_net);
     println!("backend {}", report.backend);
+    if let Some(eps) = report.runs.iter().find_map(|r| r.param) {
+        println!("eps     {eps:.4} ({})", report.error_bound_note);
+    }
     println!("lights  {}", crate::notes::PT_LIGHTS_NOTE);
     println!(
         "{} {}x{}, {} lights, {:.1} s per method (reference {} {}, its own RMSE about {:.5})",

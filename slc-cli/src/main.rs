@@ -111,9 +111,10 @@ struct RenderArgs {
     #[arg(long)]
     seconds: Option<f64>,
     /// SLC error bound ε, the largest standard deviation one light may add
-    /// to a pixel [default: 0.008 (vpl), 1 (pt)].
-    #[arg(long)]
-    error_bound: Option<f32>,
+    /// to a pixel [default: 0.008 (vpl); auto (pt): set from the scene so
+    /// that a shading point expects a fixed number of candidate lights].
+    #[arg(long, value_parser = methods::bound_arg)]
+    error_bound: Option<methods::BoundArg>,
     /// Clamp range R (scene units) for --method clamp [default: 0.1].
     #[arg(long)]
     range: Option<f32>,
@@ -298,10 +299,12 @@ fn render_pt(a: RenderArgs) -> anyhow::Result<()> {
     let pts = PtScene::new(&scene, &lights)?;
     let d = PtSettings::default();
     let on_gpu = a.scene.backend == Backend::Gpu;
+    let exposure = a.scene.exposure.or(f.exposure).unwrap_or(1.0);
+    let (eps, eps_note) = methods::pt_error_bound(a.error_bound, f.error_bound, &pts, exposure);
     let settings = PtSettings {
         method: pt_method(a.method.as_deref().or(f.method.as_deref()).unwrap_or("slc"))?,
-        error_bound: a.error_bound.or(f.error_bound).unwrap_or(d.error_bound),
-        exposure: a.scene.exposure.or(f.exposure).unwrap_or(1.0),
+        error_bound: eps,
+        exposure,
         seed: a.seed.or(f.seed).unwrap_or(d.seed),
         ..d
     };
@@ -338,6 +341,9 @@ fn render_pt(a: RenderArgs) -> anyhow::Result<()> {
     let written = write_outputs(&image, &a.out, exposure)?;
     println!("slc render: {} {}x{}, path tracing, {} lights, method {}", scene.name, w, h, pts.light_count(), settings.method.name());
     println!("  lights      {}", PT_LIGHTS_NOTE);
+    if settings.method.culls() {
+        println!("  error bound ε = {:.4} ({eps_note})", settings.error_bound);
+    }
     if let Some(c) = &ctx {
         let timing = if c.timestamps { "GPU timestamps" } else { "wall clock, no timestamp queries" };
         println!("  backend     GPU {} ({timing})", c.describe());

@@ -2,7 +2,8 @@
 //! the VPL settings built from flags, the scene file and the defaults.
 
 use anyhow::anyhow;
-use slc_scene::pt::PtMethod;
+use slc_scene::error_bound::{TARGET_CANDIDATES, auto_error_bound};
+use slc_scene::pt::{PtMethod, PtScene, PtSettings};
 use slc_scene::vpl::{VplMethod, VplSettings};
 
 /// A VPL method name.
@@ -27,7 +28,7 @@ pub fn pt_method(name: &str) -> anyhow::Result<PtMethod> {
 /// The flags that choose a VPL method and its parameters (`render` and `view`).
 pub struct MethodFlags<'a> {
     pub method: Option<&'a str>,
-    pub error_bound: Option<f32>,
+    pub error_bound: Option<BoundArg>,
     pub range: Option<f32>,
     pub seed: Option<u32>,
     pub no_denoise: bool,
@@ -40,7 +41,11 @@ pub fn vpl_settings(m: &MethodFlags, f: &slc_scene::scene_file::RenderSettings, 
     let d = VplSettings::default();
     Ok(VplSettings {
         method: vpl_method(m.method.or(f.method.as_deref()).unwrap_or("slc"))?,
-        error_bound: m.error_bound.or(f.error_bound).unwrap_or(d.error_bound),
+        error_bound: match m.error_bound {
+            Some(BoundArg::Value(e)) => e,
+            Some(BoundArg::Auto) => return Err(anyhow!("--error-bound auto applies to path tracing (--app pt); give the VPL application a number")),
+            None => f.error_bound.unwrap_or(d.error_bound),
+        },
         range: m.range.or(f.range).unwrap_or(d.range),
         exposure,
         seed: m.seed.or(f.seed).unwrap_or(d.seed),
@@ -49,4 +54,37 @@ pub fn vpl_settings(m: &MethodFlags, f: &slc_scene::scene_file::RenderSettings, 
         near_radius: m.near_radius,
         ..d
     })
+}
+
+/// `--error-bound`: a number, or `auto` (path tracing: the ε whose
+/// expected SLC candidates per shading point are
+/// [`TARGET_CANDIDATES`], `slc_scene::error_bound`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum BoundArg {
+    /// Set from the scene.
+    Auto,
+    /// This ε.
+    Value(f32),
+}
+
+/// Parses `--error-bound`.
+pub fn bound_arg(s: &str) -> anyhow::Result<BoundArg> {
+    if s == "auto" {
+        return Ok(BoundArg::Auto);
+    }
+    s.parse::<f32>().map(BoundArg::Value).map_err(|_| anyhow!("'{s}' is neither a number nor auto"))
+}
+
+/// The path tracer's ε and how it was set: the flag's number, else the
+/// scene file's, else (or with `auto`) the automatic bound of `pts`
+/// (PtSettings' fixed default where the scene has no lights or surfaces).
+pub fn pt_error_bound(flag: Option<BoundArg>, file: Option<f32>, pts: &PtScene, exposure: f32) -> (f32, String) {
+    match (flag, file) {
+        (Some(BoundArg::Value(e)), _) => (e, "given".into()),
+        (None, Some(e)) => (e, "the scene file's".into()),
+        _ => match auto_error_bound(pts, exposure, TARGET_CANDIDATES) {
+            Some(e) => (e, format!("automatic: {TARGET_CANDIDATES} expected candidates per surface point")),
+            None => (PtSettings::default().error_bound, "the fixed default: no lights or surfaces to set it from".into()),
+        },
+    }
 }

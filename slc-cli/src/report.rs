@@ -123,6 +123,9 @@ pub struct PtReport {
     pub reference_noise: f64,
     /// Whether the reference came from the cache.
     pub reference_from_cache: bool,
+    /// How the SLC methods' ε was set (given, the scene file's, automatic).
+    #[serde(default)]
+    pub error_bound_note: String,
     /// One entry per method.
     pub runs: Vec<PtRun>,
 }

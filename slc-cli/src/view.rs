@@ -75,7 +75,7 @@ pub fn run(a: ViewArgs) -> anyhow::Result<()> {
     let r = scene_args.resolve()?;
     let flags = crate::methods::MethodFlags {
         method: a.method.as_deref(),
-        error_bound: a.error_bound,
+        error_bound: a.error_bound.map(crate::methods::BoundArg::Value),
         range: a.range,
         seed: None,
         no_denoise: a.no_denoise,

@@ -360,14 +360,20 @@ fn path_tracer_renders() {
         let text = ok(&d, &["render", "--app", "pt", "--method", m, "--width", "24", "--height", "24", "--spp", "2", "--out", &out]);
         assert!(text.contains("path tracing") && text.contains("2 samples per pixel") && text.contains("[primary]"), "{text}");
         assert!(d.join(&out).exists());
+        // The SLC methods say how their ε was set: from the scene by default.
+        let culls = m.starts_with("slc");
+        assert_eq!(text.contains("error bound ε") && text.contains("(automatic: 1.5 expected candidates per surface point)"), culls, "{text}");
     }
+    let text = ok(&d, &["render", "--app", "pt", "--method", "slc-weighted", "--error-bound", "0.5", "--width", "8", "--height", "8", "--spp", "1"]);
+    assert!(text.contains("error bound ε = 0.5000 (given)"), "{text}");
+    // `auto` is the path tracer's: the VPL application refuses it in one line.
+    let out = slc(&d, &["render", "--error-bound", "auto", "--width", "8", "--height", "8", "--vpls", "64"]);
+    assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("applies to path tracing"));
     let out = slc(&d, &["render", "--app", "pt", "--method", "clamp", "--width", "8", "--height", "8"]);
     assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("slc-reservoir"));
     std::fs::remove_dir_all(&d).ok();
 }
 
-/// `slc bench --app pt`: equal-time runs with RMSE-over-time series, JSON,
-/// CSV and plot.
 /// README: `slc suite` writes every family at every count, and `slc bench
 /// --app pt --suite` runs every method on each, with one table, JSON
 /// (a report per scene, summary rows), CSV and plot.
@@ -405,6 +411,8 @@ fn suite_commands() {
     std::fs::remove_dir_all(&d).ok();
 }
 
+/// `slc bench --app pt`: equal-time runs with RMSE-over-time series, JSON,
+/// CSV and plot.
 fn path_tracer_bench() {
     let d = tempdir("ptbench");
     let text = ok(

@@ -30,6 +30,7 @@
 pub mod alias;
 pub mod backend;
 pub mod cornell;
+pub mod error_bound;
 #[cfg(feature = "io")]
 pub mod gltf;
 pub mod image;
@@ -39,7 +40,6 @@ pub mod light_cloud;
 pub mod lights;
 #[cfg(feature = "io")]
 pub mod obj;
-#[cfg(feature = "io")]
 pub mod placement;
 pub mod pt;
 pub mod scene;

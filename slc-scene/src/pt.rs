@@ -74,7 +74,8 @@ impl PtMethod {
 pub struct PtSettings {
     /// NEE method.
     pub method: PtMethod,
-    /// SLC error bound ε.
+    /// SLC error bound ε (see [`crate::error_bound::auto_error_bound`] for
+    /// one set from the scene).
     pub error_bound: f32,
     /// Exposure E (error bound).
     pub exposure: f32,
@@ -89,7 +90,10 @@ pub struct PtSettings {
 
 impl Default for PtSettings {
     fn default() -> Self {
-        // ε = 1: every in-range candidate costs a traversal step and an
+        // ε = 1, the fixed fallback: `slc` (render and bench) sets ε per
+        // scene with `error_bound::auto_error_bound` unless told otherwise,
+        // so that a shading point expects the candidates this ε gave on the
+        // scenes it was tuned on. Every in-range candidate costs a traversal step and an
         // importance (and, for slc, a shadow ray), so a larger bound (fewer,
         // more heavily weighted candidates) wins at equal time, up to the
         // point where the roulette's own noise dominates. slc-weighted's
