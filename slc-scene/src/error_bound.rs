@@ -25,7 +25,6 @@
 
 use crate::placement::{Stream, Surfaces};
 use crate::pt::PtScene;
-use glam::Vec3;
 use slc_core::range::RangeParams;
 
 /// Candidates per shading point the automatic ε aims at.
@@ -41,22 +40,30 @@ use slc_core::range::RangeParams;
 /// to scenes nobody tuned it on, instead of the tuned ε.
 pub const TARGET_CANDIDATES: f64 = 1.5;
 
-/// Shading points the mean is taken over.
+/// Most shading points the mean is taken over; fewer (down to
+/// [`MIN_POINTS`]) where points × lights would pass [`MAX_PAIRS`].
 pub const SAMPLE_POINTS: u32 = 256;
 
-/// Each light's `a_j = r_t,j²` at ε = 1 (at `exposure`), its centre and
-/// extent, and the sample points.
+/// Fewest shading points the mean is taken over.
+pub const MIN_POINTS: u32 = 32;
+
+/// Most (point, light) pairs the model keeps (`4 · MAX_PAIRS` bytes).
+pub const MAX_PAIRS: usize = 1 << 23;
+
+/// Each (sample point, light) pair's `b = a_j / d_j²` (`a_j = r_t,j²` at
+/// ε = 1, at the model's exposure; +∞ where the point is inside a lit
+/// light's bound, 0 for a dark light), so `C(x, ε) = Σ_j min(b / ε, 1)`.
 pub struct CandidateModel {
-    a: Vec<f32>,
-    centre: Vec<Vec3>,
-    extent: Vec<f32>,
-    points: Vec<Vec3>,
+    b: Vec<f32>,
+    lights: usize,
+    points: usize,
 }
 
 impl CandidateModel {
-    /// The model of `pts` at `exposure`, over [`SAMPLE_POINTS`] points drawn
-    /// (seeded, deterministic) uniformly by area on its non-emissive
-    /// surfaces; `None` without such surfaces or lights.
+    /// The model of `pts` at `exposure`, over points drawn (seeded,
+    /// deterministic) uniformly by area on its non-emissive surfaces:
+    /// [`SAMPLE_POINTS`], fewer for many lights (at least [`MIN_POINTS`]);
+    /// `None` without such surfaces or lights.
     pub fn new(pts: &PtScene, exposure: f32) -> Option<CandidateModel> {
         let params = RangeParams::new(1.0, exposure).ok()?;
         let lights = pts.lights();
@@ -64,32 +71,31 @@ impl CandidateModel {
             return None;
         }
         let surfaces = Surfaces::new(pts.scene()).ok()?;
-        let points = (0..SAMPLE_POINTS).map(|i| surfaces.sample(&mut Stream::new(0xe9_5150, i)).0).collect();
+        let n = (MAX_PAIRS / lights.len()).clamp(MIN_POINTS as usize, SAMPLE_POINTS as usize);
         let bounds = pts.light_set().bounds();
-        Some(CandidateModel {
-            a: lights.iter().map(|l| params.threshold_range2(l.peak())).collect(),
-            centre: bounds.iter().map(|b| b.center).collect(),
-            extent: bounds.iter().map(|b| b.extent).collect(),
-            points,
-        })
+        let a: Vec<f32> = lights.iter().map(|l| params.threshold_range2(l.peak())).collect();
+        let mut b = Vec::with_capacity(n * lights.len());
+        for i in 0..n as u32 {
+            let x = surfaces.sample(&mut Stream::new(0xe9_5150, i)).0;
+            b.extend(bounds.iter().zip(&a).map(|(bd, &a)| {
+                let d = ((x - bd.center).length() - bd.extent).max(0.0);
+                // A dark light is never a candidate (not 0/0 inside its bound).
+                if a > 0.0 { a / (d * d) } else { 0.0 }
+            }));
+        }
+        Some(CandidateModel { b, lights: lights.len(), points: n })
     }
 
     /// Lights in the model.
     pub fn lights(&self) -> usize {
-        self.a.len()
+        self.lights
     }
 
     /// Mean expected candidates per point at error bound `eps`.
     pub fn mean_candidates(&self, eps: f32) -> f64 {
-        let mut sum = 0.0f64;
-        for &x in &self.points {
-            for j in 0..self.a.len() {
-                let d = ((x - self.centre[j]).length() - self.extent[j]).max(0.0);
-                let p = if d * d * eps <= self.a[j] { 1.0 } else { self.a[j] / (eps * d * d) };
-                sum += p as f64;
-            }
-        }
-        sum / self.points.len() as f64
+        let inv = 1.0 / eps;
+        // f32 sums per point (at most a few thousand terms ≤ 1), f64 across.
+        self.b.chunks(self.lights).map(|row| row.iter().map(|&b| (b * inv).min(1.0)).sum::<f32>() as f64).sum::<f64>() / self.points as f64
     }
 }
 
@@ -117,6 +123,7 @@ pub fn auto_error_bound(pts: &PtScene, exposure: f32, target: f64) -> Option<f32
 mod tests {
     use super::*;
     use crate::scene::Scene;
+    use glam::Vec3;
     use slc_core::light::{Light, PointLight};
 
     fn scene_with(lights: Vec<Light>) -> PtScene {
@@ -156,23 +163,25 @@ mod tests {
     #[test]
     fn mean_candidates_is_the_expected_count() {
         let pts = scene_with(grid(256, 0.02));
-        let mut model = CandidateModel::new(&pts, 1.0).unwrap();
-        model.points.truncate(1);
-        let x = model.points[0];
+        let model = CandidateModel::new(&pts, 1.0).unwrap();
         let eps = 0.05f32;
-        let want = model.mean_candidates(eps);
+        let params = RangeParams::new(1.0, 1.0).unwrap();
+        let surfaces = Surfaces::new(pts.scene()).unwrap();
+        // The model's first point, drawn again, and one ξ-draw count per frame.
+        let x = surfaces.sample(&mut Stream::new(0xe9_5150, 0)).0;
+        let want: f64 = model.b[..model.lights].iter().map(|&b| (b / eps).min(1.0) as f64).sum();
         let draws = 4000u32;
         let mut got = 0u64;
         let mut var = 0.0f64;
-        for j in 0..model.lights() {
-            let d = ((x - model.centre[j]).length() - model.extent[j]).max(0.0);
-            let rt2 = model.a[j] / eps;
+        for (j, (l, bd)) in pts.lights().iter().zip(pts.light_set().bounds()).enumerate() {
+            let rt2 = params.threshold_range2(l.peak()) / eps;
+            let dist = (x - bd.center).length();
+            let d = (dist - bd.extent).max(0.0);
             let p = (rt2 / (d * d)).min(1.0) as f64;
             var += p * (1.0 - p);
             for k in 0..draws {
-                let xi = slc_core::xi::xi_for(3, k, j as u32);
-                let r2 = slc_core::range::random_range2(rt2, xi);
-                got += (r2.sqrt() + model.extent[j] >= (x - model.centre[j]).length()) as u64;
+                let r2 = slc_core::range::random_range2(rt2, slc_core::xi::xi_for(3, k, j as u32));
+                got += (r2.sqrt() + bd.extent >= dist) as u64;
             }
         }
         let mean = got as f64 / draws as f64;
