@@ -49,9 +49,9 @@ fn scene(extra_intensity: f32, glossy: bool) -> (Scene, Vec<Light>) {
 /// Per-pass images (RGB per pixel, `3·pixel + channel`) from one pass at a
 /// time, as differences of the accumulated sums. Asserts every accumulated
 /// pixel is finite and non-negative.
-fn passes(mut one: impl FnMut(&mut PtRender), n: u32) -> Vec<Vec<f64>> {
-    let mut acc = PtRender::new(W, H);
-    let mut prev = vec![0.0f64; 3 * (W * H) as usize];
+fn passes(mut one: impl FnMut(&mut PtRender), n: u32, (w, h): (u32, u32)) -> Vec<Vec<f64>> {
+    let mut acc = PtRender::new(w, h);
+    let mut prev = vec![0.0f64; 3 * (w * h) as usize];
     (0..n)
         .map(|_| {
             one(&mut acc);
@@ -107,17 +107,21 @@ fn all_finite(p: &[Vec<f64>]) -> bool {
 /// Per-pass statistics of `method` on the GPU and on the CPU (same seed),
 /// and of the CPU's unculled `uniform` estimator (its own seed).
 fn run(method: PtMethod, eps: f32, intensity: f32, glossy: bool, n: u32) -> Option<(Stats, Stats, Stats)> {
-    let g = gpu()?;
     let (s, lights) = scene(intensity, glossy);
-    let scene = PtScene::new(&s, &lights).unwrap();
-    let mut gpt = GpuPt::new(g, &scene, W, H).unwrap();
-    let mut pts = CpuPathTracer::new(&scene);
+    run_on(&PtScene::new(&s, &lights).unwrap(), method, eps, n, (W, H))
+}
+
+/// [`run`] on a prepared scene at `size` pixels.
+fn run_on(scene: &PtScene, method: PtMethod, eps: f32, n: u32, size: (u32, u32)) -> Option<(Stats, Stats, Stats)> {
+    let g = gpu()?;
+    let mut gpt = GpuPt::new(g, scene, size.0, size.1).unwrap();
+    let mut pts = CpuPathTracer::new(scene);
     let set = PtSettings { method, error_bound: eps, seed: 3, ..PtSettings::default() };
-    let gp = passes(|acc| _ = gpt.render(acc, &set, 1).unwrap(), n);
-    let cp = passes(|acc| pts.render(acc, &set, 1).unwrap(), n);
+    let gp = passes(|acc| _ = gpt.render(acc, &set, 1).unwrap(), n, size);
+    let cp = passes(|acc| pts.render(acc, &set, 1).unwrap(), n, size);
     let uniform = PtSettings { method: PtMethod::Uniform, seed: 77, ..set };
-    let up = passes(|acc| pts.render(acc, &uniform, 1).unwrap(), n);
-    assert!(all_finite(&gp) && all_finite(&cp), "ε = {eps}, intensity ×{intensity}: a pass is NaN or infinite");
+    let up = passes(|acc| pts.render(acc, &uniform, 1).unwrap(), n, size);
+    assert!(all_finite(&gp) && all_finite(&cp), "{} at ε = {eps}: a pass is NaN or infinite", method.name());
     Some((stats(&gp), stats(&cp), stats(&up)))
 }
 
@@ -150,6 +154,35 @@ fn matches_cpu_and_unculled(glossy: bool) {
     }
 }
 
+/// The scene suite (`scenes/suite/`, the 2,048-light files: triangles
+/// facing, away and any way; points in the volume, in clusters, log-normal
+/// or one dominant; point/spot/IES mixes; spots aimed out; glossy
+/// receivers) at its automatic ε: every method on the GPU has the CPU's
+/// image mean and the CPU's unculled mean (5σ); 6×6 pixels, 48 passes, so
+/// the ten families cost CI about what one scene of the tests above does.
+fn gpu_path_tracer_matches_cpu_on_the_scene_suite() {
+    if gpu().is_none() {
+        return;
+    }
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/suite");
+    let mut files: Vec<_> =
+        std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).filter(|p| p.to_string_lossy().ends_with("-2048.toml")).collect();
+    files.sort();
+    assert!(files.len() >= 8, "the suite has {} families", files.len());
+    for file in files {
+        let f = slc_scene::scene_file::SceneFile::load(&file).unwrap();
+        let scene = PtScene::new(&f.scene, &f.lights).unwrap();
+        let eps = slc_scene::error_bound::auto_error_bound(&scene, 1.0, slc_scene::error_bound::TARGET_CANDIDATES).unwrap();
+        let name = file.file_stem().unwrap().to_string_lossy().into_owned();
+        for method in PtMethod::ALL {
+            let Some((g, c, u)) = run_on(&scene, method, eps, 48, (6, 6)) else { return };
+            let what = format!("{name} {}", method.name());
+            assert_means_agree(&format!("{what}: GPU vs CPU"), &g, &c);
+            assert_means_agree(&format!("{what}: GPU vs CPU uniform (unculled)"), &g, &u);
+        }
+    }
+}
+
 /// Hard cases on the GPU: nothing culled, everything culled, huge and
 /// subnormal intensities: finite, non-negative, and the same mean as the CPU.
 fn gpu_path_tracer_hard_cases() {
@@ -176,6 +209,7 @@ fn gpu_path_tracer_rejects_bad_settings() {
 slc_tests::harness!(
     Gpu: gpu_path_tracer_matches_cpu_and_unculled_in_expectation,
     Gpu: gpu_path_tracer_matches_cpu_on_glossy_surfaces,
+    Gpu: gpu_path_tracer_matches_cpu_on_the_scene_suite,
     Gpu: gpu_path_tracer_hard_cases,
     Gpu: gpu_path_tracer_rejects_bad_settings,
 );
