@@ -188,7 +188,7 @@ crate::shared! {
 /// normals `(axis, cos θ_o)` and the spread `cos θ_e` of emission around
 /// each normal, as pbrt-v4 bounds lights: a triangle `θ_o = 0, θ_e = π/2`
 /// (one-sided); a VPL the same about its normal; a spot light
-/// `θ_o = θ_inner, θ_e = θ_outer − θ_inner`; point and IES lights the whole
+/// `θ_o = θ_inner, θ_e = θ_outer − θ_inner` (at least 2.6°); point and IES lights the whole
 /// sphere (`θ_o = π`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LightCone {
@@ -219,8 +219,11 @@ impl LightCone {
             Light::Spot(s) => {
                 let (cos_outer, cos_inner) = s.cone_cosines();
                 let (co, ci) = (cos_outer.clamp(-1.0, 1.0), cos_inner.clamp(-1.0, 1.0));
-                // cos(θ_outer − θ_inner) without trigonometry.
-                let cos_e = co * ci + safe_sqrt(1.0 - co * co) * safe_sqrt(1.0 - ci * ci);
+                // cos(θ_outer − θ_inner) without trigonometry, at most
+                // 0.999 (θ_e ≥ 2.6°): a hard-edged spot (θ_e = 0) rounds
+                // to 1 and would get importance 0 inside its beam, where
+                // cos θ' = 1 ≤ cos θ_e (pbrt-v4 allows the same slop).
+                let cos_e = (co * ci + safe_sqrt(1.0 - co * co) * safe_sqrt(1.0 - ci * ci)).min(0.999);
                 cone(s.direction(), ci, cos_e)
             }
             Light::Point(_) | Light::Ies(_) => cone(Vec3::Z, -1.0, 0.0),
@@ -298,6 +301,25 @@ mod tests {
         let p = Light::Point(PointLight::new(Vec3::ONE, Vec3::ONE).unwrap());
         let pc = LightCone::of_light(&p, p.power());
         assert!(pc.importance(Vec3::ONE, Vec3::Y).is_finite());
+    }
+
+    /// A spot light of equal inner and outer angles (a hard-edged beam,
+    /// `θ_e = 0`) keeps a positive importance inside its beam, where it
+    /// lights the point: `cos θ_e` rounded to 1 would make `cos θ' ≤ cos θ_e`
+    /// everywhere (pbrt-v4 gives such a spot `cos θ_e = 0.999` when its
+    /// angles differ, and 1, that is never sampled, when they are equal).
+    #[test]
+    fn hard_edged_spot_lights_its_beam() {
+        use crate::light::SpotLight;
+        for a in [0.01f32, 0.2, 0.5, 0.8, 1.0, 1.3] {
+            for (inner, outer) in [(a, a), (a, a + 1e-6), (a * 0.999, a)] {
+                let s = Light::Spot(SpotLight::new(Vec3::ZERO, Vec3::NEG_Y, Vec3::ONE, inner, outer).unwrap());
+                let c = LightCone::of_light(&s, s.power());
+                let p = Vec3::new(0.0, -2.0, 0.0);
+                assert!(s.contribution_at(p).0.max_element() > 0.0);
+                assert!(c.importance(p, Vec3::Y) > 0.0, "spot {inner} {outer}: cos_e {}", c.cos_e);
+            }
+        }
     }
 
     #[test]
