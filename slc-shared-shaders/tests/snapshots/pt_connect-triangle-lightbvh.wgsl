@@ -564,15 +564,32 @@ fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d: vec3<f
 fn light_importance(center_2: vec3<f32>, radius_2: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, p_2: vec3<f32>, n_9: vec3<f32>) -> f32 {
     var imp: f32;
 
-    let _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if (dot(n_9, n_9) > 0f) {
-        let _e13 = imp;
-        let _e14 = cone_cos_toward(center_2, radius_2, p_2, n_9);
-        imp = (_e13 * max(_e14, 0f));
+    let v_9 = (p_2 - center_2);
+    let dist2_3 = dot(v_9, v_9);
+    let r2_5 = (radius_2 * radius_2);
+    let d2_9 = max(max(dist2_3, r2_5), MIN_D2_);
+    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_3))), (dist2_3 > 0f));
+    let cos_w_1 = dot(axis_1, wi_3);
+    let _e28 = safe_sqrt((1f - (cos_w_1 * cos_w_1)));
+    let _e29 = subtended_cos(dist2_3, r2_5);
+    let _e33 = safe_sqrt((1f - (_e29 * _e29)));
+    let _e37 = safe_sqrt((1f - (cos_o_1 * cos_o_1)));
+    let _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    let _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    let _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
+    if (_e40 <= cos_e_1) {
+        return 0f;
     }
-    let _e18 = imp;
-    return max(_e18, 0f);
+    imp = ((phi_1 * _e40) / d2_9);
+    if (dot(n_9, n_9) > 0f) {
+        let cos_i_1 = -(dot(wi_3, n_9));
+        let _e51 = imp;
+        let _e55 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
+        let _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
+        imp = (_e51 * max(_e56, 0f));
+    }
+    let _e60 = imp;
+    return max(_e60, 0f);
 }
 
 fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_10: vec3<f32>, r: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
@@ -691,9 +708,9 @@ fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, 
         return -1f;
     }
     let q = cross(s_6, e1_);
-    let v_9 = (dot(d_2, q) * inv_1);
-    if !((v_9 < 0f)) {
-        local_13 = ((u_3 + v_9) > 1f);
+    let v_10 = (dot(d_2, q) * inv_1);
+    if !((v_10 < 0f)) {
+        local_13 = ((u_3 + v_10) > 1f);
     } else {
         local_13 = true;
     }
@@ -880,12 +897,12 @@ fn connect(li: u32, x_4: vec3<f32>, n_12: vec3<f32>, ng_1: vec3<f32>, s: f32, w_
         return _e40;
     }
     let _e42 = c_4.y;
-    let v_10 = (x_4 - _e42);
-    let d2_9 = dot(v_10, v_10);
-    let _e49 = light_intensity(l_8, (v_10 / vec3(sqrt(d2_9))));
+    let v_11 = (x_4 - _e42);
+    let d2_10 = dot(v_11, v_11);
+    let _e49 = light_intensity(l_8, (v_11 / vec3(sqrt(d2_10))));
     let _e51 = c_4.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     let _e58 = c_4;
     return _e58;
@@ -996,14 +1013,14 @@ fn light_bvh_sample(nodes_4: u32, x_7: vec3<f32>, n_15: vec3<f32>, r_4: vec3<f32
 
 fn light_pdf_selected(li_1: u32, x_8: vec3<f32>, lobe_8: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
     let l_9 = lights[li_1];
-    let v_11 = (x_8 - y_1);
-    let d2_10 = dot(v_11, v_11);
+    let v_12 = (x_8 - y_1);
+    let d2_11 = dot(v_12, v_12);
     let _e10 = light_normal(l_9);
-    let cos_y_1 = select(0f, dot(_e10, (v_11 / vec3(sqrt(d2_10)))), (d2_10 > 0f));
+    let cos_y_1 = select(0f, dot(_e10, (v_12 / vec3(sqrt(d2_11)))), (d2_11 > 0f));
     let _e19 = range_scale(lobe_8);
     let _e22 = rt2_4[li_1];
     let _e24 = light_area(l_9);
-    let _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_10, _e24, cos_y_1);
+    let _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_11, _e24, cos_y_1);
     return _e25;
 }
 

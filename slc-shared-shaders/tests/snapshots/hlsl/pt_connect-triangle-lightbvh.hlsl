@@ -602,15 +602,32 @@ float light_importance(float3 center_2, float radius_2, float phi_1, float3 axis
 {
     float imp = (float)0;
 
-    const float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if ((dot(n_9, n_9) > 0.0)) {
-        float _e13 = imp;
-        const float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_9);
-        imp = (_e13 * max(_e14, 0.0));
+    float3 v_9 = (p_2 - center_2);
+    float dist2_3 = dot(v_9, v_9);
+    float r2_5 = (radius_2 * radius_2);
+    float d2_9 = max(max(dist2_3, r2_5), MIN_D2_);
+    float3 wi_3 = ((dist2_3 > 0.0) ? (v_9 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0));
+    float cos_w_1 = dot(axis_1, wi_3);
+    const float _e28 = safe_sqrt((1.0 - (cos_w_1 * cos_w_1)));
+    const float _e29 = subtended_cos(dist2_3, r2_5);
+    const float _e33 = safe_sqrt((1.0 - (_e29 * _e29)));
+    const float _e37 = safe_sqrt((1.0 - (cos_o_1 * cos_o_1)));
+    const float _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    const float _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    const float _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
+    if ((_e40 <= cos_e_1)) {
+        return 0.0;
     }
-    float _e18 = imp;
-    return max(_e18, 0.0);
+    imp = ((phi_1 * _e40) / d2_9);
+    if ((dot(n_9, n_9) > 0.0)) {
+        float cos_i_1 = -(dot(wi_3, n_9));
+        float _e51 = imp;
+        const float _e55 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
+        const float _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
+        imp = (_e51 * max(_e56, 0.0));
+    }
+    float _e60 = imp;
+    return max(_e60, 0.0);
 }
 
 float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_10, float3 r, float4 lobe_3)
@@ -739,9 +756,9 @@ float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_4, float3 c_3, f
         return -1.0;
     }
     float3 q = cross(s_6, e1_);
-    float v_9 = (dot(d_2, q) * inv_1);
-    if (!((v_9 < 0.0))) {
-        local_13 = ((u_3 + v_9) > 1.0);
+    float v_10 = (dot(d_2, q) * inv_1);
+    if (!((v_10 < 0.0))) {
+        local_13 = ((u_3 + v_10) > 1.0);
     } else {
         local_13 = true;
     }
@@ -988,12 +1005,12 @@ Connection connect(uint li, float3 x_4, float3 n_12, float3 ng_1, float s, float
         return connection;
     }
     float3 _e42 = c_4.y;
-    float3 v_10 = (x_4 - _e42);
-    float d2_9 = dot(v_10, v_10);
-    const float3 _e49 = light_intensity(l_8, (v_10 / (sqrt(d2_9)).xxx));
+    float3 v_11 = (x_4 - _e42);
+    float d2_10 = dot(v_11, v_11);
+    const float3 _e49 = light_intensity(l_8, (v_11 / (sqrt(d2_10)).xxx));
     float _e51 = c_4.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     Connection _e58 = c_4;
     const Connection connection_1 = _e58;
@@ -1141,14 +1158,14 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_7, float3 n_15, float3 r_4, floa
 float light_pdf_selected(uint li_1, float3 x_8, float4 lobe_8, float3 y_1, float sel)
 {
     GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_1*64+0)), asuint(lights.Load(li_1*64+12)), asfloat(lights.Load3(li_1*64+16)), asfloat(lights.Load(li_1*64+28)), asfloat(lights.Load3(li_1*64+32)), asfloat(lights.Load(li_1*64+44)), asfloat(lights.Load3(li_1*64+48)), asuint(lights.Load(li_1*64+60)));
-    float3 v_11 = (x_8 - y_1);
-    float d2_10 = dot(v_11, v_11);
+    float3 v_12 = (x_8 - y_1);
+    float d2_11 = dot(v_12, v_12);
     const float3 _e10 = light_normal(l_9);
-    float cos_y_1 = ((d2_10 > 0.0) ? dot(_e10, (v_11 / (sqrt(d2_10)).xxx)) : 0.0);
+    float cos_y_1 = ((d2_11 > 0.0) ? dot(_e10, (v_12 / (sqrt(d2_11)).xxx)) : 0.0);
     const float _e19 = range_scale(lobe_8);
     float _e22 = asfloat(rt2_4.Load(li_1*4));
     const float _e24 = light_area(l_9);
-    const float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_10, _e24, cos_y_1);
+    const float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_11, _e24, cos_y_1);
     return _e25;
 }
 

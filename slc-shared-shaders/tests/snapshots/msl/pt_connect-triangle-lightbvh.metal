@@ -748,15 +748,32 @@ float light_importance(
     metal::float3 n_9
 ) {
     float imp = {};
-    float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if (metal::dot(n_9, n_9) > 0.0) {
-        float _e13 = imp;
-        float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_9);
-        imp = _e13 * metal::max(_e14, 0.0);
+    metal::float3 v_9 = p_2 - center_2;
+    float dist2_3 = metal::dot(v_9, v_9);
+    float r2_5 = radius_2 * radius_2;
+    float d2_9 = metal::max(metal::max(dist2_3, r2_5), MIN_D2_);
+    metal::float3 wi_3 = (dist2_3 > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_3))) : metal::float3(0.0, 0.0, 0.0);
+    float cos_w_1 = metal::dot(axis_1, wi_3);
+    float _e28 = safe_sqrt(1.0 - (cos_w_1 * cos_w_1));
+    float _e29 = subtended_cos(dist2_3, r2_5);
+    float _e33 = safe_sqrt(1.0 - (_e29 * _e29));
+    float _e37 = safe_sqrt(1.0 - (cos_o_1 * cos_o_1));
+    float _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    float _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    float _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
+    if (_e40 <= cos_e_1) {
+        return 0.0;
     }
-    float _e18 = imp;
-    return metal::max(_e18, 0.0);
+    imp = (phi_1 * _e40) / d2_9;
+    if (metal::dot(n_9, n_9) > 0.0) {
+        float cos_i_1 = -(metal::dot(wi_3, n_9));
+        float _e51 = imp;
+        float _e55 = safe_sqrt(1.0 - (cos_i_1 * cos_i_1));
+        float _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
+        imp = _e51 * metal::max(_e56, 0.0);
+    }
+    float _e60 = imp;
+    return metal::max(_e60, 0.0);
 }
 
 float glossy_importance(
@@ -925,9 +942,9 @@ float ray_triangle(
         return -1.0;
     }
     metal::float3 q = metal::cross(s_6, e1_);
-    float v_9 = metal::dot(d_2, q) * inv_1;
-    if (!((v_9 < 0.0))) {
-        local_13 = (u_3 + v_9) > 1.0;
+    float v_10 = metal::dot(d_2, q) * inv_1;
+    if (!((v_10 < 0.0))) {
+        local_13 = (u_3 + v_10) > 1.0;
     } else {
         local_13 = true;
     }
@@ -1163,12 +1180,12 @@ Connection connect(
         return _e40;
     }
     metal::float3 _e42 = c_4.y;
-    metal::float3 v_10 = x_4 - _e42;
-    float d2_9 = metal::dot(v_10, v_10);
-    metal::float3 _e49 = light_intensity(l_8, v_10 / metal::float3(metal::sqrt(d2_9)));
+    metal::float3 v_11 = x_4 - _e42;
+    float d2_10 = metal::dot(v_11, v_11);
+    metal::float3 _e49 = light_intensity(l_8, v_11 / metal::float3(metal::sqrt(d2_10)));
     float _e51 = c_4.cos_x;
     float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_9, s * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_10, s * _e54, w_res);
     c_4.e = _e49 * _e56;
     Connection _e58 = c_4;
     return _e58;
@@ -1329,14 +1346,14 @@ float light_pdf_selected(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_9 = lights[li_1];
-    metal::float3 v_11 = x_8 - y_1;
-    float d2_10 = metal::dot(v_11, v_11);
+    metal::float3 v_12 = x_8 - y_1;
+    float d2_11 = metal::dot(v_12, v_12);
     metal::float3 _e10 = light_normal(l_9);
-    float cos_y_1 = (d2_10 > 0.0) ? metal::dot(_e10, v_11 / metal::float3(metal::sqrt(d2_10))) : 0.0;
+    float cos_y_1 = (d2_11 > 0.0) ? metal::dot(_e10, v_12 / metal::float3(metal::sqrt(d2_11))) : 0.0;
     float _e19 = range_scale(lobe_8);
     float _e22 = rt2_4[li_1];
     float _e24 = light_area(l_9);
-    float _e25 = light_strategy_pdf(sel, _e19 * _e22, d2_10, _e24, cos_y_1);
+    float _e25 = light_strategy_pdf(sel, _e19 * _e22, d2_11, _e24, cos_y_1);
     return _e25;
 }
 
