@@ -103,10 +103,34 @@ crate::shared! {
     /// centre less the same subtended angle ([`cone_cos_toward`]). The
     /// receiver is one-sided (reflection only; pbrt-v4 takes `|cos|` for
     /// transmission), so only lights wholly below its horizon get 0.
+    ///
+    /// Written out rather than as [`emitter_importance`] times
+    /// [`cone_cos_toward`] (the same values, bit for bit): the direction,
+    /// distance and subtended angle are computed once, and the receiver's
+    /// term not at all where the emitter's is 0, as pbrt-v4 does; the
+    /// light BVH's walk calls this twice per level.
     pub fn light_importance(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, p: vec3f, n: vec3f) -> f32 {
-        let mut imp: f32 = emitter_importance(center, radius, phi, axis, cos_o, cos_e, p);
+        let v: vec3f = p - center;
+        let dist2: f32 = dot(v, v);
+        let r2: f32 = radius * radius;
+        let d2: f32 = max(max(dist2, r2), MIN_D2);
+        let wi: vec3f = select(vec3f(0.0, 0.0, 0.0), v / sqrt(dist2), dist2 > 0.0);
+        let cos_w: f32 = dot(axis, wi);
+        let sin_w: f32 = safe_sqrt(1.0 - cos_w * cos_w);
+        let cos_b: f32 = subtended_cos(dist2, r2);
+        let sin_b: f32 = safe_sqrt(1.0 - cos_b * cos_b);
+        let sin_o: f32 = safe_sqrt(1.0 - cos_o * cos_o);
+        let cos_x: f32 = cos_sub_clamped(sin_w, cos_w, sin_o, cos_o);
+        let sin_x: f32 = sin_sub_clamped(sin_w, cos_w, sin_o, cos_o);
+        let cos_p: f32 = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
+        if cos_p <= cos_e {
+            return 0.0;
+        }
+        let mut imp: f32 = phi * cos_p / d2;
         if dot(n, n) > 0.0 {
-            imp = imp * max(cone_cos_toward(center, radius, p, n), 0.0);
+            // The direction from p to the centre is −wi.
+            let cos_i: f32 = -dot(wi, n);
+            imp = imp * max(cos_sub_clamped(safe_sqrt(1.0 - cos_i * cos_i), cos_i, sin_b, cos_b), 0.0);
         }
         return max(imp, 0.0);
     }
@@ -188,7 +212,7 @@ crate::shared! {
 /// normals `(axis, cos θ_o)` and the spread `cos θ_e` of emission around
 /// each normal, as pbrt-v4 bounds lights: a triangle `θ_o = 0, θ_e = π/2`
 /// (one-sided); a VPL the same about its normal; a spot light
-/// `θ_o = θ_inner, θ_e = θ_outer − θ_inner`; point and IES lights the whole
+/// `θ_o = θ_inner, θ_e = θ_outer − θ_inner` (at least 2.6°); point and IES lights the whole
 /// sphere (`θ_o = π`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LightCone {
@@ -219,8 +243,11 @@ impl LightCone {
             Light::Spot(s) => {
                 let (cos_outer, cos_inner) = s.cone_cosines();
                 let (co, ci) = (cos_outer.clamp(-1.0, 1.0), cos_inner.clamp(-1.0, 1.0));
-                // cos(θ_outer − θ_inner) without trigonometry.
-                let cos_e = co * ci + safe_sqrt(1.0 - co * co) * safe_sqrt(1.0 - ci * ci);
+                // cos(θ_outer − θ_inner) without trigonometry, at most
+                // 0.999 (θ_e ≥ 2.6°): a hard-edged spot (θ_e = 0) rounds
+                // to 1 and would get importance 0 inside its beam, where
+                // cos θ' = 1 ≤ cos θ_e (pbrt-v4 allows the same slop).
+                let cos_e = (co * ci + safe_sqrt(1.0 - co * co) * safe_sqrt(1.0 - ci * ci)).min(0.999);
                 cone(s.direction(), ci, cos_e)
             }
             Light::Point(_) | Light::Ies(_) => cone(Vec3::Z, -1.0, 0.0),
@@ -298,6 +325,51 @@ mod tests {
         let p = Light::Point(PointLight::new(Vec3::ONE, Vec3::ONE).unwrap());
         let pc = LightCone::of_light(&p, p.power());
         assert!(pc.importance(Vec3::ONE, Vec3::Y).is_finite());
+    }
+
+    /// [`light_importance`] written out equals [`emitter_importance`] times
+    /// the receiver's widened cosine ([`cone_cos_toward`]) bit for bit.
+    #[test]
+    fn light_importance_is_the_product_of_its_halves() {
+        let mut s = 99u32;
+        let mut r = || {
+            s = s.wrapping_mul(1664525).wrapping_add(1013904223);
+            (s >> 8) as f32 / (1u32 << 24) as f32
+        };
+        for k in 0..20_000 {
+            let center = Vec3::new(r(), r(), r()) * 2.0;
+            let radius = if k % 5 == 0 { 0.0 } else { r() * r() };
+            let axis = Vec3::new(r() - 0.5, r() - 0.5, r() - 0.5).normalize_or(Vec3::Y);
+            let (cos_o, cos_e) = (2.0 * r() - 1.0, if k % 3 == 0 { 0.0 } else { r() });
+            let p = if k % 7 == 0 { center } else { Vec3::new(r(), r(), r()) * 2.0 };
+            let n = if k % 11 == 0 { Vec3::ZERO } else { Vec3::new(r() - 0.5, r() - 0.5, r() - 0.5).normalize_or(Vec3::X) };
+            let phi = 0.1 + r();
+            let mut want = emitter_importance(center, radius, phi, axis, cos_o, cos_e, p);
+            if n != Vec3::ZERO {
+                want *= cone_cos_toward(center, radius, p, n).max(0.0);
+            }
+            let got = light_importance(center, radius, phi, axis, cos_o, cos_e, p, n);
+            assert_eq!(got.to_bits(), want.max(0.0).to_bits(), "case {k}: {got} vs {want}");
+        }
+    }
+
+    /// A spot light of equal inner and outer angles (a hard-edged beam,
+    /// `θ_e = 0`) keeps a positive importance inside its beam, where it
+    /// lights the point: `cos θ_e` rounded to 1 would make `cos θ' ≤ cos θ_e`
+    /// everywhere (pbrt-v4 gives such a spot `cos θ_e = 0.999` when its
+    /// angles differ, and 1, that is never sampled, when they are equal).
+    #[test]
+    fn hard_edged_spot_lights_its_beam() {
+        use crate::light::SpotLight;
+        for a in [0.01f32, 0.2, 0.5, 0.8, 1.0, 1.3] {
+            for (inner, outer) in [(a, a), (a, a + 1e-6), (a * 0.999, a)] {
+                let s = Light::Spot(SpotLight::new(Vec3::ZERO, Vec3::NEG_Y, Vec3::ONE, inner, outer).unwrap());
+                let c = LightCone::of_light(&s, s.power());
+                let p = Vec3::new(0.0, -2.0, 0.0);
+                assert!(s.contribution_at(p).0.max_element() > 0.0);
+                assert!(c.importance(p, Vec3::Y) > 0.0, "spot {inner} {outer}: cos_e {}", c.cos_e);
+            }
+        }
     }
 
     #[test]

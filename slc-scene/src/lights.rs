@@ -76,8 +76,9 @@ impl LightSet {
         &self.bsh
     }
 
-    /// Each light's emitted RGB power, the quantity power sampling and the
-    /// light BVH both weigh lights by (max channel).
+    /// Each light's emitted RGB power, the quantity power sampling weighs
+    /// lights by (max channel); the light BVH too, but for spot lights
+    /// ([`crate::light_bvh::bvh_cone`]).
     pub fn power(&self) -> &[Vec3] {
         &self.power
     }

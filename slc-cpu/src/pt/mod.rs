@@ -166,8 +166,13 @@ impl CpuPathTracer {
     /// the light is known to be one of them). The weighted picks select with
     /// `k·w/(W₋ⱼ + w)`, `W₋ⱼ` the weight of the others (`W` from `nee`).
     /// `rc` is the receiver at `x` (its normal and lobe weigh the lights).
+    /// `picked`: the selection probability when the caller already knows
+    /// it, as the one-light methods' next-event estimate does (the pmf its
+    /// sample returned): the light BVH's MIS weight then takes it, as
+    /// pbrt-v4's `SampleLd` takes `sampledLight->p`, instead of walking the
+    /// tree a second time.
     #[allow(clippy::too_many_arguments)]
-    fn light_pdf(&self, s: &PtSettings, st: &Pass, l: usize, rc: &Receiver, y: Vec3, nee: NeeState, in_nee: bool) -> f32 {
+    fn light_pdf(&self, s: &PtSettings, st: &Pass, l: usize, rc: &Receiver, y: Vec3, nee: NeeState, in_nee: bool, picked: Option<f32>) -> f32 {
         let Light::Triangle(t) = &self.lights()[l] else { return 0.0 };
         let x = rc.p;
         // The receiver's range scale s (1 for a Lambertian one).
@@ -186,7 +191,7 @@ impl CpuPathTracer {
             }
             PtMethod::Uniform => (1.0 / self.lights().len() as f32, f32::INFINITY),
             PtMethod::Power => (self.pts.light_set().alias().pdf(l) as f32, f32::INFINITY),
-            PtMethod::LightBvh => (self.pts.light_bvh().pmf(rc, l), f32::INFINITY),
+            PtMethod::LightBvh => (picked.unwrap_or_else(|| self.pts.light_bvh().pmf(rc, l)), f32::INFINITY),
         };
         light_strategy_pdf(select, rt2, d2, t.area(), cos_y)
     }
@@ -225,7 +230,8 @@ impl CpuPathTracer {
         let rt2 = if rr { vx.range_scale * st.rt2[l] } else { f32::INFINITY };
         let to_light = -wdir;
         let mis = match light {
-            Light::Triangle(_) => mis_power(self.light_pdf(s, st, l, &vx.rc, y, nee, true), vx.bsdf_pdf(to_light)),
+            // The one-light methods (no RR) pass `extra = 1/pmf` of their pick.
+            Light::Triangle(_) => mis_power(self.light_pdf(s, st, l, &vx.rc, y, nee, true, (!rr).then(|| 1.0 / extra)), vx.bsdf_pdf(to_light)),
             _ => 1.0,
         };
         Some(vx.mat.eval(n, vx.wo, to_light) * i * connection_factor(cos_x, d2, rt2, extra * mis))
@@ -347,7 +353,7 @@ impl CpuPathTracer {
                 match &prev {
                     None => radiance += beta * le,
                     Some((rc, nee, pdf_bsdf)) => {
-                        let pdf_light = self.light_pdf(s, st, l as usize, rc, x, *nee, false);
+                        let pdf_light = self.light_pdf(s, st, l as usize, rc, x, *nee, false, None);
                         radiance += beta * le * mis_power(*pdf_bsdf, pdf_light);
                     }
                 }
@@ -470,7 +476,7 @@ mod tests {
                 for (u1, u2) in [(0.1, 0.2), (0.5, 0.5), (0.9, 0.05)] {
                     let y = t.sample(u1, u2);
                     let cos_x = n.dot((y - x).normalize());
-                    let p_light_hit = pts.light_pdf(&s, &st, l, &rc, y, nee, false);
+                    let p_light_hit = pts.light_pdf(&s, &st, l, &rc, y, nee, false, None);
                     assert!(p_light_hit > 0.0 && cos_x > 0.0, "{}", method.name());
                     if !in_range {
                         outside += 1;
@@ -483,8 +489,17 @@ mod tests {
                         }
                         continue;
                     }
-                    let p_light_nee = pts.light_pdf(&s, &st, l, &rc, y, nee, true);
-                    assert_eq!(p_light_nee, p_light_hit, "{}", method.name());
+                    // The one-light methods' NEE passes its pick's pmf
+                    // (`connect` gets it as `extra = 1/pmf`): the pmf the
+                    // sampler returned, which is the walk's.
+                    let picked = match method {
+                        PtMethod::Uniform => Some(1.0 / pts.light_count() as f32),
+                        PtMethod::Power => Some(pts.pts.light_set().alias().pdf(l) as f32),
+                        PtMethod::LightBvh => Some(pts.pts.light_bvh().pmf(&rc, l)),
+                        _ => None,
+                    };
+                    let p_light_nee = pts.light_pdf(&s, &st, l, &rc, y, nee, true, picked.map(|p| 1.0 / (1.0 / p)));
+                    assert!((p_light_nee - p_light_hit).abs() <= 1e-6 * p_light_hit, "{}: {p_light_nee} vs {p_light_hit}", method.name());
                     let p_bsdf = vx.bsdf_pdf((y - x).normalize());
                     assert!(p_bsdf > 0.0);
                     let w_light = mis_power(p_light_nee, p_bsdf);

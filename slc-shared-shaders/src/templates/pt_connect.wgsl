@@ -42,7 +42,13 @@ fn shade_pick(li: u32, x: vec3f, n: vec3f, ng: vec3f, m: GpuMaterial, wo: vec3f,
     let l = normalize(c.y - x);
     var mis = 1.0;
     if light_area(lights[li]) > 0.0 {
-        mis = mis_weight(light_pdf(li, x, n, r, lobe, c.y, nee, true), bsdf_pdf(n, wo, l, m.alpha, specular_probability(lobe)));
+{% if selection == "lightbvh" %}
+        // The pick's pmf is 1/w: no second walk of the tree.
+        let pdf_light = light_pdf_selected(li, x, lobe, c.y, 1.0 / w);
+{% else %}
+        let pdf_light = light_pdf(li, x, n, r, lobe, c.y, nee, true);
+{% endif %}
+        mis = mis_weight(pdf_light, bsdf_pdf(n, wo, l, m.alpha, specular_probability(lobe)));
     }
     return brdf_eval(m.albedo, m.metallic, m.f0, m.f90, m.alpha, n, wo, l) * c.e * mis;
 }

@@ -454,15 +454,32 @@ fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d: vec3<f
 fn light_importance(center_2: vec3<f32>, radius_2: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, p_2: vec3<f32>, n_4: vec3<f32>) -> f32 {
     var imp: f32;
 
-    let _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if (dot(n_4, n_4) > 0f) {
-        let _e13 = imp;
-        let _e14 = cone_cos_toward(center_2, radius_2, p_2, n_4);
-        imp = (_e13 * max(_e14, 0f));
+    let v_7 = (p_2 - center_2);
+    let dist2_3 = dot(v_7, v_7);
+    let r2_5 = (radius_2 * radius_2);
+    let d2_7 = max(max(dist2_3, r2_5), MIN_D2_);
+    let wi_1 = select(vec3<f32>(0f, 0f, 0f), (v_7 / vec3(sqrt(dist2_3))), (dist2_3 > 0f));
+    let cos_w_1 = dot(axis_1, wi_1);
+    let _e28 = safe_sqrt((1f - (cos_w_1 * cos_w_1)));
+    let _e29 = subtended_cos(dist2_3, r2_5);
+    let _e33 = safe_sqrt((1f - (_e29 * _e29)));
+    let _e37 = safe_sqrt((1f - (cos_o_1 * cos_o_1)));
+    let _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    let _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    let _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
+    if (_e40 <= cos_e_1) {
+        return 0f;
     }
-    let _e18 = imp;
-    return max(_e18, 0f);
+    imp = ((phi_1 * _e40) / d2_7);
+    if (dot(n_4, n_4) > 0f) {
+        let cos_i_1 = -(dot(wi_1, n_4));
+        let _e51 = imp;
+        let _e55 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
+        let _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
+        imp = (_e51 * max(_e56, 0f));
+    }
+    let _e60 = imp;
+    return max(_e60, 0f);
 }
 
 fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_5: vec3<f32>, r_2: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
@@ -493,14 +510,14 @@ fn candidate_weight(importance: f32, rt2_2: f32, d2_4: f32) -> f32 {
 }
 
 fn cone_weight(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, rt2_3: f32, p_4: vec3<f32>, n_6: vec3<f32>, r_3: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
-    let v_7 = (p_4 - center_4);
+    let v_8 = (p_4 - center_4);
     if (lobe_4.y <= 0f) {
         let _e15 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_7, v_7));
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_8, v_8));
         return _e19;
     }
     let _e20 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6, r_3, lobe_4);
-    let _e22 = candidate_weight(_e20, rt2_3, dot(v_7, v_7));
+    let _e22 = candidate_weight(_e20, rt2_3, dot(v_8, v_8));
     return _e22;
 }
 
@@ -618,12 +635,12 @@ fn connect(li: u32, x_5: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_r
         return _e40;
     }
     let _e42 = c_4.y;
-    let v_8 = (x_5 - _e42);
-    let d2_7 = dot(v_8, v_8);
-    let _e49 = light_intensity(l_4, (v_8 / vec3(sqrt(d2_7))));
+    let v_9 = (x_5 - _e42);
+    let d2_8 = dot(v_9, v_9);
+    let _e49 = light_intensity(l_4, (v_9 / vec3(sqrt(d2_8))));
     let _e51 = c_4.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     let _e58 = c_4;
     return _e58;

@@ -1001,15 +1001,32 @@ fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d_1: vec3
 fn light_importance(center_2: vec3<f32>, radius_2: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, p_2: vec3<f32>, n_19: vec3<f32>) -> f32 {
     var imp: f32;
 
-    let _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if (dot(n_19, n_19) > 0f) {
-        let _e13 = imp;
-        let _e14 = cone_cos_toward(center_2, radius_2, p_2, n_19);
-        imp = (_e13 * max(_e14, 0f));
+    let v_18 = (p_2 - center_2);
+    let dist2_3 = dot(v_18, v_18);
+    let r2_12 = (radius_2 * radius_2);
+    let d2_18 = max(max(dist2_3, r2_12), MIN_D2_);
+    let wi_4 = select(vec3<f32>(0f, 0f, 0f), (v_18 / vec3(sqrt(dist2_3))), (dist2_3 > 0f));
+    let cos_w_1 = dot(axis_1, wi_4);
+    let _e28 = safe_sqrt((1f - (cos_w_1 * cos_w_1)));
+    let _e29 = subtended_cos(dist2_3, r2_12);
+    let _e33 = safe_sqrt((1f - (_e29 * _e29)));
+    let _e37 = safe_sqrt((1f - (cos_o_1 * cos_o_1)));
+    let _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    let _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    let _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
+    if (_e40 <= cos_e_1) {
+        return 0f;
     }
-    let _e18 = imp;
-    return max(_e18, 0f);
+    imp = ((phi_1 * _e40) / d2_18);
+    if (dot(n_19, n_19) > 0f) {
+        let cos_i_1 = -(dot(wi_4, n_19));
+        let _e51 = imp;
+        let _e55 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
+        let _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
+        imp = (_e51 * max(_e56, 0f));
+    }
+    let _e60 = imp;
+    return max(_e60, 0f);
 }
 
 fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_20: vec3<f32>, r_3: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
@@ -1049,14 +1066,14 @@ fn candidate_weight(importance: f32, rt2_5: f32, d2_9: f32) -> f32 {
 }
 
 fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_4: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_4: f32, rt2_6: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    let v_18 = (p_5 - center_5);
+    let v_19 = (p_5 - center_5);
     if (lobe_5.y <= 0f) {
         let _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_18, v_18));
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_19, v_19));
         return _e19;
     }
     let _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
-    let _e22 = candidate_weight(_e20, rt2_6, dot(v_18, v_18));
+    let _e22 = candidate_weight(_e20, rt2_6, dot(v_19, v_19));
     return _e22;
 }
 
@@ -1200,9 +1217,9 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
         return -1f;
     }
     let q_5 = cross(s_7, e1_2);
-    let v_19 = (dot(d_3, q_5) * inv_1);
-    if !((v_19 < 0f)) {
-        local_17 = ((u_6 + v_19) > 1f);
+    let v_20 = (dot(d_3, q_5) * inv_1);
+    if !((v_20 < 0f)) {
+        local_17 = ((u_6 + v_20) > 1f);
     } else {
         local_17 = true;
     }
@@ -1414,8 +1431,8 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_5: vec3<f32>, exten
 }
 
 fn display_encode(x_15: f32) -> f32 {
-    let v_20 = max(x_15, 0f);
-    let t_8 = ((2f * v_20) / (1f + (2f * v_20)));
+    let v_21 = max(x_15, 0f);
+    let t_8 = ((2f * v_21) / (1f + (2f * v_21)));
     return select(((1.055f * pow(t_8, 0.41666666f)) - 0.055f), (12.92f * t_8), (t_8 <= 0.0031308f));
 }
 
@@ -1428,9 +1445,9 @@ fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
 }
 
 fn point_irradiance(intensity_1: vec3<f32>, n_26: vec3<f32>, v_10: vec3<f32>) -> vec3<f32> {
-    let d2_18 = dot(v_10, v_10);
-    let cos_x_2 = (dot(n_26, v_10) / sqrt(max(d2_18, MIN_D2_)));
-    let _e11 = inverse_square(d2_18);
+    let d2_19 = dot(v_10, v_10);
+    let cos_x_2 = (dot(n_26, v_10) / sqrt(max(d2_19, MIN_D2_)));
+    let _e11 = inverse_square(d2_19);
     return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }
 

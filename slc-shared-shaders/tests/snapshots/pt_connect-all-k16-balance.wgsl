@@ -1186,35 +1186,40 @@ fn select_pdf(li_1: u32, x_12: vec3<f32>, n_16: vec3<f32>, r_1: vec3<f32>, lobe_
     return _e8;
 }
 
-fn light_pdf(li_2: u32, x_13: vec3<f32>, n_17: vec3<f32>, r_2: vec3<f32>, lobe_4: vec4<f32>, y_2: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+fn light_pdf_selected(li_2: u32, x_13: vec3<f32>, lobe_4: vec4<f32>, y_2: vec3<f32>, sel: f32) -> f32 {
     let l_9 = lights[li_2];
     let v_10 = (x_13 - y_2);
     let d2_9 = dot(v_10, v_10);
-    let _e13 = light_normal(l_9);
-    let cos_y_1 = select(0f, dot(_e13, (v_10 / vec3(sqrt(d2_9)))), (d2_9 > 0f));
-    let _e22 = select_pdf(li_2, x_13, n_17, r_2, lobe_4, nee_1, in_range_2);
-    let _e23 = range_scale(lobe_4);
-    let _e26 = rt2_4[li_2];
-    let _e28 = light_area(l_9);
-    let _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_9, _e28, cos_y_1);
-    return _e29;
+    let _e10 = light_normal(l_9);
+    let cos_y_1 = select(0f, dot(_e10, (v_10 / vec3(sqrt(d2_9)))), (d2_9 > 0f));
+    let _e19 = range_scale(lobe_4);
+    let _e22 = rt2_4[li_2];
+    let _e24 = light_area(l_9);
+    let _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_9, _e24, cos_y_1);
+    return _e25;
 }
 
-fn shade_pick(li_3: u32, x_14: vec3<f32>, n_18: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>, w_6: f32, nee_2: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
+fn light_pdf(li_3: u32, x_14: vec3<f32>, n_17: vec3<f32>, r_2: vec3<f32>, lobe_5: vec4<f32>, y_3: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let _e8 = select_pdf(li_3, x_14, n_17, r_2, lobe_5, nee_1, in_range_2);
+    let _e9 = light_pdf_selected(li_3, x_14, lobe_5, y_3, _e8);
+    return _e9;
+}
+
+fn shade_pick(li_4: u32, x_15: vec3<f32>, n_18: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_3: vec3<f32>, lobe_6: vec4<f32>, w_6: f32, nee_2: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e12 = range_scale(lobe_5);
+    let _e12 = range_scale(lobe_6);
     let _e15 = params.eps;
-    let _e16 = connect(li_3, x_14, n_18, ng_2, _e12, w_6, u1_3, u2_3, _e15);
+    let _e16 = connect(li_4, x_15, n_18, ng_2, _e12, w_6, u1_3, u2_3, _e15);
     if (_e16.cos_x <= 0f) {
         return vec3(0f);
     }
-    let l_10 = normalize((_e16.y - x_14));
-    let _e29 = lights[li_3];
+    let l_10 = normalize((_e16.y - x_15));
+    let _e29 = lights[li_4];
     let _e30 = light_area(_e29);
     if (_e30 > 0f) {
-        let _e35 = light_pdf(li_3, x_14, n_18, r_3, lobe_5, _e16.y, nee_2, true);
-        let _e37 = specular_probability(lobe_5);
+        let _e35 = light_pdf(li_4, x_15, n_18, r_3, lobe_6, _e16.y, nee_2, true);
+        let _e37 = specular_probability(lobe_6);
         let _e38 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e37);
         let _e39 = mis_weight(_e35, _e38);
         mis = _e39;
@@ -1240,7 +1245,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         candidates[i_5] = 0u;
         return;
     }
-    let x_15 = vtx.position;
+    let x_16 = vtx.position;
     let n_21 = vtx.normal;
     let ng_3 = vtx.gnormal;
     let m_2 = materials[vtx.material];
@@ -1254,7 +1259,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e39 = point_stream(_e35, i_5, _e38);
     let _e40 = pick_stream(_e39);
     h = _e40;
-    let _e45 = bsh_collect(x_15, scale_3, _e39);
+    let _e45 = bsh_collect(x_16, scale_3, _e39);
     candidates[i_5] = _e45.n;
     let _e51 = reservoir_weight(_e45.n, K);
     loop {
@@ -1276,7 +1281,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e67 = s;
             let _e70 = h;
             let _e71 = xi_from_bits(_e70);
-            let _e72 = shade_pick(_e45.light[_e67], x_15, n_21, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71);
+            let _e72 = shade_pick(_e45.light[_e67], x_16, n_21, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71);
             sum = (_e65 + _e72);
         }
         continuing {

@@ -9,17 +9,6 @@ struct GpuLight {
     ies_base: u32,
 }
 
-struct GpuLightCone {
-    center: vec3<f32>,
-    radius: f32,
-    axis: vec3<f32>,
-    cos_o: f32,
-    phi: f32,
-    cos_e: f32,
-    bvh_leaf: u32,
-    pad: u32,
-}
-
 struct GpuGeoNode {
     bmin: vec3<f32>,
     first: u32,
@@ -136,8 +125,6 @@ var<storage> lights: array<GpuLight>;
 var<storage> r2_3: array<f32>;
 @group(0) @binding(3) 
 var<storage> rt2_4: array<f32>;
-@group(1) @binding(2) 
-var<storage> light_cones: array<GpuLightCone>;
 @group(1) @binding(3) 
 var<storage> light_bvh: array<GpuLightBvhNode>;
 @group(0) @binding(0) 
@@ -577,15 +564,32 @@ fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d: vec3<f
 fn light_importance(center_2: vec3<f32>, radius_2: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, p_2: vec3<f32>, n_9: vec3<f32>) -> f32 {
     var imp: f32;
 
-    let _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if (dot(n_9, n_9) > 0f) {
-        let _e13 = imp;
-        let _e14 = cone_cos_toward(center_2, radius_2, p_2, n_9);
-        imp = (_e13 * max(_e14, 0f));
+    let v_9 = (p_2 - center_2);
+    let dist2_3 = dot(v_9, v_9);
+    let r2_5 = (radius_2 * radius_2);
+    let d2_9 = max(max(dist2_3, r2_5), MIN_D2_);
+    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_3))), (dist2_3 > 0f));
+    let cos_w_1 = dot(axis_1, wi_3);
+    let _e28 = safe_sqrt((1f - (cos_w_1 * cos_w_1)));
+    let _e29 = subtended_cos(dist2_3, r2_5);
+    let _e33 = safe_sqrt((1f - (_e29 * _e29)));
+    let _e37 = safe_sqrt((1f - (cos_o_1 * cos_o_1)));
+    let _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    let _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    let _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
+    if (_e40 <= cos_e_1) {
+        return 0f;
     }
-    let _e18 = imp;
-    return max(_e18, 0f);
+    imp = ((phi_1 * _e40) / d2_9);
+    if (dot(n_9, n_9) > 0f) {
+        let cos_i_1 = -(dot(wi_3, n_9));
+        let _e51 = imp;
+        let _e55 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
+        let _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
+        imp = (_e51 * max(_e56, 0f));
+    }
+    let _e60 = imp;
+    return max(_e60, 0f);
 }
 
 fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_10: vec3<f32>, r: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
@@ -665,8 +669,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 fn triangle_normal(a_3: vec3<f32>, b_3: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
     var local_11: bool;
 
-    let n_20 = cross((b_3 - a_3), (c_2 - a_3));
-    let l2_ = dot(n_20, n_20);
+    let n_17 = cross((b_3 - a_3), (c_2 - a_3));
+    let l2_ = dot(n_17, n_17);
     if !(!((l2_ > 0f))) {
         local_11 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -676,7 +680,7 @@ fn triangle_normal(a_3: vec3<f32>, b_3: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_20 / vec3(sqrt(l2_)));
+    return (n_17 / vec3(sqrt(l2_)));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -704,9 +708,9 @@ fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, 
         return -1f;
     }
     let q = cross(s_6, e1_);
-    let v_9 = (dot(d_2, q) * inv_1);
-    if !((v_9 < 0f)) {
-        local_13 = ((u_3 + v_9) > 1f);
+    let v_10 = (dot(d_2, q) * inv_1);
+    if !((v_10 < 0f)) {
+        local_13 = ((u_3 + v_10) > 1f);
     } else {
         local_13 = true;
     }
@@ -798,15 +802,15 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     let _e14 = ray_inverse3_(d_3);
     loop {
         let _e21 = node;
-        let n_21 = geo_nodes[_e21];
+        let n_18 = geo_nodes[_e21];
         let _e27 = hit.t;
-        let _e28 = ray_aabb(o_2, _e14, n_21.bmin, n_21.bmax, _e27);
+        let _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
         if (_e28 >= 0f) {
-            if (n_21.count > 0u) {
-                i = n_21.first;
+            if (n_18.count > 0u) {
+                i = n_18.first;
                 loop {
                     let _e36 = i;
-                    if (_e36 < (n_21.first + n_21.count)) {
+                    if (_e36 < (n_18.first + n_18.count)) {
                     } else {
                         break;
                     }
@@ -834,11 +838,11 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                 let _e60 = sp;
                 if (_e60 < 64u) {
                     let _e63 = sp;
-                    stack[_e63] = (n_21.first + 1u);
+                    stack[_e63] = (n_18.first + 1u);
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_21.first;
+                node = n_18.first;
                 continue;
             }
         }
@@ -893,12 +897,12 @@ fn connect(li: u32, x_4: vec3<f32>, n_12: vec3<f32>, ng_1: vec3<f32>, s: f32, w_
         return _e40;
     }
     let _e42 = c_4.y;
-    let v_10 = (x_4 - _e42);
-    let d2_9 = dot(v_10, v_10);
-    let _e49 = light_intensity(l_8, (v_10 / vec3(sqrt(d2_9))));
+    let v_11 = (x_4 - _e42);
+    let d2_10 = dot(v_11, v_11);
+    let _e49 = light_intensity(l_8, (v_11 / vec3(sqrt(d2_10))));
     let _e51 = c_4.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     let _e58 = c_4;
     return _e58;
@@ -1007,105 +1011,41 @@ fn light_bvh_sample(nodes_4: u32, x_7: vec3<f32>, n_15: vec3<f32>, r_4: vec3<f32
     return _e57;
 }
 
-fn light_bvh_pmf(nodes_5: u32, leaf: u32, x_8: vec3<f32>, n_16: vec3<f32>, r_5: vec3<f32>, lobe_8: vec4<f32>) -> f32 {
-    var i_5: u32 = 0u;
-    var pmf_1: f32 = 1f;
-    var local_20: bool;
-    var local_21: bool;
-
-    let _e6 = light_bvh_count(nodes_5);
-    if (leaf >= _e6) {
-        return 0f;
-    }
-    loop {
-        let _e13 = i_5;
-        let _e14 = light_bvh_count(nodes_5);
-        if (_e13 < _e14) {
-        } else {
-            break;
-        }
-        {
-            let _e16 = i_5;
-            let _e17 = light_bvh_node(nodes_5, _e16);
-            if (_e17.second == LIGHT_BVH_LEAF) {
-                let _e21 = i_5;
-                if (_e21 == leaf) {
-                    let _e25 = i_5;
-                    if !((_e25 > 0u)) {
-                        let _e32 = bvh_importance(nodes_5, 0u, x_8, n_16, r_5, lobe_8);
-                        local_21 = (_e32 > 0f);
-                    } else {
-                        local_21 = true;
-                    }
-                    let _e36 = local_21;
-                    local_20 = _e36;
-                } else {
-                    local_20 = false;
-                }
-                let _e38 = local_20;
-                if _e38 {
-                    let _e39 = pmf_1;
-                    return _e39;
-                }
-                return 0f;
-            }
-            let _e41 = i_5;
-            let _e42 = bvh_first(nodes_5, _e41, x_8, n_16, r_5, lobe_8);
-            if (_e42 < 0f) {
-                return 0f;
-            }
-            let first_2 = (leaf < _e17.second);
-            let _e48 = pmf_1;
-            pmf_1 = (_e48 * select((1f - _e42), _e42, first_2));
-            let _e54 = i_5;
-            i_5 = select(_e17.second, (_e54 + 1u), first_2);
-        }
-    }
-    return 0f;
+fn light_pdf_selected(li_1: u32, x_8: vec3<f32>, lobe_8: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
+    let l_9 = lights[li_1];
+    let v_12 = (x_8 - y_1);
+    let d2_11 = dot(v_12, v_12);
+    let _e10 = light_normal(l_9);
+    let cos_y_1 = select(0f, dot(_e10, (v_12 / vec3(sqrt(d2_11)))), (d2_11 > 0f));
+    let _e19 = range_scale(lobe_8);
+    let _e22 = rt2_4[li_1];
+    let _e24 = light_area(l_9);
+    let _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_11, _e24, cos_y_1);
+    return _e25;
 }
 
-fn select_pdf(li_1: u32, x_9: vec3<f32>, n_17: vec3<f32>, r_6: vec3<f32>, lobe_9: vec4<f32>, nee: u32, in_range: bool) -> f32 {
-    let _e11 = light_cones[li_1].bvh_leaf;
-    let _e12 = light_bvh_pmf(BVH, _e11, x_9, n_17, r_6, lobe_9);
-    return _e12;
-}
-
-fn light_pdf(li_2: u32, x_10: vec3<f32>, n_18: vec3<f32>, r_7: vec3<f32>, lobe_10: vec4<f32>, y_1: vec3<f32>, nee_1: u32, in_range_1: bool) -> f32 {
-    let l_9 = lights[li_2];
-    let v_11 = (x_10 - y_1);
-    let d2_10 = dot(v_11, v_11);
-    let _e13 = light_normal(l_9);
-    let cos_y_1 = select(0f, dot(_e13, (v_11 / vec3(sqrt(d2_10)))), (d2_10 > 0f));
-    let _e22 = select_pdf(li_2, x_10, n_18, r_7, lobe_10, nee_1, in_range_1);
-    let _e23 = range_scale(lobe_10);
-    let _e26 = rt2_4[li_2];
-    let _e28 = light_area(l_9);
-    let _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_10, _e28, cos_y_1);
-    return _e29;
-}
-
-fn shade_pick(li_3: u32, x_11: vec3<f32>, n_19: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_8: vec3<f32>, lobe_11: vec4<f32>, w_4: f32, nee_2: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
+fn shade_pick(li_2: u32, x_9: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_5: vec3<f32>, lobe_9: vec4<f32>, w_4: f32, nee: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e12 = range_scale(lobe_11);
+    let _e12 = range_scale(lobe_9);
     let _e15 = params.eps;
-    let _e16 = connect(li_3, x_11, n_19, ng_2, _e12, w_4, u1_3, u2_3, _e15);
+    let _e16 = connect(li_2, x_9, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15);
     if (_e16.cos_x <= 0f) {
         return vec3(0f);
     }
-    let l_10 = normalize((_e16.y - x_11));
-    let _e29 = lights[li_3];
+    let l_10 = normalize((_e16.y - x_9));
+    let _e29 = lights[li_2];
     let _e30 = light_area(_e29);
     if (_e30 > 0f) {
-        let _e35 = light_pdf(li_3, x_11, n_19, r_8, lobe_11, _e16.y, nee_2, true);
-        let _e37 = specular_probability(lobe_11);
-        let _e38 = bsdf_pdf(n_19, wo_1, l_10, m.alpha, _e37);
-        let _e39 = mis_weight(_e35, _e38);
-        mis = _e39;
+        let _e36 = light_pdf_selected(li_2, x_9, lobe_9, _e16.y, (1f / w_4));
+        let _e38 = specular_probability(lobe_9);
+        let _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
+        let _e40 = mis_weight(_e36, _e39);
+        mis = _e40;
     }
-    let _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_19, wo_1, l_10);
-    let _e48 = mis;
-    return ((_e45 * _e16.e) * _e48);
+    let _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
+    let _e49 = mis;
+    return ((_e46 * _e16.e) * _e49);
 }
 
 @compute @workgroup_size(64, 1, 1) 
@@ -1113,39 +1053,39 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var h: u32;
     var sum: vec3<f32> = vec3(0f);
 
-    let i_6 = gid.x;
+    let i_5 = gid.x;
     let _e4 = params.point_count;
-    if (i_6 >= _e4) {
+    if (i_5 >= _e4) {
         return;
     }
-    let vtx = vertices[i_6];
+    let vtx = vertices[i_5];
     if (vtx.alive == 0u) {
-        candidates[i_6] = 0u;
+        candidates[i_5] = 0u;
         return;
     }
-    let x_12 = vtx.position;
-    let n_22 = vtx.normal;
+    let x_10 = vtx.position;
+    let n_19 = vtx.normal;
     let ng_3 = vtx.gnormal;
     let m_2 = materials[vtx.material];
     let wo_2 = vtx.wo;
-    let _e23 = mirror_dir(n_22, wo_2);
-    let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_22, wo_2));
+    let _e23 = mirror_dir(n_19, wo_2);
+    let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_19, wo_2));
     let _e31 = range_scale(_e30);
     let scale = sqrt(_e31);
     let _e35 = params.seed;
     let _e38 = params.frame;
-    let _e39 = point_stream(_e35, i_6, _e38);
+    let _e39 = point_stream(_e35, i_5, _e38);
     let _e40 = pick_stream(_e39);
     h = _e40;
-    candidates[i_6] = 0u;
+    candidates[i_5] = 0u;
     let _e48 = h;
     let _e49 = pcg_hash(_e48);
     h = _e49;
     let _e50 = h;
     let _e51 = xi_from_bits(_e50);
-    let _e53 = light_bvh_sample(BVH, x_12, n_22, _e23, _e30, _e51);
-    let li_4 = _e53.light;
-    let pmf_2 = _e53.pmf;
+    let _e53 = light_bvh_sample(BVH, x_10, n_19, _e23, _e30, _e51);
+    let li_3 = _e53.light;
+    let pmf_1 = _e53.pmf;
     let _e56 = h;
     let _e57 = pcg_hash(_e56);
     h = _e57;
@@ -1156,16 +1096,16 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     h = _e61;
     let _e62 = h;
     let _e63 = xi_from_bits(_e62);
-    if (pmf_2 > 0f) {
-        let _e69 = shade_pick(li_4, x_12, n_22, ng_3, m_2, wo_2, _e23, _e30, (1f / pmf_2), 0u, _e59, _e63);
+    if (pmf_1 > 0f) {
+        let _e69 = shade_pick(li_3, x_10, n_19, ng_3, m_2, wo_2, _e23, _e30, (1f / pmf_1), 0u, _e59, _e63);
         sum = _e69;
     }
     let _e71 = sum;
     let add = (vtx.weight * _e71);
     let _e73 = finite3_(add);
     if _e73 {
-        let _e76 = radiance[i_6];
-        radiance[i_6] = (_e76 + vec4<f32>(add, 0f));
+        let _e76 = radiance[i_5];
+        radiance[i_5] = (_e76 + vec4<f32>(add, 0f));
         return;
     } else {
         return;

@@ -818,18 +818,23 @@ fn select_pdf(li: u32, x_3: vec3<f32>, n_13: vec3<f32>, r_1: vec3<f32>, lobe_3: 
     return _e8;
 }
 
-fn light_pdf(li_1: u32, x_4: vec3<f32>, n_14: vec3<f32>, r_2: vec3<f32>, lobe_4: vec4<f32>, y: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+fn light_pdf_selected(li_1: u32, x_4: vec3<f32>, lobe_4: vec4<f32>, y: vec3<f32>, sel: f32) -> f32 {
     let l_6 = lights[li_1];
     let v_10 = (x_4 - y);
     let d2_3 = dot(v_10, v_10);
-    let _e13 = light_normal(l_6);
-    let cos_y_1 = select(0f, dot(_e13, (v_10 / vec3(sqrt(d2_3)))), (d2_3 > 0f));
-    let _e22 = select_pdf(li_1, x_4, n_14, r_2, lobe_4, nee_1, in_range_2);
-    let _e23 = range_scale(lobe_4);
-    let _e26 = rt2_2[li_1];
-    let _e28 = light_area(l_6);
-    let _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_3, _e28, cos_y_1);
-    return _e29;
+    let _e10 = light_normal(l_6);
+    let cos_y_1 = select(0f, dot(_e10, (v_10 / vec3(sqrt(d2_3)))), (d2_3 > 0f));
+    let _e19 = range_scale(lobe_4);
+    let _e22 = rt2_2[li_1];
+    let _e24 = light_area(l_6);
+    let _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_3, _e24, cos_y_1);
+    return _e25;
+}
+
+fn light_pdf(li_2: u32, x_5: vec3<f32>, n_14: vec3<f32>, r_2: vec3<f32>, lobe_5: vec4<f32>, y_1: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let _e8 = select_pdf(li_2, x_5, n_14, r_2, lobe_5, nee_1, in_range_2);
+    let _e9 = light_pdf_selected(li_2, x_5, lobe_5, y_1, _e8);
+    return _e9;
 }
 
 fn next_uniform(state: ptr<function, u32>) -> f32 {
@@ -912,7 +917,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let tri = geo_tris[_e94.tri];
     let _e111 = st.origin;
     let _e113 = st.dir;
-    let x_5 = (_e111 + (_e113 * _e94.t));
+    let x_6 = (_e111 + (_e113 * _e94.t));
     let _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     let _e122 = st.dir;
     let _e123 = face_against(_e120, _e122);
@@ -920,7 +925,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e129 = geo_normals[b_6];
     let _e135 = geo_normals[(b_6 + 1u)];
     let _e141 = geo_normals[(b_6 + 2u)];
-    let _e146 = barycentric(x_5, tri.v0_, tri.v1_, tri.v2_);
+    let _e146 = barycentric(x_6, tri.v0_, tri.v1_, tri.v2_);
     let _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if (tri.light != NO_LIGHT) {
         let _e154 = st.dir;
@@ -946,7 +951,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e188 = st.prev_r;
             let _e190 = st.prev_lobe;
             let _e193 = candidates[i_1];
-            let _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_5, _e193, _e179);
+            let _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_6, _e193, _e179);
             let _e195 = mis_weight(_e181, _e194);
             w = _e195;
         }
@@ -974,7 +979,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e233 = st.dir;
     let wo_1 = -(_e233);
     let _e241 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
-    v.position = x_5;
+    v.position = x_6;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
@@ -1000,14 +1005,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         let _e283 = st.beta;
         st.beta = (_e283 * m_2.albedo);
     }
-    st.prev = x_5;
+    st.prev = x_6;
     st.prev_normal = _e147;
     let _e289 = mirror_dir(_e147, wo_1);
     st.prev_r = _e289;
     st.prev_lobe = _e241;
     st.pdf_bsdf = _e265;
     let _e295 = params.eps;
-    st.origin = (x_5 + (_e123 * _e295));
+    st.origin = (x_6 + (_e123 * _e295));
     st.dir = _e263;
     let _e299 = continues_path(_e263, _e147, _e123);
     if !(!(_e299)) {

@@ -445,15 +445,32 @@ float cone_cos_toward(vec3 center_1, float radius_1, vec3 p_1, vec3 d) {
 
 float light_importance(vec3 center_2, float radius_2, float phi_1, vec3 axis_1, float cos_o_1, float cos_e_1, vec3 p_2, vec3 n_4) {
     float imp = 0.0;
-    float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if ((dot(n_4, n_4) > 0.0)) {
-        float _e13 = imp;
-        float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_4);
-        imp = (_e13 * max(_e14, 0.0));
+    vec3 v_7 = (p_2 - center_2);
+    float dist2_3 = dot(v_7, v_7);
+    float r2_5 = (radius_2 * radius_2);
+    float d2_7 = max(max(dist2_3, r2_5), MIN_D2_);
+    vec3 wi_1 = ((dist2_3 > 0.0) ? (v_7 / vec3(sqrt(dist2_3))) : vec3(0.0, 0.0, 0.0));
+    float cos_w_1 = dot(axis_1, wi_1);
+    float _e28 = safe_sqrt((1.0 - (cos_w_1 * cos_w_1)));
+    float _e29 = subtended_cos(dist2_3, r2_5);
+    float _e33 = safe_sqrt((1.0 - (_e29 * _e29)));
+    float _e37 = safe_sqrt((1.0 - (cos_o_1 * cos_o_1)));
+    float _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    float _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    float _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
+    if ((_e40 <= cos_e_1)) {
+        return 0.0;
     }
-    float _e18 = imp;
-    return max(_e18, 0.0);
+    imp = ((phi_1 * _e40) / d2_7);
+    if ((dot(n_4, n_4) > 0.0)) {
+        float cos_i_1 = -(dot(wi_1, n_4));
+        float _e51 = imp;
+        float _e55 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
+        float _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
+        imp = (_e51 * max(_e56, 0.0));
+    }
+    float _e60 = imp;
+    return max(_e60, 0.0);
 }
 
 float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_5, vec3 r_2, vec4 lobe_3) {
@@ -483,14 +500,14 @@ float candidate_weight(float importance, float rt2_2, float d2_4) {
 }
 
 float cone_weight(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, float rt2_3, vec3 p_4, vec3 n_6, vec3 r_3, vec4 lobe_4) {
-    vec3 v_7 = (p_4 - center_4);
+    vec3 v_8 = (p_4 - center_4);
     if ((lobe_4.y <= 0.0)) {
         float _e15 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6);
-        float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_7, v_7));
+        float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_8, v_8));
         return _e19;
     }
     float _e20 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6, r_3, lobe_4);
-    float _e22 = candidate_weight(_e20, rt2_3, dot(v_7, v_7));
+    float _e22 = candidate_weight(_e20, rt2_3, dot(v_8, v_8));
     return _e22;
 }
 
@@ -605,12 +622,12 @@ Connection connect(uint li, vec3 x_5, vec3 n_7, vec3 ng_1, float s, float w_res,
         return _e40;
     }
     vec3 _e42 = c_4.y;
-    vec3 v_8 = (x_5 - _e42);
-    float d2_7 = dot(v_8, v_8);
-    vec3 _e49 = light_intensity(l_4, (v_8 / vec3(sqrt(d2_7))));
+    vec3 v_9 = (x_5 - _e42);
+    float d2_8 = dot(v_9, v_9);
+    vec3 _e49 = light_intensity(l_4, (v_9 / vec3(sqrt(d2_8))));
     float _e51 = c_4.cos_x;
     float _e54 = _group_1_binding_2_cs[li];
-    float _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
+    float _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     Connection _e58 = c_4;
     return _e58;

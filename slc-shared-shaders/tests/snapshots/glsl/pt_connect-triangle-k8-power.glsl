@@ -942,34 +942,39 @@ float select_pdf(uint li_1, vec3 x_7, vec3 n_14, vec3 r_1, vec4 lobe_3, uint nee
     return _e8;
 }
 
-float light_pdf(uint li_2, vec3 x_8, vec3 n_15, vec3 r_2, vec4 lobe_4, vec3 y_1, uint nee_1, bool in_range_2) {
+float light_pdf_selected(uint li_2, vec3 x_8, vec4 lobe_4, vec3 y_1, float sel) {
     GpuLight l_9 = _group_0_binding_2_cs[li_2];
     vec3 v_10 = (x_8 - y_1);
     float d2_9 = dot(v_10, v_10);
-    vec3 _e13 = light_normal(l_9);
-    float cos_y_1 = ((d2_9 > 0.0) ? dot(_e13, (v_10 / vec3(sqrt(d2_9)))) : 0.0);
-    float _e22 = select_pdf(li_2, x_8, n_15, r_2, lobe_4, nee_1, in_range_2);
-    float _e23 = range_scale(lobe_4);
-    float _e26 = _group_0_binding_3_cs[li_2];
-    float _e28 = light_area(l_9);
-    float _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_9, _e28, cos_y_1);
-    return _e29;
+    vec3 _e10 = light_normal(l_9);
+    float cos_y_1 = ((d2_9 > 0.0) ? dot(_e10, (v_10 / vec3(sqrt(d2_9)))) : 0.0);
+    float _e19 = range_scale(lobe_4);
+    float _e22 = _group_0_binding_3_cs[li_2];
+    float _e24 = light_area(l_9);
+    float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_9, _e24, cos_y_1);
+    return _e25;
 }
 
-vec3 shade_pick(uint li_3, vec3 x_9, vec3 n_16, vec3 ng_2, GpuMaterial m, vec3 wo_1, vec3 r_3, vec4 lobe_5, float w_4, uint nee_2, float u1_3, float u2_3) {
+float light_pdf(uint li_3, vec3 x_9, vec3 n_15, vec3 r_2, vec4 lobe_5, vec3 y_2, uint nee_1, bool in_range_2) {
+    float _e8 = select_pdf(li_3, x_9, n_15, r_2, lobe_5, nee_1, in_range_2);
+    float _e9 = light_pdf_selected(li_3, x_9, lobe_5, y_2, _e8);
+    return _e9;
+}
+
+vec3 shade_pick(uint li_4, vec3 x_10, vec3 n_16, vec3 ng_2, GpuMaterial m, vec3 wo_1, vec3 r_3, vec4 lobe_6, float w_4, uint nee_2, float u1_3, float u2_3) {
     float mis = 1.0;
-    float _e12 = range_scale(lobe_5);
+    float _e12 = range_scale(lobe_6);
     float _e15 = _group_0_binding_0_cs.eps;
-    Connection _e16 = connect(li_3, x_9, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15);
+    Connection _e16 = connect(li_4, x_10, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15);
     if ((_e16.cos_x <= 0.0)) {
         return vec3(0.0);
     }
-    vec3 l_10 = normalize((_e16.y - x_9));
-    GpuLight _e29 = _group_0_binding_2_cs[li_3];
+    vec3 l_10 = normalize((_e16.y - x_10));
+    GpuLight _e29 = _group_0_binding_2_cs[li_4];
     float _e30 = light_area(_e29);
     if ((_e30 > 0.0)) {
-        float _e35 = light_pdf(li_3, x_9, n_16, r_3, lobe_5, _e16.y, nee_2, true);
-        float _e37 = specular_probability(lobe_5);
+        float _e35 = light_pdf(li_4, x_10, n_16, r_3, lobe_6, _e16.y, nee_2, true);
+        float _e37 = specular_probability(lobe_6);
         float _e38 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e37);
         float _e39 = mis_weight(_e35, _e38);
         mis = _e39;
@@ -994,7 +999,7 @@ void main() {
         _group_0_binding_10_cs[i_4] = 0u;
         return;
     }
-    vec3 x_10 = vtx.position;
+    vec3 x_11 = vtx.position;
     vec3 n_19 = vtx.normal;
     vec3 ng_3 = vtx.gnormal;
     GpuMaterial m_2 = _group_0_binding_8_cs[vtx.material];
@@ -1008,7 +1013,7 @@ void main() {
     uint _e39 = point_stream(_e35, i_4, _e38);
     uint _e40 = pick_stream(_e39);
     h = _e40;
-    Picks _e45 = bsh_collect(x_10, scale_3, _e39);
+    Picks _e45 = bsh_collect(x_11, scale_3, _e39);
     _group_0_binding_10_cs[i_4] = _e45.n;
     float _e51 = reservoir_weight(_e45.n, K);
     bool loop_init_2 = true;
@@ -1036,7 +1041,7 @@ void main() {
             uint _e67 = s;
             uint _e70 = h;
             float _e71 = xi_from_bits(_e70);
-            vec3 _e72 = shade_pick(_e45.light[_e67], x_10, n_19, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71);
+            vec3 _e72 = shade_pick(_e45.light[_e67], x_11, n_19, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71);
             sum = (_e65 + _e72);
         }
     }

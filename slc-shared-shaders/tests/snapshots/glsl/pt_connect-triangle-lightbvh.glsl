@@ -13,16 +13,6 @@ struct GpuLight {
     vec3 intensity;
     uint ies_base;
 };
-struct GpuLightCone {
-    vec3 center;
-    float radius;
-    vec3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint bvh_leaf;
-    uint pad;
-};
 struct GpuGeoNode {
     vec3 bmin;
     uint first;
@@ -130,19 +120,17 @@ layout(std430) readonly buffer type_4_block_3Compute { float _group_0_binding_4_
 
 layout(std430) readonly buffer type_4_block_4Compute { float _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_11_block_5Compute { GpuLightCone _group_1_binding_2_cs[]; };
+layout(std430) readonly buffer type_11_block_5Compute { GpuLightBvhNode _group_1_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_12_block_6Compute { GpuLightBvhNode _group_1_binding_3_cs[]; };
+layout(std140) uniform ShadeParams_block_6Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std140) uniform ShadeParams_block_7Compute { ShadeParams _group_0_binding_0_cs; };
+layout(std430) readonly buffer type_12_block_7Compute { GpuPathVertex _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_13_block_8Compute { GpuPathVertex _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_13_block_8Compute { GpuMaterial _group_0_binding_8_cs[]; };
 
-layout(std430) readonly buffer type_14_block_9Compute { GpuMaterial _group_0_binding_8_cs[]; };
+layout(std430) buffer type_10_block_9Compute { vec4 _group_0_binding_9_cs[]; };
 
-layout(std430) buffer type_10_block_10Compute { vec4 _group_0_binding_9_cs[]; };
-
-layout(std430) buffer type_15_block_11Compute { uint _group_0_binding_10_cs[]; };
+layout(std430) buffer type_14_block_10Compute { uint _group_0_binding_10_cs[]; };
 
 
 float to_f32_(uint u) {
@@ -563,15 +551,32 @@ float cone_cos_toward(vec3 center_1, float radius_1, vec3 p_1, vec3 d) {
 
 float light_importance(vec3 center_2, float radius_2, float phi_1, vec3 axis_1, float cos_o_1, float cos_e_1, vec3 p_2, vec3 n_9) {
     float imp = 0.0;
-    float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if ((dot(n_9, n_9) > 0.0)) {
-        float _e13 = imp;
-        float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_9);
-        imp = (_e13 * max(_e14, 0.0));
+    vec3 v_9 = (p_2 - center_2);
+    float dist2_3 = dot(v_9, v_9);
+    float r2_5 = (radius_2 * radius_2);
+    float d2_9 = max(max(dist2_3, r2_5), MIN_D2_);
+    vec3 wi_3 = ((dist2_3 > 0.0) ? (v_9 / vec3(sqrt(dist2_3))) : vec3(0.0, 0.0, 0.0));
+    float cos_w_1 = dot(axis_1, wi_3);
+    float _e28 = safe_sqrt((1.0 - (cos_w_1 * cos_w_1)));
+    float _e29 = subtended_cos(dist2_3, r2_5);
+    float _e33 = safe_sqrt((1.0 - (_e29 * _e29)));
+    float _e37 = safe_sqrt((1.0 - (cos_o_1 * cos_o_1)));
+    float _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    float _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    float _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
+    if ((_e40 <= cos_e_1)) {
+        return 0.0;
     }
-    float _e18 = imp;
-    return max(_e18, 0.0);
+    imp = ((phi_1 * _e40) / d2_9);
+    if ((dot(n_9, n_9) > 0.0)) {
+        float cos_i_1 = -(dot(wi_3, n_9));
+        float _e51 = imp;
+        float _e55 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
+        float _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
+        imp = (_e51 * max(_e56, 0.0));
+    }
+    float _e60 = imp;
+    return max(_e60, 0.0);
 }
 
 float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_10, vec3 r, vec4 lobe_3) {
@@ -649,8 +654,8 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
 
 vec3 triangle_normal(vec3 a_3, vec3 b_3, vec3 c_2) {
     bool local_11 = false;
-    vec3 n_20 = cross((b_3 - a_3), (c_2 - a_3));
-    float l2_ = dot(n_20, n_20);
+    vec3 n_17 = cross((b_3 - a_3), (c_2 - a_3));
+    float l2_ = dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
         local_11 = !((l2_ < 3e38));
     } else {
@@ -660,7 +665,7 @@ vec3 triangle_normal(vec3 a_3, vec3 b_3, vec3 c_2) {
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
-    return (n_20 / vec3(sqrt(l2_)));
+    return (n_17 / vec3(sqrt(l2_)));
 }
 
 float ray_triangle(vec3 o_1, vec3 d_2, vec3 a_4, vec3 b_4, vec3 c_3, float t_min, float t_max_1) {
@@ -687,9 +692,9 @@ float ray_triangle(vec3 o_1, vec3 d_2, vec3 a_4, vec3 b_4, vec3 c_3, float t_min
         return -1.0;
     }
     vec3 q = cross(s_6, e1_);
-    float v_9 = (dot(d_2, q) * inv_1);
-    if (!((v_9 < 0.0))) {
-        local_13 = ((u_3 + v_9) > 1.0);
+    float v_10 = (dot(d_2, q) * inv_1);
+    if (!((v_10 < 0.0))) {
+        local_13 = ((u_3 + v_10) > 1.0);
     } else {
         local_13 = true;
     }
@@ -779,12 +784,12 @@ GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
     vec3 _e14 = ray_inverse3_(d_3);
     while(true) {
         uint _e21 = node;
-        GpuGeoNode n_21 = _group_0_binding_6_cs[_e21];
+        GpuGeoNode n_18 = _group_0_binding_6_cs[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_21.bmin, n_21.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_21.count > 0u)) {
-                i = n_21.first;
+            if ((n_18.count > 0u)) {
+                i = n_18.first;
                 bool loop_init = true;
                 while(true) {
                     if (!loop_init) {
@@ -793,7 +798,7 @@ GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_21.first + n_21.count))) {
+                    if ((_e36 < (n_18.first + n_18.count))) {
                     } else {
                         break;
                     }
@@ -817,11 +822,11 @@ GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[_e63] = (n_21.first + 1u);
+                    stack[_e63] = (n_18.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_21.first;
+                node = n_18.first;
                 continue;
             }
         }
@@ -875,12 +880,12 @@ Connection connect(uint li, vec3 x_4, vec3 n_12, vec3 ng_1, float s, float w_res
         return _e40;
     }
     vec3 _e42 = c_4.y;
-    vec3 v_10 = (x_4 - _e42);
-    float d2_9 = dot(v_10, v_10);
-    vec3 _e49 = light_intensity(l_8, (v_10 / vec3(sqrt(d2_9))));
+    vec3 v_11 = (x_4 - _e42);
+    float d2_10 = dot(v_11, v_11);
+    vec3 _e49 = light_intensity(l_8, (v_11 / vec3(sqrt(d2_10))));
     float _e51 = c_4.cos_x;
     float _e54 = _group_0_binding_3_cs[li];
-    float _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
+    float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     Connection _e58 = c_4;
     return _e58;
@@ -987,142 +992,79 @@ BvhPick light_bvh_sample(uint nodes_4, vec3 x_7, vec3 n_15, vec3 r_4, vec4 lobe_
     return _e57;
 }
 
-float light_bvh_pmf(uint nodes_5, uint leaf, vec3 x_8, vec3 n_16, vec3 r_5, vec4 lobe_8) {
-    uint i_5 = 0u;
-    float pmf_1 = 1.0;
-    bool local_20 = false;
-    bool local_21 = false;
-    uint _e6 = light_bvh_count(nodes_5);
-    if ((leaf >= _e6)) {
-        return 0.0;
-    }
-    while(true) {
-        uint _e13 = i_5;
-        uint _e14 = light_bvh_count(nodes_5);
-        if ((_e13 < _e14)) {
-        } else {
-            break;
-        }
-        {
-            uint _e16 = i_5;
-            GpuLightBvhNode _e17 = light_bvh_node(nodes_5, _e16);
-            if ((_e17.second == LIGHT_BVH_LEAF)) {
-                uint _e21 = i_5;
-                if ((_e21 == leaf)) {
-                    uint _e25 = i_5;
-                    if (!((_e25 > 0u))) {
-                        float _e32 = bvh_importance(nodes_5, 0u, x_8, n_16, r_5, lobe_8);
-                        local_21 = (_e32 > 0.0);
-                    } else {
-                        local_21 = true;
-                    }
-                    bool _e36 = local_21;
-                    local_20 = _e36;
-                } else {
-                    local_20 = false;
-                }
-                bool _e38 = local_20;
-                if (_e38) {
-                    float _e39 = pmf_1;
-                    return _e39;
-                }
-                return 0.0;
-            }
-            uint _e41 = i_5;
-            float _e42 = bvh_first(nodes_5, _e41, x_8, n_16, r_5, lobe_8);
-            if ((_e42 < 0.0)) {
-                return 0.0;
-            }
-            bool first_2 = (leaf < _e17.second);
-            float _e48 = pmf_1;
-            pmf_1 = (_e48 * (first_2 ? _e42 : (1.0 - _e42)));
-            uint _e54 = i_5;
-            i_5 = (first_2 ? (_e54 + 1u) : _e17.second);
-        }
-    }
-    return 0.0;
+float light_pdf_selected(uint li_1, vec3 x_8, vec4 lobe_8, vec3 y_1, float sel) {
+    GpuLight l_9 = _group_0_binding_2_cs[li_1];
+    vec3 v_12 = (x_8 - y_1);
+    float d2_11 = dot(v_12, v_12);
+    vec3 _e10 = light_normal(l_9);
+    float cos_y_1 = ((d2_11 > 0.0) ? dot(_e10, (v_12 / vec3(sqrt(d2_11)))) : 0.0);
+    float _e19 = range_scale(lobe_8);
+    float _e22 = _group_0_binding_3_cs[li_1];
+    float _e24 = light_area(l_9);
+    float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_11, _e24, cos_y_1);
+    return _e25;
 }
 
-float select_pdf(uint li_1, vec3 x_9, vec3 n_17, vec3 r_6, vec4 lobe_9, uint nee, bool in_range) {
-    uint _e11 = _group_1_binding_2_cs[li_1].bvh_leaf;
-    float _e12 = light_bvh_pmf(BVH, _e11, x_9, n_17, r_6, lobe_9);
-    return _e12;
-}
-
-float light_pdf(uint li_2, vec3 x_10, vec3 n_18, vec3 r_7, vec4 lobe_10, vec3 y_1, uint nee_1, bool in_range_1) {
-    GpuLight l_9 = _group_0_binding_2_cs[li_2];
-    vec3 v_11 = (x_10 - y_1);
-    float d2_10 = dot(v_11, v_11);
-    vec3 _e13 = light_normal(l_9);
-    float cos_y_1 = ((d2_10 > 0.0) ? dot(_e13, (v_11 / vec3(sqrt(d2_10)))) : 0.0);
-    float _e22 = select_pdf(li_2, x_10, n_18, r_7, lobe_10, nee_1, in_range_1);
-    float _e23 = range_scale(lobe_10);
-    float _e26 = _group_0_binding_3_cs[li_2];
-    float _e28 = light_area(l_9);
-    float _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_10, _e28, cos_y_1);
-    return _e29;
-}
-
-vec3 shade_pick(uint li_3, vec3 x_11, vec3 n_19, vec3 ng_2, GpuMaterial m, vec3 wo_1, vec3 r_8, vec4 lobe_11, float w_4, uint nee_2, float u1_3, float u2_3) {
+vec3 shade_pick(uint li_2, vec3 x_9, vec3 n_16, vec3 ng_2, GpuMaterial m, vec3 wo_1, vec3 r_5, vec4 lobe_9, float w_4, uint nee, float u1_3, float u2_3) {
     float mis = 1.0;
-    float _e12 = range_scale(lobe_11);
+    float _e12 = range_scale(lobe_9);
     float _e15 = _group_0_binding_0_cs.eps;
-    Connection _e16 = connect(li_3, x_11, n_19, ng_2, _e12, w_4, u1_3, u2_3, _e15);
+    Connection _e16 = connect(li_2, x_9, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15);
     if ((_e16.cos_x <= 0.0)) {
         return vec3(0.0);
     }
-    vec3 l_10 = normalize((_e16.y - x_11));
-    GpuLight _e29 = _group_0_binding_2_cs[li_3];
+    vec3 l_10 = normalize((_e16.y - x_9));
+    GpuLight _e29 = _group_0_binding_2_cs[li_2];
     float _e30 = light_area(_e29);
     if ((_e30 > 0.0)) {
-        float _e35 = light_pdf(li_3, x_11, n_19, r_8, lobe_11, _e16.y, nee_2, true);
-        float _e37 = specular_probability(lobe_11);
-        float _e38 = bsdf_pdf(n_19, wo_1, l_10, m.alpha, _e37);
-        float _e39 = mis_weight(_e35, _e38);
-        mis = _e39;
+        float _e36 = light_pdf_selected(li_2, x_9, lobe_9, _e16.y, (1.0 / w_4));
+        float _e38 = specular_probability(lobe_9);
+        float _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
+        float _e40 = mis_weight(_e36, _e39);
+        mis = _e40;
     }
-    vec3 _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_19, wo_1, l_10);
-    float _e48 = mis;
-    return ((_e45 * _e16.e) * _e48);
+    vec3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
+    float _e49 = mis;
+    return ((_e46 * _e16.e) * _e49);
 }
 
 void main() {
     uvec3 gid = gl_GlobalInvocationID;
     uint h = 0u;
     vec3 sum = vec3(0.0);
-    uint i_6 = gid.x;
+    uint i_5 = gid.x;
     uint _e4 = _group_0_binding_0_cs.point_count;
-    if ((i_6 >= _e4)) {
+    if ((i_5 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = _group_0_binding_1_cs[i_6];
+    GpuPathVertex vtx = _group_0_binding_1_cs[i_5];
     if ((vtx.alive == 0u)) {
-        _group_0_binding_10_cs[i_6] = 0u;
+        _group_0_binding_10_cs[i_5] = 0u;
         return;
     }
-    vec3 x_12 = vtx.position;
-    vec3 n_22 = vtx.normal;
+    vec3 x_10 = vtx.position;
+    vec3 n_19 = vtx.normal;
     vec3 ng_3 = vtx.gnormal;
     GpuMaterial m_2 = _group_0_binding_8_cs[vtx.material];
     vec3 wo_2 = vtx.wo;
-    vec3 _e23 = mirror_dir(n_22, wo_2);
-    vec4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_22, wo_2));
+    vec3 _e23 = mirror_dir(n_19, wo_2);
+    vec4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_19, wo_2));
     float _e31 = range_scale(_e30);
     float scale = sqrt(_e31);
     uint _e35 = _group_0_binding_0_cs.seed;
     uint _e38 = _group_0_binding_0_cs.frame;
-    uint _e39 = point_stream(_e35, i_6, _e38);
+    uint _e39 = point_stream(_e35, i_5, _e38);
     uint _e40 = pick_stream(_e39);
     h = _e40;
-    _group_0_binding_10_cs[i_6] = 0u;
+    _group_0_binding_10_cs[i_5] = 0u;
     uint _e48 = h;
     uint _e49 = pcg_hash(_e48);
     h = _e49;
     uint _e50 = h;
     float _e51 = xi_from_bits(_e50);
-    BvhPick _e53 = light_bvh_sample(BVH, x_12, n_22, _e23, _e30, _e51);
-    uint li_4 = _e53.light;
-    float pmf_2 = _e53.pmf;
+    BvhPick _e53 = light_bvh_sample(BVH, x_10, n_19, _e23, _e30, _e51);
+    uint li_3 = _e53.light;
+    float pmf_1 = _e53.pmf;
     uint _e56 = h;
     uint _e57 = pcg_hash(_e56);
     h = _e57;
@@ -1133,16 +1075,16 @@ void main() {
     h = _e61;
     uint _e62 = h;
     float _e63 = xi_from_bits(_e62);
-    if ((pmf_2 > 0.0)) {
-        vec3 _e69 = shade_pick(li_4, x_12, n_22, ng_3, m_2, wo_2, _e23, _e30, (1.0 / pmf_2), 0u, _e59, _e63);
+    if ((pmf_1 > 0.0)) {
+        vec3 _e69 = shade_pick(li_3, x_10, n_19, ng_3, m_2, wo_2, _e23, _e30, (1.0 / pmf_1), 0u, _e59, _e63);
         sum = _e69;
     }
     vec3 _e71 = sum;
     vec3 add = (vtx.weight * _e71);
     bool _e73 = finite3_(add);
     if (_e73) {
-        vec4 _e76 = _group_0_binding_9_cs[i_6];
-        _group_0_binding_9_cs[i_6] = (_e76 + vec4(add, 0.0));
+        vec4 _e76 = _group_0_binding_9_cs[i_5];
+        _group_0_binding_9_cs[i_5] = (_e76 + vec4(add, 0.0));
         return;
     } else {
         return;

@@ -803,18 +803,23 @@ float select_pdf(uint li, vec3 x_3, vec3 n_13, vec3 r_1, vec4 lobe_3, uint nee, 
     return _e8;
 }
 
-float light_pdf(uint li_1, vec3 x_4, vec3 n_14, vec3 r_2, vec4 lobe_4, vec3 y, uint nee_1, bool in_range_2) {
+float light_pdf_selected(uint li_1, vec3 x_4, vec4 lobe_4, vec3 y, float sel) {
     GpuLight l_6 = _group_0_binding_1_cs[li_1];
     vec3 v_10 = (x_4 - y);
     float d2_3 = dot(v_10, v_10);
-    vec3 _e13 = light_normal(l_6);
-    float cos_y_1 = ((d2_3 > 0.0) ? dot(_e13, (v_10 / vec3(sqrt(d2_3)))) : 0.0);
-    float _e22 = select_pdf(li_1, x_4, n_14, r_2, lobe_4, nee_1, in_range_2);
-    float _e23 = range_scale(lobe_4);
-    float _e26 = _group_0_binding_2_cs[li_1];
-    float _e28 = light_area(l_6);
-    float _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_3, _e28, cos_y_1);
-    return _e29;
+    vec3 _e10 = light_normal(l_6);
+    float cos_y_1 = ((d2_3 > 0.0) ? dot(_e10, (v_10 / vec3(sqrt(d2_3)))) : 0.0);
+    float _e19 = range_scale(lobe_4);
+    float _e22 = _group_0_binding_2_cs[li_1];
+    float _e24 = light_area(l_6);
+    float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_3, _e24, cos_y_1);
+    return _e25;
+}
+
+float light_pdf(uint li_2, vec3 x_5, vec3 n_14, vec3 r_2, vec4 lobe_5, vec3 y_1, uint nee_1, bool in_range_2) {
+    float _e8 = select_pdf(li_2, x_5, n_14, r_2, lobe_5, nee_1, in_range_2);
+    float _e9 = light_pdf_selected(li_2, x_5, lobe_5, y_1, _e8);
+    return _e9;
 }
 
 float next_uniform(inout uint state) {
@@ -896,7 +901,7 @@ void main() {
     GpuTriangle tri = _group_0_binding_6_cs[_e94.tri];
     vec3 _e111 = st.origin;
     vec3 _e113 = st.dir;
-    vec3 x_5 = (_e111 + (_e113 * _e94.t));
+    vec3 x_6 = (_e111 + (_e113 * _e94.t));
     vec3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     vec3 _e122 = st.dir;
     vec3 _e123 = face_against(_e120, _e122);
@@ -904,7 +909,7 @@ void main() {
     vec4 _e129 = _group_0_binding_8_cs[b_6];
     vec4 _e135 = _group_0_binding_8_cs[(b_6 + 1u)];
     vec4 _e141 = _group_0_binding_8_cs[(b_6 + 2u)];
-    vec3 _e146 = barycentric(x_5, tri.v0_, tri.v1_, tri.v2_);
+    vec3 _e146 = barycentric(x_6, tri.v0_, tri.v1_, tri.v2_);
     vec3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if ((tri.light != NO_LIGHT)) {
         vec3 _e154 = st.dir;
@@ -930,7 +935,7 @@ void main() {
             vec3 _e188 = st.prev_r;
             vec4 _e190 = st.prev_lobe;
             uint _e193 = _group_0_binding_9_cs[i_1];
-            float _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_5, _e193, _e179);
+            float _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_6, _e193, _e179);
             float _e195 = mis_weight(_e181, _e194);
             w = _e195;
         }
@@ -958,7 +963,7 @@ void main() {
     vec3 _e233 = st.dir;
     vec3 wo_1 = -(_e233);
     vec4 _e241 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
-    v.position = x_5;
+    v.position = x_6;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
@@ -984,14 +989,14 @@ void main() {
         vec3 _e283 = st.beta;
         st.beta = (_e283 * m_2.albedo);
     }
-    st.prev = x_5;
+    st.prev = x_6;
     st.prev_normal = _e147;
     vec3 _e289 = mirror_dir(_e147, wo_1);
     st.prev_r = _e289;
     st.prev_lobe = _e241;
     st.pdf_bsdf = _e265;
     float _e295 = _group_0_binding_0_cs.eps;
-    st.origin = (x_5 + (_e123 * _e295));
+    st.origin = (x_6 + (_e123 * _e295));
     st.dir = _e263;
     bool _e299 = continues_path(_e263, _e147, _e123);
     if (!(!(_e299))) {

@@ -354,15 +354,32 @@ float light_importance(float3 center_2, float radius_2, float phi_1, float3 axis
 {
     float imp = (float)0;
 
-    const float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if ((dot(n_1, n_1) > 0.0)) {
-        float _e13 = imp;
-        const float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_1);
-        imp = (_e13 * max(_e14, 0.0));
+    float3 v_4 = (p_2 - center_2);
+    float dist2_3 = dot(v_4, v_4);
+    float r2_5 = (radius_2 * radius_2);
+    float d2_7 = max(max(dist2_3, r2_5), MIN_D2_);
+    float3 wi_1 = ((dist2_3 > 0.0) ? (v_4 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0));
+    float cos_w_1 = dot(axis_1, wi_1);
+    const float _e28 = safe_sqrt((1.0 - (cos_w_1 * cos_w_1)));
+    const float _e29 = subtended_cos(dist2_3, r2_5);
+    const float _e33 = safe_sqrt((1.0 - (_e29 * _e29)));
+    const float _e37 = safe_sqrt((1.0 - (cos_o_1 * cos_o_1)));
+    const float _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    const float _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    const float _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
+    if ((_e40 <= cos_e_1)) {
+        return 0.0;
     }
-    float _e18 = imp;
-    return max(_e18, 0.0);
+    imp = ((phi_1 * _e40) / d2_7);
+    if ((dot(n_1, n_1) > 0.0)) {
+        float cos_i_1 = -(dot(wi_1, n_1));
+        float _e51 = imp;
+        const float _e55 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
+        const float _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
+        imp = (_e51 * max(_e56, 0.0));
+    }
+    float _e60 = imp;
+    return max(_e60, 0.0);
 }
 
 float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_2, float3 r_2, float4 lobe_3)
@@ -396,14 +413,14 @@ float candidate_weight(float importance, float rt2_2, float d2_4)
 
 float cone_weight(float3 center_4, float radius_4, float phi_3, float3 axis_3, float cos_o_3, float cos_e_3, float rt2_3, float3 p_4, float3 n_3, float3 r_3, float4 lobe_4)
 {
-    float3 v_4 = (p_4 - center_4);
+    float3 v_5 = (p_4 - center_4);
     if ((lobe_4.y <= 0.0)) {
         const float _e15 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_3);
-        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_4, v_4));
+        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_5, v_5));
         return _e19;
     }
     const float _e20 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_3, r_3, lobe_4);
-    const float _e22 = candidate_weight(_e20, rt2_3, dot(v_4, v_4));
+    const float _e22 = candidate_weight(_e20, rt2_3, dot(v_5, v_5));
     return _e22;
 }
 
@@ -546,12 +563,12 @@ Connection connect(uint li, float3 x_5, float3 n_4, float3 ng_1, float s, float 
         return connection;
     }
     float3 _e42 = c_1.y;
-    float3 v_5 = (x_5 - _e42);
-    float d2_7 = dot(v_5, v_5);
-    const float3 _e49 = light_intensity(l_2, (v_5 / (sqrt(d2_7)).xxx));
+    float3 v_6 = (x_5 - _e42);
+    float d2_8 = dot(v_6, v_6);
+    const float3 _e49 = light_intensity(l_2, (v_6 / (sqrt(d2_8)).xxx));
     float _e51 = c_1.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
     c_1.e = (_e49 * _e56);
     Connection _e58 = c_1;
     const Connection connection_1 = _e58;

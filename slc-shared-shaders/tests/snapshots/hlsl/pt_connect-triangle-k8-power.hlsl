@@ -1092,37 +1092,43 @@ float select_pdf(uint li_1, float3 x_7, float3 n_14, float3 r_1, float4 lobe_3, 
     return _e8;
 }
 
-float light_pdf(uint li_2, float3 x_8, float3 n_15, float3 r_2, float4 lobe_4, float3 y_1, uint nee_1, bool in_range_2)
+float light_pdf_selected(uint li_2, float3 x_8, float4 lobe_4, float3 y_1, float sel)
 {
     GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
     float3 v_10 = (x_8 - y_1);
     float d2_9 = dot(v_10, v_10);
-    const float3 _e13 = light_normal(l_9);
-    float cos_y_1 = ((d2_9 > 0.0) ? dot(_e13, (v_10 / (sqrt(d2_9)).xxx)) : 0.0);
-    const float _e22 = select_pdf(li_2, x_8, n_15, r_2, lobe_4, nee_1, in_range_2);
-    const float _e23 = range_scale(lobe_4);
-    float _e26 = asfloat(rt2_4.Load(li_2*4));
-    const float _e28 = light_area(l_9);
-    const float _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_9, _e28, cos_y_1);
-    return _e29;
+    const float3 _e10 = light_normal(l_9);
+    float cos_y_1 = ((d2_9 > 0.0) ? dot(_e10, (v_10 / (sqrt(d2_9)).xxx)) : 0.0);
+    const float _e19 = range_scale(lobe_4);
+    float _e22 = asfloat(rt2_4.Load(li_2*4));
+    const float _e24 = light_area(l_9);
+    const float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_9, _e24, cos_y_1);
+    return _e25;
 }
 
-float3 shade_pick(uint li_3, float3 x_9, float3 n_16, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_3, float4 lobe_5, float w_4, uint nee_2, float u1_3, float u2_3)
+float light_pdf(uint li_3, float3 x_9, float3 n_15, float3 r_2, float4 lobe_5, float3 y_2, uint nee_1, bool in_range_2)
+{
+    const float _e8 = select_pdf(li_3, x_9, n_15, r_2, lobe_5, nee_1, in_range_2);
+    const float _e9 = light_pdf_selected(li_3, x_9, lobe_5, y_2, _e8);
+    return _e9;
+}
+
+float3 shade_pick(uint li_4, float3 x_10, float3 n_16, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_3, float4 lobe_6, float w_4, uint nee_2, float u1_3, float u2_3)
 {
     float mis = 1.0;
 
-    const float _e12 = range_scale(lobe_5);
+    const float _e12 = range_scale(lobe_6);
     float _e15 = params.eps;
-    const Connection _e16 = connect(li_3, x_9, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15);
+    const Connection _e16 = connect(li_4, x_10, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15);
     if ((_e16.cos_x <= 0.0)) {
         return (0.0).xxx;
     }
-    float3 l_10 = normalize((_e16.y - x_9));
-    GpuLight _e29 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
+    float3 l_10 = normalize((_e16.y - x_10));
+    GpuLight _e29 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
     const float _e30 = light_area(_e29);
     if ((_e30 > 0.0)) {
-        const float _e35 = light_pdf(li_3, x_9, n_16, r_3, lobe_5, _e16.y, nee_2, true);
-        const float _e37 = specular_probability(lobe_5);
+        const float _e35 = light_pdf(li_4, x_10, n_16, r_3, lobe_6, _e16.y, nee_2, true);
+        const float _e37 = specular_probability(lobe_6);
         const float _e38 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e37);
         const float _e39 = mis_weight(_e35, _e38);
         mis = _e39;
@@ -1175,7 +1181,7 @@ void main(uint3 gid : SV_DispatchThreadID)
         candidates.Store(i_4*4, asuint(0u));
         return;
     }
-    float3 x_10 = vtx.position;
+    float3 x_11 = vtx.position;
     float3 n_19 = vtx.normal;
     float3 ng_3 = vtx.gnormal;
     GpuMaterial m_2 = ConstructGpuMaterial(asfloat(materials.Load3(vtx.material*48+0)), asfloat(materials.Load(vtx.material*48+12)), asfloat(materials.Load3(vtx.material*48+16)), asfloat(materials.Load(vtx.material*48+28)), asfloat(materials.Load3(vtx.material*48+32)), asfloat(materials.Load(vtx.material*48+44)));
@@ -1189,7 +1195,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     const uint _e39 = point_stream(_e35, i_4, _e38);
     const uint _e40 = pick_stream(_e39);
     h = _e40;
-    const Picks _e45 = bsh_collect(x_10, scale_3, _e39);
+    const Picks _e45 = bsh_collect(x_11, scale_3, _e39);
     candidates.Store(i_4*4, asuint(_e45.n));
     const float _e51 = reservoir_weight(_e45.n, K);
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
@@ -1220,7 +1226,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             uint _e67 = s;
             uint _e70 = h;
             const float _e71 = xi_from_bits(_e70);
-            const float3 _e72 = shade_pick(_e45.light[min(uint(_e67), 7u)], x_10, n_19, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71);
+            const float3 _e72 = shade_pick(_e45.light[min(uint(_e67), 7u)], x_11, n_19, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71);
             sum = (_e65 + _e72);
         }
     }

@@ -9,17 +9,6 @@ struct GpuLight {
     uint ies_base;
 };
 
-struct GpuLightCone {
-    float3 center_;
-    float radius;
-    float3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint bvh_leaf;
-    uint pad;
-};
-
 struct GpuGeoNode {
     float3 bmin;
     uint first;
@@ -132,7 +121,6 @@ ByteAddressBuffer geo_tris : register(t7);
 ByteAddressBuffer lights : register(t2);
 ByteAddressBuffer r2_3 : register(t4);
 ByteAddressBuffer rt2_4 : register(t3);
-ByteAddressBuffer light_cones : register(t2, space1);
 ByteAddressBuffer light_bvh : register(t3, space1);
 cbuffer params : register(b0) { ShadeParams params; }
 ByteAddressBuffer vertices_ : register(t1);
@@ -614,15 +602,32 @@ float light_importance(float3 center_2, float radius_2, float phi_1, float3 axis
 {
     float imp = (float)0;
 
-    const float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if ((dot(n_9, n_9) > 0.0)) {
-        float _e13 = imp;
-        const float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_9);
-        imp = (_e13 * max(_e14, 0.0));
+    float3 v_9 = (p_2 - center_2);
+    float dist2_3 = dot(v_9, v_9);
+    float r2_5 = (radius_2 * radius_2);
+    float d2_9 = max(max(dist2_3, r2_5), MIN_D2_);
+    float3 wi_3 = ((dist2_3 > 0.0) ? (v_9 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0));
+    float cos_w_1 = dot(axis_1, wi_3);
+    const float _e28 = safe_sqrt((1.0 - (cos_w_1 * cos_w_1)));
+    const float _e29 = subtended_cos(dist2_3, r2_5);
+    const float _e33 = safe_sqrt((1.0 - (_e29 * _e29)));
+    const float _e37 = safe_sqrt((1.0 - (cos_o_1 * cos_o_1)));
+    const float _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    const float _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    const float _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
+    if ((_e40 <= cos_e_1)) {
+        return 0.0;
     }
-    float _e18 = imp;
-    return max(_e18, 0.0);
+    imp = ((phi_1 * _e40) / d2_9);
+    if ((dot(n_9, n_9) > 0.0)) {
+        float cos_i_1 = -(dot(wi_3, n_9));
+        float _e51 = imp;
+        const float _e55 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
+        const float _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
+        imp = (_e51 * max(_e56, 0.0));
+    }
+    float _e60 = imp;
+    return max(_e60, 0.0);
 }
 
 float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_10, float3 r, float4 lobe_3)
@@ -711,8 +716,8 @@ float3 triangle_normal(float3 a_3, float3 b_3, float3 c_2)
 {
     bool local_11 = (bool)0;
 
-    float3 n_20 = cross((b_3 - a_3), (c_2 - a_3));
-    float l2_ = dot(n_20, n_20);
+    float3 n_17 = cross((b_3 - a_3), (c_2 - a_3));
+    float l2_ = dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
         local_11 = !((l2_ < 3e38));
     } else {
@@ -722,7 +727,7 @@ float3 triangle_normal(float3 a_3, float3 b_3, float3 c_2)
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
-    return (n_20 / (sqrt(l2_)).xxx);
+    return (n_17 / (sqrt(l2_)).xxx);
 }
 
 float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_4, float3 c_3, float t_min, float t_max_1)
@@ -751,9 +756,9 @@ float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_4, float3 c_3, f
         return -1.0;
     }
     float3 q = cross(s_6, e1_);
-    float v_9 = (dot(d_2, q) * inv_1);
-    if (!((v_9 < 0.0))) {
-        local_13 = ((u_3 + v_9) > 1.0);
+    float v_10 = (dot(d_2, q) * inv_1);
+    if (!((v_10 < 0.0))) {
+        local_13 = ((u_3 + v_10) > 1.0);
     } else {
         local_13 = true;
     }
@@ -882,12 +887,12 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node;
-        GpuGeoNode n_21 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
+        GpuGeoNode n_18 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
-        const float _e28 = ray_aabb(o_2, _e14, n_21.bmin, n_21.bmax, _e27);
+        const float _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
         if ((_e28 >= 0.0)) {
-            if ((n_21.count > 0u)) {
-                i = n_21.first;
+            if ((n_18.count > 0u)) {
+                i = n_18.first;
                 uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -899,7 +904,7 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if ((_e36 < (n_21.first + n_21.count))) {
+                    if ((_e36 < (n_18.first + n_18.count))) {
                     } else {
                         break;
                     }
@@ -924,11 +929,11 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
                 uint _e60 = sp;
                 if ((_e60 < 64u)) {
                     uint _e63 = sp;
-                    stack[min(uint(_e63), 63u)] = (n_21.first + 1u);
+                    stack[min(uint(_e63), 63u)] = (n_18.first + 1u);
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node = n_21.first;
+                node = n_18.first;
                 continue;
             }
         }
@@ -1000,12 +1005,12 @@ Connection connect(uint li, float3 x_4, float3 n_12, float3 ng_1, float s, float
         return connection;
     }
     float3 _e42 = c_4.y;
-    float3 v_10 = (x_4 - _e42);
-    float d2_9 = dot(v_10, v_10);
-    const float3 _e49 = light_intensity(l_8, (v_10 / (sqrt(d2_9)).xxx));
+    float3 v_11 = (x_4 - _e42);
+    float d2_10 = dot(v_11, v_11);
+    const float3 _e49 = light_intensity(l_8, (v_11 / (sqrt(d2_10)).xxx));
     float _e51 = c_4.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     Connection _e58 = c_4;
     const Connection connection_1 = _e58;
@@ -1150,112 +1155,43 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_7, float3 n_15, float3 r_4, floa
     return bvhpick_3;
 }
 
-float light_bvh_pmf(uint nodes_5, uint leaf, float3 x_8, float3 n_16, float3 r_5, float4 lobe_8)
+float light_pdf_selected(uint li_1, float3 x_8, float4 lobe_8, float3 y_1, float sel)
 {
-    uint i_5 = 0u;
-    float pmf_1 = 1.0;
-    bool local_20 = (bool)0;
-    bool local_21 = (bool)0;
-
-    const uint _e6 = light_bvh_count(nodes_5);
-    if ((leaf >= _e6)) {
-        return 0.0;
-    }
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e13 = i_5;
-        const uint _e14 = light_bvh_count(nodes_5);
-        if ((_e13 < _e14)) {
-        } else {
-            break;
-        }
-        {
-            uint _e16 = i_5;
-            const GpuLightBvhNode _e17 = light_bvh_node(nodes_5, _e16);
-            if ((_e17.second == LIGHT_BVH_LEAF)) {
-                uint _e21 = i_5;
-                if ((_e21 == leaf)) {
-                    uint _e25 = i_5;
-                    if (!((_e25 > 0u))) {
-                        const float _e32 = bvh_importance(nodes_5, 0u, x_8, n_16, r_5, lobe_8);
-                        local_21 = (_e32 > 0.0);
-                    } else {
-                        local_21 = true;
-                    }
-                    bool _e36 = local_21;
-                    local_20 = _e36;
-                } else {
-                    local_20 = false;
-                }
-                bool _e38 = local_20;
-                if (_e38) {
-                    float _e39 = pmf_1;
-                    return _e39;
-                }
-                return 0.0;
-            }
-            uint _e41 = i_5;
-            const float _e42 = bvh_first(nodes_5, _e41, x_8, n_16, r_5, lobe_8);
-            if ((_e42 < 0.0)) {
-                return 0.0;
-            }
-            bool first_2 = (leaf < _e17.second);
-            float _e48 = pmf_1;
-            pmf_1 = (_e48 * (first_2 ? _e42 : (1.0 - _e42)));
-            uint _e54 = i_5;
-            i_5 = (first_2 ? (_e54 + 1u) : _e17.second);
-        }
-    }
-    return 0.0;
+    GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_1*64+0)), asuint(lights.Load(li_1*64+12)), asfloat(lights.Load3(li_1*64+16)), asfloat(lights.Load(li_1*64+28)), asfloat(lights.Load3(li_1*64+32)), asfloat(lights.Load(li_1*64+44)), asfloat(lights.Load3(li_1*64+48)), asuint(lights.Load(li_1*64+60)));
+    float3 v_12 = (x_8 - y_1);
+    float d2_11 = dot(v_12, v_12);
+    const float3 _e10 = light_normal(l_9);
+    float cos_y_1 = ((d2_11 > 0.0) ? dot(_e10, (v_12 / (sqrt(d2_11)).xxx)) : 0.0);
+    const float _e19 = range_scale(lobe_8);
+    float _e22 = asfloat(rt2_4.Load(li_1*4));
+    const float _e24 = light_area(l_9);
+    const float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_11, _e24, cos_y_1);
+    return _e25;
 }
 
-float select_pdf(uint li_1, float3 x_9, float3 n_17, float3 r_6, float4 lobe_9, uint nee, bool in_range)
-{
-    uint _e11 = asuint(light_cones.Load(40+li_1*48));
-    const float _e12 = light_bvh_pmf(BVH, _e11, x_9, n_17, r_6, lobe_9);
-    return _e12;
-}
-
-float light_pdf(uint li_2, float3 x_10, float3 n_18, float3 r_7, float4 lobe_10, float3 y_1, uint nee_1, bool in_range_1)
-{
-    GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
-    float3 v_11 = (x_10 - y_1);
-    float d2_10 = dot(v_11, v_11);
-    const float3 _e13 = light_normal(l_9);
-    float cos_y_1 = ((d2_10 > 0.0) ? dot(_e13, (v_11 / (sqrt(d2_10)).xxx)) : 0.0);
-    const float _e22 = select_pdf(li_2, x_10, n_18, r_7, lobe_10, nee_1, in_range_1);
-    const float _e23 = range_scale(lobe_10);
-    float _e26 = asfloat(rt2_4.Load(li_2*4));
-    const float _e28 = light_area(l_9);
-    const float _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_10, _e28, cos_y_1);
-    return _e29;
-}
-
-float3 shade_pick(uint li_3, float3 x_11, float3 n_19, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_8, float4 lobe_11, float w_4, uint nee_2, float u1_3, float u2_3)
+float3 shade_pick(uint li_2, float3 x_9, float3 n_16, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_5, float4 lobe_9, float w_4, uint nee, float u1_3, float u2_3)
 {
     float mis = 1.0;
 
-    const float _e12 = range_scale(lobe_11);
+    const float _e12 = range_scale(lobe_9);
     float _e15 = params.eps;
-    const Connection _e16 = connect(li_3, x_11, n_19, ng_2, _e12, w_4, u1_3, u2_3, _e15);
+    const Connection _e16 = connect(li_2, x_9, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15);
     if ((_e16.cos_x <= 0.0)) {
         return (0.0).xxx;
     }
-    float3 l_10 = normalize((_e16.y - x_11));
-    GpuLight _e29 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
+    float3 l_10 = normalize((_e16.y - x_9));
+    GpuLight _e29 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
     const float _e30 = light_area(_e29);
     if ((_e30 > 0.0)) {
-        const float _e35 = light_pdf(li_3, x_11, n_19, r_8, lobe_11, _e16.y, nee_2, true);
-        const float _e37 = specular_probability(lobe_11);
-        const float _e38 = bsdf_pdf(n_19, wo_1, l_10, m.alpha, _e37);
-        const float _e39 = mis_weight(_e35, _e38);
-        mis = _e39;
+        const float _e36 = light_pdf_selected(li_2, x_9, lobe_9, _e16.y, (1.0 / w_4));
+        const float _e38 = specular_probability(lobe_9);
+        const float _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
+        const float _e40 = mis_weight(_e36, _e39);
+        mis = _e40;
     }
-    const float3 _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_19, wo_1, l_10);
-    float _e48 = mis;
-    return ((_e45 * _e16.e) * _e48);
+    const float3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
+    float _e49 = mis;
+    return ((_e46 * _e16.e) * _e49);
 }
 
 GpuPathVertex ConstructGpuPathVertex(float3 arg0, uint arg1, float3 arg2, uint arg3, float3 arg4, float arg5, float3 arg6, float arg7, float3 arg8, float arg9) {
@@ -1290,39 +1226,39 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint h = (uint)0;
     float3 sum = (0.0).xxx;
 
-    uint i_6 = gid.x;
+    uint i_5 = gid.x;
     uint _e4 = params.point_count;
-    if ((i_6 >= _e4)) {
+    if ((i_5 >= _e4)) {
         return;
     }
-    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_6*80+0)), asuint(vertices_.Load(i_6*80+12)), asfloat(vertices_.Load3(i_6*80+16)), asuint(vertices_.Load(i_6*80+28)), asfloat(vertices_.Load3(i_6*80+32)), asfloat(vertices_.Load(i_6*80+44)), asfloat(vertices_.Load3(i_6*80+48)), asfloat(vertices_.Load(i_6*80+60)), asfloat(vertices_.Load3(i_6*80+64)), asfloat(vertices_.Load(i_6*80+76)));
+    GpuPathVertex vtx = ConstructGpuPathVertex(asfloat(vertices_.Load3(i_5*80+0)), asuint(vertices_.Load(i_5*80+12)), asfloat(vertices_.Load3(i_5*80+16)), asuint(vertices_.Load(i_5*80+28)), asfloat(vertices_.Load3(i_5*80+32)), asfloat(vertices_.Load(i_5*80+44)), asfloat(vertices_.Load3(i_5*80+48)), asfloat(vertices_.Load(i_5*80+60)), asfloat(vertices_.Load3(i_5*80+64)), asfloat(vertices_.Load(i_5*80+76)));
     if ((vtx.alive == 0u)) {
-        candidates.Store(i_6*4, asuint(0u));
+        candidates.Store(i_5*4, asuint(0u));
         return;
     }
-    float3 x_12 = vtx.position;
-    float3 n_22 = vtx.normal;
+    float3 x_10 = vtx.position;
+    float3 n_19 = vtx.normal;
     float3 ng_3 = vtx.gnormal;
     GpuMaterial m_2 = ConstructGpuMaterial(asfloat(materials.Load3(vtx.material*48+0)), asfloat(materials.Load(vtx.material*48+12)), asfloat(materials.Load3(vtx.material*48+16)), asfloat(materials.Load(vtx.material*48+28)), asfloat(materials.Load3(vtx.material*48+32)), asfloat(materials.Load(vtx.material*48+44)));
     float3 wo_2 = vtx.wo;
-    const float3 _e23 = mirror_dir(n_22, wo_2);
-    const float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_22, wo_2));
+    const float3 _e23 = mirror_dir(n_19, wo_2);
+    const float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_19, wo_2));
     const float _e31 = range_scale(_e30);
     float scale = sqrt(_e31);
     uint _e35 = params.seed;
     uint _e38 = params.frame;
-    const uint _e39 = point_stream(_e35, i_6, _e38);
+    const uint _e39 = point_stream(_e35, i_5, _e38);
     const uint _e40 = pick_stream(_e39);
     h = _e40;
-    candidates.Store(i_6*4, asuint(0u));
+    candidates.Store(i_5*4, asuint(0u));
     uint _e48 = h;
     const uint _e49 = pcg_hash(_e48);
     h = _e49;
     uint _e50 = h;
     const float _e51 = xi_from_bits(_e50);
-    const BvhPick _e53 = light_bvh_sample(BVH, x_12, n_22, _e23, _e30, _e51);
-    uint li_4 = _e53.light;
-    float pmf_2 = _e53.pmf;
+    const BvhPick _e53 = light_bvh_sample(BVH, x_10, n_19, _e23, _e30, _e51);
+    uint li_3 = _e53.light;
+    float pmf_1 = _e53.pmf;
     uint _e56 = h;
     const uint _e57 = pcg_hash(_e56);
     h = _e57;
@@ -1333,16 +1269,16 @@ void main(uint3 gid : SV_DispatchThreadID)
     h = _e61;
     uint _e62 = h;
     const float _e63 = xi_from_bits(_e62);
-    if ((pmf_2 > 0.0)) {
-        const float3 _e69 = shade_pick(li_4, x_12, n_22, ng_3, m_2, wo_2, _e23, _e30, (1.0 / pmf_2), 0u, _e59, _e63);
+    if ((pmf_1 > 0.0)) {
+        const float3 _e69 = shade_pick(li_3, x_10, n_19, ng_3, m_2, wo_2, _e23, _e30, (1.0 / pmf_1), 0u, _e59, _e63);
         sum = _e69;
     }
     float3 _e71 = sum;
     float3 add = (vtx.weight * _e71);
     const bool _e73 = finite3_(add);
     if (_e73) {
-        float4 _e76 = asfloat(radiance.Load4(i_6*16));
-        radiance.Store4(i_6*16, asuint((_e76 + float4(add, 0.0))));
+        float4 _e76 = asfloat(radiance.Load4(i_5*16));
+        radiance.Store4(i_5*16, asuint((_e76 + float4(add, 0.0))));
         return;
     } else {
         return;

@@ -918,19 +918,25 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-float light_pdf(uint li_1, float3 x_4, float3 n_14, float3 r_2, float4 lobe_4, float3 y, uint nee_1, bool in_range_2)
+float light_pdf_selected(uint li_1, float3 x_4, float4 lobe_4, float3 y, float sel)
 {
     GpuLight l_6 = ConstructGpuLight(asfloat(lights.Load3(li_1*64+0)), asuint(lights.Load(li_1*64+12)), asfloat(lights.Load3(li_1*64+16)), asfloat(lights.Load(li_1*64+28)), asfloat(lights.Load3(li_1*64+32)), asfloat(lights.Load(li_1*64+44)), asfloat(lights.Load3(li_1*64+48)), asuint(lights.Load(li_1*64+60)));
     float3 v_10 = (x_4 - y);
     float d2_3 = dot(v_10, v_10);
-    const float3 _e13 = light_normal(l_6);
-    float cos_y_1 = ((d2_3 > 0.0) ? dot(_e13, (v_10 / (sqrt(d2_3)).xxx)) : 0.0);
-    const float _e22 = select_pdf(li_1, x_4, n_14, r_2, lobe_4, nee_1, in_range_2);
-    const float _e23 = range_scale(lobe_4);
-    float _e26 = asfloat(rt2_2.Load(li_1*4));
-    const float _e28 = light_area(l_6);
-    const float _e29 = light_strategy_pdf(_e22, (_e23 * _e26), d2_3, _e28, cos_y_1);
-    return _e29;
+    const float3 _e10 = light_normal(l_6);
+    float cos_y_1 = ((d2_3 > 0.0) ? dot(_e10, (v_10 / (sqrt(d2_3)).xxx)) : 0.0);
+    const float _e19 = range_scale(lobe_4);
+    float _e22 = asfloat(rt2_2.Load(li_1*4));
+    const float _e24 = light_area(l_6);
+    const float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_3, _e24, cos_y_1);
+    return _e25;
+}
+
+float light_pdf(uint li_2, float3 x_5, float3 n_14, float3 r_2, float4 lobe_5, float3 y_1, uint nee_1, bool in_range_2)
+{
+    const float _e8 = select_pdf(li_2, x_5, n_14, r_2, lobe_5, nee_1, in_range_2);
+    const float _e9 = light_pdf_selected(li_2, x_5, lobe_5, y_1, _e8);
+    return _e9;
 }
 
 float next_uniform(inout uint state)
@@ -1102,7 +1108,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     GpuTriangle tri = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e94.tri*48+0)), asuint(geo_tris.Load(_e94.tri*48+12)), asfloat(geo_tris.Load3(_e94.tri*48+16)), asuint(geo_tris.Load(_e94.tri*48+28)), asfloat(geo_tris.Load3(_e94.tri*48+32)), asuint(geo_tris.Load(_e94.tri*48+44)));
     float3 _e111 = st.origin;
     float3 _e113 = st.dir;
-    float3 x_5 = (_e111 + (_e113 * _e94.t));
+    float3 x_6 = (_e111 + (_e113 * _e94.t));
     const float3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     float3 _e122 = st.dir;
     const float3 _e123 = face_against(_e120, _e122);
@@ -1110,7 +1116,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     float4 _e129 = asfloat(geo_normals.Load4(b_6*16));
     float4 _e135 = asfloat(geo_normals.Load4((b_6 + 1u)*16));
     float4 _e141 = asfloat(geo_normals.Load4((b_6 + 2u)*16));
-    const float3 _e146 = barycentric(x_5, tri.v0_, tri.v1_, tri.v2_);
+    const float3 _e146 = barycentric(x_6, tri.v0_, tri.v1_, tri.v2_);
     const float3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if ((tri.light != NO_LIGHT)) {
         float3 _e154 = st.dir;
@@ -1136,7 +1142,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             float3 _e188 = st.prev_r;
             float4 _e190 = st.prev_lobe;
             uint _e193 = asuint(candidates.Load(i_1*4));
-            const float _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_5, _e193, _e179);
+            const float _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_6, _e193, _e179);
             const float _e195 = mis_weight(_e181, _e194);
             w = _e195;
         }
@@ -1191,7 +1197,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 _e233 = st.dir;
     float3 wo_1 = -(_e233);
     const float4 _e241 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
-    v.position = x_5;
+    v.position = x_6;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
@@ -1229,14 +1235,14 @@ void main(uint3 gid : SV_DispatchThreadID)
         float3 _e283 = st.beta;
         st.beta = (_e283 * m_2.albedo);
     }
-    st.prev = x_5;
+    st.prev = x_6;
     st.prev_normal = _e147;
     const float3 _e289 = mirror_dir(_e147, wo_1);
     st.prev_r = _e289;
     st.prev_lobe = _e241;
     st.pdf_bsdf = _e265;
     float _e295 = params.eps;
-    st.origin = (x_5 + (_e123 * _e295));
+    st.origin = (x_6 + (_e123 * _e295));
     st.dir = _e263;
     const bool _e299 = continues_path(_e263, _e147, _e123);
     if (!(!(_e299))) {

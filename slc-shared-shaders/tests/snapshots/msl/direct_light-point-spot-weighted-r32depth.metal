@@ -428,15 +428,32 @@ float light_importance(
     metal::float3 n_1
 ) {
     float imp = {};
-    float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if (metal::dot(n_1, n_1) > 0.0) {
-        float _e13 = imp;
-        float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_1);
-        imp = _e13 * metal::max(_e14, 0.0);
+    metal::float3 v_4 = p_2 - center_2;
+    float dist2_3 = metal::dot(v_4, v_4);
+    float r2_5 = radius_2 * radius_2;
+    float d2_7 = metal::max(metal::max(dist2_3, r2_5), MIN_D2_);
+    metal::float3 wi_1 = (dist2_3 > 0.0) ? (v_4 / metal::float3(metal::sqrt(dist2_3))) : metal::float3(0.0, 0.0, 0.0);
+    float cos_w_1 = metal::dot(axis_1, wi_1);
+    float _e28 = safe_sqrt(1.0 - (cos_w_1 * cos_w_1));
+    float _e29 = subtended_cos(dist2_3, r2_5);
+    float _e33 = safe_sqrt(1.0 - (_e29 * _e29));
+    float _e37 = safe_sqrt(1.0 - (cos_o_1 * cos_o_1));
+    float _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    float _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    float _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
+    if (_e40 <= cos_e_1) {
+        return 0.0;
     }
-    float _e18 = imp;
-    return metal::max(_e18, 0.0);
+    imp = (phi_1 * _e40) / d2_7;
+    if (metal::dot(n_1, n_1) > 0.0) {
+        float cos_i_1 = -(metal::dot(wi_1, n_1));
+        float _e51 = imp;
+        float _e55 = safe_sqrt(1.0 - (cos_i_1 * cos_i_1));
+        float _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
+        imp = _e51 * metal::max(_e56, 0.0);
+    }
+    float _e60 = imp;
+    return metal::max(_e60, 0.0);
 }
 
 float glossy_importance(
@@ -493,14 +510,14 @@ float cone_weight(
     metal::float3 r_3,
     metal::float4 lobe_4
 ) {
-    metal::float3 v_4 = p_4 - center_4;
+    metal::float3 v_5 = p_4 - center_4;
     if (lobe_4.y <= 0.0) {
         float _e15 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_3);
-        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_4, v_4));
+        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_5, v_5));
         return _e19;
     }
     float _e20 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_3, r_3, lobe_4);
-    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_4, v_4));
+    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_5, v_5));
     return _e22;
 }
 
@@ -644,12 +661,12 @@ Connection connect(
         return _e40;
     }
     metal::float3 _e42 = c_1.y;
-    metal::float3 v_5 = x_5 - _e42;
-    float d2_7 = metal::dot(v_5, v_5);
-    metal::float3 _e49 = light_intensity(l_2, v_5 / metal::float3(metal::sqrt(d2_7)));
+    metal::float3 v_6 = x_5 - _e42;
+    float d2_8 = metal::dot(v_6, v_6);
+    metal::float3 _e49 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_8)));
     float _e51 = c_1.cos_x;
     float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_7, s * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_8, s * _e54, w_res);
     c_1.e = _e49 * _e56;
     Connection _e58 = c_1;
     return _e58;

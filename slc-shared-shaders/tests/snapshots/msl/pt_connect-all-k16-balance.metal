@@ -1541,15 +1541,12 @@ float select_pdf(
     return _e8;
 }
 
-float light_pdf(
+float light_pdf_selected(
     uint li_2,
     metal::float3 x_13,
-    metal::float3 n_17,
-    metal::float3 r_2,
     metal::float4 lobe_4,
     metal::float3 y_2,
-    uint nee_1,
-    bool in_range_2,
+    float sel,
     device type_11 const& lights,
     device type_4 const& rt2_4,
     constant _mslBufferSizes& _buffer_sizes
@@ -1557,25 +1554,42 @@ float light_pdf(
     GpuLight l_9 = lights[li_2];
     metal::float3 v_10 = x_13 - y_2;
     float d2_9 = metal::dot(v_10, v_10);
-    metal::float3 _e13 = light_normal(l_9);
-    float cos_y_1 = (d2_9 > 0.0) ? metal::dot(_e13, v_10 / metal::float3(metal::sqrt(d2_9))) : 0.0;
-    float _e22 = select_pdf(li_2, x_13, n_17, r_2, lobe_4, nee_1, in_range_2);
-    float _e23 = range_scale(lobe_4);
-    float _e26 = rt2_4[li_2];
-    float _e28 = light_area(l_9);
-    float _e29 = light_strategy_pdf(_e22, _e23 * _e26, d2_9, _e28, cos_y_1);
-    return _e29;
+    metal::float3 _e10 = light_normal(l_9);
+    float cos_y_1 = (d2_9 > 0.0) ? metal::dot(_e10, v_10 / metal::float3(metal::sqrt(d2_9))) : 0.0;
+    float _e19 = range_scale(lobe_4);
+    float _e22 = rt2_4[li_2];
+    float _e24 = light_area(l_9);
+    float _e25 = light_strategy_pdf(sel, _e19 * _e22, d2_9, _e24, cos_y_1);
+    return _e25;
+}
+
+float light_pdf(
+    uint li_3,
+    metal::float3 x_14,
+    metal::float3 n_17,
+    metal::float3 r_2,
+    metal::float4 lobe_5,
+    metal::float3 y_3,
+    uint nee_1,
+    bool in_range_2,
+    device type_11 const& lights,
+    device type_4 const& rt2_4,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e8 = select_pdf(li_3, x_14, n_17, r_2, lobe_5, nee_1, in_range_2);
+    float _e9 = light_pdf_selected(li_3, x_14, lobe_5, y_3, _e8, lights, rt2_4, _buffer_sizes);
+    return _e9;
 }
 
 metal::float3 shade_pick(
-    uint li_3,
-    metal::float3 x_14,
+    uint li_4,
+    metal::float3 x_15,
     metal::float3 n_18,
     metal::float3 ng_2,
     GpuMaterial m,
     metal::float3 wo_1,
     metal::float3 r_3,
-    metal::float4 lobe_5,
+    metal::float4 lobe_6,
     float w_6,
     uint nee_2,
     float u1_3,
@@ -1590,18 +1604,18 @@ metal::float3 shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e12 = range_scale(lobe_5);
+    float _e12 = range_scale(lobe_6);
     float _e15 = params.eps;
-    Connection _e16 = connect(li_3, x_14, n_18, ng_2, _e12, w_6, u1_3, u2_3, _e15, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_4, _buffer_sizes);
+    Connection _e16 = connect(li_4, x_15, n_18, ng_2, _e12, w_6, u1_3, u2_3, _e15, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_4, _buffer_sizes);
     if (_e16.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
-    metal::float3 l_10 = metal::normalize(_e16.y - x_14);
-    GpuLight _e29 = lights[li_3];
+    metal::float3 l_10 = metal::normalize(_e16.y - x_15);
+    GpuLight _e29 = lights[li_4];
     float _e30 = light_area(_e29);
     if (_e30 > 0.0) {
-        float _e35 = light_pdf(li_3, x_14, n_18, r_3, lobe_5, _e16.y, nee_2, true, lights, rt2_4, _buffer_sizes);
-        float _e37 = specular_probability(lobe_5);
+        float _e35 = light_pdf(li_4, x_15, n_18, r_3, lobe_6, _e16.y, nee_2, true, lights, rt2_4, _buffer_sizes);
+        float _e37 = specular_probability(lobe_6);
         float _e38 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e37);
         float _e39 = mis_weight(_e35, _e38);
         mis = _e39;
@@ -1642,7 +1656,7 @@ kernel void main_(
         candidates[i_5] = 0u;
         return;
     }
-    metal::float3 x_15 = vtx.position;
+    metal::float3 x_16 = vtx.position;
     metal::float3 n_21 = vtx.normal;
     metal::float3 ng_3 = vtx.gnormal;
     GpuMaterial m_2 = materials[vtx.material];
@@ -1656,7 +1670,7 @@ kernel void main_(
     uint _e39 = point_stream(_e35, i_5, _e38);
     uint _e40 = pick_stream(_e39);
     h = _e40;
-    Picks _e45 = bsh_collect(x_15, scale_3, _e39, bsh_nodes, _buffer_sizes);
+    Picks _e45 = bsh_collect(x_16, scale_3, _e39, bsh_nodes, _buffer_sizes);
     candidates[i_5] = _e45.n;
     float _e51 = reservoir_weight(_e45.n, K);
     uint2 loop_bound_5 = uint2(4294967295u);
@@ -1687,7 +1701,7 @@ kernel void main_(
             uint _e67 = s;
             uint _e70 = h;
             float _e71 = xi_from_bits(_e70);
-            metal::float3 _e72 = shade_pick(_e45.light.inner[_e67], x_15, n_21, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_4, params, _buffer_sizes);
+            metal::float3 _e72 = shade_pick(_e45.light.inner[_e67], x_16, n_21, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_4, params, _buffer_sizes);
             sum = _e65 + _e72;
         }
     }

@@ -1250,15 +1250,12 @@ float select_pdf(
     return _e8;
 }
 
-float light_pdf(
+float light_pdf_selected(
     uint li_2,
     metal::float3 x_8,
-    metal::float3 n_15,
-    metal::float3 r_2,
     metal::float4 lobe_4,
     metal::float3 y_1,
-    uint nee_1,
-    bool in_range_2,
+    float sel,
     device type_11 const& lights,
     device type_4 const& rt2_4,
     constant _mslBufferSizes& _buffer_sizes
@@ -1266,25 +1263,42 @@ float light_pdf(
     GpuLight l_9 = lights[li_2];
     metal::float3 v_10 = x_8 - y_1;
     float d2_9 = metal::dot(v_10, v_10);
-    metal::float3 _e13 = light_normal(l_9);
-    float cos_y_1 = (d2_9 > 0.0) ? metal::dot(_e13, v_10 / metal::float3(metal::sqrt(d2_9))) : 0.0;
-    float _e22 = select_pdf(li_2, x_8, n_15, r_2, lobe_4, nee_1, in_range_2);
-    float _e23 = range_scale(lobe_4);
-    float _e26 = rt2_4[li_2];
-    float _e28 = light_area(l_9);
-    float _e29 = light_strategy_pdf(_e22, _e23 * _e26, d2_9, _e28, cos_y_1);
-    return _e29;
+    metal::float3 _e10 = light_normal(l_9);
+    float cos_y_1 = (d2_9 > 0.0) ? metal::dot(_e10, v_10 / metal::float3(metal::sqrt(d2_9))) : 0.0;
+    float _e19 = range_scale(lobe_4);
+    float _e22 = rt2_4[li_2];
+    float _e24 = light_area(l_9);
+    float _e25 = light_strategy_pdf(sel, _e19 * _e22, d2_9, _e24, cos_y_1);
+    return _e25;
+}
+
+float light_pdf(
+    uint li_3,
+    metal::float3 x_9,
+    metal::float3 n_15,
+    metal::float3 r_2,
+    metal::float4 lobe_5,
+    metal::float3 y_2,
+    uint nee_1,
+    bool in_range_2,
+    device type_11 const& lights,
+    device type_4 const& rt2_4,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e8 = select_pdf(li_3, x_9, n_15, r_2, lobe_5, nee_1, in_range_2);
+    float _e9 = light_pdf_selected(li_3, x_9, lobe_5, y_2, _e8, lights, rt2_4, _buffer_sizes);
+    return _e9;
 }
 
 metal::float3 shade_pick(
-    uint li_3,
-    metal::float3 x_9,
+    uint li_4,
+    metal::float3 x_10,
     metal::float3 n_16,
     metal::float3 ng_2,
     GpuMaterial m,
     metal::float3 wo_1,
     metal::float3 r_3,
-    metal::float4 lobe_5,
+    metal::float4 lobe_6,
     float w_4,
     uint nee_2,
     float u1_3,
@@ -1298,18 +1312,18 @@ metal::float3 shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e12 = range_scale(lobe_5);
+    float _e12 = range_scale(lobe_6);
     float _e15 = params.eps;
-    Connection _e16 = connect(li_3, x_9, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15, geo_nodes, geo_tris, lights, r2_2, rt2_4, _buffer_sizes);
+    Connection _e16 = connect(li_4, x_10, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15, geo_nodes, geo_tris, lights, r2_2, rt2_4, _buffer_sizes);
     if (_e16.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
-    metal::float3 l_10 = metal::normalize(_e16.y - x_9);
-    GpuLight _e29 = lights[li_3];
+    metal::float3 l_10 = metal::normalize(_e16.y - x_10);
+    GpuLight _e29 = lights[li_4];
     float _e30 = light_area(_e29);
     if (_e30 > 0.0) {
-        float _e35 = light_pdf(li_3, x_9, n_16, r_3, lobe_5, _e16.y, nee_2, true, lights, rt2_4, _buffer_sizes);
-        float _e37 = specular_probability(lobe_5);
+        float _e35 = light_pdf(li_4, x_10, n_16, r_3, lobe_6, _e16.y, nee_2, true, lights, rt2_4, _buffer_sizes);
+        float _e37 = specular_probability(lobe_6);
         float _e38 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e37);
         float _e39 = mis_weight(_e35, _e38);
         mis = _e39;
@@ -1349,7 +1363,7 @@ kernel void main_(
         candidates[i_4] = 0u;
         return;
     }
-    metal::float3 x_10 = vtx.position;
+    metal::float3 x_11 = vtx.position;
     metal::float3 n_19 = vtx.normal;
     metal::float3 ng_3 = vtx.gnormal;
     GpuMaterial m_2 = materials[vtx.material];
@@ -1363,7 +1377,7 @@ kernel void main_(
     uint _e39 = point_stream(_e35, i_4, _e38);
     uint _e40 = pick_stream(_e39);
     h = _e40;
-    Picks _e45 = bsh_collect(x_10, scale_3, _e39, bsh_nodes, _buffer_sizes);
+    Picks _e45 = bsh_collect(x_11, scale_3, _e39, bsh_nodes, _buffer_sizes);
     candidates[i_4] = _e45.n;
     float _e51 = reservoir_weight(_e45.n, K);
     uint2 loop_bound_4 = uint2(4294967295u);
@@ -1394,7 +1408,7 @@ kernel void main_(
             uint _e67 = s;
             uint _e70 = h;
             float _e71 = xi_from_bits(_e70);
-            metal::float3 _e72 = shade_pick(_e45.light.inner[_e67], x_10, n_19, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71, geo_nodes, geo_tris, lights, r2_2, rt2_4, params, _buffer_sizes);
+            metal::float3 _e72 = shade_pick(_e45.light.inner[_e67], x_11, n_19, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71, geo_nodes, geo_tris, lights, r2_2, rt2_4, params, _buffer_sizes);
             sum = _e65 + _e72;
         }
     }

@@ -11,11 +11,10 @@ struct _mslBufferSizes {
     uint size3;
     uint size4;
     uint size5;
-    uint size6;
+    uint size7;
     uint size8;
     uint size9;
     uint size10;
-    uint size11;
 };
 
 struct GpuLight {
@@ -27,16 +26,6 @@ struct GpuLight {
     float b;
     metal::packed_float3 intensity;
     uint ies_base;
-};
-struct GpuLightCone {
-    metal::packed_float3 center;
-    float radius;
-    metal::packed_float3 axis;
-    float cos_o;
-    float phi;
-    float cos_e;
-    uint bvh_leaf;
-    uint pad;
 };
 struct GpuGeoNode {
     metal::packed_float3 bmin;
@@ -106,16 +95,15 @@ struct Connection {
 };
 typedef GpuLight type_9[1];
 typedef metal::float4 type_10[1];
-typedef GpuLightCone type_11[1];
-typedef GpuLightBvhNode type_12[1];
+typedef GpuLightBvhNode type_11[1];
 typedef uint BvhNodes;
 struct BvhPick {
     uint light;
     float pmf;
 };
-typedef GpuPathVertex type_13[1];
-typedef GpuMaterial type_14[1];
-typedef uint type_15[1];
+typedef GpuPathVertex type_12[1];
+typedef GpuMaterial type_13[1];
+typedef uint type_14[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -760,15 +748,32 @@ float light_importance(
     metal::float3 n_9
 ) {
     float imp = {};
-    float _e8 = emitter_importance(center_2, radius_2, phi_1, axis_1, cos_o_1, cos_e_1, p_2);
-    imp = _e8;
-    if (metal::dot(n_9, n_9) > 0.0) {
-        float _e13 = imp;
-        float _e14 = cone_cos_toward(center_2, radius_2, p_2, n_9);
-        imp = _e13 * metal::max(_e14, 0.0);
+    metal::float3 v_9 = p_2 - center_2;
+    float dist2_3 = metal::dot(v_9, v_9);
+    float r2_5 = radius_2 * radius_2;
+    float d2_9 = metal::max(metal::max(dist2_3, r2_5), MIN_D2_);
+    metal::float3 wi_3 = (dist2_3 > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_3))) : metal::float3(0.0, 0.0, 0.0);
+    float cos_w_1 = metal::dot(axis_1, wi_3);
+    float _e28 = safe_sqrt(1.0 - (cos_w_1 * cos_w_1));
+    float _e29 = subtended_cos(dist2_3, r2_5);
+    float _e33 = safe_sqrt(1.0 - (_e29 * _e29));
+    float _e37 = safe_sqrt(1.0 - (cos_o_1 * cos_o_1));
+    float _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    float _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
+    float _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
+    if (_e40 <= cos_e_1) {
+        return 0.0;
     }
-    float _e18 = imp;
-    return metal::max(_e18, 0.0);
+    imp = (phi_1 * _e40) / d2_9;
+    if (metal::dot(n_9, n_9) > 0.0) {
+        float cos_i_1 = -(metal::dot(wi_3, n_9));
+        float _e51 = imp;
+        float _e55 = safe_sqrt(1.0 - (cos_i_1 * cos_i_1));
+        float _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
+        imp = _e51 * metal::max(_e56, 0.0);
+    }
+    float _e60 = imp;
+    return metal::max(_e60, 0.0);
 }
 
 float glossy_importance(
@@ -891,8 +896,8 @@ metal::float3 triangle_normal(
     metal::float3 c_2
 ) {
     bool local_11 = {};
-    metal::float3 n_20 = metal::cross(b_3 - a_3, c_2 - a_3);
-    float l2_ = metal::dot(n_20, n_20);
+    metal::float3 n_17 = metal::cross(b_3 - a_3, c_2 - a_3);
+    float l2_ = metal::dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
         local_11 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
@@ -902,7 +907,7 @@ metal::float3 triangle_normal(
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
-    return n_20 / metal::float3(metal::sqrt(l2_));
+    return n_17 / metal::float3(metal::sqrt(l2_));
 }
 
 float ray_triangle(
@@ -937,9 +942,9 @@ float ray_triangle(
         return -1.0;
     }
     metal::float3 q = metal::cross(s_6, e1_);
-    float v_9 = metal::dot(d_2, q) * inv_1;
-    if (!((v_9 < 0.0))) {
-        local_13 = (u_3 + v_9) > 1.0;
+    float v_10 = metal::dot(d_2, q) * inv_1;
+    if (!((v_10 < 0.0))) {
+        local_13 = (u_3 + v_10) > 1.0;
     } else {
         local_13 = true;
     }
@@ -1054,12 +1059,12 @@ GeoHit trace(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e21 = node;
-        GpuGeoNode n_21 = geo_nodes[_e21];
+        GpuGeoNode n_18 = geo_nodes[_e21];
         float _e27 = hit.t;
-        float _e28 = ray_aabb(o_2, _e14, n_21.bmin, n_21.bmax, _e27);
+        float _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
         if (_e28 >= 0.0) {
-            if (n_21.count > 0u) {
-                i = n_21.first;
+            if (n_18.count > 0u) {
+                i = n_18.first;
                 uint2 loop_bound_1 = uint2(4294967295u);
                 bool loop_init = true;
                 while(true) {
@@ -1071,7 +1076,7 @@ GeoHit trace(
                     }
                     loop_init = false;
                     uint _e36 = i;
-                    if (_e36 < (n_21.first + n_21.count)) {
+                    if (_e36 < (n_18.first + n_18.count)) {
                     } else {
                         break;
                     }
@@ -1095,11 +1100,11 @@ GeoHit trace(
                 uint _e60 = sp;
                 if (_e60 < 64u) {
                     uint _e63 = sp;
-                    stack.inner[_e63] = n_21.first + 1u;
+                    stack.inner[_e63] = n_18.first + 1u;
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node = n_21.first;
+                node = n_18.first;
                 continue;
             }
         }
@@ -1175,12 +1180,12 @@ Connection connect(
         return _e40;
     }
     metal::float3 _e42 = c_4.y;
-    metal::float3 v_10 = x_4 - _e42;
-    float d2_9 = metal::dot(v_10, v_10);
-    metal::float3 _e49 = light_intensity(l_8, v_10 / metal::float3(metal::sqrt(d2_9)));
+    metal::float3 v_11 = x_4 - _e42;
+    float d2_10 = metal::dot(v_11, v_11);
+    metal::float3 _e49 = light_intensity(l_8, v_11 / metal::float3(metal::sqrt(d2_10)));
     float _e51 = c_4.cos_x;
     float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_9, s * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_10, s * _e54, w_res);
     c_4.e = _e49 * _e56;
     Connection _e58 = c_4;
     return _e58;
@@ -1197,7 +1202,7 @@ float mis_weight(
 GpuLightBvhNode light_bvh_node(
     BvhNodes nodes,
     uint i_1,
-    device type_12 const& light_bvh,
+    device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightBvhNode _e4 = light_bvh[i_1];
@@ -1206,10 +1211,10 @@ GpuLightBvhNode light_bvh_node(
 
 uint light_bvh_count(
     BvhNodes nodes_1,
-    device type_12 const& light_bvh,
+    device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    return 1 + (_buffer_sizes.size6 - 0 - 48) / 48;
+    return 1 + (_buffer_sizes.size5 - 0 - 48) / 48;
 }
 
 float bvh_importance(
@@ -1219,7 +1224,7 @@ float bvh_importance(
     metal::float3 n_13,
     metal::float3 r_2,
     metal::float4 lobe_5,
-    device type_12 const& light_bvh,
+    device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightBvhNode _e6 = light_bvh_node(nodes_2, i_2, light_bvh, _buffer_sizes);
@@ -1234,7 +1239,7 @@ float bvh_first(
     metal::float3 n_14,
     metal::float3 r_3,
     metal::float4 lobe_6,
-    device type_12 const& light_bvh,
+    device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool local_18 = {};
@@ -1268,7 +1273,7 @@ BvhPick light_bvh_sample(
     metal::float3 r_4,
     metal::float4 lobe_7,
     float u_in,
-    device type_12 const& light_bvh,
+    device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BvhPick pick = {};
@@ -1330,130 +1335,39 @@ BvhPick light_bvh_sample(
     return _e57;
 }
 
-float light_bvh_pmf(
-    BvhNodes nodes_5,
-    uint leaf,
-    metal::float3 x_8,
-    metal::float3 n_16,
-    metal::float3 r_5,
-    metal::float4 lobe_8,
-    device type_12 const& light_bvh,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint i_5 = 0u;
-    float pmf_1 = 1.0;
-    bool local_20 = {};
-    bool local_21 = {};
-    uint _e6 = light_bvh_count(nodes_5, light_bvh, _buffer_sizes);
-    if (leaf >= _e6) {
-        return 0.0;
-    }
-    uint2 loop_bound_3 = uint2(4294967295u);
-    while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e13 = i_5;
-        uint _e14 = light_bvh_count(nodes_5, light_bvh, _buffer_sizes);
-        if (_e13 < _e14) {
-        } else {
-            break;
-        }
-        {
-            uint _e16 = i_5;
-            GpuLightBvhNode _e17 = light_bvh_node(nodes_5, _e16, light_bvh, _buffer_sizes);
-            if (_e17.second == LIGHT_BVH_LEAF) {
-                uint _e21 = i_5;
-                if (_e21 == leaf) {
-                    uint _e25 = i_5;
-                    if (!((_e25 > 0u))) {
-                        float _e32 = bvh_importance(nodes_5, 0u, x_8, n_16, r_5, lobe_8, light_bvh, _buffer_sizes);
-                        local_21 = _e32 > 0.0;
-                    } else {
-                        local_21 = true;
-                    }
-                    bool _e36 = local_21;
-                    local_20 = _e36;
-                } else {
-                    local_20 = false;
-                }
-                bool _e38 = local_20;
-                if (_e38) {
-                    float _e39 = pmf_1;
-                    return _e39;
-                }
-                return 0.0;
-            }
-            uint _e41 = i_5;
-            float _e42 = bvh_first(nodes_5, _e41, x_8, n_16, r_5, lobe_8, light_bvh, _buffer_sizes);
-            if (_e42 < 0.0) {
-                return 0.0;
-            }
-            bool first_2 = leaf < _e17.second;
-            float _e48 = pmf_1;
-            pmf_1 = _e48 * (first_2 ? _e42 : (1.0 - _e42));
-            uint _e54 = i_5;
-            i_5 = first_2 ? (_e54 + 1u) : _e17.second;
-        }
-    }
-    return 0.0;
-}
-
-float select_pdf(
+float light_pdf_selected(
     uint li_1,
-    metal::float3 x_9,
-    metal::float3 n_17,
-    metal::float3 r_6,
-    metal::float4 lobe_9,
-    uint nee,
-    bool in_range,
-    device type_11 const& light_cones,
-    device type_12 const& light_bvh,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint _e11 = light_cones[li_1].bvh_leaf;
-    float _e12 = light_bvh_pmf(BVH, _e11, x_9, n_17, r_6, lobe_9, light_bvh, _buffer_sizes);
-    return _e12;
-}
-
-float light_pdf(
-    uint li_2,
-    metal::float3 x_10,
-    metal::float3 n_18,
-    metal::float3 r_7,
-    metal::float4 lobe_10,
+    metal::float3 x_8,
+    metal::float4 lobe_8,
     metal::float3 y_1,
-    uint nee_1,
-    bool in_range_1,
+    float sel,
     device type_9 const& lights,
     device type_4 const& rt2_4,
-    device type_11 const& light_cones,
-    device type_12 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight l_9 = lights[li_2];
-    metal::float3 v_11 = x_10 - y_1;
-    float d2_10 = metal::dot(v_11, v_11);
-    metal::float3 _e13 = light_normal(l_9);
-    float cos_y_1 = (d2_10 > 0.0) ? metal::dot(_e13, v_11 / metal::float3(metal::sqrt(d2_10))) : 0.0;
-    float _e22 = select_pdf(li_2, x_10, n_18, r_7, lobe_10, nee_1, in_range_1, light_cones, light_bvh, _buffer_sizes);
-    float _e23 = range_scale(lobe_10);
-    float _e26 = rt2_4[li_2];
-    float _e28 = light_area(l_9);
-    float _e29 = light_strategy_pdf(_e22, _e23 * _e26, d2_10, _e28, cos_y_1);
-    return _e29;
+    GpuLight l_9 = lights[li_1];
+    metal::float3 v_12 = x_8 - y_1;
+    float d2_11 = metal::dot(v_12, v_12);
+    metal::float3 _e10 = light_normal(l_9);
+    float cos_y_1 = (d2_11 > 0.0) ? metal::dot(_e10, v_12 / metal::float3(metal::sqrt(d2_11))) : 0.0;
+    float _e19 = range_scale(lobe_8);
+    float _e22 = rt2_4[li_1];
+    float _e24 = light_area(l_9);
+    float _e25 = light_strategy_pdf(sel, _e19 * _e22, d2_11, _e24, cos_y_1);
+    return _e25;
 }
 
 metal::float3 shade_pick(
-    uint li_3,
-    metal::float3 x_11,
-    metal::float3 n_19,
+    uint li_2,
+    metal::float3 x_9,
+    metal::float3 n_16,
     metal::float3 ng_2,
     GpuMaterial m,
     metal::float3 wo_1,
-    metal::float3 r_8,
-    metal::float4 lobe_11,
+    metal::float3 r_5,
+    metal::float4 lobe_9,
     float w_4,
-    uint nee_2,
+    uint nee,
     float u1_3,
     float u2_3,
     device type_6 const& geo_nodes,
@@ -1461,31 +1375,29 @@ metal::float3 shade_pick(
     device type_9 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_4,
-    device type_11 const& light_cones,
-    device type_12 const& light_bvh,
     constant ShadeParams& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e12 = range_scale(lobe_11);
+    float _e12 = range_scale(lobe_9);
     float _e15 = params.eps;
-    Connection _e16 = connect(li_3, x_11, n_19, ng_2, _e12, w_4, u1_3, u2_3, _e15, geo_nodes, geo_tris, lights, r2_3, rt2_4, _buffer_sizes);
+    Connection _e16 = connect(li_2, x_9, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15, geo_nodes, geo_tris, lights, r2_3, rt2_4, _buffer_sizes);
     if (_e16.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
-    metal::float3 l_10 = metal::normalize(_e16.y - x_11);
-    GpuLight _e29 = lights[li_3];
+    metal::float3 l_10 = metal::normalize(_e16.y - x_9);
+    GpuLight _e29 = lights[li_2];
     float _e30 = light_area(_e29);
     if (_e30 > 0.0) {
-        float _e35 = light_pdf(li_3, x_11, n_19, r_8, lobe_11, _e16.y, nee_2, true, lights, rt2_4, light_cones, light_bvh, _buffer_sizes);
-        float _e37 = specular_probability(lobe_11);
-        float _e38 = bsdf_pdf(n_19, wo_1, l_10, m.alpha, _e37);
-        float _e39 = mis_weight(_e35, _e38);
-        mis = _e39;
+        float _e36 = light_pdf_selected(li_2, x_9, lobe_9, _e16.y, 1.0 / w_4, lights, rt2_4, _buffer_sizes);
+        float _e38 = specular_probability(lobe_9);
+        float _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
+        float _e40 = mis_weight(_e36, _e39);
+        mis = _e40;
     }
-    metal::float3 _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_19, wo_1, l_10);
-    float _e48 = mis;
-    return (_e45 * _e16.e) * _e48;
+    metal::float3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
+    float _e49 = mis;
+    return (_e46 * _e16.e) * _e49;
 }
 
 struct main_Input {
@@ -1497,50 +1409,49 @@ kernel void main_(
 , device type_9 const& lights [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_4 const& rt2_4 [[user(fake0)]]
-, device type_11 const& light_cones [[user(fake0)]]
-, device type_12 const& light_bvh [[user(fake0)]]
+, device type_11 const& light_bvh [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_13 const& vertices [[user(fake0)]]
-, device type_14 const& materials [[user(fake0)]]
+, device type_12 const& vertices [[user(fake0)]]
+, device type_13 const& materials [[user(fake0)]]
 , device type_10& radiance [[user(fake0)]]
-, device type_15& candidates [[user(fake0)]]
+, device type_14& candidates [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};
     metal::float3 sum = metal::float3(0.0);
-    uint i_6 = gid.x;
+    uint i_5 = gid.x;
     uint _e4 = params.point_count;
-    if (i_6 >= _e4) {
+    if (i_5 >= _e4) {
         return;
     }
-    GpuPathVertex vtx = vertices[i_6];
+    GpuPathVertex vtx = vertices[i_5];
     if (vtx.alive == 0u) {
-        candidates[i_6] = 0u;
+        candidates[i_5] = 0u;
         return;
     }
-    metal::float3 x_12 = vtx.position;
-    metal::float3 n_22 = vtx.normal;
+    metal::float3 x_10 = vtx.position;
+    metal::float3 n_19 = vtx.normal;
     metal::float3 ng_3 = vtx.gnormal;
     GpuMaterial m_2 = materials[vtx.material];
     metal::float3 wo_2 = vtx.wo;
-    metal::float3 _e23 = mirror_dir(n_22, wo_2);
-    metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_22, wo_2));
+    metal::float3 _e23 = mirror_dir(n_19, wo_2);
+    metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_19, wo_2));
     float _e31 = range_scale(_e30);
     float scale = metal::sqrt(_e31);
     uint _e35 = params.seed;
     uint _e38 = params.frame;
-    uint _e39 = point_stream(_e35, i_6, _e38);
+    uint _e39 = point_stream(_e35, i_5, _e38);
     uint _e40 = pick_stream(_e39);
     h = _e40;
-    candidates[i_6] = 0u;
+    candidates[i_5] = 0u;
     uint _e48 = h;
     uint _e49 = pcg_hash(_e48);
     h = _e49;
     uint _e50 = h;
     float _e51 = xi_from_bits(_e50);
-    BvhPick _e53 = light_bvh_sample(BVH, x_12, n_22, _e23, _e30, _e51, light_bvh, _buffer_sizes);
-    uint li_4 = _e53.light;
-    float pmf_2 = _e53.pmf;
+    BvhPick _e53 = light_bvh_sample(BVH, x_10, n_19, _e23, _e30, _e51, light_bvh, _buffer_sizes);
+    uint li_3 = _e53.light;
+    float pmf_1 = _e53.pmf;
     uint _e56 = h;
     uint _e57 = pcg_hash(_e56);
     h = _e57;
@@ -1551,16 +1462,16 @@ kernel void main_(
     h = _e61;
     uint _e62 = h;
     float _e63 = xi_from_bits(_e62);
-    if (pmf_2 > 0.0) {
-        metal::float3 _e69 = shade_pick(li_4, x_12, n_22, ng_3, m_2, wo_2, _e23, _e30, 1.0 / pmf_2, 0u, _e59, _e63, geo_nodes, geo_tris, lights, r2_3, rt2_4, light_cones, light_bvh, params, _buffer_sizes);
+    if (pmf_1 > 0.0) {
+        metal::float3 _e69 = shade_pick(li_3, x_10, n_19, ng_3, m_2, wo_2, _e23, _e30, 1.0 / pmf_1, 0u, _e59, _e63, geo_nodes, geo_tris, lights, r2_3, rt2_4, params, _buffer_sizes);
         sum = _e69;
     }
     metal::float3 _e71 = sum;
     metal::float3 add = vtx.weight * _e71;
     bool _e73 = finite3_(add);
     if (_e73) {
-        metal::float4 _e76 = radiance[i_6];
-        radiance[i_6] = _e76 + metal::float4(add, 0.0);
+        metal::float4 _e76 = radiance[i_5];
+        radiance[i_5] = _e76 + metal::float4(add, 0.0);
         return;
     } else {
         return;

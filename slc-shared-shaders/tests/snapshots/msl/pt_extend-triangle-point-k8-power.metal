@@ -1057,15 +1057,12 @@ float select_pdf(
     return _e8;
 }
 
-float light_pdf(
+float light_pdf_selected(
     uint li_1,
     metal::float3 x_4,
-    metal::float3 n_14,
-    metal::float3 r_2,
     metal::float4 lobe_4,
     metal::float3 y,
-    uint nee_1,
-    bool in_range_2,
+    float sel,
     device type_4 const& rt2_2,
     device type_10 const& lights,
     constant _mslBufferSizes& _buffer_sizes
@@ -1073,14 +1070,31 @@ float light_pdf(
     GpuLight l_6 = lights[li_1];
     metal::float3 v_10 = x_4 - y;
     float d2_3 = metal::dot(v_10, v_10);
-    metal::float3 _e13 = light_normal(l_6);
-    float cos_y_1 = (d2_3 > 0.0) ? metal::dot(_e13, v_10 / metal::float3(metal::sqrt(d2_3))) : 0.0;
-    float _e22 = select_pdf(li_1, x_4, n_14, r_2, lobe_4, nee_1, in_range_2);
-    float _e23 = range_scale(lobe_4);
-    float _e26 = rt2_2[li_1];
-    float _e28 = light_area(l_6);
-    float _e29 = light_strategy_pdf(_e22, _e23 * _e26, d2_3, _e28, cos_y_1);
-    return _e29;
+    metal::float3 _e10 = light_normal(l_6);
+    float cos_y_1 = (d2_3 > 0.0) ? metal::dot(_e10, v_10 / metal::float3(metal::sqrt(d2_3))) : 0.0;
+    float _e19 = range_scale(lobe_4);
+    float _e22 = rt2_2[li_1];
+    float _e24 = light_area(l_6);
+    float _e25 = light_strategy_pdf(sel, _e19 * _e22, d2_3, _e24, cos_y_1);
+    return _e25;
+}
+
+float light_pdf(
+    uint li_2,
+    metal::float3 x_5,
+    metal::float3 n_14,
+    metal::float3 r_2,
+    metal::float4 lobe_5,
+    metal::float3 y_1,
+    uint nee_1,
+    bool in_range_2,
+    device type_4 const& rt2_2,
+    device type_10 const& lights,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e8 = select_pdf(li_2, x_5, n_14, r_2, lobe_5, nee_1, in_range_2);
+    float _e9 = light_pdf_selected(li_2, x_5, lobe_5, y_1, _e8, rt2_2, lights, _buffer_sizes);
+    return _e9;
 }
 
 float next_uniform(
@@ -1189,7 +1203,7 @@ kernel void main_(
     GpuTriangle tri = geo_tris[_e94.tri];
     metal::float3 _e111 = st.origin;
     metal::float3 _e113 = st.dir;
-    metal::float3 x_5 = _e111 + (_e113 * _e94.t);
+    metal::float3 x_6 = _e111 + (_e113 * _e94.t);
     metal::float3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e122 = st.dir;
     metal::float3 _e123 = face_against(_e120, _e122);
@@ -1197,7 +1211,7 @@ kernel void main_(
     metal::float4 _e129 = geo_normals[b_6];
     metal::float4 _e135 = geo_normals[b_6 + 1u];
     metal::float4 _e141 = geo_normals[b_6 + 2u];
-    metal::float3 _e146 = barycentric(x_5, tri.v0_, tri.v1_, tri.v2_);
+    metal::float3 _e146 = barycentric(x_6, tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if (tri.light != NO_LIGHT) {
         metal::float3 _e154 = st.dir;
@@ -1223,7 +1237,7 @@ kernel void main_(
             metal::float3 _e188 = st.prev_r;
             metal::float4 _e190 = st.prev_lobe;
             uint _e193 = candidates[i_1];
-            float _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_5, _e193, _e179, rt2_2, lights, _buffer_sizes);
+            float _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_6, _e193, _e179, rt2_2, lights, _buffer_sizes);
             float _e195 = mis_weight(_e181, _e194);
             w = _e195;
         }
@@ -1251,7 +1265,7 @@ kernel void main_(
     metal::float3 _e233 = st.dir;
     metal::float3 wo_1 = -(_e233);
     metal::float4 _e241 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(_e147, wo_1));
-    v.position = x_5;
+    v.position = x_6;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
@@ -1277,14 +1291,14 @@ kernel void main_(
         metal::float3 _e283 = st.beta;
         st.beta = _e283 * m_2.albedo;
     }
-    st.prev = x_5;
+    st.prev = x_6;
     st.prev_normal = _e147;
     metal::float3 _e289 = mirror_dir(_e147, wo_1);
     st.prev_r = _e289;
     st.prev_lobe = _e241;
     st.pdf_bsdf = _e265;
     float _e295 = params.eps;
-    st.origin = x_5 + (_e123 * _e295);
+    st.origin = x_6 + (_e123 * _e295);
     st.dir = _e263;
     bool _e299 = continues_path(_e263, _e147, _e123);
     if (!(!(_e299))) {
