@@ -43,6 +43,21 @@ fn with_backend(
     }
 }
 
+/// Every plot's legend: the series' labels in the upper right on a
+/// translucent white box, `size`-point text.
+fn legend<'a, DB: DrawingBackend + 'a, X: Ranged<ValueType = f64>, Y: Ranged<ValueType = f64>>(
+    chart: &mut ChartContext<'a, DB, Cartesian2d<X, Y>>,
+    size: u32,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", size))
+        .position(SeriesLabelPosition::UpperRight)
+        .draw()
+}
+
 /// Colour of each method in every plot.
 pub fn method_color(method: &str) -> RGBColor {
     match method {
@@ -136,14 +151,7 @@ fn speed_vs_error_on<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB,
             }))
             .map_err(err)?;
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 18))
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(err)?;
+    legend(&mut chart, 18).map_err(err)?;
     Ok(())
 }
 
@@ -190,14 +198,7 @@ fn rmse_over_time_on<DB: DrawingBackend>(report: &PtReport, root: &DrawingArea<D
             .label(r.method.clone())
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 18))
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(err)?;
+    legend(&mut chart, 18).map_err(err)?;
     Ok(())
 }
 
@@ -265,14 +266,7 @@ fn suite_vs_uniform_on<DB: DrawingBackend>(rows: &[crate::suite_bench::SuiteRow]
             .label(m.to_string())
             .legend(move |(x, y)| Circle::new((x + 10, y), 5, color.filled()));
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 16))
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(err)?;
+    legend(&mut chart, 16).map_err(err)?;
     Ok(())
 }
 
@@ -331,14 +325,7 @@ fn ies_polar_on<DB: DrawingBackend>(p: &slc_core::ies::IesProfile, title: &str, 
         .map_err(err)?
         .label("C = 90° / 270°")
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c90.stroke_width(3)));
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 16))
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(err)?;
+    legend(&mut chart, 16).map_err(err)?;
     Ok(())
 }
 

@@ -56,9 +56,12 @@ crate::shared! {
         return select(safe_sqrt(1.0 - r2 / dist2), -1.0, dist2 <= r2);
     }
 
-    /// The emitter's half of [`light_importance`] at `p`: `φ · cos θ' /
-    /// max(d², R², MIN_D2)`, 0 where `θ' ≥ θ_e`.
-    pub fn emitter_importance(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, p: vec3f) -> f32 {
+    /// The emitter's geometry seen from `p`, for [`emitter_importance`] and
+    /// [`light_importance`] (computed once for both halves):
+    /// `(cos θ', max(d², R², MIN_D2), cos θ_b, sin θ_b)` with `θ'` the angle
+    /// from the direction to `p` to the normal cone `(axis, cos_o)` less
+    /// the angle `θ_b` the sphere `(center, radius)` subtends at `p`.
+    pub fn emitter_cone(center: vec3f, radius: f32, axis: vec3f, cos_o: f32, p: vec3f) -> vec4f {
         let v: vec3f = p - center;
         let dist2: f32 = dot(v, v);
         let r2: f32 = radius * radius;
@@ -71,11 +74,17 @@ crate::shared! {
         let sin_o: f32 = safe_sqrt(1.0 - cos_o * cos_o);
         let cos_x: f32 = cos_sub_clamped(sin_w, cos_w, sin_o, cos_o);
         let sin_x: f32 = sin_sub_clamped(sin_w, cos_w, sin_o, cos_o);
-        let cos_p: f32 = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
-        if cos_p <= cos_e {
+        return vec4f(cos_sub_clamped(sin_x, cos_x, sin_b, cos_b), d2, cos_b, sin_b);
+    }
+
+    /// The emitter's half of [`light_importance`] at `p`: `φ · cos θ' /
+    /// max(d², R², MIN_D2)`, 0 where `θ' ≥ θ_e` ([`emitter_cone`]).
+    pub fn emitter_importance(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, p: vec3f) -> f32 {
+        let c: vec4f = emitter_cone(center, radius, axis, cos_o, p);
+        if c.x <= cos_e {
             return 0.0;
         }
-        return phi * cos_p / d2;
+        return phi * c.x / c.y;
     }
 
     /// The largest cosine between the unit direction `d` at `p` and a
@@ -104,33 +113,23 @@ crate::shared! {
     /// receiver is one-sided (reflection only; pbrt-v4 takes `|cos|` for
     /// transmission), so only lights wholly below its horizon get 0.
     ///
-    /// Written out rather than as [`emitter_importance`] times
-    /// [`cone_cos_toward`] (the same values, bit for bit): the direction,
-    /// distance and subtended angle are computed once, and the receiver's
-    /// term not at all where the emitter's is 0, as pbrt-v4 does; the
-    /// light BVH's walk calls this twice per level.
+    /// [`emitter_cone`] once for both halves rather than
+    /// [`emitter_importance`] times [`cone_cos_toward`] (the same values):
+    /// the subtended angle is computed once, and the receiver's term not at
+    /// all where the emitter's is 0, as pbrt-v4 does; the light BVH's walk
+    /// calls this twice per level.
     pub fn light_importance(center: vec3f, radius: f32, phi: f32, axis: vec3f, cos_o: f32, cos_e: f32, p: vec3f, n: vec3f) -> f32 {
-        let v: vec3f = p - center;
-        let dist2: f32 = dot(v, v);
-        let r2: f32 = radius * radius;
-        let d2: f32 = max(max(dist2, r2), MIN_D2);
-        let wi: vec3f = select(vec3f(0.0, 0.0, 0.0), v / sqrt(dist2), dist2 > 0.0);
-        let cos_w: f32 = dot(axis, wi);
-        let sin_w: f32 = safe_sqrt(1.0 - cos_w * cos_w);
-        let cos_b: f32 = subtended_cos(dist2, r2);
-        let sin_b: f32 = safe_sqrt(1.0 - cos_b * cos_b);
-        let sin_o: f32 = safe_sqrt(1.0 - cos_o * cos_o);
-        let cos_x: f32 = cos_sub_clamped(sin_w, cos_w, sin_o, cos_o);
-        let sin_x: f32 = sin_sub_clamped(sin_w, cos_w, sin_o, cos_o);
-        let cos_p: f32 = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
-        if cos_p <= cos_e {
+        let c: vec4f = emitter_cone(center, radius, axis, cos_o, p);
+        if c.x <= cos_e {
             return 0.0;
         }
-        let mut imp: f32 = phi * cos_p / d2;
+        let mut imp: f32 = phi * c.x / c.y;
         if dot(n, n) > 0.0 {
-            // The direction from p to the centre is −wi.
-            let cos_i: f32 = -dot(wi, n);
-            imp = imp * max(cos_sub_clamped(safe_sqrt(1.0 - cos_i * cos_i), cos_i, sin_b, cos_b), 0.0);
+            // The direction from p to the centre.
+            let v: vec3f = center - p;
+            let dist2: f32 = dot(v, v);
+            let cos_i: f32 = dot(select(vec3f(0.0, 0.0, 0.0), v / sqrt(dist2), dist2 > 0.0), n);
+            imp = imp * max(cos_sub_clamped(safe_sqrt(1.0 - cos_i * cos_i), cos_i, c.w, c.z), 0.0);
         }
         return max(imp, 0.0);
     }

@@ -419,31 +419,36 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
     return select(_e5, -1f, (dist2_ <= r2_2));
 }
 
-fn emitter_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, cos_o: f32, cos_e: f32, p: vec3<f32>) -> f32 {
+fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
     let v_5 = (p - center);
     let dist2_1 = dot(v_5, v_5);
     let r2_4 = (radius * radius);
     let d2_6 = max(max(dist2_1, r2_4), MIN_D2_);
     let wi = select(vec3<f32>(0f, 0f, 0f), (v_5 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi);
-    let _e27 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e28 = subtended_cos(dist2_1, r2_4);
-    let _e32 = safe_sqrt((1f - (_e28 * _e28)));
-    let _e36 = safe_sqrt((1f - (cos_o * cos_o)));
-    let _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
-    let _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
-    let _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
-    if (_e39 <= cos_e) {
-        return 0f;
-    }
-    return ((phi * _e39) / d2_6);
+    let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e26 = subtended_cos(dist2_1, r2_4);
+    let _e30 = safe_sqrt((1f - (_e26 * _e26)));
+    let _e34 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
+    let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
+    let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
+    return vec4<f32>(_e37, d2_6, _e26, _e30);
 }
 
-fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d: vec3<f32>) -> f32 {
-    let v_6 = (center_1 - p_1);
+fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
+    let _e7 = emitter_cone(center_1, radius_1, axis_1, cos_o_1, p_1);
+    if (_e7.x <= cos_e) {
+        return 0f;
+    }
+    return ((phi * _e7.x) / _e7.y);
+}
+
+fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d: vec3<f32>) -> f32 {
+    let v_6 = (center_2 - p_2);
     let dist2_2 = dot(v_6, v_6);
     let w_7 = select(vec3<f32>(0f, 0f, 0f), (v_6 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
-    let _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
+    let _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
     let cos_i = dot(w_7, d);
     let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
     let _e26 = safe_sqrt((1f - (_e17 * _e17)));
@@ -451,42 +456,32 @@ fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d: vec3<f
     return _e27;
 }
 
-fn light_importance(center_2: vec3<f32>, radius_2: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, p_2: vec3<f32>, n_4: vec3<f32>) -> f32 {
+fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_3: vec3<f32>, n_4: vec3<f32>) -> f32 {
     var imp: f32;
 
-    let v_7 = (p_2 - center_2);
-    let dist2_3 = dot(v_7, v_7);
-    let r2_5 = (radius_2 * radius_2);
-    let d2_7 = max(max(dist2_3, r2_5), MIN_D2_);
-    let wi_1 = select(vec3<f32>(0f, 0f, 0f), (v_7 / vec3(sqrt(dist2_3))), (dist2_3 > 0f));
-    let cos_w_1 = dot(axis_1, wi_1);
-    let _e28 = safe_sqrt((1f - (cos_w_1 * cos_w_1)));
-    let _e29 = subtended_cos(dist2_3, r2_5);
-    let _e33 = safe_sqrt((1f - (_e29 * _e29)));
-    let _e37 = safe_sqrt((1f - (cos_o_1 * cos_o_1)));
-    let _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    let _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    let _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
-    if (_e40 <= cos_e_1) {
+    let _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    if (_e8.x <= cos_e_1) {
         return 0f;
     }
-    imp = ((phi_1 * _e40) / d2_7);
+    imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_4, n_4) > 0f) {
-        let cos_i_1 = -(dot(wi_1, n_4));
-        let _e51 = imp;
-        let _e55 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
-        let _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
-        imp = (_e51 * max(_e56, 0f));
+        let v_7 = (center_3 - p_3);
+        let dist2_3 = dot(v_7, v_7);
+        let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_7 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_4);
+        let _e33 = imp;
+        let _e37 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
+        let _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        imp = (_e33 * max(_e40, 0f));
     }
-    let _e60 = imp;
-    return max(_e60, 0f);
+    let _e44 = imp;
+    return max(_e44, 0f);
 }
 
-fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_5: vec3<f32>, r_2: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_4: vec3<f32>, n_5: vec3<f32>, r_2: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
     var local_9: bool;
 
-    let _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
-    let _e11 = cone_cos_toward(center_3, radius_3, p_3, n_5);
+    let _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
+    let _e11 = cone_cos_toward(center_4, radius_4, p_4, n_5);
     if !((_e10 <= 0f)) {
         local_9 = (_e11 <= 0f);
     } else {
@@ -496,7 +491,7 @@ fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec
     if _e20 {
         return 0f;
     }
-    let _e22 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    let _e22 = cone_cos_toward(center_4, radius_4, p_4, r_2);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
     let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_3.z);
     let _e39 = smith_root(lobe_3.w, lobe_3.z);
@@ -509,14 +504,14 @@ fn candidate_weight(importance: f32, rt2_2: f32, d2_4: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, rt2_3: f32, p_4: vec3<f32>, n_6: vec3<f32>, r_3: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
-    let v_8 = (p_4 - center_4);
+fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_5: vec3<f32>, n_6: vec3<f32>, r_3: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
+    let v_8 = (p_5 - center_5);
     if (lobe_4.y <= 0f) {
-        let _e15 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6);
+        let _e15 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_6);
         let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_8, v_8));
         return _e19;
     }
-    let _e20 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6, r_3, lobe_4);
+    let _e20 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_6, r_3, lobe_4);
     let _e22 = candidate_weight(_e20, rt2_3, dot(v_8, v_8));
     return _e22;
 }
@@ -636,11 +631,11 @@ fn connect(li: u32, x_5: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_r
     }
     let _e42 = c_4.y;
     let v_9 = (x_5 - _e42);
-    let d2_8 = dot(v_9, v_9);
-    let _e49 = light_intensity(l_4, (v_9 / vec3(sqrt(d2_8))));
+    let d2_7 = dot(v_9, v_9);
+    let _e49 = light_intensity(l_4, (v_9 / vec3(sqrt(d2_7))));
     let _e51 = c_4.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     let _e58 = c_4;
     return _e58;
@@ -724,8 +719,8 @@ fn bsh_weighted_collect(x_7: vec3<f32>, n_9: vec3<f32>, r_5: vec3<f32>, lobe_6: 
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_5 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_5.xyz, 1f), (p_5.w > 0f));
+    let p_6 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_6.xyz, 1f), (p_6.w > 0f));
 }
 
 fn shade_pick(li_2: u32, x_8: vec3<f32>, n_10: vec3<f32>, m_1: Material, s2_: f32, w_5: f32, u1_3: f32, u2_3: f32) -> Shaded {

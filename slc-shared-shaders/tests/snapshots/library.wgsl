@@ -966,31 +966,36 @@ fn subtended_cos(dist2_: f32, r2_6: f32) -> f32 {
     return select(_e5, -1f, (dist2_ <= r2_6));
 }
 
-fn emitter_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, cos_o: f32, cos_e: f32, p: vec3<f32>) -> f32 {
+fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
     let v_16 = (p - center);
     let dist2_1 = dot(v_16, v_16);
     let r2_11 = (radius * radius);
     let d2_17 = max(max(dist2_1, r2_11), MIN_D2_);
     let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_16 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_3);
-    let _e27 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e28 = subtended_cos(dist2_1, r2_11);
-    let _e32 = safe_sqrt((1f - (_e28 * _e28)));
-    let _e36 = safe_sqrt((1f - (cos_o * cos_o)));
-    let _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
-    let _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
-    let _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
-    if (_e39 <= cos_e) {
-        return 0f;
-    }
-    return ((phi * _e39) / d2_17);
+    let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e26 = subtended_cos(dist2_1, r2_11);
+    let _e30 = safe_sqrt((1f - (_e26 * _e26)));
+    let _e34 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
+    let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
+    let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
+    return vec4<f32>(_e37, d2_17, _e26, _e30);
 }
 
-fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_17 = (center_1 - p_1);
+fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
+    let _e7 = emitter_cone(center_1, radius_1, axis_1, cos_o_1, p_1);
+    if (_e7.x <= cos_e) {
+        return 0f;
+    }
+    return ((phi * _e7.x) / _e7.y);
+}
+
+fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
+    let v_17 = (center_2 - p_2);
     let dist2_2 = dot(v_17, v_17);
     let w_12 = select(vec3<f32>(0f, 0f, 0f), (v_17 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
-    let _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
+    let _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
     let cos_i = dot(w_12, d_1);
     let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
     let _e26 = safe_sqrt((1f - (_e17 * _e17)));
@@ -998,42 +1003,32 @@ fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d_1: vec3
     return _e27;
 }
 
-fn light_importance(center_2: vec3<f32>, radius_2: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, p_2: vec3<f32>, n_19: vec3<f32>) -> f32 {
+fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_3: vec3<f32>, n_19: vec3<f32>) -> f32 {
     var imp: f32;
 
-    let v_18 = (p_2 - center_2);
-    let dist2_3 = dot(v_18, v_18);
-    let r2_12 = (radius_2 * radius_2);
-    let d2_18 = max(max(dist2_3, r2_12), MIN_D2_);
-    let wi_4 = select(vec3<f32>(0f, 0f, 0f), (v_18 / vec3(sqrt(dist2_3))), (dist2_3 > 0f));
-    let cos_w_1 = dot(axis_1, wi_4);
-    let _e28 = safe_sqrt((1f - (cos_w_1 * cos_w_1)));
-    let _e29 = subtended_cos(dist2_3, r2_12);
-    let _e33 = safe_sqrt((1f - (_e29 * _e29)));
-    let _e37 = safe_sqrt((1f - (cos_o_1 * cos_o_1)));
-    let _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    let _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    let _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
-    if (_e40 <= cos_e_1) {
+    let _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    if (_e8.x <= cos_e_1) {
         return 0f;
     }
-    imp = ((phi_1 * _e40) / d2_18);
+    imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_19, n_19) > 0f) {
-        let cos_i_1 = -(dot(wi_4, n_19));
-        let _e51 = imp;
-        let _e55 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
-        let _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
-        imp = (_e51 * max(_e56, 0f));
+        let v_18 = (center_3 - p_3);
+        let dist2_3 = dot(v_18, v_18);
+        let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_18 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_19);
+        let _e33 = imp;
+        let _e37 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
+        let _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        imp = (_e33 * max(_e40, 0f));
     }
-    let _e60 = imp;
-    return max(_e60, 0f);
+    let _e44 = imp;
+    return max(_e44, 0f);
 }
 
-fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_20: vec3<f32>, r_3: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_4: vec3<f32>, n_20: vec3<f32>, r_3: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
     var local_13: bool;
 
-    let _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
-    let _e11 = cone_cos_toward(center_3, radius_3, p_3, n_20);
+    let _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
+    let _e11 = cone_cos_toward(center_4, radius_4, p_4, n_20);
     if !((_e10 <= 0f)) {
         local_13 = (_e11 <= 0f);
     } else {
@@ -1043,7 +1038,7 @@ fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec
     if _e20 {
         return 0f;
     }
-    let _e22 = cone_cos_toward(center_3, radius_3, p_3, r_3);
+    let _e22 = cone_cos_toward(center_4, radius_4, p_4, r_3);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
     let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_3.z);
     let _e39 = smith_root(lobe_3.w, lobe_3.z);
@@ -1051,12 +1046,12 @@ fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec
     return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-fn receiver_importance(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, p_4: vec3<f32>, n_21: vec3<f32>, r_4: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
+fn receiver_importance(center_5: vec3<f32>, radius_5: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, p_5: vec3<f32>, n_21: vec3<f32>, r_4: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
     if (lobe_4.y <= 0f) {
-        let _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21);
+        let _e13 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_21);
         return _e13;
     }
-    let _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_21, r_4, lobe_4);
+    let _e14 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_21, r_4, lobe_4);
     return _e14;
 }
 
@@ -1065,14 +1060,14 @@ fn candidate_weight(importance: f32, rt2_5: f32, d2_9: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_4: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_4: f32, rt2_6: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    let v_19 = (p_5 - center_5);
+fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_4: f32, axis_5: vec3<f32>, cos_o_5: f32, cos_e_4: f32, rt2_6: f32, p_6: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
+    let v_19 = (p_6 - center_6);
     if (lobe_5.y <= 0f) {
-        let _e15 = light_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22);
+        let _e15 = light_importance(center_6, radius_6, phi_4, axis_5, cos_o_5, cos_e_4, p_6, n_22);
         let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_19, v_19));
         return _e19;
     }
-    let _e20 = glossy_importance(center_5, radius_5, phi_4, axis_4, cos_o_4, cos_e_4, p_5, n_22, r_5, lobe_5);
+    let _e20 = glossy_importance(center_6, radius_6, phi_4, axis_5, cos_o_5, cos_e_4, p_6, n_22, r_5, lobe_5);
     let _e22 = candidate_weight(_e20, rt2_6, dot(v_19, v_19));
     return _e22;
 }
@@ -1158,10 +1153,10 @@ fn face_against(n_23: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
     return select(n_23, -(n_23), (dot(n_23, dir) > 0f));
 }
 
-fn barycentric(p_6: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -> vec3<f32> {
+fn barycentric(p_7: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -> vec3<f32> {
     let e1_1 = (b_5 - a_6);
     let e2_1 = (c_8 - a_6);
-    let q_4 = (p_6 - a_6);
+    let q_4 = (p_7 - a_6);
     let d11_ = dot(e1_1, e1_1);
     let d12_ = dot(e1_1, e2_1);
     let d22_ = dot(e2_1, e2_1);
@@ -1199,14 +1194,14 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
 
     let e1_2 = (b_6 - a_7);
     let e2_2 = (c_9 - a_7);
-    let p_7 = cross(d_3, e2_2);
-    let det = dot(e1_2, p_7);
+    let p_8 = cross(d_3, e2_2);
+    let det = dot(e1_2, p_8);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv_1 = (1f / det);
     let s_7 = (o_1 - a_7);
-    let u_6 = (dot(s_7, p_7) * inv_1);
+    let u_6 = (dot(s_7, p_8) * inv_1);
     if !((u_6 < 0f)) {
         local_16 = (u_6 > 1f);
     } else {
@@ -1426,8 +1421,8 @@ fn light_map_texel(a_8: f32, size_7: u32) -> u32 {
     return _e14;
 }
 
-fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_5: vec3<f32>, extent_2: f32, perspective: bool) -> f32 {
-    return (dot(rel, dir_2) / (select(1f, dot(rel, axis_5), perspective) * extent_2));
+fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_6: vec3<f32>, extent_2: f32, perspective: bool) -> f32 {
+    return (dot(rel, dir_2) / (select(1f, dot(rel, axis_6), perspective) * extent_2));
 }
 
 fn display_encode(x_15: f32) -> f32 {
@@ -1436,8 +1431,8 @@ fn display_encode(x_15: f32) -> f32 {
     return select(((1.055f * pow(t_8, 0.41666666f)) - 0.055f), (12.92f * t_8), (t_8 <= 0.0031308f));
 }
 
-fn light_map_depth(rel_1: vec3<f32>, axis_6: vec3<f32>, perspective_1: bool) -> f32 {
-    return select(dot(rel_1, axis_6), sqrt(dot(rel_1, rel_1)), perspective_1);
+fn light_map_depth(rel_1: vec3<f32>, axis_7: vec3<f32>, perspective_1: bool) -> f32 {
+    return select(dot(rel_1, axis_7), sqrt(dot(rel_1, rel_1)), perspective_1);
 }
 
 fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
@@ -1445,9 +1440,9 @@ fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
 }
 
 fn point_irradiance(intensity_1: vec3<f32>, n_26: vec3<f32>, v_10: vec3<f32>) -> vec3<f32> {
-    let d2_19 = dot(v_10, v_10);
-    let cos_x_2 = (dot(n_26, v_10) / sqrt(max(d2_19, MIN_D2_)));
-    let _e11 = inverse_square(d2_19);
+    let d2_18 = dot(v_10, v_10);
+    let cos_x_2 = (dot(n_26, v_10) / sqrt(max(d2_18, MIN_D2_)));
+    let _e11 = inverse_square(d2_18);
     return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }
 

@@ -529,31 +529,36 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
     return select(_e5, -1f, (dist2_ <= r2_2));
 }
 
-fn emitter_importance(center: vec3<f32>, radius: f32, phi: f32, axis: vec3<f32>, cos_o: f32, cos_e: f32, p: vec3<f32>) -> f32 {
+fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
     let v_7 = (p - center);
     let dist2_1 = dot(v_7, v_7);
     let r2_4 = (radius * radius);
     let d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
     let wi_2 = select(vec3<f32>(0f, 0f, 0f), (v_7 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_2);
-    let _e27 = safe_sqrt((1f - (cos_w * cos_w)));
-    let _e28 = subtended_cos(dist2_1, r2_4);
-    let _e32 = safe_sqrt((1f - (_e28 * _e28)));
-    let _e36 = safe_sqrt((1f - (cos_o * cos_o)));
-    let _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
-    let _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
-    let _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
-    if (_e39 <= cos_e) {
-        return 0f;
-    }
-    return ((phi * _e39) / d2_8);
+    let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
+    let _e26 = subtended_cos(dist2_1, r2_4);
+    let _e30 = safe_sqrt((1f - (_e26 * _e26)));
+    let _e34 = safe_sqrt((1f - (cos_o * cos_o)));
+    let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
+    let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
+    let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
+    return vec4<f32>(_e37, d2_8, _e26, _e30);
 }
 
-fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d: vec3<f32>) -> f32 {
-    let v_8 = (center_1 - p_1);
+fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
+    let _e7 = emitter_cone(center_1, radius_1, axis_1, cos_o_1, p_1);
+    if (_e7.x <= cos_e) {
+        return 0f;
+    }
+    return ((phi * _e7.x) / _e7.y);
+}
+
+fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d: vec3<f32>) -> f32 {
+    let v_8 = (center_2 - p_2);
     let dist2_2 = dot(v_8, v_8);
     let w_6 = select(vec3<f32>(0f, 0f, 0f), (v_8 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
-    let _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
+    let _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
     let cos_i = dot(w_6, d);
     let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
     let _e26 = safe_sqrt((1f - (_e17 * _e17)));
@@ -561,42 +566,32 @@ fn cone_cos_toward(center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, d: vec3<f
     return _e27;
 }
 
-fn light_importance(center_2: vec3<f32>, radius_2: f32, phi_1: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e_1: f32, p_2: vec3<f32>, n_9: vec3<f32>) -> f32 {
+fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_3: vec3<f32>, n_9: vec3<f32>) -> f32 {
     var imp: f32;
 
-    let v_9 = (p_2 - center_2);
-    let dist2_3 = dot(v_9, v_9);
-    let r2_5 = (radius_2 * radius_2);
-    let d2_9 = max(max(dist2_3, r2_5), MIN_D2_);
-    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_3))), (dist2_3 > 0f));
-    let cos_w_1 = dot(axis_1, wi_3);
-    let _e28 = safe_sqrt((1f - (cos_w_1 * cos_w_1)));
-    let _e29 = subtended_cos(dist2_3, r2_5);
-    let _e33 = safe_sqrt((1f - (_e29 * _e29)));
-    let _e37 = safe_sqrt((1f - (cos_o_1 * cos_o_1)));
-    let _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    let _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    let _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
-    if (_e40 <= cos_e_1) {
+    let _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    if (_e8.x <= cos_e_1) {
         return 0f;
     }
-    imp = ((phi_1 * _e40) / d2_9);
+    imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_9, n_9) > 0f) {
-        let cos_i_1 = -(dot(wi_3, n_9));
-        let _e51 = imp;
-        let _e55 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
-        let _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
-        imp = (_e51 * max(_e56, 0f));
+        let v_9 = (center_3 - p_3);
+        let dist2_3 = dot(v_9, v_9);
+        let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_9);
+        let _e33 = imp;
+        let _e37 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
+        let _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        imp = (_e33 * max(_e40, 0f));
     }
-    let _e60 = imp;
-    return max(_e60, 0f);
+    let _e44 = imp;
+    return max(_e44, 0f);
 }
 
-fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_2: f32, p_3: vec3<f32>, n_10: vec3<f32>, r: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_4: vec3<f32>, n_10: vec3<f32>, r: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
     var local_10: bool;
 
-    let _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
-    let _e11 = cone_cos_toward(center_3, radius_3, p_3, n_10);
+    let _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
+    let _e11 = cone_cos_toward(center_4, radius_4, p_4, n_10);
     if !((_e10 <= 0f)) {
         local_10 = (_e11 <= 0f);
     } else {
@@ -606,7 +601,7 @@ fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec
     if _e20 {
         return 0f;
     }
-    let _e22 = cone_cos_toward(center_3, radius_3, p_3, r);
+    let _e22 = cone_cos_toward(center_4, radius_4, p_4, r);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
     let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_3.z);
     let _e39 = smith_root(lobe_3.w, lobe_3.z);
@@ -614,12 +609,12 @@ fn glossy_importance(center_3: vec3<f32>, radius_3: f32, phi_2: f32, axis_2: vec
     return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-fn receiver_importance(center_4: vec3<f32>, radius_4: f32, phi_3: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_3: f32, p_4: vec3<f32>, n_11: vec3<f32>, r_1: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
+fn receiver_importance(center_5: vec3<f32>, radius_5: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, p_5: vec3<f32>, n_11: vec3<f32>, r_1: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
     if (lobe_4.y <= 0f) {
-        let _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_11);
+        let _e13 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_11);
         return _e13;
     }
-    let _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_11, r_1, lobe_4);
+    let _e14 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_11, r_1, lobe_4);
     return _e14;
 }
 
@@ -690,14 +685,14 @@ fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, 
 
     let e1_ = (b_4 - a_4);
     let e2_ = (c_3 - a_4);
-    let p_5 = cross(d_2, e2_);
-    let det = dot(e1_, p_5);
+    let p_6 = cross(d_2, e2_);
+    let det = dot(e1_, p_6);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv_1 = (1f / det);
     let s_6 = (o_1 - a_4);
-    let u_3 = (dot(s_6, p_5) * inv_1);
+    let u_3 = (dot(s_6, p_6) * inv_1);
     if !((u_3 < 0f)) {
         local_12 = (u_3 > 1f);
     } else {
@@ -898,11 +893,11 @@ fn connect(li: u32, x_4: vec3<f32>, n_12: vec3<f32>, ng_1: vec3<f32>, s: f32, w_
     }
     let _e42 = c_4.y;
     let v_11 = (x_4 - _e42);
-    let d2_10 = dot(v_11, v_11);
-    let _e49 = light_intensity(l_8, (v_11 / vec3(sqrt(d2_10))));
+    let d2_9 = dot(v_11, v_11);
+    let _e49 = light_intensity(l_8, (v_11 / vec3(sqrt(d2_9))));
     let _e51 = c_4.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     let _e58 = c_4;
     return _e58;
@@ -1014,13 +1009,13 @@ fn light_bvh_sample(nodes_4: u32, x_7: vec3<f32>, n_15: vec3<f32>, r_4: vec3<f32
 fn light_pdf_selected(li_1: u32, x_8: vec3<f32>, lobe_8: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
     let l_9 = lights[li_1];
     let v_12 = (x_8 - y_1);
-    let d2_11 = dot(v_12, v_12);
+    let d2_10 = dot(v_12, v_12);
     let _e10 = light_normal(l_9);
-    let cos_y_1 = select(0f, dot(_e10, (v_12 / vec3(sqrt(d2_11)))), (d2_11 > 0f));
+    let cos_y_1 = select(0f, dot(_e10, (v_12 / vec3(sqrt(d2_10)))), (d2_10 > 0f));
     let _e19 = range_scale(lobe_8);
     let _e22 = rt2_4[li_1];
     let _e24 = light_area(l_9);
-    let _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_11, _e24, cos_y_1);
+    let _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_10, _e24, cos_y_1);
     return _e25;
 }
 

@@ -288,31 +288,36 @@ float subtended_cos(float dist2_, float r2_2) {
     return ((dist2_ <= r2_2) ? -1.0 : _e5);
 }
 
-float emitter_importance(vec3 center, float radius, float phi, vec3 axis, float cos_o, float cos_e, vec3 p) {
+vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
     vec3 v_2 = (p - center);
     float dist2_1 = dot(v_2, v_2);
     float r2_4 = (radius * radius);
     float d2_6 = max(max(dist2_1, r2_4), MIN_D2_);
     vec3 wi = ((dist2_1 > 0.0) ? (v_2 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
-    float _e27 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    float _e28 = subtended_cos(dist2_1, r2_4);
-    float _e32 = safe_sqrt((1.0 - (_e28 * _e28)));
-    float _e36 = safe_sqrt((1.0 - (cos_o * cos_o)));
-    float _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
-    float _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
-    float _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
-    if ((_e39 <= cos_e)) {
-        return 0.0;
-    }
-    return ((phi * _e39) / d2_6);
+    float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    float _e26 = subtended_cos(dist2_1, r2_4);
+    float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
+    float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
+    float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
+    float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
+    return vec4(_e37, d2_6, _e26, _e30);
 }
 
-float cone_cos_toward(vec3 center_1, float radius_1, vec3 p_1, vec3 d) {
-    vec3 v_3 = (center_1 - p_1);
+float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, float cos_o_1, float cos_e, vec3 p_1) {
+    vec4 _e7 = emitter_cone(center_1, radius_1, axis_1, cos_o_1, p_1);
+    if ((_e7.x <= cos_e)) {
+        return 0.0;
+    }
+    return ((phi * _e7.x) / _e7.y);
+}
+
+float cone_cos_toward(vec3 center_2, float radius_2, vec3 p_2, vec3 d) {
+    vec3 v_3 = (center_2 - p_2);
     float dist2_2 = dot(v_3, v_3);
     vec3 w_6 = ((dist2_2 > 0.0) ? (v_3 / vec3(sqrt(dist2_2))) : vec3(0.0, 0.0, 0.0));
-    float _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
+    float _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
     float cos_i = dot(w_6, d);
     float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
     float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
@@ -320,40 +325,30 @@ float cone_cos_toward(vec3 center_1, float radius_1, vec3 p_1, vec3 d) {
     return _e27;
 }
 
-float light_importance(vec3 center_2, float radius_2, float phi_1, vec3 axis_1, float cos_o_1, float cos_e_1, vec3 p_2, vec3 n_1) {
+float light_importance(vec3 center_3, float radius_3, float phi_1, vec3 axis_2, float cos_o_2, float cos_e_1, vec3 p_3, vec3 n_1) {
     float imp = 0.0;
-    vec3 v_4 = (p_2 - center_2);
-    float dist2_3 = dot(v_4, v_4);
-    float r2_5 = (radius_2 * radius_2);
-    float d2_7 = max(max(dist2_3, r2_5), MIN_D2_);
-    vec3 wi_1 = ((dist2_3 > 0.0) ? (v_4 / vec3(sqrt(dist2_3))) : vec3(0.0, 0.0, 0.0));
-    float cos_w_1 = dot(axis_1, wi_1);
-    float _e28 = safe_sqrt((1.0 - (cos_w_1 * cos_w_1)));
-    float _e29 = subtended_cos(dist2_3, r2_5);
-    float _e33 = safe_sqrt((1.0 - (_e29 * _e29)));
-    float _e37 = safe_sqrt((1.0 - (cos_o_1 * cos_o_1)));
-    float _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    float _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    float _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
-    if ((_e40 <= cos_e_1)) {
+    vec4 _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    if ((_e8.x <= cos_e_1)) {
         return 0.0;
     }
-    imp = ((phi_1 * _e40) / d2_7);
+    imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_1, n_1) > 0.0)) {
-        float cos_i_1 = -(dot(wi_1, n_1));
-        float _e51 = imp;
-        float _e55 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
-        float _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
-        imp = (_e51 * max(_e56, 0.0));
+        vec3 v_4 = (center_3 - p_3);
+        float dist2_3 = dot(v_4, v_4);
+        float cos_i_1 = dot(((dist2_3 > 0.0) ? (v_4 / vec3(sqrt(dist2_3))) : vec3(0.0, 0.0, 0.0)), n_1);
+        float _e33 = imp;
+        float _e37 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
+        float _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        imp = (_e33 * max(_e40, 0.0));
     }
-    float _e60 = imp;
-    return max(_e60, 0.0);
+    float _e44 = imp;
+    return max(_e44, 0.0);
 }
 
-float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_2, vec3 r_2, vec4 lobe_3) {
+float glossy_importance(vec3 center_4, float radius_4, float phi_2, vec3 axis_3, float cos_o_3, float cos_e_2, vec3 p_4, vec3 n_2, vec3 r_2, vec4 lobe_3) {
     bool local_4 = false;
-    float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
-    float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_2);
+    float _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
+    float _e11 = cone_cos_toward(center_4, radius_4, p_4, n_2);
     if (!((_e10 <= 0.0))) {
         local_4 = (_e11 <= 0.0);
     } else {
@@ -363,7 +358,7 @@ float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2,
     if (_e20) {
         return 0.0;
     }
-    float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    float _e22 = cone_cos_toward(center_4, radius_4, p_4, r_2);
     float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
     float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
     float _e39 = smith_root(lobe_3.w, lobe_3.z);
@@ -376,14 +371,14 @@ float candidate_weight(float importance, float rt2_2, float d2_4) {
     return (importance * _e3);
 }
 
-float cone_weight(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, float rt2_3, vec3 p_4, vec3 n_3, vec3 r_3, vec4 lobe_4) {
-    vec3 v_5 = (p_4 - center_4);
+float cone_weight(vec3 center_5, float radius_5, float phi_3, vec3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, vec3 p_5, vec3 n_3, vec3 r_3, vec4 lobe_4) {
+    vec3 v_5 = (p_5 - center_5);
     if ((lobe_4.y <= 0.0)) {
-        float _e15 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_3);
+        float _e15 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_3);
         float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_5, v_5));
         return _e19;
     }
-    float _e20 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_3, r_3, lobe_4);
+    float _e20 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_3, r_3, lobe_4);
     float _e22 = candidate_weight(_e20, rt2_3, dot(v_5, v_5));
     return _e22;
 }
@@ -482,11 +477,11 @@ Connection connect(uint li, vec3 x_5, vec3 n_4, vec3 ng_1, float s, float w_res,
     }
     vec3 _e42 = c_1.y;
     vec3 v_6 = (x_5 - _e42);
-    float d2_8 = dot(v_6, v_6);
-    vec3 _e49 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
+    float d2_7 = dot(v_6, v_6);
+    vec3 _e49 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_7))));
     float _e51 = c_1.cos_x;
     float _e54 = _group_1_binding_2_cs[li];
-    float _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
+    float _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
     c_1.e = (_e49 * _e56);
     Connection _e58 = c_1;
     return _e58;
@@ -578,9 +573,9 @@ vec4 unproject_pixel(vec4 c0_, vec4 c1_, vec4 c2_, vec4 c3_, float px, float py,
     }
     float x_9 = ((((px + 0.5) / width) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
-    vec4 p_5 = ((((c0_ * x_9) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
-    if ((abs(p_5.w) > 0.0)) {
-        return vec4((p_5.x / p_5.w), (p_5.y / p_5.w), (p_5.z / p_5.w), 1.0);
+    vec4 p_6 = ((((c0_ * x_9) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    if ((abs(p_6.w) > 0.0)) {
+        return vec4((p_6.x / p_6.w), (p_6.y / p_6.w), (p_6.z / p_6.w), 1.0);
     }
     return vec4(0.0, 0.0, 0.0, 0.0);
 }

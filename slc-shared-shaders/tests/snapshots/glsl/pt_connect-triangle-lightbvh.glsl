@@ -517,31 +517,36 @@ float subtended_cos(float dist2_, float r2_2) {
     return ((dist2_ <= r2_2) ? -1.0 : _e5);
 }
 
-float emitter_importance(vec3 center, float radius, float phi, vec3 axis, float cos_o, float cos_e, vec3 p) {
+vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
     vec3 v_7 = (p - center);
     float dist2_1 = dot(v_7, v_7);
     float r2_4 = (radius * radius);
     float d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
     vec3 wi_2 = ((dist2_1 > 0.0) ? (v_7 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi_2);
-    float _e27 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    float _e28 = subtended_cos(dist2_1, r2_4);
-    float _e32 = safe_sqrt((1.0 - (_e28 * _e28)));
-    float _e36 = safe_sqrt((1.0 - (cos_o * cos_o)));
-    float _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
-    float _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
-    float _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
-    if ((_e39 <= cos_e)) {
-        return 0.0;
-    }
-    return ((phi * _e39) / d2_8);
+    float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    float _e26 = subtended_cos(dist2_1, r2_4);
+    float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
+    float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
+    float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
+    float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
+    return vec4(_e37, d2_8, _e26, _e30);
 }
 
-float cone_cos_toward(vec3 center_1, float radius_1, vec3 p_1, vec3 d) {
-    vec3 v_8 = (center_1 - p_1);
+float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, float cos_o_1, float cos_e, vec3 p_1) {
+    vec4 _e7 = emitter_cone(center_1, radius_1, axis_1, cos_o_1, p_1);
+    if ((_e7.x <= cos_e)) {
+        return 0.0;
+    }
+    return ((phi * _e7.x) / _e7.y);
+}
+
+float cone_cos_toward(vec3 center_2, float radius_2, vec3 p_2, vec3 d) {
+    vec3 v_8 = (center_2 - p_2);
     float dist2_2 = dot(v_8, v_8);
     vec3 w_6 = ((dist2_2 > 0.0) ? (v_8 / vec3(sqrt(dist2_2))) : vec3(0.0, 0.0, 0.0));
-    float _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
+    float _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
     float cos_i = dot(w_6, d);
     float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
     float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
@@ -549,40 +554,30 @@ float cone_cos_toward(vec3 center_1, float radius_1, vec3 p_1, vec3 d) {
     return _e27;
 }
 
-float light_importance(vec3 center_2, float radius_2, float phi_1, vec3 axis_1, float cos_o_1, float cos_e_1, vec3 p_2, vec3 n_9) {
+float light_importance(vec3 center_3, float radius_3, float phi_1, vec3 axis_2, float cos_o_2, float cos_e_1, vec3 p_3, vec3 n_9) {
     float imp = 0.0;
-    vec3 v_9 = (p_2 - center_2);
-    float dist2_3 = dot(v_9, v_9);
-    float r2_5 = (radius_2 * radius_2);
-    float d2_9 = max(max(dist2_3, r2_5), MIN_D2_);
-    vec3 wi_3 = ((dist2_3 > 0.0) ? (v_9 / vec3(sqrt(dist2_3))) : vec3(0.0, 0.0, 0.0));
-    float cos_w_1 = dot(axis_1, wi_3);
-    float _e28 = safe_sqrt((1.0 - (cos_w_1 * cos_w_1)));
-    float _e29 = subtended_cos(dist2_3, r2_5);
-    float _e33 = safe_sqrt((1.0 - (_e29 * _e29)));
-    float _e37 = safe_sqrt((1.0 - (cos_o_1 * cos_o_1)));
-    float _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    float _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    float _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
-    if ((_e40 <= cos_e_1)) {
+    vec4 _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    if ((_e8.x <= cos_e_1)) {
         return 0.0;
     }
-    imp = ((phi_1 * _e40) / d2_9);
+    imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_9, n_9) > 0.0)) {
-        float cos_i_1 = -(dot(wi_3, n_9));
-        float _e51 = imp;
-        float _e55 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
-        float _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
-        imp = (_e51 * max(_e56, 0.0));
+        vec3 v_9 = (center_3 - p_3);
+        float dist2_3 = dot(v_9, v_9);
+        float cos_i_1 = dot(((dist2_3 > 0.0) ? (v_9 / vec3(sqrt(dist2_3))) : vec3(0.0, 0.0, 0.0)), n_9);
+        float _e33 = imp;
+        float _e37 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
+        float _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        imp = (_e33 * max(_e40, 0.0));
     }
-    float _e60 = imp;
-    return max(_e60, 0.0);
+    float _e44 = imp;
+    return max(_e44, 0.0);
 }
 
-float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2, float cos_o_2, float cos_e_2, vec3 p_3, vec3 n_10, vec3 r, vec4 lobe_3) {
+float glossy_importance(vec3 center_4, float radius_4, float phi_2, vec3 axis_3, float cos_o_3, float cos_e_2, vec3 p_4, vec3 n_10, vec3 r, vec4 lobe_3) {
     bool local_10 = false;
-    float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
-    float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_10);
+    float _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
+    float _e11 = cone_cos_toward(center_4, radius_4, p_4, n_10);
     if (!((_e10 <= 0.0))) {
         local_10 = (_e11 <= 0.0);
     } else {
@@ -592,7 +587,7 @@ float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2,
     if (_e20) {
         return 0.0;
     }
-    float _e22 = cone_cos_toward(center_3, radius_3, p_3, r);
+    float _e22 = cone_cos_toward(center_4, radius_4, p_4, r);
     float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
     float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
     float _e39 = smith_root(lobe_3.w, lobe_3.z);
@@ -600,12 +595,12 @@ float glossy_importance(vec3 center_3, float radius_3, float phi_2, vec3 axis_2,
     return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-float receiver_importance(vec3 center_4, float radius_4, float phi_3, vec3 axis_3, float cos_o_3, float cos_e_3, vec3 p_4, vec3 n_11, vec3 r_1, vec4 lobe_4) {
+float receiver_importance(vec3 center_5, float radius_5, float phi_3, vec3 axis_4, float cos_o_4, float cos_e_3, vec3 p_5, vec3 n_11, vec3 r_1, vec4 lobe_4) {
     if ((lobe_4.y <= 0.0)) {
-        float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_11);
+        float _e13 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_11);
         return _e13;
     }
-    float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_11, r_1, lobe_4);
+    float _e14 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_11, r_1, lobe_4);
     return _e14;
 }
 
@@ -674,14 +669,14 @@ float ray_triangle(vec3 o_1, vec3 d_2, vec3 a_4, vec3 b_4, vec3 c_3, float t_min
     bool local_14 = false;
     vec3 e1_ = (b_4 - a_4);
     vec3 e2_ = (c_3 - a_4);
-    vec3 p_5 = cross(d_2, e2_);
-    float det = dot(e1_, p_5);
+    vec3 p_6 = cross(d_2, e2_);
+    float det = dot(e1_, p_6);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
     vec3 s_6 = (o_1 - a_4);
-    float u_3 = (dot(s_6, p_5) * inv_1);
+    float u_3 = (dot(s_6, p_6) * inv_1);
     if (!((u_3 < 0.0))) {
         local_12 = (u_3 > 1.0);
     } else {
@@ -881,11 +876,11 @@ Connection connect(uint li, vec3 x_4, vec3 n_12, vec3 ng_1, float s, float w_res
     }
     vec3 _e42 = c_4.y;
     vec3 v_11 = (x_4 - _e42);
-    float d2_10 = dot(v_11, v_11);
-    vec3 _e49 = light_intensity(l_8, (v_11 / vec3(sqrt(d2_10))));
+    float d2_9 = dot(v_11, v_11);
+    vec3 _e49 = light_intensity(l_8, (v_11 / vec3(sqrt(d2_9))));
     float _e51 = c_4.cos_x;
     float _e54 = _group_0_binding_3_cs[li];
-    float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
+    float _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     Connection _e58 = c_4;
     return _e58;
@@ -995,13 +990,13 @@ BvhPick light_bvh_sample(uint nodes_4, vec3 x_7, vec3 n_15, vec3 r_4, vec4 lobe_
 float light_pdf_selected(uint li_1, vec3 x_8, vec4 lobe_8, vec3 y_1, float sel) {
     GpuLight l_9 = _group_0_binding_2_cs[li_1];
     vec3 v_12 = (x_8 - y_1);
-    float d2_11 = dot(v_12, v_12);
+    float d2_10 = dot(v_12, v_12);
     vec3 _e10 = light_normal(l_9);
-    float cos_y_1 = ((d2_11 > 0.0) ? dot(_e10, (v_12 / vec3(sqrt(d2_11)))) : 0.0);
+    float cos_y_1 = ((d2_10 > 0.0) ? dot(_e10, (v_12 / vec3(sqrt(d2_10)))) : 0.0);
     float _e19 = range_scale(lobe_8);
     float _e22 = _group_0_binding_3_cs[li_1];
     float _e24 = light_area(l_9);
-    float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_11, _e24, cos_y_1);
+    float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_10, _e24, cos_y_1);
     return _e25;
 }
 

@@ -452,7 +452,7 @@ float subtended_cos(float dist2_, float r2_2)
     return ((dist2_ <= r2_2) ? -1.0 : _e5);
 }
 
-float emitter_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p)
+float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, float3 p)
 {
     float3 v_5 = (p - center_);
     float dist2_1 = dot(v_5, v_5);
@@ -460,25 +460,31 @@ float emitter_importance(float3 center_, float radius, float phi, float3 axis, f
     float d2_6 = max(max(dist2_1, r2_4), MIN_D2_);
     float3 wi = ((dist2_1 > 0.0) ? (v_5 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
-    const float _e27 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e28 = subtended_cos(dist2_1, r2_4);
-    const float _e32 = safe_sqrt((1.0 - (_e28 * _e28)));
-    const float _e36 = safe_sqrt((1.0 - (cos_o * cos_o)));
-    const float _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
-    const float _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
-    const float _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
-    if ((_e39 <= cos_e)) {
-        return 0.0;
-    }
-    return ((phi * _e39) / d2_6);
+    const float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    const float _e26 = subtended_cos(dist2_1, r2_4);
+    const float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
+    const float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    const float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
+    const float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
+    const float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
+    return float4(_e37, d2_6, _e26, _e30);
 }
 
-float cone_cos_toward(float3 center_1, float radius_1, float3 p_1, float3 d)
+float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis_1, float cos_o_1, float cos_e, float3 p_1)
 {
-    float3 v_6 = (center_1 - p_1);
+    const float4 _e7 = emitter_cone(center_1, radius_1, axis_1, cos_o_1, p_1);
+    if ((_e7.x <= cos_e)) {
+        return 0.0;
+    }
+    return ((phi * _e7.x) / _e7.y);
+}
+
+float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d)
+{
+    float3 v_6 = (center_2 - p_2);
     float dist2_2 = dot(v_6, v_6);
     float3 w_7 = ((dist2_2 > 0.0) ? (v_6 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0));
-    const float _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
+    const float _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
     float cos_i = dot(w_7, d);
     const float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
     const float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
@@ -486,44 +492,34 @@ float cone_cos_toward(float3 center_1, float radius_1, float3 p_1, float3 d)
     return _e27;
 }
 
-float light_importance(float3 center_2, float radius_2, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float3 p_2, float3 n_4)
+float light_importance(float3 center_3, float radius_3, float phi_1, float3 axis_2, float cos_o_2, float cos_e_1, float3 p_3, float3 n_4)
 {
     float imp = (float)0;
 
-    float3 v_7 = (p_2 - center_2);
-    float dist2_3 = dot(v_7, v_7);
-    float r2_5 = (radius_2 * radius_2);
-    float d2_7 = max(max(dist2_3, r2_5), MIN_D2_);
-    float3 wi_1 = ((dist2_3 > 0.0) ? (v_7 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0));
-    float cos_w_1 = dot(axis_1, wi_1);
-    const float _e28 = safe_sqrt((1.0 - (cos_w_1 * cos_w_1)));
-    const float _e29 = subtended_cos(dist2_3, r2_5);
-    const float _e33 = safe_sqrt((1.0 - (_e29 * _e29)));
-    const float _e37 = safe_sqrt((1.0 - (cos_o_1 * cos_o_1)));
-    const float _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    const float _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    const float _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
-    if ((_e40 <= cos_e_1)) {
+    const float4 _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    if ((_e8.x <= cos_e_1)) {
         return 0.0;
     }
-    imp = ((phi_1 * _e40) / d2_7);
+    imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_4, n_4) > 0.0)) {
-        float cos_i_1 = -(dot(wi_1, n_4));
-        float _e51 = imp;
-        const float _e55 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
-        const float _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
-        imp = (_e51 * max(_e56, 0.0));
+        float3 v_7 = (center_3 - p_3);
+        float dist2_3 = dot(v_7, v_7);
+        float cos_i_1 = dot(((dist2_3 > 0.0) ? (v_7 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0)), n_4);
+        float _e33 = imp;
+        const float _e37 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
+        const float _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        imp = (_e33 * max(_e40, 0.0));
     }
-    float _e60 = imp;
-    return max(_e60, 0.0);
+    float _e44 = imp;
+    return max(_e44, 0.0);
 }
 
-float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_5, float3 r_2, float4 lobe_3)
+float glossy_importance(float3 center_4, float radius_4, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_4, float3 n_5, float3 r_2, float4 lobe_3)
 {
     bool local_9 = (bool)0;
 
-    const float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
-    const float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_5);
+    const float _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
+    const float _e11 = cone_cos_toward(center_4, radius_4, p_4, n_5);
     if (!((_e10 <= 0.0))) {
         local_9 = (_e11 <= 0.0);
     } else {
@@ -533,7 +529,7 @@ float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axi
     if (_e20) {
         return 0.0;
     }
-    const float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    const float _e22 = cone_cos_toward(center_4, radius_4, p_4, r_2);
     const float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
     const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
     const float _e39 = smith_root(lobe_3.w, lobe_3.z);
@@ -547,15 +543,15 @@ float candidate_weight(float importance, float rt2_2, float d2_4)
     return (importance * _e3);
 }
 
-float cone_weight(float3 center_4, float radius_4, float phi_3, float3 axis_3, float cos_o_3, float cos_e_3, float rt2_3, float3 p_4, float3 n_6, float3 r_3, float4 lobe_4)
+float cone_weight(float3 center_5, float radius_5, float phi_3, float3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, float3 p_5, float3 n_6, float3 r_3, float4 lobe_4)
 {
-    float3 v_8 = (p_4 - center_4);
+    float3 v_8 = (p_5 - center_5);
     if ((lobe_4.y <= 0.0)) {
-        const float _e15 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6);
+        const float _e15 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_6);
         const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_8, v_8));
         return _e19;
     }
-    const float _e20 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6, r_3, lobe_4);
+    const float _e20 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_6, r_3, lobe_4);
     const float _e22 = candidate_weight(_e20, rt2_3, dot(v_8, v_8));
     return _e22;
 }
@@ -720,11 +716,11 @@ Connection connect(uint li, float3 x_5, float3 n_7, float3 ng_1, float s, float 
     }
     float3 _e42 = c_4.y;
     float3 v_9 = (x_5 - _e42);
-    float d2_8 = dot(v_9, v_9);
-    const float3 _e49 = light_intensity(l_4, (v_9 / (sqrt(d2_8)).xxx));
+    float d2_7 = dot(v_9, v_9);
+    const float3 _e49 = light_intensity(l_4, (v_9 / (sqrt(d2_7)).xxx));
     float _e51 = c_4.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     Connection _e58 = c_4;
     const Connection connection_1 = _e58;
@@ -836,8 +832,8 @@ WeightedPicks bsh_weighted_collect(float3 x_7, float3 n_9, float3 r_5, float4 lo
 
 float4 surface_at(int2 texel)
 {
-    float4 p_5 = position_tex.Load(int3(texel, int(0)));
-    return ((p_5.w > 0.0) ? float4(p_5.xyz, 1.0) : (0.0).xxxx);
+    float4 p_6 = position_tex.Load(int3(texel, int(0)));
+    return ((p_6.w > 0.0) ? float4(p_6.xyz, 1.0) : (0.0).xxxx);
 }
 
 Shaded shade_pick(uint li_2, float3 x_8, float3 n_10, Material m_1, float s2_, float w_5, float u1_3, float u2_3)

@@ -564,7 +564,7 @@ float subtended_cos(float dist2_, float r2_2)
     return ((dist2_ <= r2_2) ? -1.0 : _e5);
 }
 
-float emitter_importance(float3 center_, float radius, float phi, float3 axis, float cos_o, float cos_e, float3 p)
+float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, float3 p)
 {
     float3 v_7 = (p - center_);
     float dist2_1 = dot(v_7, v_7);
@@ -572,25 +572,31 @@ float emitter_importance(float3 center_, float radius, float phi, float3 axis, f
     float d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
     float3 wi_2 = ((dist2_1 > 0.0) ? (v_7 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi_2);
-    const float _e27 = safe_sqrt((1.0 - (cos_w * cos_w)));
-    const float _e28 = subtended_cos(dist2_1, r2_4);
-    const float _e32 = safe_sqrt((1.0 - (_e28 * _e28)));
-    const float _e36 = safe_sqrt((1.0 - (cos_o * cos_o)));
-    const float _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
-    const float _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
-    const float _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
-    if ((_e39 <= cos_e)) {
-        return 0.0;
-    }
-    return ((phi * _e39) / d2_8);
+    const float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
+    const float _e26 = subtended_cos(dist2_1, r2_4);
+    const float _e30 = safe_sqrt((1.0 - (_e26 * _e26)));
+    const float _e34 = safe_sqrt((1.0 - (cos_o * cos_o)));
+    const float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
+    const float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
+    const float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
+    return float4(_e37, d2_8, _e26, _e30);
 }
 
-float cone_cos_toward(float3 center_1, float radius_1, float3 p_1, float3 d)
+float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis_1, float cos_o_1, float cos_e, float3 p_1)
 {
-    float3 v_8 = (center_1 - p_1);
+    const float4 _e7 = emitter_cone(center_1, radius_1, axis_1, cos_o_1, p_1);
+    if ((_e7.x <= cos_e)) {
+        return 0.0;
+    }
+    return ((phi * _e7.x) / _e7.y);
+}
+
+float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d)
+{
+    float3 v_8 = (center_2 - p_2);
     float dist2_2 = dot(v_8, v_8);
     float3 w_6 = ((dist2_2 > 0.0) ? (v_8 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0));
-    const float _e17 = subtended_cos(dist2_2, (radius_1 * radius_1));
+    const float _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
     float cos_i = dot(w_6, d);
     const float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
     const float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
@@ -598,44 +604,34 @@ float cone_cos_toward(float3 center_1, float radius_1, float3 p_1, float3 d)
     return _e27;
 }
 
-float light_importance(float3 center_2, float radius_2, float phi_1, float3 axis_1, float cos_o_1, float cos_e_1, float3 p_2, float3 n_9)
+float light_importance(float3 center_3, float radius_3, float phi_1, float3 axis_2, float cos_o_2, float cos_e_1, float3 p_3, float3 n_9)
 {
     float imp = (float)0;
 
-    float3 v_9 = (p_2 - center_2);
-    float dist2_3 = dot(v_9, v_9);
-    float r2_5 = (radius_2 * radius_2);
-    float d2_9 = max(max(dist2_3, r2_5), MIN_D2_);
-    float3 wi_3 = ((dist2_3 > 0.0) ? (v_9 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0));
-    float cos_w_1 = dot(axis_1, wi_3);
-    const float _e28 = safe_sqrt((1.0 - (cos_w_1 * cos_w_1)));
-    const float _e29 = subtended_cos(dist2_3, r2_5);
-    const float _e33 = safe_sqrt((1.0 - (_e29 * _e29)));
-    const float _e37 = safe_sqrt((1.0 - (cos_o_1 * cos_o_1)));
-    const float _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    const float _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    const float _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
-    if ((_e40 <= cos_e_1)) {
+    const float4 _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    if ((_e8.x <= cos_e_1)) {
         return 0.0;
     }
-    imp = ((phi_1 * _e40) / d2_9);
+    imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_9, n_9) > 0.0)) {
-        float cos_i_1 = -(dot(wi_3, n_9));
-        float _e51 = imp;
-        const float _e55 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
-        const float _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
-        imp = (_e51 * max(_e56, 0.0));
+        float3 v_9 = (center_3 - p_3);
+        float dist2_3 = dot(v_9, v_9);
+        float cos_i_1 = dot(((dist2_3 > 0.0) ? (v_9 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0)), n_9);
+        float _e33 = imp;
+        const float _e37 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
+        const float _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        imp = (_e33 * max(_e40, 0.0));
     }
-    float _e60 = imp;
-    return max(_e60, 0.0);
+    float _e44 = imp;
+    return max(_e44, 0.0);
 }
 
-float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axis_2, float cos_o_2, float cos_e_2, float3 p_3, float3 n_10, float3 r, float4 lobe_3)
+float glossy_importance(float3 center_4, float radius_4, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_4, float3 n_10, float3 r, float4 lobe_3)
 {
     bool local_10 = (bool)0;
 
-    const float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
-    const float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_10);
+    const float _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
+    const float _e11 = cone_cos_toward(center_4, radius_4, p_4, n_10);
     if (!((_e10 <= 0.0))) {
         local_10 = (_e11 <= 0.0);
     } else {
@@ -645,7 +641,7 @@ float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axi
     if (_e20) {
         return 0.0;
     }
-    const float _e22 = cone_cos_toward(center_3, radius_3, p_3, r);
+    const float _e22 = cone_cos_toward(center_4, radius_4, p_4, r);
     const float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
     const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
     const float _e39 = smith_root(lobe_3.w, lobe_3.z);
@@ -653,13 +649,13 @@ float glossy_importance(float3 center_3, float radius_3, float phi_2, float3 axi
     return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-float receiver_importance(float3 center_4, float radius_4, float phi_3, float3 axis_3, float cos_o_3, float cos_e_3, float3 p_4, float3 n_11, float3 r_1, float4 lobe_4)
+float receiver_importance(float3 center_5, float radius_5, float phi_3, float3 axis_4, float cos_o_4, float cos_e_3, float3 p_5, float3 n_11, float3 r_1, float4 lobe_4)
 {
     if ((lobe_4.y <= 0.0)) {
-        const float _e13 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_11);
+        const float _e13 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_11);
         return _e13;
     }
-    const float _e14 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_11, r_1, lobe_4);
+    const float _e14 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_11, r_1, lobe_4);
     return _e14;
 }
 
@@ -738,14 +734,14 @@ float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_4, float3 c_3, f
 
     float3 e1_ = (b_4 - a_4);
     float3 e2_ = (c_3 - a_4);
-    float3 p_5 = cross(d_2, e2_);
-    float det = dot(e1_, p_5);
+    float3 p_6 = cross(d_2, e2_);
+    float det = dot(e1_, p_6);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
     float3 s_6 = (o_1 - a_4);
-    float u_3 = (dot(s_6, p_5) * inv_1);
+    float u_3 = (dot(s_6, p_6) * inv_1);
     if (!((u_3 < 0.0))) {
         local_12 = (u_3 > 1.0);
     } else {
@@ -1006,11 +1002,11 @@ Connection connect(uint li, float3 x_4, float3 n_12, float3 ng_1, float s, float
     }
     float3 _e42 = c_4.y;
     float3 v_11 = (x_4 - _e42);
-    float d2_10 = dot(v_11, v_11);
-    const float3 _e49 = light_intensity(l_8, (v_11 / (sqrt(d2_10)).xxx));
+    float d2_9 = dot(v_11, v_11);
+    const float3 _e49 = light_intensity(l_8, (v_11 / (sqrt(d2_9)).xxx));
     float _e51 = c_4.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     Connection _e58 = c_4;
     const Connection connection_1 = _e58;
@@ -1159,13 +1155,13 @@ float light_pdf_selected(uint li_1, float3 x_8, float4 lobe_8, float3 y_1, float
 {
     GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_1*64+0)), asuint(lights.Load(li_1*64+12)), asfloat(lights.Load3(li_1*64+16)), asfloat(lights.Load(li_1*64+28)), asfloat(lights.Load3(li_1*64+32)), asfloat(lights.Load(li_1*64+44)), asfloat(lights.Load3(li_1*64+48)), asuint(lights.Load(li_1*64+60)));
     float3 v_12 = (x_8 - y_1);
-    float d2_11 = dot(v_12, v_12);
+    float d2_10 = dot(v_12, v_12);
     const float3 _e10 = light_normal(l_9);
-    float cos_y_1 = ((d2_11 > 0.0) ? dot(_e10, (v_12 / (sqrt(d2_11)).xxx)) : 0.0);
+    float cos_y_1 = ((d2_10 > 0.0) ? dot(_e10, (v_12 / (sqrt(d2_10)).xxx)) : 0.0);
     const float _e19 = range_scale(lobe_8);
     float _e22 = asfloat(rt2_4.Load(li_1*4));
     const float _e24 = light_area(l_9);
-    const float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_11, _e24, cos_y_1);
+    const float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_10, _e24, cos_y_1);
     return _e25;
 }
 

@@ -545,13 +545,11 @@ float subtended_cos(
     return (dist2_ <= r2_2) ? -1.0 : _e5;
 }
 
-float emitter_importance(
+metal::float4 emitter_cone(
     metal::float3 center,
     float radius,
-    float phi,
     metal::float3 axis,
     float cos_o,
-    float cos_e,
     metal::float3 p
 ) {
     metal::float3 v_5 = p - center;
@@ -560,29 +558,42 @@ float emitter_importance(
     float d2_6 = metal::max(metal::max(dist2_1, r2_4), MIN_D2_);
     metal::float3 wi = (dist2_1 > 0.0) ? (v_5 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
-    float _e27 = safe_sqrt(1.0 - (cos_w * cos_w));
-    float _e28 = subtended_cos(dist2_1, r2_4);
-    float _e32 = safe_sqrt(1.0 - (_e28 * _e28));
-    float _e36 = safe_sqrt(1.0 - (cos_o * cos_o));
-    float _e37 = cos_sub_clamped(_e27, cos_w, _e36, cos_o);
-    float _e38 = sin_sub_clamped(_e27, cos_w, _e36, cos_o);
-    float _e39 = cos_sub_clamped(_e38, _e37, _e32, _e28);
-    if (_e39 <= cos_e) {
+    float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
+    float _e26 = subtended_cos(dist2_1, r2_4);
+    float _e30 = safe_sqrt(1.0 - (_e26 * _e26));
+    float _e34 = safe_sqrt(1.0 - (cos_o * cos_o));
+    float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
+    float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
+    float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
+    return metal::float4(_e37, d2_6, _e26, _e30);
+}
+
+float emitter_importance(
+    metal::float3 center_1,
+    float radius_1,
+    float phi,
+    metal::float3 axis_1,
+    float cos_o_1,
+    float cos_e,
+    metal::float3 p_1
+) {
+    metal::float4 _e7 = emitter_cone(center_1, radius_1, axis_1, cos_o_1, p_1);
+    if (_e7.x <= cos_e) {
         return 0.0;
     }
-    return (phi * _e39) / d2_6;
+    return (phi * _e7.x) / _e7.y;
 }
 
 float cone_cos_toward(
-    metal::float3 center_1,
-    float radius_1,
-    metal::float3 p_1,
+    metal::float3 center_2,
+    float radius_2,
+    metal::float3 p_2,
     metal::float3 d
 ) {
-    metal::float3 v_6 = center_1 - p_1;
+    metal::float3 v_6 = center_2 - p_2;
     float dist2_2 = metal::dot(v_6, v_6);
     metal::float3 w_7 = (dist2_2 > 0.0) ? (v_6 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0);
-    float _e17 = subtended_cos(dist2_2, radius_1 * radius_1);
+    float _e17 = subtended_cos(dist2_2, radius_2 * radius_2);
     float cos_i = metal::dot(w_7, d);
     float _e22 = safe_sqrt(1.0 - (cos_i * cos_i));
     float _e26 = safe_sqrt(1.0 - (_e17 * _e17));
@@ -591,59 +602,49 @@ float cone_cos_toward(
 }
 
 float light_importance(
-    metal::float3 center_2,
-    float radius_2,
+    metal::float3 center_3,
+    float radius_3,
     float phi_1,
-    metal::float3 axis_1,
-    float cos_o_1,
+    metal::float3 axis_2,
+    float cos_o_2,
     float cos_e_1,
-    metal::float3 p_2,
+    metal::float3 p_3,
     metal::float3 n_4
 ) {
     float imp = {};
-    metal::float3 v_7 = p_2 - center_2;
-    float dist2_3 = metal::dot(v_7, v_7);
-    float r2_5 = radius_2 * radius_2;
-    float d2_7 = metal::max(metal::max(dist2_3, r2_5), MIN_D2_);
-    metal::float3 wi_1 = (dist2_3 > 0.0) ? (v_7 / metal::float3(metal::sqrt(dist2_3))) : metal::float3(0.0, 0.0, 0.0);
-    float cos_w_1 = metal::dot(axis_1, wi_1);
-    float _e28 = safe_sqrt(1.0 - (cos_w_1 * cos_w_1));
-    float _e29 = subtended_cos(dist2_3, r2_5);
-    float _e33 = safe_sqrt(1.0 - (_e29 * _e29));
-    float _e37 = safe_sqrt(1.0 - (cos_o_1 * cos_o_1));
-    float _e38 = cos_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    float _e39 = sin_sub_clamped(_e28, cos_w_1, _e37, cos_o_1);
-    float _e40 = cos_sub_clamped(_e39, _e38, _e33, _e29);
-    if (_e40 <= cos_e_1) {
+    metal::float4 _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    if (_e8.x <= cos_e_1) {
         return 0.0;
     }
-    imp = (phi_1 * _e40) / d2_7;
+    imp = (phi_1 * _e8.x) / _e8.y;
     if (metal::dot(n_4, n_4) > 0.0) {
-        float cos_i_1 = -(metal::dot(wi_1, n_4));
-        float _e51 = imp;
-        float _e55 = safe_sqrt(1.0 - (cos_i_1 * cos_i_1));
-        float _e56 = cos_sub_clamped(_e55, cos_i_1, _e33, _e29);
-        imp = _e51 * metal::max(_e56, 0.0);
+        metal::float3 v_7 = center_3 - p_3;
+        float dist2_3 = metal::dot(v_7, v_7);
+        float cos_i_1 = metal::dot((dist2_3 > 0.0) ? (v_7 / metal::float3(metal::sqrt(dist2_3))) : metal::float3(0.0, 0.0, 0.0), n_4);
+        float _e33 = imp;
+        float _e37 = safe_sqrt(1.0 - (cos_i_1 * cos_i_1));
+        float _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        imp = _e33 * metal::max(_e40, 0.0);
     }
-    float _e60 = imp;
-    return metal::max(_e60, 0.0);
+    float _e44 = imp;
+    return metal::max(_e44, 0.0);
 }
 
 float glossy_importance(
-    metal::float3 center_3,
-    float radius_3,
+    metal::float3 center_4,
+    float radius_4,
     float phi_2,
-    metal::float3 axis_2,
-    float cos_o_2,
+    metal::float3 axis_3,
+    float cos_o_3,
     float cos_e_2,
-    metal::float3 p_3,
+    metal::float3 p_4,
     metal::float3 n_5,
     metal::float3 r_2,
     metal::float4 lobe_3
 ) {
     bool local_9 = {};
-    float _e10 = emitter_importance(center_3, radius_3, phi_2, axis_2, cos_o_2, cos_e_2, p_3);
-    float _e11 = cone_cos_toward(center_3, radius_3, p_3, n_5);
+    float _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
+    float _e11 = cone_cos_toward(center_4, radius_4, p_4, n_5);
     if (!((_e10 <= 0.0))) {
         local_9 = _e11 <= 0.0;
     } else {
@@ -653,7 +654,7 @@ float glossy_importance(
     if (_e20) {
         return 0.0;
     }
-    float _e22 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    float _e22 = cone_cos_toward(center_4, radius_4, p_4, r_2);
     float _e27 = safe_sqrt(0.5 + (0.5 * _e22));
     float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_3.z);
     float _e39 = smith_root(lobe_3.w, lobe_3.z);
@@ -671,25 +672,25 @@ float candidate_weight(
 }
 
 float cone_weight(
-    metal::float3 center_4,
-    float radius_4,
+    metal::float3 center_5,
+    float radius_5,
     float phi_3,
-    metal::float3 axis_3,
-    float cos_o_3,
+    metal::float3 axis_4,
+    float cos_o_4,
     float cos_e_3,
     float rt2_3,
-    metal::float3 p_4,
+    metal::float3 p_5,
     metal::float3 n_6,
     metal::float3 r_3,
     metal::float4 lobe_4
 ) {
-    metal::float3 v_8 = p_4 - center_4;
+    metal::float3 v_8 = p_5 - center_5;
     if (lobe_4.y <= 0.0) {
-        float _e15 = light_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6);
+        float _e15 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_6);
         float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_8, v_8));
         return _e19;
     }
-    float _e20 = glossy_importance(center_4, radius_4, phi_3, axis_3, cos_o_3, cos_e_3, p_4, n_6, r_3, lobe_4);
+    float _e20 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_6, r_3, lobe_4);
     float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_8, v_8));
     return _e22;
 }
@@ -857,11 +858,11 @@ Connection connect(
     }
     metal::float3 _e42 = c_4.y;
     metal::float3 v_9 = x_5 - _e42;
-    float d2_8 = metal::dot(v_9, v_9);
-    metal::float3 _e49 = light_intensity(l_4, v_9 / metal::float3(metal::sqrt(d2_8)));
+    float d2_7 = metal::dot(v_9, v_9);
+    metal::float3 _e49 = light_intensity(l_4, v_9 / metal::float3(metal::sqrt(d2_7)));
     float _e51 = c_4.cos_x;
     float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_8, s * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_7, s * _e54, w_res);
     c_4.e = _e49 * _e56;
     Connection _e58 = c_4;
     return _e58;
@@ -977,8 +978,8 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_5 = position_tex.read(metal::uint2(texel), 0);
-    return (p_5.w > 0.0) ? metal::float4(p_5.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_6 = position_tex.read(metal::uint2(texel), 0);
+    return (p_6.w > 0.0) ? metal::float4(p_6.xyz, 1.0) : metal::float4(0.0);
 }
 
 Shaded shade_pick(
