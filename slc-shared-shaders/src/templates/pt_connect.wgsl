@@ -15,18 +15,7 @@
 // The light strategy's pdf includes the RR probability and the reservoir's
 // selection probability (talk: "Multiple importance sampling").
 
-@group(0) @binding(0) var<uniform> params: ShadeParams;
-@group(0) @binding(1) var<storage, read> vertices: array<GpuPathVertex>;
-@group(0) @binding(2) var<storage, read> lights: array<GpuLight>;
-@group(0) @binding(3) var<storage, read> rt2: array<f32>;
-@group(0) @binding(4) var<storage, read> r2: array<f32>;
-@group(0) @binding(5) var<storage, read> bsh_nodes: array<BshNode>;
-@group(0) @binding(6) var<storage, read> geo_nodes: array<GpuGeoNode>;
-@group(0) @binding(7) var<storage, read> geo_tris: array<GpuTriangle>;
-@group(0) @binding(8) var<storage, read> materials: array<GpuMaterial>;
-@group(0) @binding(9) var<storage, read_write> radiance: array<vec4f>;
-@group(0) @binding(10) var<storage, read_write> candidates: array<u32>;
-@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+{{ bindings }}
 
 /// One pick connected to the vertex `x` (material `m` seen from `wo`,
 /// mirror direction `r`, lobe `lobe`): its contribution through the BRDF

@@ -12,21 +12,7 @@ const K: u32 = {{ k }}u;
 // the next ray and plays Russian roulette on path length from the third
 // bounce, as the CPU path tracer does.
 
-@group(0) @binding(0) var<uniform> params: PtParams;
-@group(0) @binding(1) var<storage, read> lights: array<GpuLight>;
-@group(0) @binding(2) var<storage, read> rt2: array<f32>;
-@group(0) @binding(3) var<storage, read> bsh_nodes: array<BshNode>;
-@group(0) @binding(4) var<storage, read> light_leaf: array<u32>;
-@group(0) @binding(5) var<storage, read> geo_nodes: array<GpuGeoNode>;
-@group(0) @binding(6) var<storage, read> geo_tris: array<GpuTriangle>;
-@group(0) @binding(7) var<storage, read> materials: array<GpuMaterial>;
-// Vertex normals, three per triangle in geo_tris order.
-@group(0) @binding(8) var<storage, read> geo_normals: array<vec4f>;
-@group(0) @binding(9) var<storage, read> candidates: array<u32>;
-@group(0) @binding(10) var<storage, read_write> paths: array<GpuPathState>;
-@group(0) @binding(11) var<storage, read_write> vertices: array<GpuPathVertex>;
-@group(0) @binding(12) var<storage, read_write> radiance: array<vec4f>;
-@group(1) @binding(0) var<storage, read> slc_table: array<f32>;
+{{ bindings }}
 
 /// Next uniform in [0, 1) of a path's random state.
 fn next_uniform(state: ptr<function, u32>) -> f32 {

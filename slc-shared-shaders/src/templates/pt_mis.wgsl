@@ -1,6 +1,7 @@
 // MIS of the path tracer's two strategies ({{ heuristic }} heuristic): the
 // light strategy (BSH + {{ k }}-slot reservoir + RR) against BSDF sampling.
-// Needs bindings `lights` and `rt2`. A receiver is `x`, its shading normal
+// Needs bindings `lights`, `rt2`, `power_table`, `light_cones` and
+// `light_bvh` (the including kernel declares them from its binding table). A receiver is `x`, its shading normal
 // `n`, the view's mirror direction `r` and its BRDF lobe `lobe`
 // (slc-core's `receiver_lobe`), which weigh the lights of slc-weighted and
 // the light BVH.
@@ -13,10 +14,6 @@ fn mis_weight(pdf_a: f32, pdf_b: f32) -> f32 {
     return mis_balance(pdf_a, pdf_b);
 {% endif %}
 }
-
-@group(1) @binding(1) var<storage, read> power_table: array<vec4f>;
-@group(1) @binding(2) var<storage, read> light_cones: array<GpuLightCone>;
-@group(1) @binding(3) var<storage, read> light_bvh: array<GpuLightBvhNode>;
 
 {% include "light_weight.wgsl" %}
 

@@ -124,11 +124,11 @@ layout(std430) readonly buffer type_4_block_6Compute { float _group_0_binding_3_
 
 layout(std140) uniform ShadeParams_block_7Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_13_block_8Compute { GpuPathVertex _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_12_block_8Compute { GpuPathVertex _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_14_block_9Compute { GpuMaterial _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_13_block_9Compute { GpuMaterial _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_12_block_10Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) buffer type_14_block_10Compute { vec4 _group_0_binding_9_cs[]; };
 
 layout(std430) buffer type_15_block_11Compute { uint _group_0_binding_10_cs[]; };
 

@@ -122,11 +122,11 @@ layout(std430) readonly buffer type_4_block_5Compute { float _group_0_binding_3_
 
 layout(std140) uniform ShadeParams_block_6Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_13_block_7Compute { GpuPathVertex _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_12_block_7Compute { GpuPathVertex _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_14_block_8Compute { GpuMaterial _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_13_block_8Compute { GpuMaterial _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_12_block_9Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) buffer type_14_block_9Compute { vec4 _group_0_binding_9_cs[]; };
 
 layout(std430) buffer type_15_block_10Compute { uint _group_0_binding_10_cs[]; };
 

@@ -120,15 +120,15 @@ layout(std430) readonly buffer type_4_block_3Compute { float _group_0_binding_4_
 
 layout(std430) readonly buffer type_4_block_4Compute { float _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_11_block_5Compute { GpuLightBvhNode _group_1_binding_3_cs[]; };
+layout(std430) readonly buffer type_10_block_5Compute { GpuLightBvhNode _group_1_binding_3_cs[]; };
 
 layout(std140) uniform ShadeParams_block_6Compute { ShadeParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_12_block_7Compute { GpuPathVertex _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_11_block_7Compute { GpuPathVertex _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_13_block_8Compute { GpuMaterial _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_12_block_8Compute { GpuMaterial _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_10_block_9Compute { vec4 _group_0_binding_9_cs[]; };
+layout(std430) buffer type_13_block_9Compute { vec4 _group_0_binding_9_cs[]; };
 
 layout(std430) buffer type_14_block_10Compute { uint _group_0_binding_10_cs[]; };
 

@@ -127,25 +127,25 @@ layout(std430) readonly buffer type_7_block_1Compute { GpuTriangle _group_0_bind
 
 layout(std430) readonly buffer type_4_block_2Compute { float _group_0_binding_2_cs[]; };
 
-layout(std430) readonly buffer type_10_block_3Compute { GpuLight _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_9_block_3Compute { GpuLight _group_0_binding_1_cs[]; };
 
 layout(std140) uniform PtParams_block_4Compute { PtParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_11_block_5Compute { BshNode _group_0_binding_3_cs[]; };
+layout(std430) readonly buffer type_10_block_5Compute { BshNode _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_12_block_6Compute { uint _group_0_binding_4_cs[]; };
+layout(std430) readonly buffer type_11_block_6Compute { uint _group_0_binding_4_cs[]; };
 
-layout(std430) readonly buffer type_13_block_7Compute { GpuMaterial _group_0_binding_7_cs[]; };
+layout(std430) readonly buffer type_12_block_7Compute { GpuMaterial _group_0_binding_7_cs[]; };
 
-layout(std430) readonly buffer type_9_block_8Compute { vec4 _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_13_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
-layout(std430) readonly buffer type_12_block_9Compute { uint _group_0_binding_9_cs[]; };
+layout(std430) readonly buffer type_11_block_9Compute { uint _group_0_binding_9_cs[]; };
 
 layout(std430) buffer type_14_block_10Compute { GpuPathState _group_0_binding_10_cs[]; };
 
 layout(std430) buffer type_15_block_11Compute { GpuPathVertex _group_0_binding_11_cs[]; };
 
-layout(std430) buffer type_9_block_12Compute { vec4 _group_0_binding_12_cs[]; };
+layout(std430) buffer type_13_block_12Compute { vec4 _group_0_binding_12_cs[]; };
 
 
 float to_f32_(uint u) {

@@ -100,10 +100,10 @@ struct Connection {
     float cos_x;
 };
 typedef GpuLight type_11[1];
-typedef metal::float4 type_12[1];
 typedef uint BvhNodes;
-typedef GpuPathVertex type_13[1];
-typedef GpuMaterial type_14[1];
+typedef GpuPathVertex type_12[1];
+typedef GpuMaterial type_13[1];
+typedef metal::float4 type_14[1];
 typedef uint type_15[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
@@ -1344,9 +1344,9 @@ kernel void main_(
 , device type_4 const& r2_2 [[user(fake0)]]
 , device type_4 const& rt2_4 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_13 const& vertices [[user(fake0)]]
-, device type_14 const& materials [[user(fake0)]]
-, device type_12& radiance [[user(fake0)]]
+, device type_12 const& vertices [[user(fake0)]]
+, device type_13 const& materials [[user(fake0)]]
+, device type_14& radiance [[user(fake0)]]
 , device type_15& candidates [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {

@@ -94,15 +94,15 @@ struct Connection {
     float cos_x;
 };
 typedef GpuLight type_9[1];
-typedef metal::float4 type_10[1];
-typedef GpuLightBvhNode type_11[1];
 typedef uint BvhNodes;
+typedef GpuLightBvhNode type_10[1];
 struct BvhPick {
     uint light;
     float pmf;
 };
-typedef GpuPathVertex type_12[1];
-typedef GpuMaterial type_13[1];
+typedef GpuPathVertex type_11[1];
+typedef GpuMaterial type_12[1];
+typedef metal::float4 type_13[1];
 typedef uint type_14[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
@@ -1203,7 +1203,7 @@ float mis_weight(
 GpuLightBvhNode light_bvh_node(
     BvhNodes nodes,
     uint i_1,
-    device type_11 const& light_bvh,
+    device type_10 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightBvhNode _e4 = light_bvh[i_1];
@@ -1212,7 +1212,7 @@ GpuLightBvhNode light_bvh_node(
 
 uint light_bvh_count(
     BvhNodes nodes_1,
-    device type_11 const& light_bvh,
+    device type_10 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     return 1 + (_buffer_sizes.size5 - 0 - 48) / 48;
@@ -1225,7 +1225,7 @@ float bvh_importance(
     metal::float3 n_13,
     metal::float3 r_2,
     metal::float4 lobe_5,
-    device type_11 const& light_bvh,
+    device type_10 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightBvhNode _e6 = light_bvh_node(nodes_2, i_2, light_bvh, _buffer_sizes);
@@ -1240,7 +1240,7 @@ float bvh_first(
     metal::float3 n_14,
     metal::float3 r_3,
     metal::float4 lobe_6,
-    device type_11 const& light_bvh,
+    device type_10 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool local_18 = {};
@@ -1274,7 +1274,7 @@ BvhPick light_bvh_sample(
     metal::float3 r_4,
     metal::float4 lobe_7,
     float u_in,
-    device type_11 const& light_bvh,
+    device type_10 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BvhPick pick = {};
@@ -1410,11 +1410,11 @@ kernel void main_(
 , device type_9 const& lights [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_4 const& rt2_4 [[user(fake0)]]
-, device type_11 const& light_bvh [[user(fake0)]]
+, device type_10 const& light_bvh [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_12 const& vertices [[user(fake0)]]
-, device type_13 const& materials [[user(fake0)]]
-, device type_10& radiance [[user(fake0)]]
+, device type_11 const& vertices [[user(fake0)]]
+, device type_12 const& materials [[user(fake0)]]
+, device type_13& radiance [[user(fake0)]]
 , device type_14& candidates [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {

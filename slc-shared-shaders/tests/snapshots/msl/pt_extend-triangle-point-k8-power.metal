@@ -110,12 +110,12 @@ typedef GpuTriangle type_7[1];
 struct type_8 {
     uint inner[64];
 };
-typedef metal::float4 type_9[1];
 typedef uint BvhNodes;
-typedef GpuLight type_10[1];
-typedef BshNode type_11[1];
-typedef uint type_12[1];
-typedef GpuMaterial type_13[1];
+typedef GpuLight type_9[1];
+typedef BshNode type_10[1];
+typedef uint type_11[1];
+typedef GpuMaterial type_12[1];
+typedef metal::float4 type_13[1];
 typedef GpuPathState type_14[1];
 typedef GpuPathVertex type_15[1];
 constant uint LIGHT_POINT = 0u;
@@ -1064,7 +1064,7 @@ float light_pdf_selected(
     metal::float3 y,
     float sel,
     device type_4 const& rt2_2,
-    device type_10 const& lights,
+    device type_9 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_6 = lights[li_1];
@@ -1089,7 +1089,7 @@ float light_pdf(
     uint nee_1,
     bool in_range_2,
     device type_4 const& rt2_2,
-    device type_10 const& lights,
+    device type_9 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e8 = select_pdf(li_2, x_5, n_14, r_2, lobe_5, nee_1, in_range_2);
@@ -1123,16 +1123,16 @@ kernel void main_(
 , device type_6 const& geo_nodes [[user(fake0)]]
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_4 const& rt2_2 [[user(fake0)]]
-, device type_10 const& lights [[user(fake0)]]
+, device type_9 const& lights [[user(fake0)]]
 , constant PtParams& params [[user(fake0)]]
-, device type_11 const& bsh_nodes [[user(fake0)]]
-, device type_12 const& light_leaf [[user(fake0)]]
-, device type_13 const& materials [[user(fake0)]]
-, device type_9 const& geo_normals [[user(fake0)]]
-, device type_12 const& candidates [[user(fake0)]]
+, device type_10 const& bsh_nodes [[user(fake0)]]
+, device type_11 const& light_leaf [[user(fake0)]]
+, device type_12 const& materials [[user(fake0)]]
+, device type_13 const& geo_normals [[user(fake0)]]
+, device type_11 const& candidates [[user(fake0)]]
 , device type_14& paths [[user(fake0)]]
 , device type_15& vertices [[user(fake0)]]
-, device type_9& radiance [[user(fake0)]]
+, device type_13& radiance [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     GpuPathState st = {};
