@@ -746,6 +746,37 @@ mod tests {
         }
     }
 
+    /// The specular correction leaves the Lambertian part alone: on the
+    /// glossy box, with every method and the denoise, the irradiance, near
+    /// field and kept counts are bit for bit those of the same G-buffer
+    /// without its lobes (the path a Lambertian scene takes, which gives
+    /// main's images byte for byte), and so is every Lambertian pixel of
+    /// the image; the glossy pixels change.
+    #[test]
+    fn specular_correction_leaves_lambertian_pixels_bit_identical() {
+        let scene = Scene::cornell_box_glossy();
+        let ctx = VplContext::new(&scene, 40, 32, 64, None).unwrap();
+        let mut lambert = VplContext::new(&scene, 40, 32, 64, None).unwrap();
+        lambert.inputs.gbuffer.specular.clear();
+        let gb = ctx.gbuffer();
+        for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None, VplMethod::Reference] {
+            let s = VplSettings { method, ..VplSettings::default() };
+            let (a, b) = (ctx.shade(&s).unwrap(), lambert.shade(&s).unwrap());
+            assert!(b.specular.is_empty() && !a.specular.is_empty());
+            assert!(a.irradiance == b.irradiance && a.near == b.near && a.kept == b.kept, "{method:?}");
+            let (ia, ib) = (ctx.finish(a, &s).image, lambert.finish(b, &s).image);
+            let mut changed = 0;
+            for i in 0..ia.data.len() {
+                if gb.specular_at(i).is_none() {
+                    assert_eq!(ia.data[i], ib.data[i], "{method:?}: Lambertian pixel {i}");
+                } else {
+                    changed += (ia.data[i] != ib.data[i]) as usize;
+                }
+            }
+            assert!(changed > 20, "{method:?}: {changed} glossy pixels changed");
+        }
+    }
+
     /// The culled near field is unbiased: its expectation over ξ equals the
     /// unculled near field at every pixel, by stratified quadrature through
     /// the real code (`shade_near` with `fixed_xi` at the midpoints of M
