@@ -13,12 +13,13 @@ use glam::Vec3;
 use rayon::prelude::*;
 use slc_core::ray::face_against;
 use slc_scene::scene::Scene;
-use slc_scene::vpl::GBuffer;
+use slc_scene::vpl::{GBuffer, Specular};
 
 /// Renders the G-buffer at every pixel centre. Its normal is the shading
 /// normal (interpolated vertex normals where the scene has them), flipped to
 /// face the camera; the second vector holds each pixel's geometric normal on
-/// the same side (for ray offsets).
+/// the same side (for ray offsets). Its specular lobes are filled only when
+/// some material of the scene has one.
 pub fn render_gbuffer(scene: &Scene, geo: &Geometry, width: u32, height: u32) -> (GBuffer, Vec<Vec3>) {
     let mut gb = GBuffer { width, height, ..GBuffer::default() };
     let mut geometric = Vec::new();
@@ -62,6 +63,21 @@ pub fn render_gbuffer_into(scene: &Scene, geo: &Geometry, gb: &mut GBuffer, geom
         type Buffers = ((Vec<Vec3>, Vec<Vec3>), ((Vec<Vec3>, Vec<Vec3>), (Vec<f32>, Vec<Vec3>)));
         let ((position, normal), ((albedo, emission), (depth, geo_n))): Buffers = (0..n).into_par_iter().map(texel).unzip();
         (gb.position, gb.normal, gb.albedo, gb.emission, gb.depth, *geometric) = (position, normal, albedo, emission, depth, geo_n);
+    }
+    // Each pixel's specular lobe, only where the scene has one (a
+    // Lambertian scene's G-buffer holds none).
+    if scene.materials.iter().any(|m| m.has_specular()) {
+        let lobe = |i: usize| match hits.at(i % w, i / w).1 {
+            u32::MAX => Specular::default(),
+            tri => Specular::of(&scene.materials[scene.material_of[tri as usize] as usize]),
+        };
+        if gb.specular.len() == n {
+            gb.specular.par_iter_mut().enumerate().for_each(|(i, s)| *s = lobe(i));
+        } else {
+            gb.specular = (0..n).into_par_iter().map(lobe).collect();
+        }
+    } else {
+        gb.specular.clear();
     }
 }
 

@@ -193,6 +193,17 @@ pub struct Shaded {
     /// leaves alone (it filters `irradiance − near`, the interleaved far
     /// field); empty when there is none or `irradiance` is already denoised.
     pub near: Vec<Vec3>,
+    /// The specular correction at every pixel with a specular lobe
+    /// ([`GBuffer::specular_at`]; zero elsewhere): the same kept VPLs, the
+    /// same weights and transfer `T` as `irradiance`, each times
+    /// `Φ ⊙ (f(l, v) − c_diff/π)` (slc-core's glTF BRDF less the diffuse
+    /// albedo [`Specular::diffuse_albedo`] over π), so the VPL light's
+    /// radiance is `c_diff/π · E + S`. Empty when no pixel has a lobe, or
+    /// when the backend shades VPL light as Lambertian (`albedo/π · E`).
+    pub specular: Vec<Vec3>,
+    /// The near field's part of `specular` (as `near` is `irradiance`'s);
+    /// empty when `near` is.
+    pub specular_near: Vec<Vec3>,
     /// Lights that passed the keep test, per pixel.
     pub kept: Vec<u32>,
     /// Light evaluations of the shading loop.
@@ -233,14 +244,66 @@ pub struct GBuffer {
     pub depth: Vec<f32>,
     /// The camera's position, which `depth` is the distance from (a
     /// backend that recomputes depth from positions, as the GPU's indirect
-    /// pass does, needs it).
+    /// pass does, needs it), and the view direction of every pixel.
     pub eye: Vec3,
+    /// Each pixel's specular lobe (glTF metallic-roughness; `albedo` is its
+    /// base colour), or empty: then every pixel is Lambertian and VPL light
+    /// is shaded as `albedo/π`, as it is where a pixel's lobe has no
+    /// specular part ([`Specular::has_specular`]).
+    pub specular: Vec<Specular>,
+}
+
+/// The specular part of a pixel's glTF metallic-roughness material
+/// ([`crate::scene::Material`] without its base colour and emission, which
+/// the G-buffer holds as `albedo` and `emission`). The default (all zero)
+/// is Lambertian.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Specular {
+    /// Metallic factor in `[0, 1]`.
+    pub metallic: f32,
+    /// Perceptual roughness in `[0, 1]` (GGX `α = roughness²`).
+    pub roughness: f32,
+    /// The dielectric's Fresnel reflectance at normal incidence.
+    pub f0: Vec3,
+    /// The dielectric's Fresnel reflectance at grazing incidence.
+    pub f90: f32,
+}
+
+impl Specular {
+    /// The specular part of `m`.
+    pub fn of(m: &crate::scene::Material) -> Specular {
+        Specular { metallic: m.metallic, roughness: m.roughness, f0: m.f0, f90: m.f90 }
+    }
+
+    /// `true` when the lobe has a specular part ([`slc_core::brdf::has_specular`]).
+    pub fn has_specular(&self) -> bool {
+        slc_core::brdf::has_specular(self.metallic, self.f0, self.f90)
+    }
+
+    /// `c_diff = (1 − m)·b`, the albedo a pixel of base colour `base`
+    /// multiplies its Lambertian VPL irradiance by in the composition
+    /// ([`Shaded::specular`] holds the rest of its BRDF): the metal has
+    /// no diffuse lobe, so its VPL light is all in the correction.
+    pub fn diffuse_albedo(&self, base: Vec3) -> Vec3 {
+        base * (1.0 - self.metallic)
+    }
 }
 
 impl GBuffer {
     /// `true` where the pixel sees a surface.
     pub fn valid(&self, i: usize) -> bool {
         self.depth[i].is_finite()
+    }
+
+    /// Pixel `i`'s specular lobe where it has one (a surface whose material
+    /// is not Lambertian), else `None`.
+    pub fn specular_at(&self, i: usize) -> Option<Specular> {
+        self.specular.get(i).filter(|s| s.has_specular() && self.valid(i)).copied()
+    }
+
+    /// `true` when some pixel has a specular lobe.
+    pub fn has_specular(&self) -> bool {
+        (0..self.specular.len()).any(|i| self.specular_at(i).is_some())
     }
 }
 

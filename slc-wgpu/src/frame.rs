@@ -47,7 +47,7 @@ use slc_core::frame::diffuse_radiance;
 use slc_scene::backend::Timing;
 use slc_scene::image::Image;
 use slc_scene::scene::{LightMap, Material, PrimaryLight, Scene};
-use slc_scene::vpl::{PERIOD, VplInputs, VplMethod, VplSettings, VplStats, Vpls};
+use slc_scene::vpl::{PERIOD, Specular, VplInputs, VplMethod, VplSettings, VplStats, Vpls};
 use slc_shared_shaders::layout::{
     GpuLight, GpuMaterial, GpuVertex, ImageParams, LIGHT_SPOT, MAP_CAMERA, MAP_ORTHOGRAPHIC, MAP_PERSPECTIVE, MapParams,
 };
@@ -775,6 +775,7 @@ impl GpuVplFrame {
             emission: vec![Vec3::ZERO; n],
             depth: vec![f32::INFINITY; n],
             eye: self.eye,
+            specular: vec![Specular::default(); n],
         };
         for i in 0..n {
             if position[i][3] > 0.0 {
@@ -784,6 +785,7 @@ impl GpuVplFrame {
                 gb.normal[i] = Vec3::new(normal[i][0], normal[i][1], normal[i][2]);
                 gb.albedo[i] = m.albedo;
                 gb.emission[i] = m.emission;
+                gb.specular[i] = Specular::of(&m);
                 gb.depth[i] = (p - self.eye).length();
             }
         }

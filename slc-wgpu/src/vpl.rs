@@ -268,7 +268,16 @@ impl GpuVpl {
             kept.push(if valid { d[3] as u32 } else { 0 });
             evaluations += valid as u64 * d[3] as u64;
         }
-        Ok(Shaded { irradiance, near: Vec::new(), kept, evaluations, shading_ms, denoised_ms: denoise_ms })
+        Ok(Shaded {
+            irradiance,
+            near: Vec::new(),
+            specular: Vec::new(),
+            specular_near: Vec::new(),
+            kept,
+            evaluations,
+            shading_ms,
+            denoised_ms: denoise_ms,
+        })
     }
 }
 

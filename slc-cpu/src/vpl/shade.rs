@@ -6,12 +6,20 @@
 //! ([`slc_core::range::slc_keep`]), the `1/p` weight
 //! ([`slc_core::range::slc_weight`]) and the near-field split
 //! ([`slc_core::interleave::vpl_near_weight`]).
+//!
+//! A receiver with a specular lobe also takes [`shade_specular`]: the same
+//! lights, keep tests and weights, each term times the glTF BRDF
+//! ([`slc_core::brdf::brdf_eval`]) less the receiver's diffuse albedo over
+//! π, in a scalar loop (the SIMD loop of Lambertian receivers is
+//! untouched).
 
 use glam::Vec3;
+use slc_core::brdf::{brdf_eval, ggx_alpha};
 use slc_core::interleave::{vpl_far_fixed_share, vpl_far_slc_share, vpl_far_weight, vpl_near_cull_range2, vpl_near_fixed_share, vpl_near_slc_share};
-use slc_core::light::vpl_transfer;
+use slc_core::light::{INV_PI, vpl_transfer};
 use slc_core::range::cull_radius;
 use slc_core::sphere::sphere_overlaps_aabb;
+use slc_scene::vpl::GBuffer;
 
 pub use crate::simd::SimdPath;
 
@@ -428,6 +436,93 @@ fn shade_impl<const MODE: u8>(list: &LightList, x: Vec3, n: Vec3, min_d2: f32, n
     let (e0, k0) = lane_sums::<MODE, LANES>(list, 0, full, x, n, min_d2, near_r2);
     let (e1, k1) = lane_sums::<MODE, 1>(list, full, len, x, n, min_d2, near_r2);
     (e0 + e1, (k0 + k1) as u32)
+}
+
+/// A receiver with a specular lobe as [`shade_specular`] sees it: its
+/// position, unit shading normal, unit view direction (toward the eye) and
+/// glTF material, and `c_diff/π` (the part of its BRDF the Lambertian
+/// irradiance already carries, [`slc_scene::vpl::Specular::diffuse_albedo`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Glossy {
+    /// Position.
+    pub x: Vec3,
+    /// Unit shading normal.
+    pub n: Vec3,
+    /// Unit direction toward the eye.
+    pub v: Vec3,
+    /// Base colour.
+    pub base: Vec3,
+    /// Metallic factor.
+    pub metallic: f32,
+    /// GGX `α`.
+    pub alpha: f32,
+    /// The dielectric's `F0`.
+    pub f0: Vec3,
+    /// The dielectric's `F90`.
+    pub f90: f32,
+    /// `c_diff/π`.
+    pub diffuse: Vec3,
+}
+
+impl Glossy {
+    /// G-buffer pixel `i` where it has a specular lobe
+    /// ([`GBuffer::specular_at`]), else `None`.
+    pub fn at(gb: &GBuffer, i: usize) -> Option<Glossy> {
+        let s = gb.specular_at(i)?;
+        let (x, base) = (gb.position[i], gb.albedo[i]);
+        Some(Glossy {
+            x,
+            n: gb.normal[i],
+            v: (gb.eye - x).normalize_or_zero(),
+            base,
+            metallic: s.metallic,
+            alpha: ggx_alpha(s.roughness),
+            f0: s.f0,
+            f90: s.f90,
+            diffuse: s.diffuse_albedo(base) * INV_PI,
+        })
+    }
+
+    /// `f(l, v) − c_diff/π` toward the unit direction `l`.
+    #[inline(always)]
+    pub fn correction(&self, l: Vec3) -> Vec3 {
+        brdf_eval(self.base, self.metallic, self.f0, self.f90, self.alpha, self.n, self.v, l) - self.diffuse
+    }
+}
+
+/// The specular correction at a receiver `g` from every light of `list`
+/// under `cull`: `Σ Φ ⊙ (f(l, v) − c_diff/π) · T · share`, with each
+/// light's transfer `T` and culling share exactly as [`shade`] weighs its
+/// irradiance (the same lights kept), so `c_diff/π · E + S` is the BRDF's
+/// outgoing radiance. A scalar loop.
+pub fn shade_specular(list: &LightList, g: &Glossy, min_d2: f32, near_r2: f32, cull: Cull) -> Vec3 {
+    match cull {
+        Cull::Slc => specular_impl::<SLC>(list, g, min_d2, near_r2),
+        Cull::Clamp => specular_impl::<CLAMP>(list, g, min_d2, near_r2),
+        Cull::None => specular_impl::<NONE>(list, g, min_d2, near_r2),
+        Cull::Near => specular_impl::<NEAR>(list, g, min_d2, near_r2),
+        Cull::NearSlc => specular_impl::<NEAR_SLC>(list, g, min_d2, near_r2),
+    }
+}
+
+fn specular_impl<const MODE: u8>(list: &LightList, g: &Glossy, min_d2: f32, near_r2: f32) -> Vec3 {
+    let mut s = Vec3::ZERO;
+    for j in 0..list.len() {
+        let p = Vec3::new(list.px[j], list.py[j], list.pz[j]);
+        let v = g.x - p;
+        let d2 = v.x * v.x + v.y * v.y + v.z * v.z;
+        let share = cull_share::<MODE>(list.rt2[j], list.r2[j], d2, near_r2);
+        if share <= 0.0 {
+            continue;
+        }
+        let t = transfer(p, Vec3::new(list.nx[j], list.ny[j], list.nz[j]), g.x, g.n, min_d2);
+        if t <= 0.0 {
+            continue;
+        }
+        let flux = Vec3::new(list.fr[j], list.fg[j], list.fb[j]);
+        s += flux * g.correction(-v.normalize()) * (t * share);
+    }
+    s
 }
 
 #[cfg(test)]
