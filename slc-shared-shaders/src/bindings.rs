@@ -7,10 +7,6 @@
 //! name, address space, access), so a table cannot drift from the
 //! kernel it describes.
 //!
-//! The path tracer's kernels (`pt_extend`, `pt_connect`) still declare
-//! their bindings in their templates; their tables here are checked
-//! against those declarations the same way.
-//!
 //! The tables below are [`docs`]'s output, committed in
 //! `docs/bindings.md` (a test regenerates it; `SLC_BLESS=1` accepts a
 //! change).
@@ -112,6 +108,13 @@ const fn view_uniform(binding: u32) -> Binding {
     uniform(binding, "view", "ViewParams", true, "inverse view-projection, eye, image size, depth background")
 }
 
+/// The engine's G-buffer as the indirect pass's kernels read it in place,
+/// from binding `first` on: the view, the surface (depth or positions) and
+/// the normals.
+fn gbuffer_in(first: u32, source: SurfaceSource) -> [Binding; 3] {
+    [view_uniform(first), surface(first + 1, source), texture(first + 2, "normal_tex", "world normal (xyz)", "engine (G-buffer)")]
+}
+
 /// The bindings of `kernel` specialised to `f`, in declaration order.
 pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
     let ies = f.lights.ies;
@@ -137,36 +140,36 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             read(3, "r2", "array<f32>", "random range²", "`light_update` or `light_ranges`"),
             b(0, 4, "bsh_nodes", Resource::ReadWrite("array<BshNode>"), "the BSH", "host (build), this kernel (refit)"),
         ],
-        Kernel::VplTiled => vec![
-            uniform(0, "params", "VplParams", true, "image size, VPLs per subset, clamp distance, near field"),
-            view_uniform(1),
-            surface(2, f.surface),
-            texture(3, "normal_tex", "world normal (xyz)", "engine (G-buffer)"),
-            read(4, "lights", "array<GpuLight>", "VPLs by subset, flux × period²", "`vpl_pack`"),
-            read(5, "rt2", "array<f32>", "threshold range²", "`vpl_pack`"),
-            read(6, "r2", "array<f32>", "random range² (clamp: R²)", "`light_update` or `vpl_pack`"),
-            write(7, "irradiance", vec4, "irradiance (rgb), lights kept (w); 0 where no surface is"),
-        ],
-        Kernel::VplDenoise => vec![
-            uniform(0, "params", "VplParams", true, "image size"),
-            view_uniform(1),
-            surface(2, f.surface),
-            texture(3, "normal_tex", "world normal (xyz)", "engine (G-buffer)"),
-            read(4, "irradiance", vec4, "interleaved irradiance", "`vpl_tiled`"),
-            write(5, "filtered", vec4, "denoised irradiance"),
-        ],
-        Kernel::VplNear => vec![
-            uniform(0, "params", "VplParams", true, "image size, `R_n²`, near blocks"),
-            view_uniform(1),
-            surface(2, f.surface),
-            texture(3, "normal_tex", "world normal (xyz)", "engine (G-buffer)"),
-            read(4, "lights", "array<GpuLight>", "VPLs by subset, flux × period²", "`vpl_pack`"),
-            read(5, "near_slots", "array<u32>", "slot in `lights` of each VPL in near-block order", "`vpl_pack`"),
-            read(6, "near_boxes", "array<GpuNearBox>", "box of each near block", "`vpl_pack`"),
-            read(7, "rt2", "array<f32>", "threshold range² (as `vpl_tiled`'s)", "`vpl_pack`"),
-            read(8, "r2", "array<f32>", "range² (as `vpl_tiled`'s)", "`light_update` (SLC) or `vpl_pack`"),
-            write(9, "irradiance", vec4, "the (denoised) far field, the near field added"),
-        ],
+        Kernel::VplTiled => {
+            let mut v = vec![uniform(0, "params", "VplParams", true, "image size, VPLs per subset, clamp distance, near field")];
+            v.extend(gbuffer_in(1, f.surface));
+            v.extend([
+                read(4, "lights", "array<GpuLight>", "VPLs by subset, flux × period²", "`vpl_pack`"),
+                read(5, "rt2", "array<f32>", "threshold range²", "`vpl_pack`"),
+                read(6, "r2", "array<f32>", "random range² (clamp: R²)", "`light_update` or `vpl_pack`"),
+                write(7, "irradiance", vec4, "irradiance (rgb), lights kept (w); 0 where no surface is"),
+            ]);
+            v
+        }
+        Kernel::VplDenoise => {
+            let mut v = vec![uniform(0, "params", "VplParams", true, "image size")];
+            v.extend(gbuffer_in(1, f.surface));
+            v.extend([read(4, "irradiance", vec4, "interleaved irradiance", "`vpl_tiled`"), write(5, "filtered", vec4, "denoised irradiance")]);
+            v
+        }
+        Kernel::VplNear => {
+            let mut v = vec![uniform(0, "params", "VplParams", true, "image size, `R_n²`, near blocks")];
+            v.extend(gbuffer_in(1, f.surface));
+            v.extend([
+                read(4, "lights", "array<GpuLight>", "VPLs by subset, flux × period²", "`vpl_pack`"),
+                read(5, "near_slots", "array<u32>", "slot in `lights` of each VPL in near-block order", "`vpl_pack`"),
+                read(6, "near_boxes", "array<GpuNearBox>", "box of each near block", "`vpl_pack`"),
+                read(7, "rt2", "array<f32>", "threshold range² (as `vpl_tiled`'s)", "`vpl_pack`"),
+                read(8, "r2", "array<f32>", "range² (as `vpl_tiled`'s)", "`light_update` (SLC) or `vpl_pack`"),
+                write(9, "irradiance", vec4, "the (denoised) far field, the near field added"),
+            ]);
+            v
+        }
         Kernel::BshReservoir => {
             let mut v = vec![
                 uniform(0, "params", "ShadeParams", false, "point count, seed, frame, shadow-ray offset"),
@@ -277,13 +280,14 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             ]);
             v
         }
-        Kernel::IrradianceExport => vec![
-            view_uniform(0),
-            surface(1, f.surface),
-            texture(2, "normal_tex", "world normal (xyz)", "engine (G-buffer)"),
-            read(3, "irradiance", vec4, "irradiance (rgb), lights kept (w)", "`vpl_tiled`, `vpl_denoise`, `vpl_near`"),
-            out(4, "irradiance (rgb), lights kept (a); 0 where no surface is"),
-        ],
+        Kernel::IrradianceExport => {
+            let mut v = gbuffer_in(0, f.surface).to_vec();
+            v.extend([
+                read(3, "irradiance", vec4, "irradiance (rgb), lights kept (w)", "`vpl_tiled`, `vpl_denoise`, `vpl_near`"),
+                out(4, "irradiance (rgb), lights kept (a); 0 where no surface is"),
+            ]);
+            v
+        }
         Kernel::SceneRaster => vec![
             uniform(0, "params", "MapParams", false, "view-projection and the map's frame"),
             read(1, "materials", "array<GpuMaterial>", "albedo and emission per material", "host"),
