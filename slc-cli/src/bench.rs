@@ -63,6 +63,17 @@ pub struct BenchArgs {
     /// noise per second makes the cheapest good reference).
     #[arg(long, default_value = "power", value_parser = crate::methods::pt_method)]
     pub reference_method: PtMethod,
+    /// VPL frame on the CPU: measure flicker instead of speed, over three
+    /// scripted sequences (static, camera orbit, moving light): per frame
+    /// the RMSE against that frame's reference and against the previous
+    /// frame, for slc with the spatial filter only, with temporal
+    /// accumulation (and over independent ξ), and the unculled frame
+    /// [size default: 256x256].
+    #[arg(long)]
+    pub flicker: bool,
+    /// Frames per flicker sequence.
+    #[arg(long, default_value_t = 48)]
+    pub frames: u32,
 }
 
 /// The configurations of a VPL bench: `none`, then `slc` per error bound,
@@ -90,7 +101,7 @@ fn vpl_configs(a: &BenchArgs, exposure: f32) -> Vec<(Option<f32>, VplSettings)> 
         .collect()
 }
 
-fn progress(len: usize) -> anyhow::Result<ProgressBar> {
+pub fn progress(len: usize) -> anyhow::Result<ProgressBar> {
     let bar = ProgressBar::new(len as u64 + 1);
     bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} {msg} ({elapsed})")?);
     Ok(bar)
@@ -142,6 +153,12 @@ fn run_label(s: &VplSettings, param: Option<f32>) -> String {
 pub fn run(a: BenchArgs) -> anyhow::Result<()> {
     if a.repeat == 0 || a.reference_spp == 0 {
         return Err(anyhow!("--repeat {} and --reference-spp {} must be at least 1", a.repeat, a.reference_spp));
+    }
+    if a.flicker {
+        if a.scene.app == App::Pt || a.scene.backend == Backend::Gpu {
+            return Err(anyhow!("--flicker measures the VPL frame on the CPU backend"));
+        }
+        return crate::flicker::run(&a, a.frames);
     }
     if a.scene.app == App::Pt {
         return run_pt(a);

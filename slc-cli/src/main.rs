@@ -9,6 +9,7 @@ use anyhow::{Context, anyhow};
 mod backends;
 mod bench;
 mod diff;
+mod flicker;
 mod methods;
 mod notes;
 mod plot;

@@ -329,6 +329,65 @@ fn ies_polar_on<DB: DrawingBackend>(p: &slc_core::ies::IesProfile, title: &str, 
     Ok(())
 }
 
+/// `slc bench --flicker`: per sequence (columns), each method's RMSE
+/// against the frame's reference (top) and against its previous frame
+/// (bottom) over the frames, log scale.
+pub fn flicker(report: &crate::flicker::FlickerReport, path: &Path) -> anyhow::Result<()> {
+    with_backend(path, (1440, 800), |a| flicker_on(report, a), |a| flicker_on(report, a))
+}
+
+fn flicker_on<DB: DrawingBackend>(report: &crate::flicker::FlickerReport, root: &DrawingArea<DB, Shift>) -> anyhow::Result<()> {
+    let err = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("{e}");
+    root.fill(&WHITE).map_err(err)?;
+    let title = format!("Flicker: {} {}x{}, {} VPLs, eps {}", report.scene, report.width, report.height, report.vpls, report.error_bound);
+    let root = root.titled(&title, ("sans-serif", 24)).map_err(err)?;
+    let panels = root.split_evenly((2, report.sequences.len().max(1)));
+    let colors = [RGBColor(31, 119, 180), RGBColor(44, 160, 44), RGBColor(255, 127, 14), RGBColor(40, 40, 40)];
+    for (row, what) in ["RMSE vs frame's reference", "RMSE vs previous frame"].iter().enumerate() {
+        for (col, s) in report.sequences.iter().enumerate() {
+            let series: Vec<Vec<(f64, f64)>> = s
+                .curves
+                .iter()
+                .map(|c| {
+                    let (v, first) = if row == 0 { (&c.rmse, 0) } else { (&c.temporal_rmse, 1) };
+                    v.iter().enumerate().filter(|(_, e)| **e > 0.0).map(|(f, &e)| ((f + first) as f64, e.log10())).collect()
+                })
+                .collect();
+            let all: Vec<f64> = series.iter().flatten().map(|p| p.1).collect();
+            if all.is_empty() {
+                continue;
+            }
+            let (lo, hi) = all.iter().fold((f64::MAX, f64::MIN), |(a, b), &y| (a.min(y), b.max(y)));
+            let mut chart = ChartBuilder::on(&panels[row * report.sequences.len() + col])
+                .caption(format!("{}: {what}", format!("{:?}", s.sequence).to_lowercase()), ("sans-serif", 17))
+                .margin(10)
+                .x_label_area_size(36)
+                .y_label_area_size(64)
+                .build_cartesian_2d(0.0..report.frames as f64, (lo - 0.1)..(hi + 0.1))
+                .map_err(err)?;
+            chart
+                .configure_mesh()
+                .x_desc("frame")
+                .label_style(("sans-serif", 13))
+                .y_label_formatter(&|v| format!("{:.1e}", 10f64.powf(*v)))
+                .draw()
+                .map_err(err)?;
+            for (k, (c, pts)) in s.curves.iter().zip(series).enumerate() {
+                let color = colors[k % colors.len()];
+                chart
+                    .draw_series(LineSeries::new(pts, color.stroke_width(2)))
+                    .map_err(err)?
+                    .label(c.method.clone())
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
+            }
+            if row == 0 && col == 0 {
+                legend(&mut chart, 13).map_err(err)?;
+            }
+        }
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::pareto_front;

@@ -23,6 +23,7 @@
 //! | [`ray`] | ray–box and ray–triangle tests for the GPU's geometry BVH |
 //! | [`path`] | the camera ray and Russian roulette on path length of both path tracers |
 //! | [`denoise`] | the cross-bilateral filter weight of the VPL denoise |
+//! | [`temporal`] | temporal accumulation: reprojection, history matching, change response from luminance moments, the moving average's weight |
 //! | [`wgsl`] | the shared-code macro, WGSL built-ins in Rust, the assembled WGSL library |
 //!
 //! ```
@@ -66,6 +67,7 @@ pub mod range;
 pub mod ray;
 pub mod reservoir;
 pub mod sphere;
+pub mod temporal;
 pub mod xi;
 
 pub use glam;

@@ -15,6 +15,9 @@
 //!   MIS whose light pdf includes the RR probability, and the uniform,
 //!   power and light-BVH baselines on the same renderer;
 //!   [`pt::CpuPathTracer`] is a [`slc_scene::backend::PathTracer`].
+//! - [`temporal`]: temporal accumulation of a per-pixel signal (reprojection,
+//!   disocclusion, change response, moving average), the VPL frame's
+//!   [`vpl::VplContext::render_accumulated`].
 //! - [`direct`]: unshadowed direct light at arbitrary shading points through
 //!   the BSH and a k-slot reservoir, number for number as the GPU kernel.
 //!
@@ -37,4 +40,5 @@ pub mod geometry;
 pub mod pt;
 pub mod raster;
 pub mod simd;
+pub mod temporal;
 pub mod vpl;

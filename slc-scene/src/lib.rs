@@ -14,6 +14,7 @@
 //! | [`image`] | linear HDR images, RMSE; EXR/PNG I/O (feature `io`) |
 //! | [`vpl`] | application A's settings, G-buffer, VPLs, shaded irradiance and frame |
 //! | [`pt`] | application B's settings, method enum, prepared scene and accumulation |
+//! | [`temporal`] | each frame's camera and the settings of the temporal stage |
 //! | [`backend`] | the contract both backends implement, one trait per application |
 //!
 //! ```
@@ -47,6 +48,7 @@ pub mod scene;
 pub mod scene_file;
 #[cfg(feature = "io")]
 pub mod shapes;
+pub mod temporal;
 pub mod vpl;
 
 use thiserror::Error;

@@ -139,6 +139,16 @@ impl Camera {
         let t = (self.vfov_deg.to_radians() * 0.5).tan();
         (f, r * (t * w as f32 / h as f32), u * t)
     }
+
+    /// The camera's view-projection for a `w × h` image with depth range
+    /// `near..far` (right-handed view, wgpu clip space: depth in `[0, 1]`,
+    /// y up): the matrix the GPU frame rasterizes with, whose pixel rays
+    /// are [`Camera::ray_dir`]'s. The temporal stage reprojects with it.
+    pub fn view_projection(&self, w: u32, h: u32, near: f32, far: f32) -> glam::Mat4 {
+        use glam::camera::rh::{proj, view::look_to_mat4};
+        let (_, up, forward) = self.basis();
+        proj::directx::perspective(self.vfov_deg.to_radians(), w as f32 / h as f32, near, far) * look_to_mat4(self.position, forward, up)
+    }
 }
 
 /// The light that illuminates the scene directly and whose reflections

@@ -54,7 +54,7 @@ const NUMERIC_PRELUDE: &str = numeric_helpers!();
 const IES_TABLE: &str = concat!(composable_table_binding!(), table_reader!());
 
 /// Every module's name and shared items, in dependency order, as raw text.
-const MODULES: [(&str, &str); 16] = [
+const MODULES: [(&str, &str); 17] = [
     ("xi", crate::xi::WGSL),
     ("range", crate::range::WGSL),
     ("sphere", crate::sphere::WGSL),
@@ -71,6 +71,7 @@ const MODULES: [(&str, &str); 16] = [
     ("interleave", crate::interleave::WGSL),
     ("path", crate::path::WGSL),
     ("frame", crate::frame::WGSL),
+    ("temporal", crate::temporal::WGSL),
 ];
 
 /// The whole shared library as WGSL: [`PRELUDE`] followed by every shared

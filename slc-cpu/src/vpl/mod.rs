@@ -24,6 +24,7 @@ pub mod shade;
 use crate::gbuffer::render_gbuffer_into;
 use crate::geometry::Geometry;
 use crate::raster::{MapView, Occluders};
+use crate::temporal::Temporal;
 use glam::Vec3;
 use rayon::prelude::*;
 use shade::{Cull, Glossy, LightList};
@@ -36,9 +37,37 @@ use slc_core::xi::xi_for;
 use slc_scene::RenderError;
 use slc_scene::backend::IndirectShader;
 use slc_scene::image::Image;
-use slc_scene::scene::{PrimaryLight, Scene};
+use slc_scene::scene::{Camera, PrimaryLight, Scene};
+use slc_scene::temporal::{TemporalSettings, TemporalView};
 use slc_scene::vpl::{GBuffer, PERIOD, Shaded, VplFrame, VplInputs, VplMethod, VplSettings, VplStats, Vpls};
 use std::time::Instant;
+
+/// The histories of a VPL frame's accumulated signals (the filtered
+/// irradiance and, on glossy pixels, the specular correction), for
+/// [`VplContext::render_accumulated`], and the primary light they were lit
+/// by: a frame whose primary light differs from the last one's is a
+/// reported change ([`TemporalSettings::after_change`]).
+pub struct FrameHistory {
+    /// The filtered irradiance's.
+    pub irradiance: Temporal,
+    /// The specular correction's.
+    pub specular: Temporal,
+    lit_by: Option<PrimaryLight>,
+}
+
+impl FrameHistory {
+    /// Empty histories for a `width × height` frame.
+    pub fn new(width: u32, height: u32) -> Result<FrameHistory, RenderError> {
+        Ok(FrameHistory { irradiance: Temporal::new(width, height)?, specular: Temporal::new(width, height)?, lit_by: None })
+    }
+
+    /// Forgets both histories.
+    pub fn reset(&mut self) {
+        self.irradiance.reset();
+        self.specular.reset();
+        self.lit_by = None;
+    }
+}
 
 /// Super-tile size in tiles for the first culling level.
 pub const SUPER: usize = 2;
@@ -153,6 +182,60 @@ impl VplContext {
     /// radiance where `c_diff` is constant over the window), and those
     /// pixels take `albedo/π · direct + emission + c_diff/π · E + S`.
     pub fn finish(&self, shaded: Shaded, settings: &VplSettings) -> VplFrame {
+        // Without a history nothing in the frame can fail.
+        self.finish_with(shaded, settings, None).unwrap_or_else(|_| unreachable!("a frame without history has no failure"))
+    }
+
+    /// Renders one frame with temporal accumulation: [`VplContext::shade`],
+    /// the spatial filter, then the filtered irradiance (and the specular
+    /// correction) accumulated over the frames in `history`
+    /// ([`crate::temporal`]; albedo and the lobes are applied after it),
+    /// seen from the context's camera ([`VplContext::set_camera`]). The
+    /// accumulation's time counts as denoise.
+    pub fn render_accumulated(
+        &self,
+        settings: &VplSettings,
+        history: &mut FrameHistory,
+        temporal: &TemporalSettings,
+    ) -> Result<VplFrame, RenderError> {
+        let shaded = self.shade(settings)?;
+        self.finish_accumulated(shaded, settings, history, temporal)
+    }
+
+    /// [`VplContext::finish`] with the filtered signals accumulated over
+    /// `history` ([`VplContext::render_accumulated`]).
+    pub fn finish_accumulated(
+        &self,
+        shaded: Shaded,
+        settings: &VplSettings,
+        history: &mut FrameHistory,
+        temporal: &TemporalSettings,
+    ) -> Result<VplFrame, RenderError> {
+        self.finish_with(shaded, settings, Some((history, temporal)))
+    }
+
+    /// Moves the camera: the G-buffer, the RSM and the direct light are
+    /// rendered again, their times returned and kept for the frame's
+    /// statistics. The camera is checked as the scene's is; a refused
+    /// camera changes nothing.
+    pub fn set_camera(&mut self, camera: Camera) -> Result<VplStats, RenderError> {
+        let mut scene = self.scene.clone();
+        scene.camera = camera;
+        scene.validate().map_err(|e| RenderError::Setting(e.to_string()))?;
+        self.scene = scene;
+        let t = frame_inputs(&self.scene, &self.geo, true, &mut self.inputs, &mut self.geometric, &mut self.direct);
+        (self.base.gbuffer_ms, self.base.rsm_ms, self.base.direct_ms) = (t.gbuffer_ms, t.rsm_ms, t.direct_ms);
+        Ok(t)
+    }
+
+    /// [`VplContext::finish`], accumulating the filtered signals over
+    /// `temporal`'s history where given.
+    fn finish_with(
+        &self,
+        shaded: Shaded,
+        settings: &VplSettings,
+        temporal: Option<(&mut FrameHistory, &TemporalSettings)>,
+    ) -> Result<VplFrame, RenderError> {
         let mut stats = self.base;
         stats.shading_ms = shaded.shading_ms;
         let gb = &self.inputs.gbuffer;
@@ -175,8 +258,18 @@ impl VplContext {
                 f
             }
         };
-        let filtered = filter(shaded.irradiance, &shaded.near);
-        let specular = if shaded.specular.is_empty() { Vec::new() } else { filter(shaded.specular, &shaded.specular_near) };
+        let mut filtered = filter(shaded.irradiance, &shaded.near);
+        let mut specular = if shaded.specular.is_empty() { Vec::new() } else { filter(shaded.specular, &shaded.specular_near) };
+        if let Some((history, ts)) = temporal {
+            let view = TemporalView::of_camera(&self.scene.camera, gb.width, gb.height);
+            let changed = history.lit_by.is_some_and(|p| p != self.scene.primary);
+            history.lit_by = Some(self.scene.primary);
+            let ts = &if changed { ts.after_change() } else { *ts };
+            filtered = history.irradiance.accumulate(&filtered, gb, &view, ts)?;
+            if !specular.is_empty() {
+                specular = history.specular.accumulate(&specular, gb, &view, ts)?;
+            }
+        }
         let data = (0..filtered.len())
             .into_par_iter()
             .map(|i| match gb.specular_at(i).filter(|_| !specular.is_empty()) {
@@ -190,7 +283,7 @@ impl VplContext {
             .collect();
         stats.denoise_ms = ms(t) + shaded.denoised_ms.unwrap_or(0.0);
         stats.total_ms = stats.stage_sum();
-        VplFrame { image: Image { width: gb.width, height: gb.height, data }, stats }
+        Ok(VplFrame { image: Image { width: gb.width, height: gb.height, data }, stats })
     }
 
     /// Every VPL at every pixel.

@@ -1,0 +1,284 @@
+//! `slc bench --flicker`: how stable the VPL frame is over time. Three
+//! scripted sequences (static camera and light; the camera orbiting; the
+//! primary light moving through the middle third and resting before and
+//! after), and per frame, for each method: the RMSE against that frame's
+//! reference (every VPL at every pixel) and the temporal RMSE against the
+//! method's previous frame. Methods: `slc` with the spatial filter only,
+//! `slc` with temporal accumulation (the frame index walks each light's
+//! stratified ξ sequence, `xi_for`), the same accumulation over
+//! independent ξ (a new seed per frame: what the stratification buys),
+//! and the unculled interleaved frame.
+
+use crate::bench::BenchArgs;
+use anyhow::{Context, anyhow};
+use glam::{Quat, Vec3};
+use serde::Serialize;
+use slc_cpu::temporal::Temporal;
+use slc_cpu::vpl::FrameHistory;
+use slc_scene::image::Image;
+use slc_scene::scene::{Camera, PrimaryLight};
+use slc_scene::temporal::{TemporalSettings, TemporalView};
+use slc_scene::vpl::{VplMethod, VplSettings};
+use std::time::Instant;
+
+/// A scripted sequence.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Sequence {
+    /// Nothing moves.
+    Static,
+    /// The camera swings ±20° about the vertical through its target.
+    Orbit,
+    /// The primary light moves during the middle third of the frames.
+    Light,
+}
+
+impl Sequence {
+    const ALL: [Sequence; 3] = [Sequence::Static, Sequence::Orbit, Sequence::Light];
+
+    fn name(self) -> &'static str {
+        match self {
+            Sequence::Static => "static",
+            Sequence::Orbit => "orbit",
+            Sequence::Light => "light",
+        }
+    }
+
+    /// The camera of frame `f` of `n`.
+    fn camera(self, base: &Camera, f: u32, n: u32) -> Camera {
+        if self != Sequence::Orbit {
+            return *base;
+        }
+        let angle = 20f32.to_radians() * (std::f32::consts::TAU * f as f32 / n as f32).sin();
+        let rot = Quat::from_axis_angle(Vec3::Y, angle);
+        Camera { position: base.target + rot * (base.position - base.target), up: rot * base.up, ..*base }
+    }
+
+    /// Where the light is along its path in frame `f` of `n`: 0 before the
+    /// middle third, 1 after it, linear in between.
+    fn light_travel(self, f: u32, n: u32) -> f32 {
+        if self != Sequence::Light {
+            return 0.0;
+        }
+        let (start, end) = (n / 3, 2 * n / 3);
+        ((f as f32 - start as f32) / (end - start).max(1) as f32).clamp(0.0, 1.0)
+    }
+
+    /// The primary light of frame `f` of `n`: a spot moves a fifth of the
+    /// scene's diagonal sideways (its axis kept), a directional light turns
+    /// by 20°.
+    fn primary(self, base: &PrimaryLight, diagonal: f32, f: u32, n: u32) -> PrimaryLight {
+        let t = self.light_travel(f, n);
+        match *base {
+            PrimaryLight::Spot { position, direction, intensity, inner, outer } => {
+                let side = direction.any_orthonormal_vector();
+                PrimaryLight::Spot { position: position + side * (0.2 * diagonal * t), direction, intensity, inner, outer }
+            }
+            PrimaryLight::Directional { direction, irradiance } => {
+                let axis = direction.any_orthonormal_vector();
+                PrimaryLight::Directional { direction: Quat::from_axis_angle(axis, 20f32.to_radians() * t) * direction, irradiance }
+            }
+        }
+    }
+}
+
+/// One method's curve over one sequence.
+#[derive(Serialize, Clone, Debug)]
+pub struct Curve {
+    /// The method's name.
+    pub method: String,
+    /// RMSE against each frame's reference.
+    pub rmse: Vec<f64>,
+    /// RMSE against the method's previous frame (none for frame 0).
+    pub temporal_rmse: Vec<f64>,
+}
+
+/// One sequence's curves.
+#[derive(Serialize, Clone, Debug)]
+pub struct SequenceReport {
+    /// The sequence.
+    pub sequence: Sequence,
+    /// The reference's own change between frames (what moving content
+    /// contributes to every method's temporal RMSE).
+    pub reference_temporal_rmse: Vec<f64>,
+    /// Each method's curves.
+    pub curves: Vec<Curve>,
+}
+
+/// The whole flicker report.
+#[derive(Serialize, Clone, Debug)]
+pub struct FlickerReport {
+    /// Scene name.
+    pub scene: String,
+    /// Image size.
+    pub width: u32,
+    /// Image height.
+    pub height: u32,
+    /// VPL count.
+    pub vpls: usize,
+    /// Frames per sequence.
+    pub frames: u32,
+    /// The SLC error bound ε.
+    pub error_bound: f32,
+    /// The temporal stage's longest history.
+    pub max_history: f32,
+    /// Milliseconds of one temporal accumulation of the irradiance at this
+    /// size (fastest of the bench's repeats).
+    pub temporal_ms: f64,
+    /// The CPU's SIMD path.
+    pub simd: String,
+    /// Every sequence.
+    pub sequences: Vec<SequenceReport>,
+}
+
+const SPATIAL: &str = "slc, spatial filter";
+const TEMPORAL: &str = "slc, temporal";
+const INDEPENDENT: &str = "slc, temporal, independent xi";
+const UNCULLED: &str = "unculled, spatial filter";
+
+/// Runs the three sequences on the CPU and prints, writes and plots the
+/// report.
+pub fn run(a: &BenchArgs, frames: u32) -> anyhow::Result<()> {
+    if frames < 2 {
+        return Err(anyhow!("--frames {frames}: a flicker sequence needs at least 2 frames"));
+    }
+    let mut args = a.scene.clone();
+    // The reference shades every VPL at every pixel every frame: a smaller
+    // default image than the frame bench's.
+    args.width = args.width.or(Some(256));
+    args.height = args.height.or(Some(256));
+    let mut loaded = args.load()?;
+    let ctx = &mut loaded.ctx;
+    let (base_camera, base_primary, diagonal) = (ctx.scene().camera, ctx.scene().primary, ctx.scene().diagonal());
+    let error_bound = *a.error_bounds.iter().find(|&&e| e == VplSettings::default().error_bound).unwrap_or(&VplSettings::default().error_bound);
+    let slc = VplSettings { method: VplMethod::Slc, error_bound, exposure: loaded.exposure, seed: a.seed, ..VplSettings::default() };
+    let unculled = VplSettings { method: VplMethod::None, ..slc };
+    let reference = VplSettings { method: VplMethod::Reference, ..slc };
+    let ts = TemporalSettings::default();
+    let bar = crate::bench::progress(Sequence::ALL.len() * frames as usize)?;
+    let mut sequences = Vec::new();
+    for seq in Sequence::ALL {
+        let mut history = FrameHistory::new(loaded.width, loaded.height)?;
+        let mut independent = FrameHistory::new(loaded.width, loaded.height)?;
+        let names = [SPATIAL, TEMPORAL, INDEPENDENT, UNCULLED];
+        let mut curves: Vec<Curve> = names.iter().map(|m| Curve { method: m.to_string(), rmse: Vec::new(), temporal_rmse: Vec::new() }).collect();
+        let mut previous: Option<(Image, Vec<Image>)> = None;
+        let mut reference_temporal = Vec::new();
+        for f in 0..frames {
+            bar.set_message(format!("{} frame {f}", seq.name()));
+            if seq == Sequence::Orbit {
+                ctx.set_camera(seq.camera(&base_camera, f, frames))?;
+            }
+            if seq == Sequence::Light {
+                ctx.set_primary(seq.primary(&base_primary, diagonal, f, frames))?;
+            }
+            let reference = ctx.render(&reference)?.image;
+            let this = VplSettings { frame: f, ..slc };
+            let shaded = ctx.shade(&this)?;
+            let spatial = ctx.finish(shaded.clone(), &this);
+            let temporal = ctx.finish_accumulated(shaded, &this, &mut history, &ts)?;
+            let fresh = VplSettings { seed: a.seed.wrapping_add(f.wrapping_mul(0x9e37_79b9)), frame: 0, ..slc };
+            let indep = ctx.render_accumulated(&fresh, &mut independent, &ts)?;
+            let unculled = ctx.render(&unculled)?;
+            let images = vec![spatial.image, temporal.image, indep.image, unculled.image];
+            for (c, img) in curves.iter_mut().zip(&images) {
+                c.rmse.push(img.rmse(&reference));
+            }
+            if let Some((prev_ref, prev)) = &previous {
+                reference_temporal.push(reference.rmse(prev_ref));
+                for ((c, img), p) in curves.iter_mut().zip(&images).zip(prev) {
+                    c.temporal_rmse.push(img.rmse(p));
+                }
+            }
+            previous = Some((reference, images));
+            bar.inc(1);
+        }
+        sequences.push(SequenceReport { sequence: seq, reference_temporal_rmse: reference_temporal, curves });
+    }
+    bar.finish_and_clear();
+    // The temporal stage's own cost at this size, on a frame's irradiance.
+    ctx.set_camera(base_camera)?;
+    ctx.set_primary(base_primary)?;
+    let e = ctx.shade(&slc)?.irradiance;
+    let gb = &ctx.inputs().gbuffer;
+    let view = TemporalView::of_camera(&base_camera, loaded.width, loaded.height);
+    let mut t = Temporal::new(loaded.width, loaded.height)?;
+    let mut temporal_ms = f64::MAX;
+    for _ in 0..a.repeat.max(3) {
+        let t0 = Instant::now();
+        t.accumulate(&e, gb, &view, &ts)?;
+        temporal_ms = temporal_ms.min(t0.elapsed().as_secs_f64() * 1e3);
+    }
+    let report = FlickerReport {
+        scene: ctx.scene().name.clone(),
+        width: loaded.width,
+        height: loaded.height,
+        vpls: ctx.vpls().len(),
+        frames,
+        error_bound,
+        max_history: ts.max_history,
+        temporal_ms,
+        simd: slc_cpu::simd::SimdPath::best().name().into(),
+        sequences,
+    };
+    print_report(&report);
+    if let Some(path) = &a.json {
+        std::fs::write(path, serde_json::to_string_pretty(&report)?).with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    if let Some(plot) = &a.plot {
+        crate::plot::flicker(&report, plot)?;
+    }
+    Ok(())
+}
+
+fn curve<'a>(s: &'a SequenceReport, method: &str) -> &'a Curve {
+    s.curves.iter().find(|c| c.method == method).unwrap_or(&s.curves[0])
+}
+
+fn mean(v: &[f64]) -> f64 {
+    v.iter().sum::<f64>() / v.len().max(1) as f64
+}
+
+/// The summary the targets are stated in, then every curve's mean.
+fn print_report(r: &FlickerReport) {
+    println!(
+        "{} {}x{}, {} VPLs, {} frames per sequence, slc eps = {}, history <= {} frames; temporal stage {:.2} ms on the CPU ({})",
+        r.scene, r.width, r.height, r.vpls, r.frames, r.error_bound, r.max_history, r.temporal_ms, r.simd
+    );
+    println!("{:<8} {:<32} {:>12} {:>12} {:>12}", "sequence", "method", "mean rmse", "last rmse", "temporal rmse");
+    for s in &r.sequences {
+        for c in &s.curves {
+            let last = c.rmse.last().copied().unwrap_or(0.0);
+            println!("{:<8} {:<32} {:>12.6} {:>12.6} {:>12.6}", s.sequence.name(), c.method, mean(&c.rmse), last, mean(&c.temporal_rmse));
+        }
+    }
+    for s in &r.sequences {
+        let (sp, te, un) = (curve(s, SPATIAL), curve(s, TEMPORAL), curve(s, UNCULLED));
+        match s.sequence {
+            Sequence::Static => {
+                let k = (r.frames as usize).min(32) - 1;
+                println!(
+                    "static: temporal RMSE {:.2}x lower with accumulation (target >= 5); error at frame {} {:.6} against the unculled frame's {:.6} (target <=), {:.6} with independent xi",
+                    mean(&sp.temporal_rmse) / mean(&te.temporal_rmse).max(1e-30),
+                    k + 1,
+                    te.rmse[k],
+                    un.rmse[k],
+                    curve(s, INDEPENDENT).rmse[k]
+                );
+            }
+            Sequence::Light | Sequence::Orbit => {
+                let worst = te.rmse.iter().zip(&sp.rmse).map(|(t, s)| t / s.max(1e-30)).fold(0.0, f64::max);
+                let mut line = format!("{}: accumulated error at most {worst:.2}x the spatial-only frame's (target <= 1.2)", s.sequence.name());
+                if s.sequence == Sequence::Light {
+                    let stop = (2 * r.frames / 3) as usize;
+                    let back = (stop..te.rmse.len()).find(|&f| te.rmse[f] <= sp.rmse[f]).map(|f| f - stop);
+                    line += &match back {
+                        Some(k) => format!("; below it again {k} frames after the light stops (target <= 8)"),
+                        None => "; not below it again before the sequence ends".into(),
+                    };
+                }
+                println!("{line}");
+            }
+        }
+    }
+}

@@ -1,0 +1,309 @@
+//! Temporal accumulation of the real-time passes' stochastic outputs
+//! (indirect irradiance after the spatial filter, the direct pass's
+//! irradiance), written once for both backends. Per pixel, each frame:
+//!
+//! 1. **Reproject** the pixel's surface point into the previous frame
+//!    ([`reproject`]: the previous view-projection, the inverse of the
+//!    engine pass's `unproject_pixel`) and read the history there
+//!    bilinearly ([`bilinear_weight`]), keeping only taps that saw the same
+//!    surface ([`history_matches`]: the point on the tap's tangent plane,
+//!    and the normals alike), renormalised; no matching tap is a
+//!    disocclusion.
+//! 2. **Respond to change**, two ways. (a) Reported: a caller that knows
+//!    the lighting changed this frame (the primary light moved, a light
+//!    was added) caps the history at [`TEMPORAL_CHANGED_HISTORY`] frames,
+//!    so stale light fades within a few frames and returns to the full
+//!    length once the change stops. (b) Detected, per pixel: the history
+//!    keeps the luminance of the last frame's value and a moving average
+//!    of half the squared difference between consecutive frames, the
+//!    frame-to-frame noise variance σ² (differences of consecutive frames,
+//!    unlike SVGF's moments `E[l²] − E[l]²`, hardly grow while the signal
+//!    drifts, so drift cannot hide behind its own variance); a current
+//!    value further from the history's mean than the noise explains
+//!    shortens the history in proportion ([`temporal_change`]). This
+//!    stands in for A-SVGF's temporal gradients (Schied et al., "Gradient
+//!    Estimation for Real-Time Adaptive Temporal Filtering", HPG 2018),
+//!    which re-shade last frame's samples with this frame's scene and need
+//!    the shading kernels' cooperation; the test here needs none, and
+//!    catches only changes larger than a few σ (which is why (a) exists).
+//! 3. **Accumulate**: an exponential moving average whose weight is
+//!    `1/n` for a history of `n` frames, capped at [`TEMPORAL_MAX_HISTORY`]
+//!    ([`temporal_alpha`]): the plain mean while the history grows, then a
+//!    moving average.
+//!
+//! The signals are irradiance, not radiance: albedo (and a glossy lobe's
+//! reflectance) is applied after accumulation, so texture and material
+//! detail never blur over frames ("demodulation", SVGF §4).
+
+// Shared (WGSL) functions take their inputs as scalars and vectors.
+#![allow(clippy::too_many_arguments)]
+
+use crate::wgsl::*;
+
+crate::shared! {
+    /// The longest history `N`: the moving average never weighs the current
+    /// frame below `1/N`.
+    pub const TEMPORAL_MAX_HISTORY: f32 = 32.0;
+
+    /// The current surface point may lie this fraction of its distance
+    /// from the eye off a history tap's tangent plane and still be the
+    /// same surface.
+    pub const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01;
+
+    /// A history tap's normal must be within this cosine of the current one.
+    pub const TEMPORAL_NORMAL_COS: f32 = 0.9;
+
+    /// Frames of history before its noise estimate is trusted to judge a
+    /// change ([`temporal_change`] keeps the history until then).
+    pub const TEMPORAL_MIN_MOMENTS: f32 = 8.0;
+
+    /// The history cap of a frame whose caller reports that the lighting
+    /// changed (the moving average then weighs the frame at least ¼).
+    pub const TEMPORAL_CHANGED_HISTORY: f32 = 4.0;
+
+    /// Below this many standard deviations between the current value and
+    /// the history's mean, the difference is noise: the history is kept.
+    pub const TEMPORAL_CHANGE_LOW: f32 = 4.0;
+
+    /// At this many standard deviations or more the history is dropped
+    /// entirely; between the two, in proportion.
+    pub const TEMPORAL_CHANGE_HIGH: f32 = 8.0;
+
+    /// Bilinear weight below which a reprojection counts as a disocclusion.
+    pub const TEMPORAL_MIN_WEIGHT: f32 = 0.01;
+
+    /// Relative luminance of linear Rec. 709 RGB (ITU-R BT.709):
+    /// `0.2126 R + 0.7152 G + 0.0722 B`.
+    pub fn luminance(c: vec3f) -> f32 {
+        return dot(c, vec3f(0.2126, 0.7152, 0.0722));
+    }
+
+    /// Where world point `p` was in the previous frame: its pixel
+    /// coordinates (x, y; pixel centres at integers, row 0 at the top) in a
+    /// `width × height` image under the previous view-projection with
+    /// columns `c0..c3` (wgpu conventions: clip `M·(p, 1)`, normalised
+    /// device `x, y = clip.xy/clip.w`, y up), and in z the clip `w` (≤ 0:
+    /// behind the previous camera, nothing to reuse). The inverse of the
+    /// engine pass's `unproject_pixel`.
+    pub fn reproject(c0: vec4f, c1: vec4f, c2: vec4f, c3: vec4f, p: vec3f, width: f32, height: f32) -> vec3f {
+        let clip: vec4f = c0 * p.x + c1 * p.y + c2 * p.z + c3;
+        if clip.w <= 0.0 {
+            return vec3f(-1.0, -1.0, 0.0);
+        }
+        let x: f32 = (clip.x / clip.w + 1.0) * 0.5 * width - 0.5;
+        let y: f32 = (1.0 - clip.y / clip.w) * 0.5 * height - 0.5;
+        return vec3f(x, y, clip.w);
+    }
+
+    /// Bilinear weight of tap `(x0 + dx, y0 + dy)`, `dx, dy ∈ {0, 1}`, for a
+    /// point at fractional offsets `(fx, fy)` from `(x0, y0) = ⌊(x, y)⌋`.
+    pub fn bilinear_weight(fx: f32, fy: f32, dx: u32, dy: u32) -> f32 {
+        let wx: f32 = select(1.0 - fx, fx, dx == 1);
+        let wy: f32 = select(1.0 - fy, fy, dy == 1);
+        return wx * wy;
+    }
+
+    /// Whether a history tap that saw a surface with unit normal `nh` and
+    /// tangent plane `nh·x = oh` is the surface now seen at point `p` with
+    /// unit normal `n`, at distance `d` from the eye: `p` within
+    /// [`TEMPORAL_DEPTH_TOLERANCE`]`·d` of the tap's plane (a plane test,
+    /// not a depth test, so a grazing floor matches its neighbours at any
+    /// resolution) and the normals within [`TEMPORAL_NORMAL_COS`].
+    pub fn history_matches(n: vec3f, nh: vec3f, p: vec3f, oh: f32, d: f32) -> bool {
+        return abs(dot(nh, p) - oh) <= TEMPORAL_DEPTH_TOLERANCE * d && dot(n, nh) >= TEMPORAL_NORMAL_COS;
+    }
+
+    /// How much of a history of `n` frames to drop (0: keep, 1: drop all)
+    /// for a current luminance `l` against the history's mean luminance
+    /// `m1`, with frame-to-frame noise variance `var` (the history's
+    /// moving average of half the squared consecutive differences): the
+    /// difference of a new draw from the history's mean has standard
+    /// deviation `σ·√(1 + 1/n)`; at `t` such
+    /// deviations, `λ = clamp((t − LOW)/(HIGH − LOW), 0, 1)`
+    /// ([`TEMPORAL_CHANGE_LOW`], [`TEMPORAL_CHANGE_HIGH`]). A history
+    /// shorter than [`TEMPORAL_MIN_MOMENTS`] has no trusted σ and is kept
+    /// (its weight is high anyway). The `1e-3` relative floor keeps a
+    /// noise-free signal (σ = 0) from resetting on rounding.
+    pub fn temporal_change(l: f32, m1: f32, var: f32, n: f32) -> f32 {
+        if n < TEMPORAL_MIN_MOMENTS {
+            return 0.0;
+        }
+        let sigma: f32 = sqrt(max(var, 0.0) * (1.0 + 1.0 / n));
+        let t: f32 = abs(l - m1) / (sigma + 1e-3 * max(abs(l), abs(m1)) + 1e-20);
+        return clamp((t - TEMPORAL_CHANGE_LOW) / (TEMPORAL_CHANGE_HIGH - TEMPORAL_CHANGE_LOW), 0.0, 1.0);
+    }
+
+    /// The history length after this frame: the `(1 − λ)` share of the
+    /// `n` frames kept ([`temporal_change`]) plus the current one, capped
+    /// at `max_history` (≥ 1).
+    pub fn next_history_length(n: f32, lambda: f32, max_history: f32) -> f32 {
+        return min((1.0 - lambda) * n + 1.0, max(max_history, 1.0));
+    }
+
+    /// The moving average's weight of the current frame for a history of
+    /// `n ≥ 1` frames including it: `1/n` (for `n` below the cap this is
+    /// the plain mean of the frames so far).
+    pub fn temporal_alpha(n: f32) -> f32 {
+        return 1.0 / max(n, 1.0);
+    }
+
+    /// Weight of history tap `(x0 + dx, y0 + dy)` (inside the image; see
+    /// [`bilinear_weight`]) holding `len` frames (0: no surface) of a
+    /// surface with normal `nh` and plane offset `oh`, for the current
+    /// surface (point `p`, normal `n`, distance `d` from the eye): the
+    /// bilinear weight where the tap has history of the same surface
+    /// ([`history_matches`]), else 0.
+    pub fn history_tap_weight(fx: f32, fy: f32, dx: u32, dy: u32, n: vec3f, nh: vec3f, p: vec3f, oh: f32, d: f32, len: f32) -> f32 {
+        if len <= 0.0 || !history_matches(n, nh, p, oh, d) {
+            return 0.0;
+        }
+        return bilinear_weight(fx, fy, dx, dy);
+    }
+
+    /// This frame's accumulated value (xyz) and history length (w) from the
+    /// current value `c`, the reprojected history `h` (value in xyz, length
+    /// in w; length 0: none) with noise variance `var`, and the cap
+    /// `max_history`: `λ` from [`temporal_change`] against the history's
+    /// luminance, the length from [`next_history_length`], then
+    /// `h + (c − h)·α` with `α = ` [`temporal_alpha`].
+    pub fn temporal_color(c: vec3f, h: vec4f, var: f32, max_history: f32) -> vec4f {
+        let hc: vec3f = vec3f(h.x, h.y, h.z);
+        let lambda: f32 = temporal_change(luminance(c), luminance(hc), var, h.w);
+        let len: f32 = next_history_length(h.w, lambda, max_history);
+        let v: vec3f = hc + (c - hc) * temporal_alpha(len);
+        return vec4f(v.x, v.y, v.z, len);
+    }
+
+    /// The noise statistics after this frame (x: this frame's luminance,
+    /// y: the noise variance; z, w zero) from the current value `c`, the
+    /// history's last luminance `last` and variance `var` over `prev_len`
+    /// frames (0: no history, the variance starts at 0), and the new
+    /// history length `len` ([`temporal_color`]'s w): the variance's moving
+    /// average takes `(l − last)²/2` with weight `1/(len − 1)` (one
+    /// difference fewer than frames).
+    pub fn temporal_moments(c: vec3f, last: f32, var: f32, prev_len: f32, len: f32) -> vec4f {
+        let l: f32 = luminance(c);
+        if prev_len <= 0.0 {
+            return vec4f(l, 0.0, 0.0, 0.0);
+        }
+        let d: f32 = l - last;
+        return vec4f(l, var + (0.5 * d * d - var) * temporal_alpha(len - 1.0), 0.0, 0.0);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::{Mat4, Vec3};
+
+    #[test]
+    fn reprojection_inverts_the_pixel_rays() {
+        use glam::camera::rh::{proj, view::look_to_mat4};
+        let (w, h) = (64.0, 48.0);
+        let vp = proj::directx::perspective(1.0, w / h, 0.1, 50.0) * look_to_mat4(Vec3::new(1.0, 2.0, 3.0), Vec3::new(0.2, -0.3, -1.0), Vec3::Y);
+        let inv = vp.inverse();
+        // The centre of pixel (10, 37) at NDC depth 0.9, unprojected.
+        let (px, py) = (10.0f32, 37.0f32);
+        let ndc = glam::Vec4::new((px + 0.5) / w * 2.0 - 1.0, 1.0 - (py + 0.5) / h * 2.0, 0.9, 1.0);
+        let p = inv * ndc;
+        let p = p.truncate() / p.w;
+        let q = reproject(vp.x_axis, vp.y_axis, vp.z_axis, vp.w_axis, p, w, h);
+        assert!((q.x - px).abs() < 1e-3 && (q.y - py).abs() < 1e-3 && q.z > 0.0, "{q}");
+        // Behind the camera: nothing.
+        let behind = Vec3::new(1.0, 2.0, 3.0) - Vec3::new(0.2, -0.3, -1.0);
+        assert!(reproject(vp.x_axis, vp.y_axis, vp.z_axis, vp.w_axis, behind, w, h).z <= 0.0);
+        let z = Mat4::ZERO;
+        assert_eq!(reproject(z.x_axis, z.y_axis, z.z_axis, z.w_axis, p, w, h).z, 0.0);
+    }
+
+    #[test]
+    fn bilinear_weights_sum_to_one() {
+        for (fx, fy) in [(0.0, 0.0), (0.25, 0.75), (0.5, 0.5), (0.99, 0.01)] {
+            let s: f32 = (0..4).map(|k| bilinear_weight(fx, fy, k & 1, k >> 1)).sum();
+            assert!((s - 1.0).abs() < 1e-6);
+        }
+        assert_eq!(bilinear_weight(0.0, 0.0, 0, 0), 1.0);
+        assert_eq!(bilinear_weight(0.25, 0.5, 1, 1), 0.125);
+    }
+
+    #[test]
+    fn history_matching() {
+        let n = Vec3::Y;
+        // The floor y = 0 seen from 2 m.
+        assert!(history_matches(n, n, Vec3::new(5.0, 0.01, 1.0), 0.0, 2.0), "on the plane anywhere");
+        assert!(!history_matches(n, n, Vec3::new(0.0, 0.05, 0.0), 0.0, 2.0), "5 cm above it at 2 m is another surface");
+        assert!(!history_matches(n, Vec3::X, Vec3::ZERO, 0.0, 2.0), "a crease");
+    }
+
+    #[test]
+    fn change_response() {
+        // σ = 1, n = 16: σ_Δ = √(17/16).
+        let (m1, var, n) = (10.0, 1.0, 16.0);
+        let s = (17.0f32 / 16.0).sqrt();
+        assert_eq!(temporal_change(10.0 + 3.9 * s, m1, var, n), 0.0, "within the noise");
+        let half = temporal_change(10.0 + 6.0 * s, m1, var, n);
+        assert!((half - 0.5).abs() < 0.03, "{half}");
+        assert_eq!(temporal_change(10.0 - 9.0 * s, m1, var, n), 1.0, "a change, either way");
+        assert_eq!(temporal_change(1e6, m1, var, 7.0), 0.0, "too short to judge");
+        // A noise-free history responds to a 1% change, not to rounding.
+        assert_eq!(temporal_change(1.000_001, 1.0, 0.0, 32.0), 0.0);
+        assert_eq!(temporal_change(1.01, 1.0, 0.0, 32.0), 1.0);
+        assert!(temporal_change(0.0, 0.0, 0.0, 32.0) == 0.0);
+    }
+
+    /// The noise estimate of i.i.d. frames is their variance, and a steady
+    /// drift hardly raises it.
+    #[test]
+    fn noise_estimate_of_consecutive_differences() {
+        let mut h = (0.0f32, 0.0f32, 0.0f32); // last, var, len
+        let mut state = 12345u32;
+        for k in 0..4000 {
+            state = crate::xi::pcg_hash(state);
+            // Uniform noise of variance 1/12 on a drift of 1e-3 per frame.
+            let x = crate::xi::xi_from_bits(state) + 1e-3 * k as f32;
+            let len = (h.2 + 1.0).min(32.0);
+            let m = temporal_moments(Vec3::splat(x), h.0, h.1, h.2, len);
+            h = (m.x, m.y, len);
+        }
+        // 32-frame moving average: relative spread about 1/√16.
+        assert!((h.1 * 12.0 - 1.0).abs() < 0.6, "{}", h.1 * 12.0);
+        assert_eq!(temporal_moments(Vec3::ONE, 0.0, 0.0, 0.0, 1.0), glam::Vec4::new(1.0, 0.0, 0.0, 0.0));
+    }
+
+    #[test]
+    fn history_length_and_weight() {
+        assert_eq!(next_history_length(0.0, 0.0, 32.0), 1.0);
+        assert_eq!(next_history_length(7.0, 0.0, 32.0), 8.0);
+        assert_eq!(next_history_length(32.0, 0.0, 32.0), 32.0);
+        assert_eq!(next_history_length(20.0, 1.0, 32.0), 1.0);
+        assert_eq!(next_history_length(20.0, 0.5, 32.0), 11.0);
+        assert_eq!(next_history_length(5.0, 0.0, 0.0), 1.0, "a cap below 1 means no history");
+        // The running mean: after frames 1..=4 the weights 1, 1/2, 1/3, 1/4
+        // give the plain mean.
+        let mut m = 0.0;
+        for (k, x) in [3.0f32, 5.0, 10.0, 2.0].iter().enumerate() {
+            m += (x - m) * temporal_alpha(k as f32 + 1.0);
+        }
+        assert!((m - 5.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn accumulation_step() {
+        use glam::Vec4;
+        // No history: the current value, length 1, moments of it alone.
+        let c = Vec3::new(2.0, 1.0, 0.5);
+        let first = temporal_color(c, Vec4::ZERO, 0.0, 32.0);
+        assert_eq!(first, c.extend(1.0));
+        let l = luminance(c);
+        assert_eq!(temporal_moments(c, 0.0, 0.0, 0.0, 1.0), Vec4::new(l, 0.0, 0.0, 0.0));
+        // Three frames of history: the mean of four.
+        let h = Vec3::splat(1.0).extend(3.0);
+        let v = temporal_color(Vec3::splat(5.0), h, 1.0, 32.0);
+        assert_eq!(v, Vec4::new(2.0, 2.0, 2.0, 4.0));
+        // A tap without history or of another surface weighs nothing.
+        let (n, p) = (Vec3::Z, Vec3::Z);
+        assert_eq!(history_tap_weight(0.5, 0.5, 0, 0, n, n, p, 1.0, 1.0, 0.0), 0.0);
+        assert_eq!(history_tap_weight(0.5, 0.5, 0, 0, n, -n, p, 1.0, 1.0, 3.0), 0.0);
+        assert_eq!(history_tap_weight(0.5, 0.5, 0, 0, n, n, p, 1.0, 1.0, 3.0), 0.25);
+    }
+}
