@@ -269,7 +269,7 @@ fn gltf_and_glossy_scenes_render() {
 fn shaders_command_exports_every_kernel() {
     let d = tempdir("shaders");
     let text = ok(&d, &["shaders", "--out", "k", "--lights", "point,triangle"]);
-    assert!(text.contains("17 kernels"), "{text}");
+    assert!(text.contains("23 kernels"), "{text}");
     for entry in ["vs_main", "fs_gbuffer", "fs_rsm", "fs_shadow"] {
         let p = d.join("k").join(format!("scene_raster.{entry}.glsl"));
         assert!(std::fs::metadata(&p).map(|m| m.len() > 100).unwrap_or(false), "{} missing or empty", p.display());
@@ -277,6 +277,8 @@ fn shaders_command_exports_every_kernel() {
     let names = ["light_update", "bsh_refit", "bsh_reservoir", "pt_connect", "pt_extend", "light_ranges", "direct_light"];
     let names = names.into_iter().chain(["vpl_tiled_slc", "vpl_tiled_clamp", "vpl_tiled_none"]);
     let frame = ["vpl_denoise", "vpl_near", "vpl_pack", "irradiance_export", "primary_direct", "frame_compose"];
+    let glossy = ["vpl_tiled_slc_glossy", "vpl_tiled_clamp_glossy", "vpl_tiled_none_glossy", "vpl_near_glossy", "irradiance_export_glossy"];
+    let frame = frame.into_iter().chain(glossy).chain(["frame_compose_glossy"]);
     for name in names.into_iter().chain(frame) {
         for ext in ["wgsl", "spv", "glsl", "hlsl", "metal"] {
             let p = d.join("k").join(format!("{name}.{ext}"));
