@@ -330,7 +330,8 @@ impl GpuVplFrame {
         }
         gpu.require("max_texture_dimension_2d", w.max(h).max(size).max(shadow) as u64, lim.max_texture_dimension_2d as u64)?;
         gpu.require("max_color_attachments", 3, lim.max_color_attachments as u64)?;
-        gpu.require("max_color_attachment_bytes_per_sample", 32, lim.max_color_attachment_bytes_per_sample as u64)?;
+        // The RSM's targets: position and flux Rgba32Float, normal Rgba16Float.
+        gpu.require("max_color_attachment_bytes_per_sample (RSM)", 16 + 8 + 16, lim.max_color_attachment_bytes_per_sample as u64)?;
         gpu.require("max_storage_buffers_per_shader_stage (fragment)", 1, lim.max_storage_buffers_per_shader_stage as u64)?;
         let vertex_bytes = scene.triangles.len() as u64 * 3 * std::mem::size_of::<GpuVertex>() as u64;
         gpu.require("max_buffer_size (vertices)", vertex_bytes, lim.max_buffer_size)?;
