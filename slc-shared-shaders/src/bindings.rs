@@ -117,7 +117,13 @@ fn gbuffer_in(first: u32, source: SurfaceSource) -> [Binding; 3] {
 
 /// The glossy VPL kernels' material table ([`Features::glossy`]).
 const fn materials(binding: u32) -> Binding {
-    read(binding, "materials", "array<GpuMaterial>", "glossy variant: glTF metallic-roughness per material (a pixel's index: its normal's w)", "host or engine")
+    read(
+        binding,
+        "materials",
+        "array<GpuMaterial>",
+        "glossy variant: glTF metallic-roughness per material (a pixel's index: its normal's w)",
+        "host or engine",
+    )
 }
 
 /// The bindings of `kernel` specialised to `f`, in declaration order.

@@ -41,8 +41,8 @@ pub mod direct;
 pub mod indirect;
 
 pub use direct::{Dielectric, DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, MaterialInputs};
-pub use indirect::{IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings, VplInput, VplSourceDesc, vpl_buffer};
-pub use slc_shared_shaders::layout::GpuVplRecord;
+pub use indirect::{IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, VplInput, VplSourceDesc, vpl_buffer};
+pub use slc_shared_shaders::layout::{GpuMaterial, GpuVplRecord};
 
 #[cfg(doc)]
 use crate::GpuContext;
