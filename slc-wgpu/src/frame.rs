@@ -102,7 +102,8 @@ pub enum Stage {
     LightUpdate,
     /// Tiled SLC shading of the interleaved sub-images.
     Shading,
-    /// The cross-bilateral filter.
+    /// The cross-bilateral filter (twice in a glossy frame: the
+    /// irradiance, then the specular correction).
     Denoise,
     /// The near field of the VPL split.
     NearField,
@@ -147,6 +148,10 @@ impl Stage {
         }
     }
 }
+
+/// Timestamp pairs a frame's timer holds: one per stage, and one more
+/// for the glossy frame's second denoise (the specular correction's).
+const TIMED_PASSES: u32 = Stage::ALL.len() as u32 + 1;
 
 /// One stage's time.
 #[derive(Clone, Debug, PartialEq)]
@@ -318,7 +323,8 @@ pub struct GpuVplFrame {
     compose_pipeline: wgpu::ComputePipeline,
     compose_group: wgpu::BindGroup,
     output: Target,
-    /// GPU timestamps around the stages, sized for every [`Stage`]; `None`
+    /// GPU timestamps around the stages, sized for every [`Stage`] (and
+    /// the glossy frame's second denoise, [`TIMED_PASSES`]); `None`
     /// where the frame times by the host's clock.
     timer: Option<Timer>,
     /// The stages the last timestamped recording timed, in order.
@@ -558,7 +564,7 @@ impl GpuVplFrame {
             // A software adapter's timestamps do not bracket the work its
             // worker threads do (lavapipe reports microseconds for
             // 10⁸-evaluation dispatches): time it by the clock instead.
-            timer: if gpu.adapter.device_type == wgpu::DeviceType::Cpu { None } else { Timer::new(gpu, Stage::ALL.len() as u32) },
+            timer: if gpu.adapter.device_type == wgpu::DeviceType::Cpu { None } else { Timer::new(gpu, TIMED_PASSES) },
             timed_stages: Vec::new(),
         };
         gpu.take_errors()?;
@@ -602,7 +608,7 @@ impl GpuVplFrame {
     /// on lavapipe this way). Returns whether timestamps are now used:
     /// never without the device's `TIMESTAMP_QUERY`.
     pub fn use_timestamps(&mut self, on: bool) -> bool {
-        self.timer = if on { Timer::new(&self.gpu, Stage::ALL.len() as u32) } else { None };
+        self.timer = if on { Timer::new(&self.gpu, TIMED_PASSES) } else { None };
         self.timed_stages.clear();
         self.timer.is_some()
     }

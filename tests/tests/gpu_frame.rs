@@ -315,6 +315,19 @@ fn timestamp_path_times_every_stage() {
     assert_eq!(out.stages.iter().map(|t| t.stage).collect::<Vec<_>>(), want);
     assert!(!frame.use_timestamps(false));
     assert_eq!(frame.stage_times().unwrap(), None);
+    // The glossy frame denoises twice (irradiance, then the specular
+    // correction): two denoise stages, each timed.
+    let desc = FrameDesc { width: 32, height: 32, rsm_size: 16, shadow_size: 64, min_distance: None };
+    let mut frame = GpuVplFrame::new(gpu, &Scene::cornell_box_glossy(), &desc).unwrap();
+    assert!(frame.use_timestamps(true));
+    let s = on(&frame, &settings(VplMethod::Slc, true));
+    let out = frame.render(&s).unwrap();
+    let want: Vec<Stage> = all.iter().flat_map(|&st| if st == Stage::Denoise { vec![st, st] } else { vec![st] }).collect();
+    assert_eq!(out.stages.iter().map(|t| t.stage).collect::<Vec<_>>(), want, "every stage, the denoise twice");
+    let mut enc = gpu.device.create_command_encoder(&Default::default());
+    assert!(frame.record_timed(&mut enc, &s).unwrap());
+    gpu.queue.submit([enc.finish()]);
+    assert_eq!(frame.stage_times().unwrap().expect("timed").len(), want.len());
 }
 
 slc_tests::harness!(
