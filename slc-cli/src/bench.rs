@@ -249,7 +249,7 @@ fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
     let inputs = frame.read_inputs()?;
     let mut all = slc_wgpu::vpl::GpuVpl::new(&gpu, &inputs)?;
     let shaded = all.shade(&VplSettings { method: VplMethod::Reference, ..warm })?;
-    let reference = frame.compose_with(&inputs, &shaded.irradiance)?;
+    let reference = frame.compose_with(&inputs, &shaded.irradiance, &shaded.specular)?;
     bar.inc(1);
     let mut runs = Vec::new();
     let mut timing = slc_scene::backend::Timing::Wall;

@@ -391,7 +391,9 @@ pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> anyhow::Result<(
 /// depth in an `R32Float` texture: naga's GLSL backend cannot load from a
 /// depth texture), `vpl_tiled_{slc,clamp,none}` and the VPL frame's
 /// kernels (the raster kernel's GLSL as one file per entry point,
-/// `scene_raster.vs_main.glsl` …).
+/// `scene_raster.vs_main.glsl` …), and the glossy variants of the VPL
+/// kernels that have one (`vpl_tiled_{slc,clamp,none}_glossy`,
+/// `vpl_near_glossy`, `irradiance_export_glossy`, `frame_compose_glossy`).
 fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
     use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, Selection, SurfaceSource, generate_module, translate};
     let lights = LightSet::parse(lights)?;
@@ -420,6 +422,15 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
         Kernel::FrameCompose,
     ] {
         jobs.push((k.name().to_string(), k, Features { lights: vpl, ..base }));
+    }
+    // The glossy variants (Features::glossy): the glTF BRDF at glossy
+    // receivers, the specular correction beside the irradiance.
+    let glossy = Features { lights: vpl, glossy: true, ..base };
+    for (m, name) in [(CullMethod::Slc, "slc"), (CullMethod::Clamp, "clamp"), (CullMethod::None, "none")] {
+        jobs.push((format!("vpl_tiled_{name}_glossy"), Kernel::VplTiled, Features { method: m, ..glossy }));
+    }
+    for k in [Kernel::VplNear, Kernel::IrradianceExport, Kernel::FrameCompose] {
+        jobs.push((format!("{}_glossy", k.name()), k, glossy));
     }
     let write = |name: &str, ext: &str, bytes: &[u8]| {
         let p = out.join(format!("{name}.{ext}"));

@@ -269,7 +269,7 @@ fn gltf_and_glossy_scenes_render() {
 fn shaders_command_exports_every_kernel() {
     let d = tempdir("shaders");
     let text = ok(&d, &["shaders", "--out", "k", "--lights", "point,triangle"]);
-    assert!(text.contains("17 kernels"), "{text}");
+    assert!(text.contains("23 kernels"), "{text}");
     for entry in ["vs_main", "fs_gbuffer", "fs_rsm", "fs_shadow"] {
         let p = d.join("k").join(format!("scene_raster.{entry}.glsl"));
         assert!(std::fs::metadata(&p).map(|m| m.len() > 100).unwrap_or(false), "{} missing or empty", p.display());
@@ -277,6 +277,8 @@ fn shaders_command_exports_every_kernel() {
     let names = ["light_update", "bsh_refit", "bsh_reservoir", "pt_connect", "pt_extend", "light_ranges", "direct_light"];
     let names = names.into_iter().chain(["vpl_tiled_slc", "vpl_tiled_clamp", "vpl_tiled_none"]);
     let frame = ["vpl_denoise", "vpl_near", "vpl_pack", "irradiance_export", "primary_direct", "frame_compose"];
+    let glossy = ["vpl_tiled_slc_glossy", "vpl_tiled_clamp_glossy", "vpl_tiled_none_glossy", "vpl_near_glossy", "irradiance_export_glossy"];
+    let frame = frame.into_iter().chain(glossy).chain(["frame_compose_glossy"]);
     for name in names.into_iter().chain(frame) {
         for ext in ["wgsl", "spv", "glsl", "hlsl", "metal"] {
             let p = d.join("k").join(format!("{name}.{ext}"));
@@ -330,6 +332,20 @@ fn gpu_backend_renders_like_cpu() {
         assert!(r["rmse"].as_f64().unwrap().is_finite());
         assert!(r["stages"].as_array().unwrap().iter().any(|s| s["name"] == "shading"), "{r}");
     }
+    std::fs::remove_dir_all(&d).ok();
+}
+
+/// `slc render --scene cornell-glossy --backend gpu` shades the glossy
+/// surfaces with the glTF BRDF as the CPU does: RMSE(CPU, GPU) ≤ 0.01
+/// (observed 0.0028 at 48×32, 4,096 VPLs, undenoised; the same frame
+/// shaded matte on the GPU, as before the glossy pass, is 0.058 off the
+/// CPU's, so the bound fails it). Declared `Gpu`.
+fn gpu_glossy_render_is_glossy() {
+    let d = tempdir("gpuglossy");
+    let small = ["--scene", "cornell-glossy", "--width", "48", "--height", "32", "--vpls", "4096", "--no-denoise"];
+    ok(&d, &[&["render", "--backend", "gpu", "--out", "g.exr", "--shadow-size", "512"][..], &small].concat());
+    ok(&d, &[&["render", "--backend", "cpu", "--out", "c.exr"][..], &small].concat());
+    ok(&d, &["diff", "c.exr", "g.exr", "--max-rmse", "0.01"]);
     std::fs::remove_dir_all(&d).ok();
 }
 
@@ -577,6 +593,7 @@ slc_tests::harness!(
     Cpu: gltf_and_glossy_scenes_render,
     Cpu: shaders_command_exports_every_kernel,
     Gpu: gpu_backend_renders_like_cpu,
+    Gpu: gpu_glossy_render_is_glossy,
     Gpu: gpu_start_up_is_quiet,
     Gpu: gpu_path_tracer_renders_and_benches,
     Cpu: path_tracer_renders,

@@ -157,6 +157,24 @@ crate::shared! {
         return diffuse_brdf(base, metallic, f0_d, f90_d, v_h) + specular_brdf(base, metallic, f0_d, f90_d, alpha, n, v, l);
     }
 
+    /// `c_diff = (1 − m)·b`, the part of base colour `b` that the
+    /// diffuse lobe of glTF's implementation form reflects (a metal has
+    /// none): the albedo a receiver's Lambertian VPL irradiance is
+    /// composed with ([`specular_correction`] holds the rest of its BRDF).
+    pub fn diffuse_albedo(base: vec3f, metallic: f32) -> vec3f {
+        return base * (1.0 - metallic);
+    }
+
+    /// The VPL application's specular correction of a receiver toward the
+    /// unit light direction `l` (unit normal `n`, unit view `v`): the whole
+    /// BRDF less the Lambertian part its irradiance is already composed
+    /// with, `f(v, l) − c_diff/π` ([`brdf_eval`], [`diffuse_albedo`]), so
+    /// that `c_diff/π · E + Σ Φ ⊙ (f − c_diff/π)·T` over the same lights,
+    /// weights and transfer `T` is the BRDF's outgoing radiance.
+    pub fn specular_correction(base: vec3f, metallic: f32, f0_d: vec3f, f90_d: f32, alpha: f32, n: vec3f, v: vec3f, l: vec3f) -> vec3f {
+        return brdf_eval(base, metallic, f0_d, f90_d, alpha, n, v, l) - diffuse_albedo(base, metallic) * INV_PI;
+    }
+
     /// `true` when the material has a specular lobe (a metal, or a
     /// dielectric with Fresnel reflectance); a Lambertian material has none
     /// and every function here reduces to `b/π` and cosine sampling.

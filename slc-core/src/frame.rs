@@ -5,6 +5,7 @@
 //! the composition `L = L_e + ρ/π · E` (Dachsbacher & Stamminger,
 //! "Reflective Shadow Maps", I3D 2005; DESIGN.md §4).
 
+use crate::brdf::diffuse_albedo;
 use crate::light::{INV_PI, MIN_D2, inverse_square};
 use crate::wgsl::*;
 
@@ -111,6 +112,17 @@ crate::shared! {
     /// emission `emission` under irradiance `e`: `L_e + ρ/π · E`.
     pub fn diffuse_radiance(albedo: vec3f, emission: vec3f, e: vec3f) -> vec3f {
         return emission + albedo * INV_PI * e;
+    }
+
+    /// Outgoing radiance of a receiver with a specular lobe in the VPL
+    /// frame: base colour `base`, metallic `metallic`, emission
+    /// `emission`, the primary light's direct irradiance `direct` (shaded
+    /// Lambertian, as [`diffuse_radiance`] shades it), the VPLs'
+    /// irradiance `indirect` and their specular correction `specular`
+    /// (`Σ Φ ⊙ (f − c_diff/π)·T`, [`crate::brdf::specular_correction`]):
+    /// `L_e + b/π · E_direct + c_diff/π · E_indirect + S`.
+    pub fn glossy_radiance(base: vec3f, emission: vec3f, metallic: f32, direct: vec3f, indirect: vec3f, specular: vec3f) -> vec3f {
+        return diffuse_radiance(base, emission, direct) + diffuse_albedo(base, metallic) * INV_PI * indirect + specular;
     }
 }
 

@@ -285,7 +285,7 @@ impl Specular {
     /// ([`Shaded::specular`] holds the rest of its BRDF): the metal has
     /// no diffuse lobe, so its VPL light is all in the correction.
     pub fn diffuse_albedo(&self, base: Vec3) -> Vec3 {
-        base * (1.0 - self.metallic)
+        slc_core::brdf::diffuse_albedo(base, self.metallic)
     }
 }
 

@@ -115,6 +115,17 @@ fn gbuffer_in(first: u32, source: SurfaceSource) -> [Binding; 3] {
     [view_uniform(first), surface(first + 1, source), texture(first + 2, "normal_tex", "world normal (xyz)", "engine (G-buffer)")]
 }
 
+/// The glossy VPL kernels' material table ([`Features::glossy`]).
+const fn materials(binding: u32) -> Binding {
+    read(
+        binding,
+        "materials",
+        "array<GpuMaterial>",
+        "glossy variant: glTF metallic-roughness per material (a pixel's index: its normal's w)",
+        "host or engine",
+    )
+}
+
 /// The bindings of `kernel` specialised to `f`, in declaration order.
 pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
     let ies = f.lights.ies;
@@ -149,6 +160,12 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
                 read(6, "r2", "array<f32>", "random range² (clamp: R²)", "`light_update` or `vpl_pack`"),
                 write(7, "irradiance", vec4, "irradiance (rgb), lights kept (w); 0 where no surface is"),
             ]);
+            if f.glossy {
+                v.extend([
+                    materials(8),
+                    write(9, "specular", vec4, "glossy variant: specular correction `S` (rgb); 0 where no surface with a specular lobe is"),
+                ]);
+            }
             v
         }
         Kernel::VplDenoise => {
@@ -168,6 +185,9 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
                 read(8, "r2", "array<f32>", "range² (as `vpl_tiled`'s)", "`light_update` (SLC) or `vpl_pack`"),
                 write(9, "irradiance", vec4, "the (denoised) far field, the near field added"),
             ]);
+            if f.glossy {
+                v.extend([materials(10), write(11, "specular", vec4, "glossy variant: the (denoised) far field's `S`, the near field's added")]);
+            }
             v
         }
         Kernel::BshReservoir => {
@@ -286,6 +306,19 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
                 read(3, "irradiance", vec4, "irradiance (rgb), lights kept (w)", "`vpl_tiled`, `vpl_denoise`, `vpl_near`"),
                 out(4, "irradiance (rgb), lights kept (a); 0 where no surface is"),
             ]);
+            if f.glossy {
+                v.extend([
+                    read(5, "specular", vec4, "glossy variant: specular correction `S` (rgb)", "`vpl_tiled`, `vpl_denoise`, `vpl_near`"),
+                    b(
+                        0,
+                        6,
+                        "specular_tex",
+                        Resource::StorageTexture(f.output_format),
+                        "glossy variant: specular correction `S` (rgb); 0 where no surface is",
+                        "this kernel",
+                    ),
+                ]);
+            }
             v
         }
         Kernel::SceneRaster => vec![
@@ -307,8 +340,18 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             texture(3, "indirect_tex", "indirect irradiance", "`irradiance_export`"),
             read(4, "direct", vec4, "direct irradiance", "`primary_direct`"),
             read(5, "materials", "array<GpuMaterial>", "albedo and emission per material", "host"),
-            out(6, "radiance `L_e + ρ/π·(E_direct + E_indirect)`"),
-        ],
+            out(
+                6,
+                if f.glossy {
+                    "radiance `L_e + ρ/π·(E_direct + E_indirect)`; with a specular lobe `L_e + ρ/π·E_direct + c_diff/π·E_indirect + S`"
+                } else {
+                    "radiance `L_e + ρ/π·(E_direct + E_indirect)`"
+                },
+            ),
+        ]
+        .into_iter()
+        .chain(f.glossy.then(|| texture(7, "specular_tex", "glossy variant: specular correction `S` of the VPLs", "`irradiance_export`")))
+        .collect(),
     };
     v.push(ies_table(ies && kernel == Kernel::BshReservoir));
     v
@@ -399,12 +442,13 @@ pub fn counts(bindings: &[Binding]) -> BindingCounts {
 }
 
 /// Every kernel's binding table as Markdown, for the feature sets the
-/// backends use: the VPL kernels for VPLs, the direct pass's kernel with
+/// backends use: the VPL kernels for VPLs (their glossy variant,
+/// [`Features::glossy`], whose extra bindings say so), the direct pass's kernel with
 /// weighted picks of IES lights from a depth buffer with split outputs,
 /// the others with [`Features::default`].
 pub fn docs() -> String {
     use crate::LightSet;
-    let vpl = Features { lights: LightSet { vpl: true, ..LightSet::default() }, ..Features::default() };
+    let vpl = Features { lights: LightSet { vpl: true, ..LightSet::default() }, glossy: true, ..Features::default() };
     let direct = Features {
         selection: Selection::Weighted,
         surface: SurfaceSource::Depth,

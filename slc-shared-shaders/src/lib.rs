@@ -400,6 +400,16 @@ pub struct Features {
     /// What `direct_light` writes (with a material input unless
     /// `Irradiance`).
     pub direct_output: DirectOutput,
+    /// The VPL kernels' glossy variant (the glTF BRDF at glossy
+    /// receivers): `vpl_tiled` and `vpl_near` read each pixel's material
+    /// from `materials` (its index in the normal texture's w) and, where it
+    /// has a specular lobe, add the specular correction `S = Σ Φ ⊙
+    /// (f − c_diff/π)·T·share` (slc-core's `specular_correction`) over
+    /// the same kept VPLs to `specular`; `irradiance_export` also writes
+    /// `S` to `specular_tex`; `frame_compose` adds it
+    /// (`glossy_radiance`). `vpl_denoise` is the same kernel for `S`.
+    /// `false`: Lambertian kernels (`ρ/π·E`), unchanged.
+    pub glossy: bool,
 }
 
 impl Default for Features {
@@ -419,11 +429,12 @@ impl Default for Features {
             shadows: true,
             surface: SurfaceSource::Position,
             direct_output: DirectOutput::Irradiance,
+            glossy: false,
         }
     }
 }
 
-const TEMPLATES: [(&str, &str); 26] = [
+const TEMPLATES: [(&str, &str); 27] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("workgroup_box.wgsl", include_str!("templates/workgroup_box.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
@@ -445,6 +456,7 @@ const TEMPLATES: [(&str, &str); 26] = [
     ("primary_direct", include_str!("templates/primary_direct.wgsl")),
     ("frame_compose", include_str!("templates/frame_compose.wgsl")),
     ("gbuffer_read.wgsl", include_str!("templates/gbuffer_read.wgsl")),
+    ("vpl_glossy.wgsl", include_str!("templates/vpl_glossy.wgsl")),
     ("bsh_weighted.wgsl", include_str!("templates/bsh_weighted.wgsl")),
     ("light_weight.wgsl", include_str!("templates/light_weight.wgsl")),
     ("light_ranges", include_str!("templates/light_ranges.wgsl")),
@@ -591,6 +603,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         source => match features.vpl_source { VplSource::Rsm => "rsm", VplSource::Buffer => "buffer" },
         out_format => features.output_format.wgsl(),
         shadows => features.shadows,
+        glossy => features.glossy,
         pbr => match features.direct_output { DirectOutput::Irradiance => "none", DirectOutput::Radiance => "radiance", DirectOutput::Split => "split" },
         surface => match features.surface { SurfaceSource::Position => "position", SurfaceSource::Depth => "depth", SurfaceSource::R32Depth => "r32" },
         bindings => bindings::declarations(&bindings::bindings(kernel, features)),

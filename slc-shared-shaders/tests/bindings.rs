@@ -20,7 +20,9 @@ fn feature_sets() -> Vec<Features> {
                 (false, VplSource::Buffer, DirectOutput::Split),
                 (true, VplSource::Rsm, DirectOutput::Radiance),
             ] {
-                v.push(Features { lights, selection, surface, shadows, vpl_source, direct_output, ..Features::default() });
+                // The glossy VPL kernels with the split direct output.
+                let glossy = direct_output == DirectOutput::Split;
+                v.push(Features { lights, selection, surface, shadows, vpl_source, direct_output, glossy, ..Features::default() });
             }
         }
     }

@@ -23,6 +23,13 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
         ("vpl_denoise-tile8", Kernel::VplDenoise, Features { lights: vpl, ..Features::default() }),
         ("vpl_near-slc-tile8-p8", Kernel::VplNear, Features { lights: vpl, ..Features::default() }),
         ("vpl_near-clamp-tile8-p8", Kernel::VplNear, Features { lights: vpl, method: CullMethod::Clamp, ..Features::default() }),
+        ("vpl_tiled-slc-tile8-p8-glossy", Kernel::VplTiled, Features { lights: vpl, glossy: true, ..Features::default() }),
+        (
+            "vpl_tiled-none-tile8-p1-glossy",
+            Kernel::VplTiled,
+            Features { lights: vpl, method: CullMethod::None, interleave: 1, glossy: true, ..Features::default() },
+        ),
+        ("vpl_near-slc-tile8-p8-glossy", Kernel::VplNear, Features { lights: vpl, glossy: true, ..Features::default() }),
         (
             "bsh_reservoir-point-spot-ies-k8",
             Kernel::BshReservoir,
@@ -55,6 +62,16 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
         ("scene_raster", Kernel::SceneRaster, Features { lights: vpl, ..Features::default() }),
         ("primary_direct", Kernel::PrimaryDirect, Features { lights: vpl, ..Features::default() }),
         ("frame_compose-rgba16float", Kernel::FrameCompose, Features { lights: vpl, ..Features::default() }),
+        (
+            "frame_compose-rgba32float-glossy",
+            Kernel::FrameCompose,
+            Features { lights: vpl, output_format: OutputFormat::Rgba32Float, glossy: true, ..Features::default() },
+        ),
+        (
+            "irradiance_export-rgba32float-glossy",
+            Kernel::IrradianceExport,
+            Features { lights: vpl, output_format: OutputFormat::Rgba32Float, glossy: true, ..Features::default() },
+        ),
         ("light_ranges", Kernel::LightRanges, Features::default()),
         (
             "direct_light-point-spot-weighted-r32depth",

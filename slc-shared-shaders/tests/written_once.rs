@@ -47,6 +47,9 @@ fn templates_do_not_contain_core_formulas() {
         "size / 2u",
         "cross(l.p2",
         "d2 < r2",
+        // The VPL frame's glossy composition (c_diff = (1 - m) b).
+        "1.0 - m.metallic",
+        "(1.0 - metallic)",
     ];
     let mut n = 0;
     for (name, src) in slc_shared_shaders::templates() {
@@ -55,7 +58,7 @@ fn templates_do_not_contain_core_formulas() {
         }
         n += 1;
     }
-    assert_eq!(n, 25);
+    assert_eq!(n, 26);
 }
 
 /// The guard that catches the next copy: a template composes the core's

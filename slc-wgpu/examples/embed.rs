@@ -348,6 +348,7 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
             gbuffer,
             vpls: VplInput::Rsm { position: &rsm_views[0], normal: &rsm_views[1], flux: &rsm_views[2] },
             output: &output_view,
+            materials: None,
         };
         pass.record(&mut encoder, &inputs, &slc_wgpu::frame::indirect_settings(&settings, min_distance)?)?;
         let culling = slc_wgpu::Culling::Stochastic(RangeParams::new(settings.error_bound, settings.exposure)?);

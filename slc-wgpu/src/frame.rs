@@ -6,7 +6,12 @@
 //! ξ, tiled SLC shading per 8×8 interleaved sub-image, cross-bilateral
 //! denoise), the primary light's direct term shadowed by the shadow map
 //! (`primary_direct`) and the composition `L_e + ρ/π·(E_direct +
-//! E_indirect)` into an `Rgba32Float` HDR target (`frame_compose`). Pixels
+//! E_indirect)` into an `Rgba32Float` HDR target (`frame_compose`). A
+//! scene with glossy materials (a specular lobe: metals, dielectrics with
+//! Fresnel reflectance) builds the pass glossy ([`IndirectPassDesc::glossy`],
+//! the frame's material table and the G-buffer's material index): its
+//! glossy pixels take `L_e + ρ/π·E_direct + c_diff/π·E_indirect + S`, `S`
+//! the VPLs' specular correction, as the CPU frame composes them. Pixels
 //! come back only when asked for ([`GpuVplFrame::render`]; an engine or a
 //! viewer records [`GpuVplFrame::record`] and samples
 //! [`GpuVplFrame::output`]).
@@ -39,11 +44,12 @@
 use crate::kernel::{KernelLayout, Timer, check_kernels, read_back, storage, zeroed};
 use crate::passes::indirect::Dispatch;
 use crate::passes::{
-    Culling, GBuffer, IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, VplInput, VplSourceDesc,
+    Culling, GBuffer, IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, VplInput,
+    VplSourceDesc,
 };
 use crate::{GpuContext, GpuError};
 use glam::{Mat4, Vec3, Vec4};
-use slc_core::frame::diffuse_radiance;
+use slc_core::frame::{diffuse_radiance, glossy_radiance};
 use slc_scene::backend::Timing;
 use slc_scene::image::Image;
 use slc_scene::scene::{LightMap, Material, PrimaryLight, Scene};
@@ -96,7 +102,8 @@ pub enum Stage {
     LightUpdate,
     /// Tiled SLC shading of the interleaved sub-images.
     Shading,
-    /// The cross-bilateral filter.
+    /// The cross-bilateral filter (twice in a glossy frame: the
+    /// irradiance, then the specular correction).
     Denoise,
     /// The near field of the VPL split.
     NearField,
@@ -141,6 +148,10 @@ impl Stage {
         }
     }
 }
+
+/// Timestamp pairs a frame's timer holds: one per stage, and one more
+/// for the glossy frame's second denoise (the specular correction's).
+const TIMED_PASSES: u32 = Stage::ALL.len() as u32 + 1;
 
 /// One stage's time.
 #[derive(Clone, Debug, PartialEq)]
@@ -285,6 +296,9 @@ pub struct GpuVplFrame {
     /// The clamp distance of the last recorded frame ([`Self::read_inputs`]).
     recorded_min_distance: f32,
     materials: Vec<Material>,
+    /// The materials as the kernels read them (raster, composition, the
+    /// glossy indirect pass).
+    material_table: wgpu::Buffer,
     vertices: wgpu::Buffer,
     vertex_count: u32,
     bounds: (Vec3, Vec3),
@@ -301,13 +315,16 @@ pub struct GpuVplFrame {
     shadow_map: [Target; 2],
     indirect: IndirectPass,
     irradiance: Target,
+    /// The VPLs' specular correction (a scene with glossy materials).
+    specular: Option<Target>,
     direct: wgpu::Buffer,
     direct_pipeline: wgpu::ComputePipeline,
     direct_group: wgpu::BindGroup,
     compose_pipeline: wgpu::ComputePipeline,
     compose_group: wgpu::BindGroup,
     output: Target,
-    /// GPU timestamps around the stages, sized for every [`Stage`]; `None`
+    /// GPU timestamps around the stages, sized for every [`Stage`] (and
+    /// the glossy frame's second denoise, [`TIMED_PASSES`]); `None`
     /// where the frame times by the host's clock.
     timer: Option<Timer>,
     /// The stages the last timestamped recording timed, in order.
@@ -330,18 +347,25 @@ impl GpuVplFrame {
         }
         gpu.require("max_texture_dimension_2d", w.max(h).max(size).max(shadow) as u64, lim.max_texture_dimension_2d as u64)?;
         gpu.require("max_color_attachments", 3, lim.max_color_attachments as u64)?;
-        gpu.require("max_color_attachment_bytes_per_sample", 32, lim.max_color_attachment_bytes_per_sample as u64)?;
+        // The RSM's targets: position and flux Rgba32Float, normal Rgba16Float.
+        gpu.require("max_color_attachment_bytes_per_sample (RSM)", 16 + 8 + 16, lim.max_color_attachment_bytes_per_sample as u64)?;
         gpu.require("max_storage_buffers_per_shader_stage (fragment)", 1, lim.max_storage_buffers_per_shader_stage as u64)?;
         let vertex_bytes = scene.triangles.len() as u64 * 3 * std::mem::size_of::<GpuVertex>() as u64;
         gpu.require("max_buffer_size (vertices)", vertex_bytes, lim.max_buffer_size)?;
         let features = Features { lights: LightSet { vpl: true, ..LightSet::default() }, tile_size: TILE, interleave: PERIOD, ..Features::default() };
-        let compose_features = Features { output_format: OutputFormat::Rgba32Float, ..features };
+        // Glossy materials: the indirect pass's and the composition's glossy kernels.
+        let glossy = scene.materials.iter().any(|m| Specular::of(m).has_specular());
+        let compose_features = Features { output_format: OutputFormat::Rgba32Float, glossy, ..features };
         check_kernels(
             gpu,
             &[(Kernel::SceneRaster, &features, 0), (Kernel::PrimaryDirect, &features, 0), (Kernel::FrameCompose, &compose_features, 0)],
         )?;
-        let indirect_desc =
-            IndirectPassDesc { surface: SurfaceDesc::Position, output_format: F32, ..IndirectPassDesc::new(w, h, VplSourceDesc::Rsm { size }) };
+        let indirect_desc = IndirectPassDesc {
+            surface: SurfaceDesc::Position,
+            output_format: F32,
+            glossy,
+            ..IndirectPassDesc::new(w, h, VplSourceDesc::Rsm { size })
+        };
         // The indirect pass checks its own limits before it creates
         // anything; built first, so that no raster pipeline precedes them.
         let indirect = IndirectPass::new(gpu, &indirect_desc)?;
@@ -473,6 +497,7 @@ impl GpuVplFrame {
         let sampled_storage = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
         let irradiance = target(gpu, "slc frame irradiance", (w, h), F32, sampled_storage);
         let output = target(gpu, "slc frame output", (w, h), F32, sampled_storage);
+        let specular = glossy.then(|| target(gpu, "slc frame specular", (w, h), F32, sampled_storage));
 
         // Direct light and composition: fixed resources, bound once.
         let direct = zeroed(gpu, "slc frame direct", w as u64 * h as u64 * 16, wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC);
@@ -492,19 +517,19 @@ impl GpuVplFrame {
         );
         let compose_layout = KernelLayout::new(gpu, Kernel::FrameCompose, &compose_features)?;
         let compose_pipeline = compose_layout.pipeline(gpu, &compose_features, None)?;
-        let compose_group = compose_layout.group(
-            gpu,
-            0,
-            &[
-                ("image", image_params.as_entire_binding()),
-                ("position_tex", tex(&gb[0])),
-                ("normal_tex", tex(&gb[1])),
-                ("indirect_tex", tex(&irradiance)),
-                ("direct", direct.as_entire_binding()),
-                ("materials", materials.as_entire_binding()),
-                ("out_tex", tex(&output)),
-            ],
-        );
+        let mut compose_res = vec![
+            ("image", image_params.as_entire_binding()),
+            ("position_tex", tex(&gb[0])),
+            ("normal_tex", tex(&gb[1])),
+            ("indirect_tex", tex(&irradiance)),
+            ("direct", direct.as_entire_binding()),
+            ("materials", materials.as_entire_binding()),
+            ("out_tex", tex(&output)),
+        ];
+        if let Some(sp) = &specular {
+            compose_res.push(("specular_tex", tex(sp)));
+        }
+        let compose_group = compose_layout.group(gpu, 0, &compose_res);
         let s = GpuVplFrame {
             gpu: gpu.clone(),
             desc: *desc,
@@ -512,6 +537,7 @@ impl GpuVplFrame {
             min_distance,
             recorded_min_distance: min_distance,
             materials: scene.materials.clone(),
+            material_table: materials,
             vertices,
             vertex_count: verts.len() as u32,
             bounds: (lo, hi),
@@ -528,6 +554,7 @@ impl GpuVplFrame {
             shadow_map,
             indirect,
             irradiance,
+            specular,
             direct,
             direct_pipeline,
             direct_group,
@@ -537,7 +564,7 @@ impl GpuVplFrame {
             // A software adapter's timestamps do not bracket the work its
             // worker threads do (lavapipe reports microseconds for
             // 10⁸-evaluation dispatches): time it by the clock instead.
-            timer: if gpu.adapter.device_type == wgpu::DeviceType::Cpu { None } else { Timer::new(gpu, Stage::ALL.len() as u32) },
+            timer: if gpu.adapter.device_type == wgpu::DeviceType::Cpu { None } else { Timer::new(gpu, TIMED_PASSES) },
             timed_stages: Vec::new(),
         };
         gpu.take_errors()?;
@@ -581,7 +608,7 @@ impl GpuVplFrame {
     /// on lavapipe this way). Returns whether timestamps are now used:
     /// never without the device's `TIMESTAMP_QUERY`.
     pub fn use_timestamps(&mut self, on: bool) -> bool {
-        self.timer = if on { Timer::new(&self.gpu, Stage::ALL.len() as u32) } else { None };
+        self.timer = if on { Timer::new(&self.gpu, TIMED_PASSES) } else { None };
         self.timed_stages.clear();
         self.timer.is_some()
     }
@@ -637,6 +664,7 @@ impl GpuVplFrame {
             gbuffer: GBuffer { surface: Surface::Position(&self.gb[0].view), normal: &self.gb[1].view, eye: self.eye },
             vpls: VplInput::Rsm { position: &self.rsm[0].view, normal: &self.rsm[1].view, flux: &self.rsm[2].view },
             output: &self.irradiance.view,
+            materials: self.specular.as_ref().map(|sp| IndirectMaterials { table: &self.material_table, specular: &sp.view }),
         };
         let indirect = self.indirect.dispatches(&inputs, st)?;
         self.recorded_min_distance = st.min_distance;
@@ -804,17 +832,30 @@ impl GpuVplFrame {
     }
 
     /// The image this frame would show with indirect irradiance
-    /// `indirect` (e.g. the reference's, shaded from [`Self::read_inputs`])
-    /// instead of its own: `L_e + ρ/π·(E_direct + E)` on the host with the
-    /// last frame's G-buffer and direct light.
-    pub fn compose_with(&self, inputs: &VplInputs, indirect: &[Vec3]) -> Result<Image, GpuError> {
+    /// `indirect` and specular correction `specular` (e.g. the
+    /// reference's [`Shaded`](slc_scene::vpl::Shaded), shaded from
+    /// [`Self::read_inputs`]) instead of its own: `L_e + ρ/π·(E_direct +
+    /// E)` on the host with the last frame's G-buffer and direct light, and
+    /// at pixels with a specular lobe `L_e + ρ/π·E_direct + c_diff/π·E +
+    /// S` (as the frame composes them; `specular` empty: every pixel
+    /// Lambertian).
+    pub fn compose_with(&self, inputs: &VplInputs, indirect: &[Vec3], specular: &[Vec3]) -> Result<Image, GpuError> {
         let direct = self.read_direct()?;
         let gb = &inputs.gbuffer;
-        if indirect.len() != direct.len() || gb.position.len() != direct.len() {
-            return Err(GpuError::Setting(format!("{} irradiance values for {} pixels", indirect.len(), direct.len())));
+        if indirect.len() != direct.len() || gb.position.len() != direct.len() || !(specular.is_empty() || specular.len() == direct.len()) {
+            return Err(GpuError::Setting(format!(
+                "{} irradiance and {} specular values for {} pixels",
+                indirect.len(),
+                specular.len(),
+                direct.len()
+            )));
         }
         let data = (0..direct.len())
-            .map(|i| if gb.valid(i) { diffuse_radiance(gb.albedo[i], gb.emission[i], direct[i] + indirect[i]) } else { Vec3::ZERO })
+            .map(|i| match (gb.valid(i), gb.specular_at(i).filter(|_| !specular.is_empty())) {
+                (false, _) => Vec3::ZERO,
+                (true, None) => diffuse_radiance(gb.albedo[i], gb.emission[i], direct[i] + indirect[i]),
+                (true, Some(s)) => glossy_radiance(gb.albedo[i], gb.emission[i], s.metallic, direct[i], indirect[i], specular[i]),
+            })
             .collect();
         Ok(Image { width: gb.width, height: gb.height, data })
     }

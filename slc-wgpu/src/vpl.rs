@@ -15,17 +15,28 @@
 //! `r² = r_t²/(1 − ξ)` from the host between the pass's `vpl_pack` and its
 //! shading instead of running `light_update`. The CPU's `tile` (its tile
 //! size) has no GPU counterpart: the kernels' tiles are [`TILE`] pixels.
+//!
+//! A G-buffer with specular lobes ([`slc_scene::vpl::GBuffer::has_specular`])
+//! builds the pass glossy ([`IndirectPassDesc::glossy`]): the pixels' glTF
+//! materials are uploaded as a material table (one entry per distinct
+//! material, its index in the normal texture's `w`), and
+//! [`Shaded::specular`] comes back as the CPU's does (the specular
+//! correction at the pixels with a specular lobe, zero elsewhere; denoised
+//! on the GPU when the irradiance is).
 
 use crate::kernel::Timer;
+use crate::kernel::storage;
 use crate::passes::{
-    Culling, GBuffer, IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, VplInput, VplSourceDesc,
+    Culling, GBuffer, IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, VplInput,
+    VplSourceDesc,
 };
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use slc_core::light::vpl_threshold_range2;
 use slc_core::range::random_range2;
 use slc_scene::backend::IndirectShader;
-use slc_scene::vpl::{Shaded, VplInputs, VplMethod, VplSettings};
+use slc_scene::vpl::{Shaded, Specular, VplInputs, VplMethod, VplSettings};
+use slc_shared_shaders::layout::GpuMaterial;
 use std::time::Instant;
 
 /// Tile edge of `vpl_tiled` in sub-image pixels.
@@ -84,6 +95,8 @@ pub struct GpuVpl {
     output_view: wgpu::TextureView,
     /// The output's read-back buffer (rows padded to the copy alignment).
     staging: wgpu::Buffer,
+    /// A glossy G-buffer's material table and specular output.
+    glossy: Option<GlossyTargets>,
     eye: Vec3,
     min_distance: f32,
     /// Pixels that see a surface.
@@ -93,6 +106,35 @@ pub struct GpuVpl {
     /// Timestamps around the timed parts; `None` where the adapter has none
     /// or is a software one, whose timestamps do not bracket the work.
     timer: Option<Timer>,
+}
+
+/// The material input of a glossy [`GpuVpl`]: the pixels' materials and
+/// the specular correction's target and read-back buffer.
+struct GlossyTargets {
+    table: wgpu::Buffer,
+    output: wgpu::Texture,
+    view: wgpu::TextureView,
+    staging: wgpu::Buffer,
+}
+
+/// The distinct materials of a G-buffer's pixels (base colour and specular
+/// lobe; emission plays no part in VPL shading) as a table, and each
+/// pixel's index into it (0 where no surface is).
+fn material_table(gb: &slc_scene::vpl::GBuffer) -> (Vec<GpuMaterial>, Vec<u32>) {
+    let mut table: Vec<GpuMaterial> = Vec::new();
+    let mut seen = std::collections::HashMap::new();
+    let index = (0..gb.position.len())
+        .map(|i| {
+            let s = if gb.valid(i) { gb.specular.get(i).copied().unwrap_or_default() } else { Specular::default() };
+            let b = if gb.valid(i) { gb.albedo[i] } else { Vec3::ZERO };
+            let key = [b.x, b.y, b.z, s.metallic, s.roughness, s.f0.x, s.f0.y, s.f0.z, s.f90].map(f32::to_bits);
+            *seen.entry(key).or_insert_with(|| {
+                table.push(GpuMaterial::new(b, Vec3::ZERO, s.metallic, s.roughness, s.f0, s.f90));
+                table.len() as u32 - 1
+            })
+        })
+        .collect();
+    (table, index)
 }
 
 impl GpuVpl {
@@ -122,11 +164,13 @@ impl GpuVpl {
         if !min_distance.is_finite() || !gb.eye.is_finite() {
             return Err(GpuError::Setting(format!("clamp distance² {} and eye {} must be finite", inputs.min_d2, gb.eye)));
         }
+        let glossy = gb.has_specular();
         let desc = IndirectPassDesc {
             surface: SurfaceDesc::Position,
             output_format: wgpu::TextureFormat::Rgba32Float,
             records_per_submission: 1,
             tile_list: capacity,
+            glossy,
             ..IndirectPassDesc::new(w, h, VplSourceDesc::Rsm { size: v.size })
         };
         // The pass checks the sizes and every limit before it creates anything.
@@ -138,7 +182,9 @@ impl GpuVpl {
         };
         let valid: Vec<bool> = (0..n).map(|i| gb.valid(i)).collect();
         let position = upload("slc vpl gb position", (w, h), (0..n).map(|i| v4(gb.position[i], valid[i] as u32 as f32)).collect());
-        let normal = upload("slc vpl gb normal", (w, h), gb.normal.iter().map(|&x| v4(x, 0.0)).collect());
+        // A glossy G-buffer: each pixel's material index in the normal's w.
+        let (table, index) = if glossy { material_table(gb) } else { (Vec::new(), vec![0; n]) };
+        let normal = upload("slc vpl gb normal", (w, h), gb.normal.iter().zip(&index).map(|(&x, &m)| v4(x, m as f32)).collect());
         let s = (v.size, v.size);
         let rsm = [
             upload("slc vpl rsm position", s, v.position.iter().map(|&x| v4(x, 1.0)).collect()),
@@ -148,6 +194,16 @@ impl GpuVpl {
         let output =
             crate::frame::rgba32_target(gpu, "slc vpl irradiance", (w, h), wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
         let staging = crate::frame::texture_staging(gpu, &output);
+        let glossy = glossy.then(|| {
+            let output =
+                crate::frame::rgba32_target(gpu, "slc vpl specular", (w, h), wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
+            GlossyTargets {
+                table: storage(gpu, "slc vpl materials", bytemuck::cast_slice(&table), wgpu::BufferUsages::empty()),
+                view: output.create_view(&Default::default()),
+                staging: crate::frame::texture_staging(gpu, &output),
+                output,
+            }
+        });
         let scale = slc_core::interleave::interleave_flux_scale(slc_scene::vpl::PERIOD);
         let g = GpuVpl {
             gpu: gpu.clone(),
@@ -159,6 +215,7 @@ impl GpuVpl {
             output_view: output.create_view(&Default::default()),
             output,
             staging,
+            glossy,
             eye: gb.eye,
             min_distance,
             valid,
@@ -206,6 +263,7 @@ impl GpuVpl {
             gbuffer: GBuffer { surface: Surface::Position(&self.position), normal: &self.normal, eye: self.eye },
             vpls: VplInput::Rsm { position: &self.rsm[0], normal: &self.rsm[1], flux: &self.rsm[2] },
             output: &self.output_view,
+            materials: self.glossy.as_ref().map(|g| IndirectMaterials { table: &g.table, specular: &g.view }),
         };
         let dispatches = pass.dispatches(&inputs, &st)?;
         // A fixed ξ: r² from the host (the core's functions, as the CPU's)
@@ -268,16 +326,15 @@ impl GpuVpl {
             kept.push(if valid { d[3] as u32 } else { 0 });
             evaluations += valid as u64 * d[3] as u64;
         }
-        Ok(Shaded {
-            irradiance,
-            near: Vec::new(),
-            specular: Vec::new(),
-            specular_near: Vec::new(),
-            kept,
-            evaluations,
-            shading_ms,
-            denoised_ms: denoise_ms,
-        })
+        let specular = match &self.glossy {
+            Some(g) => crate::frame::read_texture_via(&gpu, &g.output, &g.staging)?
+                .iter()
+                .zip(&self.valid)
+                .map(|(d, &valid)| if valid { Vec3::new(d[0], d[1], d[2]) } else { Vec3::ZERO })
+                .collect(),
+            None => Vec::new(),
+        };
+        Ok(Shaded { irradiance, near: Vec::new(), specular, specular_near: Vec::new(), kept, evaluations, shading_ms, denoised_ms: denoise_ms })
     }
 }
 

@@ -60,3 +60,13 @@ pub fn submit_and_read(gpu: &GpuContext, mut enc: wgpu::CommandEncoder, t: &wgpu
     let data: Vec<[f32; 4]> = bytemuck::cast_slice(&slice.get_mapped_range().expect("mapped")).to_vec();
     data
 }
+
+/// A storage buffer holding `materials` (a glossy indirect pass's table).
+pub fn materials(gpu: &GpuContext, materials: &[slc_wgpu::passes::GpuMaterial]) -> wgpu::Buffer {
+    use wgpu::util::DeviceExt;
+    gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("materials"),
+        contents: bytemuck::cast_slice(materials),
+        usage: wgpu::BufferUsages::STORAGE,
+    })
+}

@@ -9,7 +9,12 @@
 //!   feature) where the first records left them: recording and moving
 //!   lights create no buffer, bind group, view or pipeline;
 //! - the same of `GpuVpl`'s shades (every method, fixed ξ, the reference)
-//!   once each has run.
+//!   once each has run, Lambertian and glossy;
+//! - on a device with WebGPU's default limits (8 storage buffers per
+//!   stage), the indirect pass builds and records with its material input
+//!   (glossy: `vpl_near` then binds 8), as does the glossy `GpuVpl`, with
+//!   no validation error (`GpuVplFrame`, whose RSM needs 40 color bytes per
+//!   sample, is a typed error there).
 //!
 //! The counters hold what is alive now: they catch what accumulates, not
 //! an object made and dropped within one record (that none is made is by
@@ -81,6 +86,13 @@ fn downlevel_constructors_are_typed_errors() {
         ),
         ("GpuVpl", Box::new(|| slc_wgpu::vpl::GpuVpl::new(&gpu, cpu.inputs()).map(|_| ()))),
         (
+            "IndirectPass (RSM, glossy)",
+            Box::new(|| {
+                let desc = IndirectPassDesc { glossy: true, ..IndirectPassDesc::new(64, 64, VplSourceDesc::Rsm { size: 16 }) };
+                IndirectPass::new(&gpu, &desc).map(|_| ())
+            }),
+        ),
+        (
             "GpuDirect",
             Box::new(|| {
                 let mut d = slc_wgpu::direct::GpuDirect::new(&gpu, &set)?;
@@ -146,7 +158,7 @@ fn ten_thousand_records_allocate_nothing() {
                 } else {
                     let vpls = VplInput::Rsm { position: &rsm[0], normal: &rsm[1], flux: &rsm[2] };
                     let st = IndirectSettings { culling, frame: r, min_distance: 0.01, ..IndirectSettings::default() };
-                    indirect.record(&mut enc, &IndirectInputs { gbuffer, vpls, output }, &st).unwrap();
+                    indirect.record(&mut enc, &IndirectInputs { gbuffer, vpls, output, materials: None }, &st).unwrap();
                 }
             }
             gpu.queue.submit([enc.finish()]);
@@ -181,15 +193,16 @@ fn ten_thousand_records_allocate_nothing() {
     gpu.take_errors().unwrap();
     // The counters are the device's: the harness runs tests at once, so
     // GpuVpl's check runs here, after the soak, not as a test of its own.
-    gpu_vpl_shades_allocate_nothing(gpu);
+    gpu_vpl_shades_allocate_nothing(gpu, &Scene::cornell_box());
+    gpu_vpl_shades_allocate_nothing(gpu, &Scene::cornell_box_glossy());
 }
 
 /// `GpuVpl` records the indirect pass on inputs it uploaded once: after
 /// a first shade of each kind (the reference builds its pass then), 50
 /// more of every kind leave wgpu's counters where they were (views, bind
 /// groups, pipelines, buffers and their memory: nothing accumulates).
-fn gpu_vpl_shades_allocate_nothing(gpu: &GpuContext) {
-    let ctx = slc_cpu::vpl::VplContext::new(&Scene::cornell_box(), 16, 16, 8, None).unwrap();
+fn gpu_vpl_shades_allocate_nothing(gpu: &GpuContext, scene: &Scene) {
+    let ctx = slc_cpu::vpl::VplContext::new(scene, 16, 16, 8, None).unwrap();
     let mut gv = slc_wgpu::vpl::GpuVpl::new(gpu, ctx.inputs()).unwrap();
     let base = VplSettings { error_bound: 0.01, ..VplSettings::default() };
     let kinds = [
@@ -217,13 +230,56 @@ fn gpu_vpl_shades_allocate_nothing(gpu: &GpuContext) {
     }
     let after = counters();
     eprintln!(
-        "GpuVpl: counters (buffers, textures, views, bind groups, pipelines, buffer memory) {before:?} after the first shades, {after:?} after 250 more"
+        "GpuVpl ({}): counters (buffers, textures, views, bind groups, pipelines, buffer memory) {before:?} after the first shades, {after:?} after 250 more",
+        scene.name
     );
     assert_eq!(before, after, "shades allocated GPU objects");
     gpu.take_errors().unwrap();
 }
 
+/// WebGPU's default limits (8 storage buffers per stage, 4 storage
+/// textures): the glossy indirect pass (its `vpl_near` binds 8 storage
+/// buffers, its export 2 storage textures) under the glossy `GpuVpl`
+/// builds, records and shades with no validation error; the frame asks
+/// for more than the defaults' 32 color bytes per sample (its RSM's 40):
+/// a typed error.
+fn glossy_pass_fits_webgpu_default_limits() {
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+    let Some(adapter) = pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None)).ok() else {
+        eprintln!("SKIP: no adapter");
+        return;
+    };
+    let (device, queue) =
+        pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor { required_limits: wgpu::Limits::default(), ..Default::default() }))
+            .expect("a device with WebGPU's default limits");
+    let errors = Arc::new(AtomicUsize::new(0));
+    let seen = errors.clone();
+    device.on_uncaptured_error(Arc::new(move |e: wgpu::Error| {
+        eprintln!("validation error: {e:?}");
+        seen.fetch_add(1, Ordering::SeqCst);
+    }));
+    assert_eq!(device.limits().max_storage_buffers_per_shader_stage, 8);
+    let gpu = GpuContext::from_device(device.clone(), queue);
+    let scene = Scene::cornell_box_glossy();
+    let ctx = slc_cpu::vpl::VplContext::new(&scene, 16, 16, 8, None).unwrap();
+    let mut gv = slc_wgpu::vpl::GpuVpl::new(&gpu, ctx.inputs()).unwrap();
+    let shaded = gv.shade(&VplSettings { error_bound: 0.01, ..VplSettings::default() }).unwrap();
+    assert!(shaded.specular.iter().any(|s| s.abs().max_element() > 0.0), "no specular correction");
+    // The frame's RSM writes 40 bytes per sample (WebGPU's default: 32): a
+    // typed error, before any pipeline (it was a validation error).
+    let desc = slc_wgpu::frame::FrameDesc { width: 16, height: 16, rsm_size: 8, shadow_size: 64, min_distance: None };
+    match slc_wgpu::frame::GpuVplFrame::new(&gpu, &scene, &desc) {
+        Err(GpuError::Limit { name, need: 40, have: 32 }) if name.starts_with("max_color_attachment_bytes_per_sample") => {}
+        Err(e) => panic!("GpuVplFrame: {e}"),
+        Ok(_) => panic!("GpuVplFrame built with 32 bytes per sample"),
+    }
+    device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
+    gpu.take_errors().unwrap();
+    assert_eq!(errors.load(Ordering::SeqCst), 0, "validation errors");
+}
+
 slc_tests::harness!(
+    Gpu: glossy_pass_fits_webgpu_default_limits,
     Gpu: downlevel_constructors_are_typed_errors,
     Gpu: ten_thousand_records_allocate_nothing,
 );

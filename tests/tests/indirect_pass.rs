@@ -23,7 +23,8 @@ use slc_tests::gpu;
 use slc_wgpu::GpuContext;
 use slc_wgpu::GpuError;
 use slc_wgpu::passes::{
-    GBuffer, GpuVplRecord, IndirectInputs, IndirectPass, IndirectPassDesc, Surface, SurfaceDesc, VplInput, VplSourceDesc, vpl_buffer,
+    GBuffer, GpuMaterial, GpuVplRecord, IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, Surface, SurfaceDesc, VplInput,
+    VplSourceDesc, vpl_buffer,
 };
 use slc_wgpu::vpl::GpuVpl;
 
@@ -100,7 +101,7 @@ fn engine(gpu: &GpuContext, ctx: &VplContext) -> Engine {
 /// Records the pass into an encoder of ours, submits it and reads the
 /// output texture back.
 fn run(gpu: &GpuContext, pass: &mut IndirectPass, e: &Engine, vpls: VplInput, settings: &VplSettings) -> Vec<[f32; 4]> {
-    let inputs = IndirectInputs { gbuffer: e.gbuffer(), vpls, output: &e.output_view };
+    let inputs = IndirectInputs { gbuffer: e.gbuffer(), vpls, output: &e.output_view, materials: None };
     let st = slc_wgpu::frame::indirect_settings(settings, e.min_distance).unwrap();
     let mut enc = gpu.device.create_command_encoder(&Default::default());
     pass.record(&mut enc, &inputs, &st).unwrap();
@@ -216,7 +217,7 @@ fn wrong_inputs_are_typed_errors() {
     let bad_usage = tex((W, H), fmt, wgpu::TextureUsages::COPY_DST);
     let small_rsm = tex((RSM / 2, RSM / 2), fmt, sampled);
     let out16 = tex((W, H), wgpu::TextureFormat::Rgba16Float, wgpu::TextureUsages::STORAGE_BINDING);
-    let ok = IndirectInputs { gbuffer: e.gbuffer(), vpls: rsm, output: &e.output_view };
+    let ok = IndirectInputs { gbuffer: e.gbuffer(), vpls: rsm, output: &e.output_view, materials: None };
     assert!(pass.check(&ok).is_ok());
     let with = |surface, normal| GBuffer { surface, normal, eye: e.eye };
     let cases: [(&str, IndirectInputs); 6] = [
@@ -253,6 +254,107 @@ fn wrong_inputs_are_typed_errors() {
     let mut enc = gpu.device.create_command_encoder(&Default::default());
     let st = slc_wgpu::passes::IndirectSettings { min_distance: f32::NAN, ..slc_wgpu::passes::IndirectSettings::default() };
     assert!(matches!(pass.record(&mut enc, &ok, &st), Err(GpuError::Setting(_))));
+    // The material input: required by a glossy pass, refused by a
+    // Lambertian one, its table and specular target checked.
+    let out_usage = wgpu::TextureUsages::STORAGE_BINDING;
+    let specular = tex((W, H), fmt, out_usage);
+    let specular16 = tex((W, H), wgpu::TextureFormat::Rgba16Float, out_usage);
+    let table = slc_tests::engine::materials(gpu, &[GpuMaterial::new(Vec3::ONE, Vec3::ZERO, 1.0, 0.2, Vec3::ZERO, 0.0)]);
+    let uniform =
+        gpu.device.create_buffer(&wgpu::BufferDescriptor { label: None, size: 48, usage: wgpu::BufferUsages::UNIFORM, mapped_at_creation: false });
+    let mats = |table, specular| Some(IndirectMaterials { table, specular });
+    let mut glossy = IndirectPass::new(gpu, &IndirectPassDesc { glossy: true, ..desc }).unwrap();
+    let st = slc_wgpu::frame::indirect_settings(&settings(VplMethod::Slc, false), 0.01).unwrap();
+    assert!(glossy.check(&IndirectInputs { materials: mats(&table, &specular), ..ok }).is_ok());
+    for (on_glossy, inputs, name) in [
+        (false, IndirectInputs { materials: mats(&table, &specular), ..ok }, "materials"),
+        (true, ok, "materials"),
+        (true, IndirectInputs { materials: mats(&table, &specular16), ..ok }, "specular output"),
+        (true, IndirectInputs { materials: mats(&table, &bad_size), ..ok }, "specular output"),
+        (true, IndirectInputs { materials: mats(&uniform, &specular), ..ok }, "material table"),
+    ] {
+        let mut enc = gpu.device.create_command_encoder(&Default::default());
+        let p = if on_glossy { &mut glossy } else { &mut pass };
+        match p.record(&mut enc, &inputs, &st) {
+            Err(GpuError::Binding { name: n, .. }) => assert_eq!(n, name),
+            other => panic!("{name}: expected a binding error, got {:?}", other.err()),
+        }
+    }
+    gpu.take_errors().unwrap();
+}
+
+/// The glossy pass as an engine records it on the glossy box (a material
+/// table of the G-buffer's distinct materials, each pixel's index in the
+/// normal's w, a specular target) against `GpuVpl` on the same G-buffer:
+/// the irradiance within the bounds of
+/// [`pass_matches_gpu_vpl_for_every_method`], the specular correction
+/// within the same bounds on its scale `|S| + 2·c_diff/π·E` (the sum of
+/// its terms' magnitudes, `vpl_parity.rs`), zero where no surface is, and
+/// not zero everywhere.
+fn glossy_pass_matches_gpu_vpl() {
+    let Some(gpu) = gpu() else { return };
+    let ctx = VplContext::new(&Scene::cornell_box_glossy(), W, H, RSM, None).unwrap();
+    let gb = ctx.gbuffer();
+    let mut e = engine(gpu, &ctx);
+    let (mut table, mut index) = (Vec::<GpuMaterial>::new(), Vec::new());
+    for i in 0..gb.position.len() {
+        let s = gb.specular_at(i).unwrap_or_default();
+        let m = GpuMaterial::new(gb.albedo[i], Vec3::ZERO, s.metallic, s.roughness, s.f0, s.f90);
+        let k = table.iter().position(|t| bytemuck::bytes_of(t) == bytemuck::bytes_of(&m)).unwrap_or_else(|| {
+            table.push(m);
+            table.len() - 1
+        });
+        index.push(k as f32);
+    }
+    e.normal = upload(gpu, "gb normal", (W, H), &gb.normal.iter().zip(&index).map(|(&n, &k)| v4(n, k)).collect::<Vec<_>>());
+    let table = engine::materials(gpu, &table);
+    let specular = engine::output(gpu, (W, H));
+    let specular_view = specular.create_view(&Default::default());
+    let mut reference = GpuVpl::new(gpu, ctx.inputs()).unwrap();
+    let mut pass = IndirectPass::new(gpu, &IndirectPassDesc { glossy: true, ..desc(VplSourceDesc::Rsm { size: RSM }) }).unwrap();
+    let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
+    for method in [VplMethod::Slc, VplMethod::None] {
+        for denoise in [false, true] {
+            let s = settings(method, denoise);
+            let inputs = IndirectInputs {
+                gbuffer: e.gbuffer(),
+                vpls: rsm,
+                output: &e.output_view,
+                materials: Some(IndirectMaterials { table: &table, specular: &specular_view }),
+            };
+            let mut enc = gpu.device.create_command_encoder(&Default::default());
+            pass.record(&mut enc, &inputs, &slc_wgpu::frame::indirect_settings(&s, e.min_distance).unwrap()).unwrap();
+            let got = engine::submit_and_read(gpu, enc, &e.output);
+            let got_s = engine::submit_and_read(gpu, gpu.device.create_command_encoder(&Default::default()), &specular);
+            let want = reference.shade(&s).unwrap();
+            let (pixels, differs, worst) = compare(&got, &want, &ctx);
+            let mut worst_s = 0.0f64;
+            for i in 0..got_s.len() {
+                let a = Vec3::new(got_s[i][0], got_s[i][1], got_s[i][2]).as_dvec3();
+                if !gb.valid(i) {
+                    assert_eq!(a, glam::DVec3::ZERO, "pixel {i} without a surface must have no S");
+                    continue;
+                }
+                let b = want.specular[i].as_dvec3();
+                let c_diff = gb.specular_at(i).map_or(glam::DVec3::ZERO, |l| l.diffuse_albedo(gb.albedo[i]).as_dvec3());
+                let scale = b.abs() + c_diff * (2.0 / std::f64::consts::PI) * want.irradiance[i].as_dvec3();
+                let d = ((a - b).abs() - glam::DVec3::splat(1e-9)).max(glam::DVec3::ZERO) / scale.max(glam::DVec3::splat(1e-30));
+                worst_s = worst_s.max(d.max_element());
+            }
+            eprintln!(
+                "glossy {} denoise={denoise}: {pixels} pixels, {differs} keep decisions differ, worst relative irradiance {worst:.2e}, specular {worst_s:.2e}",
+                method.name()
+            );
+            assert!(got_s.iter().any(|p| p[0].abs() > 0.0), "{}: S is zero everywhere", method.name());
+            let bound = match (denoise, differs > 0) {
+                (false, _) => 1e-4,
+                (true, false) => 1e-3,
+                (true, true) => 1e-2,
+            };
+            assert!(differs as f64 <= 0.005 * pixels as f64, "{}: {differs} of {pixels} pixels keep different lights", method.name());
+            assert!(worst <= bound && worst_s <= bound, "glossy {} denoise={denoise}: {worst:.2e}, {worst_s:.2e} > {bound}", method.name());
+        }
+    }
     gpu.take_errors().unwrap();
 }
 
@@ -401,7 +503,12 @@ fn depth_input_matches_positions() {
     let image = |surface: SurfaceDesc, gbuffer: Surface| {
         let d = IndirectPassDesc { surface, ..desc(VplSourceDesc::Rsm { size: RSM }) };
         let mut pass = IndirectPass::new(gpu, &d).unwrap();
-        let inputs = IndirectInputs { gbuffer: GBuffer { surface: gbuffer, normal: &e.normal, eye: e.eye }, vpls: rsm, output: &e.output_view };
+        let inputs = IndirectInputs {
+            gbuffer: GBuffer { surface: gbuffer, normal: &e.normal, eye: e.eye },
+            vpls: rsm,
+            output: &e.output_view,
+            materials: None,
+        };
         let mut enc = gpu.device.create_command_encoder(&Default::default());
         pass.record(&mut enc, &inputs, &st).unwrap();
         engine::submit_and_read(gpu, enc, &e.output)
@@ -434,4 +541,5 @@ slc_tests::harness!(
     Gpu: pass_matches_gpu_vpl_for_every_method,
     Gpu: vpl_buffer_source_gives_the_rsm_image,
     Gpu: wrong_inputs_are_typed_errors,
+    Gpu: glossy_pass_matches_gpu_vpl,
 );

@@ -14,6 +14,12 @@
 //! - **Images.** End to end, each backend shading and denoising (the GPU's
 //!   `vpl_denoise` and the CPU's filter share slc-core's weight), with the
 //!   CPU's composition: RMSE(CPU, GPU) ≤ 1e-3 × mean radiance.
+//! - **Specular correction** (glossy box): `S = Σ Φ ⊙ (f − c_diff/π)·T·w`
+//!   has terms of both signs, so its rounding is bounded by the sum of
+//!   their magnitudes, `Σ |Φ (f − c_diff/π) T w| ≤ S + 2·c_diff/π·E`
+//!   (`Σ Φ f T w = S + c_diff/π·E ≥ 0`): where the keep decisions agree,
+//!   `|S_cpu − S_gpu| ≤ 1e-4 × (|S| + 2·c_diff/π·E)` per channel, the
+//!   irradiance's tolerance on that scale.
 
 use glam::Vec3;
 use proptest::prelude::*;
@@ -45,11 +51,17 @@ struct Compared {
     pixels: usize,
     kept_differs: usize,
     worst_rel: f64,
+    /// Glossy pixels compared (same keep decisions) and the worst
+    /// difference of their specular correction on its scale (see the
+    /// module docs).
+    glossy: usize,
+    worst_specular: f64,
 }
 
 fn compare(cpu: &Shaded, gpu: &Shaded, ctx: &VplContext) -> Compared {
     let gb = ctx.gbuffer();
-    let mut c = Compared { pixels: 0, kept_differs: 0, worst_rel: 0.0 };
+    let mut c = Compared { pixels: 0, kept_differs: 0, worst_rel: 0.0, glossy: 0, worst_specular: 0.0 };
+    assert_eq!(cpu.specular.len(), gpu.specular.len(), "both backends return a specular correction, or neither");
     for i in 0..cpu.irradiance.len() {
         if !gb.valid(i) {
             continue;
@@ -64,6 +76,20 @@ fn compare(cpu: &Shaded, gpu: &Shaded, ctx: &VplContext) -> Compared {
         let (a, b) = (cpu.irradiance[i].as_dvec3(), gpu.irradiance[i].as_dvec3());
         let rel = ((a - b).abs().max_element() - 1e-9).max(0.0) / a.abs().max_element().max(1e-30);
         c.worst_rel = c.worst_rel.max(rel);
+        if cpu.specular.is_empty() {
+            continue;
+        }
+        let (sa, sb) = (cpu.specular[i].as_dvec3(), gpu.specular[i].as_dvec3());
+        match gb.specular_at(i) {
+            // No lobe: no correction on either backend.
+            None => assert!(sa == glam::DVec3::ZERO && sb == glam::DVec3::ZERO, "pixel {i}: S {sa} (CPU), {sb} (GPU) without a lobe"),
+            Some(lobe) => {
+                let scale = sa.abs() + (lobe.diffuse_albedo(gb.albedo[i]).as_dvec3() * (2.0 / std::f64::consts::PI)) * a;
+                let worst = ((sa - sb).abs() - glam::DVec3::splat(1e-9)).max(glam::DVec3::ZERO) / scale.max(glam::DVec3::splat(1e-30));
+                c.worst_specular = c.worst_specular.max(worst.max_element());
+                c.glossy += 1;
+            }
+        }
     }
     c
 }
@@ -235,7 +261,77 @@ fn near_field_matches_cpu() {
     }
 }
 
+/// The glossy box (glTF metals and dielectrics beside Lambertian walls)
+/// shaded with the BRDF on both backends, with and without the near
+/// split, every method: the CPU's keep decisions and irradiance within the
+/// tolerances above, and its specular correction within its own (module
+/// docs); zero on both where a pixel has no lobe. 64×48 pixels, 4,096
+/// VPLs (below lavapipe's loop limit).
+fn glossy_shading_matches_cpu() {
+    let Some(g) = gpu() else { return };
+    let ctx = VplContext::new(&Scene::cornell_box_glossy(), 64, 48, 64, None).unwrap();
+    assert!(ctx.gbuffer().has_specular());
+    let mut gv = GpuVpl::new(g, ctx.inputs()).unwrap();
+    for near_radius in [Some(0.0), None] {
+        for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None, VplMethod::Reference] {
+            let s = VplSettings { near_radius, ..settings(method) };
+            let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(&s).unwrap());
+            assert!(!b.specular.is_empty() && b.specular.iter().all(|s| s.is_finite()), "{}: the GPU's S", method.name());
+            let c = compare(&a, &b, &ctx);
+            let near = if near_radius == Some(0.0) { "no near field" } else { "near field" };
+            eprintln!(
+                "glossy {} ({near}): kept differs at {} of {} pixels, worst relative irradiance {:.2e}, specular {:.2e} over {} glossy pixels",
+                method.name(),
+                c.kept_differs,
+                c.pixels,
+                c.worst_rel,
+                c.worst_specular,
+                c.glossy
+            );
+            assert!(c.glossy * 5 >= c.pixels, "{}: only {} of {} pixels glossy", method.name(), c.glossy, c.pixels);
+            assert!(
+                c.kept_differs * 200 <= c.pixels && c.worst_rel <= 1e-4,
+                "{}: {} differing, worst {}",
+                method.name(),
+                c.kept_differs,
+                c.worst_rel
+            );
+            assert!(c.worst_specular <= 1e-4, "glossy {} ({near}): specular difference {:.3e}", method.name(), c.worst_specular);
+        }
+    }
+}
+
+/// End to end on the glossy box (denoise on: the GPU filters `S` with the
+/// irradiance's filter; the CPU's composition `c_diff/π·E + S`): the
+/// image's RMSE(CPU, GPU) ≤ 1e-3 × its mean, over the whole image and
+/// over its glossy pixels alone.
+fn glossy_images_match_end_to_end() {
+    let Some(g) = gpu() else { return };
+    let ctx = VplContext::new(&Scene::cornell_box_glossy(), 64, 48, 64, None).unwrap();
+    let mut gv = GpuVpl::new(g, ctx.inputs()).unwrap();
+    let gb = ctx.gbuffer();
+    for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
+        let s = VplSettings { denoise: true, ..settings(method) };
+        let a = ctx.render(&s).unwrap().image;
+        let b = ctx.finish(gv.shade(&s).unwrap(), &s).image;
+        let glossy: Vec<usize> = (0..a.data.len()).filter(|&i| gb.specular_at(i).is_some()).collect();
+        let mean = glossy.iter().map(|&i| a.data[i].as_dvec3().element_sum() / 3.0).sum::<f64>() / glossy.len() as f64;
+        let mse = glossy.iter().map(|&i| (a.data[i] - b.data[i]).as_dvec3().length_squared() / 3.0).sum::<f64>() / glossy.len() as f64;
+        let (rmse, glossy_rmse) = (a.rmse(&b), mse.sqrt());
+        eprintln!(
+            "glossy {}: end-to-end RMSE(CPU, GPU) = {rmse:.3e} (mean {:.3e}); glossy pixels {glossy_rmse:.3e} (mean {mean:.3e})",
+            method.name(),
+            a.mean()
+        );
+        assert!(b.is_finite());
+        assert!(rmse <= 1e-3 * a.mean(), "{}: RMSE {rmse} vs mean {}", method.name(), a.mean());
+        assert!(glossy_rmse <= 1e-3 * mean, "{}: glossy RMSE {glossy_rmse} vs mean {mean}", method.name());
+    }
+}
+
 slc_tests::harness!(
+    Gpu: glossy_shading_matches_cpu,
+    Gpu: glossy_images_match_end_to_end,
     Gpu: shading_matches_cpu_for_every_method,
     Gpu: near_field_matches_cpu,
     Gpu: random_settings_agree,

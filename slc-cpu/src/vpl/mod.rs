@@ -28,9 +28,9 @@ use crate::temporal::Temporal;
 use glam::Vec3;
 use rayon::prelude::*;
 use shade::{Cull, Glossy, LightList};
-use slc_core::frame::{diffuse_radiance, directional_irradiance, point_irradiance};
+use slc_core::frame::{diffuse_radiance, directional_irradiance, glossy_radiance, point_irradiance};
 use slc_core::interleave::{interleave_flux_scale, vpl_near_range2};
-use slc_core::light::{INV_PI, Light, vpl_threshold_range2};
+use slc_core::light::{Light, vpl_threshold_range2};
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::ray::surface_offset;
 use slc_core::xi::xi_for;
@@ -274,11 +274,7 @@ impl VplContext {
             .into_par_iter()
             .map(|i| match gb.specular_at(i).filter(|_| !specular.is_empty()) {
                 None => diffuse_radiance(gb.albedo[i], gb.emission[i], self.direct[i] + filtered[i]),
-                Some(s) => {
-                    diffuse_radiance(gb.albedo[i], gb.emission[i], self.direct[i])
-                        + s.diffuse_albedo(gb.albedo[i]) * INV_PI * filtered[i]
-                        + specular[i]
-                }
+                Some(s) => glossy_radiance(gb.albedo[i], gb.emission[i], s.metallic, self.direct[i], filtered[i], specular[i]),
             })
             .collect();
         stats.denoise_ms = ms(t) + shaded.denoised_ms.unwrap_or(0.0);
@@ -724,6 +720,7 @@ fn ms(t: Instant) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use slc_core::light::INV_PI;
 
     /// The near field's tile culling drops nothing: for every method (SLC
     /// with its own ranges, clamp, none) it equals every VPL evaluated at

@@ -14,7 +14,7 @@
 //! untouched).
 
 use glam::Vec3;
-use slc_core::brdf::{brdf_eval, ggx_alpha};
+use slc_core::brdf::{ggx_alpha, specular_correction};
 use slc_core::interleave::{vpl_far_fixed_share, vpl_far_slc_share, vpl_far_weight, vpl_near_cull_range2, vpl_near_fixed_share, vpl_near_slc_share};
 use slc_core::light::{INV_PI, vpl_transfer};
 use slc_core::range::cull_radius;
@@ -483,10 +483,11 @@ impl Glossy {
         })
     }
 
-    /// `f(l, v) − c_diff/π` toward the unit direction `l`.
+    /// `f(l, v) − c_diff/π` toward the unit direction `l`
+    /// ([`slc_core::brdf::specular_correction`]).
     #[inline(always)]
     pub fn correction(&self, l: Vec3) -> Vec3 {
-        brdf_eval(self.base, self.metallic, self.f0, self.f90, self.alpha, self.n, self.v, l) - self.diffuse
+        specular_correction(self.base, self.metallic, self.f0, self.f90, self.alpha, self.n, self.v, l)
     }
 }
 

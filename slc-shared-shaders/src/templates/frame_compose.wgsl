@@ -2,6 +2,11 @@
 // The VPL frame's composition into the HDR target ({{ out_format }}):
 // `L_e + ρ/π · (E_direct + E_indirect)` per G-buffer pixel (material from
 // the normal's w), zero where no surface; alpha 1.
+{% if glossy %}
+// Glossy variant: a material with a specular lobe takes
+// `L_e + ρ/π · E_direct + c_diff/π · E_indirect + S` (glossy_radiance), S
+// the VPLs' specular correction.
+{% endif %}
 
 {{ bindings }}
 
@@ -15,7 +20,16 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var radiance = vec3f(0.0);
     if textureLoad(position_tex, texel, 0).w > 0.0 {
         let m = materials[u32(textureLoad(normal_tex, texel, 0).w)];
+{% if glossy %}
+        let e = textureLoad(indirect_tex, texel, 0).xyz;
+        if has_specular(m.metallic, m.f0, m.f90) {
+            radiance = glossy_radiance(m.albedo, m.emission, m.metallic, direct[i].xyz, e, textureLoad(specular_tex, texel, 0).xyz);
+        } else {
+            radiance = diffuse_radiance(m.albedo, m.emission, direct[i].xyz + e);
+        }
+{% else %}
         radiance = diffuse_radiance(m.albedo, m.emission, direct[i].xyz + textureLoad(indirect_tex, texel, 0).xyz);
+{% endif %}
     }
     textureStore(out_tex, texel, vec4f(radiance, 1.0));
 }

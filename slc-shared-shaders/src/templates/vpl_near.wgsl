@@ -19,6 +19,11 @@
 // block's box (widened by R_n) and, where it meets the tile's box, puts
 // the block's VPLs whose culling sphere (radius min(r, R_n),
 // vpl_near_cull_range2) meets it into a list every pixel loops over.
+{% if glossy %}
+// Glossy variant: the near field's specular correction S is added to
+// `specular` as its irradiance is to `irradiance` (vpl_tiled's glossy
+// variant).
+{% endif %}
 
 const P: u32 = {{ period }}u;
 const TILE: u32 = {{ tile }}u;
@@ -31,6 +36,9 @@ const NEAR_CHUNK: u32 = {% if tile * tile < 32 %}THREADS{% elif tile > 8 %}16u{%
 
 {{ bindings }}
 {% include "gbuffer_read.wgsl" %}
+{% if glossy %}
+{% include "vpl_glossy.wgsl" %}
+{% endif %}
 
 /// The r^2 the near field keeps light `slot` by: its own range at the VPL's
 /// flux (slc), or the interleaved light's fixed range (clamp, none).
@@ -71,6 +79,13 @@ fn main(
     let unscale = 1.0 / interleave_flux_scale(P);
     var e = vec3f(0.0);
     var kept = 0u;
+{% if glossy %}
+    var s = vec3f(0.0);
+    var g: Glossy;
+    if valid {
+        g = glossy_at(pix, pos.xyz);
+    }
+{% endif %}
     for (var first = 0u; first < params.near_blocks; first += NEAR_CHUNK) {
         if li == 0u {
             atomicStore(&light_count, 0u);
@@ -103,6 +118,9 @@ fn main(
 {% endif %}
                 if share > 0.0 {
                     e += l.intensity * (vpl_transfer(l.p1, nrm, v, params.min_d2) * share * unscale);
+{% if glossy %}
+                    s += glossy_term(g, l, nrm, v, params.min_d2, share * unscale);
+{% endif %}
                     kept += 1u;
                 }
             }
@@ -113,5 +131,8 @@ fn main(
     if valid {
         let old = irradiance[pix];
         irradiance[pix] = vec4f(old.xyz + e, old.w + f32(kept));
+{% if glossy %}
+        specular[pix] = vec4f(specular[pix].xyz + s, 0.0);
+{% endif %}
     }
 }

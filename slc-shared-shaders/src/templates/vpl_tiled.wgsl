@@ -10,6 +10,11 @@
 // the keep test and 1/p weight. Each light's transfer is weighted by its far
 // share vpl_far_weight (the near share is vpl_near's): vpl_far_slc_share,
 // vpl_far_fixed_share.
+{% if glossy %}
+// Glossy variant: each pixel's material from `materials`; where it has a
+// specular lobe the same kept lights, transfer and shares also sum the
+// specular correction S into `specular` (zero elsewhere).
+{% endif %}
 
 const P: u32 = {{ period }}u;
 const TILE: u32 = {{ tile }}u;
@@ -20,6 +25,9 @@ const MAX_TILE_LIGHTS: u32 = {{ max_tile_lights }}u;
 
 {{ bindings }}
 {% include "gbuffer_read.wgsl" %}
+{% if glossy %}
+{% include "vpl_glossy.wgsl" %}
+{% endif %}
 
 var<workgroup> tile_count: atomic<u32>;
 var<workgroup> tile_lights: array<u32, MAX_TILE_LIGHTS>;
@@ -49,6 +57,13 @@ fn main(
     let base = sub * params.lights_per_subset;
     var e = vec3f(0.0);
     var kept = 0u;
+{% if glossy %}
+    var s = vec3f(0.0);
+    var g: Glossy;
+    if valid {
+        g = glossy_at(pix, pos.xyz);
+    }
+{% endif %}
 {% if method == "none" %}
     if valid {
         for (var j = base; j < base + params.lights_per_subset; j++) {
@@ -58,6 +73,9 @@ fn main(
             let share = vpl_far_weight(dot(v, v), params.near_r2);
             if share > 0.0 {
                 e += l.intensity * (vpl_transfer(l.p1, nrm, v, params.min_d2) * share);
+{% if glossy %}
+                s += glossy_term(g, l, nrm, v, params.min_d2, share);
+{% endif %}
                 kept += 1u;
             }
         }
@@ -92,6 +110,9 @@ fn main(
 {% endif %}
                 if share > 0.0 {
                     e += l.intensity * (vpl_transfer(l.p1, nrm, v, params.min_d2) * share);
+{% if glossy %}
+                    s += glossy_term(g, l, nrm, v, params.min_d2, share);
+{% endif %}
                     kept += 1u;
                 }
             }
@@ -104,5 +125,8 @@ fn main(
     // clears the irradiance of the last record.
     if inside {
         irradiance[pix] = vec4f(e, f32(kept));
+{% if glossy %}
+        specular[pix] = vec4f(s, 0.0);
+{% endif %}
     }
 }

@@ -203,14 +203,14 @@ fn windowed_falloff(d2_4: f32, range2_1: f32) -> f32 {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_4: vec3<f32>) -> bool {
-    let v_11 = (x_4 - c);
-    return (dot(v_11, v_11) <= (r * r));
+    let v_12 = (x_4 - c);
+    return (dot(v_12, v_12) <= (r * r));
 }
 
 fn sphere_overlaps_sphere(c1_: vec3<f32>, r1_: f32, c2_: vec3<f32>, r2_2: f32) -> bool {
-    let v_12 = (c2_ - c1_);
+    let v_13 = (c2_ - c1_);
     let r_6 = (r1_ + r2_2);
-    return (dot(v_12, v_12) <= (r_6 * r_6));
+    return (dot(v_13, v_13) <= (r_6 * r_6));
 }
 
 fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
@@ -220,8 +220,8 @@ fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
 fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<f32> {
     var local: bool;
 
-    let v_13 = (c2_1 - c1_1);
-    let d_6 = sqrt(dot(v_13, v_13));
+    let v_14 = (c2_1 - c1_1);
+    let d_6 = sqrt(dot(v_14, v_14));
     let _e8 = sphere_pad(r1_1, c1_1);
     if (r1_1 >= ((d_6 + r2_3) + _e8)) {
         return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, r1_1);
@@ -250,7 +250,7 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
     let r0_ = (0.5f * ((d_6 + r1_1) + r2_3));
-    let c_10 = (c1_1 + (v_13 * ((r0_ - r1_1) / d_6)));
+    let c_10 = (c1_1 + (v_14 * ((r0_ - r1_1) / d_6)));
     let e1_ = (c_10 - c1_1);
     let e2_ = (c_10 - c2_1);
     let r_7 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
@@ -260,8 +260,8 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
 
 fn sphere_overlaps_aabb(c_2: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
     let q_3 = clamp(c_2, bmin, bmax);
-    let v_14 = (q_3 - c_2);
-    return (dot(v_14, v_14) <= (r_2 * r_2));
+    let v_15 = (q_3 - c_2);
+    return (dot(v_15, v_15) <= (r_2 * r_2));
 }
 
 fn vpl_rt2_(flux: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32) -> f32 {
@@ -288,8 +288,8 @@ fn connection_cosine(x_5: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_1: bool;
     var local_2: bool;
 
-    let v_15 = (x_5 - y);
-    let d2_16 = dot(v_15, v_15);
+    let v_16 = (x_5 - y);
+    let d2_16 = dot(v_16, v_16);
     let _e7 = slc_keep(r2_5, d2_16);
     if !(!(_e7)) {
         local_1 = !((d2_16 > 0f));
@@ -300,7 +300,7 @@ fn connection_cosine(x_5: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_11 = (v_15 / vec3(sqrt(d2_16)));
+    let w_11 = (v_16 / vec3(sqrt(d2_16)));
     let cos_x_1 = -(dot(n, w_11));
     if !((cos_x_1 <= 0f)) {
         local_2 = (dot(ng, w_11) >= 0f);
@@ -808,18 +808,28 @@ fn brdf_eval(base_7: vec3<f32>, metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32
     return (_e16 + _e17);
 }
 
-fn has_specular(metallic_4: f32, f0_d_4: vec3<f32>, f90_d_4: f32) -> bool {
+fn diffuse_albedo(base_8: vec3<f32>, metallic_4: f32) -> vec3<f32> {
+    return (base_8 * (1f - metallic_4));
+}
+
+fn specular_correction(base_9: vec3<f32>, metallic_5: f32, f0_d_4: vec3<f32>, f90_d_4: f32, alpha_5: f32, n_16: vec3<f32>, v_6: vec3<f32>, l_3: vec3<f32>) -> vec3<f32> {
+    let _e8 = brdf_eval(base_9, metallic_5, f0_d_4, f90_d_4, alpha_5, n_16, v_6, l_3);
+    let _e9 = diffuse_albedo(base_9, metallic_5);
+    return (_e8 - (_e9 * INV_PI));
+}
+
+fn has_specular(metallic_6: f32, f0_d_5: vec3<f32>, f90_d_5: f32) -> bool {
     var local_9: bool;
     var local_10: bool;
 
-    if !((metallic_4 > 0f)) {
-        local_9 = (f90_d_4 > 0f);
+    if !((metallic_6 > 0f)) {
+        local_9 = (f90_d_5 > 0f);
     } else {
         local_9 = true;
     }
     let _e11 = local_9;
     if !(_e11) {
-        local_10 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0f);
+        local_10 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0f);
     } else {
         local_10 = true;
     }
@@ -831,24 +841,24 @@ fn channel_mean(c_6: vec3<f32>) -> f32 {
     return (((c_6.x + c_6.y) + c_6.z) * 0.33333334f);
 }
 
-fn receiver_lobe(base_8: vec3<f32>, metallic_5: f32, f0_d_5: vec3<f32>, f90_d_5: f32, alpha_5: f32, n_v_1: f32) -> vec4<f32> {
+fn receiver_lobe(base_10: vec3<f32>, metallic_7: f32, f0_d_6: vec3<f32>, f90_d_6: f32, alpha_6: f32, n_v_1: f32) -> vec4<f32> {
     var local_11: bool;
 
-    let _e10 = fresnel_schlick(f0_d_5, f90_d_5, n_v_1);
-    let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_8) * (1f - metallic_5)));
+    let _e10 = fresnel_schlick(f0_d_6, f90_d_6, n_v_1);
+    let _e16 = channel_mean((((vec3<f32>(1f, 1f, 1f) - _e10) * base_10) * (1f - metallic_7)));
     if !((n_v_1 <= 0f)) {
-        let _e22 = has_specular(metallic_5, f0_d_5, f90_d_5);
+        let _e22 = has_specular(metallic_7, f0_d_6, f90_d_6);
         local_11 = !(_e22);
     } else {
         local_11 = true;
     }
     let _e25 = local_11;
     if _e25 {
-        return vec4<f32>(_e16, 0f, alpha_5, n_v_1);
+        return vec4<f32>(_e16, 0f, alpha_6, n_v_1);
     }
-    let _e28 = specular_fresnel(base_8, metallic_5, f0_d_5, f90_d_5, n_v_1);
+    let _e28 = specular_fresnel(base_10, metallic_7, f0_d_6, f90_d_6, n_v_1);
     let _e29 = channel_mean(_e28);
-    return vec4<f32>(_e16, _e29, alpha_5, n_v_1);
+    return vec4<f32>(_e16, _e29, alpha_6, n_v_1);
 }
 
 fn specular_probability(lobe: vec4<f32>) -> f32 {
@@ -874,31 +884,31 @@ fn range_scale(lobe_2: vec4<f32>) -> f32 {
     return clamp(_e5, 1f, RANGE_SCALE_MAX);
 }
 
-fn mirror_dir(n_16: vec3<f32>, v_6: vec3<f32>) -> vec3<f32> {
-    return ((n_16 * (2f * dot(n_16, v_6))) - v_6);
+fn mirror_dir(n_17: vec3<f32>, v_7: vec3<f32>) -> vec3<f32> {
+    return ((n_17 * (2f * dot(n_17, v_7))) - v_7);
 }
 
-fn bounded_vndf_k(wi: vec3<f32>, alpha_6: f32) -> f32 {
-    let a_13 = saturate(alpha_6);
+fn bounded_vndf_k(wi: vec3<f32>, alpha_7: f32) -> f32 {
+    let a_13 = saturate(alpha_7);
     let s_4 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
     let a2_3 = (a_13 * a_13);
     let s2_ = (s_4 * s_4);
     return (((1f - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
 
-fn ggx_vndf_sample(wi_1: vec3<f32>, alpha_7: f32, u1_2: f32, u2_2: f32) -> vec3<f32> {
-    let wi_std = normalize(vec3<f32>((wi_1.x * alpha_7), (wi_1.y * alpha_7), wi_1.z));
-    let _e12 = bounded_vndf_k(wi_1, alpha_7);
+fn ggx_vndf_sample(wi_1: vec3<f32>, alpha_8: f32, u1_2: f32, u2_2: f32) -> vec3<f32> {
+    let wi_std = normalize(vec3<f32>((wi_1.x * alpha_8), (wi_1.y * alpha_8), wi_1.z));
+    let _e12 = bounded_vndf_k(wi_1, alpha_8);
     let b_8 = select(wi_std.z, (_e12 * wi_std.z), (wi_1.z > 0f));
     let phi_6 = (6.2831855f * u1_2);
     let z_4 = (((1f - u2_2) * (1f + b_8)) - b_8);
     let sin_t = sqrt(saturate((1f - (z_4 * z_4))));
     let m_std = (wi_std + vec3<f32>((sin_t * cos(phi_6)), (sin_t * sin(phi_6)), z_4));
-    let m_1 = normalize(vec3<f32>((m_std.x * alpha_7), (m_std.y * alpha_7), m_std.z));
+    let m_1 = normalize(vec3<f32>((m_std.x * alpha_8), (m_std.y * alpha_8), m_std.z));
     return ((m_1 * (2f * dot(wi_1, m_1))) - wi_1);
 }
 
-fn ggx_vndf_pdf(wi_2: vec3<f32>, wo: vec3<f32>, alpha_8: f32) -> f32 {
+fn ggx_vndf_pdf(wi_2: vec3<f32>, wo: vec3<f32>, alpha_9: f32) -> f32 {
     var local_12: bool;
 
     if !((wi_2.z <= 0f)) {
@@ -912,34 +922,34 @@ fn ggx_vndf_pdf(wi_2: vec3<f32>, wo: vec3<f32>, alpha_8: f32) -> f32 {
     }
     let hs_1 = (wi_2 + wo);
     let m_2 = (hs_1 / vec3(sqrt(dot(hs_1, hs_1))));
-    let _e28 = ggx_d(m_2.z, ((m_2.x * m_2.x) + (m_2.y * m_2.y)), alpha_8);
-    let t_4 = sqrt((((alpha_8 * alpha_8) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
-    let _e43 = bounded_vndf_k(wi_2, alpha_8);
+    let _e28 = ggx_d(m_2.z, ((m_2.x * m_2.x) + (m_2.y * m_2.y)), alpha_9);
+    let t_4 = sqrt((((alpha_9 * alpha_9) * ((wi_2.x * wi_2.x) + (wi_2.y * wi_2.y))) + (wi_2.z * wi_2.z)));
+    let _e43 = bounded_vndf_k(wi_2, alpha_9);
     return (_e28 / (2f * ((_e43 * wi_2.z) + t_4)));
 }
 
-fn bsdf_sample(n_17: vec3<f32>, v_7: vec3<f32>, alpha_9: f32, p_spec: f32, u1_3: f32, u2_3: f32) -> vec3<f32> {
+fn bsdf_sample(n_18: vec3<f32>, v_8: vec3<f32>, alpha_10: f32, p_spec: f32, u1_3: f32, u2_3: f32) -> vec3<f32> {
     if (u1_3 < p_spec) {
-        if (dot(n_17, v_7) <= 0f) {
-            return -(n_17);
+        if (dot(n_18, v_8) <= 0f) {
+            return -(n_18);
         }
-        let _e11 = onb_to_local(n_17, v_7);
-        let _e13 = ggx_vndf_sample(_e11, alpha_9, (u1_3 / p_spec), u2_3);
-        let _e14 = onb_to_world(n_17, _e13);
+        let _e11 = onb_to_local(n_18, v_8);
+        let _e13 = ggx_vndf_sample(_e11, alpha_10, (u1_3 / p_spec), u2_3);
+        let _e14 = onb_to_world(n_18, _e13);
         return normalize(_e14);
     }
-    let _e20 = cosine_direction(n_17, ((u1_3 - p_spec) / (1f - p_spec)), u2_3);
+    let _e20 = cosine_direction(n_18, ((u1_3 - p_spec) / (1f - p_spec)), u2_3);
     return _e20;
 }
 
-fn bsdf_pdf(n_18: vec3<f32>, v_8: vec3<f32>, l_3: vec3<f32>, alpha_10: f32, p_spec_1: f32) -> f32 {
-    let _e6 = cosine_pdf(dot(n_18, l_3));
+fn bsdf_pdf(n_19: vec3<f32>, v_9: vec3<f32>, l_4: vec3<f32>, alpha_11: f32, p_spec_1: f32) -> f32 {
+    let _e6 = cosine_pdf(dot(n_19, l_4));
     if (p_spec_1 <= 0f) {
         return _e6;
     }
-    let _e9 = onb_to_local(n_18, v_8);
-    let _e10 = onb_to_local(n_18, l_3);
-    let _e11 = ggx_vndf_pdf(_e9, _e10, alpha_10);
+    let _e9 = onb_to_local(n_19, v_9);
+    let _e10 = onb_to_local(n_19, l_4);
+    let _e11 = ggx_vndf_pdf(_e9, _e10, alpha_11);
     return ((p_spec_1 * _e11) + ((1f - p_spec_1) * _e6));
 }
 
@@ -967,11 +977,11 @@ fn subtended_cos(dist2_: f32, r2_6: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
-    let v_16 = (p - center);
-    let dist2_1 = dot(v_16, v_16);
+    let v_17 = (p - center);
+    let dist2_1 = dot(v_17, v_17);
     let r2_11 = (radius * radius);
     let d2_17 = max(max(dist2_1, r2_11), MIN_D2_);
-    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_16 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_17 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_3);
     let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
     let _e26 = subtended_cos(dist2_1, r2_11);
@@ -992,9 +1002,9 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_17 = (center_2 - p_2);
-    let dist2_2 = dot(v_17, v_17);
-    let w_12 = select(vec3<f32>(0f, 0f, 0f), (v_17 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
+    let v_18 = (center_2 - p_2);
+    let dist2_2 = dot(v_18, v_18);
+    let w_12 = select(vec3<f32>(0f, 0f, 0f), (v_18 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
     let _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
     let cos_i = dot(w_12, d_1);
     let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
@@ -1003,7 +1013,7 @@ fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3
     return _e27;
 }
 
-fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_3: vec3<f32>, n_19: vec3<f32>) -> f32 {
+fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_3: vec3<f32>, n_20: vec3<f32>) -> f32 {
     var imp: f32;
 
     let _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
@@ -1011,10 +1021,10 @@ fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3
         return 0f;
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
-    if (dot(n_19, n_19) > 0f) {
-        let v_18 = (center_3 - p_3);
-        let dist2_3 = dot(v_18, v_18);
-        let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_18 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_19);
+    if (dot(n_20, n_20) > 0f) {
+        let v_19 = (center_3 - p_3);
+        let dist2_3 = dot(v_19, v_19);
+        let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_19 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_20);
         let _e33 = imp;
         let _e37 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
         let _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
@@ -1024,11 +1034,11 @@ fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3
     return max(_e44, 0f);
 }
 
-fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_4: vec3<f32>, n_20: vec3<f32>, r_3: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_4: vec3<f32>, n_21: vec3<f32>, r_3: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
     var local_13: bool;
 
     let _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
-    let _e11 = cone_cos_toward(center_4, radius_4, p_4, n_20);
+    let _e11 = cone_cos_toward(center_4, radius_4, p_4, n_21);
     if !((_e10 <= 0f)) {
         local_13 = (_e11 <= 0f);
     } else {
@@ -1046,12 +1056,12 @@ fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec
     return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
 }
 
-fn receiver_importance(center_5: vec3<f32>, radius_5: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, p_5: vec3<f32>, n_21: vec3<f32>, r_4: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
+fn receiver_importance(center_5: vec3<f32>, radius_5: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_4: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
     if (lobe_4.y <= 0f) {
-        let _e13 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_21);
+        let _e13 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_22);
         return _e13;
     }
-    let _e14 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_21, r_4, lobe_4);
+    let _e14 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_22, r_4, lobe_4);
     return _e14;
 }
 
@@ -1060,15 +1070,15 @@ fn candidate_weight(importance: f32, rt2_5: f32, d2_9: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_4: f32, axis_5: vec3<f32>, cos_o_5: f32, cos_e_4: f32, rt2_6: f32, p_6: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    let v_19 = (p_6 - center_6);
+fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_4: f32, axis_5: vec3<f32>, cos_o_5: f32, cos_e_4: f32, rt2_6: f32, p_6: vec3<f32>, n_23: vec3<f32>, r_5: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
+    let v_20 = (p_6 - center_6);
     if (lobe_5.y <= 0f) {
-        let _e15 = light_importance(center_6, radius_6, phi_4, axis_5, cos_o_5, cos_e_4, p_6, n_22);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_19, v_19));
+        let _e15 = light_importance(center_6, radius_6, phi_4, axis_5, cos_o_5, cos_e_4, p_6, n_23);
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_20, v_20));
         return _e19;
     }
-    let _e20 = glossy_importance(center_6, radius_6, phi_4, axis_5, cos_o_5, cos_e_4, p_6, n_22, r_5, lobe_5);
-    let _e22 = candidate_weight(_e20, rt2_6, dot(v_19, v_19));
+    let _e20 = glossy_importance(center_6, radius_6, phi_4, axis_5, cos_o_5, cos_e_4, p_6, n_23, r_5, lobe_5);
+    let _e22 = candidate_weight(_e20, rt2_6, dot(v_20, v_20));
     return _e22;
 }
 
@@ -1135,8 +1145,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> {
     var local_14: bool;
 
-    let n_28 = cross((b_4 - a_5), (c_7 - a_5));
-    let l2_ = dot(n_28, n_28);
+    let n_29 = cross((b_4 - a_5), (c_7 - a_5));
+    let l2_ = dot(n_29, n_29);
     if !(!((l2_ > 0f))) {
         local_14 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -1146,11 +1156,11 @@ fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_28 / vec3(sqrt(l2_)));
+    return (n_29 / vec3(sqrt(l2_)));
 }
 
-fn face_against(n_23: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
-    return select(n_23, -(n_23), (dot(n_23, dir) > 0f));
+fn face_against(n_24: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+    return select(n_24, -(n_24), (dot(n_24, dir) > 0f));
 }
 
 fn barycentric(p_7: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -> vec3<f32> {
@@ -1183,8 +1193,8 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>
     if _e24 {
         return facing;
     }
-    let n_29 = (s_6 / vec3(sqrt(l2_1)));
-    return select(n_29, -(n_29), (dot(n_29, facing) < 0f));
+    let n_30 = (s_6 / vec3(sqrt(l2_1)));
+    return select(n_30, -(n_30), (dot(n_30, facing) < 0f));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, c_9: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -1212,9 +1222,9 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
         return -1f;
     }
     let q_5 = cross(s_7, e1_2);
-    let v_20 = (dot(d_3, q_5) * inv_1);
-    if !((v_20 < 0f)) {
-        local_17 = ((u_6 + v_20) > 1f);
+    let v_21 = (dot(d_3, q_5) * inv_1);
+    if !((v_21 < 0f)) {
+        local_17 = ((u_6 + v_21) > 1f);
     } else {
         local_17 = true;
     }
@@ -1263,8 +1273,8 @@ fn filtered_irradiance(e: vec3<f32>, sum: vec3<f32>, weight: f32) -> vec3<f32> {
     return e;
 }
 
-fn bilateral_weight(n_24: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f32) -> f32 {
-    let dn = max(dot(n_24, nj), 0f);
+fn bilateral_weight(n_25: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f32) -> f32 {
+    let dn = max(dot(n_25, nj), 0f);
     let dn2_ = (dn * dn);
     let dn4_ = (dn2_ * dn2_);
     let dn8_ = (dn4_ * dn4_);
@@ -1373,10 +1383,10 @@ fn sees_emission(gn: vec3<f32>, dir_1: vec3<f32>) -> bool {
     return (dot(gn, dir_1) < 0f);
 }
 
-fn continues_path(nd: vec3<f32>, n_25: vec3<f32>, ng_1: vec3<f32>) -> bool {
+fn continues_path(nd: vec3<f32>, n_26: vec3<f32>, ng_1: vec3<f32>) -> bool {
     var local_19: bool;
 
-    if (dot(nd, n_25) > 0f) {
+    if (dot(nd, n_26) > 0f) {
         local_19 = (dot(nd, ng_1) > 0f);
     } else {
         local_19 = false;
@@ -1385,18 +1395,18 @@ fn continues_path(nd: vec3<f32>, n_25: vec3<f32>, ng_1: vec3<f32>) -> bool {
     return _e12;
 }
 
-fn finite3_(v_9: vec3<f32>) -> bool {
+fn finite3_(v_10: vec3<f32>) -> bool {
     var local_20: bool;
     var local_21: bool;
 
-    if (abs(v_9.x) <= F32_MAX) {
-        local_20 = (abs(v_9.y) <= F32_MAX);
+    if (abs(v_10.x) <= F32_MAX) {
+        local_20 = (abs(v_10.y) <= F32_MAX);
     } else {
         local_20 = false;
     }
     let _e12 = local_20;
     if _e12 {
-        local_21 = (abs(v_9.z) <= F32_MAX);
+        local_21 = (abs(v_10.z) <= F32_MAX);
     } else {
         local_21 = false;
     }
@@ -1426,8 +1436,8 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_6: vec3<f32>, exten
 }
 
 fn display_encode(x_15: f32) -> f32 {
-    let v_21 = max(x_15, 0f);
-    let t_8 = ((2f * v_21) / (1f + (2f * v_21)));
+    let v_22 = max(x_15, 0f);
+    let t_8 = ((2f * v_22) / (1f + (2f * v_22)));
     return select(((1.055f * pow(t_8, 0.41666666f)) - 0.055f), (12.92f * t_8), (t_8 <= 0.0031308f));
 }
 
@@ -1439,15 +1449,15 @@ fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-fn point_irradiance(intensity_1: vec3<f32>, n_26: vec3<f32>, v_10: vec3<f32>) -> vec3<f32> {
-    let d2_18 = dot(v_10, v_10);
-    let cos_x_2 = (dot(n_26, v_10) / sqrt(max(d2_18, MIN_D2_)));
+fn point_irradiance(intensity_1: vec3<f32>, n_27: vec3<f32>, v_11: vec3<f32>) -> vec3<f32> {
+    let d2_18 = dot(v_11, v_11);
+    let cos_x_2 = (dot(n_27, v_11) / sqrt(max(d2_18, MIN_D2_)));
     let _e11 = inverse_square(d2_18);
     return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }
 
-fn directional_irradiance(e_1: vec3<f32>, n_27: vec3<f32>, to_light: vec3<f32>) -> vec3<f32> {
-    return (e_1 * max(dot(n_27, to_light), 0f));
+fn directional_irradiance(e_1: vec3<f32>, n_28: vec3<f32>, to_light: vec3<f32>) -> vec3<f32> {
+    return (e_1 * max(dot(n_28, to_light), 0f));
 }
 
 fn perspective_texel_width(extent_3: f32, d_4: f32, z_2: f32, size_8: f32) -> f32 {
@@ -1477,5 +1487,11 @@ fn shadow_lit(d_5: f32, d_map: f32, bias: f32) -> bool {
 
 fn diffuse_radiance(albedo: vec3<f32>, emission: vec3<f32>, e_2: vec3<f32>) -> vec3<f32> {
     return (emission + ((albedo * INV_PI) * e_2));
+}
+
+fn glossy_radiance(base_11: vec3<f32>, emission_1: vec3<f32>, metallic_8: f32, direct: vec3<f32>, indirect: vec3<f32>, specular: vec3<f32>) -> vec3<f32> {
+    let _e6 = diffuse_radiance(base_11, emission_1, direct);
+    let _e7 = diffuse_albedo(base_11, metallic_8);
+    return ((_e6 + ((_e7 * INV_PI) * indirect)) + specular);
 }
 

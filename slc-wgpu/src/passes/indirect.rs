@@ -15,10 +15,27 @@
 //! | input | format | size | usage | content |
 //! |---|---|---|---|---|
 //! | `gbuffer.surface` | `Depth32Float` or `R32Float` (depth), or `Rgba32Float`/`Rgba16Float` (positions) as the descriptor's [`SurfaceDesc`] says | `width × height` | `TEXTURE_BINDING` | depth with the view's inverse view-projection, or world position (`w > 0` where a surface is) |
-//! | `gbuffer.normal` | `Rgba32Float` or `Rgba16Float` | `width × height` | `TEXTURE_BINDING` | world normal facing the camera (xyz; `w` unused) |
+//! | `gbuffer.normal` | `Rgba32Float` or `Rgba16Float` | `width × height` | `TEXTURE_BINDING` | world normal facing the camera (xyz); `w`: the material index (glossy pass), else unused |
 //! | RSM `position`, `normal`, `flux` | `Rgba32Float` or `Rgba16Float` | `s × s`, `s` a multiple of 8 | `TEXTURE_BINDING` | per texel the surface the light sees, its normal and the flux it reflects (incident × albedo); zero flux where nothing is hit; a texel's flux shrinks as `1/s²`, so prefer `Rgba32Float` for flux (half floats go subnormal below 6·10⁻⁵: at 256² a half-float flux target zeroed 28% of the default box's lit texels) |
 //! | VPL buffer | [`GpuVplRecord`] array | `count` records, `count` a multiple of 64 | `STORAGE` | position, normal, flux |
 //! | `output` | the `output_format` of the descriptor (`Rgba16Float` or `Rgba32Float`) | `width × height` | `STORAGE_BINDING` | written: irradiance (rgb), lights kept (a); 0 where no surface |
+//! | `materials.table` (glossy pass only) | [`GpuMaterial`] array | at least one entry | `STORAGE` | glTF metallic-roughness per material; a pixel's entry is the index in `gbuffer.normal`'s `w` |
+//! | `materials.specular` (glossy pass only) | the `output_format` | `width × height` | `STORAGE_BINDING` | written: the specular correction `S` (rgb); 0 where no surface |
+//!
+//! **Materials** (optional, [`IndirectPassDesc::glossy`]): without them
+//! the pass is Lambertian, as the paper's: the engine composes `ρ/π · E`.
+//! A pass built glossy takes [`IndirectInputs::materials`] every record:
+//! a table of [`GpuMaterial`]s (glTF metallic-roughness; the path tracer's
+//! and the frame's) and, in the normal texture's `w`, each pixel's index
+//! into it (an `Rgba16Float` normal holds indices up to 2048 exactly). At
+//! a pixel whose material has a specular lobe, every kept VPL adds its term
+//! of the specular correction `S = Σ Φ ⊙ (f(l, v) − c_diff/π)·T·share`
+//! (slc-core's `specular_correction`, `v` toward the G-buffer's `eye`):
+//! the same lights, ξ, `1/p` weights, near and far shares and transfer
+//! `T` as `E`, denoised by the same filter (a second `vpl_denoise`), the
+//! near field added after it. The engine composes `c_diff/π · E + S`
+//! with `c_diff = (1 − m)·b` (slc-core's `glossy_radiance`; a material
+//! without a specular lobe keeps `ρ/π · E`, and `S` is 0 there).
 //!
 //! Views must show mip level 0 of the whole texture in its own format. A
 //! wrong format, size or usage is a [`GpuError::Binding`] before anything is
@@ -52,6 +69,8 @@
 //!     gbuffer: GBuffer { surface: Surface::Position(&gb_position), normal: &gb_normal, eye: glam::Vec3::new(0.0, 1.0, 3.5) },
 //!     vpls: VplInput::Rsm { position: &rsm[0], normal: &rsm[1], flux: &rsm[2] },
 //!     output: &output,
+//!     // A pass built with `glossy: true` takes the material table and a specular target here.
+//!     materials: None,
 //! };
 //! let settings = IndirectSettings { culling: Culling::Stochastic(RangeParams::new(0.008, 1.0)?), ..IndirectSettings::default() };
 //! pass.record(&mut encoder, &inputs, &settings)?;
@@ -66,7 +85,7 @@ use crate::kernel::{KernelLayout, UniformSlots, check_kernels, storage, zeroed};
 use crate::{GpuContext, GpuError};
 use slc_core::interleave::NEAR_BLOCK;
 use slc_scene::vpl::{NEAR_FACTOR, PERIOD};
-use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuNearBox, GpuVplRecord, PackParams, ViewParams, VplParams};
+use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuMaterial, GpuNearBox, GpuVplRecord, PackParams, ViewParams, VplParams};
 use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, VplSource};
 
 /// Tile edge of the 2-D kernels, in pixels.
@@ -125,6 +144,11 @@ pub struct IndirectPassDesc {
     /// 1; 4 bytes of workgroup memory each): a subset with more lights
     /// streams through it in chunks. Default [`TILE_LIST`](crate::vpl::TILE_LIST).
     pub tile_list: u32,
+    /// Built with the material input (see the module docs): every record
+    /// takes [`IndirectInputs::materials`] and also writes the specular
+    /// correction `S` of glossy pixels. `false` (the default): Lambertian,
+    /// no material input.
+    pub glossy: bool,
 }
 
 impl IndirectPassDesc {
@@ -141,6 +165,7 @@ impl IndirectPassDesc {
             records_per_submission: RECORDS_PER_SUBMISSION,
             interleaved: true,
             tile_list: crate::vpl::TILE_LIST,
+            glossy: false,
         }
     }
 
@@ -166,6 +191,16 @@ pub enum VplInput<'a> {
     Buffer(&'a wgpu::Buffer),
 }
 
+/// The material input of a glossy pass ([`IndirectPassDesc::glossy`]).
+#[derive(Clone, Copy, Debug)]
+pub struct IndirectMaterials<'a> {
+    /// [`GpuMaterial`]s; a pixel's index is its normal texel's `w`.
+    pub table: &'a wgpu::Buffer,
+    /// Where the specular correction `S` goes (the output's format and size,
+    /// `STORAGE_BINDING`).
+    pub specular: &'a wgpu::TextureView,
+}
+
 /// The engine's resources for one record.
 #[derive(Clone, Copy, Debug)]
 pub struct IndirectInputs<'a> {
@@ -175,6 +210,9 @@ pub struct IndirectInputs<'a> {
     pub vpls: VplInput<'a>,
     /// Where the irradiance goes.
     pub output: &'a wgpu::TextureView,
+    /// The materials and the specular output: required by a glossy pass,
+    /// refused by a Lambertian one (`None`).
+    pub materials: Option<IndirectMaterials<'a>>,
 }
 
 /// Per-record settings of the indirect pass: all it honours.
@@ -258,6 +296,8 @@ impl Dispatch {
 struct GbufferGroups {
     tiled: wgpu::BindGroup,
     denoise: wgpu::BindGroup,
+    /// The denoise of the specular correction (glossy pass).
+    denoise_specular: Option<wgpu::BindGroup>,
     /// `vpl_near` adding to the raw irradiance (0) or the denoised one (1).
     near: [wgpu::BindGroup; 2],
 }
@@ -297,13 +337,15 @@ pub struct IndirectPass {
     vpl_params: UniformSlots,
     slots: RecordSlots,
     update_group: wgpu::BindGroup,
-    /// Keyed by the surface and normal views.
-    gbuffer_cache: ViewCache<(wgpu::TextureView, wgpu::TextureView), GbufferGroups>,
+    /// Keyed by the surface and normal views and the material table.
+    gbuffer_cache: ViewCache<(wgpu::TextureView, wgpu::TextureView, Option<wgpu::Buffer>), GbufferGroups>,
     pack_cache: ViewCache<PackKey>,
-    /// Keyed by the surface, normal and output views and the denoise.
-    export_cache: ViewCache<(wgpu::TextureView, wgpu::TextureView, wgpu::TextureView, bool)>,
+    /// Keyed by the surface, normal, output and specular views and the denoise.
+    export_cache: ViewCache<(wgpu::TextureView, wgpu::TextureView, wgpu::TextureView, Option<wgpu::TextureView>, bool)>,
     irradiance: wgpu::Buffer,
     filtered: wgpu::Buffer,
+    /// The specular correction, raw and denoised (glossy pass).
+    specular: Option<[wgpu::Buffer; 2]>,
     pack_outputs: [wgpu::Buffer; 6],
 }
 
@@ -360,6 +402,7 @@ impl IndirectPass {
             surface,
             output_format: output,
             vpl_source,
+            glossy: desc.glossy,
             ..Features::default()
         };
         let kernels = [Kernel::VplPack, Kernel::LightUpdate, Kernel::VplTiled, Kernel::VplDenoise, Kernel::VplNear, Kernel::IrradianceExport];
@@ -382,6 +425,7 @@ impl IndirectPass {
         let vpl_params = UniformSlots::new::<VplParams>(gpu, "slc vpl params", n);
         let irradiance = zeroed(gpu, "slc irradiance", pixels, rw);
         let filtered = zeroed(gpu, "slc filtered", pixels, rw);
+        let specular = desc.glossy.then(|| [zeroed(gpu, "slc specular", pixels, rw), zeroed(gpu, "slc specular filtered", pixels, rw)]);
         let lights = zeroed(gpu, "slc lights", count * std::mem::size_of::<GpuLight>() as u64, rw);
         let ids = zeroed(gpu, "slc ids", count * 4, rw);
         let rt2 = zeroed(gpu, "slc rt2", count * 4, rw);
@@ -420,6 +464,7 @@ impl IndirectPass {
             pack_outputs: [lights, ids, rt2, r2, near_slots, near_boxes],
             irradiance,
             filtered,
+            specular,
         };
         gpu.take_errors()?;
         Ok(s)
@@ -448,6 +493,34 @@ impl IndirectPass {
         let tex = wgpu::TextureUsages::TEXTURE_BINDING;
         let view = inputs.gbuffer.check(self.desc.surface, size, seed, frame)?;
         check_view("output", inputs.output, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)?;
+        match (inputs.materials, self.desc.glossy) {
+            (Some(m), true) => {
+                check_view("specular output", m.specular, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)?;
+                let entry = std::mem::size_of::<GpuMaterial>() as u64;
+                if m.table.size() < entry || !m.table.usage().contains(wgpu::BufferUsages::STORAGE) {
+                    return Err(GpuError::Binding {
+                        name: "material table",
+                        expected: format!("at least {entry} bytes (one GpuMaterial) with STORAGE usage"),
+                        found: format!("{} bytes, {:?}", m.table.size(), m.table.usage()),
+                    });
+                }
+            }
+            (None, false) => {}
+            (None, true) => {
+                return Err(GpuError::Binding {
+                    name: "materials",
+                    expected: "a material table and a specular output (the pass was built glossy)".into(),
+                    found: "none".into(),
+                });
+            }
+            (Some(_), false) => {
+                return Err(GpuError::Binding {
+                    name: "materials",
+                    expected: "none (the pass was built Lambertian: IndirectPassDesc::glossy)".into(),
+                    found: "a material table".into(),
+                });
+            }
+        }
         match (inputs.vpls, self.desc.vpls) {
             (VplInput::Rsm { position, normal, flux }, VplSourceDesc::Rsm { size }) => {
                 check_view("RSM position", position, (size, size), &FLOAT_INPUTS, tex)?;
@@ -554,9 +627,11 @@ impl IndirectPass {
         let (view_slots, vpl_slots, irradiance, filtered) = (&self.view, &self.vpl_params, &self.irradiance, &self.filtered);
         let (tiled_layout, denoise_layout, near_layout, outs) = (&self.tiled_layout, &self.denoise.layout, &self.near_layout, &self.pack_outputs);
         let [lights, _, rt2, r2, near_slots, near_boxes] = outs;
+        let specular = self.specular.as_ref();
+        let table = inputs.materials.map(|m| m.table);
         // The kernels that read the G-buffer in place: bound to the
-        // engine's views, cached by them.
-        let groups = self.gbuffer_cache.get((g.surface_view().clone(), g.normal.clone()), || {
+        // engine's views (and material table), cached by them.
+        let groups = self.gbuffer_cache.get((g.surface_view().clone(), g.normal.clone(), table.cloned()), || {
             /// The G-buffer readers' common bindings, then `rest`.
             fn with<'b>(
                 base: &[(&'static str, wgpu::BindingResource<'b>)],
@@ -570,15 +645,30 @@ impl IndirectPass {
                 (g.surface_name(), tex(g.surface_view())),
                 ("normal_tex", tex(g.normal)),
             ];
-            let near = |target: &wgpu::Buffer| {
-                let rest =
-                    [("lights", lights), ("near_slots", near_slots), ("near_boxes", near_boxes), ("rt2", rt2), ("r2", r2), ("irradiance", target)];
+            // The glossy kernels' material table and specular target.
+            let glossy = |k: usize| match (table, specular) {
+                (Some(t), Some(sp)) => vec![("materials", t), ("specular", &sp[k])],
+                _ => Vec::new(),
+            };
+            let near = |target: &wgpu::Buffer, k: usize| {
+                let mut rest = vec![
+                    ("lights", lights),
+                    ("near_slots", near_slots),
+                    ("near_boxes", near_boxes),
+                    ("rt2", rt2),
+                    ("r2", r2),
+                    ("irradiance", target),
+                ];
+                rest.extend(glossy(k));
                 near_layout.group(gpu, 0, &with(&base, &rest))
             };
+            let mut tiled = vec![("lights", lights), ("rt2", rt2), ("r2", r2), ("irradiance", irradiance)];
+            tiled.extend(glossy(0));
             GbufferGroups {
-                tiled: tiled_layout.group(gpu, 0, &with(&base, &[("lights", lights), ("rt2", rt2), ("r2", r2), ("irradiance", irradiance)])),
+                tiled: tiled_layout.group(gpu, 0, &with(&base, &tiled)),
                 denoise: denoise_layout.group(gpu, 0, &with(&base, &[("irradiance", irradiance), ("filtered", filtered)])),
-                near: [near(irradiance), near(filtered)],
+                denoise_specular: specular.map(|sp| denoise_layout.group(gpu, 0, &with(&base, &[("irradiance", &sp[0]), ("filtered", &sp[1])]))),
+                near: [near(irradiance, 0), near(filtered, 1)],
             }
         });
         let (pack, pack_slots) = (&self.pack.layout, &self.pack_params);
@@ -601,19 +691,20 @@ impl IndirectPass {
         });
         let result = if st.denoise { &self.filtered } else { &self.irradiance };
         let export = &self.export.layout;
-        let key = (g.surface_view().clone(), g.normal.clone(), inputs.output.clone(), st.denoise);
+        let specular_view = inputs.materials.map(|m| m.specular);
+        let key = (g.surface_view().clone(), g.normal.clone(), inputs.output.clone(), specular_view.cloned(), st.denoise);
         let export_group = self.export_cache.get(key, || {
-            export.group(
-                gpu,
-                0,
-                &[
-                    ("view", view_slots.binding()),
-                    (g.surface_name(), tex(g.surface_view())),
-                    ("normal_tex", tex(g.normal)),
-                    ("irradiance", b(result)),
-                    ("out_tex", tex(inputs.output)),
-                ],
-            )
+            let mut res = vec![
+                ("view", view_slots.binding()),
+                (g.surface_name(), tex(g.surface_view())),
+                ("normal_tex", tex(g.normal)),
+                ("irradiance", b(result)),
+                ("out_tex", tex(inputs.output)),
+            ];
+            if let (Some(sp), Some(view)) = (specular, specular_view) {
+                res.extend([("specular", b(&sp[st.denoise as usize])), ("specular_tex", tex(view))]);
+            }
+            export.group(gpu, 0, &res)
         });
         let method = match st.culling {
             Culling::Stochastic(_) => CullMethod::Slc,
@@ -638,6 +729,10 @@ impl IndirectPass {
         out.push(d2(Stage::Shading, tiled, groups.tiled, both(), [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), p * p]));
         if st.denoise {
             out.push(d2(Stage::Denoise, &self.denoise.pipeline, groups.denoise, both(), [gx, gy, 1]));
+            if let Some(group) = groups.denoise_specular {
+                // The same filter on the specular correction.
+                out.push(d2(Stage::Denoise, &self.denoise.pipeline, group, both(), [gx, gy, 1]));
+            }
         }
         if near_r2 > 0.0 {
             let [raw, denoised] = groups.near;

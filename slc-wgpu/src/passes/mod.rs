@@ -9,7 +9,9 @@
 //! and reads nothing back.
 //!
 //! - [`IndirectPass`] ([`indirect`]): SLC indirect light from VPLs (an RSM
-//!   or a VPL buffer) on the engine's G-buffer.
+//!   or a VPL buffer) on the engine's G-buffer: irradiance, and with the
+//!   optional material input ([`IndirectMaterials`]) the specular
+//!   correction of glossy pixels under the glTF BRDF.
 //! - [`DirectPass`] ([`direct`]): SLC direct light from many point, spot,
 //!   IES and triangle lights on the engine's G-buffer, the lights movable
 //!   every frame.
@@ -41,8 +43,8 @@ pub mod direct;
 pub mod indirect;
 
 pub use direct::{Dielectric, DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, MaterialInputs};
-pub use indirect::{IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings, VplInput, VplSourceDesc, vpl_buffer};
-pub use slc_shared_shaders::layout::GpuVplRecord;
+pub use indirect::{IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, VplInput, VplSourceDesc, vpl_buffer};
+pub use slc_shared_shaders::layout::{GpuMaterial, GpuVplRecord};
 
 #[cfg(doc)]
 use crate::GpuContext;

@@ -1,0 +1,140 @@
+struct ImageParams {
+    eye: vec3<f32>,
+    width: u32,
+    height: u32,
+    pad0_: u32,
+    pad1_: u32,
+    pad2_: u32,
+}
+
+struct GpuMaterial {
+    albedo: vec3<f32>,
+    metallic: f32,
+    emission: vec3<f32>,
+    alpha: f32,
+    f0_: vec3<f32>,
+    f90_: f32,
+}
+
+const LIGHT_POINT: u32 = 0u;
+const LIGHT_SPOT: u32 = 1u;
+const LIGHT_IES: u32 = 2u;
+const LIGHT_TRIANGLE: u32 = 3u;
+const LIGHT_VPL: u32 = 4u;
+const NO_LIGHT: u32 = 4294967295u;
+const MAP_CAMERA: u32 = 0u;
+const MAP_PERSPECTIVE: u32 = 1u;
+const MAP_ORTHOGRAPHIC: u32 = 2u;
+const XI_STEP: f32 = 0.000000059604645f;
+const PICK_STREAM: u32 = 2654435769u;
+const TWO_PI: f32 = 6.2831855f;
+const CULL_RADIUS_SCALE: f32 = 1.000001f;
+const SPHERE_PAD: f32 = 0.00000047683716f;
+const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
+const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const INV_PI: f32 = 0.31830987f;
+const MIN_D2_: f32 = 0.000000000001f;
+const BSH_NONE: u32 = 4294967295u;
+const RESERVOIR_FULL: u32 = 4294967295u;
+const GGX_ALPHA_MIN: f32 = 0.001f;
+const RANGE_SCALE_MAX: f32 = 64f;
+const LIGHT_BVH_LEAF: u32 = 4294967295u;
+const ONE_MINUS_EPSILON: f32 = 0.99999994f;
+const F32_MAX: f32 = 340282350000000000000000000000000000000f;
+const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
+const DEPTH_SIGMA: f32 = 0.05f;
+const COVER_WEIGHT: f32 = 0.1f;
+const NEAR_BLOCK: u32 = 64u;
+const ROULETTE_DEPTH: u32 = 2u;
+
+@group(0) @binding(0) 
+var<uniform> image: ImageParams;
+@group(0) @binding(1) 
+var position_tex: texture_2d<f32>;
+@group(0) @binding(2) 
+var normal_tex: texture_2d<f32>;
+@group(0) @binding(3) 
+var indirect_tex: texture_2d<f32>;
+@group(0) @binding(4) 
+var<storage> direct_1: array<vec4<f32>>;
+@group(0) @binding(5) 
+var<storage> materials: array<GpuMaterial>;
+@group(0) @binding(6) 
+var out_tex: texture_storage_2d<rgba32float,write>;
+@group(0) @binding(7) 
+var specular_tex: texture_2d<f32>;
+
+fn diffuse_albedo(base: vec3<f32>, metallic: f32) -> vec3<f32> {
+    return (base * (1f - metallic));
+}
+
+fn has_specular(metallic_1: f32, f0_d: vec3<f32>, f90_d: f32) -> bool {
+    var local_1: bool;
+    var local_2: bool;
+
+    if !((metallic_1 > 0f)) {
+        local_1 = (f90_d > 0f);
+    } else {
+        local_1 = true;
+    }
+    let _e11 = local_1;
+    if !(_e11) {
+        local_2 = (max(max(f0_d.x, f0_d.y), f0_d.z) > 0f);
+    } else {
+        local_2 = true;
+    }
+    let _e23 = local_2;
+    return _e23;
+}
+
+fn diffuse_radiance(albedo: vec3<f32>, emission: vec3<f32>, e: vec3<f32>) -> vec3<f32> {
+    return (emission + ((albedo * INV_PI) * e));
+}
+
+fn glossy_radiance(base_1: vec3<f32>, emission_1: vec3<f32>, metallic_2: f32, direct: vec3<f32>, indirect: vec3<f32>, specular: vec3<f32>) -> vec3<f32> {
+    let _e6 = diffuse_radiance(base_1, emission_1, direct);
+    let _e7 = diffuse_albedo(base_1, metallic_2);
+    return ((_e6 + ((_e7 * INV_PI) * indirect)) + specular);
+}
+
+@compute @workgroup_size(8, 8, 1) 
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+    var local: bool;
+    var radiance: vec3<f32> = vec3(0f);
+
+    let _e4 = image.width;
+    if !((gid.x >= _e4)) {
+        let _e12 = image.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    let _e15 = local;
+    if _e15 {
+        return;
+    }
+    let _e19 = image.width;
+    let i = ((gid.y * _e19) + gid.x);
+    let texel = vec2<i32>(i32(gid.x), i32(gid.y));
+    let _e33 = textureLoad(position_tex, texel, 0i);
+    if (_e33.w > 0f) {
+        let _e40 = textureLoad(normal_tex, texel, 0i);
+        let m = materials[u32(_e40.w)];
+        let _e47 = textureLoad(indirect_tex, texel, 0i);
+        let e_1 = _e47.xyz;
+        let _e52 = has_specular(m.metallic, m.f0_, m.f90_);
+        if _e52 {
+            let _e58 = direct_1[i];
+            let _e62 = textureLoad(specular_tex, texel, 0i);
+            let _e64 = glossy_radiance(m.albedo, m.emission, m.metallic, _e58.xyz, e_1, _e62.xyz);
+            radiance = _e64;
+        } else {
+            let _e69 = direct_1[i];
+            let _e72 = diffuse_radiance(m.albedo, m.emission, (_e69.xyz + e_1));
+            radiance = _e72;
+        }
+    }
+    let _e74 = radiance;
+    textureStore(out_tex, texel, vec4<f32>(_e74, 1f));
+    return;
+}

@@ -1,0 +1,142 @@
+#version 430 core
+#extension GL_ARB_compute_shader : require
+#extension GL_ARB_shader_storage_buffer_object : require
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+struct ImageParams {
+    vec3 eye;
+    uint width;
+    uint height;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+struct GpuMaterial {
+    vec3 albedo;
+    float metallic;
+    vec3 emission;
+    float alpha;
+    vec3 f0_;
+    float f90_;
+};
+const uint LIGHT_POINT = 0u;
+const uint LIGHT_SPOT = 1u;
+const uint LIGHT_IES = 2u;
+const uint LIGHT_TRIANGLE = 3u;
+const uint LIGHT_VPL = 4u;
+const uint NO_LIGHT = 4294967295u;
+const uint MAP_CAMERA = 0u;
+const uint MAP_PERSPECTIVE = 1u;
+const uint MAP_ORTHOGRAPHIC = 2u;
+const float XI_STEP = 5.9604645e-8;
+const uint PICK_STREAM = 2654435769u;
+const float TWO_PI = 6.2831855;
+const float CULL_RADIUS_SCALE = 1.000001;
+const float SPHERE_PAD = 4.7683716e-7;
+const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
+const float INV_PI = 0.31830987;
+const float MIN_D2_ = 1e-12;
+const uint BSH_NONE = 4294967295u;
+const uint RESERVOIR_FULL = 4294967295u;
+const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
+const float F32_MAX = 3.4028235e38;
+const float DEPTH_NONE = 1e30;
+const float DEPTH_SIGMA = 0.05;
+const float COVER_WEIGHT = 0.1;
+const uint NEAR_BLOCK = 64u;
+const uint ROULETTE_DEPTH = 2u;
+
+layout(std140) uniform ImageParams_block_0Compute { ImageParams _group_0_binding_0_cs; };
+
+uniform sampler2D _group_0_binding_1_cs;
+
+uniform sampler2D _group_0_binding_2_cs;
+
+uniform sampler2D _group_0_binding_3_cs;
+
+layout(std430) readonly buffer type_6_block_1Compute { vec4 _group_0_binding_4_cs[]; };
+
+layout(std430) readonly buffer type_7_block_2Compute { GpuMaterial _group_0_binding_5_cs[]; };
+
+layout(rgba32f) writeonly uniform image2D _group_0_binding_6_cs;
+
+uniform sampler2D _group_0_binding_7_cs;
+
+
+vec3 diffuse_albedo(vec3 base, float metallic) {
+    return (base * (1.0 - metallic));
+}
+
+bool has_specular(float metallic_1, vec3 f0_d, float f90_d) {
+    bool local_1 = false;
+    bool local_2 = false;
+    if (!((metallic_1 > 0.0))) {
+        local_1 = (f90_d > 0.0);
+    } else {
+        local_1 = true;
+    }
+    bool _e11 = local_1;
+    if (!(_e11)) {
+        local_2 = (max(max(f0_d.x, f0_d.y), f0_d.z) > 0.0);
+    } else {
+        local_2 = true;
+    }
+    bool _e23 = local_2;
+    return _e23;
+}
+
+vec3 diffuse_radiance(vec3 albedo, vec3 emission, vec3 e) {
+    return (emission + ((albedo * INV_PI) * e));
+}
+
+vec3 glossy_radiance(vec3 base_1, vec3 emission_1, float metallic_2, vec3 direct, vec3 indirect, vec3 specular) {
+    vec3 _e6 = diffuse_radiance(base_1, emission_1, direct);
+    vec3 _e7 = diffuse_albedo(base_1, metallic_2);
+    return ((_e6 + ((_e7 * INV_PI) * indirect)) + specular);
+}
+
+void main() {
+    uvec3 gid = gl_GlobalInvocationID;
+    bool local = false;
+    vec3 radiance = vec3(0.0);
+    uint _e4 = _group_0_binding_0_cs.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = _group_0_binding_0_cs.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    uint _e19 = _group_0_binding_0_cs.width;
+    uint i = ((gid.y * _e19) + gid.x);
+    ivec2 texel = ivec2(int(gid.x), int(gid.y));
+    vec4 _e33 = texelFetch(_group_0_binding_1_cs, texel, 0);
+    if ((_e33.w > 0.0)) {
+        vec4 _e40 = texelFetch(_group_0_binding_2_cs, texel, 0);
+        GpuMaterial m = _group_0_binding_5_cs[uint(_e40.w)];
+        vec4 _e47 = texelFetch(_group_0_binding_3_cs, texel, 0);
+        vec3 e_1 = _e47.xyz;
+        bool _e52 = has_specular(m.metallic, m.f0_, m.f90_);
+        if (_e52) {
+            vec4 _e58 = _group_0_binding_4_cs[i];
+            vec4 _e62 = texelFetch(_group_0_binding_7_cs, texel, 0);
+            vec3 _e64 = glossy_radiance(m.albedo, m.emission, m.metallic, _e58.xyz, e_1, _e62.xyz);
+            radiance = _e64;
+        } else {
+            vec4 _e69 = _group_0_binding_4_cs[i];
+            vec3 _e72 = diffuse_radiance(m.albedo, m.emission, (_e69.xyz + e_1));
+            radiance = _e72;
+        }
+    }
+    vec3 _e74 = radiance;
+    imageStore(_group_0_binding_6_cs, texel, vec4(_e74, 1.0));
+    return;
+}
+

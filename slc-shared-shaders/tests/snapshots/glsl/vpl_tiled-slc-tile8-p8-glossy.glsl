@@ -1,0 +1,557 @@
+#version 430 core
+#extension GL_ARB_compute_shader : require
+#extension GL_ARB_shader_storage_buffer_object : require
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+struct GpuLight {
+    vec3 p0_;
+    uint kind;
+    vec3 p1_;
+    float a;
+    vec3 p2_;
+    float b;
+    vec3 intensity;
+    uint ies_base;
+};
+struct VplParams {
+    uint width;
+    uint height;
+    uint lights_per_subset;
+    float min_d2_;
+    float near_r2_;
+    uint near_blocks;
+    uint pad0_;
+    uint pad1_;
+};
+struct GpuMaterial {
+    vec3 albedo;
+    float metallic;
+    vec3 emission;
+    float alpha;
+    vec3 f0_;
+    float f90_;
+};
+struct ViewParams {
+    vec4 c0_;
+    vec4 c1_;
+    vec4 c2_;
+    vec4 c3_;
+    vec3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    vec3 f0_d;
+    float f90_d;
+};
+struct WorkgroupBox {
+    vec3 lo;
+    vec3 hi;
+};
+struct GbTexel {
+    vec4 position;
+    vec4 normal;
+};
+struct Glossy {
+    GpuMaterial m;
+    vec3 v;
+    bool on;
+};
+const uint LIGHT_POINT = 0u;
+const uint LIGHT_SPOT = 1u;
+const uint LIGHT_IES = 2u;
+const uint LIGHT_TRIANGLE = 3u;
+const uint LIGHT_VPL = 4u;
+const uint NO_LIGHT = 4294967295u;
+const uint MAP_CAMERA = 0u;
+const uint MAP_PERSPECTIVE = 1u;
+const uint MAP_ORTHOGRAPHIC = 2u;
+const float XI_STEP = 5.9604645e-8;
+const uint PICK_STREAM = 2654435769u;
+const float TWO_PI = 6.2831855;
+const float CULL_RADIUS_SCALE = 1.000001;
+const float SPHERE_PAD = 4.7683716e-7;
+const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
+const float INV_PI = 0.31830987;
+const float MIN_D2_ = 1e-12;
+const uint BSH_NONE = 4294967295u;
+const uint RESERVOIR_FULL = 4294967295u;
+const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
+const float F32_MAX = 3.4028235e38;
+const float DEPTH_NONE = 1e30;
+const float DEPTH_SIGMA = 0.05;
+const float COVER_WEIGHT = 0.1;
+const uint NEAR_BLOCK = 64u;
+const uint ROULETTE_DEPTH = 2u;
+const uint P = 8u;
+const uint TILE = 8u;
+const uint THREADS = 64u;
+const uint BOX_THREADS = 64u;
+const uint MAX_TILE_LIGHTS = 1024u;
+
+shared vec3 wg_lo[64];
+
+shared vec3 wg_hi[64];
+
+layout(std140) uniform VplParams_block_0Compute { VplParams _group_0_binding_0_cs; };
+
+layout(std140) uniform ViewParams_block_1Compute { ViewParams _group_0_binding_1_cs; };
+
+uniform sampler2D _group_0_binding_2_cs;
+
+uniform sampler2D _group_0_binding_3_cs;
+
+layout(std430) readonly buffer type_8_block_2Compute { GpuLight _group_0_binding_4_cs[]; };
+
+layout(std430) readonly buffer type_4_block_3Compute { float _group_0_binding_5_cs[]; };
+
+layout(std430) readonly buffer type_4_block_4Compute { float _group_0_binding_6_cs[]; };
+
+layout(std430) buffer type_9_block_5Compute { vec4 _group_0_binding_7_cs[]; };
+
+layout(std430) readonly buffer type_10_block_6Compute { GpuMaterial _group_0_binding_8_cs[]; };
+
+layout(std430) buffer type_9_block_7Compute { vec4 _group_0_binding_9_cs[]; };
+
+shared uint tile_count;
+
+shared uint tile_lights[1024];
+
+
+float slc_weight(float rt2_, float d2_) {
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (d2_ / rt2_);
+}
+
+bool slc_keep(float r2_, float d2_1) {
+    return (d2_1 < r2_);
+}
+
+float cull_radius(float r2_1) {
+    return (sqrt(r2_1) * CULL_RADIUS_SCALE);
+}
+
+bool sphere_overlaps_aabb(vec3 c, float r, vec3 bmin, vec3 bmax) {
+    vec3 q = clamp(c, bmin, bmax);
+    vec3 v_6 = (q - c);
+    return (dot(v_6, v_6) <= (r * r));
+}
+
+float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v, float min_d2_) {
+    float m = max(dot(v, v), min_d2_);
+    return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m * m));
+}
+
+float ggx_d(float cos_h, float sin2_h, float alpha) {
+    if ((cos_h <= 0.0)) {
+        return 0.0;
+    }
+    float a2_ = (alpha * alpha);
+    float t = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t * t));
+}
+
+float smith_root(float cos_, float alpha_1) {
+    float a2_1 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1.0 - a2_1)) + a2_1));
+}
+
+float smith_visibility(float n_l_1, float n_v, float alpha_2) {
+    bool local_2 = false;
+    if (!((n_l_1 <= 0.0))) {
+        local_2 = (n_v <= 0.0);
+    } else {
+        local_2 = true;
+    }
+    bool _e11 = local_2;
+    if (_e11) {
+        return 0.0;
+    }
+    float _e13 = smith_root(n_v, alpha_2);
+    float _e15 = smith_root(n_l_1, alpha_2);
+    return (0.5 / ((n_l_1 * _e13) + (n_v * _e15)));
+}
+
+vec3 fresnel_schlick(vec3 f0_, float f90_, float v_h) {
+    float c_1 = clamp((1.0 - v_h), 0.0, 1.0);
+    float c2_ = (c_1 * c_1);
+    return (f0_ + ((vec3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_1)));
+}
+
+vec3 specular_fresnel(vec3 base, float metallic, vec3 f0_d, float f90_d, float v_h_1) {
+    vec3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    vec3 _e10 = fresnel_schlick(base, 1.0, v_h_1);
+    return ((_e5 * (1.0 - metallic)) + (_e10 * metallic));
+}
+
+vec3 diffuse_brdf(vec3 base_1, float metallic_1, vec3 f0_d_1, float f90_d_1, float v_h_2) {
+    vec3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return ((((vec3(1.0, 1.0, 1.0) - _e9) * base_1) * (1.0 - metallic_1)) * INV_PI);
+}
+
+float half_cosine(vec3 v_1, vec3 l) {
+    vec3 h = (v_1 + l);
+    float len2_ = dot(h, h);
+    if ((len2_ <= 0.0)) {
+        return 0.0;
+    }
+    return clamp((dot(v_1, h) / sqrt(len2_)), 0.0, 1.0);
+}
+
+vec3 specular_brdf(vec3 base_2, float metallic_2, vec3 f0_d_2, float f90_d_2, float alpha_3, vec3 n, vec3 v_2, vec3 l_1) {
+    bool local_3 = false;
+    float n_l_2 = dot(n, l_1);
+    float n_v_1 = dot(n, v_2);
+    if (!((n_l_2 <= 0.0))) {
+        local_3 = (n_v_1 <= 0.0);
+    } else {
+        local_3 = true;
+    }
+    bool _e18 = local_3;
+    if (_e18) {
+        return vec3(0.0, 0.0, 0.0);
+    }
+    vec3 hs = (v_2 + l_1);
+    float inv = (1.0 / sqrt(dot(hs, hs)));
+    vec3 h_1 = (hs * inv);
+    vec3 c_2 = cross(n, h_1);
+    float _e32 = ggx_d(dot(n, h_1), dot(c_2, c_2), alpha_3);
+    vec3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_2, h_1));
+    float _e35 = smith_visibility(n_l_2, n_v_1, alpha_3);
+    return (_e34 * (_e32 * _e35));
+}
+
+vec3 brdf_eval(vec3 base_3, float metallic_3, vec3 f0_d_3, float f90_d_3, float alpha_4, vec3 n_1, vec3 v_3, vec3 l_2) {
+    if ((dot(n_1, l_2) <= 0.0)) {
+        return vec3(0.0, 0.0, 0.0);
+    }
+    float _e15 = half_cosine(v_3, l_2);
+    vec3 _e16 = diffuse_brdf(base_3, metallic_3, f0_d_3, f90_d_3, _e15);
+    vec3 _e17 = specular_brdf(base_3, metallic_3, f0_d_3, f90_d_3, alpha_4, n_1, v_3, l_2);
+    return (_e16 + _e17);
+}
+
+vec3 diffuse_albedo(vec3 base_4, float metallic_4) {
+    return (base_4 * (1.0 - metallic_4));
+}
+
+vec3 specular_correction(vec3 base_5, float metallic_5, vec3 f0_d_4, float f90_d_4, float alpha_5, vec3 n_2, vec3 v_4, vec3 l_3) {
+    vec3 _e8 = brdf_eval(base_5, metallic_5, f0_d_4, f90_d_4, alpha_5, n_2, v_4, l_3);
+    vec3 _e9 = diffuse_albedo(base_5, metallic_5);
+    return (_e8 - (_e9 * INV_PI));
+}
+
+bool has_specular(float metallic_6, vec3 f0_d_5, float f90_d_5) {
+    bool local_4 = false;
+    bool local_5 = false;
+    if (!((metallic_6 > 0.0))) {
+        local_4 = (f90_d_5 > 0.0);
+    } else {
+        local_4 = true;
+    }
+    bool _e11 = local_4;
+    if (!(_e11)) {
+        local_5 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
+    } else {
+        local_5 = true;
+    }
+    bool _e23 = local_5;
+    return _e23;
+}
+
+float vpl_near_weight(float d2_2, float near_r2_) {
+    if ((near_r2_ <= 0.0)) {
+        return 0.0;
+    }
+    float t_1 = clamp(((near_r2_ - d2_2) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
+}
+
+float vpl_far_weight(float d2_3, float near_r2_1) {
+    float _e2 = vpl_near_weight(d2_3, near_r2_1);
+    return (1.0 - _e2);
+}
+
+float vpl_far_slc_share(float rt2_1, float r2_2, float d2_4, float near_r2_2) {
+    float _e4 = vpl_far_weight(d2_4, near_r2_2);
+    float _e5 = slc_weight(rt2_1, d2_4);
+    bool _e7 = slc_keep(r2_2, d2_4);
+    return ((_e7 && (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+WorkgroupBox workgroup_box(uint li_1, vec3 p, bool has) {
+    uint stride = 32u;
+    wg_lo[li_1] = (has ? p : vec3(3.4028235e38));
+    wg_hi[li_1] = (has ? p : vec3(-3.4028235e38));
+    memoryBarrierShared();
+    barrier();
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e42 = stride;
+            stride = (_e42 / 2u);
+        }
+        loop_init = false;
+        uint _e15 = stride;
+        if ((_e15 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = stride;
+            if ((li_1 < _e18)) {
+                vec3 _e24 = wg_lo[li_1];
+                uint _e26 = stride;
+                vec3 _e29 = wg_lo[(li_1 + _e26)];
+                wg_lo[li_1] = min(_e24, _e29);
+                vec3 _e35 = wg_hi[li_1];
+                uint _e37 = stride;
+                vec3 _e40 = wg_hi[(li_1 + _e37)];
+                wg_hi[li_1] = max(_e35, _e40);
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    vec3 _e47 = wg_lo[0];
+    vec3 _e50 = wg_hi[0];
+    return WorkgroupBox(_e47, _e50);
+}
+
+vec4 surface_at(ivec2 texel) {
+    vec4 p_1 = texelFetch(_group_0_binding_2_cs, texel, 0);
+    return ((p_1.w > 0.0) ? vec4(p_1.xyz, 1.0) : vec4(0.0));
+}
+
+GbTexel gbuffer_at(uint i) {
+    bool local_6 = false;
+    uint _e3 = _group_0_binding_1_cs.width;
+    uint _e8 = _group_0_binding_1_cs.width;
+    ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
+    vec4 _e12 = surface_at(texel_1);
+    vec4 _e15 = texelFetch(_group_0_binding_3_cs, texel_1, 0);
+    vec3 n_4 = _e15.xyz;
+    float len2_1 = dot(n_4, n_4);
+    if ((_e12.w > 0.0)) {
+        local_6 = (len2_1 > 0.0);
+    } else {
+        local_6 = false;
+    }
+    bool valid = local_6;
+    vec3 _e30 = _group_0_binding_1_cs.eye;
+    vec3 v_7 = (_e12.xyz - _e30);
+    vec4 position = vec4(_e12.xyz, (valid ? 1.0 : 0.0));
+    vec4 normal = (valid ? vec4((n_4 / vec3(sqrt(len2_1))), sqrt(dot(v_7, v_7))) : vec4(0.0, 0.0, 0.0, 1e30));
+    return GbTexel(position, normal);
+}
+
+Glossy glossy_at(uint i_1, vec3 x) {
+    uint _e4 = _group_0_binding_1_cs.width;
+    uint _e9 = _group_0_binding_1_cs.width;
+    ivec2 texel_2 = ivec2(int((i_1 % _e4)), int((i_1 / _e9)));
+    vec4 _e16 = texelFetch(_group_0_binding_3_cs, texel_2, 0);
+    GpuMaterial m_1 = _group_0_binding_8_cs[uint(_e16.w)];
+    vec3 _e23 = _group_0_binding_1_cs.eye;
+    bool _e29 = has_specular(m_1.metallic, m_1.f0_, m_1.f90_);
+    return Glossy(m_1, normalize((_e23 - x)), _e29);
+}
+
+vec3 glossy_term(Glossy g_1, GpuLight l_4, vec3 n_3, vec3 v_5, float min_d2_1, float share) {
+    bool local_7 = false;
+    float _e7 = vpl_transfer(l_4.p1_, n_3, v_5, min_d2_1);
+    if (!(!(g_1.on))) {
+        local_7 = (_e7 <= 0.0);
+    } else {
+        local_7 = true;
+    }
+    bool _e16 = local_7;
+    if (_e16) {
+        return vec3(0.0);
+    }
+    vec3 _e33 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    return ((l_4.intensity * _e33) * (_e7 * share));
+}
+
+void main() {
+    if (gl_LocalInvocationID == uvec3(0u)) {
+        wg_lo = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        wg_hi = vec3[64](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        tile_count = 0u;
+        tile_lights = uint[1024](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    }
+    memoryBarrierShared();
+    barrier();
+    uvec3 wg = gl_WorkGroupID;
+    uvec3 lid = gl_LocalInvocationID;
+    uint li = gl_LocalInvocationIndex;
+    bool local = false;
+    vec4 pos = vec4(0.0);
+    vec3 nrm = vec3(0.0);
+    bool local_1 = false;
+    vec3 e = vec3(0.0);
+    uint kept = 0u;
+    vec3 s = vec3(0.0);
+    Glossy g = Glossy(GpuMaterial(vec3(0.0), 0.0, vec3(0.0), 0.0, vec3(0.0), 0.0), vec3(0.0), false);
+    uint first = 0u;
+    uint j = 0u;
+    uint k = 0u;
+    uint sub = wg.z;
+    uint px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
+    uint py = ((sub / P) + (((wg.y * TILE) + lid.y) * P));
+    uint _e26 = _group_0_binding_0_cs.width;
+    if ((px < _e26)) {
+        uint _e32 = _group_0_binding_0_cs.height;
+        local = (py < _e32);
+    } else {
+        local = false;
+    }
+    bool inside = local;
+    uint _e38 = _group_0_binding_0_cs.width;
+    uint pix = ((py * _e38) + px);
+    if (inside) {
+        GbTexel _e47 = gbuffer_at(pix);
+        pos = _e47.position;
+        nrm = _e47.normal.xyz;
+    }
+    if (inside) {
+        float _e54 = pos.w;
+        local_1 = (_e54 > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool valid_1 = local_1;
+    vec4 _e59 = pos;
+    WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
+    vec3 lo = _e61.lo;
+    vec3 hi = _e61.hi;
+    uint _e66 = _group_0_binding_0_cs.lights_per_subset;
+    uint base_6 = (sub * _e66);
+    if (valid_1) {
+        vec4 _e77 = pos;
+        Glossy _e79 = glossy_at(pix, _e77.xyz);
+        g = _e79;
+    }
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e185 = first;
+            first = (_e185 + MAX_TILE_LIGHTS);
+        }
+        loop_init_1 = false;
+        uint _e82 = first;
+        uint _e85 = _group_0_binding_0_cs.lights_per_subset;
+        if ((_e82 < _e85)) {
+        } else {
+            break;
+        }
+        {
+            uint _e87 = first;
+            uint _e92 = _group_0_binding_0_cs.lights_per_subset;
+            uint end = min((_e87 + MAX_TILE_LIGHTS), _e92);
+            if ((li == 0u)) {
+                atomicExchange(tile_count, 0u);
+            }
+            memoryBarrierShared();
+            barrier();
+            uint _e98 = first;
+            j = (_e98 + li);
+            bool loop_init_2 = true;
+            while(true) {
+                if (!loop_init_2) {
+                    uint _e124 = j;
+                    j = (_e124 + THREADS);
+                }
+                loop_init_2 = false;
+                uint _e101 = j;
+                if ((_e101 < end)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e104 = j;
+                    vec3 _e108 = _group_0_binding_4_cs[(base_6 + _e104)].p0_;
+                    uint _e110 = j;
+                    float _e113 = _group_0_binding_6_cs[(base_6 + _e110)];
+                    float _e114 = cull_radius(_e113);
+                    bool _e115 = sphere_overlaps_aabb(_e108, _e114, lo, hi);
+                    if (_e115) {
+                        uint _e118 = atomicAdd(tile_count, 1u);
+                        if ((_e118 < MAX_TILE_LIGHTS)) {
+                            uint _e123 = j;
+                            tile_lights[_e118] = _e123;
+                        }
+                    }
+                }
+            }
+            memoryBarrierShared();
+            barrier();
+            uint _e128 = tile_count;
+            memoryBarrierShared();
+            barrier();
+            uint count = min(_e128, MAX_TILE_LIGHTS);
+            if (valid_1) {
+                k = 0u;
+                bool loop_init_3 = true;
+                while(true) {
+                    if (!loop_init_3) {
+                        uint _e183 = k;
+                        k = (_e183 + 1u);
+                    }
+                    loop_init_3 = false;
+                    uint _e133 = k;
+                    if ((_e133 < count)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e136 = k;
+                        uint _e138 = tile_lights[_e136];
+                        uint j_1 = (base_6 + _e138);
+                        GpuLight l_5 = _group_0_binding_4_cs[j_1];
+                        vec4 _e143 = pos;
+                        vec3 v_8 = (_e143.xyz - l_5.p0_);
+                        float _e149 = _group_0_binding_5_cs[j_1];
+                        float _e152 = _group_0_binding_6_cs[j_1];
+                        float _e156 = _group_0_binding_0_cs.near_r2_;
+                        float _e157 = vpl_far_slc_share(_e149, _e152, dot(v_8, v_8), _e156);
+                        if ((_e157 > 0.0)) {
+                            vec3 _e160 = e;
+                            vec3 _e163 = nrm;
+                            float _e166 = _group_0_binding_0_cs.min_d2_;
+                            float _e167 = vpl_transfer(l_5.p1_, _e163, v_8, _e166);
+                            e = (_e160 + (l_5.intensity * (_e167 * _e157)));
+                            vec3 _e171 = s;
+                            Glossy _e172 = g;
+                            vec3 _e173 = nrm;
+                            float _e176 = _group_0_binding_0_cs.min_d2_;
+                            vec3 _e177 = glossy_term(_e172, l_5, _e173, v_8, _e176, _e157);
+                            s = (_e171 + _e177);
+                            uint _e179 = kept;
+                            kept = (_e179 + 1u);
+                        }
+                    }
+                }
+            }
+            memoryBarrierShared();
+            barrier();
+        }
+    }
+    if (inside) {
+        vec3 _e190 = e;
+        uint _e191 = kept;
+        _group_0_binding_7_cs[pix] = vec4(_e190, float(_e191));
+        vec3 _e196 = s;
+        _group_0_binding_9_cs[pix] = vec4(_e196, 0.0);
+        return;
+    } else {
+        return;
+    }
+}
+

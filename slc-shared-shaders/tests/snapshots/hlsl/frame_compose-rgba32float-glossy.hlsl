@@ -1,0 +1,152 @@
+struct ImageParams {
+    float3 eye;
+    uint width;
+    uint height;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+
+struct GpuMaterial {
+    float3 albedo;
+    float metallic;
+    float3 emission;
+    float alpha;
+    float3 f0_;
+    float f90_;
+};
+
+static const uint LIGHT_POINT = 0u;
+static const uint LIGHT_SPOT = 1u;
+static const uint LIGHT_IES = 2u;
+static const uint LIGHT_TRIANGLE = 3u;
+static const uint LIGHT_VPL = 4u;
+static const uint NO_LIGHT = 4294967295u;
+static const uint MAP_CAMERA = 0u;
+static const uint MAP_PERSPECTIVE = 1u;
+static const uint MAP_ORTHOGRAPHIC = 2u;
+static const float XI_STEP = 5.9604645e-8;
+static const uint PICK_STREAM = 2654435769u;
+static const float TWO_PI = 6.2831855;
+static const float CULL_RADIUS_SCALE = 1.000001;
+static const float SPHERE_PAD = 4.7683716e-7;
+static const float SPHERE_HUGE = 3.4028235e38;
+static const float SPHERE_PAD_ABS = 1e-18;
+static const float INV_PI = 0.31830987;
+static const float MIN_D2_ = 1e-12;
+static const uint BSH_NONE = 4294967295u;
+static const uint RESERVOIR_FULL = 4294967295u;
+static const float GGX_ALPHA_MIN = 0.001;
+static const float RANGE_SCALE_MAX = 64.0;
+static const uint LIGHT_BVH_LEAF = 4294967295u;
+static const float ONE_MINUS_EPSILON = 0.99999994;
+static const float F32_MAX = 3.4028235e38;
+static const float DEPTH_NONE = 1e30;
+static const float DEPTH_SIGMA = 0.05;
+static const float COVER_WEIGHT = 0.1;
+static const uint NEAR_BLOCK = 64u;
+static const uint ROULETTE_DEPTH = 2u;
+
+cbuffer image : register(b0) { ImageParams image; }
+Texture2D<float4> position_tex : register(t1);
+Texture2D<float4> normal_tex : register(t2);
+Texture2D<float4> indirect_tex : register(t3);
+ByteAddressBuffer direct_1 : register(t4);
+ByteAddressBuffer materials : register(t5);
+RWTexture2D<float4> out_tex : register(u6);
+Texture2D<float4> specular_tex : register(t7);
+
+float3 diffuse_albedo(float3 base, float metallic)
+{
+    return (base * (1.0 - metallic));
+}
+
+bool has_specular(float metallic_1, float3 f0_d, float f90_d)
+{
+    bool local_1 = (bool)0;
+    bool local_2 = (bool)0;
+
+    if (!((metallic_1 > 0.0))) {
+        local_1 = (f90_d > 0.0);
+    } else {
+        local_1 = true;
+    }
+    bool _e11 = local_1;
+    if (!(_e11)) {
+        local_2 = (max(max(f0_d.x, f0_d.y), f0_d.z) > 0.0);
+    } else {
+        local_2 = true;
+    }
+    bool _e23 = local_2;
+    return _e23;
+}
+
+float3 diffuse_radiance(float3 albedo, float3 emission, float3 e)
+{
+    return (emission + ((albedo * INV_PI) * e));
+}
+
+float3 glossy_radiance(float3 base_1, float3 emission_1, float metallic_2, float3 direct, float3 indirect, float3 specular)
+{
+    const float3 _e6 = diffuse_radiance(base_1, emission_1, direct);
+    const float3 _e7 = diffuse_albedo(base_1, metallic_2);
+    return ((_e6 + ((_e7 * INV_PI) * indirect)) + specular);
+}
+
+uint naga_f2u32(float value) {
+    return uint(clamp(value, 0.0, 4294967000.0));
+}
+
+GpuMaterial ConstructGpuMaterial(float3 arg0, float arg1, float3 arg2, float arg3, float3 arg4, float arg5) {
+    GpuMaterial ret = (GpuMaterial)0;
+    ret.albedo = arg0;
+    ret.metallic = arg1;
+    ret.emission = arg2;
+    ret.alpha = arg3;
+    ret.f0_ = arg4;
+    ret.f90_ = arg5;
+    return ret;
+}
+
+[numthreads(8, 8, 1)]
+void main(uint3 gid : SV_DispatchThreadID)
+{
+    bool local = (bool)0;
+    float3 radiance = (0.0).xxx;
+
+    uint _e4 = image.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = image.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    uint _e19 = image.width;
+    uint i = ((gid.y * _e19) + gid.x);
+    int2 texel = int2(int(gid.x), int(gid.y));
+    float4 _e33 = position_tex.Load(int3(texel, int(0)));
+    if ((_e33.w > 0.0)) {
+        float4 _e40 = normal_tex.Load(int3(texel, int(0)));
+        GpuMaterial m = ConstructGpuMaterial(asfloat(materials.Load3(naga_f2u32(_e40.w)*48+0)), asfloat(materials.Load(naga_f2u32(_e40.w)*48+12)), asfloat(materials.Load3(naga_f2u32(_e40.w)*48+16)), asfloat(materials.Load(naga_f2u32(_e40.w)*48+28)), asfloat(materials.Load3(naga_f2u32(_e40.w)*48+32)), asfloat(materials.Load(naga_f2u32(_e40.w)*48+44)));
+        float4 _e47 = indirect_tex.Load(int3(texel, int(0)));
+        float3 e_1 = _e47.xyz;
+        const bool _e52 = has_specular(m.metallic, m.f0_, m.f90_);
+        if (_e52) {
+            float4 _e58 = asfloat(direct_1.Load4(i*16));
+            float4 _e62 = specular_tex.Load(int3(texel, int(0)));
+            const float3 _e64 = glossy_radiance(m.albedo, m.emission, m.metallic, _e58.xyz, e_1, _e62.xyz);
+            radiance = _e64;
+        } else {
+            float4 _e69 = asfloat(direct_1.Load4(i*16));
+            const float3 _e72 = diffuse_radiance(m.albedo, m.emission, (_e69.xyz + e_1));
+            radiance = _e72;
+        }
+    }
+    float3 _e74 = radiance;
+    out_tex[texel] = float4(_e74, 1.0);
+    return;
+}

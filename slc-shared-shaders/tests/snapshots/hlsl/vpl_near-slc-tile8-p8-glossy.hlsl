@@ -1,0 +1,710 @@
+struct GpuLight {
+    float3 p0_;
+    uint kind;
+    float3 p1_;
+    float a;
+    float3 p2_;
+    float b;
+    float3 intensity;
+    uint ies_base;
+};
+
+struct VplParams {
+    uint width;
+    uint height;
+    uint lights_per_subset;
+    float min_d2_;
+    float near_r2_;
+    uint near_blocks;
+    uint pad0_;
+    uint pad1_;
+};
+
+struct GpuNearBox {
+    float3 lo;
+    float pad0_;
+    float3 hi;
+    float pad1_;
+};
+
+struct GpuMaterial {
+    float3 albedo;
+    float metallic;
+    float3 emission;
+    float alpha;
+    float3 f0_;
+    float f90_;
+};
+
+struct ViewParams {
+    float4 c0_;
+    float4 c1_;
+    float4 c2_;
+    float4 c3_;
+    float3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    float3 f0_d;
+    float f90_d;
+};
+
+struct WorkgroupBox {
+    float3 lo;
+    int _pad1_0;
+    float3 hi;
+    int _end_pad_0;
+};
+
+struct GbTexel {
+    float4 position;
+    float4 normal;
+};
+
+struct Glossy {
+    GpuMaterial m;
+    float3 v;
+    bool on;
+};
+
+static const uint LIGHT_POINT = 0u;
+static const uint LIGHT_SPOT = 1u;
+static const uint LIGHT_IES = 2u;
+static const uint LIGHT_TRIANGLE = 3u;
+static const uint LIGHT_VPL = 4u;
+static const uint NO_LIGHT = 4294967295u;
+static const uint MAP_CAMERA = 0u;
+static const uint MAP_PERSPECTIVE = 1u;
+static const uint MAP_ORTHOGRAPHIC = 2u;
+static const float XI_STEP = 5.9604645e-8;
+static const uint PICK_STREAM = 2654435769u;
+static const float TWO_PI = 6.2831855;
+static const float CULL_RADIUS_SCALE = 1.000001;
+static const float SPHERE_PAD = 4.7683716e-7;
+static const float SPHERE_HUGE = 3.4028235e38;
+static const float SPHERE_PAD_ABS = 1e-18;
+static const float INV_PI = 0.31830987;
+static const float MIN_D2_ = 1e-12;
+static const uint BSH_NONE = 4294967295u;
+static const uint RESERVOIR_FULL = 4294967295u;
+static const float GGX_ALPHA_MIN = 0.001;
+static const float RANGE_SCALE_MAX = 64.0;
+static const uint LIGHT_BVH_LEAF = 4294967295u;
+static const float ONE_MINUS_EPSILON = 0.99999994;
+static const float F32_MAX = 3.4028235e38;
+static const float DEPTH_NONE = 1e30;
+static const float DEPTH_SIGMA = 0.05;
+static const float COVER_WEIGHT = 0.1;
+static const uint NEAR_BLOCK = 64u;
+static const uint ROULETTE_DEPTH = 2u;
+static const uint P = 8u;
+static const uint TILE = 8u;
+static const uint THREADS = 64u;
+static const uint BOX_THREADS = 64u;
+static const uint NEAR_CHUNK = 32u;
+
+groupshared float3 wg_lo[64];
+groupshared float3 wg_hi[64];
+cbuffer params : register(b0) { VplParams params; }
+cbuffer view : register(b1) { ViewParams view; }
+Texture2D<float4> position_tex : register(t2);
+Texture2D<float4> normal_tex : register(t3);
+ByteAddressBuffer lights : register(t4);
+ByteAddressBuffer near_slots : register(t5);
+ByteAddressBuffer near_boxes : register(t6);
+ByteAddressBuffer rt2_2 : register(t7);
+ByteAddressBuffer r2_5 : register(t8);
+RWByteAddressBuffer irradiance : register(u9);
+ByteAddressBuffer materials : register(t10);
+RWByteAddressBuffer specular : register(u11);
+groupshared uint light_count;
+groupshared uint light_list[2048];
+
+float to_f32_(uint u)
+{
+    return float(u);
+}
+
+float slc_weight(float rt2_, float d2_)
+{
+    if ((d2_ <= rt2_)) {
+        return 1.0;
+    }
+    return (d2_ / rt2_);
+}
+
+bool slc_keep(float r2_, float d2_1)
+{
+    return (d2_1 < r2_);
+}
+
+float cull_radius(float r2_1)
+{
+    return (sqrt(r2_1) * CULL_RADIUS_SCALE);
+}
+
+bool sphere_overlaps_aabb(float3 c, float r, float3 bmin, float3 bmax)
+{
+    float3 q = clamp(c, bmin, bmax);
+    float3 v_6 = (q - c);
+    return (dot(v_6, v_6) <= (r * r));
+}
+
+float vpl_transfer(float3 n_l, float3 n_x, float3 v, float min_d2_)
+{
+    float m_2 = max(dot(v, v), min_d2_);
+    return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m_2 * m_2));
+}
+
+float ggx_d(float cos_h, float sin2_h, float alpha)
+{
+    if ((cos_h <= 0.0)) {
+        return 0.0;
+    }
+    float a2_ = (alpha * alpha);
+    float t = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t * t));
+}
+
+float smith_root(float cos_, float alpha_1)
+{
+    float a2_1 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1.0 - a2_1)) + a2_1));
+}
+
+float smith_visibility(float n_l_1, float n_v, float alpha_2)
+{
+    bool local_5 = (bool)0;
+
+    if (!((n_l_1 <= 0.0))) {
+        local_5 = (n_v <= 0.0);
+    } else {
+        local_5 = true;
+    }
+    bool _e11 = local_5;
+    if (_e11) {
+        return 0.0;
+    }
+    const float _e13 = smith_root(n_v, alpha_2);
+    const float _e15 = smith_root(n_l_1, alpha_2);
+    return (0.5 / ((n_l_1 * _e13) + (n_v * _e15)));
+}
+
+float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
+{
+    float c_1 = saturate((1.0 - v_h));
+    float c2_ = (c_1 * c_1);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_1)));
+}
+
+float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, float v_h_1)
+{
+    const float3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    const float3 _e10 = fresnel_schlick(base, 1.0, v_h_1);
+    return ((_e5 * (1.0 - metallic)) + (_e10 * metallic));
+}
+
+float3 diffuse_brdf(float3 base_1, float metallic_1, float3 f0_d_1, float f90_d_1, float v_h_2)
+{
+    const float3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return ((((float3(1.0, 1.0, 1.0) - _e9) * base_1) * (1.0 - metallic_1)) * INV_PI);
+}
+
+float half_cosine(float3 v_1, float3 l)
+{
+    float3 h = (v_1 + l);
+    float len2_ = dot(h, h);
+    if ((len2_ <= 0.0)) {
+        return 0.0;
+    }
+    return saturate((dot(v_1, h) / sqrt(len2_)));
+}
+
+float3 specular_brdf(float3 base_2, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n, float3 v_2, float3 l_1)
+{
+    bool local_6 = (bool)0;
+
+    float n_l_2 = dot(n, l_1);
+    float n_v_1 = dot(n, v_2);
+    if (!((n_l_2 <= 0.0))) {
+        local_6 = (n_v_1 <= 0.0);
+    } else {
+        local_6 = true;
+    }
+    bool _e18 = local_6;
+    if (_e18) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    float3 hs = (v_2 + l_1);
+    float inv = (1.0 / sqrt(dot(hs, hs)));
+    float3 h_1 = (hs * inv);
+    float3 c_2 = cross(n, h_1);
+    const float _e32 = ggx_d(dot(n, h_1), dot(c_2, c_2), alpha_3);
+    const float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_2, h_1));
+    const float _e35 = smith_visibility(n_l_2, n_v_1, alpha_3);
+    return (_e34 * (_e32 * _e35));
+}
+
+float3 brdf_eval(float3 base_3, float metallic_3, float3 f0_d_3, float f90_d_3, float alpha_4, float3 n_1, float3 v_3, float3 l_2)
+{
+    if ((dot(n_1, l_2) <= 0.0)) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    const float _e15 = half_cosine(v_3, l_2);
+    const float3 _e16 = diffuse_brdf(base_3, metallic_3, f0_d_3, f90_d_3, _e15);
+    const float3 _e17 = specular_brdf(base_3, metallic_3, f0_d_3, f90_d_3, alpha_4, n_1, v_3, l_2);
+    return (_e16 + _e17);
+}
+
+float3 diffuse_albedo(float3 base_4, float metallic_4)
+{
+    return (base_4 * (1.0 - metallic_4));
+}
+
+float3 specular_correction(float3 base_5, float metallic_5, float3 f0_d_4, float f90_d_4, float alpha_5, float3 n_2, float3 v_4, float3 l_3)
+{
+    const float3 _e8 = brdf_eval(base_5, metallic_5, f0_d_4, f90_d_4, alpha_5, n_2, v_4, l_3);
+    const float3 _e9 = diffuse_albedo(base_5, metallic_5);
+    return (_e8 - (_e9 * INV_PI));
+}
+
+bool has_specular(float metallic_6, float3 f0_d_5, float f90_d_5)
+{
+    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
+
+    if (!((metallic_6 > 0.0))) {
+        local_7 = (f90_d_5 > 0.0);
+    } else {
+        local_7 = true;
+    }
+    bool _e11 = local_7;
+    if (!(_e11)) {
+        local_8 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0.0);
+    } else {
+        local_8 = true;
+    }
+    bool _e23 = local_8;
+    return _e23;
+}
+
+float interleave_flux_scale(uint period)
+{
+    const float _e2 = to_f32_((period * period));
+    return _e2;
+}
+
+float vpl_near_weight(float d2_2, float near_r2_)
+{
+    if ((near_r2_ <= 0.0)) {
+        return 0.0;
+    }
+    float t_1 = clamp(((near_r2_ - d2_2) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
+}
+
+float vpl_near_range2_(float r2_2, uint period_1)
+{
+    const float _e2 = interleave_flux_scale(period_1);
+    return (r2_2 / _e2);
+}
+
+float vpl_near_cull_range2_(float r2_3, float near_r2_1)
+{
+    return min(r2_3, near_r2_1);
+}
+
+float vpl_near_slc_share(float rt2_1, float r2_4, float d2_3, float near_r2_2)
+{
+    const float _e4 = vpl_near_weight(d2_3, near_r2_2);
+    const float _e5 = slc_weight(rt2_1, d2_3);
+    const bool _e7 = slc_keep(r2_4, d2_3);
+    return ((_e7 & (_e4 > 0.0)) ? (_e4 * _e5) : 0.0);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
+    WorkgroupBox ret = (WorkgroupBox)0;
+    ret.lo = arg0;
+    ret.hi = arg1;
+    return ret;
+}
+
+WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
+{
+    uint stride = 32u;
+
+    wg_lo[min(uint(li_1), 63u)] = (has ? p : (3.4028235e38).xxx);
+    wg_hi[min(uint(li_1), 63u)] = (has ? p : (-3.4028235e38).xxx);
+    GroupMemoryBarrierWithGroupSync();
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e42 = stride;
+            stride = naga_div(_e42, 2u);
+        }
+        loop_init = false;
+        uint _e15 = stride;
+        if ((_e15 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = stride;
+            if ((li_1 < _e18)) {
+                float3 _e24 = wg_lo[min(uint(li_1), 63u)];
+                uint _e26 = stride;
+                float3 _e29 = wg_lo[min(uint((li_1 + _e26)), 63u)];
+                wg_lo[min(uint(li_1), 63u)] = min(_e24, _e29);
+                float3 _e35 = wg_hi[min(uint(li_1), 63u)];
+                uint _e37 = stride;
+                float3 _e40 = wg_hi[min(uint((li_1 + _e37)), 63u)];
+                wg_hi[min(uint(li_1), 63u)] = max(_e35, _e40);
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    float3 _e47 = wg_lo[0];
+    float3 _e50 = wg_hi[0];
+    const WorkgroupBox workgroupbox = ConstructWorkgroupBox(_e47, _e50);
+    return workgroupbox;
+}
+
+float4 surface_at(int2 texel)
+{
+    float4 p_1 = position_tex.Load(int3(texel, int(0)));
+    return ((p_1.w > 0.0) ? float4(p_1.xyz, 1.0) : (0.0).xxxx);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
+    GbTexel ret = (GbTexel)0;
+    ret.position = arg0;
+    ret.normal = arg1;
+    return ret;
+}
+
+GbTexel gbuffer_at(uint i)
+{
+    bool local_9 = (bool)0;
+
+    uint _e3 = view.width;
+    uint _e8 = view.width;
+    int2 texel_1 = int2(int(naga_mod(i, _e3)), int(naga_div(i, _e8)));
+    const float4 _e12 = surface_at(texel_1);
+    float4 _e15 = normal_tex.Load(int3(texel_1, int(0)));
+    float3 n_4 = _e15.xyz;
+    float len2_1 = dot(n_4, n_4);
+    if ((_e12.w > 0.0)) {
+        local_9 = (len2_1 > 0.0);
+    } else {
+        local_9 = false;
+    }
+    bool valid = local_9;
+    float3 _e30 = view.eye;
+    float3 v_7 = (_e12.xyz - _e30);
+    float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
+    float4 normal = (valid ? float4((n_4 / (sqrt(len2_1)).xxx), sqrt(dot(v_7, v_7))) : float4(0.0, 0.0, 0.0, 1e30));
+    const GbTexel gbtexel = ConstructGbTexel(position, normal);
+    return gbtexel;
+}
+
+Glossy ConstructGlossy(GpuMaterial arg0, float3 arg1, bool arg2) {
+    Glossy ret = (Glossy)0;
+    ret.m = arg0;
+    ret.v = arg1;
+    ret.on = arg2;
+    return ret;
+}
+
+uint naga_f2u32(float value) {
+    return uint(clamp(value, 0.0, 4294967000.0));
+}
+
+GpuMaterial ConstructGpuMaterial(float3 arg0, float arg1, float3 arg2, float arg3, float3 arg4, float arg5) {
+    GpuMaterial ret = (GpuMaterial)0;
+    ret.albedo = arg0;
+    ret.metallic = arg1;
+    ret.emission = arg2;
+    ret.alpha = arg3;
+    ret.f0_ = arg4;
+    ret.f90_ = arg5;
+    return ret;
+}
+
+Glossy glossy_at(uint i_1, float3 x)
+{
+    uint _e4 = view.width;
+    uint _e9 = view.width;
+    int2 texel_2 = int2(int(naga_mod(i_1, _e4)), int(naga_div(i_1, _e9)));
+    float4 _e16 = normal_tex.Load(int3(texel_2, int(0)));
+    GpuMaterial m_3 = ConstructGpuMaterial(asfloat(materials.Load3(naga_f2u32(_e16.w)*48+0)), asfloat(materials.Load(naga_f2u32(_e16.w)*48+12)), asfloat(materials.Load3(naga_f2u32(_e16.w)*48+16)), asfloat(materials.Load(naga_f2u32(_e16.w)*48+28)), asfloat(materials.Load3(naga_f2u32(_e16.w)*48+32)), asfloat(materials.Load(naga_f2u32(_e16.w)*48+44)));
+    float3 _e23 = view.eye;
+    const bool _e29 = has_specular(m_3.metallic, m_3.f0_, m_3.f90_);
+    const Glossy glossy = ConstructGlossy(m_3, normalize((_e23 - x)), _e29);
+    return glossy;
+}
+
+float3 glossy_term(Glossy g_1, GpuLight l_4, float3 n_3, float3 v_5, float min_d2_1, float share)
+{
+    bool local_10 = (bool)0;
+
+    const float _e7 = vpl_transfer(l_4.p1_, n_3, v_5, min_d2_1);
+    if (!(!(g_1.on))) {
+        local_10 = (_e7 <= 0.0);
+    } else {
+        local_10 = true;
+    }
+    bool _e16 = local_10;
+    if (_e16) {
+        return (0.0).xxx;
+    }
+    const float3 _e33 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    return ((l_4.intensity * _e33) * (_e7 * share));
+}
+
+float near_r2_of(uint slot)
+{
+    float _e3 = asfloat(r2_5.Load(slot*4));
+    const float _e5 = vpl_near_range2_(_e3, P);
+    return _e5;
+}
+
+GpuNearBox ConstructGpuNearBox(float3 arg0, float arg1, float3 arg2, float arg3) {
+    GpuNearBox ret = (GpuNearBox)0;
+    ret.lo = arg0;
+    ret.pad0_ = arg1;
+    ret.hi = arg2;
+    ret.pad1_ = arg3;
+    return ret;
+}
+
+GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
+    GpuLight ret = (GpuLight)0;
+    ret.p0_ = arg0;
+    ret.kind = arg1;
+    ret.p1_ = arg2;
+    ret.a = arg3;
+    ret.p2_ = arg4;
+    ret.b = arg5;
+    ret.intensity = arg6;
+    ret.ies_base = arg7;
+    return ret;
+}
+
+[numthreads(8, 8, 1)]
+void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_GroupIndex)
+{
+    if (li == 0) {
+        wg_lo = (float3[64])0;
+        wg_hi = (float3[64])0;
+        light_count = (uint)0;
+        light_list = (uint[2048])0;
+    }
+    GroupMemoryBarrierWithGroupSync();
+    bool local = (bool)0;
+    float4 pos = (0.0).xxxx;
+    float3 nrm = (0.0).xxx;
+    bool local_1 = (bool)0;
+    float3 e = (0.0).xxx;
+    uint kept = 0u;
+    float3 s = (0.0).xxx;
+    Glossy g = (Glossy)0;
+    uint first = 0u;
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    uint m = (uint)0;
+    bool local_4 = (bool)0;
+    uint m_1 = (uint)0;
+
+    uint px = ((wg.x * TILE) + lid.x);
+    uint py = ((wg.y * TILE) + lid.y);
+    uint _e15 = params.width;
+    if ((px < _e15)) {
+        uint _e21 = params.height;
+        local = (py < _e21);
+    } else {
+        local = false;
+    }
+    bool inside = local;
+    uint _e27 = params.width;
+    uint pix = ((py * _e27) + px);
+    if (inside) {
+        const GbTexel _e36 = gbuffer_at(pix);
+        pos = _e36.position;
+        nrm = _e36.normal.xyz;
+    }
+    if (inside) {
+        float _e43 = pos.w;
+        local_1 = (_e43 > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool valid_1 = local_1;
+    float4 _e48 = pos;
+    const WorkgroupBox _e50 = workgroup_box(li, _e48.xyz, valid_1);
+    float3 lo = _e50.lo;
+    float3 hi = _e50.hi;
+    float _e55 = params.near_r2_;
+    const float _e56 = cull_radius(_e55);
+    const float _e58 = interleave_flux_scale(P);
+    float unscale = (1.0 / _e58);
+    if (valid_1) {
+        float4 _e70 = pos;
+        const Glossy _e72 = glossy_at(pix, _e70.xyz);
+        g = _e72;
+    }
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e210 = first;
+            first = (_e210 + NEAR_CHUNK);
+        }
+        loop_init_1 = false;
+        uint _e75 = first;
+        uint _e78 = params.near_blocks;
+        if ((_e75 < _e78)) {
+        } else {
+            break;
+        }
+        {
+            if ((li == 0u)) {
+                { uint dummy = 0; InterlockedExchange(light_count, 0u, dummy); }
+            }
+            GroupMemoryBarrierWithGroupSync();
+            uint _e84 = first;
+            uint b = (_e84 + li);
+            if ((li < NEAR_CHUNK)) {
+                uint _e92 = params.near_blocks;
+                local_2 = (b < _e92);
+            } else {
+                local_2 = false;
+            }
+            bool _e95 = local_2;
+            if (_e95) {
+                GpuNearBox nb = ConstructGpuNearBox(asfloat(near_boxes.Load3(b*32+0)), asfloat(near_boxes.Load(b*32+12)), asfloat(near_boxes.Load3(b*32+16)), asfloat(near_boxes.Load(b*32+28)));
+                if (all(((nb.lo - (_e56).xxx) <= hi))) {
+                    local_3 = all((lo <= (nb.hi + (_e56).xxx)));
+                } else {
+                    local_3 = false;
+                }
+                bool _e112 = local_3;
+                if (_e112) {
+                    m = 0u;
+                    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+                    bool loop_init_2 = true;
+                    while(true) {
+                        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+                        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                        if (!loop_init_2) {
+                            uint _e151 = m;
+                            m = (_e151 + 1u);
+                        }
+                        loop_init_2 = false;
+                        uint _e115 = m;
+                        if ((_e115 < NEAR_BLOCK)) {
+                        } else {
+                            break;
+                        }
+                        {
+                            uint _e121 = m;
+                            uint slot_1 = asuint(near_slots.Load(((b * NEAR_BLOCK) + _e121)*4));
+                            GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(slot_1*64+0)), asuint(lights.Load(slot_1*64+12)), asfloat(lights.Load3(slot_1*64+16)), asfloat(lights.Load(slot_1*64+28)), asfloat(lights.Load3(slot_1*64+32)), asfloat(lights.Load(slot_1*64+44)), asfloat(lights.Load3(slot_1*64+48)), asuint(lights.Load(slot_1*64+60)));
+                            const float _e128 = near_r2_of(slot_1);
+                            float _e131 = params.near_r2_;
+                            const float _e132 = vpl_near_cull_range2_(_e128, _e131);
+                            const float _e133 = cull_radius(_e132);
+                            if (any((l_5.intensity != (0.0).xxx))) {
+                                const bool _e142 = sphere_overlaps_aabb(l_5.p0_, _e133, lo, hi);
+                                local_4 = _e142;
+                            } else {
+                                local_4 = false;
+                            }
+                            bool _e144 = local_4;
+                            if (_e144) {
+                                uint _e148; InterlockedAdd(light_count, 1u, _e148);
+                                light_list[min(uint(_e148), 2047u)] = slot_1;
+                            }
+                        }
+                    }
+                }
+            }
+            GroupMemoryBarrierWithGroupSync();
+            uint _e154 = light_count;
+            GroupMemoryBarrierWithGroupSync();
+            if (valid_1) {
+                m_1 = 0u;
+                uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+                bool loop_init_3 = true;
+                while(true) {
+                    if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+                    loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+                    if (!loop_init_3) {
+                        uint _e208 = m_1;
+                        m_1 = (_e208 + 1u);
+                    }
+                    loop_init_3 = false;
+                    uint _e157 = m_1;
+                    if ((_e157 < _e154)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e160 = m_1;
+                        uint slot_2 = light_list[min(uint(_e160), 2047u)];
+                        GpuLight l_6 = ConstructGpuLight(asfloat(lights.Load3(slot_2*64+0)), asuint(lights.Load(slot_2*64+12)), asfloat(lights.Load3(slot_2*64+16)), asfloat(lights.Load(slot_2*64+28)), asfloat(lights.Load3(slot_2*64+32)), asfloat(lights.Load(slot_2*64+44)), asfloat(lights.Load3(slot_2*64+48)), asuint(lights.Load(slot_2*64+60)));
+                        float4 _e166 = pos;
+                        float3 v_8 = (_e166.xyz - l_6.p0_);
+                        float _e172 = asfloat(rt2_2.Load(slot_2*4));
+                        const float _e174 = vpl_near_range2_(_e172, P);
+                        const float _e175 = near_r2_of(slot_2);
+                        float _e179 = params.near_r2_;
+                        const float _e180 = vpl_near_slc_share(_e174, _e175, dot(v_8, v_8), _e179);
+                        if ((_e180 > 0.0)) {
+                            float3 _e183 = e;
+                            float3 _e186 = nrm;
+                            float _e189 = params.min_d2_;
+                            const float _e190 = vpl_transfer(l_6.p1_, _e186, v_8, _e189);
+                            e = (_e183 + (l_6.intensity * ((_e190 * _e180) * unscale)));
+                            float3 _e195 = s;
+                            Glossy _e196 = g;
+                            float3 _e197 = nrm;
+                            float _e200 = params.min_d2_;
+                            const float3 _e202 = glossy_term(_e196, l_6, _e197, v_8, _e200, (_e180 * unscale));
+                            s = (_e195 + _e202);
+                            uint _e204 = kept;
+                            kept = (_e204 + 1u);
+                        }
+                    }
+                }
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
+    }
+    if (valid_1) {
+        float4 old = asfloat(irradiance.Load4(pix*16));
+        float3 _e219 = e;
+        uint _e222 = kept;
+        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e219), (old.w + float(_e222)))));
+        float4 _e230 = asfloat(specular.Load4(pix*16));
+        float3 _e232 = s;
+        specular.Store4(pix*16, asuint(float4((_e230.xyz + _e232), 0.0)));
+        return;
+    } else {
+        return;
+    }
+}

@@ -1,0 +1,121 @@
+struct ViewParams {
+    c0_: vec4<f32>,
+    c1_: vec4<f32>,
+    c2_: vec4<f32>,
+    c3_: vec4<f32>,
+    eye: vec3<f32>,
+    width: u32,
+    height: u32,
+    background: f32,
+    seed: u32,
+    frame: u32,
+    f0_d: vec3<f32>,
+    f90_d: f32,
+}
+
+struct GbTexel {
+    position: vec4<f32>,
+    normal: vec4<f32>,
+}
+
+const LIGHT_POINT: u32 = 0u;
+const LIGHT_SPOT: u32 = 1u;
+const LIGHT_IES: u32 = 2u;
+const LIGHT_TRIANGLE: u32 = 3u;
+const LIGHT_VPL: u32 = 4u;
+const NO_LIGHT: u32 = 4294967295u;
+const MAP_CAMERA: u32 = 0u;
+const MAP_PERSPECTIVE: u32 = 1u;
+const MAP_ORTHOGRAPHIC: u32 = 2u;
+const XI_STEP: f32 = 0.000000059604645f;
+const PICK_STREAM: u32 = 2654435769u;
+const TWO_PI: f32 = 6.2831855f;
+const CULL_RADIUS_SCALE: f32 = 1.000001f;
+const SPHERE_PAD: f32 = 0.00000047683716f;
+const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
+const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const INV_PI: f32 = 0.31830987f;
+const MIN_D2_: f32 = 0.000000000001f;
+const BSH_NONE: u32 = 4294967295u;
+const RESERVOIR_FULL: u32 = 4294967295u;
+const GGX_ALPHA_MIN: f32 = 0.001f;
+const RANGE_SCALE_MAX: f32 = 64f;
+const LIGHT_BVH_LEAF: u32 = 4294967295u;
+const ONE_MINUS_EPSILON: f32 = 0.99999994f;
+const F32_MAX: f32 = 340282350000000000000000000000000000000f;
+const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
+const DEPTH_SIGMA: f32 = 0.05f;
+const COVER_WEIGHT: f32 = 0.1f;
+const NEAR_BLOCK: u32 = 64u;
+const ROULETTE_DEPTH: u32 = 2u;
+
+@group(0) @binding(0) 
+var<uniform> view: ViewParams;
+@group(0) @binding(1) 
+var position_tex: texture_2d<f32>;
+@group(0) @binding(2) 
+var normal_tex: texture_2d<f32>;
+@group(0) @binding(3) 
+var<storage> irradiance: array<vec4<f32>>;
+@group(0) @binding(4) 
+var out_tex: texture_storage_2d<rgba32float,write>;
+@group(0) @binding(5) 
+var<storage> specular: array<vec4<f32>>;
+@group(0) @binding(6) 
+var specular_tex: texture_storage_2d<rgba32float,write>;
+
+fn surface_at(texel: vec2<i32>) -> vec4<f32> {
+    let p = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p.xyz, 1f), (p.w > 0f));
+}
+
+fn gbuffer_at(i: u32) -> GbTexel {
+    var local_1: bool;
+
+    let _e3 = view.width;
+    let _e8 = view.width;
+    let texel_1 = vec2<i32>(i32((i % _e3)), i32((i / _e8)));
+    let _e12 = surface_at(texel_1);
+    let _e15 = textureLoad(normal_tex, texel_1, 0i);
+    let n = _e15.xyz;
+    let len2_ = dot(n, n);
+    if (_e12.w > 0f) {
+        local_1 = (len2_ > 0f);
+    } else {
+        local_1 = false;
+    }
+    let valid = local_1;
+    let _e30 = view.eye;
+    let v = (_e12.xyz - _e30);
+    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n / vec3(sqrt(len2_))), sqrt(dot(v, v))), valid);
+    return GbTexel(position, normal);
+}
+
+@compute @workgroup_size(8, 8, 1) 
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+    var local: bool;
+
+    let _e4 = view.width;
+    if !((gid.x >= _e4)) {
+        let _e12 = view.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    let _e15 = local;
+    if _e15 {
+        return;
+    }
+    let _e19 = view.width;
+    let i_1 = ((gid.y * _e19) + gid.x);
+    let _e27 = irradiance[i_1];
+    let _e28 = gbuffer_at(i_1);
+    let e = select(vec4(0f), _e27, (_e28.position.w > 0f));
+    textureStore(out_tex, vec2<i32>(i32(gid.x), i32(gid.y)), e);
+    let _e44 = specular[i_1];
+    let _e45 = gbuffer_at(i_1);
+    let s = select(vec4(0f), _e44, (_e45.position.w > 0f));
+    textureStore(specular_tex, vec2<i32>(i32(gid.x), i32(gid.y)), vec4<f32>(s.xyz, 0f));
+    return;
+}

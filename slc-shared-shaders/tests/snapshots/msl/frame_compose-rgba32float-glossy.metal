@@ -1,0 +1,166 @@
+// language: metal1.0
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct _mslBufferSizes {
+    uint size4;
+    uint size5;
+};
+
+struct ImageParams {
+    metal::packed_float3 eye;
+    uint width;
+    uint height;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+struct GpuMaterial {
+    metal::packed_float3 albedo;
+    float metallic;
+    metal::packed_float3 emission;
+    float alpha;
+    metal::packed_float3 f0_;
+    float f90_;
+};
+typedef metal::float4 type_6[1];
+typedef GpuMaterial type_7[1];
+constant uint LIGHT_POINT = 0u;
+constant uint LIGHT_SPOT = 1u;
+constant uint LIGHT_IES = 2u;
+constant uint LIGHT_TRIANGLE = 3u;
+constant uint LIGHT_VPL = 4u;
+constant uint NO_LIGHT = 4294967295u;
+constant uint MAP_CAMERA = 0u;
+constant uint MAP_PERSPECTIVE = 1u;
+constant uint MAP_ORTHOGRAPHIC = 2u;
+constant float XI_STEP = 0.000000059604645;
+constant uint PICK_STREAM = 2654435769u;
+constant float TWO_PI = 6.2831855;
+constant float CULL_RADIUS_SCALE = 1.000001;
+constant float SPHERE_PAD = 0.00000047683716;
+constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
+constant float SPHERE_PAD_ABS = 0.000000000000000001;
+constant float INV_PI = 0.31830987;
+constant float MIN_D2_ = 0.000000000001;
+constant uint BSH_NONE = 4294967295u;
+constant uint RESERVOIR_FULL = 4294967295u;
+constant float GGX_ALPHA_MIN = 0.001;
+constant float RANGE_SCALE_MAX = 64.0;
+constant uint LIGHT_BVH_LEAF = 4294967295u;
+constant float ONE_MINUS_EPSILON = 0.99999994;
+constant float F32_MAX = 340282350000000000000000000000000000000.0;
+constant float DEPTH_NONE = 1000000000000000000000000000000.0;
+constant float DEPTH_SIGMA = 0.05;
+constant float COVER_WEIGHT = 0.1;
+constant uint NEAR_BLOCK = 64u;
+constant uint ROULETTE_DEPTH = 2u;
+
+metal::float3 diffuse_albedo(
+    metal::float3 base,
+    float metallic
+) {
+    return base * (1.0 - metallic);
+}
+
+bool has_specular(
+    float metallic_1,
+    metal::float3 f0_d,
+    float f90_d
+) {
+    bool local_1 = {};
+    bool local_2 = {};
+    if (!((metallic_1 > 0.0))) {
+        local_1 = f90_d > 0.0;
+    } else {
+        local_1 = true;
+    }
+    bool _e11 = local_1;
+    if (!(_e11)) {
+        local_2 = metal::max(metal::max(f0_d.x, f0_d.y), f0_d.z) > 0.0;
+    } else {
+        local_2 = true;
+    }
+    bool _e23 = local_2;
+    return _e23;
+}
+
+metal::float3 diffuse_radiance(
+    metal::float3 albedo,
+    metal::float3 emission,
+    metal::float3 e
+) {
+    return emission + ((albedo * INV_PI) * e);
+}
+
+metal::float3 glossy_radiance(
+    metal::float3 base_1,
+    metal::float3 emission_1,
+    float metallic_2,
+    metal::float3 direct,
+    metal::float3 indirect,
+    metal::float3 specular
+) {
+    metal::float3 _e6 = diffuse_radiance(base_1, emission_1, direct);
+    metal::float3 _e7 = diffuse_albedo(base_1, metallic_2);
+    return (_e6 + ((_e7 * INV_PI) * indirect)) + specular;
+}
+uint naga_f2u32(float value) {
+    return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
+}
+
+
+struct main_Input {
+};
+kernel void main_(
+  metal::uint3 gid [[thread_position_in_grid]]
+, constant ImageParams& image [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> indirect_tex [[user(fake0)]]
+, device type_6 const& direct_1 [[user(fake0)]]
+, device type_7 const& materials [[user(fake0)]]
+, metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> specular_tex [[user(fake0)]]
+, constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
+) {
+    bool local = {};
+    metal::float3 radiance = metal::float3(0.0);
+    uint _e4 = image.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = image.height;
+        local = gid.y >= _e12;
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    uint _e19 = image.width;
+    uint i = (gid.y * _e19) + gid.x;
+    metal::int2 texel = metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y));
+    metal::float4 _e33 = position_tex.read(metal::uint2(texel), 0);
+    if (_e33.w > 0.0) {
+        metal::float4 _e40 = normal_tex.read(metal::uint2(texel), 0);
+        GpuMaterial m = materials[naga_f2u32(_e40.w)];
+        metal::float4 _e47 = indirect_tex.read(metal::uint2(texel), 0);
+        metal::float3 e_1 = _e47.xyz;
+        bool _e52 = has_specular(m.metallic, m.f0_, m.f90_);
+        if (_e52) {
+            metal::float4 _e58 = direct_1[i];
+            metal::float4 _e62 = specular_tex.read(metal::uint2(texel), 0);
+            metal::float3 _e64 = glossy_radiance(m.albedo, m.emission, m.metallic, _e58.xyz, e_1, _e62.xyz);
+            radiance = _e64;
+        } else {
+            metal::float4 _e69 = direct_1[i];
+            metal::float3 _e72 = diffuse_radiance(m.albedo, m.emission, _e69.xyz + e_1);
+            radiance = _e72;
+        }
+    }
+    metal::float3 _e74 = radiance;
+    out_tex.write(metal::float4(_e74, 1.0), metal::uint2(texel));
+    return;
+}

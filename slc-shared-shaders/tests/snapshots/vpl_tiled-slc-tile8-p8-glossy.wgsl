@@ -1,0 +1,535 @@
+struct GpuLight {
+    p0_: vec3<f32>,
+    kind: u32,
+    p1_: vec3<f32>,
+    a: f32,
+    p2_: vec3<f32>,
+    b: f32,
+    intensity: vec3<f32>,
+    ies_base: u32,
+}
+
+struct VplParams {
+    width: u32,
+    height: u32,
+    lights_per_subset: u32,
+    min_d2_: f32,
+    near_r2_: f32,
+    near_blocks: u32,
+    pad0_: u32,
+    pad1_: u32,
+}
+
+struct GpuMaterial {
+    albedo: vec3<f32>,
+    metallic: f32,
+    emission: vec3<f32>,
+    alpha: f32,
+    f0_: vec3<f32>,
+    f90_: f32,
+}
+
+struct ViewParams {
+    c0_: vec4<f32>,
+    c1_: vec4<f32>,
+    c2_: vec4<f32>,
+    c3_: vec4<f32>,
+    eye: vec3<f32>,
+    width: u32,
+    height: u32,
+    background: f32,
+    seed: u32,
+    frame: u32,
+    f0_d: vec3<f32>,
+    f90_d: f32,
+}
+
+struct WorkgroupBox {
+    lo: vec3<f32>,
+    hi: vec3<f32>,
+}
+
+struct GbTexel {
+    position: vec4<f32>,
+    normal: vec4<f32>,
+}
+
+struct Glossy {
+    m: GpuMaterial,
+    v: vec3<f32>,
+    on: bool,
+}
+
+const LIGHT_POINT: u32 = 0u;
+const LIGHT_SPOT: u32 = 1u;
+const LIGHT_IES: u32 = 2u;
+const LIGHT_TRIANGLE: u32 = 3u;
+const LIGHT_VPL: u32 = 4u;
+const NO_LIGHT: u32 = 4294967295u;
+const MAP_CAMERA: u32 = 0u;
+const MAP_PERSPECTIVE: u32 = 1u;
+const MAP_ORTHOGRAPHIC: u32 = 2u;
+const XI_STEP: f32 = 0.000000059604645f;
+const PICK_STREAM: u32 = 2654435769u;
+const TWO_PI: f32 = 6.2831855f;
+const CULL_RADIUS_SCALE: f32 = 1.000001f;
+const SPHERE_PAD: f32 = 0.00000047683716f;
+const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
+const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const INV_PI: f32 = 0.31830987f;
+const MIN_D2_: f32 = 0.000000000001f;
+const BSH_NONE: u32 = 4294967295u;
+const RESERVOIR_FULL: u32 = 4294967295u;
+const GGX_ALPHA_MIN: f32 = 0.001f;
+const RANGE_SCALE_MAX: f32 = 64f;
+const LIGHT_BVH_LEAF: u32 = 4294967295u;
+const ONE_MINUS_EPSILON: f32 = 0.99999994f;
+const F32_MAX: f32 = 340282350000000000000000000000000000000f;
+const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
+const DEPTH_SIGMA: f32 = 0.05f;
+const COVER_WEIGHT: f32 = 0.1f;
+const NEAR_BLOCK: u32 = 64u;
+const ROULETTE_DEPTH: u32 = 2u;
+const P: u32 = 8u;
+const TILE: u32 = 8u;
+const THREADS: u32 = 64u;
+const BOX_THREADS: u32 = 64u;
+const MAX_TILE_LIGHTS: u32 = 1024u;
+
+var<workgroup> wg_lo: array<vec3<f32>, 64>;
+var<workgroup> wg_hi: array<vec3<f32>, 64>;
+@group(0) @binding(0) 
+var<uniform> params: VplParams;
+@group(0) @binding(1) 
+var<uniform> view: ViewParams;
+@group(0) @binding(2) 
+var position_tex: texture_2d<f32>;
+@group(0) @binding(3) 
+var normal_tex: texture_2d<f32>;
+@group(0) @binding(4) 
+var<storage> lights: array<GpuLight>;
+@group(0) @binding(5) 
+var<storage> rt2_2: array<f32>;
+@group(0) @binding(6) 
+var<storage> r2_3: array<f32>;
+@group(0) @binding(7) 
+var<storage, read_write> irradiance: array<vec4<f32>>;
+@group(0) @binding(8) 
+var<storage> materials: array<GpuMaterial>;
+@group(0) @binding(9) 
+var<storage, read_write> specular: array<vec4<f32>>;
+var<workgroup> tile_count: atomic<u32>;
+var<workgroup> tile_lights: array<u32, 1024>;
+
+fn slc_weight(rt2_: f32, d2_: f32) -> f32 {
+    if (d2_ <= rt2_) {
+        return 1f;
+    }
+    return (d2_ / rt2_);
+}
+
+fn slc_keep(r2_: f32, d2_1: f32) -> bool {
+    return (d2_1 < r2_);
+}
+
+fn cull_radius(r2_1: f32) -> f32 {
+    return (sqrt(r2_1) * CULL_RADIUS_SCALE);
+}
+
+fn sphere_overlaps_aabb(c: vec3<f32>, r: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
+    let q = clamp(c, bmin, bmax);
+    let v_6 = (q - c);
+    return (dot(v_6, v_6) <= (r * r));
+}
+
+fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v: vec3<f32>, min_d2_: f32) -> f32 {
+    let m = max(dot(v, v), min_d2_);
+    return (((max(dot(n_l, v), 0f) * max(-(dot(n_x, v)), 0f)) * INV_PI) / (m * m));
+}
+
+fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
+    if (cos_h <= 0f) {
+        return 0f;
+    }
+    let a2_ = (alpha * alpha);
+    let t = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t * t));
+}
+
+fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
+    let a2_1 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1f - a2_1)) + a2_1));
+}
+
+fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
+    var local_2: bool;
+
+    if !((n_l_1 <= 0f)) {
+        local_2 = (n_v <= 0f);
+    } else {
+        local_2 = true;
+    }
+    let _e11 = local_2;
+    if _e11 {
+        return 0f;
+    }
+    let _e13 = smith_root(n_v, alpha_2);
+    let _e15 = smith_root(n_l_1, alpha_2);
+    return (0.5f / ((n_l_1 * _e13) + (n_v * _e15)));
+}
+
+fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
+    let c_1 = saturate((1f - v_h));
+    let c2_ = (c_1 * c_1);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c_1)));
+}
+
+fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
+    let _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    let _e10 = fresnel_schlick(base, 1f, v_h_1);
+    return ((_e5 * (1f - metallic)) + (_e10 * metallic));
+}
+
+fn diffuse_brdf(base_1: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32, v_h_2: f32) -> vec3<f32> {
+    let _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return ((((vec3<f32>(1f, 1f, 1f) - _e9) * base_1) * (1f - metallic_1)) * INV_PI);
+}
+
+fn half_cosine(v_1: vec3<f32>, l: vec3<f32>) -> f32 {
+    let h = (v_1 + l);
+    let len2_ = dot(h, h);
+    if (len2_ <= 0f) {
+        return 0f;
+    }
+    return saturate((dot(v_1, h) / sqrt(len2_)));
+}
+
+fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n: vec3<f32>, v_2: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
+    var local_3: bool;
+
+    let n_l_2 = dot(n, l_1);
+    let n_v_1 = dot(n, v_2);
+    if !((n_l_2 <= 0f)) {
+        local_3 = (n_v_1 <= 0f);
+    } else {
+        local_3 = true;
+    }
+    let _e18 = local_3;
+    if _e18 {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    let hs = (v_2 + l_1);
+    let inv = (1f / sqrt(dot(hs, hs)));
+    let h_1 = (hs * inv);
+    let c_2 = cross(n, h_1);
+    let _e32 = ggx_d(dot(n, h_1), dot(c_2, c_2), alpha_3);
+    let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_2, h_1));
+    let _e35 = smith_visibility(n_l_2, n_v_1, alpha_3);
+    return (_e34 * (_e32 * _e35));
+}
+
+fn brdf_eval(base_3: vec3<f32>, metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32, alpha_4: f32, n_1: vec3<f32>, v_3: vec3<f32>, l_2: vec3<f32>) -> vec3<f32> {
+    if (dot(n_1, l_2) <= 0f) {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    let _e15 = half_cosine(v_3, l_2);
+    let _e16 = diffuse_brdf(base_3, metallic_3, f0_d_3, f90_d_3, _e15);
+    let _e17 = specular_brdf(base_3, metallic_3, f0_d_3, f90_d_3, alpha_4, n_1, v_3, l_2);
+    return (_e16 + _e17);
+}
+
+fn diffuse_albedo(base_4: vec3<f32>, metallic_4: f32) -> vec3<f32> {
+    return (base_4 * (1f - metallic_4));
+}
+
+fn specular_correction(base_5: vec3<f32>, metallic_5: f32, f0_d_4: vec3<f32>, f90_d_4: f32, alpha_5: f32, n_2: vec3<f32>, v_4: vec3<f32>, l_3: vec3<f32>) -> vec3<f32> {
+    let _e8 = brdf_eval(base_5, metallic_5, f0_d_4, f90_d_4, alpha_5, n_2, v_4, l_3);
+    let _e9 = diffuse_albedo(base_5, metallic_5);
+    return (_e8 - (_e9 * INV_PI));
+}
+
+fn has_specular(metallic_6: f32, f0_d_5: vec3<f32>, f90_d_5: f32) -> bool {
+    var local_4: bool;
+    var local_5: bool;
+
+    if !((metallic_6 > 0f)) {
+        local_4 = (f90_d_5 > 0f);
+    } else {
+        local_4 = true;
+    }
+    let _e11 = local_4;
+    if !(_e11) {
+        local_5 = (max(max(f0_d_5.x, f0_d_5.y), f0_d_5.z) > 0f);
+    } else {
+        local_5 = true;
+    }
+    let _e23 = local_5;
+    return _e23;
+}
+
+fn vpl_near_weight(d2_2: f32, near_r2_: f32) -> f32 {
+    if (near_r2_ <= 0f) {
+        return 0f;
+    }
+    let t_1 = clamp(((near_r2_ - d2_2) / (0.75f * near_r2_)), 0f, 1f);
+    return ((t_1 * t_1) * (3f - (2f * t_1)));
+}
+
+fn vpl_far_weight(d2_3: f32, near_r2_1: f32) -> f32 {
+    let _e2 = vpl_near_weight(d2_3, near_r2_1);
+    return (1f - _e2);
+}
+
+fn vpl_far_slc_share(rt2_1: f32, r2_2: f32, d2_4: f32, near_r2_2: f32) -> f32 {
+    let _e4 = vpl_far_weight(d2_4, near_r2_2);
+    let _e5 = slc_weight(rt2_1, d2_4);
+    let _e7 = slc_keep(r2_2, d2_4);
+    return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
+}
+
+fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
+    var stride: u32 = 32u;
+
+    wg_lo[li_1] = select(vec3(340282350000000000000000000000000000000f), p, has);
+    wg_hi[li_1] = select(vec3(-340282350000000000000000000000000000000f), p, has);
+    workgroupBarrier();
+    loop {
+        let _e15 = stride;
+        if (_e15 > 0u) {
+        } else {
+            break;
+        }
+        {
+            let _e18 = stride;
+            if (li_1 < _e18) {
+                let _e24 = wg_lo[li_1];
+                let _e26 = stride;
+                let _e29 = wg_lo[(li_1 + _e26)];
+                wg_lo[li_1] = min(_e24, _e29);
+                let _e35 = wg_hi[li_1];
+                let _e37 = stride;
+                let _e40 = wg_hi[(li_1 + _e37)];
+                wg_hi[li_1] = max(_e35, _e40);
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e42 = stride;
+            stride = (_e42 / 2u);
+        }
+    }
+    let _e47 = wg_lo[0];
+    let _e50 = wg_hi[0];
+    return WorkgroupBox(_e47, _e50);
+}
+
+fn surface_at(texel: vec2<i32>) -> vec4<f32> {
+    let p_1 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_1.xyz, 1f), (p_1.w > 0f));
+}
+
+fn gbuffer_at(i: u32) -> GbTexel {
+    var local_6: bool;
+
+    let _e3 = view.width;
+    let _e8 = view.width;
+    let texel_1 = vec2<i32>(i32((i % _e3)), i32((i / _e8)));
+    let _e12 = surface_at(texel_1);
+    let _e15 = textureLoad(normal_tex, texel_1, 0i);
+    let n_4 = _e15.xyz;
+    let len2_1 = dot(n_4, n_4);
+    if (_e12.w > 0f) {
+        local_6 = (len2_1 > 0f);
+    } else {
+        local_6 = false;
+    }
+    let valid = local_6;
+    let _e30 = view.eye;
+    let v_7 = (_e12.xyz - _e30);
+    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_4 / vec3(sqrt(len2_1))), sqrt(dot(v_7, v_7))), valid);
+    return GbTexel(position, normal);
+}
+
+fn glossy_at(i_1: u32, x: vec3<f32>) -> Glossy {
+    let _e4 = view.width;
+    let _e9 = view.width;
+    let texel_2 = vec2<i32>(i32((i_1 % _e4)), i32((i_1 / _e9)));
+    let _e16 = textureLoad(normal_tex, texel_2, 0i);
+    let m_1 = materials[u32(_e16.w)];
+    let _e23 = view.eye;
+    let _e29 = has_specular(m_1.metallic, m_1.f0_, m_1.f90_);
+    return Glossy(m_1, normalize((_e23 - x)), _e29);
+}
+
+fn glossy_term(g_1: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, min_d2_1: f32, share: f32) -> vec3<f32> {
+    var local_7: bool;
+
+    let _e7 = vpl_transfer(l_4.p1_, n_3, v_5, min_d2_1);
+    if !(!(g_1.on)) {
+        local_7 = (_e7 <= 0f);
+    } else {
+        local_7 = true;
+    }
+    let _e16 = local_7;
+    if _e16 {
+        return vec3(0f);
+    }
+    let _e33 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    return ((l_4.intensity * _e33) * (_e7 * share));
+}
+
+@compute @workgroup_size(8, 8, 1) 
+fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid: vec3<u32>, @builtin(local_invocation_index) li: u32) {
+    var local: bool;
+    var pos: vec4<f32> = vec4(0f);
+    var nrm: vec3<f32> = vec3(0f);
+    var local_1: bool;
+    var e: vec3<f32> = vec3(0f);
+    var kept: u32 = 0u;
+    var s: vec3<f32> = vec3(0f);
+    var g: Glossy;
+    var first: u32 = 0u;
+    var j: u32;
+    var k: u32;
+
+    let sub = wg.z;
+    let px = ((sub % P) + (((wg.x * TILE) + lid.x) * P));
+    let py = ((sub / P) + (((wg.y * TILE) + lid.y) * P));
+    let _e26 = params.width;
+    if (px < _e26) {
+        let _e32 = params.height;
+        local = (py < _e32);
+    } else {
+        local = false;
+    }
+    let inside = local;
+    let _e38 = params.width;
+    let pix = ((py * _e38) + px);
+    if inside {
+        let _e47 = gbuffer_at(pix);
+        pos = _e47.position;
+        nrm = _e47.normal.xyz;
+    }
+    if inside {
+        let _e54 = pos.w;
+        local_1 = (_e54 > 0f);
+    } else {
+        local_1 = false;
+    }
+    let valid_1 = local_1;
+    let _e59 = pos;
+    let _e61 = workgroup_box(li, _e59.xyz, valid_1);
+    let lo = _e61.lo;
+    let hi = _e61.hi;
+    let _e66 = params.lights_per_subset;
+    let base_6 = (sub * _e66);
+    if valid_1 {
+        let _e77 = pos;
+        let _e79 = glossy_at(pix, _e77.xyz);
+        g = _e79;
+    }
+    loop {
+        let _e82 = first;
+        let _e85 = params.lights_per_subset;
+        if (_e82 < _e85) {
+        } else {
+            break;
+        }
+        {
+            let _e87 = first;
+            let _e92 = params.lights_per_subset;
+            let end = min((_e87 + MAX_TILE_LIGHTS), _e92);
+            if (li == 0u) {
+                atomicStore((&tile_count), 0u);
+            }
+            workgroupBarrier();
+            let _e98 = first;
+            j = (_e98 + li);
+            loop {
+                let _e101 = j;
+                if (_e101 < end) {
+                } else {
+                    break;
+                }
+                {
+                    let _e104 = j;
+                    let _e108 = lights[(base_6 + _e104)].p0_;
+                    let _e110 = j;
+                    let _e113 = r2_3[(base_6 + _e110)];
+                    let _e114 = cull_radius(_e113);
+                    let _e115 = sphere_overlaps_aabb(_e108, _e114, lo, hi);
+                    if _e115 {
+                        let _e118 = atomicAdd((&tile_count), 1u);
+                        if (_e118 < MAX_TILE_LIGHTS) {
+                            let _e123 = j;
+                            tile_lights[_e118] = _e123;
+                        }
+                    }
+                }
+                continuing {
+                    let _e124 = j;
+                    j = (_e124 + THREADS);
+                }
+            }
+            let _e128 = workgroupUniformLoad((&tile_count));
+            let count = min(_e128, MAX_TILE_LIGHTS);
+            if valid_1 {
+                k = 0u;
+                loop {
+                    let _e133 = k;
+                    if (_e133 < count) {
+                    } else {
+                        break;
+                    }
+                    {
+                        let _e136 = k;
+                        let _e138 = tile_lights[_e136];
+                        let j_1 = (base_6 + _e138);
+                        let l_5 = lights[j_1];
+                        let _e143 = pos;
+                        let v_8 = (_e143.xyz - l_5.p0_);
+                        let _e149 = rt2_2[j_1];
+                        let _e152 = r2_3[j_1];
+                        let _e156 = params.near_r2_;
+                        let _e157 = vpl_far_slc_share(_e149, _e152, dot(v_8, v_8), _e156);
+                        if (_e157 > 0f) {
+                            let _e160 = e;
+                            let _e163 = nrm;
+                            let _e166 = params.min_d2_;
+                            let _e167 = vpl_transfer(l_5.p1_, _e163, v_8, _e166);
+                            e = (_e160 + (l_5.intensity * (_e167 * _e157)));
+                            let _e171 = s;
+                            let _e172 = g;
+                            let _e173 = nrm;
+                            let _e176 = params.min_d2_;
+                            let _e177 = glossy_term(_e172, l_5, _e173, v_8, _e176, _e157);
+                            s = (_e171 + _e177);
+                            let _e179 = kept;
+                            kept = (_e179 + 1u);
+                        }
+                    }
+                    continuing {
+                        let _e183 = k;
+                        k = (_e183 + 1u);
+                    }
+                }
+            }
+            workgroupBarrier();
+        }
+        continuing {
+            let _e185 = first;
+            first = (_e185 + MAX_TILE_LIGHTS);
+        }
+    }
+    if inside {
+        let _e190 = e;
+        let _e191 = kept;
+        irradiance[pix] = vec4<f32>(_e190, f32(_e191));
+        let _e196 = s;
+        specular[pix] = vec4<f32>(_e196, 0f);
+        return;
+    } else {
+        return;
+    }
+}
