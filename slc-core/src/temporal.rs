@@ -115,7 +115,7 @@ crate::shared! {
 
     /// How much of a history of `n` frames to drop (0: keep, 1: drop all)
     /// for a current luminance `l` against the history's mean luminance
-    /// `m1`, with frame-to-frame noise variance `var` (the history's
+    /// `m1`, with frame-to-frame noise variance `noise` (the history's
     /// moving average of half the squared consecutive differences): the
     /// difference of a new draw from the history's mean has standard
     /// deviation `σ·√(1 + 1/n)`; at `t` such
@@ -124,11 +124,11 @@ crate::shared! {
     /// shorter than [`TEMPORAL_MIN_MOMENTS`] has no trusted σ and is kept
     /// (its weight is high anyway). The `1e-3` relative floor keeps a
     /// noise-free signal (σ = 0) from resetting on rounding.
-    pub fn temporal_change(l: f32, m1: f32, var: f32, n: f32) -> f32 {
+    pub fn temporal_change(l: f32, m1: f32, noise: f32, n: f32) -> f32 {
         if n < TEMPORAL_MIN_MOMENTS {
             return 0.0;
         }
-        let sigma: f32 = sqrt(max(var, 0.0) * (1.0 + 1.0 / n));
+        let sigma: f32 = sqrt(max(noise, 0.0) * (1.0 + 1.0 / n));
         let t: f32 = abs(l - m1) / (sigma + 1e-3 * max(abs(l), abs(m1)) + 1e-20);
         return clamp((t - TEMPORAL_CHANGE_LOW) / (TEMPORAL_CHANGE_HIGH - TEMPORAL_CHANGE_LOW), 0.0, 1.0);
     }
@@ -162,13 +162,13 @@ crate::shared! {
 
     /// This frame's accumulated value (xyz) and history length (w) from the
     /// current value `c`, the reprojected history `h` (value in xyz, length
-    /// in w; length 0: none) with noise variance `var`, and the cap
+    /// in w; length 0: none) with noise variance `noise`, and the cap
     /// `max_history`: `λ` from [`temporal_change`] against the history's
     /// luminance, the length from [`next_history_length`], then
     /// `h + (c − h)·α` with `α = ` [`temporal_alpha`].
-    pub fn temporal_color(c: vec3f, h: vec4f, var: f32, max_history: f32) -> vec4f {
+    pub fn temporal_color(c: vec3f, h: vec4f, noise: f32, max_history: f32) -> vec4f {
         let hc: vec3f = vec3f(h.x, h.y, h.z);
-        let lambda: f32 = temporal_change(luminance(c), luminance(hc), var, h.w);
+        let lambda: f32 = temporal_change(luminance(c), luminance(hc), noise, h.w);
         let len: f32 = next_history_length(h.w, lambda, max_history);
         let v: vec3f = hc + (c - hc) * temporal_alpha(len);
         return vec4f(v.x, v.y, v.z, len);
@@ -181,13 +181,13 @@ crate::shared! {
     /// history length `len` ([`temporal_color`]'s w): the variance's moving
     /// average takes `(l − last)²/2` with weight `1/(len − 1)` (one
     /// difference fewer than frames).
-    pub fn temporal_moments(c: vec3f, last: f32, var: f32, prev_len: f32, len: f32) -> vec4f {
+    pub fn temporal_moments(c: vec3f, last: f32, noise: f32, prev_len: f32, len: f32) -> vec4f {
         let l: f32 = luminance(c);
         if prev_len <= 0.0 {
             return vec4f(l, 0.0, 0.0, 0.0);
         }
         let d: f32 = l - last;
-        return vec4f(l, var + (0.5 * d * d - var) * temporal_alpha(len - 1.0), 0.0, 0.0);
+        return vec4f(l, noise + (0.5 * d * d - noise) * temporal_alpha(len - 1.0), 0.0, 0.0);
     }
 }
 
@@ -238,13 +238,13 @@ mod tests {
     #[test]
     fn change_response() {
         // σ = 1, n = 16: σ_Δ = √(17/16).
-        let (m1, var, n) = (10.0, 1.0, 16.0);
+        let (m1, noise, n) = (10.0, 1.0, 16.0);
         let s = (17.0f32 / 16.0).sqrt();
-        assert_eq!(temporal_change(10.0 + 3.9 * s, m1, var, n), 0.0, "within the noise");
-        let half = temporal_change(10.0 + 6.0 * s, m1, var, n);
+        assert_eq!(temporal_change(10.0 + 3.9 * s, m1, noise, n), 0.0, "within the noise");
+        let half = temporal_change(10.0 + 6.0 * s, m1, noise, n);
         assert!((half - 0.5).abs() < 0.03, "{half}");
-        assert_eq!(temporal_change(10.0 - 9.0 * s, m1, var, n), 1.0, "a change, either way");
-        assert_eq!(temporal_change(1e6, m1, var, 7.0), 0.0, "too short to judge");
+        assert_eq!(temporal_change(10.0 - 9.0 * s, m1, noise, n), 1.0, "a change, either way");
+        assert_eq!(temporal_change(1e6, m1, noise, 7.0), 0.0, "too short to judge");
         // A noise-free history responds to a 1% change, not to rounding.
         assert_eq!(temporal_change(1.000_001, 1.0, 0.0, 32.0), 0.0);
         assert_eq!(temporal_change(1.01, 1.0, 0.0, 32.0), 1.0);
@@ -255,7 +255,7 @@ mod tests {
     /// drift hardly raises it.
     #[test]
     fn noise_estimate_of_consecutive_differences() {
-        let mut h = (0.0f32, 0.0f32, 0.0f32); // last, var, len
+        let mut h = (0.0f32, 0.0f32, 0.0f32); // last, noise, len
         let mut state = 12345u32;
         for k in 0..4000 {
             state = crate::xi::pcg_hash(state);

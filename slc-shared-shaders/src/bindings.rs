@@ -352,6 +352,25 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
         .into_iter()
         .chain(f.glossy.then(|| texture(7, "specular_tex", "glossy variant: specular correction `S` of the VPLs", "`irradiance_export`")))
         .collect(),
+        Kernel::Temporal => {
+            let history = |binding, name, content| texture(binding, name, content, "`temporal` (the previous frame)");
+            let next = |binding, name, content| {
+                b(0, binding, name, Resource::StorageTexture(crate::OutputFormat::Rgba32Float), content, "this kernel (the next frame's history)")
+            };
+            let mut v = gbuffer_in(0, f.surface).to_vec();
+            v.extend([
+                uniform(3, "params", "TemporalParams", false, "the previous view-projection and eye, the history cap"),
+                texture(4, "signal_tex", "this frame's signal (rgb)", "engine (e.g. `irradiance_export`)"),
+                history(5, "hist_value", "accumulated value (rgb), history length (a)"),
+                history(6, "hist_noise", "last luminance (r), noise variance (g)"),
+                history(7, "hist_surface", "normal (rgb), tangent-plane offset `n·p` (a)"),
+                out(8, "accumulated value (rgb), history length in frames (a)"),
+                next(9, "next_value", "accumulated value (rgb), history length (a)"),
+                next(10, "next_noise", "last luminance (r), noise variance (g)"),
+                next(11, "next_surface", "normal (rgb), tangent-plane offset (a)"),
+            ]);
+            v
+        }
     };
     v.push(ies_table(ies && kernel == Kernel::BshReservoir));
     v

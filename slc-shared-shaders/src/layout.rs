@@ -290,6 +290,32 @@ slc_core::shared! {
         pub pad2: u32,
     }
 
+    /// Uniforms of `temporal`: the previous frame's view-projection (the
+    /// history's reprojection) and eye, the history cap, and whether a
+    /// history exists (0: the first frame or after a reset), 96 bytes.
+    pub struct TemporalParams {
+        /// Column 0 of the previous frame's view-projection.
+        pub c0: vec4f,
+        /// Column 1.
+        pub c1: vec4f,
+        /// Column 2.
+        pub c2: vec4f,
+        /// Column 3.
+        pub c3: vec4f,
+        /// The previous frame's eye.
+        pub prev_eye: vec3f,
+        /// The longest history (`≥ 1`; this frame's cap).
+        pub max_history: f32,
+        /// 1 where the previous frame left a history, else 0.
+        pub has_history: u32,
+        /// Padding.
+        pub pad0: u32,
+        /// Padding.
+        pub pad1: u32,
+        /// Padding.
+        pub pad2: u32,
+    }
+
     /// Uniforms of `primary_direct` and `frame_compose`.
     pub struct ImageParams {
         /// Eye position (depth = distance from it).

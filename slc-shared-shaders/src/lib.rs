@@ -187,11 +187,15 @@ pub enum Kernel {
     /// BSH traversed, the picks (weighted, uniform or every light in range)
     /// connected, irradiance into the engine's storage texture.
     DirectLight,
+    /// Temporal accumulation of a per-pixel signal over an engine's
+    /// G-buffer (slc-core's `temporal`): the history reprojected, matched
+    /// and blended into the engine's output and the next history.
+    Temporal,
 }
 
 impl Kernel {
     /// All kernels.
-    pub const ALL: [Kernel; 15] = [
+    pub const ALL: [Kernel; 16] = [
         Kernel::LightUpdate,
         Kernel::BshRefit,
         Kernel::VplTiled,
@@ -207,6 +211,7 @@ impl Kernel {
         Kernel::FrameCompose,
         Kernel::LightRanges,
         Kernel::DirectLight,
+        Kernel::Temporal,
     ];
 
     /// File stem / name.
@@ -227,6 +232,7 @@ impl Kernel {
             Kernel::FrameCompose => "frame_compose",
             Kernel::LightRanges => "light_ranges",
             Kernel::DirectLight => "direct_light",
+            Kernel::Temporal => "temporal",
         }
     }
 
@@ -434,7 +440,7 @@ impl Default for Features {
     }
 }
 
-const TEMPLATES: [(&str, &str); 27] = [
+const TEMPLATES: [(&str, &str); 28] = [
     ("header.wgsl", include_str!("templates/header.wgsl")),
     ("workgroup_box.wgsl", include_str!("templates/workgroup_box.wgsl")),
     ("lights.wgsl", include_str!("templates/lights.wgsl")),
@@ -461,6 +467,7 @@ const TEMPLATES: [(&str, &str); 27] = [
     ("light_weight.wgsl", include_str!("templates/light_weight.wgsl")),
     ("light_ranges", include_str!("templates/light_ranges.wgsl")),
     ("direct_light", include_str!("templates/direct_light.wgsl")),
+    ("temporal", include_str!("templates/temporal.wgsl")),
     ("layout", ""),
 ];
 
@@ -488,7 +495,7 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
         return bad(format!("workgroup size {} must be in 1..=256", f.workgroup_size));
     }
     match kernel {
-        Kernel::VplDenoise | Kernel::VplPack | Kernel::IrradianceExport | Kernel::PrimaryDirect | Kernel::FrameCompose
+        Kernel::VplDenoise | Kernel::VplPack | Kernel::IrradianceExport | Kernel::PrimaryDirect | Kernel::FrameCompose | Kernel::Temporal
             if !(1..=16).contains(&f.tile_size) || !(1..=16).contains(&f.interleave) =>
         {
             return bad(format!("{}: tile {} and period {} must be in 1..=16", kernel.name(), f.tile_size, f.interleave));

@@ -73,6 +73,8 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
             Features { lights: vpl, output_format: OutputFormat::Rgba32Float, glossy: true, ..Features::default() },
         ),
         ("light_ranges", Kernel::LightRanges, Features::default()),
+        ("temporal-position", Kernel::Temporal, Features { lights: vpl, output_format: OutputFormat::Rgba32Float, ..Features::default() }),
+        ("temporal-r32depth-rgba16float", Kernel::Temporal, Features { lights: vpl, surface: SurfaceSource::R32Depth, ..Features::default() }),
         (
             "direct_light-point-spot-weighted-r32depth",
             Kernel::DirectLight,

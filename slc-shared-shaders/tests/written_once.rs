@@ -50,6 +50,13 @@ fn templates_do_not_contain_core_formulas() {
         // The VPL frame's glossy composition (c_diff = (1 - m) b).
         "1.0 - m.metallic",
         "(1.0 - metallic)",
+        // Temporal accumulation: the moving average, the change test, the
+        // luminance, the bilinear weights.
+        "(1.0 - lambda)",
+        "0.5 * d * d",
+        "0.2126",
+        "(c - hc)",
+        "1.0 - fx",
     ];
     let mut n = 0;
     for (name, src) in slc_shared_shaders::templates() {
@@ -58,7 +65,7 @@ fn templates_do_not_contain_core_formulas() {
         }
         n += 1;
     }
-    assert_eq!(n, 26);
+    assert_eq!(n, 27);
 }
 
 /// The guard that catches the next copy: a template composes the core's

@@ -66,6 +66,14 @@ const DEPTH_SIGMA: f32 = 0.05f;
 const COVER_WEIGHT: f32 = 0.1f;
 const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
+const TEMPORAL_MAX_HISTORY: f32 = 32f;
+const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
+const TEMPORAL_NORMAL_COS: f32 = 0.9f;
+const TEMPORAL_MIN_MOMENTS: f32 = 8f;
+const TEMPORAL_CHANGED_HISTORY: f32 = 4f;
+const TEMPORAL_CHANGE_LOW: f32 = 4f;
+const TEMPORAL_CHANGE_HIGH: f32 = 8f;
+const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const K: u32 = 8u;
 const BSH: u32 = 0u;
 

@@ -39,6 +39,14 @@ const DEPTH_SIGMA: f32 = 0.05f;
 const COVER_WEIGHT: f32 = 0.1f;
 const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
+const TEMPORAL_MAX_HISTORY: f32 = 32f;
+const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
+const TEMPORAL_NORMAL_COS: f32 = 0.9f;
+const TEMPORAL_MIN_MOMENTS: f32 = 8f;
+const TEMPORAL_CHANGED_HISTORY: f32 = 4f;
+const TEMPORAL_CHANGE_LOW: f32 = 4f;
+const TEMPORAL_CHANGE_HIGH: f32 = 8f;
+const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 
 @group(1) @binding(0) 
 var<storage> slc_table: array<f32>;
@@ -221,17 +229,17 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
     var local: bool;
 
     let v_14 = (c2_1 - c1_1);
-    let d_6 = sqrt(dot(v_14, v_14));
+    let d_8 = sqrt(dot(v_14, v_14));
     let _e8 = sphere_pad(r1_1, c1_1);
-    if (r1_1 >= ((d_6 + r2_3) + _e8)) {
+    if (r1_1 >= ((d_8 + r2_3) + _e8)) {
         return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     let _e16 = sphere_pad(r2_3, c2_1);
-    if (r2_3 >= ((d_6 + r1_1) + _e16)) {
+    if (r2_3 >= ((d_8 + r1_1) + _e16)) {
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if !((d_6 >= SPHERE_HUGE)) {
-        local = ((0.5f * ((d_6 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if !((d_8 >= SPHERE_HUGE)) {
+        local = ((0.5f * ((d_8 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local = true;
     }
@@ -239,23 +247,23 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
     if _e35 {
         return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if (abs((r1_1 - r2_3)) >= d_6) {
+    if (abs((r1_1 - r2_3)) >= d_8) {
         if (r1_1 >= r2_3) {
-            let rn = max(r1_1, (d_6 + r2_3));
+            let rn = max(r1_1, (d_8 + r2_3));
             let _e50 = sphere_pad(rn, c1_1);
             return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        let rm = max(r2_3, (d_6 + r1_1));
+        let rm = max(r2_3, (d_8 + r1_1));
         let _e58 = sphere_pad(rm, c2_1);
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    let r0_ = (0.5f * ((d_6 + r1_1) + r2_3));
-    let c_10 = (c1_1 + (v_14 * ((r0_ - r1_1) / d_6)));
-    let e1_ = (c_10 - c1_1);
-    let e2_ = (c_10 - c2_1);
+    let r0_ = (0.5f * ((d_8 + r1_1) + r2_3));
+    let c_13 = (c1_1 + (v_14 * ((r0_ - r1_1) / d_8)));
+    let e1_ = (c_13 - c1_1);
+    let e2_ = (c_13 - c2_1);
     let r_7 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    let _e82 = sphere_pad(r_7, c_10);
-    return vec4<f32>(c_10.x, c_10.y, c_10.z, (r_7 + _e82));
+    let _e82 = sphere_pad(r_7, c_13);
+    return vec4<f32>(c_13.x, c_13.y, c_13.z, (r_7 + _e82));
 }
 
 fn sphere_overlaps_aabb(c_2: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
@@ -343,11 +351,11 @@ fn triangle_sample(a_2: vec3<f32>, b_2: vec3<f32>, c_3: vec3<f32>, u1_: f32, u2_
 }
 
 fn area_to_solid_angle_pdf(pdf_area: f32, d2_7: f32, cos_light: f32) -> f32 {
-    let c_11 = abs(cos_light);
-    if (c_11 <= 0f) {
+    let c_14 = abs(cos_light);
+    if (c_14 <= 0f) {
         return 0f;
     }
-    return ((pdf_area * d2_7) / c_11);
+    return ((pdf_area * d2_7) / c_14);
 }
 
 fn atan_portable(x_6: f32) -> f32 {
@@ -491,7 +499,7 @@ fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_5: f32) -> f32 {
     let _e9 = to_u32_(_e8);
     let v0_ = (base_1 + 2u);
     let h0_ = (v0_ + _e5);
-    let c0_1 = (h0_ + _e9);
+    let c0_2 = (h0_ + _e9);
     let _e14 = at(tab_2, v0_);
     if !((gamma < _e14)) {
         let _e22 = at(tab_2, ((v0_ + _e5) - 1u));
@@ -516,11 +524,11 @@ fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_5: f32) -> f32 {
     let _e51 = at(tab_2, (h0_ + _e34));
     let _e53 = at(tab_2, (h0_ + ih1_));
     let _e54 = ies_lerp_t(_e51, _e53, _e32);
-    let _e58 = at(tab_2, ((c0_1 + (_e34 * _e5)) + _e33));
-    let _e65 = at(tab_2, ((c0_1 + (_e34 * _e5)) + iv1_));
+    let _e58 = at(tab_2, ((c0_2 + (_e34 * _e5)) + _e33));
+    let _e65 = at(tab_2, ((c0_2 + (_e34 * _e5)) + iv1_));
     let a_10 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
-    let _e71 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + _e33));
-    let _e78 = at(tab_2, ((c0_1 + (ih1_ * _e5)) + iv1_));
+    let _e71 = at(tab_2, ((c0_2 + (ih1_ * _e5)) + _e33));
+    let _e78 = at(tab_2, ((c0_2 + (ih1_ * _e5)) + iv1_));
     let b_7 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
     return ((a_10 * (1f - _e54)) + (b_7 * _e54));
 }
@@ -530,8 +538,8 @@ fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
     let gamma_1 = degrees(_e9);
     let on_axis = ((abs(wr) + abs(ws)) <= 0f);
     let _e16 = atan2_portable(ws, wr);
-    let c_12 = select(degrees(_e16), 0f, on_axis);
-    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_12);
+    let c_15 = select(degrees(_e16), 0f, on_axis);
+    let _e20 = ies_candela(tab_3, base_2, gamma_1, c_15);
     return _e20;
 }
 
@@ -749,9 +757,9 @@ fn smith_visibility(n_l_1: f32, n_v: f32, alpha_2: f32) -> f32 {
 }
 
 fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
-    let c_13 = saturate((1f - v_h));
-    let c2_2 = (c_13 * c_13);
-    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_2 * c2_2) * c_13)));
+    let c_16 = saturate((1f - v_h));
+    let c2_3 = (c_16 * c_16);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_3 * c2_3) * c_16)));
 }
 
 fn specular_fresnel(base_4: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
@@ -766,12 +774,12 @@ fn diffuse_brdf(base_5: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: 
 }
 
 fn half_cosine(v_3: vec3<f32>, l: vec3<f32>) -> f32 {
-    let h_1 = (v_3 + l);
-    let len2_ = dot(h_1, h_1);
+    let h_2 = (v_3 + l);
+    let len2_ = dot(h_2, h_2);
     if (len2_ <= 0f) {
         return 0f;
     }
-    return saturate((dot(v_3, h_1) / sqrt(len2_)));
+    return saturate((dot(v_3, h_2) / sqrt(len2_)));
 }
 
 fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n_14: vec3<f32>, v_4: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
@@ -790,10 +798,10 @@ fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2:
     }
     let hs = (v_4 + l_1);
     let inv = (1f / sqrt(dot(hs, hs)));
-    let h_2 = (hs * inv);
-    let c_14 = cross(n_14, h_2);
-    let _e32 = ggx_d(dot(n_14, h_2), dot(c_14, c_14), alpha_3);
-    let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_4, h_2));
+    let h_3 = (hs * inv);
+    let c_17 = cross(n_14, h_3);
+    let _e32 = ggx_d(dot(n_14, h_3), dot(c_17, c_17), alpha_3);
+    let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_4, h_3));
     let _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
@@ -1145,8 +1153,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> {
     var local_14: bool;
 
-    let n_29 = cross((b_4 - a_5), (c_7 - a_5));
-    let l2_ = dot(n_29, n_29);
+    let n_34 = cross((b_4 - a_5), (c_7 - a_5));
+    let l2_ = dot(n_34, n_34);
     if !(!((l2_ > 0f))) {
         local_14 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -1156,7 +1164,7 @@ fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_29 / vec3(sqrt(l2_)));
+    return (n_34 / vec3(sqrt(l2_)));
 }
 
 fn face_against(n_24: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
@@ -1193,8 +1201,8 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>
     if _e24 {
         return facing;
     }
-    let n_30 = (s_6 / vec3(sqrt(l2_1)));
-    return select(n_30, -(n_30), (dot(n_30, facing) < 0f));
+    let n_35 = (s_6 / vec3(sqrt(l2_1)));
+    return select(n_35, -(n_35), (dot(n_35, facing) < 0f));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, c_9: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -1204,14 +1212,14 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
 
     let e1_2 = (b_6 - a_7);
     let e2_2 = (c_9 - a_7);
-    let p_8 = cross(d_3, e2_2);
-    let det = dot(e1_2, p_8);
+    let p_11 = cross(d_3, e2_2);
+    let det = dot(e1_2, p_11);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv_1 = (1f / det);
     let s_7 = (o_1 - a_7);
-    let u_6 = (dot(s_7, p_8) * inv_1);
+    let u_6 = (dot(s_7, p_11) * inv_1);
     if !((u_6 < 0f)) {
         local_16 = (u_6 > 1f);
     } else {
@@ -1278,8 +1286,8 @@ fn bilateral_weight(n_25: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f
     let dn2_ = (dn * dn);
     let dn4_ = (dn2_ * dn2_);
     let dn8_ = (dn4_ * dn4_);
-    let d_7 = ((zj - z_1) * inv_sz);
-    let t_6 = max((1f - (d_7 * d_7)), 0f);
+    let d_9 = ((zj - z_1) * inv_sz);
+    let t_6 = max((1f - (d_9 * d_9)), 0f);
     return (((dn8_ * dn8_) * t_6) * t_6);
 }
 
@@ -1469,8 +1477,8 @@ fn ortho_texel_width(extent_4: f32, size_9: f32) -> f32 {
 }
 
 fn shadow_bias(texel: f32, cos_light_1: f32) -> f32 {
-    let c_15 = clamp(cos_light_1, 0.02f, 1f);
-    return (texel * (1.5f + (sqrt((1f - (c_15 * c_15))) / c_15)));
+    let c_18 = clamp(cos_light_1, 0.02f, 1f);
+    return (texel * (1.5f + (sqrt((1f - (c_18 * c_18))) / c_18)));
 }
 
 fn shadow_lit(d_5: f32, d_map: f32, bias: f32) -> bool {
@@ -1493,5 +1501,92 @@ fn glossy_radiance(base_11: vec3<f32>, emission_1: vec3<f32>, metallic_8: f32, d
     let _e6 = diffuse_radiance(base_11, emission_1, direct);
     let _e7 = diffuse_albedo(base_11, metallic_8);
     return ((_e6 + ((_e7 * INV_PI) * indirect)) + specular);
+}
+
+fn luminance(c_10: vec3<f32>) -> f32 {
+    return dot(c_10, vec3<f32>(0.2126f, 0.7152f, 0.0722f));
+}
+
+fn reproject(c0_1: vec4<f32>, c1_3: vec4<f32>, c2_2: vec4<f32>, c3_: vec4<f32>, p_8: vec3<f32>, width: f32, height: f32) -> vec3<f32> {
+    let clip = ((((c0_1 * p_8.x) + (c1_3 * p_8.y)) + (c2_2 * p_8.z)) + c3_);
+    if (clip.w <= 0f) {
+        return vec3<f32>(-1f, -1f, 0f);
+    }
+    let x_16 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
+    let y_3 = ((((1f - (clip.y / clip.w)) * 0.5f) * height) - 0.5f);
+    return vec3<f32>(x_16, y_3, clip.w);
+}
+
+fn bilinear_weight(fx: f32, fy: f32, dx: u32, dy: u32) -> f32 {
+    let wx = select((1f - fx), fx, (dx == 1u));
+    let wy = select((1f - fy), fy, (dy == 1u));
+    return (wx * wy);
+}
+
+fn history_matches(n_29: vec3<f32>, nh: vec3<f32>, p_9: vec3<f32>, oh: f32, d_6: f32) -> bool {
+    var local_23: bool;
+
+    if (abs((dot(nh, p_9) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_6)) {
+        local_23 = (dot(n_29, nh) >= TEMPORAL_NORMAL_COS);
+    } else {
+        local_23 = false;
+    }
+    let _e17 = local_23;
+    return _e17;
+}
+
+fn temporal_change(l_5: f32, m1_: f32, noise: f32, n_30: f32) -> f32 {
+    if (n_30 < TEMPORAL_MIN_MOMENTS) {
+        return 0f;
+    }
+    let sigma = sqrt((max(noise, 0f) * (1f + (1f / n_30))));
+    let t_9 = (abs((l_5 - m1_)) / ((sigma + (0.001f * max(abs(l_5), abs(m1_)))) + 0.00000000000000000001f));
+    return clamp(((t_9 - TEMPORAL_CHANGE_LOW) / 4f), 0f, 1f);
+}
+
+fn next_history_length(n_31: f32, lambda: f32, max_history: f32) -> f32 {
+    return min((((1f - lambda) * n_31) + 1f), max(max_history, 1f));
+}
+
+fn temporal_alpha(n_32: f32) -> f32 {
+    return (1f / max(n_32, 1f));
+}
+
+fn history_tap_weight(fx_1: f32, fy_1: f32, dx_1: u32, dy_1: u32, n_33: vec3<f32>, nh_1: vec3<f32>, p_10: vec3<f32>, oh_1: f32, d_7: f32, len_1: f32) -> f32 {
+    var local_24: bool;
+
+    if !((len_1 <= 0f)) {
+        let _e15 = history_matches(n_33, nh_1, p_10, oh_1, d_7);
+        local_24 = !(_e15);
+    } else {
+        local_24 = true;
+    }
+    let _e18 = local_24;
+    if _e18 {
+        return 0f;
+    }
+    let _e20 = bilinear_weight(fx_1, fy_1, dx_1, dy_1);
+    return _e20;
+}
+
+fn temporal_color(c_11: vec3<f32>, h_1: vec4<f32>, noise_1: f32, max_history_1: f32) -> vec4<f32> {
+    let hc = vec3<f32>(h_1.x, h_1.y, h_1.z);
+    let _e8 = luminance(c_11);
+    let _e9 = luminance(hc);
+    let _e11 = temporal_change(_e8, _e9, noise_1, h_1.w);
+    let _e13 = next_history_length(h_1.w, _e11, max_history_1);
+    let _e15 = temporal_alpha(_e13);
+    let v_23 = (hc + ((c_11 - hc) * _e15));
+    return vec4<f32>(v_23.x, v_23.y, v_23.z, _e13);
+}
+
+fn temporal_moments(c_12: vec3<f32>, last: f32, noise_2: f32, prev_len: f32, len_2: f32) -> vec4<f32> {
+    let _e5 = luminance(c_12);
+    if (prev_len <= 0f) {
+        return vec4<f32>(_e5, 0f, 0f, 0f);
+    }
+    let d_10 = (_e5 - last);
+    let _e19 = temporal_alpha((len_2 - 1f));
+    return vec4<f32>(_e5, (noise_2 + ((((0.5f * d_10) * d_10) - noise_2) * _e19)), 0f, 0f);
 }
 

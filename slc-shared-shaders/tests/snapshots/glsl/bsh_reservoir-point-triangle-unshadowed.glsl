@@ -66,6 +66,14 @@ const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
 const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
+const float TEMPORAL_MAX_HISTORY = 32.0;
+const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+const float TEMPORAL_NORMAL_COS = 0.9;
+const float TEMPORAL_MIN_MOMENTS = 8.0;
+const float TEMPORAL_CHANGED_HISTORY = 4.0;
+const float TEMPORAL_CHANGE_LOW = 4.0;
+const float TEMPORAL_CHANGE_HIGH = 8.0;
+const float TEMPORAL_MIN_WEIGHT = 0.01;
 const uint K = 8u;
 const uint BSH = 0u;
 

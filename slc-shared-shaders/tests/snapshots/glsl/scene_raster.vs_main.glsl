@@ -78,6 +78,14 @@ const float DEPTH_SIGMA = 0.05;
 const float COVER_WEIGHT = 0.1;
 const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
+const float TEMPORAL_MAX_HISTORY = 32.0;
+const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+const float TEMPORAL_NORMAL_COS = 0.9;
+const float TEMPORAL_MIN_MOMENTS = 8.0;
+const float TEMPORAL_CHANGED_HISTORY = 4.0;
+const float TEMPORAL_CHANGE_LOW = 4.0;
+const float TEMPORAL_CHANGE_HIGH = 8.0;
+const float TEMPORAL_MIN_WEIGHT = 0.01;
 
 layout(std140) uniform MapParams_block_0Vertex { MapParams _group_0_binding_0_vs; };
 

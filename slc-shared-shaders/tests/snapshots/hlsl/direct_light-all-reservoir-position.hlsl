@@ -95,6 +95,14 @@ static const float DEPTH_SIGMA = 0.05;
 static const float COVER_WEIGHT = 0.1;
 static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
+static const float TEMPORAL_MAX_HISTORY = 32.0;
+static const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+static const float TEMPORAL_NORMAL_COS = 0.9;
+static const float TEMPORAL_MIN_MOMENTS = 8.0;
+static const float TEMPORAL_CHANGED_HISTORY = 4.0;
+static const float TEMPORAL_CHANGE_LOW = 4.0;
+static const float TEMPORAL_CHANGE_HIGH = 8.0;
+static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint K = 8u;
 static const uint BSH = 0u;
 

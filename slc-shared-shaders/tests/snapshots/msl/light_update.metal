@@ -48,6 +48,14 @@ constant float DEPTH_SIGMA = 0.05;
 constant float COVER_WEIGHT = 0.1;
 constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
+constant float TEMPORAL_MAX_HISTORY = 32.0;
+constant float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+constant float TEMPORAL_NORMAL_COS = 0.9;
+constant float TEMPORAL_MIN_MOMENTS = 8.0;
+constant float TEMPORAL_CHANGED_HISTORY = 4.0;
+constant float TEMPORAL_CHANGE_LOW = 4.0;
+constant float TEMPORAL_CHANGE_HIGH = 8.0;
+constant float TEMPORAL_MIN_WEIGHT = 0.01;
 
 float to_f32_(
     uint u

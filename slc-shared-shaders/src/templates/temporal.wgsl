@@ -1,0 +1,63 @@
+{% include "header.wgsl" %}
+// Temporal accumulation of a per-pixel signal (slc-core's temporal module,
+// as slc-cpu's Temporal runs it): the history reprojected with the previous
+// view-projection, its four bilinear taps kept where they saw this surface,
+// the change test and the moving average; the result into out_tex
+// ({{ out_format }}) and the next frame's history.
+
+{{ bindings }}
+{% include "gbuffer_read.wgsl" %}
+
+@compute @workgroup_size({{ tile }}, {{ tile }})
+fn main(@builtin(global_invocation_id) gid: vec3u) {
+    if gid.x >= view.width || gid.y >= view.height {
+        return;
+    }
+    let texel = vec2i(i32(gid.x), i32(gid.y));
+    let g = gbuffer_at(gid.y * view.width + gid.x);
+    let c = textureLoad(signal_tex, texel, 0).xyz;
+    if g.position.w <= 0.0 {
+        textureStore(out_tex, texel, vec4f(c, 0.0));
+        textureStore(next_value, texel, vec4f(c, 0.0));
+        textureStore(next_noise, texel, vec4f(0.0));
+        textureStore(next_surface, texel, vec4f(0.0));
+        return;
+    }
+    let p = g.position.xyz;
+    let n = g.normal.xyz;
+    var hv = vec4f(0.0);
+    var hn = vec4f(0.0);
+    let q = reproject(params.c0, params.c1, params.c2, params.c3, p, f32(view.width), f32(view.height));
+    if params.has_history == 1u && q.z > 0.0 {
+        let x0 = floor(q.x);
+        let y0 = floor(q.y);
+        let d = length(p - params.prev_eye);
+        var v = vec4f(0.0);
+        var m = vec4f(0.0);
+        var weight = 0.0;
+        for (var k = 0u; k < 4u; k++) {
+            let dx = k & 1u;
+            let dy = k >> 1u;
+            let tx = x0 + f32(dx);
+            let ty = y0 + f32(dy);
+            if tx >= 0.0 && ty >= 0.0 && tx < f32(view.width) && ty < f32(view.height) {
+                let t = vec2i(i32(tx), i32(ty));
+                let tv = textureLoad(hist_value, t, 0);
+                let ts = textureLoad(hist_surface, t, 0);
+                let w = history_tap_weight(q.x - x0, q.y - y0, dx, dy, n, ts.xyz, p, ts.w, d, tv.w);
+                v += tv * w;
+                m += textureLoad(hist_noise, t, 0) * w;
+                weight += w;
+            }
+        }
+        if weight >= TEMPORAL_MIN_WEIGHT {
+            hv = v / weight;
+            hn = m / weight;
+        }
+    }
+    let value = temporal_color(c, hv, hn.y, params.max_history);
+    textureStore(out_tex, texel, value);
+    textureStore(next_value, texel, value);
+    textureStore(next_noise, texel, temporal_moments(c, hn.x, hn.y, hv.w, value.w));
+    textureStore(next_surface, texel, vec4f(n, dot(n, p)));
+}

@@ -1,0 +1,395 @@
+struct TemporalParams {
+    float4 c0_;
+    float4 c1_;
+    float4 c2_;
+    float4 c3_;
+    float3 prev_eye;
+    float max_history;
+    uint has_history;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+
+struct ViewParams {
+    float4 c0_;
+    float4 c1_;
+    float4 c2_;
+    float4 c3_;
+    float3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    float3 f0_d;
+    float f90_d;
+};
+
+struct GbTexel {
+    float4 position;
+    float4 normal;
+};
+
+static const uint LIGHT_POINT = 0u;
+static const uint LIGHT_SPOT = 1u;
+static const uint LIGHT_IES = 2u;
+static const uint LIGHT_TRIANGLE = 3u;
+static const uint LIGHT_VPL = 4u;
+static const uint NO_LIGHT = 4294967295u;
+static const uint MAP_CAMERA = 0u;
+static const uint MAP_PERSPECTIVE = 1u;
+static const uint MAP_ORTHOGRAPHIC = 2u;
+static const float XI_STEP = 5.9604645e-8;
+static const uint PICK_STREAM = 2654435769u;
+static const float TWO_PI = 6.2831855;
+static const float CULL_RADIUS_SCALE = 1.000001;
+static const float SPHERE_PAD = 4.7683716e-7;
+static const float SPHERE_HUGE = 3.4028235e38;
+static const float SPHERE_PAD_ABS = 1e-18;
+static const float INV_PI = 0.31830987;
+static const float MIN_D2_ = 1e-12;
+static const uint BSH_NONE = 4294967295u;
+static const uint RESERVOIR_FULL = 4294967295u;
+static const float GGX_ALPHA_MIN = 0.001;
+static const float RANGE_SCALE_MAX = 64.0;
+static const uint LIGHT_BVH_LEAF = 4294967295u;
+static const float ONE_MINUS_EPSILON = 0.99999994;
+static const float F32_MAX = 3.4028235e38;
+static const float DEPTH_NONE = 1e30;
+static const float DEPTH_SIGMA = 0.05;
+static const float COVER_WEIGHT = 0.1;
+static const uint NEAR_BLOCK = 64u;
+static const uint ROULETTE_DEPTH = 2u;
+static const float TEMPORAL_MAX_HISTORY = 32.0;
+static const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+static const float TEMPORAL_NORMAL_COS = 0.9;
+static const float TEMPORAL_MIN_MOMENTS = 8.0;
+static const float TEMPORAL_CHANGED_HISTORY = 4.0;
+static const float TEMPORAL_CHANGE_LOW = 4.0;
+static const float TEMPORAL_CHANGE_HIGH = 8.0;
+static const float TEMPORAL_MIN_WEIGHT = 0.01;
+
+cbuffer view : register(b0) { ViewParams view; }
+Texture2D<float4> depth_tex : register(t1);
+Texture2D<float4> normal_tex : register(t2);
+cbuffer params : register(b3) { TemporalParams params; }
+Texture2D<float4> signal_tex : register(t4);
+Texture2D<float4> hist_value : register(t5);
+Texture2D<float4> hist_noise : register(t6);
+Texture2D<float4> hist_surface : register(t7);
+RWTexture2D<float4> out_tex : register(u8);
+RWTexture2D<float4> next_value : register(u9);
+RWTexture2D<float4> next_noise : register(u10);
+RWTexture2D<float4> next_surface : register(u11);
+
+float luminance(float3 c)
+{
+    return dot(c, float3(0.2126, 0.7152, 0.0722));
+}
+
+float3 reproject(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float3 p, float width, float height)
+{
+    float4 clip_ = ((((c0_ * p.x) + (c1_ * p.y)) + (c2_ * p.z)) + c3_);
+    if ((clip_.w <= 0.0)) {
+        return float3(-1.0, -1.0, 0.0);
+    }
+    float x = (((((clip_.x / clip_.w) + 1.0) * 0.5) * width) - 0.5);
+    float y = ((((1.0 - (clip_.y / clip_.w)) * 0.5) * height) - 0.5);
+    return float3(x, y, clip_.w);
+}
+
+float bilinear_weight(float fx, float fy, uint dx, uint dy)
+{
+    float wx = ((dx == 1u) ? fx : (1.0 - fx));
+    float wy = ((dy == 1u) ? fy : (1.0 - fy));
+    return (wx * wy);
+}
+
+bool history_matches(float3 n, float3 nh, float3 p_1, float oh, float d)
+{
+    bool local_5 = (bool)0;
+
+    if ((abs((dot(nh, p_1) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d))) {
+        local_5 = (dot(n, nh) >= TEMPORAL_NORMAL_COS);
+    } else {
+        local_5 = false;
+    }
+    bool _e17 = local_5;
+    return _e17;
+}
+
+float temporal_change(float l, float m1_, float noise_, float n_1)
+{
+    if ((n_1 < TEMPORAL_MIN_MOMENTS)) {
+        return 0.0;
+    }
+    float sigma = sqrt((max(noise_, 0.0) * (1.0 + (1.0 / n_1))));
+    float t = (abs((l - m1_)) / ((sigma + (0.001 * max(abs(l), abs(m1_)))) + 1e-20));
+    return clamp(((t - TEMPORAL_CHANGE_LOW) / 4.0), 0.0, 1.0);
+}
+
+float next_history_length(float n_2, float lambda, float max_history)
+{
+    return min((((1.0 - lambda) * n_2) + 1.0), max(max_history, 1.0));
+}
+
+float temporal_alpha(float n_3)
+{
+    return (1.0 / max(n_3, 1.0));
+}
+
+float history_tap_weight(float fx_1, float fy_1, uint dx_1, uint dy_1, float3 n_4, float3 nh_1, float3 p_2, float oh_1, float d_1, float len)
+{
+    bool local_6 = (bool)0;
+
+    if (!((len <= 0.0))) {
+        const bool _e15 = history_matches(n_4, nh_1, p_2, oh_1, d_1);
+        local_6 = !(_e15);
+    } else {
+        local_6 = true;
+    }
+    bool _e18 = local_6;
+    if (_e18) {
+        return 0.0;
+    }
+    const float _e20 = bilinear_weight(fx_1, fy_1, dx_1, dy_1);
+    return _e20;
+}
+
+float4 temporal_color(float3 c_1, float4 h, float noise_1, float max_history_1)
+{
+    float3 hc = float3(h.x, h.y, h.z);
+    const float _e8 = luminance(c_1);
+    const float _e9 = luminance(hc);
+    const float _e11 = temporal_change(_e8, _e9, noise_1, h.w);
+    const float _e13 = next_history_length(h.w, _e11, max_history_1);
+    const float _e15 = temporal_alpha(_e13);
+    float3 v_1 = (hc + ((c_1 - hc) * _e15));
+    return float4(v_1.x, v_1.y, v_1.z, _e13);
+}
+
+float4 temporal_moments(float3 c_2, float last, float noise_2, float prev_len, float len_1)
+{
+    const float _e5 = luminance(c_2);
+    if ((prev_len <= 0.0)) {
+        return float4(_e5, 0.0, 0.0, 0.0);
+    }
+    float d_2 = (_e5 - last);
+    const float _e19 = temporal_alpha((len_1 - 1.0));
+    return float4(_e5, (noise_2 + ((((0.5 * d_2) * d_2) - noise_2) * _e19)), 0.0, 0.0);
+}
+
+float4 unproject_pixel(float4 c0_1, float4 c1_1, float4 c2_1, float4 c3_1, float px, float py, float width_1, float height_1, float depth, float background)
+{
+    if ((depth == background)) {
+        return float4(0.0, 0.0, 0.0, 0.0);
+    }
+    float x_1 = ((((px + 0.5) / width_1) * 2.0) - 1.0);
+    float y_1 = (1.0 - (((py + 0.5) / height_1) * 2.0));
+    float4 p_3 = ((((c0_1 * x_1) + (c1_1 * y_1)) + (c2_1 * depth)) + c3_1);
+    if ((abs(p_3.w) > 0.0)) {
+        return float4((p_3.x / p_3.w), (p_3.y / p_3.w), (p_3.z / p_3.w), 1.0);
+    }
+    return float4(0.0, 0.0, 0.0, 0.0);
+}
+
+float4 surface_at(int2 texel)
+{
+    float4 _e3 = depth_tex.Load(int3(texel, int(0)));
+    float d_3 = _e3.x;
+    float4 _e7 = view.c0_;
+    float4 _e10 = view.c1_;
+    float4 _e13 = view.c2_;
+    float4 _e16 = view.c3_;
+    uint _e23 = view.width;
+    uint _e27 = view.height;
+    float _e31 = view.background;
+    const float4 _e32 = unproject_pixel(_e7, _e10, _e13, _e16, float(texel.x), float(texel.y), float(_e23), float(_e27), d_3, _e31);
+    return _e32;
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
+    GbTexel ret = (GbTexel)0;
+    ret.position = arg0;
+    ret.normal = arg1;
+    return ret;
+}
+
+GbTexel gbuffer_at(uint i)
+{
+    bool local_7 = (bool)0;
+
+    uint _e3 = view.width;
+    uint _e8 = view.width;
+    int2 texel_1 = int2(int(naga_mod(i, _e3)), int(naga_div(i, _e8)));
+    const float4 _e12 = surface_at(texel_1);
+    float4 _e15 = normal_tex.Load(int3(texel_1, int(0)));
+    float3 n_5 = _e15.xyz;
+    float len2_ = dot(n_5, n_5);
+    if ((_e12.w > 0.0)) {
+        local_7 = (len2_ > 0.0);
+    } else {
+        local_7 = false;
+    }
+    bool valid = local_7;
+    float3 _e30 = view.eye;
+    float3 v_2 = (_e12.xyz - _e30);
+    float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
+    float4 normal = (valid ? float4((n_5 / (sqrt(len2_)).xxx), sqrt(dot(v_2, v_2))) : float4(0.0, 0.0, 0.0, 1e30));
+    const GbTexel gbtexel = ConstructGbTexel(position, normal);
+    return gbtexel;
+}
+
+int naga_f2i32(float value) {
+    return int(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+[numthreads(8, 8, 1)]
+void main(uint3 gid : SV_DispatchThreadID)
+{
+    bool local = (bool)0;
+    float4 hv = (0.0).xxxx;
+    float4 hn = (0.0).xxxx;
+    bool local_1 = (bool)0;
+    float4 v = (0.0).xxxx;
+    float4 m = (0.0).xxxx;
+    float weight = 0.0;
+    uint k = 0u;
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
+
+    uint _e4 = view.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = view.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    int2 texel_2 = int2(int(gid.x), int(gid.y));
+    uint _e24 = view.width;
+    const GbTexel _e28 = gbuffer_at(((gid.y * _e24) + gid.x));
+    float4 _e31 = signal_tex.Load(int3(texel_2, int(0)));
+    float3 c_3 = _e31.xyz;
+    if ((_e28.position.w <= 0.0)) {
+        out_tex[texel_2] = float4(c_3, 0.0);
+        next_value[texel_2] = float4(c_3, 0.0);
+        next_noise[texel_2] = (0.0).xxxx;
+        next_surface[texel_2] = (0.0).xxxx;
+        return;
+    }
+    float3 p_4 = _e28.position.xyz;
+    float3 n_6 = _e28.normal.xyz;
+    float4 _e61 = params.c0_;
+    float4 _e64 = params.c1_;
+    float4 _e67 = params.c2_;
+    float4 _e70 = params.c3_;
+    uint _e73 = view.width;
+    uint _e77 = view.height;
+    const float3 _e79 = reproject(_e61, _e64, _e67, _e70, p_4, float(_e73), float(_e77));
+    uint _e82 = params.has_history;
+    if ((_e82 == 1u)) {
+        local_1 = (_e79.z > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool _e91 = local_1;
+    if (_e91) {
+        float x0_ = floor(_e79.x);
+        float y0_ = floor(_e79.y);
+        float3 _e98 = params.prev_eye;
+        float d_4 = length((p_4 - _e98));
+        uint2 loop_bound = uint2(4294967295u, 4294967295u);
+        bool loop_init = true;
+        while(true) {
+            if (all(loop_bound == uint2(0u, 0u))) { break; }
+            loop_bound -= uint2(loop_bound.y == 0u, 1u);
+            if (!loop_init) {
+                uint _e179 = k;
+                k = (_e179 + 1u);
+            }
+            loop_init = false;
+            uint _e111 = k;
+            if ((_e111 < 4u)) {
+            } else {
+                break;
+            }
+            {
+                uint _e114 = k;
+                uint dx_2 = (_e114 & 1u);
+                uint _e117 = k;
+                uint dy_2 = (_e117 >> 1u);
+                float tx = (x0_ + float(dx_2));
+                float ty = (y0_ + float(dy_2));
+                if ((tx >= 0.0)) {
+                    local_2 = (ty >= 0.0);
+                } else {
+                    local_2 = false;
+                }
+                bool _e131 = local_2;
+                if (_e131) {
+                    uint _e136 = view.width;
+                    local_3 = (tx < float(_e136));
+                } else {
+                    local_3 = false;
+                }
+                bool _e140 = local_3;
+                if (_e140) {
+                    uint _e145 = view.height;
+                    local_4 = (ty < float(_e145));
+                } else {
+                    local_4 = false;
+                }
+                bool _e149 = local_4;
+                if (_e149) {
+                    int2 t_1 = int2(naga_f2i32(tx), naga_f2i32(ty));
+                    float4 tv = hist_value.Load(int3(t_1, int(0)));
+                    float4 ts = hist_surface.Load(int3(t_1, int(0)));
+                    const float _e166 = history_tap_weight((_e79.x - x0_), (_e79.y - y0_), dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_4, tv.w);
+                    float4 _e167 = v;
+                    v = (_e167 + (tv * _e166));
+                    float4 _e170 = m;
+                    float4 _e173 = hist_noise.Load(int3(t_1, int(0)));
+                    m = (_e170 + (_e173 * _e166));
+                    float _e176 = weight;
+                    weight = (_e176 + _e166);
+                }
+            }
+        }
+        float _e181 = weight;
+        if ((_e181 >= TEMPORAL_MIN_WEIGHT)) {
+            float4 _e184 = v;
+            float _e185 = weight;
+            hv = (_e184 / (_e185).xxxx);
+            float4 _e188 = m;
+            float _e189 = weight;
+            hn = (_e188 / (_e189).xxxx);
+        }
+    }
+    float4 _e192 = hv;
+    float _e194 = hn.y;
+    float _e197 = params.max_history;
+    const float4 _e198 = temporal_color(c_3, _e192, _e194, _e197);
+    out_tex[texel_2] = _e198;
+    next_value[texel_2] = _e198;
+    float _e203 = hn.x;
+    float _e205 = hn.y;
+    float _e207 = hv.w;
+    const float4 _e209 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w);
+    next_noise[texel_2] = _e209;
+    next_surface[texel_2] = float4(n_6, dot(n_6, p_4));
+    return;
+}
