@@ -46,7 +46,6 @@ pub mod pt;
 pub mod scene;
 #[cfg(feature = "io")]
 pub mod scene_file;
-#[cfg(feature = "io")]
 pub mod shapes;
 pub mod temporal;
 pub mod vpl;

@@ -63,6 +63,7 @@ use crate::gltf::GltfScene;
 use crate::light_cloud::LightCloudDef;
 use crate::placement::{Stream, Surfaces};
 use crate::scene::{Camera, Material, PrimaryLight, Scene};
+use crate::shapes::{subdivide, subdivide_normals};
 use glam::Vec3;
 use serde::Deserialize;
 use slc_core::ies::IesProfile;
@@ -349,30 +350,6 @@ pub struct SceneFile {
 
 fn v3(a: [f32; 3]) -> Vec3 {
     Vec3::from(a)
-}
-
-/// Splits every triangle into four at its edge midpoints, `levels` times.
-pub fn subdivide(tris: &[[Vec3; 3]], levels: u32) -> Vec<[Vec3; 3]> {
-    split_midpoints(tris, levels, |a, b| (a + b) * 0.5)
-}
-
-/// The vertex normals of [`subdivide`]d triangles (same order): each new
-/// vertex gets the normalised mean of its edge's two normals.
-pub fn subdivide_normals(normals: &[[Vec3; 3]], levels: u32) -> Vec<[Vec3; 3]> {
-    split_midpoints(normals, levels, |a, b| (a + b).try_normalize().unwrap_or(a))
-}
-
-fn split_midpoints(tris: &[[Vec3; 3]], levels: u32, mid: impl Fn(Vec3, Vec3) -> Vec3) -> Vec<[Vec3; 3]> {
-    let mut cur = tris.to_vec();
-    for _ in 0..levels {
-        let mut next = Vec::with_capacity(cur.len() * 4);
-        for [a, b, c] in cur {
-            let (ab, bc, ca) = (mid(a, b), mid(b, c), mid(c, a));
-            next.extend([[a, ab, ca], [ab, b, bc], [ca, bc, c], [ab, bc, ca]]);
-        }
-        cur = next;
-    }
-    cur
 }
 
 impl SceneFile {

@@ -1,8 +1,9 @@
-//! Built-in shapes for scene files: the unit sphere as a subdivided
-//! icosahedron with smooth (radial) vertex normals.
+//! Built-in shapes for scene files and the built-in scenes: the unit
+//! sphere as a subdivided icosahedron with smooth (radial) vertex normals,
+//! and midpoint subdivision of triangles (no file I/O: built without the
+//! `io` feature too).
 
 use crate::scene::{Camera, Material, PrimaryLight, Scene};
-use crate::scene_file::subdivide;
 use glam::Vec3;
 
 /// The unit sphere at the origin: an icosahedron whose triangles are split
@@ -60,6 +61,30 @@ pub fn sphere(levels: u32) -> Scene {
         primary: PrimaryLight::Directional { direction: -Vec3::Y, irradiance: Vec3::ONE },
         unsupported: Vec::new(),
     }
+}
+
+/// Splits every triangle into four at its edge midpoints, `levels` times.
+pub fn subdivide(tris: &[[Vec3; 3]], levels: u32) -> Vec<[Vec3; 3]> {
+    split_midpoints(tris, levels, |a, b| (a + b) * 0.5)
+}
+
+/// The vertex normals of [`subdivide`]d triangles (same order): each new
+/// vertex gets the normalised mean of its edge's two normals.
+pub fn subdivide_normals(normals: &[[Vec3; 3]], levels: u32) -> Vec<[Vec3; 3]> {
+    split_midpoints(normals, levels, |a, b| (a + b).try_normalize().unwrap_or(a))
+}
+
+fn split_midpoints(tris: &[[Vec3; 3]], levels: u32, mid: impl Fn(Vec3, Vec3) -> Vec3) -> Vec<[Vec3; 3]> {
+    let mut cur = tris.to_vec();
+    for _ in 0..levels {
+        let mut next = Vec::with_capacity(cur.len() * 4);
+        for [a, b, c] in cur {
+            let (ab, bc, ca) = (mid(a, b), mid(b, c), mid(c, a));
+            next.extend([[a, ab, ca], [ab, b, bc], [ca, bc, c], [ab, bc, ca]]);
+        }
+        cur = next;
+    }
+    cur
 }
 
 #[cfg(test)]

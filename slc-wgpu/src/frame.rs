@@ -109,6 +109,8 @@ pub enum Stage {
     NearField,
     /// The irradiance into the frame's texture.
     IrradianceExport,
+    /// Temporal accumulation of the irradiance (when asked for).
+    Temporal,
     /// The primary light's shadowed direct term.
     Direct,
     /// Direct plus indirect light into the HDR target.
@@ -117,7 +119,7 @@ pub enum Stage {
 
 impl Stage {
     /// Every stage, in order: the timer holds a timestamp pair for each.
-    pub const ALL: [Stage; 11] = [
+    pub const ALL: [Stage; 12] = [
         Stage::GBuffer,
         Stage::Rsm,
         Stage::ShadowMap,
@@ -127,6 +129,7 @@ impl Stage {
         Stage::Denoise,
         Stage::NearField,
         Stage::IrradianceExport,
+        Stage::Temporal,
         Stage::Direct,
         Stage::Composition,
     ];
@@ -143,6 +146,7 @@ impl Stage {
             Stage::Denoise => "denoise",
             Stage::NearField => "near field",
             Stage::IrradianceExport => "irradiance export",
+            Stage::Temporal => "temporal",
             Stage::Direct => "direct",
             Stage::Composition => "composition",
         }

@@ -15,6 +15,9 @@
 //! - [`DirectPass`] ([`direct`]): SLC direct light from many point, spot,
 //!   IES and triangle lights on the engine's G-buffer, the lights movable
 //!   every frame.
+//! - [`TemporalPass`] ([`temporal`]): temporal accumulation of either
+//!   pass's output over frames (reprojection, disocclusion, change
+//!   response, moving average), from the camera's previous view-projection.
 //!
 //! **The G-buffer** ([`GBuffer`]): the surface as the engine's depth buffer
 //! (`Depth32Float`, or `R32Float` depth in x) with the view's inverse
@@ -41,10 +44,12 @@
 
 pub mod direct;
 pub mod indirect;
+pub mod temporal;
 
 pub use direct::{Dielectric, DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, MaterialInputs};
 pub use indirect::{IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, VplInput, VplSourceDesc, vpl_buffer};
 pub use slc_shared_shaders::layout::{GpuMaterial, GpuVplRecord};
+pub use temporal::{TemporalInputs, TemporalPass, TemporalPassDesc};
 
 #[cfg(doc)]
 use crate::GpuContext;
