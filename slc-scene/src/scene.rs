@@ -140,6 +140,20 @@ impl Camera {
         (f, r * (t * w as f32 / h as f32), u * t)
     }
 
+    /// Checks that position, target and up are finite, the first two
+    /// distinct, up not along the view, and the vertical field of view in
+    /// `(0°, 180°)`.
+    pub fn validate(&self) -> Result<(), SceneError> {
+        let fwd = self.target - self.position;
+        if !(self.position.is_finite() && self.target.is_finite() && fwd.length() > 0.0 && fwd.cross(self.up).length() > 0.0) {
+            return Err(SceneError::Invalid("camera: position, target and up must be finite, distinct and not parallel".into()));
+        }
+        if !(self.vfov_deg > 0.0 && self.vfov_deg < 180.0) {
+            return Err(SceneError::Invalid(format!("camera: vertical fov {} must be in (0, 180)", self.vfov_deg)));
+        }
+        Ok(())
+    }
+
     /// The camera's view-projection for a `w × h` image with depth range
     /// `near..far` (right-handed view, wgpu clip space: depth in `[0, 1]`,
     /// y up): the matrix the GPU frame rasterizes with, whose pixel rays
@@ -369,14 +383,7 @@ impl Scene {
         for (i, m) in self.materials.iter().enumerate() {
             m.validate(i)?;
         }
-        let c = &self.camera;
-        let fwd = c.target - c.position;
-        if !(c.position.is_finite() && c.target.is_finite() && fwd.length() > 0.0 && fwd.cross(c.up).length() > 0.0) {
-            return Err(SceneError::Invalid("camera: position, target and up must be finite, distinct and not parallel".into()));
-        }
-        if !(c.vfov_deg > 0.0 && c.vfov_deg < 180.0) {
-            return Err(SceneError::Invalid(format!("camera: vertical fov {} must be in (0, 180)", c.vfov_deg)));
-        }
+        self.camera.validate()?;
         self.primary.validate()
     }
 

@@ -44,15 +44,16 @@
 use crate::kernel::{KernelLayout, Timer, check_kernels, read_back, storage, zeroed};
 use crate::passes::indirect::Dispatch;
 use crate::passes::{
-    Culling, GBuffer, IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, VplInput,
-    VplSourceDesc,
+    Culling, GBuffer, IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, TemporalInputs,
+    TemporalPass, TemporalPassDesc, VplInput, VplSourceDesc,
 };
 use crate::{GpuContext, GpuError};
 use glam::{Mat4, Vec3, Vec4};
 use slc_core::frame::{diffuse_radiance, glossy_radiance};
 use slc_scene::backend::Timing;
 use slc_scene::image::Image;
-use slc_scene::scene::{LightMap, Material, PrimaryLight, Scene};
+use slc_scene::scene::{Camera, LightMap, Material, PrimaryLight, Scene};
+use slc_scene::temporal::{TemporalSettings, TemporalView};
 use slc_scene::vpl::{PERIOD, Specular, VplInputs, VplMethod, VplSettings, VplStats, Vpls};
 use slc_shared_shaders::layout::{
     GpuLight, GpuMaterial, GpuVertex, ImageParams, LIGHT_SPOT, MAP_CAMERA, MAP_ORTHOGRAPHIC, MAP_PERSPECTIVE, MapParams,
@@ -153,9 +154,10 @@ impl Stage {
     }
 }
 
-/// Timestamp pairs a frame's timer holds: one per stage, and one more
-/// for the glossy frame's second denoise (the specular correction's).
-const TIMED_PASSES: u32 = Stage::ALL.len() as u32 + 1;
+/// Timestamp pairs a frame's timer holds: one per stage, and two more
+/// for the glossy frame's second denoise and second temporal
+/// accumulation (the specular correction's).
+const TIMED_PASSES: u32 = Stage::ALL.len() as u32 + 2;
 
 /// One stage's time.
 #[derive(Clone, Debug, PartialEq)]
@@ -325,8 +327,20 @@ pub struct GpuVplFrame {
     direct_pipeline: wgpu::ComputePipeline,
     direct_group: wgpu::BindGroup,
     compose_pipeline: wgpu::ComputePipeline,
+    compose_layout: KernelLayout,
     compose_group: wgpu::BindGroup,
     output: Target,
+    /// The camera's raster uniforms and the image's (eye), rewritten by
+    /// [`GpuVplFrame::set_camera`].
+    camera_params: wgpu::Buffer,
+    camera_map: MapParams,
+    image_params: wgpu::Buffer,
+    camera: Camera,
+    /// Temporal accumulation of the indirect light, when on.
+    temporal: Option<FrameTemporal>,
+    /// The primary light moved since the last recorded frame (a reported
+    /// change for the temporal stage).
+    lighting_changed: std::cell::Cell<bool>,
     /// GPU timestamps around the stages, sized for every [`Stage`] (and
     /// the glossy frame's second denoise, [`TIMED_PASSES`]); `None`
     /// where the frame times by the host's clock.
@@ -393,13 +407,9 @@ impl GpuVplFrame {
         // The camera's and the light's raster parameters.
         let (lo, hi) = scene.bounds();
         let cam = &scene.camera;
-        // Views and projections from glam's camera module: right-handed,
-        // depth in [0, 1].
-        use glam::camera::rh::{proj, view::look_to_mat4};
-        let (_, cam_up, cam_forward) = cam.basis();
+        // The camera's view-projection: right-handed, depth in [0, 1].
         let r = depth_range((lo, hi), cam.position);
-        let camera_vp = proj::directx::perspective(cam.vfov_deg.to_radians(), w as f32 / h as f32, r.start, r.end)
-            * look_to_mat4(cam.position, cam_forward, cam_up);
+        let camera_vp = cam.view_projection(w, h, r.start, r.end);
         let (light, shadow_light) = light_uniforms(&scene.primary, (lo, hi), size, shadow);
         let uniform = |label: &str, bytes: &[u8]| {
             gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -409,8 +419,8 @@ impl GpuVplFrame {
             })
         };
         let [c0, c1, c2, c3] = columns(camera_vp);
-        let camera_params =
-            uniform("slc camera params", bytemuck::bytes_of(&MapParams { c0, c1, c2, c3, origin: cam.position, mode: MAP_CAMERA, size: 0, ..light }));
+        let camera_map = MapParams { c0, c1, c2, c3, origin: cam.position, mode: MAP_CAMERA, size: 0, ..light };
+        let camera_params = uniform("slc camera params", bytemuck::bytes_of(&camera_map));
         let light_params = uniform("slc light params", bytemuck::bytes_of(&light));
         let shadow_params = uniform("slc shadow params", bytemuck::bytes_of(&shadow_light));
         let image_params =
@@ -563,8 +573,15 @@ impl GpuVplFrame {
             direct_pipeline,
             direct_group,
             compose_pipeline,
+            compose_layout,
             compose_group,
             output,
+            camera_params,
+            camera_map,
+            image_params,
+            camera: *cam,
+            temporal: None,
+            lighting_changed: std::cell::Cell::new(false),
             // A software adapter's timestamps do not bracket the work its
             // worker threads do (lavapipe reports microseconds for
             // 10⁸-evaluation dispatches): time it by the clock instead.
@@ -602,7 +619,91 @@ impl GpuVplFrame {
         let (light, shadow) = light_uniforms(primary, self.bounds, self.desc.rsm_size, self.desc.shadow_size);
         self.gpu.queue.write_buffer(&self.light_params, 0, bytemuck::bytes_of(&light));
         self.gpu.queue.write_buffer(&self.shadow_params, 0, bytemuck::bytes_of(&shadow));
+        self.lighting_changed.set(true);
         Ok(())
+    }
+
+    /// Moves the camera (a viewer flying, an engine's view): rewrites the
+    /// G-buffer's raster uniforms and the eye, so the next recorded frame
+    /// renders from it. The camera is checked as the scene's is
+    /// ([`Camera::validate`]).
+    pub fn set_camera(&mut self, camera: &Camera) -> Result<(), GpuError> {
+        camera.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
+        let (w, h) = (self.desc.width, self.desc.height);
+        let r = depth_range(self.bounds, camera.position);
+        let [c0, c1, c2, c3] = columns(camera.view_projection(w, h, r.start, r.end));
+        self.camera_map = MapParams { c0, c1, c2, c3, origin: camera.position, ..self.camera_map };
+        let image = ImageParams { eye: camera.position, width: w, height: h, pad0: 0, pad1: 0, pad2: 0 };
+        self.gpu.queue.write_buffer(&self.camera_params, 0, bytemuck::bytes_of(&self.camera_map));
+        self.gpu.queue.write_buffer(&self.image_params, 0, bytemuck::bytes_of(&image));
+        (self.camera, self.eye) = (*camera, camera.position);
+        Ok(())
+    }
+
+    /// The camera the next frame renders from.
+    pub fn camera(&self) -> &Camera {
+        &self.camera
+    }
+
+    /// Turns temporal accumulation of the indirect light on (with
+    /// `settings`) or off (`None`): the filtered irradiance (and on glossy
+    /// pixels the specular correction) goes through a [`TemporalPass`]
+    /// before the composition, reprojected with the camera's motion
+    /// ([`GpuVplFrame::set_camera`]); a moved primary light
+    /// ([`GpuVplFrame::set_primary`]) is a reported change
+    /// ([`TemporalSettings::after_change`]). Turning it on builds the
+    /// passes and targets (once); the history starts empty.
+    pub fn set_temporal(&mut self, settings: Option<TemporalSettings>) -> Result<(), GpuError> {
+        let Some(settings) = settings else {
+            self.temporal = None;
+            return Ok(());
+        };
+        settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
+        if let Some(t) = &mut self.temporal {
+            t.settings = settings;
+            return Ok(());
+        }
+        let gpu = &self.gpu;
+        let (w, h) = (self.desc.width, self.desc.height);
+        let desc = TemporalPassDesc { output_format: F32, ..TemporalPassDesc::new(w, h) };
+        let usage = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
+        let irradiance = (TemporalPass::new(gpu, &desc)?, target(gpu, "slc frame accumulated irradiance", (w, h), F32, usage));
+        let specular = match self.specular {
+            Some(_) => Some((TemporalPass::new(gpu, &desc)?, target(gpu, "slc frame accumulated specular", (w, h), F32, usage))),
+            None => None,
+        };
+        let compose_group = self.compose_group_with(&irradiance.1, specular.as_ref().map(|s| &s.1));
+        self.lighting_changed.set(false);
+        self.temporal = Some(FrameTemporal { settings, irradiance, specular, compose_group });
+        Ok(())
+    }
+
+    /// Forgets the temporal history (a cut); nothing when accumulation is off.
+    pub fn reset_temporal(&mut self) {
+        if let Some(t) = &mut self.temporal {
+            t.irradiance.0.reset();
+            if let Some(s) = &mut t.specular {
+                s.0.reset();
+            }
+        }
+    }
+
+    /// The composition's bind group reading the indirect irradiance from
+    /// `indirect` and the specular correction from `specular`.
+    fn compose_group_with(&self, indirect: &Target, specular: Option<&Target>) -> wgpu::BindGroup {
+        let mut res = vec![
+            ("image", self.image_params.as_entire_binding()),
+            ("position_tex", tex(&self.gb[0])),
+            ("normal_tex", tex(&self.gb[1])),
+            ("indirect_tex", tex(indirect)),
+            ("direct", self.direct.as_entire_binding()),
+            ("materials", self.material_table.as_entire_binding()),
+            ("out_tex", tex(&self.output)),
+        ];
+        if let Some(sp) = specular {
+            res.push(("specular_tex", tex(sp)));
+        }
+        self.compose_layout.group(&self.gpu, 0, &res)
     }
 
     /// Whether stages are timed by GPU timestamps. A software adapter's
@@ -675,8 +776,21 @@ impl GpuVplFrame {
         let (gx, gy) = (self.desc.width.div_ceil(TILE), self.desc.height.div_ceil(TILE));
         let mut steps = vec![Step::Raster(Stage::GBuffer), Step::Raster(Stage::Rsm), Step::Raster(Stage::ShadowMap)];
         steps.extend(indirect.into_iter().map(Step::Compute));
+        let mut compose = self.compose_group.clone();
+        if let Some(t) = &mut self.temporal {
+            let view = TemporalView::of_camera(&self.camera, self.desc.width, self.desc.height);
+            let ts = if self.lighting_changed.take() { t.settings.after_change() } else { t.settings };
+            let (pass, out) = &mut t.irradiance;
+            let signal = TemporalInputs { gbuffer: inputs.gbuffer, signal: &self.irradiance.view, output: &out.view };
+            steps.push(Step::Compute(pass.dispatch(&signal, &view, &ts)?));
+            if let (Some((pass, out)), Some(sp)) = (&mut t.specular, &self.specular) {
+                let signal = TemporalInputs { gbuffer: inputs.gbuffer, signal: &sp.view, output: &out.view };
+                steps.push(Step::Compute(pass.dispatch(&signal, &view, &ts)?));
+            }
+            compose = t.compose_group.clone();
+        }
         steps.push(Step::Compute(Dispatch::new(Stage::Direct, &self.direct_pipeline, self.direct_group.clone(), None, [gx, gy, 1])));
-        steps.push(Step::Compute(Dispatch::new(Stage::Composition, &self.compose_pipeline, self.compose_group.clone(), None, [gx, gy, 1])));
+        steps.push(Step::Compute(Dispatch::new(Stage::Composition, &self.compose_pipeline, compose, None, [gx, gy, 1])));
         Ok(steps)
     }
 
@@ -780,7 +894,7 @@ impl GpuVplFrame {
             direct_ms: sum(&[Stage::ShadowMap, Stage::Direct]),
             rsm_ms: sum(&[Stage::Rsm, Stage::VplGeneration]),
             shading_ms: sum(&[Stage::LightUpdate, Stage::Shading, Stage::NearField]),
-            denoise_ms: sum(&[Stage::Denoise, Stage::IrradianceExport, Stage::Composition]),
+            denoise_ms: sum(&[Stage::Denoise, Stage::IrradianceExport, Stage::Temporal, Stage::Composition]),
             total_ms: times.iter().map(|t| t.ms).sum(),
             vpls: (self.desc.rsm_size as usize).pow(2),
             lights_per_pixel: 0.0,
@@ -863,6 +977,16 @@ impl GpuVplFrame {
             .collect();
         Ok(Image { width: gb.width, height: gb.height, data })
     }
+}
+
+/// The frame's temporal stage: its settings, a pass and an output per
+/// accumulated signal (irradiance; the glossy frame's specular
+/// correction), and the composition's bind group reading the outputs.
+struct FrameTemporal {
+    settings: TemporalSettings,
+    irradiance: (TemporalPass, Target),
+    specular: Option<(TemporalPass, Target)>,
+    compose_group: wgpu::BindGroup,
 }
 
 /// A step of the frame: a raster pass (G-buffer, RSM or shadow map) or a

@@ -219,10 +219,8 @@ impl VplContext {
     /// statistics. The camera is checked as the scene's is; a refused
     /// camera changes nothing.
     pub fn set_camera(&mut self, camera: Camera) -> Result<VplStats, RenderError> {
-        let mut scene = self.scene.clone();
-        scene.camera = camera;
-        scene.validate().map_err(|e| RenderError::Setting(e.to_string()))?;
-        self.scene = scene;
+        camera.validate().map_err(|e| RenderError::Setting(e.to_string()))?;
+        self.scene.camera = camera;
         let t = frame_inputs(&self.scene, &self.geo, true, &mut self.inputs, &mut self.geometric, &mut self.direct);
         (self.base.gbuffer_ms, self.base.rsm_ms, self.base.direct_ms) = (t.gbuffer_ms, t.rsm_ms, t.direct_ms);
         Ok(t)
