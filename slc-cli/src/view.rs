@@ -49,6 +49,12 @@ pub struct ViewArgs {
     /// Start with the light moving on a circle (space).
     #[arg(long)]
     animate: bool,
+    /// Start without temporal accumulation of the indirect light (key t).
+    #[arg(long)]
+    no_temporal: bool,
+    /// Start with the camera swinging about its target (key o).
+    #[arg(long)]
+    orbit: bool,
     /// Render this many frames, then exit (the light moves 1/60 s per frame).
     #[arg(long)]
     frames: Option<u32>,
@@ -95,6 +101,8 @@ pub fn run(a: ViewArgs) -> anyhow::Result<()> {
         min_distance: a.min_distance,
         settings,
         animate: a.animate,
+        temporal: !a.no_temporal,
+        orbit: a.orbit,
         frames: a.frames,
         screenshot: a.screenshot.clone(),
     };

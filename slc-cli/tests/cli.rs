@@ -542,6 +542,22 @@ fn view_renders_frames_and_saves_a_screenshot() {
     let mean = |b: &[u8]| b.iter().map(|&c| c as f64).sum::<f64>() / b.len() as f64;
     let (mv, mc) = (mean(&view), mean(&cpu));
     assert!((mv - mc).abs() <= 0.05 * mc, "screenshot mean {mv:.1} vs the CPU frame's {mc:.1}");
+    // The camera swinging with temporal accumulation on (the default), and
+    // off: both lit frames, the accumulation's not darker or brighter than
+    // the plain one by more than the light's own change would make it.
+    let mut means = Vec::new();
+    for extra in [&[][..], &["--no-temporal"]] {
+        let out = slc_tests::windowed(Path::new(env!("CARGO_BIN_EXE_slc")))
+            .args(["view", "--frames", "20", "--orbit", "--screenshot", "orbit.png"])
+            .args(extra)
+            .args(size)
+            .current_dir(&d)
+            .output()
+            .expect("run slc view");
+        assert!(out.status.success(), "slc view --orbit {extra:?} failed:\n{}", String::from_utf8_lossy(&out.stderr));
+        means.push(mean(&read_png(&d.join("orbit.png")).2));
+    }
+    assert!((means[0] - means[1]).abs() <= 0.02 * means[1], "orbiting: accumulated mean {:.1} vs plain {:.1}", means[0], means[1]);
     // No adapter for the window: one line naming the ones there are.
     let out = slc_tests::windowed(Path::new(env!("CARGO_BIN_EXE_slc")))
         .args(["view", "--frames", "1"])

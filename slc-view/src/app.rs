@@ -6,6 +6,8 @@
 use crate::controls::{Controls, VPL_EDGES};
 use crate::present::Present;
 use crate::{ViewError, ViewOptions, ViewSummary};
+use slc_scene::scene::{Camera, PrimaryLight};
+use slc_scene::temporal::TemporalSettings;
 use slc_scene::vpl::VplMethod;
 use slc_wgpu::GpuContext;
 use slc_wgpu::frame::{FrameDesc, GpuVplFrame, StageTime};
@@ -116,6 +118,10 @@ struct State {
     stage_times: Option<Vec<StageTime>>,
     dragging: bool,
     cursor: Option<(f32, f32)>,
+    /// The light, camera and accumulation the frame last had: only a
+    /// change is passed on (a moved light is a reported change for the
+    /// temporal stage, and must not be one every frame).
+    shown: Option<(PrimaryLight, Camera, bool)>,
 }
 
 impl State {
@@ -166,8 +172,10 @@ impl State {
         let egui_ctx = egui::Context::default();
         let egui_state = egui_winit::State::new(egui_ctx.clone(), egui::ViewportId::ROOT, &window, Some(window.scale_factor() as f32), None, None);
         let egui_renderer = egui_wgpu::Renderer::new(&gpu.device, view_format, egui_wgpu::RendererOptions::default());
-        let mut controls = Controls::new(opts.settings, opts.scene.primary, opts.scene.diagonal(), opts.rsm_size);
+        let mut controls = Controls::new(opts.settings, opts.scene.primary, opts.scene.camera, opts.scene.diagonal(), opts.rsm_size);
         controls.animate = opts.animate;
+        controls.temporal = opts.temporal;
+        controls.orbit = opts.orbit;
         let state = State {
             window,
             surface,
@@ -187,6 +195,7 @@ impl State {
             stage_times: None,
             dragging: false,
             cursor: None,
+            shown: None,
         };
         state.gpu.take_errors()?;
         Ok(state)
@@ -219,8 +228,20 @@ impl State {
             self.frame = GpuVplFrame::new(&self.gpu, &opts.scene, &self.desc)?;
             self.present.bind(&self.gpu.device, self.frame.output());
             self.stage_times = None;
+            self.shown = None;
         }
-        self.frame.set_primary(&self.controls.light())?;
+        let (light, camera, temporal) = (self.controls.light(), self.controls.camera(), self.controls.temporal);
+        let shown = self.shown.unwrap_or((opts.scene.primary, opts.scene.camera, false));
+        if self.shown.is_none() || shown.0 != light {
+            self.frame.set_primary(&light)?;
+        }
+        if self.shown.is_none() || shown.1 != camera {
+            self.frame.set_camera(&camera)?;
+        }
+        if self.shown.is_none() || shown.2 != temporal {
+            self.frame.set_temporal(temporal.then(TemporalSettings::default))?;
+        }
+        self.shown = Some((light, camera, temporal));
         let settings = self.controls.frame_settings(self.frame_index);
         // The controls' CPU-frame settings into the frame's own.
         let st = slc_wgpu::frame::indirect_settings(&settings, self.frame.min_distance())?;
@@ -345,6 +366,9 @@ fn panel(ui: &mut egui::Ui, c: &mut Controls, adapter: &str, fps: f32, frame_ms:
             ui.selectable_value(&mut c.rsm_edge, e, format!("{}", e * e));
         }
     });
+    ui.checkbox(&mut c.temporal, "temporal accumulation [t]");
     ui.checkbox(&mut c.animate, "animate the light [space]");
-    ui.label("move the light: arrows, PageUp/PageDown; aim it: drag; reset: r");
+    ui.checkbox(&mut c.orbit, "swing the camera [o]");
+    ui.label("move the light: arrows, PageUp/PageDown; aim it: drag");
+    ui.label("orbit the camera: j/l, tilt: i/k; reset both: r");
 }

@@ -1,9 +1,11 @@
 //! What the viewer's user controls, and the keys that change it: the
-//! method and its parameter, the denoise, frozen ξ, the VPL count, and the
-//! primary light (moved, aimed, or animated on a circle).
+//! method and its parameter, the denoise, frozen ξ, temporal
+//! accumulation, the VPL count, the primary light (moved, aimed, or
+//! animated on a circle) and the camera (orbited about its target, or
+//! swinging).
 
 use glam::{Quat, Vec3};
-use slc_scene::scene::PrimaryLight;
+use slc_scene::scene::{Camera, PrimaryLight};
 use slc_scene::vpl::{VplMethod, VplSettings};
 use winit::keyboard::{Key, NamedKey};
 
@@ -12,6 +14,15 @@ pub const VPL_EDGES: [u32; 4] = [64, 128, 256, 512];
 
 /// Seconds per turn of the animated light.
 const TURN_SECONDS: f32 = 8.0;
+
+/// Seconds per swing of the orbiting camera (±[`SWING`] about its target).
+const SWING_SECONDS: f32 = 6.0;
+
+/// Half the orbiting camera's swing (radians).
+const SWING: f32 = 0.25;
+
+/// The camera's orbit per key press (radians).
+const ORBIT_STEP: f32 = 0.05;
 
 /// The viewer's settings and the light's pose.
 #[derive(Clone, Debug, PartialEq)]
@@ -22,6 +33,19 @@ pub struct Controls {
     pub freeze: bool,
     /// Move the light on a horizontal circle.
     pub animate: bool,
+    /// Accumulate the indirect light over frames (reprojected, with the
+    /// moving light a reported change).
+    pub temporal: bool,
+    /// Swing the camera about its target.
+    pub orbit: bool,
+    /// The scene's camera.
+    camera: Camera,
+    /// The camera's turn about the vertical through its target (radians).
+    pub cam_yaw: f32,
+    /// The camera's tilt about its right axis (radians).
+    pub cam_pitch: f32,
+    /// The swing's angle (radians).
+    pub swing_phase: f32,
     /// RSM edge (`edge²` VPLs).
     pub rsm_edge: u32,
     /// The scene's primary light.
@@ -39,10 +63,39 @@ pub struct Controls {
 }
 
 impl Controls {
-    /// Controls at `settings`, the scene's primary light `base`, a scene of
-    /// diagonal `diag`, `rsm_edge²` VPLs.
-    pub fn new(settings: VplSettings, base: PrimaryLight, diag: f32, rsm_edge: u32) -> Controls {
-        Controls { settings, freeze: false, animate: false, rsm_edge, base, offset: Vec3::ZERO, yaw: 0.0, pitch: 0.0, phase: 0.0, step: 0.02 * diag }
+    /// Controls at `settings`, the scene's primary light `base` and
+    /// camera `camera`, a scene of diagonal `diag`, `rsm_edge²` VPLs;
+    /// temporal accumulation on.
+    pub fn new(settings: VplSettings, base: PrimaryLight, camera: Camera, diag: f32, rsm_edge: u32) -> Controls {
+        Controls {
+            settings,
+            freeze: false,
+            animate: false,
+            temporal: true,
+            orbit: false,
+            camera,
+            cam_yaw: 0.0,
+            cam_pitch: 0.0,
+            swing_phase: 0.0,
+            rsm_edge,
+            base,
+            offset: Vec3::ZERO,
+            yaw: 0.0,
+            pitch: 0.0,
+            phase: 0.0,
+            step: 0.02 * diag,
+        }
+    }
+
+    /// The camera now: the scene's, turned about the vertical through its
+    /// target by `cam_yaw` plus the swing, and tilted by `cam_pitch`.
+    pub fn camera(&self) -> Camera {
+        let c = &self.camera;
+        let yaw = Quat::from_rotation_y(self.cam_yaw + SWING * self.swing_phase.sin());
+        let back = yaw * (c.position - c.target);
+        let right = back.cross(Vec3::Y);
+        let tilt = if right.length_squared() > 1e-12 { Quat::from_axis_angle(right.normalize(), self.cam_pitch) } else { Quat::IDENTITY };
+        Camera { position: c.target + tilt * back, up: tilt * yaw * c.up, ..*c }
     }
 
     /// The primary light now: the scene's, moved by `offset` plus the
@@ -71,6 +124,9 @@ impl Controls {
         if self.animate {
             self.phase = (self.phase + dt * std::f32::consts::TAU / TURN_SECONDS) % std::f32::consts::TAU;
         }
+        if self.orbit {
+            self.swing_phase = (self.swing_phase + dt * std::f32::consts::TAU / SWING_SECONDS) % std::f32::consts::TAU;
+        }
     }
 
     /// The frame's settings for frame number `frame` (0 while ξ is frozen).
@@ -80,9 +136,11 @@ impl Controls {
 
     /// Applies a key; `true` when it changed something. Keys: `1` `2` `3`
     /// method slc / clamp / none; `+` `-` the error bound ×2 / ÷2 (slc) or
-    /// the range ×1.25 / ÷1.25 (clamp); `d` denoise; `f` freeze ξ; `v` the
-    /// next VPL count; space animation; arrows move the light across,
-    /// PageUp / PageDown up and down; `r` resets the light.
+    /// the range ×1.25 / ÷1.25 (clamp); `d` denoise; `f` freeze ξ; `t`
+    /// temporal accumulation; `v` the next VPL count; space animation;
+    /// arrows move the light across, PageUp / PageDown up and down; `j` `l`
+    /// orbit the camera left / right, `i` `k` tilt it, `o` swing it; `r`
+    /// resets the light and the camera.
     pub fn key(&mut self, key: &Key) -> bool {
         let s = &mut self.settings;
         match key {
@@ -94,8 +152,17 @@ impl Controls {
                 "-" => self.scale_parameter(false),
                 "d" | "D" => s.denoise = !s.denoise,
                 "f" | "F" => self.freeze = !self.freeze,
+                "t" | "T" => self.temporal = !self.temporal,
                 "v" | "V" => self.rsm_edge = next_edge(self.rsm_edge),
-                "r" | "R" => (self.offset, self.yaw, self.pitch, self.phase) = (Vec3::ZERO, 0.0, 0.0, 0.0),
+                "j" | "J" => self.cam_yaw -= ORBIT_STEP,
+                "l" | "L" => self.cam_yaw += ORBIT_STEP,
+                "i" | "I" => self.cam_pitch = (self.cam_pitch + ORBIT_STEP).clamp(-1.2, 1.2),
+                "k" | "K" => self.cam_pitch = (self.cam_pitch - ORBIT_STEP).clamp(-1.2, 1.2),
+                "o" | "O" => self.orbit = !self.orbit,
+                "r" | "R" => {
+                    (self.offset, self.yaw, self.pitch, self.phase) = (Vec3::ZERO, 0.0, 0.0, 0.0);
+                    (self.cam_yaw, self.cam_pitch, self.swing_phase) = (0.0, 0.0, 0.0);
+                }
                 _ => return false,
             },
             Key::Named(NamedKey::Space) => self.animate = !self.animate,
@@ -142,7 +209,7 @@ mod tests {
 
     fn controls() -> Controls {
         let scene = Scene::cornell_box();
-        Controls::new(VplSettings::default(), scene.primary, scene.diagonal(), 256)
+        Controls::new(VplSettings::default(), scene.primary, scene.camera, scene.diagonal(), 256)
     }
 
     /// Keys change what they say, and unknown keys nothing.
@@ -163,6 +230,9 @@ mod tests {
         assert_eq!(c.frame_settings(7).frame, 0, "frozen ξ");
         c.key(&Key::Character("v".into()));
         assert_eq!(c.rsm_edge, 512);
+        assert!(c.temporal, "accumulation starts on");
+        c.key(&Key::Character("t".into()));
+        assert!(!c.temporal);
         let before = c.clone();
         assert!(!c.key(&Key::Character("q".into())));
         assert_eq!(c, before);
@@ -188,5 +258,26 @@ mod tests {
         c.tick(5.0);
         c.key(&Key::Character("r".into()));
         assert_eq!(c.light(), Scene::cornell_box().primary, "reset");
+    }
+
+    /// The camera at rest is the scene's; orbited, tilted and swinging it
+    /// stays valid, keeps its distance to the target and moves; `r` resets it.
+    #[test]
+    fn the_camera_orbits_and_stays_valid() {
+        let mut c = controls();
+        let cam = Scene::cornell_box().camera;
+        assert!((c.camera().position - cam.position).length() < 1e-4);
+        for k in ["j", "j", "i", "o"] {
+            c.key(&Key::Character(k.into()));
+        }
+        for _ in 0..50 {
+            c.tick(0.05);
+            let m = c.camera();
+            m.validate().expect("a valid camera");
+            assert!(((m.position - m.target).length() - (cam.position - cam.target).length()).abs() < 1e-3);
+        }
+        assert!((c.camera().position - cam.position).length() > 1e-3, "the camera moved");
+        c.key(&Key::Character("r".into()));
+        assert!((c.camera().position - cam.position).length() < 1e-4, "reset");
     }
 }

@@ -58,7 +58,12 @@ pub struct ViewOptions {
     pub settings: VplSettings,
     /// Start with the light animated.
     pub animate: bool,
-    /// Stop after this many frames (the light then moves 1/60 s per frame).
+    /// Accumulate the indirect light over frames (the key `t` toggles it).
+    pub temporal: bool,
+    /// Start with the camera swinging about its target (key `o`).
+    pub orbit: bool,
+    /// Stop after this many frames (the light and camera then move 1/60 s
+    /// per frame).
     pub frames: Option<u32>,
     /// With `frames`: save the last frame here as a PNG (the frame read
     /// back, without the overlay).
@@ -78,6 +83,8 @@ impl ViewOptions {
             min_distance: None,
             settings: VplSettings::default(),
             animate: false,
+            temporal: true,
+            orbit: false,
             frames: None,
             screenshot: None,
         }
