@@ -52,7 +52,7 @@ impl Default for TemporalSettings {
 impl TemporalSettings {
     /// These settings for a frame whose lighting changed (a light moved or
     /// was added or removed): the history capped at
-    /// [`slc_core::temporal::TEMPORAL_CHANGED_HISTORY`] frames.
+    /// [`slc_core::temporal::TEMPORAL_CHANGED_HISTORY`] (1: dropped).
     pub fn after_change(self) -> TemporalSettings {
         TemporalSettings { max_history: self.max_history.min(slc_core::temporal::TEMPORAL_CHANGED_HISTORY) }
     }
