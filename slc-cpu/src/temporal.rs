@@ -48,6 +48,8 @@ pub struct Temporal {
     width: u32,
     height: u32,
     history: Vec<Texel>,
+    /// The buffer the next frame's history is written into.
+    spare: Vec<Texel>,
     previous: Option<TemporalView>,
 }
 
@@ -57,7 +59,8 @@ impl Temporal {
         if !(1..=16384).contains(&width) || !(1..=16384).contains(&height) {
             return Err(RenderError::Setting(format!("temporal history of {width}x{height}: each side must be in 1..=16384")));
         }
-        Ok(Temporal { width, height, history: vec![Texel::default(); (width * height) as usize], previous: None })
+        let n = (width * height) as usize;
+        Ok(Temporal { width, height, history: vec![Texel::default(); n], spare: vec![Texel::default(); n], previous: None })
     }
 
     /// Forgets the history (a cut: the next frame starts afresh).
@@ -87,23 +90,27 @@ impl Temporal {
         if signal.len() != n {
             return Err(RenderError::Setting(format!("{} signal values for {n} pixels", signal.len())));
         }
+        // The next history goes into the spare buffer (no allocation per
+        // frame), then the two swap.
+        let mut next = std::mem::take(&mut self.spare);
+        next.resize(n, Texel::default());
         let this = &*self;
-        let next: Vec<Texel> = (0..n)
-            .into_par_iter()
-            .map(|i| {
-                if !gb.valid(i) {
-                    return Texel { value: signal[i].extend(0.0), ..Texel::default() };
-                }
+        let mut out = vec![Vec3::ZERO; n];
+        next.par_iter_mut().zip(out.par_iter_mut()).enumerate().for_each(|(i, (t, o))| {
+            *t = if !gb.valid(i) {
+                Texel { value: signal[i].extend(0.0), ..Texel::default() }
+            } else {
                 let (p, nrm) = (gb.position[i], gb.normal[i]);
                 let h = this.previous.map_or(Texel::default(), |prev| this.reprojected(p, nrm, &prev));
                 let value = temporal_color(signal[i], h.value, h.moments.y, settings.max_history);
                 let moments = temporal_moments(signal[i], h.moments.x, h.moments.y, h.value.w, value.w);
                 Texel { value, moments, surface: nrm.extend(nrm.dot(p)) }
-            })
-            .collect();
-        self.history = next;
+            };
+            *o = t.value.truncate();
+        });
+        self.spare = std::mem::replace(&mut self.history, next);
         self.previous = Some(*view);
-        Ok(self.history.iter().map(|t| t.value.truncate()).collect())
+        Ok(out)
     }
 
     /// The history at surface point `p` with normal `n`, read bilinearly

@@ -67,6 +67,8 @@ pub use slc_core::light::{IesLight, Light, PointLight, SpotLight, TriangleLight}
 pub use slc_core::range::{IntensityMeasure, RangeParams};
 /// A light set with its bounding-sphere hierarchy (slc-scene's).
 pub use slc_scene::lights::LightSet;
+/// The temporal pass's camera and settings (slc-scene's).
+pub use slc_scene::temporal::{TemporalSettings, TemporalView};
 
 use thiserror::Error;
 
