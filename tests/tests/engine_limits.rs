@@ -14,7 +14,8 @@
 //!   stage), the indirect pass builds and records with its material input
 //!   (glossy: `vpl_near` then binds 8), as does the glossy `GpuVpl`, with
 //!   no validation error (`GpuVplFrame`, whose RSM needs 40 color bytes per
-//!   sample, is a typed error there).
+//!   sample, is a typed error there); so does the temporal pass (4 storage
+//!   textures).
 //!
 //! The counters hold what is alive now: they catch what accumulates, not
 //! an object made and dropped within one record (that none is made is by
@@ -28,7 +29,7 @@ use slc_tests::engine::{self, upload};
 use slc_tests::gpu;
 use slc_wgpu::passes::{
     Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, GBuffer, IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings,
-    Surface, SurfaceDesc, VplInput, VplSourceDesc,
+    Surface, SurfaceDesc, TemporalInputs, TemporalPass, TemporalPassDesc, VplInput, VplSourceDesc,
 };
 use slc_wgpu::{GpuContext, GpuError, LightSet, RangeParams};
 use std::sync::Arc;
@@ -52,19 +53,25 @@ fn moved_lights(n: usize, r: u32) -> Vec<Light> {
 /// A constructor under test.
 type Constructor<'a> = Box<dyn Fn() -> Result<(), GpuError> + 'a>;
 
-fn downlevel_constructors_are_typed_errors() {
+/// A device of the test adapter (the harness runs this file's tests only
+/// where there is one) with `limits`, and a count of the validation errors
+/// it raises.
+fn device_with(limits: wgpu::Limits) -> (wgpu::Device, wgpu::Queue, Arc<AtomicUsize>) {
     let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
     let adapter = pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None)).expect("an adapter");
-    let (device, queue) = pollster::block_on(
-        adapter.request_device(&wgpu::DeviceDescriptor { required_limits: wgpu::Limits::downlevel_defaults(), ..Default::default() }),
-    )
-    .expect("a downlevel device");
+    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor { required_limits: limits, ..Default::default() }))
+        .expect("a device with the asked limits");
     let errors = Arc::new(AtomicUsize::new(0));
     let seen = errors.clone();
     device.on_uncaptured_error(Arc::new(move |e: wgpu::Error| {
-        eprintln!("validation error: {e}");
+        eprintln!("validation error: {e:?}");
         seen.fetch_add(1, Ordering::SeqCst);
     }));
+    (device, queue, errors)
+}
+
+fn downlevel_constructors_are_typed_errors() {
+    let (device, queue, errors) = device_with(wgpu::Limits::downlevel_defaults());
     let gpu = GpuContext::from_device(device.clone(), queue);
     let set = point_lights(64);
     let scene = Scene::cornell_box();
@@ -244,20 +251,7 @@ fn gpu_vpl_shades_allocate_nothing(gpu: &GpuContext, scene: &Scene) {
 /// for more than the defaults' 32 color bytes per sample (its RSM's 40):
 /// a typed error.
 fn glossy_pass_fits_webgpu_default_limits() {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
-    let Some(adapter) = pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None)).ok() else {
-        eprintln!("SKIP: no adapter");
-        return;
-    };
-    let (device, queue) =
-        pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor { required_limits: wgpu::Limits::default(), ..Default::default() }))
-            .expect("a device with WebGPU's default limits");
-    let errors = Arc::new(AtomicUsize::new(0));
-    let seen = errors.clone();
-    device.on_uncaptured_error(Arc::new(move |e: wgpu::Error| {
-        eprintln!("validation error: {e:?}");
-        seen.fetch_add(1, Ordering::SeqCst);
-    }));
+    let (device, queue, errors) = device_with(wgpu::Limits::default());
     assert_eq!(device.limits().max_storage_buffers_per_shader_stage, 8);
     let gpu = GpuContext::from_device(device.clone(), queue);
     let scene = Scene::cornell_box_glossy();
@@ -273,6 +267,25 @@ fn glossy_pass_fits_webgpu_default_limits() {
         Err(e) => panic!("GpuVplFrame: {e}"),
         Ok(_) => panic!("GpuVplFrame built with 32 bytes per sample"),
     }
+    // The temporal pass binds 4 storage textures, the default limit: it
+    // builds and records on the glossy G-buffer's irradiance.
+    let gb = &ctx.inputs().gbuffer;
+    let texels = |v: &dyn Fn(usize) -> [f32; 4]| (0..gb.position.len()).map(v).collect::<Vec<_>>();
+    let position =
+        upload(&gpu, "position", (16, 16), &texels(&|i| [gb.position[i].x, gb.position[i].y, gb.position[i].z, gb.valid(i) as u32 as f32]));
+    let normal = upload(&gpu, "normal", (16, 16), &texels(&|i| gb.normal[i].extend(0.0).to_array()));
+    let signal = upload(&gpu, "signal", (16, 16), &texels(&|i| shaded.irradiance[i].extend(0.0).to_array()));
+    let out = engine::output(&gpu, (16, 16));
+    let out_view = out.create_view(&Default::default());
+    let desc = TemporalPassDesc { output_format: wgpu::TextureFormat::Rgba32Float, ..TemporalPassDesc::new(16, 16) };
+    let mut temporal = TemporalPass::new(&gpu, &desc).unwrap();
+    let gbuffer = GBuffer { surface: Surface::Position(&position), normal: &normal, eye: gb.eye };
+    let view = slc_wgpu::TemporalView::of_camera(&scene.camera, 16, 16);
+    let mut enc = device.create_command_encoder(&Default::default());
+    for _ in 0..2 {
+        temporal.record(&mut enc, &TemporalInputs { gbuffer, signal: &signal, output: &out_view }, &view, &Default::default()).unwrap();
+    }
+    gpu.queue.submit([enc.finish()]);
     device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
     gpu.take_errors().unwrap();
     assert_eq!(errors.load(Ordering::SeqCst), 0, "validation errors");

@@ -218,6 +218,17 @@ fn every_stage_is_timed() {
     assert!(!none.stages.iter().any(|s| s.name == "light update" || s.name == "denoise"));
 }
 
+/// A 64×48 frame of the Cornell box for the moving tests: its descriptor,
+/// scene, frame, SLC settings and first image.
+fn small_box(gpu: &slc_wgpu::GpuContext) -> (FrameDesc, Scene, GpuVplFrame, IndirectSettings, slc_scene::image::Image) {
+    let desc = FrameDesc { width: 64, height: 48, rsm_size: 16, shadow_size: 128, min_distance: None };
+    let scene = Scene::cornell_box();
+    let mut frame = GpuVplFrame::new(gpu, &scene, &desc).unwrap();
+    let s = on(&frame, &settings(VplMethod::Slc, true));
+    let before = frame.render(&s).unwrap().image;
+    (desc, scene, frame, s, before)
+}
+
 /// Moving the primary light with [`GpuVplFrame::set_primary`] renders the
 /// image of a frame built with the moved light (the same uniforms: equal
 /// bit for bit) and not the old one; an invalid light is refused and
@@ -226,11 +237,7 @@ fn every_stage_is_timed() {
 /// has usable timestamps, and says so otherwise.
 fn moved_light_renders_as_a_new_frame() {
     let Some(gpu) = gpu() else { return };
-    let desc = FrameDesc { width: 64, height: 48, rsm_size: 16, shadow_size: 128, min_distance: None };
-    let mut scene = Scene::cornell_box();
-    let mut frame = GpuVplFrame::new(gpu, &scene, &desc).unwrap();
-    let s = on(&frame, &settings(VplMethod::Slc, true));
-    let before = frame.render(&s).unwrap().image;
+    let (desc, mut scene, mut frame, s, before) = small_box(gpu);
     let PrimaryLight::Spot { position, direction, intensity, inner, outer } = scene.primary else { unreachable!("a spot") };
     scene.primary = PrimaryLight::Spot {
         position: position + Vec3::new(0.15, -0.05, 0.1),
@@ -265,11 +272,7 @@ fn moved_light_renders_as_a_new_frame() {
 /// camera is refused and changes nothing.
 fn moved_camera_renders_as_a_new_frame() {
     let Some(gpu) = gpu() else { return };
-    let desc = FrameDesc { width: 64, height: 48, rsm_size: 16, shadow_size: 128, min_distance: None };
-    let mut scene = Scene::cornell_box();
-    let mut frame = GpuVplFrame::new(gpu, &scene, &desc).unwrap();
-    let s = on(&frame, &settings(VplMethod::Slc, true));
-    let before = frame.render(&s).unwrap().image;
+    let (desc, mut scene, mut frame, s, before) = small_box(gpu);
     let step = Vec3::X * (0.08 * scene.diagonal());
     scene.camera = Camera { position: scene.camera.position + step, target: scene.camera.target + step * 0.5, ..scene.camera };
     frame.set_camera(&scene.camera).unwrap();
