@@ -4,7 +4,8 @@
 //!
 //! 1. **Reproject** the pixel's surface point into the previous frame
 //!    ([`reproject`]: the previous view-projection, the inverse of the
-//!    engine pass's `unproject_pixel`) and read the history there
+//!    engine pass's `unproject_pixel`; or the engine's motion vector,
+//!    [`reproject_motion`], which also follows moving objects) and read the history there
 //!    bilinearly ([`bilinear_weight`]), keeping only taps that saw the same
 //!    surface ([`history_matches`]: the point on the tap's tangent plane,
 //!    and the normals alike), renormalised; no matching tap is a
@@ -49,6 +50,11 @@ crate::shared! {
     /// from the eye off a history tap's tangent plane and still be the
     /// same surface.
     pub const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01;
+
+    /// With motion vectors (objects move, so a world plane does not
+    /// persist): a tap's distance from its frame's eye may differ from the
+    /// current point's distance from this frame's eye by this fraction.
+    pub const TEMPORAL_MOTION_DEPTH_TOLERANCE: f32 = 0.05;
 
     /// A history tap's normal must be within this cosine of the current one.
     pub const TEMPORAL_NORMAL_COS: f32 = 0.9;
@@ -98,6 +104,15 @@ crate::shared! {
         let x: f32 = (clip.x / clip.w + 1.0) * 0.5 * width - 0.5;
         let y: f32 = (1.0 - clip.y / clip.w) * 0.5 * height - 0.5;
         return vec3f(x, y, clip.w);
+    }
+
+    /// Where pixel `(px, py)` of a `width × height` image was in the
+    /// previous frame by the engine's motion vector `(mx, my)`, the
+    /// current minus the previous position in UV units (x right, y down,
+    /// `[0, 1]` across the image: Bevy's and most engines' convention):
+    /// `(px − mx·width, py − my·height)`, and z = 1 (always in front).
+    pub fn reproject_motion(px: f32, py: f32, mx: f32, my: f32, width: f32, height: f32) -> vec3f {
+        return vec3f(px - mx * width, py - my * height, 1.0);
     }
 
     /// Bilinear weight of tap `(x0 + dx, y0 + dy)`, `dx, dy ∈ {0, 1}`, for a
@@ -165,6 +180,18 @@ crate::shared! {
         return bilinear_weight(fx, fy, dx, dy);
     }
 
+    /// [`history_tap_weight`] for reprojection by motion vectors: the tap
+    /// matches where its distance `dh` from its frame's eye is within
+    /// [`TEMPORAL_MOTION_DEPTH_TOLERANCE`] of the current point's distance
+    /// `d` from this frame's eye and the normals are within
+    /// [`TEMPORAL_NORMAL_COS`].
+    pub fn history_tap_weight_motion(fx: f32, fy: f32, dx: u32, dy: u32, n: vec3f, nh: vec3f, d: f32, dh: f32, len: f32) -> f32 {
+        if len <= 0.0 || abs(dh - d) > TEMPORAL_MOTION_DEPTH_TOLERANCE * d || dot(n, nh) < TEMPORAL_NORMAL_COS {
+            return 0.0;
+        }
+        return bilinear_weight(fx, fy, dx, dy);
+    }
+
     /// This frame's accumulated value (xyz) and history length (w) from the
     /// current value `c`, the reprojected history `h` (value in xyz, length
     /// in w; length 0: none) with noise variance `noise`, and the cap
@@ -180,19 +207,21 @@ crate::shared! {
     }
 
     /// The noise statistics after this frame (x: this frame's luminance,
-    /// y: the noise variance; z, w zero) from the current value `c`, the
+    /// y: the noise variance, z: `depth`, the point's distance from this
+    /// frame's eye, for reprojection by motion vectors; w zero) from the
+    /// current value `c`, the
     /// history's last luminance `last` and variance `var` over `prev_len`
     /// frames (0: no history, the variance starts at 0), and the new
     /// history length `len` ([`temporal_color`]'s w): the variance's moving
     /// average takes `(l − last)²/2` with weight `1/(len − 1)` (one
     /// difference fewer than frames).
-    pub fn temporal_moments(c: vec3f, last: f32, noise: f32, prev_len: f32, len: f32) -> vec4f {
+    pub fn temporal_moments(c: vec3f, last: f32, noise: f32, prev_len: f32, len: f32, depth: f32) -> vec4f {
         let l: f32 = luminance(c);
         if prev_len <= 0.0 {
-            return vec4f(l, 0.0, 0.0, 0.0);
+            return vec4f(l, 0.0, depth, 0.0);
         }
         let d: f32 = l - last;
-        return vec4f(l, noise + (0.5 * d * d - noise) * temporal_alpha(len - 1.0), 0.0, 0.0);
+        return vec4f(l, noise + (0.5 * d * d - noise) * temporal_alpha(len - 1.0), depth, 0.0);
     }
 }
 
@@ -219,6 +248,14 @@ mod tests {
         assert!(reproject(vp.x_axis, vp.y_axis, vp.z_axis, vp.w_axis, behind, w, h).z <= 0.0);
         let z = Mat4::ZERO;
         assert_eq!(reproject(z.x_axis, z.y_axis, z.z_axis, z.w_axis, p, w, h).z, 0.0);
+    }
+
+    #[test]
+    fn motion_vectors_point_back() {
+        // Half a pixel right and a pixel down since last frame, in UV.
+        let q = reproject_motion(10.0, 20.0, 0.5 / 64.0, 1.0 / 48.0, 64.0, 48.0);
+        assert_eq!((q.x, q.y), (9.5, 19.0));
+        assert!(q.z > 0.0);
     }
 
     #[test]
@@ -267,12 +304,12 @@ mod tests {
             // Uniform noise of variance 1/12 on a drift of 1e-3 per frame.
             let x = crate::xi::xi_from_bits(state) + 1e-3 * k as f32;
             let len = (h.2 + 1.0).min(32.0);
-            let m = temporal_moments(Vec3::splat(x), h.0, h.1, h.2, len);
+            let m = temporal_moments(Vec3::splat(x), h.0, h.1, h.2, len, 1.0);
             h = (m.x, m.y, len);
         }
         // 32-frame moving average: relative spread about 1/√16.
         assert!((h.1 * 12.0 - 1.0).abs() < 0.6, "{}", h.1 * 12.0);
-        assert_eq!(temporal_moments(Vec3::ONE, 0.0, 0.0, 0.0, 1.0), glam::Vec4::new(1.0, 0.0, 0.0, 0.0));
+        assert_eq!(temporal_moments(Vec3::ONE, 0.0, 0.0, 0.0, 1.0, 2.0), glam::Vec4::new(1.0, 0.0, 2.0, 0.0));
     }
 
     #[test]
@@ -300,7 +337,7 @@ mod tests {
         let first = temporal_color(c, Vec4::ZERO, 0.0, 32.0);
         assert_eq!(first, c.extend(1.0));
         let l = luminance(c);
-        assert_eq!(temporal_moments(c, 0.0, 0.0, 0.0, 1.0), Vec4::new(l, 0.0, 0.0, 0.0));
+        assert_eq!(temporal_moments(c, 0.0, 0.0, 0.0, 1.0, 3.0), Vec4::new(l, 0.0, 3.0, 0.0));
         // Three frames of history: the mean of four.
         let h = Vec3::splat(1.0).extend(3.0);
         let v = temporal_color(Vec3::splat(5.0), h, 1.0, 32.0);
@@ -310,5 +347,8 @@ mod tests {
         assert_eq!(history_tap_weight(0.5, 0.5, 0, 0, n, n, p, 1.0, 1.0, 0.0), 0.0);
         assert_eq!(history_tap_weight(0.5, 0.5, 0, 0, n, -n, p, 1.0, 1.0, 3.0), 0.0);
         assert_eq!(history_tap_weight(0.5, 0.5, 0, 0, n, n, p, 1.0, 1.0, 3.0), 0.25);
+        // By motion vectors: distances from each frame's eye within 5%.
+        assert_eq!(history_tap_weight_motion(0.5, 0.5, 1, 1, n, n, 2.0, 2.08, 3.0), 0.25);
+        assert_eq!(history_tap_weight_motion(0.5, 0.5, 1, 1, n, n, 2.0, 2.2, 3.0), 0.0);
     }
 }

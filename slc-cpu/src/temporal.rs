@@ -22,9 +22,11 @@
 //! assert!(history.irradiance.history_lengths().iter().all(|&n| n == 0.0 || n == 4.0));
 //! ```
 
-use glam::{Vec3, Vec4};
+use glam::{Vec2, Vec3, Vec4};
 use rayon::prelude::*;
-use slc_core::temporal::{TEMPORAL_MIN_WEIGHT, history_tap_weight, reproject, temporal_color, temporal_moments};
+use slc_core::temporal::{
+    TEMPORAL_MIN_WEIGHT, history_tap_weight, history_tap_weight_motion, reproject, reproject_motion, temporal_color, temporal_moments,
+};
 use slc_scene::RenderError;
 use slc_scene::temporal::{TemporalSettings, TemporalView};
 use slc_scene::vpl::GBuffer;
@@ -37,7 +39,8 @@ use slc_scene::vpl::GBuffer;
 struct Texel {
     /// Value (xyz) and length (w).
     value: Vec4,
-    /// The last frame's luminance (x) and the noise variance (y).
+    /// The last frame's luminance (x), the noise variance (y) and the
+    /// distance from the eye (z).
     moments: Vec4,
     /// Unit normal `n` (xyz) and tangent-plane offset `n·p` (w).
     surface: Vec4,
@@ -81,6 +84,33 @@ impl Temporal {
     /// surface or the history nothing to reuse). The history becomes this
     /// frame's.
     pub fn accumulate(&mut self, signal: &[Vec3], gb: &GBuffer, view: &TemporalView, settings: &TemporalSettings) -> Result<Vec<Vec3>, RenderError> {
+        self.accumulate_with(signal, gb, view, None, settings)
+    }
+
+    /// [`Temporal::accumulate`] reprojecting by the engine's motion vectors
+    /// (`motion`, one per pixel: current minus previous UV, x right, y
+    /// down) instead of the previous view-projection, so moving objects
+    /// keep their history; a tap then matches by its distance from its
+    /// eye and its normal ([`slc_core::temporal::history_tap_weight_motion`]).
+    pub fn accumulate_with_motion(
+        &mut self,
+        signal: &[Vec3],
+        gb: &GBuffer,
+        view: &TemporalView,
+        motion: &[Vec2],
+        settings: &TemporalSettings,
+    ) -> Result<Vec<Vec3>, RenderError> {
+        self.accumulate_with(signal, gb, view, Some(motion), settings)
+    }
+
+    fn accumulate_with(
+        &mut self,
+        signal: &[Vec3],
+        gb: &GBuffer,
+        view: &TemporalView,
+        motion: Option<&[Vec2]>,
+        settings: &TemporalSettings,
+    ) -> Result<Vec<Vec3>, RenderError> {
         settings.validate()?;
         view.validate()?;
         let n = (self.width * self.height) as usize;
@@ -89,6 +119,11 @@ impl Temporal {
         }
         if signal.len() != n {
             return Err(RenderError::Setting(format!("{} signal values for {n} pixels", signal.len())));
+        }
+        if let Some(m) = motion
+            && (m.len() != n || !m.iter().all(|v| v.is_finite()))
+        {
+            return Err(RenderError::Setting(format!("{} motion vectors for {n} pixels (each finite)", m.len())));
         }
         // The next history goes into the spare buffer (no allocation per
         // frame), then the two swap.
@@ -101,9 +136,13 @@ impl Temporal {
                 Texel { value: signal[i].extend(0.0), ..Texel::default() }
             } else {
                 let (p, nrm) = (gb.position[i], gb.normal[i]);
-                let h = this.previous.map_or(Texel::default(), |prev| this.reprojected(p, nrm, &prev));
+                let h = match (this.previous, motion) {
+                    (None, _) => Texel::default(),
+                    (Some(prev), None) => this.reprojected(p, nrm, &prev),
+                    (Some(_), Some(m)) => this.moved(i, p, nrm, m[i], view.eye),
+                };
                 let value = temporal_color(signal[i], h.value, h.moments.y, settings.max_history);
-                let moments = temporal_moments(signal[i], h.moments.x, h.moments.y, h.value.w, value.w);
+                let moments = temporal_moments(signal[i], h.moments.x, h.moments.y, h.value.w, value.w, (p - view.eye).length());
                 Texel { value, moments, surface: nrm.extend(nrm.dot(p)) }
             };
             *o = t.value.truncate();
@@ -119,28 +158,44 @@ impl Temporal {
     fn reprojected(&self, p: Vec3, n: Vec3, previous: &TemporalView) -> Texel {
         let m = previous.view_projection;
         let q = reproject(m.x_axis, m.y_axis, m.z_axis, m.w_axis, p, self.width as f32, self.height as f32);
+        let d = (p - previous.eye).length();
+        self.gathered(q, |fx, fy, dx, dy, t| history_tap_weight(fx, fy, dx, dy, n, t.surface.truncate(), p, t.surface.w, d, t.value.w))
+    }
+
+    /// The history of pixel `i` (point `p`, normal `n`, seen from `eye`)
+    /// where its motion vector `m` says it was.
+    fn moved(&self, i: usize, p: Vec3, n: Vec3, m: Vec2, eye: Vec3) -> Texel {
+        let (w, h) = (self.width as f32, self.height as f32);
+        let q = reproject_motion((i % self.width as usize) as f32, (i / self.width as usize) as f32, m.x, m.y, w, h);
+        let d = (p - eye).length();
+        self.gathered(q, |fx, fy, dx, dy, t| history_tap_weight_motion(fx, fy, dx, dy, n, t.surface.truncate(), d, t.moments.z, t.value.w))
+    }
+
+    /// The history at previous-frame pixel coordinates `q` (z ≤ 0: none),
+    /// its four taps weighted by `weight(fx, fy, dx, dy, tap)` and
+    /// renormalised; length 0 where they weigh too little.
+    fn gathered(&self, q: Vec3, weight: impl Fn(f32, f32, u32, u32, &Texel) -> f32) -> Texel {
         if q.z <= 0.0 {
             return Texel::default();
         }
         let (x0, y0) = (q.x.floor(), q.y.floor());
         let (fx, fy) = (q.x - x0, q.y - y0);
-        let d = (p - previous.eye).length();
-        let (mut value, mut moments, mut weight) = (Vec4::ZERO, Vec4::ZERO, 0.0);
+        let (mut value, mut moments, mut weight_sum) = (Vec4::ZERO, Vec4::ZERO, 0.0);
         for (dx, dy) in [(0u32, 0u32), (1, 0), (0, 1), (1, 1)] {
             let (tx, ty) = (x0 + dx as f32, y0 + dy as f32);
             if tx < 0.0 || ty < 0.0 || tx >= self.width as f32 || ty >= self.height as f32 {
                 continue;
             }
             let t = &self.history[ty as usize * self.width as usize + tx as usize];
-            let w = history_tap_weight(fx, fy, dx, dy, n, t.surface.truncate(), p, t.surface.w, d, t.value.w);
+            let w = weight(fx, fy, dx, dy, t);
             value += t.value * w;
             moments += t.moments * w;
-            weight += w;
+            weight_sum += w;
         }
-        if weight < TEMPORAL_MIN_WEIGHT {
+        if weight_sum < TEMPORAL_MIN_WEIGHT {
             return Texel::default();
         }
-        Texel { value: value / weight, moments: moments / weight, surface: Vec4::ZERO }
+        Texel { value: value / weight_sum, moments: moments / weight_sum, surface: Vec4::ZERO }
     }
 }
 
@@ -265,6 +320,48 @@ mod tests {
         assert!(t.history_lengths().iter().all(|&n| n <= 1.0), "a reported change drops the history");
         t.reset();
         assert!(t.history_lengths().iter().all(|&n| n == 0.0));
+    }
+
+    /// Motion vectors that describe the camera's move reproject as the
+    /// matrices do: the same accumulation wherever the two surface tests
+    /// (tangent plane; distance from the eye) agree, all but a few edge
+    /// pixels. Wrong-sized or non-finite motion is refused.
+    #[test]
+    fn motion_vectors_follow_the_camera_like_the_matrices() {
+        let mut ctx = context();
+        let base = ctx.scene().camera;
+        let ts = TemporalSettings::default();
+        let (mut by_matrix, mut by_motion) = (Temporal::new(64, 64).unwrap(), Temporal::new(64, 64).unwrap());
+        let gb = ctx.inputs().gbuffer.clone();
+        let view = TemporalView::of_camera(&base, 64, 64);
+        let still = vec![Vec2::ZERO; 64 * 64];
+        for f in 0..6 {
+            by_matrix.accumulate(&noise(64 * 64, f), &gb, &view, &ts).unwrap();
+            by_motion.accumulate_with_motion(&noise(64 * 64, f), &gb, &view, &still, &ts).unwrap();
+        }
+        let step = Vec3::X * (0.03 * ctx.scene().diagonal());
+        let moved = slc_scene::scene::Camera { position: base.position + step, target: base.target + step, ..base };
+        ctx.set_camera(moved).unwrap();
+        let gb = ctx.inputs().gbuffer.clone();
+        let m = view.view_projection;
+        let motion: Vec<Vec2> = (0..64 * 64)
+            .map(|i| {
+                let q = reproject(m.x_axis, m.y_axis, m.z_axis, m.w_axis, gb.position[i], 64.0, 64.0);
+                if gb.valid(i) { Vec2::new(((i % 64) as f32 - q.x) / 64.0, ((i / 64) as f32 - q.y) / 64.0) } else { Vec2::ZERO }
+            })
+            .collect();
+        let view = TemporalView::of_camera(&moved, 64, 64);
+        let a = by_matrix.accumulate(&noise(64 * 64, 9), &gb, &view, &ts).unwrap();
+        let b = by_motion.accumulate_with_motion(&noise(64 * 64, 9), &gb, &view, &motion, &ts).unwrap();
+        let lit: Vec<usize> = (0..a.len()).filter(|&i| gb.valid(i)).collect();
+        let same = lit.iter().filter(|&&i| (a[i] - b[i]).abs().max_element() <= 1e-4 * a[i].max_element()).count();
+        assert!(same * 50 >= lit.len() * 49, "{same} of {} pixels agree", lit.len());
+        let kept = by_motion.history_lengths().iter().filter(|&&n| n > 1.0).count();
+        assert!(kept * 10 > lit.len() * 8, "motion vectors keep the history ({kept} of {})", lit.len());
+        assert!(by_motion.accumulate_with_motion(&noise(64 * 64, 10), &gb, &view, &motion[1..], &ts).is_err());
+        let mut bad = motion.clone();
+        bad[7] = Vec2::NAN;
+        assert!(by_motion.accumulate_with_motion(&noise(64 * 64, 10), &gb, &view, &bad, &ts).is_err());
     }
 
     #[test]

@@ -362,13 +362,16 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
                 uniform(3, "params", "TemporalParams", false, "the previous view-projection and eye, the history cap"),
                 texture(4, "signal_tex", "this frame's signal (rgb)", "engine (e.g. `irradiance_export`)"),
                 history(5, "hist_value", "accumulated value (rgb), history length (a)"),
-                history(6, "hist_noise", "last luminance (r), noise variance (g)"),
+                history(6, "hist_noise", "last luminance (r), noise variance (g), distance from the eye (b)"),
                 history(7, "hist_surface", "normal (rgb), tangent-plane offset `n·p` (a)"),
                 out(8, "accumulated value (rgb), history length in frames (a)"),
                 next(9, "next_value", "accumulated value (rgb), history length (a)"),
-                next(10, "next_noise", "last luminance (r), noise variance (g)"),
+                next(10, "next_noise", "last luminance (r), noise variance (g), distance from the eye (b)"),
                 next(11, "next_surface", "normal (rgb), tangent-plane offset (a)"),
             ]);
+            if f.motion_vectors {
+                v.push(texture(12, "motion_tex", "motion vectors: current minus previous UV (xy)", "engine (prepass)"));
+            }
             v
         }
     };

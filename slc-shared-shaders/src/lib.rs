@@ -416,6 +416,10 @@ pub struct Features {
     /// (`glossy_radiance`). `vpl_denoise` is the same kernel for `S`.
     /// `false`: Lambertian kernels (`ρ/π·E`), unchanged.
     pub glossy: bool,
+    /// `temporal` reprojects by the engine's motion vectors (`motion_tex`,
+    /// current minus previous UV in xy) instead of the previous
+    /// view-projection.
+    pub motion_vectors: bool,
 }
 
 impl Default for Features {
@@ -436,6 +440,7 @@ impl Default for Features {
             surface: SurfaceSource::Position,
             direct_output: DirectOutput::Irradiance,
             glossy: false,
+            motion_vectors: false,
         }
     }
 }
@@ -611,6 +616,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         out_format => features.output_format.wgsl(),
         shadows => features.shadows,
         glossy => features.glossy,
+        motion => features.motion_vectors,
         pbr => match features.direct_output { DirectOutput::Irradiance => "none", DirectOutput::Radiance => "radiance", DirectOutput::Split => "split" },
         surface => match features.surface { SurfaceSource::Position => "position", SurfaceSource::Depth => "depth", SurfaceSource::R32Depth => "r32" },
         bindings => bindings::declarations(&bindings::bindings(kernel, features)),

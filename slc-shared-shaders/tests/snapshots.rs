@@ -74,6 +74,11 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
         ),
         ("light_ranges", Kernel::LightRanges, Features::default()),
         ("temporal-position", Kernel::Temporal, Features { lights: vpl, output_format: OutputFormat::Rgba32Float, ..Features::default() }),
+        (
+            "temporal-motion",
+            Kernel::Temporal,
+            Features { lights: vpl, output_format: OutputFormat::Rgba32Float, motion_vectors: true, ..Features::default() },
+        ),
         ("temporal-r32depth-rgba16float", Kernel::Temporal, Features { lights: vpl, surface: SurfaceSource::R32Depth, ..Features::default() }),
         (
             "direct_light-point-spot-weighted-r32depth",

@@ -781,10 +781,10 @@ impl GpuVplFrame {
             let view = TemporalView::of_camera(&self.camera, self.desc.width, self.desc.height);
             let ts = if self.lighting_changed.take() { t.settings.after_change() } else { t.settings };
             let (pass, out) = &mut t.irradiance;
-            let signal = TemporalInputs { gbuffer: inputs.gbuffer, signal: &self.irradiance.view, output: &out.view };
+            let signal = TemporalInputs::new(inputs.gbuffer, &self.irradiance.view, &out.view);
             steps.push(Step::Compute(pass.dispatch(&signal, &view, &ts)?));
             if let (Some((pass, out)), Some(sp)) = (&mut t.specular, &self.specular) {
-                let signal = TemporalInputs { gbuffer: inputs.gbuffer, signal: &sp.view, output: &out.view };
+                let signal = TemporalInputs::new(inputs.gbuffer, &sp.view, &out.view);
                 steps.push(Step::Compute(pass.dispatch(&signal, &view, &ts)?));
             }
             compose = t.compose_group.clone();

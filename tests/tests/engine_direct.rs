@@ -350,9 +350,7 @@ fn engine_program_matches_brute_force() {
     for f in 0..32 {
         let mut enc = device.create_command_encoder(&Default::default());
         weighted.record(&mut enc, &inputs, &DirectSettings { culling, seed: 11, frame: f }).unwrap();
-        temporal
-            .record(&mut enc, &TemporalInputs { gbuffer: inputs.gbuffer, signal: &ov, output: &av }, &view, &TemporalSettings::default())
-            .unwrap();
+        temporal.record(&mut enc, &TemporalInputs::new(inputs.gbuffer, &ov, &av), &view, &TemporalSettings::default()).unwrap();
         queue.submit([enc.finish()]);
     }
     let accumulated = read::<[f32; 4]>(&device, &queue, &acc, 16, wgpu::TextureAspect::All);

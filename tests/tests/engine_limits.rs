@@ -283,7 +283,7 @@ fn glossy_pass_fits_webgpu_default_limits() {
     let view = slc_wgpu::TemporalView::of_camera(&scene.camera, 16, 16);
     let mut enc = device.create_command_encoder(&Default::default());
     for _ in 0..2 {
-        temporal.record(&mut enc, &TemporalInputs { gbuffer, signal: &signal, output: &out_view }, &view, &Default::default()).unwrap();
+        temporal.record(&mut enc, &TemporalInputs::new(gbuffer, &signal, &out_view), &view, &Default::default()).unwrap();
     }
     gpu.queue.submit([enc.finish()]);
     device.poll(wgpu::PollType::wait_indefinitely()).unwrap();

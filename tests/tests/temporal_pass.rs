@@ -80,7 +80,7 @@ fn gpu_matches_cpu() {
         let sig = upload(gpu, "signal", (W, H), &s.iter().map(|&c| v4(c, 0.0)).collect::<Vec<_>>());
         let gbuffer = GBuffer { surface: Surface::Position(&position), normal: &normal, eye: camera.position };
         let mut enc = gpu.device.create_command_encoder(&Default::default());
-        pass.record(&mut enc, &TemporalInputs { gbuffer, signal: &sig, output: &out_view }, &view, &settings).unwrap();
+        pass.record(&mut enc, &TemporalInputs::new(gbuffer, &sig, &out_view), &view, &settings).unwrap();
         let got = submit_and_read(gpu, enc, &out);
         let (mut off, mut lit) = (0, 0);
         for i in 0..got.len() {
@@ -112,6 +112,60 @@ fn gpu_matches_cpu() {
     gpu.take_errors().unwrap();
 }
 
+/// A pass built for motion vectors against the CPU's
+/// `accumulate_with_motion` over a camera move, the motion vectors those
+/// of the move (a static scene): the same numbers, as above.
+fn motion_vectors_match_the_cpu() {
+    let Some(gpu) = gpu() else { return };
+    let mut ctx = VplContext::new(&Scene::cornell_box(), W, H, 8, None).unwrap();
+    let base = ctx.scene().camera;
+    let step = Vec3::X * (0.03 * ctx.scene().diagonal());
+    let moved = Camera { position: base.position + step, target: base.target + step, ..base };
+    let mut pass = TemporalPass::new(gpu, &TemporalPassDesc { motion_vectors: true, ..desc() }).unwrap();
+    let mut cpu = Temporal::new(W, H).unwrap();
+    let out = output(gpu, (W, H));
+    let out_view = out.create_view(&Default::default());
+    let ts = TemporalSettings::default();
+    for f in 0..8u32 {
+        let (camera, previous) = if f < 6 { (base, base) } else { (moved, if f == 6 { base } else { moved }) };
+        if ctx.scene().camera != camera {
+            ctx.set_camera(camera).unwrap();
+        }
+        let gb = ctx.inputs().gbuffer.clone();
+        let m = TemporalView::of_camera(&previous, W, H).view_projection;
+        let motion: Vec<glam::Vec2> = (0..(W * H) as usize)
+            .map(|i| {
+                let q = slc_core::temporal::reproject(m.x_axis, m.y_axis, m.z_axis, m.w_axis, gb.position[i], W as f32, H as f32);
+                let here = glam::Vec2::new((i as u32 % W) as f32, (i as u32 / W) as f32);
+                if gb.valid(i) { (here - glam::Vec2::new(q.x, q.y)) / glam::Vec2::new(W as f32, H as f32) } else { glam::Vec2::ZERO }
+            })
+            .collect();
+        let view = TemporalView::of_camera(&camera, W, H);
+        let s = signal(f, 1.0);
+        let want = cpu.accumulate_with_motion(&s, &gb, &view, &motion, &ts).unwrap();
+        let want_len = cpu.history_lengths();
+        let (position, normal) = textures(gpu, &gb);
+        let sig = upload(gpu, "signal", (W, H), &s.iter().map(|&c| v4(c, 0.0)).collect::<Vec<_>>());
+        let mv = upload(gpu, "motion", (W, H), &motion.iter().map(|m| [m.x, m.y, 0.0, 0.0]).collect::<Vec<_>>());
+        let gbuffer = GBuffer { surface: Surface::Position(&position), normal: &normal, eye: camera.position };
+        let mut enc = gpu.device.create_command_encoder(&Default::default());
+        pass.record(&mut enc, &TemporalInputs { motion: Some(&mv), ..TemporalInputs::new(gbuffer, &sig, &out_view) }, &view, &ts).unwrap();
+        let got = submit_and_read(gpu, enc, &out);
+        let (mut off, mut lit, mut kept) = (0, 0, 0);
+        for i in (0..got.len()).filter(|&i| gb.valid(i)) {
+            lit += 1;
+            kept += (got[i][3] > 1.0) as usize;
+            let value_ok = (0..3).all(|c| (got[i][c] - want[i][c]).abs() <= 1e-4 * want[i][c].abs() + 1e-6);
+            off += (!value_ok || (got[i][3] - want_len[i]).abs() > 1e-3) as usize;
+        }
+        assert!(off * 200 <= lit, "frame {f}: {off} of {lit} pixels differ from the CPU's");
+        if f == 6 {
+            assert!(kept * 10 > lit * 8, "the move keeps most history by the motion vectors ({kept} of {lit})");
+        }
+    }
+    gpu.take_errors().unwrap();
+}
+
 fn wrong_inputs_are_typed_errors() {
     let Some(gpu) = gpu() else { return };
     let ctx = VplContext::new(&Scene::cornell_box(), W, H, 8, None).unwrap();
@@ -125,7 +179,7 @@ fn wrong_inputs_are_typed_errors() {
     let view = TemporalView::of_camera(&ctx.scene().camera, W, H);
     let mut pass = TemporalPass::new(gpu, &desc()).unwrap();
     let mut enc = gpu.device.create_command_encoder(&Default::default());
-    let ok = TemporalInputs { gbuffer, signal: &sig, output: &out_view };
+    let ok = TemporalInputs::new(gbuffer, &sig, &out_view);
     let ts = TemporalSettings::default();
     assert!(matches!(pass.record(&mut enc, &TemporalInputs { signal: &small, ..ok }, &view, &ts), Err(GpuError::Binding { .. })));
     assert!(matches!(pass.record(&mut enc, &TemporalInputs { output: &sig, ..ok }, &view, &ts), Err(GpuError::Binding { .. })));
@@ -136,9 +190,13 @@ fn wrong_inputs_are_typed_errors() {
     let mut depth_pass = TemporalPass::new(gpu, &depth).unwrap();
     assert!(matches!(depth_pass.record(&mut enc, &ok, &view, &ts), Err(GpuError::Binding { .. })), "positions for a depth pass");
     assert!(matches!(TemporalPass::new(gpu, &TemporalPassDesc::new(0, 4)), Err(GpuError::Setting(_))));
+    // Motion vectors given to a pass built without them, and missing for one built with them.
+    assert!(matches!(pass.record(&mut enc, &TemporalInputs { motion: Some(&sig), ..ok }, &view, &ts), Err(GpuError::Binding { .. })));
+    let mut moving = TemporalPass::new(gpu, &TemporalPassDesc { motion_vectors: true, ..desc() }).unwrap();
+    assert!(matches!(moving.record(&mut enc, &ok, &view, &ts), Err(GpuError::Binding { .. })));
     pass.record(&mut enc, &ok, &view, &ts).unwrap();
     gpu.queue.submit([enc.finish()]);
     gpu.take_errors().unwrap();
 }
 
-slc_tests::harness!(Gpu: gpu_matches_cpu, Gpu: wrong_inputs_are_typed_errors,);
+slc_tests::harness!(Gpu: gpu_matches_cpu, Gpu: motion_vectors_match_the_cpu, Gpu: wrong_inputs_are_typed_errors,);

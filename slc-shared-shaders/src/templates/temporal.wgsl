@@ -1,7 +1,7 @@
 {% include "header.wgsl" %}
 // Temporal accumulation of a per-pixel signal (slc-core's temporal module,
 // as slc-cpu's Temporal runs it): the history reprojected with the previous
-// view-projection, its four bilinear taps kept where they saw this surface,
+// view-projection{% if motion %} (here: the engine's motion vectors){% endif %}, its four bilinear taps kept where they saw this surface,
 // the change test and the moving average; the result into out_tex
 // ({{ out_format }}) and the next frame's history.
 
@@ -27,11 +27,20 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let n = g.normal.xyz;
     var hv = vec4f(0.0);
     var hn = vec4f(0.0);
+{% if motion %}
+    let motion = textureLoad(motion_tex, texel, 0).xy;
+    let q = reproject_motion(f32(gid.x), f32(gid.y), motion.x, motion.y, f32(view.width), f32(view.height));
+{% else %}
     let q = reproject(params.c0, params.c1, params.c2, params.c3, p, f32(view.width), f32(view.height));
+{% endif %}
     if params.has_history == 1u && q.z > 0.0 {
         let x0 = floor(q.x);
         let y0 = floor(q.y);
+{% if motion %}
+        let d = length(p - view.eye);
+{% else %}
         let d = length(p - params.prev_eye);
+{% endif %}
         var v = vec4f(0.0);
         var m = vec4f(0.0);
         var weight = 0.0;
@@ -44,9 +53,14 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
                 let t = vec2i(i32(tx), i32(ty));
                 let tv = textureLoad(hist_value, t, 0);
                 let ts = textureLoad(hist_surface, t, 0);
+                let tn = textureLoad(hist_noise, t, 0);
+{% if motion %}
+                let w = history_tap_weight_motion(q.x - x0, q.y - y0, dx, dy, n, ts.xyz, d, tn.z, tv.w);
+{% else %}
                 let w = history_tap_weight(q.x - x0, q.y - y0, dx, dy, n, ts.xyz, p, ts.w, d, tv.w);
+{% endif %}
                 v += tv * w;
-                m += textureLoad(hist_noise, t, 0) * w;
+                m += tn * w;
                 weight += w;
             }
         }
@@ -58,6 +72,6 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let value = temporal_color(c, hv, hn.y, params.max_history);
     textureStore(out_tex, texel, value);
     textureStore(next_value, texel, value);
-    textureStore(next_noise, texel, temporal_moments(c, hn.x, hn.y, hv.w, value.w));
+    textureStore(next_noise, texel, temporal_moments(c, hn.x, hn.y, hv.w, value.w, length(p - view.eye)));
     textureStore(next_surface, texel, vec4f(n, dot(n, p)));
 }

@@ -41,6 +41,7 @@ const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const TEMPORAL_MAX_HISTORY: f32 = 32f;
 const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
+const TEMPORAL_MOTION_DEPTH_TOLERANCE: f32 = 0.05f;
 const TEMPORAL_NORMAL_COS: f32 = 0.9f;
 const TEMPORAL_MIN_MOMENTS: f32 = 8f;
 const TEMPORAL_CHANGED_HISTORY: f32 = 1f;
@@ -229,17 +230,17 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
     var local: bool;
 
     let v_14 = (c2_1 - c1_1);
-    let d_8 = sqrt(dot(v_14, v_14));
+    let d_9 = sqrt(dot(v_14, v_14));
     let _e8 = sphere_pad(r1_1, c1_1);
-    if (r1_1 >= ((d_8 + r2_3) + _e8)) {
+    if (r1_1 >= ((d_9 + r2_3) + _e8)) {
         return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     let _e16 = sphere_pad(r2_3, c2_1);
-    if (r2_3 >= ((d_8 + r1_1) + _e16)) {
+    if (r2_3 >= ((d_9 + r1_1) + _e16)) {
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if !((d_8 >= SPHERE_HUGE)) {
-        local = ((0.5f * ((d_8 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if !((d_9 >= SPHERE_HUGE)) {
+        local = ((0.5f * ((d_9 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local = true;
     }
@@ -247,18 +248,18 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
     if _e35 {
         return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if (abs((r1_1 - r2_3)) >= d_8) {
+    if (abs((r1_1 - r2_3)) >= d_9) {
         if (r1_1 >= r2_3) {
-            let rn = max(r1_1, (d_8 + r2_3));
+            let rn = max(r1_1, (d_9 + r2_3));
             let _e50 = sphere_pad(rn, c1_1);
             return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        let rm = max(r2_3, (d_8 + r1_1));
+        let rm = max(r2_3, (d_9 + r1_1));
         let _e58 = sphere_pad(rm, c2_1);
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    let r0_ = (0.5f * ((d_8 + r1_1) + r2_3));
-    let c_13 = (c1_1 + (v_14 * ((r0_ - r1_1) / d_8)));
+    let r0_ = (0.5f * ((d_9 + r1_1) + r2_3));
+    let c_13 = (c1_1 + (v_14 * ((r0_ - r1_1) / d_9)));
     let e1_ = (c_13 - c1_1);
     let e2_ = (c_13 - c2_1);
     let r_7 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
@@ -1153,8 +1154,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> {
     var local_14: bool;
 
-    let n_34 = cross((b_4 - a_5), (c_7 - a_5));
-    let l2_ = dot(n_34, n_34);
+    let n_35 = cross((b_4 - a_5), (c_7 - a_5));
+    let l2_ = dot(n_35, n_35);
     if !(!((l2_ > 0f))) {
         local_14 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -1164,7 +1165,7 @@ fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_34 / vec3(sqrt(l2_)));
+    return (n_35 / vec3(sqrt(l2_)));
 }
 
 fn face_against(n_24: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
@@ -1201,8 +1202,8 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>
     if _e24 {
         return facing;
     }
-    let n_35 = (s_6 / vec3(sqrt(l2_1)));
-    return select(n_35, -(n_35), (dot(n_35, facing) < 0f));
+    let n_36 = (s_6 / vec3(sqrt(l2_1)));
+    return select(n_36, -(n_36), (dot(n_36, facing) < 0f));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, c_9: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -1286,8 +1287,8 @@ fn bilateral_weight(n_25: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f
     let dn2_ = (dn * dn);
     let dn4_ = (dn2_ * dn2_);
     let dn8_ = (dn4_ * dn4_);
-    let d_9 = ((zj - z_1) * inv_sz);
-    let t_6 = max((1f - (d_9 * d_9)), 0f);
+    let d_10 = ((zj - z_1) * inv_sz);
+    let t_6 = max((1f - (d_10 * d_10)), 0f);
     return (((dn8_ * dn8_) * t_6) * t_6);
 }
 
@@ -1517,6 +1518,10 @@ fn reproject(c0_1: vec4<f32>, c1_3: vec4<f32>, c2_2: vec4<f32>, c3_: vec4<f32>, 
     return vec3<f32>(x_16, y_3, clip.w);
 }
 
+fn reproject_motion(px_1: f32, py_1: f32, mx: f32, my: f32, width_1: f32, height_1: f32) -> vec3<f32> {
+    return vec3<f32>((px_1 - (mx * width_1)), (py_1 - (my * height_1)), 1f);
+}
+
 fn bilinear_weight(fx: f32, fy: f32, dx: u32, dy: u32) -> f32 {
     let wx = select((1f - fx), fx, (dx == 1u));
     let wy = select((1f - fy), fy, (dy == 1u));
@@ -1569,6 +1574,29 @@ fn history_tap_weight(fx_1: f32, fy_1: f32, dx_1: u32, dy_1: u32, n_33: vec3<f32
     return _e20;
 }
 
+fn history_tap_weight_motion(fx_2: f32, fy_2: f32, dx_2: u32, dy_2: u32, n_34: vec3<f32>, nh_2: vec3<f32>, d_8: f32, dh: f32, len_2: f32) -> f32 {
+    var local_25: bool;
+    var local_26: bool;
+
+    if !((len_2 <= 0f)) {
+        local_25 = (abs((dh - d_8)) > (TEMPORAL_MOTION_DEPTH_TOLERANCE * d_8));
+    } else {
+        local_25 = true;
+    }
+    let _e20 = local_25;
+    if !(_e20) {
+        local_26 = (dot(n_34, nh_2) < TEMPORAL_NORMAL_COS);
+    } else {
+        local_26 = true;
+    }
+    let _e28 = local_26;
+    if _e28 {
+        return 0f;
+    }
+    let _e30 = bilinear_weight(fx_2, fy_2, dx_2, dy_2);
+    return _e30;
+}
+
 fn temporal_color(c_11: vec3<f32>, h_1: vec4<f32>, noise_1: f32, max_history_1: f32) -> vec4<f32> {
     let hc = vec3<f32>(h_1.x, h_1.y, h_1.z);
     let _e8 = luminance(c_11);
@@ -1580,13 +1608,13 @@ fn temporal_color(c_11: vec3<f32>, h_1: vec4<f32>, noise_1: f32, max_history_1: 
     return vec4<f32>(v_23.x, v_23.y, v_23.z, _e13);
 }
 
-fn temporal_moments(c_12: vec3<f32>, last: f32, noise_2: f32, prev_len: f32, len_2: f32) -> vec4<f32> {
-    let _e5 = luminance(c_12);
+fn temporal_moments(c_12: vec3<f32>, last: f32, noise_2: f32, prev_len: f32, len_3: f32, depth_1: f32) -> vec4<f32> {
+    let _e6 = luminance(c_12);
     if (prev_len <= 0f) {
-        return vec4<f32>(_e5, 0f, 0f, 0f);
+        return vec4<f32>(_e6, 0f, depth_1, 0f);
     }
-    let d_10 = (_e5 - last);
-    let _e19 = temporal_alpha((len_2 - 1f));
-    return vec4<f32>(_e5, (noise_2 + ((((0.5f * d_10) * d_10) - noise_2) * _e19)), 0f, 0f);
+    let d_11 = (_e6 - last);
+    let _e19 = temporal_alpha((len_3 - 1f));
+    return vec4<f32>(_e6, (noise_2 + ((((0.5f * d_11) * d_11) - noise_2) * _e19)), depth_1, 0f);
 }
 

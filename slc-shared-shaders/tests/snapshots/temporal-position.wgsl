@@ -63,6 +63,7 @@ const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const TEMPORAL_MAX_HISTORY: f32 = 32f;
 const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
+const TEMPORAL_MOTION_DEPTH_TOLERANCE: f32 = 0.05f;
 const TEMPORAL_NORMAL_COS: f32 = 0.9f;
 const TEMPORAL_MIN_MOMENTS: f32 = 8f;
 const TEMPORAL_CHANGED_HISTORY: f32 = 1f;
@@ -172,14 +173,14 @@ fn temporal_color(c_1: vec3<f32>, h: vec4<f32>, noise_1: f32, max_history_1: f32
     return vec4<f32>(v_1.x, v_1.y, v_1.z, _e13);
 }
 
-fn temporal_moments(c_2: vec3<f32>, last: f32, noise_2: f32, prev_len: f32, len_1: f32) -> vec4<f32> {
-    let _e5 = luminance(c_2);
+fn temporal_moments(c_2: vec3<f32>, last: f32, noise_2: f32, prev_len: f32, len_1: f32, depth: f32) -> vec4<f32> {
+    let _e6 = luminance(c_2);
     if (prev_len <= 0f) {
-        return vec4<f32>(_e5, 0f, 0f, 0f);
+        return vec4<f32>(_e6, 0f, depth, 0f);
     }
-    let d_2 = (_e5 - last);
+    let d_2 = (_e6 - last);
     let _e19 = temporal_alpha((len_1 - 1f));
-    return vec4<f32>(_e5, (noise_2 + ((((0.5f * d_2) * d_2) - noise_2) * _e19)), 0f, 0f);
+    return vec4<f32>(_e6, (noise_2 + ((((0.5f * d_2) * d_2) - noise_2) * _e19)), depth, 0f);
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
@@ -305,14 +306,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                     let t_1 = vec2<i32>(i32(tx), i32(ty));
                     let tv = textureLoad(hist_value, t_1, 0i);
                     let ts = textureLoad(hist_surface, t_1, 0i);
-                    let _e166 = history_tap_weight((_e79.x - x0_), (_e79.y - y0_), dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_3, tv.w);
-                    let _e167 = v;
-                    v = (_e167 + (tv * _e166));
-                    let _e170 = m;
-                    let _e173 = textureLoad(hist_noise, t_1, 0i);
-                    m = (_e170 + (_e173 * _e166));
+                    let tn = textureLoad(hist_noise, t_1, 0i);
+                    let _e169 = history_tap_weight((_e79.x - x0_), (_e79.y - y0_), dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_3, tv.w);
+                    let _e170 = v;
+                    v = (_e170 + (tv * _e169));
+                    let _e173 = m;
+                    m = (_e173 + (tn * _e169));
                     let _e176 = weight;
-                    weight = (_e176 + _e166);
+                    weight = (_e176 + _e169);
                 }
             }
             continuing {
@@ -339,8 +340,9 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e203 = hn.x;
     let _e205 = hn.y;
     let _e207 = hv.w;
-    let _e209 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w);
-    textureStore(next_noise, texel_2, _e209);
+    let _e211 = view.eye;
+    let _e214 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w, length((p_4 - _e211)));
+    textureStore(next_noise, texel_2, _e214);
     textureStore(next_surface, texel_2, vec4<f32>(n_6, dot(n_6, p_4)));
     return;
 }

@@ -63,6 +63,7 @@ const NEAR_BLOCK: u32 = 64u;
 const ROULETTE_DEPTH: u32 = 2u;
 const TEMPORAL_MAX_HISTORY: f32 = 32f;
 const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
+const TEMPORAL_MOTION_DEPTH_TOLERANCE: f32 = 0.05f;
 const TEMPORAL_NORMAL_COS: f32 = 0.9f;
 const TEMPORAL_MIN_MOMENTS: f32 = 8f;
 const TEMPORAL_CHANGED_HISTORY: f32 = 1f;
@@ -172,23 +173,23 @@ fn temporal_color(c_1: vec3<f32>, h: vec4<f32>, noise_1: f32, max_history_1: f32
     return vec4<f32>(v_1.x, v_1.y, v_1.z, _e13);
 }
 
-fn temporal_moments(c_2: vec3<f32>, last: f32, noise_2: f32, prev_len: f32, len_1: f32) -> vec4<f32> {
-    let _e5 = luminance(c_2);
+fn temporal_moments(c_2: vec3<f32>, last: f32, noise_2: f32, prev_len: f32, len_1: f32, depth: f32) -> vec4<f32> {
+    let _e6 = luminance(c_2);
     if (prev_len <= 0f) {
-        return vec4<f32>(_e5, 0f, 0f, 0f);
+        return vec4<f32>(_e6, 0f, depth, 0f);
     }
-    let d_2 = (_e5 - last);
+    let d_2 = (_e6 - last);
     let _e19 = temporal_alpha((len_1 - 1f));
-    return vec4<f32>(_e5, (noise_2 + ((((0.5f * d_2) * d_2) - noise_2) * _e19)), 0f, 0f);
+    return vec4<f32>(_e6, (noise_2 + ((((0.5f * d_2) * d_2) - noise_2) * _e19)), depth, 0f);
 }
 
-fn unproject_pixel(c0_1: vec4<f32>, c1_1: vec4<f32>, c2_1: vec4<f32>, c3_1: vec4<f32>, px: f32, py: f32, width_1: f32, height_1: f32, depth: f32, background: f32) -> vec4<f32> {
-    if (depth == background) {
+fn unproject_pixel(c0_1: vec4<f32>, c1_1: vec4<f32>, c2_1: vec4<f32>, c3_1: vec4<f32>, px: f32, py: f32, width_1: f32, height_1: f32, depth_1: f32, background: f32) -> vec4<f32> {
+    if (depth_1 == background) {
         return vec4<f32>(0f, 0f, 0f, 0f);
     }
     let x_1 = ((((px + 0.5f) / width_1) * 2f) - 1f);
     let y_1 = (1f - (((py + 0.5f) / height_1) * 2f));
-    let p_3 = ((((c0_1 * x_1) + (c1_1 * y_1)) + (c2_1 * depth)) + c3_1);
+    let p_3 = ((((c0_1 * x_1) + (c1_1 * y_1)) + (c2_1 * depth_1)) + c3_1);
     if (abs(p_3.w) > 0f) {
         return vec4<f32>((p_3.x / p_3.w), (p_3.y / p_3.w), (p_3.z / p_3.w), 1f);
     }
@@ -327,14 +328,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                     let t_1 = vec2<i32>(i32(tx), i32(ty));
                     let tv = textureLoad(hist_value, t_1, 0i);
                     let ts = textureLoad(hist_surface, t_1, 0i);
-                    let _e166 = history_tap_weight((_e79.x - x0_), (_e79.y - y0_), dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_4, tv.w);
-                    let _e167 = v;
-                    v = (_e167 + (tv * _e166));
-                    let _e170 = m;
-                    let _e173 = textureLoad(hist_noise, t_1, 0i);
-                    m = (_e170 + (_e173 * _e166));
+                    let tn = textureLoad(hist_noise, t_1, 0i);
+                    let _e169 = history_tap_weight((_e79.x - x0_), (_e79.y - y0_), dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_4, tv.w);
+                    let _e170 = v;
+                    v = (_e170 + (tv * _e169));
+                    let _e173 = m;
+                    m = (_e173 + (tn * _e169));
                     let _e176 = weight;
-                    weight = (_e176 + _e166);
+                    weight = (_e176 + _e169);
                 }
             }
             continuing {
@@ -361,8 +362,9 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e203 = hn.x;
     let _e205 = hn.y;
     let _e207 = hv.w;
-    let _e209 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w);
-    textureStore(next_noise, texel_2, _e209);
+    let _e211 = view.eye;
+    let _e214 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w, length((p_4 - _e211)));
+    textureStore(next_noise, texel_2, _e214);
     textureStore(next_surface, texel_2, vec4<f32>(n_6, dot(n_6, p_4)));
     return;
 }

@@ -25,7 +25,7 @@
 //! let mut temporal = TemporalPass::new(gpu, &TemporalPassDesc::new(1920, 1080))?;
 //! // Every frame, after the pass that wrote `irradiance`:
 //! let view = TemporalView { view_projection, eye: gbuffer.eye };
-//! temporal.record(encoder, &TemporalInputs { gbuffer, signal: irradiance, output: accumulated }, &view, &TemporalSettings::default())?;
+//! temporal.record(encoder, &TemporalInputs::new(gbuffer, irradiance, accumulated), &view, &TemporalSettings::default())?;
 //! # Ok(()) }
 //! ```
 
@@ -53,12 +53,16 @@ pub struct TemporalPassDesc {
     pub surface: SurfaceDesc,
     /// The output's format (`Rgba16Float` or `Rgba32Float`).
     pub output_format: wgpu::TextureFormat,
+    /// Reproject by the engine's motion vectors ([`TemporalInputs::motion`])
+    /// instead of the previous view-projection: moving objects keep their
+    /// history.
+    pub motion_vectors: bool,
 }
 
 impl TemporalPassDesc {
     /// A pass for `width × height` reading world positions, writing `Rgba16Float`.
     pub fn new(width: u32, height: u32) -> TemporalPassDesc {
-        TemporalPassDesc { width, height, surface: SurfaceDesc::Position, output_format: wgpu::TextureFormat::Rgba16Float }
+        TemporalPassDesc { width, height, surface: SurfaceDesc::Position, output_format: wgpu::TextureFormat::Rgba16Float, motion_vectors: false }
     }
 }
 
@@ -73,6 +77,19 @@ pub struct TemporalInputs<'a> {
     /// Where the accumulated signal goes (rgb; a: history length in
     /// frames), the pass's output format, `STORAGE_BINDING`.
     pub output: &'a wgpu::TextureView,
+    /// The engine's motion vectors, for a pass built with
+    /// [`TemporalPassDesc::motion_vectors`]: current minus previous UV
+    /// (x right, y down, `[0, 1]` across the image; Bevy's convention) in
+    /// xy of an `Rg16Float`, `Rg32Float`, `Rgba16Float` or `Rgba32Float`
+    /// texture with `TEXTURE_BINDING`.
+    pub motion: Option<&'a wgpu::TextureView>,
+}
+
+impl<'a> TemporalInputs<'a> {
+    /// Inputs without motion vectors.
+    pub fn new(gbuffer: GBuffer<'a>, signal: &'a wgpu::TextureView, output: &'a wgpu::TextureView) -> TemporalInputs<'a> {
+        TemporalInputs { gbuffer, signal, output, motion: None }
+    }
 }
 
 /// The two history sets' textures and views.
@@ -100,7 +117,11 @@ impl History {
     }
 }
 
-type GroupKey = (wgpu::TextureView, wgpu::TextureView, wgpu::TextureView, wgpu::TextureView, usize);
+type GroupKey = (wgpu::TextureView, wgpu::TextureView, wgpu::TextureView, wgpu::TextureView, Option<wgpu::TextureView>, usize);
+
+/// The formats motion vectors are read in (xy).
+const MOTION_FORMATS: [wgpu::TextureFormat; 4] =
+    [wgpu::TextureFormat::Rg16Float, wgpu::TextureFormat::Rg32Float, wgpu::TextureFormat::Rgba16Float, wgpu::TextureFormat::Rgba32Float];
 
 /// Temporal accumulation on an engine's G-buffer (see the module docs).
 pub struct TemporalPass {
@@ -128,6 +149,7 @@ impl TemporalPass {
             tile_size: TILE,
             surface: desc.surface.source()?,
             output_format: output_format(desc.output_format)?,
+            motion_vectors: desc.motion_vectors,
             ..Features::default()
         };
         gpu.require("max_storage_textures_per_shader_stage", 4, gpu.limits.max_storage_textures_per_shader_stage as u64)?;
@@ -194,6 +216,24 @@ impl TemporalPass {
         let view_params = inputs.gbuffer.check(self.desc.surface, size, 0, 0)?;
         check_view("temporal signal", inputs.signal, size, &FLOAT_INPUTS, wgpu::TextureUsages::TEXTURE_BINDING)?;
         check_view("temporal output", inputs.output, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)?;
+        match (inputs.motion, self.desc.motion_vectors) {
+            (Some(m), true) => check_view("motion vectors", m, size, &MOTION_FORMATS, wgpu::TextureUsages::TEXTURE_BINDING)?,
+            (None, false) => {}
+            (None, true) => {
+                return Err(GpuError::Binding {
+                    name: "motion vectors",
+                    expected: "a motion-vector texture (the pass was built for one)".into(),
+                    found: "none".into(),
+                });
+            }
+            (Some(_), false) => {
+                return Err(GpuError::Binding {
+                    name: "motion vectors",
+                    expected: "none (the pass was built without: TemporalPassDesc::motion_vectors)".into(),
+                    found: "a texture".into(),
+                });
+            }
+        }
         let gpu = &self.gpu;
         self.view.write_slot(gpu, 0, &view_params);
         let (m, prev_eye) = self.previous.map_or((glam::Mat4::ZERO, glam::Vec3::ZERO), |p| (p.view_projection, p.eye));
@@ -212,29 +252,29 @@ impl TemporalPass {
         gpu.queue.write_buffer(&self.params, 0, bytemuck::bytes_of(&params));
         let (read, write) = (self.current, 1 - self.current);
         let g = &inputs.gbuffer;
-        let key = (g.surface_view().clone(), g.normal.clone(), inputs.signal.clone(), inputs.output.clone(), read);
+        let key = (g.surface_view().clone(), g.normal.clone(), inputs.signal.clone(), inputs.output.clone(), inputs.motion.cloned(), read);
         let (layout, history, slots, params_buf) = (&self.layout, &self.history, &self.view, &self.params);
         let group = self.cache.get(key, || {
             let tex = wgpu::BindingResource::TextureView;
             let (r, w) = (&history[read].views, &history[write].views);
-            layout.group(
-                gpu,
-                0,
-                &[
-                    ("view", slots.binding()),
-                    (g.surface_name(), tex(g.surface_view())),
-                    ("normal_tex", tex(g.normal)),
-                    ("params", params_buf.as_entire_binding()),
-                    ("signal_tex", tex(inputs.signal)),
-                    ("hist_value", tex(&r[0])),
-                    ("hist_noise", tex(&r[1])),
-                    ("hist_surface", tex(&r[2])),
-                    ("out_tex", tex(inputs.output)),
-                    ("next_value", tex(&w[0])),
-                    ("next_noise", tex(&w[1])),
-                    ("next_surface", tex(&w[2])),
-                ],
-            )
+            let mut res = vec![
+                ("view", slots.binding()),
+                (g.surface_name(), tex(g.surface_view())),
+                ("normal_tex", tex(g.normal)),
+                ("params", params_buf.as_entire_binding()),
+                ("signal_tex", tex(inputs.signal)),
+                ("hist_value", tex(&r[0])),
+                ("hist_noise", tex(&r[1])),
+                ("hist_surface", tex(&r[2])),
+                ("out_tex", tex(inputs.output)),
+                ("next_value", tex(&w[0])),
+                ("next_noise", tex(&w[1])),
+                ("next_surface", tex(&w[2])),
+            ];
+            if let Some(m) = inputs.motion {
+                res.push(("motion_tex", tex(m)));
+            }
+            layout.group(gpu, 0, &res)
         });
         self.previous = Some(*view);
         self.current = write;

@@ -64,6 +64,7 @@ const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
 const float TEMPORAL_MAX_HISTORY = 32.0;
 const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+const float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
 const float TEMPORAL_NORMAL_COS = 0.9;
 const float TEMPORAL_MIN_MOMENTS = 8.0;
 const float TEMPORAL_CHANGED_HISTORY = 1.0;
@@ -171,14 +172,14 @@ vec4 temporal_color(vec3 c_1, vec4 h, float noise_1, float max_history_1) {
     return vec4(v_1.x, v_1.y, v_1.z, _e13);
 }
 
-vec4 temporal_moments(vec3 c_2, float last, float noise_2, float prev_len, float len_1) {
-    float _e5 = luminance(c_2);
+vec4 temporal_moments(vec3 c_2, float last, float noise_2, float prev_len, float len_1, float depth) {
+    float _e6 = luminance(c_2);
     if ((prev_len <= 0.0)) {
-        return vec4(_e5, 0.0, 0.0, 0.0);
+        return vec4(_e6, 0.0, depth, 0.0);
     }
-    float d_2 = (_e5 - last);
+    float d_2 = (_e6 - last);
     float _e19 = temporal_alpha((len_1 - 1.0));
-    return vec4(_e5, (noise_2 + ((((0.5 * d_2) * d_2) - noise_2) * _e19)), 0.0, 0.0);
+    return vec4(_e6, (noise_2 + ((((0.5 * d_2) * d_2) - noise_2) * _e19)), depth, 0.0);
 }
 
 vec4 surface_at(ivec2 texel) {
@@ -308,14 +309,14 @@ void main() {
                     ivec2 t_1 = ivec2(int(tx), int(ty));
                     vec4 tv = texelFetch(_group_0_binding_5_cs, t_1, 0);
                     vec4 ts = texelFetch(_group_0_binding_7_cs, t_1, 0);
-                    float _e166 = history_tap_weight((_e79.x - x0_), (_e79.y - y0_), dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_3, tv.w);
-                    vec4 _e167 = v;
-                    v = (_e167 + (tv * _e166));
-                    vec4 _e170 = m;
-                    vec4 _e173 = texelFetch(_group_0_binding_6_cs, t_1, 0);
-                    m = (_e170 + (_e173 * _e166));
+                    vec4 tn = texelFetch(_group_0_binding_6_cs, t_1, 0);
+                    float _e169 = history_tap_weight((_e79.x - x0_), (_e79.y - y0_), dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_3, tv.w);
+                    vec4 _e170 = v;
+                    v = (_e170 + (tv * _e169));
+                    vec4 _e173 = m;
+                    m = (_e173 + (tn * _e169));
                     float _e176 = weight;
-                    weight = (_e176 + _e166);
+                    weight = (_e176 + _e169);
                 }
             }
         }
@@ -338,8 +339,9 @@ void main() {
     float _e203 = hn.x;
     float _e205 = hn.y;
     float _e207 = hv.w;
-    vec4 _e209 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w);
-    imageStore(_group_0_binding_10_cs, texel_2, _e209);
+    vec3 _e211 = _group_0_binding_0_cs.eye;
+    vec4 _e214 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w, length((p_4 - _e211)));
+    imageStore(_group_0_binding_10_cs, texel_2, _e214);
     imageStore(_group_0_binding_11_cs, texel_2, vec4(n_6, dot(n_6, p_4)));
     return;
 }

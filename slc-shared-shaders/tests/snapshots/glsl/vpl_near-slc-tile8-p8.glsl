@@ -83,6 +83,7 @@ const uint NEAR_BLOCK = 64u;
 const uint ROULETTE_DEPTH = 2u;
 const float TEMPORAL_MAX_HISTORY = 32.0;
 const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+const float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
 const float TEMPORAL_NORMAL_COS = 0.9;
 const float TEMPORAL_MIN_MOMENTS = 8.0;
 const float TEMPORAL_CHANGED_HISTORY = 1.0;

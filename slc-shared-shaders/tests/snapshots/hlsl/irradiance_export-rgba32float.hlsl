@@ -50,6 +50,7 @@ static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
 static const float TEMPORAL_MAX_HISTORY = 32.0;
 static const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+static const float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
 static const float TEMPORAL_NORMAL_COS = 0.9;
 static const float TEMPORAL_MIN_MOMENTS = 8.0;
 static const float TEMPORAL_CHANGED_HISTORY = 1.0;

@@ -63,6 +63,7 @@ static const uint NEAR_BLOCK = 64u;
 static const uint ROULETTE_DEPTH = 2u;
 static const float TEMPORAL_MAX_HISTORY = 32.0;
 static const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+static const float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
 static const float TEMPORAL_NORMAL_COS = 0.9;
 static const float TEMPORAL_MIN_MOMENTS = 8.0;
 static const float TEMPORAL_CHANGED_HISTORY = 1.0;
@@ -169,15 +170,15 @@ float4 temporal_color(float3 c_1, float4 h, float noise_1, float max_history_1)
     return float4(v_1.x, v_1.y, v_1.z, _e13);
 }
 
-float4 temporal_moments(float3 c_2, float last, float noise_2, float prev_len, float len_1)
+float4 temporal_moments(float3 c_2, float last, float noise_2, float prev_len, float len_1, float depth)
 {
-    const float _e5 = luminance(c_2);
+    const float _e6 = luminance(c_2);
     if ((prev_len <= 0.0)) {
-        return float4(_e5, 0.0, 0.0, 0.0);
+        return float4(_e6, 0.0, depth, 0.0);
     }
-    float d_2 = (_e5 - last);
+    float d_2 = (_e6 - last);
     const float _e19 = temporal_alpha((len_1 - 1.0));
-    return float4(_e5, (noise_2 + ((((0.5 * d_2) * d_2) - noise_2) * _e19)), 0.0, 0.0);
+    return float4(_e6, (noise_2 + ((((0.5 * d_2) * d_2) - noise_2) * _e19)), depth, 0.0);
 }
 
 float4 surface_at(int2 texel)
@@ -335,14 +336,14 @@ void main(uint3 gid : SV_DispatchThreadID)
                     int2 t_1 = int2(naga_f2i32(tx), naga_f2i32(ty));
                     float4 tv = hist_value.Load(int3(t_1, int(0)));
                     float4 ts = hist_surface.Load(int3(t_1, int(0)));
-                    const float _e166 = history_tap_weight((_e79.x - x0_), (_e79.y - y0_), dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_3, tv.w);
-                    float4 _e167 = v;
-                    v = (_e167 + (tv * _e166));
-                    float4 _e170 = m;
-                    float4 _e173 = hist_noise.Load(int3(t_1, int(0)));
-                    m = (_e170 + (_e173 * _e166));
+                    float4 tn = hist_noise.Load(int3(t_1, int(0)));
+                    const float _e169 = history_tap_weight((_e79.x - x0_), (_e79.y - y0_), dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_3, tv.w);
+                    float4 _e170 = v;
+                    v = (_e170 + (tv * _e169));
+                    float4 _e173 = m;
+                    m = (_e173 + (tn * _e169));
                     float _e176 = weight;
-                    weight = (_e176 + _e166);
+                    weight = (_e176 + _e169);
                 }
             }
         }
@@ -365,8 +366,9 @@ void main(uint3 gid : SV_DispatchThreadID)
     float _e203 = hn.x;
     float _e205 = hn.y;
     float _e207 = hv.w;
-    const float4 _e209 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w);
-    next_noise[texel_2] = _e209;
+    float3 _e211 = view.eye;
+    const float4 _e214 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w, length((p_4 - _e211)));
+    next_noise[texel_2] = _e214;
     next_surface[texel_2] = float4(n_6, dot(n_6, p_4));
     return;
 }

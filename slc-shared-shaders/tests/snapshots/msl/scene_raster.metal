@@ -90,6 +90,7 @@ constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
 constant float TEMPORAL_MAX_HISTORY = 32.0;
 constant float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+constant float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
 constant float TEMPORAL_NORMAL_COS = 0.9;
 constant float TEMPORAL_MIN_MOMENTS = 8.0;
 constant float TEMPORAL_CHANGED_HISTORY = 1.0;

@@ -66,6 +66,7 @@ constant uint NEAR_BLOCK = 64u;
 constant uint ROULETTE_DEPTH = 2u;
 constant float TEMPORAL_MAX_HISTORY = 32.0;
 constant float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+constant float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
 constant float TEMPORAL_NORMAL_COS = 0.9;
 constant float TEMPORAL_MIN_MOMENTS = 8.0;
 constant float TEMPORAL_CHANGED_HISTORY = 1.0;
@@ -201,15 +202,16 @@ metal::float4 temporal_moments(
     float last,
     float noise_2,
     float prev_len,
-    float len_1
+    float len_1,
+    float depth
 ) {
-    float _e5 = luminance(c_2);
+    float _e6 = luminance(c_2);
     if (prev_len <= 0.0) {
-        return metal::float4(_e5, 0.0, 0.0, 0.0);
+        return metal::float4(_e6, 0.0, depth, 0.0);
     }
-    float d_2 = _e5 - last;
+    float d_2 = _e6 - last;
     float _e19 = temporal_alpha(len_1 - 1.0);
-    return metal::float4(_e5, noise_2 + ((((0.5 * d_2) * d_2) - noise_2) * _e19), 0.0, 0.0);
+    return metal::float4(_e6, noise_2 + ((((0.5 * d_2) * d_2) - noise_2) * _e19), depth, 0.0);
 }
 
 metal::float4 unproject_pixel(
@@ -221,15 +223,15 @@ metal::float4 unproject_pixel(
     float py,
     float width_1,
     float height_1,
-    float depth,
+    float depth_1,
     float background
 ) {
-    if (depth == background) {
+    if (depth_1 == background) {
         return metal::float4(0.0, 0.0, 0.0, 0.0);
     }
     float x_1 = (((px + 0.5) / width_1) * 2.0) - 1.0;
     float y_1 = 1.0 - (((py + 0.5) / height_1) * 2.0);
-    metal::float4 p_3 = (((c0_1 * x_1) + (c1_1 * y_1)) + (c2_1 * depth)) + c3_1;
+    metal::float4 p_3 = (((c0_1 * x_1) + (c1_1 * y_1)) + (c2_1 * depth_1)) + c3_1;
     if (metal::abs(p_3.w) > 0.0) {
         return metal::float4(p_3.x / p_3.w, p_3.y / p_3.w, p_3.z / p_3.w, 1.0);
     }
@@ -411,14 +413,14 @@ kernel void main_(
                     metal::int2 t_1 = metal::int2(naga_f2i32(tx), naga_f2i32(ty));
                     metal::float4 tv = hist_value.read(metal::uint2(t_1), 0);
                     metal::float4 ts = hist_surface.read(metal::uint2(t_1), 0);
-                    float _e166 = history_tap_weight(_e79.x - x0_, _e79.y - y0_, dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_4, tv.w);
-                    metal::float4 _e167 = v;
-                    v = _e167 + (tv * _e166);
-                    metal::float4 _e170 = m;
-                    metal::float4 _e173 = hist_noise.read(metal::uint2(t_1), 0);
-                    m = _e170 + (_e173 * _e166);
+                    metal::float4 tn = hist_noise.read(metal::uint2(t_1), 0);
+                    float _e169 = history_tap_weight(_e79.x - x0_, _e79.y - y0_, dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_4, tv.w);
+                    metal::float4 _e170 = v;
+                    v = _e170 + (tv * _e169);
+                    metal::float4 _e173 = m;
+                    m = _e173 + (tn * _e169);
                     float _e176 = weight;
-                    weight = _e176 + _e166;
+                    weight = _e176 + _e169;
                 }
             }
         }
@@ -441,8 +443,9 @@ kernel void main_(
     float _e203 = hn.x;
     float _e205 = hn.y;
     float _e207 = hv.w;
-    metal::float4 _e209 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w);
-    next_noise.write(_e209, metal::uint2(texel_2));
+    metal::float3 _e211 = view.eye;
+    metal::float4 _e214 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w, metal::length(p_4 - _e211));
+    next_noise.write(_e214, metal::uint2(texel_2));
     next_surface.write(metal::float4(n_6, metal::dot(n_6, p_4)), metal::uint2(texel_2));
     return;
 }

@@ -1,0 +1,337 @@
+#version 430 core
+#extension GL_ARB_compute_shader : require
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+struct TemporalParams {
+    vec4 c0_;
+    vec4 c1_;
+    vec4 c2_;
+    vec4 c3_;
+    vec3 prev_eye;
+    float max_history;
+    uint has_history;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+struct ViewParams {
+    vec4 c0_;
+    vec4 c1_;
+    vec4 c2_;
+    vec4 c3_;
+    vec3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    vec3 f0_d;
+    float f90_d;
+};
+struct GbTexel {
+    vec4 position;
+    vec4 normal;
+};
+const uint LIGHT_POINT = 0u;
+const uint LIGHT_SPOT = 1u;
+const uint LIGHT_IES = 2u;
+const uint LIGHT_TRIANGLE = 3u;
+const uint LIGHT_VPL = 4u;
+const uint NO_LIGHT = 4294967295u;
+const uint MAP_CAMERA = 0u;
+const uint MAP_PERSPECTIVE = 1u;
+const uint MAP_ORTHOGRAPHIC = 2u;
+const float XI_STEP = 5.9604645e-8;
+const uint PICK_STREAM = 2654435769u;
+const float TWO_PI = 6.2831855;
+const float CULL_RADIUS_SCALE = 1.000001;
+const float SPHERE_PAD = 4.7683716e-7;
+const float SPHERE_HUGE = 3.4028235e38;
+const float SPHERE_PAD_ABS = 1e-18;
+const float INV_PI = 0.31830987;
+const float MIN_D2_ = 1e-12;
+const uint BSH_NONE = 4294967295u;
+const uint RESERVOIR_FULL = 4294967295u;
+const float GGX_ALPHA_MIN = 0.001;
+const float RANGE_SCALE_MAX = 64.0;
+const uint LIGHT_BVH_LEAF = 4294967295u;
+const float ONE_MINUS_EPSILON = 0.99999994;
+const float F32_MAX = 3.4028235e38;
+const float DEPTH_NONE = 1e30;
+const float DEPTH_SIGMA = 0.05;
+const float COVER_WEIGHT = 0.1;
+const uint NEAR_BLOCK = 64u;
+const uint ROULETTE_DEPTH = 2u;
+const float TEMPORAL_MAX_HISTORY = 32.0;
+const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+const float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
+const float TEMPORAL_NORMAL_COS = 0.9;
+const float TEMPORAL_MIN_MOMENTS = 8.0;
+const float TEMPORAL_CHANGED_HISTORY = 1.0;
+const float TEMPORAL_CHANGE_LOW = 4.0;
+const float TEMPORAL_CHANGE_HIGH = 8.0;
+const float TEMPORAL_MIN_WEIGHT = 0.01;
+
+layout(std140) uniform ViewParams_block_0Compute { ViewParams _group_0_binding_0_cs; };
+
+uniform sampler2D _group_0_binding_1_cs;
+
+uniform sampler2D _group_0_binding_2_cs;
+
+layout(std140) uniform TemporalParams_block_1Compute { TemporalParams _group_0_binding_3_cs; };
+
+uniform sampler2D _group_0_binding_4_cs;
+
+uniform sampler2D _group_0_binding_5_cs;
+
+uniform sampler2D _group_0_binding_6_cs;
+
+uniform sampler2D _group_0_binding_7_cs;
+
+layout(rgba32f) writeonly uniform image2D _group_0_binding_8_cs;
+
+layout(rgba32f) writeonly uniform image2D _group_0_binding_9_cs;
+
+layout(rgba32f) writeonly uniform image2D _group_0_binding_10_cs;
+
+layout(rgba32f) writeonly uniform image2D _group_0_binding_11_cs;
+
+uniform sampler2D _group_0_binding_12_cs;
+
+
+float luminance(vec3 c) {
+    return dot(c, vec3(0.2126, 0.7152, 0.0722));
+}
+
+vec3 reproject_motion(float px, float py, float mx, float my, float width, float height) {
+    return vec3((px - (mx * width)), (py - (my * height)), 1.0);
+}
+
+float bilinear_weight(float fx, float fy, uint dx, uint dy) {
+    float wx = ((dx == 1u) ? fx : (1.0 - fx));
+    float wy = ((dy == 1u) ? fy : (1.0 - fy));
+    return (wx * wy);
+}
+
+float temporal_change(float l, float m1_, float noise, float n) {
+    if ((n < TEMPORAL_MIN_MOMENTS)) {
+        return 0.0;
+    }
+    float sigma = sqrt((max(noise, 0.0) * (1.0 + (1.0 / n))));
+    float t = (abs((l - m1_)) / ((sigma + (0.001 * max(abs(l), abs(m1_)))) + 1e-20));
+    return clamp(((t - TEMPORAL_CHANGE_LOW) / 4.0), 0.0, 1.0);
+}
+
+float next_history_length(float n_1, float lambda, float max_history) {
+    return min((((1.0 - lambda) * n_1) + 1.0), max(max_history, 1.0));
+}
+
+float temporal_alpha(float n_2) {
+    return (1.0 / max(n_2, 1.0));
+}
+
+float history_tap_weight_motion(float fx_1, float fy_1, uint dx_1, uint dy_1, vec3 n_3, vec3 nh, float d, float dh, float len) {
+    bool local_5 = false;
+    bool local_6 = false;
+    if (!((len <= 0.0))) {
+        local_5 = (abs((dh - d)) > (TEMPORAL_MOTION_DEPTH_TOLERANCE * d));
+    } else {
+        local_5 = true;
+    }
+    bool _e20 = local_5;
+    if (!(_e20)) {
+        local_6 = (dot(n_3, nh) < TEMPORAL_NORMAL_COS);
+    } else {
+        local_6 = true;
+    }
+    bool _e28 = local_6;
+    if (_e28) {
+        return 0.0;
+    }
+    float _e30 = bilinear_weight(fx_1, fy_1, dx_1, dy_1);
+    return _e30;
+}
+
+vec4 temporal_color(vec3 c_1, vec4 h, float noise_1, float max_history_1) {
+    vec3 hc = vec3(h.x, h.y, h.z);
+    float _e8 = luminance(c_1);
+    float _e9 = luminance(hc);
+    float _e11 = temporal_change(_e8, _e9, noise_1, h.w);
+    float _e13 = next_history_length(h.w, _e11, max_history_1);
+    float _e15 = temporal_alpha(_e13);
+    vec3 v_1 = (hc + ((c_1 - hc) * _e15));
+    return vec4(v_1.x, v_1.y, v_1.z, _e13);
+}
+
+vec4 temporal_moments(vec3 c_2, float last, float noise_2, float prev_len, float len_1, float depth) {
+    float _e6 = luminance(c_2);
+    if ((prev_len <= 0.0)) {
+        return vec4(_e6, 0.0, depth, 0.0);
+    }
+    float d_1 = (_e6 - last);
+    float _e19 = temporal_alpha((len_1 - 1.0));
+    return vec4(_e6, (noise_2 + ((((0.5 * d_1) * d_1) - noise_2) * _e19)), depth, 0.0);
+}
+
+vec4 surface_at(ivec2 texel) {
+    vec4 p = texelFetch(_group_0_binding_1_cs, texel, 0);
+    return ((p.w > 0.0) ? vec4(p.xyz, 1.0) : vec4(0.0));
+}
+
+GbTexel gbuffer_at(uint i) {
+    bool local_7 = false;
+    uint _e3 = _group_0_binding_0_cs.width;
+    uint _e8 = _group_0_binding_0_cs.width;
+    ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
+    vec4 _e12 = surface_at(texel_1);
+    vec4 _e15 = texelFetch(_group_0_binding_2_cs, texel_1, 0);
+    vec3 n_4 = _e15.xyz;
+    float len2_ = dot(n_4, n_4);
+    if ((_e12.w > 0.0)) {
+        local_7 = (len2_ > 0.0);
+    } else {
+        local_7 = false;
+    }
+    bool valid = local_7;
+    vec3 _e30 = _group_0_binding_0_cs.eye;
+    vec3 v_2 = (_e12.xyz - _e30);
+    vec4 position = vec4(_e12.xyz, (valid ? 1.0 : 0.0));
+    vec4 normal = (valid ? vec4((n_4 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))) : vec4(0.0, 0.0, 0.0, 1e30));
+    return GbTexel(position, normal);
+}
+
+void main() {
+    uvec3 gid = gl_GlobalInvocationID;
+    bool local = false;
+    vec4 hv = vec4(0.0);
+    vec4 hn = vec4(0.0);
+    bool local_1 = false;
+    vec4 v = vec4(0.0);
+    vec4 m = vec4(0.0);
+    float weight = 0.0;
+    uint k = 0u;
+    bool local_2 = false;
+    bool local_3 = false;
+    bool local_4 = false;
+    uint _e4 = _group_0_binding_0_cs.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = _group_0_binding_0_cs.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    ivec2 texel_2 = ivec2(int(gid.x), int(gid.y));
+    uint _e24 = _group_0_binding_0_cs.width;
+    GbTexel _e28 = gbuffer_at(((gid.y * _e24) + gid.x));
+    vec4 _e31 = texelFetch(_group_0_binding_4_cs, texel_2, 0);
+    vec3 c_3 = _e31.xyz;
+    if ((_e28.position.w <= 0.0)) {
+        imageStore(_group_0_binding_8_cs, texel_2, vec4(c_3, 0.0));
+        imageStore(_group_0_binding_9_cs, texel_2, vec4(c_3, 0.0));
+        imageStore(_group_0_binding_10_cs, texel_2, vec4(0.0));
+        imageStore(_group_0_binding_11_cs, texel_2, vec4(0.0));
+        return;
+    }
+    vec3 p_1 = _e28.position.xyz;
+    vec3 n_5 = _e28.normal.xyz;
+    vec4 _e61 = texelFetch(_group_0_binding_12_cs, texel_2, 0);
+    vec2 motion = _e61.xy;
+    uint _e71 = _group_0_binding_0_cs.width;
+    uint _e75 = _group_0_binding_0_cs.height;
+    vec3 _e77 = reproject_motion(float(gid.x), float(gid.y), motion.x, motion.y, float(_e71), float(_e75));
+    uint _e80 = _group_0_binding_3_cs.has_history;
+    if ((_e80 == 1u)) {
+        local_1 = (_e77.z > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool _e89 = local_1;
+    if (_e89) {
+        float x0_ = floor(_e77.x);
+        float y0_ = floor(_e77.y);
+        vec3 _e96 = _group_0_binding_0_cs.eye;
+        float d_2 = length((p_1 - _e96));
+        bool loop_init = true;
+        while(true) {
+            if (!loop_init) {
+                uint _e177 = k;
+                k = (_e177 + 1u);
+            }
+            loop_init = false;
+            uint _e109 = k;
+            if ((_e109 < 4u)) {
+            } else {
+                break;
+            }
+            {
+                uint _e112 = k;
+                uint dx_2 = (_e112 & 1u);
+                uint _e115 = k;
+                uint dy_2 = (_e115 >> 1u);
+                float tx = (x0_ + float(dx_2));
+                float ty = (y0_ + float(dy_2));
+                if ((tx >= 0.0)) {
+                    local_2 = (ty >= 0.0);
+                } else {
+                    local_2 = false;
+                }
+                bool _e129 = local_2;
+                if (_e129) {
+                    uint _e134 = _group_0_binding_0_cs.width;
+                    local_3 = (tx < float(_e134));
+                } else {
+                    local_3 = false;
+                }
+                bool _e138 = local_3;
+                if (_e138) {
+                    uint _e143 = _group_0_binding_0_cs.height;
+                    local_4 = (ty < float(_e143));
+                } else {
+                    local_4 = false;
+                }
+                bool _e147 = local_4;
+                if (_e147) {
+                    ivec2 t_1 = ivec2(int(tx), int(ty));
+                    vec4 tv = texelFetch(_group_0_binding_5_cs, t_1, 0);
+                    vec4 ts = texelFetch(_group_0_binding_7_cs, t_1, 0);
+                    vec4 tn = texelFetch(_group_0_binding_6_cs, t_1, 0);
+                    float _e167 = history_tap_weight_motion((_e77.x - x0_), (_e77.y - y0_), dx_2, dy_2, n_5, ts.xyz, d_2, tn.z, tv.w);
+                    vec4 _e168 = v;
+                    v = (_e168 + (tv * _e167));
+                    vec4 _e171 = m;
+                    m = (_e171 + (tn * _e167));
+                    float _e174 = weight;
+                    weight = (_e174 + _e167);
+                }
+            }
+        }
+        float _e179 = weight;
+        if ((_e179 >= TEMPORAL_MIN_WEIGHT)) {
+            vec4 _e182 = v;
+            float _e183 = weight;
+            hv = (_e182 / vec4(_e183));
+            vec4 _e186 = m;
+            float _e187 = weight;
+            hn = (_e186 / vec4(_e187));
+        }
+    }
+    vec4 _e190 = hv;
+    float _e192 = hn.y;
+    float _e195 = _group_0_binding_3_cs.max_history;
+    vec4 _e196 = temporal_color(c_3, _e190, _e192, _e195);
+    imageStore(_group_0_binding_8_cs, texel_2, _e196);
+    imageStore(_group_0_binding_9_cs, texel_2, _e196);
+    float _e201 = hn.x;
+    float _e203 = hn.y;
+    float _e205 = hv.w;
+    vec3 _e209 = _group_0_binding_0_cs.eye;
+    vec4 _e212 = temporal_moments(c_3, _e201, _e203, _e205, _e196.w, length((p_1 - _e209)));
+    imageStore(_group_0_binding_10_cs, texel_2, _e212);
+    imageStore(_group_0_binding_11_cs, texel_2, vec4(n_5, dot(n_5, p_1)));
+    return;
+}
+

@@ -1,0 +1,360 @@
+struct TemporalParams {
+    float4 c0_;
+    float4 c1_;
+    float4 c2_;
+    float4 c3_;
+    float3 prev_eye;
+    float max_history;
+    uint has_history;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+
+struct ViewParams {
+    float4 c0_;
+    float4 c1_;
+    float4 c2_;
+    float4 c3_;
+    float3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    float3 f0_d;
+    float f90_d;
+};
+
+struct GbTexel {
+    float4 position;
+    float4 normal;
+};
+
+static const uint LIGHT_POINT = 0u;
+static const uint LIGHT_SPOT = 1u;
+static const uint LIGHT_IES = 2u;
+static const uint LIGHT_TRIANGLE = 3u;
+static const uint LIGHT_VPL = 4u;
+static const uint NO_LIGHT = 4294967295u;
+static const uint MAP_CAMERA = 0u;
+static const uint MAP_PERSPECTIVE = 1u;
+static const uint MAP_ORTHOGRAPHIC = 2u;
+static const float XI_STEP = 5.9604645e-8;
+static const uint PICK_STREAM = 2654435769u;
+static const float TWO_PI = 6.2831855;
+static const float CULL_RADIUS_SCALE = 1.000001;
+static const float SPHERE_PAD = 4.7683716e-7;
+static const float SPHERE_HUGE = 3.4028235e38;
+static const float SPHERE_PAD_ABS = 1e-18;
+static const float INV_PI = 0.31830987;
+static const float MIN_D2_ = 1e-12;
+static const uint BSH_NONE = 4294967295u;
+static const uint RESERVOIR_FULL = 4294967295u;
+static const float GGX_ALPHA_MIN = 0.001;
+static const float RANGE_SCALE_MAX = 64.0;
+static const uint LIGHT_BVH_LEAF = 4294967295u;
+static const float ONE_MINUS_EPSILON = 0.99999994;
+static const float F32_MAX = 3.4028235e38;
+static const float DEPTH_NONE = 1e30;
+static const float DEPTH_SIGMA = 0.05;
+static const float COVER_WEIGHT = 0.1;
+static const uint NEAR_BLOCK = 64u;
+static const uint ROULETTE_DEPTH = 2u;
+static const float TEMPORAL_MAX_HISTORY = 32.0;
+static const float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+static const float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
+static const float TEMPORAL_NORMAL_COS = 0.9;
+static const float TEMPORAL_MIN_MOMENTS = 8.0;
+static const float TEMPORAL_CHANGED_HISTORY = 1.0;
+static const float TEMPORAL_CHANGE_LOW = 4.0;
+static const float TEMPORAL_CHANGE_HIGH = 8.0;
+static const float TEMPORAL_MIN_WEIGHT = 0.01;
+
+cbuffer view : register(b0) { ViewParams view; }
+Texture2D<float4> position_tex : register(t1);
+Texture2D<float4> normal_tex : register(t2);
+cbuffer params : register(b3) { TemporalParams params; }
+Texture2D<float4> signal_tex : register(t4);
+Texture2D<float4> hist_value : register(t5);
+Texture2D<float4> hist_noise : register(t6);
+Texture2D<float4> hist_surface : register(t7);
+RWTexture2D<float4> out_tex : register(u8);
+RWTexture2D<float4> next_value : register(u9);
+RWTexture2D<float4> next_noise : register(u10);
+RWTexture2D<float4> next_surface : register(u11);
+Texture2D<float4> motion_tex : register(t12);
+
+float luminance(float3 c)
+{
+    return dot(c, float3(0.2126, 0.7152, 0.0722));
+}
+
+float3 reproject_motion(float px, float py, float mx, float my, float width, float height)
+{
+    return float3((px - (mx * width)), (py - (my * height)), 1.0);
+}
+
+float bilinear_weight(float fx, float fy, uint dx, uint dy)
+{
+    float wx = ((dx == 1u) ? fx : (1.0 - fx));
+    float wy = ((dy == 1u) ? fy : (1.0 - fy));
+    return (wx * wy);
+}
+
+float temporal_change(float l, float m1_, float noise_, float n)
+{
+    if ((n < TEMPORAL_MIN_MOMENTS)) {
+        return 0.0;
+    }
+    float sigma = sqrt((max(noise_, 0.0) * (1.0 + (1.0 / n))));
+    float t = (abs((l - m1_)) / ((sigma + (0.001 * max(abs(l), abs(m1_)))) + 1e-20));
+    return clamp(((t - TEMPORAL_CHANGE_LOW) / 4.0), 0.0, 1.0);
+}
+
+float next_history_length(float n_1, float lambda, float max_history)
+{
+    return min((((1.0 - lambda) * n_1) + 1.0), max(max_history, 1.0));
+}
+
+float temporal_alpha(float n_2)
+{
+    return (1.0 / max(n_2, 1.0));
+}
+
+float history_tap_weight_motion(float fx_1, float fy_1, uint dx_1, uint dy_1, float3 n_3, float3 nh, float d, float dh, float len)
+{
+    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
+
+    if (!((len <= 0.0))) {
+        local_5 = (abs((dh - d)) > (TEMPORAL_MOTION_DEPTH_TOLERANCE * d));
+    } else {
+        local_5 = true;
+    }
+    bool _e20 = local_5;
+    if (!(_e20)) {
+        local_6 = (dot(n_3, nh) < TEMPORAL_NORMAL_COS);
+    } else {
+        local_6 = true;
+    }
+    bool _e28 = local_6;
+    if (_e28) {
+        return 0.0;
+    }
+    const float _e30 = bilinear_weight(fx_1, fy_1, dx_1, dy_1);
+    return _e30;
+}
+
+float4 temporal_color(float3 c_1, float4 h, float noise_1, float max_history_1)
+{
+    float3 hc = float3(h.x, h.y, h.z);
+    const float _e8 = luminance(c_1);
+    const float _e9 = luminance(hc);
+    const float _e11 = temporal_change(_e8, _e9, noise_1, h.w);
+    const float _e13 = next_history_length(h.w, _e11, max_history_1);
+    const float _e15 = temporal_alpha(_e13);
+    float3 v_1 = (hc + ((c_1 - hc) * _e15));
+    return float4(v_1.x, v_1.y, v_1.z, _e13);
+}
+
+float4 temporal_moments(float3 c_2, float last, float noise_2, float prev_len, float len_1, float depth)
+{
+    const float _e6 = luminance(c_2);
+    if ((prev_len <= 0.0)) {
+        return float4(_e6, 0.0, depth, 0.0);
+    }
+    float d_1 = (_e6 - last);
+    const float _e19 = temporal_alpha((len_1 - 1.0));
+    return float4(_e6, (noise_2 + ((((0.5 * d_1) * d_1) - noise_2) * _e19)), depth, 0.0);
+}
+
+float4 surface_at(int2 texel)
+{
+    float4 p = position_tex.Load(int3(texel, int(0)));
+    return ((p.w > 0.0) ? float4(p.xyz, 1.0) : (0.0).xxxx);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
+    GbTexel ret = (GbTexel)0;
+    ret.position = arg0;
+    ret.normal = arg1;
+    return ret;
+}
+
+GbTexel gbuffer_at(uint i)
+{
+    bool local_7 = (bool)0;
+
+    uint _e3 = view.width;
+    uint _e8 = view.width;
+    int2 texel_1 = int2(int(naga_mod(i, _e3)), int(naga_div(i, _e8)));
+    const float4 _e12 = surface_at(texel_1);
+    float4 _e15 = normal_tex.Load(int3(texel_1, int(0)));
+    float3 n_4 = _e15.xyz;
+    float len2_ = dot(n_4, n_4);
+    if ((_e12.w > 0.0)) {
+        local_7 = (len2_ > 0.0);
+    } else {
+        local_7 = false;
+    }
+    bool valid = local_7;
+    float3 _e30 = view.eye;
+    float3 v_2 = (_e12.xyz - _e30);
+    float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
+    float4 normal = (valid ? float4((n_4 / (sqrt(len2_)).xxx), sqrt(dot(v_2, v_2))) : float4(0.0, 0.0, 0.0, 1e30));
+    const GbTexel gbtexel = ConstructGbTexel(position, normal);
+    return gbtexel;
+}
+
+int naga_f2i32(float value) {
+    return int(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+[numthreads(8, 8, 1)]
+void main(uint3 gid : SV_DispatchThreadID)
+{
+    bool local = (bool)0;
+    float4 hv = (0.0).xxxx;
+    float4 hn = (0.0).xxxx;
+    bool local_1 = (bool)0;
+    float4 v = (0.0).xxxx;
+    float4 m = (0.0).xxxx;
+    float weight = 0.0;
+    uint k = 0u;
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
+
+    uint _e4 = view.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = view.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    int2 texel_2 = int2(int(gid.x), int(gid.y));
+    uint _e24 = view.width;
+    const GbTexel _e28 = gbuffer_at(((gid.y * _e24) + gid.x));
+    float4 _e31 = signal_tex.Load(int3(texel_2, int(0)));
+    float3 c_3 = _e31.xyz;
+    if ((_e28.position.w <= 0.0)) {
+        out_tex[texel_2] = float4(c_3, 0.0);
+        next_value[texel_2] = float4(c_3, 0.0);
+        next_noise[texel_2] = (0.0).xxxx;
+        next_surface[texel_2] = (0.0).xxxx;
+        return;
+    }
+    float3 p_1 = _e28.position.xyz;
+    float3 n_5 = _e28.normal.xyz;
+    float4 _e61 = motion_tex.Load(int3(texel_2, int(0)));
+    float2 motion = _e61.xy;
+    uint _e71 = view.width;
+    uint _e75 = view.height;
+    const float3 _e77 = reproject_motion(float(gid.x), float(gid.y), motion.x, motion.y, float(_e71), float(_e75));
+    uint _e80 = params.has_history;
+    if ((_e80 == 1u)) {
+        local_1 = (_e77.z > 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool _e89 = local_1;
+    if (_e89) {
+        float x0_ = floor(_e77.x);
+        float y0_ = floor(_e77.y);
+        float3 _e96 = view.eye;
+        float d_2 = length((p_1 - _e96));
+        uint2 loop_bound = uint2(4294967295u, 4294967295u);
+        bool loop_init = true;
+        while(true) {
+            if (all(loop_bound == uint2(0u, 0u))) { break; }
+            loop_bound -= uint2(loop_bound.y == 0u, 1u);
+            if (!loop_init) {
+                uint _e177 = k;
+                k = (_e177 + 1u);
+            }
+            loop_init = false;
+            uint _e109 = k;
+            if ((_e109 < 4u)) {
+            } else {
+                break;
+            }
+            {
+                uint _e112 = k;
+                uint dx_2 = (_e112 & 1u);
+                uint _e115 = k;
+                uint dy_2 = (_e115 >> 1u);
+                float tx = (x0_ + float(dx_2));
+                float ty = (y0_ + float(dy_2));
+                if ((tx >= 0.0)) {
+                    local_2 = (ty >= 0.0);
+                } else {
+                    local_2 = false;
+                }
+                bool _e129 = local_2;
+                if (_e129) {
+                    uint _e134 = view.width;
+                    local_3 = (tx < float(_e134));
+                } else {
+                    local_3 = false;
+                }
+                bool _e138 = local_3;
+                if (_e138) {
+                    uint _e143 = view.height;
+                    local_4 = (ty < float(_e143));
+                } else {
+                    local_4 = false;
+                }
+                bool _e147 = local_4;
+                if (_e147) {
+                    int2 t_1 = int2(naga_f2i32(tx), naga_f2i32(ty));
+                    float4 tv = hist_value.Load(int3(t_1, int(0)));
+                    float4 ts = hist_surface.Load(int3(t_1, int(0)));
+                    float4 tn = hist_noise.Load(int3(t_1, int(0)));
+                    const float _e167 = history_tap_weight_motion((_e77.x - x0_), (_e77.y - y0_), dx_2, dy_2, n_5, ts.xyz, d_2, tn.z, tv.w);
+                    float4 _e168 = v;
+                    v = (_e168 + (tv * _e167));
+                    float4 _e171 = m;
+                    m = (_e171 + (tn * _e167));
+                    float _e174 = weight;
+                    weight = (_e174 + _e167);
+                }
+            }
+        }
+        float _e179 = weight;
+        if ((_e179 >= TEMPORAL_MIN_WEIGHT)) {
+            float4 _e182 = v;
+            float _e183 = weight;
+            hv = (_e182 / (_e183).xxxx);
+            float4 _e186 = m;
+            float _e187 = weight;
+            hn = (_e186 / (_e187).xxxx);
+        }
+    }
+    float4 _e190 = hv;
+    float _e192 = hn.y;
+    float _e195 = params.max_history;
+    const float4 _e196 = temporal_color(c_3, _e190, _e192, _e195);
+    out_tex[texel_2] = _e196;
+    next_value[texel_2] = _e196;
+    float _e201 = hn.x;
+    float _e203 = hn.y;
+    float _e205 = hv.w;
+    float3 _e209 = view.eye;
+    const float4 _e212 = temporal_moments(c_3, _e201, _e203, _e205, _e196.w, length((p_1 - _e209)));
+    next_noise[texel_2] = _e212;
+    next_surface[texel_2] = float4(n_5, dot(n_5, p_1));
+    return;
+}

@@ -1,0 +1,397 @@
+// language: metal1.0
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct TemporalParams {
+    metal::float4 c0_;
+    metal::float4 c1_;
+    metal::float4 c2_;
+    metal::float4 c3_;
+    metal::packed_float3 prev_eye;
+    float max_history;
+    uint has_history;
+    uint pad0_;
+    uint pad1_;
+    uint pad2_;
+};
+struct ViewParams {
+    metal::float4 c0_;
+    metal::float4 c1_;
+    metal::float4 c2_;
+    metal::float4 c3_;
+    metal::packed_float3 eye;
+    uint width;
+    uint height;
+    float background;
+    uint seed;
+    uint frame;
+    metal::packed_float3 f0_d;
+    float f90_d;
+};
+struct GbTexel {
+    metal::float4 position;
+    metal::float4 normal;
+};
+constant uint LIGHT_POINT = 0u;
+constant uint LIGHT_SPOT = 1u;
+constant uint LIGHT_IES = 2u;
+constant uint LIGHT_TRIANGLE = 3u;
+constant uint LIGHT_VPL = 4u;
+constant uint NO_LIGHT = 4294967295u;
+constant uint MAP_CAMERA = 0u;
+constant uint MAP_PERSPECTIVE = 1u;
+constant uint MAP_ORTHOGRAPHIC = 2u;
+constant float XI_STEP = 0.000000059604645;
+constant uint PICK_STREAM = 2654435769u;
+constant float TWO_PI = 6.2831855;
+constant float CULL_RADIUS_SCALE = 1.000001;
+constant float SPHERE_PAD = 0.00000047683716;
+constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
+constant float SPHERE_PAD_ABS = 0.000000000000000001;
+constant float INV_PI = 0.31830987;
+constant float MIN_D2_ = 0.000000000001;
+constant uint BSH_NONE = 4294967295u;
+constant uint RESERVOIR_FULL = 4294967295u;
+constant float GGX_ALPHA_MIN = 0.001;
+constant float RANGE_SCALE_MAX = 64.0;
+constant uint LIGHT_BVH_LEAF = 4294967295u;
+constant float ONE_MINUS_EPSILON = 0.99999994;
+constant float F32_MAX = 340282350000000000000000000000000000000.0;
+constant float DEPTH_NONE = 1000000000000000000000000000000.0;
+constant float DEPTH_SIGMA = 0.05;
+constant float COVER_WEIGHT = 0.1;
+constant uint NEAR_BLOCK = 64u;
+constant uint ROULETTE_DEPTH = 2u;
+constant float TEMPORAL_MAX_HISTORY = 32.0;
+constant float TEMPORAL_DEPTH_TOLERANCE = 0.01;
+constant float TEMPORAL_MOTION_DEPTH_TOLERANCE = 0.05;
+constant float TEMPORAL_NORMAL_COS = 0.9;
+constant float TEMPORAL_MIN_MOMENTS = 8.0;
+constant float TEMPORAL_CHANGED_HISTORY = 1.0;
+constant float TEMPORAL_CHANGE_LOW = 4.0;
+constant float TEMPORAL_CHANGE_HIGH = 8.0;
+constant float TEMPORAL_MIN_WEIGHT = 0.01;
+
+float luminance(
+    metal::float3 c
+) {
+    return metal::dot(c, metal::float3(0.2126, 0.7152, 0.0722));
+}
+
+metal::float3 reproject_motion(
+    float px,
+    float py,
+    float mx,
+    float my,
+    float width,
+    float height
+) {
+    return metal::float3(px - (mx * width), py - (my * height), 1.0);
+}
+
+float bilinear_weight(
+    float fx,
+    float fy,
+    uint dx,
+    uint dy
+) {
+    float wx = (dx == 1u) ? fx : (1.0 - fx);
+    float wy = (dy == 1u) ? fy : (1.0 - fy);
+    return wx * wy;
+}
+
+float temporal_change(
+    float l,
+    float m1_,
+    float noise,
+    float n
+) {
+    if (n < TEMPORAL_MIN_MOMENTS) {
+        return 0.0;
+    }
+    float sigma = metal::sqrt(metal::max(noise, 0.0) * (1.0 + (1.0 / n)));
+    float t = metal::abs(l - m1_) / ((sigma + (0.001 * metal::max(metal::abs(l), metal::abs(m1_)))) + 0.00000000000000000001);
+    return metal::clamp((t - TEMPORAL_CHANGE_LOW) / 4.0, 0.0, 1.0);
+}
+
+float next_history_length(
+    float n_1,
+    float lambda,
+    float max_history
+) {
+    return metal::min(((1.0 - lambda) * n_1) + 1.0, metal::max(max_history, 1.0));
+}
+
+float temporal_alpha(
+    float n_2
+) {
+    return 1.0 / metal::max(n_2, 1.0);
+}
+
+float history_tap_weight_motion(
+    float fx_1,
+    float fy_1,
+    uint dx_1,
+    uint dy_1,
+    metal::float3 n_3,
+    metal::float3 nh,
+    float d,
+    float dh,
+    float len
+) {
+    bool local_5 = {};
+    bool local_6 = {};
+    if (!((len <= 0.0))) {
+        local_5 = metal::abs(dh - d) > (TEMPORAL_MOTION_DEPTH_TOLERANCE * d);
+    } else {
+        local_5 = true;
+    }
+    bool _e20 = local_5;
+    if (!(_e20)) {
+        local_6 = metal::dot(n_3, nh) < TEMPORAL_NORMAL_COS;
+    } else {
+        local_6 = true;
+    }
+    bool _e28 = local_6;
+    if (_e28) {
+        return 0.0;
+    }
+    float _e30 = bilinear_weight(fx_1, fy_1, dx_1, dy_1);
+    return _e30;
+}
+
+metal::float4 temporal_color(
+    metal::float3 c_1,
+    metal::float4 h,
+    float noise_1,
+    float max_history_1
+) {
+    metal::float3 hc = metal::float3(h.x, h.y, h.z);
+    float _e8 = luminance(c_1);
+    float _e9 = luminance(hc);
+    float _e11 = temporal_change(_e8, _e9, noise_1, h.w);
+    float _e13 = next_history_length(h.w, _e11, max_history_1);
+    float _e15 = temporal_alpha(_e13);
+    metal::float3 v_1 = hc + ((c_1 - hc) * _e15);
+    return metal::float4(v_1.x, v_1.y, v_1.z, _e13);
+}
+
+metal::float4 temporal_moments(
+    metal::float3 c_2,
+    float last,
+    float noise_2,
+    float prev_len,
+    float len_1,
+    float depth
+) {
+    float _e6 = luminance(c_2);
+    if (prev_len <= 0.0) {
+        return metal::float4(_e6, 0.0, depth, 0.0);
+    }
+    float d_1 = _e6 - last;
+    float _e19 = temporal_alpha(len_1 - 1.0);
+    return metal::float4(_e6, noise_2 + ((((0.5 * d_1) * d_1) - noise_2) * _e19), depth, 0.0);
+}
+
+metal::float4 surface_at(
+    metal::int2 texel,
+    metal::texture2d<float, metal::access::sample> position_tex
+) {
+    metal::float4 p = position_tex.read(metal::uint2(texel), 0);
+    return (p.w > 0.0) ? metal::float4(p.xyz, 1.0) : metal::float4(0.0);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+GbTexel gbuffer_at(
+    uint i,
+    constant ViewParams& view,
+    metal::texture2d<float, metal::access::sample> position_tex,
+    metal::texture2d<float, metal::access::sample> normal_tex
+) {
+    bool local_7 = {};
+    uint _e3 = view.width;
+    uint _e8 = view.width;
+    metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
+    metal::float4 _e12 = surface_at(texel_1, position_tex);
+    metal::float4 _e15 = normal_tex.read(metal::uint2(texel_1), 0);
+    metal::float3 n_4 = _e15.xyz;
+    float len2_ = metal::dot(n_4, n_4);
+    if (_e12.w > 0.0) {
+        local_7 = len2_ > 0.0;
+    } else {
+        local_7 = false;
+    }
+    bool valid = local_7;
+    metal::float3 _e30 = view.eye;
+    metal::float3 v_2 = _e12.xyz - _e30;
+    metal::float4 position = metal::float4(_e12.xyz, valid ? 1.0 : 0.0);
+    metal::float4 normal = valid ? metal::float4(n_4 / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_2, v_2))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
+    return GbTexel {position, normal};
+}
+int naga_f2i32(float value) {
+    return static_cast<int>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+
+struct main_Input {
+};
+kernel void main_(
+  metal::uint3 gid [[thread_position_in_grid]]
+, constant ViewParams& view [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> position_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> normal_tex [[user(fake0)]]
+, constant TemporalParams& params [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> signal_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> hist_value [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> hist_noise [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> hist_surface [[user(fake0)]]
+, metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
+, metal::texture2d<float, metal::access::write> next_value [[user(fake0)]]
+, metal::texture2d<float, metal::access::write> next_noise [[user(fake0)]]
+, metal::texture2d<float, metal::access::write> next_surface [[user(fake0)]]
+, metal::texture2d<float, metal::access::sample> motion_tex [[user(fake0)]]
+) {
+    bool local = {};
+    metal::float4 hv = metal::float4(0.0);
+    metal::float4 hn = metal::float4(0.0);
+    bool local_1 = {};
+    metal::float4 v = metal::float4(0.0);
+    metal::float4 m = metal::float4(0.0);
+    float weight = 0.0;
+    uint k = 0u;
+    bool local_2 = {};
+    bool local_3 = {};
+    bool local_4 = {};
+    uint _e4 = view.width;
+    if (!((gid.x >= _e4))) {
+        uint _e12 = view.height;
+        local = gid.y >= _e12;
+    } else {
+        local = true;
+    }
+    bool _e15 = local;
+    if (_e15) {
+        return;
+    }
+    metal::int2 texel_2 = metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y));
+    uint _e24 = view.width;
+    GbTexel _e28 = gbuffer_at((gid.y * _e24) + gid.x, view, position_tex, normal_tex);
+    metal::float4 _e31 = signal_tex.read(metal::uint2(texel_2), 0);
+    metal::float3 c_3 = _e31.xyz;
+    if (_e28.position.w <= 0.0) {
+        out_tex.write(metal::float4(c_3, 0.0), metal::uint2(texel_2));
+        next_value.write(metal::float4(c_3, 0.0), metal::uint2(texel_2));
+        next_noise.write(metal::float4(0.0), metal::uint2(texel_2));
+        next_surface.write(metal::float4(0.0), metal::uint2(texel_2));
+        return;
+    }
+    metal::float3 p_1 = _e28.position.xyz;
+    metal::float3 n_5 = _e28.normal.xyz;
+    metal::float4 _e61 = motion_tex.read(metal::uint2(texel_2), 0);
+    metal::float2 motion = _e61.xy;
+    uint _e71 = view.width;
+    uint _e75 = view.height;
+    metal::float3 _e77 = reproject_motion(static_cast<float>(gid.x), static_cast<float>(gid.y), motion.x, motion.y, static_cast<float>(_e71), static_cast<float>(_e75));
+    uint _e80 = params.has_history;
+    if (_e80 == 1u) {
+        local_1 = _e77.z > 0.0;
+    } else {
+        local_1 = false;
+    }
+    bool _e89 = local_1;
+    if (_e89) {
+        float x0_ = metal::floor(_e77.x);
+        float y0_ = metal::floor(_e77.y);
+        metal::float3 _e96 = view.eye;
+        float d_2 = metal::length(p_1 - _e96);
+        uint2 loop_bound = uint2(4294967295u);
+        bool loop_init = true;
+        while(true) {
+            if (metal::all(loop_bound == uint2(0u))) { break; }
+            loop_bound -= uint2(loop_bound.y == 0u, 1u);
+            if (!loop_init) {
+                uint _e177 = k;
+                k = _e177 + 1u;
+            }
+            loop_init = false;
+            uint _e109 = k;
+            if (_e109 < 4u) {
+            } else {
+                break;
+            }
+            {
+                uint _e112 = k;
+                uint dx_2 = _e112 & 1u;
+                uint _e115 = k;
+                uint dy_2 = _e115 >> 1u;
+                float tx = x0_ + static_cast<float>(dx_2);
+                float ty = y0_ + static_cast<float>(dy_2);
+                if (tx >= 0.0) {
+                    local_2 = ty >= 0.0;
+                } else {
+                    local_2 = false;
+                }
+                bool _e129 = local_2;
+                if (_e129) {
+                    uint _e134 = view.width;
+                    local_3 = tx < static_cast<float>(_e134);
+                } else {
+                    local_3 = false;
+                }
+                bool _e138 = local_3;
+                if (_e138) {
+                    uint _e143 = view.height;
+                    local_4 = ty < static_cast<float>(_e143);
+                } else {
+                    local_4 = false;
+                }
+                bool _e147 = local_4;
+                if (_e147) {
+                    metal::int2 t_1 = metal::int2(naga_f2i32(tx), naga_f2i32(ty));
+                    metal::float4 tv = hist_value.read(metal::uint2(t_1), 0);
+                    metal::float4 ts = hist_surface.read(metal::uint2(t_1), 0);
+                    metal::float4 tn = hist_noise.read(metal::uint2(t_1), 0);
+                    float _e167 = history_tap_weight_motion(_e77.x - x0_, _e77.y - y0_, dx_2, dy_2, n_5, ts.xyz, d_2, tn.z, tv.w);
+                    metal::float4 _e168 = v;
+                    v = _e168 + (tv * _e167);
+                    metal::float4 _e171 = m;
+                    m = _e171 + (tn * _e167);
+                    float _e174 = weight;
+                    weight = _e174 + _e167;
+                }
+            }
+        }
+        float _e179 = weight;
+        if (_e179 >= TEMPORAL_MIN_WEIGHT) {
+            metal::float4 _e182 = v;
+            float _e183 = weight;
+            hv = _e182 / metal::float4(_e183);
+            metal::float4 _e186 = m;
+            float _e187 = weight;
+            hn = _e186 / metal::float4(_e187);
+        }
+    }
+    metal::float4 _e190 = hv;
+    float _e192 = hn.y;
+    float _e195 = params.max_history;
+    metal::float4 _e196 = temporal_color(c_3, _e190, _e192, _e195);
+    out_tex.write(_e196, metal::uint2(texel_2));
+    next_value.write(_e196, metal::uint2(texel_2));
+    float _e201 = hn.x;
+    float _e203 = hn.y;
+    float _e205 = hv.w;
+    metal::float3 _e209 = view.eye;
+    metal::float4 _e212 = temporal_moments(c_3, _e201, _e203, _e205, _e196.w, metal::length(p_1 - _e209));
+    next_noise.write(_e212, metal::uint2(texel_2));
+    next_surface.write(metal::float4(n_5, metal::dot(n_5, p_1)), metal::uint2(texel_2));
+    return;
+}

@@ -1,0 +1,336 @@
+struct TemporalParams {
+    c0_: vec4<f32>,
+    c1_: vec4<f32>,
+    c2_: vec4<f32>,
+    c3_: vec4<f32>,
+    prev_eye: vec3<f32>,
+    max_history: f32,
+    has_history: u32,
+    pad0_: u32,
+    pad1_: u32,
+    pad2_: u32,
+}
+
+struct ViewParams {
+    c0_: vec4<f32>,
+    c1_: vec4<f32>,
+    c2_: vec4<f32>,
+    c3_: vec4<f32>,
+    eye: vec3<f32>,
+    width: u32,
+    height: u32,
+    background: f32,
+    seed: u32,
+    frame: u32,
+    f0_d: vec3<f32>,
+    f90_d: f32,
+}
+
+struct GbTexel {
+    position: vec4<f32>,
+    normal: vec4<f32>,
+}
+
+const LIGHT_POINT: u32 = 0u;
+const LIGHT_SPOT: u32 = 1u;
+const LIGHT_IES: u32 = 2u;
+const LIGHT_TRIANGLE: u32 = 3u;
+const LIGHT_VPL: u32 = 4u;
+const NO_LIGHT: u32 = 4294967295u;
+const MAP_CAMERA: u32 = 0u;
+const MAP_PERSPECTIVE: u32 = 1u;
+const MAP_ORTHOGRAPHIC: u32 = 2u;
+const XI_STEP: f32 = 0.000000059604645f;
+const PICK_STREAM: u32 = 2654435769u;
+const TWO_PI: f32 = 6.2831855f;
+const CULL_RADIUS_SCALE: f32 = 1.000001f;
+const SPHERE_PAD: f32 = 0.00000047683716f;
+const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
+const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
+const INV_PI: f32 = 0.31830987f;
+const MIN_D2_: f32 = 0.000000000001f;
+const BSH_NONE: u32 = 4294967295u;
+const RESERVOIR_FULL: u32 = 4294967295u;
+const GGX_ALPHA_MIN: f32 = 0.001f;
+const RANGE_SCALE_MAX: f32 = 64f;
+const LIGHT_BVH_LEAF: u32 = 4294967295u;
+const ONE_MINUS_EPSILON: f32 = 0.99999994f;
+const F32_MAX: f32 = 340282350000000000000000000000000000000f;
+const DEPTH_NONE: f32 = 1000000000000000000000000000000f;
+const DEPTH_SIGMA: f32 = 0.05f;
+const COVER_WEIGHT: f32 = 0.1f;
+const NEAR_BLOCK: u32 = 64u;
+const ROULETTE_DEPTH: u32 = 2u;
+const TEMPORAL_MAX_HISTORY: f32 = 32f;
+const TEMPORAL_DEPTH_TOLERANCE: f32 = 0.01f;
+const TEMPORAL_MOTION_DEPTH_TOLERANCE: f32 = 0.05f;
+const TEMPORAL_NORMAL_COS: f32 = 0.9f;
+const TEMPORAL_MIN_MOMENTS: f32 = 8f;
+const TEMPORAL_CHANGED_HISTORY: f32 = 1f;
+const TEMPORAL_CHANGE_LOW: f32 = 4f;
+const TEMPORAL_CHANGE_HIGH: f32 = 8f;
+const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
+
+@group(0) @binding(0) 
+var<uniform> view: ViewParams;
+@group(0) @binding(1) 
+var position_tex: texture_2d<f32>;
+@group(0) @binding(2) 
+var normal_tex: texture_2d<f32>;
+@group(0) @binding(3) 
+var<uniform> params: TemporalParams;
+@group(0) @binding(4) 
+var signal_tex: texture_2d<f32>;
+@group(0) @binding(5) 
+var hist_value: texture_2d<f32>;
+@group(0) @binding(6) 
+var hist_noise: texture_2d<f32>;
+@group(0) @binding(7) 
+var hist_surface: texture_2d<f32>;
+@group(0) @binding(8) 
+var out_tex: texture_storage_2d<rgba32float,write>;
+@group(0) @binding(9) 
+var next_value: texture_storage_2d<rgba32float,write>;
+@group(0) @binding(10) 
+var next_noise: texture_storage_2d<rgba32float,write>;
+@group(0) @binding(11) 
+var next_surface: texture_storage_2d<rgba32float,write>;
+@group(0) @binding(12) 
+var motion_tex: texture_2d<f32>;
+
+fn luminance(c: vec3<f32>) -> f32 {
+    return dot(c, vec3<f32>(0.2126f, 0.7152f, 0.0722f));
+}
+
+fn reproject_motion(px: f32, py: f32, mx: f32, my: f32, width: f32, height: f32) -> vec3<f32> {
+    return vec3<f32>((px - (mx * width)), (py - (my * height)), 1f);
+}
+
+fn bilinear_weight(fx: f32, fy: f32, dx: u32, dy: u32) -> f32 {
+    let wx = select((1f - fx), fx, (dx == 1u));
+    let wy = select((1f - fy), fy, (dy == 1u));
+    return (wx * wy);
+}
+
+fn temporal_change(l: f32, m1_: f32, noise: f32, n: f32) -> f32 {
+    if (n < TEMPORAL_MIN_MOMENTS) {
+        return 0f;
+    }
+    let sigma = sqrt((max(noise, 0f) * (1f + (1f / n))));
+    let t = (abs((l - m1_)) / ((sigma + (0.001f * max(abs(l), abs(m1_)))) + 0.00000000000000000001f));
+    return clamp(((t - TEMPORAL_CHANGE_LOW) / 4f), 0f, 1f);
+}
+
+fn next_history_length(n_1: f32, lambda: f32, max_history: f32) -> f32 {
+    return min((((1f - lambda) * n_1) + 1f), max(max_history, 1f));
+}
+
+fn temporal_alpha(n_2: f32) -> f32 {
+    return (1f / max(n_2, 1f));
+}
+
+fn history_tap_weight_motion(fx_1: f32, fy_1: f32, dx_1: u32, dy_1: u32, n_3: vec3<f32>, nh: vec3<f32>, d: f32, dh: f32, len: f32) -> f32 {
+    var local_5: bool;
+    var local_6: bool;
+
+    if !((len <= 0f)) {
+        local_5 = (abs((dh - d)) > (TEMPORAL_MOTION_DEPTH_TOLERANCE * d));
+    } else {
+        local_5 = true;
+    }
+    let _e20 = local_5;
+    if !(_e20) {
+        local_6 = (dot(n_3, nh) < TEMPORAL_NORMAL_COS);
+    } else {
+        local_6 = true;
+    }
+    let _e28 = local_6;
+    if _e28 {
+        return 0f;
+    }
+    let _e30 = bilinear_weight(fx_1, fy_1, dx_1, dy_1);
+    return _e30;
+}
+
+fn temporal_color(c_1: vec3<f32>, h: vec4<f32>, noise_1: f32, max_history_1: f32) -> vec4<f32> {
+    let hc = vec3<f32>(h.x, h.y, h.z);
+    let _e8 = luminance(c_1);
+    let _e9 = luminance(hc);
+    let _e11 = temporal_change(_e8, _e9, noise_1, h.w);
+    let _e13 = next_history_length(h.w, _e11, max_history_1);
+    let _e15 = temporal_alpha(_e13);
+    let v_1 = (hc + ((c_1 - hc) * _e15));
+    return vec4<f32>(v_1.x, v_1.y, v_1.z, _e13);
+}
+
+fn temporal_moments(c_2: vec3<f32>, last: f32, noise_2: f32, prev_len: f32, len_1: f32, depth: f32) -> vec4<f32> {
+    let _e6 = luminance(c_2);
+    if (prev_len <= 0f) {
+        return vec4<f32>(_e6, 0f, depth, 0f);
+    }
+    let d_1 = (_e6 - last);
+    let _e19 = temporal_alpha((len_1 - 1f));
+    return vec4<f32>(_e6, (noise_2 + ((((0.5f * d_1) * d_1) - noise_2) * _e19)), depth, 0f);
+}
+
+fn surface_at(texel: vec2<i32>) -> vec4<f32> {
+    let p = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p.xyz, 1f), (p.w > 0f));
+}
+
+fn gbuffer_at(i: u32) -> GbTexel {
+    var local_7: bool;
+
+    let _e3 = view.width;
+    let _e8 = view.width;
+    let texel_1 = vec2<i32>(i32((i % _e3)), i32((i / _e8)));
+    let _e12 = surface_at(texel_1);
+    let _e15 = textureLoad(normal_tex, texel_1, 0i);
+    let n_4 = _e15.xyz;
+    let len2_ = dot(n_4, n_4);
+    if (_e12.w > 0f) {
+        local_7 = (len2_ > 0f);
+    } else {
+        local_7 = false;
+    }
+    let valid = local_7;
+    let _e30 = view.eye;
+    let v_2 = (_e12.xyz - _e30);
+    let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_4 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid);
+    return GbTexel(position, normal);
+}
+
+@compute @workgroup_size(8, 8, 1) 
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+    var local: bool;
+    var hv: vec4<f32> = vec4(0f);
+    var hn: vec4<f32> = vec4(0f);
+    var local_1: bool;
+    var v: vec4<f32> = vec4(0f);
+    var m: vec4<f32> = vec4(0f);
+    var weight: f32 = 0f;
+    var k: u32 = 0u;
+    var local_2: bool;
+    var local_3: bool;
+    var local_4: bool;
+
+    let _e4 = view.width;
+    if !((gid.x >= _e4)) {
+        let _e12 = view.height;
+        local = (gid.y >= _e12);
+    } else {
+        local = true;
+    }
+    let _e15 = local;
+    if _e15 {
+        return;
+    }
+    let texel_2 = vec2<i32>(i32(gid.x), i32(gid.y));
+    let _e24 = view.width;
+    let _e28 = gbuffer_at(((gid.y * _e24) + gid.x));
+    let _e31 = textureLoad(signal_tex, texel_2, 0i);
+    let c_3 = _e31.xyz;
+    if (_e28.position.w <= 0f) {
+        textureStore(out_tex, texel_2, vec4<f32>(c_3, 0f));
+        textureStore(next_value, texel_2, vec4<f32>(c_3, 0f));
+        textureStore(next_noise, texel_2, vec4(0f));
+        textureStore(next_surface, texel_2, vec4(0f));
+        return;
+    }
+    let p_1 = _e28.position.xyz;
+    let n_5 = _e28.normal.xyz;
+    let _e61 = textureLoad(motion_tex, texel_2, 0i);
+    let motion = _e61.xy;
+    let _e71 = view.width;
+    let _e75 = view.height;
+    let _e77 = reproject_motion(f32(gid.x), f32(gid.y), motion.x, motion.y, f32(_e71), f32(_e75));
+    let _e80 = params.has_history;
+    if (_e80 == 1u) {
+        local_1 = (_e77.z > 0f);
+    } else {
+        local_1 = false;
+    }
+    let _e89 = local_1;
+    if _e89 {
+        let x0_ = floor(_e77.x);
+        let y0_ = floor(_e77.y);
+        let _e96 = view.eye;
+        let d_2 = length((p_1 - _e96));
+        loop {
+            let _e109 = k;
+            if (_e109 < 4u) {
+            } else {
+                break;
+            }
+            {
+                let _e112 = k;
+                let dx_2 = (_e112 & 1u);
+                let _e115 = k;
+                let dy_2 = (_e115 >> 1u);
+                let tx = (x0_ + f32(dx_2));
+                let ty = (y0_ + f32(dy_2));
+                if (tx >= 0f) {
+                    local_2 = (ty >= 0f);
+                } else {
+                    local_2 = false;
+                }
+                let _e129 = local_2;
+                if _e129 {
+                    let _e134 = view.width;
+                    local_3 = (tx < f32(_e134));
+                } else {
+                    local_3 = false;
+                }
+                let _e138 = local_3;
+                if _e138 {
+                    let _e143 = view.height;
+                    local_4 = (ty < f32(_e143));
+                } else {
+                    local_4 = false;
+                }
+                let _e147 = local_4;
+                if _e147 {
+                    let t_1 = vec2<i32>(i32(tx), i32(ty));
+                    let tv = textureLoad(hist_value, t_1, 0i);
+                    let ts = textureLoad(hist_surface, t_1, 0i);
+                    let tn = textureLoad(hist_noise, t_1, 0i);
+                    let _e167 = history_tap_weight_motion((_e77.x - x0_), (_e77.y - y0_), dx_2, dy_2, n_5, ts.xyz, d_2, tn.z, tv.w);
+                    let _e168 = v;
+                    v = (_e168 + (tv * _e167));
+                    let _e171 = m;
+                    m = (_e171 + (tn * _e167));
+                    let _e174 = weight;
+                    weight = (_e174 + _e167);
+                }
+            }
+            continuing {
+                let _e177 = k;
+                k = (_e177 + 1u);
+            }
+        }
+        let _e179 = weight;
+        if (_e179 >= TEMPORAL_MIN_WEIGHT) {
+            let _e182 = v;
+            let _e183 = weight;
+            hv = (_e182 / vec4(_e183));
+            let _e186 = m;
+            let _e187 = weight;
+            hn = (_e186 / vec4(_e187));
+        }
+    }
+    let _e190 = hv;
+    let _e192 = hn.y;
+    let _e195 = params.max_history;
+    let _e196 = temporal_color(c_3, _e190, _e192, _e195);
+    textureStore(out_tex, texel_2, _e196);
+    textureStore(next_value, texel_2, _e196);
+    let _e201 = hn.x;
+    let _e203 = hn.y;
+    let _e205 = hv.w;
+    let _e209 = view.eye;
+    let _e212 = temporal_moments(c_3, _e201, _e203, _e205, _e196.w, length((p_1 - _e209)));
+    textureStore(next_noise, texel_2, _e212);
+    textureStore(next_surface, texel_2, vec4<f32>(n_5, dot(n_5, p_1)));
+    return;
+}
