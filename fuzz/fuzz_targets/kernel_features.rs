@@ -25,6 +25,8 @@ struct Input {
     shadows: bool,
     surface: u8,
     direct_output: u8,
+    glossy: bool,
+    motion_vectors: bool,
 }
 
 fuzz_target!(|i: Input| {
@@ -44,6 +46,8 @@ fuzz_target!(|i: Input| {
         shadows: i.shadows,
         surface: [SurfaceSource::Position, SurfaceSource::Depth, SurfaceSource::R32Depth][i.surface as usize % 3],
         direct_output: [DirectOutput::Irradiance, DirectOutput::Radiance, DirectOutput::Split][i.direct_output as usize % 3],
+        glossy: i.glossy,
+        motion_vectors: i.motion_vectors,
     };
     match generate(kernel, &features) {
         Ok(wgsl) => assert!(wgsl.contains("fn "), "{kernel:?}: empty source"),

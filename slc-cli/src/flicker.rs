@@ -8,7 +8,15 @@
 //! stratified ξ sequence, `xi_for`), the same accumulation over
 //! independent ξ (a new seed per frame: what the stratification buys),
 //! and the unculled interleaved frame.
+//!
+//! `--backend gpu` runs the same sequences on slc-wgpu's whole frame
+//! (`GpuVplFrame`, its `set_temporal` and `set_camera`), the reference
+//! every VPL at every pixel of the frame's own rasterized G-buffer (as
+//! `slc bench --backend gpu` does): on lavapipe a check of correctness,
+//! not of speed (default 128×128, 4,096 VPLs: the reference's loop stays
+//! under lavapipe's 65,535 iterations).
 
+use crate::backends::Backend;
 use crate::bench::BenchArgs;
 use anyhow::{Context, anyhow};
 use glam::{Quat, Vec3};
@@ -108,6 +116,8 @@ pub struct SequenceReport {
 /// The whole flicker report.
 #[derive(Serialize, Clone, Debug)]
 pub struct FlickerReport {
+    /// `cpu (SIMD path)` or `gpu: adapter`.
+    pub backend: String,
     /// Scene name.
     pub scene: String,
     /// Image size.
@@ -123,10 +133,8 @@ pub struct FlickerReport {
     /// The temporal stage's longest history.
     pub max_history: f32,
     /// Milliseconds of one temporal accumulation of the irradiance at this
-    /// size (fastest of the bench's repeats).
-    pub temporal_ms: f64,
-    /// The CPU's SIMD path.
-    pub simd: String,
+    /// size on the CPU (fastest of the bench's repeats; none on the GPU).
+    pub temporal_ms: Option<f64>,
     /// Every sequence.
     pub sequences: Vec<SequenceReport>,
 }
@@ -136,51 +144,160 @@ const TEMPORAL: &str = "slc, temporal";
 const INDEPENDENT: &str = "slc, temporal, independent xi";
 const UNCULLED: &str = "unculled, spatial filter";
 
-/// Runs the three sequences on the CPU and prints, writes and plots the
-/// report.
+/// One backend's frames for the flicker sequences: the camera and light
+/// of the frame, then each method's image and the frame's reference.
+trait Frames {
+    /// Moves the camera and the light (only what changed: a moved light is
+    /// a reported change for the temporal stage).
+    fn pose(&mut self, camera: &Camera, light: &PrimaryLight) -> anyhow::Result<()>;
+    /// Every VPL at every pixel.
+    fn reference(&mut self) -> anyhow::Result<Image>;
+    /// [spatial filter only, temporal, temporal over independent ξ,
+    /// unculled] for frame `f` of SLC settings `slc` (the independent ones
+    /// `fresh`).
+    fn methods(&mut self, slc: &VplSettings, fresh: &VplSettings) -> anyhow::Result<Vec<Image>>;
+    /// Forgets the accumulated histories (a new sequence).
+    fn reset(&mut self);
+}
+
+/// The CPU's: one context, histories per accumulated method.
+struct CpuFrames {
+    ctx: slc_cpu::vpl::VplContext,
+    history: FrameHistory,
+    independent: FrameHistory,
+    ts: TemporalSettings,
+}
+
+impl Frames for CpuFrames {
+    fn pose(&mut self, camera: &Camera, light: &PrimaryLight) -> anyhow::Result<()> {
+        if self.ctx.scene().camera != *camera {
+            self.ctx.set_camera(*camera)?;
+        }
+        if self.ctx.scene().primary != *light {
+            self.ctx.set_primary(*light)?;
+        }
+        Ok(())
+    }
+
+    fn reference(&mut self) -> anyhow::Result<Image> {
+        let s = VplSettings { method: VplMethod::Reference, ..VplSettings::default() };
+        Ok(self.ctx.render(&s)?.image)
+    }
+
+    fn methods(&mut self, slc: &VplSettings, fresh: &VplSettings) -> anyhow::Result<Vec<Image>> {
+        let shaded = self.ctx.shade(slc)?;
+        let spatial = self.ctx.finish(shaded.clone(), slc);
+        let temporal = self.ctx.finish_accumulated(shaded, slc, &mut self.history, &self.ts)?;
+        let indep = self.ctx.render_accumulated(fresh, &mut self.independent, &self.ts)?;
+        let unculled = self.ctx.render(&VplSettings { method: VplMethod::None, ..*slc })?;
+        Ok(vec![spatial.image, temporal.image, indep.image, unculled.image])
+    }
+
+    fn reset(&mut self) {
+        self.history.reset();
+        self.independent.reset();
+    }
+}
+
+/// The GPU's: a plain frame (spatial filter, unculled, the reference's
+/// inputs) and two accumulating ones.
+struct GpuFrames {
+    gpu: slc_wgpu::GpuContext,
+    plain: slc_wgpu::frame::GpuVplFrame,
+    accumulated: slc_wgpu::frame::GpuVplFrame,
+    independent: slc_wgpu::frame::GpuVplFrame,
+    pose: Option<(Camera, PrimaryLight)>,
+}
+
+impl Frames for GpuFrames {
+    fn pose(&mut self, camera: &Camera, light: &PrimaryLight) -> anyhow::Result<()> {
+        let (old_camera, old_light) = self.pose.map_or((None, None), |(c, l)| (Some(c), Some(l)));
+        for f in [&mut self.plain, &mut self.accumulated, &mut self.independent] {
+            if old_camera != Some(*camera) {
+                f.set_camera(camera)?;
+            }
+            if old_light != Some(*light) {
+                f.set_primary(light)?;
+            }
+        }
+        self.pose = Some((*camera, *light));
+        Ok(())
+    }
+
+    fn reference(&mut self) -> anyhow::Result<Image> {
+        let s = VplSettings { method: VplMethod::None, ..VplSettings::default() };
+        self.plain.render(&slc_wgpu::frame::indirect_settings(&s, self.plain.min_distance())?)?;
+        let inputs = self.plain.read_inputs()?;
+        let shaded = slc_wgpu::vpl::GpuVpl::new(&self.gpu, &inputs)?.shade(&VplSettings { method: VplMethod::Reference, ..s })?;
+        Ok(self.plain.compose_with(&inputs, &shaded.irradiance, &shaded.specular)?)
+    }
+
+    fn methods(&mut self, slc: &VplSettings, fresh: &VplSettings) -> anyhow::Result<Vec<Image>> {
+        let on = |f: &slc_wgpu::frame::GpuVplFrame, s: &VplSettings| slc_wgpu::frame::indirect_settings(s, f.min_distance());
+        let spatial = self.plain.render(&on(&self.plain, slc)?)?.image;
+        let temporal = self.accumulated.render(&on(&self.accumulated, slc)?)?.image;
+        let indep = self.independent.render(&on(&self.independent, fresh)?)?.image;
+        let unculled = self.plain.render(&on(&self.plain, &VplSettings { method: VplMethod::None, ..*slc })?)?.image;
+        Ok(vec![spatial, temporal, indep, unculled])
+    }
+
+    fn reset(&mut self) {
+        self.accumulated.reset_temporal();
+        self.independent.reset_temporal();
+    }
+}
+
+/// Runs the three sequences on the chosen backend and prints, writes and
+/// plots the report.
 pub fn run(a: &BenchArgs, frames: u32) -> anyhow::Result<()> {
     if frames < 2 {
         return Err(anyhow!("--frames {frames}: a flicker sequence needs at least 2 frames"));
     }
+    let gpu = a.scene.backend == Backend::Gpu;
     let mut args = a.scene.clone();
     // The reference shades every VPL at every pixel every frame: a smaller
-    // default image than the frame bench's.
-    args.width = args.width.or(Some(256));
-    args.height = args.height.or(Some(256));
-    let mut loaded = args.load()?;
-    let ctx = &mut loaded.ctx;
-    let (base_camera, base_primary, diagonal) = (ctx.scene().camera, ctx.scene().primary, ctx.scene().diagonal());
-    let error_bound = *a.error_bounds.iter().find(|&&e| e == VplSettings::default().error_bound).unwrap_or(&VplSettings::default().error_bound);
-    let slc = VplSettings { method: VplMethod::Slc, error_bound, exposure: loaded.exposure, seed: a.seed, ..VplSettings::default() };
-    let unculled = VplSettings { method: VplMethod::None, ..slc };
-    let reference = VplSettings { method: VplMethod::Reference, ..slc };
+    // default image than the frame bench's (on lavapipe smaller still, and
+    // few enough VPLs for its loop limit).
+    let (side, vpls) = if gpu { (128, 4096) } else { (256, 65536) };
+    args.width = args.width.or(Some(side));
+    args.height = args.height.or(Some(side));
+    args.vpls = args.vpls.or(Some(vpls));
+    let r = args.resolve()?;
+    let (base_camera, base_primary, diagonal) = (r.scene.camera, r.scene.primary, r.scene.diagonal());
+    let error_bound = VplSettings::default().error_bound;
+    let slc = VplSettings { method: VplMethod::Slc, error_bound, exposure: r.exposure, seed: a.seed, ..VplSettings::default() };
     let ts = TemporalSettings::default();
+    let (mut runner, backend): (Box<dyn Frames>, String) = if gpu {
+        let g = crate::backends::gpu_context(Backend::Gpu)?.context("no GPU context")?;
+        let make = |temporal: bool| -> anyhow::Result<slc_wgpu::frame::GpuVplFrame> {
+            let mut f = args.gpu_frame(&g, &r)?;
+            f.set_temporal(temporal.then_some(ts))?;
+            Ok(f)
+        };
+        let (plain, accumulated, independent) = (make(false)?, make(true)?, make(true)?);
+        let backend = format!("gpu: {}", g.describe());
+        (Box::new(GpuFrames { gpu: g, plain, accumulated, independent, pose: None }), backend)
+    } else {
+        let ctx = slc_cpu::vpl::VplContext::new(&r.scene, r.width, r.height, r.rsm_size, args.min_distance)?;
+        let (history, independent) = (FrameHistory::new(r.width, r.height)?, FrameHistory::new(r.width, r.height)?);
+        let backend = format!("cpu ({} loops)", slc_cpu::simd::SimdPath::best().name());
+        (Box::new(CpuFrames { ctx, history, independent, ts }), backend)
+    };
     let bar = crate::bench::progress(Sequence::ALL.len() * frames as usize)?;
     let mut sequences = Vec::new();
     for seq in Sequence::ALL {
-        let mut history = FrameHistory::new(loaded.width, loaded.height)?;
-        let mut independent = FrameHistory::new(loaded.width, loaded.height)?;
+        runner.reset();
         let names = [SPATIAL, TEMPORAL, INDEPENDENT, UNCULLED];
         let mut curves: Vec<Curve> = names.iter().map(|m| Curve { method: m.to_string(), rmse: Vec::new(), temporal_rmse: Vec::new() }).collect();
         let mut previous: Option<(Image, Vec<Image>)> = None;
         let mut reference_temporal = Vec::new();
         for f in 0..frames {
             bar.set_message(format!("{} frame {f}", seq.name()));
-            if seq == Sequence::Orbit {
-                ctx.set_camera(seq.camera(&base_camera, f, frames))?;
-            }
-            if seq == Sequence::Light {
-                ctx.set_primary(seq.primary(&base_primary, diagonal, f, frames))?;
-            }
-            let reference = ctx.render(&reference)?.image;
+            runner.pose(&seq.camera(&base_camera, f, frames), &seq.primary(&base_primary, diagonal, f, frames))?;
+            let reference = runner.reference()?;
             let this = VplSettings { frame: f, ..slc };
-            let shaded = ctx.shade(&this)?;
-            let spatial = ctx.finish(shaded.clone(), &this);
-            let temporal = ctx.finish_accumulated(shaded, &this, &mut history, &ts)?;
             let fresh = VplSettings { seed: a.seed.wrapping_add(f.wrapping_mul(0x9e37_79b9)), frame: 0, ..slc };
-            let indep = ctx.render_accumulated(&fresh, &mut independent, &ts)?;
-            let unculled = ctx.render(&unculled)?;
-            let images = vec![spatial.image, temporal.image, indep.image, unculled.image];
+            let images = runner.methods(&this, &fresh)?;
             for (c, img) in curves.iter_mut().zip(&images) {
                 c.rmse.push(img.rmse(&reference));
             }
@@ -196,29 +313,33 @@ pub fn run(a: &BenchArgs, frames: u32) -> anyhow::Result<()> {
         sequences.push(SequenceReport { sequence: seq, reference_temporal_rmse: reference_temporal, curves });
     }
     bar.finish_and_clear();
-    // The temporal stage's own cost at this size, on a frame's irradiance.
-    ctx.set_camera(base_camera)?;
-    ctx.set_primary(base_primary)?;
-    let e = ctx.shade(&slc)?.irradiance;
-    let gb = &ctx.inputs().gbuffer;
-    let view = TemporalView::of_camera(&base_camera, loaded.width, loaded.height);
-    let mut t = Temporal::new(loaded.width, loaded.height)?;
-    let mut temporal_ms = f64::MAX;
-    for _ in 0..a.repeat.max(3) {
-        let t0 = Instant::now();
-        t.accumulate(&e, gb, &view, &ts)?;
-        temporal_ms = temporal_ms.min(t0.elapsed().as_secs_f64() * 1e3);
-    }
+    // The temporal stage's own cost at this size, on the CPU, on a frame's
+    // irradiance.
+    let temporal_ms = if gpu {
+        None
+    } else {
+        let ctx = slc_cpu::vpl::VplContext::new(&r.scene, r.width, r.height, r.rsm_size, args.min_distance)?;
+        let e = ctx.shade(&slc)?.irradiance;
+        let view = TemporalView::of_camera(&base_camera, r.width, r.height);
+        let mut t = Temporal::new(r.width, r.height)?;
+        let mut best = f64::MAX;
+        for _ in 0..a.repeat.max(3) {
+            let t0 = Instant::now();
+            t.accumulate(&e, &ctx.inputs().gbuffer, &view, &ts)?;
+            best = best.min(t0.elapsed().as_secs_f64() * 1e3);
+        }
+        Some(best)
+    };
     let report = FlickerReport {
-        scene: ctx.scene().name.clone(),
-        width: loaded.width,
-        height: loaded.height,
-        vpls: ctx.vpls().len(),
+        backend,
+        scene: r.scene.name.clone(),
+        width: r.width,
+        height: r.height,
+        vpls: (r.rsm_size as usize).pow(2),
         frames,
         error_bound,
         max_history: ts.max_history,
         temporal_ms,
-        simd: slc_cpu::simd::SimdPath::best().name().into(),
         sequences,
     };
     print_report(&report);
@@ -241,9 +362,11 @@ fn mean(v: &[f64]) -> f64 {
 
 /// The summary the targets are stated in, then every curve's mean.
 fn print_report(r: &FlickerReport) {
+    let cost =
+        r.temporal_ms.map_or("lavapipe and other software adapters check correctness, not speed".into(), |ms| format!("temporal stage {ms:.2} ms"));
     println!(
-        "{} {}x{}, {} VPLs, {} frames per sequence, slc eps = {}, history <= {} frames; temporal stage {:.2} ms on the CPU ({})",
-        r.scene, r.width, r.height, r.vpls, r.frames, r.error_bound, r.max_history, r.temporal_ms, r.simd
+        "{} {}x{}, {} VPLs, {} frames per sequence, slc eps = {}, history <= {} frames, {}; {cost}",
+        r.scene, r.width, r.height, r.vpls, r.frames, r.error_bound, r.max_history, r.backend
     );
     println!("{:<8} {:<32} {:>12} {:>12} {:>12}", "sequence", "method", "mean rmse", "last rmse", "temporal rmse");
     for s in &r.sequences {

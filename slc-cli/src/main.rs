@@ -393,9 +393,10 @@ pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> anyhow::Result<(
 /// kernels (the raster kernel's GLSL as one file per entry point,
 /// `scene_raster.vs_main.glsl` …), and the glossy variants of the VPL
 /// kernels that have one (`vpl_tiled_{slc,clamp,none}_glossy`,
-/// `vpl_near_glossy`, `irradiance_export_glossy`, `frame_compose_glossy`).
+/// `vpl_near_glossy`, `irradiance_export_glossy`, `frame_compose_glossy`),
+/// and the temporal pass (`temporal`, `temporal_motion`).
 fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
-    use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, Selection, SurfaceSource, generate_module, translate};
+    use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, OutputFormat, Selection, SurfaceSource, generate_module, translate};
     let lights = LightSet::parse(lights)?;
     std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
     let base = Features { lights, reservoir_k, ..Features::default() };
@@ -432,6 +433,11 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
     for k in [Kernel::VplNear, Kernel::IrradianceExport, Kernel::FrameCompose] {
         jobs.push((format!("{}_glossy", k.name()), k, glossy));
     }
+    // The temporal pass: reprojection by the camera (world positions in, as
+    // the frame's kernels) and by the engine's motion vectors.
+    let temporal = Features { lights: vpl, output_format: OutputFormat::Rgba32Float, ..base };
+    jobs.push(("temporal".into(), Kernel::Temporal, temporal));
+    jobs.push(("temporal_motion".into(), Kernel::Temporal, Features { motion_vectors: true, ..temporal }));
     let write = |name: &str, ext: &str, bytes: &[u8]| {
         let p = out.join(format!("{name}.{ext}"));
         std::fs::write(&p, bytes).with_context(|| format!("cannot write {}", p.display()))

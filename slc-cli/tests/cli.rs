@@ -269,7 +269,7 @@ fn gltf_and_glossy_scenes_render() {
 fn shaders_command_exports_every_kernel() {
     let d = tempdir("shaders");
     let text = ok(&d, &["shaders", "--out", "k", "--lights", "point,triangle"]);
-    assert!(text.contains("23 kernels"), "{text}");
+    assert!(text.contains("25 kernels"), "{text}");
     for entry in ["vs_main", "fs_gbuffer", "fs_rsm", "fs_shadow"] {
         let p = d.join("k").join(format!("scene_raster.{entry}.glsl"));
         assert!(std::fs::metadata(&p).map(|m| m.len() > 100).unwrap_or(false), "{} missing or empty", p.display());
@@ -278,7 +278,7 @@ fn shaders_command_exports_every_kernel() {
     let names = names.into_iter().chain(["vpl_tiled_slc", "vpl_tiled_clamp", "vpl_tiled_none"]);
     let frame = ["vpl_denoise", "vpl_near", "vpl_pack", "irradiance_export", "primary_direct", "frame_compose"];
     let glossy = ["vpl_tiled_slc_glossy", "vpl_tiled_clamp_glossy", "vpl_tiled_none_glossy", "vpl_near_glossy", "irradiance_export_glossy"];
-    let frame = frame.into_iter().chain(glossy).chain(["frame_compose_glossy"]);
+    let frame = frame.into_iter().chain(glossy).chain(["frame_compose_glossy", "temporal", "temporal_motion"]);
     for name in names.into_iter().chain(frame) {
         for ext in ["wgsl", "spv", "glsl", "hlsl", "metal"] {
             let p = d.join("k").join(format!("{name}.{ext}"));
@@ -286,7 +286,7 @@ fn shaders_command_exports_every_kernel() {
         }
     }
     // slc-core's modules (brdf included), as naga_oil and as WESL modules.
-    assert!(text.contains("17 naga_oil modules") && text.contains("17 WESL modules"), "{text}");
+    assert!(text.contains("18 naga_oil modules") && text.contains("18 WESL modules"), "{text}");
     let wesl = std::fs::read_to_string(d.join("k/wesl/slc/range.wesl")).unwrap();
     assert!(wesl.contains("public fn slc_keep("), "{wesl}");
     let range = std::fs::read_to_string(d.join("k/slc/range.wgsl")).unwrap();
