@@ -79,7 +79,10 @@
 //! # Ok(()) }
 //! ```
 
-use super::{Culling, FLOAT_INPUTS, GBuffer, RECORDS_PER_SUBMISSION, RecordSlots, SurfaceDesc, ViewCache, check_size, check_view, output_format};
+use super::{
+    Culling, FLOAT_INPUTS, GBuffer, RECORDS_PER_SUBMISSION, RecordSlots, SurfaceDesc, ViewCache, check_optional, check_size, check_view,
+    output_format,
+};
 use crate::frame::Stage;
 use crate::kernel::{KernelLayout, UniformSlots, check_kernels, storage, zeroed};
 use crate::{GpuContext, GpuError};
@@ -493,31 +496,21 @@ impl IndirectPass {
         let tex = wgpu::TextureUsages::TEXTURE_BINDING;
         let view = inputs.gbuffer.check(self.desc.surface, size, seed, frame)?;
         check_view("output", inputs.output, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)?;
-        match (inputs.materials, self.desc.glossy) {
-            (Some(m), true) => {
-                check_view("specular output", m.specular, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)?;
-                let entry = std::mem::size_of::<GpuMaterial>() as u64;
-                if m.table.size() < entry || !m.table.usage().contains(wgpu::BufferUsages::STORAGE) {
-                    return Err(GpuError::Binding {
-                        name: "material table",
-                        expected: format!("at least {entry} bytes (one GpuMaterial) with STORAGE usage"),
-                        found: format!("{} bytes, {:?}", m.table.size(), m.table.usage()),
-                    });
-                }
-            }
-            (None, false) => {}
-            (None, true) => {
+        check_optional(
+            "materials",
+            inputs.materials.is_some(),
+            self.desc.glossy,
+            "a material table and a specular output",
+            "IndirectPassDesc::glossy",
+        )?;
+        if let Some(m) = inputs.materials {
+            check_view("specular output", m.specular, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)?;
+            let entry = std::mem::size_of::<GpuMaterial>() as u64;
+            if m.table.size() < entry || !m.table.usage().contains(wgpu::BufferUsages::STORAGE) {
                 return Err(GpuError::Binding {
-                    name: "materials",
-                    expected: "a material table and a specular output (the pass was built glossy)".into(),
-                    found: "none".into(),
-                });
-            }
-            (Some(_), false) => {
-                return Err(GpuError::Binding {
-                    name: "materials",
-                    expected: "none (the pass was built Lambertian: IndirectPassDesc::glossy)".into(),
-                    found: "a material table".into(),
+                    name: "material table",
+                    expected: format!("at least {entry} bytes (one GpuMaterial) with STORAGE usage"),
+                    found: format!("{} bytes, {:?}", m.table.size(), m.table.usage()),
                 });
             }
         }

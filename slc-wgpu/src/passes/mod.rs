@@ -237,6 +237,18 @@ impl GBuffer<'_> {
     }
 }
 
+/// Checks an optional input against how the pass was built: `given` and
+/// `built` must agree, else a [`GpuError::Binding`] named `name` that says
+/// what the pass expects (`what`: the input; `flag`: the descriptor field
+/// that builds the pass for it).
+pub(crate) fn check_optional(name: &'static str, given: bool, built: bool, what: &str, flag: &str) -> Result<(), GpuError> {
+    match (given, built) {
+        (true, true) | (false, false) => Ok(()),
+        (false, true) => Err(GpuError::Binding { name, expected: format!("{what} (the pass was built for it: {flag})"), found: "none".into() }),
+        (true, false) => Err(GpuError::Binding { name, expected: format!("none (the pass was built without: {flag})"), found: what.into() }),
+    }
+}
+
 /// Checks that `view` shows a `w × h` 2-D texture of an accepted format with
 /// `usage`.
 pub(crate) fn check_view(

@@ -29,7 +29,7 @@
 //! # Ok(()) }
 //! ```
 
-use super::{FLOAT_INPUTS, GBuffer, SurfaceDesc, ViewCache, check_size, check_view, output_format};
+use super::{FLOAT_INPUTS, GBuffer, SurfaceDesc, ViewCache, check_optional, check_size, check_view, output_format};
 use crate::frame::Stage;
 use crate::kernel::{KernelLayout, UniformSlots, check_kernels, zeroed};
 use crate::passes::indirect::Dispatch;
@@ -216,23 +216,15 @@ impl TemporalPass {
         let view_params = inputs.gbuffer.check(self.desc.surface, size, 0, 0)?;
         check_view("temporal signal", inputs.signal, size, &FLOAT_INPUTS, wgpu::TextureUsages::TEXTURE_BINDING)?;
         check_view("temporal output", inputs.output, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)?;
-        match (inputs.motion, self.desc.motion_vectors) {
-            (Some(m), true) => check_view("motion vectors", m, size, &MOTION_FORMATS, wgpu::TextureUsages::TEXTURE_BINDING)?,
-            (None, false) => {}
-            (None, true) => {
-                return Err(GpuError::Binding {
-                    name: "motion vectors",
-                    expected: "a motion-vector texture (the pass was built for one)".into(),
-                    found: "none".into(),
-                });
-            }
-            (Some(_), false) => {
-                return Err(GpuError::Binding {
-                    name: "motion vectors",
-                    expected: "none (the pass was built without: TemporalPassDesc::motion_vectors)".into(),
-                    found: "a texture".into(),
-                });
-            }
+        check_optional(
+            "motion vectors",
+            inputs.motion.is_some(),
+            self.desc.motion_vectors,
+            "a motion-vector texture",
+            "TemporalPassDesc::motion_vectors",
+        )?;
+        if let Some(m) = inputs.motion {
+            check_view("motion vectors", m, size, &MOTION_FORMATS, wgpu::TextureUsages::TEXTURE_BINDING)?;
         }
         let gpu = &self.gpu;
         self.view.write_slot(gpu, 0, &view_params);
