@@ -158,6 +158,10 @@ trait Frames {
     fn methods(&mut self, slc: &VplSettings, fresh: &VplSettings) -> anyhow::Result<Vec<Image>>;
     /// Forgets the accumulated histories (a new sequence).
     fn reset(&mut self);
+    /// Milliseconds of one accumulation of a frame's irradiance at the
+    /// scene's own pose (fastest of `repeat`), where the backend's clock
+    /// means something (the CPU's).
+    fn accumulation_ms(&mut self, camera: &Camera, light: &PrimaryLight, repeat: u32) -> anyhow::Result<Option<f64>>;
 }
 
 /// The CPU's: one context, histories per accumulated method.
@@ -196,6 +200,22 @@ impl Frames for CpuFrames {
     fn reset(&mut self) {
         self.history.reset();
         self.independent.reset();
+    }
+
+    fn accumulation_ms(&mut self, camera: &Camera, light: &PrimaryLight, repeat: u32) -> anyhow::Result<Option<f64>> {
+        self.pose(camera, light)?;
+        let s = VplSettings { method: VplMethod::Slc, ..VplSettings::default() };
+        let e = self.ctx.shade(&s)?.irradiance;
+        let gb = &self.ctx.inputs().gbuffer;
+        let view = TemporalView::of_camera(camera, gb.width, gb.height);
+        let mut t = Temporal::new(gb.width, gb.height)?;
+        let mut best = f64::MAX;
+        for _ in 0..repeat.max(3) {
+            let t0 = Instant::now();
+            t.accumulate(&e, gb, &view, &self.ts)?;
+            best = best.min(t0.elapsed().as_secs_f64() * 1e3);
+        }
+        Ok(Some(best))
     }
 }
 
@@ -244,6 +264,10 @@ impl Frames for GpuFrames {
     fn reset(&mut self) {
         self.accumulated.reset_temporal();
         self.independent.reset_temporal();
+    }
+
+    fn accumulation_ms(&mut self, _: &Camera, _: &PrimaryLight, _: u32) -> anyhow::Result<Option<f64>> {
+        Ok(None)
     }
 }
 
@@ -313,23 +337,8 @@ pub fn run(a: &BenchArgs, frames: u32) -> anyhow::Result<()> {
         sequences.push(SequenceReport { sequence: seq, reference_temporal_rmse: reference_temporal, curves });
     }
     bar.finish_and_clear();
-    // The temporal stage's own cost at this size, on the CPU, on a frame's
-    // irradiance.
-    let temporal_ms = if gpu {
-        None
-    } else {
-        let ctx = slc_cpu::vpl::VplContext::new(&r.scene, r.width, r.height, r.rsm_size, args.min_distance)?;
-        let e = ctx.shade(&slc)?.irradiance;
-        let view = TemporalView::of_camera(&base_camera, r.width, r.height);
-        let mut t = Temporal::new(r.width, r.height)?;
-        let mut best = f64::MAX;
-        for _ in 0..a.repeat.max(3) {
-            let t0 = Instant::now();
-            t.accumulate(&e, &ctx.inputs().gbuffer, &view, &ts)?;
-            best = best.min(t0.elapsed().as_secs_f64() * 1e3);
-        }
-        Some(best)
-    };
+    // The temporal stage's own cost at this size, on the CPU.
+    let temporal_ms = runner.accumulation_ms(&base_camera, &base_primary, a.repeat)?;
     let report = FlickerReport {
         backend,
         scene: r.scene.name.clone(),

@@ -123,6 +123,32 @@ crate::shared! {
         return wx * wy;
     }
 
+    /// Tap `k ∈ 0..4` of the bilinear read of the history at previous-frame
+    /// pixel coordinates `q` (z ≤ 0: nothing to read) in a `width × height`
+    /// image: the tap's pixel (x, y), its [`bilinear_weight`] (z), and 1 in
+    /// w where the tap lies inside the image (else 0: skip it). Both
+    /// backends' gathers loop over these four.
+    pub fn history_tap(q: vec3f, k: u32, width: f32, height: f32) -> vec4f {
+        let x0: f32 = floor(q.x);
+        let y0: f32 = floor(q.y);
+        let dx: u32 = k % 2;
+        let dy: u32 = k / 2;
+        let tx: f32 = x0 + to_f32(dx);
+        let ty: f32 = y0 + to_f32(dy);
+        let inside: bool = q.z > 0.0 && tx >= 0.0 && ty >= 0.0 && tx < width && ty < height;
+        return vec4f(tx, ty, bilinear_weight(q.x - x0, q.y - y0, dx, dy), select(0.0, 1.0, inside));
+    }
+
+    /// The gathered history `sum` of taps weighing `weight` in all,
+    /// renormalised, or zero (length 0: no history, a disocclusion) where
+    /// they weigh less than [`TEMPORAL_MIN_WEIGHT`].
+    pub fn history_mean(sum: vec4f, weight: f32) -> vec4f {
+        if weight < TEMPORAL_MIN_WEIGHT {
+            return vec4f(0.0, 0.0, 0.0, 0.0);
+        }
+        return sum / weight;
+    }
+
     /// Whether a history tap that saw a surface with unit normal `nh` and
     /// tangent plane `nh·x = oh` is the surface now seen at point `p` with
     /// unit normal `n`, at distance `d` from the eye: `p` within
@@ -167,17 +193,13 @@ crate::shared! {
         return 1.0 / max(n, 1.0);
     }
 
-    /// Weight of history tap `(x0 + dx, y0 + dy)` (inside the image; see
-    /// [`bilinear_weight`]) holding `len` frames (0: no surface) of a
-    /// surface with normal `nh` and plane offset `oh`, for the current
-    /// surface (point `p`, normal `n`, distance `d` from the eye): the
-    /// bilinear weight where the tap has history of the same surface
-    /// ([`history_matches`]), else 0.
-    pub fn history_tap_weight(fx: f32, fy: f32, dx: u32, dy: u32, n: vec3f, nh: vec3f, p: vec3f, oh: f32, d: f32, len: f32) -> f32 {
-        if len <= 0.0 || !history_matches(n, nh, p, oh, d) {
-            return 0.0;
-        }
-        return bilinear_weight(fx, fy, dx, dy);
+    /// Weight of a history tap of bilinear weight `w` ([`history_tap`]'s
+    /// z) holding `len` frames (0: no surface) of a surface with normal
+    /// `nh` and plane offset `oh`, for the current surface (point `p`,
+    /// normal `n`, distance `d` from the eye): `w` where the tap has
+    /// history of the same surface ([`history_matches`]), else 0.
+    pub fn history_tap_weight(w: f32, n: vec3f, nh: vec3f, p: vec3f, oh: f32, d: f32, len: f32) -> f32 {
+        return select(0.0, w, len > 0.0 && history_matches(n, nh, p, oh, d));
     }
 
     /// [`history_tap_weight`] for reprojection by motion vectors: the tap
@@ -185,11 +207,8 @@ crate::shared! {
     /// [`TEMPORAL_MOTION_DEPTH_TOLERANCE`] of the current point's distance
     /// `d` from this frame's eye and the normals are within
     /// [`TEMPORAL_NORMAL_COS`].
-    pub fn history_tap_weight_motion(fx: f32, fy: f32, dx: u32, dy: u32, n: vec3f, nh: vec3f, d: f32, dh: f32, len: f32) -> f32 {
-        if len <= 0.0 || abs(dh - d) > TEMPORAL_MOTION_DEPTH_TOLERANCE * d || dot(n, nh) < TEMPORAL_NORMAL_COS {
-            return 0.0;
-        }
-        return bilinear_weight(fx, fy, dx, dy);
+    pub fn history_tap_weight_motion(w: f32, n: vec3f, nh: vec3f, d: f32, dh: f32, len: f32) -> f32 {
+        return select(0.0, w, len > 0.0 && abs(dh - d) <= TEMPORAL_MOTION_DEPTH_TOLERANCE * d && dot(n, nh) >= TEMPORAL_NORMAL_COS);
     }
 
     /// This frame's accumulated value (xyz) and history length (w) from the
@@ -344,11 +363,20 @@ mod tests {
         assert_eq!(v, Vec4::new(2.0, 2.0, 2.0, 4.0));
         // A tap without history or of another surface weighs nothing.
         let (n, p) = (Vec3::Z, Vec3::Z);
-        assert_eq!(history_tap_weight(0.5, 0.5, 0, 0, n, n, p, 1.0, 1.0, 0.0), 0.0);
-        assert_eq!(history_tap_weight(0.5, 0.5, 0, 0, n, -n, p, 1.0, 1.0, 3.0), 0.0);
-        assert_eq!(history_tap_weight(0.5, 0.5, 0, 0, n, n, p, 1.0, 1.0, 3.0), 0.25);
+        assert_eq!(history_tap_weight(0.25, n, n, p, 1.0, 1.0, 0.0), 0.0);
+        assert_eq!(history_tap_weight(0.25, n, -n, p, 1.0, 1.0, 3.0), 0.0);
+        assert_eq!(history_tap_weight(0.25, n, n, p, 1.0, 1.0, 3.0), 0.25);
         // By motion vectors: distances from each frame's eye within 5%.
-        assert_eq!(history_tap_weight_motion(0.5, 0.5, 1, 1, n, n, 2.0, 2.08, 3.0), 0.25);
-        assert_eq!(history_tap_weight_motion(0.5, 0.5, 1, 1, n, n, 2.0, 2.2, 3.0), 0.0);
+        assert_eq!(history_tap_weight_motion(0.25, n, n, 2.0, 2.08, 3.0), 0.25);
+        assert_eq!(history_tap_weight_motion(0.25, n, n, 2.0, 2.2, 3.0), 0.0);
+        // The four taps of (9.25, 3.5): pixels, weights, inside the image;
+        // none behind the camera, none past the edge.
+        let q = Vec3::new(9.25, 3.5, 1.0);
+        let taps: alloc::vec::Vec<Vec4> = (0..4).map(|k| history_tap(q, k, 10.0, 8.0)).collect();
+        assert_eq!(taps[0], Vec4::new(9.0, 3.0, 0.375, 1.0));
+        assert_eq!(taps[3], Vec4::new(10.0, 4.0, 0.125, 0.0), "x = 10 is past the edge");
+        assert!((0..4).all(|k| history_tap(Vec3::new(2.0, 2.0, -1.0), k, 10.0, 8.0).w == 0.0));
+        assert_eq!(history_mean(Vec4::splat(2.0), 0.5), Vec4::splat(4.0));
+        assert_eq!(history_mean(Vec4::splat(2.0), 0.001), Vec4::ZERO);
     }
 }

@@ -25,7 +25,7 @@
 use glam::{Vec2, Vec3, Vec4};
 use rayon::prelude::*;
 use slc_core::temporal::{
-    TEMPORAL_MIN_WEIGHT, history_tap_weight, history_tap_weight_motion, reproject, reproject_motion, temporal_color, temporal_moments,
+    history_mean, history_tap, history_tap_weight, history_tap_weight_motion, reproject, reproject_motion, temporal_color, temporal_moments,
 };
 use slc_scene::RenderError;
 use slc_scene::temporal::{TemporalSettings, TemporalView};
@@ -159,7 +159,7 @@ impl Temporal {
         let m = previous.view_projection;
         let q = reproject(m.x_axis, m.y_axis, m.z_axis, m.w_axis, p, self.width as f32, self.height as f32);
         let d = (p - previous.eye).length();
-        self.gathered(q, |fx, fy, dx, dy, t| history_tap_weight(fx, fy, dx, dy, n, t.surface.truncate(), p, t.surface.w, d, t.value.w))
+        self.gathered(q, |w, t| history_tap_weight(w, n, t.surface.truncate(), p, t.surface.w, d, t.value.w))
     }
 
     /// The history of pixel `i` (point `p`, normal `n`, seen from `eye`)
@@ -168,34 +168,25 @@ impl Temporal {
         let (w, h) = (self.width as f32, self.height as f32);
         let q = reproject_motion((i % self.width as usize) as f32, (i / self.width as usize) as f32, m.x, m.y, w, h);
         let d = (p - eye).length();
-        self.gathered(q, |fx, fy, dx, dy, t| history_tap_weight_motion(fx, fy, dx, dy, n, t.surface.truncate(), d, t.moments.z, t.value.w))
+        self.gathered(q, |w, t| history_tap_weight_motion(w, n, t.surface.truncate(), d, t.moments.z, t.value.w))
     }
 
-    /// The history at previous-frame pixel coordinates `q` (z ≤ 0: none),
-    /// its four taps weighted by `weight(fx, fy, dx, dy, tap)` and
-    /// renormalised; length 0 where they weigh too little.
-    fn gathered(&self, q: Vec3, weight: impl Fn(f32, f32, u32, u32, &Texel) -> f32) -> Texel {
-        if q.z <= 0.0 {
-            return Texel::default();
-        }
-        let (x0, y0) = (q.x.floor(), q.y.floor());
-        let (fx, fy) = (q.x - x0, q.y - y0);
+    /// The history at previous-frame pixel coordinates `q`: its four taps
+    /// ([`history_tap`]), each weighted by `weight(bilinear weight, tap)`,
+    /// renormalised ([`history_mean`]).
+    fn gathered(&self, q: Vec3, weight: impl Fn(f32, &Texel) -> f32) -> Texel {
         let (mut value, mut moments, mut weight_sum) = (Vec4::ZERO, Vec4::ZERO, 0.0);
-        for (dx, dy) in [(0u32, 0u32), (1, 0), (0, 1), (1, 1)] {
-            let (tx, ty) = (x0 + dx as f32, y0 + dy as f32);
-            if tx < 0.0 || ty < 0.0 || tx >= self.width as f32 || ty >= self.height as f32 {
-                continue;
+        for k in 0..4 {
+            let tap = history_tap(q, k, self.width as f32, self.height as f32);
+            if tap.w > 0.0 {
+                let t = &self.history[tap.y as usize * self.width as usize + tap.x as usize];
+                let w = weight(tap.z, t);
+                value += t.value * w;
+                moments += t.moments * w;
+                weight_sum += w;
             }
-            let t = &self.history[ty as usize * self.width as usize + tx as usize];
-            let w = weight(fx, fy, dx, dy, t);
-            value += t.value * w;
-            moments += t.moments * w;
-            weight_sum += w;
         }
-        if weight_sum < TEMPORAL_MIN_WEIGHT {
-            return Texel::default();
-        }
-        Texel { value: value / weight_sum, moments: moments / weight_sum, surface: Vec4::ZERO }
+        Texel { value: history_mean(value, weight_sum), moments: history_mean(moments, weight_sum), surface: Vec4::ZERO }
     }
 }
 

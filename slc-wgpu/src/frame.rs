@@ -531,19 +531,9 @@ impl GpuVplFrame {
         );
         let compose_layout = KernelLayout::new(gpu, Kernel::FrameCompose, &compose_features)?;
         let compose_pipeline = compose_layout.pipeline(gpu, &compose_features, None)?;
-        let mut compose_res = vec![
-            ("image", image_params.as_entire_binding()),
-            ("position_tex", tex(&gb[0])),
-            ("normal_tex", tex(&gb[1])),
-            ("indirect_tex", tex(&irradiance)),
-            ("direct", direct.as_entire_binding()),
-            ("materials", materials.as_entire_binding()),
-            ("out_tex", tex(&output)),
-        ];
-        if let Some(sp) = &specular {
-            compose_res.push(("specular_tex", tex(sp)));
-        }
-        let compose_group = compose_layout.group(gpu, 0, &compose_res);
+        let compose_group =
+            ComposeInputs { gpu, layout: &compose_layout, image: &image_params, gb: &gb, direct: &direct, materials: &materials, output: &output }
+                .group(&irradiance, specular.as_ref());
         let s = GpuVplFrame {
             gpu: gpu.clone(),
             desc: *desc,
@@ -672,7 +662,7 @@ impl GpuVplFrame {
             Some(_) => Some((TemporalPass::new(gpu, &desc)?, target(gpu, "slc frame accumulated specular", (w, h), F32, usage))),
             None => None,
         };
-        let compose_group = self.compose_group_with(&irradiance.1, specular.as_ref().map(|s| &s.1));
+        let compose_group = self.compose_inputs().group(&irradiance.1, specular.as_ref().map(|s| &s.1));
         self.lighting_changed.set(false);
         self.temporal = Some(FrameTemporal { settings, irradiance, specular, compose_group });
         Ok(())
@@ -688,22 +678,17 @@ impl GpuVplFrame {
         }
     }
 
-    /// The composition's bind group reading the indirect irradiance from
-    /// `indirect` and the specular correction from `specular`.
-    fn compose_group_with(&self, indirect: &Target, specular: Option<&Target>) -> wgpu::BindGroup {
-        let mut res = vec![
-            ("image", self.image_params.as_entire_binding()),
-            ("position_tex", tex(&self.gb[0])),
-            ("normal_tex", tex(&self.gb[1])),
-            ("indirect_tex", tex(indirect)),
-            ("direct", self.direct.as_entire_binding()),
-            ("materials", self.material_table.as_entire_binding()),
-            ("out_tex", tex(&self.output)),
-        ];
-        if let Some(sp) = specular {
-            res.push(("specular_tex", tex(sp)));
+    /// What the composition binds besides the indirect light.
+    fn compose_inputs(&self) -> ComposeInputs<'_> {
+        ComposeInputs {
+            gpu: &self.gpu,
+            layout: &self.compose_layout,
+            image: &self.image_params,
+            gb: &self.gb,
+            direct: &self.direct,
+            materials: &self.material_table,
+            output: &self.output,
         }
-        self.compose_layout.group(&self.gpu, 0, &res)
     }
 
     /// Whether stages are timed by GPU timestamps. A software adapter's
@@ -976,6 +961,38 @@ impl GpuVplFrame {
             })
             .collect();
         Ok(Image { width: gb.width, height: gb.height, data })
+    }
+}
+
+/// The composition's fixed bindings: image uniforms, G-buffer, direct
+/// light, materials and the HDR target.
+struct ComposeInputs<'a> {
+    gpu: &'a GpuContext,
+    layout: &'a KernelLayout,
+    image: &'a wgpu::Buffer,
+    gb: &'a [Target; 3],
+    direct: &'a wgpu::Buffer,
+    materials: &'a wgpu::Buffer,
+    output: &'a Target,
+}
+
+impl ComposeInputs<'_> {
+    /// The composition's bind group reading the indirect irradiance from
+    /// `indirect` and, glossy, the specular correction from `specular`.
+    fn group(&self, indirect: &Target, specular: Option<&Target>) -> wgpu::BindGroup {
+        let mut res = vec![
+            ("image", self.image.as_entire_binding()),
+            ("position_tex", tex(&self.gb[0])),
+            ("normal_tex", tex(&self.gb[1])),
+            ("indirect_tex", tex(indirect)),
+            ("direct", self.direct.as_entire_binding()),
+            ("materials", self.materials.as_entire_binding()),
+            ("out_tex", tex(self.output)),
+        ];
+        if let Some(sp) = specular {
+            res.push(("specular_tex", tex(sp)));
+        }
+        self.layout.group(self.gpu, 0, &res)
     }
 }
 

@@ -33,9 +33,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
 {% else %}
     let q = reproject(params.c0, params.c1, params.c2, params.c3, p, f32(view.width), f32(view.height));
 {% endif %}
-    if params.has_history == 1u && q.z > 0.0 {
-        let x0 = floor(q.x);
-        let y0 = floor(q.y);
+    if params.has_history == 1u {
 {% if motion %}
         let d = length(p - view.eye);
 {% else %}
@@ -45,29 +43,24 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         var m = vec4f(0.0);
         var weight = 0.0;
         for (var k = 0u; k < 4u; k++) {
-            let dx = k & 1u;
-            let dy = k >> 1u;
-            let tx = x0 + f32(dx);
-            let ty = y0 + f32(dy);
-            if tx >= 0.0 && ty >= 0.0 && tx < f32(view.width) && ty < f32(view.height) {
-                let t = vec2i(i32(tx), i32(ty));
+            let tap = history_tap(q, k, f32(view.width), f32(view.height));
+            if tap.w > 0.0 {
+                let t = vec2i(i32(tap.x), i32(tap.y));
                 let tv = textureLoad(hist_value, t, 0);
                 let ts = textureLoad(hist_surface, t, 0);
                 let tn = textureLoad(hist_noise, t, 0);
 {% if motion %}
-                let w = history_tap_weight_motion(q.x - x0, q.y - y0, dx, dy, n, ts.xyz, d, tn.z, tv.w);
+                let w = history_tap_weight_motion(tap.z, n, ts.xyz, d, tn.z, tv.w);
 {% else %}
-                let w = history_tap_weight(q.x - x0, q.y - y0, dx, dy, n, ts.xyz, p, ts.w, d, tv.w);
+                let w = history_tap_weight(tap.z, n, ts.xyz, p, ts.w, d, tv.w);
 {% endif %}
                 v += tv * w;
                 m += tn * w;
                 weight += w;
             }
         }
-        if weight >= TEMPORAL_MIN_WEIGHT {
-            hv = v / weight;
-            hn = m / weight;
-        }
+        hv = history_mean(v, weight);
+        hn = history_mean(m, weight);
     }
     let value = temporal_color(c, hv, hn.y, params.max_history);
     textureStore(out_tex, texel, value);

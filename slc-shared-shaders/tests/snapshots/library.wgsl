@@ -206,9 +206,9 @@ fn cull_radius(r2_1: f32) -> f32 {
 }
 
 fn windowed_falloff(d2_4: f32, range2_1: f32) -> f32 {
-    let q_2 = (d2_4 / range2_1);
-    let w_10 = saturate((1f - (q_2 * q_2)));
-    return ((w_10 * w_10) / max(d2_4, 0.0001f));
+    let q_3 = (d2_4 / range2_1);
+    let w_12 = saturate((1f - (q_3 * q_3)));
+    return ((w_12 * w_12) / max(d2_4, 0.0001f));
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_4: vec3<f32>) -> bool {
@@ -268,8 +268,8 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
 }
 
 fn sphere_overlaps_aabb(c_2: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
-    let q_3 = clamp(c_2, bmin, bmax);
-    let v_15 = (q_3 - c_2);
+    let q_4 = clamp(c_2, bmin, bmax);
+    let v_15 = (q_4 - c_2);
     return (dot(v_15, v_15) <= (r_2 * r_2));
 }
 
@@ -309,10 +309,10 @@ fn connection_cosine(x_5: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_11 = (v_16 / vec3(sqrt(d2_16)));
-    let cos_x_1 = -(dot(n, w_11));
+    let w_13 = (v_16 / vec3(sqrt(d2_16)));
+    let cos_x_1 = -(dot(n, w_13));
     if !((cos_x_1 <= 0f)) {
-        local_2 = (dot(ng, w_11) >= 0f);
+        local_2 = (dot(ng, w_13) >= 0f);
     } else {
         local_2 = true;
     }
@@ -1013,9 +1013,9 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
     let v_18 = (center_2 - p_2);
     let dist2_2 = dot(v_18, v_18);
-    let w_12 = select(vec3<f32>(0f, 0f, 0f), (v_18 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
+    let w_14 = select(vec3<f32>(0f, 0f, 0f), (v_18 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
     let _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
-    let cos_i = dot(w_12, d_1);
+    let cos_i = dot(w_14, d_1);
     let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
     let _e26 = safe_sqrt((1f - (_e17 * _e17)));
     let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
@@ -1175,7 +1175,7 @@ fn face_against(n_24: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
 fn barycentric(p_7: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -> vec3<f32> {
     let e1_1 = (b_5 - a_6);
     let e2_1 = (c_8 - a_6);
-    let q_4 = (p_7 - a_6);
+    let q_5 = (p_7 - a_6);
     let d11_ = dot(e1_1, e1_1);
     let d12_ = dot(e1_1, e2_1);
     let d22_ = dot(e2_1, e2_1);
@@ -1183,8 +1183,8 @@ fn barycentric(p_7: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -
     if !((abs(den) > 0f)) {
         return vec3<f32>(1f, 0f, 0f);
     }
-    let w1_ = (((d22_ * dot(q_4, e1_1)) - (d12_ * dot(q_4, e2_1))) / den);
-    let w2_ = (((d11_ * dot(q_4, e2_1)) - (d12_ * dot(q_4, e1_1))) / den);
+    let w1_ = (((d22_ * dot(q_5, e1_1)) - (d12_ * dot(q_5, e2_1))) / den);
+    let w2_ = (((d11_ * dot(q_5, e2_1)) - (d12_ * dot(q_5, e1_1))) / den);
     return vec3<f32>(((1f - w1_) - w2_), w1_, w2_);
 }
 
@@ -1230,8 +1230,8 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
     if _e28 {
         return -1f;
     }
-    let q_5 = cross(s_7, e1_2);
-    let v_21 = (dot(d_3, q_5) * inv_1);
+    let q_6 = cross(s_7, e1_2);
+    let v_21 = (dot(d_3, q_6) * inv_1);
     if !((v_21 < 0f)) {
         local_17 = ((u_6 + v_21) > 1f);
     } else {
@@ -1241,7 +1241,7 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
     if _e42 {
         return -1f;
     }
-    let t_5 = (dot(e2_2, q_5) * inv_1);
+    let t_5 = (dot(e2_2, q_6) * inv_1);
     if (t_5 > t_min) {
         local_18 = (t_5 < t_max_1);
     } else {
@@ -1528,15 +1528,64 @@ fn bilinear_weight(fx: f32, fy: f32, dx: u32, dy: u32) -> f32 {
     return (wx * wy);
 }
 
-fn history_matches(n_29: vec3<f32>, nh: vec3<f32>, p_9: vec3<f32>, oh: f32, d_6: f32) -> bool {
+fn history_tap(q_2: vec3<f32>, k_5: u32, width_2: f32, height_2: f32) -> vec4<f32> {
     var local_23: bool;
+    var local_24: bool;
+    var local_25: bool;
+    var local_26: bool;
 
-    if (abs((dot(nh, p_9) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_6)) {
-        local_23 = (dot(n_29, nh) >= TEMPORAL_NORMAL_COS);
+    let x0_ = floor(q_2.x);
+    let y0_ = floor(q_2.y);
+    let dx_1 = (k_5 % 2u);
+    let dy_1 = (k_5 / 2u);
+    let _e12 = to_f32_(dx_1);
+    let tx_2 = (x0_ + _e12);
+    let _e14 = to_f32_(dy_1);
+    let ty_2 = (y0_ + _e14);
+    if (q_2.z > 0f) {
+        local_23 = (tx_2 >= 0f);
     } else {
         local_23 = false;
     }
-    let _e17 = local_23;
+    let _e24 = local_23;
+    if _e24 {
+        local_24 = (ty_2 >= 0f);
+    } else {
+        local_24 = false;
+    }
+    let _e30 = local_24;
+    if _e30 {
+        local_25 = (tx_2 < width_2);
+    } else {
+        local_25 = false;
+    }
+    let _e35 = local_25;
+    if _e35 {
+        local_26 = (ty_2 < height_2);
+    } else {
+        local_26 = false;
+    }
+    let inside = local_26;
+    let _e45 = bilinear_weight((q_2.x - x0_), (q_2.y - y0_), dx_1, dy_1);
+    return vec4<f32>(tx_2, ty_2, _e45, select(0f, 1f, inside));
+}
+
+fn history_mean(sum_1: vec4<f32>, weight_1: f32) -> vec4<f32> {
+    if (weight_1 < TEMPORAL_MIN_WEIGHT) {
+        return vec4<f32>(0f, 0f, 0f, 0f);
+    }
+    return (sum_1 / vec4(weight_1));
+}
+
+fn history_matches(n_29: vec3<f32>, nh: vec3<f32>, p_9: vec3<f32>, oh: f32, d_6: f32) -> bool {
+    var local_27: bool;
+
+    if (abs((dot(nh, p_9) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_6)) {
+        local_27 = (dot(n_29, nh) >= TEMPORAL_NORMAL_COS);
+    } else {
+        local_27 = false;
+    }
+    let _e17 = local_27;
     return _e17;
 }
 
@@ -1557,44 +1606,36 @@ fn temporal_alpha(n_32: f32) -> f32 {
     return (1f / max(n_32, 1f));
 }
 
-fn history_tap_weight(fx_1: f32, fy_1: f32, dx_1: u32, dy_1: u32, n_33: vec3<f32>, nh_1: vec3<f32>, p_10: vec3<f32>, oh_1: f32, d_7: f32, len_1: f32) -> f32 {
-    var local_24: bool;
+fn history_tap_weight(w_10: f32, n_33: vec3<f32>, nh_1: vec3<f32>, p_10: vec3<f32>, oh_1: f32, d_7: f32, len_1: f32) -> f32 {
+    var local_28: bool;
 
-    if !((len_1 <= 0f)) {
-        let _e15 = history_matches(n_33, nh_1, p_10, oh_1, d_7);
-        local_24 = !(_e15);
+    if (len_1 > 0f) {
+        let _e11 = history_matches(n_33, nh_1, p_10, oh_1, d_7);
+        local_28 = _e11;
     } else {
-        local_24 = true;
+        local_28 = false;
     }
-    let _e18 = local_24;
-    if _e18 {
-        return 0f;
-    }
-    let _e20 = bilinear_weight(fx_1, fy_1, dx_1, dy_1);
-    return _e20;
+    let _e13 = local_28;
+    return select(0f, w_10, _e13);
 }
 
-fn history_tap_weight_motion(fx_2: f32, fy_2: f32, dx_2: u32, dy_2: u32, n_34: vec3<f32>, nh_2: vec3<f32>, d_8: f32, dh: f32, len_2: f32) -> f32 {
-    var local_25: bool;
-    var local_26: bool;
+fn history_tap_weight_motion(w_11: f32, n_34: vec3<f32>, nh_2: vec3<f32>, d_8: f32, dh: f32, len_2: f32) -> f32 {
+    var local_29: bool;
+    var local_30: bool;
 
-    if !((len_2 <= 0f)) {
-        local_25 = (abs((dh - d_8)) > (TEMPORAL_MOTION_DEPTH_TOLERANCE * d_8));
+    if (len_2 > 0f) {
+        local_29 = (abs((dh - d_8)) <= (TEMPORAL_MOTION_DEPTH_TOLERANCE * d_8));
     } else {
-        local_25 = true;
+        local_29 = false;
     }
-    let _e20 = local_25;
-    if !(_e20) {
-        local_26 = (dot(n_34, nh_2) < TEMPORAL_NORMAL_COS);
+    let _e16 = local_29;
+    if _e16 {
+        local_30 = (dot(n_34, nh_2) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_26 = true;
+        local_30 = false;
     }
-    let _e28 = local_26;
-    if _e28 {
-        return 0f;
-    }
-    let _e30 = bilinear_weight(fx_2, fy_2, dx_2, dy_2);
-    return _e30;
+    let _e23 = local_30;
+    return select(0f, w_11, _e23);
 }
 
 fn temporal_color(c_11: vec3<f32>, h_1: vec4<f32>, noise_1: f32, max_history_1: f32) -> vec4<f32> {

@@ -98,6 +98,10 @@ var next_surface: texture_storage_2d<rgba32float,write>;
 @group(0) @binding(12) 
 var motion_tex: texture_2d<f32>;
 
+fn to_f32_(u: u32) -> f32 {
+    return f32(u);
+}
+
 fn luminance(c: vec3<f32>) -> f32 {
     return dot(c, vec3<f32>(0.2126f, 0.7152f, 0.0722f));
 }
@@ -110,6 +114,55 @@ fn bilinear_weight(fx: f32, fy: f32, dx: u32, dy: u32) -> f32 {
     let wx = select((1f - fx), fx, (dx == 1u));
     let wy = select((1f - fy), fy, (dy == 1u));
     return (wx * wy);
+}
+
+fn history_tap(q: vec3<f32>, k_1: u32, width_1: f32, height_1: f32) -> vec4<f32> {
+    var local_1: bool;
+    var local_2: bool;
+    var local_3: bool;
+    var local_4: bool;
+
+    let x0_ = floor(q.x);
+    let y0_ = floor(q.y);
+    let dx_1 = (k_1 % 2u);
+    let dy_1 = (k_1 / 2u);
+    let _e12 = to_f32_(dx_1);
+    let tx = (x0_ + _e12);
+    let _e14 = to_f32_(dy_1);
+    let ty = (y0_ + _e14);
+    if (q.z > 0f) {
+        local_1 = (tx >= 0f);
+    } else {
+        local_1 = false;
+    }
+    let _e24 = local_1;
+    if _e24 {
+        local_2 = (ty >= 0f);
+    } else {
+        local_2 = false;
+    }
+    let _e30 = local_2;
+    if _e30 {
+        local_3 = (tx < width_1);
+    } else {
+        local_3 = false;
+    }
+    let _e35 = local_3;
+    if _e35 {
+        local_4 = (ty < height_1);
+    } else {
+        local_4 = false;
+    }
+    let inside = local_4;
+    let _e45 = bilinear_weight((q.x - x0_), (q.y - y0_), dx_1, dy_1);
+    return vec4<f32>(tx, ty, _e45, select(0f, 1f, inside));
+}
+
+fn history_mean(sum: vec4<f32>, weight_1: f32) -> vec4<f32> {
+    if (weight_1 < TEMPORAL_MIN_WEIGHT) {
+        return vec4<f32>(0f, 0f, 0f, 0f);
+    }
+    return (sum / vec4(weight_1));
 }
 
 fn temporal_change(l: f32, m1_: f32, noise: f32, n: f32) -> f32 {
@@ -129,27 +182,23 @@ fn temporal_alpha(n_2: f32) -> f32 {
     return (1f / max(n_2, 1f));
 }
 
-fn history_tap_weight_motion(fx_1: f32, fy_1: f32, dx_1: u32, dy_1: u32, n_3: vec3<f32>, nh: vec3<f32>, d: f32, dh: f32, len: f32) -> f32 {
+fn history_tap_weight_motion(w: f32, n_3: vec3<f32>, nh: vec3<f32>, d: f32, dh: f32, len: f32) -> f32 {
     var local_5: bool;
     var local_6: bool;
 
-    if !((len <= 0f)) {
-        local_5 = (abs((dh - d)) > (TEMPORAL_MOTION_DEPTH_TOLERANCE * d));
+    if (len > 0f) {
+        local_5 = (abs((dh - d)) <= (TEMPORAL_MOTION_DEPTH_TOLERANCE * d));
     } else {
-        local_5 = true;
+        local_5 = false;
     }
-    let _e20 = local_5;
-    if !(_e20) {
-        local_6 = (dot(n_3, nh) < TEMPORAL_NORMAL_COS);
+    let _e16 = local_5;
+    if _e16 {
+        local_6 = (dot(n_3, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_6 = true;
+        local_6 = false;
     }
-    let _e28 = local_6;
-    if _e28 {
-        return 0f;
-    }
-    let _e30 = bilinear_weight(fx_1, fy_1, dx_1, dy_1);
-    return _e30;
+    let _e23 = local_6;
+    return select(0f, w, _e23);
 }
 
 fn temporal_color(c_1: vec3<f32>, h: vec4<f32>, noise_1: f32, max_history_1: f32) -> vec4<f32> {
@@ -206,14 +255,10 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var local: bool;
     var hv: vec4<f32> = vec4(0f);
     var hn: vec4<f32> = vec4(0f);
-    var local_1: bool;
     var v: vec4<f32> = vec4(0f);
     var m: vec4<f32> = vec4(0f);
     var weight: f32 = 0f;
     var k: u32 = 0u;
-    var local_2: bool;
-    var local_3: bool;
-    var local_4: bool;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -247,90 +292,59 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e77 = reproject_motion(f32(gid.x), f32(gid.y), motion.x, motion.y, f32(_e71), f32(_e75));
     let _e80 = params.has_history;
     if (_e80 == 1u) {
-        local_1 = (_e77.z > 0f);
-    } else {
-        local_1 = false;
-    }
-    let _e89 = local_1;
-    if _e89 {
-        let x0_ = floor(_e77.x);
-        let y0_ = floor(_e77.y);
-        let _e96 = view.eye;
-        let d_2 = length((p_1 - _e96));
+        let _e85 = view.eye;
+        let d_2 = length((p_1 - _e85));
         loop {
-            let _e109 = k;
-            if (_e109 < 4u) {
+            let _e98 = k;
+            if (_e98 < 4u) {
             } else {
                 break;
             }
             {
-                let _e112 = k;
-                let dx_2 = (_e112 & 1u);
-                let _e115 = k;
-                let dy_2 = (_e115 >> 1u);
-                let tx = (x0_ + f32(dx_2));
-                let ty = (y0_ + f32(dy_2));
-                if (tx >= 0f) {
-                    local_2 = (ty >= 0f);
-                } else {
-                    local_2 = false;
-                }
-                let _e129 = local_2;
-                if _e129 {
-                    let _e134 = view.width;
-                    local_3 = (tx < f32(_e134));
-                } else {
-                    local_3 = false;
-                }
-                let _e138 = local_3;
-                if _e138 {
-                    let _e143 = view.height;
-                    local_4 = (ty < f32(_e143));
-                } else {
-                    local_4 = false;
-                }
-                let _e147 = local_4;
-                if _e147 {
-                    let t_1 = vec2<i32>(i32(tx), i32(ty));
+                let _e101 = k;
+                let _e104 = view.width;
+                let _e108 = view.height;
+                let _e110 = history_tap(_e77, _e101, f32(_e104), f32(_e108));
+                if (_e110.w > 0f) {
+                    let t_1 = vec2<i32>(i32(_e110.x), i32(_e110.y));
                     let tv = textureLoad(hist_value, t_1, 0i);
                     let ts = textureLoad(hist_surface, t_1, 0i);
                     let tn = textureLoad(hist_noise, t_1, 0i);
-                    let _e167 = history_tap_weight_motion((_e77.x - x0_), (_e77.y - y0_), dx_2, dy_2, n_5, ts.xyz, d_2, tn.z, tv.w);
-                    let _e168 = v;
-                    v = (_e168 + (tv * _e167));
-                    let _e171 = m;
-                    m = (_e171 + (tn * _e167));
-                    let _e174 = weight;
-                    weight = (_e174 + _e167);
+                    let _e132 = history_tap_weight_motion(_e110.z, n_5, ts.xyz, d_2, tn.z, tv.w);
+                    let _e133 = v;
+                    v = (_e133 + (tv * _e132));
+                    let _e136 = m;
+                    m = (_e136 + (tn * _e132));
+                    let _e139 = weight;
+                    weight = (_e139 + _e132);
                 }
             }
             continuing {
-                let _e177 = k;
-                k = (_e177 + 1u);
+                let _e142 = k;
+                k = (_e142 + 1u);
             }
         }
-        let _e179 = weight;
-        if (_e179 >= TEMPORAL_MIN_WEIGHT) {
-            let _e182 = v;
-            let _e183 = weight;
-            hv = (_e182 / vec4(_e183));
-            let _e186 = m;
-            let _e187 = weight;
-            hn = (_e186 / vec4(_e187));
-        }
+        let _e144 = v;
+        let _e145 = weight;
+        let _e146 = history_mean(_e144, _e145);
+        hv = _e146;
+        let _e147 = m;
+        let _e148 = weight;
+        let _e149 = history_mean(_e147, _e148);
+        hn = _e149;
     }
-    let _e190 = hv;
-    let _e192 = hn.y;
-    let _e195 = params.max_history;
-    let _e196 = temporal_color(c_3, _e190, _e192, _e195);
-    textureStore(out_tex, texel_2, _e196);
-    textureStore(next_value, texel_2, _e196);
-    let _e201 = hn.x;
-    let _e203 = hn.y;
-    let _e205 = hv.w;
-    let _e209 = view.eye;
-    let _e212 = temporal_moments(c_3, _e201, _e203, _e205, _e196.w, length((p_1 - _e209)));
-    textureStore(next_noise, texel_2, _e212);
+    let _e150 = hv;
+    let _e152 = hn.y;
+    let _e155 = params.max_history;
+    let _e156 = temporal_color(c_3, _e150, _e152, _e155);
+    textureStore(out_tex, texel_2, _e156);
+    textureStore(next_value, texel_2, _e156);
+    let _e161 = hn.x;
+    let _e163 = hn.y;
+    let _e165 = hv.w;
+    let _e169 = view.eye;
+    let _e172 = temporal_moments(c_3, _e161, _e163, _e165, _e156.w, length((p_1 - _e169)));
+    textureStore(next_noise, texel_2, _e172);
     textureStore(next_surface, texel_2, vec4<f32>(n_5, dot(n_5, p_1)));
     return;
 }

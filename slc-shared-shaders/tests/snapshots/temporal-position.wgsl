@@ -96,6 +96,10 @@ var next_noise: texture_storage_2d<rgba32float,write>;
 @group(0) @binding(11) 
 var next_surface: texture_storage_2d<rgba32float,write>;
 
+fn to_f32_(u: u32) -> f32 {
+    return f32(u);
+}
+
 fn luminance(c: vec3<f32>) -> f32 {
     return dot(c, vec3<f32>(0.2126f, 0.7152f, 0.0722f));
 }
@@ -114,6 +118,55 @@ fn bilinear_weight(fx: f32, fy: f32, dx: u32, dy: u32) -> f32 {
     let wx = select((1f - fx), fx, (dx == 1u));
     let wy = select((1f - fy), fy, (dy == 1u));
     return (wx * wy);
+}
+
+fn history_tap(q: vec3<f32>, k_1: u32, width_1: f32, height_1: f32) -> vec4<f32> {
+    var local_1: bool;
+    var local_2: bool;
+    var local_3: bool;
+    var local_4: bool;
+
+    let x0_ = floor(q.x);
+    let y0_ = floor(q.y);
+    let dx_1 = (k_1 % 2u);
+    let dy_1 = (k_1 / 2u);
+    let _e12 = to_f32_(dx_1);
+    let tx = (x0_ + _e12);
+    let _e14 = to_f32_(dy_1);
+    let ty = (y0_ + _e14);
+    if (q.z > 0f) {
+        local_1 = (tx >= 0f);
+    } else {
+        local_1 = false;
+    }
+    let _e24 = local_1;
+    if _e24 {
+        local_2 = (ty >= 0f);
+    } else {
+        local_2 = false;
+    }
+    let _e30 = local_2;
+    if _e30 {
+        local_3 = (tx < width_1);
+    } else {
+        local_3 = false;
+    }
+    let _e35 = local_3;
+    if _e35 {
+        local_4 = (ty < height_1);
+    } else {
+        local_4 = false;
+    }
+    let inside = local_4;
+    let _e45 = bilinear_weight((q.x - x0_), (q.y - y0_), dx_1, dy_1);
+    return vec4<f32>(tx, ty, _e45, select(0f, 1f, inside));
+}
+
+fn history_mean(sum: vec4<f32>, weight_1: f32) -> vec4<f32> {
+    if (weight_1 < TEMPORAL_MIN_WEIGHT) {
+        return vec4<f32>(0f, 0f, 0f, 0f);
+    }
+    return (sum / vec4(weight_1));
 }
 
 fn history_matches(n: vec3<f32>, nh: vec3<f32>, p_1: vec3<f32>, oh: f32, d: f32) -> bool {
@@ -145,21 +198,17 @@ fn temporal_alpha(n_3: f32) -> f32 {
     return (1f / max(n_3, 1f));
 }
 
-fn history_tap_weight(fx_1: f32, fy_1: f32, dx_1: u32, dy_1: u32, n_4: vec3<f32>, nh_1: vec3<f32>, p_2: vec3<f32>, oh_1: f32, d_1: f32, len: f32) -> f32 {
+fn history_tap_weight(w: f32, n_4: vec3<f32>, nh_1: vec3<f32>, p_2: vec3<f32>, oh_1: f32, d_1: f32, len: f32) -> f32 {
     var local_6: bool;
 
-    if !((len <= 0f)) {
-        let _e15 = history_matches(n_4, nh_1, p_2, oh_1, d_1);
-        local_6 = !(_e15);
+    if (len > 0f) {
+        let _e11 = history_matches(n_4, nh_1, p_2, oh_1, d_1);
+        local_6 = _e11;
     } else {
-        local_6 = true;
+        local_6 = false;
     }
-    let _e18 = local_6;
-    if _e18 {
-        return 0f;
-    }
-    let _e20 = bilinear_weight(fx_1, fy_1, dx_1, dy_1);
-    return _e20;
+    let _e13 = local_6;
+    return select(0f, w, _e13);
 }
 
 fn temporal_color(c_1: vec3<f32>, h: vec4<f32>, noise_1: f32, max_history_1: f32) -> vec4<f32> {
@@ -216,14 +265,10 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     var local: bool;
     var hv: vec4<f32> = vec4(0f);
     var hn: vec4<f32> = vec4(0f);
-    var local_1: bool;
     var v: vec4<f32> = vec4(0f);
     var m: vec4<f32> = vec4(0f);
     var weight: f32 = 0f;
     var k: u32 = 0u;
-    var local_2: bool;
-    var local_3: bool;
-    var local_4: bool;
 
     let _e4 = view.width;
     if !((gid.x >= _e4)) {
@@ -259,90 +304,59 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e79 = reproject(_e61, _e64, _e67, _e70, p_4, f32(_e73), f32(_e77));
     let _e82 = params.has_history;
     if (_e82 == 1u) {
-        local_1 = (_e79.z > 0f);
-    } else {
-        local_1 = false;
-    }
-    let _e91 = local_1;
-    if _e91 {
-        let x0_ = floor(_e79.x);
-        let y0_ = floor(_e79.y);
-        let _e98 = params.prev_eye;
-        let d_3 = length((p_4 - _e98));
+        let _e87 = params.prev_eye;
+        let d_3 = length((p_4 - _e87));
         loop {
-            let _e111 = k;
-            if (_e111 < 4u) {
+            let _e100 = k;
+            if (_e100 < 4u) {
             } else {
                 break;
             }
             {
-                let _e114 = k;
-                let dx_2 = (_e114 & 1u);
-                let _e117 = k;
-                let dy_2 = (_e117 >> 1u);
-                let tx = (x0_ + f32(dx_2));
-                let ty = (y0_ + f32(dy_2));
-                if (tx >= 0f) {
-                    local_2 = (ty >= 0f);
-                } else {
-                    local_2 = false;
-                }
-                let _e131 = local_2;
-                if _e131 {
-                    let _e136 = view.width;
-                    local_3 = (tx < f32(_e136));
-                } else {
-                    local_3 = false;
-                }
-                let _e140 = local_3;
-                if _e140 {
-                    let _e145 = view.height;
-                    local_4 = (ty < f32(_e145));
-                } else {
-                    local_4 = false;
-                }
-                let _e149 = local_4;
-                if _e149 {
-                    let t_1 = vec2<i32>(i32(tx), i32(ty));
+                let _e103 = k;
+                let _e106 = view.width;
+                let _e110 = view.height;
+                let _e112 = history_tap(_e79, _e103, f32(_e106), f32(_e110));
+                if (_e112.w > 0f) {
+                    let t_1 = vec2<i32>(i32(_e112.x), i32(_e112.y));
                     let tv = textureLoad(hist_value, t_1, 0i);
                     let ts = textureLoad(hist_surface, t_1, 0i);
                     let tn = textureLoad(hist_noise, t_1, 0i);
-                    let _e169 = history_tap_weight((_e79.x - x0_), (_e79.y - y0_), dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_3, tv.w);
-                    let _e170 = v;
-                    v = (_e170 + (tv * _e169));
-                    let _e173 = m;
-                    m = (_e173 + (tn * _e169));
-                    let _e176 = weight;
-                    weight = (_e176 + _e169);
+                    let _e134 = history_tap_weight(_e112.z, n_6, ts.xyz, p_4, ts.w, d_3, tv.w);
+                    let _e135 = v;
+                    v = (_e135 + (tv * _e134));
+                    let _e138 = m;
+                    m = (_e138 + (tn * _e134));
+                    let _e141 = weight;
+                    weight = (_e141 + _e134);
                 }
             }
             continuing {
-                let _e179 = k;
-                k = (_e179 + 1u);
+                let _e144 = k;
+                k = (_e144 + 1u);
             }
         }
-        let _e181 = weight;
-        if (_e181 >= TEMPORAL_MIN_WEIGHT) {
-            let _e184 = v;
-            let _e185 = weight;
-            hv = (_e184 / vec4(_e185));
-            let _e188 = m;
-            let _e189 = weight;
-            hn = (_e188 / vec4(_e189));
-        }
+        let _e146 = v;
+        let _e147 = weight;
+        let _e148 = history_mean(_e146, _e147);
+        hv = _e148;
+        let _e149 = m;
+        let _e150 = weight;
+        let _e151 = history_mean(_e149, _e150);
+        hn = _e151;
     }
-    let _e192 = hv;
-    let _e194 = hn.y;
-    let _e197 = params.max_history;
-    let _e198 = temporal_color(c_3, _e192, _e194, _e197);
-    textureStore(out_tex, texel_2, _e198);
-    textureStore(next_value, texel_2, _e198);
-    let _e203 = hn.x;
-    let _e205 = hn.y;
-    let _e207 = hv.w;
-    let _e211 = view.eye;
-    let _e214 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w, length((p_4 - _e211)));
-    textureStore(next_noise, texel_2, _e214);
+    let _e152 = hv;
+    let _e154 = hn.y;
+    let _e157 = params.max_history;
+    let _e158 = temporal_color(c_3, _e152, _e154, _e157);
+    textureStore(out_tex, texel_2, _e158);
+    textureStore(next_value, texel_2, _e158);
+    let _e163 = hn.x;
+    let _e165 = hn.y;
+    let _e167 = hv.w;
+    let _e171 = view.eye;
+    let _e174 = temporal_moments(c_3, _e163, _e165, _e167, _e158.w, length((p_4 - _e171)));
+    textureStore(next_noise, texel_2, _e174);
     textureStore(next_surface, texel_2, vec4<f32>(n_6, dot(n_6, p_4)));
     return;
 }

@@ -94,7 +94,6 @@ impl<'a> TemporalInputs<'a> {
 
 /// The two history sets' textures and views.
 struct History {
-    textures: [wgpu::Texture; 3],
     views: [wgpu::TextureView; 3],
 }
 
@@ -112,8 +111,7 @@ impl History {
                 view_formats: &[],
             })
         });
-        let views = [0, 1, 2].map(|i| textures[i].create_view(&Default::default()));
-        History { textures, views }
+        History { views: textures.map(|t| t.create_view(&Default::default())) }
     }
 }
 
@@ -272,11 +270,5 @@ impl TemporalPass {
         self.current = write;
         let groups = [self.desc.width.div_ceil(TILE), self.desc.height.div_ceil(TILE), 1];
         Ok(Dispatch::new(Stage::Temporal, &self.pipeline, group, Some(self.view.offset(0)), groups))
-    }
-
-    /// The history textures the next record reads (value, noise, surface),
-    /// for tests and debugging views.
-    pub fn history(&self) -> &[wgpu::Texture; 3] {
-        &self.history[self.current].textures
     }
 }

@@ -97,6 +97,10 @@ layout(rgba32f) writeonly uniform image2D _group_0_binding_10_cs;
 layout(rgba32f) writeonly uniform image2D _group_0_binding_11_cs;
 
 
+float to_f32_(uint u) {
+    return float(u);
+}
+
 float luminance(vec3 c) {
     return dot(c, vec3(0.2126, 0.7152, 0.0722));
 }
@@ -115,6 +119,54 @@ float bilinear_weight(float fx, float fy, uint dx, uint dy) {
     float wx = ((dx == 1u) ? fx : (1.0 - fx));
     float wy = ((dy == 1u) ? fy : (1.0 - fy));
     return (wx * wy);
+}
+
+vec4 history_tap(vec3 q, uint k_1, float width_1, float height_1) {
+    bool local_1 = false;
+    bool local_2 = false;
+    bool local_3 = false;
+    bool local_4 = false;
+    float x0_ = floor(q.x);
+    float y0_ = floor(q.y);
+    uint dx_1 = (k_1 % 2u);
+    uint dy_1 = (k_1 / 2u);
+    float _e12 = to_f32_(dx_1);
+    float tx = (x0_ + _e12);
+    float _e14 = to_f32_(dy_1);
+    float ty = (y0_ + _e14);
+    if ((q.z > 0.0)) {
+        local_1 = (tx >= 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool _e24 = local_1;
+    if (_e24) {
+        local_2 = (ty >= 0.0);
+    } else {
+        local_2 = false;
+    }
+    bool _e30 = local_2;
+    if (_e30) {
+        local_3 = (tx < width_1);
+    } else {
+        local_3 = false;
+    }
+    bool _e35 = local_3;
+    if (_e35) {
+        local_4 = (ty < height_1);
+    } else {
+        local_4 = false;
+    }
+    bool inside = local_4;
+    float _e45 = bilinear_weight((q.x - x0_), (q.y - y0_), dx_1, dy_1);
+    return vec4(tx, ty, _e45, (inside ? 1.0 : 0.0));
+}
+
+vec4 history_mean(vec4 sum, float weight_1) {
+    if ((weight_1 < TEMPORAL_MIN_WEIGHT)) {
+        return vec4(0.0, 0.0, 0.0, 0.0);
+    }
+    return (sum / vec4(weight_1));
 }
 
 bool history_matches(vec3 n, vec3 nh, vec3 p_1, float oh, float d) {
@@ -145,20 +197,16 @@ float temporal_alpha(float n_3) {
     return (1.0 / max(n_3, 1.0));
 }
 
-float history_tap_weight(float fx_1, float fy_1, uint dx_1, uint dy_1, vec3 n_4, vec3 nh_1, vec3 p_2, float oh_1, float d_1, float len) {
+float history_tap_weight(float w, vec3 n_4, vec3 nh_1, vec3 p_2, float oh_1, float d_1, float len) {
     bool local_6 = false;
-    if (!((len <= 0.0))) {
-        bool _e15 = history_matches(n_4, nh_1, p_2, oh_1, d_1);
-        local_6 = !(_e15);
+    if ((len > 0.0)) {
+        bool _e11 = history_matches(n_4, nh_1, p_2, oh_1, d_1);
+        local_6 = _e11;
     } else {
-        local_6 = true;
+        local_6 = false;
     }
-    bool _e18 = local_6;
-    if (_e18) {
-        return 0.0;
-    }
-    float _e20 = bilinear_weight(fx_1, fy_1, dx_1, dy_1);
-    return _e20;
+    bool _e13 = local_6;
+    return (_e13 ? w : 0.0);
 }
 
 vec4 temporal_color(vec3 c_1, vec4 h, float noise_1, float max_history_1) {
@@ -214,14 +262,10 @@ void main() {
     bool local = false;
     vec4 hv = vec4(0.0);
     vec4 hn = vec4(0.0);
-    bool local_1 = false;
     vec4 v = vec4(0.0);
     vec4 m = vec4(0.0);
     float weight = 0.0;
     uint k = 0u;
-    bool local_2 = false;
-    bool local_3 = false;
-    bool local_4 = false;
     uint _e4 = _group_0_binding_0_cs.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = _group_0_binding_0_cs.height;
@@ -256,92 +300,61 @@ void main() {
     vec3 _e79 = reproject(_e61, _e64, _e67, _e70, p_4, float(_e73), float(_e77));
     uint _e82 = _group_0_binding_3_cs.has_history;
     if ((_e82 == 1u)) {
-        local_1 = (_e79.z > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e91 = local_1;
-    if (_e91) {
-        float x0_ = floor(_e79.x);
-        float y0_ = floor(_e79.y);
-        vec3 _e98 = _group_0_binding_3_cs.prev_eye;
-        float d_3 = length((p_4 - _e98));
+        vec3 _e87 = _group_0_binding_3_cs.prev_eye;
+        float d_3 = length((p_4 - _e87));
         bool loop_init = true;
         while(true) {
             if (!loop_init) {
-                uint _e179 = k;
-                k = (_e179 + 1u);
+                uint _e144 = k;
+                k = (_e144 + 1u);
             }
             loop_init = false;
-            uint _e111 = k;
-            if ((_e111 < 4u)) {
+            uint _e100 = k;
+            if ((_e100 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e114 = k;
-                uint dx_2 = (_e114 & 1u);
-                uint _e117 = k;
-                uint dy_2 = (_e117 >> 1u);
-                float tx = (x0_ + float(dx_2));
-                float ty = (y0_ + float(dy_2));
-                if ((tx >= 0.0)) {
-                    local_2 = (ty >= 0.0);
-                } else {
-                    local_2 = false;
-                }
-                bool _e131 = local_2;
-                if (_e131) {
-                    uint _e136 = _group_0_binding_0_cs.width;
-                    local_3 = (tx < float(_e136));
-                } else {
-                    local_3 = false;
-                }
-                bool _e140 = local_3;
-                if (_e140) {
-                    uint _e145 = _group_0_binding_0_cs.height;
-                    local_4 = (ty < float(_e145));
-                } else {
-                    local_4 = false;
-                }
-                bool _e149 = local_4;
-                if (_e149) {
-                    ivec2 t_1 = ivec2(int(tx), int(ty));
+                uint _e103 = k;
+                uint _e106 = _group_0_binding_0_cs.width;
+                uint _e110 = _group_0_binding_0_cs.height;
+                vec4 _e112 = history_tap(_e79, _e103, float(_e106), float(_e110));
+                if ((_e112.w > 0.0)) {
+                    ivec2 t_1 = ivec2(int(_e112.x), int(_e112.y));
                     vec4 tv = texelFetch(_group_0_binding_5_cs, t_1, 0);
                     vec4 ts = texelFetch(_group_0_binding_7_cs, t_1, 0);
                     vec4 tn = texelFetch(_group_0_binding_6_cs, t_1, 0);
-                    float _e169 = history_tap_weight((_e79.x - x0_), (_e79.y - y0_), dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_3, tv.w);
-                    vec4 _e170 = v;
-                    v = (_e170 + (tv * _e169));
-                    vec4 _e173 = m;
-                    m = (_e173 + (tn * _e169));
-                    float _e176 = weight;
-                    weight = (_e176 + _e169);
+                    float _e134 = history_tap_weight(_e112.z, n_6, ts.xyz, p_4, ts.w, d_3, tv.w);
+                    vec4 _e135 = v;
+                    v = (_e135 + (tv * _e134));
+                    vec4 _e138 = m;
+                    m = (_e138 + (tn * _e134));
+                    float _e141 = weight;
+                    weight = (_e141 + _e134);
                 }
             }
         }
-        float _e181 = weight;
-        if ((_e181 >= TEMPORAL_MIN_WEIGHT)) {
-            vec4 _e184 = v;
-            float _e185 = weight;
-            hv = (_e184 / vec4(_e185));
-            vec4 _e188 = m;
-            float _e189 = weight;
-            hn = (_e188 / vec4(_e189));
-        }
+        vec4 _e146 = v;
+        float _e147 = weight;
+        vec4 _e148 = history_mean(_e146, _e147);
+        hv = _e148;
+        vec4 _e149 = m;
+        float _e150 = weight;
+        vec4 _e151 = history_mean(_e149, _e150);
+        hn = _e151;
     }
-    vec4 _e192 = hv;
-    float _e194 = hn.y;
-    float _e197 = _group_0_binding_3_cs.max_history;
-    vec4 _e198 = temporal_color(c_3, _e192, _e194, _e197);
-    imageStore(_group_0_binding_8_cs, texel_2, _e198);
-    imageStore(_group_0_binding_9_cs, texel_2, _e198);
-    float _e203 = hn.x;
-    float _e205 = hn.y;
-    float _e207 = hv.w;
-    vec3 _e211 = _group_0_binding_0_cs.eye;
-    vec4 _e214 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w, length((p_4 - _e211)));
-    imageStore(_group_0_binding_10_cs, texel_2, _e214);
+    vec4 _e152 = hv;
+    float _e154 = hn.y;
+    float _e157 = _group_0_binding_3_cs.max_history;
+    vec4 _e158 = temporal_color(c_3, _e152, _e154, _e157);
+    imageStore(_group_0_binding_8_cs, texel_2, _e158);
+    imageStore(_group_0_binding_9_cs, texel_2, _e158);
+    float _e163 = hn.x;
+    float _e165 = hn.y;
+    float _e167 = hv.w;
+    vec3 _e171 = _group_0_binding_0_cs.eye;
+    vec4 _e174 = temporal_moments(c_3, _e163, _e165, _e167, _e158.w, length((p_4 - _e171)));
+    imageStore(_group_0_binding_10_cs, texel_2, _e174);
     imageStore(_group_0_binding_11_cs, texel_2, vec4(n_6, dot(n_6, p_4)));
     return;
 }

@@ -85,6 +85,11 @@ RWTexture2D<float4> next_noise : register(u10);
 RWTexture2D<float4> next_surface : register(u11);
 Texture2D<float4> motion_tex : register(t12);
 
+float to_f32_(uint u)
+{
+    return float(u);
+}
+
 float luminance(float3 c)
 {
     return dot(c, float3(0.2126, 0.7152, 0.0722));
@@ -100,6 +105,65 @@ float bilinear_weight(float fx, float fy, uint dx, uint dy)
     float wx = ((dx == 1u) ? fx : (1.0 - fx));
     float wy = ((dy == 1u) ? fy : (1.0 - fy));
     return (wx * wy);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+float4 history_tap(float3 q, uint k_1, float width_1, float height_1)
+{
+    bool local_1 = (bool)0;
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
+
+    float x0_ = floor(q.x);
+    float y0_ = floor(q.y);
+    uint dx_1 = naga_mod(k_1, 2u);
+    uint dy_1 = naga_div(k_1, 2u);
+    const float _e12 = to_f32_(dx_1);
+    float tx = (x0_ + _e12);
+    const float _e14 = to_f32_(dy_1);
+    float ty = (y0_ + _e14);
+    if ((q.z > 0.0)) {
+        local_1 = (tx >= 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool _e24 = local_1;
+    if (_e24) {
+        local_2 = (ty >= 0.0);
+    } else {
+        local_2 = false;
+    }
+    bool _e30 = local_2;
+    if (_e30) {
+        local_3 = (tx < width_1);
+    } else {
+        local_3 = false;
+    }
+    bool _e35 = local_3;
+    if (_e35) {
+        local_4 = (ty < height_1);
+    } else {
+        local_4 = false;
+    }
+    bool inside = local_4;
+    const float _e45 = bilinear_weight((q.x - x0_), (q.y - y0_), dx_1, dy_1);
+    return float4(tx, ty, _e45, (inside ? 1.0 : 0.0));
+}
+
+float4 history_mean(float4 sum, float weight_1)
+{
+    if ((weight_1 < TEMPORAL_MIN_WEIGHT)) {
+        return float4(0.0, 0.0, 0.0, 0.0);
+    }
+    return (sum / (weight_1).xxxx);
 }
 
 float temporal_change(float l, float m1_, float noise_, float n)
@@ -122,28 +186,24 @@ float temporal_alpha(float n_2)
     return (1.0 / max(n_2, 1.0));
 }
 
-float history_tap_weight_motion(float fx_1, float fy_1, uint dx_1, uint dy_1, float3 n_3, float3 nh, float d, float dh, float len)
+float history_tap_weight_motion(float w, float3 n_3, float3 nh, float d, float dh, float len)
 {
     bool local_5 = (bool)0;
     bool local_6 = (bool)0;
 
-    if (!((len <= 0.0))) {
-        local_5 = (abs((dh - d)) > (TEMPORAL_MOTION_DEPTH_TOLERANCE * d));
+    if ((len > 0.0)) {
+        local_5 = (abs((dh - d)) <= (TEMPORAL_MOTION_DEPTH_TOLERANCE * d));
     } else {
-        local_5 = true;
+        local_5 = false;
     }
-    bool _e20 = local_5;
-    if (!(_e20)) {
-        local_6 = (dot(n_3, nh) < TEMPORAL_NORMAL_COS);
+    bool _e16 = local_5;
+    if (_e16) {
+        local_6 = (dot(n_3, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_6 = true;
+        local_6 = false;
     }
-    bool _e28 = local_6;
-    if (_e28) {
-        return 0.0;
-    }
-    const float _e30 = bilinear_weight(fx_1, fy_1, dx_1, dy_1);
-    return _e30;
+    bool _e23 = local_6;
+    return (_e23 ? w : 0.0);
 }
 
 float4 temporal_color(float3 c_1, float4 h, float noise_1, float max_history_1)
@@ -173,14 +233,6 @@ float4 surface_at(int2 texel)
 {
     float4 p = position_tex.Load(int3(texel, int(0)));
     return ((p.w > 0.0) ? float4(p.xyz, 1.0) : (0.0).xxxx);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % (rhs == 0u ? 1u : rhs);
-}
-
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / (rhs == 0u ? 1u : rhs);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -225,14 +277,10 @@ void main(uint3 gid : SV_DispatchThreadID)
     bool local = (bool)0;
     float4 hv = (0.0).xxxx;
     float4 hn = (0.0).xxxx;
-    bool local_1 = (bool)0;
     float4 v = (0.0).xxxx;
     float4 m = (0.0).xxxx;
     float weight = 0.0;
     uint k = 0u;
-    bool local_2 = (bool)0;
-    bool local_3 = (bool)0;
-    bool local_4 = (bool)0;
 
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
@@ -266,95 +314,64 @@ void main(uint3 gid : SV_DispatchThreadID)
     const float3 _e77 = reproject_motion(float(gid.x), float(gid.y), motion.x, motion.y, float(_e71), float(_e75));
     uint _e80 = params.has_history;
     if ((_e80 == 1u)) {
-        local_1 = (_e77.z > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e89 = local_1;
-    if (_e89) {
-        float x0_ = floor(_e77.x);
-        float y0_ = floor(_e77.y);
-        float3 _e96 = view.eye;
-        float d_2 = length((p_1 - _e96));
+        float3 _e85 = view.eye;
+        float d_2 = length((p_1 - _e85));
         uint2 loop_bound = uint2(4294967295u, 4294967295u);
         bool loop_init = true;
         while(true) {
             if (all(loop_bound == uint2(0u, 0u))) { break; }
             loop_bound -= uint2(loop_bound.y == 0u, 1u);
             if (!loop_init) {
-                uint _e177 = k;
-                k = (_e177 + 1u);
+                uint _e142 = k;
+                k = (_e142 + 1u);
             }
             loop_init = false;
-            uint _e109 = k;
-            if ((_e109 < 4u)) {
+            uint _e98 = k;
+            if ((_e98 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e112 = k;
-                uint dx_2 = (_e112 & 1u);
-                uint _e115 = k;
-                uint dy_2 = (_e115 >> 1u);
-                float tx = (x0_ + float(dx_2));
-                float ty = (y0_ + float(dy_2));
-                if ((tx >= 0.0)) {
-                    local_2 = (ty >= 0.0);
-                } else {
-                    local_2 = false;
-                }
-                bool _e129 = local_2;
-                if (_e129) {
-                    uint _e134 = view.width;
-                    local_3 = (tx < float(_e134));
-                } else {
-                    local_3 = false;
-                }
-                bool _e138 = local_3;
-                if (_e138) {
-                    uint _e143 = view.height;
-                    local_4 = (ty < float(_e143));
-                } else {
-                    local_4 = false;
-                }
-                bool _e147 = local_4;
-                if (_e147) {
-                    int2 t_1 = int2(naga_f2i32(tx), naga_f2i32(ty));
+                uint _e101 = k;
+                uint _e104 = view.width;
+                uint _e108 = view.height;
+                const float4 _e110 = history_tap(_e77, _e101, float(_e104), float(_e108));
+                if ((_e110.w > 0.0)) {
+                    int2 t_1 = int2(naga_f2i32(_e110.x), naga_f2i32(_e110.y));
                     float4 tv = hist_value.Load(int3(t_1, int(0)));
                     float4 ts = hist_surface.Load(int3(t_1, int(0)));
                     float4 tn = hist_noise.Load(int3(t_1, int(0)));
-                    const float _e167 = history_tap_weight_motion((_e77.x - x0_), (_e77.y - y0_), dx_2, dy_2, n_5, ts.xyz, d_2, tn.z, tv.w);
-                    float4 _e168 = v;
-                    v = (_e168 + (tv * _e167));
-                    float4 _e171 = m;
-                    m = (_e171 + (tn * _e167));
-                    float _e174 = weight;
-                    weight = (_e174 + _e167);
+                    const float _e132 = history_tap_weight_motion(_e110.z, n_5, ts.xyz, d_2, tn.z, tv.w);
+                    float4 _e133 = v;
+                    v = (_e133 + (tv * _e132));
+                    float4 _e136 = m;
+                    m = (_e136 + (tn * _e132));
+                    float _e139 = weight;
+                    weight = (_e139 + _e132);
                 }
             }
         }
-        float _e179 = weight;
-        if ((_e179 >= TEMPORAL_MIN_WEIGHT)) {
-            float4 _e182 = v;
-            float _e183 = weight;
-            hv = (_e182 / (_e183).xxxx);
-            float4 _e186 = m;
-            float _e187 = weight;
-            hn = (_e186 / (_e187).xxxx);
-        }
+        float4 _e144 = v;
+        float _e145 = weight;
+        const float4 _e146 = history_mean(_e144, _e145);
+        hv = _e146;
+        float4 _e147 = m;
+        float _e148 = weight;
+        const float4 _e149 = history_mean(_e147, _e148);
+        hn = _e149;
     }
-    float4 _e190 = hv;
-    float _e192 = hn.y;
-    float _e195 = params.max_history;
-    const float4 _e196 = temporal_color(c_3, _e190, _e192, _e195);
-    out_tex[texel_2] = _e196;
-    next_value[texel_2] = _e196;
-    float _e201 = hn.x;
-    float _e203 = hn.y;
-    float _e205 = hv.w;
-    float3 _e209 = view.eye;
-    const float4 _e212 = temporal_moments(c_3, _e201, _e203, _e205, _e196.w, length((p_1 - _e209)));
-    next_noise[texel_2] = _e212;
+    float4 _e150 = hv;
+    float _e152 = hn.y;
+    float _e155 = params.max_history;
+    const float4 _e156 = temporal_color(c_3, _e150, _e152, _e155);
+    out_tex[texel_2] = _e156;
+    next_value[texel_2] = _e156;
+    float _e161 = hn.x;
+    float _e163 = hn.y;
+    float _e165 = hv.w;
+    float3 _e169 = view.eye;
+    const float4 _e172 = temporal_moments(c_3, _e161, _e163, _e165, _e156.w, length((p_1 - _e169)));
+    next_noise[texel_2] = _e172;
     next_surface[texel_2] = float4(n_5, dot(n_5, p_1));
     return;
 }

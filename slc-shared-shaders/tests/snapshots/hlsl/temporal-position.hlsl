@@ -84,6 +84,11 @@ RWTexture2D<float4> next_value : register(u9);
 RWTexture2D<float4> next_noise : register(u10);
 RWTexture2D<float4> next_surface : register(u11);
 
+float to_f32_(uint u)
+{
+    return float(u);
+}
+
 float luminance(float3 c)
 {
     return dot(c, float3(0.2126, 0.7152, 0.0722));
@@ -105,6 +110,65 @@ float bilinear_weight(float fx, float fy, uint dx, uint dy)
     float wx = ((dx == 1u) ? fx : (1.0 - fx));
     float wy = ((dy == 1u) ? fy : (1.0 - fy));
     return (wx * wy);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+float4 history_tap(float3 q, uint k_1, float width_1, float height_1)
+{
+    bool local_1 = (bool)0;
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
+
+    float x0_ = floor(q.x);
+    float y0_ = floor(q.y);
+    uint dx_1 = naga_mod(k_1, 2u);
+    uint dy_1 = naga_div(k_1, 2u);
+    const float _e12 = to_f32_(dx_1);
+    float tx = (x0_ + _e12);
+    const float _e14 = to_f32_(dy_1);
+    float ty = (y0_ + _e14);
+    if ((q.z > 0.0)) {
+        local_1 = (tx >= 0.0);
+    } else {
+        local_1 = false;
+    }
+    bool _e24 = local_1;
+    if (_e24) {
+        local_2 = (ty >= 0.0);
+    } else {
+        local_2 = false;
+    }
+    bool _e30 = local_2;
+    if (_e30) {
+        local_3 = (tx < width_1);
+    } else {
+        local_3 = false;
+    }
+    bool _e35 = local_3;
+    if (_e35) {
+        local_4 = (ty < height_1);
+    } else {
+        local_4 = false;
+    }
+    bool inside = local_4;
+    const float _e45 = bilinear_weight((q.x - x0_), (q.y - y0_), dx_1, dy_1);
+    return float4(tx, ty, _e45, (inside ? 1.0 : 0.0));
+}
+
+float4 history_mean(float4 sum, float weight_1)
+{
+    if ((weight_1 < TEMPORAL_MIN_WEIGHT)) {
+        return float4(0.0, 0.0, 0.0, 0.0);
+    }
+    return (sum / (weight_1).xxxx);
 }
 
 bool history_matches(float3 n, float3 nh, float3 p_1, float oh, float d)
@@ -140,22 +204,18 @@ float temporal_alpha(float n_3)
     return (1.0 / max(n_3, 1.0));
 }
 
-float history_tap_weight(float fx_1, float fy_1, uint dx_1, uint dy_1, float3 n_4, float3 nh_1, float3 p_2, float oh_1, float d_1, float len)
+float history_tap_weight(float w, float3 n_4, float3 nh_1, float3 p_2, float oh_1, float d_1, float len)
 {
     bool local_6 = (bool)0;
 
-    if (!((len <= 0.0))) {
-        const bool _e15 = history_matches(n_4, nh_1, p_2, oh_1, d_1);
-        local_6 = !(_e15);
+    if ((len > 0.0)) {
+        const bool _e11 = history_matches(n_4, nh_1, p_2, oh_1, d_1);
+        local_6 = _e11;
     } else {
-        local_6 = true;
+        local_6 = false;
     }
-    bool _e18 = local_6;
-    if (_e18) {
-        return 0.0;
-    }
-    const float _e20 = bilinear_weight(fx_1, fy_1, dx_1, dy_1);
-    return _e20;
+    bool _e13 = local_6;
+    return (_e13 ? w : 0.0);
 }
 
 float4 temporal_color(float3 c_1, float4 h, float noise_1, float max_history_1)
@@ -185,14 +245,6 @@ float4 surface_at(int2 texel)
 {
     float4 p_3 = position_tex.Load(int3(texel, int(0)));
     return ((p_3.w > 0.0) ? float4(p_3.xyz, 1.0) : (0.0).xxxx);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % (rhs == 0u ? 1u : rhs);
-}
-
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / (rhs == 0u ? 1u : rhs);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -237,14 +289,10 @@ void main(uint3 gid : SV_DispatchThreadID)
     bool local = (bool)0;
     float4 hv = (0.0).xxxx;
     float4 hn = (0.0).xxxx;
-    bool local_1 = (bool)0;
     float4 v = (0.0).xxxx;
     float4 m = (0.0).xxxx;
     float weight = 0.0;
     uint k = 0u;
-    bool local_2 = (bool)0;
-    bool local_3 = (bool)0;
-    bool local_4 = (bool)0;
 
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
@@ -280,95 +328,64 @@ void main(uint3 gid : SV_DispatchThreadID)
     const float3 _e79 = reproject(_e61, _e64, _e67, _e70, p_4, float(_e73), float(_e77));
     uint _e82 = params.has_history;
     if ((_e82 == 1u)) {
-        local_1 = (_e79.z > 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e91 = local_1;
-    if (_e91) {
-        float x0_ = floor(_e79.x);
-        float y0_ = floor(_e79.y);
-        float3 _e98 = params.prev_eye;
-        float d_3 = length((p_4 - _e98));
+        float3 _e87 = params.prev_eye;
+        float d_3 = length((p_4 - _e87));
         uint2 loop_bound = uint2(4294967295u, 4294967295u);
         bool loop_init = true;
         while(true) {
             if (all(loop_bound == uint2(0u, 0u))) { break; }
             loop_bound -= uint2(loop_bound.y == 0u, 1u);
             if (!loop_init) {
-                uint _e179 = k;
-                k = (_e179 + 1u);
+                uint _e144 = k;
+                k = (_e144 + 1u);
             }
             loop_init = false;
-            uint _e111 = k;
-            if ((_e111 < 4u)) {
+            uint _e100 = k;
+            if ((_e100 < 4u)) {
             } else {
                 break;
             }
             {
-                uint _e114 = k;
-                uint dx_2 = (_e114 & 1u);
-                uint _e117 = k;
-                uint dy_2 = (_e117 >> 1u);
-                float tx = (x0_ + float(dx_2));
-                float ty = (y0_ + float(dy_2));
-                if ((tx >= 0.0)) {
-                    local_2 = (ty >= 0.0);
-                } else {
-                    local_2 = false;
-                }
-                bool _e131 = local_2;
-                if (_e131) {
-                    uint _e136 = view.width;
-                    local_3 = (tx < float(_e136));
-                } else {
-                    local_3 = false;
-                }
-                bool _e140 = local_3;
-                if (_e140) {
-                    uint _e145 = view.height;
-                    local_4 = (ty < float(_e145));
-                } else {
-                    local_4 = false;
-                }
-                bool _e149 = local_4;
-                if (_e149) {
-                    int2 t_1 = int2(naga_f2i32(tx), naga_f2i32(ty));
+                uint _e103 = k;
+                uint _e106 = view.width;
+                uint _e110 = view.height;
+                const float4 _e112 = history_tap(_e79, _e103, float(_e106), float(_e110));
+                if ((_e112.w > 0.0)) {
+                    int2 t_1 = int2(naga_f2i32(_e112.x), naga_f2i32(_e112.y));
                     float4 tv = hist_value.Load(int3(t_1, int(0)));
                     float4 ts = hist_surface.Load(int3(t_1, int(0)));
                     float4 tn = hist_noise.Load(int3(t_1, int(0)));
-                    const float _e169 = history_tap_weight((_e79.x - x0_), (_e79.y - y0_), dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_3, tv.w);
-                    float4 _e170 = v;
-                    v = (_e170 + (tv * _e169));
-                    float4 _e173 = m;
-                    m = (_e173 + (tn * _e169));
-                    float _e176 = weight;
-                    weight = (_e176 + _e169);
+                    const float _e134 = history_tap_weight(_e112.z, n_6, ts.xyz, p_4, ts.w, d_3, tv.w);
+                    float4 _e135 = v;
+                    v = (_e135 + (tv * _e134));
+                    float4 _e138 = m;
+                    m = (_e138 + (tn * _e134));
+                    float _e141 = weight;
+                    weight = (_e141 + _e134);
                 }
             }
         }
-        float _e181 = weight;
-        if ((_e181 >= TEMPORAL_MIN_WEIGHT)) {
-            float4 _e184 = v;
-            float _e185 = weight;
-            hv = (_e184 / (_e185).xxxx);
-            float4 _e188 = m;
-            float _e189 = weight;
-            hn = (_e188 / (_e189).xxxx);
-        }
+        float4 _e146 = v;
+        float _e147 = weight;
+        const float4 _e148 = history_mean(_e146, _e147);
+        hv = _e148;
+        float4 _e149 = m;
+        float _e150 = weight;
+        const float4 _e151 = history_mean(_e149, _e150);
+        hn = _e151;
     }
-    float4 _e192 = hv;
-    float _e194 = hn.y;
-    float _e197 = params.max_history;
-    const float4 _e198 = temporal_color(c_3, _e192, _e194, _e197);
-    out_tex[texel_2] = _e198;
-    next_value[texel_2] = _e198;
-    float _e203 = hn.x;
-    float _e205 = hn.y;
-    float _e207 = hv.w;
-    float3 _e211 = view.eye;
-    const float4 _e214 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w, length((p_4 - _e211)));
-    next_noise[texel_2] = _e214;
+    float4 _e152 = hv;
+    float _e154 = hn.y;
+    float _e157 = params.max_history;
+    const float4 _e158 = temporal_color(c_3, _e152, _e154, _e157);
+    out_tex[texel_2] = _e158;
+    next_value[texel_2] = _e158;
+    float _e163 = hn.x;
+    float _e165 = hn.y;
+    float _e167 = hv.w;
+    float3 _e171 = view.eye;
+    const float4 _e174 = temporal_moments(c_3, _e163, _e165, _e167, _e158.w, length((p_4 - _e171)));
+    next_noise[texel_2] = _e174;
     next_surface[texel_2] = float4(n_6, dot(n_6, p_4));
     return;
 }

@@ -74,6 +74,12 @@ constant float TEMPORAL_CHANGE_LOW = 4.0;
 constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 
+float to_f32_(
+    uint u
+) {
+    return static_cast<float>(u);
+}
+
 float luminance(
     metal::float3 c
 ) {
@@ -100,6 +106,70 @@ float bilinear_weight(
     float wx = (dx == 1u) ? fx : (1.0 - fx);
     float wy = (dy == 1u) ? fy : (1.0 - fy);
     return wx * wy;
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+metal::float4 history_tap(
+    metal::float3 q,
+    uint k_1,
+    float width_1,
+    float height_1
+) {
+    bool local_1 = {};
+    bool local_2 = {};
+    bool local_3 = {};
+    bool local_4 = {};
+    float x0_ = metal::floor(q.x);
+    float y0_ = metal::floor(q.y);
+    uint dx_1 = naga_mod(k_1, 2u);
+    uint dy_1 = naga_div(k_1, 2u);
+    float _e12 = to_f32_(dx_1);
+    float tx = x0_ + _e12;
+    float _e14 = to_f32_(dy_1);
+    float ty = y0_ + _e14;
+    if (q.z > 0.0) {
+        local_1 = tx >= 0.0;
+    } else {
+        local_1 = false;
+    }
+    bool _e24 = local_1;
+    if (_e24) {
+        local_2 = ty >= 0.0;
+    } else {
+        local_2 = false;
+    }
+    bool _e30 = local_2;
+    if (_e30) {
+        local_3 = tx < width_1;
+    } else {
+        local_3 = false;
+    }
+    bool _e35 = local_3;
+    if (_e35) {
+        local_4 = ty < height_1;
+    } else {
+        local_4 = false;
+    }
+    bool inside = local_4;
+    float _e45 = bilinear_weight(q.x - x0_, q.y - y0_, dx_1, dy_1);
+    return metal::float4(tx, ty, _e45, inside ? 1.0 : 0.0);
+}
+
+metal::float4 history_mean(
+    metal::float4 sum,
+    float weight_1
+) {
+    if (weight_1 < TEMPORAL_MIN_WEIGHT) {
+        return metal::float4(0.0, 0.0, 0.0, 0.0);
+    }
+    return sum / metal::float4(weight_1);
 }
 
 float temporal_change(
@@ -131,10 +201,7 @@ float temporal_alpha(
 }
 
 float history_tap_weight_motion(
-    float fx_1,
-    float fy_1,
-    uint dx_1,
-    uint dy_1,
+    float w,
     metal::float3 n_3,
     metal::float3 nh,
     float d,
@@ -143,23 +210,19 @@ float history_tap_weight_motion(
 ) {
     bool local_5 = {};
     bool local_6 = {};
-    if (!((len <= 0.0))) {
-        local_5 = metal::abs(dh - d) > (TEMPORAL_MOTION_DEPTH_TOLERANCE * d);
+    if (len > 0.0) {
+        local_5 = metal::abs(dh - d) <= (TEMPORAL_MOTION_DEPTH_TOLERANCE * d);
     } else {
-        local_5 = true;
+        local_5 = false;
     }
-    bool _e20 = local_5;
-    if (!(_e20)) {
-        local_6 = metal::dot(n_3, nh) < TEMPORAL_NORMAL_COS;
+    bool _e16 = local_5;
+    if (_e16) {
+        local_6 = metal::dot(n_3, nh) >= TEMPORAL_NORMAL_COS;
     } else {
-        local_6 = true;
+        local_6 = false;
     }
-    bool _e28 = local_6;
-    if (_e28) {
-        return 0.0;
-    }
-    float _e30 = bilinear_weight(fx_1, fy_1, dx_1, dy_1);
-    return _e30;
+    bool _e23 = local_6;
+    return _e23 ? w : 0.0;
 }
 
 metal::float4 temporal_color(
@@ -201,14 +264,6 @@ metal::float4 surface_at(
 ) {
     metal::float4 p = position_tex.read(metal::uint2(texel), 0);
     return (p.w > 0.0) ? metal::float4(p.xyz, 1.0) : metal::float4(0.0);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % metal::select(rhs, 1u, rhs == 0u);
-}
-
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / metal::select(rhs, 1u, rhs == 0u);
 }
 
 GbTexel gbuffer_at(
@@ -263,14 +318,10 @@ kernel void main_(
     bool local = {};
     metal::float4 hv = metal::float4(0.0);
     metal::float4 hn = metal::float4(0.0);
-    bool local_1 = {};
     metal::float4 v = metal::float4(0.0);
     metal::float4 m = metal::float4(0.0);
     float weight = 0.0;
     uint k = 0u;
-    bool local_2 = {};
-    bool local_3 = {};
-    bool local_4 = {};
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = view.height;
@@ -303,95 +354,64 @@ kernel void main_(
     metal::float3 _e77 = reproject_motion(static_cast<float>(gid.x), static_cast<float>(gid.y), motion.x, motion.y, static_cast<float>(_e71), static_cast<float>(_e75));
     uint _e80 = params.has_history;
     if (_e80 == 1u) {
-        local_1 = _e77.z > 0.0;
-    } else {
-        local_1 = false;
-    }
-    bool _e89 = local_1;
-    if (_e89) {
-        float x0_ = metal::floor(_e77.x);
-        float y0_ = metal::floor(_e77.y);
-        metal::float3 _e96 = view.eye;
-        float d_2 = metal::length(p_1 - _e96);
+        metal::float3 _e85 = view.eye;
+        float d_2 = metal::length(p_1 - _e85);
         uint2 loop_bound = uint2(4294967295u);
         bool loop_init = true;
         while(true) {
             if (metal::all(loop_bound == uint2(0u))) { break; }
             loop_bound -= uint2(loop_bound.y == 0u, 1u);
             if (!loop_init) {
-                uint _e177 = k;
-                k = _e177 + 1u;
+                uint _e142 = k;
+                k = _e142 + 1u;
             }
             loop_init = false;
-            uint _e109 = k;
-            if (_e109 < 4u) {
+            uint _e98 = k;
+            if (_e98 < 4u) {
             } else {
                 break;
             }
             {
-                uint _e112 = k;
-                uint dx_2 = _e112 & 1u;
-                uint _e115 = k;
-                uint dy_2 = _e115 >> 1u;
-                float tx = x0_ + static_cast<float>(dx_2);
-                float ty = y0_ + static_cast<float>(dy_2);
-                if (tx >= 0.0) {
-                    local_2 = ty >= 0.0;
-                } else {
-                    local_2 = false;
-                }
-                bool _e129 = local_2;
-                if (_e129) {
-                    uint _e134 = view.width;
-                    local_3 = tx < static_cast<float>(_e134);
-                } else {
-                    local_3 = false;
-                }
-                bool _e138 = local_3;
-                if (_e138) {
-                    uint _e143 = view.height;
-                    local_4 = ty < static_cast<float>(_e143);
-                } else {
-                    local_4 = false;
-                }
-                bool _e147 = local_4;
-                if (_e147) {
-                    metal::int2 t_1 = metal::int2(naga_f2i32(tx), naga_f2i32(ty));
+                uint _e101 = k;
+                uint _e104 = view.width;
+                uint _e108 = view.height;
+                metal::float4 _e110 = history_tap(_e77, _e101, static_cast<float>(_e104), static_cast<float>(_e108));
+                if (_e110.w > 0.0) {
+                    metal::int2 t_1 = metal::int2(naga_f2i32(_e110.x), naga_f2i32(_e110.y));
                     metal::float4 tv = hist_value.read(metal::uint2(t_1), 0);
                     metal::float4 ts = hist_surface.read(metal::uint2(t_1), 0);
                     metal::float4 tn = hist_noise.read(metal::uint2(t_1), 0);
-                    float _e167 = history_tap_weight_motion(_e77.x - x0_, _e77.y - y0_, dx_2, dy_2, n_5, ts.xyz, d_2, tn.z, tv.w);
-                    metal::float4 _e168 = v;
-                    v = _e168 + (tv * _e167);
-                    metal::float4 _e171 = m;
-                    m = _e171 + (tn * _e167);
-                    float _e174 = weight;
-                    weight = _e174 + _e167;
+                    float _e132 = history_tap_weight_motion(_e110.z, n_5, ts.xyz, d_2, tn.z, tv.w);
+                    metal::float4 _e133 = v;
+                    v = _e133 + (tv * _e132);
+                    metal::float4 _e136 = m;
+                    m = _e136 + (tn * _e132);
+                    float _e139 = weight;
+                    weight = _e139 + _e132;
                 }
             }
         }
-        float _e179 = weight;
-        if (_e179 >= TEMPORAL_MIN_WEIGHT) {
-            metal::float4 _e182 = v;
-            float _e183 = weight;
-            hv = _e182 / metal::float4(_e183);
-            metal::float4 _e186 = m;
-            float _e187 = weight;
-            hn = _e186 / metal::float4(_e187);
-        }
+        metal::float4 _e144 = v;
+        float _e145 = weight;
+        metal::float4 _e146 = history_mean(_e144, _e145);
+        hv = _e146;
+        metal::float4 _e147 = m;
+        float _e148 = weight;
+        metal::float4 _e149 = history_mean(_e147, _e148);
+        hn = _e149;
     }
-    metal::float4 _e190 = hv;
-    float _e192 = hn.y;
-    float _e195 = params.max_history;
-    metal::float4 _e196 = temporal_color(c_3, _e190, _e192, _e195);
-    out_tex.write(_e196, metal::uint2(texel_2));
-    next_value.write(_e196, metal::uint2(texel_2));
-    float _e201 = hn.x;
-    float _e203 = hn.y;
-    float _e205 = hv.w;
-    metal::float3 _e209 = view.eye;
-    metal::float4 _e212 = temporal_moments(c_3, _e201, _e203, _e205, _e196.w, metal::length(p_1 - _e209));
-    next_noise.write(_e212, metal::uint2(texel_2));
+    metal::float4 _e150 = hv;
+    float _e152 = hn.y;
+    float _e155 = params.max_history;
+    metal::float4 _e156 = temporal_color(c_3, _e150, _e152, _e155);
+    out_tex.write(_e156, metal::uint2(texel_2));
+    next_value.write(_e156, metal::uint2(texel_2));
+    float _e161 = hn.x;
+    float _e163 = hn.y;
+    float _e165 = hv.w;
+    metal::float3 _e169 = view.eye;
+    metal::float4 _e172 = temporal_moments(c_3, _e161, _e163, _e165, _e156.w, metal::length(p_1 - _e169));
+    next_noise.write(_e172, metal::uint2(texel_2));
     next_surface.write(metal::float4(n_5, metal::dot(n_5, p_1)), metal::uint2(texel_2));
     return;
 }

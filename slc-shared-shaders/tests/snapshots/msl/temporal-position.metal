@@ -74,6 +74,12 @@ constant float TEMPORAL_CHANGE_LOW = 4.0;
 constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 
+float to_f32_(
+    uint u
+) {
+    return static_cast<float>(u);
+}
+
 float luminance(
     metal::float3 c
 ) {
@@ -107,6 +113,70 @@ float bilinear_weight(
     float wx = (dx == 1u) ? fx : (1.0 - fx);
     float wy = (dy == 1u) ? fy : (1.0 - fy);
     return wx * wy;
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+metal::float4 history_tap(
+    metal::float3 q,
+    uint k_1,
+    float width_1,
+    float height_1
+) {
+    bool local_1 = {};
+    bool local_2 = {};
+    bool local_3 = {};
+    bool local_4 = {};
+    float x0_ = metal::floor(q.x);
+    float y0_ = metal::floor(q.y);
+    uint dx_1 = naga_mod(k_1, 2u);
+    uint dy_1 = naga_div(k_1, 2u);
+    float _e12 = to_f32_(dx_1);
+    float tx = x0_ + _e12;
+    float _e14 = to_f32_(dy_1);
+    float ty = y0_ + _e14;
+    if (q.z > 0.0) {
+        local_1 = tx >= 0.0;
+    } else {
+        local_1 = false;
+    }
+    bool _e24 = local_1;
+    if (_e24) {
+        local_2 = ty >= 0.0;
+    } else {
+        local_2 = false;
+    }
+    bool _e30 = local_2;
+    if (_e30) {
+        local_3 = tx < width_1;
+    } else {
+        local_3 = false;
+    }
+    bool _e35 = local_3;
+    if (_e35) {
+        local_4 = ty < height_1;
+    } else {
+        local_4 = false;
+    }
+    bool inside = local_4;
+    float _e45 = bilinear_weight(q.x - x0_, q.y - y0_, dx_1, dy_1);
+    return metal::float4(tx, ty, _e45, inside ? 1.0 : 0.0);
+}
+
+metal::float4 history_mean(
+    metal::float4 sum,
+    float weight_1
+) {
+    if (weight_1 < TEMPORAL_MIN_WEIGHT) {
+        return metal::float4(0.0, 0.0, 0.0, 0.0);
+    }
+    return sum / metal::float4(weight_1);
 }
 
 bool history_matches(
@@ -155,10 +225,7 @@ float temporal_alpha(
 }
 
 float history_tap_weight(
-    float fx_1,
-    float fy_1,
-    uint dx_1,
-    uint dy_1,
+    float w,
     metal::float3 n_4,
     metal::float3 nh_1,
     metal::float3 p_2,
@@ -167,18 +234,14 @@ float history_tap_weight(
     float len
 ) {
     bool local_6 = {};
-    if (!((len <= 0.0))) {
-        bool _e15 = history_matches(n_4, nh_1, p_2, oh_1, d_1);
-        local_6 = !(_e15);
+    if (len > 0.0) {
+        bool _e11 = history_matches(n_4, nh_1, p_2, oh_1, d_1);
+        local_6 = _e11;
     } else {
-        local_6 = true;
+        local_6 = false;
     }
-    bool _e18 = local_6;
-    if (_e18) {
-        return 0.0;
-    }
-    float _e20 = bilinear_weight(fx_1, fy_1, dx_1, dy_1);
-    return _e20;
+    bool _e13 = local_6;
+    return _e13 ? w : 0.0;
 }
 
 metal::float4 temporal_color(
@@ -220,14 +283,6 @@ metal::float4 surface_at(
 ) {
     metal::float4 p_3 = position_tex.read(metal::uint2(texel), 0);
     return (p_3.w > 0.0) ? metal::float4(p_3.xyz, 1.0) : metal::float4(0.0);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % metal::select(rhs, 1u, rhs == 0u);
-}
-
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / metal::select(rhs, 1u, rhs == 0u);
 }
 
 GbTexel gbuffer_at(
@@ -281,14 +336,10 @@ kernel void main_(
     bool local = {};
     metal::float4 hv = metal::float4(0.0);
     metal::float4 hn = metal::float4(0.0);
-    bool local_1 = {};
     metal::float4 v = metal::float4(0.0);
     metal::float4 m = metal::float4(0.0);
     float weight = 0.0;
     uint k = 0u;
-    bool local_2 = {};
-    bool local_3 = {};
-    bool local_4 = {};
     uint _e4 = view.width;
     if (!((gid.x >= _e4))) {
         uint _e12 = view.height;
@@ -323,95 +374,64 @@ kernel void main_(
     metal::float3 _e79 = reproject(_e61, _e64, _e67, _e70, p_4, static_cast<float>(_e73), static_cast<float>(_e77));
     uint _e82 = params.has_history;
     if (_e82 == 1u) {
-        local_1 = _e79.z > 0.0;
-    } else {
-        local_1 = false;
-    }
-    bool _e91 = local_1;
-    if (_e91) {
-        float x0_ = metal::floor(_e79.x);
-        float y0_ = metal::floor(_e79.y);
-        metal::float3 _e98 = params.prev_eye;
-        float d_3 = metal::length(p_4 - _e98);
+        metal::float3 _e87 = params.prev_eye;
+        float d_3 = metal::length(p_4 - _e87);
         uint2 loop_bound = uint2(4294967295u);
         bool loop_init = true;
         while(true) {
             if (metal::all(loop_bound == uint2(0u))) { break; }
             loop_bound -= uint2(loop_bound.y == 0u, 1u);
             if (!loop_init) {
-                uint _e179 = k;
-                k = _e179 + 1u;
+                uint _e144 = k;
+                k = _e144 + 1u;
             }
             loop_init = false;
-            uint _e111 = k;
-            if (_e111 < 4u) {
+            uint _e100 = k;
+            if (_e100 < 4u) {
             } else {
                 break;
             }
             {
-                uint _e114 = k;
-                uint dx_2 = _e114 & 1u;
-                uint _e117 = k;
-                uint dy_2 = _e117 >> 1u;
-                float tx = x0_ + static_cast<float>(dx_2);
-                float ty = y0_ + static_cast<float>(dy_2);
-                if (tx >= 0.0) {
-                    local_2 = ty >= 0.0;
-                } else {
-                    local_2 = false;
-                }
-                bool _e131 = local_2;
-                if (_e131) {
-                    uint _e136 = view.width;
-                    local_3 = tx < static_cast<float>(_e136);
-                } else {
-                    local_3 = false;
-                }
-                bool _e140 = local_3;
-                if (_e140) {
-                    uint _e145 = view.height;
-                    local_4 = ty < static_cast<float>(_e145);
-                } else {
-                    local_4 = false;
-                }
-                bool _e149 = local_4;
-                if (_e149) {
-                    metal::int2 t_1 = metal::int2(naga_f2i32(tx), naga_f2i32(ty));
+                uint _e103 = k;
+                uint _e106 = view.width;
+                uint _e110 = view.height;
+                metal::float4 _e112 = history_tap(_e79, _e103, static_cast<float>(_e106), static_cast<float>(_e110));
+                if (_e112.w > 0.0) {
+                    metal::int2 t_1 = metal::int2(naga_f2i32(_e112.x), naga_f2i32(_e112.y));
                     metal::float4 tv = hist_value.read(metal::uint2(t_1), 0);
                     metal::float4 ts = hist_surface.read(metal::uint2(t_1), 0);
                     metal::float4 tn = hist_noise.read(metal::uint2(t_1), 0);
-                    float _e169 = history_tap_weight(_e79.x - x0_, _e79.y - y0_, dx_2, dy_2, n_6, ts.xyz, p_4, ts.w, d_3, tv.w);
-                    metal::float4 _e170 = v;
-                    v = _e170 + (tv * _e169);
-                    metal::float4 _e173 = m;
-                    m = _e173 + (tn * _e169);
-                    float _e176 = weight;
-                    weight = _e176 + _e169;
+                    float _e134 = history_tap_weight(_e112.z, n_6, ts.xyz, p_4, ts.w, d_3, tv.w);
+                    metal::float4 _e135 = v;
+                    v = _e135 + (tv * _e134);
+                    metal::float4 _e138 = m;
+                    m = _e138 + (tn * _e134);
+                    float _e141 = weight;
+                    weight = _e141 + _e134;
                 }
             }
         }
-        float _e181 = weight;
-        if (_e181 >= TEMPORAL_MIN_WEIGHT) {
-            metal::float4 _e184 = v;
-            float _e185 = weight;
-            hv = _e184 / metal::float4(_e185);
-            metal::float4 _e188 = m;
-            float _e189 = weight;
-            hn = _e188 / metal::float4(_e189);
-        }
+        metal::float4 _e146 = v;
+        float _e147 = weight;
+        metal::float4 _e148 = history_mean(_e146, _e147);
+        hv = _e148;
+        metal::float4 _e149 = m;
+        float _e150 = weight;
+        metal::float4 _e151 = history_mean(_e149, _e150);
+        hn = _e151;
     }
-    metal::float4 _e192 = hv;
-    float _e194 = hn.y;
-    float _e197 = params.max_history;
-    metal::float4 _e198 = temporal_color(c_3, _e192, _e194, _e197);
-    out_tex.write(_e198, metal::uint2(texel_2));
-    next_value.write(_e198, metal::uint2(texel_2));
-    float _e203 = hn.x;
-    float _e205 = hn.y;
-    float _e207 = hv.w;
-    metal::float3 _e211 = view.eye;
-    metal::float4 _e214 = temporal_moments(c_3, _e203, _e205, _e207, _e198.w, metal::length(p_4 - _e211));
-    next_noise.write(_e214, metal::uint2(texel_2));
+    metal::float4 _e152 = hv;
+    float _e154 = hn.y;
+    float _e157 = params.max_history;
+    metal::float4 _e158 = temporal_color(c_3, _e152, _e154, _e157);
+    out_tex.write(_e158, metal::uint2(texel_2));
+    next_value.write(_e158, metal::uint2(texel_2));
+    float _e163 = hn.x;
+    float _e165 = hn.y;
+    float _e167 = hv.w;
+    metal::float3 _e171 = view.eye;
+    metal::float4 _e174 = temporal_moments(c_3, _e163, _e165, _e167, _e158.w, metal::length(p_4 - _e171));
+    next_noise.write(_e174, metal::uint2(texel_2));
     next_surface.write(metal::float4(n_6, metal::dot(n_6, p_4)), metal::uint2(texel_2));
     return;
 }
