@@ -372,7 +372,7 @@ impl GpuVplFrame {
         gpu.require("max_buffer_size (vertices)", vertex_bytes, lim.max_buffer_size)?;
         let features = Features { lights: LightSet { vpl: true, ..LightSet::default() }, tile_size: TILE, interleave: PERIOD, ..Features::default() };
         // Glossy materials: the indirect pass's and the composition's glossy kernels.
-        let glossy = scene.materials.iter().any(|m| Specular::of(m).has_specular());
+        let glossy = scene.materials.iter().any(Material::has_specular);
         let compose_features = Features { output_format: OutputFormat::Rgba32Float, glossy, ..features };
         check_kernels(
             gpu,

@@ -264,7 +264,11 @@ impl VplContext {
             history.lit_by = Some(self.scene.primary);
             let ts = &if changed { ts.after_change() } else { *ts };
             filtered = history.irradiance.accumulate(&filtered, gb, &view, ts)?;
-            if !specular.is_empty() {
+            if specular.is_empty() {
+                // No glossy pixel this frame: the next glossy frame must not
+                // reproject a specular history from frames ago.
+                history.specular.reset();
+            } else {
                 specular = history.specular.accumulate(&specular, gb, &view, ts)?;
             }
         }

@@ -16,7 +16,7 @@
 use glam::Vec3;
 use slc_core::brdf::{ggx_alpha, specular_correction};
 use slc_core::interleave::{vpl_far_fixed_share, vpl_far_slc_share, vpl_far_weight, vpl_near_cull_range2, vpl_near_fixed_share, vpl_near_slc_share};
-use slc_core::light::{INV_PI, vpl_transfer};
+use slc_core::light::vpl_transfer;
 use slc_core::range::cull_radius;
 use slc_core::sphere::sphere_overlaps_aabb;
 use slc_scene::vpl::GBuffer;
@@ -440,8 +440,7 @@ fn shade_impl<const MODE: u8>(list: &LightList, x: Vec3, n: Vec3, min_d2: f32, n
 
 /// A receiver with a specular lobe as [`shade_specular`] sees it: its
 /// position, unit shading normal, unit view direction (toward the eye) and
-/// glTF material, and `c_diff/π` (the part of its BRDF the Lambertian
-/// irradiance already carries, [`slc_scene::vpl::Specular::diffuse_albedo`]).
+/// glTF material.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Glossy {
     /// Position.
@@ -460,8 +459,6 @@ pub struct Glossy {
     pub f0: Vec3,
     /// The dielectric's `F90`.
     pub f90: f32,
-    /// `c_diff/π`.
-    pub diffuse: Vec3,
 }
 
 impl Glossy {
@@ -479,7 +476,6 @@ impl Glossy {
             alpha: ggx_alpha(s.roughness),
             f0: s.f0,
             f90: s.f90,
-            diffuse: s.diffuse_albedo(base) * INV_PI,
         })
     }
 

@@ -14,10 +14,11 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         return;
     }
     let i = gid.y * view.width + gid.x;
-    let e = select(vec4f(0.0), irradiance[i], gbuffer_at(i).position.w > 0.0);
+    let valid = gbuffer_at(i).position.w > 0.0;
+    let e = select(vec4f(0.0), irradiance[i], valid);
     textureStore(out_tex, vec2i(i32(gid.x), i32(gid.y)), e);
 {% if glossy %}
-    let s = select(vec4f(0.0), specular[i], gbuffer_at(i).position.w > 0.0);
+    let s = select(vec4f(0.0), specular[i], valid);
     textureStore(specular_tex, vec2i(i32(gid.x), i32(gid.y)), vec4f(s.xyz, 0.0));
 {% endif %}
 }

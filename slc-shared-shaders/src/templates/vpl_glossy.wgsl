@@ -20,12 +20,12 @@ fn glossy_at(i: u32, x: vec3f) -> Glossy {
 }
 
 // S's term of light l at offset v (receiver - light) for a receiver with
-// normal n taking the light's transfer with weight `share`:
-// flux * (f - c_diff/pi) * T * share; 0 without a lobe or a transfer.
-fn glossy_term(g: Glossy, l: GpuLight, n: vec3f, v: vec3f, min_d2: f32, share: f32) -> vec3f {
-    let t = vpl_transfer(l.p1, n, v, min_d2);
+// normal n taking the light's transfer t (already weighted by its share,
+// as the irradiance takes it): flux * (f - c_diff/pi) * t; 0 without a
+// lobe or a transfer.
+fn glossy_term(g: Glossy, l: GpuLight, n: vec3f, v: vec3f, t: f32) -> vec3f {
     if !g.on || t <= 0.0 {
         return vec3f(0.0);
     }
-    return l.intensity * specular_correction(g.m.albedo, g.m.metallic, g.m.f0, g.m.f90, g.m.alpha, n, g.v, normalize(-v)) * (t * share);
+    return l.intensity * specular_correction(g.m.albedo, g.m.metallic, g.m.f0, g.m.f90, g.m.alpha, n, g.v, normalize(-v)) * t;
 }

@@ -117,9 +117,10 @@ fn main(
                 let share = vpl_near_fixed_share(r2[slot], dot(v, v), params.near_r2);
 {% endif %}
                 if share > 0.0 {
-                    e += l.intensity * (vpl_transfer(l.p1, nrm, v, params.min_d2) * share * unscale);
+                    let t = vpl_transfer(l.p1, nrm, v, params.min_d2) * share * unscale;
+                    e += l.intensity * t;
 {% if glossy %}
-                    s += glossy_term(g, l, nrm, v, params.min_d2, share * unscale);
+                    s += glossy_term(g, l, nrm, v, t);
 {% endif %}
                     kept += 1u;
                 }

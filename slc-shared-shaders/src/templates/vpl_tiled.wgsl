@@ -72,9 +72,10 @@ fn main(
             // Unculled: the far share alone.
             let share = vpl_far_weight(dot(v, v), params.near_r2);
             if share > 0.0 {
-                e += l.intensity * (vpl_transfer(l.p1, nrm, v, params.min_d2) * share);
+                let t = vpl_transfer(l.p1, nrm, v, params.min_d2) * share;
+                e += l.intensity * t;
 {% if glossy %}
-                s += glossy_term(g, l, nrm, v, params.min_d2, share);
+                s += glossy_term(g, l, nrm, v, t);
 {% endif %}
                 kept += 1u;
             }
@@ -109,9 +110,10 @@ fn main(
                 let share = vpl_far_fixed_share(r2[j], dot(v, v), params.near_r2);
 {% endif %}
                 if share > 0.0 {
-                    e += l.intensity * (vpl_transfer(l.p1, nrm, v, params.min_d2) * share);
+                    let t = vpl_transfer(l.p1, nrm, v, params.min_d2) * share;
+                    e += l.intensity * t;
 {% if glossy %}
-                    s += glossy_term(g, l, nrm, v, params.min_d2, share);
+                    s += glossy_term(g, l, nrm, v, t);
 {% endif %}
                     kept += 1u;
                 }

@@ -114,9 +114,10 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     }
     let _e19 = view.width;
     let i_1 = ((gid.y * _e19) + gid.x);
-    let _e27 = irradiance[i_1];
-    let _e28 = gbuffer_at(i_1);
-    let e = select(vec4(0f), _e27, (_e28.position.w > 0f));
+    let _e23 = gbuffer_at(i_1);
+    let valid_1 = (_e23.position.w > 0f);
+    let _e32 = irradiance[i_1];
+    let e = select(vec4(0f), _e32, valid_1);
     textureStore(out_tex, vec2<i32>(i32(gid.x), i32(gid.y)), e);
     return;
 }

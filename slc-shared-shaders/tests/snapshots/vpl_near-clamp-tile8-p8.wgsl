@@ -365,11 +365,12 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                         let _e169 = params.near_r2_;
                         let _e170 = vpl_near_fixed_share(_e165, dot(v_3, v_3), _e169);
                         if (_e170 > 0f) {
-                            let _e173 = e;
-                            let _e176 = nrm;
-                            let _e179 = params.min_d2_;
-                            let _e180 = vpl_transfer(l_1.p1_, _e176, v_3, _e179);
-                            e = (_e173 + (l_1.intensity * ((_e180 * _e170) * unscale)));
+                            let _e174 = nrm;
+                            let _e177 = params.min_d2_;
+                            let _e178 = vpl_transfer(l_1.p1_, _e174, v_3, _e177);
+                            let t_1 = ((_e178 * _e170) * unscale);
+                            let _e181 = e;
+                            e = (_e181 + (l_1.intensity * t_1));
                             let _e185 = kept;
                             kept = (_e185 + 1u);
                         }

@@ -176,8 +176,8 @@ fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
         return 0f;
     }
     let a2_ = (alpha * alpha);
-    let t = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t * t));
+    let t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
 }
 
 fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
@@ -300,8 +300,8 @@ fn vpl_near_weight(d2_2: f32, near_r2_: f32) -> f32 {
     if (near_r2_ <= 0f) {
         return 0f;
     }
-    let t_1 = clamp(((near_r2_ - d2_2) / (0.75f * near_r2_)), 0f, 1f);
-    return ((t_1 * t_1) * (3f - (2f * t_1)));
+    let t_2 = clamp(((near_r2_ - d2_2) / (0.75f * near_r2_)), 0f, 1f);
+    return ((t_2 * t_2) * (3f - (2f * t_2)));
 }
 
 fn vpl_near_range2_(r2_2: f32, period_1: u32) -> f32 {
@@ -395,21 +395,20 @@ fn glossy_at(i_1: u32, x: vec3<f32>) -> Glossy {
     return Glossy(m_3, normalize((_e23 - x)), _e29);
 }
 
-fn glossy_term(g_1: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, min_d2_1: f32, share: f32) -> vec3<f32> {
+fn glossy_term(g_1: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, t: f32) -> vec3<f32> {
     var local_10: bool;
 
-    let _e7 = vpl_transfer(l_4.p1_, n_3, v_5, min_d2_1);
     if !(!(g_1.on)) {
-        local_10 = (_e7 <= 0f);
+        local_10 = (t <= 0f);
     } else {
         local_10 = true;
     }
-    let _e16 = local_10;
-    if _e16 {
+    let _e13 = local_10;
+    if _e13 {
         return vec3(0f);
     }
-    let _e33 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
-    return ((l_4.intensity * _e33) * (_e7 * share));
+    let _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    return ((l_4.intensity * _e30) * t);
 }
 
 fn near_r2_of(slot: u32) -> f32 {
@@ -557,42 +556,42 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                         let _e179 = params.near_r2_;
                         let _e180 = vpl_near_slc_share(_e174, _e175, dot(v_8, v_8), _e179);
                         if (_e180 > 0f) {
-                            let _e183 = e;
-                            let _e186 = nrm;
-                            let _e189 = params.min_d2_;
-                            let _e190 = vpl_transfer(l_6.p1_, _e186, v_8, _e189);
-                            e = (_e183 + (l_6.intensity * ((_e190 * _e180) * unscale)));
+                            let _e184 = nrm;
+                            let _e187 = params.min_d2_;
+                            let _e188 = vpl_transfer(l_6.p1_, _e184, v_8, _e187);
+                            let t_3 = ((_e188 * _e180) * unscale);
+                            let _e191 = e;
+                            e = (_e191 + (l_6.intensity * t_3));
                             let _e195 = s;
                             let _e196 = g;
                             let _e197 = nrm;
-                            let _e200 = params.min_d2_;
-                            let _e202 = glossy_term(_e196, l_6, _e197, v_8, _e200, (_e180 * unscale));
-                            s = (_e195 + _e202);
-                            let _e204 = kept;
-                            kept = (_e204 + 1u);
+                            let _e198 = glossy_term(_e196, l_6, _e197, v_8, t_3);
+                            s = (_e195 + _e198);
+                            let _e200 = kept;
+                            kept = (_e200 + 1u);
                         }
                     }
                     continuing {
-                        let _e208 = m_1;
-                        m_1 = (_e208 + 1u);
+                        let _e204 = m_1;
+                        m_1 = (_e204 + 1u);
                     }
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e210 = first;
-            first = (_e210 + NEAR_CHUNK);
+            let _e206 = first;
+            first = (_e206 + NEAR_CHUNK);
         }
     }
     if valid_1 {
         let old = irradiance[pix];
-        let _e219 = e;
-        let _e222 = kept;
-        irradiance[pix] = vec4<f32>((old.xyz + _e219), (old.w + f32(_e222)));
-        let _e230 = specular[pix];
-        let _e232 = s;
-        specular[pix] = vec4<f32>((_e230.xyz + _e232), 0f);
+        let _e215 = e;
+        let _e218 = kept;
+        irradiance[pix] = vec4<f32>((old.xyz + _e215), (old.w + f32(_e218)));
+        let _e226 = specular[pix];
+        let _e228 = s;
+        specular[pix] = vec4<f32>((_e226.xyz + _e228), 0f);
         return;
     } else {
         return;

@@ -383,11 +383,12 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                         let _e172 = params.near_r2_;
                         let _e173 = vpl_near_slc_share(_e167, _e168, dot(v_3, v_3), _e172);
                         if (_e173 > 0f) {
-                            let _e176 = e;
-                            let _e179 = nrm;
-                            let _e182 = params.min_d2_;
-                            let _e183 = vpl_transfer(l_1.p1_, _e179, v_3, _e182);
-                            e = (_e176 + (l_1.intensity * ((_e183 * _e173) * unscale)));
+                            let _e177 = nrm;
+                            let _e180 = params.min_d2_;
+                            let _e181 = vpl_transfer(l_1.p1_, _e177, v_3, _e180);
+                            let t_1 = ((_e181 * _e173) * unscale);
+                            let _e184 = e;
+                            e = (_e184 + (l_1.intensity * t_1));
                             let _e188 = kept;
                             kept = (_e188 + 1u);
                         }

@@ -318,11 +318,12 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                         let _e146 = params.near_r2_;
                         let _e147 = vpl_far_fixed_share(_e142, dot(v_3, v_3), _e146);
                         if (_e147 > 0f) {
-                            let _e150 = e;
-                            let _e153 = nrm;
-                            let _e156 = params.min_d2_;
-                            let _e157 = vpl_transfer(l.p1_, _e153, v_3, _e156);
-                            e = (_e150 + (l.intensity * (_e157 * _e147)));
+                            let _e151 = nrm;
+                            let _e154 = params.min_d2_;
+                            let _e155 = vpl_transfer(l.p1_, _e151, v_3, _e154);
+                            let t_1 = (_e155 * _e147);
+                            let _e157 = e;
+                            e = (_e157 + (l.intensity * t_1));
                             let _e161 = kept;
                             kept = (_e161 + 1u);
                         }

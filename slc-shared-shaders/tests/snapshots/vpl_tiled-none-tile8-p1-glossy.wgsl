@@ -134,8 +134,8 @@ fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
         return 0f;
     }
     let a2_ = (alpha * alpha);
-    let t = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t * t));
+    let t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
 }
 
 fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
@@ -253,8 +253,8 @@ fn vpl_near_weight(d2_: f32, near_r2_: f32) -> f32 {
     if (near_r2_ <= 0f) {
         return 0f;
     }
-    let t_1 = clamp(((near_r2_ - d2_) / (0.75f * near_r2_)), 0f, 1f);
-    return ((t_1 * t_1) * (3f - (2f * t_1)));
+    let t_2 = clamp(((near_r2_ - d2_) / (0.75f * near_r2_)), 0f, 1f);
+    return ((t_2 * t_2) * (3f - (2f * t_2)));
 }
 
 fn vpl_far_weight(d2_1: f32, near_r2_1: f32) -> f32 {
@@ -337,21 +337,20 @@ fn glossy_at(i_1: u32, x: vec3<f32>) -> Glossy {
     return Glossy(m_1, normalize((_e23 - x)), _e29);
 }
 
-fn glossy_term(g_1: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, min_d2_1: f32, share: f32) -> vec3<f32> {
+fn glossy_term(g_1: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, t: f32) -> vec3<f32> {
     var local_7: bool;
 
-    let _e7 = vpl_transfer(l_4.p1_, n_3, v_5, min_d2_1);
     if !(!(g_1.on)) {
-        local_7 = (_e7 <= 0f);
+        local_7 = (t <= 0f);
     } else {
         local_7 = true;
     }
-    let _e16 = local_7;
-    if _e16 {
+    let _e13 = local_7;
+    if _e13 {
         return vec3(0f);
     }
-    let _e33 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
-    return ((l_4.intensity * _e33) * (_e7 * share));
+    let _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    return ((l_4.intensity * _e30) * t);
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -419,33 +418,33 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                 let _e98 = params.near_r2_;
                 let _e99 = vpl_far_weight(dot(v_7, v_7), _e98);
                 if (_e99 > 0f) {
-                    let _e102 = e;
-                    let _e105 = nrm;
-                    let _e108 = params.min_d2_;
-                    let _e109 = vpl_transfer(l_5.p1_, _e105, v_7, _e108);
-                    e = (_e102 + (l_5.intensity * (_e109 * _e99)));
+                    let _e103 = nrm;
+                    let _e106 = params.min_d2_;
+                    let _e107 = vpl_transfer(l_5.p1_, _e103, v_7, _e106);
+                    let t_3 = (_e107 * _e99);
+                    let _e109 = e;
+                    e = (_e109 + (l_5.intensity * t_3));
                     let _e113 = s;
                     let _e114 = g;
                     let _e115 = nrm;
-                    let _e118 = params.min_d2_;
-                    let _e119 = glossy_term(_e114, l_5, _e115, v_7, _e118, _e99);
-                    s = (_e113 + _e119);
-                    let _e121 = kept;
-                    kept = (_e121 + 1u);
+                    let _e116 = glossy_term(_e114, l_5, _e115, v_7, t_3);
+                    s = (_e113 + _e116);
+                    let _e118 = kept;
+                    kept = (_e118 + 1u);
                 }
             }
             continuing {
-                let _e125 = j;
-                j = (_e125 + 1u);
+                let _e122 = j;
+                j = (_e122 + 1u);
             }
         }
     }
     if inside {
-        let _e129 = e;
-        let _e130 = kept;
-        irradiance[pix] = vec4<f32>(_e129, f32(_e130));
-        let _e135 = s;
-        specular[pix] = vec4<f32>(_e135, 0f);
+        let _e126 = e;
+        let _e127 = kept;
+        irradiance[pix] = vec4<f32>(_e126, f32(_e127));
+        let _e132 = s;
+        specular[pix] = vec4<f32>(_e132, 0f);
         return;
     } else {
         return;

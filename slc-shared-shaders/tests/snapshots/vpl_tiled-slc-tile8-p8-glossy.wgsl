@@ -161,8 +161,8 @@ fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
         return 0f;
     }
     let a2_ = (alpha * alpha);
-    let t = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t * t));
+    let t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
 }
 
 fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
@@ -280,8 +280,8 @@ fn vpl_near_weight(d2_2: f32, near_r2_: f32) -> f32 {
     if (near_r2_ <= 0f) {
         return 0f;
     }
-    let t_1 = clamp(((near_r2_ - d2_2) / (0.75f * near_r2_)), 0f, 1f);
-    return ((t_1 * t_1) * (3f - (2f * t_1)));
+    let t_2 = clamp(((near_r2_ - d2_2) / (0.75f * near_r2_)), 0f, 1f);
+    return ((t_2 * t_2) * (3f - (2f * t_2)));
 }
 
 fn vpl_far_weight(d2_3: f32, near_r2_1: f32) -> f32 {
@@ -371,21 +371,20 @@ fn glossy_at(i_1: u32, x: vec3<f32>) -> Glossy {
     return Glossy(m_1, normalize((_e23 - x)), _e29);
 }
 
-fn glossy_term(g_1: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, min_d2_1: f32, share: f32) -> vec3<f32> {
+fn glossy_term(g_1: Glossy, l_4: GpuLight, n_3: vec3<f32>, v_5: vec3<f32>, t: f32) -> vec3<f32> {
     var local_7: bool;
 
-    let _e7 = vpl_transfer(l_4.p1_, n_3, v_5, min_d2_1);
     if !(!(g_1.on)) {
-        local_7 = (_e7 <= 0f);
+        local_7 = (t <= 0f);
     } else {
         local_7 = true;
     }
-    let _e16 = local_7;
-    if _e16 {
+    let _e13 = local_7;
+    if _e13 {
         return vec3(0f);
     }
-    let _e33 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
-    return ((l_4.intensity * _e33) * (_e7 * share));
+    let _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    return ((l_4.intensity * _e30) * t);
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -503,40 +502,40 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                         let _e156 = params.near_r2_;
                         let _e157 = vpl_far_slc_share(_e149, _e152, dot(v_8, v_8), _e156);
                         if (_e157 > 0f) {
-                            let _e160 = e;
-                            let _e163 = nrm;
-                            let _e166 = params.min_d2_;
-                            let _e167 = vpl_transfer(l_5.p1_, _e163, v_8, _e166);
-                            e = (_e160 + (l_5.intensity * (_e167 * _e157)));
+                            let _e161 = nrm;
+                            let _e164 = params.min_d2_;
+                            let _e165 = vpl_transfer(l_5.p1_, _e161, v_8, _e164);
+                            let t_3 = (_e165 * _e157);
+                            let _e167 = e;
+                            e = (_e167 + (l_5.intensity * t_3));
                             let _e171 = s;
                             let _e172 = g;
                             let _e173 = nrm;
-                            let _e176 = params.min_d2_;
-                            let _e177 = glossy_term(_e172, l_5, _e173, v_8, _e176, _e157);
-                            s = (_e171 + _e177);
-                            let _e179 = kept;
-                            kept = (_e179 + 1u);
+                            let _e174 = glossy_term(_e172, l_5, _e173, v_8, t_3);
+                            s = (_e171 + _e174);
+                            let _e176 = kept;
+                            kept = (_e176 + 1u);
                         }
                     }
                     continuing {
-                        let _e183 = k;
-                        k = (_e183 + 1u);
+                        let _e180 = k;
+                        k = (_e180 + 1u);
                     }
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e185 = first;
-            first = (_e185 + MAX_TILE_LIGHTS);
+            let _e182 = first;
+            first = (_e182 + MAX_TILE_LIGHTS);
         }
     }
     if inside {
-        let _e190 = e;
-        let _e191 = kept;
-        irradiance[pix] = vec4<f32>(_e190, f32(_e191));
-        let _e196 = s;
-        specular[pix] = vec4<f32>(_e196, 0f);
+        let _e187 = e;
+        let _e188 = kept;
+        irradiance[pix] = vec4<f32>(_e187, f32(_e188));
+        let _e193 = s;
+        specular[pix] = vec4<f32>(_e193, 0f);
         return;
     } else {
         return;

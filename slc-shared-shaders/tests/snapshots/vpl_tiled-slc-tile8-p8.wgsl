@@ -329,11 +329,12 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
                         let _e149 = params.near_r2_;
                         let _e150 = vpl_far_slc_share(_e142, _e145, dot(v_3, v_3), _e149);
                         if (_e150 > 0f) {
-                            let _e153 = e;
-                            let _e156 = nrm;
-                            let _e159 = params.min_d2_;
-                            let _e160 = vpl_transfer(l.p1_, _e156, v_3, _e159);
-                            e = (_e153 + (l.intensity * (_e160 * _e150)));
+                            let _e154 = nrm;
+                            let _e157 = params.min_d2_;
+                            let _e158 = vpl_transfer(l.p1_, _e154, v_3, _e157);
+                            let t_1 = (_e158 * _e150);
+                            let _e160 = e;
+                            e = (_e160 + (l.intensity * t_1));
                             let _e164 = kept;
                             kept = (_e164 + 1u);
                         }

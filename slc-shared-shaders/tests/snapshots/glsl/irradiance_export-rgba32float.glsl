@@ -115,9 +115,10 @@ void main() {
     }
     uint _e19 = _group_0_binding_0_cs.width;
     uint i_1 = ((gid.y * _e19) + gid.x);
-    vec4 _e27 = _group_0_binding_3_cs[i_1];
-    GbTexel _e28 = gbuffer_at(i_1);
-    vec4 e = ((_e28.position.w > 0.0) ? _e27 : vec4(0.0));
+    GbTexel _e23 = gbuffer_at(i_1);
+    bool valid_1 = (_e23.position.w > 0.0);
+    vec4 _e32 = _group_0_binding_3_cs[i_1];
+    vec4 e = (valid_1 ? _e32 : vec4(0.0));
     imageStore(_group_0_binding_4_cs, ivec2(int(gid.x), int(gid.y)), e);
     return;
 }

@@ -398,11 +398,12 @@ void main() {
                         float _e169 = _group_0_binding_0_cs.near_r2_;
                         float _e170 = vpl_near_fixed_share(_e165, dot(v_3, v_3), _e169);
                         if ((_e170 > 0.0)) {
-                            vec3 _e173 = e;
-                            vec3 _e176 = nrm;
-                            float _e179 = _group_0_binding_0_cs.min_d2_;
-                            float _e180 = vpl_transfer(l_1.p1_, _e176, v_3, _e179);
-                            e = (_e173 + (l_1.intensity * ((_e180 * _e170) * unscale)));
+                            vec3 _e174 = nrm;
+                            float _e177 = _group_0_binding_0_cs.min_d2_;
+                            float _e178 = vpl_transfer(l_1.p1_, _e174, v_3, _e177);
+                            float t_1 = ((_e178 * _e170) * unscale);
+                            vec3 _e181 = e;
+                            e = (_e181 + (l_1.intensity * t_1));
                             uint _e185 = kept;
                             kept = (_e185 + 1u);
                         }

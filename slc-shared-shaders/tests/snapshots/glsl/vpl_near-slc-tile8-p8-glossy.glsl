@@ -177,8 +177,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha) {
         return 0.0;
     }
     float a2_ = (alpha * alpha);
-    float t = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t * t));
+    float t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
 }
 
 float smith_root(float cos_, float alpha_1) {
@@ -298,8 +298,8 @@ float vpl_near_weight(float d2_2, float near_r2_) {
     if ((near_r2_ <= 0.0)) {
         return 0.0;
     }
-    float t_1 = clamp(((near_r2_ - d2_2) / (0.75 * near_r2_)), 0.0, 1.0);
-    return ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
+    float t_2 = clamp(((near_r2_ - d2_2) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
 }
 
 float vpl_near_range2_(float r2_2, uint period_1) {
@@ -395,20 +395,19 @@ Glossy glossy_at(uint i_1, vec3 x) {
     return Glossy(m_3, normalize((_e23 - x)), _e29);
 }
 
-vec3 glossy_term(Glossy g_1, GpuLight l_4, vec3 n_3, vec3 v_5, float min_d2_1, float share) {
+vec3 glossy_term(Glossy g_1, GpuLight l_4, vec3 n_3, vec3 v_5, float t) {
     bool local_10 = false;
-    float _e7 = vpl_transfer(l_4.p1_, n_3, v_5, min_d2_1);
     if (!(!(g_1.on))) {
-        local_10 = (_e7 <= 0.0);
+        local_10 = (t <= 0.0);
     } else {
         local_10 = true;
     }
-    bool _e16 = local_10;
-    if (_e16) {
+    bool _e13 = local_10;
+    if (_e13) {
         return vec3(0.0);
     }
-    vec3 _e33 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
-    return ((l_4.intensity * _e33) * (_e7 * share));
+    vec3 _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    return ((l_4.intensity * _e30) * t);
 }
 
 float near_r2_of(uint slot) {
@@ -483,8 +482,8 @@ void main() {
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e210 = first;
-            first = (_e210 + NEAR_CHUNK);
+            uint _e206 = first;
+            first = (_e206 + NEAR_CHUNK);
         }
         loop_init_1 = false;
         uint _e75 = first;
@@ -563,8 +562,8 @@ void main() {
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e208 = m_1;
-                        m_1 = (_e208 + 1u);
+                        uint _e204 = m_1;
+                        m_1 = (_e204 + 1u);
                     }
                     loop_init_3 = false;
                     uint _e157 = m_1;
@@ -584,19 +583,19 @@ void main() {
                         float _e179 = _group_0_binding_0_cs.near_r2_;
                         float _e180 = vpl_near_slc_share(_e174, _e175, dot(v_8, v_8), _e179);
                         if ((_e180 > 0.0)) {
-                            vec3 _e183 = e;
-                            vec3 _e186 = nrm;
-                            float _e189 = _group_0_binding_0_cs.min_d2_;
-                            float _e190 = vpl_transfer(l_6.p1_, _e186, v_8, _e189);
-                            e = (_e183 + (l_6.intensity * ((_e190 * _e180) * unscale)));
+                            vec3 _e184 = nrm;
+                            float _e187 = _group_0_binding_0_cs.min_d2_;
+                            float _e188 = vpl_transfer(l_6.p1_, _e184, v_8, _e187);
+                            float t_3 = ((_e188 * _e180) * unscale);
+                            vec3 _e191 = e;
+                            e = (_e191 + (l_6.intensity * t_3));
                             vec3 _e195 = s;
                             Glossy _e196 = g;
                             vec3 _e197 = nrm;
-                            float _e200 = _group_0_binding_0_cs.min_d2_;
-                            vec3 _e202 = glossy_term(_e196, l_6, _e197, v_8, _e200, (_e180 * unscale));
-                            s = (_e195 + _e202);
-                            uint _e204 = kept;
-                            kept = (_e204 + 1u);
+                            vec3 _e198 = glossy_term(_e196, l_6, _e197, v_8, t_3);
+                            s = (_e195 + _e198);
+                            uint _e200 = kept;
+                            kept = (_e200 + 1u);
                         }
                     }
                 }
@@ -607,12 +606,12 @@ void main() {
     }
     if (valid_1) {
         vec4 old = _group_0_binding_9_cs[pix];
-        vec3 _e219 = e;
-        uint _e222 = kept;
-        _group_0_binding_9_cs[pix] = vec4((old.xyz + _e219), (old.w + float(_e222)));
-        vec4 _e230 = _group_0_binding_11_cs[pix];
-        vec3 _e232 = s;
-        _group_0_binding_11_cs[pix] = vec4((_e230.xyz + _e232), 0.0);
+        vec3 _e215 = e;
+        uint _e218 = kept;
+        _group_0_binding_9_cs[pix] = vec4((old.xyz + _e215), (old.w + float(_e218)));
+        vec4 _e226 = _group_0_binding_11_cs[pix];
+        vec3 _e228 = s;
+        _group_0_binding_11_cs[pix] = vec4((_e226.xyz + _e228), 0.0);
         return;
     } else {
         return;

@@ -352,11 +352,12 @@ void main() {
                         float _e146 = _group_0_binding_0_cs.near_r2_;
                         float _e147 = vpl_far_fixed_share(_e142, dot(v_3, v_3), _e146);
                         if ((_e147 > 0.0)) {
-                            vec3 _e150 = e;
-                            vec3 _e153 = nrm;
-                            float _e156 = _group_0_binding_0_cs.min_d2_;
-                            float _e157 = vpl_transfer(l.p1_, _e153, v_3, _e156);
-                            e = (_e150 + (l.intensity * (_e157 * _e147)));
+                            vec3 _e151 = nrm;
+                            float _e154 = _group_0_binding_0_cs.min_d2_;
+                            float _e155 = vpl_transfer(l.p1_, _e151, v_3, _e154);
+                            float t_1 = (_e155 * _e147);
+                            vec3 _e157 = e;
+                            e = (_e157 + (l.intensity * t_1));
                             uint _e161 = kept;
                             kept = (_e161 + 1u);
                         }

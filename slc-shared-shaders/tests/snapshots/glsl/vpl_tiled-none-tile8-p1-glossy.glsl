@@ -134,8 +134,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha) {
         return 0.0;
     }
     float a2_ = (alpha * alpha);
-    float t = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t * t));
+    float t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
 }
 
 float smith_root(float cos_, float alpha_1) {
@@ -250,8 +250,8 @@ float vpl_near_weight(float d2_, float near_r2_) {
     if ((near_r2_ <= 0.0)) {
         return 0.0;
     }
-    float t_1 = clamp(((near_r2_ - d2_) / (0.75 * near_r2_)), 0.0, 1.0);
-    return ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
+    float t_2 = clamp(((near_r2_ - d2_) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
 }
 
 float vpl_far_weight(float d2_1, float near_r2_1) {
@@ -336,20 +336,19 @@ Glossy glossy_at(uint i_1, vec3 x) {
     return Glossy(m_1, normalize((_e23 - x)), _e29);
 }
 
-vec3 glossy_term(Glossy g_1, GpuLight l_4, vec3 n_3, vec3 v_5, float min_d2_1, float share) {
+vec3 glossy_term(Glossy g_1, GpuLight l_4, vec3 n_3, vec3 v_5, float t) {
     bool local_7 = false;
-    float _e7 = vpl_transfer(l_4.p1_, n_3, v_5, min_d2_1);
     if (!(!(g_1.on))) {
-        local_7 = (_e7 <= 0.0);
+        local_7 = (t <= 0.0);
     } else {
         local_7 = true;
     }
-    bool _e16 = local_7;
-    if (_e16) {
+    bool _e13 = local_7;
+    if (_e13) {
         return vec3(0.0);
     }
-    vec3 _e33 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
-    return ((l_4.intensity * _e33) * (_e7 * share));
+    vec3 _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    return ((l_4.intensity * _e30) * t);
 }
 
 void main() {
@@ -412,8 +411,8 @@ void main() {
         bool loop_init_1 = true;
         while(true) {
             if (!loop_init_1) {
-                uint _e125 = j;
-                j = (_e125 + 1u);
+                uint _e122 = j;
+                j = (_e122 + 1u);
             }
             loop_init_1 = false;
             uint _e81 = j;
@@ -430,29 +429,29 @@ void main() {
                 float _e98 = _group_0_binding_0_cs.near_r2_;
                 float _e99 = vpl_far_weight(dot(v_7, v_7), _e98);
                 if ((_e99 > 0.0)) {
-                    vec3 _e102 = e;
-                    vec3 _e105 = nrm;
-                    float _e108 = _group_0_binding_0_cs.min_d2_;
-                    float _e109 = vpl_transfer(l_5.p1_, _e105, v_7, _e108);
-                    e = (_e102 + (l_5.intensity * (_e109 * _e99)));
+                    vec3 _e103 = nrm;
+                    float _e106 = _group_0_binding_0_cs.min_d2_;
+                    float _e107 = vpl_transfer(l_5.p1_, _e103, v_7, _e106);
+                    float t_3 = (_e107 * _e99);
+                    vec3 _e109 = e;
+                    e = (_e109 + (l_5.intensity * t_3));
                     vec3 _e113 = s;
                     Glossy _e114 = g;
                     vec3 _e115 = nrm;
-                    float _e118 = _group_0_binding_0_cs.min_d2_;
-                    vec3 _e119 = glossy_term(_e114, l_5, _e115, v_7, _e118, _e99);
-                    s = (_e113 + _e119);
-                    uint _e121 = kept;
-                    kept = (_e121 + 1u);
+                    vec3 _e116 = glossy_term(_e114, l_5, _e115, v_7, t_3);
+                    s = (_e113 + _e116);
+                    uint _e118 = kept;
+                    kept = (_e118 + 1u);
                 }
             }
         }
     }
     if (inside) {
-        vec3 _e129 = e;
-        uint _e130 = kept;
-        _group_0_binding_7_cs[pix] = vec4(_e129, float(_e130));
-        vec3 _e135 = s;
-        _group_0_binding_9_cs[pix] = vec4(_e135, 0.0);
+        vec3 _e126 = e;
+        uint _e127 = kept;
+        _group_0_binding_7_cs[pix] = vec4(_e126, float(_e127));
+        vec3 _e132 = s;
+        _group_0_binding_9_cs[pix] = vec4(_e132, 0.0);
         return;
     } else {
         return;

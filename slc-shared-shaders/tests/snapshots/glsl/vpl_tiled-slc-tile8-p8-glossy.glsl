@@ -163,8 +163,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha) {
         return 0.0;
     }
     float a2_ = (alpha * alpha);
-    float t = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t * t));
+    float t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
 }
 
 float smith_root(float cos_, float alpha_1) {
@@ -279,8 +279,8 @@ float vpl_near_weight(float d2_2, float near_r2_) {
     if ((near_r2_ <= 0.0)) {
         return 0.0;
     }
-    float t_1 = clamp(((near_r2_ - d2_2) / (0.75 * near_r2_)), 0.0, 1.0);
-    return ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
+    float t_2 = clamp(((near_r2_ - d2_2) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
 }
 
 float vpl_far_weight(float d2_3, float near_r2_1) {
@@ -372,20 +372,19 @@ Glossy glossy_at(uint i_1, vec3 x) {
     return Glossy(m_1, normalize((_e23 - x)), _e29);
 }
 
-vec3 glossy_term(Glossy g_1, GpuLight l_4, vec3 n_3, vec3 v_5, float min_d2_1, float share) {
+vec3 glossy_term(Glossy g_1, GpuLight l_4, vec3 n_3, vec3 v_5, float t) {
     bool local_7 = false;
-    float _e7 = vpl_transfer(l_4.p1_, n_3, v_5, min_d2_1);
     if (!(!(g_1.on))) {
-        local_7 = (_e7 <= 0.0);
+        local_7 = (t <= 0.0);
     } else {
         local_7 = true;
     }
-    bool _e16 = local_7;
-    if (_e16) {
+    bool _e13 = local_7;
+    if (_e13) {
         return vec3(0.0);
     }
-    vec3 _e33 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
-    return ((l_4.intensity * _e33) * (_e7 * share));
+    vec3 _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    return ((l_4.intensity * _e30) * t);
 }
 
 void main() {
@@ -450,8 +449,8 @@ void main() {
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e185 = first;
-            first = (_e185 + MAX_TILE_LIGHTS);
+            uint _e182 = first;
+            first = (_e182 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
         uint _e82 = first;
@@ -510,8 +509,8 @@ void main() {
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e183 = k;
-                        k = (_e183 + 1u);
+                        uint _e180 = k;
+                        k = (_e180 + 1u);
                     }
                     loop_init_3 = false;
                     uint _e133 = k;
@@ -531,19 +530,19 @@ void main() {
                         float _e156 = _group_0_binding_0_cs.near_r2_;
                         float _e157 = vpl_far_slc_share(_e149, _e152, dot(v_8, v_8), _e156);
                         if ((_e157 > 0.0)) {
-                            vec3 _e160 = e;
-                            vec3 _e163 = nrm;
-                            float _e166 = _group_0_binding_0_cs.min_d2_;
-                            float _e167 = vpl_transfer(l_5.p1_, _e163, v_8, _e166);
-                            e = (_e160 + (l_5.intensity * (_e167 * _e157)));
+                            vec3 _e161 = nrm;
+                            float _e164 = _group_0_binding_0_cs.min_d2_;
+                            float _e165 = vpl_transfer(l_5.p1_, _e161, v_8, _e164);
+                            float t_3 = (_e165 * _e157);
+                            vec3 _e167 = e;
+                            e = (_e167 + (l_5.intensity * t_3));
                             vec3 _e171 = s;
                             Glossy _e172 = g;
                             vec3 _e173 = nrm;
-                            float _e176 = _group_0_binding_0_cs.min_d2_;
-                            vec3 _e177 = glossy_term(_e172, l_5, _e173, v_8, _e176, _e157);
-                            s = (_e171 + _e177);
-                            uint _e179 = kept;
-                            kept = (_e179 + 1u);
+                            vec3 _e174 = glossy_term(_e172, l_5, _e173, v_8, t_3);
+                            s = (_e171 + _e174);
+                            uint _e176 = kept;
+                            kept = (_e176 + 1u);
                         }
                     }
                 }
@@ -553,11 +552,11 @@ void main() {
         }
     }
     if (inside) {
-        vec3 _e190 = e;
-        uint _e191 = kept;
-        _group_0_binding_7_cs[pix] = vec4(_e190, float(_e191));
-        vec3 _e196 = s;
-        _group_0_binding_9_cs[pix] = vec4(_e196, 0.0);
+        vec3 _e187 = e;
+        uint _e188 = kept;
+        _group_0_binding_7_cs[pix] = vec4(_e187, float(_e188));
+        vec3 _e193 = s;
+        _group_0_binding_9_cs[pix] = vec4(_e193, 0.0);
         return;
     } else {
         return;

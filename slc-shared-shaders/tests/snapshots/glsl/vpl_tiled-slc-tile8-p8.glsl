@@ -363,11 +363,12 @@ void main() {
                         float _e149 = _group_0_binding_0_cs.near_r2_;
                         float _e150 = vpl_far_slc_share(_e142, _e145, dot(v_3, v_3), _e149);
                         if ((_e150 > 0.0)) {
-                            vec3 _e153 = e;
-                            vec3 _e156 = nrm;
-                            float _e159 = _group_0_binding_0_cs.min_d2_;
-                            float _e160 = vpl_transfer(l.p1_, _e156, v_3, _e159);
-                            e = (_e153 + (l.intensity * (_e160 * _e150)));
+                            vec3 _e154 = nrm;
+                            float _e157 = _group_0_binding_0_cs.min_d2_;
+                            float _e158 = vpl_transfer(l.p1_, _e154, v_3, _e157);
+                            float t_1 = (_e158 * _e150);
+                            vec3 _e160 = e;
+                            e = (_e160 + (l.intensity * t_1));
                             uint _e164 = kept;
                             kept = (_e164 + 1u);
                         }

@@ -130,13 +130,13 @@ void main(uint3 gid : SV_DispatchThreadID)
     }
     uint _e19 = view.width;
     uint i_1 = ((gid.y * _e19) + gid.x);
-    float4 _e27 = asfloat(irradiance.Load4(i_1*16));
-    const GbTexel _e28 = gbuffer_at(i_1);
-    float4 e = ((_e28.position.w > 0.0) ? _e27 : (0.0).xxxx);
+    const GbTexel _e23 = gbuffer_at(i_1);
+    bool valid_1 = (_e23.position.w > 0.0);
+    float4 _e32 = asfloat(irradiance.Load4(i_1*16));
+    float4 e = (valid_1 ? _e32 : (0.0).xxxx);
     out_tex[int2(int(gid.x), int(gid.y))] = e;
     float4 _e44 = asfloat(specular.Load4(i_1*16));
-    const GbTexel _e45 = gbuffer_at(i_1);
-    float4 s = ((_e45.position.w > 0.0) ? _e44 : (0.0).xxxx);
+    float4 s = (valid_1 ? _e44 : (0.0).xxxx);
     specular_tex[int2(int(gid.x), int(gid.y))] = float4(s.xyz, 0.0);
     return;
 }

@@ -455,11 +455,12 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         float _e169 = params.near_r2_;
                         const float _e170 = vpl_near_fixed_share(_e165, dot(v_3, v_3), _e169);
                         if ((_e170 > 0.0)) {
-                            float3 _e173 = e;
-                            float3 _e176 = nrm;
-                            float _e179 = params.min_d2_;
-                            const float _e180 = vpl_transfer(l_1.p1_, _e176, v_3, _e179);
-                            e = (_e173 + (l_1.intensity * ((_e180 * _e170) * unscale)));
+                            float3 _e174 = nrm;
+                            float _e177 = params.min_d2_;
+                            const float _e178 = vpl_transfer(l_1.p1_, _e174, v_3, _e177);
+                            float t_1 = ((_e178 * _e170) * unscale);
+                            float3 _e181 = e;
+                            e = (_e181 + (l_1.intensity * t_1));
                             uint _e185 = kept;
                             kept = (_e185 + 1u);
                         }

@@ -173,8 +173,8 @@ float ggx_d(float cos_h, float sin2_h, float alpha)
         return 0.0;
     }
     float a2_ = (alpha * alpha);
-    float t = (((cos_h * cos_h) * a2_) + sin2_h);
-    return ((a2_ * INV_PI) / (t * t));
+    float t_1 = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t_1 * t_1));
 }
 
 float smith_root(float cos_, float alpha_1)
@@ -310,8 +310,8 @@ float vpl_near_weight(float d2_2, float near_r2_)
     if ((near_r2_ <= 0.0)) {
         return 0.0;
     }
-    float t_1 = clamp(((near_r2_ - d2_2) / (0.75 * near_r2_)), 0.0, 1.0);
-    return ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
+    float t_2 = clamp(((near_r2_ - d2_2) / (0.75 * near_r2_)), 0.0, 1.0);
+    return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
 }
 
 float vpl_near_range2_(float r2_2, uint period_1)
@@ -465,22 +465,21 @@ Glossy glossy_at(uint i_1, float3 x)
     return glossy;
 }
 
-float3 glossy_term(Glossy g_1, GpuLight l_4, float3 n_3, float3 v_5, float min_d2_1, float share)
+float3 glossy_term(Glossy g_1, GpuLight l_4, float3 n_3, float3 v_5, float t)
 {
     bool local_10 = (bool)0;
 
-    const float _e7 = vpl_transfer(l_4.p1_, n_3, v_5, min_d2_1);
     if (!(!(g_1.on))) {
-        local_10 = (_e7 <= 0.0);
+        local_10 = (t <= 0.0);
     } else {
         local_10 = true;
     }
-    bool _e16 = local_10;
-    if (_e16) {
+    bool _e13 = local_10;
+    if (_e13) {
         return (0.0).xxx;
     }
-    const float3 _e33 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
-    return ((l_4.intensity * _e33) * (_e7 * share));
+    const float3 _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, normalize(-(v_5)));
+    return ((l_4.intensity * _e30) * t);
 }
 
 float near_r2_of(uint slot)
@@ -580,8 +579,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e210 = first;
-            first = (_e210 + NEAR_CHUNK);
+            uint _e206 = first;
+            first = (_e206 + NEAR_CHUNK);
         }
         loop_init_1 = false;
         uint _e75 = first;
@@ -663,8 +662,8 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e208 = m_1;
-                        m_1 = (_e208 + 1u);
+                        uint _e204 = m_1;
+                        m_1 = (_e204 + 1u);
                     }
                     loop_init_3 = false;
                     uint _e157 = m_1;
@@ -684,19 +683,19 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         float _e179 = params.near_r2_;
                         const float _e180 = vpl_near_slc_share(_e174, _e175, dot(v_8, v_8), _e179);
                         if ((_e180 > 0.0)) {
-                            float3 _e183 = e;
-                            float3 _e186 = nrm;
-                            float _e189 = params.min_d2_;
-                            const float _e190 = vpl_transfer(l_6.p1_, _e186, v_8, _e189);
-                            e = (_e183 + (l_6.intensity * ((_e190 * _e180) * unscale)));
+                            float3 _e184 = nrm;
+                            float _e187 = params.min_d2_;
+                            const float _e188 = vpl_transfer(l_6.p1_, _e184, v_8, _e187);
+                            float t_3 = ((_e188 * _e180) * unscale);
+                            float3 _e191 = e;
+                            e = (_e191 + (l_6.intensity * t_3));
                             float3 _e195 = s;
                             Glossy _e196 = g;
                             float3 _e197 = nrm;
-                            float _e200 = params.min_d2_;
-                            const float3 _e202 = glossy_term(_e196, l_6, _e197, v_8, _e200, (_e180 * unscale));
-                            s = (_e195 + _e202);
-                            uint _e204 = kept;
-                            kept = (_e204 + 1u);
+                            const float3 _e198 = glossy_term(_e196, l_6, _e197, v_8, t_3);
+                            s = (_e195 + _e198);
+                            uint _e200 = kept;
+                            kept = (_e200 + 1u);
                         }
                     }
                 }
@@ -706,12 +705,12 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     }
     if (valid_1) {
         float4 old = asfloat(irradiance.Load4(pix*16));
-        float3 _e219 = e;
-        uint _e222 = kept;
-        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e219), (old.w + float(_e222)))));
-        float4 _e230 = asfloat(specular.Load4(pix*16));
-        float3 _e232 = s;
-        specular.Store4(pix*16, asuint(float4((_e230.xyz + _e232), 0.0)));
+        float3 _e215 = e;
+        uint _e218 = kept;
+        irradiance.Store4(pix*16, asuint(float4((old.xyz + _e215), (old.w + float(_e218)))));
+        float4 _e226 = asfloat(specular.Load4(pix*16));
+        float3 _e228 = s;
+        specular.Store4(pix*16, asuint(float4((_e226.xyz + _e228), 0.0)));
         return;
     } else {
         return;

@@ -474,11 +474,12 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         float _e172 = params.near_r2_;
                         const float _e173 = vpl_near_slc_share(_e167, _e168, dot(v_3, v_3), _e172);
                         if ((_e173 > 0.0)) {
-                            float3 _e176 = e;
-                            float3 _e179 = nrm;
-                            float _e182 = params.min_d2_;
-                            const float _e183 = vpl_transfer(l_1.p1_, _e179, v_3, _e182);
-                            e = (_e176 + (l_1.intensity * ((_e183 * _e173) * unscale)));
+                            float3 _e177 = nrm;
+                            float _e180 = params.min_d2_;
+                            const float _e181 = vpl_transfer(l_1.p1_, _e177, v_3, _e180);
+                            float t_1 = ((_e181 * _e173) * unscale);
+                            float3 _e184 = e;
+                            e = (_e184 + (l_1.intensity * t_1));
                             uint _e188 = kept;
                             kept = (_e188 + 1u);
                         }

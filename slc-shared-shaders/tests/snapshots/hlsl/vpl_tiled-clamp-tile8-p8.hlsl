@@ -398,11 +398,12 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         float _e146 = params.near_r2_;
                         const float _e147 = vpl_far_fixed_share(_e142, dot(v_3, v_3), _e146);
                         if ((_e147 > 0.0)) {
-                            float3 _e150 = e;
-                            float3 _e153 = nrm;
-                            float _e156 = params.min_d2_;
-                            const float _e157 = vpl_transfer(l.p1_, _e153, v_3, _e156);
-                            e = (_e150 + (l.intensity * (_e157 * _e147)));
+                            float3 _e151 = nrm;
+                            float _e154 = params.min_d2_;
+                            const float _e155 = vpl_transfer(l.p1_, _e151, v_3, _e154);
+                            float t_1 = (_e155 * _e147);
+                            float3 _e157 = e;
+                            e = (_e157 + (l.intensity * t_1));
                             uint _e161 = kept;
                             kept = (_e161 + 1u);
                         }

@@ -409,11 +409,12 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                         float _e149 = params.near_r2_;
                         const float _e150 = vpl_far_slc_share(_e142, _e145, dot(v_3, v_3), _e149);
                         if ((_e150 > 0.0)) {
-                            float3 _e153 = e;
-                            float3 _e156 = nrm;
-                            float _e159 = params.min_d2_;
-                            const float _e160 = vpl_transfer(l.p1_, _e156, v_3, _e159);
-                            e = (_e153 + (l.intensity * (_e160 * _e150)));
+                            float3 _e154 = nrm;
+                            float _e157 = params.min_d2_;
+                            const float _e158 = vpl_transfer(l.p1_, _e154, v_3, _e157);
+                            float t_1 = (_e158 * _e150);
+                            float3 _e160 = e;
+                            e = (_e160 + (l.intensity * t_1));
                             uint _e164 = kept;
                             kept = (_e164 + 1u);
                         }

@@ -138,13 +138,13 @@ kernel void main_(
     }
     uint _e19 = view.width;
     uint i_1 = (gid.y * _e19) + gid.x;
-    metal::float4 _e27 = irradiance[i_1];
-    GbTexel _e28 = gbuffer_at(i_1, view, position_tex, normal_tex);
-    metal::float4 e = (_e28.position.w > 0.0) ? _e27 : metal::float4(0.0);
+    GbTexel _e23 = gbuffer_at(i_1, view, position_tex, normal_tex);
+    bool valid_1 = _e23.position.w > 0.0;
+    metal::float4 _e32 = irradiance[i_1];
+    metal::float4 e = valid_1 ? _e32 : metal::float4(0.0);
     out_tex.write(e, metal::uint2(metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y))));
     metal::float4 _e44 = specular[i_1];
-    GbTexel _e45 = gbuffer_at(i_1, view, position_tex, normal_tex);
-    metal::float4 s = (_e45.position.w > 0.0) ? _e44 : metal::float4(0.0);
+    metal::float4 s = valid_1 ? _e44 : metal::float4(0.0);
     specular_tex.write(metal::float4(s.xyz, 0.0), metal::uint2(metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y))));
     return;
 }

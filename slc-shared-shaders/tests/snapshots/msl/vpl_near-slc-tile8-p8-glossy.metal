@@ -193,8 +193,8 @@ float ggx_d(
         return 0.0;
     }
     float a2_ = alpha * alpha;
-    float t = ((cos_h * cos_h) * a2_) + sin2_h;
-    return (a2_ * INV_PI) / (t * t);
+    float t_1 = ((cos_h * cos_h) * a2_) + sin2_h;
+    return (a2_ * INV_PI) / (t_1 * t_1);
 }
 
 float smith_root(
@@ -379,8 +379,8 @@ float vpl_near_weight(
     if (near_r2_ <= 0.0) {
         return 0.0;
     }
-    float t_1 = metal::clamp((near_r2_ - d2_2) / (0.75 * near_r2_), 0.0, 1.0);
-    return (t_1 * t_1) * (3.0 - (2.0 * t_1));
+    float t_2 = metal::clamp((near_r2_ - d2_2) / (0.75 * near_r2_), 0.0, 1.0);
+    return (t_2 * t_2) * (3.0 - (2.0 * t_2));
 }
 
 float vpl_near_range2_(
@@ -526,22 +526,20 @@ metal::float3 glossy_term(
     GpuLight l_4,
     metal::float3 n_3,
     metal::float3 v_5,
-    float min_d2_1,
-    float share
+    float t
 ) {
     bool local_10 = {};
-    float _e7 = vpl_transfer(l_4.p1_, n_3, v_5, min_d2_1);
     if (!(!(g_1.on))) {
-        local_10 = _e7 <= 0.0;
+        local_10 = t <= 0.0;
     } else {
         local_10 = true;
     }
-    bool _e16 = local_10;
-    if (_e16) {
+    bool _e13 = local_10;
+    if (_e13) {
         return metal::float3(0.0);
     }
-    metal::float3 _e33 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, metal::normalize(-(v_5)));
-    return (l_4.intensity * _e33) * (_e7 * share);
+    metal::float3 _e30 = specular_correction(g_1.m.albedo, g_1.m.metallic, g_1.m.f0_, g_1.m.f90_, g_1.m.alpha, n_3, g_1.v, metal::normalize(-(v_5)));
+    return (l_4.intensity * _e30) * t;
 }
 
 float near_r2_of(
@@ -642,8 +640,8 @@ kernel void main_(
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e210 = first;
-            first = _e210 + NEAR_CHUNK;
+            uint _e206 = first;
+            first = _e206 + NEAR_CHUNK;
         }
         loop_init_1 = false;
         uint _e75 = first;
@@ -725,8 +723,8 @@ kernel void main_(
                     if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e208 = m_1;
-                        m_1 = _e208 + 1u;
+                        uint _e204 = m_1;
+                        m_1 = _e204 + 1u;
                     }
                     loop_init_3 = false;
                     uint _e157 = m_1;
@@ -746,19 +744,19 @@ kernel void main_(
                         float _e179 = params.near_r2_;
                         float _e180 = vpl_near_slc_share(_e174, _e175, metal::dot(v_8, v_8), _e179);
                         if (_e180 > 0.0) {
-                            metal::float3 _e183 = e;
-                            metal::float3 _e186 = nrm;
-                            float _e189 = params.min_d2_;
-                            float _e190 = vpl_transfer(l_6.p1_, _e186, v_8, _e189);
-                            e = _e183 + (l_6.intensity * ((_e190 * _e180) * unscale));
+                            metal::float3 _e184 = nrm;
+                            float _e187 = params.min_d2_;
+                            float _e188 = vpl_transfer(l_6.p1_, _e184, v_8, _e187);
+                            float t_3 = (_e188 * _e180) * unscale;
+                            metal::float3 _e191 = e;
+                            e = _e191 + (l_6.intensity * t_3);
                             metal::float3 _e195 = s;
                             Glossy _e196 = g;
                             metal::float3 _e197 = nrm;
-                            float _e200 = params.min_d2_;
-                            metal::float3 _e202 = glossy_term(_e196, l_6, _e197, v_8, _e200, _e180 * unscale);
-                            s = _e195 + _e202;
-                            uint _e204 = kept;
-                            kept = _e204 + 1u;
+                            metal::float3 _e198 = glossy_term(_e196, l_6, _e197, v_8, t_3);
+                            s = _e195 + _e198;
+                            uint _e200 = kept;
+                            kept = _e200 + 1u;
                         }
                     }
                 }
@@ -768,12 +766,12 @@ kernel void main_(
     }
     if (valid_1) {
         metal::float4 old = irradiance[pix];
-        metal::float3 _e219 = e;
-        uint _e222 = kept;
-        irradiance[pix] = metal::float4(old.xyz + _e219, old.w + static_cast<float>(_e222));
-        metal::float4 _e230 = specular[pix];
-        metal::float3 _e232 = s;
-        specular[pix] = metal::float4(_e230.xyz + _e232, 0.0);
+        metal::float3 _e215 = e;
+        uint _e218 = kept;
+        irradiance[pix] = metal::float4(old.xyz + _e215, old.w + static_cast<float>(_e218));
+        metal::float4 _e226 = specular[pix];
+        metal::float3 _e228 = s;
+        specular[pix] = metal::float4(_e226.xyz + _e228, 0.0);
         return;
     } else {
         return;

@@ -413,11 +413,12 @@ kernel void main_(
                         float _e146 = params.near_r2_;
                         float _e147 = vpl_far_fixed_share(_e142, metal::dot(v_3, v_3), _e146);
                         if (_e147 > 0.0) {
-                            metal::float3 _e150 = e;
-                            metal::float3 _e153 = nrm;
-                            float _e156 = params.min_d2_;
-                            float _e157 = vpl_transfer(l.p1_, _e153, v_3, _e156);
-                            e = _e150 + (l.intensity * (_e157 * _e147));
+                            metal::float3 _e151 = nrm;
+                            float _e154 = params.min_d2_;
+                            float _e155 = vpl_transfer(l.p1_, _e151, v_3, _e154);
+                            float t_1 = _e155 * _e147;
+                            metal::float3 _e157 = e;
+                            e = _e157 + (l.intensity * t_1);
                             uint _e161 = kept;
                             kept = _e161 + 1u;
                         }
