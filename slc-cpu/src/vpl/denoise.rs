@@ -159,8 +159,10 @@ fn filter_block(p: &Planes, gb: &GBuffer, y: usize, x: usize, out: &mut [Vec3]) 
             Vec3::ZERO
         } else if misses_subset(cover[l], size) {
             // A VPL subset is missing (an edge, a corner): the doubled
-            // window brings it in.
-            filter_pixel(p, x + l, y)
+            // window brings it in (the P × P window's cover is this one's:
+            // the same weights).
+            let (sum, sw, _) = window_sum(p, x + l, y, wide_window(size));
+            filtered_irradiance(p.e[i], sum, sw)
         } else {
             filtered_irradiance(p.e[i], Vec3::new(sr[l], sg[l], sb[l]), sw[l])
         };

@@ -20,6 +20,7 @@
 pub mod denoise;
 pub mod rsm;
 pub mod shade;
+mod tiling;
 
 use crate::gbuffer::render_gbuffer_into;
 use crate::geometry::Geometry;
@@ -41,6 +42,7 @@ use slc_scene::scene::{Camera, PrimaryLight, Scene};
 use slc_scene::temporal::{TemporalSettings, TemporalView};
 use slc_scene::vpl::{GBuffer, PERIOD, Shaded, VplFrame, VplInputs, VplMethod, VplSettings, VplStats, Vpls};
 use std::time::Instant;
+use tiling::{NO_RECEIVER, PartTiles, Tiling};
 
 /// The histories of a VPL frame's accumulated signals (the filtered
 /// irradiance and, on glossy pixels, the specular correction), for
@@ -81,7 +83,26 @@ pub struct VplContext {
     /// Each pixel's geometric normal (shadow-ray offsets).
     geometric: Vec<Vec3>,
     direct: Vec<Vec3>,
+    tilings: Tilings,
     base: VplStats,
+}
+
+/// The G-buffer's pixels tiled for the far field (at the default tile
+/// size) and the near field, rebuilt with the G-buffer.
+#[derive(Default)]
+struct Tilings {
+    far: Tiling,
+    /// The tile size `far` was built for.
+    far_tile: usize,
+    near: Tiling,
+}
+
+impl Tilings {
+    fn build(&mut self, gb: &GBuffer) {
+        self.far_tile = VplSettings::default().tile as usize;
+        self.far.interleaved_into(gb, PERIOD as usize, self.far_tile, SUPER);
+        self.near.regions_into(gb, NEAR_REGION, NEAR_TILE);
+    }
 }
 
 impl VplContext {
@@ -94,9 +115,9 @@ impl VplContext {
         let geo = Geometry::new(&scene.triangles);
         let (gbuffer, vpls) = (GBuffer { width, height, ..GBuffer::default() }, Vpls { size: rsm_size, ..Vpls::default() });
         let mut inputs = VplInputs { gbuffer, vpls, min_d2: min_distance * min_distance };
-        let (mut geometric, mut direct) = (Vec::new(), Vec::new());
-        let base = frame_inputs(scene, &geo, true, &mut inputs, &mut geometric, &mut direct);
-        Ok(VplContext { scene: scene.clone(), geo, inputs, geometric, direct, base })
+        let (mut geometric, mut direct, mut tilings) = (Vec::new(), Vec::new(), Tilings::default());
+        let base = frame_inputs(scene, &geo, true, &mut inputs, &mut geometric, &mut direct, &mut tilings);
+        Ok(VplContext { scene: scene.clone(), geo, inputs, geometric, direct, tilings, base })
     }
 
     /// Renders the G-buffer, the RSM and the direct light again into the
@@ -106,7 +127,7 @@ impl VplContext {
     /// start-up, first touches of memory). The same scene gives the same
     /// buffers.
     pub fn time_inputs(&mut self) -> VplStats {
-        frame_inputs(&self.scene, &self.geo, true, &mut self.inputs, &mut self.geometric, &mut self.direct)
+        frame_inputs(&self.scene, &self.geo, true, &mut self.inputs, &mut self.geometric, &mut self.direct, &mut self.tilings)
     }
 
     /// Moves or changes the primary light (the CPU twin of the GPU frame's
@@ -117,7 +138,7 @@ impl VplContext {
     pub fn set_primary(&mut self, primary: PrimaryLight) -> Result<VplStats, RenderError> {
         primary.validate().map_err(|e| RenderError::Setting(e.to_string()))?;
         self.scene.primary = primary;
-        let t = frame_inputs(&self.scene, &self.geo, false, &mut self.inputs, &mut self.geometric, &mut self.direct);
+        let t = frame_inputs(&self.scene, &self.geo, false, &mut self.inputs, &mut self.geometric, &mut self.direct, &mut self.tilings);
         (self.base.rsm_ms, self.base.direct_ms) = (t.rsm_ms, t.direct_ms);
         Ok(t)
     }
@@ -221,7 +242,7 @@ impl VplContext {
     pub fn set_camera(&mut self, camera: Camera) -> Result<VplStats, RenderError> {
         camera.validate().map_err(|e| RenderError::Setting(e.to_string()))?;
         self.scene.camera = camera;
-        let t = frame_inputs(&self.scene, &self.geo, true, &mut self.inputs, &mut self.geometric, &mut self.direct);
+        let t = frame_inputs(&self.scene, &self.geo, true, &mut self.inputs, &mut self.geometric, &mut self.direct, &mut self.tilings);
         (self.base.gbuffer_ms, self.base.rsm_ms, self.base.direct_ms) = (t.gbuffer_ms, t.rsm_ms, t.direct_ms);
         Ok(t)
     }
@@ -324,12 +345,13 @@ impl VplContext {
     /// Interleaved sampling with tiled culling per sub-image: the far field
     /// plus the near field ([`VplContext::shade_near`]), the near field
     /// alone, the same two of the specular correction at the pixels with a
-    /// specular lobe, the kept counts and evaluations of both.
+    /// specular lobe, the kept counts and evaluations of both. The tiles are
+    /// the context's [`Tiling::interleaved`] (built with the G-buffer) for
+    /// the default tile size, built here for another.
     fn shade_interleaved(&self, method: VplMethod, params: &RangeParams, s: &VplSettings) -> Fields {
         let gb = &self.inputs.gbuffer;
         let v = &self.inputs.vpls;
         let p = PERIOD as usize;
-        let subsets = p * p;
         let size = v.size as usize;
         // Interleaved flux: each pixel sees 1/P² of the VPLs, so each counts P²×.
         let scale = interleave_flux_scale(PERIOD);
@@ -339,16 +361,27 @@ impl VplContext {
             _ => Cull::None,
         };
         let (w, h) = (gb.width as usize, gb.height as usize);
-        let tile = s.tile as usize;
-        let big = tile * SUPER;
         let near_r2 = s.near_r2(self.inputs.min_d2);
-        let glossy = gb.has_specular();
-        let results: Vec<Part> = (0..subsets)
-            .into_par_iter()
-            .map(|sub| {
+        let owned;
+        let tiling = if s.tile as usize == self.tilings.far_tile {
+            &self.tilings.far
+        } else {
+            owned = Tiling::interleaved(gb, p, s.tile as usize, SUPER);
+            &owned
+        };
+        let mut far = PerReceiver::new(tiling);
+        let min_d2 = self.inputs.min_d2;
+        far.evals = tiling
+            .parts
+            .par_iter()
+            .zip(tiling.split(&mut far.out))
+            .zip(tiling.split_glossy(&mut far.spec))
+            .enumerate()
+            .map_init(Scratch::default, |scratch, (sub, ((part, out), spec))| {
                 let (sx, sy) = (sub % p, sub / p);
                 // The subset's VPLs (flux ×64) with their ranges, once per frame.
-                let mut all = LightList::default();
+                let all = &mut scratch.all;
+                all.clear();
                 // Subset texels in 4×4 blocks, so each CHUNK of 16 consecutive
                 // lights is a small patch of the RSM (spatially coherent).
                 let m = size / p;
@@ -363,129 +396,60 @@ impl VplContext {
                     }
                 }
                 all.build_chunks();
-                let (sw, sh) = ((w + p - 1 - sx) / p, (h + p - 1 - sy) / p);
-                let mut out = vec![(Vec3::ZERO, 0); sw * sh];
-                let mut spec = if glossy { vec![Vec3::ZERO; sw * sh] } else { Vec::new() };
-                let (mut coarse, mut fine) = (LightList::default(), LightList::default());
-                let mut hits = Vec::new();
-                let mut shaded = Vec::new();
-                // The receivers of each tile of a super-tile (sub-image index,
-                // position and normal of every pixel that sees a surface) and
-                // their box, gathered in one pass per tile.
-                let mut tiles: Vec<Receivers> = (0..SUPER * SUPER).map(|_| Receivers::default()).collect();
-                let mut evals = 0u64;
-                // Two-level tiled culling: super-tiles of SUPER × tile cull the
-                // subset; their tiles cull the super-tile's list.
-                for by in (0..sh).step_by(big) {
-                    for bx in (0..sw).step_by(big) {
-                        let (bx1, by1) = ((bx + big).min(sw), (by + big).min(sh));
-                        let (mut lo, mut hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
-                        for (k, r) in tiles.iter_mut().enumerate() {
-                            let (tx, ty) = (bx + (k % SUPER) * tile, by + (k / SUPER) * tile);
-                            r.clear();
-                            for j in ty..(ty + tile).min(by1) {
-                                for i in tx..(tx + tile).min(bx1) {
-                                    let px = (sy + j * p) * w + sx + i * p;
-                                    if gb.valid(px) {
-                                        r.push(j * sw + i, gb.position[px], gb.normal[px], if glossy { Glossy::at(gb, px) } else { None });
-                                    }
-                                }
-                            }
-                            (lo, hi) = (lo.min(r.lo), hi.max(r.hi));
-                        }
-                        if !lo.cmple(hi).all() {
-                            continue;
-                        }
-                        if cull != Cull::None {
-                            all.cull_chunked_into(lo, hi, &mut hits, &mut coarse);
-                        }
-                        for r in tiles.iter().filter(|r| !r.index.is_empty()) {
-                            let lights = if cull == Cull::None {
-                                &all
-                            } else {
-                                coarse.cull_into(r.lo, r.hi, &mut hits, &mut fine);
-                                &fine
-                            };
-                            shaded.clear();
-                            shade::shade_all(lights, &r.points, self.inputs.min_d2, near_r2, cull, &mut shaded);
-                            for (&i, &e) in r.index.iter().zip(&shaded) {
-                                out[i] = e;
-                            }
-                            for (k, g) in &r.glossy {
-                                spec[r.index[*k]] = shade::shade_specular(lights, g, self.inputs.min_d2, near_r2, cull);
-                            }
-                            evals += (lights.len_unpadded() * r.index.len()) as u64;
-                        }
-                    }
-                }
-                (out, spec, evals)
+                let all = std::mem::take(&mut scratch.all);
+                let evals = shade_part(part, &all, cull != Cull::None, cull, min_d2, near_r2, out, spec, scratch);
+                scratch.all = all;
+                evals
             })
-            .collect();
+            .sum();
         let near = self.shade_near(near_r2, cull, params, s);
-        // Each pixel adds its subset's result to its near field, in parallel.
-        let at = |i: usize| {
-            let (x, y) = (i % w, i / w);
-            let (sx, sy) = (x % p, y % p);
-            let sw = (w + p - 1 - sx) / p;
-            (sy * p + sx, (y / p) * sw + x / p)
-        };
+        // Each pixel adds its far field to its near field, in parallel.
         let (irradiance, kept) = (0..w * h)
             .into_par_iter()
             .map(|i| {
-                let (sub, j) = at(i);
-                let (far, k) = results[sub].0[j];
-                (near.irradiance.get(i).map_or(far, |&n| n + far), near.kept[i] + k)
+                let ((f, kf), (n, kn)) = (far.at(tiling, i), near.at(&self.tilings.near, i));
+                (f + n, kf + kn)
             })
             .unzip();
-        let specular = if glossy {
-            (0..w * h)
-                .into_par_iter()
-                .map(|i| {
-                    let (sub, j) = at(i);
-                    let far = results[sub].1[j];
-                    near.specular.get(i).map_or(far, |&n| n + far)
-                })
-                .collect()
-        } else {
-            Vec::new()
+        // A field per pixel, empty where `present` is false.
+        let pixels = |present: bool, value: &(dyn Fn(usize) -> Vec3 + Sync)| -> Vec<Vec3> {
+            if present { (0..w * h).into_par_iter().map(value).collect() } else { Vec::new() }
         };
+        let nt = &self.tilings.near;
         Fields {
             irradiance,
-            near: near.irradiance,
-            specular,
-            specular_near: near.specular,
+            near: pixels(!near.out.is_empty(), &|i| near.at(nt, i).0),
+            specular: pixels(!far.spec.is_empty(), &|i| far.specular_at(tiling, i) + near.specular_at(nt, i)),
+            specular_near: pixels(!near.spec.is_empty(), &|i| near.specular_at(nt, i)),
             kept,
-            evaluations: near.evaluations + results.iter().map(|r| r.2).sum::<u64>(),
+            evaluations: near.evals + far.evals,
         }
+    }
+
+    /// The near field of the split ([`slc_core::interleave::vpl_near_weight`])
+    /// per receiver of the context's near tiling: [`VplContext::shade_near_in`].
+    fn shade_near(&self, near_r2: f32, cull: Cull, params: &RangeParams, s: &VplSettings) -> PerReceiver {
+        self.shade_near_in(&self.tilings.near, near_r2, cull, params, s)
     }
 
     /// The near field of the split ([`slc_core::interleave::vpl_near_weight`]):
-    /// at every pixel, the near share of the VPLs of every subset closer
-    /// than `R_n = √near_r2`, at their own flux, culled as the method culls
-    /// the far field (`cull`, from `shade_interleaved`): SLC with each VPL's
-    /// own ranges and the far field's ξ ([`slc_core::interleave::vpl_near_range2`],
+    /// at every receiver of `tiling` (a [`Tiling::regions`]), the near share
+    /// of the VPLs of every subset closer than `R_n = √near_r2`, at their
+    /// own flux, culled as the method culls the far field (`cull`, from
+    /// `shade_interleaved`): SLC with each VPL's own ranges and the far
+    /// field's ξ ([`slc_core::interleave::vpl_near_range2`],
     /// [`slc_core::interleave::vpl_near_slc_share`]: unbiased), clamp at its
     /// range, none not at all; with the kept counts and loop evaluations.
     /// Empty when `near_r2 = 0`. Culled in two levels, like the interleaved
-    /// loop but over full-resolution pixels: regions of [`NEAR_REGION`]²
-    /// pixels cull the VPLs (in near-block order, so chunks are small RSM
-    /// patches), tiles of [`NEAR_TILE`]² pixels cull their region's list,
-    /// each light's sphere of radius `min(r, R_n)`
+    /// loop but over full-resolution pixels: regions cull the VPLs (in
+    /// near-block order, so chunks are small RSM patches), tiles cull their
+    /// region's list, each light's sphere of radius `min(r, R_n)`
     /// ([`slc_core::interleave::vpl_near_cull_range2`]) against the box of
     /// the G-buffer positions.
-    fn shade_near(&self, near_r2: f32, cull: Cull, params: &RangeParams, s: &VplSettings) -> Fields {
-        self.shade_near_in(near_r2, cull, params, s, NEAR_REGION, NEAR_TILE)
-    }
-
-    /// [`VplContext::shade_near`] with regions of `region²` and tiles of
-    /// `tile²` pixels.
-    fn shade_near_in(&self, near_r2: f32, cull: Cull, params: &RangeParams, s: &VplSettings, region: usize, tile: usize) -> Fields {
-        let gb = &self.inputs.gbuffer;
-        let (w, h) = (gb.width as usize, gb.height as usize);
+    fn shade_near_in(&self, tiling: &Tiling, near_r2: f32, cull: Cull, params: &RangeParams, s: &VplSettings) -> PerReceiver {
         if near_r2 <= 0.0 {
-            return Fields { kept: vec![0; w * h], ..Fields::default() };
+            return PerReceiver::default();
         }
-        let glossy = gb.has_specular();
         let v = &self.inputs.vpls;
         let near_cull = if cull == Cull::Slc { Cull::NearSlc } else { Cull::Near };
         let scale = interleave_flux_scale(PERIOD);
@@ -499,56 +463,113 @@ impl VplContext {
             }
         }
         all.build_chunks();
-        // The box of the valid G-buffer positions in [x0, x1) × [y0, y1).
-        let bounds = |(x0, x1): (usize, usize), (y0, y1): (usize, usize)| {
-            let (lo, hi) = position_box(gb, (y0..y1).flat_map(|y| (x0..x1).map(move |x| y * w + x)).filter(|&i| gb.valid(i)));
-            (lo.x <= hi.x).then_some((lo, hi))
-        };
-        let rows: Vec<Part> = (0..h.div_ceil(region))
-            .into_par_iter()
-            .map(|ry| {
-                let (y0, y1) = (ry * region, ((ry + 1) * region).min(h));
-                let mut out = vec![(Vec3::ZERO, 0u32); (y1 - y0) * w];
-                let mut spec = if glossy { vec![Vec3::ZERO; (y1 - y0) * w] } else { Vec::new() };
-                let (mut coarse, mut fine, mut hits) = (LightList::default(), LightList::default(), Vec::new());
-                let (mut pixels, mut receivers, mut shaded) = (Vec::new(), Vec::new(), Vec::new());
-                let mut evals = 0u64;
-                for x0 in (0..w).step_by(region) {
-                    let x1 = (x0 + region).min(w);
-                    let Some((lo, hi)) = bounds((x0, x1), (y0, y1)) else { continue };
-                    all.cull_chunked_into(lo, hi, &mut hits, &mut coarse);
-                    for ty in (y0..y1).step_by(tile) {
-                        for tx in (x0..x1).step_by(tile) {
-                            let (tx1, ty1) = ((tx + tile).min(x1), (ty + tile).min(y1));
-                            let Some((lo, hi)) = bounds((tx, tx1), (ty, ty1)) else { continue };
-                            coarse.cull_into(lo, hi, &mut hits, &mut fine);
-                            pixels.clear();
-                            pixels.extend((ty..ty1).flat_map(|y| (tx..tx1).map(move |x| y * w + x)).filter(|&i| gb.valid(i)));
-                            receivers.clear();
-                            receivers.extend(pixels.iter().map(|&i| (gb.position[i], gb.normal[i])));
-                            shaded.clear();
-                            shade::shade_all(&fine, &receivers, self.inputs.min_d2, near_r2, near_cull, &mut shaded);
-                            for (&i, &s) in pixels.iter().zip(&shaded) {
-                                out[i - y0 * w] = s;
-                            }
-                            if glossy {
-                                for &i in &pixels {
-                                    if let Some(g) = Glossy::at(gb, i) {
-                                        spec[i - y0 * w] = shade::shade_specular(&fine, &g, self.inputs.min_d2, near_r2, near_cull);
-                                    }
-                                }
-                            }
-                            evals += (fine.len_unpadded() * pixels.len()) as u64;
-                        }
-                    }
-                }
-                (out, spec, evals)
-            })
-            .collect();
-        let evaluations = rows.iter().map(|r| r.2).sum();
-        let specular = if glossy { rows.iter().flat_map(|r| r.1.iter().copied()).collect() } else { Vec::new() };
-        let (irradiance, kept) = rows.into_iter().flat_map(|r| r.0).unzip();
-        Fields { irradiance, specular, kept, evaluations, ..Fields::default() }
+        let mut near = PerReceiver::new(tiling);
+        let min_d2 = self.inputs.min_d2;
+        near.evals = tiling
+            .parts
+            .par_iter()
+            .zip(tiling.split(&mut near.out))
+            .zip(tiling.split_glossy(&mut near.spec))
+            .map_init(Scratch::default, |scratch, ((part, out), spec)| shade_part(part, &all, true, near_cull, min_d2, near_r2, out, spec, scratch))
+            .sum();
+        near
+    }
+}
+
+/// Shades the receivers of one part of a tiling with the lights of `all`
+/// under `cull` into `out` (`(irradiance, kept)`) and, at its glossy
+/// receivers, the specular correction into `spec` (both the part's range
+/// of a per-receiver buffer); returns the loop evaluations. With
+/// `cull_lists`, each group culls `all` to its box
+/// ([`LightList::cull_chunked_into`]) and each tile that list to its own
+/// ([`LightList::cull_into`]); without, every tile takes every light.
+#[allow(clippy::too_many_arguments)]
+fn shade_part(
+    part: &PartTiles,
+    all: &LightList,
+    cull_lists: bool,
+    cull: Cull,
+    min_d2: f32,
+    near_r2: f32,
+    out: &mut [(Vec3, u32)],
+    spec: &mut [Vec3],
+    scratch: &mut Scratch,
+) -> u64 {
+    let Scratch { coarse, fine, hits, shaded, .. } = scratch;
+    let mut evals = 0u64;
+    for group in &part.groups {
+        if cull_lists {
+            all.cull_chunked_into(group.lo, group.hi, hits, coarse);
+        }
+        for tile in &part.tiles[group.items.clone()] {
+            let lights = if cull_lists {
+                coarse.cull_into(tile.lo, tile.hi, hits, fine);
+                &*fine
+            } else {
+                all
+            };
+            let r = tile.receivers.clone();
+            shaded.clear();
+            shade::shade_all(lights, &part.points[r.clone()], min_d2, near_r2, cull, shaded);
+            out[r.clone()].copy_from_slice(shaded);
+            for (k, g) in &part.glossy[tile.glossy.clone()] {
+                spec[*k] = shade::shade_specular(lights, g, min_d2, near_r2, cull);
+            }
+            evals += (lights.len_unpadded() * r.len()) as u64;
+        }
+    }
+    evals
+}
+
+/// One worker's reused lists for [`shade_part`].
+#[derive(Default)]
+struct Scratch {
+    all: LightList,
+    coarse: LightList,
+    fine: LightList,
+    hits: Vec<u32>,
+    shaded: Vec<(Vec3, u32)>,
+}
+
+/// A tiling's results per receiver ([`Tiling`]'s order): `(irradiance,
+/// kept)`, the specular correction (empty without glossy pixels) and the
+/// loop evaluations. Empty: nothing shaded (no near field).
+#[derive(Default)]
+struct PerReceiver {
+    out: Vec<(Vec3, u32)>,
+    spec: Vec<Vec3>,
+    evals: u64,
+}
+
+impl PerReceiver {
+    /// Zeros for every receiver, and for the specular correction where the
+    /// tiling has glossy receivers.
+    fn new(tiling: &Tiling) -> PerReceiver {
+        let n = tiling.len();
+        PerReceiver { out: vec![(Vec3::ZERO, 0); n], spec: if !tiling.has_glossy() { Vec::new() } else { vec![Vec3::ZERO; n] }, evals: 0 }
+    }
+
+    /// Pixel `i`'s `(irradiance, kept)`; zero where it has no receiver or
+    /// nothing was shaded.
+    fn at(&self, tiling: &Tiling, i: usize) -> (Vec3, u32) {
+        match tiling.receiver[i] {
+            r if r != NO_RECEIVER && !self.out.is_empty() => self.out[r as usize],
+            _ => (Vec3::ZERO, 0),
+        }
+    }
+
+    /// Irradiance and kept count of each of the tiling's pixels (tests).
+    #[cfg(test)]
+    fn per_pixel(&self, tiling: &Tiling) -> (Vec<Vec3>, Vec<u32>) {
+        (0..tiling.receiver.len()).map(|i| self.at(tiling, i)).unzip()
+    }
+
+    /// Pixel `i`'s specular correction, zero as [`PerReceiver::at`].
+    fn specular_at(&self, tiling: &Tiling, i: usize) -> Vec3 {
+        match tiling.receiver[i] {
+            r if r != NO_RECEIVER && !self.spec.is_empty() => self.spec[r as usize],
+            _ => Vec3::ZERO,
+        }
     }
 }
 
@@ -567,10 +588,11 @@ fn light_ranges(cull: Cull, params: &RangeParams, s: &VplSettings, i: usize, flu
     }
 }
 
-/// The method-independent part of a frame: G-buffer (unless `camera_moved`
-/// is false), VPLs (RSM) and direct light, rendered into `inputs`,
-/// `geometric` and `direct` (their memory reused at the same size), with
-/// their times in the returned statistics (G-buffer 0 when not rendered).
+/// The method-independent part of a frame: G-buffer and its tilings
+/// (unless `camera_moved` is false), VPLs (RSM) and direct light, rendered
+/// into `inputs`, `geometric`, `direct` and `tilings` (memory reused at the
+/// same size), with their times in the returned statistics (G-buffer 0
+/// when not rendered; the tilings count as G-buffer).
 fn frame_inputs(
     scene: &Scene,
     geo: &Geometry,
@@ -578,11 +600,13 @@ fn frame_inputs(
     inputs: &mut VplInputs,
     geometric: &mut Vec<Vec3>,
     direct: &mut Vec<Vec3>,
+    tilings: &mut Tilings,
 ) -> VplStats {
     let mut base = VplStats::default();
     if camera_moved {
         let t = Instant::now();
         render_gbuffer_into(scene, geo, &mut inputs.gbuffer, geometric);
+        tilings.build(&inputs.gbuffer);
         base.gbuffer_ms = ms(t);
     }
     let t = Instant::now();
@@ -594,11 +618,6 @@ fn frame_inputs(
     base.vpls = inputs.vpls.len();
     base
 }
-
-/// One part of an image (a subset's sub-image, a row of regions), row-major:
-/// `(irradiance, kept)` per pixel, the specular correction (empty without
-/// glossy pixels) and the loop evaluations.
-type Part = (Vec<(Vec3, u32)>, Vec<Vec3>, u64);
 
 /// What the shading of a frame's pixels returns (fields of [`Shaded`]):
 /// irradiance (the near field included) and the near field alone, the
@@ -612,42 +631,6 @@ struct Fields {
     specular_near: Vec<Vec3>,
     kept: Vec<u32>,
     evaluations: u64,
-}
-
-/// One tile's receivers: an index per pixel (where its result goes), its
-/// position and normal, the box of the positions (`lo > hi` when empty),
-/// and the receivers with a specular lobe (their place in `index`).
-#[derive(Default)]
-struct Receivers {
-    index: Vec<usize>,
-    points: Vec<(Vec3, Vec3)>,
-    glossy: Vec<(usize, Glossy)>,
-    lo: Vec3,
-    hi: Vec3,
-}
-
-impl Receivers {
-    fn clear(&mut self) {
-        self.index.clear();
-        self.points.clear();
-        self.glossy.clear();
-        (self.lo, self.hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
-    }
-
-    fn push(&mut self, index: usize, x: Vec3, n: Vec3, glossy: Option<Glossy>) {
-        if let Some(g) = glossy {
-            self.glossy.push((self.index.len(), g));
-        }
-        self.index.push(index);
-        self.points.push((x, n));
-        (self.lo, self.hi) = (self.lo.min(x), self.hi.max(x));
-    }
-}
-
-/// The box `(lo, hi)` of the G-buffer positions of `pixels` (`lo > hi`
-/// when there are none).
-fn position_box(gb: &GBuffer, pixels: impl Iterator<Item = usize>) -> (Vec3, Vec3) {
-    pixels.fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), i| (lo.min(gb.position[i]), hi.max(gb.position[i])))
 }
 
 /// Region edge (pixels) of the near field's first culling level.
@@ -751,7 +734,8 @@ mod tests {
                     .collect();
             assert!(brute.iter().map(|b| b.1).sum::<u32>() > 1000, "{cull:?}: the near field holds lights");
             for (region, tile) in [(64, 8), (32, 8), (32, 4), (16, 16), (7, 3)] {
-                let Fields { irradiance: e, kept, .. } = ctx.shade_near_in(near_r2, cull, &params, &s, region, tile);
+                let (e, kept) =
+                    ctx.shade_near_in(&Tiling::regions(gb, region, tile), near_r2, cull, &params, &s).per_pixel(&Tiling::regions(gb, region, tile));
                 for i in 0..brute.len() {
                     assert_eq!(kept[i], brute[i].1, "{cull:?}: pixel {i}, region {region}, tile {tile}");
                     assert!(
@@ -850,6 +834,7 @@ mod tests {
         let ctx = VplContext::new(&scene, 40, 32, 64, None).unwrap();
         let mut lambert = VplContext::new(&scene, 40, 32, 64, None).unwrap();
         lambert.inputs.gbuffer.specular.clear();
+        lambert.tilings.build(&lambert.inputs.gbuffer);
         let gb = ctx.gbuffer();
         for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None, VplMethod::Reference] {
             let s = VplSettings { method, ..VplSettings::default() };
@@ -885,7 +870,8 @@ mod tests {
         let params = s.validate().unwrap();
         let near = |cull, s: &VplSettings| {
             let f = ctx.shade_near(near_r2, cull, &params, s);
-            (f.irradiance, f.kept, f.evaluations)
+            let (e, kept) = f.per_pixel(&ctx.tilings.near);
+            (e, kept, f.evals)
         };
         let (truth, truth_kept, truth_evals) = near(Cull::None, &s);
         let fixed = |x: f32| near(Cull::Slc, &VplSettings { fixed_xi: Some(x), ..s });

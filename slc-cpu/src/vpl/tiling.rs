@@ -1,0 +1,267 @@
+//! The pixels a frame shades, grouped once per G-buffer for two-level tile
+//! culling: parts (the unit of parallel work) hold groups (a first culling
+//! level: super-tiles of a sub-image, regions of the image), groups hold
+//! tiles (the second level), tiles hold receivers (the pixels that see a
+//! surface, with position, normal and, where the material has one, the
+//! specular lobe). Every level stores the box of its receivers' positions.
+//!
+//! A frame's shading reads this instead of walking the G-buffer again:
+//! the boxes, receiver lists and lobes depend on the camera alone, so
+//! [`super::VplContext`] builds its tilings with the G-buffer and times them
+//! with it. Receivers are numbered in part, group, tile order, so one part's
+//! results are a contiguous range of a receiver-ordered buffer
+//! ([`Tiling::split`]); [`Tiling::receiver`] maps a pixel back to its
+//! receiver.
+
+use super::shade::Glossy;
+use glam::Vec3;
+use rayon::prelude::*;
+use slc_scene::vpl::GBuffer;
+use std::ops::Range;
+
+/// Marks a pixel without a receiver in [`Tiling::receiver`].
+pub(crate) const NO_RECEIVER: u32 = u32::MAX;
+
+/// A box and the range of the next level's entries it holds.
+#[derive(Clone, Debug)]
+pub(crate) struct Bin {
+    pub lo: Vec3,
+    pub hi: Vec3,
+    pub items: Range<usize>,
+}
+
+/// A tile: its box, receivers and glossy receivers (ranges of its part).
+#[derive(Clone, Debug)]
+pub(crate) struct Tile {
+    pub lo: Vec3,
+    pub hi: Vec3,
+    pub receivers: Range<usize>,
+    pub glossy: Range<usize>,
+}
+
+/// One part's groups, tiles and receivers (indices local to the part).
+#[derive(Clone, Debug, Default)]
+pub(crate) struct PartTiles {
+    /// Tiles of each group.
+    pub groups: Vec<Bin>,
+    pub tiles: Vec<Tile>,
+    /// Pixel of each receiver.
+    pub pixel: Vec<u32>,
+    /// Position and unit normal of each receiver.
+    pub points: Vec<(Vec3, Vec3)>,
+    /// The receivers with a specular lobe: receiver index and lobe.
+    pub glossy: Vec<(usize, Glossy)>,
+}
+
+/// See the module documentation.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Tiling {
+    pub parts: Vec<PartTiles>,
+    /// The first receiver of each part, and the number of receivers last.
+    pub offsets: Vec<usize>,
+    /// Receiver of each pixel, [`NO_RECEIVER`] where the pixel sees no
+    /// surface.
+    pub receiver: Vec<u32>,
+}
+
+impl Tiling {
+    /// The interleaved far field's tiling: one part per VPL subset of the
+    /// `period × period` interleaving (subset `sy·P + sx` holds pixels
+    /// `(sx + P·i, sy + P·j)`), its sub-image cut into groups of
+    /// `(super_tiles · tile)²` sub-image pixels and those into tiles of
+    /// `tile²`.
+    pub fn interleaved(gb: &GBuffer, period: usize, tile: usize, super_tiles: usize) -> Tiling {
+        let mut t = Tiling::default();
+        t.interleaved_into(gb, period, tile, super_tiles);
+        t
+    }
+
+    /// [`Tiling::interleaved`] in place, reusing this tiling's memory.
+    pub fn interleaved_into(&mut self, gb: &GBuffer, period: usize, tile: usize, super_tiles: usize) {
+        let (w, h) = (gb.width as usize, gb.height as usize);
+        let big = tile * super_tiles;
+        self.fill_parts(gb, period * period, |sub, t| {
+            let (sx, sy) = (sub % period, sub / period);
+            let (sw, sh) = ((w + period - 1 - sx) / period, (h + period - 1 - sy) / period);
+            for by in (0..sh).step_by(big) {
+                for bx in (0..sw).step_by(big) {
+                    t.begin_group();
+                    for ty in (by..(by + big).min(sh)).step_by(tile) {
+                        for tx in (bx..(bx + big).min(sw)).step_by(tile) {
+                            let pixels = (ty..(ty + tile).min(sh))
+                                .flat_map(|j| (tx..(tx + tile).min(sw)).map(move |i| (sy + j * period) * w + sx + i * period));
+                            t.push_tile(gb, pixels);
+                        }
+                    }
+                    t.end_group();
+                }
+            }
+        });
+    }
+
+    /// The near field's tiling: one part and group per `region²` pixels of
+    /// the image, cut into tiles of `tile²` pixels.
+    #[cfg(test)]
+    pub fn regions(gb: &GBuffer, region: usize, tile: usize) -> Tiling {
+        let mut t = Tiling::default();
+        t.regions_into(gb, region, tile);
+        t
+    }
+
+    /// [`Tiling::regions`] in place, reusing this tiling's memory.
+    pub fn regions_into(&mut self, gb: &GBuffer, region: usize, tile: usize) {
+        let (w, h) = (gb.width as usize, gb.height as usize);
+        let across = w.div_ceil(region);
+        self.fill_parts(gb, across * h.div_ceil(region), |k, t| {
+            let (x0, y0) = ((k % across) * region, (k / across) * region);
+            let (x1, y1) = ((x0 + region).min(w), (y0 + region).min(h));
+            t.begin_group();
+            for ty in (y0..y1).step_by(tile) {
+                for tx in (x0..x1).step_by(tile) {
+                    t.push_tile(gb, (ty..(ty + tile).min(y1)).flat_map(|y| (tx..(tx + tile).min(x1)).map(move |x| y * w + x)));
+                }
+            }
+            t.end_group();
+        });
+    }
+
+    /// Refills this tiling with `parts` parts, part `k` by `fill(k, part)`
+    /// (in parallel, each part's memory reused), then numbers the
+    /// receivers in part order.
+    fn fill_parts(&mut self, gb: &GBuffer, parts: usize, fill: impl Fn(usize, &mut PartTiles) + Sync) {
+        self.parts.resize_with(parts, PartTiles::default);
+        self.parts.par_iter_mut().enumerate().for_each(|(k, t)| {
+            t.clear();
+            fill(k, t);
+        });
+        self.offsets.clear();
+        self.offsets.push(0);
+        for p in &self.parts {
+            self.offsets.push(self.offsets.last().copied().unwrap_or(0) + p.pixel.len());
+        }
+        self.receiver.clear();
+        self.receiver.resize(gb.position.len(), NO_RECEIVER);
+        for (p, &o) in self.parts.iter().zip(&self.offsets) {
+            for (r, &i) in p.pixel.iter().enumerate() {
+                self.receiver[i as usize] = (o + r) as u32;
+            }
+        }
+    }
+
+    /// A per-receiver buffer split into each part's range.
+    pub fn split<'a, T>(&self, mut out: &'a mut [T]) -> Vec<&'a mut [T]> {
+        let mut parts = Vec::with_capacity(self.parts.len());
+        for p in &self.parts {
+            let (a, rest) = out.split_at_mut(p.pixel.len());
+            parts.push(a);
+            out = rest;
+        }
+        parts
+    }
+
+    /// [`Tiling::split`], or empty slices when `out` is empty (no glossy
+    /// pixel).
+    pub fn split_glossy<'a, T>(&self, out: &'a mut [T]) -> Vec<&'a mut [T]> {
+        if out.is_empty() { self.parts.iter().map(|_| <&mut [T]>::default()).collect() } else { self.split(out) }
+    }
+
+    /// Number of receivers.
+    pub fn len(&self) -> usize {
+        self.offsets.last().copied().unwrap_or(0)
+    }
+
+    /// `true` when some receiver has a specular lobe.
+    pub fn has_glossy(&self) -> bool {
+        self.parts.iter().any(|p| !p.glossy.is_empty())
+    }
+}
+
+impl PartTiles {
+    fn clear(&mut self) {
+        self.groups.clear();
+        self.tiles.clear();
+        self.pixel.clear();
+        self.points.clear();
+        self.glossy.clear();
+    }
+
+    fn begin_group(&mut self) {
+        let n = self.tiles.len();
+        self.groups.push(Bin { lo: Vec3::INFINITY, hi: Vec3::NEG_INFINITY, items: n..n });
+    }
+
+    /// Closes the group; drops it when no tile of it has a receiver.
+    fn end_group(&mut self) {
+        let n = self.tiles.len();
+        let g = self.groups.last_mut().expect("begin_group first");
+        g.items.end = n;
+        if g.items.is_empty() {
+            self.groups.pop();
+        }
+    }
+
+    /// Appends a tile of the `pixels` that see a surface (none: no tile).
+    fn push_tile(&mut self, gb: &GBuffer, pixels: impl Iterator<Item = usize>) {
+        let (r0, s0) = (self.pixel.len(), self.glossy.len());
+        let (mut lo, mut hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
+        let glossy = !gb.specular.is_empty();
+        for i in pixels.filter(|&i| gb.valid(i)) {
+            let x = gb.position[i];
+            (lo, hi) = (lo.min(x), hi.max(x));
+            if let Some(g) = glossy.then(|| Glossy::at(gb, i)).flatten() {
+                self.glossy.push((self.pixel.len(), g));
+            }
+            self.pixel.push(i as u32);
+            self.points.push((x, gb.normal[i]));
+        }
+        if self.pixel.len() == r0 {
+            return;
+        }
+        self.tiles.push(Tile { lo, hi, receivers: r0..self.pixel.len(), glossy: s0..self.glossy.len() });
+        let g = self.groups.last_mut().expect("begin_group first");
+        (g.lo, g.hi) = (g.lo.min(lo), g.hi.max(hi));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vpl::VplContext;
+    use slc_scene::scene::Scene;
+
+    /// Every pixel that sees a surface is exactly one receiver, each level's
+    /// box holds its receivers, and the ranges nest and cover in order.
+    #[test]
+    fn tilings_cover_every_surface_pixel_once_with_boxes_that_hold_them() {
+        let ctx = VplContext::new(&Scene::cornell_box_glossy(), 37, 29, 64, None).unwrap();
+        let gb = ctx.gbuffer();
+        for t in [Tiling::interleaved(gb, 8, 4, 2), Tiling::interleaved(gb, 8, 3, 1), Tiling::regions(gb, 32, 8), Tiling::regions(gb, 7, 3)] {
+            let valid = (0..gb.position.len()).filter(|&i| gb.valid(i)).count();
+            assert_eq!(t.len(), valid);
+            for (p, &o) in t.parts.iter().zip(&t.offsets) {
+                let mut next = 0;
+                for g in &p.groups {
+                    for tile in &p.tiles[g.items.clone()] {
+                        assert_eq!(tile.receivers.start, next);
+                        next = tile.receivers.end;
+                        for &(x, _) in &p.points[tile.receivers.clone()] {
+                            assert!(tile.lo.cmple(x).all() && x.cmple(tile.hi).all() && g.lo.cmple(x).all() && x.cmple(g.hi).all());
+                        }
+                        for &(k, _) in &p.glossy[tile.glossy.clone()] {
+                            assert!(tile.receivers.contains(&k));
+                        }
+                    }
+                }
+                assert_eq!(next, p.pixel.len());
+                for (r, &i) in p.pixel.iter().enumerate() {
+                    assert_eq!(t.receiver[i as usize] as usize, o + r, "pixel {i}");
+                }
+            }
+            for i in 0..gb.position.len() {
+                assert_eq!(t.receiver[i] != NO_RECEIVER, gb.valid(i), "pixel {i}");
+            }
+            let glossy = (0..gb.position.len()).filter(|&i| gb.specular_at(i).is_some()).count();
+            assert!(glossy > 0 && t.parts.iter().map(|p| p.glossy.len()).sum::<usize>() == glossy, "every glossy pixel has its lobe");
+        }
+    }
+}
