@@ -28,17 +28,19 @@ use slc_core::denoise::{
 };
 use slc_scene::vpl::GBuffer;
 
-/// Neighbours per vectorized chunk of a window row in the per-pixel path
-/// (a full row of the 8 × 8 window; two of the widened 16 × 16 one).
+/// Neighbours per vectorized chunk of a window row in the per-pixel path:
+/// a full row of the 8 × 8 window, and of the widened 16 × 16 one
+/// ([`WIDE_LANES`]).
 const LANES: usize = 8;
+const WIDE_LANES: usize = 16;
 
 /// Pixels filtered together in the interior path: one AVX-512 register of
 /// f32, two AVX2 ones.
 const BLOCK: usize = 16;
 
 /// The filter's inputs as planes, one value per pixel.
-struct Planes<'a> {
-    e: &'a [Vec3],
+struct Planes {
+    /// The filtered signal.
     er: Vec<f32>,
     eg: Vec<f32>,
     eb: Vec<f32>,
@@ -57,29 +59,49 @@ struct Planes<'a> {
 /// Filters `e` (one value per pixel) with a `period × period` window, on the
 /// CPU's best [`SimdPath`].
 pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
-    cross_bilateral_on(SimdPath::best(), e, gb, period)
+    cross_bilateral_on(SimdPath::best(), e, &[], gb, period)
 }
 
-/// [`cross_bilateral`] on a chosen [`SimdPath`] (the baseline where the CPU
-/// lacks it).
-pub fn cross_bilateral_on(path: SimdPath, e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
-    let planes = Planes::new(e, gb, period);
+/// The far field of a split signal filtered, the near field added back:
+/// `filter(e − near) + near` ([`cross_bilateral`] of `e` when `near` is
+/// empty). The near field is exact (shaded per pixel), only the
+/// interleaved far field needs the filter; computed in the filter's own
+/// passes, without a difference image.
+pub fn cross_bilateral_far(e: &[Vec3], near: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
+    cross_bilateral_on(SimdPath::best(), e, near, gb, period)
+}
+
+/// [`cross_bilateral_far`] on a chosen [`SimdPath`] (the baseline where the
+/// CPU lacks it).
+pub fn cross_bilateral_on(path: SimdPath, e: &[Vec3], near: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
+    let planes = Planes::new(e, near, gb, period);
+    let w = planes.w.max(1);
     let mut out = vec![Vec3::ZERO; planes.w * planes.h];
-    out.par_chunks_mut(planes.w.max(1)).enumerate().for_each(|(y, row)| path.run(FilterRow { p: &planes, gb, y, row }));
+    out.par_chunks_mut(w).enumerate().for_each(|(y, row)| {
+        path.run(FilterRow { p: &planes, gb, y, row: &mut *row });
+        if !near.is_empty() {
+            for (o, &n) in row.iter_mut().zip(&near[y * w..]) {
+                *o += n;
+            }
+        }
+    });
     out
 }
 
-impl<'a> Planes<'a> {
-    /// Splits `e` and the G-buffer into planes (in parallel).
-    fn new(e: &'a [Vec3], gb: &GBuffer, period: u32) -> Self {
+impl Planes {
+    /// Splits `e − near` (`e` where `near` is empty) and the G-buffer into
+    /// planes (in parallel).
+    fn new(e: &[Vec3], near: &[Vec3], gb: &GBuffer, period: u32) -> Self {
         let split = |f: fn(Vec3) -> f32, v: &[Vec3]| -> Vec<f32> { v.par_iter().map(|&x| f(x)).collect() };
+        let far = |f: fn(Vec3) -> f32| -> Vec<f32> {
+            if near.is_empty() { split(f, e) } else { e.par_iter().zip(near).map(|(&e, &n)| f(e - n)).collect() }
+        };
         // DEPTH_NONE stands for "no surface": every δ to it is huge, weight 0.
         let z: Vec<f32> = gb.depth.par_iter().map(|&d| if d.is_finite() { d } else { DEPTH_NONE }).collect();
         Planes {
-            e,
-            er: split(|v| v.x, e),
-            eg: split(|v| v.y, e),
-            eb: split(|v| v.z, e),
+            er: far(|v| v.x),
+            eg: far(|v| v.y),
+            eb: far(|v| v.z),
             nx: split(|v| v.x, &gb.normal),
             ny: split(|v| v.y, &gb.normal),
             nz: split(|v| v.z, &gb.normal),
@@ -90,12 +112,17 @@ impl<'a> Planes<'a> {
             period,
         }
     }
+
+    /// The filtered signal at pixel `i`.
+    fn own(&self, i: usize) -> Vec3 {
+        Vec3::new(self.er[i], self.eg[i], self.eb[i])
+    }
 }
 
 /// One output row as a pulp operation, so [`SimdPath::run`] compiles it per
 /// instruction set.
 struct FilterRow<'a> {
-    p: &'a Planes<'a>,
+    p: &'a Planes,
     gb: &'a GBuffer,
     y: usize,
     row: &'a mut [Vec3],
@@ -162,9 +189,9 @@ fn filter_block(p: &Planes, gb: &GBuffer, y: usize, x: usize, out: &mut [Vec3]) 
             // window brings it in (the P × P window's cover is this one's:
             // the same weights).
             let (sum, sw, _) = window_sum(p, x + l, y, wide_window(size));
-            filtered_irradiance(p.e[i], sum, sw)
+            filtered_irradiance(p.own(i), sum, sw)
         } else {
-            filtered_irradiance(p.e[i], Vec3::new(sr[l], sg[l], sb[l]), sw[l])
+            filtered_irradiance(p.own(i), Vec3::new(sr[l], sg[l], sb[l]), sw[l])
         };
     }
 }
@@ -178,7 +205,7 @@ fn filter_pixel(p: &Planes, x: usize, y: usize) -> Vec3 {
     if misses_subset(covered, p.period) {
         (sum, sw, _) = window_sum(p, x, y, wide_window(p.period));
     }
-    filtered_irradiance(p.e[i], sum, sw)
+    filtered_irradiance(p.own(i), sum, sw)
 }
 
 /// Weighted sum, total weight and covering neighbours of the `size × size`
@@ -186,23 +213,30 @@ fn filter_pixel(p: &Planes, x: usize, y: usize) -> Vec3 {
 /// chunks of [`LANES`] neighbours with per-lane partial sums.
 #[inline(always)]
 fn window_sum(p: &Planes, x: usize, y: usize, size: u32) -> (Vec3, f32, u32) {
+    // The widened window's rows fill one AVX-512 register of neighbours.
+    if size as usize >= WIDE_LANES { window_sum_in::<WIDE_LANES>(p, x, y, size) } else { window_sum_in::<LANES>(p, x, y, size) }
+}
+
+/// [`window_sum`] in chunks of `L` neighbours.
+#[inline(always)]
+fn window_sum_in<const L: usize>(p: &Planes, x: usize, y: usize, size: u32) -> (Vec3, f32, u32) {
     let (w, h) = (p.w, p.h);
     let i = y * w + x;
     let n = Vec3::new(p.nx[i], p.ny[i], p.nz[i]);
     let (zi, inv) = (p.z[i], p.inv[i]);
     let (x0, x1) = (window_start(x as u32, size) as usize, window_end(x as u32, size, w as u32) as usize);
     let (y0, y1) = (window_start(y as u32, size) as usize, window_end(y as u32, size, h as u32) as usize);
-    let (mut lr, mut lg, mut lb, mut lw, mut lc) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES], [0u32; LANES]);
+    let (mut lr, mut lg, mut lb, mut lw, mut lc) = ([0.0f32; L], [0.0f32; L], [0.0f32; L], [0.0f32; L], [0u32; L]);
     let (mut sr, mut sg, mut sb, mut sw) = (0.0f32, 0.0f32, 0.0f32, 0.0f32);
     let mut covered = 0u32;
     for yy in y0..y1 {
         let row = yy * w;
         let (mut a, b) = (row + x0, row + x1);
-        while b - a >= LANES {
-            let lanes = |v: &[f32]| -> [f32; LANES] { v[a..a + LANES].try_into().expect("LANES") };
+        while b - a >= L {
+            let lanes = |v: &[f32]| -> [f32; L] { v[a..a + L].try_into().expect("L lanes") };
             let (zj, njx, njy, njz) = (lanes(&p.z), lanes(&p.nx), lanes(&p.ny), lanes(&p.nz));
             let (rr, gg, bb) = (lanes(&p.er), lanes(&p.eg), lanes(&p.eb));
-            for l in 0..LANES {
+            for l in 0..L {
                 let wgt = bilateral_weight(n, Vec3::new(njx[l], njy[l], njz[l]), zi, zj[l], inv);
                 lr[l] += rr[l] * wgt;
                 lg[l] += gg[l] * wgt;
@@ -210,7 +244,7 @@ fn window_sum(p: &Planes, x: usize, y: usize, size: u32) -> (Vec3, f32, u32) {
                 lw[l] += wgt;
                 lc[l] += (wgt > COVER_WEIGHT) as u32;
             }
-            a += LANES;
+            a += L;
         }
         for j in a..b {
             let wgt = bilateral_weight(n, Vec3::new(p.nx[j], p.ny[j], p.nz[j]), zi, p.z[j], inv);
@@ -221,7 +255,7 @@ fn window_sum(p: &Planes, x: usize, y: usize, size: u32) -> (Vec3, f32, u32) {
             covered += (wgt > COVER_WEIGHT) as u32;
         }
     }
-    for l in 0..LANES {
+    for l in 0..L {
         sr += lr[l];
         sg += lg[l];
         sb += lb[l];
@@ -249,7 +283,7 @@ mod tests {
         let shaded = ctx.shade(&VplSettings { method: VplMethod::None, near_radius: Some(0.0), ..VplSettings::default() }).unwrap();
         let gb = ctx.gbuffer();
         let e = &shaded.irradiance;
-        let planes = Planes::new(e, gb, PERIOD);
+        let planes = Planes::new(e, &[], gb, PERIOD);
         let expected: Vec<Vec3> = (0..e.len()).map(|i| if gb.valid(i) { filter_pixel(&planes, i % 72, i / 72) } else { Vec3::ZERO }).collect();
         let widened = (0..e.len()).filter(|&i| gb.valid(i) && misses_subset(window_sum(&planes, i % 72, i / 72, PERIOD).2, PERIOD)).count();
         assert!(widened > 0 && widened < e.len() / 2, "both window sizes occur ({widened} widened)");
@@ -258,7 +292,7 @@ mod tests {
                 eprintln!("SKIP {path}: this CPU lacks it");
                 continue;
             }
-            let got = cross_bilateral_on(path, e, gb, PERIOD);
+            let got = cross_bilateral_on(path, e, &[], gb, PERIOD);
             for i in 0..e.len() {
                 assert!(
                     (got[i] - expected[i]).abs().max_element() <= 1e-5 * expected[i].max_element().max(1e-6),

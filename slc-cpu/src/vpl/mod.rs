@@ -267,14 +267,9 @@ impl VplContext {
         let filter = |e: Vec<Vec3>, near: &[Vec3]| -> Vec<Vec3> {
             if !denoise {
                 e
-            } else if near.is_empty() {
-                denoise::cross_bilateral(&e, gb, PERIOD)
             } else {
                 // The near field is exact: only the interleaved far field is filtered.
-                let far: Vec<Vec3> = e.par_iter().zip(near).map(|(&e, &n)| e - n).collect();
-                let mut f = denoise::cross_bilateral(&far, gb, PERIOD);
-                f.par_iter_mut().zip(near).for_each(|(e, &n)| *e += n);
-                f
+                denoise::cross_bilateral_far(&e, near, gb, PERIOD)
             }
         };
         let mut filtered = filter(shaded.irradiance, &shaded.near);
