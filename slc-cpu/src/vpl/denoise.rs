@@ -39,6 +39,7 @@ const WIDE_LANES: usize = 16;
 const BLOCK: usize = 16;
 
 /// The filter's inputs as planes, one value per pixel.
+#[derive(Default)]
 struct Planes {
     /// The filtered signal.
     er: Vec<f32>,
@@ -56,61 +57,96 @@ struct Planes {
     period: u32,
 }
 
-/// Filters `e` (one value per pixel) with a `period × period` window, on the
-/// CPU's best [`SimdPath`].
-pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
-    cross_bilateral_on(SimdPath::best(), e, &[], gb, period)
+/// The cross-bilateral filter with its planes kept between frames: the
+/// G-buffer's (normals, depth, `1/(σz)`) split once per G-buffer
+/// ([`Denoiser::set_gbuffer`]), the signal's written into the same memory
+/// every call. [`crate::vpl::VplContext`] keeps one.
+#[derive(Default)]
+pub struct Denoiser {
+    planes: Planes,
 }
 
-/// The far field of a split signal filtered, the near field added back:
-/// `filter(e − near) + near` ([`cross_bilateral`] of `e` when `near` is
-/// empty). The near field is exact (shaded per pixel), only the
-/// interleaved far field needs the filter; computed in the filter's own
-/// passes, without a difference image.
-pub fn cross_bilateral_far(e: &[Vec3], near: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
-    cross_bilateral_on(SimdPath::best(), e, near, gb, period)
-}
+impl Denoiser {
+    /// A filter for `gb`'s pixels.
+    pub fn new(gb: &GBuffer) -> Denoiser {
+        let mut d = Denoiser::default();
+        d.set_gbuffer(gb);
+        d
+    }
 
-/// [`cross_bilateral_far`] on a chosen [`SimdPath`] (the baseline where the
-/// CPU lacks it).
-pub fn cross_bilateral_on(path: SimdPath, e: &[Vec3], near: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
-    let planes = Planes::new(e, near, gb, period);
-    let w = planes.w.max(1);
-    let mut out = vec![Vec3::ZERO; planes.w * planes.h];
-    out.par_chunks_mut(w).enumerate().for_each(|(y, row)| {
-        path.run(FilterRow { p: &planes, gb, y, row: &mut *row });
-        if !near.is_empty() {
-            for (o, &n) in row.iter_mut().zip(&near[y * w..]) {
-                *o += n;
+    /// Splits a new G-buffer's normals and depths into the kept planes.
+    pub fn set_gbuffer(&mut self, gb: &GBuffer) {
+        let p = &mut self.planes;
+        (p.w, p.h) = (gb.width as usize, gb.height as usize);
+        for (plane, c) in [(&mut p.nx, 0), (&mut p.ny, 1), (&mut p.nz, 2)] {
+            plane.resize(gb.normal.len(), 0.0);
+            plane.par_iter_mut().zip(&gb.normal).for_each(|(o, n)| *o = n[c]);
+        }
+        // DEPTH_NONE stands for "no surface": every δ to it is huge, weight 0.
+        p.z.resize(gb.depth.len(), 0.0);
+        p.z.par_iter_mut().zip(&gb.depth).for_each(|(o, &d)| *o = if d.is_finite() { d } else { DEPTH_NONE });
+        p.inv.resize(gb.depth.len(), 0.0);
+        p.inv.par_iter_mut().zip(&p.z).for_each(|(o, &z)| *o = inv_sigma_z(z));
+    }
+
+    /// The far field of a split signal filtered, the near field added
+    /// back: `filter(e − near) + near` (the filter of `e` when `near` is
+    /// empty), with a `period × period` window on the CPU's best
+    /// [`SimdPath`]. `gb` is the G-buffer of the last
+    /// [`Denoiser::set_gbuffer`] (one of another size is split first).
+    pub fn filter_far(&mut self, e: &[Vec3], near: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
+        self.filter_on(SimdPath::best(), e, near, gb, period)
+    }
+
+    /// [`Denoiser::filter_far`] on a chosen [`SimdPath`] (the baseline where
+    /// the CPU lacks it).
+    pub fn filter_on(&mut self, path: SimdPath, e: &[Vec3], near: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
+        if (self.planes.w, self.planes.h) != (gb.width as usize, gb.height as usize) || self.planes.z.len() != gb.depth.len() {
+            self.set_gbuffer(gb);
+        }
+        let planes = &mut self.planes;
+        planes.period = period;
+        for (plane, c) in [(&mut planes.er, 0), (&mut planes.eg, 1), (&mut planes.eb, 2)] {
+            plane.resize(e.len(), 0.0);
+            if near.is_empty() {
+                plane.par_iter_mut().zip(e).for_each(|(o, v)| *o = v[c]);
+            } else {
+                plane.par_iter_mut().zip(e).zip(near).for_each(|((o, v), n)| *o = v[c] - n[c]);
             }
         }
-    });
-    out
+        let planes = &self.planes;
+        let w = planes.w.max(1);
+        let mut out = vec![Vec3::ZERO; planes.w * planes.h];
+        out.par_chunks_mut(w).enumerate().for_each(|(y, row)| {
+            path.run(FilterRow { p: planes, gb, y, row: &mut *row });
+            if !near.is_empty() {
+                for (o, &n) in row.iter_mut().zip(&near[y * w..]) {
+                    *o += n;
+                }
+            }
+        });
+        out
+    }
+}
+
+/// Filters `e` (one value per pixel) with a `period × period` window, on the
+/// CPU's best [`SimdPath`] (a [`Denoiser`] for this call alone).
+pub fn cross_bilateral(e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
+    cross_bilateral_on(SimdPath::best(), e, gb, period)
+}
+
+/// [`cross_bilateral`] on a chosen [`SimdPath`].
+pub fn cross_bilateral_on(path: SimdPath, e: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
+    Denoiser::new(gb).filter_on(path, e, &[], gb, period)
 }
 
 impl Planes {
-    /// Splits `e − near` (`e` where `near` is empty) and the G-buffer into
-    /// planes (in parallel).
-    fn new(e: &[Vec3], near: &[Vec3], gb: &GBuffer, period: u32) -> Self {
-        let split = |f: fn(Vec3) -> f32, v: &[Vec3]| -> Vec<f32> { v.par_iter().map(|&x| f(x)).collect() };
-        let far = |f: fn(Vec3) -> f32| -> Vec<f32> {
-            if near.is_empty() { split(f, e) } else { e.par_iter().zip(near).map(|(&e, &n)| f(e - n)).collect() }
-        };
-        // DEPTH_NONE stands for "no surface": every δ to it is huge, weight 0.
-        let z: Vec<f32> = gb.depth.par_iter().map(|&d| if d.is_finite() { d } else { DEPTH_NONE }).collect();
-        Planes {
-            er: far(|v| v.x),
-            eg: far(|v| v.y),
-            eb: far(|v| v.z),
-            nx: split(|v| v.x, &gb.normal),
-            ny: split(|v| v.y, &gb.normal),
-            nz: split(|v| v.z, &gb.normal),
-            inv: z.par_iter().map(|&z| inv_sigma_z(z)).collect(),
-            z,
-            w: gb.width as usize,
-            h: gb.height as usize,
-            period,
-        }
+    /// The planes of `e` and the G-buffer (tests).
+    #[cfg(test)]
+    fn new(e: &[Vec3], gb: &GBuffer, period: u32) -> Self {
+        let mut d = Denoiser::new(gb);
+        d.filter_on(SimdPath::Baseline, e, &[], gb, period);
+        d.planes
     }
 
     /// The filtered signal at pixel `i`.
@@ -283,7 +319,7 @@ mod tests {
         let shaded = ctx.shade(&VplSettings { method: VplMethod::None, near_radius: Some(0.0), ..VplSettings::default() }).unwrap();
         let gb = ctx.gbuffer();
         let e = &shaded.irradiance;
-        let planes = Planes::new(e, &[], gb, PERIOD);
+        let planes = Planes::new(e, gb, PERIOD);
         let expected: Vec<Vec3> = (0..e.len()).map(|i| if gb.valid(i) { filter_pixel(&planes, i % 72, i / 72) } else { Vec3::ZERO }).collect();
         let widened = (0..e.len()).filter(|&i| gb.valid(i) && misses_subset(window_sum(&planes, i % 72, i / 72, PERIOD).2, PERIOD)).count();
         assert!(widened > 0 && widened < e.len() / 2, "both window sizes occur ({widened} widened)");
@@ -292,7 +328,7 @@ mod tests {
                 eprintln!("SKIP {path}: this CPU lacks it");
                 continue;
             }
-            let got = cross_bilateral_on(path, e, &[], gb, PERIOD);
+            let got = cross_bilateral_on(path, e, gb, PERIOD);
             for i in 0..e.len() {
                 assert!(
                     (got[i] - expected[i]).abs().max_element() <= 1e-5 * expected[i].max_element().max(1e-6),

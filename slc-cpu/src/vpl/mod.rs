@@ -26,6 +26,7 @@ use crate::gbuffer::render_gbuffer_into;
 use crate::geometry::Geometry;
 use crate::raster::{MapView, Occluders};
 use crate::temporal::Temporal;
+use denoise::Denoiser;
 use glam::Vec3;
 use rayon::prelude::*;
 use shade::{Cull, Glossy, LightList};
@@ -41,6 +42,7 @@ use slc_scene::image::Image;
 use slc_scene::scene::{Camera, PrimaryLight, Scene};
 use slc_scene::temporal::{TemporalSettings, TemporalView};
 use slc_scene::vpl::{GBuffer, PERIOD, Shaded, VplFrame, VplInputs, VplMethod, VplSettings, VplStats, Vpls};
+use std::sync::{Mutex, PoisonError};
 use std::time::Instant;
 use tiling::{NO_RECEIVER, PartTiles, Tiling};
 
@@ -83,25 +85,30 @@ pub struct VplContext {
     /// Each pixel's geometric normal (shadow-ray offsets).
     geometric: Vec<Vec3>,
     direct: Vec<Vec3>,
-    tilings: Tilings,
+    tilings: FromGBuffer,
     base: VplStats,
 }
 
-/// The G-buffer's pixels tiled for the far field (at the default tile
-/// size) and the near field, rebuilt with the G-buffer.
+/// What a frame derives from the G-buffer alone, rebuilt with it: the
+/// pixels tiled for the far field (at the default tile size) and the near
+/// field, and the denoise with its G-buffer planes (behind a lock so that
+/// frames render through `&self`; frames rendered at once take turns at
+/// the filter).
 #[derive(Default)]
-struct Tilings {
+struct FromGBuffer {
     far: Tiling,
     /// The tile size `far` was built for.
     far_tile: usize,
     near: Tiling,
+    denoiser: Mutex<Denoiser>,
 }
 
-impl Tilings {
+impl FromGBuffer {
     fn build(&mut self, gb: &GBuffer) {
         self.far_tile = VplSettings::default().tile as usize;
         self.far.interleaved_into(gb, PERIOD as usize, self.far_tile, SUPER);
         self.near.regions_into(gb, NEAR_REGION, NEAR_TILE);
+        self.denoiser.get_mut().unwrap_or_else(PoisonError::into_inner).set_gbuffer(gb);
     }
 }
 
@@ -115,7 +122,7 @@ impl VplContext {
         let geo = Geometry::new(&scene.triangles);
         let (gbuffer, vpls) = (GBuffer { width, height, ..GBuffer::default() }, Vpls { size: rsm_size, ..Vpls::default() });
         let mut inputs = VplInputs { gbuffer, vpls, min_d2: min_distance * min_distance };
-        let (mut geometric, mut direct, mut tilings) = (Vec::new(), Vec::new(), Tilings::default());
+        let (mut geometric, mut direct, mut tilings) = (Vec::new(), Vec::new(), FromGBuffer::default());
         let base = frame_inputs(scene, &geo, true, &mut inputs, &mut geometric, &mut direct, &mut tilings);
         Ok(VplContext { scene: scene.clone(), geo, inputs, geometric, direct, tilings, base })
     }
@@ -269,7 +276,7 @@ impl VplContext {
                 e
             } else {
                 // The near field is exact: only the interleaved far field is filtered.
-                denoise::cross_bilateral_far(&e, near, gb, PERIOD)
+                self.tilings.denoiser.lock().unwrap_or_else(PoisonError::into_inner).filter_far(&e, near, gb, PERIOD)
             }
         };
         let mut filtered = filter(shaded.irradiance, &shaded.near);
@@ -364,39 +371,31 @@ impl VplContext {
             owned = Tiling::interleaved(gb, p, s.tile as usize, SUPER);
             &owned
         };
-        let mut far = PerReceiver::new(tiling);
         let min_d2 = self.inputs.min_d2;
-        far.evals = tiling
-            .parts
-            .par_iter()
-            .zip(tiling.split(&mut far.out))
-            .zip(tiling.split_glossy(&mut far.spec))
-            .enumerate()
-            .map_init(Scratch::default, |scratch, (sub, ((part, out), spec))| {
-                let (sx, sy) = (sub % p, sub / p);
-                // The subset's VPLs (flux ×64) with their ranges, once per frame.
-                let all = &mut scratch.all;
-                all.clear();
-                // Subset texels in 4×4 blocks, so each CHUNK of 16 consecutive
-                // lights is a small patch of the RSM (spatially coherent).
-                let m = size / p;
-                for by in (0..m).step_by(4) {
-                    for bx in (0..m).step_by(4) {
-                        for (u, v_) in (0..16).map(|k| (bx + k % 4, by + k / 4)).filter(|&(u, v_)| u < m && v_ < m) {
-                            let i = (sy + v_ * p) * size + sx + u * p;
-                            let flux = v.flux[i] * scale;
-                            let (rt2, r2) = light_ranges(cull, params, s, i, flux);
-                            all.push(v.position[i], v.normal[i], flux, rt2, r2);
-                        }
+        let far = PerReceiver::shade_parts(tiling, |sub, part, out, spec, scratch| {
+            let (sx, sy) = (sub % p, sub / p);
+            // The subset's VPLs (flux ×64) with their ranges, once per frame.
+            let all = &mut scratch.all;
+            all.clear();
+            // Subset texels in 4×4 blocks, so each CHUNK of 16 consecutive
+            // lights is a small patch of the RSM (spatially coherent).
+            let m = size / p;
+            for by in (0..m).step_by(4) {
+                for bx in (0..m).step_by(4) {
+                    for (u, v_) in (0..16).map(|k| (bx + k % 4, by + k / 4)).filter(|&(u, v_)| u < m && v_ < m) {
+                        let i = (sy + v_ * p) * size + sx + u * p;
+                        let flux = v.flux[i] * scale;
+                        let (rt2, r2) = light_ranges(cull, params, s, i, flux);
+                        all.push(v.position[i], v.normal[i], flux, rt2, r2);
                     }
                 }
-                all.build_chunks();
-                let all = std::mem::take(&mut scratch.all);
-                let evals = shade_part(part, &all, cull != Cull::None, cull, min_d2, near_r2, out, spec, scratch);
-                scratch.all = all;
-                evals
-            })
-            .sum();
+            }
+            all.build_chunks();
+            let all = std::mem::take(&mut scratch.all);
+            let evals = shade_part(part, &all, cull != Cull::None, cull, min_d2, near_r2, out, spec, scratch);
+            scratch.all = all;
+            evals
+        });
         let near = self.shade_near(near_r2, cull, params, s);
         // Each pixel adds its far field to its near field, in parallel.
         let (irradiance, kept) = (0..w * h)
@@ -458,16 +457,8 @@ impl VplContext {
             }
         }
         all.build_chunks();
-        let mut near = PerReceiver::new(tiling);
         let min_d2 = self.inputs.min_d2;
-        near.evals = tiling
-            .parts
-            .par_iter()
-            .zip(tiling.split(&mut near.out))
-            .zip(tiling.split_glossy(&mut near.spec))
-            .map_init(Scratch::default, |scratch, ((part, out), spec)| shade_part(part, &all, true, near_cull, min_d2, near_r2, out, spec, scratch))
-            .sum();
-        near
+        PerReceiver::shade_parts(tiling, |_, part, out, spec, scratch| shade_part(part, &all, true, near_cull, min_d2, near_r2, out, spec, scratch))
     }
 }
 
@@ -544,6 +535,25 @@ impl PerReceiver {
         PerReceiver { out: vec![(Vec3::ZERO, 0); n], spec: if !tiling.has_glossy() { Vec::new() } else { vec![Vec3::ZERO; n] }, evals: 0 }
     }
 
+    /// Every part `k` of `tiling` shaded by `shade(k, part, out, spec,
+    /// scratch)` in parallel (into its range of the per-receiver buffers,
+    /// with a worker's reused lists; returning its loop evaluations).
+    fn shade_parts(
+        tiling: &Tiling,
+        shade: impl Fn(usize, &PartTiles, &mut [(Vec3, u32)], &mut [Vec3], &mut Scratch) -> u64 + Sync + Send,
+    ) -> PerReceiver {
+        let mut r = PerReceiver::new(tiling);
+        r.evals = tiling
+            .parts
+            .par_iter()
+            .zip(tiling.split(&mut r.out))
+            .zip(tiling.split_glossy(&mut r.spec))
+            .enumerate()
+            .map_init(Scratch::default, |scratch, (k, ((part, out), spec))| shade(k, part, out, spec, scratch))
+            .sum();
+        r
+    }
+
     /// Pixel `i`'s `(irradiance, kept)`; zero where it has no receiver or
     /// nothing was shaded.
     fn at(&self, tiling: &Tiling, i: usize) -> (Vec3, u32) {
@@ -583,11 +593,11 @@ fn light_ranges(cull: Cull, params: &RangeParams, s: &VplSettings, i: usize, flu
     }
 }
 
-/// The method-independent part of a frame: G-buffer and its tilings
-/// (unless `camera_moved` is false), VPLs (RSM) and direct light, rendered
+/// The method-independent part of a frame: G-buffer with its tilings and
+/// denoise planes (unless `camera_moved` is false), VPLs (RSM) and direct light, rendered
 /// into `inputs`, `geometric`, `direct` and `tilings` (memory reused at the
 /// same size), with their times in the returned statistics (G-buffer 0
-/// when not rendered; the tilings count as G-buffer).
+/// when not rendered; what is derived from it counts as G-buffer).
 fn frame_inputs(
     scene: &Scene,
     geo: &Geometry,
@@ -595,7 +605,7 @@ fn frame_inputs(
     inputs: &mut VplInputs,
     geometric: &mut Vec<Vec3>,
     direct: &mut Vec<Vec3>,
-    tilings: &mut Tilings,
+    tilings: &mut FromGBuffer,
 ) -> VplStats {
     let mut base = VplStats::default();
     if camera_moved {
