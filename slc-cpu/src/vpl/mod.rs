@@ -7,6 +7,9 @@
 //! subset's flux scaled by 64) → tiled shading of each sub-image with the
 //! subset's VPL spheres culled per tile ([`shade`]) →
 //! [`denoise::cross_bilateral`] → albedo × (indirect + direct) + emission.
+//! What the shading and the denoise need from the G-buffer alone (the
+//! pixels' tiles with their boxes, the filter's normal and depth planes)
+//! is built once with the G-buffer and counted in its time.
 //!
 //! The settings, G-buffer, VPL and frame types are slc-scene's
 //! ([`slc_scene::vpl`]); [`VplContext`] is the CPU's
@@ -85,7 +88,7 @@ pub struct VplContext {
     /// Each pixel's geometric normal (shadow-ray offsets).
     geometric: Vec<Vec3>,
     direct: Vec<Vec3>,
-    tilings: FromGBuffer,
+    from_gbuffer: FromGBuffer,
     base: VplStats,
 }
 
@@ -122,9 +125,9 @@ impl VplContext {
         let geo = Geometry::new(&scene.triangles);
         let (gbuffer, vpls) = (GBuffer { width, height, ..GBuffer::default() }, Vpls { size: rsm_size, ..Vpls::default() });
         let mut inputs = VplInputs { gbuffer, vpls, min_d2: min_distance * min_distance };
-        let (mut geometric, mut direct, mut tilings) = (Vec::new(), Vec::new(), FromGBuffer::default());
-        let base = frame_inputs(scene, &geo, true, &mut inputs, &mut geometric, &mut direct, &mut tilings);
-        Ok(VplContext { scene: scene.clone(), geo, inputs, geometric, direct, tilings, base })
+        let (mut geometric, mut direct, mut from_gbuffer) = (Vec::new(), Vec::new(), FromGBuffer::default());
+        let base = frame_inputs(scene, &geo, true, &mut inputs, &mut geometric, &mut direct, &mut from_gbuffer);
+        Ok(VplContext { scene: scene.clone(), geo, inputs, geometric, direct, from_gbuffer, base })
     }
 
     /// Renders the G-buffer, the RSM and the direct light again into the
@@ -134,7 +137,7 @@ impl VplContext {
     /// start-up, first touches of memory). The same scene gives the same
     /// buffers.
     pub fn time_inputs(&mut self) -> VplStats {
-        frame_inputs(&self.scene, &self.geo, true, &mut self.inputs, &mut self.geometric, &mut self.direct, &mut self.tilings)
+        frame_inputs(&self.scene, &self.geo, true, &mut self.inputs, &mut self.geometric, &mut self.direct, &mut self.from_gbuffer)
     }
 
     /// Moves or changes the primary light (the CPU twin of the GPU frame's
@@ -145,7 +148,7 @@ impl VplContext {
     pub fn set_primary(&mut self, primary: PrimaryLight) -> Result<VplStats, RenderError> {
         primary.validate().map_err(|e| RenderError::Setting(e.to_string()))?;
         self.scene.primary = primary;
-        let t = frame_inputs(&self.scene, &self.geo, false, &mut self.inputs, &mut self.geometric, &mut self.direct, &mut self.tilings);
+        let t = frame_inputs(&self.scene, &self.geo, false, &mut self.inputs, &mut self.geometric, &mut self.direct, &mut self.from_gbuffer);
         (self.base.rsm_ms, self.base.direct_ms) = (t.rsm_ms, t.direct_ms);
         Ok(t)
     }
@@ -249,7 +252,7 @@ impl VplContext {
     pub fn set_camera(&mut self, camera: Camera) -> Result<VplStats, RenderError> {
         camera.validate().map_err(|e| RenderError::Setting(e.to_string()))?;
         self.scene.camera = camera;
-        let t = frame_inputs(&self.scene, &self.geo, true, &mut self.inputs, &mut self.geometric, &mut self.direct, &mut self.tilings);
+        let t = frame_inputs(&self.scene, &self.geo, true, &mut self.inputs, &mut self.geometric, &mut self.direct, &mut self.from_gbuffer);
         (self.base.gbuffer_ms, self.base.rsm_ms, self.base.direct_ms) = (t.gbuffer_ms, t.rsm_ms, t.direct_ms);
         Ok(t)
     }
@@ -276,7 +279,7 @@ impl VplContext {
                 e
             } else {
                 // The near field is exact: only the interleaved far field is filtered.
-                self.tilings.denoiser.lock().unwrap_or_else(PoisonError::into_inner).filter_far(&e, near, gb, PERIOD)
+                self.from_gbuffer.denoiser.lock().unwrap_or_else(PoisonError::into_inner).filter_far(&e, near, gb, PERIOD)
             }
         };
         let mut filtered = filter(shaded.irradiance, &shaded.near);
@@ -365,8 +368,8 @@ impl VplContext {
         let (w, h) = (gb.width as usize, gb.height as usize);
         let near_r2 = s.near_r2(self.inputs.min_d2);
         let owned;
-        let tiling = if s.tile as usize == self.tilings.far_tile {
-            &self.tilings.far
+        let tiling = if s.tile as usize == self.from_gbuffer.far_tile {
+            &self.from_gbuffer.far
         } else {
             owned = Tiling::interleaved(gb, p, s.tile as usize, SUPER);
             &owned
@@ -401,7 +404,7 @@ impl VplContext {
         let (irradiance, kept) = (0..w * h)
             .into_par_iter()
             .map(|i| {
-                let ((f, kf), (n, kn)) = (far.at(tiling, i), near.at(&self.tilings.near, i));
+                let ((f, kf), (n, kn)) = (far.at(tiling, i), near.at(&self.from_gbuffer.near, i));
                 (f + n, kf + kn)
             })
             .unzip();
@@ -409,7 +412,7 @@ impl VplContext {
         let pixels = |present: bool, value: &(dyn Fn(usize) -> Vec3 + Sync)| -> Vec<Vec3> {
             if present { (0..w * h).into_par_iter().map(value).collect() } else { Vec::new() }
         };
-        let nt = &self.tilings.near;
+        let nt = &self.from_gbuffer.near;
         Fields {
             irradiance,
             near: pixels(!near.out.is_empty(), &|i| near.at(nt, i).0),
@@ -423,7 +426,7 @@ impl VplContext {
     /// The near field of the split ([`slc_core::interleave::vpl_near_weight`])
     /// per receiver of the context's near tiling: [`VplContext::shade_near_in`].
     fn shade_near(&self, near_r2: f32, cull: Cull, params: &RangeParams, s: &VplSettings) -> PerReceiver {
-        self.shade_near_in(&self.tilings.near, near_r2, cull, params, s)
+        self.shade_near_in(&self.from_gbuffer.near, near_r2, cull, params, s)
     }
 
     /// The near field of the split ([`slc_core::interleave::vpl_near_weight`]):
@@ -595,7 +598,7 @@ fn light_ranges(cull: Cull, params: &RangeParams, s: &VplSettings, i: usize, flu
 
 /// The method-independent part of a frame: G-buffer with its tilings and
 /// denoise planes (unless `camera_moved` is false), VPLs (RSM) and direct light, rendered
-/// into `inputs`, `geometric`, `direct` and `tilings` (memory reused at the
+/// into `inputs`, `geometric`, `direct` and `from_gbuffer` (memory reused at the
 /// same size), with their times in the returned statistics (G-buffer 0
 /// when not rendered; what is derived from it counts as G-buffer).
 fn frame_inputs(
@@ -605,13 +608,13 @@ fn frame_inputs(
     inputs: &mut VplInputs,
     geometric: &mut Vec<Vec3>,
     direct: &mut Vec<Vec3>,
-    tilings: &mut FromGBuffer,
+    from_gbuffer: &mut FromGBuffer,
 ) -> VplStats {
     let mut base = VplStats::default();
     if camera_moved {
         let t = Instant::now();
         render_gbuffer_into(scene, geo, &mut inputs.gbuffer, geometric);
-        tilings.build(&inputs.gbuffer);
+        from_gbuffer.build(&inputs.gbuffer);
         base.gbuffer_ms = ms(t);
     }
     let t = Instant::now();
@@ -839,7 +842,7 @@ mod tests {
         let ctx = VplContext::new(&scene, 40, 32, 64, None).unwrap();
         let mut lambert = VplContext::new(&scene, 40, 32, 64, None).unwrap();
         lambert.inputs.gbuffer.specular.clear();
-        lambert.tilings.build(&lambert.inputs.gbuffer);
+        lambert.from_gbuffer.build(&lambert.inputs.gbuffer);
         let gb = ctx.gbuffer();
         for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None, VplMethod::Reference] {
             let s = VplSettings { method, ..VplSettings::default() };
@@ -875,7 +878,7 @@ mod tests {
         let params = s.validate().unwrap();
         let near = |cull, s: &VplSettings| {
             let f = ctx.shade_near(near_r2, cull, &params, s);
-            let (e, kept) = f.per_pixel(&ctx.tilings.near);
+            let (e, kept) = f.per_pixel(&ctx.from_gbuffer.near);
             (e, kept, f.evals)
         };
         let (truth, truth_kept, truth_evals) = near(Cull::None, &s);
