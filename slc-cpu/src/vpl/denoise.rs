@@ -101,19 +101,7 @@ impl Denoiser {
     /// [`Denoiser::filter_far`] on a chosen [`SimdPath`] (the baseline where
     /// the CPU lacks it).
     pub fn filter_on(&mut self, path: SimdPath, e: &[Vec3], near: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
-        if (self.planes.w, self.planes.h) != (gb.width as usize, gb.height as usize) || self.planes.z.len() != gb.depth.len() {
-            self.set_gbuffer(gb);
-        }
-        let planes = &mut self.planes;
-        planes.period = period;
-        for (plane, c) in [(&mut planes.er, 0), (&mut planes.eg, 1), (&mut planes.eb, 2)] {
-            plane.resize(e.len(), 0.0);
-            if near.is_empty() {
-                plane.par_iter_mut().zip(e).for_each(|(o, v)| *o = v[c]);
-            } else {
-                plane.par_iter_mut().zip(e).zip(near).for_each(|((o, v), n)| *o = v[c] - n[c]);
-            }
-        }
+        self.load(e, near, gb, period);
         let planes = &self.planes;
         let w = planes.w.max(1);
         let mut out = vec![Vec3::ZERO; planes.w * planes.h];
@@ -126,6 +114,24 @@ impl Denoiser {
             }
         });
         out
+    }
+
+    /// Writes `e − near` (`e` where `near` is empty) into the signal's
+    /// planes, after splitting `gb` if its size is not the planes'.
+    fn load(&mut self, e: &[Vec3], near: &[Vec3], gb: &GBuffer, period: u32) {
+        if (self.planes.w, self.planes.h) != (gb.width as usize, gb.height as usize) {
+            self.set_gbuffer(gb);
+        }
+        let planes = &mut self.planes;
+        planes.period = period;
+        for (plane, c) in [(&mut planes.er, 0), (&mut planes.eg, 1), (&mut planes.eb, 2)] {
+            plane.resize(e.len(), 0.0);
+            if near.is_empty() {
+                plane.par_iter_mut().zip(e).for_each(|(o, v)| *o = v[c]);
+            } else {
+                plane.par_iter_mut().zip(e).zip(near).for_each(|((o, v), n)| *o = v[c] - n[c]);
+            }
+        }
     }
 }
 
@@ -145,7 +151,7 @@ impl Planes {
     #[cfg(test)]
     fn new(e: &[Vec3], gb: &GBuffer, period: u32) -> Self {
         let mut d = Denoiser::new(gb);
-        d.filter_on(SimdPath::Baseline, e, &[], gb, period);
+        d.load(e, &[], gb, period);
         d.planes
     }
 

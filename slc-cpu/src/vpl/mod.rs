@@ -378,7 +378,7 @@ impl VplContext {
         let far = PerReceiver::shade_parts(tiling, |sub, part, out, spec, scratch| {
             let (sx, sy) = (sub % p, sub / p);
             // The subset's VPLs (flux ×64) with their ranges, once per frame.
-            let all = &mut scratch.all;
+            let Scratch { all, lists } = scratch;
             all.clear();
             // Subset texels in 4×4 blocks, so each CHUNK of 16 consecutive
             // lights is a small patch of the RSM (spatially coherent).
@@ -394,10 +394,7 @@ impl VplContext {
                 }
             }
             all.build_chunks();
-            let all = std::mem::take(&mut scratch.all);
-            let evals = shade_part(part, &all, cull != Cull::None, cull, min_d2, near_r2, out, spec, scratch);
-            scratch.all = all;
-            evals
+            shade_part(part, all, cull != Cull::None, cull, min_d2, near_r2, out, spec, lists)
         });
         let near = self.shade_near(near_r2, cull, params, s);
         // Each pixel adds its far field to its near field, in parallel.
@@ -461,7 +458,9 @@ impl VplContext {
         }
         all.build_chunks();
         let min_d2 = self.inputs.min_d2;
-        PerReceiver::shade_parts(tiling, |_, part, out, spec, scratch| shade_part(part, &all, true, near_cull, min_d2, near_r2, out, spec, scratch))
+        PerReceiver::shade_parts(tiling, |_, part, out, spec, scratch| {
+            shade_part(part, &all, true, near_cull, min_d2, near_r2, out, spec, &mut scratch.lists)
+        })
     }
 }
 
@@ -482,9 +481,9 @@ fn shade_part(
     near_r2: f32,
     out: &mut [(Vec3, u32)],
     spec: &mut [Vec3],
-    scratch: &mut Scratch,
+    lists: &mut CullLists,
 ) -> u64 {
-    let Scratch { coarse, fine, hits, shaded, .. } = scratch;
+    let CullLists { coarse, fine, hits, shaded } = lists;
     let mut evals = 0u64;
     for group in &part.groups {
         if cull_lists {
@@ -510,10 +509,17 @@ fn shade_part(
     evals
 }
 
-/// One worker's reused lists for [`shade_part`].
+/// One worker's reused memory: a part's own light list (the far field's
+/// subset) and [`shade_part`]'s lists.
 #[derive(Default)]
 struct Scratch {
     all: LightList,
+    lists: CullLists,
+}
+
+/// [`shade_part`]'s culled lists, hit indices and loop results, reused.
+#[derive(Default)]
+struct CullLists {
     coarse: LightList,
     fine: LightList,
     hits: Vec<u32>,
