@@ -355,10 +355,10 @@ impl<const MODE: u8> pulp::WithSimd for ShadeOp<'_, MODE> {
 
 /// The per-VPL term: irradiance per unit flux at the receiver `(x, n)`
 /// from the VPL at `p` with normal `nl`, the Lambertian transfer
-/// [`slc_core::light::vpl_transfer`]. The one place a receiver's BRDF
-/// enters the loop: a view-dependent BRDF replaces this function (and the
-/// flux it multiplies); culling and the near/far partition are
-/// [`cull_share`]'s.
+/// [`slc_core::light::vpl_transfer`]: irradiance, so the receiver's
+/// diffuse albedo is applied after the denoise and a specular lobe's rest
+/// of the BRDF by [`shade_specular`] over the same terms; culling and the
+/// near/far partition are [`cull_share`]'s.
 #[inline(always)]
 fn transfer(p: Vec3, nl: Vec3, x: Vec3, n: Vec3, min_d2: f32) -> f32 {
     vpl_transfer(nl, n, x - p, min_d2)
@@ -506,18 +506,14 @@ fn specular_impl<const MODE: u8>(list: &LightList, g: &Glossy, min_d2: f32, near
     let mut s = Vec3::ZERO;
     for j in 0..list.len() {
         let p = Vec3::new(list.px[j], list.py[j], list.pz[j]);
-        let v = g.x - p;
-        let d2 = v.x * v.x + v.y * v.y + v.z * v.z;
-        let share = cull_share::<MODE>(list.rt2[j], list.r2[j], d2, near_r2);
-        if share <= 0.0 {
-            continue;
-        }
-        let t = transfer(p, Vec3::new(list.nx[j], list.ny[j], list.nz[j]), g.x, g.n, min_d2);
-        if t <= 0.0 {
+        // The irradiance loop's own term: the same keep test, share and
+        // transfer; skipped where it is 0 (culled, or facing away).
+        let (wt, _) = term::<MODE>(p, Vec3::new(list.nx[j], list.ny[j], list.nz[j]), list.rt2[j], list.r2[j], g.x, g.n, min_d2, near_r2);
+        if wt <= 0.0 {
             continue;
         }
         let flux = Vec3::new(list.fr[j], list.fg[j], list.fb[j]);
-        s += flux * g.correction(-v.normalize()) * (t * share);
+        s += flux * g.correction((p - g.x).normalize()) * wt;
     }
     s
 }
