@@ -45,7 +45,7 @@ fuzz_target!(|i: Input| {
         output_format: if i.rgba32 { OutputFormat::Rgba32Float } else { OutputFormat::Rgba16Float },
         shadows: i.shadows,
         surface: [SurfaceSource::Position, SurfaceSource::Depth, SurfaceSource::R32Depth][i.surface as usize % 3],
-        direct_output: [DirectOutput::Irradiance, DirectOutput::Radiance, DirectOutput::Split][i.direct_output as usize % 3],
+        direct_output: [DirectOutput::Irradiance, DirectOutput::Radiance, DirectOutput::Split, DirectOutput::BevyRadiance][i.direct_output as usize % 4],
         glossy: i.glossy,
         motion_vectors: i.motion_vectors,
     };

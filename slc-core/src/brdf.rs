@@ -319,6 +319,61 @@ crate::shared! {
         }
         return p_spec * ggx_vndf_pdf(onb_to_local(n, v), onb_to_local(n, l), alpha) + (1.0 - p_spec) * pd;
     }
+
+    /// Bevy's GGX `α` of a perceptual roughness (`perceptualRoughnessToRoughness`
+    /// in bevy_pbr 0.20's `pbr_lighting.wesl`): clamped to `[0.089, 1]`, squared.
+    pub fn bevy_alpha(perceptual: f32) -> f32 {
+        let r: f32 = clamp(perceptual, 0.089, 1.0);
+        return r * r;
+    }
+
+    /// `F_ab.x + F_ab.y` of Bevy's analytic split-sum environment BRDF
+    /// (`F_AB` without `DFG_LUT`: Karis 2014's polynomial fit, "Physically
+    /// Based Shading on Mobile") at perceptual roughness `r` and `n·v`: the
+    /// specular lobe's directional albedo for `F0 = 1`, which Bevy's
+    /// multiple-scattering compensation divides by.
+    pub fn bevy_dfg(r: f32, n_v: f32) -> f32 {
+        let rx: f32 = 1.0 - r;
+        let a004: f32 = min(rx * rx, exp2(-9.28 * n_v)) * rx + (0.0425 - 0.0275 * r);
+        let x: f32 = max(1.04 - 0.572 * r - 1.04 * a004, 0.00005);
+        let y: f32 = max(0.022 * r - 0.04 + 1.04 * a004, 0.00005);
+        return x + y;
+    }
+
+    /// Bevy `StandardMaterial`'s BRDF `f(v, l)` for a point light of
+    /// radius 0 (bevy_pbr 0.20's `point_light` in
+    /// `pbr_lighting.wesl`, the Filament model): Burley's diffuse
+    /// `(1 − m)·b/π · S(n·l) S(n·v)` with `S(c) = 1 + (F90 − 1)(1 − c)⁵`,
+    /// `F90 = ½ + 2α(l·h)²`, plus GGX `D·V·F` with Bevy's Fresnel
+    /// (`F0 = mix(0.16·reflectance², b, m)`, `F90 = saturate(50·0.33·ΣF0)`)
+    /// and its multiple-scattering compensation `1 + F0(1/dfg − 1)`
+    /// ([`bevy_dfg`]). `r` is the perceptual roughness as Bevy stores it
+    /// (clamped here as Bevy does), `n·v` is clamped to `10⁻⁴` as Bevy does;
+    /// 0 for `l` below `n`. Bevy's deferred renderer reads `dfg` from a
+    /// lookup table instead of the fit (a difference of well under 1% of
+    /// the specular lobe at `F0 = 0.04`).
+    pub fn bevy_brdf(base: vec3f, metallic: f32, r: f32, reflectance: f32, n: vec3f, v: vec3f, l: vec3f) -> vec3f {
+        let n_l: f32 = saturate(dot(n, l));
+        if n_l <= 0.0 {
+            return vec3f(0.0, 0.0, 0.0);
+        }
+        let alpha: f32 = bevy_alpha(r);
+        let n_v: f32 = max(dot(n, v), 0.0001);
+        let h: vec3f = normalize(l + v);
+        let n_h: f32 = saturate(dot(n, h));
+        let l_h: f32 = saturate(dot(l, h));
+        let f90_d: f32 = 0.5 + 2.0 * alpha * l_h * l_h;
+        let burley: f32 = fresnel_schlick(vec3f(1.0, 1.0, 1.0), f90_d, n_l).x * fresnel_schlick(vec3f(1.0, 1.0, 1.0), f90_d, n_v).x * INV_PI;
+        let f0_d: f32 = 0.16 * reflectance * reflectance;
+        let f0: vec3f = vec3f(f0_d, f0_d, f0_d) * (1.0 - metallic) + base * metallic;
+        let f90: f32 = saturate((f0.x + f0.y + f0.z) * 16.5);
+        let d: f32 = ggx_d(n_h, 1.0 - n_h * n_h, alpha);
+        let a2: f32 = alpha * alpha;
+        let vis: f32 = 0.5 / (n_l * sqrt((n_v - a2 * n_v) * n_v + a2) + n_v * sqrt((n_l - a2 * n_l) * n_l + a2));
+        let comp: vec3f = vec3f(1.0, 1.0, 1.0) + f0 * (1.0 / bevy_dfg(r, n_v) - 1.0);
+        let spec: vec3f = fresnel_schlick(f0, f90, l_h) * comp * (d * vis);
+        return base * ((1.0 - metallic) * burley) + spec;
+    }
 }
 
 #[cfg(test)]
@@ -365,6 +420,54 @@ mod tests {
 
     fn view(cos: f32) -> Vec3 {
         Vec3::new((1.0 - cos * cos).sqrt(), 0.0, cos)
+    }
+
+    /// Bevy's BRDF at normal incidence (`n = v = l`), worked by hand from
+    /// bevy_pbr 0.20's `pbr_lighting.wesl`: Burley's factors are 1, so the
+    /// diffuse lobe is `(1 − m)·b/π`; `D = 1/(πα²)`, `V = ¼`, `F = F0`, and
+    /// the compensation `1 + F0(1/dfg − 1)` with `dfg(1, 1) = 0.45245`.
+    #[test]
+    fn bevy_brdf_at_normal_incidence() {
+        let n = Vec3::Z;
+        let base = Vec3::new(0.8, 0.5, 0.2);
+        let pi = core::f64::consts::PI;
+        assert!((bevy_dfg(1.0, 1.0) as f64 - 0.45245).abs() < 1e-6);
+        for (m, refl) in [(0.0f32, 0.5f32), (0.0, 1.0), (1.0, 0.5), (0.4, 0.3)] {
+            let f = bevy_brdf(base, m, 1.0, refl, n, n, n);
+            for c in 0..3 {
+                let b = base[c] as f64;
+                let f0 = 0.16 * (refl as f64).powi(2) * (1.0 - m as f64) + b * m as f64;
+                let want = (1.0 - m as f64) * b / pi + f0 * (1.0 + f0 * (1.0 / 0.45245 - 1.0)) / pi * 0.25;
+                assert!((f[c] as f64 - want).abs() < 1e-5 * want.max(1e-3), "m {m} refl {refl}: {} vs {want}", f[c]);
+            }
+        }
+        // Perceptual roughness below Bevy's clamp 0.089 renders at 0.089
+        // (only the compensation sees the unclamped value, as in Bevy).
+        let l = Vec3::new(0.3, 0.0, 1.0).normalize();
+        let v = Vec3::new(-0.3, 0.0, 1.0).normalize();
+        let (f, g) = (bevy_brdf(base, 0.0, 0.0, 0.5, n, v, l), bevy_brdf(base, 0.0, 0.089, 0.5, n, v, l));
+        assert!((f - g).abs().max_element() < 1e-2 * g.max_element(), "{f} vs {g}");
+    }
+
+    /// Bevy's BRDF is finite (never NaN) at the edges: smooth and rough,
+    /// grazing, views below the surface, lights below it (0).
+    #[test]
+    fn bevy_brdf_edge_cases_are_finite() {
+        let n = Vec3::Z;
+        let dirs = [Vec3::Z, Vec3::new(1.0, 0.0, 1e-6).normalize(), Vec3::new(0.0, 1.0, -0.5).normalize(), Vec3::new(-1.0, 0.0, 0.0)];
+        for r in [0.0, 0.089, 0.5, 1.0] {
+            for m in [0.0, 1.0] {
+                for &v in &dirs {
+                    for &l in &dirs {
+                        let f = bevy_brdf(Vec3::ONE, m, r, 0.5, n, v, l);
+                        assert!(f.is_finite() && f.min_element() >= 0.0, "r {r} m {m} v {v} l {l}: {f}");
+                        if l.z <= 0.0 {
+                            assert_eq!(f, Vec3::ZERO);
+                        }
+                    }
+                }
+            }
+        }
     }
 
     #[test]

@@ -215,14 +215,23 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
                 out(
                     3,
                     match f.direct_output {
-                        DirectOutput::Radiance => "outgoing radiance (rgb), in-range lights (a); 0 where no surface is",
+                        DirectOutput::Radiance | DirectOutput::BevyRadiance => "outgoing radiance (rgb), in-range lights (a); 0 where no surface is",
                         _ => "irradiance (rgb), in-range lights (a); 0 where no surface is",
                     },
                 ),
             ];
             if f.direct_output != DirectOutput::Irradiance {
                 v.push(texture(4, "base_color_tex", "linear base colour (rgb)", "engine (G-buffer)"));
-                v.push(texture(5, "metal_rough_tex", "glTF metallic-roughness: roughness (g), metallic (b)", "engine (G-buffer)"));
+                v.push(texture(
+                    5,
+                    "metal_rough_tex",
+                    if f.direct_output == DirectOutput::BevyRadiance {
+                        "perceptual roughness (g), metallic (b), Bevy's reflectance (a)"
+                    } else {
+                        "glTF metallic-roughness: roughness (g), metallic (b)"
+                    },
+                    "engine (G-buffer)",
+                ));
             }
             if f.direct_output == DirectOutput::Split {
                 v.push(b(

@@ -367,6 +367,10 @@ pub enum DirectOutput {
     /// Irradiance (rgb, a: lights in range) and, in a second target, the
     /// specular lobe's outgoing radiance (rgb).
     Split,
+    /// Outgoing radiance toward the eye under Bevy `StandardMaterial`'s
+    /// BRDF (slc-core's `brdf::bevy_brdf`; the material's alpha channel is
+    /// its `reflectance`), and the lights in range (a).
+    BevyRadiance,
 }
 
 /// What a kernel is specialised to.
@@ -617,7 +621,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
         shadows => features.shadows,
         glossy => features.glossy,
         motion => features.motion_vectors,
-        pbr => match features.direct_output { DirectOutput::Irradiance => "none", DirectOutput::Radiance => "radiance", DirectOutput::Split => "split" },
+        pbr => match features.direct_output { DirectOutput::Irradiance => "none", DirectOutput::Radiance => "radiance", DirectOutput::Split => "split", DirectOutput::BevyRadiance => "bevy" },
         surface => match features.surface { SurfaceSource::Position => "position", SurfaceSource::Depth => "depth", SurfaceSource::R32Depth => "r32" },
         bindings => bindings::declarations(&bindings::bindings(kernel, features)),
         engine => slc_core::wgsl::translate(engine::WGSL),

@@ -130,7 +130,9 @@ fn every_direct_light_variant_validates() {
     for bits in 1..32 {
         for selection in [Selection::Reservoir, Selection::Weighted, Selection::All] {
             for surface in [SurfaceSource::Position, SurfaceSource::Depth, SurfaceSource::R32Depth] {
-                for (k, direct_output) in [(1, DirectOutput::Irradiance), (8, DirectOutput::Radiance), (8, DirectOutput::Split)] {
+                for (k, direct_output) in
+                    [(1, DirectOutput::Irradiance), (8, DirectOutput::Radiance), (8, DirectOutput::Split), (8, DirectOutput::BevyRadiance)]
+                {
                     let f = Features { lights: LightSet::from_bits(bits), selection, surface, reservoir_k: k, direct_output, ..Features::default() };
                     generate_module(Kernel::DirectLight, &f).unwrap_or_else(|e| panic!("{f:?}: {e}"));
                     n += 1;
@@ -138,7 +140,7 @@ fn every_direct_light_variant_validates() {
             }
         }
     }
-    assert_eq!(n, 31 * 3 * 3 * 3);
+    assert_eq!(n, 31 * 3 * 3 * 4);
     let bad = Features { selection: Selection::Power, ..Features::default() };
     assert!(matches!(generate_module(Kernel::DirectLight, &bad), Err(ShaderError::Unsupported(_))));
 }

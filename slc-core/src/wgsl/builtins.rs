@@ -148,6 +148,11 @@ pub fn sqrt(x: f32) -> f32 {
 pub fn pow(x: f32, y: f32) -> f32 {
     libm::powf(x, y)
 }
+/// WGSL `exp2`.
+#[inline]
+pub fn exp2(x: f32) -> f32 {
+    libm::exp2f(x)
+}
 /// WGSL `floor`.
 #[inline]
 pub fn floor(x: f32) -> f32 {

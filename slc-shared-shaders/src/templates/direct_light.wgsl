@@ -15,7 +15,8 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
 // range reaches it (BSH traversal), {% if selection == "weighted" %}{{ k }} importance-weighted picks among them{% elif selection == "all" %}every one of them (exact given ξ){% else %}{{ k }} uniform picks among them (Algorithm R){% endif %},
 // each sampled (a point on a triangle), RR-tested at that point with its own
 // range and weighted by 1/p and its selection weight. Output: {% if pbr == "radiance" %}outgoing radiance
-// under the G-buffer's glTF metallic-roughness material{% elif pbr == "split" %}irradiance, and the
+// under the G-buffer's glTF metallic-roughness material{% elif pbr == "bevy" %}outgoing radiance under
+// Bevy StandardMaterial's BRDF of the G-buffer's material{% elif pbr == "split" %}irradiance, and the
 // specular radiance of the G-buffer's material in specular_tex{% else %}irradiance{% endif %} (rgb) and the number of
 // in-range lights (a); zero where no surface is.
 
@@ -26,12 +27,15 @@ struct Shaded {
     specular: vec3f,
 }
 
-/// The surface's material (glTF metallic-roughness) and view.
+/// The surface's material (glTF metallic-roughness, or Bevy's with its
+/// perceptual roughness and reflectance) and view.
 struct Material {
     base: vec3f,
     metallic: f32,
     alpha: f32,
     v: vec3f,
+    roughness: f32,
+    reflectance: f32,
 }
 
 /// One pick of light `li` at `x` (normal `n`) with selection weight `w`,
@@ -42,7 +46,11 @@ fn shade_pick(li: u32, x: vec3f, n: vec3f, m: Material, s2: f32, w: f32, u1: f32
     s.e = c.e;
     s.diffuse = vec3f(0.0);
     s.specular = vec3f(0.0);
-{% if pbr != "none" %}
+{% if pbr == "bevy" %}
+    if c.cos_x > 0.0 {
+        s.diffuse = bevy_brdf(m.base, m.metallic, m.roughness, m.reflectance, n, m.v, normalize(c.y - x)) * c.e;
+    }
+{% elif pbr != "none" %}
     if c.cos_x > 0.0 {
         let l = normalize(c.y - x);
         s.diffuse = diffuse_brdf(m.base, m.metallic, view.f0_d, view.f90_d, half_cosine(m.v, l)) * c.e;
@@ -82,8 +90,16 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var r = n;
 {% if pbr != "none" %}
     let mr = textureLoad(metal_rough_tex, texel, 0);
-    m = Material(textureLoad(base_color_tex, texel, 0).xyz, saturate(mr.z), ggx_alpha(saturate(mr.y)), normalize(view.eye - x));
+{% if pbr == "bevy" %}
+    // Selection sees Bevy's material through the glTF lobe of the same F0
+    // (any importance keeps the estimate unbiased).
+    let f0_d = 0.16 * mr.w * mr.w;
+    m = Material(textureLoad(base_color_tex, texel, 0).xyz, saturate(mr.z), bevy_alpha(mr.y), normalize(view.eye - x), mr.y, mr.w);
+    lobe = receiver_lobe(m.base, m.metallic, vec3f(f0_d), 1.0, m.alpha, dot(n, m.v));
+{% else %}
+    m = Material(textureLoad(base_color_tex, texel, 0).xyz, saturate(mr.z), ggx_alpha(saturate(mr.y)), normalize(view.eye - x), mr.y, 0.0);
     lobe = receiver_lobe(m.base, m.metallic, view.f0_d, view.f90_d, m.alpha, dot(n, m.v));
+{% endif %}
     r = mirror_dir(n, m.v);
 {% endif %}
     let s2 = range_scale(lobe);
@@ -122,7 +138,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     }
     let count = picks.n;
 {% endif %}
-{% if pbr == "radiance" %}
+{% if pbr == "radiance" or pbr == "bevy" %}
     textureStore(out_tex, texel, vec4f(t.diffuse + t.specular, f32(count)));
 {% else %}
     textureStore(out_tex, texel, vec4f(t.e, f32(count)));

@@ -147,6 +147,12 @@ pub enum DirectOutputs {
     /// Irradiance into the output and the specular lobe's outgoing
     /// radiance into [`DirectInputs::specular`].
     Split(Dielectric),
+    /// Outgoing radiance toward the eye under Bevy `StandardMaterial`'s
+    /// BRDF (`slc_core::brdf::bevy_brdf`: Burley diffuse, GGX with Bevy's
+    /// Fresnel and multiple-scattering compensation), and the lights in
+    /// range (a); the metallic-roughness input's alpha holds Bevy's
+    /// `reflectance` (dielectric `F0 = 0.16·reflectance²`).
+    BevyRadiance,
 }
 
 /// The G-buffer's glTF metallic-roughness material (see the module table).
@@ -277,6 +283,7 @@ impl DirectPass {
         }
         let direct_output = match desc.outputs {
             DirectOutputs::Irradiance => DirectOutput::Irradiance,
+            DirectOutputs::BevyRadiance => DirectOutput::BevyRadiance,
             DirectOutputs::Radiance(d) | DirectOutputs::Split(d) => {
                 if !(d.f0.is_finite() && d.f0.min_element() >= 0.0 && d.f90.is_finite() && d.f90 >= 0.0) {
                     return Err(GpuError::Setting(format!("direct pass: dielectric F0 {} and F90 {} must be finite and non-negative", d.f0, d.f90)));
@@ -389,6 +396,7 @@ impl DirectPass {
         let missing = |name, what: &str| GpuError::Binding { name, expected: what.into(), found: "none".into() };
         let (material, split) = match self.desc.outputs {
             DirectOutputs::Irradiance => (None, false),
+            DirectOutputs::BevyRadiance => (Some(Dielectric::default()), false),
             DirectOutputs::Radiance(d) => (Some(d), false),
             DirectOutputs::Split(d) => (Some(d), true),
         };
