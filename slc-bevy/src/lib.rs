@@ -1,0 +1,459 @@
+//! Bevy 0.20 plugin: Bevy's point lights shaded by stochastic light culling
+//! (Tokuyoshi & Harada, JCGT 2016), with no range cut-off.
+//!
+//! Bevy's clustered renderer gives every [`PointLight`] a hard `range`
+//! (20 m by default): beyond it the light adds nothing, so a scene lit by
+//! many lights darkens. slc gives each light a *random* range every frame,
+//! scaled so that the expectation over frames is the unbounded
+//! inverse-square light, and shades only the lights whose range reaches a
+//! pixel (slc-wgpu's [`DirectPass`] on Bevy's own device and G-buffer).
+//!
+//! ```no_run
+//! use bevy::prelude::*;
+//! use slc_bevy::{SlcCamera, SlcLight, SlcPlugin};
+//!
+//! fn setup(mut commands: Commands) {
+//!     // The camera: HDR, deferred G-buffer and depth prepass, no MSAA (required by SlcCamera).
+//!     commands.spawn((Camera3d::default(), SlcCamera::default(), Transform::from_xyz(0.0, 8.0, 20.0)));
+//!     // A light slc takes over: Bevy's clustered pass no longer sees it.
+//!     commands.spawn((PointLight { intensity: 2e5, ..default() }, SlcLight, Transform::from_xyz(0.0, 3.0, 0.0)));
+//! }
+//!
+//! App::new()
+//!     .add_plugins((DefaultPlugins, SlcPlugin))
+//!     // slc shades Bevy's deferred G-buffer: opaque materials render deferred.
+//!     .insert_resource(bevy::pbr::DefaultOpaqueRendererMethod::deferred())
+//!     .add_systems(Startup, setup)
+//!     .run();
+//! ```
+//!
+//! **What slc takes over**: every entity with [`PointLight`] and [`SlcLight`]
+//! (the marker puts the light on no render layer, `RenderLayers::none()`,
+//! so Bevy's own lighting, clustering and shadow maps skip it; its `range`
+//! is ignored). Lights move, spawn and despawn freely: they are read every
+//! frame, the light hierarchy refitted when their number is unchanged and
+//! rebuilt when it changes (`O(n)` CPU per frame).
+//!
+//! **How it shades**: at every pixel of a camera with [`SlcCamera`], after
+//! Bevy's opaque (deferred lighting) pass and before transparents and
+//! tonemapping: (1) Bevy's deferred G-buffer is unpacked into normal, base
+//! colour and metallic-roughness-reflectance textures (`unpack.wgsl`,
+//! Bevy's packing, `bevy_pbr::deferred::functions`); (2) slc's direct pass
+//! picks [`SlcCamera::picks`] lights among those whose random range reaches
+//! the pixel, importance-weighted, and shades them with Bevy
+//! `StandardMaterial`'s BRDF (`slc_core::brdf::bevy_brdf`: Burley diffuse,
+//! GGX with Bevy's Fresnel and multiple-scattering compensation) times
+//! Bevy's light units (`intensity` in lumens, `/4π` to candela, times the
+//! camera's exposure); (3) the result is added into the view target.
+//!
+//! **Not applied**: shadows (slc's lights are unshadowed, as the direct
+//! pass documents), the light's `radius` (a point light), clearcoat,
+//! anisotropy and transmission, spot lights (Bevy's cone falloff differs
+//! from slc's spot profile; they stay Bevy's), forward-rendered materials
+//! (only the deferred G-buffer is read). A single frame is noisy by design
+//! (SLC's random ranges and the picks); accumulate over frames (TAA, or
+//! slc-wgpu's temporal pass) for a converged image.
+//!
+//! **Requirements** (checked; a camera that lacks them is skipped and
+//! reported in [`SlcStatus`]): the camera is `Hdr` with `Msaa::Off`,
+//! `DepthPrepass` and `DeferredPrepass` ([`SlcCamera`] requires them).
+
+use bevy::camera::Hdr;
+use bevy::camera::visibility::RenderLayers;
+use bevy::core_pipeline::Core3d;
+use bevy::core_pipeline::core_3d::{main_opaque_pass_3d, main_transparent_pass_3d};
+use bevy::core_pipeline::prepass::{DeferredPrepass, DepthPrepass, ViewPrepassTextures};
+use bevy::prelude::*;
+use bevy::render::camera::ExtractedCamera;
+use bevy::render::extract_component::{ExtractComponent, ExtractComponentPlugin};
+use bevy::render::renderer::{RenderContext, RenderDevice, RenderQueue, ViewQuery};
+use bevy::render::sync_world::MainEntity;
+use bevy::render::view::{ExtractedView, Msaa, ViewTarget};
+use bevy::render::{Extract, ExtractSchedule, Render, RenderApp, RenderStartup, RenderSystems};
+use slc_wgpu::passes::{DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, MaterialInputs};
+use slc_wgpu::{Culling, GBuffer, GpuContext, Light, LightSet, PointLight as SlcPoint, RangeParams, Surface, SurfaceDesc};
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex};
+
+/// Adds slc's light culling to every camera with [`SlcCamera`].
+pub struct SlcPlugin;
+
+/// slc's settings on a 3-D camera: the lights with [`SlcLight`] are shaded
+/// for it by stochastic light culling.
+#[derive(Component, Clone, Copy, Debug, PartialEq, ExtractComponent)]
+#[extract_app(RenderApp)]
+#[require(Hdr, DepthPrepass, DeferredPrepass, Msaa::Off)]
+pub struct SlcCamera {
+    /// Shade slc's lights (off: they add nothing, Bevy's own lights stay).
+    pub enabled: bool,
+    /// SLC's error bound ε, in the camera's exposed radiance: how much one
+    /// light's random range may add to a Lambertian pixel's standard
+    /// deviation (JCGT 2016, eq. 7). Smaller: larger ranges, more lights
+    /// per pixel, less noise.
+    pub error_bound: f32,
+    /// Importance-weighted picks per pixel among the lights in range
+    /// (`1..=64`).
+    pub picks: u32,
+    /// Seed of the random ranges and picks (the frame number varies them
+    /// every frame).
+    pub seed: u32,
+}
+
+impl Default for SlcCamera {
+    /// On, ε = 0.01, 8 picks, seed 1.
+    fn default() -> Self {
+        SlcCamera { enabled: true, error_bound: 0.01, picks: 8, seed: 1 }
+    }
+}
+
+/// Marks a [`PointLight`] that slc shades instead of Bevy: it is put on no
+/// render layer (`RenderLayers::none()`, replacing any it had), so Bevy's
+/// clustered lighting and shadows skip it, and its `range` is ignored
+/// (slc's ranges are random and unbiased). Removing the marker removes the
+/// light's `RenderLayers`: Bevy lights it again.
+#[derive(Component, Clone, Copy, Debug, Default)]
+pub struct SlcLight;
+
+/// What the render world last reported, per camera (main-world entity):
+/// `Ok(frames shaded)` or why a camera was skipped. Shared with the render
+/// world; read it from the main world.
+#[derive(Resource, Clone, Default)]
+pub struct SlcStatus(pub Arc<Mutex<HashMap<Entity, Result<u64, String>>>>);
+
+impl SlcStatus {
+    /// The report for the main-world camera `camera`.
+    pub fn get(&self, camera: Entity) -> Option<Result<u64, String>> {
+        self.0.lock().ok()?.get(&camera).cloned()
+    }
+}
+
+impl Plugin for SlcPlugin {
+    fn build(&self, app: &mut App) {
+        let status = SlcStatus::default();
+        app.insert_resource(status.clone());
+        app.add_plugins(ExtractComponentPlugin::<SlcCamera>::default());
+        app.add_observer(|ev: On<Add<SlcLight>>, mut commands: Commands| {
+            commands.entity(ev.entity).insert(RenderLayers::none());
+        });
+        app.add_observer(|ev: On<Remove<SlcLight>>, mut commands: Commands| {
+            // A despawn also removes the marker: nothing to do then.
+            commands.entity(ev.entity).try_remove::<RenderLayers>();
+        });
+        let Some(render_app) = app.get_sub_app_mut(RenderApp) else { return };
+        render_app
+            .insert_resource(status)
+            .init_resource::<ExtractedLights>()
+            .init_resource::<Views>()
+            .add_systems(RenderStartup, init_gpu)
+            .add_systems(ExtractSchedule, extract_lights)
+            .add_systems(Render, prepare_views.in_set(RenderSystems::PrepareResources))
+            .add_systems(Core3d, shade_view.after(main_opaque_pass_3d).before(main_transparent_pass_3d));
+    }
+}
+
+/// The lights slc shades this frame: position and RGB luminous intensity
+/// (candela: Bevy's lumens / 4π), before the camera's exposure.
+#[derive(Resource, Default)]
+struct ExtractedLights(Vec<(glam::Vec3, glam::Vec3)>);
+
+fn extract_lights(mut out: ResMut<ExtractedLights>, lights: Extract<Query<(&PointLight, &GlobalTransform), With<SlcLight>>>) {
+    out.0.clear();
+    for (light, transform) in &lights {
+        let p = transform.translation();
+        let c = LinearRgba::from(light.color);
+        let cd = light.intensity / (4.0 * std::f32::consts::PI);
+        out.0.push((glam::Vec3::new(p.x, p.y, p.z), glam::Vec3::new(c.red, c.green, c.blue) * cd));
+    }
+}
+
+/// The textures a view's G-buffer is unpacked into, and slc's output.
+const GBUFFER_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+
+/// The main texture of an `Hdr` camera.
+const HDR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+
+/// Device objects shared by every view.
+#[derive(Resource)]
+struct Gpu {
+    ctx: GpuContext,
+    unpack: wgpu::ComputePipeline,
+    composite: wgpu::RenderPipeline,
+}
+
+fn init_gpu(mut commands: Commands, device: Res<RenderDevice>, queue: Res<RenderQueue>) {
+    let device: wgpu::Device = device.wgpu_device().clone();
+    let queue: wgpu::Queue = (**queue).clone();
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("slc-bevy unpack and composite"),
+        source: wgpu::ShaderSource::Wgsl(include_str!("unpack.wgsl").into()),
+    });
+    let unpack = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: Some("slc-bevy unpack"),
+        layout: None,
+        module: &module,
+        entry_point: Some("unpack"),
+        compilation_options: Default::default(),
+        cache: None,
+    });
+    let composite = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some("slc-bevy composite"),
+        layout: None,
+        vertex: wgpu::VertexState { module: &module, entry_point: Some("fullscreen"), compilation_options: Default::default(), buffers: &[] },
+        primitive: wgpu::PrimitiveState::default(),
+        depth_stencil: None,
+        multisample: wgpu::MultisampleState::default(),
+        fragment: Some(wgpu::FragmentState {
+            module: &module,
+            entry_point: Some("composite"),
+            compilation_options: Default::default(),
+            targets: &[Some(wgpu::ColorTargetState {
+                format: HDR_FORMAT,
+                blend: Some(wgpu::BlendState {
+                    color: wgpu::BlendComponent {
+                        src_factor: wgpu::BlendFactor::One,
+                        dst_factor: wgpu::BlendFactor::One,
+                        operation: wgpu::BlendOperation::Add,
+                    },
+                    alpha: wgpu::BlendComponent {
+                        src_factor: wgpu::BlendFactor::Zero,
+                        dst_factor: wgpu::BlendFactor::One,
+                        operation: wgpu::BlendOperation::Add,
+                    },
+                }),
+                write_mask: wgpu::ColorWrites::ALL,
+            })],
+        }),
+        multiview_mask: None,
+        cache: None,
+    });
+    commands.insert_resource(Gpu { ctx: GpuContext::from_device(device, queue), unpack, composite });
+}
+
+/// One camera's slc state.
+struct View {
+    pass: DirectPass,
+    size: (u32, u32),
+    lights: usize,
+    normal: wgpu::TextureView,
+    base: wgpu::TextureView,
+    material: wgpu::TextureView,
+    output: wgpu::TextureView,
+    frame: u32,
+    inv_view_proj: glam::Mat4,
+    eye: glam::Vec3,
+    settings: SlcCamera,
+    main: Entity,
+}
+
+/// Per render-world camera entity.
+#[derive(Resource, Default)]
+struct Views(HashMap<Entity, View>);
+
+fn texture(device: &wgpu::Device, (w, h): (u32, u32), label: &str, usage: wgpu::TextureUsages) -> wgpu::TextureView {
+    device
+        .create_texture(&wgpu::TextureDescriptor {
+            label: Some(label),
+            size: wgpu::Extent3d { width: w, height: h, depth_or_array_layers: 1 },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: GBUFFER_FORMAT,
+            usage,
+            view_formats: &[],
+        })
+        .create_view(&Default::default())
+}
+
+/// The view's lights in slc's form: candela times the camera's exposure.
+fn slc_lights(lights: &[(glam::Vec3, glam::Vec3)], exposure: f32) -> Result<Vec<Light>, String> {
+    lights.iter().map(|&(p, i)| SlcPoint::new(p, i * exposure).map(Light::Point).map_err(|e| format!("light at {p}: {e}"))).collect()
+}
+
+fn new_view(gpu: &Gpu, size: (u32, u32), lights: &[Light], settings: &SlcCamera, main: Entity) -> Result<View, String> {
+    let mut desc = DirectPassDesc::new(size.0, size.1);
+    desc.surface = SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float, reversed: true };
+    desc.selection = DirectSelection::Weighted { k: settings.picks };
+    desc.outputs = DirectOutputs::BevyRadiance;
+    desc.light_types = slc_shared_lights();
+    let set = LightSet::new(lights.to_vec()).map_err(|e| e.to_string())?;
+    let pass = DirectPass::new(&gpu.ctx, &set, &desc).map_err(|e| e.to_string())?;
+    let d = &gpu.ctx.device;
+    let inputs = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING;
+    Ok(View {
+        pass,
+        size,
+        lights: lights.len(),
+        normal: texture(d, size, "slc-bevy normal", inputs),
+        base: texture(d, size, "slc-bevy base colour", inputs),
+        material: texture(d, size, "slc-bevy metallic-roughness", inputs),
+        output: texture(d, size, "slc-bevy radiance", inputs),
+        frame: 0,
+        inv_view_proj: glam::Mat4::IDENTITY,
+        eye: glam::Vec3::ZERO,
+        settings: *settings,
+        main,
+    })
+}
+
+/// The light types the pass compiles: points only.
+fn slc_shared_lights() -> slc_shared_shaders::LightSet {
+    slc_shared_shaders::LightSet { point: true, spot: false, ies: false, triangle: false, vpl: false }
+}
+
+fn to_glam(m: Mat4) -> glam::Mat4 {
+    glam::Mat4::from_cols_array(&m.to_cols_array())
+}
+
+/// What [`prepare_views`] reads of a render-world camera.
+type CameraItem = (Entity, &'static MainEntity, &'static SlcCamera, &'static ExtractedView, &'static ExtractedCamera, Option<&'static Msaa>);
+
+/// Makes or resizes each slc camera's state and gives it this frame's
+/// lights and view.
+fn prepare_views(gpu: Option<Res<Gpu>>, lights: Res<ExtractedLights>, mut views: ResMut<Views>, status: Res<SlcStatus>, cameras: Query<CameraItem>) {
+    let Some(gpu) = gpu else { return };
+    let mut report = status.0.lock().unwrap_or_else(|e| e.into_inner());
+    let live: Vec<Entity> = cameras.iter().map(|c| c.0).collect();
+    views.0.retain(|e, _| live.contains(e));
+    for (entity, main, settings, view, camera, msaa) in &cameras {
+        let main = main.id();
+        let skip = |views: &mut Views, why: String, report: &mut HashMap<Entity, Result<u64, String>>| {
+            views.0.remove(&entity);
+            report.insert(main, Err(why));
+        };
+        if !settings.enabled {
+            views.0.remove(&entity);
+            continue;
+        }
+        if msaa.is_some_and(|m| *m != Msaa::Off) {
+            skip(&mut views, "slc needs Msaa::Off (a multisampled target is re-resolved over what slc adds)".into(), &mut report);
+            continue;
+        }
+        let Some(size) = camera.physical_viewport_size.map(|s| (s.x, s.y)) else { continue };
+        if size.0 == 0 || size.1 == 0 {
+            continue;
+        }
+        let exposure = camera.exposure;
+        let lights = match slc_lights(&lights.0, exposure) {
+            Ok(l) => l,
+            Err(e) => {
+                skip(&mut views, e, &mut report);
+                continue;
+            }
+        };
+        if lights.is_empty() {
+            views.0.remove(&entity);
+            report.insert(main, Ok(0));
+            continue;
+        }
+        let stale = views.0.get(&entity).is_none_or(|v| v.size != size || v.settings.picks != settings.picks);
+        if stale {
+            match new_view(&gpu, size, &lights, settings, main) {
+                Ok(v) => {
+                    views.0.insert(entity, v);
+                }
+                Err(e) => {
+                    skip(&mut views, e, &mut report);
+                    continue;
+                }
+            }
+        }
+        let v = views.0.get_mut(&entity).expect("made above");
+        let updated = if v.lights == lights.len() {
+            v.pass.update_lights(&lights).map_err(|e| e.to_string())
+        } else {
+            LightSet::new(lights.clone()).map_err(|e| e.to_string()).and_then(|set| v.pass.set_lights(&set).map_err(|e| e.to_string()))
+        };
+        if let Err(e) = updated {
+            skip(&mut views, e, &mut report);
+            continue;
+        }
+        v.lights = lights.len();
+        v.settings = *settings;
+        let world_from_view = to_glam(view.world_from_view.to_matrix());
+        v.inv_view_proj = world_from_view * to_glam(view.clip_from_view).inverse();
+        v.eye = world_from_view.w_axis.truncate();
+    }
+}
+
+/// Unpacks the G-buffer, shades slc's lights and adds them into the view
+/// target, in the view's command encoder.
+fn shade_view(
+    view: ViewQuery<(Entity, &ViewTarget, &ViewPrepassTextures), With<SlcCamera>>,
+    gpu: Option<Res<Gpu>>,
+    mut views: ResMut<Views>,
+    status: Res<SlcStatus>,
+    mut ctx: RenderContext,
+) {
+    let Some(gpu) = gpu else { return };
+    let (entity, target, prepass) = view.into_inner();
+    let Some(v) = views.0.get_mut(&entity) else { return };
+    let report = |r: Result<u64, String>| {
+        status.0.lock().unwrap_or_else(|e| e.into_inner()).insert(v.main, r);
+    };
+    let (Some(depth), Some(gbuffer)) = (prepass.depth_only_view(), prepass.deferred_view()) else {
+        report(Err("the camera has no depth prepass or deferred G-buffer (add DepthPrepass and DeferredPrepass)".into()));
+        return;
+    };
+    if target.main_texture_format() != HDR_FORMAT {
+        report(Err("slc adds linear radiance before tonemapping: the camera must be Hdr".into()));
+        return;
+    }
+    let device = &gpu.ctx.device;
+    let unpack_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("slc-bevy unpack"),
+        layout: &gpu.unpack.get_bind_group_layout(0),
+        entries: &[
+            wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(gbuffer) },
+            wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&v.normal) },
+            wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&v.base) },
+            wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::TextureView(&v.material) },
+        ],
+    });
+    let composite_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("slc-bevy composite"),
+        layout: &gpu.composite.get_bind_group_layout(0),
+        entries: &[wgpu::BindGroupEntry { binding: 4, resource: wgpu::BindingResource::TextureView(&v.output) }],
+    });
+    let encoder = ctx.command_encoder();
+    {
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc-bevy unpack"), timestamp_writes: None });
+        pass.set_pipeline(&gpu.unpack);
+        pass.set_bind_group(0, &unpack_group, &[]);
+        pass.dispatch_workgroups(v.size.0.div_ceil(8), v.size.1.div_ceil(8), 1);
+    }
+    let culling = match RangeParams::new(v.settings.error_bound, 1.0) {
+        Ok(p) => Culling::Stochastic(p),
+        Err(e) => {
+            report(Err(format!("error bound {}: {e}", v.settings.error_bound)));
+            return;
+        }
+    };
+    let gbuf = GBuffer { surface: Surface::Depth { depth, inv_view_proj: v.inv_view_proj }, normal: &v.normal, eye: v.eye };
+    let mut inputs = DirectInputs::new(gbuf, &v.output);
+    inputs.material = Some(MaterialInputs { base_color: &v.base, metallic_roughness: &v.material });
+    let settings = DirectSettings { culling, seed: v.settings.seed, frame: v.frame };
+    if let Err(e) = v.pass.record(encoder, &inputs, &settings) {
+        report(Err(e.to_string()));
+        return;
+    }
+    {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("slc-bevy composite"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: target.main_texture_view(),
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
+            })],
+            depth_stencil_attachment: None,
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        pass.set_pipeline(&gpu.composite);
+        pass.set_bind_group(0, &composite_group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+    v.frame = v.frame.wrapping_add(1);
+    report(Ok(u64::from(v.frame)));
+}
