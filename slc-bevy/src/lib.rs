@@ -44,15 +44,21 @@
 //! `StandardMaterial`'s BRDF (`slc_core::brdf::bevy_brdf`: Burley diffuse,
 //! GGX with Bevy's Fresnel and multiple-scattering compensation) times
 //! Bevy's light units (`intensity` in lumens, `/4π` to candela, times the
-//! camera's exposure); (3) the result is added into the view target.
+//! camera's exposure); (3) by default the result is accumulated over frames
+//! ([`SlcCamera::accumulate`]: slc-wgpu's temporal pass, reprojected by the
+//! camera's motion, history dropped where the surface or the light
+//! changed); (4) it is added into the view target.
 //!
 //! **Not applied**: shadows (slc's lights are unshadowed, as the direct
 //! pass documents), the light's `radius` (a point light), clearcoat,
 //! anisotropy and transmission, spot lights (Bevy's cone falloff differs
 //! from slc's spot profile; they stay Bevy's), forward-rendered materials
 //! (only the deferred G-buffer is read). A single frame is noisy by design
-//! (SLC's random ranges and the picks); accumulate over frames (TAA, or
-//! slc-wgpu's temporal pass) for a converged image.
+//! (SLC's random ranges and the picks), and unbiased: the mean over frames
+//! is Bevy's own shading with unbounded ranges (the headless test checks
+//! it). The accumulation reprojects by the camera, not by moving objects
+//! (Bevy's motion vectors are not read yet), and treats the view-dependent
+//! specular lobe as if it were fixed to the surface.
 //!
 //! **Requirements** (checked; a camera that lacks them is skipped and
 //! reported in [`SlcStatus`]): the camera is `Hdr` with `Msaa::Off`,
@@ -70,8 +76,13 @@ use bevy::render::renderer::{RenderContext, RenderDevice, RenderQueue, ViewQuery
 use bevy::render::sync_world::MainEntity;
 use bevy::render::view::{ExtractedView, Msaa, ViewTarget};
 use bevy::render::{Extract, ExtractSchedule, Render, RenderApp, RenderStartup, RenderSystems};
-use slc_wgpu::passes::{DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, MaterialInputs};
-use slc_wgpu::{Culling, GBuffer, GpuContext, Light, LightSet, PointLight as SlcPoint, RangeParams, Surface, SurfaceDesc};
+use slc_wgpu::passes::{
+    DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, MaterialInputs, TemporalInputs, TemporalPass,
+    TemporalPassDesc,
+};
+use slc_wgpu::{
+    Culling, GBuffer, GpuContext, Light, LightSet, PointLight as SlcPoint, RangeParams, Surface, SurfaceDesc, TemporalSettings, TemporalView,
+};
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
@@ -97,12 +108,19 @@ pub struct SlcCamera {
     /// Seed of the random ranges and picks (the frame number varies them
     /// every frame).
     pub seed: u32,
+    /// Accumulate slc's light over frames (slc-wgpu's temporal pass:
+    /// reprojection by the camera's motion, disocclusion, a change test
+    /// against the frame-to-frame noise, a moving average); off: every
+    /// frame is a fresh, noisy, unbiased estimate.
+    pub accumulate: bool,
+    /// The longest history of the accumulation, in frames (`≥ 1`).
+    pub max_history: f32,
 }
 
 impl Default for SlcCamera {
-    /// On, ε = 0.01, 8 picks, seed 1.
+    /// On, ε = 0.01, 8 picks, seed 1, accumulated over up to 32 frames.
     fn default() -> Self {
-        SlcCamera { enabled: true, error_bound: 0.01, picks: 8, seed: 1 }
+        SlcCamera { enabled: true, error_bound: 0.01, picks: 8, seed: 1, accumulate: true, max_history: 32.0 }
     }
 }
 
@@ -232,6 +250,10 @@ fn init_gpu(mut commands: Commands, device: Res<RenderDevice>, queue: Res<Render
 /// One camera's slc state.
 struct View {
     pass: DirectPass,
+    temporal: TemporalPass,
+    /// The light set changed size this frame (the history is capped).
+    changed: bool,
+    accumulated: wgpu::TextureView,
     size: (u32, u32),
     lights: usize,
     normal: wgpu::TextureView,
@@ -277,10 +299,17 @@ fn new_view(gpu: &Gpu, size: (u32, u32), lights: &[Light], settings: &SlcCamera,
     desc.light_types = slc_shared_lights();
     let set = LightSet::new(lights.to_vec()).map_err(|e| e.to_string())?;
     let pass = DirectPass::new(&gpu.ctx, &set, &desc).map_err(|e| e.to_string())?;
+    let mut temporal_desc = TemporalPassDesc::new(size.0, size.1);
+    temporal_desc.surface = desc.surface;
+    temporal_desc.output_format = GBUFFER_FORMAT;
+    let temporal = TemporalPass::new(&gpu.ctx, &temporal_desc).map_err(|e| e.to_string())?;
     let d = &gpu.ctx.device;
     let inputs = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING;
     Ok(View {
         pass,
+        temporal,
+        changed: false,
+        accumulated: texture(d, size, "slc-bevy accumulated radiance", inputs),
         size,
         lights: lights.len(),
         normal: texture(d, size, "slc-bevy normal", inputs),
@@ -367,7 +396,11 @@ fn prepare_views(gpu: Option<Res<Gpu>>, lights: Res<ExtractedLights>, mut views:
             skip(&mut views, e, &mut report);
             continue;
         }
+        v.changed = v.lights != lights.len();
         v.lights = lights.len();
+        if !settings.accumulate {
+            v.temporal.reset();
+        }
         v.settings = *settings;
         let world_from_view = to_glam(view.world_from_view.to_matrix());
         v.inv_view_proj = world_from_view * to_glam(view.clip_from_view).inverse();
@@ -409,10 +442,11 @@ fn shade_view(
             wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::TextureView(&v.material) },
         ],
     });
+    let shown = if v.settings.accumulate { &v.accumulated } else { &v.output };
     let composite_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: Some("slc-bevy composite"),
         layout: &gpu.composite.get_bind_group_layout(0),
-        entries: &[wgpu::BindGroupEntry { binding: 4, resource: wgpu::BindingResource::TextureView(&v.output) }],
+        entries: &[wgpu::BindGroupEntry { binding: 4, resource: wgpu::BindingResource::TextureView(shown) }],
     });
     let encoder = ctx.command_encoder();
     {
@@ -435,6 +469,15 @@ fn shade_view(
     if let Err(e) = v.pass.record(encoder, &inputs, &settings) {
         report(Err(e.to_string()));
         return;
+    }
+    if v.settings.accumulate {
+        let history = TemporalSettings { max_history: v.settings.max_history };
+        let history = if v.changed { history.after_change() } else { history };
+        let view = TemporalView { view_projection: v.inv_view_proj.inverse(), eye: v.eye };
+        if let Err(e) = v.temporal.record(encoder, &TemporalInputs::new(gbuf, &v.output, &v.accumulated), &view, &history) {
+            report(Err(e.to_string()));
+            return;
+        }
     }
     {
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {

@@ -173,7 +173,8 @@ fn scene(
     let camera = commands
         .spawn((
             Camera3d::default(),
-            SlcCamera { error_bound: 0.005, ..default() },
+            // Each frame a fresh estimate: the test averages them itself.
+            SlcCamera { error_bound: 0.005, accumulate: false, ..default() },
             Tonemapping::None,
             RenderTarget::Image(image.clone().into()),
             Transform::from_xyz(0.0, 30.0, 34.0).looking_at(Vec3::new(0.0, 0.0, -4.0), Vec3::Y),
@@ -231,6 +232,11 @@ fn mean_image(frames: &[Vec<[f32; 3]>]) -> Vec<[f32; 3]> {
     (0..frames[0].len()).map(|i| std::array::from_fn(|c| frames.iter().map(|f| f[i][c]).sum::<f32>() / n)).collect()
 }
 
+/// RMSE of the luminance of `a` against `b`.
+fn rmse(a: &[[f32; 3]], b: &[[f32; 3]]) -> f64 {
+    (a.iter().zip(b).map(|(x, y)| (luminance(*x) - luminance(*y)).powi(2)).sum::<f64>() / a.len() as f64).sqrt()
+}
+
 fn luminance(p: [f32; 3]) -> f64 {
     (0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]) as f64
 }
@@ -274,6 +280,20 @@ fn run() -> Result<(), String> {
     }
     let report = compare(&mut app, FRAMES / 2, "-moved")?;
     println!("after moving every light and despawning a third: {report}");
+    // Phase 3: the plugin's own accumulation (static scene): 40 frames
+    // must come closer to Bevy's unbounded image than one frame does.
+    set_mode(&mut app, Mode::Unbounded);
+    let truth = capture(&mut app, 8, 2)[1].clone();
+    set_mode(&mut app, Mode::Slc);
+    let single = capture(&mut app, 2, 1).remove(0);
+    app.world_mut().get_mut::<SlcCamera>(camera).expect("camera").accumulate = true;
+    let accumulated = capture(&mut app, 40, 1).remove(0);
+    write_images(&[("slc-accumulated", &accumulated)]);
+    let (e1, e40) = (rmse(&single, &truth), rmse(&accumulated, &truth));
+    println!("accumulation: luminance RMSE against Bevy unbounded {e1:.5} for one frame, {e40:.5} after 40 frames ({:.1}x lower)", e1 / e40);
+    if e40 > e1 / 3.0 {
+        return Err(format!("accumulating 40 frames should cut the error at least 3x: {e1:.5} -> {e40:.5}"));
+    }
     let status = app.world().resource::<SlcStatus>().get(camera);
     if !matches!(status, Some(Ok(n)) if n > 0) {
         return Err(format!("slc did not shade the camera: {status:?}"));
