@@ -29,7 +29,9 @@
 //! by `1 − F`; its specular lobe has a multiple-scattering energy
 //! compensation; its dielectric `F0 = 0.16·reflectance²` (0.04 at the
 //! default reflectance 0.5) with `F90` from `F0`; its perceptual roughness
-//! is clamped to at least 0.089.
+//! is clamped to at least 0.089. That BRDF is here too, as Bevy writes it
+//! ([`bevy_brdf`], [`bevy_alpha`], [`bevy_f0`], [`bevy_dfg`]), for an
+//! engine plugin that must shade exactly as Bevy does (slc-bevy).
 //!
 //! Sampling ([`bsdf_sample`], [`bsdf_pdf`]): the specular lobe by the
 //! bounded visible-normal distribution (Eto & Tokuyoshi, "Bounded VNDF
@@ -327,6 +329,13 @@ crate::shared! {
         return r * r;
     }
 
+    /// Bevy's dielectric `F0 = 0.16·reflectance²` (`calculate_F0_dielectric`
+    /// in bevy_pbr 0.20's `pbr_functions.wesl`; 0.04 at its default
+    /// reflectance 0.5).
+    pub fn bevy_f0(reflectance: f32) -> f32 {
+        return 0.16 * reflectance * reflectance;
+    }
+
     /// `F_ab.x + F_ab.y` of Bevy's analytic split-sum environment BRDF
     /// (`F_AB` without `DFG_LUT`: Karis 2014's polynomial fit, "Physically
     /// Based Shading on Mobile") at perceptual roughness `r` and `n·v`: the
@@ -364,7 +373,7 @@ crate::shared! {
         let l_h: f32 = saturate(dot(l, h));
         let f90_d: f32 = 0.5 + 2.0 * alpha * l_h * l_h;
         let burley: f32 = fresnel_schlick(vec3f(1.0, 1.0, 1.0), f90_d, n_l).x * fresnel_schlick(vec3f(1.0, 1.0, 1.0), f90_d, n_v).x * INV_PI;
-        let f0_d: f32 = 0.16 * reflectance * reflectance;
+        let f0_d: f32 = bevy_f0(reflectance);
         let f0: vec3f = vec3f(f0_d, f0_d, f0_d) * (1.0 - metallic) + base * metallic;
         let f90: f32 = saturate((f0.x + f0.y + f0.z) * 16.5);
         let d: f32 = ggx_d(n_h, 1.0 - n_h * n_h, alpha);

@@ -332,9 +332,11 @@ fn wrong_inputs_are_typed_errors() {
 /// culling the sum is exact, so each pixel's outgoing radiance
 /// (`Radiance`) and specular radiance (`Split`) equal slc-core's glTF BRDF
 /// (`brdf_eval`, `specular_brdf`) summed over every light on the CPU, for
-/// base colours, metallic and roughness varying by pixel.
+/// base colours, metallic and roughness varying by pixel; and Bevy's
+/// radiance (`BevyRadiance`, the material's alpha its reflectance) equals
+/// slc-core's `bevy_brdf` summed likewise.
 fn material_outputs_match_the_brdf() {
-    use slc_core::brdf::{brdf_eval, ggx_alpha, specular_brdf};
+    use slc_core::brdf::{bevy_brdf, brdf_eval, ggx_alpha, specular_brdf};
     use slc_core::light::{connection_cosine, connection_factor};
     use slc_wgpu::passes::{Dielectric, DirectOutputs, MaterialInputs};
     let Some(gpu) = gpu() else { return };
@@ -342,7 +344,7 @@ fn material_outputs_match_the_brdf() {
     let set = LightSet::new(lights().lights().iter().filter(|l| !matches!(l, Light::Triangle(_))).cloned().collect()).unwrap();
     let n = (W * H) as usize;
     let base: Vec<[f32; 4]> = (0..n).map(|i| [0.2 + 0.6 * (i % 7) as f32 / 6.0, 0.5, 0.9 - 0.7 * (i % 5) as f32 / 4.0, 1.0]).collect();
-    let mr: Vec<[f32; 4]> = (0..n).map(|i| [0.0, 0.05 + 0.9 * (i % 4) as f32 / 3.0, (i % 3) as f32 / 2.0, 0.0]).collect();
+    let mr: Vec<[f32; 4]> = (0..n).map(|i| [0.0, 0.05 + 0.9 * (i % 4) as f32 / 3.0, (i % 3) as f32 / 2.0, 0.25 * (i % 5) as f32]).collect();
     let (bc, mrv) = (upload(gpu, "base colour", (W, H), &base), upload(gpu, "metal rough", (W, H), &mr));
     let eye = Scene::cornell_box().camera.position;
     let dielectric = Dielectric::default();
@@ -361,13 +363,14 @@ fn material_outputs_match_the_brdf() {
         (a, b)
     };
     let (radiance, _) = run(DirectOutputs::Radiance(dielectric), None);
+    let (bevy, _) = run(DirectOutputs::BevyRadiance, None);
     let (irradiance, specular) = run(DirectOutputs::Split(dielectric), Some(&views[1]));
     let (mut worst, mut shaded) = (0.0f64, 0);
     for i in (0..n).filter(|&i| g.valid[i]) {
         let (x, nn) = (g.points[i], g.normals[i]);
         let (b, m, alpha) = (Vec3::new(base[i][0], base[i][1], base[i][2]), mr[i][2], ggx_alpha(mr[i][1]));
         let v = (eye - x).normalize();
-        let (mut l_out, mut e, mut spec) = (glam::DVec3::ZERO, glam::DVec3::ZERO, glam::DVec3::ZERO);
+        let (mut l_out, mut e, mut spec, mut l_bevy) = (glam::DVec3::ZERO, glam::DVec3::ZERO, glam::DVec3::ZERO, glam::DVec3::ZERO);
         for light in set.lights() {
             let y = light.bound().center;
             let cos = connection_cosine(x, y, nn, nn, f32::INFINITY);
@@ -381,12 +384,13 @@ fn material_outputs_match_the_brdf() {
             e += c.as_dvec3();
             l_out += (brdf_eval(b, m, dielectric.f0, dielectric.f90, alpha, nn, v, l) * c).as_dvec3();
             spec += (specular_brdf(b, m, dielectric.f0, dielectric.f90, alpha, nn, v, l) * c).as_dvec3();
+            l_bevy += (bevy_brdf(b, m, mr[i][1], mr[i][3], nn, v, l) * c).as_dvec3();
         }
         let rel = |got: &[f32; 4], want: glam::DVec3| {
             let g = glam::DVec3::new(got[0] as f64, got[1] as f64, got[2] as f64);
             ((g - want).abs().max_element() - 1e-9).max(0.0) / want.abs().max_element().max(1e-12)
         };
-        worst = worst.max(rel(&radiance[i], l_out)).max(rel(&irradiance[i], e)).max(rel(&specular[i], spec));
+        worst = worst.max(rel(&radiance[i], l_out)).max(rel(&irradiance[i], e)).max(rel(&specular[i], spec)).max(rel(&bevy[i], l_bevy));
         shaded += 1;
     }
     eprintln!("material outputs: {shaded} pixels, worst relative difference {worst:.2e}");

@@ -93,7 +93,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
 {% if pbr == "bevy" %}
     // Selection sees Bevy's material through the glTF lobe of the same F0
     // (any importance keeps the estimate unbiased).
-    let f0_d = 0.16 * mr.w * mr.w;
+    let f0_d = bevy_f0(mr.w);
     m = Material(textureLoad(base_color_tex, texel, 0).xyz, saturate(mr.z), bevy_alpha(mr.y), normalize(view.eye - x), mr.y, mr.w);
     lobe = receiver_lobe(m.base, m.metallic, vec3f(f0_d), 1.0, m.alpha, dot(n, m.v));
 {% else %}

@@ -69,6 +69,8 @@ struct Material {
     metallic: f32,
     alpha: f32,
     v: vec3<f32>,
+    roughness: f32,
+    reflectance: f32,
 }
 
 const LIGHT_POINT: u32 = 0u;

@@ -69,6 +69,8 @@ struct Material {
     metallic: f32,
     alpha: f32,
     v: vec3<f32>,
+    roughness: f32,
+    reflectance: f32,
 }
 
 const LIGHT_POINT: u32 = 0u;
@@ -804,67 +806,67 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e61 = textureLoad(base_color_tex, texel_1, 0i);
     let _e67 = ggx_alpha(saturate(mr.y));
     let _e70 = view.eye;
-    m = Material(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_9)));
-    let _e75 = m.base;
-    let _e77 = m.metallic;
-    let _e80 = view.f0_d;
-    let _e83 = view.f90_d;
-    let _e85 = m.alpha;
-    let _e87 = m.v;
-    let _e89 = receiver_lobe(_e75, _e77, _e80, _e83, _e85, dot(n_12, _e87));
-    lobe = _e89;
-    let _e91 = m.v;
-    let _e92 = mirror_dir(n_12, _e91);
-    r = _e92;
-    let _e93 = lobe;
-    let _e94 = range_scale(_e93);
-    let scale_3 = sqrt(_e94);
-    let _e98 = view.seed;
-    let _e102 = view.width;
-    let _e108 = view.frame;
-    let _e109 = point_stream(_e98, ((gid.y * _e102) + gid.x), _e108);
-    let _e110 = pick_stream(_e109);
-    h = _e110;
-    let _e120 = r;
-    let _e121 = lobe;
-    let _e122 = bsh_weighted_collect(x_9, n_12, _e120, _e121, scale_3, _e109);
-    if (_e122.w_sum > 0f) {
+    m = Material(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_9)), mr.y, 0f);
+    let _e77 = m.base;
+    let _e79 = m.metallic;
+    let _e82 = view.f0_d;
+    let _e85 = view.f90_d;
+    let _e87 = m.alpha;
+    let _e89 = m.v;
+    let _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_12, _e89));
+    lobe = _e91;
+    let _e93 = m.v;
+    let _e94 = mirror_dir(n_12, _e93);
+    r = _e94;
+    let _e95 = lobe;
+    let _e96 = range_scale(_e95);
+    let scale_3 = sqrt(_e96);
+    let _e100 = view.seed;
+    let _e104 = view.width;
+    let _e110 = view.frame;
+    let _e111 = point_stream(_e100, ((gid.y * _e104) + gid.x), _e110);
+    let _e112 = pick_stream(_e111);
+    h = _e112;
+    let _e122 = r;
+    let _e123 = lobe;
+    let _e124 = bsh_weighted_collect(x_9, n_12, _e122, _e123, scale_3, _e111);
+    if (_e124.w_sum > 0f) {
         loop {
-            let _e128 = k;
-            if (_e128 < K) {
+            let _e130 = k;
+            if (_e130 < K) {
             } else {
                 break;
             }
             {
-                let _e131 = h;
-                let _e132 = pcg_hash(_e131);
-                h = _e132;
                 let _e133 = h;
-                let _e134 = xi_from_bits(_e133);
+                let _e134 = pcg_hash(_e133);
+                h = _e134;
                 let _e135 = h;
-                let _e136 = pcg_hash(_e135);
-                h = _e136;
-                let _e137 = t;
-                let _e139 = k;
-                let _e141 = m;
-                let _e144 = k;
-                let _e147 = weighted_pick_weight(_e122.w_sum, _e122.w[_e144], K);
-                let _e148 = h;
-                let _e149 = xi_from_bits(_e148);
-                let _e150 = shade_pick(_e122.light[_e139], x_9, n_12, _e141, _e94, _e147, _e134, _e149);
-                let _e151 = add(_e137, _e150);
-                t = _e151;
+                let _e136 = xi_from_bits(_e135);
+                let _e137 = h;
+                let _e138 = pcg_hash(_e137);
+                h = _e138;
+                let _e139 = t;
+                let _e141 = k;
+                let _e143 = m;
+                let _e146 = k;
+                let _e149 = weighted_pick_weight(_e124.w_sum, _e124.w[_e146], K);
+                let _e150 = h;
+                let _e151 = xi_from_bits(_e150);
+                let _e152 = shade_pick(_e124.light[_e141], x_9, n_12, _e143, _e96, _e149, _e136, _e151);
+                let _e153 = add(_e139, _e152);
+                t = _e153;
             }
             continuing {
-                let _e153 = k;
-                k = (_e153 + 1u);
+                let _e155 = k;
+                k = (_e155 + 1u);
             }
         }
     }
-    let count = _e122.n;
-    let _e158 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e158, f32(count)));
-    let _e163 = t.specular;
-    textureStore(specular_tex, texel_1, vec4<f32>(_e163, 0f));
+    let count = _e124.n;
+    let _e160 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e160, f32(count)));
+    let _e165 = t.specular;
+    textureStore(specular_tex, texel_1, vec4<f32>(_e165, 0f));
     return;
 }

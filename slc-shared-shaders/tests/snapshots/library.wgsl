@@ -212,14 +212,14 @@ fn windowed_falloff(d2_4: f32, range2_1: f32) -> f32 {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_4: vec3<f32>) -> bool {
-    let v_12 = (x_4 - c);
-    return (dot(v_12, v_12) <= (r * r));
+    let v_13 = (x_4 - c);
+    return (dot(v_13, v_13) <= (r * r));
 }
 
 fn sphere_overlaps_sphere(c1_: vec3<f32>, r1_: f32, c2_: vec3<f32>, r2_2: f32) -> bool {
-    let v_13 = (c2_ - c1_);
-    let r_6 = (r1_ + r2_2);
-    return (dot(v_13, v_13) <= (r_6 * r_6));
+    let v_14 = (c2_ - c1_);
+    let r_8 = (r1_ + r2_2);
+    return (dot(v_14, v_14) <= (r_8 * r_8));
 }
 
 fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
@@ -229,8 +229,8 @@ fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
 fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<f32> {
     var local: bool;
 
-    let v_14 = (c2_1 - c1_1);
-    let d_9 = sqrt(dot(v_14, v_14));
+    let v_15 = (c2_1 - c1_1);
+    let d_9 = sqrt(dot(v_15, v_15));
     let _e8 = sphere_pad(r1_1, c1_1);
     if (r1_1 >= ((d_9 + r2_3) + _e8)) {
         return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, r1_1);
@@ -259,18 +259,18 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
     let r0_ = (0.5f * ((d_9 + r1_1) + r2_3));
-    let c_13 = (c1_1 + (v_14 * ((r0_ - r1_1) / d_9)));
+    let c_13 = (c1_1 + (v_15 * ((r0_ - r1_1) / d_9)));
     let e1_ = (c_13 - c1_1);
     let e2_ = (c_13 - c2_1);
-    let r_7 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    let _e82 = sphere_pad(r_7, c_13);
-    return vec4<f32>(c_13.x, c_13.y, c_13.z, (r_7 + _e82));
+    let r_9 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
+    let _e82 = sphere_pad(r_9, c_13);
+    return vec4<f32>(c_13.x, c_13.y, c_13.z, (r_9 + _e82));
 }
 
 fn sphere_overlaps_aabb(c_2: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
     let q_4 = clamp(c_2, bmin, bmax);
-    let v_15 = (q_4 - c_2);
-    return (dot(v_15, v_15) <= (r_2 * r_2));
+    let v_16 = (q_4 - c_2);
+    return (dot(v_16, v_16) <= (r_2 * r_2));
 }
 
 fn vpl_rt2_(flux: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32) -> f32 {
@@ -297,8 +297,8 @@ fn connection_cosine(x_5: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_1: bool;
     var local_2: bool;
 
-    let v_16 = (x_5 - y);
-    let d2_16 = dot(v_16, v_16);
+    let v_17 = (x_5 - y);
+    let d2_16 = dot(v_17, v_17);
     let _e7 = slc_keep(r2_5, d2_16);
     if !(!(_e7)) {
         local_1 = !((d2_16 > 0f));
@@ -309,7 +309,7 @@ fn connection_cosine(x_5: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_13 = (v_16 / vec3(sqrt(d2_16)));
+    let w_13 = (v_17 / vec3(sqrt(d2_16)));
     let cos_x_1 = -(dot(n, w_13));
     if !((cos_x_1 <= 0f)) {
         local_2 = (dot(ng, w_13) >= 0f);
@@ -380,8 +380,8 @@ fn atan_portable(x_6: f32) -> f32 {
     let _e21 = base;
     let _e33 = t;
     let _e35 = t;
-    let r_8 = (_e21 + (((((((((0.080537446f * z_3) - 0.13877685f) * z_3) + 0.19977711f) * z_3) - 0.3333295f) * z_3) * _e33) + _e35));
-    return select(r_8, -(r_8), (x_6 < 0f));
+    let r_10 = (_e21 + (((((((((0.080537446f * z_3) - 0.13877685f) * z_3) + 0.19977711f) * z_3) - 0.3333295f) * z_3) * _e33) + _e35));
+    return select(r_10, -(r_10), (x_6 < 0f));
 }
 
 fn atan2_portable(y_1: f32, x_7: f32) -> f32 {
@@ -716,9 +716,9 @@ fn onb_to_local(n_12: vec3<f32>, w_6: vec3<f32>) -> vec3<f32> {
 }
 
 fn cosine_direction(n_13: vec3<f32>, u1_1: f32, u2_1: f32) -> vec3<f32> {
-    let r_9 = sqrt(u1_1);
+    let r_11 = sqrt(u1_1);
     let phi_5 = (6.2831855f * u2_1);
-    let _e16 = onb_to_world(n_13, vec3<f32>((r_9 * cos(phi_5)), (r_9 * sin(phi_5)), sqrt(max((1f - u1_1), 0f))));
+    let _e16 = onb_to_world(n_13, vec3<f32>((r_11 * cos(phi_5)), (r_11 * sin(phi_5)), sqrt(max((1f - u1_1), 0f))));
     return normalize(_e16);
 }
 
@@ -787,9 +787,9 @@ fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2:
     var local_8: bool;
 
     let n_l_2 = dot(n_14, l_1);
-    let n_v_2 = dot(n_14, v_4);
+    let n_v_3 = dot(n_14, v_4);
     if !((n_l_2 <= 0f)) {
-        local_8 = (n_v_2 <= 0f);
+        local_8 = (n_v_3 <= 0f);
     } else {
         local_8 = true;
     }
@@ -803,7 +803,7 @@ fn specular_brdf(base_6: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2:
     let c_17 = cross(n_14, h_3);
     let _e32 = ggx_d(dot(n_14, h_3), dot(c_17, c_17), alpha_3);
     let _e34 = specular_fresnel(base_6, metallic_2, f0_d_2, f90_d_2, dot(v_4, h_3));
-    let _e35 = smith_visibility(n_l_2, n_v_2, alpha_3);
+    let _e35 = smith_visibility(n_l_2, n_v_3, alpha_3);
     return (_e34 * (_e32 * _e35));
 }
 
@@ -962,6 +962,50 @@ fn bsdf_pdf(n_19: vec3<f32>, v_9: vec3<f32>, l_4: vec3<f32>, alpha_11: f32, p_sp
     return ((p_spec_1 * _e11) + ((1f - p_spec_1) * _e6));
 }
 
+fn bevy_alpha(perceptual: f32) -> f32 {
+    let r_12 = clamp(perceptual, 0.089f, 1f);
+    return (r_12 * r_12);
+}
+
+fn bevy_f0_(reflectance: f32) -> f32 {
+    return ((0.16f * reflectance) * reflectance);
+}
+
+fn bevy_dfg(r_3: f32, n_v_2: f32) -> f32 {
+    let rx = (1f - r_3);
+    let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_3)));
+    let x_16 = max(((1.04f - (0.572f * r_3)) - (1.04f * a004_)), 0.00005f);
+    let y_3 = max((((0.022f * r_3) - 0.04f) + (1.04f * a004_)), 0.00005f);
+    return (x_16 + y_3);
+}
+
+fn bevy_brdf(base_11: vec3<f32>, metallic_8: f32, r_4: f32, reflectance_1: f32, n_20: vec3<f32>, v_10: vec3<f32>, l_5: vec3<f32>) -> vec3<f32> {
+    let n_l_3 = saturate(dot(n_20, l_5));
+    if (n_l_3 <= 0f) {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    let _e15 = bevy_alpha(r_4);
+    let n_v_4 = max(dot(n_20, v_10), 0.0001f);
+    let h_4 = normalize((l_5 + v_10));
+    let n_h = saturate(dot(n_20, h_4));
+    let l_h = saturate(dot(l_5, h_4));
+    let f90_d_7 = (0.5f + (((2f * _e15) * l_h) * l_h));
+    let _e35 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_7, n_l_3);
+    let _e41 = fresnel_schlick(vec3<f32>(1f, 1f, 1f), f90_d_7, n_v_4);
+    let burley = ((_e35.x * _e41.x) * INV_PI);
+    let _e46 = bevy_f0_(reflectance_1);
+    let f0_1 = ((vec3<f32>(_e46, _e46, _e46) * (1f - metallic_8)) + (base_11 * metallic_8));
+    let f90_1 = saturate((((f0_1.x + f0_1.y) + f0_1.z) * 16.5f));
+    let _e64 = ggx_d(n_h, (1f - (n_h * n_h)), _e15);
+    let a2_4 = (_e15 * _e15);
+    let vis = (0.5f / ((n_l_3 * sqrt((((n_v_4 - (a2_4 * n_v_4)) * n_v_4) + a2_4))) + (n_v_4 * sqrt((((n_l_3 - (a2_4 * n_l_3)) * n_l_3) + a2_4)))));
+    let _e85 = bevy_dfg(r_4, n_v_4);
+    let comp = (vec3<f32>(1f, 1f, 1f) + (f0_1 * ((1f / _e85) - 1f)));
+    let _e92 = fresnel_schlick(f0_1, f90_1, l_h);
+    let spec = ((_e92 * comp) * (_e64 * vis));
+    return ((base_11 * ((1f - metallic_8) * burley)) + spec);
+}
+
 fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
     if (cos_a > cos_b) {
         return 1f;
@@ -986,11 +1030,11 @@ fn subtended_cos(dist2_: f32, r2_6: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
-    let v_17 = (p - center);
-    let dist2_1 = dot(v_17, v_17);
+    let v_18 = (p - center);
+    let dist2_1 = dot(v_18, v_18);
     let r2_11 = (radius * radius);
     let d2_17 = max(max(dist2_1, r2_11), MIN_D2_);
-    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_17 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_18 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_3);
     let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
     let _e26 = subtended_cos(dist2_1, r2_11);
@@ -1011,9 +1055,9 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_18 = (center_2 - p_2);
-    let dist2_2 = dot(v_18, v_18);
-    let w_14 = select(vec3<f32>(0f, 0f, 0f), (v_18 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
+    let v_19 = (center_2 - p_2);
+    let dist2_2 = dot(v_19, v_19);
+    let w_14 = select(vec3<f32>(0f, 0f, 0f), (v_19 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
     let _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
     let cos_i = dot(w_14, d_1);
     let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
@@ -1022,7 +1066,7 @@ fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3
     return _e27;
 }
 
-fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_3: vec3<f32>, n_20: vec3<f32>) -> f32 {
+fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_3: vec3<f32>, n_21: vec3<f32>) -> f32 {
     var imp: f32;
 
     let _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
@@ -1030,10 +1074,10 @@ fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3
         return 0f;
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
-    if (dot(n_20, n_20) > 0f) {
-        let v_19 = (center_3 - p_3);
-        let dist2_3 = dot(v_19, v_19);
-        let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_19 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_20);
+    if (dot(n_21, n_21) > 0f) {
+        let v_20 = (center_3 - p_3);
+        let dist2_3 = dot(v_20, v_20);
+        let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_20 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_21);
         let _e33 = imp;
         let _e37 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
         let _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
@@ -1043,11 +1087,11 @@ fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3
     return max(_e44, 0f);
 }
 
-fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_4: vec3<f32>, n_21: vec3<f32>, r_3: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_4: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
     var local_13: bool;
 
     let _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
-    let _e11 = cone_cos_toward(center_4, radius_4, p_4, n_21);
+    let _e11 = cone_cos_toward(center_4, radius_4, p_4, n_22);
     if !((_e10 <= 0f)) {
         local_13 = (_e11 <= 0f);
     } else {
@@ -1057,20 +1101,20 @@ fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec
     if _e20 {
         return 0f;
     }
-    let _e22 = cone_cos_toward(center_4, radius_4, p_4, r_3);
+    let _e22 = cone_cos_toward(center_4, radius_4, p_4, r_5);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
     let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_3.z);
     let _e39 = smith_root(lobe_3.w, lobe_3.z);
-    let spec = (((lobe_3.y * _e33) * 0.25f) / _e39);
-    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
+    let spec_1 = (((lobe_3.y * _e33) * 0.25f) / _e39);
+    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec_1));
 }
 
-fn receiver_importance(center_5: vec3<f32>, radius_5: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_4: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
+fn receiver_importance(center_5: vec3<f32>, radius_5: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, p_5: vec3<f32>, n_23: vec3<f32>, r_6: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
     if (lobe_4.y <= 0f) {
-        let _e13 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_22);
+        let _e13 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_23);
         return _e13;
     }
-    let _e14 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_22, r_4, lobe_4);
+    let _e14 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_23, r_6, lobe_4);
     return _e14;
 }
 
@@ -1079,15 +1123,15 @@ fn candidate_weight(importance: f32, rt2_5: f32, d2_9: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_4: f32, axis_5: vec3<f32>, cos_o_5: f32, cos_e_4: f32, rt2_6: f32, p_6: vec3<f32>, n_23: vec3<f32>, r_5: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    let v_20 = (p_6 - center_6);
+fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_4: f32, axis_5: vec3<f32>, cos_o_5: f32, cos_e_4: f32, rt2_6: f32, p_6: vec3<f32>, n_24: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
+    let v_21 = (p_6 - center_6);
     if (lobe_5.y <= 0f) {
-        let _e15 = light_importance(center_6, radius_6, phi_4, axis_5, cos_o_5, cos_e_4, p_6, n_23);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_20, v_20));
+        let _e15 = light_importance(center_6, radius_6, phi_4, axis_5, cos_o_5, cos_e_4, p_6, n_24);
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_21, v_21));
         return _e19;
     }
-    let _e20 = glossy_importance(center_6, radius_6, phi_4, axis_5, cos_o_5, cos_e_4, p_6, n_23, r_5, lobe_5);
-    let _e22 = candidate_weight(_e20, rt2_6, dot(v_20, v_20));
+    let _e20 = glossy_importance(center_6, radius_6, phi_4, axis_5, cos_o_5, cos_e_4, p_6, n_24, r_7, lobe_5);
+    let _e22 = candidate_weight(_e20, rt2_6, dot(v_21, v_21));
     return _e22;
 }
 
@@ -1154,8 +1198,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> {
     var local_14: bool;
 
-    let n_35 = cross((b_4 - a_5), (c_7 - a_5));
-    let l2_ = dot(n_35, n_35);
+    let n_36 = cross((b_4 - a_5), (c_7 - a_5));
+    let l2_ = dot(n_36, n_36);
     if !(!((l2_ > 0f))) {
         local_14 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -1165,11 +1209,11 @@ fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_35 / vec3(sqrt(l2_)));
+    return (n_36 / vec3(sqrt(l2_)));
 }
 
-fn face_against(n_24: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
-    return select(n_24, -(n_24), (dot(n_24, dir) > 0f));
+fn face_against(n_25: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+    return select(n_25, -(n_25), (dot(n_25, dir) > 0f));
 }
 
 fn barycentric(p_7: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -> vec3<f32> {
@@ -1202,8 +1246,8 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>
     if _e24 {
         return facing;
     }
-    let n_36 = (s_6 / vec3(sqrt(l2_1)));
-    return select(n_36, -(n_36), (dot(n_36, facing) < 0f));
+    let n_37 = (s_6 / vec3(sqrt(l2_1)));
+    return select(n_37, -(n_37), (dot(n_37, facing) < 0f));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, c_9: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -1231,9 +1275,9 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
         return -1f;
     }
     let q_6 = cross(s_7, e1_2);
-    let v_21 = (dot(d_3, q_6) * inv_1);
-    if !((v_21 < 0f)) {
-        local_17 = ((u_6 + v_21) > 1f);
+    let v_22 = (dot(d_3, q_6) * inv_1);
+    if !((v_22 < 0f)) {
+        local_17 = ((u_6 + v_22) > 1f);
     } else {
         local_17 = true;
     }
@@ -1282,8 +1326,8 @@ fn filtered_irradiance(e: vec3<f32>, sum: vec3<f32>, weight: f32) -> vec3<f32> {
     return e;
 }
 
-fn bilateral_weight(n_25: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f32) -> f32 {
-    let dn = max(dot(n_25, nj), 0f);
+fn bilateral_weight(n_26: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f32) -> f32 {
+    let dn = max(dot(n_26, nj), 0f);
     let dn2_ = (dn * dn);
     let dn4_ = (dn2_ * dn2_);
     let dn8_ = (dn4_ * dn4_);
@@ -1392,10 +1436,10 @@ fn sees_emission(gn: vec3<f32>, dir_1: vec3<f32>) -> bool {
     return (dot(gn, dir_1) < 0f);
 }
 
-fn continues_path(nd: vec3<f32>, n_26: vec3<f32>, ng_1: vec3<f32>) -> bool {
+fn continues_path(nd: vec3<f32>, n_27: vec3<f32>, ng_1: vec3<f32>) -> bool {
     var local_19: bool;
 
-    if (dot(nd, n_26) > 0f) {
+    if (dot(nd, n_27) > 0f) {
         local_19 = (dot(nd, ng_1) > 0f);
     } else {
         local_19 = false;
@@ -1404,18 +1448,18 @@ fn continues_path(nd: vec3<f32>, n_26: vec3<f32>, ng_1: vec3<f32>) -> bool {
     return _e12;
 }
 
-fn finite3_(v_10: vec3<f32>) -> bool {
+fn finite3_(v_11: vec3<f32>) -> bool {
     var local_20: bool;
     var local_21: bool;
 
-    if (abs(v_10.x) <= F32_MAX) {
-        local_20 = (abs(v_10.y) <= F32_MAX);
+    if (abs(v_11.x) <= F32_MAX) {
+        local_20 = (abs(v_11.y) <= F32_MAX);
     } else {
         local_20 = false;
     }
     let _e12 = local_20;
     if _e12 {
-        local_21 = (abs(v_10.z) <= F32_MAX);
+        local_21 = (abs(v_11.z) <= F32_MAX);
     } else {
         local_21 = false;
     }
@@ -1445,8 +1489,8 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_6: vec3<f32>, exten
 }
 
 fn display_encode(x_15: f32) -> f32 {
-    let v_22 = max(x_15, 0f);
-    let t_8 = ((2f * v_22) / (1f + (2f * v_22)));
+    let v_23 = max(x_15, 0f);
+    let t_8 = ((2f * v_23) / (1f + (2f * v_23)));
     return select(((1.055f * pow(t_8, 0.41666666f)) - 0.055f), (12.92f * t_8), (t_8 <= 0.0031308f));
 }
 
@@ -1458,15 +1502,15 @@ fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-fn point_irradiance(intensity_1: vec3<f32>, n_27: vec3<f32>, v_11: vec3<f32>) -> vec3<f32> {
-    let d2_18 = dot(v_11, v_11);
-    let cos_x_2 = (dot(n_27, v_11) / sqrt(max(d2_18, MIN_D2_)));
+fn point_irradiance(intensity_1: vec3<f32>, n_28: vec3<f32>, v_12: vec3<f32>) -> vec3<f32> {
+    let d2_18 = dot(v_12, v_12);
+    let cos_x_2 = (dot(n_28, v_12) / sqrt(max(d2_18, MIN_D2_)));
     let _e11 = inverse_square(d2_18);
     return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }
 
-fn directional_irradiance(e_1: vec3<f32>, n_28: vec3<f32>, to_light: vec3<f32>) -> vec3<f32> {
-    return (e_1 * max(dot(n_28, to_light), 0f));
+fn directional_irradiance(e_1: vec3<f32>, n_29: vec3<f32>, to_light: vec3<f32>) -> vec3<f32> {
+    return (e_1 * max(dot(n_29, to_light), 0f));
 }
 
 fn perspective_texel_width(extent_3: f32, d_4: f32, z_2: f32, size_8: f32) -> f32 {
@@ -1498,9 +1542,9 @@ fn diffuse_radiance(albedo: vec3<f32>, emission: vec3<f32>, e_2: vec3<f32>) -> v
     return (emission + ((albedo * INV_PI) * e_2));
 }
 
-fn glossy_radiance(base_11: vec3<f32>, emission_1: vec3<f32>, metallic_8: f32, direct: vec3<f32>, indirect: vec3<f32>, specular: vec3<f32>) -> vec3<f32> {
-    let _e6 = diffuse_radiance(base_11, emission_1, direct);
-    let _e7 = diffuse_albedo(base_11, metallic_8);
+fn glossy_radiance(base_12: vec3<f32>, emission_1: vec3<f32>, metallic_9: f32, direct: vec3<f32>, indirect: vec3<f32>, specular: vec3<f32>) -> vec3<f32> {
+    let _e6 = diffuse_radiance(base_12, emission_1, direct);
+    let _e7 = diffuse_albedo(base_12, metallic_9);
     return ((_e6 + ((_e7 * INV_PI) * indirect)) + specular);
 }
 
@@ -1513,9 +1557,9 @@ fn reproject(c0_1: vec4<f32>, c1_3: vec4<f32>, c2_2: vec4<f32>, c3_: vec4<f32>, 
     if (clip.w <= 0f) {
         return vec3<f32>(-1f, -1f, 0f);
     }
-    let x_16 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
-    let y_3 = ((((1f - (clip.y / clip.w)) * 0.5f) * height) - 0.5f);
-    return vec3<f32>(x_16, y_3, clip.w);
+    let x_17 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
+    let y_4 = ((((1f - (clip.y / clip.w)) * 0.5f) * height) - 0.5f);
+    return vec3<f32>(x_17, y_4, clip.w);
 }
 
 fn reproject_motion(px_1: f32, py_1: f32, mx: f32, my: f32, width_1: f32, height_1: f32) -> vec3<f32> {
@@ -1577,11 +1621,11 @@ fn history_mean(sum_1: vec4<f32>, weight_1: f32) -> vec4<f32> {
     return (sum_1 / vec4(weight_1));
 }
 
-fn history_matches(n_29: vec3<f32>, nh: vec3<f32>, p_9: vec3<f32>, oh: f32, d_6: f32) -> bool {
+fn history_matches(n_30: vec3<f32>, nh: vec3<f32>, p_9: vec3<f32>, oh: f32, d_6: f32) -> bool {
     var local_27: bool;
 
     if (abs((dot(nh, p_9) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_6)) {
-        local_27 = (dot(n_29, nh) >= TEMPORAL_NORMAL_COS);
+        local_27 = (dot(n_30, nh) >= TEMPORAL_NORMAL_COS);
     } else {
         local_27 = false;
     }
@@ -1589,28 +1633,28 @@ fn history_matches(n_29: vec3<f32>, nh: vec3<f32>, p_9: vec3<f32>, oh: f32, d_6:
     return _e17;
 }
 
-fn temporal_change(l_5: f32, m1_: f32, noise: f32, n_30: f32) -> f32 {
-    if (n_30 < TEMPORAL_MIN_MOMENTS) {
+fn temporal_change(l_6: f32, m1_: f32, noise: f32, n_31: f32) -> f32 {
+    if (n_31 < TEMPORAL_MIN_MOMENTS) {
         return 0f;
     }
-    let sigma = sqrt((max(noise, 0f) * (1f + (1f / n_30))));
-    let t_9 = (abs((l_5 - m1_)) / ((sigma + (0.001f * max(abs(l_5), abs(m1_)))) + 0.00000000000000000001f));
+    let sigma = sqrt((max(noise, 0f) * (1f + (1f / n_31))));
+    let t_9 = (abs((l_6 - m1_)) / ((sigma + (0.001f * max(abs(l_6), abs(m1_)))) + 0.00000000000000000001f));
     return clamp(((t_9 - TEMPORAL_CHANGE_LOW) / 4f), 0f, 1f);
 }
 
-fn next_history_length(n_31: f32, lambda: f32, max_history: f32) -> f32 {
-    return min((((1f - lambda) * n_31) + 1f), max(max_history, 1f));
+fn next_history_length(n_32: f32, lambda: f32, max_history: f32) -> f32 {
+    return min((((1f - lambda) * n_32) + 1f), max(max_history, 1f));
 }
 
-fn temporal_alpha(n_32: f32) -> f32 {
-    return (1f / max(n_32, 1f));
+fn temporal_alpha(n_33: f32) -> f32 {
+    return (1f / max(n_33, 1f));
 }
 
-fn history_tap_weight(w_10: f32, n_33: vec3<f32>, nh_1: vec3<f32>, p_10: vec3<f32>, oh_1: f32, d_7: f32, len_1: f32) -> f32 {
+fn history_tap_weight(w_10: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_10: vec3<f32>, oh_1: f32, d_7: f32, len_1: f32) -> f32 {
     var local_28: bool;
 
     if (len_1 > 0f) {
-        let _e11 = history_matches(n_33, nh_1, p_10, oh_1, d_7);
+        let _e11 = history_matches(n_34, nh_1, p_10, oh_1, d_7);
         local_28 = _e11;
     } else {
         local_28 = false;
@@ -1619,7 +1663,7 @@ fn history_tap_weight(w_10: f32, n_33: vec3<f32>, nh_1: vec3<f32>, p_10: vec3<f3
     return select(0f, w_10, _e13);
 }
 
-fn history_tap_weight_motion(w_11: f32, n_34: vec3<f32>, nh_2: vec3<f32>, d_8: f32, dh: f32, len_2: f32) -> f32 {
+fn history_tap_weight_motion(w_11: f32, n_35: vec3<f32>, nh_2: vec3<f32>, d_8: f32, dh: f32, len_2: f32) -> f32 {
     var local_29: bool;
     var local_30: bool;
 
@@ -1630,7 +1674,7 @@ fn history_tap_weight_motion(w_11: f32, n_34: vec3<f32>, nh_2: vec3<f32>, d_8: f
     }
     let _e16 = local_29;
     if _e16 {
-        local_30 = (dot(n_34, nh_2) >= TEMPORAL_NORMAL_COS);
+        local_30 = (dot(n_35, nh_2) >= TEMPORAL_NORMAL_COS);
     } else {
         local_30 = false;
     }
@@ -1645,8 +1689,8 @@ fn temporal_color(c_11: vec3<f32>, h_1: vec4<f32>, noise_1: f32, max_history_1: 
     let _e11 = temporal_change(_e8, _e9, noise_1, h_1.w);
     let _e13 = next_history_length(h_1.w, _e11, max_history_1);
     let _e15 = temporal_alpha(_e13);
-    let v_23 = (hc + ((c_11 - hc) * _e15));
-    return vec4<f32>(v_23.x, v_23.y, v_23.z, _e13);
+    let v_24 = (hc + ((c_11 - hc) * _e15));
+    return vec4<f32>(v_24.x, v_24.y, v_24.z, _e13);
 }
 
 fn temporal_moments(c_12: vec3<f32>, last: f32, noise_2: f32, prev_len: f32, len_3: f32, depth_1: f32) -> vec4<f32> {

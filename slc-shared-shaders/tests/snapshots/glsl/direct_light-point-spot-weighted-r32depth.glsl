@@ -67,6 +67,8 @@ struct Material {
     float metallic;
     float alpha;
     vec3 v;
+    float roughness;
+    float reflectance;
 };
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
@@ -621,7 +623,7 @@ void main() {
     uvec3 gid = gl_GlobalInvocationID;
     bool local = false;
     bool local_1 = false;
-    Material m = Material(vec3(0.0), 0.0, 0.0, vec3(0.0));
+    Material m = Material(vec3(0.0), 0.0, 0.0, vec3(0.0), 0.0, 0.0);
     vec4 lobe = vec4(1.0, 0.0, 1.0, 1.0);
     vec3 r = vec3(0.0);
     uint h = 0u;

@@ -67,6 +67,8 @@ struct Material {
     float metallic;
     float alpha;
     vec3 v;
+    float roughness;
+    float reflectance;
 };
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
@@ -752,7 +754,7 @@ void main() {
     uvec3 gid = gl_GlobalInvocationID;
     bool local = false;
     bool local_1 = false;
-    Material m = Material(vec3(0.0), 0.0, 0.0, vec3(0.0));
+    Material m = Material(vec3(0.0), 0.0, 0.0, vec3(0.0), 0.0, 0.0);
     vec4 lobe = vec4(1.0, 0.0, 1.0, 1.0);
     vec3 r = vec3(0.0);
     uint h = 0u;
@@ -792,70 +794,70 @@ void main() {
     vec4 _e61 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
     float _e67 = ggx_alpha(clamp(mr.y, 0.0, 1.0));
     vec3 _e70 = _group_0_binding_0_cs.eye;
-    m = Material(_e61.xyz, clamp(mr.z, 0.0, 1.0), _e67, normalize((_e70 - x_9)));
-    vec3 _e75 = m.base;
-    float _e77 = m.metallic;
-    vec3 _e80 = _group_0_binding_0_cs.f0_d;
-    float _e83 = _group_0_binding_0_cs.f90_d;
-    float _e85 = m.alpha;
-    vec3 _e87 = m.v;
-    vec4 _e89 = receiver_lobe(_e75, _e77, _e80, _e83, _e85, dot(n_12, _e87));
-    lobe = _e89;
-    vec3 _e91 = m.v;
-    vec3 _e92 = mirror_dir(n_12, _e91);
-    r = _e92;
-    vec4 _e93 = lobe;
-    float _e94 = range_scale(_e93);
-    float scale_3 = sqrt(_e94);
-    uint _e98 = _group_0_binding_0_cs.seed;
-    uint _e102 = _group_0_binding_0_cs.width;
-    uint _e108 = _group_0_binding_0_cs.frame;
-    uint _e109 = point_stream(_e98, ((gid.y * _e102) + gid.x), _e108);
-    uint _e110 = pick_stream(_e109);
-    h = _e110;
-    vec3 _e120 = r;
-    vec4 _e121 = lobe;
-    WeightedPicks _e122 = bsh_weighted_collect(x_9, n_12, _e120, _e121, scale_3, _e109);
-    if ((_e122.w_sum > 0.0)) {
+    m = Material(_e61.xyz, clamp(mr.z, 0.0, 1.0), _e67, normalize((_e70 - x_9)), mr.y, 0.0);
+    vec3 _e77 = m.base;
+    float _e79 = m.metallic;
+    vec3 _e82 = _group_0_binding_0_cs.f0_d;
+    float _e85 = _group_0_binding_0_cs.f90_d;
+    float _e87 = m.alpha;
+    vec3 _e89 = m.v;
+    vec4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_12, _e89));
+    lobe = _e91;
+    vec3 _e93 = m.v;
+    vec3 _e94 = mirror_dir(n_12, _e93);
+    r = _e94;
+    vec4 _e95 = lobe;
+    float _e96 = range_scale(_e95);
+    float scale_3 = sqrt(_e96);
+    uint _e100 = _group_0_binding_0_cs.seed;
+    uint _e104 = _group_0_binding_0_cs.width;
+    uint _e110 = _group_0_binding_0_cs.frame;
+    uint _e111 = point_stream(_e100, ((gid.y * _e104) + gid.x), _e110);
+    uint _e112 = pick_stream(_e111);
+    h = _e112;
+    vec3 _e122 = r;
+    vec4 _e123 = lobe;
+    WeightedPicks _e124 = bsh_weighted_collect(x_9, n_12, _e122, _e123, scale_3, _e111);
+    if ((_e124.w_sum > 0.0)) {
         bool loop_init_2 = true;
         while(true) {
             if (!loop_init_2) {
-                uint _e153 = k;
-                k = (_e153 + 1u);
+                uint _e155 = k;
+                k = (_e155 + 1u);
             }
             loop_init_2 = false;
-            uint _e128 = k;
-            if ((_e128 < K)) {
+            uint _e130 = k;
+            if ((_e130 < K)) {
             } else {
                 break;
             }
             {
-                uint _e131 = h;
-                uint _e132 = pcg_hash(_e131);
-                h = _e132;
                 uint _e133 = h;
-                float _e134 = xi_from_bits(_e133);
+                uint _e134 = pcg_hash(_e133);
+                h = _e134;
                 uint _e135 = h;
-                uint _e136 = pcg_hash(_e135);
-                h = _e136;
-                Shaded _e137 = t;
-                uint _e139 = k;
-                Material _e141 = m;
-                uint _e144 = k;
-                float _e147 = weighted_pick_weight(_e122.w_sum, _e122.w[_e144], K);
-                uint _e148 = h;
-                float _e149 = xi_from_bits(_e148);
-                Shaded _e150 = shade_pick(_e122.light[_e139], x_9, n_12, _e141, _e94, _e147, _e134, _e149);
-                Shaded _e151 = add(_e137, _e150);
-                t = _e151;
+                float _e136 = xi_from_bits(_e135);
+                uint _e137 = h;
+                uint _e138 = pcg_hash(_e137);
+                h = _e138;
+                Shaded _e139 = t;
+                uint _e141 = k;
+                Material _e143 = m;
+                uint _e146 = k;
+                float _e149 = weighted_pick_weight(_e124.w_sum, _e124.w[_e146], K);
+                uint _e150 = h;
+                float _e151 = xi_from_bits(_e150);
+                Shaded _e152 = shade_pick(_e124.light[_e141], x_9, n_12, _e143, _e96, _e149, _e136, _e151);
+                Shaded _e153 = add(_e139, _e152);
+                t = _e153;
             }
         }
     }
-    uint count = _e122.n;
-    vec3 _e158 = t.e;
-    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e158, float(count)));
-    vec3 _e163 = t.specular;
-    imageStore(_group_0_binding_6_cs, texel_1, vec4(_e163, 0.0));
+    uint count = _e124.n;
+    vec3 _e160 = t.e;
+    imageStore(_group_0_binding_3_cs, texel_1, vec4(_e160, float(count)));
+    vec3 _e165 = t.specular;
+    imageStore(_group_0_binding_6_cs, texel_1, vec4(_e165, 0.0));
     return;
 }
 

@@ -62,7 +62,11 @@ struct Material {
     int _pad3_1;
     int _pad3_2;
     float3 v;
+    float roughness;
+    float reflectance;
     int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
 };
 
 static const uint LIGHT_POINT = 0u;

@@ -76,7 +76,11 @@ struct Material {
     int _pad3_1;
     int _pad3_2;
     float3 v;
+    float roughness;
+    float reflectance;
     int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
 };
 
 static const uint LIGHT_POINT = 0u;
@@ -884,12 +888,14 @@ Shaded add(Shaded a_5, Shaded b_6)
     return shaded_1;
 }
 
-Material ConstructMaterial(float3 arg0, float arg1, float arg2, float3 arg3) {
+Material ConstructMaterial(float3 arg0, float arg1, float arg2, float3 arg3, float arg4, float arg5) {
     Material ret = (Material)0;
     ret.base = arg0;
     ret.metallic = arg1;
     ret.alpha = arg2;
     ret.v = arg3;
+    ret.roughness = arg4;
+    ret.reflectance = arg5;
     return ret;
 }
 
@@ -939,72 +945,72 @@ void main(uint3 gid : SV_DispatchThreadID)
     float4 _e61 = base_color_tex.Load(int3(texel_1, int(0)));
     const float _e67 = ggx_alpha(saturate(mr.y));
     float3 _e70 = view.eye;
-    m = ConstructMaterial(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_9)));
-    float3 _e75 = m.base;
-    float _e77 = m.metallic;
-    float3 _e80 = view.f0_d;
-    float _e83 = view.f90_d;
-    float _e85 = m.alpha;
-    float3 _e87 = m.v;
-    const float4 _e89 = receiver_lobe(_e75, _e77, _e80, _e83, _e85, dot(n_12, _e87));
-    lobe = _e89;
-    float3 _e91 = m.v;
-    const float3 _e92 = mirror_dir(n_12, _e91);
-    r = _e92;
-    float4 _e93 = lobe;
-    const float _e94 = range_scale(_e93);
-    float scale_3 = sqrt(_e94);
-    uint _e98 = view.seed;
-    uint _e102 = view.width;
-    uint _e108 = view.frame;
-    const uint _e109 = point_stream(_e98, ((gid.y * _e102) + gid.x), _e108);
-    const uint _e110 = pick_stream(_e109);
-    h = _e110;
-    float3 _e120 = r;
-    float4 _e121 = lobe;
-    const WeightedPicks _e122 = bsh_weighted_collect(x_9, n_12, _e120, _e121, scale_3, _e109);
-    if ((_e122.w_sum > 0.0)) {
+    m = ConstructMaterial(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_9)), mr.y, 0.0);
+    float3 _e77 = m.base;
+    float _e79 = m.metallic;
+    float3 _e82 = view.f0_d;
+    float _e85 = view.f90_d;
+    float _e87 = m.alpha;
+    float3 _e89 = m.v;
+    const float4 _e91 = receiver_lobe(_e77, _e79, _e82, _e85, _e87, dot(n_12, _e89));
+    lobe = _e91;
+    float3 _e93 = m.v;
+    const float3 _e94 = mirror_dir(n_12, _e93);
+    r = _e94;
+    float4 _e95 = lobe;
+    const float _e96 = range_scale(_e95);
+    float scale_3 = sqrt(_e96);
+    uint _e100 = view.seed;
+    uint _e104 = view.width;
+    uint _e110 = view.frame;
+    const uint _e111 = point_stream(_e100, ((gid.y * _e104) + gid.x), _e110);
+    const uint _e112 = pick_stream(_e111);
+    h = _e112;
+    float3 _e122 = r;
+    float4 _e123 = lobe;
+    const WeightedPicks _e124 = bsh_weighted_collect(x_9, n_12, _e122, _e123, scale_3, _e111);
+    if ((_e124.w_sum > 0.0)) {
         uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
         bool loop_init_2 = true;
         while(true) {
             if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
             loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
             if (!loop_init_2) {
-                uint _e153 = k;
-                k = (_e153 + 1u);
+                uint _e155 = k;
+                k = (_e155 + 1u);
             }
             loop_init_2 = false;
-            uint _e128 = k;
-            if ((_e128 < K)) {
+            uint _e130 = k;
+            if ((_e130 < K)) {
             } else {
                 break;
             }
             {
-                uint _e131 = h;
-                const uint _e132 = pcg_hash(_e131);
-                h = _e132;
                 uint _e133 = h;
-                const float _e134 = xi_from_bits(_e133);
+                const uint _e134 = pcg_hash(_e133);
+                h = _e134;
                 uint _e135 = h;
-                const uint _e136 = pcg_hash(_e135);
-                h = _e136;
-                Shaded _e137 = t;
-                uint _e139 = k;
-                Material _e141 = m;
-                uint _e144 = k;
-                const float _e147 = weighted_pick_weight(_e122.w_sum, _e122.w[min(uint(_e144), 7u)], K);
-                uint _e148 = h;
-                const float _e149 = xi_from_bits(_e148);
-                const Shaded _e150 = shade_pick(_e122.light[min(uint(_e139), 7u)], x_9, n_12, _e141, _e94, _e147, _e134, _e149);
-                const Shaded _e151 = add(_e137, _e150);
-                t = _e151;
+                const float _e136 = xi_from_bits(_e135);
+                uint _e137 = h;
+                const uint _e138 = pcg_hash(_e137);
+                h = _e138;
+                Shaded _e139 = t;
+                uint _e141 = k;
+                Material _e143 = m;
+                uint _e146 = k;
+                const float _e149 = weighted_pick_weight(_e124.w_sum, _e124.w[min(uint(_e146), 7u)], K);
+                uint _e150 = h;
+                const float _e151 = xi_from_bits(_e150);
+                const Shaded _e152 = shade_pick(_e124.light[min(uint(_e141), 7u)], x_9, n_12, _e143, _e96, _e149, _e136, _e151);
+                const Shaded _e153 = add(_e139, _e152);
+                t = _e153;
             }
         }
     }
-    uint count = _e122.n;
-    float3 _e158 = t.e;
-    out_tex[texel_1] = float4(_e158, float(count));
-    float3 _e163 = t.specular;
-    specular_tex[texel_1] = float4(_e163, 0.0);
+    uint count = _e124.n;
+    float3 _e160 = t.e;
+    out_tex[texel_1] = float4(_e160, float(count));
+    float3 _e165 = t.specular;
+    specular_tex[texel_1] = float4(_e165, 0.0);
     return;
 }

@@ -87,7 +87,10 @@ struct Material {
     float metallic;
     float alpha;
     char _pad3[12];
-    metal::float3 v;
+    metal::packed_float3 v;
+    float roughness;
+    float reflectance;
+    char _pad6[12];
 };
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
