@@ -56,9 +56,10 @@
 //! (only the deferred G-buffer is read). A single frame is noisy by design
 //! (SLC's random ranges and the picks), and unbiased: the mean over frames
 //! is Bevy's own shading with unbounded ranges (the headless test checks
-//! it). The accumulation reprojects by the camera, not by moving objects
-//! (Bevy's motion vectors are not read yet), and treats the view-dependent
-//! specular lobe as if it were fixed to the surface.
+//! it). The accumulation reprojects by Bevy's motion vectors when the camera
+//! has `MotionVectorPrepass` (moving objects keep their history), else by the
+//! camera's motion alone; it treats the view-dependent specular lobe as if
+//! it were fixed to the surface.
 //!
 //! **Requirements** (checked; a camera that lacks them is skipped and
 //! reported in [`SlcStatus`]): the camera is `Hdr` with `Msaa::Off`,
@@ -68,7 +69,7 @@ use bevy::camera::Hdr;
 use bevy::camera::visibility::RenderLayers;
 use bevy::core_pipeline::Core3d;
 use bevy::core_pipeline::core_3d::{main_opaque_pass_3d, main_transparent_pass_3d};
-use bevy::core_pipeline::prepass::{DeferredPrepass, DepthPrepass, ViewPrepassTextures};
+use bevy::core_pipeline::prepass::{DeferredPrepass, DepthPrepass, MotionVectorPrepass, ViewPrepassTextures};
 use bevy::prelude::*;
 use bevy::render::camera::ExtractedCamera;
 use bevy::render::extract_component::{ExtractComponent, ExtractComponentPlugin};
@@ -251,6 +252,9 @@ fn init_gpu(mut commands: Commands, device: Res<RenderDevice>, queue: Res<Render
 struct View {
     pass: DirectPass,
     temporal: TemporalPass,
+    /// The accumulation reprojects by Bevy's motion vectors (the camera has
+    /// `MotionVectorPrepass`), else by the camera's motion.
+    motion: bool,
     /// The light set changed size this frame (the history is capped).
     changed: bool,
     accumulated: wgpu::TextureView,
@@ -291,7 +295,7 @@ fn slc_lights(lights: &[(glam::Vec3, glam::Vec3)], exposure: f32) -> Result<Vec<
     lights.iter().map(|&(p, i)| SlcPoint::new(p, i * exposure).map(Light::Point).map_err(|e| format!("light at {p}: {e}"))).collect()
 }
 
-fn new_view(gpu: &Gpu, size: (u32, u32), lights: &[Light], settings: &SlcCamera, main: Entity) -> Result<View, String> {
+fn new_view(gpu: &Gpu, size: (u32, u32), lights: &[Light], settings: &SlcCamera, main: Entity, motion: bool) -> Result<View, String> {
     let mut desc = DirectPassDesc::new(size.0, size.1);
     desc.surface = SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float, reversed: true };
     desc.selection = DirectSelection::Weighted { k: settings.picks };
@@ -302,12 +306,14 @@ fn new_view(gpu: &Gpu, size: (u32, u32), lights: &[Light], settings: &SlcCamera,
     let mut temporal_desc = TemporalPassDesc::new(size.0, size.1);
     temporal_desc.surface = desc.surface;
     temporal_desc.output_format = GBUFFER_FORMAT;
+    temporal_desc.motion_vectors = motion;
     let temporal = TemporalPass::new(&gpu.ctx, &temporal_desc).map_err(|e| e.to_string())?;
     let d = &gpu.ctx.device;
     let inputs = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING;
     Ok(View {
         pass,
         temporal,
+        motion,
         changed: false,
         accumulated: texture(d, size, "slc-bevy accumulated radiance", inputs),
         size,
@@ -334,7 +340,15 @@ fn to_glam(m: Mat4) -> glam::Mat4 {
 }
 
 /// What [`prepare_views`] reads of a render-world camera.
-type CameraItem = (Entity, &'static MainEntity, &'static SlcCamera, &'static ExtractedView, &'static ExtractedCamera, Option<&'static Msaa>);
+type CameraItem = (
+    Entity,
+    &'static MainEntity,
+    &'static SlcCamera,
+    &'static ExtractedView,
+    &'static ExtractedCamera,
+    Option<&'static Msaa>,
+    Has<MotionVectorPrepass>,
+);
 
 /// Makes or resizes each slc camera's state and gives it this frame's
 /// lights and view.
@@ -343,7 +357,7 @@ fn prepare_views(gpu: Option<Res<Gpu>>, lights: Res<ExtractedLights>, mut views:
     let mut report = status.0.lock().unwrap_or_else(|e| e.into_inner());
     let live: Vec<Entity> = cameras.iter().map(|c| c.0).collect();
     views.0.retain(|e, _| live.contains(e));
-    for (entity, main, settings, view, camera, msaa) in &cameras {
+    for (entity, main, settings, view, camera, msaa, motion) in &cameras {
         let main = main.id();
         let skip = |views: &mut Views, why: String, report: &mut HashMap<Entity, Result<u64, String>>| {
             views.0.remove(&entity);
@@ -374,9 +388,9 @@ fn prepare_views(gpu: Option<Res<Gpu>>, lights: Res<ExtractedLights>, mut views:
             report.insert(main, Ok(0));
             continue;
         }
-        let stale = views.0.get(&entity).is_none_or(|v| v.size != size || v.settings.picks != settings.picks);
+        let stale = views.0.get(&entity).is_none_or(|v| v.size != size || v.settings.picks != settings.picks || v.motion != motion);
         if stale {
-            match new_view(&gpu, size, &lights, settings, main) {
+            match new_view(&gpu, size, &lights, settings, main, motion) {
                 Ok(v) => {
                     views.0.insert(entity, v);
                 }
@@ -474,7 +488,11 @@ fn shade_view(
         let history = TemporalSettings { max_history: v.settings.max_history };
         let history = if v.changed { history.after_change() } else { history };
         let view = TemporalView { view_projection: v.inv_view_proj.inverse(), eye: v.eye };
-        if let Err(e) = v.temporal.record(encoder, &TemporalInputs::new(gbuf, &v.output, &v.accumulated), &view, &history) {
+        let inputs = TemporalInputs {
+            motion: if v.motion { prepass.motion_vectors_view().map(|t| &**t) } else { None },
+            ..TemporalInputs::new(gbuf, &v.output, &v.accumulated)
+        };
+        if let Err(e) = v.temporal.record(encoder, &inputs, &view, &history) {
             report(Err(e.to_string()));
             return;
         }

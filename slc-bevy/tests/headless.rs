@@ -20,6 +20,7 @@
 
 use bevy::app::PluginsState;
 use bevy::camera::RenderTarget;
+use bevy::core_pipeline::prepass::MotionVectorPrepass;
 use bevy::core_pipeline::tonemapping::Tonemapping;
 use bevy::pbr::DefaultOpaqueRendererMethod;
 use bevy::prelude::*;
@@ -175,6 +176,8 @@ fn scene(
             Camera3d::default(),
             // Each frame a fresh estimate: the test averages them itself.
             SlcCamera { error_bound: 0.005, accumulate: false, ..default() },
+            // The accumulation (phase 3) reprojects by Bevy's motion vectors.
+            MotionVectorPrepass,
             Tonemapping::None,
             RenderTarget::Image(image.clone().into()),
             Transform::from_xyz(0.0, 30.0, 34.0).looking_at(Vec3::new(0.0, 0.0, -4.0), Vec3::Y),
