@@ -37,8 +37,9 @@
 //! **How it shades**: at every pixel of a camera with [`SlcCamera`], after
 //! Bevy's opaque (deferred lighting) pass and before transparents and
 //! tonemapping: (1) Bevy's deferred G-buffer is unpacked into normal, base
-//! colour and metallic-roughness-reflectance textures (`unpack.wgsl`,
-//! Bevy's packing, `bevy_pbr::deferred::functions`); (2) slc's direct pass
+//! colour and metallic-roughness-reflectance textures (`unpack.wesl`, which
+//! imports Bevy's own unpacking functions from `bevy_pbr::deferred::types`
+//! and `bevy_render::utils`); (2) slc's direct pass
 //! picks [`SlcCamera::picks`] lights among those whose random range reaches
 //! the pixel, importance-weighted, and shades them with Bevy
 //! `StandardMaterial`'s BRDF (`slc_core::brdf::bevy_brdf`: Burley diffuse,
@@ -61,6 +62,14 @@
 //! camera's motion alone; it treats the view-dependent specular lobe as if
 //! it were fixed to the surface.
 //!
+//! **WESL**: the plugin's kernels (`unpack.wesl`, `composite.wesl`) are
+//! WESL compiled by Bevy's pipeline cache, importing Bevy's modules as
+//! Bevy's own shaders do; and the plugin registers slc's WESL package
+//! (`slc_shared_shaders::wesl`) with Bevy's shader assets, so any Bevy
+//! shader can `import slc::range::{random_range2, slc_keep, slc_weight};`
+//! (the headless test runs one). slc's shading itself is slc-wgpu's direct
+//! kernel, generated from the same functions.
+//!
 //! **Requirements** (checked; a camera that lacks them is skipped and
 //! reported in [`SlcStatus`]): the camera is `Hdr` with `Msaa::Off`,
 //! `DepthPrepass` and `DeferredPrepass` ([`SlcCamera`] requires them).
@@ -68,11 +77,18 @@
 use bevy::camera::Hdr;
 use bevy::camera::visibility::RenderLayers;
 use bevy::core_pipeline::Core3d;
+use bevy::core_pipeline::FullscreenShader;
 use bevy::core_pipeline::core_3d::{main_opaque_pass_3d, main_transparent_pass_3d};
 use bevy::core_pipeline::prepass::{DeferredPrepass, DepthPrepass, MotionVectorPrepass, ViewPrepassTextures};
 use bevy::prelude::*;
 use bevy::render::camera::ExtractedCamera;
 use bevy::render::extract_component::{ExtractComponent, ExtractComponentPlugin};
+use bevy::render::render_resource::binding_types::{texture_2d, texture_storage_2d};
+use bevy::render::render_resource::{
+    BindGroupLayoutDescriptor, BindGroupLayoutEntries, BlendComponent, BlendFactor, BlendOperation, BlendState, CachedComputePipelineId,
+    CachedPipelineState, CachedRenderPipelineId, ColorTargetState, ColorWrites, ComputePipelineDescriptor, FragmentState, PipelineCache,
+    RenderPipelineDescriptor, ShaderStages, StorageTextureAccess, TextureSampleType,
+};
 use bevy::render::renderer::{RenderContext, RenderDevice, RenderQueue, ViewQuery};
 use bevy::render::sync_world::MainEntity;
 use bevy::render::view::{ExtractedView, Msaa, ViewTarget};
@@ -150,6 +166,8 @@ impl Plugin for SlcPlugin {
     fn build(&self, app: &mut App) {
         let status = SlcStatus::default();
         app.insert_resource(status.clone());
+        let shaders = add_shaders(app);
+        app.insert_resource(shaders.clone());
         app.add_plugins(ExtractComponentPlugin::<SlcCamera>::default());
         app.add_observer(|ev: On<Add<SlcLight>>, mut commands: Commands| {
             commands.entity(ev.entity).insert(RenderLayers::none());
@@ -161,6 +179,7 @@ impl Plugin for SlcPlugin {
         let Some(render_app) = app.get_sub_app_mut(RenderApp) else { return };
         render_app
             .insert_resource(status)
+            .insert_resource(shaders)
             .init_resource::<ExtractedLights>()
             .init_resource::<Views>()
             .add_systems(RenderStartup, init_gpu)
@@ -191,61 +210,87 @@ const GBUFFER_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
 /// The main texture of an `Hdr` camera.
 const HDR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
 
-/// Device objects shared by every view.
+/// Device objects shared by every view: slc's context on Bevy's device,
+/// and the plugin's two kernels, WESL through Bevy's pipeline cache.
 #[derive(Resource)]
 struct Gpu {
     ctx: GpuContext,
-    unpack: wgpu::ComputePipeline,
-    composite: wgpu::RenderPipeline,
+    unpack_layout: BindGroupLayoutDescriptor,
+    unpack: CachedComputePipelineId,
+    composite_layout: BindGroupLayoutDescriptor,
+    composite: CachedRenderPipelineId,
 }
 
-fn init_gpu(mut commands: Commands, device: Res<RenderDevice>, queue: Res<RenderQueue>) {
+/// The plugin's WESL shaders and slc's WESL package, held so they stay
+/// loaded.
+#[derive(Resource, Clone)]
+struct Shaders {
+    unpack: Handle<Shader>,
+    composite: Handle<Shader>,
+    #[allow(dead_code)]
+    slc: Vec<Handle<Shader>>,
+}
+
+/// Adds slc's WESL package (`slc_shared_shaders::wesl::modules()`, the
+/// module path `slc::{name}`: e.g. `import slc::range::{random_range2,
+/// slc_keep, slc_weight};`) and the plugin's own shaders to Bevy's shader
+/// assets, so that any Bevy shader can import slc's functions.
+fn add_shaders(app: &mut App) -> Shaders {
+    let mut shaders = app.world_mut().resource_mut::<Assets<Shader>>();
+    let slc = slc_shared_shaders::wesl::modules()
+        .into_iter()
+        .map(|m| shaders.add(Shader::from_wesl(m.source, format!("embedded://slc/{}.wesl", m.name))))
+        .collect();
+    let unpack = shaders.add(Shader::from_wesl(include_str!("unpack.wesl"), "embedded://slc_bevy/unpack.wesl"));
+    let composite = shaders.add(Shader::from_wesl(include_str!("composite.wesl"), "embedded://slc_bevy/composite.wesl"));
+    Shaders { unpack, composite, slc }
+}
+
+fn init_gpu(
+    mut commands: Commands,
+    device: Res<RenderDevice>,
+    queue: Res<RenderQueue>,
+    cache: Res<PipelineCache>,
+    shaders: Res<Shaders>,
+    fullscreen: Res<FullscreenShader>,
+) {
     let device: wgpu::Device = device.wgpu_device().clone();
     let queue: wgpu::Queue = (**queue).clone();
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("slc-bevy unpack and composite"),
-        source: wgpu::ShaderSource::Wgsl(include_str!("unpack.wgsl").into()),
+    let storage = || texture_storage_2d(GBUFFER_FORMAT, StorageTextureAccess::WriteOnly);
+    let unpack_layout = BindGroupLayoutDescriptor::new(
+        "slc-bevy unpack",
+        &BindGroupLayoutEntries::sequential(ShaderStages::COMPUTE, (texture_2d(TextureSampleType::Uint), storage(), storage(), storage())),
+    );
+    let unpack = cache.queue_compute_pipeline(ComputePipelineDescriptor {
+        label: Some("slc-bevy unpack".into()),
+        layout: vec![unpack_layout.clone()],
+        shader: shaders.unpack.clone(),
+        entry_point: Some("unpack".into()),
+        ..default()
     });
-    let unpack = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-        label: Some("slc-bevy unpack"),
-        layout: None,
-        module: &module,
-        entry_point: Some("unpack"),
-        compilation_options: Default::default(),
-        cache: None,
-    });
-    let composite = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("slc-bevy composite"),
-        layout: None,
-        vertex: wgpu::VertexState { module: &module, entry_point: Some("fullscreen"), compilation_options: Default::default(), buffers: &[] },
-        primitive: wgpu::PrimitiveState::default(),
-        depth_stencil: None,
-        multisample: wgpu::MultisampleState::default(),
-        fragment: Some(wgpu::FragmentState {
-            module: &module,
-            entry_point: Some("composite"),
-            compilation_options: Default::default(),
-            targets: &[Some(wgpu::ColorTargetState {
+    let composite_layout = BindGroupLayoutDescriptor::new(
+        "slc-bevy composite",
+        &BindGroupLayoutEntries::single(ShaderStages::FRAGMENT, texture_2d(TextureSampleType::Float { filterable: false })),
+    );
+    let add = BlendComponent { src_factor: BlendFactor::One, dst_factor: BlendFactor::One, operation: BlendOperation::Add };
+    let keep = BlendComponent { src_factor: BlendFactor::Zero, dst_factor: BlendFactor::One, operation: BlendOperation::Add };
+    let composite = cache.queue_render_pipeline(RenderPipelineDescriptor {
+        label: Some("slc-bevy composite".into()),
+        layout: vec![composite_layout.clone()],
+        vertex: fullscreen.to_vertex_state(),
+        fragment: Some(FragmentState {
+            shader: shaders.composite.clone(),
+            entry_point: Some("composite".into()),
+            targets: vec![Some(ColorTargetState {
                 format: HDR_FORMAT,
-                blend: Some(wgpu::BlendState {
-                    color: wgpu::BlendComponent {
-                        src_factor: wgpu::BlendFactor::One,
-                        dst_factor: wgpu::BlendFactor::One,
-                        operation: wgpu::BlendOperation::Add,
-                    },
-                    alpha: wgpu::BlendComponent {
-                        src_factor: wgpu::BlendFactor::Zero,
-                        dst_factor: wgpu::BlendFactor::One,
-                        operation: wgpu::BlendOperation::Add,
-                    },
-                }),
-                write_mask: wgpu::ColorWrites::ALL,
+                blend: Some(BlendState { color: add, alpha: keep }),
+                write_mask: ColorWrites::ALL,
             })],
+            ..default()
         }),
-        multiview_mask: None,
-        cache: None,
+        ..default()
     });
-    commands.insert_resource(Gpu { ctx: GpuContext::from_device(device, queue), unpack, composite });
+    commands.insert_resource(Gpu { ctx: GpuContext::from_device(device, queue), unpack_layout, unpack, composite_layout, composite });
 }
 
 /// One camera's slc state.
@@ -255,6 +300,10 @@ struct View {
     /// The accumulation reprojects by Bevy's motion vectors (the camera has
     /// `MotionVectorPrepass`), else by the camera's motion.
     motion: bool,
+    /// The unpack's bind group and the G-buffer view it binds.
+    unpack_group: Option<(wgpu::TextureView, wgpu::BindGroup)>,
+    /// The composite's bind groups: this frame's estimate, the accumulation.
+    composite_groups: [wgpu::BindGroup; 2],
     /// The light set changed size this frame (the history is capped).
     changed: bool,
     accumulated: wgpu::TextureView,
@@ -295,7 +344,15 @@ fn slc_lights(lights: &[(glam::Vec3, glam::Vec3)], exposure: f32) -> Result<Vec<
     lights.iter().map(|&(p, i)| SlcPoint::new(p, i * exposure).map(Light::Point).map_err(|e| format!("light at {p}: {e}"))).collect()
 }
 
-fn new_view(gpu: &Gpu, size: (u32, u32), lights: &[Light], settings: &SlcCamera, main: Entity, motion: bool) -> Result<View, String> {
+fn new_view(
+    gpu: &Gpu,
+    cache: &PipelineCache,
+    size: (u32, u32),
+    lights: &[Light],
+    settings: &SlcCamera,
+    main: Entity,
+    motion: bool,
+) -> Result<View, String> {
     let mut desc = DirectPassDesc::new(size.0, size.1);
     desc.surface = SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float, reversed: true };
     desc.selection = DirectSelection::Weighted { k: settings.picks };
@@ -310,18 +367,29 @@ fn new_view(gpu: &Gpu, size: (u32, u32), lights: &[Light], settings: &SlcCamera,
     let temporal = TemporalPass::new(&gpu.ctx, &temporal_desc).map_err(|e| e.to_string())?;
     let d = &gpu.ctx.device;
     let inputs = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING;
+    let output = texture(d, size, "slc-bevy radiance", inputs);
+    let accumulated = texture(d, size, "slc-bevy accumulated radiance", inputs);
+    let composite = |shown: &wgpu::TextureView| {
+        d.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("slc-bevy composite"),
+            layout: &cache.get_bind_group_layout(&gpu.composite_layout),
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(shown) }],
+        })
+    };
     Ok(View {
+        unpack_group: None,
+        composite_groups: [composite(&output), composite(&accumulated)],
         pass,
         temporal,
         motion,
         changed: false,
-        accumulated: texture(d, size, "slc-bevy accumulated radiance", inputs),
+        accumulated,
         size,
         lights: lights.len(),
         normal: texture(d, size, "slc-bevy normal", inputs),
         base: texture(d, size, "slc-bevy base colour", inputs),
         material: texture(d, size, "slc-bevy metallic-roughness", inputs),
-        output: texture(d, size, "slc-bevy radiance", inputs),
+        output,
         frame: 0,
         inv_view_proj: glam::Mat4::IDENTITY,
         eye: glam::Vec3::ZERO,
@@ -352,7 +420,14 @@ type CameraItem = (
 
 /// Makes or resizes each slc camera's state and gives it this frame's
 /// lights and view.
-fn prepare_views(gpu: Option<Res<Gpu>>, lights: Res<ExtractedLights>, mut views: ResMut<Views>, status: Res<SlcStatus>, cameras: Query<CameraItem>) {
+fn prepare_views(
+    gpu: Option<Res<Gpu>>,
+    cache: Res<PipelineCache>,
+    lights: Res<ExtractedLights>,
+    mut views: ResMut<Views>,
+    status: Res<SlcStatus>,
+    cameras: Query<CameraItem>,
+) {
     let Some(gpu) = gpu else { return };
     let mut report = status.0.lock().unwrap_or_else(|e| e.into_inner());
     let live: Vec<Entity> = cameras.iter().map(|c| c.0).collect();
@@ -390,7 +465,7 @@ fn prepare_views(gpu: Option<Res<Gpu>>, lights: Res<ExtractedLights>, mut views:
         }
         let stale = views.0.get(&entity).is_none_or(|v| v.size != size || v.settings.picks != settings.picks || v.motion != motion);
         if stale {
-            match new_view(&gpu, size, &lights, settings, main, motion) {
+            match new_view(&gpu, &cache, size, &lights, settings, main, motion) {
                 Ok(v) => {
                     views.0.insert(entity, v);
                 }
@@ -427,6 +502,7 @@ fn prepare_views(gpu: Option<Res<Gpu>>, lights: Res<ExtractedLights>, mut views:
 fn shade_view(
     view: ViewQuery<(Entity, &ViewTarget, &ViewPrepassTextures), With<SlcCamera>>,
     gpu: Option<Res<Gpu>>,
+    cache: Res<PipelineCache>,
     mut views: ResMut<Views>,
     status: Res<SlcStatus>,
     mut ctx: RenderContext,
@@ -437,6 +513,17 @@ fn shade_view(
     let report = |r: Result<u64, String>| {
         status.0.lock().unwrap_or_else(|e| e.into_inner()).insert(v.main, r);
     };
+    // The plugin's kernels compile in Bevy's pipeline cache (in the
+    // background unless the app asks for synchronous compilation).
+    for state in [cache.get_compute_pipeline_state(gpu.unpack), cache.get_render_pipeline_state(gpu.composite)] {
+        if let CachedPipelineState::Err(e) = state {
+            report(Err(format!("slc-bevy's shaders: {e}")));
+            return;
+        }
+    }
+    let (Some(unpack), Some(composite)) = (cache.get_compute_pipeline(gpu.unpack), cache.get_render_pipeline(gpu.composite)) else {
+        return;
+    };
     let (Some(depth), Some(gbuffer)) = (prepass.depth_only_view(), prepass.deferred_view()) else {
         report(Err("the camera has no depth prepass or deferred G-buffer (add DepthPrepass and DeferredPrepass)".into()));
         return;
@@ -445,28 +532,29 @@ fn shade_view(
         report(Err("slc adds linear radiance before tonemapping: the camera must be Hdr".into()));
         return;
     }
-    let device = &gpu.ctx.device;
-    let unpack_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("slc-bevy unpack"),
-        layout: &gpu.unpack.get_bind_group_layout(0),
-        entries: &[
-            wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(gbuffer) },
-            wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&v.normal) },
-            wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&v.base) },
-            wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::TextureView(&v.material) },
-        ],
-    });
-    let shown = if v.settings.accumulate { &v.accumulated } else { &v.output };
-    let composite_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("slc-bevy composite"),
-        layout: &gpu.composite.get_bind_group_layout(0),
-        entries: &[wgpu::BindGroupEntry { binding: 4, resource: wgpu::BindingResource::TextureView(shown) }],
-    });
+    // Bevy's G-buffer comes from its texture cache: the same view most
+    // frames, so the unpack's bind group is made again only when it changes.
+    let gbuffer: &wgpu::TextureView = gbuffer;
+    if v.unpack_group.as_ref().is_none_or(|(view, _)| view != gbuffer) {
+        let group = gpu.ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("slc-bevy unpack"),
+            layout: &cache.get_bind_group_layout(&gpu.unpack_layout),
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(gbuffer) },
+                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&v.normal) },
+                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&v.base) },
+                wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::TextureView(&v.material) },
+            ],
+        });
+        v.unpack_group = Some((gbuffer.clone(), group));
+    }
+    let Some((_, unpack_group)) = &v.unpack_group else { return };
+    let composite_group = &v.composite_groups[usize::from(v.settings.accumulate)];
     let encoder = ctx.command_encoder();
     {
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc-bevy unpack"), timestamp_writes: None });
-        pass.set_pipeline(&gpu.unpack);
-        pass.set_bind_group(0, &unpack_group, &[]);
+        pass.set_pipeline(unpack);
+        pass.set_bind_group(0, unpack_group, &[]);
         pass.dispatch_workgroups(v.size.0.div_ceil(8), v.size.1.div_ceil(8), 1);
     }
     let culling = match RangeParams::new(v.settings.error_bound, 1.0) {
@@ -511,8 +599,8 @@ fn shade_view(
             occlusion_query_set: None,
             multiview_mask: None,
         });
-        pass.set_pipeline(&gpu.composite);
-        pass.set_bind_group(0, &composite_group, &[]);
+        pass.set_pipeline(composite);
+        pass.set_bind_group(0, composite_group, &[]);
         pass.draw(0..3, 0..1);
     }
     v.frame = v.frame.wrapping_add(1);

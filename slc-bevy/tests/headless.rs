@@ -266,6 +266,7 @@ fn run() -> Result<(), String> {
     let mut app = build_app();
     app.update();
     let camera = app.world().resource::<Target>().1;
+    slc_functions_in_a_bevy_shader(&mut app)?;
 
     // Phase 1: the scene as built.
     let report = compare(&mut app, FRAMES, "")?;
@@ -306,6 +307,94 @@ fn run() -> Result<(), String> {
     if !matches!(status, Some(Ok(n)) if n > 0) {
         return Err(format!("slc did not shade the camera: {status:?}"));
     }
+    Ok(())
+}
+
+/// A Bevy shader (WESL, compiled by Bevy's pipeline cache) imports slc's
+/// functions from the package the plugin registers (`slc::xi`,
+/// `slc::range`); run on Bevy's device, they equal slc-core's in Rust.
+fn slc_functions_in_a_bevy_shader(app: &mut App) -> Result<(), String> {
+    use bevy::render::render_resource::binding_types::storage_buffer_sized;
+    use bevy::render::render_resource::{
+        BindGroupLayoutDescriptor, BindGroupLayoutEntries, CachedPipelineState, ComputePipelineDescriptor, PipelineCache, ShaderStages,
+    };
+    use bevy::render::renderer::{RenderDevice, RenderQueue};
+    const N: u32 = 256;
+    let source = "import slc::xi::xi_for;
+import slc::range::{random_range2, slc_weight};
+
+@group(0) @binding(0) var<storage, read_write> out: array<f32>;
+
+@compute @workgroup_size(64)
+fn main(@builtin(global_invocation_id) gid: vec3u) {
+    let i = gid.x;
+    out[2u * i] = random_range2(2.0, xi_for(7u, 3u, i));
+    out[2u * i + 1u] = slc_weight(2.0, f32(i) * 0.1);
+}
+";
+    let shader = app.world_mut().resource_mut::<Assets<Shader>>().add(Shader::from_wesl(source, "embedded://slc_bevy_test/probe.wesl"));
+    let layout = BindGroupLayoutDescriptor::new("probe", &BindGroupLayoutEntries::single(ShaderStages::COMPUTE, storage_buffer_sized(false, None)));
+    let id = app.sub_app(bevy::render::RenderApp).world().resource::<PipelineCache>().queue_compute_pipeline(ComputePipelineDescriptor {
+        layout: vec![layout.clone()],
+        shader,
+        entry_point: Some("main".into()),
+        ..default()
+    });
+    for _ in 0..20 {
+        app.update();
+        let world = app.sub_app(bevy::render::RenderApp).world();
+        match world.resource::<PipelineCache>().get_compute_pipeline_state(id) {
+            CachedPipelineState::Ok(_) => break,
+            CachedPipelineState::Err(e) => return Err(format!("a Bevy shader importing slc's WESL package: {e}")),
+            _ => {}
+        }
+    }
+    let world = app.sub_app(bevy::render::RenderApp).world();
+    let cache = world.resource::<PipelineCache>();
+    let pipeline = cache.get_compute_pipeline(id).ok_or("the probe pipeline never compiled")?;
+    let device = world.resource::<RenderDevice>().wgpu_device().clone();
+    let queue: wgpu::Queue = (**world.resource::<RenderQueue>()).clone();
+    let size = u64::from(2 * N * 4);
+    let out = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size,
+        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+        mapped_at_creation: false,
+    });
+    let read = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout: &cache.get_bind_group_layout(&layout),
+        entries: &[wgpu::BindGroupEntry { binding: 0, resource: out.as_entire_binding() }],
+    });
+    let mut enc = device.create_command_encoder(&Default::default());
+    {
+        let mut pass = enc.begin_compute_pass(&Default::default());
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, &group, &[]);
+        pass.dispatch_workgroups(N / 64, 1, 1);
+    }
+    enc.copy_buffer_to_buffer(&out, 0, &read, 0, size);
+    queue.submit([enc.finish()]);
+    read.slice(..).map_async(wgpu::MapMode::Read, |_| {});
+    device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| e.to_string())?;
+    let got: Vec<f32> =
+        read.slice(..).get_mapped_range().map_err(|e| e.to_string())?.chunks_exact(4).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]])).collect();
+    for i in 0..N {
+        let want = [slc_core::range::random_range2(2.0, slc_core::xi::xi_for(7, 3, i)), slc_core::range::slc_weight(2.0, i as f32 * 0.1)];
+        for (k, w) in want.into_iter().enumerate() {
+            let g = got[(2 * i) as usize + k];
+            if (g - w).abs() > 1e-5 * w.abs().max(1.0) {
+                return Err(format!("slc's WESL function in Bevy, item {i}.{k}: {g} vs Rust {w}"));
+            }
+        }
+    }
+    println!("a Bevy WESL shader importing slc::xi and slc::range: {N} lights' ranges and weights equal slc-core's");
     Ok(())
 }
 
