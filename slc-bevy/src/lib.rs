@@ -27,7 +27,8 @@
 //!     .run();
 //! ```
 //!
-//! **What slc takes over**: every entity with [`PointLight`] and [`SlcLight`]
+//! **What slc takes over**: every entity with [`PointLight`] or [`SpotLight`]
+//! and [`SlcLight`]
 //! (the marker puts the light on no render layer, `RenderLayers::none()`,
 //! so Bevy's own lighting, clustering and shadow maps skip it; its `range`
 //! is ignored). Lights move, spawn and despawn freely: they are read every
@@ -52,8 +53,7 @@
 //!
 //! **Not applied**: shadows (slc's lights are unshadowed, as the direct
 //! pass documents), the light's `radius` (a point light), clearcoat,
-//! anisotropy and transmission, spot lights (Bevy's cone falloff differs
-//! from slc's spot profile; they stay Bevy's), forward-rendered materials
+//! anisotropy and transmission, light textures, forward-rendered materials
 //! (only the deferred G-buffer is read). A single frame is noisy by design
 //! (SLC's random ranges and the picks), and unbiased: the mean over frames
 //! is Bevy's own shading with unbounded ranges (the headless test checks
@@ -98,7 +98,8 @@ use slc_wgpu::passes::{
     TemporalPassDesc,
 };
 use slc_wgpu::{
-    Culling, GBuffer, GpuContext, Light, LightSet, PointLight as SlcPoint, RangeParams, Surface, SurfaceDesc, TemporalSettings, TemporalView,
+    Culling, GBuffer, GpuContext, Light, LightSet, PointLight as SlcPoint, RangeParams, SpotLight as SlcSpot, Surface, SurfaceDesc, TemporalSettings,
+    TemporalView,
 };
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
@@ -141,7 +142,9 @@ impl Default for SlcCamera {
     }
 }
 
-/// Marks a [`PointLight`] that slc shades instead of Bevy: it is put on no
+/// Marks a [`PointLight`] or [`SpotLight`] (Bevy's cone and fall-off,
+/// `slc_core::light::spot_falloff`'s quadratic shape) that slc shades
+/// instead of Bevy: it is put on no
 /// render layer (`RenderLayers::none()`, replacing any it had), so Bevy's
 /// clustered lighting and shadows skip it, and its `range` is ignored
 /// (slc's ranges are random and unbiased). Removing the marker removes the
@@ -189,18 +192,56 @@ impl Plugin for SlcPlugin {
     }
 }
 
-/// The lights slc shades this frame: position and RGB luminous intensity
-/// (candela: Bevy's lumens / 4π), before the camera's exposure.
+/// The lights slc shades this frame, in Bevy's terms: RGB luminous
+/// intensity in candela (Bevy's lumens / 4π, for spots too, as Bevy does),
+/// before the camera's exposure.
 #[derive(Resource, Default)]
-struct ExtractedLights(Vec<(glam::Vec3, glam::Vec3)>);
+struct ExtractedLights(Vec<BevyLight>);
 
-fn extract_lights(mut out: ResMut<ExtractedLights>, lights: Extract<Query<(&PointLight, &GlobalTransform), With<SlcLight>>>) {
+#[derive(Clone, Copy, Debug)]
+enum BevyLight {
+    Point {
+        position: glam::Vec3,
+        candela: glam::Vec3,
+    },
+    /// Bevy's spot: axis the transform's forward (−Z); the cone angles as
+    /// Bevy's extraction clamps them (outer below π/2, inner at most outer).
+    Spot {
+        position: glam::Vec3,
+        axis: glam::Vec3,
+        candela: glam::Vec3,
+        inner: f32,
+        outer: f32,
+    },
+}
+
+fn candela(color: Color, lumens: f32) -> glam::Vec3 {
+    let c = LinearRgba::from(color);
+    glam::Vec3::new(c.red, c.green, c.blue) * (lumens / (4.0 * std::f32::consts::PI))
+}
+
+fn to_vec3(v: Vec3) -> glam::Vec3 {
+    glam::Vec3::new(v.x, v.y, v.z)
+}
+
+fn extract_lights(
+    mut out: ResMut<ExtractedLights>,
+    points: Extract<Query<(&PointLight, &GlobalTransform), With<SlcLight>>>,
+    spots: Extract<Query<(&SpotLight, &GlobalTransform), With<SlcLight>>>,
+) {
     out.0.clear();
-    for (light, transform) in &lights {
-        let p = transform.translation();
-        let c = LinearRgba::from(light.color);
-        let cd = light.intensity / (4.0 * std::f32::consts::PI);
-        out.0.push((glam::Vec3::new(p.x, p.y, p.z), glam::Vec3::new(c.red, c.green, c.blue) * cd));
+    for (light, transform) in &points {
+        out.0.push(BevyLight::Point { position: to_vec3(transform.translation()), candela: candela(light.color, light.intensity) });
+    }
+    for (light, transform) in &spots {
+        let outer = light.outer_angle.min(std::f32::consts::FRAC_PI_2 - 1e-4);
+        out.0.push(BevyLight::Spot {
+            position: to_vec3(transform.translation()),
+            axis: to_vec3(*transform.forward()),
+            candela: candela(light.color, light.intensity),
+            inner: light.inner_angle.clamp(0.0, outer.max(0.0)),
+            outer: outer.max(0.0),
+        });
     }
 }
 
@@ -340,8 +381,19 @@ fn texture(device: &wgpu::Device, (w, h): (u32, u32), label: &str, usage: wgpu::
 }
 
 /// The view's lights in slc's form: candela times the camera's exposure.
-fn slc_lights(lights: &[(glam::Vec3, glam::Vec3)], exposure: f32) -> Result<Vec<Light>, String> {
-    lights.iter().map(|&(p, i)| SlcPoint::new(p, i * exposure).map(Light::Point).map_err(|e| format!("light at {p}: {e}"))).collect()
+fn slc_lights(lights: &[BevyLight], exposure: f32) -> Result<Vec<Light>, String> {
+    lights
+        .iter()
+        .map(|l| match *l {
+            BevyLight::Point { position, candela } => {
+                SlcPoint::new(position, candela * exposure).map(Light::Point).map_err(|e| format!("point light at {position}: {e}"))
+            }
+            // Bevy's spot fall-off is the quadratic one.
+            BevyLight::Spot { position, axis, candela, inner, outer } => SlcSpot::new(position, axis, candela * exposure, inner, outer)
+                .map(|s| Light::Spot(s.with_quadratic_falloff()))
+                .map_err(|e| format!("spot light at {position}: {e}")),
+        })
+        .collect()
 }
 
 fn new_view(
@@ -398,9 +450,9 @@ fn new_view(
     })
 }
 
-/// The light types the pass compiles: points only.
+/// The light types the pass compiles: Bevy's point and spot lights.
 fn slc_shared_lights() -> slc_shared_shaders::LightSet {
-    slc_shared_shaders::LightSet { point: true, spot: false, ies: false, triangle: false, vpl: false }
+    slc_shared_shaders::LightSet { point: true, spot: true, ies: false, triangle: false, vpl: false }
 }
 
 fn to_glam(m: Mat4) -> glam::Mat4 {

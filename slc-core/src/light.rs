@@ -91,14 +91,17 @@ crate::shared! {
         return max(dot(n_l, v), 0.0) * max(-dot(n_x, v), 0.0) * INV_PI / (m * m);
     }
 
-    /// Spot fall-off: `smoothstep(cos_outer, cos_inner, cos θ)`, a hard edge
-    /// when the two cones coincide.
-    pub fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
+    /// Spot fall-off of `t = saturate((cos θ − cos_outer)/(cos_inner −
+    /// cos_outer))`: `smoothstep`, `t²(3 − 2t)`, for `shape = 0` (pbrt-v4's
+    /// `SpotLight`); `t²` for `shape = 1` (Bevy's and Filament's spot, whose
+    /// `saturate(cos θ·scale + offset)²` is this `t²`); a hard edge when the
+    /// two cones coincide.
+    pub fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32, shape: f32) -> f32 {
         if cos_inner <= cos_outer {
             return select(0.0, 1.0, cos_theta >= cos_outer);
         }
         let t: f32 = saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
-        return t * t * (3.0 - 2.0 * t);
+        return select(t * t * (3.0 - 2.0 * t), t * t, shape > 0.5);
     }
 
     /// Lambertian emitter per unit radiance: `I(w)/L = A · max(n·w, 0)`, so
@@ -213,7 +216,9 @@ impl Vpl {
     }
 }
 
-/// Spot light: `I(w) = I₀ · smoothstep(cos θ_outer, cos θ_inner, d·w)`.
+/// Spot light: `I(w) = I₀ · smoothstep(cos θ_outer, cos θ_inner, d·w)`,
+/// or with [`SpotLight::with_quadratic_falloff`] Bevy's `t²`
+/// ([`spot_falloff`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SpotLight {
     position: Vec3,
@@ -221,6 +226,7 @@ pub struct SpotLight {
     intensity: Vec3,
     cos_outer: f32,
     cos_inner: f32,
+    quadratic: bool,
 }
 
 impl SpotLight {
@@ -237,7 +243,17 @@ impl SpotLight {
             intensity: check_rgb("intensity", intensity)?,
             cos_outer: libm::cosf(outer),
             cos_inner: libm::cosf(inner),
+            quadratic: false,
         })
+    }
+    /// The same spot with Bevy's (and Filament's) fall-off `t²` between
+    /// the cones instead of the smoothstep ([`spot_falloff`]'s `shape` 1).
+    pub fn with_quadratic_falloff(self) -> Self {
+        Self { quadratic: true, ..self }
+    }
+    /// [`spot_falloff`]'s `shape`: 0 (smoothstep) or 1 (quadratic).
+    pub fn falloff_shape(&self) -> f32 {
+        if self.quadratic { 1.0 } else { 0.0 }
     }
     /// Position.
     pub fn position(&self) -> Vec3 {
@@ -438,9 +454,9 @@ impl Light {
 
     /// RGB emitted power Φ (W), the one formula both power sampling and
     /// the light BVH use: point `4π I`; VPL `Φ` (its cosine lobe `Φ/π · cos`
-    /// integrates to Φ); spot `2π I₀ ((1 − cos θ_i) + (cos θ_i − cos θ_o)/2)`,
-    /// the exact integral of its smoothstep fall-off (pbrt-v4's
-    /// `SpotLight::Phi`); IES `tint ×` the profile's flux integrated from its
+    /// integrates to Φ); spot `2π I₀ ((1 − cos θ_i) + k (cos θ_i − cos θ_o))`,
+    /// the exact integral of its fall-off (`k = 1/2` for the smoothstep,
+    /// pbrt-v4's `SpotLight::Phi`; `1/3` for the quadratic); IES `tint ×` the profile's flux integrated from its
     /// table; one-sided Lambertian triangle `π L A`. For IES lights this
     /// integrates the table (0.5° grid): use [`emitted_powers`] for many
     /// lights sharing profiles.
@@ -449,7 +465,10 @@ impl Light {
         match self {
             Light::Point(l) => l.intensity * (4.0 * pi),
             Light::Vpl(l) => l.flux,
-            Light::Spot(l) => l.intensity * (2.0 * pi * ((1.0 - l.cos_inner) + 0.5 * (l.cos_inner - l.cos_outer))),
+            Light::Spot(l) => {
+                let k = if l.quadratic { 1.0 / 3.0 } else { 0.5 };
+                l.intensity * (2.0 * pi * ((1.0 - l.cos_inner) + k * (l.cos_inner - l.cos_outer)))
+            }
             Light::Ies(l) => l.tint * l.profile.total_flux() as f32,
             Light::Triangle(l) => l.radiance * (pi * l.area),
         }
@@ -460,7 +479,7 @@ impl Light {
         match self {
             Light::Point(l) => l.intensity,
             Light::Vpl(l) => l.flux * vpl_lobe(l.normal, w),
-            Light::Spot(l) => l.intensity * spot_falloff(dot(l.direction, w), l.cos_outer, l.cos_inner),
+            Light::Spot(l) => l.intensity * spot_falloff(dot(l.direction, w), l.cos_outer, l.cos_inner, l.falloff_shape()),
             Light::Ies(l) => l.tint * l.candela(w),
             Light::Triangle(l) => l.radiance * triangle_lobe(l.normal, l.area, w),
         }
@@ -519,6 +538,37 @@ mod tests {
         assert!(at(0.3) > at(0.4));
         assert!(SpotLight::new(Vec3::ZERO, Vec3::Y, Vec3::ONE, 0.6, 0.5).is_err());
         assert!(SpotLight::new(Vec3::ZERO, Vec3::ZERO, Vec3::ONE, 0.1, 0.5).is_err());
+    }
+
+    /// The quadratic fall-off is Bevy's spot (`bevy_pbr` 0.20's
+    /// `spot_light`: `saturate(cos θ·scale + offset)²`, `scale = 1/(cos_i −
+    /// cos_o)`, `offset = −cos_o·scale`), and both shapes' [`Light::power`]
+    /// is the integral of the intensity over the sphere (midpoint rule).
+    #[test]
+    fn spot_falloff_quadratic_is_bevys_and_powers_integrate() {
+        let (inner, outer) = (0.2f32, 0.7f32);
+        let (ci, co) = (libm::cosf(inner) as f64, libm::cosf(outer) as f64);
+        let smooth = SpotLight::new(Vec3::ZERO, -Vec3::Y, Vec3::ONE, inner, outer).unwrap();
+        for (s, quadratic) in [(smooth, false), (smooth.with_quadratic_falloff(), true)] {
+            let l = Light::Spot(s);
+            let at = |a: f64| l.intensity(Vec3::new(libm::sin(a) as f32, -libm::cos(a) as f32, 0.0)).x as f64;
+            if quadratic {
+                let scale = 1.0 / (ci - co);
+                for a in [0.1, 0.25, 0.4, 0.55, 0.69, 0.8] {
+                    let bevy = (libm::cos(a) * scale - co * scale).clamp(0.0, 1.0).powi(2);
+                    assert!((at(a) - bevy).abs() < 1e-5, "{a}: {} vs Bevy {bevy}", at(a));
+                }
+            }
+            let m = 20_000;
+            let integral: f64 = (0..m)
+                .map(|i| {
+                    let a = core::f64::consts::PI * (i as f64 + 0.5) / m as f64;
+                    at(a) * 2.0 * core::f64::consts::PI * libm::sin(a) * core::f64::consts::PI / m as f64
+                })
+                .sum();
+            let p = l.power().x as f64;
+            assert!((p - integral).abs() < 1e-4 * p, "quadratic {quadratic}: power {p} vs integral {integral}");
+        }
     }
 
     #[test]

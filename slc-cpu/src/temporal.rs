@@ -141,7 +141,7 @@ impl Temporal {
                     (Some(prev), None) => this.reprojected(p, nrm, &prev),
                     (Some(_), Some(m)) => this.moved(i, p, nrm, m[i], view.eye),
                 };
-                let value = temporal_color(signal[i], h.value, h.moments.y, settings.max_history);
+                let value = temporal_color(signal[i], h.value, h.moments.y, h.moments.x, settings.max_history);
                 let moments = temporal_moments(signal[i], h.moments.x, h.moments.y, h.value.w, value.w, (p - view.eye).length());
                 Texel { value, moments, surface: nrm.extend(nrm.dot(p)) }
             };
@@ -298,7 +298,12 @@ mod tests {
             let s: Vec<Vec3> = noise(64 * 64, f).iter().map(|v| Vec3::splat(1.0) + *v * 0.01).collect();
             t.accumulate(&s, gb, &view, &ts).unwrap();
         }
+        // A jump far beyond the noise: its first frame could be a lone
+        // outlier and enters the mean (history 11 frames); its second
+        // frame makes it a change, and the history restarts from it.
         let jump = vec![Vec3::splat(2.0); 64 * 64];
+        t.accumulate(&jump, gb, &view, &ts).unwrap();
+        assert!((0..jump.len()).filter(|&i| gb.valid(i)).all(|i| t.history_lengths()[i] == 11.0), "a lone outlier keeps the history");
         let out = t.accumulate(&jump, gb, &view, &ts).unwrap();
         for i in (0..out.len()).filter(|&i| gb.valid(i)) {
             assert_eq!(t.history_lengths()[i], 1.0);

@@ -37,7 +37,7 @@ slc_core::shared! {
         pub p1: vec3f,
         /// Kind-specific scalar (cos outer, area).
         pub a: f32,
-        /// Reference direction or third vertex.
+        /// Reference direction or third vertex (a spot: its fall-off shape in x).
         pub p2: vec3f,
         /// Kind-specific scalar (cos inner).
         pub b: f32,
@@ -553,6 +553,8 @@ pub fn pack_lights(lights: &[Light]) -> (Vec<GpuLight>, Vec<f32>) {
             Light::Spot(s) => {
                 let (cos_outer, cos_inner) = s.cone_cosines();
                 (g.kind, g.p1, g.a, g.b) = (LIGHT_SPOT, s.direction(), cos_outer, cos_inner);
+                // p2.x: the fall-off's shape (slc_core::light::spot_falloff).
+                g.p2 = vec3f(s.falloff_shape(), 0.0, 0.0);
             }
             Light::Ies(i) => {
                 let key = std::sync::Arc::as_ptr(i.profile_arc());

@@ -97,7 +97,9 @@ fn gpu_matches_cpu() {
         if f == 10 {
             fresh_after_move = got.iter().enumerate().filter(|(i, g)| gb.valid(*i) && g[3] == 1.0).count();
         }
-        if f == 13 {
+        // The jump's second frame (its first frame alone could be an
+        // outlier: a change must persist): the history restarted there.
+        if f == 14 {
             reset_by_jump = got.iter().enumerate().filter(|(i, g)| gb.valid(*i) && g[3] == 1.0).count() * 100 / lit;
         }
         if changed {

@@ -7,7 +7,7 @@ fn light_intensity(l: GpuLight, w: vec3f) -> vec3f {
         case LIGHT_POINT: { return l.intensity; }
 {% endif %}
 {% if spot %}
-        case LIGHT_SPOT: { return l.intensity * spot_falloff(dot(l.p1, w), l.a, l.b); }
+        case LIGHT_SPOT: { return l.intensity * spot_falloff(dot(l.p1, w), l.a, l.b, l.p2.x); }
 {% endif %}
 {% if ies %}
         case LIGHT_IES: { return l.intensity * ies_light_candela(0u, l.ies_base, l.p1, l.p2, w); }

@@ -62,7 +62,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         hv = history_mean(v, weight);
         hn = history_mean(m, weight);
     }
-    let value = temporal_color(c, hv, hn.y, params.max_history);
+    let value = temporal_color(c, hv, hn.y, hn.x, params.max_history);
     textureStore(out_tex, texel, value);
     textureStore(next_value, texel, value);
     textureStore(next_noise, texel, temporal_moments(c, hn.x, hn.y, hv.w, value.w, length(p - view.eye)));

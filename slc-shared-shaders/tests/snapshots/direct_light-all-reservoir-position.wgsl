@@ -221,12 +221,12 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     return cos_x_1;
 }
 
-fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
+fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32, shape: f32) -> f32 {
     if (cos_inner <= cos_outer) {
         return select(0f, 1f, (cos_theta >= cos_outer));
     }
     let t_2 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t_2 * t_2) * (3f - (2f * t_2)));
+    return select(((t_2 * t_2) * (3f - (2f * t_2))), (t_2 * t_2), (shape > 0.5f));
 }
 
 fn triangle_lobe(n_1: vec3<f32>, area: f32, w_1: vec3<f32>) -> f32 {
@@ -526,17 +526,17 @@ fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
             return l.intensity;
         }
         case 1u: {
-            let _e9 = spot_falloff(dot(l.p1_, w_3), l.a, l.b);
-            return (l.intensity * _e9);
+            let _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
+            return (l.intensity * _e11);
         }
         case 2u: {
-            let _e16 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3);
-            return (l.intensity * _e16);
+            let _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3);
+            return (l.intensity * _e18);
         }
         case 3u: {
-            let _e22 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            let _e24 = triangle_lobe(_e22, l.a, w_3);
-            return (l.intensity * _e24);
+            let _e24 = triangle_normal(l.p0_, l.p1_, l.p2_);
+            let _e26 = triangle_lobe(_e24, l.a, w_3);
+            return (l.intensity * _e26);
         }
         default: {
             return vec3(0f);

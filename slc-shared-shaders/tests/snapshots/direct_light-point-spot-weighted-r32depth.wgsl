@@ -226,12 +226,12 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     return cos_x_1;
 }
 
-fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
+fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32, shape: f32) -> f32 {
     if (cos_inner <= cos_outer) {
         return select(0f, 1f, (cos_theta >= cos_outer));
     }
     let t_1 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t_1 * t_1) * (3f - (2f * t_1)));
+    return select(((t_1 * t_1) * (3f - (2f * t_1))), (t_1 * t_1), (shape > 0.5f));
 }
 
 fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
@@ -406,8 +406,8 @@ fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
             return l.intensity;
         }
         case 1u: {
-            let _e9 = spot_falloff(dot(l.p1_, w_3), l.a, l.b);
-            return (l.intensity * _e9);
+            let _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
+            return (l.intensity * _e11);
         }
         default: {
             return vec3(0f);

@@ -332,12 +332,12 @@ fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v_2: vec3<f32>, min_d2_: f32) ->
     return (((max(dot(n_l, v_2), 0f) * max(-(dot(n_x, v_2)), 0f)) * INV_PI) / (m * m));
 }
 
-fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
+fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32, shape: f32) -> f32 {
     if (cos_inner <= cos_outer) {
         return select(0f, 1f, (cos_theta >= cos_outer));
     }
     let t_2 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t_2 * t_2) * (3f - (2f * t_2)));
+    return select(((t_2 * t_2) * (3f - (2f * t_2))), (t_2 * t_2), (shape > 0.5f));
 }
 
 fn triangle_lobe(n_2: vec3<f32>, area: f32, w_2: vec3<f32>) -> f32 {
@@ -1198,8 +1198,8 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> {
     var local_14: bool;
 
-    let n_36 = cross((b_4 - a_5), (c_7 - a_5));
-    let l2_ = dot(n_36, n_36);
+    let n_37 = cross((b_4 - a_5), (c_7 - a_5));
+    let l2_ = dot(n_37, n_37);
     if !(!((l2_ > 0f))) {
         local_14 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
@@ -1209,7 +1209,7 @@ fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> 
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
-    return (n_36 / vec3(sqrt(l2_)));
+    return (n_37 / vec3(sqrt(l2_)));
 }
 
 fn face_against(n_25: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
@@ -1246,8 +1246,8 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>
     if _e24 {
         return facing;
     }
-    let n_37 = (s_6 / vec3(sqrt(l2_1)));
-    return select(n_37, -(n_37), (dot(n_37, facing) < 0f));
+    let n_38 = (s_6 / vec3(sqrt(l2_1)));
+    return select(n_38, -(n_38), (dot(n_38, facing) < 0f));
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, c_9: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
@@ -1682,24 +1682,44 @@ fn history_tap_weight_motion(w_11: f32, n_35: vec3<f32>, nh_2: vec3<f32>, d_8: f
     return select(0f, w_11, _e23);
 }
 
-fn temporal_color(c_11: vec3<f32>, h_1: vec4<f32>, noise_1: f32, max_history_1: f32) -> vec4<f32> {
-    let hc = vec3<f32>(h_1.x, h_1.y, h_1.z);
-    let _e8 = luminance(c_11);
-    let _e9 = luminance(hc);
-    let _e11 = temporal_change(_e8, _e9, noise_1, h_1.w);
-    let _e13 = next_history_length(h_1.w, _e11, max_history_1);
-    let _e15 = temporal_alpha(_e13);
-    let v_24 = (hc + ((c_11 - hc) * _e15));
-    return vec4<f32>(v_24.x, v_24.y, v_24.z, _e13);
+fn persistent_change(l_7: f32, last: f32, m1_1: f32, noise_1: f32, n_36: f32) -> f32 {
+    if (((l_7 - m1_1) * (last - m1_1)) <= 0f) {
+        return 0f;
+    }
+    let _e11 = temporal_change(l_7, m1_1, noise_1, n_36);
+    let _e12 = temporal_change(last, m1_1, noise_1, n_36);
+    return min(_e11, _e12);
 }
 
-fn temporal_moments(c_12: vec3<f32>, last: f32, noise_2: f32, prev_len: f32, len_3: f32, depth_1: f32) -> vec4<f32> {
+fn temporal_color(c_11: vec3<f32>, h_1: vec4<f32>, noise_2: f32, last_1: f32, max_history_1: f32) -> vec4<f32> {
+    let hc = vec3<f32>(h_1.x, h_1.y, h_1.z);
+    let _e9 = luminance(c_11);
+    let _e10 = luminance(hc);
+    let _e12 = persistent_change(_e9, last_1, _e10, noise_2, h_1.w);
+    let _e14 = next_history_length(h_1.w, _e12, max_history_1);
+    let _e16 = temporal_alpha(_e14);
+    let v_24 = (hc + ((c_11 - hc) * _e16));
+    return vec4<f32>(v_24.x, v_24.y, v_24.z, _e14);
+}
+
+fn temporal_moments(c_12: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, len_3: f32, depth_1: f32) -> vec4<f32> {
+    var local_31: bool;
+
     let _e6 = luminance(c_12);
     if (prev_len <= 0f) {
         return vec4<f32>(_e6, 0f, depth_1, 0f);
     }
-    let d_11 = (_e6 - last);
-    let _e19 = temporal_alpha((len_3 - 1f));
-    return vec4<f32>(_e6, (noise_2 + ((((0.5f * d_11) * d_11) - noise_2) * _e19)), depth_1, 0f);
+    let d_11 = (_e6 - last_2);
+    let d2_19 = ((0.5f * d_11) * d_11);
+    let cap = (16f * noise_3);
+    if (prev_len >= TEMPORAL_MIN_MOMENTS) {
+        local_31 = (noise_3 > 0f);
+    } else {
+        local_31 = false;
+    }
+    let _e26 = local_31;
+    let sample = select(d2_19, min(d2_19, cap), _e26);
+    let _e31 = temporal_alpha((len_3 - 1f));
+    return vec4<f32>(_e6, (noise_3 + ((sample - noise_3) * _e31)), depth_1, 0f);
 }
 

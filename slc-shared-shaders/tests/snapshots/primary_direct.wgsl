@@ -99,12 +99,12 @@ fn inverse_square(d2_: f32) -> f32 {
     return (1f / max(d2_, MIN_D2_));
 }
 
-fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
+fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32, shape: f32) -> f32 {
     if (cos_inner <= cos_outer) {
         return select(0f, 1f, (cos_theta >= cos_outer));
     }
     let t = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t * t) * (3f - (2f * t)));
+    return select(((t * t) * (3f - (2f * t))), (t * t), (shape > 0.5f));
 }
 
 fn light_map_texel(a_1: f32, size: u32) -> u32 {
@@ -161,8 +161,8 @@ fn shadow_lit(d_1: f32, d_map: f32, bias: f32) -> bool {
 fn light_intensity(l: GpuLight, w: vec3<f32>) -> vec3<f32> {
     switch l.kind {
         case 1u: {
-            let _e8 = spot_falloff(dot(l.p1_, w), l.a, l.b);
-            return (l.intensity * _e8);
+            let _e10 = spot_falloff(dot(l.p1_, w), l.a, l.b, l.p2_.x);
+            return (l.intensity * _e10);
         }
         default: {
             return vec3(0f);

@@ -259,12 +259,12 @@ fn vpl_lobe(n_1: vec3<f32>, w_1: vec3<f32>) -> f32 {
     return (max(dot(n_1, w_1), 0f) * INV_PI);
 }
 
-fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
+fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32, shape: f32) -> f32 {
     if (cos_inner <= cos_outer) {
         return select(0f, 1f, (cos_theta >= cos_outer));
     }
     let t_1 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t_1 * t_1) * (3f - (2f * t_1)));
+    return select(((t_1 * t_1) * (3f - (2f * t_1))), (t_1 * t_1), (shape > 0.5f));
 }
 
 fn triangle_lobe(n_2: vec3<f32>, area: f32, w_2: vec3<f32>) -> f32 {
@@ -922,21 +922,21 @@ fn light_intensity(l_4: GpuLight, w_5: vec3<f32>) -> vec3<f32> {
             return l_4.intensity;
         }
         case 1u: {
-            let _e9 = spot_falloff(dot(l_4.p1_, w_5), l_4.a, l_4.b);
-            return (l_4.intensity * _e9);
+            let _e11 = spot_falloff(dot(l_4.p1_, w_5), l_4.a, l_4.b, l_4.p2_.x);
+            return (l_4.intensity * _e11);
         }
         case 2u: {
-            let _e16 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_5);
-            return (l_4.intensity * _e16);
+            let _e18 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_5);
+            return (l_4.intensity * _e18);
         }
         case 3u: {
-            let _e22 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
-            let _e24 = triangle_lobe(_e22, l_4.a, w_5);
-            return (l_4.intensity * _e24);
+            let _e24 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
+            let _e26 = triangle_lobe(_e24, l_4.a, w_5);
+            return (l_4.intensity * _e26);
         }
         case 4u: {
-            let _e28 = vpl_lobe(l_4.p1_, w_5);
-            return (l_4.intensity * _e28);
+            let _e30 = vpl_lobe(l_4.p1_, w_5);
+            return (l_4.intensity * _e30);
         }
         default: {
             return vec3(0f);

@@ -98,12 +98,12 @@ var<uniform> params: MapParams;
 @group(0) @binding(1) 
 var<storage> materials: array<GpuMaterial>;
 
-fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32) -> f32 {
+fn spot_falloff(cos_theta: f32, cos_outer: f32, cos_inner: f32, shape: f32) -> f32 {
     if (cos_inner <= cos_outer) {
         return select(0f, 1f, (cos_theta >= cos_outer));
     }
     let t = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t * t) * (3f - (2f * t)));
+    return select(((t * t) * (3f - (2f * t))), (t * t), (shape > 0.5f));
 }
 
 fn face_against(n: vec3<f32>, dir_1: vec3<f32>) -> vec3<f32> {
@@ -139,8 +139,8 @@ fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
 fn light_intensity(l: GpuLight, w_1: vec3<f32>) -> vec3<f32> {
     switch l.kind {
         case 1u: {
-            let _e8 = spot_falloff(dot(l.p1_, w_1), l.a, l.b);
-            return (l.intensity * _e8);
+            let _e10 = spot_falloff(dot(l.p1_, w_1), l.a, l.b, l.p2_.x);
+            return (l.intensity * _e10);
         }
         default: {
             return vec3(0f);

@@ -201,25 +201,45 @@ fn history_tap_weight_motion(w: f32, n_3: vec3<f32>, nh: vec3<f32>, d: f32, dh: 
     return select(0f, w, _e23);
 }
 
-fn temporal_color(c_1: vec3<f32>, h: vec4<f32>, noise_1: f32, max_history_1: f32) -> vec4<f32> {
-    let hc = vec3<f32>(h.x, h.y, h.z);
-    let _e8 = luminance(c_1);
-    let _e9 = luminance(hc);
-    let _e11 = temporal_change(_e8, _e9, noise_1, h.w);
-    let _e13 = next_history_length(h.w, _e11, max_history_1);
-    let _e15 = temporal_alpha(_e13);
-    let v_1 = (hc + ((c_1 - hc) * _e15));
-    return vec4<f32>(v_1.x, v_1.y, v_1.z, _e13);
+fn persistent_change(l_1: f32, last: f32, m1_1: f32, noise_1: f32, n_4: f32) -> f32 {
+    if (((l_1 - m1_1) * (last - m1_1)) <= 0f) {
+        return 0f;
+    }
+    let _e11 = temporal_change(l_1, m1_1, noise_1, n_4);
+    let _e12 = temporal_change(last, m1_1, noise_1, n_4);
+    return min(_e11, _e12);
 }
 
-fn temporal_moments(c_2: vec3<f32>, last: f32, noise_2: f32, prev_len: f32, len_1: f32, depth: f32) -> vec4<f32> {
+fn temporal_color(c_1: vec3<f32>, h: vec4<f32>, noise_2: f32, last_1: f32, max_history_1: f32) -> vec4<f32> {
+    let hc = vec3<f32>(h.x, h.y, h.z);
+    let _e9 = luminance(c_1);
+    let _e10 = luminance(hc);
+    let _e12 = persistent_change(_e9, last_1, _e10, noise_2, h.w);
+    let _e14 = next_history_length(h.w, _e12, max_history_1);
+    let _e16 = temporal_alpha(_e14);
+    let v_1 = (hc + ((c_1 - hc) * _e16));
+    return vec4<f32>(v_1.x, v_1.y, v_1.z, _e14);
+}
+
+fn temporal_moments(c_2: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, len_1: f32, depth: f32) -> vec4<f32> {
+    var local_7: bool;
+
     let _e6 = luminance(c_2);
     if (prev_len <= 0f) {
         return vec4<f32>(_e6, 0f, depth, 0f);
     }
-    let d_1 = (_e6 - last);
-    let _e19 = temporal_alpha((len_1 - 1f));
-    return vec4<f32>(_e6, (noise_2 + ((((0.5f * d_1) * d_1) - noise_2) * _e19)), depth, 0f);
+    let d_1 = (_e6 - last_2);
+    let d2_ = ((0.5f * d_1) * d_1);
+    let cap = (16f * noise_3);
+    if (prev_len >= TEMPORAL_MIN_MOMENTS) {
+        local_7 = (noise_3 > 0f);
+    } else {
+        local_7 = false;
+    }
+    let _e26 = local_7;
+    let sample = select(d2_, min(d2_, cap), _e26);
+    let _e31 = temporal_alpha((len_1 - 1f));
+    return vec4<f32>(_e6, (noise_3 + ((sample - noise_3) * _e31)), depth, 0f);
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
@@ -228,25 +248,25 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
-    var local_7: bool;
+    var local_8: bool;
 
     let _e3 = view.width;
     let _e8 = view.width;
     let texel_1 = vec2<i32>(i32((i % _e3)), i32((i / _e8)));
     let _e12 = surface_at(texel_1);
     let _e15 = textureLoad(normal_tex, texel_1, 0i);
-    let n_4 = _e15.xyz;
-    let len2_ = dot(n_4, n_4);
+    let n_5 = _e15.xyz;
+    let len2_ = dot(n_5, n_5);
     if (_e12.w > 0f) {
-        local_7 = (len2_ > 0f);
+        local_8 = (len2_ > 0f);
     } else {
-        local_7 = false;
+        local_8 = false;
     }
-    let valid = local_7;
+    let valid = local_8;
     let _e30 = view.eye;
     let v_2 = (_e12.xyz - _e30);
     let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
-    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_4 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid);
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_5 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid);
     return GbTexel(position, normal);
 }
 
@@ -284,7 +304,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     let p_1 = _e28.position.xyz;
-    let n_5 = _e28.normal.xyz;
+    let n_6 = _e28.normal.xyz;
     let _e61 = textureLoad(motion_tex, texel_2, 0i);
     let motion = _e61.xy;
     let _e71 = view.width;
@@ -310,7 +330,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                     let tv = textureLoad(hist_value, t_1, 0i);
                     let ts = textureLoad(hist_surface, t_1, 0i);
                     let tn = textureLoad(hist_noise, t_1, 0i);
-                    let _e132 = history_tap_weight_motion(_e110.z, n_5, ts.xyz, d_2, tn.z, tv.w);
+                    let _e132 = history_tap_weight_motion(_e110.z, n_6, ts.xyz, d_2, tn.z, tv.w);
                     let _e133 = v;
                     v = (_e133 + (tv * _e132));
                     let _e136 = m;
@@ -335,16 +355,17 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     }
     let _e150 = hv;
     let _e152 = hn.y;
-    let _e155 = params.max_history;
-    let _e156 = temporal_color(c_3, _e150, _e152, _e155);
-    textureStore(out_tex, texel_2, _e156);
-    textureStore(next_value, texel_2, _e156);
-    let _e161 = hn.x;
-    let _e163 = hn.y;
-    let _e165 = hv.w;
-    let _e169 = view.eye;
-    let _e172 = temporal_moments(c_3, _e161, _e163, _e165, _e156.w, length((p_1 - _e169)));
-    textureStore(next_noise, texel_2, _e172);
-    textureStore(next_surface, texel_2, vec4<f32>(n_5, dot(n_5, p_1)));
+    let _e154 = hn.x;
+    let _e157 = params.max_history;
+    let _e158 = temporal_color(c_3, _e150, _e152, _e154, _e157);
+    textureStore(out_tex, texel_2, _e158);
+    textureStore(next_value, texel_2, _e158);
+    let _e163 = hn.x;
+    let _e165 = hn.y;
+    let _e167 = hv.w;
+    let _e171 = view.eye;
+    let _e174 = temporal_moments(c_3, _e163, _e165, _e167, _e158.w, length((p_1 - _e171)));
+    textureStore(next_noise, texel_2, _e174);
+    textureStore(next_surface, texel_2, vec4<f32>(n_6, dot(n_6, p_1)));
     return;
 }

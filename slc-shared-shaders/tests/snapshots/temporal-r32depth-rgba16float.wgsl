@@ -211,25 +211,45 @@ fn history_tap_weight(w: f32, n_4: vec3<f32>, nh_1: vec3<f32>, p_2: vec3<f32>, o
     return select(0f, w, _e13);
 }
 
-fn temporal_color(c_1: vec3<f32>, h: vec4<f32>, noise_1: f32, max_history_1: f32) -> vec4<f32> {
-    let hc = vec3<f32>(h.x, h.y, h.z);
-    let _e8 = luminance(c_1);
-    let _e9 = luminance(hc);
-    let _e11 = temporal_change(_e8, _e9, noise_1, h.w);
-    let _e13 = next_history_length(h.w, _e11, max_history_1);
-    let _e15 = temporal_alpha(_e13);
-    let v_1 = (hc + ((c_1 - hc) * _e15));
-    return vec4<f32>(v_1.x, v_1.y, v_1.z, _e13);
+fn persistent_change(l_1: f32, last: f32, m1_1: f32, noise_1: f32, n_5: f32) -> f32 {
+    if (((l_1 - m1_1) * (last - m1_1)) <= 0f) {
+        return 0f;
+    }
+    let _e11 = temporal_change(l_1, m1_1, noise_1, n_5);
+    let _e12 = temporal_change(last, m1_1, noise_1, n_5);
+    return min(_e11, _e12);
 }
 
-fn temporal_moments(c_2: vec3<f32>, last: f32, noise_2: f32, prev_len: f32, len_1: f32, depth: f32) -> vec4<f32> {
+fn temporal_color(c_1: vec3<f32>, h: vec4<f32>, noise_2: f32, last_1: f32, max_history_1: f32) -> vec4<f32> {
+    let hc = vec3<f32>(h.x, h.y, h.z);
+    let _e9 = luminance(c_1);
+    let _e10 = luminance(hc);
+    let _e12 = persistent_change(_e9, last_1, _e10, noise_2, h.w);
+    let _e14 = next_history_length(h.w, _e12, max_history_1);
+    let _e16 = temporal_alpha(_e14);
+    let v_1 = (hc + ((c_1 - hc) * _e16));
+    return vec4<f32>(v_1.x, v_1.y, v_1.z, _e14);
+}
+
+fn temporal_moments(c_2: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, len_1: f32, depth: f32) -> vec4<f32> {
+    var local_7: bool;
+
     let _e6 = luminance(c_2);
     if (prev_len <= 0f) {
         return vec4<f32>(_e6, 0f, depth, 0f);
     }
-    let d_2 = (_e6 - last);
-    let _e19 = temporal_alpha((len_1 - 1f));
-    return vec4<f32>(_e6, (noise_2 + ((((0.5f * d_2) * d_2) - noise_2) * _e19)), depth, 0f);
+    let d_2 = (_e6 - last_2);
+    let d2_ = ((0.5f * d_2) * d_2);
+    let cap = (16f * noise_3);
+    if (prev_len >= TEMPORAL_MIN_MOMENTS) {
+        local_7 = (noise_3 > 0f);
+    } else {
+        local_7 = false;
+    }
+    let _e26 = local_7;
+    let sample = select(d2_, min(d2_, cap), _e26);
+    let _e31 = temporal_alpha((len_1 - 1f));
+    return vec4<f32>(_e6, (noise_3 + ((sample - noise_3) * _e31)), depth, 0f);
 }
 
 fn unproject_pixel(c0_1: vec4<f32>, c1_1: vec4<f32>, c2_1: vec4<f32>, c3_1: vec4<f32>, px: f32, py: f32, width_2: f32, height_2: f32, depth_1: f32, background: f32) -> vec4<f32> {
@@ -260,25 +280,25 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
-    var local_7: bool;
+    var local_8: bool;
 
     let _e3 = view.width;
     let _e8 = view.width;
     let texel_1 = vec2<i32>(i32((i % _e3)), i32((i / _e8)));
     let _e12 = surface_at(texel_1);
     let _e15 = textureLoad(normal_tex, texel_1, 0i);
-    let n_5 = _e15.xyz;
-    let len2_ = dot(n_5, n_5);
+    let n_6 = _e15.xyz;
+    let len2_ = dot(n_6, n_6);
     if (_e12.w > 0f) {
-        local_7 = (len2_ > 0f);
+        local_8 = (len2_ > 0f);
     } else {
-        local_7 = false;
+        local_8 = false;
     }
-    let valid = local_7;
+    let valid = local_8;
     let _e30 = view.eye;
     let v_2 = (_e12.xyz - _e30);
     let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
-    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_5 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid);
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_6 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid);
     return GbTexel(position, normal);
 }
 
@@ -316,7 +336,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     let p_4 = _e28.position.xyz;
-    let n_6 = _e28.normal.xyz;
+    let n_7 = _e28.normal.xyz;
     let _e61 = params.c0_;
     let _e64 = params.c1_;
     let _e67 = params.c2_;
@@ -344,7 +364,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                     let tv = textureLoad(hist_value, t_1, 0i);
                     let ts = textureLoad(hist_surface, t_1, 0i);
                     let tn = textureLoad(hist_noise, t_1, 0i);
-                    let _e134 = history_tap_weight(_e112.z, n_6, ts.xyz, p_4, ts.w, d_4, tv.w);
+                    let _e134 = history_tap_weight(_e112.z, n_7, ts.xyz, p_4, ts.w, d_4, tv.w);
                     let _e135 = v;
                     v = (_e135 + (tv * _e134));
                     let _e138 = m;
@@ -369,16 +389,17 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     }
     let _e152 = hv;
     let _e154 = hn.y;
-    let _e157 = params.max_history;
-    let _e158 = temporal_color(c_3, _e152, _e154, _e157);
-    textureStore(out_tex, texel_2, _e158);
-    textureStore(next_value, texel_2, _e158);
-    let _e163 = hn.x;
-    let _e165 = hn.y;
-    let _e167 = hv.w;
-    let _e171 = view.eye;
-    let _e174 = temporal_moments(c_3, _e163, _e165, _e167, _e158.w, length((p_4 - _e171)));
-    textureStore(next_noise, texel_2, _e174);
-    textureStore(next_surface, texel_2, vec4<f32>(n_6, dot(n_6, p_4)));
+    let _e156 = hn.x;
+    let _e159 = params.max_history;
+    let _e160 = temporal_color(c_3, _e152, _e154, _e156, _e159);
+    textureStore(out_tex, texel_2, _e160);
+    textureStore(next_value, texel_2, _e160);
+    let _e165 = hn.x;
+    let _e167 = hn.y;
+    let _e169 = hv.w;
+    let _e173 = view.eye;
+    let _e176 = temporal_moments(c_3, _e165, _e167, _e169, _e160.w, length((p_4 - _e173)));
+    textureStore(next_noise, texel_2, _e176);
+    textureStore(next_surface, texel_2, vec4<f32>(n_7, dot(n_7, p_4)));
     return;
 }

@@ -218,12 +218,12 @@ float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     return cos_x_1;
 }
 
-float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shape) {
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
     float t_2 = clamp(((cos_theta - cos_outer) / (cos_inner - cos_outer)), 0.0, 1.0);
-    return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
+    return ((shape > 0.5) ? (t_2 * t_2) : ((t_2 * t_2) * (3.0 - (2.0 * t_2))));
 }
 
 float triangle_lobe(vec3 n_1, float area, vec3 w_1) {
@@ -518,17 +518,17 @@ vec3 light_intensity(GpuLight l, vec3 w_3) {
             return l.intensity;
         }
         case 1u: {
-            float _e9 = spot_falloff(dot(l.p1_, w_3), l.a, l.b);
-            return (l.intensity * _e9);
+            float _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
+            return (l.intensity * _e11);
         }
         case 2u: {
-            float _e16 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3);
-            return (l.intensity * _e16);
+            float _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3);
+            return (l.intensity * _e18);
         }
         case 3u: {
-            vec3 _e22 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            float _e24 = triangle_lobe(_e22, l.a, w_3);
-            return (l.intensity * _e24);
+            vec3 _e24 = triangle_normal(l.p0_, l.p1_, l.p2_);
+            float _e26 = triangle_lobe(_e24, l.a, w_3);
+            return (l.intensity * _e26);
         }
         default: {
             return vec3(0.0);

@@ -253,12 +253,12 @@ float vpl_lobe(vec3 n_1, vec3 w_1) {
     return (max(dot(n_1, w_1), 0.0) * INV_PI);
 }
 
-float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shape) {
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
     float t_1 = clamp(((cos_theta - cos_outer) / (cos_inner - cos_outer)), 0.0, 1.0);
-    return ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
+    return ((shape > 0.5) ? (t_1 * t_1) : ((t_1 * t_1) * (3.0 - (2.0 * t_1))));
 }
 
 float triangle_lobe(vec3 n_2, float area, vec3 w_2) {
@@ -902,21 +902,21 @@ vec3 light_intensity(GpuLight l_4, vec3 w_5) {
             return l_4.intensity;
         }
         case 1u: {
-            float _e9 = spot_falloff(dot(l_4.p1_, w_5), l_4.a, l_4.b);
-            return (l_4.intensity * _e9);
+            float _e11 = spot_falloff(dot(l_4.p1_, w_5), l_4.a, l_4.b, l_4.p2_.x);
+            return (l_4.intensity * _e11);
         }
         case 2u: {
-            float _e16 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_5);
-            return (l_4.intensity * _e16);
+            float _e18 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_5);
+            return (l_4.intensity * _e18);
         }
         case 3u: {
-            vec3 _e22 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
-            float _e24 = triangle_lobe(_e22, l_4.a, w_5);
-            return (l_4.intensity * _e24);
+            vec3 _e24 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
+            float _e26 = triangle_lobe(_e24, l_4.a, w_5);
+            return (l_4.intensity * _e26);
         }
         case 4u: {
-            float _e28 = vpl_lobe(l_4.p1_, w_5);
-            return (l_4.intensity * _e28);
+            float _e30 = vpl_lobe(l_4.p1_, w_5);
+            return (l_4.intensity * _e30);
         }
         default: {
             return vec3(0.0);

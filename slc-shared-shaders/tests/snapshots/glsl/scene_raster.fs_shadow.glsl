@@ -96,12 +96,12 @@ layout(location = 2) flat in vec3 _vs2fs_location2;
 layout(location = 3) flat in uint _vs2fs_location3;
 layout(location = 0) out vec4 _fs2p_location0;
 
-float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shape) {
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
     float t = clamp(((cos_theta - cos_outer) / (cos_inner - cos_outer)), 0.0, 1.0);
-    return ((t * t) * (3.0 - (2.0 * t)));
+    return ((shape > 0.5) ? (t * t) : ((t * t) * (3.0 - (2.0 * t))));
 }
 
 vec3 face_against(vec3 n, vec3 dir_1) {
@@ -136,8 +136,8 @@ float rsm_texel_solid_angle(float texel_area, float cos_axis) {
 vec3 light_intensity(GpuLight l, vec3 w_1) {
     switch(l.kind) {
         case 1u: {
-            float _e8 = spot_falloff(dot(l.p1_, w_1), l.a, l.b);
-            return (l.intensity * _e8);
+            float _e10 = spot_falloff(dot(l.p1_, w_1), l.a, l.b, l.p2_.x);
+            return (l.intensity * _e10);
         }
         default: {
             return vec3(0.0);

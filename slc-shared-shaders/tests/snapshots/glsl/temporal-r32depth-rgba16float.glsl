@@ -209,25 +209,44 @@ float history_tap_weight(float w, vec3 n_4, vec3 nh_1, vec3 p_2, float oh_1, flo
     return (_e13 ? w : 0.0);
 }
 
-vec4 temporal_color(vec3 c_1, vec4 h, float noise_1, float max_history_1) {
-    vec3 hc = vec3(h.x, h.y, h.z);
-    float _e8 = luminance(c_1);
-    float _e9 = luminance(hc);
-    float _e11 = temporal_change(_e8, _e9, noise_1, h.w);
-    float _e13 = next_history_length(h.w, _e11, max_history_1);
-    float _e15 = temporal_alpha(_e13);
-    vec3 v_1 = (hc + ((c_1 - hc) * _e15));
-    return vec4(v_1.x, v_1.y, v_1.z, _e13);
+float persistent_change(float l_1, float last, float m1_1, float noise_1, float n_5) {
+    if ((((l_1 - m1_1) * (last - m1_1)) <= 0.0)) {
+        return 0.0;
+    }
+    float _e11 = temporal_change(l_1, m1_1, noise_1, n_5);
+    float _e12 = temporal_change(last, m1_1, noise_1, n_5);
+    return min(_e11, _e12);
 }
 
-vec4 temporal_moments(vec3 c_2, float last, float noise_2, float prev_len, float len_1, float depth) {
+vec4 temporal_color(vec3 c_1, vec4 h, float noise_2, float last_1, float max_history_1) {
+    vec3 hc = vec3(h.x, h.y, h.z);
+    float _e9 = luminance(c_1);
+    float _e10 = luminance(hc);
+    float _e12 = persistent_change(_e9, last_1, _e10, noise_2, h.w);
+    float _e14 = next_history_length(h.w, _e12, max_history_1);
+    float _e16 = temporal_alpha(_e14);
+    vec3 v_1 = (hc + ((c_1 - hc) * _e16));
+    return vec4(v_1.x, v_1.y, v_1.z, _e14);
+}
+
+vec4 temporal_moments(vec3 c_2, float last_2, float noise_3, float prev_len, float len_1, float depth) {
+    bool local_7 = false;
     float _e6 = luminance(c_2);
     if ((prev_len <= 0.0)) {
         return vec4(_e6, 0.0, depth, 0.0);
     }
-    float d_2 = (_e6 - last);
-    float _e19 = temporal_alpha((len_1 - 1.0));
-    return vec4(_e6, (noise_2 + ((((0.5 * d_2) * d_2) - noise_2) * _e19)), depth, 0.0);
+    float d_2 = (_e6 - last_2);
+    float d2_ = ((0.5 * d_2) * d_2);
+    float cap = (16.0 * noise_3);
+    if ((prev_len >= TEMPORAL_MIN_MOMENTS)) {
+        local_7 = (noise_3 > 0.0);
+    } else {
+        local_7 = false;
+    }
+    bool _e26 = local_7;
+    float sample_ = (_e26 ? min(d2_, cap) : d2_);
+    float _e31 = temporal_alpha((len_1 - 1.0));
+    return vec4(_e6, (noise_3 + ((sample_ - noise_3) * _e31)), depth, 0.0);
 }
 
 vec4 unproject_pixel(vec4 c0_1, vec4 c1_1, vec4 c2_1, vec4 c3_1, float px, float py, float width_2, float height_2, float depth_1, float background) {
@@ -258,24 +277,24 @@ vec4 surface_at(ivec2 texel) {
 }
 
 GbTexel gbuffer_at(uint i) {
-    bool local_7 = false;
+    bool local_8 = false;
     uint _e3 = _group_0_binding_0_cs.width;
     uint _e8 = _group_0_binding_0_cs.width;
     ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
     vec4 _e12 = surface_at(texel_1);
     vec4 _e15 = texelFetch(_group_0_binding_2_cs, texel_1, 0);
-    vec3 n_5 = _e15.xyz;
-    float len2_ = dot(n_5, n_5);
+    vec3 n_6 = _e15.xyz;
+    float len2_ = dot(n_6, n_6);
     if ((_e12.w > 0.0)) {
-        local_7 = (len2_ > 0.0);
+        local_8 = (len2_ > 0.0);
     } else {
-        local_7 = false;
+        local_8 = false;
     }
-    bool valid = local_7;
+    bool valid = local_8;
     vec3 _e30 = _group_0_binding_0_cs.eye;
     vec3 v_2 = (_e12.xyz - _e30);
     vec4 position = vec4(_e12.xyz, (valid ? 1.0 : 0.0));
-    vec4 normal = (valid ? vec4((n_5 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))) : vec4(0.0, 0.0, 0.0, 1e30));
+    vec4 normal = (valid ? vec4((n_6 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))) : vec4(0.0, 0.0, 0.0, 1e30));
     return GbTexel(position, normal);
 }
 
@@ -312,7 +331,7 @@ void main() {
         return;
     }
     vec3 p_4 = _e28.position.xyz;
-    vec3 n_6 = _e28.normal.xyz;
+    vec3 n_7 = _e28.normal.xyz;
     vec4 _e61 = _group_0_binding_3_cs.c0_;
     vec4 _e64 = _group_0_binding_3_cs.c1_;
     vec4 _e67 = _group_0_binding_3_cs.c2_;
@@ -346,7 +365,7 @@ void main() {
                     vec4 tv = texelFetch(_group_0_binding_5_cs, t_1, 0);
                     vec4 ts = texelFetch(_group_0_binding_7_cs, t_1, 0);
                     vec4 tn = texelFetch(_group_0_binding_6_cs, t_1, 0);
-                    float _e134 = history_tap_weight(_e112.z, n_6, ts.xyz, p_4, ts.w, d_4, tv.w);
+                    float _e134 = history_tap_weight(_e112.z, n_7, ts.xyz, p_4, ts.w, d_4, tv.w);
                     vec4 _e135 = v;
                     v = (_e135 + (tv * _e134));
                     vec4 _e138 = m;
@@ -367,17 +386,18 @@ void main() {
     }
     vec4 _e152 = hv;
     float _e154 = hn.y;
-    float _e157 = _group_0_binding_3_cs.max_history;
-    vec4 _e158 = temporal_color(c_3, _e152, _e154, _e157);
-    imageStore(_group_0_binding_8_cs, texel_2, _e158);
-    imageStore(_group_0_binding_9_cs, texel_2, _e158);
-    float _e163 = hn.x;
-    float _e165 = hn.y;
-    float _e167 = hv.w;
-    vec3 _e171 = _group_0_binding_0_cs.eye;
-    vec4 _e174 = temporal_moments(c_3, _e163, _e165, _e167, _e158.w, length((p_4 - _e171)));
-    imageStore(_group_0_binding_10_cs, texel_2, _e174);
-    imageStore(_group_0_binding_11_cs, texel_2, vec4(n_6, dot(n_6, p_4)));
+    float _e156 = hn.x;
+    float _e159 = _group_0_binding_3_cs.max_history;
+    vec4 _e160 = temporal_color(c_3, _e152, _e154, _e156, _e159);
+    imageStore(_group_0_binding_8_cs, texel_2, _e160);
+    imageStore(_group_0_binding_9_cs, texel_2, _e160);
+    float _e165 = hn.x;
+    float _e167 = hn.y;
+    float _e169 = hv.w;
+    vec3 _e173 = _group_0_binding_0_cs.eye;
+    vec4 _e176 = temporal_moments(c_3, _e165, _e167, _e169, _e160.w, length((p_4 - _e173)));
+    imageStore(_group_0_binding_10_cs, texel_2, _e176);
+    imageStore(_group_0_binding_11_cs, texel_2, vec4(n_7, dot(n_7, p_4)));
     return;
 }
 

@@ -232,13 +232,13 @@ float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
     return cos_x_1;
 }
 
-float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shape)
 {
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
     float t_1 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
+    return ((shape > 0.5) ? (t_1 * t_1) : ((t_1 * t_1) * (3.0 - (2.0 * t_1))));
 }
 
 float atan_portable(float x_4)
@@ -591,12 +591,12 @@ float3 light_intensity(GpuLight l, float3 w_2)
             return l.intensity;
         }
         case 1u: {
-            const float _e9 = spot_falloff(dot(l.p1_, w_2), l.a, l.b);
-            return (l.intensity * _e9);
+            const float _e11 = spot_falloff(dot(l.p1_, w_2), l.a, l.b, l.p2_.x);
+            return (l.intensity * _e11);
         }
         case 2u: {
-            const float _e16 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_2);
-            return (l.intensity * _e16);
+            const float _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_2);
+            return (l.intensity * _e18);
         }
         default: {
             return (0.0).xxx;

@@ -241,13 +241,13 @@ float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
     return cos_x_1;
 }
 
-float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shape)
 {
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
     float t_2 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
+    return ((shape > 0.5) ? (t_2 * t_2) : ((t_2 * t_2) * (3.0 - (2.0 * t_2))));
 }
 
 float triangle_lobe(float3 n_1, float area, float3 w_1)
@@ -571,17 +571,17 @@ float3 light_intensity(GpuLight l, float3 w_3)
             return l.intensity;
         }
         case 1u: {
-            const float _e9 = spot_falloff(dot(l.p1_, w_3), l.a, l.b);
-            return (l.intensity * _e9);
+            const float _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
+            return (l.intensity * _e11);
         }
         case 2u: {
-            const float _e16 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3);
-            return (l.intensity * _e16);
+            const float _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3);
+            return (l.intensity * _e18);
         }
         case 3u: {
-            const float3 _e22 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            const float _e24 = triangle_lobe(_e22, l.a, w_3);
-            return (l.intensity * _e24);
+            const float3 _e24 = triangle_normal(l.p0_, l.p1_, l.p2_);
+            const float _e26 = triangle_lobe(_e24, l.a, w_3);
+            return (l.intensity * _e26);
         }
         default: {
             return (0.0).xxx;

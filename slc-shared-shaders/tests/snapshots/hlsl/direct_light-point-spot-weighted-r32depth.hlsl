@@ -240,13 +240,13 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     return cos_x_1;
 }
 
-float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shape)
 {
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
     float t_1 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
+    return ((shape > 0.5) ? (t_1 * t_1) : ((t_1 * t_1) * (3.0 - (2.0 * t_1))));
 }
 
 float bsh_scaled_radius(BshNode node, float scale)
@@ -440,8 +440,8 @@ float3 light_intensity(GpuLight l, float3 w_3)
             return l.intensity;
         }
         case 1u: {
-            const float _e9 = spot_falloff(dot(l.p1_, w_3), l.a, l.b);
-            return (l.intensity * _e9);
+            const float _e11 = spot_falloff(dot(l.p1_, w_3), l.a, l.b, l.p2_.x);
+            return (l.intensity * _e11);
         }
         default: {
             return (0.0).xxx;

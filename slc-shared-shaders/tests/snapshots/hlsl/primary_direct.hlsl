@@ -100,13 +100,13 @@ float inverse_square(float d2_)
     return (1.0 / max(d2_, MIN_D2_));
 }
 
-float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shape)
 {
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
     float t = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t * t) * (3.0 - (2.0 * t)));
+    return ((shape > 0.5) ? (t * t) : ((t * t) * (3.0 - (2.0 * t))));
 }
 
 uint light_map_texel(float a_1, uint size)
@@ -173,8 +173,8 @@ float3 light_intensity(GpuLight l, float3 w)
 {
     switch(l.kind) {
         case 1u: {
-            const float _e8 = spot_falloff(dot(l.p1_, w), l.a, l.b);
-            return (l.intensity * _e8);
+            const float _e10 = spot_falloff(dot(l.p1_, w), l.a, l.b, l.p2_.x);
+            return (l.intensity * _e10);
         }
         default: {
             return (0.0).xxx;

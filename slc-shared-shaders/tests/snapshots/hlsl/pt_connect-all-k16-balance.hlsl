@@ -269,13 +269,13 @@ float vpl_lobe(float3 n_1, float3 w_1)
     return (max(dot(n_1, w_1), 0.0) * INV_PI);
 }
 
-float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shape)
 {
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
     float t_1 = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
+    return ((shape > 0.5) ? (t_1 * t_1) : ((t_1 * t_1) * (3.0 - (2.0 * t_1))));
 }
 
 float triangle_lobe(float3 n_2, float area, float3 w_2)
@@ -987,21 +987,21 @@ float3 light_intensity(GpuLight l_4, float3 w_5)
             return l_4.intensity;
         }
         case 1u: {
-            const float _e9 = spot_falloff(dot(l_4.p1_, w_5), l_4.a, l_4.b);
-            return (l_4.intensity * _e9);
+            const float _e11 = spot_falloff(dot(l_4.p1_, w_5), l_4.a, l_4.b, l_4.p2_.x);
+            return (l_4.intensity * _e11);
         }
         case 2u: {
-            const float _e16 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_5);
-            return (l_4.intensity * _e16);
+            const float _e18 = ies_light_candela(0u, l_4.ies_base, l_4.p1_, l_4.p2_, w_5);
+            return (l_4.intensity * _e18);
         }
         case 3u: {
-            const float3 _e22 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
-            const float _e24 = triangle_lobe(_e22, l_4.a, w_5);
-            return (l_4.intensity * _e24);
+            const float3 _e24 = triangle_normal(l_4.p0_, l_4.p1_, l_4.p2_);
+            const float _e26 = triangle_lobe(_e24, l_4.a, w_5);
+            return (l_4.intensity * _e26);
         }
         case 4u: {
-            const float _e28 = vpl_lobe(l_4.p1_, w_5);
-            return (l_4.intensity * _e28);
+            const float _e30 = vpl_lobe(l_4.p1_, w_5);
+            return (l_4.intensity * _e30);
         }
         default: {
             return (0.0).xxx;

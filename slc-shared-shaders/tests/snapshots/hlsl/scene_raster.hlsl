@@ -128,13 +128,13 @@ struct FragmentInput_fs_shadow {
     float4 clip_3 : SV_Position;
 };
 
-float spot_falloff(float cos_theta, float cos_outer, float cos_inner)
+float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shape)
 {
     if ((cos_inner <= cos_outer)) {
         return ((cos_theta >= cos_outer) ? 1.0 : 0.0);
     }
     float t = saturate(((cos_theta - cos_outer) / (cos_inner - cos_outer)));
-    return ((t * t) * (3.0 - (2.0 * t)));
+    return ((shape > 0.5) ? (t * t) : ((t * t) * (3.0 - (2.0 * t))));
 }
 
 float3 face_against(float3 n, float3 dir_1)
@@ -175,8 +175,8 @@ float3 light_intensity(GpuLight l, float3 w_1)
 {
     switch(l.kind) {
         case 1u: {
-            const float _e8 = spot_falloff(dot(l.p1_, w_1), l.a, l.b);
-            return (l.intensity * _e8);
+            const float _e10 = spot_falloff(dot(l.p1_, w_1), l.a, l.b, l.p2_.x);
+            return (l.intensity * _e10);
         }
         default: {
             return (0.0).xxx;

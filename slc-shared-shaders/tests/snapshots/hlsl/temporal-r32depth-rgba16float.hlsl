@@ -218,27 +218,48 @@ float history_tap_weight(float w, float3 n_4, float3 nh_1, float3 p_2, float oh_
     return (_e13 ? w : 0.0);
 }
 
-float4 temporal_color(float3 c_1, float4 h, float noise_1, float max_history_1)
+float persistent_change(float l_1, float last, float m1_1, float noise_1, float n_5)
 {
-    float3 hc = float3(h.x, h.y, h.z);
-    const float _e8 = luminance(c_1);
-    const float _e9 = luminance(hc);
-    const float _e11 = temporal_change(_e8, _e9, noise_1, h.w);
-    const float _e13 = next_history_length(h.w, _e11, max_history_1);
-    const float _e15 = temporal_alpha(_e13);
-    float3 v_1 = (hc + ((c_1 - hc) * _e15));
-    return float4(v_1.x, v_1.y, v_1.z, _e13);
+    if ((((l_1 - m1_1) * (last - m1_1)) <= 0.0)) {
+        return 0.0;
+    }
+    const float _e11 = temporal_change(l_1, m1_1, noise_1, n_5);
+    const float _e12 = temporal_change(last, m1_1, noise_1, n_5);
+    return min(_e11, _e12);
 }
 
-float4 temporal_moments(float3 c_2, float last, float noise_2, float prev_len, float len_1, float depth)
+float4 temporal_color(float3 c_1, float4 h, float noise_2, float last_1, float max_history_1)
 {
+    float3 hc = float3(h.x, h.y, h.z);
+    const float _e9 = luminance(c_1);
+    const float _e10 = luminance(hc);
+    const float _e12 = persistent_change(_e9, last_1, _e10, noise_2, h.w);
+    const float _e14 = next_history_length(h.w, _e12, max_history_1);
+    const float _e16 = temporal_alpha(_e14);
+    float3 v_1 = (hc + ((c_1 - hc) * _e16));
+    return float4(v_1.x, v_1.y, v_1.z, _e14);
+}
+
+float4 temporal_moments(float3 c_2, float last_2, float noise_3, float prev_len, float len_1, float depth)
+{
+    bool local_7 = (bool)0;
+
     const float _e6 = luminance(c_2);
     if ((prev_len <= 0.0)) {
         return float4(_e6, 0.0, depth, 0.0);
     }
-    float d_2 = (_e6 - last);
-    const float _e19 = temporal_alpha((len_1 - 1.0));
-    return float4(_e6, (noise_2 + ((((0.5 * d_2) * d_2) - noise_2) * _e19)), depth, 0.0);
+    float d_2 = (_e6 - last_2);
+    float d2_ = ((0.5 * d_2) * d_2);
+    float cap = (16.0 * noise_3);
+    if ((prev_len >= TEMPORAL_MIN_MOMENTS)) {
+        local_7 = (noise_3 > 0.0);
+    } else {
+        local_7 = false;
+    }
+    bool _e26 = local_7;
+    float sample_ = (_e26 ? min(d2_, cap) : d2_);
+    const float _e31 = temporal_alpha((len_1 - 1.0));
+    return float4(_e6, (noise_3 + ((sample_ - noise_3) * _e31)), depth, 0.0);
 }
 
 float4 unproject_pixel(float4 c0_1, float4 c1_1, float4 c2_1, float4 c3_1, float px, float py, float width_2, float height_2, float depth_1, float background)
@@ -279,25 +300,25 @@ GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
 
 GbTexel gbuffer_at(uint i)
 {
-    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
 
     uint _e3 = view.width;
     uint _e8 = view.width;
     int2 texel_1 = int2(int(naga_mod(i, _e3)), int(naga_div(i, _e8)));
     const float4 _e12 = surface_at(texel_1);
     float4 _e15 = normal_tex.Load(int3(texel_1, int(0)));
-    float3 n_5 = _e15.xyz;
-    float len2_ = dot(n_5, n_5);
+    float3 n_6 = _e15.xyz;
+    float len2_ = dot(n_6, n_6);
     if ((_e12.w > 0.0)) {
-        local_7 = (len2_ > 0.0);
+        local_8 = (len2_ > 0.0);
     } else {
-        local_7 = false;
+        local_8 = false;
     }
-    bool valid = local_7;
+    bool valid = local_8;
     float3 _e30 = view.eye;
     float3 v_2 = (_e12.xyz - _e30);
     float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
-    float4 normal = (valid ? float4((n_5 / (sqrt(len2_)).xxx), sqrt(dot(v_2, v_2))) : float4(0.0, 0.0, 0.0, 1e30));
+    float4 normal = (valid ? float4((n_6 / (sqrt(len2_)).xxx), sqrt(dot(v_2, v_2))) : float4(0.0, 0.0, 0.0, 1e30));
     const GbTexel gbtexel = ConstructGbTexel(position, normal);
     return gbtexel;
 }
@@ -341,7 +362,7 @@ void main(uint3 gid : SV_DispatchThreadID)
         return;
     }
     float3 p_4 = _e28.position.xyz;
-    float3 n_6 = _e28.normal.xyz;
+    float3 n_7 = _e28.normal.xyz;
     float4 _e61 = params.c0_;
     float4 _e64 = params.c1_;
     float4 _e67 = params.c2_;
@@ -378,7 +399,7 @@ void main(uint3 gid : SV_DispatchThreadID)
                     float4 tv = hist_value.Load(int3(t_1, int(0)));
                     float4 ts = hist_surface.Load(int3(t_1, int(0)));
                     float4 tn = hist_noise.Load(int3(t_1, int(0)));
-                    const float _e134 = history_tap_weight(_e112.z, n_6, ts.xyz, p_4, ts.w, d_4, tv.w);
+                    const float _e134 = history_tap_weight(_e112.z, n_7, ts.xyz, p_4, ts.w, d_4, tv.w);
                     float4 _e135 = v;
                     v = (_e135 + (tv * _e134));
                     float4 _e138 = m;
@@ -399,16 +420,17 @@ void main(uint3 gid : SV_DispatchThreadID)
     }
     float4 _e152 = hv;
     float _e154 = hn.y;
-    float _e157 = params.max_history;
-    const float4 _e158 = temporal_color(c_3, _e152, _e154, _e157);
-    out_tex[texel_2] = _e158;
-    next_value[texel_2] = _e158;
-    float _e163 = hn.x;
-    float _e165 = hn.y;
-    float _e167 = hv.w;
-    float3 _e171 = view.eye;
-    const float4 _e174 = temporal_moments(c_3, _e163, _e165, _e167, _e158.w, length((p_4 - _e171)));
-    next_noise[texel_2] = _e174;
-    next_surface[texel_2] = float4(n_6, dot(n_6, p_4));
+    float _e156 = hn.x;
+    float _e159 = params.max_history;
+    const float4 _e160 = temporal_color(c_3, _e152, _e154, _e156, _e159);
+    out_tex[texel_2] = _e160;
+    next_value[texel_2] = _e160;
+    float _e165 = hn.x;
+    float _e167 = hn.y;
+    float _e169 = hv.w;
+    float3 _e173 = view.eye;
+    const float4 _e176 = temporal_moments(c_3, _e165, _e167, _e169, _e160.w, length((p_4 - _e173)));
+    next_noise[texel_2] = _e176;
+    next_surface[texel_2] = float4(n_7, dot(n_7, p_4));
     return;
 }

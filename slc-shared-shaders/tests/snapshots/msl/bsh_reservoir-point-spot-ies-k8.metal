@@ -279,13 +279,14 @@ float connection_cosine(
 float spot_falloff(
     float cos_theta,
     float cos_outer,
-    float cos_inner
+    float cos_inner,
+    float shape
 ) {
     if (cos_inner <= cos_outer) {
         return (cos_theta >= cos_outer) ? 1.0 : 0.0;
     }
     float t_1 = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
-    return (t_1 * t_1) * (3.0 - (2.0 * t_1));
+    return (shape > 0.5) ? (t_1 * t_1) : ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
 }
 
 float atan_portable(
@@ -701,12 +702,12 @@ metal::float3 light_intensity(
             return l.intensity;
         }
         case 1u: {
-            float _e9 = spot_falloff(metal::dot(l.p1_, w_2), l.a, l.b);
-            return l.intensity * _e9;
+            float _e11 = spot_falloff(metal::dot(l.p1_, w_2), l.a, l.b, l.p2_[0]);
+            return l.intensity * _e11;
         }
         case 2u: {
-            float _e16 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_2, slc_table, _buffer_sizes);
-            return l.intensity * _e16;
+            float _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_2, slc_table, _buffer_sizes);
+            return l.intensity * _e18;
         }
         default: {
             return metal::float3(0.0);

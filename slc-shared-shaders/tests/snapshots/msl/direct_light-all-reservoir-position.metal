@@ -273,13 +273,14 @@ float connection_cosine(
 float spot_falloff(
     float cos_theta,
     float cos_outer,
-    float cos_inner
+    float cos_inner,
+    float shape
 ) {
     if (cos_inner <= cos_outer) {
         return (cos_theta >= cos_outer) ? 1.0 : 0.0;
     }
     float t_2 = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
-    return (t_2 * t_2) * (3.0 - (2.0 * t_2));
+    return (shape > 0.5) ? (t_2 * t_2) : ((t_2 * t_2) * (3.0 - (2.0 * t_2)));
 }
 
 float triangle_lobe(
@@ -666,17 +667,17 @@ metal::float3 light_intensity(
             return l.intensity;
         }
         case 1u: {
-            float _e9 = spot_falloff(metal::dot(l.p1_, w_3), l.a, l.b);
-            return l.intensity * _e9;
+            float _e11 = spot_falloff(metal::dot(l.p1_, w_3), l.a, l.b, l.p2_[0]);
+            return l.intensity * _e11;
         }
         case 2u: {
-            float _e16 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3, slc_table, _buffer_sizes);
-            return l.intensity * _e16;
+            float _e18 = ies_light_candela(0u, l.ies_base, l.p1_, l.p2_, w_3, slc_table, _buffer_sizes);
+            return l.intensity * _e18;
         }
         case 3u: {
-            metal::float3 _e22 = triangle_normal(l.p0_, l.p1_, l.p2_);
-            float _e24 = triangle_lobe(_e22, l.a, w_3);
-            return l.intensity * _e24;
+            metal::float3 _e24 = triangle_normal(l.p0_, l.p1_, l.p2_);
+            float _e26 = triangle_lobe(_e24, l.a, w_3);
+            return l.intensity * _e26;
         }
         default: {
             return metal::float3(0.0);

@@ -269,13 +269,14 @@ float connection_cosine(
 float spot_falloff(
     float cos_theta,
     float cos_outer,
-    float cos_inner
+    float cos_inner,
+    float shape
 ) {
     if (cos_inner <= cos_outer) {
         return (cos_theta >= cos_outer) ? 1.0 : 0.0;
     }
     float t_1 = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
-    return (t_1 * t_1) * (3.0 - (2.0 * t_1));
+    return (shape > 0.5) ? (t_1 * t_1) : ((t_1 * t_1) * (3.0 - (2.0 * t_1)));
 }
 
 float bsh_scaled_radius(
@@ -543,8 +544,8 @@ metal::float3 light_intensity(
             return l.intensity;
         }
         case 1u: {
-            float _e9 = spot_falloff(metal::dot(l.p1_, w_3), l.a, l.b);
-            return l.intensity * _e9;
+            float _e11 = spot_falloff(metal::dot(l.p1_, w_3), l.a, l.b, l.p2_[0]);
+            return l.intensity * _e11;
         }
         default: {
             return metal::float3(0.0);

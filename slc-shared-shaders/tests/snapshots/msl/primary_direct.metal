@@ -107,13 +107,14 @@ float inverse_square(
 float spot_falloff(
     float cos_theta,
     float cos_outer,
-    float cos_inner
+    float cos_inner,
+    float shape
 ) {
     if (cos_inner <= cos_outer) {
         return (cos_theta >= cos_outer) ? 1.0 : 0.0;
     }
     float t = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
-    return (t * t) * (3.0 - (2.0 * t));
+    return (shape > 0.5) ? (t * t) : ((t * t) * (3.0 - (2.0 * t)));
 }
 
 uint light_map_texel(
@@ -208,8 +209,8 @@ metal::float3 light_intensity(
 ) {
     switch(l.kind) {
         case 1u: {
-            float _e8 = spot_falloff(metal::dot(l.p1_, w), l.a, l.b);
-            return l.intensity * _e8;
+            float _e10 = spot_falloff(metal::dot(l.p1_, w), l.a, l.b, l.p2_[0]);
+            return l.intensity * _e10;
         }
         default: {
             return metal::float3(0.0);

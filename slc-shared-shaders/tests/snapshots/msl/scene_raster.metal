@@ -101,13 +101,14 @@ constant float TEMPORAL_MIN_WEIGHT = 0.01;
 float spot_falloff(
     float cos_theta,
     float cos_outer,
-    float cos_inner
+    float cos_inner,
+    float shape
 ) {
     if (cos_inner <= cos_outer) {
         return (cos_theta >= cos_outer) ? 1.0 : 0.0;
     }
     float t = metal::saturate((cos_theta - cos_outer) / (cos_inner - cos_outer));
-    return (t * t) * (3.0 - (2.0 * t));
+    return (shape > 0.5) ? (t * t) : ((t * t) * (3.0 - (2.0 * t)));
 }
 
 metal::float3 face_against(
@@ -161,8 +162,8 @@ metal::float3 light_intensity(
 ) {
     switch(l.kind) {
         case 1u: {
-            float _e8 = spot_falloff(metal::dot(l.p1_, w_1), l.a, l.b);
-            return l.intensity * _e8;
+            float _e10 = spot_falloff(metal::dot(l.p1_, w_1), l.a, l.b, l.p2_[0]);
+            return l.intensity * _e10;
         }
         default: {
             return metal::float3(0.0);

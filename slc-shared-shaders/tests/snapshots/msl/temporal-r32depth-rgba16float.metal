@@ -244,37 +244,63 @@ float history_tap_weight(
     return _e13 ? w : 0.0;
 }
 
+float persistent_change(
+    float l_1,
+    float last,
+    float m1_1,
+    float noise_1,
+    float n_5
+) {
+    if (((l_1 - m1_1) * (last - m1_1)) <= 0.0) {
+        return 0.0;
+    }
+    float _e11 = temporal_change(l_1, m1_1, noise_1, n_5);
+    float _e12 = temporal_change(last, m1_1, noise_1, n_5);
+    return metal::min(_e11, _e12);
+}
+
 metal::float4 temporal_color(
     metal::float3 c_1,
     metal::float4 h,
-    float noise_1,
+    float noise_2,
+    float last_1,
     float max_history_1
 ) {
     metal::float3 hc = metal::float3(h.x, h.y, h.z);
-    float _e8 = luminance(c_1);
-    float _e9 = luminance(hc);
-    float _e11 = temporal_change(_e8, _e9, noise_1, h.w);
-    float _e13 = next_history_length(h.w, _e11, max_history_1);
-    float _e15 = temporal_alpha(_e13);
-    metal::float3 v_1 = hc + ((c_1 - hc) * _e15);
-    return metal::float4(v_1.x, v_1.y, v_1.z, _e13);
+    float _e9 = luminance(c_1);
+    float _e10 = luminance(hc);
+    float _e12 = persistent_change(_e9, last_1, _e10, noise_2, h.w);
+    float _e14 = next_history_length(h.w, _e12, max_history_1);
+    float _e16 = temporal_alpha(_e14);
+    metal::float3 v_1 = hc + ((c_1 - hc) * _e16);
+    return metal::float4(v_1.x, v_1.y, v_1.z, _e14);
 }
 
 metal::float4 temporal_moments(
     metal::float3 c_2,
-    float last,
-    float noise_2,
+    float last_2,
+    float noise_3,
     float prev_len,
     float len_1,
     float depth
 ) {
+    bool local_7 = {};
     float _e6 = luminance(c_2);
     if (prev_len <= 0.0) {
         return metal::float4(_e6, 0.0, depth, 0.0);
     }
-    float d_2 = _e6 - last;
-    float _e19 = temporal_alpha(len_1 - 1.0);
-    return metal::float4(_e6, noise_2 + ((((0.5 * d_2) * d_2) - noise_2) * _e19), depth, 0.0);
+    float d_2 = _e6 - last_2;
+    float d2_ = (0.5 * d_2) * d_2;
+    float cap = 16.0 * noise_3;
+    if (prev_len >= TEMPORAL_MIN_MOMENTS) {
+        local_7 = noise_3 > 0.0;
+    } else {
+        local_7 = false;
+    }
+    bool _e26 = local_7;
+    float sample = _e26 ? metal::min(d2_, cap) : d2_;
+    float _e31 = temporal_alpha(len_1 - 1.0);
+    return metal::float4(_e6, noise_3 + ((sample - noise_3) * _e31), depth, 0.0);
 }
 
 metal::float4 unproject_pixel(
@@ -325,24 +351,24 @@ GbTexel gbuffer_at(
     metal::texture2d<float, metal::access::sample> depth_tex,
     metal::texture2d<float, metal::access::sample> normal_tex
 ) {
-    bool local_7 = {};
+    bool local_8 = {};
     uint _e3 = view.width;
     uint _e8 = view.width;
     metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
     metal::float4 _e12 = surface_at(texel_1, view, depth_tex);
     metal::float4 _e15 = normal_tex.read(metal::uint2(texel_1), 0);
-    metal::float3 n_5 = _e15.xyz;
-    float len2_ = metal::dot(n_5, n_5);
+    metal::float3 n_6 = _e15.xyz;
+    float len2_ = metal::dot(n_6, n_6);
     if (_e12.w > 0.0) {
-        local_7 = len2_ > 0.0;
+        local_8 = len2_ > 0.0;
     } else {
-        local_7 = false;
+        local_8 = false;
     }
-    bool valid = local_7;
+    bool valid = local_8;
     metal::float3 _e30 = view.eye;
     metal::float3 v_2 = _e12.xyz - _e30;
     metal::float4 position = metal::float4(_e12.xyz, valid ? 1.0 : 0.0);
-    metal::float4 normal = valid ? metal::float4(n_5 / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_2, v_2))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
+    metal::float4 normal = valid ? metal::float4(n_6 / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_2, v_2))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
     return GbTexel {position, normal};
 }
 int naga_f2i32(float value) {
@@ -398,7 +424,7 @@ kernel void main_(
         return;
     }
     metal::float3 p_4 = _e28.position.xyz;
-    metal::float3 n_6 = _e28.normal.xyz;
+    metal::float3 n_7 = _e28.normal.xyz;
     metal::float4 _e61 = params.c0_;
     metal::float4 _e64 = params.c1_;
     metal::float4 _e67 = params.c2_;
@@ -435,7 +461,7 @@ kernel void main_(
                     metal::float4 tv = hist_value.read(metal::uint2(t_1), 0);
                     metal::float4 ts = hist_surface.read(metal::uint2(t_1), 0);
                     metal::float4 tn = hist_noise.read(metal::uint2(t_1), 0);
-                    float _e134 = history_tap_weight(_e112.z, n_6, ts.xyz, p_4, ts.w, d_4, tv.w);
+                    float _e134 = history_tap_weight(_e112.z, n_7, ts.xyz, p_4, ts.w, d_4, tv.w);
                     metal::float4 _e135 = v;
                     v = _e135 + (tv * _e134);
                     metal::float4 _e138 = m;
@@ -456,16 +482,17 @@ kernel void main_(
     }
     metal::float4 _e152 = hv;
     float _e154 = hn.y;
-    float _e157 = params.max_history;
-    metal::float4 _e158 = temporal_color(c_3, _e152, _e154, _e157);
-    out_tex.write(_e158, metal::uint2(texel_2));
-    next_value.write(_e158, metal::uint2(texel_2));
-    float _e163 = hn.x;
-    float _e165 = hn.y;
-    float _e167 = hv.w;
-    metal::float3 _e171 = view.eye;
-    metal::float4 _e174 = temporal_moments(c_3, _e163, _e165, _e167, _e158.w, metal::length(p_4 - _e171));
-    next_noise.write(_e174, metal::uint2(texel_2));
-    next_surface.write(metal::float4(n_6, metal::dot(n_6, p_4)), metal::uint2(texel_2));
+    float _e156 = hn.x;
+    float _e159 = params.max_history;
+    metal::float4 _e160 = temporal_color(c_3, _e152, _e154, _e156, _e159);
+    out_tex.write(_e160, metal::uint2(texel_2));
+    next_value.write(_e160, metal::uint2(texel_2));
+    float _e165 = hn.x;
+    float _e167 = hn.y;
+    float _e169 = hv.w;
+    metal::float3 _e173 = view.eye;
+    metal::float4 _e176 = temporal_moments(c_3, _e165, _e167, _e169, _e160.w, metal::length(p_4 - _e173));
+    next_noise.write(_e176, metal::uint2(texel_2));
+    next_surface.write(metal::float4(n_7, metal::dot(n_7, p_4)), metal::uint2(texel_2));
     return;
 }
