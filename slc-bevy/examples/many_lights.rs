@@ -1,5 +1,6 @@
-//! Thousands of moving coloured point lights over a city block of pillars,
-//! shaded by slc or by Bevy's own clustered lighting.
+//! Thousands of moving coloured point lights (every tenth a spot light)
+//! over a city block of pillars, shaded by slc or by Bevy's own clustered
+//! lighting.
 //!
 //! ```text
 //! cargo run --release --manifest-path slc-bevy/Cargo.toml --ignore-rust-version --example many_lights [LIGHTS]
@@ -90,18 +91,25 @@ fn setup(mut commands: Commands, settings: Res<Settings>, mut meshes: ResMut<Ass
             ));
         }
     }
-    for _ in 0..settings.lights {
+    for i in 0..settings.lights {
         let centre = Vec3::new(rng.random_range(-110.0..110.0), rng.random_range(0.5..12.0), rng.random_range(-110.0..110.0));
-        commands.spawn((
-            PointLight {
-                color: Color::hsl(rng.random_range(0.0..360.0), 0.9, 0.6),
-                intensity: rng.random_range(2e4..2e5),
+        let color = Color::hsl(rng.random_range(0.0..360.0), 0.9, 0.6);
+        let orbit = Orbit { centre, radius: rng.random_range(1.0..8.0), speed: rng.random_range(-1.0..1.0), phase: rng.random_range(0.0..6.3) };
+        if i % 10 == 0 {
+            // Every tenth a spot light, looking down.
+            let spot = SpotLight {
+                color,
+                intensity: rng.random_range(1e5..6e5),
+                inner_angle: 0.2,
+                outer_angle: 0.6,
                 shadow_maps_enabled: false,
                 ..default()
-            },
-            Transform::from_translation(centre),
-            Orbit { centre, radius: rng.random_range(1.0..8.0), speed: rng.random_range(-1.0..1.0), phase: rng.random_range(0.0..6.3) },
-        ));
+            };
+            commands.spawn((spot, Transform::from_translation(centre).looking_to(Vec3::NEG_Y, Vec3::X), orbit));
+        } else {
+            let point = PointLight { color, intensity: rng.random_range(2e4..2e5), shadow_maps_enabled: false, ..default() };
+            commands.spawn((point, Transform::from_translation(centre), orbit));
+        }
     }
     commands.spawn((
         Camera3d::default(),
@@ -123,7 +131,8 @@ fn keys(
     input: Res<ButtonInput<KeyCode>>,
     mut settings: ResMut<Settings>,
     mut commands: Commands,
-    mut lights: Query<(Entity, &mut PointLight)>,
+    mut points: Query<(Entity, &mut PointLight)>,
+    mut spots: Query<(Entity, &mut SpotLight)>,
     mut cameras: Query<&mut SlcCamera>,
 ) {
     if input.just_pressed(KeyCode::Space) {
@@ -134,8 +143,17 @@ fn keys(
         };
     }
     if input.just_pressed(KeyCode::Space) || settings.is_added() {
-        for (e, mut light) in &mut lights {
-            light.range = if settings.mode == Mode::BevyUnbounded { 1e4 } else { PointLight::default().range };
+        let range = if settings.mode == Mode::BevyUnbounded { 1e4 } else { PointLight::default().range };
+        let mut lights: Vec<Entity> = Vec::new();
+        for (e, mut light) in &mut points {
+            light.range = range;
+            lights.push(e);
+        }
+        for (e, mut light) in &mut spots {
+            light.range = range;
+            lights.push(e);
+        }
+        for e in lights {
             if settings.mode == Mode::Slc {
                 commands.entity(e).insert(SlcLight);
             } else {
