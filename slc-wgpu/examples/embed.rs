@@ -78,7 +78,7 @@ struct ROut { @location(0) position: vec4f, @location(1) normal: vec4f, @locatio
     let d = normalize(v.world - u.eye.xyz);
     let c = dot(d, u.axis.xyz);
     let d_omega = rsm_texel_solid_angle(u.axis.w, c);
-    let flux = u.intensity.xyz * spot_falloff(c, u.intensity.w, u.cone.x) * d_omega * v.albedo;
+    let flux = u.intensity.xyz * spot_falloff(c, u.intensity.w, u.cone.x, 0.0) * d_omega * v.albedo;
     return ROut(vec4f(v.world, 1.0), vec4f(facing(v.normal, v.world), 0.0), vec4f(flux, 0.0));
 }
 "#;
