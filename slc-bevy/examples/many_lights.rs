@@ -119,8 +119,11 @@ fn setup(mut commands: Commands, settings: Res<Settings>, mut meshes: ResMut<Ass
     ));
 }
 
-fn move_lights(time: Res<Time>, mut lights: Query<(&Orbit, &mut Transform)>) {
-    let t = time.elapsed_secs();
+/// Moves the lights along their circles: by the clock, or in scripted
+/// runs (`SLC_BEVY_FRAMES`) by 1/60 s per frame, as a 60 Hz display would
+/// (a software renderer's seconds per frame would jump the lights).
+fn move_lights(time: Res<Time>, frames: Res<bevy::diagnostic::FrameCount>, mut lights: Query<(&Orbit, &mut Transform)>) {
+    let t = if std::env::var_os("SLC_BEVY_FRAMES").is_some() { frames.0 as f32 / 60.0 } else { time.elapsed_secs() };
     for (o, mut tr) in &mut lights {
         let a = o.phase + o.speed * t;
         tr.translation = o.centre + Vec3::new(a.cos(), 0.0, a.sin()) * o.radius;

@@ -129,7 +129,10 @@ pub struct SlcCamera {
     /// Accumulate slc's light over frames (slc-wgpu's temporal pass:
     /// reprojection by the camera's motion, disocclusion, a change test
     /// against the frame-to-frame noise, a moving average); off: every
-    /// frame is a fresh, noisy, unbiased estimate.
+    /// frame is a fresh, noisy, unbiased estimate. A moving light's light
+    /// trails behind it by up to `max_history` frames (the change test
+    /// only catches changes well beyond the noise): lower `max_history`
+    /// for fast lights.
     pub accumulate: bool,
     /// The longest history of the accumulation, in frames (`≥ 1`).
     pub max_history: f32,
