@@ -271,8 +271,8 @@ struct Gpu {
 struct Shaders {
     unpack: Handle<Shader>,
     composite: Handle<Shader>,
-    #[allow(dead_code)]
-    slc: Vec<Handle<Shader>>,
+    /// slc's package: held, never read.
+    _slc: Vec<Handle<Shader>>,
 }
 
 /// Adds slc's WESL package (`slc_shared_shaders::wesl::modules()`, the
@@ -287,7 +287,7 @@ fn add_shaders(app: &mut App) -> Shaders {
         .collect();
     let unpack = shaders.add(Shader::from_wesl(include_str!("unpack.wesl"), "embedded://slc_bevy/unpack.wesl"));
     let composite = shaders.add(Shader::from_wesl(include_str!("composite.wesl"), "embedded://slc_bevy/composite.wesl"));
-    Shaders { unpack, composite, slc }
+    Shaders { unpack, composite, _slc: slc }
 }
 
 fn init_gpu(
@@ -361,6 +361,8 @@ struct View {
     inv_view_proj: glam::Mat4,
     eye: glam::Vec3,
     settings: SlcCamera,
+    /// SLC's ranges for [`SlcCamera::error_bound`] (checked in prepare).
+    culling: Culling,
     main: Entity,
 }
 
@@ -449,6 +451,7 @@ fn new_view(
         inv_view_proj: glam::Mat4::IDENTITY,
         eye: glam::Vec3::ZERO,
         settings: *settings,
+        culling: Culling::None,
         main,
     })
 }
@@ -505,6 +508,13 @@ fn prepare_views(
         if size.0 == 0 || size.1 == 0 {
             continue;
         }
+        let culling = match RangeParams::new(settings.error_bound, 1.0) {
+            Ok(p) => Culling::Stochastic(p),
+            Err(e) => {
+                skip(&mut views, format!("error bound {}: {e}", settings.error_bound), &mut report);
+                continue;
+            }
+        };
         let exposure = camera.exposure;
         let lights = match slc_lights(&lights.0, exposure) {
             Ok(l) => l,
@@ -546,6 +556,7 @@ fn prepare_views(
             v.temporal.reset();
         }
         v.settings = *settings;
+        v.culling = culling;
         let world_from_view = to_glam(view.world_from_view.to_matrix());
         v.inv_view_proj = world_from_view * to_glam(view.clip_from_view).inverse();
         v.eye = world_from_view.w_axis.truncate();
@@ -612,17 +623,10 @@ fn shade_view(
         pass.set_bind_group(0, unpack_group, &[]);
         pass.dispatch_workgroups(v.size.0.div_ceil(8), v.size.1.div_ceil(8), 1);
     }
-    let culling = match RangeParams::new(v.settings.error_bound, 1.0) {
-        Ok(p) => Culling::Stochastic(p),
-        Err(e) => {
-            report(Err(format!("error bound {}: {e}", v.settings.error_bound)));
-            return;
-        }
-    };
     let gbuf = GBuffer { surface: Surface::Depth { depth, inv_view_proj: v.inv_view_proj }, normal: &v.normal, eye: v.eye };
     let mut inputs = DirectInputs::new(gbuf, &v.output);
     inputs.material = Some(MaterialInputs { base_color: &v.base, metallic_roughness: &v.material });
-    let settings = DirectSettings { culling, seed: v.settings.seed, frame: v.frame };
+    let settings = DirectSettings { culling: v.culling, seed: v.settings.seed, frame: v.frame };
     if let Err(e) = v.pass.record(encoder, &inputs, &settings) {
         report(Err(e.to_string()));
         return;

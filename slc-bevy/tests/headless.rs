@@ -278,8 +278,9 @@ fn rmse(a: &[[f32; 3]], b: &[[f32; 3]]) -> f64 {
     (a.iter().zip(b).map(|(x, y)| (luminance(*x) - luminance(*y)).powi(2)).sum::<f64>() / a.len() as f64).sqrt()
 }
 
+/// Rec. 709 luminance (slc-core's, the temporal pass's).
 fn luminance(p: [f32; 3]) -> f64 {
-    (0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]) as f64
+    f64::from(slc_core::temporal::luminance(glam::Vec3::from(p)))
 }
 
 /// Per 8×8 block: the mean luminance.

@@ -377,8 +377,7 @@ crate::shared! {
         let f0: vec3f = vec3f(f0_d, f0_d, f0_d) * (1.0 - metallic) + base * metallic;
         let f90: f32 = saturate((f0.x + f0.y + f0.z) * 16.5);
         let d: f32 = ggx_d(n_h, 1.0 - n_h * n_h, alpha);
-        let a2: f32 = alpha * alpha;
-        let vis: f32 = 0.5 / (n_l * sqrt((n_v - a2 * n_v) * n_v + a2) + n_v * sqrt((n_l - a2 * n_l) * n_l + a2));
+        let vis: f32 = smith_visibility(n_l, n_v, alpha);
         let comp: vec3f = vec3f(1.0, 1.0, 1.0) + f0 * (1.0 / bevy_dfg(r, n_v) - 1.0);
         let spec: vec3f = fresnel_schlick(f0, f90, l_h) * comp * (d * vis);
         return base * ((1.0 - metallic) * burley) + spec;

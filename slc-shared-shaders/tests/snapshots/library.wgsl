@@ -997,12 +997,11 @@ fn bevy_brdf(base_11: vec3<f32>, metallic_8: f32, r_4: f32, reflectance_1: f32, 
     let f0_1 = ((vec3<f32>(_e46, _e46, _e46) * (1f - metallic_8)) + (base_11 * metallic_8));
     let f90_1 = saturate((((f0_1.x + f0_1.y) + f0_1.z) * 16.5f));
     let _e64 = ggx_d(n_h, (1f - (n_h * n_h)), _e15);
-    let a2_4 = (_e15 * _e15);
-    let vis = (0.5f / ((n_l_3 * sqrt((((n_v_4 - (a2_4 * n_v_4)) * n_v_4) + a2_4))) + (n_v_4 * sqrt((((n_l_3 - (a2_4 * n_l_3)) * n_l_3) + a2_4)))));
-    let _e85 = bevy_dfg(r_4, n_v_4);
-    let comp = (vec3<f32>(1f, 1f, 1f) + (f0_1 * ((1f / _e85) - 1f)));
-    let _e92 = fresnel_schlick(f0_1, f90_1, l_h);
-    let spec = ((_e92 * comp) * (_e64 * vis));
+    let _e65 = smith_visibility(n_l_3, n_v_4, _e15);
+    let _e70 = bevy_dfg(r_4, n_v_4);
+    let comp = (vec3<f32>(1f, 1f, 1f) + (f0_1 * ((1f / _e70) - 1f)));
+    let _e77 = fresnel_schlick(f0_1, f90_1, l_h);
+    let spec = ((_e77 * comp) * (_e64 * _e65));
     return ((base_11 * ((1f - metallic_8) * burley)) + spec);
 }
 
