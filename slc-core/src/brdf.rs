@@ -218,11 +218,23 @@ crate::shared! {
     }
 
     /// `π` times a receiver's largest `f·cos`, estimated from its lobe
-    /// `lobe` ([`receiver_lobe`]): `k_d + k_s / (4α² √(n·v²(1−α²)+α²))`,
-    /// the diffuse lobe's `k_d/π` plus the specular lobe's `F·D·V·n·l` on
-    /// its mirror direction; 1 for a white Lambertian receiver.
+    /// `lobe` ([`receiver_lobe`]): `k_d + k_s / (2α² (√(n·v²(1−α²)+α²) + n·v))`,
+    /// the diffuse lobe's `k_d/π` plus the specular lobe's `F·D·V·n·l` with
+    /// `D` at its peak `1/(πα²)` and `V·n·l` at its largest over every light
+    /// direction, `½/(√(n·v²(1−α²)+α²) + n·v)` (the height-correlated `V`
+    /// with `√(n·l²(1−α²)+α²) ≥ n·l`): the mirror direction's
+    /// `¼/√(n·v²(1−α²)+α²)` at normal incidence, up to twice it at grazing
+    /// views, whose lobe peaks off the mirror direction. 1 for a white
+    /// Lambertian receiver.
     pub fn receiver_peak(lobe: vec4f) -> f32 {
-        return lobe.x + lobe.y * 0.25 / (lobe.z * lobe.z * smith_root(lobe.w, lobe.z));
+        return lobe.x + specular_peak_factor(lobe) / (lobe.z * lobe.z);
+    }
+
+    /// `k_s` times the largest `V·n·l` over every light direction for a
+    /// receiver with lobe `lobe`: `k_s · ½/(√(n·v²(1−α²)+α²) + n·v)`
+    /// ([`receiver_peak`]).
+    pub fn specular_peak_factor(lobe: vec4f) -> f32 {
+        return lobe.y * 0.5 / (smith_root(lobe.w, lobe.z) + max(lobe.w, 0.0));
     }
 
     /// Largest factor by which a receiver scales SLC's range² ([`range_scale`]).
@@ -241,6 +253,22 @@ crate::shared! {
             return 1.0;
         }
         return clamp(receiver_peak(lobe), 1.0, RANGE_SCALE_MAX);
+    }
+
+    /// What a receiver with lobe `lobe` ([`receiver_lobe`]) needs to scale
+    /// each light's range² by the lobe's peak *toward that light*
+    /// (`crate::importance::range_scale_toward`): `(k_d, c_s, α², √s_max)`
+    /// with `c_s` the [`specular_peak_factor`], so that `π·f·cos` on a
+    /// direction whose half vector makes the angle `θ_h` with `n` is at most
+    /// about `k_d + c_s·α²/(cos²θ_h (α²−1) + 1)²` (the GGX `π·D` times the
+    /// specular lobe's largest factor, as [`receiver_peak`] at `θ_h = 0`), and
+    /// `s_max` is [`range_scale`]. `(1, 0, 1, 1)` without a specular lobe:
+    /// every light's scale is then 1.
+    pub fn range_lobe(lobe: vec4f) -> vec4f {
+        if lobe.y <= 0.0 {
+            return vec4f(1.0, 0.0, 1.0, 1.0);
+        }
+        return vec4f(lobe.x, specular_peak_factor(lobe), lobe.z * lobe.z, sqrt(range_scale(lobe)));
     }
 
     /// The view direction `v` mirrored about the unit normal `n`: `2(n·v)n − v`.

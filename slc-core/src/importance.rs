@@ -102,6 +102,38 @@ crate::shared! {
         return cos_sub_clamped(safe_sqrt(1.0 - cos_i * cos_i), cos_i, safe_sqrt(1.0 - cos_b * cos_b), cos_b);
     }
 
+    /// The factor `s` by which a receiver at `p` with mirror direction `r`
+    /// and range lobe `rl` ([`crate::brdf::range_lobe`]) scales the
+    /// threshold and random range² of a light bounded by the sphere
+    /// `(center, radius)`: the lobe's `π·f·cos` peak over the directions
+    /// into the sphere, `k_d + c_s·α²/t²` with `t = cos²θ_h (α²−1) + 1` and
+    /// `cos²θ_h = (1 + cos θ)/2`, `θ` the smallest angle between `r` and the
+    /// sphere ([`cone_cos_toward`]; the half vector's angle taken as half
+    /// the angle to the mirror direction, as [`glossy_importance`] does),
+    /// kept in `[1, s_max]` ([`crate::brdf::range_scale`]). A light near the
+    /// mirror direction gets the receiver's full scale, one far off its lobe
+    /// about `max(k_d, 1)`: the ranges grow only toward the lobe. Monotone in
+    /// the sphere (a sphere holding another gets at least its scale), which
+    /// the BSH's walk relies on. 1 for `rl.w ≤ 1` (no specular lobe).
+    /// The estimate stays unbiased for any such `s` (the roulette uses the
+    /// same `s` in its test and its probability); `s` keeps one light's
+    /// roulette deviation at the receiver near ε (`crate::range`), exactly so
+    /// in the plane of incidence.
+    pub fn range_scale_toward(rl: vec4f, center: vec3f, radius: f32, p: vec3f, r: vec3f) -> f32 {
+        if rl.w <= 1.0 {
+            return 1.0;
+        }
+        return range_scale_at(rl, cone_cos_toward(center, radius, p, r));
+    }
+
+    /// [`range_scale_toward`] of a sphere whose directions come within
+    /// angle `θ` of the mirror direction, `cos_t = cos θ` (non-decreasing in
+    /// `cos_t`).
+    pub fn range_scale_at(rl: vec4f, cos_t: f32) -> f32 {
+        let t: f32 = (0.5 + 0.5 * cos_t) * (rl.z - 1.0) + 1.0;
+        return clamp(rl.x + rl.y * rl.z / (t * t), 1.0, rl.w * rl.w);
+    }
+
     /// Importance at point `p` (receiver normal `n`, or zero for none) of
     /// lights inside the sphere `(center, radius)` emitting power `phi`
     /// with normals in the cone `(axis, cos_o)` and emission spread `cos_e`
@@ -287,10 +319,22 @@ impl Receiver {
         Receiver { p, n, r: n, lobe: glam::Vec4::new(1.0, 0.0, 1.0, 1.0) }
     }
 
-    /// The factor by which this receiver scales SLC's ranges²
+    /// The largest factor by which this receiver scales SLC's ranges²
     /// ([`crate::brdf::range_scale`]; 1 for a Lambertian receiver).
     pub fn range_scale(&self) -> f32 {
         crate::brdf::range_scale(self.lobe)
+    }
+
+    /// This receiver's [`crate::brdf::range_lobe`].
+    pub fn range_lobe(&self) -> glam::Vec4 {
+        crate::brdf::range_lobe(self.lobe)
+    }
+
+    /// The factor by which this receiver scales the ranges² of the light
+    /// bounded by `cone` ([`range_scale_toward`] over its bounding sphere,
+    /// with `rl` this receiver's [`Receiver::range_lobe`]).
+    pub fn range_scale_to(&self, rl: glam::Vec4, cone: &LightCone) -> f32 {
+        range_scale_toward(rl, cone.center, cone.radius, self.p, self.r)
     }
 
     /// [`receiver_importance`] of the light bounded by `cone`.

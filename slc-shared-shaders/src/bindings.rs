@@ -248,8 +248,8 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             v.push(b(1, 2, "rt2", Resource::Read("array<f32>"), "threshold range²", "`light_ranges`"));
             v.push(b(1, 3, "r2", Resource::Read("array<f32>"), "random range²", "`light_ranges`"));
             v.push(b(1, 4, "bsh_nodes", Resource::Read("array<BshNode>"), "the refitted BSH", "`bsh_refit`"));
-            if f.selection == Selection::Weighted {
-                v.push(b(1, 5, "light_cones", Resource::Read("array<GpuLightCone>"), "each light's importance cone", "host"));
+            if f.selection == Selection::Weighted || f.direct_output != DirectOutput::Irradiance {
+                v.push(b(1, 5, "light_cones", Resource::Read("array<GpuLightCone>"), "each light's bounding sphere and importance cone", "host"));
             }
             return v;
         }

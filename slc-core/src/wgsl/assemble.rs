@@ -18,6 +18,8 @@ macro_rules! numeric_helpers {
 fn to_u32(x: f32) -> u32 { return u32(x); }
 fn mul_lo_u32(a: u32, b: u32) -> u32 { return a * b; }
 fn add_wrap_u32(a: u32, b: u32) -> u32 { return a + b; }
+fn f32_from_bits(u: u32) -> f32 { return bitcast<f32>(u); }
+fn f32_to_bits(x: f32) -> u32 { return bitcast<u32>(x); }
 "
     };
 }

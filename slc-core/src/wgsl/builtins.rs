@@ -53,6 +53,18 @@ pub fn to_u32(x: f32) -> u32 {
     x as u32
 }
 
+/// WGSL's `bitcast<f32>(u)`.
+#[inline]
+pub fn f32_from_bits(u: u32) -> f32 {
+    f32::from_bits(u)
+}
+
+/// WGSL's `bitcast<u32>(x)`.
+#[inline]
+pub fn f32_to_bits(x: f32) -> u32 {
+    x.to_bits()
+}
+
 /// Low 32 bits of `a · b` (WGSL's `u32` multiply wraps).
 #[inline]
 pub fn mul_lo_u32(a: u32, b: u32) -> u32 {

@@ -35,12 +35,12 @@
 //! are delta lights (weight 1).
 
 use crate::geometry::Geometry;
-use glam::Vec3;
+use glam::{Vec3, Vec4};
 use rand_core::RngCore;
 use rand_pcg::Pcg32;
 use rayon::prelude::*;
 use slc_core::brdf::{bsdf_pdf, bsdf_sample, specular_probability};
-use slc_core::bsh::{BSH_NONE, Bsh, BshNode, bsh_scaled_radius};
+use slc_core::bsh::{BSH_NONE, Bsh, BshNode, walk::bsh_reaches};
 use slc_core::importance::Receiver;
 use slc_core::importance::weighted_select_pdf;
 use slc_core::light::{Light, connection_cosine, connection_factor};
@@ -49,7 +49,6 @@ use slc_core::path::{camera_dir, continues_path, jittered_pixel, path_survival, 
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::ray::{face_against, ray_t_min, surface_offset};
 use slc_core::reservoir::{Reservoir, WeightedReservoir, reservoir_select_pdf, uniform_light};
-use slc_core::sphere::sphere_contains_point;
 use slc_core::xi::{xi_for, xi_from_bits};
 use slc_scene::RenderError;
 use slc_scene::backend::{PathTracer, Timing};
@@ -107,12 +106,11 @@ struct Pass {
 }
 
 impl Pass {
-    /// Whether light `l`'s range sphere, scaled for a receiver by `scale =
-    /// √s` ([`bsh_scaled_radius`]), holds `x`: it is one of the receiver's
-    /// candidates.
-    fn in_range(&self, l: usize, x: Vec3, scale: f32) -> bool {
-        let leaf = self.leaves[l];
-        sphere_contains_point(leaf.center, bsh_scaled_radius(leaf, scale), x)
+    /// Whether light `l`'s range sphere, scaled for the receiver `rc`
+    /// (range lobe `rl`; [`bsh_reaches`]), holds it: it is one of the
+    /// receiver's candidates.
+    fn in_range(&self, l: usize, rc: &Receiver, rl: Vec4) -> bool {
+        bsh_reaches(self.leaves[l], rc.p, rc.r, rl)
     }
 }
 
@@ -175,9 +173,10 @@ impl CpuPathTracer {
     fn light_pdf(&self, s: &PtSettings, st: &Pass, l: usize, rc: &Receiver, y: Vec3, nee: NeeState, in_nee: bool, picked: Option<f32>) -> f32 {
         let Light::Triangle(t) = &self.lights()[l] else { return 0.0 };
         let x = rc.p;
-        // The receiver's range scale s (1 for a Lambertian one).
-        let rs = rc.range_scale();
-        let in_range = in_nee || st.in_range(l, x, rs.sqrt());
+        // The receiver's range scale s toward this light (1 for a Lambertian one).
+        let rl = rc.range_lobe();
+        let rs = rc.range_scale_to(rl, &self.pts.light_set().cones()[l]);
+        let in_range = in_nee || st.in_range(l, rc, rl);
         let v = x - y;
         let d2 = v.length_squared();
         let cos_y = if d2 > 0.0 { t.normal().dot(v / d2.sqrt()) } else { 0.0 };
@@ -210,8 +209,10 @@ impl CpuPathTracer {
             Light::Triangle(t) => t.sample(u1, u2),
             _ => light.bound().center,
         };
+        // The receiver's range scale toward this light (SLC's methods only).
+        let rs = if rr { vx.rc.range_scale_to(vx.rl, &self.pts.light_set().cones()[l]) } else { 1.0 };
         // The baselines cull nothing: r² = +∞ keeps every light.
-        let cos_x = connection_cosine(x, y, n, ng, if rr { vx.range_scale * st.r2[l] } else { f32::INFINITY });
+        let cos_x = connection_cosine(x, y, n, ng, if rr { rs * st.r2[l] } else { f32::INFINITY });
         if cos_x <= 0.0 {
             return None;
         }
@@ -227,7 +228,7 @@ impl CpuPathTracer {
             return None;
         }
         // The baselines cull nothing: r_t² = +∞ makes 1/p = 1.
-        let rt2 = if rr { vx.range_scale * st.rt2[l] } else { f32::INFINITY };
+        let rt2 = if rr { rs * st.rt2[l] } else { f32::INFINITY };
         let to_light = -wdir;
         let mis = match light {
             // The one-light methods (no RR) pass `extra = 1/pmf` of their pick.
@@ -245,7 +246,7 @@ impl CpuPathTracer {
         match s.method {
             PtMethod::Slc => {
                 let mut cand = Vec::new();
-                self.bsh.for_each_containing_scaled(x, vx.range_scale.sqrt(), |l| cand.push(l));
+                self.bsh.for_each_reaching(x, vx.rc.r, vx.rl, |l| cand.push(l));
                 let nee = NeeState { seen: cand.len() as u32, w_sum: 0.0 };
                 for l in cand {
                     if let Some(c) = self.connect(s, st, l as usize, vx, rng, nee, true, 1.0) {
@@ -256,7 +257,7 @@ impl CpuPathTracer {
             }
             PtMethod::SlcReservoir => {
                 let mut res = Reservoir::<RESERVOIR_K>::new();
-                self.bsh.for_each_containing_scaled(x, vx.range_scale.sqrt(), |l| res.push(l, rng.next_u32(), rng.next_u32()));
+                self.bsh.for_each_reaching(x, vx.rc.r, vx.rl, |l| res.push(l, rng.next_u32(), rng.next_u32()));
                 let (nee, w) = (NeeState { seen: res.seen(), w_sum: 0.0 }, res.weight());
                 for &l in res.picks() {
                     if let Some(c) = self.connect(s, st, l as usize, vx, rng, nee, true, w) {
@@ -308,10 +309,11 @@ impl CpuPathTracer {
         let mut res = WeightedReservoir::<WEIGHTED_K>::new();
         let cones = self.pts.light_set().cones();
         let mut seen = 0;
-        let rs = rc.range_scale();
-        self.bsh.for_each_containing_scaled(rc.p, rs.sqrt(), |l| {
+        let rl = rc.range_lobe();
+        self.bsh.for_each_reaching(rc.p, rc.r, rl, |l| {
             seen += 1;
-            let w = cones[l as usize].weight(rc, rs * st.rt2[l as usize]);
+            let c = &cones[l as usize];
+            let w = c.weight(rc, rc.range_scale_to(rl, c) * st.rt2[l as usize]);
             // Zero weight: never picked (and its MIS pdf is 0), so no draws.
             if w > 0.0 {
                 let u = [(); WEIGHTED_K].map(|_| xi_from_bits(rng.next_u32()));
@@ -406,14 +408,15 @@ struct Vertex {
     wo: Vec3,
     alpha: f32,
     p_spec: f32,
-    /// The factor `s` the receiver scales SLC's ranges² by ([`Receiver::range_scale`]).
-    range_scale: f32,
+    /// The receiver's range lobe ([`Receiver::range_lobe`]): what scales
+    /// each light's ranges².
+    rl: Vec4,
 }
 
 impl Vertex {
     fn new(mat: Material, x: Vec3, n: Vec3, ng: Vec3, wo: Vec3) -> Vertex {
         let rc = mat.receiver(x, n, wo);
-        Vertex { rc, ng, mat, wo, alpha: mat.alpha(), p_spec: specular_probability(rc.lobe), range_scale: rc.range_scale() }
+        Vertex { rc, ng, mat, wo, alpha: mat.alpha(), p_spec: specular_probability(rc.lobe), rl: rc.range_lobe() }
     }
 
     /// The BSDF sampling pdf of the unit direction `l` ([`bsdf_pdf`]).
@@ -438,6 +441,8 @@ impl PathTracer for CpuPathTracer {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use slc_core::bsh::bsh_scaled_radius;
+    use slc_core::sphere::sphere_contains_point;
     use slc_scene::scene::Scene;
 
     /// For a triangle light reachable by both strategies, the light
@@ -464,15 +469,18 @@ mod tests {
             let vx = Vertex::new(mat, x, n, n, wo);
             let rc = vx.rc;
             let mut nee = NeeState::default();
-            let rs = rc.range_scale();
-            pts.bsh.for_each_containing_scaled(x, rs.sqrt(), |l| {
+            let rl = rc.range_lobe();
+            let cones = pts.pts.light_set().cones();
+            pts.bsh.for_each_reaching(x, rc.r, rl, |l| {
                 nee.seen += 1;
-                nee.w_sum += pts.pts.light_set().cones()[l as usize].weight(&rc, rs * st.rt2[l as usize]);
+                let c = &cones[l as usize];
+                nee.w_sum += c.weight(&rc, rc.range_scale_to(rl, c) * st.rt2[l as usize]);
             });
             let s = PtSettings { method, error_bound: 0.005, ..PtSettings::default() };
             for l in 0..pts.light_count() {
                 let Light::Triangle(t) = &pts.lights()[l] else { continue };
-                let in_range = st.in_range(l, x, rs.sqrt());
+                let in_range = st.in_range(l, &rc, rl);
+                let rs = rc.range_scale_to(rl, &cones[l]);
                 for (u1, u2) in [(0.1, 0.2), (0.5, 0.5), (0.9, 0.05)] {
                     let y = t.sample(u1, u2);
                     let cos_x = n.dot((y - x).normalize());
@@ -527,12 +535,21 @@ mod tests {
         };
         let (pts, st) = (&pts.0, &pts.1);
         let (x, n) = (Vec3::new(0.3, 0.0, 0.3), Vec3::Y);
-        let rc = Material::gltf(Vec3::splat(0.9), 1.0, 0.45).receiver(x, n, Vec3::new(0.5, 0.5, 0.1).normalize());
-        let rs = rc.range_scale();
-        assert!(rc.lobe.y > 0.0 && rs > 1.0, "a glossy receiver scales its ranges: {rs}");
+        // The view mirrors a point near the light's edge: its lobe covers
+        // part of the split light.
         let cones = pts.pts.light_set().cones();
+        let aim = cones.iter().map(|c| c.center).sum::<Vec3>() / cones.len() as f32 + Vec3::new(0.12, 0.0, 0.0);
+        let to = (aim - x).normalize();
+        let rc = Material::gltf(Vec3::splat(0.9), 1.0, 0.45).receiver(x, n, n * (2.0 * n.dot(to)) - to);
+        let (rs, rl) = (rc.range_scale(), rc.range_lobe());
+        assert!(rc.lobe.y > 0.0 && rs > 1.0, "a glossy receiver scales its ranges: {rs}");
+        // Each light's own scale toward it, and its leaf's sphere so scaled
+        // (the walk's inner nodes are not consulted).
+        let scale: Vec<f32> = cones.iter().map(|c| rc.range_scale_to(rl, c)).collect();
+        assert!(scale.iter().any(|&s| s < 0.5 * rs) && scale.iter().any(|&s| s > 0.8 * rs), "scales toward the lights {scale:?}, peak {rs}");
+        let holds = |l: usize| sphere_contains_point(st.leaves[l].center, bsh_scaled_radius(st.leaves[l], scale[l].sqrt()), x);
         let brute: Vec<(usize, f64)> =
-            (0..pts.light_count()).filter(|&l| st.in_range(l, x, rs.sqrt())).map(|l| (l, cones[l].weight(&rc, rs * st.rt2[l]) as f64)).collect();
+            (0..pts.light_count()).filter(|&l| holds(l)).map(|l| (l, cones[l].weight(&rc, scale[l] * st.rt2[l]) as f64)).collect();
         let w_brute: f64 = brute.iter().map(|&(_, w)| w).sum();
         assert!(brute.len() >= 10 && brute.len() < pts.light_count(), "{} candidates", brute.len());
         let mut rng = Pcg32::new(11, 5);

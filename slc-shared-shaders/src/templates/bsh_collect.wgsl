@@ -12,14 +12,14 @@ struct Picks {
 
 {% include "bsh_walk.wgsl" %}
 
-/// Lights whose range sphere, scaled for the receiver by `scale` (√s, 1
-/// for a Lambertian one; slc-core's `bsh_scaled_radius`), contains `x`,
+/// Lights whose range sphere, scaled for the receiver at `x` (mirror
+/// direction `r`, range lobe `rl`; slc-core's `bsh_reaches`), contains `x`,
 /// streamed through the reservoir; `seed` drives its random choices.
-fn bsh_collect(x: vec3f, scale: f32, seed: u32) -> Picks {
+fn bsh_collect(x: vec3f, r: vec3f, rl: vec4f, seed: u32) -> Picks {
     var picks: Picks;
     picks.n = 0u;
     var h = seed;
-    for (var i = bsh_next_leaf_scaled(BSH, bsh_first(BSH), x, scale); i != BSH_NONE; i = bsh_next_leaf_scaled(BSH, bsh_nodes[i].next, x, scale)) {
+    for (var i = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); i != BSH_NONE; i = bsh_next_leaf_lobe(BSH, bsh_nodes[i].next, x, r, rl)) {
         if reservoir_takes(picks.n) {
             picks.n += 1u;
             h = pcg_hash(h);
@@ -47,7 +47,7 @@ struct Connection {
 }
 
 /// Samples pick `li` at `(u1, u2)`, applies the RR test with the light's own
-/// range² (scaled by the receiver's `s`, 1 for a Lambertian one) at the
+/// range² (scaled by the receiver's `s` toward it, 1 for a Lambertian one) at the
 /// sampled point's distance, casts the shadow ray (offset `eps` along `n`)
 /// and weights by `1/p` and the reservoir weight `w_res`.
 fn connect(li: u32, x: vec3f, n: vec3f, ng: vec3f, s: f32, w_res: f32, u1: f32, u2: f32, eps: f32) -> Connection {

@@ -31,7 +31,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let x = p.xyz;
     let n = normals[i].xyz;
     let seed = point_stream(params.seed, i, params.frame);
-    let picks = bsh_collect(x, 1.0, seed);
+    let picks = bsh_collect(x, x, vec4f(1.0, 0.0, 1.0, 1.0), seed);
     let w_res = reservoir_weight(picks.n, K);
     var h = pick_stream(seed);
     var e = vec3f(0.0);

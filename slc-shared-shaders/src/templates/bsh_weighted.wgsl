@@ -15,19 +15,19 @@ struct WeightedPicks {
     h: u32,
 }
 
-/// The lights whose range sphere, scaled for the receiver by `scale` (√s;
-/// slc-core's `bsh_scaled_radius`), contains `x`, weighed for the receiver
+/// The lights whose range sphere, scaled for the receiver (range lobe `rl`;
+/// slc-core's `bsh_reaches`), contains `x`, weighed for the receiver
 /// `(x, n, r, lobe)` and streamed through K weighted one-slot reservoirs
 /// driven by the stream `h`.
-fn bsh_weighted_collect(x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, scale: f32, h0: u32) -> WeightedPicks {
+fn bsh_weighted_collect(x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, rl: vec4f, h0: u32) -> WeightedPicks {
     var picks: WeightedPicks;
     picks.w_sum = 0.0;
     picks.n = 0u;
     var h = h0;
-    for (var b = bsh_next_leaf_scaled(BSH, bsh_first(BSH), x, scale); b != BSH_NONE; b = bsh_next_leaf_scaled(BSH, bsh_nodes[b].next, x, scale)) {
+    for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {
         picks.n += 1u;
         let li = bsh_nodes[b].light;
-        let w = light_weight(li, x, n, r, lobe);
+        let w = light_weight(li, x, n, r, lobe, rl);
         if w > 0.0 {
             picks.w_sum += w;
             for (var s = 0u; s < K; s++) {

@@ -6,8 +6,10 @@ fn occluded(a: vec3f, b: vec3f) -> bool {
 }
 {{ bindings }}
 {% include "bsh_collect.wgsl" %}
-{% if selection == "weighted" %}
+{% if selection == "weighted" or pbr != "none" %}
 {% include "light_weight.wgsl" %}
+{% endif %}
+{% if selection == "weighted" %}
 {% include "bsh_weighted.wgsl" %}
 {% endif %}
 {% include "gbuffer_read.wgsl" %}
@@ -38,10 +40,16 @@ struct Material {
     reflectance: f32,
 }
 
-/// One pick of light `li` at `x` (normal `n`) with selection weight `w`,
-/// its ranges² scaled by the receiver's `s` (slc-core's `range_scale`).
-fn shade_pick(li: u32, x: vec3f, n: vec3f, m: Material, s2: f32, w: f32, u1: f32, u2: f32) -> Shaded {
+/// One pick of light `li` at `x` (normal `n`, mirror direction `r`) with
+/// selection weight `w`, its ranges² scaled by the receiver's `s` toward it
+/// (range lobe `rl`; slc-core's `range_scale_toward`; 1 for irradiance).
+fn shade_pick(li: u32, x: vec3f, n: vec3f, r: vec3f, rl: vec4f, m: Material, w: f32, u1: f32, u2: f32) -> Shaded {
     var s: Shaded;
+{% if pbr != "none" %}
+    let s2 = light_range_scale(li, x, r, rl);
+{% else %}
+    let s2 = 1.0;
+{% endif %}
     let c = connect(li, x, n, n, s2, w, u1, u2, 0.0);
     s.e = c.e;
     s.diffuse = vec3f(0.0);
@@ -85,7 +93,8 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     var m: Material;
     // The receiver as light selection sees it: Lambertian for irradiance;
     // with a material, its lobe, mirror direction and range scale s (a
-    // glossy lobe reaches farther lights; slc-core's `range_scale`).
+    // glossy lobe reaches farther lights near its mirror direction;
+    // slc-core's `range_lobe`).
     var lobe = vec4f(1.0, 0.0, 1.0, 1.0);
     var r = n;
 {% if pbr != "none" %}
@@ -102,39 +111,38 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
 {% endif %}
     r = mirror_dir(n, m.v);
 {% endif %}
-    let s2 = range_scale(lobe);
-    let scale = sqrt(s2);
+    let rl = range_lobe(lobe);
     let seed = point_stream(view.seed, gid.y * view.width + gid.x, view.frame);
     var h = pick_stream(seed);
     var t = Shaded(vec3f(0.0), vec3f(0.0), vec3f(0.0));
 {% if selection == "weighted" %}
-    let picks = bsh_weighted_collect(x, n, r, lobe, scale, seed);
+    let picks = bsh_weighted_collect(x, n, r, lobe, rl, seed);
     if picks.w_sum > 0.0 {
         for (var k = 0u; k < K; k++) {
             h = pcg_hash(h);
             let u1 = xi_from_bits(h);
             h = pcg_hash(h);
-            t = add(t, shade_pick(picks.light[k], x, n, m, s2, weighted_pick_weight(picks.w_sum, picks.w[k], K), u1, xi_from_bits(h)));
+            t = add(t, shade_pick(picks.light[k], x, n, r, rl, m, weighted_pick_weight(picks.w_sum, picks.w[k], K), u1, xi_from_bits(h)));
         }
     }
     let count = picks.n;
 {% elif selection == "all" %}
     var count = 0u;
-    for (var b = bsh_next_leaf_scaled(BSH, bsh_first(BSH), x, scale); b != BSH_NONE; b = bsh_next_leaf_scaled(BSH, bsh_nodes[b].next, x, scale)) {
+    for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {
         count += 1u;
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        t = add(t, shade_pick(bsh_nodes[b].light, x, n, m, s2, 1.0, u1, xi_from_bits(h)));
+        t = add(t, shade_pick(bsh_nodes[b].light, x, n, r, rl, m, 1.0, u1, xi_from_bits(h)));
     }
 {% else %}
-    let picks = bsh_collect(x, scale, seed);
+    let picks = bsh_collect(x, r, rl, seed);
     let w_res = reservoir_weight(picks.n, K);
     for (var k = 0u; k < min(picks.n, K); k++) {
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        t = add(t, shade_pick(picks.light[k], x, n, m, s2, w_res, u1, xi_from_bits(h)));
+        t = add(t, shade_pick(picks.light[k], x, n, r, rl, m, w_res, u1, xi_from_bits(h)));
     }
     let count = picks.n;
 {% endif %}

@@ -23,8 +23,8 @@
 /// selection weight (the reservoir's n/k, the weighted picks' W/(k·w), or
 /// 1/pmf), `nee` what the traversal found (`select_pdf`; the pick is in
 /// range).
-fn shade_pick(li: u32, x: vec3f, n: vec3f, ng: vec3f, m: GpuMaterial, wo: vec3f, r: vec3f, lobe: vec4f, w: f32, nee: u32, u1: f32, u2: f32) -> vec3f {
-    let c = connect(li, x, n, ng, range_scale(lobe), w, u1, u2, params.eps);
+fn shade_pick(li: u32, x: vec3f, n: vec3f, ng: vec3f, m: GpuMaterial, wo: vec3f, r: vec3f, lobe: vec4f, rl: vec4f, w: f32, nee: u32, u1: f32, u2: f32) -> vec3f {
+    let c = connect(li, x, n, ng, light_range_scale(li, x, r, rl), w, u1, u2, params.eps);
     if c.cos_x <= 0.0 {
         return vec3f(0.0);
     }
@@ -33,7 +33,7 @@ fn shade_pick(li: u32, x: vec3f, n: vec3f, ng: vec3f, m: GpuMaterial, wo: vec3f,
     if light_area(lights[li]) > 0.0 {
 {% if selection == "lightbvh" %}
         // The pick's pmf is 1/w: no second walk of the tree.
-        let pdf_light = light_pdf_selected(li, x, lobe, c.y, 1.0 / w);
+        let pdf_light = light_pdf_selected(li, x, r, lobe, c.y, 1.0 / w);
 {% else %}
         let pdf_light = light_pdf(li, x, n, r, lobe, c.y, nee, true);
 {% endif %}
@@ -60,24 +60,25 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let wo = vtx.wo;
     let r = mirror_dir(n, wo);
     let lobe = receiver_lobe(m.albedo, m.metallic, m.f0, m.f90, m.alpha, dot(n, wo));
-    // The receiver's range scale √s: a glossy lobe reaches farther lights.
-    let scale = sqrt(range_scale(lobe));
+    // What scales each light's range: a glossy lobe reaches farther lights
+    // near its mirror direction.
+    let rl = range_lobe(lobe);
     let seed = point_stream(params.seed, i, params.frame);
     var h = pick_stream(seed);
     var sum = vec3f(0.0);
 {% if selection == "reservoir" %}
-    let picks = bsh_collect(x, scale, seed);
+    let picks = bsh_collect(x, r, rl, seed);
     candidates[i] = picks.n;
     let w_res = reservoir_weight(picks.n, K);
     for (var s = 0u; s < min(picks.n, K); s++) {
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        sum += shade_pick(picks.light[s], x, n, ng, m, wo, r, lobe, w_res, picks.n, u1, xi_from_bits(h));
+        sum += shade_pick(picks.light[s], x, n, ng, m, wo, r, lobe, rl, w_res, picks.n, u1, xi_from_bits(h));
     }
 {% elif selection == "weighted" %}
     // K independent one-slot weighted reservoirs over the in-range lights.
-    let picks = bsh_weighted_collect(x, n, r, lobe, scale, h);
+    let picks = bsh_weighted_collect(x, n, r, lobe, rl, h);
     h = picks.h;
     let w_sum = picks.w_sum;
     candidates[i] = bitcast<u32>(w_sum);
@@ -86,18 +87,18 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             h = pcg_hash(h);
             let u1 = xi_from_bits(h);
             h = pcg_hash(h);
-            sum += shade_pick(picks.light[s], x, n, ng, m, wo, r, lobe, weighted_pick_weight(w_sum, picks.w[s], K), bitcast<u32>(w_sum), u1, xi_from_bits(h));
+            sum += shade_pick(picks.light[s], x, n, ng, m, wo, r, lobe, rl, weighted_pick_weight(w_sum, picks.w[s], K), bitcast<u32>(w_sum), u1, xi_from_bits(h));
         }
     }
 {% elif selection == "all" %}
     // Every in-range light, each connected as the traversal finds it.
     var count = 0u;
-    for (var b = bsh_next_leaf_scaled(BSH, bsh_first(BSH), x, scale); b != BSH_NONE; b = bsh_next_leaf_scaled(BSH, bsh_nodes[b].next, x, scale)) {
+    for (var b = bsh_next_leaf_lobe(BSH, bsh_first(BSH), x, r, rl); b != BSH_NONE; b = bsh_next_leaf_lobe(BSH, bsh_nodes[b].next, x, r, rl)) {
         count += 1u;
         h = pcg_hash(h);
         let u1 = xi_from_bits(h);
         h = pcg_hash(h);
-        sum += shade_pick(bsh_nodes[b].light, x, n, ng, m, wo, r, lobe, 1.0, 0u, u1, xi_from_bits(h));
+        sum += shade_pick(bsh_nodes[b].light, x, n, ng, m, wo, r, lobe, rl, 1.0, 0u, u1, xi_from_bits(h));
     }
     candidates[i] = count;
 {% else %}
@@ -124,7 +125,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     h = pcg_hash(h);
     let u2 = xi_from_bits(h);
     if pmf > 0.0 {
-        sum = shade_pick(li, x, n, ng, m, wo, r, lobe, 1.0 / pmf, 0u, u1, u2);
+        sum = shade_pick(li, x, n, ng, m, wo, r, lobe, rl, 1.0 / pmf, 0u, u1, u2);
     }
 {% endif %}
     let add = vtx.weight * sum;

@@ -13,6 +13,7 @@ const K: u32 = {{ k }}u;
 // bounce, as the CPU path tracer does.
 
 {{ bindings }}
+{% include "bsh_walk.wgsl" %}
 
 /// Next uniform in [0, 1) of a path's random state.
 fn next_uniform(state: ptr<function, u32>) -> f32 {
@@ -65,7 +66,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         var w = 1.0;
         if st.pdf_bsdf > 0.0 {
             let leaf = bsh_nodes[light_leaf[tri.light]];
-            let in_range = sphere_contains_point(leaf.center, bsh_scaled_radius(leaf, sqrt(range_scale(st.prev_lobe))), st.prev);
+            let in_range = bsh_reaches(leaf, st.prev, st.prev_r, range_lobe(st.prev_lobe));
             w = mis_weight(st.pdf_bsdf, light_pdf(tri.light, st.prev, st.prev_normal, st.prev_r, st.prev_lobe, x, candidates[i], in_range));
         }
         let add = st.beta * lights[tri.light].intensity * w;

@@ -40,7 +40,7 @@ fn select_pdf(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, nee: u32, in_r
 {% if selection == "reservoir" %}
     return reservoir_select_pdf(nee, in_range, K);
 {% elif selection == "weighted" %}
-    return weighted_select_pdf(light_weight(li, x, n, r, lobe), bitcast<f32>(nee), in_range, K);
+    return weighted_select_pdf(light_weight(li, x, n, r, lobe, range_lobe(lobe)), bitcast<f32>(nee), in_range, K);
 {% elif selection == "all" %}
     return 1.0;
 {% elif selection == "uniform" %}
@@ -62,17 +62,17 @@ fn select_pdf(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, nee: u32, in_r
 /// than one in expectation and biases the image (the CPU path tracer's
 /// test found +40%).
 fn light_pdf(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, y: vec3f, nee: u32, in_range: bool) -> f32 {
-    return light_pdf_selected(li, x, lobe, y, select_pdf(li, x, n, r, lobe, nee, in_range));
+    return light_pdf_selected(li, x, r, lobe, y, select_pdf(li, x, n, r, lobe, nee, in_range));
 }
 
 /// [`light_pdf`] for a known selection probability `sel`: what the
 /// one-light selection's pick already carries (its pmf), so that the light
 /// BVH's MIS weight needs no second walk (pbrt-v4's `SampleLd` takes
 /// `sampledLight->p`).
-fn light_pdf_selected(li: u32, x: vec3f, lobe: vec4f, y: vec3f, sel: f32) -> f32 {
+fn light_pdf_selected(li: u32, x: vec3f, r: vec3f, lobe: vec4f, y: vec3f, sel: f32) -> f32 {
     let l = lights[li];
     let v = x - y;
     let d2 = dot(v, v);
     let cos_y = select(0.0, dot(light_normal(l), v / sqrt(d2)), d2 > 0.0);
-    return light_strategy_pdf(sel, range_scale(lobe) * rt2[li], d2, light_area(l), cos_y);
+    return light_strategy_pdf(sel, light_range_scale(li, x, r, range_lobe(lobe)) * rt2[li], d2, light_area(l), cos_y);
 }

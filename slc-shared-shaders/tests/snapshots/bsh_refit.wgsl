@@ -66,6 +66,14 @@ var<storage> r2_2: array<f32>;
 @group(0) @binding(4) 
 var<storage, read_write> bsh_nodes: array<BshNode>;
 
+fn f32_from_bits(u: u32) -> f32 {
+    return bitcast<f32>(u);
+}
+
+fn f32_to_bits(x: f32) -> u32 {
+    return bitcast<u32>(x);
+}
+
 fn sphere_pad(r: f32, c: vec3<f32>) -> f32 {
     return (((r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
 }
@@ -115,6 +123,14 @@ fn range_radius(extent: f32, r2_1: f32) -> f32 {
     return (extent + sqrt(r2_1));
 }
 
+fn bsh_range_bound(node: BshNode) -> f32 {
+    if (node.child == BSH_NONE) {
+        return (node.radius - node.extent);
+    }
+    let _e8 = f32_from_bits(node.light);
+    return _e8;
+}
+
 fn bsh_node(nodes: u32, i: u32) -> BshNode {
     let _e4 = bsh_nodes[i];
     return _e4;
@@ -128,6 +144,26 @@ fn bsh_children_sphere(nodes_1: u32, i_1: u32) -> vec4<f32> {
     return _e11;
 }
 
+fn bsh_children_extent(nodes_2: u32, i_2: u32, center: vec3<f32>) -> f32 {
+    let _e3 = bsh_node(nodes_2, i_2);
+    let _e5 = bsh_node(nodes_2, _e3.child);
+    let _e7 = bsh_node(nodes_2, _e5.next);
+    let vl = (_e5.center - center);
+    let vr = (_e7.center - center);
+    let a = max((sqrt(dot(vl, vl)) + _e5.extent), (sqrt(dot(vr, vr)) + _e7.extent));
+    let _e21 = sphere_pad(a, center);
+    return (a + _e21);
+}
+
+fn bsh_children_range(nodes_3: u32, i_3: u32) -> f32 {
+    let _e2 = bsh_node(nodes_3, i_3);
+    let _e4 = bsh_node(nodes_3, _e2.child);
+    let _e6 = bsh_node(nodes_3, _e4.next);
+    let _e7 = bsh_range_bound(_e4);
+    let _e8 = bsh_range_bound(_e6);
+    return max(_e7, _e8);
+}
+
 @compute @workgroup_size(64, 1, 1) 
 fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e4 = params.count;
@@ -135,18 +171,24 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     let _e9 = params.first;
-    let i_2 = order[(_e9 + gid.x)];
-    let node = bsh_nodes[i_2];
-    if (node.child == BSH_NONE) {
-        let bound = bounds[node.light];
-        bsh_nodes[i_2].center = bound.xyz;
-        let _e35 = r2_2[node.light];
+    let i_4 = order[(_e9 + gid.x)];
+    let node_1 = bsh_nodes[i_4];
+    if (node_1.child == BSH_NONE) {
+        let bound = bounds[node_1.light];
+        bsh_nodes[i_4].center = bound.xyz;
+        let _e35 = r2_2[node_1.light];
         let _e36 = range_radius(bound.w, _e35);
-        bsh_nodes[i_2].radius = _e36;
+        bsh_nodes[i_4].radius = _e36;
+        bsh_nodes[i_4].extent = bound.w;
         return;
     }
-    let _e38 = bsh_children_sphere(BSH, i_2);
-    bsh_nodes[i_2].center = _e38.xyz;
-    bsh_nodes[i_2].radius = _e38.w;
+    let _e42 = bsh_children_sphere(BSH, i_4);
+    bsh_nodes[i_4].center = _e42.xyz;
+    bsh_nodes[i_4].radius = _e42.w;
+    let _e56 = bsh_children_extent(BSH, i_4, _e42.xyz);
+    bsh_nodes[i_4].extent = _e56;
+    let _e61 = bsh_children_range(BSH, i_4);
+    let _e62 = f32_to_bits(_e61);
+    bsh_nodes[i_4].light = _e62;
     return;
 }

@@ -110,7 +110,7 @@ var<storage> bsh_nodes: array<BshNode>;
 @group(0) @binding(3) 
 var<storage> lights: array<GpuLight>;
 @group(0) @binding(5) 
-var<storage> r2_2: array<f32>;
+var<storage> r2_3: array<f32>;
 @group(0) @binding(4) 
 var<storage> rt2_2: array<f32>;
 @group(0) @binding(0) 
@@ -141,6 +141,10 @@ fn mul_lo_u32_(a: u32, b: u32) -> u32 {
 
 fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
     return (a_1 + b_1);
+}
+
+fn f32_from_bits(u_1: u32) -> f32 {
+    return bitcast<f32>(u_1);
 }
 
 fn xi_from_bits(bits: u32) -> f32 {
@@ -252,8 +256,8 @@ fn atan_portable(x_4: f32) -> f32 {
     let _e21 = base;
     let _e33 = t;
     let _e35 = t;
-    let r_1 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
-    return select(r_1, -(r_1), (x_4 < 0f));
+    let r_5 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
+    return select(r_5, -(r_5), (x_4 < 0f));
 }
 
 fn atan2_portable(y_1: f32, x_5: f32) -> f32 {
@@ -432,6 +436,14 @@ fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
     return (node.radius * scale);
 }
 
+fn bsh_range_bound(node_1: BshNode) -> f32 {
+    if (node_1.child == BSH_NONE) {
+        return (node_1.radius - node_1.extent);
+    }
+    let _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
 fn mul_hi_u32_(a_3: u32, b_2: u32) -> u32 {
     let a_lo = (a_3 & 65535u);
     let a_hi = (a_3 >> 16u);
@@ -476,18 +488,60 @@ fn reservoir_weight(n_5: u32, k_1: u32) -> f32 {
     return max((_e2 / _e3), 1f);
 }
 
+fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+    if (cos_a > cos_b) {
+        return 1f;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+fn safe_sqrt(x_8: f32) -> f32 {
+    return sqrt(max(x_8, 0f));
+}
+
+fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
+    let _e5 = safe_sqrt((1f - (r2_2 / dist2_)));
+    return select(_e5, -1f, (dist2_ <= r2_2));
+}
+
+fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d: vec3<f32>) -> f32 {
+    let v_2 = (center - p);
+    let dist2_1 = dot(v_2, v_2);
+    let w_4 = select(vec3<f32>(0f, 0f, 0f), (v_2 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let _e17 = subtended_cos(dist2_1, (radius * radius));
+    let cos_i = dot(w_4, d);
+    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
+    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
+    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
+    let t_2 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1f, (rl.w * rl.w));
+}
+
+fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_1: vec3<f32>) -> f32 {
+    if (rl_1.w <= 1f) {
+        return 1f;
+    }
+    let _e9 = cone_cos_toward(center_1, radius_1, p_1, r_1);
+    let _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
 fn shadow_margin(len: f32) -> f32 {
     return (0.0001f * len);
 }
 
-fn ray_inverse(x_8: f32) -> f32 {
-    return (1f / select(x_8, 0.000000000000000000000000000001f, (abs(x_8) < 0.000000000000000000000000000001f)));
+fn ray_inverse(x_9: f32) -> f32 {
+    return (1f / select(x_9, 0.000000000000000000000000000001f, (abs(x_9) < 0.000000000000000000000000000001f)));
 }
 
-fn ray_inverse3_(d: vec3<f32>) -> vec3<f32> {
-    let _e2 = ray_inverse(d.x);
-    let _e4 = ray_inverse(d.y);
-    let _e6 = ray_inverse(d.z);
+fn ray_inverse3_(d_1: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d_1.x);
+    let _e4 = ray_inverse(d_1.y);
+    let _e6 = ray_inverse(d_1.z);
     return vec3<f32>(_e2, _e4, _e6);
 }
 
@@ -504,23 +558,23 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
     return -1f;
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
     var local_3: bool;
     var local_4: bool;
     var local_5: bool;
 
     let e1_ = (b_3 - a_4);
     let e2_ = (c_3 - a_4);
-    let p = cross(d_1, e2_);
-    let det = dot(e1_, p);
+    let p_2 = cross(d_2, e2_);
+    let det = dot(e1_, p_2);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv = (1f / det);
     let s_2 = (o_1 - a_4);
-    let u_1 = (dot(s_2, p) * inv);
-    if !((u_1 < 0f)) {
-        local_3 = (u_1 > 1f);
+    let u_2 = (dot(s_2, p_2) * inv);
+    if !((u_2 < 0f)) {
+        local_3 = (u_2 > 1f);
     } else {
         local_3 = true;
     }
@@ -529,9 +583,9 @@ fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_4: vec3<f32>, b_3: vec3<f32>, 
         return -1f;
     }
     let q = cross(s_2, e1_);
-    let v_2 = (dot(d_1, q) * inv);
-    if !((v_2 < 0f)) {
-        local_4 = ((u_1 + v_2) > 1f);
+    let v_3 = (dot(d_2, q) * inv);
+    if !((v_3 < 0f)) {
+        local_4 = ((u_2 + v_3) > 1f);
     } else {
         local_4 = true;
     }
@@ -539,15 +593,15 @@ fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_4: vec3<f32>, b_3: vec3<f32>, 
     if _e42 {
         return -1f;
     }
-    let t_2 = (dot(e2_, q) * inv);
-    if (t_2 > t_min) {
-        local_5 = (t_2 < t_max_1);
+    let t_3 = (dot(e2_, q) * inv);
+    if (t_3 > t_min) {
+        local_5 = (t_3 < t_max_1);
     } else {
         local_5 = false;
     }
     let _e51 = local_5;
     if _e51 {
-        return t_2;
+        return t_3;
     }
     return -1f;
 }
@@ -575,11 +629,11 @@ fn light_point(l_1: GpuLight, u1_: f32, u2_: f32) -> vec3<f32> {
     return l_1.p0_;
 }
 
-fn trace(o_2: vec3<f32>, d_2: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
+fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
-    var node_1: u32 = 0u;
+    var node_2: u32 = 0u;
     var i_1: u32;
 
     hit.t = t_max_2;
@@ -588,9 +642,9 @@ fn trace(o_2: vec3<f32>, d_2: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         let _e13 = hit;
         return _e13;
     }
-    let _e14 = ray_inverse3_(d_2);
+    let _e14 = ray_inverse3_(d_3);
     loop {
-        let _e21 = node_1;
+        let _e21 = node_2;
         let n_7 = geo_nodes[_e21];
         let _e27 = hit.t;
         let _e28 = ray_aabb(o_2, _e14, n_7.bmin, n_7.bmax, _e27);
@@ -605,9 +659,9 @@ fn trace(o_2: vec3<f32>, d_2: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     }
                     {
                         let _e42 = i_1;
-                        let t_3 = geo_tris[_e42];
+                        let t_4 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_2, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i_1;
@@ -631,7 +685,7 @@ fn trace(o_2: vec3<f32>, d_2: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_1 = n_7.first;
+                node_2 = n_7.first;
                 continue;
             }
         }
@@ -643,7 +697,7 @@ fn trace(o_2: vec3<f32>, d_2: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         sp = (_e75 - 1u);
         let _e78 = sp;
         let _e80 = stack[_e78];
-        node_1 = _e80;
+        node_2 = _e80;
     }
     let _e81 = hit;
     return _e81;
@@ -677,117 +731,155 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_next_leaf_scaled(nodes_3: u32, start_1: u32, x_9: vec3<f32>, scale_1: f32) -> u32 {
+fn bsh_reaches(node_3: BshNode, x_10: vec3<f32>, r_2: vec3<f32>, rl_2: vec4<f32>) -> bool {
+    var local_6: bool;
+    var local_7: bool;
+
+    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_10);
+    if _e6 {
+        return true;
+    }
+    if !((rl_2.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_2.w * 1.0001f)), x_10);
+        local_6 = !(_e20);
+    } else {
+        local_6 = true;
+    }
+    let _e23 = local_6;
+    if _e23 {
+        return false;
+    }
+    if (node_3.child == BSH_NONE) {
+        let _e30 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+        let _e33 = bsh_scaled_radius(node_3, sqrt(_e30));
+        let _e34 = sphere_contains_point(node_3.center, _e33, x_10);
+        return _e34;
+    }
+    let _e37 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+    let s_c = (_e37 * 1.001f);
+    let _e42 = bsh_range_bound(node_3);
+    let reach = (node_3.extent + (sqrt(s_c) * _e42));
+    let v_4 = (x_10 - node_3.center);
+    let d2_5 = dot(v_4, v_4);
+    if (d2_5 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_7 = (d2_5 <= (reach * reach));
+    } else {
+        local_7 = false;
+    }
+    let _e58 = local_7;
+    return _e58;
+}
+
+fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_11: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> u32 {
     var i_3: u32;
 
     i_3 = start_1;
     loop {
-        let _e5 = i_3;
-        if (_e5 != BSH_NONE) {
+        let _e6 = i_3;
+        if (_e6 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e8 = i_3;
-            let _e9 = bsh_node(nodes_3, _e8);
-            let _e11 = bsh_scaled_radius(_e9, scale_1);
-            let _e12 = sphere_contains_point(_e9.center, _e11, x_9);
-            if _e12 {
-                if (_e9.child == BSH_NONE) {
-                    let _e16 = i_3;
-                    return _e16;
+            let _e9 = i_3;
+            let _e10 = bsh_node(nodes_3, _e9);
+            let _e11 = bsh_reaches(_e10, x_11, r_3, rl_3);
+            if _e11 {
+                if (_e10.child == BSH_NONE) {
+                    let _e15 = i_3;
+                    return _e15;
                 }
-                i_3 = _e9.child;
+                i_3 = _e10.child;
             } else {
-                i_3 = _e9.next;
+                i_3 = _e10.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-fn bsh_collect(x_10: vec3<f32>, scale_2: f32, seed_1: u32) -> Picks {
+fn bsh_collect(x_12: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, seed_1: u32) -> Picks {
     var picks: Picks;
     var h_1: u32;
     var i_4: u32;
 
     picks.n = 0u;
     h_1 = seed_1;
-    let _e9 = bsh_first(BSH);
-    let _e10 = bsh_next_leaf_scaled(BSH, _e9, x_10, scale_2);
-    i_4 = _e10;
+    let _e10 = bsh_first(BSH);
+    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_4, rl_4);
+    i_4 = _e11;
     loop {
-        let _e12 = i_4;
-        if (_e12 != BSH_NONE) {
+        let _e13 = i_4;
+        if (_e13 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e16 = picks.n;
-            let _e17 = reservoir_takes(_e16);
-            if _e17 {
-                let _e19 = picks.n;
-                picks.n = (_e19 + 1u);
-                let _e22 = h_1;
-                let _e23 = pcg_hash(_e22);
-                h_1 = _e23;
+            let _e17 = picks.n;
+            let _e18 = reservoir_takes(_e17);
+            if _e18 {
+                let _e20 = picks.n;
+                picks.n = (_e20 + 1u);
+                let _e23 = h_1;
+                let _e24 = pcg_hash(_e23);
+                h_1 = _e24;
                 let hi_4 = h_1;
-                let _e25 = h_1;
-                let _e26 = pcg_hash(_e25);
-                h_1 = _e26;
-                let _e28 = picks.n;
-                let _e30 = h_1;
-                let _e31 = reservoir_slot(_e28, K, hi_4, _e30);
-                if (_e31 < K) {
-                    let _e37 = i_4;
-                    let _e40 = bsh_nodes[_e37].light;
-                    picks.light[_e31] = _e40;
+                let _e26 = h_1;
+                let _e27 = pcg_hash(_e26);
+                h_1 = _e27;
+                let _e29 = picks.n;
+                let _e31 = h_1;
+                let _e32 = reservoir_slot(_e29, K, hi_4, _e31);
+                if (_e32 < K) {
+                    let _e38 = i_4;
+                    let _e41 = bsh_nodes[_e38].light;
+                    picks.light[_e32] = _e41;
                 }
             }
         }
         continuing {
-            let _e43 = i_4;
-            let _e46 = bsh_nodes[_e43].next;
-            let _e47 = bsh_next_leaf_scaled(BSH, _e46, x_10, scale_2);
-            i_4 = _e47;
+            let _e44 = i_4;
+            let _e47 = bsh_nodes[_e44].next;
+            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_4, rl_4);
+            i_4 = _e48;
         }
     }
-    let _e48 = picks;
-    return _e48;
+    let _e49 = picks;
+    return _e49;
 }
 
-fn connect(li: u32, x_11: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32) -> Connection {
+fn connect(li: u32, x_13: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32) -> Connection {
     var c_4: Connection;
-    var local_6: bool;
+    var local_8: bool;
 
     c_4.e = vec3(0f);
     let l_2 = lights[li];
     let _e17 = light_point(l_2, u1_1, u2_1);
     c_4.y = _e17;
     let _e20 = c_4.y;
-    let _e23 = r2_2[li];
-    let _e25 = connection_cosine(x_11, _e20, n_6, ng_1, (s_1 * _e23));
+    let _e23 = r2_3[li];
+    let _e25 = connection_cosine(x_13, _e20, n_6, ng_1, (s_1 * _e23));
     c_4.cos_x = _e25;
     let _e27 = c_4.cos_x;
     if !((_e27 <= 0f)) {
         let _e36 = c_4.y;
-        let _e37 = occluded((x_11 + (ng_1 * eps)), _e36);
-        local_6 = _e37;
+        let _e37 = occluded((x_13 + (ng_1 * eps)), _e36);
+        local_8 = _e37;
     } else {
-        local_6 = true;
+        local_8 = true;
     }
-    let _e39 = local_6;
+    let _e39 = local_8;
     if _e39 {
         let _e40 = c_4;
         return _e40;
     }
     let _e42 = c_4.y;
-    let v_3 = (x_11 - _e42);
-    let d2_5 = dot(v_3, v_3);
-    let _e49 = light_intensity(l_2, (v_3 / vec3(sqrt(d2_5))));
+    let v_5 = (x_13 - _e42);
+    let d2_6 = dot(v_5, v_5);
+    let _e49 = light_intensity(l_2, (v_5 / vec3(sqrt(d2_6))));
     let _e51 = c_4.cos_x;
     let _e54 = rt2_2[li];
-    let _e56 = connection_factor(_e51, d2_5, (s_1 * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_6, (s_1 * _e54), w_res);
     c_4.e = (_e49 * _e56);
     let _e58 = c_4;
     return _e58;
@@ -804,50 +896,50 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     if (i_5 >= _e4) {
         return;
     }
-    let p_1 = points[i_5];
-    if (p_1.w <= 0f) {
+    let p_3 = points[i_5];
+    if (p_3.w <= 0f) {
         irradiance[i_5] = vec4(0f);
         return;
     }
-    let x_12 = p_1.xyz;
+    let x_14 = p_3.xyz;
     let _e19 = normals[i_5];
     let n_8 = _e19.xyz;
     let _e23 = params.seed;
     let _e26 = params.frame;
     let _e27 = point_stream(_e23, i_5, _e26);
-    let _e29 = bsh_collect(x_12, 1f, _e27);
-    let _e32 = reservoir_weight(_e29.n, K);
-    let _e33 = pick_stream(_e27);
-    h = _e33;
+    let _e33 = bsh_collect(x_14, x_14, vec4<f32>(1f, 0f, 1f, 1f), _e27);
+    let _e36 = reservoir_weight(_e33.n, K);
+    let _e37 = pick_stream(_e27);
+    h = _e37;
     loop {
-        let _e40 = s;
-        if (_e40 < min(_e29.n, K)) {
+        let _e44 = s;
+        if (_e44 < min(_e33.n, K)) {
         } else {
             break;
         }
         {
-            let _e45 = h;
-            let _e46 = pcg_hash(_e45);
-            h = _e46;
-            let _e47 = h;
-            let _e48 = xi_from_bits(_e47);
             let _e49 = h;
             let _e50 = pcg_hash(_e49);
             h = _e50;
-            let _e51 = e;
-            let _e53 = s;
-            let _e56 = h;
-            let _e57 = xi_from_bits(_e56);
-            let _e60 = params.eps;
-            let _e61 = connect(_e29.light[_e53], x_12, n_8, n_8, 1f, _e32, _e48, _e57, _e60);
-            e = (_e51 + _e61.e);
+            let _e51 = h;
+            let _e52 = xi_from_bits(_e51);
+            let _e53 = h;
+            let _e54 = pcg_hash(_e53);
+            h = _e54;
+            let _e55 = e;
+            let _e57 = s;
+            let _e60 = h;
+            let _e61 = xi_from_bits(_e60);
+            let _e64 = params.eps;
+            let _e65 = connect(_e33.light[_e57], x_14, n_8, n_8, 1f, _e36, _e52, _e61, _e64);
+            e = (_e55 + _e65.e);
         }
         continuing {
-            let _e65 = s;
-            s = (_e65 + 1u);
+            let _e69 = s;
+            s = (_e69 + 1u);
         }
     }
-    let _e69 = e;
-    irradiance[i_5] = vec4<f32>(_e69, f32(_e29.n));
+    let _e73 = e;
+    irradiance[i_5] = vec4<f32>(_e73, f32(_e33.n));
     return;
 }

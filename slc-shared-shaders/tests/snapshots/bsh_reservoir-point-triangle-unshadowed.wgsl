@@ -83,7 +83,7 @@ var<storage> bsh_nodes: array<BshNode>;
 @group(0) @binding(3) 
 var<storage> lights: array<GpuLight>;
 @group(0) @binding(5) 
-var<storage> r2_2: array<f32>;
+var<storage> r2_3: array<f32>;
 @group(0) @binding(4) 
 var<storage> rt2_2: array<f32>;
 @group(0) @binding(0) 
@@ -105,6 +105,10 @@ fn mul_lo_u32_(a: u32, b: u32) -> u32 {
 
 fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
     return (a_1 + b_1);
+}
+
+fn f32_from_bits(u_1: u32) -> f32 {
+    return bitcast<f32>(u_1);
 }
 
 fn xi_from_bits(bits: u32) -> f32 {
@@ -208,6 +212,14 @@ fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
     return (node.radius * scale);
 }
 
+fn bsh_range_bound(node_1: BshNode) -> f32 {
+    if (node_1.child == BSH_NONE) {
+        return (node_1.radius - node_1.extent);
+    }
+    let _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
 fn mul_hi_u32_(a_3: u32, b_3: u32) -> u32 {
     let a_lo = (a_3 & 65535u);
     let a_hi = (a_3 >> 16u);
@@ -250,6 +262,48 @@ fn reservoir_weight(n_5: u32, k_1: u32) -> f32 {
     let _e2 = to_f32_(n_5);
     let _e3 = to_f32_(k_1);
     return max((_e2 / _e3), 1f);
+}
+
+fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+    if (cos_a > cos_b) {
+        return 1f;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+fn safe_sqrt(x_3: f32) -> f32 {
+    return sqrt(max(x_3, 0f));
+}
+
+fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
+    let _e5 = safe_sqrt((1f - (r2_2 / dist2_)));
+    return select(_e5, -1f, (dist2_ <= r2_2));
+}
+
+fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d: vec3<f32>) -> f32 {
+    let v_2 = (center - p);
+    let dist2_1 = dot(v_2, v_2);
+    let w_4 = select(vec3<f32>(0f, 0f, 0f), (v_2 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let _e17 = subtended_cos(dist2_1, (radius * radius));
+    let cos_i = dot(w_4, d);
+    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
+    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
+    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
+    let t = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t * t))), 1f, (rl.w * rl.w));
+}
+
+fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_1: vec3<f32>) -> f32 {
+    if (rl_1.w <= 1f) {
+        return 1f;
+    }
+    let _e9 = cone_cos_toward(center_1, radius_1, p_1, r_1);
+    let _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
 }
 
 fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
@@ -314,117 +368,155 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_next_leaf_scaled(nodes_3: u32, start: u32, x_3: vec3<f32>, scale_1: f32) -> u32 {
+fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_2: vec3<f32>, rl_2: vec4<f32>) -> bool {
+    var local_3: bool;
+    var local_4: bool;
+
+    let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
+    if _e6 {
+        return true;
+    }
+    if !((rl_2.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_2.w * 1.0001f)), x_4);
+        local_3 = !(_e20);
+    } else {
+        local_3 = true;
+    }
+    let _e23 = local_3;
+    if _e23 {
+        return false;
+    }
+    if (node_2.child == BSH_NONE) {
+        let _e30 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_2);
+        let _e33 = bsh_scaled_radius(node_2, sqrt(_e30));
+        let _e34 = sphere_contains_point(node_2.center, _e33, x_4);
+        return _e34;
+    }
+    let _e37 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_2);
+    let s_c = (_e37 * 1.001f);
+    let _e42 = bsh_range_bound(node_2);
+    let reach = (node_2.extent + (sqrt(s_c) * _e42));
+    let v_3 = (x_4 - node_2.center);
+    let d2_5 = dot(v_3, v_3);
+    if (d2_5 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_4 = (d2_5 <= (reach * reach));
+    } else {
+        local_4 = false;
+    }
+    let _e58 = local_4;
+    return _e58;
+}
+
+fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> u32 {
     var i_1: u32;
 
     i_1 = start;
     loop {
-        let _e5 = i_1;
-        if (_e5 != BSH_NONE) {
+        let _e6 = i_1;
+        if (_e6 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e8 = i_1;
-            let _e9 = bsh_node(nodes_3, _e8);
-            let _e11 = bsh_scaled_radius(_e9, scale_1);
-            let _e12 = sphere_contains_point(_e9.center, _e11, x_3);
-            if _e12 {
-                if (_e9.child == BSH_NONE) {
-                    let _e16 = i_1;
-                    return _e16;
+            let _e9 = i_1;
+            let _e10 = bsh_node(nodes_3, _e9);
+            let _e11 = bsh_reaches(_e10, x_5, r_3, rl_3);
+            if _e11 {
+                if (_e10.child == BSH_NONE) {
+                    let _e15 = i_1;
+                    return _e15;
                 }
-                i_1 = _e9.child;
+                i_1 = _e10.child;
             } else {
-                i_1 = _e9.next;
+                i_1 = _e10.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-fn bsh_collect(x_4: vec3<f32>, scale_2: f32, seed_1: u32) -> Picks {
+fn bsh_collect(x_6: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, seed_1: u32) -> Picks {
     var picks: Picks;
     var h_1: u32;
     var i_2: u32;
 
     picks.n = 0u;
     h_1 = seed_1;
-    let _e9 = bsh_first(BSH);
-    let _e10 = bsh_next_leaf_scaled(BSH, _e9, x_4, scale_2);
-    i_2 = _e10;
+    let _e10 = bsh_first(BSH);
+    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_4, rl_4);
+    i_2 = _e11;
     loop {
-        let _e12 = i_2;
-        if (_e12 != BSH_NONE) {
+        let _e13 = i_2;
+        if (_e13 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e16 = picks.n;
-            let _e17 = reservoir_takes(_e16);
-            if _e17 {
-                let _e19 = picks.n;
-                picks.n = (_e19 + 1u);
-                let _e22 = h_1;
-                let _e23 = pcg_hash(_e22);
-                h_1 = _e23;
+            let _e17 = picks.n;
+            let _e18 = reservoir_takes(_e17);
+            if _e18 {
+                let _e20 = picks.n;
+                picks.n = (_e20 + 1u);
+                let _e23 = h_1;
+                let _e24 = pcg_hash(_e23);
+                h_1 = _e24;
                 let hi_2 = h_1;
-                let _e25 = h_1;
-                let _e26 = pcg_hash(_e25);
-                h_1 = _e26;
-                let _e28 = picks.n;
-                let _e30 = h_1;
-                let _e31 = reservoir_slot(_e28, K, hi_2, _e30);
-                if (_e31 < K) {
-                    let _e37 = i_2;
-                    let _e40 = bsh_nodes[_e37].light;
-                    picks.light[_e31] = _e40;
+                let _e26 = h_1;
+                let _e27 = pcg_hash(_e26);
+                h_1 = _e27;
+                let _e29 = picks.n;
+                let _e31 = h_1;
+                let _e32 = reservoir_slot(_e29, K, hi_2, _e31);
+                if (_e32 < K) {
+                    let _e38 = i_2;
+                    let _e41 = bsh_nodes[_e38].light;
+                    picks.light[_e32] = _e41;
                 }
             }
         }
         continuing {
-            let _e43 = i_2;
-            let _e46 = bsh_nodes[_e43].next;
-            let _e47 = bsh_next_leaf_scaled(BSH, _e46, x_4, scale_2);
-            i_2 = _e47;
+            let _e44 = i_2;
+            let _e47 = bsh_nodes[_e44].next;
+            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_6, r_4, rl_4);
+            i_2 = _e48;
         }
     }
-    let _e48 = picks;
-    return _e48;
+    let _e49 = picks;
+    return _e49;
 }
 
-fn connect(li: u32, x_5: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+fn connect(li: u32, x_7: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
     var c_3: Connection;
-    var local_3: bool;
+    var local_5: bool;
 
     c_3.e = vec3(0f);
     let l_2 = lights[li];
     let _e17 = light_point(l_2, u1_2, u2_2);
     c_3.y = _e17;
     let _e20 = c_3.y;
-    let _e23 = r2_2[li];
-    let _e25 = connection_cosine(x_5, _e20, n_6, ng_1, (s_1 * _e23));
+    let _e23 = r2_3[li];
+    let _e25 = connection_cosine(x_7, _e20, n_6, ng_1, (s_1 * _e23));
     c_3.cos_x = _e25;
     let _e27 = c_3.cos_x;
     if !((_e27 <= 0f)) {
         let _e36 = c_3.y;
-        let _e37 = occluded((x_5 + (ng_1 * eps)), _e36);
-        local_3 = _e37;
+        let _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
+        local_5 = _e37;
     } else {
-        local_3 = true;
+        local_5 = true;
     }
-    let _e39 = local_3;
+    let _e39 = local_5;
     if _e39 {
         let _e40 = c_3;
         return _e40;
     }
     let _e42 = c_3.y;
-    let v_2 = (x_5 - _e42);
-    let d2_5 = dot(v_2, v_2);
-    let _e49 = light_intensity(l_2, (v_2 / vec3(sqrt(d2_5))));
+    let v_4 = (x_7 - _e42);
+    let d2_6 = dot(v_4, v_4);
+    let _e49 = light_intensity(l_2, (v_4 / vec3(sqrt(d2_6))));
     let _e51 = c_3.cos_x;
     let _e54 = rt2_2[li];
-    let _e56 = connection_factor(_e51, d2_5, (s_1 * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_6, (s_1 * _e54), w_res);
     c_3.e = (_e49 * _e56);
     let _e58 = c_3;
     return _e58;
@@ -441,50 +533,50 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     if (i_3 >= _e4) {
         return;
     }
-    let p = points[i_3];
-    if (p.w <= 0f) {
+    let p_2 = points[i_3];
+    if (p_2.w <= 0f) {
         irradiance[i_3] = vec4(0f);
         return;
     }
-    let x_6 = p.xyz;
+    let x_8 = p_2.xyz;
     let _e19 = normals[i_3];
     let n_8 = _e19.xyz;
     let _e23 = params.seed;
     let _e26 = params.frame;
     let _e27 = point_stream(_e23, i_3, _e26);
-    let _e29 = bsh_collect(x_6, 1f, _e27);
-    let _e32 = reservoir_weight(_e29.n, K);
-    let _e33 = pick_stream(_e27);
-    h = _e33;
+    let _e33 = bsh_collect(x_8, x_8, vec4<f32>(1f, 0f, 1f, 1f), _e27);
+    let _e36 = reservoir_weight(_e33.n, K);
+    let _e37 = pick_stream(_e27);
+    h = _e37;
     loop {
-        let _e40 = s;
-        if (_e40 < min(_e29.n, K)) {
+        let _e44 = s;
+        if (_e44 < min(_e33.n, K)) {
         } else {
             break;
         }
         {
-            let _e45 = h;
-            let _e46 = pcg_hash(_e45);
-            h = _e46;
-            let _e47 = h;
-            let _e48 = xi_from_bits(_e47);
             let _e49 = h;
             let _e50 = pcg_hash(_e49);
             h = _e50;
-            let _e51 = e;
-            let _e53 = s;
-            let _e56 = h;
-            let _e57 = xi_from_bits(_e56);
-            let _e60 = params.eps;
-            let _e61 = connect(_e29.light[_e53], x_6, n_8, n_8, 1f, _e32, _e48, _e57, _e60);
-            e = (_e51 + _e61.e);
+            let _e51 = h;
+            let _e52 = xi_from_bits(_e51);
+            let _e53 = h;
+            let _e54 = pcg_hash(_e53);
+            h = _e54;
+            let _e55 = e;
+            let _e57 = s;
+            let _e60 = h;
+            let _e61 = xi_from_bits(_e60);
+            let _e64 = params.eps;
+            let _e65 = connect(_e33.light[_e57], x_8, n_8, n_8, 1f, _e36, _e52, _e61, _e64);
+            e = (_e55 + _e65.e);
         }
         continuing {
-            let _e65 = s;
-            s = (_e65 + 1u);
+            let _e69 = s;
+            s = (_e69 + 1u);
         }
     }
-    let _e69 = e;
-    irradiance[i_3] = vec4<f32>(_e69, f32(_e29.n));
+    let _e73 = e;
+    irradiance[i_3] = vec4<f32>(_e73, f32(_e33.n));
     return;
 }

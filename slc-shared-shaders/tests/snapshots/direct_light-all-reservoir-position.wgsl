@@ -116,7 +116,7 @@ var<storage> lights: array<GpuLight>;
 @group(1) @binding(2) 
 var<storage> rt2_2: array<f32>;
 @group(1) @binding(3) 
-var<storage> r2_2: array<f32>;
+var<storage> r2_3: array<f32>;
 @group(1) @binding(4) 
 var<storage> bsh_nodes: array<BshNode>;
 
@@ -139,6 +139,10 @@ fn mul_lo_u32_(a: u32, b: u32) -> u32 {
 
 fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
     return (a_1 + b_1);
+}
+
+fn f32_from_bits(u_1: u32) -> f32 {
+    return bitcast<f32>(u_1);
 }
 
 fn xi_from_bits(bits: u32) -> f32 {
@@ -261,8 +265,8 @@ fn atan_portable(x_4: f32) -> f32 {
     let _e21 = base;
     let _e33 = t_1;
     let _e35 = t_1;
-    let r_2 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
-    return select(r_2, -(r_2), (x_4 < 0f));
+    let r_7 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
+    return select(r_7, -(r_7), (x_4 < 0f));
 }
 
 fn atan2_portable(y_1: f32, x_5: f32) -> f32 {
@@ -441,6 +445,14 @@ fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
     return (node.radius * scale);
 }
 
+fn bsh_range_bound(node_1: BshNode) -> f32 {
+    if (node_1.child == BSH_NONE) {
+        return (node_1.radius - node_1.extent);
+    }
+    let _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
 fn mul_hi_u32_(a_4: u32, b_3: u32) -> u32 {
     let a_lo = (a_4 & 65535u);
     let a_hi = (a_4 >> 16u);
@@ -490,17 +502,73 @@ fn smith_root(cos_: f32, alpha: f32) -> f32 {
     return sqrt((((cos_ * cos_) * (1f - a2_)) + a2_));
 }
 
-fn receiver_peak(lobe_1: vec4<f32>) -> f32 {
-    let _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return (lobe_1.x + ((lobe_1.y * 0.25f) / ((lobe_1.z * lobe_1.z) * _e10)));
+fn specular_peak_factor(lobe_1: vec4<f32>) -> f32 {
+    let _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5f) / (_e6 + max(lobe_1.w, 0f)));
 }
 
-fn range_scale(lobe_2: vec4<f32>) -> f32 {
-    if (lobe_2.y <= 0f) {
+fn receiver_peak(lobe_2: vec4<f32>) -> f32 {
+    let _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+fn range_scale(lobe_3: vec4<f32>) -> f32 {
+    if (lobe_3.y <= 0f) {
         return 1f;
     }
-    let _e5 = receiver_peak(lobe_2);
+    let _e5 = receiver_peak(lobe_3);
     return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
+fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
+    if (lobe_4.y <= 0f) {
+        return vec4<f32>(1f, 0f, 1f, 1f);
+    }
+    let _e10 = specular_peak_factor(lobe_4);
+    let _e14 = range_scale(lobe_4);
+    return vec4<f32>(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
+}
+
+fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+    if (cos_a > cos_b) {
+        return 1f;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+fn safe_sqrt(x_8: f32) -> f32 {
+    return sqrt(max(x_8, 0f));
+}
+
+fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
+    let _e5 = safe_sqrt((1f - (r2_2 / dist2_)));
+    return select(_e5, -1f, (dist2_ <= r2_2));
+}
+
+fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d: vec3<f32>) -> f32 {
+    let v_2 = (center - p);
+    let dist2_1 = dot(v_2, v_2);
+    let w_6 = select(vec3<f32>(0f, 0f, 0f), (v_2 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let _e17 = subtended_cos(dist2_1, (radius * radius));
+    let cos_i = dot(w_6, d);
+    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
+    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
+    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
+    let t_3 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_3 * t_3))), 1f, (rl.w * rl.w));
+}
+
+fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_2: vec3<f32>) -> f32 {
+    if (rl_1.w <= 1f) {
+        return 1f;
+    }
+    let _e9 = cone_cos_toward(center_1, radius_1, p_1, r_2);
+    let _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
 }
 
 fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
@@ -573,136 +641,174 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_next_leaf_scaled(nodes_3: u32, start_1: u32, x_8: vec3<f32>, scale_1: f32) -> u32 {
+fn bsh_reaches(node_2: BshNode, x_9: vec3<f32>, r_3: vec3<f32>, rl_2: vec4<f32>) -> bool {
+    var local_6: bool;
+    var local_7: bool;
+
+    let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_9);
+    if _e6 {
+        return true;
+    }
+    if !((rl_2.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_2.w * 1.0001f)), x_9);
+        local_6 = !(_e20);
+    } else {
+        local_6 = true;
+    }
+    let _e23 = local_6;
+    if _e23 {
+        return false;
+    }
+    if (node_2.child == BSH_NONE) {
+        let _e30 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_9, r_3);
+        let _e33 = bsh_scaled_radius(node_2, sqrt(_e30));
+        let _e34 = sphere_contains_point(node_2.center, _e33, x_9);
+        return _e34;
+    }
+    let _e37 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_9, r_3);
+    let s_c = (_e37 * 1.001f);
+    let _e42 = bsh_range_bound(node_2);
+    let reach = (node_2.extent + (sqrt(s_c) * _e42));
+    let v_3 = (x_9 - node_2.center);
+    let d2_5 = dot(v_3, v_3);
+    if (d2_5 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_7 = (d2_5 <= (reach * reach));
+    } else {
+        local_7 = false;
+    }
+    let _e58 = local_7;
+    return _e58;
+}
+
+fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_10: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>) -> u32 {
     var i_2: u32;
 
     i_2 = start_1;
     loop {
-        let _e5 = i_2;
-        if (_e5 != BSH_NONE) {
+        let _e6 = i_2;
+        if (_e6 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e8 = i_2;
-            let _e9 = bsh_node(nodes_3, _e8);
-            let _e11 = bsh_scaled_radius(_e9, scale_1);
-            let _e12 = sphere_contains_point(_e9.center, _e11, x_8);
-            if _e12 {
-                if (_e9.child == BSH_NONE) {
-                    let _e16 = i_2;
-                    return _e16;
+            let _e9 = i_2;
+            let _e10 = bsh_node(nodes_3, _e9);
+            let _e11 = bsh_reaches(_e10, x_10, r_4, rl_3);
+            if _e11 {
+                if (_e10.child == BSH_NONE) {
+                    let _e15 = i_2;
+                    return _e15;
                 }
-                i_2 = _e9.child;
+                i_2 = _e10.child;
             } else {
-                i_2 = _e9.next;
+                i_2 = _e10.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-fn bsh_collect(x_9: vec3<f32>, scale_2: f32, seed_1: u32) -> Picks {
+fn bsh_collect(x_11: vec3<f32>, r_5: vec3<f32>, rl_4: vec4<f32>, seed_1: u32) -> Picks {
     var picks: Picks;
     var h_1: u32;
     var i_3: u32;
 
     picks.n = 0u;
     h_1 = seed_1;
-    let _e9 = bsh_first(BSH);
-    let _e10 = bsh_next_leaf_scaled(BSH, _e9, x_9, scale_2);
-    i_3 = _e10;
+    let _e10 = bsh_first(BSH);
+    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_4);
+    i_3 = _e11;
     loop {
-        let _e12 = i_3;
-        if (_e12 != BSH_NONE) {
+        let _e13 = i_3;
+        if (_e13 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e16 = picks.n;
-            let _e17 = reservoir_takes(_e16);
-            if _e17 {
-                let _e19 = picks.n;
-                picks.n = (_e19 + 1u);
-                let _e22 = h_1;
-                let _e23 = pcg_hash(_e22);
-                h_1 = _e23;
+            let _e17 = picks.n;
+            let _e18 = reservoir_takes(_e17);
+            if _e18 {
+                let _e20 = picks.n;
+                picks.n = (_e20 + 1u);
+                let _e23 = h_1;
+                let _e24 = pcg_hash(_e23);
+                h_1 = _e24;
                 let hi_3 = h_1;
-                let _e25 = h_1;
-                let _e26 = pcg_hash(_e25);
-                h_1 = _e26;
-                let _e28 = picks.n;
-                let _e30 = h_1;
-                let _e31 = reservoir_slot(_e28, K, hi_3, _e30);
-                if (_e31 < K) {
-                    let _e37 = i_3;
-                    let _e40 = bsh_nodes[_e37].light;
-                    picks.light[_e31] = _e40;
+                let _e26 = h_1;
+                let _e27 = pcg_hash(_e26);
+                h_1 = _e27;
+                let _e29 = picks.n;
+                let _e31 = h_1;
+                let _e32 = reservoir_slot(_e29, K, hi_3, _e31);
+                if (_e32 < K) {
+                    let _e38 = i_3;
+                    let _e41 = bsh_nodes[_e38].light;
+                    picks.light[_e32] = _e41;
                 }
             }
         }
         continuing {
-            let _e43 = i_3;
-            let _e46 = bsh_nodes[_e43].next;
-            let _e47 = bsh_next_leaf_scaled(BSH, _e46, x_9, scale_2);
-            i_3 = _e47;
+            let _e44 = i_3;
+            let _e47 = bsh_nodes[_e44].next;
+            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_5, rl_4);
+            i_3 = _e48;
         }
     }
-    let _e48 = picks;
-    return _e48;
+    let _e49 = picks;
+    return _e49;
 }
 
-fn connect(li: u32, x_10: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+fn connect(li: u32, x_12: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
     var c_5: Connection;
-    var local_6: bool;
+    var local_8: bool;
 
     c_5.e = vec3(0f);
     let l_2 = lights[li];
     let _e17 = light_point(l_2, u1_2, u2_2);
     c_5.y = _e17;
     let _e20 = c_5.y;
-    let _e23 = r2_2[li];
-    let _e25 = connection_cosine(x_10, _e20, n_7, ng_1, (s * _e23));
+    let _e23 = r2_3[li];
+    let _e25 = connection_cosine(x_12, _e20, n_7, ng_1, (s * _e23));
     c_5.cos_x = _e25;
     let _e27 = c_5.cos_x;
     if !((_e27 <= 0f)) {
         let _e36 = c_5.y;
-        let _e37 = occluded((x_10 + (ng_1 * eps)), _e36);
-        local_6 = _e37;
+        let _e37 = occluded((x_12 + (ng_1 * eps)), _e36);
+        local_8 = _e37;
     } else {
-        local_6 = true;
+        local_8 = true;
     }
-    let _e39 = local_6;
+    let _e39 = local_8;
     if _e39 {
         let _e40 = c_5;
         return _e40;
     }
     let _e42 = c_5.y;
-    let v_2 = (x_10 - _e42);
-    let d2_5 = dot(v_2, v_2);
-    let _e49 = light_intensity(l_2, (v_2 / vec3(sqrt(d2_5))));
+    let v_4 = (x_12 - _e42);
+    let d2_6 = dot(v_4, v_4);
+    let _e49 = light_intensity(l_2, (v_4 / vec3(sqrt(d2_6))));
     let _e51 = c_5.cos_x;
     let _e54 = rt2_2[li];
-    let _e56 = connection_factor(_e51, d2_5, (s * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_6, (s * _e54), w_res);
     c_5.e = (_e49 * _e56);
     let _e58 = c_5;
     return _e58;
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p.xyz, 1f), (p.w > 0f));
+    let p_2 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
 }
 
-fn shade_pick(li_1: u32, x_11: vec3<f32>, n_8: vec3<f32>, m_1: Material, s2_: f32, w_4: f32, u1_3: f32, u2_3: f32) -> Shaded {
+fn shade_pick(li_1: u32, x_13: vec3<f32>, n_8: vec3<f32>, r_6: vec3<f32>, rl_5: vec4<f32>, m_1: Material, w_4: f32, u1_3: f32, u2_3: f32) -> Shaded {
     var s_1: Shaded;
 
-    let _e10 = connect(li_1, x_11, n_8, n_8, s2_, w_4, u1_3, u2_3, 0f);
-    s_1.e = _e10.e;
+    let _e12 = connect(li_1, x_13, n_8, n_8, 1f, w_4, u1_3, u2_3, 0f);
+    s_1.e = _e12.e;
     s_1.diffuse = vec3(0f);
     s_1.specular = vec3(0f);
-    let _e19 = s_1;
-    return _e19;
+    let _e21 = s_1;
+    return _e21;
 }
 
 fn add(a_7: Shaded, b_6: Shaded) -> Shaded {
@@ -746,19 +852,19 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(out_tex, texel_1, vec4(0f));
         return;
     }
-    let x_12 = _e21.xyz;
+    let x_14 = _e21.xyz;
     let n_10 = (nn / vec3(sqrt(len2_)));
     r = n_10;
     let _e53 = lobe;
-    let _e54 = range_scale(_e53);
-    let scale_3 = sqrt(_e54);
-    let _e58 = view.seed;
-    let _e62 = view.width;
-    let _e68 = view.frame;
-    let _e69 = point_stream(_e58, ((gid.y * _e62) + gid.x), _e68);
-    let _e70 = pick_stream(_e69);
-    h = _e70;
-    let _e80 = bsh_collect(x_12, scale_3, _e69);
+    let _e54 = range_lobe(_e53);
+    let _e57 = view.seed;
+    let _e61 = view.width;
+    let _e67 = view.frame;
+    let _e68 = point_stream(_e57, ((gid.y * _e61) + gid.x), _e67);
+    let _e69 = pick_stream(_e68);
+    h = _e69;
+    let _e79 = r;
+    let _e80 = bsh_collect(x_14, _e79, _e54, _e68);
     let _e83 = reservoir_weight(_e80.n, K);
     loop {
         let _e86 = k;
@@ -777,20 +883,21 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             h = _e96;
             let _e97 = t;
             let _e99 = k;
-            let _e101 = m;
-            let _e102 = h;
-            let _e103 = xi_from_bits(_e102);
-            let _e104 = shade_pick(_e80.light[_e99], x_12, n_10, _e101, _e54, _e83, _e94, _e103);
-            let _e105 = add(_e97, _e104);
-            t = _e105;
+            let _e101 = r;
+            let _e102 = m;
+            let _e103 = h;
+            let _e104 = xi_from_bits(_e103);
+            let _e105 = shade_pick(_e80.light[_e99], x_14, n_10, _e101, _e54, _e102, _e83, _e94, _e104);
+            let _e106 = add(_e97, _e105);
+            t = _e106;
         }
         continuing {
-            let _e107 = k;
-            k = (_e107 + 1u);
+            let _e108 = k;
+            k = (_e108 + 1u);
         }
     }
     let count = _e80.n;
-    let _e112 = t.e;
-    textureStore(out_tex, texel_1, vec4<f32>(_e112, f32(count)));
+    let _e113 = t.e;
+    textureStore(out_tex, texel_1, vec4<f32>(_e113, f32(count)));
     return;
 }

@@ -146,6 +146,10 @@ fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
     return (a_1 + b_1);
 }
 
+fn f32_from_bits(u_1: u32) -> f32 {
+    return bitcast<f32>(u_1);
+}
+
 fn xi_from_bits(bits: u32) -> f32 {
     let _e3 = to_f32_((bits >> 8u));
     return (_e3 * XI_STEP);
@@ -244,8 +248,16 @@ fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
     return (node.radius * scale);
 }
 
-fn weighted_replace(w_1: f32, w_sum: f32, u_1: f32) -> bool {
-    return ((u_1 * w_sum) < w_1);
+fn bsh_range_bound(node_1: BshNode) -> f32 {
+    if (node_1.child == BSH_NONE) {
+        return (node_1.radius - node_1.extent);
+    }
+    let _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
+fn weighted_replace(w_1: f32, w_sum: f32, u_2: f32) -> bool {
+    return ((u_2 * w_sum) < w_1);
 }
 
 fn weighted_pick_weight(w_sum_1: f32, w_2: f32, k_1: u32) -> f32 {
@@ -267,17 +279,31 @@ fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
     return sqrt((((cos_ * cos_) * (1f - a2_1)) + a2_1));
 }
 
-fn receiver_peak(lobe_1: vec4<f32>) -> f32 {
-    let _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return (lobe_1.x + ((lobe_1.y * 0.25f) / ((lobe_1.z * lobe_1.z) * _e10)));
+fn specular_peak_factor(lobe_1: vec4<f32>) -> f32 {
+    let _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5f) / (_e6 + max(lobe_1.w, 0f)));
 }
 
-fn range_scale(lobe_2: vec4<f32>) -> f32 {
-    if (lobe_2.y <= 0f) {
+fn receiver_peak(lobe_2: vec4<f32>) -> f32 {
+    let _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+fn range_scale(lobe_3: vec4<f32>) -> f32 {
+    if (lobe_3.y <= 0f) {
         return 1f;
     }
-    let _e5 = receiver_peak(lobe_2);
+    let _e5 = receiver_peak(lobe_3);
     return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
+fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
+    if (lobe_4.y <= 0f) {
+        return vec4<f32>(1f, 0f, 1f, 1f);
+    }
+    let _e10 = specular_peak_factor(lobe_4);
+    let _e14 = range_scale(lobe_4);
+    return vec4<f32>(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
 fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
@@ -340,16 +366,30 @@ fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d: vec3<f
     return _e27;
 }
 
-fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_3: vec3<f32>, n_1: vec3<f32>) -> f32 {
+fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
+    let t_3 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_3 * t_3))), 1f, (rl.w * rl.w));
+}
+
+fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_3: f32, p_3: vec3<f32>, r_2: vec3<f32>) -> f32 {
+    if (rl_1.w <= 1f) {
+        return 1f;
+    }
+    let _e9 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    let _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_4: vec3<f32>, n_1: vec3<f32>) -> f32 {
     var imp: f32;
 
-    let _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    let _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
     if (_e8.x <= cos_e_1) {
         return 0f;
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_1, n_1) > 0f) {
-        let v_4 = (center_3 - p_3);
+        let v_4 = (center_4 - p_4);
         let dist2_3 = dot(v_4, v_4);
         let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_4 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_1);
         let _e33 = imp;
@@ -361,11 +401,11 @@ fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3
     return max(_e44, 0f);
 }
 
-fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_4: vec3<f32>, n_2: vec3<f32>, r_2: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_2: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
     var local_4: bool;
 
-    let _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
-    let _e11 = cone_cos_toward(center_4, radius_4, p_4, n_2);
+    let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
+    let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_2);
     if !((_e10 <= 0f)) {
         local_4 = (_e11 <= 0f);
     } else {
@@ -375,12 +415,12 @@ fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec
     if _e20 {
         return 0f;
     }
-    let _e22 = cone_cos_toward(center_4, radius_4, p_4, r_2);
+    let _e22 = cone_cos_toward(center_5, radius_5, p_5, r_3);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
-    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_3.z);
-    let _e39 = smith_root(lobe_3.w, lobe_3.z);
-    let spec = (((lobe_3.y * _e33) * 0.25f) / _e39);
-    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
+    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_5.z);
+    let _e39 = smith_root(lobe_5.w, lobe_5.z);
+    let spec = (((lobe_5.y * _e33) * 0.25f) / _e39);
+    return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec));
 }
 
 fn candidate_weight(importance: f32, rt2_2: f32, d2_4: f32) -> f32 {
@@ -388,14 +428,14 @@ fn candidate_weight(importance: f32, rt2_2: f32, d2_4: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_5: vec3<f32>, n_3: vec3<f32>, r_3: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
-    let v_5 = (p_5 - center_5);
-    if (lobe_4.y <= 0f) {
-        let _e15 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_3);
+fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_6: vec3<f32>, n_3: vec3<f32>, r_4: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
+    let v_5 = (p_6 - center_6);
+    if (lobe_6.y <= 0f) {
+        let _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3);
         let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_5, v_5));
         return _e19;
     }
-    let _e20 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_3, r_3, lobe_4);
+    let _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3, r_4, lobe_6);
     let _e22 = candidate_weight(_e20, rt2_3, dot(v_5, v_5));
     return _e22;
 }
@@ -440,38 +480,76 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_next_leaf_scaled(nodes_3: u32, start: u32, x_4: vec3<f32>, scale_1: f32) -> u32 {
+fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_5: vec3<f32>, rl_2: vec4<f32>) -> bool {
+    var local_5: bool;
+    var local_6: bool;
+
+    let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
+    if _e6 {
+        return true;
+    }
+    if !((rl_2.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_2.w * 1.0001f)), x_4);
+        local_5 = !(_e20);
+    } else {
+        local_5 = true;
+    }
+    let _e23 = local_5;
+    if _e23 {
+        return false;
+    }
+    if (node_2.child == BSH_NONE) {
+        let _e30 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+        let _e33 = bsh_scaled_radius(node_2, sqrt(_e30));
+        let _e34 = sphere_contains_point(node_2.center, _e33, x_4);
+        return _e34;
+    }
+    let _e37 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+    let s_c = (_e37 * 1.001f);
+    let _e42 = bsh_range_bound(node_2);
+    let reach = (node_2.extent + (sqrt(s_c) * _e42));
+    let v_6 = (x_4 - node_2.center);
+    let d2_7 = dot(v_6, v_6);
+    if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_6 = (d2_7 <= (reach * reach));
+    } else {
+        local_6 = false;
+    }
+    let _e58 = local_6;
+    return _e58;
+}
+
+fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> u32 {
     var i_1: u32;
 
     i_1 = start;
     loop {
-        let _e5 = i_1;
-        if (_e5 != BSH_NONE) {
+        let _e6 = i_1;
+        if (_e6 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e8 = i_1;
-            let _e9 = bsh_node(nodes_3, _e8);
-            let _e11 = bsh_scaled_radius(_e9, scale_1);
-            let _e12 = sphere_contains_point(_e9.center, _e11, x_4);
-            if _e12 {
-                if (_e9.child == BSH_NONE) {
-                    let _e16 = i_1;
-                    return _e16;
+            let _e9 = i_1;
+            let _e10 = bsh_node(nodes_3, _e9);
+            let _e11 = bsh_reaches(_e10, x_5, r_6, rl_3);
+            if _e11 {
+                if (_e10.child == BSH_NONE) {
+                    let _e15 = i_1;
+                    return _e15;
                 }
-                i_1 = _e9.child;
+                i_1 = _e10.child;
             } else {
-                i_1 = _e9.next;
+                i_1 = _e10.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-fn connect(li: u32, x_5: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32) -> Connection {
+fn connect(li: u32, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32) -> Connection {
     var c_1: Connection;
-    var local_5: bool;
+    var local_7: bool;
 
     c_1.e = vec3(0f);
     let l_2 = lights[li];
@@ -479,42 +557,42 @@ fn connect(li: u32, x_5: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_r
     c_1.y = _e17;
     let _e20 = c_1.y;
     let _e23 = r2_3[li];
-    let _e25 = connection_cosine(x_5, _e20, n_4, ng_1, (s * _e23));
+    let _e25 = connection_cosine(x_6, _e20, n_4, ng_1, (s * _e23));
     c_1.cos_x = _e25;
     let _e27 = c_1.cos_x;
     if !((_e27 <= 0f)) {
         let _e36 = c_1.y;
-        let _e37 = occluded((x_5 + (ng_1 * eps)), _e36);
-        local_5 = _e37;
+        let _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
+        local_7 = _e37;
     } else {
-        local_5 = true;
+        local_7 = true;
     }
-    let _e39 = local_5;
+    let _e39 = local_7;
     if _e39 {
         let _e40 = c_1;
         return _e40;
     }
     let _e42 = c_1.y;
-    let v_6 = (x_5 - _e42);
-    let d2_7 = dot(v_6, v_6);
-    let _e49 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_7))));
+    let v_7 = (x_6 - _e42);
+    let d2_8 = dot(v_7, v_7);
+    let _e49 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
     let _e51 = c_1.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
     c_1.e = (_e49 * _e56);
     let _e58 = c_1;
     return _e58;
 }
 
-fn light_weight(li_1: u32, x_6: vec3<f32>, n_5: vec3<f32>, r_4: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
+fn light_weight(li_1: u32, x_7: vec3<f32>, n_5: vec3<f32>, r_7: vec3<f32>, lobe_7: vec4<f32>, rl_4: vec4<f32>) -> f32 {
     let c_2 = light_cones[li_1];
-    let _e14 = range_scale(lobe_5);
-    let _e17 = rt2_4[li_1];
-    let _e19 = cone_weight(c_2.center, c_2.radius, c_2.phi, c_2.axis, c_2.cos_o, c_2.cos_e, (_e14 * _e17), x_6, n_5, r_4, lobe_5);
-    return _e19;
+    let _e17 = range_scale_toward(rl_4, c_2.center, c_2.radius, x_7, r_7);
+    let _e20 = rt2_4[li_1];
+    let _e22 = cone_weight(c_2.center, c_2.radius, c_2.phi, c_2.axis, c_2.cos_o, c_2.cos_e, (_e17 * _e20), x_7, n_5, r_7, lobe_7);
+    return _e22;
 }
 
-fn bsh_weighted_collect(x_7: vec3<f32>, n_6: vec3<f32>, r_5: vec3<f32>, lobe_6: vec4<f32>, scale_2: f32, h0_: u32) -> WeightedPicks {
+fn bsh_weighted_collect(x_8: vec3<f32>, n_6: vec3<f32>, r_8: vec3<f32>, lobe_8: vec4<f32>, rl_5: vec4<f32>, h0_: u32) -> WeightedPicks {
     var picks: WeightedPicks;
     var h_1: u32;
     var b_3: u32;
@@ -524,7 +602,7 @@ fn bsh_weighted_collect(x_7: vec3<f32>, n_6: vec3<f32>, r_5: vec3<f32>, lobe_6: 
     picks.n = 0u;
     h_1 = h0_;
     let _e14 = bsh_first(BSH);
-    let _e15 = bsh_next_leaf_scaled(BSH, _e14, x_7, scale_2);
+    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_8, r_8, rl_5);
     b_3 = _e15;
     loop {
         let _e17 = b_3;
@@ -537,7 +615,7 @@ fn bsh_weighted_collect(x_7: vec3<f32>, n_6: vec3<f32>, r_5: vec3<f32>, lobe_6: 
             picks.n = (_e21 + 1u);
             let _e25 = b_3;
             let li_3 = bsh_nodes[_e25].light;
-            let _e29 = light_weight(li_3, x_7, n_6, r_5, lobe_6);
+            let _e29 = light_weight(li_3, x_8, n_6, r_8, lobe_8, rl_5);
             if (_e29 > 0f) {
                 let _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -573,7 +651,7 @@ fn bsh_weighted_collect(x_7: vec3<f32>, n_6: vec3<f32>, r_5: vec3<f32>, lobe_6: 
         continuing {
             let _e58 = b_3;
             let _e61 = bsh_nodes[_e58].next;
-            let _e62 = bsh_next_leaf_scaled(BSH, _e61, x_7, scale_2);
+            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_8, r_8, rl_5);
             b_3 = _e62;
         }
     }
@@ -587,11 +665,11 @@ fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32
     if (depth == background) {
         return vec4<f32>(0f, 0f, 0f, 0f);
     }
-    let x_9 = ((((px + 0.5f) / width) * 2f) - 1f);
+    let x_10 = ((((px + 0.5f) / width) * 2f) - 1f);
     let y_1 = (1f - (((py + 0.5f) / height) * 2f));
-    let p_6 = ((((c0_ * x_9) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
-    if (abs(p_6.w) > 0f) {
-        return vec4<f32>((p_6.x / p_6.w), (p_6.y / p_6.w), (p_6.z / p_6.w), 1f);
+    let p_7 = ((((c0_ * x_10) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    if (abs(p_7.w) > 0f) {
+        return vec4<f32>((p_7.x / p_7.w), (p_7.y / p_7.w), (p_7.z / p_7.w), 1f);
     }
     return vec4<f32>(0f, 0f, 0f, 0f);
 }
@@ -610,15 +688,15 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return _e32;
 }
 
-fn shade_pick(li_2: u32, x_8: vec3<f32>, n_7: vec3<f32>, m_1: Material, s2_: f32, w_4: f32, u1_2: f32, u2_2: f32) -> Shaded {
+fn shade_pick(li_2: u32, x_9: vec3<f32>, n_7: vec3<f32>, r_9: vec3<f32>, rl_6: vec4<f32>, m_1: Material, w_4: f32, u1_2: f32, u2_2: f32) -> Shaded {
     var s_2: Shaded;
 
-    let _e10 = connect(li_2, x_8, n_7, n_7, s2_, w_4, u1_2, u2_2, 0f);
-    s_2.e = _e10.e;
+    let _e12 = connect(li_2, x_9, n_7, n_7, 1f, w_4, u1_2, u2_2, 0f);
+    s_2.e = _e12.e;
     s_2.diffuse = vec3(0f);
     s_2.specular = vec3(0f);
-    let _e19 = s_2;
-    return _e19;
+    let _e21 = s_2;
+    return _e21;
 }
 
 fn add(a_3: Shaded, b_4: Shaded) -> Shaded {
@@ -662,46 +740,46 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(out_tex, texel_1, vec4(0f));
         return;
     }
-    let x_10 = _e21.xyz;
+    let x_11 = _e21.xyz;
     let n_8 = (nn / vec3(sqrt(len2_)));
     r = n_8;
     let _e53 = lobe;
-    let _e54 = range_scale(_e53);
-    let scale_3 = sqrt(_e54);
-    let _e58 = view.seed;
-    let _e62 = view.width;
-    let _e68 = view.frame;
-    let _e69 = point_stream(_e58, ((gid.y * _e62) + gid.x), _e68);
-    let _e70 = pick_stream(_e69);
-    h = _e70;
-    let _e80 = r;
-    let _e81 = lobe;
-    let _e82 = bsh_weighted_collect(x_10, n_8, _e80, _e81, scale_3, _e69);
-    if (_e82.w_sum > 0f) {
+    let _e54 = range_lobe(_e53);
+    let _e57 = view.seed;
+    let _e61 = view.width;
+    let _e67 = view.frame;
+    let _e68 = point_stream(_e57, ((gid.y * _e61) + gid.x), _e67);
+    let _e69 = pick_stream(_e68);
+    h = _e69;
+    let _e79 = r;
+    let _e80 = lobe;
+    let _e81 = bsh_weighted_collect(x_11, n_8, _e79, _e80, _e54, _e68);
+    if (_e81.w_sum > 0f) {
         loop {
-            let _e88 = k;
-            if (_e88 < K) {
+            let _e87 = k;
+            if (_e87 < K) {
             } else {
                 break;
             }
             {
-                let _e91 = h;
-                let _e92 = pcg_hash(_e91);
-                h = _e92;
-                let _e93 = h;
-                let _e94 = xi_from_bits(_e93);
-                let _e95 = h;
-                let _e96 = pcg_hash(_e95);
-                h = _e96;
-                let _e97 = t;
-                let _e99 = k;
+                let _e90 = h;
+                let _e91 = pcg_hash(_e90);
+                h = _e91;
+                let _e92 = h;
+                let _e93 = xi_from_bits(_e92);
+                let _e94 = h;
+                let _e95 = pcg_hash(_e94);
+                h = _e95;
+                let _e96 = t;
+                let _e98 = k;
+                let _e100 = r;
                 let _e101 = m;
                 let _e104 = k;
-                let _e107 = weighted_pick_weight(_e82.w_sum, _e82.w[_e104], K);
+                let _e107 = weighted_pick_weight(_e81.w_sum, _e81.w[_e104], K);
                 let _e108 = h;
                 let _e109 = xi_from_bits(_e108);
-                let _e110 = shade_pick(_e82.light[_e99], x_10, n_8, _e101, _e54, _e107, _e94, _e109);
-                let _e111 = add(_e97, _e110);
+                let _e110 = shade_pick(_e81.light[_e98], x_11, n_8, _e100, _e54, _e101, _e107, _e93, _e109);
+                let _e111 = add(_e96, _e110);
                 t = _e111;
             }
             continuing {
@@ -710,7 +788,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             }
         }
     }
-    let count = _e82.n;
+    let count = _e81.n;
     let _e118 = t.e;
     textureStore(out_tex, texel_1, vec4<f32>(_e118, f32(count)));
     return;

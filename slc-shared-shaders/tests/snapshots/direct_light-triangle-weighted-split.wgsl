@@ -152,6 +152,10 @@ fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
     return (a_1 + b_1);
 }
 
+fn f32_from_bits(u_1: u32) -> f32 {
+    return bitcast<f32>(u_1);
+}
+
 fn xi_from_bits(bits: u32) -> f32 {
     let _e3 = to_f32_((bits >> 8u));
     return (_e3 * XI_STEP);
@@ -253,8 +257,16 @@ fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
     return (node.radius * scale);
 }
 
-fn weighted_replace(w_2: f32, w_sum: f32, u_1: f32) -> bool {
-    return ((u_1 * w_sum) < w_2);
+fn bsh_range_bound(node_1: BshNode) -> f32 {
+    if (node_1.child == BSH_NONE) {
+        return (node_1.radius - node_1.extent);
+    }
+    let _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
+fn weighted_replace(w_2: f32, w_sum: f32, u_2: f32) -> bool {
+    return ((u_2 * w_sum) < w_2);
 }
 
 fn weighted_pick_weight(w_sum_1: f32, w_3: f32, k_1: u32) -> f32 {
@@ -390,17 +402,31 @@ fn receiver_lobe(base_3: vec3<f32>, metallic_4: f32, f0_d_4: vec3<f32>, f90_d_4:
     return vec4<f32>(_e16, _e29, alpha_4, n_v_1);
 }
 
-fn receiver_peak(lobe_1: vec4<f32>) -> f32 {
-    let _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return (lobe_1.x + ((lobe_1.y * 0.25f) / ((lobe_1.z * lobe_1.z) * _e10)));
+fn specular_peak_factor(lobe_1: vec4<f32>) -> f32 {
+    let _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5f) / (_e6 + max(lobe_1.w, 0f)));
 }
 
-fn range_scale(lobe_2: vec4<f32>) -> f32 {
-    if (lobe_2.y <= 0f) {
+fn receiver_peak(lobe_2: vec4<f32>) -> f32 {
+    let _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+fn range_scale(lobe_3: vec4<f32>) -> f32 {
+    if (lobe_3.y <= 0f) {
         return 1f;
     }
-    let _e5 = receiver_peak(lobe_2);
+    let _e5 = receiver_peak(lobe_3);
     return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
+fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
+    if (lobe_4.y <= 0f) {
+        return vec4<f32>(1f, 0f, 1f, 1f);
+    }
+    let _e10 = specular_peak_factor(lobe_4);
+    let _e14 = range_scale(lobe_4);
+    return vec4<f32>(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
 fn mirror_dir(n_3: vec3<f32>, v_2: vec3<f32>) -> vec3<f32> {
@@ -467,16 +493,30 @@ fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d: vec3<f
     return _e27;
 }
 
-fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_3: vec3<f32>, n_4: vec3<f32>) -> f32 {
+fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
+    let t_2 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1f, (rl.w * rl.w));
+}
+
+fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_3: f32, p_3: vec3<f32>, r_2: vec3<f32>) -> f32 {
+    if (rl_1.w <= 1f) {
+        return 1f;
+    }
+    let _e9 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    let _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_4: vec3<f32>, n_4: vec3<f32>) -> f32 {
     var imp: f32;
 
-    let _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    let _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
     if (_e8.x <= cos_e_1) {
         return 0f;
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_4, n_4) > 0f) {
-        let v_7 = (center_3 - p_3);
+        let v_7 = (center_4 - p_4);
         let dist2_3 = dot(v_7, v_7);
         let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_7 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_4);
         let _e33 = imp;
@@ -488,11 +528,11 @@ fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3
     return max(_e44, 0f);
 }
 
-fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_4: vec3<f32>, n_5: vec3<f32>, r_2: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_5: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
     var local_9: bool;
 
-    let _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
-    let _e11 = cone_cos_toward(center_4, radius_4, p_4, n_5);
+    let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
+    let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_5);
     if !((_e10 <= 0f)) {
         local_9 = (_e11 <= 0f);
     } else {
@@ -502,12 +542,12 @@ fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec
     if _e20 {
         return 0f;
     }
-    let _e22 = cone_cos_toward(center_4, radius_4, p_4, r_2);
+    let _e22 = cone_cos_toward(center_5, radius_5, p_5, r_3);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
-    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_3.z);
-    let _e39 = smith_root(lobe_3.w, lobe_3.z);
-    let spec = (((lobe_3.y * _e33) * 0.25f) / _e39);
-    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
+    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_5.z);
+    let _e39 = smith_root(lobe_5.w, lobe_5.z);
+    let spec = (((lobe_5.y * _e33) * 0.25f) / _e39);
+    return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec));
 }
 
 fn candidate_weight(importance: f32, rt2_2: f32, d2_4: f32) -> f32 {
@@ -515,14 +555,14 @@ fn candidate_weight(importance: f32, rt2_2: f32, d2_4: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_5: vec3<f32>, radius_5: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_5: vec3<f32>, n_6: vec3<f32>, r_3: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
-    let v_8 = (p_5 - center_5);
-    if (lobe_4.y <= 0f) {
-        let _e15 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_6);
+fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_6: vec3<f32>, n_6: vec3<f32>, r_4: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
+    let v_8 = (p_6 - center_6);
+    if (lobe_6.y <= 0f) {
+        let _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6);
         let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_8, v_8));
         return _e19;
     }
-    let _e20 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_6, r_3, lobe_4);
+    let _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6, r_4, lobe_6);
     let _e22 = candidate_weight(_e20, rt2_3, dot(v_8, v_8));
     return _e22;
 }
@@ -586,38 +626,76 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_next_leaf_scaled(nodes_3: u32, start: u32, x_4: vec3<f32>, scale_1: f32) -> u32 {
+fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_5: vec3<f32>, rl_2: vec4<f32>) -> bool {
+    var local_11: bool;
+    var local_12: bool;
+
+    let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
+    if _e6 {
+        return true;
+    }
+    if !((rl_2.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_2.w * 1.0001f)), x_4);
+        local_11 = !(_e20);
+    } else {
+        local_11 = true;
+    }
+    let _e23 = local_11;
+    if _e23 {
+        return false;
+    }
+    if (node_2.child == BSH_NONE) {
+        let _e30 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+        let _e33 = bsh_scaled_radius(node_2, sqrt(_e30));
+        let _e34 = sphere_contains_point(node_2.center, _e33, x_4);
+        return _e34;
+    }
+    let _e37 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+    let s_c = (_e37 * 1.001f);
+    let _e42 = bsh_range_bound(node_2);
+    let reach = (node_2.extent + (sqrt(s_c) * _e42));
+    let v_9 = (x_4 - node_2.center);
+    let d2_7 = dot(v_9, v_9);
+    if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_12 = (d2_7 <= (reach * reach));
+    } else {
+        local_12 = false;
+    }
+    let _e58 = local_12;
+    return _e58;
+}
+
+fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> u32 {
     var i_1: u32;
 
     i_1 = start;
     loop {
-        let _e5 = i_1;
-        if (_e5 != BSH_NONE) {
+        let _e6 = i_1;
+        if (_e6 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e8 = i_1;
-            let _e9 = bsh_node(nodes_3, _e8);
-            let _e11 = bsh_scaled_radius(_e9, scale_1);
-            let _e12 = sphere_contains_point(_e9.center, _e11, x_4);
-            if _e12 {
-                if (_e9.child == BSH_NONE) {
-                    let _e16 = i_1;
-                    return _e16;
+            let _e9 = i_1;
+            let _e10 = bsh_node(nodes_3, _e9);
+            let _e11 = bsh_reaches(_e10, x_5, r_6, rl_3);
+            if _e11 {
+                if (_e10.child == BSH_NONE) {
+                    let _e15 = i_1;
+                    return _e15;
                 }
-                i_1 = _e9.child;
+                i_1 = _e10.child;
             } else {
-                i_1 = _e9.next;
+                i_1 = _e10.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-fn connect(li: u32, x_5: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+fn connect(li: u32, x_6: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
     var c_4: Connection;
-    var local_11: bool;
+    var local_13: bool;
 
     c_4.e = vec3(0f);
     let l_4 = lights[li];
@@ -625,42 +703,48 @@ fn connect(li: u32, x_5: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_r
     c_4.y = _e17;
     let _e20 = c_4.y;
     let _e23 = r2_3[li];
-    let _e25 = connection_cosine(x_5, _e20, n_7, ng_1, (s * _e23));
+    let _e25 = connection_cosine(x_6, _e20, n_7, ng_1, (s * _e23));
     c_4.cos_x = _e25;
     let _e27 = c_4.cos_x;
     if !((_e27 <= 0f)) {
         let _e36 = c_4.y;
-        let _e37 = occluded((x_5 + (ng_1 * eps)), _e36);
-        local_11 = _e37;
+        let _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
+        local_13 = _e37;
     } else {
-        local_11 = true;
+        local_13 = true;
     }
-    let _e39 = local_11;
+    let _e39 = local_13;
     if _e39 {
         let _e40 = c_4;
         return _e40;
     }
     let _e42 = c_4.y;
-    let v_9 = (x_5 - _e42);
-    let d2_7 = dot(v_9, v_9);
-    let _e49 = light_intensity(l_4, (v_9 / vec3(sqrt(d2_7))));
+    let v_10 = (x_6 - _e42);
+    let d2_8 = dot(v_10, v_10);
+    let _e49 = light_intensity(l_4, (v_10 / vec3(sqrt(d2_8))));
     let _e51 = c_4.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     let _e58 = c_4;
     return _e58;
 }
 
-fn light_weight(li_1: u32, x_6: vec3<f32>, n_8: vec3<f32>, r_4: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
+fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> f32 {
     let c_7 = light_cones[li_1];
-    let _e14 = range_scale(lobe_5);
-    let _e17 = rt2_4[li_1];
-    let _e19 = cone_weight(c_7.center, c_7.radius, c_7.phi, c_7.axis, c_7.cos_o, c_7.cos_e, (_e14 * _e17), x_6, n_8, r_4, lobe_5);
-    return _e19;
+    let _e9 = range_scale_toward(rl_4, c_7.center, c_7.radius, x_7, r_7);
+    return _e9;
 }
 
-fn bsh_weighted_collect(x_7: vec3<f32>, n_9: vec3<f32>, r_5: vec3<f32>, lobe_6: vec4<f32>, scale_2: f32, h0_: u32) -> WeightedPicks {
+fn light_weight(li_2: u32, x_8: vec3<f32>, n_8: vec3<f32>, r_8: vec3<f32>, lobe_7: vec4<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_8 = light_cones[li_2];
+    let _e17 = range_scale_toward(rl_5, c_8.center, c_8.radius, x_8, r_8);
+    let _e20 = rt2_4[li_2];
+    let _e22 = cone_weight(c_8.center, c_8.radius, c_8.phi, c_8.axis, c_8.cos_o, c_8.cos_e, (_e17 * _e20), x_8, n_8, r_8, lobe_7);
+    return _e22;
+}
+
+fn bsh_weighted_collect(x_9: vec3<f32>, n_9: vec3<f32>, r_9: vec3<f32>, lobe_8: vec4<f32>, rl_6: vec4<f32>, h0_: u32) -> WeightedPicks {
     var picks: WeightedPicks;
     var h_1: u32;
     var b_5: u32;
@@ -670,7 +754,7 @@ fn bsh_weighted_collect(x_7: vec3<f32>, n_9: vec3<f32>, r_5: vec3<f32>, lobe_6: 
     picks.n = 0u;
     h_1 = h0_;
     let _e14 = bsh_first(BSH);
-    let _e15 = bsh_next_leaf_scaled(BSH, _e14, x_7, scale_2);
+    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_9, rl_6);
     b_5 = _e15;
     loop {
         let _e17 = b_5;
@@ -682,8 +766,8 @@ fn bsh_weighted_collect(x_7: vec3<f32>, n_9: vec3<f32>, r_5: vec3<f32>, lobe_6: 
             let _e21 = picks.n;
             picks.n = (_e21 + 1u);
             let _e25 = b_5;
-            let li_3 = bsh_nodes[_e25].light;
-            let _e29 = light_weight(li_3, x_7, n_9, r_5, lobe_6);
+            let li_4 = bsh_nodes[_e25].light;
+            let _e29 = light_weight(li_4, x_9, n_9, r_9, lobe_8, rl_6);
             if (_e29 > 0f) {
                 let _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -704,7 +788,7 @@ fn bsh_weighted_collect(x_7: vec3<f32>, n_9: vec3<f32>, r_5: vec3<f32>, lobe_6: 
                         let _e46 = weighted_replace(_e29, _e43, _e45);
                         if _e46 {
                             let _e48 = s_1;
-                            picks.light[_e48] = li_3;
+                            picks.light[_e48] = li_4;
                             let _e51 = s_1;
                             picks.w[_e51] = _e29;
                         }
@@ -719,7 +803,7 @@ fn bsh_weighted_collect(x_7: vec3<f32>, n_9: vec3<f32>, r_5: vec3<f32>, lobe_6: 
         continuing {
             let _e58 = b_5;
             let _e61 = bsh_nodes[_e58].next;
-            let _e62 = bsh_next_leaf_scaled(BSH, _e61, x_7, scale_2);
+            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_9, rl_6);
             b_5 = _e62;
         }
     }
@@ -730,31 +814,32 @@ fn bsh_weighted_collect(x_7: vec3<f32>, n_9: vec3<f32>, r_5: vec3<f32>, lobe_6: 
 }
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
-    let p_6 = textureLoad(position_tex, texel, 0i);
-    return select(vec4(0f), vec4<f32>(p_6.xyz, 1f), (p_6.w > 0f));
+    let p_7 = textureLoad(position_tex, texel, 0i);
+    return select(vec4(0f), vec4<f32>(p_7.xyz, 1f), (p_7.w > 0f));
 }
 
-fn shade_pick(li_2: u32, x_8: vec3<f32>, n_10: vec3<f32>, m_1: Material, s2_: f32, w_5: f32, u1_3: f32, u2_3: f32) -> Shaded {
+fn shade_pick(li_3: u32, x_10: vec3<f32>, n_10: vec3<f32>, r_10: vec3<f32>, rl_7: vec4<f32>, m_1: Material, w_5: f32, u1_3: f32, u2_3: f32) -> Shaded {
     var s_2: Shaded;
 
-    let _e10 = connect(li_2, x_8, n_10, n_10, s2_, w_5, u1_3, u2_3, 0f);
-    s_2.e = _e10.e;
+    let _e10 = light_range_scale(li_3, x_10, r_10, rl_7);
+    let _e12 = connect(li_3, x_10, n_10, n_10, _e10, w_5, u1_3, u2_3, 0f);
+    s_2.e = _e12.e;
     s_2.diffuse = vec3(0f);
     s_2.specular = vec3(0f);
-    if (_e10.cos_x > 0f) {
-        let l_5 = normalize((_e10.y - x_8));
-        let _e30 = view.f0_d;
-        let _e33 = view.f90_d;
-        let _e35 = half_cosine(m_1.v, l_5);
-        let _e36 = diffuse_brdf(m_1.base, m_1.metallic, _e30, _e33, _e35);
-        s_2.diffuse = (_e36 * _e10.e);
-        let _e44 = view.f0_d;
-        let _e47 = view.f90_d;
-        let _e50 = specular_brdf(m_1.base, m_1.metallic, _e44, _e47, m_1.alpha, n_10, m_1.v, l_5);
-        s_2.specular = (_e50 * _e10.e);
+    if (_e12.cos_x > 0f) {
+        let l_5 = normalize((_e12.y - x_10));
+        let _e32 = view.f0_d;
+        let _e35 = view.f90_d;
+        let _e37 = half_cosine(m_1.v, l_5);
+        let _e38 = diffuse_brdf(m_1.base, m_1.metallic, _e32, _e35, _e37);
+        s_2.diffuse = (_e38 * _e12.e);
+        let _e46 = view.f0_d;
+        let _e49 = view.f90_d;
+        let _e52 = specular_brdf(m_1.base, m_1.metallic, _e46, _e49, m_1.alpha, n_10, m_1.v, l_5);
+        s_2.specular = (_e52 * _e12.e);
     }
-    let _e53 = s_2;
-    return _e53;
+    let _e55 = s_2;
+    return _e55;
 }
 
 fn add(a_5: Shaded, b_6: Shaded) -> Shaded {
@@ -799,14 +884,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(specular_tex, texel_1, vec4(0f));
         return;
     }
-    let x_9 = _e21.xyz;
+    let x_11 = _e21.xyz;
     let n_12 = (nn / vec3(sqrt(len2_1)));
     r = n_12;
     let mr = textureLoad(metal_rough_tex, texel_1, 0i);
     let _e61 = textureLoad(base_color_tex, texel_1, 0i);
     let _e67 = ggx_alpha(saturate(mr.y));
     let _e70 = view.eye;
-    m = Material(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_9)), mr.y, 0f);
+    m = Material(_e61.xyz, saturate(mr.z), _e67, normalize((_e70 - x_11)), mr.y, 0f);
     let _e77 = m.base;
     let _e79 = m.metallic;
     let _e82 = view.f0_d;
@@ -819,42 +904,42 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e94 = mirror_dir(n_12, _e93);
     r = _e94;
     let _e95 = lobe;
-    let _e96 = range_scale(_e95);
-    let scale_3 = sqrt(_e96);
-    let _e100 = view.seed;
-    let _e104 = view.width;
-    let _e110 = view.frame;
-    let _e111 = point_stream(_e100, ((gid.y * _e104) + gid.x), _e110);
-    let _e112 = pick_stream(_e111);
-    h = _e112;
-    let _e122 = r;
-    let _e123 = lobe;
-    let _e124 = bsh_weighted_collect(x_9, n_12, _e122, _e123, scale_3, _e111);
-    if (_e124.w_sum > 0f) {
+    let _e96 = range_lobe(_e95);
+    let _e99 = view.seed;
+    let _e103 = view.width;
+    let _e109 = view.frame;
+    let _e110 = point_stream(_e99, ((gid.y * _e103) + gid.x), _e109);
+    let _e111 = pick_stream(_e110);
+    h = _e111;
+    let _e121 = r;
+    let _e122 = lobe;
+    let _e123 = bsh_weighted_collect(x_11, n_12, _e121, _e122, _e96, _e110);
+    if (_e123.w_sum > 0f) {
         loop {
-            let _e130 = k;
-            if (_e130 < K) {
+            let _e129 = k;
+            if (_e129 < K) {
             } else {
                 break;
             }
             {
-                let _e133 = h;
-                let _e134 = pcg_hash(_e133);
-                h = _e134;
-                let _e135 = h;
-                let _e136 = xi_from_bits(_e135);
-                let _e137 = h;
-                let _e138 = pcg_hash(_e137);
-                h = _e138;
-                let _e139 = t;
-                let _e141 = k;
+                let _e132 = h;
+                let _e133 = pcg_hash(_e132);
+                h = _e133;
+                let _e134 = h;
+                let _e135 = xi_from_bits(_e134);
+                let _e136 = h;
+                let _e137 = pcg_hash(_e136);
+                h = _e137;
+                let _e138 = t;
+                let _e140 = k;
+                let _e142 = r;
                 let _e143 = m;
                 let _e146 = k;
-                let _e149 = weighted_pick_weight(_e124.w_sum, _e124.w[_e146], K);
+                let _e149 = weighted_pick_weight(_e123.w_sum, _e123.w[_e146], K);
                 let _e150 = h;
                 let _e151 = xi_from_bits(_e150);
-                let _e152 = shade_pick(_e124.light[_e141], x_9, n_12, _e143, _e96, _e149, _e136, _e151);
-                let _e153 = add(_e139, _e152);
+                let _e152 = shade_pick(_e123.light[_e140], x_11, n_12, _e142, _e96, _e143, _e149, _e135, _e151);
+                let _e153 = add(_e138, _e152);
                 t = _e153;
             }
             continuing {
@@ -863,7 +948,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             }
         }
     }
-    let count = _e124.n;
+    let count = _e123.n;
     let _e160 = t.e;
     textureStore(out_tex, texel_1, vec4<f32>(_e160, f32(count)));
     let _e165 = t.specular;

@@ -73,22 +73,30 @@ fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
     return (a_1 + b_1);
 }
 
+fn f32_from_bits(u_1: u32) -> f32 {
+    return bitcast<f32>(u_1);
+}
+
+fn f32_to_bits(x_1: f32) -> u32 {
+    return bitcast<u32>(x_1);
+}
+
 fn xi_from_bits(bits: u32) -> f32 {
     let _e3 = to_f32_((bits >> 8u));
     return (_e3 * XI_STEP);
 }
 
-fn pcg_hash(x_1: u32) -> u32 {
-    let _e2 = mul_lo_u32_(x_1, 747796405u);
+fn pcg_hash(x_2: u32) -> u32 {
+    let _e2 = mul_lo_u32_(x_2, 747796405u);
     let _e4 = add_wrap_u32_(_e2, 2891336453u);
     let _e12 = mul_lo_u32_(((_e4 >> ((_e4 >> 28u) + 4u)) ^ _e4), 277803737u);
     return ((_e12 >> 22u) ^ _e12);
 }
 
-fn laine_karras(x_2: u32, seed: u32) -> u32 {
+fn laine_karras(x_3: u32, seed: u32) -> u32 {
     var v: u32;
 
-    let _e2 = add_wrap_u32_(x_2, seed);
+    let _e2 = add_wrap_u32_(x_3, seed);
     v = _e2;
     let _e4 = v;
     let _e5 = v;
@@ -110,10 +118,10 @@ fn laine_karras(x_2: u32, seed: u32) -> u32 {
     return _e24;
 }
 
-fn reverse_bits(x_3: u32) -> u32 {
+fn reverse_bits(x_4: u32) -> u32 {
     var v_1: u32;
 
-    v_1 = (((x_3 >> 16u) & 65535u) | ((x_3 & 65535u) << 16u));
+    v_1 = (((x_4 >> 16u) & 65535u) | ((x_4 & 65535u) << 16u));
     let _e11 = v_1;
     let _e16 = v_1;
     v_1 = (((_e11 >> 8u) & 16711935u) | ((_e16 & 16711935u) << 8u));
@@ -211,15 +219,15 @@ fn windowed_falloff(d2_4: f32, range2_1: f32) -> f32 {
     return ((w_12 * w_12) / max(d2_4, 0.0001f));
 }
 
-fn sphere_contains_point(c: vec3<f32>, r: f32, x_4: vec3<f32>) -> bool {
-    let v_13 = (x_4 - c);
+fn sphere_contains_point(c: vec3<f32>, r: f32, x_5: vec3<f32>) -> bool {
+    let v_13 = (x_5 - c);
     return (dot(v_13, v_13) <= (r * r));
 }
 
 fn sphere_overlaps_sphere(c1_: vec3<f32>, r1_: f32, c2_: vec3<f32>, r2_2: f32) -> bool {
     let v_14 = (c2_ - c1_);
-    let r_8 = (r1_ + r2_2);
-    return (dot(v_14, v_14) <= (r_8 * r_8));
+    let r_9 = (r1_ + r2_2);
+    return (dot(v_14, v_14) <= (r_9 * r_9));
 }
 
 fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
@@ -262,9 +270,9 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
     let c_13 = (c1_1 + (v_15 * ((r0_ - r1_1) / d_9)));
     let e1_ = (c_13 - c1_1);
     let e2_ = (c_13 - c2_1);
-    let r_9 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
-    let _e82 = sphere_pad(r_9, c_13);
-    return vec4<f32>(c_13.x, c_13.y, c_13.z, (r_9 + _e82));
+    let r_10 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
+    let _e82 = sphere_pad(r_10, c_13);
+    return vec4<f32>(c_13.x, c_13.y, c_13.z, (r_10 + _e82));
 }
 
 fn sphere_overlaps_aabb(c_2: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
@@ -293,11 +301,11 @@ fn connection_factor(cos_x: f32, d2_6: f32, rt2_3: f32, w: f32) -> f32 {
     return (((cos_x * _e4) * _e6) * w);
 }
 
-fn connection_cosine(x_5: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_5: f32) -> f32 {
+fn connection_cosine(x_6: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, r2_5: f32) -> f32 {
     var local_1: bool;
     var local_2: bool;
 
-    let v_17 = (x_5 - y);
+    let v_17 = (x_6 - y);
     let d2_16 = dot(v_17, v_17);
     let _e7 = slc_keep(r2_5, d2_16);
     if !(!(_e7)) {
@@ -359,11 +367,11 @@ fn area_to_solid_angle_pdf(pdf_area: f32, d2_7: f32, cos_light: f32) -> f32 {
     return ((pdf_area * d2_7) / c_14);
 }
 
-fn atan_portable(x_6: f32) -> f32 {
+fn atan_portable(x_7: f32) -> f32 {
     var base: f32 = 0f;
     var t: f32;
 
-    let a_9 = abs(x_6);
+    let a_9 = abs(x_7);
     t = a_9;
     if (a_9 > 2.4142137f) {
         base = 1.5707964f;
@@ -380,12 +388,12 @@ fn atan_portable(x_6: f32) -> f32 {
     let _e21 = base;
     let _e33 = t;
     let _e35 = t;
-    let r_10 = (_e21 + (((((((((0.080537446f * z_3) - 0.13877685f) * z_3) + 0.19977711f) * z_3) - 0.3333295f) * z_3) * _e33) + _e35));
-    return select(r_10, -(r_10), (x_6 < 0f));
+    let r_11 = (_e21 + (((((((((0.080537446f * z_3) - 0.13877685f) * z_3) + 0.19977711f) * z_3) - 0.3333295f) * z_3) * _e33) + _e35));
+    return select(r_11, -(r_11), (x_7 < 0f));
 }
 
-fn atan2_portable(y_1: f32, x_7: f32) -> f32 {
-    if (x_7 == 0f) {
+fn atan2_portable(y_1: f32, x_8: f32) -> f32 {
+    if (x_8 == 0f) {
         if (y_1 > 0f) {
             return 1.5707964f;
         }
@@ -394,8 +402,8 @@ fn atan2_portable(y_1: f32, x_7: f32) -> f32 {
         }
         return 0f;
     }
-    let _e12 = atan_portable((y_1 / x_7));
-    if (x_7 > 0f) {
+    let _e12 = atan_portable((y_1 / x_8));
+    if (x_8 > 0f) {
         return _e12;
     }
     if (y_1 >= 0f) {
@@ -453,7 +461,7 @@ fn ies_fold_c(c_4: f32, h_first: f32, h_last: f32) -> f32 {
     return _e52;
 }
 
-fn ies_segment(tab_1: u32, start: u32, n_3: u32, x_8: f32) -> u32 {
+fn ies_segment(tab_1: u32, start: u32, n_3: u32, x_9: f32) -> u32 {
     var lo: u32 = 0u;
     var hi: u32;
 
@@ -473,7 +481,7 @@ fn ies_segment(tab_1: u32, start: u32, n_3: u32, x_8: f32) -> u32 {
             let _e18 = hi;
             let mid = ((_e17 + _e18) >> 1u);
             let _e23 = at(tab_1, (start + mid));
-            if (_e23 <= x_8) {
+            if (_e23 <= x_9) {
                 lo = mid;
             } else {
                 hi = mid;
@@ -484,11 +492,11 @@ fn ies_segment(tab_1: u32, start: u32, n_3: u32, x_8: f32) -> u32 {
     return _e25;
 }
 
-fn ies_lerp_t(a0_: f32, a1_: f32, x_9: f32) -> f32 {
+fn ies_lerp_t(a0_: f32, a1_: f32, x_10: f32) -> f32 {
     if (a1_ <= a0_) {
         return 0f;
     }
-    return saturate(((x_9 - a0_) / (a1_ - a0_)));
+    return saturate(((x_10 - a0_) / (a1_ - a0_)));
 }
 
 fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_5: f32) -> f32 {
@@ -560,6 +568,14 @@ fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
     return (node.radius * scale);
 }
 
+fn bsh_range_bound(node_1: BshNode) -> f32 {
+    if (node_1.child == BSH_NONE) {
+        return (node_1.radius - node_1.extent);
+    }
+    let _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
 fn mul_hi_u32_(a_4: u32, b_3: u32) -> u32 {
     let a_lo = (a_4 & 65535u);
     let a_hi = (a_4 >> 16u);
@@ -604,8 +620,8 @@ fn reservoir_weight(n_7: u32, k_1: u32) -> f32 {
     return max((_e2 / _e3), 1f);
 }
 
-fn weighted_replace(w_4: f32, w_sum: f32, u_1: f32) -> bool {
-    return ((u_1 * w_sum) < w_4);
+fn weighted_replace(w_4: f32, w_sum: f32, u_2: f32) -> bool {
+    return ((u_2 * w_sum) < w_4);
 }
 
 fn weighted_pick_weight(w_sum_1: f32, w_5: f32, k_2: u32) -> f32 {
@@ -632,13 +648,13 @@ fn reservoir_select_pdf(seen: u32, in_range: bool, k_3: u32) -> f32 {
     return (1f / _e15);
 }
 
-fn alias_choice(column: u32, other: u32, keep: f32, u_2: f32) -> u32 {
-    return select(other, column, (u_2 < keep));
+fn alias_choice(column: u32, other: u32, keep: f32, u_3: f32) -> u32 {
+    return select(other, column, (u_3 < keep));
 }
 
-fn uniform_light(u_3: f32, n_8: u32) -> u32 {
+fn uniform_light(u_4: f32, n_8: u32) -> u32 {
     let _e2 = to_f32_(n_8);
-    let _e4 = to_u32_((u_3 * _e2));
+    let _e4 = to_u32_((u_4 * _e2));
     return min(_e4, (n_8 - 1u));
 }
 
@@ -716,9 +732,9 @@ fn onb_to_local(n_12: vec3<f32>, w_6: vec3<f32>) -> vec3<f32> {
 }
 
 fn cosine_direction(n_13: vec3<f32>, u1_1: f32, u2_1: f32) -> vec3<f32> {
-    let r_11 = sqrt(u1_1);
+    let r_12 = sqrt(u1_1);
     let phi_5 = (6.2831855f * u2_1);
-    let _e16 = onb_to_world(n_13, vec3<f32>((r_11 * cos(phi_5)), (r_11 * sin(phi_5)), sqrt(max((1f - u1_1), 0f))));
+    let _e16 = onb_to_world(n_13, vec3<f32>((r_12 * cos(phi_5)), (r_12 * sin(phi_5)), sqrt(max((1f - u1_1), 0f))));
     return normalize(_e16);
 }
 
@@ -880,17 +896,31 @@ fn specular_probability(lobe: vec4<f32>) -> f32 {
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1f, 0.9f);
 }
 
-fn receiver_peak(lobe_1: vec4<f32>) -> f32 {
-    let _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return (lobe_1.x + ((lobe_1.y * 0.25f) / ((lobe_1.z * lobe_1.z) * _e10)));
+fn specular_peak_factor(lobe_1: vec4<f32>) -> f32 {
+    let _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5f) / (_e6 + max(lobe_1.w, 0f)));
 }
 
-fn range_scale(lobe_2: vec4<f32>) -> f32 {
-    if (lobe_2.y <= 0f) {
+fn receiver_peak(lobe_2: vec4<f32>) -> f32 {
+    let _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+fn range_scale(lobe_3: vec4<f32>) -> f32 {
+    if (lobe_3.y <= 0f) {
         return 1f;
     }
-    let _e5 = receiver_peak(lobe_2);
+    let _e5 = receiver_peak(lobe_3);
     return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
+fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
+    if (lobe_4.y <= 0f) {
+        return vec4<f32>(1f, 0f, 1f, 1f);
+    }
+    let _e10 = specular_peak_factor(lobe_4);
+    let _e14 = range_scale(lobe_4);
+    return vec4<f32>(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
 fn mirror_dir(n_17: vec3<f32>, v_7: vec3<f32>) -> vec3<f32> {
@@ -963,8 +993,8 @@ fn bsdf_pdf(n_19: vec3<f32>, v_9: vec3<f32>, l_4: vec3<f32>, alpha_11: f32, p_sp
 }
 
 fn bevy_alpha(perceptual: f32) -> f32 {
-    let r_12 = clamp(perceptual, 0.089f, 1f);
-    return (r_12 * r_12);
+    let r_13 = clamp(perceptual, 0.089f, 1f);
+    return (r_13 * r_13);
 }
 
 fn bevy_f0_(reflectance: f32) -> f32 {
@@ -974,9 +1004,9 @@ fn bevy_f0_(reflectance: f32) -> f32 {
 fn bevy_dfg(r_3: f32, n_v_2: f32) -> f32 {
     let rx = (1f - r_3);
     let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_3)));
-    let x_16 = max(((1.04f - (0.572f * r_3)) - (1.04f * a004_)), 0.00005f);
+    let x_17 = max(((1.04f - (0.572f * r_3)) - (1.04f * a004_)), 0.00005f);
     let y_3 = max((((0.022f * r_3) - 0.04f) + (1.04f * a004_)), 0.00005f);
-    return (x_16 + y_3);
+    return (x_17 + y_3);
 }
 
 fn bevy_brdf(base_11: vec3<f32>, metallic_8: f32, r_4: f32, reflectance_1: f32, n_20: vec3<f32>, v_10: vec3<f32>, l_5: vec3<f32>) -> vec3<f32> {
@@ -1019,8 +1049,8 @@ fn sin_sub_clamped(sin_a_1: f32, cos_a_1: f32, sin_b_1: f32, cos_b_1: f32) -> f3
     return ((sin_a_1 * cos_b_1) - (cos_a_1 * sin_b_1));
 }
 
-fn safe_sqrt(x_10: f32) -> f32 {
-    return sqrt(max(x_10, 0f));
+fn safe_sqrt(x_11: f32) -> f32 {
+    return sqrt(max(x_11, 0f));
 }
 
 fn subtended_cos(dist2_: f32, r2_6: f32) -> f32 {
@@ -1065,16 +1095,30 @@ fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3
     return _e27;
 }
 
-fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_3: vec3<f32>, n_21: vec3<f32>) -> f32 {
+fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
+    let t_5 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_5 * t_5))), 1f, (rl.w * rl.w));
+}
+
+fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_3: f32, p_3: vec3<f32>, r_5: vec3<f32>) -> f32 {
+    if (rl_1.w <= 1f) {
+        return 1f;
+    }
+    let _e9 = cone_cos_toward(center_3, radius_3, p_3, r_5);
+    let _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_4: vec3<f32>, n_21: vec3<f32>) -> f32 {
     var imp: f32;
 
-    let _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    let _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
     if (_e8.x <= cos_e_1) {
         return 0f;
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_21, n_21) > 0f) {
-        let v_20 = (center_3 - p_3);
+        let v_20 = (center_4 - p_4);
         let dist2_3 = dot(v_20, v_20);
         let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_20 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_21);
         let _e33 = imp;
@@ -1086,11 +1130,11 @@ fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3
     return max(_e44, 0f);
 }
 
-fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_4: vec3<f32>, n_22: vec3<f32>, r_5: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_6: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
     var local_13: bool;
 
-    let _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
-    let _e11 = cone_cos_toward(center_4, radius_4, p_4, n_22);
+    let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
+    let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_22);
     if !((_e10 <= 0f)) {
         local_13 = (_e11 <= 0f);
     } else {
@@ -1100,20 +1144,20 @@ fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec
     if _e20 {
         return 0f;
     }
-    let _e22 = cone_cos_toward(center_4, radius_4, p_4, r_5);
+    let _e22 = cone_cos_toward(center_5, radius_5, p_5, r_6);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
-    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_3.z);
-    let _e39 = smith_root(lobe_3.w, lobe_3.z);
-    let spec_1 = (((lobe_3.y * _e33) * 0.25f) / _e39);
-    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec_1));
+    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_5.z);
+    let _e39 = smith_root(lobe_5.w, lobe_5.z);
+    let spec_1 = (((lobe_5.y * _e33) * 0.25f) / _e39);
+    return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec_1));
 }
 
-fn receiver_importance(center_5: vec3<f32>, radius_5: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, p_5: vec3<f32>, n_23: vec3<f32>, r_6: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
-    if (lobe_4.y <= 0f) {
-        let _e13 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_23);
+fn receiver_importance(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, p_6: vec3<f32>, n_23: vec3<f32>, r_7: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
+    if (lobe_6.y <= 0f) {
+        let _e13 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_23);
         return _e13;
     }
-    let _e14 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_23, r_6, lobe_4);
+    let _e14 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_23, r_7, lobe_6);
     return _e14;
 }
 
@@ -1122,14 +1166,14 @@ fn candidate_weight(importance: f32, rt2_5: f32, d2_9: f32) -> f32 {
     return (importance * _e3);
 }
 
-fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_4: f32, axis_5: vec3<f32>, cos_o_5: f32, cos_e_4: f32, rt2_6: f32, p_6: vec3<f32>, n_24: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    let v_21 = (p_6 - center_6);
-    if (lobe_5.y <= 0f) {
-        let _e15 = light_importance(center_6, radius_6, phi_4, axis_5, cos_o_5, cos_e_4, p_6, n_24);
+fn cone_weight(center_7: vec3<f32>, radius_7: f32, phi_4: f32, axis_5: vec3<f32>, cos_o_5: f32, cos_e_4: f32, rt2_6: f32, p_7: vec3<f32>, n_24: vec3<f32>, r_8: vec3<f32>, lobe_7: vec4<f32>) -> f32 {
+    let v_21 = (p_7 - center_7);
+    if (lobe_7.y <= 0f) {
+        let _e15 = light_importance(center_7, radius_7, phi_4, axis_5, cos_o_5, cos_e_4, p_7, n_24);
         let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_21, v_21));
         return _e19;
     }
-    let _e20 = glossy_importance(center_6, radius_6, phi_4, axis_5, cos_o_5, cos_e_4, p_6, n_24, r_7, lobe_5);
+    let _e20 = glossy_importance(center_7, radius_7, phi_4, axis_5, cos_o_5, cos_e_4, p_7, n_24, r_8, lobe_7);
     let _e22 = candidate_weight(_e20, rt2_6, dot(v_21, v_21));
     return _e22;
 }
@@ -1151,11 +1195,11 @@ fn bvh_first_prob(c0_: f32, c1_2: f32) -> f32 {
     return -1f;
 }
 
-fn bvh_remap_u(u_4: f32, p0_: f32, first: bool) -> f32 {
+fn bvh_remap_u(u_5: f32, p0_: f32, first: bool) -> f32 {
     if first {
-        return min((u_4 / p0_), ONE_MINUS_EPSILON);
+        return min((u_5 / p0_), ONE_MINUS_EPSILON);
     }
-    return clamp(((u_4 - p0_) / (1f - p0_)), 0f, ONE_MINUS_EPSILON);
+    return clamp(((u_5 - p0_) / (1f - p0_)), 0f, ONE_MINUS_EPSILON);
 }
 
 fn surface_offset(diag: f32) -> f32 {
@@ -1170,8 +1214,8 @@ fn shadow_margin(len: f32) -> f32 {
     return (0.0001f * len);
 }
 
-fn ray_inverse(x_11: f32) -> f32 {
-    return (1f / select(x_11, 0.000000000000000000000000000001f, (abs(x_11) < 0.000000000000000000000000000001f)));
+fn ray_inverse(x_12: f32) -> f32 {
+    return (1f / select(x_12, 0.000000000000000000000000000001f, (abs(x_12) < 0.000000000000000000000000000001f)));
 }
 
 fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
@@ -1215,10 +1259,10 @@ fn face_against(n_25: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
     return select(n_25, -(n_25), (dot(n_25, dir) > 0f));
 }
 
-fn barycentric(p_7: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -> vec3<f32> {
+fn barycentric(p_8: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -> vec3<f32> {
     let e1_1 = (b_5 - a_6);
     let e2_1 = (c_8 - a_6);
-    let q_5 = (p_7 - a_6);
+    let q_5 = (p_8 - a_6);
     let d11_ = dot(e1_1, e1_1);
     let d12_ = dot(e1_1, e2_1);
     let d22_ = dot(e2_1, e2_1);
@@ -1256,16 +1300,16 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
 
     let e1_2 = (b_6 - a_7);
     let e2_2 = (c_9 - a_7);
-    let p_11 = cross(d_3, e2_2);
-    let det = dot(e1_2, p_11);
+    let p_12 = cross(d_3, e2_2);
+    let det = dot(e1_2, p_12);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv_1 = (1f / det);
     let s_7 = (o_1 - a_7);
-    let u_6 = (dot(s_7, p_11) * inv_1);
-    if !((u_6 < 0f)) {
-        local_16 = (u_6 > 1f);
+    let u_7 = (dot(s_7, p_12) * inv_1);
+    if !((u_7 < 0f)) {
+        local_16 = (u_7 > 1f);
     } else {
         local_16 = true;
     }
@@ -1276,7 +1320,7 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
     let q_6 = cross(s_7, e1_2);
     let v_22 = (dot(d_3, q_6) * inv_1);
     if !((v_22 < 0f)) {
-        local_17 = ((u_6 + v_22) > 1f);
+        local_17 = ((u_7 + v_22) > 1f);
     } else {
         local_17 = true;
     }
@@ -1284,15 +1328,15 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, 
     if _e42 {
         return -1f;
     }
-    let t_5 = (dot(e2_2, q_6) * inv_1);
-    if (t_5 > t_min) {
-        local_18 = (t_5 < t_max_1);
+    let t_6 = (dot(e2_2, q_6) * inv_1);
+    if (t_6 > t_min) {
+        local_18 = (t_6 < t_max_1);
     } else {
         local_18 = false;
     }
     let _e51 = local_18;
     if _e51 {
-        return t_5;
+        return t_6;
     }
     return -1f;
 }
@@ -1301,13 +1345,13 @@ fn inv_sigma_z(z: f32) -> f32 {
     return (1f / (DEPTH_SIGMA * z));
 }
 
-fn window_start(x_12: u32, size: u32) -> u32 {
+fn window_start(x_13: u32, size: u32) -> u32 {
     let half = (size / 2u);
-    return (max(x_12, half) - half);
+    return (max(x_13, half) - half);
 }
 
-fn window_end(x_13: u32, size_1: u32, extent_1: u32) -> u32 {
-    return min(((x_13 + size_1) - (size_1 / 2u)), extent_1);
+fn window_end(x_14: u32, size_1: u32, extent_1: u32) -> u32 {
+    return min(((x_14 + size_1) - (size_1 / 2u)), extent_1);
 }
 
 fn wide_window(period: u32) -> u32 {
@@ -1331,12 +1375,12 @@ fn bilateral_weight(n_26: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f
     let dn4_ = (dn2_ * dn2_);
     let dn8_ = (dn4_ * dn4_);
     let d_10 = ((zj - z_1) * inv_sz);
-    let t_6 = max((1f - (d_10 * d_10)), 0f);
-    return (((dn8_ * dn8_) * t_6) * t_6);
+    let t_7 = max((1f - (d_10 * d_10)), 0f);
+    return (((dn8_ * dn8_) * t_7) * t_7);
 }
 
-fn interleave_subset(x_14: u32, y_2: u32, period_2: u32) -> u32 {
-    return (((y_2 % period_2) * period_2) + (x_14 % period_2));
+fn interleave_subset(x_15: u32, y_2: u32, period_2: u32) -> u32 {
+    return (((y_2 % period_2) * period_2) + (x_15 % period_2));
 }
 
 fn interleave_slot(tx: u32, ty: u32, size_2: u32, period_3: u32) -> u32 {
@@ -1372,8 +1416,8 @@ fn vpl_near_weight(d2_10: f32, near_r2_: f32) -> f32 {
     if (near_r2_ <= 0f) {
         return 0f;
     }
-    let t_7 = clamp(((near_r2_ - d2_10) / (0.75f * near_r2_)), 0f, 1f);
-    return ((t_7 * t_7) * (3f - (2f * t_7)));
+    let t_8 = clamp(((near_r2_ - d2_10) / (0.75f * near_r2_)), 0f, 1f);
+    return ((t_8 * t_8) * (3f - (2f * t_8)));
 }
 
 fn vpl_far_weight(d2_11: f32, near_r2_1: f32) -> f32 {
@@ -1422,9 +1466,9 @@ fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: 
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
 
-fn jittered_pixel(coord: u32, u_5: f32) -> f32 {
+fn jittered_pixel(coord: u32, u_6: f32) -> f32 {
     let _e2 = to_f32_(coord);
-    return (_e2 + u_5);
+    return (_e2 + u_6);
 }
 
 fn plays_roulette(depth: u32) -> bool {
@@ -1487,10 +1531,10 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_6: vec3<f32>, exten
     return (dot(rel, dir_2) / (select(1f, dot(rel, axis_6), perspective) * extent_2));
 }
 
-fn display_encode(x_15: f32) -> f32 {
-    let v_23 = max(x_15, 0f);
-    let t_8 = ((2f * v_23) / (1f + (2f * v_23)));
-    return select(((1.055f * pow(t_8, 0.41666666f)) - 0.055f), (12.92f * t_8), (t_8 <= 0.0031308f));
+fn display_encode(x_16: f32) -> f32 {
+    let v_23 = max(x_16, 0f);
+    let t_9 = ((2f * v_23) / (1f + (2f * v_23)));
+    return select(((1.055f * pow(t_9, 0.41666666f)) - 0.055f), (12.92f * t_9), (t_9 <= 0.0031308f));
 }
 
 fn light_map_depth(rel_1: vec3<f32>, axis_7: vec3<f32>, perspective_1: bool) -> f32 {
@@ -1551,14 +1595,14 @@ fn luminance(c_10: vec3<f32>) -> f32 {
     return dot(c_10, vec3<f32>(0.2126f, 0.7152f, 0.0722f));
 }
 
-fn reproject(c0_1: vec4<f32>, c1_3: vec4<f32>, c2_2: vec4<f32>, c3_: vec4<f32>, p_8: vec3<f32>, width: f32, height: f32) -> vec3<f32> {
-    let clip = ((((c0_1 * p_8.x) + (c1_3 * p_8.y)) + (c2_2 * p_8.z)) + c3_);
+fn reproject(c0_1: vec4<f32>, c1_3: vec4<f32>, c2_2: vec4<f32>, c3_: vec4<f32>, p_9: vec3<f32>, width: f32, height: f32) -> vec3<f32> {
+    let clip = ((((c0_1 * p_9.x) + (c1_3 * p_9.y)) + (c2_2 * p_9.z)) + c3_);
     if (clip.w <= 0f) {
         return vec3<f32>(-1f, -1f, 0f);
     }
-    let x_17 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
+    let x_18 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
     let y_4 = ((((1f - (clip.y / clip.w)) * 0.5f) * height) - 0.5f);
-    return vec3<f32>(x_17, y_4, clip.w);
+    return vec3<f32>(x_18, y_4, clip.w);
 }
 
 fn reproject_motion(px_1: f32, py_1: f32, mx: f32, my: f32, width_1: f32, height_1: f32) -> vec3<f32> {
@@ -1620,10 +1664,10 @@ fn history_mean(sum_1: vec4<f32>, weight_1: f32) -> vec4<f32> {
     return (sum_1 / vec4(weight_1));
 }
 
-fn history_matches(n_30: vec3<f32>, nh: vec3<f32>, p_9: vec3<f32>, oh: f32, d_6: f32) -> bool {
+fn history_matches(n_30: vec3<f32>, nh: vec3<f32>, p_10: vec3<f32>, oh: f32, d_6: f32) -> bool {
     var local_27: bool;
 
-    if (abs((dot(nh, p_9) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_6)) {
+    if (abs((dot(nh, p_10) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_6)) {
         local_27 = (dot(n_30, nh) >= TEMPORAL_NORMAL_COS);
     } else {
         local_27 = false;
@@ -1637,8 +1681,8 @@ fn temporal_change(l_6: f32, m1_: f32, noise: f32, n_31: f32) -> f32 {
         return 0f;
     }
     let sigma = sqrt((max(noise, 0f) * (1f + (1f / n_31))));
-    let t_9 = (abs((l_6 - m1_)) / ((sigma + (0.001f * max(abs(l_6), abs(m1_)))) + 0.00000000000000000001f));
-    return clamp(((t_9 - TEMPORAL_CHANGE_LOW) / 4f), 0f, 1f);
+    let t_10 = (abs((l_6 - m1_)) / ((sigma + (0.001f * max(abs(l_6), abs(m1_)))) + 0.00000000000000000001f));
+    return clamp(((t_10 - TEMPORAL_CHANGE_LOW) / 4f), 0f, 1f);
 }
 
 fn next_history_length(n_32: f32, lambda: f32, max_history: f32) -> f32 {
@@ -1649,11 +1693,11 @@ fn temporal_alpha(n_33: f32) -> f32 {
     return (1f / max(n_33, 1f));
 }
 
-fn history_tap_weight(w_10: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_10: vec3<f32>, oh_1: f32, d_7: f32, len_1: f32) -> f32 {
+fn history_tap_weight(w_10: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_11: vec3<f32>, oh_1: f32, d_7: f32, len_1: f32) -> f32 {
     var local_28: bool;
 
     if (len_1 > 0f) {
-        let _e11 = history_matches(n_34, nh_1, p_10, oh_1, d_7);
+        let _e11 = history_matches(n_34, nh_1, p_11, oh_1, d_7);
         local_28 = _e11;
     } else {
         local_28 = false;

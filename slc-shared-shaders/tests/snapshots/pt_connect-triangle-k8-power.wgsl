@@ -9,6 +9,17 @@ struct GpuLight {
     ies_base: u32,
 }
 
+struct GpuLightCone {
+    center: vec3<f32>,
+    radius: f32,
+    axis: vec3<f32>,
+    cos_o: f32,
+    phi: f32,
+    cos_e: f32,
+    bvh_leaf: u32,
+    pad: u32,
+}
+
 struct GpuGeoNode {
     bmin: vec3<f32>,
     first: u32,
@@ -131,9 +142,11 @@ var<storage> bsh_nodes: array<BshNode>;
 @group(0) @binding(2) 
 var<storage> lights: array<GpuLight>;
 @group(0) @binding(4) 
-var<storage> r2_2: array<f32>;
+var<storage> r2_3: array<f32>;
 @group(0) @binding(3) 
 var<storage> rt2_4: array<f32>;
+@group(1) @binding(2) 
+var<storage> light_cones: array<GpuLightCone>;
 @group(0) @binding(0) 
 var<uniform> params: ShadeParams;
 @group(0) @binding(1) 
@@ -155,6 +168,10 @@ fn mul_lo_u32_(a: u32, b: u32) -> u32 {
 
 fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
     return (a_1 + b_1);
+}
+
+fn f32_from_bits(u_1: u32) -> f32 {
+    return bitcast<f32>(u_1);
 }
 
 fn xi_from_bits(bits: u32) -> f32 {
@@ -271,6 +288,14 @@ fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
         return (node.extent + (scale * (node.radius - node.extent)));
     }
     return (node.radius * scale);
+}
+
+fn bsh_range_bound(node_1: BshNode) -> f32 {
+    if (node_1.child == BSH_NONE) {
+        return (node_1.radius - node_1.extent);
+    }
+    let _e8 = f32_from_bits(node_1.light);
+    return _e8;
 }
 
 fn mul_hi_u32_(a_3: u32, b_3: u32) -> u32 {
@@ -535,17 +560,31 @@ fn specular_probability(lobe: vec4<f32>) -> f32 {
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1f, 0.9f);
 }
 
-fn receiver_peak(lobe_1: vec4<f32>) -> f32 {
-    let _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return (lobe_1.x + ((lobe_1.y * 0.25f) / ((lobe_1.z * lobe_1.z) * _e10)));
+fn specular_peak_factor(lobe_1: vec4<f32>) -> f32 {
+    let _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5f) / (_e6 + max(lobe_1.w, 0f)));
 }
 
-fn range_scale(lobe_2: vec4<f32>) -> f32 {
-    if (lobe_2.y <= 0f) {
+fn receiver_peak(lobe_2: vec4<f32>) -> f32 {
+    let _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+fn range_scale(lobe_3: vec4<f32>) -> f32 {
+    if (lobe_3.y <= 0f) {
         return 1f;
     }
-    let _e5 = receiver_peak(lobe_2);
+    let _e5 = receiver_peak(lobe_3);
     return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
+fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
+    if (lobe_4.y <= 0f) {
+        return vec4<f32>(1f, 0f, 1f, 1f);
+    }
+    let _e10 = specular_peak_factor(lobe_4);
+    let _e14 = range_scale(lobe_4);
+    return vec4<f32>(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
 fn mirror_dir(n_11: vec3<f32>, v_3: vec3<f32>) -> vec3<f32> {
@@ -591,18 +630,60 @@ fn bsdf_pdf(n_12: vec3<f32>, v_4: vec3<f32>, l_3: vec3<f32>, alpha_8: f32, p_spe
     return ((p_spec * _e11) + ((1f - p_spec) * _e6));
 }
 
+fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+    if (cos_a > cos_b) {
+        return 1f;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+fn safe_sqrt(x_3: f32) -> f32 {
+    return sqrt(max(x_3, 0f));
+}
+
+fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
+    let _e5 = safe_sqrt((1f - (r2_2 / dist2_)));
+    return select(_e5, -1f, (dist2_ <= r2_2));
+}
+
+fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d: vec3<f32>) -> f32 {
+    let v_8 = (center - p);
+    let dist2_1 = dot(v_8, v_8);
+    let w_6 = select(vec3<f32>(0f, 0f, 0f), (v_8 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let _e17 = subtended_cos(dist2_1, (radius * radius));
+    let cos_i = dot(w_6, d);
+    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
+    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
+    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
+    let t_2 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1f, (rl.w * rl.w));
+}
+
+fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_1: vec3<f32>) -> f32 {
+    if (rl_1.w <= 1f) {
+        return 1f;
+    }
+    let _e9 = cone_cos_toward(center_1, radius_1, p_1, r_1);
+    let _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
 fn shadow_margin(len: f32) -> f32 {
     return (0.0001f * len);
 }
 
-fn ray_inverse(x_3: f32) -> f32 {
-    return (1f / select(x_3, 0.000000000000000000000000000001f, (abs(x_3) < 0.000000000000000000000000000001f)));
+fn ray_inverse(x_4: f32) -> f32 {
+    return (1f / select(x_4, 0.000000000000000000000000000001f, (abs(x_4) < 0.000000000000000000000000000001f)));
 }
 
-fn ray_inverse3_(d: vec3<f32>) -> vec3<f32> {
-    let _e2 = ray_inverse(d.x);
-    let _e4 = ray_inverse(d.y);
-    let _e6 = ray_inverse(d.z);
+fn ray_inverse3_(d_1: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d_1.x);
+    let _e4 = ray_inverse(d_1.y);
+    let _e6 = ray_inverse(d_1.z);
     return vec3<f32>(_e2, _e4, _e6);
 }
 
@@ -636,23 +717,23 @@ fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> 
     return (n_17 / vec3(sqrt(l2_)));
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
     var local_12: bool;
     var local_13: bool;
     var local_14: bool;
 
     let e1_ = (b_5 - a_5);
     let e2_ = (c_4 - a_5);
-    let p = cross(d_1, e2_);
-    let det = dot(e1_, p);
+    let p_2 = cross(d_2, e2_);
+    let det = dot(e1_, p_2);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv_1 = (1f / det);
     let s_6 = (o_1 - a_5);
-    let u_1 = (dot(s_6, p) * inv_1);
-    if !((u_1 < 0f)) {
-        local_12 = (u_1 > 1f);
+    let u_2 = (dot(s_6, p_2) * inv_1);
+    if !((u_2 < 0f)) {
+        local_12 = (u_2 > 1f);
     } else {
         local_12 = true;
     }
@@ -661,9 +742,9 @@ fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, 
         return -1f;
     }
     let q = cross(s_6, e1_);
-    let v_8 = (dot(d_1, q) * inv_1);
-    if !((v_8 < 0f)) {
-        local_13 = ((u_1 + v_8) > 1f);
+    let v_9 = (dot(d_2, q) * inv_1);
+    if !((v_9 < 0f)) {
+        local_13 = ((u_2 + v_9) > 1f);
     } else {
         local_13 = true;
     }
@@ -671,15 +752,15 @@ fn ray_triangle(o_1: vec3<f32>, d_1: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, 
     if _e42 {
         return -1f;
     }
-    let t_2 = (dot(e2_, q) * inv_1);
-    if (t_2 > t_min) {
-        local_14 = (t_2 < t_max_1);
+    let t_3 = (dot(e2_, q) * inv_1);
+    if (t_3 > t_min) {
+        local_14 = (t_3 < t_max_1);
     } else {
         local_14 = false;
     }
     let _e51 = local_14;
     if _e51 {
-        return t_2;
+        return t_3;
     }
     return -1f;
 }
@@ -739,11 +820,11 @@ fn light_normal(l_7: GpuLight) -> vec3<f32> {
     return vec3(0f);
 }
 
-fn trace(o_2: vec3<f32>, d_2: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
+fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
-    var node_1: u32 = 0u;
+    var node_2: u32 = 0u;
     var i: u32;
 
     hit.t = t_max_2;
@@ -752,9 +833,9 @@ fn trace(o_2: vec3<f32>, d_2: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         let _e13 = hit;
         return _e13;
     }
-    let _e14 = ray_inverse3_(d_2);
+    let _e14 = ray_inverse3_(d_3);
     loop {
-        let _e21 = node_1;
+        let _e21 = node_2;
         let n_18 = geo_nodes[_e21];
         let _e27 = hit.t;
         let _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
@@ -769,9 +850,9 @@ fn trace(o_2: vec3<f32>, d_2: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     }
                     {
                         let _e42 = i;
-                        let t_3 = geo_tris[_e42];
+                        let t_4 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_2, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i;
@@ -795,7 +876,7 @@ fn trace(o_2: vec3<f32>, d_2: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_1 = n_18.first;
+                node_2 = n_18.first;
                 continue;
             }
         }
@@ -807,7 +888,7 @@ fn trace(o_2: vec3<f32>, d_2: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         sp = (_e75 - 1u);
         let _e78 = sp;
         let _e80 = stack[_e78];
-        node_1 = _e80;
+        node_2 = _e80;
     }
     let _e81 = hit;
     return _e81;
@@ -841,117 +922,155 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_next_leaf_scaled(nodes_3: u32, start: u32, x_4: vec3<f32>, scale_1: f32) -> u32 {
+fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_2: vec3<f32>, rl_2: vec4<f32>) -> bool {
+    var local_17: bool;
+    var local_18: bool;
+
+    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
+    if _e6 {
+        return true;
+    }
+    if !((rl_2.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_2.w * 1.0001f)), x_5);
+        local_17 = !(_e20);
+    } else {
+        local_17 = true;
+    }
+    let _e23 = local_17;
+    if _e23 {
+        return false;
+    }
+    if (node_3.child == BSH_NONE) {
+        let _e30 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_5, r_2);
+        let _e33 = bsh_scaled_radius(node_3, sqrt(_e30));
+        let _e34 = sphere_contains_point(node_3.center, _e33, x_5);
+        return _e34;
+    }
+    let _e37 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_5, r_2);
+    let s_c = (_e37 * 1.001f);
+    let _e42 = bsh_range_bound(node_3);
+    let reach = (node_3.extent + (sqrt(s_c) * _e42));
+    let v_10 = (x_5 - node_3.center);
+    let d2_8 = dot(v_10, v_10);
+    if (d2_8 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_18 = (d2_8 <= (reach * reach));
+    } else {
+        local_18 = false;
+    }
+    let _e58 = local_18;
+    return _e58;
+}
+
+fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> u32 {
     var i_2: u32;
 
     i_2 = start;
     loop {
-        let _e5 = i_2;
-        if (_e5 != BSH_NONE) {
+        let _e6 = i_2;
+        if (_e6 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e8 = i_2;
-            let _e9 = bsh_node(nodes_3, _e8);
-            let _e11 = bsh_scaled_radius(_e9, scale_1);
-            let _e12 = sphere_contains_point(_e9.center, _e11, x_4);
-            if _e12 {
-                if (_e9.child == BSH_NONE) {
-                    let _e16 = i_2;
-                    return _e16;
+            let _e9 = i_2;
+            let _e10 = bsh_node(nodes_3, _e9);
+            let _e11 = bsh_reaches(_e10, x_6, r_3, rl_3);
+            if _e11 {
+                if (_e10.child == BSH_NONE) {
+                    let _e15 = i_2;
+                    return _e15;
                 }
-                i_2 = _e9.child;
+                i_2 = _e10.child;
             } else {
-                i_2 = _e9.next;
+                i_2 = _e10.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-fn bsh_collect(x_5: vec3<f32>, scale_2: f32, seed_1: u32) -> Picks {
+fn bsh_collect(x_7: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, seed_1: u32) -> Picks {
     var picks: Picks;
     var h_1: u32;
     var i_3: u32;
 
     picks.n = 0u;
     h_1 = seed_1;
-    let _e9 = bsh_first(BSH);
-    let _e10 = bsh_next_leaf_scaled(BSH, _e9, x_5, scale_2);
-    i_3 = _e10;
+    let _e10 = bsh_first(BSH);
+    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_7, r_4, rl_4);
+    i_3 = _e11;
     loop {
-        let _e12 = i_3;
-        if (_e12 != BSH_NONE) {
+        let _e13 = i_3;
+        if (_e13 != BSH_NONE) {
         } else {
             break;
         }
         {
-            let _e16 = picks.n;
-            let _e17 = reservoir_takes(_e16);
-            if _e17 {
-                let _e19 = picks.n;
-                picks.n = (_e19 + 1u);
-                let _e22 = h_1;
-                let _e23 = pcg_hash(_e22);
-                h_1 = _e23;
+            let _e17 = picks.n;
+            let _e18 = reservoir_takes(_e17);
+            if _e18 {
+                let _e20 = picks.n;
+                picks.n = (_e20 + 1u);
+                let _e23 = h_1;
+                let _e24 = pcg_hash(_e23);
+                h_1 = _e24;
                 let hi_3 = h_1;
-                let _e25 = h_1;
-                let _e26 = pcg_hash(_e25);
-                h_1 = _e26;
-                let _e28 = picks.n;
-                let _e30 = h_1;
-                let _e31 = reservoir_slot(_e28, K, hi_3, _e30);
-                if (_e31 < K) {
-                    let _e37 = i_3;
-                    let _e40 = bsh_nodes[_e37].light;
-                    picks.light[_e31] = _e40;
+                let _e26 = h_1;
+                let _e27 = pcg_hash(_e26);
+                h_1 = _e27;
+                let _e29 = picks.n;
+                let _e31 = h_1;
+                let _e32 = reservoir_slot(_e29, K, hi_3, _e31);
+                if (_e32 < K) {
+                    let _e38 = i_3;
+                    let _e41 = bsh_nodes[_e38].light;
+                    picks.light[_e32] = _e41;
                 }
             }
         }
         continuing {
-            let _e43 = i_3;
-            let _e46 = bsh_nodes[_e43].next;
-            let _e47 = bsh_next_leaf_scaled(BSH, _e46, x_5, scale_2);
-            i_3 = _e47;
+            let _e44 = i_3;
+            let _e47 = bsh_nodes[_e44].next;
+            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_7, r_4, rl_4);
+            i_3 = _e48;
         }
     }
-    let _e48 = picks;
-    return _e48;
+    let _e49 = picks;
+    return _e49;
 }
 
-fn connect(li: u32, x_6: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+fn connect(li: u32, x_8: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
     var c_5: Connection;
-    var local_17: bool;
+    var local_19: bool;
 
     c_5.e = vec3(0f);
     let l_8 = lights[li];
     let _e17 = light_point(l_8, u1_2, u2_2);
     c_5.y = _e17;
     let _e20 = c_5.y;
-    let _e23 = r2_2[li];
-    let _e25 = connection_cosine(x_6, _e20, n_13, ng_1, (s_1 * _e23));
+    let _e23 = r2_3[li];
+    let _e25 = connection_cosine(x_8, _e20, n_13, ng_1, (s_1 * _e23));
     c_5.cos_x = _e25;
     let _e27 = c_5.cos_x;
     if !((_e27 <= 0f)) {
         let _e36 = c_5.y;
-        let _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
-        local_17 = _e37;
+        let _e37 = occluded((x_8 + (ng_1 * eps)), _e36);
+        local_19 = _e37;
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    let _e39 = local_17;
+    let _e39 = local_19;
     if _e39 {
         let _e40 = c_5;
         return _e40;
     }
     let _e42 = c_5.y;
-    let v_9 = (x_6 - _e42);
-    let d2_8 = dot(v_9, v_9);
-    let _e49 = light_intensity(l_8, (v_9 / vec3(sqrt(d2_8))));
+    let v_11 = (x_8 - _e42);
+    let d2_9 = dot(v_11, v_11);
+    let _e49 = light_intensity(l_8, (v_11 / vec3(sqrt(d2_9))));
     let _e51 = c_5.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_8, (s_1 * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_9, (s_1 * _e54), w_res);
     c_5.e = (_e49 * _e56);
     let _e58 = c_5;
     return _e58;
@@ -962,52 +1081,59 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     return _e2;
 }
 
-fn select_pdf(li_1: u32, x_7: vec3<f32>, n_14: vec3<f32>, r_1: vec3<f32>, lobe_3: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
+fn light_range_scale(li_1: u32, x_9: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_9 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_9, r_5);
+    return _e9;
+}
+
+fn select_pdf(li_2: u32, x_10: vec3<f32>, n_14: vec3<f32>, r_6: vec3<f32>, lobe_5: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
     let _e8 = reservoir_select_pdf(nee, in_range_1, K);
     return _e8;
 }
 
-fn light_pdf_selected(li_2: u32, x_8: vec3<f32>, lobe_4: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
-    let l_9 = lights[li_2];
-    let v_10 = (x_8 - y_1);
-    let d2_9 = dot(v_10, v_10);
-    let _e10 = light_normal(l_9);
-    let cos_y_1 = select(0f, dot(_e10, (v_10 / vec3(sqrt(d2_9)))), (d2_9 > 0f));
-    let _e19 = range_scale(lobe_4);
-    let _e22 = rt2_4[li_2];
-    let _e24 = light_area(l_9);
-    let _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_9, _e24, cos_y_1);
-    return _e25;
+fn light_pdf_selected(li_3: u32, x_11: vec3<f32>, r_7: vec3<f32>, lobe_6: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
+    let l_9 = lights[li_3];
+    let v_12 = (x_11 - y_1);
+    let d2_10 = dot(v_12, v_12);
+    let _e11 = light_normal(l_9);
+    let cos_y_1 = select(0f, dot(_e11, (v_12 / vec3(sqrt(d2_10)))), (d2_10 > 0f));
+    let _e20 = range_lobe(lobe_6);
+    let _e21 = light_range_scale(li_3, x_11, r_7, _e20);
+    let _e24 = rt2_4[li_3];
+    let _e26 = light_area(l_9);
+    let _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_10, _e26, cos_y_1);
+    return _e27;
 }
 
-fn light_pdf(li_3: u32, x_9: vec3<f32>, n_15: vec3<f32>, r_2: vec3<f32>, lobe_5: vec4<f32>, y_2: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
-    let _e8 = select_pdf(li_3, x_9, n_15, r_2, lobe_5, nee_1, in_range_2);
-    let _e9 = light_pdf_selected(li_3, x_9, lobe_5, y_2, _e8);
+fn light_pdf(li_4: u32, x_12: vec3<f32>, n_15: vec3<f32>, r_8: vec3<f32>, lobe_7: vec4<f32>, y_2: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let _e8 = select_pdf(li_4, x_12, n_15, r_8, lobe_7, nee_1, in_range_2);
+    let _e9 = light_pdf_selected(li_4, x_12, r_8, lobe_7, y_2, _e8);
     return _e9;
 }
 
-fn shade_pick(li_4: u32, x_10: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_3: vec3<f32>, lobe_6: vec4<f32>, w_4: f32, nee_2: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
+fn shade_pick(li_5: u32, x_13: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_9: vec3<f32>, lobe_8: vec4<f32>, rl_6: vec4<f32>, w_4: f32, nee_2: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e12 = range_scale(lobe_6);
-    let _e15 = params.eps;
-    let _e16 = connect(li_4, x_10, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15);
-    if (_e16.cos_x <= 0f) {
+    let _e13 = light_range_scale(li_5, x_13, r_9, rl_6);
+    let _e16 = params.eps;
+    let _e17 = connect(li_5, x_13, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16);
+    if (_e17.cos_x <= 0f) {
         return vec3(0f);
     }
-    let l_10 = normalize((_e16.y - x_10));
-    let _e29 = lights[li_4];
-    let _e30 = light_area(_e29);
-    if (_e30 > 0f) {
-        let _e35 = light_pdf(li_4, x_10, n_16, r_3, lobe_6, _e16.y, nee_2, true);
-        let _e37 = specular_probability(lobe_6);
-        let _e38 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e37);
-        let _e39 = mis_weight(_e35, _e38);
-        mis = _e39;
+    let l_10 = normalize((_e17.y - x_13));
+    let _e30 = lights[li_5];
+    let _e31 = light_area(_e30);
+    if (_e31 > 0f) {
+        let _e36 = light_pdf(li_5, x_13, n_16, r_9, lobe_8, _e17.y, nee_2, true);
+        let _e38 = specular_probability(lobe_8);
+        let _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
+        let _e40 = mis_weight(_e36, _e39);
+        mis = _e40;
     }
-    let _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
-    let _e48 = mis;
-    return ((_e45 * _e16.e) * _e48);
+    let _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
+    let _e49 = mis;
+    return ((_e46 * _e17.e) * _e49);
 }
 
 @compute @workgroup_size(64, 1, 1) 
@@ -1026,56 +1152,55 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         candidates[i_4] = 0u;
         return;
     }
-    let x_11 = vtx.position;
+    let x_14 = vtx.position;
     let n_19 = vtx.normal;
     let ng_3 = vtx.gnormal;
     let m_2 = materials[vtx.material];
     let wo_2 = vtx.wo;
     let _e23 = mirror_dir(n_19, wo_2);
     let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_19, wo_2));
-    let _e31 = range_scale(_e30);
-    let scale_3 = sqrt(_e31);
-    let _e35 = params.seed;
-    let _e38 = params.frame;
-    let _e39 = point_stream(_e35, i_4, _e38);
-    let _e40 = pick_stream(_e39);
-    h = _e40;
-    let _e45 = bsh_collect(x_11, scale_3, _e39);
-    candidates[i_4] = _e45.n;
-    let _e51 = reservoir_weight(_e45.n, K);
+    let _e31 = range_lobe(_e30);
+    let _e34 = params.seed;
+    let _e37 = params.frame;
+    let _e38 = point_stream(_e34, i_4, _e37);
+    let _e39 = pick_stream(_e38);
+    h = _e39;
+    let _e44 = bsh_collect(x_14, _e23, _e31, _e38);
+    candidates[i_4] = _e44.n;
+    let _e50 = reservoir_weight(_e44.n, K);
     loop {
-        let _e54 = s;
-        if (_e54 < min(_e45.n, K)) {
+        let _e53 = s;
+        if (_e53 < min(_e44.n, K)) {
         } else {
             break;
         }
         {
-            let _e59 = h;
-            let _e60 = pcg_hash(_e59);
-            h = _e60;
-            let _e61 = h;
-            let _e62 = xi_from_bits(_e61);
-            let _e63 = h;
-            let _e64 = pcg_hash(_e63);
-            h = _e64;
-            let _e65 = sum;
-            let _e67 = s;
-            let _e70 = h;
-            let _e71 = xi_from_bits(_e70);
-            let _e72 = shade_pick(_e45.light[_e67], x_11, n_19, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71);
-            sum = (_e65 + _e72);
+            let _e58 = h;
+            let _e59 = pcg_hash(_e58);
+            h = _e59;
+            let _e60 = h;
+            let _e61 = xi_from_bits(_e60);
+            let _e62 = h;
+            let _e63 = pcg_hash(_e62);
+            h = _e63;
+            let _e64 = sum;
+            let _e66 = s;
+            let _e69 = h;
+            let _e70 = xi_from_bits(_e69);
+            let _e71 = shade_pick(_e44.light[_e66], x_14, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
+            sum = (_e64 + _e71);
         }
         continuing {
-            let _e75 = s;
-            s = (_e75 + 1u);
+            let _e74 = s;
+            s = (_e74 + 1u);
         }
     }
-    let _e78 = sum;
-    let add = (vtx.weight * _e78);
-    let _e80 = finite3_(add);
-    if _e80 {
-        let _e83 = radiance[i_4];
-        radiance[i_4] = (_e83 + vec4<f32>(add, 0f));
+    let _e77 = sum;
+    let add = (vtx.weight * _e77);
+    let _e79 = finite3_(add);
+    if _e79 {
+        let _e82 = radiance[i_4];
+        radiance[i_4] = (_e82 + vec4<f32>(add, 0f));
         return;
     } else {
         return;

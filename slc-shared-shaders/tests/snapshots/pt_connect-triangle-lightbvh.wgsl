@@ -9,6 +9,17 @@ struct GpuLight {
     ies_base: u32,
 }
 
+struct GpuLightCone {
+    center: vec3<f32>,
+    radius: f32,
+    axis: vec3<f32>,
+    cos_o: f32,
+    phi: f32,
+    cos_e: f32,
+    bvh_leaf: u32,
+    pad: u32,
+}
+
 struct GpuGeoNode {
     bmin: vec3<f32>,
     first: u32,
@@ -134,6 +145,8 @@ var<storage> lights: array<GpuLight>;
 var<storage> r2_3: array<f32>;
 @group(0) @binding(3) 
 var<storage> rt2_4: array<f32>;
+@group(1) @binding(2) 
+var<storage> light_cones: array<GpuLightCone>;
 @group(1) @binding(3) 
 var<storage> light_bvh: array<GpuLightBvhNode>;
 @group(0) @binding(0) 
@@ -459,17 +472,31 @@ fn specular_probability(lobe: vec4<f32>) -> f32 {
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1f, 0.9f);
 }
 
-fn receiver_peak(lobe_1: vec4<f32>) -> f32 {
-    let _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return (lobe_1.x + ((lobe_1.y * 0.25f) / ((lobe_1.z * lobe_1.z) * _e10)));
+fn specular_peak_factor(lobe_1: vec4<f32>) -> f32 {
+    let _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5f) / (_e6 + max(lobe_1.w, 0f)));
 }
 
-fn range_scale(lobe_2: vec4<f32>) -> f32 {
-    if (lobe_2.y <= 0f) {
+fn receiver_peak(lobe_2: vec4<f32>) -> f32 {
+    let _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+fn range_scale(lobe_3: vec4<f32>) -> f32 {
+    if (lobe_3.y <= 0f) {
         return 1f;
     }
-    let _e5 = receiver_peak(lobe_2);
+    let _e5 = receiver_peak(lobe_3);
     return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
+fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
+    if (lobe_4.y <= 0f) {
+        return vec4<f32>(1f, 0f, 1f, 1f);
+    }
+    let _e10 = specular_peak_factor(lobe_4);
+    let _e14 = range_scale(lobe_4);
+    return vec4<f32>(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
 fn mirror_dir(n_7: vec3<f32>, v_3: vec3<f32>) -> vec3<f32> {
@@ -575,16 +602,30 @@ fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d: vec3<f
     return _e27;
 }
 
-fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_3: vec3<f32>, n_9: vec3<f32>) -> f32 {
+fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
+    let t_2 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1f, (rl.w * rl.w));
+}
+
+fn range_scale_toward(rl_1: vec4<f32>, center_3: vec3<f32>, radius_3: f32, p_3: vec3<f32>, r: vec3<f32>) -> f32 {
+    if (rl_1.w <= 1f) {
+        return 1f;
+    }
+    let _e9 = cone_cos_toward(center_3, radius_3, p_3, r);
+    let _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3<f32>, cos_o_2: f32, cos_e_1: f32, p_4: vec3<f32>, n_9: vec3<f32>) -> f32 {
     var imp: f32;
 
-    let _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    let _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
     if (_e8.x <= cos_e_1) {
         return 0f;
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_9, n_9) > 0f) {
-        let v_9 = (center_3 - p_3);
+        let v_9 = (center_4 - p_4);
         let dist2_3 = dot(v_9, v_9);
         let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_9);
         let _e33 = imp;
@@ -596,11 +637,11 @@ fn light_importance(center_3: vec3<f32>, radius_3: f32, phi_1: f32, axis_2: vec3
     return max(_e44, 0f);
 }
 
-fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_4: vec3<f32>, n_10: vec3<f32>, r: vec3<f32>, lobe_3: vec4<f32>) -> f32 {
+fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_10: vec3<f32>, r_1: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
     var local_10: bool;
 
-    let _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
-    let _e11 = cone_cos_toward(center_4, radius_4, p_4, n_10);
+    let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
+    let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_10);
     if !((_e10 <= 0f)) {
         local_10 = (_e11 <= 0f);
     } else {
@@ -610,20 +651,20 @@ fn glossy_importance(center_4: vec3<f32>, radius_4: f32, phi_2: f32, axis_3: vec
     if _e20 {
         return 0f;
     }
-    let _e22 = cone_cos_toward(center_4, radius_4, p_4, r);
+    let _e22 = cone_cos_toward(center_5, radius_5, p_5, r_1);
     let _e27 = safe_sqrt((0.5f + (0.5f * _e22)));
-    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_3.z);
-    let _e39 = smith_root(lobe_3.w, lobe_3.z);
-    let spec = (((lobe_3.y * _e33) * 0.25f) / _e39);
-    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
+    let _e33 = ggx_d(_e27, (1f - (_e27 * _e27)), lobe_5.z);
+    let _e39 = smith_root(lobe_5.w, lobe_5.z);
+    let spec = (((lobe_5.y * _e33) * 0.25f) / _e39);
+    return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec));
 }
 
-fn receiver_importance(center_5: vec3<f32>, radius_5: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, p_5: vec3<f32>, n_11: vec3<f32>, r_1: vec3<f32>, lobe_4: vec4<f32>) -> f32 {
-    if (lobe_4.y <= 0f) {
-        let _e13 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_11);
+fn receiver_importance(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, p_6: vec3<f32>, n_11: vec3<f32>, r_2: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
+    if (lobe_6.y <= 0f) {
+        let _e13 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_11);
         return _e13;
     }
-    let _e14 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_11, r_1, lobe_4);
+    let _e14 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_11, r_2, lobe_6);
     return _e14;
 }
 
@@ -694,14 +735,14 @@ fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, 
 
     let e1_ = (b_4 - a_4);
     let e2_ = (c_3 - a_4);
-    let p_6 = cross(d_2, e2_);
-    let det = dot(e1_, p_6);
+    let p_7 = cross(d_2, e2_);
+    let det = dot(e1_, p_7);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv_1 = (1f / det);
     let s_6 = (o_1 - a_4);
-    let u_3 = (dot(s_6, p_6) * inv_1);
+    let u_3 = (dot(s_6, p_7) * inv_1);
     if !((u_3 < 0f)) {
         local_12 = (u_3 > 1f);
     } else {
@@ -722,15 +763,15 @@ fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, 
     if _e42 {
         return -1f;
     }
-    let t_2 = (dot(e2_, q) * inv_1);
-    if (t_2 > t_min) {
-        local_14 = (t_2 < t_max_1);
+    let t_3 = (dot(e2_, q) * inv_1);
+    if (t_3 > t_min) {
+        local_14 = (t_3 < t_max_1);
     } else {
         local_14 = false;
     }
     let _e51 = local_14;
     if _e51 {
-        return t_2;
+        return t_3;
     }
     return -1f;
 }
@@ -820,9 +861,9 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     }
                     {
                         let _e42 = i;
-                        let t_3 = geo_tris[_e42];
+                        let t_4 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_3, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i;
@@ -917,6 +958,12 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     return _e2;
 }
 
+fn light_range_scale(li_1: u32, x_5: vec3<f32>, r_3: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let c_8 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_2, c_8.center, c_8.radius, x_5, r_3);
+    return _e9;
+}
+
 fn light_bvh_node(nodes: u32, i_1: u32) -> GpuLightBvhNode {
     let _e4 = light_bvh[i_1];
     return _e4;
@@ -926,13 +973,13 @@ fn light_bvh_count(nodes_1: u32) -> u32 {
     return arrayLength((&light_bvh));
 }
 
-fn bvh_importance(nodes_2: u32, i_2: u32, x_5: vec3<f32>, n_13: vec3<f32>, r_2: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
+fn bvh_importance(nodes_2: u32, i_2: u32, x_6: vec3<f32>, n_13: vec3<f32>, r_4: vec3<f32>, lobe_7: vec4<f32>) -> f32 {
     let _e6 = light_bvh_node(nodes_2, i_2);
-    let _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_5, n_13, r_2, lobe_5);
+    let _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_6, n_13, r_4, lobe_7);
     return _e13;
 }
 
-fn bvh_first(nodes_3: u32, i_3: u32, x_6: vec3<f32>, n_14: vec3<f32>, r_3: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
+fn bvh_first(nodes_3: u32, i_3: u32, x_7: vec3<f32>, n_14: vec3<f32>, r_5: vec3<f32>, lobe_8: vec4<f32>) -> f32 {
     var local_18: bool;
 
     let _e6 = light_bvh_node(nodes_3, i_3);
@@ -947,8 +994,8 @@ fn bvh_first(nodes_3: u32, i_3: u32, x_6: vec3<f32>, n_14: vec3<f32>, r_3: vec3<
     if _e17 {
         return -1f;
     }
-    let _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_6, n_14, r_3, lobe_6);
-    let _e22 = bvh_importance(nodes_3, j, x_6, n_14, r_3, lobe_6);
+    let _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_7, n_14, r_5, lobe_8);
+    let _e22 = bvh_importance(nodes_3, j, x_7, n_14, r_5, lobe_8);
     let _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -957,7 +1004,7 @@ fn bvh_pick_none() -> BvhPick {
     return BvhPick(0u, 0f);
 }
 
-fn light_bvh_sample(nodes_4: u32, x_7: vec3<f32>, n_15: vec3<f32>, r_4: vec3<f32>, lobe_7: vec4<f32>, u_in: f32) -> BvhPick {
+fn light_bvh_sample(nodes_4: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_6: vec3<f32>, lobe_9: vec4<f32>, u_in: f32) -> BvhPick {
     var pick: BvhPick;
     var u_2: f32;
     var i_4: u32 = 0u;
@@ -980,7 +1027,7 @@ fn light_bvh_sample(nodes_4: u32, x_7: vec3<f32>, n_15: vec3<f32>, r_4: vec3<f32
             if (_e17.second == LIGHT_BVH_LEAF) {
                 let _e21 = i_4;
                 if !((_e21 > 0u)) {
-                    let _e28 = bvh_importance(nodes_4, 0u, x_7, n_15, r_4, lobe_7);
+                    let _e28 = bvh_importance(nodes_4, 0u, x_8, n_15, r_6, lobe_9);
                     local_19 = (_e28 > 0f);
                 } else {
                     local_19 = true;
@@ -995,7 +1042,7 @@ fn light_bvh_sample(nodes_4: u32, x_7: vec3<f32>, n_15: vec3<f32>, r_4: vec3<f32
                 return _e37;
             }
             let _e38 = i_4;
-            let _e39 = bvh_first(nodes_4, _e38, x_7, n_15, r_4, lobe_7);
+            let _e39 = bvh_first(nodes_4, _e38, x_8, n_15, r_6, lobe_9);
             if (_e39 < 0f) {
                 let _e42 = pick;
                 return _e42;
@@ -1015,41 +1062,42 @@ fn light_bvh_sample(nodes_4: u32, x_7: vec3<f32>, n_15: vec3<f32>, r_4: vec3<f32
     return _e57;
 }
 
-fn light_pdf_selected(li_1: u32, x_8: vec3<f32>, lobe_8: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
-    let l_9 = lights[li_1];
-    let v_12 = (x_8 - y_1);
+fn light_pdf_selected(li_2: u32, x_9: vec3<f32>, r_7: vec3<f32>, lobe_10: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
+    let l_9 = lights[li_2];
+    let v_12 = (x_9 - y_1);
     let d2_10 = dot(v_12, v_12);
-    let _e10 = light_normal(l_9);
-    let cos_y_1 = select(0f, dot(_e10, (v_12 / vec3(sqrt(d2_10)))), (d2_10 > 0f));
-    let _e19 = range_scale(lobe_8);
-    let _e22 = rt2_4[li_1];
-    let _e24 = light_area(l_9);
-    let _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_10, _e24, cos_y_1);
-    return _e25;
+    let _e11 = light_normal(l_9);
+    let cos_y_1 = select(0f, dot(_e11, (v_12 / vec3(sqrt(d2_10)))), (d2_10 > 0f));
+    let _e20 = range_lobe(lobe_10);
+    let _e21 = light_range_scale(li_2, x_9, r_7, _e20);
+    let _e24 = rt2_4[li_2];
+    let _e26 = light_area(l_9);
+    let _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_10, _e26, cos_y_1);
+    return _e27;
 }
 
-fn shade_pick(li_2: u32, x_9: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_5: vec3<f32>, lobe_9: vec4<f32>, w_4: f32, nee: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
+fn shade_pick(li_3: u32, x_10: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_8: vec3<f32>, lobe_11: vec4<f32>, rl_3: vec4<f32>, w_4: f32, nee: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e12 = range_scale(lobe_9);
-    let _e15 = params.eps;
-    let _e16 = connect(li_2, x_9, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15);
-    if (_e16.cos_x <= 0f) {
+    let _e13 = light_range_scale(li_3, x_10, r_8, rl_3);
+    let _e16 = params.eps;
+    let _e17 = connect(li_3, x_10, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16);
+    if (_e17.cos_x <= 0f) {
         return vec3(0f);
     }
-    let l_10 = normalize((_e16.y - x_9));
-    let _e29 = lights[li_2];
-    let _e30 = light_area(_e29);
-    if (_e30 > 0f) {
-        let _e36 = light_pdf_selected(li_2, x_9, lobe_9, _e16.y, (1f / w_4));
-        let _e38 = specular_probability(lobe_9);
-        let _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
-        let _e40 = mis_weight(_e36, _e39);
-        mis = _e40;
+    let l_10 = normalize((_e17.y - x_10));
+    let _e30 = lights[li_3];
+    let _e31 = light_area(_e30);
+    if (_e31 > 0f) {
+        let _e37 = light_pdf_selected(li_3, x_10, r_8, lobe_11, _e17.y, (1f / w_4));
+        let _e39 = specular_probability(lobe_11);
+        let _e40 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e39);
+        let _e41 = mis_weight(_e37, _e40);
+        mis = _e41;
     }
-    let _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
-    let _e49 = mis;
-    return ((_e46 * _e16.e) * _e49);
+    let _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
+    let _e50 = mis;
+    return ((_e47 * _e17.e) * _e50);
 }
 
 @compute @workgroup_size(64, 1, 1) 
@@ -1067,49 +1115,48 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         candidates[i_5] = 0u;
         return;
     }
-    let x_10 = vtx.position;
+    let x_11 = vtx.position;
     let n_19 = vtx.normal;
     let ng_3 = vtx.gnormal;
     let m_2 = materials[vtx.material];
     let wo_2 = vtx.wo;
     let _e23 = mirror_dir(n_19, wo_2);
     let _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_19, wo_2));
-    let _e31 = range_scale(_e30);
-    let scale = sqrt(_e31);
-    let _e35 = params.seed;
-    let _e38 = params.frame;
-    let _e39 = point_stream(_e35, i_5, _e38);
-    let _e40 = pick_stream(_e39);
-    h = _e40;
+    let _e31 = range_lobe(_e30);
+    let _e34 = params.seed;
+    let _e37 = params.frame;
+    let _e38 = point_stream(_e34, i_5, _e37);
+    let _e39 = pick_stream(_e38);
+    h = _e39;
     candidates[i_5] = 0u;
-    let _e48 = h;
-    let _e49 = pcg_hash(_e48);
-    h = _e49;
-    let _e50 = h;
-    let _e51 = xi_from_bits(_e50);
-    let _e53 = light_bvh_sample(BVH, x_10, n_19, _e23, _e30, _e51);
-    let li_3 = _e53.light;
-    let pmf_1 = _e53.pmf;
-    let _e56 = h;
-    let _e57 = pcg_hash(_e56);
-    h = _e57;
-    let _e58 = h;
-    let _e59 = xi_from_bits(_e58);
-    let _e60 = h;
-    let _e61 = pcg_hash(_e60);
-    h = _e61;
-    let _e62 = h;
-    let _e63 = xi_from_bits(_e62);
+    let _e47 = h;
+    let _e48 = pcg_hash(_e47);
+    h = _e48;
+    let _e49 = h;
+    let _e50 = xi_from_bits(_e49);
+    let _e52 = light_bvh_sample(BVH, x_11, n_19, _e23, _e30, _e50);
+    let li_4 = _e52.light;
+    let pmf_1 = _e52.pmf;
+    let _e55 = h;
+    let _e56 = pcg_hash(_e55);
+    h = _e56;
+    let _e57 = h;
+    let _e58 = xi_from_bits(_e57);
+    let _e59 = h;
+    let _e60 = pcg_hash(_e59);
+    h = _e60;
+    let _e61 = h;
+    let _e62 = xi_from_bits(_e61);
     if (pmf_1 > 0f) {
-        let _e69 = shade_pick(li_3, x_10, n_19, ng_3, m_2, wo_2, _e23, _e30, (1f / pmf_1), 0u, _e59, _e63);
-        sum = _e69;
+        let _e68 = shade_pick(li_4, x_11, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, (1f / pmf_1), 0u, _e58, _e62);
+        sum = _e68;
     }
-    let _e71 = sum;
-    let add = (vtx.weight * _e71);
-    let _e73 = finite3_(add);
-    if _e73 {
-        let _e76 = radiance[i_5];
-        radiance[i_5] = (_e76 + vec4<f32>(add, 0f));
+    let _e70 = sum;
+    let add = (vtx.weight * _e70);
+    let _e72 = finite3_(add);
+    if _e72 {
+        let _e75 = radiance[i_5];
+        radiance[i_5] = (_e75 + vec4<f32>(add, 0f));
         return;
     } else {
         return;

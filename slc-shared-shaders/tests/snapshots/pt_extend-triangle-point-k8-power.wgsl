@@ -9,6 +9,17 @@ struct GpuLight {
     ies_base: u32,
 }
 
+struct GpuLightCone {
+    center: vec3<f32>,
+    radius: f32,
+    axis: vec3<f32>,
+    cos_o: f32,
+    phi: f32,
+    cos_e: f32,
+    bvh_leaf: u32,
+    pad: u32,
+}
+
 struct GpuGeoNode {
     bmin: vec3<f32>,
     first: u32,
@@ -133,11 +144,14 @@ const TEMPORAL_CHANGE_HIGH: f32 = 8f;
 const TEMPORAL_MIN_WEIGHT: f32 = 0.01f;
 const K: u32 = 8u;
 const BVH: u32 = 0u;
+const BSH: u32 = 0u;
 
 @group(0) @binding(5) 
 var<storage> geo_nodes: array<GpuGeoNode>;
 @group(0) @binding(6) 
 var<storage> geo_tris: array<GpuTriangle>;
+@group(1) @binding(2) 
+var<storage> light_cones: array<GpuLightCone>;
 @group(0) @binding(2) 
 var<storage> rt2_2: array<f32>;
 @group(0) @binding(1) 
@@ -171,6 +185,10 @@ fn mul_lo_u32_(a: u32, b: u32) -> u32 {
 
 fn add_wrap_u32_(a_1: u32, b_1: u32) -> u32 {
     return (a_1 + b_1);
+}
+
+fn f32_from_bits(u_1: u32) -> f32 {
+    return bitcast<f32>(u_1);
 }
 
 fn xi_from_bits(bits: u32) -> f32 {
@@ -226,6 +244,14 @@ fn bsh_scaled_radius(node: BshNode, scale: f32) -> f32 {
         return (node.extent + (scale * (node.radius - node.extent)));
     }
     return (node.radius * scale);
+}
+
+fn bsh_range_bound(node_1: BshNode) -> f32 {
+    if (node_1.child == BSH_NONE) {
+        return (node_1.radius - node_1.extent);
+    }
+    let _e8 = f32_from_bits(node_1.light);
+    return _e8;
 }
 
 fn reservoir_weight(n: u32, k: u32) -> f32 {
@@ -315,9 +341,9 @@ fn onb_to_local(n_4: vec3<f32>, w_1: vec3<f32>) -> vec3<f32> {
 }
 
 fn cosine_direction(n_5: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
-    let r_3 = sqrt(u1_);
+    let r_7 = sqrt(u1_);
     let phi = (6.2831855f * u2_);
-    let _e16 = onb_to_world(n_5, vec3<f32>((r_3 * cos(phi)), (r_3 * sin(phi)), sqrt(max((1f - u1_), 0f))));
+    let _e16 = onb_to_world(n_5, vec3<f32>((r_7 * cos(phi)), (r_7 * sin(phi)), sqrt(max((1f - u1_), 0f))));
     return normalize(_e16);
 }
 
@@ -465,17 +491,31 @@ fn specular_probability(lobe: vec4<f32>) -> f32 {
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1f, 0.9f);
 }
 
-fn receiver_peak(lobe_1: vec4<f32>) -> f32 {
-    let _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return (lobe_1.x + ((lobe_1.y * 0.25f) / ((lobe_1.z * lobe_1.z) * _e10)));
+fn specular_peak_factor(lobe_1: vec4<f32>) -> f32 {
+    let _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5f) / (_e6 + max(lobe_1.w, 0f)));
 }
 
-fn range_scale(lobe_2: vec4<f32>) -> f32 {
-    if (lobe_2.y <= 0f) {
+fn receiver_peak(lobe_2: vec4<f32>) -> f32 {
+    let _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+fn range_scale(lobe_3: vec4<f32>) -> f32 {
+    if (lobe_3.y <= 0f) {
         return 1f;
     }
-    let _e5 = receiver_peak(lobe_2);
+    let _e5 = receiver_peak(lobe_3);
     return clamp(_e5, 1f, RANGE_SCALE_MAX);
+}
+
+fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
+    if (lobe_4.y <= 0f) {
+        return vec4<f32>(1f, 0f, 1f, 1f);
+    }
+    let _e10 = specular_peak_factor(lobe_4);
+    let _e14 = range_scale(lobe_4);
+    return vec4<f32>(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
 fn mirror_dir(n_8: vec3<f32>, v_4: vec3<f32>) -> vec3<f32> {
@@ -547,14 +587,56 @@ fn bsdf_pdf(n_10: vec3<f32>, v_6: vec3<f32>, l_3: vec3<f32>, alpha_10: f32, p_sp
     return ((p_spec_1 * _e11) + ((1f - p_spec_1) * _e6));
 }
 
-fn ray_inverse(x_2: f32) -> f32 {
-    return (1f / select(x_2, 0.000000000000000000000000000001f, (abs(x_2) < 0.000000000000000000000000000001f)));
+fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
+    if (cos_a > cos_b) {
+        return 1f;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
 }
 
-fn ray_inverse3_(d_1: vec3<f32>) -> vec3<f32> {
-    let _e2 = ray_inverse(d_1.x);
-    let _e4 = ray_inverse(d_1.y);
-    let _e6 = ray_inverse(d_1.z);
+fn safe_sqrt(x_2: f32) -> f32 {
+    return sqrt(max(x_2, 0f));
+}
+
+fn subtended_cos(dist2_: f32, r2_: f32) -> f32 {
+    let _e5 = safe_sqrt((1f - (r2_ / dist2_)));
+    return select(_e5, -1f, (dist2_ <= r2_));
+}
+
+fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
+    let v_9 = (center - p);
+    let dist2_1 = dot(v_9, v_9);
+    let w_4 = select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let _e17 = subtended_cos(dist2_1, (radius * radius));
+    let cos_i = dot(w_4, d_1);
+    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
+    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
+    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
+    let t_2 = (((0.5f + (0.5f * cos_t)) * (rl.z - 1f)) + 1f);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1f, (rl.w * rl.w));
+}
+
+fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: vec3<f32>, r_1: vec3<f32>) -> f32 {
+    if (rl_1.w <= 1f) {
+        return 1f;
+    }
+    let _e9 = cone_cos_toward(center_1, radius_1, p_1, r_1);
+    let _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+fn ray_inverse(x_3: f32) -> f32 {
+    return (1f / select(x_3, 0.000000000000000000000000000001f, (abs(x_3) < 0.000000000000000000000000000001f)));
+}
+
+fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d_2.x);
+    let _e4 = ray_inverse(d_2.y);
+    let _e6 = ray_inverse(d_2.z);
     return vec3<f32>(_e2, _e4, _e6);
 }
 
@@ -592,10 +674,10 @@ fn face_against(n_11: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
     return select(n_11, -(n_11), (dot(n_11, dir) > 0f));
 }
 
-fn barycentric(p: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
+fn barycentric(p_2: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
     let e1_ = (b_3 - a_3);
     let e2_ = (c_3 - a_3);
-    let q = (p - a_3);
+    let q = (p_2 - a_3);
     let d11_ = dot(e1_, e1_);
     let d12_ = dot(e1_, e2_);
     let d22_ = dot(e2_, e2_);
@@ -626,23 +708,23 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_2: vec3<f32>
     return select(n_16, -(n_16), (dot(n_16, facing) < 0f));
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
     var local_14: bool;
     var local_15: bool;
     var local_16: bool;
 
     let e1_1 = (b_4 - a_4);
     let e2_1 = (c_4 - a_4);
-    let p_1 = cross(d_2, e2_1);
-    let det = dot(e1_1, p_1);
+    let p_3 = cross(d_3, e2_1);
+    let det = dot(e1_1, p_3);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv_1 = (1f / det);
     let s_5 = (o_1 - a_4);
-    let u_2 = (dot(s_5, p_1) * inv_1);
-    if !((u_2 < 0f)) {
-        local_14 = (u_2 > 1f);
+    let u_3 = (dot(s_5, p_3) * inv_1);
+    if !((u_3 < 0f)) {
+        local_14 = (u_3 > 1f);
     } else {
         local_14 = true;
     }
@@ -651,9 +733,9 @@ fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, 
         return -1f;
     }
     let q_1 = cross(s_5, e1_1);
-    let v_9 = (dot(d_2, q_1) * inv_1);
-    if !((v_9 < 0f)) {
-        local_15 = ((u_2 + v_9) > 1f);
+    let v_10 = (dot(d_3, q_1) * inv_1);
+    if !((v_10 < 0f)) {
+        local_15 = ((u_3 + v_10) > 1f);
     } else {
         local_15 = true;
     }
@@ -661,15 +743,15 @@ fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, 
     if _e42 {
         return -1f;
     }
-    let t_2 = (dot(e2_1, q_1) * inv_1);
-    if (t_2 > t_min) {
-        local_16 = (t_2 < t_max_1);
+    let t_3 = (dot(e2_1, q_1) * inv_1);
+    if (t_3 > t_min) {
+        local_16 = (t_3 < t_max_1);
     } else {
         local_16 = false;
     }
     let _e51 = local_16;
     if _e51 {
-        return t_2;
+        return t_3;
     }
     return -1f;
 }
@@ -680,9 +762,9 @@ fn camera_dir(forward: vec3<f32>, right: vec3<f32>, up: vec3<f32>, px: f32, py: 
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
 
-fn jittered_pixel(coord: u32, u_1: f32) -> f32 {
+fn jittered_pixel(coord: u32, u_2: f32) -> f32 {
     let _e2 = to_f32_(coord);
-    return (_e2 + u_1);
+    return (_e2 + u_2);
 }
 
 fn plays_roulette(depth: u32) -> bool {
@@ -743,11 +825,11 @@ fn light_normal(l_5: GpuLight) -> vec3<f32> {
     return vec3(0f);
 }
 
-fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
+fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
-    var node_1: u32 = 0u;
+    var node_2: u32 = 0u;
     var i: u32;
 
     hit.t = t_max_2;
@@ -756,9 +838,9 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         let _e13 = hit;
         return _e13;
     }
-    let _e14 = ray_inverse3_(d_3);
+    let _e14 = ray_inverse3_(d_4);
     loop {
-        let _e21 = node_1;
+        let _e21 = node_2;
         let n_17 = geo_nodes[_e21];
         let _e27 = hit.t;
         let _e28 = ray_aabb(o_2, _e14, n_17.bmin, n_17.bmax, _e27);
@@ -773,9 +855,9 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     }
                     {
                         let _e42 = i;
-                        let t_3 = geo_tris[_e42];
+                        let t_4 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_3, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i;
@@ -799,7 +881,7 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                     let _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_1 = n_17.first;
+                node_2 = n_17.first;
                 continue;
             }
         }
@@ -811,7 +893,7 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         sp = (_e75 - 1u);
         let _e78 = sp;
         let _e80 = stack[_e78];
-        node_1 = _e80;
+        node_2 = _e80;
     }
     let _e81 = hit;
     return _e81;
@@ -822,28 +904,74 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     return _e2;
 }
 
-fn select_pdf(li: u32, x_3: vec3<f32>, n_13: vec3<f32>, r_1: vec3<f32>, lobe_3: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
+fn light_range_scale(li: u32, x_4: vec3<f32>, r_2: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let c_8 = light_cones[li];
+    let _e9 = range_scale_toward(rl_2, c_8.center, c_8.radius, x_4, r_2);
+    return _e9;
+}
+
+fn select_pdf(li_1: u32, x_5: vec3<f32>, n_13: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
     let _e8 = reservoir_select_pdf(nee, in_range_1, K);
     return _e8;
 }
 
-fn light_pdf_selected(li_1: u32, x_4: vec3<f32>, lobe_4: vec4<f32>, y: vec3<f32>, sel: f32) -> f32 {
-    let l_6 = lights[li_1];
-    let v_10 = (x_4 - y);
-    let d2_3 = dot(v_10, v_10);
-    let _e10 = light_normal(l_6);
-    let cos_y_1 = select(0f, dot(_e10, (v_10 / vec3(sqrt(d2_3)))), (d2_3 > 0f));
-    let _e19 = range_scale(lobe_4);
-    let _e22 = rt2_2[li_1];
-    let _e24 = light_area(l_6);
-    let _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_3, _e24, cos_y_1);
-    return _e25;
+fn light_pdf_selected(li_2: u32, x_6: vec3<f32>, r_4: vec3<f32>, lobe_6: vec4<f32>, y: vec3<f32>, sel: f32) -> f32 {
+    let l_6 = lights[li_2];
+    let v_11 = (x_6 - y);
+    let d2_3 = dot(v_11, v_11);
+    let _e11 = light_normal(l_6);
+    let cos_y_1 = select(0f, dot(_e11, (v_11 / vec3(sqrt(d2_3)))), (d2_3 > 0f));
+    let _e20 = range_lobe(lobe_6);
+    let _e21 = light_range_scale(li_2, x_6, r_4, _e20);
+    let _e24 = rt2_2[li_2];
+    let _e26 = light_area(l_6);
+    let _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_3, _e26, cos_y_1);
+    return _e27;
 }
 
-fn light_pdf(li_2: u32, x_5: vec3<f32>, n_14: vec3<f32>, r_2: vec3<f32>, lobe_5: vec4<f32>, y_1: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
-    let _e8 = select_pdf(li_2, x_5, n_14, r_2, lobe_5, nee_1, in_range_2);
-    let _e9 = light_pdf_selected(li_2, x_5, lobe_5, y_1, _e8);
+fn light_pdf(li_3: u32, x_7: vec3<f32>, n_14: vec3<f32>, r_5: vec3<f32>, lobe_7: vec4<f32>, y_1: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let _e8 = select_pdf(li_3, x_7, n_14, r_5, lobe_7, nee_1, in_range_2);
+    let _e9 = light_pdf_selected(li_3, x_7, r_5, lobe_7, y_1, _e8);
     return _e9;
+}
+
+fn bsh_reaches(node_3: BshNode, x_8: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_20: bool;
+    var local_21: bool;
+
+    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_8);
+    if _e6 {
+        return true;
+    }
+    if !((rl_3.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_8);
+        local_20 = !(_e20);
+    } else {
+        local_20 = true;
+    }
+    let _e23 = local_20;
+    if _e23 {
+        return false;
+    }
+    if (node_3.child == BSH_NONE) {
+        let _e30 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_8, r_6);
+        let _e33 = bsh_scaled_radius(node_3, sqrt(_e30));
+        let _e34 = sphere_contains_point(node_3.center, _e33, x_8);
+        return _e34;
+    }
+    let _e37 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_8, r_6);
+    let s_c = (_e37 * 1.001f);
+    let _e42 = bsh_range_bound(node_3);
+    let reach = (node_3.extent + (sqrt(s_c) * _e42));
+    let v_12 = (x_8 - node_3.center);
+    let d2_4 = dot(v_12, v_12);
+    if (d2_4 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_21 = (d2_4 <= (reach * reach));
+    } else {
+        local_21 = false;
+    }
+    let _e58 = local_21;
+    return _e58;
 }
 
 fn next_uniform(state: ptr<function, u32>) -> f32 {
@@ -926,7 +1054,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let tri = geo_tris[_e94.tri];
     let _e111 = st.origin;
     let _e113 = st.dir;
-    let x_6 = (_e111 + (_e113 * _e94.t));
+    let x_9 = (_e111 + (_e113 * _e94.t));
     let _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     let _e122 = st.dir;
     let _e123 = face_against(_e120, _e122);
@@ -934,7 +1062,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e129 = geo_normals[b_6];
     let _e135 = geo_normals[(b_6 + 1u)];
     let _e141 = geo_normals[(b_6 + 2u)];
-    let _e146 = barycentric(x_6, tri.v0_, tri.v1_, tri.v2_);
+    let _e146 = barycentric(x_9, tri.v0_, tri.v1_, tri.v2_);
     let _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if (tri.light != NO_LIGHT) {
         let _e154 = st.dir;
@@ -949,113 +1077,113 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         if (_e161 > 0f) {
             let _e168 = light_leaf[tri.light];
             let leaf = bsh_nodes[_e168];
-            let _e173 = st.prev_lobe;
-            let _e174 = range_scale(_e173);
-            let _e176 = bsh_scaled_radius(leaf, sqrt(_e174));
-            let _e178 = st.prev;
-            let _e179 = sphere_contains_point(leaf.center, _e176, _e178);
-            let _e181 = st.pdf_bsdf;
-            let _e184 = st.prev;
-            let _e186 = st.prev_normal;
-            let _e188 = st.prev_r;
-            let _e190 = st.prev_lobe;
-            let _e193 = candidates[i_1];
-            let _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_6, _e193, _e179);
-            let _e195 = mis_weight(_e181, _e194);
-            w = _e195;
+            let _e172 = st.prev;
+            let _e174 = st.prev_r;
+            let _e176 = st.prev_lobe;
+            let _e177 = range_lobe(_e176);
+            let _e178 = bsh_reaches(leaf, _e172, _e174, _e177);
+            let _e180 = st.pdf_bsdf;
+            let _e183 = st.prev;
+            let _e185 = st.prev_normal;
+            let _e187 = st.prev_r;
+            let _e189 = st.prev_lobe;
+            let _e192 = candidates[i_1];
+            let _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, x_9, _e192, _e178);
+            let _e194 = mis_weight(_e180, _e193);
+            w = _e194;
         }
-        let _e197 = st.beta;
-        let _e202 = lights[tri.light].intensity;
-        let _e204 = w;
-        let add = ((_e197 * _e202) * _e204);
-        let _e206 = finite3_(add);
-        if _e206 {
-            let _e209 = radiance[i_1];
-            radiance[i_1] = (_e209 + vec4<f32>(add, 0f));
+        let _e196 = st.beta;
+        let _e201 = lights[tri.light].intensity;
+        let _e203 = w;
+        let add = ((_e196 * _e201) * _e203);
+        let _e205 = finite3_(add);
+        if _e205 {
+            let _e208 = radiance[i_1];
+            radiance[i_1] = (_e208 + vec4<f32>(add, 0f));
         }
     }
-    let _e215 = params.depth;
-    let _e218 = params.max_depth;
-    if (_e215 >= _e218) {
+    let _e214 = params.depth;
+    let _e217 = params.max_depth;
+    if (_e214 >= _e217) {
         st.alive = 0u;
-        let _e224 = st;
-        paths[i_1] = _e224;
-        let _e227 = v;
-        vertices[i_1] = _e227;
+        let _e223 = st;
+        paths[i_1] = _e223;
+        let _e226 = v;
+        vertices[i_1] = _e226;
         return;
     }
     let m_2 = materials[tri.material];
-    let _e233 = st.dir;
-    let wo_1 = -(_e233);
-    let _e241 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
-    v.position = x_6;
+    let _e232 = st.dir;
+    let wo_1 = -(_e232);
+    let _e240 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
+    v.position = x_9;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    let _e249 = st.beta;
-    v.weight = _e249;
+    let _e248 = st.beta;
+    v.weight = _e248;
     v.wo = wo_1;
     v.alive = 1u;
-    let _e255 = v;
-    vertices[i_1] = _e255;
-    let _e257 = st.rng;
-    rng = _e257;
+    let _e254 = v;
+    vertices[i_1] = _e254;
+    let _e256 = st.rng;
+    rng = _e256;
+    let _e258 = next_uniform((&rng));
     let _e259 = next_uniform((&rng));
-    let _e260 = next_uniform((&rng));
-    let _e261 = specular_probability(_e241);
-    let _e263 = bsdf_sample(_e147, wo_1, m_2.alpha, _e261, _e259, _e260);
-    let _e265 = bsdf_pdf(_e147, wo_1, _e263, m_2.alpha, _e261);
-    let _e269 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
-    if _e269 {
-        let _e271 = st.beta;
-        let _e277 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e263);
-        st.beta = (_e271 * (_e277 * (dot(_e263, _e147) / _e265)));
+    let _e260 = specular_probability(_e240);
+    let _e262 = bsdf_sample(_e147, wo_1, m_2.alpha, _e260, _e258, _e259);
+    let _e264 = bsdf_pdf(_e147, wo_1, _e262, m_2.alpha, _e260);
+    let _e268 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
+    if _e268 {
+        let _e270 = st.beta;
+        let _e276 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e262);
+        st.beta = (_e270 * (_e276 * (dot(_e262, _e147) / _e264)));
     } else {
-        let _e283 = st.beta;
-        st.beta = (_e283 * m_2.albedo);
+        let _e282 = st.beta;
+        st.beta = (_e282 * m_2.albedo);
     }
-    st.prev = x_6;
+    st.prev = x_9;
     st.prev_normal = _e147;
-    let _e289 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e289;
-    st.prev_lobe = _e241;
-    st.pdf_bsdf = _e265;
-    let _e295 = params.eps;
-    st.origin = (x_6 + (_e123 * _e295));
-    st.dir = _e263;
-    let _e299 = continues_path(_e263, _e147, _e123);
-    if !(!(_e299)) {
-        local_1 = !((_e265 > 0f));
+    let _e288 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e288;
+    st.prev_lobe = _e240;
+    st.pdf_bsdf = _e264;
+    let _e294 = params.eps;
+    st.origin = (x_9 + (_e123 * _e294));
+    st.dir = _e262;
+    let _e298 = continues_path(_e262, _e147, _e123);
+    if !(!(_e298)) {
+        local_1 = !((_e264 > 0f));
     } else {
         local_1 = true;
     }
-    let _e308 = local_1;
-    if _e308 {
+    let _e307 = local_1;
+    if _e307 {
         st.alive = 0u;
     }
-    let _e313 = params.depth;
-    let _e314 = plays_roulette(_e313);
-    if _e314 {
-        let _e318 = st.alive;
-        local_2 = (_e318 == 1u);
+    let _e312 = params.depth;
+    let _e313 = plays_roulette(_e312);
+    if _e313 {
+        let _e317 = st.alive;
+        local_2 = (_e317 == 1u);
     } else {
         local_2 = false;
     }
-    let _e322 = local_2;
-    if _e322 {
-        let _e324 = st.beta;
-        let _e325 = path_survival(_e324);
-        let _e326 = next_uniform((&rng));
-        if (_e326 >= _e325) {
+    let _e321 = local_2;
+    if _e321 {
+        let _e323 = st.beta;
+        let _e324 = path_survival(_e323);
+        let _e325 = next_uniform((&rng));
+        if (_e325 >= _e324) {
             st.alive = 0u;
         } else {
-            let _e331 = st.beta;
-            st.beta = (_e331 / vec3(_e325));
+            let _e330 = st.beta;
+            st.beta = (_e330 / vec3(_e324));
         }
     }
-    let _e335 = rng;
-    st.rng = _e335;
-    let _e338 = st;
-    paths[i_1] = _e338;
+    let _e334 = rng;
+    st.rng = _e334;
+    let _e337 = st;
+    paths[i_1] = _e337;
     return;
 }

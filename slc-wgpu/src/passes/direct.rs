@@ -321,7 +321,7 @@ impl DirectPass {
         let slots = RecordSlots::new(desc.records_per_submission);
         let cull = UniformSlots::new::<CullParams>(gpu, "slc direct cull", slots.len());
         let view = UniformSlots::new::<ViewParams>(gpu, "slc direct view", slots.len());
-        let (ranges_group, lights_group) = groups(gpu, &set, &ranges.1, &shade.1, &cull, selection == Selection::Weighted, desc.light_types.ies);
+        let (ranges_group, lights_group) = groups(gpu, &set, &ranges.1, &shade.1, &cull, binds_cones(desc), desc.light_types.ies);
         let s =
             DirectPass { gpu: gpu.clone(), desc: *desc, set, ranges, ranges_group, shade, lights_group, cull, view, slots, cache: ViewCache::new() };
         gpu.take_errors()?;
@@ -378,9 +378,8 @@ impl DirectPass {
     }
 
     fn remake_groups(&mut self) {
-        let weighted = matches!(self.desc.selection, DirectSelection::Weighted { .. });
         (self.ranges_group, self.lights_group) =
-            groups(&self.gpu, &self.set, &self.ranges.1, &self.shade.1, &self.cull, weighted, self.desc.light_types.ies);
+            groups(&self.gpu, &self.set, &self.ranges.1, &self.shade.1, &self.cull, binds_cones(&self.desc), self.desc.light_types.ies);
     }
 
     /// Checks `inputs` against the descriptor (formats, sizes, usages).
@@ -477,6 +476,13 @@ impl DirectPass {
     }
 }
 
+/// Whether `direct_light` binds the lights' cones: the weighted picks weigh
+/// the lights by them, and a material's lobe scales each light's range by
+/// its bounding sphere.
+fn binds_cones(desc: &DirectPassDesc) -> bool {
+    matches!(desc.selection, DirectSelection::Weighted { .. }) || desc.outputs != DirectOutputs::Irradiance
+}
+
 /// `light_ranges`' group 0 and `direct_light`'s group 1 over `set`.
 fn groups(
     gpu: &GpuContext,
@@ -484,13 +490,13 @@ fn groups(
     ranges: &KernelLayout,
     shade: &KernelLayout,
     cull: &UniformSlots,
-    weighted: bool,
+    cones: bool,
     ies: bool,
 ) -> (wgpu::BindGroup, wgpu::BindGroup) {
     let res = crate::kernel::whole;
     let ranges_group = ranges.group(gpu, 0, &[("params", cull.binding()), ("peaks", res(&set.peaks)), ("rt2", res(&set.rt2)), ("r2", res(&set.r2))]);
     let mut lights = vec![("lights", res(&set.lights)), ("rt2", res(&set.rt2)), ("r2", res(&set.r2)), ("bsh_nodes", res(&set.bsh))];
-    if weighted {
+    if cones {
         lights.push(("light_cones", res(&set.cones)));
     }
     if ies {

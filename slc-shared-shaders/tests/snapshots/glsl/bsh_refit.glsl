@@ -69,6 +69,14 @@ layout(std430) readonly buffer type_4_block_3Compute { float _group_0_binding_3_
 layout(std430) buffer type_8_block_4Compute { BshNode _group_0_binding_4_cs[]; };
 
 
+float f32_from_bits(uint u) {
+    return uintBitsToFloat(u);
+}
+
+uint f32_to_bits(float x) {
+    return floatBitsToUint(x);
+}
+
 float sphere_pad(float r, vec3 c) {
     return (((r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
 }
@@ -117,6 +125,14 @@ float range_radius(float extent, float r2_1) {
     return (extent + sqrt(r2_1));
 }
 
+float bsh_range_bound(BshNode node) {
+    if ((node.child == BSH_NONE)) {
+        return (node.radius - node.extent);
+    }
+    float _e8 = f32_from_bits(node.light);
+    return _e8;
+}
+
 BshNode bsh_node(uint nodes, uint i) {
     BshNode _e4 = _group_0_binding_4_cs[i];
     return _e4;
@@ -130,6 +146,26 @@ vec4 bsh_children_sphere(uint nodes_1, uint i_1) {
     return _e11;
 }
 
+float bsh_children_extent(uint nodes_2, uint i_2, vec3 center) {
+    BshNode _e3 = bsh_node(nodes_2, i_2);
+    BshNode _e5 = bsh_node(nodes_2, _e3.child);
+    BshNode _e7 = bsh_node(nodes_2, _e5.next);
+    vec3 vl = (_e5.center - center);
+    vec3 vr = (_e7.center - center);
+    float a = max((sqrt(dot(vl, vl)) + _e5.extent), (sqrt(dot(vr, vr)) + _e7.extent));
+    float _e21 = sphere_pad(a, center);
+    return (a + _e21);
+}
+
+float bsh_children_range(uint nodes_3, uint i_3) {
+    BshNode _e2 = bsh_node(nodes_3, i_3);
+    BshNode _e4 = bsh_node(nodes_3, _e2.child);
+    BshNode _e6 = bsh_node(nodes_3, _e4.next);
+    float _e7 = bsh_range_bound(_e4);
+    float _e8 = bsh_range_bound(_e6);
+    return max(_e7, _e8);
+}
+
 void main() {
     uvec3 gid = gl_GlobalInvocationID;
     uint _e4 = _group_0_binding_0_cs.count;
@@ -137,19 +173,25 @@ void main() {
         return;
     }
     uint _e9 = _group_0_binding_0_cs.first;
-    uint i_2 = _group_0_binding_1_cs[(_e9 + gid.x)];
-    BshNode node = _group_0_binding_4_cs[i_2];
-    if ((node.child == BSH_NONE)) {
-        vec4 bound = _group_0_binding_2_cs[node.light];
-        _group_0_binding_4_cs[i_2].center = bound.xyz;
-        float _e35 = _group_0_binding_3_cs[node.light];
+    uint i_4 = _group_0_binding_1_cs[(_e9 + gid.x)];
+    BshNode node_1 = _group_0_binding_4_cs[i_4];
+    if ((node_1.child == BSH_NONE)) {
+        vec4 bound = _group_0_binding_2_cs[node_1.light];
+        _group_0_binding_4_cs[i_4].center = bound.xyz;
+        float _e35 = _group_0_binding_3_cs[node_1.light];
         float _e36 = range_radius(bound.w, _e35);
-        _group_0_binding_4_cs[i_2].radius = _e36;
+        _group_0_binding_4_cs[i_4].radius = _e36;
+        _group_0_binding_4_cs[i_4].extent = bound.w;
         return;
     }
-    vec4 _e38 = bsh_children_sphere(BSH, i_2);
-    _group_0_binding_4_cs[i_2].center = _e38.xyz;
-    _group_0_binding_4_cs[i_2].radius = _e38.w;
+    vec4 _e42 = bsh_children_sphere(BSH, i_4);
+    _group_0_binding_4_cs[i_4].center = _e42.xyz;
+    _group_0_binding_4_cs[i_4].radius = _e42.w;
+    float _e56 = bsh_children_extent(BSH, i_4, _e42.xyz);
+    _group_0_binding_4_cs[i_4].extent = _e56;
+    float _e61 = bsh_children_range(BSH, i_4);
+    uint _e62 = f32_to_bits(_e61);
+    _group_0_binding_4_cs[i_4].light = _e62;
     return;
 }
 

@@ -140,6 +140,10 @@ uint add_wrap_u32_(uint a_1, uint b_1) {
     return (a_1 + b_1);
 }
 
+float f32_from_bits(uint u_1) {
+    return uintBitsToFloat(u_1);
+}
+
 float xi_from_bits(uint bits) {
     float _e3 = to_f32_((bits >> 8u));
     return (_e3 * XI_STEP);
@@ -247,8 +251,8 @@ float atan_portable(float x_4) {
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_1 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_1) : r_1);
+    float r_5 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_5) : r_5);
 }
 
 float atan2_portable(float y_1, float x_5) {
@@ -424,6 +428,14 @@ float bsh_scaled_radius(BshNode node, float scale) {
     return (node.radius * scale);
 }
 
+float bsh_range_bound(BshNode node_1) {
+    if ((node_1.child == BSH_NONE)) {
+        return (node_1.radius - node_1.extent);
+    }
+    float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
 uint mul_hi_u32_(uint a_3, uint b_2) {
     uint a_lo = (a_3 & 65535u);
     uint a_hi = (a_3 >> 16u);
@@ -468,18 +480,60 @@ float reservoir_weight(uint n_5, uint k_1) {
     return max((_e2 / _e3), 1.0);
 }
 
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float safe_sqrt(float x_8) {
+    return sqrt(max(x_8, 0.0));
+}
+
+float subtended_cos(float dist2_, float r2_2) {
+    float _e5 = safe_sqrt((1.0 - (r2_2 / dist2_)));
+    return ((dist2_ <= r2_2) ? -1.0 : _e5);
+}
+
+float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d) {
+    vec3 v_2 = (center - p);
+    float dist2_1 = dot(v_2, v_2);
+    vec3 w_4 = ((dist2_1 > 0.0) ? (v_2 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
+    float _e17 = subtended_cos(dist2_1, (radius * radius));
+    float cos_i = dot(w_4, d);
+    float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
+    float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
+    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float range_scale_at(vec4 rl, float cos_t) {
+    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(vec4 rl_1, vec3 center_1, float radius_1, vec3 p_1, vec3 r_1) {
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_1);
+    float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
 float shadow_margin(float len) {
     return (0.0001 * len);
 }
 
-float ray_inverse(float x_8) {
-    return (1.0 / ((abs(x_8) < 1e-30) ? 1e-30 : x_8));
+float ray_inverse(float x_9) {
+    return (1.0 / ((abs(x_9) < 1e-30) ? 1e-30 : x_9));
 }
 
-vec3 ray_inverse3_(vec3 d) {
-    float _e2 = ray_inverse(d.x);
-    float _e4 = ray_inverse(d.y);
-    float _e6 = ray_inverse(d.z);
+vec3 ray_inverse3_(vec3 d_1) {
+    float _e2 = ray_inverse(d_1.x);
+    float _e4 = ray_inverse(d_1.y);
+    float _e6 = ray_inverse(d_1.z);
     return vec3(_e2, _e4, _e6);
 }
 
@@ -496,22 +550,22 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
     return -1.0;
 }
 
-float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_4, vec3 b_3, vec3 c_3, float t_min, float t_max_1) {
+float ray_triangle(vec3 o_1, vec3 d_2, vec3 a_4, vec3 b_3, vec3 c_3, float t_min, float t_max_1) {
     bool local_3 = false;
     bool local_4 = false;
     bool local_5 = false;
     vec3 e1_ = (b_3 - a_4);
     vec3 e2_ = (c_3 - a_4);
-    vec3 p = cross(d_1, e2_);
-    float det = dot(e1_, p);
+    vec3 p_2 = cross(d_2, e2_);
+    float det = dot(e1_, p_2);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
     vec3 s_2 = (o_1 - a_4);
-    float u_1 = (dot(s_2, p) * inv);
-    if (!((u_1 < 0.0))) {
-        local_3 = (u_1 > 1.0);
+    float u_2 = (dot(s_2, p_2) * inv);
+    if (!((u_2 < 0.0))) {
+        local_3 = (u_2 > 1.0);
     } else {
         local_3 = true;
     }
@@ -520,9 +574,9 @@ float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_4, vec3 b_3, vec3 c_3, float t_min
         return -1.0;
     }
     vec3 q = cross(s_2, e1_);
-    float v_2 = (dot(d_1, q) * inv);
-    if (!((v_2 < 0.0))) {
-        local_4 = ((u_1 + v_2) > 1.0);
+    float v_3 = (dot(d_2, q) * inv);
+    if (!((v_3 < 0.0))) {
+        local_4 = ((u_2 + v_3) > 1.0);
     } else {
         local_4 = true;
     }
@@ -530,15 +584,15 @@ float ray_triangle(vec3 o_1, vec3 d_1, vec3 a_4, vec3 b_3, vec3 c_3, float t_min
     if (_e42) {
         return -1.0;
     }
-    float t_2 = (dot(e2_, q) * inv);
-    if ((t_2 > t_min)) {
-        local_5 = (t_2 < t_max_1);
+    float t_3 = (dot(e2_, q) * inv);
+    if ((t_3 > t_min)) {
+        local_5 = (t_3 < t_max_1);
     } else {
         local_5 = false;
     }
     bool _e51 = local_5;
     if (_e51) {
-        return t_2;
+        return t_3;
     }
     return -1.0;
 }
@@ -566,11 +620,11 @@ vec3 light_point(GpuLight l_1, float u1_, float u2_) {
     return l_1.p0_;
 }
 
-GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
+GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
-    uint node_1 = 0u;
+    uint node_2 = 0u;
     uint i_1 = 0u;
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -578,9 +632,9 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
         GeoHit _e13 = hit;
         return _e13;
     }
-    vec3 _e14 = ray_inverse3_(d_2);
+    vec3 _e14 = ray_inverse3_(d_3);
     while(true) {
-        uint _e21 = node_1;
+        uint _e21 = node_2;
         GpuGeoNode n_7 = _group_0_binding_7_cs[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_7.bmin, n_7.bmax, _e27);
@@ -601,9 +655,9 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     {
                         uint _e42 = i_1;
-                        GpuTriangle t_3 = _group_0_binding_8_cs[_e42];
+                        GpuTriangle t_4 = _group_0_binding_8_cs[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_2, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i_1;
@@ -623,7 +677,7 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_1 = n_7.first;
+                node_2 = n_7.first;
                 continue;
             }
         }
@@ -635,7 +689,7 @@ GeoHit trace(vec3 o_2, vec3 d_2, float t_min_1, float t_max_2, bool any_hit) {
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[_e78];
-        node_1 = _e80;
+        node_2 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -669,116 +723,153 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-uint bsh_next_leaf_scaled(uint nodes_3, uint start_1, vec3 x_9, float scale_1) {
+bool bsh_reaches(BshNode node_3, vec3 x_10, vec3 r_2, vec4 rl_2) {
+    bool local_6 = false;
+    bool local_7 = false;
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_10);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_2.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_2.w * 1.0001)), x_10);
+        local_6 = !(_e20);
+    } else {
+        local_6 = true;
+    }
+    bool _e23 = local_6;
+    if (_e23) {
+        return false;
+    }
+    if ((node_3.child == BSH_NONE)) {
+        float _e30 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+        float _e33 = bsh_scaled_radius(node_3, sqrt(_e30));
+        bool _e34 = sphere_contains_point(node_3.center, _e33, x_10);
+        return _e34;
+    }
+    float _e37 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+    float s_c = (_e37 * 1.001);
+    float _e42 = bsh_range_bound(node_3);
+    float reach = (node_3.extent + (sqrt(s_c) * _e42));
+    vec3 v_4 = (x_10 - node_3.center);
+    float d2_5 = dot(v_4, v_4);
+    if ((d2_5 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_7 = (d2_5 <= (reach * reach));
+    } else {
+        local_7 = false;
+    }
+    bool _e58 = local_7;
+    return _e58;
+}
+
+uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_11, vec3 r_3, vec4 rl_3) {
     uint i_3 = 0u;
     i_3 = start_1;
     while(true) {
-        uint _e5 = i_3;
-        if ((_e5 != BSH_NONE)) {
+        uint _e6 = i_3;
+        if ((_e6 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e8 = i_3;
-            BshNode _e9 = bsh_node(nodes_3, _e8);
-            float _e11 = bsh_scaled_radius(_e9, scale_1);
-            bool _e12 = sphere_contains_point(_e9.center, _e11, x_9);
-            if (_e12) {
-                if ((_e9.child == BSH_NONE)) {
-                    uint _e16 = i_3;
-                    return _e16;
+            uint _e9 = i_3;
+            BshNode _e10 = bsh_node(nodes_3, _e9);
+            bool _e11 = bsh_reaches(_e10, x_11, r_3, rl_3);
+            if (_e11) {
+                if ((_e10.child == BSH_NONE)) {
+                    uint _e15 = i_3;
+                    return _e15;
                 }
-                i_3 = _e9.child;
+                i_3 = _e10.child;
             } else {
-                i_3 = _e9.next;
+                i_3 = _e10.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-Picks bsh_collect(vec3 x_10, float scale_2, uint seed_1) {
+Picks bsh_collect(vec3 x_12, vec3 r_4, vec4 rl_4, uint seed_1) {
     Picks picks = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_1 = 0u;
     uint i_4 = 0u;
     picks.n = 0u;
     h_1 = seed_1;
-    uint _e9 = bsh_first(BSH);
-    uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_10, scale_2);
-    i_4 = _e10;
+    uint _e10 = bsh_first(BSH);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_4, rl_4);
+    i_4 = _e11;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e43 = i_4;
-            uint _e46 = _group_0_binding_6_cs[_e43].next;
-            uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_10, scale_2);
-            i_4 = _e47;
+            uint _e44 = i_4;
+            uint _e47 = _group_0_binding_6_cs[_e44].next;
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_4, rl_4);
+            i_4 = _e48;
         }
         loop_init_1 = false;
-        uint _e12 = i_4;
-        if ((_e12 != BSH_NONE)) {
+        uint _e13 = i_4;
+        if ((_e13 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e16 = picks.n;
-            bool _e17 = reservoir_takes(_e16);
-            if (_e17) {
-                uint _e19 = picks.n;
-                picks.n = (_e19 + 1u);
-                uint _e22 = h_1;
-                uint _e23 = pcg_hash(_e22);
-                h_1 = _e23;
+            uint _e17 = picks.n;
+            bool _e18 = reservoir_takes(_e17);
+            if (_e18) {
+                uint _e20 = picks.n;
+                picks.n = (_e20 + 1u);
+                uint _e23 = h_1;
+                uint _e24 = pcg_hash(_e23);
+                h_1 = _e24;
                 uint hi_4 = h_1;
-                uint _e25 = h_1;
-                uint _e26 = pcg_hash(_e25);
-                h_1 = _e26;
-                uint _e28 = picks.n;
-                uint _e30 = h_1;
-                uint _e31 = reservoir_slot(_e28, K, hi_4, _e30);
-                if ((_e31 < K)) {
-                    uint _e37 = i_4;
-                    uint _e40 = _group_0_binding_6_cs[_e37].light;
-                    picks.light[_e31] = _e40;
+                uint _e26 = h_1;
+                uint _e27 = pcg_hash(_e26);
+                h_1 = _e27;
+                uint _e29 = picks.n;
+                uint _e31 = h_1;
+                uint _e32 = reservoir_slot(_e29, K, hi_4, _e31);
+                if ((_e32 < K)) {
+                    uint _e38 = i_4;
+                    uint _e41 = _group_0_binding_6_cs[_e38].light;
+                    picks.light[_e32] = _e41;
                 }
             }
         }
     }
-    Picks _e48 = picks;
-    return _e48;
+    Picks _e49 = picks;
+    return _e49;
 }
 
-Connection connect(uint li, vec3 x_11, vec3 n_6, vec3 ng_1, float s_1, float w_res, float u1_1, float u2_1, float eps) {
+Connection connect(uint li, vec3 x_13, vec3 n_6, vec3 ng_1, float s_1, float w_res, float u1_1, float u2_1, float eps) {
     Connection c_4 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_6 = false;
+    bool local_8 = false;
     c_4.e = vec3(0.0);
     GpuLight l_2 = _group_0_binding_3_cs[li];
     vec3 _e17 = light_point(l_2, u1_1, u2_1);
     c_4.y = _e17;
     vec3 _e20 = c_4.y;
     float _e23 = _group_0_binding_5_cs[li];
-    float _e25 = connection_cosine(x_11, _e20, n_6, ng_1, (s_1 * _e23));
+    float _e25 = connection_cosine(x_13, _e20, n_6, ng_1, (s_1 * _e23));
     c_4.cos_x = _e25;
     float _e27 = c_4.cos_x;
     if (!((_e27 <= 0.0))) {
         vec3 _e36 = c_4.y;
-        bool _e37 = occluded((x_11 + (ng_1 * eps)), _e36);
-        local_6 = _e37;
+        bool _e37 = occluded((x_13 + (ng_1 * eps)), _e36);
+        local_8 = _e37;
     } else {
-        local_6 = true;
+        local_8 = true;
     }
-    bool _e39 = local_6;
+    bool _e39 = local_8;
     if (_e39) {
         Connection _e40 = c_4;
         return _e40;
     }
     vec3 _e42 = c_4.y;
-    vec3 v_3 = (x_11 - _e42);
-    float d2_5 = dot(v_3, v_3);
-    vec3 _e49 = light_intensity(l_2, (v_3 / vec3(sqrt(d2_5))));
+    vec3 v_5 = (x_13 - _e42);
+    float d2_6 = dot(v_5, v_5);
+    vec3 _e49 = light_intensity(l_2, (v_5 / vec3(sqrt(d2_6))));
     float _e51 = c_4.cos_x;
     float _e54 = _group_0_binding_4_cs[li];
-    float _e56 = connection_factor(_e51, d2_5, (s_1 * _e54), w_res);
+    float _e56 = connection_factor(_e51, d2_6, (s_1 * _e54), w_res);
     c_4.e = (_e49 * _e56);
     Connection _e58 = c_4;
     return _e58;
@@ -794,53 +885,53 @@ void main() {
     if ((i_5 >= _e4)) {
         return;
     }
-    vec4 p_1 = _group_0_binding_1_cs[i_5];
-    if ((p_1.w <= 0.0)) {
+    vec4 p_3 = _group_0_binding_1_cs[i_5];
+    if ((p_3.w <= 0.0)) {
         _group_0_binding_9_cs[i_5] = vec4(0.0);
         return;
     }
-    vec3 x_12 = p_1.xyz;
+    vec3 x_14 = p_3.xyz;
     vec4 _e19 = _group_0_binding_2_cs[i_5];
     vec3 n_8 = _e19.xyz;
     uint _e23 = _group_0_binding_0_cs.seed;
     uint _e26 = _group_0_binding_0_cs.frame;
     uint _e27 = point_stream(_e23, i_5, _e26);
-    Picks _e29 = bsh_collect(x_12, 1.0, _e27);
-    float _e32 = reservoir_weight(_e29.n, K);
-    uint _e33 = pick_stream(_e27);
-    h = _e33;
+    Picks _e33 = bsh_collect(x_14, x_14, vec4(1.0, 0.0, 1.0, 1.0), _e27);
+    float _e36 = reservoir_weight(_e33.n, K);
+    uint _e37 = pick_stream(_e27);
+    h = _e37;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e65 = s;
-            s = (_e65 + 1u);
+            uint _e69 = s;
+            s = (_e69 + 1u);
         }
         loop_init_2 = false;
-        uint _e40 = s;
-        if ((_e40 < min(_e29.n, K))) {
+        uint _e44 = s;
+        if ((_e44 < min(_e33.n, K))) {
         } else {
             break;
         }
         {
-            uint _e45 = h;
-            uint _e46 = pcg_hash(_e45);
-            h = _e46;
-            uint _e47 = h;
-            float _e48 = xi_from_bits(_e47);
             uint _e49 = h;
             uint _e50 = pcg_hash(_e49);
             h = _e50;
-            vec3 _e51 = e;
-            uint _e53 = s;
-            uint _e56 = h;
-            float _e57 = xi_from_bits(_e56);
-            float _e60 = _group_0_binding_0_cs.eps;
-            Connection _e61 = connect(_e29.light[_e53], x_12, n_8, n_8, 1.0, _e32, _e48, _e57, _e60);
-            e = (_e51 + _e61.e);
+            uint _e51 = h;
+            float _e52 = xi_from_bits(_e51);
+            uint _e53 = h;
+            uint _e54 = pcg_hash(_e53);
+            h = _e54;
+            vec3 _e55 = e;
+            uint _e57 = s;
+            uint _e60 = h;
+            float _e61 = xi_from_bits(_e60);
+            float _e64 = _group_0_binding_0_cs.eps;
+            Connection _e65 = connect(_e33.light[_e57], x_14, n_8, n_8, 1.0, _e36, _e52, _e61, _e64);
+            e = (_e55 + _e65.e);
         }
     }
-    vec3 _e69 = e;
-    _group_0_binding_9_cs[i_5] = vec4(_e69, float(_e29.n));
+    vec3 _e73 = e;
+    _group_0_binding_9_cs[i_5] = vec4(_e73, float(_e33.n));
     return;
 }
 

@@ -149,6 +149,10 @@ uint add_wrap_u32_(uint a_1, uint b_1) {
     return (a_1 + b_1);
 }
 
+float f32_from_bits(uint u_1) {
+    return uintBitsToFloat(u_1);
+}
+
 float xi_from_bits(uint bits) {
     float _e3 = to_f32_((bits >> 8u));
     return (_e3 * XI_STEP);
@@ -249,8 +253,16 @@ float bsh_scaled_radius(BshNode node, float scale) {
     return (node.radius * scale);
 }
 
-bool weighted_replace(float w_2, float w_sum, float u_1) {
-    return ((u_1 * w_sum) < w_2);
+float bsh_range_bound(BshNode node_1) {
+    if ((node_1.child == BSH_NONE)) {
+        return (node_1.radius - node_1.extent);
+    }
+    float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
+bool weighted_replace(float w_2, float w_sum, float u_2) {
+    return ((u_2 * w_sum) < w_2);
 }
 
 float weighted_pick_weight(float w_sum_1, float w_3, uint k_1) {
@@ -382,17 +394,31 @@ vec4 receiver_lobe(vec3 base_3, float metallic_4, vec3 f0_d_4, float f90_d_4, fl
     return vec4(_e16, _e29, alpha_4, n_v_1);
 }
 
-float receiver_peak(vec4 lobe_1) {
-    float _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+float specular_peak_factor(vec4 lobe_1) {
+    float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5) / (_e6 + max(lobe_1.w, 0.0)));
 }
 
-float range_scale(vec4 lobe_2) {
-    if ((lobe_2.y <= 0.0)) {
+float receiver_peak(vec4 lobe_2) {
+    float _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+float range_scale(vec4 lobe_3) {
+    if ((lobe_3.y <= 0.0)) {
         return 1.0;
     }
-    float _e5 = receiver_peak(lobe_2);
+    float _e5 = receiver_peak(lobe_3);
     return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+vec4 range_lobe(vec4 lobe_4) {
+    if ((lobe_4.y <= 0.0)) {
+        return vec4(1.0, 0.0, 1.0, 1.0);
+    }
+    float _e10 = specular_peak_factor(lobe_4);
+    float _e14 = range_scale(lobe_4);
+    return vec4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
 vec3 mirror_dir(vec3 n_3, vec3 v_2) {
@@ -459,15 +485,29 @@ float cone_cos_toward(vec3 center_2, float radius_2, vec3 p_2, vec3 d) {
     return _e27;
 }
 
-float light_importance(vec3 center_3, float radius_3, float phi_1, vec3 axis_2, float cos_o_2, float cos_e_1, vec3 p_3, vec3 n_4) {
+float range_scale_at(vec4 rl, float cos_t) {
+    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(vec4 rl_1, vec3 center_3, float radius_3, vec3 p_3, vec3 r_2) {
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    float _e9 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float light_importance(vec3 center_4, float radius_4, float phi_1, vec3 axis_2, float cos_o_2, float cos_e_1, vec3 p_4, vec3 n_4) {
     float imp = 0.0;
-    vec4 _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    vec4 _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
     if ((_e8.x <= cos_e_1)) {
         return 0.0;
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_4, n_4) > 0.0)) {
-        vec3 v_7 = (center_3 - p_3);
+        vec3 v_7 = (center_4 - p_4);
         float dist2_3 = dot(v_7, v_7);
         float cos_i_1 = dot(((dist2_3 > 0.0) ? (v_7 / vec3(sqrt(dist2_3))) : vec3(0.0, 0.0, 0.0)), n_4);
         float _e33 = imp;
@@ -479,10 +519,10 @@ float light_importance(vec3 center_3, float radius_3, float phi_1, vec3 axis_2, 
     return max(_e44, 0.0);
 }
 
-float glossy_importance(vec3 center_4, float radius_4, float phi_2, vec3 axis_3, float cos_o_3, float cos_e_2, vec3 p_4, vec3 n_5, vec3 r_2, vec4 lobe_3) {
+float glossy_importance(vec3 center_5, float radius_5, float phi_2, vec3 axis_3, float cos_o_3, float cos_e_2, vec3 p_5, vec3 n_5, vec3 r_3, vec4 lobe_5) {
     bool local_9 = false;
-    float _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
-    float _e11 = cone_cos_toward(center_4, radius_4, p_4, n_5);
+    float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
+    float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_5);
     if (!((_e10 <= 0.0))) {
         local_9 = (_e11 <= 0.0);
     } else {
@@ -492,12 +532,12 @@ float glossy_importance(vec3 center_4, float radius_4, float phi_2, vec3 axis_3,
     if (_e20) {
         return 0.0;
     }
-    float _e22 = cone_cos_toward(center_4, radius_4, p_4, r_2);
+    float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_3);
     float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
-    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
-    float _e39 = smith_root(lobe_3.w, lobe_3.z);
-    float spec = (((lobe_3.y * _e33) * 0.25) / _e39);
-    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
+    float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_5.z);
+    float _e39 = smith_root(lobe_5.w, lobe_5.z);
+    float spec = (((lobe_5.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec));
 }
 
 float candidate_weight(float importance, float rt2_2, float d2_4) {
@@ -505,14 +545,14 @@ float candidate_weight(float importance, float rt2_2, float d2_4) {
     return (importance * _e3);
 }
 
-float cone_weight(vec3 center_5, float radius_5, float phi_3, vec3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, vec3 p_5, vec3 n_6, vec3 r_3, vec4 lobe_4) {
-    vec3 v_8 = (p_5 - center_5);
-    if ((lobe_4.y <= 0.0)) {
-        float _e15 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_6);
+float cone_weight(vec3 center_6, float radius_6, float phi_3, vec3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, vec3 p_6, vec3 n_6, vec3 r_4, vec4 lobe_6) {
+    vec3 v_8 = (p_6 - center_6);
+    if ((lobe_6.y <= 0.0)) {
+        float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6);
         float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_8, v_8));
         return _e19;
     }
-    float _e20 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_6, r_3, lobe_4);
+    float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6, r_4, lobe_6);
     float _e22 = candidate_weight(_e20, rt2_3, dot(v_8, v_8));
     return _e22;
 }
@@ -575,79 +615,122 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-uint bsh_next_leaf_scaled(uint nodes_3, uint start, vec3 x_4, float scale_1) {
+bool bsh_reaches(BshNode node_2, vec3 x_4, vec3 r_5, vec4 rl_2) {
+    bool local_11 = false;
+    bool local_12 = false;
+    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_2.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_2.w * 1.0001)), x_4);
+        local_11 = !(_e20);
+    } else {
+        local_11 = true;
+    }
+    bool _e23 = local_11;
+    if (_e23) {
+        return false;
+    }
+    if ((node_2.child == BSH_NONE)) {
+        float _e30 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+        float _e33 = bsh_scaled_radius(node_2, sqrt(_e30));
+        bool _e34 = sphere_contains_point(node_2.center, _e33, x_4);
+        return _e34;
+    }
+    float _e37 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+    float s_c = (_e37 * 1.001);
+    float _e42 = bsh_range_bound(node_2);
+    float reach = (node_2.extent + (sqrt(s_c) * _e42));
+    vec3 v_9 = (x_4 - node_2.center);
+    float d2_7 = dot(v_9, v_9);
+    if ((d2_7 <= ((node_2.radius * node_2.radius) * s_c))) {
+        local_12 = (d2_7 <= (reach * reach));
+    } else {
+        local_12 = false;
+    }
+    bool _e58 = local_12;
+    return _e58;
+}
+
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_6, vec4 rl_3) {
     uint i_1 = 0u;
     i_1 = start;
     while(true) {
-        uint _e5 = i_1;
-        if ((_e5 != BSH_NONE)) {
+        uint _e6 = i_1;
+        if ((_e6 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e8 = i_1;
-            BshNode _e9 = bsh_node(nodes_3, _e8);
-            float _e11 = bsh_scaled_radius(_e9, scale_1);
-            bool _e12 = sphere_contains_point(_e9.center, _e11, x_4);
-            if (_e12) {
-                if ((_e9.child == BSH_NONE)) {
-                    uint _e16 = i_1;
-                    return _e16;
+            uint _e9 = i_1;
+            BshNode _e10 = bsh_node(nodes_3, _e9);
+            bool _e11 = bsh_reaches(_e10, x_5, r_6, rl_3);
+            if (_e11) {
+                if ((_e10.child == BSH_NONE)) {
+                    uint _e15 = i_1;
+                    return _e15;
                 }
-                i_1 = _e9.child;
+                i_1 = _e10.child;
             } else {
-                i_1 = _e9.next;
+                i_1 = _e10.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-Connection connect(uint li, vec3 x_5, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps) {
+Connection connect(uint li, vec3 x_6, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps) {
     Connection c_4 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_11 = false;
+    bool local_13 = false;
     c_4.e = vec3(0.0);
     GpuLight l_4 = _group_1_binding_1_cs[li];
     vec3 _e17 = light_point(l_4, u1_2, u2_2);
     c_4.y = _e17;
     vec3 _e20 = c_4.y;
     float _e23 = _group_1_binding_3_cs[li];
-    float _e25 = connection_cosine(x_5, _e20, n_7, ng_1, (s * _e23));
+    float _e25 = connection_cosine(x_6, _e20, n_7, ng_1, (s * _e23));
     c_4.cos_x = _e25;
     float _e27 = c_4.cos_x;
     if (!((_e27 <= 0.0))) {
         vec3 _e36 = c_4.y;
-        bool _e37 = occluded((x_5 + (ng_1 * eps)), _e36);
-        local_11 = _e37;
+        bool _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
+        local_13 = _e37;
     } else {
-        local_11 = true;
+        local_13 = true;
     }
-    bool _e39 = local_11;
+    bool _e39 = local_13;
     if (_e39) {
         Connection _e40 = c_4;
         return _e40;
     }
     vec3 _e42 = c_4.y;
-    vec3 v_9 = (x_5 - _e42);
-    float d2_7 = dot(v_9, v_9);
-    vec3 _e49 = light_intensity(l_4, (v_9 / vec3(sqrt(d2_7))));
+    vec3 v_10 = (x_6 - _e42);
+    float d2_8 = dot(v_10, v_10);
+    vec3 _e49 = light_intensity(l_4, (v_10 / vec3(sqrt(d2_8))));
     float _e51 = c_4.cos_x;
     float _e54 = _group_1_binding_2_cs[li];
-    float _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
+    float _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     Connection _e58 = c_4;
     return _e58;
 }
 
-float light_weight(uint li_1, vec3 x_6, vec3 n_8, vec3 r_4, vec4 lobe_5) {
+float light_range_scale(uint li_1, vec3 x_7, vec3 r_7, vec4 rl_4) {
     GpuLightCone c_7 = _group_1_binding_5_cs[li_1];
-    float _e14 = range_scale(lobe_5);
-    float _e17 = _group_1_binding_2_cs[li_1];
-    float _e19 = cone_weight(c_7.center, c_7.radius, c_7.phi, c_7.axis, c_7.cos_o, c_7.cos_e, (_e14 * _e17), x_6, n_8, r_4, lobe_5);
-    return _e19;
+    float _e9 = range_scale_toward(rl_4, c_7.center, c_7.radius, x_7, r_7);
+    return _e9;
 }
 
-WeightedPicks bsh_weighted_collect(vec3 x_7, vec3 n_9, vec3 r_5, vec4 lobe_6, float scale_2, uint h0_) {
+float light_weight(uint li_2, vec3 x_8, vec3 n_8, vec3 r_8, vec4 lobe_7, vec4 rl_5) {
+    GpuLightCone c_8 = _group_1_binding_5_cs[li_2];
+    float _e17 = range_scale_toward(rl_5, c_8.center, c_8.radius, x_8, r_8);
+    float _e20 = _group_1_binding_2_cs[li_2];
+    float _e22 = cone_weight(c_8.center, c_8.radius, c_8.phi, c_8.axis, c_8.cos_o, c_8.cos_e, (_e17 * _e20), x_8, n_8, r_8, lobe_7);
+    return _e22;
+}
+
+WeightedPicks bsh_weighted_collect(vec3 x_9, vec3 n_9, vec3 r_9, vec4 lobe_8, vec4 rl_6, uint h0_) {
     WeightedPicks picks = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
     uint h_1 = 0u;
     uint b_5 = 0u;
@@ -656,14 +739,14 @@ WeightedPicks bsh_weighted_collect(vec3 x_7, vec3 n_9, vec3 r_5, vec4 lobe_6, fl
     picks.n = 0u;
     h_1 = h0_;
     uint _e14 = bsh_first(BSH);
-    uint _e15 = bsh_next_leaf_scaled(BSH, _e14, x_7, scale_2);
+    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_9, rl_6);
     b_5 = _e15;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
             uint _e58 = b_5;
             uint _e61 = _group_1_binding_4_cs[_e58].next;
-            uint _e62 = bsh_next_leaf_scaled(BSH, _e61, x_7, scale_2);
+            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_9, rl_6);
             b_5 = _e62;
         }
         loop_init = false;
@@ -676,8 +759,8 @@ WeightedPicks bsh_weighted_collect(vec3 x_7, vec3 n_9, vec3 r_5, vec4 lobe_6, fl
             uint _e21 = picks.n;
             picks.n = (_e21 + 1u);
             uint _e25 = b_5;
-            uint li_3 = _group_1_binding_4_cs[_e25].light;
-            float _e29 = light_weight(li_3, x_7, n_9, r_5, lobe_6);
+            uint li_4 = _group_1_binding_4_cs[_e25].light;
+            float _e29 = light_weight(li_4, x_9, n_9, r_9, lobe_8, rl_6);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -704,7 +787,7 @@ WeightedPicks bsh_weighted_collect(vec3 x_7, vec3 n_9, vec3 r_5, vec4 lobe_6, fl
                         bool _e46 = weighted_replace(_e29, _e43, _e45);
                         if (_e46) {
                             uint _e48 = s_1;
-                            picks.light[_e48] = li_3;
+                            picks.light[_e48] = li_4;
                             uint _e51 = s_1;
                             picks.w[_e51] = _e29;
                         }
@@ -720,30 +803,31 @@ WeightedPicks bsh_weighted_collect(vec3 x_7, vec3 n_9, vec3 r_5, vec4 lobe_6, fl
 }
 
 vec4 surface_at(ivec2 texel) {
-    vec4 p_6 = texelFetch(_group_0_binding_1_cs, texel, 0);
-    return ((p_6.w > 0.0) ? vec4(p_6.xyz, 1.0) : vec4(0.0));
+    vec4 p_7 = texelFetch(_group_0_binding_1_cs, texel, 0);
+    return ((p_7.w > 0.0) ? vec4(p_7.xyz, 1.0) : vec4(0.0));
 }
 
-Shaded shade_pick(uint li_2, vec3 x_8, vec3 n_10, Material m_1, float s2_, float w_5, float u1_3, float u2_3) {
+Shaded shade_pick(uint li_3, vec3 x_10, vec3 n_10, vec3 r_10, vec4 rl_7, Material m_1, float w_5, float u1_3, float u2_3) {
     Shaded s_2 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    Connection _e10 = connect(li_2, x_8, n_10, n_10, s2_, w_5, u1_3, u2_3, 0.0);
-    s_2.e = _e10.e;
+    float _e10 = light_range_scale(li_3, x_10, r_10, rl_7);
+    Connection _e12 = connect(li_3, x_10, n_10, n_10, _e10, w_5, u1_3, u2_3, 0.0);
+    s_2.e = _e12.e;
     s_2.diffuse = vec3(0.0);
     s_2.specular = vec3(0.0);
-    if ((_e10.cos_x > 0.0)) {
-        vec3 l_5 = normalize((_e10.y - x_8));
-        vec3 _e30 = _group_0_binding_0_cs.f0_d;
-        float _e33 = _group_0_binding_0_cs.f90_d;
-        float _e35 = half_cosine(m_1.v, l_5);
-        vec3 _e36 = diffuse_brdf(m_1.base, m_1.metallic, _e30, _e33, _e35);
-        s_2.diffuse = (_e36 * _e10.e);
-        vec3 _e44 = _group_0_binding_0_cs.f0_d;
-        float _e47 = _group_0_binding_0_cs.f90_d;
-        vec3 _e50 = specular_brdf(m_1.base, m_1.metallic, _e44, _e47, m_1.alpha, n_10, m_1.v, l_5);
-        s_2.specular = (_e50 * _e10.e);
+    if ((_e12.cos_x > 0.0)) {
+        vec3 l_5 = normalize((_e12.y - x_10));
+        vec3 _e32 = _group_0_binding_0_cs.f0_d;
+        float _e35 = _group_0_binding_0_cs.f90_d;
+        float _e37 = half_cosine(m_1.v, l_5);
+        vec3 _e38 = diffuse_brdf(m_1.base, m_1.metallic, _e32, _e35, _e37);
+        s_2.diffuse = (_e38 * _e12.e);
+        vec3 _e46 = _group_0_binding_0_cs.f0_d;
+        float _e49 = _group_0_binding_0_cs.f90_d;
+        vec3 _e52 = specular_brdf(m_1.base, m_1.metallic, _e46, _e49, m_1.alpha, n_10, m_1.v, l_5);
+        s_2.specular = (_e52 * _e12.e);
     }
-    Shaded _e53 = s_2;
-    return _e53;
+    Shaded _e55 = s_2;
+    return _e55;
 }
 
 Shaded add(Shaded a_5, Shaded b_6) {
@@ -787,14 +871,14 @@ void main() {
         imageStore(_group_0_binding_6_cs, texel_1, vec4(0.0));
         return;
     }
-    vec3 x_9 = _e21.xyz;
+    vec3 x_11 = _e21.xyz;
     vec3 n_12 = (nn / vec3(sqrt(len2_1)));
     r = n_12;
     vec4 mr = texelFetch(_group_0_binding_5_cs, texel_1, 0);
     vec4 _e61 = texelFetch(_group_0_binding_4_cs, texel_1, 0);
     float _e67 = ggx_alpha(clamp(mr.y, 0.0, 1.0));
     vec3 _e70 = _group_0_binding_0_cs.eye;
-    m = Material(_e61.xyz, clamp(mr.z, 0.0, 1.0), _e67, normalize((_e70 - x_9)), mr.y, 0.0);
+    m = Material(_e61.xyz, clamp(mr.z, 0.0, 1.0), _e67, normalize((_e70 - x_11)), mr.y, 0.0);
     vec3 _e77 = m.base;
     float _e79 = m.metallic;
     vec3 _e82 = _group_0_binding_0_cs.f0_d;
@@ -807,18 +891,17 @@ void main() {
     vec3 _e94 = mirror_dir(n_12, _e93);
     r = _e94;
     vec4 _e95 = lobe;
-    float _e96 = range_scale(_e95);
-    float scale_3 = sqrt(_e96);
-    uint _e100 = _group_0_binding_0_cs.seed;
-    uint _e104 = _group_0_binding_0_cs.width;
-    uint _e110 = _group_0_binding_0_cs.frame;
-    uint _e111 = point_stream(_e100, ((gid.y * _e104) + gid.x), _e110);
-    uint _e112 = pick_stream(_e111);
-    h = _e112;
-    vec3 _e122 = r;
-    vec4 _e123 = lobe;
-    WeightedPicks _e124 = bsh_weighted_collect(x_9, n_12, _e122, _e123, scale_3, _e111);
-    if ((_e124.w_sum > 0.0)) {
+    vec4 _e96 = range_lobe(_e95);
+    uint _e99 = _group_0_binding_0_cs.seed;
+    uint _e103 = _group_0_binding_0_cs.width;
+    uint _e109 = _group_0_binding_0_cs.frame;
+    uint _e110 = point_stream(_e99, ((gid.y * _e103) + gid.x), _e109);
+    uint _e111 = pick_stream(_e110);
+    h = _e111;
+    vec3 _e121 = r;
+    vec4 _e122 = lobe;
+    WeightedPicks _e123 = bsh_weighted_collect(x_11, n_12, _e121, _e122, _e96, _e110);
+    if ((_e123.w_sum > 0.0)) {
         bool loop_init_2 = true;
         while(true) {
             if (!loop_init_2) {
@@ -826,34 +909,35 @@ void main() {
                 k = (_e155 + 1u);
             }
             loop_init_2 = false;
-            uint _e130 = k;
-            if ((_e130 < K)) {
+            uint _e129 = k;
+            if ((_e129 < K)) {
             } else {
                 break;
             }
             {
-                uint _e133 = h;
-                uint _e134 = pcg_hash(_e133);
-                h = _e134;
-                uint _e135 = h;
-                float _e136 = xi_from_bits(_e135);
-                uint _e137 = h;
-                uint _e138 = pcg_hash(_e137);
-                h = _e138;
-                Shaded _e139 = t;
-                uint _e141 = k;
+                uint _e132 = h;
+                uint _e133 = pcg_hash(_e132);
+                h = _e133;
+                uint _e134 = h;
+                float _e135 = xi_from_bits(_e134);
+                uint _e136 = h;
+                uint _e137 = pcg_hash(_e136);
+                h = _e137;
+                Shaded _e138 = t;
+                uint _e140 = k;
+                vec3 _e142 = r;
                 Material _e143 = m;
                 uint _e146 = k;
-                float _e149 = weighted_pick_weight(_e124.w_sum, _e124.w[_e146], K);
+                float _e149 = weighted_pick_weight(_e123.w_sum, _e123.w[_e146], K);
                 uint _e150 = h;
                 float _e151 = xi_from_bits(_e150);
-                Shaded _e152 = shade_pick(_e124.light[_e141], x_9, n_12, _e143, _e96, _e149, _e136, _e151);
-                Shaded _e153 = add(_e139, _e152);
+                Shaded _e152 = shade_pick(_e123.light[_e140], x_11, n_12, _e142, _e96, _e143, _e149, _e135, _e151);
+                Shaded _e153 = add(_e138, _e152);
                 t = _e153;
             }
         }
     }
-    uint count = _e124.n;
+    uint count = _e123.n;
     vec3 _e160 = t.e;
     imageStore(_group_0_binding_3_cs, texel_1, vec4(_e160, float(count)));
     vec3 _e165 = t.specular;

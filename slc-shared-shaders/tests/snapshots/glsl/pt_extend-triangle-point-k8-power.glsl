@@ -13,6 +13,16 @@ struct GpuLight {
     vec3 intensity;
     uint ies_base;
 };
+struct GpuLightCone {
+    vec3 center;
+    float radius;
+    vec3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
 struct GpuGeoNode {
     vec3 bmin;
     uint first;
@@ -129,32 +139,35 @@ const float TEMPORAL_CHANGE_HIGH = 8.0;
 const float TEMPORAL_MIN_WEIGHT = 0.01;
 const uint K = 8u;
 const uint BVH = 0u;
+const uint BSH = 0u;
 
 layout(std430) readonly buffer type_6_block_0Compute { GpuGeoNode _group_0_binding_5_cs[]; };
 
 layout(std430) readonly buffer type_7_block_1Compute { GpuTriangle _group_0_binding_6_cs[]; };
 
-layout(std430) readonly buffer type_4_block_2Compute { float _group_0_binding_2_cs[]; };
+layout(std430) readonly buffer type_9_block_2Compute { GpuLightCone _group_1_binding_2_cs[]; };
 
-layout(std430) readonly buffer type_9_block_3Compute { GpuLight _group_0_binding_1_cs[]; };
+layout(std430) readonly buffer type_4_block_3Compute { float _group_0_binding_2_cs[]; };
 
-layout(std140) uniform PtParams_block_4Compute { PtParams _group_0_binding_0_cs; };
+layout(std430) readonly buffer type_10_block_4Compute { GpuLight _group_0_binding_1_cs[]; };
 
-layout(std430) readonly buffer type_10_block_5Compute { BshNode _group_0_binding_3_cs[]; };
+layout(std140) uniform PtParams_block_5Compute { PtParams _group_0_binding_0_cs; };
 
-layout(std430) readonly buffer type_11_block_6Compute { uint _group_0_binding_4_cs[]; };
+layout(std430) readonly buffer type_11_block_6Compute { BshNode _group_0_binding_3_cs[]; };
 
-layout(std430) readonly buffer type_12_block_7Compute { GpuMaterial _group_0_binding_7_cs[]; };
+layout(std430) readonly buffer type_12_block_7Compute { uint _group_0_binding_4_cs[]; };
 
-layout(std430) readonly buffer type_13_block_8Compute { vec4 _group_0_binding_8_cs[]; };
+layout(std430) readonly buffer type_13_block_8Compute { GpuMaterial _group_0_binding_7_cs[]; };
 
-layout(std430) readonly buffer type_11_block_9Compute { uint _group_0_binding_9_cs[]; };
+layout(std430) readonly buffer type_14_block_9Compute { vec4 _group_0_binding_8_cs[]; };
 
-layout(std430) buffer type_14_block_10Compute { GpuPathState _group_0_binding_10_cs[]; };
+layout(std430) readonly buffer type_12_block_10Compute { uint _group_0_binding_9_cs[]; };
 
-layout(std430) buffer type_15_block_11Compute { GpuPathVertex _group_0_binding_11_cs[]; };
+layout(std430) buffer type_15_block_11Compute { GpuPathState _group_0_binding_10_cs[]; };
 
-layout(std430) buffer type_13_block_12Compute { vec4 _group_0_binding_12_cs[]; };
+layout(std430) buffer type_16_block_12Compute { GpuPathVertex _group_0_binding_11_cs[]; };
+
+layout(std430) buffer type_14_block_13Compute { vec4 _group_0_binding_12_cs[]; };
 
 
 float to_f32_(uint u) {
@@ -167,6 +180,10 @@ uint mul_lo_u32_(uint a, uint b) {
 
 uint add_wrap_u32_(uint a_1, uint b_1) {
     return (a_1 + b_1);
+}
+
+float f32_from_bits(uint u_1) {
+    return uintBitsToFloat(u_1);
 }
 
 float xi_from_bits(uint bits) {
@@ -222,6 +239,14 @@ float bsh_scaled_radius(BshNode node, float scale) {
         return (node.extent + (scale * (node.radius - node.extent)));
     }
     return (node.radius * scale);
+}
+
+float bsh_range_bound(BshNode node_1) {
+    if ((node_1.child == BSH_NONE)) {
+        return (node_1.radius - node_1.extent);
+    }
+    float _e8 = f32_from_bits(node_1.light);
+    return _e8;
 }
 
 float reservoir_weight(uint n, uint k) {
@@ -309,9 +334,9 @@ vec3 onb_to_local(vec3 n_4, vec3 w_1) {
 }
 
 vec3 cosine_direction(vec3 n_5, float u1_, float u2_) {
-    float r_3 = sqrt(u1_);
+    float r_7 = sqrt(u1_);
     float phi = (6.2831855 * u2_);
-    vec3 _e16 = onb_to_world(n_5, vec3((r_3 * cos(phi)), (r_3 * sin(phi)), sqrt(max((1.0 - u1_), 0.0))));
+    vec3 _e16 = onb_to_world(n_5, vec3((r_7 * cos(phi)), (r_7 * sin(phi)), sqrt(max((1.0 - u1_), 0.0))));
     return normalize(_e16);
 }
 
@@ -455,17 +480,31 @@ float specular_probability(vec4 lobe) {
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
-float receiver_peak(vec4 lobe_1) {
-    float _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+float specular_peak_factor(vec4 lobe_1) {
+    float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5) / (_e6 + max(lobe_1.w, 0.0)));
 }
 
-float range_scale(vec4 lobe_2) {
-    if ((lobe_2.y <= 0.0)) {
+float receiver_peak(vec4 lobe_2) {
+    float _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+float range_scale(vec4 lobe_3) {
+    if ((lobe_3.y <= 0.0)) {
         return 1.0;
     }
-    float _e5 = receiver_peak(lobe_2);
+    float _e5 = receiver_peak(lobe_3);
     return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+vec4 range_lobe(vec4 lobe_4) {
+    if ((lobe_4.y <= 0.0)) {
+        return vec4(1.0, 0.0, 1.0, 1.0);
+    }
+    float _e10 = specular_peak_factor(lobe_4);
+    float _e14 = range_scale(lobe_4);
+    return vec4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
 vec3 mirror_dir(vec3 n_8, vec3 v_4) {
@@ -536,14 +575,56 @@ float bsdf_pdf(vec3 n_10, vec3 v_6, vec3 l_3, float alpha_10, float p_spec_1) {
     return ((p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6));
 }
 
-float ray_inverse(float x_2) {
-    return (1.0 / ((abs(x_2) < 1e-30) ? 1e-30 : x_2));
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
 }
 
-vec3 ray_inverse3_(vec3 d_1) {
-    float _e2 = ray_inverse(d_1.x);
-    float _e4 = ray_inverse(d_1.y);
-    float _e6 = ray_inverse(d_1.z);
+float safe_sqrt(float x_2) {
+    return sqrt(max(x_2, 0.0));
+}
+
+float subtended_cos(float dist2_, float r2_) {
+    float _e5 = safe_sqrt((1.0 - (r2_ / dist2_)));
+    return ((dist2_ <= r2_) ? -1.0 : _e5);
+}
+
+float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
+    vec3 v_9 = (center - p);
+    float dist2_1 = dot(v_9, v_9);
+    vec3 w_4 = ((dist2_1 > 0.0) ? (v_9 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
+    float _e17 = subtended_cos(dist2_1, (radius * radius));
+    float cos_i = dot(w_4, d_1);
+    float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
+    float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
+    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float range_scale_at(vec4 rl, float cos_t) {
+    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(vec4 rl_1, vec3 center_1, float radius_1, vec3 p_1, vec3 r_1) {
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_1);
+    float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float ray_inverse(float x_3) {
+    return (1.0 / ((abs(x_3) < 1e-30) ? 1e-30 : x_3));
+}
+
+vec3 ray_inverse3_(vec3 d_2) {
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
     return vec3(_e2, _e4, _e6);
 }
 
@@ -580,10 +661,10 @@ vec3 face_against(vec3 n_11, vec3 dir) {
     return ((dot(n_11, dir) > 0.0) ? -(n_11) : n_11);
 }
 
-vec3 barycentric(vec3 p, vec3 a_3, vec3 b_3, vec3 c_3) {
+vec3 barycentric(vec3 p_2, vec3 a_3, vec3 b_3, vec3 c_3) {
     vec3 e1_ = (b_3 - a_3);
     vec3 e2_ = (c_3 - a_3);
-    vec3 q = (p - a_3);
+    vec3 q = (p_2 - a_3);
     float d11_ = dot(e1_, e1_);
     float d12_ = dot(e1_, e2_);
     float d22_ = dot(e2_, e2_);
@@ -613,22 +694,22 @@ vec3 shading_normal(vec3 n0_, vec3 n1_, vec3 n2_, vec3 w_2, vec3 facing) {
     return ((dot(n_16, facing) < 0.0) ? -(n_16) : n_16);
 }
 
-float ray_triangle(vec3 o_1, vec3 d_2, vec3 a_4, vec3 b_4, vec3 c_4, float t_min, float t_max_1) {
+float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_4, vec3 b_4, vec3 c_4, float t_min, float t_max_1) {
     bool local_14 = false;
     bool local_15 = false;
     bool local_16 = false;
     vec3 e1_1 = (b_4 - a_4);
     vec3 e2_1 = (c_4 - a_4);
-    vec3 p_1 = cross(d_2, e2_1);
-    float det = dot(e1_1, p_1);
+    vec3 p_3 = cross(d_3, e2_1);
+    float det = dot(e1_1, p_3);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
     vec3 s_5 = (o_1 - a_4);
-    float u_2 = (dot(s_5, p_1) * inv_1);
-    if (!((u_2 < 0.0))) {
-        local_14 = (u_2 > 1.0);
+    float u_3 = (dot(s_5, p_3) * inv_1);
+    if (!((u_3 < 0.0))) {
+        local_14 = (u_3 > 1.0);
     } else {
         local_14 = true;
     }
@@ -637,9 +718,9 @@ float ray_triangle(vec3 o_1, vec3 d_2, vec3 a_4, vec3 b_4, vec3 c_4, float t_min
         return -1.0;
     }
     vec3 q_1 = cross(s_5, e1_1);
-    float v_9 = (dot(d_2, q_1) * inv_1);
-    if (!((v_9 < 0.0))) {
-        local_15 = ((u_2 + v_9) > 1.0);
+    float v_10 = (dot(d_3, q_1) * inv_1);
+    if (!((v_10 < 0.0))) {
+        local_15 = ((u_3 + v_10) > 1.0);
     } else {
         local_15 = true;
     }
@@ -647,15 +728,15 @@ float ray_triangle(vec3 o_1, vec3 d_2, vec3 a_4, vec3 b_4, vec3 c_4, float t_min
     if (_e42) {
         return -1.0;
     }
-    float t_2 = (dot(e2_1, q_1) * inv_1);
-    if ((t_2 > t_min)) {
-        local_16 = (t_2 < t_max_1);
+    float t_3 = (dot(e2_1, q_1) * inv_1);
+    if ((t_3 > t_min)) {
+        local_16 = (t_3 < t_max_1);
     } else {
         local_16 = false;
     }
     bool _e51 = local_16;
     if (_e51) {
-        return t_2;
+        return t_3;
     }
     return -1.0;
 }
@@ -666,9 +747,9 @@ vec3 camera_dir(vec3 forward, vec3 right, vec3 up, float px, float py, float w_3
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
 
-float jittered_pixel(uint coord, float u_1) {
+float jittered_pixel(uint coord, float u_2) {
     float _e2 = to_f32_(coord);
-    return (_e2 + u_1);
+    return (_e2 + u_2);
 }
 
 bool plays_roulette(uint depth) {
@@ -727,11 +808,11 @@ vec3 light_normal(GpuLight l_5) {
     return vec3(0.0);
 }
 
-GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
+GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
-    uint node_1 = 0u;
+    uint node_2 = 0u;
     uint i = 0u;
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -739,9 +820,9 @@ GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
         GeoHit _e13 = hit;
         return _e13;
     }
-    vec3 _e14 = ray_inverse3_(d_3);
+    vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
-        uint _e21 = node_1;
+        uint _e21 = node_2;
         GpuGeoNode n_17 = _group_0_binding_5_cs[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_17.bmin, n_17.bmax, _e27);
@@ -762,9 +843,9 @@ GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_3 = _group_0_binding_6_cs[_e42];
+                        GpuTriangle t_4 = _group_0_binding_6_cs[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_3, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -784,7 +865,7 @@ GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_1 = n_17.first;
+                node_2 = n_17.first;
                 continue;
             }
         }
@@ -796,7 +877,7 @@ GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[_e78];
-        node_1 = _e80;
+        node_2 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -807,28 +888,73 @@ float mis_weight(float pdf_a_1, float pdf_b_1) {
     return _e2;
 }
 
-float select_pdf(uint li, vec3 x_3, vec3 n_13, vec3 r_1, vec4 lobe_3, uint nee, bool in_range_1) {
+float light_range_scale(uint li, vec3 x_4, vec3 r_2, vec4 rl_2) {
+    GpuLightCone c_8 = _group_1_binding_2_cs[li];
+    float _e9 = range_scale_toward(rl_2, c_8.center, c_8.radius, x_4, r_2);
+    return _e9;
+}
+
+float select_pdf(uint li_1, vec3 x_5, vec3 n_13, vec3 r_3, vec4 lobe_5, uint nee, bool in_range_1) {
     float _e8 = reservoir_select_pdf(nee, in_range_1, K);
     return _e8;
 }
 
-float light_pdf_selected(uint li_1, vec3 x_4, vec4 lobe_4, vec3 y, float sel) {
-    GpuLight l_6 = _group_0_binding_1_cs[li_1];
-    vec3 v_10 = (x_4 - y);
-    float d2_3 = dot(v_10, v_10);
-    vec3 _e10 = light_normal(l_6);
-    float cos_y_1 = ((d2_3 > 0.0) ? dot(_e10, (v_10 / vec3(sqrt(d2_3)))) : 0.0);
-    float _e19 = range_scale(lobe_4);
-    float _e22 = _group_0_binding_2_cs[li_1];
-    float _e24 = light_area(l_6);
-    float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_3, _e24, cos_y_1);
-    return _e25;
+float light_pdf_selected(uint li_2, vec3 x_6, vec3 r_4, vec4 lobe_6, vec3 y, float sel) {
+    GpuLight l_6 = _group_0_binding_1_cs[li_2];
+    vec3 v_11 = (x_6 - y);
+    float d2_3 = dot(v_11, v_11);
+    vec3 _e11 = light_normal(l_6);
+    float cos_y_1 = ((d2_3 > 0.0) ? dot(_e11, (v_11 / vec3(sqrt(d2_3)))) : 0.0);
+    vec4 _e20 = range_lobe(lobe_6);
+    float _e21 = light_range_scale(li_2, x_6, r_4, _e20);
+    float _e24 = _group_0_binding_2_cs[li_2];
+    float _e26 = light_area(l_6);
+    float _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_3, _e26, cos_y_1);
+    return _e27;
 }
 
-float light_pdf(uint li_2, vec3 x_5, vec3 n_14, vec3 r_2, vec4 lobe_5, vec3 y_1, uint nee_1, bool in_range_2) {
-    float _e8 = select_pdf(li_2, x_5, n_14, r_2, lobe_5, nee_1, in_range_2);
-    float _e9 = light_pdf_selected(li_2, x_5, lobe_5, y_1, _e8);
+float light_pdf(uint li_3, vec3 x_7, vec3 n_14, vec3 r_5, vec4 lobe_7, vec3 y_1, uint nee_1, bool in_range_2) {
+    float _e8 = select_pdf(li_3, x_7, n_14, r_5, lobe_7, nee_1, in_range_2);
+    float _e9 = light_pdf_selected(li_3, x_7, r_5, lobe_7, y_1, _e8);
     return _e9;
+}
+
+bool bsh_reaches(BshNode node_3, vec3 x_8, vec3 r_6, vec4 rl_3) {
+    bool local_20 = false;
+    bool local_21 = false;
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_8);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_8);
+        local_20 = !(_e20);
+    } else {
+        local_20 = true;
+    }
+    bool _e23 = local_20;
+    if (_e23) {
+        return false;
+    }
+    if ((node_3.child == BSH_NONE)) {
+        float _e30 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_8, r_6);
+        float _e33 = bsh_scaled_radius(node_3, sqrt(_e30));
+        bool _e34 = sphere_contains_point(node_3.center, _e33, x_8);
+        return _e34;
+    }
+    float _e37 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_8, r_6);
+    float s_c = (_e37 * 1.001);
+    float _e42 = bsh_range_bound(node_3);
+    float reach = (node_3.extent + (sqrt(s_c) * _e42));
+    vec3 v_12 = (x_8 - node_3.center);
+    float d2_4 = dot(v_12, v_12);
+    if ((d2_4 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_21 = (d2_4 <= (reach * reach));
+    } else {
+        local_21 = false;
+    }
+    bool _e58 = local_21;
+    return _e58;
 }
 
 float next_uniform(inout uint state) {
@@ -910,7 +1036,7 @@ void main() {
     GpuTriangle tri = _group_0_binding_6_cs[_e94.tri];
     vec3 _e111 = st.origin;
     vec3 _e113 = st.dir;
-    vec3 x_6 = (_e111 + (_e113 * _e94.t));
+    vec3 x_9 = (_e111 + (_e113 * _e94.t));
     vec3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     vec3 _e122 = st.dir;
     vec3 _e123 = face_against(_e120, _e122);
@@ -918,7 +1044,7 @@ void main() {
     vec4 _e129 = _group_0_binding_8_cs[b_6];
     vec4 _e135 = _group_0_binding_8_cs[(b_6 + 1u)];
     vec4 _e141 = _group_0_binding_8_cs[(b_6 + 2u)];
-    vec3 _e146 = barycentric(x_6, tri.v0_, tri.v1_, tri.v2_);
+    vec3 _e146 = barycentric(x_9, tri.v0_, tri.v1_, tri.v2_);
     vec3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if ((tri.light != NO_LIGHT)) {
         vec3 _e154 = st.dir;
@@ -933,114 +1059,114 @@ void main() {
         if ((_e161 > 0.0)) {
             uint _e168 = _group_0_binding_4_cs[tri.light];
             BshNode leaf = _group_0_binding_3_cs[_e168];
-            vec4 _e173 = st.prev_lobe;
-            float _e174 = range_scale(_e173);
-            float _e176 = bsh_scaled_radius(leaf, sqrt(_e174));
-            vec3 _e178 = st.prev;
-            bool _e179 = sphere_contains_point(leaf.center, _e176, _e178);
-            float _e181 = st.pdf_bsdf;
-            vec3 _e184 = st.prev;
-            vec3 _e186 = st.prev_normal;
-            vec3 _e188 = st.prev_r;
-            vec4 _e190 = st.prev_lobe;
-            uint _e193 = _group_0_binding_9_cs[i_1];
-            float _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_6, _e193, _e179);
-            float _e195 = mis_weight(_e181, _e194);
-            w = _e195;
+            vec3 _e172 = st.prev;
+            vec3 _e174 = st.prev_r;
+            vec4 _e176 = st.prev_lobe;
+            vec4 _e177 = range_lobe(_e176);
+            bool _e178 = bsh_reaches(leaf, _e172, _e174, _e177);
+            float _e180 = st.pdf_bsdf;
+            vec3 _e183 = st.prev;
+            vec3 _e185 = st.prev_normal;
+            vec3 _e187 = st.prev_r;
+            vec4 _e189 = st.prev_lobe;
+            uint _e192 = _group_0_binding_9_cs[i_1];
+            float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, x_9, _e192, _e178);
+            float _e194 = mis_weight(_e180, _e193);
+            w = _e194;
         }
-        vec3 _e197 = st.beta;
-        vec3 _e202 = _group_0_binding_1_cs[tri.light].intensity;
-        float _e204 = w;
-        vec3 add = ((_e197 * _e202) * _e204);
-        bool _e206 = finite3_(add);
-        if (_e206) {
-            vec4 _e209 = _group_0_binding_12_cs[i_1];
-            _group_0_binding_12_cs[i_1] = (_e209 + vec4(add, 0.0));
+        vec3 _e196 = st.beta;
+        vec3 _e201 = _group_0_binding_1_cs[tri.light].intensity;
+        float _e203 = w;
+        vec3 add = ((_e196 * _e201) * _e203);
+        bool _e205 = finite3_(add);
+        if (_e205) {
+            vec4 _e208 = _group_0_binding_12_cs[i_1];
+            _group_0_binding_12_cs[i_1] = (_e208 + vec4(add, 0.0));
         }
     }
-    uint _e215 = _group_0_binding_0_cs.depth;
-    uint _e218 = _group_0_binding_0_cs.max_depth;
-    if ((_e215 >= _e218)) {
+    uint _e214 = _group_0_binding_0_cs.depth;
+    uint _e217 = _group_0_binding_0_cs.max_depth;
+    if ((_e214 >= _e217)) {
         st.alive = 0u;
-        GpuPathState _e224 = st;
-        _group_0_binding_10_cs[i_1] = _e224;
-        GpuPathVertex _e227 = v;
-        _group_0_binding_11_cs[i_1] = _e227;
+        GpuPathState _e223 = st;
+        _group_0_binding_10_cs[i_1] = _e223;
+        GpuPathVertex _e226 = v;
+        _group_0_binding_11_cs[i_1] = _e226;
         return;
     }
     GpuMaterial m_2 = _group_0_binding_7_cs[tri.material];
-    vec3 _e233 = st.dir;
-    vec3 wo_1 = -(_e233);
-    vec4 _e241 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
-    v.position = x_6;
+    vec3 _e232 = st.dir;
+    vec3 wo_1 = -(_e232);
+    vec4 _e240 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
+    v.position = x_9;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    vec3 _e249 = st.beta;
-    v.weight = _e249;
+    vec3 _e248 = st.beta;
+    v.weight = _e248;
     v.wo = wo_1;
     v.alive = 1u;
-    GpuPathVertex _e255 = v;
-    _group_0_binding_11_cs[i_1] = _e255;
-    uint _e257 = st.rng;
-    rng = _e257;
+    GpuPathVertex _e254 = v;
+    _group_0_binding_11_cs[i_1] = _e254;
+    uint _e256 = st.rng;
+    rng = _e256;
+    float _e258 = next_uniform(rng);
     float _e259 = next_uniform(rng);
-    float _e260 = next_uniform(rng);
-    float _e261 = specular_probability(_e241);
-    vec3 _e263 = bsdf_sample(_e147, wo_1, m_2.alpha, _e261, _e259, _e260);
-    float _e265 = bsdf_pdf(_e147, wo_1, _e263, m_2.alpha, _e261);
-    bool _e269 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
-    if (_e269) {
-        vec3 _e271 = st.beta;
-        vec3 _e277 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e263);
-        st.beta = (_e271 * (_e277 * (dot(_e263, _e147) / _e265)));
+    float _e260 = specular_probability(_e240);
+    vec3 _e262 = bsdf_sample(_e147, wo_1, m_2.alpha, _e260, _e258, _e259);
+    float _e264 = bsdf_pdf(_e147, wo_1, _e262, m_2.alpha, _e260);
+    bool _e268 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
+    if (_e268) {
+        vec3 _e270 = st.beta;
+        vec3 _e276 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e262);
+        st.beta = (_e270 * (_e276 * (dot(_e262, _e147) / _e264)));
     } else {
-        vec3 _e283 = st.beta;
-        st.beta = (_e283 * m_2.albedo);
+        vec3 _e282 = st.beta;
+        st.beta = (_e282 * m_2.albedo);
     }
-    st.prev = x_6;
+    st.prev = x_9;
     st.prev_normal = _e147;
-    vec3 _e289 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e289;
-    st.prev_lobe = _e241;
-    st.pdf_bsdf = _e265;
-    float _e295 = _group_0_binding_0_cs.eps;
-    st.origin = (x_6 + (_e123 * _e295));
-    st.dir = _e263;
-    bool _e299 = continues_path(_e263, _e147, _e123);
-    if (!(!(_e299))) {
-        local_1 = !((_e265 > 0.0));
+    vec3 _e288 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e288;
+    st.prev_lobe = _e240;
+    st.pdf_bsdf = _e264;
+    float _e294 = _group_0_binding_0_cs.eps;
+    st.origin = (x_9 + (_e123 * _e294));
+    st.dir = _e262;
+    bool _e298 = continues_path(_e262, _e147, _e123);
+    if (!(!(_e298))) {
+        local_1 = !((_e264 > 0.0));
     } else {
         local_1 = true;
     }
-    bool _e308 = local_1;
-    if (_e308) {
+    bool _e307 = local_1;
+    if (_e307) {
         st.alive = 0u;
     }
-    uint _e313 = _group_0_binding_0_cs.depth;
-    bool _e314 = plays_roulette(_e313);
-    if (_e314) {
-        uint _e318 = st.alive;
-        local_2 = (_e318 == 1u);
+    uint _e312 = _group_0_binding_0_cs.depth;
+    bool _e313 = plays_roulette(_e312);
+    if (_e313) {
+        uint _e317 = st.alive;
+        local_2 = (_e317 == 1u);
     } else {
         local_2 = false;
     }
-    bool _e322 = local_2;
-    if (_e322) {
-        vec3 _e324 = st.beta;
-        float _e325 = path_survival(_e324);
-        float _e326 = next_uniform(rng);
-        if ((_e326 >= _e325)) {
+    bool _e321 = local_2;
+    if (_e321) {
+        vec3 _e323 = st.beta;
+        float _e324 = path_survival(_e323);
+        float _e325 = next_uniform(rng);
+        if ((_e325 >= _e324)) {
             st.alive = 0u;
         } else {
-            vec3 _e331 = st.beta;
-            st.beta = (_e331 / vec3(_e325));
+            vec3 _e330 = st.beta;
+            st.beta = (_e330 / vec3(_e324));
         }
     }
-    uint _e335 = rng;
-    st.rng = _e335;
-    GpuPathState _e338 = st;
-    _group_0_binding_10_cs[i_1] = _e338;
+    uint _e334 = rng;
+    st.rng = _e334;
+    GpuPathState _e337 = st;
+    _group_0_binding_10_cs[i_1] = _e337;
     return;
 }
 

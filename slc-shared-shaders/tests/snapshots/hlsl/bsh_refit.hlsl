@@ -61,6 +61,16 @@ ByteAddressBuffer bounds : register(t2);
 ByteAddressBuffer r2_2 : register(t3);
 RWByteAddressBuffer bsh_nodes : register(u4);
 
+float f32_from_bits(uint u)
+{
+    return asfloat(u);
+}
+
+uint f32_to_bits(float x)
+{
+    return asuint(x);
+}
+
 float sphere_pad(float r, float3 c)
 {
     return (((r + max(abs(c.x), max(abs(c.y), abs(c.z)))) * SPHERE_PAD) + SPHERE_PAD_ABS);
@@ -113,6 +123,15 @@ float range_radius(float extent, float r2_1)
     return (extent + sqrt(r2_1));
 }
 
+float bsh_range_bound(BshNode node)
+{
+    if ((node.child == BSH_NONE)) {
+        return (node.radius - node.extent);
+    }
+    const float _e8 = f32_from_bits(node.light);
+    return _e8;
+}
+
 BshNode ConstructBshNode(float3 arg0, float arg1, uint arg2, uint arg3, uint arg4, float arg5) {
     BshNode ret = (BshNode)0;
     ret.center_ = arg0;
@@ -140,6 +159,28 @@ float4 bsh_children_sphere(uint nodes_1, uint i_1)
     return _e11;
 }
 
+float bsh_children_extent(uint nodes_2, uint i_2, float3 center_)
+{
+    const BshNode _e3 = bsh_node(nodes_2, i_2);
+    const BshNode _e5 = bsh_node(nodes_2, _e3.child);
+    const BshNode _e7 = bsh_node(nodes_2, _e5.next);
+    float3 vl = (_e5.center_ - center_);
+    float3 vr = (_e7.center_ - center_);
+    float a = max((sqrt(dot(vl, vl)) + _e5.extent), (sqrt(dot(vr, vr)) + _e7.extent));
+    const float _e21 = sphere_pad(a, center_);
+    return (a + _e21);
+}
+
+float bsh_children_range(uint nodes_3, uint i_3)
+{
+    const BshNode _e2 = bsh_node(nodes_3, i_3);
+    const BshNode _e4 = bsh_node(nodes_3, _e2.child);
+    const BshNode _e6 = bsh_node(nodes_3, _e4.next);
+    const float _e7 = bsh_range_bound(_e4);
+    const float _e8 = bsh_range_bound(_e6);
+    return max(_e7, _e8);
+}
+
 [numthreads(64, 1, 1)]
 void main(uint3 gid : SV_DispatchThreadID)
 {
@@ -148,18 +189,24 @@ void main(uint3 gid : SV_DispatchThreadID)
         return;
     }
     uint _e9 = params.first;
-    uint i_2 = asuint(order.Load((_e9 + gid.x)*4));
-    BshNode node = ConstructBshNode(asfloat(bsh_nodes.Load3(i_2*32+0)), asfloat(bsh_nodes.Load(i_2*32+12)), asuint(bsh_nodes.Load(i_2*32+16)), asuint(bsh_nodes.Load(i_2*32+20)), asuint(bsh_nodes.Load(i_2*32+24)), asfloat(bsh_nodes.Load(i_2*32+28)));
-    if ((node.child == BSH_NONE)) {
-        float4 bound = asfloat(bounds.Load4(node.light*16));
-        bsh_nodes.Store3(0+i_2*32, asuint(bound.xyz));
-        float _e35 = asfloat(r2_2.Load(node.light*4));
+    uint i_4 = asuint(order.Load((_e9 + gid.x)*4));
+    BshNode node_1 = ConstructBshNode(asfloat(bsh_nodes.Load3(i_4*32+0)), asfloat(bsh_nodes.Load(i_4*32+12)), asuint(bsh_nodes.Load(i_4*32+16)), asuint(bsh_nodes.Load(i_4*32+20)), asuint(bsh_nodes.Load(i_4*32+24)), asfloat(bsh_nodes.Load(i_4*32+28)));
+    if ((node_1.child == BSH_NONE)) {
+        float4 bound = asfloat(bounds.Load4(node_1.light*16));
+        bsh_nodes.Store3(0+i_4*32, asuint(bound.xyz));
+        float _e35 = asfloat(r2_2.Load(node_1.light*4));
         const float _e36 = range_radius(bound.w, _e35);
-        bsh_nodes.Store(12+i_2*32, asuint(_e36));
+        bsh_nodes.Store(12+i_4*32, asuint(_e36));
+        bsh_nodes.Store(28+i_4*32, asuint(bound.w));
         return;
     }
-    const float4 _e38 = bsh_children_sphere(BSH, i_2);
-    bsh_nodes.Store3(0+i_2*32, asuint(_e38.xyz));
-    bsh_nodes.Store(12+i_2*32, asuint(_e38.w));
+    const float4 _e42 = bsh_children_sphere(BSH, i_4);
+    bsh_nodes.Store3(0+i_4*32, asuint(_e42.xyz));
+    bsh_nodes.Store(12+i_4*32, asuint(_e42.w));
+    const float _e56 = bsh_children_extent(BSH, i_4, _e42.xyz);
+    bsh_nodes.Store(28+i_4*32, asuint(_e56));
+    const float _e61 = bsh_children_range(BSH, i_4);
+    const uint _e62 = f32_to_bits(_e61);
+    bsh_nodes.Store(24+i_4*32, asuint(_e62));
     return;
 }

@@ -81,7 +81,7 @@ static const uint BSH = 0u;
 
 ByteAddressBuffer bsh_nodes : register(t6);
 ByteAddressBuffer lights : register(t3);
-ByteAddressBuffer r2_2 : register(t5);
+ByteAddressBuffer r2_3 : register(t5);
 ByteAddressBuffer rt2_2 : register(t4);
 cbuffer params : register(b0) { ShadeParams params; }
 ByteAddressBuffer points : register(t1);
@@ -101,6 +101,11 @@ uint mul_lo_u32_(uint a, uint b)
 uint add_wrap_u32_(uint a_1, uint b_1)
 {
     return (a_1 + b_1);
+}
+
+float f32_from_bits(uint u_1)
+{
+    return asfloat(u_1);
 }
 
 float xi_from_bits(uint bits)
@@ -217,6 +222,15 @@ float bsh_scaled_radius(BshNode node, float scale)
     return (node.radius * scale);
 }
 
+float bsh_range_bound(BshNode node_1)
+{
+    if ((node_1.child == BSH_NONE)) {
+        return (node_1.radius - node_1.extent);
+    }
+    const float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
 uint mul_hi_u32_(uint a_3, uint b_3)
 {
     uint a_lo = (a_3 & 65535u);
@@ -264,6 +278,54 @@ float reservoir_weight(uint n_5, uint k_1)
     const float _e2 = to_f32_(n_5);
     const float _e3 = to_f32_(k_1);
     return max((_e2 / _e3), 1.0);
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+{
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float safe_sqrt(float x_3)
+{
+    return sqrt(max(x_3, 0.0));
+}
+
+float subtended_cos(float dist2_, float r2_2)
+{
+    const float _e5 = safe_sqrt((1.0 - (r2_2 / dist2_)));
+    return ((dist2_ <= r2_2) ? -1.0 : _e5);
+}
+
+float cone_cos_toward(float3 center_, float radius, float3 p, float3 d)
+{
+    float3 v_2 = (center_ - p);
+    float dist2_1 = dot(v_2, v_2);
+    float3 w_4 = ((dist2_1 > 0.0) ? (v_2 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    const float _e17 = subtended_cos(dist2_1, (radius * radius));
+    float cos_i = dot(w_4, d);
+    const float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
+    const float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
+    const float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float range_scale_at(float4 rl, float cos_t)
+{
+    float t = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t * t))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_1)
+{
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    const float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_1);
+    const float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
 }
 
 float3 triangle_normal(float3 a_4, float3 b_4, float3 c_2)
@@ -354,7 +416,47 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-uint bsh_next_leaf_scaled(uint nodes_3, uint start, float3 x_3, float scale_1)
+bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_2, float4 rl_2)
+{
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
+
+    const bool _e6 = sphere_contains_point(node_2.center_, node_2.radius, x_4);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_2.w <= 1.0))) {
+        const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_2.w * 1.0001)), x_4);
+        local_3 = !(_e20);
+    } else {
+        local_3 = true;
+    }
+    bool _e23 = local_3;
+    if (_e23) {
+        return false;
+    }
+    if ((node_2.child == BSH_NONE)) {
+        const float _e30 = range_scale_toward(rl_2, node_2.center_, node_2.extent, x_4, r_2);
+        const float _e33 = bsh_scaled_radius(node_2, sqrt(_e30));
+        const bool _e34 = sphere_contains_point(node_2.center_, _e33, x_4);
+        return _e34;
+    }
+    const float _e37 = range_scale_toward(rl_2, node_2.center_, node_2.extent, x_4, r_2);
+    float s_c = (_e37 * 1.001);
+    const float _e42 = bsh_range_bound(node_2);
+    float reach = (node_2.extent + (sqrt(s_c) * _e42));
+    float3 v_3 = (x_4 - node_2.center_);
+    float d2_5 = dot(v_3, v_3);
+    if ((d2_5 <= ((node_2.radius * node_2.radius) * s_c))) {
+        local_4 = (d2_5 <= (reach * reach));
+    } else {
+        local_4 = false;
+    }
+    bool _e58 = local_4;
+    return _e58;
+}
+
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_3, float4 rl_3)
 {
     uint i_1 = (uint)0;
 
@@ -363,31 +465,30 @@ uint bsh_next_leaf_scaled(uint nodes_3, uint start, float3 x_3, float scale_1)
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e5 = i_1;
-        if ((_e5 != BSH_NONE)) {
+        uint _e6 = i_1;
+        if ((_e6 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e8 = i_1;
-            const BshNode _e9 = bsh_node(nodes_3, _e8);
-            const float _e11 = bsh_scaled_radius(_e9, scale_1);
-            const bool _e12 = sphere_contains_point(_e9.center_, _e11, x_3);
-            if (_e12) {
-                if ((_e9.child == BSH_NONE)) {
-                    uint _e16 = i_1;
-                    return _e16;
+            uint _e9 = i_1;
+            const BshNode _e10 = bsh_node(nodes_3, _e9);
+            const bool _e11 = bsh_reaches(_e10, x_5, r_3, rl_3);
+            if (_e11) {
+                if ((_e10.child == BSH_NONE)) {
+                    uint _e15 = i_1;
+                    return _e15;
                 }
-                i_1 = _e9.child;
+                i_1 = _e10.child;
             } else {
-                i_1 = _e9.next;
+                i_1 = _e10.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-Picks bsh_collect(float3 x_4, float scale_2, uint seed_1)
+Picks bsh_collect(float3 x_6, float3 r_4, float4 rl_4, uint seed_1)
 {
     Picks picks = (Picks)0;
     uint h_1 = (uint)0;
@@ -395,52 +496,52 @@ Picks bsh_collect(float3 x_4, float scale_2, uint seed_1)
 
     picks.n = 0u;
     h_1 = seed_1;
-    const uint _e9 = bsh_first(BSH);
-    const uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_4, scale_2);
-    i_2 = _e10;
+    const uint _e10 = bsh_first(BSH);
+    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_4, rl_4);
+    i_2 = _e11;
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init) {
-            uint _e43 = i_2;
-            uint _e46 = asuint(bsh_nodes.Load(20+_e43*32));
-            const uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_4, scale_2);
-            i_2 = _e47;
+            uint _e44 = i_2;
+            uint _e47 = asuint(bsh_nodes.Load(20+_e44*32));
+            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_6, r_4, rl_4);
+            i_2 = _e48;
         }
         loop_init = false;
-        uint _e12 = i_2;
-        if ((_e12 != BSH_NONE)) {
+        uint _e13 = i_2;
+        if ((_e13 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e16 = picks.n;
-            const bool _e17 = reservoir_takes(_e16);
-            if (_e17) {
-                uint _e19 = picks.n;
-                picks.n = (_e19 + 1u);
-                uint _e22 = h_1;
-                const uint _e23 = pcg_hash(_e22);
-                h_1 = _e23;
+            uint _e17 = picks.n;
+            const bool _e18 = reservoir_takes(_e17);
+            if (_e18) {
+                uint _e20 = picks.n;
+                picks.n = (_e20 + 1u);
+                uint _e23 = h_1;
+                const uint _e24 = pcg_hash(_e23);
+                h_1 = _e24;
                 uint hi_2 = h_1;
-                uint _e25 = h_1;
-                const uint _e26 = pcg_hash(_e25);
-                h_1 = _e26;
-                uint _e28 = picks.n;
-                uint _e30 = h_1;
-                const uint _e31 = reservoir_slot(_e28, K, hi_2, _e30);
-                if ((_e31 < K)) {
-                    uint _e37 = i_2;
-                    uint _e40 = asuint(bsh_nodes.Load(24+_e37*32));
-                    picks.light[min(uint(_e31), 7u)] = _e40;
+                uint _e26 = h_1;
+                const uint _e27 = pcg_hash(_e26);
+                h_1 = _e27;
+                uint _e29 = picks.n;
+                uint _e31 = h_1;
+                const uint _e32 = reservoir_slot(_e29, K, hi_2, _e31);
+                if ((_e32 < K)) {
+                    uint _e38 = i_2;
+                    uint _e41 = asuint(bsh_nodes.Load(24+_e38*32));
+                    picks.light[min(uint(_e32), 7u)] = _e41;
                 }
             }
         }
     }
-    Picks _e48 = picks;
-    const Picks picks_1 = _e48;
+    Picks _e49 = picks;
+    const Picks picks_1 = _e49;
     return picks_1;
 }
 
@@ -457,40 +558,40 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_5, float3 n_6, float3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps)
+Connection connect(uint li, float3 x_7, float3 n_6, float3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps)
 {
     Connection c_3 = (Connection)0;
-    bool local_3 = (bool)0;
+    bool local_5 = (bool)0;
 
     c_3.e = (0.0).xxx;
     GpuLight l_2 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     const float3 _e17 = light_point(l_2, u1_2, u2_2);
     c_3.y = _e17;
     float3 _e20 = c_3.y;
-    float _e23 = asfloat(r2_2.Load(li*4));
-    const float _e25 = connection_cosine(x_5, _e20, n_6, ng_1, (s_1 * _e23));
+    float _e23 = asfloat(r2_3.Load(li*4));
+    const float _e25 = connection_cosine(x_7, _e20, n_6, ng_1, (s_1 * _e23));
     c_3.cos_x = _e25;
     float _e27 = c_3.cos_x;
     if (!((_e27 <= 0.0))) {
         float3 _e36 = c_3.y;
-        const bool _e37 = occluded((x_5 + (ng_1 * eps)), _e36);
-        local_3 = _e37;
+        const bool _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
+        local_5 = _e37;
     } else {
-        local_3 = true;
+        local_5 = true;
     }
-    bool _e39 = local_3;
+    bool _e39 = local_5;
     if (_e39) {
         Connection _e40 = c_3;
         const Connection connection = _e40;
         return connection;
     }
     float3 _e42 = c_3.y;
-    float3 v_2 = (x_5 - _e42);
-    float d2_5 = dot(v_2, v_2);
-    const float3 _e49 = light_intensity(l_2, (v_2 / (sqrt(d2_5)).xxx));
+    float3 v_4 = (x_7 - _e42);
+    float d2_6 = dot(v_4, v_4);
+    const float3 _e49 = light_intensity(l_2, (v_4 / (sqrt(d2_6)).xxx));
     float _e51 = c_3.cos_x;
     float _e54 = asfloat(rt2_2.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_5, (s_1 * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_6, (s_1 * _e54), w_res);
     c_3.e = (_e49 * _e56);
     Connection _e58 = c_3;
     const Connection connection_1 = _e58;
@@ -509,55 +610,55 @@ void main(uint3 gid : SV_DispatchThreadID)
     if ((i_3 >= _e4)) {
         return;
     }
-    float4 p = asfloat(points.Load4(i_3*16));
-    if ((p.w <= 0.0)) {
+    float4 p_2 = asfloat(points.Load4(i_3*16));
+    if ((p_2.w <= 0.0)) {
         irradiance.Store4(i_3*16, asuint((0.0).xxxx));
         return;
     }
-    float3 x_6 = p.xyz;
+    float3 x_8 = p_2.xyz;
     float4 _e19 = asfloat(normals.Load4(i_3*16));
     float3 n_8 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     const uint _e27 = point_stream(_e23, i_3, _e26);
-    const Picks _e29 = bsh_collect(x_6, 1.0, _e27);
-    const float _e32 = reservoir_weight(_e29.n, K);
-    const uint _e33 = pick_stream(_e27);
-    h = _e33;
+    const Picks _e33 = bsh_collect(x_8, x_8, float4(1.0, 0.0, 1.0, 1.0), _e27);
+    const float _e36 = reservoir_weight(_e33.n, K);
+    const uint _e37 = pick_stream(_e27);
+    h = _e37;
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e65 = s;
-            s = (_e65 + 1u);
+            uint _e69 = s;
+            s = (_e69 + 1u);
         }
         loop_init_1 = false;
-        uint _e40 = s;
-        if ((_e40 < min(_e29.n, K))) {
+        uint _e44 = s;
+        if ((_e44 < min(_e33.n, K))) {
         } else {
             break;
         }
         {
-            uint _e45 = h;
-            const uint _e46 = pcg_hash(_e45);
-            h = _e46;
-            uint _e47 = h;
-            const float _e48 = xi_from_bits(_e47);
             uint _e49 = h;
             const uint _e50 = pcg_hash(_e49);
             h = _e50;
-            float3 _e51 = e;
-            uint _e53 = s;
-            uint _e56 = h;
-            const float _e57 = xi_from_bits(_e56);
-            float _e60 = params.eps;
-            const Connection _e61 = connect(_e29.light[min(uint(_e53), 7u)], x_6, n_8, n_8, 1.0, _e32, _e48, _e57, _e60);
-            e = (_e51 + _e61.e);
+            uint _e51 = h;
+            const float _e52 = xi_from_bits(_e51);
+            uint _e53 = h;
+            const uint _e54 = pcg_hash(_e53);
+            h = _e54;
+            float3 _e55 = e;
+            uint _e57 = s;
+            uint _e60 = h;
+            const float _e61 = xi_from_bits(_e60);
+            float _e64 = params.eps;
+            const Connection _e65 = connect(_e33.light[min(uint(_e57), 7u)], x_8, n_8, n_8, 1.0, _e36, _e52, _e61, _e64);
+            e = (_e55 + _e65.e);
         }
     }
-    float3 _e69 = e;
-    irradiance.Store4(i_3*16, asuint(float4(_e69, float(_e29.n))));
+    float3 _e73 = e;
+    irradiance.Store4(i_3*16, asuint(float4(_e73, float(_e33.n))));
     return;
 }

@@ -118,7 +118,7 @@ Texture2D<float4> normal_tex : register(t2);
 RWTexture2D<float4> out_tex : register(u3);
 ByteAddressBuffer lights : register(t1, space1);
 ByteAddressBuffer rt2_2 : register(t2, space1);
-ByteAddressBuffer r2_2 : register(t3, space1);
+ByteAddressBuffer r2_3 : register(t3, space1);
 ByteAddressBuffer bsh_nodes : register(t4, space1);
 
 float at(uint tab, uint i)
@@ -149,6 +149,11 @@ uint mul_lo_u32_(uint a, uint b)
 uint add_wrap_u32_(uint a_1, uint b_1)
 {
     return (a_1 + b_1);
+}
+
+float f32_from_bits(uint u_1)
+{
+    return asfloat(u_1);
 }
 
 float xi_from_bits(uint bits)
@@ -285,8 +290,8 @@ float atan_portable(float x_4)
     float _e21 = base;
     float _e33 = t_1;
     float _e35 = t_1;
-    float r_2 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_2) : r_2);
+    float r_7 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_7) : r_7);
 }
 
 float atan2_portable(float y_1, float x_5)
@@ -476,6 +481,15 @@ float bsh_scaled_radius(BshNode node, float scale)
     return (node.radius * scale);
 }
 
+float bsh_range_bound(BshNode node_1)
+{
+    if ((node_1.child == BSH_NONE)) {
+        return (node_1.radius - node_1.extent);
+    }
+    const float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
 uint mul_hi_u32_(uint a_4, uint b_3)
 {
     uint a_lo = (a_4 & 65535u);
@@ -531,19 +545,83 @@ float smith_root(float cos_, float alpha)
     return sqrt((((cos_ * cos_) * (1.0 - a2_)) + a2_));
 }
 
-float receiver_peak(float4 lobe_1)
+float specular_peak_factor(float4 lobe_1)
 {
-    const float _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+    const float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5) / (_e6 + max(lobe_1.w, 0.0)));
 }
 
-float range_scale(float4 lobe_2)
+float receiver_peak(float4 lobe_2)
 {
-    if ((lobe_2.y <= 0.0)) {
+    const float _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+float range_scale(float4 lobe_3)
+{
+    if ((lobe_3.y <= 0.0)) {
         return 1.0;
     }
-    const float _e5 = receiver_peak(lobe_2);
+    const float _e5 = receiver_peak(lobe_3);
     return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+float4 range_lobe(float4 lobe_4)
+{
+    if ((lobe_4.y <= 0.0)) {
+        return float4(1.0, 0.0, 1.0, 1.0);
+    }
+    const float _e10 = specular_peak_factor(lobe_4);
+    const float _e14 = range_scale(lobe_4);
+    return float4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
+}
+
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+{
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float safe_sqrt(float x_8)
+{
+    return sqrt(max(x_8, 0.0));
+}
+
+float subtended_cos(float dist2_, float r2_2)
+{
+    const float _e5 = safe_sqrt((1.0 - (r2_2 / dist2_)));
+    return ((dist2_ <= r2_2) ? -1.0 : _e5);
+}
+
+float cone_cos_toward(float3 center_, float radius, float3 p, float3 d)
+{
+    float3 v_2 = (center_ - p);
+    float dist2_1 = dot(v_2, v_2);
+    float3 w_6 = ((dist2_1 > 0.0) ? (v_2 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    const float _e17 = subtended_cos(dist2_1, (radius * radius));
+    float cos_i = dot(w_6, d);
+    const float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
+    const float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
+    const float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float range_scale_at(float4 rl, float cos_t)
+{
+    float t_3 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_3 * t_3))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_2)
+{
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    const float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_2);
+    const float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
 }
 
 float3 triangle_normal(float3 a_5, float3 b_4, float3 c_4)
@@ -642,7 +720,47 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-uint bsh_next_leaf_scaled(uint nodes_3, uint start_1, float3 x_8, float scale_1)
+bool bsh_reaches(BshNode node_2, float3 x_9, float3 r_3, float4 rl_2)
+{
+    bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
+
+    const bool _e6 = sphere_contains_point(node_2.center_, node_2.radius, x_9);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_2.w <= 1.0))) {
+        const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_2.w * 1.0001)), x_9);
+        local_6 = !(_e20);
+    } else {
+        local_6 = true;
+    }
+    bool _e23 = local_6;
+    if (_e23) {
+        return false;
+    }
+    if ((node_2.child == BSH_NONE)) {
+        const float _e30 = range_scale_toward(rl_2, node_2.center_, node_2.extent, x_9, r_3);
+        const float _e33 = bsh_scaled_radius(node_2, sqrt(_e30));
+        const bool _e34 = sphere_contains_point(node_2.center_, _e33, x_9);
+        return _e34;
+    }
+    const float _e37 = range_scale_toward(rl_2, node_2.center_, node_2.extent, x_9, r_3);
+    float s_c = (_e37 * 1.001);
+    const float _e42 = bsh_range_bound(node_2);
+    float reach = (node_2.extent + (sqrt(s_c) * _e42));
+    float3 v_3 = (x_9 - node_2.center_);
+    float d2_5 = dot(v_3, v_3);
+    if ((d2_5 <= ((node_2.radius * node_2.radius) * s_c))) {
+        local_7 = (d2_5 <= (reach * reach));
+    } else {
+        local_7 = false;
+    }
+    bool _e58 = local_7;
+    return _e58;
+}
+
+uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_10, float3 r_4, float4 rl_3)
 {
     uint i_2 = (uint)0;
 
@@ -651,31 +769,30 @@ uint bsh_next_leaf_scaled(uint nodes_3, uint start_1, float3 x_8, float scale_1)
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e5 = i_2;
-        if ((_e5 != BSH_NONE)) {
+        uint _e6 = i_2;
+        if ((_e6 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e8 = i_2;
-            const BshNode _e9 = bsh_node(nodes_3, _e8);
-            const float _e11 = bsh_scaled_radius(_e9, scale_1);
-            const bool _e12 = sphere_contains_point(_e9.center_, _e11, x_8);
-            if (_e12) {
-                if ((_e9.child == BSH_NONE)) {
-                    uint _e16 = i_2;
-                    return _e16;
+            uint _e9 = i_2;
+            const BshNode _e10 = bsh_node(nodes_3, _e9);
+            const bool _e11 = bsh_reaches(_e10, x_10, r_4, rl_3);
+            if (_e11) {
+                if ((_e10.child == BSH_NONE)) {
+                    uint _e15 = i_2;
+                    return _e15;
                 }
-                i_2 = _e9.child;
+                i_2 = _e10.child;
             } else {
-                i_2 = _e9.next;
+                i_2 = _e10.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-Picks bsh_collect(float3 x_9, float scale_2, uint seed_1)
+Picks bsh_collect(float3 x_11, float3 r_5, float4 rl_4, uint seed_1)
 {
     Picks picks = (Picks)0;
     uint h_1 = (uint)0;
@@ -683,52 +800,52 @@ Picks bsh_collect(float3 x_9, float scale_2, uint seed_1)
 
     picks.n = 0u;
     h_1 = seed_1;
-    const uint _e9 = bsh_first(BSH);
-    const uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_9, scale_2);
-    i_3 = _e10;
+    const uint _e10 = bsh_first(BSH);
+    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_4);
+    i_3 = _e11;
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init) {
-            uint _e43 = i_3;
-            uint _e46 = asuint(bsh_nodes.Load(20+_e43*32));
-            const uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_9, scale_2);
-            i_3 = _e47;
+            uint _e44 = i_3;
+            uint _e47 = asuint(bsh_nodes.Load(20+_e44*32));
+            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_5, rl_4);
+            i_3 = _e48;
         }
         loop_init = false;
-        uint _e12 = i_3;
-        if ((_e12 != BSH_NONE)) {
+        uint _e13 = i_3;
+        if ((_e13 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e16 = picks.n;
-            const bool _e17 = reservoir_takes(_e16);
-            if (_e17) {
-                uint _e19 = picks.n;
-                picks.n = (_e19 + 1u);
-                uint _e22 = h_1;
-                const uint _e23 = pcg_hash(_e22);
-                h_1 = _e23;
+            uint _e17 = picks.n;
+            const bool _e18 = reservoir_takes(_e17);
+            if (_e18) {
+                uint _e20 = picks.n;
+                picks.n = (_e20 + 1u);
+                uint _e23 = h_1;
+                const uint _e24 = pcg_hash(_e23);
+                h_1 = _e24;
                 uint hi_3 = h_1;
-                uint _e25 = h_1;
-                const uint _e26 = pcg_hash(_e25);
-                h_1 = _e26;
-                uint _e28 = picks.n;
-                uint _e30 = h_1;
-                const uint _e31 = reservoir_slot(_e28, K, hi_3, _e30);
-                if ((_e31 < K)) {
-                    uint _e37 = i_3;
-                    uint _e40 = asuint(bsh_nodes.Load(24+_e37*32));
-                    picks.light[min(uint(_e31), 7u)] = _e40;
+                uint _e26 = h_1;
+                const uint _e27 = pcg_hash(_e26);
+                h_1 = _e27;
+                uint _e29 = picks.n;
+                uint _e31 = h_1;
+                const uint _e32 = reservoir_slot(_e29, K, hi_3, _e31);
+                if ((_e32 < K)) {
+                    uint _e38 = i_3;
+                    uint _e41 = asuint(bsh_nodes.Load(24+_e38*32));
+                    picks.light[min(uint(_e32), 7u)] = _e41;
                 }
             }
         }
     }
-    Picks _e48 = picks;
-    const Picks picks_1 = _e48;
+    Picks _e49 = picks;
+    const Picks picks_1 = _e49;
     return picks_1;
 }
 
@@ -745,40 +862,40 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_10, float3 n_7, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps)
+Connection connect(uint li, float3 x_12, float3 n_7, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps)
 {
     Connection c_5 = (Connection)0;
-    bool local_6 = (bool)0;
+    bool local_8 = (bool)0;
 
     c_5.e = (0.0).xxx;
     GpuLight l_2 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     const float3 _e17 = light_point(l_2, u1_2, u2_2);
     c_5.y = _e17;
     float3 _e20 = c_5.y;
-    float _e23 = asfloat(r2_2.Load(li*4));
-    const float _e25 = connection_cosine(x_10, _e20, n_7, ng_1, (s * _e23));
+    float _e23 = asfloat(r2_3.Load(li*4));
+    const float _e25 = connection_cosine(x_12, _e20, n_7, ng_1, (s * _e23));
     c_5.cos_x = _e25;
     float _e27 = c_5.cos_x;
     if (!((_e27 <= 0.0))) {
         float3 _e36 = c_5.y;
-        const bool _e37 = occluded((x_10 + (ng_1 * eps)), _e36);
-        local_6 = _e37;
+        const bool _e37 = occluded((x_12 + (ng_1 * eps)), _e36);
+        local_8 = _e37;
     } else {
-        local_6 = true;
+        local_8 = true;
     }
-    bool _e39 = local_6;
+    bool _e39 = local_8;
     if (_e39) {
         Connection _e40 = c_5;
         const Connection connection = _e40;
         return connection;
     }
     float3 _e42 = c_5.y;
-    float3 v_2 = (x_10 - _e42);
-    float d2_5 = dot(v_2, v_2);
-    const float3 _e49 = light_intensity(l_2, (v_2 / (sqrt(d2_5)).xxx));
+    float3 v_4 = (x_12 - _e42);
+    float d2_6 = dot(v_4, v_4);
+    const float3 _e49 = light_intensity(l_2, (v_4 / (sqrt(d2_6)).xxx));
     float _e51 = c_5.cos_x;
     float _e54 = asfloat(rt2_2.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_5, (s * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_6, (s * _e54), w_res);
     c_5.e = (_e49 * _e56);
     Connection _e58 = c_5;
     const Connection connection_1 = _e58;
@@ -787,20 +904,20 @@ Connection connect(uint li, float3 x_10, float3 n_7, float3 ng_1, float s, float
 
 float4 surface_at(int2 texel)
 {
-    float4 p = position_tex.Load(int3(texel, int(0)));
-    return ((p.w > 0.0) ? float4(p.xyz, 1.0) : (0.0).xxxx);
+    float4 p_2 = position_tex.Load(int3(texel, int(0)));
+    return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
 }
 
-Shaded shade_pick(uint li_1, float3 x_11, float3 n_8, Material m_1, float s2_, float w_4, float u1_3, float u2_3)
+Shaded shade_pick(uint li_1, float3 x_13, float3 n_8, float3 r_6, float4 rl_5, Material m_1, float w_4, float u1_3, float u2_3)
 {
     Shaded s_1 = (Shaded)0;
 
-    const Connection _e10 = connect(li_1, x_11, n_8, n_8, s2_, w_4, u1_3, u2_3, 0.0);
-    s_1.e = _e10.e;
+    const Connection _e12 = connect(li_1, x_13, n_8, n_8, 1.0, w_4, u1_3, u2_3, 0.0);
+    s_1.e = _e12.e;
     s_1.diffuse = (0.0).xxx;
     s_1.specular = (0.0).xxx;
-    Shaded _e19 = s_1;
-    const Shaded shaded = _e19;
+    Shaded _e21 = s_1;
+    const Shaded shaded = _e21;
     return shaded;
 }
 
@@ -856,19 +973,19 @@ void main(uint3 gid : SV_DispatchThreadID)
         out_tex[texel_1] = (0.0).xxxx;
         return;
     }
-    float3 x_12 = _e21.xyz;
+    float3 x_14 = _e21.xyz;
     float3 n_10 = (nn / (sqrt(len2_)).xxx);
     r = n_10;
     float4 _e53 = lobe;
-    const float _e54 = range_scale(_e53);
-    float scale_3 = sqrt(_e54);
-    uint _e58 = view.seed;
-    uint _e62 = view.width;
-    uint _e68 = view.frame;
-    const uint _e69 = point_stream(_e58, ((gid.y * _e62) + gid.x), _e68);
-    const uint _e70 = pick_stream(_e69);
-    h = _e70;
-    const Picks _e80 = bsh_collect(x_12, scale_3, _e69);
+    const float4 _e54 = range_lobe(_e53);
+    uint _e57 = view.seed;
+    uint _e61 = view.width;
+    uint _e67 = view.frame;
+    const uint _e68 = point_stream(_e57, ((gid.y * _e61) + gid.x), _e67);
+    const uint _e69 = pick_stream(_e68);
+    h = _e69;
+    float3 _e79 = r;
+    const Picks _e80 = bsh_collect(x_14, _e79, _e54, _e68);
     const float _e83 = reservoir_weight(_e80.n, K);
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
@@ -876,8 +993,8 @@ void main(uint3 gid : SV_DispatchThreadID)
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e107 = k;
-            k = (_e107 + 1u);
+            uint _e108 = k;
+            k = (_e108 + 1u);
         }
         loop_init_1 = false;
         uint _e86 = k;
@@ -896,16 +1013,17 @@ void main(uint3 gid : SV_DispatchThreadID)
             h = _e96;
             Shaded _e97 = t;
             uint _e99 = k;
-            Material _e101 = m;
-            uint _e102 = h;
-            const float _e103 = xi_from_bits(_e102);
-            const Shaded _e104 = shade_pick(_e80.light[min(uint(_e99), 7u)], x_12, n_10, _e101, _e54, _e83, _e94, _e103);
-            const Shaded _e105 = add(_e97, _e104);
-            t = _e105;
+            float3 _e101 = r;
+            Material _e102 = m;
+            uint _e103 = h;
+            const float _e104 = xi_from_bits(_e103);
+            const Shaded _e105 = shade_pick(_e80.light[min(uint(_e99), 7u)], x_14, n_10, _e101, _e54, _e102, _e83, _e94, _e104);
+            const Shaded _e106 = add(_e97, _e105);
+            t = _e106;
         }
     }
     uint count = _e80.n;
-    float3 _e112 = t.e;
-    out_tex[texel_1] = float4(_e112, float(count));
+    float3 _e113 = t.e;
+    out_tex[texel_1] = float4(_e113, float(count));
     return;
 }

@@ -150,6 +150,11 @@ uint add_wrap_u32_(uint a_1, uint b_1)
     return (a_1 + b_1);
 }
 
+float f32_from_bits(uint u_1)
+{
+    return asfloat(u_1);
+}
+
 float xi_from_bits(uint bits)
 {
     const float _e3 = to_f32_((bits >> 8u));
@@ -260,9 +265,18 @@ float bsh_scaled_radius(BshNode node, float scale)
     return (node.radius * scale);
 }
 
-bool weighted_replace(float w_1, float w_sum, float u_1)
+float bsh_range_bound(BshNode node_1)
 {
-    return ((u_1 * w_sum) < w_1);
+    if ((node_1.child == BSH_NONE)) {
+        return (node_1.radius - node_1.extent);
+    }
+    const float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
+bool weighted_replace(float w_1, float w_sum, float u_2)
+{
+    return ((u_2 * w_sum) < w_1);
 }
 
 float weighted_pick_weight(float w_sum_1, float w_2, uint k_1)
@@ -287,19 +301,35 @@ float smith_root(float cos_, float alpha_1)
     return sqrt((((cos_ * cos_) * (1.0 - a2_1)) + a2_1));
 }
 
-float receiver_peak(float4 lobe_1)
+float specular_peak_factor(float4 lobe_1)
 {
-    const float _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+    const float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5) / (_e6 + max(lobe_1.w, 0.0)));
 }
 
-float range_scale(float4 lobe_2)
+float receiver_peak(float4 lobe_2)
 {
-    if ((lobe_2.y <= 0.0)) {
+    const float _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+float range_scale(float4 lobe_3)
+{
+    if ((lobe_3.y <= 0.0)) {
         return 1.0;
     }
-    const float _e5 = receiver_peak(lobe_2);
+    const float _e5 = receiver_peak(lobe_3);
     return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+float4 range_lobe(float4 lobe_4)
+{
+    if ((lobe_4.y <= 0.0)) {
+        return float4(1.0, 0.0, 1.0, 1.0);
+    }
+    const float _e10 = specular_peak_factor(lobe_4);
+    const float _e14 = range_scale(lobe_4);
+    return float4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
 float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
@@ -369,17 +399,33 @@ float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d)
     return _e27;
 }
 
-float light_importance(float3 center_3, float radius_3, float phi_1, float3 axis_2, float cos_o_2, float cos_e_1, float3 p_3, float3 n_1)
+float range_scale_at(float4 rl, float cos_t)
+{
+    float t_3 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_3 * t_3))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(float4 rl_1, float3 center_3, float radius_3, float3 p_3, float3 r_2)
+{
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    const float _e9 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    const float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis_2, float cos_o_2, float cos_e_1, float3 p_4, float3 n_1)
 {
     float imp = (float)0;
 
-    const float4 _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    const float4 _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
     if ((_e8.x <= cos_e_1)) {
         return 0.0;
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_1, n_1) > 0.0)) {
-        float3 v_4 = (center_3 - p_3);
+        float3 v_4 = (center_4 - p_4);
         float dist2_3 = dot(v_4, v_4);
         float cos_i_1 = dot(((dist2_3 > 0.0) ? (v_4 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0)), n_1);
         float _e33 = imp;
@@ -391,12 +437,12 @@ float light_importance(float3 center_3, float radius_3, float phi_1, float3 axis
     return max(_e44, 0.0);
 }
 
-float glossy_importance(float3 center_4, float radius_4, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_4, float3 n_2, float3 r_2, float4 lobe_3)
+float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_5, float3 n_2, float3 r_3, float4 lobe_5)
 {
     bool local_4 = (bool)0;
 
-    const float _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
-    const float _e11 = cone_cos_toward(center_4, radius_4, p_4, n_2);
+    const float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
+    const float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_2);
     if (!((_e10 <= 0.0))) {
         local_4 = (_e11 <= 0.0);
     } else {
@@ -406,12 +452,12 @@ float glossy_importance(float3 center_4, float radius_4, float phi_2, float3 axi
     if (_e20) {
         return 0.0;
     }
-    const float _e22 = cone_cos_toward(center_4, radius_4, p_4, r_2);
+    const float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_3);
     const float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
-    const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
-    const float _e39 = smith_root(lobe_3.w, lobe_3.z);
-    float spec = (((lobe_3.y * _e33) * 0.25) / _e39);
-    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
+    const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_5.z);
+    const float _e39 = smith_root(lobe_5.w, lobe_5.z);
+    float spec = (((lobe_5.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec));
 }
 
 float candidate_weight(float importance, float rt2_2, float d2_4)
@@ -420,15 +466,15 @@ float candidate_weight(float importance, float rt2_2, float d2_4)
     return (importance * _e3);
 }
 
-float cone_weight(float3 center_5, float radius_5, float phi_3, float3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, float3 p_5, float3 n_3, float3 r_3, float4 lobe_4)
+float cone_weight(float3 center_6, float radius_6, float phi_3, float3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, float3 p_6, float3 n_3, float3 r_4, float4 lobe_6)
 {
-    float3 v_5 = (p_5 - center_5);
-    if ((lobe_4.y <= 0.0)) {
-        const float _e15 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_3);
+    float3 v_5 = (p_6 - center_6);
+    if ((lobe_6.y <= 0.0)) {
+        const float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3);
         const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_5, v_5));
         return _e19;
     }
-    const float _e20 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_3, r_3, lobe_4);
+    const float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3, r_4, lobe_6);
     const float _e22 = candidate_weight(_e20, rt2_3, dot(v_5, v_5));
     return _e22;
 }
@@ -498,7 +544,47 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-uint bsh_next_leaf_scaled(uint nodes_3, uint start, float3 x_4, float scale_1)
+bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_5, float4 rl_2)
+{
+    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
+
+    const bool _e6 = sphere_contains_point(node_2.center_, node_2.radius, x_4);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_2.w <= 1.0))) {
+        const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_2.w * 1.0001)), x_4);
+        local_5 = !(_e20);
+    } else {
+        local_5 = true;
+    }
+    bool _e23 = local_5;
+    if (_e23) {
+        return false;
+    }
+    if ((node_2.child == BSH_NONE)) {
+        const float _e30 = range_scale_toward(rl_2, node_2.center_, node_2.extent, x_4, r_5);
+        const float _e33 = bsh_scaled_radius(node_2, sqrt(_e30));
+        const bool _e34 = sphere_contains_point(node_2.center_, _e33, x_4);
+        return _e34;
+    }
+    const float _e37 = range_scale_toward(rl_2, node_2.center_, node_2.extent, x_4, r_5);
+    float s_c = (_e37 * 1.001);
+    const float _e42 = bsh_range_bound(node_2);
+    float reach = (node_2.extent + (sqrt(s_c) * _e42));
+    float3 v_6 = (x_4 - node_2.center_);
+    float d2_7 = dot(v_6, v_6);
+    if ((d2_7 <= ((node_2.radius * node_2.radius) * s_c))) {
+        local_6 = (d2_7 <= (reach * reach));
+    } else {
+        local_6 = false;
+    }
+    bool _e58 = local_6;
+    return _e58;
+}
+
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_6, float4 rl_3)
 {
     uint i_1 = (uint)0;
 
@@ -507,24 +593,23 @@ uint bsh_next_leaf_scaled(uint nodes_3, uint start, float3 x_4, float scale_1)
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e5 = i_1;
-        if ((_e5 != BSH_NONE)) {
+        uint _e6 = i_1;
+        if ((_e6 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e8 = i_1;
-            const BshNode _e9 = bsh_node(nodes_3, _e8);
-            const float _e11 = bsh_scaled_radius(_e9, scale_1);
-            const bool _e12 = sphere_contains_point(_e9.center_, _e11, x_4);
-            if (_e12) {
-                if ((_e9.child == BSH_NONE)) {
-                    uint _e16 = i_1;
-                    return _e16;
+            uint _e9 = i_1;
+            const BshNode _e10 = bsh_node(nodes_3, _e9);
+            const bool _e11 = bsh_reaches(_e10, x_5, r_6, rl_3);
+            if (_e11) {
+                if ((_e10.child == BSH_NONE)) {
+                    uint _e15 = i_1;
+                    return _e15;
                 }
-                i_1 = _e9.child;
+                i_1 = _e10.child;
             } else {
-                i_1 = _e9.next;
+                i_1 = _e10.next;
             }
         }
     }
@@ -544,10 +629,10 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_5, float3 n_4, float3 ng_1, float s, float w_res, float u1_1, float u2_1, float eps)
+Connection connect(uint li, float3 x_6, float3 n_4, float3 ng_1, float s, float w_res, float u1_1, float u2_1, float eps)
 {
     Connection c_1 = (Connection)0;
-    bool local_5 = (bool)0;
+    bool local_7 = (bool)0;
 
     c_1.e = (0.0).xxx;
     GpuLight l_2 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
@@ -555,29 +640,29 @@ Connection connect(uint li, float3 x_5, float3 n_4, float3 ng_1, float s, float 
     c_1.y = _e17;
     float3 _e20 = c_1.y;
     float _e23 = asfloat(r2_3.Load(li*4));
-    const float _e25 = connection_cosine(x_5, _e20, n_4, ng_1, (s * _e23));
+    const float _e25 = connection_cosine(x_6, _e20, n_4, ng_1, (s * _e23));
     c_1.cos_x = _e25;
     float _e27 = c_1.cos_x;
     if (!((_e27 <= 0.0))) {
         float3 _e36 = c_1.y;
-        const bool _e37 = occluded((x_5 + (ng_1 * eps)), _e36);
-        local_5 = _e37;
+        const bool _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
+        local_7 = _e37;
     } else {
-        local_5 = true;
+        local_7 = true;
     }
-    bool _e39 = local_5;
+    bool _e39 = local_7;
     if (_e39) {
         Connection _e40 = c_1;
         const Connection connection = _e40;
         return connection;
     }
     float3 _e42 = c_1.y;
-    float3 v_6 = (x_5 - _e42);
-    float d2_7 = dot(v_6, v_6);
-    const float3 _e49 = light_intensity(l_2, (v_6 / (sqrt(d2_7)).xxx));
+    float3 v_7 = (x_6 - _e42);
+    float d2_8 = dot(v_7, v_7);
+    const float3 _e49 = light_intensity(l_2, (v_7 / (sqrt(d2_8)).xxx));
     float _e51 = c_1.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
     c_1.e = (_e49 * _e56);
     Connection _e58 = c_1;
     const Connection connection_1 = _e58;
@@ -597,16 +682,16 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_weight(uint li_1, float3 x_6, float3 n_5, float3 r_4, float4 lobe_5)
+float light_weight(uint li_1, float3 x_7, float3 n_5, float3 r_7, float4 lobe_7, float4 rl_4)
 {
     GpuLightCone c_2 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e14 = range_scale(lobe_5);
-    float _e17 = asfloat(rt2_4.Load(li_1*4));
-    const float _e19 = cone_weight(c_2.center_, c_2.radius, c_2.phi, c_2.axis, c_2.cos_o, c_2.cos_e, (_e14 * _e17), x_6, n_5, r_4, lobe_5);
-    return _e19;
+    const float _e17 = range_scale_toward(rl_4, c_2.center_, c_2.radius, x_7, r_7);
+    float _e20 = asfloat(rt2_4.Load(li_1*4));
+    const float _e22 = cone_weight(c_2.center_, c_2.radius, c_2.phi, c_2.axis, c_2.cos_o, c_2.cos_e, (_e17 * _e20), x_7, n_5, r_7, lobe_7);
+    return _e22;
 }
 
-WeightedPicks bsh_weighted_collect(float3 x_7, float3 n_6, float3 r_5, float4 lobe_6, float scale_2, uint h0_)
+WeightedPicks bsh_weighted_collect(float3 x_8, float3 n_6, float3 r_8, float4 lobe_8, float4 rl_5, uint h0_)
 {
     WeightedPicks picks = (WeightedPicks)0;
     uint h_1 = (uint)0;
@@ -617,7 +702,7 @@ WeightedPicks bsh_weighted_collect(float3 x_7, float3 n_6, float3 r_5, float4 lo
     picks.n = 0u;
     h_1 = h0_;
     const uint _e14 = bsh_first(BSH);
-    const uint _e15 = bsh_next_leaf_scaled(BSH, _e14, x_7, scale_2);
+    const uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_8, r_8, rl_5);
     b_3 = _e15;
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
@@ -627,7 +712,7 @@ WeightedPicks bsh_weighted_collect(float3 x_7, float3 n_6, float3 r_5, float4 lo
         if (!loop_init) {
             uint _e58 = b_3;
             uint _e61 = asuint(bsh_nodes.Load(20+_e58*32));
-            const uint _e62 = bsh_next_leaf_scaled(BSH, _e61, x_7, scale_2);
+            const uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_8, r_8, rl_5);
             b_3 = _e62;
         }
         loop_init = false;
@@ -641,7 +726,7 @@ WeightedPicks bsh_weighted_collect(float3 x_7, float3 n_6, float3 r_5, float4 lo
             picks.n = (_e21 + 1u);
             uint _e25 = b_3;
             uint li_3 = asuint(bsh_nodes.Load(24+_e25*32));
-            const float _e29 = light_weight(li_3, x_7, n_6, r_5, lobe_6);
+            const float _e29 = light_weight(li_3, x_8, n_6, r_8, lobe_8, rl_5);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -692,11 +777,11 @@ float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px,
     if ((depth == background)) {
         return float4(0.0, 0.0, 0.0, 0.0);
     }
-    float x_9 = ((((px + 0.5) / width) * 2.0) - 1.0);
+    float x_10 = ((((px + 0.5) / width) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
-    float4 p_6 = ((((c0_ * x_9) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
-    if ((abs(p_6.w) > 0.0)) {
-        return float4((p_6.x / p_6.w), (p_6.y / p_6.w), (p_6.z / p_6.w), 1.0);
+    float4 p_7 = ((((c0_ * x_10) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    if ((abs(p_7.w) > 0.0)) {
+        return float4((p_7.x / p_7.w), (p_7.y / p_7.w), (p_7.z / p_7.w), 1.0);
     }
     return float4(0.0, 0.0, 0.0, 0.0);
 }
@@ -716,16 +801,16 @@ float4 surface_at(int2 texel)
     return _e32;
 }
 
-Shaded shade_pick(uint li_2, float3 x_8, float3 n_7, Material m_1, float s2_, float w_4, float u1_2, float u2_2)
+Shaded shade_pick(uint li_2, float3 x_9, float3 n_7, float3 r_9, float4 rl_6, Material m_1, float w_4, float u1_2, float u2_2)
 {
     Shaded s_2 = (Shaded)0;
 
-    const Connection _e10 = connect(li_2, x_8, n_7, n_7, s2_, w_4, u1_2, u2_2, 0.0);
-    s_2.e = _e10.e;
+    const Connection _e12 = connect(li_2, x_9, n_7, n_7, 1.0, w_4, u1_2, u2_2, 0.0);
+    s_2.e = _e12.e;
     s_2.diffuse = (0.0).xxx;
     s_2.specular = (0.0).xxx;
-    Shaded _e19 = s_2;
-    const Shaded shaded = _e19;
+    Shaded _e21 = s_2;
+    const Shaded shaded = _e21;
     return shaded;
 }
 
@@ -781,22 +866,21 @@ void main(uint3 gid : SV_DispatchThreadID)
         out_tex[texel_1] = (0.0).xxxx;
         return;
     }
-    float3 x_10 = _e21.xyz;
+    float3 x_11 = _e21.xyz;
     float3 n_8 = (nn / (sqrt(len2_)).xxx);
     r = n_8;
     float4 _e53 = lobe;
-    const float _e54 = range_scale(_e53);
-    float scale_3 = sqrt(_e54);
-    uint _e58 = view.seed;
-    uint _e62 = view.width;
-    uint _e68 = view.frame;
-    const uint _e69 = point_stream(_e58, ((gid.y * _e62) + gid.x), _e68);
-    const uint _e70 = pick_stream(_e69);
-    h = _e70;
-    float3 _e80 = r;
-    float4 _e81 = lobe;
-    const WeightedPicks _e82 = bsh_weighted_collect(x_10, n_8, _e80, _e81, scale_3, _e69);
-    if ((_e82.w_sum > 0.0)) {
+    const float4 _e54 = range_lobe(_e53);
+    uint _e57 = view.seed;
+    uint _e61 = view.width;
+    uint _e67 = view.frame;
+    const uint _e68 = point_stream(_e57, ((gid.y * _e61) + gid.x), _e67);
+    const uint _e69 = pick_stream(_e68);
+    h = _e69;
+    float3 _e79 = r;
+    float4 _e80 = lobe;
+    const WeightedPicks _e81 = bsh_weighted_collect(x_11, n_8, _e79, _e80, _e54, _e68);
+    if ((_e81.w_sum > 0.0)) {
         uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
         bool loop_init_2 = true;
         while(true) {
@@ -807,34 +891,35 @@ void main(uint3 gid : SV_DispatchThreadID)
                 k = (_e113 + 1u);
             }
             loop_init_2 = false;
-            uint _e88 = k;
-            if ((_e88 < K)) {
+            uint _e87 = k;
+            if ((_e87 < K)) {
             } else {
                 break;
             }
             {
-                uint _e91 = h;
-                const uint _e92 = pcg_hash(_e91);
-                h = _e92;
-                uint _e93 = h;
-                const float _e94 = xi_from_bits(_e93);
-                uint _e95 = h;
-                const uint _e96 = pcg_hash(_e95);
-                h = _e96;
-                Shaded _e97 = t;
-                uint _e99 = k;
+                uint _e90 = h;
+                const uint _e91 = pcg_hash(_e90);
+                h = _e91;
+                uint _e92 = h;
+                const float _e93 = xi_from_bits(_e92);
+                uint _e94 = h;
+                const uint _e95 = pcg_hash(_e94);
+                h = _e95;
+                Shaded _e96 = t;
+                uint _e98 = k;
+                float3 _e100 = r;
                 Material _e101 = m;
                 uint _e104 = k;
-                const float _e107 = weighted_pick_weight(_e82.w_sum, _e82.w[min(uint(_e104), 7u)], K);
+                const float _e107 = weighted_pick_weight(_e81.w_sum, _e81.w[min(uint(_e104), 7u)], K);
                 uint _e108 = h;
                 const float _e109 = xi_from_bits(_e108);
-                const Shaded _e110 = shade_pick(_e82.light[min(uint(_e99), 7u)], x_10, n_8, _e101, _e54, _e107, _e94, _e109);
-                const Shaded _e111 = add(_e97, _e110);
+                const Shaded _e110 = shade_pick(_e81.light[min(uint(_e98), 7u)], x_11, n_8, _e100, _e54, _e101, _e107, _e93, _e109);
+                const Shaded _e111 = add(_e96, _e110);
                 t = _e111;
             }
         }
     }
-    uint count = _e82.n;
+    uint count = _e81.n;
     float3 _e118 = t.e;
     out_tex[texel_1] = float4(_e118, float(count));
     return;

@@ -9,6 +9,17 @@ struct GpuLight {
     uint ies_base;
 };
 
+struct GpuLightCone {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
+
 struct GpuGeoNode {
     float3 bmin;
     uint first;
@@ -128,8 +139,9 @@ ByteAddressBuffer geo_nodes : register(t6);
 ByteAddressBuffer geo_tris : register(t7);
 ByteAddressBuffer bsh_nodes : register(t5);
 ByteAddressBuffer lights : register(t2);
-ByteAddressBuffer r2_2 : register(t4);
+ByteAddressBuffer r2_3 : register(t4);
 ByteAddressBuffer rt2_4 : register(t3);
+ByteAddressBuffer light_cones : register(t2, space1);
 cbuffer params : register(b0) { ShadeParams params; }
 ByteAddressBuffer vertices_ : register(t1);
 ByteAddressBuffer materials : register(t8);
@@ -164,6 +176,11 @@ uint mul_lo_u32_(uint a, uint b)
 uint add_wrap_u32_(uint a_1, uint b_1)
 {
     return (a_1 + b_1);
+}
+
+float f32_from_bits(uint u_1)
+{
+    return asfloat(u_1);
 }
 
 float xi_from_bits(uint bits)
@@ -322,8 +339,8 @@ float atan_portable(float x_4)
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_4 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_4) : r_4);
+    float r_10 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_10) : r_10);
 }
 
 float atan2_portable(float y_1, float x_5)
@@ -511,6 +528,15 @@ float bsh_scaled_radius(BshNode node, float scale)
         return (node.extent + (scale * (node.radius - node.extent)));
     }
     return (node.radius * scale);
+}
+
+float bsh_range_bound(BshNode node_1)
+{
+    if ((node_1.child == BSH_NONE)) {
+        return (node_1.radius - node_1.extent);
+    }
+    const float _e8 = f32_from_bits(node_1.light);
+    return _e8;
 }
 
 uint mul_hi_u32_(uint a_4, uint b_3)
@@ -799,19 +825,35 @@ float specular_probability(float4 lobe)
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
-float receiver_peak(float4 lobe_1)
+float specular_peak_factor(float4 lobe_1)
 {
-    const float _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+    const float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5) / (_e6 + max(lobe_1.w, 0.0)));
 }
 
-float range_scale(float4 lobe_2)
+float receiver_peak(float4 lobe_2)
 {
-    if ((lobe_2.y <= 0.0)) {
+    const float _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+float range_scale(float4 lobe_3)
+{
+    if ((lobe_3.y <= 0.0)) {
         return 1.0;
     }
-    const float _e5 = receiver_peak(lobe_2);
+    const float _e5 = receiver_peak(lobe_3);
     return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+float4 range_lobe(float4 lobe_4)
+{
+    if ((lobe_4.y <= 0.0)) {
+        return float4(1.0, 0.0, 1.0, 1.0);
+    }
+    const float _e10 = specular_peak_factor(lobe_4);
+    const float _e14 = range_scale(lobe_4);
+    return float4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
 float3 mirror_dir(float3 n_13, float3 v_3)
@@ -861,21 +903,69 @@ float bsdf_pdf(float3 n_14, float3 v_4, float3 l_3, float alpha_8, float p_spec)
     return ((p_spec * _e11) + ((1.0 - p_spec) * _e6));
 }
 
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+{
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
+}
+
+float safe_sqrt(float x_8)
+{
+    return sqrt(max(x_8, 0.0));
+}
+
+float subtended_cos(float dist2_, float r2_2)
+{
+    const float _e5 = safe_sqrt((1.0 - (r2_2 / dist2_)));
+    return ((dist2_ <= r2_2) ? -1.0 : _e5);
+}
+
+float cone_cos_toward(float3 center_, float radius, float3 p, float3 d)
+{
+    float3 v_8 = (center_ - p);
+    float dist2_1 = dot(v_8, v_8);
+    float3 w_8 = ((dist2_1 > 0.0) ? (v_8 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    const float _e17 = subtended_cos(dist2_1, (radius * radius));
+    float cos_i = dot(w_8, d);
+    const float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
+    const float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
+    const float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float range_scale_at(float4 rl, float cos_t)
+{
+    float t_4 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_4 * t_4))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_1)
+{
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    const float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_1);
+    const float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
 float shadow_margin(float len)
 {
     return (0.0001 * len);
 }
 
-float ray_inverse(float x_8)
+float ray_inverse(float x_9)
 {
-    return (1.0 / ((abs(x_8) < 1e-30) ? 1e-30 : x_8));
+    return (1.0 / ((abs(x_9) < 1e-30) ? 1e-30 : x_9));
 }
 
-float3 ray_inverse3_(float3 d)
+float3 ray_inverse3_(float3 d_1)
 {
-    const float _e2 = ray_inverse(d.x);
-    const float _e4 = ray_inverse(d.y);
-    const float _e6 = ray_inverse(d.z);
+    const float _e2 = ray_inverse(d_1.x);
+    const float _e4 = ray_inverse(d_1.y);
+    const float _e6 = ray_inverse(d_1.z);
     return float3(_e2, _e4, _e6);
 }
 
@@ -911,7 +1001,7 @@ float3 triangle_normal(float3 a_5, float3 b_4, float3 c_5)
     return (n_19 / (sqrt(l2_)).xxx);
 }
 
-float ray_triangle(float3 o_1, float3 d_1, float3 a_6, float3 b_5, float3 c_6, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_2, float3 a_6, float3 b_5, float3 c_6, float t_min, float t_max_1)
 {
     bool local_13 = (bool)0;
     bool local_14 = (bool)0;
@@ -919,16 +1009,16 @@ float ray_triangle(float3 o_1, float3 d_1, float3 a_6, float3 b_5, float3 c_6, f
 
     float3 e1_ = (b_5 - a_6);
     float3 e2_ = (c_6 - a_6);
-    float3 p = cross(d_1, e2_);
-    float det = dot(e1_, p);
+    float3 p_2 = cross(d_2, e2_);
+    float det = dot(e1_, p_2);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
     float3 s_6 = (o_1 - a_6);
-    float u_1 = (dot(s_6, p) * inv_1);
-    if (!((u_1 < 0.0))) {
-        local_13 = (u_1 > 1.0);
+    float u_2 = (dot(s_6, p_2) * inv_1);
+    if (!((u_2 < 0.0))) {
+        local_13 = (u_2 > 1.0);
     } else {
         local_13 = true;
     }
@@ -937,9 +1027,9 @@ float ray_triangle(float3 o_1, float3 d_1, float3 a_6, float3 b_5, float3 c_6, f
         return -1.0;
     }
     float3 q = cross(s_6, e1_);
-    float v_8 = (dot(d_1, q) * inv_1);
-    if (!((v_8 < 0.0))) {
-        local_14 = ((u_1 + v_8) > 1.0);
+    float v_9 = (dot(d_2, q) * inv_1);
+    if (!((v_9 < 0.0))) {
+        local_14 = ((u_2 + v_9) > 1.0);
     } else {
         local_14 = true;
     }
@@ -947,15 +1037,15 @@ float ray_triangle(float3 o_1, float3 d_1, float3 a_6, float3 b_5, float3 c_6, f
     if (_e42) {
         return -1.0;
     }
-    float t_4 = (dot(e2_, q) * inv_1);
-    if ((t_4 > t_min)) {
-        local_15 = (t_4 < t_max_1);
+    float t_5 = (dot(e2_, q) * inv_1);
+    if ((t_5 > t_min)) {
+        local_15 = (t_5 < t_max_1);
     } else {
         local_15 = false;
     }
     bool _e51 = local_15;
     if (_e51) {
-        return t_4;
+        return t_5;
     }
     return -1.0;
 }
@@ -1062,12 +1152,12 @@ GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3,
     return ret;
 }
 
-GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
+GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
 {
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
     uint sp = 0u;
-    uint node_1 = 0u;
+    uint node_2 = 0u;
     uint i_1 = (uint)0;
 
     hit.t = t_max_2;
@@ -1077,12 +1167,12 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
         const GeoHit geohit = _e13;
         return geohit;
     }
-    const float3 _e14 = ray_inverse3_(d_2);
+    const float3 _e14 = ray_inverse3_(d_3);
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e21 = node_1;
+        uint _e21 = node_2;
         GpuGeoNode n_20 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
         const float _e28 = ray_aabb(o_2, _e14, n_20.bmin, n_20.bmax, _e27);
@@ -1106,9 +1196,9 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
                     }
                     {
                         uint _e42 = i_1;
-                        GpuTriangle t_5 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        GpuTriangle t_6 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_2, t_5.v0_, t_5.v1_, t_5.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_3, t_6.v0_, t_6.v1_, t_6.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i_1;
@@ -1129,7 +1219,7 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_1 = n_20.first;
+                node_2 = n_20.first;
                 continue;
             }
         }
@@ -1141,7 +1231,7 @@ GeoHit trace(float3 o_2, float3 d_2, float t_min_1, float t_max_2, bool any_hit)
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[min(uint(_e78), 63u)];
-        node_1 = _e80;
+        node_2 = _e80;
     }
     GeoHit _e81 = hit;
     const GeoHit geohit_2 = _e81;
@@ -1192,7 +1282,47 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-uint bsh_next_leaf_scaled(uint nodes_3, uint start_1, float3 x_9, float scale_1)
+bool bsh_reaches(BshNode node_3, float3 x_10, float3 r_2, float4 rl_2)
+{
+    bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
+
+    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_10);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_2.w <= 1.0))) {
+        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_2.w * 1.0001)), x_10);
+        local_18 = !(_e20);
+    } else {
+        local_18 = true;
+    }
+    bool _e23 = local_18;
+    if (_e23) {
+        return false;
+    }
+    if ((node_3.child == BSH_NONE)) {
+        const float _e30 = range_scale_toward(rl_2, node_3.center_, node_3.extent, x_10, r_2);
+        const float _e33 = bsh_scaled_radius(node_3, sqrt(_e30));
+        const bool _e34 = sphere_contains_point(node_3.center_, _e33, x_10);
+        return _e34;
+    }
+    const float _e37 = range_scale_toward(rl_2, node_3.center_, node_3.extent, x_10, r_2);
+    float s_c = (_e37 * 1.001);
+    const float _e42 = bsh_range_bound(node_3);
+    float reach = (node_3.extent + (sqrt(s_c) * _e42));
+    float3 v_10 = (x_10 - node_3.center_);
+    float d2_8 = dot(v_10, v_10);
+    if ((d2_8 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_19 = (d2_8 <= (reach * reach));
+    } else {
+        local_19 = false;
+    }
+    bool _e58 = local_19;
+    return _e58;
+}
+
+uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_11, float3 r_3, float4 rl_3)
 {
     uint i_3 = (uint)0;
 
@@ -1201,31 +1331,30 @@ uint bsh_next_leaf_scaled(uint nodes_3, uint start_1, float3 x_9, float scale_1)
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e5 = i_3;
-        if ((_e5 != BSH_NONE)) {
+        uint _e6 = i_3;
+        if ((_e6 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e8 = i_3;
-            const BshNode _e9 = bsh_node(nodes_3, _e8);
-            const float _e11 = bsh_scaled_radius(_e9, scale_1);
-            const bool _e12 = sphere_contains_point(_e9.center_, _e11, x_9);
-            if (_e12) {
-                if ((_e9.child == BSH_NONE)) {
-                    uint _e16 = i_3;
-                    return _e16;
+            uint _e9 = i_3;
+            const BshNode _e10 = bsh_node(nodes_3, _e9);
+            const bool _e11 = bsh_reaches(_e10, x_11, r_3, rl_3);
+            if (_e11) {
+                if ((_e10.child == BSH_NONE)) {
+                    uint _e15 = i_3;
+                    return _e15;
                 }
-                i_3 = _e9.child;
+                i_3 = _e10.child;
             } else {
-                i_3 = _e9.next;
+                i_3 = _e10.next;
             }
         }
     }
     return BSH_NONE;
 }
 
-Picks bsh_collect(float3 x_10, float scale_2, uint seed_1)
+Picks bsh_collect(float3 x_12, float3 r_4, float4 rl_4, uint seed_1)
 {
     Picks picks = (Picks)0;
     uint h_1 = (uint)0;
@@ -1233,52 +1362,52 @@ Picks bsh_collect(float3 x_10, float scale_2, uint seed_1)
 
     picks.n = 0u;
     h_1 = seed_1;
-    const uint _e9 = bsh_first(BSH);
-    const uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_10, scale_2);
-    i_4 = _e10;
+    const uint _e10 = bsh_first(BSH);
+    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_4, rl_4);
+    i_4 = _e11;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e43 = i_4;
-            uint _e46 = asuint(bsh_nodes.Load(20+_e43*32));
-            const uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_10, scale_2);
-            i_4 = _e47;
+            uint _e44 = i_4;
+            uint _e47 = asuint(bsh_nodes.Load(20+_e44*32));
+            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_4, rl_4);
+            i_4 = _e48;
         }
         loop_init_1 = false;
-        uint _e12 = i_4;
-        if ((_e12 != BSH_NONE)) {
+        uint _e13 = i_4;
+        if ((_e13 != BSH_NONE)) {
         } else {
             break;
         }
         {
-            uint _e16 = picks.n;
-            const bool _e17 = reservoir_takes(_e16);
-            if (_e17) {
-                uint _e19 = picks.n;
-                picks.n = (_e19 + 1u);
-                uint _e22 = h_1;
-                const uint _e23 = pcg_hash(_e22);
-                h_1 = _e23;
+            uint _e17 = picks.n;
+            const bool _e18 = reservoir_takes(_e17);
+            if (_e18) {
+                uint _e20 = picks.n;
+                picks.n = (_e20 + 1u);
+                uint _e23 = h_1;
+                const uint _e24 = pcg_hash(_e23);
+                h_1 = _e24;
                 uint hi_4 = h_1;
-                uint _e25 = h_1;
-                const uint _e26 = pcg_hash(_e25);
-                h_1 = _e26;
-                uint _e28 = picks.n;
-                uint _e30 = h_1;
-                const uint _e31 = reservoir_slot(_e28, K, hi_4, _e30);
-                if ((_e31 < K)) {
-                    uint _e37 = i_4;
-                    uint _e40 = asuint(bsh_nodes.Load(24+_e37*32));
-                    picks.light[min(uint(_e31), 15u)] = _e40;
+                uint _e26 = h_1;
+                const uint _e27 = pcg_hash(_e26);
+                h_1 = _e27;
+                uint _e29 = picks.n;
+                uint _e31 = h_1;
+                const uint _e32 = reservoir_slot(_e29, K, hi_4, _e31);
+                if ((_e32 < K)) {
+                    uint _e38 = i_4;
+                    uint _e41 = asuint(bsh_nodes.Load(24+_e38*32));
+                    picks.light[min(uint(_e32), 15u)] = _e41;
                 }
             }
         }
     }
-    Picks _e48 = picks;
-    const Picks picks_1 = _e48;
+    Picks _e49 = picks;
+    const Picks picks_1 = _e49;
     return picks_1;
 }
 
@@ -1295,40 +1424,40 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_11, float3 n_15, float3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps)
+Connection connect(uint li, float3 x_13, float3 n_15, float3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps)
 {
     Connection c_7 = (Connection)0;
-    bool local_18 = (bool)0;
+    bool local_20 = (bool)0;
 
     c_7.e = (0.0).xxx;
     GpuLight l_8 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     const float3 _e17 = light_point(l_8, u1_2, u2_2);
     c_7.y = _e17;
     float3 _e20 = c_7.y;
-    float _e23 = asfloat(r2_2.Load(li*4));
-    const float _e25 = connection_cosine(x_11, _e20, n_15, ng_1, (s_1 * _e23));
+    float _e23 = asfloat(r2_3.Load(li*4));
+    const float _e25 = connection_cosine(x_13, _e20, n_15, ng_1, (s_1 * _e23));
     c_7.cos_x = _e25;
     float _e27 = c_7.cos_x;
     if (!((_e27 <= 0.0))) {
         float3 _e36 = c_7.y;
-        const bool _e37 = occluded((x_11 + (ng_1 * eps)), _e36);
-        local_18 = _e37;
+        const bool _e37 = occluded((x_13 + (ng_1 * eps)), _e36);
+        local_20 = _e37;
     } else {
-        local_18 = true;
+        local_20 = true;
     }
-    bool _e39 = local_18;
+    bool _e39 = local_20;
     if (_e39) {
         Connection _e40 = c_7;
         const Connection connection = _e40;
         return connection;
     }
     float3 _e42 = c_7.y;
-    float3 v_9 = (x_11 - _e42);
-    float d2_8 = dot(v_9, v_9);
-    const float3 _e49 = light_intensity(l_8, (v_9 / (sqrt(d2_8)).xxx));
+    float3 v_11 = (x_13 - _e42);
+    float d2_9 = dot(v_11, v_11);
+    const float3 _e49 = light_intensity(l_8, (v_11 / (sqrt(d2_9)).xxx));
     float _e51 = c_7.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_8, (s_1 * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_9, (s_1 * _e54), w_res);
     c_7.e = (_e49 * _e56);
     Connection _e58 = c_7;
     const Connection connection_1 = _e58;
@@ -1341,56 +1470,77 @@ float mis_weight(float pdf_a_1, float pdf_b_1)
     return _e2;
 }
 
-float select_pdf(uint li_1, float3 x_12, float3 n_16, float3 r_1, float4 lobe_3, uint nee, bool in_range_1)
+GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
+    GpuLightCone ret = (GpuLightCone)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.axis = arg2;
+    ret.cos_o = arg3;
+    ret.phi = arg4;
+    ret.cos_e = arg5;
+    ret.bvh_leaf = arg6;
+    ret.pad = arg7;
+    return ret;
+}
+
+float light_range_scale(uint li_1, float3 x_14, float3 r_5, float4 rl_5)
+{
+    GpuLightCone c_12 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_5, c_12.center_, c_12.radius, x_14, r_5);
+    return _e9;
+}
+
+float select_pdf(uint li_2, float3 x_15, float3 n_16, float3 r_6, float4 lobe_5, uint nee, bool in_range_1)
 {
     const float _e8 = reservoir_select_pdf(nee, in_range_1, K);
     return _e8;
 }
 
-float light_pdf_selected(uint li_2, float3 x_13, float4 lobe_4, float3 y_2, float sel)
+float light_pdf_selected(uint li_3, float3 x_16, float3 r_7, float4 lobe_6, float3 y_2, float sel)
 {
-    GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
-    float3 v_10 = (x_13 - y_2);
-    float d2_9 = dot(v_10, v_10);
-    const float3 _e10 = light_normal(l_9);
-    float cos_y_1 = ((d2_9 > 0.0) ? dot(_e10, (v_10 / (sqrt(d2_9)).xxx)) : 0.0);
-    const float _e19 = range_scale(lobe_4);
-    float _e22 = asfloat(rt2_4.Load(li_2*4));
-    const float _e24 = light_area(l_9);
-    const float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_9, _e24, cos_y_1);
-    return _e25;
+    GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
+    float3 v_12 = (x_16 - y_2);
+    float d2_10 = dot(v_12, v_12);
+    const float3 _e11 = light_normal(l_9);
+    float cos_y_1 = ((d2_10 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_10)).xxx)) : 0.0);
+    const float4 _e20 = range_lobe(lobe_6);
+    const float _e21 = light_range_scale(li_3, x_16, r_7, _e20);
+    float _e24 = asfloat(rt2_4.Load(li_3*4));
+    const float _e26 = light_area(l_9);
+    const float _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_10, _e26, cos_y_1);
+    return _e27;
 }
 
-float light_pdf(uint li_3, float3 x_14, float3 n_17, float3 r_2, float4 lobe_5, float3 y_3, uint nee_1, bool in_range_2)
+float light_pdf(uint li_4, float3 x_17, float3 n_17, float3 r_8, float4 lobe_7, float3 y_3, uint nee_1, bool in_range_2)
 {
-    const float _e8 = select_pdf(li_3, x_14, n_17, r_2, lobe_5, nee_1, in_range_2);
-    const float _e9 = light_pdf_selected(li_3, x_14, lobe_5, y_3, _e8);
+    const float _e8 = select_pdf(li_4, x_17, n_17, r_8, lobe_7, nee_1, in_range_2);
+    const float _e9 = light_pdf_selected(li_4, x_17, r_8, lobe_7, y_3, _e8);
     return _e9;
 }
 
-float3 shade_pick(uint li_4, float3 x_15, float3 n_18, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_3, float4 lobe_6, float w_6, uint nee_2, float u1_3, float u2_3)
+float3 shade_pick(uint li_5, float3 x_18, float3 n_18, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_9, float4 lobe_8, float4 rl_6, float w_6, uint nee_2, float u1_3, float u2_3)
 {
     float mis = 1.0;
 
-    const float _e12 = range_scale(lobe_6);
-    float _e15 = params.eps;
-    const Connection _e16 = connect(li_4, x_15, n_18, ng_2, _e12, w_6, u1_3, u2_3, _e15);
-    if ((_e16.cos_x <= 0.0)) {
+    const float _e13 = light_range_scale(li_5, x_18, r_9, rl_6);
+    float _e16 = params.eps;
+    const Connection _e17 = connect(li_5, x_18, n_18, ng_2, _e13, w_6, u1_3, u2_3, _e16);
+    if ((_e17.cos_x <= 0.0)) {
         return (0.0).xxx;
     }
-    float3 l_10 = normalize((_e16.y - x_15));
-    GpuLight _e29 = ConstructGpuLight(asfloat(lights.Load3(li_4*64+0)), asuint(lights.Load(li_4*64+12)), asfloat(lights.Load3(li_4*64+16)), asfloat(lights.Load(li_4*64+28)), asfloat(lights.Load3(li_4*64+32)), asfloat(lights.Load(li_4*64+44)), asfloat(lights.Load3(li_4*64+48)), asuint(lights.Load(li_4*64+60)));
-    const float _e30 = light_area(_e29);
-    if ((_e30 > 0.0)) {
-        const float _e35 = light_pdf(li_4, x_15, n_18, r_3, lobe_6, _e16.y, nee_2, true);
-        const float _e37 = specular_probability(lobe_6);
-        const float _e38 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e37);
-        const float _e39 = mis_weight(_e35, _e38);
-        mis = _e39;
+    float3 l_10 = normalize((_e17.y - x_18));
+    GpuLight _e30 = ConstructGpuLight(asfloat(lights.Load3(li_5*64+0)), asuint(lights.Load(li_5*64+12)), asfloat(lights.Load3(li_5*64+16)), asfloat(lights.Load(li_5*64+28)), asfloat(lights.Load3(li_5*64+32)), asfloat(lights.Load(li_5*64+44)), asfloat(lights.Load3(li_5*64+48)), asuint(lights.Load(li_5*64+60)));
+    const float _e31 = light_area(_e30);
+    if ((_e31 > 0.0)) {
+        const float _e36 = light_pdf(li_5, x_18, n_18, r_9, lobe_8, _e17.y, nee_2, true);
+        const float _e38 = specular_probability(lobe_8);
+        const float _e39 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e38);
+        const float _e40 = mis_weight(_e36, _e39);
+        mis = _e40;
     }
-    const float3 _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_18, wo_1, l_10);
-    float _e48 = mis;
-    return ((_e45 * _e16.e) * _e48);
+    const float3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_18, wo_1, l_10);
+    float _e49 = mis;
+    return ((_e46 * _e17.e) * _e49);
 }
 
 GpuPathVertex ConstructGpuPathVertex(float3 arg0, uint arg1, float3 arg2, uint arg3, float3 arg4, float arg5, float3 arg6, float arg7, float3 arg8, float arg9) {
@@ -1436,61 +1586,60 @@ void main(uint3 gid : SV_DispatchThreadID)
         candidates.Store(i_5*4, asuint(0u));
         return;
     }
-    float3 x_16 = vtx.position;
+    float3 x_19 = vtx.position;
     float3 n_21 = vtx.normal;
     float3 ng_3 = vtx.gnormal;
     GpuMaterial m_2 = ConstructGpuMaterial(asfloat(materials.Load3(vtx.material*48+0)), asfloat(materials.Load(vtx.material*48+12)), asfloat(materials.Load3(vtx.material*48+16)), asfloat(materials.Load(vtx.material*48+28)), asfloat(materials.Load3(vtx.material*48+32)), asfloat(materials.Load(vtx.material*48+44)));
     float3 wo_2 = vtx.wo;
     const float3 _e23 = mirror_dir(n_21, wo_2);
     const float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_21, wo_2));
-    const float _e31 = range_scale(_e30);
-    float scale_3 = sqrt(_e31);
-    uint _e35 = params.seed;
-    uint _e38 = params.frame;
-    const uint _e39 = point_stream(_e35, i_5, _e38);
-    const uint _e40 = pick_stream(_e39);
-    h = _e40;
-    const Picks _e45 = bsh_collect(x_16, scale_3, _e39);
-    candidates.Store(i_5*4, asuint(_e45.n));
-    const float _e51 = reservoir_weight(_e45.n, K);
+    const float4 _e31 = range_lobe(_e30);
+    uint _e34 = params.seed;
+    uint _e37 = params.frame;
+    const uint _e38 = point_stream(_e34, i_5, _e37);
+    const uint _e39 = pick_stream(_e38);
+    h = _e39;
+    const Picks _e44 = bsh_collect(x_19, _e23, _e31, _e38);
+    candidates.Store(i_5*4, asuint(_e44.n));
+    const float _e50 = reservoir_weight(_e44.n, K);
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e75 = s;
-            s = (_e75 + 1u);
+            uint _e74 = s;
+            s = (_e74 + 1u);
         }
         loop_init_2 = false;
-        uint _e54 = s;
-        if ((_e54 < min(_e45.n, K))) {
+        uint _e53 = s;
+        if ((_e53 < min(_e44.n, K))) {
         } else {
             break;
         }
         {
-            uint _e59 = h;
-            const uint _e60 = pcg_hash(_e59);
-            h = _e60;
-            uint _e61 = h;
-            const float _e62 = xi_from_bits(_e61);
-            uint _e63 = h;
-            const uint _e64 = pcg_hash(_e63);
-            h = _e64;
-            float3 _e65 = sum;
-            uint _e67 = s;
-            uint _e70 = h;
-            const float _e71 = xi_from_bits(_e70);
-            const float3 _e72 = shade_pick(_e45.light[min(uint(_e67), 15u)], x_16, n_21, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71);
-            sum = (_e65 + _e72);
+            uint _e58 = h;
+            const uint _e59 = pcg_hash(_e58);
+            h = _e59;
+            uint _e60 = h;
+            const float _e61 = xi_from_bits(_e60);
+            uint _e62 = h;
+            const uint _e63 = pcg_hash(_e62);
+            h = _e63;
+            float3 _e64 = sum;
+            uint _e66 = s;
+            uint _e69 = h;
+            const float _e70 = xi_from_bits(_e69);
+            const float3 _e71 = shade_pick(_e44.light[min(uint(_e66), 15u)], x_19, n_21, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
+            sum = (_e64 + _e71);
         }
     }
-    float3 _e78 = sum;
-    float3 add = (vtx.weight * _e78);
-    const bool _e80 = finite3_(add);
-    if (_e80) {
-        float4 _e83 = asfloat(radiance.Load4(i_5*16));
-        radiance.Store4(i_5*16, asuint((_e83 + float4(add, 0.0))));
+    float3 _e77 = sum;
+    float3 add = (vtx.weight * _e77);
+    const bool _e79 = finite3_(add);
+    if (_e79) {
+        float4 _e82 = asfloat(radiance.Load4(i_5*16));
+        radiance.Store4(i_5*16, asuint((_e82 + float4(add, 0.0))));
         return;
     } else {
         return;

@@ -9,6 +9,17 @@ struct GpuLight {
     uint ies_base;
 };
 
+struct GpuLightCone {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
+
 struct GpuGeoNode {
     float3 bmin;
     uint first;
@@ -130,6 +141,7 @@ ByteAddressBuffer geo_tris : register(t7);
 ByteAddressBuffer lights : register(t2);
 ByteAddressBuffer r2_3 : register(t4);
 ByteAddressBuffer rt2_4 : register(t3);
+ByteAddressBuffer light_cones : register(t2, space1);
 ByteAddressBuffer light_bvh : register(t3, space1);
 cbuffer params : register(b0) { ShadeParams params; }
 ByteAddressBuffer vertices_ : register(t1);
@@ -484,19 +496,35 @@ float specular_probability(float4 lobe)
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
-float receiver_peak(float4 lobe_1)
+float specular_peak_factor(float4 lobe_1)
 {
-    const float _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+    const float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5) / (_e6 + max(lobe_1.w, 0.0)));
 }
 
-float range_scale(float4 lobe_2)
+float receiver_peak(float4 lobe_2)
 {
-    if ((lobe_2.y <= 0.0)) {
+    const float _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+float range_scale(float4 lobe_3)
+{
+    if ((lobe_3.y <= 0.0)) {
         return 1.0;
     }
-    const float _e5 = receiver_peak(lobe_2);
+    const float _e5 = receiver_peak(lobe_3);
     return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+float4 range_lobe(float4 lobe_4)
+{
+    if ((lobe_4.y <= 0.0)) {
+        return float4(1.0, 0.0, 1.0, 1.0);
+    }
+    const float _e10 = specular_peak_factor(lobe_4);
+    const float _e14 = range_scale(lobe_4);
+    return float4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
 float3 mirror_dir(float3 n_7, float3 v_3)
@@ -613,17 +641,33 @@ float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d)
     return _e27;
 }
 
-float light_importance(float3 center_3, float radius_3, float phi_1, float3 axis_2, float cos_o_2, float cos_e_1, float3 p_3, float3 n_9)
+float range_scale_at(float4 rl, float cos_t)
+{
+    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(float4 rl_1, float3 center_3, float radius_3, float3 p_3, float3 r)
+{
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    const float _e9 = cone_cos_toward(center_3, radius_3, p_3, r);
+    const float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis_2, float cos_o_2, float cos_e_1, float3 p_4, float3 n_9)
 {
     float imp = (float)0;
 
-    const float4 _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    const float4 _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
     if ((_e8.x <= cos_e_1)) {
         return 0.0;
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_9, n_9) > 0.0)) {
-        float3 v_9 = (center_3 - p_3);
+        float3 v_9 = (center_4 - p_4);
         float dist2_3 = dot(v_9, v_9);
         float cos_i_1 = dot(((dist2_3 > 0.0) ? (v_9 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0)), n_9);
         float _e33 = imp;
@@ -635,12 +679,12 @@ float light_importance(float3 center_3, float radius_3, float phi_1, float3 axis
     return max(_e44, 0.0);
 }
 
-float glossy_importance(float3 center_4, float radius_4, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_4, float3 n_10, float3 r, float4 lobe_3)
+float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_5, float3 n_10, float3 r_1, float4 lobe_5)
 {
     bool local_10 = (bool)0;
 
-    const float _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
-    const float _e11 = cone_cos_toward(center_4, radius_4, p_4, n_10);
+    const float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
+    const float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_10);
     if (!((_e10 <= 0.0))) {
         local_10 = (_e11 <= 0.0);
     } else {
@@ -650,21 +694,21 @@ float glossy_importance(float3 center_4, float radius_4, float phi_2, float3 axi
     if (_e20) {
         return 0.0;
     }
-    const float _e22 = cone_cos_toward(center_4, radius_4, p_4, r);
+    const float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_1);
     const float _e27 = safe_sqrt((0.5 + (0.5 * _e22)));
-    const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_3.z);
-    const float _e39 = smith_root(lobe_3.w, lobe_3.z);
-    float spec = (((lobe_3.y * _e33) * 0.25) / _e39);
-    return (_e10 * (((lobe_3.x * INV_PI) * _e11) + spec));
+    const float _e33 = ggx_d(_e27, (1.0 - (_e27 * _e27)), lobe_5.z);
+    const float _e39 = smith_root(lobe_5.w, lobe_5.z);
+    float spec = (((lobe_5.y * _e33) * 0.25) / _e39);
+    return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec));
 }
 
-float receiver_importance(float3 center_5, float radius_5, float phi_3, float3 axis_4, float cos_o_4, float cos_e_3, float3 p_5, float3 n_11, float3 r_1, float4 lobe_4)
+float receiver_importance(float3 center_6, float radius_6, float phi_3, float3 axis_4, float cos_o_4, float cos_e_3, float3 p_6, float3 n_11, float3 r_2, float4 lobe_6)
 {
-    if ((lobe_4.y <= 0.0)) {
-        const float _e13 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_11);
+    if ((lobe_6.y <= 0.0)) {
+        const float _e13 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_11);
         return _e13;
     }
-    const float _e14 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_11, r_1, lobe_4);
+    const float _e14 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_11, r_2, lobe_6);
     return _e14;
 }
 
@@ -743,14 +787,14 @@ float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_4, float3 c_3, f
 
     float3 e1_ = (b_4 - a_4);
     float3 e2_ = (c_3 - a_4);
-    float3 p_6 = cross(d_2, e2_);
-    float det = dot(e1_, p_6);
+    float3 p_7 = cross(d_2, e2_);
+    float det = dot(e1_, p_7);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
     float3 s_6 = (o_1 - a_4);
-    float u_3 = (dot(s_6, p_6) * inv_1);
+    float u_3 = (dot(s_6, p_7) * inv_1);
     if (!((u_3 < 0.0))) {
         local_12 = (u_3 > 1.0);
     } else {
@@ -771,15 +815,15 @@ float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_4, float3 c_3, f
     if (_e42) {
         return -1.0;
     }
-    float t_2 = (dot(e2_, q) * inv_1);
-    if ((t_2 > t_min)) {
-        local_14 = (t_2 < t_max_1);
+    float t_3 = (dot(e2_, q) * inv_1);
+    if ((t_3 > t_min)) {
+        local_14 = (t_3 < t_max_1);
     } else {
         local_14 = false;
     }
     bool _e51 = local_14;
     if (_e51) {
-        return t_2;
+        return t_3;
     }
     return -1.0;
 }
@@ -915,9 +959,9 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_3 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        GpuTriangle t_4 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_3, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -1028,6 +1072,26 @@ float mis_weight(float pdf_a_1, float pdf_b_1)
     return _e2;
 }
 
+GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
+    GpuLightCone ret = (GpuLightCone)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.axis = arg2;
+    ret.cos_o = arg3;
+    ret.phi = arg4;
+    ret.cos_e = arg5;
+    ret.bvh_leaf = arg6;
+    ret.pad = arg7;
+    return ret;
+}
+
+float light_range_scale(uint li_1, float3 x_5, float3 r_3, float4 rl_2)
+{
+    GpuLightCone c_8 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_2, c_8.center_, c_8.radius, x_5, r_3);
+    return _e9;
+}
+
 GpuLightBvhNode ConstructGpuLightBvhNode(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
     GpuLightBvhNode ret = (GpuLightBvhNode)0;
     ret.center_ = arg0;
@@ -1053,14 +1117,14 @@ uint light_bvh_count(uint nodes_1)
     return ((NagaBufferLength(light_bvh) - 0) / 48);
 }
 
-float bvh_importance(uint nodes_2, uint i_2, float3 x_5, float3 n_13, float3 r_2, float4 lobe_5)
+float bvh_importance(uint nodes_2, uint i_2, float3 x_6, float3 n_13, float3 r_4, float4 lobe_7)
 {
     const GpuLightBvhNode _e6 = light_bvh_node(nodes_2, i_2);
-    const float _e13 = receiver_importance(_e6.center_, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_5, n_13, r_2, lobe_5);
+    const float _e13 = receiver_importance(_e6.center_, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_6, n_13, r_4, lobe_7);
     return _e13;
 }
 
-float bvh_first(uint nodes_3, uint i_3, float3 x_6, float3 n_14, float3 r_3, float4 lobe_6)
+float bvh_first(uint nodes_3, uint i_3, float3 x_7, float3 n_14, float3 r_5, float4 lobe_8)
 {
     bool local_18 = (bool)0;
 
@@ -1076,8 +1140,8 @@ float bvh_first(uint nodes_3, uint i_3, float3 x_6, float3 n_14, float3 r_3, flo
     if (_e17) {
         return -1.0;
     }
-    const float _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_6, n_14, r_3, lobe_6);
-    const float _e22 = bvh_importance(nodes_3, j, x_6, n_14, r_3, lobe_6);
+    const float _e21 = bvh_importance(nodes_3, (i_3 + 1u), x_7, n_14, r_5, lobe_8);
+    const float _e22 = bvh_importance(nodes_3, j, x_7, n_14, r_5, lobe_8);
     const float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -1095,7 +1159,7 @@ BvhPick bvh_pick_none()
     return bvhpick;
 }
 
-BvhPick light_bvh_sample(uint nodes_4, float3 x_7, float3 n_15, float3 r_4, float4 lobe_7, float u_in)
+BvhPick light_bvh_sample(uint nodes_4, float3 x_8, float3 n_15, float3 r_6, float4 lobe_9, float u_in)
 {
     BvhPick pick = (BvhPick)0;
     float u_2 = (float)0;
@@ -1122,7 +1186,7 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_7, float3 n_15, float3 r_4, floa
             if ((_e17.second == LIGHT_BVH_LEAF)) {
                 uint _e21 = i_4;
                 if (!((_e21 > 0u))) {
-                    const float _e28 = bvh_importance(nodes_4, 0u, x_7, n_15, r_4, lobe_7);
+                    const float _e28 = bvh_importance(nodes_4, 0u, x_8, n_15, r_6, lobe_9);
                     local_19 = (_e28 > 0.0);
                 } else {
                     local_19 = true;
@@ -1138,7 +1202,7 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_7, float3 n_15, float3 r_4, floa
                 return bvhpick_1;
             }
             uint _e38 = i_4;
-            const float _e39 = bvh_first(nodes_4, _e38, x_7, n_15, r_4, lobe_7);
+            const float _e39 = bvh_first(nodes_4, _e38, x_8, n_15, r_6, lobe_9);
             if ((_e39 < 0.0)) {
                 BvhPick _e42 = pick;
                 const BvhPick bvhpick_2 = _e42;
@@ -1160,43 +1224,44 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_7, float3 n_15, float3 r_4, floa
     return bvhpick_3;
 }
 
-float light_pdf_selected(uint li_1, float3 x_8, float4 lobe_8, float3 y_1, float sel)
+float light_pdf_selected(uint li_2, float3 x_9, float3 r_7, float4 lobe_10, float3 y_1, float sel)
 {
-    GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_1*64+0)), asuint(lights.Load(li_1*64+12)), asfloat(lights.Load3(li_1*64+16)), asfloat(lights.Load(li_1*64+28)), asfloat(lights.Load3(li_1*64+32)), asfloat(lights.Load(li_1*64+44)), asfloat(lights.Load3(li_1*64+48)), asuint(lights.Load(li_1*64+60)));
-    float3 v_12 = (x_8 - y_1);
+    GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
+    float3 v_12 = (x_9 - y_1);
     float d2_10 = dot(v_12, v_12);
-    const float3 _e10 = light_normal(l_9);
-    float cos_y_1 = ((d2_10 > 0.0) ? dot(_e10, (v_12 / (sqrt(d2_10)).xxx)) : 0.0);
-    const float _e19 = range_scale(lobe_8);
-    float _e22 = asfloat(rt2_4.Load(li_1*4));
-    const float _e24 = light_area(l_9);
-    const float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_10, _e24, cos_y_1);
-    return _e25;
+    const float3 _e11 = light_normal(l_9);
+    float cos_y_1 = ((d2_10 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_10)).xxx)) : 0.0);
+    const float4 _e20 = range_lobe(lobe_10);
+    const float _e21 = light_range_scale(li_2, x_9, r_7, _e20);
+    float _e24 = asfloat(rt2_4.Load(li_2*4));
+    const float _e26 = light_area(l_9);
+    const float _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_10, _e26, cos_y_1);
+    return _e27;
 }
 
-float3 shade_pick(uint li_2, float3 x_9, float3 n_16, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_5, float4 lobe_9, float w_4, uint nee, float u1_3, float u2_3)
+float3 shade_pick(uint li_3, float3 x_10, float3 n_16, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_8, float4 lobe_11, float4 rl_3, float w_4, uint nee, float u1_3, float u2_3)
 {
     float mis = 1.0;
 
-    const float _e12 = range_scale(lobe_9);
-    float _e15 = params.eps;
-    const Connection _e16 = connect(li_2, x_9, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15);
-    if ((_e16.cos_x <= 0.0)) {
+    const float _e13 = light_range_scale(li_3, x_10, r_8, rl_3);
+    float _e16 = params.eps;
+    const Connection _e17 = connect(li_3, x_10, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16);
+    if ((_e17.cos_x <= 0.0)) {
         return (0.0).xxx;
     }
-    float3 l_10 = normalize((_e16.y - x_9));
-    GpuLight _e29 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
-    const float _e30 = light_area(_e29);
-    if ((_e30 > 0.0)) {
-        const float _e36 = light_pdf_selected(li_2, x_9, lobe_9, _e16.y, (1.0 / w_4));
-        const float _e38 = specular_probability(lobe_9);
-        const float _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
-        const float _e40 = mis_weight(_e36, _e39);
-        mis = _e40;
+    float3 l_10 = normalize((_e17.y - x_10));
+    GpuLight _e30 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
+    const float _e31 = light_area(_e30);
+    if ((_e31 > 0.0)) {
+        const float _e37 = light_pdf_selected(li_3, x_10, r_8, lobe_11, _e17.y, (1.0 / w_4));
+        const float _e39 = specular_probability(lobe_11);
+        const float _e40 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e39);
+        const float _e41 = mis_weight(_e37, _e40);
+        mis = _e41;
     }
-    const float3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
-    float _e49 = mis;
-    return ((_e46 * _e16.e) * _e49);
+    const float3 _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
+    float _e50 = mis;
+    return ((_e47 * _e17.e) * _e50);
 }
 
 GpuPathVertex ConstructGpuPathVertex(float3 arg0, uint arg1, float3 arg2, uint arg3, float3 arg4, float arg5, float3 arg6, float arg7, float3 arg8, float arg9) {
@@ -1241,49 +1306,48 @@ void main(uint3 gid : SV_DispatchThreadID)
         candidates.Store(i_5*4, asuint(0u));
         return;
     }
-    float3 x_10 = vtx.position;
+    float3 x_11 = vtx.position;
     float3 n_19 = vtx.normal;
     float3 ng_3 = vtx.gnormal;
     GpuMaterial m_2 = ConstructGpuMaterial(asfloat(materials.Load3(vtx.material*48+0)), asfloat(materials.Load(vtx.material*48+12)), asfloat(materials.Load3(vtx.material*48+16)), asfloat(materials.Load(vtx.material*48+28)), asfloat(materials.Load3(vtx.material*48+32)), asfloat(materials.Load(vtx.material*48+44)));
     float3 wo_2 = vtx.wo;
     const float3 _e23 = mirror_dir(n_19, wo_2);
     const float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(n_19, wo_2));
-    const float _e31 = range_scale(_e30);
-    float scale = sqrt(_e31);
-    uint _e35 = params.seed;
-    uint _e38 = params.frame;
-    const uint _e39 = point_stream(_e35, i_5, _e38);
-    const uint _e40 = pick_stream(_e39);
-    h = _e40;
+    const float4 _e31 = range_lobe(_e30);
+    uint _e34 = params.seed;
+    uint _e37 = params.frame;
+    const uint _e38 = point_stream(_e34, i_5, _e37);
+    const uint _e39 = pick_stream(_e38);
+    h = _e39;
     candidates.Store(i_5*4, asuint(0u));
-    uint _e48 = h;
-    const uint _e49 = pcg_hash(_e48);
-    h = _e49;
-    uint _e50 = h;
-    const float _e51 = xi_from_bits(_e50);
-    const BvhPick _e53 = light_bvh_sample(BVH, x_10, n_19, _e23, _e30, _e51);
-    uint li_3 = _e53.light;
-    float pmf_1 = _e53.pmf;
-    uint _e56 = h;
-    const uint _e57 = pcg_hash(_e56);
-    h = _e57;
-    uint _e58 = h;
-    const float _e59 = xi_from_bits(_e58);
-    uint _e60 = h;
-    const uint _e61 = pcg_hash(_e60);
-    h = _e61;
-    uint _e62 = h;
-    const float _e63 = xi_from_bits(_e62);
+    uint _e47 = h;
+    const uint _e48 = pcg_hash(_e47);
+    h = _e48;
+    uint _e49 = h;
+    const float _e50 = xi_from_bits(_e49);
+    const BvhPick _e52 = light_bvh_sample(BVH, x_11, n_19, _e23, _e30, _e50);
+    uint li_4 = _e52.light;
+    float pmf_1 = _e52.pmf;
+    uint _e55 = h;
+    const uint _e56 = pcg_hash(_e55);
+    h = _e56;
+    uint _e57 = h;
+    const float _e58 = xi_from_bits(_e57);
+    uint _e59 = h;
+    const uint _e60 = pcg_hash(_e59);
+    h = _e60;
+    uint _e61 = h;
+    const float _e62 = xi_from_bits(_e61);
     if ((pmf_1 > 0.0)) {
-        const float3 _e69 = shade_pick(li_3, x_10, n_19, ng_3, m_2, wo_2, _e23, _e30, (1.0 / pmf_1), 0u, _e59, _e63);
-        sum = _e69;
+        const float3 _e68 = shade_pick(li_4, x_11, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, (1.0 / pmf_1), 0u, _e58, _e62);
+        sum = _e68;
     }
-    float3 _e71 = sum;
-    float3 add = (vtx.weight * _e71);
-    const bool _e73 = finite3_(add);
-    if (_e73) {
-        float4 _e76 = asfloat(radiance.Load4(i_5*16));
-        radiance.Store4(i_5*16, asuint((_e76 + float4(add, 0.0))));
+    float3 _e70 = sum;
+    float3 add = (vtx.weight * _e70);
+    const bool _e72 = finite3_(add);
+    if (_e72) {
+        float4 _e75 = asfloat(radiance.Load4(i_5*16));
+        radiance.Store4(i_5*16, asuint((_e75 + float4(add, 0.0))));
         return;
     } else {
         return;

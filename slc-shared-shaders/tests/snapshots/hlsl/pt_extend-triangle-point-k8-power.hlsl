@@ -9,6 +9,17 @@ struct GpuLight {
     uint ies_base;
 };
 
+struct GpuLightCone {
+    float3 center_;
+    float radius;
+    float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
+};
+
 struct GpuGeoNode {
     float3 bmin;
     uint first;
@@ -133,9 +144,11 @@ static const float TEMPORAL_CHANGE_HIGH = 8.0;
 static const float TEMPORAL_MIN_WEIGHT = 0.01;
 static const uint K = 8u;
 static const uint BVH = 0u;
+static const uint BSH = 0u;
 
 ByteAddressBuffer geo_nodes : register(t5);
 ByteAddressBuffer geo_tris : register(t6);
+ByteAddressBuffer light_cones : register(t2, space1);
 ByteAddressBuffer rt2_2 : register(t2);
 ByteAddressBuffer lights : register(t1);
 cbuffer params : register(b0) { PtParams params; }
@@ -161,6 +174,11 @@ uint mul_lo_u32_(uint a, uint b)
 uint add_wrap_u32_(uint a_1, uint b_1)
 {
     return (a_1 + b_1);
+}
+
+float f32_from_bits(uint u_1)
+{
+    return asfloat(u_1);
 }
 
 float xi_from_bits(uint bits)
@@ -224,6 +242,15 @@ float bsh_scaled_radius(BshNode node, float scale)
         return (node.extent + (scale * (node.radius - node.extent)));
     }
     return (node.radius * scale);
+}
+
+float bsh_range_bound(BshNode node_1)
+{
+    if ((node_1.child == BSH_NONE)) {
+        return (node_1.radius - node_1.extent);
+    }
+    const float _e8 = f32_from_bits(node_1.light);
+    return _e8;
 }
 
 float reservoir_weight(uint n, uint k)
@@ -323,9 +350,9 @@ float3 onb_to_local(float3 n_4, float3 w_1)
 
 float3 cosine_direction(float3 n_5, float u1_, float u2_)
 {
-    float r_3 = sqrt(u1_);
+    float r_7 = sqrt(u1_);
     float phi = (6.2831855 * u2_);
-    const float3 _e16 = onb_to_world(n_5, float3((r_3 * cos(phi)), (r_3 * sin(phi)), sqrt(max((1.0 - u1_), 0.0))));
+    const float3 _e16 = onb_to_world(n_5, float3((r_7 * cos(phi)), (r_7 * sin(phi)), sqrt(max((1.0 - u1_), 0.0))));
     return normalize(_e16);
 }
 
@@ -486,19 +513,35 @@ float specular_probability(float4 lobe)
     return clamp((lobe.y / (lobe.y + lobe.x)), 0.1, 0.9);
 }
 
-float receiver_peak(float4 lobe_1)
+float specular_peak_factor(float4 lobe_1)
 {
-    const float _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return (lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10)));
+    const float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return ((lobe_1.y * 0.5) / (_e6 + max(lobe_1.w, 0.0)));
 }
 
-float range_scale(float4 lobe_2)
+float receiver_peak(float4 lobe_2)
 {
-    if ((lobe_2.y <= 0.0)) {
+    const float _e2 = specular_peak_factor(lobe_2);
+    return (lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z)));
+}
+
+float range_scale(float4 lobe_3)
+{
+    if ((lobe_3.y <= 0.0)) {
         return 1.0;
     }
-    const float _e5 = receiver_peak(lobe_2);
+    const float _e5 = receiver_peak(lobe_3);
     return clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+float4 range_lobe(float4 lobe_4)
+{
+    if ((lobe_4.y <= 0.0)) {
+        return float4(1.0, 0.0, 1.0, 1.0);
+    }
+    const float _e10 = specular_peak_factor(lobe_4);
+    const float _e14 = range_scale(lobe_4);
+    return float4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
 float3 mirror_dir(float3 n_8, float3 v_4)
@@ -576,16 +619,64 @@ float bsdf_pdf(float3 n_10, float3 v_6, float3 l_3, float alpha_10, float p_spec
     return ((p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6));
 }
 
-float ray_inverse(float x_2)
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
 {
-    return (1.0 / ((abs(x_2) < 1e-30) ? 1e-30 : x_2));
+    if ((cos_a > cos_b)) {
+        return 1.0;
+    }
+    return ((cos_a * cos_b) + (sin_a * sin_b));
 }
 
-float3 ray_inverse3_(float3 d_1)
+float safe_sqrt(float x_2)
 {
-    const float _e2 = ray_inverse(d_1.x);
-    const float _e4 = ray_inverse(d_1.y);
-    const float _e6 = ray_inverse(d_1.z);
+    return sqrt(max(x_2, 0.0));
+}
+
+float subtended_cos(float dist2_, float r2_)
+{
+    const float _e5 = safe_sqrt((1.0 - (r2_ / dist2_)));
+    return ((dist2_ <= r2_) ? -1.0 : _e5);
+}
+
+float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
+{
+    float3 v_9 = (center_ - p);
+    float dist2_1 = dot(v_9, v_9);
+    float3 w_4 = ((dist2_1 > 0.0) ? (v_9 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    const float _e17 = subtended_cos(dist2_1, (radius * radius));
+    float cos_i = dot(w_4, d_1);
+    const float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
+    const float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
+    const float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float range_scale_at(float4 rl, float cos_t)
+{
+    float t_2 = (((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0);
+    return clamp((rl.x + ((rl.y * rl.z) / (t_2 * t_2))), 1.0, (rl.w * rl.w));
+}
+
+float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_1, float3 r_1)
+{
+    if ((rl_1.w <= 1.0)) {
+        return 1.0;
+    }
+    const float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_1);
+    const float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float ray_inverse(float x_3)
+{
+    return (1.0 / ((abs(x_3) < 1e-30) ? 1e-30 : x_3));
+}
+
+float3 ray_inverse3_(float3 d_2)
+{
+    const float _e2 = ray_inverse(d_2.x);
+    const float _e4 = ray_inverse(d_2.y);
+    const float _e6 = ray_inverse(d_2.z);
     return float3(_e2, _e4, _e6);
 }
 
@@ -626,11 +717,11 @@ float3 face_against(float3 n_11, float3 dir)
     return ((dot(n_11, dir) > 0.0) ? -(n_11) : n_11);
 }
 
-float3 barycentric(float3 p, float3 a_3, float3 b_3, float3 c_3)
+float3 barycentric(float3 p_2, float3 a_3, float3 b_3, float3 c_3)
 {
     float3 e1_ = (b_3 - a_3);
     float3 e2_ = (c_3 - a_3);
-    float3 q = (p - a_3);
+    float3 q = (p_2 - a_3);
     float d11_ = dot(e1_, e1_);
     float d12_ = dot(e1_, e2_);
     float d22_ = dot(e2_, e2_);
@@ -662,7 +753,7 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_2, float3 fac
     return ((dot(n_16, facing) < 0.0) ? -(n_16) : n_16);
 }
 
-float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_4, float3 c_4, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_3, float3 a_4, float3 b_4, float3 c_4, float t_min, float t_max_1)
 {
     bool local_14 = (bool)0;
     bool local_15 = (bool)0;
@@ -670,16 +761,16 @@ float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_4, float3 c_4, f
 
     float3 e1_1 = (b_4 - a_4);
     float3 e2_1 = (c_4 - a_4);
-    float3 p_1 = cross(d_2, e2_1);
-    float det = dot(e1_1, p_1);
+    float3 p_3 = cross(d_3, e2_1);
+    float det = dot(e1_1, p_3);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
     float3 s_5 = (o_1 - a_4);
-    float u_2 = (dot(s_5, p_1) * inv_1);
-    if (!((u_2 < 0.0))) {
-        local_14 = (u_2 > 1.0);
+    float u_3 = (dot(s_5, p_3) * inv_1);
+    if (!((u_3 < 0.0))) {
+        local_14 = (u_3 > 1.0);
     } else {
         local_14 = true;
     }
@@ -688,9 +779,9 @@ float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_4, float3 c_4, f
         return -1.0;
     }
     float3 q_1 = cross(s_5, e1_1);
-    float v_9 = (dot(d_2, q_1) * inv_1);
-    if (!((v_9 < 0.0))) {
-        local_15 = ((u_2 + v_9) > 1.0);
+    float v_10 = (dot(d_3, q_1) * inv_1);
+    if (!((v_10 < 0.0))) {
+        local_15 = ((u_3 + v_10) > 1.0);
     } else {
         local_15 = true;
     }
@@ -698,15 +789,15 @@ float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_4, float3 c_4, f
     if (_e42) {
         return -1.0;
     }
-    float t_2 = (dot(e2_1, q_1) * inv_1);
-    if ((t_2 > t_min)) {
-        local_16 = (t_2 < t_max_1);
+    float t_3 = (dot(e2_1, q_1) * inv_1);
+    if ((t_3 > t_min)) {
+        local_16 = (t_3 < t_max_1);
     } else {
         local_16 = false;
     }
     bool _e51 = local_16;
     if (_e51) {
-        return t_2;
+        return t_3;
     }
     return -1.0;
 }
@@ -718,10 +809,10 @@ float3 camera_dir(float3 forward, float3 right, float3 up, float px, float py, f
     return normalize(((forward + (right * sx)) + (up * sy)));
 }
 
-float jittered_pixel(uint coord, float u_1)
+float jittered_pixel(uint coord, float u_2)
 {
     const float _e2 = to_f32_(coord);
-    return (_e2 + u_1);
+    return (_e2 + u_2);
 }
 
 bool plays_roulette(uint depth)
@@ -816,12 +907,12 @@ GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3,
     return ret;
 }
 
-GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
+GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
 {
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
     uint sp = 0u;
-    uint node_1 = 0u;
+    uint node_2 = 0u;
     uint i = (uint)0;
 
     hit.t = t_max_2;
@@ -831,12 +922,12 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
         const GeoHit geohit = _e13;
         return geohit;
     }
-    const float3 _e14 = ray_inverse3_(d_3);
+    const float3 _e14 = ray_inverse3_(d_4);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e21 = node_1;
+        uint _e21 = node_2;
         GpuGeoNode n_17 = ConstructGpuGeoNode(asfloat(geo_nodes.Load3(_e21*32+0)), asuint(geo_nodes.Load(_e21*32+12)), asfloat(geo_nodes.Load3(_e21*32+16)), asuint(geo_nodes.Load(_e21*32+28)));
         float _e27 = hit.t;
         const float _e28 = ray_aabb(o_2, _e14, n_17.bmin, n_17.bmax, _e27);
@@ -860,9 +951,9 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_3 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
+                        GpuTriangle t_4 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_3, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -883,7 +974,7 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
                     uint _e68 = sp;
                     sp = (_e68 + 1u);
                 }
-                node_1 = n_17.first;
+                node_2 = n_17.first;
                 continue;
             }
         }
@@ -895,7 +986,7 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
         sp = (_e75 - 1u);
         uint _e78 = sp;
         uint _e80 = stack[min(uint(_e78), 63u)];
-        node_1 = _e80;
+        node_2 = _e80;
     }
     GeoHit _e81 = hit;
     const GeoHit geohit_2 = _e81;
@@ -908,7 +999,27 @@ float mis_weight(float pdf_a_1, float pdf_b_1)
     return _e2;
 }
 
-float select_pdf(uint li, float3 x_3, float3 n_13, float3 r_1, float4 lobe_3, uint nee, bool in_range_1)
+GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float arg3, float arg4, float arg5, uint arg6, uint arg7) {
+    GpuLightCone ret = (GpuLightCone)0;
+    ret.center_ = arg0;
+    ret.radius = arg1;
+    ret.axis = arg2;
+    ret.cos_o = arg3;
+    ret.phi = arg4;
+    ret.cos_e = arg5;
+    ret.bvh_leaf = arg6;
+    ret.pad = arg7;
+    return ret;
+}
+
+float light_range_scale(uint li, float3 x_4, float3 r_2, float4 rl_2)
+{
+    GpuLightCone c_8 = ConstructGpuLightCone(asfloat(light_cones.Load3(li*48+0)), asfloat(light_cones.Load(li*48+12)), asfloat(light_cones.Load3(li*48+16)), asfloat(light_cones.Load(li*48+28)), asfloat(light_cones.Load(li*48+32)), asfloat(light_cones.Load(li*48+36)), asuint(light_cones.Load(li*48+40)), asuint(light_cones.Load(li*48+44)));
+    const float _e9 = range_scale_toward(rl_2, c_8.center_, c_8.radius, x_4, r_2);
+    return _e9;
+}
+
+float select_pdf(uint li_1, float3 x_5, float3 n_13, float3 r_3, float4 lobe_5, uint nee, bool in_range_1)
 {
     const float _e8 = reservoir_select_pdf(nee, in_range_1, K);
     return _e8;
@@ -927,25 +1038,66 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-float light_pdf_selected(uint li_1, float3 x_4, float4 lobe_4, float3 y, float sel)
+float light_pdf_selected(uint li_2, float3 x_6, float3 r_4, float4 lobe_6, float3 y, float sel)
 {
-    GpuLight l_6 = ConstructGpuLight(asfloat(lights.Load3(li_1*64+0)), asuint(lights.Load(li_1*64+12)), asfloat(lights.Load3(li_1*64+16)), asfloat(lights.Load(li_1*64+28)), asfloat(lights.Load3(li_1*64+32)), asfloat(lights.Load(li_1*64+44)), asfloat(lights.Load3(li_1*64+48)), asuint(lights.Load(li_1*64+60)));
-    float3 v_10 = (x_4 - y);
-    float d2_3 = dot(v_10, v_10);
-    const float3 _e10 = light_normal(l_6);
-    float cos_y_1 = ((d2_3 > 0.0) ? dot(_e10, (v_10 / (sqrt(d2_3)).xxx)) : 0.0);
-    const float _e19 = range_scale(lobe_4);
-    float _e22 = asfloat(rt2_2.Load(li_1*4));
-    const float _e24 = light_area(l_6);
-    const float _e25 = light_strategy_pdf(sel, (_e19 * _e22), d2_3, _e24, cos_y_1);
-    return _e25;
+    GpuLight l_6 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
+    float3 v_11 = (x_6 - y);
+    float d2_3 = dot(v_11, v_11);
+    const float3 _e11 = light_normal(l_6);
+    float cos_y_1 = ((d2_3 > 0.0) ? dot(_e11, (v_11 / (sqrt(d2_3)).xxx)) : 0.0);
+    const float4 _e20 = range_lobe(lobe_6);
+    const float _e21 = light_range_scale(li_2, x_6, r_4, _e20);
+    float _e24 = asfloat(rt2_2.Load(li_2*4));
+    const float _e26 = light_area(l_6);
+    const float _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_3, _e26, cos_y_1);
+    return _e27;
 }
 
-float light_pdf(uint li_2, float3 x_5, float3 n_14, float3 r_2, float4 lobe_5, float3 y_1, uint nee_1, bool in_range_2)
+float light_pdf(uint li_3, float3 x_7, float3 n_14, float3 r_5, float4 lobe_7, float3 y_1, uint nee_1, bool in_range_2)
 {
-    const float _e8 = select_pdf(li_2, x_5, n_14, r_2, lobe_5, nee_1, in_range_2);
-    const float _e9 = light_pdf_selected(li_2, x_5, lobe_5, y_1, _e8);
+    const float _e8 = select_pdf(li_3, x_7, n_14, r_5, lobe_7, nee_1, in_range_2);
+    const float _e9 = light_pdf_selected(li_3, x_7, r_5, lobe_7, y_1, _e8);
     return _e9;
+}
+
+bool bsh_reaches(BshNode node_3, float3 x_8, float3 r_6, float4 rl_3)
+{
+    bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
+
+    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_8);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_3.w <= 1.0))) {
+        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_8);
+        local_20 = !(_e20);
+    } else {
+        local_20 = true;
+    }
+    bool _e23 = local_20;
+    if (_e23) {
+        return false;
+    }
+    if ((node_3.child == BSH_NONE)) {
+        const float _e30 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_8, r_6);
+        const float _e33 = bsh_scaled_radius(node_3, sqrt(_e30));
+        const bool _e34 = sphere_contains_point(node_3.center_, _e33, x_8);
+        return _e34;
+    }
+    const float _e37 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_8, r_6);
+    float s_c = (_e37 * 1.001);
+    const float _e42 = bsh_range_bound(node_3);
+    float reach = (node_3.extent + (sqrt(s_c) * _e42));
+    float3 v_12 = (x_8 - node_3.center_);
+    float d2_4 = dot(v_12, v_12);
+    if ((d2_4 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_21 = (d2_4 <= (reach * reach));
+    } else {
+        local_21 = false;
+    }
+    bool _e58 = local_21;
+    return _e58;
 }
 
 float next_uniform(inout uint state)
@@ -1117,7 +1269,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     GpuTriangle tri = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e94.tri*48+0)), asuint(geo_tris.Load(_e94.tri*48+12)), asfloat(geo_tris.Load3(_e94.tri*48+16)), asuint(geo_tris.Load(_e94.tri*48+28)), asfloat(geo_tris.Load3(_e94.tri*48+32)), asuint(geo_tris.Load(_e94.tri*48+44)));
     float3 _e111 = st.origin;
     float3 _e113 = st.dir;
-    float3 x_6 = (_e111 + (_e113 * _e94.t));
+    float3 x_9 = (_e111 + (_e113 * _e94.t));
     const float3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     float3 _e122 = st.dir;
     const float3 _e123 = face_against(_e120, _e122);
@@ -1125,7 +1277,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     float4 _e129 = asfloat(geo_normals.Load4(b_6*16));
     float4 _e135 = asfloat(geo_normals.Load4((b_6 + 1u)*16));
     float4 _e141 = asfloat(geo_normals.Load4((b_6 + 2u)*16));
-    const float3 _e146 = barycentric(x_6, tri.v0_, tri.v1_, tri.v2_);
+    const float3 _e146 = barycentric(x_9, tri.v0_, tri.v1_, tri.v2_);
     const float3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if ((tri.light != NO_LIGHT)) {
         float3 _e154 = st.dir;
@@ -1140,38 +1292,38 @@ void main(uint3 gid : SV_DispatchThreadID)
         if ((_e161 > 0.0)) {
             uint _e168 = asuint(light_leaf.Load(tri.light*4));
             BshNode leaf = ConstructBshNode(asfloat(bsh_nodes.Load3(_e168*32+0)), asfloat(bsh_nodes.Load(_e168*32+12)), asuint(bsh_nodes.Load(_e168*32+16)), asuint(bsh_nodes.Load(_e168*32+20)), asuint(bsh_nodes.Load(_e168*32+24)), asfloat(bsh_nodes.Load(_e168*32+28)));
-            float4 _e173 = st.prev_lobe;
-            const float _e174 = range_scale(_e173);
-            const float _e176 = bsh_scaled_radius(leaf, sqrt(_e174));
-            float3 _e178 = st.prev;
-            const bool _e179 = sphere_contains_point(leaf.center_, _e176, _e178);
-            float _e181 = st.pdf_bsdf;
-            float3 _e184 = st.prev;
-            float3 _e186 = st.prev_normal;
-            float3 _e188 = st.prev_r;
-            float4 _e190 = st.prev_lobe;
-            uint _e193 = asuint(candidates.Load(i_1*4));
-            const float _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_6, _e193, _e179);
-            const float _e195 = mis_weight(_e181, _e194);
-            w = _e195;
+            float3 _e172 = st.prev;
+            float3 _e174 = st.prev_r;
+            float4 _e176 = st.prev_lobe;
+            const float4 _e177 = range_lobe(_e176);
+            const bool _e178 = bsh_reaches(leaf, _e172, _e174, _e177);
+            float _e180 = st.pdf_bsdf;
+            float3 _e183 = st.prev;
+            float3 _e185 = st.prev_normal;
+            float3 _e187 = st.prev_r;
+            float4 _e189 = st.prev_lobe;
+            uint _e192 = asuint(candidates.Load(i_1*4));
+            const float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, x_9, _e192, _e178);
+            const float _e194 = mis_weight(_e180, _e193);
+            w = _e194;
         }
-        float3 _e197 = st.beta;
-        float3 _e202 = asfloat(lights.Load3(48+tri.light*64));
-        float _e204 = w;
-        float3 add = ((_e197 * _e202) * _e204);
-        const bool _e206 = finite3_(add);
-        if (_e206) {
-            float4 _e209 = asfloat(radiance.Load4(i_1*16));
-            radiance.Store4(i_1*16, asuint((_e209 + float4(add, 0.0))));
+        float3 _e196 = st.beta;
+        float3 _e201 = asfloat(lights.Load3(48+tri.light*64));
+        float _e203 = w;
+        float3 add = ((_e196 * _e201) * _e203);
+        const bool _e205 = finite3_(add);
+        if (_e205) {
+            float4 _e208 = asfloat(radiance.Load4(i_1*16));
+            radiance.Store4(i_1*16, asuint((_e208 + float4(add, 0.0))));
         }
     }
-    uint _e215 = params.depth;
-    uint _e218 = params.max_depth;
-    if ((_e215 >= _e218)) {
+    uint _e214 = params.depth;
+    uint _e217 = params.max_depth;
+    if ((_e214 >= _e217)) {
         st.alive = 0u;
-        GpuPathState _e224 = st;
+        GpuPathState _e223 = st;
         {
-            GpuPathState _value3 = _e224;
+            GpuPathState _value3 = _e223;
             paths.Store3(i_1*112+0, asuint(_value3.origin));
             paths.Store(i_1*112+12, asuint(_value3.alive));
             paths.Store3(i_1*112+16, asuint(_value3.dir));
@@ -1186,9 +1338,9 @@ void main(uint3 gid : SV_DispatchThreadID)
             paths.Store(i_1*112+92, asuint(_value3.pad3_));
             paths.Store4(i_1*112+96, asuint(_value3.prev_lobe));
         }
-        GpuPathVertex _e227 = v;
+        GpuPathVertex _e226 = v;
         {
-            GpuPathVertex _value3 = _e227;
+            GpuPathVertex _value3 = _e226;
             vertices_.Store3(i_1*80+0, asuint(_value3.position));
             vertices_.Store(i_1*80+12, asuint(_value3.alive));
             vertices_.Store3(i_1*80+16, asuint(_value3.normal));
@@ -1203,20 +1355,20 @@ void main(uint3 gid : SV_DispatchThreadID)
         return;
     }
     GpuMaterial m_2 = ConstructGpuMaterial(asfloat(materials.Load3(tri.material*48+0)), asfloat(materials.Load(tri.material*48+12)), asfloat(materials.Load3(tri.material*48+16)), asfloat(materials.Load(tri.material*48+28)), asfloat(materials.Load3(tri.material*48+32)), asfloat(materials.Load(tri.material*48+44)));
-    float3 _e233 = st.dir;
-    float3 wo_1 = -(_e233);
-    const float4 _e241 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
-    v.position = x_6;
+    float3 _e232 = st.dir;
+    float3 wo_1 = -(_e232);
+    const float4 _e240 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
+    v.position = x_9;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    float3 _e249 = st.beta;
-    v.weight = _e249;
+    float3 _e248 = st.beta;
+    v.weight = _e248;
     v.wo = wo_1;
     v.alive = 1u;
-    GpuPathVertex _e255 = v;
+    GpuPathVertex _e254 = v;
     {
-        GpuPathVertex _value2 = _e255;
+        GpuPathVertex _value2 = _e254;
         vertices_.Store3(i_1*80+0, asuint(_value2.position));
         vertices_.Store(i_1*80+12, asuint(_value2.alive));
         vertices_.Store3(i_1*80+16, asuint(_value2.normal));
@@ -1228,66 +1380,66 @@ void main(uint3 gid : SV_DispatchThreadID)
         vertices_.Store3(i_1*80+64, asuint(_value2.wo));
         vertices_.Store(i_1*80+76, asuint(_value2.pad3_));
     }
-    uint _e257 = st.rng;
-    rng = _e257;
+    uint _e256 = st.rng;
+    rng = _e256;
+    const float _e258 = next_uniform(rng);
     const float _e259 = next_uniform(rng);
-    const float _e260 = next_uniform(rng);
-    const float _e261 = specular_probability(_e241);
-    const float3 _e263 = bsdf_sample(_e147, wo_1, m_2.alpha, _e261, _e259, _e260);
-    const float _e265 = bsdf_pdf(_e147, wo_1, _e263, m_2.alpha, _e261);
-    const bool _e269 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
-    if (_e269) {
-        float3 _e271 = st.beta;
-        const float3 _e277 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e263);
-        st.beta = (_e271 * (_e277 * (dot(_e263, _e147) / _e265)));
+    const float _e260 = specular_probability(_e240);
+    const float3 _e262 = bsdf_sample(_e147, wo_1, m_2.alpha, _e260, _e258, _e259);
+    const float _e264 = bsdf_pdf(_e147, wo_1, _e262, m_2.alpha, _e260);
+    const bool _e268 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
+    if (_e268) {
+        float3 _e270 = st.beta;
+        const float3 _e276 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e262);
+        st.beta = (_e270 * (_e276 * (dot(_e262, _e147) / _e264)));
     } else {
-        float3 _e283 = st.beta;
-        st.beta = (_e283 * m_2.albedo);
+        float3 _e282 = st.beta;
+        st.beta = (_e282 * m_2.albedo);
     }
-    st.prev = x_6;
+    st.prev = x_9;
     st.prev_normal = _e147;
-    const float3 _e289 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e289;
-    st.prev_lobe = _e241;
-    st.pdf_bsdf = _e265;
-    float _e295 = params.eps;
-    st.origin = (x_6 + (_e123 * _e295));
-    st.dir = _e263;
-    const bool _e299 = continues_path(_e263, _e147, _e123);
-    if (!(!(_e299))) {
-        local_1 = !((_e265 > 0.0));
+    const float3 _e288 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e288;
+    st.prev_lobe = _e240;
+    st.pdf_bsdf = _e264;
+    float _e294 = params.eps;
+    st.origin = (x_9 + (_e123 * _e294));
+    st.dir = _e262;
+    const bool _e298 = continues_path(_e262, _e147, _e123);
+    if (!(!(_e298))) {
+        local_1 = !((_e264 > 0.0));
     } else {
         local_1 = true;
     }
-    bool _e308 = local_1;
-    if (_e308) {
+    bool _e307 = local_1;
+    if (_e307) {
         st.alive = 0u;
     }
-    uint _e313 = params.depth;
-    const bool _e314 = plays_roulette(_e313);
-    if (_e314) {
-        uint _e318 = st.alive;
-        local_2 = (_e318 == 1u);
+    uint _e312 = params.depth;
+    const bool _e313 = plays_roulette(_e312);
+    if (_e313) {
+        uint _e317 = st.alive;
+        local_2 = (_e317 == 1u);
     } else {
         local_2 = false;
     }
-    bool _e322 = local_2;
-    if (_e322) {
-        float3 _e324 = st.beta;
-        const float _e325 = path_survival(_e324);
-        const float _e326 = next_uniform(rng);
-        if ((_e326 >= _e325)) {
+    bool _e321 = local_2;
+    if (_e321) {
+        float3 _e323 = st.beta;
+        const float _e324 = path_survival(_e323);
+        const float _e325 = next_uniform(rng);
+        if ((_e325 >= _e324)) {
             st.alive = 0u;
         } else {
-            float3 _e331 = st.beta;
-            st.beta = (_e331 / (_e325).xxx);
+            float3 _e330 = st.beta;
+            st.beta = (_e330 / (_e324).xxx);
         }
     }
-    uint _e335 = rng;
-    st.rng = _e335;
-    GpuPathState _e338 = st;
+    uint _e334 = rng;
+    st.rng = _e334;
+    GpuPathState _e337 = st;
     {
-        GpuPathState _value2 = _e338;
+        GpuPathState _value2 = _e337;
         paths.Store3(i_1*112+0, asuint(_value2.origin));
         paths.Store(i_1*112+12, asuint(_value2.alive));
         paths.Store3(i_1*112+16, asuint(_value2.dir));

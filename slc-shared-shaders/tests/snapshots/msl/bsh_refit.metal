@@ -71,6 +71,18 @@ constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant BshNodes BSH = 0u;
 
+float f32_from_bits(
+    uint u
+) {
+    return as_type<float>(u);
+}
+
+uint f32_to_bits(
+    float x
+) {
+    return as_type<uint>(x);
+}
+
 float sphere_pad(
     float r,
     metal::float3 c
@@ -130,6 +142,16 @@ float range_radius(
     return extent + metal::sqrt(r2_1);
 }
 
+float bsh_range_bound(
+    BshNode node
+) {
+    if (node.child == BSH_NONE) {
+        return node.radius - node.extent;
+    }
+    float _e8 = f32_from_bits(node.light);
+    return _e8;
+}
+
 BshNode bsh_node(
     BshNodes nodes,
     uint i,
@@ -153,6 +175,37 @@ metal::float4 bsh_children_sphere(
     return _e11;
 }
 
+float bsh_children_extent(
+    BshNodes nodes_2,
+    uint i_2,
+    metal::float3 center,
+    device type_8 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshNode _e3 = bsh_node(nodes_2, i_2, bsh_nodes, _buffer_sizes);
+    BshNode _e5 = bsh_node(nodes_2, _e3.child, bsh_nodes, _buffer_sizes);
+    BshNode _e7 = bsh_node(nodes_2, _e5.next, bsh_nodes, _buffer_sizes);
+    metal::float3 vl = _e5.center - center;
+    metal::float3 vr = _e7.center - center;
+    float a = metal::max(metal::sqrt(metal::dot(vl, vl)) + _e5.extent, metal::sqrt(metal::dot(vr, vr)) + _e7.extent);
+    float _e21 = sphere_pad(a, center);
+    return a + _e21;
+}
+
+float bsh_children_range(
+    BshNodes nodes_3,
+    uint i_3,
+    device type_8 const& bsh_nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    BshNode _e2 = bsh_node(nodes_3, i_3, bsh_nodes, _buffer_sizes);
+    BshNode _e4 = bsh_node(nodes_3, _e2.child, bsh_nodes, _buffer_sizes);
+    BshNode _e6 = bsh_node(nodes_3, _e4.next, bsh_nodes, _buffer_sizes);
+    float _e7 = bsh_range_bound(_e4);
+    float _e8 = bsh_range_bound(_e6);
+    return metal::max(_e7, _e8);
+}
+
 struct main_Input {
 };
 kernel void main_(
@@ -169,18 +222,24 @@ kernel void main_(
         return;
     }
     uint _e9 = params.first;
-    uint i_2 = order[_e9 + gid.x];
-    BshNode node = bsh_nodes[i_2];
-    if (node.child == BSH_NONE) {
-        metal::float4 bound = bounds[node.light];
-        bsh_nodes[i_2].center = bound.xyz;
-        float _e35 = r2_2[node.light];
+    uint i_4 = order[_e9 + gid.x];
+    BshNode node_1 = bsh_nodes[i_4];
+    if (node_1.child == BSH_NONE) {
+        metal::float4 bound = bounds[node_1.light];
+        bsh_nodes[i_4].center = bound.xyz;
+        float _e35 = r2_2[node_1.light];
         float _e36 = range_radius(bound.w, _e35);
-        bsh_nodes[i_2].radius = _e36;
+        bsh_nodes[i_4].radius = _e36;
+        bsh_nodes[i_4].extent = bound.w;
         return;
     }
-    metal::float4 _e38 = bsh_children_sphere(BSH, i_2, bsh_nodes, _buffer_sizes);
-    bsh_nodes[i_2].center = _e38.xyz;
-    bsh_nodes[i_2].radius = _e38.w;
+    metal::float4 _e42 = bsh_children_sphere(BSH, i_4, bsh_nodes, _buffer_sizes);
+    bsh_nodes[i_4].center = _e42.xyz;
+    bsh_nodes[i_4].radius = _e42.w;
+    float _e56 = bsh_children_extent(BSH, i_4, _e42.xyz, bsh_nodes, _buffer_sizes);
+    bsh_nodes[i_4].extent = _e56;
+    float _e61 = bsh_children_range(BSH, i_4, bsh_nodes, _buffer_sizes);
+    uint _e62 = f32_to_bits(_e61);
+    bsh_nodes[i_4].light = _e62;
     return;
 }

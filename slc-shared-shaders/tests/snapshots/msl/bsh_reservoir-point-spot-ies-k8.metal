@@ -164,6 +164,12 @@ uint add_wrap_u32_(
     return a_1 + b_1;
 }
 
+float f32_from_bits(
+    uint u_1
+) {
+    return as_type<float>(u_1);
+}
+
 float xi_from_bits(
     uint bits
 ) {
@@ -311,8 +317,8 @@ float atan_portable(
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_1 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
-    return (x_4 < 0.0) ? -(r_1) : r_1;
+    float r_5 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
+    return (x_4 < 0.0) ? -(r_5) : r_5;
 }
 
 float atan2_portable(
@@ -535,6 +541,16 @@ float bsh_scaled_radius(
     return node.radius * scale;
 }
 
+float bsh_range_bound(
+    BshNode node_1
+) {
+    if (node_1.child == BSH_NONE) {
+        return node_1.radius - node_1.extent;
+    }
+    float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
 uint mul_hi_u32_(
     uint a_3,
     uint b_2
@@ -596,6 +612,72 @@ float reservoir_weight(
     return metal::max(_e2 / _e3, 1.0);
 }
 
+float cos_sub_clamped(
+    float sin_a,
+    float cos_a,
+    float sin_b,
+    float cos_b
+) {
+    if (cos_a > cos_b) {
+        return 1.0;
+    }
+    return (cos_a * cos_b) + (sin_a * sin_b);
+}
+
+float safe_sqrt(
+    float x_8
+) {
+    return metal::sqrt(metal::max(x_8, 0.0));
+}
+
+float subtended_cos(
+    float dist2_,
+    float r2_2
+) {
+    float _e5 = safe_sqrt(1.0 - (r2_2 / dist2_));
+    return (dist2_ <= r2_2) ? -1.0 : _e5;
+}
+
+float cone_cos_toward(
+    metal::float3 center,
+    float radius,
+    metal::float3 p,
+    metal::float3 d
+) {
+    metal::float3 v_2 = center - p;
+    float dist2_1 = metal::dot(v_2, v_2);
+    metal::float3 w_4 = (dist2_1 > 0.0) ? (v_2 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
+    float _e17 = subtended_cos(dist2_1, radius * radius);
+    float cos_i = metal::dot(w_4, d);
+    float _e22 = safe_sqrt(1.0 - (cos_i * cos_i));
+    float _e26 = safe_sqrt(1.0 - (_e17 * _e17));
+    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float range_scale_at(
+    metal::float4 rl,
+    float cos_t
+) {
+    float t_2 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
+    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_2 * t_2)), 1.0, rl.w * rl.w);
+}
+
+float range_scale_toward(
+    metal::float4 rl_1,
+    metal::float3 center_1,
+    float radius_1,
+    metal::float3 p_1,
+    metal::float3 r_1
+) {
+    if (rl_1.w <= 1.0) {
+        return 1.0;
+    }
+    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_1);
+    float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
 float shadow_margin(
     float len
 ) {
@@ -603,17 +685,17 @@ float shadow_margin(
 }
 
 float ray_inverse(
-    float x_8
+    float x_9
 ) {
-    return 1.0 / ((metal::abs(x_8) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_8);
+    return 1.0 / ((metal::abs(x_9) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_9);
 }
 
 metal::float3 ray_inverse3_(
-    metal::float3 d
+    metal::float3 d_1
 ) {
-    float _e2 = ray_inverse(d.x);
-    float _e4 = ray_inverse(d.y);
-    float _e6 = ray_inverse(d.z);
+    float _e2 = ray_inverse(d_1.x);
+    float _e4 = ray_inverse(d_1.y);
+    float _e6 = ray_inverse(d_1.z);
     return metal::float3(_e2, _e4, _e6);
 }
 
@@ -638,7 +720,7 @@ float ray_aabb(
 
 float ray_triangle(
     metal::float3 o_1,
-    metal::float3 d_1,
+    metal::float3 d_2,
     metal::float3 a_4,
     metal::float3 b_3,
     metal::float3 c_3,
@@ -650,16 +732,16 @@ float ray_triangle(
     bool local_5 = {};
     metal::float3 e1_ = b_3 - a_4;
     metal::float3 e2_ = c_3 - a_4;
-    metal::float3 p = metal::cross(d_1, e2_);
-    float det = metal::dot(e1_, p);
+    metal::float3 p_2 = metal::cross(d_2, e2_);
+    float det = metal::dot(e1_, p_2);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
     metal::float3 s_2 = o_1 - a_4;
-    float u_1 = metal::dot(s_2, p) * inv;
-    if (!((u_1 < 0.0))) {
-        local_3 = u_1 > 1.0;
+    float u_2 = metal::dot(s_2, p_2) * inv;
+    if (!((u_2 < 0.0))) {
+        local_3 = u_2 > 1.0;
     } else {
         local_3 = true;
     }
@@ -668,9 +750,9 @@ float ray_triangle(
         return -1.0;
     }
     metal::float3 q = metal::cross(s_2, e1_);
-    float v_2 = metal::dot(d_1, q) * inv;
-    if (!((v_2 < 0.0))) {
-        local_4 = (u_1 + v_2) > 1.0;
+    float v_3 = metal::dot(d_2, q) * inv;
+    if (!((v_3 < 0.0))) {
+        local_4 = (u_2 + v_3) > 1.0;
     } else {
         local_4 = true;
     }
@@ -678,15 +760,15 @@ float ray_triangle(
     if (_e42) {
         return -1.0;
     }
-    float t_2 = metal::dot(e2_, q) * inv;
-    if (t_2 > t_min) {
-        local_5 = t_2 < t_max_1;
+    float t_3 = metal::dot(e2_, q) * inv;
+    if (t_3 > t_min) {
+        local_5 = t_3 < t_max_1;
     } else {
         local_5 = false;
     }
     bool _e51 = local_5;
     if (_e51) {
-        return t_2;
+        return t_3;
     }
     return -1.0;
 }
@@ -725,7 +807,7 @@ metal::float3 light_point(
 
 GeoHit trace(
     metal::float3 o_2,
-    metal::float3 d_2,
+    metal::float3 d_3,
     float t_min_1,
     float t_max_2,
     bool any_hit,
@@ -736,7 +818,7 @@ GeoHit trace(
     GeoHit hit = {};
     type_8 stack = {};
     uint sp = 0u;
-    uint node_1 = 0u;
+    uint node_2 = 0u;
     uint i_1 = {};
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -744,12 +826,12 @@ GeoHit trace(
         GeoHit _e13 = hit;
         return _e13;
     }
-    metal::float3 _e14 = ray_inverse3_(d_2);
+    metal::float3 _e14 = ray_inverse3_(d_3);
     uint2 loop_bound_1 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e21 = node_1;
+        uint _e21 = node_2;
         GpuGeoNode n_7 = geo_nodes[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_7.bmin, n_7.bmax, _e27);
@@ -773,9 +855,9 @@ GeoHit trace(
                     }
                     {
                         uint _e42 = i_1;
-                        GpuTriangle t_3 = geo_tris[_e42];
+                        GpuTriangle t_4 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_2, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i_1;
@@ -795,7 +877,7 @@ GeoHit trace(
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_1 = n_7.first;
+                node_2 = n_7.first;
                 continue;
             }
         }
@@ -807,7 +889,7 @@ GeoHit trace(
         sp = _e75 - 1u;
         uint _e78 = sp;
         uint _e80 = stack.inner[_e78];
-        node_1 = _e80;
+        node_2 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -860,11 +942,55 @@ uint bsh_first(
     return BSH_NONE;
 }
 
-uint bsh_next_leaf_scaled(
+bool bsh_reaches(
+    BshNode node_3,
+    metal::float3 x_10,
+    metal::float3 r_2,
+    metal::float4 rl_2
+) {
+    bool local_6 = {};
+    bool local_7 = {};
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_10);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_2.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_2.w * 1.0001), x_10);
+        local_6 = !(_e20);
+    } else {
+        local_6 = true;
+    }
+    bool _e23 = local_6;
+    if (_e23) {
+        return false;
+    }
+    if (node_3.child == BSH_NONE) {
+        float _e30 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+        float _e33 = bsh_scaled_radius(node_3, metal::sqrt(_e30));
+        bool _e34 = sphere_contains_point(node_3.center, _e33, x_10);
+        return _e34;
+    }
+    float _e37 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+    float s_c = _e37 * 1.001;
+    float _e42 = bsh_range_bound(node_3);
+    float reach = node_3.extent + (metal::sqrt(s_c) * _e42);
+    metal::float3 v_4 = x_10 - node_3.center;
+    float d2_5 = metal::dot(v_4, v_4);
+    if (d2_5 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_7 = d2_5 <= (reach * reach);
+    } else {
+        local_7 = false;
+    }
+    bool _e58 = local_7;
+    return _e58;
+}
+
+uint bsh_next_leaf_lobe(
     BshNodes nodes_3,
     uint start_1,
-    metal::float3 x_9,
-    float scale_1,
+    metal::float3 x_11,
+    metal::float3 r_3,
+    metal::float4 rl_3,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -874,24 +1000,23 @@ uint bsh_next_leaf_scaled(
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e5 = i_3;
-        if (_e5 != BSH_NONE) {
+        uint _e6 = i_3;
+        if (_e6 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e8 = i_3;
-            BshNode _e9 = bsh_node(nodes_3, _e8, bsh_nodes, _buffer_sizes);
-            float _e11 = bsh_scaled_radius(_e9, scale_1);
-            bool _e12 = sphere_contains_point(_e9.center, _e11, x_9);
-            if (_e12) {
-                if (_e9.child == BSH_NONE) {
-                    uint _e16 = i_3;
-                    return _e16;
+            uint _e9 = i_3;
+            BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
+            bool _e11 = bsh_reaches(_e10, x_11, r_3, rl_3);
+            if (_e11) {
+                if (_e10.child == BSH_NONE) {
+                    uint _e15 = i_3;
+                    return _e15;
                 }
-                i_3 = _e9.child;
+                i_3 = _e10.child;
             } else {
-                i_3 = _e9.next;
+                i_3 = _e10.next;
             }
         }
     }
@@ -899,8 +1024,9 @@ uint bsh_next_leaf_scaled(
 }
 
 Picks bsh_collect(
-    metal::float3 x_10,
-    float scale_2,
+    metal::float3 x_12,
+    metal::float3 r_4,
+    metal::float4 rl_4,
     uint seed_1,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
@@ -910,57 +1036,57 @@ Picks bsh_collect(
     uint i_4 = {};
     picks.n = 0u;
     h_1 = seed_1;
-    uint _e9 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_10, scale_2, bsh_nodes, _buffer_sizes);
-    i_4 = _e10;
+    uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_4, rl_4, bsh_nodes, _buffer_sizes);
+    i_4 = _e11;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e43 = i_4;
-            uint _e46 = bsh_nodes[_e43].next;
-            uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_10, scale_2, bsh_nodes, _buffer_sizes);
-            i_4 = _e47;
+            uint _e44 = i_4;
+            uint _e47 = bsh_nodes[_e44].next;
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_4, rl_4, bsh_nodes, _buffer_sizes);
+            i_4 = _e48;
         }
         loop_init_1 = false;
-        uint _e12 = i_4;
-        if (_e12 != BSH_NONE) {
+        uint _e13 = i_4;
+        if (_e13 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e16 = picks.n;
-            bool _e17 = reservoir_takes(_e16);
-            if (_e17) {
-                uint _e19 = picks.n;
-                picks.n = _e19 + 1u;
-                uint _e22 = h_1;
-                uint _e23 = pcg_hash(_e22);
-                h_1 = _e23;
+            uint _e17 = picks.n;
+            bool _e18 = reservoir_takes(_e17);
+            if (_e18) {
+                uint _e20 = picks.n;
+                picks.n = _e20 + 1u;
+                uint _e23 = h_1;
+                uint _e24 = pcg_hash(_e23);
+                h_1 = _e24;
                 uint hi_4 = h_1;
-                uint _e25 = h_1;
-                uint _e26 = pcg_hash(_e25);
-                h_1 = _e26;
-                uint _e28 = picks.n;
-                uint _e30 = h_1;
-                uint _e31 = reservoir_slot(_e28, K, hi_4, _e30);
-                if (_e31 < K) {
-                    uint _e37 = i_4;
-                    uint _e40 = bsh_nodes[_e37].light;
-                    picks.light.inner[_e31] = _e40;
+                uint _e26 = h_1;
+                uint _e27 = pcg_hash(_e26);
+                h_1 = _e27;
+                uint _e29 = picks.n;
+                uint _e31 = h_1;
+                uint _e32 = reservoir_slot(_e29, K, hi_4, _e31);
+                if (_e32 < K) {
+                    uint _e38 = i_4;
+                    uint _e41 = bsh_nodes[_e38].light;
+                    picks.light.inner[_e32] = _e41;
                 }
             }
         }
     }
-    Picks _e48 = picks;
-    return _e48;
+    Picks _e49 = picks;
+    return _e49;
 }
 
 Connection connect(
     uint li,
-    metal::float3 x_11,
+    metal::float3 x_13,
     metal::float3 n_6,
     metal::float3 ng_1,
     float s_1,
@@ -972,40 +1098,40 @@ Connection connect(
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
-    device type_4 const& r2_2,
+    device type_4 const& r2_3,
     device type_4 const& rt2_2,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_4 = {};
-    bool local_6 = {};
+    bool local_8 = {};
     c_4.e = metal::float3(0.0);
     GpuLight l_2 = lights[li];
     metal::float3 _e17 = light_point(l_2, u1_1, u2_1);
     c_4.y = _e17;
     metal::float3 _e20 = c_4.y;
-    float _e23 = r2_2[li];
-    float _e25 = connection_cosine(x_11, _e20, n_6, ng_1, s_1 * _e23);
+    float _e23 = r2_3[li];
+    float _e25 = connection_cosine(x_13, _e20, n_6, ng_1, s_1 * _e23);
     c_4.cos_x = _e25;
     float _e27 = c_4.cos_x;
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_4.y;
-        bool _e37 = occluded(x_11 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
-        local_6 = _e37;
+        bool _e37 = occluded(x_13 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
+        local_8 = _e37;
     } else {
-        local_6 = true;
+        local_8 = true;
     }
-    bool _e39 = local_6;
+    bool _e39 = local_8;
     if (_e39) {
         Connection _e40 = c_4;
         return _e40;
     }
     metal::float3 _e42 = c_4.y;
-    metal::float3 v_3 = x_11 - _e42;
-    float d2_5 = metal::dot(v_3, v_3);
-    metal::float3 _e49 = light_intensity(l_2, v_3 / metal::float3(metal::sqrt(d2_5)), slc_table, _buffer_sizes);
+    metal::float3 v_5 = x_13 - _e42;
+    float d2_6 = metal::dot(v_5, v_5);
+    metal::float3 _e49 = light_intensity(l_2, v_5 / metal::float3(metal::sqrt(d2_6)), slc_table, _buffer_sizes);
     float _e51 = c_4.cos_x;
     float _e54 = rt2_2[li];
-    float _e56 = connection_factor(_e51, d2_5, s_1 * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_6, s_1 * _e54, w_res);
     c_4.e = _e49 * _e56;
     Connection _e58 = c_4;
     return _e58;
@@ -1020,7 +1146,7 @@ kernel void main_(
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_10 const& bsh_nodes [[user(fake0)]]
 , device type_11 const& lights [[user(fake0)]]
-, device type_4 const& r2_2 [[user(fake0)]]
+, device type_4 const& r2_3 [[user(fake0)]]
 , device type_4 const& rt2_2 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
 , device type_12 const& points [[user(fake0)]]
@@ -1036,55 +1162,55 @@ kernel void main_(
     if (i_5 >= _e4) {
         return;
     }
-    metal::float4 p_1 = points[i_5];
-    if (p_1.w <= 0.0) {
+    metal::float4 p_3 = points[i_5];
+    if (p_3.w <= 0.0) {
         irradiance[i_5] = metal::float4(0.0);
         return;
     }
-    metal::float3 x_12 = p_1.xyz;
+    metal::float3 x_14 = p_3.xyz;
     metal::float4 _e19 = normals[i_5];
     metal::float3 n_8 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     uint _e27 = point_stream(_e23, i_5, _e26);
-    Picks _e29 = bsh_collect(x_12, 1.0, _e27, bsh_nodes, _buffer_sizes);
-    float _e32 = reservoir_weight(_e29.n, K);
-    uint _e33 = pick_stream(_e27);
-    h = _e33;
+    Picks _e33 = bsh_collect(x_14, x_14, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
+    float _e36 = reservoir_weight(_e33.n, K);
+    uint _e37 = pick_stream(_e27);
+    h = _e37;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e65 = s;
-            s = _e65 + 1u;
+            uint _e69 = s;
+            s = _e69 + 1u;
         }
         loop_init_2 = false;
-        uint _e40 = s;
-        if (_e40 < metal::min(_e29.n, K)) {
+        uint _e44 = s;
+        if (_e44 < metal::min(_e33.n, K)) {
         } else {
             break;
         }
         {
-            uint _e45 = h;
-            uint _e46 = pcg_hash(_e45);
-            h = _e46;
-            uint _e47 = h;
-            float _e48 = xi_from_bits(_e47);
             uint _e49 = h;
             uint _e50 = pcg_hash(_e49);
             h = _e50;
-            metal::float3 _e51 = e;
-            uint _e53 = s;
-            uint _e56 = h;
-            float _e57 = xi_from_bits(_e56);
-            float _e60 = params.eps;
-            Connection _e61 = connect(_e29.light.inner[_e53], x_12, n_8, n_8, 1.0, _e32, _e48, _e57, _e60, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_2, _buffer_sizes);
-            e = _e51 + _e61.e;
+            uint _e51 = h;
+            float _e52 = xi_from_bits(_e51);
+            uint _e53 = h;
+            uint _e54 = pcg_hash(_e53);
+            h = _e54;
+            metal::float3 _e55 = e;
+            uint _e57 = s;
+            uint _e60 = h;
+            float _e61 = xi_from_bits(_e60);
+            float _e64 = params.eps;
+            Connection _e65 = connect(_e33.light.inner[_e57], x_14, n_8, n_8, 1.0, _e36, _e52, _e61, _e64, slc_table, geo_nodes, geo_tris, lights, r2_3, rt2_2, _buffer_sizes);
+            e = _e55 + _e65.e;
         }
     }
-    metal::float3 _e69 = e;
-    irradiance[i_5] = metal::float4(_e69, static_cast<float>(_e29.n));
+    metal::float3 _e73 = e;
+    irradiance[i_5] = metal::float4(_e73, static_cast<float>(_e33.n));
     return;
 }

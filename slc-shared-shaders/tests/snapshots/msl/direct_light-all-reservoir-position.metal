@@ -158,6 +158,12 @@ uint add_wrap_u32_(
     return a_1 + b_1;
 }
 
+float f32_from_bits(
+    uint u_1
+) {
+    return as_type<float>(u_1);
+}
+
 float xi_from_bits(
     uint bits
 ) {
@@ -326,8 +332,8 @@ float atan_portable(
     float _e21 = base;
     float _e33 = t_1;
     float _e35 = t_1;
-    float r_2 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
-    return (x_4 < 0.0) ? -(r_2) : r_2;
+    float r_7 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
+    return (x_4 < 0.0) ? -(r_7) : r_7;
 }
 
 float atan2_portable(
@@ -550,6 +556,16 @@ float bsh_scaled_radius(
     return node.radius * scale;
 }
 
+float bsh_range_bound(
+    BshNode node_1
+) {
+    if (node_1.child == BSH_NONE) {
+        return node_1.radius - node_1.extent;
+    }
+    float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
 uint mul_hi_u32_(
     uint a_4,
     uint b_3
@@ -619,21 +635,105 @@ float smith_root(
     return metal::sqrt(((cos * cos) * (1.0 - a2_)) + a2_);
 }
 
-float receiver_peak(
+float specular_peak_factor(
     metal::float4 lobe_1
 ) {
-    float _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10));
+    float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.y * 0.5) / (_e6 + metal::max(lobe_1.w, 0.0));
+}
+
+float receiver_peak(
+    metal::float4 lobe_2
+) {
+    float _e2 = specular_peak_factor(lobe_2);
+    return lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z));
 }
 
 float range_scale(
-    metal::float4 lobe_2
+    metal::float4 lobe_3
 ) {
-    if (lobe_2.y <= 0.0) {
+    if (lobe_3.y <= 0.0) {
         return 1.0;
     }
-    float _e5 = receiver_peak(lobe_2);
+    float _e5 = receiver_peak(lobe_3);
     return metal::clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+metal::float4 range_lobe(
+    metal::float4 lobe_4
+) {
+    if (lobe_4.y <= 0.0) {
+        return metal::float4(1.0, 0.0, 1.0, 1.0);
+    }
+    float _e10 = specular_peak_factor(lobe_4);
+    float _e14 = range_scale(lobe_4);
+    return metal::float4(lobe_4.x, _e10, lobe_4.z * lobe_4.z, metal::sqrt(_e14));
+}
+
+float cos_sub_clamped(
+    float sin_a,
+    float cos_a,
+    float sin_b,
+    float cos_b
+) {
+    if (cos_a > cos_b) {
+        return 1.0;
+    }
+    return (cos_a * cos_b) + (sin_a * sin_b);
+}
+
+float safe_sqrt(
+    float x_8
+) {
+    return metal::sqrt(metal::max(x_8, 0.0));
+}
+
+float subtended_cos(
+    float dist2_,
+    float r2_2
+) {
+    float _e5 = safe_sqrt(1.0 - (r2_2 / dist2_));
+    return (dist2_ <= r2_2) ? -1.0 : _e5;
+}
+
+float cone_cos_toward(
+    metal::float3 center,
+    float radius,
+    metal::float3 p,
+    metal::float3 d
+) {
+    metal::float3 v_2 = center - p;
+    float dist2_1 = metal::dot(v_2, v_2);
+    metal::float3 w_6 = (dist2_1 > 0.0) ? (v_2 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
+    float _e17 = subtended_cos(dist2_1, radius * radius);
+    float cos_i = metal::dot(w_6, d);
+    float _e22 = safe_sqrt(1.0 - (cos_i * cos_i));
+    float _e26 = safe_sqrt(1.0 - (_e17 * _e17));
+    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float range_scale_at(
+    metal::float4 rl,
+    float cos_t
+) {
+    float t_3 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
+    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_3 * t_3)), 1.0, rl.w * rl.w);
+}
+
+float range_scale_toward(
+    metal::float4 rl_1,
+    metal::float3 center_1,
+    float radius_1,
+    metal::float3 p_1,
+    metal::float3 r_2
+) {
+    if (rl_1.w <= 1.0) {
+        return 1.0;
+    }
+    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_2);
+    float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
 }
 
 metal::float3 triangle_normal(
@@ -734,11 +834,55 @@ uint bsh_first(
     return BSH_NONE;
 }
 
-uint bsh_next_leaf_scaled(
+bool bsh_reaches(
+    BshNode node_2,
+    metal::float3 x_9,
+    metal::float3 r_3,
+    metal::float4 rl_2
+) {
+    bool local_6 = {};
+    bool local_7 = {};
+    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_9);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_2.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_2.w * 1.0001), x_9);
+        local_6 = !(_e20);
+    } else {
+        local_6 = true;
+    }
+    bool _e23 = local_6;
+    if (_e23) {
+        return false;
+    }
+    if (node_2.child == BSH_NONE) {
+        float _e30 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_9, r_3);
+        float _e33 = bsh_scaled_radius(node_2, metal::sqrt(_e30));
+        bool _e34 = sphere_contains_point(node_2.center, _e33, x_9);
+        return _e34;
+    }
+    float _e37 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_9, r_3);
+    float s_c = _e37 * 1.001;
+    float _e42 = bsh_range_bound(node_2);
+    float reach = node_2.extent + (metal::sqrt(s_c) * _e42);
+    metal::float3 v_3 = x_9 - node_2.center;
+    float d2_5 = metal::dot(v_3, v_3);
+    if (d2_5 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_7 = d2_5 <= (reach * reach);
+    } else {
+        local_7 = false;
+    }
+    bool _e58 = local_7;
+    return _e58;
+}
+
+uint bsh_next_leaf_lobe(
     BshNodes nodes_3,
     uint start_1,
-    metal::float3 x_8,
-    float scale_1,
+    metal::float3 x_10,
+    metal::float3 r_4,
+    metal::float4 rl_3,
     device type_9 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -748,24 +892,23 @@ uint bsh_next_leaf_scaled(
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
-        uint _e5 = i_2;
-        if (_e5 != BSH_NONE) {
+        uint _e6 = i_2;
+        if (_e6 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e8 = i_2;
-            BshNode _e9 = bsh_node(nodes_3, _e8, bsh_nodes, _buffer_sizes);
-            float _e11 = bsh_scaled_radius(_e9, scale_1);
-            bool _e12 = sphere_contains_point(_e9.center, _e11, x_8);
-            if (_e12) {
-                if (_e9.child == BSH_NONE) {
-                    uint _e16 = i_2;
-                    return _e16;
+            uint _e9 = i_2;
+            BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
+            bool _e11 = bsh_reaches(_e10, x_10, r_4, rl_3);
+            if (_e11) {
+                if (_e10.child == BSH_NONE) {
+                    uint _e15 = i_2;
+                    return _e15;
                 }
-                i_2 = _e9.child;
+                i_2 = _e10.child;
             } else {
-                i_2 = _e9.next;
+                i_2 = _e10.next;
             }
         }
     }
@@ -773,8 +916,9 @@ uint bsh_next_leaf_scaled(
 }
 
 Picks bsh_collect(
-    metal::float3 x_9,
-    float scale_2,
+    metal::float3 x_11,
+    metal::float3 r_5,
+    metal::float4 rl_4,
     uint seed_1,
     device type_9 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
@@ -784,57 +928,57 @@ Picks bsh_collect(
     uint i_3 = {};
     picks.n = 0u;
     h_1 = seed_1;
-    uint _e9 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_9, scale_2, bsh_nodes, _buffer_sizes);
-    i_3 = _e10;
+    uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_4, bsh_nodes, _buffer_sizes);
+    i_3 = _e11;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init) {
-            uint _e43 = i_3;
-            uint _e46 = bsh_nodes[_e43].next;
-            uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_9, scale_2, bsh_nodes, _buffer_sizes);
-            i_3 = _e47;
+            uint _e44 = i_3;
+            uint _e47 = bsh_nodes[_e44].next;
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_5, rl_4, bsh_nodes, _buffer_sizes);
+            i_3 = _e48;
         }
         loop_init = false;
-        uint _e12 = i_3;
-        if (_e12 != BSH_NONE) {
+        uint _e13 = i_3;
+        if (_e13 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e16 = picks.n;
-            bool _e17 = reservoir_takes(_e16);
-            if (_e17) {
-                uint _e19 = picks.n;
-                picks.n = _e19 + 1u;
-                uint _e22 = h_1;
-                uint _e23 = pcg_hash(_e22);
-                h_1 = _e23;
+            uint _e17 = picks.n;
+            bool _e18 = reservoir_takes(_e17);
+            if (_e18) {
+                uint _e20 = picks.n;
+                picks.n = _e20 + 1u;
+                uint _e23 = h_1;
+                uint _e24 = pcg_hash(_e23);
+                h_1 = _e24;
                 uint hi_3 = h_1;
-                uint _e25 = h_1;
-                uint _e26 = pcg_hash(_e25);
-                h_1 = _e26;
-                uint _e28 = picks.n;
-                uint _e30 = h_1;
-                uint _e31 = reservoir_slot(_e28, K, hi_3, _e30);
-                if (_e31 < K) {
-                    uint _e37 = i_3;
-                    uint _e40 = bsh_nodes[_e37].light;
-                    picks.light.inner[_e31] = _e40;
+                uint _e26 = h_1;
+                uint _e27 = pcg_hash(_e26);
+                h_1 = _e27;
+                uint _e29 = picks.n;
+                uint _e31 = h_1;
+                uint _e32 = reservoir_slot(_e29, K, hi_3, _e31);
+                if (_e32 < K) {
+                    uint _e38 = i_3;
+                    uint _e41 = bsh_nodes[_e38].light;
+                    picks.light.inner[_e32] = _e41;
                 }
             }
         }
     }
-    Picks _e48 = picks;
-    return _e48;
+    Picks _e49 = picks;
+    return _e49;
 }
 
 Connection connect(
     uint li,
-    metal::float3 x_10,
+    metal::float3 x_12,
     metal::float3 n_7,
     metal::float3 ng_1,
     float s,
@@ -845,39 +989,39 @@ Connection connect(
     device type_4 const& slc_table,
     device type_8 const& lights,
     device type_4 const& rt2_2,
-    device type_4 const& r2_2,
+    device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_5 = {};
-    bool local_6 = {};
+    bool local_8 = {};
     c_5.e = metal::float3(0.0);
     GpuLight l_2 = lights[li];
     metal::float3 _e17 = light_point(l_2, u1_2, u2_2);
     c_5.y = _e17;
     metal::float3 _e20 = c_5.y;
-    float _e23 = r2_2[li];
-    float _e25 = connection_cosine(x_10, _e20, n_7, ng_1, s * _e23);
+    float _e23 = r2_3[li];
+    float _e25 = connection_cosine(x_12, _e20, n_7, ng_1, s * _e23);
     c_5.cos_x = _e25;
     float _e27 = c_5.cos_x;
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_5.y;
-        bool _e37 = occluded(x_10 + (ng_1 * eps), _e36);
-        local_6 = _e37;
+        bool _e37 = occluded(x_12 + (ng_1 * eps), _e36);
+        local_8 = _e37;
     } else {
-        local_6 = true;
+        local_8 = true;
     }
-    bool _e39 = local_6;
+    bool _e39 = local_8;
     if (_e39) {
         Connection _e40 = c_5;
         return _e40;
     }
     metal::float3 _e42 = c_5.y;
-    metal::float3 v_2 = x_10 - _e42;
-    float d2_5 = metal::dot(v_2, v_2);
-    metal::float3 _e49 = light_intensity(l_2, v_2 / metal::float3(metal::sqrt(d2_5)), slc_table, _buffer_sizes);
+    metal::float3 v_4 = x_12 - _e42;
+    float d2_6 = metal::dot(v_4, v_4);
+    metal::float3 _e49 = light_intensity(l_2, v_4 / metal::float3(metal::sqrt(d2_6)), slc_table, _buffer_sizes);
     float _e51 = c_5.cos_x;
     float _e54 = rt2_2[li];
-    float _e56 = connection_factor(_e51, d2_5, s * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_6, s * _e54, w_res);
     c_5.e = _e49 * _e56;
     Connection _e58 = c_5;
     return _e58;
@@ -887,32 +1031,33 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p = position_tex.read(metal::uint2(texel), 0);
-    return (p.w > 0.0) ? metal::float4(p.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_2 = position_tex.read(metal::uint2(texel), 0);
+    return (p_2.w > 0.0) ? metal::float4(p_2.xyz, 1.0) : metal::float4(0.0);
 }
 
 Shaded shade_pick(
     uint li_1,
-    metal::float3 x_11,
+    metal::float3 x_13,
     metal::float3 n_8,
+    metal::float3 r_6,
+    metal::float4 rl_5,
     Material m_1,
-    float s2_,
     float w_4,
     float u1_3,
     float u2_3,
     device type_4 const& slc_table,
     device type_8 const& lights,
     device type_4 const& rt2_2,
-    device type_4 const& r2_2,
+    device type_4 const& r2_3,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Shaded s_1 = {};
-    Connection _e10 = connect(li_1, x_11, n_8, n_8, s2_, w_4, u1_3, u2_3, 0.0, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
-    s_1.e = _e10.e;
+    Connection _e12 = connect(li_1, x_13, n_8, n_8, 1.0, w_4, u1_3, u2_3, 0.0, slc_table, lights, rt2_2, r2_3, _buffer_sizes);
+    s_1.e = _e12.e;
     s_1.diffuse = metal::float3(0.0);
     s_1.specular = metal::float3(0.0);
-    Shaded _e19 = s_1;
-    return _e19;
+    Shaded _e21 = s_1;
+    return _e21;
 }
 
 Shaded add(
@@ -933,7 +1078,7 @@ kernel void main_(
 , metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
 , device type_8 const& lights [[user(fake0)]]
 , device type_4 const& rt2_2 [[user(fake0)]]
-, device type_4 const& r2_2 [[user(fake0)]]
+, device type_4 const& r2_3 [[user(fake0)]]
 , device type_9 const& bsh_nodes [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
@@ -971,19 +1116,19 @@ kernel void main_(
         out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_12 = _e21.xyz;
+    metal::float3 x_14 = _e21.xyz;
     metal::float3 n_10 = nn / metal::float3(metal::sqrt(len2_));
     r = n_10;
     metal::float4 _e53 = lobe;
-    float _e54 = range_scale(_e53);
-    float scale_3 = metal::sqrt(_e54);
-    uint _e58 = view.seed;
-    uint _e62 = view.width;
-    uint _e68 = view.frame;
-    uint _e69 = point_stream(_e58, (gid.y * _e62) + gid.x, _e68);
-    uint _e70 = pick_stream(_e69);
-    h = _e70;
-    Picks _e80 = bsh_collect(x_12, scale_3, _e69, bsh_nodes, _buffer_sizes);
+    metal::float4 _e54 = range_lobe(_e53);
+    uint _e57 = view.seed;
+    uint _e61 = view.width;
+    uint _e67 = view.frame;
+    uint _e68 = point_stream(_e57, (gid.y * _e61) + gid.x, _e67);
+    uint _e69 = pick_stream(_e68);
+    h = _e69;
+    metal::float3 _e79 = r;
+    Picks _e80 = bsh_collect(x_14, _e79, _e54, _e68, bsh_nodes, _buffer_sizes);
     float _e83 = reservoir_weight(_e80.n, K);
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_1 = true;
@@ -991,8 +1136,8 @@ kernel void main_(
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e107 = k;
-            k = _e107 + 1u;
+            uint _e108 = k;
+            k = _e108 + 1u;
         }
         loop_init_1 = false;
         uint _e86 = k;
@@ -1011,16 +1156,17 @@ kernel void main_(
             h = _e96;
             Shaded _e97 = t;
             uint _e99 = k;
-            Material _e101 = m;
-            uint _e102 = h;
-            float _e103 = xi_from_bits(_e102);
-            Shaded _e104 = shade_pick(_e80.light.inner[_e99], x_12, n_10, _e101, _e54, _e83, _e94, _e103, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
-            Shaded _e105 = add(_e97, _e104);
-            t = _e105;
+            metal::float3 _e101 = r;
+            Material _e102 = m;
+            uint _e103 = h;
+            float _e104 = xi_from_bits(_e103);
+            Shaded _e105 = shade_pick(_e80.light.inner[_e99], x_14, n_10, _e101, _e54, _e102, _e83, _e94, _e104, slc_table, lights, rt2_2, r2_3, _buffer_sizes);
+            Shaded _e106 = add(_e97, _e105);
+            t = _e106;
         }
     }
     uint count = _e80.n;
-    metal::float3 _e112 = t.e;
-    out_tex.write(metal::float4(_e112, static_cast<float>(count)), metal::uint2(texel_1));
+    metal::float3 _e113 = t.e;
+    out_tex.write(metal::float4(_e113, static_cast<float>(count)), metal::uint2(texel_1));
     return;
 }

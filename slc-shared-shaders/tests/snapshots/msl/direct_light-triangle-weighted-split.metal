@@ -154,6 +154,12 @@ uint add_wrap_u32_(
     return a_1 + b_1;
 }
 
+float f32_from_bits(
+    uint u_1
+) {
+    return as_type<float>(u_1);
+}
+
 float xi_from_bits(
     uint bits
 ) {
@@ -300,12 +306,22 @@ float bsh_scaled_radius(
     return node.radius * scale;
 }
 
+float bsh_range_bound(
+    BshNode node_1
+) {
+    if (node_1.child == BSH_NONE) {
+        return node_1.radius - node_1.extent;
+    }
+    float _e8 = f32_from_bits(node_1.light);
+    return _e8;
+}
+
 bool weighted_replace(
     float w_2,
     float w_sum,
-    float u_1
+    float u_2
 ) {
-    return (u_1 * w_sum) < w_2;
+    return (u_2 * w_sum) < w_2;
 }
 
 float weighted_pick_weight(
@@ -495,21 +511,39 @@ metal::float4 receiver_lobe(
     return metal::float4(_e16, _e29, alpha_4, n_v_1);
 }
 
-float receiver_peak(
+float specular_peak_factor(
     metal::float4 lobe_1
 ) {
-    float _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10));
+    float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.y * 0.5) / (_e6 + metal::max(lobe_1.w, 0.0));
+}
+
+float receiver_peak(
+    metal::float4 lobe_2
+) {
+    float _e2 = specular_peak_factor(lobe_2);
+    return lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z));
 }
 
 float range_scale(
-    metal::float4 lobe_2
+    metal::float4 lobe_3
 ) {
-    if (lobe_2.y <= 0.0) {
+    if (lobe_3.y <= 0.0) {
         return 1.0;
     }
-    float _e5 = receiver_peak(lobe_2);
+    float _e5 = receiver_peak(lobe_3);
     return metal::clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+metal::float4 range_lobe(
+    metal::float4 lobe_4
+) {
+    if (lobe_4.y <= 0.0) {
+        return metal::float4(1.0, 0.0, 1.0, 1.0);
+    }
+    float _e10 = specular_peak_factor(lobe_4);
+    float _e14 = range_scale(lobe_4);
+    return metal::float4(lobe_4.x, _e10, lobe_4.z * lobe_4.z, metal::sqrt(_e14));
 }
 
 metal::float3 mirror_dir(
@@ -613,24 +647,47 @@ float cone_cos_toward(
     return _e27;
 }
 
-float light_importance(
+float range_scale_at(
+    metal::float4 rl,
+    float cos_t
+) {
+    float t_2 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
+    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_2 * t_2)), 1.0, rl.w * rl.w);
+}
+
+float range_scale_toward(
+    metal::float4 rl_1,
     metal::float3 center_3,
     float radius_3,
+    metal::float3 p_3,
+    metal::float3 r_2
+) {
+    if (rl_1.w <= 1.0) {
+        return 1.0;
+    }
+    float _e9 = cone_cos_toward(center_3, radius_3, p_3, r_2);
+    float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float light_importance(
+    metal::float3 center_4,
+    float radius_4,
     float phi_1,
     metal::float3 axis_2,
     float cos_o_2,
     float cos_e_1,
-    metal::float3 p_3,
+    metal::float3 p_4,
     metal::float3 n_4
 ) {
     float imp = {};
-    metal::float4 _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    metal::float4 _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
     if (_e8.x <= cos_e_1) {
         return 0.0;
     }
     imp = (phi_1 * _e8.x) / _e8.y;
     if (metal::dot(n_4, n_4) > 0.0) {
-        metal::float3 v_7 = center_3 - p_3;
+        metal::float3 v_7 = center_4 - p_4;
         float dist2_3 = metal::dot(v_7, v_7);
         float cos_i_1 = metal::dot((dist2_3 > 0.0) ? (v_7 / metal::float3(metal::sqrt(dist2_3))) : metal::float3(0.0, 0.0, 0.0), n_4);
         float _e33 = imp;
@@ -643,20 +700,20 @@ float light_importance(
 }
 
 float glossy_importance(
-    metal::float3 center_4,
-    float radius_4,
+    metal::float3 center_5,
+    float radius_5,
     float phi_2,
     metal::float3 axis_3,
     float cos_o_3,
     float cos_e_2,
-    metal::float3 p_4,
+    metal::float3 p_5,
     metal::float3 n_5,
-    metal::float3 r_2,
-    metal::float4 lobe_3
+    metal::float3 r_3,
+    metal::float4 lobe_5
 ) {
     bool local_9 = {};
-    float _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
-    float _e11 = cone_cos_toward(center_4, radius_4, p_4, n_5);
+    float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
+    float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_5);
     if (!((_e10 <= 0.0))) {
         local_9 = _e11 <= 0.0;
     } else {
@@ -666,12 +723,12 @@ float glossy_importance(
     if (_e20) {
         return 0.0;
     }
-    float _e22 = cone_cos_toward(center_4, radius_4, p_4, r_2);
+    float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_3);
     float _e27 = safe_sqrt(0.5 + (0.5 * _e22));
-    float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_3.z);
-    float _e39 = smith_root(lobe_3.w, lobe_3.z);
-    float spec = ((lobe_3.y * _e33) * 0.25) / _e39;
-    return _e10 * (((lobe_3.x * INV_PI) * _e11) + spec);
+    float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_5.z);
+    float _e39 = smith_root(lobe_5.w, lobe_5.z);
+    float spec = ((lobe_5.y * _e33) * 0.25) / _e39;
+    return _e10 * (((lobe_5.x * INV_PI) * _e11) + spec);
 }
 
 float candidate_weight(
@@ -684,25 +741,25 @@ float candidate_weight(
 }
 
 float cone_weight(
-    metal::float3 center_5,
-    float radius_5,
+    metal::float3 center_6,
+    float radius_6,
     float phi_3,
     metal::float3 axis_4,
     float cos_o_4,
     float cos_e_3,
     float rt2_3,
-    metal::float3 p_5,
+    metal::float3 p_6,
     metal::float3 n_6,
-    metal::float3 r_3,
-    metal::float4 lobe_4
+    metal::float3 r_4,
+    metal::float4 lobe_6
 ) {
-    metal::float3 v_8 = p_5 - center_5;
-    if (lobe_4.y <= 0.0) {
-        float _e15 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_6);
+    metal::float3 v_8 = p_6 - center_6;
+    if (lobe_6.y <= 0.0) {
+        float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6);
         float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_8, v_8));
         return _e19;
     }
-    float _e20 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_6, r_3, lobe_4);
+    float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6, r_4, lobe_6);
     float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_8, v_8));
     return _e22;
 }
@@ -792,11 +849,55 @@ uint bsh_first(
     return BSH_NONE;
 }
 
-uint bsh_next_leaf_scaled(
+bool bsh_reaches(
+    BshNode node_2,
+    metal::float3 x_4,
+    metal::float3 r_5,
+    metal::float4 rl_2
+) {
+    bool local_11 = {};
+    bool local_12 = {};
+    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_2.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_2.w * 1.0001), x_4);
+        local_11 = !(_e20);
+    } else {
+        local_11 = true;
+    }
+    bool _e23 = local_11;
+    if (_e23) {
+        return false;
+    }
+    if (node_2.child == BSH_NONE) {
+        float _e30 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+        float _e33 = bsh_scaled_radius(node_2, metal::sqrt(_e30));
+        bool _e34 = sphere_contains_point(node_2.center, _e33, x_4);
+        return _e34;
+    }
+    float _e37 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+    float s_c = _e37 * 1.001;
+    float _e42 = bsh_range_bound(node_2);
+    float reach = node_2.extent + (metal::sqrt(s_c) * _e42);
+    metal::float3 v_9 = x_4 - node_2.center;
+    float d2_7 = metal::dot(v_9, v_9);
+    if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_12 = d2_7 <= (reach * reach);
+    } else {
+        local_12 = false;
+    }
+    bool _e58 = local_12;
+    return _e58;
+}
+
+uint bsh_next_leaf_lobe(
     BshNodes nodes_3,
     uint start,
-    metal::float3 x_4,
-    float scale_1,
+    metal::float3 x_5,
+    metal::float3 r_6,
+    metal::float4 rl_3,
     device type_9 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -806,24 +907,23 @@ uint bsh_next_leaf_scaled(
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e5 = i_1;
-        if (_e5 != BSH_NONE) {
+        uint _e6 = i_1;
+        if (_e6 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e8 = i_1;
-            BshNode _e9 = bsh_node(nodes_3, _e8, bsh_nodes, _buffer_sizes);
-            float _e11 = bsh_scaled_radius(_e9, scale_1);
-            bool _e12 = sphere_contains_point(_e9.center, _e11, x_4);
-            if (_e12) {
-                if (_e9.child == BSH_NONE) {
-                    uint _e16 = i_1;
-                    return _e16;
+            uint _e9 = i_1;
+            BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
+            bool _e11 = bsh_reaches(_e10, x_5, r_6, rl_3);
+            if (_e11) {
+                if (_e10.child == BSH_NONE) {
+                    uint _e15 = i_1;
+                    return _e15;
                 }
-                i_1 = _e9.child;
+                i_1 = _e10.child;
             } else {
-                i_1 = _e9.next;
+                i_1 = _e10.next;
             }
         }
     }
@@ -832,7 +932,7 @@ uint bsh_next_leaf_scaled(
 
 Connection connect(
     uint li,
-    metal::float3 x_5,
+    metal::float3 x_6,
     metal::float3 n_7,
     metal::float3 ng_1,
     float s,
@@ -846,63 +946,77 @@ Connection connect(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_4 = {};
-    bool local_11 = {};
+    bool local_13 = {};
     c_4.e = metal::float3(0.0);
     GpuLight l_4 = lights[li];
     metal::float3 _e17 = light_point(l_4, u1_2, u2_2);
     c_4.y = _e17;
     metal::float3 _e20 = c_4.y;
     float _e23 = r2_3[li];
-    float _e25 = connection_cosine(x_5, _e20, n_7, ng_1, s * _e23);
+    float _e25 = connection_cosine(x_6, _e20, n_7, ng_1, s * _e23);
     c_4.cos_x = _e25;
     float _e27 = c_4.cos_x;
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_4.y;
-        bool _e37 = occluded(x_5 + (ng_1 * eps), _e36);
-        local_11 = _e37;
+        bool _e37 = occluded(x_6 + (ng_1 * eps), _e36);
+        local_13 = _e37;
     } else {
-        local_11 = true;
+        local_13 = true;
     }
-    bool _e39 = local_11;
+    bool _e39 = local_13;
     if (_e39) {
         Connection _e40 = c_4;
         return _e40;
     }
     metal::float3 _e42 = c_4.y;
-    metal::float3 v_9 = x_5 - _e42;
-    float d2_7 = metal::dot(v_9, v_9);
-    metal::float3 _e49 = light_intensity(l_4, v_9 / metal::float3(metal::sqrt(d2_7)));
+    metal::float3 v_10 = x_6 - _e42;
+    float d2_8 = metal::dot(v_10, v_10);
+    metal::float3 _e49 = light_intensity(l_4, v_10 / metal::float3(metal::sqrt(d2_8)));
     float _e51 = c_4.cos_x;
     float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_7, s * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_8, s * _e54, w_res);
     c_4.e = _e49 * _e56;
     Connection _e58 = c_4;
     return _e58;
 }
 
-float light_weight(
+float light_range_scale(
     uint li_1,
-    metal::float3 x_6,
-    metal::float3 n_8,
-    metal::float3 r_4,
-    metal::float4 lobe_5,
-    device type_4 const& rt2_4,
+    metal::float3 x_7,
+    metal::float3 r_7,
+    metal::float4 rl_4,
     device type_10 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_7 = light_cones[li_1];
-    float _e14 = range_scale(lobe_5);
-    float _e17 = rt2_4[li_1];
-    float _e19 = cone_weight(c_7.center, c_7.radius, c_7.phi, c_7.axis, c_7.cos_o, c_7.cos_e, _e14 * _e17, x_6, n_8, r_4, lobe_5);
-    return _e19;
+    float _e9 = range_scale_toward(rl_4, c_7.center, c_7.radius, x_7, r_7);
+    return _e9;
+}
+
+float light_weight(
+    uint li_2,
+    metal::float3 x_8,
+    metal::float3 n_8,
+    metal::float3 r_8,
+    metal::float4 lobe_7,
+    metal::float4 rl_5,
+    device type_4 const& rt2_4,
+    device type_10 const& light_cones,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLightCone c_8 = light_cones[li_2];
+    float _e17 = range_scale_toward(rl_5, c_8.center, c_8.radius, x_8, r_8);
+    float _e20 = rt2_4[li_2];
+    float _e22 = cone_weight(c_8.center, c_8.radius, c_8.phi, c_8.axis, c_8.cos_o, c_8.cos_e, _e17 * _e20, x_8, n_8, r_8, lobe_7);
+    return _e22;
 }
 
 WeightedPicks bsh_weighted_collect(
-    metal::float3 x_7,
+    metal::float3 x_9,
     metal::float3 n_9,
-    metal::float3 r_5,
-    metal::float4 lobe_6,
-    float scale_2,
+    metal::float3 r_9,
+    metal::float4 lobe_8,
+    metal::float4 rl_6,
     uint h0_,
     device type_4 const& rt2_4,
     device type_9 const& bsh_nodes,
@@ -917,7 +1031,7 @@ WeightedPicks bsh_weighted_collect(
     picks.n = 0u;
     h_1 = h0_;
     uint _e14 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e15 = bsh_next_leaf_scaled(BSH, _e14, x_7, scale_2, bsh_nodes, _buffer_sizes);
+    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_9, rl_6, bsh_nodes, _buffer_sizes);
     b_5 = _e15;
     uint2 loop_bound_1 = uint2(4294967295u);
     bool loop_init = true;
@@ -927,7 +1041,7 @@ WeightedPicks bsh_weighted_collect(
         if (!loop_init) {
             uint _e58 = b_5;
             uint _e61 = bsh_nodes[_e58].next;
-            uint _e62 = bsh_next_leaf_scaled(BSH, _e61, x_7, scale_2, bsh_nodes, _buffer_sizes);
+            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_9, rl_6, bsh_nodes, _buffer_sizes);
             b_5 = _e62;
         }
         loop_init = false;
@@ -940,8 +1054,8 @@ WeightedPicks bsh_weighted_collect(
             uint _e21 = picks.n;
             picks.n = _e21 + 1u;
             uint _e25 = b_5;
-            uint li_3 = bsh_nodes[_e25].light;
-            float _e29 = light_weight(li_3, x_7, n_9, r_5, lobe_6, rt2_4, light_cones, _buffer_sizes);
+            uint li_4 = bsh_nodes[_e25].light;
+            float _e29 = light_weight(li_4, x_9, n_9, r_9, lobe_8, rl_6, rt2_4, light_cones, _buffer_sizes);
             if (_e29 > 0.0) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = _e33 + _e29;
@@ -971,7 +1085,7 @@ WeightedPicks bsh_weighted_collect(
                         bool _e46 = weighted_replace(_e29, _e43, _e45);
                         if (_e46) {
                             uint _e48 = s_1;
-                            picks.light.inner[_e48] = li_3;
+                            picks.light.inner[_e48] = li_4;
                             uint _e51 = s_1;
                             picks.w.inner[_e51] = _e29;
                         }
@@ -990,16 +1104,17 @@ metal::float4 surface_at(
     metal::int2 texel,
     metal::texture2d<float, metal::access::sample> position_tex
 ) {
-    metal::float4 p_6 = position_tex.read(metal::uint2(texel), 0);
-    return (p_6.w > 0.0) ? metal::float4(p_6.xyz, 1.0) : metal::float4(0.0);
+    metal::float4 p_7 = position_tex.read(metal::uint2(texel), 0);
+    return (p_7.w > 0.0) ? metal::float4(p_7.xyz, 1.0) : metal::float4(0.0);
 }
 
 Shaded shade_pick(
-    uint li_2,
-    metal::float3 x_8,
+    uint li_3,
+    metal::float3 x_10,
     metal::float3 n_10,
+    metal::float3 r_10,
+    metal::float4 rl_7,
     Material m_1,
-    float s2_,
     float w_5,
     float u1_3,
     float u2_3,
@@ -1007,27 +1122,29 @@ Shaded shade_pick(
     device type_8 const& lights,
     device type_4 const& rt2_4,
     device type_4 const& r2_3,
+    device type_10 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Shaded s_2 = {};
-    Connection _e10 = connect(li_2, x_8, n_10, n_10, s2_, w_5, u1_3, u2_3, 0.0, lights, rt2_4, r2_3, _buffer_sizes);
-    s_2.e = _e10.e;
+    float _e10 = light_range_scale(li_3, x_10, r_10, rl_7, light_cones, _buffer_sizes);
+    Connection _e12 = connect(li_3, x_10, n_10, n_10, _e10, w_5, u1_3, u2_3, 0.0, lights, rt2_4, r2_3, _buffer_sizes);
+    s_2.e = _e12.e;
     s_2.diffuse = metal::float3(0.0);
     s_2.specular = metal::float3(0.0);
-    if (_e10.cos_x > 0.0) {
-        metal::float3 l_5 = metal::normalize(_e10.y - x_8);
-        metal::float3 _e30 = view.f0_d;
-        float _e33 = view.f90_d;
-        float _e35 = half_cosine(m_1.v, l_5);
-        metal::float3 _e36 = diffuse_brdf(m_1.base, m_1.metallic, _e30, _e33, _e35);
-        s_2.diffuse = _e36 * _e10.e;
-        metal::float3 _e44 = view.f0_d;
-        float _e47 = view.f90_d;
-        metal::float3 _e50 = specular_brdf(m_1.base, m_1.metallic, _e44, _e47, m_1.alpha, n_10, m_1.v, l_5);
-        s_2.specular = _e50 * _e10.e;
+    if (_e12.cos_x > 0.0) {
+        metal::float3 l_5 = metal::normalize(_e12.y - x_10);
+        metal::float3 _e32 = view.f0_d;
+        float _e35 = view.f90_d;
+        float _e37 = half_cosine(m_1.v, l_5);
+        metal::float3 _e38 = diffuse_brdf(m_1.base, m_1.metallic, _e32, _e35, _e37);
+        s_2.diffuse = _e38 * _e12.e;
+        metal::float3 _e46 = view.f0_d;
+        float _e49 = view.f90_d;
+        metal::float3 _e52 = specular_brdf(m_1.base, m_1.metallic, _e46, _e49, m_1.alpha, n_10, m_1.v, l_5);
+        s_2.specular = _e52 * _e12.e;
     }
-    Shaded _e53 = s_2;
-    return _e53;
+    Shaded _e55 = s_2;
+    return _e55;
 }
 
 Shaded add(
@@ -1090,14 +1207,14 @@ kernel void main_(
         specular_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_9 = _e21.xyz;
+    metal::float3 x_11 = _e21.xyz;
     metal::float3 n_12 = nn / metal::float3(metal::sqrt(len2_1));
     r = n_12;
     metal::float4 mr = metal_rough_tex.read(metal::uint2(texel_1), 0);
     metal::float4 _e61 = base_color_tex.read(metal::uint2(texel_1), 0);
     float _e67 = ggx_alpha(metal::saturate(mr.y));
     metal::float3 _e70 = view.eye;
-    m = Material {_e61.xyz, metal::saturate(mr.z), _e67, {}, metal::normalize(_e70 - x_9), mr.y, 0.0};
+    m = Material {_e61.xyz, metal::saturate(mr.z), _e67, {}, metal::normalize(_e70 - x_11), mr.y, 0.0};
     metal::float3 _e77 = m.base;
     float _e79 = m.metallic;
     metal::float3 _e82 = view.f0_d;
@@ -1110,18 +1227,17 @@ kernel void main_(
     metal::float3 _e94 = mirror_dir(n_12, _e93);
     r = _e94;
     metal::float4 _e95 = lobe;
-    float _e96 = range_scale(_e95);
-    float scale_3 = metal::sqrt(_e96);
-    uint _e100 = view.seed;
-    uint _e104 = view.width;
-    uint _e110 = view.frame;
-    uint _e111 = point_stream(_e100, (gid.y * _e104) + gid.x, _e110);
-    uint _e112 = pick_stream(_e111);
-    h = _e112;
-    metal::float3 _e122 = r;
-    metal::float4 _e123 = lobe;
-    WeightedPicks _e124 = bsh_weighted_collect(x_9, n_12, _e122, _e123, scale_3, _e111, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
-    if (_e124.w_sum > 0.0) {
+    metal::float4 _e96 = range_lobe(_e95);
+    uint _e99 = view.seed;
+    uint _e103 = view.width;
+    uint _e109 = view.frame;
+    uint _e110 = point_stream(_e99, (gid.y * _e103) + gid.x, _e109);
+    uint _e111 = pick_stream(_e110);
+    h = _e111;
+    metal::float3 _e121 = r;
+    metal::float4 _e122 = lobe;
+    WeightedPicks _e123 = bsh_weighted_collect(x_11, n_12, _e121, _e122, _e96, _e110, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
+    if (_e123.w_sum > 0.0) {
         uint2 loop_bound_3 = uint2(4294967295u);
         bool loop_init_2 = true;
         while(true) {
@@ -1132,34 +1248,35 @@ kernel void main_(
                 k = _e155 + 1u;
             }
             loop_init_2 = false;
-            uint _e130 = k;
-            if (_e130 < K) {
+            uint _e129 = k;
+            if (_e129 < K) {
             } else {
                 break;
             }
             {
-                uint _e133 = h;
-                uint _e134 = pcg_hash(_e133);
-                h = _e134;
-                uint _e135 = h;
-                float _e136 = xi_from_bits(_e135);
-                uint _e137 = h;
-                uint _e138 = pcg_hash(_e137);
-                h = _e138;
-                Shaded _e139 = t;
-                uint _e141 = k;
+                uint _e132 = h;
+                uint _e133 = pcg_hash(_e132);
+                h = _e133;
+                uint _e134 = h;
+                float _e135 = xi_from_bits(_e134);
+                uint _e136 = h;
+                uint _e137 = pcg_hash(_e136);
+                h = _e137;
+                Shaded _e138 = t;
+                uint _e140 = k;
+                metal::float3 _e142 = r;
                 Material _e143 = m;
                 uint _e146 = k;
-                float _e149 = weighted_pick_weight(_e124.w_sum, _e124.w.inner[_e146], K);
+                float _e149 = weighted_pick_weight(_e123.w_sum, _e123.w.inner[_e146], K);
                 uint _e150 = h;
                 float _e151 = xi_from_bits(_e150);
-                Shaded _e152 = shade_pick(_e124.light.inner[_e141], x_9, n_12, _e143, _e96, _e149, _e136, _e151, view, lights, rt2_4, r2_3, _buffer_sizes);
-                Shaded _e153 = add(_e139, _e152);
+                Shaded _e152 = shade_pick(_e123.light.inner[_e140], x_11, n_12, _e142, _e96, _e143, _e149, _e135, _e151, view, lights, rt2_4, r2_3, light_cones, _buffer_sizes);
+                Shaded _e153 = add(_e138, _e152);
                 t = _e153;
             }
         }
     }
-    uint count = _e124.n;
+    uint count = _e123.n;
     metal::float3 _e160 = t.e;
     out_tex.write(metal::float4(_e160, static_cast<float>(count)), metal::uint2(texel_1));
     metal::float3 _e165 = t.specular;

@@ -11,10 +11,11 @@ struct _mslBufferSizes {
     uint size3;
     uint size4;
     uint size5;
-    uint size7;
+    uint size6;
     uint size8;
     uint size9;
     uint size10;
+    uint size11;
 };
 
 struct GpuLight {
@@ -26,6 +27,16 @@ struct GpuLight {
     float b;
     metal::packed_float3 intensity;
     uint ies_base;
+};
+struct GpuLightCone {
+    metal::packed_float3 center;
+    float radius;
+    metal::packed_float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
 };
 struct GpuGeoNode {
     metal::packed_float3 bmin;
@@ -100,11 +111,12 @@ struct Connection {
     float cos_x;
 };
 typedef GpuLight type_11[1];
+typedef GpuLightCone type_12[1];
 typedef uint BvhNodes;
-typedef GpuPathVertex type_12[1];
-typedef GpuMaterial type_13[1];
-typedef metal::float4 type_14[1];
-typedef uint type_15[1];
+typedef GpuPathVertex type_13[1];
+typedef GpuMaterial type_14[1];
+typedef metal::float4 type_15[1];
+typedef uint type_16[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -166,6 +178,12 @@ uint add_wrap_u32_(
     uint b_1
 ) {
     return a_1 + b_1;
+}
+
+float f32_from_bits(
+    uint u_1
+) {
+    return as_type<float>(u_1);
 }
 
 float xi_from_bits(
@@ -334,6 +352,16 @@ float bsh_scaled_radius(
         return node.extent + (scale * (node.radius - node.extent));
     }
     return node.radius * scale;
+}
+
+float bsh_range_bound(
+    BshNode node_1
+) {
+    if (node_1.child == BSH_NONE) {
+        return node_1.radius - node_1.extent;
+    }
+    float _e8 = f32_from_bits(node_1.light);
+    return _e8;
 }
 
 uint mul_hi_u32_(
@@ -694,21 +722,39 @@ float specular_probability(
     return metal::clamp(lobe.y / (lobe.y + lobe.x), 0.1, 0.9);
 }
 
-float receiver_peak(
+float specular_peak_factor(
     metal::float4 lobe_1
 ) {
-    float _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10));
+    float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.y * 0.5) / (_e6 + metal::max(lobe_1.w, 0.0));
+}
+
+float receiver_peak(
+    metal::float4 lobe_2
+) {
+    float _e2 = specular_peak_factor(lobe_2);
+    return lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z));
 }
 
 float range_scale(
-    metal::float4 lobe_2
+    metal::float4 lobe_3
 ) {
-    if (lobe_2.y <= 0.0) {
+    if (lobe_3.y <= 0.0) {
         return 1.0;
     }
-    float _e5 = receiver_peak(lobe_2);
+    float _e5 = receiver_peak(lobe_3);
     return metal::clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+metal::float4 range_lobe(
+    metal::float4 lobe_4
+) {
+    if (lobe_4.y <= 0.0) {
+        return metal::float4(1.0, 0.0, 1.0, 1.0);
+    }
+    float _e10 = specular_peak_factor(lobe_4);
+    float _e14 = range_scale(lobe_4);
+    return metal::float4(lobe_4.x, _e10, lobe_4.z * lobe_4.z, metal::sqrt(_e14));
 }
 
 metal::float3 mirror_dir(
@@ -769,6 +815,72 @@ float bsdf_pdf(
     return (p_spec * _e11) + ((1.0 - p_spec) * _e6);
 }
 
+float cos_sub_clamped(
+    float sin_a,
+    float cos_a,
+    float sin_b,
+    float cos_b
+) {
+    if (cos_a > cos_b) {
+        return 1.0;
+    }
+    return (cos_a * cos_b) + (sin_a * sin_b);
+}
+
+float safe_sqrt(
+    float x_3
+) {
+    return metal::sqrt(metal::max(x_3, 0.0));
+}
+
+float subtended_cos(
+    float dist2_,
+    float r2_2
+) {
+    float _e5 = safe_sqrt(1.0 - (r2_2 / dist2_));
+    return (dist2_ <= r2_2) ? -1.0 : _e5;
+}
+
+float cone_cos_toward(
+    metal::float3 center,
+    float radius,
+    metal::float3 p,
+    metal::float3 d
+) {
+    metal::float3 v_8 = center - p;
+    float dist2_1 = metal::dot(v_8, v_8);
+    metal::float3 w_6 = (dist2_1 > 0.0) ? (v_8 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
+    float _e17 = subtended_cos(dist2_1, radius * radius);
+    float cos_i = metal::dot(w_6, d);
+    float _e22 = safe_sqrt(1.0 - (cos_i * cos_i));
+    float _e26 = safe_sqrt(1.0 - (_e17 * _e17));
+    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float range_scale_at(
+    metal::float4 rl,
+    float cos_t
+) {
+    float t_2 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
+    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_2 * t_2)), 1.0, rl.w * rl.w);
+}
+
+float range_scale_toward(
+    metal::float4 rl_1,
+    metal::float3 center_1,
+    float radius_1,
+    metal::float3 p_1,
+    metal::float3 r_1
+) {
+    if (rl_1.w <= 1.0) {
+        return 1.0;
+    }
+    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_1);
+    float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
 float shadow_margin(
     float len
 ) {
@@ -776,17 +888,17 @@ float shadow_margin(
 }
 
 float ray_inverse(
-    float x_3
+    float x_4
 ) {
-    return 1.0 / ((metal::abs(x_3) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_3);
+    return 1.0 / ((metal::abs(x_4) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_4);
 }
 
 metal::float3 ray_inverse3_(
-    metal::float3 d
+    metal::float3 d_1
 ) {
-    float _e2 = ray_inverse(d.x);
-    float _e4 = ray_inverse(d.y);
-    float _e6 = ray_inverse(d.z);
+    float _e2 = ray_inverse(d_1.x);
+    float _e4 = ray_inverse(d_1.y);
+    float _e6 = ray_inverse(d_1.z);
     return metal::float3(_e2, _e4, _e6);
 }
 
@@ -831,7 +943,7 @@ metal::float3 triangle_normal(
 
 float ray_triangle(
     metal::float3 o_1,
-    metal::float3 d_1,
+    metal::float3 d_2,
     metal::float3 a_5,
     metal::float3 b_5,
     metal::float3 c_4,
@@ -843,16 +955,16 @@ float ray_triangle(
     bool local_14 = {};
     metal::float3 e1_ = b_5 - a_5;
     metal::float3 e2_ = c_4 - a_5;
-    metal::float3 p = metal::cross(d_1, e2_);
-    float det = metal::dot(e1_, p);
+    metal::float3 p_2 = metal::cross(d_2, e2_);
+    float det = metal::dot(e1_, p_2);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv_1 = 1.0 / det;
     metal::float3 s_6 = o_1 - a_5;
-    float u_1 = metal::dot(s_6, p) * inv_1;
-    if (!((u_1 < 0.0))) {
-        local_12 = u_1 > 1.0;
+    float u_2 = metal::dot(s_6, p_2) * inv_1;
+    if (!((u_2 < 0.0))) {
+        local_12 = u_2 > 1.0;
     } else {
         local_12 = true;
     }
@@ -861,9 +973,9 @@ float ray_triangle(
         return -1.0;
     }
     metal::float3 q = metal::cross(s_6, e1_);
-    float v_8 = metal::dot(d_1, q) * inv_1;
-    if (!((v_8 < 0.0))) {
-        local_13 = (u_1 + v_8) > 1.0;
+    float v_9 = metal::dot(d_2, q) * inv_1;
+    if (!((v_9 < 0.0))) {
+        local_13 = (u_2 + v_9) > 1.0;
     } else {
         local_13 = true;
     }
@@ -871,15 +983,15 @@ float ray_triangle(
     if (_e42) {
         return -1.0;
     }
-    float t_2 = metal::dot(e2_, q) * inv_1;
-    if (t_2 > t_min) {
-        local_14 = t_2 < t_max_1;
+    float t_3 = metal::dot(e2_, q) * inv_1;
+    if (t_3 > t_min) {
+        local_14 = t_3 < t_max_1;
     } else {
         local_14 = false;
     }
     bool _e51 = local_14;
     if (_e51) {
-        return t_2;
+        return t_3;
     }
     return -1.0;
 }
@@ -953,7 +1065,7 @@ metal::float3 light_normal(
 
 GeoHit trace(
     metal::float3 o_2,
-    metal::float3 d_2,
+    metal::float3 d_3,
     float t_min_1,
     float t_max_2,
     bool any_hit,
@@ -964,7 +1076,7 @@ GeoHit trace(
     GeoHit hit = {};
     type_8 stack = {};
     uint sp = 0u;
-    uint node_1 = 0u;
+    uint node_2 = 0u;
     uint i = {};
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -972,12 +1084,12 @@ GeoHit trace(
         GeoHit _e13 = hit;
         return _e13;
     }
-    metal::float3 _e14 = ray_inverse3_(d_2);
+    metal::float3 _e14 = ray_inverse3_(d_3);
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e21 = node_1;
+        uint _e21 = node_2;
         GpuGeoNode n_18 = geo_nodes[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_18.bmin, n_18.bmax, _e27);
@@ -1001,9 +1113,9 @@ GeoHit trace(
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_3 = geo_tris[_e42];
+                        GpuTriangle t_4 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_2, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -1023,7 +1135,7 @@ GeoHit trace(
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_1 = n_18.first;
+                node_2 = n_18.first;
                 continue;
             }
         }
@@ -1035,7 +1147,7 @@ GeoHit trace(
         sp = _e75 - 1u;
         uint _e78 = sp;
         uint _e80 = stack.inner[_e78];
-        node_1 = _e80;
+        node_2 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -1088,11 +1200,55 @@ uint bsh_first(
     return BSH_NONE;
 }
 
-uint bsh_next_leaf_scaled(
+bool bsh_reaches(
+    BshNode node_3,
+    metal::float3 x_5,
+    metal::float3 r_2,
+    metal::float4 rl_2
+) {
+    bool local_17 = {};
+    bool local_18 = {};
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_2.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_2.w * 1.0001), x_5);
+        local_17 = !(_e20);
+    } else {
+        local_17 = true;
+    }
+    bool _e23 = local_17;
+    if (_e23) {
+        return false;
+    }
+    if (node_3.child == BSH_NONE) {
+        float _e30 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_5, r_2);
+        float _e33 = bsh_scaled_radius(node_3, metal::sqrt(_e30));
+        bool _e34 = sphere_contains_point(node_3.center, _e33, x_5);
+        return _e34;
+    }
+    float _e37 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_5, r_2);
+    float s_c = _e37 * 1.001;
+    float _e42 = bsh_range_bound(node_3);
+    float reach = node_3.extent + (metal::sqrt(s_c) * _e42);
+    metal::float3 v_10 = x_5 - node_3.center;
+    float d2_8 = metal::dot(v_10, v_10);
+    if (d2_8 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_18 = d2_8 <= (reach * reach);
+    } else {
+        local_18 = false;
+    }
+    bool _e58 = local_18;
+    return _e58;
+}
+
+uint bsh_next_leaf_lobe(
     BshNodes nodes_3,
     uint start,
-    metal::float3 x_4,
-    float scale_1,
+    metal::float3 x_6,
+    metal::float3 r_3,
+    metal::float4 rl_3,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1102,24 +1258,23 @@ uint bsh_next_leaf_scaled(
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        uint _e5 = i_2;
-        if (_e5 != BSH_NONE) {
+        uint _e6 = i_2;
+        if (_e6 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e8 = i_2;
-            BshNode _e9 = bsh_node(nodes_3, _e8, bsh_nodes, _buffer_sizes);
-            float _e11 = bsh_scaled_radius(_e9, scale_1);
-            bool _e12 = sphere_contains_point(_e9.center, _e11, x_4);
-            if (_e12) {
-                if (_e9.child == BSH_NONE) {
-                    uint _e16 = i_2;
-                    return _e16;
+            uint _e9 = i_2;
+            BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
+            bool _e11 = bsh_reaches(_e10, x_6, r_3, rl_3);
+            if (_e11) {
+                if (_e10.child == BSH_NONE) {
+                    uint _e15 = i_2;
+                    return _e15;
                 }
-                i_2 = _e9.child;
+                i_2 = _e10.child;
             } else {
-                i_2 = _e9.next;
+                i_2 = _e10.next;
             }
         }
     }
@@ -1127,8 +1282,9 @@ uint bsh_next_leaf_scaled(
 }
 
 Picks bsh_collect(
-    metal::float3 x_5,
-    float scale_2,
+    metal::float3 x_7,
+    metal::float3 r_4,
+    metal::float4 rl_4,
     uint seed_1,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
@@ -1138,57 +1294,57 @@ Picks bsh_collect(
     uint i_3 = {};
     picks.n = 0u;
     h_1 = seed_1;
-    uint _e9 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e10 = bsh_next_leaf_scaled(BSH, _e9, x_5, scale_2, bsh_nodes, _buffer_sizes);
-    i_3 = _e10;
+    uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_7, r_4, rl_4, bsh_nodes, _buffer_sizes);
+    i_3 = _e11;
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e43 = i_3;
-            uint _e46 = bsh_nodes[_e43].next;
-            uint _e47 = bsh_next_leaf_scaled(BSH, _e46, x_5, scale_2, bsh_nodes, _buffer_sizes);
-            i_3 = _e47;
+            uint _e44 = i_3;
+            uint _e47 = bsh_nodes[_e44].next;
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_7, r_4, rl_4, bsh_nodes, _buffer_sizes);
+            i_3 = _e48;
         }
         loop_init_1 = false;
-        uint _e12 = i_3;
-        if (_e12 != BSH_NONE) {
+        uint _e13 = i_3;
+        if (_e13 != BSH_NONE) {
         } else {
             break;
         }
         {
-            uint _e16 = picks.n;
-            bool _e17 = reservoir_takes(_e16);
-            if (_e17) {
-                uint _e19 = picks.n;
-                picks.n = _e19 + 1u;
-                uint _e22 = h_1;
-                uint _e23 = pcg_hash(_e22);
-                h_1 = _e23;
+            uint _e17 = picks.n;
+            bool _e18 = reservoir_takes(_e17);
+            if (_e18) {
+                uint _e20 = picks.n;
+                picks.n = _e20 + 1u;
+                uint _e23 = h_1;
+                uint _e24 = pcg_hash(_e23);
+                h_1 = _e24;
                 uint hi_3 = h_1;
-                uint _e25 = h_1;
-                uint _e26 = pcg_hash(_e25);
-                h_1 = _e26;
-                uint _e28 = picks.n;
-                uint _e30 = h_1;
-                uint _e31 = reservoir_slot(_e28, K, hi_3, _e30);
-                if (_e31 < K) {
-                    uint _e37 = i_3;
-                    uint _e40 = bsh_nodes[_e37].light;
-                    picks.light.inner[_e31] = _e40;
+                uint _e26 = h_1;
+                uint _e27 = pcg_hash(_e26);
+                h_1 = _e27;
+                uint _e29 = picks.n;
+                uint _e31 = h_1;
+                uint _e32 = reservoir_slot(_e29, K, hi_3, _e31);
+                if (_e32 < K) {
+                    uint _e38 = i_3;
+                    uint _e41 = bsh_nodes[_e38].light;
+                    picks.light.inner[_e32] = _e41;
                 }
             }
         }
     }
-    Picks _e48 = picks;
-    return _e48;
+    Picks _e49 = picks;
+    return _e49;
 }
 
 Connection connect(
     uint li,
-    metal::float3 x_6,
+    metal::float3 x_8,
     metal::float3 n_13,
     metal::float3 ng_1,
     float s_1,
@@ -1199,40 +1355,40 @@ Connection connect(
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
-    device type_4 const& r2_2,
+    device type_4 const& r2_3,
     device type_4 const& rt2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_5 = {};
-    bool local_17 = {};
+    bool local_19 = {};
     c_5.e = metal::float3(0.0);
     GpuLight l_8 = lights[li];
     metal::float3 _e17 = light_point(l_8, u1_2, u2_2);
     c_5.y = _e17;
     metal::float3 _e20 = c_5.y;
-    float _e23 = r2_2[li];
-    float _e25 = connection_cosine(x_6, _e20, n_13, ng_1, s_1 * _e23);
+    float _e23 = r2_3[li];
+    float _e25 = connection_cosine(x_8, _e20, n_13, ng_1, s_1 * _e23);
     c_5.cos_x = _e25;
     float _e27 = c_5.cos_x;
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_5.y;
-        bool _e37 = occluded(x_6 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
-        local_17 = _e37;
+        bool _e37 = occluded(x_8 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
+        local_19 = _e37;
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    bool _e39 = local_17;
+    bool _e39 = local_19;
     if (_e39) {
         Connection _e40 = c_5;
         return _e40;
     }
     metal::float3 _e42 = c_5.y;
-    metal::float3 v_9 = x_6 - _e42;
-    float d2_8 = metal::dot(v_9, v_9);
-    metal::float3 _e49 = light_intensity(l_8, v_9 / metal::float3(metal::sqrt(d2_8)));
+    metal::float3 v_11 = x_8 - _e42;
+    float d2_9 = metal::dot(v_11, v_11);
+    metal::float3 _e49 = light_intensity(l_8, v_11 / metal::float3(metal::sqrt(d2_9)));
     float _e51 = c_5.cos_x;
     float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_8, s_1 * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_9, s_1 * _e54, w_res);
     c_5.e = _e49 * _e56;
     Connection _e58 = c_5;
     return _e58;
@@ -1246,12 +1402,25 @@ float mis_weight(
     return _e2;
 }
 
-float select_pdf(
+float light_range_scale(
     uint li_1,
-    metal::float3 x_7,
+    metal::float3 x_9,
+    metal::float3 r_5,
+    metal::float4 rl_5,
+    device type_12 const& light_cones,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLightCone c_9 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_9, r_5);
+    return _e9;
+}
+
+float select_pdf(
+    uint li_2,
+    metal::float3 x_10,
     metal::float3 n_14,
-    metal::float3 r_1,
-    metal::float4 lobe_3,
+    metal::float3 r_6,
+    metal::float4 lobe_5,
     uint nee,
     bool in_range_1
 ) {
@@ -1260,54 +1429,59 @@ float select_pdf(
 }
 
 float light_pdf_selected(
-    uint li_2,
-    metal::float3 x_8,
-    metal::float4 lobe_4,
+    uint li_3,
+    metal::float3 x_11,
+    metal::float3 r_7,
+    metal::float4 lobe_6,
     metal::float3 y_1,
     float sel,
     device type_11 const& lights,
     device type_4 const& rt2_4,
+    device type_12 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight l_9 = lights[li_2];
-    metal::float3 v_10 = x_8 - y_1;
-    float d2_9 = metal::dot(v_10, v_10);
-    metal::float3 _e10 = light_normal(l_9);
-    float cos_y_1 = (d2_9 > 0.0) ? metal::dot(_e10, v_10 / metal::float3(metal::sqrt(d2_9))) : 0.0;
-    float _e19 = range_scale(lobe_4);
-    float _e22 = rt2_4[li_2];
-    float _e24 = light_area(l_9);
-    float _e25 = light_strategy_pdf(sel, _e19 * _e22, d2_9, _e24, cos_y_1);
-    return _e25;
+    GpuLight l_9 = lights[li_3];
+    metal::float3 v_12 = x_11 - y_1;
+    float d2_10 = metal::dot(v_12, v_12);
+    metal::float3 _e11 = light_normal(l_9);
+    float cos_y_1 = (d2_10 > 0.0) ? metal::dot(_e11, v_12 / metal::float3(metal::sqrt(d2_10))) : 0.0;
+    metal::float4 _e20 = range_lobe(lobe_6);
+    float _e21 = light_range_scale(li_3, x_11, r_7, _e20, light_cones, _buffer_sizes);
+    float _e24 = rt2_4[li_3];
+    float _e26 = light_area(l_9);
+    float _e27 = light_strategy_pdf(sel, _e21 * _e24, d2_10, _e26, cos_y_1);
+    return _e27;
 }
 
 float light_pdf(
-    uint li_3,
-    metal::float3 x_9,
+    uint li_4,
+    metal::float3 x_12,
     metal::float3 n_15,
-    metal::float3 r_2,
-    metal::float4 lobe_5,
+    metal::float3 r_8,
+    metal::float4 lobe_7,
     metal::float3 y_2,
     uint nee_1,
     bool in_range_2,
     device type_11 const& lights,
     device type_4 const& rt2_4,
+    device type_12 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e8 = select_pdf(li_3, x_9, n_15, r_2, lobe_5, nee_1, in_range_2);
-    float _e9 = light_pdf_selected(li_3, x_9, lobe_5, y_2, _e8, lights, rt2_4, _buffer_sizes);
+    float _e8 = select_pdf(li_4, x_12, n_15, r_8, lobe_7, nee_1, in_range_2);
+    float _e9 = light_pdf_selected(li_4, x_12, r_8, lobe_7, y_2, _e8, lights, rt2_4, light_cones, _buffer_sizes);
     return _e9;
 }
 
 metal::float3 shade_pick(
-    uint li_4,
-    metal::float3 x_10,
+    uint li_5,
+    metal::float3 x_13,
     metal::float3 n_16,
     metal::float3 ng_2,
     GpuMaterial m,
     metal::float3 wo_1,
-    metal::float3 r_3,
-    metal::float4 lobe_6,
+    metal::float3 r_9,
+    metal::float4 lobe_8,
+    metal::float4 rl_6,
     float w_4,
     uint nee_2,
     float u1_3,
@@ -1315,31 +1489,32 @@ metal::float3 shade_pick(
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
-    device type_4 const& r2_2,
+    device type_4 const& r2_3,
     device type_4 const& rt2_4,
+    device type_12 const& light_cones,
     constant ShadeParams& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e12 = range_scale(lobe_6);
-    float _e15 = params.eps;
-    Connection _e16 = connect(li_4, x_10, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15, geo_nodes, geo_tris, lights, r2_2, rt2_4, _buffer_sizes);
-    if (_e16.cos_x <= 0.0) {
+    float _e13 = light_range_scale(li_5, x_13, r_9, rl_6, light_cones, _buffer_sizes);
+    float _e16 = params.eps;
+    Connection _e17 = connect(li_5, x_13, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16, geo_nodes, geo_tris, lights, r2_3, rt2_4, _buffer_sizes);
+    if (_e17.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
-    metal::float3 l_10 = metal::normalize(_e16.y - x_10);
-    GpuLight _e29 = lights[li_4];
-    float _e30 = light_area(_e29);
-    if (_e30 > 0.0) {
-        float _e35 = light_pdf(li_4, x_10, n_16, r_3, lobe_6, _e16.y, nee_2, true, lights, rt2_4, _buffer_sizes);
-        float _e37 = specular_probability(lobe_6);
-        float _e38 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e37);
-        float _e39 = mis_weight(_e35, _e38);
-        mis = _e39;
+    metal::float3 l_10 = metal::normalize(_e17.y - x_13);
+    GpuLight _e30 = lights[li_5];
+    float _e31 = light_area(_e30);
+    if (_e31 > 0.0) {
+        float _e36 = light_pdf(li_5, x_13, n_16, r_9, lobe_8, _e17.y, nee_2, true, lights, rt2_4, light_cones, _buffer_sizes);
+        float _e38 = specular_probability(lobe_8);
+        float _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
+        float _e40 = mis_weight(_e36, _e39);
+        mis = _e40;
     }
-    metal::float3 _e45 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
-    float _e48 = mis;
-    return (_e45 * _e16.e) * _e48;
+    metal::float3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
+    float _e49 = mis;
+    return (_e46 * _e17.e) * _e49;
 }
 
 struct main_Input {
@@ -1350,13 +1525,14 @@ kernel void main_(
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_10 const& bsh_nodes [[user(fake0)]]
 , device type_11 const& lights [[user(fake0)]]
-, device type_4 const& r2_2 [[user(fake0)]]
+, device type_4 const& r2_3 [[user(fake0)]]
 , device type_4 const& rt2_4 [[user(fake0)]]
+, device type_12 const& light_cones [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_12 const& vertices [[user(fake0)]]
-, device type_13 const& materials [[user(fake0)]]
-, device type_14& radiance [[user(fake0)]]
-, device type_15& candidates [[user(fake0)]]
+, device type_13 const& vertices [[user(fake0)]]
+, device type_14 const& materials [[user(fake0)]]
+, device type_15& radiance [[user(fake0)]]
+, device type_16& candidates [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};
@@ -1372,61 +1548,60 @@ kernel void main_(
         candidates[i_4] = 0u;
         return;
     }
-    metal::float3 x_11 = vtx.position;
+    metal::float3 x_14 = vtx.position;
     metal::float3 n_19 = vtx.normal;
     metal::float3 ng_3 = vtx.gnormal;
     GpuMaterial m_2 = materials[vtx.material];
     metal::float3 wo_2 = vtx.wo;
     metal::float3 _e23 = mirror_dir(n_19, wo_2);
     metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_19, wo_2));
-    float _e31 = range_scale(_e30);
-    float scale_3 = metal::sqrt(_e31);
-    uint _e35 = params.seed;
-    uint _e38 = params.frame;
-    uint _e39 = point_stream(_e35, i_4, _e38);
-    uint _e40 = pick_stream(_e39);
-    h = _e40;
-    Picks _e45 = bsh_collect(x_11, scale_3, _e39, bsh_nodes, _buffer_sizes);
-    candidates[i_4] = _e45.n;
-    float _e51 = reservoir_weight(_e45.n, K);
+    metal::float4 _e31 = range_lobe(_e30);
+    uint _e34 = params.seed;
+    uint _e37 = params.frame;
+    uint _e38 = point_stream(_e34, i_4, _e37);
+    uint _e39 = pick_stream(_e38);
+    h = _e39;
+    Picks _e44 = bsh_collect(x_14, _e23, _e31, _e38, bsh_nodes, _buffer_sizes);
+    candidates[i_4] = _e44.n;
+    float _e50 = reservoir_weight(_e44.n, K);
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e75 = s;
-            s = _e75 + 1u;
+            uint _e74 = s;
+            s = _e74 + 1u;
         }
         loop_init_2 = false;
-        uint _e54 = s;
-        if (_e54 < metal::min(_e45.n, K)) {
+        uint _e53 = s;
+        if (_e53 < metal::min(_e44.n, K)) {
         } else {
             break;
         }
         {
-            uint _e59 = h;
-            uint _e60 = pcg_hash(_e59);
-            h = _e60;
-            uint _e61 = h;
-            float _e62 = xi_from_bits(_e61);
-            uint _e63 = h;
-            uint _e64 = pcg_hash(_e63);
-            h = _e64;
-            metal::float3 _e65 = sum;
-            uint _e67 = s;
-            uint _e70 = h;
-            float _e71 = xi_from_bits(_e70);
-            metal::float3 _e72 = shade_pick(_e45.light.inner[_e67], x_11, n_19, ng_3, m_2, wo_2, _e23, _e30, _e51, _e45.n, _e62, _e71, geo_nodes, geo_tris, lights, r2_2, rt2_4, params, _buffer_sizes);
-            sum = _e65 + _e72;
+            uint _e58 = h;
+            uint _e59 = pcg_hash(_e58);
+            h = _e59;
+            uint _e60 = h;
+            float _e61 = xi_from_bits(_e60);
+            uint _e62 = h;
+            uint _e63 = pcg_hash(_e62);
+            h = _e63;
+            metal::float3 _e64 = sum;
+            uint _e66 = s;
+            uint _e69 = h;
+            float _e70 = xi_from_bits(_e69);
+            metal::float3 _e71 = shade_pick(_e44.light.inner[_e66], x_14, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70, geo_nodes, geo_tris, lights, r2_3, rt2_4, light_cones, params, _buffer_sizes);
+            sum = _e64 + _e71;
         }
     }
-    metal::float3 _e78 = sum;
-    metal::float3 add = vtx.weight * _e78;
-    bool _e80 = finite3_(add);
-    if (_e80) {
-        metal::float4 _e83 = radiance[i_4];
-        radiance[i_4] = _e83 + metal::float4(add, 0.0);
+    metal::float3 _e77 = sum;
+    metal::float3 add = vtx.weight * _e77;
+    bool _e79 = finite3_(add);
+    if (_e79) {
+        metal::float4 _e82 = radiance[i_4];
+        radiance[i_4] = _e82 + metal::float4(add, 0.0);
         return;
     } else {
         return;

@@ -11,10 +11,11 @@ struct _mslBufferSizes {
     uint size3;
     uint size4;
     uint size5;
-    uint size7;
+    uint size6;
     uint size8;
     uint size9;
     uint size10;
+    uint size11;
 };
 
 struct GpuLight {
@@ -26,6 +27,16 @@ struct GpuLight {
     float b;
     metal::packed_float3 intensity;
     uint ies_base;
+};
+struct GpuLightCone {
+    metal::packed_float3 center;
+    float radius;
+    metal::packed_float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
 };
 struct GpuGeoNode {
     metal::packed_float3 bmin;
@@ -94,16 +105,17 @@ struct Connection {
     float cos_x;
 };
 typedef GpuLight type_9[1];
+typedef GpuLightCone type_10[1];
 typedef uint BvhNodes;
-typedef GpuLightBvhNode type_10[1];
+typedef GpuLightBvhNode type_11[1];
 struct BvhPick {
     uint light;
     float pmf;
 };
-typedef GpuPathVertex type_11[1];
-typedef GpuMaterial type_12[1];
-typedef metal::float4 type_13[1];
-typedef uint type_14[1];
+typedef GpuPathVertex type_12[1];
+typedef GpuMaterial type_13[1];
+typedef metal::float4 type_14[1];
+typedef uint type_15[1];
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -588,21 +600,39 @@ float specular_probability(
     return metal::clamp(lobe.y / (lobe.y + lobe.x), 0.1, 0.9);
 }
 
-float receiver_peak(
+float specular_peak_factor(
     metal::float4 lobe_1
 ) {
-    float _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10));
+    float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.y * 0.5) / (_e6 + metal::max(lobe_1.w, 0.0));
+}
+
+float receiver_peak(
+    metal::float4 lobe_2
+) {
+    float _e2 = specular_peak_factor(lobe_2);
+    return lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z));
 }
 
 float range_scale(
-    metal::float4 lobe_2
+    metal::float4 lobe_3
 ) {
-    if (lobe_2.y <= 0.0) {
+    if (lobe_3.y <= 0.0) {
         return 1.0;
     }
-    float _e5 = receiver_peak(lobe_2);
+    float _e5 = receiver_peak(lobe_3);
     return metal::clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+metal::float4 range_lobe(
+    metal::float4 lobe_4
+) {
+    if (lobe_4.y <= 0.0) {
+        return metal::float4(1.0, 0.0, 1.0, 1.0);
+    }
+    float _e10 = specular_peak_factor(lobe_4);
+    float _e14 = range_scale(lobe_4);
+    return metal::float4(lobe_4.x, _e10, lobe_4.z * lobe_4.z, metal::sqrt(_e14));
 }
 
 metal::float3 mirror_dir(
@@ -757,24 +787,47 @@ float cone_cos_toward(
     return _e27;
 }
 
-float light_importance(
+float range_scale_at(
+    metal::float4 rl,
+    float cos_t
+) {
+    float t_2 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
+    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_2 * t_2)), 1.0, rl.w * rl.w);
+}
+
+float range_scale_toward(
+    metal::float4 rl_1,
     metal::float3 center_3,
     float radius_3,
+    metal::float3 p_3,
+    metal::float3 r
+) {
+    if (rl_1.w <= 1.0) {
+        return 1.0;
+    }
+    float _e9 = cone_cos_toward(center_3, radius_3, p_3, r);
+    float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float light_importance(
+    metal::float3 center_4,
+    float radius_4,
     float phi_1,
     metal::float3 axis_2,
     float cos_o_2,
     float cos_e_1,
-    metal::float3 p_3,
+    metal::float3 p_4,
     metal::float3 n_9
 ) {
     float imp = {};
-    metal::float4 _e8 = emitter_cone(center_3, radius_3, axis_2, cos_o_2, p_3);
+    metal::float4 _e8 = emitter_cone(center_4, radius_4, axis_2, cos_o_2, p_4);
     if (_e8.x <= cos_e_1) {
         return 0.0;
     }
     imp = (phi_1 * _e8.x) / _e8.y;
     if (metal::dot(n_9, n_9) > 0.0) {
-        metal::float3 v_9 = center_3 - p_3;
+        metal::float3 v_9 = center_4 - p_4;
         float dist2_3 = metal::dot(v_9, v_9);
         float cos_i_1 = metal::dot((dist2_3 > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_3))) : metal::float3(0.0, 0.0, 0.0), n_9);
         float _e33 = imp;
@@ -787,20 +840,20 @@ float light_importance(
 }
 
 float glossy_importance(
-    metal::float3 center_4,
-    float radius_4,
+    metal::float3 center_5,
+    float radius_5,
     float phi_2,
     metal::float3 axis_3,
     float cos_o_3,
     float cos_e_2,
-    metal::float3 p_4,
+    metal::float3 p_5,
     metal::float3 n_10,
-    metal::float3 r,
-    metal::float4 lobe_3
+    metal::float3 r_1,
+    metal::float4 lobe_5
 ) {
     bool local_10 = {};
-    float _e10 = emitter_importance(center_4, radius_4, phi_2, axis_3, cos_o_3, cos_e_2, p_4);
-    float _e11 = cone_cos_toward(center_4, radius_4, p_4, n_10);
+    float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
+    float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_10);
     if (!((_e10 <= 0.0))) {
         local_10 = _e11 <= 0.0;
     } else {
@@ -810,31 +863,31 @@ float glossy_importance(
     if (_e20) {
         return 0.0;
     }
-    float _e22 = cone_cos_toward(center_4, radius_4, p_4, r);
+    float _e22 = cone_cos_toward(center_5, radius_5, p_5, r_1);
     float _e27 = safe_sqrt(0.5 + (0.5 * _e22));
-    float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_3.z);
-    float _e39 = smith_root(lobe_3.w, lobe_3.z);
-    float spec = ((lobe_3.y * _e33) * 0.25) / _e39;
-    return _e10 * (((lobe_3.x * INV_PI) * _e11) + spec);
+    float _e33 = ggx_d(_e27, 1.0 - (_e27 * _e27), lobe_5.z);
+    float _e39 = smith_root(lobe_5.w, lobe_5.z);
+    float spec = ((lobe_5.y * _e33) * 0.25) / _e39;
+    return _e10 * (((lobe_5.x * INV_PI) * _e11) + spec);
 }
 
 float receiver_importance(
-    metal::float3 center_5,
-    float radius_5,
+    metal::float3 center_6,
+    float radius_6,
     float phi_3,
     metal::float3 axis_4,
     float cos_o_4,
     float cos_e_3,
-    metal::float3 p_5,
+    metal::float3 p_6,
     metal::float3 n_11,
-    metal::float3 r_1,
-    metal::float4 lobe_4
+    metal::float3 r_2,
+    metal::float4 lobe_6
 ) {
-    if (lobe_4.y <= 0.0) {
-        float _e13 = light_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_11);
+    if (lobe_6.y <= 0.0) {
+        float _e13 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_11);
         return _e13;
     }
-    float _e14 = glossy_importance(center_5, radius_5, phi_3, axis_4, cos_o_4, cos_e_3, p_5, n_11, r_1, lobe_4);
+    float _e14 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_11, r_2, lobe_6);
     return _e14;
 }
 
@@ -934,14 +987,14 @@ float ray_triangle(
     bool local_14 = {};
     metal::float3 e1_ = b_4 - a_4;
     metal::float3 e2_ = c_3 - a_4;
-    metal::float3 p_6 = metal::cross(d_2, e2_);
-    float det = metal::dot(e1_, p_6);
+    metal::float3 p_7 = metal::cross(d_2, e2_);
+    float det = metal::dot(e1_, p_7);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv_1 = 1.0 / det;
     metal::float3 s_6 = o_1 - a_4;
-    float u_3 = metal::dot(s_6, p_6) * inv_1;
+    float u_3 = metal::dot(s_6, p_7) * inv_1;
     if (!((u_3 < 0.0))) {
         local_12 = u_3 > 1.0;
     } else {
@@ -962,15 +1015,15 @@ float ray_triangle(
     if (_e42) {
         return -1.0;
     }
-    float t_2 = metal::dot(e2_, q) * inv_1;
-    if (t_2 > t_min) {
-        local_14 = t_2 < t_max_1;
+    float t_3 = metal::dot(e2_, q) * inv_1;
+    if (t_3 > t_min) {
+        local_14 = t_3 < t_max_1;
     } else {
         local_14 = false;
     }
     bool _e51 = local_14;
     if (_e51) {
-        return t_2;
+        return t_3;
     }
     return -1.0;
 }
@@ -1092,9 +1145,9 @@ GeoHit trace(
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_3 = geo_tris[_e42];
+                        GpuTriangle t_4 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_3, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -1209,10 +1262,23 @@ float mis_weight(
     return _e2;
 }
 
+float light_range_scale(
+    uint li_1,
+    metal::float3 x_5,
+    metal::float3 r_3,
+    metal::float4 rl_2,
+    device type_10 const& light_cones,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLightCone c_8 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_2, c_8.center, c_8.radius, x_5, r_3);
+    return _e9;
+}
+
 GpuLightBvhNode light_bvh_node(
     BvhNodes nodes,
     uint i_1,
-    device type_10 const& light_bvh,
+    device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightBvhNode _e4 = light_bvh[i_1];
@@ -1221,35 +1287,35 @@ GpuLightBvhNode light_bvh_node(
 
 uint light_bvh_count(
     BvhNodes nodes_1,
-    device type_10 const& light_bvh,
+    device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    return 1 + (_buffer_sizes.size5 - 0 - 48) / 48;
+    return 1 + (_buffer_sizes.size6 - 0 - 48) / 48;
 }
 
 float bvh_importance(
     BvhNodes nodes_2,
     uint i_2,
-    metal::float3 x_5,
+    metal::float3 x_6,
     metal::float3 n_13,
-    metal::float3 r_2,
-    metal::float4 lobe_5,
-    device type_10 const& light_bvh,
+    metal::float3 r_4,
+    metal::float4 lobe_7,
+    device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightBvhNode _e6 = light_bvh_node(nodes_2, i_2, light_bvh, _buffer_sizes);
-    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_5, n_13, r_2, lobe_5);
+    float _e13 = receiver_importance(_e6.center, _e6.radius, _e6.phi, _e6.axis, _e6.cos_o, _e6.cos_e, x_6, n_13, r_4, lobe_7);
     return _e13;
 }
 
 float bvh_first(
     BvhNodes nodes_3,
     uint i_3,
-    metal::float3 x_6,
+    metal::float3 x_7,
     metal::float3 n_14,
-    metal::float3 r_3,
-    metal::float4 lobe_6,
-    device type_10 const& light_bvh,
+    metal::float3 r_5,
+    metal::float4 lobe_8,
+    device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool local_18 = {};
@@ -1265,8 +1331,8 @@ float bvh_first(
     if (_e17) {
         return -1.0;
     }
-    float _e21 = bvh_importance(nodes_3, i_3 + 1u, x_6, n_14, r_3, lobe_6, light_bvh, _buffer_sizes);
-    float _e22 = bvh_importance(nodes_3, j, x_6, n_14, r_3, lobe_6, light_bvh, _buffer_sizes);
+    float _e21 = bvh_importance(nodes_3, i_3 + 1u, x_7, n_14, r_5, lobe_8, light_bvh, _buffer_sizes);
+    float _e22 = bvh_importance(nodes_3, j, x_7, n_14, r_5, lobe_8, light_bvh, _buffer_sizes);
     float _e23 = bvh_first_prob(_e21, _e22);
     return _e23;
 }
@@ -1278,12 +1344,12 @@ BvhPick bvh_pick_none(
 
 BvhPick light_bvh_sample(
     BvhNodes nodes_4,
-    metal::float3 x_7,
+    metal::float3 x_8,
     metal::float3 n_15,
-    metal::float3 r_4,
-    metal::float4 lobe_7,
+    metal::float3 r_6,
+    metal::float4 lobe_9,
     float u_in,
-    device type_10 const& light_bvh,
+    device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BvhPick pick = {};
@@ -1310,7 +1376,7 @@ BvhPick light_bvh_sample(
             if (_e17.second == LIGHT_BVH_LEAF) {
                 uint _e21 = i_4;
                 if (!((_e21 > 0u))) {
-                    float _e28 = bvh_importance(nodes_4, 0u, x_7, n_15, r_4, lobe_7, light_bvh, _buffer_sizes);
+                    float _e28 = bvh_importance(nodes_4, 0u, x_8, n_15, r_6, lobe_9, light_bvh, _buffer_sizes);
                     local_19 = _e28 > 0.0;
                 } else {
                     local_19 = true;
@@ -1325,7 +1391,7 @@ BvhPick light_bvh_sample(
                 return _e37;
             }
             uint _e38 = i_4;
-            float _e39 = bvh_first(nodes_4, _e38, x_7, n_15, r_4, lobe_7, light_bvh, _buffer_sizes);
+            float _e39 = bvh_first(nodes_4, _e38, x_8, n_15, r_6, lobe_9, light_bvh, _buffer_sizes);
             if (_e39 < 0.0) {
                 BvhPick _e42 = pick;
                 return _e42;
@@ -1346,36 +1412,40 @@ BvhPick light_bvh_sample(
 }
 
 float light_pdf_selected(
-    uint li_1,
-    metal::float3 x_8,
-    metal::float4 lobe_8,
+    uint li_2,
+    metal::float3 x_9,
+    metal::float3 r_7,
+    metal::float4 lobe_10,
     metal::float3 y_1,
     float sel,
     device type_9 const& lights,
     device type_4 const& rt2_4,
+    device type_10 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight l_9 = lights[li_1];
-    metal::float3 v_12 = x_8 - y_1;
+    GpuLight l_9 = lights[li_2];
+    metal::float3 v_12 = x_9 - y_1;
     float d2_10 = metal::dot(v_12, v_12);
-    metal::float3 _e10 = light_normal(l_9);
-    float cos_y_1 = (d2_10 > 0.0) ? metal::dot(_e10, v_12 / metal::float3(metal::sqrt(d2_10))) : 0.0;
-    float _e19 = range_scale(lobe_8);
-    float _e22 = rt2_4[li_1];
-    float _e24 = light_area(l_9);
-    float _e25 = light_strategy_pdf(sel, _e19 * _e22, d2_10, _e24, cos_y_1);
-    return _e25;
+    metal::float3 _e11 = light_normal(l_9);
+    float cos_y_1 = (d2_10 > 0.0) ? metal::dot(_e11, v_12 / metal::float3(metal::sqrt(d2_10))) : 0.0;
+    metal::float4 _e20 = range_lobe(lobe_10);
+    float _e21 = light_range_scale(li_2, x_9, r_7, _e20, light_cones, _buffer_sizes);
+    float _e24 = rt2_4[li_2];
+    float _e26 = light_area(l_9);
+    float _e27 = light_strategy_pdf(sel, _e21 * _e24, d2_10, _e26, cos_y_1);
+    return _e27;
 }
 
 metal::float3 shade_pick(
-    uint li_2,
-    metal::float3 x_9,
+    uint li_3,
+    metal::float3 x_10,
     metal::float3 n_16,
     metal::float3 ng_2,
     GpuMaterial m,
     metal::float3 wo_1,
-    metal::float3 r_5,
-    metal::float4 lobe_9,
+    metal::float3 r_8,
+    metal::float4 lobe_11,
+    metal::float4 rl_3,
     float w_4,
     uint nee,
     float u1_3,
@@ -1385,29 +1455,30 @@ metal::float3 shade_pick(
     device type_9 const& lights,
     device type_4 const& r2_3,
     device type_4 const& rt2_4,
+    device type_10 const& light_cones,
     constant ShadeParams& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e12 = range_scale(lobe_9);
-    float _e15 = params.eps;
-    Connection _e16 = connect(li_2, x_9, n_16, ng_2, _e12, w_4, u1_3, u2_3, _e15, geo_nodes, geo_tris, lights, r2_3, rt2_4, _buffer_sizes);
-    if (_e16.cos_x <= 0.0) {
+    float _e13 = light_range_scale(li_3, x_10, r_8, rl_3, light_cones, _buffer_sizes);
+    float _e16 = params.eps;
+    Connection _e17 = connect(li_3, x_10, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16, geo_nodes, geo_tris, lights, r2_3, rt2_4, _buffer_sizes);
+    if (_e17.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
-    metal::float3 l_10 = metal::normalize(_e16.y - x_9);
-    GpuLight _e29 = lights[li_2];
-    float _e30 = light_area(_e29);
-    if (_e30 > 0.0) {
-        float _e36 = light_pdf_selected(li_2, x_9, lobe_9, _e16.y, 1.0 / w_4, lights, rt2_4, _buffer_sizes);
-        float _e38 = specular_probability(lobe_9);
-        float _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
-        float _e40 = mis_weight(_e36, _e39);
-        mis = _e40;
+    metal::float3 l_10 = metal::normalize(_e17.y - x_10);
+    GpuLight _e30 = lights[li_3];
+    float _e31 = light_area(_e30);
+    if (_e31 > 0.0) {
+        float _e37 = light_pdf_selected(li_3, x_10, r_8, lobe_11, _e17.y, 1.0 / w_4, lights, rt2_4, light_cones, _buffer_sizes);
+        float _e39 = specular_probability(lobe_11);
+        float _e40 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e39);
+        float _e41 = mis_weight(_e37, _e40);
+        mis = _e41;
     }
-    metal::float3 _e46 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
-    float _e49 = mis;
-    return (_e46 * _e16.e) * _e49;
+    metal::float3 _e47 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_16, wo_1, l_10);
+    float _e50 = mis;
+    return (_e47 * _e17.e) * _e50;
 }
 
 struct main_Input {
@@ -1419,12 +1490,13 @@ kernel void main_(
 , device type_9 const& lights [[user(fake0)]]
 , device type_4 const& r2_3 [[user(fake0)]]
 , device type_4 const& rt2_4 [[user(fake0)]]
-, device type_10 const& light_bvh [[user(fake0)]]
+, device type_10 const& light_cones [[user(fake0)]]
+, device type_11 const& light_bvh [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
-, device type_11 const& vertices [[user(fake0)]]
-, device type_12 const& materials [[user(fake0)]]
-, device type_13& radiance [[user(fake0)]]
-, device type_14& candidates [[user(fake0)]]
+, device type_12 const& vertices [[user(fake0)]]
+, device type_13 const& materials [[user(fake0)]]
+, device type_14& radiance [[user(fake0)]]
+, device type_15& candidates [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     uint h = {};
@@ -1439,49 +1511,48 @@ kernel void main_(
         candidates[i_5] = 0u;
         return;
     }
-    metal::float3 x_10 = vtx.position;
+    metal::float3 x_11 = vtx.position;
     metal::float3 n_19 = vtx.normal;
     metal::float3 ng_3 = vtx.gnormal;
     GpuMaterial m_2 = materials[vtx.material];
     metal::float3 wo_2 = vtx.wo;
     metal::float3 _e23 = mirror_dir(n_19, wo_2);
     metal::float4 _e30 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(n_19, wo_2));
-    float _e31 = range_scale(_e30);
-    float scale = metal::sqrt(_e31);
-    uint _e35 = params.seed;
-    uint _e38 = params.frame;
-    uint _e39 = point_stream(_e35, i_5, _e38);
-    uint _e40 = pick_stream(_e39);
-    h = _e40;
+    metal::float4 _e31 = range_lobe(_e30);
+    uint _e34 = params.seed;
+    uint _e37 = params.frame;
+    uint _e38 = point_stream(_e34, i_5, _e37);
+    uint _e39 = pick_stream(_e38);
+    h = _e39;
     candidates[i_5] = 0u;
-    uint _e48 = h;
-    uint _e49 = pcg_hash(_e48);
-    h = _e49;
-    uint _e50 = h;
-    float _e51 = xi_from_bits(_e50);
-    BvhPick _e53 = light_bvh_sample(BVH, x_10, n_19, _e23, _e30, _e51, light_bvh, _buffer_sizes);
-    uint li_3 = _e53.light;
-    float pmf_1 = _e53.pmf;
-    uint _e56 = h;
-    uint _e57 = pcg_hash(_e56);
-    h = _e57;
-    uint _e58 = h;
-    float _e59 = xi_from_bits(_e58);
-    uint _e60 = h;
-    uint _e61 = pcg_hash(_e60);
-    h = _e61;
-    uint _e62 = h;
-    float _e63 = xi_from_bits(_e62);
+    uint _e47 = h;
+    uint _e48 = pcg_hash(_e47);
+    h = _e48;
+    uint _e49 = h;
+    float _e50 = xi_from_bits(_e49);
+    BvhPick _e52 = light_bvh_sample(BVH, x_11, n_19, _e23, _e30, _e50, light_bvh, _buffer_sizes);
+    uint li_4 = _e52.light;
+    float pmf_1 = _e52.pmf;
+    uint _e55 = h;
+    uint _e56 = pcg_hash(_e55);
+    h = _e56;
+    uint _e57 = h;
+    float _e58 = xi_from_bits(_e57);
+    uint _e59 = h;
+    uint _e60 = pcg_hash(_e59);
+    h = _e60;
+    uint _e61 = h;
+    float _e62 = xi_from_bits(_e61);
     if (pmf_1 > 0.0) {
-        metal::float3 _e69 = shade_pick(li_3, x_10, n_19, ng_3, m_2, wo_2, _e23, _e30, 1.0 / pmf_1, 0u, _e59, _e63, geo_nodes, geo_tris, lights, r2_3, rt2_4, params, _buffer_sizes);
-        sum = _e69;
+        metal::float3 _e68 = shade_pick(li_4, x_11, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, 1.0 / pmf_1, 0u, _e58, _e62, geo_nodes, geo_tris, lights, r2_3, rt2_4, light_cones, params, _buffer_sizes);
+        sum = _e68;
     }
-    metal::float3 _e71 = sum;
-    metal::float3 add = vtx.weight * _e71;
-    bool _e73 = finite3_(add);
-    if (_e73) {
-        metal::float4 _e76 = radiance[i_5];
-        radiance[i_5] = _e76 + metal::float4(add, 0.0);
+    metal::float3 _e70 = sum;
+    metal::float3 add = vtx.weight * _e70;
+    bool _e72 = finite3_(add);
+    if (_e72) {
+        metal::float4 _e75 = radiance[i_5];
+        radiance[i_5] = _e75 + metal::float4(add, 0.0);
         return;
     } else {
         return;

@@ -9,7 +9,7 @@ struct _mslBufferSizes {
     uint size1;
     uint size2;
     uint size3;
-    uint size5;
+    uint size4;
     uint size6;
     uint size7;
     uint size8;
@@ -17,6 +17,7 @@ struct _mslBufferSizes {
     uint size10;
     uint size11;
     uint size12;
+    uint size13;
 };
 
 struct GpuLight {
@@ -28,6 +29,16 @@ struct GpuLight {
     float b;
     metal::packed_float3 intensity;
     uint ies_base;
+};
+struct GpuLightCone {
+    metal::packed_float3 center;
+    float radius;
+    metal::packed_float3 axis;
+    float cos_o;
+    float phi;
+    float cos_e;
+    uint bvh_leaf;
+    uint pad;
 };
 struct GpuGeoNode {
     metal::packed_float3 bmin;
@@ -110,14 +121,16 @@ typedef GpuTriangle type_7[1];
 struct type_8 {
     uint inner[64];
 };
+typedef GpuLightCone type_9[1];
 typedef uint BvhNodes;
-typedef GpuLight type_9[1];
-typedef BshNode type_10[1];
-typedef uint type_11[1];
-typedef GpuMaterial type_12[1];
-typedef metal::float4 type_13[1];
-typedef GpuPathState type_14[1];
-typedef GpuPathVertex type_15[1];
+typedef GpuLight type_10[1];
+typedef BshNode type_11[1];
+typedef uint type_12[1];
+typedef GpuMaterial type_13[1];
+typedef metal::float4 type_14[1];
+typedef GpuPathState type_15[1];
+typedef GpuPathVertex type_16[1];
+typedef uint BshNodes;
 constant uint LIGHT_POINT = 0u;
 constant uint LIGHT_SPOT = 1u;
 constant uint LIGHT_IES = 2u;
@@ -159,6 +172,7 @@ constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 constant uint K = 8u;
 constant BvhNodes BVH = 0u;
+constant BshNodes BSH = 0u;
 
 float to_f32_(
     uint u
@@ -178,6 +192,12 @@ uint add_wrap_u32_(
     uint b_1
 ) {
     return a_1 + b_1;
+}
+
+float f32_from_bits(
+    uint u_1
+) {
+    return as_type<float>(u_1);
 }
 
 float xi_from_bits(
@@ -259,6 +279,16 @@ float bsh_scaled_radius(
         return node.extent + (scale * (node.radius - node.extent));
     }
     return node.radius * scale;
+}
+
+float bsh_range_bound(
+    BshNode node_1
+) {
+    if (node_1.child == BSH_NONE) {
+        return node_1.radius - node_1.extent;
+    }
+    float _e8 = f32_from_bits(node_1.light);
+    return _e8;
 }
 
 float reservoir_weight(
@@ -378,9 +408,9 @@ metal::float3 cosine_direction(
     float u1_,
     float u2_
 ) {
-    float r_3 = metal::sqrt(u1_);
+    float r_7 = metal::sqrt(u1_);
     float phi = 6.2831855 * u2_;
-    metal::float3 _e16 = onb_to_world(n_5, metal::float3(r_3 * metal::cos(phi), r_3 * metal::sin(phi), metal::sqrt(metal::max(1.0 - u1_, 0.0))));
+    metal::float3 _e16 = onb_to_world(n_5, metal::float3(r_7 * metal::cos(phi), r_7 * metal::sin(phi), metal::sqrt(metal::max(1.0 - u1_, 0.0))));
     return metal::normalize(_e16);
 }
 
@@ -587,21 +617,39 @@ float specular_probability(
     return metal::clamp(lobe.y / (lobe.y + lobe.x), 0.1, 0.9);
 }
 
-float receiver_peak(
+float specular_peak_factor(
     metal::float4 lobe_1
 ) {
-    float _e10 = smith_root(lobe_1.w, lobe_1.z);
-    return lobe_1.x + ((lobe_1.y * 0.25) / ((lobe_1.z * lobe_1.z) * _e10));
+    float _e6 = smith_root(lobe_1.w, lobe_1.z);
+    return (lobe_1.y * 0.5) / (_e6 + metal::max(lobe_1.w, 0.0));
+}
+
+float receiver_peak(
+    metal::float4 lobe_2
+) {
+    float _e2 = specular_peak_factor(lobe_2);
+    return lobe_2.x + (_e2 / (lobe_2.z * lobe_2.z));
 }
 
 float range_scale(
-    metal::float4 lobe_2
+    metal::float4 lobe_3
 ) {
-    if (lobe_2.y <= 0.0) {
+    if (lobe_3.y <= 0.0) {
         return 1.0;
     }
-    float _e5 = receiver_peak(lobe_2);
+    float _e5 = receiver_peak(lobe_3);
     return metal::clamp(_e5, 1.0, RANGE_SCALE_MAX);
+}
+
+metal::float4 range_lobe(
+    metal::float4 lobe_4
+) {
+    if (lobe_4.y <= 0.0) {
+        return metal::float4(1.0, 0.0, 1.0, 1.0);
+    }
+    float _e10 = specular_peak_factor(lobe_4);
+    float _e14 = range_scale(lobe_4);
+    return metal::float4(lobe_4.x, _e10, lobe_4.z * lobe_4.z, metal::sqrt(_e14));
 }
 
 metal::float3 mirror_dir(
@@ -700,18 +748,84 @@ float bsdf_pdf(
     return (p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6);
 }
 
-float ray_inverse(
+float cos_sub_clamped(
+    float sin_a,
+    float cos_a,
+    float sin_b,
+    float cos_b
+) {
+    if (cos_a > cos_b) {
+        return 1.0;
+    }
+    return (cos_a * cos_b) + (sin_a * sin_b);
+}
+
+float safe_sqrt(
     float x_2
 ) {
-    return 1.0 / ((metal::abs(x_2) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_2);
+    return metal::sqrt(metal::max(x_2, 0.0));
+}
+
+float subtended_cos(
+    float dist2_,
+    float r2_
+) {
+    float _e5 = safe_sqrt(1.0 - (r2_ / dist2_));
+    return (dist2_ <= r2_) ? -1.0 : _e5;
+}
+
+float cone_cos_toward(
+    metal::float3 center,
+    float radius,
+    metal::float3 p,
+    metal::float3 d_1
+) {
+    metal::float3 v_9 = center - p;
+    float dist2_1 = metal::dot(v_9, v_9);
+    metal::float3 w_4 = (dist2_1 > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
+    float _e17 = subtended_cos(dist2_1, radius * radius);
+    float cos_i = metal::dot(w_4, d_1);
+    float _e22 = safe_sqrt(1.0 - (cos_i * cos_i));
+    float _e26 = safe_sqrt(1.0 - (_e17 * _e17));
+    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
+    return _e27;
+}
+
+float range_scale_at(
+    metal::float4 rl,
+    float cos_t
+) {
+    float t_2 = ((0.5 + (0.5 * cos_t)) * (rl.z - 1.0)) + 1.0;
+    return metal::clamp(rl.x + ((rl.y * rl.z) / (t_2 * t_2)), 1.0, rl.w * rl.w);
+}
+
+float range_scale_toward(
+    metal::float4 rl_1,
+    metal::float3 center_1,
+    float radius_1,
+    metal::float3 p_1,
+    metal::float3 r_1
+) {
+    if (rl_1.w <= 1.0) {
+        return 1.0;
+    }
+    float _e9 = cone_cos_toward(center_1, radius_1, p_1, r_1);
+    float _e10 = range_scale_at(rl_1, _e9);
+    return _e10;
+}
+
+float ray_inverse(
+    float x_3
+) {
+    return 1.0 / ((metal::abs(x_3) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_3);
 }
 
 metal::float3 ray_inverse3_(
-    metal::float3 d_1
+    metal::float3 d_2
 ) {
-    float _e2 = ray_inverse(d_1.x);
-    float _e4 = ray_inverse(d_1.y);
-    float _e6 = ray_inverse(d_1.z);
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
     return metal::float3(_e2, _e4, _e6);
 }
 
@@ -762,14 +876,14 @@ metal::float3 face_against(
 }
 
 metal::float3 barycentric(
-    metal::float3 p,
+    metal::float3 p_2,
     metal::float3 a_3,
     metal::float3 b_3,
     metal::float3 c_3
 ) {
     metal::float3 e1_ = b_3 - a_3;
     metal::float3 e2_ = c_3 - a_3;
-    metal::float3 q = p - a_3;
+    metal::float3 q = p_2 - a_3;
     float d11_ = metal::dot(e1_, e1_);
     float d12_ = metal::dot(e1_, e2_);
     float d22_ = metal::dot(e2_, e2_);
@@ -807,7 +921,7 @@ metal::float3 shading_normal(
 
 float ray_triangle(
     metal::float3 o_1,
-    metal::float3 d_2,
+    metal::float3 d_3,
     metal::float3 a_4,
     metal::float3 b_4,
     metal::float3 c_4,
@@ -819,16 +933,16 @@ float ray_triangle(
     bool local_16 = {};
     metal::float3 e1_1 = b_4 - a_4;
     metal::float3 e2_1 = c_4 - a_4;
-    metal::float3 p_1 = metal::cross(d_2, e2_1);
-    float det = metal::dot(e1_1, p_1);
+    metal::float3 p_3 = metal::cross(d_3, e2_1);
+    float det = metal::dot(e1_1, p_3);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv_1 = 1.0 / det;
     metal::float3 s_5 = o_1 - a_4;
-    float u_2 = metal::dot(s_5, p_1) * inv_1;
-    if (!((u_2 < 0.0))) {
-        local_14 = u_2 > 1.0;
+    float u_3 = metal::dot(s_5, p_3) * inv_1;
+    if (!((u_3 < 0.0))) {
+        local_14 = u_3 > 1.0;
     } else {
         local_14 = true;
     }
@@ -837,9 +951,9 @@ float ray_triangle(
         return -1.0;
     }
     metal::float3 q_1 = metal::cross(s_5, e1_1);
-    float v_9 = metal::dot(d_2, q_1) * inv_1;
-    if (!((v_9 < 0.0))) {
-        local_15 = (u_2 + v_9) > 1.0;
+    float v_10 = metal::dot(d_3, q_1) * inv_1;
+    if (!((v_10 < 0.0))) {
+        local_15 = (u_3 + v_10) > 1.0;
     } else {
         local_15 = true;
     }
@@ -847,15 +961,15 @@ float ray_triangle(
     if (_e42) {
         return -1.0;
     }
-    float t_2 = metal::dot(e2_1, q_1) * inv_1;
-    if (t_2 > t_min) {
-        local_16 = t_2 < t_max_1;
+    float t_3 = metal::dot(e2_1, q_1) * inv_1;
+    if (t_3 > t_min) {
+        local_16 = t_3 < t_max_1;
     } else {
         local_16 = false;
     }
     bool _e51 = local_16;
     if (_e51) {
-        return t_2;
+        return t_3;
     }
     return -1.0;
 }
@@ -876,10 +990,10 @@ metal::float3 camera_dir(
 
 float jittered_pixel(
     uint coord,
-    float u_1
+    float u_2
 ) {
     float _e2 = to_f32_(coord);
-    return _e2 + u_1;
+    return _e2 + u_2;
 }
 
 bool plays_roulette(
@@ -957,7 +1071,7 @@ metal::float3 light_normal(
 
 GeoHit trace(
     metal::float3 o_2,
-    metal::float3 d_3,
+    metal::float3 d_4,
     float t_min_1,
     float t_max_2,
     bool any_hit,
@@ -968,7 +1082,7 @@ GeoHit trace(
     GeoHit hit = {};
     type_8 stack = {};
     uint sp = 0u;
-    uint node_1 = 0u;
+    uint node_2 = 0u;
     uint i = {};
     hit.t = t_max_2;
     hit.tri = NO_LIGHT;
@@ -976,12 +1090,12 @@ GeoHit trace(
         GeoHit _e13 = hit;
         return _e13;
     }
-    metal::float3 _e14 = ray_inverse3_(d_3);
+    metal::float3 _e14 = ray_inverse3_(d_4);
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e21 = node_1;
+        uint _e21 = node_2;
         GpuGeoNode n_17 = geo_nodes[_e21];
         float _e27 = hit.t;
         float _e28 = ray_aabb(o_2, _e14, n_17.bmin, n_17.bmax, _e27);
@@ -1005,9 +1119,9 @@ GeoHit trace(
                     }
                     {
                         uint _e42 = i;
-                        GpuTriangle t_3 = geo_tris[_e42];
+                        GpuTriangle t_4 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_3, t_3.v0_, t_3.v1_, t_3.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -1027,7 +1141,7 @@ GeoHit trace(
                     uint _e68 = sp;
                     sp = _e68 + 1u;
                 }
-                node_1 = n_17.first;
+                node_2 = n_17.first;
                 continue;
             }
         }
@@ -1039,7 +1153,7 @@ GeoHit trace(
         sp = _e75 - 1u;
         uint _e78 = sp;
         uint _e80 = stack.inner[_e78];
-        node_1 = _e80;
+        node_2 = _e80;
     }
     GeoHit _e81 = hit;
     return _e81;
@@ -1053,12 +1167,25 @@ float mis_weight(
     return _e2;
 }
 
-float select_pdf(
+float light_range_scale(
     uint li,
-    metal::float3 x_3,
+    metal::float3 x_4,
+    metal::float3 r_2,
+    metal::float4 rl_2,
+    device type_9 const& light_cones,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLightCone c_8 = light_cones[li];
+    float _e9 = range_scale_toward(rl_2, c_8.center, c_8.radius, x_4, r_2);
+    return _e9;
+}
+
+float select_pdf(
+    uint li_1,
+    metal::float3 x_5,
     metal::float3 n_13,
-    metal::float3 r_1,
-    metal::float4 lobe_3,
+    metal::float3 r_3,
+    metal::float4 lobe_5,
     uint nee,
     bool in_range_1
 ) {
@@ -1067,43 +1194,90 @@ float select_pdf(
 }
 
 float light_pdf_selected(
-    uint li_1,
-    metal::float3 x_4,
-    metal::float4 lobe_4,
+    uint li_2,
+    metal::float3 x_6,
+    metal::float3 r_4,
+    metal::float4 lobe_6,
     metal::float3 y,
     float sel,
+    device type_9 const& light_cones,
     device type_4 const& rt2_2,
-    device type_9 const& lights,
+    device type_10 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLight l_6 = lights[li_1];
-    metal::float3 v_10 = x_4 - y;
-    float d2_3 = metal::dot(v_10, v_10);
-    metal::float3 _e10 = light_normal(l_6);
-    float cos_y_1 = (d2_3 > 0.0) ? metal::dot(_e10, v_10 / metal::float3(metal::sqrt(d2_3))) : 0.0;
-    float _e19 = range_scale(lobe_4);
-    float _e22 = rt2_2[li_1];
-    float _e24 = light_area(l_6);
-    float _e25 = light_strategy_pdf(sel, _e19 * _e22, d2_3, _e24, cos_y_1);
-    return _e25;
+    GpuLight l_6 = lights[li_2];
+    metal::float3 v_11 = x_6 - y;
+    float d2_3 = metal::dot(v_11, v_11);
+    metal::float3 _e11 = light_normal(l_6);
+    float cos_y_1 = (d2_3 > 0.0) ? metal::dot(_e11, v_11 / metal::float3(metal::sqrt(d2_3))) : 0.0;
+    metal::float4 _e20 = range_lobe(lobe_6);
+    float _e21 = light_range_scale(li_2, x_6, r_4, _e20, light_cones, _buffer_sizes);
+    float _e24 = rt2_2[li_2];
+    float _e26 = light_area(l_6);
+    float _e27 = light_strategy_pdf(sel, _e21 * _e24, d2_3, _e26, cos_y_1);
+    return _e27;
 }
 
 float light_pdf(
-    uint li_2,
-    metal::float3 x_5,
+    uint li_3,
+    metal::float3 x_7,
     metal::float3 n_14,
-    metal::float3 r_2,
-    metal::float4 lobe_5,
+    metal::float3 r_5,
+    metal::float4 lobe_7,
     metal::float3 y_1,
     uint nee_1,
     bool in_range_2,
+    device type_9 const& light_cones,
     device type_4 const& rt2_2,
-    device type_9 const& lights,
+    device type_10 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e8 = select_pdf(li_2, x_5, n_14, r_2, lobe_5, nee_1, in_range_2);
-    float _e9 = light_pdf_selected(li_2, x_5, lobe_5, y_1, _e8, rt2_2, lights, _buffer_sizes);
+    float _e8 = select_pdf(li_3, x_7, n_14, r_5, lobe_7, nee_1, in_range_2);
+    float _e9 = light_pdf_selected(li_3, x_7, r_5, lobe_7, y_1, _e8, light_cones, rt2_2, lights, _buffer_sizes);
     return _e9;
+}
+
+bool bsh_reaches(
+    BshNode node_3,
+    metal::float3 x_8,
+    metal::float3 r_6,
+    metal::float4 rl_3
+) {
+    bool local_20 = {};
+    bool local_21 = {};
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_8);
+    if (_e6) {
+        return true;
+    }
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_8);
+        local_20 = !(_e20);
+    } else {
+        local_20 = true;
+    }
+    bool _e23 = local_20;
+    if (_e23) {
+        return false;
+    }
+    if (node_3.child == BSH_NONE) {
+        float _e30 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_8, r_6);
+        float _e33 = bsh_scaled_radius(node_3, metal::sqrt(_e30));
+        bool _e34 = sphere_contains_point(node_3.center, _e33, x_8);
+        return _e34;
+    }
+    float _e37 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_8, r_6);
+    float s_c = _e37 * 1.001;
+    float _e42 = bsh_range_bound(node_3);
+    float reach = node_3.extent + (metal::sqrt(s_c) * _e42);
+    metal::float3 v_12 = x_8 - node_3.center;
+    float d2_4 = metal::dot(v_12, v_12);
+    if (d2_4 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_21 = d2_4 <= (reach * reach);
+    } else {
+        local_21 = false;
+    }
+    bool _e58 = local_21;
+    return _e58;
 }
 
 float next_uniform(
@@ -1131,17 +1305,18 @@ kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
 , device type_6 const& geo_nodes [[user(fake0)]]
 , device type_7 const& geo_tris [[user(fake0)]]
+, device type_9 const& light_cones [[user(fake0)]]
 , device type_4 const& rt2_2 [[user(fake0)]]
-, device type_9 const& lights [[user(fake0)]]
+, device type_10 const& lights [[user(fake0)]]
 , constant PtParams& params [[user(fake0)]]
-, device type_10 const& bsh_nodes [[user(fake0)]]
-, device type_11 const& light_leaf [[user(fake0)]]
-, device type_12 const& materials [[user(fake0)]]
-, device type_13 const& geo_normals [[user(fake0)]]
-, device type_11 const& candidates [[user(fake0)]]
-, device type_14& paths [[user(fake0)]]
-, device type_15& vertices [[user(fake0)]]
-, device type_13& radiance [[user(fake0)]]
+, device type_11 const& bsh_nodes [[user(fake0)]]
+, device type_12 const& light_leaf [[user(fake0)]]
+, device type_13 const& materials [[user(fake0)]]
+, device type_14 const& geo_normals [[user(fake0)]]
+, device type_12 const& candidates [[user(fake0)]]
+, device type_15& paths [[user(fake0)]]
+, device type_16& vertices [[user(fake0)]]
+, device type_14& radiance [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     GpuPathState st = {};
@@ -1212,7 +1387,7 @@ kernel void main_(
     GpuTriangle tri = geo_tris[_e94.tri];
     metal::float3 _e111 = st.origin;
     metal::float3 _e113 = st.dir;
-    metal::float3 x_6 = _e111 + (_e113 * _e94.t);
+    metal::float3 x_9 = _e111 + (_e113 * _e94.t);
     metal::float3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e122 = st.dir;
     metal::float3 _e123 = face_against(_e120, _e122);
@@ -1220,7 +1395,7 @@ kernel void main_(
     metal::float4 _e129 = geo_normals[b_6];
     metal::float4 _e135 = geo_normals[b_6 + 1u];
     metal::float4 _e141 = geo_normals[b_6 + 2u];
-    metal::float3 _e146 = barycentric(x_6, tri.v0_, tri.v1_, tri.v2_);
+    metal::float3 _e146 = barycentric(x_9, tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if (tri.light != NO_LIGHT) {
         metal::float3 _e154 = st.dir;
@@ -1235,113 +1410,113 @@ kernel void main_(
         if (_e161 > 0.0) {
             uint _e168 = light_leaf[tri.light];
             BshNode leaf = bsh_nodes[_e168];
-            metal::float4 _e173 = st.prev_lobe;
-            float _e174 = range_scale(_e173);
-            float _e176 = bsh_scaled_radius(leaf, metal::sqrt(_e174));
-            metal::float3 _e178 = st.prev;
-            bool _e179 = sphere_contains_point(leaf.center, _e176, _e178);
-            float _e181 = st.pdf_bsdf;
-            metal::float3 _e184 = st.prev;
-            metal::float3 _e186 = st.prev_normal;
-            metal::float3 _e188 = st.prev_r;
-            metal::float4 _e190 = st.prev_lobe;
-            uint _e193 = candidates[i_1];
-            float _e194 = light_pdf(tri.light, _e184, _e186, _e188, _e190, x_6, _e193, _e179, rt2_2, lights, _buffer_sizes);
-            float _e195 = mis_weight(_e181, _e194);
-            w = _e195;
+            metal::float3 _e172 = st.prev;
+            metal::float3 _e174 = st.prev_r;
+            metal::float4 _e176 = st.prev_lobe;
+            metal::float4 _e177 = range_lobe(_e176);
+            bool _e178 = bsh_reaches(leaf, _e172, _e174, _e177);
+            float _e180 = st.pdf_bsdf;
+            metal::float3 _e183 = st.prev;
+            metal::float3 _e185 = st.prev_normal;
+            metal::float3 _e187 = st.prev_r;
+            metal::float4 _e189 = st.prev_lobe;
+            uint _e192 = candidates[i_1];
+            float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, x_9, _e192, _e178, light_cones, rt2_2, lights, _buffer_sizes);
+            float _e194 = mis_weight(_e180, _e193);
+            w = _e194;
         }
-        metal::float3 _e197 = st.beta;
-        metal::float3 _e202 = lights[tri.light].intensity;
-        float _e204 = w;
-        metal::float3 add = (_e197 * _e202) * _e204;
-        bool _e206 = finite3_(add);
-        if (_e206) {
-            metal::float4 _e209 = radiance[i_1];
-            radiance[i_1] = _e209 + metal::float4(add, 0.0);
+        metal::float3 _e196 = st.beta;
+        metal::float3 _e201 = lights[tri.light].intensity;
+        float _e203 = w;
+        metal::float3 add = (_e196 * _e201) * _e203;
+        bool _e205 = finite3_(add);
+        if (_e205) {
+            metal::float4 _e208 = radiance[i_1];
+            radiance[i_1] = _e208 + metal::float4(add, 0.0);
         }
     }
-    uint _e215 = params.depth;
-    uint _e218 = params.max_depth;
-    if (_e215 >= _e218) {
+    uint _e214 = params.depth;
+    uint _e217 = params.max_depth;
+    if (_e214 >= _e217) {
         st.alive = 0u;
-        GpuPathState _e224 = st;
-        paths[i_1] = _e224;
-        GpuPathVertex _e227 = v;
-        vertices[i_1] = _e227;
+        GpuPathState _e223 = st;
+        paths[i_1] = _e223;
+        GpuPathVertex _e226 = v;
+        vertices[i_1] = _e226;
         return;
     }
     GpuMaterial m_2 = materials[tri.material];
-    metal::float3 _e233 = st.dir;
-    metal::float3 wo_1 = -(_e233);
-    metal::float4 _e241 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(_e147, wo_1));
-    v.position = x_6;
+    metal::float3 _e232 = st.dir;
+    metal::float3 wo_1 = -(_e232);
+    metal::float4 _e240 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(_e147, wo_1));
+    v.position = x_9;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
-    metal::float3 _e249 = st.beta;
-    v.weight = _e249;
+    metal::float3 _e248 = st.beta;
+    v.weight = _e248;
     v.wo = wo_1;
     v.alive = 1u;
-    GpuPathVertex _e255 = v;
-    vertices[i_1] = _e255;
-    uint _e257 = st.rng;
-    rng = _e257;
+    GpuPathVertex _e254 = v;
+    vertices[i_1] = _e254;
+    uint _e256 = st.rng;
+    rng = _e256;
+    float _e258 = next_uniform(rng);
     float _e259 = next_uniform(rng);
-    float _e260 = next_uniform(rng);
-    float _e261 = specular_probability(_e241);
-    metal::float3 _e263 = bsdf_sample(_e147, wo_1, m_2.alpha, _e261, _e259, _e260);
-    float _e265 = bsdf_pdf(_e147, wo_1, _e263, m_2.alpha, _e261);
-    bool _e269 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
-    if (_e269) {
-        metal::float3 _e271 = st.beta;
-        metal::float3 _e277 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e263);
-        st.beta = _e271 * (_e277 * (metal::dot(_e263, _e147) / _e265));
+    float _e260 = specular_probability(_e240);
+    metal::float3 _e262 = bsdf_sample(_e147, wo_1, m_2.alpha, _e260, _e258, _e259);
+    float _e264 = bsdf_pdf(_e147, wo_1, _e262, m_2.alpha, _e260);
+    bool _e268 = has_specular(m_2.metallic, m_2.f0_, m_2.f90_);
+    if (_e268) {
+        metal::float3 _e270 = st.beta;
+        metal::float3 _e276 = brdf_eval(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, _e147, wo_1, _e262);
+        st.beta = _e270 * (_e276 * (metal::dot(_e262, _e147) / _e264));
     } else {
-        metal::float3 _e283 = st.beta;
-        st.beta = _e283 * m_2.albedo;
+        metal::float3 _e282 = st.beta;
+        st.beta = _e282 * m_2.albedo;
     }
-    st.prev = x_6;
+    st.prev = x_9;
     st.prev_normal = _e147;
-    metal::float3 _e289 = mirror_dir(_e147, wo_1);
-    st.prev_r = _e289;
-    st.prev_lobe = _e241;
-    st.pdf_bsdf = _e265;
-    float _e295 = params.eps;
-    st.origin = x_6 + (_e123 * _e295);
-    st.dir = _e263;
-    bool _e299 = continues_path(_e263, _e147, _e123);
-    if (!(!(_e299))) {
-        local_1 = !((_e265 > 0.0));
+    metal::float3 _e288 = mirror_dir(_e147, wo_1);
+    st.prev_r = _e288;
+    st.prev_lobe = _e240;
+    st.pdf_bsdf = _e264;
+    float _e294 = params.eps;
+    st.origin = x_9 + (_e123 * _e294);
+    st.dir = _e262;
+    bool _e298 = continues_path(_e262, _e147, _e123);
+    if (!(!(_e298))) {
+        local_1 = !((_e264 > 0.0));
     } else {
         local_1 = true;
     }
-    bool _e308 = local_1;
-    if (_e308) {
+    bool _e307 = local_1;
+    if (_e307) {
         st.alive = 0u;
     }
-    uint _e313 = params.depth;
-    bool _e314 = plays_roulette(_e313);
-    if (_e314) {
-        uint _e318 = st.alive;
-        local_2 = _e318 == 1u;
+    uint _e312 = params.depth;
+    bool _e313 = plays_roulette(_e312);
+    if (_e313) {
+        uint _e317 = st.alive;
+        local_2 = _e317 == 1u;
     } else {
         local_2 = false;
     }
-    bool _e322 = local_2;
-    if (_e322) {
-        metal::float3 _e324 = st.beta;
-        float _e325 = path_survival(_e324);
-        float _e326 = next_uniform(rng);
-        if (_e326 >= _e325) {
+    bool _e321 = local_2;
+    if (_e321) {
+        metal::float3 _e323 = st.beta;
+        float _e324 = path_survival(_e323);
+        float _e325 = next_uniform(rng);
+        if (_e325 >= _e324) {
             st.alive = 0u;
         } else {
-            metal::float3 _e331 = st.beta;
-            st.beta = _e331 / metal::float3(_e325);
+            metal::float3 _e330 = st.beta;
+            st.beta = _e330 / metal::float3(_e324);
         }
     }
-    uint _e335 = rng;
-    st.rng = _e335;
-    GpuPathState _e338 = st;
-    paths[i_1] = _e338;
+    uint _e334 = rng;
+    st.rng = _e334;
+    GpuPathState _e337 = st;
+    paths[i_1] = _e337;
     return;
 }
