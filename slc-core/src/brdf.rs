@@ -240,14 +240,15 @@ crate::shared! {
     /// Largest factor by which a receiver scales SLC's range² ([`range_scale`]).
     pub const RANGE_SCALE_MAX: f32 = 64.0;
 
-    /// The factor `s` by which a receiver with lobe `lobe` scales every
+    /// The largest factor `s` by which a receiver with lobe `lobe` scales a
     /// light's threshold and random range² (same ξ, so the estimate stays
     /// unbiased and the spheres stay one per light): `s = π·P`, the
     /// receiver's [`receiver_peak`], which keeps one light's roulette
     /// deviation at the receiver within ε (it is `π·P·ε` unscaled, see
     /// `crate::range`); at least 1, at most [`RANGE_SCALE_MAX`] (a
     /// sharper lobe keeps `π·P/64` times ε: its range grows 8× already);
-    /// exactly 1 without a specular lobe.
+    /// exactly 1 without a specular lobe. Each light gets the lobe's peak
+    /// toward it, at most this (`crate::importance::range_scale_toward`).
     pub fn range_scale(lobe: vec4f) -> f32 {
         if lobe.y <= 0.0 {
             return 1.0;
