@@ -434,7 +434,7 @@ pub fn pt_equal_time(
             spp: last.1,
             rmse: last.2,
             rmse_net: (last.2 * last.2 - r.noise * r.noise).max(0.0).sqrt(),
-            series,
+            series: thin_series(&series),
         });
     }
     bar.finish_and_clear();
@@ -501,5 +501,41 @@ fn print_pt_report(a: &BenchArgs, report: &PtReport) {
             "warning: the reference's own noise {:.5} exceeds a third of {}'s net RMSE {:.5}: its ratio is uncertain; raise --reference-spp",
             report.reference_noise, r.method, r.rmse_net
         );
+    }
+}
+
+/// A run's `(time ms, passes, RMSE)` series as the JSON keeps it: every
+/// point up to 64 passes, then one per 5% more passes, and the last (a
+/// 2,000-pass run keeps about 140 points; the plots are log-scaled).
+fn thin_series(series: &[(f64, u32, f64)]) -> Vec<(f64, u32, f64)> {
+    let mut out = Vec::new();
+    let mut next = 0u32;
+    for (k, &p) in series.iter().enumerate() {
+        if p.1 <= 64 || p.1 >= next || k + 1 == series.len() {
+            out.push(p);
+            next = (p.1 as f64 * 1.05).ceil() as u32;
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::thin_series;
+
+    /// Every point up to 64 passes, each kept point at least 5% more passes
+    /// than the one before past that, the last point always, and about 140
+    /// points for 2,000 passes.
+    #[test]
+    fn series_are_thinned_on_a_log_scale() {
+        let series: Vec<(f64, u32, f64)> = (1..=2000).map(|p| (p as f64, p, 1.0 / p as f64)).collect();
+        let thin = thin_series(&series);
+        assert_eq!(&thin[..64], &series[..64]);
+        assert_eq!(thin.last(), series.last());
+        for w in thin[63..thin.len() - 1].windows(2) {
+            assert!(w[1].1 as f64 >= 1.05 * w[0].1 as f64, "{:?}", w);
+        }
+        assert!((120..=160).contains(&thin.len()), "{} points", thin.len());
+        assert_eq!(thin_series(&series[..10]), series[..10].to_vec());
     }
 }
