@@ -13,5 +13,5 @@ fn light_range_scale(li: u32, x: vec3f, r: vec3f, rl: vec4f) -> f32 {
 /// scale toward the light). Needs the bindings `light_cones` and `rt2`.
 fn light_weight(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, rl: vec4f) -> f32 {
     let c = light_cones[li];
-    return cone_weight(c.center, c.radius, c.phi, c.axis, c.cos_o, c.cos_e, range_scale_toward(rl, c.center, c.radius, x, r) * rt2[li], x, n, r, lobe);
+    return cone_weight(c.center, c.radius, c.phi, c.axis, c.cos_o, c.cos_e, light_range_scale(li, x, r, rl) * rt2[li], x, n, r, lobe);
 }

@@ -33,9 +33,9 @@ fn shade_pick(li: u32, x: vec3f, n: vec3f, ng: vec3f, m: GpuMaterial, wo: vec3f,
     if light_area(lights[li]) > 0.0 {
 {% if selection == "lightbvh" %}
         // The pick's pmf is 1/w: no second walk of the tree.
-        let pdf_light = light_pdf_selected(li, x, r, lobe, c.y, 1.0 / w);
+        let pdf_light = light_pdf_selected(li, x, r, rl, c.y, 1.0 / w);
 {% else %}
-        let pdf_light = light_pdf(li, x, n, r, lobe, c.y, nee, true);
+        let pdf_light = light_pdf(li, x, n, r, lobe, rl, c.y, nee, true);
 {% endif %}
         mis = mis_weight(pdf_light, bsdf_pdf(n, wo, l, m.alpha, specular_probability(lobe)));
     }
@@ -118,7 +118,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let entry = power_table[li];
     li = alias_choice(li, bitcast<u32>(entry.y), entry.x, xi_from_bits(h));
 {% endif %}
-    let pmf = select_pdf(li, x, n, r, lobe, 0u, true);
+    let pmf = select_pdf(li, x, n, r, lobe, rl, 0u, true);
 {% endif %}
     h = pcg_hash(h);
     let u1 = xi_from_bits(h);

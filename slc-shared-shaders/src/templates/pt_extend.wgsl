@@ -66,8 +66,9 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
         var w = 1.0;
         if st.pdf_bsdf > 0.0 {
             let leaf = bsh_nodes[light_leaf[tri.light]];
-            let in_range = bsh_reaches(leaf, st.prev, st.prev_r, range_lobe(st.prev_lobe));
-            w = mis_weight(st.pdf_bsdf, light_pdf(tri.light, st.prev, st.prev_normal, st.prev_r, st.prev_lobe, x, candidates[i], in_range));
+            let rl = range_lobe(st.prev_lobe);
+            let in_range = bsh_reaches(leaf, st.prev, st.prev_r, rl);
+            w = mis_weight(st.pdf_bsdf, light_pdf(tri.light, st.prev, st.prev_normal, st.prev_r, st.prev_lobe, rl, x, candidates[i], in_range));
         }
         let add = st.beta * lights[tri.light].intensity * w;
         if finite3(add) {

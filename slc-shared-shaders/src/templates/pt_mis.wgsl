@@ -30,17 +30,17 @@ fn light_bvh_count(nodes: BvhNodes) -> u32 {
 {{ bvh_walk }}
 
 /// Probability (expected count, for the weighted picks) that the light
-/// strategy for the receiver `(x, n, r, lobe)` selects light `li` ({{ selection }}
+/// strategy for the receiver `(x, n, r, lobe)` (range lobe `rl`: slc-core's `range_lobe`) selects light `li` ({{ selection }}
 /// selection). `nee` is what the traversal at `x` left: the in-range count
 /// (reservoir) or the bits of the candidates' total weight (weighted);
 /// `in_range` says this pass's range of `li` reaches `x`, so that the
 /// probability is the one of the *other* candidates, independent of the
 /// light's own ξ.
-fn select_pdf(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, nee: u32, in_range: bool) -> f32 {
+fn select_pdf(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, rl: vec4f, nee: u32, in_range: bool) -> f32 {
 {% if selection == "reservoir" %}
     return reservoir_select_pdf(nee, in_range, K);
 {% elif selection == "weighted" %}
-    return weighted_select_pdf(light_weight(li, x, n, r, lobe, range_lobe(lobe)), bitcast<f32>(nee), in_range, K);
+    return weighted_select_pdf(light_weight(li, x, n, r, lobe, rl), bitcast<f32>(nee), in_range, K);
 {% elif selection == "all" %}
     return 1.0;
 {% elif selection == "uniform" %}
@@ -61,18 +61,18 @@ fn select_pdf(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, nee: u32, in_r
 /// a pdf that is 0 when the sphere misses makes the two weights sum to more
 /// than one in expectation and biases the image (the CPU path tracer's
 /// test found +40%).
-fn light_pdf(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, y: vec3f, nee: u32, in_range: bool) -> f32 {
-    return light_pdf_selected(li, x, r, lobe, y, select_pdf(li, x, n, r, lobe, nee, in_range));
+fn light_pdf(li: u32, x: vec3f, n: vec3f, r: vec3f, lobe: vec4f, rl: vec4f, y: vec3f, nee: u32, in_range: bool) -> f32 {
+    return light_pdf_selected(li, x, r, rl, y, select_pdf(li, x, n, r, lobe, rl, nee, in_range));
 }
 
 /// [`light_pdf`] for a known selection probability `sel`: what the
 /// one-light selection's pick already carries (its pmf), so that the light
 /// BVH's MIS weight needs no second walk (pbrt-v4's `SampleLd` takes
 /// `sampledLight->p`).
-fn light_pdf_selected(li: u32, x: vec3f, r: vec3f, lobe: vec4f, y: vec3f, sel: f32) -> f32 {
+fn light_pdf_selected(li: u32, x: vec3f, r: vec3f, rl: vec4f, y: vec3f, sel: f32) -> f32 {
     let l = lights[li];
     let v = x - y;
     let d2 = dot(v, v);
     let cos_y = select(0.0, dot(light_normal(l), v / sqrt(d2)), d2 > 0.0);
-    return light_strategy_pdf(sel, light_range_scale(li, x, r, range_lobe(lobe)) * rt2[li], d2, light_area(l), cos_y);
+    return light_strategy_pdf(sel, light_range_scale(li, x, r, rl) * rt2[li], d2, light_area(l), cos_y);
 }

@@ -584,15 +584,21 @@ fn connect(li: u32, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_r
     return _e58;
 }
 
-fn light_weight(li_1: u32, x_7: vec3<f32>, n_5: vec3<f32>, r_7: vec3<f32>, lobe_7: vec4<f32>, rl_4: vec4<f32>) -> f32 {
+fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> f32 {
     let c_2 = light_cones[li_1];
-    let _e17 = range_scale_toward(rl_4, c_2.center, c_2.radius, x_7, r_7);
-    let _e20 = rt2_4[li_1];
-    let _e22 = cone_weight(c_2.center, c_2.radius, c_2.phi, c_2.axis, c_2.cos_o, c_2.cos_e, (_e17 * _e20), x_7, n_5, r_7, lobe_7);
-    return _e22;
+    let _e9 = range_scale_toward(rl_4, c_2.center, c_2.radius, x_7, r_7);
+    return _e9;
 }
 
-fn bsh_weighted_collect(x_8: vec3<f32>, n_6: vec3<f32>, r_8: vec3<f32>, lobe_8: vec4<f32>, rl_5: vec4<f32>, h0_: u32) -> WeightedPicks {
+fn light_weight(li_2: u32, x_8: vec3<f32>, n_5: vec3<f32>, r_8: vec3<f32>, lobe_7: vec4<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_3 = light_cones[li_2];
+    let _e15 = light_range_scale(li_2, x_8, r_8, rl_5);
+    let _e18 = rt2_4[li_2];
+    let _e20 = cone_weight(c_3.center, c_3.radius, c_3.phi, c_3.axis, c_3.cos_o, c_3.cos_e, (_e15 * _e18), x_8, n_5, r_8, lobe_7);
+    return _e20;
+}
+
+fn bsh_weighted_collect(x_9: vec3<f32>, n_6: vec3<f32>, r_9: vec3<f32>, lobe_8: vec4<f32>, rl_6: vec4<f32>, h0_: u32) -> WeightedPicks {
     var picks: WeightedPicks;
     var h_1: u32;
     var b_3: u32;
@@ -602,7 +608,7 @@ fn bsh_weighted_collect(x_8: vec3<f32>, n_6: vec3<f32>, r_8: vec3<f32>, lobe_8: 
     picks.n = 0u;
     h_1 = h0_;
     let _e14 = bsh_first(BSH);
-    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_8, r_8, rl_5);
+    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_9, rl_6);
     b_3 = _e15;
     loop {
         let _e17 = b_3;
@@ -614,8 +620,8 @@ fn bsh_weighted_collect(x_8: vec3<f32>, n_6: vec3<f32>, r_8: vec3<f32>, lobe_8: 
             let _e21 = picks.n;
             picks.n = (_e21 + 1u);
             let _e25 = b_3;
-            let li_3 = bsh_nodes[_e25].light;
-            let _e29 = light_weight(li_3, x_8, n_6, r_8, lobe_8, rl_5);
+            let li_4 = bsh_nodes[_e25].light;
+            let _e29 = light_weight(li_4, x_9, n_6, r_9, lobe_8, rl_6);
             if (_e29 > 0f) {
                 let _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -636,7 +642,7 @@ fn bsh_weighted_collect(x_8: vec3<f32>, n_6: vec3<f32>, r_8: vec3<f32>, lobe_8: 
                         let _e46 = weighted_replace(_e29, _e43, _e45);
                         if _e46 {
                             let _e48 = s_1;
-                            picks.light[_e48] = li_3;
+                            picks.light[_e48] = li_4;
                             let _e51 = s_1;
                             picks.w[_e51] = _e29;
                         }
@@ -651,7 +657,7 @@ fn bsh_weighted_collect(x_8: vec3<f32>, n_6: vec3<f32>, r_8: vec3<f32>, lobe_8: 
         continuing {
             let _e58 = b_3;
             let _e61 = bsh_nodes[_e58].next;
-            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_8, r_8, rl_5);
+            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_9, rl_6);
             b_3 = _e62;
         }
     }
@@ -665,9 +671,9 @@ fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32
     if (depth == background) {
         return vec4<f32>(0f, 0f, 0f, 0f);
     }
-    let x_10 = ((((px + 0.5f) / width) * 2f) - 1f);
+    let x_11 = ((((px + 0.5f) / width) * 2f) - 1f);
     let y_1 = (1f - (((py + 0.5f) / height) * 2f));
-    let p_7 = ((((c0_ * x_10) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    let p_7 = ((((c0_ * x_11) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
     if (abs(p_7.w) > 0f) {
         return vec4<f32>((p_7.x / p_7.w), (p_7.y / p_7.w), (p_7.z / p_7.w), 1f);
     }
@@ -688,10 +694,10 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return _e32;
 }
 
-fn shade_pick(li_2: u32, x_9: vec3<f32>, n_7: vec3<f32>, r_9: vec3<f32>, rl_6: vec4<f32>, m_1: Material, w_4: f32, u1_2: f32, u2_2: f32) -> Shaded {
+fn shade_pick(li_3: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_10: vec3<f32>, rl_7: vec4<f32>, m_1: Material, w_4: f32, u1_2: f32, u2_2: f32) -> Shaded {
     var s_2: Shaded;
 
-    let _e12 = connect(li_2, x_9, n_7, n_7, 1f, w_4, u1_2, u2_2, 0f);
+    let _e12 = connect(li_3, x_10, n_7, n_7, 1f, w_4, u1_2, u2_2, 0f);
     s_2.e = _e12.e;
     s_2.diffuse = vec3(0f);
     s_2.specular = vec3(0f);
@@ -740,7 +746,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(out_tex, texel_1, vec4(0f));
         return;
     }
-    let x_11 = _e21.xyz;
+    let x_12 = _e21.xyz;
     let n_8 = (nn / vec3(sqrt(len2_)));
     r = n_8;
     let _e53 = lobe;
@@ -753,7 +759,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     h = _e69;
     let _e79 = r;
     let _e80 = lobe;
-    let _e81 = bsh_weighted_collect(x_11, n_8, _e79, _e80, _e54, _e68);
+    let _e81 = bsh_weighted_collect(x_12, n_8, _e79, _e80, _e54, _e68);
     if (_e81.w_sum > 0f) {
         loop {
             let _e87 = k;
@@ -778,7 +784,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                 let _e107 = weighted_pick_weight(_e81.w_sum, _e81.w[_e104], K);
                 let _e108 = h;
                 let _e109 = xi_from_bits(_e108);
-                let _e110 = shade_pick(_e81.light[_e98], x_11, n_8, _e100, _e54, _e101, _e107, _e93, _e109);
+                let _e110 = shade_pick(_e81.light[_e98], x_12, n_8, _e100, _e54, _e101, _e107, _e93, _e109);
                 let _e111 = add(_e96, _e110);
                 t = _e111;
             }

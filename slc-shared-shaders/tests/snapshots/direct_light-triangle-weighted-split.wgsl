@@ -738,10 +738,10 @@ fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>)
 
 fn light_weight(li_2: u32, x_8: vec3<f32>, n_8: vec3<f32>, r_8: vec3<f32>, lobe_7: vec4<f32>, rl_5: vec4<f32>) -> f32 {
     let c_8 = light_cones[li_2];
-    let _e17 = range_scale_toward(rl_5, c_8.center, c_8.radius, x_8, r_8);
-    let _e20 = rt2_4[li_2];
-    let _e22 = cone_weight(c_8.center, c_8.radius, c_8.phi, c_8.axis, c_8.cos_o, c_8.cos_e, (_e17 * _e20), x_8, n_8, r_8, lobe_7);
-    return _e22;
+    let _e15 = light_range_scale(li_2, x_8, r_8, rl_5);
+    let _e18 = rt2_4[li_2];
+    let _e20 = cone_weight(c_8.center, c_8.radius, c_8.phi, c_8.axis, c_8.cos_o, c_8.cos_e, (_e15 * _e18), x_8, n_8, r_8, lobe_7);
+    return _e20;
 }
 
 fn bsh_weighted_collect(x_9: vec3<f32>, n_9: vec3<f32>, r_9: vec3<f32>, lobe_8: vec4<f32>, rl_6: vec4<f32>, h0_: u32) -> WeightedPicks {

@@ -1315,35 +1315,34 @@ fn light_range_scale(li_1: u32, x_14: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>
     return _e9;
 }
 
-fn select_pdf(li_2: u32, x_15: vec3<f32>, n_16: vec3<f32>, r_6: vec3<f32>, lobe_5: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
-    let _e8 = reservoir_select_pdf(nee, in_range_1, K);
-    return _e8;
+fn select_pdf(li_2: u32, x_15: vec3<f32>, n_16: vec3<f32>, r_6: vec3<f32>, lobe_5: vec4<f32>, rl_6: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
+    let _e9 = reservoir_select_pdf(nee, in_range_1, K);
+    return _e9;
 }
 
-fn light_pdf_selected(li_3: u32, x_16: vec3<f32>, r_7: vec3<f32>, lobe_6: vec4<f32>, y_2: vec3<f32>, sel: f32) -> f32 {
+fn light_pdf_selected(li_3: u32, x_16: vec3<f32>, r_7: vec3<f32>, rl_7: vec4<f32>, y_2: vec3<f32>, sel: f32) -> f32 {
     let l_9 = lights[li_3];
     let v_12 = (x_16 - y_2);
     let d2_10 = dot(v_12, v_12);
     let _e11 = light_normal(l_9);
     let cos_y_1 = select(0f, dot(_e11, (v_12 / vec3(sqrt(d2_10)))), (d2_10 > 0f));
-    let _e20 = range_lobe(lobe_6);
-    let _e21 = light_range_scale(li_3, x_16, r_7, _e20);
-    let _e24 = rt2_4[li_3];
-    let _e26 = light_area(l_9);
-    let _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_10, _e26, cos_y_1);
-    return _e27;
+    let _e20 = light_range_scale(li_3, x_16, r_7, rl_7);
+    let _e23 = rt2_4[li_3];
+    let _e25 = light_area(l_9);
+    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_10, _e25, cos_y_1);
+    return _e26;
 }
 
-fn light_pdf(li_4: u32, x_17: vec3<f32>, n_17: vec3<f32>, r_8: vec3<f32>, lobe_7: vec4<f32>, y_3: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
-    let _e8 = select_pdf(li_4, x_17, n_17, r_8, lobe_7, nee_1, in_range_2);
-    let _e9 = light_pdf_selected(li_4, x_17, r_8, lobe_7, y_3, _e8);
-    return _e9;
+fn light_pdf(li_4: u32, x_17: vec3<f32>, n_17: vec3<f32>, r_8: vec3<f32>, lobe_6: vec4<f32>, rl_8: vec4<f32>, y_3: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let _e9 = select_pdf(li_4, x_17, n_17, r_8, lobe_6, rl_8, nee_1, in_range_2);
+    let _e10 = light_pdf_selected(li_4, x_17, r_8, rl_8, y_3, _e9);
+    return _e10;
 }
 
-fn shade_pick(li_5: u32, x_18: vec3<f32>, n_18: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_9: vec3<f32>, lobe_8: vec4<f32>, rl_6: vec4<f32>, w_6: f32, nee_2: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
+fn shade_pick(li_5: u32, x_18: vec3<f32>, n_18: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_9: vec4<f32>, w_6: f32, nee_2: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e13 = light_range_scale(li_5, x_18, r_9, rl_6);
+    let _e13 = light_range_scale(li_5, x_18, r_9, rl_9);
     let _e16 = params.eps;
     let _e17 = connect(li_5, x_18, n_18, ng_2, _e13, w_6, u1_3, u2_3, _e16);
     if (_e17.cos_x <= 0f) {
@@ -1353,8 +1352,8 @@ fn shade_pick(li_5: u32, x_18: vec3<f32>, n_18: vec3<f32>, ng_2: vec3<f32>, m: G
     let _e30 = lights[li_5];
     let _e31 = light_area(_e30);
     if (_e31 > 0f) {
-        let _e36 = light_pdf(li_5, x_18, n_18, r_9, lobe_8, _e17.y, nee_2, true);
-        let _e38 = specular_probability(lobe_8);
+        let _e36 = light_pdf(li_5, x_18, n_18, r_9, lobe_7, rl_9, _e17.y, nee_2, true);
+        let _e38 = specular_probability(lobe_7);
         let _e39 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e38);
         let _e40 = mis_weight(_e36, _e39);
         mis = _e40;

@@ -1062,24 +1062,23 @@ fn light_bvh_sample(nodes_4: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_6: vec3<f32
     return _e57;
 }
 
-fn light_pdf_selected(li_2: u32, x_9: vec3<f32>, r_7: vec3<f32>, lobe_10: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
+fn light_pdf_selected(li_2: u32, x_9: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
     let l_9 = lights[li_2];
     let v_12 = (x_9 - y_1);
     let d2_10 = dot(v_12, v_12);
     let _e11 = light_normal(l_9);
     let cos_y_1 = select(0f, dot(_e11, (v_12 / vec3(sqrt(d2_10)))), (d2_10 > 0f));
-    let _e20 = range_lobe(lobe_10);
-    let _e21 = light_range_scale(li_2, x_9, r_7, _e20);
-    let _e24 = rt2_4[li_2];
-    let _e26 = light_area(l_9);
-    let _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_10, _e26, cos_y_1);
-    return _e27;
+    let _e20 = light_range_scale(li_2, x_9, r_7, rl_3);
+    let _e23 = rt2_4[li_2];
+    let _e25 = light_area(l_9);
+    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_10, _e25, cos_y_1);
+    return _e26;
 }
 
-fn shade_pick(li_3: u32, x_10: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_8: vec3<f32>, lobe_11: vec4<f32>, rl_3: vec4<f32>, w_4: f32, nee: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
+fn shade_pick(li_3: u32, x_10: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_8: vec3<f32>, lobe_10: vec4<f32>, rl_4: vec4<f32>, w_4: f32, nee: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e13 = light_range_scale(li_3, x_10, r_8, rl_3);
+    let _e13 = light_range_scale(li_3, x_10, r_8, rl_4);
     let _e16 = params.eps;
     let _e17 = connect(li_3, x_10, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16);
     if (_e17.cos_x <= 0f) {
@@ -1089,8 +1088,8 @@ fn shade_pick(li_3: u32, x_10: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, m: G
     let _e30 = lights[li_3];
     let _e31 = light_area(_e30);
     if (_e31 > 0f) {
-        let _e37 = light_pdf_selected(li_3, x_10, r_8, lobe_11, _e17.y, (1f / w_4));
-        let _e39 = specular_probability(lobe_11);
+        let _e37 = light_pdf_selected(li_3, x_10, r_8, rl_4, _e17.y, (1f / w_4));
+        let _e39 = specular_probability(lobe_10);
         let _e40 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e39);
         let _e41 = mis_weight(_e37, _e40);
         mis = _e41;

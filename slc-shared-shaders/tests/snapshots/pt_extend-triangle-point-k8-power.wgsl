@@ -910,32 +910,31 @@ fn light_range_scale(li: u32, x_4: vec3<f32>, r_2: vec3<f32>, rl_2: vec4<f32>) -
     return _e9;
 }
 
-fn select_pdf(li_1: u32, x_5: vec3<f32>, n_13: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
-    let _e8 = reservoir_select_pdf(nee, in_range_1, K);
-    return _e8;
+fn select_pdf(li_1: u32, x_5: vec3<f32>, n_13: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>, rl_3: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
+    let _e9 = reservoir_select_pdf(nee, in_range_1, K);
+    return _e9;
 }
 
-fn light_pdf_selected(li_2: u32, x_6: vec3<f32>, r_4: vec3<f32>, lobe_6: vec4<f32>, y: vec3<f32>, sel: f32) -> f32 {
+fn light_pdf_selected(li_2: u32, x_6: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, y: vec3<f32>, sel: f32) -> f32 {
     let l_6 = lights[li_2];
     let v_11 = (x_6 - y);
     let d2_3 = dot(v_11, v_11);
     let _e11 = light_normal(l_6);
     let cos_y_1 = select(0f, dot(_e11, (v_11 / vec3(sqrt(d2_3)))), (d2_3 > 0f));
-    let _e20 = range_lobe(lobe_6);
-    let _e21 = light_range_scale(li_2, x_6, r_4, _e20);
-    let _e24 = rt2_2[li_2];
-    let _e26 = light_area(l_6);
-    let _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_3, _e26, cos_y_1);
-    return _e27;
+    let _e20 = light_range_scale(li_2, x_6, r_4, rl_4);
+    let _e23 = rt2_2[li_2];
+    let _e25 = light_area(l_6);
+    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_3, _e25, cos_y_1);
+    return _e26;
 }
 
-fn light_pdf(li_3: u32, x_7: vec3<f32>, n_14: vec3<f32>, r_5: vec3<f32>, lobe_7: vec4<f32>, y_1: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
-    let _e8 = select_pdf(li_3, x_7, n_14, r_5, lobe_7, nee_1, in_range_2);
-    let _e9 = light_pdf_selected(li_3, x_7, r_5, lobe_7, y_1, _e8);
-    return _e9;
+fn light_pdf(li_3: u32, x_7: vec3<f32>, n_14: vec3<f32>, r_5: vec3<f32>, lobe_6: vec4<f32>, rl_5: vec4<f32>, y_1: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let _e9 = select_pdf(li_3, x_7, n_14, r_5, lobe_6, rl_5, nee_1, in_range_2);
+    let _e10 = light_pdf_selected(li_3, x_7, r_5, rl_5, y_1, _e9);
+    return _e10;
 }
 
-fn bsh_reaches(node_3: BshNode, x_8: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
+fn bsh_reaches(node_3: BshNode, x_8: vec3<f32>, r_6: vec3<f32>, rl_6: vec4<f32>) -> bool {
     var local_20: bool;
     var local_21: bool;
 
@@ -943,8 +942,8 @@ fn bsh_reaches(node_3: BshNode, x_8: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     if _e6 {
         return true;
     }
-    if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_8);
+    if !((rl_6.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_6.w * 1.0001f)), x_8);
         local_20 = !(_e20);
     } else {
         local_20 = true;
@@ -954,12 +953,12 @@ fn bsh_reaches(node_3: BshNode, x_8: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        let _e30 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_8, r_6);
+        let _e30 = range_scale_toward(rl_6, node_3.center, node_3.extent, x_8, r_6);
         let _e33 = bsh_scaled_radius(node_3, sqrt(_e30));
         let _e34 = sphere_contains_point(node_3.center, _e33, x_8);
         return _e34;
     }
-    let _e37 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_8, r_6);
+    let _e37 = range_scale_toward(rl_6, node_3.center, node_3.extent, x_8, r_6);
     let s_c = (_e37 * 1.001f);
     let _e42 = bsh_range_bound(node_3);
     let reach = (node_3.extent + (sqrt(s_c) * _e42));
@@ -1077,18 +1076,18 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         if (_e161 > 0f) {
             let _e168 = light_leaf[tri.light];
             let leaf = bsh_nodes[_e168];
-            let _e172 = st.prev;
-            let _e174 = st.prev_r;
-            let _e176 = st.prev_lobe;
-            let _e177 = range_lobe(_e176);
-            let _e178 = bsh_reaches(leaf, _e172, _e174, _e177);
+            let _e172 = st.prev_lobe;
+            let _e173 = range_lobe(_e172);
+            let _e175 = st.prev;
+            let _e177 = st.prev_r;
+            let _e178 = bsh_reaches(leaf, _e175, _e177, _e173);
             let _e180 = st.pdf_bsdf;
             let _e183 = st.prev;
             let _e185 = st.prev_normal;
             let _e187 = st.prev_r;
             let _e189 = st.prev_lobe;
             let _e192 = candidates[i_1];
-            let _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, x_9, _e192, _e178);
+            let _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, _e173, x_9, _e192, _e178);
             let _e194 = mis_weight(_e180, _e193);
             w = _e194;
         }

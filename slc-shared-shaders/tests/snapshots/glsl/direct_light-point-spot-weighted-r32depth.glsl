@@ -575,15 +575,21 @@ Connection connect(uint li, vec3 x_6, vec3 n_4, vec3 ng_1, float s, float w_res,
     return _e58;
 }
 
-float light_weight(uint li_1, vec3 x_7, vec3 n_5, vec3 r_7, vec4 lobe_7, vec4 rl_4) {
+float light_range_scale(uint li_1, vec3 x_7, vec3 r_7, vec4 rl_4) {
     GpuLightCone c_2 = _group_1_binding_5_cs[li_1];
-    float _e17 = range_scale_toward(rl_4, c_2.center, c_2.radius, x_7, r_7);
-    float _e20 = _group_1_binding_2_cs[li_1];
-    float _e22 = cone_weight(c_2.center, c_2.radius, c_2.phi, c_2.axis, c_2.cos_o, c_2.cos_e, (_e17 * _e20), x_7, n_5, r_7, lobe_7);
-    return _e22;
+    float _e9 = range_scale_toward(rl_4, c_2.center, c_2.radius, x_7, r_7);
+    return _e9;
 }
 
-WeightedPicks bsh_weighted_collect(vec3 x_8, vec3 n_6, vec3 r_8, vec4 lobe_8, vec4 rl_5, uint h0_) {
+float light_weight(uint li_2, vec3 x_8, vec3 n_5, vec3 r_8, vec4 lobe_7, vec4 rl_5) {
+    GpuLightCone c_3 = _group_1_binding_5_cs[li_2];
+    float _e15 = light_range_scale(li_2, x_8, r_8, rl_5);
+    float _e18 = _group_1_binding_2_cs[li_2];
+    float _e20 = cone_weight(c_3.center, c_3.radius, c_3.phi, c_3.axis, c_3.cos_o, c_3.cos_e, (_e15 * _e18), x_8, n_5, r_8, lobe_7);
+    return _e20;
+}
+
+WeightedPicks bsh_weighted_collect(vec3 x_9, vec3 n_6, vec3 r_9, vec4 lobe_8, vec4 rl_6, uint h0_) {
     WeightedPicks picks = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
     uint h_1 = 0u;
     uint b_3 = 0u;
@@ -592,14 +598,14 @@ WeightedPicks bsh_weighted_collect(vec3 x_8, vec3 n_6, vec3 r_8, vec4 lobe_8, ve
     picks.n = 0u;
     h_1 = h0_;
     uint _e14 = bsh_first(BSH);
-    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_8, r_8, rl_5);
+    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_9, rl_6);
     b_3 = _e15;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
             uint _e58 = b_3;
             uint _e61 = _group_1_binding_4_cs[_e58].next;
-            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_8, r_8, rl_5);
+            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_9, rl_6);
             b_3 = _e62;
         }
         loop_init = false;
@@ -612,8 +618,8 @@ WeightedPicks bsh_weighted_collect(vec3 x_8, vec3 n_6, vec3 r_8, vec4 lobe_8, ve
             uint _e21 = picks.n;
             picks.n = (_e21 + 1u);
             uint _e25 = b_3;
-            uint li_3 = _group_1_binding_4_cs[_e25].light;
-            float _e29 = light_weight(li_3, x_8, n_6, r_8, lobe_8, rl_5);
+            uint li_4 = _group_1_binding_4_cs[_e25].light;
+            float _e29 = light_weight(li_4, x_9, n_6, r_9, lobe_8, rl_6);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -640,7 +646,7 @@ WeightedPicks bsh_weighted_collect(vec3 x_8, vec3 n_6, vec3 r_8, vec4 lobe_8, ve
                         bool _e46 = weighted_replace(_e29, _e43, _e45);
                         if (_e46) {
                             uint _e48 = s_1;
-                            picks.light[_e48] = li_3;
+                            picks.light[_e48] = li_4;
                             uint _e51 = s_1;
                             picks.w[_e51] = _e29;
                         }
@@ -659,9 +665,9 @@ vec4 unproject_pixel(vec4 c0_, vec4 c1_, vec4 c2_, vec4 c3_, float px, float py,
     if ((depth == background)) {
         return vec4(0.0, 0.0, 0.0, 0.0);
     }
-    float x_10 = ((((px + 0.5) / width) * 2.0) - 1.0);
+    float x_11 = ((((px + 0.5) / width) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
-    vec4 p_7 = ((((c0_ * x_10) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    vec4 p_7 = ((((c0_ * x_11) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
     if ((abs(p_7.w) > 0.0)) {
         return vec4((p_7.x / p_7.w), (p_7.y / p_7.w), (p_7.z / p_7.w), 1.0);
     }
@@ -682,9 +688,9 @@ vec4 surface_at(ivec2 texel) {
     return _e32;
 }
 
-Shaded shade_pick(uint li_2, vec3 x_9, vec3 n_7, vec3 r_9, vec4 rl_6, Material m_1, float w_4, float u1_2, float u2_2) {
+Shaded shade_pick(uint li_3, vec3 x_10, vec3 n_7, vec3 r_10, vec4 rl_7, Material m_1, float w_4, float u1_2, float u2_2) {
     Shaded s_2 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    Connection _e12 = connect(li_2, x_9, n_7, n_7, 1.0, w_4, u1_2, u2_2, 0.0);
+    Connection _e12 = connect(li_3, x_10, n_7, n_7, 1.0, w_4, u1_2, u2_2, 0.0);
     s_2.e = _e12.e;
     s_2.diffuse = vec3(0.0);
     s_2.specular = vec3(0.0);
@@ -732,7 +738,7 @@ void main() {
         imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
         return;
     }
-    vec3 x_11 = _e21.xyz;
+    vec3 x_12 = _e21.xyz;
     vec3 n_8 = (nn / vec3(sqrt(len2_)));
     r = n_8;
     vec4 _e53 = lobe;
@@ -745,7 +751,7 @@ void main() {
     h = _e69;
     vec3 _e79 = r;
     vec4 _e80 = lobe;
-    WeightedPicks _e81 = bsh_weighted_collect(x_11, n_8, _e79, _e80, _e54, _e68);
+    WeightedPicks _e81 = bsh_weighted_collect(x_12, n_8, _e79, _e80, _e54, _e68);
     if ((_e81.w_sum > 0.0)) {
         bool loop_init_2 = true;
         while(true) {
@@ -776,7 +782,7 @@ void main() {
                 float _e107 = weighted_pick_weight(_e81.w_sum, _e81.w[_e104], K);
                 uint _e108 = h;
                 float _e109 = xi_from_bits(_e108);
-                Shaded _e110 = shade_pick(_e81.light[_e98], x_11, n_8, _e100, _e54, _e101, _e107, _e93, _e109);
+                Shaded _e110 = shade_pick(_e81.light[_e98], x_12, n_8, _e100, _e54, _e101, _e107, _e93, _e109);
                 Shaded _e111 = add(_e96, _e110);
                 t = _e111;
             }

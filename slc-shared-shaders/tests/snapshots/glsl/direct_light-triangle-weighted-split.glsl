@@ -724,10 +724,10 @@ float light_range_scale(uint li_1, vec3 x_7, vec3 r_7, vec4 rl_4) {
 
 float light_weight(uint li_2, vec3 x_8, vec3 n_8, vec3 r_8, vec4 lobe_7, vec4 rl_5) {
     GpuLightCone c_8 = _group_1_binding_5_cs[li_2];
-    float _e17 = range_scale_toward(rl_5, c_8.center, c_8.radius, x_8, r_8);
-    float _e20 = _group_1_binding_2_cs[li_2];
-    float _e22 = cone_weight(c_8.center, c_8.radius, c_8.phi, c_8.axis, c_8.cos_o, c_8.cos_e, (_e17 * _e20), x_8, n_8, r_8, lobe_7);
-    return _e22;
+    float _e15 = light_range_scale(li_2, x_8, r_8, rl_5);
+    float _e18 = _group_1_binding_2_cs[li_2];
+    float _e20 = cone_weight(c_8.center, c_8.radius, c_8.phi, c_8.axis, c_8.cos_o, c_8.cos_e, (_e15 * _e18), x_8, n_8, r_8, lobe_7);
+    return _e20;
 }
 
 WeightedPicks bsh_weighted_collect(vec3 x_9, vec3 n_9, vec3 r_9, vec4 lobe_8, vec4 rl_6, uint h0_) {

@@ -1293,34 +1293,33 @@ float light_range_scale(uint li_1, vec3 x_14, vec3 r_5, vec4 rl_5) {
     return _e9;
 }
 
-float select_pdf(uint li_2, vec3 x_15, vec3 n_16, vec3 r_6, vec4 lobe_5, uint nee, bool in_range_1) {
-    float _e8 = reservoir_select_pdf(nee, in_range_1, K);
-    return _e8;
+float select_pdf(uint li_2, vec3 x_15, vec3 n_16, vec3 r_6, vec4 lobe_5, vec4 rl_6, uint nee, bool in_range_1) {
+    float _e9 = reservoir_select_pdf(nee, in_range_1, K);
+    return _e9;
 }
 
-float light_pdf_selected(uint li_3, vec3 x_16, vec3 r_7, vec4 lobe_6, vec3 y_2, float sel) {
+float light_pdf_selected(uint li_3, vec3 x_16, vec3 r_7, vec4 rl_7, vec3 y_2, float sel) {
     GpuLight l_9 = _group_0_binding_2_cs[li_3];
     vec3 v_12 = (x_16 - y_2);
     float d2_10 = dot(v_12, v_12);
     vec3 _e11 = light_normal(l_9);
     float cos_y_1 = ((d2_10 > 0.0) ? dot(_e11, (v_12 / vec3(sqrt(d2_10)))) : 0.0);
-    vec4 _e20 = range_lobe(lobe_6);
-    float _e21 = light_range_scale(li_3, x_16, r_7, _e20);
-    float _e24 = _group_0_binding_3_cs[li_3];
-    float _e26 = light_area(l_9);
-    float _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_10, _e26, cos_y_1);
-    return _e27;
+    float _e20 = light_range_scale(li_3, x_16, r_7, rl_7);
+    float _e23 = _group_0_binding_3_cs[li_3];
+    float _e25 = light_area(l_9);
+    float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_10, _e25, cos_y_1);
+    return _e26;
 }
 
-float light_pdf(uint li_4, vec3 x_17, vec3 n_17, vec3 r_8, vec4 lobe_7, vec3 y_3, uint nee_1, bool in_range_2) {
-    float _e8 = select_pdf(li_4, x_17, n_17, r_8, lobe_7, nee_1, in_range_2);
-    float _e9 = light_pdf_selected(li_4, x_17, r_8, lobe_7, y_3, _e8);
-    return _e9;
+float light_pdf(uint li_4, vec3 x_17, vec3 n_17, vec3 r_8, vec4 lobe_6, vec4 rl_8, vec3 y_3, uint nee_1, bool in_range_2) {
+    float _e9 = select_pdf(li_4, x_17, n_17, r_8, lobe_6, rl_8, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_4, x_17, r_8, rl_8, y_3, _e9);
+    return _e10;
 }
 
-vec3 shade_pick(uint li_5, vec3 x_18, vec3 n_18, vec3 ng_2, GpuMaterial m, vec3 wo_1, vec3 r_9, vec4 lobe_8, vec4 rl_6, float w_6, uint nee_2, float u1_3, float u2_3) {
+vec3 shade_pick(uint li_5, vec3 x_18, vec3 n_18, vec3 ng_2, GpuMaterial m, vec3 wo_1, vec3 r_9, vec4 lobe_7, vec4 rl_9, float w_6, uint nee_2, float u1_3, float u2_3) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_5, x_18, r_9, rl_6);
+    float _e13 = light_range_scale(li_5, x_18, r_9, rl_9);
     float _e16 = _group_0_binding_0_cs.eps;
     Connection _e17 = connect(li_5, x_18, n_18, ng_2, _e13, w_6, u1_3, u2_3, _e16);
     if ((_e17.cos_x <= 0.0)) {
@@ -1330,8 +1329,8 @@ vec3 shade_pick(uint li_5, vec3 x_18, vec3 n_18, vec3 ng_2, GpuMaterial m, vec3 
     GpuLight _e30 = _group_0_binding_2_cs[li_5];
     float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        float _e36 = light_pdf(li_5, x_18, n_18, r_9, lobe_8, _e17.y, nee_2, true);
-        float _e38 = specular_probability(lobe_8);
+        float _e36 = light_pdf(li_5, x_18, n_18, r_9, lobe_7, rl_9, _e17.y, nee_2, true);
+        float _e38 = specular_probability(lobe_7);
         float _e39 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);
         mis = _e40;

@@ -1042,23 +1042,22 @@ BvhPick light_bvh_sample(uint nodes_4, vec3 x_8, vec3 n_15, vec3 r_6, vec4 lobe_
     return _e57;
 }
 
-float light_pdf_selected(uint li_2, vec3 x_9, vec3 r_7, vec4 lobe_10, vec3 y_1, float sel) {
+float light_pdf_selected(uint li_2, vec3 x_9, vec3 r_7, vec4 rl_3, vec3 y_1, float sel) {
     GpuLight l_9 = _group_0_binding_2_cs[li_2];
     vec3 v_12 = (x_9 - y_1);
     float d2_10 = dot(v_12, v_12);
     vec3 _e11 = light_normal(l_9);
     float cos_y_1 = ((d2_10 > 0.0) ? dot(_e11, (v_12 / vec3(sqrt(d2_10)))) : 0.0);
-    vec4 _e20 = range_lobe(lobe_10);
-    float _e21 = light_range_scale(li_2, x_9, r_7, _e20);
-    float _e24 = _group_0_binding_3_cs[li_2];
-    float _e26 = light_area(l_9);
-    float _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_10, _e26, cos_y_1);
-    return _e27;
+    float _e20 = light_range_scale(li_2, x_9, r_7, rl_3);
+    float _e23 = _group_0_binding_3_cs[li_2];
+    float _e25 = light_area(l_9);
+    float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_10, _e25, cos_y_1);
+    return _e26;
 }
 
-vec3 shade_pick(uint li_3, vec3 x_10, vec3 n_16, vec3 ng_2, GpuMaterial m, vec3 wo_1, vec3 r_8, vec4 lobe_11, vec4 rl_3, float w_4, uint nee, float u1_3, float u2_3) {
+vec3 shade_pick(uint li_3, vec3 x_10, vec3 n_16, vec3 ng_2, GpuMaterial m, vec3 wo_1, vec3 r_8, vec4 lobe_10, vec4 rl_4, float w_4, uint nee, float u1_3, float u2_3) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_3, x_10, r_8, rl_3);
+    float _e13 = light_range_scale(li_3, x_10, r_8, rl_4);
     float _e16 = _group_0_binding_0_cs.eps;
     Connection _e17 = connect(li_3, x_10, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16);
     if ((_e17.cos_x <= 0.0)) {
@@ -1068,8 +1067,8 @@ vec3 shade_pick(uint li_3, vec3 x_10, vec3 n_16, vec3 ng_2, GpuMaterial m, vec3 
     GpuLight _e30 = _group_0_binding_2_cs[li_3];
     float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        float _e37 = light_pdf_selected(li_3, x_10, r_8, lobe_11, _e17.y, (1.0 / w_4));
-        float _e39 = specular_probability(lobe_11);
+        float _e37 = light_pdf_selected(li_3, x_10, r_8, rl_4, _e17.y, (1.0 / w_4));
+        float _e39 = specular_probability(lobe_10);
         float _e40 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e39);
         float _e41 = mis_weight(_e37, _e40);
         mis = _e41;

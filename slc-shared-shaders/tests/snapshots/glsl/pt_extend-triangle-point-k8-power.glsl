@@ -894,40 +894,39 @@ float light_range_scale(uint li, vec3 x_4, vec3 r_2, vec4 rl_2) {
     return _e9;
 }
 
-float select_pdf(uint li_1, vec3 x_5, vec3 n_13, vec3 r_3, vec4 lobe_5, uint nee, bool in_range_1) {
-    float _e8 = reservoir_select_pdf(nee, in_range_1, K);
-    return _e8;
+float select_pdf(uint li_1, vec3 x_5, vec3 n_13, vec3 r_3, vec4 lobe_5, vec4 rl_3, uint nee, bool in_range_1) {
+    float _e9 = reservoir_select_pdf(nee, in_range_1, K);
+    return _e9;
 }
 
-float light_pdf_selected(uint li_2, vec3 x_6, vec3 r_4, vec4 lobe_6, vec3 y, float sel) {
+float light_pdf_selected(uint li_2, vec3 x_6, vec3 r_4, vec4 rl_4, vec3 y, float sel) {
     GpuLight l_6 = _group_0_binding_1_cs[li_2];
     vec3 v_11 = (x_6 - y);
     float d2_3 = dot(v_11, v_11);
     vec3 _e11 = light_normal(l_6);
     float cos_y_1 = ((d2_3 > 0.0) ? dot(_e11, (v_11 / vec3(sqrt(d2_3)))) : 0.0);
-    vec4 _e20 = range_lobe(lobe_6);
-    float _e21 = light_range_scale(li_2, x_6, r_4, _e20);
-    float _e24 = _group_0_binding_2_cs[li_2];
-    float _e26 = light_area(l_6);
-    float _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_3, _e26, cos_y_1);
-    return _e27;
+    float _e20 = light_range_scale(li_2, x_6, r_4, rl_4);
+    float _e23 = _group_0_binding_2_cs[li_2];
+    float _e25 = light_area(l_6);
+    float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_3, _e25, cos_y_1);
+    return _e26;
 }
 
-float light_pdf(uint li_3, vec3 x_7, vec3 n_14, vec3 r_5, vec4 lobe_7, vec3 y_1, uint nee_1, bool in_range_2) {
-    float _e8 = select_pdf(li_3, x_7, n_14, r_5, lobe_7, nee_1, in_range_2);
-    float _e9 = light_pdf_selected(li_3, x_7, r_5, lobe_7, y_1, _e8);
-    return _e9;
+float light_pdf(uint li_3, vec3 x_7, vec3 n_14, vec3 r_5, vec4 lobe_6, vec4 rl_5, vec3 y_1, uint nee_1, bool in_range_2) {
+    float _e9 = select_pdf(li_3, x_7, n_14, r_5, lobe_6, rl_5, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_3, x_7, r_5, rl_5, y_1, _e9);
+    return _e10;
 }
 
-bool bsh_reaches(BshNode node_3, vec3 x_8, vec3 r_6, vec4 rl_3) {
+bool bsh_reaches(BshNode node_3, vec3 x_8, vec3 r_6, vec4 rl_6) {
     bool local_20 = false;
     bool local_21 = false;
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_8);
     if (_e6) {
         return true;
     }
-    if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_8);
+    if (!((rl_6.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_6.w * 1.0001)), x_8);
         local_20 = !(_e20);
     } else {
         local_20 = true;
@@ -937,12 +936,12 @@ bool bsh_reaches(BshNode node_3, vec3 x_8, vec3 r_6, vec4 rl_3) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        float _e30 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_8, r_6);
+        float _e30 = range_scale_toward(rl_6, node_3.center, node_3.extent, x_8, r_6);
         float _e33 = bsh_scaled_radius(node_3, sqrt(_e30));
         bool _e34 = sphere_contains_point(node_3.center, _e33, x_8);
         return _e34;
     }
-    float _e37 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_8, r_6);
+    float _e37 = range_scale_toward(rl_6, node_3.center, node_3.extent, x_8, r_6);
     float s_c = (_e37 * 1.001);
     float _e42 = bsh_range_bound(node_3);
     float reach = (node_3.extent + (sqrt(s_c) * _e42));
@@ -1059,18 +1058,18 @@ void main() {
         if ((_e161 > 0.0)) {
             uint _e168 = _group_0_binding_4_cs[tri.light];
             BshNode leaf = _group_0_binding_3_cs[_e168];
-            vec3 _e172 = st.prev;
-            vec3 _e174 = st.prev_r;
-            vec4 _e176 = st.prev_lobe;
-            vec4 _e177 = range_lobe(_e176);
-            bool _e178 = bsh_reaches(leaf, _e172, _e174, _e177);
+            vec4 _e172 = st.prev_lobe;
+            vec4 _e173 = range_lobe(_e172);
+            vec3 _e175 = st.prev;
+            vec3 _e177 = st.prev_r;
+            bool _e178 = bsh_reaches(leaf, _e175, _e177, _e173);
             float _e180 = st.pdf_bsdf;
             vec3 _e183 = st.prev;
             vec3 _e185 = st.prev_normal;
             vec3 _e187 = st.prev_r;
             vec4 _e189 = st.prev_lobe;
             uint _e192 = _group_0_binding_9_cs[i_1];
-            float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, x_9, _e192, _e178);
+            float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, _e173, x_9, _e192, _e178);
             float _e194 = mis_weight(_e180, _e193);
             w = _e194;
         }

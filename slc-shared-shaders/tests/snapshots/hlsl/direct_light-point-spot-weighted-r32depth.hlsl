@@ -682,16 +682,23 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_weight(uint li_1, float3 x_7, float3 n_5, float3 r_7, float4 lobe_7, float4 rl_4)
+float light_range_scale(uint li_1, float3 x_7, float3 r_7, float4 rl_4)
 {
     GpuLightCone c_2 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e17 = range_scale_toward(rl_4, c_2.center_, c_2.radius, x_7, r_7);
-    float _e20 = asfloat(rt2_4.Load(li_1*4));
-    const float _e22 = cone_weight(c_2.center_, c_2.radius, c_2.phi, c_2.axis, c_2.cos_o, c_2.cos_e, (_e17 * _e20), x_7, n_5, r_7, lobe_7);
-    return _e22;
+    const float _e9 = range_scale_toward(rl_4, c_2.center_, c_2.radius, x_7, r_7);
+    return _e9;
 }
 
-WeightedPicks bsh_weighted_collect(float3 x_8, float3 n_6, float3 r_8, float4 lobe_8, float4 rl_5, uint h0_)
+float light_weight(uint li_2, float3 x_8, float3 n_5, float3 r_8, float4 lobe_7, float4 rl_5)
+{
+    GpuLightCone c_3 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
+    const float _e15 = light_range_scale(li_2, x_8, r_8, rl_5);
+    float _e18 = asfloat(rt2_4.Load(li_2*4));
+    const float _e20 = cone_weight(c_3.center_, c_3.radius, c_3.phi, c_3.axis, c_3.cos_o, c_3.cos_e, (_e15 * _e18), x_8, n_5, r_8, lobe_7);
+    return _e20;
+}
+
+WeightedPicks bsh_weighted_collect(float3 x_9, float3 n_6, float3 r_9, float4 lobe_8, float4 rl_6, uint h0_)
 {
     WeightedPicks picks = (WeightedPicks)0;
     uint h_1 = (uint)0;
@@ -702,7 +709,7 @@ WeightedPicks bsh_weighted_collect(float3 x_8, float3 n_6, float3 r_8, float4 lo
     picks.n = 0u;
     h_1 = h0_;
     const uint _e14 = bsh_first(BSH);
-    const uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_8, r_8, rl_5);
+    const uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_9, rl_6);
     b_3 = _e15;
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
@@ -712,7 +719,7 @@ WeightedPicks bsh_weighted_collect(float3 x_8, float3 n_6, float3 r_8, float4 lo
         if (!loop_init) {
             uint _e58 = b_3;
             uint _e61 = asuint(bsh_nodes.Load(20+_e58*32));
-            const uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_8, r_8, rl_5);
+            const uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_9, rl_6);
             b_3 = _e62;
         }
         loop_init = false;
@@ -725,8 +732,8 @@ WeightedPicks bsh_weighted_collect(float3 x_8, float3 n_6, float3 r_8, float4 lo
             uint _e21 = picks.n;
             picks.n = (_e21 + 1u);
             uint _e25 = b_3;
-            uint li_3 = asuint(bsh_nodes.Load(24+_e25*32));
-            const float _e29 = light_weight(li_3, x_8, n_6, r_8, lobe_8, rl_5);
+            uint li_4 = asuint(bsh_nodes.Load(24+_e25*32));
+            const float _e29 = light_weight(li_4, x_9, n_6, r_9, lobe_8, rl_6);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -756,7 +763,7 @@ WeightedPicks bsh_weighted_collect(float3 x_8, float3 n_6, float3 r_8, float4 lo
                         const bool _e46 = weighted_replace(_e29, _e43, _e45);
                         if (_e46) {
                             uint _e48 = s_1;
-                            picks.light[min(uint(_e48), 7u)] = li_3;
+                            picks.light[min(uint(_e48), 7u)] = li_4;
                             uint _e51 = s_1;
                             picks.w[min(uint(_e51), 7u)] = _e29;
                         }
@@ -777,9 +784,9 @@ float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px,
     if ((depth == background)) {
         return float4(0.0, 0.0, 0.0, 0.0);
     }
-    float x_10 = ((((px + 0.5) / width) * 2.0) - 1.0);
+    float x_11 = ((((px + 0.5) / width) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
-    float4 p_7 = ((((c0_ * x_10) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    float4 p_7 = ((((c0_ * x_11) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
     if ((abs(p_7.w) > 0.0)) {
         return float4((p_7.x / p_7.w), (p_7.y / p_7.w), (p_7.z / p_7.w), 1.0);
     }
@@ -801,11 +808,11 @@ float4 surface_at(int2 texel)
     return _e32;
 }
 
-Shaded shade_pick(uint li_2, float3 x_9, float3 n_7, float3 r_9, float4 rl_6, Material m_1, float w_4, float u1_2, float u2_2)
+Shaded shade_pick(uint li_3, float3 x_10, float3 n_7, float3 r_10, float4 rl_7, Material m_1, float w_4, float u1_2, float u2_2)
 {
     Shaded s_2 = (Shaded)0;
 
-    const Connection _e12 = connect(li_2, x_9, n_7, n_7, 1.0, w_4, u1_2, u2_2, 0.0);
+    const Connection _e12 = connect(li_3, x_10, n_7, n_7, 1.0, w_4, u1_2, u2_2, 0.0);
     s_2.e = _e12.e;
     s_2.diffuse = (0.0).xxx;
     s_2.specular = (0.0).xxx;
@@ -866,7 +873,7 @@ void main(uint3 gid : SV_DispatchThreadID)
         out_tex[texel_1] = (0.0).xxxx;
         return;
     }
-    float3 x_11 = _e21.xyz;
+    float3 x_12 = _e21.xyz;
     float3 n_8 = (nn / (sqrt(len2_)).xxx);
     r = n_8;
     float4 _e53 = lobe;
@@ -879,7 +886,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     h = _e69;
     float3 _e79 = r;
     float4 _e80 = lobe;
-    const WeightedPicks _e81 = bsh_weighted_collect(x_11, n_8, _e79, _e80, _e54, _e68);
+    const WeightedPicks _e81 = bsh_weighted_collect(x_12, n_8, _e79, _e80, _e54, _e68);
     if ((_e81.w_sum > 0.0)) {
         uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
         bool loop_init_2 = true;
@@ -913,7 +920,7 @@ void main(uint3 gid : SV_DispatchThreadID)
                 const float _e107 = weighted_pick_weight(_e81.w_sum, _e81.w[min(uint(_e104), 7u)], K);
                 uint _e108 = h;
                 const float _e109 = xi_from_bits(_e108);
-                const Shaded _e110 = shade_pick(_e81.light[min(uint(_e98), 7u)], x_11, n_8, _e100, _e54, _e101, _e107, _e93, _e109);
+                const Shaded _e110 = shade_pick(_e81.light[min(uint(_e98), 7u)], x_12, n_8, _e100, _e54, _e101, _e107, _e93, _e109);
                 const Shaded _e111 = add(_e96, _e110);
                 t = _e111;
             }

@@ -848,10 +848,10 @@ float light_range_scale(uint li_1, float3 x_7, float3 r_7, float4 rl_4)
 float light_weight(uint li_2, float3 x_8, float3 n_8, float3 r_8, float4 lobe_7, float4 rl_5)
 {
     GpuLightCone c_8 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
-    const float _e17 = range_scale_toward(rl_5, c_8.center_, c_8.radius, x_8, r_8);
-    float _e20 = asfloat(rt2_4.Load(li_2*4));
-    const float _e22 = cone_weight(c_8.center_, c_8.radius, c_8.phi, c_8.axis, c_8.cos_o, c_8.cos_e, (_e17 * _e20), x_8, n_8, r_8, lobe_7);
-    return _e22;
+    const float _e15 = light_range_scale(li_2, x_8, r_8, rl_5);
+    float _e18 = asfloat(rt2_4.Load(li_2*4));
+    const float _e20 = cone_weight(c_8.center_, c_8.radius, c_8.phi, c_8.axis, c_8.cos_o, c_8.cos_e, (_e15 * _e18), x_8, n_8, r_8, lobe_7);
+    return _e20;
 }
 
 WeightedPicks bsh_weighted_collect(float3 x_9, float3 n_9, float3 r_9, float4 lobe_8, float4 rl_6, uint h0_)

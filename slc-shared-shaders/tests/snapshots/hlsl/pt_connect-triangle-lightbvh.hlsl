@@ -1224,26 +1224,25 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_8, float3 n_15, float3 r_6, floa
     return bvhpick_3;
 }
 
-float light_pdf_selected(uint li_2, float3 x_9, float3 r_7, float4 lobe_10, float3 y_1, float sel)
+float light_pdf_selected(uint li_2, float3 x_9, float3 r_7, float4 rl_3, float3 y_1, float sel)
 {
     GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
     float3 v_12 = (x_9 - y_1);
     float d2_10 = dot(v_12, v_12);
     const float3 _e11 = light_normal(l_9);
     float cos_y_1 = ((d2_10 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_10)).xxx)) : 0.0);
-    const float4 _e20 = range_lobe(lobe_10);
-    const float _e21 = light_range_scale(li_2, x_9, r_7, _e20);
-    float _e24 = asfloat(rt2_4.Load(li_2*4));
-    const float _e26 = light_area(l_9);
-    const float _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_10, _e26, cos_y_1);
-    return _e27;
+    const float _e20 = light_range_scale(li_2, x_9, r_7, rl_3);
+    float _e23 = asfloat(rt2_4.Load(li_2*4));
+    const float _e25 = light_area(l_9);
+    const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_10, _e25, cos_y_1);
+    return _e26;
 }
 
-float3 shade_pick(uint li_3, float3 x_10, float3 n_16, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_8, float4 lobe_11, float4 rl_3, float w_4, uint nee, float u1_3, float u2_3)
+float3 shade_pick(uint li_3, float3 x_10, float3 n_16, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_8, float4 lobe_10, float4 rl_4, float w_4, uint nee, float u1_3, float u2_3)
 {
     float mis = 1.0;
 
-    const float _e13 = light_range_scale(li_3, x_10, r_8, rl_3);
+    const float _e13 = light_range_scale(li_3, x_10, r_8, rl_4);
     float _e16 = params.eps;
     const Connection _e17 = connect(li_3, x_10, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16);
     if ((_e17.cos_x <= 0.0)) {
@@ -1253,8 +1252,8 @@ float3 shade_pick(uint li_3, float3 x_10, float3 n_16, float3 ng_2, GpuMaterial 
     GpuLight _e30 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
     const float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        const float _e37 = light_pdf_selected(li_3, x_10, r_8, lobe_11, _e17.y, (1.0 / w_4));
-        const float _e39 = specular_probability(lobe_11);
+        const float _e37 = light_pdf_selected(li_3, x_10, r_8, rl_4, _e17.y, (1.0 / w_4));
+        const float _e39 = specular_probability(lobe_10);
         const float _e40 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e39);
         const float _e41 = mis_weight(_e37, _e40);
         mis = _e41;

@@ -1019,10 +1019,10 @@ float light_range_scale(uint li, float3 x_4, float3 r_2, float4 rl_2)
     return _e9;
 }
 
-float select_pdf(uint li_1, float3 x_5, float3 n_13, float3 r_3, float4 lobe_5, uint nee, bool in_range_1)
+float select_pdf(uint li_1, float3 x_5, float3 n_13, float3 r_3, float4 lobe_5, float4 rl_3, uint nee, bool in_range_1)
 {
-    const float _e8 = reservoir_select_pdf(nee, in_range_1, K);
-    return _e8;
+    const float _e9 = reservoir_select_pdf(nee, in_range_1, K);
+    return _e9;
 }
 
 GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, float3 arg4, float arg5, float3 arg6, uint arg7) {
@@ -1038,29 +1038,28 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-float light_pdf_selected(uint li_2, float3 x_6, float3 r_4, float4 lobe_6, float3 y, float sel)
+float light_pdf_selected(uint li_2, float3 x_6, float3 r_4, float4 rl_4, float3 y, float sel)
 {
     GpuLight l_6 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
     float3 v_11 = (x_6 - y);
     float d2_3 = dot(v_11, v_11);
     const float3 _e11 = light_normal(l_6);
     float cos_y_1 = ((d2_3 > 0.0) ? dot(_e11, (v_11 / (sqrt(d2_3)).xxx)) : 0.0);
-    const float4 _e20 = range_lobe(lobe_6);
-    const float _e21 = light_range_scale(li_2, x_6, r_4, _e20);
-    float _e24 = asfloat(rt2_2.Load(li_2*4));
-    const float _e26 = light_area(l_6);
-    const float _e27 = light_strategy_pdf(sel, (_e21 * _e24), d2_3, _e26, cos_y_1);
-    return _e27;
+    const float _e20 = light_range_scale(li_2, x_6, r_4, rl_4);
+    float _e23 = asfloat(rt2_2.Load(li_2*4));
+    const float _e25 = light_area(l_6);
+    const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_3, _e25, cos_y_1);
+    return _e26;
 }
 
-float light_pdf(uint li_3, float3 x_7, float3 n_14, float3 r_5, float4 lobe_7, float3 y_1, uint nee_1, bool in_range_2)
+float light_pdf(uint li_3, float3 x_7, float3 n_14, float3 r_5, float4 lobe_6, float4 rl_5, float3 y_1, uint nee_1, bool in_range_2)
 {
-    const float _e8 = select_pdf(li_3, x_7, n_14, r_5, lobe_7, nee_1, in_range_2);
-    const float _e9 = light_pdf_selected(li_3, x_7, r_5, lobe_7, y_1, _e8);
-    return _e9;
+    const float _e9 = select_pdf(li_3, x_7, n_14, r_5, lobe_6, rl_5, nee_1, in_range_2);
+    const float _e10 = light_pdf_selected(li_3, x_7, r_5, rl_5, y_1, _e9);
+    return _e10;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_8, float3 r_6, float4 rl_3)
+bool bsh_reaches(BshNode node_3, float3 x_8, float3 r_6, float4 rl_6)
 {
     bool local_20 = (bool)0;
     bool local_21 = (bool)0;
@@ -1069,8 +1068,8 @@ bool bsh_reaches(BshNode node_3, float3 x_8, float3 r_6, float4 rl_3)
     if (_e6) {
         return true;
     }
-    if (!((rl_3.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_8);
+    if (!((rl_6.w <= 1.0))) {
+        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_6.w * 1.0001)), x_8);
         local_20 = !(_e20);
     } else {
         local_20 = true;
@@ -1080,12 +1079,12 @@ bool bsh_reaches(BshNode node_3, float3 x_8, float3 r_6, float4 rl_3)
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        const float _e30 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_8, r_6);
+        const float _e30 = range_scale_toward(rl_6, node_3.center_, node_3.extent, x_8, r_6);
         const float _e33 = bsh_scaled_radius(node_3, sqrt(_e30));
         const bool _e34 = sphere_contains_point(node_3.center_, _e33, x_8);
         return _e34;
     }
-    const float _e37 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_8, r_6);
+    const float _e37 = range_scale_toward(rl_6, node_3.center_, node_3.extent, x_8, r_6);
     float s_c = (_e37 * 1.001);
     const float _e42 = bsh_range_bound(node_3);
     float reach = (node_3.extent + (sqrt(s_c) * _e42));
@@ -1292,18 +1291,18 @@ void main(uint3 gid : SV_DispatchThreadID)
         if ((_e161 > 0.0)) {
             uint _e168 = asuint(light_leaf.Load(tri.light*4));
             BshNode leaf = ConstructBshNode(asfloat(bsh_nodes.Load3(_e168*32+0)), asfloat(bsh_nodes.Load(_e168*32+12)), asuint(bsh_nodes.Load(_e168*32+16)), asuint(bsh_nodes.Load(_e168*32+20)), asuint(bsh_nodes.Load(_e168*32+24)), asfloat(bsh_nodes.Load(_e168*32+28)));
-            float3 _e172 = st.prev;
-            float3 _e174 = st.prev_r;
-            float4 _e176 = st.prev_lobe;
-            const float4 _e177 = range_lobe(_e176);
-            const bool _e178 = bsh_reaches(leaf, _e172, _e174, _e177);
+            float4 _e172 = st.prev_lobe;
+            const float4 _e173 = range_lobe(_e172);
+            float3 _e175 = st.prev;
+            float3 _e177 = st.prev_r;
+            const bool _e178 = bsh_reaches(leaf, _e175, _e177, _e173);
             float _e180 = st.pdf_bsdf;
             float3 _e183 = st.prev;
             float3 _e185 = st.prev_normal;
             float3 _e187 = st.prev_r;
             float4 _e189 = st.prev_lobe;
             uint _e192 = asuint(candidates.Load(i_1*4));
-            const float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, x_9, _e192, _e178);
+            const float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, _e173, x_9, _e192, _e178);
             const float _e194 = mis_weight(_e180, _e193);
             w = _e194;
         }

@@ -786,30 +786,43 @@ Connection connect(
     return _e58;
 }
 
-float light_weight(
+float light_range_scale(
     uint li_1,
     metal::float3 x_7,
-    metal::float3 n_5,
     metal::float3 r_7,
-    metal::float4 lobe_7,
     metal::float4 rl_4,
-    device type_4 const& rt2_4,
     device type_10 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_2 = light_cones[li_1];
-    float _e17 = range_scale_toward(rl_4, c_2.center, c_2.radius, x_7, r_7);
-    float _e20 = rt2_4[li_1];
-    float _e22 = cone_weight(c_2.center, c_2.radius, c_2.phi, c_2.axis, c_2.cos_o, c_2.cos_e, _e17 * _e20, x_7, n_5, r_7, lobe_7);
-    return _e22;
+    float _e9 = range_scale_toward(rl_4, c_2.center, c_2.radius, x_7, r_7);
+    return _e9;
+}
+
+float light_weight(
+    uint li_2,
+    metal::float3 x_8,
+    metal::float3 n_5,
+    metal::float3 r_8,
+    metal::float4 lobe_7,
+    metal::float4 rl_5,
+    device type_4 const& rt2_4,
+    device type_10 const& light_cones,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuLightCone c_3 = light_cones[li_2];
+    float _e15 = light_range_scale(li_2, x_8, r_8, rl_5, light_cones, _buffer_sizes);
+    float _e18 = rt2_4[li_2];
+    float _e20 = cone_weight(c_3.center, c_3.radius, c_3.phi, c_3.axis, c_3.cos_o, c_3.cos_e, _e15 * _e18, x_8, n_5, r_8, lobe_7);
+    return _e20;
 }
 
 WeightedPicks bsh_weighted_collect(
-    metal::float3 x_8,
+    metal::float3 x_9,
     metal::float3 n_6,
-    metal::float3 r_8,
+    metal::float3 r_9,
     metal::float4 lobe_8,
-    metal::float4 rl_5,
+    metal::float4 rl_6,
     uint h0_,
     device type_4 const& rt2_4,
     device type_9 const& bsh_nodes,
@@ -824,7 +837,7 @@ WeightedPicks bsh_weighted_collect(
     picks.n = 0u;
     h_1 = h0_;
     uint _e14 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_8, r_8, rl_5, bsh_nodes, _buffer_sizes);
+    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_9, rl_6, bsh_nodes, _buffer_sizes);
     b_3 = _e15;
     uint2 loop_bound_1 = uint2(4294967295u);
     bool loop_init = true;
@@ -834,7 +847,7 @@ WeightedPicks bsh_weighted_collect(
         if (!loop_init) {
             uint _e58 = b_3;
             uint _e61 = bsh_nodes[_e58].next;
-            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_8, r_8, rl_5, bsh_nodes, _buffer_sizes);
+            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_9, rl_6, bsh_nodes, _buffer_sizes);
             b_3 = _e62;
         }
         loop_init = false;
@@ -847,8 +860,8 @@ WeightedPicks bsh_weighted_collect(
             uint _e21 = picks.n;
             picks.n = _e21 + 1u;
             uint _e25 = b_3;
-            uint li_3 = bsh_nodes[_e25].light;
-            float _e29 = light_weight(li_3, x_8, n_6, r_8, lobe_8, rl_5, rt2_4, light_cones, _buffer_sizes);
+            uint li_4 = bsh_nodes[_e25].light;
+            float _e29 = light_weight(li_4, x_9, n_6, r_9, lobe_8, rl_6, rt2_4, light_cones, _buffer_sizes);
             if (_e29 > 0.0) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = _e33 + _e29;
@@ -878,7 +891,7 @@ WeightedPicks bsh_weighted_collect(
                         bool _e46 = weighted_replace(_e29, _e43, _e45);
                         if (_e46) {
                             uint _e48 = s_1;
-                            picks.light.inner[_e48] = li_3;
+                            picks.light.inner[_e48] = li_4;
                             uint _e51 = s_1;
                             picks.w.inner[_e51] = _e29;
                         }
@@ -908,9 +921,9 @@ metal::float4 unproject_pixel(
     if (depth == background) {
         return metal::float4(0.0, 0.0, 0.0, 0.0);
     }
-    float x_10 = (((px + 0.5) / width) * 2.0) - 1.0;
+    float x_11 = (((px + 0.5) / width) * 2.0) - 1.0;
     float y_1 = 1.0 - (((py + 0.5) / height) * 2.0);
-    metal::float4 p_7 = (((c0_ * x_10) + (c1_ * y_1)) + (c2_ * depth)) + c3_;
+    metal::float4 p_7 = (((c0_ * x_11) + (c1_ * y_1)) + (c2_ * depth)) + c3_;
     if (metal::abs(p_7.w) > 0.0) {
         return metal::float4(p_7.x / p_7.w, p_7.y / p_7.w, p_7.z / p_7.w, 1.0);
     }
@@ -936,11 +949,11 @@ metal::float4 surface_at(
 }
 
 Shaded shade_pick(
-    uint li_2,
-    metal::float3 x_9,
+    uint li_3,
+    metal::float3 x_10,
     metal::float3 n_7,
-    metal::float3 r_9,
-    metal::float4 rl_6,
+    metal::float3 r_10,
+    metal::float4 rl_7,
     Material m_1,
     float w_4,
     float u1_2,
@@ -951,7 +964,7 @@ Shaded shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Shaded s_2 = {};
-    Connection _e12 = connect(li_2, x_9, n_7, n_7, 1.0, w_4, u1_2, u2_2, 0.0, lights, rt2_4, r2_3, _buffer_sizes);
+    Connection _e12 = connect(li_3, x_10, n_7, n_7, 1.0, w_4, u1_2, u2_2, 0.0, lights, rt2_4, r2_3, _buffer_sizes);
     s_2.e = _e12.e;
     s_2.diffuse = metal::float3(0.0);
     s_2.specular = metal::float3(0.0);
@@ -1015,7 +1028,7 @@ kernel void main_(
         out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_11 = _e21.xyz;
+    metal::float3 x_12 = _e21.xyz;
     metal::float3 n_8 = nn / metal::float3(metal::sqrt(len2_));
     r = n_8;
     metal::float4 _e53 = lobe;
@@ -1028,7 +1041,7 @@ kernel void main_(
     h = _e69;
     metal::float3 _e79 = r;
     metal::float4 _e80 = lobe;
-    WeightedPicks _e81 = bsh_weighted_collect(x_11, n_8, _e79, _e80, _e54, _e68, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
+    WeightedPicks _e81 = bsh_weighted_collect(x_12, n_8, _e79, _e80, _e54, _e68, rt2_4, bsh_nodes, light_cones, _buffer_sizes);
     if (_e81.w_sum > 0.0) {
         uint2 loop_bound_3 = uint2(4294967295u);
         bool loop_init_2 = true;
@@ -1062,7 +1075,7 @@ kernel void main_(
                 float _e107 = weighted_pick_weight(_e81.w_sum, _e81.w.inner[_e104], K);
                 uint _e108 = h;
                 float _e109 = xi_from_bits(_e108);
-                Shaded _e110 = shade_pick(_e81.light.inner[_e98], x_11, n_8, _e100, _e54, _e101, _e107, _e93, _e109, lights, rt2_4, r2_3, _buffer_sizes);
+                Shaded _e110 = shade_pick(_e81.light.inner[_e98], x_12, n_8, _e100, _e54, _e101, _e107, _e93, _e109, lights, rt2_4, r2_3, _buffer_sizes);
                 Shaded _e111 = add(_e96, _e110);
                 t = _e111;
             }

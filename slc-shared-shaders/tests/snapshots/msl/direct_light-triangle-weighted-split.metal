@@ -1005,10 +1005,10 @@ float light_weight(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_8 = light_cones[li_2];
-    float _e17 = range_scale_toward(rl_5, c_8.center, c_8.radius, x_8, r_8);
-    float _e20 = rt2_4[li_2];
-    float _e22 = cone_weight(c_8.center, c_8.radius, c_8.phi, c_8.axis, c_8.cos_o, c_8.cos_e, _e17 * _e20, x_8, n_8, r_8, lobe_7);
-    return _e22;
+    float _e15 = light_range_scale(li_2, x_8, r_8, rl_5, light_cones, _buffer_sizes);
+    float _e18 = rt2_4[li_2];
+    float _e20 = cone_weight(c_8.center, c_8.radius, c_8.phi, c_8.axis, c_8.cos_o, c_8.cos_e, _e15 * _e18, x_8, n_8, r_8, lobe_7);
+    return _e20;
 }
 
 WeightedPicks bsh_weighted_collect(

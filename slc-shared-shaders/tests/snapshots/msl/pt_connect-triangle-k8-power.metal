@@ -1421,18 +1421,19 @@ float select_pdf(
     metal::float3 n_14,
     metal::float3 r_6,
     metal::float4 lobe_5,
+    metal::float4 rl_6,
     uint nee,
     bool in_range_1
 ) {
-    float _e8 = reservoir_select_pdf(nee, in_range_1, K);
-    return _e8;
+    float _e9 = reservoir_select_pdf(nee, in_range_1, K);
+    return _e9;
 }
 
 float light_pdf_selected(
     uint li_3,
     metal::float3 x_11,
     metal::float3 r_7,
-    metal::float4 lobe_6,
+    metal::float4 rl_7,
     metal::float3 y_1,
     float sel,
     device type_11 const& lights,
@@ -1445,12 +1446,11 @@ float light_pdf_selected(
     float d2_10 = metal::dot(v_12, v_12);
     metal::float3 _e11 = light_normal(l_9);
     float cos_y_1 = (d2_10 > 0.0) ? metal::dot(_e11, v_12 / metal::float3(metal::sqrt(d2_10))) : 0.0;
-    metal::float4 _e20 = range_lobe(lobe_6);
-    float _e21 = light_range_scale(li_3, x_11, r_7, _e20, light_cones, _buffer_sizes);
-    float _e24 = rt2_4[li_3];
-    float _e26 = light_area(l_9);
-    float _e27 = light_strategy_pdf(sel, _e21 * _e24, d2_10, _e26, cos_y_1);
-    return _e27;
+    float _e20 = light_range_scale(li_3, x_11, r_7, rl_7, light_cones, _buffer_sizes);
+    float _e23 = rt2_4[li_3];
+    float _e25 = light_area(l_9);
+    float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_10, _e25, cos_y_1);
+    return _e26;
 }
 
 float light_pdf(
@@ -1458,7 +1458,8 @@ float light_pdf(
     metal::float3 x_12,
     metal::float3 n_15,
     metal::float3 r_8,
-    metal::float4 lobe_7,
+    metal::float4 lobe_6,
+    metal::float4 rl_8,
     metal::float3 y_2,
     uint nee_1,
     bool in_range_2,
@@ -1467,9 +1468,9 @@ float light_pdf(
     device type_12 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e8 = select_pdf(li_4, x_12, n_15, r_8, lobe_7, nee_1, in_range_2);
-    float _e9 = light_pdf_selected(li_4, x_12, r_8, lobe_7, y_2, _e8, lights, rt2_4, light_cones, _buffer_sizes);
-    return _e9;
+    float _e9 = select_pdf(li_4, x_12, n_15, r_8, lobe_6, rl_8, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_4, x_12, r_8, rl_8, y_2, _e9, lights, rt2_4, light_cones, _buffer_sizes);
+    return _e10;
 }
 
 metal::float3 shade_pick(
@@ -1480,8 +1481,8 @@ metal::float3 shade_pick(
     GpuMaterial m,
     metal::float3 wo_1,
     metal::float3 r_9,
-    metal::float4 lobe_8,
-    metal::float4 rl_6,
+    metal::float4 lobe_7,
+    metal::float4 rl_9,
     float w_4,
     uint nee_2,
     float u1_3,
@@ -1496,7 +1497,7 @@ metal::float3 shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_5, x_13, r_9, rl_6, light_cones, _buffer_sizes);
+    float _e13 = light_range_scale(li_5, x_13, r_9, rl_9, light_cones, _buffer_sizes);
     float _e16 = params.eps;
     Connection _e17 = connect(li_5, x_13, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16, geo_nodes, geo_tris, lights, r2_3, rt2_4, _buffer_sizes);
     if (_e17.cos_x <= 0.0) {
@@ -1506,8 +1507,8 @@ metal::float3 shade_pick(
     GpuLight _e30 = lights[li_5];
     float _e31 = light_area(_e30);
     if (_e31 > 0.0) {
-        float _e36 = light_pdf(li_5, x_13, n_16, r_9, lobe_8, _e17.y, nee_2, true, lights, rt2_4, light_cones, _buffer_sizes);
-        float _e38 = specular_probability(lobe_8);
+        float _e36 = light_pdf(li_5, x_13, n_16, r_9, lobe_7, rl_9, _e17.y, nee_2, true, lights, rt2_4, light_cones, _buffer_sizes);
+        float _e38 = specular_probability(lobe_7);
         float _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);
         mis = _e40;

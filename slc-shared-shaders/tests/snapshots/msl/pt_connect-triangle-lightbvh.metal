@@ -1415,7 +1415,7 @@ float light_pdf_selected(
     uint li_2,
     metal::float3 x_9,
     metal::float3 r_7,
-    metal::float4 lobe_10,
+    metal::float4 rl_3,
     metal::float3 y_1,
     float sel,
     device type_9 const& lights,
@@ -1428,12 +1428,11 @@ float light_pdf_selected(
     float d2_10 = metal::dot(v_12, v_12);
     metal::float3 _e11 = light_normal(l_9);
     float cos_y_1 = (d2_10 > 0.0) ? metal::dot(_e11, v_12 / metal::float3(metal::sqrt(d2_10))) : 0.0;
-    metal::float4 _e20 = range_lobe(lobe_10);
-    float _e21 = light_range_scale(li_2, x_9, r_7, _e20, light_cones, _buffer_sizes);
-    float _e24 = rt2_4[li_2];
-    float _e26 = light_area(l_9);
-    float _e27 = light_strategy_pdf(sel, _e21 * _e24, d2_10, _e26, cos_y_1);
-    return _e27;
+    float _e20 = light_range_scale(li_2, x_9, r_7, rl_3, light_cones, _buffer_sizes);
+    float _e23 = rt2_4[li_2];
+    float _e25 = light_area(l_9);
+    float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_10, _e25, cos_y_1);
+    return _e26;
 }
 
 metal::float3 shade_pick(
@@ -1444,8 +1443,8 @@ metal::float3 shade_pick(
     GpuMaterial m,
     metal::float3 wo_1,
     metal::float3 r_8,
-    metal::float4 lobe_11,
-    metal::float4 rl_3,
+    metal::float4 lobe_10,
+    metal::float4 rl_4,
     float w_4,
     uint nee,
     float u1_3,
@@ -1460,7 +1459,7 @@ metal::float3 shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_3, x_10, r_8, rl_3, light_cones, _buffer_sizes);
+    float _e13 = light_range_scale(li_3, x_10, r_8, rl_4, light_cones, _buffer_sizes);
     float _e16 = params.eps;
     Connection _e17 = connect(li_3, x_10, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16, geo_nodes, geo_tris, lights, r2_3, rt2_4, _buffer_sizes);
     if (_e17.cos_x <= 0.0) {
@@ -1470,8 +1469,8 @@ metal::float3 shade_pick(
     GpuLight _e30 = lights[li_3];
     float _e31 = light_area(_e30);
     if (_e31 > 0.0) {
-        float _e37 = light_pdf_selected(li_3, x_10, r_8, lobe_11, _e17.y, 1.0 / w_4, lights, rt2_4, light_cones, _buffer_sizes);
-        float _e39 = specular_probability(lobe_11);
+        float _e37 = light_pdf_selected(li_3, x_10, r_8, rl_4, _e17.y, 1.0 / w_4, lights, rt2_4, light_cones, _buffer_sizes);
+        float _e39 = specular_probability(lobe_10);
         float _e40 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e39);
         float _e41 = mis_weight(_e37, _e40);
         mis = _e41;

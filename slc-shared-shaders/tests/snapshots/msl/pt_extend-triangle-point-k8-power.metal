@@ -1186,18 +1186,19 @@ float select_pdf(
     metal::float3 n_13,
     metal::float3 r_3,
     metal::float4 lobe_5,
+    metal::float4 rl_3,
     uint nee,
     bool in_range_1
 ) {
-    float _e8 = reservoir_select_pdf(nee, in_range_1, K);
-    return _e8;
+    float _e9 = reservoir_select_pdf(nee, in_range_1, K);
+    return _e9;
 }
 
 float light_pdf_selected(
     uint li_2,
     metal::float3 x_6,
     metal::float3 r_4,
-    metal::float4 lobe_6,
+    metal::float4 rl_4,
     metal::float3 y,
     float sel,
     device type_9 const& light_cones,
@@ -1210,12 +1211,11 @@ float light_pdf_selected(
     float d2_3 = metal::dot(v_11, v_11);
     metal::float3 _e11 = light_normal(l_6);
     float cos_y_1 = (d2_3 > 0.0) ? metal::dot(_e11, v_11 / metal::float3(metal::sqrt(d2_3))) : 0.0;
-    metal::float4 _e20 = range_lobe(lobe_6);
-    float _e21 = light_range_scale(li_2, x_6, r_4, _e20, light_cones, _buffer_sizes);
-    float _e24 = rt2_2[li_2];
-    float _e26 = light_area(l_6);
-    float _e27 = light_strategy_pdf(sel, _e21 * _e24, d2_3, _e26, cos_y_1);
-    return _e27;
+    float _e20 = light_range_scale(li_2, x_6, r_4, rl_4, light_cones, _buffer_sizes);
+    float _e23 = rt2_2[li_2];
+    float _e25 = light_area(l_6);
+    float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_3, _e25, cos_y_1);
+    return _e26;
 }
 
 float light_pdf(
@@ -1223,7 +1223,8 @@ float light_pdf(
     metal::float3 x_7,
     metal::float3 n_14,
     metal::float3 r_5,
-    metal::float4 lobe_7,
+    metal::float4 lobe_6,
+    metal::float4 rl_5,
     metal::float3 y_1,
     uint nee_1,
     bool in_range_2,
@@ -1232,16 +1233,16 @@ float light_pdf(
     device type_10 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e8 = select_pdf(li_3, x_7, n_14, r_5, lobe_7, nee_1, in_range_2);
-    float _e9 = light_pdf_selected(li_3, x_7, r_5, lobe_7, y_1, _e8, light_cones, rt2_2, lights, _buffer_sizes);
-    return _e9;
+    float _e9 = select_pdf(li_3, x_7, n_14, r_5, lobe_6, rl_5, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_3, x_7, r_5, rl_5, y_1, _e9, light_cones, rt2_2, lights, _buffer_sizes);
+    return _e10;
 }
 
 bool bsh_reaches(
     BshNode node_3,
     metal::float3 x_8,
     metal::float3 r_6,
-    metal::float4 rl_3
+    metal::float4 rl_6
 ) {
     bool local_20 = {};
     bool local_21 = {};
@@ -1249,8 +1250,8 @@ bool bsh_reaches(
     if (_e6) {
         return true;
     }
-    if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_8);
+    if (!((rl_6.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_6.w * 1.0001), x_8);
         local_20 = !(_e20);
     } else {
         local_20 = true;
@@ -1260,12 +1261,12 @@ bool bsh_reaches(
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        float _e30 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_8, r_6);
+        float _e30 = range_scale_toward(rl_6, node_3.center, node_3.extent, x_8, r_6);
         float _e33 = bsh_scaled_radius(node_3, metal::sqrt(_e30));
         bool _e34 = sphere_contains_point(node_3.center, _e33, x_8);
         return _e34;
     }
-    float _e37 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_8, r_6);
+    float _e37 = range_scale_toward(rl_6, node_3.center, node_3.extent, x_8, r_6);
     float s_c = _e37 * 1.001;
     float _e42 = bsh_range_bound(node_3);
     float reach = node_3.extent + (metal::sqrt(s_c) * _e42);
@@ -1410,18 +1411,18 @@ kernel void main_(
         if (_e161 > 0.0) {
             uint _e168 = light_leaf[tri.light];
             BshNode leaf = bsh_nodes[_e168];
-            metal::float3 _e172 = st.prev;
-            metal::float3 _e174 = st.prev_r;
-            metal::float4 _e176 = st.prev_lobe;
-            metal::float4 _e177 = range_lobe(_e176);
-            bool _e178 = bsh_reaches(leaf, _e172, _e174, _e177);
+            metal::float4 _e172 = st.prev_lobe;
+            metal::float4 _e173 = range_lobe(_e172);
+            metal::float3 _e175 = st.prev;
+            metal::float3 _e177 = st.prev_r;
+            bool _e178 = bsh_reaches(leaf, _e175, _e177, _e173);
             float _e180 = st.pdf_bsdf;
             metal::float3 _e183 = st.prev;
             metal::float3 _e185 = st.prev_normal;
             metal::float3 _e187 = st.prev_r;
             metal::float4 _e189 = st.prev_lobe;
             uint _e192 = candidates[i_1];
-            float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, x_9, _e192, _e178, light_cones, rt2_2, lights, _buffer_sizes);
+            float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, _e173, x_9, _e192, _e178, light_cones, rt2_2, lights, _buffer_sizes);
             float _e194 = mis_weight(_e180, _e193);
             w = _e194;
         }
