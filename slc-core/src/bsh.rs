@@ -142,8 +142,10 @@ pub mod walk {
         /// ([`bsh_range_bound`]): a light `j` below reaches `x` only within
         /// `|C − c_j| + R_j + √s_j·r_j` of `C`, at most both bounds (the
         /// first by [`bsh_scaled_radius`]'s argument). Nodes out of reach even at
-        /// the receiver's largest scale `rl.w²` are rejected first; for
-        /// `rl.w ≤ 1` (no specular lobe) this is the plain sphere test.
+        /// the receiver's largest scale `rl.w²` are rejected first (also
+        /// beyond `A + rl.w·B`, before the scale's four square roots;
+        /// a leaf's `A` and `B` are `R` and `r`); for `rl.w ≤ 1` (no specular lobe) this is the
+        /// plain sphere test.
         pub fn bsh_reaches(node: BshNode, x: vec3f, r: vec3f, rl: vec4f) -> bool {
             if sphere_contains_point(node.center, node.radius, x) {
                 return true;
@@ -151,14 +153,19 @@ pub mod walk {
             if rl.w <= 1.0 || !sphere_contains_point(node.center, node.radius * (rl.w * 1.0001), x) {
                 return false;
             }
+            let b: f32 = bsh_range_bound(node);
+            let v: vec3f = x - node.center;
+            let d2: f32 = dot(v, v);
+            let reach_max: f32 = node.extent + rl.w * 1.001 * b;
+            if d2 > reach_max * reach_max {
+                return false;
+            }
             if node.child == BSH_NONE {
                 let s: f32 = range_scale_toward(rl, node.center, node.extent, x, r);
                 return sphere_contains_point(node.center, bsh_scaled_radius(node, sqrt(s)), x);
             }
             let s_c: f32 = range_scale_toward(rl, node.center, node.extent, x, r) * 1.001;
-            let reach: f32 = node.extent + sqrt(s_c) * bsh_range_bound(node);
-            let v: vec3f = x - node.center;
-            let d2: f32 = dot(v, v);
+            let reach: f32 = node.extent + sqrt(s_c) * b;
             return d2 <= node.radius * node.radius * s_c && d2 <= reach * reach;
         }
 

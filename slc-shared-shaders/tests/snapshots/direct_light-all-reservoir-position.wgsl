@@ -659,25 +659,29 @@ fn bsh_reaches(node_2: BshNode, x_9: vec3<f32>, r_3: vec3<f32>, rl_2: vec4<f32>)
     if _e23 {
         return false;
     }
-    if (node_2.child == BSH_NONE) {
-        let _e30 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_9, r_3);
-        let _e33 = bsh_scaled_radius(node_2, sqrt(_e30));
-        let _e34 = sphere_contains_point(node_2.center, _e33, x_9);
-        return _e34;
-    }
-    let _e37 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_9, r_3);
-    let s_c = (_e37 * 1.001f);
-    let _e42 = bsh_range_bound(node_2);
-    let reach = (node_2.extent + (sqrt(s_c) * _e42));
+    let _e25 = bsh_range_bound(node_2);
     let v_3 = (x_9 - node_2.center);
     let d2_5 = dot(v_3, v_3);
+    let reach_max = (node_2.extent + ((rl_2.w * 1.001f) * _e25));
+    if (d2_5 > (reach_max * reach_max)) {
+        return false;
+    }
+    if (node_2.child == BSH_NONE) {
+        let _e43 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_9, r_3);
+        let _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
+        let _e47 = sphere_contains_point(node_2.center, _e46, x_9);
+        return _e47;
+    }
+    let _e50 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_9, r_3);
+    let s_c = (_e50 * 1.001f);
+    let reach = (node_2.extent + (sqrt(s_c) * _e25));
     if (d2_5 <= ((node_2.radius * node_2.radius) * s_c)) {
         local_7 = (d2_5 <= (reach * reach));
     } else {
         local_7 = false;
     }
-    let _e58 = local_7;
-    return _e58;
+    let _e67 = local_7;
+    return _e67;
 }
 
 fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_10: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>) -> u32 {

@@ -644,25 +644,29 @@ fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_5: vec3<f32>, rl_2: vec4<f32>)
     if _e23 {
         return false;
     }
-    if (node_2.child == BSH_NONE) {
-        let _e30 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
-        let _e33 = bsh_scaled_radius(node_2, sqrt(_e30));
-        let _e34 = sphere_contains_point(node_2.center, _e33, x_4);
-        return _e34;
-    }
-    let _e37 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
-    let s_c = (_e37 * 1.001f);
-    let _e42 = bsh_range_bound(node_2);
-    let reach = (node_2.extent + (sqrt(s_c) * _e42));
+    let _e25 = bsh_range_bound(node_2);
     let v_9 = (x_4 - node_2.center);
     let d2_7 = dot(v_9, v_9);
+    let reach_max = (node_2.extent + ((rl_2.w * 1.001f) * _e25));
+    if (d2_7 > (reach_max * reach_max)) {
+        return false;
+    }
+    if (node_2.child == BSH_NONE) {
+        let _e43 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+        let _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
+        let _e47 = sphere_contains_point(node_2.center, _e46, x_4);
+        return _e47;
+    }
+    let _e50 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+    let s_c = (_e50 * 1.001f);
+    let reach = (node_2.extent + (sqrt(s_c) * _e25));
     if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
         local_12 = (d2_7 <= (reach * reach));
     } else {
         local_12 = false;
     }
-    let _e58 = local_12;
-    return _e58;
+    let _e67 = local_12;
+    return _e67;
 }
 
 fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> u32 {

@@ -847,25 +847,29 @@ bool bsh_reaches(BshNode node_3, float3 x_10, float3 r_2, float4 rl_2)
     if (_e23) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        const float _e30 = range_scale_toward(rl_2, node_3.center_, node_3.extent, x_10, r_2);
-        const float _e33 = bsh_scaled_radius(node_3, sqrt(_e30));
-        const bool _e34 = sphere_contains_point(node_3.center_, _e33, x_10);
-        return _e34;
-    }
-    const float _e37 = range_scale_toward(rl_2, node_3.center_, node_3.extent, x_10, r_2);
-    float s_c = (_e37 * 1.001);
-    const float _e42 = bsh_range_bound(node_3);
-    float reach = (node_3.extent + (sqrt(s_c) * _e42));
+    const float _e25 = bsh_range_bound(node_3);
     float3 v_4 = (x_10 - node_3.center_);
     float d2_5 = dot(v_4, v_4);
+    float reach_max = (node_3.extent + ((rl_2.w * 1.001) * _e25));
+    if ((d2_5 > (reach_max * reach_max))) {
+        return false;
+    }
+    if ((node_3.child == BSH_NONE)) {
+        const float _e43 = range_scale_toward(rl_2, node_3.center_, node_3.extent, x_10, r_2);
+        const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
+        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_10);
+        return _e47;
+    }
+    const float _e50 = range_scale_toward(rl_2, node_3.center_, node_3.extent, x_10, r_2);
+    float s_c = (_e50 * 1.001);
+    float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_5 <= ((node_3.radius * node_3.radius) * s_c))) {
         local_7 = (d2_5 <= (reach * reach));
     } else {
         local_7 = false;
     }
-    bool _e58 = local_7;
-    return _e58;
+    bool _e67 = local_7;
+    return _e67;
 }
 
 uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_11, float3 r_3, float4 rl_3)

@@ -563,25 +563,29 @@ bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_5, float4 rl_2)
     if (_e23) {
         return false;
     }
-    if ((node_2.child == BSH_NONE)) {
-        const float _e30 = range_scale_toward(rl_2, node_2.center_, node_2.extent, x_4, r_5);
-        const float _e33 = bsh_scaled_radius(node_2, sqrt(_e30));
-        const bool _e34 = sphere_contains_point(node_2.center_, _e33, x_4);
-        return _e34;
-    }
-    const float _e37 = range_scale_toward(rl_2, node_2.center_, node_2.extent, x_4, r_5);
-    float s_c = (_e37 * 1.001);
-    const float _e42 = bsh_range_bound(node_2);
-    float reach = (node_2.extent + (sqrt(s_c) * _e42));
+    const float _e25 = bsh_range_bound(node_2);
     float3 v_6 = (x_4 - node_2.center_);
     float d2_7 = dot(v_6, v_6);
+    float reach_max = (node_2.extent + ((rl_2.w * 1.001) * _e25));
+    if ((d2_7 > (reach_max * reach_max))) {
+        return false;
+    }
+    if ((node_2.child == BSH_NONE)) {
+        const float _e43 = range_scale_toward(rl_2, node_2.center_, node_2.extent, x_4, r_5);
+        const float _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
+        const bool _e47 = sphere_contains_point(node_2.center_, _e46, x_4);
+        return _e47;
+    }
+    const float _e50 = range_scale_toward(rl_2, node_2.center_, node_2.extent, x_4, r_5);
+    float s_c = (_e50 * 1.001);
+    float reach = (node_2.extent + (sqrt(s_c) * _e25));
     if ((d2_7 <= ((node_2.radius * node_2.radius) * s_c))) {
         local_6 = (d2_7 <= (reach * reach));
     } else {
         local_6 = false;
     }
-    bool _e58 = local_6;
-    return _e58;
+    bool _e67 = local_6;
+    return _e67;
 }
 
 uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_6, float4 rl_3)

@@ -1055,25 +1055,29 @@ bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_2, float4 rl_2)
     if (_e23) {
         return false;
     }
-    if ((node_3.child == BSH_NONE)) {
-        const float _e30 = range_scale_toward(rl_2, node_3.center_, node_3.extent, x_5, r_2);
-        const float _e33 = bsh_scaled_radius(node_3, sqrt(_e30));
-        const bool _e34 = sphere_contains_point(node_3.center_, _e33, x_5);
-        return _e34;
-    }
-    const float _e37 = range_scale_toward(rl_2, node_3.center_, node_3.extent, x_5, r_2);
-    float s_c = (_e37 * 1.001);
-    const float _e42 = bsh_range_bound(node_3);
-    float reach = (node_3.extent + (sqrt(s_c) * _e42));
+    const float _e25 = bsh_range_bound(node_3);
     float3 v_10 = (x_5 - node_3.center_);
     float d2_8 = dot(v_10, v_10);
+    float reach_max = (node_3.extent + ((rl_2.w * 1.001) * _e25));
+    if ((d2_8 > (reach_max * reach_max))) {
+        return false;
+    }
+    if ((node_3.child == BSH_NONE)) {
+        const float _e43 = range_scale_toward(rl_2, node_3.center_, node_3.extent, x_5, r_2);
+        const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
+        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_5);
+        return _e47;
+    }
+    const float _e50 = range_scale_toward(rl_2, node_3.center_, node_3.extent, x_5, r_2);
+    float s_c = (_e50 * 1.001);
+    float reach = (node_3.extent + (sqrt(s_c) * _e25));
     if ((d2_8 <= ((node_3.radius * node_3.radius) * s_c))) {
         local_18 = (d2_8 <= (reach * reach));
     } else {
         local_18 = false;
     }
-    bool _e58 = local_18;
-    return _e58;
+    bool _e67 = local_18;
+    return _e67;
 }
 
 uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_6, float3 r_3, float4 rl_3)

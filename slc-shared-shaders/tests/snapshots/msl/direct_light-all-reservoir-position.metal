@@ -856,25 +856,29 @@ bool bsh_reaches(
     if (_e23) {
         return false;
     }
-    if (node_2.child == BSH_NONE) {
-        float _e30 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_9, r_3);
-        float _e33 = bsh_scaled_radius(node_2, metal::sqrt(_e30));
-        bool _e34 = sphere_contains_point(node_2.center, _e33, x_9);
-        return _e34;
-    }
-    float _e37 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_9, r_3);
-    float s_c = _e37 * 1.001;
-    float _e42 = bsh_range_bound(node_2);
-    float reach = node_2.extent + (metal::sqrt(s_c) * _e42);
+    float _e25 = bsh_range_bound(node_2);
     metal::float3 v_3 = x_9 - node_2.center;
     float d2_5 = metal::dot(v_3, v_3);
+    float reach_max = node_2.extent + ((rl_2.w * 1.001) * _e25);
+    if (d2_5 > (reach_max * reach_max)) {
+        return false;
+    }
+    if (node_2.child == BSH_NONE) {
+        float _e43 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_9, r_3);
+        float _e46 = bsh_scaled_radius(node_2, metal::sqrt(_e43));
+        bool _e47 = sphere_contains_point(node_2.center, _e46, x_9);
+        return _e47;
+    }
+    float _e50 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_9, r_3);
+    float s_c = _e50 * 1.001;
+    float reach = node_2.extent + (metal::sqrt(s_c) * _e25);
     if (d2_5 <= ((node_2.radius * node_2.radius) * s_c)) {
         local_7 = d2_5 <= (reach * reach);
     } else {
         local_7 = false;
     }
-    bool _e58 = local_7;
-    return _e58;
+    bool _e67 = local_7;
+    return _e67;
 }
 
 uint bsh_next_leaf_lobe(

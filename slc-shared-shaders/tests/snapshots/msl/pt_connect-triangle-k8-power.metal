@@ -1222,25 +1222,29 @@ bool bsh_reaches(
     if (_e23) {
         return false;
     }
-    if (node_3.child == BSH_NONE) {
-        float _e30 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_5, r_2);
-        float _e33 = bsh_scaled_radius(node_3, metal::sqrt(_e30));
-        bool _e34 = sphere_contains_point(node_3.center, _e33, x_5);
-        return _e34;
-    }
-    float _e37 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_5, r_2);
-    float s_c = _e37 * 1.001;
-    float _e42 = bsh_range_bound(node_3);
-    float reach = node_3.extent + (metal::sqrt(s_c) * _e42);
+    float _e25 = bsh_range_bound(node_3);
     metal::float3 v_10 = x_5 - node_3.center;
     float d2_8 = metal::dot(v_10, v_10);
+    float reach_max = node_3.extent + ((rl_2.w * 1.001) * _e25);
+    if (d2_8 > (reach_max * reach_max)) {
+        return false;
+    }
+    if (node_3.child == BSH_NONE) {
+        float _e43 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_5, r_2);
+        float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
+        bool _e47 = sphere_contains_point(node_3.center, _e46, x_5);
+        return _e47;
+    }
+    float _e50 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_5, r_2);
+    float s_c = _e50 * 1.001;
+    float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
     if (d2_8 <= ((node_3.radius * node_3.radius) * s_c)) {
         local_18 = d2_8 <= (reach * reach);
     } else {
         local_18 = false;
     }
-    bool _e58 = local_18;
-    return _e58;
+    bool _e67 = local_18;
+    return _e67;
 }
 
 uint bsh_next_leaf_lobe(
