@@ -290,6 +290,17 @@ def compare(name, ours, ref):
     return res
 
 
+def pixel(rc, name, ours, ref):
+    """One pixel's grey value per seed in both renderers, with the mean and
+    its standard error (a highlight smaller than a pixel is found by the
+    pixel's samples at random)."""
+    r, c = (int(x) for x in rc.split(","))
+    for who, imgs in (("Mitsuba", ref), ("slc " + name, ours)):
+        v = np.array([x[r, c].mean() for x in imgs])
+        print("pixel (%d, %d) %-8s per seed %s: mean %.3f ± %.3f" % (
+            r, c, who, np.array2string(v, precision=2), v.mean(), v.std(ddof=1) / math.sqrt(len(v))))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--spp", type=int, default=1024, help="samples per pixel per seed (both renderers)")
@@ -301,6 +312,8 @@ def main():
     ap.add_argument("--method", default="slc-weighted", help="slc's light selection")
     ap.add_argument("--error-bound", type=float, default=None, help="slc's ε [default: slc's own]")
     ap.add_argument("--out", default="target/mitsuba-compare")
+    ap.add_argument("--seed-offset", type=int, default=0, help="added to every seed of both renderers (fresh seeds)")
+    ap.add_argument("--pixel", default=None, help="ROW,COL: also print this pixel's per-seed values and their mean")
     a = ap.parse_args()
     out = os.path.abspath(a.out)
     os.makedirs(out, exist_ok=True)
@@ -311,12 +324,15 @@ def main():
     objects, lights, camera = scene(out)
     path = slc_scene_file(out, objects, lights, camera)
     mspp = a.mitsuba_spp or 4 * a.spp
-    ref = [mitsuba_render(mi, out, objects, lights, camera, a.size, mspp, 1000 + s) for s in range(a.seeds)]
+    ref = [mitsuba_render(mi, out, objects, lights, camera, a.size, mspp, 1000 + a.seed_offset + s) for s in range(a.seeds)]
     mi.Bitmap(np.mean(ref, axis=0).astype(np.float32)).write(os.path.join(out, "mitsuba.exr"))
     results = []
     for backend in a.backends.split(","):
-        ours = [slc_render(path, backend, a.size, a.spp, 1 + s, out, a.method, a.error_bound) for s in range(a.seeds)]
+        ours = [slc_render(path, backend, a.size, a.spp, 1 + a.seed_offset + s, out, a.method, a.error_bound)
+                for s in range(a.seeds)]
         results.append(compare(backend, ours, ref))
+        if a.pixel:
+            pixel(a.pixel, backend, ours, ref)
     with open(os.path.join(out, "compare.json"), "w") as f:
         json.dump(dict(size=a.size, spp=a.spp, mitsuba_spp=mspp, seeds=a.seeds, results=results), f, indent=1)
     ok = all(abs(r["mean_rel"]) <= 0.01 and abs(r["worst_block_rel"]) <= 0.03 for r in results)
