@@ -114,15 +114,31 @@ crate::shared! {
         return emission + albedo * INV_PI * e;
     }
 
+    /// Unit direction from `x` toward the primary light of the light map
+    /// with origin `origin` and unit axis `axis`: toward the spot's position
+    /// for a perspective map, against the axis (the direction the light
+    /// travels) for a directional light's orthographic map; at the spot's
+    /// own position, its axis reversed.
+    pub fn primary_light_dir(x: vec3f, origin: vec3f, axis: vec3f, perspective: bool) -> vec3f {
+        let v: vec3f = origin - x;
+        let d2: f32 = dot(v, v);
+        if perspective && d2 > 0.0 {
+            return v / sqrt(d2);
+        }
+        return -axis;
+    }
+
     /// Outgoing radiance of a receiver with a specular lobe in the VPL
     /// frame: base colour `base`, metallic `metallic`, emission
-    /// `emission`, the primary light's direct irradiance `direct` (shaded
-    /// Lambertian, as [`diffuse_radiance`] shades it), the VPLs'
-    /// irradiance `indirect` and their specular correction `specular`
-    /// (`Σ Φ ⊙ (f − c_diff/π)·T`, [`crate::brdf::specular_correction`]):
-    /// `L_e + b/π · E_direct + c_diff/π · E_indirect + S`.
-    pub fn glossy_radiance(base: vec3f, emission: vec3f, metallic: f32, direct: vec3f, indirect: vec3f, specular: vec3f) -> vec3f {
-        return diffuse_radiance(base, emission, direct) + diffuse_albedo(base, metallic) * INV_PI * indirect + specular;
+    /// `emission`, the primary light's direct irradiance `direct` (which
+    /// arrives from one direction `l`, so it is reflected by the whole BRDF
+    /// there, `f_direct = f(v, l)`: [`crate::brdf::brdf_eval`] toward
+    /// [`primary_light_dir`]), the VPLs' irradiance `indirect` and their
+    /// specular correction `specular` (`Σ Φ ⊙ (f − c_diff/π)·T`,
+    /// [`crate::brdf::specular_correction`]):
+    /// `L_e + f(v, l)·E_direct + c_diff/π·E_indirect + S`.
+    pub fn glossy_radiance(base: vec3f, emission: vec3f, metallic: f32, f_direct: vec3f, direct: vec3f, indirect: vec3f, specular: vec3f) -> vec3f {
+        return emission + f_direct * direct + diffuse_albedo(base, metallic) * INV_PI * indirect + specular;
     }
 }
 
@@ -130,6 +146,30 @@ crate::shared! {
 mod tests {
     use super::*;
     use glam::Vec3;
+
+    /// The direction to the primary light: unit, toward a spot's position,
+    /// against a directional light's travel, and finite at the spot itself.
+    #[test]
+    fn primary_light_direction() {
+        let (x, spot) = (Vec3::new(1.0, 0.0, 0.0), Vec3::new(1.0, 2.0, 0.0));
+        let axis = Vec3::new(0.0, -1.0, 0.0);
+        assert!((primary_light_dir(x, spot, axis, true) - Vec3::Y).length() < 1e-6);
+        assert!((primary_light_dir(x, Vec3::new(3.0, 0.0, 4.0), Vec3::ZERO, true) - Vec3::new(0.4, 0.0, 0.8).normalize()).length() < 1e-6);
+        assert_eq!(primary_light_dir(x, Vec3::ZERO, axis, false), Vec3::Y);
+        assert_eq!(primary_light_dir(spot, spot, axis, true), Vec3::Y);
+    }
+
+    /// A glossy receiver's composition: `L_e + f·E_direct + c_diff/π·E + S`;
+    /// a metal (no diffuse lobe) keeps only the direct term's BRDF and `S`.
+    #[test]
+    fn glossy_composition() {
+        let (base, e) = (Vec3::new(0.8, 0.6, 0.4), Vec3::splat(2.0));
+        let f = Vec3::new(0.5, 0.25, 0.125);
+        let metal = glossy_radiance(base, Vec3::ZERO, 1.0, f, e, Vec3::splat(3.0), Vec3::splat(0.01));
+        assert!((metal - (f * e + Vec3::splat(0.01))).length() < 1e-6);
+        let dielectric = glossy_radiance(base, Vec3::splat(0.1), 0.0, f, e, Vec3::splat(3.0), Vec3::ZERO);
+        assert!((dielectric - (Vec3::splat(0.1) + f * e + base * INV_PI * 3.0)).length() < 1e-6);
+    }
 
     #[test]
     fn texel_coordinates_round_trip() {

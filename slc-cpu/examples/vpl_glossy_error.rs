@@ -1,8 +1,8 @@
 //! The VPL application on the glossy Cornell box: per material the camera
 //! sees, the image mean and RMSE of a frame against the reference (every
 //! VPL at every pixel, shaded with the glTF BRDF), for the frame shaded
-//! with the BRDF and for the same frame composed as before (VPL light as
-//! `albedo/π · E`, the specular correction dropped).
+//! with the BRDF and for the same frame composed as before (VPL and
+//! direct light as `albedo/π · E`, the specular correction dropped).
 //!
 //! `cargo run --release -p slc-cpu --example vpl_glossy_error -- [SIZE] [RSM] [METHOD]`
 //! (defaults 128, 256, slc; METHOD: slc, clamp or none).

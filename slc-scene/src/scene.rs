@@ -200,6 +200,17 @@ impl PrimaryLight {
         }
     }
 
+    /// Unit direction from `x` toward this light (its light map's
+    /// [`slc_core::frame::primary_light_dir`]): toward a spot's position,
+    /// against a directional light's direction of travel.
+    pub fn direction_from(&self, x: Vec3) -> Vec3 {
+        use slc_core::frame::primary_light_dir;
+        match *self {
+            PrimaryLight::Spot { position, direction, .. } => primary_light_dir(x, position, direction, true),
+            PrimaryLight::Directional { direction, .. } => primary_light_dir(x, Vec3::ZERO, direction.normalize(), false),
+        }
+    }
+
     /// Checks the light: a valid spot ([`SpotLight::new`]) with an outer
     /// angle below 85°, or a finite, non-zero direction with finite,
     /// non-negative irradiance.

@@ -305,6 +305,34 @@ impl GBuffer {
     pub fn has_specular(&self) -> bool {
         (0..self.specular.len()).any(|i| self.specular_at(i).is_some())
     }
+
+    /// Pixel `i`'s outgoing radiance in the VPL frame, the composition both
+    /// backends' frames make: 0 off the surfaces; from the primary light's
+    /// direct irradiance `direct` (arriving along the unit direction
+    /// `to_light`, [`crate::scene::PrimaryLight::direction_from`]), the VPLs'
+    /// irradiance `indirect` and, where the frame has one, their specular
+    /// correction `specular`: `L_e + ρ/π·(E_direct + E_indirect)`
+    /// ([`slc_core::frame::diffuse_radiance`]) for a Lambertian pixel or
+    /// without a correction, else `L_e + f(v, l)·E_direct +
+    /// c_diff/π·E_indirect + S` ([`slc_core::frame::glossy_radiance`], `f`
+    /// the whole BRDF seen from the eye).
+    pub fn radiance(&self, i: usize, to_light: Vec3, direct: Vec3, indirect: Vec3, specular: Option<Vec3>) -> Vec3 {
+        use slc_core::brdf::{brdf_eval, ggx_alpha};
+        use slc_core::frame::{diffuse_radiance, glossy_radiance};
+        if !self.valid(i) {
+            return Vec3::ZERO;
+        }
+        let (base, emission) = (self.albedo[i], self.emission[i]);
+        match (self.specular_at(i), specular) {
+            (Some(s), Some(spec)) => {
+                let (x, n) = (self.position[i], self.normal[i]);
+                let v = (self.eye - x).normalize_or_zero();
+                let f = brdf_eval(base, s.metallic, s.f0, s.f90, ggx_alpha(s.roughness), n, v, to_light);
+                glossy_radiance(base, emission, s.metallic, f, direct, indirect, spec)
+            }
+            _ => diffuse_radiance(base, emission, direct + indirect),
+        }
+    }
 }
 
 /// VPLs in structure-of-arrays form, one per RSM texel (row-major), so

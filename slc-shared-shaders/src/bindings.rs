@@ -352,7 +352,7 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
             out(
                 6,
                 if f.glossy {
-                    "radiance `L_e + ρ/π·(E_direct + E_indirect)`; with a specular lobe `L_e + ρ/π·E_direct + c_diff/π·E_indirect + S`"
+                    "radiance `L_e + ρ/π·(E_direct + E_indirect)`; with a specular lobe `L_e + f(v, l)·E_direct + c_diff/π·E_indirect + S`"
                 } else {
                     "radiance `L_e + ρ/π·(E_direct + E_indirect)`"
                 },
@@ -360,6 +360,9 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
         ]
         .into_iter()
         .chain(f.glossy.then(|| texture(7, "specular_tex", "glossy variant: specular correction `S` of the VPLs", "`irradiance_export`")))
+        .chain(f.glossy.then(|| {
+            uniform(8, "params", "MapParams", false, "glossy variant: the primary light's map (origin, axis, mode: the direction to the light)")
+        }))
         .collect(),
         Kernel::Temporal => {
             let history = |binding, name, content| texture(binding, name, content, "`temporal` (the previous frame)");

@@ -10,8 +10,9 @@
 //! scene with glossy materials (a specular lobe: metals, dielectrics with
 //! Fresnel reflectance) builds the pass glossy ([`IndirectPassDesc::glossy`],
 //! the frame's material table and the G-buffer's material index): its
-//! glossy pixels take `L_e + ρ/π·E_direct + c_diff/π·E_indirect + S`, `S`
-//! the VPLs' specular correction, as the CPU frame composes them. Pixels
+//! glossy pixels take `L_e + f(v, l)·E_direct + c_diff/π·E_indirect + S`,
+//! the primary light reflected by the whole BRDF toward it and `S` the
+//! VPLs' specular correction, as the CPU frame composes them. Pixels
 //! come back only when asked for ([`GpuVplFrame::render`]; an engine or a
 //! viewer records [`GpuVplFrame::record`] and samples
 //! [`GpuVplFrame::output`]).
@@ -49,7 +50,7 @@ use crate::passes::{
 };
 use crate::{GpuContext, GpuError};
 use glam::{Mat4, Vec3, Vec4};
-use slc_core::frame::{diffuse_radiance, glossy_radiance};
+
 use slc_scene::backend::Timing;
 use slc_scene::image::Image;
 use slc_scene::scene::{Camera, LightMap, Material, PrimaryLight, Scene};
@@ -341,6 +342,9 @@ pub struct GpuVplFrame {
     /// The primary light moved since the last recorded frame (a reported
     /// change for the temporal stage).
     lighting_changed: std::cell::Cell<bool>,
+    /// The primary light the uniforms hold (the host-side composition's
+    /// direction to it).
+    primary: std::cell::Cell<PrimaryLight>,
     /// GPU timestamps around the stages, sized for every [`Stage`] (and
     /// the glossy frame's second denoise, [`TIMED_PASSES`]); `None`
     /// where the frame times by the host's clock.
@@ -531,9 +535,17 @@ impl GpuVplFrame {
         );
         let compose_layout = KernelLayout::new(gpu, Kernel::FrameCompose, &compose_features)?;
         let compose_pipeline = compose_layout.pipeline(gpu, &compose_features, None)?;
-        let compose_group =
-            ComposeInputs { gpu, layout: &compose_layout, image: &image_params, gb: &gb, direct: &direct, materials: &materials, output: &output }
-                .group(&irradiance, specular.as_ref());
+        let compose_group = ComposeInputs {
+            gpu,
+            layout: &compose_layout,
+            image: &image_params,
+            gb: &gb,
+            direct: &direct,
+            primary: &shadow_params,
+            materials: &materials,
+            output: &output,
+        }
+        .group(&irradiance, specular.as_ref());
         let s = GpuVplFrame {
             gpu: gpu.clone(),
             desc: *desc,
@@ -572,6 +584,7 @@ impl GpuVplFrame {
             camera: *cam,
             temporal: None,
             lighting_changed: std::cell::Cell::new(false),
+            primary: std::cell::Cell::new(scene.primary),
             // A software adapter's timestamps do not bracket the work its
             // worker threads do (lavapipe reports microseconds for
             // 10⁸-evaluation dispatches): time it by the clock instead.
@@ -610,6 +623,7 @@ impl GpuVplFrame {
         self.gpu.queue.write_buffer(&self.light_params, 0, bytemuck::bytes_of(&light));
         self.gpu.queue.write_buffer(&self.shadow_params, 0, bytemuck::bytes_of(&shadow));
         self.lighting_changed.set(true);
+        self.primary.set(*primary);
         Ok(())
     }
 
@@ -686,6 +700,7 @@ impl GpuVplFrame {
             image: &self.image_params,
             gb: &self.gb,
             direct: &self.direct,
+            primary: &self.shadow_params,
             materials: &self.material_table,
             output: &self.output,
         }
@@ -939,9 +954,9 @@ impl GpuVplFrame {
     /// reference's [`Shaded`](slc_scene::vpl::Shaded), shaded from
     /// [`Self::read_inputs`]) instead of its own: `L_e + ρ/π·(E_direct +
     /// E)` on the host with the last frame's G-buffer and direct light, and
-    /// at pixels with a specular lobe `L_e + ρ/π·E_direct + c_diff/π·E +
-    /// S` (as the frame composes them; `specular` empty: every pixel
-    /// Lambertian).
+    /// at pixels with a specular lobe `L_e + f(v, l)·E_direct + c_diff/π·E
+    /// + S` (as the frame composes them: [`GBuffer::radiance`](slc_scene::vpl::GBuffer::radiance);
+    /// `specular` empty: every pixel Lambertian).
     pub fn compose_with(&self, inputs: &VplInputs, indirect: &[Vec3], specular: &[Vec3]) -> Result<Image, GpuError> {
         let direct = self.read_direct()?;
         let gb = &inputs.gbuffer;
@@ -953,12 +968,9 @@ impl GpuVplFrame {
                 direct.len()
             )));
         }
+        let primary = self.primary.get();
         let data = (0..direct.len())
-            .map(|i| match (gb.valid(i), gb.specular_at(i).filter(|_| !specular.is_empty())) {
-                (false, _) => Vec3::ZERO,
-                (true, None) => diffuse_radiance(gb.albedo[i], gb.emission[i], direct[i] + indirect[i]),
-                (true, Some(s)) => glossy_radiance(gb.albedo[i], gb.emission[i], s.metallic, direct[i], indirect[i], specular[i]),
-            })
+            .map(|i| gb.radiance(i, primary.direction_from(gb.position[i]), direct[i], indirect[i], specular.get(i).copied()))
             .collect();
         Ok(Image { width: gb.width, height: gb.height, data })
     }
@@ -972,6 +984,9 @@ struct ComposeInputs<'a> {
     image: &'a wgpu::Buffer,
     gb: &'a [Target; 3],
     direct: &'a wgpu::Buffer,
+    /// The primary light's map uniforms (the glossy composition's
+    /// direction to the light).
+    primary: &'a wgpu::Buffer,
     materials: &'a wgpu::Buffer,
     output: &'a Target,
 }
@@ -991,6 +1006,7 @@ impl ComposeInputs<'_> {
         ];
         if let Some(sp) = specular {
             res.push(("specular_tex", tex(sp)));
+            res.push(("params", self.primary.as_entire_binding()));
         }
         self.layout.group(self.gpu, 0, &res)
     }

@@ -33,7 +33,7 @@ use denoise::Denoiser;
 use glam::Vec3;
 use rayon::prelude::*;
 use shade::{Cull, Glossy, LightList};
-use slc_core::frame::{diffuse_radiance, directional_irradiance, glossy_radiance, point_irradiance};
+use slc_core::frame::{directional_irradiance, point_irradiance};
 use slc_core::interleave::{interleave_flux_scale, vpl_near_range2};
 use slc_core::light::{Light, vpl_threshold_range2};
 use slc_core::range::{RangeParams, random_range2};
@@ -211,7 +211,9 @@ impl VplContext {
     /// correction ([`Shaded::specular`]), it is denoised with the same
     /// filter (linear in its input, so this is the filter of the whole VPL
     /// radiance where `c_diff` is constant over the window), and those
-    /// pixels take `albedo/π · direct + emission + c_diff/π · E + S`.
+    /// pixels take `emission + f(v, l)·direct + c_diff/π · E + S`, the
+    /// primary light's direct term reflected by the whole BRDF toward it
+    /// ([`GBuffer::radiance`]).
     pub fn finish(&self, shaded: Shaded, settings: &VplSettings) -> VplFrame {
         // Without a history nothing in the frame can fail.
         self.finish_with(shaded, settings, None).unwrap_or_else(|_| unreachable!("a frame without history has no failure"))
@@ -298,11 +300,12 @@ impl VplContext {
                 specular = history.specular.accumulate(&specular, gb, &view, ts)?;
             }
         }
+        let primary = self.scene.primary;
         let data = (0..filtered.len())
             .into_par_iter()
-            .map(|i| match gb.specular_at(i).filter(|_| !specular.is_empty()) {
-                None => diffuse_radiance(gb.albedo[i], gb.emission[i], self.direct[i] + filtered[i]),
-                Some(s) => glossy_radiance(gb.albedo[i], gb.emission[i], s.metallic, self.direct[i], filtered[i], specular[i]),
+            .map(|i| {
+                let to_light = primary.direction_from(gb.position[i]);
+                gb.radiance(i, to_light, self.direct[i], filtered[i], specular.get(i).copied())
             })
             .collect();
         stats.denoise_ms = ms(t) + shaded.denoised_ms.unwrap_or(0.0);
@@ -765,7 +768,8 @@ mod tests {
 
     /// On the glossy box, the VPL frame shades VPL light with the whole
     /// glTF BRDF: without culling and without denoise its image equals, at
-    /// every pixel, `L_e + albedo/π · direct + Σ_v Φ_v ⊙ f(l_v, v) · T_v`
+    /// every pixel, `L_e + f(l, v)·direct + Σ_v Φ_v ⊙ f(l_v, v) · T_v`
+    /// (`l` toward the primary light; `f = albedo/π` on Lambertian pixels)
     /// summed here in f64 over the VPLs each method gives the pixel
     /// (Reference: all of them; None: its interleaved subset at `P²`× the
     /// flux, with and without the near-field split's share at the VPL's
@@ -791,7 +795,7 @@ mod tests {
         {
             let settings = VplSettings { method, denoise: false, near_radius, ..VplSettings::default() };
             let image = ctx.render(&settings).unwrap().image;
-            let (mut glossy, mut differs) = (0, 0);
+            let (mut glossy, mut differs, mut direct_differs) = (0, 0, 0);
             for i in 0..(w * h) as usize {
                 let (px, py) = (i % w as usize, i / w as usize);
                 let dir = scene.camera.ray_dir(px as f32, py as f32, w, h);
@@ -819,7 +823,10 @@ mod tests {
                     sum += v.flux[k].as_dvec3() * f * t;
                     lambert += v.flux[k].as_dvec3() * (m.albedo * INV_PI).as_dvec3() * t;
                 }
-                let base = diffuse_radiance(gb.albedo[i], gb.emission[i], ctx.direct[i]).as_dvec3();
+                // The primary light's direct term: the whole BRDF toward it.
+                let f_direct = if m.has_specular() { m.eval(n, view, scene.primary.direction_from(x)) } else { m.albedo * INV_PI };
+                let base = (gb.emission[i] + f_direct * ctx.direct[i]).as_dvec3();
+                let lambert_direct = (m.albedo * INV_PI * ctx.direct[i]).as_dvec3();
                 let expect = base + sum;
                 let got = image.data[i].as_dvec3();
                 assert!(
@@ -830,9 +837,13 @@ mod tests {
                 if m.has_specular() {
                     glossy += 1;
                     differs += ((sum - lambert).abs().max_element() > 0.1 * sum.max_element()) as u32;
+                    let direct = base - gb.emission[i].as_dvec3();
+                    direct_differs += ((direct - lambert_direct).abs().max_element() > 0.1 * direct.max_element()) as u32;
                 }
             }
             assert!(glossy > 100 && differs > glossy / 4, "{method:?}: {glossy} glossy pixels, {differs} unlike Lambertian");
+            // The metal sphere has no diffuse lobe: its direct light is not `albedo/π · E`.
+            assert!(direct_differs > glossy / 4, "{method:?}: {glossy} glossy pixels, {direct_differs} with a direct term unlike Lambertian");
         }
     }
 

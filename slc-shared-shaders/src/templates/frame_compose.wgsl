@@ -4,8 +4,9 @@
 // the normal's w), zero where no surface; alpha 1.
 {% if glossy %}
 // Glossy variant: a material with a specular lobe takes
-// `L_e + ρ/π · E_direct + c_diff/π · E_indirect + S` (glossy_radiance), S
-// the VPLs' specular correction.
+// `L_e + f(v, l) · E_direct + c_diff/π · E_indirect + S` (glossy_radiance),
+// `f` the whole BRDF toward the primary light (primary_light_dir), S the
+// VPLs' specular correction.
 {% endif %}
 
 {{ bindings }}
@@ -23,7 +24,11 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
 {% if glossy %}
         let e = textureLoad(indirect_tex, texel, 0).xyz;
         if has_specular(m.metallic, m.f0, m.f90) {
-            radiance = glossy_radiance(m.albedo, m.emission, m.metallic, direct[i].xyz, e, textureLoad(specular_tex, texel, 0).xyz);
+            let x = textureLoad(position_tex, texel, 0).xyz;
+            let n = normalize(textureLoad(normal_tex, texel, 0).xyz);
+            let l = primary_light_dir(x, params.origin, params.axis, params.mode == MAP_PERSPECTIVE);
+            let f = brdf_eval(m.albedo, m.metallic, m.f0, m.f90, m.alpha, n, normalize(image.eye - x), l);
+            radiance = glossy_radiance(m.albedo, m.emission, m.metallic, f, direct[i].xyz, e, textureLoad(specular_tex, texel, 0).xyz);
         } else {
             radiance = diffuse_radiance(m.albedo, m.emission, direct[i].xyz + e);
         }

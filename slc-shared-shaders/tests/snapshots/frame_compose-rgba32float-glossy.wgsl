@@ -1,3 +1,14 @@
+struct GpuLight {
+    p0_: vec3<f32>,
+    kind: u32,
+    p1_: vec3<f32>,
+    a: f32,
+    p2_: vec3<f32>,
+    b: f32,
+    intensity: vec3<f32>,
+    ies_base: u32,
+}
+
 struct ImageParams {
     eye: vec3<f32>,
     width: u32,
@@ -14,6 +25,22 @@ struct GpuMaterial {
     alpha: f32,
     f0_: vec3<f32>,
     f90_: f32,
+}
+
+struct MapParams {
+    c0_: vec4<f32>,
+    c1_: vec4<f32>,
+    c2_: vec4<f32>,
+    c3_: vec4<f32>,
+    light: GpuLight,
+    origin: vec3<f32>,
+    mode: u32,
+    axis: vec3<f32>,
+    size: u32,
+    right: vec3<f32>,
+    extent: f32,
+    up: vec3<f32>,
+    texel: f32,
 }
 
 const LIGHT_POINT: u32 = 0u;
@@ -72,27 +99,120 @@ var<storage> materials: array<GpuMaterial>;
 var out_tex: texture_storage_2d<rgba32float,write>;
 @group(0) @binding(7) 
 var specular_tex: texture_2d<f32>;
+@group(0) @binding(8) 
+var<uniform> params: MapParams;
 
-fn diffuse_albedo(base: vec3<f32>, metallic: f32) -> vec3<f32> {
-    return (base * (1f - metallic));
+fn ggx_d(cos_h: f32, sin2_h: f32, alpha: f32) -> f32 {
+    if (cos_h <= 0f) {
+        return 0f;
+    }
+    let a2_ = (alpha * alpha);
+    let t = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t * t));
 }
 
-fn has_specular(metallic_1: f32, f0_d: vec3<f32>, f90_d: f32) -> bool {
-    var local_1: bool;
-    var local_2: bool;
+fn smith_root(cos_: f32, alpha_1: f32) -> f32 {
+    let a2_1 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1f - a2_1)) + a2_1));
+}
 
-    if !((metallic_1 > 0f)) {
-        local_1 = (f90_d > 0f);
+fn smith_visibility(n_l: f32, n_v: f32, alpha_2: f32) -> f32 {
+    var local_1: bool;
+
+    if !((n_l <= 0f)) {
+        local_1 = (n_v <= 0f);
     } else {
         local_1 = true;
     }
     let _e11 = local_1;
-    if !(_e11) {
-        local_2 = (max(max(f0_d.x, f0_d.y), f0_d.z) > 0f);
+    if _e11 {
+        return 0f;
+    }
+    let _e13 = smith_root(n_v, alpha_2);
+    let _e15 = smith_root(n_l, alpha_2);
+    return (0.5f / ((n_l * _e13) + (n_v * _e15)));
+}
+
+fn fresnel_schlick(f0_: vec3<f32>, f90_: f32, v_h: f32) -> vec3<f32> {
+    let c = saturate((1f - v_h));
+    let c2_ = (c * c);
+    return (f0_ + ((vec3<f32>(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c)));
+}
+
+fn specular_fresnel(base: vec3<f32>, metallic: f32, f0_d: vec3<f32>, f90_d: f32, v_h_1: f32) -> vec3<f32> {
+    let _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    let _e10 = fresnel_schlick(base, 1f, v_h_1);
+    return ((_e5 * (1f - metallic)) + (_e10 * metallic));
+}
+
+fn diffuse_brdf(base_1: vec3<f32>, metallic_1: f32, f0_d_1: vec3<f32>, f90_d_1: f32, v_h_2: f32) -> vec3<f32> {
+    let _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return ((((vec3<f32>(1f, 1f, 1f) - _e9) * base_1) * (1f - metallic_1)) * INV_PI);
+}
+
+fn half_cosine(v: vec3<f32>, l: vec3<f32>) -> f32 {
+    let h = (v + l);
+    let len2_ = dot(h, h);
+    if (len2_ <= 0f) {
+        return 0f;
+    }
+    return saturate((dot(v, h) / sqrt(len2_)));
+}
+
+fn specular_brdf(base_2: vec3<f32>, metallic_2: f32, f0_d_2: vec3<f32>, f90_d_2: f32, alpha_3: f32, n: vec3<f32>, v_1: vec3<f32>, l_1: vec3<f32>) -> vec3<f32> {
+    var local_2: bool;
+
+    let n_l_1 = dot(n, l_1);
+    let n_v_1 = dot(n, v_1);
+    if !((n_l_1 <= 0f)) {
+        local_2 = (n_v_1 <= 0f);
     } else {
         local_2 = true;
     }
-    let _e23 = local_2;
+    let _e18 = local_2;
+    if _e18 {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    let hs = (v_1 + l_1);
+    let inv = (1f / sqrt(dot(hs, hs)));
+    let h_1 = (hs * inv);
+    let c_1 = cross(n, h_1);
+    let _e32 = ggx_d(dot(n, h_1), dot(c_1, c_1), alpha_3);
+    let _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_1));
+    let _e35 = smith_visibility(n_l_1, n_v_1, alpha_3);
+    return (_e34 * (_e32 * _e35));
+}
+
+fn brdf_eval(base_3: vec3<f32>, metallic_3: f32, f0_d_3: vec3<f32>, f90_d_3: f32, alpha_4: f32, n_1: vec3<f32>, v_2: vec3<f32>, l_2: vec3<f32>) -> vec3<f32> {
+    if (dot(n_1, l_2) <= 0f) {
+        return vec3<f32>(0f, 0f, 0f);
+    }
+    let _e15 = half_cosine(v_2, l_2);
+    let _e16 = diffuse_brdf(base_3, metallic_3, f0_d_3, f90_d_3, _e15);
+    let _e17 = specular_brdf(base_3, metallic_3, f0_d_3, f90_d_3, alpha_4, n_1, v_2, l_2);
+    return (_e16 + _e17);
+}
+
+fn diffuse_albedo(base_4: vec3<f32>, metallic_4: f32) -> vec3<f32> {
+    return (base_4 * (1f - metallic_4));
+}
+
+fn has_specular(metallic_5: f32, f0_d_4: vec3<f32>, f90_d_4: f32) -> bool {
+    var local_3: bool;
+    var local_4: bool;
+
+    if !((metallic_5 > 0f)) {
+        local_3 = (f90_d_4 > 0f);
+    } else {
+        local_3 = true;
+    }
+    let _e11 = local_3;
+    if !(_e11) {
+        local_4 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0f);
+    } else {
+        local_4 = true;
+    }
+    let _e23 = local_4;
     return _e23;
 }
 
@@ -100,10 +220,26 @@ fn diffuse_radiance(albedo: vec3<f32>, emission: vec3<f32>, e: vec3<f32>) -> vec
     return (emission + ((albedo * INV_PI) * e));
 }
 
-fn glossy_radiance(base_1: vec3<f32>, emission_1: vec3<f32>, metallic_2: f32, direct: vec3<f32>, indirect: vec3<f32>, specular: vec3<f32>) -> vec3<f32> {
-    let _e6 = diffuse_radiance(base_1, emission_1, direct);
-    let _e7 = diffuse_albedo(base_1, metallic_2);
-    return ((_e6 + ((_e7 * INV_PI) * indirect)) + specular);
+fn primary_light_dir(x: vec3<f32>, origin: vec3<f32>, axis: vec3<f32>, perspective: bool) -> vec3<f32> {
+    var local_5: bool;
+
+    let v_3 = (origin - x);
+    let d2_ = dot(v_3, v_3);
+    if perspective {
+        local_5 = (d2_ > 0f);
+    } else {
+        local_5 = false;
+    }
+    let _e11 = local_5;
+    if _e11 {
+        return (v_3 / vec3(sqrt(d2_)));
+    }
+    return -(axis);
+}
+
+fn glossy_radiance(base_5: vec3<f32>, emission_1: vec3<f32>, metallic_6: f32, f_direct: vec3<f32>, direct: vec3<f32>, indirect: vec3<f32>, specular: vec3<f32>) -> vec3<f32> {
+    let _e9 = diffuse_albedo(base_5, metallic_6);
+    return (((emission_1 + (f_direct * direct)) + ((_e9 * INV_PI) * indirect)) + specular);
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -133,17 +269,27 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         let e_1 = _e47.xyz;
         let _e52 = has_specular(m.metallic, m.f0_, m.f90_);
         if _e52 {
-            let _e58 = direct_1[i];
-            let _e62 = textureLoad(specular_tex, texel, 0i);
-            let _e64 = glossy_radiance(m.albedo, m.emission, m.metallic, _e58.xyz, e_1, _e62.xyz);
-            radiance = _e64;
+            let _e55 = textureLoad(position_tex, texel, 0i);
+            let x_1 = _e55.xyz;
+            let _e59 = textureLoad(normal_tex, texel, 0i);
+            let n_2 = normalize(_e59.xyz);
+            let _e64 = params.origin;
+            let _e67 = params.axis;
+            let _e70 = params.mode;
+            let _e73 = primary_light_dir(x_1, _e64, _e67, (_e70 == MAP_PERSPECTIVE));
+            let _e81 = image.eye;
+            let _e84 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_2, normalize((_e81 - x_1)), _e73);
+            let _e90 = direct_1[i];
+            let _e94 = textureLoad(specular_tex, texel, 0i);
+            let _e96 = glossy_radiance(m.albedo, m.emission, m.metallic, _e84, _e90.xyz, e_1, _e94.xyz);
+            radiance = _e96;
         } else {
-            let _e69 = direct_1[i];
-            let _e72 = diffuse_radiance(m.albedo, m.emission, (_e69.xyz + e_1));
-            radiance = _e72;
+            let _e101 = direct_1[i];
+            let _e104 = diffuse_radiance(m.albedo, m.emission, (_e101.xyz + e_1));
+            radiance = _e104;
         }
     }
-    let _e74 = radiance;
-    textureStore(out_tex, texel, vec4<f32>(_e74, 1f));
+    let _e106 = radiance;
+    textureStore(out_tex, texel, vec4<f32>(_e106, 1f));
     return;
 }

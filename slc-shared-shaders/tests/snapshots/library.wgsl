@@ -1004,9 +1004,9 @@ fn bevy_f0_(reflectance: f32) -> f32 {
 fn bevy_dfg(r_3: f32, n_v_2: f32) -> f32 {
     let rx = (1f - r_3);
     let a004_ = ((min((rx * rx), exp2((-9.28f * n_v_2))) * rx) + (0.0425f - (0.0275f * r_3)));
-    let x_17 = max(((1.04f - (0.572f * r_3)) - (1.04f * a004_)), 0.00005f);
+    let x_18 = max(((1.04f - (0.572f * r_3)) - (1.04f * a004_)), 0.00005f);
     let y_3 = max((((0.022f * r_3) - 0.04f) + (1.04f * a004_)), 0.00005f);
-    return (x_17 + y_3);
+    return (x_18 + y_3);
 }
 
 fn bevy_brdf(base_11: vec3<f32>, metallic_8: f32, r_4: f32, reflectance_1: f32, n_20: vec3<f32>, v_10: vec3<f32>, l_5: vec3<f32>) -> vec3<f32> {
@@ -1585,10 +1585,26 @@ fn diffuse_radiance(albedo: vec3<f32>, emission: vec3<f32>, e_2: vec3<f32>) -> v
     return (emission + ((albedo * INV_PI) * e_2));
 }
 
-fn glossy_radiance(base_12: vec3<f32>, emission_1: vec3<f32>, metallic_9: f32, direct: vec3<f32>, indirect: vec3<f32>, specular: vec3<f32>) -> vec3<f32> {
-    let _e6 = diffuse_radiance(base_12, emission_1, direct);
-    let _e7 = diffuse_albedo(base_12, metallic_9);
-    return ((_e6 + ((_e7 * INV_PI) * indirect)) + specular);
+fn primary_light_dir(x_17: vec3<f32>, origin: vec3<f32>, axis_8: vec3<f32>, perspective_2: bool) -> vec3<f32> {
+    var local_23: bool;
+
+    let v_24 = (origin - x_17);
+    let d2_19 = dot(v_24, v_24);
+    if perspective_2 {
+        local_23 = (d2_19 > 0f);
+    } else {
+        local_23 = false;
+    }
+    let _e11 = local_23;
+    if _e11 {
+        return (v_24 / vec3(sqrt(d2_19)));
+    }
+    return -(axis_8);
+}
+
+fn glossy_radiance(base_12: vec3<f32>, emission_1: vec3<f32>, metallic_9: f32, f_direct: vec3<f32>, direct: vec3<f32>, indirect: vec3<f32>, specular: vec3<f32>) -> vec3<f32> {
+    let _e9 = diffuse_albedo(base_12, metallic_9);
+    return (((emission_1 + (f_direct * direct)) + ((_e9 * INV_PI) * indirect)) + specular);
 }
 
 fn luminance(c_10: vec3<f32>) -> f32 {
@@ -1600,9 +1616,9 @@ fn reproject(c0_1: vec4<f32>, c1_3: vec4<f32>, c2_2: vec4<f32>, c3_: vec4<f32>, 
     if (clip.w <= 0f) {
         return vec3<f32>(-1f, -1f, 0f);
     }
-    let x_18 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
+    let x_19 = (((((clip.x / clip.w) + 1f) * 0.5f) * width) - 0.5f);
     let y_4 = ((((1f - (clip.y / clip.w)) * 0.5f) * height) - 0.5f);
-    return vec3<f32>(x_18, y_4, clip.w);
+    return vec3<f32>(x_19, y_4, clip.w);
 }
 
 fn reproject_motion(px_1: f32, py_1: f32, mx: f32, my: f32, width_1: f32, height_1: f32) -> vec3<f32> {
@@ -1616,10 +1632,10 @@ fn bilinear_weight(fx: f32, fy: f32, dx: u32, dy: u32) -> f32 {
 }
 
 fn history_tap(q_2: vec3<f32>, k_5: u32, width_2: f32, height_2: f32) -> vec4<f32> {
-    var local_23: bool;
     var local_24: bool;
     var local_25: bool;
     var local_26: bool;
+    var local_27: bool;
 
     let x0_ = floor(q_2.x);
     let y0_ = floor(q_2.y);
@@ -1630,29 +1646,29 @@ fn history_tap(q_2: vec3<f32>, k_5: u32, width_2: f32, height_2: f32) -> vec4<f3
     let _e14 = to_f32_(dy_1);
     let ty_2 = (y0_ + _e14);
     if (q_2.z > 0f) {
-        local_23 = (tx_2 >= 0f);
-    } else {
-        local_23 = false;
-    }
-    let _e24 = local_23;
-    if _e24 {
-        local_24 = (ty_2 >= 0f);
+        local_24 = (tx_2 >= 0f);
     } else {
         local_24 = false;
     }
-    let _e30 = local_24;
-    if _e30 {
-        local_25 = (tx_2 < width_2);
+    let _e24 = local_24;
+    if _e24 {
+        local_25 = (ty_2 >= 0f);
     } else {
         local_25 = false;
     }
-    let _e35 = local_25;
-    if _e35 {
-        local_26 = (ty_2 < height_2);
+    let _e30 = local_25;
+    if _e30 {
+        local_26 = (tx_2 < width_2);
     } else {
         local_26 = false;
     }
-    let inside = local_26;
+    let _e35 = local_26;
+    if _e35 {
+        local_27 = (ty_2 < height_2);
+    } else {
+        local_27 = false;
+    }
+    let inside = local_27;
     let _e45 = bilinear_weight((q_2.x - x0_), (q_2.y - y0_), dx_1, dy_1);
     return vec4<f32>(tx_2, ty_2, _e45, select(0f, 1f, inside));
 }
@@ -1665,14 +1681,14 @@ fn history_mean(sum_1: vec4<f32>, weight_1: f32) -> vec4<f32> {
 }
 
 fn history_matches(n_30: vec3<f32>, nh: vec3<f32>, p_10: vec3<f32>, oh: f32, d_6: f32) -> bool {
-    var local_27: bool;
+    var local_28: bool;
 
     if (abs((dot(nh, p_10) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_6)) {
-        local_27 = (dot(n_30, nh) >= TEMPORAL_NORMAL_COS);
+        local_28 = (dot(n_30, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_27 = false;
+        local_28 = false;
     }
-    let _e17 = local_27;
+    let _e17 = local_28;
     return _e17;
 }
 
@@ -1694,34 +1710,34 @@ fn temporal_alpha(n_33: f32) -> f32 {
 }
 
 fn history_tap_weight(w_10: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_11: vec3<f32>, oh_1: f32, d_7: f32, len_1: f32) -> f32 {
-    var local_28: bool;
+    var local_29: bool;
 
     if (len_1 > 0f) {
         let _e11 = history_matches(n_34, nh_1, p_11, oh_1, d_7);
-        local_28 = _e11;
+        local_29 = _e11;
     } else {
-        local_28 = false;
+        local_29 = false;
     }
-    let _e13 = local_28;
+    let _e13 = local_29;
     return select(0f, w_10, _e13);
 }
 
 fn history_tap_weight_motion(w_11: f32, n_35: vec3<f32>, nh_2: vec3<f32>, d_8: f32, dh: f32, len_2: f32) -> f32 {
-    var local_29: bool;
     var local_30: bool;
+    var local_31: bool;
 
     if (len_2 > 0f) {
-        local_29 = (abs((dh - d_8)) <= (TEMPORAL_MOTION_DEPTH_TOLERANCE * d_8));
-    } else {
-        local_29 = false;
-    }
-    let _e16 = local_29;
-    if _e16 {
-        local_30 = (dot(n_35, nh_2) >= TEMPORAL_NORMAL_COS);
+        local_30 = (abs((dh - d_8)) <= (TEMPORAL_MOTION_DEPTH_TOLERANCE * d_8));
     } else {
         local_30 = false;
     }
-    let _e23 = local_30;
+    let _e16 = local_30;
+    if _e16 {
+        local_31 = (dot(n_35, nh_2) >= TEMPORAL_NORMAL_COS);
+    } else {
+        local_31 = false;
+    }
+    let _e23 = local_31;
     return select(0f, w_11, _e23);
 }
 
@@ -1741,27 +1757,27 @@ fn temporal_color(c_11: vec3<f32>, h_1: vec4<f32>, noise_2: f32, last_1: f32, ma
     let _e12 = persistent_change(_e9, last_1, _e10, noise_2, h_1.w);
     let _e14 = next_history_length(h_1.w, _e12, max_history_1);
     let _e16 = temporal_alpha(_e14);
-    let v_24 = (hc + ((c_11 - hc) * _e16));
-    return vec4<f32>(v_24.x, v_24.y, v_24.z, _e14);
+    let v_25 = (hc + ((c_11 - hc) * _e16));
+    return vec4<f32>(v_25.x, v_25.y, v_25.z, _e14);
 }
 
 fn temporal_moments(c_12: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, len_3: f32, depth_1: f32) -> vec4<f32> {
-    var local_31: bool;
+    var local_32: bool;
 
     let _e6 = luminance(c_12);
     if (prev_len <= 0f) {
         return vec4<f32>(_e6, 0f, depth_1, 0f);
     }
     let d_11 = (_e6 - last_2);
-    let d2_19 = ((0.5f * d_11) * d_11);
+    let d2_20 = ((0.5f * d_11) * d_11);
     let cap = (16f * noise_3);
     if (prev_len >= TEMPORAL_MIN_MOMENTS) {
-        local_31 = (noise_3 > 0f);
+        local_32 = (noise_3 > 0f);
     } else {
-        local_31 = false;
+        local_32 = false;
     }
-    let _e26 = local_31;
-    let sample = select(d2_19, min(d2_19, cap), _e26);
+    let _e26 = local_32;
+    let sample = select(d2_20, min(d2_20, cap), _e26);
     let _e31 = temporal_alpha((len_3 - 1f));
     return vec4<f32>(_e6, (noise_3 + ((sample - noise_3) * _e31)), depth_1, 0f);
 }

@@ -1,3 +1,14 @@
+struct GpuLight {
+    float3 p0_;
+    uint kind;
+    float3 p1_;
+    float a;
+    float3 p2_;
+    float b;
+    float3 intensity;
+    uint ies_base;
+};
+
 struct ImageParams {
     float3 eye;
     uint width;
@@ -14,6 +25,22 @@ struct GpuMaterial {
     float alpha;
     float3 f0_;
     float f90_;
+};
+
+struct MapParams {
+    float4 c0_;
+    float4 c1_;
+    float4 c2_;
+    float4 c3_;
+    GpuLight light;
+    float3 origin;
+    uint mode;
+    float3 axis;
+    uint size;
+    float3 right;
+    float extent;
+    float3 up;
+    float texel;
 };
 
 static const uint LIGHT_POINT = 0u;
@@ -64,29 +91,130 @@ ByteAddressBuffer direct_1 : register(t4);
 ByteAddressBuffer materials : register(t5);
 RWTexture2D<float4> out_tex : register(u6);
 Texture2D<float4> specular_tex : register(t7);
+cbuffer params : register(b8) { MapParams params; }
 
-float3 diffuse_albedo(float3 base, float metallic)
+float ggx_d(float cos_h, float sin2_h, float alpha)
 {
-    return (base * (1.0 - metallic));
+    if ((cos_h <= 0.0)) {
+        return 0.0;
+    }
+    float a2_ = (alpha * alpha);
+    float t = (((cos_h * cos_h) * a2_) + sin2_h);
+    return ((a2_ * INV_PI) / (t * t));
 }
 
-bool has_specular(float metallic_1, float3 f0_d, float f90_d)
+float smith_root(float cos_, float alpha_1)
+{
+    float a2_1 = (alpha_1 * alpha_1);
+    return sqrt((((cos_ * cos_) * (1.0 - a2_1)) + a2_1));
+}
+
+float smith_visibility(float n_l, float n_v, float alpha_2)
 {
     bool local_1 = (bool)0;
-    bool local_2 = (bool)0;
 
-    if (!((metallic_1 > 0.0))) {
-        local_1 = (f90_d > 0.0);
+    if (!((n_l <= 0.0))) {
+        local_1 = (n_v <= 0.0);
     } else {
         local_1 = true;
     }
     bool _e11 = local_1;
-    if (!(_e11)) {
-        local_2 = (max(max(f0_d.x, f0_d.y), f0_d.z) > 0.0);
+    if (_e11) {
+        return 0.0;
+    }
+    const float _e13 = smith_root(n_v, alpha_2);
+    const float _e15 = smith_root(n_l, alpha_2);
+    return (0.5 / ((n_l * _e13) + (n_v * _e15)));
+}
+
+float3 fresnel_schlick(float3 f0_, float f90_, float v_h)
+{
+    float c = saturate((1.0 - v_h));
+    float c2_ = (c * c);
+    return (f0_ + ((float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c)));
+}
+
+float3 specular_fresnel(float3 base, float metallic, float3 f0_d, float f90_d, float v_h_1)
+{
+    const float3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    const float3 _e10 = fresnel_schlick(base, 1.0, v_h_1);
+    return ((_e5 * (1.0 - metallic)) + (_e10 * metallic));
+}
+
+float3 diffuse_brdf(float3 base_1, float metallic_1, float3 f0_d_1, float f90_d_1, float v_h_2)
+{
+    const float3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return ((((float3(1.0, 1.0, 1.0) - _e9) * base_1) * (1.0 - metallic_1)) * INV_PI);
+}
+
+float half_cosine(float3 v, float3 l)
+{
+    float3 h = (v + l);
+    float len2_ = dot(h, h);
+    if ((len2_ <= 0.0)) {
+        return 0.0;
+    }
+    return saturate((dot(v, h) / sqrt(len2_)));
+}
+
+float3 specular_brdf(float3 base_2, float metallic_2, float3 f0_d_2, float f90_d_2, float alpha_3, float3 n, float3 v_1, float3 l_1)
+{
+    bool local_2 = (bool)0;
+
+    float n_l_1 = dot(n, l_1);
+    float n_v_1 = dot(n, v_1);
+    if (!((n_l_1 <= 0.0))) {
+        local_2 = (n_v_1 <= 0.0);
     } else {
         local_2 = true;
     }
-    bool _e23 = local_2;
+    bool _e18 = local_2;
+    if (_e18) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    float3 hs = (v_1 + l_1);
+    float inv = (1.0 / sqrt(dot(hs, hs)));
+    float3 h_1 = (hs * inv);
+    float3 c_1 = cross(n, h_1);
+    const float _e32 = ggx_d(dot(n, h_1), dot(c_1, c_1), alpha_3);
+    const float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, dot(v_1, h_1));
+    const float _e35 = smith_visibility(n_l_1, n_v_1, alpha_3);
+    return (_e34 * (_e32 * _e35));
+}
+
+float3 brdf_eval(float3 base_3, float metallic_3, float3 f0_d_3, float f90_d_3, float alpha_4, float3 n_1, float3 v_2, float3 l_2)
+{
+    if ((dot(n_1, l_2) <= 0.0)) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    const float _e15 = half_cosine(v_2, l_2);
+    const float3 _e16 = diffuse_brdf(base_3, metallic_3, f0_d_3, f90_d_3, _e15);
+    const float3 _e17 = specular_brdf(base_3, metallic_3, f0_d_3, f90_d_3, alpha_4, n_1, v_2, l_2);
+    return (_e16 + _e17);
+}
+
+float3 diffuse_albedo(float3 base_4, float metallic_4)
+{
+    return (base_4 * (1.0 - metallic_4));
+}
+
+bool has_specular(float metallic_5, float3 f0_d_4, float f90_d_4)
+{
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
+
+    if (!((metallic_5 > 0.0))) {
+        local_3 = (f90_d_4 > 0.0);
+    } else {
+        local_3 = true;
+    }
+    bool _e11 = local_3;
+    if (!(_e11)) {
+        local_4 = (max(max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0);
+    } else {
+        local_4 = true;
+    }
+    bool _e23 = local_4;
     return _e23;
 }
 
@@ -95,11 +223,28 @@ float3 diffuse_radiance(float3 albedo, float3 emission, float3 e)
     return (emission + ((albedo * INV_PI) * e));
 }
 
-float3 glossy_radiance(float3 base_1, float3 emission_1, float metallic_2, float3 direct, float3 indirect, float3 specular)
+float3 primary_light_dir(float3 x, float3 origin, float3 axis, bool perspective)
 {
-    const float3 _e6 = diffuse_radiance(base_1, emission_1, direct);
-    const float3 _e7 = diffuse_albedo(base_1, metallic_2);
-    return ((_e6 + ((_e7 * INV_PI) * indirect)) + specular);
+    bool local_5 = (bool)0;
+
+    float3 v_3 = (origin - x);
+    float d2_ = dot(v_3, v_3);
+    if (perspective) {
+        local_5 = (d2_ > 0.0);
+    } else {
+        local_5 = false;
+    }
+    bool _e11 = local_5;
+    if (_e11) {
+        return (v_3 / (sqrt(d2_)).xxx);
+    }
+    return -(axis);
+}
+
+float3 glossy_radiance(float3 base_5, float3 emission_1, float metallic_6, float3 f_direct, float3 direct, float3 indirect, float3 specular)
+{
+    const float3 _e9 = diffuse_albedo(base_5, metallic_6);
+    return (((emission_1 + (f_direct * direct)) + ((_e9 * INV_PI) * indirect)) + specular);
 }
 
 uint naga_f2u32(float value) {
@@ -145,17 +290,27 @@ void main(uint3 gid : SV_DispatchThreadID)
         float3 e_1 = _e47.xyz;
         const bool _e52 = has_specular(m.metallic, m.f0_, m.f90_);
         if (_e52) {
-            float4 _e58 = asfloat(direct_1.Load4(i*16));
-            float4 _e62 = specular_tex.Load(int3(texel, int(0)));
-            const float3 _e64 = glossy_radiance(m.albedo, m.emission, m.metallic, _e58.xyz, e_1, _e62.xyz);
-            radiance = _e64;
+            float4 _e55 = position_tex.Load(int3(texel, int(0)));
+            float3 x_1 = _e55.xyz;
+            float4 _e59 = normal_tex.Load(int3(texel, int(0)));
+            float3 n_2 = normalize(_e59.xyz);
+            float3 _e64 = params.origin;
+            float3 _e67 = params.axis;
+            uint _e70 = params.mode;
+            const float3 _e73 = primary_light_dir(x_1, _e64, _e67, (_e70 == MAP_PERSPECTIVE));
+            float3 _e81 = image.eye;
+            const float3 _e84 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_2, normalize((_e81 - x_1)), _e73);
+            float4 _e90 = asfloat(direct_1.Load4(i*16));
+            float4 _e94 = specular_tex.Load(int3(texel, int(0)));
+            const float3 _e96 = glossy_radiance(m.albedo, m.emission, m.metallic, _e84, _e90.xyz, e_1, _e94.xyz);
+            radiance = _e96;
         } else {
-            float4 _e69 = asfloat(direct_1.Load4(i*16));
-            const float3 _e72 = diffuse_radiance(m.albedo, m.emission, (_e69.xyz + e_1));
-            radiance = _e72;
+            float4 _e101 = asfloat(direct_1.Load4(i*16));
+            const float3 _e104 = diffuse_radiance(m.albedo, m.emission, (_e101.xyz + e_1));
+            radiance = _e104;
         }
     }
-    float3 _e74 = radiance;
-    out_tex[texel] = float4(_e74, 1.0);
+    float3 _e106 = radiance;
+    out_tex[texel] = float4(_e106, 1.0);
     return;
 }

@@ -9,6 +9,16 @@ struct _mslBufferSizes {
     uint size5;
 };
 
+struct GpuLight {
+    metal::packed_float3 p0_;
+    uint kind;
+    metal::packed_float3 p1_;
+    float a;
+    metal::packed_float3 p2_;
+    float b;
+    metal::packed_float3 intensity;
+    uint ies_base;
+};
 struct ImageParams {
     metal::packed_float3 eye;
     uint width;
@@ -24,6 +34,21 @@ struct GpuMaterial {
     float alpha;
     metal::packed_float3 f0_;
     float f90_;
+};
+struct MapParams {
+    metal::float4 c0_;
+    metal::float4 c1_;
+    metal::float4 c2_;
+    metal::float4 c3_;
+    GpuLight light;
+    metal::packed_float3 origin;
+    uint mode;
+    metal::packed_float3 axis;
+    uint size;
+    metal::packed_float3 right;
+    float extent;
+    metal::packed_float3 up;
+    float texel;
 };
 typedef metal::float4 type_6[1];
 typedef GpuMaterial type_7[1];
@@ -67,32 +92,169 @@ constant float TEMPORAL_CHANGE_LOW = 4.0;
 constant float TEMPORAL_CHANGE_HIGH = 8.0;
 constant float TEMPORAL_MIN_WEIGHT = 0.01;
 
-metal::float3 diffuse_albedo(
-    metal::float3 base,
-    float metallic
+float ggx_d(
+    float cos_h,
+    float sin2_h,
+    float alpha
 ) {
-    return base * (1.0 - metallic);
+    if (cos_h <= 0.0) {
+        return 0.0;
+    }
+    float a2_ = alpha * alpha;
+    float t = ((cos_h * cos_h) * a2_) + sin2_h;
+    return (a2_ * INV_PI) / (t * t);
 }
 
-bool has_specular(
-    float metallic_1,
-    metal::float3 f0_d,
-    float f90_d
+float smith_root(
+    float cos,
+    float alpha_1
+) {
+    float a2_1 = alpha_1 * alpha_1;
+    return metal::sqrt(((cos * cos) * (1.0 - a2_1)) + a2_1);
+}
+
+float smith_visibility(
+    float n_l,
+    float n_v,
+    float alpha_2
 ) {
     bool local_1 = {};
-    bool local_2 = {};
-    if (!((metallic_1 > 0.0))) {
-        local_1 = f90_d > 0.0;
+    if (!((n_l <= 0.0))) {
+        local_1 = n_v <= 0.0;
     } else {
         local_1 = true;
     }
     bool _e11 = local_1;
-    if (!(_e11)) {
-        local_2 = metal::max(metal::max(f0_d.x, f0_d.y), f0_d.z) > 0.0;
+    if (_e11) {
+        return 0.0;
+    }
+    float _e13 = smith_root(n_v, alpha_2);
+    float _e15 = smith_root(n_l, alpha_2);
+    return 0.5 / ((n_l * _e13) + (n_v * _e15));
+}
+
+metal::float3 fresnel_schlick(
+    metal::float3 f0_,
+    float f90_,
+    float v_h
+) {
+    float c = metal::saturate(1.0 - v_h);
+    float c2_ = c * c;
+    return f0_ + ((metal::float3(f90_, f90_, f90_) - f0_) * ((c2_ * c2_) * c));
+}
+
+metal::float3 specular_fresnel(
+    metal::float3 base,
+    float metallic,
+    metal::float3 f0_d,
+    float f90_d,
+    float v_h_1
+) {
+    metal::float3 _e5 = fresnel_schlick(f0_d, f90_d, v_h_1);
+    metal::float3 _e10 = fresnel_schlick(base, 1.0, v_h_1);
+    return (_e5 * (1.0 - metallic)) + (_e10 * metallic);
+}
+
+metal::float3 diffuse_brdf(
+    metal::float3 base_1,
+    float metallic_1,
+    metal::float3 f0_d_1,
+    float f90_d_1,
+    float v_h_2
+) {
+    metal::float3 _e9 = fresnel_schlick(f0_d_1, f90_d_1, v_h_2);
+    return (((metal::float3(1.0, 1.0, 1.0) - _e9) * base_1) * (1.0 - metallic_1)) * INV_PI;
+}
+
+float half_cosine(
+    metal::float3 v,
+    metal::float3 l
+) {
+    metal::float3 h = v + l;
+    float len2_ = metal::dot(h, h);
+    if (len2_ <= 0.0) {
+        return 0.0;
+    }
+    return metal::saturate(metal::dot(v, h) / metal::sqrt(len2_));
+}
+
+metal::float3 specular_brdf(
+    metal::float3 base_2,
+    float metallic_2,
+    metal::float3 f0_d_2,
+    float f90_d_2,
+    float alpha_3,
+    metal::float3 n,
+    metal::float3 v_1,
+    metal::float3 l_1
+) {
+    bool local_2 = {};
+    float n_l_1 = metal::dot(n, l_1);
+    float n_v_1 = metal::dot(n, v_1);
+    if (!((n_l_1 <= 0.0))) {
+        local_2 = n_v_1 <= 0.0;
     } else {
         local_2 = true;
     }
-    bool _e23 = local_2;
+    bool _e18 = local_2;
+    if (_e18) {
+        return metal::float3(0.0, 0.0, 0.0);
+    }
+    metal::float3 hs = v_1 + l_1;
+    float inv = 1.0 / metal::sqrt(metal::dot(hs, hs));
+    metal::float3 h_1 = hs * inv;
+    metal::float3 c_1 = metal::cross(n, h_1);
+    float _e32 = ggx_d(metal::dot(n, h_1), metal::dot(c_1, c_1), alpha_3);
+    metal::float3 _e34 = specular_fresnel(base_2, metallic_2, f0_d_2, f90_d_2, metal::dot(v_1, h_1));
+    float _e35 = smith_visibility(n_l_1, n_v_1, alpha_3);
+    return _e34 * (_e32 * _e35);
+}
+
+metal::float3 brdf_eval(
+    metal::float3 base_3,
+    float metallic_3,
+    metal::float3 f0_d_3,
+    float f90_d_3,
+    float alpha_4,
+    metal::float3 n_1,
+    metal::float3 v_2,
+    metal::float3 l_2
+) {
+    if (metal::dot(n_1, l_2) <= 0.0) {
+        return metal::float3(0.0, 0.0, 0.0);
+    }
+    float _e15 = half_cosine(v_2, l_2);
+    metal::float3 _e16 = diffuse_brdf(base_3, metallic_3, f0_d_3, f90_d_3, _e15);
+    metal::float3 _e17 = specular_brdf(base_3, metallic_3, f0_d_3, f90_d_3, alpha_4, n_1, v_2, l_2);
+    return _e16 + _e17;
+}
+
+metal::float3 diffuse_albedo(
+    metal::float3 base_4,
+    float metallic_4
+) {
+    return base_4 * (1.0 - metallic_4);
+}
+
+bool has_specular(
+    float metallic_5,
+    metal::float3 f0_d_4,
+    float f90_d_4
+) {
+    bool local_3 = {};
+    bool local_4 = {};
+    if (!((metallic_5 > 0.0))) {
+        local_3 = f90_d_4 > 0.0;
+    } else {
+        local_3 = true;
+    }
+    bool _e11 = local_3;
+    if (!(_e11)) {
+        local_4 = metal::max(metal::max(f0_d_4.x, f0_d_4.y), f0_d_4.z) > 0.0;
+    } else {
+        local_4 = true;
+    }
+    bool _e23 = local_4;
     return _e23;
 }
 
@@ -104,17 +266,38 @@ metal::float3 diffuse_radiance(
     return emission + ((albedo * INV_PI) * e);
 }
 
+metal::float3 primary_light_dir(
+    metal::float3 x,
+    metal::float3 origin,
+    metal::float3 axis,
+    bool perspective
+) {
+    bool local_5 = {};
+    metal::float3 v_3 = origin - x;
+    float d2_ = metal::dot(v_3, v_3);
+    if (perspective) {
+        local_5 = d2_ > 0.0;
+    } else {
+        local_5 = false;
+    }
+    bool _e11 = local_5;
+    if (_e11) {
+        return v_3 / metal::float3(metal::sqrt(d2_));
+    }
+    return -(axis);
+}
+
 metal::float3 glossy_radiance(
-    metal::float3 base_1,
+    metal::float3 base_5,
     metal::float3 emission_1,
-    float metallic_2,
+    float metallic_6,
+    metal::float3 f_direct,
     metal::float3 direct,
     metal::float3 indirect,
     metal::float3 specular
 ) {
-    metal::float3 _e6 = diffuse_radiance(base_1, emission_1, direct);
-    metal::float3 _e7 = diffuse_albedo(base_1, metallic_2);
-    return (_e6 + ((_e7 * INV_PI) * indirect)) + specular;
+    metal::float3 _e9 = diffuse_albedo(base_5, metallic_6);
+    return ((emission_1 + (f_direct * direct)) + ((_e9 * INV_PI) * indirect)) + specular;
 }
 uint naga_f2u32(float value) {
     return static_cast<uint>(metal::clamp(value, 0.0, 4294967000.0));
@@ -133,6 +316,7 @@ kernel void main_(
 , device type_7 const& materials [[user(fake0)]]
 , metal::texture2d<float, metal::access::write> out_tex [[user(fake0)]]
 , metal::texture2d<float, metal::access::sample> specular_tex [[user(fake0)]]
+, constant MapParams& params [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     bool local = {};
@@ -159,17 +343,27 @@ kernel void main_(
         metal::float3 e_1 = _e47.xyz;
         bool _e52 = has_specular(m.metallic, m.f0_, m.f90_);
         if (_e52) {
-            metal::float4 _e58 = direct_1[i];
-            metal::float4 _e62 = specular_tex.read(metal::uint2(texel), 0);
-            metal::float3 _e64 = glossy_radiance(m.albedo, m.emission, m.metallic, _e58.xyz, e_1, _e62.xyz);
-            radiance = _e64;
+            metal::float4 _e55 = position_tex.read(metal::uint2(texel), 0);
+            metal::float3 x_1 = _e55.xyz;
+            metal::float4 _e59 = normal_tex.read(metal::uint2(texel), 0);
+            metal::float3 n_2 = metal::normalize(_e59.xyz);
+            metal::float3 _e64 = params.origin;
+            metal::float3 _e67 = params.axis;
+            uint _e70 = params.mode;
+            metal::float3 _e73 = primary_light_dir(x_1, _e64, _e67, _e70 == MAP_PERSPECTIVE);
+            metal::float3 _e81 = image.eye;
+            metal::float3 _e84 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_2, metal::normalize(_e81 - x_1), _e73);
+            metal::float4 _e90 = direct_1[i];
+            metal::float4 _e94 = specular_tex.read(metal::uint2(texel), 0);
+            metal::float3 _e96 = glossy_radiance(m.albedo, m.emission, m.metallic, _e84, _e90.xyz, e_1, _e94.xyz);
+            radiance = _e96;
         } else {
-            metal::float4 _e69 = direct_1[i];
-            metal::float3 _e72 = diffuse_radiance(m.albedo, m.emission, _e69.xyz + e_1);
-            radiance = _e72;
+            metal::float4 _e101 = direct_1[i];
+            metal::float3 _e104 = diffuse_radiance(m.albedo, m.emission, _e101.xyz + e_1);
+            radiance = _e104;
         }
     }
-    metal::float3 _e74 = radiance;
-    out_tex.write(metal::float4(_e74, 1.0), metal::uint2(texel));
+    metal::float3 _e106 = radiance;
+    out_tex.write(metal::float4(_e106, 1.0), metal::uint2(texel));
     return;
 }
