@@ -50,7 +50,6 @@ use crate::passes::{
 };
 use crate::{GpuContext, GpuError};
 use glam::{Mat4, Vec3, Vec4};
-
 use slc_scene::backend::Timing;
 use slc_scene::image::Image;
 use slc_scene::scene::{Camera, LightMap, Material, PrimaryLight, Scene};
