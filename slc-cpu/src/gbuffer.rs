@@ -8,7 +8,7 @@
 //! pixel.
 
 use crate::geometry::Geometry;
-use crate::raster::{Pinhole, View, closest_hits};
+use crate::raster::{Pinhole, closest_hits};
 use glam::Vec3;
 use rayon::prelude::*;
 use slc_core::ray::face_against;
@@ -38,13 +38,12 @@ pub fn render_gbuffer_into(scene: &Scene, geo: &Geometry, gb: &mut GBuffer, geom
     let view = Pinhole { eye: cam.position, basis: cam.scaled_basis(gb.width, gb.height), size: (w, h) };
     let hits = closest_hits(&view, geo, &scene.triangles);
     type Texel = ((Vec3, Vec3), ((Vec3, Vec3), (f32, Vec3)));
-    let texel = |i: usize| -> Texel {
-        let (x, y) = (i % w, i / w);
+    let texel = |x: usize, y: usize| -> Texel {
         let (t, tri) = hits.at(x, y);
         if tri == u32::MAX {
             return ((Vec3::ZERO, Vec3::ZERO), ((Vec3::ZERO, Vec3::ZERO), (f32::INFINITY, Vec3::ZERO)));
         }
-        let dir = Vec3::from(view.ray(x, y).direction);
+        let dir = view.dir(x, y);
         let p = cam.position + dir * t;
         let gn = face_against(geo.normal(tri), dir);
         let m = scene.materials[scene.material_of[tri as usize] as usize];
@@ -52,16 +51,28 @@ pub fn render_gbuffer_into(scene: &Scene, geo: &Geometry, gb: &mut GBuffer, geom
     };
     let n = w * h;
     let sized = [gb.position.len(), gb.normal.len(), gb.albedo.len(), gb.emission.len(), gb.depth.len(), geometric.len()].iter().all(|&l| l == n);
-    if sized {
-        (&mut gb.position, &mut gb.normal, &mut gb.albedo, &mut gb.emission, &mut gb.depth, &mut *geometric)
+    if sized && w > 0 {
+        // Row by row: a pixel's coordinates without a division.
+        (
+            gb.position.par_chunks_mut(w),
+            gb.normal.par_chunks_mut(w),
+            gb.albedo.par_chunks_mut(w),
+            gb.emission.par_chunks_mut(w),
+            gb.depth.par_chunks_mut(w),
+            geometric.par_chunks_mut(w),
+        )
             .into_par_iter()
             .enumerate()
-            .for_each(|(i, (p, nrm, a, e, d, g))| ((*p, *nrm), ((*a, *e), (*d, *g))) = texel(i));
+            .for_each(|(y, (p, nrm, a, e, d, g))| {
+                for x in 0..w {
+                    ((p[x], nrm[x]), ((a[x], e[x]), (d[x], g[x]))) = texel(x, y);
+                }
+            });
     } else {
         // One parallel pass writes every buffer straight into fresh memory
         // (a zero-filled buffer first would cost as much as the pass).
         type Buffers = ((Vec<Vec3>, Vec<Vec3>), ((Vec<Vec3>, Vec<Vec3>), (Vec<f32>, Vec<Vec3>)));
-        let ((position, normal), ((albedo, emission), (depth, geo_n))): Buffers = (0..n).into_par_iter().map(texel).unzip();
+        let ((position, normal), ((albedo, emission), (depth, geo_n))): Buffers = (0..n).into_par_iter().map(|i| texel(i % w, i / w)).unzip();
         (gb.position, gb.normal, gb.albedo, gb.emission, gb.depth, *geometric) = (position, normal, albedo, emission, depth, geo_n);
     }
     // Each pixel's specular lobe, only where the scene has one (a
