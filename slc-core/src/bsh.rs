@@ -127,6 +127,7 @@ pub mod walk {
             return bsh_next_leaf_lobe(nodes, start, x, x, vec4f(1.0, 0.0, 1.0, 1.0));
         }
 
+        #[inline(always)]
         /// Whether node `node` reaches a receiver at `x` with mirror
         /// direction `r` and range lobe `rl` ([`crate::brdf::range_lobe`]),
         /// which scales each light's range² by its own

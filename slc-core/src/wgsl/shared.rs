@@ -4,6 +4,10 @@
 /// Emits a block of items as Rust and collects their tokens as WGSL text in a
 /// `pub const WGSL: &str` beside them. Accepts `pub const`, `pub fn` and
 /// `pub struct` items with doc comments (see the module docs for the rules).
+/// Every `pub fn` is `#[inline]`; one marked `#[inline(always)]` before its
+/// doc comment is always inlined in Rust (a hot loop's step, whose speed
+/// must not depend on how rustc splits the calling crate into codegen
+/// units; WGSL leaves inlining to the shader compiler).
 #[macro_export]
 #[doc(hidden)]
 macro_rules! shared {
@@ -19,6 +23,15 @@ macro_rules! shared {
         #[allow(clippy::approx_constant, clippy::excessive_precision)]
         pub const $name: $ty = $val;
         $crate::shared!(@acc [$($w,)* stringify!(const $name: $ty = $val;)] $($rest)*);
+    };
+    (@acc [$($w:expr),*]
+        #[inline(always)] $(#[$m:meta])* pub fn $name:ident ( $($arg:ident : $aty:ty),* $(,)? ) -> $ret:ty $body:block
+        $($rest:tt)*) => {
+        $(#[$m])*
+        #[inline(always)]
+        #[allow(clippy::needless_return, unused_mut, clippy::collapsible_else_if, clippy::assign_op_pattern, clippy::manual_range_contains)]
+        pub fn $name($($arg: $aty),*) -> $ret $body
+        $crate::shared!(@acc [$($w,)* stringify!(fn $name($($arg: $aty),*) -> $ret $body)] $($rest)*);
     };
     (@acc [$($w:expr),*]
         $(#[$m:meta])* pub fn $name:ident ( $($arg:ident : $aty:ty),* $(,)? ) -> $ret:ty $body:block
