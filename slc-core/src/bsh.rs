@@ -144,9 +144,9 @@ pub mod walk {
         /// `|C − c_j| + R_j + √s_j·r_j` of `C`, at most both bounds (the
         /// first by [`bsh_scaled_radius`]'s argument). Nodes out of reach even at
         /// the receiver's largest scale `rl.w²` are rejected first (also
-        /// beyond `A + rl.w·B`, before the scale's four square roots;
-        /// a leaf's `A` and `B` are `R` and `r`); for `rl.w ≤ 1` (no specular lobe) this is the
-        /// plain sphere test.
+        /// beyond `A + rl.w·B`, before the scale's four square roots; a
+        /// leaf's `A` and `B` are `R` and `r`); for `rl.w ≤ 1` (no specular
+        /// lobe) this is the plain sphere test.
         pub fn bsh_reaches(node: BshNode, x: vec3f, r: vec3f, rl: vec4f) -> bool {
             if sphere_contains_point(node.center, node.radius, x) {
                 return true;

@@ -307,16 +307,16 @@ impl GBuffer {
     }
 
     /// Pixel `i`'s outgoing radiance in the VPL frame, the composition both
-    /// backends' frames make: 0 off the surfaces; from the primary light's
-    /// direct irradiance `direct` (arriving along the unit direction
-    /// `to_light`, [`crate::scene::PrimaryLight::direction_from`]), the VPLs'
+    /// backends' frames make: 0 off the surfaces; from the direct
+    /// irradiance `direct` of the primary light `primary`, the VPLs'
     /// irradiance `indirect` and, where the frame has one, their specular
     /// correction `specular`: `L_e + ρ/π·(E_direct + E_indirect)`
     /// ([`slc_core::frame::diffuse_radiance`]) for a Lambertian pixel or
     /// without a correction, else `L_e + f(v, l)·E_direct +
     /// c_diff/π·E_indirect + S` ([`slc_core::frame::glossy_radiance`], `f`
-    /// the whole BRDF seen from the eye).
-    pub fn radiance(&self, i: usize, to_light: Vec3, direct: Vec3, indirect: Vec3, specular: Option<Vec3>) -> Vec3 {
+    /// the whole BRDF seen from the eye, `l` toward the light:
+    /// [`crate::scene::PrimaryLight::direction_from`]).
+    pub fn radiance(&self, i: usize, primary: &crate::scene::PrimaryLight, direct: Vec3, indirect: Vec3, specular: Option<Vec3>) -> Vec3 {
         use slc_core::brdf::{brdf_eval, ggx_alpha};
         use slc_core::frame::{diffuse_radiance, glossy_radiance};
         if !self.valid(i) {
@@ -327,7 +327,7 @@ impl GBuffer {
             (Some(s), Some(spec)) => {
                 let (x, n) = (self.position[i], self.normal[i]);
                 let v = (self.eye - x).normalize_or_zero();
-                let f = brdf_eval(base, s.metallic, s.f0, s.f90, ggx_alpha(s.roughness), n, v, to_light);
+                let f = brdf_eval(base, s.metallic, s.f0, s.f90, ggx_alpha(s.roughness), n, v, primary.direction_from(x));
                 glossy_radiance(base, emission, s.metallic, f, direct, indirect, spec)
             }
             _ => diffuse_radiance(base, emission, direct + indirect),

@@ -968,9 +968,7 @@ impl GpuVplFrame {
             )));
         }
         let primary = self.primary.get();
-        let data = (0..direct.len())
-            .map(|i| gb.radiance(i, primary.direction_from(gb.position[i]), direct[i], indirect[i], specular.get(i).copied()))
-            .collect();
+        let data = (0..direct.len()).map(|i| gb.radiance(i, &primary, direct[i], indirect[i], specular.get(i).copied())).collect();
         Ok(Image { width: gb.width, height: gb.height, data })
     }
 }

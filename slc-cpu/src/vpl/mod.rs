@@ -301,13 +301,8 @@ impl VplContext {
             }
         }
         let primary = self.scene.primary;
-        let data = (0..filtered.len())
-            .into_par_iter()
-            .map(|i| {
-                let to_light = primary.direction_from(gb.position[i]);
-                gb.radiance(i, to_light, self.direct[i], filtered[i], specular.get(i).copied())
-            })
-            .collect();
+        let data =
+            (0..filtered.len()).into_par_iter().map(|i| gb.radiance(i, &primary, self.direct[i], filtered[i], specular.get(i).copied())).collect();
         stats.denoise_ms = ms(t) + shaded.denoised_ms.unwrap_or(0.0);
         stats.total_ms = stats.stage_sum();
         Ok(VplFrame { image: Image { width: gb.width, height: gb.height, data }, stats })
