@@ -143,6 +143,15 @@ fn directional_frame_matches_the_cpu_frame() {
     check_frame(&scene, "cornell directional");
 }
 
+/// The glossy box under a directional primary light: the composition's
+/// direction to the light is the light's reversed travel (an orthographic
+/// map), on the GPU as on the CPU.
+fn glossy_directional_frame_matches_the_cpu_frame() {
+    let mut scene = Scene::cornell_box_glossy();
+    scene.primary = PrimaryLight::Directional { direction: Vec3::new(0.3, -1.0, -0.4).normalize(), irradiance: Vec3::splat(2.0) };
+    check_frame(&scene, "cornell glossy directional");
+}
+
 /// The GPU-made VPLs (RSM rasterized, flux from the shared texel solid
 /// angle) against the CPU's ray-cast ones at the default 65,536: the same
 /// count, the same texels without flux (a half-float flux target once
@@ -416,6 +425,7 @@ slc_tests::harness!(
     Gpu: timestamp_path_times_every_stage,
     Gpu: spot_frame_matches_the_cpu_frame,
     Gpu: directional_frame_matches_the_cpu_frame,
+    Gpu: glossy_directional_frame_matches_the_cpu_frame,
     Gpu: glossy_frame_matches_the_cpu_frame,
     Gpu: glossy_frame_differs_from_matte_on_glossy_pixels,
     Gpu: gpu_vpls_match_cpu_vpls,
