@@ -236,6 +236,17 @@ impl Bins {
 /// Edge of a tile of [`closest_hits`], in pixels.
 const TILE: usize = 16;
 
+/// A tile's four corner pixels' rays `(o, d)` with the scale `(|d|,
+/// |o|·|d|)` of their Plücker sides ([`tile_misses`]), taken once per tile.
+type Corners = [(Vec3, Vec3, f32, f32); 4];
+
+fn corners(rays: &[Ray], row: usize) -> Corners {
+    [0, row - 1, rays.len() - row, rays.len() - 1].map(|k| {
+        let (o, d) = (Vec3::from(rays[k].origin), Vec3::from(rays[k].direction));
+        (o, d, d.length(), o.length() * d.length())
+    })
+}
+
 /// `true` when no ray of a tile, whose pixels' rays lie between its four
 /// corner pixels' `corners` (a view's ray is affine in the pixel up to a
 /// positive scale: a pinhole's or a perspective map's direction from a
@@ -247,16 +258,16 @@ const TILE: usize = 16;
 /// with every corner on its negative side rules the whole tile out (with a
 /// relative margin of 10⁻⁴ of the side's magnitude against rounding,
 /// far above the ray caster's own).
-fn tile_misses(corners: &[&Ray; 4], t: &[Vec3; 3]) -> bool {
+fn tile_misses(corners: &Corners, t: &[Vec3; 3]) -> bool {
     let (mut pos, mut neg) = (false, false);
     for k in 0..3 {
         let (a, b) = (t[k], t[(k + 1) % 3]);
         let (e, m) = (b - a, a.cross(b));
+        let (ml, el) = (m.length(), e.length());
         let (mut all_pos, mut all_neg) = (true, true);
-        for r in corners {
-            let (o, d) = (Vec3::from(r.origin), Vec3::from(r.direction));
+        for &(o, d, dl, odl) in corners {
             let side = d.dot(m) + o.cross(d).dot(e);
-            let margin = 1e-4 * d.length() * (m.length() + o.length() * e.length());
+            let margin = 1e-4 * (dl * ml + odl * el);
             all_pos &= side > margin;
             all_neg &= side < -margin;
         }
@@ -309,8 +320,7 @@ pub fn closest_hits(view: &impl View, geo: &Geometry, triangles: &[[Vec3; 3]]) -
                 }
             }
             let mut best = vec![(f32::INFINITY, u32::MAX); rays.len()];
-            let row = x1 - x0;
-            let corners = [&rays[0], &rays[row - 1], &rays[rays.len() - row], &rays[rays.len() - 1]];
+            let corners = corners(&rays, x1 - x0);
             for &tri in &bins.bins[tile] {
                 if tile_misses(&corners, &triangles[tri as usize]) {
                     continue;

@@ -19,15 +19,15 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     let i = gid.y * image.width + gid.x;
     let texel = vec2i(i32(gid.x), i32(gid.y));
     var radiance = vec3f(0.0);
-    if textureLoad(position_tex, texel, 0).w > 0.0 {
-        let m = materials[u32(textureLoad(normal_tex, texel, 0).w)];
+    let p = textureLoad(position_tex, texel, 0);
+    if p.w > 0.0 {
+        let nm = textureLoad(normal_tex, texel, 0);
+        let m = materials[u32(nm.w)];
 {% if glossy %}
         let e = textureLoad(indirect_tex, texel, 0).xyz;
         if has_specular(m.metallic, m.f0, m.f90) {
-            let x = textureLoad(position_tex, texel, 0).xyz;
-            let n = normalize(textureLoad(normal_tex, texel, 0).xyz);
-            let l = primary_light_dir(x, params.origin, params.axis, params.mode == MAP_PERSPECTIVE);
-            let f = brdf_eval(m.albedo, m.metallic, m.f0, m.f90, m.alpha, n, normalize(image.eye - x), l);
+            let l = primary_light_dir(p.xyz, params.origin, params.axis, params.mode == MAP_PERSPECTIVE);
+            let f = brdf_eval(m.albedo, m.metallic, m.f0, m.f90, m.alpha, normalize(nm.xyz), normalize(image.eye - p.xyz), l);
             radiance = glossy_radiance(m.albedo, m.emission, m.metallic, f, direct[i].xyz, e, textureLoad(specular_tex, texel, 0).xyz);
         } else {
             radiance = diffuse_radiance(m.albedo, m.emission, direct[i].xyz + e);

@@ -94,10 +94,10 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e19 = image.width;
     let i = ((gid.y * _e19) + gid.x);
     let texel = vec2<i32>(i32(gid.x), i32(gid.y));
-    let _e33 = textureLoad(position_tex, texel, 0i);
-    if (_e33.w > 0f) {
-        let _e40 = textureLoad(normal_tex, texel, 0i);
-        let m = materials[u32(_e40.w)];
+    let p = textureLoad(position_tex, texel, 0i);
+    if (p.w > 0f) {
+        let nm = textureLoad(normal_tex, texel, 0i);
+        let m = materials[u32(nm.w)];
         let _e49 = direct[i];
         let _e53 = textureLoad(indirect_tex, texel, 0i);
         let _e56 = diffuse_radiance(m.albedo, m.emission, (_e49.xyz + _e53.xyz));

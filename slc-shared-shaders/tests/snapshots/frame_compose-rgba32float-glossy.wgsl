@@ -261,35 +261,31 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e19 = image.width;
     let i = ((gid.y * _e19) + gid.x);
     let texel = vec2<i32>(i32(gid.x), i32(gid.y));
-    let _e33 = textureLoad(position_tex, texel, 0i);
-    if (_e33.w > 0f) {
-        let _e40 = textureLoad(normal_tex, texel, 0i);
-        let m = materials[u32(_e40.w)];
+    let p = textureLoad(position_tex, texel, 0i);
+    if (p.w > 0f) {
+        let nm = textureLoad(normal_tex, texel, 0i);
+        let m = materials[u32(nm.w)];
         let _e47 = textureLoad(indirect_tex, texel, 0i);
         let e_1 = _e47.xyz;
         let _e52 = has_specular(m.metallic, m.f0_, m.f90_);
         if _e52 {
-            let _e55 = textureLoad(position_tex, texel, 0i);
-            let x_1 = _e55.xyz;
-            let _e59 = textureLoad(normal_tex, texel, 0i);
-            let n_2 = normalize(_e59.xyz);
-            let _e64 = params.origin;
-            let _e67 = params.axis;
-            let _e70 = params.mode;
-            let _e73 = primary_light_dir(x_1, _e64, _e67, (_e70 == MAP_PERSPECTIVE));
-            let _e81 = image.eye;
-            let _e84 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_2, normalize((_e81 - x_1)), _e73);
-            let _e90 = direct_1[i];
-            let _e94 = textureLoad(specular_tex, texel, 0i);
-            let _e96 = glossy_radiance(m.albedo, m.emission, m.metallic, _e84, _e90.xyz, e_1, _e94.xyz);
-            radiance = _e96;
+            let _e56 = params.origin;
+            let _e59 = params.axis;
+            let _e62 = params.mode;
+            let _e65 = primary_light_dir(p.xyz, _e56, _e59, (_e62 == MAP_PERSPECTIVE));
+            let _e75 = image.eye;
+            let _e79 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, normalize(nm.xyz), normalize((_e75 - p.xyz)), _e65);
+            let _e85 = direct_1[i];
+            let _e89 = textureLoad(specular_tex, texel, 0i);
+            let _e91 = glossy_radiance(m.albedo, m.emission, m.metallic, _e79, _e85.xyz, e_1, _e89.xyz);
+            radiance = _e91;
         } else {
-            let _e101 = direct_1[i];
-            let _e104 = diffuse_radiance(m.albedo, m.emission, (_e101.xyz + e_1));
-            radiance = _e104;
+            let _e96 = direct_1[i];
+            let _e99 = diffuse_radiance(m.albedo, m.emission, (_e96.xyz + e_1));
+            radiance = _e99;
         }
     }
-    let _e106 = radiance;
-    textureStore(out_tex, texel, vec4<f32>(_e106, 1f));
+    let _e101 = radiance;
+    textureStore(out_tex, texel, vec4<f32>(_e101, 1f));
     return;
 }

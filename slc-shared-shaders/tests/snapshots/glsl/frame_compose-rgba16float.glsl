@@ -96,10 +96,10 @@ void main() {
     uint _e19 = _group_0_binding_0_cs.width;
     uint i = ((gid.y * _e19) + gid.x);
     ivec2 texel = ivec2(int(gid.x), int(gid.y));
-    vec4 _e33 = texelFetch(_group_0_binding_1_cs, texel, 0);
-    if ((_e33.w > 0.0)) {
-        vec4 _e40 = texelFetch(_group_0_binding_2_cs, texel, 0);
-        GpuMaterial m = _group_0_binding_5_cs[uint(_e40.w)];
+    vec4 p = texelFetch(_group_0_binding_1_cs, texel, 0);
+    if ((p.w > 0.0)) {
+        vec4 nm = texelFetch(_group_0_binding_2_cs, texel, 0);
+        GpuMaterial m = _group_0_binding_5_cs[uint(nm.w)];
         vec4 _e49 = _group_0_binding_4_cs[i];
         vec4 _e53 = texelFetch(_group_0_binding_3_cs, texel, 0);
         vec3 _e56 = diffuse_radiance(m.albedo, m.emission, (_e49.xyz + _e53.xyz));

@@ -257,36 +257,32 @@ void main() {
     uint _e19 = _group_0_binding_0_cs.width;
     uint i = ((gid.y * _e19) + gid.x);
     ivec2 texel = ivec2(int(gid.x), int(gid.y));
-    vec4 _e33 = texelFetch(_group_0_binding_1_cs, texel, 0);
-    if ((_e33.w > 0.0)) {
-        vec4 _e40 = texelFetch(_group_0_binding_2_cs, texel, 0);
-        GpuMaterial m = _group_0_binding_5_cs[uint(_e40.w)];
+    vec4 p = texelFetch(_group_0_binding_1_cs, texel, 0);
+    if ((p.w > 0.0)) {
+        vec4 nm = texelFetch(_group_0_binding_2_cs, texel, 0);
+        GpuMaterial m = _group_0_binding_5_cs[uint(nm.w)];
         vec4 _e47 = texelFetch(_group_0_binding_3_cs, texel, 0);
         vec3 e_1 = _e47.xyz;
         bool _e52 = has_specular(m.metallic, m.f0_, m.f90_);
         if (_e52) {
-            vec4 _e55 = texelFetch(_group_0_binding_1_cs, texel, 0);
-            vec3 x_1 = _e55.xyz;
-            vec4 _e59 = texelFetch(_group_0_binding_2_cs, texel, 0);
-            vec3 n_2 = normalize(_e59.xyz);
-            vec3 _e64 = _group_0_binding_8_cs.origin;
-            vec3 _e67 = _group_0_binding_8_cs.axis;
-            uint _e70 = _group_0_binding_8_cs.mode;
-            vec3 _e73 = primary_light_dir(x_1, _e64, _e67, (_e70 == MAP_PERSPECTIVE));
-            vec3 _e81 = _group_0_binding_0_cs.eye;
-            vec3 _e84 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_2, normalize((_e81 - x_1)), _e73);
-            vec4 _e90 = _group_0_binding_4_cs[i];
-            vec4 _e94 = texelFetch(_group_0_binding_7_cs, texel, 0);
-            vec3 _e96 = glossy_radiance(m.albedo, m.emission, m.metallic, _e84, _e90.xyz, e_1, _e94.xyz);
-            radiance = _e96;
+            vec3 _e56 = _group_0_binding_8_cs.origin;
+            vec3 _e59 = _group_0_binding_8_cs.axis;
+            uint _e62 = _group_0_binding_8_cs.mode;
+            vec3 _e65 = primary_light_dir(p.xyz, _e56, _e59, (_e62 == MAP_PERSPECTIVE));
+            vec3 _e75 = _group_0_binding_0_cs.eye;
+            vec3 _e79 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, normalize(nm.xyz), normalize((_e75 - p.xyz)), _e65);
+            vec4 _e85 = _group_0_binding_4_cs[i];
+            vec4 _e89 = texelFetch(_group_0_binding_7_cs, texel, 0);
+            vec3 _e91 = glossy_radiance(m.albedo, m.emission, m.metallic, _e79, _e85.xyz, e_1, _e89.xyz);
+            radiance = _e91;
         } else {
-            vec4 _e101 = _group_0_binding_4_cs[i];
-            vec3 _e104 = diffuse_radiance(m.albedo, m.emission, (_e101.xyz + e_1));
-            radiance = _e104;
+            vec4 _e96 = _group_0_binding_4_cs[i];
+            vec3 _e99 = diffuse_radiance(m.albedo, m.emission, (_e96.xyz + e_1));
+            radiance = _e99;
         }
     }
-    vec3 _e106 = radiance;
-    imageStore(_group_0_binding_6_cs, texel, vec4(_e106, 1.0));
+    vec3 _e101 = radiance;
+    imageStore(_group_0_binding_6_cs, texel, vec4(_e101, 1.0));
     return;
 }
 

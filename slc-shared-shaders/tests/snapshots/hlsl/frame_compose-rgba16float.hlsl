@@ -104,10 +104,10 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint _e19 = image.width;
     uint i = ((gid.y * _e19) + gid.x);
     int2 texel = int2(int(gid.x), int(gid.y));
-    float4 _e33 = position_tex.Load(int3(texel, int(0)));
-    if ((_e33.w > 0.0)) {
-        float4 _e40 = normal_tex.Load(int3(texel, int(0)));
-        GpuMaterial m = ConstructGpuMaterial(asfloat(materials.Load3(naga_f2u32(_e40.w)*48+0)), asfloat(materials.Load(naga_f2u32(_e40.w)*48+12)), asfloat(materials.Load3(naga_f2u32(_e40.w)*48+16)), asfloat(materials.Load(naga_f2u32(_e40.w)*48+28)), asfloat(materials.Load3(naga_f2u32(_e40.w)*48+32)), asfloat(materials.Load(naga_f2u32(_e40.w)*48+44)));
+    float4 p = position_tex.Load(int3(texel, int(0)));
+    if ((p.w > 0.0)) {
+        float4 nm = normal_tex.Load(int3(texel, int(0)));
+        GpuMaterial m = ConstructGpuMaterial(asfloat(materials.Load3(naga_f2u32(nm.w)*48+0)), asfloat(materials.Load(naga_f2u32(nm.w)*48+12)), asfloat(materials.Load3(naga_f2u32(nm.w)*48+16)), asfloat(materials.Load(naga_f2u32(nm.w)*48+28)), asfloat(materials.Load3(naga_f2u32(nm.w)*48+32)), asfloat(materials.Load(naga_f2u32(nm.w)*48+44)));
         float4 _e49 = asfloat(direct.Load4(i*16));
         float4 _e53 = indirect_tex.Load(int3(texel, int(0)));
         const float3 _e56 = diffuse_radiance(m.albedo, m.emission, (_e49.xyz + _e53.xyz));

@@ -282,35 +282,31 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint _e19 = image.width;
     uint i = ((gid.y * _e19) + gid.x);
     int2 texel = int2(int(gid.x), int(gid.y));
-    float4 _e33 = position_tex.Load(int3(texel, int(0)));
-    if ((_e33.w > 0.0)) {
-        float4 _e40 = normal_tex.Load(int3(texel, int(0)));
-        GpuMaterial m = ConstructGpuMaterial(asfloat(materials.Load3(naga_f2u32(_e40.w)*48+0)), asfloat(materials.Load(naga_f2u32(_e40.w)*48+12)), asfloat(materials.Load3(naga_f2u32(_e40.w)*48+16)), asfloat(materials.Load(naga_f2u32(_e40.w)*48+28)), asfloat(materials.Load3(naga_f2u32(_e40.w)*48+32)), asfloat(materials.Load(naga_f2u32(_e40.w)*48+44)));
+    float4 p = position_tex.Load(int3(texel, int(0)));
+    if ((p.w > 0.0)) {
+        float4 nm = normal_tex.Load(int3(texel, int(0)));
+        GpuMaterial m = ConstructGpuMaterial(asfloat(materials.Load3(naga_f2u32(nm.w)*48+0)), asfloat(materials.Load(naga_f2u32(nm.w)*48+12)), asfloat(materials.Load3(naga_f2u32(nm.w)*48+16)), asfloat(materials.Load(naga_f2u32(nm.w)*48+28)), asfloat(materials.Load3(naga_f2u32(nm.w)*48+32)), asfloat(materials.Load(naga_f2u32(nm.w)*48+44)));
         float4 _e47 = indirect_tex.Load(int3(texel, int(0)));
         float3 e_1 = _e47.xyz;
         const bool _e52 = has_specular(m.metallic, m.f0_, m.f90_);
         if (_e52) {
-            float4 _e55 = position_tex.Load(int3(texel, int(0)));
-            float3 x_1 = _e55.xyz;
-            float4 _e59 = normal_tex.Load(int3(texel, int(0)));
-            float3 n_2 = normalize(_e59.xyz);
-            float3 _e64 = params.origin;
-            float3 _e67 = params.axis;
-            uint _e70 = params.mode;
-            const float3 _e73 = primary_light_dir(x_1, _e64, _e67, (_e70 == MAP_PERSPECTIVE));
-            float3 _e81 = image.eye;
-            const float3 _e84 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_2, normalize((_e81 - x_1)), _e73);
-            float4 _e90 = asfloat(direct_1.Load4(i*16));
-            float4 _e94 = specular_tex.Load(int3(texel, int(0)));
-            const float3 _e96 = glossy_radiance(m.albedo, m.emission, m.metallic, _e84, _e90.xyz, e_1, _e94.xyz);
-            radiance = _e96;
+            float3 _e56 = params.origin;
+            float3 _e59 = params.axis;
+            uint _e62 = params.mode;
+            const float3 _e65 = primary_light_dir(p.xyz, _e56, _e59, (_e62 == MAP_PERSPECTIVE));
+            float3 _e75 = image.eye;
+            const float3 _e79 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, normalize(nm.xyz), normalize((_e75 - p.xyz)), _e65);
+            float4 _e85 = asfloat(direct_1.Load4(i*16));
+            float4 _e89 = specular_tex.Load(int3(texel, int(0)));
+            const float3 _e91 = glossy_radiance(m.albedo, m.emission, m.metallic, _e79, _e85.xyz, e_1, _e89.xyz);
+            radiance = _e91;
         } else {
-            float4 _e101 = asfloat(direct_1.Load4(i*16));
-            const float3 _e104 = diffuse_radiance(m.albedo, m.emission, (_e101.xyz + e_1));
-            radiance = _e104;
+            float4 _e96 = asfloat(direct_1.Load4(i*16));
+            const float3 _e99 = diffuse_radiance(m.albedo, m.emission, (_e96.xyz + e_1));
+            radiance = _e99;
         }
     }
-    float3 _e106 = radiance;
-    out_tex[texel] = float4(_e106, 1.0);
+    float3 _e101 = radiance;
+    out_tex[texel] = float4(_e101, 1.0);
     return;
 }

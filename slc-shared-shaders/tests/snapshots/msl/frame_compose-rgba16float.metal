@@ -108,10 +108,10 @@ kernel void main_(
     uint _e19 = image.width;
     uint i = (gid.y * _e19) + gid.x;
     metal::int2 texel = metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y));
-    metal::float4 _e33 = position_tex.read(metal::uint2(texel), 0);
-    if (_e33.w > 0.0) {
-        metal::float4 _e40 = normal_tex.read(metal::uint2(texel), 0);
-        GpuMaterial m = materials[naga_f2u32(_e40.w)];
+    metal::float4 p = position_tex.read(metal::uint2(texel), 0);
+    if (p.w > 0.0) {
+        metal::float4 nm = normal_tex.read(metal::uint2(texel), 0);
+        GpuMaterial m = materials[naga_f2u32(nm.w)];
         metal::float4 _e49 = direct[i];
         metal::float4 _e53 = indirect_tex.read(metal::uint2(texel), 0);
         metal::float3 _e56 = diffuse_radiance(m.albedo, m.emission, _e49.xyz + _e53.xyz);

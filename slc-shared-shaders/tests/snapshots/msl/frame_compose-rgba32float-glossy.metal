@@ -335,35 +335,31 @@ kernel void main_(
     uint _e19 = image.width;
     uint i = (gid.y * _e19) + gid.x;
     metal::int2 texel = metal::int2(static_cast<int>(gid.x), static_cast<int>(gid.y));
-    metal::float4 _e33 = position_tex.read(metal::uint2(texel), 0);
-    if (_e33.w > 0.0) {
-        metal::float4 _e40 = normal_tex.read(metal::uint2(texel), 0);
-        GpuMaterial m = materials[naga_f2u32(_e40.w)];
+    metal::float4 p = position_tex.read(metal::uint2(texel), 0);
+    if (p.w > 0.0) {
+        metal::float4 nm = normal_tex.read(metal::uint2(texel), 0);
+        GpuMaterial m = materials[naga_f2u32(nm.w)];
         metal::float4 _e47 = indirect_tex.read(metal::uint2(texel), 0);
         metal::float3 e_1 = _e47.xyz;
         bool _e52 = has_specular(m.metallic, m.f0_, m.f90_);
         if (_e52) {
-            metal::float4 _e55 = position_tex.read(metal::uint2(texel), 0);
-            metal::float3 x_1 = _e55.xyz;
-            metal::float4 _e59 = normal_tex.read(metal::uint2(texel), 0);
-            metal::float3 n_2 = metal::normalize(_e59.xyz);
-            metal::float3 _e64 = params.origin;
-            metal::float3 _e67 = params.axis;
-            uint _e70 = params.mode;
-            metal::float3 _e73 = primary_light_dir(x_1, _e64, _e67, _e70 == MAP_PERSPECTIVE);
-            metal::float3 _e81 = image.eye;
-            metal::float3 _e84 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, n_2, metal::normalize(_e81 - x_1), _e73);
-            metal::float4 _e90 = direct_1[i];
-            metal::float4 _e94 = specular_tex.read(metal::uint2(texel), 0);
-            metal::float3 _e96 = glossy_radiance(m.albedo, m.emission, m.metallic, _e84, _e90.xyz, e_1, _e94.xyz);
-            radiance = _e96;
+            metal::float3 _e56 = params.origin;
+            metal::float3 _e59 = params.axis;
+            uint _e62 = params.mode;
+            metal::float3 _e65 = primary_light_dir(p.xyz, _e56, _e59, _e62 == MAP_PERSPECTIVE);
+            metal::float3 _e75 = image.eye;
+            metal::float3 _e79 = brdf_eval(m.albedo, m.metallic, m.f0_, m.f90_, m.alpha, metal::normalize(nm.xyz), metal::normalize(_e75 - p.xyz), _e65);
+            metal::float4 _e85 = direct_1[i];
+            metal::float4 _e89 = specular_tex.read(metal::uint2(texel), 0);
+            metal::float3 _e91 = glossy_radiance(m.albedo, m.emission, m.metallic, _e79, _e85.xyz, e_1, _e89.xyz);
+            radiance = _e91;
         } else {
-            metal::float4 _e101 = direct_1[i];
-            metal::float3 _e104 = diffuse_radiance(m.albedo, m.emission, _e101.xyz + e_1);
-            radiance = _e104;
+            metal::float4 _e96 = direct_1[i];
+            metal::float3 _e99 = diffuse_radiance(m.albedo, m.emission, _e96.xyz + e_1);
+            radiance = _e99;
         }
     }
-    metal::float3 _e106 = radiance;
-    out_tex.write(metal::float4(_e106, 1.0), metal::uint2(texel));
+    metal::float3 _e101 = radiance;
+    out_tex.write(metal::float4(_e101, 1.0), metal::uint2(texel));
     return;
 }
