@@ -93,13 +93,22 @@ crate::shared! {
     /// subtends (1 inside it or within `θ_b`). With the receiver's normal it
     /// is pbrt-v4's widened `cos θ'_i`; with a glossy receiver's mirror
     /// direction, how near the sphere comes to the lobe's peak.
+    ///
+    /// The sines come from `|v × d|/|v|` and `radius/|v|`, not from
+    /// `√(1 − cos²)`, which loses half the digits near 0 (a small sphere
+    /// near `d`): a glossy receiver's range scale ([`range_scale_toward`])
+    /// amplifies an error in this cosine by up to `1/α²`, and the BSH's walk
+    /// bounds it with a fixed margin (`crate::bsh::walk::bsh_inner_scale`).
     pub fn cone_cos_toward(center: vec3f, radius: f32, p: vec3f, d: vec3f) -> f32 {
         let v: vec3f = center - p;
         let dist2: f32 = dot(v, v);
-        let w: vec3f = select(vec3f(0.0, 0.0, 0.0), v / sqrt(dist2), dist2 > 0.0);
-        let cos_b: f32 = subtended_cos(dist2, radius * radius);
-        let cos_i: f32 = dot(w, d);
-        return cos_sub_clamped(safe_sqrt(1.0 - cos_i * cos_i), cos_i, safe_sqrt(1.0 - cos_b * cos_b), cos_b);
+        if dist2 <= radius * radius {
+            return 1.0;
+        }
+        let dist: f32 = sqrt(dist2);
+        let c: vec3f = cross(v, d);
+        let sin_b: f32 = radius / dist;
+        return cos_sub_clamped(sqrt(dot(c, c)) / dist, dot(v, d) / dist, sin_b, safe_sqrt(1.0 - sin_b * sin_b));
     }
 
     /// The factor `s` by which a receiver at `p` with mirror direction `r`
@@ -371,9 +380,12 @@ mod tests {
     }
 
     /// [`light_importance`] written out equals [`emitter_importance`] times
-    /// the receiver's widened cosine ([`cone_cos_toward`]) bit for bit.
+    /// the receiver's widened cosine ([`cone_cos_toward`]) up to the
+    /// rounding of the receiver's sine (`√(1 − cos²)` in the former, as
+    /// pbrt-v4 computes it, `|v × n|/|v|` in the latter).
     #[test]
     fn light_importance_is_the_product_of_its_halves() {
+        let mut worst = 0.0f32;
         let mut s = 99u32;
         let mut r = || {
             s = s.wrapping_mul(1664525).wrapping_add(1013904223);
@@ -392,8 +404,11 @@ mod tests {
                 want *= cone_cos_toward(center, radius, p, n).max(0.0);
             }
             let got = light_importance(center, radius, phi, axis, cos_o, cos_e, p, n);
-            assert_eq!(got.to_bits(), want.max(0.0).to_bits(), "case {k}: {got} vs {want}");
+            worst = worst.max((got - want.max(0.0)).abs() / want.abs().max(1e-30));
         }
+        // √(1 − cos²) (pbrt-v4's `SafeSqrt`) keeps half the digits where the
+        // centre lies near the normal: 0.4% here.
+        assert!(worst < 1e-2, "relative difference up to {worst}");
     }
 
     /// A spot light of equal inner and outer angles (a hard-edged beam,

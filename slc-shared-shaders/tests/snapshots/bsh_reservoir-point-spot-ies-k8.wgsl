@@ -110,7 +110,7 @@ var<storage> bsh_nodes: array<BshNode>;
 @group(0) @binding(3) 
 var<storage> lights: array<GpuLight>;
 @group(0) @binding(5) 
-var<storage> r2_3: array<f32>;
+var<storage> r2_2: array<f32>;
 @group(0) @binding(4) 
 var<storage> rt2_2: array<f32>;
 @group(0) @binding(0) 
@@ -183,8 +183,8 @@ fn slc_keep(r2_: f32, d2_1: f32) -> bool {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_2: vec3<f32>) -> bool {
-    let v = (x_2 - c);
-    return (dot(v, v) <= (r * r));
+    let v_1 = (x_2 - c);
+    return (dot(v_1, v_1) <= (r * r));
 }
 
 fn inverse_square(d2_2: f32) -> f32 {
@@ -201,11 +201,11 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local: bool;
     var local_1: bool;
 
-    let v_1 = (x_3 - y);
-    let d2_4 = dot(v_1, v_1);
-    let _e7 = slc_keep(r2_1, d2_4);
+    let v_2 = (x_3 - y);
+    let d2_5 = dot(v_2, v_2);
+    let _e7 = slc_keep(r2_1, d2_5);
     if !(!(_e7)) {
-        local = !((d2_4 > 0f));
+        local = !((d2_5 > 0f));
     } else {
         local = true;
     }
@@ -213,7 +213,7 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_3 = (v_1 / vec3(sqrt(d2_4)));
+    let w_3 = (v_2 / vec3(sqrt(d2_5)));
     let cos_x_1 = -(dot(n, w_3));
     if !((cos_x_1 <= 0f)) {
         local_1 = (dot(ng, w_3) >= 0f);
@@ -239,15 +239,15 @@ fn atan_portable(x_4: f32) -> f32 {
     var base: f32 = 0f;
     var t: f32;
 
-    let a_6 = abs(x_4);
-    t = a_6;
-    if (a_6 > 2.4142137f) {
+    let a_7 = abs(x_4);
+    t = a_7;
+    if (a_7 > 2.4142137f) {
         base = 1.5707964f;
-        t = (-1f / a_6);
+        t = (-1f / a_7);
     } else {
-        if (a_6 > 0.41421357f) {
+        if (a_7 > 0.41421357f) {
             base = 0.7853982f;
-            t = ((a_6 - 1f) / (a_6 + 1f));
+            t = ((a_7 - 1f) / (a_7 + 1f));
         }
     }
     let _e18 = t;
@@ -256,8 +256,8 @@ fn atan_portable(x_4: f32) -> f32 {
     let _e21 = base;
     let _e33 = t;
     let _e35 = t;
-    let r_5 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
-    return select(r_5, -(r_5), (x_4 < 0f));
+    let r_6 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
+    return select(r_6, -(r_6), (x_4 < 0f));
 }
 
 fn atan2_portable(y_1: f32, x_5: f32) -> f32 {
@@ -403,11 +403,11 @@ fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_2: f32) -> f32 {
     let _e54 = ies_lerp_t(_e51, _e53, _e32);
     let _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
     let _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
-    let a_7 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
+    let a_8 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
     let _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     let _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
     let b_5 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
-    return ((a_7 * (1f - _e54)) + (b_5 * _e54));
+    return ((a_8 * (1f - _e54)) + (b_5 * _e54));
 }
 
 fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
@@ -499,21 +499,18 @@ fn safe_sqrt(x_8: f32) -> f32 {
     return sqrt(max(x_8, 0f));
 }
 
-fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
-    let _e5 = safe_sqrt((1f - (r2_2 / dist2_)));
-    return select(_e5, -1f, (dist2_ <= r2_2));
-}
-
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d: vec3<f32>) -> f32 {
-    let v_2 = (center - p);
-    let dist2_1 = dot(v_2, v_2);
-    let w_4 = select(vec3<f32>(0f, 0f, 0f), (v_2 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
-    let _e17 = subtended_cos(dist2_1, (radius * radius));
-    let cos_i = dot(w_4, d);
-    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
-    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
-    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    let v_3 = (center - p);
+    let dist2_ = dot(v_3, v_3);
+    if (dist2_ <= (radius * radius)) {
+        return 1f;
+    }
+    let dist = sqrt(dist2_);
+    let c_6 = cross(v_3, d);
+    let sin_b_1 = (radius / dist);
+    let _e20 = safe_sqrt((1f - (sin_b_1 * sin_b_1)));
+    let _e21 = cos_sub_clamped((sqrt(dot(c_6, c_6)) / dist), (dot(v_3, d) / dist), sin_b_1, _e20);
+    return _e21;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -583,9 +580,9 @@ fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_3: vec3<f32>, 
         return -1f;
     }
     let q = cross(s_2, e1_);
-    let v_3 = (dot(d_2, q) * inv);
-    if !((v_3 < 0f)) {
-        local_4 = ((u_2 + v_3) > 1f);
+    let v_4 = (dot(d_2, q) * inv);
+    if !((v_4 < 0f)) {
+        local_4 = ((u_2 + v_4) > 1f);
     } else {
         local_4 = true;
     }
@@ -731,50 +728,77 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_reaches(node_3: BshNode, x_10: vec3<f32>, r_2: vec3<f32>, rl_2: vec4<f32>) -> bool {
+fn bsh_inner_scale(a_6: f32, v: vec3<f32>, d2_4: f32, r_2: vec3<f32>, rl_2: vec4<f32>) -> f32 {
     var local_6: bool;
     var local_7: bool;
+
+    let vr = dot(v, r_2);
+    let h2_ = (d2_4 - (a_6 * a_6));
+    if !((h2_ <= 0f)) {
+        if (vr >= 0f) {
+            local_7 = ((vr * vr) >= h2_);
+        } else {
+            local_7 = false;
+        }
+        let _e20 = local_7;
+        local_6 = _e20;
+    } else {
+        local_6 = true;
+    }
+    let _e22 = local_6;
+    if _e22 {
+        return (rl_2.w * rl_2.w);
+    }
+    let c_7 = cross(v, r_2);
+    let cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_6)) / d2_4);
+    let _e36 = range_scale_at(rl_2, (cos_t_1 + 0.000002f));
+    return _e36;
+}
+
+fn bsh_reaches(node_3: BshNode, x_10: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_8: bool;
+    var local_9: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_10);
     if _e6 {
         return true;
     }
-    if !((rl_2.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_2.w * 1.0001f)), x_10);
-        local_6 = !(_e20);
+    if !((rl_3.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_10);
+        local_8 = !(_e20);
     } else {
-        local_6 = true;
+        local_8 = true;
     }
-    let _e23 = local_6;
+    let _e23 = local_8;
     if _e23 {
         return false;
     }
     let _e25 = bsh_range_bound(node_3);
-    let v_4 = (x_10 - node_3.center);
-    let d2_5 = dot(v_4, v_4);
-    let reach_max = (node_3.extent + ((rl_2.w * 1.001f) * _e25));
-    if (d2_5 > (reach_max * reach_max)) {
+    let v_5 = (x_10 - node_3.center);
+    let d2_6 = dot(v_5, v_5);
+    let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
+    if (d2_6 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_10, r_3);
         let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         let _e47 = sphere_contains_point(node_3.center, _e46, x_10);
         return _e47;
     }
-    let _e50 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_5), d2_6, r_3, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if (d2_5 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_7 = (d2_5 <= (reach * reach));
+    if (d2_6 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_9 = (d2_6 <= (reach * reach));
     } else {
-        local_7 = false;
+        local_9 = false;
     }
-    let _e67 = local_7;
+    let _e67 = local_9;
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_11: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> u32 {
+fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_11: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>) -> u32 {
     var i_3: u32;
 
     i_3 = start_1;
@@ -787,7 +811,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_11: vec3<f32>, r_3: vec3<f32
         {
             let _e9 = i_3;
             let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_11, r_3, rl_3);
+            let _e11 = bsh_reaches(_e10, x_11, r_4, rl_4);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
                     let _e15 = i_3;
@@ -802,7 +826,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_11: vec3<f32>, r_3: vec3<f32
     return BSH_NONE;
 }
 
-fn bsh_collect(x_12: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, seed_1: u32) -> Picks {
+fn bsh_collect(x_12: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
     var picks: Picks;
     var h_1: u32;
     var i_4: u32;
@@ -810,7 +834,7 @@ fn bsh_collect(x_12: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, seed_1: u32) ->
     picks.n = 0u;
     h_1 = seed_1;
     let _e10 = bsh_first(BSH);
-    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_4, rl_4);
+    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_5, rl_5);
     i_4 = _e11;
     loop {
         let _e13 = i_4;
@@ -844,7 +868,7 @@ fn bsh_collect(x_12: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, seed_1: u32) ->
         continuing {
             let _e44 = i_4;
             let _e47 = bsh_nodes[_e44].next;
-            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_4, rl_4);
+            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_5, rl_5);
             i_4 = _e48;
         }
     }
@@ -854,36 +878,36 @@ fn bsh_collect(x_12: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, seed_1: u32) ->
 
 fn connect(li: u32, x_13: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32) -> Connection {
     var c_4: Connection;
-    var local_8: bool;
+    var local_10: bool;
 
     c_4.e = vec3(0f);
     let l_2 = lights[li];
     let _e17 = light_point(l_2, u1_1, u2_1);
     c_4.y = _e17;
     let _e20 = c_4.y;
-    let _e23 = r2_3[li];
+    let _e23 = r2_2[li];
     let _e25 = connection_cosine(x_13, _e20, n_6, ng_1, (s_1 * _e23));
     c_4.cos_x = _e25;
     let _e27 = c_4.cos_x;
     if !((_e27 <= 0f)) {
         let _e36 = c_4.y;
         let _e37 = occluded((x_13 + (ng_1 * eps)), _e36);
-        local_8 = _e37;
+        local_10 = _e37;
     } else {
-        local_8 = true;
+        local_10 = true;
     }
-    let _e39 = local_8;
+    let _e39 = local_10;
     if _e39 {
         let _e40 = c_4;
         return _e40;
     }
     let _e42 = c_4.y;
-    let v_5 = (x_13 - _e42);
-    let d2_6 = dot(v_5, v_5);
-    let _e49 = light_intensity(l_2, (v_5 / vec3(sqrt(d2_6))));
+    let v_6 = (x_13 - _e42);
+    let d2_7 = dot(v_6, v_6);
+    let _e49 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_7))));
     let _e51 = c_4.cos_x;
     let _e54 = rt2_2[li];
-    let _e56 = connection_factor(_e51, d2_6, (s_1 * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_7, (s_1 * _e54), w_res);
     c_4.e = (_e49 * _e56);
     let _e58 = c_4;
     return _e58;

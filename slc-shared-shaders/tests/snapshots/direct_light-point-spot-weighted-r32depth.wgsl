@@ -186,8 +186,8 @@ fn slc_keep(r2_: f32, d2_1: f32) -> bool {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
-    let v = (x_1 - c);
-    return (dot(v, v) <= (r_1 * r_1));
+    let v_1 = (x_1 - c);
+    return (dot(v_1, v_1) <= (r_1 * r_1));
 }
 
 fn inverse_square(d2_2: f32) -> f32 {
@@ -204,11 +204,11 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_2: bool;
     var local_3: bool;
 
-    let v_1 = (x_2 - y);
-    let d2_5 = dot(v_1, v_1);
-    let _e7 = slc_keep(r2_1, d2_5);
+    let v_2 = (x_2 - y);
+    let d2_6 = dot(v_2, v_2);
+    let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_2 = !((d2_5 > 0f));
+        local_2 = !((d2_6 > 0f));
     } else {
         local_2 = true;
     }
@@ -216,7 +216,7 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_5 = (v_1 / vec3(sqrt(d2_5)));
+    let w_5 = (v_2 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n, w_5));
     if !((cos_x_1 <= 0f)) {
         local_3 = (dot(ng, w_5) >= 0f);
@@ -330,11 +330,11 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
-    let v_2 = (p - center);
-    let dist2_1 = dot(v_2, v_2);
+    let v_3 = (p - center);
+    let dist2_1 = dot(v_3, v_3);
     let r2_4 = (radius * radius);
-    let d2_6 = max(max(dist2_1, r2_4), MIN_D2_);
-    let wi = select(vec3<f32>(0f, 0f, 0f), (v_2 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let d2_7 = max(max(dist2_1, r2_4), MIN_D2_);
+    let wi = select(vec3<f32>(0f, 0f, 0f), (v_3 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi);
     let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
     let _e26 = subtended_cos(dist2_1, r2_4);
@@ -343,7 +343,7 @@ fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: 
     let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
     let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
     let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4<f32>(_e37, d2_6, _e26, _e30);
+    return vec4<f32>(_e37, d2_7, _e26, _e30);
 }
 
 fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
@@ -355,15 +355,17 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d: vec3<f32>) -> f32 {
-    let v_3 = (center_2 - p_2);
-    let dist2_2 = dot(v_3, v_3);
-    let w_6 = select(vec3<f32>(0f, 0f, 0f), (v_3 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
-    let _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
-    let cos_i = dot(w_6, d);
-    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
-    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
-    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    let v_4 = (center_2 - p_2);
+    let dist2_2 = dot(v_4, v_4);
+    if (dist2_2 <= (radius_2 * radius_2)) {
+        return 1f;
+    }
+    let dist = sqrt(dist2_2);
+    let c_2 = cross(v_4, d);
+    let sin_b_2 = (radius_2 / dist);
+    let _e20 = safe_sqrt((1f - (sin_b_2 * sin_b_2)));
+    let _e21 = cos_sub_clamped((sqrt(dot(c_2, c_2)) / dist), (dot(v_4, d) / dist), sin_b_2, _e20);
+    return _e21;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -389,12 +391,12 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_1, n_1) > 0f) {
-        let v_4 = (center_4 - p_4);
-        let dist2_3 = dot(v_4, v_4);
-        let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_4 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_1);
+        let v_5 = (center_4 - p_4);
+        let dist2_3 = dot(v_5, v_5);
+        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_5 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_1);
         let _e33 = imp;
-        let _e37 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
-        let _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        let _e37 = safe_sqrt((1f - (cos_i * cos_i)));
+        let _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
         imp = (_e33 * max(_e40, 0f));
     }
     let _e44 = imp;
@@ -429,14 +431,14 @@ fn candidate_weight(importance: f32, rt2_2: f32, d2_4: f32) -> f32 {
 }
 
 fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_6: vec3<f32>, n_3: vec3<f32>, r_4: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
-    let v_5 = (p_6 - center_6);
+    let v_6 = (p_6 - center_6);
     if (lobe_6.y <= 0f) {
         let _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_5, v_5));
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_6, v_6));
         return _e19;
     }
     let _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3, r_4, lobe_6);
-    let _e22 = candidate_weight(_e20, rt2_3, dot(v_5, v_5));
+    let _e22 = candidate_weight(_e20, rt2_3, dot(v_6, v_6));
     return _e22;
 }
 
@@ -480,50 +482,77 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_5: vec3<f32>, rl_2: vec4<f32>) -> bool {
+fn bsh_inner_scale(a_3: f32, v: vec3<f32>, d2_5: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
     var local_5: bool;
     var local_6: bool;
+
+    let vr = dot(v, r_5);
+    let h2_ = (d2_5 - (a_3 * a_3));
+    if !((h2_ <= 0f)) {
+        if (vr >= 0f) {
+            local_6 = ((vr * vr) >= h2_);
+        } else {
+            local_6 = false;
+        }
+        let _e20 = local_6;
+        local_5 = _e20;
+    } else {
+        local_5 = true;
+    }
+    let _e22 = local_5;
+    if _e22 {
+        return (rl_2.w * rl_2.w);
+    }
+    let c_3 = cross(v, r_5);
+    let cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_3, c_3)) * a_3)) / d2_5);
+    let _e36 = range_scale_at(rl_2, (cos_t_1 + 0.000002f));
+    return _e36;
+}
+
+fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_7: bool;
+    var local_8: bool;
 
     let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
     if _e6 {
         return true;
     }
-    if !((rl_2.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_2.w * 1.0001f)), x_4);
-        local_5 = !(_e20);
+    if !((rl_3.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001f)), x_4);
+        local_7 = !(_e20);
     } else {
-        local_5 = true;
+        local_7 = true;
     }
-    let _e23 = local_5;
+    let _e23 = local_7;
     if _e23 {
         return false;
     }
     let _e25 = bsh_range_bound(node_2);
-    let v_6 = (x_4 - node_2.center);
-    let d2_7 = dot(v_6, v_6);
-    let reach_max = (node_2.extent + ((rl_2.w * 1.001f) * _e25));
-    if (d2_7 > (reach_max * reach_max)) {
+    let v_7 = (x_4 - node_2.center);
+    let d2_8 = dot(v_7, v_7);
+    let reach_max = (node_2.extent + ((rl_3.w * 1.001f) * _e25));
+    if (d2_8 > (reach_max * reach_max)) {
         return false;
     }
     if (node_2.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+        let _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_4, r_6);
         let _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
         let _e47 = sphere_contains_point(node_2.center, _e46, x_4);
         return _e47;
     }
-    let _e50 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+    let _e50 = bsh_inner_scale(node_2.extent, -(v_7), d2_8, r_6, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_6 = (d2_7 <= (reach * reach));
+    if (d2_8 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_8 = (d2_8 <= (reach * reach));
     } else {
-        local_6 = false;
+        local_8 = false;
     }
-    let _e67 = local_6;
+    let _e67 = local_8;
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> u32 {
+fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> u32 {
     var i_1: u32;
 
     i_1 = start;
@@ -536,7 +565,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_6: vec3<f32>, 
         {
             let _e9 = i_1;
             let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_5, r_6, rl_3);
+            let _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
                     let _e15 = i_1;
@@ -553,7 +582,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_6: vec3<f32>, 
 
 fn connect(li: u32, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32) -> Connection {
     var c_1: Connection;
-    var local_7: bool;
+    var local_9: bool;
 
     c_1.e = vec3(0f);
     let l_2 = lights[li];
@@ -567,42 +596,42 @@ fn connect(li: u32, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_r
     if !((_e27 <= 0f)) {
         let _e36 = c_1.y;
         let _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
-        local_7 = _e37;
+        local_9 = _e37;
     } else {
-        local_7 = true;
+        local_9 = true;
     }
-    let _e39 = local_7;
+    let _e39 = local_9;
     if _e39 {
         let _e40 = c_1;
         return _e40;
     }
     let _e42 = c_1.y;
-    let v_7 = (x_6 - _e42);
-    let d2_8 = dot(v_7, v_7);
-    let _e49 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
+    let v_8 = (x_6 - _e42);
+    let d2_9 = dot(v_8, v_8);
+    let _e49 = light_intensity(l_2, (v_8 / vec3(sqrt(d2_9))));
     let _e51 = c_1.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
     c_1.e = (_e49 * _e56);
     let _e58 = c_1;
     return _e58;
 }
 
-fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> f32 {
-    let c_2 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_4, c_2.center, c_2.radius, x_7, r_7);
+fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_4 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_5, c_4.center, c_4.radius, x_7, r_8);
     return _e9;
 }
 
-fn light_weight(li_2: u32, x_8: vec3<f32>, n_5: vec3<f32>, r_8: vec3<f32>, lobe_7: vec4<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_3 = light_cones[li_2];
-    let _e15 = light_range_scale(li_2, x_8, r_8, rl_5);
+fn light_weight(li_2: u32, x_8: vec3<f32>, n_5: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
+    let c_5 = light_cones[li_2];
+    let _e15 = light_range_scale(li_2, x_8, r_9, rl_6);
     let _e18 = rt2_4[li_2];
-    let _e20 = cone_weight(c_3.center, c_3.radius, c_3.phi, c_3.axis, c_3.cos_o, c_3.cos_e, (_e15 * _e18), x_8, n_5, r_8, lobe_7);
+    let _e20 = cone_weight(c_5.center, c_5.radius, c_5.phi, c_5.axis, c_5.cos_o, c_5.cos_e, (_e15 * _e18), x_8, n_5, r_9, lobe_7);
     return _e20;
 }
 
-fn bsh_weighted_collect(x_9: vec3<f32>, n_6: vec3<f32>, r_9: vec3<f32>, lobe_8: vec4<f32>, rl_6: vec4<f32>, h0_: u32) -> WeightedPicks {
+fn bsh_weighted_collect(x_9: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>, rl_7: vec4<f32>, h0_: u32) -> WeightedPicks {
     var picks: WeightedPicks;
     var h_1: u32;
     var b_3: u32;
@@ -612,7 +641,7 @@ fn bsh_weighted_collect(x_9: vec3<f32>, n_6: vec3<f32>, r_9: vec3<f32>, lobe_8: 
     picks.n = 0u;
     h_1 = h0_;
     let _e14 = bsh_first(BSH);
-    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_9, rl_6);
+    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_10, rl_7);
     b_3 = _e15;
     loop {
         let _e17 = b_3;
@@ -625,7 +654,7 @@ fn bsh_weighted_collect(x_9: vec3<f32>, n_6: vec3<f32>, r_9: vec3<f32>, lobe_8: 
             picks.n = (_e21 + 1u);
             let _e25 = b_3;
             let li_4 = bsh_nodes[_e25].light;
-            let _e29 = light_weight(li_4, x_9, n_6, r_9, lobe_8, rl_6);
+            let _e29 = light_weight(li_4, x_9, n_6, r_10, lobe_8, rl_7);
             if (_e29 > 0f) {
                 let _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -661,7 +690,7 @@ fn bsh_weighted_collect(x_9: vec3<f32>, n_6: vec3<f32>, r_9: vec3<f32>, lobe_8: 
         continuing {
             let _e58 = b_3;
             let _e61 = bsh_nodes[_e58].next;
-            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_9, rl_6);
+            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_10, rl_7);
             b_3 = _e62;
         }
     }
@@ -698,7 +727,7 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return _e32;
 }
 
-fn shade_pick(li_3: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_10: vec3<f32>, rl_7: vec4<f32>, m_1: Material, w_4: f32, u1_2: f32, u2_2: f32) -> Shaded {
+fn shade_pick(li_3: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_1: Material, w_4: f32, u1_2: f32, u2_2: f32) -> Shaded {
     var s_2: Shaded;
 
     let _e12 = connect(li_3, x_10, n_7, n_7, 1f, w_4, u1_2, u2_2, 0f);
@@ -709,8 +738,8 @@ fn shade_pick(li_3: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_10: vec3<f32>, rl_7:
     return _e21;
 }
 
-fn add(a_3: Shaded, b_4: Shaded) -> Shaded {
-    return Shaded((a_3.e + b_4.e), (a_3.diffuse + b_4.diffuse), (a_3.specular + b_4.specular));
+fn add(a_4: Shaded, b_4: Shaded) -> Shaded {
+    return Shaded((a_4.e + b_4.e), (a_4.diffuse + b_4.diffuse), (a_4.specular + b_4.specular));
 }
 
 @compute @workgroup_size(8, 8, 1) 

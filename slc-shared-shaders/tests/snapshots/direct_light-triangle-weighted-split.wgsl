@@ -192,8 +192,8 @@ fn slc_keep(r2_: f32, d2_1: f32) -> bool {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
-    let v_3 = (x_1 - c);
-    return (dot(v_3, v_3) <= (r_1 * r_1));
+    let v_4 = (x_1 - c);
+    return (dot(v_4, v_4) <= (r_1 * r_1));
 }
 
 fn inverse_square(d2_2: f32) -> f32 {
@@ -210,11 +210,11 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_2: bool;
     var local_3: bool;
 
-    let v_4 = (x_2 - y);
-    let d2_5 = dot(v_4, v_4);
-    let _e7 = slc_keep(r2_1, d2_5);
+    let v_5 = (x_2 - y);
+    let d2_6 = dot(v_5, v_5);
+    let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_2 = !((d2_5 > 0f));
+        local_2 = !((d2_6 > 0f));
     } else {
         local_2 = true;
     }
@@ -222,7 +222,7 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_6 = (v_4 / vec3(sqrt(d2_5)));
+    let w_6 = (v_5 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n, w_6));
     if !((cos_x_1 <= 0f)) {
         local_3 = (dot(ng, w_6) >= 0f);
@@ -457,11 +457,11 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
-    let v_5 = (p - center);
-    let dist2_1 = dot(v_5, v_5);
+    let v_6 = (p - center);
+    let dist2_1 = dot(v_6, v_6);
     let r2_4 = (radius * radius);
-    let d2_6 = max(max(dist2_1, r2_4), MIN_D2_);
-    let wi = select(vec3<f32>(0f, 0f, 0f), (v_5 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let d2_7 = max(max(dist2_1, r2_4), MIN_D2_);
+    let wi = select(vec3<f32>(0f, 0f, 0f), (v_6 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi);
     let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
     let _e26 = subtended_cos(dist2_1, r2_4);
@@ -470,7 +470,7 @@ fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: 
     let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
     let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
     let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4<f32>(_e37, d2_6, _e26, _e30);
+    return vec4<f32>(_e37, d2_7, _e26, _e30);
 }
 
 fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
@@ -482,15 +482,17 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d: vec3<f32>) -> f32 {
-    let v_6 = (center_2 - p_2);
-    let dist2_2 = dot(v_6, v_6);
-    let w_7 = select(vec3<f32>(0f, 0f, 0f), (v_6 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
-    let _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
-    let cos_i = dot(w_7, d);
-    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
-    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
-    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    let v_7 = (center_2 - p_2);
+    let dist2_2 = dot(v_7, v_7);
+    if (dist2_2 <= (radius_2 * radius_2)) {
+        return 1f;
+    }
+    let dist = sqrt(dist2_2);
+    let c_7 = cross(v_7, d);
+    let sin_b_2 = (radius_2 / dist);
+    let _e20 = safe_sqrt((1f - (sin_b_2 * sin_b_2)));
+    let _e21 = cos_sub_clamped((sqrt(dot(c_7, c_7)) / dist), (dot(v_7, d) / dist), sin_b_2, _e20);
+    return _e21;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -516,12 +518,12 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_4, n_4) > 0f) {
-        let v_7 = (center_4 - p_4);
-        let dist2_3 = dot(v_7, v_7);
-        let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_7 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_4);
+        let v_8 = (center_4 - p_4);
+        let dist2_3 = dot(v_8, v_8);
+        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_8 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_4);
         let _e33 = imp;
-        let _e37 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
-        let _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        let _e37 = safe_sqrt((1f - (cos_i * cos_i)));
+        let _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
         imp = (_e33 * max(_e40, 0f));
     }
     let _e44 = imp;
@@ -556,14 +558,14 @@ fn candidate_weight(importance: f32, rt2_2: f32, d2_4: f32) -> f32 {
 }
 
 fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_6: vec3<f32>, n_6: vec3<f32>, r_4: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
-    let v_8 = (p_6 - center_6);
+    let v_9 = (p_6 - center_6);
     if (lobe_6.y <= 0f) {
         let _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_8, v_8));
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_9, v_9));
         return _e19;
     }
     let _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6, r_4, lobe_6);
-    let _e22 = candidate_weight(_e20, rt2_3, dot(v_8, v_8));
+    let _e22 = candidate_weight(_e20, rt2_3, dot(v_9, v_9));
     return _e22;
 }
 
@@ -626,50 +628,77 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_5: vec3<f32>, rl_2: vec4<f32>) -> bool {
+fn bsh_inner_scale(a_5: f32, v_3: vec3<f32>, d2_5: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
     var local_11: bool;
     var local_12: bool;
+
+    let vr = dot(v_3, r_5);
+    let h2_ = (d2_5 - (a_5 * a_5));
+    if !((h2_ <= 0f)) {
+        if (vr >= 0f) {
+            local_12 = ((vr * vr) >= h2_);
+        } else {
+            local_12 = false;
+        }
+        let _e20 = local_12;
+        local_11 = _e20;
+    } else {
+        local_11 = true;
+    }
+    let _e22 = local_11;
+    if _e22 {
+        return (rl_2.w * rl_2.w);
+    }
+    let c_8 = cross(v_3, r_5);
+    let cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_5)) / d2_5);
+    let _e36 = range_scale_at(rl_2, (cos_t_1 + 0.000002f));
+    return _e36;
+}
+
+fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_13: bool;
+    var local_14: bool;
 
     let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
     if _e6 {
         return true;
     }
-    if !((rl_2.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_2.w * 1.0001f)), x_4);
-        local_11 = !(_e20);
+    if !((rl_3.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001f)), x_4);
+        local_13 = !(_e20);
     } else {
-        local_11 = true;
+        local_13 = true;
     }
-    let _e23 = local_11;
+    let _e23 = local_13;
     if _e23 {
         return false;
     }
     let _e25 = bsh_range_bound(node_2);
-    let v_9 = (x_4 - node_2.center);
-    let d2_7 = dot(v_9, v_9);
-    let reach_max = (node_2.extent + ((rl_2.w * 1.001f) * _e25));
-    if (d2_7 > (reach_max * reach_max)) {
+    let v_10 = (x_4 - node_2.center);
+    let d2_8 = dot(v_10, v_10);
+    let reach_max = (node_2.extent + ((rl_3.w * 1.001f) * _e25));
+    if (d2_8 > (reach_max * reach_max)) {
         return false;
     }
     if (node_2.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+        let _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_4, r_6);
         let _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
         let _e47 = sphere_contains_point(node_2.center, _e46, x_4);
         return _e47;
     }
-    let _e50 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+    let _e50 = bsh_inner_scale(node_2.extent, -(v_10), d2_8, r_6, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_12 = (d2_7 <= (reach * reach));
+    if (d2_8 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_14 = (d2_8 <= (reach * reach));
     } else {
-        local_12 = false;
+        local_14 = false;
     }
-    let _e67 = local_12;
+    let _e67 = local_14;
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> u32 {
+fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> u32 {
     var i_1: u32;
 
     i_1 = start;
@@ -682,7 +711,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_6: vec3<f32>, 
         {
             let _e9 = i_1;
             let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_5, r_6, rl_3);
+            let _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
                     let _e15 = i_1;
@@ -699,7 +728,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_6: vec3<f32>, 
 
 fn connect(li: u32, x_6: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
     var c_4: Connection;
-    var local_13: bool;
+    var local_15: bool;
 
     c_4.e = vec3(0f);
     let l_4 = lights[li];
@@ -713,42 +742,42 @@ fn connect(li: u32, x_6: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_r
     if !((_e27 <= 0f)) {
         let _e36 = c_4.y;
         let _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
-        local_13 = _e37;
+        local_15 = _e37;
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    let _e39 = local_13;
+    let _e39 = local_15;
     if _e39 {
         let _e40 = c_4;
         return _e40;
     }
     let _e42 = c_4.y;
-    let v_10 = (x_6 - _e42);
-    let d2_8 = dot(v_10, v_10);
-    let _e49 = light_intensity(l_4, (v_10 / vec3(sqrt(d2_8))));
+    let v_11 = (x_6 - _e42);
+    let d2_9 = dot(v_11, v_11);
+    let _e49 = light_intensity(l_4, (v_11 / vec3(sqrt(d2_9))));
     let _e51 = c_4.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     let _e58 = c_4;
     return _e58;
 }
 
-fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_7: vec3<f32>, rl_4: vec4<f32>) -> f32 {
-    let c_7 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_4, c_7.center, c_7.radius, x_7, r_7);
+fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
+    let c_9 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_7, r_8);
     return _e9;
 }
 
-fn light_weight(li_2: u32, x_8: vec3<f32>, n_8: vec3<f32>, r_8: vec3<f32>, lobe_7: vec4<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_8 = light_cones[li_2];
-    let _e15 = light_range_scale(li_2, x_8, r_8, rl_5);
+fn light_weight(li_2: u32, x_8: vec3<f32>, n_8: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
+    let c_10 = light_cones[li_2];
+    let _e15 = light_range_scale(li_2, x_8, r_9, rl_6);
     let _e18 = rt2_4[li_2];
-    let _e20 = cone_weight(c_8.center, c_8.radius, c_8.phi, c_8.axis, c_8.cos_o, c_8.cos_e, (_e15 * _e18), x_8, n_8, r_8, lobe_7);
+    let _e20 = cone_weight(c_10.center, c_10.radius, c_10.phi, c_10.axis, c_10.cos_o, c_10.cos_e, (_e15 * _e18), x_8, n_8, r_9, lobe_7);
     return _e20;
 }
 
-fn bsh_weighted_collect(x_9: vec3<f32>, n_9: vec3<f32>, r_9: vec3<f32>, lobe_8: vec4<f32>, rl_6: vec4<f32>, h0_: u32) -> WeightedPicks {
+fn bsh_weighted_collect(x_9: vec3<f32>, n_9: vec3<f32>, r_10: vec3<f32>, lobe_8: vec4<f32>, rl_7: vec4<f32>, h0_: u32) -> WeightedPicks {
     var picks: WeightedPicks;
     var h_1: u32;
     var b_5: u32;
@@ -758,7 +787,7 @@ fn bsh_weighted_collect(x_9: vec3<f32>, n_9: vec3<f32>, r_9: vec3<f32>, lobe_8: 
     picks.n = 0u;
     h_1 = h0_;
     let _e14 = bsh_first(BSH);
-    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_9, rl_6);
+    let _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_10, rl_7);
     b_5 = _e15;
     loop {
         let _e17 = b_5;
@@ -771,7 +800,7 @@ fn bsh_weighted_collect(x_9: vec3<f32>, n_9: vec3<f32>, r_9: vec3<f32>, lobe_8: 
             picks.n = (_e21 + 1u);
             let _e25 = b_5;
             let li_4 = bsh_nodes[_e25].light;
-            let _e29 = light_weight(li_4, x_9, n_9, r_9, lobe_8, rl_6);
+            let _e29 = light_weight(li_4, x_9, n_9, r_10, lobe_8, rl_7);
             if (_e29 > 0f) {
                 let _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -807,7 +836,7 @@ fn bsh_weighted_collect(x_9: vec3<f32>, n_9: vec3<f32>, r_9: vec3<f32>, lobe_8: 
         continuing {
             let _e58 = b_5;
             let _e61 = bsh_nodes[_e58].next;
-            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_9, rl_6);
+            let _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_10, rl_7);
             b_5 = _e62;
         }
     }
@@ -822,10 +851,10 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return select(vec4(0f), vec4<f32>(p_7.xyz, 1f), (p_7.w > 0f));
 }
 
-fn shade_pick(li_3: u32, x_10: vec3<f32>, n_10: vec3<f32>, r_10: vec3<f32>, rl_7: vec4<f32>, m_1: Material, w_5: f32, u1_3: f32, u2_3: f32) -> Shaded {
+fn shade_pick(li_3: u32, x_10: vec3<f32>, n_10: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_1: Material, w_5: f32, u1_3: f32, u2_3: f32) -> Shaded {
     var s_2: Shaded;
 
-    let _e10 = light_range_scale(li_3, x_10, r_10, rl_7);
+    let _e10 = light_range_scale(li_3, x_10, r_11, rl_8);
     let _e12 = connect(li_3, x_10, n_10, n_10, _e10, w_5, u1_3, u2_3, 0f);
     s_2.e = _e12.e;
     s_2.diffuse = vec3(0f);
@@ -846,8 +875,8 @@ fn shade_pick(li_3: u32, x_10: vec3<f32>, n_10: vec3<f32>, r_10: vec3<f32>, rl_7
     return _e55;
 }
 
-fn add(a_5: Shaded, b_6: Shaded) -> Shaded {
-    return Shaded((a_5.e + b_6.e), (a_5.diffuse + b_6.diffuse), (a_5.specular + b_6.specular));
+fn add(a_6: Shaded, b_6: Shaded) -> Shaded {
+    return Shaded((a_6.e + b_6.e), (a_6.diffuse + b_6.diffuse), (a_6.specular + b_6.specular));
 }
 
 @compute @workgroup_size(8, 8, 1) 

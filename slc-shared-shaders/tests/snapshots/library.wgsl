@@ -1086,13 +1086,15 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
     let v_19 = (center_2 - p_2);
     let dist2_2 = dot(v_19, v_19);
-    let w_14 = select(vec3<f32>(0f, 0f, 0f), (v_19 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
-    let _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
-    let cos_i = dot(w_14, d_1);
-    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
-    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
-    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    if (dist2_2 <= (radius_2 * radius_2)) {
+        return 1f;
+    }
+    let dist = sqrt(dist2_2);
+    let c_18 = cross(v_19, d_1);
+    let sin_b_2 = (radius_2 / dist);
+    let _e20 = safe_sqrt((1f - (sin_b_2 * sin_b_2)));
+    let _e21 = cos_sub_clamped((sqrt(dot(c_18, c_18)) / dist), (dot(v_19, d_1) / dist), sin_b_2, _e20);
+    return _e21;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -1120,10 +1122,10 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     if (dot(n_21, n_21) > 0f) {
         let v_20 = (center_4 - p_4);
         let dist2_3 = dot(v_20, v_20);
-        let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_20 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_21);
+        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_20 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_21);
         let _e33 = imp;
-        let _e37 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
-        let _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        let _e37 = safe_sqrt((1f - (cos_i * cos_i)));
+        let _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
         imp = (_e33 * max(_e40, 0f));
     }
     let _e44 = imp;
@@ -1565,8 +1567,8 @@ fn ortho_texel_width(extent_4: f32, size_9: f32) -> f32 {
 }
 
 fn shadow_bias(texel: f32, cos_light_1: f32) -> f32 {
-    let c_18 = clamp(cos_light_1, 0.02f, 1f);
-    return (texel * (1.5f + (sqrt((1f - (c_18 * c_18))) / c_18)));
+    let c_19 = clamp(cos_light_1, 0.02f, 1f);
+    return (texel * (1.5f + (sqrt((1f - (c_19 * c_19))) / c_19)));
 }
 
 fn shadow_lit(d_5: f32, d_map: f32, bias: f32) -> bool {

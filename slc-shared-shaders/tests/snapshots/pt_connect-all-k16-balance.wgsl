@@ -144,7 +144,7 @@ var<storage> bsh_nodes: array<BshNode>;
 @group(0) @binding(2) 
 var<storage> lights: array<GpuLight>;
 @group(0) @binding(4) 
-var<storage> r2_3: array<f32>;
+var<storage> r2_2: array<f32>;
 @group(0) @binding(3) 
 var<storage> rt2_4: array<f32>;
 @group(1) @binding(2) 
@@ -228,8 +228,8 @@ fn slc_keep(r2_: f32, d2_2: f32) -> bool {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_2: vec3<f32>) -> bool {
-    let v_6 = (x_2 - c);
-    return (dot(v_6, v_6) <= (r * r));
+    let v_7 = (x_2 - c);
+    return (dot(v_7, v_7) <= (r * r));
 }
 
 fn inverse_square(d2_3: f32) -> f32 {
@@ -246,11 +246,11 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local: bool;
     var local_1: bool;
 
-    let v_7 = (x_3 - y);
-    let d2_7 = dot(v_7, v_7);
-    let _e7 = slc_keep(r2_1, d2_7);
+    let v_8 = (x_3 - y);
+    let d2_8 = dot(v_8, v_8);
+    let _e7 = slc_keep(r2_1, d2_8);
     if !(!(_e7)) {
-        local = !((d2_7 > 0f));
+        local = !((d2_8 > 0f));
     } else {
         local = true;
     }
@@ -258,7 +258,7 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_7 = (v_7 / vec3(sqrt(d2_7)));
+    let w_7 = (v_8 / vec3(sqrt(d2_8)));
     let cos_x_1 = -(dot(n, w_7));
     if !((cos_x_1 <= 0f)) {
         local_1 = (dot(ng, w_7) >= 0f);
@@ -307,15 +307,15 @@ fn atan_portable(x_4: f32) -> f32 {
     var base: f32 = 0f;
     var t: f32;
 
-    let a_8 = abs(x_4);
-    t = a_8;
-    if (a_8 > 2.4142137f) {
+    let a_9 = abs(x_4);
+    t = a_9;
+    if (a_9 > 2.4142137f) {
         base = 1.5707964f;
-        t = (-1f / a_8);
+        t = (-1f / a_9);
     } else {
-        if (a_8 > 0.41421357f) {
+        if (a_9 > 0.41421357f) {
             base = 0.7853982f;
-            t = ((a_8 - 1f) / (a_8 + 1f));
+            t = ((a_9 - 1f) / (a_9 + 1f));
         }
     }
     let _e18 = t;
@@ -324,8 +324,8 @@ fn atan_portable(x_4: f32) -> f32 {
     let _e21 = base;
     let _e33 = t;
     let _e35 = t;
-    let r_10 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
-    return select(r_10, -(r_10), (x_4 < 0f));
+    let r_11 = (_e21 + (((((((((0.080537446f * z) - 0.13877685f) * z) + 0.19977711f) * z) - 0.3333295f) * z) * _e33) + _e35));
+    return select(r_11, -(r_11), (x_4 < 0f));
 }
 
 fn atan2_portable(y_1: f32, x_5: f32) -> f32 {
@@ -471,11 +471,11 @@ fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_3: f32) -> f32 {
     let _e54 = ies_lerp_t(_e51, _e53, _e32);
     let _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
     let _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
-    let a_9 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
+    let a_10 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
     let _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     let _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
     let b_7 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
-    return ((a_9 * (1f - _e54)) + (b_7 * _e54));
+    return ((a_10 * (1f - _e54)) + (b_7 * _e54));
 }
 
 fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
@@ -613,14 +613,14 @@ fn cosine_pdf(cos_theta_1: f32) -> f32 {
 
 fn onb_tangent(n_8: vec3<f32>) -> vec3<f32> {
     let s_3 = select(-1f, 1f, (n_8.z >= 0f));
-    let a_10 = (-1f / (s_3 + n_8.z));
-    return vec3<f32>((1f + (((s_3 * n_8.x) * n_8.x) * a_10)), (((s_3 * n_8.x) * n_8.y) * a_10), (-(s_3) * n_8.x));
+    let a_11 = (-1f / (s_3 + n_8.z));
+    return vec3<f32>((1f + (((s_3 * n_8.x) * n_8.x) * a_11)), (((s_3 * n_8.x) * n_8.y) * a_11), (-(s_3) * n_8.x));
 }
 
 fn onb_bitangent(n_9: vec3<f32>) -> vec3<f32> {
     let s_4 = select(-1f, 1f, (n_9.z >= 0f));
-    let a_11 = (-1f / (s_4 + n_9.z));
-    return vec3<f32>(((n_9.x * n_9.y) * a_11), (s_4 + ((n_9.y * n_9.y) * a_11)), -(n_9.y));
+    let a_12 = (-1f / (s_4 + n_9.z));
+    return vec3<f32>(((n_9.x * n_9.y) * a_12), (s_4 + ((n_9.y * n_9.y) * a_12)), -(n_9.y));
 }
 
 fn onb_to_local(n_10: vec3<f32>, w_4: vec3<f32>) -> vec3<f32> {
@@ -805,9 +805,9 @@ fn mirror_dir(n_13: vec3<f32>, v_3: vec3<f32>) -> vec3<f32> {
 }
 
 fn bounded_vndf_k(wi: vec3<f32>, alpha_6: f32) -> f32 {
-    let a_12 = saturate(alpha_6);
+    let a_13 = saturate(alpha_6);
     let s_5 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    let a2_2 = (a_12 * a_12);
+    let a2_2 = (a_13 * a_13);
     let s2_ = (s_5 * s_5);
     return (((1f - a2_2) * s2_) / (s2_ + ((a2_2 * wi.z) * wi.z)));
 }
@@ -854,21 +854,18 @@ fn safe_sqrt(x_8: f32) -> f32 {
     return sqrt(max(x_8, 0f));
 }
 
-fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
-    let _e5 = safe_sqrt((1f - (r2_2 / dist2_)));
-    return select(_e5, -1f, (dist2_ <= r2_2));
-}
-
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d: vec3<f32>) -> f32 {
-    let v_8 = (center - p);
-    let dist2_1 = dot(v_8, v_8);
-    let w_8 = select(vec3<f32>(0f, 0f, 0f), (v_8 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
-    let _e17 = subtended_cos(dist2_1, (radius * radius));
-    let cos_i = dot(w_8, d);
-    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
-    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
-    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    let v_9 = (center - p);
+    let dist2_ = dot(v_9, v_9);
+    if (dist2_ <= (radius * radius)) {
+        return 1f;
+    }
+    let dist = sqrt(dist2_);
+    let c_12 = cross(v_9, d);
+    let sin_b_1 = (radius / dist);
+    let _e20 = safe_sqrt((1f - (sin_b_1 * sin_b_1)));
+    let _e21 = cos_sub_clamped((sqrt(dot(c_12, c_12)) / dist), (dot(v_9, d) / dist), sin_b_1, _e20);
+    return _e21;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -955,9 +952,9 @@ fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, 
         return -1f;
     }
     let q = cross(s_6, e1_);
-    let v_9 = (dot(d_2, q) * inv_1);
-    if !((v_9 < 0f)) {
-        local_14 = ((u_2 + v_9) > 1f);
+    let v_10 = (dot(d_2, q) * inv_1);
+    if !((v_10 < 0f)) {
+        local_14 = ((u_2 + v_10) > 1f);
     } else {
         local_14 = true;
     }
@@ -1150,50 +1147,77 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_reaches(node_3: BshNode, x_10: vec3<f32>, r_2: vec3<f32>, rl_2: vec4<f32>) -> bool {
+fn bsh_inner_scale(a_8: f32, v_6: vec3<f32>, d2_7: f32, r_2: vec3<f32>, rl_2: vec4<f32>) -> f32 {
     var local_18: bool;
     var local_19: bool;
+
+    let vr = dot(v_6, r_2);
+    let h2_ = (d2_7 - (a_8 * a_8));
+    if !((h2_ <= 0f)) {
+        if (vr >= 0f) {
+            local_19 = ((vr * vr) >= h2_);
+        } else {
+            local_19 = false;
+        }
+        let _e20 = local_19;
+        local_18 = _e20;
+    } else {
+        local_18 = true;
+    }
+    let _e22 = local_18;
+    if _e22 {
+        return (rl_2.w * rl_2.w);
+    }
+    let c_13 = cross(v_6, r_2);
+    let cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_13, c_13)) * a_8)) / d2_7);
+    let _e36 = range_scale_at(rl_2, (cos_t_1 + 0.000002f));
+    return _e36;
+}
+
+fn bsh_reaches(node_3: BshNode, x_10: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
+    var local_20: bool;
+    var local_21: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_10);
     if _e6 {
         return true;
     }
-    if !((rl_2.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_2.w * 1.0001f)), x_10);
-        local_18 = !(_e20);
+    if !((rl_3.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_10);
+        local_20 = !(_e20);
     } else {
-        local_18 = true;
+        local_20 = true;
     }
-    let _e23 = local_18;
+    let _e23 = local_20;
     if _e23 {
         return false;
     }
     let _e25 = bsh_range_bound(node_3);
-    let v_10 = (x_10 - node_3.center);
-    let d2_8 = dot(v_10, v_10);
-    let reach_max = (node_3.extent + ((rl_2.w * 1.001f) * _e25));
-    if (d2_8 > (reach_max * reach_max)) {
+    let v_11 = (x_10 - node_3.center);
+    let d2_9 = dot(v_11, v_11);
+    let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
+    if (d2_9 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_10, r_3);
         let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         let _e47 = sphere_contains_point(node_3.center, _e46, x_10);
         return _e47;
     }
-    let _e50 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_11), d2_9, r_3, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if (d2_8 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_19 = (d2_8 <= (reach * reach));
+    if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_21 = (d2_9 <= (reach * reach));
     } else {
-        local_19 = false;
+        local_21 = false;
     }
-    let _e67 = local_19;
+    let _e67 = local_21;
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_11: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> u32 {
+fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_11: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>) -> u32 {
     var i_3: u32;
 
     i_3 = start_1;
@@ -1206,7 +1230,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_11: vec3<f32>, r_3: vec3<f32
         {
             let _e9 = i_3;
             let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_11, r_3, rl_3);
+            let _e11 = bsh_reaches(_e10, x_11, r_4, rl_4);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
                     let _e15 = i_3;
@@ -1221,7 +1245,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_11: vec3<f32>, r_3: vec3<f32
     return BSH_NONE;
 }
 
-fn bsh_collect(x_12: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, seed_1: u32) -> Picks {
+fn bsh_collect(x_12: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
     var picks: Picks;
     var h_1: u32;
     var i_4: u32;
@@ -1229,7 +1253,7 @@ fn bsh_collect(x_12: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, seed_1: u32) ->
     picks.n = 0u;
     h_1 = seed_1;
     let _e10 = bsh_first(BSH);
-    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_4, rl_4);
+    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_5, rl_5);
     i_4 = _e11;
     loop {
         let _e13 = i_4;
@@ -1263,7 +1287,7 @@ fn bsh_collect(x_12: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, seed_1: u32) ->
         continuing {
             let _e44 = i_4;
             let _e47 = bsh_nodes[_e44].next;
-            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_4, rl_4);
+            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_5, rl_5);
             i_4 = _e48;
         }
     }
@@ -1273,36 +1297,36 @@ fn bsh_collect(x_12: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, seed_1: u32) ->
 
 fn connect(li: u32, x_13: vec3<f32>, n_15: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
     var c_7: Connection;
-    var local_20: bool;
+    var local_22: bool;
 
     c_7.e = vec3(0f);
     let l_8 = lights[li];
     let _e17 = light_point(l_8, u1_2, u2_2);
     c_7.y = _e17;
     let _e20 = c_7.y;
-    let _e23 = r2_3[li];
+    let _e23 = r2_2[li];
     let _e25 = connection_cosine(x_13, _e20, n_15, ng_1, (s_1 * _e23));
     c_7.cos_x = _e25;
     let _e27 = c_7.cos_x;
     if !((_e27 <= 0f)) {
         let _e36 = c_7.y;
         let _e37 = occluded((x_13 + (ng_1 * eps)), _e36);
-        local_20 = _e37;
+        local_22 = _e37;
     } else {
-        local_20 = true;
+        local_22 = true;
     }
-    let _e39 = local_20;
+    let _e39 = local_22;
     if _e39 {
         let _e40 = c_7;
         return _e40;
     }
     let _e42 = c_7.y;
-    let v_11 = (x_13 - _e42);
-    let d2_9 = dot(v_11, v_11);
-    let _e49 = light_intensity(l_8, (v_11 / vec3(sqrt(d2_9))));
+    let v_12 = (x_13 - _e42);
+    let d2_10 = dot(v_12, v_12);
+    let _e49 = light_intensity(l_8, (v_12 / vec3(sqrt(d2_10))));
     let _e51 = c_7.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_9, (s_1 * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_10, (s_1 * _e54), w_res);
     c_7.e = (_e49 * _e56);
     let _e58 = c_7;
     return _e58;
@@ -1313,40 +1337,40 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     return _e2;
 }
 
-fn light_range_scale(li_1: u32, x_14: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_12 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_5, c_12.center, c_12.radius, x_14, r_5);
+fn light_range_scale(li_1: u32, x_14: vec3<f32>, r_6: vec3<f32>, rl_6: vec4<f32>) -> f32 {
+    let c_14 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_6, c_14.center, c_14.radius, x_14, r_6);
     return _e9;
 }
 
-fn select_pdf(li_2: u32, x_15: vec3<f32>, n_16: vec3<f32>, r_6: vec3<f32>, lobe_5: vec4<f32>, rl_6: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
+fn select_pdf(li_2: u32, x_15: vec3<f32>, n_16: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>, rl_7: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
     let _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-fn light_pdf_selected(li_3: u32, x_16: vec3<f32>, r_7: vec3<f32>, rl_7: vec4<f32>, y_2: vec3<f32>, sel: f32) -> f32 {
+fn light_pdf_selected(li_3: u32, x_16: vec3<f32>, r_8: vec3<f32>, rl_8: vec4<f32>, y_2: vec3<f32>, sel: f32) -> f32 {
     let l_9 = lights[li_3];
-    let v_12 = (x_16 - y_2);
-    let d2_10 = dot(v_12, v_12);
+    let v_13 = (x_16 - y_2);
+    let d2_11 = dot(v_13, v_13);
     let _e11 = light_normal(l_9);
-    let cos_y_1 = select(0f, dot(_e11, (v_12 / vec3(sqrt(d2_10)))), (d2_10 > 0f));
-    let _e20 = light_range_scale(li_3, x_16, r_7, rl_7);
+    let cos_y_1 = select(0f, dot(_e11, (v_13 / vec3(sqrt(d2_11)))), (d2_11 > 0f));
+    let _e20 = light_range_scale(li_3, x_16, r_8, rl_8);
     let _e23 = rt2_4[li_3];
     let _e25 = light_area(l_9);
-    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_10, _e25, cos_y_1);
+    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_11, _e25, cos_y_1);
     return _e26;
 }
 
-fn light_pdf(li_4: u32, x_17: vec3<f32>, n_17: vec3<f32>, r_8: vec3<f32>, lobe_6: vec4<f32>, rl_8: vec4<f32>, y_3: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
-    let _e9 = select_pdf(li_4, x_17, n_17, r_8, lobe_6, rl_8, nee_1, in_range_2);
-    let _e10 = light_pdf_selected(li_4, x_17, r_8, rl_8, y_3, _e9);
+fn light_pdf(li_4: u32, x_17: vec3<f32>, n_17: vec3<f32>, r_9: vec3<f32>, lobe_6: vec4<f32>, rl_9: vec4<f32>, y_3: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let _e9 = select_pdf(li_4, x_17, n_17, r_9, lobe_6, rl_9, nee_1, in_range_2);
+    let _e10 = light_pdf_selected(li_4, x_17, r_9, rl_9, y_3, _e9);
     return _e10;
 }
 
-fn shade_pick(li_5: u32, x_18: vec3<f32>, n_18: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_9: vec4<f32>, w_6: f32, nee_2: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
+fn shade_pick(li_5: u32, x_18: vec3<f32>, n_18: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_10: vec4<f32>, w_6: f32, nee_2: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e13 = light_range_scale(li_5, x_18, r_9, rl_9);
+    let _e13 = light_range_scale(li_5, x_18, r_10, rl_10);
     let _e16 = params.eps;
     let _e17 = connect(li_5, x_18, n_18, ng_2, _e13, w_6, u1_3, u2_3, _e16);
     if (_e17.cos_x <= 0f) {
@@ -1356,7 +1380,7 @@ fn shade_pick(li_5: u32, x_18: vec3<f32>, n_18: vec3<f32>, ng_2: vec3<f32>, m: G
     let _e30 = lights[li_5];
     let _e31 = light_area(_e30);
     if (_e31 > 0f) {
-        let _e36 = light_pdf(li_5, x_18, n_18, r_9, lobe_7, rl_9, _e17.y, nee_2, true);
+        let _e36 = light_pdf(li_5, x_18, n_18, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
         let _e38 = specular_probability(lobe_7);
         let _e39 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e38);
         let _e40 = mis_weight(_e36, _e39);

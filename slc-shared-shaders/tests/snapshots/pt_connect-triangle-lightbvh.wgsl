@@ -593,13 +593,15 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d: vec3<f32>) -> f32 {
     let v_8 = (center_2 - p_2);
     let dist2_2 = dot(v_8, v_8);
-    let w_6 = select(vec3<f32>(0f, 0f, 0f), (v_8 / vec3(sqrt(dist2_2))), (dist2_2 > 0f));
-    let _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
-    let cos_i = dot(w_6, d);
-    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
-    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
-    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    if (dist2_2 <= (radius_2 * radius_2)) {
+        return 1f;
+    }
+    let dist = sqrt(dist2_2);
+    let c_8 = cross(v_8, d);
+    let sin_b_2 = (radius_2 / dist);
+    let _e20 = safe_sqrt((1f - (sin_b_2 * sin_b_2)));
+    let _e21 = cos_sub_clamped((sqrt(dot(c_8, c_8)) / dist), (dot(v_8, d) / dist), sin_b_2, _e20);
+    return _e21;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -627,10 +629,10 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     if (dot(n_9, n_9) > 0f) {
         let v_9 = (center_4 - p_4);
         let dist2_3 = dot(v_9, v_9);
-        let cos_i_1 = dot(select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_9);
+        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_9);
         let _e33 = imp;
-        let _e37 = safe_sqrt((1f - (cos_i_1 * cos_i_1)));
-        let _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        let _e37 = safe_sqrt((1f - (cos_i * cos_i)));
+        let _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
         imp = (_e33 * max(_e40, 0f));
     }
     let _e44 = imp;
@@ -959,8 +961,8 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
 }
 
 fn light_range_scale(li_1: u32, x_5: vec3<f32>, r_3: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    let c_8 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_2, c_8.center, c_8.radius, x_5, r_3);
+    let c_9 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_5, r_3);
     return _e9;
 }
 

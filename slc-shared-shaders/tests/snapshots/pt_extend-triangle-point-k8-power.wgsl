@@ -224,8 +224,8 @@ fn rr_probability(rt2_: f32, d2_: f32) -> f32 {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_1: vec3<f32>) -> bool {
-    let v_8 = (x_1 - c);
-    return (dot(v_8, v_8) <= (r * r));
+    let v_9 = (x_1 - c);
+    return (dot(v_9, v_9) <= (r * r));
 }
 
 fn area_to_solid_angle_pdf(pdf_area: f32, d2_1: f32, cos_light: f32) -> f32 {
@@ -318,14 +318,14 @@ fn cosine_pdf(cos_theta: f32) -> f32 {
 
 fn onb_tangent(n_1: vec3<f32>) -> vec3<f32> {
     let s_1 = select(-1f, 1f, (n_1.z >= 0f));
-    let a_5 = (-1f / (s_1 + n_1.z));
-    return vec3<f32>((1f + (((s_1 * n_1.x) * n_1.x) * a_5)), (((s_1 * n_1.x) * n_1.y) * a_5), (-(s_1) * n_1.x));
+    let a_6 = (-1f / (s_1 + n_1.z));
+    return vec3<f32>((1f + (((s_1 * n_1.x) * n_1.x) * a_6)), (((s_1 * n_1.x) * n_1.y) * a_6), (-(s_1) * n_1.x));
 }
 
 fn onb_bitangent(n_2: vec3<f32>) -> vec3<f32> {
     let s_2 = select(-1f, 1f, (n_2.z >= 0f));
-    let a_6 = (-1f / (s_2 + n_2.z));
-    return vec3<f32>(((n_2.x * n_2.y) * a_6), (s_2 + ((n_2.y * n_2.y) * a_6)), -(n_2.y));
+    let a_7 = (-1f / (s_2 + n_2.z));
+    return vec3<f32>(((n_2.x * n_2.y) * a_7), (s_2 + ((n_2.y * n_2.y) * a_7)), -(n_2.y));
 }
 
 fn onb_to_world(n_3: vec3<f32>, d: vec3<f32>) -> vec3<f32> {
@@ -341,9 +341,9 @@ fn onb_to_local(n_4: vec3<f32>, w_1: vec3<f32>) -> vec3<f32> {
 }
 
 fn cosine_direction(n_5: vec3<f32>, u1_: f32, u2_: f32) -> vec3<f32> {
-    let r_7 = sqrt(u1_);
+    let r_8 = sqrt(u1_);
     let phi = (6.2831855f * u2_);
-    let _e16 = onb_to_world(n_5, vec3<f32>((r_7 * cos(phi)), (r_7 * sin(phi)), sqrt(max((1f - u1_), 0f))));
+    let _e16 = onb_to_world(n_5, vec3<f32>((r_8 * cos(phi)), (r_8 * sin(phi)), sqrt(max((1f - u1_), 0f))));
     return normalize(_e16);
 }
 
@@ -523,9 +523,9 @@ fn mirror_dir(n_8: vec3<f32>, v_4: vec3<f32>) -> vec3<f32> {
 }
 
 fn bounded_vndf_k(wi: vec3<f32>, alpha_6: f32) -> f32 {
-    let a_7 = saturate(alpha_6);
+    let a_8 = saturate(alpha_6);
     let s_3 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    let a2_3 = (a_7 * a_7);
+    let a2_3 = (a_8 * a_8);
     let s2_ = (s_3 * s_3);
     return (((1f - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
@@ -598,21 +598,18 @@ fn safe_sqrt(x_2: f32) -> f32 {
     return sqrt(max(x_2, 0f));
 }
 
-fn subtended_cos(dist2_: f32, r2_: f32) -> f32 {
-    let _e5 = safe_sqrt((1f - (r2_ / dist2_)));
-    return select(_e5, -1f, (dist2_ <= r2_));
-}
-
 fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_9 = (center - p);
-    let dist2_1 = dot(v_9, v_9);
-    let w_4 = select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
-    let _e17 = subtended_cos(dist2_1, (radius * radius));
-    let cos_i = dot(w_4, d_1);
-    let _e22 = safe_sqrt((1f - (cos_i * cos_i)));
-    let _e26 = safe_sqrt((1f - (_e17 * _e17)));
-    let _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    let v_10 = (center - p);
+    let dist2_ = dot(v_10, v_10);
+    if (dist2_ <= (radius * radius)) {
+        return 1f;
+    }
+    let dist = sqrt(dist2_);
+    let c_8 = cross(v_10, d_1);
+    let sin_b_1 = (radius / dist);
+    let _e20 = safe_sqrt((1f - (sin_b_1 * sin_b_1)));
+    let _e21 = cos_sub_clamped((sqrt(dot(c_8, c_8)) / dist), (dot(v_10, d_1) / dist), sin_b_1, _e20);
+    return _e21;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -733,9 +730,9 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, 
         return -1f;
     }
     let q_1 = cross(s_5, e1_1);
-    let v_10 = (dot(d_3, q_1) * inv_1);
-    if !((v_10 < 0f)) {
-        local_15 = ((u_3 + v_10) > 1f);
+    let v_11 = (dot(d_3, q_1) * inv_1);
+    if !((v_11 < 0f)) {
+        local_15 = ((u_3 + v_11) > 1f);
     } else {
         local_15 = true;
     }
@@ -905,8 +902,8 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
 }
 
 fn light_range_scale(li: u32, x_4: vec3<f32>, r_2: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    let c_8 = light_cones[li];
-    let _e9 = range_scale_toward(rl_2, c_8.center, c_8.radius, x_4, r_2);
+    let c_9 = light_cones[li];
+    let _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_4, r_2);
     return _e9;
 }
 
@@ -917,14 +914,14 @@ fn select_pdf(li_1: u32, x_5: vec3<f32>, n_13: vec3<f32>, r_3: vec3<f32>, lobe_5
 
 fn light_pdf_selected(li_2: u32, x_6: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, y: vec3<f32>, sel: f32) -> f32 {
     let l_6 = lights[li_2];
-    let v_11 = (x_6 - y);
-    let d2_3 = dot(v_11, v_11);
+    let v_12 = (x_6 - y);
+    let d2_4 = dot(v_12, v_12);
     let _e11 = light_normal(l_6);
-    let cos_y_1 = select(0f, dot(_e11, (v_11 / vec3(sqrt(d2_3)))), (d2_3 > 0f));
+    let cos_y_1 = select(0f, dot(_e11, (v_12 / vec3(sqrt(d2_4)))), (d2_4 > 0f));
     let _e20 = light_range_scale(li_2, x_6, r_4, rl_4);
     let _e23 = rt2_2[li_2];
     let _e25 = light_area(l_6);
-    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_3, _e25, cos_y_1);
+    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_4, _e25, cos_y_1);
     return _e26;
 }
 
@@ -934,46 +931,73 @@ fn light_pdf(li_3: u32, x_7: vec3<f32>, n_14: vec3<f32>, r_5: vec3<f32>, lobe_6:
     return _e10;
 }
 
-fn bsh_reaches(node_3: BshNode, x_8: vec3<f32>, r_6: vec3<f32>, rl_6: vec4<f32>) -> bool {
+fn bsh_inner_scale(a_5: f32, v_8: vec3<f32>, d2_3: f32, r_6: vec3<f32>, rl_6: vec4<f32>) -> f32 {
     var local_20: bool;
     var local_21: bool;
+
+    let vr = dot(v_8, r_6);
+    let h2_ = (d2_3 - (a_5 * a_5));
+    if !((h2_ <= 0f)) {
+        if (vr >= 0f) {
+            local_21 = ((vr * vr) >= h2_);
+        } else {
+            local_21 = false;
+        }
+        let _e20 = local_21;
+        local_20 = _e20;
+    } else {
+        local_20 = true;
+    }
+    let _e22 = local_20;
+    if _e22 {
+        return (rl_6.w * rl_6.w);
+    }
+    let c_10 = cross(v_8, r_6);
+    let cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_10, c_10)) * a_5)) / d2_3);
+    let _e36 = range_scale_at(rl_6, (cos_t_1 + 0.000002f));
+    return _e36;
+}
+
+fn bsh_reaches(node_3: BshNode, x_8: vec3<f32>, r_7: vec3<f32>, rl_7: vec4<f32>) -> bool {
+    var local_22: bool;
+    var local_23: bool;
 
     let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_8);
     if _e6 {
         return true;
     }
-    if !((rl_6.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_6.w * 1.0001f)), x_8);
-        local_20 = !(_e20);
+    if !((rl_7.w <= 1f)) {
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_7.w * 1.0001f)), x_8);
+        local_22 = !(_e20);
     } else {
-        local_20 = true;
+        local_22 = true;
     }
-    let _e23 = local_20;
+    let _e23 = local_22;
     if _e23 {
         return false;
     }
     let _e25 = bsh_range_bound(node_3);
-    let v_12 = (x_8 - node_3.center);
-    let d2_4 = dot(v_12, v_12);
-    let reach_max = (node_3.extent + ((rl_6.w * 1.001f) * _e25));
-    if (d2_4 > (reach_max * reach_max)) {
+    let v_13 = (x_8 - node_3.center);
+    let d2_5 = dot(v_13, v_13);
+    let reach_max = (node_3.extent + ((rl_7.w * 1.001f) * _e25));
+    if (d2_5 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_6, node_3.center, node_3.extent, x_8, r_6);
+        let _e43 = range_scale_toward(rl_7, node_3.center, node_3.extent, x_8, r_7);
         let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         let _e47 = sphere_contains_point(node_3.center, _e46, x_8);
         return _e47;
     }
-    let _e50 = range_scale_toward(rl_6, node_3.center, node_3.extent, x_8, r_6);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_13), d2_5, r_7, rl_7);
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if (d2_4 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_21 = (d2_4 <= (reach * reach));
+    if (d2_5 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_23 = (d2_5 <= (reach * reach));
     } else {
-        local_21 = false;
+        local_23 = false;
     }
-    let _e67 = local_21;
+    let _e67 = local_23;
     return _e67;
 }
 

@@ -180,8 +180,8 @@ bool slc_keep(float r2_, float d2_1) {
 }
 
 bool sphere_contains_point(vec3 c, float r, vec3 x_2) {
-    vec3 v = (x_2 - c);
-    return (dot(v, v) <= (r * r));
+    vec3 v_1 = (x_2 - c);
+    return (dot(v_1, v_1) <= (r * r));
 }
 
 float inverse_square(float d2_2) {
@@ -197,11 +197,11 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
 float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     bool local = false;
     bool local_1 = false;
-    vec3 v_1 = (x_3 - y);
-    float d2_4 = dot(v_1, v_1);
-    bool _e7 = slc_keep(r2_1, d2_4);
+    vec3 v_2 = (x_3 - y);
+    float d2_5 = dot(v_2, v_2);
+    bool _e7 = slc_keep(r2_1, d2_5);
     if (!(!(_e7))) {
-        local = !((d2_4 > 0.0));
+        local = !((d2_5 > 0.0));
     } else {
         local = true;
     }
@@ -209,7 +209,7 @@ float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_3 = (v_1 / vec3(sqrt(d2_4)));
+    vec3 w_3 = (v_2 / vec3(sqrt(d2_5)));
     float cos_x_1 = -(dot(n, w_3));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = (dot(ng, w_3) >= 0.0);
@@ -234,15 +234,15 @@ float spot_falloff(float cos_theta, float cos_outer, float cos_inner, float shap
 float atan_portable(float x_4) {
     float base = 0.0;
     float t = 0.0;
-    float a_6 = abs(x_4);
-    t = a_6;
-    if ((a_6 > 2.4142137)) {
+    float a_7 = abs(x_4);
+    t = a_7;
+    if ((a_7 > 2.4142137)) {
         base = 1.5707964;
-        t = (-1.0 / a_6);
+        t = (-1.0 / a_7);
     } else {
-        if ((a_6 > 0.41421357)) {
+        if ((a_7 > 0.41421357)) {
             base = 0.7853982;
-            t = ((a_6 - 1.0) / (a_6 + 1.0));
+            t = ((a_7 - 1.0) / (a_7 + 1.0));
         }
     }
     float _e18 = t;
@@ -251,8 +251,8 @@ float atan_portable(float x_4) {
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_5 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_5) : r_5);
+    float r_6 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_6) : r_6);
 }
 
 float atan2_portable(float y_1, float x_5) {
@@ -395,11 +395,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_2) {
     float _e54 = ies_lerp_t(_e51, _e53, _e32);
     float _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
     float _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
-    float a_7 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
+    float a_8 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
     float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
     float b_5 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
-    return ((a_7 * (1.0 - _e54)) + (b_5 * _e54));
+    return ((a_8 * (1.0 - _e54)) + (b_5 * _e54));
 }
 
 float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws) {
@@ -491,21 +491,18 @@ float safe_sqrt(float x_8) {
     return sqrt(max(x_8, 0.0));
 }
 
-float subtended_cos(float dist2_, float r2_2) {
-    float _e5 = safe_sqrt((1.0 - (r2_2 / dist2_)));
-    return ((dist2_ <= r2_2) ? -1.0 : _e5);
-}
-
 float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d) {
-    vec3 v_2 = (center - p);
-    float dist2_1 = dot(v_2, v_2);
-    vec3 w_4 = ((dist2_1 > 0.0) ? (v_2 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
-    float _e17 = subtended_cos(dist2_1, (radius * radius));
-    float cos_i = dot(w_4, d);
-    float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
-    float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
-    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    vec3 v_3 = (center - p);
+    float dist2_ = dot(v_3, v_3);
+    if ((dist2_ <= (radius * radius))) {
+        return 1.0;
+    }
+    float dist = sqrt(dist2_);
+    vec3 c_6 = cross(v_3, d);
+    float sin_b_1 = (radius / dist);
+    float _e20 = safe_sqrt((1.0 - (sin_b_1 * sin_b_1)));
+    float _e21 = cos_sub_clamped((sqrt(dot(c_6, c_6)) / dist), (dot(v_3, d) / dist), sin_b_1, _e20);
+    return _e21;
 }
 
 float range_scale_at(vec4 rl, float cos_t) {
@@ -574,9 +571,9 @@ float ray_triangle(vec3 o_1, vec3 d_2, vec3 a_4, vec3 b_3, vec3 c_3, float t_min
         return -1.0;
     }
     vec3 q = cross(s_2, e1_);
-    float v_3 = (dot(d_2, q) * inv);
-    if (!((v_3 < 0.0))) {
-        local_4 = ((u_2 + v_3) > 1.0);
+    float v_4 = (dot(d_2, q) * inv);
+    if (!((v_4 < 0.0))) {
+        local_4 = ((u_2 + v_4) > 1.0);
     } else {
         local_4 = true;
     }
@@ -723,49 +720,75 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-bool bsh_reaches(BshNode node_3, vec3 x_10, vec3 r_2, vec4 rl_2) {
+float bsh_inner_scale(float a_6, vec3 v, float d2_4, vec3 r_2, vec4 rl_2) {
     bool local_6 = false;
     bool local_7 = false;
+    float vr = dot(v, r_2);
+    float h2_ = (d2_4 - (a_6 * a_6));
+    if (!((h2_ <= 0.0))) {
+        if ((vr >= 0.0)) {
+            local_7 = ((vr * vr) >= h2_);
+        } else {
+            local_7 = false;
+        }
+        bool _e20 = local_7;
+        local_6 = _e20;
+    } else {
+        local_6 = true;
+    }
+    bool _e22 = local_6;
+    if (_e22) {
+        return (rl_2.w * rl_2.w);
+    }
+    vec3 c_7 = cross(v, r_2);
+    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_6)) / d2_4);
+    float _e36 = range_scale_at(rl_2, (cos_t_1 + 2e-6));
+    return _e36;
+}
+
+bool bsh_reaches(BshNode node_3, vec3 x_10, vec3 r_3, vec4 rl_3) {
+    bool local_8 = false;
+    bool local_9 = false;
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_10);
     if (_e6) {
         return true;
     }
-    if (!((rl_2.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_2.w * 1.0001)), x_10);
-        local_6 = !(_e20);
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_10);
+        local_8 = !(_e20);
     } else {
-        local_6 = true;
+        local_8 = true;
     }
-    bool _e23 = local_6;
+    bool _e23 = local_8;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    vec3 v_4 = (x_10 - node_3.center);
-    float d2_5 = dot(v_4, v_4);
-    float reach_max = (node_3.extent + ((rl_2.w * 1.001) * _e25));
-    if ((d2_5 > (reach_max * reach_max))) {
+    vec3 v_5 = (x_10 - node_3.center);
+    float d2_6 = dot(v_5, v_5);
+    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
+    if ((d2_6 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_10, r_3);
         float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         bool _e47 = sphere_contains_point(node_3.center, _e46, x_10);
         return _e47;
     }
-    float _e50 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_5), d2_6, r_3, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_5 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_7 = (d2_5 <= (reach * reach));
+    if ((d2_6 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_9 = (d2_6 <= (reach * reach));
     } else {
-        local_7 = false;
+        local_9 = false;
     }
-    bool _e67 = local_7;
+    bool _e67 = local_9;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_11, vec3 r_3, vec4 rl_3) {
+uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_11, vec3 r_4, vec4 rl_4) {
     uint i_3 = 0u;
     i_3 = start_1;
     while(true) {
@@ -777,7 +800,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_11, vec3 r_3, vec4 rl
         {
             uint _e9 = i_3;
             BshNode _e10 = bsh_node(nodes_3, _e9);
-            bool _e11 = bsh_reaches(_e10, x_11, r_3, rl_3);
+            bool _e11 = bsh_reaches(_e10, x_11, r_4, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     uint _e15 = i_3;
@@ -792,21 +815,21 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_11, vec3 r_3, vec4 rl
     return BSH_NONE;
 }
 
-Picks bsh_collect(vec3 x_12, vec3 r_4, vec4 rl_4, uint seed_1) {
+Picks bsh_collect(vec3 x_12, vec3 r_5, vec4 rl_5, uint seed_1) {
     Picks picks = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_1 = 0u;
     uint i_4 = 0u;
     picks.n = 0u;
     h_1 = seed_1;
     uint _e10 = bsh_first(BSH);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_4, rl_4);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_5, rl_5);
     i_4 = _e11;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
             uint _e44 = i_4;
             uint _e47 = _group_0_binding_6_cs[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_4, rl_4);
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_5, rl_5);
             i_4 = _e48;
         }
         loop_init_1 = false;
@@ -845,7 +868,7 @@ Picks bsh_collect(vec3 x_12, vec3 r_4, vec4 rl_4, uint seed_1) {
 
 Connection connect(uint li, vec3 x_13, vec3 n_6, vec3 ng_1, float s_1, float w_res, float u1_1, float u2_1, float eps) {
     Connection c_4 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_8 = false;
+    bool local_10 = false;
     c_4.e = vec3(0.0);
     GpuLight l_2 = _group_0_binding_3_cs[li];
     vec3 _e17 = light_point(l_2, u1_1, u2_1);
@@ -858,22 +881,22 @@ Connection connect(uint li, vec3 x_13, vec3 n_6, vec3 ng_1, float s_1, float w_r
     if (!((_e27 <= 0.0))) {
         vec3 _e36 = c_4.y;
         bool _e37 = occluded((x_13 + (ng_1 * eps)), _e36);
-        local_8 = _e37;
+        local_10 = _e37;
     } else {
-        local_8 = true;
+        local_10 = true;
     }
-    bool _e39 = local_8;
+    bool _e39 = local_10;
     if (_e39) {
         Connection _e40 = c_4;
         return _e40;
     }
     vec3 _e42 = c_4.y;
-    vec3 v_5 = (x_13 - _e42);
-    float d2_6 = dot(v_5, v_5);
-    vec3 _e49 = light_intensity(l_2, (v_5 / vec3(sqrt(d2_6))));
+    vec3 v_6 = (x_13 - _e42);
+    float d2_7 = dot(v_6, v_6);
+    vec3 _e49 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_7))));
     float _e51 = c_4.cos_x;
     float _e54 = _group_0_binding_4_cs[li];
-    float _e56 = connection_factor(_e51, d2_6, (s_1 * _e54), w_res);
+    float _e56 = connection_factor(_e51, d2_7, (s_1 * _e54), w_res);
     c_4.e = (_e49 * _e56);
     Connection _e58 = c_4;
     return _e58;

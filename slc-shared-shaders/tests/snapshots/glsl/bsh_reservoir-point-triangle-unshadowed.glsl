@@ -147,8 +147,8 @@ bool slc_keep(float r2_, float d2_1) {
 }
 
 bool sphere_contains_point(vec3 c, float r, vec3 x_1) {
-    vec3 v = (x_1 - c);
-    return (dot(v, v) <= (r * r));
+    vec3 v_1 = (x_1 - c);
+    return (dot(v_1, v_1) <= (r * r));
 }
 
 float inverse_square(float d2_2) {
@@ -164,11 +164,11 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
 float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
     bool local = false;
     bool local_1 = false;
-    vec3 v_1 = (x_2 - y);
-    float d2_4 = dot(v_1, v_1);
-    bool _e7 = slc_keep(r2_1, d2_4);
+    vec3 v_2 = (x_2 - y);
+    float d2_5 = dot(v_2, v_2);
+    bool _e7 = slc_keep(r2_1, d2_5);
     if (!(!(_e7))) {
-        local = !((d2_4 > 0.0));
+        local = !((d2_5 > 0.0));
     } else {
         local = true;
     }
@@ -176,7 +176,7 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_3 = (v_1 / vec3(sqrt(d2_4)));
+    vec3 w_3 = (v_2 / vec3(sqrt(d2_5)));
     float cos_x_1 = -(dot(n, w_3));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = (dot(ng, w_3) >= 0.0);
@@ -274,21 +274,18 @@ float safe_sqrt(float x_3) {
     return sqrt(max(x_3, 0.0));
 }
 
-float subtended_cos(float dist2_, float r2_2) {
-    float _e5 = safe_sqrt((1.0 - (r2_2 / dist2_)));
-    return ((dist2_ <= r2_2) ? -1.0 : _e5);
-}
-
 float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d) {
-    vec3 v_2 = (center - p);
-    float dist2_1 = dot(v_2, v_2);
-    vec3 w_4 = ((dist2_1 > 0.0) ? (v_2 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
-    float _e17 = subtended_cos(dist2_1, (radius * radius));
-    float cos_i = dot(w_4, d);
-    float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
-    float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
-    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    vec3 v_3 = (center - p);
+    float dist2_ = dot(v_3, v_3);
+    if ((dist2_ <= (radius * radius))) {
+        return 1.0;
+    }
+    float dist = sqrt(dist2_);
+    vec3 c_4 = cross(v_3, d);
+    float sin_b_1 = (radius / dist);
+    float _e20 = safe_sqrt((1.0 - (sin_b_1 * sin_b_1)));
+    float _e21 = cos_sub_clamped((sqrt(dot(c_4, c_4)) / dist), (dot(v_3, d) / dist), sin_b_1, _e20);
+    return _e21;
 }
 
 float range_scale_at(vec4 rl, float cos_t) {
@@ -366,49 +363,75 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-bool bsh_reaches(BshNode node_2, vec3 x_4, vec3 r_2, vec4 rl_2) {
+float bsh_inner_scale(float a_6, vec3 v, float d2_4, vec3 r_2, vec4 rl_2) {
     bool local_3 = false;
     bool local_4 = false;
+    float vr = dot(v, r_2);
+    float h2_ = (d2_4 - (a_6 * a_6));
+    if (!((h2_ <= 0.0))) {
+        if ((vr >= 0.0)) {
+            local_4 = ((vr * vr) >= h2_);
+        } else {
+            local_4 = false;
+        }
+        bool _e20 = local_4;
+        local_3 = _e20;
+    } else {
+        local_3 = true;
+    }
+    bool _e22 = local_3;
+    if (_e22) {
+        return (rl_2.w * rl_2.w);
+    }
+    vec3 c_5 = cross(v, r_2);
+    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_5, c_5)) * a_6)) / d2_4);
+    float _e36 = range_scale_at(rl_2, (cos_t_1 + 2e-6));
+    return _e36;
+}
+
+bool bsh_reaches(BshNode node_2, vec3 x_4, vec3 r_3, vec4 rl_3) {
+    bool local_5 = false;
+    bool local_6 = false;
     bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
     if (_e6) {
         return true;
     }
-    if (!((rl_2.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_2.w * 1.0001)), x_4);
-        local_3 = !(_e20);
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001)), x_4);
+        local_5 = !(_e20);
     } else {
-        local_3 = true;
+        local_5 = true;
     }
-    bool _e23 = local_3;
+    bool _e23 = local_5;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_2);
-    vec3 v_3 = (x_4 - node_2.center);
-    float d2_5 = dot(v_3, v_3);
-    float reach_max = (node_2.extent + ((rl_2.w * 1.001) * _e25));
-    if ((d2_5 > (reach_max * reach_max))) {
+    vec3 v_4 = (x_4 - node_2.center);
+    float d2_6 = dot(v_4, v_4);
+    float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
+    if ((d2_6 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_2.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_2);
+        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_4, r_3);
         float _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
         bool _e47 = sphere_contains_point(node_2.center, _e46, x_4);
         return _e47;
     }
-    float _e50 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_2);
+    float _e50 = bsh_inner_scale(node_2.extent, -(v_4), d2_6, r_3, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if ((d2_5 <= ((node_2.radius * node_2.radius) * s_c))) {
-        local_4 = (d2_5 <= (reach * reach));
+    if ((d2_6 <= ((node_2.radius * node_2.radius) * s_c))) {
+        local_6 = (d2_6 <= (reach * reach));
     } else {
-        local_4 = false;
+        local_6 = false;
     }
-    bool _e67 = local_4;
+    bool _e67 = local_6;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_3, vec4 rl_3) {
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_4, vec4 rl_4) {
     uint i_1 = 0u;
     i_1 = start;
     while(true) {
@@ -420,7 +443,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_3, vec4 rl_3)
         {
             uint _e9 = i_1;
             BshNode _e10 = bsh_node(nodes_3, _e9);
-            bool _e11 = bsh_reaches(_e10, x_5, r_3, rl_3);
+            bool _e11 = bsh_reaches(_e10, x_5, r_4, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     uint _e15 = i_1;
@@ -435,21 +458,21 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_3, vec4 rl_3)
     return BSH_NONE;
 }
 
-Picks bsh_collect(vec3 x_6, vec3 r_4, vec4 rl_4, uint seed_1) {
+Picks bsh_collect(vec3 x_6, vec3 r_5, vec4 rl_5, uint seed_1) {
     Picks picks = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_1 = 0u;
     uint i_2 = 0u;
     picks.n = 0u;
     h_1 = seed_1;
     uint _e10 = bsh_first(BSH);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_4, rl_4);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_5, rl_5);
     i_2 = _e11;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
             uint _e44 = i_2;
             uint _e47 = _group_0_binding_6_cs[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_6, r_4, rl_4);
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_6, r_5, rl_5);
             i_2 = _e48;
         }
         loop_init = false;
@@ -488,7 +511,7 @@ Picks bsh_collect(vec3 x_6, vec3 r_4, vec4 rl_4, uint seed_1) {
 
 Connection connect(uint li, vec3 x_7, vec3 n_6, vec3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps) {
     Connection c_3 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_5 = false;
+    bool local_7 = false;
     c_3.e = vec3(0.0);
     GpuLight l_2 = _group_0_binding_3_cs[li];
     vec3 _e17 = light_point(l_2, u1_2, u2_2);
@@ -501,22 +524,22 @@ Connection connect(uint li, vec3 x_7, vec3 n_6, vec3 ng_1, float s_1, float w_re
     if (!((_e27 <= 0.0))) {
         vec3 _e36 = c_3.y;
         bool _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
-        local_5 = _e37;
+        local_7 = _e37;
     } else {
-        local_5 = true;
+        local_7 = true;
     }
-    bool _e39 = local_5;
+    bool _e39 = local_7;
     if (_e39) {
         Connection _e40 = c_3;
         return _e40;
     }
     vec3 _e42 = c_3.y;
-    vec3 v_4 = (x_7 - _e42);
-    float d2_6 = dot(v_4, v_4);
-    vec3 _e49 = light_intensity(l_2, (v_4 / vec3(sqrt(d2_6))));
+    vec3 v_5 = (x_7 - _e42);
+    float d2_7 = dot(v_5, v_5);
+    vec3 _e49 = light_intensity(l_2, (v_5 / vec3(sqrt(d2_7))));
     float _e51 = c_3.cos_x;
     float _e54 = _group_0_binding_4_cs[li];
-    float _e56 = connection_factor(_e51, d2_6, (s_1 * _e54), w_res);
+    float _e56 = connection_factor(_e51, d2_7, (s_1 * _e54), w_res);
     c_3.e = (_e49 * _e56);
     Connection _e58 = c_3;
     return _e58;

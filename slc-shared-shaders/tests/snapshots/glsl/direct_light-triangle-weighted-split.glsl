@@ -189,8 +189,8 @@ bool slc_keep(float r2_, float d2_1) {
 }
 
 bool sphere_contains_point(vec3 c, float r_1, vec3 x_1) {
-    vec3 v_3 = (x_1 - c);
-    return (dot(v_3, v_3) <= (r_1 * r_1));
+    vec3 v_4 = (x_1 - c);
+    return (dot(v_4, v_4) <= (r_1 * r_1));
 }
 
 float inverse_square(float d2_2) {
@@ -206,11 +206,11 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
 float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
     bool local_2 = false;
     bool local_3 = false;
-    vec3 v_4 = (x_2 - y);
-    float d2_5 = dot(v_4, v_4);
-    bool _e7 = slc_keep(r2_1, d2_5);
+    vec3 v_5 = (x_2 - y);
+    float d2_6 = dot(v_5, v_5);
+    bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_2 = !((d2_5 > 0.0));
+        local_2 = !((d2_6 > 0.0));
     } else {
         local_2 = true;
     }
@@ -218,7 +218,7 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_6 = (v_4 / vec3(sqrt(d2_5)));
+    vec3 w_6 = (v_5 / vec3(sqrt(d2_6)));
     float cos_x_1 = -(dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = (dot(ng, w_6) >= 0.0);
@@ -449,11 +449,11 @@ float subtended_cos(float dist2_, float r2_2) {
 }
 
 vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
-    vec3 v_5 = (p - center);
-    float dist2_1 = dot(v_5, v_5);
+    vec3 v_6 = (p - center);
+    float dist2_1 = dot(v_6, v_6);
     float r2_4 = (radius * radius);
-    float d2_6 = max(max(dist2_1, r2_4), MIN_D2_);
-    vec3 wi = ((dist2_1 > 0.0) ? (v_5 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
+    float d2_7 = max(max(dist2_1, r2_4), MIN_D2_);
+    vec3 wi = ((dist2_1 > 0.0) ? (v_6 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
     float _e26 = subtended_cos(dist2_1, r2_4);
@@ -462,7 +462,7 @@ vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
     float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
     float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
     float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4(_e37, d2_6, _e26, _e30);
+    return vec4(_e37, d2_7, _e26, _e30);
 }
 
 float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, float cos_o_1, float cos_e, vec3 p_1) {
@@ -474,15 +474,17 @@ float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, 
 }
 
 float cone_cos_toward(vec3 center_2, float radius_2, vec3 p_2, vec3 d) {
-    vec3 v_6 = (center_2 - p_2);
-    float dist2_2 = dot(v_6, v_6);
-    vec3 w_7 = ((dist2_2 > 0.0) ? (v_6 / vec3(sqrt(dist2_2))) : vec3(0.0, 0.0, 0.0));
-    float _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
-    float cos_i = dot(w_7, d);
-    float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
-    float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
-    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    vec3 v_7 = (center_2 - p_2);
+    float dist2_2 = dot(v_7, v_7);
+    if ((dist2_2 <= (radius_2 * radius_2))) {
+        return 1.0;
+    }
+    float dist = sqrt(dist2_2);
+    vec3 c_7 = cross(v_7, d);
+    float sin_b_2 = (radius_2 / dist);
+    float _e20 = safe_sqrt((1.0 - (sin_b_2 * sin_b_2)));
+    float _e21 = cos_sub_clamped((sqrt(dot(c_7, c_7)) / dist), (dot(v_7, d) / dist), sin_b_2, _e20);
+    return _e21;
 }
 
 float range_scale_at(vec4 rl, float cos_t) {
@@ -507,12 +509,12 @@ float light_importance(vec3 center_4, float radius_4, float phi_1, vec3 axis_2, 
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_4, n_4) > 0.0)) {
-        vec3 v_7 = (center_4 - p_4);
-        float dist2_3 = dot(v_7, v_7);
-        float cos_i_1 = dot(((dist2_3 > 0.0) ? (v_7 / vec3(sqrt(dist2_3))) : vec3(0.0, 0.0, 0.0)), n_4);
+        vec3 v_8 = (center_4 - p_4);
+        float dist2_3 = dot(v_8, v_8);
+        float cos_i = dot(((dist2_3 > 0.0) ? (v_8 / vec3(sqrt(dist2_3))) : vec3(0.0, 0.0, 0.0)), n_4);
         float _e33 = imp;
-        float _e37 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
-        float _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
+        float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
         imp = (_e33 * max(_e40, 0.0));
     }
     float _e44 = imp;
@@ -546,14 +548,14 @@ float candidate_weight(float importance, float rt2_2, float d2_4) {
 }
 
 float cone_weight(vec3 center_6, float radius_6, float phi_3, vec3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, vec3 p_6, vec3 n_6, vec3 r_4, vec4 lobe_6) {
-    vec3 v_8 = (p_6 - center_6);
+    vec3 v_9 = (p_6 - center_6);
     if ((lobe_6.y <= 0.0)) {
         float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6);
-        float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_8, v_8));
+        float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_9, v_9));
         return _e19;
     }
     float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6, r_4, lobe_6);
-    float _e22 = candidate_weight(_e20, rt2_3, dot(v_8, v_8));
+    float _e22 = candidate_weight(_e20, rt2_3, dot(v_9, v_9));
     return _e22;
 }
 
@@ -615,49 +617,75 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-bool bsh_reaches(BshNode node_2, vec3 x_4, vec3 r_5, vec4 rl_2) {
+float bsh_inner_scale(float a_5, vec3 v_3, float d2_5, vec3 r_5, vec4 rl_2) {
     bool local_11 = false;
     bool local_12 = false;
+    float vr = dot(v_3, r_5);
+    float h2_ = (d2_5 - (a_5 * a_5));
+    if (!((h2_ <= 0.0))) {
+        if ((vr >= 0.0)) {
+            local_12 = ((vr * vr) >= h2_);
+        } else {
+            local_12 = false;
+        }
+        bool _e20 = local_12;
+        local_11 = _e20;
+    } else {
+        local_11 = true;
+    }
+    bool _e22 = local_11;
+    if (_e22) {
+        return (rl_2.w * rl_2.w);
+    }
+    vec3 c_8 = cross(v_3, r_5);
+    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_5)) / d2_5);
+    float _e36 = range_scale_at(rl_2, (cos_t_1 + 2e-6));
+    return _e36;
+}
+
+bool bsh_reaches(BshNode node_2, vec3 x_4, vec3 r_6, vec4 rl_3) {
+    bool local_13 = false;
+    bool local_14 = false;
     bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
     if (_e6) {
         return true;
     }
-    if (!((rl_2.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_2.w * 1.0001)), x_4);
-        local_11 = !(_e20);
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001)), x_4);
+        local_13 = !(_e20);
     } else {
-        local_11 = true;
+        local_13 = true;
     }
-    bool _e23 = local_11;
+    bool _e23 = local_13;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_2);
-    vec3 v_9 = (x_4 - node_2.center);
-    float d2_7 = dot(v_9, v_9);
-    float reach_max = (node_2.extent + ((rl_2.w * 1.001) * _e25));
-    if ((d2_7 > (reach_max * reach_max))) {
+    vec3 v_10 = (x_4 - node_2.center);
+    float d2_8 = dot(v_10, v_10);
+    float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
+    if ((d2_8 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_2.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_4, r_6);
         float _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
         bool _e47 = sphere_contains_point(node_2.center, _e46, x_4);
         return _e47;
     }
-    float _e50 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+    float _e50 = bsh_inner_scale(node_2.extent, -(v_10), d2_8, r_6, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if ((d2_7 <= ((node_2.radius * node_2.radius) * s_c))) {
-        local_12 = (d2_7 <= (reach * reach));
+    if ((d2_8 <= ((node_2.radius * node_2.radius) * s_c))) {
+        local_14 = (d2_8 <= (reach * reach));
     } else {
-        local_12 = false;
+        local_14 = false;
     }
-    bool _e67 = local_12;
+    bool _e67 = local_14;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_6, vec4 rl_3) {
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_7, vec4 rl_4) {
     uint i_1 = 0u;
     i_1 = start;
     while(true) {
@@ -669,7 +697,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_6, vec4 rl_3)
         {
             uint _e9 = i_1;
             BshNode _e10 = bsh_node(nodes_3, _e9);
-            bool _e11 = bsh_reaches(_e10, x_5, r_6, rl_3);
+            bool _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     uint _e15 = i_1;
@@ -686,7 +714,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_6, vec4 rl_3)
 
 Connection connect(uint li, vec3 x_6, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps) {
     Connection c_4 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_13 = false;
+    bool local_15 = false;
     c_4.e = vec3(0.0);
     GpuLight l_4 = _group_1_binding_1_cs[li];
     vec3 _e17 = light_point(l_4, u1_2, u2_2);
@@ -699,42 +727,42 @@ Connection connect(uint li, vec3 x_6, vec3 n_7, vec3 ng_1, float s, float w_res,
     if (!((_e27 <= 0.0))) {
         vec3 _e36 = c_4.y;
         bool _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
-        local_13 = _e37;
+        local_15 = _e37;
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    bool _e39 = local_13;
+    bool _e39 = local_15;
     if (_e39) {
         Connection _e40 = c_4;
         return _e40;
     }
     vec3 _e42 = c_4.y;
-    vec3 v_10 = (x_6 - _e42);
-    float d2_8 = dot(v_10, v_10);
-    vec3 _e49 = light_intensity(l_4, (v_10 / vec3(sqrt(d2_8))));
+    vec3 v_11 = (x_6 - _e42);
+    float d2_9 = dot(v_11, v_11);
+    vec3 _e49 = light_intensity(l_4, (v_11 / vec3(sqrt(d2_9))));
     float _e51 = c_4.cos_x;
     float _e54 = _group_1_binding_2_cs[li];
-    float _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
+    float _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     Connection _e58 = c_4;
     return _e58;
 }
 
-float light_range_scale(uint li_1, vec3 x_7, vec3 r_7, vec4 rl_4) {
-    GpuLightCone c_7 = _group_1_binding_5_cs[li_1];
-    float _e9 = range_scale_toward(rl_4, c_7.center, c_7.radius, x_7, r_7);
+float light_range_scale(uint li_1, vec3 x_7, vec3 r_8, vec4 rl_5) {
+    GpuLightCone c_9 = _group_1_binding_5_cs[li_1];
+    float _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_7, r_8);
     return _e9;
 }
 
-float light_weight(uint li_2, vec3 x_8, vec3 n_8, vec3 r_8, vec4 lobe_7, vec4 rl_5) {
-    GpuLightCone c_8 = _group_1_binding_5_cs[li_2];
-    float _e15 = light_range_scale(li_2, x_8, r_8, rl_5);
+float light_weight(uint li_2, vec3 x_8, vec3 n_8, vec3 r_9, vec4 lobe_7, vec4 rl_6) {
+    GpuLightCone c_10 = _group_1_binding_5_cs[li_2];
+    float _e15 = light_range_scale(li_2, x_8, r_9, rl_6);
     float _e18 = _group_1_binding_2_cs[li_2];
-    float _e20 = cone_weight(c_8.center, c_8.radius, c_8.phi, c_8.axis, c_8.cos_o, c_8.cos_e, (_e15 * _e18), x_8, n_8, r_8, lobe_7);
+    float _e20 = cone_weight(c_10.center, c_10.radius, c_10.phi, c_10.axis, c_10.cos_o, c_10.cos_e, (_e15 * _e18), x_8, n_8, r_9, lobe_7);
     return _e20;
 }
 
-WeightedPicks bsh_weighted_collect(vec3 x_9, vec3 n_9, vec3 r_9, vec4 lobe_8, vec4 rl_6, uint h0_) {
+WeightedPicks bsh_weighted_collect(vec3 x_9, vec3 n_9, vec3 r_10, vec4 lobe_8, vec4 rl_7, uint h0_) {
     WeightedPicks picks = WeightedPicks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), float[8](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0u, 0u);
     uint h_1 = 0u;
     uint b_5 = 0u;
@@ -743,14 +771,14 @@ WeightedPicks bsh_weighted_collect(vec3 x_9, vec3 n_9, vec3 r_9, vec4 lobe_8, ve
     picks.n = 0u;
     h_1 = h0_;
     uint _e14 = bsh_first(BSH);
-    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_9, rl_6);
+    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_10, rl_7);
     b_5 = _e15;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
             uint _e58 = b_5;
             uint _e61 = _group_1_binding_4_cs[_e58].next;
-            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_9, rl_6);
+            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_10, rl_7);
             b_5 = _e62;
         }
         loop_init = false;
@@ -764,7 +792,7 @@ WeightedPicks bsh_weighted_collect(vec3 x_9, vec3 n_9, vec3 r_9, vec4 lobe_8, ve
             picks.n = (_e21 + 1u);
             uint _e25 = b_5;
             uint li_4 = _group_1_binding_4_cs[_e25].light;
-            float _e29 = light_weight(li_4, x_9, n_9, r_9, lobe_8, rl_6);
+            float _e29 = light_weight(li_4, x_9, n_9, r_10, lobe_8, rl_7);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -811,9 +839,9 @@ vec4 surface_at(ivec2 texel) {
     return ((p_7.w > 0.0) ? vec4(p_7.xyz, 1.0) : vec4(0.0));
 }
 
-Shaded shade_pick(uint li_3, vec3 x_10, vec3 n_10, vec3 r_10, vec4 rl_7, Material m_1, float w_5, float u1_3, float u2_3) {
+Shaded shade_pick(uint li_3, vec3 x_10, vec3 n_10, vec3 r_11, vec4 rl_8, Material m_1, float w_5, float u1_3, float u2_3) {
     Shaded s_2 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    float _e10 = light_range_scale(li_3, x_10, r_10, rl_7);
+    float _e10 = light_range_scale(li_3, x_10, r_11, rl_8);
     Connection _e12 = connect(li_3, x_10, n_10, n_10, _e10, w_5, u1_3, u2_3, 0.0);
     s_2.e = _e12.e;
     s_2.diffuse = vec3(0.0);
@@ -834,8 +862,8 @@ Shaded shade_pick(uint li_3, vec3 x_10, vec3 n_10, vec3 r_10, vec4 rl_7, Materia
     return _e55;
 }
 
-Shaded add(Shaded a_5, Shaded b_6) {
-    return Shaded((a_5.e + b_6.e), (a_5.diffuse + b_6.diffuse), (a_5.specular + b_6.specular));
+Shaded add(Shaded a_6, Shaded b_6) {
+    return Shaded((a_6.e + b_6.e), (a_6.diffuse + b_6.diffuse), (a_6.specular + b_6.specular));
 }
 
 void main() {

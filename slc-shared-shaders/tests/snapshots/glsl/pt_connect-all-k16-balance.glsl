@@ -222,8 +222,8 @@ bool slc_keep(float r2_, float d2_2) {
 }
 
 bool sphere_contains_point(vec3 c, float r, vec3 x_2) {
-    vec3 v_6 = (x_2 - c);
-    return (dot(v_6, v_6) <= (r * r));
+    vec3 v_7 = (x_2 - c);
+    return (dot(v_7, v_7) <= (r * r));
 }
 
 float inverse_square(float d2_3) {
@@ -239,11 +239,11 @@ float connection_factor(float cos_x, float d2_4, float rt2_2, float w) {
 float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     bool local = false;
     bool local_1 = false;
-    vec3 v_7 = (x_3 - y);
-    float d2_7 = dot(v_7, v_7);
-    bool _e7 = slc_keep(r2_1, d2_7);
+    vec3 v_8 = (x_3 - y);
+    float d2_8 = dot(v_8, v_8);
+    bool _e7 = slc_keep(r2_1, d2_8);
     if (!(!(_e7))) {
-        local = !((d2_7 > 0.0));
+        local = !((d2_8 > 0.0));
     } else {
         local = true;
     }
@@ -251,7 +251,7 @@ float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_7 = (v_7 / vec3(sqrt(d2_7)));
+    vec3 w_7 = (v_8 / vec3(sqrt(d2_8)));
     float cos_x_1 = -(dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = (dot(ng, w_7) >= 0.0);
@@ -299,15 +299,15 @@ float area_to_solid_angle_pdf(float pdf_area, float d2_5, float cos_light) {
 float atan_portable(float x_4) {
     float base = 0.0;
     float t = 0.0;
-    float a_8 = abs(x_4);
-    t = a_8;
-    if ((a_8 > 2.4142137)) {
+    float a_9 = abs(x_4);
+    t = a_9;
+    if ((a_9 > 2.4142137)) {
         base = 1.5707964;
-        t = (-1.0 / a_8);
+        t = (-1.0 / a_9);
     } else {
-        if ((a_8 > 0.41421357)) {
+        if ((a_9 > 0.41421357)) {
             base = 0.7853982;
-            t = ((a_8 - 1.0) / (a_8 + 1.0));
+            t = ((a_9 - 1.0) / (a_9 + 1.0));
         }
     }
     float _e18 = t;
@@ -316,8 +316,8 @@ float atan_portable(float x_4) {
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_10 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_10) : r_10);
+    float r_11 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_11) : r_11);
 }
 
 float atan2_portable(float y_1, float x_5) {
@@ -460,11 +460,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_3) {
     float _e54 = ies_lerp_t(_e51, _e53, _e32);
     float _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
     float _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
-    float a_9 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
+    float a_10 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
     float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
     float b_7 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
-    return ((a_9 * (1.0 - _e54)) + (b_7 * _e54));
+    return ((a_10 * (1.0 - _e54)) + (b_7 * _e54));
 }
 
 float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws) {
@@ -600,14 +600,14 @@ float cosine_pdf(float cos_theta_1) {
 
 vec3 onb_tangent(vec3 n_8) {
     float s_3 = ((n_8.z >= 0.0) ? 1.0 : -1.0);
-    float a_10 = (-1.0 / (s_3 + n_8.z));
-    return vec3((1.0 + (((s_3 * n_8.x) * n_8.x) * a_10)), (((s_3 * n_8.x) * n_8.y) * a_10), (-(s_3) * n_8.x));
+    float a_11 = (-1.0 / (s_3 + n_8.z));
+    return vec3((1.0 + (((s_3 * n_8.x) * n_8.x) * a_11)), (((s_3 * n_8.x) * n_8.y) * a_11), (-(s_3) * n_8.x));
 }
 
 vec3 onb_bitangent(vec3 n_9) {
     float s_4 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_11 = (-1.0 / (s_4 + n_9.z));
-    return vec3(((n_9.x * n_9.y) * a_11), (s_4 + ((n_9.y * n_9.y) * a_11)), -(n_9.y));
+    float a_12 = (-1.0 / (s_4 + n_9.z));
+    return vec3(((n_9.x * n_9.y) * a_12), (s_4 + ((n_9.y * n_9.y) * a_12)), -(n_9.y));
 }
 
 vec3 onb_to_local(vec3 n_10, vec3 w_4) {
@@ -788,9 +788,9 @@ vec3 mirror_dir(vec3 n_13, vec3 v_3) {
 }
 
 float bounded_vndf_k(vec3 wi, float alpha_6) {
-    float a_12 = clamp(alpha_6, 0.0, 1.0);
+    float a_13 = clamp(alpha_6, 0.0, 1.0);
     float s_5 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    float a2_2 = (a_12 * a_12);
+    float a2_2 = (a_13 * a_13);
     float s2_ = (s_5 * s_5);
     return (((1.0 - a2_2) * s2_) / (s2_ + ((a2_2 * wi.z) * wi.z)));
 }
@@ -836,21 +836,18 @@ float safe_sqrt(float x_8) {
     return sqrt(max(x_8, 0.0));
 }
 
-float subtended_cos(float dist2_, float r2_2) {
-    float _e5 = safe_sqrt((1.0 - (r2_2 / dist2_)));
-    return ((dist2_ <= r2_2) ? -1.0 : _e5);
-}
-
 float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d) {
-    vec3 v_8 = (center - p);
-    float dist2_1 = dot(v_8, v_8);
-    vec3 w_8 = ((dist2_1 > 0.0) ? (v_8 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
-    float _e17 = subtended_cos(dist2_1, (radius * radius));
-    float cos_i = dot(w_8, d);
-    float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
-    float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
-    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    vec3 v_9 = (center - p);
+    float dist2_ = dot(v_9, v_9);
+    if ((dist2_ <= (radius * radius))) {
+        return 1.0;
+    }
+    float dist = sqrt(dist2_);
+    vec3 c_12 = cross(v_9, d);
+    float sin_b_1 = (radius / dist);
+    float _e20 = safe_sqrt((1.0 - (sin_b_1 * sin_b_1)));
+    float _e21 = cos_sub_clamped((sqrt(dot(c_12, c_12)) / dist), (dot(v_9, d) / dist), sin_b_1, _e20);
+    return _e21;
 }
 
 float range_scale_at(vec4 rl, float cos_t) {
@@ -935,9 +932,9 @@ float ray_triangle(vec3 o_1, vec3 d_2, vec3 a_6, vec3 b_5, vec3 c_6, float t_min
         return -1.0;
     }
     vec3 q = cross(s_6, e1_);
-    float v_9 = (dot(d_2, q) * inv_1);
-    if (!((v_9 < 0.0))) {
-        local_14 = ((u_2 + v_9) > 1.0);
+    float v_10 = (dot(d_2, q) * inv_1);
+    if (!((v_10 < 0.0))) {
+        local_14 = ((u_2 + v_10) > 1.0);
     } else {
         local_14 = true;
     }
@@ -1130,49 +1127,75 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-bool bsh_reaches(BshNode node_3, vec3 x_10, vec3 r_2, vec4 rl_2) {
+float bsh_inner_scale(float a_8, vec3 v_6, float d2_7, vec3 r_2, vec4 rl_2) {
     bool local_18 = false;
     bool local_19 = false;
+    float vr = dot(v_6, r_2);
+    float h2_ = (d2_7 - (a_8 * a_8));
+    if (!((h2_ <= 0.0))) {
+        if ((vr >= 0.0)) {
+            local_19 = ((vr * vr) >= h2_);
+        } else {
+            local_19 = false;
+        }
+        bool _e20 = local_19;
+        local_18 = _e20;
+    } else {
+        local_18 = true;
+    }
+    bool _e22 = local_18;
+    if (_e22) {
+        return (rl_2.w * rl_2.w);
+    }
+    vec3 c_13 = cross(v_6, r_2);
+    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_13, c_13)) * a_8)) / d2_7);
+    float _e36 = range_scale_at(rl_2, (cos_t_1 + 2e-6));
+    return _e36;
+}
+
+bool bsh_reaches(BshNode node_3, vec3 x_10, vec3 r_3, vec4 rl_3) {
+    bool local_20 = false;
+    bool local_21 = false;
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_10);
     if (_e6) {
         return true;
     }
-    if (!((rl_2.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_2.w * 1.0001)), x_10);
-        local_18 = !(_e20);
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_10);
+        local_20 = !(_e20);
     } else {
-        local_18 = true;
+        local_20 = true;
     }
-    bool _e23 = local_18;
+    bool _e23 = local_20;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    vec3 v_10 = (x_10 - node_3.center);
-    float d2_8 = dot(v_10, v_10);
-    float reach_max = (node_3.extent + ((rl_2.w * 1.001) * _e25));
-    if ((d2_8 > (reach_max * reach_max))) {
+    vec3 v_11 = (x_10 - node_3.center);
+    float d2_9 = dot(v_11, v_11);
+    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
+    if ((d2_9 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_10, r_3);
         float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         bool _e47 = sphere_contains_point(node_3.center, _e46, x_10);
         return _e47;
     }
-    float _e50 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_11), d2_9, r_3, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_8 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_19 = (d2_8 <= (reach * reach));
+    if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_21 = (d2_9 <= (reach * reach));
     } else {
-        local_19 = false;
+        local_21 = false;
     }
-    bool _e67 = local_19;
+    bool _e67 = local_21;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_11, vec3 r_3, vec4 rl_3) {
+uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_11, vec3 r_4, vec4 rl_4) {
     uint i_3 = 0u;
     i_3 = start_1;
     while(true) {
@@ -1184,7 +1207,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_11, vec3 r_3, vec4 rl
         {
             uint _e9 = i_3;
             BshNode _e10 = bsh_node(nodes_3, _e9);
-            bool _e11 = bsh_reaches(_e10, x_11, r_3, rl_3);
+            bool _e11 = bsh_reaches(_e10, x_11, r_4, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     uint _e15 = i_3;
@@ -1199,21 +1222,21 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_11, vec3 r_3, vec4 rl
     return BSH_NONE;
 }
 
-Picks bsh_collect(vec3 x_12, vec3 r_4, vec4 rl_4, uint seed_1) {
+Picks bsh_collect(vec3 x_12, vec3 r_5, vec4 rl_5, uint seed_1) {
     Picks picks = Picks(uint[16](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_1 = 0u;
     uint i_4 = 0u;
     picks.n = 0u;
     h_1 = seed_1;
     uint _e10 = bsh_first(BSH);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_4, rl_4);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_5, rl_5);
     i_4 = _e11;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
             uint _e44 = i_4;
             uint _e47 = _group_0_binding_5_cs[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_4, rl_4);
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_5, rl_5);
             i_4 = _e48;
         }
         loop_init_1 = false;
@@ -1252,7 +1275,7 @@ Picks bsh_collect(vec3 x_12, vec3 r_4, vec4 rl_4, uint seed_1) {
 
 Connection connect(uint li, vec3 x_13, vec3 n_15, vec3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps) {
     Connection c_7 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_20 = false;
+    bool local_22 = false;
     c_7.e = vec3(0.0);
     GpuLight l_8 = _group_0_binding_2_cs[li];
     vec3 _e17 = light_point(l_8, u1_2, u2_2);
@@ -1265,22 +1288,22 @@ Connection connect(uint li, vec3 x_13, vec3 n_15, vec3 ng_1, float s_1, float w_
     if (!((_e27 <= 0.0))) {
         vec3 _e36 = c_7.y;
         bool _e37 = occluded((x_13 + (ng_1 * eps)), _e36);
-        local_20 = _e37;
+        local_22 = _e37;
     } else {
-        local_20 = true;
+        local_22 = true;
     }
-    bool _e39 = local_20;
+    bool _e39 = local_22;
     if (_e39) {
         Connection _e40 = c_7;
         return _e40;
     }
     vec3 _e42 = c_7.y;
-    vec3 v_11 = (x_13 - _e42);
-    float d2_9 = dot(v_11, v_11);
-    vec3 _e49 = light_intensity(l_8, (v_11 / vec3(sqrt(d2_9))));
+    vec3 v_12 = (x_13 - _e42);
+    float d2_10 = dot(v_12, v_12);
+    vec3 _e49 = light_intensity(l_8, (v_12 / vec3(sqrt(d2_10))));
     float _e51 = c_7.cos_x;
     float _e54 = _group_0_binding_3_cs[li];
-    float _e56 = connection_factor(_e51, d2_9, (s_1 * _e54), w_res);
+    float _e56 = connection_factor(_e51, d2_10, (s_1 * _e54), w_res);
     c_7.e = (_e49 * _e56);
     Connection _e58 = c_7;
     return _e58;
@@ -1291,39 +1314,39 @@ float mis_weight(float pdf_a_1, float pdf_b_1) {
     return _e2;
 }
 
-float light_range_scale(uint li_1, vec3 x_14, vec3 r_5, vec4 rl_5) {
-    GpuLightCone c_12 = _group_1_binding_2_cs[li_1];
-    float _e9 = range_scale_toward(rl_5, c_12.center, c_12.radius, x_14, r_5);
+float light_range_scale(uint li_1, vec3 x_14, vec3 r_6, vec4 rl_6) {
+    GpuLightCone c_14 = _group_1_binding_2_cs[li_1];
+    float _e9 = range_scale_toward(rl_6, c_14.center, c_14.radius, x_14, r_6);
     return _e9;
 }
 
-float select_pdf(uint li_2, vec3 x_15, vec3 n_16, vec3 r_6, vec4 lobe_5, vec4 rl_6, uint nee, bool in_range_1) {
+float select_pdf(uint li_2, vec3 x_15, vec3 n_16, vec3 r_7, vec4 lobe_5, vec4 rl_7, uint nee, bool in_range_1) {
     float _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-float light_pdf_selected(uint li_3, vec3 x_16, vec3 r_7, vec4 rl_7, vec3 y_2, float sel) {
+float light_pdf_selected(uint li_3, vec3 x_16, vec3 r_8, vec4 rl_8, vec3 y_2, float sel) {
     GpuLight l_9 = _group_0_binding_2_cs[li_3];
-    vec3 v_12 = (x_16 - y_2);
-    float d2_10 = dot(v_12, v_12);
+    vec3 v_13 = (x_16 - y_2);
+    float d2_11 = dot(v_13, v_13);
     vec3 _e11 = light_normal(l_9);
-    float cos_y_1 = ((d2_10 > 0.0) ? dot(_e11, (v_12 / vec3(sqrt(d2_10)))) : 0.0);
-    float _e20 = light_range_scale(li_3, x_16, r_7, rl_7);
+    float cos_y_1 = ((d2_11 > 0.0) ? dot(_e11, (v_13 / vec3(sqrt(d2_11)))) : 0.0);
+    float _e20 = light_range_scale(li_3, x_16, r_8, rl_8);
     float _e23 = _group_0_binding_3_cs[li_3];
     float _e25 = light_area(l_9);
-    float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_10, _e25, cos_y_1);
+    float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_11, _e25, cos_y_1);
     return _e26;
 }
 
-float light_pdf(uint li_4, vec3 x_17, vec3 n_17, vec3 r_8, vec4 lobe_6, vec4 rl_8, vec3 y_3, uint nee_1, bool in_range_2) {
-    float _e9 = select_pdf(li_4, x_17, n_17, r_8, lobe_6, rl_8, nee_1, in_range_2);
-    float _e10 = light_pdf_selected(li_4, x_17, r_8, rl_8, y_3, _e9);
+float light_pdf(uint li_4, vec3 x_17, vec3 n_17, vec3 r_9, vec4 lobe_6, vec4 rl_9, vec3 y_3, uint nee_1, bool in_range_2) {
+    float _e9 = select_pdf(li_4, x_17, n_17, r_9, lobe_6, rl_9, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_4, x_17, r_9, rl_9, y_3, _e9);
     return _e10;
 }
 
-vec3 shade_pick(uint li_5, vec3 x_18, vec3 n_18, vec3 ng_2, GpuMaterial m, vec3 wo_1, vec3 r_9, vec4 lobe_7, vec4 rl_9, float w_6, uint nee_2, float u1_3, float u2_3) {
+vec3 shade_pick(uint li_5, vec3 x_18, vec3 n_18, vec3 ng_2, GpuMaterial m, vec3 wo_1, vec3 r_10, vec4 lobe_7, vec4 rl_10, float w_6, uint nee_2, float u1_3, float u2_3) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_5, x_18, r_9, rl_9);
+    float _e13 = light_range_scale(li_5, x_18, r_10, rl_10);
     float _e16 = _group_0_binding_0_cs.eps;
     Connection _e17 = connect(li_5, x_18, n_18, ng_2, _e13, w_6, u1_3, u2_3, _e16);
     if ((_e17.cos_x <= 0.0)) {
@@ -1333,7 +1356,7 @@ vec3 shade_pick(uint li_5, vec3 x_18, vec3 n_18, vec3 ng_2, GpuMaterial m, vec3 
     GpuLight _e30 = _group_0_binding_2_cs[li_5];
     float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        float _e36 = light_pdf(li_5, x_18, n_18, r_9, lobe_7, rl_9, _e17.y, nee_2, true);
+        float _e36 = light_pdf(li_5, x_18, n_18, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
         float _e38 = specular_probability(lobe_7);
         float _e39 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);

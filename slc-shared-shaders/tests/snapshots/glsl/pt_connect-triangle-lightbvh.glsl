@@ -580,13 +580,15 @@ float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, 
 float cone_cos_toward(vec3 center_2, float radius_2, vec3 p_2, vec3 d) {
     vec3 v_8 = (center_2 - p_2);
     float dist2_2 = dot(v_8, v_8);
-    vec3 w_6 = ((dist2_2 > 0.0) ? (v_8 / vec3(sqrt(dist2_2))) : vec3(0.0, 0.0, 0.0));
-    float _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
-    float cos_i = dot(w_6, d);
-    float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
-    float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
-    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    if ((dist2_2 <= (radius_2 * radius_2))) {
+        return 1.0;
+    }
+    float dist = sqrt(dist2_2);
+    vec3 c_8 = cross(v_8, d);
+    float sin_b_2 = (radius_2 / dist);
+    float _e20 = safe_sqrt((1.0 - (sin_b_2 * sin_b_2)));
+    float _e21 = cos_sub_clamped((sqrt(dot(c_8, c_8)) / dist), (dot(v_8, d) / dist), sin_b_2, _e20);
+    return _e21;
 }
 
 float range_scale_at(vec4 rl, float cos_t) {
@@ -613,10 +615,10 @@ float light_importance(vec3 center_4, float radius_4, float phi_1, vec3 axis_2, 
     if ((dot(n_9, n_9) > 0.0)) {
         vec3 v_9 = (center_4 - p_4);
         float dist2_3 = dot(v_9, v_9);
-        float cos_i_1 = dot(((dist2_3 > 0.0) ? (v_9 / vec3(sqrt(dist2_3))) : vec3(0.0, 0.0, 0.0)), n_9);
+        float cos_i = dot(((dist2_3 > 0.0) ? (v_9 / vec3(sqrt(dist2_3))) : vec3(0.0, 0.0, 0.0)), n_9);
         float _e33 = imp;
-        float _e37 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
-        float _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
+        float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
         imp = (_e33 * max(_e40, 0.0));
     }
     float _e44 = imp;
@@ -941,8 +943,8 @@ float mis_weight(float pdf_a_1, float pdf_b_1) {
 }
 
 float light_range_scale(uint li_1, vec3 x_5, vec3 r_3, vec4 rl_2) {
-    GpuLightCone c_8 = _group_1_binding_2_cs[li_1];
-    float _e9 = range_scale_toward(rl_2, c_8.center, c_8.radius, x_5, r_3);
+    GpuLightCone c_9 = _group_1_binding_2_cs[li_1];
+    float _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_5, r_3);
     return _e9;
 }
 

@@ -219,8 +219,8 @@ float rr_probability(float rt2_, float d2_) {
 }
 
 bool sphere_contains_point(vec3 c, float r, vec3 x_1) {
-    vec3 v_8 = (x_1 - c);
-    return (dot(v_8, v_8) <= (r * r));
+    vec3 v_9 = (x_1 - c);
+    return (dot(v_9, v_9) <= (r * r));
 }
 
 float area_to_solid_angle_pdf(float pdf_area, float d2_1, float cos_light) {
@@ -311,14 +311,14 @@ float cosine_pdf(float cos_theta) {
 
 vec3 onb_tangent(vec3 n_1) {
     float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a_5 = (-1.0 / (s_1 + n_1.z));
-    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_5)), (((s_1 * n_1.x) * n_1.y) * a_5), (-(s_1) * n_1.x));
+    float a_6 = (-1.0 / (s_1 + n_1.z));
+    return vec3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_6)), (((s_1 * n_1.x) * n_1.y) * a_6), (-(s_1) * n_1.x));
 }
 
 vec3 onb_bitangent(vec3 n_2) {
     float s_2 = ((n_2.z >= 0.0) ? 1.0 : -1.0);
-    float a_6 = (-1.0 / (s_2 + n_2.z));
-    return vec3(((n_2.x * n_2.y) * a_6), (s_2 + ((n_2.y * n_2.y) * a_6)), -(n_2.y));
+    float a_7 = (-1.0 / (s_2 + n_2.z));
+    return vec3(((n_2.x * n_2.y) * a_7), (s_2 + ((n_2.y * n_2.y) * a_7)), -(n_2.y));
 }
 
 vec3 onb_to_world(vec3 n_3, vec3 d) {
@@ -334,9 +334,9 @@ vec3 onb_to_local(vec3 n_4, vec3 w_1) {
 }
 
 vec3 cosine_direction(vec3 n_5, float u1_, float u2_) {
-    float r_7 = sqrt(u1_);
+    float r_8 = sqrt(u1_);
     float phi = (6.2831855 * u2_);
-    vec3 _e16 = onb_to_world(n_5, vec3((r_7 * cos(phi)), (r_7 * sin(phi)), sqrt(max((1.0 - u1_), 0.0))));
+    vec3 _e16 = onb_to_world(n_5, vec3((r_8 * cos(phi)), (r_8 * sin(phi)), sqrt(max((1.0 - u1_), 0.0))));
     return normalize(_e16);
 }
 
@@ -512,9 +512,9 @@ vec3 mirror_dir(vec3 n_8, vec3 v_4) {
 }
 
 float bounded_vndf_k(vec3 wi, float alpha_6) {
-    float a_7 = clamp(alpha_6, 0.0, 1.0);
+    float a_8 = clamp(alpha_6, 0.0, 1.0);
     float s_3 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    float a2_3 = (a_7 * a_7);
+    float a2_3 = (a_8 * a_8);
     float s2_ = (s_3 * s_3);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
@@ -586,21 +586,18 @@ float safe_sqrt(float x_2) {
     return sqrt(max(x_2, 0.0));
 }
 
-float subtended_cos(float dist2_, float r2_) {
-    float _e5 = safe_sqrt((1.0 - (r2_ / dist2_)));
-    return ((dist2_ <= r2_) ? -1.0 : _e5);
-}
-
 float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
-    vec3 v_9 = (center - p);
-    float dist2_1 = dot(v_9, v_9);
-    vec3 w_4 = ((dist2_1 > 0.0) ? (v_9 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
-    float _e17 = subtended_cos(dist2_1, (radius * radius));
-    float cos_i = dot(w_4, d_1);
-    float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
-    float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
-    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    vec3 v_10 = (center - p);
+    float dist2_ = dot(v_10, v_10);
+    if ((dist2_ <= (radius * radius))) {
+        return 1.0;
+    }
+    float dist = sqrt(dist2_);
+    vec3 c_8 = cross(v_10, d_1);
+    float sin_b_1 = (radius / dist);
+    float _e20 = safe_sqrt((1.0 - (sin_b_1 * sin_b_1)));
+    float _e21 = cos_sub_clamped((sqrt(dot(c_8, c_8)) / dist), (dot(v_10, d_1) / dist), sin_b_1, _e20);
+    return _e21;
 }
 
 float range_scale_at(vec4 rl, float cos_t) {
@@ -718,9 +715,9 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_4, vec3 b_4, vec3 c_4, float t_min
         return -1.0;
     }
     vec3 q_1 = cross(s_5, e1_1);
-    float v_10 = (dot(d_3, q_1) * inv_1);
-    if (!((v_10 < 0.0))) {
-        local_15 = ((u_3 + v_10) > 1.0);
+    float v_11 = (dot(d_3, q_1) * inv_1);
+    if (!((v_11 < 0.0))) {
+        local_15 = ((u_3 + v_11) > 1.0);
     } else {
         local_15 = true;
     }
@@ -889,8 +886,8 @@ float mis_weight(float pdf_a_1, float pdf_b_1) {
 }
 
 float light_range_scale(uint li, vec3 x_4, vec3 r_2, vec4 rl_2) {
-    GpuLightCone c_8 = _group_1_binding_2_cs[li];
-    float _e9 = range_scale_toward(rl_2, c_8.center, c_8.radius, x_4, r_2);
+    GpuLightCone c_9 = _group_1_binding_2_cs[li];
+    float _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_4, r_2);
     return _e9;
 }
 
@@ -901,14 +898,14 @@ float select_pdf(uint li_1, vec3 x_5, vec3 n_13, vec3 r_3, vec4 lobe_5, vec4 rl_
 
 float light_pdf_selected(uint li_2, vec3 x_6, vec3 r_4, vec4 rl_4, vec3 y, float sel) {
     GpuLight l_6 = _group_0_binding_1_cs[li_2];
-    vec3 v_11 = (x_6 - y);
-    float d2_3 = dot(v_11, v_11);
+    vec3 v_12 = (x_6 - y);
+    float d2_4 = dot(v_12, v_12);
     vec3 _e11 = light_normal(l_6);
-    float cos_y_1 = ((d2_3 > 0.0) ? dot(_e11, (v_11 / vec3(sqrt(d2_3)))) : 0.0);
+    float cos_y_1 = ((d2_4 > 0.0) ? dot(_e11, (v_12 / vec3(sqrt(d2_4)))) : 0.0);
     float _e20 = light_range_scale(li_2, x_6, r_4, rl_4);
     float _e23 = _group_0_binding_2_cs[li_2];
     float _e25 = light_area(l_6);
-    float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_3, _e25, cos_y_1);
+    float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_4, _e25, cos_y_1);
     return _e26;
 }
 
@@ -918,45 +915,71 @@ float light_pdf(uint li_3, vec3 x_7, vec3 n_14, vec3 r_5, vec4 lobe_6, vec4 rl_5
     return _e10;
 }
 
-bool bsh_reaches(BshNode node_3, vec3 x_8, vec3 r_6, vec4 rl_6) {
+float bsh_inner_scale(float a_5, vec3 v_8, float d2_3, vec3 r_6, vec4 rl_6) {
     bool local_20 = false;
     bool local_21 = false;
+    float vr = dot(v_8, r_6);
+    float h2_ = (d2_3 - (a_5 * a_5));
+    if (!((h2_ <= 0.0))) {
+        if ((vr >= 0.0)) {
+            local_21 = ((vr * vr) >= h2_);
+        } else {
+            local_21 = false;
+        }
+        bool _e20 = local_21;
+        local_20 = _e20;
+    } else {
+        local_20 = true;
+    }
+    bool _e22 = local_20;
+    if (_e22) {
+        return (rl_6.w * rl_6.w);
+    }
+    vec3 c_10 = cross(v_8, r_6);
+    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_10, c_10)) * a_5)) / d2_3);
+    float _e36 = range_scale_at(rl_6, (cos_t_1 + 2e-6));
+    return _e36;
+}
+
+bool bsh_reaches(BshNode node_3, vec3 x_8, vec3 r_7, vec4 rl_7) {
+    bool local_22 = false;
+    bool local_23 = false;
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_8);
     if (_e6) {
         return true;
     }
-    if (!((rl_6.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_6.w * 1.0001)), x_8);
-        local_20 = !(_e20);
+    if (!((rl_7.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_7.w * 1.0001)), x_8);
+        local_22 = !(_e20);
     } else {
-        local_20 = true;
+        local_22 = true;
     }
-    bool _e23 = local_20;
+    bool _e23 = local_22;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    vec3 v_12 = (x_8 - node_3.center);
-    float d2_4 = dot(v_12, v_12);
-    float reach_max = (node_3.extent + ((rl_6.w * 1.001) * _e25));
-    if ((d2_4 > (reach_max * reach_max))) {
+    vec3 v_13 = (x_8 - node_3.center);
+    float d2_5 = dot(v_13, v_13);
+    float reach_max = (node_3.extent + ((rl_7.w * 1.001) * _e25));
+    if ((d2_5 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_6, node_3.center, node_3.extent, x_8, r_6);
+        float _e43 = range_scale_toward(rl_7, node_3.center, node_3.extent, x_8, r_7);
         float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         bool _e47 = sphere_contains_point(node_3.center, _e46, x_8);
         return _e47;
     }
-    float _e50 = range_scale_toward(rl_6, node_3.center, node_3.extent, x_8, r_6);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_13), d2_5, r_7, rl_7);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_4 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_21 = (d2_4 <= (reach * reach));
+    if ((d2_5 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_23 = (d2_5 <= (reach * reach));
     } else {
-        local_21 = false;
+        local_23 = false;
     }
-    bool _e67 = local_21;
+    bool _e67 = local_23;
     return _e67;
 }
 

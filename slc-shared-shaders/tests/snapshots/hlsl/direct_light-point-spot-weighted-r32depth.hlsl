@@ -198,8 +198,8 @@ bool slc_keep(float r2_, float d2_1)
 
 bool sphere_contains_point(float3 c, float r_1, float3 x_1)
 {
-    float3 v = (x_1 - c);
-    return (dot(v, v) <= (r_1 * r_1));
+    float3 v_1 = (x_1 - c);
+    return (dot(v_1, v_1) <= (r_1 * r_1));
 }
 
 float inverse_square(float d2_2)
@@ -219,11 +219,11 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     bool local_2 = (bool)0;
     bool local_3 = (bool)0;
 
-    float3 v_1 = (x_2 - y);
-    float d2_5 = dot(v_1, v_1);
-    const bool _e7 = slc_keep(r2_1, d2_5);
+    float3 v_2 = (x_2 - y);
+    float d2_6 = dot(v_2, v_2);
+    const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_2 = !((d2_5 > 0.0));
+        local_2 = !((d2_6 > 0.0));
     } else {
         local_2 = true;
     }
@@ -231,7 +231,7 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_5 = (v_1 / (sqrt(d2_5)).xxx);
+    float3 w_5 = (v_2 / (sqrt(d2_6)).xxx);
     float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = (dot(ng, w_5) >= 0.0);
@@ -361,11 +361,11 @@ float subtended_cos(float dist2_, float r2_2)
 
 float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, float3 p)
 {
-    float3 v_2 = (p - center_);
-    float dist2_1 = dot(v_2, v_2);
+    float3 v_3 = (p - center_);
+    float dist2_1 = dot(v_3, v_3);
     float r2_4 = (radius * radius);
-    float d2_6 = max(max(dist2_1, r2_4), MIN_D2_);
-    float3 wi = ((dist2_1 > 0.0) ? (v_2 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    float d2_7 = max(max(dist2_1, r2_4), MIN_D2_);
+    float3 wi = ((dist2_1 > 0.0) ? (v_3 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
     const float _e26 = subtended_cos(dist2_1, r2_4);
@@ -374,7 +374,7 @@ float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, floa
     const float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
     const float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
     const float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return float4(_e37, d2_6, _e26, _e30);
+    return float4(_e37, d2_7, _e26, _e30);
 }
 
 float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis_1, float cos_o_1, float cos_e, float3 p_1)
@@ -388,15 +388,17 @@ float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis
 
 float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d)
 {
-    float3 v_3 = (center_2 - p_2);
-    float dist2_2 = dot(v_3, v_3);
-    float3 w_6 = ((dist2_2 > 0.0) ? (v_3 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0));
-    const float _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
-    float cos_i = dot(w_6, d);
-    const float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
-    const float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
-    const float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    float3 v_4 = (center_2 - p_2);
+    float dist2_2 = dot(v_4, v_4);
+    if ((dist2_2 <= (radius_2 * radius_2))) {
+        return 1.0;
+    }
+    float dist = sqrt(dist2_2);
+    float3 c_2 = cross(v_4, d);
+    float sin_b_2 = (radius_2 / dist);
+    const float _e20 = safe_sqrt((1.0 - (sin_b_2 * sin_b_2)));
+    const float _e21 = cos_sub_clamped((sqrt(dot(c_2, c_2)) / dist), (dot(v_4, d) / dist), sin_b_2, _e20);
+    return _e21;
 }
 
 float range_scale_at(float4 rl, float cos_t)
@@ -425,12 +427,12 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_1, n_1) > 0.0)) {
-        float3 v_4 = (center_4 - p_4);
-        float dist2_3 = dot(v_4, v_4);
-        float cos_i_1 = dot(((dist2_3 > 0.0) ? (v_4 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0)), n_1);
+        float3 v_5 = (center_4 - p_4);
+        float dist2_3 = dot(v_5, v_5);
+        float cos_i = dot(((dist2_3 > 0.0) ? (v_5 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0)), n_1);
         float _e33 = imp;
-        const float _e37 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
-        const float _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        const float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
+        const float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
         imp = (_e33 * max(_e40, 0.0));
     }
     float _e44 = imp;
@@ -468,14 +470,14 @@ float candidate_weight(float importance, float rt2_2, float d2_4)
 
 float cone_weight(float3 center_6, float radius_6, float phi_3, float3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, float3 p_6, float3 n_3, float3 r_4, float4 lobe_6)
 {
-    float3 v_5 = (p_6 - center_6);
+    float3 v_6 = (p_6 - center_6);
     if ((lobe_6.y <= 0.0)) {
         const float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3);
-        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_5, v_5));
+        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_6, v_6));
         return _e19;
     }
     const float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3, r_4, lobe_6);
-    const float _e22 = candidate_weight(_e20, rt2_3, dot(v_5, v_5));
+    const float _e22 = candidate_weight(_e20, rt2_3, dot(v_6, v_6));
     return _e22;
 }
 
@@ -544,51 +546,79 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_5, float4 rl_2)
+float bsh_inner_scale(float a_3, float3 v, float d2_5, float3 r_5, float4 rl_2)
 {
     bool local_5 = (bool)0;
     bool local_6 = (bool)0;
+
+    float vr = dot(v, r_5);
+    float h2_ = (d2_5 - (a_3 * a_3));
+    if (!((h2_ <= 0.0))) {
+        if ((vr >= 0.0)) {
+            local_6 = ((vr * vr) >= h2_);
+        } else {
+            local_6 = false;
+        }
+        bool _e20 = local_6;
+        local_5 = _e20;
+    } else {
+        local_5 = true;
+    }
+    bool _e22 = local_5;
+    if (_e22) {
+        return (rl_2.w * rl_2.w);
+    }
+    float3 c_3 = cross(v, r_5);
+    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_3, c_3)) * a_3)) / d2_5);
+    const float _e36 = range_scale_at(rl_2, (cos_t_1 + 2e-6));
+    return _e36;
+}
+
+bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_6, float4 rl_3)
+{
+    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_2.center_, node_2.radius, x_4);
     if (_e6) {
         return true;
     }
-    if (!((rl_2.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_2.w * 1.0001)), x_4);
-        local_5 = !(_e20);
+    if (!((rl_3.w <= 1.0))) {
+        const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_3.w * 1.0001)), x_4);
+        local_7 = !(_e20);
     } else {
-        local_5 = true;
+        local_7 = true;
     }
-    bool _e23 = local_5;
+    bool _e23 = local_7;
     if (_e23) {
         return false;
     }
     const float _e25 = bsh_range_bound(node_2);
-    float3 v_6 = (x_4 - node_2.center_);
-    float d2_7 = dot(v_6, v_6);
-    float reach_max = (node_2.extent + ((rl_2.w * 1.001) * _e25));
-    if ((d2_7 > (reach_max * reach_max))) {
+    float3 v_7 = (x_4 - node_2.center_);
+    float d2_8 = dot(v_7, v_7);
+    float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
+    if ((d2_8 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_2.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_2, node_2.center_, node_2.extent, x_4, r_5);
+        const float _e43 = range_scale_toward(rl_3, node_2.center_, node_2.extent, x_4, r_6);
         const float _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
         const bool _e47 = sphere_contains_point(node_2.center_, _e46, x_4);
         return _e47;
     }
-    const float _e50 = range_scale_toward(rl_2, node_2.center_, node_2.extent, x_4, r_5);
+    const float _e50 = bsh_inner_scale(node_2.extent, -(v_7), d2_8, r_6, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if ((d2_7 <= ((node_2.radius * node_2.radius) * s_c))) {
-        local_6 = (d2_7 <= (reach * reach));
+    if ((d2_8 <= ((node_2.radius * node_2.radius) * s_c))) {
+        local_8 = (d2_8 <= (reach * reach));
     } else {
-        local_6 = false;
+        local_8 = false;
     }
-    bool _e67 = local_6;
+    bool _e67 = local_8;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_6, float4 rl_3)
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_7, float4 rl_4)
 {
     uint i_1 = (uint)0;
 
@@ -605,7 +635,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_6, float4
         {
             uint _e9 = i_1;
             const BshNode _e10 = bsh_node(nodes_3, _e9);
-            const bool _e11 = bsh_reaches(_e10, x_5, r_6, rl_3);
+            const bool _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     uint _e15 = i_1;
@@ -636,7 +666,7 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
 Connection connect(uint li, float3 x_6, float3 n_4, float3 ng_1, float s, float w_res, float u1_1, float u2_1, float eps)
 {
     Connection c_1 = (Connection)0;
-    bool local_7 = (bool)0;
+    bool local_9 = (bool)0;
 
     c_1.e = (0.0).xxx;
     GpuLight l_2 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
@@ -650,23 +680,23 @@ Connection connect(uint li, float3 x_6, float3 n_4, float3 ng_1, float s, float 
     if (!((_e27 <= 0.0))) {
         float3 _e36 = c_1.y;
         const bool _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
-        local_7 = _e37;
+        local_9 = _e37;
     } else {
-        local_7 = true;
+        local_9 = true;
     }
-    bool _e39 = local_7;
+    bool _e39 = local_9;
     if (_e39) {
         Connection _e40 = c_1;
         const Connection connection = _e40;
         return connection;
     }
     float3 _e42 = c_1.y;
-    float3 v_7 = (x_6 - _e42);
-    float d2_8 = dot(v_7, v_7);
-    const float3 _e49 = light_intensity(l_2, (v_7 / (sqrt(d2_8)).xxx));
+    float3 v_8 = (x_6 - _e42);
+    float d2_9 = dot(v_8, v_8);
+    const float3 _e49 = light_intensity(l_2, (v_8 / (sqrt(d2_9)).xxx));
     float _e51 = c_1.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
     c_1.e = (_e49 * _e56);
     Connection _e58 = c_1;
     const Connection connection_1 = _e58;
@@ -686,23 +716,23 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_1, float3 x_7, float3 r_7, float4 rl_4)
+float light_range_scale(uint li_1, float3 x_7, float3 r_8, float4 rl_5)
 {
-    GpuLightCone c_2 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_4, c_2.center_, c_2.radius, x_7, r_7);
+    GpuLightCone c_4 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_5, c_4.center_, c_4.radius, x_7, r_8);
     return _e9;
 }
 
-float light_weight(uint li_2, float3 x_8, float3 n_5, float3 r_8, float4 lobe_7, float4 rl_5)
+float light_weight(uint li_2, float3 x_8, float3 n_5, float3 r_9, float4 lobe_7, float4 rl_6)
 {
-    GpuLightCone c_3 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
-    const float _e15 = light_range_scale(li_2, x_8, r_8, rl_5);
+    GpuLightCone c_5 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
+    const float _e15 = light_range_scale(li_2, x_8, r_9, rl_6);
     float _e18 = asfloat(rt2_4.Load(li_2*4));
-    const float _e20 = cone_weight(c_3.center_, c_3.radius, c_3.phi, c_3.axis, c_3.cos_o, c_3.cos_e, (_e15 * _e18), x_8, n_5, r_8, lobe_7);
+    const float _e20 = cone_weight(c_5.center_, c_5.radius, c_5.phi, c_5.axis, c_5.cos_o, c_5.cos_e, (_e15 * _e18), x_8, n_5, r_9, lobe_7);
     return _e20;
 }
 
-WeightedPicks bsh_weighted_collect(float3 x_9, float3 n_6, float3 r_9, float4 lobe_8, float4 rl_6, uint h0_)
+WeightedPicks bsh_weighted_collect(float3 x_9, float3 n_6, float3 r_10, float4 lobe_8, float4 rl_7, uint h0_)
 {
     WeightedPicks picks = (WeightedPicks)0;
     uint h_1 = (uint)0;
@@ -713,7 +743,7 @@ WeightedPicks bsh_weighted_collect(float3 x_9, float3 n_6, float3 r_9, float4 lo
     picks.n = 0u;
     h_1 = h0_;
     const uint _e14 = bsh_first(BSH);
-    const uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_9, rl_6);
+    const uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_10, rl_7);
     b_3 = _e15;
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
@@ -723,7 +753,7 @@ WeightedPicks bsh_weighted_collect(float3 x_9, float3 n_6, float3 r_9, float4 lo
         if (!loop_init) {
             uint _e58 = b_3;
             uint _e61 = asuint(bsh_nodes.Load(20+_e58*32));
-            const uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_9, rl_6);
+            const uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_10, rl_7);
             b_3 = _e62;
         }
         loop_init = false;
@@ -737,7 +767,7 @@ WeightedPicks bsh_weighted_collect(float3 x_9, float3 n_6, float3 r_9, float4 lo
             picks.n = (_e21 + 1u);
             uint _e25 = b_3;
             uint li_4 = asuint(bsh_nodes.Load(24+_e25*32));
-            const float _e29 = light_weight(li_4, x_9, n_6, r_9, lobe_8, rl_6);
+            const float _e29 = light_weight(li_4, x_9, n_6, r_10, lobe_8, rl_7);
             if ((_e29 > 0.0)) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = (_e33 + _e29);
@@ -812,7 +842,7 @@ float4 surface_at(int2 texel)
     return _e32;
 }
 
-Shaded shade_pick(uint li_3, float3 x_10, float3 n_7, float3 r_10, float4 rl_7, Material m_1, float w_4, float u1_2, float u2_2)
+Shaded shade_pick(uint li_3, float3 x_10, float3 n_7, float3 r_11, float4 rl_8, Material m_1, float w_4, float u1_2, float u2_2)
 {
     Shaded s_2 = (Shaded)0;
 
@@ -833,9 +863,9 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
     return ret;
 }
 
-Shaded add(Shaded a_3, Shaded b_4)
+Shaded add(Shaded a_4, Shaded b_4)
 {
-    const Shaded shaded_1 = ConstructShaded((a_3.e + b_4.e), (a_3.diffuse + b_4.diffuse), (a_3.specular + b_4.specular));
+    const Shaded shaded_1 = ConstructShaded((a_4.e + b_4.e), (a_4.diffuse + b_4.diffuse), (a_4.specular + b_4.specular));
     return shaded_1;
 }
 

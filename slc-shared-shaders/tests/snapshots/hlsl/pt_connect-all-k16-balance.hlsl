@@ -139,7 +139,7 @@ ByteAddressBuffer geo_nodes : register(t6);
 ByteAddressBuffer geo_tris : register(t7);
 ByteAddressBuffer bsh_nodes : register(t5);
 ByteAddressBuffer lights : register(t2);
-ByteAddressBuffer r2_3 : register(t4);
+ByteAddressBuffer r2_2 : register(t4);
 ByteAddressBuffer rt2_4 : register(t3);
 ByteAddressBuffer light_cones : register(t2, space1);
 cbuffer params : register(b0) { ShadeParams params; }
@@ -234,8 +234,8 @@ bool slc_keep(float r2_, float d2_2)
 
 bool sphere_contains_point(float3 c, float r, float3 x_2)
 {
-    float3 v_6 = (x_2 - c);
-    return (dot(v_6, v_6) <= (r * r));
+    float3 v_7 = (x_2 - c);
+    return (dot(v_7, v_7) <= (r * r));
 }
 
 float inverse_square(float d2_3)
@@ -255,11 +255,11 @@ float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
     bool local = (bool)0;
     bool local_1 = (bool)0;
 
-    float3 v_7 = (x_3 - y);
-    float d2_7 = dot(v_7, v_7);
-    const bool _e7 = slc_keep(r2_1, d2_7);
+    float3 v_8 = (x_3 - y);
+    float d2_8 = dot(v_8, v_8);
+    const bool _e7 = slc_keep(r2_1, d2_8);
     if (!(!(_e7))) {
-        local = !((d2_7 > 0.0));
+        local = !((d2_8 > 0.0));
     } else {
         local = true;
     }
@@ -267,7 +267,7 @@ float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_7 = (v_7 / (sqrt(d2_7)).xxx);
+    float3 w_7 = (v_8 / (sqrt(d2_8)).xxx);
     float cos_x_1 = -(dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = (dot(ng, w_7) >= 0.0);
@@ -322,15 +322,15 @@ float atan_portable(float x_4)
     float base = 0.0;
     float t = (float)0;
 
-    float a_8 = abs(x_4);
-    t = a_8;
-    if ((a_8 > 2.4142137)) {
+    float a_9 = abs(x_4);
+    t = a_9;
+    if ((a_9 > 2.4142137)) {
         base = 1.5707964;
-        t = (-1.0 / a_8);
+        t = (-1.0 / a_9);
     } else {
-        if ((a_8 > 0.41421357)) {
+        if ((a_9 > 0.41421357)) {
             base = 0.7853982;
-            t = ((a_8 - 1.0) / (a_8 + 1.0));
+            t = ((a_9 - 1.0) / (a_9 + 1.0));
         }
     }
     float _e18 = t;
@@ -339,8 +339,8 @@ float atan_portable(float x_4)
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_10 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
-    return ((x_4 < 0.0) ? -(r_10) : r_10);
+    float r_11 = (_e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35));
+    return ((x_4 < 0.0) ? -(r_11) : r_11);
 }
 
 float atan2_portable(float y_1, float x_5)
@@ -494,11 +494,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_3)
     const float _e54 = ies_lerp_t(_e51, _e53, _e32);
     const float _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
     const float _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
-    float a_9 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
+    float a_10 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
     const float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     const float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
     float b_7 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
-    return ((a_9 * (1.0 - _e54)) + (b_7 * _e54));
+    return ((a_10 * (1.0 - _e54)) + (b_7 * _e54));
 }
 
 float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
@@ -650,15 +650,15 @@ float cosine_pdf(float cos_theta_1)
 float3 onb_tangent(float3 n_8)
 {
     float s_3 = ((n_8.z >= 0.0) ? 1.0 : -1.0);
-    float a_10 = (-1.0 / (s_3 + n_8.z));
-    return float3((1.0 + (((s_3 * n_8.x) * n_8.x) * a_10)), (((s_3 * n_8.x) * n_8.y) * a_10), (-(s_3) * n_8.x));
+    float a_11 = (-1.0 / (s_3 + n_8.z));
+    return float3((1.0 + (((s_3 * n_8.x) * n_8.x) * a_11)), (((s_3 * n_8.x) * n_8.y) * a_11), (-(s_3) * n_8.x));
 }
 
 float3 onb_bitangent(float3 n_9)
 {
     float s_4 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_11 = (-1.0 / (s_4 + n_9.z));
-    return float3(((n_9.x * n_9.y) * a_11), (s_4 + ((n_9.y * n_9.y) * a_11)), -(n_9.y));
+    float a_12 = (-1.0 / (s_4 + n_9.z));
+    return float3(((n_9.x * n_9.y) * a_12), (s_4 + ((n_9.y * n_9.y) * a_12)), -(n_9.y));
 }
 
 float3 onb_to_local(float3 n_10, float3 w_4)
@@ -863,9 +863,9 @@ float3 mirror_dir(float3 n_13, float3 v_3)
 
 float bounded_vndf_k(float3 wi, float alpha_6)
 {
-    float a_12 = saturate(alpha_6);
+    float a_13 = saturate(alpha_6);
     float s_5 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    float a2_2 = (a_12 * a_12);
+    float a2_2 = (a_13 * a_13);
     float s2_ = (s_5 * s_5);
     return (((1.0 - a2_2) * s2_) / (s2_ + ((a2_2 * wi.z) * wi.z)));
 }
@@ -916,23 +916,19 @@ float safe_sqrt(float x_8)
     return sqrt(max(x_8, 0.0));
 }
 
-float subtended_cos(float dist2_, float r2_2)
-{
-    const float _e5 = safe_sqrt((1.0 - (r2_2 / dist2_)));
-    return ((dist2_ <= r2_2) ? -1.0 : _e5);
-}
-
 float cone_cos_toward(float3 center_, float radius, float3 p, float3 d)
 {
-    float3 v_8 = (center_ - p);
-    float dist2_1 = dot(v_8, v_8);
-    float3 w_8 = ((dist2_1 > 0.0) ? (v_8 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
-    const float _e17 = subtended_cos(dist2_1, (radius * radius));
-    float cos_i = dot(w_8, d);
-    const float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
-    const float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
-    const float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    float3 v_9 = (center_ - p);
+    float dist2_ = dot(v_9, v_9);
+    if ((dist2_ <= (radius * radius))) {
+        return 1.0;
+    }
+    float dist = sqrt(dist2_);
+    float3 c_12 = cross(v_9, d);
+    float sin_b_1 = (radius / dist);
+    const float _e20 = safe_sqrt((1.0 - (sin_b_1 * sin_b_1)));
+    const float _e21 = cos_sub_clamped((sqrt(dot(c_12, c_12)) / dist), (dot(v_9, d) / dist), sin_b_1, _e20);
+    return _e21;
 }
 
 float range_scale_at(float4 rl, float cos_t)
@@ -1027,9 +1023,9 @@ float ray_triangle(float3 o_1, float3 d_2, float3 a_6, float3 b_5, float3 c_6, f
         return -1.0;
     }
     float3 q = cross(s_6, e1_);
-    float v_9 = (dot(d_2, q) * inv_1);
-    if (!((v_9 < 0.0))) {
-        local_14 = ((u_2 + v_9) > 1.0);
+    float v_10 = (dot(d_2, q) * inv_1);
+    if (!((v_10 < 0.0))) {
+        local_14 = ((u_2 + v_10) > 1.0);
     } else {
         local_14 = true;
     }
@@ -1282,51 +1278,79 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_10, float3 r_2, float4 rl_2)
+float bsh_inner_scale(float a_8, float3 v_6, float d2_7, float3 r_2, float4 rl_2)
 {
     bool local_18 = (bool)0;
     bool local_19 = (bool)0;
+
+    float vr = dot(v_6, r_2);
+    float h2_ = (d2_7 - (a_8 * a_8));
+    if (!((h2_ <= 0.0))) {
+        if ((vr >= 0.0)) {
+            local_19 = ((vr * vr) >= h2_);
+        } else {
+            local_19 = false;
+        }
+        bool _e20 = local_19;
+        local_18 = _e20;
+    } else {
+        local_18 = true;
+    }
+    bool _e22 = local_18;
+    if (_e22) {
+        return (rl_2.w * rl_2.w);
+    }
+    float3 c_13 = cross(v_6, r_2);
+    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_13, c_13)) * a_8)) / d2_7);
+    const float _e36 = range_scale_at(rl_2, (cos_t_1 + 2e-6));
+    return _e36;
+}
+
+bool bsh_reaches(BshNode node_3, float3 x_10, float3 r_3, float4 rl_3)
+{
+    bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_10);
     if (_e6) {
         return true;
     }
-    if (!((rl_2.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_2.w * 1.0001)), x_10);
-        local_18 = !(_e20);
+    if (!((rl_3.w <= 1.0))) {
+        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_10);
+        local_20 = !(_e20);
     } else {
-        local_18 = true;
+        local_20 = true;
     }
-    bool _e23 = local_18;
+    bool _e23 = local_20;
     if (_e23) {
         return false;
     }
     const float _e25 = bsh_range_bound(node_3);
-    float3 v_10 = (x_10 - node_3.center_);
-    float d2_8 = dot(v_10, v_10);
-    float reach_max = (node_3.extent + ((rl_2.w * 1.001) * _e25));
-    if ((d2_8 > (reach_max * reach_max))) {
+    float3 v_11 = (x_10 - node_3.center_);
+    float d2_9 = dot(v_11, v_11);
+    float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
+    if ((d2_9 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_2, node_3.center_, node_3.extent, x_10, r_2);
+        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_10, r_3);
         const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_10);
         return _e47;
     }
-    const float _e50 = range_scale_toward(rl_2, node_3.center_, node_3.extent, x_10, r_2);
+    const float _e50 = bsh_inner_scale(node_3.extent, -(v_11), d2_9, r_3, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_8 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_19 = (d2_8 <= (reach * reach));
+    if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_21 = (d2_9 <= (reach * reach));
     } else {
-        local_19 = false;
+        local_21 = false;
     }
-    bool _e67 = local_19;
+    bool _e67 = local_21;
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_11, float3 r_3, float4 rl_3)
+uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_11, float3 r_4, float4 rl_4)
 {
     uint i_3 = (uint)0;
 
@@ -1343,7 +1367,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_11, float3 r_3, flo
         {
             uint _e9 = i_3;
             const BshNode _e10 = bsh_node(nodes_3, _e9);
-            const bool _e11 = bsh_reaches(_e10, x_11, r_3, rl_3);
+            const bool _e11 = bsh_reaches(_e10, x_11, r_4, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     uint _e15 = i_3;
@@ -1358,7 +1382,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_11, float3 r_3, flo
     return BSH_NONE;
 }
 
-Picks bsh_collect(float3 x_12, float3 r_4, float4 rl_4, uint seed_1)
+Picks bsh_collect(float3 x_12, float3 r_5, float4 rl_5, uint seed_1)
 {
     Picks picks = (Picks)0;
     uint h_1 = (uint)0;
@@ -1367,7 +1391,7 @@ Picks bsh_collect(float3 x_12, float3 r_4, float4 rl_4, uint seed_1)
     picks.n = 0u;
     h_1 = seed_1;
     const uint _e10 = bsh_first(BSH);
-    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_4, rl_4);
+    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_5, rl_5);
     i_4 = _e11;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
@@ -1377,7 +1401,7 @@ Picks bsh_collect(float3 x_12, float3 r_4, float4 rl_4, uint seed_1)
         if (!loop_init_1) {
             uint _e44 = i_4;
             uint _e47 = asuint(bsh_nodes.Load(20+_e44*32));
-            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_4, rl_4);
+            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_5, rl_5);
             i_4 = _e48;
         }
         loop_init_1 = false;
@@ -1431,37 +1455,37 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
 Connection connect(uint li, float3 x_13, float3 n_15, float3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps)
 {
     Connection c_7 = (Connection)0;
-    bool local_20 = (bool)0;
+    bool local_22 = (bool)0;
 
     c_7.e = (0.0).xxx;
     GpuLight l_8 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
     const float3 _e17 = light_point(l_8, u1_2, u2_2);
     c_7.y = _e17;
     float3 _e20 = c_7.y;
-    float _e23 = asfloat(r2_3.Load(li*4));
+    float _e23 = asfloat(r2_2.Load(li*4));
     const float _e25 = connection_cosine(x_13, _e20, n_15, ng_1, (s_1 * _e23));
     c_7.cos_x = _e25;
     float _e27 = c_7.cos_x;
     if (!((_e27 <= 0.0))) {
         float3 _e36 = c_7.y;
         const bool _e37 = occluded((x_13 + (ng_1 * eps)), _e36);
-        local_20 = _e37;
+        local_22 = _e37;
     } else {
-        local_20 = true;
+        local_22 = true;
     }
-    bool _e39 = local_20;
+    bool _e39 = local_22;
     if (_e39) {
         Connection _e40 = c_7;
         const Connection connection = _e40;
         return connection;
     }
     float3 _e42 = c_7.y;
-    float3 v_11 = (x_13 - _e42);
-    float d2_9 = dot(v_11, v_11);
-    const float3 _e49 = light_intensity(l_8, (v_11 / (sqrt(d2_9)).xxx));
+    float3 v_12 = (x_13 - _e42);
+    float d2_10 = dot(v_12, v_12);
+    const float3 _e49 = light_intensity(l_8, (v_12 / (sqrt(d2_10)).xxx));
     float _e51 = c_7.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_9, (s_1 * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_10, (s_1 * _e54), w_res);
     c_7.e = (_e49 * _e56);
     Connection _e58 = c_7;
     const Connection connection_1 = _e58;
@@ -1487,45 +1511,45 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_1, float3 x_14, float3 r_5, float4 rl_5)
+float light_range_scale(uint li_1, float3 x_14, float3 r_6, float4 rl_6)
 {
-    GpuLightCone c_12 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_5, c_12.center_, c_12.radius, x_14, r_5);
+    GpuLightCone c_14 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_6, c_14.center_, c_14.radius, x_14, r_6);
     return _e9;
 }
 
-float select_pdf(uint li_2, float3 x_15, float3 n_16, float3 r_6, float4 lobe_5, float4 rl_6, uint nee, bool in_range_1)
+float select_pdf(uint li_2, float3 x_15, float3 n_16, float3 r_7, float4 lobe_5, float4 rl_7, uint nee, bool in_range_1)
 {
     const float _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-float light_pdf_selected(uint li_3, float3 x_16, float3 r_7, float4 rl_7, float3 y_2, float sel)
+float light_pdf_selected(uint li_3, float3 x_16, float3 r_8, float4 rl_8, float3 y_2, float sel)
 {
     GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
-    float3 v_12 = (x_16 - y_2);
-    float d2_10 = dot(v_12, v_12);
+    float3 v_13 = (x_16 - y_2);
+    float d2_11 = dot(v_13, v_13);
     const float3 _e11 = light_normal(l_9);
-    float cos_y_1 = ((d2_10 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_10)).xxx)) : 0.0);
-    const float _e20 = light_range_scale(li_3, x_16, r_7, rl_7);
+    float cos_y_1 = ((d2_11 > 0.0) ? dot(_e11, (v_13 / (sqrt(d2_11)).xxx)) : 0.0);
+    const float _e20 = light_range_scale(li_3, x_16, r_8, rl_8);
     float _e23 = asfloat(rt2_4.Load(li_3*4));
     const float _e25 = light_area(l_9);
-    const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_10, _e25, cos_y_1);
+    const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_11, _e25, cos_y_1);
     return _e26;
 }
 
-float light_pdf(uint li_4, float3 x_17, float3 n_17, float3 r_8, float4 lobe_6, float4 rl_8, float3 y_3, uint nee_1, bool in_range_2)
+float light_pdf(uint li_4, float3 x_17, float3 n_17, float3 r_9, float4 lobe_6, float4 rl_9, float3 y_3, uint nee_1, bool in_range_2)
 {
-    const float _e9 = select_pdf(li_4, x_17, n_17, r_8, lobe_6, rl_8, nee_1, in_range_2);
-    const float _e10 = light_pdf_selected(li_4, x_17, r_8, rl_8, y_3, _e9);
+    const float _e9 = select_pdf(li_4, x_17, n_17, r_9, lobe_6, rl_9, nee_1, in_range_2);
+    const float _e10 = light_pdf_selected(li_4, x_17, r_9, rl_9, y_3, _e9);
     return _e10;
 }
 
-float3 shade_pick(uint li_5, float3 x_18, float3 n_18, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_9, float4 lobe_7, float4 rl_9, float w_6, uint nee_2, float u1_3, float u2_3)
+float3 shade_pick(uint li_5, float3 x_18, float3 n_18, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_10, float4 lobe_7, float4 rl_10, float w_6, uint nee_2, float u1_3, float u2_3)
 {
     float mis = 1.0;
 
-    const float _e13 = light_range_scale(li_5, x_18, r_9, rl_9);
+    const float _e13 = light_range_scale(li_5, x_18, r_10, rl_10);
     float _e16 = params.eps;
     const Connection _e17 = connect(li_5, x_18, n_18, ng_2, _e13, w_6, u1_3, u2_3, _e16);
     if ((_e17.cos_x <= 0.0)) {
@@ -1535,7 +1559,7 @@ float3 shade_pick(uint li_5, float3 x_18, float3 n_18, float3 ng_2, GpuMaterial 
     GpuLight _e30 = ConstructGpuLight(asfloat(lights.Load3(li_5*64+0)), asuint(lights.Load(li_5*64+12)), asfloat(lights.Load3(li_5*64+16)), asfloat(lights.Load(li_5*64+28)), asfloat(lights.Load3(li_5*64+32)), asfloat(lights.Load(li_5*64+44)), asfloat(lights.Load3(li_5*64+48)), asuint(lights.Load(li_5*64+60)));
     const float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        const float _e36 = light_pdf(li_5, x_18, n_18, r_9, lobe_7, rl_9, _e17.y, nee_2, true);
+        const float _e36 = light_pdf(li_5, x_18, n_18, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
         const float _e38 = specular_probability(lobe_7);
         const float _e39 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e38);
         const float _e40 = mis_weight(_e36, _e39);

@@ -632,13 +632,15 @@ float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d)
 {
     float3 v_8 = (center_2 - p_2);
     float dist2_2 = dot(v_8, v_8);
-    float3 w_6 = ((dist2_2 > 0.0) ? (v_8 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0));
-    const float _e17 = subtended_cos(dist2_2, (radius_2 * radius_2));
-    float cos_i = dot(w_6, d);
-    const float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
-    const float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
-    const float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    if ((dist2_2 <= (radius_2 * radius_2))) {
+        return 1.0;
+    }
+    float dist = sqrt(dist2_2);
+    float3 c_8 = cross(v_8, d);
+    float sin_b_2 = (radius_2 / dist);
+    const float _e20 = safe_sqrt((1.0 - (sin_b_2 * sin_b_2)));
+    const float _e21 = cos_sub_clamped((sqrt(dot(c_8, c_8)) / dist), (dot(v_8, d) / dist), sin_b_2, _e20);
+    return _e21;
 }
 
 float range_scale_at(float4 rl, float cos_t)
@@ -669,10 +671,10 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
     if ((dot(n_9, n_9) > 0.0)) {
         float3 v_9 = (center_4 - p_4);
         float dist2_3 = dot(v_9, v_9);
-        float cos_i_1 = dot(((dist2_3 > 0.0) ? (v_9 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0)), n_9);
+        float cos_i = dot(((dist2_3 > 0.0) ? (v_9 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0)), n_9);
         float _e33 = imp;
-        const float _e37 = safe_sqrt((1.0 - (cos_i_1 * cos_i_1)));
-        const float _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        const float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
+        const float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
         imp = (_e33 * max(_e40, 0.0));
     }
     float _e44 = imp;
@@ -1087,8 +1089,8 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
 
 float light_range_scale(uint li_1, float3 x_5, float3 r_3, float4 rl_2)
 {
-    GpuLightCone c_8 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_2, c_8.center_, c_8.radius, x_5, r_3);
+    GpuLightCone c_9 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_2, c_9.center_, c_9.radius, x_5, r_3);
     return _e9;
 }
 

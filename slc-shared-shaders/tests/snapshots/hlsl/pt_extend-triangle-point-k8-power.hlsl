@@ -220,8 +220,8 @@ float rr_probability(float rt2_, float d2_)
 
 bool sphere_contains_point(float3 c, float r, float3 x_1)
 {
-    float3 v_8 = (x_1 - c);
-    return (dot(v_8, v_8) <= (r * r));
+    float3 v_9 = (x_1 - c);
+    return (dot(v_9, v_9) <= (r * r));
 }
 
 float area_to_solid_angle_pdf(float pdf_area, float d2_1, float cos_light)
@@ -323,15 +323,15 @@ float cosine_pdf(float cos_theta)
 float3 onb_tangent(float3 n_1)
 {
     float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a_5 = (-1.0 / (s_1 + n_1.z));
-    return float3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_5)), (((s_1 * n_1.x) * n_1.y) * a_5), (-(s_1) * n_1.x));
+    float a_6 = (-1.0 / (s_1 + n_1.z));
+    return float3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_6)), (((s_1 * n_1.x) * n_1.y) * a_6), (-(s_1) * n_1.x));
 }
 
 float3 onb_bitangent(float3 n_2)
 {
     float s_2 = ((n_2.z >= 0.0) ? 1.0 : -1.0);
-    float a_6 = (-1.0 / (s_2 + n_2.z));
-    return float3(((n_2.x * n_2.y) * a_6), (s_2 + ((n_2.y * n_2.y) * a_6)), -(n_2.y));
+    float a_7 = (-1.0 / (s_2 + n_2.z));
+    return float3(((n_2.x * n_2.y) * a_7), (s_2 + ((n_2.y * n_2.y) * a_7)), -(n_2.y));
 }
 
 float3 onb_to_world(float3 n_3, float3 d)
@@ -350,9 +350,9 @@ float3 onb_to_local(float3 n_4, float3 w_1)
 
 float3 cosine_direction(float3 n_5, float u1_, float u2_)
 {
-    float r_7 = sqrt(u1_);
+    float r_8 = sqrt(u1_);
     float phi = (6.2831855 * u2_);
-    const float3 _e16 = onb_to_world(n_5, float3((r_7 * cos(phi)), (r_7 * sin(phi)), sqrt(max((1.0 - u1_), 0.0))));
+    const float3 _e16 = onb_to_world(n_5, float3((r_8 * cos(phi)), (r_8 * sin(phi)), sqrt(max((1.0 - u1_), 0.0))));
     return normalize(_e16);
 }
 
@@ -551,9 +551,9 @@ float3 mirror_dir(float3 n_8, float3 v_4)
 
 float bounded_vndf_k(float3 wi, float alpha_6)
 {
-    float a_7 = saturate(alpha_6);
+    float a_8 = saturate(alpha_6);
     float s_3 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    float a2_3 = (a_7 * a_7);
+    float a2_3 = (a_8 * a_8);
     float s2_ = (s_3 * s_3);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
@@ -632,23 +632,19 @@ float safe_sqrt(float x_2)
     return sqrt(max(x_2, 0.0));
 }
 
-float subtended_cos(float dist2_, float r2_)
-{
-    const float _e5 = safe_sqrt((1.0 - (r2_ / dist2_)));
-    return ((dist2_ <= r2_) ? -1.0 : _e5);
-}
-
 float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
 {
-    float3 v_9 = (center_ - p);
-    float dist2_1 = dot(v_9, v_9);
-    float3 w_4 = ((dist2_1 > 0.0) ? (v_9 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
-    const float _e17 = subtended_cos(dist2_1, (radius * radius));
-    float cos_i = dot(w_4, d_1);
-    const float _e22 = safe_sqrt((1.0 - (cos_i * cos_i)));
-    const float _e26 = safe_sqrt((1.0 - (_e17 * _e17)));
-    const float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    float3 v_10 = (center_ - p);
+    float dist2_ = dot(v_10, v_10);
+    if ((dist2_ <= (radius * radius))) {
+        return 1.0;
+    }
+    float dist = sqrt(dist2_);
+    float3 c_8 = cross(v_10, d_1);
+    float sin_b_1 = (radius / dist);
+    const float _e20 = safe_sqrt((1.0 - (sin_b_1 * sin_b_1)));
+    const float _e21 = cos_sub_clamped((sqrt(dot(c_8, c_8)) / dist), (dot(v_10, d_1) / dist), sin_b_1, _e20);
+    return _e21;
 }
 
 float range_scale_at(float4 rl, float cos_t)
@@ -779,9 +775,9 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_4, float3 b_4, float3 c_4, f
         return -1.0;
     }
     float3 q_1 = cross(s_5, e1_1);
-    float v_10 = (dot(d_3, q_1) * inv_1);
-    if (!((v_10 < 0.0))) {
-        local_15 = ((u_3 + v_10) > 1.0);
+    float v_11 = (dot(d_3, q_1) * inv_1);
+    if (!((v_11 < 0.0))) {
+        local_15 = ((u_3 + v_11) > 1.0);
     } else {
         local_15 = true;
     }
@@ -1014,8 +1010,8 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
 
 float light_range_scale(uint li, float3 x_4, float3 r_2, float4 rl_2)
 {
-    GpuLightCone c_8 = ConstructGpuLightCone(asfloat(light_cones.Load3(li*48+0)), asfloat(light_cones.Load(li*48+12)), asfloat(light_cones.Load3(li*48+16)), asfloat(light_cones.Load(li*48+28)), asfloat(light_cones.Load(li*48+32)), asfloat(light_cones.Load(li*48+36)), asuint(light_cones.Load(li*48+40)), asuint(light_cones.Load(li*48+44)));
-    const float _e9 = range_scale_toward(rl_2, c_8.center_, c_8.radius, x_4, r_2);
+    GpuLightCone c_9 = ConstructGpuLightCone(asfloat(light_cones.Load3(li*48+0)), asfloat(light_cones.Load(li*48+12)), asfloat(light_cones.Load3(li*48+16)), asfloat(light_cones.Load(li*48+28)), asfloat(light_cones.Load(li*48+32)), asfloat(light_cones.Load(li*48+36)), asuint(light_cones.Load(li*48+40)), asuint(light_cones.Load(li*48+44)));
+    const float _e9 = range_scale_toward(rl_2, c_9.center_, c_9.radius, x_4, r_2);
     return _e9;
 }
 
@@ -1041,14 +1037,14 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
 float light_pdf_selected(uint li_2, float3 x_6, float3 r_4, float4 rl_4, float3 y, float sel)
 {
     GpuLight l_6 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
-    float3 v_11 = (x_6 - y);
-    float d2_3 = dot(v_11, v_11);
+    float3 v_12 = (x_6 - y);
+    float d2_4 = dot(v_12, v_12);
     const float3 _e11 = light_normal(l_6);
-    float cos_y_1 = ((d2_3 > 0.0) ? dot(_e11, (v_11 / (sqrt(d2_3)).xxx)) : 0.0);
+    float cos_y_1 = ((d2_4 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_4)).xxx)) : 0.0);
     const float _e20 = light_range_scale(li_2, x_6, r_4, rl_4);
     float _e23 = asfloat(rt2_2.Load(li_2*4));
     const float _e25 = light_area(l_6);
-    const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_3, _e25, cos_y_1);
+    const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_4, _e25, cos_y_1);
     return _e26;
 }
 
@@ -1059,47 +1055,75 @@ float light_pdf(uint li_3, float3 x_7, float3 n_14, float3 r_5, float4 lobe_6, f
     return _e10;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_8, float3 r_6, float4 rl_6)
+float bsh_inner_scale(float a_5, float3 v_8, float d2_3, float3 r_6, float4 rl_6)
 {
     bool local_20 = (bool)0;
     bool local_21 = (bool)0;
+
+    float vr = dot(v_8, r_6);
+    float h2_ = (d2_3 - (a_5 * a_5));
+    if (!((h2_ <= 0.0))) {
+        if ((vr >= 0.0)) {
+            local_21 = ((vr * vr) >= h2_);
+        } else {
+            local_21 = false;
+        }
+        bool _e20 = local_21;
+        local_20 = _e20;
+    } else {
+        local_20 = true;
+    }
+    bool _e22 = local_20;
+    if (_e22) {
+        return (rl_6.w * rl_6.w);
+    }
+    float3 c_10 = cross(v_8, r_6);
+    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_10, c_10)) * a_5)) / d2_3);
+    const float _e36 = range_scale_at(rl_6, (cos_t_1 + 2e-6));
+    return _e36;
+}
+
+bool bsh_reaches(BshNode node_3, float3 x_8, float3 r_7, float4 rl_7)
+{
+    bool local_22 = (bool)0;
+    bool local_23 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_8);
     if (_e6) {
         return true;
     }
-    if (!((rl_6.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_6.w * 1.0001)), x_8);
-        local_20 = !(_e20);
+    if (!((rl_7.w <= 1.0))) {
+        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_7.w * 1.0001)), x_8);
+        local_22 = !(_e20);
     } else {
-        local_20 = true;
+        local_22 = true;
     }
-    bool _e23 = local_20;
+    bool _e23 = local_22;
     if (_e23) {
         return false;
     }
     const float _e25 = bsh_range_bound(node_3);
-    float3 v_12 = (x_8 - node_3.center_);
-    float d2_4 = dot(v_12, v_12);
-    float reach_max = (node_3.extent + ((rl_6.w * 1.001) * _e25));
-    if ((d2_4 > (reach_max * reach_max))) {
+    float3 v_13 = (x_8 - node_3.center_);
+    float d2_5 = dot(v_13, v_13);
+    float reach_max = (node_3.extent + ((rl_7.w * 1.001) * _e25));
+    if ((d2_5 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_6, node_3.center_, node_3.extent, x_8, r_6);
+        const float _e43 = range_scale_toward(rl_7, node_3.center_, node_3.extent, x_8, r_7);
         const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
         const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_8);
         return _e47;
     }
-    const float _e50 = range_scale_toward(rl_6, node_3.center_, node_3.extent, x_8, r_6);
+    const float _e50 = bsh_inner_scale(node_3.extent, -(v_13), d2_5, r_7, rl_7);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_4 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_21 = (d2_4 <= (reach * reach));
+    if ((d2_5 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_23 = (d2_5 <= (reach * reach));
     } else {
-        local_21 = false;
+        local_23 = false;
     }
-    bool _e67 = local_21;
+    bool _e67 = local_23;
     return _e67;
 }
 

@@ -226,8 +226,8 @@ bool sphere_contains_point(
     float r,
     metal::float3 x_2
 ) {
-    metal::float3 v = x_2 - c;
-    return metal::dot(v, v) <= (r * r);
+    metal::float3 v_1 = x_2 - c;
+    return metal::dot(v_1, v_1) <= (r * r);
 }
 
 float inverse_square(
@@ -256,11 +256,11 @@ float connection_cosine(
 ) {
     bool local = {};
     bool local_1 = {};
-    metal::float3 v_1 = x_3 - y;
-    float d2_4 = metal::dot(v_1, v_1);
-    bool _e7 = slc_keep(r2_1, d2_4);
+    metal::float3 v_2 = x_3 - y;
+    float d2_5 = metal::dot(v_2, v_2);
+    bool _e7 = slc_keep(r2_1, d2_5);
     if (!(!(_e7))) {
-        local = !((d2_4 > 0.0));
+        local = !((d2_5 > 0.0));
     } else {
         local = true;
     }
@@ -268,7 +268,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_3 = v_1 / metal::float3(metal::sqrt(d2_4));
+    metal::float3 w_3 = v_2 / metal::float3(metal::sqrt(d2_5));
     float cos_x_1 = -(metal::dot(n, w_3));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = metal::dot(ng, w_3) >= 0.0;
@@ -300,15 +300,15 @@ float atan_portable(
 ) {
     float base = 0.0;
     float t = {};
-    float a_6 = metal::abs(x_4);
-    t = a_6;
-    if (a_6 > 2.4142137) {
+    float a_7 = metal::abs(x_4);
+    t = a_7;
+    if (a_7 > 2.4142137) {
         base = 1.5707964;
-        t = -1.0 / a_6;
+        t = -1.0 / a_7;
     } else {
-        if (a_6 > 0.41421357) {
+        if (a_7 > 0.41421357) {
             base = 0.7853982;
-            t = (a_6 - 1.0) / (a_6 + 1.0);
+            t = (a_7 - 1.0) / (a_7 + 1.0);
         }
     }
     float _e18 = t;
@@ -317,8 +317,8 @@ float atan_portable(
     float _e21 = base;
     float _e33 = t;
     float _e35 = t;
-    float r_5 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
-    return (x_4 < 0.0) ? -(r_5) : r_5;
+    float r_6 = _e21 + (((((((((0.080537446 * z) - 0.13877685) * z) + 0.19977711) * z) - 0.3333295) * z) * _e33) + _e35);
+    return (x_4 < 0.0) ? -(r_6) : r_6;
 }
 
 float atan2_portable(
@@ -489,11 +489,11 @@ float ies_candela(
     float _e54 = ies_lerp_t(_e51, _e53, _e32);
     float _e58 = at(tab_2, (c0_ + (_e34 * _e5)) + _e33, slc_table, _buffer_sizes);
     float _e65 = at(tab_2, (c0_ + (_e34 * _e5)) + iv1_, slc_table, _buffer_sizes);
-    float a_7 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
+    float a_8 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
     float _e71 = at(tab_2, (c0_ + (ih1_ * _e5)) + _e33, slc_table, _buffer_sizes);
     float _e78 = at(tab_2, (c0_ + (ih1_ * _e5)) + iv1_, slc_table, _buffer_sizes);
     float b_5 = (_e71 * (1.0 - _e49)) + (_e78 * _e49);
-    return (a_7 * (1.0 - _e54)) + (b_5 * _e54);
+    return (a_8 * (1.0 - _e54)) + (b_5 * _e54);
 }
 
 float ies_candela_dir(
@@ -630,29 +630,23 @@ float safe_sqrt(
     return metal::sqrt(metal::max(x_8, 0.0));
 }
 
-float subtended_cos(
-    float dist2_,
-    float r2_2
-) {
-    float _e5 = safe_sqrt(1.0 - (r2_2 / dist2_));
-    return (dist2_ <= r2_2) ? -1.0 : _e5;
-}
-
 float cone_cos_toward(
     metal::float3 center,
     float radius,
     metal::float3 p,
     metal::float3 d
 ) {
-    metal::float3 v_2 = center - p;
-    float dist2_1 = metal::dot(v_2, v_2);
-    metal::float3 w_4 = (dist2_1 > 0.0) ? (v_2 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
-    float _e17 = subtended_cos(dist2_1, radius * radius);
-    float cos_i = metal::dot(w_4, d);
-    float _e22 = safe_sqrt(1.0 - (cos_i * cos_i));
-    float _e26 = safe_sqrt(1.0 - (_e17 * _e17));
-    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    metal::float3 v_3 = center - p;
+    float dist2_ = metal::dot(v_3, v_3);
+    if (dist2_ <= (radius * radius)) {
+        return 1.0;
+    }
+    float dist = metal::sqrt(dist2_);
+    metal::float3 c_6 = metal::cross(v_3, d);
+    float sin_b_1 = radius / dist;
+    float _e20 = safe_sqrt(1.0 - (sin_b_1 * sin_b_1));
+    float _e21 = cos_sub_clamped(metal::sqrt(metal::dot(c_6, c_6)) / dist, metal::dot(v_3, d) / dist, sin_b_1, _e20);
+    return _e21;
 }
 
 float range_scale_at(
@@ -750,9 +744,9 @@ float ray_triangle(
         return -1.0;
     }
     metal::float3 q = metal::cross(s_2, e1_);
-    float v_3 = metal::dot(d_2, q) * inv;
-    if (!((v_3 < 0.0))) {
-        local_4 = (u_2 + v_3) > 1.0;
+    float v_4 = metal::dot(d_2, q) * inv;
+    if (!((v_4 < 0.0))) {
+        local_4 = (u_2 + v_4) > 1.0;
     } else {
         local_4 = true;
     }
@@ -942,50 +936,82 @@ uint bsh_first(
     return BSH_NONE;
 }
 
-bool bsh_reaches(
-    BshNode node_3,
-    metal::float3 x_10,
+float bsh_inner_scale(
+    float a_6,
+    metal::float3 v,
+    float d2_4,
     metal::float3 r_2,
     metal::float4 rl_2
 ) {
     bool local_6 = {};
     bool local_7 = {};
+    float vr = metal::dot(v, r_2);
+    float h2_ = d2_4 - (a_6 * a_6);
+    if (!((h2_ <= 0.0))) {
+        if (vr >= 0.0) {
+            local_7 = (vr * vr) >= h2_;
+        } else {
+            local_7 = false;
+        }
+        bool _e20 = local_7;
+        local_6 = _e20;
+    } else {
+        local_6 = true;
+    }
+    bool _e22 = local_6;
+    if (_e22) {
+        return rl_2.w * rl_2.w;
+    }
+    metal::float3 c_7 = metal::cross(v, r_2);
+    float cos_t_1 = ((vr * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_7, c_7)) * a_6)) / d2_4;
+    float _e36 = range_scale_at(rl_2, cos_t_1 + 0.000002);
+    return _e36;
+}
+
+bool bsh_reaches(
+    BshNode node_3,
+    metal::float3 x_10,
+    metal::float3 r_3,
+    metal::float4 rl_3
+) {
+    bool local_8 = {};
+    bool local_9 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_10);
     if (_e6) {
         return true;
     }
-    if (!((rl_2.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_2.w * 1.0001), x_10);
-        local_6 = !(_e20);
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_10);
+        local_8 = !(_e20);
     } else {
-        local_6 = true;
+        local_8 = true;
     }
-    bool _e23 = local_6;
+    bool _e23 = local_8;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_4 = x_10 - node_3.center;
-    float d2_5 = metal::dot(v_4, v_4);
-    float reach_max = node_3.extent + ((rl_2.w * 1.001) * _e25);
-    if (d2_5 > (reach_max * reach_max)) {
+    metal::float3 v_5 = x_10 - node_3.center;
+    float d2_6 = metal::dot(v_5, v_5);
+    float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
+    if (d2_6 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_10, r_3);
         float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
         bool _e47 = sphere_contains_point(node_3.center, _e46, x_10);
         return _e47;
     }
-    float _e50 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_10, r_2);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_5), d2_6, r_3, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_5 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_7 = d2_5 <= (reach * reach);
+    if (d2_6 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_9 = d2_6 <= (reach * reach);
     } else {
-        local_7 = false;
+        local_9 = false;
     }
-    bool _e67 = local_7;
+    bool _e67 = local_9;
     return _e67;
 }
 
@@ -993,8 +1019,8 @@ uint bsh_next_leaf_lobe(
     BshNodes nodes_3,
     uint start_1,
     metal::float3 x_11,
-    metal::float3 r_3,
-    metal::float4 rl_3,
+    metal::float3 r_4,
+    metal::float4 rl_4,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1012,7 +1038,7 @@ uint bsh_next_leaf_lobe(
         {
             uint _e9 = i_3;
             BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_11, r_3, rl_3);
+            bool _e11 = bsh_reaches(_e10, x_11, r_4, rl_4);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
                     uint _e15 = i_3;
@@ -1029,8 +1055,8 @@ uint bsh_next_leaf_lobe(
 
 Picks bsh_collect(
     metal::float3 x_12,
-    metal::float3 r_4,
-    metal::float4 rl_4,
+    metal::float3 r_5,
+    metal::float4 rl_5,
     uint seed_1,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
@@ -1041,7 +1067,7 @@ Picks bsh_collect(
     picks.n = 0u;
     h_1 = seed_1;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_4, rl_4, bsh_nodes, _buffer_sizes);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_5, rl_5, bsh_nodes, _buffer_sizes);
     i_4 = _e11;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_1 = true;
@@ -1051,7 +1077,7 @@ Picks bsh_collect(
         if (!loop_init_1) {
             uint _e44 = i_4;
             uint _e47 = bsh_nodes[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_4, rl_4, bsh_nodes, _buffer_sizes);
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_5, rl_5, bsh_nodes, _buffer_sizes);
             i_4 = _e48;
         }
         loop_init_1 = false;
@@ -1102,40 +1128,40 @@ Connection connect(
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
-    device type_4 const& r2_3,
+    device type_4 const& r2_2,
     device type_4 const& rt2_2,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_4 = {};
-    bool local_8 = {};
+    bool local_10 = {};
     c_4.e = metal::float3(0.0);
     GpuLight l_2 = lights[li];
     metal::float3 _e17 = light_point(l_2, u1_1, u2_1);
     c_4.y = _e17;
     metal::float3 _e20 = c_4.y;
-    float _e23 = r2_3[li];
+    float _e23 = r2_2[li];
     float _e25 = connection_cosine(x_13, _e20, n_6, ng_1, s_1 * _e23);
     c_4.cos_x = _e25;
     float _e27 = c_4.cos_x;
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_4.y;
         bool _e37 = occluded(x_13 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
-        local_8 = _e37;
+        local_10 = _e37;
     } else {
-        local_8 = true;
+        local_10 = true;
     }
-    bool _e39 = local_8;
+    bool _e39 = local_10;
     if (_e39) {
         Connection _e40 = c_4;
         return _e40;
     }
     metal::float3 _e42 = c_4.y;
-    metal::float3 v_5 = x_13 - _e42;
-    float d2_6 = metal::dot(v_5, v_5);
-    metal::float3 _e49 = light_intensity(l_2, v_5 / metal::float3(metal::sqrt(d2_6)), slc_table, _buffer_sizes);
+    metal::float3 v_6 = x_13 - _e42;
+    float d2_7 = metal::dot(v_6, v_6);
+    metal::float3 _e49 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_7)), slc_table, _buffer_sizes);
     float _e51 = c_4.cos_x;
     float _e54 = rt2_2[li];
-    float _e56 = connection_factor(_e51, d2_6, s_1 * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_7, s_1 * _e54, w_res);
     c_4.e = _e49 * _e56;
     Connection _e58 = c_4;
     return _e58;
@@ -1150,7 +1176,7 @@ kernel void main_(
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_10 const& bsh_nodes [[user(fake0)]]
 , device type_11 const& lights [[user(fake0)]]
-, device type_4 const& r2_3 [[user(fake0)]]
+, device type_4 const& r2_2 [[user(fake0)]]
 , device type_4 const& rt2_2 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
 , device type_12 const& points [[user(fake0)]]
@@ -1210,7 +1236,7 @@ kernel void main_(
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            Connection _e65 = connect(_e33.light.inner[_e57], x_14, n_8, n_8, 1.0, _e36, _e52, _e61, _e64, slc_table, geo_nodes, geo_tris, lights, r2_3, rt2_2, _buffer_sizes);
+            Connection _e65 = connect(_e33.light.inner[_e57], x_14, n_8, n_8, 1.0, _e36, _e52, _e61, _e64, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_2, _buffer_sizes);
             e = _e55 + _e65.e;
         }
     }

@@ -179,8 +179,8 @@ bool sphere_contains_point(
     float r,
     metal::float3 x_1
 ) {
-    metal::float3 v = x_1 - c;
-    return metal::dot(v, v) <= (r * r);
+    metal::float3 v_1 = x_1 - c;
+    return metal::dot(v_1, v_1) <= (r * r);
 }
 
 float inverse_square(
@@ -209,11 +209,11 @@ float connection_cosine(
 ) {
     bool local = {};
     bool local_1 = {};
-    metal::float3 v_1 = x_2 - y;
-    float d2_4 = metal::dot(v_1, v_1);
-    bool _e7 = slc_keep(r2_1, d2_4);
+    metal::float3 v_2 = x_2 - y;
+    float d2_5 = metal::dot(v_2, v_2);
+    bool _e7 = slc_keep(r2_1, d2_5);
     if (!(!(_e7))) {
-        local = !((d2_4 > 0.0));
+        local = !((d2_5 > 0.0));
     } else {
         local = true;
     }
@@ -221,7 +221,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_3 = v_1 / metal::float3(metal::sqrt(d2_4));
+    metal::float3 w_3 = v_2 / metal::float3(metal::sqrt(d2_5));
     float cos_x_1 = -(metal::dot(n, w_3));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = metal::dot(ng, w_3) >= 0.0;
@@ -358,29 +358,23 @@ float safe_sqrt(
     return metal::sqrt(metal::max(x_3, 0.0));
 }
 
-float subtended_cos(
-    float dist2_,
-    float r2_2
-) {
-    float _e5 = safe_sqrt(1.0 - (r2_2 / dist2_));
-    return (dist2_ <= r2_2) ? -1.0 : _e5;
-}
-
 float cone_cos_toward(
     metal::float3 center,
     float radius,
     metal::float3 p,
     metal::float3 d
 ) {
-    metal::float3 v_2 = center - p;
-    float dist2_1 = metal::dot(v_2, v_2);
-    metal::float3 w_4 = (dist2_1 > 0.0) ? (v_2 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
-    float _e17 = subtended_cos(dist2_1, radius * radius);
-    float cos_i = metal::dot(w_4, d);
-    float _e22 = safe_sqrt(1.0 - (cos_i * cos_i));
-    float _e26 = safe_sqrt(1.0 - (_e17 * _e17));
-    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    metal::float3 v_3 = center - p;
+    float dist2_ = metal::dot(v_3, v_3);
+    if (dist2_ <= (radius * radius)) {
+        return 1.0;
+    }
+    float dist = metal::sqrt(dist2_);
+    metal::float3 c_4 = metal::cross(v_3, d);
+    float sin_b_1 = radius / dist;
+    float _e20 = safe_sqrt(1.0 - (sin_b_1 * sin_b_1));
+    float _e21 = cos_sub_clamped(metal::sqrt(metal::dot(c_4, c_4)) / dist, metal::dot(v_3, d) / dist, sin_b_1, _e20);
+    return _e21;
 }
 
 float range_scale_at(
@@ -494,50 +488,82 @@ uint bsh_first(
     return BSH_NONE;
 }
 
-bool bsh_reaches(
-    BshNode node_2,
-    metal::float3 x_4,
+float bsh_inner_scale(
+    float a_6,
+    metal::float3 v,
+    float d2_4,
     metal::float3 r_2,
     metal::float4 rl_2
 ) {
     bool local_3 = {};
     bool local_4 = {};
+    float vr = metal::dot(v, r_2);
+    float h2_ = d2_4 - (a_6 * a_6);
+    if (!((h2_ <= 0.0))) {
+        if (vr >= 0.0) {
+            local_4 = (vr * vr) >= h2_;
+        } else {
+            local_4 = false;
+        }
+        bool _e20 = local_4;
+        local_3 = _e20;
+    } else {
+        local_3 = true;
+    }
+    bool _e22 = local_3;
+    if (_e22) {
+        return rl_2.w * rl_2.w;
+    }
+    metal::float3 c_5 = metal::cross(v, r_2);
+    float cos_t_1 = ((vr * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_5, c_5)) * a_6)) / d2_4;
+    float _e36 = range_scale_at(rl_2, cos_t_1 + 0.000002);
+    return _e36;
+}
+
+bool bsh_reaches(
+    BshNode node_2,
+    metal::float3 x_4,
+    metal::float3 r_3,
+    metal::float4 rl_3
+) {
+    bool local_5 = {};
+    bool local_6 = {};
     bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
     if (_e6) {
         return true;
     }
-    if (!((rl_2.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_2.w * 1.0001), x_4);
-        local_3 = !(_e20);
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_3.w * 1.0001), x_4);
+        local_5 = !(_e20);
     } else {
-        local_3 = true;
+        local_5 = true;
     }
-    bool _e23 = local_3;
+    bool _e23 = local_5;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_2);
-    metal::float3 v_3 = x_4 - node_2.center;
-    float d2_5 = metal::dot(v_3, v_3);
-    float reach_max = node_2.extent + ((rl_2.w * 1.001) * _e25);
-    if (d2_5 > (reach_max * reach_max)) {
+    metal::float3 v_4 = x_4 - node_2.center;
+    float d2_6 = metal::dot(v_4, v_4);
+    float reach_max = node_2.extent + ((rl_3.w * 1.001) * _e25);
+    if (d2_6 > (reach_max * reach_max)) {
         return false;
     }
     if (node_2.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_2);
+        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_4, r_3);
         float _e46 = bsh_scaled_radius(node_2, metal::sqrt(_e43));
         bool _e47 = sphere_contains_point(node_2.center, _e46, x_4);
         return _e47;
     }
-    float _e50 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_2);
+    float _e50 = bsh_inner_scale(node_2.extent, -(v_4), d2_6, r_3, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_2.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_5 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_4 = d2_5 <= (reach * reach);
+    if (d2_6 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_6 = d2_6 <= (reach * reach);
     } else {
-        local_4 = false;
+        local_6 = false;
     }
-    bool _e67 = local_4;
+    bool _e67 = local_6;
     return _e67;
 }
 
@@ -545,8 +571,8 @@ uint bsh_next_leaf_lobe(
     BshNodes nodes_3,
     uint start,
     metal::float3 x_5,
-    metal::float3 r_3,
-    metal::float4 rl_3,
+    metal::float3 r_4,
+    metal::float4 rl_4,
     device type_7 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -564,7 +590,7 @@ uint bsh_next_leaf_lobe(
         {
             uint _e9 = i_1;
             BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_5, r_3, rl_3);
+            bool _e11 = bsh_reaches(_e10, x_5, r_4, rl_4);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
                     uint _e15 = i_1;
@@ -581,8 +607,8 @@ uint bsh_next_leaf_lobe(
 
 Picks bsh_collect(
     metal::float3 x_6,
-    metal::float3 r_4,
-    metal::float4 rl_4,
+    metal::float3 r_5,
+    metal::float4 rl_5,
     uint seed_1,
     device type_7 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
@@ -593,7 +619,7 @@ Picks bsh_collect(
     picks.n = 0u;
     h_1 = seed_1;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_4, rl_4, bsh_nodes, _buffer_sizes);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_5, rl_5, bsh_nodes, _buffer_sizes);
     i_2 = _e11;
     uint2 loop_bound_1 = uint2(4294967295u);
     bool loop_init = true;
@@ -603,7 +629,7 @@ Picks bsh_collect(
         if (!loop_init) {
             uint _e44 = i_2;
             uint _e47 = bsh_nodes[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_6, r_4, rl_4, bsh_nodes, _buffer_sizes);
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_6, r_5, rl_5, bsh_nodes, _buffer_sizes);
             i_2 = _e48;
         }
         loop_init = false;
@@ -651,40 +677,40 @@ Connection connect(
     float u2_2,
     float eps,
     device type_8 const& lights,
-    device type_4 const& r2_3,
+    device type_4 const& r2_2,
     device type_4 const& rt2_2,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_3 = {};
-    bool local_5 = {};
+    bool local_7 = {};
     c_3.e = metal::float3(0.0);
     GpuLight l_2 = lights[li];
     metal::float3 _e17 = light_point(l_2, u1_2, u2_2);
     c_3.y = _e17;
     metal::float3 _e20 = c_3.y;
-    float _e23 = r2_3[li];
+    float _e23 = r2_2[li];
     float _e25 = connection_cosine(x_7, _e20, n_6, ng_1, s_1 * _e23);
     c_3.cos_x = _e25;
     float _e27 = c_3.cos_x;
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_3.y;
         bool _e37 = occluded(x_7 + (ng_1 * eps), _e36);
-        local_5 = _e37;
+        local_7 = _e37;
     } else {
-        local_5 = true;
+        local_7 = true;
     }
-    bool _e39 = local_5;
+    bool _e39 = local_7;
     if (_e39) {
         Connection _e40 = c_3;
         return _e40;
     }
     metal::float3 _e42 = c_3.y;
-    metal::float3 v_4 = x_7 - _e42;
-    float d2_6 = metal::dot(v_4, v_4);
-    metal::float3 _e49 = light_intensity(l_2, v_4 / metal::float3(metal::sqrt(d2_6)));
+    metal::float3 v_5 = x_7 - _e42;
+    float d2_7 = metal::dot(v_5, v_5);
+    metal::float3 _e49 = light_intensity(l_2, v_5 / metal::float3(metal::sqrt(d2_7)));
     float _e51 = c_3.cos_x;
     float _e54 = rt2_2[li];
-    float _e56 = connection_factor(_e51, d2_6, s_1 * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_7, s_1 * _e54, w_res);
     c_3.e = _e49 * _e56;
     Connection _e58 = c_3;
     return _e58;
@@ -696,7 +722,7 @@ kernel void main_(
   metal::uint3 gid [[thread_position_in_grid]]
 , device type_7 const& bsh_nodes [[user(fake0)]]
 , device type_8 const& lights [[user(fake0)]]
-, device type_4 const& r2_3 [[user(fake0)]]
+, device type_4 const& r2_2 [[user(fake0)]]
 , device type_4 const& rt2_2 [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
 , device type_9 const& points [[user(fake0)]]
@@ -756,7 +782,7 @@ kernel void main_(
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            Connection _e65 = connect(_e33.light.inner[_e57], x_8, n_8, n_8, 1.0, _e36, _e52, _e61, _e64, lights, r2_3, rt2_2, _buffer_sizes);
+            Connection _e65 = connect(_e33.light.inner[_e57], x_8, n_8, n_8, 1.0, _e36, _e52, _e61, _e64, lights, r2_2, rt2_2, _buffer_sizes);
             e = _e55 + _e65.e;
         }
     }

@@ -216,8 +216,8 @@ bool sphere_contains_point(
     float r_1,
     metal::float3 x_1
 ) {
-    metal::float3 v_3 = x_1 - c;
-    return metal::dot(v_3, v_3) <= (r_1 * r_1);
+    metal::float3 v_4 = x_1 - c;
+    return metal::dot(v_4, v_4) <= (r_1 * r_1);
 }
 
 float inverse_square(
@@ -246,11 +246,11 @@ float connection_cosine(
 ) {
     bool local_2 = {};
     bool local_3 = {};
-    metal::float3 v_4 = x_2 - y;
-    float d2_5 = metal::dot(v_4, v_4);
-    bool _e7 = slc_keep(r2_1, d2_5);
+    metal::float3 v_5 = x_2 - y;
+    float d2_6 = metal::dot(v_5, v_5);
+    bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_2 = !((d2_5 > 0.0));
+        local_2 = !((d2_6 > 0.0));
     } else {
         local_2 = true;
     }
@@ -258,7 +258,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_6 = v_4 / metal::float3(metal::sqrt(d2_5));
+    metal::float3 w_6 = v_5 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = metal::dot(ng, w_6) >= 0.0;
@@ -598,11 +598,11 @@ metal::float4 emitter_cone(
     float cos_o,
     metal::float3 p
 ) {
-    metal::float3 v_5 = p - center;
-    float dist2_1 = metal::dot(v_5, v_5);
+    metal::float3 v_6 = p - center;
+    float dist2_1 = metal::dot(v_6, v_6);
     float r2_4 = radius * radius;
-    float d2_6 = metal::max(metal::max(dist2_1, r2_4), MIN_D2_);
-    metal::float3 wi = (dist2_1 > 0.0) ? (v_5 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
+    float d2_7 = metal::max(metal::max(dist2_1, r2_4), MIN_D2_);
+    metal::float3 wi = (dist2_1 > 0.0) ? (v_6 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
     float _e26 = subtended_cos(dist2_1, r2_4);
@@ -611,7 +611,7 @@ metal::float4 emitter_cone(
     float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
     float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
     float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return metal::float4(_e37, d2_6, _e26, _e30);
+    return metal::float4(_e37, d2_7, _e26, _e30);
 }
 
 float emitter_importance(
@@ -636,15 +636,17 @@ float cone_cos_toward(
     metal::float3 p_2,
     metal::float3 d
 ) {
-    metal::float3 v_6 = center_2 - p_2;
-    float dist2_2 = metal::dot(v_6, v_6);
-    metal::float3 w_7 = (dist2_2 > 0.0) ? (v_6 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0);
-    float _e17 = subtended_cos(dist2_2, radius_2 * radius_2);
-    float cos_i = metal::dot(w_7, d);
-    float _e22 = safe_sqrt(1.0 - (cos_i * cos_i));
-    float _e26 = safe_sqrt(1.0 - (_e17 * _e17));
-    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    metal::float3 v_7 = center_2 - p_2;
+    float dist2_2 = metal::dot(v_7, v_7);
+    if (dist2_2 <= (radius_2 * radius_2)) {
+        return 1.0;
+    }
+    float dist = metal::sqrt(dist2_2);
+    metal::float3 c_7 = metal::cross(v_7, d);
+    float sin_b_2 = radius_2 / dist;
+    float _e20 = safe_sqrt(1.0 - (sin_b_2 * sin_b_2));
+    float _e21 = cos_sub_clamped(metal::sqrt(metal::dot(c_7, c_7)) / dist, metal::dot(v_7, d) / dist, sin_b_2, _e20);
+    return _e21;
 }
 
 float range_scale_at(
@@ -687,12 +689,12 @@ float light_importance(
     }
     imp = (phi_1 * _e8.x) / _e8.y;
     if (metal::dot(n_4, n_4) > 0.0) {
-        metal::float3 v_7 = center_4 - p_4;
-        float dist2_3 = metal::dot(v_7, v_7);
-        float cos_i_1 = metal::dot((dist2_3 > 0.0) ? (v_7 / metal::float3(metal::sqrt(dist2_3))) : metal::float3(0.0, 0.0, 0.0), n_4);
+        metal::float3 v_8 = center_4 - p_4;
+        float dist2_3 = metal::dot(v_8, v_8);
+        float cos_i = metal::dot((dist2_3 > 0.0) ? (v_8 / metal::float3(metal::sqrt(dist2_3))) : metal::float3(0.0, 0.0, 0.0), n_4);
         float _e33 = imp;
-        float _e37 = safe_sqrt(1.0 - (cos_i_1 * cos_i_1));
-        float _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        float _e37 = safe_sqrt(1.0 - (cos_i * cos_i));
+        float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
         imp = _e33 * metal::max(_e40, 0.0);
     }
     float _e44 = imp;
@@ -753,14 +755,14 @@ float cone_weight(
     metal::float3 r_4,
     metal::float4 lobe_6
 ) {
-    metal::float3 v_8 = p_6 - center_6;
+    metal::float3 v_9 = p_6 - center_6;
     if (lobe_6.y <= 0.0) {
         float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6);
-        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_8, v_8));
+        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_9, v_9));
         return _e19;
     }
     float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6, r_4, lobe_6);
-    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_8, v_8));
+    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_9, v_9));
     return _e22;
 }
 
@@ -849,50 +851,82 @@ uint bsh_first(
     return BSH_NONE;
 }
 
-bool bsh_reaches(
-    BshNode node_2,
-    metal::float3 x_4,
+float bsh_inner_scale(
+    float a_5,
+    metal::float3 v_3,
+    float d2_5,
     metal::float3 r_5,
     metal::float4 rl_2
 ) {
     bool local_11 = {};
     bool local_12 = {};
+    float vr = metal::dot(v_3, r_5);
+    float h2_ = d2_5 - (a_5 * a_5);
+    if (!((h2_ <= 0.0))) {
+        if (vr >= 0.0) {
+            local_12 = (vr * vr) >= h2_;
+        } else {
+            local_12 = false;
+        }
+        bool _e20 = local_12;
+        local_11 = _e20;
+    } else {
+        local_11 = true;
+    }
+    bool _e22 = local_11;
+    if (_e22) {
+        return rl_2.w * rl_2.w;
+    }
+    metal::float3 c_8 = metal::cross(v_3, r_5);
+    float cos_t_1 = ((vr * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_8, c_8)) * a_5)) / d2_5;
+    float _e36 = range_scale_at(rl_2, cos_t_1 + 0.000002);
+    return _e36;
+}
+
+bool bsh_reaches(
+    BshNode node_2,
+    metal::float3 x_4,
+    metal::float3 r_6,
+    metal::float4 rl_3
+) {
+    bool local_13 = {};
+    bool local_14 = {};
     bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
     if (_e6) {
         return true;
     }
-    if (!((rl_2.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_2.w * 1.0001), x_4);
-        local_11 = !(_e20);
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_3.w * 1.0001), x_4);
+        local_13 = !(_e20);
     } else {
-        local_11 = true;
+        local_13 = true;
     }
-    bool _e23 = local_11;
+    bool _e23 = local_13;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_2);
-    metal::float3 v_9 = x_4 - node_2.center;
-    float d2_7 = metal::dot(v_9, v_9);
-    float reach_max = node_2.extent + ((rl_2.w * 1.001) * _e25);
-    if (d2_7 > (reach_max * reach_max)) {
+    metal::float3 v_10 = x_4 - node_2.center;
+    float d2_8 = metal::dot(v_10, v_10);
+    float reach_max = node_2.extent + ((rl_3.w * 1.001) * _e25);
+    if (d2_8 > (reach_max * reach_max)) {
         return false;
     }
     if (node_2.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_4, r_6);
         float _e46 = bsh_scaled_radius(node_2, metal::sqrt(_e43));
         bool _e47 = sphere_contains_point(node_2.center, _e46, x_4);
         return _e47;
     }
-    float _e50 = range_scale_toward(rl_2, node_2.center, node_2.extent, x_4, r_5);
+    float _e50 = bsh_inner_scale(node_2.extent, -(v_10), d2_8, r_6, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_2.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_12 = d2_7 <= (reach * reach);
+    if (d2_8 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_14 = d2_8 <= (reach * reach);
     } else {
-        local_12 = false;
+        local_14 = false;
     }
-    bool _e67 = local_12;
+    bool _e67 = local_14;
     return _e67;
 }
 
@@ -900,8 +934,8 @@ uint bsh_next_leaf_lobe(
     BshNodes nodes_3,
     uint start,
     metal::float3 x_5,
-    metal::float3 r_6,
-    metal::float4 rl_3,
+    metal::float3 r_7,
+    metal::float4 rl_4,
     device type_9 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -919,7 +953,7 @@ uint bsh_next_leaf_lobe(
         {
             uint _e9 = i_1;
             BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_5, r_6, rl_3);
+            bool _e11 = bsh_reaches(_e10, x_5, r_7, rl_4);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
                     uint _e15 = i_1;
@@ -950,7 +984,7 @@ Connection connect(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_4 = {};
-    bool local_13 = {};
+    bool local_15 = {};
     c_4.e = metal::float3(0.0);
     GpuLight l_4 = lights[li];
     metal::float3 _e17 = light_point(l_4, u1_2, u2_2);
@@ -963,22 +997,22 @@ Connection connect(
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_4.y;
         bool _e37 = occluded(x_6 + (ng_1 * eps), _e36);
-        local_13 = _e37;
+        local_15 = _e37;
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    bool _e39 = local_13;
+    bool _e39 = local_15;
     if (_e39) {
         Connection _e40 = c_4;
         return _e40;
     }
     metal::float3 _e42 = c_4.y;
-    metal::float3 v_10 = x_6 - _e42;
-    float d2_8 = metal::dot(v_10, v_10);
-    metal::float3 _e49 = light_intensity(l_4, v_10 / metal::float3(metal::sqrt(d2_8)));
+    metal::float3 v_11 = x_6 - _e42;
+    float d2_9 = metal::dot(v_11, v_11);
+    metal::float3 _e49 = light_intensity(l_4, v_11 / metal::float3(metal::sqrt(d2_9)));
     float _e51 = c_4.cos_x;
     float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_8, s * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_9, s * _e54, w_res);
     c_4.e = _e49 * _e56;
     Connection _e58 = c_4;
     return _e58;
@@ -987,13 +1021,13 @@ Connection connect(
 float light_range_scale(
     uint li_1,
     metal::float3 x_7,
-    metal::float3 r_7,
-    metal::float4 rl_4,
+    metal::float3 r_8,
+    metal::float4 rl_5,
     device type_10 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_7 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_4, c_7.center, c_7.radius, x_7, r_7);
+    GpuLightCone c_9 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_7, r_8);
     return _e9;
 }
 
@@ -1001,26 +1035,26 @@ float light_weight(
     uint li_2,
     metal::float3 x_8,
     metal::float3 n_8,
-    metal::float3 r_8,
+    metal::float3 r_9,
     metal::float4 lobe_7,
-    metal::float4 rl_5,
+    metal::float4 rl_6,
     device type_4 const& rt2_4,
     device type_10 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_8 = light_cones[li_2];
-    float _e15 = light_range_scale(li_2, x_8, r_8, rl_5, light_cones, _buffer_sizes);
+    GpuLightCone c_10 = light_cones[li_2];
+    float _e15 = light_range_scale(li_2, x_8, r_9, rl_6, light_cones, _buffer_sizes);
     float _e18 = rt2_4[li_2];
-    float _e20 = cone_weight(c_8.center, c_8.radius, c_8.phi, c_8.axis, c_8.cos_o, c_8.cos_e, _e15 * _e18, x_8, n_8, r_8, lobe_7);
+    float _e20 = cone_weight(c_10.center, c_10.radius, c_10.phi, c_10.axis, c_10.cos_o, c_10.cos_e, _e15 * _e18, x_8, n_8, r_9, lobe_7);
     return _e20;
 }
 
 WeightedPicks bsh_weighted_collect(
     metal::float3 x_9,
     metal::float3 n_9,
-    metal::float3 r_9,
+    metal::float3 r_10,
     metal::float4 lobe_8,
-    metal::float4 rl_6,
+    metal::float4 rl_7,
     uint h0_,
     device type_4 const& rt2_4,
     device type_9 const& bsh_nodes,
@@ -1035,7 +1069,7 @@ WeightedPicks bsh_weighted_collect(
     picks.n = 0u;
     h_1 = h0_;
     uint _e14 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_9, rl_6, bsh_nodes, _buffer_sizes);
+    uint _e15 = bsh_next_leaf_lobe(BSH, _e14, x_9, r_10, rl_7, bsh_nodes, _buffer_sizes);
     b_5 = _e15;
     uint2 loop_bound_1 = uint2(4294967295u);
     bool loop_init = true;
@@ -1045,7 +1079,7 @@ WeightedPicks bsh_weighted_collect(
         if (!loop_init) {
             uint _e58 = b_5;
             uint _e61 = bsh_nodes[_e58].next;
-            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_9, rl_6, bsh_nodes, _buffer_sizes);
+            uint _e62 = bsh_next_leaf_lobe(BSH, _e61, x_9, r_10, rl_7, bsh_nodes, _buffer_sizes);
             b_5 = _e62;
         }
         loop_init = false;
@@ -1059,7 +1093,7 @@ WeightedPicks bsh_weighted_collect(
             picks.n = _e21 + 1u;
             uint _e25 = b_5;
             uint li_4 = bsh_nodes[_e25].light;
-            float _e29 = light_weight(li_4, x_9, n_9, r_9, lobe_8, rl_6, rt2_4, light_cones, _buffer_sizes);
+            float _e29 = light_weight(li_4, x_9, n_9, r_10, lobe_8, rl_7, rt2_4, light_cones, _buffer_sizes);
             if (_e29 > 0.0) {
                 float _e33 = picks.w_sum;
                 picks.w_sum = _e33 + _e29;
@@ -1116,8 +1150,8 @@ Shaded shade_pick(
     uint li_3,
     metal::float3 x_10,
     metal::float3 n_10,
-    metal::float3 r_10,
-    metal::float4 rl_7,
+    metal::float3 r_11,
+    metal::float4 rl_8,
     Material m_1,
     float w_5,
     float u1_3,
@@ -1130,7 +1164,7 @@ Shaded shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Shaded s_2 = {};
-    float _e10 = light_range_scale(li_3, x_10, r_10, rl_7, light_cones, _buffer_sizes);
+    float _e10 = light_range_scale(li_3, x_10, r_11, rl_8, light_cones, _buffer_sizes);
     Connection _e12 = connect(li_3, x_10, n_10, n_10, _e10, w_5, u1_3, u2_3, 0.0, lights, rt2_4, r2_3, _buffer_sizes);
     s_2.e = _e12.e;
     s_2.diffuse = metal::float3(0.0);
@@ -1152,10 +1186,10 @@ Shaded shade_pick(
 }
 
 Shaded add(
-    Shaded a_5,
+    Shaded a_6,
     Shaded b_6
 ) {
-    return Shaded {a_5.e + b_6.e, a_5.diffuse + b_6.diffuse, a_5.specular + b_6.specular};
+    return Shaded {a_6.e + b_6.e, a_6.diffuse + b_6.diffuse, a_6.specular + b_6.specular};
 }
 
 struct main_Input {

@@ -252,8 +252,8 @@ bool sphere_contains_point(
     float r,
     metal::float3 x_1
 ) {
-    metal::float3 v_6 = x_1 - c;
-    return metal::dot(v_6, v_6) <= (r * r);
+    metal::float3 v_7 = x_1 - c;
+    return metal::dot(v_7, v_7) <= (r * r);
 }
 
 float inverse_square(
@@ -282,11 +282,11 @@ float connection_cosine(
 ) {
     bool local = {};
     bool local_1 = {};
-    metal::float3 v_7 = x_2 - y;
-    float d2_7 = metal::dot(v_7, v_7);
-    bool _e7 = slc_keep(r2_1, d2_7);
+    metal::float3 v_8 = x_2 - y;
+    float d2_8 = metal::dot(v_8, v_8);
+    bool _e7 = slc_keep(r2_1, d2_8);
     if (!(!(_e7))) {
-        local = !((d2_7 > 0.0));
+        local = !((d2_8 > 0.0));
     } else {
         local = true;
     }
@@ -294,7 +294,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_5 = v_7 / metal::float3(metal::sqrt(d2_7));
+    metal::float3 w_5 = v_8 / metal::float3(metal::sqrt(d2_8));
     float cos_x_1 = -(metal::dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = metal::dot(ng, w_5) >= 0.0;
@@ -498,16 +498,16 @@ metal::float3 onb_tangent(
     metal::float3 n_6
 ) {
     float s_3 = (n_6.z >= 0.0) ? 1.0 : -1.0;
-    float a_7 = -1.0 / (s_3 + n_6.z);
-    return metal::float3(1.0 + (((s_3 * n_6.x) * n_6.x) * a_7), ((s_3 * n_6.x) * n_6.y) * a_7, -(s_3) * n_6.x);
+    float a_8 = -1.0 / (s_3 + n_6.z);
+    return metal::float3(1.0 + (((s_3 * n_6.x) * n_6.x) * a_8), ((s_3 * n_6.x) * n_6.y) * a_8, -(s_3) * n_6.x);
 }
 
 metal::float3 onb_bitangent(
     metal::float3 n_7
 ) {
     float s_4 = (n_7.z >= 0.0) ? 1.0 : -1.0;
-    float a_8 = -1.0 / (s_4 + n_7.z);
-    return metal::float3((n_7.x * n_7.y) * a_8, s_4 + ((n_7.y * n_7.y) * a_8), -(n_7.y));
+    float a_9 = -1.0 / (s_4 + n_7.z);
+    return metal::float3((n_7.x * n_7.y) * a_9, s_4 + ((n_7.y * n_7.y) * a_9), -(n_7.y));
 }
 
 metal::float3 onb_to_local(
@@ -768,9 +768,9 @@ float bounded_vndf_k(
     metal::float3 wi,
     float alpha_6
 ) {
-    float a_9 = metal::saturate(alpha_6);
+    float a_10 = metal::saturate(alpha_6);
     float s_5 = 1.0 + metal::sqrt((wi.x * wi.x) + (wi.y * wi.y));
-    float a2_3 = a_9 * a_9;
+    float a2_3 = a_10 * a_10;
     float s2_ = s_5 * s_5;
     return ((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z));
 }
@@ -833,29 +833,23 @@ float safe_sqrt(
     return metal::sqrt(metal::max(x_3, 0.0));
 }
 
-float subtended_cos(
-    float dist2_,
-    float r2_2
-) {
-    float _e5 = safe_sqrt(1.0 - (r2_2 / dist2_));
-    return (dist2_ <= r2_2) ? -1.0 : _e5;
-}
-
 float cone_cos_toward(
     metal::float3 center,
     float radius,
     metal::float3 p,
     metal::float3 d
 ) {
-    metal::float3 v_8 = center - p;
-    float dist2_1 = metal::dot(v_8, v_8);
-    metal::float3 w_6 = (dist2_1 > 0.0) ? (v_8 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
-    float _e17 = subtended_cos(dist2_1, radius * radius);
-    float cos_i = metal::dot(w_6, d);
-    float _e22 = safe_sqrt(1.0 - (cos_i * cos_i));
-    float _e26 = safe_sqrt(1.0 - (_e17 * _e17));
-    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    metal::float3 v_9 = center - p;
+    float dist2_ = metal::dot(v_9, v_9);
+    if (dist2_ <= (radius * radius)) {
+        return 1.0;
+    }
+    float dist = metal::sqrt(dist2_);
+    metal::float3 c_9 = metal::cross(v_9, d);
+    float sin_b_1 = radius / dist;
+    float _e20 = safe_sqrt(1.0 - (sin_b_1 * sin_b_1));
+    float _e21 = cos_sub_clamped(metal::sqrt(metal::dot(c_9, c_9)) / dist, metal::dot(v_9, d) / dist, sin_b_1, _e20);
+    return _e21;
 }
 
 float range_scale_at(
@@ -973,9 +967,9 @@ float ray_triangle(
         return -1.0;
     }
     metal::float3 q = metal::cross(s_6, e1_);
-    float v_9 = metal::dot(d_2, q) * inv_1;
-    if (!((v_9 < 0.0))) {
-        local_13 = (u_2 + v_9) > 1.0;
+    float v_10 = metal::dot(d_2, q) * inv_1;
+    if (!((v_10 < 0.0))) {
+        local_13 = (u_2 + v_10) > 1.0;
     } else {
         local_13 = true;
     }
@@ -1200,50 +1194,82 @@ uint bsh_first(
     return BSH_NONE;
 }
 
-bool bsh_reaches(
-    BshNode node_3,
-    metal::float3 x_5,
+float bsh_inner_scale(
+    float a_7,
+    metal::float3 v_6,
+    float d2_7,
     metal::float3 r_2,
     metal::float4 rl_2
 ) {
     bool local_17 = {};
     bool local_18 = {};
+    float vr = metal::dot(v_6, r_2);
+    float h2_ = d2_7 - (a_7 * a_7);
+    if (!((h2_ <= 0.0))) {
+        if (vr >= 0.0) {
+            local_18 = (vr * vr) >= h2_;
+        } else {
+            local_18 = false;
+        }
+        bool _e20 = local_18;
+        local_17 = _e20;
+    } else {
+        local_17 = true;
+    }
+    bool _e22 = local_17;
+    if (_e22) {
+        return rl_2.w * rl_2.w;
+    }
+    metal::float3 c_10 = metal::cross(v_6, r_2);
+    float cos_t_1 = ((vr * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_10, c_10)) * a_7)) / d2_7;
+    float _e36 = range_scale_at(rl_2, cos_t_1 + 0.000002);
+    return _e36;
+}
+
+bool bsh_reaches(
+    BshNode node_3,
+    metal::float3 x_5,
+    metal::float3 r_3,
+    metal::float4 rl_3
+) {
+    bool local_19 = {};
+    bool local_20 = {};
     bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
     if (_e6) {
         return true;
     }
-    if (!((rl_2.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_2.w * 1.0001), x_5);
-        local_17 = !(_e20);
+    if (!((rl_3.w <= 1.0))) {
+        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_5);
+        local_19 = !(_e20);
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    bool _e23 = local_17;
+    bool _e23 = local_19;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_10 = x_5 - node_3.center;
-    float d2_8 = metal::dot(v_10, v_10);
-    float reach_max = node_3.extent + ((rl_2.w * 1.001) * _e25);
-    if (d2_8 > (reach_max * reach_max)) {
+    metal::float3 v_11 = x_5 - node_3.center;
+    float d2_9 = metal::dot(v_11, v_11);
+    float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
+    if (d2_9 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_5, r_2);
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_3);
         float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
         bool _e47 = sphere_contains_point(node_3.center, _e46, x_5);
         return _e47;
     }
-    float _e50 = range_scale_toward(rl_2, node_3.center, node_3.extent, x_5, r_2);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_11), d2_9, r_3, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_8 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_18 = d2_8 <= (reach * reach);
+    if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_20 = d2_9 <= (reach * reach);
     } else {
-        local_18 = false;
+        local_20 = false;
     }
-    bool _e67 = local_18;
+    bool _e67 = local_20;
     return _e67;
 }
 
@@ -1251,8 +1277,8 @@ uint bsh_next_leaf_lobe(
     BshNodes nodes_3,
     uint start,
     metal::float3 x_6,
-    metal::float3 r_3,
-    metal::float4 rl_3,
+    metal::float3 r_4,
+    metal::float4 rl_4,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1270,7 +1296,7 @@ uint bsh_next_leaf_lobe(
         {
             uint _e9 = i_2;
             BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_6, r_3, rl_3);
+            bool _e11 = bsh_reaches(_e10, x_6, r_4, rl_4);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
                     uint _e15 = i_2;
@@ -1287,8 +1313,8 @@ uint bsh_next_leaf_lobe(
 
 Picks bsh_collect(
     metal::float3 x_7,
-    metal::float3 r_4,
-    metal::float4 rl_4,
+    metal::float3 r_5,
+    metal::float4 rl_5,
     uint seed_1,
     device type_10 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
@@ -1299,7 +1325,7 @@ Picks bsh_collect(
     picks.n = 0u;
     h_1 = seed_1;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_7, r_4, rl_4, bsh_nodes, _buffer_sizes);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_7, r_5, rl_5, bsh_nodes, _buffer_sizes);
     i_3 = _e11;
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_1 = true;
@@ -1309,7 +1335,7 @@ Picks bsh_collect(
         if (!loop_init_1) {
             uint _e44 = i_3;
             uint _e47 = bsh_nodes[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_7, r_4, rl_4, bsh_nodes, _buffer_sizes);
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_7, r_5, rl_5, bsh_nodes, _buffer_sizes);
             i_3 = _e48;
         }
         loop_init_1 = false;
@@ -1359,40 +1385,40 @@ Connection connect(
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
-    device type_4 const& r2_3,
+    device type_4 const& r2_2,
     device type_4 const& rt2_4,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_5 = {};
-    bool local_19 = {};
+    bool local_21 = {};
     c_5.e = metal::float3(0.0);
     GpuLight l_8 = lights[li];
     metal::float3 _e17 = light_point(l_8, u1_2, u2_2);
     c_5.y = _e17;
     metal::float3 _e20 = c_5.y;
-    float _e23 = r2_3[li];
+    float _e23 = r2_2[li];
     float _e25 = connection_cosine(x_8, _e20, n_13, ng_1, s_1 * _e23);
     c_5.cos_x = _e25;
     float _e27 = c_5.cos_x;
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_5.y;
         bool _e37 = occluded(x_8 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
-        local_19 = _e37;
+        local_21 = _e37;
     } else {
-        local_19 = true;
+        local_21 = true;
     }
-    bool _e39 = local_19;
+    bool _e39 = local_21;
     if (_e39) {
         Connection _e40 = c_5;
         return _e40;
     }
     metal::float3 _e42 = c_5.y;
-    metal::float3 v_11 = x_8 - _e42;
-    float d2_9 = metal::dot(v_11, v_11);
-    metal::float3 _e49 = light_intensity(l_8, v_11 / metal::float3(metal::sqrt(d2_9)));
+    metal::float3 v_12 = x_8 - _e42;
+    float d2_10 = metal::dot(v_12, v_12);
+    metal::float3 _e49 = light_intensity(l_8, v_12 / metal::float3(metal::sqrt(d2_10)));
     float _e51 = c_5.cos_x;
     float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_9, s_1 * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_10, s_1 * _e54, w_res);
     c_5.e = _e49 * _e56;
     Connection _e58 = c_5;
     return _e58;
@@ -1409,13 +1435,13 @@ float mis_weight(
 float light_range_scale(
     uint li_1,
     metal::float3 x_9,
-    metal::float3 r_5,
-    metal::float4 rl_5,
+    metal::float3 r_6,
+    metal::float4 rl_6,
     device type_12 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_9 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_9, r_5);
+    GpuLightCone c_11 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_6, c_11.center, c_11.radius, x_9, r_6);
     return _e9;
 }
 
@@ -1423,9 +1449,9 @@ float select_pdf(
     uint li_2,
     metal::float3 x_10,
     metal::float3 n_14,
-    metal::float3 r_6,
+    metal::float3 r_7,
     metal::float4 lobe_5,
-    metal::float4 rl_6,
+    metal::float4 rl_7,
     uint nee,
     bool in_range_1
 ) {
@@ -1436,8 +1462,8 @@ float select_pdf(
 float light_pdf_selected(
     uint li_3,
     metal::float3 x_11,
-    metal::float3 r_7,
-    metal::float4 rl_7,
+    metal::float3 r_8,
+    metal::float4 rl_8,
     metal::float3 y_1,
     float sel,
     device type_11 const& lights,
@@ -1446,14 +1472,14 @@ float light_pdf_selected(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_9 = lights[li_3];
-    metal::float3 v_12 = x_11 - y_1;
-    float d2_10 = metal::dot(v_12, v_12);
+    metal::float3 v_13 = x_11 - y_1;
+    float d2_11 = metal::dot(v_13, v_13);
     metal::float3 _e11 = light_normal(l_9);
-    float cos_y_1 = (d2_10 > 0.0) ? metal::dot(_e11, v_12 / metal::float3(metal::sqrt(d2_10))) : 0.0;
-    float _e20 = light_range_scale(li_3, x_11, r_7, rl_7, light_cones, _buffer_sizes);
+    float cos_y_1 = (d2_11 > 0.0) ? metal::dot(_e11, v_13 / metal::float3(metal::sqrt(d2_11))) : 0.0;
+    float _e20 = light_range_scale(li_3, x_11, r_8, rl_8, light_cones, _buffer_sizes);
     float _e23 = rt2_4[li_3];
     float _e25 = light_area(l_9);
-    float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_10, _e25, cos_y_1);
+    float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_11, _e25, cos_y_1);
     return _e26;
 }
 
@@ -1461,9 +1487,9 @@ float light_pdf(
     uint li_4,
     metal::float3 x_12,
     metal::float3 n_15,
-    metal::float3 r_8,
+    metal::float3 r_9,
     metal::float4 lobe_6,
-    metal::float4 rl_8,
+    metal::float4 rl_9,
     metal::float3 y_2,
     uint nee_1,
     bool in_range_2,
@@ -1472,8 +1498,8 @@ float light_pdf(
     device type_12 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e9 = select_pdf(li_4, x_12, n_15, r_8, lobe_6, rl_8, nee_1, in_range_2);
-    float _e10 = light_pdf_selected(li_4, x_12, r_8, rl_8, y_2, _e9, lights, rt2_4, light_cones, _buffer_sizes);
+    float _e9 = select_pdf(li_4, x_12, n_15, r_9, lobe_6, rl_9, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_4, x_12, r_9, rl_9, y_2, _e9, lights, rt2_4, light_cones, _buffer_sizes);
     return _e10;
 }
 
@@ -1484,9 +1510,9 @@ metal::float3 shade_pick(
     metal::float3 ng_2,
     GpuMaterial m,
     metal::float3 wo_1,
-    metal::float3 r_9,
+    metal::float3 r_10,
     metal::float4 lobe_7,
-    metal::float4 rl_9,
+    metal::float4 rl_10,
     float w_4,
     uint nee_2,
     float u1_3,
@@ -1494,16 +1520,16 @@ metal::float3 shade_pick(
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     device type_11 const& lights,
-    device type_4 const& r2_3,
+    device type_4 const& r2_2,
     device type_4 const& rt2_4,
     device type_12 const& light_cones,
     constant ShadeParams& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_5, x_13, r_9, rl_9, light_cones, _buffer_sizes);
+    float _e13 = light_range_scale(li_5, x_13, r_10, rl_10, light_cones, _buffer_sizes);
     float _e16 = params.eps;
-    Connection _e17 = connect(li_5, x_13, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16, geo_nodes, geo_tris, lights, r2_3, rt2_4, _buffer_sizes);
+    Connection _e17 = connect(li_5, x_13, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16, geo_nodes, geo_tris, lights, r2_2, rt2_4, _buffer_sizes);
     if (_e17.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
@@ -1511,7 +1537,7 @@ metal::float3 shade_pick(
     GpuLight _e30 = lights[li_5];
     float _e31 = light_area(_e30);
     if (_e31 > 0.0) {
-        float _e36 = light_pdf(li_5, x_13, n_16, r_9, lobe_7, rl_9, _e17.y, nee_2, true, lights, rt2_4, light_cones, _buffer_sizes);
+        float _e36 = light_pdf(li_5, x_13, n_16, r_10, lobe_7, rl_10, _e17.y, nee_2, true, lights, rt2_4, light_cones, _buffer_sizes);
         float _e38 = specular_probability(lobe_7);
         float _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);
@@ -1530,7 +1556,7 @@ kernel void main_(
 , device type_7 const& geo_tris [[user(fake0)]]
 , device type_10 const& bsh_nodes [[user(fake0)]]
 , device type_11 const& lights [[user(fake0)]]
-, device type_4 const& r2_3 [[user(fake0)]]
+, device type_4 const& r2_2 [[user(fake0)]]
 , device type_4 const& rt2_4 [[user(fake0)]]
 , device type_12 const& light_cones [[user(fake0)]]
 , constant ShadeParams& params [[user(fake0)]]
@@ -1597,7 +1623,7 @@ kernel void main_(
             uint _e66 = s;
             uint _e69 = h;
             float _e70 = xi_from_bits(_e69);
-            metal::float3 _e71 = shade_pick(_e44.light.inner[_e66], x_14, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70, geo_nodes, geo_tris, lights, r2_3, rt2_4, light_cones, params, _buffer_sizes);
+            metal::float3 _e71 = shade_pick(_e44.light.inner[_e66], x_14, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70, geo_nodes, geo_tris, lights, r2_2, rt2_4, light_cones, params, _buffer_sizes);
             sum = _e64 + _e71;
         }
     }

@@ -778,13 +778,15 @@ float cone_cos_toward(
 ) {
     metal::float3 v_8 = center_2 - p_2;
     float dist2_2 = metal::dot(v_8, v_8);
-    metal::float3 w_6 = (dist2_2 > 0.0) ? (v_8 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0);
-    float _e17 = subtended_cos(dist2_2, radius_2 * radius_2);
-    float cos_i = metal::dot(w_6, d);
-    float _e22 = safe_sqrt(1.0 - (cos_i * cos_i));
-    float _e26 = safe_sqrt(1.0 - (_e17 * _e17));
-    float _e27 = cos_sub_clamped(_e22, cos_i, _e26, _e17);
-    return _e27;
+    if (dist2_2 <= (radius_2 * radius_2)) {
+        return 1.0;
+    }
+    float dist = metal::sqrt(dist2_2);
+    metal::float3 c_8 = metal::cross(v_8, d);
+    float sin_b_2 = radius_2 / dist;
+    float _e20 = safe_sqrt(1.0 - (sin_b_2 * sin_b_2));
+    float _e21 = cos_sub_clamped(metal::sqrt(metal::dot(c_8, c_8)) / dist, metal::dot(v_8, d) / dist, sin_b_2, _e20);
+    return _e21;
 }
 
 float range_scale_at(
@@ -829,10 +831,10 @@ float light_importance(
     if (metal::dot(n_9, n_9) > 0.0) {
         metal::float3 v_9 = center_4 - p_4;
         float dist2_3 = metal::dot(v_9, v_9);
-        float cos_i_1 = metal::dot((dist2_3 > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_3))) : metal::float3(0.0, 0.0, 0.0), n_9);
+        float cos_i = metal::dot((dist2_3 > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_3))) : metal::float3(0.0, 0.0, 0.0), n_9);
         float _e33 = imp;
-        float _e37 = safe_sqrt(1.0 - (cos_i_1 * cos_i_1));
-        float _e40 = cos_sub_clamped(_e37, cos_i_1, _e8.w, _e8.z);
+        float _e37 = safe_sqrt(1.0 - (cos_i * cos_i));
+        float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
         imp = _e33 * metal::max(_e40, 0.0);
     }
     float _e44 = imp;
@@ -1270,8 +1272,8 @@ float light_range_scale(
     device type_10 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_8 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_2, c_8.center, c_8.radius, x_5, r_3);
+    GpuLightCone c_9 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_5, r_3);
     return _e9;
 }
 
