@@ -4,7 +4,10 @@ Mitsuba 3 (https://mitsuba.readthedocs.io), block by block.
 
 The scene: a room (Lambertian floor and walls, open top), six spheres of
 glTF materials (roughness 0.05, 0.2, 0.5 perceptual; metallic 0 and 1),
-a quad area light and a point light. This script writes the geometry as
+a quad area light and a small sphere light (or, with --point-light, a point
+light: its caustics through the near-mirror spheres are found only by a
+BSDF sample that the sphere's next-event estimate connects, with weights up
+to 1/(pi alpha^2), and need about 1.7M spp for 3% blocks). This script writes the geometry as
 flat-shaded OBJ files and the materials, lights and camera twice: as an slc
 scene file (`[[geometry]] obj = ..., material = {...}`) and as a Mitsuba
 scene dictionary. Mitsuba renders it with its own `path` integrator (MIS,
@@ -25,7 +28,11 @@ within 3 %, for slc's CPU and GPU backends.
 
     pip install mitsuba numpy
     cargo build --release -p slc-cli
-    python3 tools/mitsuba_compare.py [--spp 1024] [--seeds 4] [--size 64] [--backends cpu,gpu] [--out DIR]
+    python3 tools/mitsuba_compare.py [--spp 1024] [--seeds 4] [--size 64] [--backends cpu,gpu] [--point-light] [--out DIR]
+
+Issue 30's rows (README): --spp 1024 --mitsuba-spp 4096 --seeds 16 --method slc
+(16 seeds per renderer, so that each block's standard error is itself
+well estimated).
 
 Mitsuba's llvm_ad_rgb variant needs libLLVM (Mesa's lavapipe brings it);
 --variant scalar_rgb works without it, far slower.
@@ -75,8 +82,10 @@ def write_obj(path, tris):
             f.write("f %d %d %d\n" % (3 * i + 1, 3 * i + 2, 3 * i + 3))
 
 
-def scene(out):
-    """Writes the OBJs; returns (objects, lights, camera)."""
+def scene(out, point_light):
+    """Writes the OBJs; returns (objects, lights, camera). With `point_light`
+    the second light is a point light; otherwise a small sphere of emissive
+    triangles of the same position and (far-field) intensity."""
     s = 1.5
     objects = [
         ("floor", quad((-s, 0, s), (s, 0, s), (s, 0, -s), (-s, 0, -s)), dict(base=(0.5, 0.5, 0.5), lambert=True)),
@@ -97,9 +106,20 @@ def scene(out):
     l = 0.6
     light = quad((-l, 1.9, -l), (l, 1.9, -l), (l, 1.9, l), (-l, 1.9, l))  # faces down
     objects.append(("light", light, dict(base=(0.5, 0.5, 0.5), lambert=True, emission=(2.2, 2.0, 1.8))))
+    position, intensity = (0.9, 1.1, 1.0), (0.8, 0.7, 0.6)
+    lights = []
+    if point_light:
+        lights.append(dict(position=position, intensity=intensity))
+    else:
+        # A sphere of radius r and radiance L has the intensity L·π r² in
+        # every direction: the point light's, spread over a disc that a
+        # near-mirror sphere reflects as a spot, not as a point.
+        r = 0.08
+        tris = [tuple(tuple(r * p[k] + position[k] for k in range(3)) for p in t) for t in icosphere(1)]
+        radiance = tuple(i / (math.pi * r * r) for i in intensity)
+        objects.append(("bulb", tris, dict(base=(0.0, 0.0, 0.0), lambert=True, emission=radiance)))
     for name, tris, _ in objects:
         write_obj(os.path.join(out, name + ".obj"), tris)
-    lights = [dict(position=(0.9, 1.1, 1.0), intensity=(0.8, 0.7, 0.6))]
     camera = dict(position=(0.0, 1.7, 3.9), look_at=(0.0, 0.45, 0.0), fov=40.0)
     return objects, lights, camera
 
@@ -313,6 +333,9 @@ def main():
     ap.add_argument("--error-bound", type=float, default=None, help="slc's ε [default: slc's own]")
     ap.add_argument("--out", default="target/mitsuba-compare")
     ap.add_argument("--seed-offset", type=int, default=0, help="added to every seed of both renderers (fresh seeds)")
+    ap.add_argument("--point-light", action="store_true",
+                    help="a point light in place of the small sphere light (its caustics through the near-mirror "
+                         "spheres need about 1.7M spp for 3%% blocks)")
     ap.add_argument("--pixel", default=None, help="ROW,COL: also print this pixel's per-seed values and their mean")
     a = ap.parse_args()
     out = os.path.abspath(a.out)
@@ -321,7 +344,7 @@ def main():
     import drjit as dr
     mi.set_variant(a.variant)
     register_gltf_bsdf(mi, dr)
-    objects, lights, camera = scene(out)
+    objects, lights, camera = scene(out, a.point_light)
     path = slc_scene_file(out, objects, lights, camera)
     mspp = a.mitsuba_spp or 4 * a.spp
     ref = [mitsuba_render(mi, out, objects, lights, camera, a.size, mspp, 1000 + a.seed_offset + s) for s in range(a.seeds)]
