@@ -554,7 +554,11 @@ mod tests {
             // Every fourth centre lies near the mirror direction's cone edge.
             let dist = 0.01 + 2.0 * u();
             let radius = dist * [0.0, 0.01, 0.3, 1.2][k % 4] * u();
-            let c = if k % 4 == 0 { x + (r + (Vec3::new(u(), u(), u()) - 0.5) * 0.02).normalize() * dist } else { x + (Vec3::new(u(), u(), u()) - 0.5).normalize() * dist };
+            let c = if k % 4 == 0 {
+                x + (r + (Vec3::new(u(), u(), u()) - 0.5) * 0.02).normalize() * dist
+            } else {
+                x + (Vec3::new(u(), u(), u()) - 0.5).normalize() * dist
+            };
             let v = c - x;
             let exact = range_scale_toward(rl, c, radius, x, r);
             let inner = walk::bsh_inner_scale(radius, v, v.dot(v), r, rl);
