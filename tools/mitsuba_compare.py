@@ -85,7 +85,7 @@ def write_obj(path, tris):
 def scene(out, point_light):
     """Writes the OBJs; returns (objects, lights, camera). With `point_light`
     the second light is a point light; otherwise a small sphere of emissive
-    triangles of the same position and (far-field) intensity."""
+    triangles at the same position, of about the same intensity."""
     s = 1.5
     objects = [
         ("floor", quad((-s, 0, s), (s, 0, s), (s, 0, -s), (-s, 0, -s)), dict(base=(0.5, 0.5, 0.5), lambert=True)),
@@ -112,8 +112,9 @@ def scene(out, point_light):
         lights.append(dict(position=position, intensity=intensity))
     else:
         # A sphere of radius r and radiance L has the intensity L·π r² in
-        # every direction: the point light's, spread over a disc that a
-        # near-mirror sphere reflects as a spot, not as a point.
+        # every direction: about the point light's (the 80-triangle sphere
+        # inscribed in it shows a little less area), spread over a disc
+        # that a near-mirror sphere reflects as a spot, not as a point.
         r = 0.08
         tris = [tuple(tuple(r * p[k] + position[k] for k in range(3)) for p in t) for t in icosphere(1)]
         radiance = tuple(i / (math.pi * r * r) for i in intensity)
