@@ -105,7 +105,7 @@ pub fn bsh_count(nodes: BshNodes) -> u32 {
 /// kernels that bind one declare (their WGSL is [`walk::WGSL`]).
 pub mod walk {
     use super::{BSH_NONE, BshNode, BshNodes, bsh_count, bsh_node, bsh_range_bound, bsh_scaled_radius};
-    use crate::importance::{range_scale_at, range_scale_toward};
+    use crate::importance::{cone_cos_of, range_scale_at, range_scale_toward};
     use crate::sphere::{sphere_contains_point, sphere_pad, sphere_union};
     use crate::wgsl::*;
 
@@ -172,23 +172,14 @@ pub mod walk {
 
         /// An inner node's range scale for [`bsh_reaches`]: at least
         /// [`range_scale_toward`] of its light bounds `(C, A)` for a receiver
-        /// at `x = C − v` (`d2 = |v|²`) with mirror direction `r`, in fewer
-        /// square roots. The receiver's full scale `rl.w²` where `r` points
-        /// into the sphere (`v·r ≥ 0`, `(v·r)² ≥ d2 − A²`: no root), else
-        /// [`crate::importance::range_scale_at`] of `cos(θ − θ_b) = (v·r·√(d2 − A²) +
-        /// |v × r|·A)/d2` ([`crate::importance::cone_cos_toward`]'s value,
-        /// written over one denominator) raised by 2e-6: both are accurate
-        /// to about 1e-7, so a node's scale is never below that of a light
-        /// beneath it (the walk finds exactly the leaves' lights).
+        /// at `x = C − v` (`d2 = |v|²`) with mirror direction `r`:
+        /// [`crate::importance::range_scale_at`] of
+        /// [`crate::importance::cone_cos_of`] (no root where `r` points into
+        /// the sphere) raised by 2e-6. The cosine is accurate to about 1e-7,
+        /// so a node's scale is never below that of a light beneath it (the
+        /// walk finds exactly the leaves' lights).
         pub fn bsh_inner_scale(a: f32, v: vec3f, d2: f32, r: vec3f, rl: vec4f) -> f32 {
-            let vr: f32 = dot(v, r);
-            let h2: f32 = d2 - a * a;
-            if h2 <= 0.0 || (vr >= 0.0 && vr * vr >= h2) {
-                return rl.w * rl.w;
-            }
-            let c: vec3f = cross(v, r);
-            let cos_t: f32 = (vr * sqrt(h2) + sqrt(dot(c, c)) * a) / d2;
-            return range_scale_at(rl, cos_t + 2e-6);
+            return range_scale_at(rl, cone_cos_of(v, d2, a, r) + 2e-6);
         }
 
         /// [`bsh_next_leaf`] for a receiver at `x` with mirror direction `r`

@@ -94,21 +94,31 @@ crate::shared! {
     /// is pbrt-v4's widened `cos θ'_i`; with a glossy receiver's mirror
     /// direction, how near the sphere comes to the lobe's peak.
     ///
-    /// The sines come from `|v × d|/|v|` and `radius/|v|`, not from
-    /// `√(1 − cos²)`, which loses half the digits near 0 (a small sphere
-    /// near `d`): a glossy receiver's range scale ([`range_scale_toward`])
-    /// amplifies an error in this cosine by up to `1/α²`, and the BSH's walk
-    /// bounds it with a fixed margin (`crate::bsh::walk::bsh_inner_scale`).
+    /// Computed by [`cone_cos_of`] with `v = center − p`.
     pub fn cone_cos_toward(center: vec3f, radius: f32, p: vec3f, d: vec3f) -> f32 {
         let v: vec3f = center - p;
-        let dist2: f32 = dot(v, v);
-        if dist2 <= radius * radius {
+        return cone_cos_of(v, dot(v, v), radius, d);
+    }
+
+    /// [`cone_cos_toward`] of the sphere of radius `a` whose centre lies at
+    /// `v` from the point (`d2 = |v|²`), over one denominator:
+    /// `cos(θ − θ_b) = (v·d·√(d2 − a²) + |v × d|·a)/d2`, and 1 without a
+    /// root where the point is inside the sphere (`d2 ≤ a²`) or `d` points
+    /// into it (`v·d ≥ 0`, `(v·d)² ≥ d2 − a²`). The sines come from
+    /// `|v × d|` and `a`, not from `√(1 − cos²)`, which loses half the
+    /// digits near 0 (a small sphere near `d`): a glossy receiver's range
+    /// scale ([`range_scale_toward`]) amplifies an error in this cosine by
+    /// up to `1/α²`, and the BSH's walk bounds it with a fixed margin
+    /// (`crate::bsh::walk::bsh_inner_scale`, which calls this with the
+    /// `d2` it has).
+    pub fn cone_cos_of(v: vec3f, d2: f32, a: f32, d: vec3f) -> f32 {
+        let vd: f32 = dot(v, d);
+        let h2: f32 = d2 - a * a;
+        if h2 <= 0.0 || (vd >= 0.0 && vd * vd >= h2) {
             return 1.0;
         }
-        let dist: f32 = sqrt(dist2);
         let c: vec3f = cross(v, d);
-        let sin_b: f32 = radius / dist;
-        return cos_sub_clamped(sqrt(dot(c, c)) / dist, dot(v, d) / dist, sin_b, safe_sqrt(1.0 - sin_b * sin_b));
+        return min((vd * sqrt(h2) + sqrt(dot(c, c)) * a) / d2, 1.0);
     }
 
     /// The factor `s` by which a receiver at `p` with mirror direction `r`

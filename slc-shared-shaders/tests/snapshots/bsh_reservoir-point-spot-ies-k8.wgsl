@@ -183,8 +183,8 @@ fn slc_keep(r2_: f32, d2_1: f32) -> bool {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_2: vec3<f32>) -> bool {
-    let v_1 = (x_2 - c);
-    return (dot(v_1, v_1) <= (r * r));
+    let v_2 = (x_2 - c);
+    return (dot(v_2, v_2) <= (r * r));
 }
 
 fn inverse_square(d2_2: f32) -> f32 {
@@ -201,11 +201,11 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local: bool;
     var local_1: bool;
 
-    let v_2 = (x_3 - y);
-    let d2_5 = dot(v_2, v_2);
-    let _e7 = slc_keep(r2_1, d2_5);
+    let v_3 = (x_3 - y);
+    let d2_6 = dot(v_3, v_3);
+    let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local = !((d2_5 > 0f));
+        local = !((d2_6 > 0f));
     } else {
         local = true;
     }
@@ -213,7 +213,7 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_3 = (v_2 / vec3(sqrt(d2_5)));
+    let w_3 = (v_3 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n, w_3));
     if !((cos_x_1 <= 0f)) {
         local_1 = (dot(ng, w_3) >= 0f);
@@ -239,15 +239,15 @@ fn atan_portable(x_4: f32) -> f32 {
     var base: f32 = 0f;
     var t: f32;
 
-    let a_7 = abs(x_4);
-    t = a_7;
-    if (a_7 > 2.4142137f) {
+    let a_8 = abs(x_4);
+    t = a_8;
+    if (a_8 > 2.4142137f) {
         base = 1.5707964f;
-        t = (-1f / a_7);
+        t = (-1f / a_8);
     } else {
-        if (a_7 > 0.41421357f) {
+        if (a_8 > 0.41421357f) {
             base = 0.7853982f;
-            t = ((a_7 - 1f) / (a_7 + 1f));
+            t = ((a_8 - 1f) / (a_8 + 1f));
         }
     }
     let _e18 = t;
@@ -403,11 +403,11 @@ fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_2: f32) -> f32 {
     let _e54 = ies_lerp_t(_e51, _e53, _e32);
     let _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
     let _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
-    let a_8 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
+    let a_9 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
     let _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     let _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
     let b_5 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
-    return ((a_8 * (1f - _e54)) + (b_5 * _e54));
+    return ((a_9 * (1f - _e54)) + (b_5 * _e54));
 }
 
 fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
@@ -488,29 +488,35 @@ fn reservoir_weight(n_5: u32, k_1: u32) -> f32 {
     return max((_e2 / _e3), 1f);
 }
 
-fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
-    if (cos_a > cos_b) {
+fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_4: f32, d: vec3<f32>) -> f32 {
+    var local_3: bool;
+    var local_4: bool;
+
+    let vd = dot(v, d);
+    let h2_ = (d2_4 - (a_4 * a_4));
+    if !((h2_ <= 0f)) {
+        if (vd >= 0f) {
+            local_4 = ((vd * vd) >= h2_);
+        } else {
+            local_4 = false;
+        }
+        let _e19 = local_4;
+        local_3 = _e19;
+    } else {
+        local_3 = true;
+    }
+    let _e21 = local_3;
+    if _e21 {
         return 1f;
     }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
+    let c_6 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_6, c_6)) * a_4)) / d2_4), 1f);
 }
 
-fn safe_sqrt(x_8: f32) -> f32 {
-    return sqrt(max(x_8, 0f));
-}
-
-fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d: vec3<f32>) -> f32 {
-    let v_3 = (center - p);
-    let dist2_ = dot(v_3, v_3);
-    if (dist2_ <= (radius * radius)) {
-        return 1f;
-    }
-    let dist = sqrt(dist2_);
-    let c_6 = cross(v_3, d);
-    let sin_b_1 = (radius / dist);
-    let _e20 = safe_sqrt((1f - (sin_b_1 * sin_b_1)));
-    let _e21 = cos_sub_clamped((sqrt(dot(c_6, c_6)) / dist), (dot(v_3, d) / dist), sin_b_1, _e20);
-    return _e21;
+fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
+    let v_4 = (center - p);
+    let _e6 = cone_cos_of(v_4, dot(v_4, v_4), radius, d_1);
+    return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -531,14 +537,14 @@ fn shadow_margin(len: f32) -> f32 {
     return (0.0001f * len);
 }
 
-fn ray_inverse(x_9: f32) -> f32 {
-    return (1f / select(x_9, 0.000000000000000000000000000001f, (abs(x_9) < 0.000000000000000000000000000001f)));
+fn ray_inverse(x_8: f32) -> f32 {
+    return (1f / select(x_8, 0.000000000000000000000000000001f, (abs(x_8) < 0.000000000000000000000000000001f)));
 }
 
-fn ray_inverse3_(d_1: vec3<f32>) -> vec3<f32> {
-    let _e2 = ray_inverse(d_1.x);
-    let _e4 = ray_inverse(d_1.y);
-    let _e6 = ray_inverse(d_1.z);
+fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d_2.x);
+    let _e4 = ray_inverse(d_2.y);
+    let _e6 = ray_inverse(d_2.z);
     return vec3<f32>(_e2, _e4, _e6);
 }
 
@@ -555,48 +561,48 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
     return -1f;
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_3: bool;
-    var local_4: bool;
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
     var local_5: bool;
+    var local_6: bool;
+    var local_7: bool;
 
-    let e1_ = (b_3 - a_4);
-    let e2_ = (c_3 - a_4);
-    let p_2 = cross(d_2, e2_);
+    let e1_ = (b_3 - a_5);
+    let e2_ = (c_3 - a_5);
+    let p_2 = cross(d_3, e2_);
     let det = dot(e1_, p_2);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv = (1f / det);
-    let s_2 = (o_1 - a_4);
+    let s_2 = (o_1 - a_5);
     let u_2 = (dot(s_2, p_2) * inv);
     if !((u_2 < 0f)) {
-        local_3 = (u_2 > 1f);
+        local_5 = (u_2 > 1f);
     } else {
-        local_3 = true;
+        local_5 = true;
     }
-    let _e28 = local_3;
+    let _e28 = local_5;
     if _e28 {
         return -1f;
     }
     let q = cross(s_2, e1_);
-    let v_4 = (dot(d_2, q) * inv);
-    if !((v_4 < 0f)) {
-        local_4 = ((u_2 + v_4) > 1f);
+    let v_5 = (dot(d_3, q) * inv);
+    if !((v_5 < 0f)) {
+        local_6 = ((u_2 + v_5) > 1f);
     } else {
-        local_4 = true;
+        local_6 = true;
     }
-    let _e42 = local_4;
+    let _e42 = local_6;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_, q) * inv);
     if (t_3 > t_min) {
-        local_5 = (t_3 < t_max_1);
+        local_7 = (t_3 < t_max_1);
     } else {
-        local_5 = false;
+        local_7 = false;
     }
-    let _e51 = local_5;
+    let _e51 = local_7;
     if _e51 {
         return t_3;
     }
@@ -626,7 +632,7 @@ fn light_point(l_1: GpuLight, u1_: f32, u2_: f32) -> vec3<f32> {
     return l_1.p0_;
 }
 
-fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
+fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
@@ -639,7 +645,7 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         let _e13 = hit;
         return _e13;
     }
-    let _e14 = ray_inverse3_(d_3);
+    let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node_2;
         let n_7 = geo_nodes[_e21];
@@ -658,7 +664,7 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                         let _e42 = i_1;
                         let t_4 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i_1;
@@ -700,14 +706,14 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     return _e81;
 }
 
-fn occluded(a_5: vec3<f32>, b_4: vec3<f32>) -> bool {
-    let dv = (b_4 - a_5);
+fn occluded(a_6: vec3<f32>, b_4: vec3<f32>) -> bool {
+    let dv = (b_4 - a_6);
     let len_1 = length(dv);
     if (len_1 <= 0f) {
         return false;
     }
     let _e7 = shadow_margin(len_1);
-    let _e12 = trace(a_5, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    let _e12 = trace(a_6, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
     return (_e12.tri != NO_LIGHT);
 }
 
@@ -728,43 +734,22 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_6: f32, v: vec3<f32>, d2_4: f32, r_2: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    var local_6: bool;
-    var local_7: bool;
-
-    let vr = dot(v, r_2);
-    let h2_ = (d2_4 - (a_6 * a_6));
-    if !((h2_ <= 0f)) {
-        if (vr >= 0f) {
-            local_7 = ((vr * vr) >= h2_);
-        } else {
-            local_7 = false;
-        }
-        let _e20 = local_7;
-        local_6 = _e20;
-    } else {
-        local_6 = true;
-    }
-    let _e22 = local_6;
-    if _e22 {
-        return (rl_2.w * rl_2.w);
-    }
-    let c_7 = cross(v, r_2);
-    let cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_6)) / d2_4);
-    let _e36 = range_scale_at(rl_2, (cos_t_1 + 0.000002f));
-    return _e36;
+fn bsh_inner_scale(a_7: f32, v_1: vec3<f32>, d2_5: f32, r_2: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_1, d2_5, a_7, r_2);
+    let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
+    return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_10: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
+fn bsh_reaches(node_3: BshNode, x_9: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
     var local_8: bool;
     var local_9: bool;
 
-    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_10);
+    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_9);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_10);
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_9);
         local_8 = !(_e20);
     } else {
         local_8 = true;
@@ -774,23 +759,23 @@ fn bsh_reaches(node_3: BshNode, x_10: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>
         return false;
     }
     let _e25 = bsh_range_bound(node_3);
-    let v_5 = (x_10 - node_3.center);
-    let d2_6 = dot(v_5, v_5);
+    let v_6 = (x_9 - node_3.center);
+    let d2_7 = dot(v_6, v_6);
     let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_6 > (reach_max * reach_max)) {
+    if (d2_7 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_10, r_3);
+        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_9, r_3);
         let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_3.center, _e46, x_10);
+        let _e47 = sphere_contains_point(node_3.center, _e46, x_9);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_5), d2_6, r_3, rl_3);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_6), d2_7, r_3, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if (d2_6 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_9 = (d2_6 <= (reach * reach));
+    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_9 = (d2_7 <= (reach * reach));
     } else {
         local_9 = false;
     }
@@ -798,7 +783,7 @@ fn bsh_reaches(node_3: BshNode, x_10: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_11: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>) -> u32 {
+fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_10: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>) -> u32 {
     var i_3: u32;
 
     i_3 = start_1;
@@ -811,7 +796,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_11: vec3<f32>, r_4: vec3<f32
         {
             let _e9 = i_3;
             let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_11, r_4, rl_4);
+            let _e11 = bsh_reaches(_e10, x_10, r_4, rl_4);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
                     let _e15 = i_3;
@@ -826,7 +811,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_11: vec3<f32>, r_4: vec3<f32
     return BSH_NONE;
 }
 
-fn bsh_collect(x_12: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
+fn bsh_collect(x_11: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
     var picks: Picks;
     var h_1: u32;
     var i_4: u32;
@@ -834,7 +819,7 @@ fn bsh_collect(x_12: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) ->
     picks.n = 0u;
     h_1 = seed_1;
     let _e10 = bsh_first(BSH);
-    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_5, rl_5);
+    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5);
     i_4 = _e11;
     loop {
         let _e13 = i_4;
@@ -868,7 +853,7 @@ fn bsh_collect(x_12: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) ->
         continuing {
             let _e44 = i_4;
             let _e47 = bsh_nodes[_e44].next;
-            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_5, rl_5);
+            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_5, rl_5);
             i_4 = _e48;
         }
     }
@@ -876,7 +861,7 @@ fn bsh_collect(x_12: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) ->
     return _e49;
 }
 
-fn connect(li: u32, x_13: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32) -> Connection {
+fn connect(li: u32, x_12: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32) -> Connection {
     var c_4: Connection;
     var local_10: bool;
 
@@ -886,12 +871,12 @@ fn connect(li: u32, x_13: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, 
     c_4.y = _e17;
     let _e20 = c_4.y;
     let _e23 = r2_2[li];
-    let _e25 = connection_cosine(x_13, _e20, n_6, ng_1, (s_1 * _e23));
+    let _e25 = connection_cosine(x_12, _e20, n_6, ng_1, (s_1 * _e23));
     c_4.cos_x = _e25;
     let _e27 = c_4.cos_x;
     if !((_e27 <= 0f)) {
         let _e36 = c_4.y;
-        let _e37 = occluded((x_13 + (ng_1 * eps)), _e36);
+        let _e37 = occluded((x_12 + (ng_1 * eps)), _e36);
         local_10 = _e37;
     } else {
         local_10 = true;
@@ -902,12 +887,12 @@ fn connect(li: u32, x_13: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, 
         return _e40;
     }
     let _e42 = c_4.y;
-    let v_6 = (x_13 - _e42);
-    let d2_7 = dot(v_6, v_6);
-    let _e49 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_7))));
+    let v_7 = (x_12 - _e42);
+    let d2_8 = dot(v_7, v_7);
+    let _e49 = light_intensity(l_2, (v_7 / vec3(sqrt(d2_8))));
     let _e51 = c_4.cos_x;
     let _e54 = rt2_2[li];
-    let _e56 = connection_factor(_e51, d2_7, (s_1 * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_8, (s_1 * _e54), w_res);
     c_4.e = (_e49 * _e56);
     let _e58 = c_4;
     return _e58;
@@ -929,13 +914,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         irradiance[i_5] = vec4(0f);
         return;
     }
-    let x_14 = p_3.xyz;
+    let x_13 = p_3.xyz;
     let _e19 = normals[i_5];
     let n_8 = _e19.xyz;
     let _e23 = params.seed;
     let _e26 = params.frame;
     let _e27 = point_stream(_e23, i_5, _e26);
-    let _e33 = bsh_collect(x_14, x_14, vec4<f32>(1f, 0f, 1f, 1f), _e27);
+    let _e33 = bsh_collect(x_13, x_13, vec4<f32>(1f, 0f, 1f, 1f), _e27);
     let _e36 = reservoir_weight(_e33.n, K);
     let _e37 = pick_stream(_e27);
     h = _e37;
@@ -959,7 +944,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e60 = h;
             let _e61 = xi_from_bits(_e60);
             let _e64 = params.eps;
-            let _e65 = connect(_e33.light[_e57], x_14, n_8, n_8, 1f, _e36, _e52, _e61, _e64);
+            let _e65 = connect(_e33.light[_e57], x_13, n_8, n_8, 1f, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
         continuing {

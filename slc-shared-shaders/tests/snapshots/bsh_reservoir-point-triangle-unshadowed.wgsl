@@ -147,8 +147,8 @@ fn slc_keep(r2_: f32, d2_1: f32) -> bool {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_1: vec3<f32>) -> bool {
-    let v_1 = (x_1 - c);
-    return (dot(v_1, v_1) <= (r * r));
+    let v_2 = (x_1 - c);
+    return (dot(v_2, v_2) <= (r * r));
 }
 
 fn inverse_square(d2_2: f32) -> f32 {
@@ -165,11 +165,11 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local: bool;
     var local_1: bool;
 
-    let v_2 = (x_2 - y);
-    let d2_5 = dot(v_2, v_2);
-    let _e7 = slc_keep(r2_1, d2_5);
+    let v_3 = (x_2 - y);
+    let d2_6 = dot(v_3, v_3);
+    let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local = !((d2_5 > 0f));
+        local = !((d2_6 > 0f));
     } else {
         local = true;
     }
@@ -177,7 +177,7 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_3 = (v_2 / vec3(sqrt(d2_5)));
+    let w_3 = (v_3 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n, w_3));
     if !((cos_x_1 <= 0f)) {
         local_1 = (dot(ng, w_3) >= 0f);
@@ -264,29 +264,35 @@ fn reservoir_weight(n_5: u32, k_1: u32) -> f32 {
     return max((_e2 / _e3), 1f);
 }
 
-fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
-    if (cos_a > cos_b) {
+fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_4: f32, d: vec3<f32>) -> f32 {
+    var local_2: bool;
+    var local_3: bool;
+
+    let vd = dot(v, d);
+    let h2_ = (d2_4 - (a_4 * a_4));
+    if !((h2_ <= 0f)) {
+        if (vd >= 0f) {
+            local_3 = ((vd * vd) >= h2_);
+        } else {
+            local_3 = false;
+        }
+        let _e19 = local_3;
+        local_2 = _e19;
+    } else {
+        local_2 = true;
+    }
+    let _e21 = local_2;
+    if _e21 {
         return 1f;
     }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
+    let c_4 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_4, c_4)) * a_4)) / d2_4), 1f);
 }
 
-fn safe_sqrt(x_3: f32) -> f32 {
-    return sqrt(max(x_3, 0f));
-}
-
-fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d: vec3<f32>) -> f32 {
-    let v_3 = (center - p);
-    let dist2_ = dot(v_3, v_3);
-    if (dist2_ <= (radius * radius)) {
-        return 1f;
-    }
-    let dist = sqrt(dist2_);
-    let c_4 = cross(v_3, d);
-    let sin_b_1 = (radius / dist);
-    let _e20 = safe_sqrt((1f - (sin_b_1 * sin_b_1)));
-    let _e21 = cos_sub_clamped((sqrt(dot(c_4, c_4)) / dist), (dot(v_3, d) / dist), sin_b_1, _e20);
-    return _e21;
+fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
+    let v_4 = (center - p);
+    let _e6 = cone_cos_of(v_4, dot(v_4, v_4), radius, d_1);
+    return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -303,17 +309,17 @@ fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: 
     return _e10;
 }
 
-fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
-    var local_2: bool;
+fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
+    var local_4: bool;
 
-    let n_7 = cross((b_4 - a_4), (c_2 - a_4));
+    let n_7 = cross((b_4 - a_5), (c_2 - a_5));
     let l2_ = dot(n_7, n_7);
     if !(!((l2_ > 0f))) {
-        local_2 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_4 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_2 = true;
+        local_4 = true;
     }
-    let _e17 = local_2;
+    let _e17 = local_4;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -344,7 +350,7 @@ fn light_point(l_1: GpuLight, u1_1: f32, u2_1: f32) -> vec3<f32> {
     return l_1.p0_;
 }
 
-fn occluded(a_5: vec3<f32>, b_5: vec3<f32>) -> bool {
+fn occluded(a_6: vec3<f32>, b_5: vec3<f32>) -> bool {
     return false;
 }
 
@@ -365,43 +371,22 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_6: f32, v: vec3<f32>, d2_4: f32, r_2: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    var local_3: bool;
-    var local_4: bool;
-
-    let vr = dot(v, r_2);
-    let h2_ = (d2_4 - (a_6 * a_6));
-    if !((h2_ <= 0f)) {
-        if (vr >= 0f) {
-            local_4 = ((vr * vr) >= h2_);
-        } else {
-            local_4 = false;
-        }
-        let _e20 = local_4;
-        local_3 = _e20;
-    } else {
-        local_3 = true;
-    }
-    let _e22 = local_3;
-    if _e22 {
-        return (rl_2.w * rl_2.w);
-    }
-    let c_5 = cross(v, r_2);
-    let cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_5, c_5)) * a_6)) / d2_4);
-    let _e36 = range_scale_at(rl_2, (cos_t_1 + 0.000002f));
-    return _e36;
+fn bsh_inner_scale(a_7: f32, v_1: vec3<f32>, d2_5: f32, r_2: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_1, d2_5, a_7, r_2);
+    let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
+    return _e8;
 }
 
-fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
+fn bsh_reaches(node_2: BshNode, x_3: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
     var local_5: bool;
     var local_6: bool;
 
-    let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
+    let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_3);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001f)), x_4);
+        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001f)), x_3);
         local_5 = !(_e20);
     } else {
         local_5 = true;
@@ -411,23 +396,23 @@ fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>)
         return false;
     }
     let _e25 = bsh_range_bound(node_2);
-    let v_4 = (x_4 - node_2.center);
-    let d2_6 = dot(v_4, v_4);
+    let v_5 = (x_3 - node_2.center);
+    let d2_7 = dot(v_5, v_5);
     let reach_max = (node_2.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_6 > (reach_max * reach_max)) {
+    if (d2_7 > (reach_max * reach_max)) {
         return false;
     }
     if (node_2.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_4, r_3);
+        let _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_3, r_3);
         let _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_2.center, _e46, x_4);
+        let _e47 = sphere_contains_point(node_2.center, _e46, x_3);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_2.extent, -(v_4), d2_6, r_3, rl_3);
+    let _e50 = bsh_inner_scale(node_2.extent, -(v_5), d2_7, r_3, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if (d2_6 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_6 = (d2_6 <= (reach * reach));
+    if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_6 = (d2_7 <= (reach * reach));
     } else {
         local_6 = false;
     }
@@ -435,7 +420,7 @@ fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>)
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>) -> u32 {
+fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_4: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>) -> u32 {
     var i_1: u32;
 
     i_1 = start;
@@ -448,7 +433,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_4: vec3<f32>, 
         {
             let _e9 = i_1;
             let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_5, r_4, rl_4);
+            let _e11 = bsh_reaches(_e10, x_4, r_4, rl_4);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
                     let _e15 = i_1;
@@ -463,7 +448,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_4: vec3<f32>, 
     return BSH_NONE;
 }
 
-fn bsh_collect(x_6: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
+fn bsh_collect(x_5: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
     var picks: Picks;
     var h_1: u32;
     var i_2: u32;
@@ -471,7 +456,7 @@ fn bsh_collect(x_6: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> 
     picks.n = 0u;
     h_1 = seed_1;
     let _e10 = bsh_first(BSH);
-    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_5, rl_5);
+    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_5, r_5, rl_5);
     i_2 = _e11;
     loop {
         let _e13 = i_2;
@@ -505,7 +490,7 @@ fn bsh_collect(x_6: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> 
         continuing {
             let _e44 = i_2;
             let _e47 = bsh_nodes[_e44].next;
-            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_6, r_5, rl_5);
+            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_5, r_5, rl_5);
             i_2 = _e48;
         }
     }
@@ -513,7 +498,7 @@ fn bsh_collect(x_6: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> 
     return _e49;
 }
 
-fn connect(li: u32, x_7: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+fn connect(li: u32, x_6: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
     var c_3: Connection;
     var local_7: bool;
 
@@ -523,12 +508,12 @@ fn connect(li: u32, x_7: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w
     c_3.y = _e17;
     let _e20 = c_3.y;
     let _e23 = r2_2[li];
-    let _e25 = connection_cosine(x_7, _e20, n_6, ng_1, (s_1 * _e23));
+    let _e25 = connection_cosine(x_6, _e20, n_6, ng_1, (s_1 * _e23));
     c_3.cos_x = _e25;
     let _e27 = c_3.cos_x;
     if !((_e27 <= 0f)) {
         let _e36 = c_3.y;
-        let _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
+        let _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
         local_7 = _e37;
     } else {
         local_7 = true;
@@ -539,12 +524,12 @@ fn connect(li: u32, x_7: vec3<f32>, n_6: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w
         return _e40;
     }
     let _e42 = c_3.y;
-    let v_5 = (x_7 - _e42);
-    let d2_7 = dot(v_5, v_5);
-    let _e49 = light_intensity(l_2, (v_5 / vec3(sqrt(d2_7))));
+    let v_6 = (x_6 - _e42);
+    let d2_8 = dot(v_6, v_6);
+    let _e49 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
     let _e51 = c_3.cos_x;
     let _e54 = rt2_2[li];
-    let _e56 = connection_factor(_e51, d2_7, (s_1 * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_8, (s_1 * _e54), w_res);
     c_3.e = (_e49 * _e56);
     let _e58 = c_3;
     return _e58;
@@ -566,13 +551,13 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         irradiance[i_3] = vec4(0f);
         return;
     }
-    let x_8 = p_2.xyz;
+    let x_7 = p_2.xyz;
     let _e19 = normals[i_3];
     let n_8 = _e19.xyz;
     let _e23 = params.seed;
     let _e26 = params.frame;
     let _e27 = point_stream(_e23, i_3, _e26);
-    let _e33 = bsh_collect(x_8, x_8, vec4<f32>(1f, 0f, 1f, 1f), _e27);
+    let _e33 = bsh_collect(x_7, x_7, vec4<f32>(1f, 0f, 1f, 1f), _e27);
     let _e36 = reservoir_weight(_e33.n, K);
     let _e37 = pick_stream(_e27);
     h = _e37;
@@ -596,7 +581,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e60 = h;
             let _e61 = xi_from_bits(_e60);
             let _e64 = params.eps;
-            let _e65 = connect(_e33.light[_e57], x_8, n_8, n_8, 1f, _e36, _e52, _e61, _e64);
+            let _e65 = connect(_e33.light[_e57], x_7, n_8, n_8, 1f, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
         continuing {

@@ -181,8 +181,8 @@ fn slc_keep(r2_: f32, d2_1: f32) -> bool {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_2: vec3<f32>) -> bool {
-    let v_1 = (x_2 - c);
-    return (dot(v_1, v_1) <= (r_1 * r_1));
+    let v_2 = (x_2 - c);
+    return (dot(v_2, v_2) <= (r_1 * r_1));
 }
 
 fn inverse_square(d2_2: f32) -> f32 {
@@ -199,11 +199,11 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_2: bool;
     var local_3: bool;
 
-    let v_2 = (x_3 - y);
-    let d2_5 = dot(v_2, v_2);
-    let _e7 = slc_keep(r2_1, d2_5);
+    let v_3 = (x_3 - y);
+    let d2_6 = dot(v_3, v_3);
+    let _e7 = slc_keep(r2_1, d2_6);
     if !(!(_e7)) {
-        local_2 = !((d2_5 > 0f));
+        local_2 = !((d2_6 > 0f));
     } else {
         local_2 = true;
     }
@@ -211,7 +211,7 @@ fn connection_cosine(x_3: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_5 = (v_2 / vec3(sqrt(d2_5)));
+    let w_5 = (v_3 / vec3(sqrt(d2_6)));
     let cos_x_1 = -(dot(n, w_5));
     if !((cos_x_1 <= 0f)) {
         local_3 = (dot(ng, w_5) >= 0f);
@@ -248,15 +248,15 @@ fn atan_portable(x_4: f32) -> f32 {
     var base: f32 = 0f;
     var t_1: f32;
 
-    let a_9 = abs(x_4);
-    t_1 = a_9;
-    if (a_9 > 2.4142137f) {
+    let a_10 = abs(x_4);
+    t_1 = a_10;
+    if (a_10 > 2.4142137f) {
         base = 1.5707964f;
-        t_1 = (-1f / a_9);
+        t_1 = (-1f / a_10);
     } else {
-        if (a_9 > 0.41421357f) {
+        if (a_10 > 0.41421357f) {
             base = 0.7853982f;
-            t_1 = ((a_9 - 1f) / (a_9 + 1f));
+            t_1 = ((a_10 - 1f) / (a_10 + 1f));
         }
     }
     let _e18 = t_1;
@@ -412,11 +412,11 @@ fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_3: f32) -> f32 {
     let _e54 = ies_lerp_t(_e51, _e53, _e32);
     let _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
     let _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
-    let a_10 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
+    let a_11 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
     let _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     let _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
     let b_7 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
-    return ((a_10 * (1f - _e54)) + (b_7 * _e54));
+    return ((a_11 * (1f - _e54)) + (b_7 * _e54));
 }
 
 fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
@@ -529,29 +529,35 @@ fn range_lobe(lobe_4: vec4<f32>) -> vec4<f32> {
     return vec4<f32>(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
-fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
-    if (cos_a > cos_b) {
+fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_5: f32, d: vec3<f32>) -> f32 {
+    var local_5: bool;
+    var local_6: bool;
+
+    let vd = dot(v, d);
+    let h2_ = (d2_4 - (a_5 * a_5));
+    if !((h2_ <= 0f)) {
+        if (vd >= 0f) {
+            local_6 = ((vd * vd) >= h2_);
+        } else {
+            local_6 = false;
+        }
+        let _e19 = local_6;
+        local_5 = _e19;
+    } else {
+        local_5 = true;
+    }
+    let _e21 = local_5;
+    if _e21 {
         return 1f;
     }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
+    let c_7 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_5)) / d2_4), 1f);
 }
 
-fn safe_sqrt(x_8: f32) -> f32 {
-    return sqrt(max(x_8, 0f));
-}
-
-fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d: vec3<f32>) -> f32 {
-    let v_3 = (center - p);
-    let dist2_ = dot(v_3, v_3);
-    if (dist2_ <= (radius * radius)) {
-        return 1f;
-    }
-    let dist = sqrt(dist2_);
-    let c_7 = cross(v_3, d);
-    let sin_b_1 = (radius / dist);
-    let _e20 = safe_sqrt((1f - (sin_b_1 * sin_b_1)));
-    let _e21 = cos_sub_clamped((sqrt(dot(c_7, c_7)) / dist), (dot(v_3, d) / dist), sin_b_1, _e20);
-    return _e21;
+fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
+    let v_4 = (center - p);
+    let _e6 = cone_cos_of(v_4, dot(v_4, v_4), radius, d_1);
+    return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -568,17 +574,17 @@ fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: 
     return _e10;
 }
 
-fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
-    var local_5: bool;
+fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>) -> vec3<f32> {
+    var local_7: bool;
 
-    let n_9 = cross((b_4 - a_5), (c_4 - a_5));
+    let n_9 = cross((b_4 - a_6), (c_4 - a_6));
     let l2_ = dot(n_9, n_9);
     if !(!((l2_ > 0f))) {
-        local_5 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_7 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_5 = true;
+        local_7 = true;
     }
-    let _e17 = local_5;
+    let _e17 = local_7;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -617,7 +623,7 @@ fn light_point(l_1: GpuLight, u1_1: f32, u2_1: f32) -> vec3<f32> {
     return l_1.p0_;
 }
 
-fn occluded(a_6: vec3<f32>, b_5: vec3<f32>) -> bool {
+fn occluded(a_7: vec3<f32>, b_5: vec3<f32>) -> bool {
     return false;
 }
 
@@ -638,43 +644,22 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_7: f32, v: vec3<f32>, d2_4: f32, r_3: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    var local_6: bool;
-    var local_7: bool;
-
-    let vr = dot(v, r_3);
-    let h2_ = (d2_4 - (a_7 * a_7));
-    if !((h2_ <= 0f)) {
-        if (vr >= 0f) {
-            local_7 = ((vr * vr) >= h2_);
-        } else {
-            local_7 = false;
-        }
-        let _e20 = local_7;
-        local_6 = _e20;
-    } else {
-        local_6 = true;
-    }
-    let _e22 = local_6;
-    if _e22 {
-        return (rl_2.w * rl_2.w);
-    }
-    let c_8 = cross(v, r_3);
-    let cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_7)) / d2_4);
-    let _e36 = range_scale_at(rl_2, (cos_t_1 + 0.000002f));
-    return _e36;
+fn bsh_inner_scale(a_8: f32, v_1: vec3<f32>, d2_5: f32, r_3: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_1, d2_5, a_8, r_3);
+    let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
+    return _e8;
 }
 
-fn bsh_reaches(node_2: BshNode, x_9: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>) -> bool {
+fn bsh_reaches(node_2: BshNode, x_8: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>) -> bool {
     var local_8: bool;
     var local_9: bool;
 
-    let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_9);
+    let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_8);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001f)), x_9);
+        let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001f)), x_8);
         local_8 = !(_e20);
     } else {
         local_8 = true;
@@ -684,23 +669,23 @@ fn bsh_reaches(node_2: BshNode, x_9: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>)
         return false;
     }
     let _e25 = bsh_range_bound(node_2);
-    let v_4 = (x_9 - node_2.center);
-    let d2_6 = dot(v_4, v_4);
+    let v_5 = (x_8 - node_2.center);
+    let d2_7 = dot(v_5, v_5);
     let reach_max = (node_2.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_6 > (reach_max * reach_max)) {
+    if (d2_7 > (reach_max * reach_max)) {
         return false;
     }
     if (node_2.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_9, r_4);
+        let _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_8, r_4);
         let _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_2.center, _e46, x_9);
+        let _e47 = sphere_contains_point(node_2.center, _e46, x_8);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_2.extent, -(v_4), d2_6, r_4, rl_3);
+    let _e50 = bsh_inner_scale(node_2.extent, -(v_5), d2_7, r_4, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if (d2_6 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_9 = (d2_6 <= (reach * reach));
+    if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_9 = (d2_7 <= (reach * reach));
     } else {
         local_9 = false;
     }
@@ -708,7 +693,7 @@ fn bsh_reaches(node_2: BshNode, x_9: vec3<f32>, r_4: vec3<f32>, rl_3: vec4<f32>)
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_10: vec3<f32>, r_5: vec3<f32>, rl_4: vec4<f32>) -> u32 {
+fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_9: vec3<f32>, r_5: vec3<f32>, rl_4: vec4<f32>) -> u32 {
     var i_2: u32;
 
     i_2 = start_1;
@@ -721,7 +706,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_10: vec3<f32>, r_5: vec3<f32
         {
             let _e9 = i_2;
             let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_10, r_5, rl_4);
+            let _e11 = bsh_reaches(_e10, x_9, r_5, rl_4);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
                     let _e15 = i_2;
@@ -736,7 +721,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start_1: u32, x_10: vec3<f32>, r_5: vec3<f32
     return BSH_NONE;
 }
 
-fn bsh_collect(x_11: vec3<f32>, r_6: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
+fn bsh_collect(x_10: vec3<f32>, r_6: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
     var picks: Picks;
     var h_1: u32;
     var i_3: u32;
@@ -744,7 +729,7 @@ fn bsh_collect(x_11: vec3<f32>, r_6: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) ->
     picks.n = 0u;
     h_1 = seed_1;
     let _e10 = bsh_first(BSH);
-    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_6, rl_5);
+    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_10, r_6, rl_5);
     i_3 = _e11;
     loop {
         let _e13 = i_3;
@@ -778,7 +763,7 @@ fn bsh_collect(x_11: vec3<f32>, r_6: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) ->
         continuing {
             let _e44 = i_3;
             let _e47 = bsh_nodes[_e44].next;
-            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_6, rl_5);
+            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_10, r_6, rl_5);
             i_3 = _e48;
         }
     }
@@ -786,7 +771,7 @@ fn bsh_collect(x_11: vec3<f32>, r_6: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) ->
     return _e49;
 }
 
-fn connect(li: u32, x_12: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+fn connect(li: u32, x_11: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
     var c_5: Connection;
     var local_10: bool;
 
@@ -796,12 +781,12 @@ fn connect(li: u32, x_12: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_
     c_5.y = _e17;
     let _e20 = c_5.y;
     let _e23 = r2_2[li];
-    let _e25 = connection_cosine(x_12, _e20, n_7, ng_1, (s * _e23));
+    let _e25 = connection_cosine(x_11, _e20, n_7, ng_1, (s * _e23));
     c_5.cos_x = _e25;
     let _e27 = c_5.cos_x;
     if !((_e27 <= 0f)) {
         let _e36 = c_5.y;
-        let _e37 = occluded((x_12 + (ng_1 * eps)), _e36);
+        let _e37 = occluded((x_11 + (ng_1 * eps)), _e36);
         local_10 = _e37;
     } else {
         local_10 = true;
@@ -812,12 +797,12 @@ fn connect(li: u32, x_12: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_
         return _e40;
     }
     let _e42 = c_5.y;
-    let v_5 = (x_12 - _e42);
-    let d2_7 = dot(v_5, v_5);
-    let _e49 = light_intensity(l_2, (v_5 / vec3(sqrt(d2_7))));
+    let v_6 = (x_11 - _e42);
+    let d2_8 = dot(v_6, v_6);
+    let _e49 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
     let _e51 = c_5.cos_x;
     let _e54 = rt2_2[li];
-    let _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
     c_5.e = (_e49 * _e56);
     let _e58 = c_5;
     return _e58;
@@ -828,10 +813,10 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     return select(vec4(0f), vec4<f32>(p_2.xyz, 1f), (p_2.w > 0f));
 }
 
-fn shade_pick(li_1: u32, x_13: vec3<f32>, n_8: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>, m_1: Material, w_4: f32, u1_3: f32, u2_3: f32) -> Shaded {
+fn shade_pick(li_1: u32, x_12: vec3<f32>, n_8: vec3<f32>, r_7: vec3<f32>, rl_6: vec4<f32>, m_1: Material, w_4: f32, u1_3: f32, u2_3: f32) -> Shaded {
     var s_1: Shaded;
 
-    let _e12 = connect(li_1, x_13, n_8, n_8, 1f, w_4, u1_3, u2_3, 0f);
+    let _e12 = connect(li_1, x_12, n_8, n_8, 1f, w_4, u1_3, u2_3, 0f);
     s_1.e = _e12.e;
     s_1.diffuse = vec3(0f);
     s_1.specular = vec3(0f);
@@ -839,8 +824,8 @@ fn shade_pick(li_1: u32, x_13: vec3<f32>, n_8: vec3<f32>, r_7: vec3<f32>, rl_6: 
     return _e21;
 }
 
-fn add(a_8: Shaded, b_6: Shaded) -> Shaded {
-    return Shaded((a_8.e + b_6.e), (a_8.diffuse + b_6.diffuse), (a_8.specular + b_6.specular));
+fn add(a_9: Shaded, b_6: Shaded) -> Shaded {
+    return Shaded((a_9.e + b_6.e), (a_9.diffuse + b_6.diffuse), (a_9.specular + b_6.specular));
 }
 
 @compute @workgroup_size(8, 8, 1) 
@@ -880,7 +865,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         textureStore(out_tex, texel_1, vec4(0f));
         return;
     }
-    let x_14 = _e21.xyz;
+    let x_13 = _e21.xyz;
     let n_10 = (nn / vec3(sqrt(len2_)));
     r = n_10;
     let _e53 = lobe;
@@ -892,7 +877,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e69 = pick_stream(_e68);
     h = _e69;
     let _e79 = r;
-    let _e80 = bsh_collect(x_14, _e79, _e54, _e68);
+    let _e80 = bsh_collect(x_13, _e79, _e54, _e68);
     let _e83 = reservoir_weight(_e80.n, K);
     loop {
         let _e86 = k;
@@ -915,7 +900,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e102 = m;
             let _e103 = h;
             let _e104 = xi_from_bits(_e103);
-            let _e105 = shade_pick(_e80.light[_e99], x_14, n_10, _e101, _e54, _e102, _e83, _e94, _e104);
+            let _e105 = shade_pick(_e80.light[_e99], x_13, n_10, _e101, _e54, _e102, _e83, _e94, _e104);
             let _e106 = add(_e97, _e105);
             t = _e106;
         }

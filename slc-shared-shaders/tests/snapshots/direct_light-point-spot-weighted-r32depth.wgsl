@@ -186,8 +186,8 @@ fn slc_keep(r2_: f32, d2_1: f32) -> bool {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
-    let v_1 = (x_1 - c);
-    return (dot(v_1, v_1) <= (r_1 * r_1));
+    let v_2 = (x_1 - c);
+    return (dot(v_2, v_2) <= (r_1 * r_1));
 }
 
 fn inverse_square(d2_2: f32) -> f32 {
@@ -204,11 +204,11 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_2: bool;
     var local_3: bool;
 
-    let v_2 = (x_2 - y);
-    let d2_6 = dot(v_2, v_2);
-    let _e7 = slc_keep(r2_1, d2_6);
+    let v_3 = (x_2 - y);
+    let d2_7 = dot(v_3, v_3);
+    let _e7 = slc_keep(r2_1, d2_7);
     if !(!(_e7)) {
-        local_2 = !((d2_6 > 0f));
+        local_2 = !((d2_7 > 0f));
     } else {
         local_2 = true;
     }
@@ -216,7 +216,7 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_5 = (v_2 / vec3(sqrt(d2_6)));
+    let w_5 = (v_3 / vec3(sqrt(d2_7)));
     let cos_x_1 = -(dot(n, w_5));
     if !((cos_x_1 <= 0f)) {
         local_3 = (dot(ng, w_5) >= 0f);
@@ -330,11 +330,11 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
-    let v_3 = (p - center);
-    let dist2_1 = dot(v_3, v_3);
+    let v_4 = (p - center);
+    let dist2_1 = dot(v_4, v_4);
     let r2_4 = (radius * radius);
-    let d2_7 = max(max(dist2_1, r2_4), MIN_D2_);
-    let wi = select(vec3<f32>(0f, 0f, 0f), (v_3 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
+    let wi = select(vec3<f32>(0f, 0f, 0f), (v_4 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi);
     let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
     let _e26 = subtended_cos(dist2_1, r2_4);
@@ -343,7 +343,7 @@ fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: 
     let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
     let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
     let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4<f32>(_e37, d2_7, _e26, _e30);
+    return vec4<f32>(_e37, d2_8, _e26, _e30);
 }
 
 fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
@@ -354,18 +354,35 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
     return ((phi * _e7.x) / _e7.y);
 }
 
-fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d: vec3<f32>) -> f32 {
-    let v_4 = (center_2 - p_2);
-    let dist2_2 = dot(v_4, v_4);
-    if (dist2_2 <= (radius_2 * radius_2)) {
+fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_2: f32, d: vec3<f32>) -> f32 {
+    var local_4: bool;
+    var local_5: bool;
+
+    let vd = dot(v, d);
+    let h2_ = (d2_4 - (a_2 * a_2));
+    if !((h2_ <= 0f)) {
+        if (vd >= 0f) {
+            local_5 = ((vd * vd) >= h2_);
+        } else {
+            local_5 = false;
+        }
+        let _e19 = local_5;
+        local_4 = _e19;
+    } else {
+        local_4 = true;
+    }
+    let _e21 = local_4;
+    if _e21 {
         return 1f;
     }
-    let dist = sqrt(dist2_2);
-    let c_2 = cross(v_4, d);
-    let sin_b_2 = (radius_2 / dist);
-    let _e20 = safe_sqrt((1f - (sin_b_2 * sin_b_2)));
-    let _e21 = cos_sub_clamped((sqrt(dot(c_2, c_2)) / dist), (dot(v_4, d) / dist), sin_b_2, _e20);
-    return _e21;
+    let c_2 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_2, c_2)) * a_2)) / d2_4), 1f);
+}
+
+fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
+    let v_5 = (center_2 - p_2);
+    let _e6 = cone_cos_of(v_5, dot(v_5, v_5), radius_2, d_1);
+    return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -391,9 +408,9 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_1, n_1) > 0f) {
-        let v_5 = (center_4 - p_4);
-        let dist2_3 = dot(v_5, v_5);
-        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_5 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_1);
+        let v_6 = (center_4 - p_4);
+        let dist2_2 = dot(v_6, v_6);
+        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_6 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_1);
         let _e33 = imp;
         let _e37 = safe_sqrt((1f - (cos_i * cos_i)));
         let _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -404,16 +421,16 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_2: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_4: bool;
+    var local_6: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_2);
     if !((_e10 <= 0f)) {
-        local_4 = (_e11 <= 0f);
+        local_6 = (_e11 <= 0f);
     } else {
-        local_4 = true;
+        local_6 = true;
     }
-    let _e20 = local_4;
+    let _e20 = local_6;
     if _e20 {
         return 0f;
     }
@@ -425,20 +442,20 @@ fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec
     return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec));
 }
 
-fn candidate_weight(importance: f32, rt2_2: f32, d2_4: f32) -> f32 {
-    let _e3 = slc_weight(rt2_2, d2_4);
+fn candidate_weight(importance: f32, rt2_2: f32, d2_5: f32) -> f32 {
+    let _e3 = slc_weight(rt2_2, d2_5);
     return (importance * _e3);
 }
 
 fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_6: vec3<f32>, n_3: vec3<f32>, r_4: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
-    let v_6 = (p_6 - center_6);
+    let v_7 = (p_6 - center_6);
     if (lobe_6.y <= 0f) {
         let _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_6, v_6));
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_7, v_7));
         return _e19;
     }
     let _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3, r_4, lobe_6);
-    let _e22 = candidate_weight(_e20, rt2_3, dot(v_6, v_6));
+    let _e22 = candidate_weight(_e20, rt2_3, dot(v_7, v_7));
     return _e22;
 }
 
@@ -461,7 +478,7 @@ fn light_point(l_1: GpuLight, u1_: f32, u2_: f32) -> vec3<f32> {
     return l_1.p0_;
 }
 
-fn occluded(a_2: vec3<f32>, b_2: vec3<f32>) -> bool {
+fn occluded(a_3: vec3<f32>, b_2: vec3<f32>) -> bool {
     return false;
 }
 
@@ -482,31 +499,10 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_3: f32, v: vec3<f32>, d2_5: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    var local_5: bool;
-    var local_6: bool;
-
-    let vr = dot(v, r_5);
-    let h2_ = (d2_5 - (a_3 * a_3));
-    if !((h2_ <= 0f)) {
-        if (vr >= 0f) {
-            local_6 = ((vr * vr) >= h2_);
-        } else {
-            local_6 = false;
-        }
-        let _e20 = local_6;
-        local_5 = _e20;
-    } else {
-        local_5 = true;
-    }
-    let _e22 = local_5;
-    if _e22 {
-        return (rl_2.w * rl_2.w);
-    }
-    let c_3 = cross(v, r_5);
-    let cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_3, c_3)) * a_3)) / d2_5);
-    let _e36 = range_scale_at(rl_2, (cos_t_1 + 0.000002f));
-    return _e36;
+fn bsh_inner_scale(a_4: f32, v_1: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_1, d2_6, a_4, r_5);
+    let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
+    return _e8;
 }
 
 fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
@@ -528,10 +524,10 @@ fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
         return false;
     }
     let _e25 = bsh_range_bound(node_2);
-    let v_7 = (x_4 - node_2.center);
-    let d2_8 = dot(v_7, v_7);
+    let v_8 = (x_4 - node_2.center);
+    let d2_9 = dot(v_8, v_8);
     let reach_max = (node_2.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_8 > (reach_max * reach_max)) {
+    if (d2_9 > (reach_max * reach_max)) {
         return false;
     }
     if (node_2.child == BSH_NONE) {
@@ -540,11 +536,11 @@ fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
         let _e47 = sphere_contains_point(node_2.center, _e46, x_4);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_2.extent, -(v_7), d2_8, r_6, rl_3);
+    let _e50 = bsh_inner_scale(node_2.extent, -(v_8), d2_9, r_6, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if (d2_8 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_8 = (d2_8 <= (reach * reach));
+    if (d2_9 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_8 = (d2_9 <= (reach * reach));
     } else {
         local_8 = false;
     }
@@ -606,28 +602,28 @@ fn connect(li: u32, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_r
         return _e40;
     }
     let _e42 = c_1.y;
-    let v_8 = (x_6 - _e42);
-    let d2_9 = dot(v_8, v_8);
-    let _e49 = light_intensity(l_2, (v_8 / vec3(sqrt(d2_9))));
+    let v_9 = (x_6 - _e42);
+    let d2_10 = dot(v_9, v_9);
+    let _e49 = light_intensity(l_2, (v_9 / vec3(sqrt(d2_10))));
     let _e51 = c_1.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
     c_1.e = (_e49 * _e56);
     let _e58 = c_1;
     return _e58;
 }
 
 fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_4 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_5, c_4.center, c_4.radius, x_7, r_8);
+    let c_3 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_5, c_3.center, c_3.radius, x_7, r_8);
     return _e9;
 }
 
 fn light_weight(li_2: u32, x_8: vec3<f32>, n_5: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
-    let c_5 = light_cones[li_2];
+    let c_4 = light_cones[li_2];
     let _e15 = light_range_scale(li_2, x_8, r_9, rl_6);
     let _e18 = rt2_4[li_2];
-    let _e20 = cone_weight(c_5.center, c_5.radius, c_5.phi, c_5.axis, c_5.cos_o, c_5.cos_e, (_e15 * _e18), x_8, n_5, r_9, lobe_7);
+    let _e20 = cone_weight(c_4.center, c_4.radius, c_4.phi, c_4.axis, c_4.cos_o, c_4.cos_e, (_e15 * _e18), x_8, n_5, r_9, lobe_7);
     return _e20;
 }
 
@@ -715,7 +711,7 @@ fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32
 
 fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     let _e3 = textureLoad(depth_tex, texel, 0i);
-    let d_1 = _e3.x;
+    let d_2 = _e3.x;
     let _e7 = view.c0_;
     let _e10 = view.c1_;
     let _e13 = view.c2_;
@@ -723,7 +719,7 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     let _e23 = view.width;
     let _e27 = view.height;
     let _e31 = view.background;
-    let _e32 = unproject_pixel(_e7, _e10, _e13, _e16, f32(texel.x), f32(texel.y), f32(_e23), f32(_e27), d_1, _e31);
+    let _e32 = unproject_pixel(_e7, _e10, _e13, _e16, f32(texel.x), f32(texel.y), f32(_e23), f32(_e27), d_2, _e31);
     return _e32;
 }
 
@@ -738,8 +734,8 @@ fn shade_pick(li_3: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_11: vec3<f32>, rl_8:
     return _e21;
 }
 
-fn add(a_4: Shaded, b_4: Shaded) -> Shaded {
-    return Shaded((a_4.e + b_4.e), (a_4.diffuse + b_4.diffuse), (a_4.specular + b_4.specular));
+fn add(a_5: Shaded, b_4: Shaded) -> Shaded {
+    return Shaded((a_5.e + b_4.e), (a_5.diffuse + b_4.diffuse), (a_5.specular + b_4.specular));
 }
 
 @compute @workgroup_size(8, 8, 1) 

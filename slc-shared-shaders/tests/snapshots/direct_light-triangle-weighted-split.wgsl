@@ -192,8 +192,8 @@ fn slc_keep(r2_: f32, d2_1: f32) -> bool {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
-    let v_4 = (x_1 - c);
-    return (dot(v_4, v_4) <= (r_1 * r_1));
+    let v_5 = (x_1 - c);
+    return (dot(v_5, v_5) <= (r_1 * r_1));
 }
 
 fn inverse_square(d2_2: f32) -> f32 {
@@ -210,11 +210,11 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_2: bool;
     var local_3: bool;
 
-    let v_5 = (x_2 - y);
-    let d2_6 = dot(v_5, v_5);
-    let _e7 = slc_keep(r2_1, d2_6);
+    let v_6 = (x_2 - y);
+    let d2_7 = dot(v_6, v_6);
+    let _e7 = slc_keep(r2_1, d2_7);
     if !(!(_e7)) {
-        local_2 = !((d2_6 > 0f));
+        local_2 = !((d2_7 > 0f));
     } else {
         local_2 = true;
     }
@@ -222,7 +222,7 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_6 = (v_5 / vec3(sqrt(d2_6)));
+    let w_6 = (v_6 / vec3(sqrt(d2_7)));
     let cos_x_1 = -(dot(n, w_6));
     if !((cos_x_1 <= 0f)) {
         local_3 = (dot(ng, w_6) >= 0f);
@@ -457,11 +457,11 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
-    let v_6 = (p - center);
-    let dist2_1 = dot(v_6, v_6);
+    let v_7 = (p - center);
+    let dist2_1 = dot(v_7, v_7);
     let r2_4 = (radius * radius);
-    let d2_7 = max(max(dist2_1, r2_4), MIN_D2_);
-    let wi = select(vec3<f32>(0f, 0f, 0f), (v_6 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
+    let wi = select(vec3<f32>(0f, 0f, 0f), (v_7 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi);
     let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
     let _e26 = subtended_cos(dist2_1, r2_4);
@@ -470,7 +470,7 @@ fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: 
     let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
     let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
     let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4<f32>(_e37, d2_7, _e26, _e30);
+    return vec4<f32>(_e37, d2_8, _e26, _e30);
 }
 
 fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
@@ -481,18 +481,35 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
     return ((phi * _e7.x) / _e7.y);
 }
 
-fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d: vec3<f32>) -> f32 {
-    let v_7 = (center_2 - p_2);
-    let dist2_2 = dot(v_7, v_7);
-    if (dist2_2 <= (radius_2 * radius_2)) {
+fn cone_cos_of(v_3: vec3<f32>, d2_4: f32, a_3: f32, d: vec3<f32>) -> f32 {
+    var local_9: bool;
+    var local_10: bool;
+
+    let vd = dot(v_3, d);
+    let h2_ = (d2_4 - (a_3 * a_3));
+    if !((h2_ <= 0f)) {
+        if (vd >= 0f) {
+            local_10 = ((vd * vd) >= h2_);
+        } else {
+            local_10 = false;
+        }
+        let _e19 = local_10;
+        local_9 = _e19;
+    } else {
+        local_9 = true;
+    }
+    let _e21 = local_9;
+    if _e21 {
         return 1f;
     }
-    let dist = sqrt(dist2_2);
-    let c_7 = cross(v_7, d);
-    let sin_b_2 = (radius_2 / dist);
-    let _e20 = safe_sqrt((1f - (sin_b_2 * sin_b_2)));
-    let _e21 = cos_sub_clamped((sqrt(dot(c_7, c_7)) / dist), (dot(v_7, d) / dist), sin_b_2, _e20);
-    return _e21;
+    let c_7 = cross(v_3, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_3)) / d2_4), 1f);
+}
+
+fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
+    let v_8 = (center_2 - p_2);
+    let _e6 = cone_cos_of(v_8, dot(v_8, v_8), radius_2, d_1);
+    return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -518,9 +535,9 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_4, n_4) > 0f) {
-        let v_8 = (center_4 - p_4);
-        let dist2_3 = dot(v_8, v_8);
-        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_8 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_4);
+        let v_9 = (center_4 - p_4);
+        let dist2_2 = dot(v_9, v_9);
+        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_4);
         let _e33 = imp;
         let _e37 = safe_sqrt((1f - (cos_i * cos_i)));
         let _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -531,16 +548,16 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_5: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_9: bool;
+    var local_11: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_5);
     if !((_e10 <= 0f)) {
-        local_9 = (_e11 <= 0f);
+        local_11 = (_e11 <= 0f);
     } else {
-        local_9 = true;
+        local_11 = true;
     }
-    let _e20 = local_9;
+    let _e20 = local_11;
     if _e20 {
         return 0f;
     }
@@ -552,34 +569,34 @@ fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec
     return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec));
 }
 
-fn candidate_weight(importance: f32, rt2_2: f32, d2_4: f32) -> f32 {
-    let _e3 = slc_weight(rt2_2, d2_4);
+fn candidate_weight(importance: f32, rt2_2: f32, d2_5: f32) -> f32 {
+    let _e3 = slc_weight(rt2_2, d2_5);
     return (importance * _e3);
 }
 
 fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_6: vec3<f32>, n_6: vec3<f32>, r_4: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
-    let v_9 = (p_6 - center_6);
+    let v_10 = (p_6 - center_6);
     if (lobe_6.y <= 0f) {
         let _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_9, v_9));
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_10, v_10));
         return _e19;
     }
     let _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6, r_4, lobe_6);
-    let _e22 = candidate_weight(_e20, rt2_3, dot(v_9, v_9));
+    let _e22 = candidate_weight(_e20, rt2_3, dot(v_10, v_10));
     return _e22;
 }
 
-fn triangle_normal(a_3: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
-    var local_10: bool;
+fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
+    var local_12: bool;
 
-    let n_11 = cross((b_3 - a_3), (c_3 - a_3));
+    let n_11 = cross((b_3 - a_4), (c_3 - a_4));
     let l2_ = dot(n_11, n_11);
     if !(!((l2_ > 0f))) {
-        local_10 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_12 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_10 = true;
+        local_12 = true;
     }
-    let _e17 = local_10;
+    let _e17 = local_12;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -607,7 +624,7 @@ fn light_point(l_3: GpuLight, u1_1: f32, u2_1: f32) -> vec3<f32> {
     return l_3.p0_;
 }
 
-fn occluded(a_4: vec3<f32>, b_4: vec3<f32>) -> bool {
+fn occluded(a_5: vec3<f32>, b_4: vec3<f32>) -> bool {
     return false;
 }
 
@@ -628,31 +645,10 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_5: f32, v_3: vec3<f32>, d2_5: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    var local_11: bool;
-    var local_12: bool;
-
-    let vr = dot(v_3, r_5);
-    let h2_ = (d2_5 - (a_5 * a_5));
-    if !((h2_ <= 0f)) {
-        if (vr >= 0f) {
-            local_12 = ((vr * vr) >= h2_);
-        } else {
-            local_12 = false;
-        }
-        let _e20 = local_12;
-        local_11 = _e20;
-    } else {
-        local_11 = true;
-    }
-    let _e22 = local_11;
-    if _e22 {
-        return (rl_2.w * rl_2.w);
-    }
-    let c_8 = cross(v_3, r_5);
-    let cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_5)) / d2_5);
-    let _e36 = range_scale_at(rl_2, (cos_t_1 + 0.000002f));
-    return _e36;
+fn bsh_inner_scale(a_6: f32, v_4: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_4, d2_6, a_6, r_5);
+    let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
+    return _e8;
 }
 
 fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
@@ -674,10 +670,10 @@ fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
         return false;
     }
     let _e25 = bsh_range_bound(node_2);
-    let v_10 = (x_4 - node_2.center);
-    let d2_8 = dot(v_10, v_10);
+    let v_11 = (x_4 - node_2.center);
+    let d2_9 = dot(v_11, v_11);
     let reach_max = (node_2.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_8 > (reach_max * reach_max)) {
+    if (d2_9 > (reach_max * reach_max)) {
         return false;
     }
     if (node_2.child == BSH_NONE) {
@@ -686,11 +682,11 @@ fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
         let _e47 = sphere_contains_point(node_2.center, _e46, x_4);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_2.extent, -(v_10), d2_8, r_6, rl_3);
+    let _e50 = bsh_inner_scale(node_2.extent, -(v_11), d2_9, r_6, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if (d2_8 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_14 = (d2_8 <= (reach * reach));
+    if (d2_9 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_14 = (d2_9 <= (reach * reach));
     } else {
         local_14 = false;
     }
@@ -752,28 +748,28 @@ fn connect(li: u32, x_6: vec3<f32>, n_7: vec3<f32>, ng_1: vec3<f32>, s: f32, w_r
         return _e40;
     }
     let _e42 = c_4.y;
-    let v_11 = (x_6 - _e42);
-    let d2_9 = dot(v_11, v_11);
-    let _e49 = light_intensity(l_4, (v_11 / vec3(sqrt(d2_9))));
+    let v_12 = (x_6 - _e42);
+    let d2_10 = dot(v_12, v_12);
+    let _e49 = light_intensity(l_4, (v_12 / vec3(sqrt(d2_10))));
     let _e51 = c_4.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     let _e58 = c_4;
     return _e58;
 }
 
 fn light_range_scale(li_1: u32, x_7: vec3<f32>, r_8: vec3<f32>, rl_5: vec4<f32>) -> f32 {
-    let c_9 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_7, r_8);
+    let c_8 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_5, c_8.center, c_8.radius, x_7, r_8);
     return _e9;
 }
 
 fn light_weight(li_2: u32, x_8: vec3<f32>, n_8: vec3<f32>, r_9: vec3<f32>, lobe_7: vec4<f32>, rl_6: vec4<f32>) -> f32 {
-    let c_10 = light_cones[li_2];
+    let c_9 = light_cones[li_2];
     let _e15 = light_range_scale(li_2, x_8, r_9, rl_6);
     let _e18 = rt2_4[li_2];
-    let _e20 = cone_weight(c_10.center, c_10.radius, c_10.phi, c_10.axis, c_10.cos_o, c_10.cos_e, (_e15 * _e18), x_8, n_8, r_9, lobe_7);
+    let _e20 = cone_weight(c_9.center, c_9.radius, c_9.phi, c_9.axis, c_9.cos_o, c_9.cos_e, (_e15 * _e18), x_8, n_8, r_9, lobe_7);
     return _e20;
 }
 
@@ -875,8 +871,8 @@ fn shade_pick(li_3: u32, x_10: vec3<f32>, n_10: vec3<f32>, r_11: vec3<f32>, rl_8
     return _e55;
 }
 
-fn add(a_6: Shaded, b_6: Shaded) -> Shaded {
-    return Shaded((a_6.e + b_6.e), (a_6.diffuse + b_6.diffuse), (a_6.specular + b_6.specular));
+fn add(a_7: Shaded, b_6: Shaded) -> Shaded {
+    return Shaded((a_7.e + b_6.e), (a_7.diffuse + b_6.diffuse), (a_7.specular + b_6.specular));
 }
 
 @compute @workgroup_size(8, 8, 1) 

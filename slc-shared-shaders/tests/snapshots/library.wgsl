@@ -220,14 +220,14 @@ fn windowed_falloff(d2_4: f32, range2_1: f32) -> f32 {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_5: vec3<f32>) -> bool {
-    let v_13 = (x_5 - c);
-    return (dot(v_13, v_13) <= (r * r));
+    let v_14 = (x_5 - c);
+    return (dot(v_14, v_14) <= (r * r));
 }
 
 fn sphere_overlaps_sphere(c1_: vec3<f32>, r1_: f32, c2_: vec3<f32>, r2_2: f32) -> bool {
-    let v_14 = (c2_ - c1_);
+    let v_15 = (c2_ - c1_);
     let r_9 = (r1_ + r2_2);
-    return (dot(v_14, v_14) <= (r_9 * r_9));
+    return (dot(v_15, v_15) <= (r_9 * r_9));
 }
 
 fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
@@ -237,18 +237,18 @@ fn sphere_pad(r_1: f32, c_1: vec3<f32>) -> f32 {
 fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<f32> {
     var local: bool;
 
-    let v_15 = (c2_1 - c1_1);
-    let d_9 = sqrt(dot(v_15, v_15));
+    let v_16 = (c2_1 - c1_1);
+    let d_10 = sqrt(dot(v_16, v_16));
     let _e8 = sphere_pad(r1_1, c1_1);
-    if (r1_1 >= ((d_9 + r2_3) + _e8)) {
+    if (r1_1 >= ((d_10 + r2_3) + _e8)) {
         return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, r1_1);
     }
     let _e16 = sphere_pad(r2_3, c2_1);
-    if (r2_3 >= ((d_9 + r1_1) + _e16)) {
+    if (r2_3 >= ((d_10 + r1_1) + _e16)) {
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, r2_3);
     }
-    if !((d_9 >= SPHERE_HUGE)) {
-        local = ((0.5f * ((d_9 + r1_1) + r2_3)) >= SPHERE_HUGE);
+    if !((d_10 >= SPHERE_HUGE)) {
+        local = ((0.5f * ((d_10 + r1_1) + r2_3)) >= SPHERE_HUGE);
     } else {
         local = true;
     }
@@ -256,18 +256,18 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
     if _e35 {
         return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, SPHERE_HUGE);
     }
-    if (abs((r1_1 - r2_3)) >= d_9) {
+    if (abs((r1_1 - r2_3)) >= d_10) {
         if (r1_1 >= r2_3) {
-            let rn = max(r1_1, (d_9 + r2_3));
+            let rn = max(r1_1, (d_10 + r2_3));
             let _e50 = sphere_pad(rn, c1_1);
             return vec4<f32>(c1_1.x, c1_1.y, c1_1.z, (rn + _e50));
         }
-        let rm = max(r2_3, (d_9 + r1_1));
+        let rm = max(r2_3, (d_10 + r1_1));
         let _e58 = sphere_pad(rm, c2_1);
         return vec4<f32>(c2_1.x, c2_1.y, c2_1.z, (rm + _e58));
     }
-    let r0_ = (0.5f * ((d_9 + r1_1) + r2_3));
-    let c_13 = (c1_1 + (v_15 * ((r0_ - r1_1) / d_9)));
+    let r0_ = (0.5f * ((d_10 + r1_1) + r2_3));
+    let c_13 = (c1_1 + (v_16 * ((r0_ - r1_1) / d_10)));
     let e1_ = (c_13 - c1_1);
     let e2_ = (c_13 - c2_1);
     let r_10 = max(r0_, max((sqrt(dot(e1_, e1_)) + r1_1), (sqrt(dot(e2_, e2_)) + r2_3)));
@@ -277,8 +277,8 @@ fn sphere_union(c1_1: vec3<f32>, r1_1: f32, c2_1: vec3<f32>, r2_3: f32) -> vec4<
 
 fn sphere_overlaps_aabb(c_2: vec3<f32>, r_2: f32, bmin: vec3<f32>, bmax: vec3<f32>) -> bool {
     let q_4 = clamp(c_2, bmin, bmax);
-    let v_16 = (q_4 - c_2);
-    return (dot(v_16, v_16) <= (r_2 * r_2));
+    let v_17 = (q_4 - c_2);
+    return (dot(v_17, v_17) <= (r_2 * r_2));
 }
 
 fn vpl_rt2_(flux: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32) -> f32 {
@@ -305,11 +305,11 @@ fn connection_cosine(x_6: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_1: bool;
     var local_2: bool;
 
-    let v_17 = (x_6 - y);
-    let d2_16 = dot(v_17, v_17);
-    let _e7 = slc_keep(r2_5, d2_16);
+    let v_18 = (x_6 - y);
+    let d2_17 = dot(v_18, v_18);
+    let _e7 = slc_keep(r2_5, d2_17);
     if !(!(_e7)) {
-        local_1 = !((d2_16 > 0f));
+        local_1 = !((d2_17 > 0f));
     } else {
         local_1 = true;
     }
@@ -317,7 +317,7 @@ fn connection_cosine(x_6: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_13 = (v_17 / vec3(sqrt(d2_16)));
+    let w_13 = (v_18 / vec3(sqrt(d2_17)));
     let cos_x_1 = -(dot(n, w_13));
     if !((cos_x_1 <= 0f)) {
         local_2 = (dot(ng, w_13) >= 0f);
@@ -371,15 +371,15 @@ fn atan_portable(x_7: f32) -> f32 {
     var base: f32 = 0f;
     var t: f32;
 
-    let a_9 = abs(x_7);
-    t = a_9;
-    if (a_9 > 2.4142137f) {
+    let a_10 = abs(x_7);
+    t = a_10;
+    if (a_10 > 2.4142137f) {
         base = 1.5707964f;
-        t = (-1f / a_9);
+        t = (-1f / a_10);
     } else {
-        if (a_9 > 0.41421357f) {
+        if (a_10 > 0.41421357f) {
             base = 0.7853982f;
-            t = ((a_9 - 1f) / (a_9 + 1f));
+            t = ((a_10 - 1f) / (a_10 + 1f));
         }
     }
     let _e18 = t;
@@ -535,11 +535,11 @@ fn ies_candela(tab_2: u32, base_1: u32, gamma: f32, c_5: f32) -> f32 {
     let _e54 = ies_lerp_t(_e51, _e53, _e32);
     let _e58 = at(tab_2, ((c0_2 + (_e34 * _e5)) + _e33));
     let _e65 = at(tab_2, ((c0_2 + (_e34 * _e5)) + iv1_));
-    let a_10 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
+    let a_11 = ((_e58 * (1f - _e49)) + (_e65 * _e49));
     let _e71 = at(tab_2, ((c0_2 + (ih1_ * _e5)) + _e33));
     let _e78 = at(tab_2, ((c0_2 + (ih1_ * _e5)) + iv1_));
     let b_7 = ((_e71 * (1f - _e49)) + (_e78 * _e49));
-    return ((a_10 * (1f - _e54)) + (b_7 * _e54));
+    return ((a_11 * (1f - _e54)) + (b_7 * _e54));
 }
 
 fn ies_candela_dir(tab_3: u32, base_2: u32, wn: f32, wr: f32, ws: f32) -> f32 {
@@ -709,14 +709,14 @@ fn cosine_pdf(cos_theta_1: f32) -> f32 {
 
 fn onb_tangent(n_9: vec3<f32>) -> vec3<f32> {
     let s_2 = select(-1f, 1f, (n_9.z >= 0f));
-    let a_11 = (-1f / (s_2 + n_9.z));
-    return vec3<f32>((1f + (((s_2 * n_9.x) * n_9.x) * a_11)), (((s_2 * n_9.x) * n_9.y) * a_11), (-(s_2) * n_9.x));
+    let a_12 = (-1f / (s_2 + n_9.z));
+    return vec3<f32>((1f + (((s_2 * n_9.x) * n_9.x) * a_12)), (((s_2 * n_9.x) * n_9.y) * a_12), (-(s_2) * n_9.x));
 }
 
 fn onb_bitangent(n_10: vec3<f32>) -> vec3<f32> {
     let s_3 = select(-1f, 1f, (n_10.z >= 0f));
-    let a_12 = (-1f / (s_3 + n_10.z));
-    return vec3<f32>(((n_10.x * n_10.y) * a_12), (s_3 + ((n_10.y * n_10.y) * a_12)), -(n_10.y));
+    let a_13 = (-1f / (s_3 + n_10.z));
+    return vec3<f32>(((n_10.x * n_10.y) * a_13), (s_3 + ((n_10.y * n_10.y) * a_13)), -(n_10.y));
 }
 
 fn onb_to_world(n_11: vec3<f32>, d: vec3<f32>) -> vec3<f32> {
@@ -928,9 +928,9 @@ fn mirror_dir(n_17: vec3<f32>, v_7: vec3<f32>) -> vec3<f32> {
 }
 
 fn bounded_vndf_k(wi: vec3<f32>, alpha_7: f32) -> f32 {
-    let a_13 = saturate(alpha_7);
+    let a_14 = saturate(alpha_7);
     let s_4 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    let a2_3 = (a_13 * a_13);
+    let a2_3 = (a_14 * a_14);
     let s2_ = (s_4 * s_4);
     return (((1f - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
@@ -1059,11 +1059,11 @@ fn subtended_cos(dist2_: f32, r2_6: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
-    let v_18 = (p - center);
-    let dist2_1 = dot(v_18, v_18);
+    let v_19 = (p - center);
+    let dist2_1 = dot(v_19, v_19);
     let r2_11 = (radius * radius);
-    let d2_17 = max(max(dist2_1, r2_11), MIN_D2_);
-    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_18 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let d2_18 = max(max(dist2_1, r2_11), MIN_D2_);
+    let wi_3 = select(vec3<f32>(0f, 0f, 0f), (v_19 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_3);
     let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
     let _e26 = subtended_cos(dist2_1, r2_11);
@@ -1072,7 +1072,7 @@ fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: 
     let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
     let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
     let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4<f32>(_e37, d2_17, _e26, _e30);
+    return vec4<f32>(_e37, d2_18, _e26, _e30);
 }
 
 fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
@@ -1083,18 +1083,35 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
     return ((phi * _e7.x) / _e7.y);
 }
 
-fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_19 = (center_2 - p_2);
-    let dist2_2 = dot(v_19, v_19);
-    if (dist2_2 <= (radius_2 * radius_2)) {
+fn cone_cos_of(v_11: vec3<f32>, d2_9: f32, a_5: f32, d_1: vec3<f32>) -> f32 {
+    var local_13: bool;
+    var local_14: bool;
+
+    let vd = dot(v_11, d_1);
+    let h2_ = (d2_9 - (a_5 * a_5));
+    if !((h2_ <= 0f)) {
+        if (vd >= 0f) {
+            local_14 = ((vd * vd) >= h2_);
+        } else {
+            local_14 = false;
+        }
+        let _e19 = local_14;
+        local_13 = _e19;
+    } else {
+        local_13 = true;
+    }
+    let _e21 = local_13;
+    if _e21 {
         return 1f;
     }
-    let dist = sqrt(dist2_2);
-    let c_18 = cross(v_19, d_1);
-    let sin_b_2 = (radius_2 / dist);
-    let _e20 = safe_sqrt((1f - (sin_b_2 * sin_b_2)));
-    let _e21 = cos_sub_clamped((sqrt(dot(c_18, c_18)) / dist), (dot(v_19, d_1) / dist), sin_b_2, _e20);
-    return _e21;
+    let c_18 = cross(v_11, d_1);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_18, c_18)) * a_5)) / d2_9), 1f);
+}
+
+fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_2: vec3<f32>) -> f32 {
+    let v_20 = (center_2 - p_2);
+    let _e6 = cone_cos_of(v_20, dot(v_20, v_20), radius_2, d_2);
+    return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -1120,9 +1137,9 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_21, n_21) > 0f) {
-        let v_20 = (center_4 - p_4);
-        let dist2_3 = dot(v_20, v_20);
-        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_20 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_21);
+        let v_21 = (center_4 - p_4);
+        let dist2_2 = dot(v_21, v_21);
+        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_21 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_21);
         let _e33 = imp;
         let _e37 = safe_sqrt((1f - (cos_i * cos_i)));
         let _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -1133,16 +1150,16 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_22: vec3<f32>, r_6: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_13: bool;
+    var local_15: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_22);
     if !((_e10 <= 0f)) {
-        local_13 = (_e11 <= 0f);
+        local_15 = (_e11 <= 0f);
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    let _e20 = local_13;
+    let _e20 = local_15;
     if _e20 {
         return 0f;
     }
@@ -1163,20 +1180,20 @@ fn receiver_importance(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: v
     return _e14;
 }
 
-fn candidate_weight(importance: f32, rt2_5: f32, d2_9: f32) -> f32 {
-    let _e3 = slc_weight(rt2_5, d2_9);
+fn candidate_weight(importance: f32, rt2_5: f32, d2_10: f32) -> f32 {
+    let _e3 = slc_weight(rt2_5, d2_10);
     return (importance * _e3);
 }
 
 fn cone_weight(center_7: vec3<f32>, radius_7: f32, phi_4: f32, axis_5: vec3<f32>, cos_o_5: f32, cos_e_4: f32, rt2_6: f32, p_7: vec3<f32>, n_24: vec3<f32>, r_8: vec3<f32>, lobe_7: vec4<f32>) -> f32 {
-    let v_21 = (p_7 - center_7);
+    let v_22 = (p_7 - center_7);
     if (lobe_7.y <= 0f) {
         let _e15 = light_importance(center_7, radius_7, phi_4, axis_5, cos_o_5, cos_e_4, p_7, n_24);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_21, v_21));
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_6, dot(v_22, v_22));
         return _e19;
     }
     let _e20 = glossy_importance(center_7, radius_7, phi_4, axis_5, cos_o_5, cos_e_4, p_7, n_24, r_8, lobe_7);
-    let _e22 = candidate_weight(_e20, rt2_6, dot(v_21, v_21));
+    let _e22 = candidate_weight(_e20, rt2_6, dot(v_22, v_22));
     return _e22;
 }
 
@@ -1220,10 +1237,10 @@ fn ray_inverse(x_12: f32) -> f32 {
     return (1f / select(x_12, 0.000000000000000000000000000001f, (abs(x_12) < 0.000000000000000000000000000001f)));
 }
 
-fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
-    let _e2 = ray_inverse(d_2.x);
-    let _e4 = ray_inverse(d_2.y);
-    let _e6 = ray_inverse(d_2.z);
+fn ray_inverse3_(d_3: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d_3.x);
+    let _e4 = ray_inverse(d_3.y);
+    let _e6 = ray_inverse(d_3.z);
     return vec3<f32>(_e2, _e4, _e6);
 }
 
@@ -1240,17 +1257,17 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
     return -1f;
 }
 
-fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> {
-    var local_14: bool;
+fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> {
+    var local_16: bool;
 
-    let n_37 = cross((b_4 - a_5), (c_7 - a_5));
+    let n_37 = cross((b_4 - a_6), (c_7 - a_6));
     let l2_ = dot(n_37, n_37);
     if !(!((l2_ > 0f))) {
-        local_14 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    let _e17 = local_14;
+    let _e17 = local_16;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -1261,10 +1278,10 @@ fn face_against(n_25: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
     return select(n_25, -(n_25), (dot(n_25, dir) > 0f));
 }
 
-fn barycentric(p_8: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -> vec3<f32> {
-    let e1_1 = (b_5 - a_6);
-    let e2_1 = (c_8 - a_6);
-    let q_5 = (p_8 - a_6);
+fn barycentric(p_8: vec3<f32>, a_7: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -> vec3<f32> {
+    let e1_1 = (b_5 - a_7);
+    let e2_1 = (c_8 - a_7);
+    let q_5 = (p_8 - a_7);
     let d11_ = dot(e1_1, e1_1);
     let d12_ = dot(e1_1, e2_1);
     let d22_ = dot(e2_1, e2_1);
@@ -1278,16 +1295,16 @@ fn barycentric(p_8: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -
 }
 
 fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
-    var local_15: bool;
+    var local_17: bool;
 
     let s_6 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
     let l2_1 = dot(s_6, s_6);
     if !(!((l2_1 > 0.000000000001f))) {
-        local_15 = !((l2_1 < 300000000000000000000000000000000000000f));
+        local_17 = !((l2_1 < 300000000000000000000000000000000000000f));
     } else {
-        local_15 = true;
+        local_17 = true;
     }
-    let _e24 = local_15;
+    let _e24 = local_17;
     if _e24 {
         return facing;
     }
@@ -1295,48 +1312,48 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>
     return select(n_38, -(n_38), (dot(n_38, facing) < 0f));
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_7: vec3<f32>, b_6: vec3<f32>, c_9: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_16: bool;
-    var local_17: bool;
+fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_8: vec3<f32>, b_6: vec3<f32>, c_9: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
     var local_18: bool;
+    var local_19: bool;
+    var local_20: bool;
 
-    let e1_2 = (b_6 - a_7);
-    let e2_2 = (c_9 - a_7);
-    let p_12 = cross(d_3, e2_2);
+    let e1_2 = (b_6 - a_8);
+    let e2_2 = (c_9 - a_8);
+    let p_12 = cross(d_4, e2_2);
     let det = dot(e1_2, p_12);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv_1 = (1f / det);
-    let s_7 = (o_1 - a_7);
+    let s_7 = (o_1 - a_8);
     let u_7 = (dot(s_7, p_12) * inv_1);
     if !((u_7 < 0f)) {
-        local_16 = (u_7 > 1f);
+        local_18 = (u_7 > 1f);
     } else {
-        local_16 = true;
+        local_18 = true;
     }
-    let _e28 = local_16;
+    let _e28 = local_18;
     if _e28 {
         return -1f;
     }
     let q_6 = cross(s_7, e1_2);
-    let v_22 = (dot(d_3, q_6) * inv_1);
-    if !((v_22 < 0f)) {
-        local_17 = ((u_7 + v_22) > 1f);
+    let v_23 = (dot(d_4, q_6) * inv_1);
+    if !((v_23 < 0f)) {
+        local_19 = ((u_7 + v_23) > 1f);
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    let _e42 = local_17;
+    let _e42 = local_19;
     if _e42 {
         return -1f;
     }
     let t_6 = (dot(e2_2, q_6) * inv_1);
     if (t_6 > t_min) {
-        local_18 = (t_6 < t_max_1);
+        local_20 = (t_6 < t_max_1);
     } else {
-        local_18 = false;
+        local_20 = false;
     }
-    let _e51 = local_18;
+    let _e51 = local_20;
     if _e51 {
         return t_6;
     }
@@ -1376,8 +1393,8 @@ fn bilateral_weight(n_26: vec3<f32>, nj: vec3<f32>, z_1: f32, zj: f32, inv_sz: f
     let dn2_ = (dn * dn);
     let dn4_ = (dn2_ * dn2_);
     let dn8_ = (dn4_ * dn4_);
-    let d_10 = ((zj - z_1) * inv_sz);
-    let t_7 = max((1f - (d_10 * d_10)), 0f);
+    let d_11 = ((zj - z_1) * inv_sz);
+    let t_7 = max((1f - (d_11 * d_11)), 0f);
     return (((dn8_ * dn8_) * t_7) * t_7);
 }
 
@@ -1414,29 +1431,29 @@ fn near_block_ty(q_1: u32, size_5: u32) -> u32 {
     return ((((q_1 / NEAR_BLOCK) / (size_5 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
 }
 
-fn vpl_near_weight(d2_10: f32, near_r2_: f32) -> f32 {
+fn vpl_near_weight(d2_11: f32, near_r2_: f32) -> f32 {
     if (near_r2_ <= 0f) {
         return 0f;
     }
-    let t_8 = clamp(((near_r2_ - d2_10) / (0.75f * near_r2_)), 0f, 1f);
+    let t_8 = clamp(((near_r2_ - d2_11) / (0.75f * near_r2_)), 0f, 1f);
     return ((t_8 * t_8) * (3f - (2f * t_8)));
 }
 
-fn vpl_far_weight(d2_11: f32, near_r2_1: f32) -> f32 {
-    let _e2 = vpl_near_weight(d2_11, near_r2_1);
+fn vpl_far_weight(d2_12: f32, near_r2_1: f32) -> f32 {
+    let _e2 = vpl_near_weight(d2_12, near_r2_1);
     return (1f - _e2);
 }
 
-fn vpl_far_slc_share(rt2_7: f32, r2_7: f32, d2_12: f32, near_r2_2: f32) -> f32 {
-    let _e4 = vpl_far_weight(d2_12, near_r2_2);
-    let _e5 = slc_weight(rt2_7, d2_12);
-    let _e7 = slc_keep(r2_7, d2_12);
+fn vpl_far_slc_share(rt2_7: f32, r2_7: f32, d2_13: f32, near_r2_2: f32) -> f32 {
+    let _e4 = vpl_far_weight(d2_13, near_r2_2);
+    let _e5 = slc_weight(rt2_7, d2_13);
+    let _e7 = slc_keep(r2_7, d2_13);
     return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
 }
 
-fn vpl_far_fixed_share(range2_2: f32, d2_13: f32, near_r2_3: f32) -> f32 {
-    let _e3 = vpl_far_weight(d2_13, near_r2_3);
-    let _e4 = clamp_keep(range2_2, d2_13);
+fn vpl_far_fixed_share(range2_2: f32, d2_14: f32, near_r2_3: f32) -> f32 {
+    let _e3 = vpl_far_weight(d2_14, near_r2_3);
+    let _e4 = clamp_keep(range2_2, d2_14);
     return select(0f, _e3, (_e4 & (_e3 > 0f)));
 }
 
@@ -1449,16 +1466,16 @@ fn vpl_near_cull_range2_(r2_9: f32, near_r2_4: f32) -> f32 {
     return min(r2_9, near_r2_4);
 }
 
-fn vpl_near_slc_share(rt2_8: f32, r2_10: f32, d2_14: f32, near_r2_5: f32) -> f32 {
-    let _e4 = vpl_near_weight(d2_14, near_r2_5);
-    let _e5 = slc_weight(rt2_8, d2_14);
-    let _e7 = slc_keep(r2_10, d2_14);
+fn vpl_near_slc_share(rt2_8: f32, r2_10: f32, d2_15: f32, near_r2_5: f32) -> f32 {
+    let _e4 = vpl_near_weight(d2_15, near_r2_5);
+    let _e5 = slc_weight(rt2_8, d2_15);
+    let _e7 = slc_keep(r2_10, d2_15);
     return select(0f, (_e4 * _e5), (_e7 & (_e4 > 0f)));
 }
 
-fn vpl_near_fixed_share(range2_3: f32, d2_15: f32, near_r2_6: f32) -> f32 {
-    let _e3 = vpl_near_weight(d2_15, near_r2_6);
-    let _e4 = clamp_keep(range2_3, d2_15);
+fn vpl_near_fixed_share(range2_3: f32, d2_16: f32, near_r2_6: f32) -> f32 {
+    let _e3 = vpl_near_weight(d2_16, near_r2_6);
+    let _e4 = clamp_keep(range2_3, d2_16);
     return select(0f, _e3, (_e4 & (_e3 > 0f)));
 }
 
@@ -1482,33 +1499,33 @@ fn sees_emission(gn: vec3<f32>, dir_1: vec3<f32>) -> bool {
 }
 
 fn continues_path(nd: vec3<f32>, n_27: vec3<f32>, ng_1: vec3<f32>) -> bool {
-    var local_19: bool;
-
-    if (dot(nd, n_27) > 0f) {
-        local_19 = (dot(nd, ng_1) > 0f);
-    } else {
-        local_19 = false;
-    }
-    let _e12 = local_19;
-    return _e12;
-}
-
-fn finite3_(v_11: vec3<f32>) -> bool {
-    var local_20: bool;
     var local_21: bool;
 
-    if (abs(v_11.x) <= F32_MAX) {
-        local_20 = (abs(v_11.y) <= F32_MAX);
-    } else {
-        local_20 = false;
-    }
-    let _e12 = local_20;
-    if _e12 {
-        local_21 = (abs(v_11.z) <= F32_MAX);
+    if (dot(nd, n_27) > 0f) {
+        local_21 = (dot(nd, ng_1) > 0f);
     } else {
         local_21 = false;
     }
-    let _e20 = local_21;
+    let _e12 = local_21;
+    return _e12;
+}
+
+fn finite3_(v_12: vec3<f32>) -> bool {
+    var local_22: bool;
+    var local_23: bool;
+
+    if (abs(v_12.x) <= F32_MAX) {
+        local_22 = (abs(v_12.y) <= F32_MAX);
+    } else {
+        local_22 = false;
+    }
+    let _e12 = local_22;
+    if _e12 {
+        local_23 = (abs(v_12.z) <= F32_MAX);
+    } else {
+        local_23 = false;
+    }
+    let _e20 = local_23;
     return _e20;
 }
 
@@ -1522,10 +1539,10 @@ fn light_map_coord(t_1: u32, size_6: u32) -> f32 {
     return (((2f * (_e2 + 0.5f)) / _e7) - 1f);
 }
 
-fn light_map_texel(a_8: f32, size_7: u32) -> u32 {
+fn light_map_texel(a_9: f32, size_7: u32) -> u32 {
     let _e6 = to_f32_(size_7);
     let _e9 = to_f32_(size_7);
-    let _e14 = to_u32_(clamp(floor((((a_8 + 1f) * 0.5f) * _e6)), 0f, (_e9 - 1f)));
+    let _e14 = to_u32_(clamp(floor((((a_9 + 1f) * 0.5f) * _e6)), 0f, (_e9 - 1f)));
     return _e14;
 }
 
@@ -1534,8 +1551,8 @@ fn light_map_coord_at(rel: vec3<f32>, dir_2: vec3<f32>, axis_6: vec3<f32>, exten
 }
 
 fn display_encode(x_16: f32) -> f32 {
-    let v_23 = max(x_16, 0f);
-    let t_9 = ((2f * v_23) / (1f + (2f * v_23)));
+    let v_24 = max(x_16, 0f);
+    let t_9 = ((2f * v_24) / (1f + (2f * v_24)));
     return select(((1.055f * pow(t_9, 0.41666666f)) - 0.055f), (12.92f * t_9), (t_9 <= 0.0031308f));
 }
 
@@ -1547,10 +1564,10 @@ fn rsm_texel_solid_angle(texel_area: f32, cos_axis: f32) -> f32 {
     return (((texel_area * cos_axis) * cos_axis) * cos_axis);
 }
 
-fn point_irradiance(intensity_1: vec3<f32>, n_28: vec3<f32>, v_12: vec3<f32>) -> vec3<f32> {
-    let d2_18 = dot(v_12, v_12);
-    let cos_x_2 = (dot(n_28, v_12) / sqrt(max(d2_18, MIN_D2_)));
-    let _e11 = inverse_square(d2_18);
+fn point_irradiance(intensity_1: vec3<f32>, n_28: vec3<f32>, v_13: vec3<f32>) -> vec3<f32> {
+    let d2_19 = dot(v_13, v_13);
+    let cos_x_2 = (dot(n_28, v_13) / sqrt(max(d2_19, MIN_D2_)));
+    let _e11 = inverse_square(d2_19);
     return (intensity_1 * (max(cos_x_2, 0f) * _e11));
 }
 
@@ -1558,8 +1575,8 @@ fn directional_irradiance(e_1: vec3<f32>, n_29: vec3<f32>, to_light: vec3<f32>) 
     return (e_1 * max(dot(n_29, to_light), 0f));
 }
 
-fn perspective_texel_width(extent_3: f32, d_4: f32, z_2: f32, size_8: f32) -> f32 {
-    return ((((2f * extent_3) * d_4) * d_4) / (size_8 * z_2));
+fn perspective_texel_width(extent_3: f32, d_5: f32, z_2: f32, size_8: f32) -> f32 {
+    return ((((2f * extent_3) * d_5) * d_5) / (size_8 * z_2));
 }
 
 fn ortho_texel_width(extent_4: f32, size_9: f32) -> f32 {
@@ -1571,15 +1588,15 @@ fn shadow_bias(texel: f32, cos_light_1: f32) -> f32 {
     return (texel * (1.5f + (sqrt((1f - (c_19 * c_19))) / c_19)));
 }
 
-fn shadow_lit(d_5: f32, d_map: f32, bias: f32) -> bool {
-    var local_22: bool;
+fn shadow_lit(d_6: f32, d_map: f32, bias: f32) -> bool {
+    var local_24: bool;
 
     if !((d_map <= 0f)) {
-        local_22 = (d_5 <= (d_map + bias));
+        local_24 = (d_6 <= (d_map + bias));
     } else {
-        local_22 = true;
+        local_24 = true;
     }
-    let _e11 = local_22;
+    let _e11 = local_24;
     return _e11;
 }
 
@@ -1588,18 +1605,18 @@ fn diffuse_radiance(albedo: vec3<f32>, emission: vec3<f32>, e_2: vec3<f32>) -> v
 }
 
 fn primary_light_dir(x_17: vec3<f32>, origin: vec3<f32>, axis_8: vec3<f32>, perspective_2: bool) -> vec3<f32> {
-    var local_23: bool;
+    var local_25: bool;
 
-    let v_24 = (origin - x_17);
-    let d2_19 = dot(v_24, v_24);
+    let v_25 = (origin - x_17);
+    let d2_20 = dot(v_25, v_25);
     if perspective_2 {
-        local_23 = (d2_19 > 0f);
+        local_25 = (d2_20 > 0f);
     } else {
-        local_23 = false;
+        local_25 = false;
     }
-    let _e11 = local_23;
+    let _e11 = local_25;
     if _e11 {
-        return (v_24 / vec3(sqrt(d2_19)));
+        return (v_25 / vec3(sqrt(d2_20)));
     }
     return -(axis_8);
 }
@@ -1634,10 +1651,10 @@ fn bilinear_weight(fx: f32, fy: f32, dx: u32, dy: u32) -> f32 {
 }
 
 fn history_tap(q_2: vec3<f32>, k_5: u32, width_2: f32, height_2: f32) -> vec4<f32> {
-    var local_24: bool;
-    var local_25: bool;
     var local_26: bool;
     var local_27: bool;
+    var local_28: bool;
+    var local_29: bool;
 
     let x0_ = floor(q_2.x);
     let y0_ = floor(q_2.y);
@@ -1648,29 +1665,29 @@ fn history_tap(q_2: vec3<f32>, k_5: u32, width_2: f32, height_2: f32) -> vec4<f3
     let _e14 = to_f32_(dy_1);
     let ty_2 = (y0_ + _e14);
     if (q_2.z > 0f) {
-        local_24 = (tx_2 >= 0f);
-    } else {
-        local_24 = false;
-    }
-    let _e24 = local_24;
-    if _e24 {
-        local_25 = (ty_2 >= 0f);
-    } else {
-        local_25 = false;
-    }
-    let _e30 = local_25;
-    if _e30 {
-        local_26 = (tx_2 < width_2);
+        local_26 = (tx_2 >= 0f);
     } else {
         local_26 = false;
     }
-    let _e35 = local_26;
-    if _e35 {
-        local_27 = (ty_2 < height_2);
+    let _e24 = local_26;
+    if _e24 {
+        local_27 = (ty_2 >= 0f);
     } else {
         local_27 = false;
     }
-    let inside = local_27;
+    let _e30 = local_27;
+    if _e30 {
+        local_28 = (tx_2 < width_2);
+    } else {
+        local_28 = false;
+    }
+    let _e35 = local_28;
+    if _e35 {
+        local_29 = (ty_2 < height_2);
+    } else {
+        local_29 = false;
+    }
+    let inside = local_29;
     let _e45 = bilinear_weight((q_2.x - x0_), (q_2.y - y0_), dx_1, dy_1);
     return vec4<f32>(tx_2, ty_2, _e45, select(0f, 1f, inside));
 }
@@ -1682,15 +1699,15 @@ fn history_mean(sum_1: vec4<f32>, weight_1: f32) -> vec4<f32> {
     return (sum_1 / vec4(weight_1));
 }
 
-fn history_matches(n_30: vec3<f32>, nh: vec3<f32>, p_10: vec3<f32>, oh: f32, d_6: f32) -> bool {
-    var local_28: bool;
+fn history_matches(n_30: vec3<f32>, nh: vec3<f32>, p_10: vec3<f32>, oh: f32, d_7: f32) -> bool {
+    var local_30: bool;
 
-    if (abs((dot(nh, p_10) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_6)) {
-        local_28 = (dot(n_30, nh) >= TEMPORAL_NORMAL_COS);
+    if (abs((dot(nh, p_10) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_7)) {
+        local_30 = (dot(n_30, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_28 = false;
+        local_30 = false;
     }
-    let _e17 = local_28;
+    let _e17 = local_30;
     return _e17;
 }
 
@@ -1711,35 +1728,35 @@ fn temporal_alpha(n_33: f32) -> f32 {
     return (1f / max(n_33, 1f));
 }
 
-fn history_tap_weight(w_10: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_11: vec3<f32>, oh_1: f32, d_7: f32, len_1: f32) -> f32 {
-    var local_29: bool;
-
-    if (len_1 > 0f) {
-        let _e11 = history_matches(n_34, nh_1, p_11, oh_1, d_7);
-        local_29 = _e11;
-    } else {
-        local_29 = false;
-    }
-    let _e13 = local_29;
-    return select(0f, w_10, _e13);
-}
-
-fn history_tap_weight_motion(w_11: f32, n_35: vec3<f32>, nh_2: vec3<f32>, d_8: f32, dh: f32, len_2: f32) -> f32 {
-    var local_30: bool;
+fn history_tap_weight(w_10: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_11: vec3<f32>, oh_1: f32, d_8: f32, len_1: f32) -> f32 {
     var local_31: bool;
 
-    if (len_2 > 0f) {
-        local_30 = (abs((dh - d_8)) <= (TEMPORAL_MOTION_DEPTH_TOLERANCE * d_8));
-    } else {
-        local_30 = false;
-    }
-    let _e16 = local_30;
-    if _e16 {
-        local_31 = (dot(n_35, nh_2) >= TEMPORAL_NORMAL_COS);
+    if (len_1 > 0f) {
+        let _e11 = history_matches(n_34, nh_1, p_11, oh_1, d_8);
+        local_31 = _e11;
     } else {
         local_31 = false;
     }
-    let _e23 = local_31;
+    let _e13 = local_31;
+    return select(0f, w_10, _e13);
+}
+
+fn history_tap_weight_motion(w_11: f32, n_35: vec3<f32>, nh_2: vec3<f32>, d_9: f32, dh: f32, len_2: f32) -> f32 {
+    var local_32: bool;
+    var local_33: bool;
+
+    if (len_2 > 0f) {
+        local_32 = (abs((dh - d_9)) <= (TEMPORAL_MOTION_DEPTH_TOLERANCE * d_9));
+    } else {
+        local_32 = false;
+    }
+    let _e16 = local_32;
+    if _e16 {
+        local_33 = (dot(n_35, nh_2) >= TEMPORAL_NORMAL_COS);
+    } else {
+        local_33 = false;
+    }
+    let _e23 = local_33;
     return select(0f, w_11, _e23);
 }
 
@@ -1759,27 +1776,27 @@ fn temporal_color(c_11: vec3<f32>, h_1: vec4<f32>, noise_2: f32, last_1: f32, ma
     let _e12 = persistent_change(_e9, last_1, _e10, noise_2, h_1.w);
     let _e14 = next_history_length(h_1.w, _e12, max_history_1);
     let _e16 = temporal_alpha(_e14);
-    let v_25 = (hc + ((c_11 - hc) * _e16));
-    return vec4<f32>(v_25.x, v_25.y, v_25.z, _e14);
+    let v_26 = (hc + ((c_11 - hc) * _e16));
+    return vec4<f32>(v_26.x, v_26.y, v_26.z, _e14);
 }
 
 fn temporal_moments(c_12: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, len_3: f32, depth_1: f32) -> vec4<f32> {
-    var local_32: bool;
+    var local_34: bool;
 
     let _e6 = luminance(c_12);
     if (prev_len <= 0f) {
         return vec4<f32>(_e6, 0f, depth_1, 0f);
     }
-    let d_11 = (_e6 - last_2);
-    let d2_20 = ((0.5f * d_11) * d_11);
+    let d_12 = (_e6 - last_2);
+    let d2_21 = ((0.5f * d_12) * d_12);
     let cap = (16f * noise_3);
     if (prev_len >= TEMPORAL_MIN_MOMENTS) {
-        local_32 = (noise_3 > 0f);
+        local_34 = (noise_3 > 0f);
     } else {
-        local_32 = false;
+        local_34 = false;
     }
-    let _e26 = local_32;
-    let sample = select(d2_20, min(d2_20, cap), _e26);
+    let _e26 = local_34;
+    let sample = select(d2_21, min(d2_21, cap), _e26);
     let _e31 = temporal_alpha((len_3 - 1f));
     return vec4<f32>(_e6, (noise_3 + ((sample - noise_3) * _e31)), depth_1, 0f);
 }

@@ -217,8 +217,8 @@ fn slc_keep(r2_: f32, d2_2: f32) -> bool {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_1: vec3<f32>) -> bool {
-    let v_7 = (x_1 - c);
-    return (dot(v_7, v_7) <= (r * r));
+    let v_8 = (x_1 - c);
+    return (dot(v_8, v_8) <= (r * r));
 }
 
 fn inverse_square(d2_3: f32) -> f32 {
@@ -235,11 +235,11 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local: bool;
     var local_1: bool;
 
-    let v_8 = (x_2 - y);
-    let d2_8 = dot(v_8, v_8);
-    let _e7 = slc_keep(r2_1, d2_8);
+    let v_9 = (x_2 - y);
+    let d2_9 = dot(v_9, v_9);
+    let _e7 = slc_keep(r2_1, d2_9);
     if !(!(_e7)) {
-        local = !((d2_8 > 0f));
+        local = !((d2_9 > 0f));
     } else {
         local = true;
     }
@@ -247,7 +247,7 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_5 = (v_8 / vec3(sqrt(d2_8)));
+    let w_5 = (v_9 / vec3(sqrt(d2_9)));
     let cos_x_1 = -(dot(n, w_5));
     if !((cos_x_1 <= 0f)) {
         local_1 = (dot(ng, w_5) >= 0f);
@@ -400,14 +400,14 @@ fn cosine_pdf(cos_theta: f32) -> f32 {
 
 fn onb_tangent(n_6: vec3<f32>) -> vec3<f32> {
     let s_3 = select(-1f, 1f, (n_6.z >= 0f));
-    let a_8 = (-1f / (s_3 + n_6.z));
-    return vec3<f32>((1f + (((s_3 * n_6.x) * n_6.x) * a_8)), (((s_3 * n_6.x) * n_6.y) * a_8), (-(s_3) * n_6.x));
+    let a_9 = (-1f / (s_3 + n_6.z));
+    return vec3<f32>((1f + (((s_3 * n_6.x) * n_6.x) * a_9)), (((s_3 * n_6.x) * n_6.y) * a_9), (-(s_3) * n_6.x));
 }
 
 fn onb_bitangent(n_7: vec3<f32>) -> vec3<f32> {
     let s_4 = select(-1f, 1f, (n_7.z >= 0f));
-    let a_9 = (-1f / (s_4 + n_7.z));
-    return vec3<f32>(((n_7.x * n_7.y) * a_9), (s_4 + ((n_7.y * n_7.y) * a_9)), -(n_7.y));
+    let a_10 = (-1f / (s_4 + n_7.z));
+    return vec3<f32>(((n_7.x * n_7.y) * a_10), (s_4 + ((n_7.y * n_7.y) * a_10)), -(n_7.y));
 }
 
 fn onb_to_local(n_8: vec3<f32>, w_2: vec3<f32>) -> vec3<f32> {
@@ -592,9 +592,9 @@ fn mirror_dir(n_11: vec3<f32>, v_3: vec3<f32>) -> vec3<f32> {
 }
 
 fn bounded_vndf_k(wi: vec3<f32>, alpha_6: f32) -> f32 {
-    let a_10 = saturate(alpha_6);
+    let a_11 = saturate(alpha_6);
     let s_5 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    let a2_3 = (a_10 * a_10);
+    let a2_3 = (a_11 * a_11);
     let s2_ = (s_5 * s_5);
     return (((1f - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
@@ -630,29 +630,35 @@ fn bsdf_pdf(n_12: vec3<f32>, v_4: vec3<f32>, l_3: vec3<f32>, alpha_8: f32, p_spe
     return ((p_spec * _e11) + ((1f - p_spec) * _e6));
 }
 
-fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
-    if (cos_a > cos_b) {
+fn cone_cos_of(v_5: vec3<f32>, d2_7: f32, a_4: f32, d: vec3<f32>) -> f32 {
+    var local_11: bool;
+    var local_12: bool;
+
+    let vd = dot(v_5, d);
+    let h2_ = (d2_7 - (a_4 * a_4));
+    if !((h2_ <= 0f)) {
+        if (vd >= 0f) {
+            local_12 = ((vd * vd) >= h2_);
+        } else {
+            local_12 = false;
+        }
+        let _e19 = local_12;
+        local_11 = _e19;
+    } else {
+        local_11 = true;
+    }
+    let _e21 = local_11;
+    if _e21 {
         return 1f;
     }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
+    let c_9 = cross(v_5, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_4)) / d2_7), 1f);
 }
 
-fn safe_sqrt(x_3: f32) -> f32 {
-    return sqrt(max(x_3, 0f));
-}
-
-fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d: vec3<f32>) -> f32 {
-    let v_9 = (center - p);
-    let dist2_ = dot(v_9, v_9);
-    if (dist2_ <= (radius * radius)) {
-        return 1f;
-    }
-    let dist = sqrt(dist2_);
-    let c_9 = cross(v_9, d);
-    let sin_b_1 = (radius / dist);
-    let _e20 = safe_sqrt((1f - (sin_b_1 * sin_b_1)));
-    let _e21 = cos_sub_clamped((sqrt(dot(c_9, c_9)) / dist), (dot(v_9, d) / dist), sin_b_1, _e20);
-    return _e21;
+fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
+    let v_10 = (center - p);
+    let _e6 = cone_cos_of(v_10, dot(v_10, v_10), radius, d_1);
+    return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -673,14 +679,14 @@ fn shadow_margin(len: f32) -> f32 {
     return (0.0001f * len);
 }
 
-fn ray_inverse(x_4: f32) -> f32 {
-    return (1f / select(x_4, 0.000000000000000000000000000001f, (abs(x_4) < 0.000000000000000000000000000001f)));
+fn ray_inverse(x_3: f32) -> f32 {
+    return (1f / select(x_3, 0.000000000000000000000000000001f, (abs(x_3) < 0.000000000000000000000000000001f)));
 }
 
-fn ray_inverse3_(d_1: vec3<f32>) -> vec3<f32> {
-    let _e2 = ray_inverse(d_1.x);
-    let _e4 = ray_inverse(d_1.y);
-    let _e6 = ray_inverse(d_1.z);
+fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d_2.x);
+    let _e4 = ray_inverse(d_2.y);
+    let _e6 = ray_inverse(d_2.z);
     return vec3<f32>(_e2, _e4, _e6);
 }
 
@@ -697,87 +703,87 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
     return -1f;
 }
 
-fn triangle_normal(a_4: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
-    var local_11: bool;
+fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
+    var local_13: bool;
 
-    let n_17 = cross((b_4 - a_4), (c_3 - a_4));
+    let n_17 = cross((b_4 - a_5), (c_3 - a_5));
     let l2_ = dot(n_17, n_17);
     if !(!((l2_ > 0f))) {
-        local_11 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_13 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_11 = true;
+        local_13 = true;
     }
-    let _e17 = local_11;
+    let _e17 = local_13;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
     return (n_17 / vec3(sqrt(l2_)));
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_5: vec3<f32>, b_5: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_12: bool;
-    var local_13: bool;
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
     var local_14: bool;
+    var local_15: bool;
+    var local_16: bool;
 
-    let e1_ = (b_5 - a_5);
-    let e2_ = (c_4 - a_5);
-    let p_2 = cross(d_2, e2_);
+    let e1_ = (b_5 - a_6);
+    let e2_ = (c_4 - a_6);
+    let p_2 = cross(d_3, e2_);
     let det = dot(e1_, p_2);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv_1 = (1f / det);
-    let s_6 = (o_1 - a_5);
+    let s_6 = (o_1 - a_6);
     let u_2 = (dot(s_6, p_2) * inv_1);
     if !((u_2 < 0f)) {
-        local_12 = (u_2 > 1f);
+        local_14 = (u_2 > 1f);
     } else {
-        local_12 = true;
+        local_14 = true;
     }
-    let _e28 = local_12;
+    let _e28 = local_14;
     if _e28 {
         return -1f;
     }
     let q = cross(s_6, e1_);
-    let v_10 = (dot(d_2, q) * inv_1);
-    if !((v_10 < 0f)) {
-        local_13 = ((u_2 + v_10) > 1f);
+    let v_11 = (dot(d_3, q) * inv_1);
+    if !((v_11 < 0f)) {
+        local_15 = ((u_2 + v_11) > 1f);
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    let _e42 = local_13;
+    let _e42 = local_15;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_, q) * inv_1);
     if (t_3 > t_min) {
-        local_14 = (t_3 < t_max_1);
+        local_16 = (t_3 < t_max_1);
     } else {
-        local_14 = false;
+        local_16 = false;
     }
-    let _e51 = local_14;
+    let _e51 = local_16;
     if _e51 {
         return t_3;
     }
     return -1f;
 }
 
-fn finite3_(v_5: vec3<f32>) -> bool {
-    var local_15: bool;
-    var local_16: bool;
+fn finite3_(v_6: vec3<f32>) -> bool {
+    var local_17: bool;
+    var local_18: bool;
 
-    if (abs(v_5.x) <= F32_MAX) {
-        local_15 = (abs(v_5.y) <= F32_MAX);
+    if (abs(v_6.x) <= F32_MAX) {
+        local_17 = (abs(v_6.y) <= F32_MAX);
     } else {
-        local_15 = false;
+        local_17 = false;
     }
-    let _e12 = local_15;
+    let _e12 = local_17;
     if _e12 {
-        local_16 = (abs(v_5.z) <= F32_MAX);
+        local_18 = (abs(v_6.z) <= F32_MAX);
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    let _e20 = local_16;
+    let _e20 = local_18;
     return _e20;
 }
 
@@ -817,7 +823,7 @@ fn light_normal(l_7: GpuLight) -> vec3<f32> {
     return vec3(0f);
 }
 
-fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
+fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
@@ -830,7 +836,7 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         let _e13 = hit;
         return _e13;
     }
-    let _e14 = ray_inverse3_(d_3);
+    let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node_2;
         let n_18 = geo_nodes[_e21];
@@ -849,7 +855,7 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                         let _e42 = i;
                         let t_4 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i;
@@ -891,14 +897,14 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     return _e81;
 }
 
-fn occluded(a_6: vec3<f32>, b_6: vec3<f32>) -> bool {
-    let dv = (b_6 - a_6);
+fn occluded(a_7: vec3<f32>, b_6: vec3<f32>) -> bool {
+    let dv = (b_6 - a_7);
     let len_1 = length(dv);
     if (len_1 <= 0f) {
         return false;
     }
     let _e7 = shadow_margin(len_1);
-    let _e12 = trace(a_6, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    let _e12 = trace(a_7, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
     return (_e12.tri != NO_LIGHT);
 }
 
@@ -919,43 +925,22 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_7: f32, v_6: vec3<f32>, d2_7: f32, r_2: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    var local_17: bool;
-    var local_18: bool;
-
-    let vr = dot(v_6, r_2);
-    let h2_ = (d2_7 - (a_7 * a_7));
-    if !((h2_ <= 0f)) {
-        if (vr >= 0f) {
-            local_18 = ((vr * vr) >= h2_);
-        } else {
-            local_18 = false;
-        }
-        let _e20 = local_18;
-        local_17 = _e20;
-    } else {
-        local_17 = true;
-    }
-    let _e22 = local_17;
-    if _e22 {
-        return (rl_2.w * rl_2.w);
-    }
-    let c_10 = cross(v_6, r_2);
-    let cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_10, c_10)) * a_7)) / d2_7);
-    let _e36 = range_scale_at(rl_2, (cos_t_1 + 0.000002f));
-    return _e36;
+fn bsh_inner_scale(a_8: f32, v_7: vec3<f32>, d2_8: f32, r_2: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_7, d2_8, a_8, r_2);
+    let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
+    return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
+fn bsh_reaches(node_3: BshNode, x_4: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>) -> bool {
     var local_19: bool;
     var local_20: bool;
 
-    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_5);
+    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_4);
     if _e6 {
         return true;
     }
     if !((rl_3.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_5);
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001f)), x_4);
         local_19 = !(_e20);
     } else {
         local_19 = true;
@@ -965,23 +950,23 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>)
         return false;
     }
     let _e25 = bsh_range_bound(node_3);
-    let v_11 = (x_5 - node_3.center);
-    let d2_9 = dot(v_11, v_11);
+    let v_12 = (x_4 - node_3.center);
+    let d2_10 = dot(v_12, v_12);
     let reach_max = (node_3.extent + ((rl_3.w * 1.001f) * _e25));
-    if (d2_9 > (reach_max * reach_max)) {
+    if (d2_10 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_5, r_3);
+        let _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_4, r_3);
         let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_3.center, _e46, x_5);
+        let _e47 = sphere_contains_point(node_3.center, _e46, x_4);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_11), d2_9, r_3, rl_3);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_10, r_3, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_20 = (d2_9 <= (reach * reach));
+    if (d2_10 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_20 = (d2_10 <= (reach * reach));
     } else {
         local_20 = false;
     }
@@ -989,7 +974,7 @@ fn bsh_reaches(node_3: BshNode, x_5: vec3<f32>, r_3: vec3<f32>, rl_3: vec4<f32>)
     return _e67;
 }
 
-fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>) -> u32 {
+fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>) -> u32 {
     var i_2: u32;
 
     i_2 = start;
@@ -1002,7 +987,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_4: vec3<f32>, 
         {
             let _e9 = i_2;
             let _e10 = bsh_node(nodes_3, _e9);
-            let _e11 = bsh_reaches(_e10, x_6, r_4, rl_4);
+            let _e11 = bsh_reaches(_e10, x_5, r_4, rl_4);
             if _e11 {
                 if (_e10.child == BSH_NONE) {
                     let _e15 = i_2;
@@ -1017,7 +1002,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_6: vec3<f32>, r_4: vec3<f32>, 
     return BSH_NONE;
 }
 
-fn bsh_collect(x_7: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
+fn bsh_collect(x_6: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> Picks {
     var picks: Picks;
     var h_1: u32;
     var i_3: u32;
@@ -1025,7 +1010,7 @@ fn bsh_collect(x_7: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> 
     picks.n = 0u;
     h_1 = seed_1;
     let _e10 = bsh_first(BSH);
-    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_7, r_5, rl_5);
+    let _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_5, rl_5);
     i_3 = _e11;
     loop {
         let _e13 = i_3;
@@ -1059,7 +1044,7 @@ fn bsh_collect(x_7: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> 
         continuing {
             let _e44 = i_3;
             let _e47 = bsh_nodes[_e44].next;
-            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_7, r_5, rl_5);
+            let _e48 = bsh_next_leaf_lobe(BSH, _e47, x_6, r_5, rl_5);
             i_3 = _e48;
         }
     }
@@ -1067,7 +1052,7 @@ fn bsh_collect(x_7: vec3<f32>, r_5: vec3<f32>, rl_5: vec4<f32>, seed_1: u32) -> 
     return _e49;
 }
 
-fn connect(li: u32, x_8: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
+fn connect(li: u32, x_7: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32>, s_1: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
     var c_5: Connection;
     var local_21: bool;
 
@@ -1077,12 +1062,12 @@ fn connect(li: u32, x_8: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32>, s_1: f32, 
     c_5.y = _e17;
     let _e20 = c_5.y;
     let _e23 = r2_2[li];
-    let _e25 = connection_cosine(x_8, _e20, n_13, ng_1, (s_1 * _e23));
+    let _e25 = connection_cosine(x_7, _e20, n_13, ng_1, (s_1 * _e23));
     c_5.cos_x = _e25;
     let _e27 = c_5.cos_x;
     if !((_e27 <= 0f)) {
         let _e36 = c_5.y;
-        let _e37 = occluded((x_8 + (ng_1 * eps)), _e36);
+        let _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
         local_21 = _e37;
     } else {
         local_21 = true;
@@ -1093,12 +1078,12 @@ fn connect(li: u32, x_8: vec3<f32>, n_13: vec3<f32>, ng_1: vec3<f32>, s_1: f32, 
         return _e40;
     }
     let _e42 = c_5.y;
-    let v_12 = (x_8 - _e42);
-    let d2_10 = dot(v_12, v_12);
-    let _e49 = light_intensity(l_8, (v_12 / vec3(sqrt(d2_10))));
+    let v_13 = (x_7 - _e42);
+    let d2_11 = dot(v_13, v_13);
+    let _e49 = light_intensity(l_8, (v_13 / vec3(sqrt(d2_11))));
     let _e51 = c_5.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_10, (s_1 * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_11, (s_1 * _e54), w_res);
     c_5.e = (_e49 * _e56);
     let _e58 = c_5;
     return _e58;
@@ -1109,50 +1094,50 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     return _e2;
 }
 
-fn light_range_scale(li_1: u32, x_9: vec3<f32>, r_6: vec3<f32>, rl_6: vec4<f32>) -> f32 {
-    let c_11 = light_cones[li_1];
-    let _e9 = range_scale_toward(rl_6, c_11.center, c_11.radius, x_9, r_6);
+fn light_range_scale(li_1: u32, x_8: vec3<f32>, r_6: vec3<f32>, rl_6: vec4<f32>) -> f32 {
+    let c_10 = light_cones[li_1];
+    let _e9 = range_scale_toward(rl_6, c_10.center, c_10.radius, x_8, r_6);
     return _e9;
 }
 
-fn select_pdf(li_2: u32, x_10: vec3<f32>, n_14: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>, rl_7: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
+fn select_pdf(li_2: u32, x_9: vec3<f32>, n_14: vec3<f32>, r_7: vec3<f32>, lobe_5: vec4<f32>, rl_7: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
     let _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-fn light_pdf_selected(li_3: u32, x_11: vec3<f32>, r_8: vec3<f32>, rl_8: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
+fn light_pdf_selected(li_3: u32, x_10: vec3<f32>, r_8: vec3<f32>, rl_8: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
     let l_9 = lights[li_3];
-    let v_13 = (x_11 - y_1);
-    let d2_11 = dot(v_13, v_13);
+    let v_14 = (x_10 - y_1);
+    let d2_12 = dot(v_14, v_14);
     let _e11 = light_normal(l_9);
-    let cos_y_1 = select(0f, dot(_e11, (v_13 / vec3(sqrt(d2_11)))), (d2_11 > 0f));
-    let _e20 = light_range_scale(li_3, x_11, r_8, rl_8);
+    let cos_y_1 = select(0f, dot(_e11, (v_14 / vec3(sqrt(d2_12)))), (d2_12 > 0f));
+    let _e20 = light_range_scale(li_3, x_10, r_8, rl_8);
     let _e23 = rt2_4[li_3];
     let _e25 = light_area(l_9);
-    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_11, _e25, cos_y_1);
+    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_12, _e25, cos_y_1);
     return _e26;
 }
 
-fn light_pdf(li_4: u32, x_12: vec3<f32>, n_15: vec3<f32>, r_9: vec3<f32>, lobe_6: vec4<f32>, rl_9: vec4<f32>, y_2: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
-    let _e9 = select_pdf(li_4, x_12, n_15, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    let _e10 = light_pdf_selected(li_4, x_12, r_9, rl_9, y_2, _e9);
+fn light_pdf(li_4: u32, x_11: vec3<f32>, n_15: vec3<f32>, r_9: vec3<f32>, lobe_6: vec4<f32>, rl_9: vec4<f32>, y_2: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let _e9 = select_pdf(li_4, x_11, n_15, r_9, lobe_6, rl_9, nee_1, in_range_2);
+    let _e10 = light_pdf_selected(li_4, x_11, r_9, rl_9, y_2, _e9);
     return _e10;
 }
 
-fn shade_pick(li_5: u32, x_13: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_10: vec4<f32>, w_4: f32, nee_2: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
+fn shade_pick(li_5: u32, x_12: vec3<f32>, n_16: vec3<f32>, ng_2: vec3<f32>, m: GpuMaterial, wo_1: vec3<f32>, r_10: vec3<f32>, lobe_7: vec4<f32>, rl_10: vec4<f32>, w_4: f32, nee_2: u32, u1_3: f32, u2_3: f32) -> vec3<f32> {
     var mis: f32 = 1f;
 
-    let _e13 = light_range_scale(li_5, x_13, r_10, rl_10);
+    let _e13 = light_range_scale(li_5, x_12, r_10, rl_10);
     let _e16 = params.eps;
-    let _e17 = connect(li_5, x_13, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16);
+    let _e17 = connect(li_5, x_12, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16);
     if (_e17.cos_x <= 0f) {
         return vec3(0f);
     }
-    let l_10 = normalize((_e17.y - x_13));
+    let l_10 = normalize((_e17.y - x_12));
     let _e30 = lights[li_5];
     let _e31 = light_area(_e30);
     if (_e31 > 0f) {
-        let _e36 = light_pdf(li_5, x_13, n_16, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
+        let _e36 = light_pdf(li_5, x_12, n_16, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
         let _e38 = specular_probability(lobe_7);
         let _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
         let _e40 = mis_weight(_e36, _e39);
@@ -1179,7 +1164,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         candidates[i_4] = 0u;
         return;
     }
-    let x_14 = vtx.position;
+    let x_13 = vtx.position;
     let n_19 = vtx.normal;
     let ng_3 = vtx.gnormal;
     let m_2 = materials[vtx.material];
@@ -1192,7 +1177,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e38 = point_stream(_e34, i_4, _e37);
     let _e39 = pick_stream(_e38);
     h = _e39;
-    let _e44 = bsh_collect(x_14, _e23, _e31, _e38);
+    let _e44 = bsh_collect(x_13, _e23, _e31, _e38);
     candidates[i_4] = _e44.n;
     let _e50 = reservoir_weight(_e44.n, K);
     loop {
@@ -1214,7 +1199,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e66 = s;
             let _e69 = h;
             let _e70 = xi_from_bits(_e69);
-            let _e71 = shade_pick(_e44.light[_e66], x_14, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
+            let _e71 = shade_pick(_e44.light[_e66], x_13, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
             sum = (_e64 + _e71);
         }
         continuing {

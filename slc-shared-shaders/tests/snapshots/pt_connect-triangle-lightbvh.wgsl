@@ -228,11 +228,11 @@ fn connection_cosine(x_1: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local: bool;
     var local_1: bool;
 
-    let v_6 = (x_1 - y);
-    let d2_7 = dot(v_6, v_6);
-    let _e7 = slc_keep(r2_1, d2_7);
+    let v_7 = (x_1 - y);
+    let d2_8 = dot(v_7, v_7);
+    let _e7 = slc_keep(r2_1, d2_8);
     if !(!(_e7)) {
-        local = !((d2_7 > 0f));
+        local = !((d2_8 > 0f));
     } else {
         local = true;
     }
@@ -240,7 +240,7 @@ fn connection_cosine(x_1: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_5 = (v_6 / vec3(sqrt(d2_7)));
+    let w_5 = (v_7 / vec3(sqrt(d2_8)));
     let cos_x_1 = -(dot(n, w_5));
     if !((cos_x_1 <= 0f)) {
         local_1 = (dot(ng, w_5) >= 0f);
@@ -312,14 +312,14 @@ fn cosine_pdf(cos_theta: f32) -> f32 {
 
 fn onb_tangent(n_2: vec3<f32>) -> vec3<f32> {
     let s_2 = select(-1f, 1f, (n_2.z >= 0f));
-    let a_6 = (-1f / (s_2 + n_2.z));
-    return vec3<f32>((1f + (((s_2 * n_2.x) * n_2.x) * a_6)), (((s_2 * n_2.x) * n_2.y) * a_6), (-(s_2) * n_2.x));
+    let a_7 = (-1f / (s_2 + n_2.z));
+    return vec3<f32>((1f + (((s_2 * n_2.x) * n_2.x) * a_7)), (((s_2 * n_2.x) * n_2.y) * a_7), (-(s_2) * n_2.x));
 }
 
 fn onb_bitangent(n_3: vec3<f32>) -> vec3<f32> {
     let s_3 = select(-1f, 1f, (n_3.z >= 0f));
-    let a_7 = (-1f / (s_3 + n_3.z));
-    return vec3<f32>(((n_3.x * n_3.y) * a_7), (s_3 + ((n_3.y * n_3.y) * a_7)), -(n_3.y));
+    let a_8 = (-1f / (s_3 + n_3.z));
+    return vec3<f32>(((n_3.x * n_3.y) * a_8), (s_3 + ((n_3.y * n_3.y) * a_8)), -(n_3.y));
 }
 
 fn onb_to_local(n_4: vec3<f32>, w_2: vec3<f32>) -> vec3<f32> {
@@ -504,9 +504,9 @@ fn mirror_dir(n_7: vec3<f32>, v_3: vec3<f32>) -> vec3<f32> {
 }
 
 fn bounded_vndf_k(wi: vec3<f32>, alpha_6: f32) -> f32 {
-    let a_8 = saturate(alpha_6);
+    let a_9 = saturate(alpha_6);
     let s_4 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    let a2_3 = (a_8 * a_8);
+    let a2_3 = (a_9 * a_9);
     let s2_ = (s_4 * s_4);
     return (((1f - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
@@ -566,11 +566,11 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
-    let v_7 = (p - center);
-    let dist2_1 = dot(v_7, v_7);
+    let v_8 = (p - center);
+    let dist2_1 = dot(v_8, v_8);
     let r2_4 = (radius * radius);
-    let d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
-    let wi_2 = select(vec3<f32>(0f, 0f, 0f), (v_7 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let d2_9 = max(max(dist2_1, r2_4), MIN_D2_);
+    let wi_2 = select(vec3<f32>(0f, 0f, 0f), (v_8 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi_2);
     let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
     let _e26 = subtended_cos(dist2_1, r2_4);
@@ -579,7 +579,7 @@ fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: 
     let _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
     let _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
     let _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4<f32>(_e37, d2_8, _e26, _e30);
+    return vec4<f32>(_e37, d2_9, _e26, _e30);
 }
 
 fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3<f32>, cos_o_1: f32, cos_e: f32, p_1: vec3<f32>) -> f32 {
@@ -590,18 +590,35 @@ fn emitter_importance(center_1: vec3<f32>, radius_1: f32, phi: f32, axis_1: vec3
     return ((phi * _e7.x) / _e7.y);
 }
 
-fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d: vec3<f32>) -> f32 {
-    let v_8 = (center_2 - p_2);
-    let dist2_2 = dot(v_8, v_8);
-    if (dist2_2 <= (radius_2 * radius_2)) {
+fn cone_cos_of(v_5: vec3<f32>, d2_7: f32, a_3: f32, d: vec3<f32>) -> f32 {
+    var local_10: bool;
+    var local_11: bool;
+
+    let vd = dot(v_5, d);
+    let h2_ = (d2_7 - (a_3 * a_3));
+    if !((h2_ <= 0f)) {
+        if (vd >= 0f) {
+            local_11 = ((vd * vd) >= h2_);
+        } else {
+            local_11 = false;
+        }
+        let _e19 = local_11;
+        local_10 = _e19;
+    } else {
+        local_10 = true;
+    }
+    let _e21 = local_10;
+    if _e21 {
         return 1f;
     }
-    let dist = sqrt(dist2_2);
-    let c_8 = cross(v_8, d);
-    let sin_b_2 = (radius_2 / dist);
-    let _e20 = safe_sqrt((1f - (sin_b_2 * sin_b_2)));
-    let _e21 = cos_sub_clamped((sqrt(dot(c_8, c_8)) / dist), (dot(v_8, d) / dist), sin_b_2, _e20);
-    return _e21;
+    let c_8 = cross(v_5, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_3)) / d2_7), 1f);
+}
+
+fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
+    let v_9 = (center_2 - p_2);
+    let _e6 = cone_cos_of(v_9, dot(v_9, v_9), radius_2, d_1);
+    return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -627,9 +644,9 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_9, n_9) > 0f) {
-        let v_9 = (center_4 - p_4);
-        let dist2_3 = dot(v_9, v_9);
-        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_9 / vec3(sqrt(dist2_3))), (dist2_3 > 0f)), n_9);
+        let v_10 = (center_4 - p_4);
+        let dist2_2 = dot(v_10, v_10);
+        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_10 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_9);
         let _e33 = imp;
         let _e37 = safe_sqrt((1f - (cos_i * cos_i)));
         let _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -640,16 +657,16 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
 }
 
 fn glossy_importance(center_5: vec3<f32>, radius_5: f32, phi_2: f32, axis_3: vec3<f32>, cos_o_3: f32, cos_e_2: f32, p_5: vec3<f32>, n_10: vec3<f32>, r_1: vec3<f32>, lobe_5: vec4<f32>) -> f32 {
-    var local_10: bool;
+    var local_12: bool;
 
     let _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     let _e11 = cone_cos_toward(center_5, radius_5, p_5, n_10);
     if !((_e10 <= 0f)) {
-        local_10 = (_e11 <= 0f);
+        local_12 = (_e11 <= 0f);
     } else {
-        local_10 = true;
+        local_12 = true;
     }
-    let _e20 = local_10;
+    let _e20 = local_12;
     if _e20 {
         return 0f;
     }
@@ -693,10 +710,10 @@ fn ray_inverse(x_3: f32) -> f32 {
     return (1f / select(x_3, 0.000000000000000000000000000001f, (abs(x_3) < 0.000000000000000000000000000001f)));
 }
 
-fn ray_inverse3_(d_1: vec3<f32>) -> vec3<f32> {
-    let _e2 = ray_inverse(d_1.x);
-    let _e4 = ray_inverse(d_1.y);
-    let _e6 = ray_inverse(d_1.z);
+fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d_2.x);
+    let _e4 = ray_inverse(d_2.y);
+    let _e6 = ray_inverse(d_2.z);
     return vec3<f32>(_e2, _e4, _e6);
 }
 
@@ -713,87 +730,87 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
     return -1f;
 }
 
-fn triangle_normal(a_3: vec3<f32>, b_3: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
-    var local_11: bool;
+fn triangle_normal(a_4: vec3<f32>, b_3: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
+    var local_13: bool;
 
-    let n_17 = cross((b_3 - a_3), (c_2 - a_3));
+    let n_17 = cross((b_3 - a_4), (c_2 - a_4));
     let l2_ = dot(n_17, n_17);
     if !(!((l2_ > 0f))) {
-        local_11 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_13 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_11 = true;
+        local_13 = true;
     }
-    let _e17 = local_11;
+    let _e17 = local_13;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
     return (n_17 / vec3(sqrt(l2_)));
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_2: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_12: bool;
-    var local_13: bool;
+fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
     var local_14: bool;
+    var local_15: bool;
+    var local_16: bool;
 
-    let e1_ = (b_4 - a_4);
-    let e2_ = (c_3 - a_4);
-    let p_7 = cross(d_2, e2_);
+    let e1_ = (b_4 - a_5);
+    let e2_ = (c_3 - a_5);
+    let p_7 = cross(d_3, e2_);
     let det = dot(e1_, p_7);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv_1 = (1f / det);
-    let s_6 = (o_1 - a_4);
+    let s_6 = (o_1 - a_5);
     let u_3 = (dot(s_6, p_7) * inv_1);
     if !((u_3 < 0f)) {
-        local_12 = (u_3 > 1f);
+        local_14 = (u_3 > 1f);
     } else {
-        local_12 = true;
+        local_14 = true;
     }
-    let _e28 = local_12;
+    let _e28 = local_14;
     if _e28 {
         return -1f;
     }
     let q = cross(s_6, e1_);
-    let v_10 = (dot(d_2, q) * inv_1);
-    if !((v_10 < 0f)) {
-        local_13 = ((u_3 + v_10) > 1f);
+    let v_11 = (dot(d_3, q) * inv_1);
+    if !((v_11 < 0f)) {
+        local_15 = ((u_3 + v_11) > 1f);
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    let _e42 = local_13;
+    let _e42 = local_15;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_, q) * inv_1);
     if (t_3 > t_min) {
-        local_14 = (t_3 < t_max_1);
+        local_16 = (t_3 < t_max_1);
     } else {
-        local_14 = false;
+        local_16 = false;
     }
-    let _e51 = local_14;
+    let _e51 = local_16;
     if _e51 {
         return t_3;
     }
     return -1f;
 }
 
-fn finite3_(v_5: vec3<f32>) -> bool {
-    var local_15: bool;
-    var local_16: bool;
+fn finite3_(v_6: vec3<f32>) -> bool {
+    var local_17: bool;
+    var local_18: bool;
 
-    if (abs(v_5.x) <= F32_MAX) {
-        local_15 = (abs(v_5.y) <= F32_MAX);
+    if (abs(v_6.x) <= F32_MAX) {
+        local_17 = (abs(v_6.y) <= F32_MAX);
     } else {
-        local_15 = false;
+        local_17 = false;
     }
-    let _e12 = local_15;
+    let _e12 = local_17;
     if _e12 {
-        local_16 = (abs(v_5.z) <= F32_MAX);
+        local_18 = (abs(v_6.z) <= F32_MAX);
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    let _e20 = local_16;
+    let _e20 = local_18;
     return _e20;
 }
 
@@ -833,7 +850,7 @@ fn light_normal(l_7: GpuLight) -> vec3<f32> {
     return vec3(0f);
 }
 
-fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
+fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
@@ -846,7 +863,7 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         let _e13 = hit;
         return _e13;
     }
-    let _e14 = ray_inverse3_(d_3);
+    let _e14 = ray_inverse3_(d_4);
     loop {
         let _e21 = node;
         let n_18 = geo_nodes[_e21];
@@ -865,7 +882,7 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                         let _e42 = i;
                         let t_4 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i;
@@ -907,20 +924,20 @@ fn trace(o_2: vec3<f32>, d_3: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
     return _e81;
 }
 
-fn occluded(a_5: vec3<f32>, b_5: vec3<f32>) -> bool {
-    let dv = (b_5 - a_5);
+fn occluded(a_6: vec3<f32>, b_5: vec3<f32>) -> bool {
+    let dv = (b_5 - a_6);
     let len_1 = length(dv);
     if (len_1 <= 0f) {
         return false;
     }
     let _e7 = shadow_margin(len_1);
-    let _e12 = trace(a_5, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    let _e12 = trace(a_6, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
     return (_e12.tri != NO_LIGHT);
 }
 
 fn connect(li: u32, x_4: vec3<f32>, n_12: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_2: f32, u2_2: f32, eps: f32) -> Connection {
     var c_4: Connection;
-    var local_17: bool;
+    var local_19: bool;
 
     c_4.e = vec3(0f);
     let l_8 = lights[li];
@@ -934,22 +951,22 @@ fn connect(li: u32, x_4: vec3<f32>, n_12: vec3<f32>, ng_1: vec3<f32>, s: f32, w_
     if !((_e27 <= 0f)) {
         let _e36 = c_4.y;
         let _e37 = occluded((x_4 + (ng_1 * eps)), _e36);
-        local_17 = _e37;
+        local_19 = _e37;
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    let _e39 = local_17;
+    let _e39 = local_19;
     if _e39 {
         let _e40 = c_4;
         return _e40;
     }
     let _e42 = c_4.y;
-    let v_11 = (x_4 - _e42);
-    let d2_9 = dot(v_11, v_11);
-    let _e49 = light_intensity(l_8, (v_11 / vec3(sqrt(d2_9))));
+    let v_12 = (x_4 - _e42);
+    let d2_10 = dot(v_12, v_12);
+    let _e49 = light_intensity(l_8, (v_12 / vec3(sqrt(d2_10))));
     let _e51 = c_4.cos_x;
     let _e54 = rt2_4[li];
-    let _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
+    let _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     let _e58 = c_4;
     return _e58;
@@ -982,17 +999,17 @@ fn bvh_importance(nodes_2: u32, i_2: u32, x_6: vec3<f32>, n_13: vec3<f32>, r_4: 
 }
 
 fn bvh_first(nodes_3: u32, i_3: u32, x_7: vec3<f32>, n_14: vec3<f32>, r_5: vec3<f32>, lobe_8: vec4<f32>) -> f32 {
-    var local_18: bool;
+    var local_20: bool;
 
     let _e6 = light_bvh_node(nodes_3, i_3);
     let j = _e6.second;
     if !((j <= (i_3 + 1u))) {
         let _e14 = light_bvh_count(nodes_3);
-        local_18 = (j >= _e14);
+        local_20 = (j >= _e14);
     } else {
-        local_18 = true;
+        local_20 = true;
     }
-    let _e17 = local_18;
+    let _e17 = local_20;
     if _e17 {
         return -1f;
     }
@@ -1011,7 +1028,7 @@ fn light_bvh_sample(nodes_4: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_6: vec3<f32
     var u_2: f32;
     var i_4: u32 = 0u;
     var pmf: f32 = 1f;
-    var local_19: bool;
+    var local_21: bool;
 
     let _e6 = bvh_pick_none();
     pick = _e6;
@@ -1030,11 +1047,11 @@ fn light_bvh_sample(nodes_4: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_6: vec3<f32
                 let _e21 = i_4;
                 if !((_e21 > 0u)) {
                     let _e28 = bvh_importance(nodes_4, 0u, x_8, n_15, r_6, lobe_9);
-                    local_19 = (_e28 > 0f);
+                    local_21 = (_e28 > 0f);
                 } else {
-                    local_19 = true;
+                    local_21 = true;
                 }
-                let _e32 = local_19;
+                let _e32 = local_21;
                 if _e32 {
                     pick.light = _e17.light;
                     let _e36 = pmf;
@@ -1066,14 +1083,14 @@ fn light_bvh_sample(nodes_4: u32, x_8: vec3<f32>, n_15: vec3<f32>, r_6: vec3<f32
 
 fn light_pdf_selected(li_2: u32, x_9: vec3<f32>, r_7: vec3<f32>, rl_3: vec4<f32>, y_1: vec3<f32>, sel: f32) -> f32 {
     let l_9 = lights[li_2];
-    let v_12 = (x_9 - y_1);
-    let d2_10 = dot(v_12, v_12);
+    let v_13 = (x_9 - y_1);
+    let d2_11 = dot(v_13, v_13);
     let _e11 = light_normal(l_9);
-    let cos_y_1 = select(0f, dot(_e11, (v_12 / vec3(sqrt(d2_10)))), (d2_10 > 0f));
+    let cos_y_1 = select(0f, dot(_e11, (v_13 / vec3(sqrt(d2_11)))), (d2_11 > 0f));
     let _e20 = light_range_scale(li_2, x_9, r_7, rl_3);
     let _e23 = rt2_4[li_2];
     let _e25 = light_area(l_9);
-    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_10, _e25, cos_y_1);
+    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_11, _e25, cos_y_1);
     return _e26;
 }
 

@@ -224,8 +224,8 @@ fn rr_probability(rt2_: f32, d2_: f32) -> f32 {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r: f32, x_1: vec3<f32>) -> bool {
-    let v_9 = (x_1 - c);
-    return (dot(v_9, v_9) <= (r * r));
+    let v_10 = (x_1 - c);
+    return (dot(v_10, v_10) <= (r * r));
 }
 
 fn area_to_solid_angle_pdf(pdf_area: f32, d2_1: f32, cos_light: f32) -> f32 {
@@ -318,14 +318,14 @@ fn cosine_pdf(cos_theta: f32) -> f32 {
 
 fn onb_tangent(n_1: vec3<f32>) -> vec3<f32> {
     let s_1 = select(-1f, 1f, (n_1.z >= 0f));
-    let a_6 = (-1f / (s_1 + n_1.z));
-    return vec3<f32>((1f + (((s_1 * n_1.x) * n_1.x) * a_6)), (((s_1 * n_1.x) * n_1.y) * a_6), (-(s_1) * n_1.x));
+    let a_7 = (-1f / (s_1 + n_1.z));
+    return vec3<f32>((1f + (((s_1 * n_1.x) * n_1.x) * a_7)), (((s_1 * n_1.x) * n_1.y) * a_7), (-(s_1) * n_1.x));
 }
 
 fn onb_bitangent(n_2: vec3<f32>) -> vec3<f32> {
     let s_2 = select(-1f, 1f, (n_2.z >= 0f));
-    let a_7 = (-1f / (s_2 + n_2.z));
-    return vec3<f32>(((n_2.x * n_2.y) * a_7), (s_2 + ((n_2.y * n_2.y) * a_7)), -(n_2.y));
+    let a_8 = (-1f / (s_2 + n_2.z));
+    return vec3<f32>(((n_2.x * n_2.y) * a_8), (s_2 + ((n_2.y * n_2.y) * a_8)), -(n_2.y));
 }
 
 fn onb_to_world(n_3: vec3<f32>, d: vec3<f32>) -> vec3<f32> {
@@ -523,9 +523,9 @@ fn mirror_dir(n_8: vec3<f32>, v_4: vec3<f32>) -> vec3<f32> {
 }
 
 fn bounded_vndf_k(wi: vec3<f32>, alpha_6: f32) -> f32 {
-    let a_8 = saturate(alpha_6);
+    let a_9 = saturate(alpha_6);
     let s_3 = (1f + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    let a2_3 = (a_8 * a_8);
+    let a2_3 = (a_9 * a_9);
     let s2_ = (s_3 * s_3);
     return (((1f - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
@@ -587,29 +587,35 @@ fn bsdf_pdf(n_10: vec3<f32>, v_6: vec3<f32>, l_3: vec3<f32>, alpha_10: f32, p_sp
     return ((p_spec_1 * _e11) + ((1f - p_spec_1) * _e6));
 }
 
-fn cos_sub_clamped(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
-    if (cos_a > cos_b) {
+fn cone_cos_of(v_7: vec3<f32>, d2_3: f32, a_2: f32, d_1: vec3<f32>) -> f32 {
+    var local_12: bool;
+    var local_13: bool;
+
+    let vd = dot(v_7, d_1);
+    let h2_ = (d2_3 - (a_2 * a_2));
+    if !((h2_ <= 0f)) {
+        if (vd >= 0f) {
+            local_13 = ((vd * vd) >= h2_);
+        } else {
+            local_13 = false;
+        }
+        let _e19 = local_13;
+        local_12 = _e19;
+    } else {
+        local_12 = true;
+    }
+    let _e21 = local_12;
+    if _e21 {
         return 1f;
     }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
+    let c_8 = cross(v_7, d_1);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_2)) / d2_3), 1f);
 }
 
-fn safe_sqrt(x_2: f32) -> f32 {
-    return sqrt(max(x_2, 0f));
-}
-
-fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_10 = (center - p);
-    let dist2_ = dot(v_10, v_10);
-    if (dist2_ <= (radius * radius)) {
-        return 1f;
-    }
-    let dist = sqrt(dist2_);
-    let c_8 = cross(v_10, d_1);
-    let sin_b_1 = (radius / dist);
-    let _e20 = safe_sqrt((1f - (sin_b_1 * sin_b_1)));
-    let _e21 = cos_sub_clamped((sqrt(dot(c_8, c_8)) / dist), (dot(v_10, d_1) / dist), sin_b_1, _e20);
-    return _e21;
+fn cone_cos_toward(center: vec3<f32>, radius: f32, p: vec3<f32>, d_2: vec3<f32>) -> f32 {
+    let v_11 = (center - p);
+    let _e6 = cone_cos_of(v_11, dot(v_11, v_11), radius, d_2);
+    return _e6;
 }
 
 fn range_scale_at(rl: vec4<f32>, cos_t: f32) -> f32 {
@@ -626,14 +632,14 @@ fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: 
     return _e10;
 }
 
-fn ray_inverse(x_3: f32) -> f32 {
-    return (1f / select(x_3, 0.000000000000000000000000000001f, (abs(x_3) < 0.000000000000000000000000000001f)));
+fn ray_inverse(x_2: f32) -> f32 {
+    return (1f / select(x_2, 0.000000000000000000000000000001f, (abs(x_2) < 0.000000000000000000000000000001f)));
 }
 
-fn ray_inverse3_(d_2: vec3<f32>) -> vec3<f32> {
-    let _e2 = ray_inverse(d_2.x);
-    let _e4 = ray_inverse(d_2.y);
-    let _e6 = ray_inverse(d_2.z);
+fn ray_inverse3_(d_3: vec3<f32>) -> vec3<f32> {
+    let _e2 = ray_inverse(d_3.x);
+    let _e4 = ray_inverse(d_3.y);
+    let _e6 = ray_inverse(d_3.z);
     return vec3<f32>(_e2, _e4, _e6);
 }
 
@@ -650,17 +656,17 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
     return -1f;
 }
 
-fn triangle_normal(a_2: vec3<f32>, b_2: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
-    var local_12: bool;
+fn triangle_normal(a_3: vec3<f32>, b_2: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
+    var local_14: bool;
 
-    let n_15 = cross((b_2 - a_2), (c_2 - a_2));
+    let n_15 = cross((b_2 - a_3), (c_2 - a_3));
     let l2_ = dot(n_15, n_15);
     if !(!((l2_ > 0f))) {
-        local_12 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_14 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_12 = true;
+        local_14 = true;
     }
-    let _e17 = local_12;
+    let _e17 = local_14;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -671,10 +677,10 @@ fn face_against(n_11: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
     return select(n_11, -(n_11), (dot(n_11, dir) > 0f));
 }
 
-fn barycentric(p_2: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
-    let e1_ = (b_3 - a_3);
-    let e2_ = (c_3 - a_3);
-    let q = (p_2 - a_3);
+fn barycentric(p_2: vec3<f32>, a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
+    let e1_ = (b_3 - a_4);
+    let e2_ = (c_3 - a_4);
+    let q = (p_2 - a_4);
     let d11_ = dot(e1_, e1_);
     let d12_ = dot(e1_, e2_);
     let d22_ = dot(e2_, e2_);
@@ -688,16 +694,16 @@ fn barycentric(p_2: vec3<f32>, a_3: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -
 }
 
 fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_2: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
-    var local_13: bool;
+    var local_15: bool;
 
     let s_4 = (((n0_ * w_2.x) + (n1_ * w_2.y)) + (n2_ * w_2.z));
     let l2_1 = dot(s_4, s_4);
     if !(!((l2_1 > 0.000000000001f))) {
-        local_13 = !((l2_1 < 300000000000000000000000000000000000000f));
+        local_15 = !((l2_1 < 300000000000000000000000000000000000000f));
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    let _e24 = local_13;
+    let _e24 = local_15;
     if _e24 {
         return facing;
     }
@@ -705,48 +711,48 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_2: vec3<f32>
     return select(n_16, -(n_16), (dot(n_16, facing) < 0f));
 }
 
-fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_4: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_14: bool;
-    var local_15: bool;
+fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
     var local_16: bool;
+    var local_17: bool;
+    var local_18: bool;
 
-    let e1_1 = (b_4 - a_4);
-    let e2_1 = (c_4 - a_4);
-    let p_3 = cross(d_3, e2_1);
+    let e1_1 = (b_4 - a_5);
+    let e2_1 = (c_4 - a_5);
+    let p_3 = cross(d_4, e2_1);
     let det = dot(e1_1, p_3);
     if (abs(det) <= 0f) {
         return -1f;
     }
     let inv_1 = (1f / det);
-    let s_5 = (o_1 - a_4);
+    let s_5 = (o_1 - a_5);
     let u_3 = (dot(s_5, p_3) * inv_1);
     if !((u_3 < 0f)) {
-        local_14 = (u_3 > 1f);
+        local_16 = (u_3 > 1f);
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    let _e28 = local_14;
+    let _e28 = local_16;
     if _e28 {
         return -1f;
     }
     let q_1 = cross(s_5, e1_1);
-    let v_11 = (dot(d_3, q_1) * inv_1);
-    if !((v_11 < 0f)) {
-        local_15 = ((u_3 + v_11) > 1f);
+    let v_12 = (dot(d_4, q_1) * inv_1);
+    if !((v_12 < 0f)) {
+        local_17 = ((u_3 + v_12) > 1f);
     } else {
-        local_15 = true;
+        local_17 = true;
     }
-    let _e42 = local_15;
+    let _e42 = local_17;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_1, q_1) * inv_1);
     if (t_3 > t_min) {
-        local_16 = (t_3 < t_max_1);
+        local_18 = (t_3 < t_max_1);
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    let _e51 = local_16;
+    let _e51 = local_18;
     if _e51 {
         return t_3;
     }
@@ -773,33 +779,33 @@ fn sees_emission(gn: vec3<f32>, dir_1: vec3<f32>) -> bool {
 }
 
 fn continues_path(nd: vec3<f32>, n_12: vec3<f32>, ng: vec3<f32>) -> bool {
-    var local_17: bool;
-
-    if (dot(nd, n_12) > 0f) {
-        local_17 = (dot(nd, ng) > 0f);
-    } else {
-        local_17 = false;
-    }
-    let _e12 = local_17;
-    return _e12;
-}
-
-fn finite3_(v_7: vec3<f32>) -> bool {
-    var local_18: bool;
     var local_19: bool;
 
-    if (abs(v_7.x) <= F32_MAX) {
-        local_18 = (abs(v_7.y) <= F32_MAX);
-    } else {
-        local_18 = false;
-    }
-    let _e12 = local_18;
-    if _e12 {
-        local_19 = (abs(v_7.z) <= F32_MAX);
+    if (dot(nd, n_12) > 0f) {
+        local_19 = (dot(nd, ng) > 0f);
     } else {
         local_19 = false;
     }
-    let _e20 = local_19;
+    let _e12 = local_19;
+    return _e12;
+}
+
+fn finite3_(v_8: vec3<f32>) -> bool {
+    var local_20: bool;
+    var local_21: bool;
+
+    if (abs(v_8.x) <= F32_MAX) {
+        local_20 = (abs(v_8.y) <= F32_MAX);
+    } else {
+        local_20 = false;
+    }
+    let _e12 = local_20;
+    if _e12 {
+        local_21 = (abs(v_8.z) <= F32_MAX);
+    } else {
+        local_21 = false;
+    }
+    let _e20 = local_21;
     return _e20;
 }
 
@@ -822,7 +828,7 @@ fn light_normal(l_5: GpuLight) -> vec3<f32> {
     return vec3(0f);
 }
 
-fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
+fn trace(o_2: vec3<f32>, d_5: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bool) -> GeoHit {
     var hit: GeoHit;
     var stack: array<u32, 64>;
     var sp: u32 = 0u;
@@ -835,7 +841,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
         let _e13 = hit;
         return _e13;
     }
-    let _e14 = ray_inverse3_(d_4);
+    let _e14 = ray_inverse3_(d_5);
     loop {
         let _e21 = node_2;
         let n_17 = geo_nodes[_e21];
@@ -854,7 +860,7 @@ fn trace(o_2: vec3<f32>, d_4: vec3<f32>, t_min_1: f32, t_max_2: f32, any_hit: bo
                         let _e42 = i;
                         let t_4 = geo_tris[_e42];
                         let _e49 = hit.t;
-                        let _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        let _e50 = ray_triangle(o_2, d_5, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0f) {
                             hit.t = _e50;
                             let _e55 = i;
@@ -901,73 +907,52 @@ fn mis_weight(pdf_a_1: f32, pdf_b_1: f32) -> f32 {
     return _e2;
 }
 
-fn light_range_scale(li: u32, x_4: vec3<f32>, r_2: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+fn light_range_scale(li: u32, x_3: vec3<f32>, r_2: vec3<f32>, rl_2: vec4<f32>) -> f32 {
     let c_9 = light_cones[li];
-    let _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_4, r_2);
+    let _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_3, r_2);
     return _e9;
 }
 
-fn select_pdf(li_1: u32, x_5: vec3<f32>, n_13: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>, rl_3: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
+fn select_pdf(li_1: u32, x_4: vec3<f32>, n_13: vec3<f32>, r_3: vec3<f32>, lobe_5: vec4<f32>, rl_3: vec4<f32>, nee: u32, in_range_1: bool) -> f32 {
     let _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-fn light_pdf_selected(li_2: u32, x_6: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, y: vec3<f32>, sel: f32) -> f32 {
+fn light_pdf_selected(li_2: u32, x_5: vec3<f32>, r_4: vec3<f32>, rl_4: vec4<f32>, y: vec3<f32>, sel: f32) -> f32 {
     let l_6 = lights[li_2];
-    let v_12 = (x_6 - y);
-    let d2_4 = dot(v_12, v_12);
+    let v_13 = (x_5 - y);
+    let d2_5 = dot(v_13, v_13);
     let _e11 = light_normal(l_6);
-    let cos_y_1 = select(0f, dot(_e11, (v_12 / vec3(sqrt(d2_4)))), (d2_4 > 0f));
-    let _e20 = light_range_scale(li_2, x_6, r_4, rl_4);
+    let cos_y_1 = select(0f, dot(_e11, (v_13 / vec3(sqrt(d2_5)))), (d2_5 > 0f));
+    let _e20 = light_range_scale(li_2, x_5, r_4, rl_4);
     let _e23 = rt2_2[li_2];
     let _e25 = light_area(l_6);
-    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_4, _e25, cos_y_1);
+    let _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_5, _e25, cos_y_1);
     return _e26;
 }
 
-fn light_pdf(li_3: u32, x_7: vec3<f32>, n_14: vec3<f32>, r_5: vec3<f32>, lobe_6: vec4<f32>, rl_5: vec4<f32>, y_1: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
-    let _e9 = select_pdf(li_3, x_7, n_14, r_5, lobe_6, rl_5, nee_1, in_range_2);
-    let _e10 = light_pdf_selected(li_3, x_7, r_5, rl_5, y_1, _e9);
+fn light_pdf(li_3: u32, x_6: vec3<f32>, n_14: vec3<f32>, r_5: vec3<f32>, lobe_6: vec4<f32>, rl_5: vec4<f32>, y_1: vec3<f32>, nee_1: u32, in_range_2: bool) -> f32 {
+    let _e9 = select_pdf(li_3, x_6, n_14, r_5, lobe_6, rl_5, nee_1, in_range_2);
+    let _e10 = light_pdf_selected(li_3, x_6, r_5, rl_5, y_1, _e9);
     return _e10;
 }
 
-fn bsh_inner_scale(a_5: f32, v_8: vec3<f32>, d2_3: f32, r_6: vec3<f32>, rl_6: vec4<f32>) -> f32 {
-    var local_20: bool;
-    var local_21: bool;
-
-    let vr = dot(v_8, r_6);
-    let h2_ = (d2_3 - (a_5 * a_5));
-    if !((h2_ <= 0f)) {
-        if (vr >= 0f) {
-            local_21 = ((vr * vr) >= h2_);
-        } else {
-            local_21 = false;
-        }
-        let _e20 = local_21;
-        local_20 = _e20;
-    } else {
-        local_20 = true;
-    }
-    let _e22 = local_20;
-    if _e22 {
-        return (rl_6.w * rl_6.w);
-    }
-    let c_10 = cross(v_8, r_6);
-    let cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_10, c_10)) * a_5)) / d2_3);
-    let _e36 = range_scale_at(rl_6, (cos_t_1 + 0.000002f));
-    return _e36;
+fn bsh_inner_scale(a_6: f32, v_9: vec3<f32>, d2_4: f32, r_6: vec3<f32>, rl_6: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_9, d2_4, a_6, r_6);
+    let _e8 = range_scale_at(rl_6, (_e5 + 0.000002f));
+    return _e8;
 }
 
-fn bsh_reaches(node_3: BshNode, x_8: vec3<f32>, r_7: vec3<f32>, rl_7: vec4<f32>) -> bool {
+fn bsh_reaches(node_3: BshNode, x_7: vec3<f32>, r_7: vec3<f32>, rl_7: vec4<f32>) -> bool {
     var local_22: bool;
     var local_23: bool;
 
-    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_8);
+    let _e6 = sphere_contains_point(node_3.center, node_3.radius, x_7);
     if _e6 {
         return true;
     }
     if !((rl_7.w <= 1f)) {
-        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_7.w * 1.0001f)), x_8);
+        let _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_7.w * 1.0001f)), x_7);
         local_22 = !(_e20);
     } else {
         local_22 = true;
@@ -977,23 +962,23 @@ fn bsh_reaches(node_3: BshNode, x_8: vec3<f32>, r_7: vec3<f32>, rl_7: vec4<f32>)
         return false;
     }
     let _e25 = bsh_range_bound(node_3);
-    let v_13 = (x_8 - node_3.center);
-    let d2_5 = dot(v_13, v_13);
+    let v_14 = (x_7 - node_3.center);
+    let d2_6 = dot(v_14, v_14);
     let reach_max = (node_3.extent + ((rl_7.w * 1.001f) * _e25));
-    if (d2_5 > (reach_max * reach_max)) {
+    if (d2_6 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        let _e43 = range_scale_toward(rl_7, node_3.center, node_3.extent, x_8, r_7);
+        let _e43 = range_scale_toward(rl_7, node_3.center, node_3.extent, x_7, r_7);
         let _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        let _e47 = sphere_contains_point(node_3.center, _e46, x_8);
+        let _e47 = sphere_contains_point(node_3.center, _e46, x_7);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_3.extent, -(v_13), d2_5, r_7, rl_7);
+    let _e50 = bsh_inner_scale(node_3.extent, -(v_14), d2_6, r_7, rl_7);
     let s_c = (_e50 * 1.001f);
     let reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if (d2_5 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_23 = (d2_5 <= (reach * reach));
+    if (d2_6 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_23 = (d2_6 <= (reach * reach));
     } else {
         local_23 = false;
     }
@@ -1081,7 +1066,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let tri = geo_tris[_e94.tri];
     let _e111 = st.origin;
     let _e113 = st.dir;
-    let x_9 = (_e111 + (_e113 * _e94.t));
+    let x_8 = (_e111 + (_e113 * _e94.t));
     let _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     let _e122 = st.dir;
     let _e123 = face_against(_e120, _e122);
@@ -1089,7 +1074,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e129 = geo_normals[b_6];
     let _e135 = geo_normals[(b_6 + 1u)];
     let _e141 = geo_normals[(b_6 + 2u)];
-    let _e146 = barycentric(x_9, tri.v0_, tri.v1_, tri.v2_);
+    let _e146 = barycentric(x_8, tri.v0_, tri.v1_, tri.v2_);
     let _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if (tri.light != NO_LIGHT) {
         let _e154 = st.dir;
@@ -1115,7 +1100,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             let _e187 = st.prev_r;
             let _e189 = st.prev_lobe;
             let _e192 = candidates[i_1];
-            let _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, _e173, x_9, _e192, _e178);
+            let _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, _e173, x_8, _e192, _e178);
             let _e194 = mis_weight(_e180, _e193);
             w = _e194;
         }
@@ -1143,7 +1128,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e232 = st.dir;
     let wo_1 = -(_e232);
     let _e240 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
-    v.position = x_9;
+    v.position = x_8;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
@@ -1169,14 +1154,14 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         let _e282 = st.beta;
         st.beta = (_e282 * m_2.albedo);
     }
-    st.prev = x_9;
+    st.prev = x_8;
     st.prev_normal = _e147;
     let _e288 = mirror_dir(_e147, wo_1);
     st.prev_r = _e288;
     st.prev_lobe = _e240;
     st.pdf_bsdf = _e264;
     let _e294 = params.eps;
-    st.origin = (x_9 + (_e123 * _e294));
+    st.origin = (x_8 + (_e123 * _e294));
     st.dir = _e262;
     let _e298 = continues_path(_e262, _e147, _e123);
     if !(!(_e298)) {

@@ -147,8 +147,8 @@ bool slc_keep(float r2_, float d2_1) {
 }
 
 bool sphere_contains_point(vec3 c, float r, vec3 x_1) {
-    vec3 v_1 = (x_1 - c);
-    return (dot(v_1, v_1) <= (r * r));
+    vec3 v_2 = (x_1 - c);
+    return (dot(v_2, v_2) <= (r * r));
 }
 
 float inverse_square(float d2_2) {
@@ -164,11 +164,11 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
 float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
     bool local = false;
     bool local_1 = false;
-    vec3 v_2 = (x_2 - y);
-    float d2_5 = dot(v_2, v_2);
-    bool _e7 = slc_keep(r2_1, d2_5);
+    vec3 v_3 = (x_2 - y);
+    float d2_6 = dot(v_3, v_3);
+    bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local = !((d2_5 > 0.0));
+        local = !((d2_6 > 0.0));
     } else {
         local = true;
     }
@@ -176,7 +176,7 @@ float connection_cosine(vec3 x_2, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_3 = (v_2 / vec3(sqrt(d2_5)));
+    vec3 w_3 = (v_3 / vec3(sqrt(d2_6)));
     float cos_x_1 = -(dot(n, w_3));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = (dot(ng, w_3) >= 0.0);
@@ -263,29 +263,34 @@ float reservoir_weight(uint n_5, uint k_1) {
     return max((_e2 / _e3), 1.0);
 }
 
-float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
-    if ((cos_a > cos_b)) {
+float cone_cos_of(vec3 v, float d2_4, float a_4, vec3 d) {
+    bool local_2 = false;
+    bool local_3 = false;
+    float vd = dot(v, d);
+    float h2_ = (d2_4 - (a_4 * a_4));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_3 = ((vd * vd) >= h2_);
+        } else {
+            local_3 = false;
+        }
+        bool _e19 = local_3;
+        local_2 = _e19;
+    } else {
+        local_2 = true;
+    }
+    bool _e21 = local_2;
+    if (_e21) {
         return 1.0;
     }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
+    vec3 c_4 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_4, c_4)) * a_4)) / d2_4), 1.0);
 }
 
-float safe_sqrt(float x_3) {
-    return sqrt(max(x_3, 0.0));
-}
-
-float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d) {
-    vec3 v_3 = (center - p);
-    float dist2_ = dot(v_3, v_3);
-    if ((dist2_ <= (radius * radius))) {
-        return 1.0;
-    }
-    float dist = sqrt(dist2_);
-    vec3 c_4 = cross(v_3, d);
-    float sin_b_1 = (radius / dist);
-    float _e20 = safe_sqrt((1.0 - (sin_b_1 * sin_b_1)));
-    float _e21 = cos_sub_clamped((sqrt(dot(c_4, c_4)) / dist), (dot(v_3, d) / dist), sin_b_1, _e20);
-    return _e21;
+float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
+    vec3 v_4 = (center - p);
+    float _e6 = cone_cos_of(v_4, dot(v_4, v_4), radius, d_1);
+    return _e6;
 }
 
 float range_scale_at(vec4 rl, float cos_t) {
@@ -302,16 +307,16 @@ float range_scale_toward(vec4 rl_1, vec3 center_1, float radius_1, vec3 p_1, vec
     return _e10;
 }
 
-vec3 triangle_normal(vec3 a_4, vec3 b_4, vec3 c_2) {
-    bool local_2 = false;
-    vec3 n_7 = cross((b_4 - a_4), (c_2 - a_4));
+vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_2) {
+    bool local_4 = false;
+    vec3 n_7 = cross((b_4 - a_5), (c_2 - a_5));
     float l2_ = dot(n_7, n_7);
     if (!(!((l2_ > 0.0)))) {
-        local_2 = !((l2_ < 3e38));
+        local_4 = !((l2_ < 3e38));
     } else {
-        local_2 = true;
+        local_4 = true;
     }
-    bool _e17 = local_2;
+    bool _e17 = local_4;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -342,7 +347,7 @@ vec3 light_point(GpuLight l_1, float u1_1, float u2_1) {
     return l_1.p0_;
 }
 
-bool occluded(vec3 a_5, vec3 b_5) {
+bool occluded(vec3 a_6, vec3 b_5) {
     return false;
 }
 
@@ -363,41 +368,21 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_6, vec3 v, float d2_4, vec3 r_2, vec4 rl_2) {
-    bool local_3 = false;
-    bool local_4 = false;
-    float vr = dot(v, r_2);
-    float h2_ = (d2_4 - (a_6 * a_6));
-    if (!((h2_ <= 0.0))) {
-        if ((vr >= 0.0)) {
-            local_4 = ((vr * vr) >= h2_);
-        } else {
-            local_4 = false;
-        }
-        bool _e20 = local_4;
-        local_3 = _e20;
-    } else {
-        local_3 = true;
-    }
-    bool _e22 = local_3;
-    if (_e22) {
-        return (rl_2.w * rl_2.w);
-    }
-    vec3 c_5 = cross(v, r_2);
-    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_5, c_5)) * a_6)) / d2_4);
-    float _e36 = range_scale_at(rl_2, (cos_t_1 + 2e-6));
-    return _e36;
+float bsh_inner_scale(float a_7, vec3 v_1, float d2_5, vec3 r_2, vec4 rl_2) {
+    float _e5 = cone_cos_of(v_1, d2_5, a_7, r_2);
+    float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
+    return _e8;
 }
 
-bool bsh_reaches(BshNode node_2, vec3 x_4, vec3 r_3, vec4 rl_3) {
+bool bsh_reaches(BshNode node_2, vec3 x_3, vec3 r_3, vec4 rl_3) {
     bool local_5 = false;
     bool local_6 = false;
-    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
+    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_3);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001)), x_4);
+        bool _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001)), x_3);
         local_5 = !(_e20);
     } else {
         local_5 = true;
@@ -407,23 +392,23 @@ bool bsh_reaches(BshNode node_2, vec3 x_4, vec3 r_3, vec4 rl_3) {
         return false;
     }
     float _e25 = bsh_range_bound(node_2);
-    vec3 v_4 = (x_4 - node_2.center);
-    float d2_6 = dot(v_4, v_4);
+    vec3 v_5 = (x_3 - node_2.center);
+    float d2_7 = dot(v_5, v_5);
     float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_6 > (reach_max * reach_max))) {
+    if ((d2_7 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_2.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_4, r_3);
+        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_3, r_3);
         float _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_2.center, _e46, x_4);
+        bool _e47 = sphere_contains_point(node_2.center, _e46, x_3);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_2.extent, -(v_4), d2_6, r_3, rl_3);
+    float _e50 = bsh_inner_scale(node_2.extent, -(v_5), d2_7, r_3, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if ((d2_6 <= ((node_2.radius * node_2.radius) * s_c))) {
-        local_6 = (d2_6 <= (reach * reach));
+    if ((d2_7 <= ((node_2.radius * node_2.radius) * s_c))) {
+        local_6 = (d2_7 <= (reach * reach));
     } else {
         local_6 = false;
     }
@@ -431,7 +416,7 @@ bool bsh_reaches(BshNode node_2, vec3 x_4, vec3 r_3, vec4 rl_3) {
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_4, vec4 rl_4) {
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_4, vec3 r_4, vec4 rl_4) {
     uint i_1 = 0u;
     i_1 = start;
     while(true) {
@@ -443,7 +428,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_4, vec4 rl_4)
         {
             uint _e9 = i_1;
             BshNode _e10 = bsh_node(nodes_3, _e9);
-            bool _e11 = bsh_reaches(_e10, x_5, r_4, rl_4);
+            bool _e11 = bsh_reaches(_e10, x_4, r_4, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     uint _e15 = i_1;
@@ -458,21 +443,21 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, vec3 x_5, vec3 r_4, vec4 rl_4)
     return BSH_NONE;
 }
 
-Picks bsh_collect(vec3 x_6, vec3 r_5, vec4 rl_5, uint seed_1) {
+Picks bsh_collect(vec3 x_5, vec3 r_5, vec4 rl_5, uint seed_1) {
     Picks picks = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_1 = 0u;
     uint i_2 = 0u;
     picks.n = 0u;
     h_1 = seed_1;
     uint _e10 = bsh_first(BSH);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_5, rl_5);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_5, r_5, rl_5);
     i_2 = _e11;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
             uint _e44 = i_2;
             uint _e47 = _group_0_binding_6_cs[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_6, r_5, rl_5);
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_5, r_5, rl_5);
             i_2 = _e48;
         }
         loop_init = false;
@@ -509,7 +494,7 @@ Picks bsh_collect(vec3 x_6, vec3 r_5, vec4 rl_5, uint seed_1) {
     return _e49;
 }
 
-Connection connect(uint li, vec3 x_7, vec3 n_6, vec3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps) {
+Connection connect(uint li, vec3 x_6, vec3 n_6, vec3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps) {
     Connection c_3 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_7 = false;
     c_3.e = vec3(0.0);
@@ -518,12 +503,12 @@ Connection connect(uint li, vec3 x_7, vec3 n_6, vec3 ng_1, float s_1, float w_re
     c_3.y = _e17;
     vec3 _e20 = c_3.y;
     float _e23 = _group_0_binding_5_cs[li];
-    float _e25 = connection_cosine(x_7, _e20, n_6, ng_1, (s_1 * _e23));
+    float _e25 = connection_cosine(x_6, _e20, n_6, ng_1, (s_1 * _e23));
     c_3.cos_x = _e25;
     float _e27 = c_3.cos_x;
     if (!((_e27 <= 0.0))) {
         vec3 _e36 = c_3.y;
-        bool _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
+        bool _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
         local_7 = _e37;
     } else {
         local_7 = true;
@@ -534,12 +519,12 @@ Connection connect(uint li, vec3 x_7, vec3 n_6, vec3 ng_1, float s_1, float w_re
         return _e40;
     }
     vec3 _e42 = c_3.y;
-    vec3 v_5 = (x_7 - _e42);
-    float d2_7 = dot(v_5, v_5);
-    vec3 _e49 = light_intensity(l_2, (v_5 / vec3(sqrt(d2_7))));
+    vec3 v_6 = (x_6 - _e42);
+    float d2_8 = dot(v_6, v_6);
+    vec3 _e49 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
     float _e51 = c_3.cos_x;
     float _e54 = _group_0_binding_4_cs[li];
-    float _e56 = connection_factor(_e51, d2_7, (s_1 * _e54), w_res);
+    float _e56 = connection_factor(_e51, d2_8, (s_1 * _e54), w_res);
     c_3.e = (_e49 * _e56);
     Connection _e58 = c_3;
     return _e58;
@@ -560,13 +545,13 @@ void main() {
         _group_0_binding_9_cs[i_3] = vec4(0.0);
         return;
     }
-    vec3 x_8 = p_2.xyz;
+    vec3 x_7 = p_2.xyz;
     vec4 _e19 = _group_0_binding_2_cs[i_3];
     vec3 n_8 = _e19.xyz;
     uint _e23 = _group_0_binding_0_cs.seed;
     uint _e26 = _group_0_binding_0_cs.frame;
     uint _e27 = point_stream(_e23, i_3, _e26);
-    Picks _e33 = bsh_collect(x_8, x_8, vec4(1.0, 0.0, 1.0, 1.0), _e27);
+    Picks _e33 = bsh_collect(x_7, x_7, vec4(1.0, 0.0, 1.0, 1.0), _e27);
     float _e36 = reservoir_weight(_e33.n, K);
     uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -596,7 +581,7 @@ void main() {
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = _group_0_binding_0_cs.eps;
-            Connection _e65 = connect(_e33.light[_e57], x_8, n_8, n_8, 1.0, _e36, _e52, _e61, _e64);
+            Connection _e65 = connect(_e33.light[_e57], x_7, n_8, n_8, 1.0, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
     }

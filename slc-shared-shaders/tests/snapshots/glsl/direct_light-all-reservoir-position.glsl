@@ -179,8 +179,8 @@ bool slc_keep(float r2_, float d2_1) {
 }
 
 bool sphere_contains_point(vec3 c, float r_1, vec3 x_2) {
-    vec3 v_1 = (x_2 - c);
-    return (dot(v_1, v_1) <= (r_1 * r_1));
+    vec3 v_2 = (x_2 - c);
+    return (dot(v_2, v_2) <= (r_1 * r_1));
 }
 
 float inverse_square(float d2_2) {
@@ -196,11 +196,11 @@ float connection_factor(float cos_x, float d2_3, float rt2_1, float w) {
 float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     bool local_2 = false;
     bool local_3 = false;
-    vec3 v_2 = (x_3 - y);
-    float d2_5 = dot(v_2, v_2);
-    bool _e7 = slc_keep(r2_1, d2_5);
+    vec3 v_3 = (x_3 - y);
+    float d2_6 = dot(v_3, v_3);
+    bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_2 = !((d2_5 > 0.0));
+        local_2 = !((d2_6 > 0.0));
     } else {
         local_2 = true;
     }
@@ -208,7 +208,7 @@ float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_5 = (v_2 / vec3(sqrt(d2_5)));
+    vec3 w_5 = (v_3 / vec3(sqrt(d2_6)));
     float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = (dot(ng, w_5) >= 0.0);
@@ -244,15 +244,15 @@ vec3 triangle_sample(vec3 a_2, vec3 b_2, vec3 c_1, float u1_, float u2_) {
 float atan_portable(float x_4) {
     float base = 0.0;
     float t_1 = 0.0;
-    float a_9 = abs(x_4);
-    t_1 = a_9;
-    if ((a_9 > 2.4142137)) {
+    float a_10 = abs(x_4);
+    t_1 = a_10;
+    if ((a_10 > 2.4142137)) {
         base = 1.5707964;
-        t_1 = (-1.0 / a_9);
+        t_1 = (-1.0 / a_10);
     } else {
-        if ((a_9 > 0.41421357)) {
+        if ((a_10 > 0.41421357)) {
             base = 0.7853982;
-            t_1 = ((a_9 - 1.0) / (a_9 + 1.0));
+            t_1 = ((a_10 - 1.0) / (a_10 + 1.0));
         }
     }
     float _e18 = t_1;
@@ -405,11 +405,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_3) {
     float _e54 = ies_lerp_t(_e51, _e53, _e32);
     float _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
     float _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
-    float a_10 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
+    float a_11 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
     float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
     float b_7 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
-    return ((a_10 * (1.0 - _e54)) + (b_7 * _e54));
+    return ((a_11 * (1.0 - _e54)) + (b_7 * _e54));
 }
 
 float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws) {
@@ -522,29 +522,34 @@ vec4 range_lobe(vec4 lobe_4) {
     return vec4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
-float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
-    if ((cos_a > cos_b)) {
+float cone_cos_of(vec3 v, float d2_4, float a_5, vec3 d) {
+    bool local_5 = false;
+    bool local_6 = false;
+    float vd = dot(v, d);
+    float h2_ = (d2_4 - (a_5 * a_5));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_6 = ((vd * vd) >= h2_);
+        } else {
+            local_6 = false;
+        }
+        bool _e19 = local_6;
+        local_5 = _e19;
+    } else {
+        local_5 = true;
+    }
+    bool _e21 = local_5;
+    if (_e21) {
         return 1.0;
     }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
+    vec3 c_7 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_5)) / d2_4), 1.0);
 }
 
-float safe_sqrt(float x_8) {
-    return sqrt(max(x_8, 0.0));
-}
-
-float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d) {
-    vec3 v_3 = (center - p);
-    float dist2_ = dot(v_3, v_3);
-    if ((dist2_ <= (radius * radius))) {
-        return 1.0;
-    }
-    float dist = sqrt(dist2_);
-    vec3 c_7 = cross(v_3, d);
-    float sin_b_1 = (radius / dist);
-    float _e20 = safe_sqrt((1.0 - (sin_b_1 * sin_b_1)));
-    float _e21 = cos_sub_clamped((sqrt(dot(c_7, c_7)) / dist), (dot(v_3, d) / dist), sin_b_1, _e20);
-    return _e21;
+float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
+    vec3 v_4 = (center - p);
+    float _e6 = cone_cos_of(v_4, dot(v_4, v_4), radius, d_1);
+    return _e6;
 }
 
 float range_scale_at(vec4 rl, float cos_t) {
@@ -561,16 +566,16 @@ float range_scale_toward(vec4 rl_1, vec3 center_1, float radius_1, vec3 p_1, vec
     return _e10;
 }
 
-vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_4) {
-    bool local_5 = false;
-    vec3 n_9 = cross((b_4 - a_5), (c_4 - a_5));
+vec3 triangle_normal(vec3 a_6, vec3 b_4, vec3 c_4) {
+    bool local_7 = false;
+    vec3 n_9 = cross((b_4 - a_6), (c_4 - a_6));
     float l2_ = dot(n_9, n_9);
     if (!(!((l2_ > 0.0)))) {
-        local_5 = !((l2_ < 3e38));
+        local_7 = !((l2_ < 3e38));
     } else {
-        local_5 = true;
+        local_7 = true;
     }
-    bool _e17 = local_5;
+    bool _e17 = local_7;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -609,7 +614,7 @@ vec3 light_point(GpuLight l_1, float u1_1, float u2_1) {
     return l_1.p0_;
 }
 
-bool occluded(vec3 a_6, vec3 b_5) {
+bool occluded(vec3 a_7, vec3 b_5) {
     return false;
 }
 
@@ -630,41 +635,21 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_7, vec3 v, float d2_4, vec3 r_3, vec4 rl_2) {
-    bool local_6 = false;
-    bool local_7 = false;
-    float vr = dot(v, r_3);
-    float h2_ = (d2_4 - (a_7 * a_7));
-    if (!((h2_ <= 0.0))) {
-        if ((vr >= 0.0)) {
-            local_7 = ((vr * vr) >= h2_);
-        } else {
-            local_7 = false;
-        }
-        bool _e20 = local_7;
-        local_6 = _e20;
-    } else {
-        local_6 = true;
-    }
-    bool _e22 = local_6;
-    if (_e22) {
-        return (rl_2.w * rl_2.w);
-    }
-    vec3 c_8 = cross(v, r_3);
-    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_7)) / d2_4);
-    float _e36 = range_scale_at(rl_2, (cos_t_1 + 2e-6));
-    return _e36;
+float bsh_inner_scale(float a_8, vec3 v_1, float d2_5, vec3 r_3, vec4 rl_2) {
+    float _e5 = cone_cos_of(v_1, d2_5, a_8, r_3);
+    float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
+    return _e8;
 }
 
-bool bsh_reaches(BshNode node_2, vec3 x_9, vec3 r_4, vec4 rl_3) {
+bool bsh_reaches(BshNode node_2, vec3 x_8, vec3 r_4, vec4 rl_3) {
     bool local_8 = false;
     bool local_9 = false;
-    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_9);
+    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_8);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001)), x_9);
+        bool _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001)), x_8);
         local_8 = !(_e20);
     } else {
         local_8 = true;
@@ -674,23 +659,23 @@ bool bsh_reaches(BshNode node_2, vec3 x_9, vec3 r_4, vec4 rl_3) {
         return false;
     }
     float _e25 = bsh_range_bound(node_2);
-    vec3 v_4 = (x_9 - node_2.center);
-    float d2_6 = dot(v_4, v_4);
+    vec3 v_5 = (x_8 - node_2.center);
+    float d2_7 = dot(v_5, v_5);
     float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_6 > (reach_max * reach_max))) {
+    if ((d2_7 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_2.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_9, r_4);
+        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_8, r_4);
         float _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_2.center, _e46, x_9);
+        bool _e47 = sphere_contains_point(node_2.center, _e46, x_8);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_2.extent, -(v_4), d2_6, r_4, rl_3);
+    float _e50 = bsh_inner_scale(node_2.extent, -(v_5), d2_7, r_4, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if ((d2_6 <= ((node_2.radius * node_2.radius) * s_c))) {
-        local_9 = (d2_6 <= (reach * reach));
+    if ((d2_7 <= ((node_2.radius * node_2.radius) * s_c))) {
+        local_9 = (d2_7 <= (reach * reach));
     } else {
         local_9 = false;
     }
@@ -698,7 +683,7 @@ bool bsh_reaches(BshNode node_2, vec3 x_9, vec3 r_4, vec4 rl_3) {
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_10, vec3 r_5, vec4 rl_4) {
+uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_9, vec3 r_5, vec4 rl_4) {
     uint i_2 = 0u;
     i_2 = start_1;
     while(true) {
@@ -710,7 +695,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_10, vec3 r_5, vec4 rl
         {
             uint _e9 = i_2;
             BshNode _e10 = bsh_node(nodes_3, _e9);
-            bool _e11 = bsh_reaches(_e10, x_10, r_5, rl_4);
+            bool _e11 = bsh_reaches(_e10, x_9, r_5, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     uint _e15 = i_2;
@@ -725,21 +710,21 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_10, vec3 r_5, vec4 rl
     return BSH_NONE;
 }
 
-Picks bsh_collect(vec3 x_11, vec3 r_6, vec4 rl_5, uint seed_1) {
+Picks bsh_collect(vec3 x_10, vec3 r_6, vec4 rl_5, uint seed_1) {
     Picks picks = Picks(uint[8](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_1 = 0u;
     uint i_3 = 0u;
     picks.n = 0u;
     h_1 = seed_1;
     uint _e10 = bsh_first(BSH);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_6, rl_5);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_10, r_6, rl_5);
     i_3 = _e11;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
             uint _e44 = i_3;
             uint _e47 = _group_1_binding_4_cs[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_6, rl_5);
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_10, r_6, rl_5);
             i_3 = _e48;
         }
         loop_init = false;
@@ -776,7 +761,7 @@ Picks bsh_collect(vec3 x_11, vec3 r_6, vec4 rl_5, uint seed_1) {
     return _e49;
 }
 
-Connection connect(uint li, vec3 x_12, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps) {
+Connection connect(uint li, vec3 x_11, vec3 n_7, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps) {
     Connection c_5 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_10 = false;
     c_5.e = vec3(0.0);
@@ -785,12 +770,12 @@ Connection connect(uint li, vec3 x_12, vec3 n_7, vec3 ng_1, float s, float w_res
     c_5.y = _e17;
     vec3 _e20 = c_5.y;
     float _e23 = _group_1_binding_3_cs[li];
-    float _e25 = connection_cosine(x_12, _e20, n_7, ng_1, (s * _e23));
+    float _e25 = connection_cosine(x_11, _e20, n_7, ng_1, (s * _e23));
     c_5.cos_x = _e25;
     float _e27 = c_5.cos_x;
     if (!((_e27 <= 0.0))) {
         vec3 _e36 = c_5.y;
-        bool _e37 = occluded((x_12 + (ng_1 * eps)), _e36);
+        bool _e37 = occluded((x_11 + (ng_1 * eps)), _e36);
         local_10 = _e37;
     } else {
         local_10 = true;
@@ -801,12 +786,12 @@ Connection connect(uint li, vec3 x_12, vec3 n_7, vec3 ng_1, float s, float w_res
         return _e40;
     }
     vec3 _e42 = c_5.y;
-    vec3 v_5 = (x_12 - _e42);
-    float d2_7 = dot(v_5, v_5);
-    vec3 _e49 = light_intensity(l_2, (v_5 / vec3(sqrt(d2_7))));
+    vec3 v_6 = (x_11 - _e42);
+    float d2_8 = dot(v_6, v_6);
+    vec3 _e49 = light_intensity(l_2, (v_6 / vec3(sqrt(d2_8))));
     float _e51 = c_5.cos_x;
     float _e54 = _group_1_binding_2_cs[li];
-    float _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
+    float _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
     c_5.e = (_e49 * _e56);
     Connection _e58 = c_5;
     return _e58;
@@ -817,9 +802,9 @@ vec4 surface_at(ivec2 texel) {
     return ((p_2.w > 0.0) ? vec4(p_2.xyz, 1.0) : vec4(0.0));
 }
 
-Shaded shade_pick(uint li_1, vec3 x_13, vec3 n_8, vec3 r_7, vec4 rl_6, Material m_1, float w_4, float u1_3, float u2_3) {
+Shaded shade_pick(uint li_1, vec3 x_12, vec3 n_8, vec3 r_7, vec4 rl_6, Material m_1, float w_4, float u1_3, float u2_3) {
     Shaded s_1 = Shaded(vec3(0.0), vec3(0.0), vec3(0.0));
-    Connection _e12 = connect(li_1, x_13, n_8, n_8, 1.0, w_4, u1_3, u2_3, 0.0);
+    Connection _e12 = connect(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, 0.0);
     s_1.e = _e12.e;
     s_1.diffuse = vec3(0.0);
     s_1.specular = vec3(0.0);
@@ -827,8 +812,8 @@ Shaded shade_pick(uint li_1, vec3 x_13, vec3 n_8, vec3 r_7, vec4 rl_6, Material 
     return _e21;
 }
 
-Shaded add(Shaded a_8, Shaded b_6) {
-    return Shaded((a_8.e + b_6.e), (a_8.diffuse + b_6.diffuse), (a_8.specular + b_6.specular));
+Shaded add(Shaded a_9, Shaded b_6) {
+    return Shaded((a_9.e + b_6.e), (a_9.diffuse + b_6.diffuse), (a_9.specular + b_6.specular));
 }
 
 void main() {
@@ -867,7 +852,7 @@ void main() {
         imageStore(_group_0_binding_3_cs, texel_1, vec4(0.0));
         return;
     }
-    vec3 x_14 = _e21.xyz;
+    vec3 x_13 = _e21.xyz;
     vec3 n_10 = (nn / vec3(sqrt(len2_)));
     r = n_10;
     vec4 _e53 = lobe;
@@ -879,7 +864,7 @@ void main() {
     uint _e69 = pick_stream(_e68);
     h = _e69;
     vec3 _e79 = r;
-    Picks _e80 = bsh_collect(x_14, _e79, _e54, _e68);
+    Picks _e80 = bsh_collect(x_13, _e79, _e54, _e68);
     float _e83 = reservoir_weight(_e80.n, K);
     bool loop_init_1 = true;
     while(true) {
@@ -908,7 +893,7 @@ void main() {
             Material _e102 = m;
             uint _e103 = h;
             float _e104 = xi_from_bits(_e103);
-            Shaded _e105 = shade_pick(_e80.light[_e99], x_14, n_10, _e101, _e54, _e102, _e83, _e94, _e104);
+            Shaded _e105 = shade_pick(_e80.light[_e99], x_13, n_10, _e101, _e54, _e102, _e83, _e94, _e104);
             Shaded _e106 = add(_e97, _e105);
             t = _e106;
         }

@@ -222,8 +222,8 @@ bool slc_keep(float r2_, float d2_2) {
 }
 
 bool sphere_contains_point(vec3 c, float r, vec3 x_2) {
-    vec3 v_7 = (x_2 - c);
-    return (dot(v_7, v_7) <= (r * r));
+    vec3 v_8 = (x_2 - c);
+    return (dot(v_8, v_8) <= (r * r));
 }
 
 float inverse_square(float d2_3) {
@@ -239,11 +239,11 @@ float connection_factor(float cos_x, float d2_4, float rt2_2, float w) {
 float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     bool local = false;
     bool local_1 = false;
-    vec3 v_8 = (x_3 - y);
-    float d2_8 = dot(v_8, v_8);
-    bool _e7 = slc_keep(r2_1, d2_8);
+    vec3 v_9 = (x_3 - y);
+    float d2_9 = dot(v_9, v_9);
+    bool _e7 = slc_keep(r2_1, d2_9);
     if (!(!(_e7))) {
-        local = !((d2_8 > 0.0));
+        local = !((d2_9 > 0.0));
     } else {
         local = true;
     }
@@ -251,7 +251,7 @@ float connection_cosine(vec3 x_3, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_7 = (v_8 / vec3(sqrt(d2_8)));
+    vec3 w_7 = (v_9 / vec3(sqrt(d2_9)));
     float cos_x_1 = -(dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = (dot(ng, w_7) >= 0.0);
@@ -299,15 +299,15 @@ float area_to_solid_angle_pdf(float pdf_area, float d2_5, float cos_light) {
 float atan_portable(float x_4) {
     float base = 0.0;
     float t = 0.0;
-    float a_9 = abs(x_4);
-    t = a_9;
-    if ((a_9 > 2.4142137)) {
+    float a_10 = abs(x_4);
+    t = a_10;
+    if ((a_10 > 2.4142137)) {
         base = 1.5707964;
-        t = (-1.0 / a_9);
+        t = (-1.0 / a_10);
     } else {
-        if ((a_9 > 0.41421357)) {
+        if ((a_10 > 0.41421357)) {
             base = 0.7853982;
-            t = ((a_9 - 1.0) / (a_9 + 1.0));
+            t = ((a_10 - 1.0) / (a_10 + 1.0));
         }
     }
     float _e18 = t;
@@ -460,11 +460,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_3) {
     float _e54 = ies_lerp_t(_e51, _e53, _e32);
     float _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
     float _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
-    float a_10 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
+    float a_11 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
     float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
     float b_7 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
-    return ((a_10 * (1.0 - _e54)) + (b_7 * _e54));
+    return ((a_11 * (1.0 - _e54)) + (b_7 * _e54));
 }
 
 float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws) {
@@ -600,14 +600,14 @@ float cosine_pdf(float cos_theta_1) {
 
 vec3 onb_tangent(vec3 n_8) {
     float s_3 = ((n_8.z >= 0.0) ? 1.0 : -1.0);
-    float a_11 = (-1.0 / (s_3 + n_8.z));
-    return vec3((1.0 + (((s_3 * n_8.x) * n_8.x) * a_11)), (((s_3 * n_8.x) * n_8.y) * a_11), (-(s_3) * n_8.x));
+    float a_12 = (-1.0 / (s_3 + n_8.z));
+    return vec3((1.0 + (((s_3 * n_8.x) * n_8.x) * a_12)), (((s_3 * n_8.x) * n_8.y) * a_12), (-(s_3) * n_8.x));
 }
 
 vec3 onb_bitangent(vec3 n_9) {
     float s_4 = ((n_9.z >= 0.0) ? 1.0 : -1.0);
-    float a_12 = (-1.0 / (s_4 + n_9.z));
-    return vec3(((n_9.x * n_9.y) * a_12), (s_4 + ((n_9.y * n_9.y) * a_12)), -(n_9.y));
+    float a_13 = (-1.0 / (s_4 + n_9.z));
+    return vec3(((n_9.x * n_9.y) * a_13), (s_4 + ((n_9.y * n_9.y) * a_13)), -(n_9.y));
 }
 
 vec3 onb_to_local(vec3 n_10, vec3 w_4) {
@@ -788,9 +788,9 @@ vec3 mirror_dir(vec3 n_13, vec3 v_3) {
 }
 
 float bounded_vndf_k(vec3 wi, float alpha_6) {
-    float a_13 = clamp(alpha_6, 0.0, 1.0);
+    float a_14 = clamp(alpha_6, 0.0, 1.0);
     float s_5 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    float a2_2 = (a_13 * a_13);
+    float a2_2 = (a_14 * a_14);
     float s2_ = (s_5 * s_5);
     return (((1.0 - a2_2) * s2_) / (s2_ + ((a2_2 * wi.z) * wi.z)));
 }
@@ -825,29 +825,34 @@ float bsdf_pdf(vec3 n_14, vec3 v_4, vec3 l_3, float alpha_8, float p_spec) {
     return ((p_spec * _e11) + ((1.0 - p_spec) * _e6));
 }
 
-float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
-    if ((cos_a > cos_b)) {
+float cone_cos_of(vec3 v_5, float d2_7, float a_5, vec3 d) {
+    bool local_12 = false;
+    bool local_13 = false;
+    float vd = dot(v_5, d);
+    float h2_ = (d2_7 - (a_5 * a_5));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_13 = ((vd * vd) >= h2_);
+        } else {
+            local_13 = false;
+        }
+        bool _e19 = local_13;
+        local_12 = _e19;
+    } else {
+        local_12 = true;
+    }
+    bool _e21 = local_12;
+    if (_e21) {
         return 1.0;
     }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
+    vec3 c_12 = cross(v_5, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_12, c_12)) * a_5)) / d2_7), 1.0);
 }
 
-float safe_sqrt(float x_8) {
-    return sqrt(max(x_8, 0.0));
-}
-
-float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d) {
-    vec3 v_9 = (center - p);
-    float dist2_ = dot(v_9, v_9);
-    if ((dist2_ <= (radius * radius))) {
-        return 1.0;
-    }
-    float dist = sqrt(dist2_);
-    vec3 c_12 = cross(v_9, d);
-    float sin_b_1 = (radius / dist);
-    float _e20 = safe_sqrt((1.0 - (sin_b_1 * sin_b_1)));
-    float _e21 = cos_sub_clamped((sqrt(dot(c_12, c_12)) / dist), (dot(v_9, d) / dist), sin_b_1, _e20);
-    return _e21;
+float cone_cos_toward(vec3 center, float radius, vec3 p, vec3 d_1) {
+    vec3 v_10 = (center - p);
+    float _e6 = cone_cos_of(v_10, dot(v_10, v_10), radius, d_1);
+    return _e6;
 }
 
 float range_scale_at(vec4 rl, float cos_t) {
@@ -868,14 +873,14 @@ float shadow_margin(float len) {
     return (0.0001 * len);
 }
 
-float ray_inverse(float x_9) {
-    return (1.0 / ((abs(x_9) < 1e-30) ? 1e-30 : x_9));
+float ray_inverse(float x_8) {
+    return (1.0 / ((abs(x_8) < 1e-30) ? 1e-30 : x_8));
 }
 
-vec3 ray_inverse3_(vec3 d_1) {
-    float _e2 = ray_inverse(d_1.x);
-    float _e4 = ray_inverse(d_1.y);
-    float _e6 = ray_inverse(d_1.z);
+vec3 ray_inverse3_(vec3 d_2) {
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
     return vec3(_e2, _e4, _e6);
 }
 
@@ -892,84 +897,84 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
     return -1.0;
 }
 
-vec3 triangle_normal(vec3 a_5, vec3 b_4, vec3 c_5) {
-    bool local_12 = false;
-    vec3 n_19 = cross((b_4 - a_5), (c_5 - a_5));
+vec3 triangle_normal(vec3 a_6, vec3 b_4, vec3 c_5) {
+    bool local_14 = false;
+    vec3 n_19 = cross((b_4 - a_6), (c_5 - a_6));
     float l2_ = dot(n_19, n_19);
     if (!(!((l2_ > 0.0)))) {
-        local_12 = !((l2_ < 3e38));
+        local_14 = !((l2_ < 3e38));
     } else {
-        local_12 = true;
+        local_14 = true;
     }
-    bool _e17 = local_12;
+    bool _e17 = local_14;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
     return (n_19 / vec3(sqrt(l2_)));
 }
 
-float ray_triangle(vec3 o_1, vec3 d_2, vec3 a_6, vec3 b_5, vec3 c_6, float t_min, float t_max_1) {
-    bool local_13 = false;
-    bool local_14 = false;
+float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_7, vec3 b_5, vec3 c_6, float t_min, float t_max_1) {
     bool local_15 = false;
-    vec3 e1_ = (b_5 - a_6);
-    vec3 e2_ = (c_6 - a_6);
-    vec3 p_2 = cross(d_2, e2_);
+    bool local_16 = false;
+    bool local_17 = false;
+    vec3 e1_ = (b_5 - a_7);
+    vec3 e2_ = (c_6 - a_7);
+    vec3 p_2 = cross(d_3, e2_);
     float det = dot(e1_, p_2);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
-    vec3 s_6 = (o_1 - a_6);
+    vec3 s_6 = (o_1 - a_7);
     float u_2 = (dot(s_6, p_2) * inv_1);
     if (!((u_2 < 0.0))) {
-        local_13 = (u_2 > 1.0);
+        local_15 = (u_2 > 1.0);
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    bool _e28 = local_13;
+    bool _e28 = local_15;
     if (_e28) {
         return -1.0;
     }
     vec3 q = cross(s_6, e1_);
-    float v_10 = (dot(d_2, q) * inv_1);
-    if (!((v_10 < 0.0))) {
-        local_14 = ((u_2 + v_10) > 1.0);
+    float v_11 = (dot(d_3, q) * inv_1);
+    if (!((v_11 < 0.0))) {
+        local_16 = ((u_2 + v_11) > 1.0);
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    bool _e42 = local_14;
+    bool _e42 = local_16;
     if (_e42) {
         return -1.0;
     }
     float t_5 = (dot(e2_, q) * inv_1);
     if ((t_5 > t_min)) {
-        local_15 = (t_5 < t_max_1);
+        local_17 = (t_5 < t_max_1);
     } else {
-        local_15 = false;
+        local_17 = false;
     }
-    bool _e51 = local_15;
+    bool _e51 = local_17;
     if (_e51) {
         return t_5;
     }
     return -1.0;
 }
 
-bool finite3_(vec3 v_5) {
-    bool local_16 = false;
-    bool local_17 = false;
-    if ((abs(v_5.x) <= F32_MAX)) {
-        local_16 = (abs(v_5.y) <= F32_MAX);
+bool finite3_(vec3 v_6) {
+    bool local_18 = false;
+    bool local_19 = false;
+    if ((abs(v_6.x) <= F32_MAX)) {
+        local_18 = (abs(v_6.y) <= F32_MAX);
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    bool _e12 = local_16;
+    bool _e12 = local_18;
     if (_e12) {
-        local_17 = (abs(v_5.z) <= F32_MAX);
+        local_19 = (abs(v_6.z) <= F32_MAX);
     } else {
-        local_17 = false;
+        local_19 = false;
     }
-    bool _e20 = local_17;
+    bool _e20 = local_19;
     return _e20;
 }
 
@@ -1024,7 +1029,7 @@ vec3 light_normal(GpuLight l_7) {
     return vec3(0.0);
 }
 
-GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
+GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
@@ -1036,7 +1041,7 @@ GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
         GeoHit _e13 = hit;
         return _e13;
     }
-    vec3 _e14 = ray_inverse3_(d_3);
+    vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
         uint _e21 = node_2;
         GpuGeoNode n_20 = _group_0_binding_6_cs[_e21];
@@ -1061,7 +1066,7 @@ GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
                         uint _e42 = i_1;
                         GpuTriangle t_6 = _group_0_binding_7_cs[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_3, t_6.v0_, t_6.v1_, t_6.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_6.v0_, t_6.v1_, t_6.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i_1;
@@ -1099,14 +1104,14 @@ GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
     return _e81;
 }
 
-bool occluded(vec3 a_7, vec3 b_6) {
-    vec3 dv = (b_6 - a_7);
+bool occluded(vec3 a_8, vec3 b_6) {
+    vec3 dv = (b_6 - a_8);
     float len_1 = length(dv);
     if ((len_1 <= 0.0)) {
         return false;
     }
     float _e7 = shadow_margin(len_1);
-    GeoHit _e12 = trace(a_7, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    GeoHit _e12 = trace(a_8, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
     return (_e12.tri != NO_LIGHT);
 }
 
@@ -1127,41 +1132,21 @@ uint bsh_first(uint nodes_2) {
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_8, vec3 v_6, float d2_7, vec3 r_2, vec4 rl_2) {
-    bool local_18 = false;
-    bool local_19 = false;
-    float vr = dot(v_6, r_2);
-    float h2_ = (d2_7 - (a_8 * a_8));
-    if (!((h2_ <= 0.0))) {
-        if ((vr >= 0.0)) {
-            local_19 = ((vr * vr) >= h2_);
-        } else {
-            local_19 = false;
-        }
-        bool _e20 = local_19;
-        local_18 = _e20;
-    } else {
-        local_18 = true;
-    }
-    bool _e22 = local_18;
-    if (_e22) {
-        return (rl_2.w * rl_2.w);
-    }
-    vec3 c_13 = cross(v_6, r_2);
-    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_13, c_13)) * a_8)) / d2_7);
-    float _e36 = range_scale_at(rl_2, (cos_t_1 + 2e-6));
-    return _e36;
+float bsh_inner_scale(float a_9, vec3 v_7, float d2_8, vec3 r_2, vec4 rl_2) {
+    float _e5 = cone_cos_of(v_7, d2_8, a_9, r_2);
+    float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
+    return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, vec3 x_10, vec3 r_3, vec4 rl_3) {
+bool bsh_reaches(BshNode node_3, vec3 x_9, vec3 r_3, vec4 rl_3) {
     bool local_20 = false;
     bool local_21 = false;
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_10);
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_9);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_10);
+        bool _e20 = sphere_contains_point(node_3.center, (node_3.radius * (rl_3.w * 1.0001)), x_9);
         local_20 = !(_e20);
     } else {
         local_20 = true;
@@ -1171,23 +1156,23 @@ bool bsh_reaches(BshNode node_3, vec3 x_10, vec3 r_3, vec4 rl_3) {
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    vec3 v_11 = (x_10 - node_3.center);
-    float d2_9 = dot(v_11, v_11);
+    vec3 v_12 = (x_9 - node_3.center);
+    float d2_10 = dot(v_12, v_12);
     float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_9 > (reach_max * reach_max))) {
+    if ((d2_10 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_10, r_3);
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_9, r_3);
         float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_10);
+        bool _e47 = sphere_contains_point(node_3.center, _e46, x_9);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_11), d2_9, r_3, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_10, r_3, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_21 = (d2_9 <= (reach * reach));
+    if ((d2_10 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_21 = (d2_10 <= (reach * reach));
     } else {
         local_21 = false;
     }
@@ -1195,7 +1180,7 @@ bool bsh_reaches(BshNode node_3, vec3 x_10, vec3 r_3, vec4 rl_3) {
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_11, vec3 r_4, vec4 rl_4) {
+uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_10, vec3 r_4, vec4 rl_4) {
     uint i_3 = 0u;
     i_3 = start_1;
     while(true) {
@@ -1207,7 +1192,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_11, vec3 r_4, vec4 rl
         {
             uint _e9 = i_3;
             BshNode _e10 = bsh_node(nodes_3, _e9);
-            bool _e11 = bsh_reaches(_e10, x_11, r_4, rl_4);
+            bool _e11 = bsh_reaches(_e10, x_10, r_4, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     uint _e15 = i_3;
@@ -1222,21 +1207,21 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, vec3 x_11, vec3 r_4, vec4 rl
     return BSH_NONE;
 }
 
-Picks bsh_collect(vec3 x_12, vec3 r_5, vec4 rl_5, uint seed_1) {
+Picks bsh_collect(vec3 x_11, vec3 r_5, vec4 rl_5, uint seed_1) {
     Picks picks = Picks(uint[16](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u), 0u);
     uint h_1 = 0u;
     uint i_4 = 0u;
     picks.n = 0u;
     h_1 = seed_1;
     uint _e10 = bsh_first(BSH);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_5, rl_5);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5);
     i_4 = _e11;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
             uint _e44 = i_4;
             uint _e47 = _group_0_binding_5_cs[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_5, rl_5);
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_5, rl_5);
             i_4 = _e48;
         }
         loop_init_1 = false;
@@ -1273,7 +1258,7 @@ Picks bsh_collect(vec3 x_12, vec3 r_5, vec4 rl_5, uint seed_1) {
     return _e49;
 }
 
-Connection connect(uint li, vec3 x_13, vec3 n_15, vec3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps) {
+Connection connect(uint li, vec3 x_12, vec3 n_15, vec3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps) {
     Connection c_7 = Connection(vec3(0.0), vec3(0.0), 0.0);
     bool local_22 = false;
     c_7.e = vec3(0.0);
@@ -1282,12 +1267,12 @@ Connection connect(uint li, vec3 x_13, vec3 n_15, vec3 ng_1, float s_1, float w_
     c_7.y = _e17;
     vec3 _e20 = c_7.y;
     float _e23 = _group_0_binding_4_cs[li];
-    float _e25 = connection_cosine(x_13, _e20, n_15, ng_1, (s_1 * _e23));
+    float _e25 = connection_cosine(x_12, _e20, n_15, ng_1, (s_1 * _e23));
     c_7.cos_x = _e25;
     float _e27 = c_7.cos_x;
     if (!((_e27 <= 0.0))) {
         vec3 _e36 = c_7.y;
-        bool _e37 = occluded((x_13 + (ng_1 * eps)), _e36);
+        bool _e37 = occluded((x_12 + (ng_1 * eps)), _e36);
         local_22 = _e37;
     } else {
         local_22 = true;
@@ -1298,12 +1283,12 @@ Connection connect(uint li, vec3 x_13, vec3 n_15, vec3 ng_1, float s_1, float w_
         return _e40;
     }
     vec3 _e42 = c_7.y;
-    vec3 v_12 = (x_13 - _e42);
-    float d2_10 = dot(v_12, v_12);
-    vec3 _e49 = light_intensity(l_8, (v_12 / vec3(sqrt(d2_10))));
+    vec3 v_13 = (x_12 - _e42);
+    float d2_11 = dot(v_13, v_13);
+    vec3 _e49 = light_intensity(l_8, (v_13 / vec3(sqrt(d2_11))));
     float _e51 = c_7.cos_x;
     float _e54 = _group_0_binding_3_cs[li];
-    float _e56 = connection_factor(_e51, d2_10, (s_1 * _e54), w_res);
+    float _e56 = connection_factor(_e51, d2_11, (s_1 * _e54), w_res);
     c_7.e = (_e49 * _e56);
     Connection _e58 = c_7;
     return _e58;
@@ -1314,49 +1299,49 @@ float mis_weight(float pdf_a_1, float pdf_b_1) {
     return _e2;
 }
 
-float light_range_scale(uint li_1, vec3 x_14, vec3 r_6, vec4 rl_6) {
-    GpuLightCone c_14 = _group_1_binding_2_cs[li_1];
-    float _e9 = range_scale_toward(rl_6, c_14.center, c_14.radius, x_14, r_6);
+float light_range_scale(uint li_1, vec3 x_13, vec3 r_6, vec4 rl_6) {
+    GpuLightCone c_13 = _group_1_binding_2_cs[li_1];
+    float _e9 = range_scale_toward(rl_6, c_13.center, c_13.radius, x_13, r_6);
     return _e9;
 }
 
-float select_pdf(uint li_2, vec3 x_15, vec3 n_16, vec3 r_7, vec4 lobe_5, vec4 rl_7, uint nee, bool in_range_1) {
+float select_pdf(uint li_2, vec3 x_14, vec3 n_16, vec3 r_7, vec4 lobe_5, vec4 rl_7, uint nee, bool in_range_1) {
     float _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-float light_pdf_selected(uint li_3, vec3 x_16, vec3 r_8, vec4 rl_8, vec3 y_2, float sel) {
+float light_pdf_selected(uint li_3, vec3 x_15, vec3 r_8, vec4 rl_8, vec3 y_2, float sel) {
     GpuLight l_9 = _group_0_binding_2_cs[li_3];
-    vec3 v_13 = (x_16 - y_2);
-    float d2_11 = dot(v_13, v_13);
+    vec3 v_14 = (x_15 - y_2);
+    float d2_12 = dot(v_14, v_14);
     vec3 _e11 = light_normal(l_9);
-    float cos_y_1 = ((d2_11 > 0.0) ? dot(_e11, (v_13 / vec3(sqrt(d2_11)))) : 0.0);
-    float _e20 = light_range_scale(li_3, x_16, r_8, rl_8);
+    float cos_y_1 = ((d2_12 > 0.0) ? dot(_e11, (v_14 / vec3(sqrt(d2_12)))) : 0.0);
+    float _e20 = light_range_scale(li_3, x_15, r_8, rl_8);
     float _e23 = _group_0_binding_3_cs[li_3];
     float _e25 = light_area(l_9);
-    float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_11, _e25, cos_y_1);
+    float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_12, _e25, cos_y_1);
     return _e26;
 }
 
-float light_pdf(uint li_4, vec3 x_17, vec3 n_17, vec3 r_9, vec4 lobe_6, vec4 rl_9, vec3 y_3, uint nee_1, bool in_range_2) {
-    float _e9 = select_pdf(li_4, x_17, n_17, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    float _e10 = light_pdf_selected(li_4, x_17, r_9, rl_9, y_3, _e9);
+float light_pdf(uint li_4, vec3 x_16, vec3 n_17, vec3 r_9, vec4 lobe_6, vec4 rl_9, vec3 y_3, uint nee_1, bool in_range_2) {
+    float _e9 = select_pdf(li_4, x_16, n_17, r_9, lobe_6, rl_9, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_4, x_16, r_9, rl_9, y_3, _e9);
     return _e10;
 }
 
-vec3 shade_pick(uint li_5, vec3 x_18, vec3 n_18, vec3 ng_2, GpuMaterial m, vec3 wo_1, vec3 r_10, vec4 lobe_7, vec4 rl_10, float w_6, uint nee_2, float u1_3, float u2_3) {
+vec3 shade_pick(uint li_5, vec3 x_17, vec3 n_18, vec3 ng_2, GpuMaterial m, vec3 wo_1, vec3 r_10, vec4 lobe_7, vec4 rl_10, float w_6, uint nee_2, float u1_3, float u2_3) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_5, x_18, r_10, rl_10);
+    float _e13 = light_range_scale(li_5, x_17, r_10, rl_10);
     float _e16 = _group_0_binding_0_cs.eps;
-    Connection _e17 = connect(li_5, x_18, n_18, ng_2, _e13, w_6, u1_3, u2_3, _e16);
+    Connection _e17 = connect(li_5, x_17, n_18, ng_2, _e13, w_6, u1_3, u2_3, _e16);
     if ((_e17.cos_x <= 0.0)) {
         return vec3(0.0);
     }
-    vec3 l_10 = normalize((_e17.y - x_18));
+    vec3 l_10 = normalize((_e17.y - x_17));
     GpuLight _e30 = _group_0_binding_2_cs[li_5];
     float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        float _e36 = light_pdf(li_5, x_18, n_18, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
+        float _e36 = light_pdf(li_5, x_17, n_18, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
         float _e38 = specular_probability(lobe_7);
         float _e39 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);
@@ -1382,7 +1367,7 @@ void main() {
         _group_0_binding_10_cs[i_5] = 0u;
         return;
     }
-    vec3 x_19 = vtx.position;
+    vec3 x_18 = vtx.position;
     vec3 n_21 = vtx.normal;
     vec3 ng_3 = vtx.gnormal;
     GpuMaterial m_2 = _group_0_binding_8_cs[vtx.material];
@@ -1395,7 +1380,7 @@ void main() {
     uint _e38 = point_stream(_e34, i_5, _e37);
     uint _e39 = pick_stream(_e38);
     h = _e39;
-    Picks _e44 = bsh_collect(x_19, _e23, _e31, _e38);
+    Picks _e44 = bsh_collect(x_18, _e23, _e31, _e38);
     _group_0_binding_10_cs[i_5] = _e44.n;
     float _e50 = reservoir_weight(_e44.n, K);
     bool loop_init_2 = true;
@@ -1423,7 +1408,7 @@ void main() {
             uint _e66 = s;
             uint _e69 = h;
             float _e70 = xi_from_bits(_e69);
-            vec3 _e71 = shade_pick(_e44.light[_e66], x_19, n_21, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
+            vec3 _e71 = shade_pick(_e44.light[_e66], x_18, n_21, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
             sum = (_e64 + _e71);
         }
     }

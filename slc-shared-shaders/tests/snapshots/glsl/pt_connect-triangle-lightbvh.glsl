@@ -221,11 +221,11 @@ float connection_factor(float cos_x, float d2_4, float rt2_2, float w) {
 float connection_cosine(vec3 x_1, vec3 y, vec3 n, vec3 ng, float r2_1) {
     bool local = false;
     bool local_1 = false;
-    vec3 v_6 = (x_1 - y);
-    float d2_7 = dot(v_6, v_6);
-    bool _e7 = slc_keep(r2_1, d2_7);
+    vec3 v_7 = (x_1 - y);
+    float d2_8 = dot(v_7, v_7);
+    bool _e7 = slc_keep(r2_1, d2_8);
     if (!(!(_e7))) {
-        local = !((d2_7 > 0.0));
+        local = !((d2_8 > 0.0));
     } else {
         local = true;
     }
@@ -233,7 +233,7 @@ float connection_cosine(vec3 x_1, vec3 y, vec3 n, vec3 ng, float r2_1) {
     if (_e16) {
         return 0.0;
     }
-    vec3 w_5 = (v_6 / vec3(sqrt(d2_7)));
+    vec3 w_5 = (v_7 / vec3(sqrt(d2_8)));
     float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = (dot(ng, w_5) >= 0.0);
@@ -304,14 +304,14 @@ float cosine_pdf(float cos_theta) {
 
 vec3 onb_tangent(vec3 n_2) {
     float s_2 = ((n_2.z >= 0.0) ? 1.0 : -1.0);
-    float a_6 = (-1.0 / (s_2 + n_2.z));
-    return vec3((1.0 + (((s_2 * n_2.x) * n_2.x) * a_6)), (((s_2 * n_2.x) * n_2.y) * a_6), (-(s_2) * n_2.x));
+    float a_7 = (-1.0 / (s_2 + n_2.z));
+    return vec3((1.0 + (((s_2 * n_2.x) * n_2.x) * a_7)), (((s_2 * n_2.x) * n_2.y) * a_7), (-(s_2) * n_2.x));
 }
 
 vec3 onb_bitangent(vec3 n_3) {
     float s_3 = ((n_3.z >= 0.0) ? 1.0 : -1.0);
-    float a_7 = (-1.0 / (s_3 + n_3.z));
-    return vec3(((n_3.x * n_3.y) * a_7), (s_3 + ((n_3.y * n_3.y) * a_7)), -(n_3.y));
+    float a_8 = (-1.0 / (s_3 + n_3.z));
+    return vec3(((n_3.x * n_3.y) * a_8), (s_3 + ((n_3.y * n_3.y) * a_8)), -(n_3.y));
 }
 
 vec3 onb_to_local(vec3 n_4, vec3 w_2) {
@@ -492,9 +492,9 @@ vec3 mirror_dir(vec3 n_7, vec3 v_3) {
 }
 
 float bounded_vndf_k(vec3 wi, float alpha_6) {
-    float a_8 = clamp(alpha_6, 0.0, 1.0);
+    float a_9 = clamp(alpha_6, 0.0, 1.0);
     float s_4 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    float a2_3 = (a_8 * a_8);
+    float a2_3 = (a_9 * a_9);
     float s2_ = (s_4 * s_4);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
@@ -553,11 +553,11 @@ float subtended_cos(float dist2_, float r2_2) {
 }
 
 vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
-    vec3 v_7 = (p - center);
-    float dist2_1 = dot(v_7, v_7);
+    vec3 v_8 = (p - center);
+    float dist2_1 = dot(v_8, v_8);
     float r2_4 = (radius * radius);
-    float d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
-    vec3 wi_2 = ((dist2_1 > 0.0) ? (v_7 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
+    float d2_9 = max(max(dist2_1, r2_4), MIN_D2_);
+    vec3 wi_2 = ((dist2_1 > 0.0) ? (v_8 / vec3(sqrt(dist2_1))) : vec3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi_2);
     float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
     float _e26 = subtended_cos(dist2_1, r2_4);
@@ -566,7 +566,7 @@ vec4 emitter_cone(vec3 center, float radius, vec3 axis, float cos_o, vec3 p) {
     float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
     float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
     float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return vec4(_e37, d2_8, _e26, _e30);
+    return vec4(_e37, d2_9, _e26, _e30);
 }
 
 float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, float cos_o_1, float cos_e, vec3 p_1) {
@@ -577,18 +577,34 @@ float emitter_importance(vec3 center_1, float radius_1, float phi, vec3 axis_1, 
     return ((phi * _e7.x) / _e7.y);
 }
 
-float cone_cos_toward(vec3 center_2, float radius_2, vec3 p_2, vec3 d) {
-    vec3 v_8 = (center_2 - p_2);
-    float dist2_2 = dot(v_8, v_8);
-    if ((dist2_2 <= (radius_2 * radius_2))) {
+float cone_cos_of(vec3 v_5, float d2_7, float a_3, vec3 d) {
+    bool local_10 = false;
+    bool local_11 = false;
+    float vd = dot(v_5, d);
+    float h2_ = (d2_7 - (a_3 * a_3));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_11 = ((vd * vd) >= h2_);
+        } else {
+            local_11 = false;
+        }
+        bool _e19 = local_11;
+        local_10 = _e19;
+    } else {
+        local_10 = true;
+    }
+    bool _e21 = local_10;
+    if (_e21) {
         return 1.0;
     }
-    float dist = sqrt(dist2_2);
-    vec3 c_8 = cross(v_8, d);
-    float sin_b_2 = (radius_2 / dist);
-    float _e20 = safe_sqrt((1.0 - (sin_b_2 * sin_b_2)));
-    float _e21 = cos_sub_clamped((sqrt(dot(c_8, c_8)) / dist), (dot(v_8, d) / dist), sin_b_2, _e20);
-    return _e21;
+    vec3 c_8 = cross(v_5, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_3)) / d2_7), 1.0);
+}
+
+float cone_cos_toward(vec3 center_2, float radius_2, vec3 p_2, vec3 d_1) {
+    vec3 v_9 = (center_2 - p_2);
+    float _e6 = cone_cos_of(v_9, dot(v_9, v_9), radius_2, d_1);
+    return _e6;
 }
 
 float range_scale_at(vec4 rl, float cos_t) {
@@ -613,9 +629,9 @@ float light_importance(vec3 center_4, float radius_4, float phi_1, vec3 axis_2, 
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_9, n_9) > 0.0)) {
-        vec3 v_9 = (center_4 - p_4);
-        float dist2_3 = dot(v_9, v_9);
-        float cos_i = dot(((dist2_3 > 0.0) ? (v_9 / vec3(sqrt(dist2_3))) : vec3(0.0, 0.0, 0.0)), n_9);
+        vec3 v_10 = (center_4 - p_4);
+        float dist2_2 = dot(v_10, v_10);
+        float cos_i = dot(((dist2_2 > 0.0) ? (v_10 / vec3(sqrt(dist2_2))) : vec3(0.0, 0.0, 0.0)), n_9);
         float _e33 = imp;
         float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
         float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -626,15 +642,15 @@ float light_importance(vec3 center_4, float radius_4, float phi_1, vec3 axis_2, 
 }
 
 float glossy_importance(vec3 center_5, float radius_5, float phi_2, vec3 axis_3, float cos_o_3, float cos_e_2, vec3 p_5, vec3 n_10, vec3 r_1, vec4 lobe_5) {
-    bool local_10 = false;
+    bool local_12 = false;
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_10);
     if (!((_e10 <= 0.0))) {
-        local_10 = (_e11 <= 0.0);
+        local_12 = (_e11 <= 0.0);
     } else {
-        local_10 = true;
+        local_12 = true;
     }
-    bool _e20 = local_10;
+    bool _e20 = local_12;
     if (_e20) {
         return 0.0;
     }
@@ -678,10 +694,10 @@ float ray_inverse(float x_3) {
     return (1.0 / ((abs(x_3) < 1e-30) ? 1e-30 : x_3));
 }
 
-vec3 ray_inverse3_(vec3 d_1) {
-    float _e2 = ray_inverse(d_1.x);
-    float _e4 = ray_inverse(d_1.y);
-    float _e6 = ray_inverse(d_1.z);
+vec3 ray_inverse3_(vec3 d_2) {
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
     return vec3(_e2, _e4, _e6);
 }
 
@@ -698,84 +714,84 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
     return -1.0;
 }
 
-vec3 triangle_normal(vec3 a_3, vec3 b_3, vec3 c_2) {
-    bool local_11 = false;
-    vec3 n_17 = cross((b_3 - a_3), (c_2 - a_3));
+vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_2) {
+    bool local_13 = false;
+    vec3 n_17 = cross((b_3 - a_4), (c_2 - a_4));
     float l2_ = dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
-        local_11 = !((l2_ < 3e38));
+        local_13 = !((l2_ < 3e38));
     } else {
-        local_11 = true;
+        local_13 = true;
     }
-    bool _e17 = local_11;
+    bool _e17 = local_13;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
     return (n_17 / vec3(sqrt(l2_)));
 }
 
-float ray_triangle(vec3 o_1, vec3 d_2, vec3 a_4, vec3 b_4, vec3 c_3, float t_min, float t_max_1) {
-    bool local_12 = false;
-    bool local_13 = false;
+float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_3, float t_min, float t_max_1) {
     bool local_14 = false;
-    vec3 e1_ = (b_4 - a_4);
-    vec3 e2_ = (c_3 - a_4);
-    vec3 p_7 = cross(d_2, e2_);
+    bool local_15 = false;
+    bool local_16 = false;
+    vec3 e1_ = (b_4 - a_5);
+    vec3 e2_ = (c_3 - a_5);
+    vec3 p_7 = cross(d_3, e2_);
     float det = dot(e1_, p_7);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
-    vec3 s_6 = (o_1 - a_4);
+    vec3 s_6 = (o_1 - a_5);
     float u_3 = (dot(s_6, p_7) * inv_1);
     if (!((u_3 < 0.0))) {
-        local_12 = (u_3 > 1.0);
+        local_14 = (u_3 > 1.0);
     } else {
-        local_12 = true;
+        local_14 = true;
     }
-    bool _e28 = local_12;
+    bool _e28 = local_14;
     if (_e28) {
         return -1.0;
     }
     vec3 q = cross(s_6, e1_);
-    float v_10 = (dot(d_2, q) * inv_1);
-    if (!((v_10 < 0.0))) {
-        local_13 = ((u_3 + v_10) > 1.0);
+    float v_11 = (dot(d_3, q) * inv_1);
+    if (!((v_11 < 0.0))) {
+        local_15 = ((u_3 + v_11) > 1.0);
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    bool _e42 = local_13;
+    bool _e42 = local_15;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_, q) * inv_1);
     if ((t_3 > t_min)) {
-        local_14 = (t_3 < t_max_1);
+        local_16 = (t_3 < t_max_1);
     } else {
-        local_14 = false;
+        local_16 = false;
     }
-    bool _e51 = local_14;
+    bool _e51 = local_16;
     if (_e51) {
         return t_3;
     }
     return -1.0;
 }
 
-bool finite3_(vec3 v_5) {
-    bool local_15 = false;
-    bool local_16 = false;
-    if ((abs(v_5.x) <= F32_MAX)) {
-        local_15 = (abs(v_5.y) <= F32_MAX);
+bool finite3_(vec3 v_6) {
+    bool local_17 = false;
+    bool local_18 = false;
+    if ((abs(v_6.x) <= F32_MAX)) {
+        local_17 = (abs(v_6.y) <= F32_MAX);
     } else {
-        local_15 = false;
+        local_17 = false;
     }
-    bool _e12 = local_15;
+    bool _e12 = local_17;
     if (_e12) {
-        local_16 = (abs(v_5.z) <= F32_MAX);
+        local_18 = (abs(v_6.z) <= F32_MAX);
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    bool _e20 = local_16;
+    bool _e20 = local_18;
     return _e20;
 }
 
@@ -815,7 +831,7 @@ vec3 light_normal(GpuLight l_7) {
     return vec3(0.0);
 }
 
-GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
+GeoHit trace(vec3 o_2, vec3 d_4, float t_min_1, float t_max_2, bool any_hit) {
     GeoHit hit = GeoHit(0.0, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint sp = 0u;
@@ -827,7 +843,7 @@ GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
         GeoHit _e13 = hit;
         return _e13;
     }
-    vec3 _e14 = ray_inverse3_(d_3);
+    vec3 _e14 = ray_inverse3_(d_4);
     while(true) {
         uint _e21 = node;
         GpuGeoNode n_18 = _group_0_binding_6_cs[_e21];
@@ -852,7 +868,7 @@ GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
                         uint _e42 = i;
                         GpuTriangle t_4 = _group_0_binding_7_cs[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -890,20 +906,20 @@ GeoHit trace(vec3 o_2, vec3 d_3, float t_min_1, float t_max_2, bool any_hit) {
     return _e81;
 }
 
-bool occluded(vec3 a_5, vec3 b_5) {
-    vec3 dv = (b_5 - a_5);
+bool occluded(vec3 a_6, vec3 b_5) {
+    vec3 dv = (b_5 - a_6);
     float len_1 = length(dv);
     if ((len_1 <= 0.0)) {
         return false;
     }
     float _e7 = shadow_margin(len_1);
-    GeoHit _e12 = trace(a_5, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
+    GeoHit _e12 = trace(a_6, (dv / vec3(len_1)), _e7, (len_1 - _e7), true);
     return (_e12.tri != NO_LIGHT);
 }
 
 Connection connect(uint li, vec3 x_4, vec3 n_12, vec3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps) {
     Connection c_4 = Connection(vec3(0.0), vec3(0.0), 0.0);
-    bool local_17 = false;
+    bool local_19 = false;
     c_4.e = vec3(0.0);
     GpuLight l_8 = _group_0_binding_2_cs[li];
     vec3 _e17 = light_point(l_8, u1_2, u2_2);
@@ -916,22 +932,22 @@ Connection connect(uint li, vec3 x_4, vec3 n_12, vec3 ng_1, float s, float w_res
     if (!((_e27 <= 0.0))) {
         vec3 _e36 = c_4.y;
         bool _e37 = occluded((x_4 + (ng_1 * eps)), _e36);
-        local_17 = _e37;
+        local_19 = _e37;
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    bool _e39 = local_17;
+    bool _e39 = local_19;
     if (_e39) {
         Connection _e40 = c_4;
         return _e40;
     }
     vec3 _e42 = c_4.y;
-    vec3 v_11 = (x_4 - _e42);
-    float d2_9 = dot(v_11, v_11);
-    vec3 _e49 = light_intensity(l_8, (v_11 / vec3(sqrt(d2_9))));
+    vec3 v_12 = (x_4 - _e42);
+    float d2_10 = dot(v_12, v_12);
+    vec3 _e49 = light_intensity(l_8, (v_12 / vec3(sqrt(d2_10))));
     float _e51 = c_4.cos_x;
     float _e54 = _group_0_binding_3_cs[li];
-    float _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
+    float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     Connection _e58 = c_4;
     return _e58;
@@ -964,16 +980,16 @@ float bvh_importance(uint nodes_2, uint i_2, vec3 x_6, vec3 n_13, vec3 r_4, vec4
 }
 
 float bvh_first(uint nodes_3, uint i_3, vec3 x_7, vec3 n_14, vec3 r_5, vec4 lobe_8) {
-    bool local_18 = false;
+    bool local_20 = false;
     GpuLightBvhNode _e6 = light_bvh_node(nodes_3, i_3);
     uint j = _e6.second;
     if (!((j <= (i_3 + 1u)))) {
         uint _e14 = light_bvh_count(nodes_3);
-        local_18 = (j >= _e14);
+        local_20 = (j >= _e14);
     } else {
-        local_18 = true;
+        local_20 = true;
     }
-    bool _e17 = local_18;
+    bool _e17 = local_20;
     if (_e17) {
         return -1.0;
     }
@@ -992,7 +1008,7 @@ BvhPick light_bvh_sample(uint nodes_4, vec3 x_8, vec3 n_15, vec3 r_6, vec4 lobe_
     float u_2 = 0.0;
     uint i_4 = 0u;
     float pmf = 1.0;
-    bool local_19 = false;
+    bool local_21 = false;
     BvhPick _e6 = bvh_pick_none();
     pick = _e6;
     u_2 = u_in;
@@ -1010,11 +1026,11 @@ BvhPick light_bvh_sample(uint nodes_4, vec3 x_8, vec3 n_15, vec3 r_6, vec4 lobe_
                 uint _e21 = i_4;
                 if (!((_e21 > 0u))) {
                     float _e28 = bvh_importance(nodes_4, 0u, x_8, n_15, r_6, lobe_9);
-                    local_19 = (_e28 > 0.0);
+                    local_21 = (_e28 > 0.0);
                 } else {
-                    local_19 = true;
+                    local_21 = true;
                 }
-                bool _e32 = local_19;
+                bool _e32 = local_21;
                 if (_e32) {
                     pick.light = _e17.light;
                     float _e36 = pmf;
@@ -1046,14 +1062,14 @@ BvhPick light_bvh_sample(uint nodes_4, vec3 x_8, vec3 n_15, vec3 r_6, vec4 lobe_
 
 float light_pdf_selected(uint li_2, vec3 x_9, vec3 r_7, vec4 rl_3, vec3 y_1, float sel) {
     GpuLight l_9 = _group_0_binding_2_cs[li_2];
-    vec3 v_12 = (x_9 - y_1);
-    float d2_10 = dot(v_12, v_12);
+    vec3 v_13 = (x_9 - y_1);
+    float d2_11 = dot(v_13, v_13);
     vec3 _e11 = light_normal(l_9);
-    float cos_y_1 = ((d2_10 > 0.0) ? dot(_e11, (v_12 / vec3(sqrt(d2_10)))) : 0.0);
+    float cos_y_1 = ((d2_11 > 0.0) ? dot(_e11, (v_13 / vec3(sqrt(d2_11)))) : 0.0);
     float _e20 = light_range_scale(li_2, x_9, r_7, rl_3);
     float _e23 = _group_0_binding_3_cs[li_2];
     float _e25 = light_area(l_9);
-    float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_10, _e25, cos_y_1);
+    float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_11, _e25, cos_y_1);
     return _e26;
 }
 

@@ -190,8 +190,8 @@ bool slc_keep(float r2_, float d2_1)
 
 bool sphere_contains_point(float3 c, float r, float3 x_2)
 {
-    float3 v_1 = (x_2 - c);
-    return (dot(v_1, v_1) <= (r * r));
+    float3 v_2 = (x_2 - c);
+    return (dot(v_2, v_2) <= (r * r));
 }
 
 float inverse_square(float d2_2)
@@ -211,11 +211,11 @@ float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
     bool local = (bool)0;
     bool local_1 = (bool)0;
 
-    float3 v_2 = (x_3 - y);
-    float d2_5 = dot(v_2, v_2);
-    const bool _e7 = slc_keep(r2_1, d2_5);
+    float3 v_3 = (x_3 - y);
+    float d2_6 = dot(v_3, v_3);
+    const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local = !((d2_5 > 0.0));
+        local = !((d2_6 > 0.0));
     } else {
         local = true;
     }
@@ -223,7 +223,7 @@ float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_3 = (v_2 / (sqrt(d2_5)).xxx);
+    float3 w_3 = (v_3 / (sqrt(d2_6)).xxx);
     float cos_x_1 = -(dot(n, w_3));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = (dot(ng, w_3) >= 0.0);
@@ -251,15 +251,15 @@ float atan_portable(float x_4)
     float base = 0.0;
     float t = (float)0;
 
-    float a_7 = abs(x_4);
-    t = a_7;
-    if ((a_7 > 2.4142137)) {
+    float a_8 = abs(x_4);
+    t = a_8;
+    if ((a_8 > 2.4142137)) {
         base = 1.5707964;
-        t = (-1.0 / a_7);
+        t = (-1.0 / a_8);
     } else {
-        if ((a_7 > 0.41421357)) {
+        if ((a_8 > 0.41421357)) {
             base = 0.7853982;
-            t = ((a_7 - 1.0) / (a_7 + 1.0));
+            t = ((a_8 - 1.0) / (a_8 + 1.0));
         }
     }
     float _e18 = t;
@@ -423,11 +423,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_2)
     const float _e54 = ies_lerp_t(_e51, _e53, _e32);
     const float _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
     const float _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
-    float a_8 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
+    float a_9 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
     const float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     const float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
     float b_5 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
-    return ((a_8 * (1.0 - _e54)) + (b_5 * _e54));
+    return ((a_9 * (1.0 - _e54)) + (b_5 * _e54));
 }
 
 float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
@@ -517,32 +517,37 @@ float reservoir_weight(uint n_5, uint k_1)
     return max((_e2 / _e3), 1.0);
 }
 
-float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+float cone_cos_of(float3 v, float d2_4, float a_4, float3 d)
 {
-    if ((cos_a > cos_b)) {
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
+
+    float vd = dot(v, d);
+    float h2_ = (d2_4 - (a_4 * a_4));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_4 = ((vd * vd) >= h2_);
+        } else {
+            local_4 = false;
+        }
+        bool _e19 = local_4;
+        local_3 = _e19;
+    } else {
+        local_3 = true;
+    }
+    bool _e21 = local_3;
+    if (_e21) {
         return 1.0;
     }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
+    float3 c_6 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_6, c_6)) * a_4)) / d2_4), 1.0);
 }
 
-float safe_sqrt(float x_8)
+float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
 {
-    return sqrt(max(x_8, 0.0));
-}
-
-float cone_cos_toward(float3 center_, float radius, float3 p, float3 d)
-{
-    float3 v_3 = (center_ - p);
-    float dist2_ = dot(v_3, v_3);
-    if ((dist2_ <= (radius * radius))) {
-        return 1.0;
-    }
-    float dist = sqrt(dist2_);
-    float3 c_6 = cross(v_3, d);
-    float sin_b_1 = (radius / dist);
-    const float _e20 = safe_sqrt((1.0 - (sin_b_1 * sin_b_1)));
-    const float _e21 = cos_sub_clamped((sqrt(dot(c_6, c_6)) / dist), (dot(v_3, d) / dist), sin_b_1, _e20);
-    return _e21;
+    float3 v_4 = (center_ - p);
+    const float _e6 = cone_cos_of(v_4, dot(v_4, v_4), radius, d_1);
+    return _e6;
 }
 
 float range_scale_at(float4 rl, float cos_t)
@@ -566,16 +571,16 @@ float shadow_margin(float len)
     return (0.0001 * len);
 }
 
-float ray_inverse(float x_9)
+float ray_inverse(float x_8)
 {
-    return (1.0 / ((abs(x_9) < 1e-30) ? 1e-30 : x_9));
+    return (1.0 / ((abs(x_8) < 1e-30) ? 1e-30 : x_8));
 }
 
-float3 ray_inverse3_(float3 d_1)
+float3 ray_inverse3_(float3 d_2)
 {
-    const float _e2 = ray_inverse(d_1.x);
-    const float _e4 = ray_inverse(d_1.y);
-    const float _e6 = ray_inverse(d_1.z);
+    const float _e2 = ray_inverse(d_2.x);
+    const float _e4 = ray_inverse(d_2.y);
+    const float _e6 = ray_inverse(d_2.z);
     return float3(_e2, _e4, _e6);
 }
 
@@ -593,49 +598,49 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
     return -1.0;
 }
 
-float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_3, float3 c_3, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_3, float3 c_3, float t_min, float t_max_1)
 {
-    bool local_3 = (bool)0;
-    bool local_4 = (bool)0;
     bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
 
-    float3 e1_ = (b_3 - a_4);
-    float3 e2_ = (c_3 - a_4);
-    float3 p_2 = cross(d_2, e2_);
+    float3 e1_ = (b_3 - a_5);
+    float3 e2_ = (c_3 - a_5);
+    float3 p_2 = cross(d_3, e2_);
     float det = dot(e1_, p_2);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv = (1.0 / det);
-    float3 s_2 = (o_1 - a_4);
+    float3 s_2 = (o_1 - a_5);
     float u_2 = (dot(s_2, p_2) * inv);
     if (!((u_2 < 0.0))) {
-        local_3 = (u_2 > 1.0);
+        local_5 = (u_2 > 1.0);
     } else {
-        local_3 = true;
+        local_5 = true;
     }
-    bool _e28 = local_3;
+    bool _e28 = local_5;
     if (_e28) {
         return -1.0;
     }
     float3 q = cross(s_2, e1_);
-    float v_4 = (dot(d_2, q) * inv);
-    if (!((v_4 < 0.0))) {
-        local_4 = ((u_2 + v_4) > 1.0);
+    float v_5 = (dot(d_3, q) * inv);
+    if (!((v_5 < 0.0))) {
+        local_6 = ((u_2 + v_5) > 1.0);
     } else {
-        local_4 = true;
+        local_6 = true;
     }
-    bool _e42 = local_4;
+    bool _e42 = local_6;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_, q) * inv);
     if ((t_3 > t_min)) {
-        local_5 = (t_3 < t_max_1);
+        local_7 = (t_3 < t_max_1);
     } else {
-        local_5 = false;
+        local_7 = false;
     }
-    bool _e51 = local_5;
+    bool _e51 = local_7;
     if (_e51) {
         return t_3;
     }
@@ -694,7 +699,7 @@ GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3,
     return ret;
 }
 
-GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
+GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
 {
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
@@ -709,7 +714,7 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
         const GeoHit geohit = _e13;
         return geohit;
     }
-    const float3 _e14 = ray_inverse3_(d_3);
+    const float3 _e14 = ray_inverse3_(d_4);
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
@@ -740,7 +745,7 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
                         uint _e42 = i_1;
                         GpuTriangle t_4 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i_1;
@@ -780,15 +785,15 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
     return geohit_2;
 }
 
-bool occluded(float3 a_5, float3 b_4)
+bool occluded(float3 a_6, float3 b_4)
 {
-    float3 dv = (b_4 - a_5);
+    float3 dv = (b_4 - a_6);
     float len_1 = length(dv);
     if ((len_1 <= 0.0)) {
         return false;
     }
     const float _e7 = shadow_margin(len_1);
-    const GeoHit _e12 = trace(a_5, (dv / (len_1).xxx), _e7, (len_1 - _e7), true);
+    const GeoHit _e12 = trace(a_6, (dv / (len_1).xxx), _e7, (len_1 - _e7), true);
     return (_e12.tri != NO_LIGHT);
 }
 
@@ -824,45 +829,24 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_6, float3 v, float d2_4, float3 r_2, float4 rl_2)
+float bsh_inner_scale(float a_7, float3 v_1, float d2_5, float3 r_2, float4 rl_2)
 {
-    bool local_6 = (bool)0;
-    bool local_7 = (bool)0;
-
-    float vr = dot(v, r_2);
-    float h2_ = (d2_4 - (a_6 * a_6));
-    if (!((h2_ <= 0.0))) {
-        if ((vr >= 0.0)) {
-            local_7 = ((vr * vr) >= h2_);
-        } else {
-            local_7 = false;
-        }
-        bool _e20 = local_7;
-        local_6 = _e20;
-    } else {
-        local_6 = true;
-    }
-    bool _e22 = local_6;
-    if (_e22) {
-        return (rl_2.w * rl_2.w);
-    }
-    float3 c_7 = cross(v, r_2);
-    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_6)) / d2_4);
-    const float _e36 = range_scale_at(rl_2, (cos_t_1 + 2e-6));
-    return _e36;
+    const float _e5 = cone_cos_of(v_1, d2_5, a_7, r_2);
+    const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
+    return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_10, float3 r_3, float4 rl_3)
+bool bsh_reaches(BshNode node_3, float3 x_9, float3 r_3, float4 rl_3)
 {
     bool local_8 = (bool)0;
     bool local_9 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_10);
+    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_9);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_10);
+        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_9);
         local_8 = !(_e20);
     } else {
         local_8 = true;
@@ -872,23 +856,23 @@ bool bsh_reaches(BshNode node_3, float3 x_10, float3 r_3, float4 rl_3)
         return false;
     }
     const float _e25 = bsh_range_bound(node_3);
-    float3 v_5 = (x_10 - node_3.center_);
-    float d2_6 = dot(v_5, v_5);
+    float3 v_6 = (x_9 - node_3.center_);
+    float d2_7 = dot(v_6, v_6);
     float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_6 > (reach_max * reach_max))) {
+    if ((d2_7 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_10, r_3);
+        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_9, r_3);
         const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_10);
+        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_9);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_3.extent, -(v_5), d2_6, r_3, rl_3);
+    const float _e50 = bsh_inner_scale(node_3.extent, -(v_6), d2_7, r_3, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_6 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_9 = (d2_6 <= (reach * reach));
+    if ((d2_7 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_9 = (d2_7 <= (reach * reach));
     } else {
         local_9 = false;
     }
@@ -896,7 +880,7 @@ bool bsh_reaches(BshNode node_3, float3 x_10, float3 r_3, float4 rl_3)
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_11, float3 r_4, float4 rl_4)
+uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_10, float3 r_4, float4 rl_4)
 {
     uint i_3 = (uint)0;
 
@@ -913,7 +897,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_11, float3 r_4, flo
         {
             uint _e9 = i_3;
             const BshNode _e10 = bsh_node(nodes_3, _e9);
-            const bool _e11 = bsh_reaches(_e10, x_11, r_4, rl_4);
+            const bool _e11 = bsh_reaches(_e10, x_10, r_4, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     uint _e15 = i_3;
@@ -928,7 +912,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_11, float3 r_4, flo
     return BSH_NONE;
 }
 
-Picks bsh_collect(float3 x_12, float3 r_5, float4 rl_5, uint seed_1)
+Picks bsh_collect(float3 x_11, float3 r_5, float4 rl_5, uint seed_1)
 {
     Picks picks = (Picks)0;
     uint h_1 = (uint)0;
@@ -937,7 +921,7 @@ Picks bsh_collect(float3 x_12, float3 r_5, float4 rl_5, uint seed_1)
     picks.n = 0u;
     h_1 = seed_1;
     const uint _e10 = bsh_first(BSH);
-    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_5, rl_5);
+    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5);
     i_4 = _e11;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
@@ -947,7 +931,7 @@ Picks bsh_collect(float3 x_12, float3 r_5, float4 rl_5, uint seed_1)
         if (!loop_init_1) {
             uint _e44 = i_4;
             uint _e47 = asuint(bsh_nodes.Load(20+_e44*32));
-            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_5, rl_5);
+            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_5, rl_5);
             i_4 = _e48;
         }
         loop_init_1 = false;
@@ -998,7 +982,7 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_13, float3 n_6, float3 ng_1, float s_1, float w_res, float u1_1, float u2_1, float eps)
+Connection connect(uint li, float3 x_12, float3 n_6, float3 ng_1, float s_1, float w_res, float u1_1, float u2_1, float eps)
 {
     Connection c_4 = (Connection)0;
     bool local_10 = (bool)0;
@@ -1009,12 +993,12 @@ Connection connect(uint li, float3 x_13, float3 n_6, float3 ng_1, float s_1, flo
     c_4.y = _e17;
     float3 _e20 = c_4.y;
     float _e23 = asfloat(r2_2.Load(li*4));
-    const float _e25 = connection_cosine(x_13, _e20, n_6, ng_1, (s_1 * _e23));
+    const float _e25 = connection_cosine(x_12, _e20, n_6, ng_1, (s_1 * _e23));
     c_4.cos_x = _e25;
     float _e27 = c_4.cos_x;
     if (!((_e27 <= 0.0))) {
         float3 _e36 = c_4.y;
-        const bool _e37 = occluded((x_13 + (ng_1 * eps)), _e36);
+        const bool _e37 = occluded((x_12 + (ng_1 * eps)), _e36);
         local_10 = _e37;
     } else {
         local_10 = true;
@@ -1026,12 +1010,12 @@ Connection connect(uint li, float3 x_13, float3 n_6, float3 ng_1, float s_1, flo
         return connection;
     }
     float3 _e42 = c_4.y;
-    float3 v_6 = (x_13 - _e42);
-    float d2_7 = dot(v_6, v_6);
-    const float3 _e49 = light_intensity(l_2, (v_6 / (sqrt(d2_7)).xxx));
+    float3 v_7 = (x_12 - _e42);
+    float d2_8 = dot(v_7, v_7);
+    const float3 _e49 = light_intensity(l_2, (v_7 / (sqrt(d2_8)).xxx));
     float _e51 = c_4.cos_x;
     float _e54 = asfloat(rt2_2.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_7, (s_1 * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_8, (s_1 * _e54), w_res);
     c_4.e = (_e49 * _e56);
     Connection _e58 = c_4;
     const Connection connection_1 = _e58;
@@ -1055,13 +1039,13 @@ void main(uint3 gid : SV_DispatchThreadID)
         irradiance.Store4(i_5*16, asuint((0.0).xxxx));
         return;
     }
-    float3 x_14 = p_3.xyz;
+    float3 x_13 = p_3.xyz;
     float4 _e19 = asfloat(normals.Load4(i_5*16));
     float3 n_8 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     const uint _e27 = point_stream(_e23, i_5, _e26);
-    const Picks _e33 = bsh_collect(x_14, x_14, float4(1.0, 0.0, 1.0, 1.0), _e27);
+    const Picks _e33 = bsh_collect(x_13, x_13, float4(1.0, 0.0, 1.0, 1.0), _e27);
     const float _e36 = reservoir_weight(_e33.n, K);
     const uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -1094,7 +1078,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             uint _e60 = h;
             const float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            const Connection _e65 = connect(_e33.light[min(uint(_e57), 7u)], x_14, n_8, n_8, 1.0, _e36, _e52, _e61, _e64);
+            const Connection _e65 = connect(_e33.light[min(uint(_e57), 7u)], x_13, n_8, n_8, 1.0, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
     }

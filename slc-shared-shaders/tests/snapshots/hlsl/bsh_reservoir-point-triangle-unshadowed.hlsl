@@ -151,8 +151,8 @@ bool slc_keep(float r2_, float d2_1)
 
 bool sphere_contains_point(float3 c, float r, float3 x_1)
 {
-    float3 v_1 = (x_1 - c);
-    return (dot(v_1, v_1) <= (r * r));
+    float3 v_2 = (x_1 - c);
+    return (dot(v_2, v_2) <= (r * r));
 }
 
 float inverse_square(float d2_2)
@@ -172,11 +172,11 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     bool local = (bool)0;
     bool local_1 = (bool)0;
 
-    float3 v_2 = (x_2 - y);
-    float d2_5 = dot(v_2, v_2);
-    const bool _e7 = slc_keep(r2_1, d2_5);
+    float3 v_3 = (x_2 - y);
+    float d2_6 = dot(v_3, v_3);
+    const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local = !((d2_5 > 0.0));
+        local = !((d2_6 > 0.0));
     } else {
         local = true;
     }
@@ -184,7 +184,7 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_3 = (v_2 / (sqrt(d2_5)).xxx);
+    float3 w_3 = (v_3 / (sqrt(d2_6)).xxx);
     float cos_x_1 = -(dot(n, w_3));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = (dot(ng, w_3) >= 0.0);
@@ -280,32 +280,37 @@ float reservoir_weight(uint n_5, uint k_1)
     return max((_e2 / _e3), 1.0);
 }
 
-float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+float cone_cos_of(float3 v, float d2_4, float a_4, float3 d)
 {
-    if ((cos_a > cos_b)) {
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+
+    float vd = dot(v, d);
+    float h2_ = (d2_4 - (a_4 * a_4));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_3 = ((vd * vd) >= h2_);
+        } else {
+            local_3 = false;
+        }
+        bool _e19 = local_3;
+        local_2 = _e19;
+    } else {
+        local_2 = true;
+    }
+    bool _e21 = local_2;
+    if (_e21) {
         return 1.0;
     }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
+    float3 c_4 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_4, c_4)) * a_4)) / d2_4), 1.0);
 }
 
-float safe_sqrt(float x_3)
+float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
 {
-    return sqrt(max(x_3, 0.0));
-}
-
-float cone_cos_toward(float3 center_, float radius, float3 p, float3 d)
-{
-    float3 v_3 = (center_ - p);
-    float dist2_ = dot(v_3, v_3);
-    if ((dist2_ <= (radius * radius))) {
-        return 1.0;
-    }
-    float dist = sqrt(dist2_);
-    float3 c_4 = cross(v_3, d);
-    float sin_b_1 = (radius / dist);
-    const float _e20 = safe_sqrt((1.0 - (sin_b_1 * sin_b_1)));
-    const float _e21 = cos_sub_clamped((sqrt(dot(c_4, c_4)) / dist), (dot(v_3, d) / dist), sin_b_1, _e20);
-    return _e21;
+    float3 v_4 = (center_ - p);
+    const float _e6 = cone_cos_of(v_4, dot(v_4, v_4), radius, d_1);
+    return _e6;
 }
 
 float range_scale_at(float4 rl, float cos_t)
@@ -324,18 +329,18 @@ float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_
     return _e10;
 }
 
-float3 triangle_normal(float3 a_4, float3 b_4, float3 c_2)
+float3 triangle_normal(float3 a_5, float3 b_4, float3 c_2)
 {
-    bool local_2 = (bool)0;
+    bool local_4 = (bool)0;
 
-    float3 n_7 = cross((b_4 - a_4), (c_2 - a_4));
+    float3 n_7 = cross((b_4 - a_5), (c_2 - a_5));
     float l2_ = dot(n_7, n_7);
     if (!(!((l2_ > 0.0)))) {
-        local_2 = !((l2_ < 3e38));
+        local_4 = !((l2_ < 3e38));
     } else {
-        local_2 = true;
+        local_4 = true;
     }
-    bool _e17 = local_2;
+    bool _e17 = local_4;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -368,7 +373,7 @@ float3 light_point(GpuLight l_1, float u1_1, float u2_1)
     return l_1.p0_;
 }
 
-bool occluded(float3 a_5, float3 b_5)
+bool occluded(float3 a_6, float3 b_5)
 {
     return false;
 }
@@ -412,45 +417,24 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_6, float3 v, float d2_4, float3 r_2, float4 rl_2)
+float bsh_inner_scale(float a_7, float3 v_1, float d2_5, float3 r_2, float4 rl_2)
 {
-    bool local_3 = (bool)0;
-    bool local_4 = (bool)0;
-
-    float vr = dot(v, r_2);
-    float h2_ = (d2_4 - (a_6 * a_6));
-    if (!((h2_ <= 0.0))) {
-        if ((vr >= 0.0)) {
-            local_4 = ((vr * vr) >= h2_);
-        } else {
-            local_4 = false;
-        }
-        bool _e20 = local_4;
-        local_3 = _e20;
-    } else {
-        local_3 = true;
-    }
-    bool _e22 = local_3;
-    if (_e22) {
-        return (rl_2.w * rl_2.w);
-    }
-    float3 c_5 = cross(v, r_2);
-    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_5, c_5)) * a_6)) / d2_4);
-    const float _e36 = range_scale_at(rl_2, (cos_t_1 + 2e-6));
-    return _e36;
+    const float _e5 = cone_cos_of(v_1, d2_5, a_7, r_2);
+    const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
+    return _e8;
 }
 
-bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_3, float4 rl_3)
+bool bsh_reaches(BshNode node_2, float3 x_3, float3 r_3, float4 rl_3)
 {
     bool local_5 = (bool)0;
     bool local_6 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_2.center_, node_2.radius, x_4);
+    const bool _e6 = sphere_contains_point(node_2.center_, node_2.radius, x_3);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_3.w * 1.0001)), x_4);
+        const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_3.w * 1.0001)), x_3);
         local_5 = !(_e20);
     } else {
         local_5 = true;
@@ -460,23 +444,23 @@ bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_3, float4 rl_3)
         return false;
     }
     const float _e25 = bsh_range_bound(node_2);
-    float3 v_4 = (x_4 - node_2.center_);
-    float d2_6 = dot(v_4, v_4);
+    float3 v_5 = (x_3 - node_2.center_);
+    float d2_7 = dot(v_5, v_5);
     float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_6 > (reach_max * reach_max))) {
+    if ((d2_7 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_2.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_2.center_, node_2.extent, x_4, r_3);
+        const float _e43 = range_scale_toward(rl_3, node_2.center_, node_2.extent, x_3, r_3);
         const float _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_2.center_, _e46, x_4);
+        const bool _e47 = sphere_contains_point(node_2.center_, _e46, x_3);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_2.extent, -(v_4), d2_6, r_3, rl_3);
+    const float _e50 = bsh_inner_scale(node_2.extent, -(v_5), d2_7, r_3, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if ((d2_6 <= ((node_2.radius * node_2.radius) * s_c))) {
-        local_6 = (d2_6 <= (reach * reach));
+    if ((d2_7 <= ((node_2.radius * node_2.radius) * s_c))) {
+        local_6 = (d2_7 <= (reach * reach));
     } else {
         local_6 = false;
     }
@@ -484,7 +468,7 @@ bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_3, float4 rl_3)
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_4, float4 rl_4)
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_4, float3 r_4, float4 rl_4)
 {
     uint i_1 = (uint)0;
 
@@ -501,7 +485,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_4, float4
         {
             uint _e9 = i_1;
             const BshNode _e10 = bsh_node(nodes_3, _e9);
-            const bool _e11 = bsh_reaches(_e10, x_5, r_4, rl_4);
+            const bool _e11 = bsh_reaches(_e10, x_4, r_4, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     uint _e15 = i_1;
@@ -516,7 +500,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_4, float4
     return BSH_NONE;
 }
 
-Picks bsh_collect(float3 x_6, float3 r_5, float4 rl_5, uint seed_1)
+Picks bsh_collect(float3 x_5, float3 r_5, float4 rl_5, uint seed_1)
 {
     Picks picks = (Picks)0;
     uint h_1 = (uint)0;
@@ -525,7 +509,7 @@ Picks bsh_collect(float3 x_6, float3 r_5, float4 rl_5, uint seed_1)
     picks.n = 0u;
     h_1 = seed_1;
     const uint _e10 = bsh_first(BSH);
-    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_5, rl_5);
+    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_5, r_5, rl_5);
     i_2 = _e11;
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
@@ -535,7 +519,7 @@ Picks bsh_collect(float3 x_6, float3 r_5, float4 rl_5, uint seed_1)
         if (!loop_init) {
             uint _e44 = i_2;
             uint _e47 = asuint(bsh_nodes.Load(20+_e44*32));
-            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_6, r_5, rl_5);
+            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_5, r_5, rl_5);
             i_2 = _e48;
         }
         loop_init = false;
@@ -586,7 +570,7 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_7, float3 n_6, float3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps)
+Connection connect(uint li, float3 x_6, float3 n_6, float3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps)
 {
     Connection c_3 = (Connection)0;
     bool local_7 = (bool)0;
@@ -597,12 +581,12 @@ Connection connect(uint li, float3 x_7, float3 n_6, float3 ng_1, float s_1, floa
     c_3.y = _e17;
     float3 _e20 = c_3.y;
     float _e23 = asfloat(r2_2.Load(li*4));
-    const float _e25 = connection_cosine(x_7, _e20, n_6, ng_1, (s_1 * _e23));
+    const float _e25 = connection_cosine(x_6, _e20, n_6, ng_1, (s_1 * _e23));
     c_3.cos_x = _e25;
     float _e27 = c_3.cos_x;
     if (!((_e27 <= 0.0))) {
         float3 _e36 = c_3.y;
-        const bool _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
+        const bool _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
         local_7 = _e37;
     } else {
         local_7 = true;
@@ -614,12 +598,12 @@ Connection connect(uint li, float3 x_7, float3 n_6, float3 ng_1, float s_1, floa
         return connection;
     }
     float3 _e42 = c_3.y;
-    float3 v_5 = (x_7 - _e42);
-    float d2_7 = dot(v_5, v_5);
-    const float3 _e49 = light_intensity(l_2, (v_5 / (sqrt(d2_7)).xxx));
+    float3 v_6 = (x_6 - _e42);
+    float d2_8 = dot(v_6, v_6);
+    const float3 _e49 = light_intensity(l_2, (v_6 / (sqrt(d2_8)).xxx));
     float _e51 = c_3.cos_x;
     float _e54 = asfloat(rt2_2.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_7, (s_1 * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_8, (s_1 * _e54), w_res);
     c_3.e = (_e49 * _e56);
     Connection _e58 = c_3;
     const Connection connection_1 = _e58;
@@ -643,13 +627,13 @@ void main(uint3 gid : SV_DispatchThreadID)
         irradiance.Store4(i_3*16, asuint((0.0).xxxx));
         return;
     }
-    float3 x_8 = p_2.xyz;
+    float3 x_7 = p_2.xyz;
     float4 _e19 = asfloat(normals.Load4(i_3*16));
     float3 n_8 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     const uint _e27 = point_stream(_e23, i_3, _e26);
-    const Picks _e33 = bsh_collect(x_8, x_8, float4(1.0, 0.0, 1.0, 1.0), _e27);
+    const Picks _e33 = bsh_collect(x_7, x_7, float4(1.0, 0.0, 1.0, 1.0), _e27);
     const float _e36 = reservoir_weight(_e33.n, K);
     const uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -682,7 +666,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             uint _e60 = h;
             const float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            const Connection _e65 = connect(_e33.light[min(uint(_e57), 7u)], x_8, n_8, n_8, 1.0, _e36, _e52, _e61, _e64);
+            const Connection _e65 = connect(_e33.light[min(uint(_e57), 7u)], x_7, n_8, n_8, 1.0, _e36, _e52, _e61, _e64);
             e = (_e55 + _e65.e);
         }
     }

@@ -199,8 +199,8 @@ bool slc_keep(float r2_, float d2_1)
 
 bool sphere_contains_point(float3 c, float r_1, float3 x_2)
 {
-    float3 v_1 = (x_2 - c);
-    return (dot(v_1, v_1) <= (r_1 * r_1));
+    float3 v_2 = (x_2 - c);
+    return (dot(v_2, v_2) <= (r_1 * r_1));
 }
 
 float inverse_square(float d2_2)
@@ -220,11 +220,11 @@ float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
     bool local_2 = (bool)0;
     bool local_3 = (bool)0;
 
-    float3 v_2 = (x_3 - y);
-    float d2_5 = dot(v_2, v_2);
-    const bool _e7 = slc_keep(r2_1, d2_5);
+    float3 v_3 = (x_3 - y);
+    float d2_6 = dot(v_3, v_3);
+    const bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_2 = !((d2_5 > 0.0));
+        local_2 = !((d2_6 > 0.0));
     } else {
         local_2 = true;
     }
@@ -232,7 +232,7 @@ float connection_cosine(float3 x_3, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_5 = (v_2 / (sqrt(d2_5)).xxx);
+    float3 w_5 = (v_3 / (sqrt(d2_6)).xxx);
     float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = (dot(ng, w_5) >= 0.0);
@@ -273,15 +273,15 @@ float atan_portable(float x_4)
     float base = 0.0;
     float t_1 = (float)0;
 
-    float a_9 = abs(x_4);
-    t_1 = a_9;
-    if ((a_9 > 2.4142137)) {
+    float a_10 = abs(x_4);
+    t_1 = a_10;
+    if ((a_10 > 2.4142137)) {
         base = 1.5707964;
-        t_1 = (-1.0 / a_9);
+        t_1 = (-1.0 / a_10);
     } else {
-        if ((a_9 > 0.41421357)) {
+        if ((a_10 > 0.41421357)) {
             base = 0.7853982;
-            t_1 = ((a_9 - 1.0) / (a_9 + 1.0));
+            t_1 = ((a_10 - 1.0) / (a_10 + 1.0));
         }
     }
     float _e18 = t_1;
@@ -445,11 +445,11 @@ float ies_candela(uint tab_2, uint base_1, float gamma, float c_3)
     const float _e54 = ies_lerp_t(_e51, _e53, _e32);
     const float _e58 = at(tab_2, ((c0_ + (_e34 * _e5)) + _e33));
     const float _e65 = at(tab_2, ((c0_ + (_e34 * _e5)) + iv1_));
-    float a_10 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
+    float a_11 = ((_e58 * (1.0 - _e49)) + (_e65 * _e49));
     const float _e71 = at(tab_2, ((c0_ + (ih1_ * _e5)) + _e33));
     const float _e78 = at(tab_2, ((c0_ + (ih1_ * _e5)) + iv1_));
     float b_7 = ((_e71 * (1.0 - _e49)) + (_e78 * _e49));
-    return ((a_10 * (1.0 - _e54)) + (b_7 * _e54));
+    return ((a_11 * (1.0 - _e54)) + (b_7 * _e54));
 }
 
 float ies_candela_dir(uint tab_3, uint base_2, float wn, float wr, float ws)
@@ -576,32 +576,37 @@ float4 range_lobe(float4 lobe_4)
     return float4(lobe_4.x, _e10, (lobe_4.z * lobe_4.z), sqrt(_e14));
 }
 
-float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+float cone_cos_of(float3 v, float d2_4, float a_5, float3 d)
 {
-    if ((cos_a > cos_b)) {
+    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
+
+    float vd = dot(v, d);
+    float h2_ = (d2_4 - (a_5 * a_5));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_6 = ((vd * vd) >= h2_);
+        } else {
+            local_6 = false;
+        }
+        bool _e19 = local_6;
+        local_5 = _e19;
+    } else {
+        local_5 = true;
+    }
+    bool _e21 = local_5;
+    if (_e21) {
         return 1.0;
     }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
+    float3 c_7 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_7, c_7)) * a_5)) / d2_4), 1.0);
 }
 
-float safe_sqrt(float x_8)
+float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
 {
-    return sqrt(max(x_8, 0.0));
-}
-
-float cone_cos_toward(float3 center_, float radius, float3 p, float3 d)
-{
-    float3 v_3 = (center_ - p);
-    float dist2_ = dot(v_3, v_3);
-    if ((dist2_ <= (radius * radius))) {
-        return 1.0;
-    }
-    float dist = sqrt(dist2_);
-    float3 c_7 = cross(v_3, d);
-    float sin_b_1 = (radius / dist);
-    const float _e20 = safe_sqrt((1.0 - (sin_b_1 * sin_b_1)));
-    const float _e21 = cos_sub_clamped((sqrt(dot(c_7, c_7)) / dist), (dot(v_3, d) / dist), sin_b_1, _e20);
-    return _e21;
+    float3 v_4 = (center_ - p);
+    const float _e6 = cone_cos_of(v_4, dot(v_4, v_4), radius, d_1);
+    return _e6;
 }
 
 float range_scale_at(float4 rl, float cos_t)
@@ -620,18 +625,18 @@ float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_
     return _e10;
 }
 
-float3 triangle_normal(float3 a_5, float3 b_4, float3 c_4)
+float3 triangle_normal(float3 a_6, float3 b_4, float3 c_4)
 {
-    bool local_5 = (bool)0;
+    bool local_7 = (bool)0;
 
-    float3 n_9 = cross((b_4 - a_5), (c_4 - a_5));
+    float3 n_9 = cross((b_4 - a_6), (c_4 - a_6));
     float l2_ = dot(n_9, n_9);
     if (!(!((l2_ > 0.0)))) {
-        local_5 = !((l2_ < 3e38));
+        local_7 = !((l2_ < 3e38));
     } else {
-        local_5 = true;
+        local_7 = true;
     }
-    bool _e17 = local_5;
+    bool _e17 = local_7;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -672,7 +677,7 @@ float3 light_point(GpuLight l_1, float u1_1, float u2_1)
     return l_1.p0_;
 }
 
-bool occluded(float3 a_6, float3 b_5)
+bool occluded(float3 a_7, float3 b_5)
 {
     return false;
 }
@@ -716,45 +721,24 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_7, float3 v, float d2_4, float3 r_3, float4 rl_2)
+float bsh_inner_scale(float a_8, float3 v_1, float d2_5, float3 r_3, float4 rl_2)
 {
-    bool local_6 = (bool)0;
-    bool local_7 = (bool)0;
-
-    float vr = dot(v, r_3);
-    float h2_ = (d2_4 - (a_7 * a_7));
-    if (!((h2_ <= 0.0))) {
-        if ((vr >= 0.0)) {
-            local_7 = ((vr * vr) >= h2_);
-        } else {
-            local_7 = false;
-        }
-        bool _e20 = local_7;
-        local_6 = _e20;
-    } else {
-        local_6 = true;
-    }
-    bool _e22 = local_6;
-    if (_e22) {
-        return (rl_2.w * rl_2.w);
-    }
-    float3 c_8 = cross(v, r_3);
-    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_7)) / d2_4);
-    const float _e36 = range_scale_at(rl_2, (cos_t_1 + 2e-6));
-    return _e36;
+    const float _e5 = cone_cos_of(v_1, d2_5, a_8, r_3);
+    const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
+    return _e8;
 }
 
-bool bsh_reaches(BshNode node_2, float3 x_9, float3 r_4, float4 rl_3)
+bool bsh_reaches(BshNode node_2, float3 x_8, float3 r_4, float4 rl_3)
 {
     bool local_8 = (bool)0;
     bool local_9 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_2.center_, node_2.radius, x_9);
+    const bool _e6 = sphere_contains_point(node_2.center_, node_2.radius, x_8);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_3.w * 1.0001)), x_9);
+        const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_3.w * 1.0001)), x_8);
         local_8 = !(_e20);
     } else {
         local_8 = true;
@@ -764,23 +748,23 @@ bool bsh_reaches(BshNode node_2, float3 x_9, float3 r_4, float4 rl_3)
         return false;
     }
     const float _e25 = bsh_range_bound(node_2);
-    float3 v_4 = (x_9 - node_2.center_);
-    float d2_6 = dot(v_4, v_4);
+    float3 v_5 = (x_8 - node_2.center_);
+    float d2_7 = dot(v_5, v_5);
     float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_6 > (reach_max * reach_max))) {
+    if ((d2_7 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_2.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_2.center_, node_2.extent, x_9, r_4);
+        const float _e43 = range_scale_toward(rl_3, node_2.center_, node_2.extent, x_8, r_4);
         const float _e46 = bsh_scaled_radius(node_2, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_2.center_, _e46, x_9);
+        const bool _e47 = sphere_contains_point(node_2.center_, _e46, x_8);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_2.extent, -(v_4), d2_6, r_4, rl_3);
+    const float _e50 = bsh_inner_scale(node_2.extent, -(v_5), d2_7, r_4, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if ((d2_6 <= ((node_2.radius * node_2.radius) * s_c))) {
-        local_9 = (d2_6 <= (reach * reach));
+    if ((d2_7 <= ((node_2.radius * node_2.radius) * s_c))) {
+        local_9 = (d2_7 <= (reach * reach));
     } else {
         local_9 = false;
     }
@@ -788,7 +772,7 @@ bool bsh_reaches(BshNode node_2, float3 x_9, float3 r_4, float4 rl_3)
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_10, float3 r_5, float4 rl_4)
+uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_9, float3 r_5, float4 rl_4)
 {
     uint i_2 = (uint)0;
 
@@ -805,7 +789,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_10, float3 r_5, flo
         {
             uint _e9 = i_2;
             const BshNode _e10 = bsh_node(nodes_3, _e9);
-            const bool _e11 = bsh_reaches(_e10, x_10, r_5, rl_4);
+            const bool _e11 = bsh_reaches(_e10, x_9, r_5, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     uint _e15 = i_2;
@@ -820,7 +804,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start_1, float3 x_10, float3 r_5, flo
     return BSH_NONE;
 }
 
-Picks bsh_collect(float3 x_11, float3 r_6, float4 rl_5, uint seed_1)
+Picks bsh_collect(float3 x_10, float3 r_6, float4 rl_5, uint seed_1)
 {
     Picks picks = (Picks)0;
     uint h_1 = (uint)0;
@@ -829,7 +813,7 @@ Picks bsh_collect(float3 x_11, float3 r_6, float4 rl_5, uint seed_1)
     picks.n = 0u;
     h_1 = seed_1;
     const uint _e10 = bsh_first(BSH);
-    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_6, rl_5);
+    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_10, r_6, rl_5);
     i_3 = _e11;
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
@@ -839,7 +823,7 @@ Picks bsh_collect(float3 x_11, float3 r_6, float4 rl_5, uint seed_1)
         if (!loop_init) {
             uint _e44 = i_3;
             uint _e47 = asuint(bsh_nodes.Load(20+_e44*32));
-            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_6, rl_5);
+            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_10, r_6, rl_5);
             i_3 = _e48;
         }
         loop_init = false;
@@ -890,7 +874,7 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_12, float3 n_7, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps)
+Connection connect(uint li, float3 x_11, float3 n_7, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps)
 {
     Connection c_5 = (Connection)0;
     bool local_10 = (bool)0;
@@ -901,12 +885,12 @@ Connection connect(uint li, float3 x_12, float3 n_7, float3 ng_1, float s, float
     c_5.y = _e17;
     float3 _e20 = c_5.y;
     float _e23 = asfloat(r2_2.Load(li*4));
-    const float _e25 = connection_cosine(x_12, _e20, n_7, ng_1, (s * _e23));
+    const float _e25 = connection_cosine(x_11, _e20, n_7, ng_1, (s * _e23));
     c_5.cos_x = _e25;
     float _e27 = c_5.cos_x;
     if (!((_e27 <= 0.0))) {
         float3 _e36 = c_5.y;
-        const bool _e37 = occluded((x_12 + (ng_1 * eps)), _e36);
+        const bool _e37 = occluded((x_11 + (ng_1 * eps)), _e36);
         local_10 = _e37;
     } else {
         local_10 = true;
@@ -918,12 +902,12 @@ Connection connect(uint li, float3 x_12, float3 n_7, float3 ng_1, float s, float
         return connection;
     }
     float3 _e42 = c_5.y;
-    float3 v_5 = (x_12 - _e42);
-    float d2_7 = dot(v_5, v_5);
-    const float3 _e49 = light_intensity(l_2, (v_5 / (sqrt(d2_7)).xxx));
+    float3 v_6 = (x_11 - _e42);
+    float d2_8 = dot(v_6, v_6);
+    const float3 _e49 = light_intensity(l_2, (v_6 / (sqrt(d2_8)).xxx));
     float _e51 = c_5.cos_x;
     float _e54 = asfloat(rt2_2.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_7, (s * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_8, (s * _e54), w_res);
     c_5.e = (_e49 * _e56);
     Connection _e58 = c_5;
     const Connection connection_1 = _e58;
@@ -936,11 +920,11 @@ float4 surface_at(int2 texel)
     return ((p_2.w > 0.0) ? float4(p_2.xyz, 1.0) : (0.0).xxxx);
 }
 
-Shaded shade_pick(uint li_1, float3 x_13, float3 n_8, float3 r_7, float4 rl_6, Material m_1, float w_4, float u1_3, float u2_3)
+Shaded shade_pick(uint li_1, float3 x_12, float3 n_8, float3 r_7, float4 rl_6, Material m_1, float w_4, float u1_3, float u2_3)
 {
     Shaded s_1 = (Shaded)0;
 
-    const Connection _e12 = connect(li_1, x_13, n_8, n_8, 1.0, w_4, u1_3, u2_3, 0.0);
+    const Connection _e12 = connect(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, 0.0);
     s_1.e = _e12.e;
     s_1.diffuse = (0.0).xxx;
     s_1.specular = (0.0).xxx;
@@ -957,9 +941,9 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
     return ret;
 }
 
-Shaded add(Shaded a_8, Shaded b_6)
+Shaded add(Shaded a_9, Shaded b_6)
 {
-    const Shaded shaded_1 = ConstructShaded((a_8.e + b_6.e), (a_8.diffuse + b_6.diffuse), (a_8.specular + b_6.specular));
+    const Shaded shaded_1 = ConstructShaded((a_9.e + b_6.e), (a_9.diffuse + b_6.diffuse), (a_9.specular + b_6.specular));
     return shaded_1;
 }
 
@@ -1001,7 +985,7 @@ void main(uint3 gid : SV_DispatchThreadID)
         out_tex[texel_1] = (0.0).xxxx;
         return;
     }
-    float3 x_14 = _e21.xyz;
+    float3 x_13 = _e21.xyz;
     float3 n_10 = (nn / (sqrt(len2_)).xxx);
     r = n_10;
     float4 _e53 = lobe;
@@ -1013,7 +997,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     const uint _e69 = pick_stream(_e68);
     h = _e69;
     float3 _e79 = r;
-    const Picks _e80 = bsh_collect(x_14, _e79, _e54, _e68);
+    const Picks _e80 = bsh_collect(x_13, _e79, _e54, _e68);
     const float _e83 = reservoir_weight(_e80.n, K);
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
@@ -1045,7 +1029,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             Material _e102 = m;
             uint _e103 = h;
             const float _e104 = xi_from_bits(_e103);
-            const Shaded _e105 = shade_pick(_e80.light[min(uint(_e99), 7u)], x_14, n_10, _e101, _e54, _e102, _e83, _e94, _e104);
+            const Shaded _e105 = shade_pick(_e80.light[min(uint(_e99), 7u)], x_13, n_10, _e101, _e54, _e102, _e83, _e94, _e104);
             const Shaded _e106 = add(_e97, _e105);
             t = _e106;
         }

@@ -198,8 +198,8 @@ bool slc_keep(float r2_, float d2_1)
 
 bool sphere_contains_point(float3 c, float r_1, float3 x_1)
 {
-    float3 v_1 = (x_1 - c);
-    return (dot(v_1, v_1) <= (r_1 * r_1));
+    float3 v_2 = (x_1 - c);
+    return (dot(v_2, v_2) <= (r_1 * r_1));
 }
 
 float inverse_square(float d2_2)
@@ -219,11 +219,11 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     bool local_2 = (bool)0;
     bool local_3 = (bool)0;
 
-    float3 v_2 = (x_2 - y);
-    float d2_6 = dot(v_2, v_2);
-    const bool _e7 = slc_keep(r2_1, d2_6);
+    float3 v_3 = (x_2 - y);
+    float d2_7 = dot(v_3, v_3);
+    const bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_2 = !((d2_6 > 0.0));
+        local_2 = !((d2_7 > 0.0));
     } else {
         local_2 = true;
     }
@@ -231,7 +231,7 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_5 = (v_2 / (sqrt(d2_6)).xxx);
+    float3 w_5 = (v_3 / (sqrt(d2_7)).xxx);
     float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = (dot(ng, w_5) >= 0.0);
@@ -361,11 +361,11 @@ float subtended_cos(float dist2_, float r2_2)
 
 float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, float3 p)
 {
-    float3 v_3 = (p - center_);
-    float dist2_1 = dot(v_3, v_3);
+    float3 v_4 = (p - center_);
+    float dist2_1 = dot(v_4, v_4);
     float r2_4 = (radius * radius);
-    float d2_7 = max(max(dist2_1, r2_4), MIN_D2_);
-    float3 wi = ((dist2_1 > 0.0) ? (v_3 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    float d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
+    float3 wi = ((dist2_1 > 0.0) ? (v_4 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
     const float _e26 = subtended_cos(dist2_1, r2_4);
@@ -374,7 +374,7 @@ float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, floa
     const float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
     const float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
     const float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return float4(_e37, d2_7, _e26, _e30);
+    return float4(_e37, d2_8, _e26, _e30);
 }
 
 float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis_1, float cos_o_1, float cos_e, float3 p_1)
@@ -386,19 +386,37 @@ float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis
     return ((phi * _e7.x) / _e7.y);
 }
 
-float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d)
+float cone_cos_of(float3 v, float d2_4, float a_2, float3 d)
 {
-    float3 v_4 = (center_2 - p_2);
-    float dist2_2 = dot(v_4, v_4);
-    if ((dist2_2 <= (radius_2 * radius_2))) {
+    bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
+
+    float vd = dot(v, d);
+    float h2_ = (d2_4 - (a_2 * a_2));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_5 = ((vd * vd) >= h2_);
+        } else {
+            local_5 = false;
+        }
+        bool _e19 = local_5;
+        local_4 = _e19;
+    } else {
+        local_4 = true;
+    }
+    bool _e21 = local_4;
+    if (_e21) {
         return 1.0;
     }
-    float dist = sqrt(dist2_2);
-    float3 c_2 = cross(v_4, d);
-    float sin_b_2 = (radius_2 / dist);
-    const float _e20 = safe_sqrt((1.0 - (sin_b_2 * sin_b_2)));
-    const float _e21 = cos_sub_clamped((sqrt(dot(c_2, c_2)) / dist), (dot(v_4, d) / dist), sin_b_2, _e20);
-    return _e21;
+    float3 c_2 = cross(v, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_2, c_2)) * a_2)) / d2_4), 1.0);
+}
+
+float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d_1)
+{
+    float3 v_5 = (center_2 - p_2);
+    const float _e6 = cone_cos_of(v_5, dot(v_5, v_5), radius_2, d_1);
+    return _e6;
 }
 
 float range_scale_at(float4 rl, float cos_t)
@@ -427,9 +445,9 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_1, n_1) > 0.0)) {
-        float3 v_5 = (center_4 - p_4);
-        float dist2_3 = dot(v_5, v_5);
-        float cos_i = dot(((dist2_3 > 0.0) ? (v_5 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0)), n_1);
+        float3 v_6 = (center_4 - p_4);
+        float dist2_2 = dot(v_6, v_6);
+        float cos_i = dot(((dist2_2 > 0.0) ? (v_6 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0)), n_1);
         float _e33 = imp;
         const float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
         const float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -441,16 +459,16 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
 
 float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_5, float3 n_2, float3 r_3, float4 lobe_5)
 {
-    bool local_4 = (bool)0;
+    bool local_6 = (bool)0;
 
     const float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     const float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_2);
     if (!((_e10 <= 0.0))) {
-        local_4 = (_e11 <= 0.0);
+        local_6 = (_e11 <= 0.0);
     } else {
-        local_4 = true;
+        local_6 = true;
     }
-    bool _e20 = local_4;
+    bool _e20 = local_6;
     if (_e20) {
         return 0.0;
     }
@@ -462,22 +480,22 @@ float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axi
     return (_e10 * (((lobe_5.x * INV_PI) * _e11) + spec));
 }
 
-float candidate_weight(float importance, float rt2_2, float d2_4)
+float candidate_weight(float importance, float rt2_2, float d2_5)
 {
-    const float _e3 = slc_weight(rt2_2, d2_4);
+    const float _e3 = slc_weight(rt2_2, d2_5);
     return (importance * _e3);
 }
 
 float cone_weight(float3 center_6, float radius_6, float phi_3, float3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, float3 p_6, float3 n_3, float3 r_4, float4 lobe_6)
 {
-    float3 v_6 = (p_6 - center_6);
+    float3 v_7 = (p_6 - center_6);
     if ((lobe_6.y <= 0.0)) {
         const float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3);
-        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_6, v_6));
+        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_7, v_7));
         return _e19;
     }
     const float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3, r_4, lobe_6);
-    const float _e22 = candidate_weight(_e20, rt2_3, dot(v_6, v_6));
+    const float _e22 = candidate_weight(_e20, rt2_3, dot(v_7, v_7));
     return _e22;
 }
 
@@ -502,7 +520,7 @@ float3 light_point(GpuLight l_1, float u1_, float u2_)
     return l_1.p0_;
 }
 
-bool occluded(float3 a_2, float3 b_2)
+bool occluded(float3 a_3, float3 b_2)
 {
     return false;
 }
@@ -546,32 +564,11 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_3, float3 v, float d2_5, float3 r_5, float4 rl_2)
+float bsh_inner_scale(float a_4, float3 v_1, float d2_6, float3 r_5, float4 rl_2)
 {
-    bool local_5 = (bool)0;
-    bool local_6 = (bool)0;
-
-    float vr = dot(v, r_5);
-    float h2_ = (d2_5 - (a_3 * a_3));
-    if (!((h2_ <= 0.0))) {
-        if ((vr >= 0.0)) {
-            local_6 = ((vr * vr) >= h2_);
-        } else {
-            local_6 = false;
-        }
-        bool _e20 = local_6;
-        local_5 = _e20;
-    } else {
-        local_5 = true;
-    }
-    bool _e22 = local_5;
-    if (_e22) {
-        return (rl_2.w * rl_2.w);
-    }
-    float3 c_3 = cross(v, r_5);
-    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_3, c_3)) * a_3)) / d2_5);
-    const float _e36 = range_scale_at(rl_2, (cos_t_1 + 2e-6));
-    return _e36;
+    const float _e5 = cone_cos_of(v_1, d2_6, a_4, r_5);
+    const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
+    return _e8;
 }
 
 bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_6, float4 rl_3)
@@ -594,10 +591,10 @@ bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_6, float4 rl_3)
         return false;
     }
     const float _e25 = bsh_range_bound(node_2);
-    float3 v_7 = (x_4 - node_2.center_);
-    float d2_8 = dot(v_7, v_7);
+    float3 v_8 = (x_4 - node_2.center_);
+    float d2_9 = dot(v_8, v_8);
     float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_8 > (reach_max * reach_max))) {
+    if ((d2_9 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_2.child == BSH_NONE)) {
@@ -606,11 +603,11 @@ bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_6, float4 rl_3)
         const bool _e47 = sphere_contains_point(node_2.center_, _e46, x_4);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_2.extent, -(v_7), d2_8, r_6, rl_3);
+    const float _e50 = bsh_inner_scale(node_2.extent, -(v_8), d2_9, r_6, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_2.extent + (sqrt(s_c) * _e25));
-    if ((d2_8 <= ((node_2.radius * node_2.radius) * s_c))) {
-        local_8 = (d2_8 <= (reach * reach));
+    if ((d2_9 <= ((node_2.radius * node_2.radius) * s_c))) {
+        local_8 = (d2_9 <= (reach * reach));
     } else {
         local_8 = false;
     }
@@ -691,12 +688,12 @@ Connection connect(uint li, float3 x_6, float3 n_4, float3 ng_1, float s, float 
         return connection;
     }
     float3 _e42 = c_1.y;
-    float3 v_8 = (x_6 - _e42);
-    float d2_9 = dot(v_8, v_8);
-    const float3 _e49 = light_intensity(l_2, (v_8 / (sqrt(d2_9)).xxx));
+    float3 v_9 = (x_6 - _e42);
+    float d2_10 = dot(v_9, v_9);
+    const float3 _e49 = light_intensity(l_2, (v_9 / (sqrt(d2_10)).xxx));
     float _e51 = c_1.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
     c_1.e = (_e49 * _e56);
     Connection _e58 = c_1;
     const Connection connection_1 = _e58;
@@ -718,17 +715,17 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
 
 float light_range_scale(uint li_1, float3 x_7, float3 r_8, float4 rl_5)
 {
-    GpuLightCone c_4 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_5, c_4.center_, c_4.radius, x_7, r_8);
+    GpuLightCone c_3 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_5, c_3.center_, c_3.radius, x_7, r_8);
     return _e9;
 }
 
 float light_weight(uint li_2, float3 x_8, float3 n_5, float3 r_9, float4 lobe_7, float4 rl_6)
 {
-    GpuLightCone c_5 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
+    GpuLightCone c_4 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_2*48+0)), asfloat(light_cones.Load(li_2*48+12)), asfloat(light_cones.Load3(li_2*48+16)), asfloat(light_cones.Load(li_2*48+28)), asfloat(light_cones.Load(li_2*48+32)), asfloat(light_cones.Load(li_2*48+36)), asuint(light_cones.Load(li_2*48+40)), asuint(light_cones.Load(li_2*48+44)));
     const float _e15 = light_range_scale(li_2, x_8, r_9, rl_6);
     float _e18 = asfloat(rt2_4.Load(li_2*4));
-    const float _e20 = cone_weight(c_5.center_, c_5.radius, c_5.phi, c_5.axis, c_5.cos_o, c_5.cos_e, (_e15 * _e18), x_8, n_5, r_9, lobe_7);
+    const float _e20 = cone_weight(c_4.center_, c_4.radius, c_4.phi, c_4.axis, c_4.cos_o, c_4.cos_e, (_e15 * _e18), x_8, n_5, r_9, lobe_7);
     return _e20;
 }
 
@@ -830,7 +827,7 @@ float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px,
 float4 surface_at(int2 texel)
 {
     float4 _e3 = depth_tex.Load(int3(texel, int(0)));
-    float d_1 = _e3.x;
+    float d_2 = _e3.x;
     float4 _e7 = view.c0_;
     float4 _e10 = view.c1_;
     float4 _e13 = view.c2_;
@@ -838,7 +835,7 @@ float4 surface_at(int2 texel)
     uint _e23 = view.width;
     uint _e27 = view.height;
     float _e31 = view.background;
-    const float4 _e32 = unproject_pixel(_e7, _e10, _e13, _e16, float(texel.x), float(texel.y), float(_e23), float(_e27), d_1, _e31);
+    const float4 _e32 = unproject_pixel(_e7, _e10, _e13, _e16, float(texel.x), float(texel.y), float(_e23), float(_e27), d_2, _e31);
     return _e32;
 }
 
@@ -863,9 +860,9 @@ Shaded ConstructShaded(float3 arg0, float3 arg1, float3 arg2) {
     return ret;
 }
 
-Shaded add(Shaded a_4, Shaded b_4)
+Shaded add(Shaded a_5, Shaded b_4)
 {
-    const Shaded shaded_1 = ConstructShaded((a_4.e + b_4.e), (a_4.diffuse + b_4.diffuse), (a_4.specular + b_4.specular));
+    const Shaded shaded_1 = ConstructShaded((a_5.e + b_4.e), (a_5.diffuse + b_4.diffuse), (a_5.specular + b_4.specular));
     return shaded_1;
 }
 

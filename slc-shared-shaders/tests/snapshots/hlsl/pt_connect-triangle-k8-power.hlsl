@@ -218,8 +218,8 @@ bool slc_keep(float r2_, float d2_2)
 
 bool sphere_contains_point(float3 c, float r, float3 x_1)
 {
-    float3 v_7 = (x_1 - c);
-    return (dot(v_7, v_7) <= (r * r));
+    float3 v_8 = (x_1 - c);
+    return (dot(v_8, v_8) <= (r * r));
 }
 
 float inverse_square(float d2_3)
@@ -239,11 +239,11 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     bool local = (bool)0;
     bool local_1 = (bool)0;
 
-    float3 v_8 = (x_2 - y);
-    float d2_8 = dot(v_8, v_8);
-    const bool _e7 = slc_keep(r2_1, d2_8);
+    float3 v_9 = (x_2 - y);
+    float d2_9 = dot(v_9, v_9);
+    const bool _e7 = slc_keep(r2_1, d2_9);
     if (!(!(_e7))) {
-        local = !((d2_8 > 0.0));
+        local = !((d2_9 > 0.0));
     } else {
         local = true;
     }
@@ -251,7 +251,7 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_5 = (v_8 / (sqrt(d2_8)).xxx);
+    float3 w_5 = (v_9 / (sqrt(d2_9)).xxx);
     float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = (dot(ng, w_5) >= 0.0);
@@ -419,15 +419,15 @@ float cosine_pdf(float cos_theta)
 float3 onb_tangent(float3 n_6)
 {
     float s_3 = ((n_6.z >= 0.0) ? 1.0 : -1.0);
-    float a_8 = (-1.0 / (s_3 + n_6.z));
-    return float3((1.0 + (((s_3 * n_6.x) * n_6.x) * a_8)), (((s_3 * n_6.x) * n_6.y) * a_8), (-(s_3) * n_6.x));
+    float a_9 = (-1.0 / (s_3 + n_6.z));
+    return float3((1.0 + (((s_3 * n_6.x) * n_6.x) * a_9)), (((s_3 * n_6.x) * n_6.y) * a_9), (-(s_3) * n_6.x));
 }
 
 float3 onb_bitangent(float3 n_7)
 {
     float s_4 = ((n_7.z >= 0.0) ? 1.0 : -1.0);
-    float a_9 = (-1.0 / (s_4 + n_7.z));
-    return float3(((n_7.x * n_7.y) * a_9), (s_4 + ((n_7.y * n_7.y) * a_9)), -(n_7.y));
+    float a_10 = (-1.0 / (s_4 + n_7.z));
+    return float3(((n_7.x * n_7.y) * a_10), (s_4 + ((n_7.y * n_7.y) * a_10)), -(n_7.y));
 }
 
 float3 onb_to_local(float3 n_8, float3 w_2)
@@ -632,9 +632,9 @@ float3 mirror_dir(float3 n_11, float3 v_3)
 
 float bounded_vndf_k(float3 wi, float alpha_6)
 {
-    float a_10 = saturate(alpha_6);
+    float a_11 = saturate(alpha_6);
     float s_5 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    float a2_3 = (a_10 * a_10);
+    float a2_3 = (a_11 * a_11);
     float s2_ = (s_5 * s_5);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
@@ -672,32 +672,37 @@ float bsdf_pdf(float3 n_12, float3 v_4, float3 l_3, float alpha_8, float p_spec)
     return ((p_spec * _e11) + ((1.0 - p_spec) * _e6));
 }
 
-float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+float cone_cos_of(float3 v_5, float d2_7, float a_4, float3 d)
 {
-    if ((cos_a > cos_b)) {
+    bool local_11 = (bool)0;
+    bool local_12 = (bool)0;
+
+    float vd = dot(v_5, d);
+    float h2_ = (d2_7 - (a_4 * a_4));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_12 = ((vd * vd) >= h2_);
+        } else {
+            local_12 = false;
+        }
+        bool _e19 = local_12;
+        local_11 = _e19;
+    } else {
+        local_11 = true;
+    }
+    bool _e21 = local_11;
+    if (_e21) {
         return 1.0;
     }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
+    float3 c_9 = cross(v_5, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_9, c_9)) * a_4)) / d2_7), 1.0);
 }
 
-float safe_sqrt(float x_3)
+float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
 {
-    return sqrt(max(x_3, 0.0));
-}
-
-float cone_cos_toward(float3 center_, float radius, float3 p, float3 d)
-{
-    float3 v_9 = (center_ - p);
-    float dist2_ = dot(v_9, v_9);
-    if ((dist2_ <= (radius * radius))) {
-        return 1.0;
-    }
-    float dist = sqrt(dist2_);
-    float3 c_9 = cross(v_9, d);
-    float sin_b_1 = (radius / dist);
-    const float _e20 = safe_sqrt((1.0 - (sin_b_1 * sin_b_1)));
-    const float _e21 = cos_sub_clamped((sqrt(dot(c_9, c_9)) / dist), (dot(v_9, d) / dist), sin_b_1, _e20);
-    return _e21;
+    float3 v_10 = (center_ - p);
+    const float _e6 = cone_cos_of(v_10, dot(v_10, v_10), radius, d_1);
+    return _e6;
 }
 
 float range_scale_at(float4 rl, float cos_t)
@@ -721,16 +726,16 @@ float shadow_margin(float len)
     return (0.0001 * len);
 }
 
-float ray_inverse(float x_4)
+float ray_inverse(float x_3)
 {
-    return (1.0 / ((abs(x_4) < 1e-30) ? 1e-30 : x_4));
+    return (1.0 / ((abs(x_3) < 1e-30) ? 1e-30 : x_3));
 }
 
-float3 ray_inverse3_(float3 d_1)
+float3 ray_inverse3_(float3 d_2)
 {
-    const float _e2 = ray_inverse(d_1.x);
-    const float _e4 = ray_inverse(d_1.y);
-    const float _e6 = ray_inverse(d_1.z);
+    const float _e2 = ray_inverse(d_2.x);
+    const float _e4 = ray_inverse(d_2.y);
+    const float _e6 = ray_inverse(d_2.z);
     return float3(_e2, _e4, _e6);
 }
 
@@ -748,90 +753,90 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
     return -1.0;
 }
 
-float3 triangle_normal(float3 a_4, float3 b_4, float3 c_3)
+float3 triangle_normal(float3 a_5, float3 b_4, float3 c_3)
 {
-    bool local_11 = (bool)0;
+    bool local_13 = (bool)0;
 
-    float3 n_17 = cross((b_4 - a_4), (c_3 - a_4));
+    float3 n_17 = cross((b_4 - a_5), (c_3 - a_5));
     float l2_ = dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
-        local_11 = !((l2_ < 3e38));
+        local_13 = !((l2_ < 3e38));
     } else {
-        local_11 = true;
+        local_13 = true;
     }
-    bool _e17 = local_11;
+    bool _e17 = local_13;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
     return (n_17 / (sqrt(l2_)).xxx);
 }
 
-float ray_triangle(float3 o_1, float3 d_2, float3 a_5, float3 b_5, float3 c_4, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_3, float3 a_6, float3 b_5, float3 c_4, float t_min, float t_max_1)
 {
-    bool local_12 = (bool)0;
-    bool local_13 = (bool)0;
     bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
 
-    float3 e1_ = (b_5 - a_5);
-    float3 e2_ = (c_4 - a_5);
-    float3 p_2 = cross(d_2, e2_);
+    float3 e1_ = (b_5 - a_6);
+    float3 e2_ = (c_4 - a_6);
+    float3 p_2 = cross(d_3, e2_);
     float det = dot(e1_, p_2);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
-    float3 s_6 = (o_1 - a_5);
+    float3 s_6 = (o_1 - a_6);
     float u_2 = (dot(s_6, p_2) * inv_1);
     if (!((u_2 < 0.0))) {
-        local_12 = (u_2 > 1.0);
+        local_14 = (u_2 > 1.0);
     } else {
-        local_12 = true;
+        local_14 = true;
     }
-    bool _e28 = local_12;
+    bool _e28 = local_14;
     if (_e28) {
         return -1.0;
     }
     float3 q = cross(s_6, e1_);
-    float v_10 = (dot(d_2, q) * inv_1);
-    if (!((v_10 < 0.0))) {
-        local_13 = ((u_2 + v_10) > 1.0);
+    float v_11 = (dot(d_3, q) * inv_1);
+    if (!((v_11 < 0.0))) {
+        local_15 = ((u_2 + v_11) > 1.0);
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    bool _e42 = local_13;
+    bool _e42 = local_15;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_, q) * inv_1);
     if ((t_3 > t_min)) {
-        local_14 = (t_3 < t_max_1);
+        local_16 = (t_3 < t_max_1);
     } else {
-        local_14 = false;
+        local_16 = false;
     }
-    bool _e51 = local_14;
+    bool _e51 = local_16;
     if (_e51) {
         return t_3;
     }
     return -1.0;
 }
 
-bool finite3_(float3 v_5)
+bool finite3_(float3 v_6)
 {
-    bool local_15 = (bool)0;
-    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
+    bool local_18 = (bool)0;
 
-    if ((abs(v_5.x) <= F32_MAX)) {
-        local_15 = (abs(v_5.y) <= F32_MAX);
+    if ((abs(v_6.x) <= F32_MAX)) {
+        local_17 = (abs(v_6.y) <= F32_MAX);
     } else {
-        local_15 = false;
+        local_17 = false;
     }
-    bool _e12 = local_15;
+    bool _e12 = local_17;
     if (_e12) {
-        local_16 = (abs(v_5.z) <= F32_MAX);
+        local_18 = (abs(v_6.z) <= F32_MAX);
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    bool _e20 = local_16;
+    bool _e20 = local_18;
     return _e20;
 }
 
@@ -902,7 +907,7 @@ GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3,
     return ret;
 }
 
-GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
+GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
 {
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
@@ -917,7 +922,7 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
         const GeoHit geohit = _e13;
         return geohit;
     }
-    const float3 _e14 = ray_inverse3_(d_3);
+    const float3 _e14 = ray_inverse3_(d_4);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
@@ -948,7 +953,7 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
                         uint _e42 = i;
                         GpuTriangle t_4 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -988,15 +993,15 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
     return geohit_2;
 }
 
-bool occluded(float3 a_6, float3 b_6)
+bool occluded(float3 a_7, float3 b_6)
 {
-    float3 dv = (b_6 - a_6);
+    float3 dv = (b_6 - a_7);
     float len_1 = length(dv);
     if ((len_1 <= 0.0)) {
         return false;
     }
     const float _e7 = shadow_margin(len_1);
-    const GeoHit _e12 = trace(a_6, (dv / (len_1).xxx), _e7, (len_1 - _e7), true);
+    const GeoHit _e12 = trace(a_7, (dv / (len_1).xxx), _e7, (len_1 - _e7), true);
     return (_e12.tri != NO_LIGHT);
 }
 
@@ -1032,45 +1037,24 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_7, float3 v_6, float d2_7, float3 r_2, float4 rl_2)
+float bsh_inner_scale(float a_8, float3 v_7, float d2_8, float3 r_2, float4 rl_2)
 {
-    bool local_17 = (bool)0;
-    bool local_18 = (bool)0;
-
-    float vr = dot(v_6, r_2);
-    float h2_ = (d2_7 - (a_7 * a_7));
-    if (!((h2_ <= 0.0))) {
-        if ((vr >= 0.0)) {
-            local_18 = ((vr * vr) >= h2_);
-        } else {
-            local_18 = false;
-        }
-        bool _e20 = local_18;
-        local_17 = _e20;
-    } else {
-        local_17 = true;
-    }
-    bool _e22 = local_17;
-    if (_e22) {
-        return (rl_2.w * rl_2.w);
-    }
-    float3 c_10 = cross(v_6, r_2);
-    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_10, c_10)) * a_7)) / d2_7);
-    const float _e36 = range_scale_at(rl_2, (cos_t_1 + 2e-6));
-    return _e36;
+    const float _e5 = cone_cos_of(v_7, d2_8, a_8, r_2);
+    const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
+    return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_3, float4 rl_3)
+bool bsh_reaches(BshNode node_3, float3 x_4, float3 r_3, float4 rl_3)
 {
     bool local_19 = (bool)0;
     bool local_20 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_5);
+    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_5);
+        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_3.w * 1.0001)), x_4);
         local_19 = !(_e20);
     } else {
         local_19 = true;
@@ -1080,23 +1064,23 @@ bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_3, float4 rl_3)
         return false;
     }
     const float _e25 = bsh_range_bound(node_3);
-    float3 v_11 = (x_5 - node_3.center_);
-    float d2_9 = dot(v_11, v_11);
+    float3 v_12 = (x_4 - node_3.center_);
+    float d2_10 = dot(v_12, v_12);
     float reach_max = (node_3.extent + ((rl_3.w * 1.001) * _e25));
-    if ((d2_9 > (reach_max * reach_max))) {
+    if ((d2_10 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_5, r_3);
+        const float _e43 = range_scale_toward(rl_3, node_3.center_, node_3.extent, x_4, r_3);
         const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_5);
+        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_4);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_3.extent, -(v_11), d2_9, r_3, rl_3);
+    const float _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_10, r_3, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_9 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_20 = (d2_9 <= (reach * reach));
+    if ((d2_10 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_20 = (d2_10 <= (reach * reach));
     } else {
         local_20 = false;
     }
@@ -1104,7 +1088,7 @@ bool bsh_reaches(BshNode node_3, float3 x_5, float3 r_3, float4 rl_3)
     return _e67;
 }
 
-uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_6, float3 r_4, float4 rl_4)
+uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_5, float3 r_4, float4 rl_4)
 {
     uint i_2 = (uint)0;
 
@@ -1121,7 +1105,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_6, float3 r_4, float4
         {
             uint _e9 = i_2;
             const BshNode _e10 = bsh_node(nodes_3, _e9);
-            const bool _e11 = bsh_reaches(_e10, x_6, r_4, rl_4);
+            const bool _e11 = bsh_reaches(_e10, x_5, r_4, rl_4);
             if (_e11) {
                 if ((_e10.child == BSH_NONE)) {
                     uint _e15 = i_2;
@@ -1136,7 +1120,7 @@ uint bsh_next_leaf_lobe(uint nodes_3, uint start, float3 x_6, float3 r_4, float4
     return BSH_NONE;
 }
 
-Picks bsh_collect(float3 x_7, float3 r_5, float4 rl_5, uint seed_1)
+Picks bsh_collect(float3 x_6, float3 r_5, float4 rl_5, uint seed_1)
 {
     Picks picks = (Picks)0;
     uint h_1 = (uint)0;
@@ -1145,7 +1129,7 @@ Picks bsh_collect(float3 x_7, float3 r_5, float4 rl_5, uint seed_1)
     picks.n = 0u;
     h_1 = seed_1;
     const uint _e10 = bsh_first(BSH);
-    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_7, r_5, rl_5);
+    const uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_5, rl_5);
     i_3 = _e11;
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
@@ -1155,7 +1139,7 @@ Picks bsh_collect(float3 x_7, float3 r_5, float4 rl_5, uint seed_1)
         if (!loop_init_1) {
             uint _e44 = i_3;
             uint _e47 = asuint(bsh_nodes.Load(20+_e44*32));
-            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_7, r_5, rl_5);
+            const uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_6, r_5, rl_5);
             i_3 = _e48;
         }
         loop_init_1 = false;
@@ -1206,7 +1190,7 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-Connection connect(uint li, float3 x_8, float3 n_13, float3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps)
+Connection connect(uint li, float3 x_7, float3 n_13, float3 ng_1, float s_1, float w_res, float u1_2, float u2_2, float eps)
 {
     Connection c_5 = (Connection)0;
     bool local_21 = (bool)0;
@@ -1217,12 +1201,12 @@ Connection connect(uint li, float3 x_8, float3 n_13, float3 ng_1, float s_1, flo
     c_5.y = _e17;
     float3 _e20 = c_5.y;
     float _e23 = asfloat(r2_2.Load(li*4));
-    const float _e25 = connection_cosine(x_8, _e20, n_13, ng_1, (s_1 * _e23));
+    const float _e25 = connection_cosine(x_7, _e20, n_13, ng_1, (s_1 * _e23));
     c_5.cos_x = _e25;
     float _e27 = c_5.cos_x;
     if (!((_e27 <= 0.0))) {
         float3 _e36 = c_5.y;
-        const bool _e37 = occluded((x_8 + (ng_1 * eps)), _e36);
+        const bool _e37 = occluded((x_7 + (ng_1 * eps)), _e36);
         local_21 = _e37;
     } else {
         local_21 = true;
@@ -1234,12 +1218,12 @@ Connection connect(uint li, float3 x_8, float3 n_13, float3 ng_1, float s_1, flo
         return connection;
     }
     float3 _e42 = c_5.y;
-    float3 v_12 = (x_8 - _e42);
-    float d2_10 = dot(v_12, v_12);
-    const float3 _e49 = light_intensity(l_8, (v_12 / (sqrt(d2_10)).xxx));
+    float3 v_13 = (x_7 - _e42);
+    float d2_11 = dot(v_13, v_13);
+    const float3 _e49 = light_intensity(l_8, (v_13 / (sqrt(d2_11)).xxx));
     float _e51 = c_5.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_10, (s_1 * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_11, (s_1 * _e54), w_res);
     c_5.e = (_e49 * _e56);
     Connection _e58 = c_5;
     const Connection connection_1 = _e58;
@@ -1265,55 +1249,55 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li_1, float3 x_9, float3 r_6, float4 rl_6)
+float light_range_scale(uint li_1, float3 x_8, float3 r_6, float4 rl_6)
 {
-    GpuLightCone c_11 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
-    const float _e9 = range_scale_toward(rl_6, c_11.center_, c_11.radius, x_9, r_6);
+    GpuLightCone c_10 = ConstructGpuLightCone(asfloat(light_cones.Load3(li_1*48+0)), asfloat(light_cones.Load(li_1*48+12)), asfloat(light_cones.Load3(li_1*48+16)), asfloat(light_cones.Load(li_1*48+28)), asfloat(light_cones.Load(li_1*48+32)), asfloat(light_cones.Load(li_1*48+36)), asuint(light_cones.Load(li_1*48+40)), asuint(light_cones.Load(li_1*48+44)));
+    const float _e9 = range_scale_toward(rl_6, c_10.center_, c_10.radius, x_8, r_6);
     return _e9;
 }
 
-float select_pdf(uint li_2, float3 x_10, float3 n_14, float3 r_7, float4 lobe_5, float4 rl_7, uint nee, bool in_range_1)
+float select_pdf(uint li_2, float3 x_9, float3 n_14, float3 r_7, float4 lobe_5, float4 rl_7, uint nee, bool in_range_1)
 {
     const float _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
 }
 
-float light_pdf_selected(uint li_3, float3 x_11, float3 r_8, float4 rl_8, float3 y_1, float sel)
+float light_pdf_selected(uint li_3, float3 x_10, float3 r_8, float4 rl_8, float3 y_1, float sel)
 {
     GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_3*64+0)), asuint(lights.Load(li_3*64+12)), asfloat(lights.Load3(li_3*64+16)), asfloat(lights.Load(li_3*64+28)), asfloat(lights.Load3(li_3*64+32)), asfloat(lights.Load(li_3*64+44)), asfloat(lights.Load3(li_3*64+48)), asuint(lights.Load(li_3*64+60)));
-    float3 v_13 = (x_11 - y_1);
-    float d2_11 = dot(v_13, v_13);
+    float3 v_14 = (x_10 - y_1);
+    float d2_12 = dot(v_14, v_14);
     const float3 _e11 = light_normal(l_9);
-    float cos_y_1 = ((d2_11 > 0.0) ? dot(_e11, (v_13 / (sqrt(d2_11)).xxx)) : 0.0);
-    const float _e20 = light_range_scale(li_3, x_11, r_8, rl_8);
+    float cos_y_1 = ((d2_12 > 0.0) ? dot(_e11, (v_14 / (sqrt(d2_12)).xxx)) : 0.0);
+    const float _e20 = light_range_scale(li_3, x_10, r_8, rl_8);
     float _e23 = asfloat(rt2_4.Load(li_3*4));
     const float _e25 = light_area(l_9);
-    const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_11, _e25, cos_y_1);
+    const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_12, _e25, cos_y_1);
     return _e26;
 }
 
-float light_pdf(uint li_4, float3 x_12, float3 n_15, float3 r_9, float4 lobe_6, float4 rl_9, float3 y_2, uint nee_1, bool in_range_2)
+float light_pdf(uint li_4, float3 x_11, float3 n_15, float3 r_9, float4 lobe_6, float4 rl_9, float3 y_2, uint nee_1, bool in_range_2)
 {
-    const float _e9 = select_pdf(li_4, x_12, n_15, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    const float _e10 = light_pdf_selected(li_4, x_12, r_9, rl_9, y_2, _e9);
+    const float _e9 = select_pdf(li_4, x_11, n_15, r_9, lobe_6, rl_9, nee_1, in_range_2);
+    const float _e10 = light_pdf_selected(li_4, x_11, r_9, rl_9, y_2, _e9);
     return _e10;
 }
 
-float3 shade_pick(uint li_5, float3 x_13, float3 n_16, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_10, float4 lobe_7, float4 rl_10, float w_4, uint nee_2, float u1_3, float u2_3)
+float3 shade_pick(uint li_5, float3 x_12, float3 n_16, float3 ng_2, GpuMaterial m, float3 wo_1, float3 r_10, float4 lobe_7, float4 rl_10, float w_4, uint nee_2, float u1_3, float u2_3)
 {
     float mis = 1.0;
 
-    const float _e13 = light_range_scale(li_5, x_13, r_10, rl_10);
+    const float _e13 = light_range_scale(li_5, x_12, r_10, rl_10);
     float _e16 = params.eps;
-    const Connection _e17 = connect(li_5, x_13, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16);
+    const Connection _e17 = connect(li_5, x_12, n_16, ng_2, _e13, w_4, u1_3, u2_3, _e16);
     if ((_e17.cos_x <= 0.0)) {
         return (0.0).xxx;
     }
-    float3 l_10 = normalize((_e17.y - x_13));
+    float3 l_10 = normalize((_e17.y - x_12));
     GpuLight _e30 = ConstructGpuLight(asfloat(lights.Load3(li_5*64+0)), asuint(lights.Load(li_5*64+12)), asfloat(lights.Load3(li_5*64+16)), asfloat(lights.Load(li_5*64+28)), asfloat(lights.Load3(li_5*64+32)), asfloat(lights.Load(li_5*64+44)), asfloat(lights.Load3(li_5*64+48)), asuint(lights.Load(li_5*64+60)));
     const float _e31 = light_area(_e30);
     if ((_e31 > 0.0)) {
-        const float _e36 = light_pdf(li_5, x_13, n_16, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
+        const float _e36 = light_pdf(li_5, x_12, n_16, r_10, lobe_7, rl_10, _e17.y, nee_2, true);
         const float _e38 = specular_probability(lobe_7);
         const float _e39 = bsdf_pdf(n_16, wo_1, l_10, m.alpha, _e38);
         const float _e40 = mis_weight(_e36, _e39);
@@ -1367,7 +1351,7 @@ void main(uint3 gid : SV_DispatchThreadID)
         candidates.Store(i_4*4, asuint(0u));
         return;
     }
-    float3 x_14 = vtx.position;
+    float3 x_13 = vtx.position;
     float3 n_19 = vtx.normal;
     float3 ng_3 = vtx.gnormal;
     GpuMaterial m_2 = ConstructGpuMaterial(asfloat(materials.Load3(vtx.material*48+0)), asfloat(materials.Load(vtx.material*48+12)), asfloat(materials.Load3(vtx.material*48+16)), asfloat(materials.Load(vtx.material*48+28)), asfloat(materials.Load3(vtx.material*48+32)), asfloat(materials.Load(vtx.material*48+44)));
@@ -1380,7 +1364,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     const uint _e38 = point_stream(_e34, i_4, _e37);
     const uint _e39 = pick_stream(_e38);
     h = _e39;
-    const Picks _e44 = bsh_collect(x_14, _e23, _e31, _e38);
+    const Picks _e44 = bsh_collect(x_13, _e23, _e31, _e38);
     candidates.Store(i_4*4, asuint(_e44.n));
     const float _e50 = reservoir_weight(_e44.n, K);
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
@@ -1411,7 +1395,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             uint _e66 = s;
             uint _e69 = h;
             const float _e70 = xi_from_bits(_e69);
-            const float3 _e71 = shade_pick(_e44.light[min(uint(_e66), 7u)], x_14, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
+            const float3 _e71 = shade_pick(_e44.light[min(uint(_e66), 7u)], x_13, n_19, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70);
             sum = (_e64 + _e71);
         }
     }

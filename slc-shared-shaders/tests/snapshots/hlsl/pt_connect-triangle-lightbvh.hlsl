@@ -230,11 +230,11 @@ float connection_cosine(float3 x_1, float3 y, float3 n, float3 ng, float r2_1)
     bool local = (bool)0;
     bool local_1 = (bool)0;
 
-    float3 v_6 = (x_1 - y);
-    float d2_7 = dot(v_6, v_6);
-    const bool _e7 = slc_keep(r2_1, d2_7);
+    float3 v_7 = (x_1 - y);
+    float d2_8 = dot(v_7, v_7);
+    const bool _e7 = slc_keep(r2_1, d2_8);
     if (!(!(_e7))) {
-        local = !((d2_7 > 0.0));
+        local = !((d2_8 > 0.0));
     } else {
         local = true;
     }
@@ -242,7 +242,7 @@ float connection_cosine(float3 x_1, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_5 = (v_6 / (sqrt(d2_7)).xxx);
+    float3 w_5 = (v_7 / (sqrt(d2_8)).xxx);
     float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = (dot(ng, w_5) >= 0.0);
@@ -321,15 +321,15 @@ float cosine_pdf(float cos_theta)
 float3 onb_tangent(float3 n_2)
 {
     float s_2 = ((n_2.z >= 0.0) ? 1.0 : -1.0);
-    float a_6 = (-1.0 / (s_2 + n_2.z));
-    return float3((1.0 + (((s_2 * n_2.x) * n_2.x) * a_6)), (((s_2 * n_2.x) * n_2.y) * a_6), (-(s_2) * n_2.x));
+    float a_7 = (-1.0 / (s_2 + n_2.z));
+    return float3((1.0 + (((s_2 * n_2.x) * n_2.x) * a_7)), (((s_2 * n_2.x) * n_2.y) * a_7), (-(s_2) * n_2.x));
 }
 
 float3 onb_bitangent(float3 n_3)
 {
     float s_3 = ((n_3.z >= 0.0) ? 1.0 : -1.0);
-    float a_7 = (-1.0 / (s_3 + n_3.z));
-    return float3(((n_3.x * n_3.y) * a_7), (s_3 + ((n_3.y * n_3.y) * a_7)), -(n_3.y));
+    float a_8 = (-1.0 / (s_3 + n_3.z));
+    return float3(((n_3.x * n_3.y) * a_8), (s_3 + ((n_3.y * n_3.y) * a_8)), -(n_3.y));
 }
 
 float3 onb_to_local(float3 n_4, float3 w_2)
@@ -534,9 +534,9 @@ float3 mirror_dir(float3 n_7, float3 v_3)
 
 float bounded_vndf_k(float3 wi, float alpha_6)
 {
-    float a_8 = saturate(alpha_6);
+    float a_9 = saturate(alpha_6);
     float s_4 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    float a2_3 = (a_8 * a_8);
+    float a2_3 = (a_9 * a_9);
     float s2_ = (s_4 * s_4);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
@@ -603,11 +603,11 @@ float subtended_cos(float dist2_, float r2_2)
 
 float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, float3 p)
 {
-    float3 v_7 = (p - center_);
-    float dist2_1 = dot(v_7, v_7);
+    float3 v_8 = (p - center_);
+    float dist2_1 = dot(v_8, v_8);
     float r2_4 = (radius * radius);
-    float d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
-    float3 wi_2 = ((dist2_1 > 0.0) ? (v_7 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    float d2_9 = max(max(dist2_1, r2_4), MIN_D2_);
+    float3 wi_2 = ((dist2_1 > 0.0) ? (v_8 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi_2);
     const float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
     const float _e26 = subtended_cos(dist2_1, r2_4);
@@ -616,7 +616,7 @@ float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, floa
     const float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
     const float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
     const float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return float4(_e37, d2_8, _e26, _e30);
+    return float4(_e37, d2_9, _e26, _e30);
 }
 
 float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis_1, float cos_o_1, float cos_e, float3 p_1)
@@ -628,19 +628,37 @@ float emitter_importance(float3 center_1, float radius_1, float phi, float3 axis
     return ((phi * _e7.x) / _e7.y);
 }
 
-float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d)
+float cone_cos_of(float3 v_5, float d2_7, float a_3, float3 d)
 {
-    float3 v_8 = (center_2 - p_2);
-    float dist2_2 = dot(v_8, v_8);
-    if ((dist2_2 <= (radius_2 * radius_2))) {
+    bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
+
+    float vd = dot(v_5, d);
+    float h2_ = (d2_7 - (a_3 * a_3));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_11 = ((vd * vd) >= h2_);
+        } else {
+            local_11 = false;
+        }
+        bool _e19 = local_11;
+        local_10 = _e19;
+    } else {
+        local_10 = true;
+    }
+    bool _e21 = local_10;
+    if (_e21) {
         return 1.0;
     }
-    float dist = sqrt(dist2_2);
-    float3 c_8 = cross(v_8, d);
-    float sin_b_2 = (radius_2 / dist);
-    const float _e20 = safe_sqrt((1.0 - (sin_b_2 * sin_b_2)));
-    const float _e21 = cos_sub_clamped((sqrt(dot(c_8, c_8)) / dist), (dot(v_8, d) / dist), sin_b_2, _e20);
-    return _e21;
+    float3 c_8 = cross(v_5, d);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_3)) / d2_7), 1.0);
+}
+
+float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d_1)
+{
+    float3 v_9 = (center_2 - p_2);
+    const float _e6 = cone_cos_of(v_9, dot(v_9, v_9), radius_2, d_1);
+    return _e6;
 }
 
 float range_scale_at(float4 rl, float cos_t)
@@ -669,9 +687,9 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_9, n_9) > 0.0)) {
-        float3 v_9 = (center_4 - p_4);
-        float dist2_3 = dot(v_9, v_9);
-        float cos_i = dot(((dist2_3 > 0.0) ? (v_9 / (sqrt(dist2_3)).xxx) : float3(0.0, 0.0, 0.0)), n_9);
+        float3 v_10 = (center_4 - p_4);
+        float dist2_2 = dot(v_10, v_10);
+        float cos_i = dot(((dist2_2 > 0.0) ? (v_10 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0)), n_9);
         float _e33 = imp;
         const float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
         const float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -683,16 +701,16 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
 
 float glossy_importance(float3 center_5, float radius_5, float phi_2, float3 axis_3, float cos_o_3, float cos_e_2, float3 p_5, float3 n_10, float3 r_1, float4 lobe_5)
 {
-    bool local_10 = (bool)0;
+    bool local_12 = (bool)0;
 
     const float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     const float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_10);
     if (!((_e10 <= 0.0))) {
-        local_10 = (_e11 <= 0.0);
+        local_12 = (_e11 <= 0.0);
     } else {
-        local_10 = true;
+        local_12 = true;
     }
-    bool _e20 = local_10;
+    bool _e20 = local_12;
     if (_e20) {
         return 0.0;
     }
@@ -741,11 +759,11 @@ float ray_inverse(float x_3)
     return (1.0 / ((abs(x_3) < 1e-30) ? 1e-30 : x_3));
 }
 
-float3 ray_inverse3_(float3 d_1)
+float3 ray_inverse3_(float3 d_2)
 {
-    const float _e2 = ray_inverse(d_1.x);
-    const float _e4 = ray_inverse(d_1.y);
-    const float _e6 = ray_inverse(d_1.z);
+    const float _e2 = ray_inverse(d_2.x);
+    const float _e4 = ray_inverse(d_2.y);
+    const float _e6 = ray_inverse(d_2.z);
     return float3(_e2, _e4, _e6);
 }
 
@@ -763,90 +781,90 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
     return -1.0;
 }
 
-float3 triangle_normal(float3 a_3, float3 b_3, float3 c_2)
+float3 triangle_normal(float3 a_4, float3 b_3, float3 c_2)
 {
-    bool local_11 = (bool)0;
+    bool local_13 = (bool)0;
 
-    float3 n_17 = cross((b_3 - a_3), (c_2 - a_3));
+    float3 n_17 = cross((b_3 - a_4), (c_2 - a_4));
     float l2_ = dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
-        local_11 = !((l2_ < 3e38));
+        local_13 = !((l2_ < 3e38));
     } else {
-        local_11 = true;
+        local_13 = true;
     }
-    bool _e17 = local_11;
+    bool _e17 = local_13;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
     return (n_17 / (sqrt(l2_)).xxx);
 }
 
-float ray_triangle(float3 o_1, float3 d_2, float3 a_4, float3 b_4, float3 c_3, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_3, float3 a_5, float3 b_4, float3 c_3, float t_min, float t_max_1)
 {
-    bool local_12 = (bool)0;
-    bool local_13 = (bool)0;
     bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
 
-    float3 e1_ = (b_4 - a_4);
-    float3 e2_ = (c_3 - a_4);
-    float3 p_7 = cross(d_2, e2_);
+    float3 e1_ = (b_4 - a_5);
+    float3 e2_ = (c_3 - a_5);
+    float3 p_7 = cross(d_3, e2_);
     float det = dot(e1_, p_7);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
-    float3 s_6 = (o_1 - a_4);
+    float3 s_6 = (o_1 - a_5);
     float u_3 = (dot(s_6, p_7) * inv_1);
     if (!((u_3 < 0.0))) {
-        local_12 = (u_3 > 1.0);
+        local_14 = (u_3 > 1.0);
     } else {
-        local_12 = true;
+        local_14 = true;
     }
-    bool _e28 = local_12;
+    bool _e28 = local_14;
     if (_e28) {
         return -1.0;
     }
     float3 q = cross(s_6, e1_);
-    float v_10 = (dot(d_2, q) * inv_1);
-    if (!((v_10 < 0.0))) {
-        local_13 = ((u_3 + v_10) > 1.0);
+    float v_11 = (dot(d_3, q) * inv_1);
+    if (!((v_11 < 0.0))) {
+        local_15 = ((u_3 + v_11) > 1.0);
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    bool _e42 = local_13;
+    bool _e42 = local_15;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_, q) * inv_1);
     if ((t_3 > t_min)) {
-        local_14 = (t_3 < t_max_1);
+        local_16 = (t_3 < t_max_1);
     } else {
-        local_14 = false;
+        local_16 = false;
     }
-    bool _e51 = local_14;
+    bool _e51 = local_16;
     if (_e51) {
         return t_3;
     }
     return -1.0;
 }
 
-bool finite3_(float3 v_5)
+bool finite3_(float3 v_6)
 {
-    bool local_15 = (bool)0;
-    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
+    bool local_18 = (bool)0;
 
-    if ((abs(v_5.x) <= F32_MAX)) {
-        local_15 = (abs(v_5.y) <= F32_MAX);
+    if ((abs(v_6.x) <= F32_MAX)) {
+        local_17 = (abs(v_6.y) <= F32_MAX);
     } else {
-        local_15 = false;
+        local_17 = false;
     }
-    bool _e12 = local_15;
+    bool _e12 = local_17;
     if (_e12) {
-        local_16 = (abs(v_5.z) <= F32_MAX);
+        local_18 = (abs(v_6.z) <= F32_MAX);
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    bool _e20 = local_16;
+    bool _e20 = local_18;
     return _e20;
 }
 
@@ -917,7 +935,7 @@ GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3,
     return ret;
 }
 
-GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
+GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
 {
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
@@ -932,7 +950,7 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
         const GeoHit geohit = _e13;
         return geohit;
     }
-    const float3 _e14 = ray_inverse3_(d_3);
+    const float3 _e14 = ray_inverse3_(d_4);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
@@ -963,7 +981,7 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
                         uint _e42 = i;
                         GpuTriangle t_4 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -1003,15 +1021,15 @@ GeoHit trace(float3 o_2, float3 d_3, float t_min_1, float t_max_2, bool any_hit)
     return geohit_2;
 }
 
-bool occluded(float3 a_5, float3 b_5)
+bool occluded(float3 a_6, float3 b_5)
 {
-    float3 dv = (b_5 - a_5);
+    float3 dv = (b_5 - a_6);
     float len_1 = length(dv);
     if ((len_1 <= 0.0)) {
         return false;
     }
     const float _e7 = shadow_margin(len_1);
-    const GeoHit _e12 = trace(a_5, (dv / (len_1).xxx), _e7, (len_1 - _e7), true);
+    const GeoHit _e12 = trace(a_6, (dv / (len_1).xxx), _e7, (len_1 - _e7), true);
     return (_e12.tri != NO_LIGHT);
 }
 
@@ -1031,7 +1049,7 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
 Connection connect(uint li, float3 x_4, float3 n_12, float3 ng_1, float s, float w_res, float u1_2, float u2_2, float eps)
 {
     Connection c_4 = (Connection)0;
-    bool local_17 = (bool)0;
+    bool local_19 = (bool)0;
 
     c_4.e = (0.0).xxx;
     GpuLight l_8 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
@@ -1045,23 +1063,23 @@ Connection connect(uint li, float3 x_4, float3 n_12, float3 ng_1, float s, float
     if (!((_e27 <= 0.0))) {
         float3 _e36 = c_4.y;
         const bool _e37 = occluded((x_4 + (ng_1 * eps)), _e36);
-        local_17 = _e37;
+        local_19 = _e37;
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    bool _e39 = local_17;
+    bool _e39 = local_19;
     if (_e39) {
         Connection _e40 = c_4;
         const Connection connection = _e40;
         return connection;
     }
     float3 _e42 = c_4.y;
-    float3 v_11 = (x_4 - _e42);
-    float d2_9 = dot(v_11, v_11);
-    const float3 _e49 = light_intensity(l_8, (v_11 / (sqrt(d2_9)).xxx));
+    float3 v_12 = (x_4 - _e42);
+    float d2_10 = dot(v_12, v_12);
+    const float3 _e49 = light_intensity(l_8, (v_12 / (sqrt(d2_10)).xxx));
     float _e51 = c_4.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
-    const float _e56 = connection_factor(_e51, d2_9, (s * _e54), w_res);
+    const float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
     c_4.e = (_e49 * _e56);
     Connection _e58 = c_4;
     const Connection connection_1 = _e58;
@@ -1128,17 +1146,17 @@ float bvh_importance(uint nodes_2, uint i_2, float3 x_6, float3 n_13, float3 r_4
 
 float bvh_first(uint nodes_3, uint i_3, float3 x_7, float3 n_14, float3 r_5, float4 lobe_8)
 {
-    bool local_18 = (bool)0;
+    bool local_20 = (bool)0;
 
     const GpuLightBvhNode _e6 = light_bvh_node(nodes_3, i_3);
     uint j = _e6.second;
     if (!((j <= (i_3 + 1u)))) {
         const uint _e14 = light_bvh_count(nodes_3);
-        local_18 = (j >= _e14);
+        local_20 = (j >= _e14);
     } else {
-        local_18 = true;
+        local_20 = true;
     }
-    bool _e17 = local_18;
+    bool _e17 = local_20;
     if (_e17) {
         return -1.0;
     }
@@ -1167,7 +1185,7 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_8, float3 n_15, float3 r_6, floa
     float u_2 = (float)0;
     uint i_4 = 0u;
     float pmf = 1.0;
-    bool local_19 = (bool)0;
+    bool local_21 = (bool)0;
 
     const BvhPick _e6 = bvh_pick_none();
     pick = _e6;
@@ -1189,11 +1207,11 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_8, float3 n_15, float3 r_6, floa
                 uint _e21 = i_4;
                 if (!((_e21 > 0u))) {
                     const float _e28 = bvh_importance(nodes_4, 0u, x_8, n_15, r_6, lobe_9);
-                    local_19 = (_e28 > 0.0);
+                    local_21 = (_e28 > 0.0);
                 } else {
-                    local_19 = true;
+                    local_21 = true;
                 }
-                bool _e32 = local_19;
+                bool _e32 = local_21;
                 if (_e32) {
                     pick.light = _e17.light;
                     float _e36 = pmf;
@@ -1229,14 +1247,14 @@ BvhPick light_bvh_sample(uint nodes_4, float3 x_8, float3 n_15, float3 r_6, floa
 float light_pdf_selected(uint li_2, float3 x_9, float3 r_7, float4 rl_3, float3 y_1, float sel)
 {
     GpuLight l_9 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
-    float3 v_12 = (x_9 - y_1);
-    float d2_10 = dot(v_12, v_12);
+    float3 v_13 = (x_9 - y_1);
+    float d2_11 = dot(v_13, v_13);
     const float3 _e11 = light_normal(l_9);
-    float cos_y_1 = ((d2_10 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_10)).xxx)) : 0.0);
+    float cos_y_1 = ((d2_11 > 0.0) ? dot(_e11, (v_13 / (sqrt(d2_11)).xxx)) : 0.0);
     const float _e20 = light_range_scale(li_2, x_9, r_7, rl_3);
     float _e23 = asfloat(rt2_4.Load(li_2*4));
     const float _e25 = light_area(l_9);
-    const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_10, _e25, cos_y_1);
+    const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_11, _e25, cos_y_1);
     return _e26;
 }
 

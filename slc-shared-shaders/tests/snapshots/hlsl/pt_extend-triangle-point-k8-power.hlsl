@@ -220,8 +220,8 @@ float rr_probability(float rt2_, float d2_)
 
 bool sphere_contains_point(float3 c, float r, float3 x_1)
 {
-    float3 v_9 = (x_1 - c);
-    return (dot(v_9, v_9) <= (r * r));
+    float3 v_10 = (x_1 - c);
+    return (dot(v_10, v_10) <= (r * r));
 }
 
 float area_to_solid_angle_pdf(float pdf_area, float d2_1, float cos_light)
@@ -323,15 +323,15 @@ float cosine_pdf(float cos_theta)
 float3 onb_tangent(float3 n_1)
 {
     float s_1 = ((n_1.z >= 0.0) ? 1.0 : -1.0);
-    float a_6 = (-1.0 / (s_1 + n_1.z));
-    return float3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_6)), (((s_1 * n_1.x) * n_1.y) * a_6), (-(s_1) * n_1.x));
+    float a_7 = (-1.0 / (s_1 + n_1.z));
+    return float3((1.0 + (((s_1 * n_1.x) * n_1.x) * a_7)), (((s_1 * n_1.x) * n_1.y) * a_7), (-(s_1) * n_1.x));
 }
 
 float3 onb_bitangent(float3 n_2)
 {
     float s_2 = ((n_2.z >= 0.0) ? 1.0 : -1.0);
-    float a_7 = (-1.0 / (s_2 + n_2.z));
-    return float3(((n_2.x * n_2.y) * a_7), (s_2 + ((n_2.y * n_2.y) * a_7)), -(n_2.y));
+    float a_8 = (-1.0 / (s_2 + n_2.z));
+    return float3(((n_2.x * n_2.y) * a_8), (s_2 + ((n_2.y * n_2.y) * a_8)), -(n_2.y));
 }
 
 float3 onb_to_world(float3 n_3, float3 d)
@@ -551,9 +551,9 @@ float3 mirror_dir(float3 n_8, float3 v_4)
 
 float bounded_vndf_k(float3 wi, float alpha_6)
 {
-    float a_8 = saturate(alpha_6);
+    float a_9 = saturate(alpha_6);
     float s_3 = (1.0 + sqrt(((wi.x * wi.x) + (wi.y * wi.y))));
-    float a2_3 = (a_8 * a_8);
+    float a2_3 = (a_9 * a_9);
     float s2_ = (s_3 * s_3);
     return (((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z)));
 }
@@ -619,32 +619,37 @@ float bsdf_pdf(float3 n_10, float3 v_6, float3 l_3, float alpha_10, float p_spec
     return ((p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6));
 }
 
-float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b)
+float cone_cos_of(float3 v_7, float d2_3, float a_2, float3 d_1)
 {
-    if ((cos_a > cos_b)) {
+    bool local_12 = (bool)0;
+    bool local_13 = (bool)0;
+
+    float vd = dot(v_7, d_1);
+    float h2_ = (d2_3 - (a_2 * a_2));
+    if (!((h2_ <= 0.0))) {
+        if ((vd >= 0.0)) {
+            local_13 = ((vd * vd) >= h2_);
+        } else {
+            local_13 = false;
+        }
+        bool _e19 = local_13;
+        local_12 = _e19;
+    } else {
+        local_12 = true;
+    }
+    bool _e21 = local_12;
+    if (_e21) {
         return 1.0;
     }
-    return ((cos_a * cos_b) + (sin_a * sin_b));
+    float3 c_8 = cross(v_7, d_1);
+    return min((((vd * sqrt(h2_)) + (sqrt(dot(c_8, c_8)) * a_2)) / d2_3), 1.0);
 }
 
-float safe_sqrt(float x_2)
+float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_2)
 {
-    return sqrt(max(x_2, 0.0));
-}
-
-float cone_cos_toward(float3 center_, float radius, float3 p, float3 d_1)
-{
-    float3 v_10 = (center_ - p);
-    float dist2_ = dot(v_10, v_10);
-    if ((dist2_ <= (radius * radius))) {
-        return 1.0;
-    }
-    float dist = sqrt(dist2_);
-    float3 c_8 = cross(v_10, d_1);
-    float sin_b_1 = (radius / dist);
-    const float _e20 = safe_sqrt((1.0 - (sin_b_1 * sin_b_1)));
-    const float _e21 = cos_sub_clamped((sqrt(dot(c_8, c_8)) / dist), (dot(v_10, d_1) / dist), sin_b_1, _e20);
-    return _e21;
+    float3 v_11 = (center_ - p);
+    const float _e6 = cone_cos_of(v_11, dot(v_11, v_11), radius, d_2);
+    return _e6;
 }
 
 float range_scale_at(float4 rl, float cos_t)
@@ -663,16 +668,16 @@ float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_
     return _e10;
 }
 
-float ray_inverse(float x_3)
+float ray_inverse(float x_2)
 {
-    return (1.0 / ((abs(x_3) < 1e-30) ? 1e-30 : x_3));
+    return (1.0 / ((abs(x_2) < 1e-30) ? 1e-30 : x_2));
 }
 
-float3 ray_inverse3_(float3 d_2)
+float3 ray_inverse3_(float3 d_3)
 {
-    const float _e2 = ray_inverse(d_2.x);
-    const float _e4 = ray_inverse(d_2.y);
-    const float _e6 = ray_inverse(d_2.z);
+    const float _e2 = ray_inverse(d_3.x);
+    const float _e4 = ray_inverse(d_3.y);
+    const float _e6 = ray_inverse(d_3.z);
     return float3(_e2, _e4, _e6);
 }
 
@@ -690,18 +695,18 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
     return -1.0;
 }
 
-float3 triangle_normal(float3 a_2, float3 b_2, float3 c_2)
+float3 triangle_normal(float3 a_3, float3 b_2, float3 c_2)
 {
-    bool local_12 = (bool)0;
+    bool local_14 = (bool)0;
 
-    float3 n_15 = cross((b_2 - a_2), (c_2 - a_2));
+    float3 n_15 = cross((b_2 - a_3), (c_2 - a_3));
     float l2_ = dot(n_15, n_15);
     if (!(!((l2_ > 0.0)))) {
-        local_12 = !((l2_ < 3e38));
+        local_14 = !((l2_ < 3e38));
     } else {
-        local_12 = true;
+        local_14 = true;
     }
-    bool _e17 = local_12;
+    bool _e17 = local_14;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -713,11 +718,11 @@ float3 face_against(float3 n_11, float3 dir)
     return ((dot(n_11, dir) > 0.0) ? -(n_11) : n_11);
 }
 
-float3 barycentric(float3 p_2, float3 a_3, float3 b_3, float3 c_3)
+float3 barycentric(float3 p_2, float3 a_4, float3 b_3, float3 c_3)
 {
-    float3 e1_ = (b_3 - a_3);
-    float3 e2_ = (c_3 - a_3);
-    float3 q = (p_2 - a_3);
+    float3 e1_ = (b_3 - a_4);
+    float3 e2_ = (c_3 - a_4);
+    float3 q = (p_2 - a_4);
     float d11_ = dot(e1_, e1_);
     float d12_ = dot(e1_, e2_);
     float d22_ = dot(e2_, e2_);
@@ -732,16 +737,16 @@ float3 barycentric(float3 p_2, float3 a_3, float3 b_3, float3 c_3)
 
 float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_2, float3 facing)
 {
-    bool local_13 = (bool)0;
+    bool local_15 = (bool)0;
 
     float3 s_4 = (((n0_ * w_2.x) + (n1_ * w_2.y)) + (n2_ * w_2.z));
     float l2_1 = dot(s_4, s_4);
     if (!(!((l2_1 > 1e-12)))) {
-        local_13 = !((l2_1 < 3e38));
+        local_15 = !((l2_1 < 3e38));
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    bool _e24 = local_13;
+    bool _e24 = local_15;
     if (_e24) {
         return facing;
     }
@@ -749,49 +754,49 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_2, float3 fac
     return ((dot(n_16, facing) < 0.0) ? -(n_16) : n_16);
 }
 
-float ray_triangle(float3 o_1, float3 d_3, float3 a_4, float3 b_4, float3 c_4, float t_min, float t_max_1)
+float ray_triangle(float3 o_1, float3 d_4, float3 a_5, float3 b_4, float3 c_4, float t_min, float t_max_1)
 {
-    bool local_14 = (bool)0;
-    bool local_15 = (bool)0;
     bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
+    bool local_18 = (bool)0;
 
-    float3 e1_1 = (b_4 - a_4);
-    float3 e2_1 = (c_4 - a_4);
-    float3 p_3 = cross(d_3, e2_1);
+    float3 e1_1 = (b_4 - a_5);
+    float3 e2_1 = (c_4 - a_5);
+    float3 p_3 = cross(d_4, e2_1);
     float det = dot(e1_1, p_3);
     if ((abs(det) <= 0.0)) {
         return -1.0;
     }
     float inv_1 = (1.0 / det);
-    float3 s_5 = (o_1 - a_4);
+    float3 s_5 = (o_1 - a_5);
     float u_3 = (dot(s_5, p_3) * inv_1);
     if (!((u_3 < 0.0))) {
-        local_14 = (u_3 > 1.0);
+        local_16 = (u_3 > 1.0);
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    bool _e28 = local_14;
+    bool _e28 = local_16;
     if (_e28) {
         return -1.0;
     }
     float3 q_1 = cross(s_5, e1_1);
-    float v_11 = (dot(d_3, q_1) * inv_1);
-    if (!((v_11 < 0.0))) {
-        local_15 = ((u_3 + v_11) > 1.0);
+    float v_12 = (dot(d_4, q_1) * inv_1);
+    if (!((v_12 < 0.0))) {
+        local_17 = ((u_3 + v_12) > 1.0);
     } else {
-        local_15 = true;
+        local_17 = true;
     }
-    bool _e42 = local_15;
+    bool _e42 = local_17;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_1, q_1) * inv_1);
     if ((t_3 > t_min)) {
-        local_16 = (t_3 < t_max_1);
+        local_18 = (t_3 < t_max_1);
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    bool _e51 = local_16;
+    bool _e51 = local_18;
     if (_e51) {
         return t_3;
     }
@@ -823,34 +828,34 @@ bool sees_emission(float3 gn, float3 dir_1)
 
 bool continues_path(float3 nd, float3 n_12, float3 ng)
 {
-    bool local_17 = (bool)0;
-
-    if ((dot(nd, n_12) > 0.0)) {
-        local_17 = (dot(nd, ng) > 0.0);
-    } else {
-        local_17 = false;
-    }
-    bool _e12 = local_17;
-    return _e12;
-}
-
-bool finite3_(float3 v_7)
-{
-    bool local_18 = (bool)0;
     bool local_19 = (bool)0;
 
-    if ((abs(v_7.x) <= F32_MAX)) {
-        local_18 = (abs(v_7.y) <= F32_MAX);
-    } else {
-        local_18 = false;
-    }
-    bool _e12 = local_18;
-    if (_e12) {
-        local_19 = (abs(v_7.z) <= F32_MAX);
+    if ((dot(nd, n_12) > 0.0)) {
+        local_19 = (dot(nd, ng) > 0.0);
     } else {
         local_19 = false;
     }
-    bool _e20 = local_19;
+    bool _e12 = local_19;
+    return _e12;
+}
+
+bool finite3_(float3 v_8)
+{
+    bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
+
+    if ((abs(v_8.x) <= F32_MAX)) {
+        local_20 = (abs(v_8.y) <= F32_MAX);
+    } else {
+        local_20 = false;
+    }
+    bool _e12 = local_20;
+    if (_e12) {
+        local_21 = (abs(v_8.z) <= F32_MAX);
+    } else {
+        local_21 = false;
+    }
+    bool _e20 = local_21;
     return _e20;
 }
 
@@ -903,7 +908,7 @@ GpuTriangle ConstructGpuTriangle(float3 arg0, uint arg1, float3 arg2, uint arg3,
     return ret;
 }
 
-GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
+GeoHit trace(float3 o_2, float3 d_5, float t_min_1, float t_max_2, bool any_hit)
 {
     GeoHit hit = (GeoHit)0;
     uint stack[64] = (uint[64])0;
@@ -918,7 +923,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
         const GeoHit geohit = _e13;
         return geohit;
     }
-    const float3 _e14 = ray_inverse3_(d_4);
+    const float3 _e14 = ray_inverse3_(d_5);
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
@@ -949,7 +954,7 @@ GeoHit trace(float3 o_2, float3 d_4, float t_min_1, float t_max_2, bool any_hit)
                         uint _e42 = i;
                         GpuTriangle t_4 = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e42*48+0)), asuint(geo_tris.Load(_e42*48+12)), asfloat(geo_tris.Load3(_e42*48+16)), asuint(geo_tris.Load(_e42*48+28)), asfloat(geo_tris.Load3(_e42*48+32)), asuint(geo_tris.Load(_e42*48+44)));
                         float _e49 = hit.t;
-                        const float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        const float _e50 = ray_triangle(o_2, d_5, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if ((_e50 > 0.0)) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -1008,14 +1013,14 @@ GpuLightCone ConstructGpuLightCone(float3 arg0, float arg1, float3 arg2, float a
     return ret;
 }
 
-float light_range_scale(uint li, float3 x_4, float3 r_2, float4 rl_2)
+float light_range_scale(uint li, float3 x_3, float3 r_2, float4 rl_2)
 {
     GpuLightCone c_9 = ConstructGpuLightCone(asfloat(light_cones.Load3(li*48+0)), asfloat(light_cones.Load(li*48+12)), asfloat(light_cones.Load3(li*48+16)), asfloat(light_cones.Load(li*48+28)), asfloat(light_cones.Load(li*48+32)), asfloat(light_cones.Load(li*48+36)), asuint(light_cones.Load(li*48+40)), asuint(light_cones.Load(li*48+44)));
-    const float _e9 = range_scale_toward(rl_2, c_9.center_, c_9.radius, x_4, r_2);
+    const float _e9 = range_scale_toward(rl_2, c_9.center_, c_9.radius, x_3, r_2);
     return _e9;
 }
 
-float select_pdf(uint li_1, float3 x_5, float3 n_13, float3 r_3, float4 lobe_5, float4 rl_3, uint nee, bool in_range_1)
+float select_pdf(uint li_1, float3 x_4, float3 n_13, float3 r_3, float4 lobe_5, float4 rl_3, uint nee, bool in_range_1)
 {
     const float _e9 = reservoir_select_pdf(nee, in_range_1, K);
     return _e9;
@@ -1034,66 +1039,45 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
     return ret;
 }
 
-float light_pdf_selected(uint li_2, float3 x_6, float3 r_4, float4 rl_4, float3 y, float sel)
+float light_pdf_selected(uint li_2, float3 x_5, float3 r_4, float4 rl_4, float3 y, float sel)
 {
     GpuLight l_6 = ConstructGpuLight(asfloat(lights.Load3(li_2*64+0)), asuint(lights.Load(li_2*64+12)), asfloat(lights.Load3(li_2*64+16)), asfloat(lights.Load(li_2*64+28)), asfloat(lights.Load3(li_2*64+32)), asfloat(lights.Load(li_2*64+44)), asfloat(lights.Load3(li_2*64+48)), asuint(lights.Load(li_2*64+60)));
-    float3 v_12 = (x_6 - y);
-    float d2_4 = dot(v_12, v_12);
+    float3 v_13 = (x_5 - y);
+    float d2_5 = dot(v_13, v_13);
     const float3 _e11 = light_normal(l_6);
-    float cos_y_1 = ((d2_4 > 0.0) ? dot(_e11, (v_12 / (sqrt(d2_4)).xxx)) : 0.0);
-    const float _e20 = light_range_scale(li_2, x_6, r_4, rl_4);
+    float cos_y_1 = ((d2_5 > 0.0) ? dot(_e11, (v_13 / (sqrt(d2_5)).xxx)) : 0.0);
+    const float _e20 = light_range_scale(li_2, x_5, r_4, rl_4);
     float _e23 = asfloat(rt2_2.Load(li_2*4));
     const float _e25 = light_area(l_6);
-    const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_4, _e25, cos_y_1);
+    const float _e26 = light_strategy_pdf(sel, (_e20 * _e23), d2_5, _e25, cos_y_1);
     return _e26;
 }
 
-float light_pdf(uint li_3, float3 x_7, float3 n_14, float3 r_5, float4 lobe_6, float4 rl_5, float3 y_1, uint nee_1, bool in_range_2)
+float light_pdf(uint li_3, float3 x_6, float3 n_14, float3 r_5, float4 lobe_6, float4 rl_5, float3 y_1, uint nee_1, bool in_range_2)
 {
-    const float _e9 = select_pdf(li_3, x_7, n_14, r_5, lobe_6, rl_5, nee_1, in_range_2);
-    const float _e10 = light_pdf_selected(li_3, x_7, r_5, rl_5, y_1, _e9);
+    const float _e9 = select_pdf(li_3, x_6, n_14, r_5, lobe_6, rl_5, nee_1, in_range_2);
+    const float _e10 = light_pdf_selected(li_3, x_6, r_5, rl_5, y_1, _e9);
     return _e10;
 }
 
-float bsh_inner_scale(float a_5, float3 v_8, float d2_3, float3 r_6, float4 rl_6)
+float bsh_inner_scale(float a_6, float3 v_9, float d2_4, float3 r_6, float4 rl_6)
 {
-    bool local_20 = (bool)0;
-    bool local_21 = (bool)0;
-
-    float vr = dot(v_8, r_6);
-    float h2_ = (d2_3 - (a_5 * a_5));
-    if (!((h2_ <= 0.0))) {
-        if ((vr >= 0.0)) {
-            local_21 = ((vr * vr) >= h2_);
-        } else {
-            local_21 = false;
-        }
-        bool _e20 = local_21;
-        local_20 = _e20;
-    } else {
-        local_20 = true;
-    }
-    bool _e22 = local_20;
-    if (_e22) {
-        return (rl_6.w * rl_6.w);
-    }
-    float3 c_10 = cross(v_8, r_6);
-    float cos_t_1 = (((vr * sqrt(h2_)) + (sqrt(dot(c_10, c_10)) * a_5)) / d2_3);
-    const float _e36 = range_scale_at(rl_6, (cos_t_1 + 2e-6));
-    return _e36;
+    const float _e5 = cone_cos_of(v_9, d2_4, a_6, r_6);
+    const float _e8 = range_scale_at(rl_6, (_e5 + 2e-6));
+    return _e8;
 }
 
-bool bsh_reaches(BshNode node_3, float3 x_8, float3 r_7, float4 rl_7)
+bool bsh_reaches(BshNode node_3, float3 x_7, float3 r_7, float4 rl_7)
 {
     bool local_22 = (bool)0;
     bool local_23 = (bool)0;
 
-    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_8);
+    const bool _e6 = sphere_contains_point(node_3.center_, node_3.radius, x_7);
     if (_e6) {
         return true;
     }
     if (!((rl_7.w <= 1.0))) {
-        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_7.w * 1.0001)), x_8);
+        const bool _e20 = sphere_contains_point(node_3.center_, (node_3.radius * (rl_7.w * 1.0001)), x_7);
         local_22 = !(_e20);
     } else {
         local_22 = true;
@@ -1103,23 +1087,23 @@ bool bsh_reaches(BshNode node_3, float3 x_8, float3 r_7, float4 rl_7)
         return false;
     }
     const float _e25 = bsh_range_bound(node_3);
-    float3 v_13 = (x_8 - node_3.center_);
-    float d2_5 = dot(v_13, v_13);
+    float3 v_14 = (x_7 - node_3.center_);
+    float d2_6 = dot(v_14, v_14);
     float reach_max = (node_3.extent + ((rl_7.w * 1.001) * _e25));
-    if ((d2_5 > (reach_max * reach_max))) {
+    if ((d2_6 > (reach_max * reach_max))) {
         return false;
     }
     if ((node_3.child == BSH_NONE)) {
-        const float _e43 = range_scale_toward(rl_7, node_3.center_, node_3.extent, x_8, r_7);
+        const float _e43 = range_scale_toward(rl_7, node_3.center_, node_3.extent, x_7, r_7);
         const float _e46 = bsh_scaled_radius(node_3, sqrt(_e43));
-        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_8);
+        const bool _e47 = sphere_contains_point(node_3.center_, _e46, x_7);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_3.extent, -(v_13), d2_5, r_7, rl_7);
+    const float _e50 = bsh_inner_scale(node_3.extent, -(v_14), d2_6, r_7, rl_7);
     float s_c = (_e50 * 1.001);
     float reach = (node_3.extent + (sqrt(s_c) * _e25));
-    if ((d2_5 <= ((node_3.radius * node_3.radius) * s_c))) {
-        local_23 = (d2_5 <= (reach * reach));
+    if ((d2_6 <= ((node_3.radius * node_3.radius) * s_c))) {
+        local_23 = (d2_6 <= (reach * reach));
     } else {
         local_23 = false;
     }
@@ -1296,7 +1280,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     GpuTriangle tri = ConstructGpuTriangle(asfloat(geo_tris.Load3(_e94.tri*48+0)), asuint(geo_tris.Load(_e94.tri*48+12)), asfloat(geo_tris.Load3(_e94.tri*48+16)), asuint(geo_tris.Load(_e94.tri*48+28)), asfloat(geo_tris.Load3(_e94.tri*48+32)), asuint(geo_tris.Load(_e94.tri*48+44)));
     float3 _e111 = st.origin;
     float3 _e113 = st.dir;
-    float3 x_9 = (_e111 + (_e113 * _e94.t));
+    float3 x_8 = (_e111 + (_e113 * _e94.t));
     const float3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     float3 _e122 = st.dir;
     const float3 _e123 = face_against(_e120, _e122);
@@ -1304,7 +1288,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     float4 _e129 = asfloat(geo_normals.Load4(b_6*16));
     float4 _e135 = asfloat(geo_normals.Load4((b_6 + 1u)*16));
     float4 _e141 = asfloat(geo_normals.Load4((b_6 + 2u)*16));
-    const float3 _e146 = barycentric(x_9, tri.v0_, tri.v1_, tri.v2_);
+    const float3 _e146 = barycentric(x_8, tri.v0_, tri.v1_, tri.v2_);
     const float3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if ((tri.light != NO_LIGHT)) {
         float3 _e154 = st.dir;
@@ -1330,7 +1314,7 @@ void main(uint3 gid : SV_DispatchThreadID)
             float3 _e187 = st.prev_r;
             float4 _e189 = st.prev_lobe;
             uint _e192 = asuint(candidates.Load(i_1*4));
-            const float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, _e173, x_9, _e192, _e178);
+            const float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, _e173, x_8, _e192, _e178);
             const float _e194 = mis_weight(_e180, _e193);
             w = _e194;
         }
@@ -1385,7 +1369,7 @@ void main(uint3 gid : SV_DispatchThreadID)
     float3 _e232 = st.dir;
     float3 wo_1 = -(_e232);
     const float4 _e240 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, dot(_e147, wo_1));
-    v.position = x_9;
+    v.position = x_8;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
@@ -1423,14 +1407,14 @@ void main(uint3 gid : SV_DispatchThreadID)
         float3 _e282 = st.beta;
         st.beta = (_e282 * m_2.albedo);
     }
-    st.prev = x_9;
+    st.prev = x_8;
     st.prev_normal = _e147;
     const float3 _e288 = mirror_dir(_e147, wo_1);
     st.prev_r = _e288;
     st.prev_lobe = _e240;
     st.pdf_bsdf = _e264;
     float _e294 = params.eps;
-    st.origin = (x_9 + (_e123 * _e294));
+    st.origin = (x_8 + (_e123 * _e294));
     st.dir = _e262;
     const bool _e298 = continues_path(_e262, _e147, _e123);
     if (!(!(_e298))) {

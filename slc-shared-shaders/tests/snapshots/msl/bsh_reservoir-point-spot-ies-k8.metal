@@ -226,8 +226,8 @@ bool sphere_contains_point(
     float r,
     metal::float3 x_2
 ) {
-    metal::float3 v_1 = x_2 - c;
-    return metal::dot(v_1, v_1) <= (r * r);
+    metal::float3 v_2 = x_2 - c;
+    return metal::dot(v_2, v_2) <= (r * r);
 }
 
 float inverse_square(
@@ -256,11 +256,11 @@ float connection_cosine(
 ) {
     bool local = {};
     bool local_1 = {};
-    metal::float3 v_2 = x_3 - y;
-    float d2_5 = metal::dot(v_2, v_2);
-    bool _e7 = slc_keep(r2_1, d2_5);
+    metal::float3 v_3 = x_3 - y;
+    float d2_6 = metal::dot(v_3, v_3);
+    bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local = !((d2_5 > 0.0));
+        local = !((d2_6 > 0.0));
     } else {
         local = true;
     }
@@ -268,7 +268,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_3 = v_2 / metal::float3(metal::sqrt(d2_5));
+    metal::float3 w_3 = v_3 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n, w_3));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = metal::dot(ng, w_3) >= 0.0;
@@ -300,15 +300,15 @@ float atan_portable(
 ) {
     float base = 0.0;
     float t = {};
-    float a_7 = metal::abs(x_4);
-    t = a_7;
-    if (a_7 > 2.4142137) {
+    float a_8 = metal::abs(x_4);
+    t = a_8;
+    if (a_8 > 2.4142137) {
         base = 1.5707964;
-        t = -1.0 / a_7;
+        t = -1.0 / a_8;
     } else {
-        if (a_7 > 0.41421357) {
+        if (a_8 > 0.41421357) {
             base = 0.7853982;
-            t = (a_7 - 1.0) / (a_7 + 1.0);
+            t = (a_8 - 1.0) / (a_8 + 1.0);
         }
     }
     float _e18 = t;
@@ -489,11 +489,11 @@ float ies_candela(
     float _e54 = ies_lerp_t(_e51, _e53, _e32);
     float _e58 = at(tab_2, (c0_ + (_e34 * _e5)) + _e33, slc_table, _buffer_sizes);
     float _e65 = at(tab_2, (c0_ + (_e34 * _e5)) + iv1_, slc_table, _buffer_sizes);
-    float a_8 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
+    float a_9 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
     float _e71 = at(tab_2, (c0_ + (ih1_ * _e5)) + _e33, slc_table, _buffer_sizes);
     float _e78 = at(tab_2, (c0_ + (ih1_ * _e5)) + iv1_, slc_table, _buffer_sizes);
     float b_5 = (_e71 * (1.0 - _e49)) + (_e78 * _e49);
-    return (a_8 * (1.0 - _e54)) + (b_5 * _e54);
+    return (a_9 * (1.0 - _e54)) + (b_5 * _e54);
 }
 
 float ies_candela_dir(
@@ -612,41 +612,44 @@ float reservoir_weight(
     return metal::max(_e2 / _e3, 1.0);
 }
 
-float cos_sub_clamped(
-    float sin_a,
-    float cos_a,
-    float sin_b,
-    float cos_b
+float cone_cos_of(
+    metal::float3 v,
+    float d2_4,
+    float a_4,
+    metal::float3 d
 ) {
-    if (cos_a > cos_b) {
+    bool local_3 = {};
+    bool local_4 = {};
+    float vd = metal::dot(v, d);
+    float h2_ = d2_4 - (a_4 * a_4);
+    if (!((h2_ <= 0.0))) {
+        if (vd >= 0.0) {
+            local_4 = (vd * vd) >= h2_;
+        } else {
+            local_4 = false;
+        }
+        bool _e19 = local_4;
+        local_3 = _e19;
+    } else {
+        local_3 = true;
+    }
+    bool _e21 = local_3;
+    if (_e21) {
         return 1.0;
     }
-    return (cos_a * cos_b) + (sin_a * sin_b);
-}
-
-float safe_sqrt(
-    float x_8
-) {
-    return metal::sqrt(metal::max(x_8, 0.0));
+    metal::float3 c_6 = metal::cross(v, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_6, c_6)) * a_4)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
     metal::float3 center,
     float radius,
     metal::float3 p,
-    metal::float3 d
+    metal::float3 d_1
 ) {
-    metal::float3 v_3 = center - p;
-    float dist2_ = metal::dot(v_3, v_3);
-    if (dist2_ <= (radius * radius)) {
-        return 1.0;
-    }
-    float dist = metal::sqrt(dist2_);
-    metal::float3 c_6 = metal::cross(v_3, d);
-    float sin_b_1 = radius / dist;
-    float _e20 = safe_sqrt(1.0 - (sin_b_1 * sin_b_1));
-    float _e21 = cos_sub_clamped(metal::sqrt(metal::dot(c_6, c_6)) / dist, metal::dot(v_3, d) / dist, sin_b_1, _e20);
-    return _e21;
+    metal::float3 v_4 = center - p;
+    float _e6 = cone_cos_of(v_4, metal::dot(v_4, v_4), radius, d_1);
+    return _e6;
 }
 
 float range_scale_at(
@@ -679,17 +682,17 @@ float shadow_margin(
 }
 
 float ray_inverse(
-    float x_9
+    float x_8
 ) {
-    return 1.0 / ((metal::abs(x_9) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_9);
+    return 1.0 / ((metal::abs(x_8) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_8);
 }
 
 metal::float3 ray_inverse3_(
-    metal::float3 d_1
+    metal::float3 d_2
 ) {
-    float _e2 = ray_inverse(d_1.x);
-    float _e4 = ray_inverse(d_1.y);
-    float _e6 = ray_inverse(d_1.z);
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
     return metal::float3(_e2, _e4, _e6);
 }
 
@@ -714,53 +717,53 @@ float ray_aabb(
 
 float ray_triangle(
     metal::float3 o_1,
-    metal::float3 d_2,
-    metal::float3 a_4,
+    metal::float3 d_3,
+    metal::float3 a_5,
     metal::float3 b_3,
     metal::float3 c_3,
     float t_min,
     float t_max_1
 ) {
-    bool local_3 = {};
-    bool local_4 = {};
     bool local_5 = {};
-    metal::float3 e1_ = b_3 - a_4;
-    metal::float3 e2_ = c_3 - a_4;
-    metal::float3 p_2 = metal::cross(d_2, e2_);
+    bool local_6 = {};
+    bool local_7 = {};
+    metal::float3 e1_ = b_3 - a_5;
+    metal::float3 e2_ = c_3 - a_5;
+    metal::float3 p_2 = metal::cross(d_3, e2_);
     float det = metal::dot(e1_, p_2);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv = 1.0 / det;
-    metal::float3 s_2 = o_1 - a_4;
+    metal::float3 s_2 = o_1 - a_5;
     float u_2 = metal::dot(s_2, p_2) * inv;
     if (!((u_2 < 0.0))) {
-        local_3 = u_2 > 1.0;
+        local_5 = u_2 > 1.0;
     } else {
-        local_3 = true;
+        local_5 = true;
     }
-    bool _e28 = local_3;
+    bool _e28 = local_5;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q = metal::cross(s_2, e1_);
-    float v_4 = metal::dot(d_2, q) * inv;
-    if (!((v_4 < 0.0))) {
-        local_4 = (u_2 + v_4) > 1.0;
+    float v_5 = metal::dot(d_3, q) * inv;
+    if (!((v_5 < 0.0))) {
+        local_6 = (u_2 + v_5) > 1.0;
     } else {
-        local_4 = true;
+        local_6 = true;
     }
-    bool _e42 = local_4;
+    bool _e42 = local_6;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_, q) * inv;
     if (t_3 > t_min) {
-        local_5 = t_3 < t_max_1;
+        local_7 = t_3 < t_max_1;
     } else {
-        local_5 = false;
+        local_7 = false;
     }
-    bool _e51 = local_5;
+    bool _e51 = local_7;
     if (_e51) {
         return t_3;
     }
@@ -801,7 +804,7 @@ metal::float3 light_point(
 
 GeoHit trace(
     metal::float3 o_2,
-    metal::float3 d_3,
+    metal::float3 d_4,
     float t_min_1,
     float t_max_2,
     bool any_hit,
@@ -820,7 +823,7 @@ GeoHit trace(
         GeoHit _e13 = hit;
         return _e13;
     }
-    metal::float3 _e14 = ray_inverse3_(d_3);
+    metal::float3 _e14 = ray_inverse3_(d_4);
     uint2 loop_bound_1 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
@@ -851,7 +854,7 @@ GeoHit trace(
                         uint _e42 = i_1;
                         GpuTriangle t_4 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i_1;
@@ -890,19 +893,19 @@ GeoHit trace(
 }
 
 bool occluded(
-    metal::float3 a_5,
+    metal::float3 a_6,
     metal::float3 b_4,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 dv = b_4 - a_5;
+    metal::float3 dv = b_4 - a_6;
     float len_1 = metal::length(dv);
     if (len_1 <= 0.0) {
         return false;
     }
     float _e7 = shadow_margin(len_1);
-    GeoHit _e12 = trace(a_5, dv / metal::float3(len_1), _e7, len_1 - _e7, true, geo_nodes, geo_tris, _buffer_sizes);
+    GeoHit _e12 = trace(a_6, dv / metal::float3(len_1), _e7, len_1 - _e7, true, geo_nodes, geo_tris, _buffer_sizes);
     return _e12.tri != NO_LIGHT;
 }
 
@@ -937,51 +940,31 @@ uint bsh_first(
 }
 
 float bsh_inner_scale(
-    float a_6,
-    metal::float3 v,
-    float d2_4,
+    float a_7,
+    metal::float3 v_1,
+    float d2_5,
     metal::float3 r_2,
     metal::float4 rl_2
 ) {
-    bool local_6 = {};
-    bool local_7 = {};
-    float vr = metal::dot(v, r_2);
-    float h2_ = d2_4 - (a_6 * a_6);
-    if (!((h2_ <= 0.0))) {
-        if (vr >= 0.0) {
-            local_7 = (vr * vr) >= h2_;
-        } else {
-            local_7 = false;
-        }
-        bool _e20 = local_7;
-        local_6 = _e20;
-    } else {
-        local_6 = true;
-    }
-    bool _e22 = local_6;
-    if (_e22) {
-        return rl_2.w * rl_2.w;
-    }
-    metal::float3 c_7 = metal::cross(v, r_2);
-    float cos_t_1 = ((vr * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_7, c_7)) * a_6)) / d2_4;
-    float _e36 = range_scale_at(rl_2, cos_t_1 + 0.000002);
-    return _e36;
+    float _e5 = cone_cos_of(v_1, d2_5, a_7, r_2);
+    float _e8 = range_scale_at(rl_2, _e5 + 0.000002);
+    return _e8;
 }
 
 bool bsh_reaches(
     BshNode node_3,
-    metal::float3 x_10,
+    metal::float3 x_9,
     metal::float3 r_3,
     metal::float4 rl_3
 ) {
     bool local_8 = {};
     bool local_9 = {};
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_10);
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_9);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_10);
+        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_9);
         local_8 = !(_e20);
     } else {
         local_8 = true;
@@ -991,23 +974,23 @@ bool bsh_reaches(
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_5 = x_10 - node_3.center;
-    float d2_6 = metal::dot(v_5, v_5);
+    metal::float3 v_6 = x_9 - node_3.center;
+    float d2_7 = metal::dot(v_6, v_6);
     float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
-    if (d2_6 > (reach_max * reach_max)) {
+    if (d2_7 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_10, r_3);
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_9, r_3);
         float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_10);
+        bool _e47 = sphere_contains_point(node_3.center, _e46, x_9);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_5), d2_6, r_3, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_6), d2_7, r_3, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_6 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_9 = d2_6 <= (reach * reach);
+    if (d2_7 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_9 = d2_7 <= (reach * reach);
     } else {
         local_9 = false;
     }
@@ -1018,7 +1001,7 @@ bool bsh_reaches(
 uint bsh_next_leaf_lobe(
     BshNodes nodes_3,
     uint start_1,
-    metal::float3 x_11,
+    metal::float3 x_10,
     metal::float3 r_4,
     metal::float4 rl_4,
     device type_10 const& bsh_nodes,
@@ -1038,7 +1021,7 @@ uint bsh_next_leaf_lobe(
         {
             uint _e9 = i_3;
             BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_11, r_4, rl_4);
+            bool _e11 = bsh_reaches(_e10, x_10, r_4, rl_4);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
                     uint _e15 = i_3;
@@ -1054,7 +1037,7 @@ uint bsh_next_leaf_lobe(
 }
 
 Picks bsh_collect(
-    metal::float3 x_12,
+    metal::float3 x_11,
     metal::float3 r_5,
     metal::float4 rl_5,
     uint seed_1,
@@ -1067,7 +1050,7 @@ Picks bsh_collect(
     picks.n = 0u;
     h_1 = seed_1;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_5, rl_5, bsh_nodes, _buffer_sizes);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5, bsh_nodes, _buffer_sizes);
     i_4 = _e11;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_1 = true;
@@ -1077,7 +1060,7 @@ Picks bsh_collect(
         if (!loop_init_1) {
             uint _e44 = i_4;
             uint _e47 = bsh_nodes[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_5, rl_5, bsh_nodes, _buffer_sizes);
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_5, rl_5, bsh_nodes, _buffer_sizes);
             i_4 = _e48;
         }
         loop_init_1 = false;
@@ -1116,7 +1099,7 @@ Picks bsh_collect(
 
 Connection connect(
     uint li,
-    metal::float3 x_13,
+    metal::float3 x_12,
     metal::float3 n_6,
     metal::float3 ng_1,
     float s_1,
@@ -1140,12 +1123,12 @@ Connection connect(
     c_4.y = _e17;
     metal::float3 _e20 = c_4.y;
     float _e23 = r2_2[li];
-    float _e25 = connection_cosine(x_13, _e20, n_6, ng_1, s_1 * _e23);
+    float _e25 = connection_cosine(x_12, _e20, n_6, ng_1, s_1 * _e23);
     c_4.cos_x = _e25;
     float _e27 = c_4.cos_x;
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_4.y;
-        bool _e37 = occluded(x_13 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
+        bool _e37 = occluded(x_12 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
         local_10 = _e37;
     } else {
         local_10 = true;
@@ -1156,12 +1139,12 @@ Connection connect(
         return _e40;
     }
     metal::float3 _e42 = c_4.y;
-    metal::float3 v_6 = x_13 - _e42;
-    float d2_7 = metal::dot(v_6, v_6);
-    metal::float3 _e49 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_7)), slc_table, _buffer_sizes);
+    metal::float3 v_7 = x_12 - _e42;
+    float d2_8 = metal::dot(v_7, v_7);
+    metal::float3 _e49 = light_intensity(l_2, v_7 / metal::float3(metal::sqrt(d2_8)), slc_table, _buffer_sizes);
     float _e51 = c_4.cos_x;
     float _e54 = rt2_2[li];
-    float _e56 = connection_factor(_e51, d2_7, s_1 * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_8, s_1 * _e54, w_res);
     c_4.e = _e49 * _e56;
     Connection _e58 = c_4;
     return _e58;
@@ -1197,13 +1180,13 @@ kernel void main_(
         irradiance[i_5] = metal::float4(0.0);
         return;
     }
-    metal::float3 x_14 = p_3.xyz;
+    metal::float3 x_13 = p_3.xyz;
     metal::float4 _e19 = normals[i_5];
     metal::float3 n_8 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     uint _e27 = point_stream(_e23, i_5, _e26);
-    Picks _e33 = bsh_collect(x_14, x_14, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
+    Picks _e33 = bsh_collect(x_13, x_13, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
     float _e36 = reservoir_weight(_e33.n, K);
     uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -1236,7 +1219,7 @@ kernel void main_(
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            Connection _e65 = connect(_e33.light.inner[_e57], x_14, n_8, n_8, 1.0, _e36, _e52, _e61, _e64, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_2, _buffer_sizes);
+            Connection _e65 = connect(_e33.light.inner[_e57], x_13, n_8, n_8, 1.0, _e36, _e52, _e61, _e64, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_2, _buffer_sizes);
             e = _e55 + _e65.e;
         }
     }

@@ -179,8 +179,8 @@ bool sphere_contains_point(
     float r,
     metal::float3 x_1
 ) {
-    metal::float3 v_1 = x_1 - c;
-    return metal::dot(v_1, v_1) <= (r * r);
+    metal::float3 v_2 = x_1 - c;
+    return metal::dot(v_2, v_2) <= (r * r);
 }
 
 float inverse_square(
@@ -209,11 +209,11 @@ float connection_cosine(
 ) {
     bool local = {};
     bool local_1 = {};
-    metal::float3 v_2 = x_2 - y;
-    float d2_5 = metal::dot(v_2, v_2);
-    bool _e7 = slc_keep(r2_1, d2_5);
+    metal::float3 v_3 = x_2 - y;
+    float d2_6 = metal::dot(v_3, v_3);
+    bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local = !((d2_5 > 0.0));
+        local = !((d2_6 > 0.0));
     } else {
         local = true;
     }
@@ -221,7 +221,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_3 = v_2 / metal::float3(metal::sqrt(d2_5));
+    metal::float3 w_3 = v_3 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n, w_3));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = metal::dot(ng, w_3) >= 0.0;
@@ -340,41 +340,44 @@ float reservoir_weight(
     return metal::max(_e2 / _e3, 1.0);
 }
 
-float cos_sub_clamped(
-    float sin_a,
-    float cos_a,
-    float sin_b,
-    float cos_b
+float cone_cos_of(
+    metal::float3 v,
+    float d2_4,
+    float a_4,
+    metal::float3 d
 ) {
-    if (cos_a > cos_b) {
+    bool local_2 = {};
+    bool local_3 = {};
+    float vd = metal::dot(v, d);
+    float h2_ = d2_4 - (a_4 * a_4);
+    if (!((h2_ <= 0.0))) {
+        if (vd >= 0.0) {
+            local_3 = (vd * vd) >= h2_;
+        } else {
+            local_3 = false;
+        }
+        bool _e19 = local_3;
+        local_2 = _e19;
+    } else {
+        local_2 = true;
+    }
+    bool _e21 = local_2;
+    if (_e21) {
         return 1.0;
     }
-    return (cos_a * cos_b) + (sin_a * sin_b);
-}
-
-float safe_sqrt(
-    float x_3
-) {
-    return metal::sqrt(metal::max(x_3, 0.0));
+    metal::float3 c_4 = metal::cross(v, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_4, c_4)) * a_4)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
     metal::float3 center,
     float radius,
     metal::float3 p,
-    metal::float3 d
+    metal::float3 d_1
 ) {
-    metal::float3 v_3 = center - p;
-    float dist2_ = metal::dot(v_3, v_3);
-    if (dist2_ <= (radius * radius)) {
-        return 1.0;
-    }
-    float dist = metal::sqrt(dist2_);
-    metal::float3 c_4 = metal::cross(v_3, d);
-    float sin_b_1 = radius / dist;
-    float _e20 = safe_sqrt(1.0 - (sin_b_1 * sin_b_1));
-    float _e21 = cos_sub_clamped(metal::sqrt(metal::dot(c_4, c_4)) / dist, metal::dot(v_3, d) / dist, sin_b_1, _e20);
-    return _e21;
+    metal::float3 v_4 = center - p;
+    float _e6 = cone_cos_of(v_4, metal::dot(v_4, v_4), radius, d_1);
+    return _e6;
 }
 
 float range_scale_at(
@@ -401,19 +404,19 @@ float range_scale_toward(
 }
 
 metal::float3 triangle_normal(
-    metal::float3 a_4,
+    metal::float3 a_5,
     metal::float3 b_4,
     metal::float3 c_2
 ) {
-    bool local_2 = {};
-    metal::float3 n_7 = metal::cross(b_4 - a_4, c_2 - a_4);
+    bool local_4 = {};
+    metal::float3 n_7 = metal::cross(b_4 - a_5, c_2 - a_5);
     float l2_ = metal::dot(n_7, n_7);
     if (!(!((l2_ > 0.0)))) {
-        local_2 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_4 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_2 = true;
+        local_4 = true;
     }
-    bool _e17 = local_2;
+    bool _e17 = local_4;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -452,7 +455,7 @@ metal::float3 light_point(
 }
 
 bool occluded(
-    metal::float3 a_5,
+    metal::float3 a_6,
     metal::float3 b_5
 ) {
     return false;
@@ -489,51 +492,31 @@ uint bsh_first(
 }
 
 float bsh_inner_scale(
-    float a_6,
-    metal::float3 v,
-    float d2_4,
+    float a_7,
+    metal::float3 v_1,
+    float d2_5,
     metal::float3 r_2,
     metal::float4 rl_2
 ) {
-    bool local_3 = {};
-    bool local_4 = {};
-    float vr = metal::dot(v, r_2);
-    float h2_ = d2_4 - (a_6 * a_6);
-    if (!((h2_ <= 0.0))) {
-        if (vr >= 0.0) {
-            local_4 = (vr * vr) >= h2_;
-        } else {
-            local_4 = false;
-        }
-        bool _e20 = local_4;
-        local_3 = _e20;
-    } else {
-        local_3 = true;
-    }
-    bool _e22 = local_3;
-    if (_e22) {
-        return rl_2.w * rl_2.w;
-    }
-    metal::float3 c_5 = metal::cross(v, r_2);
-    float cos_t_1 = ((vr * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_5, c_5)) * a_6)) / d2_4;
-    float _e36 = range_scale_at(rl_2, cos_t_1 + 0.000002);
-    return _e36;
+    float _e5 = cone_cos_of(v_1, d2_5, a_7, r_2);
+    float _e8 = range_scale_at(rl_2, _e5 + 0.000002);
+    return _e8;
 }
 
 bool bsh_reaches(
     BshNode node_2,
-    metal::float3 x_4,
+    metal::float3 x_3,
     metal::float3 r_3,
     metal::float4 rl_3
 ) {
     bool local_5 = {};
     bool local_6 = {};
-    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
+    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_3);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_3.w * 1.0001), x_4);
+        bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_3.w * 1.0001), x_3);
         local_5 = !(_e20);
     } else {
         local_5 = true;
@@ -543,23 +526,23 @@ bool bsh_reaches(
         return false;
     }
     float _e25 = bsh_range_bound(node_2);
-    metal::float3 v_4 = x_4 - node_2.center;
-    float d2_6 = metal::dot(v_4, v_4);
+    metal::float3 v_5 = x_3 - node_2.center;
+    float d2_7 = metal::dot(v_5, v_5);
     float reach_max = node_2.extent + ((rl_3.w * 1.001) * _e25);
-    if (d2_6 > (reach_max * reach_max)) {
+    if (d2_7 > (reach_max * reach_max)) {
         return false;
     }
     if (node_2.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_4, r_3);
+        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_3, r_3);
         float _e46 = bsh_scaled_radius(node_2, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_2.center, _e46, x_4);
+        bool _e47 = sphere_contains_point(node_2.center, _e46, x_3);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_2.extent, -(v_4), d2_6, r_3, rl_3);
+    float _e50 = bsh_inner_scale(node_2.extent, -(v_5), d2_7, r_3, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_2.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_6 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_6 = d2_6 <= (reach * reach);
+    if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_6 = d2_7 <= (reach * reach);
     } else {
         local_6 = false;
     }
@@ -570,7 +553,7 @@ bool bsh_reaches(
 uint bsh_next_leaf_lobe(
     BshNodes nodes_3,
     uint start,
-    metal::float3 x_5,
+    metal::float3 x_4,
     metal::float3 r_4,
     metal::float4 rl_4,
     device type_7 const& bsh_nodes,
@@ -590,7 +573,7 @@ uint bsh_next_leaf_lobe(
         {
             uint _e9 = i_1;
             BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_5, r_4, rl_4);
+            bool _e11 = bsh_reaches(_e10, x_4, r_4, rl_4);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
                     uint _e15 = i_1;
@@ -606,7 +589,7 @@ uint bsh_next_leaf_lobe(
 }
 
 Picks bsh_collect(
-    metal::float3 x_6,
+    metal::float3 x_5,
     metal::float3 r_5,
     metal::float4 rl_5,
     uint seed_1,
@@ -619,7 +602,7 @@ Picks bsh_collect(
     picks.n = 0u;
     h_1 = seed_1;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_6, r_5, rl_5, bsh_nodes, _buffer_sizes);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_5, r_5, rl_5, bsh_nodes, _buffer_sizes);
     i_2 = _e11;
     uint2 loop_bound_1 = uint2(4294967295u);
     bool loop_init = true;
@@ -629,7 +612,7 @@ Picks bsh_collect(
         if (!loop_init) {
             uint _e44 = i_2;
             uint _e47 = bsh_nodes[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_6, r_5, rl_5, bsh_nodes, _buffer_sizes);
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_5, r_5, rl_5, bsh_nodes, _buffer_sizes);
             i_2 = _e48;
         }
         loop_init = false;
@@ -668,7 +651,7 @@ Picks bsh_collect(
 
 Connection connect(
     uint li,
-    metal::float3 x_7,
+    metal::float3 x_6,
     metal::float3 n_6,
     metal::float3 ng_1,
     float s_1,
@@ -689,12 +672,12 @@ Connection connect(
     c_3.y = _e17;
     metal::float3 _e20 = c_3.y;
     float _e23 = r2_2[li];
-    float _e25 = connection_cosine(x_7, _e20, n_6, ng_1, s_1 * _e23);
+    float _e25 = connection_cosine(x_6, _e20, n_6, ng_1, s_1 * _e23);
     c_3.cos_x = _e25;
     float _e27 = c_3.cos_x;
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_3.y;
-        bool _e37 = occluded(x_7 + (ng_1 * eps), _e36);
+        bool _e37 = occluded(x_6 + (ng_1 * eps), _e36);
         local_7 = _e37;
     } else {
         local_7 = true;
@@ -705,12 +688,12 @@ Connection connect(
         return _e40;
     }
     metal::float3 _e42 = c_3.y;
-    metal::float3 v_5 = x_7 - _e42;
-    float d2_7 = metal::dot(v_5, v_5);
-    metal::float3 _e49 = light_intensity(l_2, v_5 / metal::float3(metal::sqrt(d2_7)));
+    metal::float3 v_6 = x_6 - _e42;
+    float d2_8 = metal::dot(v_6, v_6);
+    metal::float3 _e49 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_8)));
     float _e51 = c_3.cos_x;
     float _e54 = rt2_2[li];
-    float _e56 = connection_factor(_e51, d2_7, s_1 * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_8, s_1 * _e54, w_res);
     c_3.e = _e49 * _e56;
     Connection _e58 = c_3;
     return _e58;
@@ -743,13 +726,13 @@ kernel void main_(
         irradiance[i_3] = metal::float4(0.0);
         return;
     }
-    metal::float3 x_8 = p_2.xyz;
+    metal::float3 x_7 = p_2.xyz;
     metal::float4 _e19 = normals[i_3];
     metal::float3 n_8 = _e19.xyz;
     uint _e23 = params.seed;
     uint _e26 = params.frame;
     uint _e27 = point_stream(_e23, i_3, _e26);
-    Picks _e33 = bsh_collect(x_8, x_8, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
+    Picks _e33 = bsh_collect(x_7, x_7, metal::float4(1.0, 0.0, 1.0, 1.0), _e27, bsh_nodes, _buffer_sizes);
     float _e36 = reservoir_weight(_e33.n, K);
     uint _e37 = pick_stream(_e27);
     h = _e37;
@@ -782,7 +765,7 @@ kernel void main_(
             uint _e60 = h;
             float _e61 = xi_from_bits(_e60);
             float _e64 = params.eps;
-            Connection _e65 = connect(_e33.light.inner[_e57], x_8, n_8, n_8, 1.0, _e36, _e52, _e61, _e64, lights, r2_2, rt2_2, _buffer_sizes);
+            Connection _e65 = connect(_e33.light.inner[_e57], x_7, n_8, n_8, 1.0, _e36, _e52, _e61, _e64, lights, r2_2, rt2_2, _buffer_sizes);
             e = _e55 + _e65.e;
         }
     }

@@ -220,8 +220,8 @@ bool sphere_contains_point(
     float r_1,
     metal::float3 x_2
 ) {
-    metal::float3 v_1 = x_2 - c;
-    return metal::dot(v_1, v_1) <= (r_1 * r_1);
+    metal::float3 v_2 = x_2 - c;
+    return metal::dot(v_2, v_2) <= (r_1 * r_1);
 }
 
 float inverse_square(
@@ -250,11 +250,11 @@ float connection_cosine(
 ) {
     bool local_2 = {};
     bool local_3 = {};
-    metal::float3 v_2 = x_3 - y;
-    float d2_5 = metal::dot(v_2, v_2);
-    bool _e7 = slc_keep(r2_1, d2_5);
+    metal::float3 v_3 = x_3 - y;
+    float d2_6 = metal::dot(v_3, v_3);
+    bool _e7 = slc_keep(r2_1, d2_6);
     if (!(!(_e7))) {
-        local_2 = !((d2_5 > 0.0));
+        local_2 = !((d2_6 > 0.0));
     } else {
         local_2 = true;
     }
@@ -262,7 +262,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_5 = v_2 / metal::float3(metal::sqrt(d2_5));
+    metal::float3 w_5 = v_3 / metal::float3(metal::sqrt(d2_6));
     float cos_x_1 = -(metal::dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = metal::dot(ng, w_5) >= 0.0;
@@ -315,15 +315,15 @@ float atan_portable(
 ) {
     float base = 0.0;
     float t_1 = {};
-    float a_9 = metal::abs(x_4);
-    t_1 = a_9;
-    if (a_9 > 2.4142137) {
+    float a_10 = metal::abs(x_4);
+    t_1 = a_10;
+    if (a_10 > 2.4142137) {
         base = 1.5707964;
-        t_1 = -1.0 / a_9;
+        t_1 = -1.0 / a_10;
     } else {
-        if (a_9 > 0.41421357) {
+        if (a_10 > 0.41421357) {
             base = 0.7853982;
-            t_1 = (a_9 - 1.0) / (a_9 + 1.0);
+            t_1 = (a_10 - 1.0) / (a_10 + 1.0);
         }
     }
     float _e18 = t_1;
@@ -504,11 +504,11 @@ float ies_candela(
     float _e54 = ies_lerp_t(_e51, _e53, _e32);
     float _e58 = at(tab_2, (c0_ + (_e34 * _e5)) + _e33, slc_table, _buffer_sizes);
     float _e65 = at(tab_2, (c0_ + (_e34 * _e5)) + iv1_, slc_table, _buffer_sizes);
-    float a_10 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
+    float a_11 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
     float _e71 = at(tab_2, (c0_ + (ih1_ * _e5)) + _e33, slc_table, _buffer_sizes);
     float _e78 = at(tab_2, (c0_ + (ih1_ * _e5)) + iv1_, slc_table, _buffer_sizes);
     float b_7 = (_e71 * (1.0 - _e49)) + (_e78 * _e49);
-    return (a_10 * (1.0 - _e54)) + (b_7 * _e54);
+    return (a_11 * (1.0 - _e54)) + (b_7 * _e54);
 }
 
 float ies_candela_dir(
@@ -670,41 +670,44 @@ metal::float4 range_lobe(
     return metal::float4(lobe_4.x, _e10, lobe_4.z * lobe_4.z, metal::sqrt(_e14));
 }
 
-float cos_sub_clamped(
-    float sin_a,
-    float cos_a,
-    float sin_b,
-    float cos_b
+float cone_cos_of(
+    metal::float3 v,
+    float d2_4,
+    float a_5,
+    metal::float3 d
 ) {
-    if (cos_a > cos_b) {
+    bool local_5 = {};
+    bool local_6 = {};
+    float vd = metal::dot(v, d);
+    float h2_ = d2_4 - (a_5 * a_5);
+    if (!((h2_ <= 0.0))) {
+        if (vd >= 0.0) {
+            local_6 = (vd * vd) >= h2_;
+        } else {
+            local_6 = false;
+        }
+        bool _e19 = local_6;
+        local_5 = _e19;
+    } else {
+        local_5 = true;
+    }
+    bool _e21 = local_5;
+    if (_e21) {
         return 1.0;
     }
-    return (cos_a * cos_b) + (sin_a * sin_b);
-}
-
-float safe_sqrt(
-    float x_8
-) {
-    return metal::sqrt(metal::max(x_8, 0.0));
+    metal::float3 c_7 = metal::cross(v, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_7, c_7)) * a_5)) / d2_4, 1.0);
 }
 
 float cone_cos_toward(
     metal::float3 center,
     float radius,
     metal::float3 p,
-    metal::float3 d
+    metal::float3 d_1
 ) {
-    metal::float3 v_3 = center - p;
-    float dist2_ = metal::dot(v_3, v_3);
-    if (dist2_ <= (radius * radius)) {
-        return 1.0;
-    }
-    float dist = metal::sqrt(dist2_);
-    metal::float3 c_7 = metal::cross(v_3, d);
-    float sin_b_1 = radius / dist;
-    float _e20 = safe_sqrt(1.0 - (sin_b_1 * sin_b_1));
-    float _e21 = cos_sub_clamped(metal::sqrt(metal::dot(c_7, c_7)) / dist, metal::dot(v_3, d) / dist, sin_b_1, _e20);
-    return _e21;
+    metal::float3 v_4 = center - p;
+    float _e6 = cone_cos_of(v_4, metal::dot(v_4, v_4), radius, d_1);
+    return _e6;
 }
 
 float range_scale_at(
@@ -731,19 +734,19 @@ float range_scale_toward(
 }
 
 metal::float3 triangle_normal(
-    metal::float3 a_5,
+    metal::float3 a_6,
     metal::float3 b_4,
     metal::float3 c_4
 ) {
-    bool local_5 = {};
-    metal::float3 n_9 = metal::cross(b_4 - a_5, c_4 - a_5);
+    bool local_7 = {};
+    metal::float3 n_9 = metal::cross(b_4 - a_6, c_4 - a_6);
     float l2_ = metal::dot(n_9, n_9);
     if (!(!((l2_ > 0.0)))) {
-        local_5 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_7 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_5 = true;
+        local_7 = true;
     }
-    bool _e17 = local_5;
+    bool _e17 = local_7;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -792,7 +795,7 @@ metal::float3 light_point(
 }
 
 bool occluded(
-    metal::float3 a_6,
+    metal::float3 a_7,
     metal::float3 b_5
 ) {
     return false;
@@ -829,51 +832,31 @@ uint bsh_first(
 }
 
 float bsh_inner_scale(
-    float a_7,
-    metal::float3 v,
-    float d2_4,
+    float a_8,
+    metal::float3 v_1,
+    float d2_5,
     metal::float3 r_3,
     metal::float4 rl_2
 ) {
-    bool local_6 = {};
-    bool local_7 = {};
-    float vr = metal::dot(v, r_3);
-    float h2_ = d2_4 - (a_7 * a_7);
-    if (!((h2_ <= 0.0))) {
-        if (vr >= 0.0) {
-            local_7 = (vr * vr) >= h2_;
-        } else {
-            local_7 = false;
-        }
-        bool _e20 = local_7;
-        local_6 = _e20;
-    } else {
-        local_6 = true;
-    }
-    bool _e22 = local_6;
-    if (_e22) {
-        return rl_2.w * rl_2.w;
-    }
-    metal::float3 c_8 = metal::cross(v, r_3);
-    float cos_t_1 = ((vr * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_8, c_8)) * a_7)) / d2_4;
-    float _e36 = range_scale_at(rl_2, cos_t_1 + 0.000002);
-    return _e36;
+    float _e5 = cone_cos_of(v_1, d2_5, a_8, r_3);
+    float _e8 = range_scale_at(rl_2, _e5 + 0.000002);
+    return _e8;
 }
 
 bool bsh_reaches(
     BshNode node_2,
-    metal::float3 x_9,
+    metal::float3 x_8,
     metal::float3 r_4,
     metal::float4 rl_3
 ) {
     bool local_8 = {};
     bool local_9 = {};
-    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_9);
+    bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_8);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_3.w * 1.0001), x_9);
+        bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_3.w * 1.0001), x_8);
         local_8 = !(_e20);
     } else {
         local_8 = true;
@@ -883,23 +866,23 @@ bool bsh_reaches(
         return false;
     }
     float _e25 = bsh_range_bound(node_2);
-    metal::float3 v_4 = x_9 - node_2.center;
-    float d2_6 = metal::dot(v_4, v_4);
+    metal::float3 v_5 = x_8 - node_2.center;
+    float d2_7 = metal::dot(v_5, v_5);
     float reach_max = node_2.extent + ((rl_3.w * 1.001) * _e25);
-    if (d2_6 > (reach_max * reach_max)) {
+    if (d2_7 > (reach_max * reach_max)) {
         return false;
     }
     if (node_2.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_9, r_4);
+        float _e43 = range_scale_toward(rl_3, node_2.center, node_2.extent, x_8, r_4);
         float _e46 = bsh_scaled_radius(node_2, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_2.center, _e46, x_9);
+        bool _e47 = sphere_contains_point(node_2.center, _e46, x_8);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_2.extent, -(v_4), d2_6, r_4, rl_3);
+    float _e50 = bsh_inner_scale(node_2.extent, -(v_5), d2_7, r_4, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_2.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_6 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_9 = d2_6 <= (reach * reach);
+    if (d2_7 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_9 = d2_7 <= (reach * reach);
     } else {
         local_9 = false;
     }
@@ -910,7 +893,7 @@ bool bsh_reaches(
 uint bsh_next_leaf_lobe(
     BshNodes nodes_3,
     uint start_1,
-    metal::float3 x_10,
+    metal::float3 x_9,
     metal::float3 r_5,
     metal::float4 rl_4,
     device type_9 const& bsh_nodes,
@@ -930,7 +913,7 @@ uint bsh_next_leaf_lobe(
         {
             uint _e9 = i_2;
             BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_10, r_5, rl_4);
+            bool _e11 = bsh_reaches(_e10, x_9, r_5, rl_4);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
                     uint _e15 = i_2;
@@ -946,7 +929,7 @@ uint bsh_next_leaf_lobe(
 }
 
 Picks bsh_collect(
-    metal::float3 x_11,
+    metal::float3 x_10,
     metal::float3 r_6,
     metal::float4 rl_5,
     uint seed_1,
@@ -959,7 +942,7 @@ Picks bsh_collect(
     picks.n = 0u;
     h_1 = seed_1;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_6, rl_5, bsh_nodes, _buffer_sizes);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_10, r_6, rl_5, bsh_nodes, _buffer_sizes);
     i_3 = _e11;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init = true;
@@ -969,7 +952,7 @@ Picks bsh_collect(
         if (!loop_init) {
             uint _e44 = i_3;
             uint _e47 = bsh_nodes[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_6, rl_5, bsh_nodes, _buffer_sizes);
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_10, r_6, rl_5, bsh_nodes, _buffer_sizes);
             i_3 = _e48;
         }
         loop_init = false;
@@ -1008,7 +991,7 @@ Picks bsh_collect(
 
 Connection connect(
     uint li,
-    metal::float3 x_12,
+    metal::float3 x_11,
     metal::float3 n_7,
     metal::float3 ng_1,
     float s,
@@ -1030,12 +1013,12 @@ Connection connect(
     c_5.y = _e17;
     metal::float3 _e20 = c_5.y;
     float _e23 = r2_2[li];
-    float _e25 = connection_cosine(x_12, _e20, n_7, ng_1, s * _e23);
+    float _e25 = connection_cosine(x_11, _e20, n_7, ng_1, s * _e23);
     c_5.cos_x = _e25;
     float _e27 = c_5.cos_x;
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_5.y;
-        bool _e37 = occluded(x_12 + (ng_1 * eps), _e36);
+        bool _e37 = occluded(x_11 + (ng_1 * eps), _e36);
         local_10 = _e37;
     } else {
         local_10 = true;
@@ -1046,12 +1029,12 @@ Connection connect(
         return _e40;
     }
     metal::float3 _e42 = c_5.y;
-    metal::float3 v_5 = x_12 - _e42;
-    float d2_7 = metal::dot(v_5, v_5);
-    metal::float3 _e49 = light_intensity(l_2, v_5 / metal::float3(metal::sqrt(d2_7)), slc_table, _buffer_sizes);
+    metal::float3 v_6 = x_11 - _e42;
+    float d2_8 = metal::dot(v_6, v_6);
+    metal::float3 _e49 = light_intensity(l_2, v_6 / metal::float3(metal::sqrt(d2_8)), slc_table, _buffer_sizes);
     float _e51 = c_5.cos_x;
     float _e54 = rt2_2[li];
-    float _e56 = connection_factor(_e51, d2_7, s * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_8, s * _e54, w_res);
     c_5.e = _e49 * _e56;
     Connection _e58 = c_5;
     return _e58;
@@ -1067,7 +1050,7 @@ metal::float4 surface_at(
 
 Shaded shade_pick(
     uint li_1,
-    metal::float3 x_13,
+    metal::float3 x_12,
     metal::float3 n_8,
     metal::float3 r_7,
     metal::float4 rl_6,
@@ -1082,7 +1065,7 @@ Shaded shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Shaded s_1 = {};
-    Connection _e12 = connect(li_1, x_13, n_8, n_8, 1.0, w_4, u1_3, u2_3, 0.0, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
+    Connection _e12 = connect(li_1, x_12, n_8, n_8, 1.0, w_4, u1_3, u2_3, 0.0, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
     s_1.e = _e12.e;
     s_1.diffuse = metal::float3(0.0);
     s_1.specular = metal::float3(0.0);
@@ -1091,10 +1074,10 @@ Shaded shade_pick(
 }
 
 Shaded add(
-    Shaded a_8,
+    Shaded a_9,
     Shaded b_6
 ) {
-    return Shaded {a_8.e + b_6.e, a_8.diffuse + b_6.diffuse, a_8.specular + b_6.specular};
+    return Shaded {a_9.e + b_6.e, a_9.diffuse + b_6.diffuse, a_9.specular + b_6.specular};
 }
 
 struct main_Input {
@@ -1146,7 +1129,7 @@ kernel void main_(
         out_tex.write(metal::float4(0.0), metal::uint2(texel_1));
         return;
     }
-    metal::float3 x_14 = _e21.xyz;
+    metal::float3 x_13 = _e21.xyz;
     metal::float3 n_10 = nn / metal::float3(metal::sqrt(len2_));
     r = n_10;
     metal::float4 _e53 = lobe;
@@ -1158,7 +1141,7 @@ kernel void main_(
     uint _e69 = pick_stream(_e68);
     h = _e69;
     metal::float3 _e79 = r;
-    Picks _e80 = bsh_collect(x_14, _e79, _e54, _e68, bsh_nodes, _buffer_sizes);
+    Picks _e80 = bsh_collect(x_13, _e79, _e54, _e68, bsh_nodes, _buffer_sizes);
     float _e83 = reservoir_weight(_e80.n, K);
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_1 = true;
@@ -1190,7 +1173,7 @@ kernel void main_(
             Material _e102 = m;
             uint _e103 = h;
             float _e104 = xi_from_bits(_e103);
-            Shaded _e105 = shade_pick(_e80.light.inner[_e99], x_14, n_10, _e101, _e54, _e102, _e83, _e94, _e104, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
+            Shaded _e105 = shade_pick(_e80.light.inner[_e99], x_13, n_10, _e101, _e54, _e102, _e83, _e94, _e104, slc_table, lights, rt2_2, r2_2, _buffer_sizes);
             Shaded _e106 = add(_e97, _e105);
             t = _e106;
         }

@@ -216,8 +216,8 @@ bool sphere_contains_point(
     float r_1,
     metal::float3 x_1
 ) {
-    metal::float3 v_4 = x_1 - c;
-    return metal::dot(v_4, v_4) <= (r_1 * r_1);
+    metal::float3 v_5 = x_1 - c;
+    return metal::dot(v_5, v_5) <= (r_1 * r_1);
 }
 
 float inverse_square(
@@ -246,11 +246,11 @@ float connection_cosine(
 ) {
     bool local_2 = {};
     bool local_3 = {};
-    metal::float3 v_5 = x_2 - y;
-    float d2_6 = metal::dot(v_5, v_5);
-    bool _e7 = slc_keep(r2_1, d2_6);
+    metal::float3 v_6 = x_2 - y;
+    float d2_7 = metal::dot(v_6, v_6);
+    bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
-        local_2 = !((d2_6 > 0.0));
+        local_2 = !((d2_7 > 0.0));
     } else {
         local_2 = true;
     }
@@ -258,7 +258,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_6 = v_5 / metal::float3(metal::sqrt(d2_6));
+    metal::float3 w_6 = v_6 / metal::float3(metal::sqrt(d2_7));
     float cos_x_1 = -(metal::dot(n, w_6));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = metal::dot(ng, w_6) >= 0.0;
@@ -598,11 +598,11 @@ metal::float4 emitter_cone(
     float cos_o,
     metal::float3 p
 ) {
-    metal::float3 v_6 = p - center;
-    float dist2_1 = metal::dot(v_6, v_6);
+    metal::float3 v_7 = p - center;
+    float dist2_1 = metal::dot(v_7, v_7);
     float r2_4 = radius * radius;
-    float d2_7 = metal::max(metal::max(dist2_1, r2_4), MIN_D2_);
-    metal::float3 wi = (dist2_1 > 0.0) ? (v_6 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
+    float d2_8 = metal::max(metal::max(dist2_1, r2_4), MIN_D2_);
+    metal::float3 wi = (dist2_1 > 0.0) ? (v_7 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
     float _e26 = subtended_cos(dist2_1, r2_4);
@@ -611,7 +611,7 @@ metal::float4 emitter_cone(
     float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
     float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
     float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return metal::float4(_e37, d2_7, _e26, _e30);
+    return metal::float4(_e37, d2_8, _e26, _e30);
 }
 
 float emitter_importance(
@@ -630,23 +630,44 @@ float emitter_importance(
     return (phi * _e7.x) / _e7.y;
 }
 
+float cone_cos_of(
+    metal::float3 v_3,
+    float d2_4,
+    float a_3,
+    metal::float3 d
+) {
+    bool local_9 = {};
+    bool local_10 = {};
+    float vd = metal::dot(v_3, d);
+    float h2_ = d2_4 - (a_3 * a_3);
+    if (!((h2_ <= 0.0))) {
+        if (vd >= 0.0) {
+            local_10 = (vd * vd) >= h2_;
+        } else {
+            local_10 = false;
+        }
+        bool _e19 = local_10;
+        local_9 = _e19;
+    } else {
+        local_9 = true;
+    }
+    bool _e21 = local_9;
+    if (_e21) {
+        return 1.0;
+    }
+    metal::float3 c_7 = metal::cross(v_3, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_7, c_7)) * a_3)) / d2_4, 1.0);
+}
+
 float cone_cos_toward(
     metal::float3 center_2,
     float radius_2,
     metal::float3 p_2,
-    metal::float3 d
+    metal::float3 d_1
 ) {
-    metal::float3 v_7 = center_2 - p_2;
-    float dist2_2 = metal::dot(v_7, v_7);
-    if (dist2_2 <= (radius_2 * radius_2)) {
-        return 1.0;
-    }
-    float dist = metal::sqrt(dist2_2);
-    metal::float3 c_7 = metal::cross(v_7, d);
-    float sin_b_2 = radius_2 / dist;
-    float _e20 = safe_sqrt(1.0 - (sin_b_2 * sin_b_2));
-    float _e21 = cos_sub_clamped(metal::sqrt(metal::dot(c_7, c_7)) / dist, metal::dot(v_7, d) / dist, sin_b_2, _e20);
-    return _e21;
+    metal::float3 v_8 = center_2 - p_2;
+    float _e6 = cone_cos_of(v_8, metal::dot(v_8, v_8), radius_2, d_1);
+    return _e6;
 }
 
 float range_scale_at(
@@ -689,9 +710,9 @@ float light_importance(
     }
     imp = (phi_1 * _e8.x) / _e8.y;
     if (metal::dot(n_4, n_4) > 0.0) {
-        metal::float3 v_8 = center_4 - p_4;
-        float dist2_3 = metal::dot(v_8, v_8);
-        float cos_i = metal::dot((dist2_3 > 0.0) ? (v_8 / metal::float3(metal::sqrt(dist2_3))) : metal::float3(0.0, 0.0, 0.0), n_4);
+        metal::float3 v_9 = center_4 - p_4;
+        float dist2_2 = metal::dot(v_9, v_9);
+        float cos_i = metal::dot((dist2_2 > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0), n_4);
         float _e33 = imp;
         float _e37 = safe_sqrt(1.0 - (cos_i * cos_i));
         float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -713,15 +734,15 @@ float glossy_importance(
     metal::float3 r_3,
     metal::float4 lobe_5
 ) {
-    bool local_9 = {};
+    bool local_11 = {};
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_5);
     if (!((_e10 <= 0.0))) {
-        local_9 = _e11 <= 0.0;
+        local_11 = _e11 <= 0.0;
     } else {
-        local_9 = true;
+        local_11 = true;
     }
-    bool _e20 = local_9;
+    bool _e20 = local_11;
     if (_e20) {
         return 0.0;
     }
@@ -736,9 +757,9 @@ float glossy_importance(
 float candidate_weight(
     float importance,
     float rt2_2,
-    float d2_4
+    float d2_5
 ) {
-    float _e3 = slc_weight(rt2_2, d2_4);
+    float _e3 = slc_weight(rt2_2, d2_5);
     return importance * _e3;
 }
 
@@ -755,31 +776,31 @@ float cone_weight(
     metal::float3 r_4,
     metal::float4 lobe_6
 ) {
-    metal::float3 v_9 = p_6 - center_6;
+    metal::float3 v_10 = p_6 - center_6;
     if (lobe_6.y <= 0.0) {
         float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6);
-        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_9, v_9));
+        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_10, v_10));
         return _e19;
     }
     float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_6, r_4, lobe_6);
-    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_9, v_9));
+    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_10, v_10));
     return _e22;
 }
 
 metal::float3 triangle_normal(
-    metal::float3 a_3,
+    metal::float3 a_4,
     metal::float3 b_3,
     metal::float3 c_3
 ) {
-    bool local_10 = {};
-    metal::float3 n_11 = metal::cross(b_3 - a_3, c_3 - a_3);
+    bool local_12 = {};
+    metal::float3 n_11 = metal::cross(b_3 - a_4, c_3 - a_4);
     float l2_ = metal::dot(n_11, n_11);
     if (!(!((l2_ > 0.0)))) {
-        local_10 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_12 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_10 = true;
+        local_12 = true;
     }
-    bool _e17 = local_10;
+    bool _e17 = local_12;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -815,7 +836,7 @@ metal::float3 light_point(
 }
 
 bool occluded(
-    metal::float3 a_4,
+    metal::float3 a_5,
     metal::float3 b_4
 ) {
     return false;
@@ -852,35 +873,15 @@ uint bsh_first(
 }
 
 float bsh_inner_scale(
-    float a_5,
-    metal::float3 v_3,
-    float d2_5,
+    float a_6,
+    metal::float3 v_4,
+    float d2_6,
     metal::float3 r_5,
     metal::float4 rl_2
 ) {
-    bool local_11 = {};
-    bool local_12 = {};
-    float vr = metal::dot(v_3, r_5);
-    float h2_ = d2_5 - (a_5 * a_5);
-    if (!((h2_ <= 0.0))) {
-        if (vr >= 0.0) {
-            local_12 = (vr * vr) >= h2_;
-        } else {
-            local_12 = false;
-        }
-        bool _e20 = local_12;
-        local_11 = _e20;
-    } else {
-        local_11 = true;
-    }
-    bool _e22 = local_11;
-    if (_e22) {
-        return rl_2.w * rl_2.w;
-    }
-    metal::float3 c_8 = metal::cross(v_3, r_5);
-    float cos_t_1 = ((vr * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_8, c_8)) * a_5)) / d2_5;
-    float _e36 = range_scale_at(rl_2, cos_t_1 + 0.000002);
-    return _e36;
+    float _e5 = cone_cos_of(v_4, d2_6, a_6, r_5);
+    float _e8 = range_scale_at(rl_2, _e5 + 0.000002);
+    return _e8;
 }
 
 bool bsh_reaches(
@@ -906,10 +907,10 @@ bool bsh_reaches(
         return false;
     }
     float _e25 = bsh_range_bound(node_2);
-    metal::float3 v_10 = x_4 - node_2.center;
-    float d2_8 = metal::dot(v_10, v_10);
+    metal::float3 v_11 = x_4 - node_2.center;
+    float d2_9 = metal::dot(v_11, v_11);
     float reach_max = node_2.extent + ((rl_3.w * 1.001) * _e25);
-    if (d2_8 > (reach_max * reach_max)) {
+    if (d2_9 > (reach_max * reach_max)) {
         return false;
     }
     if (node_2.child == BSH_NONE) {
@@ -918,11 +919,11 @@ bool bsh_reaches(
         bool _e47 = sphere_contains_point(node_2.center, _e46, x_4);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_2.extent, -(v_10), d2_8, r_6, rl_3);
+    float _e50 = bsh_inner_scale(node_2.extent, -(v_11), d2_9, r_6, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_2.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_8 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_14 = d2_8 <= (reach * reach);
+    if (d2_9 <= ((node_2.radius * node_2.radius) * s_c)) {
+        local_14 = d2_9 <= (reach * reach);
     } else {
         local_14 = false;
     }
@@ -1007,12 +1008,12 @@ Connection connect(
         return _e40;
     }
     metal::float3 _e42 = c_4.y;
-    metal::float3 v_11 = x_6 - _e42;
-    float d2_9 = metal::dot(v_11, v_11);
-    metal::float3 _e49 = light_intensity(l_4, v_11 / metal::float3(metal::sqrt(d2_9)));
+    metal::float3 v_12 = x_6 - _e42;
+    float d2_10 = metal::dot(v_12, v_12);
+    metal::float3 _e49 = light_intensity(l_4, v_12 / metal::float3(metal::sqrt(d2_10)));
     float _e51 = c_4.cos_x;
     float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_9, s * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_10, s * _e54, w_res);
     c_4.e = _e49 * _e56;
     Connection _e58 = c_4;
     return _e58;
@@ -1026,8 +1027,8 @@ float light_range_scale(
     device type_10 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_9 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_5, c_9.center, c_9.radius, x_7, r_8);
+    GpuLightCone c_8 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_5, c_8.center, c_8.radius, x_7, r_8);
     return _e9;
 }
 
@@ -1042,10 +1043,10 @@ float light_weight(
     device type_10 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_10 = light_cones[li_2];
+    GpuLightCone c_9 = light_cones[li_2];
     float _e15 = light_range_scale(li_2, x_8, r_9, rl_6, light_cones, _buffer_sizes);
     float _e18 = rt2_4[li_2];
-    float _e20 = cone_weight(c_10.center, c_10.radius, c_10.phi, c_10.axis, c_10.cos_o, c_10.cos_e, _e15 * _e18, x_8, n_8, r_9, lobe_7);
+    float _e20 = cone_weight(c_9.center, c_9.radius, c_9.phi, c_9.axis, c_9.cos_o, c_9.cos_e, _e15 * _e18, x_8, n_8, r_9, lobe_7);
     return _e20;
 }
 
@@ -1186,10 +1187,10 @@ Shaded shade_pick(
 }
 
 Shaded add(
-    Shaded a_6,
+    Shaded a_7,
     Shaded b_6
 ) {
-    return Shaded {a_6.e + b_6.e, a_6.diffuse + b_6.diffuse, a_6.specular + b_6.specular};
+    return Shaded {a_7.e + b_6.e, a_7.diffuse + b_6.diffuse, a_7.specular + b_6.specular};
 }
 
 struct main_Input {

@@ -274,8 +274,8 @@ bool sphere_contains_point(
     float r,
     metal::float3 x_2
 ) {
-    metal::float3 v_7 = x_2 - c;
-    return metal::dot(v_7, v_7) <= (r * r);
+    metal::float3 v_8 = x_2 - c;
+    return metal::dot(v_8, v_8) <= (r * r);
 }
 
 float inverse_square(
@@ -304,11 +304,11 @@ float connection_cosine(
 ) {
     bool local = {};
     bool local_1 = {};
-    metal::float3 v_8 = x_3 - y;
-    float d2_8 = metal::dot(v_8, v_8);
-    bool _e7 = slc_keep(r2_1, d2_8);
+    metal::float3 v_9 = x_3 - y;
+    float d2_9 = metal::dot(v_9, v_9);
+    bool _e7 = slc_keep(r2_1, d2_9);
     if (!(!(_e7))) {
-        local = !((d2_8 > 0.0));
+        local = !((d2_9 > 0.0));
     } else {
         local = true;
     }
@@ -316,7 +316,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_7 = v_8 / metal::float3(metal::sqrt(d2_8));
+    metal::float3 w_7 = v_9 / metal::float3(metal::sqrt(d2_9));
     float cos_x_1 = -(metal::dot(n, w_7));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = metal::dot(ng, w_7) >= 0.0;
@@ -388,15 +388,15 @@ float atan_portable(
 ) {
     float base = 0.0;
     float t = {};
-    float a_9 = metal::abs(x_4);
-    t = a_9;
-    if (a_9 > 2.4142137) {
+    float a_10 = metal::abs(x_4);
+    t = a_10;
+    if (a_10 > 2.4142137) {
         base = 1.5707964;
-        t = -1.0 / a_9;
+        t = -1.0 / a_10;
     } else {
-        if (a_9 > 0.41421357) {
+        if (a_10 > 0.41421357) {
             base = 0.7853982;
-            t = (a_9 - 1.0) / (a_9 + 1.0);
+            t = (a_10 - 1.0) / (a_10 + 1.0);
         }
     }
     float _e18 = t;
@@ -577,11 +577,11 @@ float ies_candela(
     float _e54 = ies_lerp_t(_e51, _e53, _e32);
     float _e58 = at(tab_2, (c0_ + (_e34 * _e5)) + _e33, slc_table, _buffer_sizes);
     float _e65 = at(tab_2, (c0_ + (_e34 * _e5)) + iv1_, slc_table, _buffer_sizes);
-    float a_10 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
+    float a_11 = (_e58 * (1.0 - _e49)) + (_e65 * _e49);
     float _e71 = at(tab_2, (c0_ + (ih1_ * _e5)) + _e33, slc_table, _buffer_sizes);
     float _e78 = at(tab_2, (c0_ + (ih1_ * _e5)) + iv1_, slc_table, _buffer_sizes);
     float b_7 = (_e71 * (1.0 - _e49)) + (_e78 * _e49);
-    return (a_10 * (1.0 - _e54)) + (b_7 * _e54);
+    return (a_11 * (1.0 - _e54)) + (b_7 * _e54);
 }
 
 float ies_candela_dir(
@@ -772,16 +772,16 @@ metal::float3 onb_tangent(
     metal::float3 n_8
 ) {
     float s_3 = (n_8.z >= 0.0) ? 1.0 : -1.0;
-    float a_11 = -1.0 / (s_3 + n_8.z);
-    return metal::float3(1.0 + (((s_3 * n_8.x) * n_8.x) * a_11), ((s_3 * n_8.x) * n_8.y) * a_11, -(s_3) * n_8.x);
+    float a_12 = -1.0 / (s_3 + n_8.z);
+    return metal::float3(1.0 + (((s_3 * n_8.x) * n_8.x) * a_12), ((s_3 * n_8.x) * n_8.y) * a_12, -(s_3) * n_8.x);
 }
 
 metal::float3 onb_bitangent(
     metal::float3 n_9
 ) {
     float s_4 = (n_9.z >= 0.0) ? 1.0 : -1.0;
-    float a_12 = -1.0 / (s_4 + n_9.z);
-    return metal::float3((n_9.x * n_9.y) * a_12, s_4 + ((n_9.y * n_9.y) * a_12), -(n_9.y));
+    float a_13 = -1.0 / (s_4 + n_9.z);
+    return metal::float3((n_9.x * n_9.y) * a_13, s_4 + ((n_9.y * n_9.y) * a_13), -(n_9.y));
 }
 
 metal::float3 onb_to_local(
@@ -1042,9 +1042,9 @@ float bounded_vndf_k(
     metal::float3 wi,
     float alpha_6
 ) {
-    float a_13 = metal::saturate(alpha_6);
+    float a_14 = metal::saturate(alpha_6);
     float s_5 = 1.0 + metal::sqrt((wi.x * wi.x) + (wi.y * wi.y));
-    float a2_2 = a_13 * a_13;
+    float a2_2 = a_14 * a_14;
     float s2_ = s_5 * s_5;
     return ((1.0 - a2_2) * s2_) / (s2_ + ((a2_2 * wi.z) * wi.z));
 }
@@ -1089,41 +1089,44 @@ float bsdf_pdf(
     return (p_spec * _e11) + ((1.0 - p_spec) * _e6);
 }
 
-float cos_sub_clamped(
-    float sin_a,
-    float cos_a,
-    float sin_b,
-    float cos_b
+float cone_cos_of(
+    metal::float3 v_5,
+    float d2_7,
+    float a_5,
+    metal::float3 d
 ) {
-    if (cos_a > cos_b) {
+    bool local_12 = {};
+    bool local_13 = {};
+    float vd = metal::dot(v_5, d);
+    float h2_ = d2_7 - (a_5 * a_5);
+    if (!((h2_ <= 0.0))) {
+        if (vd >= 0.0) {
+            local_13 = (vd * vd) >= h2_;
+        } else {
+            local_13 = false;
+        }
+        bool _e19 = local_13;
+        local_12 = _e19;
+    } else {
+        local_12 = true;
+    }
+    bool _e21 = local_12;
+    if (_e21) {
         return 1.0;
     }
-    return (cos_a * cos_b) + (sin_a * sin_b);
-}
-
-float safe_sqrt(
-    float x_8
-) {
-    return metal::sqrt(metal::max(x_8, 0.0));
+    metal::float3 c_12 = metal::cross(v_5, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_12, c_12)) * a_5)) / d2_7, 1.0);
 }
 
 float cone_cos_toward(
     metal::float3 center,
     float radius,
     metal::float3 p,
-    metal::float3 d
+    metal::float3 d_1
 ) {
-    metal::float3 v_9 = center - p;
-    float dist2_ = metal::dot(v_9, v_9);
-    if (dist2_ <= (radius * radius)) {
-        return 1.0;
-    }
-    float dist = metal::sqrt(dist2_);
-    metal::float3 c_12 = metal::cross(v_9, d);
-    float sin_b_1 = radius / dist;
-    float _e20 = safe_sqrt(1.0 - (sin_b_1 * sin_b_1));
-    float _e21 = cos_sub_clamped(metal::sqrt(metal::dot(c_12, c_12)) / dist, metal::dot(v_9, d) / dist, sin_b_1, _e20);
-    return _e21;
+    metal::float3 v_10 = center - p;
+    float _e6 = cone_cos_of(v_10, metal::dot(v_10, v_10), radius, d_1);
+    return _e6;
 }
 
 float range_scale_at(
@@ -1156,17 +1159,17 @@ float shadow_margin(
 }
 
 float ray_inverse(
-    float x_9
+    float x_8
 ) {
-    return 1.0 / ((metal::abs(x_9) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_9);
+    return 1.0 / ((metal::abs(x_8) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_8);
 }
 
 metal::float3 ray_inverse3_(
-    metal::float3 d_1
+    metal::float3 d_2
 ) {
-    float _e2 = ray_inverse(d_1.x);
-    float _e4 = ray_inverse(d_1.y);
-    float _e6 = ray_inverse(d_1.z);
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
     return metal::float3(_e2, _e4, _e6);
 }
 
@@ -1190,19 +1193,19 @@ float ray_aabb(
 }
 
 metal::float3 triangle_normal(
-    metal::float3 a_5,
+    metal::float3 a_6,
     metal::float3 b_4,
     metal::float3 c_5
 ) {
-    bool local_12 = {};
-    metal::float3 n_19 = metal::cross(b_4 - a_5, c_5 - a_5);
+    bool local_14 = {};
+    metal::float3 n_19 = metal::cross(b_4 - a_6, c_5 - a_6);
     float l2_ = metal::dot(n_19, n_19);
     if (!(!((l2_ > 0.0)))) {
-        local_12 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_14 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_12 = true;
+        local_14 = true;
     }
-    bool _e17 = local_12;
+    bool _e17 = local_14;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -1211,53 +1214,53 @@ metal::float3 triangle_normal(
 
 float ray_triangle(
     metal::float3 o_1,
-    metal::float3 d_2,
-    metal::float3 a_6,
+    metal::float3 d_3,
+    metal::float3 a_7,
     metal::float3 b_5,
     metal::float3 c_6,
     float t_min,
     float t_max_1
 ) {
-    bool local_13 = {};
-    bool local_14 = {};
     bool local_15 = {};
-    metal::float3 e1_ = b_5 - a_6;
-    metal::float3 e2_ = c_6 - a_6;
-    metal::float3 p_2 = metal::cross(d_2, e2_);
+    bool local_16 = {};
+    bool local_17 = {};
+    metal::float3 e1_ = b_5 - a_7;
+    metal::float3 e2_ = c_6 - a_7;
+    metal::float3 p_2 = metal::cross(d_3, e2_);
     float det = metal::dot(e1_, p_2);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv_1 = 1.0 / det;
-    metal::float3 s_6 = o_1 - a_6;
+    metal::float3 s_6 = o_1 - a_7;
     float u_2 = metal::dot(s_6, p_2) * inv_1;
     if (!((u_2 < 0.0))) {
-        local_13 = u_2 > 1.0;
+        local_15 = u_2 > 1.0;
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    bool _e28 = local_13;
+    bool _e28 = local_15;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q = metal::cross(s_6, e1_);
-    float v_10 = metal::dot(d_2, q) * inv_1;
-    if (!((v_10 < 0.0))) {
-        local_14 = (u_2 + v_10) > 1.0;
+    float v_11 = metal::dot(d_3, q) * inv_1;
+    if (!((v_11 < 0.0))) {
+        local_16 = (u_2 + v_11) > 1.0;
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    bool _e42 = local_14;
+    bool _e42 = local_16;
     if (_e42) {
         return -1.0;
     }
     float t_5 = metal::dot(e2_, q) * inv_1;
     if (t_5 > t_min) {
-        local_15 = t_5 < t_max_1;
+        local_17 = t_5 < t_max_1;
     } else {
-        local_15 = false;
+        local_17 = false;
     }
-    bool _e51 = local_15;
+    bool _e51 = local_17;
     if (_e51) {
         return t_5;
     }
@@ -1265,22 +1268,22 @@ float ray_triangle(
 }
 
 bool finite3_(
-    metal::float3 v_5
+    metal::float3 v_6
 ) {
-    bool local_16 = {};
-    bool local_17 = {};
-    if (metal::abs(v_5.x) <= F32_MAX) {
-        local_16 = metal::abs(v_5.y) <= F32_MAX;
+    bool local_18 = {};
+    bool local_19 = {};
+    if (metal::abs(v_6.x) <= F32_MAX) {
+        local_18 = metal::abs(v_6.y) <= F32_MAX;
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    bool _e12 = local_16;
+    bool _e12 = local_18;
     if (_e12) {
-        local_17 = metal::abs(v_5.z) <= F32_MAX;
+        local_19 = metal::abs(v_6.z) <= F32_MAX;
     } else {
-        local_17 = false;
+        local_19 = false;
     }
-    bool _e20 = local_17;
+    bool _e20 = local_19;
     return _e20;
 }
 
@@ -1350,7 +1353,7 @@ metal::float3 light_normal(
 
 GeoHit trace(
     metal::float3 o_2,
-    metal::float3 d_3,
+    metal::float3 d_4,
     float t_min_1,
     float t_max_2,
     bool any_hit,
@@ -1369,7 +1372,7 @@ GeoHit trace(
         GeoHit _e13 = hit;
         return _e13;
     }
-    metal::float3 _e14 = ray_inverse3_(d_3);
+    metal::float3 _e14 = ray_inverse3_(d_4);
     uint2 loop_bound_1 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
@@ -1400,7 +1403,7 @@ GeoHit trace(
                         uint _e42 = i_1;
                         GpuTriangle t_6 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_3, t_6.v0_, t_6.v1_, t_6.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_6.v0_, t_6.v1_, t_6.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i_1;
@@ -1439,19 +1442,19 @@ GeoHit trace(
 }
 
 bool occluded(
-    metal::float3 a_7,
+    metal::float3 a_8,
     metal::float3 b_6,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 dv = b_6 - a_7;
+    metal::float3 dv = b_6 - a_8;
     float len_1 = metal::length(dv);
     if (len_1 <= 0.0) {
         return false;
     }
     float _e7 = shadow_margin(len_1);
-    GeoHit _e12 = trace(a_7, dv / metal::float3(len_1), _e7, len_1 - _e7, true, geo_nodes, geo_tris, _buffer_sizes);
+    GeoHit _e12 = trace(a_8, dv / metal::float3(len_1), _e7, len_1 - _e7, true, geo_nodes, geo_tris, _buffer_sizes);
     return _e12.tri != NO_LIGHT;
 }
 
@@ -1486,51 +1489,31 @@ uint bsh_first(
 }
 
 float bsh_inner_scale(
-    float a_8,
-    metal::float3 v_6,
-    float d2_7,
+    float a_9,
+    metal::float3 v_7,
+    float d2_8,
     metal::float3 r_2,
     metal::float4 rl_2
 ) {
-    bool local_18 = {};
-    bool local_19 = {};
-    float vr = metal::dot(v_6, r_2);
-    float h2_ = d2_7 - (a_8 * a_8);
-    if (!((h2_ <= 0.0))) {
-        if (vr >= 0.0) {
-            local_19 = (vr * vr) >= h2_;
-        } else {
-            local_19 = false;
-        }
-        bool _e20 = local_19;
-        local_18 = _e20;
-    } else {
-        local_18 = true;
-    }
-    bool _e22 = local_18;
-    if (_e22) {
-        return rl_2.w * rl_2.w;
-    }
-    metal::float3 c_13 = metal::cross(v_6, r_2);
-    float cos_t_1 = ((vr * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_13, c_13)) * a_8)) / d2_7;
-    float _e36 = range_scale_at(rl_2, cos_t_1 + 0.000002);
-    return _e36;
+    float _e5 = cone_cos_of(v_7, d2_8, a_9, r_2);
+    float _e8 = range_scale_at(rl_2, _e5 + 0.000002);
+    return _e8;
 }
 
 bool bsh_reaches(
     BshNode node_3,
-    metal::float3 x_10,
+    metal::float3 x_9,
     metal::float3 r_3,
     metal::float4 rl_3
 ) {
     bool local_20 = {};
     bool local_21 = {};
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_10);
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_9);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_10);
+        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_3.w * 1.0001), x_9);
         local_20 = !(_e20);
     } else {
         local_20 = true;
@@ -1540,23 +1523,23 @@ bool bsh_reaches(
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_11 = x_10 - node_3.center;
-    float d2_9 = metal::dot(v_11, v_11);
+    metal::float3 v_12 = x_9 - node_3.center;
+    float d2_10 = metal::dot(v_12, v_12);
     float reach_max = node_3.extent + ((rl_3.w * 1.001) * _e25);
-    if (d2_9 > (reach_max * reach_max)) {
+    if (d2_10 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_10, r_3);
+        float _e43 = range_scale_toward(rl_3, node_3.center, node_3.extent, x_9, r_3);
         float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_10);
+        bool _e47 = sphere_contains_point(node_3.center, _e46, x_9);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_11), d2_9, r_3, rl_3);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_12), d2_10, r_3, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_9 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_21 = d2_9 <= (reach * reach);
+    if (d2_10 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_21 = d2_10 <= (reach * reach);
     } else {
         local_21 = false;
     }
@@ -1567,7 +1550,7 @@ bool bsh_reaches(
 uint bsh_next_leaf_lobe(
     BshNodes nodes_3,
     uint start_1,
-    metal::float3 x_11,
+    metal::float3 x_10,
     metal::float3 r_4,
     metal::float4 rl_4,
     device type_10 const& bsh_nodes,
@@ -1587,7 +1570,7 @@ uint bsh_next_leaf_lobe(
         {
             uint _e9 = i_3;
             BshNode _e10 = bsh_node(nodes_3, _e9, bsh_nodes, _buffer_sizes);
-            bool _e11 = bsh_reaches(_e10, x_11, r_4, rl_4);
+            bool _e11 = bsh_reaches(_e10, x_10, r_4, rl_4);
             if (_e11) {
                 if (_e10.child == BSH_NONE) {
                     uint _e15 = i_3;
@@ -1603,7 +1586,7 @@ uint bsh_next_leaf_lobe(
 }
 
 Picks bsh_collect(
-    metal::float3 x_12,
+    metal::float3 x_11,
     metal::float3 r_5,
     metal::float4 rl_5,
     uint seed_1,
@@ -1616,7 +1599,7 @@ Picks bsh_collect(
     picks.n = 0u;
     h_1 = seed_1;
     uint _e10 = bsh_first(BSH, bsh_nodes, _buffer_sizes);
-    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_12, r_5, rl_5, bsh_nodes, _buffer_sizes);
+    uint _e11 = bsh_next_leaf_lobe(BSH, _e10, x_11, r_5, rl_5, bsh_nodes, _buffer_sizes);
     i_4 = _e11;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_1 = true;
@@ -1626,7 +1609,7 @@ Picks bsh_collect(
         if (!loop_init_1) {
             uint _e44 = i_4;
             uint _e47 = bsh_nodes[_e44].next;
-            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_12, r_5, rl_5, bsh_nodes, _buffer_sizes);
+            uint _e48 = bsh_next_leaf_lobe(BSH, _e47, x_11, r_5, rl_5, bsh_nodes, _buffer_sizes);
             i_4 = _e48;
         }
         loop_init_1 = false;
@@ -1665,7 +1648,7 @@ Picks bsh_collect(
 
 Connection connect(
     uint li,
-    metal::float3 x_13,
+    metal::float3 x_12,
     metal::float3 n_15,
     metal::float3 ng_1,
     float s_1,
@@ -1689,12 +1672,12 @@ Connection connect(
     c_7.y = _e17;
     metal::float3 _e20 = c_7.y;
     float _e23 = r2_2[li];
-    float _e25 = connection_cosine(x_13, _e20, n_15, ng_1, s_1 * _e23);
+    float _e25 = connection_cosine(x_12, _e20, n_15, ng_1, s_1 * _e23);
     c_7.cos_x = _e25;
     float _e27 = c_7.cos_x;
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_7.y;
-        bool _e37 = occluded(x_13 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
+        bool _e37 = occluded(x_12 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
         local_22 = _e37;
     } else {
         local_22 = true;
@@ -1705,12 +1688,12 @@ Connection connect(
         return _e40;
     }
     metal::float3 _e42 = c_7.y;
-    metal::float3 v_12 = x_13 - _e42;
-    float d2_10 = metal::dot(v_12, v_12);
-    metal::float3 _e49 = light_intensity(l_8, v_12 / metal::float3(metal::sqrt(d2_10)), slc_table, _buffer_sizes);
+    metal::float3 v_13 = x_12 - _e42;
+    float d2_11 = metal::dot(v_13, v_13);
+    metal::float3 _e49 = light_intensity(l_8, v_13 / metal::float3(metal::sqrt(d2_11)), slc_table, _buffer_sizes);
     float _e51 = c_7.cos_x;
     float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_10, s_1 * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_11, s_1 * _e54, w_res);
     c_7.e = _e49 * _e56;
     Connection _e58 = c_7;
     return _e58;
@@ -1726,20 +1709,20 @@ float mis_weight(
 
 float light_range_scale(
     uint li_1,
-    metal::float3 x_14,
+    metal::float3 x_13,
     metal::float3 r_6,
     metal::float4 rl_6,
     device type_12 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuLightCone c_14 = light_cones[li_1];
-    float _e9 = range_scale_toward(rl_6, c_14.center, c_14.radius, x_14, r_6);
+    GpuLightCone c_13 = light_cones[li_1];
+    float _e9 = range_scale_toward(rl_6, c_13.center, c_13.radius, x_13, r_6);
     return _e9;
 }
 
 float select_pdf(
     uint li_2,
-    metal::float3 x_15,
+    metal::float3 x_14,
     metal::float3 n_16,
     metal::float3 r_7,
     metal::float4 lobe_5,
@@ -1753,7 +1736,7 @@ float select_pdf(
 
 float light_pdf_selected(
     uint li_3,
-    metal::float3 x_16,
+    metal::float3 x_15,
     metal::float3 r_8,
     metal::float4 rl_8,
     metal::float3 y_2,
@@ -1764,20 +1747,20 @@ float light_pdf_selected(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_9 = lights[li_3];
-    metal::float3 v_13 = x_16 - y_2;
-    float d2_11 = metal::dot(v_13, v_13);
+    metal::float3 v_14 = x_15 - y_2;
+    float d2_12 = metal::dot(v_14, v_14);
     metal::float3 _e11 = light_normal(l_9);
-    float cos_y_1 = (d2_11 > 0.0) ? metal::dot(_e11, v_13 / metal::float3(metal::sqrt(d2_11))) : 0.0;
-    float _e20 = light_range_scale(li_3, x_16, r_8, rl_8, light_cones, _buffer_sizes);
+    float cos_y_1 = (d2_12 > 0.0) ? metal::dot(_e11, v_14 / metal::float3(metal::sqrt(d2_12))) : 0.0;
+    float _e20 = light_range_scale(li_3, x_15, r_8, rl_8, light_cones, _buffer_sizes);
     float _e23 = rt2_4[li_3];
     float _e25 = light_area(l_9);
-    float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_11, _e25, cos_y_1);
+    float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_12, _e25, cos_y_1);
     return _e26;
 }
 
 float light_pdf(
     uint li_4,
-    metal::float3 x_17,
+    metal::float3 x_16,
     metal::float3 n_17,
     metal::float3 r_9,
     metal::float4 lobe_6,
@@ -1790,14 +1773,14 @@ float light_pdf(
     device type_12 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e9 = select_pdf(li_4, x_17, n_17, r_9, lobe_6, rl_9, nee_1, in_range_2);
-    float _e10 = light_pdf_selected(li_4, x_17, r_9, rl_9, y_3, _e9, lights, rt2_4, light_cones, _buffer_sizes);
+    float _e9 = select_pdf(li_4, x_16, n_17, r_9, lobe_6, rl_9, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_4, x_16, r_9, rl_9, y_3, _e9, lights, rt2_4, light_cones, _buffer_sizes);
     return _e10;
 }
 
 metal::float3 shade_pick(
     uint li_5,
-    metal::float3 x_18,
+    metal::float3 x_17,
     metal::float3 n_18,
     metal::float3 ng_2,
     GpuMaterial m,
@@ -1820,17 +1803,17 @@ metal::float3 shade_pick(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float mis = 1.0;
-    float _e13 = light_range_scale(li_5, x_18, r_10, rl_10, light_cones, _buffer_sizes);
+    float _e13 = light_range_scale(li_5, x_17, r_10, rl_10, light_cones, _buffer_sizes);
     float _e16 = params.eps;
-    Connection _e17 = connect(li_5, x_18, n_18, ng_2, _e13, w_6, u1_3, u2_3, _e16, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_4, _buffer_sizes);
+    Connection _e17 = connect(li_5, x_17, n_18, ng_2, _e13, w_6, u1_3, u2_3, _e16, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_4, _buffer_sizes);
     if (_e17.cos_x <= 0.0) {
         return metal::float3(0.0);
     }
-    metal::float3 l_10 = metal::normalize(_e17.y - x_18);
+    metal::float3 l_10 = metal::normalize(_e17.y - x_17);
     GpuLight _e30 = lights[li_5];
     float _e31 = light_area(_e30);
     if (_e31 > 0.0) {
-        float _e36 = light_pdf(li_5, x_18, n_18, r_10, lobe_7, rl_10, _e17.y, nee_2, true, lights, rt2_4, light_cones, _buffer_sizes);
+        float _e36 = light_pdf(li_5, x_17, n_18, r_10, lobe_7, rl_10, _e17.y, nee_2, true, lights, rt2_4, light_cones, _buffer_sizes);
         float _e38 = specular_probability(lobe_7);
         float _e39 = bsdf_pdf(n_18, wo_1, l_10, m.alpha, _e38);
         float _e40 = mis_weight(_e36, _e39);
@@ -1873,7 +1856,7 @@ kernel void main_(
         candidates[i_5] = 0u;
         return;
     }
-    metal::float3 x_19 = vtx.position;
+    metal::float3 x_18 = vtx.position;
     metal::float3 n_21 = vtx.normal;
     metal::float3 ng_3 = vtx.gnormal;
     GpuMaterial m_2 = materials[vtx.material];
@@ -1886,7 +1869,7 @@ kernel void main_(
     uint _e38 = point_stream(_e34, i_5, _e37);
     uint _e39 = pick_stream(_e38);
     h = _e39;
-    Picks _e44 = bsh_collect(x_19, _e23, _e31, _e38, bsh_nodes, _buffer_sizes);
+    Picks _e44 = bsh_collect(x_18, _e23, _e31, _e38, bsh_nodes, _buffer_sizes);
     candidates[i_5] = _e44.n;
     float _e50 = reservoir_weight(_e44.n, K);
     uint2 loop_bound_5 = uint2(4294967295u);
@@ -1917,7 +1900,7 @@ kernel void main_(
             uint _e66 = s;
             uint _e69 = h;
             float _e70 = xi_from_bits(_e69);
-            metal::float3 _e71 = shade_pick(_e44.light.inner[_e66], x_19, n_21, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_4, light_cones, params, _buffer_sizes);
+            metal::float3 _e71 = shade_pick(_e44.light.inner[_e66], x_18, n_21, ng_3, m_2, wo_2, _e23, _e30, _e31, _e50, _e44.n, _e61, _e70, slc_table, geo_nodes, geo_tris, lights, r2_2, rt2_4, light_cones, params, _buffer_sizes);
             sum = _e64 + _e71;
         }
     }

@@ -266,11 +266,11 @@ float connection_cosine(
 ) {
     bool local = {};
     bool local_1 = {};
-    metal::float3 v_6 = x_1 - y;
-    float d2_7 = metal::dot(v_6, v_6);
-    bool _e7 = slc_keep(r2_1, d2_7);
+    metal::float3 v_7 = x_1 - y;
+    float d2_8 = metal::dot(v_7, v_7);
+    bool _e7 = slc_keep(r2_1, d2_8);
     if (!(!(_e7))) {
-        local = !((d2_7 > 0.0));
+        local = !((d2_8 > 0.0));
     } else {
         local = true;
     }
@@ -278,7 +278,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_5 = v_6 / metal::float3(metal::sqrt(d2_7));
+    metal::float3 w_5 = v_7 / metal::float3(metal::sqrt(d2_8));
     float cos_x_1 = -(metal::dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
         local_1 = metal::dot(ng, w_5) >= 0.0;
@@ -376,16 +376,16 @@ metal::float3 onb_tangent(
     metal::float3 n_2
 ) {
     float s_2 = (n_2.z >= 0.0) ? 1.0 : -1.0;
-    float a_6 = -1.0 / (s_2 + n_2.z);
-    return metal::float3(1.0 + (((s_2 * n_2.x) * n_2.x) * a_6), ((s_2 * n_2.x) * n_2.y) * a_6, -(s_2) * n_2.x);
+    float a_7 = -1.0 / (s_2 + n_2.z);
+    return metal::float3(1.0 + (((s_2 * n_2.x) * n_2.x) * a_7), ((s_2 * n_2.x) * n_2.y) * a_7, -(s_2) * n_2.x);
 }
 
 metal::float3 onb_bitangent(
     metal::float3 n_3
 ) {
     float s_3 = (n_3.z >= 0.0) ? 1.0 : -1.0;
-    float a_7 = -1.0 / (s_3 + n_3.z);
-    return metal::float3((n_3.x * n_3.y) * a_7, s_3 + ((n_3.y * n_3.y) * a_7), -(n_3.y));
+    float a_8 = -1.0 / (s_3 + n_3.z);
+    return metal::float3((n_3.x * n_3.y) * a_8, s_3 + ((n_3.y * n_3.y) * a_8), -(n_3.y));
 }
 
 metal::float3 onb_to_local(
@@ -646,9 +646,9 @@ float bounded_vndf_k(
     metal::float3 wi,
     float alpha_6
 ) {
-    float a_8 = metal::saturate(alpha_6);
+    float a_9 = metal::saturate(alpha_6);
     float s_4 = 1.0 + metal::sqrt((wi.x * wi.x) + (wi.y * wi.y));
-    float a2_3 = a_8 * a_8;
+    float a2_3 = a_9 * a_9;
     float s2_ = s_4 * s_4;
     return ((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z));
 }
@@ -738,11 +738,11 @@ metal::float4 emitter_cone(
     float cos_o,
     metal::float3 p
 ) {
-    metal::float3 v_7 = p - center;
-    float dist2_1 = metal::dot(v_7, v_7);
+    metal::float3 v_8 = p - center;
+    float dist2_1 = metal::dot(v_8, v_8);
     float r2_4 = radius * radius;
-    float d2_8 = metal::max(metal::max(dist2_1, r2_4), MIN_D2_);
-    metal::float3 wi_2 = (dist2_1 > 0.0) ? (v_7 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
+    float d2_9 = metal::max(metal::max(dist2_1, r2_4), MIN_D2_);
+    metal::float3 wi_2 = (dist2_1 > 0.0) ? (v_8 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi_2);
     float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
     float _e26 = subtended_cos(dist2_1, r2_4);
@@ -751,7 +751,7 @@ metal::float4 emitter_cone(
     float _e35 = cos_sub_clamped(_e25, cos_w, _e34, cos_o);
     float _e36 = sin_sub_clamped(_e25, cos_w, _e34, cos_o);
     float _e37 = cos_sub_clamped(_e36, _e35, _e30, _e26);
-    return metal::float4(_e37, d2_8, _e26, _e30);
+    return metal::float4(_e37, d2_9, _e26, _e30);
 }
 
 float emitter_importance(
@@ -770,23 +770,44 @@ float emitter_importance(
     return (phi * _e7.x) / _e7.y;
 }
 
+float cone_cos_of(
+    metal::float3 v_5,
+    float d2_7,
+    float a_3,
+    metal::float3 d
+) {
+    bool local_10 = {};
+    bool local_11 = {};
+    float vd = metal::dot(v_5, d);
+    float h2_ = d2_7 - (a_3 * a_3);
+    if (!((h2_ <= 0.0))) {
+        if (vd >= 0.0) {
+            local_11 = (vd * vd) >= h2_;
+        } else {
+            local_11 = false;
+        }
+        bool _e19 = local_11;
+        local_10 = _e19;
+    } else {
+        local_10 = true;
+    }
+    bool _e21 = local_10;
+    if (_e21) {
+        return 1.0;
+    }
+    metal::float3 c_8 = metal::cross(v_5, d);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_8, c_8)) * a_3)) / d2_7, 1.0);
+}
+
 float cone_cos_toward(
     metal::float3 center_2,
     float radius_2,
     metal::float3 p_2,
-    metal::float3 d
+    metal::float3 d_1
 ) {
-    metal::float3 v_8 = center_2 - p_2;
-    float dist2_2 = metal::dot(v_8, v_8);
-    if (dist2_2 <= (radius_2 * radius_2)) {
-        return 1.0;
-    }
-    float dist = metal::sqrt(dist2_2);
-    metal::float3 c_8 = metal::cross(v_8, d);
-    float sin_b_2 = radius_2 / dist;
-    float _e20 = safe_sqrt(1.0 - (sin_b_2 * sin_b_2));
-    float _e21 = cos_sub_clamped(metal::sqrt(metal::dot(c_8, c_8)) / dist, metal::dot(v_8, d) / dist, sin_b_2, _e20);
-    return _e21;
+    metal::float3 v_9 = center_2 - p_2;
+    float _e6 = cone_cos_of(v_9, metal::dot(v_9, v_9), radius_2, d_1);
+    return _e6;
 }
 
 float range_scale_at(
@@ -829,9 +850,9 @@ float light_importance(
     }
     imp = (phi_1 * _e8.x) / _e8.y;
     if (metal::dot(n_9, n_9) > 0.0) {
-        metal::float3 v_9 = center_4 - p_4;
-        float dist2_3 = metal::dot(v_9, v_9);
-        float cos_i = metal::dot((dist2_3 > 0.0) ? (v_9 / metal::float3(metal::sqrt(dist2_3))) : metal::float3(0.0, 0.0, 0.0), n_9);
+        metal::float3 v_10 = center_4 - p_4;
+        float dist2_2 = metal::dot(v_10, v_10);
+        float cos_i = metal::dot((dist2_2 > 0.0) ? (v_10 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0), n_9);
         float _e33 = imp;
         float _e37 = safe_sqrt(1.0 - (cos_i * cos_i));
         float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -853,15 +874,15 @@ float glossy_importance(
     metal::float3 r_1,
     metal::float4 lobe_5
 ) {
-    bool local_10 = {};
+    bool local_12 = {};
     float _e10 = emitter_importance(center_5, radius_5, phi_2, axis_3, cos_o_3, cos_e_2, p_5);
     float _e11 = cone_cos_toward(center_5, radius_5, p_5, n_10);
     if (!((_e10 <= 0.0))) {
-        local_10 = _e11 <= 0.0;
+        local_12 = _e11 <= 0.0;
     } else {
-        local_10 = true;
+        local_12 = true;
     }
-    bool _e20 = local_10;
+    bool _e20 = local_12;
     if (_e20) {
         return 0.0;
     }
@@ -928,11 +949,11 @@ float ray_inverse(
 }
 
 metal::float3 ray_inverse3_(
-    metal::float3 d_1
+    metal::float3 d_2
 ) {
-    float _e2 = ray_inverse(d_1.x);
-    float _e4 = ray_inverse(d_1.y);
-    float _e6 = ray_inverse(d_1.z);
+    float _e2 = ray_inverse(d_2.x);
+    float _e4 = ray_inverse(d_2.y);
+    float _e6 = ray_inverse(d_2.z);
     return metal::float3(_e2, _e4, _e6);
 }
 
@@ -956,19 +977,19 @@ float ray_aabb(
 }
 
 metal::float3 triangle_normal(
-    metal::float3 a_3,
+    metal::float3 a_4,
     metal::float3 b_3,
     metal::float3 c_2
 ) {
-    bool local_11 = {};
-    metal::float3 n_17 = metal::cross(b_3 - a_3, c_2 - a_3);
+    bool local_13 = {};
+    metal::float3 n_17 = metal::cross(b_3 - a_4, c_2 - a_4);
     float l2_ = metal::dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
-        local_11 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_13 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_11 = true;
+        local_13 = true;
     }
-    bool _e17 = local_11;
+    bool _e17 = local_13;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -977,53 +998,53 @@ metal::float3 triangle_normal(
 
 float ray_triangle(
     metal::float3 o_1,
-    metal::float3 d_2,
-    metal::float3 a_4,
+    metal::float3 d_3,
+    metal::float3 a_5,
     metal::float3 b_4,
     metal::float3 c_3,
     float t_min,
     float t_max_1
 ) {
-    bool local_12 = {};
-    bool local_13 = {};
     bool local_14 = {};
-    metal::float3 e1_ = b_4 - a_4;
-    metal::float3 e2_ = c_3 - a_4;
-    metal::float3 p_7 = metal::cross(d_2, e2_);
+    bool local_15 = {};
+    bool local_16 = {};
+    metal::float3 e1_ = b_4 - a_5;
+    metal::float3 e2_ = c_3 - a_5;
+    metal::float3 p_7 = metal::cross(d_3, e2_);
     float det = metal::dot(e1_, p_7);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv_1 = 1.0 / det;
-    metal::float3 s_6 = o_1 - a_4;
+    metal::float3 s_6 = o_1 - a_5;
     float u_3 = metal::dot(s_6, p_7) * inv_1;
     if (!((u_3 < 0.0))) {
-        local_12 = u_3 > 1.0;
+        local_14 = u_3 > 1.0;
     } else {
-        local_12 = true;
+        local_14 = true;
     }
-    bool _e28 = local_12;
+    bool _e28 = local_14;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q = metal::cross(s_6, e1_);
-    float v_10 = metal::dot(d_2, q) * inv_1;
-    if (!((v_10 < 0.0))) {
-        local_13 = (u_3 + v_10) > 1.0;
+    float v_11 = metal::dot(d_3, q) * inv_1;
+    if (!((v_11 < 0.0))) {
+        local_15 = (u_3 + v_11) > 1.0;
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    bool _e42 = local_13;
+    bool _e42 = local_15;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_, q) * inv_1;
     if (t_3 > t_min) {
-        local_14 = t_3 < t_max_1;
+        local_16 = t_3 < t_max_1;
     } else {
-        local_14 = false;
+        local_16 = false;
     }
-    bool _e51 = local_14;
+    bool _e51 = local_16;
     if (_e51) {
         return t_3;
     }
@@ -1031,22 +1052,22 @@ float ray_triangle(
 }
 
 bool finite3_(
-    metal::float3 v_5
+    metal::float3 v_6
 ) {
-    bool local_15 = {};
-    bool local_16 = {};
-    if (metal::abs(v_5.x) <= F32_MAX) {
-        local_15 = metal::abs(v_5.y) <= F32_MAX;
+    bool local_17 = {};
+    bool local_18 = {};
+    if (metal::abs(v_6.x) <= F32_MAX) {
+        local_17 = metal::abs(v_6.y) <= F32_MAX;
     } else {
-        local_15 = false;
+        local_17 = false;
     }
-    bool _e12 = local_15;
+    bool _e12 = local_17;
     if (_e12) {
-        local_16 = metal::abs(v_5.z) <= F32_MAX;
+        local_18 = metal::abs(v_6.z) <= F32_MAX;
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    bool _e20 = local_16;
+    bool _e20 = local_18;
     return _e20;
 }
 
@@ -1099,7 +1120,7 @@ metal::float3 light_normal(
 
 GeoHit trace(
     metal::float3 o_2,
-    metal::float3 d_3,
+    metal::float3 d_4,
     float t_min_1,
     float t_max_2,
     bool any_hit,
@@ -1118,7 +1139,7 @@ GeoHit trace(
         GeoHit _e13 = hit;
         return _e13;
     }
-    metal::float3 _e14 = ray_inverse3_(d_3);
+    metal::float3 _e14 = ray_inverse3_(d_4);
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
@@ -1149,7 +1170,7 @@ GeoHit trace(
                         uint _e42 = i;
                         GpuTriangle t_4 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_3, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -1188,19 +1209,19 @@ GeoHit trace(
 }
 
 bool occluded(
-    metal::float3 a_5,
+    metal::float3 a_6,
     metal::float3 b_5,
     device type_6 const& geo_nodes,
     device type_7 const& geo_tris,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 dv = b_5 - a_5;
+    metal::float3 dv = b_5 - a_6;
     float len_1 = metal::length(dv);
     if (len_1 <= 0.0) {
         return false;
     }
     float _e7 = shadow_margin(len_1);
-    GeoHit _e12 = trace(a_5, dv / metal::float3(len_1), _e7, len_1 - _e7, true, geo_nodes, geo_tris, _buffer_sizes);
+    GeoHit _e12 = trace(a_6, dv / metal::float3(len_1), _e7, len_1 - _e7, true, geo_nodes, geo_tris, _buffer_sizes);
     return _e12.tri != NO_LIGHT;
 }
 
@@ -1222,7 +1243,7 @@ Connection connect(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_4 = {};
-    bool local_17 = {};
+    bool local_19 = {};
     c_4.e = metal::float3(0.0);
     GpuLight l_8 = lights[li];
     metal::float3 _e17 = light_point(l_8, u1_2, u2_2);
@@ -1235,22 +1256,22 @@ Connection connect(
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_4.y;
         bool _e37 = occluded(x_4 + (ng_1 * eps), _e36, geo_nodes, geo_tris, _buffer_sizes);
-        local_17 = _e37;
+        local_19 = _e37;
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    bool _e39 = local_17;
+    bool _e39 = local_19;
     if (_e39) {
         Connection _e40 = c_4;
         return _e40;
     }
     metal::float3 _e42 = c_4.y;
-    metal::float3 v_11 = x_4 - _e42;
-    float d2_9 = metal::dot(v_11, v_11);
-    metal::float3 _e49 = light_intensity(l_8, v_11 / metal::float3(metal::sqrt(d2_9)));
+    metal::float3 v_12 = x_4 - _e42;
+    float d2_10 = metal::dot(v_12, v_12);
+    metal::float3 _e49 = light_intensity(l_8, v_12 / metal::float3(metal::sqrt(d2_10)));
     float _e51 = c_4.cos_x;
     float _e54 = rt2_4[li];
-    float _e56 = connection_factor(_e51, d2_9, s * _e54, w_res);
+    float _e56 = connection_factor(_e51, d2_10, s * _e54, w_res);
     c_4.e = _e49 * _e56;
     Connection _e58 = c_4;
     return _e58;
@@ -1320,16 +1341,16 @@ float bvh_first(
     device type_11 const& light_bvh,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    bool local_18 = {};
+    bool local_20 = {};
     GpuLightBvhNode _e6 = light_bvh_node(nodes_3, i_3, light_bvh, _buffer_sizes);
     uint j = _e6.second;
     if (!((j <= (i_3 + 1u)))) {
         uint _e14 = light_bvh_count(nodes_3, light_bvh, _buffer_sizes);
-        local_18 = j >= _e14;
+        local_20 = j >= _e14;
     } else {
-        local_18 = true;
+        local_20 = true;
     }
-    bool _e17 = local_18;
+    bool _e17 = local_20;
     if (_e17) {
         return -1.0;
     }
@@ -1358,7 +1379,7 @@ BvhPick light_bvh_sample(
     float u_2 = {};
     uint i_4 = 0u;
     float pmf = 1.0;
-    bool local_19 = {};
+    bool local_21 = {};
     BvhPick _e6 = bvh_pick_none();
     pick = _e6;
     u_2 = u_in;
@@ -1379,11 +1400,11 @@ BvhPick light_bvh_sample(
                 uint _e21 = i_4;
                 if (!((_e21 > 0u))) {
                     float _e28 = bvh_importance(nodes_4, 0u, x_8, n_15, r_6, lobe_9, light_bvh, _buffer_sizes);
-                    local_19 = _e28 > 0.0;
+                    local_21 = _e28 > 0.0;
                 } else {
-                    local_19 = true;
+                    local_21 = true;
                 }
-                bool _e32 = local_19;
+                bool _e32 = local_21;
                 if (_e32) {
                     pick.light = _e17.light;
                     float _e36 = pmf;
@@ -1426,14 +1447,14 @@ float light_pdf_selected(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_9 = lights[li_2];
-    metal::float3 v_12 = x_9 - y_1;
-    float d2_10 = metal::dot(v_12, v_12);
+    metal::float3 v_13 = x_9 - y_1;
+    float d2_11 = metal::dot(v_13, v_13);
     metal::float3 _e11 = light_normal(l_9);
-    float cos_y_1 = (d2_10 > 0.0) ? metal::dot(_e11, v_12 / metal::float3(metal::sqrt(d2_10))) : 0.0;
+    float cos_y_1 = (d2_11 > 0.0) ? metal::dot(_e11, v_13 / metal::float3(metal::sqrt(d2_11))) : 0.0;
     float _e20 = light_range_scale(li_2, x_9, r_7, rl_3, light_cones, _buffer_sizes);
     float _e23 = rt2_4[li_2];
     float _e25 = light_area(l_9);
-    float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_10, _e25, cos_y_1);
+    float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_11, _e25, cos_y_1);
     return _e26;
 }
 

@@ -252,8 +252,8 @@ bool sphere_contains_point(
     float r,
     metal::float3 x_1
 ) {
-    metal::float3 v_9 = x_1 - c;
-    return metal::dot(v_9, v_9) <= (r * r);
+    metal::float3 v_10 = x_1 - c;
+    return metal::dot(v_10, v_10) <= (r * r);
 }
 
 float area_to_solid_angle_pdf(
@@ -373,16 +373,16 @@ metal::float3 onb_tangent(
     metal::float3 n_1
 ) {
     float s_1 = (n_1.z >= 0.0) ? 1.0 : -1.0;
-    float a_6 = -1.0 / (s_1 + n_1.z);
-    return metal::float3(1.0 + (((s_1 * n_1.x) * n_1.x) * a_6), ((s_1 * n_1.x) * n_1.y) * a_6, -(s_1) * n_1.x);
+    float a_7 = -1.0 / (s_1 + n_1.z);
+    return metal::float3(1.0 + (((s_1 * n_1.x) * n_1.x) * a_7), ((s_1 * n_1.x) * n_1.y) * a_7, -(s_1) * n_1.x);
 }
 
 metal::float3 onb_bitangent(
     metal::float3 n_2
 ) {
     float s_2 = (n_2.z >= 0.0) ? 1.0 : -1.0;
-    float a_7 = -1.0 / (s_2 + n_2.z);
-    return metal::float3((n_2.x * n_2.y) * a_7, s_2 + ((n_2.y * n_2.y) * a_7), -(n_2.y));
+    float a_8 = -1.0 / (s_2 + n_2.z);
+    return metal::float3((n_2.x * n_2.y) * a_8, s_2 + ((n_2.y * n_2.y) * a_8), -(n_2.y));
 }
 
 metal::float3 onb_to_world(
@@ -663,9 +663,9 @@ float bounded_vndf_k(
     metal::float3 wi,
     float alpha_6
 ) {
-    float a_8 = metal::saturate(alpha_6);
+    float a_9 = metal::saturate(alpha_6);
     float s_3 = 1.0 + metal::sqrt((wi.x * wi.x) + (wi.y * wi.y));
-    float a2_3 = a_8 * a_8;
+    float a2_3 = a_9 * a_9;
     float s2_ = s_3 * s_3;
     return ((1.0 - a2_3) * s2_) / (s2_ + ((a2_3 * wi.z) * wi.z));
 }
@@ -748,41 +748,44 @@ float bsdf_pdf(
     return (p_spec_1 * _e11) + ((1.0 - p_spec_1) * _e6);
 }
 
-float cos_sub_clamped(
-    float sin_a,
-    float cos_a,
-    float sin_b,
-    float cos_b
+float cone_cos_of(
+    metal::float3 v_7,
+    float d2_3,
+    float a_2,
+    metal::float3 d_1
 ) {
-    if (cos_a > cos_b) {
+    bool local_12 = {};
+    bool local_13 = {};
+    float vd = metal::dot(v_7, d_1);
+    float h2_ = d2_3 - (a_2 * a_2);
+    if (!((h2_ <= 0.0))) {
+        if (vd >= 0.0) {
+            local_13 = (vd * vd) >= h2_;
+        } else {
+            local_13 = false;
+        }
+        bool _e19 = local_13;
+        local_12 = _e19;
+    } else {
+        local_12 = true;
+    }
+    bool _e21 = local_12;
+    if (_e21) {
         return 1.0;
     }
-    return (cos_a * cos_b) + (sin_a * sin_b);
-}
-
-float safe_sqrt(
-    float x_2
-) {
-    return metal::sqrt(metal::max(x_2, 0.0));
+    metal::float3 c_8 = metal::cross(v_7, d_1);
+    return metal::min(((vd * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_8, c_8)) * a_2)) / d2_3, 1.0);
 }
 
 float cone_cos_toward(
     metal::float3 center,
     float radius,
     metal::float3 p,
-    metal::float3 d_1
+    metal::float3 d_2
 ) {
-    metal::float3 v_10 = center - p;
-    float dist2_ = metal::dot(v_10, v_10);
-    if (dist2_ <= (radius * radius)) {
-        return 1.0;
-    }
-    float dist = metal::sqrt(dist2_);
-    metal::float3 c_8 = metal::cross(v_10, d_1);
-    float sin_b_1 = radius / dist;
-    float _e20 = safe_sqrt(1.0 - (sin_b_1 * sin_b_1));
-    float _e21 = cos_sub_clamped(metal::sqrt(metal::dot(c_8, c_8)) / dist, metal::dot(v_10, d_1) / dist, sin_b_1, _e20);
-    return _e21;
+    metal::float3 v_11 = center - p;
+    float _e6 = cone_cos_of(v_11, metal::dot(v_11, v_11), radius, d_2);
+    return _e6;
 }
 
 float range_scale_at(
@@ -809,17 +812,17 @@ float range_scale_toward(
 }
 
 float ray_inverse(
-    float x_3
+    float x_2
 ) {
-    return 1.0 / ((metal::abs(x_3) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_3);
+    return 1.0 / ((metal::abs(x_2) < 0.000000000000000000000000000001) ? 0.000000000000000000000000000001 : x_2);
 }
 
 metal::float3 ray_inverse3_(
-    metal::float3 d_2
+    metal::float3 d_3
 ) {
-    float _e2 = ray_inverse(d_2.x);
-    float _e4 = ray_inverse(d_2.y);
-    float _e6 = ray_inverse(d_2.z);
+    float _e2 = ray_inverse(d_3.x);
+    float _e4 = ray_inverse(d_3.y);
+    float _e6 = ray_inverse(d_3.z);
     return metal::float3(_e2, _e4, _e6);
 }
 
@@ -843,19 +846,19 @@ float ray_aabb(
 }
 
 metal::float3 triangle_normal(
-    metal::float3 a_2,
+    metal::float3 a_3,
     metal::float3 b_2,
     metal::float3 c_2
 ) {
-    bool local_12 = {};
-    metal::float3 n_15 = metal::cross(b_2 - a_2, c_2 - a_2);
+    bool local_14 = {};
+    metal::float3 n_15 = metal::cross(b_2 - a_3, c_2 - a_3);
     float l2_ = metal::dot(n_15, n_15);
     if (!(!((l2_ > 0.0)))) {
-        local_12 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_14 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_12 = true;
+        local_14 = true;
     }
-    bool _e17 = local_12;
+    bool _e17 = local_14;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -871,13 +874,13 @@ metal::float3 face_against(
 
 metal::float3 barycentric(
     metal::float3 p_2,
-    metal::float3 a_3,
+    metal::float3 a_4,
     metal::float3 b_3,
     metal::float3 c_3
 ) {
-    metal::float3 e1_ = b_3 - a_3;
-    metal::float3 e2_ = c_3 - a_3;
-    metal::float3 q = p_2 - a_3;
+    metal::float3 e1_ = b_3 - a_4;
+    metal::float3 e2_ = c_3 - a_4;
+    metal::float3 q = p_2 - a_4;
     float d11_ = metal::dot(e1_, e1_);
     float d12_ = metal::dot(e1_, e2_);
     float d22_ = metal::dot(e2_, e2_);
@@ -897,15 +900,15 @@ metal::float3 shading_normal(
     metal::float3 w_2,
     metal::float3 facing
 ) {
-    bool local_13 = {};
+    bool local_15 = {};
     metal::float3 s_4 = ((n0_ * w_2.x) + (n1_ * w_2.y)) + (n2_ * w_2.z);
     float l2_1 = metal::dot(s_4, s_4);
     if (!(!((l2_1 > 0.000000000001)))) {
-        local_13 = !((l2_1 < 300000000000000000000000000000000000000.0));
+        local_15 = !((l2_1 < 300000000000000000000000000000000000000.0));
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    bool _e24 = local_13;
+    bool _e24 = local_15;
     if (_e24) {
         return facing;
     }
@@ -915,53 +918,53 @@ metal::float3 shading_normal(
 
 float ray_triangle(
     metal::float3 o_1,
-    metal::float3 d_3,
-    metal::float3 a_4,
+    metal::float3 d_4,
+    metal::float3 a_5,
     metal::float3 b_4,
     metal::float3 c_4,
     float t_min,
     float t_max_1
 ) {
-    bool local_14 = {};
-    bool local_15 = {};
     bool local_16 = {};
-    metal::float3 e1_1 = b_4 - a_4;
-    metal::float3 e2_1 = c_4 - a_4;
-    metal::float3 p_3 = metal::cross(d_3, e2_1);
+    bool local_17 = {};
+    bool local_18 = {};
+    metal::float3 e1_1 = b_4 - a_5;
+    metal::float3 e2_1 = c_4 - a_5;
+    metal::float3 p_3 = metal::cross(d_4, e2_1);
     float det = metal::dot(e1_1, p_3);
     if (metal::abs(det) <= 0.0) {
         return -1.0;
     }
     float inv_1 = 1.0 / det;
-    metal::float3 s_5 = o_1 - a_4;
+    metal::float3 s_5 = o_1 - a_5;
     float u_3 = metal::dot(s_5, p_3) * inv_1;
     if (!((u_3 < 0.0))) {
-        local_14 = u_3 > 1.0;
+        local_16 = u_3 > 1.0;
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    bool _e28 = local_14;
+    bool _e28 = local_16;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_1 = metal::cross(s_5, e1_1);
-    float v_11 = metal::dot(d_3, q_1) * inv_1;
-    if (!((v_11 < 0.0))) {
-        local_15 = (u_3 + v_11) > 1.0;
+    float v_12 = metal::dot(d_4, q_1) * inv_1;
+    if (!((v_12 < 0.0))) {
+        local_17 = (u_3 + v_12) > 1.0;
     } else {
-        local_15 = true;
+        local_17 = true;
     }
-    bool _e42 = local_15;
+    bool _e42 = local_17;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_1, q_1) * inv_1;
     if (t_3 > t_min) {
-        local_16 = t_3 < t_max_1;
+        local_18 = t_3 < t_max_1;
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    bool _e51 = local_16;
+    bool _e51 = local_18;
     if (_e51) {
         return t_3;
     }
@@ -1008,33 +1011,33 @@ bool continues_path(
     metal::float3 n_12,
     metal::float3 ng
 ) {
-    bool local_17 = {};
+    bool local_19 = {};
     if (metal::dot(nd, n_12) > 0.0) {
-        local_17 = metal::dot(nd, ng) > 0.0;
+        local_19 = metal::dot(nd, ng) > 0.0;
     } else {
-        local_17 = false;
+        local_19 = false;
     }
-    bool _e12 = local_17;
+    bool _e12 = local_19;
     return _e12;
 }
 
 bool finite3_(
-    metal::float3 v_7
+    metal::float3 v_8
 ) {
-    bool local_18 = {};
-    bool local_19 = {};
-    if (metal::abs(v_7.x) <= F32_MAX) {
-        local_18 = metal::abs(v_7.y) <= F32_MAX;
+    bool local_20 = {};
+    bool local_21 = {};
+    if (metal::abs(v_8.x) <= F32_MAX) {
+        local_20 = metal::abs(v_8.y) <= F32_MAX;
     } else {
-        local_18 = false;
+        local_20 = false;
     }
-    bool _e12 = local_18;
+    bool _e12 = local_20;
     if (_e12) {
-        local_19 = metal::abs(v_7.z) <= F32_MAX;
+        local_21 = metal::abs(v_8.z) <= F32_MAX;
     } else {
-        local_19 = false;
+        local_21 = false;
     }
-    bool _e20 = local_19;
+    bool _e20 = local_21;
     return _e20;
 }
 
@@ -1065,7 +1068,7 @@ metal::float3 light_normal(
 
 GeoHit trace(
     metal::float3 o_2,
-    metal::float3 d_4,
+    metal::float3 d_5,
     float t_min_1,
     float t_max_2,
     bool any_hit,
@@ -1084,7 +1087,7 @@ GeoHit trace(
         GeoHit _e13 = hit;
         return _e13;
     }
-    metal::float3 _e14 = ray_inverse3_(d_4);
+    metal::float3 _e14 = ray_inverse3_(d_5);
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
@@ -1115,7 +1118,7 @@ GeoHit trace(
                         uint _e42 = i;
                         GpuTriangle t_4 = geo_tris[_e42];
                         float _e49 = hit.t;
-                        float _e50 = ray_triangle(o_2, d_4, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
+                        float _e50 = ray_triangle(o_2, d_5, t_4.v0_, t_4.v1_, t_4.v2_, t_min_1, _e49);
                         if (_e50 > 0.0) {
                             hit.t = _e50;
                             uint _e55 = i;
@@ -1163,20 +1166,20 @@ float mis_weight(
 
 float light_range_scale(
     uint li,
-    metal::float3 x_4,
+    metal::float3 x_3,
     metal::float3 r_2,
     metal::float4 rl_2,
     device type_9 const& light_cones,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLightCone c_9 = light_cones[li];
-    float _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_4, r_2);
+    float _e9 = range_scale_toward(rl_2, c_9.center, c_9.radius, x_3, r_2);
     return _e9;
 }
 
 float select_pdf(
     uint li_1,
-    metal::float3 x_5,
+    metal::float3 x_4,
     metal::float3 n_13,
     metal::float3 r_3,
     metal::float4 lobe_5,
@@ -1190,7 +1193,7 @@ float select_pdf(
 
 float light_pdf_selected(
     uint li_2,
-    metal::float3 x_6,
+    metal::float3 x_5,
     metal::float3 r_4,
     metal::float4 rl_4,
     metal::float3 y,
@@ -1201,20 +1204,20 @@ float light_pdf_selected(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuLight l_6 = lights[li_2];
-    metal::float3 v_12 = x_6 - y;
-    float d2_4 = metal::dot(v_12, v_12);
+    metal::float3 v_13 = x_5 - y;
+    float d2_5 = metal::dot(v_13, v_13);
     metal::float3 _e11 = light_normal(l_6);
-    float cos_y_1 = (d2_4 > 0.0) ? metal::dot(_e11, v_12 / metal::float3(metal::sqrt(d2_4))) : 0.0;
-    float _e20 = light_range_scale(li_2, x_6, r_4, rl_4, light_cones, _buffer_sizes);
+    float cos_y_1 = (d2_5 > 0.0) ? metal::dot(_e11, v_13 / metal::float3(metal::sqrt(d2_5))) : 0.0;
+    float _e20 = light_range_scale(li_2, x_5, r_4, rl_4, light_cones, _buffer_sizes);
     float _e23 = rt2_2[li_2];
     float _e25 = light_area(l_6);
-    float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_4, _e25, cos_y_1);
+    float _e26 = light_strategy_pdf(sel, _e20 * _e23, d2_5, _e25, cos_y_1);
     return _e26;
 }
 
 float light_pdf(
     uint li_3,
-    metal::float3 x_7,
+    metal::float3 x_6,
     metal::float3 n_14,
     metal::float3 r_5,
     metal::float4 lobe_6,
@@ -1227,57 +1230,37 @@ float light_pdf(
     device type_10 const& lights,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e9 = select_pdf(li_3, x_7, n_14, r_5, lobe_6, rl_5, nee_1, in_range_2);
-    float _e10 = light_pdf_selected(li_3, x_7, r_5, rl_5, y_1, _e9, light_cones, rt2_2, lights, _buffer_sizes);
+    float _e9 = select_pdf(li_3, x_6, n_14, r_5, lobe_6, rl_5, nee_1, in_range_2);
+    float _e10 = light_pdf_selected(li_3, x_6, r_5, rl_5, y_1, _e9, light_cones, rt2_2, lights, _buffer_sizes);
     return _e10;
 }
 
 float bsh_inner_scale(
-    float a_5,
-    metal::float3 v_8,
-    float d2_3,
+    float a_6,
+    metal::float3 v_9,
+    float d2_4,
     metal::float3 r_6,
     metal::float4 rl_6
 ) {
-    bool local_20 = {};
-    bool local_21 = {};
-    float vr = metal::dot(v_8, r_6);
-    float h2_ = d2_3 - (a_5 * a_5);
-    if (!((h2_ <= 0.0))) {
-        if (vr >= 0.0) {
-            local_21 = (vr * vr) >= h2_;
-        } else {
-            local_21 = false;
-        }
-        bool _e20 = local_21;
-        local_20 = _e20;
-    } else {
-        local_20 = true;
-    }
-    bool _e22 = local_20;
-    if (_e22) {
-        return rl_6.w * rl_6.w;
-    }
-    metal::float3 c_10 = metal::cross(v_8, r_6);
-    float cos_t_1 = ((vr * metal::sqrt(h2_)) + (metal::sqrt(metal::dot(c_10, c_10)) * a_5)) / d2_3;
-    float _e36 = range_scale_at(rl_6, cos_t_1 + 0.000002);
-    return _e36;
+    float _e5 = cone_cos_of(v_9, d2_4, a_6, r_6);
+    float _e8 = range_scale_at(rl_6, _e5 + 0.000002);
+    return _e8;
 }
 
 bool bsh_reaches(
     BshNode node_3,
-    metal::float3 x_8,
+    metal::float3 x_7,
     metal::float3 r_7,
     metal::float4 rl_7
 ) {
     bool local_22 = {};
     bool local_23 = {};
-    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_8);
+    bool _e6 = sphere_contains_point(node_3.center, node_3.radius, x_7);
     if (_e6) {
         return true;
     }
     if (!((rl_7.w <= 1.0))) {
-        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_7.w * 1.0001), x_8);
+        bool _e20 = sphere_contains_point(node_3.center, node_3.radius * (rl_7.w * 1.0001), x_7);
         local_22 = !(_e20);
     } else {
         local_22 = true;
@@ -1287,23 +1270,23 @@ bool bsh_reaches(
         return false;
     }
     float _e25 = bsh_range_bound(node_3);
-    metal::float3 v_13 = x_8 - node_3.center;
-    float d2_5 = metal::dot(v_13, v_13);
+    metal::float3 v_14 = x_7 - node_3.center;
+    float d2_6 = metal::dot(v_14, v_14);
     float reach_max = node_3.extent + ((rl_7.w * 1.001) * _e25);
-    if (d2_5 > (reach_max * reach_max)) {
+    if (d2_6 > (reach_max * reach_max)) {
         return false;
     }
     if (node_3.child == BSH_NONE) {
-        float _e43 = range_scale_toward(rl_7, node_3.center, node_3.extent, x_8, r_7);
+        float _e43 = range_scale_toward(rl_7, node_3.center, node_3.extent, x_7, r_7);
         float _e46 = bsh_scaled_radius(node_3, metal::sqrt(_e43));
-        bool _e47 = sphere_contains_point(node_3.center, _e46, x_8);
+        bool _e47 = sphere_contains_point(node_3.center, _e46, x_7);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_3.extent, -(v_13), d2_5, r_7, rl_7);
+    float _e50 = bsh_inner_scale(node_3.extent, -(v_14), d2_6, r_7, rl_7);
     float s_c = _e50 * 1.001;
     float reach = node_3.extent + (metal::sqrt(s_c) * _e25);
-    if (d2_5 <= ((node_3.radius * node_3.radius) * s_c)) {
-        local_23 = d2_5 <= (reach * reach);
+    if (d2_6 <= ((node_3.radius * node_3.radius) * s_c)) {
+        local_23 = d2_6 <= (reach * reach);
     } else {
         local_23 = false;
     }
@@ -1418,7 +1401,7 @@ kernel void main_(
     GpuTriangle tri = geo_tris[_e94.tri];
     metal::float3 _e111 = st.origin;
     metal::float3 _e113 = st.dir;
-    metal::float3 x_9 = _e111 + (_e113 * _e94.t);
+    metal::float3 x_8 = _e111 + (_e113 * _e94.t);
     metal::float3 _e120 = triangle_normal(tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e122 = st.dir;
     metal::float3 _e123 = face_against(_e120, _e122);
@@ -1426,7 +1409,7 @@ kernel void main_(
     metal::float4 _e129 = geo_normals[b_6];
     metal::float4 _e135 = geo_normals[b_6 + 1u];
     metal::float4 _e141 = geo_normals[b_6 + 2u];
-    metal::float3 _e146 = barycentric(x_9, tri.v0_, tri.v1_, tri.v2_);
+    metal::float3 _e146 = barycentric(x_8, tri.v0_, tri.v1_, tri.v2_);
     metal::float3 _e147 = shading_normal(_e129.xyz, _e135.xyz, _e141.xyz, _e146, _e123);
     if (tri.light != NO_LIGHT) {
         metal::float3 _e154 = st.dir;
@@ -1452,7 +1435,7 @@ kernel void main_(
             metal::float3 _e187 = st.prev_r;
             metal::float4 _e189 = st.prev_lobe;
             uint _e192 = candidates[i_1];
-            float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, _e173, x_9, _e192, _e178, light_cones, rt2_2, lights, _buffer_sizes);
+            float _e193 = light_pdf(tri.light, _e183, _e185, _e187, _e189, _e173, x_8, _e192, _e178, light_cones, rt2_2, lights, _buffer_sizes);
             float _e194 = mis_weight(_e180, _e193);
             w = _e194;
         }
@@ -1480,7 +1463,7 @@ kernel void main_(
     metal::float3 _e232 = st.dir;
     metal::float3 wo_1 = -(_e232);
     metal::float4 _e240 = receiver_lobe(m_2.albedo, m_2.metallic, m_2.f0_, m_2.f90_, m_2.alpha, metal::dot(_e147, wo_1));
-    v.position = x_9;
+    v.position = x_8;
     v.normal = _e147;
     v.material = tri.material;
     v.gnormal = _e123;
@@ -1506,14 +1489,14 @@ kernel void main_(
         metal::float3 _e282 = st.beta;
         st.beta = _e282 * m_2.albedo;
     }
-    st.prev = x_9;
+    st.prev = x_8;
     st.prev_normal = _e147;
     metal::float3 _e288 = mirror_dir(_e147, wo_1);
     st.prev_r = _e288;
     st.prev_lobe = _e240;
     st.pdf_bsdf = _e264;
     float _e294 = params.eps;
-    st.origin = x_9 + (_e123 * _e294);
+    st.origin = x_8 + (_e123 * _e294);
     st.dir = _e262;
     bool _e298 = continues_path(_e262, _e147, _e123);
     if (!(!(_e298))) {
