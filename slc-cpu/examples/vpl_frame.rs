@@ -1,5 +1,8 @@
 //! Renders frames of the built-in Cornell box with one method and prints the
-//! timings: `cargo run --release -p slc-cpu --example vpl_frame -- slc 512 10`.
+//! timings: `cargo run --release -p slc-cpu --example vpl_frame -- slc 512 10`;
+//! a fourth argument `inputs` renders the G-buffer, RSM and direct light
+//! again before each frame, as `slc bench` does (a frame whose camera or
+//! light moves).
 
 use slc_cpu::vpl::VplContext;
 use slc_scene::scene::Scene;
@@ -15,9 +18,14 @@ fn main() {
     };
     let size: u32 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(512);
     let frames: u32 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(5);
-    let ctx = VplContext::new(&Scene::cornell_box(), size, size, 256, None).expect("valid scene");
+    let inputs = args.get(4).is_some_and(|a| a == "inputs");
+    let mut ctx = VplContext::new(&Scene::cornell_box(), size, size, 256, None).expect("valid scene");
     for frame in 0..frames {
+        let t = inputs.then(|| ctx.time_inputs());
         let f = ctx.render(&VplSettings { method, frame, ..Default::default() }).expect("valid settings");
+        if let Some(t) = t {
+            print!("G-buffer {:.2} ms, RSM {:.2} ms, direct {:.2} ms, ", t.gbuffer_ms, t.rsm_ms, t.direct_ms);
+        }
         println!(
             "frame {frame}: shading {:.2} ms, denoise {:.2} ms, {:.1} lights/px, {:.1} kept/px",
             f.stats.shading_ms, f.stats.denoise_ms, f.stats.lights_per_pixel, f.stats.kept_per_pixel

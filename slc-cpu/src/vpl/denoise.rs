@@ -101,11 +101,24 @@ impl Denoiser {
     /// [`Denoiser::filter_far`] on a chosen [`SimdPath`] (the baseline where
     /// the CPU lacks it).
     pub fn filter_on(&mut self, path: SimdPath, e: &[Vec3], near: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
+        let mut out = e.to_vec();
+        self.filter_in_place_on(path, &mut out, near, gb, period);
+        out
+    }
+
+    /// [`Denoiser::filter_far`] written over `e` (one value per pixel of
+    /// `gb`): a frame's irradiance needs no second buffer.
+    pub fn filter_far_in_place(&mut self, e: &mut [Vec3], near: &[Vec3], gb: &GBuffer, period: u32) {
+        self.filter_in_place_on(SimdPath::best(), e, near, gb, period);
+    }
+
+    /// The filter on `path`: the signal is copied into the planes first,
+    /// then every pixel of `e` is written from them.
+    fn filter_in_place_on(&mut self, path: SimdPath, e: &mut [Vec3], near: &[Vec3], gb: &GBuffer, period: u32) {
         self.load(e, near, gb, period);
         let planes = &self.planes;
         let w = planes.w.max(1);
-        let mut out = vec![Vec3::ZERO; planes.w * planes.h];
-        out.par_chunks_mut(w).enumerate().for_each(|(y, row)| {
+        e.par_chunks_mut(w).enumerate().for_each(|(y, row)| {
             path.run(FilterRow { p: planes, gb, y, row: &mut *row });
             if !near.is_empty() {
                 for (o, &n) in row.iter_mut().zip(&near[y * w..]) {
@@ -113,7 +126,6 @@ impl Denoiser {
                 }
             }
         });
-        out
     }
 
     /// Writes `e − near` (`e` where `near` is empty) into the signal's

@@ -89,7 +89,71 @@ pub struct VplContext {
     geometric: Vec<Vec3>,
     direct: Vec<Vec3>,
     from_gbuffer: FromGBuffer,
+    reuse: Mutex<Reused>,
     base: VplStats,
+}
+
+/// A frame's working memory kept for the next frame (its buffers are
+/// megabytes: fresh ones cost a page fault per 4 KiB on first touch): the
+/// far and near fields' per-receiver results, and the pixel buffers a
+/// [`Shaded`] hands to [`VplContext::finish`], returned by it. Frames
+/// rendered at once take what is there; one that finds it taken
+/// allocates its own.
+#[derive(Default)]
+struct Reused {
+    far: PerReceiver,
+    near: PerReceiver,
+    vec3: Vec<Vec<Vec3>>,
+    counts: Vec<Vec<u32>>,
+}
+
+impl Reused {
+    /// Pixel buffers of each type kept at most (a frame's [`Shaded`] holds
+    /// four of `Vec3`, one of counts).
+    const KEEP: usize = 4;
+
+    /// A pixel buffer of `Vec3` (empty, with the memory of a kept one).
+    fn vec3(&mut self) -> Vec<Vec3> {
+        let mut v = self.vec3.pop().unwrap_or_default();
+        v.clear();
+        v
+    }
+
+    /// A pixel buffer of counts, as [`Reused::vec3`].
+    fn counts(&mut self) -> Vec<u32> {
+        let mut v = self.counts.pop().unwrap_or_default();
+        v.clear();
+        v
+    }
+
+    /// Adds `r`'s memory to this one's where this one has none.
+    fn absorb(&mut self, r: Reused) {
+        if self.far.out.capacity() == 0 {
+            self.far = r.far;
+        }
+        if self.near.out.capacity() == 0 {
+            self.near = r.near;
+        }
+        self.vec3.extend(r.vec3.into_iter().filter(|v| v.capacity() > 0));
+        self.vec3.truncate(Self::KEEP);
+        self.counts.extend(r.counts.into_iter().filter(|v| v.capacity() > 0));
+        self.counts.truncate(Self::KEEP);
+    }
+}
+
+impl VplContext {
+    /// The reused memory (none when another frame holds the lock).
+    fn take_reused(&self) -> Reused {
+        self.reuse.try_lock().map(|mut r| std::mem::take(&mut *r)).unwrap_or_default()
+    }
+
+    /// Keeps `r`'s memory for the next frame (drops it when another frame
+    /// holds the lock, or where memory is kept already).
+    fn keep_reused(&self, r: Reused) {
+        if let Ok(mut kept) = self.reuse.try_lock() {
+            kept.absorb(r);
+        }
+    }
 }
 
 /// What a frame derives from the G-buffer alone, rebuilt with it: the
@@ -127,7 +191,7 @@ impl VplContext {
         let mut inputs = VplInputs { gbuffer, vpls, min_d2: min_distance * min_distance };
         let (mut geometric, mut direct, mut from_gbuffer) = (Vec::new(), Vec::new(), FromGBuffer::default());
         let base = frame_inputs(scene, &geo, true, &mut inputs, &mut geometric, &mut direct, &mut from_gbuffer);
-        Ok(VplContext { scene: scene.clone(), geo, inputs, geometric, direct, from_gbuffer, base })
+        Ok(VplContext { scene: scene.clone(), geo, inputs, geometric, direct, from_gbuffer, reuse: Mutex::default(), base })
     }
 
     /// Renders the G-buffer, the RSM and the direct light again into the
@@ -270,19 +334,18 @@ impl VplContext {
         let mut stats = self.base;
         stats.shading_ms = shaded.shading_ms;
         let gb = &self.inputs.gbuffer;
-        let shaded_px = (0..gb.position.len()).filter(|&i| gb.valid(i)).count().max(1) as f64;
+        let shaded_px = (0..gb.position.len()).into_par_iter().filter(|&i| gb.valid(i)).count().max(1) as f64;
         stats.evaluations = shaded.evaluations;
         stats.lights_per_pixel = shaded.evaluations as f64 / shaded_px;
-        stats.kept_per_pixel = shaded.kept.iter().map(|&k| k as f64).sum::<f64>() / shaded_px;
+        stats.kept_per_pixel = shaded.kept.par_iter().map(|&k| k as u64).sum::<u64>() as f64 / shaded_px;
         let t = Instant::now();
         let denoise = settings.denoise && settings.method != VplMethod::Reference && shaded.denoised_ms.is_none();
-        let filter = |e: Vec<Vec3>, near: &[Vec3]| -> Vec<Vec3> {
-            if !denoise {
-                e
-            } else {
+        let filter = |mut e: Vec<Vec3>, near: &[Vec3]| -> Vec<Vec3> {
+            if denoise {
                 // The near field is exact: only the interleaved far field is filtered.
-                self.from_gbuffer.denoiser.lock().unwrap_or_else(PoisonError::into_inner).filter_far(&e, near, gb, PERIOD)
+                self.from_gbuffer.denoiser.lock().unwrap_or_else(PoisonError::into_inner).filter_far_in_place(&mut e, near, gb, PERIOD);
             }
+            e
         };
         let mut filtered = filter(shaded.irradiance, &shaded.near);
         let mut specular = if shaded.specular.is_empty() { Vec::new() } else { filter(shaded.specular, &shaded.specular_near) };
@@ -303,6 +366,12 @@ impl VplContext {
         let primary = self.scene.primary;
         let data =
             (0..filtered.len()).into_par_iter().map(|i| gb.radiance(i, &primary, self.direct[i], filtered[i], specular.get(i).copied())).collect();
+        // The pixel buffers serve the next frame's shading.
+        self.keep_reused(Reused {
+            vec3: vec![filtered, shaded.near, specular, shaded.specular_near],
+            counts: vec![shaded.kept],
+            ..Reused::default()
+        });
         stats.denoise_ms = ms(t) + shaded.denoised_ms.unwrap_or(0.0);
         stats.total_ms = stats.stage_sum();
         Ok(VplFrame { image: Image { width: gb.width, height: gb.height, data }, stats })
@@ -346,7 +415,7 @@ impl VplContext {
     }
 
     /// Interleaved sampling with tiled culling per sub-image: the far field
-    /// plus the near field ([`VplContext::shade_near`]), the near field
+    /// plus the near field ([`VplContext::shade_near_in`]), the near field
     /// alone, the same two of the specular correction at the pixels with a
     /// specular lobe, the kept counts and evaluations of both. The tiles are
     /// the context's [`Tiling::interleaved`] (built with the G-buffer) for
@@ -373,9 +442,12 @@ impl VplContext {
             &owned
         };
         let min_d2 = self.inputs.min_d2;
-        let far = PerReceiver::shade_parts(tiling, |sub, part, out, spec, scratch| {
+        let mut reused = self.take_reused();
+        let ranges = self.ranges(cull, params, s);
+        let mut far = std::mem::take(&mut reused.far);
+        far.shade_parts(tiling, |sub, part, out, spec, scratch| {
             let (sx, sy) = (sub % p, sub / p);
-            // The subset's VPLs (flux ×64) with their ranges, once per frame.
+            // The subset's VPLs (flux ×64) with their ranges.
             let Scratch { all, lists } = scratch;
             all.clear();
             // Subset texels in 4×4 blocks, so each CHUNK of 16 consecutive
@@ -385,50 +457,61 @@ impl VplContext {
                 for bx in (0..m).step_by(4) {
                     for (u, v_) in (0..16).map(|k| (bx + k % 4, by + k / 4)).filter(|&(u, v_)| u < m && v_ < m) {
                         let i = (sy + v_ * p) * size + sx + u * p;
-                        let flux = v.flux[i] * scale;
-                        let (rt2, r2) = light_ranges(cull, params, s, i, flux);
-                        all.push(v.position[i], v.normal[i], flux, rt2, r2);
+                        let (rt2, r2) = ranges[i];
+                        all.push(v.position[i], v.normal[i], v.flux[i] * scale, rt2, r2);
                     }
                 }
             }
             all.build_chunks();
             shade_part(part, all, cull != Cull::None, cull, min_d2, near_r2, out, spec, lists)
         });
-        let near = self.shade_near(near_r2, cull, params, s);
-        // Each pixel adds its far field to its near field, in parallel.
-        let (irradiance, kept) = (0..w * h)
-            .into_par_iter()
-            .map(|i| {
-                let ((f, kf), (n, kn)) = (far.at(tiling, i), near.at(&self.from_gbuffer.near, i));
-                (f + n, kf + kn)
-            })
-            .unzip();
-        // A field per pixel, empty where `present` is false.
-        let pixels = |present: bool, value: &(dyn Fn(usize) -> Vec3 + Sync)| -> Vec<Vec3> {
-            if present { (0..w * h).into_par_iter().map(value).collect() } else { Vec::new() }
-        };
+        let mut near = std::mem::take(&mut reused.near);
+        self.shade_near_in(&mut near, &self.from_gbuffer.near, &ranges, near_r2, cull);
+        // Each pixel adds its far field to its near field, in parallel, in
+        // one pass that also writes the near field alone.
         let nt = &self.from_gbuffer.near;
-        Fields {
-            irradiance,
-            near: pixels(!near.out.is_empty(), &|i| near.at(nt, i).0),
-            specular: pixels(!far.spec.is_empty(), &|i| far.specular_at(tiling, i) + near.specular_at(nt, i)),
-            specular_near: pixels(!near.spec.is_empty(), &|i| near.specular_at(nt, i)),
-            kept,
-            evaluations: near.evals + far.evals,
+        let (mut irradiance, mut kept, mut near_field) = (reused.vec3(), reused.counts(), reused.vec3());
+        let sum = |i: usize| {
+            let ((f, kf), (n, kn)) = (far.at(tiling, i), near.at(nt, i));
+            ((f + n, kf + kn), n)
+        };
+        if near.out.is_empty() {
+            (0..w * h).into_par_iter().map(|i| sum(i).0).unzip_into_vecs(&mut irradiance, &mut kept);
+        } else {
+            let mut all = ((irradiance, kept), near_field);
+            all.par_extend((0..w * h).into_par_iter().map(sum));
+            ((irradiance, kept), near_field) = all;
         }
+        // A field per pixel, empty where `present` is false.
+        let mut pixels = |present: bool, value: &(dyn Fn(usize) -> Vec3 + Sync)| -> Vec<Vec3> {
+            let mut out = reused.vec3();
+            if present {
+                out.par_extend((0..w * h).into_par_iter().map(value));
+            }
+            out
+        };
+        let specular = pixels(!far.spec.is_empty(), &|i| far.specular_at(tiling, i) + near.specular_at(nt, i));
+        let specular_near = pixels(!near.spec.is_empty(), &|i| near.specular_at(nt, i));
+        let evaluations = near.evals + far.evals;
+        (reused.far, reused.near) = (far, near);
+        self.keep_reused(reused);
+        Fields { irradiance, near: near_field, specular, specular_near, kept, evaluations }
     }
 
-    /// The near field of the split ([`slc_core::interleave::vpl_near_weight`])
-    /// per receiver of the context's near tiling: [`VplContext::shade_near_in`].
-    fn shade_near(&self, near_r2: f32, cull: Cull, params: &RangeParams, s: &VplSettings) -> PerReceiver {
-        self.shade_near_in(&self.from_gbuffer.near, near_r2, cull, params, s)
+    /// Each VPL's interleaved ranges `(r_t², r²)` under `cull`
+    /// ([`light_ranges`], flux × `P²`), computed once per frame for the far
+    /// and the near field.
+    fn ranges(&self, cull: Cull, params: &RangeParams, s: &VplSettings) -> Vec<(f32, f32)> {
+        let v = &self.inputs.vpls;
+        let scale = interleave_flux_scale(PERIOD);
+        (0..v.len()).into_par_iter().map(|i| light_ranges(cull, params, s, i, v.flux[i] * scale)).collect()
     }
 
     /// The near field of the split ([`slc_core::interleave::vpl_near_weight`]):
     /// at every receiver of `tiling` (a [`Tiling::regions`]), the near share
     /// of the VPLs of every subset closer than `R_n = √near_r2`, at their
-    /// own flux, culled as the method culls the far field (`cull`, from
-    /// `shade_interleaved`): SLC with each VPL's own ranges and the far
+    /// own flux, culled as the method culls the far field (`cull` and the
+    /// interleaved `ranges`, from `shade_interleaved`), into `r`: SLC with each VPL's own ranges and the far
     /// field's ξ ([`slc_core::interleave::vpl_near_range2`],
     /// [`slc_core::interleave::vpl_near_slc_share`]: unbiased), clamp at its
     /// range, none not at all; with the kept counts and loop evaluations.
@@ -438,27 +521,25 @@ impl VplContext {
     /// region's list, each light's sphere of radius `min(r, R_n)`
     /// ([`slc_core::interleave::vpl_near_cull_range2`]) against the box of
     /// the G-buffer positions.
-    fn shade_near_in(&self, tiling: &Tiling, near_r2: f32, cull: Cull, params: &RangeParams, s: &VplSettings) -> PerReceiver {
+    fn shade_near_in(&self, r: &mut PerReceiver, tiling: &Tiling, ranges: &[(f32, f32)], near_r2: f32, cull: Cull) {
         if near_r2 <= 0.0 {
-            return PerReceiver::default();
+            r.clear();
+            return;
         }
         let v = &self.inputs.vpls;
         let near_cull = if cull == Cull::Slc { Cull::NearSlc } else { Cull::Near };
-        let scale = interleave_flux_scale(PERIOD);
         let mut all = LightList::default();
         for i in v.near_order() {
             if v.flux[i] != Vec3::ZERO {
                 // The interleaved light's ranges, then the VPL's own.
-                let (rt2, r2) = light_ranges(cull, params, s, i, v.flux[i] * scale);
+                let (rt2, r2) = ranges[i];
                 let (rt2, r2) = if cull == Cull::Slc { (vpl_near_range2(rt2, PERIOD), vpl_near_range2(r2, PERIOD)) } else { (rt2, r2) };
                 all.push_near(v.position[i], v.normal[i], v.flux[i], rt2, r2, near_r2);
             }
         }
         all.build_chunks();
         let min_d2 = self.inputs.min_d2;
-        PerReceiver::shade_parts(tiling, |_, part, out, spec, scratch| {
-            shade_part(part, &all, true, near_cull, min_d2, near_r2, out, spec, &mut scratch.lists)
-        })
+        r.shade_parts(tiling, |_, part, out, spec, scratch| shade_part(part, &all, true, near_cull, min_d2, near_r2, out, spec, &mut scratch.lists));
     }
 }
 
@@ -535,36 +616,46 @@ struct PerReceiver {
 }
 
 impl PerReceiver {
-    /// Zeros for every receiver, and for the specular correction where the
-    /// tiling has glossy receivers.
-    fn new(tiling: &Tiling) -> PerReceiver {
-        let n = tiling.len();
-        PerReceiver { out: vec![(Vec3::ZERO, 0); n], spec: if !tiling.has_glossy() { Vec::new() } else { vec![Vec3::ZERO; n] }, evals: 0 }
+    /// Nothing shaded.
+    fn clear(&mut self) {
+        self.out.clear();
+        self.spec.clear();
+        self.evals = 0;
     }
 
     /// Every part `k` of `tiling` shaded by `shade(k, part, out, spec,
     /// scratch)` in parallel (into its range of the per-receiver buffers,
-    /// with a worker's reused lists; returning its loop evaluations).
+    /// with a worker's reused lists; returning its loop evaluations), into
+    /// this one's memory. Every receiver's `out` is written by its part;
+    /// `spec` starts at zero where the tiling has glossy receivers and is
+    /// empty where it has none.
     fn shade_parts(
+        &mut self,
         tiling: &Tiling,
         shade: impl Fn(usize, &PartTiles, &mut [(Vec3, u32)], &mut [Vec3], &mut Scratch) -> u64 + Sync + Send,
-    ) -> PerReceiver {
-        let mut r = PerReceiver::new(tiling);
-        r.evals = tiling
+    ) {
+        // Every receiver's `out` is written below: its old values need no
+        // clearing (only a new size is filled).
+        let n = tiling.len();
+        self.out.resize(n, (Vec3::ZERO, 0));
+        self.spec.clear();
+        if tiling.has_glossy() {
+            self.spec.resize(n, Vec3::ZERO);
+        }
+        self.evals = tiling
             .parts
             .par_iter()
-            .zip(tiling.split(&mut r.out))
-            .zip(tiling.split_glossy(&mut r.spec))
+            .zip(tiling.split(&mut self.out))
+            .zip(tiling.split_glossy(&mut self.spec))
             .enumerate()
             .map_init(Scratch::default, |scratch, (k, ((part, out), spec))| shade(k, part, out, spec, scratch))
             .sum();
-        r
     }
 
     /// Pixel `i`'s `(irradiance, kept)`; zero where it has no receiver or
     /// nothing was shaded.
     fn at(&self, tiling: &Tiling, i: usize) -> (Vec3, u32) {
-        match tiling.receiver[i] {
+        match tiling.receiver(i) {
             r if r != NO_RECEIVER && !self.out.is_empty() => self.out[r as usize],
             _ => (Vec3::ZERO, 0),
         }
@@ -573,12 +664,12 @@ impl PerReceiver {
     /// Irradiance and kept count of each of the tiling's pixels (tests).
     #[cfg(test)]
     fn per_pixel(&self, tiling: &Tiling) -> (Vec<Vec3>, Vec<u32>) {
-        (0..tiling.receiver.len()).map(|i| self.at(tiling, i)).unzip()
+        (0..tiling.pixels()).map(|i| self.at(tiling, i)).unzip()
     }
 
     /// Pixel `i`'s specular correction, zero as [`PerReceiver::at`].
     fn specular_at(&self, tiling: &Tiling, i: usize) -> Vec3 {
-        match tiling.receiver[i] {
+        match tiling.receiver(i) {
             r if r != NO_RECEIVER && !self.spec.is_empty() => self.spec[r as usize],
             _ => Vec3::ZERO,
         }
@@ -719,6 +810,13 @@ mod tests {
     use super::*;
     use slc_core::light::INV_PI;
 
+    /// The near field at `tiling`'s receivers, as a frame shades it.
+    fn near_field(ctx: &VplContext, tiling: &Tiling, near_r2: f32, cull: Cull, params: &RangeParams, s: &VplSettings) -> PerReceiver {
+        let mut r = PerReceiver::default();
+        ctx.shade_near_in(&mut r, tiling, &ctx.ranges(cull, params, s), near_r2, cull);
+        r
+    }
+
     /// The near field's tile culling drops nothing: for every method (SLC
     /// with its own ranges, clamp, none) it equals every VPL evaluated at
     /// every pixel by the same loop without culling, for any region and
@@ -747,7 +845,7 @@ mod tests {
             assert!(brute.iter().map(|b| b.1).sum::<u32>() > 1000, "{cull:?}: the near field holds lights");
             for (region, tile) in [(64, 8), (32, 8), (32, 4), (16, 16), (7, 3)] {
                 let (e, kept) =
-                    ctx.shade_near_in(&Tiling::regions(gb, region, tile), near_r2, cull, &params, &s).per_pixel(&Tiling::regions(gb, region, tile));
+                    near_field(&ctx, &Tiling::regions(gb, region, tile), near_r2, cull, &params, &s).per_pixel(&Tiling::regions(gb, region, tile));
                 for i in 0..brute.len() {
                     assert_eq!(kept[i], brute[i].1, "{cull:?}: pixel {i}, region {region}, tile {tile}");
                     assert!(
@@ -874,9 +972,35 @@ mod tests {
         }
     }
 
+    /// A frame's memory kept for the next one changes no frame: a frame
+    /// rendered after frames of other methods, settings and sizes of its
+    /// buffers (near field off, no denoise, a frame whose `Shaded` was
+    /// never finished) is bit for bit a frame of a fresh context, on the
+    /// glossy box (so the specular buffers are reused too).
+    #[test]
+    fn reused_frame_memory_changes_no_frame() {
+        let scene = Scene::cornell_box_glossy();
+        let ctx = VplContext::new(&scene, 40, 32, 64, None).unwrap();
+        let settings = [
+            VplSettings::default(),
+            VplSettings { method: VplMethod::None, ..VplSettings::default() },
+            VplSettings { near_radius: Some(0.0), frame: 3, ..VplSettings::default() },
+            VplSettings { method: VplMethod::Clamp, denoise: false, ..VplSettings::default() },
+            VplSettings { frame: 5, ..VplSettings::default() },
+        ];
+        let fresh: Vec<Vec<Vec3>> =
+            settings.iter().map(|s| VplContext::new(&scene, 40, 32, 64, None).unwrap().render(s).unwrap().image.data).collect();
+        for round in 0..2 {
+            let _unfinished = ctx.shade(&settings[1]).unwrap();
+            for (s, expected) in settings.iter().zip(&fresh) {
+                assert!(ctx.render(s).unwrap().image.data == *expected, "round {round}: {s:?}");
+            }
+        }
+    }
+
     /// The culled near field is unbiased: its expectation over ξ equals the
     /// unculled near field at every pixel, by stratified quadrature through
-    /// the real code (`shade_near` with `fixed_xi` at the midpoints of M
+    /// the real code (`shade_near_in` with `fixed_xi` at the midpoints of M
     /// strata). Each light's term is `w·T/p` on the ξ interval where it is
     /// kept (which ends at ξ = 1) and 0 elsewhere, so the midpoint rule
     /// misses each light by at most 2 strata of `w·T/p`: the bound is `2/M`
@@ -889,7 +1013,7 @@ mod tests {
         let s = VplSettings { error_bound: 0.02, ..VplSettings::default() };
         let params = s.validate().unwrap();
         let near = |cull, s: &VplSettings| {
-            let f = ctx.shade_near(near_r2, cull, &params, s);
+            let f = near_field(&ctx, &ctx.from_gbuffer.near, near_r2, cull, &params, s);
             let (e, kept) = f.per_pixel(&ctx.from_gbuffer.near);
             (e, kept, f.evals)
         };

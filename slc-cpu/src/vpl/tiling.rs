@@ -18,6 +18,7 @@ use glam::Vec3;
 use rayon::prelude::*;
 use slc_scene::vpl::GBuffer;
 use std::ops::Range;
+use std::sync::atomic::{AtomicU32, Ordering};
 
 /// Marks a pixel without a receiver in [`Tiling::receiver`].
 pub(crate) const NO_RECEIVER: u32 = u32::MAX;
@@ -54,14 +55,15 @@ pub(crate) struct PartTiles {
 }
 
 /// See the module documentation.
-#[derive(Clone, Debug, Default)]
+#[derive(Debug, Default)]
 pub(crate) struct Tiling {
     pub parts: Vec<PartTiles>,
     /// The first receiver of each part, and the number of receivers last.
     pub offsets: Vec<usize>,
     /// Receiver of each pixel, [`NO_RECEIVER`] where the pixel sees no
-    /// surface.
-    pub receiver: Vec<u32>,
+    /// surface ([`Tiling::receiver`]; atomic so that the parts write their
+    /// own pixels in parallel).
+    receivers: Vec<AtomicU32>,
 }
 
 impl Tiling {
@@ -139,13 +141,29 @@ impl Tiling {
         for p in &self.parts {
             self.offsets.push(self.offsets.last().copied().unwrap_or(0) + p.pixel.len());
         }
-        self.receiver.clear();
-        self.receiver.resize(gb.position.len(), NO_RECEIVER);
-        for (p, &o) in self.parts.iter().zip(&self.offsets) {
-            for (r, &i) in p.pixel.iter().enumerate() {
-                self.receiver[i as usize] = (o + r) as u32;
-            }
+        let n = gb.position.len();
+        if self.receivers.len() != n {
+            self.receivers = (0..n).map(|_| AtomicU32::new(NO_RECEIVER)).collect();
+        } else {
+            self.receivers.par_iter().for_each(|r| r.store(NO_RECEIVER, Ordering::Relaxed));
         }
+        // Each pixel belongs to at most one part: the stores never race.
+        self.parts.par_iter().zip(&self.offsets).for_each(|(p, &o)| {
+            for (r, &i) in p.pixel.iter().enumerate() {
+                self.receivers[i as usize].store((o + r) as u32, Ordering::Relaxed);
+            }
+        });
+    }
+
+    /// The receiver of pixel `i`, [`NO_RECEIVER`] where it sees no surface.
+    pub fn receiver(&self, i: usize) -> u32 {
+        self.receivers[i].load(Ordering::Relaxed)
+    }
+
+    /// Number of pixels.
+    #[cfg(test)]
+    pub fn pixels(&self) -> usize {
+        self.receivers.len()
     }
 
     /// A per-receiver buffer split into each part's range.
@@ -254,11 +272,11 @@ mod tests {
                 }
                 assert_eq!(next, p.pixel.len());
                 for (r, &i) in p.pixel.iter().enumerate() {
-                    assert_eq!(t.receiver[i as usize] as usize, o + r, "pixel {i}");
+                    assert_eq!(t.receiver(i as usize) as usize, o + r, "pixel {i}");
                 }
             }
             for i in 0..gb.position.len() {
-                assert_eq!(t.receiver[i] != NO_RECEIVER, gb.valid(i), "pixel {i}");
+                assert_eq!(t.receiver(i) != NO_RECEIVER, gb.valid(i), "pixel {i}");
             }
             let glossy = (0..gb.position.len()).filter(|&i| gb.specular_at(i).is_some()).count();
             assert!(glossy > 0 && t.parts.iter().map(|p| p.glossy.len()).sum::<usize>() == glossy, "every glossy pixel has its lobe");
