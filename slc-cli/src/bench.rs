@@ -24,7 +24,9 @@ pub struct BenchArgs {
     /// Ranges R swept for `clamp` (scene units).
     #[arg(long, value_delimiter = ',', default_values_t = [0.025f32, 0.05, 0.075, 0.1, 0.15, 0.2, 0.3])]
     pub ranges: Vec<f32>,
-    /// Runs per configuration; the fastest shading time is reported.
+    /// Runs per configuration: the fastest time is reported; the VPL
+    /// frame's runs are its frames 0, 1, … (a new ξ set each), and its
+    /// RMSE is their mean (with their standard deviation).
     #[arg(long, default_value_t = 3)]
     pub repeat: u32,
     /// Seed of the per-light random numbers.
@@ -119,15 +121,55 @@ fn fastest<T>(repeat: u32, mut render: impl FnMut() -> anyhow::Result<T>, key: i
     best.ok_or_else(|| anyhow!("--repeat must be at least 1"))
 }
 
+/// Frames `0..repeat` of a configuration rendered by `render(frame)` (a
+/// new ξ set each, as a user's frames have): the fastest by `key`, and the
+/// mean and sample standard deviation of `rmse` over them all (one frame's
+/// RMSE is one draw of a random error: ε decides its distribution).
+fn fastest_frames<T>(
+    repeat: u32,
+    mut render: impl FnMut(u32) -> anyhow::Result<T>,
+    key: impl Fn(&T) -> f64,
+    rmse: impl Fn(&T) -> f64,
+) -> anyhow::Result<(T, Spread)> {
+    let mut errors = Vec::new();
+    let best = fastest(
+        repeat,
+        || {
+            let f = render(errors.len() as u32)?;
+            errors.push(rmse(&f));
+            Ok(f)
+        },
+        key,
+    )?;
+    Ok((best, Spread::of(&errors)))
+}
+
+/// Mean and sample standard deviation (0 for one value).
+#[derive(Clone, Copy, Debug)]
+struct Spread {
+    mean: f64,
+    sd: f64,
+}
+
+impl Spread {
+    fn of(x: &[f64]) -> Spread {
+        let n = x.len().max(1) as f64;
+        let mean = x.iter().sum::<f64>() / n;
+        let var = if x.len() > 1 { x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0) } else { 0.0 };
+        Spread { mean, sd: var.sqrt() }
+    }
+}
+
 /// One configuration's row of a VPL report (loop evaluations per second are
 /// 0 where the backend does not count evaluations).
-fn vpl_run(settings: &VplSettings, param: Option<f32>, st: &slc_scene::vpl::VplStats, rmse: f64, stages: Vec<StageMs>) -> Run {
+fn vpl_run(settings: &VplSettings, param: Option<f32>, st: &slc_scene::vpl::VplStats, rmse: Spread, stages: Vec<StageMs>) -> Run {
     Run {
         method: settings.method.name().to_string(),
         param,
         shading_ms: st.shading_ms,
         total_ms: st.total_ms,
-        rmse,
+        rmse: rmse.mean,
+        rmse_sd: Some(rmse.sd),
         lights_per_pixel: st.lights_per_pixel,
         kept_per_pixel: st.kept_per_pixel,
         evaluations_per_second: st.evaluations as f64 / (st.shading_ms * 1e-3).max(1e-12),
@@ -188,19 +230,19 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
         bar.set_message(run_label(&settings, param));
         // Each run renders the method-independent stages again (warm), as
         // a frame whose light or camera moves must.
-        let timed = || -> anyhow::Result<VplFrame> {
+        let timed = |k: u32| -> anyhow::Result<VplFrame> {
             let inputs = ctx.time_inputs();
-            let mut f = ctx.render(&settings)?;
+            let mut f = ctx.render(&VplSettings { frame: settings.frame + k, ..settings })?;
             f.stats = f.stats.with_input_times(&inputs);
             Ok(f)
         };
-        let f = fastest(a.repeat, timed, |f: &VplFrame| f.stats.total_ms)?;
+        let (f, rmse) = fastest_frames(a.repeat, timed, |f: &VplFrame| f.stats.total_ms, |f: &VplFrame| f.image.rmse(&reference))?;
         let st = &f.stats;
         let stages =
             [("G-buffer", st.gbuffer_ms), ("RSM", st.rsm_ms), ("direct", st.direct_ms), ("shading", st.shading_ms), ("denoise", st.denoise_ms)]
                 .map(|(name, ms)| StageMs { name: name.into(), ms })
                 .to_vec();
-        runs.push(vpl_run(&settings, param, st, f.image.rmse(&reference), stages));
+        runs.push(vpl_run(&settings, param, st, rmse, stages));
         bar.inc(1);
     }
     // The unculled loop's own speed: `none` without the near field, whose
@@ -219,7 +261,7 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
         width: loaded.width,
         height: loaded.height,
         lights: ctx.vpls().len(),
-        timing: "wall clock, fastest of --repeat whole frames (every stage re-run, warm)".into(),
+        timing: "wall clock, fastest of --repeat whole frames (every stage re-run, warm; frames 0, 1, …: RMSE their mean)".into(),
         threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
         reference_from_cache: cached,
         simd: Some(slc_cpu::simd::SimdPath::best().name().into()),
@@ -256,12 +298,16 @@ fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
     for (param, settings) in configs {
         bar.set_message(run_label(&settings, param));
         // One untimed frame first: drivers compile a pipeline at its first use.
-        let st = pass_settings(&settings)?;
-        frame.render(&st)?;
-        let f = fastest(a.repeat, || frame.render(&st).map_err(anyhow::Error::from), |f: &slc_wgpu::frame::FrameRender| f.stats.shading_ms)?;
+        frame.render(&pass_settings(&settings)?)?;
+        let (f, rmse) = fastest_frames(
+            a.repeat,
+            |k| frame.render(&pass_settings(&VplSettings { frame: settings.frame + k, ..settings })?).map_err(anyhow::Error::from),
+            |f: &slc_wgpu::frame::FrameRender| f.stats.shading_ms,
+            |f: &slc_wgpu::frame::FrameRender| f.image.rmse(&reference),
+        )?;
         timing = f.timing;
         let stages = f.stages.iter().map(|s| StageMs { name: s.name.to_string(), ms: s.ms }).collect();
-        runs.push(vpl_run(&settings, param, &f.stats, f.image.rmse(&reference), stages));
+        runs.push(vpl_run(&settings, param, &f.stats, rmse, stages));
         bar.inc(1);
     }
     bar.finish_and_clear();
@@ -273,7 +319,10 @@ fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
         width: r.width,
         height: r.height,
         lights: (r.rsm_size as usize).pow(2),
-        timing: format!("{}; the whole frame on the GPU; fastest of --repeat runs by shading time", crate::notes::timing_note(timing)),
+        timing: format!(
+            "{}; the whole frame on the GPU; fastest of --repeat frames (0, 1, …: RMSE their mean) by shading time",
+            crate::notes::timing_note(timing)
+        ),
         threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
         reference_from_cache: false,
         simd: None,
@@ -316,20 +365,21 @@ fn write_report(a: &BenchArgs, report: &Report) -> anyhow::Result<()> {
         if report.reference_from_cache { "from cache" } else { "rendered" }
     );
     println!(
-        "{:<8} {:>8} {:>11} {:>10} {:>9} {:>9} {:>9} {:>10} {:>8} {:>8}",
-        "method", "param", "shading ms", "total ms", "rmse", "lights/px", "kept/px", "evals/s", "shade x", "frame x"
+        "{:<8} {:>8} {:>11} {:>10} {:>9} {:>9} {:>9} {:>9} {:>10} {:>8} {:>8}",
+        "method", "param", "shading ms", "total ms", "rmse", "rmse sd", "lights/px", "kept/px", "evals/s", "shade x", "frame x"
     );
     let speedup = |x: Option<f64>| x.map_or("-".into(), |x| format!("{x:.2}"));
     for r in &report.runs {
         // The GPU frame does not count loop evaluations: "-".
         let counted = r.evaluations_per_second > 0.0;
         println!(
-            "{:<8} {:>8} {:>11.2} {:>10.2} {:>9.5} {:>9} {:>9.1} {:>10} {:>8} {:>8}",
+            "{:<8} {:>8} {:>11.2} {:>10.2} {:>9.5} {:>9} {:>9} {:>9.1} {:>10} {:>8} {:>8}",
             r.method,
             r.param.map_or("-".into(), |p| p.to_string()),
             r.shading_ms,
             r.total_ms,
             r.rmse,
+            r.rmse_sd.map_or("-".into(), |sd| format!("{sd:.5}")),
             if counted { format!("{:.1}", r.lights_per_pixel) } else { "-".into() },
             r.kept_per_pixel,
             if counted { format!("{:.3e}", r.evaluations_per_second) } else { "-".into() },

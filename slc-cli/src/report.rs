@@ -16,8 +16,13 @@ pub struct Run {
     pub shading_ms: f64,
     /// Whole frame (ms): G-buffer, RSM, direct, shading, denoise.
     pub total_ms: f64,
-    /// RMSE of the final image against the reference.
+    /// RMSE of the final image against the reference (the mean over the
+    /// run's frames).
     pub rmse: f64,
+    /// The sample standard deviation of one frame's RMSE over the run's
+    /// frames (absent in reports from before it was measured).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rmse_sd: Option<f64>,
     /// Lights in the tile lists per shaded pixel (work of the loop).
     pub lights_per_pixel: f64,
     /// Lights kept by the roulette per shaded pixel.
@@ -138,6 +143,7 @@ struct VplCsvRow<'a> {
     shading_ms: f64,
     total_ms: f64,
     rmse: f64,
+    rmse_sd: Option<f64>,
     lights_per_pixel: f64,
     kept_per_pixel: f64,
     evaluations_per_second: f64,
@@ -177,6 +183,7 @@ pub fn write_vpl_csv(report: &Report, path: &Path) -> anyhow::Result<()> {
             shading_ms: r.shading_ms,
             total_ms: r.total_ms,
             rmse: r.rmse,
+            rmse_sd: r.rmse_sd,
             lights_per_pixel: r.lights_per_pixel,
             kept_per_pixel: r.kept_per_pixel,
             evaluations_per_second: r.evaluations_per_second,
