@@ -112,7 +112,7 @@ struct RenderArgs {
     #[arg(long)]
     seconds: Option<f64>,
     /// SLC error bound ε, the largest standard deviation one light may add
-    /// to a pixel [default: 0.008 (vpl); auto (pt): set from the scene so
+    /// to a pixel [default: 0.004 (vpl); auto (pt): set from the scene so
     /// that a shading point expects a fixed number of candidate lights].
     #[arg(long, value_parser = methods::bound_arg)]
     error_bound: Option<methods::BoundArg>,

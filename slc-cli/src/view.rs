@@ -37,7 +37,7 @@ pub struct ViewArgs {
     /// Method at start: slc | clamp | none (keys 1, 2, 3) [default: slc].
     #[arg(long)]
     method: Option<String>,
-    /// SLC error bound ε at start (keys + and -) [default: 0.008].
+    /// SLC error bound ε at start (keys + and -) [default: 0.004].
     #[arg(long)]
     error_bound: Option<f32>,
     /// Clamp range R at start [default: 0.1].

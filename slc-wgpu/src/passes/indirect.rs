@@ -239,11 +239,12 @@ pub struct IndirectSettings {
 }
 
 impl Default for IndirectSettings {
-    /// Stochastic culling at ε = 0.008, exposure 1; seed 1, frame 0;
+    /// Stochastic culling at ε = 0.004 (the CPU frame's default,
+    /// `VplSettings::default`), exposure 1; seed 1, frame 0;
     /// denoised; 5 cm clamp distance, the default near field.
     fn default() -> Self {
         IndirectSettings {
-            culling: Culling::Stochastic(slc_core::range::RangeParams::new(0.008, 1.0).expect("valid defaults")),
+            culling: Culling::Stochastic(slc_core::range::RangeParams::new(0.004, 1.0).expect("valid defaults")),
             seed: 1,
             frame: 0,
             denoise: true,
