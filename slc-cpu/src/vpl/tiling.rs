@@ -90,9 +90,8 @@ impl Tiling {
                     t.begin_group();
                     for ty in (by..(by + big).min(sh)).step_by(tile) {
                         for tx in (bx..(bx + big).min(sw)).step_by(tile) {
-                            let pixels = (ty..(ty + tile).min(sh))
-                                .flat_map(|j| (tx..(tx + tile).min(sw)).map(move |i| (sy + j * period) * w + sx + i * period));
-                            t.push_tile(gb, pixels);
+                            let rows = (ty..(ty + tile).min(sh)).map(|j| (sy + j * period) * w + sx);
+                            t.push_tile(gb, rows, tx..(tx + tile).min(sw), period);
                         }
                     }
                     t.end_group();
@@ -120,7 +119,7 @@ impl Tiling {
             t.begin_group();
             for ty in (y0..y1).step_by(tile) {
                 for tx in (x0..x1).step_by(tile) {
-                    t.push_tile(gb, (ty..(ty + tile).min(y1)).flat_map(|y| (tx..(tx + tile).min(x1)).map(move |x| y * w + x)));
+                    t.push_tile(gb, (ty..(ty + tile).min(y1)).map(|y| y * w), tx..(tx + tile).min(x1), 1);
                 }
             }
             t.end_group();
@@ -218,19 +217,25 @@ impl PartTiles {
         }
     }
 
-    /// Appends a tile of the `pixels` that see a surface (none: no tile).
-    fn push_tile(&mut self, gb: &GBuffer, pixels: impl Iterator<Item = usize>) {
+    /// Appends a tile of the pixels `row + i·step` (each `row` start of
+    /// `rows`, each `i` of `cols`) that see a surface (none: no tile).
+    fn push_tile(&mut self, gb: &GBuffer, rows: impl Iterator<Item = usize>, cols: Range<usize>, step: usize) {
         let (r0, s0) = (self.pixel.len(), self.glossy.len());
         let (mut lo, mut hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
         let glossy = !gb.specular.is_empty();
-        for i in pixels.filter(|&i| gb.valid(i)) {
-            let x = gb.position[i];
-            (lo, hi) = (lo.min(x), hi.max(x));
-            if let Some(g) = glossy.then(|| Glossy::at(gb, i)).flatten() {
-                self.glossy.push((self.pixel.len(), g));
+        for row in rows {
+            for i in (row + cols.start * step..row + cols.end * step).step_by(step) {
+                if !gb.valid(i) {
+                    continue;
+                }
+                let x = gb.position[i];
+                (lo, hi) = (lo.min(x), hi.max(x));
+                if let Some(g) = glossy.then(|| Glossy::at(gb, i)).flatten() {
+                    self.glossy.push((self.pixel.len(), g));
+                }
+                self.pixel.push(i as u32);
+                self.points.push((x, gb.normal[i]));
             }
-            self.pixel.push(i as u32);
-            self.points.push((x, gb.normal[i]));
         }
         if self.pixel.len() == r0 {
             return;
