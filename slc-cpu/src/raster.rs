@@ -247,23 +247,33 @@ fn corners(rays: &[Ray], row: usize) -> Corners {
     })
 }
 
+/// A triangle's three edges `a → b` in Plücker form for [`tile_misses`]:
+/// `(b − a, a × b, |b − a|, |a × b|)`, taken once per triangle.
+type Edges = [(Vec3, Vec3, f32, f32); 3];
+
+fn edges(t: &[Vec3; 3]) -> Edges {
+    [0, 1, 2].map(|k| {
+        let (a, b) = (t[k], t[(k + 1) % 3]);
+        let (e, m) = (b - a, a.cross(b));
+        (e, m, e.length(), m.length())
+    })
+}
+
 /// `true` when no ray of a tile, whose pixels' rays lie between its four
 /// corner pixels' `corners` (a view's ray is affine in the pixel up to a
 /// positive scale: a pinhole's or a perspective map's direction from a
 /// fixed origin, an orthographic map's origin along a fixed direction),
-/// can hit the triangle `t`: by Plücker coordinates, a line meets the
-/// triangle only where its side `d·(a × b) + (o × d)·(b − a)` of the three
-/// edges `a → b` has one sign, and each side is then linear over the tile,
+/// can hit the triangle of `edges` ([`edges`]): by Plücker coordinates, a
+/// line meets the triangle only where its side `d·(a × b) + (o × d)·(b − a)`
+/// of the three edges `a → b` has one sign, and each side is then linear
+/// over the tile,
 /// so one edge with every corner strictly on its positive side and another
 /// with every corner on its negative side rules the whole tile out (with a
 /// relative margin of 10⁻⁴ of the side's magnitude against rounding,
 /// far above the ray caster's own).
-fn tile_misses(corners: &Corners, t: &[Vec3; 3]) -> bool {
+fn tile_misses(corners: &Corners, edges: &Edges) -> bool {
     let (mut pos, mut neg) = (false, false);
-    for k in 0..3 {
-        let (a, b) = (t[k], t[(k + 1) % 3]);
-        let (e, m) = (b - a, a.cross(b));
-        let (ml, el) = (m.length(), e.length());
+    for &(e, m, el, ml) in edges {
         let (mut all_pos, mut all_neg) = (true, true);
         for &(o, d, dl, odl) in corners {
             let side = d.dot(m) + o.cross(d).dot(e);
@@ -307,6 +317,7 @@ impl ClosestHits {
 pub fn closest_hits(view: &impl View, geo: &Geometry, triangles: &[[Vec3; 3]]) -> ClosestHits {
     let (w, h) = view.size();
     let bins = Bins::new(view, triangles, TILE, view.near());
+    let edges: Vec<Edges> = triangles.par_iter().map(edges).collect();
     let tw = bins.tiles.0;
     let tiles = (0..bins.bins.len())
         .into_par_iter()
@@ -322,7 +333,7 @@ pub fn closest_hits(view: &impl View, geo: &Geometry, triangles: &[[Vec3; 3]]) -
             let mut best = vec![(f32::INFINITY, u32::MAX); rays.len()];
             let corners = corners(&rays, x1 - x0);
             for &tri in &bins.bins[tile] {
-                if tile_misses(&corners, &triangles[tri as usize]) {
+                if tile_misses(&corners, &edges[tri as usize]) {
                     continue;
                 }
                 let b = bins.boxes[tri as usize].expect("binned triangles have a box");

@@ -25,19 +25,19 @@ macro_rules! shared {
         $crate::shared!(@acc [$($w,)* stringify!(const $name: $ty = $val;)] $($rest)*);
     };
     (@acc [$($w:expr),*]
-        #[inline(always)] $(#[$m:meta])* pub fn $name:ident ( $($arg:ident : $aty:ty),* $(,)? ) -> $ret:ty $body:block
-        $($rest:tt)*) => {
-        $(#[$m])*
-        #[inline(always)]
-        #[allow(clippy::needless_return, unused_mut, clippy::collapsible_else_if, clippy::assign_op_pattern, clippy::manual_range_contains)]
-        pub fn $name($($arg: $aty),*) -> $ret $body
-        $crate::shared!(@acc [$($w,)* stringify!(fn $name($($arg: $aty),*) -> $ret $body)] $($rest)*);
+        #[inline(always)] $(#[$m:meta])* pub fn $($rest:tt)*) => {
+        $crate::shared!(@fn [$($w),*] [always] $(#[$m])* pub fn $($rest)*);
     };
     (@acc [$($w:expr),*]
+        $(#[$m:meta])* pub fn $($rest:tt)*) => {
+        $crate::shared!(@fn [$($w),*] [] $(#[$m])* pub fn $($rest)*);
+    };
+    // One `pub fn`, `#[inline]` or `#[inline(always)]` (`[always]`).
+    (@fn [$($w:expr),*] [$($mode:ident)?]
         $(#[$m:meta])* pub fn $name:ident ( $($arg:ident : $aty:ty),* $(,)? ) -> $ret:ty $body:block
         $($rest:tt)*) => {
         $(#[$m])*
-        #[inline]
+        #[inline $(($mode))?]
         #[allow(clippy::needless_return, unused_mut, clippy::collapsible_else_if, clippy::assign_op_pattern, clippy::manual_range_contains)]
         pub fn $name($($arg: $aty),*) -> $ret $body
         $crate::shared!(@acc [$($w,)* stringify!(fn $name($($arg: $aty),*) -> $ret $body)] $($rest)*);
