@@ -40,7 +40,7 @@ use rand_core::RngCore;
 use rand_pcg::Pcg32;
 use rayon::prelude::*;
 use slc_core::brdf::{bsdf_pdf, bsdf_sample, specular_probability};
-use slc_core::bsh::{BSH_NONE, Bsh, BshNode, walk::bsh_reaches};
+use slc_core::bsh::{Bsh, walk::bsh_reaches};
 use slc_core::importance::Receiver;
 use slc_core::importance::weighted_select_pdf;
 use slc_core::light::{Light, connection_cosine, connection_factor};
@@ -62,6 +62,8 @@ pub struct CpuPathTracer {
     pts: PtScene,
     geo: Geometry,
     bsh: Bsh,
+    /// Each light's `r_t²` and the range parameters it was computed for.
+    rt2: Option<(RangeParams, Vec<f32>)>,
     /// The scene's bounding-box diagonal (ray offsets scale with it).
     diag: f32,
 }
@@ -70,7 +72,13 @@ impl CpuPathTracer {
     /// Builds the geometry BVH of `pts`.
     pub fn new(pts: &PtScene) -> CpuPathTracer {
         let scene = pts.scene();
-        CpuPathTracer { geo: Geometry::new(&scene.triangles), bsh: pts.light_set().bsh().clone(), diag: scene.diagonal(), pts: pts.clone() }
+        CpuPathTracer {
+            geo: Geometry::new(&scene.triangles),
+            bsh: pts.light_set().bsh().clone(),
+            rt2: None,
+            diag: scene.diagonal(),
+            pts: pts.clone(),
+        }
     }
 
     /// The prepared scene.
@@ -97,35 +105,42 @@ struct NeeState {
     w_sum: f32,
 }
 
-/// Per-pass light state: ξ-dependent ranges and each light's BSH leaf
-/// (the BSH itself is refitted in place).
+/// Per-pass light state of the SLC methods: ξ-dependent ranges (the BSH
+/// itself is refitted in place). The baselines (uniform, power, light BVH)
+/// have none: they cull nothing, so a pass costs them no ranges and no
+/// refit, as their authors built them.
+#[derive(Default)]
 struct Pass {
     rt2: Vec<f32>,
     r2: Vec<f32>,
-    leaves: Vec<BshNode>,
-}
-
-impl Pass {
-    /// Whether light `l`'s range sphere, scaled for the receiver `rc`
-    /// (range lobe `rl`; [`bsh_reaches`]), holds it: it is one of the
-    /// receiver's candidates.
-    fn in_range(&self, l: usize, rc: &Receiver, rl: Vec4) -> bool {
-        bsh_reaches(self.leaves[l], rc.p, rc.r, rl)
-    }
 }
 
 impl CpuPathTracer {
-    /// New ξ for every light (one per pass), their ranges, and the BSH
-    /// refitted to them in O(n).
-    fn pass_state(&mut self, params: &RangeParams, seed: u32, pass: u32) -> Result<Pass, RenderError> {
-        let rt2: Vec<f32> = self.lights().iter().map(|l| params.threshold_range2(l.peak())).collect();
-        let r2: Vec<f32> = rt2.iter().enumerate().map(|(i, &t)| random_range2(t, xi_for(seed, pass, i as u32))).collect();
-        self.bsh.refit(&r2).map_err(|e| RenderError::Setting(e.to_string()))?;
-        let mut leaves = vec![BshNode::default(); r2.len()];
-        for n in self.bsh.nodes().iter().filter(|n| n.child == BSH_NONE) {
-            leaves[n.light as usize] = *n;
+    /// Whether light `l`'s range sphere, scaled for the receiver `rc`
+    /// (range lobe `rl`; [`bsh_reaches`]), holds it this pass: it is one
+    /// of the receiver's candidates.
+    fn in_range(&self, l: usize, rc: &Receiver, rl: Vec4) -> bool {
+        bsh_reaches(self.bsh.leaf(l), rc.p, rc.r, rl)
+    }
+
+    /// The SLC methods' state for pass `pass`: new ξ for every light,
+    /// their ranges (`r_t²`, which depends only on the error bound, kept
+    /// from the last pass), and the BSH refitted to them in O(n), each
+    /// height of the tree in parallel. Empty for the baselines.
+    fn pass_state(&mut self, method: PtMethod, params: &RangeParams, seed: u32, pass: u32) -> Result<Pass, RenderError> {
+        if !matches!(method, PtMethod::Slc | PtMethod::SlcReservoir | PtMethod::SlcWeighted) {
+            return Ok(Pass::default());
         }
-        Ok(Pass { rt2, r2, leaves })
+        if self.rt2.as_ref().is_none_or(|(p, _)| p != params) {
+            let rt2 = self.lights().par_iter().map(|l| params.threshold_range2(l.peak())).collect();
+            self.rt2 = Some((*params, rt2));
+        }
+        let rt2 = self.rt2.as_ref().map(|(_, rt2)| rt2.clone()).unwrap_or_default();
+        let r2: Vec<f32> = rt2.par_iter().enumerate().map(|(i, &t)| random_range2(t, xi_for(seed, pass, i as u32))).collect();
+        self.bsh
+            .refit_grouped(&r2, |group, node| group.par_iter().with_min_len(1024).map(|&i| node(i)).collect())
+            .map_err(|e| RenderError::Setting(e.to_string()))?;
+        Ok(Pass { rt2, r2 })
     }
 
     /// Renders `passes` more passes of one sample per pixel into `acc`
@@ -139,7 +154,7 @@ impl CpuPathTracer {
         for _ in 0..passes {
             let t = Instant::now();
             let pass = acc.passes;
-            let state = self.pass_state(&params, s.seed, pass)?;
+            let state = self.pass_state(s.method, &params, s.seed, pass)?;
             let st = &state;
             let this = &*self;
             let image: Vec<Vec3> = (0..w * h)
@@ -176,17 +191,17 @@ impl CpuPathTracer {
         // The receiver's range scale s toward this light (1 for a Lambertian one).
         let rl = rc.range_lobe();
         let rs = rc.range_scale_to(rl, &self.pts.light_set().cones()[l]);
-        let in_range = in_nee || st.in_range(l, rc, rl);
+        let in_range = || in_nee || self.in_range(l, rc, rl);
         let v = x - y;
         let d2 = v.length_squared();
         let cos_y = if d2 > 0.0 { t.normal().dot(v / d2.sqrt()) } else { 0.0 };
         // (selection probability, r_t² of the RR test; +∞ for the baselines)
         let (select, rt2) = match s.method {
             PtMethod::Slc => (1.0, rs * st.rt2[l]),
-            PtMethod::SlcReservoir => (reservoir_select_pdf(nee.seen, in_range, RESERVOIR_K as u32), rs * st.rt2[l]),
+            PtMethod::SlcReservoir => (reservoir_select_pdf(nee.seen, in_range(), RESERVOIR_K as u32), rs * st.rt2[l]),
             PtMethod::SlcWeighted => {
                 let w = self.pts.light_set().cones()[l].weight(rc, rs * st.rt2[l]);
-                (weighted_select_pdf(w, nee.w_sum, in_range, WEIGHTED_K as u32), rs * st.rt2[l])
+                (weighted_select_pdf(w, nee.w_sum, in_range(), WEIGHTED_K as u32), rs * st.rt2[l])
             }
             PtMethod::Uniform => (1.0 / self.lights().len() as f32, f32::INFINITY),
             PtMethod::Power => (self.pts.light_set().alias().pdf(l) as f32, f32::INFINITY),
@@ -459,7 +474,7 @@ mod tests {
         let mut pts = CpuPathTracer::new(&PtScene::new(&Scene::cornell_box_split_light(4), &[]).unwrap());
         let (x, n) = (Vec3::new(0.3, 0.0, 0.3), Vec3::Y);
         let params = RangeParams::new(0.005, 1.0).unwrap();
-        let st = pts.pass_state(&params, 7, 0).unwrap();
+        let st = pts.pass_state(PtMethod::SlcWeighted, &params, 7, 0).unwrap();
         let wo = Vec3::new(0.3, 0.8, -0.2).normalize();
         let (mut inside, mut outside) = (0, 0);
         for (mat, method) in [Material::lambertian(Vec3::splat(0.5), Vec3::ZERO), Material::gltf(Vec3::splat(0.9), 1.0, 0.4)]
@@ -479,7 +494,7 @@ mod tests {
             let s = PtSettings { method, error_bound: 0.005, ..PtSettings::default() };
             for l in 0..pts.light_count() {
                 let Light::Triangle(t) = &pts.lights()[l] else { continue };
-                let in_range = st.in_range(l, &rc, rl);
+                let in_range = pts.in_range(l, &rc, rl);
                 let rs = rc.range_scale_to(rl, &cones[l]);
                 for (u1, u2) in [(0.1, 0.2), (0.5, 0.5), (0.9, 0.05)] {
                     let y = t.sample(u1, u2);
@@ -530,7 +545,7 @@ mod tests {
     fn weighted_picks_match_brute_force_enumeration() {
         let pts = {
             let mut p = CpuPathTracer::new(&PtScene::new(&Scene::cornell_box_split_light(8), &[]).unwrap());
-            let st = p.pass_state(&RangeParams::new(0.016, 1.0).unwrap(), 3, 0).unwrap();
+            let st = p.pass_state(PtMethod::SlcWeighted, &RangeParams::new(0.016, 1.0).unwrap(), 3, 0).unwrap();
             (p, st)
         };
         let (pts, st) = (&pts.0, &pts.1);
@@ -547,7 +562,7 @@ mod tests {
         // (the walk's inner nodes are not consulted).
         let scale: Vec<f32> = cones.iter().map(|c| rc.range_scale_to(rl, c)).collect();
         assert!(scale.iter().any(|&s| s < 0.5 * rs) && scale.iter().any(|&s| s > 0.8 * rs), "scales toward the lights {scale:?}, peak {rs}");
-        let holds = |l: usize| sphere_contains_point(st.leaves[l].center, bsh_scaled_radius(st.leaves[l], scale[l].sqrt()), x);
+        let holds = |l: usize| sphere_contains_point(pts.bsh.leaf(l).center, bsh_scaled_radius(pts.bsh.leaf(l), scale[l].sqrt()), x);
         let brute: Vec<(usize, f64)> =
             (0..pts.light_count()).filter(|&l| holds(l)).map(|l| (l, cones[l].weight(&rc, scale[l] * st.rt2[l]) as f64)).collect();
         let w_brute: f64 = brute.iter().map(|&(_, w)| w).sum();
