@@ -249,11 +249,23 @@ impl GpuLightSet {
     /// Records the range update and the BSH refit into `cp` (and binds the
     /// scene tables as group 1).
     pub(crate) fn encode(&self, cp: &mut wgpu::ComputePass) {
-        cp.set_bind_group(1, &self.table, &[]);
+        self.encode_update(cp);
+        self.encode_refit(cp);
+    }
+
+    /// Records the range update alone (and binds the scene tables as group
+    /// 1): what a method that culls nothing needs once, its `r²` all +∞
+    /// (`set_threshold(None)`), with no BSH to refit.
+    pub(crate) fn encode_update(&self, cp: &mut wgpu::ComputePass) {
+        self.bind_tables(cp);
         cp.set_pipeline(&self.update.0);
         cp.set_bind_group(0, &self.b.update_group, &[0]);
         cp.dispatch_workgroups(self.n.div_ceil(WG), 1, 1);
-        self.encode_refit(cp);
+    }
+
+    /// Binds the scene tables as group 1 of `cp`.
+    pub(crate) fn bind_tables(&self, cp: &mut wgpu::ComputePass) {
+        cp.set_bind_group(1, &self.table, &[]);
     }
 
     /// Records the BSH refit alone (every level, deepest first), for ranges

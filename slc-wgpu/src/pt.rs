@@ -296,7 +296,15 @@ impl GpuPt {
             {
                 let writes = timer.as_mut().and_then(|t| t.next());
                 let mut cp = enc.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc pt pass"), timestamp_writes: writes });
-                self.set.encode(&mut cp);
+                // The baselines cull nothing: their ranges are +∞ in every
+                // pass (written once per call), and no BSH is walked.
+                if s.method.culls() {
+                    self.set.encode(&mut cp);
+                } else if k == 0 {
+                    self.set.encode_update(&mut cp);
+                } else {
+                    self.set.bind_tables(&mut cp);
+                }
                 for depth in 0..=s.max_depth as usize {
                     cp.set_pipeline(extend);
                     cp.set_bind_group(0, &self.extend.1, &[self.pt_params.offset(depth)]);

@@ -193,6 +193,33 @@ fn gpu_path_tracer_hard_cases() {
     }
 }
 
+/// The baselines skip the SLC methods' per-pass BSH refit and write their
+/// +∞ ranges once per `render` call: a baseline rendered after an SLC
+/// method on the same `GpuPt` (whose ranges and tree that method left
+/// behind) gives, pass by pass, exactly the image a fresh `GpuPt` gives,
+/// over several calls (every pass of a call after its first reads the
+/// ranges its first wrote).
+fn gpu_baselines_after_an_slc_method_are_unchanged() {
+    let Some(g) = gpu() else { return };
+    let (s, lights) = scene(1.0, true);
+    let pts = PtScene::new(&s, &lights).unwrap();
+    for method in [PtMethod::Uniform, PtMethod::Power, PtMethod::LightBvh] {
+        let set = PtSettings { method, error_bound: 0.05, seed: 3, ..PtSettings::default() };
+        let render = |gpt: &mut GpuPt| {
+            let mut acc = PtRender::new(W, H);
+            for _ in 0..3 {
+                gpt.render(&mut acc, &set, 2).unwrap();
+            }
+            acc.image().data
+        };
+        let fresh = render(&mut GpuPt::new(g, &pts, W, H).unwrap());
+        let mut used = GpuPt::new(g, &pts, W, H).unwrap();
+        let slc = PtSettings { method: PtMethod::SlcWeighted, ..set };
+        used.render(&mut PtRender::new(W, H), &slc, 2).unwrap();
+        assert!(render(&mut used) == fresh, "{}: the image depends on the method rendered before", method.name());
+    }
+}
+
 /// A mismatched accumulation, a zero depth and a NaN error bound are
 /// typed errors on the GPU.
 fn gpu_path_tracer_rejects_bad_settings() {
@@ -212,4 +239,5 @@ slc_tests::harness!(
     Gpu: gpu_path_tracer_matches_cpu_on_the_scene_suite,
     Gpu: gpu_path_tracer_hard_cases,
     Gpu: gpu_path_tracer_rejects_bad_settings,
+    Gpu: gpu_baselines_after_an_slc_method_are_unchanged,
 );
