@@ -202,33 +202,48 @@ pub mod walk {
 
         /// The refit's step at inner node `i`: the union of its two
         /// children's spheres (its first child is `child`, the second that
-        /// child's `next`), `(centre, radius)`. Leaves take
-        /// `range_radius(R, r²)` around their light.
+        /// child's `next`), `(centre, radius)` ([`bsh_pair_sphere`]).
+        /// Leaves take `range_radius(R, r²)` around their light.
         pub fn bsh_children_sphere(nodes: BshNodes, i: u32) -> vec4f {
             let left: BshNode = bsh_node(nodes, bsh_node(nodes, i).child);
-            let right: BshNode = bsh_node(nodes, left.next);
-            return sphere_union(left.center, left.radius, right.center, right.radius);
+            return bsh_pair_sphere(left, bsh_node(nodes, left.next));
         }
 
         /// The refit's light-bound radius of inner node `i` about its new
-        /// centre `center` (after [`bsh_children_sphere`]): `max(|center −
-        /// c_k| + A_k)` over its two children `k` (a leaf's `A` is its
-        /// light's extent `R`), padded like a sphere union.
+        /// centre `center` (after [`bsh_children_sphere`];
+        /// [`bsh_pair_extent`]).
         pub fn bsh_children_extent(nodes: BshNodes, i: u32, center: vec3f) -> f32 {
             let left: BshNode = bsh_node(nodes, bsh_node(nodes, i).child);
-            let right: BshNode = bsh_node(nodes, left.next);
+            return bsh_pair_extent(left, bsh_node(nodes, left.next), center);
+        }
+
+        /// The refit's largest range below inner node `i`
+        /// ([`bsh_pair_range`]; stored as the bits of its `light` field).
+        pub fn bsh_children_range(nodes: BshNodes, i: u32) -> f32 {
+            let left: BshNode = bsh_node(nodes, bsh_node(nodes, i).child);
+            return bsh_pair_range(left, bsh_node(nodes, left.next));
+        }
+
+        /// The union of an inner node's two children's spheres, `(centre,
+        /// radius)`.
+        pub fn bsh_pair_sphere(left: BshNode, right: BshNode) -> vec4f {
+            return sphere_union(left.center, left.radius, right.center, right.radius);
+        }
+
+        /// An inner node's light-bound radius about its new centre
+        /// `center`: `max(|center − c_k| + A_k)` over its two children `k`
+        /// (a leaf's `A` is its light's extent `R`), padded like a sphere
+        /// union.
+        pub fn bsh_pair_extent(left: BshNode, right: BshNode, center: vec3f) -> f32 {
             let vl: vec3f = left.center - center;
             let vr: vec3f = right.center - center;
             let a: f32 = max(sqrt(dot(vl, vl)) + left.extent, sqrt(dot(vr, vr)) + right.extent);
             return a + sphere_pad(a, center);
         }
 
-        /// The refit's largest range below inner node `i`: the larger of
-        /// its two children's [`bsh_range_bound`] (stored as the bits of
-        /// its `light` field).
-        pub fn bsh_children_range(nodes: BshNodes, i: u32) -> f32 {
-            let left: BshNode = bsh_node(nodes, bsh_node(nodes, i).child);
-            let right: BshNode = bsh_node(nodes, left.next);
+        /// An inner node's largest range below it: the larger of its two
+        /// children's [`bsh_range_bound`].
+        pub fn bsh_pair_range(left: BshNode, right: BshNode) -> f32 {
             return max(bsh_range_bound(left), bsh_range_bound(right));
         }
     }
@@ -241,9 +256,6 @@ pub struct Bsh {
     bounds: Vec<LightBound>,
     /// Each light's leaf (node index).
     leaves: Vec<u32>,
-    /// The nodes by height (leaves first), each group's nodes depending
-    /// only on earlier groups' ([`Bsh::refit_grouped`]).
-    heights: Vec<Vec<u32>>,
 }
 
 impl Bsh {
@@ -263,25 +275,14 @@ impl Bsh {
                 return Err(BshError::BadExtent(i, b.extent));
             }
         }
-        let mut bsh = Bsh { nodes: Vec::with_capacity(2 * bounds.len()), bounds: bounds.to_vec(), leaves: Vec::new(), heights: Vec::new() };
+        let mut bsh = Bsh { nodes: Vec::with_capacity(2 * bounds.len()), bounds: bounds.to_vec(), leaves: Vec::new() };
         if !bounds.is_empty() {
             let mut idx: Vec<u32> = (0..bounds.len() as u32).collect();
             bsh.emit(&mut idx, BSH_NONE);
         }
         bsh.leaves = alloc::vec![BSH_NONE; bounds.len()];
-        let mut height = alloc::vec![0usize; bsh.nodes.len()];
-        for i in (0..bsh.nodes.len()).rev() {
-            let n = bsh.nodes[i];
-            if n.child == BSH_NONE {
-                bsh.leaves[n.light as usize] = i as u32;
-            } else {
-                let left = n.child as usize;
-                height[i] = 1 + height[left].max(height[bsh.nodes[left].next as usize]);
-            }
-            if bsh.heights.len() <= height[i] {
-                bsh.heights.resize(height[i] + 1, Vec::new());
-            }
-            bsh.heights[height[i]].push(i as u32);
+        for (i, n) in bsh.nodes.iter().enumerate().filter(|(_, n)| n.child == BSH_NONE) {
+            bsh.leaves[n.light as usize] = i as u32;
         }
         bsh.refit_with(|_| 0.0);
         Ok(bsh)
@@ -326,42 +327,29 @@ impl Bsh {
         Ok(())
     }
 
-    /// [`Bsh::refit`] with each group of independent nodes (one height of
-    /// the tree, leaves first) mapped by `map(group, refitted)`, which must
-    /// return `refitted(i)` for every node `i` of `group`, in order: a
-    /// caller may map in parallel (the CPU path tracer does, with rayon).
-    /// The same nodes as [`Bsh::refit`], bit for bit.
-    pub fn refit_grouped(&mut self, r2: &[f32], map: impl Fn(&[u32], &(dyn Fn(u32) -> BshNode + Sync)) -> Vec<BshNode>) -> Result<(), BshError> {
+    /// [`Bsh::refit`] with the two subtrees of every node whose subtree
+    /// has more than `grain` nodes refitted by `join(left, right)`, which
+    /// may run the two at once (the CPU path tracer passes rayon's
+    /// `join`): the same nodes, bit for bit (each node is a function of its
+    /// children alone, and a subtree is a contiguous run of the pre-order
+    /// array).
+    pub fn refit_split(&mut self, r2: &[f32], grain: usize, join: &Join) -> Result<(), BshError> {
         self.check_ranges(r2)?;
-        for g in 0..self.heights.len() {
-            let group = &self.heights[g];
-            let this = &*self;
-            let nodes = map(group, &|i| this.refitted(i as usize, |l| r2[l]));
-            debug_assert_eq!(nodes.len(), group.len(), "refit_grouped: one node per node of the group");
-            for (&i, n) in group.iter().zip(nodes) {
-                self.nodes[i as usize] = n;
-            }
+        if !self.nodes.is_empty() {
+            refit_subtree(&mut self.nodes, 0, &self.bounds, r2, grain.max(1), join);
         }
         Ok(())
     }
 
     /// Node `i` refitted for squared random ranges `r2(light)`, from its
-    /// children's current spheres: a leaf's range sphere `(c, R + r)`, an
-    /// inner node's union of its children's spheres with the radius of its
-    /// light bounds about the new centre and the largest range below it.
+    /// children's current spheres ([`leaf_refitted`], [`inner_refitted`]).
     fn refitted(&self, i: usize, r2: impl Fn(usize) -> f32) -> BshNode {
-        let mut n = self.nodes[i];
+        let n = self.nodes[i];
         if n.child == BSH_NONE {
-            let s = self.bounds[n.light as usize].range_sphere(r2(n.light as usize));
-            (n.center, n.radius) = (s.center, s.radius);
-        } else {
-            let u = walk::bsh_children_sphere(&self.nodes, i as u32);
-            let s = Sphere::new(Vec3::new(u.x, u.y, u.z), u.w);
-            (n.center, n.radius) = (s.center, s.radius);
-            n.extent = walk::bsh_children_extent(&self.nodes, i as u32, s.center);
-            n.light = walk::bsh_children_range(&self.nodes, i as u32).to_bits();
+            return leaf_refitted(n, &self.bounds, r2);
         }
-        n
+        let left = self.nodes[n.child as usize];
+        inner_refitted(n, left, self.nodes[left.next as usize])
     }
 
     fn refit_with(&mut self, r2: impl Fn(usize) -> f32) {
@@ -466,6 +454,62 @@ impl Bsh {
     }
 }
 
+/// How [`Bsh::refit_split`] runs two subtrees' refits: both, in any
+/// order or at once.
+pub type Join = dyn Fn(&mut (dyn FnMut() + Send), &mut (dyn FnMut() + Send)) + Sync;
+
+/// A leaf refitted: its light's range sphere `(c, R + r)`.
+fn leaf_refitted(mut n: BshNode, bounds: &[LightBound], r2: impl Fn(usize) -> f32) -> BshNode {
+    let s = bounds[n.light as usize].range_sphere(r2(n.light as usize));
+    (n.center, n.radius) = (s.center, s.radius);
+    n
+}
+
+/// An inner node refitted from its two children: the union of their
+/// spheres, the radius of its light bounds about the new centre and the
+/// largest range below it ([`walk::bsh_pair_sphere`],
+/// [`walk::bsh_pair_extent`], [`walk::bsh_pair_range`]: the GPU refit's
+/// functions).
+fn inner_refitted(mut n: BshNode, left: BshNode, right: BshNode) -> BshNode {
+    let u = walk::bsh_pair_sphere(left, right);
+    let s = Sphere::new(Vec3::new(u.x, u.y, u.z), u.w);
+    (n.center, n.radius) = (s.center, s.radius);
+    n.extent = walk::bsh_pair_extent(left, right, s.center);
+    n.light = walk::bsh_pair_range(left, right).to_bits();
+    n
+}
+
+/// Refits the subtree that is all of `nodes`, its root `nodes[0]` at index
+/// `base` of the whole array (links are absolute): subtrees above `grain`
+/// nodes split in two through `join`, smaller ones in reverse pre-order.
+fn refit_subtree(nodes: &mut [BshNode], base: u32, bounds: &[LightBound], r2: &[f32], grain: usize, join: &Join) {
+    let root = nodes[0];
+    if root.child == BSH_NONE {
+        nodes[0] = leaf_refitted(root, bounds, |l| r2[l]);
+        return;
+    }
+    if nodes.len() <= grain {
+        for k in (0..nodes.len()).rev() {
+            let n = nodes[k];
+            nodes[k] = if n.child == BSH_NONE {
+                leaf_refitted(n, bounds, |l| r2[l])
+            } else {
+                let left = nodes[(n.child - base) as usize];
+                inner_refitted(n, left, nodes[(left.next - base) as usize])
+            };
+        }
+        return;
+    }
+    // The left child's subtree runs up to the right child.
+    let right_at = (nodes[1].next - base) as usize;
+    let (head, rest) = nodes.split_at_mut(1);
+    let (left, right) = rest.split_at_mut(right_at - 1);
+    join(&mut || refit_subtree(left, base + 1, bounds, r2, grain, join), &mut || {
+        refit_subtree(right, base + right_at as u32, bounds, r2, grain, join)
+    });
+    head[0] = inner_refitted(head[0], left[0], right[0]);
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -497,13 +541,13 @@ mod tests {
         assert_eq!(seen, [1; 7]);
     }
 
-    /// The grouped refit (each height's nodes mapped at once, as the CPU
-    /// path tracer maps them in parallel; here in reverse order, which a
-    /// group's independence allows) leaves the same nodes as the serial
-    /// one, bit for bit, over 300 lights with heavy-tailed ranges, an
-    /// unbalanced count and extents; every light's leaf is its own.
+    /// The split refit (subtrees above the grain refitted through `join`,
+    /// here the second before the first, which their independence allows)
+    /// leaves the same nodes as the serial one, bit for bit, over 300
+    /// lights with heavy-tailed ranges, an unbalanced count and extents, at
+    /// every grain; every light's leaf is its own.
     #[test]
-    fn grouped_refit_equals_serial_refit() {
+    fn split_refit_equals_serial_refit() {
         use rand_core::{RngCore, SeedableRng};
         let mut rng = rand_pcg::Pcg32::seed_from_u64(5);
         let mut u = move || rng.next_u32() as f32 / 4294967296.0;
@@ -511,13 +555,19 @@ mod tests {
         let r2: Vec<f32> = (0..300).map(|_| 0.01 / (1.0 - u()).max(1e-6)).collect();
         let mut serial = Bsh::build(&b).unwrap();
         serial.refit(&r2).unwrap();
-        let mut grouped = Bsh::build(&b).unwrap();
-        grouped.refit_grouped(&r2, |g, node| g.iter().rev().map(|&i| node(i)).collect::<Vec<_>>().into_iter().rev().collect()).unwrap();
-        assert_eq!(serial.nodes(), grouped.nodes());
+        let reversed: &Join = &|a, b| {
+            b();
+            a();
+        };
+        for grain in [0, 1, 2, 7, 64, 1000] {
+            let mut split = Bsh::build(&b).unwrap();
+            split.refit_split(&r2, grain, reversed).unwrap();
+            assert!(serial.nodes() == split.nodes(), "grain {grain}");
+        }
         for l in 0..300 {
             assert!(serial.leaf(l).child == BSH_NONE && serial.leaf(l).light == l as u32);
         }
-        assert!(grouped.refit_grouped(&[1.0], |g, node| g.iter().map(|&i| node(i)).collect()).is_err());
+        assert!(serial.refit_split(&[1.0], 8, reversed).is_err());
     }
 
     #[test]

@@ -105,6 +105,9 @@ struct NeeState {
     w_sum: f32,
 }
 
+/// Subtrees of at most this many nodes are refitted on one thread.
+const REFIT_GRAIN: usize = 4096;
+
 /// Per-pass light state of the SLC methods: ξ-dependent ranges (the BSH
 /// itself is refitted in place). The baselines (uniform, power, light BVH)
 /// have none: they cull nothing, so a pass costs them no ranges and no
@@ -125,8 +128,9 @@ impl CpuPathTracer {
 
     /// The SLC methods' state for pass `pass`: new ξ for every light,
     /// their ranges (`r_t²`, which depends only on the error bound, kept
-    /// from the last pass), and the BSH refitted to them in O(n), each
-    /// height of the tree in parallel. Empty for the baselines.
+    /// from the last pass), and the BSH refitted to them in O(n), its
+    /// subtrees in parallel ([`Bsh::refit_split`]). Empty for the
+    /// baselines.
     fn pass_state(&mut self, method: PtMethod, params: &RangeParams, seed: u32, pass: u32) -> Result<Pass, RenderError> {
         if !matches!(method, PtMethod::Slc | PtMethod::SlcReservoir | PtMethod::SlcWeighted) {
             return Ok(Pass::default());
@@ -137,9 +141,7 @@ impl CpuPathTracer {
         }
         let rt2 = self.rt2.as_ref().map(|(_, rt2)| rt2.clone()).unwrap_or_default();
         let r2: Vec<f32> = rt2.par_iter().enumerate().map(|(i, &t)| random_range2(t, xi_for(seed, pass, i as u32))).collect();
-        self.bsh
-            .refit_grouped(&r2, |group, node| group.par_iter().with_min_len(1024).map(|&i| node(i)).collect())
-            .map_err(|e| RenderError::Setting(e.to_string()))?;
+        self.bsh.refit_split(&r2, REFIT_GRAIN, &|a, b| _ = rayon::join(a, b)).map_err(|e| RenderError::Setting(e.to_string()))?;
         Ok(Pass { rt2, r2 })
     }
 

@@ -136,32 +136,47 @@ fn bsh_node(nodes: u32, i: u32) -> BshNode {
     return _e4;
 }
 
+fn bsh_pair_sphere(left: BshNode, right: BshNode) -> vec4<f32> {
+    let _e6 = sphere_union(left.center, left.radius, right.center, right.radius);
+    return _e6;
+}
+
 fn bsh_children_sphere(nodes_1: u32, i_1: u32) -> vec4<f32> {
     let _e2 = bsh_node(nodes_1, i_1);
     let _e4 = bsh_node(nodes_1, _e2.child);
     let _e6 = bsh_node(nodes_1, _e4.next);
-    let _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
-    return _e11;
+    let _e7 = bsh_pair_sphere(_e4, _e6);
+    return _e7;
 }
 
-fn bsh_children_extent(nodes_2: u32, i_2: u32, center: vec3<f32>) -> f32 {
+fn bsh_pair_extent(left_1: BshNode, right_1: BshNode, center: vec3<f32>) -> f32 {
+    let vl = (left_1.center - center);
+    let vr = (right_1.center - center);
+    let a = max((sqrt(dot(vl, vl)) + left_1.extent), (sqrt(dot(vr, vr)) + right_1.extent));
+    let _e16 = sphere_pad(a, center);
+    return (a + _e16);
+}
+
+fn bsh_children_extent(nodes_2: u32, i_2: u32, center_1: vec3<f32>) -> f32 {
     let _e3 = bsh_node(nodes_2, i_2);
     let _e5 = bsh_node(nodes_2, _e3.child);
     let _e7 = bsh_node(nodes_2, _e5.next);
-    let vl = (_e5.center - center);
-    let vr = (_e7.center - center);
-    let a = max((sqrt(dot(vl, vl)) + _e5.extent), (sqrt(dot(vr, vr)) + _e7.extent));
-    let _e21 = sphere_pad(a, center);
-    return (a + _e21);
+    let _e8 = bsh_pair_extent(_e5, _e7, center_1);
+    return _e8;
+}
+
+fn bsh_pair_range(left_2: BshNode, right_2: BshNode) -> f32 {
+    let _e2 = bsh_range_bound(left_2);
+    let _e3 = bsh_range_bound(right_2);
+    return max(_e2, _e3);
 }
 
 fn bsh_children_range(nodes_3: u32, i_3: u32) -> f32 {
     let _e2 = bsh_node(nodes_3, i_3);
     let _e4 = bsh_node(nodes_3, _e2.child);
     let _e6 = bsh_node(nodes_3, _e4.next);
-    let _e7 = bsh_range_bound(_e4);
-    let _e8 = bsh_range_bound(_e6);
-    return max(_e7, _e8);
+    let _e7 = bsh_pair_range(_e4, _e6);
+    return _e7;
 }
 
 @compute @workgroup_size(64, 1, 1) 

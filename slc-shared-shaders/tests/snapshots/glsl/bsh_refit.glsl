@@ -138,32 +138,47 @@ BshNode bsh_node(uint nodes, uint i) {
     return _e4;
 }
 
+vec4 bsh_pair_sphere(BshNode left, BshNode right) {
+    vec4 _e6 = sphere_union(left.center, left.radius, right.center, right.radius);
+    return _e6;
+}
+
 vec4 bsh_children_sphere(uint nodes_1, uint i_1) {
     BshNode _e2 = bsh_node(nodes_1, i_1);
     BshNode _e4 = bsh_node(nodes_1, _e2.child);
     BshNode _e6 = bsh_node(nodes_1, _e4.next);
-    vec4 _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
-    return _e11;
+    vec4 _e7 = bsh_pair_sphere(_e4, _e6);
+    return _e7;
 }
 
-float bsh_children_extent(uint nodes_2, uint i_2, vec3 center) {
+float bsh_pair_extent(BshNode left_1, BshNode right_1, vec3 center) {
+    vec3 vl = (left_1.center - center);
+    vec3 vr = (right_1.center - center);
+    float a = max((sqrt(dot(vl, vl)) + left_1.extent), (sqrt(dot(vr, vr)) + right_1.extent));
+    float _e16 = sphere_pad(a, center);
+    return (a + _e16);
+}
+
+float bsh_children_extent(uint nodes_2, uint i_2, vec3 center_1) {
     BshNode _e3 = bsh_node(nodes_2, i_2);
     BshNode _e5 = bsh_node(nodes_2, _e3.child);
     BshNode _e7 = bsh_node(nodes_2, _e5.next);
-    vec3 vl = (_e5.center - center);
-    vec3 vr = (_e7.center - center);
-    float a = max((sqrt(dot(vl, vl)) + _e5.extent), (sqrt(dot(vr, vr)) + _e7.extent));
-    float _e21 = sphere_pad(a, center);
-    return (a + _e21);
+    float _e8 = bsh_pair_extent(_e5, _e7, center_1);
+    return _e8;
+}
+
+float bsh_pair_range(BshNode left_2, BshNode right_2) {
+    float _e2 = bsh_range_bound(left_2);
+    float _e3 = bsh_range_bound(right_2);
+    return max(_e2, _e3);
 }
 
 float bsh_children_range(uint nodes_3, uint i_3) {
     BshNode _e2 = bsh_node(nodes_3, i_3);
     BshNode _e4 = bsh_node(nodes_3, _e2.child);
     BshNode _e6 = bsh_node(nodes_3, _e4.next);
-    float _e7 = bsh_range_bound(_e4);
-    float _e8 = bsh_range_bound(_e6);
-    return max(_e7, _e8);
+    float _e7 = bsh_pair_range(_e4, _e6);
+    return _e7;
 }
 
 void main() {

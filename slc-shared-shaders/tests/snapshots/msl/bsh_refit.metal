@@ -162,6 +162,14 @@ BshNode bsh_node(
     return _e4;
 }
 
+metal::float4 bsh_pair_sphere(
+    BshNode left,
+    BshNode right
+) {
+    metal::float4 _e6 = sphere_union(left.center, left.radius, right.center, right.radius);
+    return _e6;
+}
+
 metal::float4 bsh_children_sphere(
     BshNodes nodes_1,
     uint i_1,
@@ -171,25 +179,43 @@ metal::float4 bsh_children_sphere(
     BshNode _e2 = bsh_node(nodes_1, i_1, bsh_nodes, _buffer_sizes);
     BshNode _e4 = bsh_node(nodes_1, _e2.child, bsh_nodes, _buffer_sizes);
     BshNode _e6 = bsh_node(nodes_1, _e4.next, bsh_nodes, _buffer_sizes);
-    metal::float4 _e11 = sphere_union(_e4.center, _e4.radius, _e6.center, _e6.radius);
-    return _e11;
+    metal::float4 _e7 = bsh_pair_sphere(_e4, _e6);
+    return _e7;
+}
+
+float bsh_pair_extent(
+    BshNode left_1,
+    BshNode right_1,
+    metal::float3 center
+) {
+    metal::float3 vl = left_1.center - center;
+    metal::float3 vr = right_1.center - center;
+    float a = metal::max(metal::sqrt(metal::dot(vl, vl)) + left_1.extent, metal::sqrt(metal::dot(vr, vr)) + right_1.extent);
+    float _e16 = sphere_pad(a, center);
+    return a + _e16;
 }
 
 float bsh_children_extent(
     BshNodes nodes_2,
     uint i_2,
-    metal::float3 center,
+    metal::float3 center_1,
     device type_8 const& bsh_nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BshNode _e3 = bsh_node(nodes_2, i_2, bsh_nodes, _buffer_sizes);
     BshNode _e5 = bsh_node(nodes_2, _e3.child, bsh_nodes, _buffer_sizes);
     BshNode _e7 = bsh_node(nodes_2, _e5.next, bsh_nodes, _buffer_sizes);
-    metal::float3 vl = _e5.center - center;
-    metal::float3 vr = _e7.center - center;
-    float a = metal::max(metal::sqrt(metal::dot(vl, vl)) + _e5.extent, metal::sqrt(metal::dot(vr, vr)) + _e7.extent);
-    float _e21 = sphere_pad(a, center);
-    return a + _e21;
+    float _e8 = bsh_pair_extent(_e5, _e7, center_1);
+    return _e8;
+}
+
+float bsh_pair_range(
+    BshNode left_2,
+    BshNode right_2
+) {
+    float _e2 = bsh_range_bound(left_2);
+    float _e3 = bsh_range_bound(right_2);
+    return metal::max(_e2, _e3);
 }
 
 float bsh_children_range(
@@ -201,9 +227,8 @@ float bsh_children_range(
     BshNode _e2 = bsh_node(nodes_3, i_3, bsh_nodes, _buffer_sizes);
     BshNode _e4 = bsh_node(nodes_3, _e2.child, bsh_nodes, _buffer_sizes);
     BshNode _e6 = bsh_node(nodes_3, _e4.next, bsh_nodes, _buffer_sizes);
-    float _e7 = bsh_range_bound(_e4);
-    float _e8 = bsh_range_bound(_e6);
-    return metal::max(_e7, _e8);
+    float _e7 = bsh_pair_range(_e4, _e6);
+    return _e7;
 }
 
 struct main_Input {
