@@ -284,7 +284,7 @@ impl Bsh {
         for (i, n) in bsh.nodes.iter().enumerate().filter(|(_, n)| n.child == BSH_NONE) {
             bsh.leaves[n.light as usize] = i as u32;
         }
-        bsh.refit_with(|_| 0.0);
+        bsh.refit_split(&alloc::vec![0.0; bounds.len()], usize::MAX, &serial_join)?;
         Ok(bsh)
     }
 
@@ -322,9 +322,7 @@ impl Bsh {
     /// (`r2[i]` for light `i`, as from [`crate::range::random_range2`]).
     /// O(n). `r2` must have one finite-or-+∞, non-negative value per light.
     pub fn refit(&mut self, r2: &[f32]) -> Result<(), BshError> {
-        self.check_ranges(r2)?;
-        self.refit_with(|i| r2[i]);
-        Ok(())
+        self.refit_split(r2, usize::MAX, &serial_join)
     }
 
     /// [`Bsh::refit`] with the two subtrees of every node whose subtree
@@ -339,23 +337,6 @@ impl Bsh {
             refit_subtree(&mut self.nodes, 0, &self.bounds, r2, grain.max(1), join);
         }
         Ok(())
-    }
-
-    /// Node `i` refitted for squared random ranges `r2(light)`, from its
-    /// children's current spheres ([`leaf_refitted`], [`inner_refitted`]).
-    fn refitted(&self, i: usize, r2: impl Fn(usize) -> f32) -> BshNode {
-        let n = self.nodes[i];
-        if n.child == BSH_NONE {
-            return leaf_refitted(n, &self.bounds, r2);
-        }
-        let left = self.nodes[n.child as usize];
-        inner_refitted(n, left, self.nodes[left.next as usize])
-    }
-
-    fn refit_with(&mut self, r2: impl Fn(usize) -> f32) {
-        for i in (0..self.nodes.len()).rev() {
-            self.nodes[i] = self.refitted(i, &r2);
-        }
     }
 
     /// `r2` has one finite-or-+∞, non-negative value per light.
@@ -458,9 +439,15 @@ impl Bsh {
 /// order or at once.
 pub type Join = dyn Fn(&mut (dyn FnMut() + Send), &mut (dyn FnMut() + Send)) + Sync;
 
+/// [`Join`] on one thread: the first, then the second.
+fn serial_join(a: &mut (dyn FnMut() + Send), b: &mut (dyn FnMut() + Send)) {
+    a();
+    b();
+}
+
 /// A leaf refitted: its light's range sphere `(c, R + r)`.
-fn leaf_refitted(mut n: BshNode, bounds: &[LightBound], r2: impl Fn(usize) -> f32) -> BshNode {
-    let s = bounds[n.light as usize].range_sphere(r2(n.light as usize));
+fn leaf_refitted(mut n: BshNode, bounds: &[LightBound], r2: &[f32]) -> BshNode {
+    let s = bounds[n.light as usize].range_sphere(r2[n.light as usize]);
     (n.center, n.radius) = (s.center, s.radius);
     n
 }
@@ -485,14 +472,14 @@ fn inner_refitted(mut n: BshNode, left: BshNode, right: BshNode) -> BshNode {
 fn refit_subtree(nodes: &mut [BshNode], base: u32, bounds: &[LightBound], r2: &[f32], grain: usize, join: &Join) {
     let root = nodes[0];
     if root.child == BSH_NONE {
-        nodes[0] = leaf_refitted(root, bounds, |l| r2[l]);
+        nodes[0] = leaf_refitted(root, bounds, r2);
         return;
     }
     if nodes.len() <= grain {
         for k in (0..nodes.len()).rev() {
             let n = nodes[k];
             nodes[k] = if n.child == BSH_NONE {
-                leaf_refitted(n, bounds, |l| r2[l])
+                leaf_refitted(n, bounds, r2)
             } else {
                 let left = nodes[(n.child - base) as usize];
                 inner_refitted(n, left, nodes[(left.next - base) as usize])
