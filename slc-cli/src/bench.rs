@@ -78,8 +78,8 @@ pub struct BenchArgs {
     pub frames: u32,
     /// CPU: run the hot loops on this instruction set instead of the best
     /// one the CPU has (avx512, avx2 or baseline), to measure a lower one.
-    #[arg(long, value_parser = ["avx512", "avx2", "baseline"])]
-    pub simd: Option<String>,
+    #[arg(long, value_parser = simd_path)]
+    pub simd: Option<slc_cpu::simd::SimdPath>,
 }
 
 /// The configurations of a VPL bench: `none`, then `slc` per error bound,
@@ -105,6 +105,11 @@ fn vpl_configs(a: &BenchArgs, exposure: f32) -> Vec<(Option<f32>, VplSettings)> 
             (param, settings)
         })
         .collect()
+}
+
+/// `--simd`'s value: a [`slc_cpu::simd::SimdPath`] by its name.
+fn simd_path(name: &str) -> Result<slc_cpu::simd::SimdPath, String> {
+    slc_cpu::simd::SimdPath::from_name(name).ok_or_else(|| format!("{name}: one of avx512, avx2, baseline"))
 }
 
 pub fn progress(len: usize) -> anyhow::Result<ProgressBar> {
@@ -200,12 +205,10 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
     if a.repeat == 0 || a.reference_spp == 0 {
         return Err(anyhow!("--repeat {} and --reference-spp {} must be at least 1", a.repeat, a.reference_spp));
     }
-    if let Some(name) = &a.simd {
-        use slc_cpu::simd::SimdPath;
-        let want = SimdPath::from_name(name).ok_or_else(|| anyhow!("unknown --simd {name}"))?;
-        if SimdPath::prefer(want) != want {
-            return Err(anyhow!("--simd {name}: this CPU cannot run it (it has {})", SimdPath::best().name()));
-        }
+    if let Some(want) = a.simd
+        && slc_cpu::simd::SimdPath::prefer(want) != want
+    {
+        return Err(anyhow!("--simd {}: this CPU cannot run it (it has {})", want.name(), slc_cpu::simd::SimdPath::best().name()));
     }
     if a.flicker {
         if a.scene.app == App::Pt {

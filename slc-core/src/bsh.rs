@@ -470,11 +470,7 @@ fn inner_refitted(mut n: BshNode, left: BshNode, right: BshNode) -> BshNode {
 /// `base` of the whole array (links are absolute): subtrees above `grain`
 /// nodes split in two through `join`, smaller ones in reverse pre-order.
 fn refit_subtree(nodes: &mut [BshNode], base: u32, bounds: &[LightBound], r2: &[f32], grain: usize, join: &Join) {
-    let root = nodes[0];
-    if root.child == BSH_NONE {
-        nodes[0] = leaf_refitted(root, bounds, r2);
-        return;
-    }
+    // A leaf is a subtree of one node (`grain ≥ 1`).
     if nodes.len() <= grain {
         for k in (0..nodes.len()).rev() {
             let n = nodes[k];

@@ -49,7 +49,12 @@ impl SimdPath {
     /// The best path this CPU has, detected once (or the one
     /// [`SimdPath::prefer`] chose first).
     pub fn best() -> SimdPath {
-        *BEST.get_or_init(|| Self::ALL.into_iter().find(|p| p.is_available()).unwrap_or(SimdPath::Baseline))
+        *BEST.get_or_init(Self::detect)
+    }
+
+    /// The best path this CPU has.
+    fn detect() -> SimdPath {
+        Self::ALL.into_iter().find(|p| p.is_available()).unwrap_or(SimdPath::Baseline)
     }
 
     /// Makes `path` the one [`SimdPath::best`] returns for the rest of the
@@ -58,7 +63,7 @@ impl SimdPath {
     /// one: `slc bench --simd avx2`). Returns the path in effect, which is
     /// `path` only when both hold.
     pub fn prefer(path: SimdPath) -> SimdPath {
-        *BEST.get_or_init(|| if path.is_available() { path } else { Self::ALL.into_iter().find(|p| p.is_available()).unwrap_or(SimdPath::Baseline) })
+        *BEST.get_or_init(|| if path.is_available() { path } else { Self::detect() })
     }
 
     /// The path named `name` ([`SimdPath::name`]).

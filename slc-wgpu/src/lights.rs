@@ -271,7 +271,7 @@ impl GpuLightSet {
     /// Records the BSH refit alone (every level, deepest first), for ranges
     /// another kernel wrote.
     pub(crate) fn encode_refit(&self, cp: &mut wgpu::ComputePass) {
-        cp.set_bind_group(1, &self.table, &[]);
+        self.bind_tables(cp);
         cp.set_pipeline(&self.refit.0);
         for (i, &(_, count)) in self.b.levels.iter().enumerate() {
             cp.set_bind_group(0, &self.b.refit_group, &[self.b.refit_params.offset(i)]);

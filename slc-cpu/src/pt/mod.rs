@@ -54,6 +54,7 @@ use slc_scene::RenderError;
 use slc_scene::backend::{PathTracer, Timing};
 use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K, WEIGHTED_K};
 use slc_scene::scene::Material;
+use std::sync::Arc;
 use std::time::Instant;
 
 /// The CPU path tracer over a [`PtScene`]: the scene's geometry in a BVH,
@@ -62,8 +63,9 @@ pub struct CpuPathTracer {
     pts: PtScene,
     geo: Geometry,
     bsh: Bsh,
-    /// Each light's `r_t²` and the range parameters it was computed for.
-    rt2: Option<(RangeParams, Vec<f32>)>,
+    /// Each light's `r_t²` and the range parameters it was computed for
+    /// (shared with each pass's [`Pass`]).
+    rt2: Option<(RangeParams, Arc<[f32]>)>,
     /// The scene's bounding-box diagonal (ray offsets scale with it).
     diag: f32,
 }
@@ -114,7 +116,7 @@ const REFIT_GRAIN: usize = 4096;
 /// refit, as their authors built them.
 #[derive(Default)]
 struct Pass {
-    rt2: Vec<f32>,
+    rt2: Arc<[f32]>,
     r2: Vec<f32>,
 }
 
@@ -132,14 +134,14 @@ impl CpuPathTracer {
     /// subtrees in parallel ([`Bsh::refit_split`]). Empty for the
     /// baselines.
     fn pass_state(&mut self, method: PtMethod, params: &RangeParams, seed: u32, pass: u32) -> Result<Pass, RenderError> {
-        if !matches!(method, PtMethod::Slc | PtMethod::SlcReservoir | PtMethod::SlcWeighted) {
+        if !method.culls() {
             return Ok(Pass::default());
         }
         if self.rt2.as_ref().is_none_or(|(p, _)| p != params) {
             let rt2 = self.lights().par_iter().map(|l| params.threshold_range2(l.peak())).collect();
             self.rt2 = Some((*params, rt2));
         }
-        let rt2 = self.rt2.as_ref().map(|(_, rt2)| rt2.clone()).unwrap_or_default();
+        let rt2 = self.rt2.as_ref().map(|(_, rt2)| Arc::clone(rt2)).unwrap_or_default();
         let r2: Vec<f32> = rt2.par_iter().enumerate().map(|(i, &t)| random_range2(t, xi_for(seed, pass, i as u32))).collect();
         self.bsh.refit_split(&r2, REFIT_GRAIN, &|a, b| _ = rayon::join(a, b)).map_err(|e| RenderError::Setting(e.to_string()))?;
         Ok(Pass { rt2, r2 })

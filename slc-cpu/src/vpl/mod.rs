@@ -114,16 +114,12 @@ impl Reused {
 
     /// A pixel buffer of `Vec3` (empty, with the memory of a kept one).
     fn vec3(&mut self) -> Vec<Vec3> {
-        let mut v = self.vec3.pop().unwrap_or_default();
-        v.clear();
-        v
+        take_buffer(&mut self.vec3)
     }
 
     /// A pixel buffer of counts, as [`Reused::vec3`].
     fn counts(&mut self) -> Vec<u32> {
-        let mut v = self.counts.pop().unwrap_or_default();
-        v.clear();
-        v
+        take_buffer(&mut self.counts)
     }
 
     /// Adds `r`'s memory to this one's where this one has none.
@@ -134,11 +130,23 @@ impl Reused {
         if self.near.out.capacity() == 0 {
             self.near = r.near;
         }
-        self.vec3.extend(r.vec3.into_iter().filter(|v| v.capacity() > 0));
-        self.vec3.truncate(Self::KEEP);
-        self.counts.extend(r.counts.into_iter().filter(|v| v.capacity() > 0));
-        self.counts.truncate(Self::KEEP);
+        keep_buffers(&mut self.vec3, r.vec3);
+        keep_buffers(&mut self.counts, r.counts);
     }
+}
+
+/// A buffer of `pool` emptied (a new one where the pool has none).
+fn take_buffer<T>(pool: &mut Vec<Vec<T>>) -> Vec<T> {
+    let mut v = pool.pop().unwrap_or_default();
+    v.clear();
+    v
+}
+
+/// Adds the buffers of `more` that hold memory to `pool`, up to
+/// [`Reused::KEEP`].
+fn keep_buffers<T>(pool: &mut Vec<Vec<T>>, more: Vec<Vec<T>>) {
+    pool.extend(more.into_iter().filter(|v| v.capacity() > 0));
+    pool.truncate(Reused::KEEP);
 }
 
 impl VplContext {
@@ -511,8 +519,8 @@ impl VplContext {
     /// at every receiver of `tiling` (a [`Tiling::regions`]), the near share
     /// of the VPLs of every subset closer than `R_n = √near_r2`, at their
     /// own flux, culled as the method culls the far field (`cull` and the
-    /// interleaved `ranges`, from `shade_interleaved`), into `r`: SLC with each VPL's own ranges and the far
-    /// field's ξ ([`slc_core::interleave::vpl_near_range2`],
+    /// interleaved `ranges`, from `shade_interleaved`), into `r`: SLC with
+    /// each VPL's own ranges and the far field's ξ ([`slc_core::interleave::vpl_near_range2`],
     /// [`slc_core::interleave::vpl_near_slc_share`]: unbiased), clamp at its
     /// range, none not at all; with the kept counts and loop evaluations.
     /// Empty when `near_r2 = 0`. Culled in two levels, like the interleaved
