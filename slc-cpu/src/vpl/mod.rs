@@ -103,6 +103,8 @@ pub struct VplContext {
 struct Reused {
     far: PerReceiver,
     near: PerReceiver,
+    /// The near field's light list.
+    near_lights: LightList,
     vec3: Vec<Vec<Vec3>>,
     counts: Vec<Vec<u32>>,
 }
@@ -129,6 +131,9 @@ impl Reused {
         }
         if self.near.out.capacity() == 0 {
             self.near = r.near;
+        }
+        if self.near_lights.capacity() == 0 {
+            self.near_lights = r.near_lights;
         }
         keep_buffers(&mut self.vec3, r.vec3);
         keep_buffers(&mut self.counts, r.counts);
@@ -452,29 +457,34 @@ impl VplContext {
         let min_d2 = self.inputs.min_d2;
         let mut reused = self.take_reused();
         let ranges = self.ranges(cull, params, s);
-        let mut far = std::mem::take(&mut reused.far);
-        far.shade_parts(tiling, |sub, part, out, spec, scratch| {
-            let (sx, sy) = (sub % p, sub / p);
-            // The subset's VPLs (flux ×64) with their ranges.
-            let Scratch { all, lists } = scratch;
-            all.clear();
-            // Subset texels in 4×4 blocks, so each CHUNK of 16 consecutive
-            // lights is a small patch of the RSM (spatially coherent).
-            let m = size / p;
-            for by in (0..m).step_by(4) {
-                for bx in (0..m).step_by(4) {
-                    for (u, v_) in (0..16).map(|k| (bx + k % 4, by + k / 4)).filter(|&(u, v_)| u < m && v_ < m) {
-                        let i = (sy + v_ * p) * size + sx + u * p;
-                        let (rt2, r2) = ranges[i];
-                        all.push(v.position[i], v.normal[i], v.flux[i] * scale, rt2, r2);
+        let (mut far, mut near_lights) = (std::mem::take(&mut reused.far), std::mem::take(&mut reused.near_lights));
+        // The near field's light list is built (one thread) while the far
+        // field is shaded (the other, and both once it is built).
+        let shade_far = |far: &mut PerReceiver| {
+            far.shade_parts(tiling, |sub, part, out, spec, scratch| {
+                let (sx, sy) = (sub % p, sub / p);
+                // The subset's VPLs (flux ×64) with their ranges.
+                let Scratch { all, lists } = scratch;
+                all.clear();
+                // Subset texels in 4×4 blocks, so each CHUNK of 16 consecutive
+                // lights is a small patch of the RSM (spatially coherent).
+                let m = size / p;
+                for by in (0..m).step_by(4) {
+                    for bx in (0..m).step_by(4) {
+                        for (u, v_) in (0..16).map(|k| (bx + k % 4, by + k / 4)).filter(|&(u, v_)| u < m && v_ < m) {
+                            let i = (sy + v_ * p) * size + sx + u * p;
+                            let (rt2, r2) = ranges[i];
+                            all.push(v.position[i], v.normal[i], v.flux[i] * scale, rt2, r2);
+                        }
                     }
                 }
-            }
-            all.build_chunks();
-            shade_part(part, all, cull != Cull::None, cull, min_d2, near_r2, out, spec, lists)
-        });
+                all.build_chunks();
+                shade_part(part, all, cull != Cull::None, cull, min_d2, near_r2, out, spec, lists)
+            })
+        };
+        rayon::join(|| shade_far(&mut far), || self.near_lights_into(&mut near_lights, &ranges, near_r2, cull));
         let mut near = std::mem::take(&mut reused.near);
-        self.shade_near_in(&mut near, &self.from_gbuffer.near, &ranges, near_r2, cull);
+        self.shade_near_in(&mut near, &self.from_gbuffer.near, &near_lights, near_r2, cull);
         // Each pixel adds its far field to its near field, in parallel, in
         // one pass that also writes the near field alone.
         let nt = &self.from_gbuffer.near;
@@ -501,7 +511,7 @@ impl VplContext {
         let specular = pixels(!far.spec.is_empty(), &|i| far.specular_at(tiling, i) + near.specular_at(nt, i));
         let specular_near = pixels(!near.spec.is_empty(), &|i| near.specular_at(nt, i));
         let evaluations = near.evals + far.evals;
-        (reused.far, reused.near) = (far, near);
+        (reused.far, reused.near, reused.near_lights) = (far, near, near_lights);
         self.keep_reused(reused);
         Fields { irradiance, near: near_field, specular, specular_near, kept, evaluations }
     }
@@ -515,28 +525,19 @@ impl VplContext {
         (0..v.len()).into_par_iter().map(|i| light_ranges(cull, params, s, i, v.flux[i] * scale)).collect()
     }
 
-    /// The near field of the split ([`slc_core::interleave::vpl_near_weight`]):
-    /// at every receiver of `tiling` (a [`Tiling::regions`]), the near share
-    /// of the VPLs of every subset closer than `R_n = √near_r2`, at their
-    /// own flux, culled as the method culls the far field (`cull` and the
-    /// interleaved `ranges`, from `shade_interleaved`), into `r`: SLC with
-    /// each VPL's own ranges and the far field's ξ ([`slc_core::interleave::vpl_near_range2`],
-    /// [`slc_core::interleave::vpl_near_slc_share`]: unbiased), clamp at its
-    /// range, none not at all; with the kept counts and loop evaluations.
-    /// Empty when `near_r2 = 0`. Culled in two levels, like the interleaved
-    /// loop but over full-resolution pixels: regions cull the VPLs (in
-    /// near-block order, so chunks are small RSM patches), tiles cull their
-    /// region's list, each light's sphere of radius `min(r, R_n)`
-    /// ([`slc_core::interleave::vpl_near_cull_range2`]) against the box of
-    /// the G-buffer positions.
-    fn shade_near_in(&self, r: &mut PerReceiver, tiling: &Tiling, ranges: &[(f32, f32)], near_r2: f32, cull: Cull) {
+    /// The near field's lights into `all` (emptied first): the VPLs of
+    /// every subset at their own flux, in near-block order (so chunks are
+    /// small RSM patches), with the ranges `cull` gives them (from the
+    /// interleaved `ranges`: SLC with each VPL's own ranges and the far
+    /// field's ξ, [`slc_core::interleave::vpl_near_range2`]; clamp at its
+    /// range; none not at all) and their chunk boxes. Empty when
+    /// `near_r2 = 0`.
+    fn near_lights_into(&self, all: &mut LightList, ranges: &[(f32, f32)], near_r2: f32, cull: Cull) {
+        all.clear();
         if near_r2 <= 0.0 {
-            r.clear();
             return;
         }
         let v = &self.inputs.vpls;
-        let near_cull = if cull == Cull::Slc { Cull::NearSlc } else { Cull::Near };
-        let mut all = LightList::default();
         for i in v.near_order() {
             if v.flux[i] != Vec3::ZERO {
                 // The interleaved light's ranges, then the VPL's own.
@@ -546,8 +547,28 @@ impl VplContext {
             }
         }
         all.build_chunks();
+    }
+
+    /// The near field of the split ([`slc_core::interleave::vpl_near_weight`]):
+    /// at every receiver of `tiling` (a [`Tiling::regions`]), the near share
+    /// of the lights `all` ([`VplContext::near_lights_into`]) closer than
+    /// `R_n = √near_r2`, culled as the method culls the far field (`cull`),
+    /// into `r`: SLC at each VPL's own ranges
+    /// ([`slc_core::interleave::vpl_near_slc_share`]: unbiased), clamp at
+    /// its range, none not at all; with the kept counts and loop
+    /// evaluations. Empty when `near_r2 = 0`. Culled in two levels, like
+    /// the interleaved loop but over full-resolution pixels: regions cull
+    /// the lights, tiles cull their region's list, each light's sphere of
+    /// radius `min(r, R_n)` ([`slc_core::interleave::vpl_near_cull_range2`])
+    /// against the box of the G-buffer positions.
+    fn shade_near_in(&self, r: &mut PerReceiver, tiling: &Tiling, all: &LightList, near_r2: f32, cull: Cull) {
+        if near_r2 <= 0.0 {
+            r.clear();
+            return;
+        }
+        let near_cull = if cull == Cull::Slc { Cull::NearSlc } else { Cull::Near };
         let min_d2 = self.inputs.min_d2;
-        r.shade_parts(tiling, |_, part, out, spec, scratch| shade_part(part, &all, true, near_cull, min_d2, near_r2, out, spec, &mut scratch.lists));
+        r.shade_parts(tiling, |_, part, out, spec, scratch| shade_part(part, all, true, near_cull, min_d2, near_r2, out, spec, &mut scratch.lists));
     }
 }
 
@@ -821,7 +842,9 @@ mod tests {
     /// The near field at `tiling`'s receivers, as a frame shades it.
     fn near_field(ctx: &VplContext, tiling: &Tiling, near_r2: f32, cull: Cull, params: &RangeParams, s: &VplSettings) -> PerReceiver {
         let mut r = PerReceiver::default();
-        ctx.shade_near_in(&mut r, tiling, &ctx.ranges(cull, params, s), near_r2, cull);
+        let mut all = LightList::default();
+        ctx.near_lights_into(&mut all, &ctx.ranges(cull, params, s), near_r2, cull);
+        ctx.shade_near_in(&mut r, tiling, &all, near_r2, cull);
         r
     }
 

@@ -150,18 +150,18 @@ impl LightList {
     /// `[lo, hi]`; the result is the same set (the chunk box contains its
     /// lights' spheres). Needs [`LightList::build_chunks`].
     pub fn cull_chunked_into(&self, lo: Vec3, hi: Vec3, hits: &mut Vec<u32>, out: &mut LightList) {
-        SimdPath::best().run(CullOp { list: self, lo, hi, chunked: true, hits });
-        self.gather_into(hits, out);
+        let k = SimdPath::best().run(CullOp { list: self, lo, hi, chunked: true, hits: &mut *hits });
+        self.gather_into(&hits[..k], out);
     }
 
     /// Tile culling: replaces `out` with the lights whose range sphere
     /// `(p, √r²)` overlaps the box `[lo, hi]`
     /// ([`slc_core::sphere::sphere_overlaps_aabb`]). The test runs on the
     /// CPU's best [`SimdPath`] over all lights, then each array is gathered
-    /// in one pass.
+    /// in one pass. `hits` is scratch memory for the indices.
     pub fn cull_into(&self, lo: Vec3, hi: Vec3, hits: &mut Vec<u32>, out: &mut LightList) {
-        SimdPath::best().run(CullOp { list: self, lo, hi, chunked: false, hits });
-        self.gather_into(hits, out);
+        let k = SimdPath::best().run(CullOp { list: self, lo, hi, chunked: false, hits: &mut *hits });
+        self.gather_into(&hits[..k], out);
     }
 
     /// Replaces `out` with the entries `hits` of this list, padded to a
@@ -189,12 +189,19 @@ impl LightList {
     pub fn is_empty(&self) -> bool {
         self.px.is_empty()
     }
+
+    /// Lights the list holds without allocating.
+    pub fn capacity(&self) -> usize {
+        self.px.capacity()
+    }
 }
 
 /// The culling test of [`LightList::cull_into`] (every light) or
 /// [`LightList::cull_chunked_into`] (the lights of chunks whose box meets
 /// the tile's) as a pulp operation: a branch-free pass writes each light's
-/// overlap flag (vectorized across lights), a second compacts the indices.
+/// overlap flag (vectorized across lights), a second compacts the indices
+/// into `hits[..k]` and returns `k` (`hits` only grows: its old entries
+/// need no zeroing).
 struct CullOp<'a> {
     list: &'a LightList,
     lo: Vec3,
@@ -204,15 +211,16 @@ struct CullOp<'a> {
 }
 
 impl pulp::WithSimd for CullOp<'_> {
-    type Output = ();
+    type Output = usize;
 
     #[inline(always)]
-    fn with_simd<S: pulp::Simd>(self, _: S) {
+    fn with_simd<S: pulp::Simd>(self, _: S) -> usize {
         let (l, lo, hi) = (self.list, self.lo, self.hi);
         let n = l.len();
         let mut flags = [0u8; CHUNK];
-        self.hits.clear();
-        self.hits.resize(n + 1, 0);
+        if self.hits.len() <= n {
+            self.hits.resize(n + 1, 0);
+        }
         let mut k = 0;
         // Plain loops over chunk-sized runs: a closure would not be compiled
         // with the path's target features.
@@ -234,7 +242,7 @@ impl pulp::WithSimd for CullOp<'_> {
                 k += f as usize;
             }
         }
-        self.hits.truncate(k);
+        k
     }
 }
 
@@ -270,15 +278,12 @@ impl pulp::WithSimd for GatherOp<'_> {
         ];
         for (dst, src) in pairs {
             dst.clear();
+            if let Some(last) = src.len().checked_sub(1) {
+                // `min` proves the index in bounds, so the loop has no
+                // branch; written once, without zeroing the hits' part first.
+                dst.extend(self.hits.iter().map(|&j| src[(j as usize).min(last)]));
+            }
             dst.resize(self.len, 0.0);
-            if src.is_empty() {
-                continue;
-            }
-            // `min` proves the index in bounds, so the loop has no branch.
-            let last = src.len() - 1;
-            for (d, &j) in dst.iter_mut().zip(self.hits) {
-                *d = src[(j as usize).min(last)];
-            }
         }
     }
 }
