@@ -102,7 +102,13 @@ fn speed_vs_error_on<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB,
         return Err(anyhow!("no run with positive RMSE and time to plot"));
     }
     let (tmin, tmax) = runs.iter().fold((f64::MAX, 0.0f64), |(a, b), r| (a.min(r.shading_ms), b.max(r.shading_ms)));
-    let (emin, emax) = runs.iter().fold((f64::MAX, 0.0f64), |(a, b), r| (a.min(r.rmse), b.max(r.rmse)));
+    // One frame's spread about the mean RMSE (`rmse_sd`, where the run
+    // rendered several frames) as an error bar, cut where it would reach 0.
+    let spread = |r: &crate::report::Run| {
+        let sd = r.rmse_sd.unwrap_or(0.0);
+        ((r.rmse - sd).max(r.rmse * 0.1), r.rmse + sd)
+    };
+    let (emin, emax) = runs.iter().fold((f64::MAX, 0.0f64), |(a, b), r| (a.min(spread(r).0), b.max(spread(r).1)));
     let title = format!("Speed vs error: {} {}x{}, {} lights, {} backend", report.scene, report.width, report.height, report.lights, report.backend);
     let mut chart = ChartBuilder::on(root)
         .caption(title, ("sans-serif", 24))
@@ -141,6 +147,12 @@ fn speed_vs_error_on<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB,
             .label(m.to_string())
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
         chart.draw_series(pts.iter().map(|&p| Circle::new(p, 5, color.filled()))).map_err(err)?;
+        chart
+            .draw_series(runs.iter().filter(|r| r.method == m && r.rmse_sd.is_some_and(|sd| sd > 0.0)).map(|r| {
+                let (lo, hi) = spread(r);
+                ErrorBar::new_vertical(r.shading_ms.log10(), lo.log10(), r.rmse.log10(), hi.log10(), color.stroke_width(1), 8)
+            }))
+            .map_err(err)?;
         chart
             .draw_series(runs.iter().filter(|r| r.method == m && r.param.is_some()).map(|r| {
                 Text::new(
