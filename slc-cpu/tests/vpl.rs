@@ -256,3 +256,58 @@ fn moved_light_renders_as_a_new_context() {
     assert!(ctx.set_primary(bad).is_err());
     assert_eq!(ctx.render(&s).unwrap().image.data, moved.data, "a refused light changes nothing");
 }
+
+/// The near field removes the 8×8 blotches along the base of the tall block
+/// (the floor VPLs a centimetre from its faces, each given to one pixel in
+/// 64 by the interleaving): in the default frame (512², 65,536 VPLs, the
+/// default ε and near radius, frame 0), the largest radiance error of a
+/// pixel within 3 cm of the block's bottom edges, against every VPL at
+/// that pixel, is issue 34's 0.025 to the three digits it was measured to
+/// (0.0250 here; the unculled interleaved frame, `none`, gives 0.02503 and
+/// SLC's frames 1–3 0.0248–0.0252: what is left is the interleaving's, not
+/// the culling's); without the near field it is more than twice that
+/// (0.0774: the blotches the test must be able to see). Both after the
+/// denoise, in the radiance the image shows (`albedo/π · E`; the direct
+/// light is the same in both and cancels).
+#[test]
+fn near_field_removes_the_blotches_at_the_tall_blocks_base() {
+    use slc_core::frame::diffuse_radiance;
+    use slc_cpu::vpl::denoise::Denoiser;
+    use slc_cpu::vpl::shade::{Cull, LightList, shade};
+    use slc_scene::vpl::PERIOD;
+    let ctx = VplContext::new(&Scene::cornell_box(), 512, 512, 256, None).unwrap();
+    let (gb, v) = (ctx.gbuffer(), ctx.vpls());
+    // The tall block's footprint on the floor (x, z in metres), in order.
+    let foot = [(0.423, 0.247), (0.472, 0.406), (0.314, 0.456), (0.265, 0.296)].map(|(x, z)| glam::Vec2::new(x, z));
+    let to_edge = |p: glam::Vec2| {
+        (0..4)
+            .map(|k| {
+                let (a, b) = (foot[k], foot[(k + 1) % 4]);
+                let t = ((p - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+                (p - (a + (b - a) * t)).length()
+            })
+            .fold(f32::INFINITY, f32::min)
+    };
+    let crease: Vec<usize> = (0..gb.position.len())
+        .filter(|&i| gb.valid(i) && gb.position[i].y < 0.03 && to_edge(glam::Vec2::new(gb.position[i].x, gb.position[i].z)) < 0.03)
+        .collect();
+    assert!(crease.len() > 500, "{} crease pixels: the camera sees the block's base", crease.len());
+    let mut all = LightList::default();
+    for i in 0..v.len() {
+        all.push(v.position[i], v.normal[i], v.flux[i], f32::INFINITY, f32::INFINITY);
+    }
+    let reference: Vec<Vec3> = crease.iter().map(|&i| shade(&all, gb.position[i], gb.normal[i], ctx.min_d2(), 0.0, Cull::None).0).collect();
+    let largest_error = |near_radius: Option<f32>| {
+        let shaded = ctx.shade(&VplSettings { near_radius, ..VplSettings::default() }).unwrap();
+        let e = Denoiser::new(gb).filter_far(&shaded.irradiance, &shaded.near, gb, PERIOD);
+        crease
+            .iter()
+            .zip(&reference)
+            .map(|(&i, &r)| (diffuse_radiance(gb.albedo[i], Vec3::ZERO, e[i]) - diffuse_radiance(gb.albedo[i], Vec3::ZERO, r)).abs().max_element())
+            .fold(0.0f32, f32::max)
+    };
+    let (with, without) = (largest_error(None), largest_error(Some(0.0)));
+    eprintln!("{} crease pixels: largest radiance error {with:.4} with the near field, {without:.4} without", crease.len());
+    assert!(with < 0.0255, "the near field leaves an error of {with} at the block's base");
+    assert!(without > 2.0 * with, "without the near field the blotches should show: {without} vs {with}");
+}
