@@ -277,7 +277,8 @@ fn near_field_removes_the_blotches_at_the_tall_blocks_base() {
     use slc_scene::vpl::PERIOD;
     let ctx = VplContext::new(&Scene::cornell_box(), 512, 512, 256, None).unwrap();
     let (gb, v) = (ctx.gbuffer(), ctx.vpls());
-    // The tall block's footprint on the floor (x, z in metres), in order.
+    // The tall block's footprint on the floor (x, z in metres), in order:
+    // `Scene::cornell_box`'s tall block (Cornell's data, mm → m).
     let foot = [(0.423, 0.247), (0.472, 0.406), (0.314, 0.456), (0.265, 0.296)].map(|(x, z)| glam::Vec2::new(x, z));
     let to_edge = |p: glam::Vec2| {
         (0..4)

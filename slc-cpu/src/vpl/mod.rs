@@ -435,11 +435,7 @@ impl VplContext {
     /// the default tile size, built here for another.
     fn shade_interleaved(&self, method: VplMethod, params: &RangeParams, s: &VplSettings) -> Fields {
         let gb = &self.inputs.gbuffer;
-        let v = &self.inputs.vpls;
         let p = PERIOD as usize;
-        let size = v.size as usize;
-        // Interleaved flux: each pixel sees 1/P² of the VPLs, so each counts P²×.
-        let scale = interleave_flux_scale(PERIOD);
         let cull = match method {
             VplMethod::Slc => Cull::Slc,
             VplMethod::Clamp => Cull::Clamp,
@@ -460,29 +456,15 @@ impl VplContext {
         let (mut far, mut near_lights) = (std::mem::take(&mut reused.far), std::mem::take(&mut reused.near_lights));
         // The near field's light list is built (one thread) while the far
         // field is shaded (the other, and both once it is built).
-        let shade_far = |far: &mut PerReceiver| {
-            far.shade_parts(tiling, |sub, part, out, spec, scratch| {
-                let (sx, sy) = (sub % p, sub / p);
-                // The subset's VPLs (flux ×64) with their ranges.
-                let Scratch { all, lists } = scratch;
-                all.clear();
-                // Subset texels in 4×4 blocks, so each CHUNK of 16 consecutive
-                // lights is a small patch of the RSM (spatially coherent).
-                let m = size / p;
-                for by in (0..m).step_by(4) {
-                    for bx in (0..m).step_by(4) {
-                        for (u, v_) in (0..16).map(|k| (bx + k % 4, by + k / 4)).filter(|&(u, v_)| u < m && v_ < m) {
-                            let i = (sy + v_ * p) * size + sx + u * p;
-                            let (rt2, r2) = ranges[i];
-                            all.push(v.position[i], v.normal[i], v.flux[i] * scale, rt2, r2);
-                        }
-                    }
-                }
-                all.build_chunks();
-                shade_part(part, all, cull != Cull::None, cull, min_d2, near_r2, out, spec, lists)
-            })
-        };
-        rayon::join(|| shade_far(&mut far), || self.near_lights_into(&mut near_lights, &ranges, near_r2, cull));
+        rayon::join(
+            || {
+                far.shade_parts(tiling, |sub, part, out, spec, scratch| {
+                    self.subset_lights_into(&mut scratch.all, sub, &ranges);
+                    shade_part(part, &scratch.all, cull != Cull::None, cull, min_d2, near_r2, out, spec, &mut scratch.lists)
+                })
+            },
+            || self.near_lights_into(&mut near_lights, &ranges, near_r2, cull),
+        );
         let mut near = std::mem::take(&mut reused.near);
         self.shade_near_in(&mut near, &self.from_gbuffer.near, &near_lights, near_r2, cull);
         // Each pixel adds its far field to its near field, in parallel, in
@@ -523,6 +505,30 @@ impl VplContext {
         let v = &self.inputs.vpls;
         let scale = interleave_flux_scale(PERIOD);
         (0..v.len()).into_par_iter().map(|i| light_ranges(cull, params, s, i, v.flux[i] * scale)).collect()
+    }
+
+    /// The far field's lights of VPL subset `sub` (`sy·P + sx`) into `all`
+    /// (emptied first): its VPLs at the interleaved flux (each pixel sees
+    /// 1/P² of the VPLs, so each counts P²×) with
+    /// their interleaved `ranges`, in 4×4 blocks of subset texels, so each
+    /// chunk of 16 consecutive lights is a small patch of the RSM
+    /// (spatially coherent), and their chunk boxes.
+    fn subset_lights_into(&self, all: &mut LightList, sub: usize, ranges: &[(f32, f32)]) {
+        let v = &self.inputs.vpls;
+        let (p, size) = (PERIOD as usize, v.size as usize);
+        let (sx, sy, m) = (sub % p, sub / p, size / p);
+        let scale = interleave_flux_scale(PERIOD);
+        all.clear();
+        for by in (0..m).step_by(4) {
+            for bx in (0..m).step_by(4) {
+                for (u, w) in (0..16).map(|k| (bx + k % 4, by + k / 4)).filter(|&(u, w)| u < m && w < m) {
+                    let i = (sy + w * p) * size + sx + u * p;
+                    let (rt2, r2) = ranges[i];
+                    all.push(v.position[i], v.normal[i], v.flux[i] * scale, rt2, r2);
+                }
+            }
+        }
+        all.build_chunks();
     }
 
     /// The near field's lights into `all` (emptied first): the VPLs of

@@ -148,7 +148,8 @@ impl LightList {
 
     /// [`LightList::cull_into`] that first skips every chunk whose box misses
     /// `[lo, hi]`; the result is the same set (the chunk box contains its
-    /// lights' spheres). Needs [`LightList::build_chunks`].
+    /// lights' spheres). Needs [`LightList::build_chunks`]. `hits` is
+    /// scratch memory for the indices.
     pub fn cull_chunked_into(&self, lo: Vec3, hi: Vec3, hits: &mut Vec<u32>, out: &mut LightList) {
         let k = SimdPath::best().run(CullOp { list: self, lo, hi, chunked: true, hits: &mut *hits });
         self.gather_into(&hits[..k], out);
