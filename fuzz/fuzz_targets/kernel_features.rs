@@ -6,7 +6,7 @@
 
 use arbitrary::Arbitrary;
 use libfuzzer_sys::fuzz_target;
-use slc_shared_shaders::{CullMethod, DirectOutput, Features, Heuristic, Kernel, LightSet, OutputFormat, Selection, ShaderError, SurfaceSource, VplSource, generate};
+use slc_shared_shaders::{CullMethod, DirectOutput, Features, Heuristic, Kernel, LightTypes, OutputFormat, Selection, ShaderError, SurfaceSource, VplSource, generate};
 
 #[derive(Arbitrary, Debug)]
 struct Input {
@@ -32,7 +32,7 @@ struct Input {
 fuzz_target!(|i: Input| {
     let kernel = Kernel::ALL[i.kernel as usize % Kernel::ALL.len()];
     let features = Features {
-        lights: LightSet::from_bits(i.lights as u32),
+        lights: LightTypes::from_bits(i.lights as u32),
         reservoir_k: i.reservoir_k as u32,
         workgroup_size: i.workgroup_size as u32,
         tile_size: i.tile_size as u32,

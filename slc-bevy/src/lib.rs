@@ -411,7 +411,7 @@ fn new_view(
     motion: bool,
 ) -> Result<View, String> {
     let mut desc = DirectPassDesc::new(size.0, size.1);
-    desc.surface = SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float, reversed: true };
+    desc.surface = SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float };
     desc.selection = DirectSelection::Weighted { k: settings.picks };
     desc.outputs = DirectOutputs::BevyRadiance;
     desc.light_types = slc_shared_lights();
@@ -457,8 +457,8 @@ fn new_view(
 }
 
 /// The light types the pass compiles: Bevy's point and spot lights.
-fn slc_shared_lights() -> slc_shared_shaders::LightSet {
-    slc_shared_shaders::LightSet { point: true, spot: true, ies: false, triangle: false, vpl: false }
+fn slc_shared_lights() -> slc_shared_shaders::LightTypes {
+    slc_shared_shaders::LightTypes { point: true, spot: true, ies: false, triangle: false, vpl: false }
 }
 
 fn to_glam(m: Mat4) -> glam::Mat4 {

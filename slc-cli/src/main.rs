@@ -396,11 +396,11 @@ pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> anyhow::Result<(
 /// `vpl_near_glossy`, `irradiance_export_glossy`, `frame_compose_glossy`),
 /// and the temporal pass (`temporal`, `temporal_motion`).
 fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
-    use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, OutputFormat, Selection, SurfaceSource, generate_module, translate};
-    let lights = LightSet::parse(lights)?;
+    use slc_shared_shaders::{CullMethod, Features, Kernel, LightTypes, OutputFormat, Selection, SurfaceSource, generate_module, translate};
+    let lights = LightTypes::parse(lights)?;
     std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
     let base = Features { lights, reservoir_k, ..Features::default() };
-    let vpl = LightSet { vpl: true, ..LightSet::default() };
+    let vpl = LightTypes { vpl: true, ..LightTypes::default() };
     let mut jobs: Vec<(String, Kernel, Features)> =
         [Kernel::LightUpdate, Kernel::BshRefit, Kernel::BshReservoir, Kernel::PtConnect, Kernel::PtExtend]
             .into_iter()

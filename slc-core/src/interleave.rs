@@ -17,15 +17,53 @@
 //! at `P²` times its flux (far), so the split changes no expectation. The near VPLs are found by blocks of [`NEAR_BLOCK`]
 //! lights, `8 × 8` RSM texels each ([`near_block_index`]), whose boxes are
 //! culled against a tile first.
+//!
+//! **A shifted map per frame.** A fixed pixel-to-subset map is a
+//! structured subsampling: the RSM's texel grid and the screen's pixel
+//! grid line up on flat surfaces, so a subset's VPLs sit nearer to the
+//! pixels of their own class than to the others, and the image keeps an
+//! offset no number of frames removes (−0.30% of the Cornell box's mean
+//! irradiance at 256², 65,536 VPLs, unculled). So each frame shifts the
+//! map: pixel class `c` shades subset `(c + k) mod P²`
+//! ([`shifted_subset`]), `k` = [`interleave_shift`]`(seed, frame)`,
+//! uniform and stratified over frames (frames `0..P²` take every shift
+//! once). Over frames each pixel shades every subset equally often: the
+//! interleaved estimator is unbiased per pixel, as the culling is, and its
+//! residual pattern changes every frame. The slots, the near blocks and
+//! the denoise's window (one pixel of every class, so of every subset)
+//! are unchanged.
 
+use crate::light::{INV_PI, MAX_INTENSITY};
 use crate::range::{clamp_keep, slc_keep, slc_weight};
-use crate::wgsl::builtins::{clamp, min, select, to_f32};
+use crate::ray::finite3;
+use crate::wgsl::builtins::{clamp, max, min, select, to_f32};
+use crate::wgsl::vec3f;
+use crate::xi::{laine_karras, pcg_hash};
 
 crate::shared! {
     /// Subset of pixel (or RSM texel) `(x, y)` for period `P > 0`:
     /// `(y mod P)·P + x mod P`.
     pub fn interleave_subset(x: u32, y: u32, period: u32) -> u32 {
         return (y % period) * period + x % period;
+    }
+
+    /// The VPL subset that pixels of class `pixel_class`
+    /// ([`interleave_subset`]) shade in a frame whose map is shifted by
+    /// `shift` ([`interleave_shift`]): `(pixel_class + shift) mod P²`.
+    pub fn shifted_subset(pixel_class: u32, shift: u32, period: u32) -> u32 {
+        return (pixel_class + shift) % (period * period);
+    }
+
+    /// `true` when a VPL handed over as raw numbers (an engine's RSM texel
+    /// or VPL record) is one [`Vpl::new`](crate::light::Vpl::new) would accept: finite position and
+    /// normal, and a flux whose channels are finite, ≥ 0 and give a peak
+    /// `Φ/π` of at most [`MAX_INTENSITY`]. The GPU's packing gives any
+    /// other VPL zero flux at the origin (skipped: never a NaN or ∞ pixel).
+    pub fn vpl_record_ok(position: vec3f, normal: vec3f, flux: vec3f) -> bool {
+        if !(finite3(position) && finite3(normal) && finite3(flux)) {
+            return false;
+        }
+        return flux.x >= 0.0 && flux.y >= 0.0 && flux.z >= 0.0 && max(max(flux.x, flux.y), flux.z) * INV_PI <= MAX_INTENSITY;
     }
 
     /// Index of RSM texel `(tx, ty)` of an `s × s` map (`s` a multiple of
@@ -151,10 +189,46 @@ crate::shared! {
     }
 }
 
+/// Random stream of [`interleave_shift`] (xored into the seed).
+const SHIFT_STREAM: u32 = 0x5bd1_e995;
+
+/// The shift `k ∈ 0..P²` of frame `frame`'s pixel-to-subset map
+/// ([`shifted_subset`]) for seed `seed`: the top bits of an Owen-scrambled
+/// van der Corput point of the frame index, as [`crate::xi::xi_for`]
+/// draws ξ, `LK(rev(frame), s) ⊕ LK(0, s) ⊕ h(s)` with `s = h(seed ⊕
+/// c)` (`LK` [`laine_karras`], `h` [`pcg_hash`]), times `P²`. Uniform in
+/// every frame; frames `0..P²` (and every later run of `P²` frames from
+/// a multiple of `P²`) take each shift once. Both backends' hosts call it.
+pub fn interleave_shift(seed: u32, frame: u32, period: u32) -> u32 {
+    let s = pcg_hash(seed ^ SHIFT_STREAM);
+    let v = laine_karras(frame.reverse_bits(), s) ^ laine_karras(0, s) ^ pcg_hash(s);
+    ((v as u64 * (period * period) as u64) >> 32) as u32
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use alloc::vec;
+
+    /// Frames `0..P²`, and `P²..2P²`, take each shift once, for any seed;
+    /// seeds give frame 0 different shifts.
+    #[test]
+    fn shifts_are_stratified_over_frames() {
+        for seed in [0u32, 1, 7, 0xdead_beef] {
+            for block in 0..2u32 {
+                let mut seen = [false; 64];
+                for f in 0..64 {
+                    let k = interleave_shift(seed, block * 64 + f, 8) as usize;
+                    assert!(!seen[k], "seed {seed}: shift {k} twice in frames {}..", block * 64);
+                    seen[k] = true;
+                }
+            }
+        }
+        let first: alloc::collections::BTreeSet<u32> = (0..32).map(|seed| interleave_shift(seed, 0, 8)).collect();
+        assert!(first.len() > 10, "frame 0's shift must depend on the seed: {first:?}");
+        assert_eq!(interleave_shift(3, 5, 1), 0);
+        assert_eq!(shifted_subset(60, 7, 8), 3);
+    }
 
     /// The slots of an `s × s` map are a permutation, and each subset holds
     /// exactly the texels congruent to it mod `P`.

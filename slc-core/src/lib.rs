@@ -123,6 +123,17 @@ pub enum LightError {
     /// A triangle emitter with zero area (repeated or collinear vertices).
     #[error("triangle light has zero area (repeated or collinear vertices)")]
     DegenerateTriangle,
+    /// A peak intensity above [`light::MAX_INTENSITY`]: the light's terms
+    /// could overflow `f32` in a pixel.
+    #[error("light {field} gives a peak intensity of {peak:e}, above the largest slc shades without overflow ({max:e})")]
+    TooBright {
+        /// The field (or product of fields) that sets the peak.
+        field: &'static str,
+        /// The peak intensity's largest channel.
+        peak: f32,
+        /// [`light::MAX_INTENSITY`].
+        max: f32,
+    },
     /// An IES profile that is not type C.
     #[error("IES photometric type {0:?} is not supported for lights (type C only)")]
     UnsupportedPhotometry(ies::PhotometricType),

@@ -26,6 +26,17 @@ crate::shared! {
     /// value instead of ∞ on both backends.
     pub const MIN_D2: f32 = 0.000000000001;
 
+    /// Largest peak radiant intensity `I_max` a light may have, per
+    /// channel: 2⁵⁶ ≈ 7.2·10¹⁶ (W/sr, or the engine's unit). Above it a
+    /// pixel's sum could overflow `f32`: one light's term is at most
+    /// `I_max/MIN_D2` (≤ 2⁹⁶), and a sum of 2²⁴ such terms with the
+    /// interleaving's flux scale (64) and the weighted picks' `W/(k·w)`
+    /// stays below 2¹²⁷. Every constructor refuses more
+    /// ([`LightError::TooBright`]), and the GPU's VPL packing skips such a
+    /// VPL ([`crate::interleave::vpl_record_ok`]), so no light writes ∞
+    /// into an image.
+    pub const MAX_INTENSITY: f32 = 72057594037927936.0;
+
     /// `r_t²` of a VPL of flux `flux`: the threshold range of its peak
     /// intensity `Φ/π` (cosine lobe) for exposure `E`, error bound `ε` and
     /// intensity measure `mode` ([`crate::range::intensity_measure`]).
@@ -85,9 +96,11 @@ crate::shared! {
     /// from the VPL to the receiver:
     /// `E/Φ = max(n_l·v, 0) · max(−n_x·v, 0) / (π · m²)`, `m = max(|v|², d²_min)`,
     /// i.e. `(1/π) cos θ_l cos θ_x / d²` for `d² ≥ d²_min` (no square root),
-    /// smoothly reduced to 0 inside the clamp distance (no singularity).
+    /// smoothly reduced to 0 inside the clamp distance (no singularity;
+    /// the clamp is at least [`MIN_D2`], so a VPL on the receiver gives 0,
+    /// not 0/0, at a clamp distance of 0).
     pub fn vpl_transfer(n_l: vec3f, n_x: vec3f, v: vec3f, min_d2: f32) -> f32 {
-        let m: f32 = max(dot(v, v), min_d2);
+        let m: f32 = max(dot(v, v), max(min_d2, MIN_D2));
         return max(dot(n_l, v), 0.0) * max(-dot(n_x, v), 0.0) * INV_PI / (m * m);
     }
 
@@ -162,6 +175,16 @@ fn check_rgb(field: &'static str, v: Vec3) -> Result<Vec3, LightError> {
     Ok(v)
 }
 
+/// `light` when its peak intensity `I_max` ([`Light::peak`]) is within
+/// [`MAX_INTENSITY`], else [`LightError::TooBright`] naming `field`.
+fn check_peak<T>(field: &'static str, peak: Vec3, light: T) -> Result<T, LightError> {
+    let peak = peak.max_element();
+    if peak > MAX_INTENSITY {
+        return Err(LightError::TooBright { field, peak, max: MAX_INTENSITY });
+    }
+    Ok(light)
+}
+
 fn check_dir(field: &'static str, v: Vec3) -> Result<Vec3, LightError> {
     check_point(field, v)?;
     let len = v.length();
@@ -179,9 +202,11 @@ pub struct PointLight {
 }
 
 impl PointLight {
-    /// Position (finite) and RGB intensity (finite, ≥ 0).
+    /// Position (finite) and RGB intensity (finite, ≥ 0, at most
+    /// [`MAX_INTENSITY`]).
     pub fn new(position: Vec3, intensity: Vec3) -> Result<Self, LightError> {
-        Ok(Self { position: check_point("position", position)?, intensity: check_rgb("intensity", intensity)? })
+        let intensity = check_rgb("intensity", intensity)?;
+        check_peak("intensity", intensity, Self { position: check_point("position", position)?, intensity })
     }
     /// Position.
     pub fn position(&self) -> Vec3 {
@@ -198,9 +223,12 @@ pub struct Vpl {
 }
 
 impl Vpl {
-    /// Position, surface normal (normalised here) and RGB flux Φ.
+    /// Position, surface normal (normalised here) and RGB flux Φ (finite,
+    /// ≥ 0, its peak `Φ/π` at most [`MAX_INTENSITY`]).
     pub fn new(position: Vec3, normal: Vec3, flux: Vec3) -> Result<Self, LightError> {
-        Ok(Self { position: check_point("position", position)?, normal: check_dir("normal", normal)?, flux: check_rgb("flux", flux)? })
+        let flux = check_rgb("flux", flux)?;
+        let vpl = Self { position: check_point("position", position)?, normal: check_dir("normal", normal)?, flux };
+        check_peak("flux", flux * INV_PI, vpl)
     }
     /// Position.
     pub fn position(&self) -> Vec3 {
@@ -237,14 +265,16 @@ impl SpotLight {
         if !(inner.is_finite() && outer.is_finite() && 0.0 <= inner && inner <= outer && outer <= core::f32::consts::PI) {
             return Err(LightError::ConeAngles { inner, outer });
         }
-        Ok(Self {
+        let intensity = check_rgb("intensity", intensity)?;
+        let spot = Self {
             position: check_point("position", position)?,
             direction: check_dir("direction", direction)?,
-            intensity: check_rgb("intensity", intensity)?,
+            intensity,
             cos_outer: libm::cosf(outer),
             cos_inner: libm::cosf(inner),
             quadratic: false,
-        })
+        };
+        check_peak("intensity", intensity, spot)
     }
     /// The same spot with Bevy's (and Filament's) fall-off `t²` between
     /// the cones instead of the smoothstep ([`spot_falloff`]'s `shape` 1).
@@ -294,7 +324,9 @@ impl IesLight {
         if !profile.is_type_c() {
             return Err(LightError::UnsupportedPhotometry(profile.photometric_type()));
         }
-        Ok(Self { position: check_point("position", position)?, nadir, reference, tint: check_rgb("tint", tint)?, profile })
+        let tint = check_rgb("tint", tint)?;
+        let peak = tint * profile.max_candela();
+        check_peak("tint × candela", peak, Self { position: check_point("position", position)?, nadir, reference, tint, profile })
     }
     /// Position.
     pub fn position(&self) -> Vec3 {
@@ -352,7 +384,8 @@ impl TriangleLight {
             return Err(LightError::DegenerateTriangle);
         }
         let s = Sphere::of_triangle(a, b, c);
-        Ok(Self { v: [a, b, c], radiance, normal: n / len, area, bound: LightBound { center: s.center, extent: s.radius } })
+        let light = Self { v: [a, b, c], radiance, normal: n / len, area, bound: LightBound { center: s.center, extent: s.radius } };
+        check_peak("radiance × area", radiance * area, light)
     }
     /// Vertices.
     pub fn vertices(&self) -> [Vec3; 3] {
@@ -614,7 +647,23 @@ mod tests {
         assert!(PointLight::new(Vec3::ZERO, Vec3::new(-1.0, 0.0, 0.0)).is_err());
         assert!(PointLight::new(Vec3::ZERO, Vec3::splat(f32::INFINITY)).is_err());
         assert!(Vpl::new(Vec3::ZERO, Vec3::ZERO, Vec3::ONE).is_err());
-        assert!(PointLight::new(Vec3::ZERO, Vec3::splat(f32::MAX)).is_ok());
+        assert!(PointLight::new(Vec3::ZERO, Vec3::splat(MAX_INTENSITY)).is_ok());
+        for bright in [f32::MAX, MAX_INTENSITY * 2.0] {
+            let e = LightError::TooBright { field: "intensity", peak: bright, max: MAX_INTENSITY };
+            assert_eq!(PointLight::new(Vec3::ZERO, Vec3::new(0.0, bright, 0.0)), Err(e));
+            assert!(SpotLight::new(Vec3::ZERO, Vec3::Y, Vec3::splat(bright), 0.1, 0.2).is_err());
+            assert!(Vpl::new(Vec3::ZERO, Vec3::Y, Vec3::splat(bright * 4.0)).is_err());
+            assert!(TriangleLight::new(Vec3::ZERO, Vec3::X * 2.0, Vec3::Y * 2.0, Vec3::splat(bright)).is_err());
+        }
+        // A VPL's peak is Φ/π: its flux may reach π × the limit.
+        assert!(Vpl::new(Vec3::ZERO, Vec3::Y, Vec3::splat(MAX_INTENSITY * 3.0)).is_ok());
+    }
+
+    #[test]
+    fn vpl_transfer_on_the_receiver_is_zero_without_a_clamp() {
+        assert_eq!(vpl_transfer(Vec3::Z, -Vec3::Z, Vec3::ZERO, 0.0), 0.0);
+        let t = vpl_transfer(Vec3::Z, -Vec3::Z, Vec3::Z * 1e-7, 0.0);
+        assert!(t.is_finite() && t >= 0.0, "{t}");
     }
 
     #[test]

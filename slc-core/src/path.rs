@@ -1,7 +1,6 @@
 //! Path-tracing steps both backends take the same way: the camera ray
 //! through a pixel, and Russian roulette on path length.
 
-use crate::ray::F32_MAX;
 use crate::wgsl::*;
 
 crate::shared! {
@@ -44,12 +43,6 @@ crate::shared! {
     /// incoming ray); a direction below either ends it.
     pub fn continues_path(nd: vec3f, n: vec3f, ng: vec3f) -> bool {
         return dot(nd, n) > 0.0 && dot(nd, ng) > 0.0;
-    }
-
-    /// `true` when every component of `v` is finite (NaN compares false):
-    /// a contribution that is not is dropped.
-    pub fn finite3(v: vec3f) -> bool {
-        return abs(v.x) <= F32_MAX && abs(v.y) <= F32_MAX && abs(v.z) <= F32_MAX;
     }
 
     /// Survival probability of Russian roulette on path length for

@@ -10,6 +10,13 @@ crate::shared! {
     /// bounds of an empty box, and the finiteness test's limit.
     pub const F32_MAX: f32 = 3.4028235e38;
 
+    /// `true` when every component of `v` is finite (NaN compares false):
+    /// a contribution that is not is dropped, a point that is not is no
+    /// surface.
+    pub fn finite3(v: vec3f) -> bool {
+        return abs(v.x) <= F32_MAX && abs(v.y) <= F32_MAX && abs(v.z) <= F32_MAX;
+    }
+
     /// How far a ray leaving a surface starts from it, along the geometric
     /// normal facing the ray: `10⁻⁵` of the scene's bounding-box diagonal
     /// (path tracers' bounces and light connections, the VPL reference's and

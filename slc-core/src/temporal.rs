@@ -236,13 +236,15 @@ crate::shared! {
     /// in w; length 0: none) with noise variance `noise` and last frame's
     /// luminance `last`, and the cap `max_history`: `λ` from
     /// [`persistent_change`] against the history's luminance, the length
-    /// from [`next_history_length`], then `h + (c − h)·α` with `α = `
-    /// [`temporal_alpha`].
+    /// from [`next_history_length`], then `h·(1 − α) + c·α` with `α = `
+    /// [`temporal_alpha`] (written so that `α = 1`, a dropped history,
+    /// gives `c` exactly: `h + (c − h)·α` would round at `h`'s scale).
     pub fn temporal_color(c: vec3f, h: vec4f, noise: f32, last: f32, max_history: f32) -> vec4f {
         let hc: vec3f = vec3f(h.x, h.y, h.z);
         let lambda: f32 = persistent_change(luminance(c), last, luminance(hc), noise, h.w);
         let len: f32 = next_history_length(h.w, lambda, max_history);
-        let v: vec3f = hc + (c - hc) * temporal_alpha(len);
+        let alpha: f32 = temporal_alpha(len);
+        let v: vec3f = hc * (1.0 - alpha) + c * alpha;
         return vec4f(v.x, v.y, v.z, len);
     }
 

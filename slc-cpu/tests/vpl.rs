@@ -56,7 +56,12 @@ fn slc_expectation_equals_unculled_per_pixel() {
 #[test]
 fn slc_mean_over_seeds_converges_to_unculled() {
     let ctx = VplContext::new(&Scene::cornell_box(), 32, 32, 32, None).unwrap();
-    let truth = ctx.render(&settings(VplMethod::None, 0)).unwrap().image.channel_means();
+    // The unculled frame's expectation over the interleaving's shifts:
+    // frames 0..64 take each shift once; 256 SLC frames take each 4 times.
+    let truth = (0..64).fold([0.0f64; 3], |acc, f| {
+        let m = ctx.render(&settings(VplMethod::None, f)).unwrap().image.channel_means();
+        [0, 1, 2].map(|c| acc[c] + m[c] / 64.0)
+    });
     const S: u32 = 256;
     let means: Vec<[f64; 3]> = (0..S)
         .map(|f| {
@@ -114,7 +119,7 @@ fn clamped_ranges_darken() {
 ///    (checked by mutating the flux scale).
 #[test]
 fn interleaved_image_is_the_interleaved_estimator_of_the_reference() {
-    use slc_core::interleave::interleave_subset;
+    use slc_core::interleave::{interleave_shift, interleave_subset, shifted_subset};
     use slc_core::light::vpl_transfer;
     let (w, h, size) = (128u32, 96u32, 32u32);
     let ctx = VplContext::new(&Scene::cornell_box(), w, h, size, None).unwrap();
@@ -123,12 +128,14 @@ fn interleaved_image_is_the_interleaved_estimator_of_the_reference() {
     // Interleaving alone: no near-field split (R_n = 0).
     let none = ctx.shade(&VplSettings { near_radius: Some(0.0), ..settings(VplMethod::None, 0) }).unwrap().irradiance;
     let reference = ctx.shade(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() }).unwrap().irradiance;
+    let st = settings(VplMethod::None, 0);
+    let shift = interleave_shift(st.seed, st.frame, p);
     let subset_of_vpl: Vec<u32> = (0..v.len() as u32).map(|t| interleave_subset(t % size, t / size, p)).collect();
     let f = |x: usize, j: usize| v.flux[j].as_dvec3() * vpl_transfer(v.normal[j], gb.normal[x], gb.position[x] - v.position[j], min_d2) as f64;
     // 1. Per pixel.
     let mut worst = 0.0f64;
     for x in (0..gb.position.len()).filter(|&x| gb.valid(x)) {
-        let s = interleave_subset(x as u32 % w, x as u32 / w, p);
+        let s = shifted_subset(interleave_subset(x as u32 % w, x as u32 / w, p), shift, p);
         let want = (0..v.len()).filter(|&j| subset_of_vpl[j] == s).map(|j| f(x, j)).sum::<glam::DVec3>() * (p * p) as f64;
         let got = none[x].as_dvec3();
         worst = worst.max(((got - want).abs() / want.abs().max(glam::DVec3::splat(1e-12))).max_element());
@@ -260,15 +267,16 @@ fn moved_light_renders_as_a_new_context() {
 /// The near field removes the 8×8 blotches along the base of the tall block
 /// (the floor VPLs a centimetre from its faces, each given to one pixel in
 /// 64 by the interleaving): in the default frame (512², 65,536 VPLs, the
-/// default ε and near radius, frame 0), the largest radiance error of a
-/// pixel within 3 cm of the block's bottom edges, against every VPL at
-/// that pixel, is issue 34's 0.025 to the three digits it was measured to
-/// (0.0250 here; the unculled interleaved frame, `none`, gives 0.02503 and
-/// SLC's frames 1–3 0.0248–0.0252: what is left is the interleaving's, not
-/// the culling's); without the near field it is more than twice that
-/// (0.0774: the blotches the test must be able to see). Both after the
-/// denoise, in the radiance the image shows (`albedo/π · E`; the direct
-/// light is the same in both and cancels).
+/// default ε and near radius), the largest radiance error of a pixel
+/// within 3 cm of the block's bottom edges, against every VPL at that
+/// pixel, depends on the frame's shift of the subset map (the
+/// interleaving's residual, not the culling's: the unculled frames give
+/// the same numbers to 3%); over frames 0–7 it is 0.0334 on average
+/// (0.0261–0.0386) with the near field and 0.0703 without (0.0603–0.0843:
+/// the blotches the test must be able to see). The test bounds the mean
+/// over those 8 frames by 0.036 with, and asks for more than twice that
+/// without. Both after the denoise, in the radiance the image shows
+/// (`albedo/π · E`; the direct light is the same in both and cancels).
 #[test]
 fn near_field_removes_the_blotches_at_the_tall_blocks_base() {
     use slc_core::frame::diffuse_radiance;
@@ -298,17 +306,62 @@ fn near_field_removes_the_blotches_at_the_tall_blocks_base() {
         all.push(v.position[i], v.normal[i], v.flux[i], f32::INFINITY, f32::INFINITY);
     }
     let reference: Vec<Vec3> = crease.iter().map(|&i| shade(&all, gb.position[i], gb.normal[i], ctx.min_d2(), 0.0, Cull::None).0).collect();
-    let largest_error = |near_radius: Option<f32>| {
-        let shaded = ctx.shade(&VplSettings { near_radius, ..VplSettings::default() }).unwrap();
-        let e = Denoiser::new(gb).filter_far(&shaded.irradiance, &shaded.near, gb, PERIOD);
-        crease
-            .iter()
-            .zip(&reference)
-            .map(|(&i, &r)| (diffuse_radiance(gb.albedo[i], Vec3::ZERO, e[i]) - diffuse_radiance(gb.albedo[i], Vec3::ZERO, r)).abs().max_element())
-            .fold(0.0f32, f32::max)
+    let mut denoiser = Denoiser::new(gb);
+    let mut largest_error = |near_radius: Option<f32>| {
+        let frames = 8;
+        let sum: f32 = (0..frames)
+            .map(|frame| {
+                let shaded = ctx.shade(&VplSettings { near_radius, frame, ..VplSettings::default() }).unwrap();
+                let e = denoiser.filter_far(&shaded.irradiance, &shaded.near, gb, PERIOD);
+                let radiance = |i: usize, e: Vec3| diffuse_radiance(gb.albedo[i], Vec3::ZERO, e);
+                crease.iter().zip(&reference).map(|(&i, &r)| (radiance(i, e[i]) - radiance(i, r)).abs().max_element()).fold(0.0f32, f32::max)
+            })
+            .sum();
+        sum / frames as f32
     };
     let (with, without) = (largest_error(None), largest_error(Some(0.0)));
-    eprintln!("{} crease pixels: largest radiance error {with:.4} with the near field, {without:.4} without", crease.len());
-    assert!(with < 0.0255, "the near field leaves an error of {with} at the block's base");
+    eprintln!("{} crease pixels: largest radiance error over 8 frames {with:.4} with the near field, {without:.4} without", crease.len());
+    assert!(with < 0.036, "the near field leaves an error of {with} at the block's base");
     assert!(without > 2.0 * with, "without the near field the blotches should show: {without} vs {with}");
+}
+
+/// Interleaving is unbiased over frames: each frame shifts the
+/// pixel-to-subset map (`interleave_shift`, stratified), so over frames
+/// `0..P²` every pixel shades every subset exactly once, and the mean of
+/// the unculled interleaved irradiance, with and without the near-field
+/// split, is the all-VPL reference at every pixel (1e-5 relative: f32 sums).
+/// The denoise is linear with weights from the G-buffer alone, so its mean
+/// over those frames is its filter of the reference's far field plus the
+/// near field, at every pixel: the frame's one offset from the reference
+/// is the filter's own (`examples/indirect_offset.rs` measures it).
+#[test]
+fn interleaving_averages_to_the_reference_over_frames() {
+    use slc_cpu::vpl::denoise::Denoiser;
+    use slc_scene::vpl::PERIOD;
+    let ctx = VplContext::new(&Scene::cornell_box(), 64, 48, 32, None).unwrap();
+    let gb = ctx.gbuffer();
+    let reference = ctx.shade(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() }).unwrap().irradiance;
+    let frames = PERIOD * PERIOD;
+    let near_field = ctx.shade(&settings(VplMethod::None, 0)).unwrap().near;
+    assert!(near_field.iter().any(|n| n.max_element() > 0.0), "the default split must have a near field");
+    let mut denoiser = Denoiser::new(gb);
+    let filtered_reference = denoiser.filter_far(&reference, &near_field, gb, PERIOD);
+    for (what, near_radius, denoise) in [("interleaving", Some(0.0), false), ("with the near field", None, false), ("denoised", None, true)] {
+        let mut mean = vec![glam::DVec3::ZERO; reference.len()];
+        for frame in 0..frames {
+            let shaded = ctx.shade(&VplSettings { near_radius, ..settings(VplMethod::None, frame) }).unwrap();
+            let e = if denoise { denoiser.filter_far(&shaded.irradiance, &shaded.near, gb, PERIOD) } else { shaded.irradiance };
+            for (m, v) in mean.iter_mut().zip(&e) {
+                *m += v.as_dvec3() / frames as f64;
+            }
+        }
+        let want = if denoise { &filtered_reference } else { &reference };
+        let mut worst = 0.0f64;
+        for i in (0..mean.len()).filter(|&i| gb.valid(i)) {
+            let w = want[i].as_dvec3();
+            worst = worst.max(((mean[i] - w).abs() / w.abs().max(glam::DVec3::splat(1e-9))).max_element());
+        }
+        eprintln!("{what}: mean over {frames} frames against its expectation, worst relative {worst:.2e}");
+        assert!(worst <= 1e-5, "{what}: mean over {frames} frames differs from its expectation by {worst:.2e}");
+    }
 }

@@ -90,22 +90,17 @@ fn ies_table(bound: bool) -> Binding {
 fn surface(binding: u32, surface: SurfaceSource) -> Binding {
     match surface {
         SurfaceSource::Position => texture(binding, "position_tex", "world position; `w > 0` where a surface is", "engine (G-buffer)"),
-        SurfaceSource::Depth => b(
-            0,
-            binding,
-            "depth_tex",
-            Resource::DepthTexture,
-            "`Depth32Float` depth; `view.background` where no surface is",
-            "engine (depth pre-pass)",
-        ),
-        SurfaceSource::R32Depth => texture(binding, "depth_tex", "`R32Float` depth (x); `view.background` where no surface is", "engine (G-buffer)"),
+        SurfaceSource::Depth => {
+            b(0, binding, "depth_tex", Resource::DepthTexture, "`Depth32Float` depth; exactly 0 or 1 where no surface is", "engine (depth pre-pass)")
+        }
+        SurfaceSource::R32Depth => texture(binding, "depth_tex", "`R32Float` depth (x); exactly 0 or 1 where no surface is", "engine (G-buffer)"),
     }
 }
 
 /// The view of an engine pass's G-buffer readers, read in place
 /// (`gbuffer_read.wgsl`): the surface's unprojection and the eye.
 const fn view_uniform(binding: u32) -> Binding {
-    uniform(binding, "view", "ViewParams", true, "inverse view-projection, eye, image size, depth background")
+    uniform(binding, "view", "ViewParams", true, "inverse view-projection, eye, image size")
 }
 
 /// The engine's G-buffer as the indirect pass's kernels read it in place,
@@ -209,7 +204,7 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
         }
         Kernel::DirectLight => {
             let mut v = vec![
-                uniform(0, "view", "ViewParams", true, "inverse view-projection, eye, image size, depth background, seed, frame"),
+                uniform(0, "view", "ViewParams", true, "inverse view-projection, eye, image size, seed, frame"),
                 surface(1, f.surface),
                 texture(2, "normal_tex", "world unit normal (xyz)", "engine (G-buffer)"),
                 out(
@@ -481,8 +476,8 @@ pub fn counts(bindings: &[Binding]) -> BindingCounts {
 /// weighted picks of IES lights from a depth buffer with split outputs,
 /// the others with [`Features::default`].
 pub fn docs() -> String {
-    use crate::LightSet;
-    let vpl = Features { lights: LightSet { vpl: true, ..LightSet::default() }, glossy: true, ..Features::default() };
+    use crate::LightTypes;
+    let vpl = Features { lights: LightTypes { vpl: true, ..LightTypes::default() }, glossy: true, ..Features::default() };
     let direct = Features {
         selection: Selection::Weighted,
         surface: SurfaceSource::Depth,

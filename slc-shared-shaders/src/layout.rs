@@ -225,8 +225,9 @@ slc_core::shared! {
         pub near_r2: f32,
         /// Near blocks of [`NEAR_BLOCK`](slc_core::interleave::NEAR_BLOCK) VPLs.
         pub near_blocks: u32,
-        /// Padding.
-        pub pad0: u32,
+        /// The frame's shift of the pixel-to-subset map
+        /// ([`slc_core::interleave::interleave_shift`]).
+        pub subset_shift: u32,
         /// Padding.
         pub pad1: u32,
     }
@@ -408,7 +409,7 @@ slc_core::shared! {
     pub const MAP_ORTHOGRAPHIC: u32 = 2;
 
     /// Uniforms of the engine passes' G-buffer readers (`direct_light`,
-    /// `vpl_tiled`, `vpl_denoise`, `vpl_near`, `irradiance_export`), one slot per record: the view
+    /// `vpl_tiled`, `vpl_denoise`, `vpl_near`, `irradiance_export`), written per record: the view
     /// that made the depth buffer, the image and the record's random
     /// streams, the dielectric's Fresnel terms, 112 bytes.
     pub struct ViewParams {
@@ -426,8 +427,8 @@ slc_core::shared! {
         pub width: u32,
         /// Image height.
         pub height: u32,
-        /// Depth where no surface is (the depth buffer's clear value).
-        pub background: f32,
+        /// Padding.
+        pub pad0: u32,
         /// Seed of the record's random streams.
         pub seed: u32,
         /// Frame number.

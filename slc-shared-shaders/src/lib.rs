@@ -28,9 +28,9 @@
 //! ## Embedding one kernel in your own wgpu pass
 //!
 //! ```
-//! use slc_shared_shaders::{generate, Features, Kernel, LightSet};
+//! use slc_shared_shaders::{generate, Features, Kernel, LightTypes};
 //!
-//! let features = Features { lights: LightSet::parse("point,spot").unwrap(), ..Features::default() };
+//! let features = Features { lights: LightTypes::parse("point,spot").unwrap(), ..Features::default() };
 //! let wgsl = generate(Kernel::LightUpdate, &features).unwrap();
 //! assert!(wgsl.contains("fn main"));
 //! // let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
@@ -90,7 +90,7 @@ pub enum ShaderError {
 
 /// Which light types a scene has; only these are compiled into a kernel.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
-pub struct LightSet {
+pub struct LightTypes {
     /// Point lights.
     pub point: bool,
     /// Spot lights.
@@ -103,16 +103,16 @@ pub struct LightSet {
     pub vpl: bool,
 }
 
-impl LightSet {
+impl LightTypes {
     /// Names in the order `point, spot, ies, triangle, vpl`.
     pub const NAMES: [&'static str; 5] = ["point", "spot", "ies", "triangle", "vpl"];
 
     /// Every light type.
-    pub const ALL: LightSet = LightSet { point: true, spot: true, ies: true, triangle: true, vpl: true };
+    pub const ALL: LightTypes = LightTypes { point: true, spot: true, ies: true, triangle: true, vpl: true };
 
     /// Parses a comma-separated list such as `point,spot,ies`.
-    pub fn parse(list: &str) -> Result<LightSet, ShaderError> {
-        let mut s = LightSet::default();
+    pub fn parse(list: &str) -> Result<LightTypes, ShaderError> {
+        let mut s = LightTypes::default();
         for name in list.split(',').map(str::trim).filter(|n| !n.is_empty()) {
             match name {
                 "point" => s.point = true,
@@ -129,8 +129,8 @@ impl LightSet {
     }
 
     /// The set with bit `i` of `bits` standing for `NAMES[i]`.
-    pub fn from_bits(bits: u32) -> LightSet {
-        LightSet { point: bits & 1 != 0, spot: bits & 2 != 0, ies: bits & 4 != 0, triangle: bits & 8 != 0, vpl: bits & 16 != 0 }
+    pub fn from_bits(bits: u32) -> LightTypes {
+        LightTypes { point: bits & 1 != 0, spot: bits & 2 != 0, ies: bits & 4 != 0, triangle: bits & 8 != 0, vpl: bits & 16 != 0 }
     }
 
     fn flags(&self) -> [bool; 5] {
@@ -377,7 +377,7 @@ pub enum DirectOutput {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Features {
     /// Light types compiled in.
-    pub lights: LightSet,
+    pub lights: LightTypes,
     /// Reservoir slots `k` (1..=64).
     pub reservoir_k: u32,
     /// Workgroup size of the 1-D kernels (1..=256).
@@ -429,7 +429,7 @@ pub struct Features {
 impl Default for Features {
     fn default() -> Self {
         Features {
-            lights: LightSet::ALL,
+            lights: LightTypes::ALL,
             reservoir_k: 8,
             workgroup_size: 64,
             tile_size: 8,
@@ -510,7 +510,7 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
             return bad(format!("{}: tile {} and period {} must be in 1..=16", kernel.name(), f.tile_size, f.interleave));
         }
         Kernel::VplTiled => {
-            if f.lights != (LightSet { vpl: true, ..LightSet::default() }) {
+            if f.lights != (LightTypes { vpl: true, ..LightTypes::default() }) {
                 return bad(format!("vpl_tiled shades VPLs only; the scene asks for [{}]", f.lights.names().join(", ")));
             }
             if !(1..=16).contains(&f.tile_size) || !f.tile_size.is_power_of_two() {
@@ -528,7 +528,7 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
             }
         }
         Kernel::VplNear => {
-            if f.lights != (LightSet { vpl: true, ..LightSet::default() }) {
+            if f.lights != (LightTypes { vpl: true, ..LightTypes::default() }) {
                 return bad(format!("vpl_near shades VPLs only; the scene asks for [{}]", f.lights.names().join(", ")));
             }
             // Workgroup memory: two vec3f and a block slot per thread, the
@@ -581,8 +581,11 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
     }
     // The frame kernels light the scene with the primary light (a spot, or
     // a directional light, which needs no light type).
-    let l =
-        if matches!(kernel, Kernel::SceneRaster | Kernel::PrimaryDirect) { LightSet { spot: true, ..LightSet::default() } } else { features.lights };
+    let l = if matches!(kernel, Kernel::SceneRaster | Kernel::PrimaryDirect) {
+        LightTypes { spot: true, ..LightTypes::default() }
+    } else {
+        features.lights
+    };
     let method = match features.method {
         CullMethod::Slc => "slc",
         CullMethod::Clamp => "clamp",
@@ -718,7 +721,7 @@ pub fn translate(g: &Generated) -> Result<Translations, ShaderError> {
 pub fn all_kernels(features: &Features) -> Result<Vec<Generated>, ShaderError> {
     Kernel::ALL
         .iter()
-        .filter(|&&k| !k.is_vpl_frame() || features.lights == LightSet { vpl: true, ..LightSet::default() })
+        .filter(|&&k| !k.is_vpl_frame() || features.lights == LightTypes { vpl: true, ..LightTypes::default() })
         .filter(|&&k| k != Kernel::DirectLight || matches!(features.selection, Selection::Reservoir | Selection::Weighted | Selection::All))
         .map(|&k| generate_module(k, features))
         .collect()

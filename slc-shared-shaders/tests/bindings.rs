@@ -9,9 +9,9 @@ use slc_shared_shaders::bindings::{Resource, bindings};
 use slc_shared_shaders::*;
 
 fn feature_sets() -> Vec<Features> {
-    let vpl = LightSet { vpl: true, ..LightSet::default() };
+    let vpl = LightTypes { vpl: true, ..LightTypes::default() };
     let mut v = Vec::new();
-    for lights in [LightSet::ALL, vpl, LightSet::parse("point,ies").unwrap(), LightSet::parse("triangle").unwrap()] {
+    for lights in [LightTypes::ALL, vpl, LightTypes::parse("point,ies").unwrap(), LightTypes::parse("triangle").unwrap()] {
         for (selection, surface) in
             [(Selection::Reservoir, SurfaceSource::Position), (Selection::Weighted, SurfaceSource::Depth), (Selection::All, SurfaceSource::R32Depth)]
         {
@@ -34,7 +34,7 @@ fn tables_match_the_modules() {
     let mut checked = 0;
     for f in feature_sets() {
         for &kernel in &Kernel::ALL {
-            if kernel.is_vpl_frame() && f.lights != (LightSet { vpl: true, ..LightSet::default() }) {
+            if kernel.is_vpl_frame() && f.lights != (LightTypes { vpl: true, ..LightTypes::default() }) {
                 continue;
             }
             let g = generate_module(kernel, &f).unwrap_or_else(|e| panic!("{} {f:?}: {e}", kernel.name()));

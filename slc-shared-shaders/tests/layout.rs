@@ -32,13 +32,13 @@ fn rust_twins_match_naga_layout() {
         fields!(GpuPathVertex, position, alive, normal, material, weight, pad1, gnormal, pad2, wo, pad3),
         fields!(FrameParams, light_count, seed, frame, pad),
         fields!(RefitParams, first, count, pad0, pad1),
-        fields!(VplParams, width, height, lights_per_subset, min_d2, near_r2, near_blocks, pad0, pad1),
+        fields!(VplParams, width, height, lights_per_subset, min_d2, near_r2, near_blocks, subset_shift, pad1),
         fields!(GpuNearBox, lo, pad0, hi, pad1),
         fields!(ShadeParams, point_count, seed, frame, eps),
         fields!(GpuVplRecord, position, pad0, normal, pad1, flux, pad2),
         fields!(PackParams, count, size, per_subset, mode, exposure, error_bound, scale, slc, fixed_r2, pad0, pad1, pad2),
         fields!(ImageParams, eye, width, height, pad0, pad1, pad2),
-        fields!(ViewParams, c0, c1, c2, c3, eye, width, height, background, seed, frame, f0_d, f90_d),
+        fields!(ViewParams, c0, c1, c2, c3, eye, width, height, pad0, seed, frame, f0_d, f90_d),
         fields!(CullParams, light_count, seed, frame, slc, mode, exposure, error_bound, fixed_r2, unculled, pad0, pad1, pad2),
         fields!(GpuVertex, position, material, normal, pad0, geo_normal, pad1),
         fields!(GpuMaterial, albedo, metallic, emission, alpha, f0, f90),
@@ -67,11 +67,11 @@ fn rust_twins_match_naga_layout() {
 /// few list capacities.
 #[test]
 fn vpl_tiled_workgroup_bytes_match_naga() {
-    use slc_shared_shaders::{CullMethod, Features, Kernel, LightSet, generate_module, vpl_tiled_workgroup_bytes};
+    use slc_shared_shaders::{CullMethod, Features, Kernel, LightTypes, generate_module, vpl_tiled_workgroup_bytes};
     for tile in [1u32, 2, 4, 8, 16] {
         for list in [1u32, 100, 1024] {
             let f = Features {
-                lights: LightSet { vpl: true, ..LightSet::default() },
+                lights: LightTypes { vpl: true, ..LightTypes::default() },
                 tile_size: tile,
                 max_tile_lights: list,
                 method: CullMethod::Slc,

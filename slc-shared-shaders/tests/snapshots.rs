@@ -14,7 +14,7 @@ use slc_shared_shaders::*;
 use std::path::PathBuf;
 
 fn variants() -> Vec<(&'static str, Kernel, Features)> {
-    let vpl = LightSet { vpl: true, ..LightSet::default() };
+    let vpl = LightTypes { vpl: true, ..LightTypes::default() };
     vec![
         ("light_update", Kernel::LightUpdate, Features::default()),
         ("bsh_refit", Kernel::BshRefit, Features::default()),
@@ -33,24 +33,24 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
         (
             "bsh_reservoir-point-spot-ies-k8",
             Kernel::BshReservoir,
-            Features { lights: LightSet::parse("point,spot,ies").unwrap(), ..Features::default() },
+            Features { lights: LightTypes::parse("point,spot,ies").unwrap(), ..Features::default() },
         ),
         (
             "bsh_reservoir-point-triangle-unshadowed",
             Kernel::BshReservoir,
-            Features { lights: LightSet::parse("point,triangle").unwrap(), shadows: false, ..Features::default() },
+            Features { lights: LightTypes::parse("point,triangle").unwrap(), shadows: false, ..Features::default() },
         ),
-        ("pt_connect-triangle-k8-power", Kernel::PtConnect, Features { lights: LightSet::parse("triangle").unwrap(), ..Features::default() }),
+        ("pt_connect-triangle-k8-power", Kernel::PtConnect, Features { lights: LightTypes::parse("triangle").unwrap(), ..Features::default() }),
         (
             "pt_connect-triangle-lightbvh",
             Kernel::PtConnect,
-            Features { lights: LightSet::parse("triangle").unwrap(), selection: Selection::LightBvh, ..Features::default() },
+            Features { lights: LightTypes::parse("triangle").unwrap(), selection: Selection::LightBvh, ..Features::default() },
         ),
         ("pt_connect-all-k16-balance", Kernel::PtConnect, Features { reservoir_k: 16, heuristic: Heuristic::Balance, ..Features::default() }),
         (
             "pt_extend-triangle-point-k8-power",
             Kernel::PtExtend,
-            Features { lights: LightSet::parse("point,triangle").unwrap(), ..Features::default() },
+            Features { lights: LightTypes::parse("point,triangle").unwrap(), ..Features::default() },
         ),
         ("vpl_pack-rsm", Kernel::VplPack, Features { lights: vpl, ..Features::default() }),
         ("vpl_pack-buffer", Kernel::VplPack, Features { lights: vpl, vpl_source: VplSource::Buffer, ..Features::default() }),
@@ -84,7 +84,7 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
             "direct_light-point-spot-weighted-r32depth",
             Kernel::DirectLight,
             Features {
-                lights: LightSet::parse("point,spot").unwrap(),
+                lights: LightTypes::parse("point,spot").unwrap(),
                 selection: Selection::Weighted,
                 // naga's GLSL writer cannot load from a depth texture.
                 surface: SurfaceSource::R32Depth,
@@ -94,13 +94,17 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
         (
             "direct_light-all-reservoir-position",
             Kernel::DirectLight,
-            Features { lights: LightSet::parse("point,spot,ies,triangle").unwrap(), output_format: OutputFormat::Rgba32Float, ..Features::default() },
+            Features {
+                lights: LightTypes::parse("point,spot,ies,triangle").unwrap(),
+                output_format: OutputFormat::Rgba32Float,
+                ..Features::default()
+            },
         ),
         (
             "direct_light-triangle-weighted-split",
             Kernel::DirectLight,
             Features {
-                lights: LightSet::parse("triangle").unwrap(),
+                lights: LightTypes::parse("triangle").unwrap(),
                 selection: Selection::Weighted,
                 direct_output: DirectOutput::Split,
                 ..Features::default()

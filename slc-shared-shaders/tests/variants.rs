@@ -6,15 +6,15 @@
 
 use slc_shared_shaders::*;
 
-fn vpl_only() -> LightSet {
-    LightSet { vpl: true, ..LightSet::default() }
+fn vpl_only() -> LightTypes {
+    LightTypes { vpl: true, ..LightTypes::default() }
 }
 
 #[test]
 fn every_bsh_variant_validates() {
     let mut n = 0;
     for bits in 1..32 {
-        let lights = LightSet::from_bits(bits);
+        let lights = LightTypes::from_bits(bits);
         for k in [1, 8, 32] {
             for heuristic in [Heuristic::Balance, Heuristic::Power] {
                 for (kernel, selection) in [
@@ -79,7 +79,7 @@ fn every_vpl_variant_validates() {
 
 #[test]
 fn every_kernel_translates_to_every_backend() {
-    let sets = [LightSet::ALL, LightSet::parse("triangle").unwrap(), LightSet::parse("point,ies").unwrap(), vpl_only()];
+    let sets = [LightTypes::ALL, LightTypes::parse("triangle").unwrap(), LightTypes::parse("point,ies").unwrap(), vpl_only()];
     for lights in sets {
         for g in all_kernels(&Features { lights, ..Features::default() }).unwrap() {
             let t = translate(&g).unwrap_or_else(|e| panic!("{e}"));
@@ -105,14 +105,14 @@ fn every_kernel_translates_to_every_backend() {
 fn unsupported_combinations_are_typed_errors() {
     let unsupported = |k: Kernel, f: Features| assert!(matches!(generate(k, &f), Err(ShaderError::Unsupported(_))), "{k:?} {f:?}");
     unsupported(Kernel::VplTiled, Features::default());
-    unsupported(Kernel::VplTiled, Features { lights: LightSet::parse("vpl,point").unwrap(), ..Features::default() });
+    unsupported(Kernel::VplTiled, Features { lights: LightTypes::parse("vpl,point").unwrap(), ..Features::default() });
     unsupported(Kernel::VplTiled, Features { lights: vpl_only(), tile_size: 3, ..Features::default() });
     unsupported(Kernel::VplTiled, Features { lights: vpl_only(), tile_size: 32, ..Features::default() });
     unsupported(Kernel::VplTiled, Features { lights: vpl_only(), interleave: 0, ..Features::default() });
-    unsupported(Kernel::BshReservoir, Features { lights: LightSet::default(), ..Features::default() });
+    unsupported(Kernel::BshReservoir, Features { lights: LightTypes::default(), ..Features::default() });
     unsupported(Kernel::PtConnect, Features { reservoir_k: 0, ..Features::default() });
     unsupported(Kernel::LightUpdate, Features { workgroup_size: 512, ..Features::default() });
-    assert!(matches!(LightSet::parse("point,laser"), Err(ShaderError::Unsupported(_))));
+    assert!(matches!(LightTypes::parse("point,laser"), Err(ShaderError::Unsupported(_))));
 }
 
 #[test]
@@ -133,7 +133,8 @@ fn every_direct_light_variant_validates() {
                 for (k, direct_output) in
                     [(1, DirectOutput::Irradiance), (8, DirectOutput::Radiance), (8, DirectOutput::Split), (8, DirectOutput::BevyRadiance)]
                 {
-                    let f = Features { lights: LightSet::from_bits(bits), selection, surface, reservoir_k: k, direct_output, ..Features::default() };
+                    let f =
+                        Features { lights: LightTypes::from_bits(bits), selection, surface, reservoir_k: k, direct_output, ..Features::default() };
                     generate_module(Kernel::DirectLight, &f).unwrap_or_else(|e| panic!("{f:?}: {e}"));
                     n += 1;
                 }

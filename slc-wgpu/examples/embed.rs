@@ -18,10 +18,10 @@
 //! through slc-tests' harness): the image is compared with the CPU
 //! backend's ray-cast frame of the same scene.
 
-use glam::Vec3;
 use slc_scene::image::Image;
 use slc_scene::scene::{LightMap, PrimaryLight, Scene};
 use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_wgpu::glam::Vec3;
 use slc_wgpu::passes::{
     DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, IndirectInputs, IndirectPass, IndirectPassDesc, VplInput,
     VplSourceDesc,
@@ -185,7 +185,7 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
 
     // Camera and spot light as view-projection matrices.
     // (glam's camera module: right-handed, depth in [0, 1].)
-    use glam::camera::rh::{proj, view::look_to_mat4};
+    use slc_wgpu::glam::camera::rh::{proj, view::look_to_mat4};
     let cam = &scene.camera;
     let (_, cam_up, cam_forward) = cam.basis();
     // Near and far planes around the box: a 32-bit depth then unprojects

@@ -42,8 +42,8 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use crate::kernel::{KernelLayout, Timer, check_kernels, read_back, storage, zeroed};
-use crate::passes::indirect::Dispatch;
+use crate::kernel::{KernelLayout, Timer, Uploads, check_kernels, read_back, storage, zeroed};
+use crate::passes::indirect::{Dispatch, Recording};
 use crate::passes::{
     Culling, GBuffer, IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, TemporalInputs,
     TemporalPass, TemporalPassDesc, VplInput, VplSourceDesc,
@@ -58,7 +58,7 @@ use slc_scene::vpl::{PERIOD, Specular, VplInputs, VplMethod, VplSettings, VplSta
 use slc_shared_shaders::layout::{
     GpuLight, GpuMaterial, GpuVertex, ImageParams, LIGHT_SPOT, MAP_CAMERA, MAP_ORTHOGRAPHIC, MAP_PERSPECTIVE, MapParams,
 };
-use slc_shared_shaders::{Features, Kernel, LightSet, OutputFormat, generate};
+use slc_shared_shaders::{Features, Kernel, LightTypes, OutputFormat, generate};
 use std::time::Instant;
 use wgpu::util::DeviceExt;
 
@@ -373,7 +373,8 @@ impl GpuVplFrame {
         gpu.require("max_storage_buffers_per_shader_stage (fragment)", 1, lim.max_storage_buffers_per_shader_stage as u64)?;
         let vertex_bytes = scene.triangles.len() as u64 * 3 * std::mem::size_of::<GpuVertex>() as u64;
         gpu.require("max_buffer_size (vertices)", vertex_bytes, lim.max_buffer_size)?;
-        let features = Features { lights: LightSet { vpl: true, ..LightSet::default() }, tile_size: TILE, interleave: PERIOD, ..Features::default() };
+        let features =
+            Features { lights: LightTypes { vpl: true, ..LightTypes::default() }, tile_size: TILE, interleave: PERIOD, ..Features::default() };
         // Glossy materials: the indirect pass's and the composition's glossy kernels.
         let glossy = scene.materials.iter().any(Material::has_specular);
         let compose_features = Features { output_format: OutputFormat::Rgba32Float, glossy, ..features };
@@ -723,7 +724,8 @@ impl GpuVplFrame {
     /// [`GpuVplFrame::stage_times`] once the encoder's commands are
     /// submitted. Returns whether the stages are timed.
     pub fn record_timed(&mut self, encoder: &mut wgpu::CommandEncoder, settings: &IndirectSettings) -> Result<bool, GpuError> {
-        let steps = self.steps(settings)?;
+        let (uploads, steps) = self.steps(settings)?;
+        uploads.record(&self.gpu, encoder);
         let mut timer = self.timer.take();
         match timer.as_mut() {
             Some(t) => self.record_with_timestamps(encoder, &steps, t),
@@ -762,15 +764,16 @@ impl GpuVplFrame {
         Ok(Some(self.timed_stages.iter().zip(ms).map(|(&stage, ms)| StageTime::new(stage, ms)).collect()))
     }
 
-    /// The frame's steps for `st`, each recordable on its own.
-    fn steps(&mut self, st: &IndirectSettings) -> Result<Vec<Step>, GpuError> {
+    /// The frame's uniforms (recorded first) and its steps for `st`, each
+    /// recordable on its own.
+    fn steps(&mut self, st: &IndirectSettings) -> Result<(Uploads, Vec<Step>), GpuError> {
         let inputs = IndirectInputs {
             gbuffer: GBuffer { surface: Surface::Position(&self.gb[0].view), normal: &self.gb[1].view, eye: self.eye },
             vpls: VplInput::Rsm { position: &self.rsm[0].view, normal: &self.rsm[1].view, flux: &self.rsm[2].view },
             output: &self.irradiance.view,
             materials: self.specular.as_ref().map(|sp| IndirectMaterials { table: &self.material_table, specular: &sp.view }),
         };
-        let indirect = self.indirect.dispatches(&inputs, st)?;
+        let Recording { mut uploads, dispatches: indirect } = self.indirect.dispatches(&inputs, st)?;
         self.recorded_min_distance = st.min_distance;
         let (gx, gy) = (self.desc.width.div_ceil(TILE), self.desc.height.div_ceil(TILE));
         let mut steps = vec![Step::Raster(Stage::GBuffer), Step::Raster(Stage::Rsm), Step::Raster(Stage::ShadowMap)];
@@ -781,16 +784,20 @@ impl GpuVplFrame {
             let ts = if self.lighting_changed.take() { t.settings.after_change() } else { t.settings };
             let (pass, out) = &mut t.irradiance;
             let signal = TemporalInputs::new(inputs.gbuffer, &self.irradiance.view, &out.view);
-            steps.push(Step::Compute(pass.dispatch(&signal, &view, &ts)?));
+            let (up, d) = pass.dispatch(&signal, &view, &ts)?;
+            uploads.append(up);
+            steps.push(Step::Compute(d));
             if let (Some((pass, out)), Some(sp)) = (&mut t.specular, &self.specular) {
                 let signal = TemporalInputs::new(inputs.gbuffer, &sp.view, &out.view);
-                steps.push(Step::Compute(pass.dispatch(&signal, &view, &ts)?));
+                let (up, d) = pass.dispatch(&signal, &view, &ts)?;
+                uploads.append(up);
+                steps.push(Step::Compute(d));
             }
             compose = t.compose_group.clone();
         }
         steps.push(Step::Compute(Dispatch::new(Stage::Direct, &self.direct_pipeline, self.direct_group.clone(), None, [gx, gy, 1])));
         steps.push(Step::Compute(Dispatch::new(Stage::Composition, &self.compose_pipeline, compose, None, [gx, gy, 1])));
-        Ok(steps)
+        Ok((uploads, steps))
     }
 
     fn record_step(&self, encoder: &mut wgpu::CommandEncoder, step: &Step, timer: Option<&mut Timer>) {
@@ -842,7 +849,9 @@ impl GpuVplFrame {
     /// nothing is submitted or read back) with the indirect pass's
     /// `settings` (every one of them honoured).
     pub fn record(&mut self, encoder: &mut wgpu::CommandEncoder, settings: &IndirectSettings) -> Result<(), GpuError> {
-        for step in &self.steps(settings)? {
+        let (uploads, steps) = self.steps(settings)?;
+        uploads.record(&self.gpu, encoder);
+        for step in &steps {
             self.record_step(encoder, step, None);
         }
         Ok(())
@@ -852,8 +861,11 @@ impl GpuVplFrame {
     /// times every stage (GPU timestamps, else each stage submitted alone
     /// under the host clock).
     pub fn render(&mut self, settings: &IndirectSettings) -> Result<FrameRender, GpuError> {
-        let steps = self.steps(settings)?;
+        let (uploads, steps) = self.steps(settings)?;
         let gpu = self.gpu.clone();
+        let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc frame uniforms") });
+        uploads.record(&gpu, &mut encoder);
+        gpu.queue.submit([encoder.finish()]);
         let mut times = Vec::with_capacity(steps.len());
         let mut timer = self.timer.take();
         let timing = match timer.as_mut() {

@@ -309,10 +309,61 @@ impl UniformSlots {
     pub(crate) fn binding(&self) -> wgpu::BindingResource<'_> {
         wgpu::BindingResource::Buffer(wgpu::BufferBinding { buffer: &self.buffer, offset: 0, size: wgpu::BufferSize::new(self.size) })
     }
+}
 
-    /// Writes `value` into slot `i` alone (staged until the next submit).
-    pub(crate) fn write_slot<T: bytemuck::Pod>(&self, gpu: &GpuContext, i: usize, value: &T) {
-        gpu.queue.write_buffer(&self.buffer, self.offset(i) as u64, bytemuck::bytes_of(value));
+/// A record's uniform values, put in place by the record's own command
+/// encoder.
+///
+/// `queue.write_buffer` lands before a whole submission runs, so two
+/// records of a pass in one submission that wrote the same uniform would
+/// both read the second's values. Staged here, a record's values travel in
+/// a small buffer of their own (made for the record, initialised at
+/// creation, freed by wgpu once the commands that read it have run) and
+/// `copy_buffer_to_buffer` writes them into the pass's uniform buffers in
+/// command order, just before the record's dispatches: any number of
+/// records of a pass may share a submission, each reading its own values.
+#[derive(Default)]
+pub(crate) struct Uploads {
+    bytes: Vec<u8>,
+    /// `(offset in bytes, destination, size)` of each value.
+    copies: Vec<(u64, wgpu::Buffer, u64)>,
+}
+
+impl Uploads {
+    /// Stages `value` for slot 0 of `dst`.
+    pub(crate) fn push<T: bytemuck::Pod>(&mut self, dst: &UniformSlots, value: &T) {
+        self.push_to(&dst.buffer, value);
+    }
+
+    /// Stages `value` for the start of `dst` (a `COPY_DST` buffer).
+    pub(crate) fn push_to<T: bytemuck::Pod>(&mut self, dst: &wgpu::Buffer, value: &T) {
+        let at = self.bytes.len() as u64;
+        let bytes = bytemuck::bytes_of(value);
+        self.bytes.extend_from_slice(bytes);
+        self.bytes.resize(self.bytes.len().next_multiple_of(wgpu::COPY_BUFFER_ALIGNMENT as usize), 0);
+        self.copies.push((at, dst.clone(), (bytes.len() as u64).next_multiple_of(wgpu::COPY_BUFFER_ALIGNMENT)));
+    }
+
+    /// Adds `other`'s values after these.
+    pub(crate) fn append(&mut self, other: Uploads) {
+        let base = self.bytes.len() as u64;
+        self.bytes.extend_from_slice(&other.bytes);
+        self.copies.extend(other.copies.into_iter().map(|(at, dst, size)| (base + at, dst, size)));
+    }
+
+    /// Records the copies of the staged values into `encoder`.
+    pub(crate) fn record(&self, gpu: &GpuContext, encoder: &mut wgpu::CommandEncoder) {
+        if self.copies.is_empty() {
+            return;
+        }
+        let src = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("slc record uniforms"),
+            contents: &self.bytes,
+            usage: wgpu::BufferUsages::COPY_SRC,
+        });
+        for (at, dst, size) in &self.copies {
+            encoder.copy_buffer_to_buffer(&src, *at, dst, 0, *size);
+        }
     }
 }
 

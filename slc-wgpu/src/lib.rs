@@ -59,16 +59,29 @@ pub mod pt;
 pub mod vpl;
 
 pub use context::{GpuContext, pick_adapter};
+/// The vector and matrix types the API takes (`Vec3` positions and
+/// colours, `Mat4` view-projections): glam, re-exported so that an engine
+/// needs no second dependency, or one at this exact version.
+pub use glam;
 pub use passes::{Culling, GBuffer, Surface, SurfaceDesc};
-/// The lights the passes shade (slc-core's), re-exported so that an engine
-/// needs no other slc crate to build them.
-pub use slc_core::light::{IesLight, Light, PointLight, SpotLight, TriangleLight};
+/// The lights the passes shade (slc-core's), their limit and errors, and
+/// the IES profile an `IesLight` takes, re-exported so that an engine needs
+/// no other slc crate to build them.
+pub use slc_core::LightError;
+pub use slc_core::ies::IesProfile;
+pub use slc_core::light::{IesLight, Light, MAX_INTENSITY, PointLight, SpotLight, TriangleLight};
 /// SLC's error bound and exposure (slc-core's).
 pub use slc_core::range::{IntensityMeasure, RangeParams};
+/// What [`LightSet::new`] and the settings' validation return on bad input
+/// (slc-scene's).
+pub use slc_scene::RenderError;
 /// A light set with its bounding-sphere hierarchy (slc-scene's).
 pub use slc_scene::lights::LightSet;
 /// The temporal pass's camera and settings (slc-scene's).
 pub use slc_scene::temporal::{TemporalSettings, TemporalView};
+/// Which light types a pass's kernels are compiled for
+/// ([`passes::DirectPassDesc::light_types`]).
+pub use slc_shared_shaders::LightTypes;
 
 use thiserror::Error;
 

@@ -14,15 +14,15 @@ use slc_core::light::{Light, LightBound};
 use slc_core::range::RangeParams;
 use slc_scene::light_bvh::LightBvh;
 use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuLightCone, RefitParams, pack_cones, pack_light_bvh, pack_lights};
-use slc_shared_shaders::{Features, Kernel, LightSet};
+use slc_shared_shaders::{Features, Kernel, LightTypes};
 
 /// Workgroup size of the 1-D kernels.
 pub(crate) const WG: u32 = 64;
 
 /// The light types present in `lights`.
-pub(crate) fn light_set(lights: &[Light]) -> LightSet {
+pub(crate) fn light_set(lights: &[Light]) -> LightTypes {
     let has = |f: fn(&Light) -> bool| lights.iter().any(f);
-    LightSet {
+    LightTypes {
         point: has(|l| matches!(l, Light::Point(_))),
         spot: has(|l| matches!(l, Light::Spot(_))),
         ies: has(|l| matches!(l, Light::Ies(_))),
@@ -32,7 +32,7 @@ pub(crate) fn light_set(lights: &[Light]) -> LightSet {
 }
 
 /// `true` when every type of `inner` is in `outer`.
-pub(crate) fn types_within(inner: LightSet, outer: LightSet) -> bool {
+pub(crate) fn types_within(inner: LightTypes, outer: LightTypes) -> bool {
     let (a, b) = (inner.names(), outer.names());
     a.iter().all(|n| b.contains(n))
 }
@@ -88,7 +88,7 @@ pub(crate) fn check_light_limits(gpu: &GpuContext, n: u64, bvh_bytes: u64) -> Re
 pub(crate) struct LightBuffers {
     pub(crate) n: u32,
     peaks_host: Vec<Vec3>,
-    pub(crate) types: LightSet,
+    pub(crate) types: LightTypes,
     pub(crate) lights: wgpu::Buffer,
     /// The IES table (`slc_table`).
     pub(crate) table_buf: wgpu::Buffer,

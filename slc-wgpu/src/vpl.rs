@@ -168,7 +168,6 @@ impl GpuVpl {
         let desc = IndirectPassDesc {
             surface: SurfaceDesc::Position,
             output_format: wgpu::TextureFormat::Rgba32Float,
-            records_per_submission: 1,
             tile_list: capacity,
             glossy,
             ..IndirectPassDesc::new(w, h, VplSourceDesc::Rsm { size: v.size })
@@ -265,7 +264,11 @@ impl GpuVpl {
             output: &self.output_view,
             materials: self.glossy.as_ref().map(|g| IndirectMaterials { table: &g.table, specular: &g.view }),
         };
-        let dispatches = pass.dispatches(&inputs, &st)?;
+        let recording = pass.dispatches(&inputs, &st)?;
+        let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc vpl uniforms") });
+        recording.uploads.record(&gpu, &mut enc);
+        gpu.queue.submit([enc.finish()]);
+        let dispatches = recording.dispatches;
         // A fixed ξ: r² from the host (the core's functions, as the CPU's)
         // once vpl_pack has run, instead of light_update.
         let host_r2: Option<Vec<f32>> = fixed.map(|x| self.slot_flux.iter().map(|&f| random_range2(vpl_threshold_range2(&params, f), x)).collect());

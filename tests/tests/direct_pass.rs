@@ -238,7 +238,6 @@ fn depth_input_matches_positions() {
             W as f32,
             H as f32,
             d,
-            1.0,
         );
         points[i] = p.to_array();
     }
@@ -259,10 +258,7 @@ fn depth_input_matches_positions() {
     let mut by_depth = DirectPass::new(
         gpu,
         &set,
-        &DirectPassDesc {
-            surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::R32Float, reversed: false },
-            ..position_desc(DirectSelection::All)
-        },
+        &DirectPassDesc { surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::R32Float }, ..position_desc(DirectSelection::All) },
     )
     .unwrap();
     let mut by_position = DirectPass::new(gpu, &set, &position_desc(DirectSelection::All)).unwrap();
@@ -321,9 +317,9 @@ fn wrong_inputs_are_typed_errors() {
     assert!(DirectPass::new(gpu, &set, &DirectPassDesc { selection: DirectSelection::Weighted { k: 0 }, ..desc }).is_err());
     let e = DirectPass::new(gpu, &set, &DirectPassDesc { output_format: wgpu::TextureFormat::Rgba8Unorm, ..desc }).err().unwrap();
     assert!(matches!(e, GpuError::Binding { .. }), "{e}");
-    let depth16 = SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth16Unorm, reversed: false };
+    let depth16 = SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth16Unorm };
     assert!(matches!(DirectPass::new(gpu, &set, &DirectPassDesc { surface: depth16, ..desc }), Err(GpuError::Binding { .. })));
-    let points_only = slc_shared_shaders::LightSet { point: true, ..Default::default() };
+    let points_only = slc_shared_shaders::LightTypes { point: true, ..Default::default() };
     assert!(matches!(DirectPass::new(gpu, &set, &DirectPassDesc { light_types: points_only, ..desc }), Err(GpuError::Setting(_))));
     gpu.take_errors().unwrap();
 }

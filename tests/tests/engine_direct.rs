@@ -264,7 +264,6 @@ fn engine_program_matches_brute_force() {
                 W as f32,
                 H as f32,
                 depths[i],
-                1.0,
             );
             let n = normals[i];
             (p.w > 0.0 && n.length_squared() > 0.0).then(|| (p.truncate(), n / n.length_squared().sqrt()))
@@ -341,7 +340,7 @@ fn engine_program_matches_brute_force() {
         view_formats: &[],
     });
     let av = acc.create_view(&Default::default());
-    let surface = SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float, reversed: false };
+    let surface = SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float };
     let mut temporal =
         TemporalPass::new(&gpu, &TemporalPassDesc { surface, output_format: wgpu::TextureFormat::Rgba32Float, ..TemporalPassDesc::new(W, H) })
             .unwrap();

@@ -480,18 +480,8 @@ fn depth_input_matches_positions() {
         forward_depth[i] = c.z / c.w;
         reversed_depth[i] = r.z / r.w;
         let (x, y) = ((i as u32 % W) as f32, (i as u32 / W) as f32);
-        let q = slc_shared_shaders::engine::unproject_pixel(
-            inv.x_axis,
-            inv.y_axis,
-            inv.z_axis,
-            inv.w_axis,
-            x,
-            y,
-            W as f32,
-            H as f32,
-            forward_depth[i],
-            1.0,
-        );
+        let q =
+            slc_shared_shaders::engine::unproject_pixel(inv.x_axis, inv.y_axis, inv.z_axis, inv.w_axis, x, y, W as f32, H as f32, forward_depth[i]);
         points[i] = q.to_array();
     }
     // Surfaces 1-2 m away: near 1 in standard depth, near 0 reversed.
@@ -513,10 +503,11 @@ fn depth_input_matches_positions() {
         pass.record(&mut enc, &inputs, &st).unwrap();
         engine::submit_and_read(gpu, enc, &e.output)
     };
-    let depth = |reversed| SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float, reversed };
+    // One descriptor reads both conventions: 0 and 1 are background.
+    let depth = SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float };
     let by_positions = image(SurfaceDesc::Position, Surface::Position(&positions));
-    let by_depth = image(depth(false), Surface::Depth { depth: &forward_view, inv_view_proj: inv });
-    let by_reversed = image(depth(true), Surface::Depth { depth: &reversed_view, inv_view_proj: vp_reversed.inverse() });
+    let by_depth = image(depth, Surface::Depth { depth: &forward_view, inv_view_proj: inv });
+    let by_reversed = image(depth, Surface::Depth { depth: &reversed_view, inv_view_proj: vp_reversed.inverse() });
     for (what, got) in [("standard depth", &by_depth), ("reversed Z", &by_reversed)] {
         let (mut valid, mut far, mut worst) = (0, 0, 0.0f32);
         for i in 0..n {
@@ -536,7 +527,59 @@ fn depth_input_matches_positions() {
     gpu.take_errors().unwrap();
 }
 
+/// The pass's interleaving is unbiased over frames (its subset map
+/// shifted per frame, stratified): the mean of frames `0..P²` of the
+/// unculled, undenoised pass, with the near-field split, is the pass's
+/// own reference (not interleaved: every VPL at every pixel) at every
+/// pixel, to f32 summation error; frame 0 alone is not.
+fn interleaving_averages_to_the_reference_over_frames() {
+    let Some(gpu) = gpu() else { return };
+    let ctx = cpu_ctx();
+    let e = engine(gpu, &ctx);
+    let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
+    let mut reference_pass = IndirectPass::new(gpu, &IndirectPassDesc { interleaved: false, ..desc(VplSourceDesc::Rsm { size: RSM }) }).unwrap();
+    let inputs = IndirectInputs { gbuffer: e.gbuffer(), vpls: rsm, output: &e.output_view, materials: None };
+    let unculled = slc_wgpu::passes::IndirectSettings {
+        culling: slc_wgpu::Culling::None,
+        denoise: false,
+        near_radius: Some(0.0),
+        min_distance: e.min_distance,
+        ..Default::default()
+    };
+    let mut enc = gpu.device.create_command_encoder(&Default::default());
+    reference_pass.record(&mut enc, &inputs, &unculled).unwrap();
+    let reference = engine::submit_and_read(gpu, enc, &e.output);
+    let mut pass = IndirectPass::new(gpu, &desc(VplSourceDesc::Rsm { size: RSM })).unwrap();
+    let frames = PERIOD * PERIOD;
+    let mut mean = vec![[0.0f64; 3]; reference.len()];
+    let mut first = Vec::new();
+    for frame in 0..frames {
+        let img = run(gpu, &mut pass, &e, rsm, &VplSettings { frame, ..settings(VplMethod::None, false) });
+        for (m, p) in mean.iter_mut().zip(&img) {
+            for c in 0..3 {
+                m[c] += p[c] as f64 / frames as f64;
+            }
+        }
+        if frame == 0 {
+            first = img;
+        }
+    }
+    let gb = ctx.gbuffer();
+    let worst = |img: &dyn Fn(usize) -> [f64; 3]| {
+        (0..reference.len())
+            .filter(|&i| gb.valid(i))
+            .map(|i| (0..3).map(|c| (img(i)[c] - reference[i][c] as f64).abs() / (reference[i][c] as f64).abs().max(1e-9)).fold(0.0, f64::max))
+            .fold(0.0, f64::max)
+    };
+    let (of_mean, of_first) = (worst(&|i| mean[i]), worst(&|i| [0, 1, 2].map(|c| first[i][c] as f64)));
+    eprintln!("mean of {frames} frames against the reference: worst relative {of_mean:.2e}; frame 0 alone {of_first:.2e}");
+    assert!(of_mean <= 1e-4, "the mean over {frames} frames differs from the reference by {of_mean:.2e}");
+    assert!(of_first > 1e-2, "frame 0 alone must differ (it shades one subset per pixel): {of_first:.2e}");
+    gpu.take_errors().unwrap();
+}
+
 slc_tests::harness!(
+    Gpu: interleaving_averages_to_the_reference_over_frames,
     Gpu: depth_input_matches_positions,
     Gpu: pass_matches_gpu_vpl_for_every_method,
     Gpu: vpl_buffer_source_gives_the_rsm_image,

@@ -188,7 +188,7 @@ fn wrong_inputs_are_typed_errors() {
     let nan = TemporalView { eye: Vec3::NAN, ..view };
     assert!(matches!(pass.record(&mut enc, &ok, &nan, &ts), Err(GpuError::Setting(_))));
     assert!(matches!(pass.record(&mut enc, &ok, &view, &TemporalSettings { max_history: 0.0 }), Err(GpuError::Setting(_))));
-    let depth = TemporalPassDesc { surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float, reversed: false }, ..desc() };
+    let depth = TemporalPassDesc { surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float }, ..desc() };
     let mut depth_pass = TemporalPass::new(gpu, &depth).unwrap();
     assert!(matches!(depth_pass.record(&mut enc, &ok, &view, &ts), Err(GpuError::Binding { .. })), "positions for a depth pass");
     assert!(matches!(TemporalPass::new(gpu, &TemporalPassDesc::new(0, 4)), Err(GpuError::Setting(_))));

@@ -34,7 +34,7 @@ use glam::Vec3;
 use rayon::prelude::*;
 use shade::{Cull, Glossy, LightList};
 use slc_core::frame::{directional_irradiance, point_irradiance};
-use slc_core::interleave::{interleave_flux_scale, vpl_near_range2};
+use slc_core::interleave::{interleave_flux_scale, interleave_shift, shifted_subset, vpl_near_range2};
 use slc_core::light::{Light, vpl_threshold_range2};
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::ray::surface_offset;
@@ -453,13 +453,14 @@ impl VplContext {
         let min_d2 = self.inputs.min_d2;
         let mut reused = self.take_reused();
         let ranges = self.ranges(cull, params, s);
+        let shift = interleave_shift(s.seed, s.frame, PERIOD);
         let (mut far, mut near_lights) = (std::mem::take(&mut reused.far), std::mem::take(&mut reused.near_lights));
         // The near field's light list is built (one thread) while the far
         // field is shaded (the other, and both once it is built).
         rayon::join(
             || {
-                far.shade_parts(tiling, |sub, part, out, spec, scratch| {
-                    self.subset_lights_into(&mut scratch.all, sub, &ranges);
+                far.shade_parts(tiling, |class, part, out, spec, scratch| {
+                    self.subset_lights_into(&mut scratch.all, shifted_subset(class as u32, shift, PERIOD) as usize, &ranges);
                     shade_part(part, &scratch.all, cull != Cull::None, cull, min_d2, near_r2, out, spec, &mut scratch.lists)
                 })
             },
@@ -909,7 +910,7 @@ mod tests {
     /// Lambertian `albedo/π · E` (else the test would prove nothing).
     #[test]
     fn glossy_vpl_light_is_the_brdf_sum_over_vpls() {
-        use slc_core::interleave::vpl_near_weight;
+        use slc_core::interleave::{interleave_subset, shifted_subset, vpl_near_weight};
         use slc_core::light::vpl_transfer;
         let scene = Scene::cornell_box_glossy();
         let (w, h) = (24u32, 24u32);
@@ -917,13 +918,13 @@ mod tests {
         let (gb, v, min_d2) = (ctx.gbuffer(), ctx.vpls(), ctx.min_d2());
         assert!(gb.has_specular());
         let size = v.size as usize;
-        let p = PERIOD as usize;
         let scale = interleave_flux_scale(PERIOD) as f64;
         let default_near = VplSettings::default().near_r2(min_d2);
         for (method, near_radius, near_r2) in
             [(VplMethod::Reference, None, 0.0), (VplMethod::None, Some(0.0), 0.0), (VplMethod::None, None, default_near)]
         {
             let settings = VplSettings { method, denoise: false, near_radius, ..VplSettings::default() };
+            let shift = slc_core::interleave::interleave_shift(settings.seed, settings.frame, PERIOD);
             let image = ctx.render(&settings).unwrap().image;
             let (mut glossy, mut differs, mut direct_differs) = (0, 0, 0);
             for i in 0..(w * h) as usize {
@@ -938,7 +939,8 @@ mod tests {
                 let view = (scene.camera.position - x).normalize();
                 let (mut sum, mut lambert) = (glam::DVec3::ZERO, glam::DVec3::ZERO);
                 for k in 0..v.len() {
-                    let in_subset = (k / size) % p == py % p && (k % size) % p == px % p;
+                    let class = interleave_subset(px as u32, py as u32, PERIOD);
+                    let in_subset = interleave_subset((k % size) as u32, (k / size) as u32, PERIOD) == shifted_subset(class, shift, PERIOD);
                     let d = x - v.position[k];
                     let near = vpl_near_weight(d.length_squared(), near_r2) as f64;
                     let share = match method {

@@ -9,7 +9,7 @@ fn surface_at(texel: vec2i) -> vec4f {
     return select(vec4f(0.0), vec4f(p.xyz, 1.0), p.w > 0.0);
 {% else %}
     let d = textureLoad(depth_tex, texel, 0){% if surface == "r32" %}.x{% endif %};
-    return unproject_pixel(view.c0, view.c1, view.c2, view.c3, f32(texel.x), f32(texel.y), f32(view.width), f32(view.height), d, view.background);
+    return unproject_pixel(view.c0, view.c1, view.c2, view.c3, f32(texel.x), f32(texel.y), f32(view.width), f32(view.height), d);
 {% endif %}
 }
 

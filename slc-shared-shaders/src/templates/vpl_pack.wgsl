@@ -26,18 +26,27 @@ fn main(@builtin(global_invocation_id) gid: vec3u, @builtin(workgroup_id) wg: ve
         let ty = near_block_ty(q, params.size);
         let i = ty * params.size + tx;
         let texel = vec2i(i32(tx), i32(ty));
-        position = textureLoad(rsm_position, texel, 0).xyz;
-        let normal = textureLoad(rsm_normal, texel, 0).xyz;
-        let flux = textureLoad(rsm_flux, texel, 0).xyz * params.scale;
+        var p = textureLoad(rsm_position, texel, 0).xyz;
+        var normal = textureLoad(rsm_normal, texel, 0).xyz;
+        var flux = textureLoad(rsm_flux, texel, 0).xyz;
         let slot = interleave_slot(tx, ty, params.size, P);
 {% else %}
         let i = q;
         let r = records[i];
-        position = r.position;
-        let normal = r.normal;
-        let flux = r.flux * params.scale;
+        var p = r.position;
+        var normal = r.normal;
+        var flux = r.flux;
         let slot = interleave_slot_linear(i, params.per_subset, P);
 {% endif %}
+        // A texel or record no light constructor would accept (NaN, ∞,
+        // negative or too bright) is skipped: zero flux at the origin.
+        if !vpl_record_ok(p, normal, flux) {
+            p = vec3f(0.0);
+            normal = vec3f(0.0);
+            flux = vec3f(0.0);
+        }
+        position = p;
+        flux *= params.scale;
         lights[slot] = GpuLight(position, LIGHT_VPL, normal, 0.0, vec3f(0.0), 0.0, flux, 0u);
         ids[slot] = i;
         let slc = params.slc != 0u;

@@ -3,7 +3,8 @@
 // Tiled deferred VPL shading with {{ method }} culling, for {{ period }}x{{ period }}
 // interleaved sampling: workgroup (x, y, s) is tile (x, y) of sub-image s,
 // which holds the pixels (s mod P + P·i, s / P + P·j) and shades them with
-// VPL subset s (VPLs stored subset after subset, flux already scaled by P²).
+// VPL subset shifted_subset(s, subset_shift) (VPLs stored subset after
+// subset, flux already scaled by P²).
 // The tile's box of G-buffer positions is reduced in workgroup memory, the
 // subset's range spheres are culled against it into a workgroup list (a
 // chunk of the subset at a time), then each pixel loops over the list with
@@ -54,7 +55,8 @@ fn main(
     let tile_box = workgroup_box(li, pos.xyz, valid);
     let lo = tile_box.lo;
     let hi = tile_box.hi;
-    let base = sub * params.lights_per_subset;
+    // This frame's map: pixel class `sub` shades a shifted subset.
+    let base = shifted_subset(sub, params.subset_shift, P) * params.lights_per_subset;
     var e = vec3f(0.0);
     var kept = 0u;
 {% if glossy %}

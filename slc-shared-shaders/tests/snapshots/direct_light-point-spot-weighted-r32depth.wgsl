@@ -28,7 +28,7 @@ struct ViewParams {
     eye: vec3<f32>,
     width: u32,
     height: u32,
-    background: f32,
+    pad0_: u32,
     seed: u32,
     frame: u32,
     f0_d: vec3<f32>,
@@ -91,6 +91,7 @@ const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
@@ -186,8 +187,8 @@ fn slc_keep(r2_: f32, d2_1: f32) -> bool {
 }
 
 fn sphere_contains_point(c: vec3<f32>, r_1: f32, x_1: vec3<f32>) -> bool {
-    let v_2 = (x_1 - c);
-    return (dot(v_2, v_2) <= (r_1 * r_1));
+    let v_3 = (x_1 - c);
+    return (dot(v_3, v_3) <= (r_1 * r_1));
 }
 
 fn inverse_square(d2_2: f32) -> f32 {
@@ -204,8 +205,8 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     var local_2: bool;
     var local_3: bool;
 
-    let v_3 = (x_2 - y);
-    let d2_7 = dot(v_3, v_3);
+    let v_4 = (x_2 - y);
+    let d2_7 = dot(v_4, v_4);
     let _e7 = slc_keep(r2_1, d2_7);
     if !(!(_e7)) {
         local_2 = !((d2_7 > 0f));
@@ -216,7 +217,7 @@ fn connection_cosine(x_2: vec3<f32>, y: vec3<f32>, n: vec3<f32>, ng: vec3<f32>, 
     if _e16 {
         return 0f;
     }
-    let w_5 = (v_3 / vec3(sqrt(d2_7)));
+    let w_5 = (v_4 / vec3(sqrt(d2_7)));
     let cos_x_1 = -(dot(n, w_5));
     if !((cos_x_1 <= 0f)) {
         local_3 = (dot(ng, w_5) >= 0f);
@@ -330,11 +331,11 @@ fn subtended_cos(dist2_: f32, r2_2: f32) -> f32 {
 }
 
 fn emitter_cone(center: vec3<f32>, radius: f32, axis: vec3<f32>, cos_o: f32, p: vec3<f32>) -> vec4<f32> {
-    let v_4 = (p - center);
-    let dist2_1 = dot(v_4, v_4);
+    let v_5 = (p - center);
+    let dist2_1 = dot(v_5, v_5);
     let r2_4 = (radius * radius);
     let d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
-    let wi = select(vec3<f32>(0f, 0f, 0f), (v_4 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
+    let wi = select(vec3<f32>(0f, 0f, 0f), (v_5 / vec3(sqrt(dist2_1))), (dist2_1 > 0f));
     let cos_w = dot(axis, wi);
     let _e25 = safe_sqrt((1f - (cos_w * cos_w)));
     let _e26 = subtended_cos(dist2_1, r2_4);
@@ -380,8 +381,8 @@ fn cone_cos_of(v: vec3<f32>, d2_4: f32, a_2: f32, d: vec3<f32>) -> f32 {
 }
 
 fn cone_cos_toward(center_2: vec3<f32>, radius_2: f32, p_2: vec3<f32>, d_1: vec3<f32>) -> f32 {
-    let v_5 = (center_2 - p_2);
-    let _e6 = cone_cos_of(v_5, dot(v_5, v_5), radius_2, d_1);
+    let v_6 = (center_2 - p_2);
+    let _e6 = cone_cos_of(v_6, dot(v_6, v_6), radius_2, d_1);
     return _e6;
 }
 
@@ -408,9 +409,9 @@ fn light_importance(center_4: vec3<f32>, radius_4: f32, phi_1: f32, axis_2: vec3
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if (dot(n_1, n_1) > 0f) {
-        let v_6 = (center_4 - p_4);
-        let dist2_2 = dot(v_6, v_6);
-        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_6 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_1);
+        let v_7 = (center_4 - p_4);
+        let dist2_2 = dot(v_7, v_7);
+        let cos_i = dot(select(vec3<f32>(0f, 0f, 0f), (v_7 / vec3(sqrt(dist2_2))), (dist2_2 > 0f)), n_1);
         let _e33 = imp;
         let _e37 = safe_sqrt((1f - (cos_i * cos_i)));
         let _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -448,15 +449,34 @@ fn candidate_weight(importance: f32, rt2_2: f32, d2_5: f32) -> f32 {
 }
 
 fn cone_weight(center_6: vec3<f32>, radius_6: f32, phi_3: f32, axis_4: vec3<f32>, cos_o_4: f32, cos_e_3: f32, rt2_3: f32, p_6: vec3<f32>, n_3: vec3<f32>, r_4: vec3<f32>, lobe_6: vec4<f32>) -> f32 {
-    let v_7 = (p_6 - center_6);
+    let v_8 = (p_6 - center_6);
     if (lobe_6.y <= 0f) {
         let _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3);
-        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_7, v_7));
+        let _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_8, v_8));
         return _e19;
     }
     let _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3, r_4, lobe_6);
-    let _e22 = candidate_weight(_e20, rt2_3, dot(v_7, v_7));
+    let _e22 = candidate_weight(_e20, rt2_3, dot(v_8, v_8));
     return _e22;
+}
+
+fn finite3_(v_1: vec3<f32>) -> bool {
+    var local_7: bool;
+    var local_8: bool;
+
+    if (abs(v_1.x) <= F32_MAX) {
+        local_7 = (abs(v_1.y) <= F32_MAX);
+    } else {
+        local_7 = false;
+    }
+    let _e12 = local_7;
+    if _e12 {
+        local_8 = (abs(v_1.z) <= F32_MAX);
+    } else {
+        local_8 = false;
+    }
+    let _e20 = local_8;
+    return _e20;
 }
 
 fn light_intensity(l: GpuLight, w_3: vec3<f32>) -> vec3<f32> {
@@ -499,15 +519,15 @@ fn bsh_first(nodes_2: u32) -> u32 {
     return BSH_NONE;
 }
 
-fn bsh_inner_scale(a_4: f32, v_1: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
-    let _e5 = cone_cos_of(v_1, d2_6, a_4, r_5);
+fn bsh_inner_scale(a_4: f32, v_2: vec3<f32>, d2_6: f32, r_5: vec3<f32>, rl_2: vec4<f32>) -> f32 {
+    let _e5 = cone_cos_of(v_2, d2_6, a_4, r_5);
     let _e8 = range_scale_at(rl_2, (_e5 + 0.000002f));
     return _e8;
 }
 
 fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>) -> bool {
-    var local_7: bool;
-    var local_8: bool;
+    var local_9: bool;
+    var local_10: bool;
 
     let _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
     if _e6 {
@@ -515,17 +535,17 @@ fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
     }
     if !((rl_3.w <= 1f)) {
         let _e20 = sphere_contains_point(node_2.center, (node_2.radius * (rl_3.w * 1.0001f)), x_4);
-        local_7 = !(_e20);
+        local_9 = !(_e20);
     } else {
-        local_7 = true;
+        local_9 = true;
     }
-    let _e23 = local_7;
+    let _e23 = local_9;
     if _e23 {
         return false;
     }
     let _e25 = bsh_range_bound(node_2);
-    let v_8 = (x_4 - node_2.center);
-    let d2_9 = dot(v_8, v_8);
+    let v_9 = (x_4 - node_2.center);
+    let d2_9 = dot(v_9, v_9);
     let reach_max = (node_2.extent + ((rl_3.w * 1.001f) * _e25));
     if (d2_9 > (reach_max * reach_max)) {
         return false;
@@ -536,15 +556,15 @@ fn bsh_reaches(node_2: BshNode, x_4: vec3<f32>, r_6: vec3<f32>, rl_3: vec4<f32>)
         let _e47 = sphere_contains_point(node_2.center, _e46, x_4);
         return _e47;
     }
-    let _e50 = bsh_inner_scale(node_2.extent, -(v_8), d2_9, r_6, rl_3);
+    let _e50 = bsh_inner_scale(node_2.extent, -(v_9), d2_9, r_6, rl_3);
     let s_c = (_e50 * 1.001f);
     let reach = (node_2.extent + (sqrt(s_c) * _e25));
     if (d2_9 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_8 = (d2_9 <= (reach * reach));
+        local_10 = (d2_9 <= (reach * reach));
     } else {
-        local_8 = false;
+        local_10 = false;
     }
-    let _e67 = local_8;
+    let _e67 = local_10;
     return _e67;
 }
 
@@ -578,7 +598,7 @@ fn bsh_next_leaf_lobe(nodes_3: u32, start: u32, x_5: vec3<f32>, r_7: vec3<f32>, 
 
 fn connect(li: u32, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_res: f32, u1_1: f32, u2_1: f32, eps: f32) -> Connection {
     var c_1: Connection;
-    var local_9: bool;
+    var local_11: bool;
 
     c_1.e = vec3(0f);
     let l_2 = lights[li];
@@ -592,19 +612,19 @@ fn connect(li: u32, x_6: vec3<f32>, n_4: vec3<f32>, ng_1: vec3<f32>, s: f32, w_r
     if !((_e27 <= 0f)) {
         let _e36 = c_1.y;
         let _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
-        local_9 = _e37;
+        local_11 = _e37;
     } else {
-        local_9 = true;
+        local_11 = true;
     }
-    let _e39 = local_9;
+    let _e39 = local_11;
     if _e39 {
         let _e40 = c_1;
         return _e40;
     }
     let _e42 = c_1.y;
-    let v_9 = (x_6 - _e42);
-    let d2_10 = dot(v_9, v_9);
-    let _e49 = light_intensity(l_2, (v_9 / vec3(sqrt(d2_10))));
+    let v_10 = (x_6 - _e42);
+    let d2_10 = dot(v_10, v_10);
+    let _e49 = light_intensity(l_2, (v_10 / vec3(sqrt(d2_10))));
     let _e51 = c_1.cos_x;
     let _e54 = rt2_4[li];
     let _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
@@ -696,15 +716,32 @@ fn bsh_weighted_collect(x_9: vec3<f32>, n_6: vec3<f32>, r_10: vec3<f32>, lobe_8:
     return _e65;
 }
 
-fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, px: f32, py: f32, width: f32, height: f32, depth: f32, background: f32) -> vec4<f32> {
-    if (depth == background) {
+fn unproject_pixel(c0_: vec4<f32>, c1_: vec4<f32>, c2_: vec4<f32>, c3_: vec4<f32>, px: f32, py: f32, width: f32, height: f32, depth: f32) -> vec4<f32> {
+    var local_12: bool;
+    var local_13: bool;
+
+    if (depth > 0f) {
+        local_12 = (depth < 1f);
+    } else {
+        local_12 = false;
+    }
+    let _e16 = local_12;
+    if !(_e16) {
         return vec4<f32>(0f, 0f, 0f, 0f);
     }
     let x_11 = ((((px + 0.5f) / width) * 2f) - 1f);
     let y_1 = (1f - (((py + 0.5f) / height) * 2f));
     let p_7 = ((((c0_ * x_11) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    let q = vec3<f32>((p_7.x / p_7.w), (p_7.y / p_7.w), (p_7.z / p_7.w));
     if (abs(p_7.w) > 0f) {
-        return vec4<f32>((p_7.x / p_7.w), (p_7.y / p_7.w), (p_7.z / p_7.w), 1f);
+        let _e59 = finite3_(q);
+        local_13 = _e59;
+    } else {
+        local_13 = false;
+    }
+    let _e61 = local_13;
+    if _e61 {
+        return vec4<f32>(q.x, q.y, q.z, 1f);
     }
     return vec4<f32>(0f, 0f, 0f, 0f);
 }
@@ -718,9 +755,8 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     let _e16 = view.c3_;
     let _e23 = view.width;
     let _e27 = view.height;
-    let _e31 = view.background;
-    let _e32 = unproject_pixel(_e7, _e10, _e13, _e16, f32(texel.x), f32(texel.y), f32(_e23), f32(_e27), d_2, _e31);
-    return _e32;
+    let _e29 = unproject_pixel(_e7, _e10, _e13, _e16, f32(texel.x), f32(texel.y), f32(_e23), f32(_e27), d_2);
+    return _e29;
 }
 
 fn shade_pick(li_3: u32, x_10: vec3<f32>, n_7: vec3<f32>, r_11: vec3<f32>, rl_8: vec4<f32>, m_1: Material, w_4: f32, u1_2: f32, u2_2: f32) -> Shaded {

@@ -6,7 +6,7 @@ struct ViewParams {
     eye: vec3<f32>,
     width: u32,
     height: u32,
-    background: f32,
+    pad0_: u32,
     seed: u32,
     frame: u32,
     f0_d: vec3<f32>,
@@ -36,6 +36,7 @@ const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;

@@ -27,6 +27,7 @@ const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
@@ -336,7 +337,7 @@ fn vpl_lobe(n_1: vec3<f32>, w_1: vec3<f32>) -> f32 {
 }
 
 fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v_2: vec3<f32>, min_d2_: f32) -> f32 {
-    let m = max(dot(v_2, v_2), min_d2_);
+    let m = max(dot(v_2, v_2), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v_2), 0f) * max(-(dot(n_x, v_2)), 0f)) * INV_PI) / (m * m));
 }
 
@@ -1221,6 +1222,25 @@ fn bvh_remap_u(u_5: f32, p0_: f32, first: bool) -> f32 {
     return clamp(((u_5 - p0_) / (1f - p0_)), 0f, ONE_MINUS_EPSILON);
 }
 
+fn finite3_(v_12: vec3<f32>) -> bool {
+    var local_16: bool;
+    var local_17: bool;
+
+    if (abs(v_12.x) <= F32_MAX) {
+        local_16 = (abs(v_12.y) <= F32_MAX);
+    } else {
+        local_16 = false;
+    }
+    let _e12 = local_16;
+    if _e12 {
+        local_17 = (abs(v_12.z) <= F32_MAX);
+    } else {
+        local_17 = false;
+    }
+    let _e20 = local_17;
+    return _e20;
+}
+
 fn surface_offset(diag: f32) -> f32 {
     return (0.00001f * diag);
 }
@@ -1258,16 +1278,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin_1: vec3<f32>, bmax_1: vec3<f32>
 }
 
 fn triangle_normal(a_6: vec3<f32>, b_4: vec3<f32>, c_7: vec3<f32>) -> vec3<f32> {
-    var local_16: bool;
+    var local_18: bool;
 
     let n_37 = cross((b_4 - a_6), (c_7 - a_6));
     let l2_ = dot(n_37, n_37);
     if !(!((l2_ > 0f))) {
-        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_18 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_16 = true;
+        local_18 = true;
     }
-    let _e17 = local_16;
+    let _e17 = local_18;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -1295,16 +1315,16 @@ fn barycentric(p_8: vec3<f32>, a_7: vec3<f32>, b_5: vec3<f32>, c_8: vec3<f32>) -
 }
 
 fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
-    var local_17: bool;
+    var local_19: bool;
 
     let s_6 = (((n0_ * w_8.x) + (n1_ * w_8.y)) + (n2_ * w_8.z));
     let l2_1 = dot(s_6, s_6);
     if !(!((l2_1 > 0.000000000001f))) {
-        local_17 = !((l2_1 < 300000000000000000000000000000000000000f));
+        local_19 = !((l2_1 < 300000000000000000000000000000000000000f));
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    let _e24 = local_17;
+    let _e24 = local_19;
     if _e24 {
         return facing;
     }
@@ -1313,9 +1333,9 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_8: vec3<f32>
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_8: vec3<f32>, b_6: vec3<f32>, c_9: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_18: bool;
-    var local_19: bool;
     var local_20: bool;
+    var local_21: bool;
+    var local_22: bool;
 
     let e1_2 = (b_6 - a_8);
     let e2_2 = (c_9 - a_8);
@@ -1328,32 +1348,32 @@ fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_8: vec3<f32>, b_6: vec3<f32>, 
     let s_7 = (o_1 - a_8);
     let u_7 = (dot(s_7, p_12) * inv_1);
     if !((u_7 < 0f)) {
-        local_18 = (u_7 > 1f);
+        local_20 = (u_7 > 1f);
     } else {
-        local_18 = true;
+        local_20 = true;
     }
-    let _e28 = local_18;
+    let _e28 = local_20;
     if _e28 {
         return -1f;
     }
     let q_6 = cross(s_7, e1_2);
     let v_23 = (dot(d_4, q_6) * inv_1);
     if !((v_23 < 0f)) {
-        local_19 = ((u_7 + v_23) > 1f);
+        local_21 = ((u_7 + v_23) > 1f);
     } else {
-        local_19 = true;
+        local_21 = true;
     }
-    let _e42 = local_19;
+    let _e42 = local_21;
     if _e42 {
         return -1f;
     }
     let t_6 = (dot(e2_2, q_6) * inv_1);
     if (t_6 > t_min) {
-        local_20 = (t_6 < t_max_1);
+        local_22 = (t_6 < t_max_1);
     } else {
-        local_20 = false;
+        local_22 = false;
     }
-    let _e51 = local_20;
+    let _e51 = local_22;
     if _e51 {
         return t_6;
     }
@@ -1402,19 +1422,69 @@ fn interleave_subset(x_15: u32, y_2: u32, period_2: u32) -> u32 {
     return (((y_2 % period_2) * period_2) + (x_15 % period_2));
 }
 
-fn interleave_slot(tx: u32, ty: u32, size_2: u32, period_3: u32) -> u32 {
-    let side_1 = (size_2 / period_3);
-    let _e5 = interleave_subset(tx, ty, period_3);
-    return ((((_e5 * side_1) * side_1) + ((ty / period_3) * side_1)) + (tx / period_3));
+fn shifted_subset(pixel_class: u32, shift: u32, period_3: u32) -> u32 {
+    return ((pixel_class + shift) % (period_3 * period_3));
 }
 
-fn interleave_slot_linear(i_1: u32, per_subset: u32, period_4: u32) -> u32 {
-    let subsets = (period_4 * period_4);
+fn vpl_record_ok(position: vec3<f32>, normal: vec3<f32>, flux_1: vec3<f32>) -> bool {
+    var local_23: bool;
+    var local_24: bool;
+    var local_25: bool;
+    var local_26: bool;
+    var local_27: bool;
+
+    let _e3 = finite3_(position);
+    if _e3 {
+        let _e6 = finite3_(normal);
+        local_23 = _e6;
+    } else {
+        local_23 = false;
+    }
+    let _e8 = local_23;
+    if _e8 {
+        let _e11 = finite3_(flux_1);
+        local_24 = _e11;
+    } else {
+        local_24 = false;
+    }
+    let _e13 = local_24;
+    if !(_e13) {
+        return false;
+    }
+    if (flux_1.x >= 0f) {
+        local_25 = (flux_1.y >= 0f);
+    } else {
+        local_25 = false;
+    }
+    let _e25 = local_25;
+    if _e25 {
+        local_26 = (flux_1.z >= 0f);
+    } else {
+        local_26 = false;
+    }
+    let _e32 = local_26;
+    if _e32 {
+        local_27 = ((max(max(flux_1.x, flux_1.y), flux_1.z) * INV_PI) <= MAX_INTENSITY);
+    } else {
+        local_27 = false;
+    }
+    let _e45 = local_27;
+    return _e45;
+}
+
+fn interleave_slot(tx: u32, ty: u32, size_2: u32, period_4: u32) -> u32 {
+    let side_1 = (size_2 / period_4);
+    let _e5 = interleave_subset(tx, ty, period_4);
+    return ((((_e5 * side_1) * side_1) + ((ty / period_4) * side_1)) + (tx / period_4));
+}
+
+fn interleave_slot_linear(i_1: u32, per_subset: u32, period_5: u32) -> u32 {
+    let subsets = (period_5 * period_5);
     return (((i_1 % subsets) * per_subset) + (i_1 / subsets));
 }
 
-fn interleave_flux_scale(period_5: u32) -> f32 {
-    let _e2 = to_f32_((period_5 * period_5));
+fn interleave_flux_scale(period_6: u32) -> f32 {
+    let _e2 = to_f32_((period_6 * period_6));
     return _e2;
 }
 
@@ -1457,8 +1527,8 @@ fn vpl_far_fixed_share(range2_2: f32, d2_14: f32, near_r2_3: f32) -> f32 {
     return select(0f, _e3, (_e4 & (_e3 > 0f)));
 }
 
-fn vpl_near_range2_(r2_8: f32, period_6: u32) -> f32 {
-    let _e2 = interleave_flux_scale(period_6);
+fn vpl_near_range2_(r2_8: f32, period_7: u32) -> f32 {
+    let _e2 = interleave_flux_scale(period_7);
     return (r2_8 / _e2);
 }
 
@@ -1499,34 +1569,15 @@ fn sees_emission(gn: vec3<f32>, dir_1: vec3<f32>) -> bool {
 }
 
 fn continues_path(nd: vec3<f32>, n_27: vec3<f32>, ng_1: vec3<f32>) -> bool {
-    var local_21: bool;
+    var local_28: bool;
 
     if (dot(nd, n_27) > 0f) {
-        local_21 = (dot(nd, ng_1) > 0f);
+        local_28 = (dot(nd, ng_1) > 0f);
     } else {
-        local_21 = false;
+        local_28 = false;
     }
-    let _e12 = local_21;
+    let _e12 = local_28;
     return _e12;
-}
-
-fn finite3_(v_12: vec3<f32>) -> bool {
-    var local_22: bool;
-    var local_23: bool;
-
-    if (abs(v_12.x) <= F32_MAX) {
-        local_22 = (abs(v_12.y) <= F32_MAX);
-    } else {
-        local_22 = false;
-    }
-    let _e12 = local_22;
-    if _e12 {
-        local_23 = (abs(v_12.z) <= F32_MAX);
-    } else {
-        local_23 = false;
-    }
-    let _e20 = local_23;
-    return _e20;
 }
 
 fn path_survival(beta: vec3<f32>) -> f32 {
@@ -1589,14 +1640,14 @@ fn shadow_bias(texel: f32, cos_light_1: f32) -> f32 {
 }
 
 fn shadow_lit(d_6: f32, d_map: f32, bias: f32) -> bool {
-    var local_24: bool;
+    var local_29: bool;
 
     if !((d_map <= 0f)) {
-        local_24 = (d_6 <= (d_map + bias));
+        local_29 = (d_6 <= (d_map + bias));
     } else {
-        local_24 = true;
+        local_29 = true;
     }
-    let _e11 = local_24;
+    let _e11 = local_29;
     return _e11;
 }
 
@@ -1605,16 +1656,16 @@ fn diffuse_radiance(albedo: vec3<f32>, emission: vec3<f32>, e_2: vec3<f32>) -> v
 }
 
 fn primary_light_dir(x_17: vec3<f32>, origin: vec3<f32>, axis_8: vec3<f32>, perspective_2: bool) -> vec3<f32> {
-    var local_25: bool;
+    var local_30: bool;
 
     let v_25 = (origin - x_17);
     let d2_20 = dot(v_25, v_25);
     if perspective_2 {
-        local_25 = (d2_20 > 0f);
+        local_30 = (d2_20 > 0f);
     } else {
-        local_25 = false;
+        local_30 = false;
     }
-    let _e11 = local_25;
+    let _e11 = local_30;
     if _e11 {
         return (v_25 / vec3(sqrt(d2_20)));
     }
@@ -1651,10 +1702,10 @@ fn bilinear_weight(fx: f32, fy: f32, dx: u32, dy: u32) -> f32 {
 }
 
 fn history_tap(q_2: vec3<f32>, k_5: u32, width_2: f32, height_2: f32) -> vec4<f32> {
-    var local_26: bool;
-    var local_27: bool;
-    var local_28: bool;
-    var local_29: bool;
+    var local_31: bool;
+    var local_32: bool;
+    var local_33: bool;
+    var local_34: bool;
 
     let x0_ = floor(q_2.x);
     let y0_ = floor(q_2.y);
@@ -1665,29 +1716,29 @@ fn history_tap(q_2: vec3<f32>, k_5: u32, width_2: f32, height_2: f32) -> vec4<f3
     let _e14 = to_f32_(dy_1);
     let ty_2 = (y0_ + _e14);
     if (q_2.z > 0f) {
-        local_26 = (tx_2 >= 0f);
+        local_31 = (tx_2 >= 0f);
     } else {
-        local_26 = false;
+        local_31 = false;
     }
-    let _e24 = local_26;
+    let _e24 = local_31;
     if _e24 {
-        local_27 = (ty_2 >= 0f);
+        local_32 = (ty_2 >= 0f);
     } else {
-        local_27 = false;
+        local_32 = false;
     }
-    let _e30 = local_27;
+    let _e30 = local_32;
     if _e30 {
-        local_28 = (tx_2 < width_2);
+        local_33 = (tx_2 < width_2);
     } else {
-        local_28 = false;
+        local_33 = false;
     }
-    let _e35 = local_28;
+    let _e35 = local_33;
     if _e35 {
-        local_29 = (ty_2 < height_2);
+        local_34 = (ty_2 < height_2);
     } else {
-        local_29 = false;
+        local_34 = false;
     }
-    let inside = local_29;
+    let inside = local_34;
     let _e45 = bilinear_weight((q_2.x - x0_), (q_2.y - y0_), dx_1, dy_1);
     return vec4<f32>(tx_2, ty_2, _e45, select(0f, 1f, inside));
 }
@@ -1700,14 +1751,14 @@ fn history_mean(sum_1: vec4<f32>, weight_1: f32) -> vec4<f32> {
 }
 
 fn history_matches(n_30: vec3<f32>, nh: vec3<f32>, p_10: vec3<f32>, oh: f32, d_7: f32) -> bool {
-    var local_30: bool;
+    var local_35: bool;
 
     if (abs((dot(nh, p_10) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d_7)) {
-        local_30 = (dot(n_30, nh) >= TEMPORAL_NORMAL_COS);
+        local_35 = (dot(n_30, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_30 = false;
+        local_35 = false;
     }
-    let _e17 = local_30;
+    let _e17 = local_35;
     return _e17;
 }
 
@@ -1729,34 +1780,34 @@ fn temporal_alpha(n_33: f32) -> f32 {
 }
 
 fn history_tap_weight(w_10: f32, n_34: vec3<f32>, nh_1: vec3<f32>, p_11: vec3<f32>, oh_1: f32, d_8: f32, len_1: f32) -> f32 {
-    var local_31: bool;
+    var local_36: bool;
 
     if (len_1 > 0f) {
         let _e11 = history_matches(n_34, nh_1, p_11, oh_1, d_8);
-        local_31 = _e11;
+        local_36 = _e11;
     } else {
-        local_31 = false;
+        local_36 = false;
     }
-    let _e13 = local_31;
+    let _e13 = local_36;
     return select(0f, w_10, _e13);
 }
 
 fn history_tap_weight_motion(w_11: f32, n_35: vec3<f32>, nh_2: vec3<f32>, d_9: f32, dh: f32, len_2: f32) -> f32 {
-    var local_32: bool;
-    var local_33: bool;
+    var local_37: bool;
+    var local_38: bool;
 
     if (len_2 > 0f) {
-        local_32 = (abs((dh - d_9)) <= (TEMPORAL_MOTION_DEPTH_TOLERANCE * d_9));
+        local_37 = (abs((dh - d_9)) <= (TEMPORAL_MOTION_DEPTH_TOLERANCE * d_9));
     } else {
-        local_32 = false;
+        local_37 = false;
     }
-    let _e16 = local_32;
+    let _e16 = local_37;
     if _e16 {
-        local_33 = (dot(n_35, nh_2) >= TEMPORAL_NORMAL_COS);
+        local_38 = (dot(n_35, nh_2) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_33 = false;
+        local_38 = false;
     }
-    let _e23 = local_33;
+    let _e23 = local_38;
     return select(0f, w_11, _e23);
 }
 
@@ -1775,13 +1826,13 @@ fn temporal_color(c_11: vec3<f32>, h_1: vec4<f32>, noise_2: f32, last_1: f32, ma
     let _e10 = luminance(hc);
     let _e12 = persistent_change(_e9, last_1, _e10, noise_2, h_1.w);
     let _e14 = next_history_length(h_1.w, _e12, max_history_1);
-    let _e16 = temporal_alpha(_e14);
-    let v_26 = (hc + ((c_11 - hc) * _e16));
+    let _e15 = temporal_alpha(_e14);
+    let v_26 = ((hc * (1f - _e15)) + (c_11 * _e15));
     return vec4<f32>(v_26.x, v_26.y, v_26.z, _e14);
 }
 
 fn temporal_moments(c_12: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, len_3: f32, depth_1: f32) -> vec4<f32> {
-    var local_34: bool;
+    var local_39: bool;
 
     let _e6 = luminance(c_12);
     if (prev_len <= 0f) {
@@ -1791,11 +1842,11 @@ fn temporal_moments(c_12: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, l
     let d2_21 = ((0.5f * d_12) * d_12);
     let cap = (16f * noise_3);
     if (prev_len >= TEMPORAL_MIN_MOMENTS) {
-        local_34 = (noise_3 > 0f);
+        local_39 = (noise_3 > 0f);
     } else {
-        local_34 = false;
+        local_39 = false;
     }
-    let _e26 = local_34;
+    let _e26 = local_39;
     let sample = select(d2_21, min(d2_21, cap), _e26);
     let _e31 = temporal_alpha((len_3 - 1f));
     return vec4<f32>(_e6, (noise_3 + ((sample - noise_3) * _e31)), depth_1, 0f);

@@ -108,6 +108,7 @@ const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
@@ -675,6 +676,25 @@ fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: 
     return _e10;
 }
 
+fn finite3_(v_6: vec3<f32>) -> bool {
+    var local_13: bool;
+    var local_14: bool;
+
+    if (abs(v_6.x) <= F32_MAX) {
+        local_13 = (abs(v_6.y) <= F32_MAX);
+    } else {
+        local_13 = false;
+    }
+    let _e12 = local_13;
+    if _e12 {
+        local_14 = (abs(v_6.z) <= F32_MAX);
+    } else {
+        local_14 = false;
+    }
+    let _e20 = local_14;
+    return _e20;
+}
+
 fn shadow_margin(len: f32) -> f32 {
     return (0.0001f * len);
 }
@@ -704,16 +724,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 }
 
 fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> {
-    var local_13: bool;
+    var local_15: bool;
 
     let n_17 = cross((b_4 - a_5), (c_3 - a_5));
     let l2_ = dot(n_17, n_17);
     if !(!((l2_ > 0f))) {
-        local_13 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_15 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    let _e17 = local_13;
+    let _e17 = local_15;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -721,9 +741,9 @@ fn triangle_normal(a_5: vec3<f32>, b_4: vec3<f32>, c_3: vec3<f32>) -> vec3<f32> 
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_14: bool;
-    var local_15: bool;
     var local_16: bool;
+    var local_17: bool;
+    var local_18: bool;
 
     let e1_ = (b_5 - a_6);
     let e2_ = (c_4 - a_6);
@@ -736,55 +756,36 @@ fn ray_triangle(o_1: vec3<f32>, d_3: vec3<f32>, a_6: vec3<f32>, b_5: vec3<f32>, 
     let s_6 = (o_1 - a_6);
     let u_2 = (dot(s_6, p_2) * inv_1);
     if !((u_2 < 0f)) {
-        local_14 = (u_2 > 1f);
+        local_16 = (u_2 > 1f);
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    let _e28 = local_14;
+    let _e28 = local_16;
     if _e28 {
         return -1f;
     }
     let q = cross(s_6, e1_);
     let v_11 = (dot(d_3, q) * inv_1);
     if !((v_11 < 0f)) {
-        local_15 = ((u_2 + v_11) > 1f);
+        local_17 = ((u_2 + v_11) > 1f);
     } else {
-        local_15 = true;
+        local_17 = true;
     }
-    let _e42 = local_15;
+    let _e42 = local_17;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_, q) * inv_1);
     if (t_3 > t_min) {
-        local_16 = (t_3 < t_max_1);
+        local_18 = (t_3 < t_max_1);
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    let _e51 = local_16;
+    let _e51 = local_18;
     if _e51 {
         return t_3;
     }
     return -1f;
-}
-
-fn finite3_(v_6: vec3<f32>) -> bool {
-    var local_17: bool;
-    var local_18: bool;
-
-    if (abs(v_6.x) <= F32_MAX) {
-        local_17 = (abs(v_6.y) <= F32_MAX);
-    } else {
-        local_17 = false;
-    }
-    let _e12 = local_17;
-    if _e12 {
-        local_18 = (abs(v_6.z) <= F32_MAX);
-    } else {
-        local_18 = false;
-    }
-    let _e20 = local_18;
-    return _e20;
 }
 
 fn light_intensity(l_4: GpuLight, w_3: vec3<f32>) -> vec3<f32> {

@@ -121,6 +121,7 @@ const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
@@ -632,6 +633,25 @@ fn range_scale_toward(rl_1: vec4<f32>, center_1: vec3<f32>, radius_1: f32, p_1: 
     return _e10;
 }
 
+fn finite3_(v_8: vec3<f32>) -> bool {
+    var local_14: bool;
+    var local_15: bool;
+
+    if (abs(v_8.x) <= F32_MAX) {
+        local_14 = (abs(v_8.y) <= F32_MAX);
+    } else {
+        local_14 = false;
+    }
+    let _e12 = local_14;
+    if _e12 {
+        local_15 = (abs(v_8.z) <= F32_MAX);
+    } else {
+        local_15 = false;
+    }
+    let _e20 = local_15;
+    return _e20;
+}
+
 fn ray_inverse(x_2: f32) -> f32 {
     return (1f / select(x_2, 0.000000000000000000000000000001f, (abs(x_2) < 0.000000000000000000000000000001f)));
 }
@@ -657,16 +677,16 @@ fn ray_aabb(o: vec3<f32>, inv_d: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_
 }
 
 fn triangle_normal(a_3: vec3<f32>, b_2: vec3<f32>, c_2: vec3<f32>) -> vec3<f32> {
-    var local_14: bool;
+    var local_16: bool;
 
     let n_15 = cross((b_2 - a_3), (c_2 - a_3));
     let l2_ = dot(n_15, n_15);
     if !(!((l2_ > 0f))) {
-        local_14 = !((l2_ < 300000000000000000000000000000000000000f));
+        local_16 = !((l2_ < 300000000000000000000000000000000000000f));
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    let _e17 = local_14;
+    let _e17 = local_16;
     if _e17 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -694,16 +714,16 @@ fn barycentric(p_2: vec3<f32>, a_4: vec3<f32>, b_3: vec3<f32>, c_3: vec3<f32>) -
 }
 
 fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_2: vec3<f32>, facing: vec3<f32>) -> vec3<f32> {
-    var local_15: bool;
+    var local_17: bool;
 
     let s_4 = (((n0_ * w_2.x) + (n1_ * w_2.y)) + (n2_ * w_2.z));
     let l2_1 = dot(s_4, s_4);
     if !(!((l2_1 > 0.000000000001f))) {
-        local_15 = !((l2_1 < 300000000000000000000000000000000000000f));
+        local_17 = !((l2_1 < 300000000000000000000000000000000000000f));
     } else {
-        local_15 = true;
+        local_17 = true;
     }
-    let _e24 = local_15;
+    let _e24 = local_17;
     if _e24 {
         return facing;
     }
@@ -712,9 +732,9 @@ fn shading_normal(n0_: vec3<f32>, n1_: vec3<f32>, n2_: vec3<f32>, w_2: vec3<f32>
 }
 
 fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, c_4: vec3<f32>, t_min: f32, t_max_1: f32) -> f32 {
-    var local_16: bool;
-    var local_17: bool;
     var local_18: bool;
+    var local_19: bool;
+    var local_20: bool;
 
     let e1_1 = (b_4 - a_5);
     let e2_1 = (c_4 - a_5);
@@ -727,32 +747,32 @@ fn ray_triangle(o_1: vec3<f32>, d_4: vec3<f32>, a_5: vec3<f32>, b_4: vec3<f32>, 
     let s_5 = (o_1 - a_5);
     let u_3 = (dot(s_5, p_3) * inv_1);
     if !((u_3 < 0f)) {
-        local_16 = (u_3 > 1f);
+        local_18 = (u_3 > 1f);
     } else {
-        local_16 = true;
+        local_18 = true;
     }
-    let _e28 = local_16;
+    let _e28 = local_18;
     if _e28 {
         return -1f;
     }
     let q_1 = cross(s_5, e1_1);
     let v_12 = (dot(d_4, q_1) * inv_1);
     if !((v_12 < 0f)) {
-        local_17 = ((u_3 + v_12) > 1f);
+        local_19 = ((u_3 + v_12) > 1f);
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    let _e42 = local_17;
+    let _e42 = local_19;
     if _e42 {
         return -1f;
     }
     let t_3 = (dot(e2_1, q_1) * inv_1);
     if (t_3 > t_min) {
-        local_18 = (t_3 < t_max_1);
+        local_20 = (t_3 < t_max_1);
     } else {
-        local_18 = false;
+        local_20 = false;
     }
-    let _e51 = local_18;
+    let _e51 = local_20;
     if _e51 {
         return t_3;
     }
@@ -779,34 +799,15 @@ fn sees_emission(gn: vec3<f32>, dir_1: vec3<f32>) -> bool {
 }
 
 fn continues_path(nd: vec3<f32>, n_12: vec3<f32>, ng: vec3<f32>) -> bool {
-    var local_19: bool;
-
-    if (dot(nd, n_12) > 0f) {
-        local_19 = (dot(nd, ng) > 0f);
-    } else {
-        local_19 = false;
-    }
-    let _e12 = local_19;
-    return _e12;
-}
-
-fn finite3_(v_8: vec3<f32>) -> bool {
-    var local_20: bool;
     var local_21: bool;
 
-    if (abs(v_8.x) <= F32_MAX) {
-        local_20 = (abs(v_8.y) <= F32_MAX);
-    } else {
-        local_20 = false;
-    }
-    let _e12 = local_20;
-    if _e12 {
-        local_21 = (abs(v_8.z) <= F32_MAX);
+    if (dot(nd, n_12) > 0f) {
+        local_21 = (dot(nd, ng) > 0f);
     } else {
         local_21 = false;
     }
-    let _e20 = local_21;
-    return _e20;
+    let _e12 = local_21;
+    return _e12;
 }
 
 fn path_survival(beta: vec3<f32>) -> f32 {

@@ -19,7 +19,7 @@ struct ViewParams {
     eye: vec3<f32>,
     width: u32,
     height: u32,
-    background: f32,
+    pad0_: u32,
     seed: u32,
     frame: u32,
     f0_d: vec3<f32>,
@@ -49,6 +49,7 @@ const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
@@ -226,8 +227,8 @@ fn temporal_color(c_1: vec3<f32>, h: vec4<f32>, noise_2: f32, last_1: f32, max_h
     let _e10 = luminance(hc);
     let _e12 = persistent_change(_e9, last_1, _e10, noise_2, h.w);
     let _e14 = next_history_length(h.w, _e12, max_history_1);
-    let _e16 = temporal_alpha(_e14);
-    let v_1 = (hc + ((c_1 - hc) * _e16));
+    let _e15 = temporal_alpha(_e14);
+    let v_1 = ((hc * (1f - _e15)) + (c_1 * _e15));
     return vec4<f32>(v_1.x, v_1.y, v_1.z, _e14);
 }
 

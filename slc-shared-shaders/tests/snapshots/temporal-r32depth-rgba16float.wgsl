@@ -19,7 +19,7 @@ struct ViewParams {
     eye: vec3<f32>,
     width: u32,
     height: u32,
-    background: f32,
+    pad0_: u32,
     seed: u32,
     frame: u32,
     f0_d: vec3<f32>,
@@ -49,6 +49,7 @@ const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
@@ -100,6 +101,25 @@ fn to_f32_(u: u32) -> f32 {
     return f32(u);
 }
 
+fn finite3_(v_1: vec3<f32>) -> bool {
+    var local_1: bool;
+    var local_2: bool;
+
+    if (abs(v_1.x) <= F32_MAX) {
+        local_1 = (abs(v_1.y) <= F32_MAX);
+    } else {
+        local_1 = false;
+    }
+    let _e12 = local_1;
+    if _e12 {
+        local_2 = (abs(v_1.z) <= F32_MAX);
+    } else {
+        local_2 = false;
+    }
+    let _e20 = local_2;
+    return _e20;
+}
+
 fn luminance(c: vec3<f32>) -> f32 {
     return dot(c, vec3<f32>(0.2126f, 0.7152f, 0.0722f));
 }
@@ -121,10 +141,10 @@ fn bilinear_weight(fx: f32, fy: f32, dx: u32, dy: u32) -> f32 {
 }
 
 fn history_tap(q: vec3<f32>, k_1: u32, width_1: f32, height_1: f32) -> vec4<f32> {
-    var local_1: bool;
-    var local_2: bool;
     var local_3: bool;
     var local_4: bool;
+    var local_5: bool;
+    var local_6: bool;
 
     let x0_ = floor(q.x);
     let y0_ = floor(q.y);
@@ -135,29 +155,29 @@ fn history_tap(q: vec3<f32>, k_1: u32, width_1: f32, height_1: f32) -> vec4<f32>
     let _e14 = to_f32_(dy_1);
     let ty = (y0_ + _e14);
     if (q.z > 0f) {
-        local_1 = (tx >= 0f);
-    } else {
-        local_1 = false;
-    }
-    let _e24 = local_1;
-    if _e24 {
-        local_2 = (ty >= 0f);
-    } else {
-        local_2 = false;
-    }
-    let _e30 = local_2;
-    if _e30 {
-        local_3 = (tx < width_1);
+        local_3 = (tx >= 0f);
     } else {
         local_3 = false;
     }
-    let _e35 = local_3;
-    if _e35 {
-        local_4 = (ty < height_1);
+    let _e24 = local_3;
+    if _e24 {
+        local_4 = (ty >= 0f);
     } else {
         local_4 = false;
     }
-    let inside = local_4;
+    let _e30 = local_4;
+    if _e30 {
+        local_5 = (tx < width_1);
+    } else {
+        local_5 = false;
+    }
+    let _e35 = local_5;
+    if _e35 {
+        local_6 = (ty < height_1);
+    } else {
+        local_6 = false;
+    }
+    let inside = local_6;
     let _e45 = bilinear_weight((q.x - x0_), (q.y - y0_), dx_1, dy_1);
     return vec4<f32>(tx, ty, _e45, select(0f, 1f, inside));
 }
@@ -170,14 +190,14 @@ fn history_mean(sum: vec4<f32>, weight_1: f32) -> vec4<f32> {
 }
 
 fn history_matches(n: vec3<f32>, nh: vec3<f32>, p_1: vec3<f32>, oh: f32, d: f32) -> bool {
-    var local_5: bool;
+    var local_7: bool;
 
     if (abs((dot(nh, p_1) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d)) {
-        local_5 = (dot(n, nh) >= TEMPORAL_NORMAL_COS);
+        local_7 = (dot(n, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_5 = false;
+        local_7 = false;
     }
-    let _e17 = local_5;
+    let _e17 = local_7;
     return _e17;
 }
 
@@ -199,15 +219,15 @@ fn temporal_alpha(n_3: f32) -> f32 {
 }
 
 fn history_tap_weight(w: f32, n_4: vec3<f32>, nh_1: vec3<f32>, p_2: vec3<f32>, oh_1: f32, d_1: f32, len: f32) -> f32 {
-    var local_6: bool;
+    var local_8: bool;
 
     if (len > 0f) {
         let _e11 = history_matches(n_4, nh_1, p_2, oh_1, d_1);
-        local_6 = _e11;
+        local_8 = _e11;
     } else {
-        local_6 = false;
+        local_8 = false;
     }
-    let _e13 = local_6;
+    let _e13 = local_8;
     return select(0f, w, _e13);
 }
 
@@ -226,13 +246,13 @@ fn temporal_color(c_1: vec3<f32>, h: vec4<f32>, noise_2: f32, last_1: f32, max_h
     let _e10 = luminance(hc);
     let _e12 = persistent_change(_e9, last_1, _e10, noise_2, h.w);
     let _e14 = next_history_length(h.w, _e12, max_history_1);
-    let _e16 = temporal_alpha(_e14);
-    let v_1 = (hc + ((c_1 - hc) * _e16));
-    return vec4<f32>(v_1.x, v_1.y, v_1.z, _e14);
+    let _e15 = temporal_alpha(_e14);
+    let v_2 = ((hc * (1f - _e15)) + (c_1 * _e15));
+    return vec4<f32>(v_2.x, v_2.y, v_2.z, _e14);
 }
 
 fn temporal_moments(c_2: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, len_1: f32, depth: f32) -> vec4<f32> {
-    var local_7: bool;
+    var local_9: bool;
 
     let _e6 = luminance(c_2);
     if (prev_len <= 0f) {
@@ -242,25 +262,42 @@ fn temporal_moments(c_2: vec3<f32>, last_2: f32, noise_3: f32, prev_len: f32, le
     let d2_ = ((0.5f * d_2) * d_2);
     let cap = (16f * noise_3);
     if (prev_len >= TEMPORAL_MIN_MOMENTS) {
-        local_7 = (noise_3 > 0f);
+        local_9 = (noise_3 > 0f);
     } else {
-        local_7 = false;
+        local_9 = false;
     }
-    let _e26 = local_7;
+    let _e26 = local_9;
     let sample = select(d2_, min(d2_, cap), _e26);
     let _e31 = temporal_alpha((len_1 - 1f));
     return vec4<f32>(_e6, (noise_3 + ((sample - noise_3) * _e31)), depth, 0f);
 }
 
-fn unproject_pixel(c0_1: vec4<f32>, c1_1: vec4<f32>, c2_1: vec4<f32>, c3_1: vec4<f32>, px: f32, py: f32, width_2: f32, height_2: f32, depth_1: f32, background: f32) -> vec4<f32> {
-    if (depth_1 == background) {
+fn unproject_pixel(c0_1: vec4<f32>, c1_1: vec4<f32>, c2_1: vec4<f32>, c3_1: vec4<f32>, px: f32, py: f32, width_2: f32, height_2: f32, depth_1: f32) -> vec4<f32> {
+    var local_10: bool;
+    var local_11: bool;
+
+    if (depth_1 > 0f) {
+        local_10 = (depth_1 < 1f);
+    } else {
+        local_10 = false;
+    }
+    let _e16 = local_10;
+    if !(_e16) {
         return vec4<f32>(0f, 0f, 0f, 0f);
     }
     let x_1 = ((((px + 0.5f) / width_2) * 2f) - 1f);
     let y_1 = (1f - (((py + 0.5f) / height_2) * 2f));
     let p_3 = ((((c0_1 * x_1) + (c1_1 * y_1)) + (c2_1 * depth_1)) + c3_1);
+    let q_1 = vec3<f32>((p_3.x / p_3.w), (p_3.y / p_3.w), (p_3.z / p_3.w));
     if (abs(p_3.w) > 0f) {
-        return vec4<f32>((p_3.x / p_3.w), (p_3.y / p_3.w), (p_3.z / p_3.w), 1f);
+        let _e59 = finite3_(q_1);
+        local_11 = _e59;
+    } else {
+        local_11 = false;
+    }
+    let _e61 = local_11;
+    if _e61 {
+        return vec4<f32>(q_1.x, q_1.y, q_1.z, 1f);
     }
     return vec4<f32>(0f, 0f, 0f, 0f);
 }
@@ -274,13 +311,12 @@ fn surface_at(texel: vec2<i32>) -> vec4<f32> {
     let _e16 = view.c3_;
     let _e23 = view.width;
     let _e27 = view.height;
-    let _e31 = view.background;
-    let _e32 = unproject_pixel(_e7, _e10, _e13, _e16, f32(texel.x), f32(texel.y), f32(_e23), f32(_e27), d_3, _e31);
-    return _e32;
+    let _e29 = unproject_pixel(_e7, _e10, _e13, _e16, f32(texel.x), f32(texel.y), f32(_e23), f32(_e27), d_3);
+    return _e29;
 }
 
 fn gbuffer_at(i: u32) -> GbTexel {
-    var local_8: bool;
+    var local_12: bool;
 
     let _e3 = view.width;
     let _e8 = view.width;
@@ -290,15 +326,15 @@ fn gbuffer_at(i: u32) -> GbTexel {
     let n_6 = _e15.xyz;
     let len2_ = dot(n_6, n_6);
     if (_e12.w > 0f) {
-        local_8 = (len2_ > 0f);
+        local_12 = (len2_ > 0f);
     } else {
-        local_8 = false;
+        local_12 = false;
     }
-    let valid = local_8;
+    let valid = local_12;
     let _e30 = view.eye;
-    let v_2 = (_e12.xyz - _e30);
+    let v_3 = (_e12.xyz - _e30);
     let position = vec4<f32>(_e12.xyz, select(0f, 1f, valid));
-    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_6 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))), valid);
+    let normal = select(vec4<f32>(0f, 0f, 0f, 1000000000000000000000000000000f), vec4<f32>((n_6 / vec3(sqrt(len2_))), sqrt(dot(v_3, v_3))), valid);
     return GbTexel(position, normal);
 }
 

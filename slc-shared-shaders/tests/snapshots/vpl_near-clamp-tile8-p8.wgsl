@@ -16,7 +16,7 @@ struct VplParams {
     min_d2_: f32,
     near_r2_: f32,
     near_blocks: u32,
-    pad0_: u32,
+    subset_shift: u32,
     pad1_: u32,
 }
 
@@ -35,7 +35,7 @@ struct ViewParams {
     eye: vec3<f32>,
     width: u32,
     height: u32,
-    background: f32,
+    pad0_: u32,
     seed: u32,
     frame: u32,
     f0_d: vec3<f32>,
@@ -70,6 +70,7 @@ const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
@@ -139,7 +140,7 @@ fn sphere_overlaps_aabb(c: vec3<f32>, r: f32, bmin: vec3<f32>, bmax: vec3<f32>) 
 }
 
 fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v: vec3<f32>, min_d2_: f32) -> f32 {
-    let m_2 = max(dot(v, v), min_d2_);
+    let m_2 = max(dot(v, v), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v), 0f) * max(-(dot(n_x, v)), 0f)) * INV_PI) / (m_2 * m_2));
 }
 

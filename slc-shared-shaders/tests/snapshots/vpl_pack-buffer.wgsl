@@ -63,6 +63,7 @@ const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
@@ -120,10 +121,75 @@ fn intensity_measure(rgb: vec3<f32>, mode: u32) -> f32 {
     return max(rgb.x, max(rgb.y, rgb.z));
 }
 
-fn vpl_rt2_(flux: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32) -> f32 {
-    let _e6 = intensity_measure((flux * INV_PI), mode_1);
+fn vpl_rt2_(flux_1: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32) -> f32 {
+    let _e6 = intensity_measure((flux_1 * INV_PI), mode_1);
     let _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
     return _e7;
+}
+
+fn finite3_(v: vec3<f32>) -> bool {
+    var local_1: bool;
+    var local_2: bool;
+
+    if (abs(v.x) <= F32_MAX) {
+        local_1 = (abs(v.y) <= F32_MAX);
+    } else {
+        local_1 = false;
+    }
+    let _e12 = local_1;
+    if _e12 {
+        local_2 = (abs(v.z) <= F32_MAX);
+    } else {
+        local_2 = false;
+    }
+    let _e20 = local_2;
+    return _e20;
+}
+
+fn vpl_record_ok(position_1: vec3<f32>, normal_1: vec3<f32>, flux_2: vec3<f32>) -> bool {
+    var local_3: bool;
+    var local_4: bool;
+    var local_5: bool;
+    var local_6: bool;
+    var local_7: bool;
+
+    let _e3 = finite3_(position_1);
+    if _e3 {
+        let _e6 = finite3_(normal_1);
+        local_3 = _e6;
+    } else {
+        local_3 = false;
+    }
+    let _e8 = local_3;
+    if _e8 {
+        let _e11 = finite3_(flux_2);
+        local_4 = _e11;
+    } else {
+        local_4 = false;
+    }
+    let _e13 = local_4;
+    if !(_e13) {
+        return false;
+    }
+    if (flux_2.x >= 0f) {
+        local_5 = (flux_2.y >= 0f);
+    } else {
+        local_5 = false;
+    }
+    let _e25 = local_5;
+    if _e25 {
+        local_6 = (flux_2.z >= 0f);
+    } else {
+        local_6 = false;
+    }
+    let _e32 = local_6;
+    if _e32 {
+        local_7 = ((max(max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY);
+    } else {
+        local_7 = false;
+    }
+    let _e45 = local_7;
+    return _e45;
 }
 
 fn interleave_slot_linear(i: u32, per_subset: u32, period: u32) -> u32 {
@@ -131,11 +197,11 @@ fn interleave_slot_linear(i: u32, per_subset: u32, period: u32) -> u32 {
     return (((i % subsets) * per_subset) + (i / subsets));
 }
 
-fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
+fn workgroup_box(li_1: u32, p_1: vec3<f32>, has: bool) -> WorkgroupBox {
     var stride: u32 = 32u;
 
-    wg_lo[li_1] = select(vec3(340282350000000000000000000000000000000f), p, has);
-    wg_hi[li_1] = select(vec3(-340282350000000000000000000000000000000f), p, has);
+    wg_lo[li_1] = select(vec3(340282350000000000000000000000000000000f), p_1, has);
+    wg_hi[li_1] = select(vec3(-340282350000000000000000000000000000000f), p_1, has);
     workgroupBarrier();
     loop {
         let _e15 = stride;
@@ -171,6 +237,9 @@ fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
 fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var position: vec3<f32> = vec3(0f);
     var lit: bool = false;
+    var p: vec3<f32>;
+    var normal: vec3<f32>;
+    var flux: vec3<f32>;
     var local: bool;
 
     let i_1 = gid.x;
@@ -178,38 +247,55 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(workgroup_id) wg
     let inside = (i_1 < _e6);
     if inside {
         let r = records[i_1];
-        position = r.position;
-        let normal = r.normal;
-        let _e21 = params.scale;
-        let flux_1 = (r.flux * _e21);
-        let _e25 = params.per_subset;
-        let _e27 = interleave_slot_linear(i_1, _e25, P);
-        let _e30 = position;
-        lights[_e27] = GpuLight(_e30, LIGHT_VPL, normal, 0f, vec3(0f), 0f, flux_1, 0u);
-        ids[_e27] = i_1;
-        let _e42 = params.slc;
-        let slc = (_e42 != 0u);
-        let _e49 = params.exposure;
-        let _e52 = params.error_bound;
-        let _e55 = params.mode;
-        let _e56 = vpl_rt2_(flux_1, _e49, _e52, _e55);
-        rt2_[_e27] = select(0f, _e56, slc);
-        let _e63 = params.fixed_r2_;
-        r2_[_e27] = select(_e63, 0f, slc);
-        near_slots[i_1] = _e27;
-        lit = any((flux_1 != vec3(0f)));
+        p = r.position;
+        normal = r.normal;
+        flux = r.flux;
+        let _e24 = params.per_subset;
+        let _e26 = interleave_slot_linear(i_1, _e24, P);
+        let _e27 = p;
+        let _e28 = normal;
+        let _e29 = flux;
+        let _e30 = vpl_record_ok(_e27, _e28, _e29);
+        if !(_e30) {
+            p = vec3(0f);
+            normal = vec3(0f);
+            flux = vec3(0f);
+        }
+        let _e38 = p;
+        position = _e38;
+        let _e39 = flux;
+        let _e42 = params.scale;
+        flux = (_e39 * _e42);
+        let _e46 = position;
+        let _e48 = normal;
+        let _e51 = flux;
+        lights[_e26] = GpuLight(_e46, LIGHT_VPL, _e48, 0f, vec3(0f), 0f, _e51, 0u);
+        ids[_e26] = i_1;
+        let _e60 = params.slc;
+        let slc = (_e60 != 0u);
+        let _e65 = flux;
+        let _e68 = params.exposure;
+        let _e71 = params.error_bound;
+        let _e74 = params.mode;
+        let _e75 = vpl_rt2_(_e65, _e68, _e71, _e74);
+        rt2_[_e26] = select(0f, _e75, slc);
+        let _e82 = params.fixed_r2_;
+        r2_[_e26] = select(_e82, 0f, slc);
+        near_slots[i_1] = _e26;
+        let _e87 = flux;
+        lit = any((_e87 != vec3(0f)));
     }
-    let _e72 = position;
-    let _e73 = lit;
-    let _e74 = workgroup_box(li, _e72, _e73);
+    let _e92 = position;
+    let _e93 = lit;
+    let _e94 = workgroup_box(li, _e92, _e93);
     if (li == 0u) {
         local = inside;
     } else {
         local = false;
     }
-    let _e80 = local;
-    if _e80 {
-        near_boxes[wg.x] = GpuNearBox(_e74.lo, 0f, _e74.hi, 0f);
+    let _e100 = local;
+    if _e100 {
+        near_boxes[wg.x] = GpuNearBox(_e94.lo, 0f, _e94.hi, 0f);
         return;
     } else {
         return;

@@ -54,6 +54,7 @@ const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
@@ -115,14 +116,79 @@ fn intensity_measure(rgb: vec3<f32>, mode: u32) -> f32 {
     return max(rgb.x, max(rgb.y, rgb.z));
 }
 
-fn vpl_rt2_(flux: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32) -> f32 {
-    let _e6 = intensity_measure((flux * INV_PI), mode_1);
+fn vpl_rt2_(flux_1: vec3<f32>, exposure_1: f32, error_bound_1: f32, mode_1: u32) -> f32 {
+    let _e6 = intensity_measure((flux_1 * INV_PI), mode_1);
     let _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
     return _e7;
 }
 
+fn finite3_(v: vec3<f32>) -> bool {
+    var local_1: bool;
+    var local_2: bool;
+
+    if (abs(v.x) <= F32_MAX) {
+        local_1 = (abs(v.y) <= F32_MAX);
+    } else {
+        local_1 = false;
+    }
+    let _e12 = local_1;
+    if _e12 {
+        local_2 = (abs(v.z) <= F32_MAX);
+    } else {
+        local_2 = false;
+    }
+    let _e20 = local_2;
+    return _e20;
+}
+
 fn interleave_subset(x: u32, y: u32, period: u32) -> u32 {
     return (((y % period) * period) + (x % period));
+}
+
+fn vpl_record_ok(position_1: vec3<f32>, normal_1: vec3<f32>, flux_2: vec3<f32>) -> bool {
+    var local_3: bool;
+    var local_4: bool;
+    var local_5: bool;
+    var local_6: bool;
+    var local_7: bool;
+
+    let _e3 = finite3_(position_1);
+    if _e3 {
+        let _e6 = finite3_(normal_1);
+        local_3 = _e6;
+    } else {
+        local_3 = false;
+    }
+    let _e8 = local_3;
+    if _e8 {
+        let _e11 = finite3_(flux_2);
+        local_4 = _e11;
+    } else {
+        local_4 = false;
+    }
+    let _e13 = local_4;
+    if !(_e13) {
+        return false;
+    }
+    if (flux_2.x >= 0f) {
+        local_5 = (flux_2.y >= 0f);
+    } else {
+        local_5 = false;
+    }
+    let _e25 = local_5;
+    if _e25 {
+        local_6 = (flux_2.z >= 0f);
+    } else {
+        local_6 = false;
+    }
+    let _e32 = local_6;
+    if _e32 {
+        local_7 = ((max(max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY);
+    } else {
+        local_7 = false;
+    }
+    let _e45 = local_7;
+    return _e45;
 }
 
 fn interleave_slot(tx: u32, ty: u32, size: u32, period_1: u32) -> u32 {
@@ -139,11 +205,11 @@ fn near_block_ty(q_1: u32, size_2: u32) -> u32 {
     return ((((q_1 / NEAR_BLOCK) / (size_2 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
 }
 
-fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
+fn workgroup_box(li_1: u32, p_1: vec3<f32>, has: bool) -> WorkgroupBox {
     var stride: u32 = 32u;
 
-    wg_lo[li_1] = select(vec3(340282350000000000000000000000000000000f), p, has);
-    wg_hi[li_1] = select(vec3(-340282350000000000000000000000000000000f), p, has);
+    wg_lo[li_1] = select(vec3(340282350000000000000000000000000000000f), p_1, has);
+    wg_hi[li_1] = select(vec3(-340282350000000000000000000000000000000f), p_1, has);
     workgroupBarrier();
     loop {
         let _e15 = stride;
@@ -179,6 +245,9 @@ fn workgroup_box(li_1: u32, p: vec3<f32>, has: bool) -> WorkgroupBox {
 fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_index) li: u32) {
     var position: vec3<f32> = vec3(0f);
     var lit: bool = false;
+    var p: vec3<f32>;
+    var normal: vec3<f32>;
+    var flux: vec3<f32>;
     var local: bool;
 
     let q_2 = gid.x;
@@ -193,40 +262,57 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(workgroup_id) wg
         let i = ((_e20 * _e23) + _e16);
         let texel = vec2<i32>(i32(_e16), i32(_e20));
         let _e31 = textureLoad(rsm_position, texel, 0i);
-        position = _e31.xyz;
-        let _e35 = textureLoad(rsm_normal, texel, 0i);
-        let normal = _e35.xyz;
-        let _e39 = textureLoad(rsm_flux, texel, 0i);
-        let _e43 = params.scale;
-        let flux_1 = (_e39.xyz * _e43);
-        let _e47 = params.size;
-        let _e49 = interleave_slot(_e16, _e20, _e47, P);
-        let _e52 = position;
-        lights[_e49] = GpuLight(_e52, LIGHT_VPL, normal, 0f, vec3(0f), 0f, flux_1, 0u);
-        ids[_e49] = i;
-        let _e64 = params.slc;
-        let slc = (_e64 != 0u);
-        let _e71 = params.exposure;
-        let _e74 = params.error_bound;
-        let _e77 = params.mode;
-        let _e78 = vpl_rt2_(flux_1, _e71, _e74, _e77);
-        rt2_[_e49] = select(0f, _e78, slc);
-        let _e85 = params.fixed_r2_;
-        r2_[_e49] = select(_e85, 0f, slc);
-        near_slots[q_2] = _e49;
-        lit = any((flux_1 != vec3(0f)));
+        p = _e31.xyz;
+        let _e36 = textureLoad(rsm_normal, texel, 0i);
+        normal = _e36.xyz;
+        let _e41 = textureLoad(rsm_flux, texel, 0i);
+        flux = _e41.xyz;
+        let _e46 = params.size;
+        let _e48 = interleave_slot(_e16, _e20, _e46, P);
+        let _e49 = p;
+        let _e50 = normal;
+        let _e51 = flux;
+        let _e52 = vpl_record_ok(_e49, _e50, _e51);
+        if !(_e52) {
+            p = vec3(0f);
+            normal = vec3(0f);
+            flux = vec3(0f);
+        }
+        let _e60 = p;
+        position = _e60;
+        let _e61 = flux;
+        let _e64 = params.scale;
+        flux = (_e61 * _e64);
+        let _e68 = position;
+        let _e70 = normal;
+        let _e73 = flux;
+        lights[_e48] = GpuLight(_e68, LIGHT_VPL, _e70, 0f, vec3(0f), 0f, _e73, 0u);
+        ids[_e48] = i;
+        let _e82 = params.slc;
+        let slc = (_e82 != 0u);
+        let _e87 = flux;
+        let _e90 = params.exposure;
+        let _e93 = params.error_bound;
+        let _e96 = params.mode;
+        let _e97 = vpl_rt2_(_e87, _e90, _e93, _e96);
+        rt2_[_e48] = select(0f, _e97, slc);
+        let _e104 = params.fixed_r2_;
+        r2_[_e48] = select(_e104, 0f, slc);
+        near_slots[q_2] = _e48;
+        let _e109 = flux;
+        lit = any((_e109 != vec3(0f)));
     }
-    let _e94 = position;
-    let _e95 = lit;
-    let _e96 = workgroup_box(li, _e94, _e95);
+    let _e114 = position;
+    let _e115 = lit;
+    let _e116 = workgroup_box(li, _e114, _e115);
     if (li == 0u) {
         local = inside;
     } else {
         local = false;
     }
-    let _e102 = local;
-    if _e102 {
-        near_boxes[wg.x] = GpuNearBox(_e96.lo, 0f, _e96.hi, 0f);
+    let _e122 = local;
+    if _e122 {
+        near_boxes[wg.x] = GpuNearBox(_e116.lo, 0f, _e116.hi, 0f);
         return;
     } else {
         return;

@@ -16,7 +16,7 @@ struct VplParams {
     min_d2_: f32,
     near_r2_: f32,
     near_blocks: u32,
-    pad0_: u32,
+    subset_shift: u32,
     pad1_: u32,
 }
 
@@ -28,7 +28,7 @@ struct ViewParams {
     eye: vec3<f32>,
     width: u32,
     height: u32,
-    background: f32,
+    pad0_: u32,
     seed: u32,
     frame: u32,
     f0_d: vec3<f32>,
@@ -63,6 +63,7 @@ const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
@@ -124,8 +125,12 @@ fn sphere_overlaps_aabb(c: vec3<f32>, r: f32, bmin: vec3<f32>, bmax: vec3<f32>) 
 }
 
 fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v: vec3<f32>, min_d2_: f32) -> f32 {
-    let m = max(dot(v, v), min_d2_);
+    let m = max(dot(v, v), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v), 0f) * max(-(dot(n_x, v)), 0f)) * INV_PI) / (m * m));
+}
+
+fn shifted_subset(pixel_class: u32, shift: u32, period: u32) -> u32 {
+    return ((pixel_class + shift) % (period * period));
 }
 
 fn vpl_near_weight(d2_1: f32, near_r2_: f32) -> f32 {
@@ -252,99 +257,101 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     let _e61 = workgroup_box(li, _e59.xyz, valid_1);
     let lo = _e61.lo;
     let hi = _e61.hi;
-    let _e66 = params.lights_per_subset;
-    let base = (sub * _e66);
+    let _e66 = params.subset_shift;
+    let _e68 = shifted_subset(sub, _e66, P);
+    let _e71 = params.lights_per_subset;
+    let base = (_e68 * _e71);
     loop {
-        let _e75 = first;
-        let _e78 = params.lights_per_subset;
-        if (_e75 < _e78) {
+        let _e80 = first;
+        let _e83 = params.lights_per_subset;
+        if (_e80 < _e83) {
         } else {
             break;
         }
         {
-            let _e80 = first;
-            let _e85 = params.lights_per_subset;
-            let end = min((_e80 + MAX_TILE_LIGHTS), _e85);
+            let _e85 = first;
+            let _e90 = params.lights_per_subset;
+            let end = min((_e85 + MAX_TILE_LIGHTS), _e90);
             if (li == 0u) {
                 atomicStore((&tile_count), 0u);
             }
             workgroupBarrier();
-            let _e91 = first;
-            j = (_e91 + li);
+            let _e96 = first;
+            j = (_e96 + li);
             loop {
-                let _e94 = j;
-                if (_e94 < end) {
+                let _e99 = j;
+                if (_e99 < end) {
                 } else {
                     break;
                 }
                 {
-                    let _e97 = j;
-                    let _e101 = lights[(base + _e97)].p0_;
-                    let _e103 = j;
-                    let _e106 = r2_1[(base + _e103)];
-                    let _e107 = cull_radius(_e106);
-                    let _e108 = sphere_overlaps_aabb(_e101, _e107, lo, hi);
-                    if _e108 {
-                        let _e111 = atomicAdd((&tile_count), 1u);
-                        if (_e111 < MAX_TILE_LIGHTS) {
-                            let _e116 = j;
-                            tile_lights[_e111] = _e116;
+                    let _e102 = j;
+                    let _e106 = lights[(base + _e102)].p0_;
+                    let _e108 = j;
+                    let _e111 = r2_1[(base + _e108)];
+                    let _e112 = cull_radius(_e111);
+                    let _e113 = sphere_overlaps_aabb(_e106, _e112, lo, hi);
+                    if _e113 {
+                        let _e116 = atomicAdd((&tile_count), 1u);
+                        if (_e116 < MAX_TILE_LIGHTS) {
+                            let _e121 = j;
+                            tile_lights[_e116] = _e121;
                         }
                     }
                 }
                 continuing {
-                    let _e117 = j;
-                    j = (_e117 + THREADS);
+                    let _e122 = j;
+                    j = (_e122 + THREADS);
                 }
             }
-            let _e121 = workgroupUniformLoad((&tile_count));
-            let count = min(_e121, MAX_TILE_LIGHTS);
+            let _e126 = workgroupUniformLoad((&tile_count));
+            let count = min(_e126, MAX_TILE_LIGHTS);
             if valid_1 {
                 k = 0u;
                 loop {
-                    let _e126 = k;
-                    if (_e126 < count) {
+                    let _e131 = k;
+                    if (_e131 < count) {
                     } else {
                         break;
                     }
                     {
-                        let _e129 = k;
-                        let _e131 = tile_lights[_e129];
-                        let j_1 = (base + _e131);
+                        let _e134 = k;
+                        let _e136 = tile_lights[_e134];
+                        let j_1 = (base + _e136);
                         let l = lights[j_1];
-                        let _e136 = pos;
-                        let v_3 = (_e136.xyz - l.p0_);
-                        let _e142 = r2_1[j_1];
-                        let _e146 = params.near_r2_;
-                        let _e147 = vpl_far_fixed_share(_e142, dot(v_3, v_3), _e146);
-                        if (_e147 > 0f) {
-                            let _e151 = nrm;
-                            let _e154 = params.min_d2_;
-                            let _e155 = vpl_transfer(l.p1_, _e151, v_3, _e154);
-                            let t_1 = (_e155 * _e147);
-                            let _e157 = e;
-                            e = (_e157 + (l.intensity * t_1));
-                            let _e161 = kept;
-                            kept = (_e161 + 1u);
+                        let _e141 = pos;
+                        let v_3 = (_e141.xyz - l.p0_);
+                        let _e147 = r2_1[j_1];
+                        let _e151 = params.near_r2_;
+                        let _e152 = vpl_far_fixed_share(_e147, dot(v_3, v_3), _e151);
+                        if (_e152 > 0f) {
+                            let _e156 = nrm;
+                            let _e159 = params.min_d2_;
+                            let _e160 = vpl_transfer(l.p1_, _e156, v_3, _e159);
+                            let t_1 = (_e160 * _e152);
+                            let _e162 = e;
+                            e = (_e162 + (l.intensity * t_1));
+                            let _e166 = kept;
+                            kept = (_e166 + 1u);
                         }
                     }
                     continuing {
-                        let _e165 = k;
-                        k = (_e165 + 1u);
+                        let _e170 = k;
+                        k = (_e170 + 1u);
                     }
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e167 = first;
-            first = (_e167 + MAX_TILE_LIGHTS);
+            let _e172 = first;
+            first = (_e172 + MAX_TILE_LIGHTS);
         }
     }
     if inside {
-        let _e172 = e;
-        let _e173 = kept;
-        irradiance[pix] = vec4<f32>(_e172, f32(_e173));
+        let _e177 = e;
+        let _e178 = kept;
+        irradiance[pix] = vec4<f32>(_e177, f32(_e178));
         return;
     } else {
         return;

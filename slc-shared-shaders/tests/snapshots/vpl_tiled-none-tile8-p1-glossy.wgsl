@@ -16,7 +16,7 @@ struct VplParams {
     min_d2_: f32,
     near_r2_: f32,
     near_blocks: u32,
-    pad0_: u32,
+    subset_shift: u32,
     pad1_: u32,
 }
 
@@ -37,7 +37,7 @@ struct ViewParams {
     eye: vec3<f32>,
     width: u32,
     height: u32,
-    background: f32,
+    pad0_: u32,
     seed: u32,
     frame: u32,
     f0_d: vec3<f32>,
@@ -78,6 +78,7 @@ const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
@@ -125,7 +126,7 @@ var<storage> materials: array<GpuMaterial>;
 var<storage, read_write> specular: array<vec4<f32>>;
 
 fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v: vec3<f32>, min_d2_: f32) -> f32 {
-    let m = max(dot(v, v), min_d2_);
+    let m = max(dot(v, v), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v), 0f) * max(-(dot(n_x, v)), 0f)) * INV_PI) / (m * m));
 }
 
@@ -247,6 +248,10 @@ fn has_specular(metallic_6: f32, f0_d_5: vec3<f32>, f90_d_5: f32) -> bool {
     }
     let _e23 = local_5;
     return _e23;
+}
+
+fn shifted_subset(pixel_class: u32, shift: u32, period: u32) -> u32 {
+    return ((pixel_class + shift) % (period * period));
 }
 
 fn vpl_near_weight(d2_: f32, near_r2_: f32) -> f32 {
@@ -394,57 +399,59 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     let _e61 = workgroup_box(li, _e59.xyz, valid_1);
     let lo = _e61.lo;
     let hi = _e61.hi;
-    let _e66 = params.lights_per_subset;
-    let base_6 = (sub * _e66);
+    let _e66 = params.subset_shift;
+    let _e68 = shifted_subset(sub, _e66, P);
+    let _e71 = params.lights_per_subset;
+    let base_6 = (_e68 * _e71);
     if valid_1 {
-        let _e77 = pos;
-        let _e79 = glossy_at(pix, _e77.xyz);
-        g = _e79;
+        let _e82 = pos;
+        let _e84 = glossy_at(pix, _e82.xyz);
+        g = _e84;
     }
     if valid_1 {
         j = base_6;
         loop {
-            let _e81 = j;
-            let _e84 = params.lights_per_subset;
-            if (_e81 < (base_6 + _e84)) {
+            let _e86 = j;
+            let _e89 = params.lights_per_subset;
+            if (_e86 < (base_6 + _e89)) {
             } else {
                 break;
             }
             {
-                let _e88 = j;
-                let l_5 = lights[_e88];
-                let _e91 = pos;
-                let v_7 = (_e91.xyz - l_5.p0_);
-                let _e98 = params.near_r2_;
-                let _e99 = vpl_far_weight(dot(v_7, v_7), _e98);
-                if (_e99 > 0f) {
-                    let _e103 = nrm;
-                    let _e106 = params.min_d2_;
-                    let _e107 = vpl_transfer(l_5.p1_, _e103, v_7, _e106);
-                    let t_3 = (_e107 * _e99);
-                    let _e109 = e;
-                    e = (_e109 + (l_5.intensity * t_3));
-                    let _e113 = s;
-                    let _e114 = g;
-                    let _e115 = nrm;
-                    let _e116 = glossy_term(_e114, l_5, _e115, v_7, t_3);
-                    s = (_e113 + _e116);
-                    let _e118 = kept;
-                    kept = (_e118 + 1u);
+                let _e93 = j;
+                let l_5 = lights[_e93];
+                let _e96 = pos;
+                let v_7 = (_e96.xyz - l_5.p0_);
+                let _e103 = params.near_r2_;
+                let _e104 = vpl_far_weight(dot(v_7, v_7), _e103);
+                if (_e104 > 0f) {
+                    let _e108 = nrm;
+                    let _e111 = params.min_d2_;
+                    let _e112 = vpl_transfer(l_5.p1_, _e108, v_7, _e111);
+                    let t_3 = (_e112 * _e104);
+                    let _e114 = e;
+                    e = (_e114 + (l_5.intensity * t_3));
+                    let _e118 = s;
+                    let _e119 = g;
+                    let _e120 = nrm;
+                    let _e121 = glossy_term(_e119, l_5, _e120, v_7, t_3);
+                    s = (_e118 + _e121);
+                    let _e123 = kept;
+                    kept = (_e123 + 1u);
                 }
             }
             continuing {
-                let _e122 = j;
-                j = (_e122 + 1u);
+                let _e127 = j;
+                j = (_e127 + 1u);
             }
         }
     }
     if inside {
-        let _e126 = e;
-        let _e127 = kept;
-        irradiance[pix] = vec4<f32>(_e126, f32(_e127));
-        let _e132 = s;
-        specular[pix] = vec4<f32>(_e132, 0f);
+        let _e131 = e;
+        let _e132 = kept;
+        irradiance[pix] = vec4<f32>(_e131, f32(_e132));
+        let _e137 = s;
+        specular[pix] = vec4<f32>(_e137, 0f);
         return;
     } else {
         return;

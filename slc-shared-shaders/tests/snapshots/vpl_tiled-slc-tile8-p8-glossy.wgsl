@@ -16,7 +16,7 @@ struct VplParams {
     min_d2_: f32,
     near_r2_: f32,
     near_blocks: u32,
-    pad0_: u32,
+    subset_shift: u32,
     pad1_: u32,
 }
 
@@ -37,7 +37,7 @@ struct ViewParams {
     eye: vec3<f32>,
     width: u32,
     height: u32,
-    background: f32,
+    pad0_: u32,
     seed: u32,
     frame: u32,
     f0_d: vec3<f32>,
@@ -78,6 +78,7 @@ const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
@@ -152,7 +153,7 @@ fn sphere_overlaps_aabb(c: vec3<f32>, r: f32, bmin: vec3<f32>, bmax: vec3<f32>) 
 }
 
 fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v: vec3<f32>, min_d2_: f32) -> f32 {
-    let m = max(dot(v, v), min_d2_);
+    let m = max(dot(v, v), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v), 0f) * max(-(dot(n_x, v)), 0f)) * INV_PI) / (m * m));
 }
 
@@ -274,6 +275,10 @@ fn has_specular(metallic_6: f32, f0_d_5: vec3<f32>, f90_d_5: f32) -> bool {
     }
     let _e23 = local_5;
     return _e23;
+}
+
+fn shifted_subset(pixel_class: u32, shift: u32, period: u32) -> u32 {
+    return ((pixel_class + shift) % (period * period));
 }
 
 fn vpl_near_weight(d2_2: f32, near_r2_: f32) -> f32 {
@@ -430,112 +435,114 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     let _e61 = workgroup_box(li, _e59.xyz, valid_1);
     let lo = _e61.lo;
     let hi = _e61.hi;
-    let _e66 = params.lights_per_subset;
-    let base_6 = (sub * _e66);
+    let _e66 = params.subset_shift;
+    let _e68 = shifted_subset(sub, _e66, P);
+    let _e71 = params.lights_per_subset;
+    let base_6 = (_e68 * _e71);
     if valid_1 {
-        let _e77 = pos;
-        let _e79 = glossy_at(pix, _e77.xyz);
-        g = _e79;
+        let _e82 = pos;
+        let _e84 = glossy_at(pix, _e82.xyz);
+        g = _e84;
     }
     loop {
-        let _e82 = first;
-        let _e85 = params.lights_per_subset;
-        if (_e82 < _e85) {
+        let _e87 = first;
+        let _e90 = params.lights_per_subset;
+        if (_e87 < _e90) {
         } else {
             break;
         }
         {
-            let _e87 = first;
-            let _e92 = params.lights_per_subset;
-            let end = min((_e87 + MAX_TILE_LIGHTS), _e92);
+            let _e92 = first;
+            let _e97 = params.lights_per_subset;
+            let end = min((_e92 + MAX_TILE_LIGHTS), _e97);
             if (li == 0u) {
                 atomicStore((&tile_count), 0u);
             }
             workgroupBarrier();
-            let _e98 = first;
-            j = (_e98 + li);
+            let _e103 = first;
+            j = (_e103 + li);
             loop {
-                let _e101 = j;
-                if (_e101 < end) {
+                let _e106 = j;
+                if (_e106 < end) {
                 } else {
                     break;
                 }
                 {
-                    let _e104 = j;
-                    let _e108 = lights[(base_6 + _e104)].p0_;
-                    let _e110 = j;
-                    let _e113 = r2_3[(base_6 + _e110)];
-                    let _e114 = cull_radius(_e113);
-                    let _e115 = sphere_overlaps_aabb(_e108, _e114, lo, hi);
-                    if _e115 {
-                        let _e118 = atomicAdd((&tile_count), 1u);
-                        if (_e118 < MAX_TILE_LIGHTS) {
-                            let _e123 = j;
-                            tile_lights[_e118] = _e123;
+                    let _e109 = j;
+                    let _e113 = lights[(base_6 + _e109)].p0_;
+                    let _e115 = j;
+                    let _e118 = r2_3[(base_6 + _e115)];
+                    let _e119 = cull_radius(_e118);
+                    let _e120 = sphere_overlaps_aabb(_e113, _e119, lo, hi);
+                    if _e120 {
+                        let _e123 = atomicAdd((&tile_count), 1u);
+                        if (_e123 < MAX_TILE_LIGHTS) {
+                            let _e128 = j;
+                            tile_lights[_e123] = _e128;
                         }
                     }
                 }
                 continuing {
-                    let _e124 = j;
-                    j = (_e124 + THREADS);
+                    let _e129 = j;
+                    j = (_e129 + THREADS);
                 }
             }
-            let _e128 = workgroupUniformLoad((&tile_count));
-            let count = min(_e128, MAX_TILE_LIGHTS);
+            let _e133 = workgroupUniformLoad((&tile_count));
+            let count = min(_e133, MAX_TILE_LIGHTS);
             if valid_1 {
                 k = 0u;
                 loop {
-                    let _e133 = k;
-                    if (_e133 < count) {
+                    let _e138 = k;
+                    if (_e138 < count) {
                     } else {
                         break;
                     }
                     {
-                        let _e136 = k;
-                        let _e138 = tile_lights[_e136];
-                        let j_1 = (base_6 + _e138);
+                        let _e141 = k;
+                        let _e143 = tile_lights[_e141];
+                        let j_1 = (base_6 + _e143);
                         let l_5 = lights[j_1];
-                        let _e143 = pos;
-                        let v_8 = (_e143.xyz - l_5.p0_);
-                        let _e149 = rt2_2[j_1];
-                        let _e152 = r2_3[j_1];
-                        let _e156 = params.near_r2_;
-                        let _e157 = vpl_far_slc_share(_e149, _e152, dot(v_8, v_8), _e156);
-                        if (_e157 > 0f) {
-                            let _e161 = nrm;
-                            let _e164 = params.min_d2_;
-                            let _e165 = vpl_transfer(l_5.p1_, _e161, v_8, _e164);
-                            let t_3 = (_e165 * _e157);
-                            let _e167 = e;
-                            e = (_e167 + (l_5.intensity * t_3));
-                            let _e171 = s;
-                            let _e172 = g;
-                            let _e173 = nrm;
-                            let _e174 = glossy_term(_e172, l_5, _e173, v_8, t_3);
-                            s = (_e171 + _e174);
-                            let _e176 = kept;
-                            kept = (_e176 + 1u);
+                        let _e148 = pos;
+                        let v_8 = (_e148.xyz - l_5.p0_);
+                        let _e154 = rt2_2[j_1];
+                        let _e157 = r2_3[j_1];
+                        let _e161 = params.near_r2_;
+                        let _e162 = vpl_far_slc_share(_e154, _e157, dot(v_8, v_8), _e161);
+                        if (_e162 > 0f) {
+                            let _e166 = nrm;
+                            let _e169 = params.min_d2_;
+                            let _e170 = vpl_transfer(l_5.p1_, _e166, v_8, _e169);
+                            let t_3 = (_e170 * _e162);
+                            let _e172 = e;
+                            e = (_e172 + (l_5.intensity * t_3));
+                            let _e176 = s;
+                            let _e177 = g;
+                            let _e178 = nrm;
+                            let _e179 = glossy_term(_e177, l_5, _e178, v_8, t_3);
+                            s = (_e176 + _e179);
+                            let _e181 = kept;
+                            kept = (_e181 + 1u);
                         }
                     }
                     continuing {
-                        let _e180 = k;
-                        k = (_e180 + 1u);
+                        let _e185 = k;
+                        k = (_e185 + 1u);
                     }
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e182 = first;
-            first = (_e182 + MAX_TILE_LIGHTS);
+            let _e187 = first;
+            first = (_e187 + MAX_TILE_LIGHTS);
         }
     }
     if inside {
-        let _e187 = e;
-        let _e188 = kept;
-        irradiance[pix] = vec4<f32>(_e187, f32(_e188));
-        let _e193 = s;
-        specular[pix] = vec4<f32>(_e193, 0f);
+        let _e192 = e;
+        let _e193 = kept;
+        irradiance[pix] = vec4<f32>(_e192, f32(_e193));
+        let _e198 = s;
+        specular[pix] = vec4<f32>(_e198, 0f);
         return;
     } else {
         return;

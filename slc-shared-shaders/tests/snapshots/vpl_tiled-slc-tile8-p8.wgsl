@@ -16,7 +16,7 @@ struct VplParams {
     min_d2_: f32,
     near_r2_: f32,
     near_blocks: u32,
-    pad0_: u32,
+    subset_shift: u32,
     pad1_: u32,
 }
 
@@ -28,7 +28,7 @@ struct ViewParams {
     eye: vec3<f32>,
     width: u32,
     height: u32,
-    background: f32,
+    pad0_: u32,
     seed: u32,
     frame: u32,
     f0_d: vec3<f32>,
@@ -63,6 +63,7 @@ const SPHERE_HUGE: f32 = 340282350000000000000000000000000000000f;
 const SPHERE_PAD_ABS: f32 = 0.000000000000000001f;
 const INV_PI: f32 = 0.31830987f;
 const MIN_D2_: f32 = 0.000000000001f;
+const MAX_INTENSITY: f32 = 72057594000000000f;
 const BSH_NONE: u32 = 4294967295u;
 const RESERVOIR_FULL: u32 = 4294967295u;
 const GGX_ALPHA_MIN: f32 = 0.001f;
@@ -133,8 +134,12 @@ fn sphere_overlaps_aabb(c: vec3<f32>, r: f32, bmin: vec3<f32>, bmax: vec3<f32>) 
 }
 
 fn vpl_transfer(n_l: vec3<f32>, n_x: vec3<f32>, v: vec3<f32>, min_d2_: f32) -> f32 {
-    let m = max(dot(v, v), min_d2_);
+    let m = max(dot(v, v), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v), 0f) * max(-(dot(n_x, v)), 0f)) * INV_PI) / (m * m));
+}
+
+fn shifted_subset(pixel_class: u32, shift: u32, period: u32) -> u32 {
+    return ((pixel_class + shift) % (period * period));
 }
 
 fn vpl_near_weight(d2_2: f32, near_r2_: f32) -> f32 {
@@ -262,100 +267,102 @@ fn main(@builtin(workgroup_id) wg: vec3<u32>, @builtin(local_invocation_id) lid:
     let _e61 = workgroup_box(li, _e59.xyz, valid_1);
     let lo = _e61.lo;
     let hi = _e61.hi;
-    let _e66 = params.lights_per_subset;
-    let base = (sub * _e66);
+    let _e66 = params.subset_shift;
+    let _e68 = shifted_subset(sub, _e66, P);
+    let _e71 = params.lights_per_subset;
+    let base = (_e68 * _e71);
     loop {
-        let _e75 = first;
-        let _e78 = params.lights_per_subset;
-        if (_e75 < _e78) {
+        let _e80 = first;
+        let _e83 = params.lights_per_subset;
+        if (_e80 < _e83) {
         } else {
             break;
         }
         {
-            let _e80 = first;
-            let _e85 = params.lights_per_subset;
-            let end = min((_e80 + MAX_TILE_LIGHTS), _e85);
+            let _e85 = first;
+            let _e90 = params.lights_per_subset;
+            let end = min((_e85 + MAX_TILE_LIGHTS), _e90);
             if (li == 0u) {
                 atomicStore((&tile_count), 0u);
             }
             workgroupBarrier();
-            let _e91 = first;
-            j = (_e91 + li);
+            let _e96 = first;
+            j = (_e96 + li);
             loop {
-                let _e94 = j;
-                if (_e94 < end) {
+                let _e99 = j;
+                if (_e99 < end) {
                 } else {
                     break;
                 }
                 {
-                    let _e97 = j;
-                    let _e101 = lights[(base + _e97)].p0_;
-                    let _e103 = j;
-                    let _e106 = r2_3[(base + _e103)];
-                    let _e107 = cull_radius(_e106);
-                    let _e108 = sphere_overlaps_aabb(_e101, _e107, lo, hi);
-                    if _e108 {
-                        let _e111 = atomicAdd((&tile_count), 1u);
-                        if (_e111 < MAX_TILE_LIGHTS) {
-                            let _e116 = j;
-                            tile_lights[_e111] = _e116;
+                    let _e102 = j;
+                    let _e106 = lights[(base + _e102)].p0_;
+                    let _e108 = j;
+                    let _e111 = r2_3[(base + _e108)];
+                    let _e112 = cull_radius(_e111);
+                    let _e113 = sphere_overlaps_aabb(_e106, _e112, lo, hi);
+                    if _e113 {
+                        let _e116 = atomicAdd((&tile_count), 1u);
+                        if (_e116 < MAX_TILE_LIGHTS) {
+                            let _e121 = j;
+                            tile_lights[_e116] = _e121;
                         }
                     }
                 }
                 continuing {
-                    let _e117 = j;
-                    j = (_e117 + THREADS);
+                    let _e122 = j;
+                    j = (_e122 + THREADS);
                 }
             }
-            let _e121 = workgroupUniformLoad((&tile_count));
-            let count = min(_e121, MAX_TILE_LIGHTS);
+            let _e126 = workgroupUniformLoad((&tile_count));
+            let count = min(_e126, MAX_TILE_LIGHTS);
             if valid_1 {
                 k = 0u;
                 loop {
-                    let _e126 = k;
-                    if (_e126 < count) {
+                    let _e131 = k;
+                    if (_e131 < count) {
                     } else {
                         break;
                     }
                     {
-                        let _e129 = k;
-                        let _e131 = tile_lights[_e129];
-                        let j_1 = (base + _e131);
+                        let _e134 = k;
+                        let _e136 = tile_lights[_e134];
+                        let j_1 = (base + _e136);
                         let l = lights[j_1];
-                        let _e136 = pos;
-                        let v_3 = (_e136.xyz - l.p0_);
-                        let _e142 = rt2_2[j_1];
-                        let _e145 = r2_3[j_1];
-                        let _e149 = params.near_r2_;
-                        let _e150 = vpl_far_slc_share(_e142, _e145, dot(v_3, v_3), _e149);
-                        if (_e150 > 0f) {
-                            let _e154 = nrm;
-                            let _e157 = params.min_d2_;
-                            let _e158 = vpl_transfer(l.p1_, _e154, v_3, _e157);
-                            let t_1 = (_e158 * _e150);
-                            let _e160 = e;
-                            e = (_e160 + (l.intensity * t_1));
-                            let _e164 = kept;
-                            kept = (_e164 + 1u);
+                        let _e141 = pos;
+                        let v_3 = (_e141.xyz - l.p0_);
+                        let _e147 = rt2_2[j_1];
+                        let _e150 = r2_3[j_1];
+                        let _e154 = params.near_r2_;
+                        let _e155 = vpl_far_slc_share(_e147, _e150, dot(v_3, v_3), _e154);
+                        if (_e155 > 0f) {
+                            let _e159 = nrm;
+                            let _e162 = params.min_d2_;
+                            let _e163 = vpl_transfer(l.p1_, _e159, v_3, _e162);
+                            let t_1 = (_e163 * _e155);
+                            let _e165 = e;
+                            e = (_e165 + (l.intensity * t_1));
+                            let _e169 = kept;
+                            kept = (_e169 + 1u);
                         }
                     }
                     continuing {
-                        let _e168 = k;
-                        k = (_e168 + 1u);
+                        let _e173 = k;
+                        k = (_e173 + 1u);
                     }
                 }
             }
             workgroupBarrier();
         }
         continuing {
-            let _e170 = first;
-            first = (_e170 + MAX_TILE_LIGHTS);
+            let _e175 = first;
+            first = (_e175 + MAX_TILE_LIGHTS);
         }
     }
     if inside {
-        let _e175 = e;
-        let _e176 = kept;
-        irradiance[pix] = vec4<f32>(_e175, f32(_e176));
+        let _e180 = e;
+        let _e181 = kept;
+        irradiance[pix] = vec4<f32>(_e180, f32(_e181));
         return;
     } else {
         return;

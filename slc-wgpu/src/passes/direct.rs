@@ -61,9 +61,9 @@
 //!
 //! ```no_run
 //! # fn frame(device: wgpu::Device, queue: wgpu::Queue, depth: wgpu::TextureView,
-//! #          normal: wgpu::TextureView, output: wgpu::TextureView, inv_view_proj: glam::Mat4)
+//! #          normal: wgpu::TextureView, output: wgpu::TextureView, inv_view_proj: slc_wgpu::glam::Mat4)
 //! #          -> Result<(), Box<dyn std::error::Error>> {
-//! use glam::Vec3;
+//! use slc_wgpu::glam::Vec3;
 //! use slc_wgpu::{GpuContext, Light, LightSet, PointLight, RangeParams};
 //! use slc_wgpu::passes::{Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, GBuffer, Surface};
 //!
@@ -87,8 +87,8 @@
 //! # Ok(()) }
 //! ```
 
-use super::{Culling, GBuffer, RECORDS_PER_SUBMISSION, RecordSlots, SurfaceDesc, ViewCache, check_size, check_view, output_format};
-use crate::kernel::{KernelLayout, UniformSlots, check_kernels};
+use super::{Culling, GBuffer, SurfaceDesc, ViewCache, check_size, check_view, output_format};
+use crate::kernel::{KernelLayout, UniformSlots, Uploads, check_kernels};
 use crate::lights::{GpuLightSet, TABLES, WG, check_light_limits, light_set, types_within};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
@@ -184,26 +184,24 @@ pub struct DirectPassDesc {
     /// The light types compiled in: lights given later
     /// ([`DirectPass::update_lights`], [`DirectPass::set_lights`]) must be
     /// of these types.
-    pub light_types: slc_shared_shaders::LightSet,
-    /// Records of this pass one submission may hold (uniform slots).
-    pub records_per_submission: u32,
+    pub light_types: slc_shared_shaders::LightTypes,
     /// What the pass writes.
     pub outputs: DirectOutputs,
 }
 
 impl DirectPassDesc {
-    /// `width × height`, a standard `Depth32Float` depth buffer,
-    /// `Rgba16Float` output, 8 weighted picks, point, spot, IES and
-    /// triangle lights, [`RECORDS_PER_SUBMISSION`] records per submission.
+    /// `width × height`, a `Depth32Float` depth buffer, `Rgba16Float`
+    /// output, 8 weighted picks ([`DirectSelection::Weighted`]), point,
+    /// spot, IES and triangle lights, and [`DirectOutputs::Irradiance`]
+    /// (irradiance in rgb, lights in range in a: no material input).
     pub fn new(width: u32, height: u32) -> DirectPassDesc {
         DirectPassDesc {
             width,
             height,
-            surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float, reversed: false },
+            surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float },
             output_format: wgpu::TextureFormat::Rgba16Float,
             selection: DirectSelection::Weighted { k: 8 },
-            light_types: slc_shared_shaders::LightSet { point: true, spot: true, ies: true, triangle: true, vpl: false },
-            records_per_submission: RECORDS_PER_SUBMISSION,
+            light_types: slc_shared_shaders::LightTypes { point: true, spot: true, ies: true, triangle: true, vpl: false },
             outputs: DirectOutputs::Irradiance,
         }
     }
@@ -253,7 +251,6 @@ pub struct DirectPass {
     lights_group: wgpu::BindGroup,
     cull: UniformSlots,
     view: UniformSlots,
-    slots: RecordSlots,
     cache: ViewCache<Vec<wgpu::TextureView>>,
 }
 
@@ -318,12 +315,10 @@ impl DirectPass {
         let shade_layout = KernelLayout::new(gpu, Kernel::DirectLight, &features)?;
         let ranges = (ranges_layout.pipeline(gpu, &features, None)?, ranges_layout);
         let shade = (shade_layout.pipeline(gpu, &features, None)?, shade_layout);
-        let slots = RecordSlots::new(desc.records_per_submission);
-        let cull = UniformSlots::new::<CullParams>(gpu, "slc direct cull", slots.len());
-        let view = UniformSlots::new::<ViewParams>(gpu, "slc direct view", slots.len());
+        let cull = UniformSlots::new::<CullParams>(gpu, "slc direct cull", 1);
+        let view = UniformSlots::new::<ViewParams>(gpu, "slc direct view", 1);
         let (ranges_group, lights_group) = groups(gpu, &set, &ranges.1, &shade.1, &cull, binds_cones(desc), desc.light_types.ies);
-        let s =
-            DirectPass { gpu: gpu.clone(), desc: *desc, set, ranges, ranges_group, shade, lights_group, cull, view, slots, cache: ViewCache::new() };
+        let s = DirectPass { gpu: gpu.clone(), desc: *desc, set, ranges, ranges_group, shade, lights_group, cull, view, cache: ViewCache::new() };
         gpu.take_errors()?;
         Ok(s)
     }
@@ -341,8 +336,10 @@ impl DirectPass {
     /// Moves, turns or recolours the lights: `lights` holds as many lights
     /// as the pass has (light `i` replaces light `i`), of the compiled-in
     /// types. Their records, bounds and importance cones are rewritten in
-    /// place (staged for the next submission) and every record refits the
-    /// BSH to them on the GPU; no pipeline or bind group is rebuilt. The
+    /// place through the queue, so they take effect at the next submission
+    /// (every record of the pass in that submission shades the lights of
+    /// the last update before it), and every record refits the BSH to them
+    /// on the GPU; no pipeline or bind group is rebuilt. The
     /// tree keeps the topology it was built with, so lights that wander far
     /// make it looser (slower, never wrong): [`DirectPass::set_lights`]
     /// builds it anew.
@@ -413,10 +410,12 @@ impl DirectPass {
         Ok(view)
     }
 
-    /// Records the frame into `encoder` (one compute pass) and stages its
-    /// uniforms in this record's slot; checks the inputs and settings first
-    /// and records nothing when they are wrong. Creates nothing on the
-    /// device when the views are those of a recent record.
+    /// Records the frame into `encoder`: its uniforms' copy, then one
+    /// compute pass. Checks the inputs and settings first and records
+    /// nothing when they are wrong. Any number of records may share a
+    /// submission, each with its own settings: the record's uniforms go
+    /// into place in command order ([`passes`](super) docs). Creates no
+    /// bind group when the views are those of a recent record.
     pub fn record(&mut self, encoder: &mut wgpu::CommandEncoder, inputs: &DirectInputs, settings: &DirectSettings) -> Result<(), GpuError> {
         let view = self.check_inputs(inputs, settings.seed, settings.frame)?;
         let (slc, fixed_r2) = settings.culling.kernel_form()?;
@@ -424,7 +423,6 @@ impl DirectPass {
             Culling::Stochastic(p) => (p.measure().mode(), p.exposure(), p.error_bound()),
             _ => (0, 1.0, 1.0),
         };
-        let slot = self.slots.take();
         let cull = CullParams {
             light_count: self.set.n,
             seed: settings.seed,
@@ -439,8 +437,10 @@ impl DirectPass {
             pad1: 0,
             pad2: 0,
         };
-        self.cull.write_slot(&self.gpu, slot, &cull);
-        self.view.write_slot(&self.gpu, slot, &view);
+        let mut uploads = Uploads::default();
+        uploads.push(&self.cull, &cull);
+        uploads.push(&self.view, &view);
+        uploads.record(&self.gpu, encoder);
         let g = inputs.gbuffer;
         let tex = wgpu::BindingResource::TextureView;
         let mut views =
@@ -465,11 +465,11 @@ impl DirectPass {
         let (w, h) = (self.desc.width, self.desc.height);
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc direct"), timestamp_writes: None });
         pass.set_pipeline(&self.ranges.0);
-        pass.set_bind_group(0, &self.ranges_group, &[self.cull.offset(slot)]);
+        pass.set_bind_group(0, &self.ranges_group, &[0]);
         pass.dispatch_workgroups(self.set.n.div_ceil(WG), 1, 1);
         self.set.encode_refit(&mut pass);
         pass.set_pipeline(&self.shade.0);
-        pass.set_bind_group(0, &group0, &[self.view.offset(slot)]);
+        pass.set_bind_group(0, &group0, &[0]);
         pass.set_bind_group(1, &self.lights_group, &[]);
         pass.dispatch_workgroups(w.div_ceil(TILE), h.div_ceil(TILE), 1);
         Ok(())

@@ -32,15 +32,42 @@
 //! pass's size, `TEXTURE_BINDING`; the output `STORAGE_BINDING` in the
 //! pass's output format.
 //!
+//! **Depth**: a texel whose depth is exactly 0 or 1 (either convention's
+//! clear value: standard depth clears to 1, reversed Z to 0) is
+//! background, so the passes read both conventions without being told
+//! which (a surface exactly on the near plane, which the rasterizer clips,
+//! reads as background too). Pixel `(x, y)` (row 0 at the top) unprojects
+//! at its centre, NDC `(2(x + ½)/w − 1, 1 − 2(y + ½)/h, depth)`, as the
+//! rasterizer samples it: a G-buffer rendered with another convention (a
+//! half-pixel offset, y down) puts every point a little off its surface.
+//! `Surface::Depth`'s `inv_view_proj` must be the inverse of the
+//! view-projection the depth was rendered with, and [`GBuffer::eye`] that
+//! camera's position: a perspective matrix's inverse maps the clip-space
+//! point `(0, 0, 1, 0)` to the eye, and a record whose matrix puts the eye
+//! elsewhere (the forward view-projection passed by mistake, or a stale
+//! eye) is a [`GpuError::Setting`] naming both points.
+//!
 //! **Per record**: a wrong format, size or usage is a [`GpuError::Binding`]
 //! before anything is recorded, and a limit the device lacks a
 //! [`GpuError::Limit`] when the pass is built, before any pipeline is
-//! made. A record writes its uniforms into its own slot (the pass's desc
-//! says how many records of it one submission may hold, 16 by default),
-//! so several records of one pass may share a submission; its bind groups are cached by the
-//! views' identity (the same views every frame create nothing), and the
-//! light and intermediate buffers are reused, so recording allocates no GPU
-//! object.
+//! made. A record's uniforms (its settings, the view) travel in a small
+//! buffer made for it and are copied into place by the record's own
+//! encoder, just before its dispatches: any number of records of a pass may
+//! share a submission, each with its own settings. Its bind groups are
+//! cached by the views' identity (the same views every frame create none),
+//! and the light and intermediate buffers are reused: besides that upload
+//! buffer (a few hundred bytes, freed once the GPU has run the record),
+//! recording allocates no GPU object.
+//!
+//! **Frames**: ξ is stratified over frames. Light `i`'s ξ in frame `f` is
+//! `xi_for(seed, f, i)` ([`slc_core::xi`]): for a fixed light, the frames
+//! `0..2ᵐ` give ξ values one in each of `2ᵐ` equal strata of `[0, 1)`
+//! (a scrambled radical inverse), so an average over consecutive frames
+//! converges faster than independent frames would, and the frame-to-frame
+//! variance of a pixel overstates the error of that average (an engine
+//! that estimates its accumulation's error from frame-to-frame variance
+//! gets it too pessimistic). Vary `frame` every frame; reuse a `seed` for
+//! reproducible images.
 
 pub mod direct;
 pub mod indirect;
@@ -62,9 +89,6 @@ use slc_shared_shaders::layout::ViewParams;
 /// The float formats the passes read G-buffer and RSM textures in.
 pub(crate) const FLOAT_INPUTS: [wgpu::TextureFormat; 2] = [wgpu::TextureFormat::Rgba32Float, wgpu::TextureFormat::Rgba16Float];
 
-/// Default number of records one submission may hold per pass.
-pub const RECORDS_PER_SUBMISSION: u32 = 16;
-
 /// How a pass culls lights, per record (both passes honour every mode).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Culling {
@@ -80,9 +104,14 @@ pub enum Culling {
         range: f32,
     },
     /// Every light everywhere (`r² = ∞`): no culling. The expensive exact
-    /// sum for the indirect pass; for the direct pass, every light is a
-    /// candidate at every pixel, so its `k` picks are spread over all of
-    /// them — exact in expectation, and the noisiest setting.
+    /// sum for the indirect pass. For the direct pass every light is a
+    /// candidate at every pixel: with weighted picks
+    /// ([`DirectSelection::Weighted`]),
+    /// the picks follow each light's importance, so one frame is about as
+    /// noisy as with stochastic culling (measured by an outside engine
+    /// program at 3,000 point lights, k = 8: relative RMSE 0.053 both) at
+    /// about 2.6× the cost (every light's importance at every pixel); with
+    /// uniform picks it is far noisier. Its use is as a baseline.
     None,
 }
 
@@ -104,13 +133,11 @@ impl Culling {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SurfaceDesc {
     /// A depth texture: `Depth32Float` (`texture_depth_2d`) or `R32Float`
-    /// (depth in x); `reversed`: the depth buffer clears to 0 and nearer is
-    /// larger (reversed Z, as Bevy uses), else it clears to 1.
+    /// (depth in x), standard or reversed Z alike: a depth of exactly 0 or
+    /// 1 is background (the [`passes`](self) docs).
     Depth {
         /// `Depth32Float` or `R32Float`.
         format: wgpu::TextureFormat,
-        /// Reversed Z (background depth 0); else standard (background 1).
-        reversed: bool,
     },
     /// World positions (`Rgba32Float` or `Rgba16Float`, `w > 0` where a
     /// surface is).
@@ -130,14 +157,6 @@ impl SurfaceDesc {
             }
         }
     }
-
-    /// The depth where no surface is.
-    fn background(self) -> f32 {
-        match self {
-            SurfaceDesc::Depth { reversed: true, .. } => 0.0,
-            _ => 1.0,
-        }
-    }
 }
 
 /// The surface of one frame's G-buffer.
@@ -149,7 +168,8 @@ pub enum Surface<'a> {
         /// format; a depth-stencil texture needs a depth-only view).
         depth: &'a wgpu::TextureView,
         /// The inverse of the view-projection the depth was rendered with
-        /// (wgpu's clip space: y up, depth in `[0, 1]`).
+        /// (world from clip; wgpu's clip space: y up, depth in `[0, 1]`),
+        /// perspective or orthographic.
         inv_view_proj: Mat4,
     },
     /// World positions.
@@ -164,7 +184,9 @@ pub struct GBuffer<'a> {
     /// World normals (xyz; normalised by the pass), facing the camera.
     pub normal: &'a wgpu::TextureView,
     /// The eye's world position (the indirect pass's denoise weighs by the
-    /// distance from it; glossy shading looks from it).
+    /// distance from it; glossy shading looks from it): with a perspective
+    /// depth surface, the point `inv_view_proj` maps the clip-space
+    /// `(0, 0, 1, 0)` to (checked).
     pub eye: Vec3,
 }
 
@@ -184,9 +206,7 @@ impl GBuffer<'_> {
             }
             (Surface::Depth { depth, inv_view_proj }, SurfaceDesc::Depth { format, .. }) => {
                 check_view("G-buffer depth", depth, size, &[format], tex)?;
-                if !inv_view_proj.is_finite() {
-                    return Err(GpuError::Setting("inverse view-projection must be finite".into()));
-                }
+                check_inverse_view_projection(inv_view_proj, self.eye)?;
                 inv_view_proj
             }
             (Surface::Position(_), SurfaceDesc::Depth { .. }) => {
@@ -212,7 +232,7 @@ impl GBuffer<'_> {
             eye: self.eye,
             width: size.0,
             height: size.1,
-            background: surface.background(),
+            pad0: 0,
             seed,
             frame,
             f0_d: Vec3::ZERO,
@@ -235,6 +255,38 @@ impl GBuffer<'_> {
             Surface::Position(_) => "position_tex",
         }
     }
+}
+
+/// Checks that `m` is the inverse of a perspective or orthographic
+/// view-projection whose camera is at `eye`: finite and invertible, and,
+/// where it is perspective (the last row of its inverse, the clip `w`, has
+/// a direction part), mapping the clip-space point `(0, 0, 1, 0)` (the
+/// centre of projection) to `eye` within `10⁻³ · (1 + |eye|)`. A forward
+/// view-projection passed in its place fails (its inverse is perspective,
+/// and its third column is no eye).
+pub(crate) fn check_inverse_view_projection(m: Mat4, eye: Vec3) -> Result<(), GpuError> {
+    let bad = |why: String| Err(GpuError::Setting(format!("Surface::Depth's inv_view_proj: {why}")));
+    if !m.is_finite() {
+        return bad("must be finite".into());
+    }
+    let forward = m.inverse();
+    if !(m.determinant() != 0.0 && forward.is_finite()) {
+        return bad("is singular (it must be the inverse of the view-projection)".into());
+    }
+    let w_row = forward.row(3);
+    if w_row.truncate().length() <= 1e-6 * w_row.w.abs() {
+        // Orthographic: no centre of projection to check.
+        return Ok(());
+    }
+    let c = m.z_axis;
+    let at = c.truncate() / c.w;
+    if !(c.w.abs() > 0.0 && at.is_finite()) || at.distance(eye) > 1e-3 * (1.0 + eye.length()) {
+        return bad(format!(
+            "maps the centre of projection to {at} but GBuffer::eye is {eye}: pass the inverse of the \
+             view-projection the depth was rendered with (world from clip, not clip from world), and that camera's position"
+        ));
+    }
+    Ok(())
 }
 
 /// Checks an optional input against how the pass was built: `given` and
@@ -329,33 +381,5 @@ impl<K: PartialEq, V: Clone> ViewCache<K, V> {
         }
         self.entries.push((key, g.clone()));
         g
-    }
-}
-
-/// The per-record uniform slots of a pass: record `i` uses slot `i mod n`,
-/// so up to `n` records of the pass may share one submission (a uniform
-/// written through the queue lands at the next submission, before its
-/// commands run: two records sharing a slot in one submission would both
-/// see the second's values).
-pub(crate) struct RecordSlots {
-    n: usize,
-    next: usize,
-}
-
-impl RecordSlots {
-    pub(crate) fn new(n: u32) -> RecordSlots {
-        RecordSlots { n: n.max(1) as usize, next: 0 }
-    }
-
-    /// Slots.
-    pub(crate) fn len(&self) -> u64 {
-        self.n as u64
-    }
-
-    /// The slot of the next record.
-    pub(crate) fn take(&mut self) -> usize {
-        let slot = self.next;
-        self.next = (self.next + 1) % self.n;
-        slot
     }
 }

@@ -18,8 +18,8 @@
 //!
 //! ```no_run
 //! # fn demo(gpu: &slc_wgpu::GpuContext, encoder: &mut wgpu::CommandEncoder, gbuffer: slc_wgpu::passes::GBuffer,
-//! #         irradiance: &wgpu::TextureView, accumulated: &wgpu::TextureView, view_projection: glam::Mat4) -> Result<(), slc_wgpu::GpuError> {
-//! use slc_scene::temporal::{TemporalSettings, TemporalView};
+//! #         irradiance: &wgpu::TextureView, accumulated: &wgpu::TextureView, view_projection: slc_wgpu::glam::Mat4) -> Result<(), slc_wgpu::GpuError> {
+//! use slc_wgpu::{TemporalSettings, TemporalView};
 //! use slc_wgpu::passes::{TemporalInputs, TemporalPass, TemporalPassDesc};
 //!
 //! let mut temporal = TemporalPass::new(gpu, &TemporalPassDesc::new(1920, 1080))?;
@@ -31,12 +31,12 @@
 
 use super::{FLOAT_INPUTS, GBuffer, SurfaceDesc, ViewCache, check_optional, check_size, check_view, output_format};
 use crate::frame::Stage;
-use crate::kernel::{KernelLayout, UniformSlots, check_kernels, zeroed};
+use crate::kernel::{KernelLayout, UniformSlots, Uploads, check_kernels, zeroed};
 use crate::passes::indirect::Dispatch;
 use crate::{GpuContext, GpuError};
 use slc_scene::temporal::{TemporalSettings, TemporalView};
 use slc_shared_shaders::layout::{TemporalParams, ViewParams};
-use slc_shared_shaders::{Features, Kernel, LightSet};
+use slc_shared_shaders::{Features, Kernel, LightTypes};
 
 /// Workgroup edge of the kernel.
 const TILE: u32 = 8;
@@ -143,7 +143,7 @@ impl TemporalPass {
         let size = (desc.width, desc.height);
         check_size(gpu, "temporal pass", size, TILE)?;
         let features = Features {
-            lights: LightSet { vpl: true, ..LightSet::default() },
+            lights: LightTypes { vpl: true, ..LightTypes::default() },
             tile_size: TILE,
             surface: desc.surface.source()?,
             output_format: output_format(desc.output_format)?,
@@ -199,14 +199,20 @@ impl TemporalPass {
         view: &TemporalView,
         settings: &TemporalSettings,
     ) -> Result<(), GpuError> {
-        let d = self.dispatch(inputs, view, settings)?;
+        let (uploads, d) = self.dispatch(inputs, view, settings)?;
+        uploads.record(&self.gpu, encoder);
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc temporal"), timestamp_writes: None });
         d.record(&mut pass);
         Ok(())
     }
 
-    /// The record's dispatch, its uniforms staged; checks first.
-    pub(crate) fn dispatch(&mut self, inputs: &TemporalInputs, view: &TemporalView, settings: &TemporalSettings) -> Result<Dispatch, GpuError> {
+    /// The record's uniforms and dispatch; checks first.
+    pub(crate) fn dispatch(
+        &mut self,
+        inputs: &TemporalInputs,
+        view: &TemporalView,
+        settings: &TemporalSettings,
+    ) -> Result<(Uploads, Dispatch), GpuError> {
         let setting = |e: slc_scene::RenderError| GpuError::Setting(format!("temporal pass: {e}"));
         settings.validate().map_err(setting)?;
         view.validate().map_err(setting)?;
@@ -225,7 +231,8 @@ impl TemporalPass {
             check_view("motion vectors", m, size, &MOTION_FORMATS, wgpu::TextureUsages::TEXTURE_BINDING)?;
         }
         let gpu = &self.gpu;
-        self.view.write_slot(gpu, 0, &view_params);
+        let mut uploads = Uploads::default();
+        uploads.push(&self.view, &view_params);
         let (m, prev_eye) = self.previous.map_or((glam::Mat4::ZERO, glam::Vec3::ZERO), |p| (p.view_projection, p.eye));
         let params = TemporalParams {
             c0: m.x_axis,
@@ -239,7 +246,7 @@ impl TemporalPass {
             pad1: 0,
             pad2: 0,
         };
-        gpu.queue.write_buffer(&self.params, 0, bytemuck::bytes_of(&params));
+        uploads.push_to(&self.params, &params);
         let (read, write) = (self.current, 1 - self.current);
         let g = &inputs.gbuffer;
         let key = (g.surface_view().clone(), g.normal.clone(), inputs.signal.clone(), inputs.output.clone(), inputs.motion.cloned(), read);
@@ -269,6 +276,6 @@ impl TemporalPass {
         self.previous = Some(*view);
         self.current = write;
         let groups = [self.desc.width.div_ceil(TILE), self.desc.height.div_ceil(TILE), 1];
-        Ok(Dispatch::new(Stage::Temporal, &self.pipeline, group, Some(self.view.offset(0)), groups))
+        Ok((uploads, Dispatch::new(Stage::Temporal, &self.pipeline, group, Some(0), groups)))
     }
 }

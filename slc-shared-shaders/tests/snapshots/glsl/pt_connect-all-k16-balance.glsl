@@ -102,6 +102,7 @@ const float SPHERE_HUGE = 3.4028235e38;
 const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
+const float MAX_INTENSITY = 7.2057594e16;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
@@ -869,6 +870,24 @@ float range_scale_toward(vec4 rl_1, vec3 center_1, float radius_1, vec3 p_1, vec
     return _e10;
 }
 
+bool finite3_(vec3 v_6) {
+    bool local_14 = false;
+    bool local_15 = false;
+    if ((abs(v_6.x) <= F32_MAX)) {
+        local_14 = (abs(v_6.y) <= F32_MAX);
+    } else {
+        local_14 = false;
+    }
+    bool _e12 = local_14;
+    if (_e12) {
+        local_15 = (abs(v_6.z) <= F32_MAX);
+    } else {
+        local_15 = false;
+    }
+    bool _e20 = local_15;
+    return _e20;
+}
+
 float shadow_margin(float len) {
     return (0.0001 * len);
 }
@@ -898,15 +917,15 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_6, vec3 b_4, vec3 c_5) {
-    bool local_14 = false;
+    bool local_16 = false;
     vec3 n_19 = cross((b_4 - a_6), (c_5 - a_6));
     float l2_ = dot(n_19, n_19);
     if (!(!((l2_ > 0.0)))) {
-        local_14 = !((l2_ < 3e38));
+        local_16 = !((l2_ < 3e38));
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    bool _e17 = local_14;
+    bool _e17 = local_16;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -914,9 +933,9 @@ vec3 triangle_normal(vec3 a_6, vec3 b_4, vec3 c_5) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_7, vec3 b_5, vec3 c_6, float t_min, float t_max_1) {
-    bool local_15 = false;
-    bool local_16 = false;
     bool local_17 = false;
+    bool local_18 = false;
+    bool local_19 = false;
     vec3 e1_ = (b_5 - a_7);
     vec3 e2_ = (c_6 - a_7);
     vec3 p_2 = cross(d_3, e2_);
@@ -928,54 +947,36 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_7, vec3 b_5, vec3 c_6, float t_min
     vec3 s_6 = (o_1 - a_7);
     float u_2 = (dot(s_6, p_2) * inv_1);
     if (!((u_2 < 0.0))) {
-        local_15 = (u_2 > 1.0);
+        local_17 = (u_2 > 1.0);
     } else {
-        local_15 = true;
+        local_17 = true;
     }
-    bool _e28 = local_15;
+    bool _e28 = local_17;
     if (_e28) {
         return -1.0;
     }
     vec3 q = cross(s_6, e1_);
     float v_11 = (dot(d_3, q) * inv_1);
     if (!((v_11 < 0.0))) {
-        local_16 = ((u_2 + v_11) > 1.0);
+        local_18 = ((u_2 + v_11) > 1.0);
     } else {
-        local_16 = true;
+        local_18 = true;
     }
-    bool _e42 = local_16;
+    bool _e42 = local_18;
     if (_e42) {
         return -1.0;
     }
     float t_5 = (dot(e2_, q) * inv_1);
     if ((t_5 > t_min)) {
-        local_17 = (t_5 < t_max_1);
+        local_19 = (t_5 < t_max_1);
     } else {
-        local_17 = false;
+        local_19 = false;
     }
-    bool _e51 = local_17;
+    bool _e51 = local_19;
     if (_e51) {
         return t_5;
     }
     return -1.0;
-}
-
-bool finite3_(vec3 v_6) {
-    bool local_18 = false;
-    bool local_19 = false;
-    if ((abs(v_6.x) <= F32_MAX)) {
-        local_18 = (abs(v_6.y) <= F32_MAX);
-    } else {
-        local_18 = false;
-    }
-    bool _e12 = local_18;
-    if (_e12) {
-        local_19 = (abs(v_6.z) <= F32_MAX);
-    } else {
-        local_19 = false;
-    }
-    bool _e20 = local_19;
-    return _e20;
 }
 
 vec3 light_intensity(GpuLight l_4, vec3 w_5) {

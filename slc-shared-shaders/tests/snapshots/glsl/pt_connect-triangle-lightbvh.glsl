@@ -104,6 +104,7 @@ const float SPHERE_HUGE = 3.4028235e38;
 const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
+const float MAX_INTENSITY = 7.2057594e16;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
@@ -686,6 +687,24 @@ float bvh_remap_u(float u_1, float p0_, bool first) {
     return clamp(((u_1 - p0_) / (1.0 - p0_)), 0.0, ONE_MINUS_EPSILON);
 }
 
+bool finite3_(vec3 v_6) {
+    bool local_13 = false;
+    bool local_14 = false;
+    if ((abs(v_6.x) <= F32_MAX)) {
+        local_13 = (abs(v_6.y) <= F32_MAX);
+    } else {
+        local_13 = false;
+    }
+    bool _e12 = local_13;
+    if (_e12) {
+        local_14 = (abs(v_6.z) <= F32_MAX);
+    } else {
+        local_14 = false;
+    }
+    bool _e20 = local_14;
+    return _e20;
+}
+
 float shadow_margin(float len) {
     return (0.0001 * len);
 }
@@ -715,15 +734,15 @@ float ray_aabb(vec3 o, vec3 inv_d, vec3 bmin, vec3 bmax, float t_max) {
 }
 
 vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_2) {
-    bool local_13 = false;
+    bool local_15 = false;
     vec3 n_17 = cross((b_3 - a_4), (c_2 - a_4));
     float l2_ = dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
-        local_13 = !((l2_ < 3e38));
+        local_15 = !((l2_ < 3e38));
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    bool _e17 = local_13;
+    bool _e17 = local_15;
     if (_e17) {
         return vec3(0.0, 0.0, 0.0);
     }
@@ -731,9 +750,9 @@ vec3 triangle_normal(vec3 a_4, vec3 b_3, vec3 c_2) {
 }
 
 float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_3, float t_min, float t_max_1) {
-    bool local_14 = false;
-    bool local_15 = false;
     bool local_16 = false;
+    bool local_17 = false;
+    bool local_18 = false;
     vec3 e1_ = (b_4 - a_5);
     vec3 e2_ = (c_3 - a_5);
     vec3 p_7 = cross(d_3, e2_);
@@ -745,54 +764,36 @@ float ray_triangle(vec3 o_1, vec3 d_3, vec3 a_5, vec3 b_4, vec3 c_3, float t_min
     vec3 s_6 = (o_1 - a_5);
     float u_3 = (dot(s_6, p_7) * inv_1);
     if (!((u_3 < 0.0))) {
-        local_14 = (u_3 > 1.0);
+        local_16 = (u_3 > 1.0);
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    bool _e28 = local_14;
+    bool _e28 = local_16;
     if (_e28) {
         return -1.0;
     }
     vec3 q = cross(s_6, e1_);
     float v_11 = (dot(d_3, q) * inv_1);
     if (!((v_11 < 0.0))) {
-        local_15 = ((u_3 + v_11) > 1.0);
+        local_17 = ((u_3 + v_11) > 1.0);
     } else {
-        local_15 = true;
+        local_17 = true;
     }
-    bool _e42 = local_15;
+    bool _e42 = local_17;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_, q) * inv_1);
     if ((t_3 > t_min)) {
-        local_16 = (t_3 < t_max_1);
+        local_18 = (t_3 < t_max_1);
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    bool _e51 = local_16;
+    bool _e51 = local_18;
     if (_e51) {
         return t_3;
     }
     return -1.0;
-}
-
-bool finite3_(vec3 v_6) {
-    bool local_17 = false;
-    bool local_18 = false;
-    if ((abs(v_6.x) <= F32_MAX)) {
-        local_17 = (abs(v_6.y) <= F32_MAX);
-    } else {
-        local_17 = false;
-    }
-    bool _e12 = local_17;
-    if (_e12) {
-        local_18 = (abs(v_6.z) <= F32_MAX);
-    } else {
-        local_18 = false;
-    }
-    bool _e20 = local_18;
-    return _e20;
 }
 
 vec3 light_intensity(GpuLight l_4, vec3 w_3) {

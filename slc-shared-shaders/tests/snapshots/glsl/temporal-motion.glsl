@@ -22,7 +22,7 @@ struct ViewParams {
     vec3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     vec3 f0_d;
@@ -50,6 +50,7 @@ const float SPHERE_HUGE = 3.4028235e38;
 const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
+const float MAX_INTENSITY = 7.2057594e16;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
@@ -215,8 +216,8 @@ vec4 temporal_color(vec3 c_1, vec4 h, float noise_2, float last_1, float max_his
     float _e10 = luminance(hc);
     float _e12 = persistent_change(_e9, last_1, _e10, noise_2, h.w);
     float _e14 = next_history_length(h.w, _e12, max_history_1);
-    float _e16 = temporal_alpha(_e14);
-    vec3 v_1 = (hc + ((c_1 - hc) * _e16));
+    float _e15 = temporal_alpha(_e14);
+    vec3 v_1 = ((hc * (1.0 - _e15)) + (c_1 * _e15));
     return vec4(v_1.x, v_1.y, v_1.z, _e14);
 }
 

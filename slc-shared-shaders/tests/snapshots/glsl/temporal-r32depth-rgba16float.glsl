@@ -22,7 +22,7 @@ struct ViewParams {
     vec3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     vec3 f0_d;
@@ -50,6 +50,7 @@ const float SPHERE_HUGE = 3.4028235e38;
 const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
+const float MAX_INTENSITY = 7.2057594e16;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
@@ -101,6 +102,24 @@ float to_f32_(uint u) {
     return float(u);
 }
 
+bool finite3_(vec3 v_1) {
+    bool local_1 = false;
+    bool local_2 = false;
+    if ((abs(v_1.x) <= F32_MAX)) {
+        local_1 = (abs(v_1.y) <= F32_MAX);
+    } else {
+        local_1 = false;
+    }
+    bool _e12 = local_1;
+    if (_e12) {
+        local_2 = (abs(v_1.z) <= F32_MAX);
+    } else {
+        local_2 = false;
+    }
+    bool _e20 = local_2;
+    return _e20;
+}
+
 float luminance(vec3 c) {
     return dot(c, vec3(0.2126, 0.7152, 0.0722));
 }
@@ -122,10 +141,10 @@ float bilinear_weight(float fx, float fy, uint dx, uint dy) {
 }
 
 vec4 history_tap(vec3 q, uint k_1, float width_1, float height_1) {
-    bool local_1 = false;
-    bool local_2 = false;
     bool local_3 = false;
     bool local_4 = false;
+    bool local_5 = false;
+    bool local_6 = false;
     float x0_ = floor(q.x);
     float y0_ = floor(q.y);
     uint dx_1 = (k_1 % 2u);
@@ -135,29 +154,29 @@ vec4 history_tap(vec3 q, uint k_1, float width_1, float height_1) {
     float _e14 = to_f32_(dy_1);
     float ty = (y0_ + _e14);
     if ((q.z > 0.0)) {
-        local_1 = (tx >= 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e24 = local_1;
-    if (_e24) {
-        local_2 = (ty >= 0.0);
-    } else {
-        local_2 = false;
-    }
-    bool _e30 = local_2;
-    if (_e30) {
-        local_3 = (tx < width_1);
+        local_3 = (tx >= 0.0);
     } else {
         local_3 = false;
     }
-    bool _e35 = local_3;
-    if (_e35) {
-        local_4 = (ty < height_1);
+    bool _e24 = local_3;
+    if (_e24) {
+        local_4 = (ty >= 0.0);
     } else {
         local_4 = false;
     }
-    bool inside = local_4;
+    bool _e30 = local_4;
+    if (_e30) {
+        local_5 = (tx < width_1);
+    } else {
+        local_5 = false;
+    }
+    bool _e35 = local_5;
+    if (_e35) {
+        local_6 = (ty < height_1);
+    } else {
+        local_6 = false;
+    }
+    bool inside = local_6;
     float _e45 = bilinear_weight((q.x - x0_), (q.y - y0_), dx_1, dy_1);
     return vec4(tx, ty, _e45, (inside ? 1.0 : 0.0));
 }
@@ -170,13 +189,13 @@ vec4 history_mean(vec4 sum, float weight_1) {
 }
 
 bool history_matches(vec3 n, vec3 nh, vec3 p_1, float oh, float d) {
-    bool local_5 = false;
+    bool local_7 = false;
     if ((abs((dot(nh, p_1) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d))) {
-        local_5 = (dot(n, nh) >= TEMPORAL_NORMAL_COS);
+        local_7 = (dot(n, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_5 = false;
+        local_7 = false;
     }
-    bool _e17 = local_5;
+    bool _e17 = local_7;
     return _e17;
 }
 
@@ -198,14 +217,14 @@ float temporal_alpha(float n_3) {
 }
 
 float history_tap_weight(float w, vec3 n_4, vec3 nh_1, vec3 p_2, float oh_1, float d_1, float len) {
-    bool local_6 = false;
+    bool local_8 = false;
     if ((len > 0.0)) {
         bool _e11 = history_matches(n_4, nh_1, p_2, oh_1, d_1);
-        local_6 = _e11;
+        local_8 = _e11;
     } else {
-        local_6 = false;
+        local_8 = false;
     }
-    bool _e13 = local_6;
+    bool _e13 = local_8;
     return (_e13 ? w : 0.0);
 }
 
@@ -224,13 +243,13 @@ vec4 temporal_color(vec3 c_1, vec4 h, float noise_2, float last_1, float max_his
     float _e10 = luminance(hc);
     float _e12 = persistent_change(_e9, last_1, _e10, noise_2, h.w);
     float _e14 = next_history_length(h.w, _e12, max_history_1);
-    float _e16 = temporal_alpha(_e14);
-    vec3 v_1 = (hc + ((c_1 - hc) * _e16));
-    return vec4(v_1.x, v_1.y, v_1.z, _e14);
+    float _e15 = temporal_alpha(_e14);
+    vec3 v_2 = ((hc * (1.0 - _e15)) + (c_1 * _e15));
+    return vec4(v_2.x, v_2.y, v_2.z, _e14);
 }
 
 vec4 temporal_moments(vec3 c_2, float last_2, float noise_3, float prev_len, float len_1, float depth) {
-    bool local_7 = false;
+    bool local_9 = false;
     float _e6 = luminance(c_2);
     if ((prev_len <= 0.0)) {
         return vec4(_e6, 0.0, depth, 0.0);
@@ -239,25 +258,41 @@ vec4 temporal_moments(vec3 c_2, float last_2, float noise_3, float prev_len, flo
     float d2_ = ((0.5 * d_2) * d_2);
     float cap = (16.0 * noise_3);
     if ((prev_len >= TEMPORAL_MIN_MOMENTS)) {
-        local_7 = (noise_3 > 0.0);
+        local_9 = (noise_3 > 0.0);
     } else {
-        local_7 = false;
+        local_9 = false;
     }
-    bool _e26 = local_7;
+    bool _e26 = local_9;
     float sample_ = (_e26 ? min(d2_, cap) : d2_);
     float _e31 = temporal_alpha((len_1 - 1.0));
     return vec4(_e6, (noise_3 + ((sample_ - noise_3) * _e31)), depth, 0.0);
 }
 
-vec4 unproject_pixel(vec4 c0_1, vec4 c1_1, vec4 c2_1, vec4 c3_1, float px, float py, float width_2, float height_2, float depth_1, float background) {
-    if ((depth_1 == background)) {
+vec4 unproject_pixel(vec4 c0_1, vec4 c1_1, vec4 c2_1, vec4 c3_1, float px, float py, float width_2, float height_2, float depth_1) {
+    bool local_10 = false;
+    bool local_11 = false;
+    if ((depth_1 > 0.0)) {
+        local_10 = (depth_1 < 1.0);
+    } else {
+        local_10 = false;
+    }
+    bool _e16 = local_10;
+    if (!(_e16)) {
         return vec4(0.0, 0.0, 0.0, 0.0);
     }
     float x_1 = ((((px + 0.5) / width_2) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height_2) * 2.0));
     vec4 p_3 = ((((c0_1 * x_1) + (c1_1 * y_1)) + (c2_1 * depth_1)) + c3_1);
+    vec3 q_1 = vec3((p_3.x / p_3.w), (p_3.y / p_3.w), (p_3.z / p_3.w));
     if ((abs(p_3.w) > 0.0)) {
-        return vec4((p_3.x / p_3.w), (p_3.y / p_3.w), (p_3.z / p_3.w), 1.0);
+        bool _e59 = finite3_(q_1);
+        local_11 = _e59;
+    } else {
+        local_11 = false;
+    }
+    bool _e61 = local_11;
+    if (_e61) {
+        return vec4(q_1.x, q_1.y, q_1.z, 1.0);
     }
     return vec4(0.0, 0.0, 0.0, 0.0);
 }
@@ -271,13 +306,12 @@ vec4 surface_at(ivec2 texel) {
     vec4 _e16 = _group_0_binding_0_cs.c3_;
     uint _e23 = _group_0_binding_0_cs.width;
     uint _e27 = _group_0_binding_0_cs.height;
-    float _e31 = _group_0_binding_0_cs.background;
-    vec4 _e32 = unproject_pixel(_e7, _e10, _e13, _e16, float(texel.x), float(texel.y), float(_e23), float(_e27), d_3, _e31);
-    return _e32;
+    vec4 _e29 = unproject_pixel(_e7, _e10, _e13, _e16, float(texel.x), float(texel.y), float(_e23), float(_e27), d_3);
+    return _e29;
 }
 
 GbTexel gbuffer_at(uint i) {
-    bool local_8 = false;
+    bool local_12 = false;
     uint _e3 = _group_0_binding_0_cs.width;
     uint _e8 = _group_0_binding_0_cs.width;
     ivec2 texel_1 = ivec2(int((i % _e3)), int((i / _e8)));
@@ -286,15 +320,15 @@ GbTexel gbuffer_at(uint i) {
     vec3 n_6 = _e15.xyz;
     float len2_ = dot(n_6, n_6);
     if ((_e12.w > 0.0)) {
-        local_8 = (len2_ > 0.0);
+        local_12 = (len2_ > 0.0);
     } else {
-        local_8 = false;
+        local_12 = false;
     }
-    bool valid = local_8;
+    bool valid = local_12;
     vec3 _e30 = _group_0_binding_0_cs.eye;
-    vec3 v_2 = (_e12.xyz - _e30);
+    vec3 v_3 = (_e12.xyz - _e30);
     vec4 position = vec4(_e12.xyz, (valid ? 1.0 : 0.0));
-    vec4 normal = (valid ? vec4((n_6 / vec3(sqrt(len2_))), sqrt(dot(v_2, v_2))) : vec4(0.0, 0.0, 0.0, 1e30));
+    vec4 normal = (valid ? vec4((n_6 / vec3(sqrt(len2_))), sqrt(dot(v_3, v_3))) : vec4(0.0, 0.0, 0.0, 1e30));
     return GbTexel(position, normal);
 }
 

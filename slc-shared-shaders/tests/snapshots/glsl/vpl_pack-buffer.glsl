@@ -63,6 +63,7 @@ const float SPHERE_HUGE = 3.4028235e38;
 const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
+const float MAX_INTENSITY = 7.2057594e16;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
@@ -122,10 +123,73 @@ float intensity_measure(vec3 rgb, uint mode) {
     return max(rgb.x, max(rgb.y, rgb.z));
 }
 
-float vpl_rt2_(vec3 flux, float exposure_1, float error_bound_1, uint mode_1) {
-    float _e6 = intensity_measure((flux * INV_PI), mode_1);
+float vpl_rt2_(vec3 flux_1, float exposure_1, float error_bound_1, uint mode_1) {
+    float _e6 = intensity_measure((flux_1 * INV_PI), mode_1);
     float _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
     return _e7;
+}
+
+bool finite3_(vec3 v) {
+    bool local_1 = false;
+    bool local_2 = false;
+    if ((abs(v.x) <= F32_MAX)) {
+        local_1 = (abs(v.y) <= F32_MAX);
+    } else {
+        local_1 = false;
+    }
+    bool _e12 = local_1;
+    if (_e12) {
+        local_2 = (abs(v.z) <= F32_MAX);
+    } else {
+        local_2 = false;
+    }
+    bool _e20 = local_2;
+    return _e20;
+}
+
+bool vpl_record_ok(vec3 position_1, vec3 normal_1, vec3 flux_2) {
+    bool local_3 = false;
+    bool local_4 = false;
+    bool local_5 = false;
+    bool local_6 = false;
+    bool local_7 = false;
+    bool _e3 = finite3_(position_1);
+    if (_e3) {
+        bool _e6 = finite3_(normal_1);
+        local_3 = _e6;
+    } else {
+        local_3 = false;
+    }
+    bool _e8 = local_3;
+    if (_e8) {
+        bool _e11 = finite3_(flux_2);
+        local_4 = _e11;
+    } else {
+        local_4 = false;
+    }
+    bool _e13 = local_4;
+    if (!(_e13)) {
+        return false;
+    }
+    if ((flux_2.x >= 0.0)) {
+        local_5 = (flux_2.y >= 0.0);
+    } else {
+        local_5 = false;
+    }
+    bool _e25 = local_5;
+    if (_e25) {
+        local_6 = (flux_2.z >= 0.0);
+    } else {
+        local_6 = false;
+    }
+    bool _e32 = local_6;
+    if (_e32) {
+        local_7 = ((max(max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY);
+    } else {
+        local_7 = false;
+    }
+    bool _e45 = local_7;
+    return _e45;
 }
 
 uint interleave_slot_linear(uint i, uint per_subset, uint period) {
@@ -133,10 +197,10 @@ uint interleave_slot_linear(uint i, uint per_subset, uint period) {
     return (((i % subsets) * per_subset) + (i / subsets));
 }
 
-WorkgroupBox workgroup_box(uint li_1, vec3 p, bool has) {
+WorkgroupBox workgroup_box(uint li_1, vec3 p_1, bool has) {
     uint stride = 32u;
-    wg_lo[li_1] = (has ? p : vec3(3.4028235e38));
-    wg_hi[li_1] = (has ? p : vec3(-3.4028235e38));
+    wg_lo[li_1] = (has ? p_1 : vec3(3.4028235e38));
+    wg_hi[li_1] = (has ? p_1 : vec3(-3.4028235e38));
     memoryBarrierShared();
     barrier();
     bool loop_init = true;
@@ -184,44 +248,64 @@ void main() {
     uint li = gl_LocalInvocationIndex;
     vec3 position = vec3(0.0);
     bool lit = false;
+    vec3 p = vec3(0.0);
+    vec3 normal = vec3(0.0);
+    vec3 flux = vec3(0.0);
     bool local = false;
     uint i_1 = gid.x;
     uint _e6 = _group_0_binding_0_cs.count;
     bool inside = (i_1 < _e6);
     if (inside) {
         GpuVplRecord r = _group_0_binding_1_cs[i_1];
-        position = r.position;
-        vec3 normal = r.normal;
-        float _e21 = _group_0_binding_0_cs.scale;
-        vec3 flux_1 = (r.flux * _e21);
-        uint _e25 = _group_0_binding_0_cs.per_subset;
-        uint _e27 = interleave_slot_linear(i_1, _e25, P);
-        vec3 _e30 = position;
-        _group_0_binding_4_cs[_e27] = GpuLight(_e30, LIGHT_VPL, normal, 0.0, vec3(0.0), 0.0, flux_1, 0u);
-        _group_0_binding_5_cs[_e27] = i_1;
-        uint _e42 = _group_0_binding_0_cs.slc;
-        bool slc = (_e42 != 0u);
-        float _e49 = _group_0_binding_0_cs.exposure;
-        float _e52 = _group_0_binding_0_cs.error_bound;
-        uint _e55 = _group_0_binding_0_cs.mode;
-        float _e56 = vpl_rt2_(flux_1, _e49, _e52, _e55);
-        _group_0_binding_6_cs[_e27] = (slc ? _e56 : 0.0);
-        float _e63 = _group_0_binding_0_cs.fixed_r2_;
-        _group_0_binding_7_cs[_e27] = (slc ? 0.0 : _e63);
-        _group_0_binding_8_cs[i_1] = _e27;
-        lit = any(notEqual(flux_1, vec3(0.0)));
+        p = r.position;
+        normal = r.normal;
+        flux = r.flux;
+        uint _e24 = _group_0_binding_0_cs.per_subset;
+        uint _e26 = interleave_slot_linear(i_1, _e24, P);
+        vec3 _e27 = p;
+        vec3 _e28 = normal;
+        vec3 _e29 = flux;
+        bool _e30 = vpl_record_ok(_e27, _e28, _e29);
+        if (!(_e30)) {
+            p = vec3(0.0);
+            normal = vec3(0.0);
+            flux = vec3(0.0);
+        }
+        vec3 _e38 = p;
+        position = _e38;
+        vec3 _e39 = flux;
+        float _e42 = _group_0_binding_0_cs.scale;
+        flux = (_e39 * _e42);
+        vec3 _e46 = position;
+        vec3 _e48 = normal;
+        vec3 _e51 = flux;
+        _group_0_binding_4_cs[_e26] = GpuLight(_e46, LIGHT_VPL, _e48, 0.0, vec3(0.0), 0.0, _e51, 0u);
+        _group_0_binding_5_cs[_e26] = i_1;
+        uint _e60 = _group_0_binding_0_cs.slc;
+        bool slc = (_e60 != 0u);
+        vec3 _e65 = flux;
+        float _e68 = _group_0_binding_0_cs.exposure;
+        float _e71 = _group_0_binding_0_cs.error_bound;
+        uint _e74 = _group_0_binding_0_cs.mode;
+        float _e75 = vpl_rt2_(_e65, _e68, _e71, _e74);
+        _group_0_binding_6_cs[_e26] = (slc ? _e75 : 0.0);
+        float _e82 = _group_0_binding_0_cs.fixed_r2_;
+        _group_0_binding_7_cs[_e26] = (slc ? 0.0 : _e82);
+        _group_0_binding_8_cs[i_1] = _e26;
+        vec3 _e87 = flux;
+        lit = any(notEqual(_e87, vec3(0.0)));
     }
-    vec3 _e72 = position;
-    bool _e73 = lit;
-    WorkgroupBox _e74 = workgroup_box(li, _e72, _e73);
+    vec3 _e92 = position;
+    bool _e93 = lit;
+    WorkgroupBox _e94 = workgroup_box(li, _e92, _e93);
     if ((li == 0u)) {
         local = inside;
     } else {
         local = false;
     }
-    bool _e80 = local;
-    if (_e80) {
-        _group_0_binding_9_cs[wg.x] = GpuNearBox(_e74.lo, 0.0, _e74.hi, 0.0);
+    bool _e100 = local;
+    if (_e100) {
+        _group_0_binding_9_cs[wg.x] = GpuNearBox(_e94.lo, 0.0, _e94.hi, 0.0);
         return;
     } else {
         return;

@@ -55,6 +55,7 @@ const float SPHERE_HUGE = 3.4028235e38;
 const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
+const float MAX_INTENSITY = 7.2057594e16;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
@@ -118,14 +119,77 @@ float intensity_measure(vec3 rgb, uint mode) {
     return max(rgb.x, max(rgb.y, rgb.z));
 }
 
-float vpl_rt2_(vec3 flux, float exposure_1, float error_bound_1, uint mode_1) {
-    float _e6 = intensity_measure((flux * INV_PI), mode_1);
+float vpl_rt2_(vec3 flux_1, float exposure_1, float error_bound_1, uint mode_1) {
+    float _e6 = intensity_measure((flux_1 * INV_PI), mode_1);
     float _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
     return _e7;
 }
 
+bool finite3_(vec3 v) {
+    bool local_1 = false;
+    bool local_2 = false;
+    if ((abs(v.x) <= F32_MAX)) {
+        local_1 = (abs(v.y) <= F32_MAX);
+    } else {
+        local_1 = false;
+    }
+    bool _e12 = local_1;
+    if (_e12) {
+        local_2 = (abs(v.z) <= F32_MAX);
+    } else {
+        local_2 = false;
+    }
+    bool _e20 = local_2;
+    return _e20;
+}
+
 uint interleave_subset(uint x, uint y, uint period) {
     return (((y % period) * period) + (x % period));
+}
+
+bool vpl_record_ok(vec3 position_1, vec3 normal_1, vec3 flux_2) {
+    bool local_3 = false;
+    bool local_4 = false;
+    bool local_5 = false;
+    bool local_6 = false;
+    bool local_7 = false;
+    bool _e3 = finite3_(position_1);
+    if (_e3) {
+        bool _e6 = finite3_(normal_1);
+        local_3 = _e6;
+    } else {
+        local_3 = false;
+    }
+    bool _e8 = local_3;
+    if (_e8) {
+        bool _e11 = finite3_(flux_2);
+        local_4 = _e11;
+    } else {
+        local_4 = false;
+    }
+    bool _e13 = local_4;
+    if (!(_e13)) {
+        return false;
+    }
+    if ((flux_2.x >= 0.0)) {
+        local_5 = (flux_2.y >= 0.0);
+    } else {
+        local_5 = false;
+    }
+    bool _e25 = local_5;
+    if (_e25) {
+        local_6 = (flux_2.z >= 0.0);
+    } else {
+        local_6 = false;
+    }
+    bool _e32 = local_6;
+    if (_e32) {
+        local_7 = ((max(max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY);
+    } else {
+        local_7 = false;
+    }
+    bool _e45 = local_7;
+    return _e45;
 }
 
 uint interleave_slot(uint tx, uint ty, uint size, uint period_1) {
@@ -142,10 +206,10 @@ uint near_block_ty(uint q_1, uint size_2) {
     return ((((q_1 / NEAR_BLOCK) / (size_2 / 8u)) * 8u) + ((q_1 % NEAR_BLOCK) / 8u));
 }
 
-WorkgroupBox workgroup_box(uint li_1, vec3 p, bool has) {
+WorkgroupBox workgroup_box(uint li_1, vec3 p_1, bool has) {
     uint stride = 32u;
-    wg_lo[li_1] = (has ? p : vec3(3.4028235e38));
-    wg_hi[li_1] = (has ? p : vec3(-3.4028235e38));
+    wg_lo[li_1] = (has ? p_1 : vec3(3.4028235e38));
+    wg_hi[li_1] = (has ? p_1 : vec3(-3.4028235e38));
     memoryBarrierShared();
     barrier();
     bool loop_init = true;
@@ -193,6 +257,9 @@ void main() {
     uint li = gl_LocalInvocationIndex;
     vec3 position = vec3(0.0);
     bool lit = false;
+    vec3 p = vec3(0.0);
+    vec3 normal = vec3(0.0);
+    vec3 flux = vec3(0.0);
     bool local = false;
     uint q_2 = gid.x;
     uint _e6 = _group_0_binding_0_cs.count;
@@ -206,40 +273,57 @@ void main() {
         uint i = ((_e20 * _e23) + _e16);
         ivec2 texel = ivec2(int(_e16), int(_e20));
         vec4 _e31 = texelFetch(_group_0_binding_1_cs, texel, 0);
-        position = _e31.xyz;
-        vec4 _e35 = texelFetch(_group_0_binding_2_cs, texel, 0);
-        vec3 normal = _e35.xyz;
-        vec4 _e39 = texelFetch(_group_0_binding_3_cs, texel, 0);
-        float _e43 = _group_0_binding_0_cs.scale;
-        vec3 flux_1 = (_e39.xyz * _e43);
-        uint _e47 = _group_0_binding_0_cs.size;
-        uint _e49 = interleave_slot(_e16, _e20, _e47, P);
-        vec3 _e52 = position;
-        _group_0_binding_4_cs[_e49] = GpuLight(_e52, LIGHT_VPL, normal, 0.0, vec3(0.0), 0.0, flux_1, 0u);
-        _group_0_binding_5_cs[_e49] = i;
-        uint _e64 = _group_0_binding_0_cs.slc;
-        bool slc = (_e64 != 0u);
-        float _e71 = _group_0_binding_0_cs.exposure;
-        float _e74 = _group_0_binding_0_cs.error_bound;
-        uint _e77 = _group_0_binding_0_cs.mode;
-        float _e78 = vpl_rt2_(flux_1, _e71, _e74, _e77);
-        _group_0_binding_6_cs[_e49] = (slc ? _e78 : 0.0);
-        float _e85 = _group_0_binding_0_cs.fixed_r2_;
-        _group_0_binding_7_cs[_e49] = (slc ? 0.0 : _e85);
-        _group_0_binding_8_cs[q_2] = _e49;
-        lit = any(notEqual(flux_1, vec3(0.0)));
+        p = _e31.xyz;
+        vec4 _e36 = texelFetch(_group_0_binding_2_cs, texel, 0);
+        normal = _e36.xyz;
+        vec4 _e41 = texelFetch(_group_0_binding_3_cs, texel, 0);
+        flux = _e41.xyz;
+        uint _e46 = _group_0_binding_0_cs.size;
+        uint _e48 = interleave_slot(_e16, _e20, _e46, P);
+        vec3 _e49 = p;
+        vec3 _e50 = normal;
+        vec3 _e51 = flux;
+        bool _e52 = vpl_record_ok(_e49, _e50, _e51);
+        if (!(_e52)) {
+            p = vec3(0.0);
+            normal = vec3(0.0);
+            flux = vec3(0.0);
+        }
+        vec3 _e60 = p;
+        position = _e60;
+        vec3 _e61 = flux;
+        float _e64 = _group_0_binding_0_cs.scale;
+        flux = (_e61 * _e64);
+        vec3 _e68 = position;
+        vec3 _e70 = normal;
+        vec3 _e73 = flux;
+        _group_0_binding_4_cs[_e48] = GpuLight(_e68, LIGHT_VPL, _e70, 0.0, vec3(0.0), 0.0, _e73, 0u);
+        _group_0_binding_5_cs[_e48] = i;
+        uint _e82 = _group_0_binding_0_cs.slc;
+        bool slc = (_e82 != 0u);
+        vec3 _e87 = flux;
+        float _e90 = _group_0_binding_0_cs.exposure;
+        float _e93 = _group_0_binding_0_cs.error_bound;
+        uint _e96 = _group_0_binding_0_cs.mode;
+        float _e97 = vpl_rt2_(_e87, _e90, _e93, _e96);
+        _group_0_binding_6_cs[_e48] = (slc ? _e97 : 0.0);
+        float _e104 = _group_0_binding_0_cs.fixed_r2_;
+        _group_0_binding_7_cs[_e48] = (slc ? 0.0 : _e104);
+        _group_0_binding_8_cs[q_2] = _e48;
+        vec3 _e109 = flux;
+        lit = any(notEqual(_e109, vec3(0.0)));
     }
-    vec3 _e94 = position;
-    bool _e95 = lit;
-    WorkgroupBox _e96 = workgroup_box(li, _e94, _e95);
+    vec3 _e114 = position;
+    bool _e115 = lit;
+    WorkgroupBox _e116 = workgroup_box(li, _e114, _e115);
     if ((li == 0u)) {
         local = inside;
     } else {
         local = false;
     }
-    bool _e102 = local;
-    if (_e102) {
-        _group_0_binding_9_cs[wg.x] = GpuNearBox(_e96.lo, 0.0, _e96.hi, 0.0);
+    bool _e122 = local;
+    if (_e122) {
+        _group_0_binding_9_cs[wg.x] = GpuNearBox(_e116.lo, 0.0, _e116.hi, 0.0);
         return;
     } else {
         return;

@@ -20,7 +20,7 @@ struct VplParams {
     float min_d2_;
     float near_r2_;
     uint near_blocks;
-    uint pad0_;
+    uint subset_shift;
     uint pad1_;
 };
 struct ViewParams {
@@ -31,7 +31,7 @@ struct ViewParams {
     vec3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     vec3 f0_d;
@@ -63,6 +63,7 @@ const float SPHERE_HUGE = 3.4028235e38;
 const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
+const float MAX_INTENSITY = 7.2057594e16;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
@@ -128,8 +129,12 @@ bool sphere_overlaps_aabb(vec3 c, float r, vec3 bmin, vec3 bmax) {
 }
 
 float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v, float min_d2_) {
-    float m = max(dot(v, v), min_d2_);
+    float m = max(dot(v, v), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m * m));
+}
+
+uint shifted_subset(uint pixel_class, uint shift, uint period) {
+    return ((pixel_class + shift) % (period * period));
 }
 
 float vpl_near_weight(float d2_1, float near_r2_) {
@@ -267,99 +272,101 @@ void main() {
     WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
     vec3 lo = _e61.lo;
     vec3 hi = _e61.hi;
-    uint _e66 = _group_0_binding_0_cs.lights_per_subset;
-    uint base = (sub * _e66);
+    uint _e66 = _group_0_binding_0_cs.subset_shift;
+    uint _e68 = shifted_subset(sub, _e66, P);
+    uint _e71 = _group_0_binding_0_cs.lights_per_subset;
+    uint base = (_e68 * _e71);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e167 = first;
-            first = (_e167 + MAX_TILE_LIGHTS);
+            uint _e172 = first;
+            first = (_e172 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
-        uint _e75 = first;
-        uint _e78 = _group_0_binding_0_cs.lights_per_subset;
-        if ((_e75 < _e78)) {
+        uint _e80 = first;
+        uint _e83 = _group_0_binding_0_cs.lights_per_subset;
+        if ((_e80 < _e83)) {
         } else {
             break;
         }
         {
-            uint _e80 = first;
-            uint _e85 = _group_0_binding_0_cs.lights_per_subset;
-            uint end = min((_e80 + MAX_TILE_LIGHTS), _e85);
+            uint _e85 = first;
+            uint _e90 = _group_0_binding_0_cs.lights_per_subset;
+            uint end = min((_e85 + MAX_TILE_LIGHTS), _e90);
             if ((li == 0u)) {
                 atomicExchange(tile_count, 0u);
             }
             memoryBarrierShared();
             barrier();
-            uint _e91 = first;
-            j = (_e91 + li);
+            uint _e96 = first;
+            j = (_e96 + li);
             bool loop_init_2 = true;
             while(true) {
                 if (!loop_init_2) {
-                    uint _e117 = j;
-                    j = (_e117 + THREADS);
+                    uint _e122 = j;
+                    j = (_e122 + THREADS);
                 }
                 loop_init_2 = false;
-                uint _e94 = j;
-                if ((_e94 < end)) {
+                uint _e99 = j;
+                if ((_e99 < end)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e97 = j;
-                    vec3 _e101 = _group_0_binding_4_cs[(base + _e97)].p0_;
-                    uint _e103 = j;
-                    float _e106 = _group_0_binding_6_cs[(base + _e103)];
-                    float _e107 = cull_radius(_e106);
-                    bool _e108 = sphere_overlaps_aabb(_e101, _e107, lo, hi);
-                    if (_e108) {
-                        uint _e111 = atomicAdd(tile_count, 1u);
-                        if ((_e111 < MAX_TILE_LIGHTS)) {
-                            uint _e116 = j;
-                            tile_lights[_e111] = _e116;
+                    uint _e102 = j;
+                    vec3 _e106 = _group_0_binding_4_cs[(base + _e102)].p0_;
+                    uint _e108 = j;
+                    float _e111 = _group_0_binding_6_cs[(base + _e108)];
+                    float _e112 = cull_radius(_e111);
+                    bool _e113 = sphere_overlaps_aabb(_e106, _e112, lo, hi);
+                    if (_e113) {
+                        uint _e116 = atomicAdd(tile_count, 1u);
+                        if ((_e116 < MAX_TILE_LIGHTS)) {
+                            uint _e121 = j;
+                            tile_lights[_e116] = _e121;
                         }
                     }
                 }
             }
             memoryBarrierShared();
             barrier();
-            uint _e121 = tile_count;
+            uint _e126 = tile_count;
             memoryBarrierShared();
             barrier();
-            uint count = min(_e121, MAX_TILE_LIGHTS);
+            uint count = min(_e126, MAX_TILE_LIGHTS);
             if (valid_1) {
                 k = 0u;
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e165 = k;
-                        k = (_e165 + 1u);
+                        uint _e170 = k;
+                        k = (_e170 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e126 = k;
-                    if ((_e126 < count)) {
+                    uint _e131 = k;
+                    if ((_e131 < count)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e129 = k;
-                        uint _e131 = tile_lights[_e129];
-                        uint j_1 = (base + _e131);
+                        uint _e134 = k;
+                        uint _e136 = tile_lights[_e134];
+                        uint j_1 = (base + _e136);
                         GpuLight l = _group_0_binding_4_cs[j_1];
-                        vec4 _e136 = pos;
-                        vec3 v_3 = (_e136.xyz - l.p0_);
-                        float _e142 = _group_0_binding_6_cs[j_1];
-                        float _e146 = _group_0_binding_0_cs.near_r2_;
-                        float _e147 = vpl_far_fixed_share(_e142, dot(v_3, v_3), _e146);
-                        if ((_e147 > 0.0)) {
-                            vec3 _e151 = nrm;
-                            float _e154 = _group_0_binding_0_cs.min_d2_;
-                            float _e155 = vpl_transfer(l.p1_, _e151, v_3, _e154);
-                            float t_1 = (_e155 * _e147);
-                            vec3 _e157 = e;
-                            e = (_e157 + (l.intensity * t_1));
-                            uint _e161 = kept;
-                            kept = (_e161 + 1u);
+                        vec4 _e141 = pos;
+                        vec3 v_3 = (_e141.xyz - l.p0_);
+                        float _e147 = _group_0_binding_6_cs[j_1];
+                        float _e151 = _group_0_binding_0_cs.near_r2_;
+                        float _e152 = vpl_far_fixed_share(_e147, dot(v_3, v_3), _e151);
+                        if ((_e152 > 0.0)) {
+                            vec3 _e156 = nrm;
+                            float _e159 = _group_0_binding_0_cs.min_d2_;
+                            float _e160 = vpl_transfer(l.p1_, _e156, v_3, _e159);
+                            float t_1 = (_e160 * _e152);
+                            vec3 _e162 = e;
+                            e = (_e162 + (l.intensity * t_1));
+                            uint _e166 = kept;
+                            kept = (_e166 + 1u);
                         }
                     }
                 }
@@ -369,9 +376,9 @@ void main() {
         }
     }
     if (inside) {
-        vec3 _e172 = e;
-        uint _e173 = kept;
-        _group_0_binding_7_cs[pix] = vec4(_e172, float(_e173));
+        vec3 _e177 = e;
+        uint _e178 = kept;
+        _group_0_binding_7_cs[pix] = vec4(_e177, float(_e178));
         return;
     } else {
         return;

@@ -20,7 +20,7 @@ struct VplParams {
     float min_d2_;
     float near_r2_;
     uint near_blocks;
-    uint pad0_;
+    uint subset_shift;
     uint pad1_;
 };
 struct GpuMaterial {
@@ -39,7 +39,7 @@ struct ViewParams {
     vec3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     vec3 f0_d;
@@ -76,6 +76,7 @@ const float SPHERE_HUGE = 3.4028235e38;
 const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
+const float MAX_INTENSITY = 7.2057594e16;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
@@ -125,7 +126,7 @@ layout(std430) buffer type_8_block_5Compute { vec4 _group_0_binding_9_cs[]; };
 
 
 float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v, float min_d2_) {
-    float m = max(dot(v, v), min_d2_);
+    float m = max(dot(v, v), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m * m));
 }
 
@@ -244,6 +245,10 @@ bool has_specular(float metallic_6, vec3 f0_d_5, float f90_d_5) {
     }
     bool _e23 = local_5;
     return _e23;
+}
+
+uint shifted_subset(uint pixel_class, uint shift, uint period) {
+    return ((pixel_class + shift) % (period * period));
 }
 
 float vpl_near_weight(float d2_, float near_r2_) {
@@ -399,59 +404,61 @@ void main() {
     WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
     vec3 lo = _e61.lo;
     vec3 hi = _e61.hi;
-    uint _e66 = _group_0_binding_0_cs.lights_per_subset;
-    uint base_6 = (sub * _e66);
+    uint _e66 = _group_0_binding_0_cs.subset_shift;
+    uint _e68 = shifted_subset(sub, _e66, P);
+    uint _e71 = _group_0_binding_0_cs.lights_per_subset;
+    uint base_6 = (_e68 * _e71);
     if (valid_1) {
-        vec4 _e77 = pos;
-        Glossy _e79 = glossy_at(pix, _e77.xyz);
-        g = _e79;
+        vec4 _e82 = pos;
+        Glossy _e84 = glossy_at(pix, _e82.xyz);
+        g = _e84;
     }
     if (valid_1) {
         j = base_6;
         bool loop_init_1 = true;
         while(true) {
             if (!loop_init_1) {
-                uint _e122 = j;
-                j = (_e122 + 1u);
+                uint _e127 = j;
+                j = (_e127 + 1u);
             }
             loop_init_1 = false;
-            uint _e81 = j;
-            uint _e84 = _group_0_binding_0_cs.lights_per_subset;
-            if ((_e81 < (base_6 + _e84))) {
+            uint _e86 = j;
+            uint _e89 = _group_0_binding_0_cs.lights_per_subset;
+            if ((_e86 < (base_6 + _e89))) {
             } else {
                 break;
             }
             {
-                uint _e88 = j;
-                GpuLight l_5 = _group_0_binding_4_cs[_e88];
-                vec4 _e91 = pos;
-                vec3 v_7 = (_e91.xyz - l_5.p0_);
-                float _e98 = _group_0_binding_0_cs.near_r2_;
-                float _e99 = vpl_far_weight(dot(v_7, v_7), _e98);
-                if ((_e99 > 0.0)) {
-                    vec3 _e103 = nrm;
-                    float _e106 = _group_0_binding_0_cs.min_d2_;
-                    float _e107 = vpl_transfer(l_5.p1_, _e103, v_7, _e106);
-                    float t_3 = (_e107 * _e99);
-                    vec3 _e109 = e;
-                    e = (_e109 + (l_5.intensity * t_3));
-                    vec3 _e113 = s;
-                    Glossy _e114 = g;
-                    vec3 _e115 = nrm;
-                    vec3 _e116 = glossy_term(_e114, l_5, _e115, v_7, t_3);
-                    s = (_e113 + _e116);
-                    uint _e118 = kept;
-                    kept = (_e118 + 1u);
+                uint _e93 = j;
+                GpuLight l_5 = _group_0_binding_4_cs[_e93];
+                vec4 _e96 = pos;
+                vec3 v_7 = (_e96.xyz - l_5.p0_);
+                float _e103 = _group_0_binding_0_cs.near_r2_;
+                float _e104 = vpl_far_weight(dot(v_7, v_7), _e103);
+                if ((_e104 > 0.0)) {
+                    vec3 _e108 = nrm;
+                    float _e111 = _group_0_binding_0_cs.min_d2_;
+                    float _e112 = vpl_transfer(l_5.p1_, _e108, v_7, _e111);
+                    float t_3 = (_e112 * _e104);
+                    vec3 _e114 = e;
+                    e = (_e114 + (l_5.intensity * t_3));
+                    vec3 _e118 = s;
+                    Glossy _e119 = g;
+                    vec3 _e120 = nrm;
+                    vec3 _e121 = glossy_term(_e119, l_5, _e120, v_7, t_3);
+                    s = (_e118 + _e121);
+                    uint _e123 = kept;
+                    kept = (_e123 + 1u);
                 }
             }
         }
     }
     if (inside) {
-        vec3 _e126 = e;
-        uint _e127 = kept;
-        _group_0_binding_7_cs[pix] = vec4(_e126, float(_e127));
-        vec3 _e132 = s;
-        _group_0_binding_9_cs[pix] = vec4(_e132, 0.0);
+        vec3 _e131 = e;
+        uint _e132 = kept;
+        _group_0_binding_7_cs[pix] = vec4(_e131, float(_e132));
+        vec3 _e137 = s;
+        _group_0_binding_9_cs[pix] = vec4(_e137, 0.0);
         return;
     } else {
         return;

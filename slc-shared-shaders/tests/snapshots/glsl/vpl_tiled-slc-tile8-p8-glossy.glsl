@@ -20,7 +20,7 @@ struct VplParams {
     float min_d2_;
     float near_r2_;
     uint near_blocks;
-    uint pad0_;
+    uint subset_shift;
     uint pad1_;
 };
 struct GpuMaterial {
@@ -39,7 +39,7 @@ struct ViewParams {
     vec3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     vec3 f0_d;
@@ -76,6 +76,7 @@ const float SPHERE_HUGE = 3.4028235e38;
 const float SPHERE_PAD_ABS = 1e-18;
 const float INV_PI = 0.31830987;
 const float MIN_D2_ = 1e-12;
+const float MAX_INTENSITY = 7.2057594e16;
 const uint BSH_NONE = 4294967295u;
 const uint RESERVOIR_FULL = 4294967295u;
 const float GGX_ALPHA_MIN = 0.001;
@@ -154,7 +155,7 @@ bool sphere_overlaps_aabb(vec3 c, float r, vec3 bmin, vec3 bmax) {
 }
 
 float vpl_transfer(vec3 n_l, vec3 n_x, vec3 v, float min_d2_) {
-    float m = max(dot(v, v), min_d2_);
+    float m = max(dot(v, v), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m * m));
 }
 
@@ -273,6 +274,10 @@ bool has_specular(float metallic_6, vec3 f0_d_5, float f90_d_5) {
     }
     bool _e23 = local_5;
     return _e23;
+}
+
+uint shifted_subset(uint pixel_class, uint shift, uint period) {
+    return ((pixel_class + shift) % (period * period));
 }
 
 float vpl_near_weight(float d2_2, float near_r2_) {
@@ -439,110 +444,112 @@ void main() {
     WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
     vec3 lo = _e61.lo;
     vec3 hi = _e61.hi;
-    uint _e66 = _group_0_binding_0_cs.lights_per_subset;
-    uint base_6 = (sub * _e66);
+    uint _e66 = _group_0_binding_0_cs.subset_shift;
+    uint _e68 = shifted_subset(sub, _e66, P);
+    uint _e71 = _group_0_binding_0_cs.lights_per_subset;
+    uint base_6 = (_e68 * _e71);
     if (valid_1) {
-        vec4 _e77 = pos;
-        Glossy _e79 = glossy_at(pix, _e77.xyz);
-        g = _e79;
+        vec4 _e82 = pos;
+        Glossy _e84 = glossy_at(pix, _e82.xyz);
+        g = _e84;
     }
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e182 = first;
-            first = (_e182 + MAX_TILE_LIGHTS);
+            uint _e187 = first;
+            first = (_e187 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
-        uint _e82 = first;
-        uint _e85 = _group_0_binding_0_cs.lights_per_subset;
-        if ((_e82 < _e85)) {
+        uint _e87 = first;
+        uint _e90 = _group_0_binding_0_cs.lights_per_subset;
+        if ((_e87 < _e90)) {
         } else {
             break;
         }
         {
-            uint _e87 = first;
-            uint _e92 = _group_0_binding_0_cs.lights_per_subset;
-            uint end = min((_e87 + MAX_TILE_LIGHTS), _e92);
+            uint _e92 = first;
+            uint _e97 = _group_0_binding_0_cs.lights_per_subset;
+            uint end = min((_e92 + MAX_TILE_LIGHTS), _e97);
             if ((li == 0u)) {
                 atomicExchange(tile_count, 0u);
             }
             memoryBarrierShared();
             barrier();
-            uint _e98 = first;
-            j = (_e98 + li);
+            uint _e103 = first;
+            j = (_e103 + li);
             bool loop_init_2 = true;
             while(true) {
                 if (!loop_init_2) {
-                    uint _e124 = j;
-                    j = (_e124 + THREADS);
+                    uint _e129 = j;
+                    j = (_e129 + THREADS);
                 }
                 loop_init_2 = false;
-                uint _e101 = j;
-                if ((_e101 < end)) {
+                uint _e106 = j;
+                if ((_e106 < end)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e104 = j;
-                    vec3 _e108 = _group_0_binding_4_cs[(base_6 + _e104)].p0_;
-                    uint _e110 = j;
-                    float _e113 = _group_0_binding_6_cs[(base_6 + _e110)];
-                    float _e114 = cull_radius(_e113);
-                    bool _e115 = sphere_overlaps_aabb(_e108, _e114, lo, hi);
-                    if (_e115) {
-                        uint _e118 = atomicAdd(tile_count, 1u);
-                        if ((_e118 < MAX_TILE_LIGHTS)) {
-                            uint _e123 = j;
-                            tile_lights[_e118] = _e123;
+                    uint _e109 = j;
+                    vec3 _e113 = _group_0_binding_4_cs[(base_6 + _e109)].p0_;
+                    uint _e115 = j;
+                    float _e118 = _group_0_binding_6_cs[(base_6 + _e115)];
+                    float _e119 = cull_radius(_e118);
+                    bool _e120 = sphere_overlaps_aabb(_e113, _e119, lo, hi);
+                    if (_e120) {
+                        uint _e123 = atomicAdd(tile_count, 1u);
+                        if ((_e123 < MAX_TILE_LIGHTS)) {
+                            uint _e128 = j;
+                            tile_lights[_e123] = _e128;
                         }
                     }
                 }
             }
             memoryBarrierShared();
             barrier();
-            uint _e128 = tile_count;
+            uint _e133 = tile_count;
             memoryBarrierShared();
             barrier();
-            uint count = min(_e128, MAX_TILE_LIGHTS);
+            uint count = min(_e133, MAX_TILE_LIGHTS);
             if (valid_1) {
                 k = 0u;
                 bool loop_init_3 = true;
                 while(true) {
                     if (!loop_init_3) {
-                        uint _e180 = k;
-                        k = (_e180 + 1u);
+                        uint _e185 = k;
+                        k = (_e185 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e133 = k;
-                    if ((_e133 < count)) {
+                    uint _e138 = k;
+                    if ((_e138 < count)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e136 = k;
-                        uint _e138 = tile_lights[_e136];
-                        uint j_1 = (base_6 + _e138);
+                        uint _e141 = k;
+                        uint _e143 = tile_lights[_e141];
+                        uint j_1 = (base_6 + _e143);
                         GpuLight l_5 = _group_0_binding_4_cs[j_1];
-                        vec4 _e143 = pos;
-                        vec3 v_8 = (_e143.xyz - l_5.p0_);
-                        float _e149 = _group_0_binding_5_cs[j_1];
-                        float _e152 = _group_0_binding_6_cs[j_1];
-                        float _e156 = _group_0_binding_0_cs.near_r2_;
-                        float _e157 = vpl_far_slc_share(_e149, _e152, dot(v_8, v_8), _e156);
-                        if ((_e157 > 0.0)) {
-                            vec3 _e161 = nrm;
-                            float _e164 = _group_0_binding_0_cs.min_d2_;
-                            float _e165 = vpl_transfer(l_5.p1_, _e161, v_8, _e164);
-                            float t_3 = (_e165 * _e157);
-                            vec3 _e167 = e;
-                            e = (_e167 + (l_5.intensity * t_3));
-                            vec3 _e171 = s;
-                            Glossy _e172 = g;
-                            vec3 _e173 = nrm;
-                            vec3 _e174 = glossy_term(_e172, l_5, _e173, v_8, t_3);
-                            s = (_e171 + _e174);
-                            uint _e176 = kept;
-                            kept = (_e176 + 1u);
+                        vec4 _e148 = pos;
+                        vec3 v_8 = (_e148.xyz - l_5.p0_);
+                        float _e154 = _group_0_binding_5_cs[j_1];
+                        float _e157 = _group_0_binding_6_cs[j_1];
+                        float _e161 = _group_0_binding_0_cs.near_r2_;
+                        float _e162 = vpl_far_slc_share(_e154, _e157, dot(v_8, v_8), _e161);
+                        if ((_e162 > 0.0)) {
+                            vec3 _e166 = nrm;
+                            float _e169 = _group_0_binding_0_cs.min_d2_;
+                            float _e170 = vpl_transfer(l_5.p1_, _e166, v_8, _e169);
+                            float t_3 = (_e170 * _e162);
+                            vec3 _e172 = e;
+                            e = (_e172 + (l_5.intensity * t_3));
+                            vec3 _e176 = s;
+                            Glossy _e177 = g;
+                            vec3 _e178 = nrm;
+                            vec3 _e179 = glossy_term(_e177, l_5, _e178, v_8, t_3);
+                            s = (_e176 + _e179);
+                            uint _e181 = kept;
+                            kept = (_e181 + 1u);
                         }
                     }
                 }
@@ -552,11 +559,11 @@ void main() {
         }
     }
     if (inside) {
-        vec3 _e187 = e;
-        uint _e188 = kept;
-        _group_0_binding_7_cs[pix] = vec4(_e187, float(_e188));
-        vec3 _e193 = s;
-        _group_0_binding_9_cs[pix] = vec4(_e193, 0.0);
+        vec3 _e192 = e;
+        uint _e193 = kept;
+        _group_0_binding_7_cs[pix] = vec4(_e192, float(_e193));
+        vec3 _e198 = s;
+        _group_0_binding_9_cs[pix] = vec4(_e198, 0.0);
         return;
     } else {
         return;

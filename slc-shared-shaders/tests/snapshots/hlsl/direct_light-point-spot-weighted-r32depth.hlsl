@@ -28,7 +28,7 @@ struct ViewParams {
     float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     float3 f0_d;
@@ -101,6 +101,7 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
+static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
@@ -198,8 +199,8 @@ bool slc_keep(float r2_, float d2_1)
 
 bool sphere_contains_point(float3 c, float r_1, float3 x_1)
 {
-    float3 v_2 = (x_1 - c);
-    return (dot(v_2, v_2) <= (r_1 * r_1));
+    float3 v_3 = (x_1 - c);
+    return (dot(v_3, v_3) <= (r_1 * r_1));
 }
 
 float inverse_square(float d2_2)
@@ -219,8 +220,8 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     bool local_2 = (bool)0;
     bool local_3 = (bool)0;
 
-    float3 v_3 = (x_2 - y);
-    float d2_7 = dot(v_3, v_3);
+    float3 v_4 = (x_2 - y);
+    float d2_7 = dot(v_4, v_4);
     const bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
         local_2 = !((d2_7 > 0.0));
@@ -231,7 +232,7 @@ float connection_cosine(float3 x_2, float3 y, float3 n, float3 ng, float r2_1)
     if (_e16) {
         return 0.0;
     }
-    float3 w_5 = (v_3 / (sqrt(d2_7)).xxx);
+    float3 w_5 = (v_4 / (sqrt(d2_7)).xxx);
     float cos_x_1 = -(dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = (dot(ng, w_5) >= 0.0);
@@ -361,11 +362,11 @@ float subtended_cos(float dist2_, float r2_2)
 
 float4 emitter_cone(float3 center_, float radius, float3 axis, float cos_o, float3 p)
 {
-    float3 v_4 = (p - center_);
-    float dist2_1 = dot(v_4, v_4);
+    float3 v_5 = (p - center_);
+    float dist2_1 = dot(v_5, v_5);
     float r2_4 = (radius * radius);
     float d2_8 = max(max(dist2_1, r2_4), MIN_D2_);
-    float3 wi = ((dist2_1 > 0.0) ? (v_4 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
+    float3 wi = ((dist2_1 > 0.0) ? (v_5 / (sqrt(dist2_1)).xxx) : float3(0.0, 0.0, 0.0));
     float cos_w = dot(axis, wi);
     const float _e25 = safe_sqrt((1.0 - (cos_w * cos_w)));
     const float _e26 = subtended_cos(dist2_1, r2_4);
@@ -414,8 +415,8 @@ float cone_cos_of(float3 v, float d2_4, float a_2, float3 d)
 
 float cone_cos_toward(float3 center_2, float radius_2, float3 p_2, float3 d_1)
 {
-    float3 v_5 = (center_2 - p_2);
-    const float _e6 = cone_cos_of(v_5, dot(v_5, v_5), radius_2, d_1);
+    float3 v_6 = (center_2 - p_2);
+    const float _e6 = cone_cos_of(v_6, dot(v_6, v_6), radius_2, d_1);
     return _e6;
 }
 
@@ -445,9 +446,9 @@ float light_importance(float3 center_4, float radius_4, float phi_1, float3 axis
     }
     imp = ((phi_1 * _e8.x) / _e8.y);
     if ((dot(n_1, n_1) > 0.0)) {
-        float3 v_6 = (center_4 - p_4);
-        float dist2_2 = dot(v_6, v_6);
-        float cos_i = dot(((dist2_2 > 0.0) ? (v_6 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0)), n_1);
+        float3 v_7 = (center_4 - p_4);
+        float dist2_2 = dot(v_7, v_7);
+        float cos_i = dot(((dist2_2 > 0.0) ? (v_7 / (sqrt(dist2_2)).xxx) : float3(0.0, 0.0, 0.0)), n_1);
         float _e33 = imp;
         const float _e37 = safe_sqrt((1.0 - (cos_i * cos_i)));
         const float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -488,15 +489,35 @@ float candidate_weight(float importance, float rt2_2, float d2_5)
 
 float cone_weight(float3 center_6, float radius_6, float phi_3, float3 axis_4, float cos_o_4, float cos_e_3, float rt2_3, float3 p_6, float3 n_3, float3 r_4, float4 lobe_6)
 {
-    float3 v_7 = (p_6 - center_6);
+    float3 v_8 = (p_6 - center_6);
     if ((lobe_6.y <= 0.0)) {
         const float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3);
-        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_7, v_7));
+        const float _e19 = candidate_weight((_e15 * INV_PI), rt2_3, dot(v_8, v_8));
         return _e19;
     }
     const float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3, r_4, lobe_6);
-    const float _e22 = candidate_weight(_e20, rt2_3, dot(v_7, v_7));
+    const float _e22 = candidate_weight(_e20, rt2_3, dot(v_8, v_8));
     return _e22;
+}
+
+bool finite3_(float3 v_1)
+{
+    bool local_7 = (bool)0;
+    bool local_8 = (bool)0;
+
+    if ((abs(v_1.x) <= F32_MAX)) {
+        local_7 = (abs(v_1.y) <= F32_MAX);
+    } else {
+        local_7 = false;
+    }
+    bool _e12 = local_7;
+    if (_e12) {
+        local_8 = (abs(v_1.z) <= F32_MAX);
+    } else {
+        local_8 = false;
+    }
+    bool _e20 = local_8;
+    return _e20;
 }
 
 float3 light_intensity(GpuLight l, float3 w_3)
@@ -564,17 +585,17 @@ uint bsh_first(uint nodes_2)
     return BSH_NONE;
 }
 
-float bsh_inner_scale(float a_4, float3 v_1, float d2_6, float3 r_5, float4 rl_2)
+float bsh_inner_scale(float a_4, float3 v_2, float d2_6, float3 r_5, float4 rl_2)
 {
-    const float _e5 = cone_cos_of(v_1, d2_6, a_4, r_5);
+    const float _e5 = cone_cos_of(v_2, d2_6, a_4, r_5);
     const float _e8 = range_scale_at(rl_2, (_e5 + 2e-6));
     return _e8;
 }
 
 bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_6, float4 rl_3)
 {
-    bool local_7 = (bool)0;
-    bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
+    bool local_10 = (bool)0;
 
     const bool _e6 = sphere_contains_point(node_2.center_, node_2.radius, x_4);
     if (_e6) {
@@ -582,17 +603,17 @@ bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_6, float4 rl_3)
     }
     if (!((rl_3.w <= 1.0))) {
         const bool _e20 = sphere_contains_point(node_2.center_, (node_2.radius * (rl_3.w * 1.0001)), x_4);
-        local_7 = !(_e20);
+        local_9 = !(_e20);
     } else {
-        local_7 = true;
+        local_9 = true;
     }
-    bool _e23 = local_7;
+    bool _e23 = local_9;
     if (_e23) {
         return false;
     }
     const float _e25 = bsh_range_bound(node_2);
-    float3 v_8 = (x_4 - node_2.center_);
-    float d2_9 = dot(v_8, v_8);
+    float3 v_9 = (x_4 - node_2.center_);
+    float d2_9 = dot(v_9, v_9);
     float reach_max = (node_2.extent + ((rl_3.w * 1.001) * _e25));
     if ((d2_9 > (reach_max * reach_max))) {
         return false;
@@ -603,15 +624,15 @@ bool bsh_reaches(BshNode node_2, float3 x_4, float3 r_6, float4 rl_3)
         const bool _e47 = sphere_contains_point(node_2.center_, _e46, x_4);
         return _e47;
     }
-    const float _e50 = bsh_inner_scale(node_2.extent, -(v_8), d2_9, r_6, rl_3);
+    const float _e50 = bsh_inner_scale(node_2.extent, -(v_9), d2_9, r_6, rl_3);
     float s_c = (_e50 * 1.001);
     float reach = (node_2.extent + (sqrt(s_c) * _e25));
     if ((d2_9 <= ((node_2.radius * node_2.radius) * s_c))) {
-        local_8 = (d2_9 <= (reach * reach));
+        local_10 = (d2_9 <= (reach * reach));
     } else {
-        local_8 = false;
+        local_10 = false;
     }
-    bool _e67 = local_8;
+    bool _e67 = local_10;
     return _e67;
 }
 
@@ -663,7 +684,7 @@ GpuLight ConstructGpuLight(float3 arg0, uint arg1, float3 arg2, float arg3, floa
 Connection connect(uint li, float3 x_6, float3 n_4, float3 ng_1, float s, float w_res, float u1_1, float u2_1, float eps)
 {
     Connection c_1 = (Connection)0;
-    bool local_9 = (bool)0;
+    bool local_11 = (bool)0;
 
     c_1.e = (0.0).xxx;
     GpuLight l_2 = ConstructGpuLight(asfloat(lights.Load3(li*64+0)), asuint(lights.Load(li*64+12)), asfloat(lights.Load3(li*64+16)), asfloat(lights.Load(li*64+28)), asfloat(lights.Load3(li*64+32)), asfloat(lights.Load(li*64+44)), asfloat(lights.Load3(li*64+48)), asuint(lights.Load(li*64+60)));
@@ -677,20 +698,20 @@ Connection connect(uint li, float3 x_6, float3 n_4, float3 ng_1, float s, float 
     if (!((_e27 <= 0.0))) {
         float3 _e36 = c_1.y;
         const bool _e37 = occluded((x_6 + (ng_1 * eps)), _e36);
-        local_9 = _e37;
+        local_11 = _e37;
     } else {
-        local_9 = true;
+        local_11 = true;
     }
-    bool _e39 = local_9;
+    bool _e39 = local_11;
     if (_e39) {
         Connection _e40 = c_1;
         const Connection connection = _e40;
         return connection;
     }
     float3 _e42 = c_1.y;
-    float3 v_9 = (x_6 - _e42);
-    float d2_10 = dot(v_9, v_9);
-    const float3 _e49 = light_intensity(l_2, (v_9 / (sqrt(d2_10)).xxx));
+    float3 v_10 = (x_6 - _e42);
+    float d2_10 = dot(v_10, v_10);
+    const float3 _e49 = light_intensity(l_2, (v_10 / (sqrt(d2_10)).xxx));
     float _e51 = c_1.cos_x;
     float _e54 = asfloat(rt2_4.Load(li*4));
     const float _e56 = connection_factor(_e51, d2_10, (s * _e54), w_res);
@@ -810,16 +831,33 @@ WeightedPicks bsh_weighted_collect(float3 x_9, float3 n_6, float3 r_10, float4 l
     return weightedpicks;
 }
 
-float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px, float py, float width, float height, float depth, float background)
+float4 unproject_pixel(float4 c0_, float4 c1_, float4 c2_, float4 c3_, float px, float py, float width, float height, float depth)
 {
-    if ((depth == background)) {
+    bool local_12 = (bool)0;
+    bool local_13 = (bool)0;
+
+    if ((depth > 0.0)) {
+        local_12 = (depth < 1.0);
+    } else {
+        local_12 = false;
+    }
+    bool _e16 = local_12;
+    if (!(_e16)) {
         return float4(0.0, 0.0, 0.0, 0.0);
     }
     float x_11 = ((((px + 0.5) / width) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height) * 2.0));
     float4 p_7 = ((((c0_ * x_11) + (c1_ * y_1)) + (c2_ * depth)) + c3_);
+    float3 q = float3((p_7.x / p_7.w), (p_7.y / p_7.w), (p_7.z / p_7.w));
     if ((abs(p_7.w) > 0.0)) {
-        return float4((p_7.x / p_7.w), (p_7.y / p_7.w), (p_7.z / p_7.w), 1.0);
+        const bool _e59 = finite3_(q);
+        local_13 = _e59;
+    } else {
+        local_13 = false;
+    }
+    bool _e61 = local_13;
+    if (_e61) {
+        return float4(q.x, q.y, q.z, 1.0);
     }
     return float4(0.0, 0.0, 0.0, 0.0);
 }
@@ -834,9 +872,8 @@ float4 surface_at(int2 texel)
     float4 _e16 = view.c3_;
     uint _e23 = view.width;
     uint _e27 = view.height;
-    float _e31 = view.background;
-    const float4 _e32 = unproject_pixel(_e7, _e10, _e13, _e16, float(texel.x), float(texel.y), float(_e23), float(_e27), d_2, _e31);
-    return _e32;
+    const float4 _e29 = unproject_pixel(_e7, _e10, _e13, _e16, float(texel.x), float(texel.y), float(_e23), float(_e27), d_2);
+    return _e29;
 }
 
 Shaded shade_pick(uint li_3, float3 x_10, float3 n_7, float3 r_11, float4 rl_8, Material m_1, float w_4, float u1_2, float u2_2)

@@ -109,6 +109,7 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
+static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
@@ -952,6 +953,26 @@ float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_
     return _e10;
 }
 
+bool finite3_(float3 v_6)
+{
+    bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
+
+    if ((abs(v_6.x) <= F32_MAX)) {
+        local_14 = (abs(v_6.y) <= F32_MAX);
+    } else {
+        local_14 = false;
+    }
+    bool _e12 = local_14;
+    if (_e12) {
+        local_15 = (abs(v_6.z) <= F32_MAX);
+    } else {
+        local_15 = false;
+    }
+    bool _e20 = local_15;
+    return _e20;
+}
+
 float shadow_margin(float len)
 {
     return (0.0001 * len);
@@ -986,16 +1007,16 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
 
 float3 triangle_normal(float3 a_6, float3 b_4, float3 c_5)
 {
-    bool local_14 = (bool)0;
+    bool local_16 = (bool)0;
 
     float3 n_19 = cross((b_4 - a_6), (c_5 - a_6));
     float l2_ = dot(n_19, n_19);
     if (!(!((l2_ > 0.0)))) {
-        local_14 = !((l2_ < 3e38));
+        local_16 = !((l2_ < 3e38));
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    bool _e17 = local_14;
+    bool _e17 = local_16;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -1004,9 +1025,9 @@ float3 triangle_normal(float3 a_6, float3 b_4, float3 c_5)
 
 float ray_triangle(float3 o_1, float3 d_3, float3 a_7, float3 b_5, float3 c_6, float t_min, float t_max_1)
 {
-    bool local_15 = (bool)0;
-    bool local_16 = (bool)0;
     bool local_17 = (bool)0;
+    bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
 
     float3 e1_ = (b_5 - a_7);
     float3 e2_ = (c_6 - a_7);
@@ -1019,56 +1040,36 @@ float ray_triangle(float3 o_1, float3 d_3, float3 a_7, float3 b_5, float3 c_6, f
     float3 s_6 = (o_1 - a_7);
     float u_2 = (dot(s_6, p_2) * inv_1);
     if (!((u_2 < 0.0))) {
-        local_15 = (u_2 > 1.0);
+        local_17 = (u_2 > 1.0);
     } else {
-        local_15 = true;
+        local_17 = true;
     }
-    bool _e28 = local_15;
+    bool _e28 = local_17;
     if (_e28) {
         return -1.0;
     }
     float3 q = cross(s_6, e1_);
     float v_11 = (dot(d_3, q) * inv_1);
     if (!((v_11 < 0.0))) {
-        local_16 = ((u_2 + v_11) > 1.0);
+        local_18 = ((u_2 + v_11) > 1.0);
     } else {
-        local_16 = true;
+        local_18 = true;
     }
-    bool _e42 = local_16;
+    bool _e42 = local_18;
     if (_e42) {
         return -1.0;
     }
     float t_5 = (dot(e2_, q) * inv_1);
     if ((t_5 > t_min)) {
-        local_17 = (t_5 < t_max_1);
+        local_19 = (t_5 < t_max_1);
     } else {
-        local_17 = false;
+        local_19 = false;
     }
-    bool _e51 = local_17;
+    bool _e51 = local_19;
     if (_e51) {
         return t_5;
     }
     return -1.0;
-}
-
-bool finite3_(float3 v_6)
-{
-    bool local_18 = (bool)0;
-    bool local_19 = (bool)0;
-
-    if ((abs(v_6.x) <= F32_MAX)) {
-        local_18 = (abs(v_6.y) <= F32_MAX);
-    } else {
-        local_18 = false;
-    }
-    bool _e12 = local_18;
-    if (_e12) {
-        local_19 = (abs(v_6.z) <= F32_MAX);
-    } else {
-        local_19 = false;
-    }
-    bool _e20 = local_19;
-    return _e20;
 }
 
 float3 light_intensity(GpuLight l_4, float3 w_5)

@@ -121,6 +121,7 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
+static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
@@ -668,6 +669,26 @@ float range_scale_toward(float4 rl_1, float3 center_1, float radius_1, float3 p_
     return _e10;
 }
 
+bool finite3_(float3 v_8)
+{
+    bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
+
+    if ((abs(v_8.x) <= F32_MAX)) {
+        local_14 = (abs(v_8.y) <= F32_MAX);
+    } else {
+        local_14 = false;
+    }
+    bool _e12 = local_14;
+    if (_e12) {
+        local_15 = (abs(v_8.z) <= F32_MAX);
+    } else {
+        local_15 = false;
+    }
+    bool _e20 = local_15;
+    return _e20;
+}
+
 float ray_inverse(float x_2)
 {
     return (1.0 / ((abs(x_2) < 1e-30) ? 1e-30 : x_2));
@@ -697,16 +718,16 @@ float ray_aabb(float3 o, float3 inv_d, float3 bmin, float3 bmax, float t_max)
 
 float3 triangle_normal(float3 a_3, float3 b_2, float3 c_2)
 {
-    bool local_14 = (bool)0;
+    bool local_16 = (bool)0;
 
     float3 n_15 = cross((b_2 - a_3), (c_2 - a_3));
     float l2_ = dot(n_15, n_15);
     if (!(!((l2_ > 0.0)))) {
-        local_14 = !((l2_ < 3e38));
+        local_16 = !((l2_ < 3e38));
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    bool _e17 = local_14;
+    bool _e17 = local_16;
     if (_e17) {
         return float3(0.0, 0.0, 0.0);
     }
@@ -737,16 +758,16 @@ float3 barycentric(float3 p_2, float3 a_4, float3 b_3, float3 c_3)
 
 float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_2, float3 facing)
 {
-    bool local_15 = (bool)0;
+    bool local_17 = (bool)0;
 
     float3 s_4 = (((n0_ * w_2.x) + (n1_ * w_2.y)) + (n2_ * w_2.z));
     float l2_1 = dot(s_4, s_4);
     if (!(!((l2_1 > 1e-12)))) {
-        local_15 = !((l2_1 < 3e38));
+        local_17 = !((l2_1 < 3e38));
     } else {
-        local_15 = true;
+        local_17 = true;
     }
-    bool _e24 = local_15;
+    bool _e24 = local_17;
     if (_e24) {
         return facing;
     }
@@ -756,9 +777,9 @@ float3 shading_normal(float3 n0_, float3 n1_, float3 n2_, float3 w_2, float3 fac
 
 float ray_triangle(float3 o_1, float3 d_4, float3 a_5, float3 b_4, float3 c_4, float t_min, float t_max_1)
 {
-    bool local_16 = (bool)0;
-    bool local_17 = (bool)0;
     bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
+    bool local_20 = (bool)0;
 
     float3 e1_1 = (b_4 - a_5);
     float3 e2_1 = (c_4 - a_5);
@@ -771,32 +792,32 @@ float ray_triangle(float3 o_1, float3 d_4, float3 a_5, float3 b_4, float3 c_4, f
     float3 s_5 = (o_1 - a_5);
     float u_3 = (dot(s_5, p_3) * inv_1);
     if (!((u_3 < 0.0))) {
-        local_16 = (u_3 > 1.0);
+        local_18 = (u_3 > 1.0);
     } else {
-        local_16 = true;
+        local_18 = true;
     }
-    bool _e28 = local_16;
+    bool _e28 = local_18;
     if (_e28) {
         return -1.0;
     }
     float3 q_1 = cross(s_5, e1_1);
     float v_12 = (dot(d_4, q_1) * inv_1);
     if (!((v_12 < 0.0))) {
-        local_17 = ((u_3 + v_12) > 1.0);
+        local_19 = ((u_3 + v_12) > 1.0);
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    bool _e42 = local_17;
+    bool _e42 = local_19;
     if (_e42) {
         return -1.0;
     }
     float t_3 = (dot(e2_1, q_1) * inv_1);
     if ((t_3 > t_min)) {
-        local_18 = (t_3 < t_max_1);
+        local_20 = (t_3 < t_max_1);
     } else {
-        local_18 = false;
+        local_20 = false;
     }
-    bool _e51 = local_18;
+    bool _e51 = local_20;
     if (_e51) {
         return t_3;
     }
@@ -828,35 +849,15 @@ bool sees_emission(float3 gn, float3 dir_1)
 
 bool continues_path(float3 nd, float3 n_12, float3 ng)
 {
-    bool local_19 = (bool)0;
-
-    if ((dot(nd, n_12) > 0.0)) {
-        local_19 = (dot(nd, ng) > 0.0);
-    } else {
-        local_19 = false;
-    }
-    bool _e12 = local_19;
-    return _e12;
-}
-
-bool finite3_(float3 v_8)
-{
-    bool local_20 = (bool)0;
     bool local_21 = (bool)0;
 
-    if ((abs(v_8.x) <= F32_MAX)) {
-        local_20 = (abs(v_8.y) <= F32_MAX);
-    } else {
-        local_20 = false;
-    }
-    bool _e12 = local_20;
-    if (_e12) {
-        local_21 = (abs(v_8.z) <= F32_MAX);
+    if ((dot(nd, n_12) > 0.0)) {
+        local_21 = (dot(nd, ng) > 0.0);
     } else {
         local_21 = false;
     }
-    bool _e20 = local_21;
-    return _e20;
+    bool _e12 = local_21;
+    return _e12;
 }
 
 float path_survival(float3 beta)

@@ -19,7 +19,7 @@ struct ViewParams {
     float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     float3 f0_d;
@@ -49,6 +49,7 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
+static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
@@ -223,8 +224,8 @@ float4 temporal_color(float3 c_1, float4 h, float noise_2, float last_1, float m
     const float _e10 = luminance(hc);
     const float _e12 = persistent_change(_e9, last_1, _e10, noise_2, h.w);
     const float _e14 = next_history_length(h.w, _e12, max_history_1);
-    const float _e16 = temporal_alpha(_e14);
-    float3 v_1 = (hc + ((c_1 - hc) * _e16));
+    const float _e15 = temporal_alpha(_e14);
+    float3 v_1 = ((hc * (1.0 - _e15)) + (c_1 * _e15));
     return float4(v_1.x, v_1.y, v_1.z, _e14);
 }
 

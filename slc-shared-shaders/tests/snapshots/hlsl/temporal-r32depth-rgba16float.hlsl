@@ -19,7 +19,7 @@ struct ViewParams {
     float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     float3 f0_d;
@@ -49,6 +49,7 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
+static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
@@ -89,6 +90,26 @@ float to_f32_(uint u)
     return float(u);
 }
 
+bool finite3_(float3 v_1)
+{
+    bool local_1 = (bool)0;
+    bool local_2 = (bool)0;
+
+    if ((abs(v_1.x) <= F32_MAX)) {
+        local_1 = (abs(v_1.y) <= F32_MAX);
+    } else {
+        local_1 = false;
+    }
+    bool _e12 = local_1;
+    if (_e12) {
+        local_2 = (abs(v_1.z) <= F32_MAX);
+    } else {
+        local_2 = false;
+    }
+    bool _e20 = local_2;
+    return _e20;
+}
+
 float luminance(float3 c)
 {
     return dot(c, float3(0.2126, 0.7152, 0.0722));
@@ -122,10 +143,10 @@ uint naga_div(uint lhs, uint rhs) {
 
 float4 history_tap(float3 q, uint k_1, float width_1, float height_1)
 {
-    bool local_1 = (bool)0;
-    bool local_2 = (bool)0;
     bool local_3 = (bool)0;
     bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
 
     float x0_ = floor(q.x);
     float y0_ = floor(q.y);
@@ -136,29 +157,29 @@ float4 history_tap(float3 q, uint k_1, float width_1, float height_1)
     const float _e14 = to_f32_(dy_1);
     float ty = (y0_ + _e14);
     if ((q.z > 0.0)) {
-        local_1 = (tx >= 0.0);
-    } else {
-        local_1 = false;
-    }
-    bool _e24 = local_1;
-    if (_e24) {
-        local_2 = (ty >= 0.0);
-    } else {
-        local_2 = false;
-    }
-    bool _e30 = local_2;
-    if (_e30) {
-        local_3 = (tx < width_1);
+        local_3 = (tx >= 0.0);
     } else {
         local_3 = false;
     }
-    bool _e35 = local_3;
-    if (_e35) {
-        local_4 = (ty < height_1);
+    bool _e24 = local_3;
+    if (_e24) {
+        local_4 = (ty >= 0.0);
     } else {
         local_4 = false;
     }
-    bool inside = local_4;
+    bool _e30 = local_4;
+    if (_e30) {
+        local_5 = (tx < width_1);
+    } else {
+        local_5 = false;
+    }
+    bool _e35 = local_5;
+    if (_e35) {
+        local_6 = (ty < height_1);
+    } else {
+        local_6 = false;
+    }
+    bool inside = local_6;
     const float _e45 = bilinear_weight((q.x - x0_), (q.y - y0_), dx_1, dy_1);
     return float4(tx, ty, _e45, (inside ? 1.0 : 0.0));
 }
@@ -173,14 +194,14 @@ float4 history_mean(float4 sum, float weight_1)
 
 bool history_matches(float3 n, float3 nh, float3 p_1, float oh, float d)
 {
-    bool local_5 = (bool)0;
+    bool local_7 = (bool)0;
 
     if ((abs((dot(nh, p_1) - oh)) <= (TEMPORAL_DEPTH_TOLERANCE * d))) {
-        local_5 = (dot(n, nh) >= TEMPORAL_NORMAL_COS);
+        local_7 = (dot(n, nh) >= TEMPORAL_NORMAL_COS);
     } else {
-        local_5 = false;
+        local_7 = false;
     }
-    bool _e17 = local_5;
+    bool _e17 = local_7;
     return _e17;
 }
 
@@ -206,15 +227,15 @@ float temporal_alpha(float n_3)
 
 float history_tap_weight(float w, float3 n_4, float3 nh_1, float3 p_2, float oh_1, float d_1, float len)
 {
-    bool local_6 = (bool)0;
+    bool local_8 = (bool)0;
 
     if ((len > 0.0)) {
         const bool _e11 = history_matches(n_4, nh_1, p_2, oh_1, d_1);
-        local_6 = _e11;
+        local_8 = _e11;
     } else {
-        local_6 = false;
+        local_8 = false;
     }
-    bool _e13 = local_6;
+    bool _e13 = local_8;
     return (_e13 ? w : 0.0);
 }
 
@@ -235,14 +256,14 @@ float4 temporal_color(float3 c_1, float4 h, float noise_2, float last_1, float m
     const float _e10 = luminance(hc);
     const float _e12 = persistent_change(_e9, last_1, _e10, noise_2, h.w);
     const float _e14 = next_history_length(h.w, _e12, max_history_1);
-    const float _e16 = temporal_alpha(_e14);
-    float3 v_1 = (hc + ((c_1 - hc) * _e16));
-    return float4(v_1.x, v_1.y, v_1.z, _e14);
+    const float _e15 = temporal_alpha(_e14);
+    float3 v_2 = ((hc * (1.0 - _e15)) + (c_1 * _e15));
+    return float4(v_2.x, v_2.y, v_2.z, _e14);
 }
 
 float4 temporal_moments(float3 c_2, float last_2, float noise_3, float prev_len, float len_1, float depth)
 {
-    bool local_7 = (bool)0;
+    bool local_9 = (bool)0;
 
     const float _e6 = luminance(c_2);
     if ((prev_len <= 0.0)) {
@@ -252,26 +273,43 @@ float4 temporal_moments(float3 c_2, float last_2, float noise_3, float prev_len,
     float d2_ = ((0.5 * d_2) * d_2);
     float cap = (16.0 * noise_3);
     if ((prev_len >= TEMPORAL_MIN_MOMENTS)) {
-        local_7 = (noise_3 > 0.0);
+        local_9 = (noise_3 > 0.0);
     } else {
-        local_7 = false;
+        local_9 = false;
     }
-    bool _e26 = local_7;
+    bool _e26 = local_9;
     float sample_ = (_e26 ? min(d2_, cap) : d2_);
     const float _e31 = temporal_alpha((len_1 - 1.0));
     return float4(_e6, (noise_3 + ((sample_ - noise_3) * _e31)), depth, 0.0);
 }
 
-float4 unproject_pixel(float4 c0_1, float4 c1_1, float4 c2_1, float4 c3_1, float px, float py, float width_2, float height_2, float depth_1, float background)
+float4 unproject_pixel(float4 c0_1, float4 c1_1, float4 c2_1, float4 c3_1, float px, float py, float width_2, float height_2, float depth_1)
 {
-    if ((depth_1 == background)) {
+    bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
+
+    if ((depth_1 > 0.0)) {
+        local_10 = (depth_1 < 1.0);
+    } else {
+        local_10 = false;
+    }
+    bool _e16 = local_10;
+    if (!(_e16)) {
         return float4(0.0, 0.0, 0.0, 0.0);
     }
     float x_1 = ((((px + 0.5) / width_2) * 2.0) - 1.0);
     float y_1 = (1.0 - (((py + 0.5) / height_2) * 2.0));
     float4 p_3 = ((((c0_1 * x_1) + (c1_1 * y_1)) + (c2_1 * depth_1)) + c3_1);
+    float3 q_1 = float3((p_3.x / p_3.w), (p_3.y / p_3.w), (p_3.z / p_3.w));
     if ((abs(p_3.w) > 0.0)) {
-        return float4((p_3.x / p_3.w), (p_3.y / p_3.w), (p_3.z / p_3.w), 1.0);
+        const bool _e59 = finite3_(q_1);
+        local_11 = _e59;
+    } else {
+        local_11 = false;
+    }
+    bool _e61 = local_11;
+    if (_e61) {
+        return float4(q_1.x, q_1.y, q_1.z, 1.0);
     }
     return float4(0.0, 0.0, 0.0, 0.0);
 }
@@ -286,9 +324,8 @@ float4 surface_at(int2 texel)
     float4 _e16 = view.c3_;
     uint _e23 = view.width;
     uint _e27 = view.height;
-    float _e31 = view.background;
-    const float4 _e32 = unproject_pixel(_e7, _e10, _e13, _e16, float(texel.x), float(texel.y), float(_e23), float(_e27), d_3, _e31);
-    return _e32;
+    const float4 _e29 = unproject_pixel(_e7, _e10, _e13, _e16, float(texel.x), float(texel.y), float(_e23), float(_e27), d_3);
+    return _e29;
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -300,7 +337,7 @@ GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
 
 GbTexel gbuffer_at(uint i)
 {
-    bool local_8 = (bool)0;
+    bool local_12 = (bool)0;
 
     uint _e3 = view.width;
     uint _e8 = view.width;
@@ -310,15 +347,15 @@ GbTexel gbuffer_at(uint i)
     float3 n_6 = _e15.xyz;
     float len2_ = dot(n_6, n_6);
     if ((_e12.w > 0.0)) {
-        local_8 = (len2_ > 0.0);
+        local_12 = (len2_ > 0.0);
     } else {
-        local_8 = false;
+        local_12 = false;
     }
-    bool valid = local_8;
+    bool valid = local_12;
     float3 _e30 = view.eye;
-    float3 v_2 = (_e12.xyz - _e30);
+    float3 v_3 = (_e12.xyz - _e30);
     float4 position = float4(_e12.xyz, (valid ? 1.0 : 0.0));
-    float4 normal = (valid ? float4((n_6 / (sqrt(len2_)).xxx), sqrt(dot(v_2, v_2))) : float4(0.0, 0.0, 0.0, 1e30));
+    float4 normal = (valid ? float4((n_6 / (sqrt(len2_)).xxx), sqrt(dot(v_3, v_3))) : float4(0.0, 0.0, 0.0, 1e30));
     const GbTexel gbtexel = ConstructGbTexel(position, normal);
     return gbtexel;
 }

@@ -5,7 +5,7 @@ struct VplParams {
     float min_d2_;
     float near_r2_;
     uint near_blocks;
-    uint pad0_;
+    uint subset_shift;
     uint pad1_;
 };
 
@@ -17,7 +17,7 @@ struct ViewParams {
     float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     float3 f0_d;
@@ -56,6 +56,7 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
+static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;

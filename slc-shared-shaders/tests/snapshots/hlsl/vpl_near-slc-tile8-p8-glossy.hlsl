@@ -16,7 +16,7 @@ struct VplParams {
     float min_d2_;
     float near_r2_;
     uint near_blocks;
-    uint pad0_;
+    uint subset_shift;
     uint pad1_;
 };
 
@@ -44,7 +44,7 @@ struct ViewParams {
     float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     float3 f0_d;
@@ -87,6 +87,7 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
+static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
@@ -163,7 +164,7 @@ bool sphere_overlaps_aabb(float3 c, float r, float3 bmin, float3 bmax)
 
 float vpl_transfer(float3 n_l, float3 n_x, float3 v, float min_d2_)
 {
-    float m_2 = max(dot(v, v), min_d2_);
+    float m_2 = max(dot(v, v), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m_2 * m_2));
 }
 

@@ -65,6 +65,7 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
+static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
@@ -116,11 +117,78 @@ float intensity_measure(float3 rgb, uint mode)
     return max(rgb.x, max(rgb.y, rgb.z));
 }
 
-float vpl_rt2_(float3 flux, float exposure_1, float error_bound_1, uint mode_1)
+float vpl_rt2_(float3 flux_1, float exposure_1, float error_bound_1, uint mode_1)
 {
-    const float _e6 = intensity_measure((flux * INV_PI), mode_1);
+    const float _e6 = intensity_measure((flux_1 * INV_PI), mode_1);
     const float _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
     return _e7;
+}
+
+bool finite3_(float3 v)
+{
+    bool local_1 = (bool)0;
+    bool local_2 = (bool)0;
+
+    if ((abs(v.x) <= F32_MAX)) {
+        local_1 = (abs(v.y) <= F32_MAX);
+    } else {
+        local_1 = false;
+    }
+    bool _e12 = local_1;
+    if (_e12) {
+        local_2 = (abs(v.z) <= F32_MAX);
+    } else {
+        local_2 = false;
+    }
+    bool _e20 = local_2;
+    return _e20;
+}
+
+bool vpl_record_ok(float3 position_1, float3 normal_1, float3 flux_2)
+{
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
+
+    const bool _e3 = finite3_(position_1);
+    if (_e3) {
+        const bool _e6 = finite3_(normal_1);
+        local_3 = _e6;
+    } else {
+        local_3 = false;
+    }
+    bool _e8 = local_3;
+    if (_e8) {
+        const bool _e11 = finite3_(flux_2);
+        local_4 = _e11;
+    } else {
+        local_4 = false;
+    }
+    bool _e13 = local_4;
+    if (!(_e13)) {
+        return false;
+    }
+    if ((flux_2.x >= 0.0)) {
+        local_5 = (flux_2.y >= 0.0);
+    } else {
+        local_5 = false;
+    }
+    bool _e25 = local_5;
+    if (_e25) {
+        local_6 = (flux_2.z >= 0.0);
+    } else {
+        local_6 = false;
+    }
+    bool _e32 = local_6;
+    if (_e32) {
+        local_7 = ((max(max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY);
+    } else {
+        local_7 = false;
+    }
+    bool _e45 = local_7;
+    return _e45;
 }
 
 uint naga_mod(uint lhs, uint rhs) {
@@ -144,12 +212,12 @@ WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
     return ret;
 }
 
-WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
+WorkgroupBox workgroup_box(uint li_1, float3 p_1, bool has)
 {
     uint stride = 32u;
 
-    wg_lo[min(uint(li_1), 63u)] = (has ? p : (3.4028235e38).xxx);
-    wg_hi[min(uint(li_1), 63u)] = (has ? p : (-3.4028235e38).xxx);
+    wg_lo[min(uint(li_1), 63u)] = (has ? p_1 : (3.4028235e38).xxx);
+    wg_hi[min(uint(li_1), 63u)] = (has ? p_1 : (-3.4028235e38).xxx);
     GroupMemoryBarrierWithGroupSync();
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
@@ -230,6 +298,9 @@ void main(uint3 gid : SV_DispatchThreadID, uint3 wg : SV_GroupID, uint li : SV_G
     GroupMemoryBarrierWithGroupSync();
     float3 position = (0.0).xxx;
     bool lit_ = false;
+    float3 p = (float3)0;
+    float3 normal = (float3)0;
+    float3 flux = (float3)0;
     bool local = (bool)0;
 
     uint i_1 = gid.x;
@@ -237,49 +308,66 @@ void main(uint3 gid : SV_DispatchThreadID, uint3 wg : SV_GroupID, uint li : SV_G
     bool inside = (i_1 < _e6);
     if (inside) {
         GpuVplRecord r = ConstructGpuVplRecord(asfloat(records.Load3(i_1*48+0)), asfloat(records.Load(i_1*48+12)), asfloat(records.Load3(i_1*48+16)), asfloat(records.Load(i_1*48+28)), asfloat(records.Load3(i_1*48+32)), asfloat(records.Load(i_1*48+44)));
-        position = r.position;
-        float3 normal = r.normal;
-        float _e21 = params.scale;
-        float3 flux_1 = (r.flux * _e21);
-        uint _e25 = params.per_subset;
-        const uint _e27 = interleave_slot_linear(i_1, _e25, P);
-        float3 _e30 = position;
-        {
-            GpuLight _value3 = ConstructGpuLight(_e30, LIGHT_VPL, normal, 0.0, (0.0).xxx, 0.0, flux_1, 0u);
-            lights.Store3(_e27*64+0, asuint(_value3.p0_));
-            lights.Store(_e27*64+12, asuint(_value3.kind));
-            lights.Store3(_e27*64+16, asuint(_value3.p1_));
-            lights.Store(_e27*64+28, asuint(_value3.a));
-            lights.Store3(_e27*64+32, asuint(_value3.p2_));
-            lights.Store(_e27*64+44, asuint(_value3.b));
-            lights.Store3(_e27*64+48, asuint(_value3.intensity));
-            lights.Store(_e27*64+60, asuint(_value3.ies_base));
+        p = r.position;
+        normal = r.normal;
+        flux = r.flux;
+        uint _e24 = params.per_subset;
+        const uint _e26 = interleave_slot_linear(i_1, _e24, P);
+        float3 _e27 = p;
+        float3 _e28 = normal;
+        float3 _e29 = flux;
+        const bool _e30 = vpl_record_ok(_e27, _e28, _e29);
+        if (!(_e30)) {
+            p = (0.0).xxx;
+            normal = (0.0).xxx;
+            flux = (0.0).xxx;
         }
-        ids.Store(_e27*4, asuint(i_1));
-        uint _e42 = params.slc;
-        bool slc = (_e42 != 0u);
-        float _e49 = params.exposure;
-        float _e52 = params.error_bound;
-        uint _e55 = params.mode;
-        const float _e56 = vpl_rt2_(flux_1, _e49, _e52, _e55);
-        rt2_.Store(_e27*4, asuint((slc ? _e56 : 0.0)));
-        float _e63 = params.fixed_r2_;
-        r2_.Store(_e27*4, asuint((slc ? 0.0 : _e63)));
-        near_slots.Store(i_1*4, asuint(_e27));
-        lit_ = any((flux_1 != (0.0).xxx));
+        float3 _e38 = p;
+        position = _e38;
+        float3 _e39 = flux;
+        float _e42 = params.scale;
+        flux = (_e39 * _e42);
+        float3 _e46 = position;
+        float3 _e48 = normal;
+        float3 _e51 = flux;
+        {
+            GpuLight _value3 = ConstructGpuLight(_e46, LIGHT_VPL, _e48, 0.0, (0.0).xxx, 0.0, _e51, 0u);
+            lights.Store3(_e26*64+0, asuint(_value3.p0_));
+            lights.Store(_e26*64+12, asuint(_value3.kind));
+            lights.Store3(_e26*64+16, asuint(_value3.p1_));
+            lights.Store(_e26*64+28, asuint(_value3.a));
+            lights.Store3(_e26*64+32, asuint(_value3.p2_));
+            lights.Store(_e26*64+44, asuint(_value3.b));
+            lights.Store3(_e26*64+48, asuint(_value3.intensity));
+            lights.Store(_e26*64+60, asuint(_value3.ies_base));
+        }
+        ids.Store(_e26*4, asuint(i_1));
+        uint _e60 = params.slc;
+        bool slc = (_e60 != 0u);
+        float3 _e65 = flux;
+        float _e68 = params.exposure;
+        float _e71 = params.error_bound;
+        uint _e74 = params.mode;
+        const float _e75 = vpl_rt2_(_e65, _e68, _e71, _e74);
+        rt2_.Store(_e26*4, asuint((slc ? _e75 : 0.0)));
+        float _e82 = params.fixed_r2_;
+        r2_.Store(_e26*4, asuint((slc ? 0.0 : _e82)));
+        near_slots.Store(i_1*4, asuint(_e26));
+        float3 _e87 = flux;
+        lit_ = any((_e87 != (0.0).xxx));
     }
-    float3 _e72 = position;
-    bool _e73 = lit_;
-    const WorkgroupBox _e74 = workgroup_box(li, _e72, _e73);
+    float3 _e92 = position;
+    bool _e93 = lit_;
+    const WorkgroupBox _e94 = workgroup_box(li, _e92, _e93);
     if ((li == 0u)) {
         local = inside;
     } else {
         local = false;
     }
-    bool _e80 = local;
-    if (_e80) {
+    bool _e100 = local;
+    if (_e100) {
         {
-            GpuNearBox _value3 = ConstructGpuNearBox(_e74.lo, 0.0, _e74.hi, 0.0);
+            GpuNearBox _value3 = ConstructGpuNearBox(_e94.lo, 0.0, _e94.hi, 0.0);
             near_boxes.Store3(wg.x*32+0, asuint(_value3.lo));
             near_boxes.Store(wg.x*32+12, asuint(_value3.pad0_));
             near_boxes.Store3(wg.x*32+16, asuint(_value3.hi));

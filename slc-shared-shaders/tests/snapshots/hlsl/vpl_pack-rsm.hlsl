@@ -56,6 +56,7 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
+static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
@@ -109,11 +110,31 @@ float intensity_measure(float3 rgb, uint mode)
     return max(rgb.x, max(rgb.y, rgb.z));
 }
 
-float vpl_rt2_(float3 flux, float exposure_1, float error_bound_1, uint mode_1)
+float vpl_rt2_(float3 flux_1, float exposure_1, float error_bound_1, uint mode_1)
 {
-    const float _e6 = intensity_measure((flux * INV_PI), mode_1);
+    const float _e6 = intensity_measure((flux_1 * INV_PI), mode_1);
     const float _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
     return _e7;
+}
+
+bool finite3_(float3 v)
+{
+    bool local_1 = (bool)0;
+    bool local_2 = (bool)0;
+
+    if ((abs(v.x) <= F32_MAX)) {
+        local_1 = (abs(v.y) <= F32_MAX);
+    } else {
+        local_1 = false;
+    }
+    bool _e12 = local_1;
+    if (_e12) {
+        local_2 = (abs(v.z) <= F32_MAX);
+    } else {
+        local_2 = false;
+    }
+    bool _e20 = local_2;
+    return _e20;
 }
 
 uint naga_mod(uint lhs, uint rhs) {
@@ -123,6 +144,53 @@ uint naga_mod(uint lhs, uint rhs) {
 uint interleave_subset(uint x, uint y, uint period)
 {
     return ((naga_mod(y, period) * period) + naga_mod(x, period));
+}
+
+bool vpl_record_ok(float3 position_1, float3 normal_1, float3 flux_2)
+{
+    bool local_3 = (bool)0;
+    bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
+    bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
+
+    const bool _e3 = finite3_(position_1);
+    if (_e3) {
+        const bool _e6 = finite3_(normal_1);
+        local_3 = _e6;
+    } else {
+        local_3 = false;
+    }
+    bool _e8 = local_3;
+    if (_e8) {
+        const bool _e11 = finite3_(flux_2);
+        local_4 = _e11;
+    } else {
+        local_4 = false;
+    }
+    bool _e13 = local_4;
+    if (!(_e13)) {
+        return false;
+    }
+    if ((flux_2.x >= 0.0)) {
+        local_5 = (flux_2.y >= 0.0);
+    } else {
+        local_5 = false;
+    }
+    bool _e25 = local_5;
+    if (_e25) {
+        local_6 = (flux_2.z >= 0.0);
+    } else {
+        local_6 = false;
+    }
+    bool _e32 = local_6;
+    if (_e32) {
+        local_7 = ((max(max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY);
+    } else {
+        local_7 = false;
+    }
+    bool _e45 = local_7;
+    return _e45;
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -153,12 +221,12 @@ WorkgroupBox ConstructWorkgroupBox(float3 arg0, float3 arg1) {
     return ret;
 }
 
-WorkgroupBox workgroup_box(uint li_1, float3 p, bool has)
+WorkgroupBox workgroup_box(uint li_1, float3 p_1, bool has)
 {
     uint stride = 32u;
 
-    wg_lo[min(uint(li_1), 63u)] = (has ? p : (3.4028235e38).xxx);
-    wg_hi[min(uint(li_1), 63u)] = (has ? p : (-3.4028235e38).xxx);
+    wg_lo[min(uint(li_1), 63u)] = (has ? p_1 : (3.4028235e38).xxx);
+    wg_hi[min(uint(li_1), 63u)] = (has ? p_1 : (-3.4028235e38).xxx);
     GroupMemoryBarrierWithGroupSync();
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     bool loop_init = true;
@@ -228,6 +296,9 @@ void main(uint3 gid : SV_DispatchThreadID, uint3 wg : SV_GroupID, uint li : SV_G
     GroupMemoryBarrierWithGroupSync();
     float3 position = (0.0).xxx;
     bool lit_ = false;
+    float3 p = (float3)0;
+    float3 normal = (float3)0;
+    float3 flux = (float3)0;
     bool local = (bool)0;
 
     uint q_2 = gid.x;
@@ -242,51 +313,68 @@ void main(uint3 gid : SV_DispatchThreadID, uint3 wg : SV_GroupID, uint li : SV_G
         uint i = ((_e20 * _e23) + _e16);
         int2 texel = int2(int(_e16), int(_e20));
         float4 _e31 = rsm_position.Load(int3(texel, int(0)));
-        position = _e31.xyz;
-        float4 _e35 = rsm_normal.Load(int3(texel, int(0)));
-        float3 normal = _e35.xyz;
-        float4 _e39 = rsm_flux.Load(int3(texel, int(0)));
-        float _e43 = params.scale;
-        float3 flux_1 = (_e39.xyz * _e43);
-        uint _e47 = params.size;
-        const uint _e49 = interleave_slot(_e16, _e20, _e47, P);
-        float3 _e52 = position;
-        {
-            GpuLight _value3 = ConstructGpuLight(_e52, LIGHT_VPL, normal, 0.0, (0.0).xxx, 0.0, flux_1, 0u);
-            lights.Store3(_e49*64+0, asuint(_value3.p0_));
-            lights.Store(_e49*64+12, asuint(_value3.kind));
-            lights.Store3(_e49*64+16, asuint(_value3.p1_));
-            lights.Store(_e49*64+28, asuint(_value3.a));
-            lights.Store3(_e49*64+32, asuint(_value3.p2_));
-            lights.Store(_e49*64+44, asuint(_value3.b));
-            lights.Store3(_e49*64+48, asuint(_value3.intensity));
-            lights.Store(_e49*64+60, asuint(_value3.ies_base));
+        p = _e31.xyz;
+        float4 _e36 = rsm_normal.Load(int3(texel, int(0)));
+        normal = _e36.xyz;
+        float4 _e41 = rsm_flux.Load(int3(texel, int(0)));
+        flux = _e41.xyz;
+        uint _e46 = params.size;
+        const uint _e48 = interleave_slot(_e16, _e20, _e46, P);
+        float3 _e49 = p;
+        float3 _e50 = normal;
+        float3 _e51 = flux;
+        const bool _e52 = vpl_record_ok(_e49, _e50, _e51);
+        if (!(_e52)) {
+            p = (0.0).xxx;
+            normal = (0.0).xxx;
+            flux = (0.0).xxx;
         }
-        ids.Store(_e49*4, asuint(i));
-        uint _e64 = params.slc;
-        bool slc = (_e64 != 0u);
-        float _e71 = params.exposure;
-        float _e74 = params.error_bound;
-        uint _e77 = params.mode;
-        const float _e78 = vpl_rt2_(flux_1, _e71, _e74, _e77);
-        rt2_.Store(_e49*4, asuint((slc ? _e78 : 0.0)));
-        float _e85 = params.fixed_r2_;
-        r2_.Store(_e49*4, asuint((slc ? 0.0 : _e85)));
-        near_slots.Store(q_2*4, asuint(_e49));
-        lit_ = any((flux_1 != (0.0).xxx));
+        float3 _e60 = p;
+        position = _e60;
+        float3 _e61 = flux;
+        float _e64 = params.scale;
+        flux = (_e61 * _e64);
+        float3 _e68 = position;
+        float3 _e70 = normal;
+        float3 _e73 = flux;
+        {
+            GpuLight _value3 = ConstructGpuLight(_e68, LIGHT_VPL, _e70, 0.0, (0.0).xxx, 0.0, _e73, 0u);
+            lights.Store3(_e48*64+0, asuint(_value3.p0_));
+            lights.Store(_e48*64+12, asuint(_value3.kind));
+            lights.Store3(_e48*64+16, asuint(_value3.p1_));
+            lights.Store(_e48*64+28, asuint(_value3.a));
+            lights.Store3(_e48*64+32, asuint(_value3.p2_));
+            lights.Store(_e48*64+44, asuint(_value3.b));
+            lights.Store3(_e48*64+48, asuint(_value3.intensity));
+            lights.Store(_e48*64+60, asuint(_value3.ies_base));
+        }
+        ids.Store(_e48*4, asuint(i));
+        uint _e82 = params.slc;
+        bool slc = (_e82 != 0u);
+        float3 _e87 = flux;
+        float _e90 = params.exposure;
+        float _e93 = params.error_bound;
+        uint _e96 = params.mode;
+        const float _e97 = vpl_rt2_(_e87, _e90, _e93, _e96);
+        rt2_.Store(_e48*4, asuint((slc ? _e97 : 0.0)));
+        float _e104 = params.fixed_r2_;
+        r2_.Store(_e48*4, asuint((slc ? 0.0 : _e104)));
+        near_slots.Store(q_2*4, asuint(_e48));
+        float3 _e109 = flux;
+        lit_ = any((_e109 != (0.0).xxx));
     }
-    float3 _e94 = position;
-    bool _e95 = lit_;
-    const WorkgroupBox _e96 = workgroup_box(li, _e94, _e95);
+    float3 _e114 = position;
+    bool _e115 = lit_;
+    const WorkgroupBox _e116 = workgroup_box(li, _e114, _e115);
     if ((li == 0u)) {
         local = inside;
     } else {
         local = false;
     }
-    bool _e102 = local;
-    if (_e102) {
+    bool _e122 = local;
+    if (_e122) {
         {
-            GpuNearBox _value3 = ConstructGpuNearBox(_e96.lo, 0.0, _e96.hi, 0.0);
+            GpuNearBox _value3 = ConstructGpuNearBox(_e116.lo, 0.0, _e116.hi, 0.0);
             near_boxes.Store3(wg.x*32+0, asuint(_value3.lo));
             near_boxes.Store(wg.x*32+12, asuint(_value3.pad0_));
             near_boxes.Store3(wg.x*32+16, asuint(_value3.hi));

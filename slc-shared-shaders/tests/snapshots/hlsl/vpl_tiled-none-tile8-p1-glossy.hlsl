@@ -16,7 +16,7 @@ struct VplParams {
     float min_d2_;
     float near_r2_;
     uint near_blocks;
-    uint pad0_;
+    uint subset_shift;
     uint pad1_;
 };
 
@@ -37,7 +37,7 @@ struct ViewParams {
     float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     float3 f0_d;
@@ -80,6 +80,7 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
+static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
@@ -120,7 +121,7 @@ RWByteAddressBuffer specular : register(u9);
 
 float vpl_transfer(float3 n_l, float3 n_x, float3 v, float min_d2_)
 {
-    float m = max(dot(v, v), min_d2_);
+    float m = max(dot(v, v), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m * m));
 }
 
@@ -256,6 +257,15 @@ bool has_specular(float metallic_6, float3 f0_d_5, float f90_d_5)
     return _e23;
 }
 
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint shifted_subset(uint pixel_class, uint shift, uint period)
+{
+    return naga_mod((pixel_class + shift), (period * period));
+}
+
 float vpl_near_weight(float d2_, float near_r2_)
 {
     if ((near_r2_ <= 0.0)) {
@@ -329,10 +339,6 @@ float4 surface_at(int2 texel)
 {
     float4 p_1 = position_tex.Load(int3(texel, int(0)));
     return ((p_1.w > 0.0) ? float4(p_1.xyz, 1.0) : (0.0).xxxx);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % (rhs == 0u ? 1u : rhs);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -480,12 +486,14 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     const WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
     float3 lo = _e61.lo;
     float3 hi = _e61.hi;
-    uint _e66 = params.lights_per_subset;
-    uint base_6 = (sub * _e66);
+    uint _e66 = params.subset_shift;
+    const uint _e68 = shifted_subset(sub, _e66, P);
+    uint _e71 = params.lights_per_subset;
+    uint base_6 = (_e68 * _e71);
     if (valid_1) {
-        float4 _e77 = pos;
-        const Glossy _e79 = glossy_at(pix, _e77.xyz);
-        g = _e79;
+        float4 _e82 = pos;
+        const Glossy _e84 = glossy_at(pix, _e82.xyz);
+        g = _e84;
     }
     if (valid_1) {
         j = base_6;
@@ -495,47 +503,47 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
             if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
             loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
             if (!loop_init_1) {
-                uint _e122 = j;
-                j = (_e122 + 1u);
+                uint _e127 = j;
+                j = (_e127 + 1u);
             }
             loop_init_1 = false;
-            uint _e81 = j;
-            uint _e84 = params.lights_per_subset;
-            if ((_e81 < (base_6 + _e84))) {
+            uint _e86 = j;
+            uint _e89 = params.lights_per_subset;
+            if ((_e86 < (base_6 + _e89))) {
             } else {
                 break;
             }
             {
-                uint _e88 = j;
-                GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(_e88*64+0)), asuint(lights.Load(_e88*64+12)), asfloat(lights.Load3(_e88*64+16)), asfloat(lights.Load(_e88*64+28)), asfloat(lights.Load3(_e88*64+32)), asfloat(lights.Load(_e88*64+44)), asfloat(lights.Load3(_e88*64+48)), asuint(lights.Load(_e88*64+60)));
-                float4 _e91 = pos;
-                float3 v_7 = (_e91.xyz - l_5.p0_);
-                float _e98 = params.near_r2_;
-                const float _e99 = vpl_far_weight(dot(v_7, v_7), _e98);
-                if ((_e99 > 0.0)) {
-                    float3 _e103 = nrm;
-                    float _e106 = params.min_d2_;
-                    const float _e107 = vpl_transfer(l_5.p1_, _e103, v_7, _e106);
-                    float t_3 = (_e107 * _e99);
-                    float3 _e109 = e;
-                    e = (_e109 + (l_5.intensity * t_3));
-                    float3 _e113 = s;
-                    Glossy _e114 = g;
-                    float3 _e115 = nrm;
-                    const float3 _e116 = glossy_term(_e114, l_5, _e115, v_7, t_3);
-                    s = (_e113 + _e116);
-                    uint _e118 = kept;
-                    kept = (_e118 + 1u);
+                uint _e93 = j;
+                GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(_e93*64+0)), asuint(lights.Load(_e93*64+12)), asfloat(lights.Load3(_e93*64+16)), asfloat(lights.Load(_e93*64+28)), asfloat(lights.Load3(_e93*64+32)), asfloat(lights.Load(_e93*64+44)), asfloat(lights.Load3(_e93*64+48)), asuint(lights.Load(_e93*64+60)));
+                float4 _e96 = pos;
+                float3 v_7 = (_e96.xyz - l_5.p0_);
+                float _e103 = params.near_r2_;
+                const float _e104 = vpl_far_weight(dot(v_7, v_7), _e103);
+                if ((_e104 > 0.0)) {
+                    float3 _e108 = nrm;
+                    float _e111 = params.min_d2_;
+                    const float _e112 = vpl_transfer(l_5.p1_, _e108, v_7, _e111);
+                    float t_3 = (_e112 * _e104);
+                    float3 _e114 = e;
+                    e = (_e114 + (l_5.intensity * t_3));
+                    float3 _e118 = s;
+                    Glossy _e119 = g;
+                    float3 _e120 = nrm;
+                    const float3 _e121 = glossy_term(_e119, l_5, _e120, v_7, t_3);
+                    s = (_e118 + _e121);
+                    uint _e123 = kept;
+                    kept = (_e123 + 1u);
                 }
             }
         }
     }
     if (inside) {
-        float3 _e126 = e;
-        uint _e127 = kept;
-        irradiance.Store4(pix*16, asuint(float4(_e126, float(_e127))));
-        float3 _e132 = s;
-        specular.Store4(pix*16, asuint(float4(_e132, 0.0)));
+        float3 _e131 = e;
+        uint _e132 = kept;
+        irradiance.Store4(pix*16, asuint(float4(_e131, float(_e132))));
+        float3 _e137 = s;
+        specular.Store4(pix*16, asuint(float4(_e137, 0.0)));
         return;
     } else {
         return;

@@ -16,7 +16,7 @@ struct VplParams {
     float min_d2_;
     float near_r2_;
     uint near_blocks;
-    uint pad0_;
+    uint subset_shift;
     uint pad1_;
 };
 
@@ -37,7 +37,7 @@ struct ViewParams {
     float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     float3 f0_d;
@@ -80,6 +80,7 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
+static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
@@ -149,7 +150,7 @@ bool sphere_overlaps_aabb(float3 c, float r, float3 bmin, float3 bmax)
 
 float vpl_transfer(float3 n_l, float3 n_x, float3 v, float min_d2_)
 {
-    float m = max(dot(v, v), min_d2_);
+    float m = max(dot(v, v), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m * m));
 }
 
@@ -285,6 +286,15 @@ bool has_specular(float metallic_6, float3 f0_d_5, float f90_d_5)
     return _e23;
 }
 
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint shifted_subset(uint pixel_class, uint shift, uint period)
+{
+    return naga_mod((pixel_class + shift), (period * period));
+}
+
 float vpl_near_weight(float d2_2, float near_r2_)
 {
     if ((near_r2_ <= 0.0)) {
@@ -366,10 +376,6 @@ float4 surface_at(int2 texel)
 {
     float4 p_1 = position_tex.Load(int3(texel, int(0)));
     return ((p_1.w > 0.0) ? float4(p_1.xyz, 1.0) : (0.0).xxxx);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % (rhs == 0u ? 1u : rhs);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -521,12 +527,14 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     const WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
     float3 lo = _e61.lo;
     float3 hi = _e61.hi;
-    uint _e66 = params.lights_per_subset;
-    uint base_6 = (sub * _e66);
+    uint _e66 = params.subset_shift;
+    const uint _e68 = shifted_subset(sub, _e66, P);
+    uint _e71 = params.lights_per_subset;
+    uint base_6 = (_e68 * _e71);
     if (valid_1) {
-        float4 _e77 = pos;
-        const Glossy _e79 = glossy_at(pix, _e77.xyz);
-        g = _e79;
+        float4 _e82 = pos;
+        const Glossy _e84 = glossy_at(pix, _e82.xyz);
+        g = _e84;
     }
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
@@ -534,61 +542,61 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e182 = first;
-            first = (_e182 + MAX_TILE_LIGHTS);
+            uint _e187 = first;
+            first = (_e187 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
-        uint _e82 = first;
-        uint _e85 = params.lights_per_subset;
-        if ((_e82 < _e85)) {
+        uint _e87 = first;
+        uint _e90 = params.lights_per_subset;
+        if ((_e87 < _e90)) {
         } else {
             break;
         }
         {
-            uint _e87 = first;
-            uint _e92 = params.lights_per_subset;
-            uint end = min((_e87 + MAX_TILE_LIGHTS), _e92);
+            uint _e92 = first;
+            uint _e97 = params.lights_per_subset;
+            uint end = min((_e92 + MAX_TILE_LIGHTS), _e97);
             if ((li == 0u)) {
                 { uint dummy = 0; InterlockedExchange(tile_count, 0u, dummy); }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e98 = first;
-            j = (_e98 + li);
+            uint _e103 = first;
+            j = (_e103 + li);
             uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
             bool loop_init_2 = true;
             while(true) {
                 if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
                 loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e124 = j;
-                    j = (_e124 + THREADS);
+                    uint _e129 = j;
+                    j = (_e129 + THREADS);
                 }
                 loop_init_2 = false;
-                uint _e101 = j;
-                if ((_e101 < end)) {
+                uint _e106 = j;
+                if ((_e106 < end)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e104 = j;
-                    float3 _e108 = asfloat(lights.Load3(0+(base_6 + _e104)*64));
-                    uint _e110 = j;
-                    float _e113 = asfloat(r2_3.Load((base_6 + _e110)*4));
-                    const float _e114 = cull_radius(_e113);
-                    const bool _e115 = sphere_overlaps_aabb(_e108, _e114, lo, hi);
-                    if (_e115) {
-                        uint _e118; InterlockedAdd(tile_count, 1u, _e118);
-                        if ((_e118 < MAX_TILE_LIGHTS)) {
-                            uint _e123 = j;
-                            tile_lights[min(uint(_e118), 1023u)] = _e123;
+                    uint _e109 = j;
+                    float3 _e113 = asfloat(lights.Load3(0+(base_6 + _e109)*64));
+                    uint _e115 = j;
+                    float _e118 = asfloat(r2_3.Load((base_6 + _e115)*4));
+                    const float _e119 = cull_radius(_e118);
+                    const bool _e120 = sphere_overlaps_aabb(_e113, _e119, lo, hi);
+                    if (_e120) {
+                        uint _e123; InterlockedAdd(tile_count, 1u, _e123);
+                        if ((_e123 < MAX_TILE_LIGHTS)) {
+                            uint _e128 = j;
+                            tile_lights[min(uint(_e123), 1023u)] = _e128;
                         }
                     }
                 }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e128 = tile_count;
+            uint _e133 = tile_count;
             GroupMemoryBarrierWithGroupSync();
-            uint count = min(_e128, MAX_TILE_LIGHTS);
+            uint count = min(_e133, MAX_TILE_LIGHTS);
             if (valid_1) {
                 k = 0u;
                 uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
@@ -597,40 +605,40 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e180 = k;
-                        k = (_e180 + 1u);
+                        uint _e185 = k;
+                        k = (_e185 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e133 = k;
-                    if ((_e133 < count)) {
+                    uint _e138 = k;
+                    if ((_e138 < count)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e136 = k;
-                        uint _e138 = tile_lights[min(uint(_e136), 1023u)];
-                        uint j_1 = (base_6 + _e138);
+                        uint _e141 = k;
+                        uint _e143 = tile_lights[min(uint(_e141), 1023u)];
+                        uint j_1 = (base_6 + _e143);
                         GpuLight l_5 = ConstructGpuLight(asfloat(lights.Load3(j_1*64+0)), asuint(lights.Load(j_1*64+12)), asfloat(lights.Load3(j_1*64+16)), asfloat(lights.Load(j_1*64+28)), asfloat(lights.Load3(j_1*64+32)), asfloat(lights.Load(j_1*64+44)), asfloat(lights.Load3(j_1*64+48)), asuint(lights.Load(j_1*64+60)));
-                        float4 _e143 = pos;
-                        float3 v_8 = (_e143.xyz - l_5.p0_);
-                        float _e149 = asfloat(rt2_2.Load(j_1*4));
-                        float _e152 = asfloat(r2_3.Load(j_1*4));
-                        float _e156 = params.near_r2_;
-                        const float _e157 = vpl_far_slc_share(_e149, _e152, dot(v_8, v_8), _e156);
-                        if ((_e157 > 0.0)) {
-                            float3 _e161 = nrm;
-                            float _e164 = params.min_d2_;
-                            const float _e165 = vpl_transfer(l_5.p1_, _e161, v_8, _e164);
-                            float t_3 = (_e165 * _e157);
-                            float3 _e167 = e;
-                            e = (_e167 + (l_5.intensity * t_3));
-                            float3 _e171 = s;
-                            Glossy _e172 = g;
-                            float3 _e173 = nrm;
-                            const float3 _e174 = glossy_term(_e172, l_5, _e173, v_8, t_3);
-                            s = (_e171 + _e174);
-                            uint _e176 = kept;
-                            kept = (_e176 + 1u);
+                        float4 _e148 = pos;
+                        float3 v_8 = (_e148.xyz - l_5.p0_);
+                        float _e154 = asfloat(rt2_2.Load(j_1*4));
+                        float _e157 = asfloat(r2_3.Load(j_1*4));
+                        float _e161 = params.near_r2_;
+                        const float _e162 = vpl_far_slc_share(_e154, _e157, dot(v_8, v_8), _e161);
+                        if ((_e162 > 0.0)) {
+                            float3 _e166 = nrm;
+                            float _e169 = params.min_d2_;
+                            const float _e170 = vpl_transfer(l_5.p1_, _e166, v_8, _e169);
+                            float t_3 = (_e170 * _e162);
+                            float3 _e172 = e;
+                            e = (_e172 + (l_5.intensity * t_3));
+                            float3 _e176 = s;
+                            Glossy _e177 = g;
+                            float3 _e178 = nrm;
+                            const float3 _e179 = glossy_term(_e177, l_5, _e178, v_8, t_3);
+                            s = (_e176 + _e179);
+                            uint _e181 = kept;
+                            kept = (_e181 + 1u);
                         }
                     }
                 }
@@ -639,11 +647,11 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         }
     }
     if (inside) {
-        float3 _e187 = e;
-        uint _e188 = kept;
-        irradiance.Store4(pix*16, asuint(float4(_e187, float(_e188))));
-        float3 _e193 = s;
-        specular.Store4(pix*16, asuint(float4(_e193, 0.0)));
+        float3 _e192 = e;
+        uint _e193 = kept;
+        irradiance.Store4(pix*16, asuint(float4(_e192, float(_e193))));
+        float3 _e198 = s;
+        specular.Store4(pix*16, asuint(float4(_e198, 0.0)));
         return;
     } else {
         return;

@@ -16,7 +16,7 @@ struct VplParams {
     float min_d2_;
     float near_r2_;
     uint near_blocks;
-    uint pad0_;
+    uint subset_shift;
     uint pad1_;
 };
 
@@ -28,7 +28,7 @@ struct ViewParams {
     float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     float3 f0_d;
@@ -65,6 +65,7 @@ static const float SPHERE_HUGE = 3.4028235e38;
 static const float SPHERE_PAD_ABS = 1e-18;
 static const float INV_PI = 0.31830987;
 static const float MIN_D2_ = 1e-12;
+static const float MAX_INTENSITY = 7.2057594e16;
 static const uint BSH_NONE = 4294967295u;
 static const uint RESERVOIR_FULL = 4294967295u;
 static const float GGX_ALPHA_MIN = 0.001;
@@ -132,8 +133,17 @@ bool sphere_overlaps_aabb(float3 c, float r, float3 bmin, float3 bmax)
 
 float vpl_transfer(float3 n_l, float3 n_x, float3 v, float min_d2_)
 {
-    float m = max(dot(v, v), min_d2_);
+    float m = max(dot(v, v), max(min_d2_, MIN_D2_));
     return (((max(dot(n_l, v), 0.0) * max(-(dot(n_x, v)), 0.0)) * INV_PI) / (m * m));
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint shifted_subset(uint pixel_class, uint shift, uint period)
+{
+    return naga_mod((pixel_class + shift), (period * period));
 }
 
 float vpl_near_weight(float d2_2, float near_r2_)
@@ -217,10 +227,6 @@ float4 surface_at(int2 texel)
 {
     float4 p_1 = position_tex.Load(int3(texel, int(0)));
     return ((p_1.w > 0.0) ? float4(p_1.xyz, 1.0) : (0.0).xxxx);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % (rhs == 0u ? 1u : rhs);
 }
 
 GbTexel ConstructGbTexel(float4 arg0, float4 arg1) {
@@ -317,69 +323,71 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
     const WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1);
     float3 lo = _e61.lo;
     float3 hi = _e61.hi;
-    uint _e66 = params.lights_per_subset;
-    uint base = (sub * _e66);
+    uint _e66 = params.subset_shift;
+    const uint _e68 = shifted_subset(sub, _e66, P);
+    uint _e71 = params.lights_per_subset;
+    uint base = (_e68 * _e71);
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e170 = first;
-            first = (_e170 + MAX_TILE_LIGHTS);
+            uint _e175 = first;
+            first = (_e175 + MAX_TILE_LIGHTS);
         }
         loop_init_1 = false;
-        uint _e75 = first;
-        uint _e78 = params.lights_per_subset;
-        if ((_e75 < _e78)) {
+        uint _e80 = first;
+        uint _e83 = params.lights_per_subset;
+        if ((_e80 < _e83)) {
         } else {
             break;
         }
         {
-            uint _e80 = first;
-            uint _e85 = params.lights_per_subset;
-            uint end = min((_e80 + MAX_TILE_LIGHTS), _e85);
+            uint _e85 = first;
+            uint _e90 = params.lights_per_subset;
+            uint end = min((_e85 + MAX_TILE_LIGHTS), _e90);
             if ((li == 0u)) {
                 { uint dummy = 0; InterlockedExchange(tile_count, 0u, dummy); }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e91 = first;
-            j = (_e91 + li);
+            uint _e96 = first;
+            j = (_e96 + li);
             uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
             bool loop_init_2 = true;
             while(true) {
                 if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
                 loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e117 = j;
-                    j = (_e117 + THREADS);
+                    uint _e122 = j;
+                    j = (_e122 + THREADS);
                 }
                 loop_init_2 = false;
-                uint _e94 = j;
-                if ((_e94 < end)) {
+                uint _e99 = j;
+                if ((_e99 < end)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e97 = j;
-                    float3 _e101 = asfloat(lights.Load3(0+(base + _e97)*64));
-                    uint _e103 = j;
-                    float _e106 = asfloat(r2_3.Load((base + _e103)*4));
-                    const float _e107 = cull_radius(_e106);
-                    const bool _e108 = sphere_overlaps_aabb(_e101, _e107, lo, hi);
-                    if (_e108) {
-                        uint _e111; InterlockedAdd(tile_count, 1u, _e111);
-                        if ((_e111 < MAX_TILE_LIGHTS)) {
-                            uint _e116 = j;
-                            tile_lights[min(uint(_e111), 1023u)] = _e116;
+                    uint _e102 = j;
+                    float3 _e106 = asfloat(lights.Load3(0+(base + _e102)*64));
+                    uint _e108 = j;
+                    float _e111 = asfloat(r2_3.Load((base + _e108)*4));
+                    const float _e112 = cull_radius(_e111);
+                    const bool _e113 = sphere_overlaps_aabb(_e106, _e112, lo, hi);
+                    if (_e113) {
+                        uint _e116; InterlockedAdd(tile_count, 1u, _e116);
+                        if ((_e116 < MAX_TILE_LIGHTS)) {
+                            uint _e121 = j;
+                            tile_lights[min(uint(_e116), 1023u)] = _e121;
                         }
                     }
                 }
             }
             GroupMemoryBarrierWithGroupSync();
-            uint _e121 = tile_count;
+            uint _e126 = tile_count;
             GroupMemoryBarrierWithGroupSync();
-            uint count = min(_e121, MAX_TILE_LIGHTS);
+            uint count = min(_e126, MAX_TILE_LIGHTS);
             if (valid_1) {
                 k = 0u;
                 uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
@@ -388,35 +396,35 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
                     if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e168 = k;
-                        k = (_e168 + 1u);
+                        uint _e173 = k;
+                        k = (_e173 + 1u);
                     }
                     loop_init_3 = false;
-                    uint _e126 = k;
-                    if ((_e126 < count)) {
+                    uint _e131 = k;
+                    if ((_e131 < count)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e129 = k;
-                        uint _e131 = tile_lights[min(uint(_e129), 1023u)];
-                        uint j_1 = (base + _e131);
+                        uint _e134 = k;
+                        uint _e136 = tile_lights[min(uint(_e134), 1023u)];
+                        uint j_1 = (base + _e136);
                         GpuLight l = ConstructGpuLight(asfloat(lights.Load3(j_1*64+0)), asuint(lights.Load(j_1*64+12)), asfloat(lights.Load3(j_1*64+16)), asfloat(lights.Load(j_1*64+28)), asfloat(lights.Load3(j_1*64+32)), asfloat(lights.Load(j_1*64+44)), asfloat(lights.Load3(j_1*64+48)), asuint(lights.Load(j_1*64+60)));
-                        float4 _e136 = pos;
-                        float3 v_3 = (_e136.xyz - l.p0_);
-                        float _e142 = asfloat(rt2_2.Load(j_1*4));
-                        float _e145 = asfloat(r2_3.Load(j_1*4));
-                        float _e149 = params.near_r2_;
-                        const float _e150 = vpl_far_slc_share(_e142, _e145, dot(v_3, v_3), _e149);
-                        if ((_e150 > 0.0)) {
-                            float3 _e154 = nrm;
-                            float _e157 = params.min_d2_;
-                            const float _e158 = vpl_transfer(l.p1_, _e154, v_3, _e157);
-                            float t_1 = (_e158 * _e150);
-                            float3 _e160 = e;
-                            e = (_e160 + (l.intensity * t_1));
-                            uint _e164 = kept;
-                            kept = (_e164 + 1u);
+                        float4 _e141 = pos;
+                        float3 v_3 = (_e141.xyz - l.p0_);
+                        float _e147 = asfloat(rt2_2.Load(j_1*4));
+                        float _e150 = asfloat(r2_3.Load(j_1*4));
+                        float _e154 = params.near_r2_;
+                        const float _e155 = vpl_far_slc_share(_e147, _e150, dot(v_3, v_3), _e154);
+                        if ((_e155 > 0.0)) {
+                            float3 _e159 = nrm;
+                            float _e162 = params.min_d2_;
+                            const float _e163 = vpl_transfer(l.p1_, _e159, v_3, _e162);
+                            float t_1 = (_e163 * _e155);
+                            float3 _e165 = e;
+                            e = (_e165 + (l.intensity * t_1));
+                            uint _e169 = kept;
+                            kept = (_e169 + 1u);
                         }
                     }
                 }
@@ -425,9 +433,9 @@ void main(uint3 wg : SV_GroupID, uint3 lid : SV_GroupThreadID, uint li : SV_Grou
         }
     }
     if (inside) {
-        float3 _e175 = e;
-        uint _e176 = kept;
-        irradiance.Store4(pix*16, asuint(float4(_e175, float(_e176))));
+        float3 _e180 = e;
+        uint _e181 = kept;
+        irradiance.Store4(pix*16, asuint(float4(_e180, float(_e181))));
         return;
     } else {
         return;

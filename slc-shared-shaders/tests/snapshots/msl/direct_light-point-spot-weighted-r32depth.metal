@@ -40,7 +40,7 @@ struct ViewParams {
     metal::packed_float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     metal::packed_float3 f0_d;
@@ -110,6 +110,7 @@ constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
+constant float MAX_INTENSITY = 72057594000000000.0;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
@@ -216,8 +217,8 @@ bool sphere_contains_point(
     float r_1,
     metal::float3 x_1
 ) {
-    metal::float3 v_2 = x_1 - c;
-    return metal::dot(v_2, v_2) <= (r_1 * r_1);
+    metal::float3 v_3 = x_1 - c;
+    return metal::dot(v_3, v_3) <= (r_1 * r_1);
 }
 
 float inverse_square(
@@ -246,8 +247,8 @@ float connection_cosine(
 ) {
     bool local_2 = {};
     bool local_3 = {};
-    metal::float3 v_3 = x_2 - y;
-    float d2_7 = metal::dot(v_3, v_3);
+    metal::float3 v_4 = x_2 - y;
+    float d2_7 = metal::dot(v_4, v_4);
     bool _e7 = slc_keep(r2_1, d2_7);
     if (!(!(_e7))) {
         local_2 = !((d2_7 > 0.0));
@@ -258,7 +259,7 @@ float connection_cosine(
     if (_e16) {
         return 0.0;
     }
-    metal::float3 w_5 = v_3 / metal::float3(metal::sqrt(d2_7));
+    metal::float3 w_5 = v_4 / metal::float3(metal::sqrt(d2_7));
     float cos_x_1 = -(metal::dot(n, w_5));
     if (!((cos_x_1 <= 0.0))) {
         local_3 = metal::dot(ng, w_5) >= 0.0;
@@ -426,11 +427,11 @@ metal::float4 emitter_cone(
     float cos_o,
     metal::float3 p
 ) {
-    metal::float3 v_4 = p - center;
-    float dist2_1 = metal::dot(v_4, v_4);
+    metal::float3 v_5 = p - center;
+    float dist2_1 = metal::dot(v_5, v_5);
     float r2_4 = radius * radius;
     float d2_8 = metal::max(metal::max(dist2_1, r2_4), MIN_D2_);
-    metal::float3 wi = (dist2_1 > 0.0) ? (v_4 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
+    metal::float3 wi = (dist2_1 > 0.0) ? (v_5 / metal::float3(metal::sqrt(dist2_1))) : metal::float3(0.0, 0.0, 0.0);
     float cos_w = metal::dot(axis, wi);
     float _e25 = safe_sqrt(1.0 - (cos_w * cos_w));
     float _e26 = subtended_cos(dist2_1, r2_4);
@@ -493,8 +494,8 @@ float cone_cos_toward(
     metal::float3 p_2,
     metal::float3 d_1
 ) {
-    metal::float3 v_5 = center_2 - p_2;
-    float _e6 = cone_cos_of(v_5, metal::dot(v_5, v_5), radius_2, d_1);
+    metal::float3 v_6 = center_2 - p_2;
+    float _e6 = cone_cos_of(v_6, metal::dot(v_6, v_6), radius_2, d_1);
     return _e6;
 }
 
@@ -538,9 +539,9 @@ float light_importance(
     }
     imp = (phi_1 * _e8.x) / _e8.y;
     if (metal::dot(n_1, n_1) > 0.0) {
-        metal::float3 v_6 = center_4 - p_4;
-        float dist2_2 = metal::dot(v_6, v_6);
-        float cos_i = metal::dot((dist2_2 > 0.0) ? (v_6 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0), n_1);
+        metal::float3 v_7 = center_4 - p_4;
+        float dist2_2 = metal::dot(v_7, v_7);
+        float cos_i = metal::dot((dist2_2 > 0.0) ? (v_7 / metal::float3(metal::sqrt(dist2_2))) : metal::float3(0.0, 0.0, 0.0), n_1);
         float _e33 = imp;
         float _e37 = safe_sqrt(1.0 - (cos_i * cos_i));
         float _e40 = cos_sub_clamped(_e37, cos_i, _e8.w, _e8.z);
@@ -604,15 +605,35 @@ float cone_weight(
     metal::float3 r_4,
     metal::float4 lobe_6
 ) {
-    metal::float3 v_7 = p_6 - center_6;
+    metal::float3 v_8 = p_6 - center_6;
     if (lobe_6.y <= 0.0) {
         float _e15 = light_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3);
-        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_7, v_7));
+        float _e19 = candidate_weight(_e15 * INV_PI, rt2_3, metal::dot(v_8, v_8));
         return _e19;
     }
     float _e20 = glossy_importance(center_6, radius_6, phi_3, axis_4, cos_o_4, cos_e_3, p_6, n_3, r_4, lobe_6);
-    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_7, v_7));
+    float _e22 = candidate_weight(_e20, rt2_3, metal::dot(v_8, v_8));
     return _e22;
+}
+
+bool finite3_(
+    metal::float3 v_1
+) {
+    bool local_7 = {};
+    bool local_8 = {};
+    if (metal::abs(v_1.x) <= F32_MAX) {
+        local_7 = metal::abs(v_1.y) <= F32_MAX;
+    } else {
+        local_7 = false;
+    }
+    bool _e12 = local_7;
+    if (_e12) {
+        local_8 = metal::abs(v_1.z) <= F32_MAX;
+    } else {
+        local_8 = false;
+    }
+    bool _e20 = local_8;
+    return _e20;
 }
 
 metal::float3 light_intensity(
@@ -680,12 +701,12 @@ uint bsh_first(
 
 float bsh_inner_scale(
     float a_4,
-    metal::float3 v_1,
+    metal::float3 v_2,
     float d2_6,
     metal::float3 r_5,
     metal::float4 rl_2
 ) {
-    float _e5 = cone_cos_of(v_1, d2_6, a_4, r_5);
+    float _e5 = cone_cos_of(v_2, d2_6, a_4, r_5);
     float _e8 = range_scale_at(rl_2, _e5 + 0.000002);
     return _e8;
 }
@@ -696,25 +717,25 @@ bool bsh_reaches(
     metal::float3 r_6,
     metal::float4 rl_3
 ) {
-    bool local_7 = {};
-    bool local_8 = {};
+    bool local_9 = {};
+    bool local_10 = {};
     bool _e6 = sphere_contains_point(node_2.center, node_2.radius, x_4);
     if (_e6) {
         return true;
     }
     if (!((rl_3.w <= 1.0))) {
         bool _e20 = sphere_contains_point(node_2.center, node_2.radius * (rl_3.w * 1.0001), x_4);
-        local_7 = !(_e20);
+        local_9 = !(_e20);
     } else {
-        local_7 = true;
+        local_9 = true;
     }
-    bool _e23 = local_7;
+    bool _e23 = local_9;
     if (_e23) {
         return false;
     }
     float _e25 = bsh_range_bound(node_2);
-    metal::float3 v_8 = x_4 - node_2.center;
-    float d2_9 = metal::dot(v_8, v_8);
+    metal::float3 v_9 = x_4 - node_2.center;
+    float d2_9 = metal::dot(v_9, v_9);
     float reach_max = node_2.extent + ((rl_3.w * 1.001) * _e25);
     if (d2_9 > (reach_max * reach_max)) {
         return false;
@@ -725,15 +746,15 @@ bool bsh_reaches(
         bool _e47 = sphere_contains_point(node_2.center, _e46, x_4);
         return _e47;
     }
-    float _e50 = bsh_inner_scale(node_2.extent, -(v_8), d2_9, r_6, rl_3);
+    float _e50 = bsh_inner_scale(node_2.extent, -(v_9), d2_9, r_6, rl_3);
     float s_c = _e50 * 1.001;
     float reach = node_2.extent + (metal::sqrt(s_c) * _e25);
     if (d2_9 <= ((node_2.radius * node_2.radius) * s_c)) {
-        local_8 = d2_9 <= (reach * reach);
+        local_10 = d2_9 <= (reach * reach);
     } else {
-        local_8 = false;
+        local_10 = false;
     }
-    bool _e67 = local_8;
+    bool _e67 = local_10;
     return _e67;
 }
 
@@ -791,7 +812,7 @@ Connection connect(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Connection c_1 = {};
-    bool local_9 = {};
+    bool local_11 = {};
     c_1.e = metal::float3(0.0);
     GpuLight l_2 = lights[li];
     metal::float3 _e17 = light_point(l_2, u1_1, u2_1);
@@ -804,19 +825,19 @@ Connection connect(
     if (!((_e27 <= 0.0))) {
         metal::float3 _e36 = c_1.y;
         bool _e37 = occluded(x_6 + (ng_1 * eps), _e36);
-        local_9 = _e37;
+        local_11 = _e37;
     } else {
-        local_9 = true;
+        local_11 = true;
     }
-    bool _e39 = local_9;
+    bool _e39 = local_11;
     if (_e39) {
         Connection _e40 = c_1;
         return _e40;
     }
     metal::float3 _e42 = c_1.y;
-    metal::float3 v_9 = x_6 - _e42;
-    float d2_10 = metal::dot(v_9, v_9);
-    metal::float3 _e49 = light_intensity(l_2, v_9 / metal::float3(metal::sqrt(d2_10)));
+    metal::float3 v_10 = x_6 - _e42;
+    float d2_10 = metal::dot(v_10, v_10);
+    metal::float3 _e49 = light_intensity(l_2, v_10 / metal::float3(metal::sqrt(d2_10)));
     float _e51 = c_1.cos_x;
     float _e54 = rt2_4[li];
     float _e56 = connection_factor(_e51, d2_10, s * _e54, w_res);
@@ -954,17 +975,32 @@ metal::float4 unproject_pixel(
     float py,
     float width,
     float height,
-    float depth,
-    float background
+    float depth
 ) {
-    if (depth == background) {
+    bool local_12 = {};
+    bool local_13 = {};
+    if (depth > 0.0) {
+        local_12 = depth < 1.0;
+    } else {
+        local_12 = false;
+    }
+    bool _e16 = local_12;
+    if (!(_e16)) {
         return metal::float4(0.0, 0.0, 0.0, 0.0);
     }
     float x_11 = (((px + 0.5) / width) * 2.0) - 1.0;
     float y_1 = 1.0 - (((py + 0.5) / height) * 2.0);
     metal::float4 p_7 = (((c0_ * x_11) + (c1_ * y_1)) + (c2_ * depth)) + c3_;
+    metal::float3 q = metal::float3(p_7.x / p_7.w, p_7.y / p_7.w, p_7.z / p_7.w);
     if (metal::abs(p_7.w) > 0.0) {
-        return metal::float4(p_7.x / p_7.w, p_7.y / p_7.w, p_7.z / p_7.w, 1.0);
+        bool _e59 = finite3_(q);
+        local_13 = _e59;
+    } else {
+        local_13 = false;
+    }
+    bool _e61 = local_13;
+    if (_e61) {
+        return metal::float4(q.x, q.y, q.z, 1.0);
     }
     return metal::float4(0.0, 0.0, 0.0, 0.0);
 }
@@ -982,9 +1018,8 @@ metal::float4 surface_at(
     metal::float4 _e16 = view.c3_;
     uint _e23 = view.width;
     uint _e27 = view.height;
-    float _e31 = view.background;
-    metal::float4 _e32 = unproject_pixel(_e7, _e10, _e13, _e16, static_cast<float>(texel.x), static_cast<float>(texel.y), static_cast<float>(_e23), static_cast<float>(_e27), d_2, _e31);
-    return _e32;
+    metal::float4 _e29 = unproject_pixel(_e7, _e10, _e13, _e16, static_cast<float>(texel.x), static_cast<float>(texel.y), static_cast<float>(_e23), static_cast<float>(_e27), d_2);
+    return _e29;
 }
 
 Shaded shade_pick(

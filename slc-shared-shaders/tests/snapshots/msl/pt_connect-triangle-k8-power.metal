@@ -135,6 +135,7 @@ constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
+constant float MAX_INTENSITY = 72057594000000000.0;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
@@ -878,6 +879,26 @@ float range_scale_toward(
     return _e10;
 }
 
+bool finite3_(
+    metal::float3 v_6
+) {
+    bool local_13 = {};
+    bool local_14 = {};
+    if (metal::abs(v_6.x) <= F32_MAX) {
+        local_13 = metal::abs(v_6.y) <= F32_MAX;
+    } else {
+        local_13 = false;
+    }
+    bool _e12 = local_13;
+    if (_e12) {
+        local_14 = metal::abs(v_6.z) <= F32_MAX;
+    } else {
+        local_14 = false;
+    }
+    bool _e20 = local_14;
+    return _e20;
+}
+
 float shadow_margin(
     float len
 ) {
@@ -923,15 +944,15 @@ metal::float3 triangle_normal(
     metal::float3 b_4,
     metal::float3 c_3
 ) {
-    bool local_13 = {};
+    bool local_15 = {};
     metal::float3 n_17 = metal::cross(b_4 - a_5, c_3 - a_5);
     float l2_ = metal::dot(n_17, n_17);
     if (!(!((l2_ > 0.0)))) {
-        local_13 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_15 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_13 = true;
+        local_15 = true;
     }
-    bool _e17 = local_13;
+    bool _e17 = local_15;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -947,9 +968,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
-    bool local_14 = {};
-    bool local_15 = {};
     bool local_16 = {};
+    bool local_17 = {};
+    bool local_18 = {};
     metal::float3 e1_ = b_5 - a_6;
     metal::float3 e2_ = c_4 - a_6;
     metal::float3 p_2 = metal::cross(d_3, e2_);
@@ -961,56 +982,36 @@ float ray_triangle(
     metal::float3 s_6 = o_1 - a_6;
     float u_2 = metal::dot(s_6, p_2) * inv_1;
     if (!((u_2 < 0.0))) {
-        local_14 = u_2 > 1.0;
+        local_16 = u_2 > 1.0;
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    bool _e28 = local_14;
+    bool _e28 = local_16;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q = metal::cross(s_6, e1_);
     float v_11 = metal::dot(d_3, q) * inv_1;
     if (!((v_11 < 0.0))) {
-        local_15 = (u_2 + v_11) > 1.0;
+        local_17 = (u_2 + v_11) > 1.0;
     } else {
-        local_15 = true;
+        local_17 = true;
     }
-    bool _e42 = local_15;
+    bool _e42 = local_17;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_, q) * inv_1;
     if (t_3 > t_min) {
-        local_16 = t_3 < t_max_1;
+        local_18 = t_3 < t_max_1;
     } else {
-        local_16 = false;
+        local_18 = false;
     }
-    bool _e51 = local_16;
+    bool _e51 = local_18;
     if (_e51) {
         return t_3;
     }
     return -1.0;
-}
-
-bool finite3_(
-    metal::float3 v_6
-) {
-    bool local_17 = {};
-    bool local_18 = {};
-    if (metal::abs(v_6.x) <= F32_MAX) {
-        local_17 = metal::abs(v_6.y) <= F32_MAX;
-    } else {
-        local_17 = false;
-    }
-    bool _e12 = local_17;
-    if (_e12) {
-        local_18 = metal::abs(v_6.z) <= F32_MAX;
-    } else {
-        local_18 = false;
-    }
-    bool _e20 = local_18;
-    return _e20;
 }
 
 metal::float3 light_intensity(

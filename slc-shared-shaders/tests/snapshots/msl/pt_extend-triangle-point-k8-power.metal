@@ -149,6 +149,7 @@ constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
+constant float MAX_INTENSITY = 72057594000000000.0;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
@@ -811,6 +812,26 @@ float range_scale_toward(
     return _e10;
 }
 
+bool finite3_(
+    metal::float3 v_8
+) {
+    bool local_14 = {};
+    bool local_15 = {};
+    if (metal::abs(v_8.x) <= F32_MAX) {
+        local_14 = metal::abs(v_8.y) <= F32_MAX;
+    } else {
+        local_14 = false;
+    }
+    bool _e12 = local_14;
+    if (_e12) {
+        local_15 = metal::abs(v_8.z) <= F32_MAX;
+    } else {
+        local_15 = false;
+    }
+    bool _e20 = local_15;
+    return _e20;
+}
+
 float ray_inverse(
     float x_2
 ) {
@@ -850,15 +871,15 @@ metal::float3 triangle_normal(
     metal::float3 b_2,
     metal::float3 c_2
 ) {
-    bool local_14 = {};
+    bool local_16 = {};
     metal::float3 n_15 = metal::cross(b_2 - a_3, c_2 - a_3);
     float l2_ = metal::dot(n_15, n_15);
     if (!(!((l2_ > 0.0)))) {
-        local_14 = !((l2_ < 300000000000000000000000000000000000000.0));
+        local_16 = !((l2_ < 300000000000000000000000000000000000000.0));
     } else {
-        local_14 = true;
+        local_16 = true;
     }
-    bool _e17 = local_14;
+    bool _e17 = local_16;
     if (_e17) {
         return metal::float3(0.0, 0.0, 0.0);
     }
@@ -900,15 +921,15 @@ metal::float3 shading_normal(
     metal::float3 w_2,
     metal::float3 facing
 ) {
-    bool local_15 = {};
+    bool local_17 = {};
     metal::float3 s_4 = ((n0_ * w_2.x) + (n1_ * w_2.y)) + (n2_ * w_2.z);
     float l2_1 = metal::dot(s_4, s_4);
     if (!(!((l2_1 > 0.000000000001)))) {
-        local_15 = !((l2_1 < 300000000000000000000000000000000000000.0));
+        local_17 = !((l2_1 < 300000000000000000000000000000000000000.0));
     } else {
-        local_15 = true;
+        local_17 = true;
     }
-    bool _e24 = local_15;
+    bool _e24 = local_17;
     if (_e24) {
         return facing;
     }
@@ -925,9 +946,9 @@ float ray_triangle(
     float t_min,
     float t_max_1
 ) {
-    bool local_16 = {};
-    bool local_17 = {};
     bool local_18 = {};
+    bool local_19 = {};
+    bool local_20 = {};
     metal::float3 e1_1 = b_4 - a_5;
     metal::float3 e2_1 = c_4 - a_5;
     metal::float3 p_3 = metal::cross(d_4, e2_1);
@@ -939,32 +960,32 @@ float ray_triangle(
     metal::float3 s_5 = o_1 - a_5;
     float u_3 = metal::dot(s_5, p_3) * inv_1;
     if (!((u_3 < 0.0))) {
-        local_16 = u_3 > 1.0;
+        local_18 = u_3 > 1.0;
     } else {
-        local_16 = true;
+        local_18 = true;
     }
-    bool _e28 = local_16;
+    bool _e28 = local_18;
     if (_e28) {
         return -1.0;
     }
     metal::float3 q_1 = metal::cross(s_5, e1_1);
     float v_12 = metal::dot(d_4, q_1) * inv_1;
     if (!((v_12 < 0.0))) {
-        local_17 = (u_3 + v_12) > 1.0;
+        local_19 = (u_3 + v_12) > 1.0;
     } else {
-        local_17 = true;
+        local_19 = true;
     }
-    bool _e42 = local_17;
+    bool _e42 = local_19;
     if (_e42) {
         return -1.0;
     }
     float t_3 = metal::dot(e2_1, q_1) * inv_1;
     if (t_3 > t_min) {
-        local_18 = t_3 < t_max_1;
+        local_20 = t_3 < t_max_1;
     } else {
-        local_18 = false;
+        local_20 = false;
     }
-    bool _e51 = local_18;
+    bool _e51 = local_20;
     if (_e51) {
         return t_3;
     }
@@ -1011,34 +1032,14 @@ bool continues_path(
     metal::float3 n_12,
     metal::float3 ng
 ) {
-    bool local_19 = {};
-    if (metal::dot(nd, n_12) > 0.0) {
-        local_19 = metal::dot(nd, ng) > 0.0;
-    } else {
-        local_19 = false;
-    }
-    bool _e12 = local_19;
-    return _e12;
-}
-
-bool finite3_(
-    metal::float3 v_8
-) {
-    bool local_20 = {};
     bool local_21 = {};
-    if (metal::abs(v_8.x) <= F32_MAX) {
-        local_20 = metal::abs(v_8.y) <= F32_MAX;
-    } else {
-        local_20 = false;
-    }
-    bool _e12 = local_20;
-    if (_e12) {
-        local_21 = metal::abs(v_8.z) <= F32_MAX;
+    if (metal::dot(nd, n_12) > 0.0) {
+        local_21 = metal::dot(nd, ng) > 0.0;
     } else {
         local_21 = false;
     }
-    bool _e20 = local_21;
-    return _e20;
+    bool _e12 = local_21;
+    return _e12;
 }
 
 float path_survival(

@@ -24,7 +24,7 @@ struct ViewParams {
     metal::packed_float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     metal::packed_float3 f0_d;
@@ -52,6 +52,7 @@ constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
+constant float MAX_INTENSITY = 72057594000000000.0;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
@@ -252,8 +253,8 @@ metal::float4 temporal_color(
     float _e10 = luminance(hc);
     float _e12 = persistent_change(_e9, last_1, _e10, noise_2, h.w);
     float _e14 = next_history_length(h.w, _e12, max_history_1);
-    float _e16 = temporal_alpha(_e14);
-    metal::float3 v_1 = hc + ((c_1 - hc) * _e16);
+    float _e15 = temporal_alpha(_e14);
+    metal::float3 v_1 = (hc * (1.0 - _e15)) + (c_1 * _e15);
     return metal::float4(v_1.x, v_1.y, v_1.z, _e14);
 }
 

@@ -24,7 +24,7 @@ struct ViewParams {
     metal::packed_float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     metal::packed_float3 f0_d;
@@ -52,6 +52,7 @@ constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
+constant float MAX_INTENSITY = 72057594000000000.0;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
@@ -78,6 +79,26 @@ float to_f32_(
     uint u
 ) {
     return static_cast<float>(u);
+}
+
+bool finite3_(
+    metal::float3 v_1
+) {
+    bool local_1 = {};
+    bool local_2 = {};
+    if (metal::abs(v_1.x) <= F32_MAX) {
+        local_1 = metal::abs(v_1.y) <= F32_MAX;
+    } else {
+        local_1 = false;
+    }
+    bool _e12 = local_1;
+    if (_e12) {
+        local_2 = metal::abs(v_1.z) <= F32_MAX;
+    } else {
+        local_2 = false;
+    }
+    bool _e20 = local_2;
+    return _e20;
 }
 
 float luminance(
@@ -129,10 +150,10 @@ metal::float4 history_tap(
     float width_1,
     float height_1
 ) {
-    bool local_1 = {};
-    bool local_2 = {};
     bool local_3 = {};
     bool local_4 = {};
+    bool local_5 = {};
+    bool local_6 = {};
     float x0_ = metal::floor(q.x);
     float y0_ = metal::floor(q.y);
     uint dx_1 = naga_mod(k_1, 2u);
@@ -142,29 +163,29 @@ metal::float4 history_tap(
     float _e14 = to_f32_(dy_1);
     float ty = y0_ + _e14;
     if (q.z > 0.0) {
-        local_1 = tx >= 0.0;
-    } else {
-        local_1 = false;
-    }
-    bool _e24 = local_1;
-    if (_e24) {
-        local_2 = ty >= 0.0;
-    } else {
-        local_2 = false;
-    }
-    bool _e30 = local_2;
-    if (_e30) {
-        local_3 = tx < width_1;
+        local_3 = tx >= 0.0;
     } else {
         local_3 = false;
     }
-    bool _e35 = local_3;
-    if (_e35) {
-        local_4 = ty < height_1;
+    bool _e24 = local_3;
+    if (_e24) {
+        local_4 = ty >= 0.0;
     } else {
         local_4 = false;
     }
-    bool inside = local_4;
+    bool _e30 = local_4;
+    if (_e30) {
+        local_5 = tx < width_1;
+    } else {
+        local_5 = false;
+    }
+    bool _e35 = local_5;
+    if (_e35) {
+        local_6 = ty < height_1;
+    } else {
+        local_6 = false;
+    }
+    bool inside = local_6;
     float _e45 = bilinear_weight(q.x - x0_, q.y - y0_, dx_1, dy_1);
     return metal::float4(tx, ty, _e45, inside ? 1.0 : 0.0);
 }
@@ -186,13 +207,13 @@ bool history_matches(
     float oh,
     float d
 ) {
-    bool local_5 = {};
+    bool local_7 = {};
     if (metal::abs(metal::dot(nh, p_1) - oh) <= (TEMPORAL_DEPTH_TOLERANCE * d)) {
-        local_5 = metal::dot(n, nh) >= TEMPORAL_NORMAL_COS;
+        local_7 = metal::dot(n, nh) >= TEMPORAL_NORMAL_COS;
     } else {
-        local_5 = false;
+        local_7 = false;
     }
-    bool _e17 = local_5;
+    bool _e17 = local_7;
     return _e17;
 }
 
@@ -233,14 +254,14 @@ float history_tap_weight(
     float d_1,
     float len
 ) {
-    bool local_6 = {};
+    bool local_8 = {};
     if (len > 0.0) {
         bool _e11 = history_matches(n_4, nh_1, p_2, oh_1, d_1);
-        local_6 = _e11;
+        local_8 = _e11;
     } else {
-        local_6 = false;
+        local_8 = false;
     }
-    bool _e13 = local_6;
+    bool _e13 = local_8;
     return _e13 ? w : 0.0;
 }
 
@@ -271,9 +292,9 @@ metal::float4 temporal_color(
     float _e10 = luminance(hc);
     float _e12 = persistent_change(_e9, last_1, _e10, noise_2, h.w);
     float _e14 = next_history_length(h.w, _e12, max_history_1);
-    float _e16 = temporal_alpha(_e14);
-    metal::float3 v_1 = hc + ((c_1 - hc) * _e16);
-    return metal::float4(v_1.x, v_1.y, v_1.z, _e14);
+    float _e15 = temporal_alpha(_e14);
+    metal::float3 v_2 = (hc * (1.0 - _e15)) + (c_1 * _e15);
+    return metal::float4(v_2.x, v_2.y, v_2.z, _e14);
 }
 
 metal::float4 temporal_moments(
@@ -284,7 +305,7 @@ metal::float4 temporal_moments(
     float len_1,
     float depth
 ) {
-    bool local_7 = {};
+    bool local_9 = {};
     float _e6 = luminance(c_2);
     if (prev_len <= 0.0) {
         return metal::float4(_e6, 0.0, depth, 0.0);
@@ -293,11 +314,11 @@ metal::float4 temporal_moments(
     float d2_ = (0.5 * d_2) * d_2;
     float cap = 16.0 * noise_3;
     if (prev_len >= TEMPORAL_MIN_MOMENTS) {
-        local_7 = noise_3 > 0.0;
+        local_9 = noise_3 > 0.0;
     } else {
-        local_7 = false;
+        local_9 = false;
     }
-    bool _e26 = local_7;
+    bool _e26 = local_9;
     float sample = _e26 ? metal::min(d2_, cap) : d2_;
     float _e31 = temporal_alpha(len_1 - 1.0);
     return metal::float4(_e6, noise_3 + ((sample - noise_3) * _e31), depth, 0.0);
@@ -312,17 +333,32 @@ metal::float4 unproject_pixel(
     float py,
     float width_2,
     float height_2,
-    float depth_1,
-    float background
+    float depth_1
 ) {
-    if (depth_1 == background) {
+    bool local_10 = {};
+    bool local_11 = {};
+    if (depth_1 > 0.0) {
+        local_10 = depth_1 < 1.0;
+    } else {
+        local_10 = false;
+    }
+    bool _e16 = local_10;
+    if (!(_e16)) {
         return metal::float4(0.0, 0.0, 0.0, 0.0);
     }
     float x_1 = (((px + 0.5) / width_2) * 2.0) - 1.0;
     float y_1 = 1.0 - (((py + 0.5) / height_2) * 2.0);
     metal::float4 p_3 = (((c0_1 * x_1) + (c1_1 * y_1)) + (c2_1 * depth_1)) + c3_1;
+    metal::float3 q_1 = metal::float3(p_3.x / p_3.w, p_3.y / p_3.w, p_3.z / p_3.w);
     if (metal::abs(p_3.w) > 0.0) {
-        return metal::float4(p_3.x / p_3.w, p_3.y / p_3.w, p_3.z / p_3.w, 1.0);
+        bool _e59 = finite3_(q_1);
+        local_11 = _e59;
+    } else {
+        local_11 = false;
+    }
+    bool _e61 = local_11;
+    if (_e61) {
+        return metal::float4(q_1.x, q_1.y, q_1.z, 1.0);
     }
     return metal::float4(0.0, 0.0, 0.0, 0.0);
 }
@@ -340,9 +376,8 @@ metal::float4 surface_at(
     metal::float4 _e16 = view.c3_;
     uint _e23 = view.width;
     uint _e27 = view.height;
-    float _e31 = view.background;
-    metal::float4 _e32 = unproject_pixel(_e7, _e10, _e13, _e16, static_cast<float>(texel.x), static_cast<float>(texel.y), static_cast<float>(_e23), static_cast<float>(_e27), d_3, _e31);
-    return _e32;
+    metal::float4 _e29 = unproject_pixel(_e7, _e10, _e13, _e16, static_cast<float>(texel.x), static_cast<float>(texel.y), static_cast<float>(_e23), static_cast<float>(_e27), d_3);
+    return _e29;
 }
 
 GbTexel gbuffer_at(
@@ -351,7 +386,7 @@ GbTexel gbuffer_at(
     metal::texture2d<float, metal::access::sample> depth_tex,
     metal::texture2d<float, metal::access::sample> normal_tex
 ) {
-    bool local_8 = {};
+    bool local_12 = {};
     uint _e3 = view.width;
     uint _e8 = view.width;
     metal::int2 texel_1 = metal::int2(static_cast<int>(naga_mod(i, _e3)), static_cast<int>(naga_div(i, _e8)));
@@ -360,15 +395,15 @@ GbTexel gbuffer_at(
     metal::float3 n_6 = _e15.xyz;
     float len2_ = metal::dot(n_6, n_6);
     if (_e12.w > 0.0) {
-        local_8 = len2_ > 0.0;
+        local_12 = len2_ > 0.0;
     } else {
-        local_8 = false;
+        local_12 = false;
     }
-    bool valid = local_8;
+    bool valid = local_12;
     metal::float3 _e30 = view.eye;
-    metal::float3 v_2 = _e12.xyz - _e30;
+    metal::float3 v_3 = _e12.xyz - _e30;
     metal::float4 position = metal::float4(_e12.xyz, valid ? 1.0 : 0.0);
-    metal::float4 normal = valid ? metal::float4(n_6 / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_2, v_2))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
+    metal::float4 normal = valid ? metal::float4(n_6 / metal::float3(metal::sqrt(len2_)), metal::sqrt(metal::dot(v_3, v_3))) : metal::float4(0.0, 0.0, 0.0, 1000000000000000000000000000000.0);
     return GbTexel {position, normal};
 }
 int naga_f2i32(float value) {

@@ -29,7 +29,7 @@ struct VplParams {
     float min_d2_;
     float near_r2_;
     uint near_blocks;
-    uint pad0_;
+    uint subset_shift;
     uint pad1_;
 };
 struct GpuNearBox {
@@ -46,7 +46,7 @@ struct ViewParams {
     metal::packed_float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     metal::packed_float3 f0_d;
@@ -89,6 +89,7 @@ constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
+constant float MAX_INTENSITY = 72057594000000000.0;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
@@ -152,7 +153,7 @@ float vpl_transfer(
     metal::float3 v,
     float min_d2_
 ) {
-    float m_2 = metal::max(metal::dot(v, v), min_d2_);
+    float m_2 = metal::max(metal::dot(v, v), metal::max(min_d2_, MIN_D2_));
     return ((metal::max(metal::dot(n_l, v), 0.0) * metal::max(-(metal::dot(n_x, v)), 0.0)) * INV_PI) / (m_2 * m_2);
 }
 

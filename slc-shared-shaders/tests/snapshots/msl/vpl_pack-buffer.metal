@@ -82,6 +82,7 @@ constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
+constant float MAX_INTENSITY = 72057594000000000.0;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
@@ -128,14 +129,83 @@ float intensity_measure(
 }
 
 float vpl_rt2_(
-    metal::float3 flux,
+    metal::float3 flux_1,
     float exposure_1,
     float error_bound_1,
     uint mode_1
 ) {
-    float _e6 = intensity_measure(flux * INV_PI, mode_1);
+    float _e6 = intensity_measure(flux_1 * INV_PI, mode_1);
     float _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
     return _e7;
+}
+
+bool finite3_(
+    metal::float3 v
+) {
+    bool local_1 = {};
+    bool local_2 = {};
+    if (metal::abs(v.x) <= F32_MAX) {
+        local_1 = metal::abs(v.y) <= F32_MAX;
+    } else {
+        local_1 = false;
+    }
+    bool _e12 = local_1;
+    if (_e12) {
+        local_2 = metal::abs(v.z) <= F32_MAX;
+    } else {
+        local_2 = false;
+    }
+    bool _e20 = local_2;
+    return _e20;
+}
+
+bool vpl_record_ok(
+    metal::float3 position_1,
+    metal::float3 normal_1,
+    metal::float3 flux_2
+) {
+    bool local_3 = {};
+    bool local_4 = {};
+    bool local_5 = {};
+    bool local_6 = {};
+    bool local_7 = {};
+    bool _e3 = finite3_(position_1);
+    if (_e3) {
+        bool _e6 = finite3_(normal_1);
+        local_3 = _e6;
+    } else {
+        local_3 = false;
+    }
+    bool _e8 = local_3;
+    if (_e8) {
+        bool _e11 = finite3_(flux_2);
+        local_4 = _e11;
+    } else {
+        local_4 = false;
+    }
+    bool _e13 = local_4;
+    if (!(_e13)) {
+        return false;
+    }
+    if (flux_2.x >= 0.0) {
+        local_5 = flux_2.y >= 0.0;
+    } else {
+        local_5 = false;
+    }
+    bool _e25 = local_5;
+    if (_e25) {
+        local_6 = flux_2.z >= 0.0;
+    } else {
+        local_6 = false;
+    }
+    bool _e32 = local_6;
+    if (_e32) {
+        local_7 = (metal::max(metal::max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY;
+    } else {
+        local_7 = false;
+    }
+    bool _e45 = local_7;
+    return _e45;
 }
 
 uint naga_mod(uint lhs, uint rhs) {
@@ -157,14 +227,14 @@ uint interleave_slot_linear(
 
 WorkgroupBox workgroup_box(
     uint li_1,
-    metal::float3 p,
+    metal::float3 p_1,
     bool has,
     threadgroup type_9& wg_lo,
     threadgroup type_9& wg_hi
 ) {
     uint stride = 32u;
-    wg_lo.inner[li_1] = has ? p : metal::float3(340282350000000000000000000000000000000.0);
-    wg_hi.inner[li_1] = has ? p : metal::float3(-340282350000000000000000000000000000000.0);
+    wg_lo.inner[li_1] = has ? p_1 : metal::float3(340282350000000000000000000000000000000.0);
+    wg_hi.inner[li_1] = has ? p_1 : metal::float3(-340282350000000000000000000000000000000.0);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
@@ -226,44 +296,64 @@ kernel void main_(
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     metal::float3 position = metal::float3(0.0);
     bool lit = false;
+    metal::float3 p = {};
+    metal::float3 normal = {};
+    metal::float3 flux = {};
     bool local = {};
     uint i_1 = gid.x;
     uint _e6 = params.count;
     bool inside = i_1 < _e6;
     if (inside) {
         GpuVplRecord r = records[i_1];
-        position = r.position;
-        metal::float3 normal = r.normal;
-        float _e21 = params.scale;
-        metal::float3 flux_1 = r.flux * _e21;
-        uint _e25 = params.per_subset;
-        uint _e27 = interleave_slot_linear(i_1, _e25, P);
-        metal::float3 _e30 = position;
-        lights[_e27] = GpuLight {_e30, LIGHT_VPL, normal, 0.0, metal::float3(0.0), 0.0, flux_1, 0u};
-        ids[_e27] = i_1;
-        uint _e42 = params.slc;
-        bool slc = _e42 != 0u;
-        float _e49 = params.exposure;
-        float _e52 = params.error_bound;
-        uint _e55 = params.mode;
-        float _e56 = vpl_rt2_(flux_1, _e49, _e52, _e55);
-        rt2_[_e27] = slc ? _e56 : 0.0;
-        float _e63 = params.fixed_r2_;
-        r2_[_e27] = slc ? 0.0 : _e63;
-        near_slots[i_1] = _e27;
-        lit = metal::any(flux_1 != metal::float3(0.0));
+        p = r.position;
+        normal = r.normal;
+        flux = r.flux;
+        uint _e24 = params.per_subset;
+        uint _e26 = interleave_slot_linear(i_1, _e24, P);
+        metal::float3 _e27 = p;
+        metal::float3 _e28 = normal;
+        metal::float3 _e29 = flux;
+        bool _e30 = vpl_record_ok(_e27, _e28, _e29);
+        if (!(_e30)) {
+            p = metal::float3(0.0);
+            normal = metal::float3(0.0);
+            flux = metal::float3(0.0);
+        }
+        metal::float3 _e38 = p;
+        position = _e38;
+        metal::float3 _e39 = flux;
+        float _e42 = params.scale;
+        flux = _e39 * _e42;
+        metal::float3 _e46 = position;
+        metal::float3 _e48 = normal;
+        metal::float3 _e51 = flux;
+        lights[_e26] = GpuLight {_e46, LIGHT_VPL, _e48, 0.0, metal::float3(0.0), 0.0, _e51, 0u};
+        ids[_e26] = i_1;
+        uint _e60 = params.slc;
+        bool slc = _e60 != 0u;
+        metal::float3 _e65 = flux;
+        float _e68 = params.exposure;
+        float _e71 = params.error_bound;
+        uint _e74 = params.mode;
+        float _e75 = vpl_rt2_(_e65, _e68, _e71, _e74);
+        rt2_[_e26] = slc ? _e75 : 0.0;
+        float _e82 = params.fixed_r2_;
+        r2_[_e26] = slc ? 0.0 : _e82;
+        near_slots[i_1] = _e26;
+        metal::float3 _e87 = flux;
+        lit = metal::any(_e87 != metal::float3(0.0));
     }
-    metal::float3 _e72 = position;
-    bool _e73 = lit;
-    WorkgroupBox _e74 = workgroup_box(li, _e72, _e73, wg_lo, wg_hi);
+    metal::float3 _e92 = position;
+    bool _e93 = lit;
+    WorkgroupBox _e94 = workgroup_box(li, _e92, _e93, wg_lo, wg_hi);
     if (li == 0u) {
         local = inside;
     } else {
         local = false;
     }
-    bool _e80 = local;
-    if (_e80) {
-        near_boxes[wg.x] = GpuNearBox {_e74.lo, 0.0, _e74.hi, 0.0};
+    bool _e100 = local;
+    if (_e100) {
+        near_boxes[wg.x] = GpuNearBox {_e94.lo, 0.0, _e94.hi, 0.0};
         return;
     } else {
         return;

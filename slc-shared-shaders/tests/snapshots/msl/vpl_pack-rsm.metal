@@ -72,6 +72,7 @@ constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
+constant float MAX_INTENSITY = 72057594000000000.0;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
@@ -118,14 +119,34 @@ float intensity_measure(
 }
 
 float vpl_rt2_(
-    metal::float3 flux,
+    metal::float3 flux_1,
     float exposure_1,
     float error_bound_1,
     uint mode_1
 ) {
-    float _e6 = intensity_measure(flux * INV_PI, mode_1);
+    float _e6 = intensity_measure(flux_1 * INV_PI, mode_1);
     float _e7 = threshold_range2_(_e6, exposure_1, error_bound_1);
     return _e7;
+}
+
+bool finite3_(
+    metal::float3 v
+) {
+    bool local_1 = {};
+    bool local_2 = {};
+    if (metal::abs(v.x) <= F32_MAX) {
+        local_1 = metal::abs(v.y) <= F32_MAX;
+    } else {
+        local_1 = false;
+    }
+    bool _e12 = local_1;
+    if (_e12) {
+        local_2 = metal::abs(v.z) <= F32_MAX;
+    } else {
+        local_2 = false;
+    }
+    bool _e20 = local_2;
+    return _e20;
 }
 
 uint naga_mod(uint lhs, uint rhs) {
@@ -138,6 +159,55 @@ uint interleave_subset(
     uint period
 ) {
     return (naga_mod(y, period) * period) + naga_mod(x, period);
+}
+
+bool vpl_record_ok(
+    metal::float3 position_1,
+    metal::float3 normal_1,
+    metal::float3 flux_2
+) {
+    bool local_3 = {};
+    bool local_4 = {};
+    bool local_5 = {};
+    bool local_6 = {};
+    bool local_7 = {};
+    bool _e3 = finite3_(position_1);
+    if (_e3) {
+        bool _e6 = finite3_(normal_1);
+        local_3 = _e6;
+    } else {
+        local_3 = false;
+    }
+    bool _e8 = local_3;
+    if (_e8) {
+        bool _e11 = finite3_(flux_2);
+        local_4 = _e11;
+    } else {
+        local_4 = false;
+    }
+    bool _e13 = local_4;
+    if (!(_e13)) {
+        return false;
+    }
+    if (flux_2.x >= 0.0) {
+        local_5 = flux_2.y >= 0.0;
+    } else {
+        local_5 = false;
+    }
+    bool _e25 = local_5;
+    if (_e25) {
+        local_6 = flux_2.z >= 0.0;
+    } else {
+        local_6 = false;
+    }
+    bool _e32 = local_6;
+    if (_e32) {
+        local_7 = (metal::max(metal::max(flux_2.x, flux_2.y), flux_2.z) * INV_PI) <= MAX_INTENSITY;
+    } else {
+        local_7 = false;
+    }
+    bool _e45 = local_7;
+    return _e45;
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -171,14 +241,14 @@ uint near_block_ty(
 
 WorkgroupBox workgroup_box(
     uint li_1,
-    metal::float3 p,
+    metal::float3 p_1,
     bool has,
     threadgroup type_9& wg_lo,
     threadgroup type_9& wg_hi
 ) {
     uint stride = 32u;
-    wg_lo.inner[li_1] = has ? p : metal::float3(340282350000000000000000000000000000000.0);
-    wg_hi.inner[li_1] = has ? p : metal::float3(-340282350000000000000000000000000000000.0);
+    wg_lo.inner[li_1] = has ? p_1 : metal::float3(340282350000000000000000000000000000000.0);
+    wg_hi.inner[li_1] = has ? p_1 : metal::float3(-340282350000000000000000000000000000000.0);
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     uint2 loop_bound = uint2(4294967295u);
     bool loop_init = true;
@@ -242,6 +312,9 @@ kernel void main_(
     metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
     metal::float3 position = metal::float3(0.0);
     bool lit = false;
+    metal::float3 p = {};
+    metal::float3 normal = {};
+    metal::float3 flux = {};
     bool local = {};
     uint q_2 = gid.x;
     uint _e6 = params.count;
@@ -255,40 +328,57 @@ kernel void main_(
         uint i = (_e20 * _e23) + _e16;
         metal::int2 texel = metal::int2(static_cast<int>(_e16), static_cast<int>(_e20));
         metal::float4 _e31 = rsm_position.read(metal::uint2(texel), 0);
-        position = _e31.xyz;
-        metal::float4 _e35 = rsm_normal.read(metal::uint2(texel), 0);
-        metal::float3 normal = _e35.xyz;
-        metal::float4 _e39 = rsm_flux.read(metal::uint2(texel), 0);
-        float _e43 = params.scale;
-        metal::float3 flux_1 = _e39.xyz * _e43;
-        uint _e47 = params.size;
-        uint _e49 = interleave_slot(_e16, _e20, _e47, P);
-        metal::float3 _e52 = position;
-        lights[_e49] = GpuLight {_e52, LIGHT_VPL, normal, 0.0, metal::float3(0.0), 0.0, flux_1, 0u};
-        ids[_e49] = i;
-        uint _e64 = params.slc;
-        bool slc = _e64 != 0u;
-        float _e71 = params.exposure;
-        float _e74 = params.error_bound;
-        uint _e77 = params.mode;
-        float _e78 = vpl_rt2_(flux_1, _e71, _e74, _e77);
-        rt2_[_e49] = slc ? _e78 : 0.0;
-        float _e85 = params.fixed_r2_;
-        r2_[_e49] = slc ? 0.0 : _e85;
-        near_slots[q_2] = _e49;
-        lit = metal::any(flux_1 != metal::float3(0.0));
+        p = _e31.xyz;
+        metal::float4 _e36 = rsm_normal.read(metal::uint2(texel), 0);
+        normal = _e36.xyz;
+        metal::float4 _e41 = rsm_flux.read(metal::uint2(texel), 0);
+        flux = _e41.xyz;
+        uint _e46 = params.size;
+        uint _e48 = interleave_slot(_e16, _e20, _e46, P);
+        metal::float3 _e49 = p;
+        metal::float3 _e50 = normal;
+        metal::float3 _e51 = flux;
+        bool _e52 = vpl_record_ok(_e49, _e50, _e51);
+        if (!(_e52)) {
+            p = metal::float3(0.0);
+            normal = metal::float3(0.0);
+            flux = metal::float3(0.0);
+        }
+        metal::float3 _e60 = p;
+        position = _e60;
+        metal::float3 _e61 = flux;
+        float _e64 = params.scale;
+        flux = _e61 * _e64;
+        metal::float3 _e68 = position;
+        metal::float3 _e70 = normal;
+        metal::float3 _e73 = flux;
+        lights[_e48] = GpuLight {_e68, LIGHT_VPL, _e70, 0.0, metal::float3(0.0), 0.0, _e73, 0u};
+        ids[_e48] = i;
+        uint _e82 = params.slc;
+        bool slc = _e82 != 0u;
+        metal::float3 _e87 = flux;
+        float _e90 = params.exposure;
+        float _e93 = params.error_bound;
+        uint _e96 = params.mode;
+        float _e97 = vpl_rt2_(_e87, _e90, _e93, _e96);
+        rt2_[_e48] = slc ? _e97 : 0.0;
+        float _e104 = params.fixed_r2_;
+        r2_[_e48] = slc ? 0.0 : _e104;
+        near_slots[q_2] = _e48;
+        metal::float3 _e109 = flux;
+        lit = metal::any(_e109 != metal::float3(0.0));
     }
-    metal::float3 _e94 = position;
-    bool _e95 = lit;
-    WorkgroupBox _e96 = workgroup_box(li, _e94, _e95, wg_lo, wg_hi);
+    metal::float3 _e114 = position;
+    bool _e115 = lit;
+    WorkgroupBox _e116 = workgroup_box(li, _e114, _e115, wg_lo, wg_hi);
     if (li == 0u) {
         local = inside;
     } else {
         local = false;
     }
-    bool _e102 = local;
-    if (_e102) {
-        near_boxes[wg.x] = GpuNearBox {_e96.lo, 0.0, _e96.hi, 0.0};
+    bool _e122 = local;
+    if (_e122) {
+        near_boxes[wg.x] = GpuNearBox {_e116.lo, 0.0, _e116.hi, 0.0};
         return;
     } else {
         return;

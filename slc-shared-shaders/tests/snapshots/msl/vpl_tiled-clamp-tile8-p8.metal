@@ -27,7 +27,7 @@ struct VplParams {
     float min_d2_;
     float near_r2_;
     uint near_blocks;
-    uint pad0_;
+    uint subset_shift;
     uint pad1_;
 };
 struct ViewParams {
@@ -38,7 +38,7 @@ struct ViewParams {
     metal::packed_float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     metal::packed_float3 f0_d;
@@ -79,6 +79,7 @@ constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
+constant float MAX_INTENSITY = 72057594000000000.0;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
@@ -136,8 +137,20 @@ float vpl_transfer(
     metal::float3 v,
     float min_d2_
 ) {
-    float m = metal::max(metal::dot(v, v), min_d2_);
+    float m = metal::max(metal::dot(v, v), metal::max(min_d2_, MIN_D2_));
     return ((metal::max(metal::dot(n_l, v), 0.0) * metal::max(-(metal::dot(n_x, v)), 0.0)) * INV_PI) / (m * m);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint shifted_subset(
+    uint pixel_class,
+    uint shift,
+    uint period
+) {
+    return naga_mod(pixel_class + shift, period * period);
 }
 
 float vpl_near_weight(
@@ -225,10 +238,6 @@ metal::float4 surface_at(
 ) {
     metal::float4 p_1 = position_tex.read(metal::uint2(texel), 0);
     return (p_1.w > 0.0) ? metal::float4(p_1.xyz, 1.0) : metal::float4(0.0);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % metal::select(rhs, 1u, rhs == 0u);
 }
 
 GbTexel gbuffer_at(
@@ -322,61 +331,63 @@ kernel void main_(
     WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1, wg_lo, wg_hi);
     metal::float3 lo = _e61.lo;
     metal::float3 hi = _e61.hi;
-    uint _e66 = params.lights_per_subset;
-    uint base = sub * _e66;
+    uint _e66 = params.subset_shift;
+    uint _e68 = shifted_subset(sub, _e66, P);
+    uint _e71 = params.lights_per_subset;
+    uint base = _e68 * _e71;
     uint2 loop_bound_1 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e167 = first;
-            first = _e167 + MAX_TILE_LIGHTS;
+            uint _e172 = first;
+            first = _e172 + MAX_TILE_LIGHTS;
         }
         loop_init_1 = false;
-        uint _e75 = first;
-        uint _e78 = params.lights_per_subset;
-        if (_e75 < _e78) {
+        uint _e80 = first;
+        uint _e83 = params.lights_per_subset;
+        if (_e80 < _e83) {
         } else {
             break;
         }
         {
-            uint _e80 = first;
-            uint _e85 = params.lights_per_subset;
-            uint end = metal::min(_e80 + MAX_TILE_LIGHTS, _e85);
+            uint _e85 = first;
+            uint _e90 = params.lights_per_subset;
+            uint end = metal::min(_e85 + MAX_TILE_LIGHTS, _e90);
             if (li == 0u) {
                 metal::atomic_store_explicit(&tile_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint _e91 = first;
-            j = _e91 + li;
+            uint _e96 = first;
+            j = _e96 + li;
             uint2 loop_bound_2 = uint2(4294967295u);
             bool loop_init_2 = true;
             while(true) {
                 if (metal::all(loop_bound_2 == uint2(0u))) { break; }
                 loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e117 = j;
-                    j = _e117 + THREADS;
+                    uint _e122 = j;
+                    j = _e122 + THREADS;
                 }
                 loop_init_2 = false;
-                uint _e94 = j;
-                if (_e94 < end) {
+                uint _e99 = j;
+                if (_e99 < end) {
                 } else {
                     break;
                 }
                 {
-                    uint _e97 = j;
-                    metal::float3 _e101 = lights[base + _e97].p0_;
-                    uint _e103 = j;
-                    float _e106 = r2_1[base + _e103];
-                    float _e107 = cull_radius(_e106);
-                    bool _e108 = sphere_overlaps_aabb(_e101, _e107, lo, hi);
-                    if (_e108) {
-                        uint _e111 = metal::atomic_fetch_add_explicit(&tile_count, 1u, metal::memory_order_relaxed);
-                        if (_e111 < MAX_TILE_LIGHTS) {
-                            uint _e116 = j;
-                            tile_lights.inner[_e111] = _e116;
+                    uint _e102 = j;
+                    metal::float3 _e106 = lights[base + _e102].p0_;
+                    uint _e108 = j;
+                    float _e111 = r2_1[base + _e108];
+                    float _e112 = cull_radius(_e111);
+                    bool _e113 = sphere_overlaps_aabb(_e106, _e112, lo, hi);
+                    if (_e113) {
+                        uint _e116 = metal::atomic_fetch_add_explicit(&tile_count, 1u, metal::memory_order_relaxed);
+                        if (_e116 < MAX_TILE_LIGHTS) {
+                            uint _e121 = j;
+                            tile_lights.inner[_e116] = _e121;
                         }
                     }
                 }
@@ -393,34 +404,34 @@ kernel void main_(
                     if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e165 = k;
-                        k = _e165 + 1u;
+                        uint _e170 = k;
+                        k = _e170 + 1u;
                     }
                     loop_init_3 = false;
-                    uint _e126 = k;
-                    if (_e126 < count) {
+                    uint _e131 = k;
+                    if (_e131 < count) {
                     } else {
                         break;
                     }
                     {
-                        uint _e129 = k;
-                        uint _e131 = tile_lights.inner[_e129];
-                        uint j_1 = base + _e131;
+                        uint _e134 = k;
+                        uint _e136 = tile_lights.inner[_e134];
+                        uint j_1 = base + _e136;
                         GpuLight l = lights[j_1];
-                        metal::float4 _e136 = pos;
-                        metal::float3 v_3 = _e136.xyz - l.p0_;
-                        float _e142 = r2_1[j_1];
-                        float _e146 = params.near_r2_;
-                        float _e147 = vpl_far_fixed_share(_e142, metal::dot(v_3, v_3), _e146);
-                        if (_e147 > 0.0) {
-                            metal::float3 _e151 = nrm;
-                            float _e154 = params.min_d2_;
-                            float _e155 = vpl_transfer(l.p1_, _e151, v_3, _e154);
-                            float t_1 = _e155 * _e147;
-                            metal::float3 _e157 = e;
-                            e = _e157 + (l.intensity * t_1);
-                            uint _e161 = kept;
-                            kept = _e161 + 1u;
+                        metal::float4 _e141 = pos;
+                        metal::float3 v_3 = _e141.xyz - l.p0_;
+                        float _e147 = r2_1[j_1];
+                        float _e151 = params.near_r2_;
+                        float _e152 = vpl_far_fixed_share(_e147, metal::dot(v_3, v_3), _e151);
+                        if (_e152 > 0.0) {
+                            metal::float3 _e156 = nrm;
+                            float _e159 = params.min_d2_;
+                            float _e160 = vpl_transfer(l.p1_, _e156, v_3, _e159);
+                            float t_1 = _e160 * _e152;
+                            metal::float3 _e162 = e;
+                            e = _e162 + (l.intensity * t_1);
+                            uint _e166 = kept;
+                            kept = _e166 + 1u;
                         }
                     }
                 }
@@ -429,9 +440,9 @@ kernel void main_(
         }
     }
     if (inside) {
-        metal::float3 _e172 = e;
-        uint _e173 = kept;
-        irradiance[pix] = metal::float4(_e172, static_cast<float>(_e173));
+        metal::float3 _e177 = e;
+        uint _e178 = kept;
+        irradiance[pix] = metal::float4(_e177, static_cast<float>(_e178));
         return;
     } else {
         return;

@@ -28,7 +28,7 @@ struct VplParams {
     float min_d2_;
     float near_r2_;
     uint near_blocks;
-    uint pad0_;
+    uint subset_shift;
     uint pad1_;
 };
 struct GpuMaterial {
@@ -47,7 +47,7 @@ struct ViewParams {
     metal::packed_float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     metal::packed_float3 f0_d;
@@ -91,6 +91,7 @@ constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
+constant float MAX_INTENSITY = 72057594000000000.0;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
@@ -124,7 +125,7 @@ float vpl_transfer(
     metal::float3 v,
     float min_d2_
 ) {
-    float m = metal::max(metal::dot(v, v), min_d2_);
+    float m = metal::max(metal::dot(v, v), metal::max(min_d2_, MIN_D2_));
     return ((metal::max(metal::dot(n_l, v), 0.0) * metal::max(-(metal::dot(n_x, v)), 0.0)) * INV_PI) / (m * m);
 }
 
@@ -309,6 +310,18 @@ bool has_specular(
     return _e23;
 }
 
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint shifted_subset(
+    uint pixel_class,
+    uint shift,
+    uint period
+) {
+    return naga_mod(pixel_class + shift, period * period);
+}
+
 float vpl_near_weight(
     float d2_,
     float near_r2_
@@ -384,10 +397,6 @@ metal::float4 surface_at(
 ) {
     metal::float4 p_1 = position_tex.read(metal::uint2(texel), 0);
     return (p_1.w > 0.0) ? metal::float4(p_1.xyz, 1.0) : metal::float4(0.0);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % metal::select(rhs, 1u, rhs == 0u);
 }
 
 GbTexel gbuffer_at(
@@ -521,12 +530,14 @@ kernel void main_(
     WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1, wg_lo, wg_hi);
     metal::float3 lo = _e61.lo;
     metal::float3 hi = _e61.hi;
-    uint _e66 = params.lights_per_subset;
-    uint base_6 = sub * _e66;
+    uint _e66 = params.subset_shift;
+    uint _e68 = shifted_subset(sub, _e66, P);
+    uint _e71 = params.lights_per_subset;
+    uint base_6 = _e68 * _e71;
     if (valid_1) {
-        metal::float4 _e77 = pos;
-        Glossy _e79 = glossy_at(pix, _e77.xyz, view, normal_tex, materials, _buffer_sizes);
-        g = _e79;
+        metal::float4 _e82 = pos;
+        Glossy _e84 = glossy_at(pix, _e82.xyz, view, normal_tex, materials, _buffer_sizes);
+        g = _e84;
     }
     if (valid_1) {
         j = base_6;
@@ -536,47 +547,47 @@ kernel void main_(
             if (metal::all(loop_bound_1 == uint2(0u))) { break; }
             loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
             if (!loop_init_1) {
-                uint _e122 = j;
-                j = _e122 + 1u;
+                uint _e127 = j;
+                j = _e127 + 1u;
             }
             loop_init_1 = false;
-            uint _e81 = j;
-            uint _e84 = params.lights_per_subset;
-            if (_e81 < (base_6 + _e84)) {
+            uint _e86 = j;
+            uint _e89 = params.lights_per_subset;
+            if (_e86 < (base_6 + _e89)) {
             } else {
                 break;
             }
             {
-                uint _e88 = j;
-                GpuLight l_5 = lights[_e88];
-                metal::float4 _e91 = pos;
-                metal::float3 v_7 = _e91.xyz - l_5.p0_;
-                float _e98 = params.near_r2_;
-                float _e99 = vpl_far_weight(metal::dot(v_7, v_7), _e98);
-                if (_e99 > 0.0) {
-                    metal::float3 _e103 = nrm;
-                    float _e106 = params.min_d2_;
-                    float _e107 = vpl_transfer(l_5.p1_, _e103, v_7, _e106);
-                    float t_3 = _e107 * _e99;
-                    metal::float3 _e109 = e;
-                    e = _e109 + (l_5.intensity * t_3);
-                    metal::float3 _e113 = s;
-                    Glossy _e114 = g;
-                    metal::float3 _e115 = nrm;
-                    metal::float3 _e116 = glossy_term(_e114, l_5, _e115, v_7, t_3);
-                    s = _e113 + _e116;
-                    uint _e118 = kept;
-                    kept = _e118 + 1u;
+                uint _e93 = j;
+                GpuLight l_5 = lights[_e93];
+                metal::float4 _e96 = pos;
+                metal::float3 v_7 = _e96.xyz - l_5.p0_;
+                float _e103 = params.near_r2_;
+                float _e104 = vpl_far_weight(metal::dot(v_7, v_7), _e103);
+                if (_e104 > 0.0) {
+                    metal::float3 _e108 = nrm;
+                    float _e111 = params.min_d2_;
+                    float _e112 = vpl_transfer(l_5.p1_, _e108, v_7, _e111);
+                    float t_3 = _e112 * _e104;
+                    metal::float3 _e114 = e;
+                    e = _e114 + (l_5.intensity * t_3);
+                    metal::float3 _e118 = s;
+                    Glossy _e119 = g;
+                    metal::float3 _e120 = nrm;
+                    metal::float3 _e121 = glossy_term(_e119, l_5, _e120, v_7, t_3);
+                    s = _e118 + _e121;
+                    uint _e123 = kept;
+                    kept = _e123 + 1u;
                 }
             }
         }
     }
     if (inside) {
-        metal::float3 _e126 = e;
-        uint _e127 = kept;
-        irradiance[pix] = metal::float4(_e126, static_cast<float>(_e127));
-        metal::float3 _e132 = s;
-        specular[pix] = metal::float4(_e132, 0.0);
+        metal::float3 _e131 = e;
+        uint _e132 = kept;
+        irradiance[pix] = metal::float4(_e131, static_cast<float>(_e132));
+        metal::float3 _e137 = s;
+        specular[pix] = metal::float4(_e137, 0.0);
         return;
     } else {
         return;

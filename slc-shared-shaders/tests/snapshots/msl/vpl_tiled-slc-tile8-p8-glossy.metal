@@ -30,7 +30,7 @@ struct VplParams {
     float min_d2_;
     float near_r2_;
     uint near_blocks;
-    uint pad0_;
+    uint subset_shift;
     uint pad1_;
 };
 struct GpuMaterial {
@@ -49,7 +49,7 @@ struct ViewParams {
     metal::packed_float3 eye;
     uint width;
     uint height;
-    float background;
+    uint pad0_;
     uint seed;
     uint frame;
     metal::packed_float3 f0_d;
@@ -97,6 +97,7 @@ constant float SPHERE_HUGE = 340282350000000000000000000000000000000.0;
 constant float SPHERE_PAD_ABS = 0.000000000000000001;
 constant float INV_PI = 0.31830987;
 constant float MIN_D2_ = 0.000000000001;
+constant float MAX_INTENSITY = 72057594000000000.0;
 constant uint BSH_NONE = 4294967295u;
 constant uint RESERVOIR_FULL = 4294967295u;
 constant float GGX_ALPHA_MIN = 0.001;
@@ -164,7 +165,7 @@ float vpl_transfer(
     metal::float3 v,
     float min_d2_
 ) {
-    float m = metal::max(metal::dot(v, v), min_d2_);
+    float m = metal::max(metal::dot(v, v), metal::max(min_d2_, MIN_D2_));
     return ((metal::max(metal::dot(n_l, v), 0.0) * metal::max(-(metal::dot(n_x, v)), 0.0)) * INV_PI) / (m * m);
 }
 
@@ -349,6 +350,18 @@ bool has_specular(
     return _e23;
 }
 
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint shifted_subset(
+    uint pixel_class,
+    uint shift,
+    uint period
+) {
+    return naga_mod(pixel_class + shift, period * period);
+}
+
 float vpl_near_weight(
     float d2_2,
     float near_r2_
@@ -436,10 +449,6 @@ metal::float4 surface_at(
 ) {
     metal::float4 p_1 = position_tex.read(metal::uint2(texel), 0);
     return (p_1.w > 0.0) ? metal::float4(p_1.xyz, 1.0) : metal::float4(0.0);
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % metal::select(rhs, 1u, rhs == 0u);
 }
 
 GbTexel gbuffer_at(
@@ -581,12 +590,14 @@ kernel void main_(
     WorkgroupBox _e61 = workgroup_box(li, _e59.xyz, valid_1, wg_lo, wg_hi);
     metal::float3 lo = _e61.lo;
     metal::float3 hi = _e61.hi;
-    uint _e66 = params.lights_per_subset;
-    uint base_6 = sub * _e66;
+    uint _e66 = params.subset_shift;
+    uint _e68 = shifted_subset(sub, _e66, P);
+    uint _e71 = params.lights_per_subset;
+    uint base_6 = _e68 * _e71;
     if (valid_1) {
-        metal::float4 _e77 = pos;
-        Glossy _e79 = glossy_at(pix, _e77.xyz, view, normal_tex, materials, _buffer_sizes);
-        g = _e79;
+        metal::float4 _e82 = pos;
+        Glossy _e84 = glossy_at(pix, _e82.xyz, view, normal_tex, materials, _buffer_sizes);
+        g = _e84;
     }
     uint2 loop_bound_1 = uint2(4294967295u);
     bool loop_init_1 = true;
@@ -594,53 +605,53 @@ kernel void main_(
         if (metal::all(loop_bound_1 == uint2(0u))) { break; }
         loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e182 = first;
-            first = _e182 + MAX_TILE_LIGHTS;
+            uint _e187 = first;
+            first = _e187 + MAX_TILE_LIGHTS;
         }
         loop_init_1 = false;
-        uint _e82 = first;
-        uint _e85 = params.lights_per_subset;
-        if (_e82 < _e85) {
+        uint _e87 = first;
+        uint _e90 = params.lights_per_subset;
+        if (_e87 < _e90) {
         } else {
             break;
         }
         {
-            uint _e87 = first;
-            uint _e92 = params.lights_per_subset;
-            uint end = metal::min(_e87 + MAX_TILE_LIGHTS, _e92);
+            uint _e92 = first;
+            uint _e97 = params.lights_per_subset;
+            uint end = metal::min(_e92 + MAX_TILE_LIGHTS, _e97);
             if (li == 0u) {
                 metal::atomic_store_explicit(&tile_count, 0u, metal::memory_order_relaxed);
             }
             metal::threadgroup_barrier(metal::mem_flags::mem_threadgroup);
-            uint _e98 = first;
-            j = _e98 + li;
+            uint _e103 = first;
+            j = _e103 + li;
             uint2 loop_bound_2 = uint2(4294967295u);
             bool loop_init_2 = true;
             while(true) {
                 if (metal::all(loop_bound_2 == uint2(0u))) { break; }
                 loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e124 = j;
-                    j = _e124 + THREADS;
+                    uint _e129 = j;
+                    j = _e129 + THREADS;
                 }
                 loop_init_2 = false;
-                uint _e101 = j;
-                if (_e101 < end) {
+                uint _e106 = j;
+                if (_e106 < end) {
                 } else {
                     break;
                 }
                 {
-                    uint _e104 = j;
-                    metal::float3 _e108 = lights[base_6 + _e104].p0_;
-                    uint _e110 = j;
-                    float _e113 = r2_3[base_6 + _e110];
-                    float _e114 = cull_radius(_e113);
-                    bool _e115 = sphere_overlaps_aabb(_e108, _e114, lo, hi);
-                    if (_e115) {
-                        uint _e118 = metal::atomic_fetch_add_explicit(&tile_count, 1u, metal::memory_order_relaxed);
-                        if (_e118 < MAX_TILE_LIGHTS) {
-                            uint _e123 = j;
-                            tile_lights.inner[_e118] = _e123;
+                    uint _e109 = j;
+                    metal::float3 _e113 = lights[base_6 + _e109].p0_;
+                    uint _e115 = j;
+                    float _e118 = r2_3[base_6 + _e115];
+                    float _e119 = cull_radius(_e118);
+                    bool _e120 = sphere_overlaps_aabb(_e113, _e119, lo, hi);
+                    if (_e120) {
+                        uint _e123 = metal::atomic_fetch_add_explicit(&tile_count, 1u, metal::memory_order_relaxed);
+                        if (_e123 < MAX_TILE_LIGHTS) {
+                            uint _e128 = j;
+                            tile_lights.inner[_e123] = _e128;
                         }
                     }
                 }
@@ -657,40 +668,40 @@ kernel void main_(
                     if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                     loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                     if (!loop_init_3) {
-                        uint _e180 = k;
-                        k = _e180 + 1u;
+                        uint _e185 = k;
+                        k = _e185 + 1u;
                     }
                     loop_init_3 = false;
-                    uint _e133 = k;
-                    if (_e133 < count) {
+                    uint _e138 = k;
+                    if (_e138 < count) {
                     } else {
                         break;
                     }
                     {
-                        uint _e136 = k;
-                        uint _e138 = tile_lights.inner[_e136];
-                        uint j_1 = base_6 + _e138;
+                        uint _e141 = k;
+                        uint _e143 = tile_lights.inner[_e141];
+                        uint j_1 = base_6 + _e143;
                         GpuLight l_5 = lights[j_1];
-                        metal::float4 _e143 = pos;
-                        metal::float3 v_8 = _e143.xyz - l_5.p0_;
-                        float _e149 = rt2_2[j_1];
-                        float _e152 = r2_3[j_1];
-                        float _e156 = params.near_r2_;
-                        float _e157 = vpl_far_slc_share(_e149, _e152, metal::dot(v_8, v_8), _e156);
-                        if (_e157 > 0.0) {
-                            metal::float3 _e161 = nrm;
-                            float _e164 = params.min_d2_;
-                            float _e165 = vpl_transfer(l_5.p1_, _e161, v_8, _e164);
-                            float t_3 = _e165 * _e157;
-                            metal::float3 _e167 = e;
-                            e = _e167 + (l_5.intensity * t_3);
-                            metal::float3 _e171 = s;
-                            Glossy _e172 = g;
-                            metal::float3 _e173 = nrm;
-                            metal::float3 _e174 = glossy_term(_e172, l_5, _e173, v_8, t_3);
-                            s = _e171 + _e174;
-                            uint _e176 = kept;
-                            kept = _e176 + 1u;
+                        metal::float4 _e148 = pos;
+                        metal::float3 v_8 = _e148.xyz - l_5.p0_;
+                        float _e154 = rt2_2[j_1];
+                        float _e157 = r2_3[j_1];
+                        float _e161 = params.near_r2_;
+                        float _e162 = vpl_far_slc_share(_e154, _e157, metal::dot(v_8, v_8), _e161);
+                        if (_e162 > 0.0) {
+                            metal::float3 _e166 = nrm;
+                            float _e169 = params.min_d2_;
+                            float _e170 = vpl_transfer(l_5.p1_, _e166, v_8, _e169);
+                            float t_3 = _e170 * _e162;
+                            metal::float3 _e172 = e;
+                            e = _e172 + (l_5.intensity * t_3);
+                            metal::float3 _e176 = s;
+                            Glossy _e177 = g;
+                            metal::float3 _e178 = nrm;
+                            metal::float3 _e179 = glossy_term(_e177, l_5, _e178, v_8, t_3);
+                            s = _e176 + _e179;
+                            uint _e181 = kept;
+                            kept = _e181 + 1u;
                         }
                     }
                 }
@@ -699,11 +710,11 @@ kernel void main_(
         }
     }
     if (inside) {
-        metal::float3 _e187 = e;
-        uint _e188 = kept;
-        irradiance[pix] = metal::float4(_e187, static_cast<float>(_e188));
-        metal::float3 _e193 = s;
-        specular[pix] = metal::float4(_e193, 0.0);
+        metal::float3 _e192 = e;
+        uint _e193 = kept;
+        irradiance[pix] = metal::float4(_e192, static_cast<float>(_e193));
+        metal::float3 _e198 = s;
+        specular[pix] = metal::float4(_e198, 0.0);
         return;
     } else {
         return;
