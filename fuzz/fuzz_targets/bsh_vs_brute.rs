@@ -18,8 +18,10 @@ struct Input {
 
 fuzz_target!(|input: Input| {
     let lights = &input.lights[..input.lights.len().min(512)];
-    let bounds: Vec<LightBound> = lights.iter().map(|&(c, e, _)| LightBound { center: Vec3::from(c), extent: e }).collect();
-    let valid = bounds.iter().all(|b| b.center.is_finite() && b.extent.is_finite() && b.extent >= 0.0);
+    let bounds: Vec<LightBound> =
+        lights.iter().map(|&(c, e, _)| LightBound { center: Vec3::from(c), extent: e }).collect();
+    let valid =
+        bounds.iter().all(|b| b.center.is_finite() && b.extent.is_finite() && b.extent >= 0.0);
     let mut bsh = match Bsh::build(&bounds) {
         Ok(t) => {
             assert!(valid, "accepted invalid bounds");
@@ -38,7 +40,9 @@ fuzz_target!(|input: Input| {
     let spheres: Vec<Sphere> = bounds.iter().zip(&r2).map(|(b, &r)| b.range_sphere(r)).collect();
     for &(q, r, e) in input.queries.iter().take(16) {
         let x = Vec3::from(q);
-        let brute = |t: &dyn Fn(&Sphere) -> bool| -> Vec<u32> { (0..spheres.len() as u32).filter(|&i| t(&spheres[i as usize])).collect() };
+        let brute = |t: &dyn Fn(&Sphere) -> bool| -> Vec<u32> {
+            (0..spheres.len() as u32).filter(|&i| t(&spheres[i as usize])).collect()
+        };
         let mut got = Vec::new();
         bsh.for_each_containing(x, |i| got.push(i));
         got.sort_unstable();

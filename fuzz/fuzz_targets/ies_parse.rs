@@ -12,7 +12,10 @@ fuzz_target!(|data: &[u8]| {
     for g in (-10..=190).step_by(5) {
         for c in (-400..=800).step_by(37) {
             let v = p.candela_at(g as f32, c as f32);
-            assert!(v.is_finite() && v >= 0.0 && v <= peak * (1.0 + 1e-6) + 1e-30, "γ {g} C {c}: {v} (peak {peak})");
+            assert!(
+                v.is_finite() && v >= 0.0 && v <= peak * (1.0 + 1e-6) + 1e-30,
+                "γ {g} C {c}: {v} (peak {peak})"
+            );
         }
     }
     for x in [f32::NAN, f32::INFINITY, -f32::INFINITY, f32::MAX, -0.0] {

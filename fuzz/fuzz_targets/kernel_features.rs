@@ -6,7 +6,10 @@
 
 use arbitrary::Arbitrary;
 use libfuzzer_sys::fuzz_target;
-use slc_shared_shaders::{CullMethod, DirectOutput, Features, Heuristic, Kernel, LightTypes, OutputFormat, Selection, ShaderError, SurfaceSource, VplSource, generate};
+use slc_shared_shaders::{
+    CullMethod, DirectOutput, Features, Heuristic, Kernel, LightTypes, OutputFormat, Selection,
+    ShaderError, SurfaceSource, VplSource, generate,
+};
 
 #[derive(Arbitrary, Debug)]
 struct Input {
@@ -40,12 +43,25 @@ fuzz_target!(|i: Input| {
         max_tile_lights: i.max_tile_lights as u32,
         method: [CullMethod::Slc, CullMethod::Clamp, CullMethod::None][i.method as usize % 3],
         heuristic: if i.heuristic { Heuristic::Balance } else { Heuristic::Power },
-        selection: [Selection::Reservoir, Selection::All, Selection::Uniform, Selection::Power, Selection::Weighted, Selection::LightBvh][i.selection as usize % 6],
+        selection: [
+            Selection::Reservoir,
+            Selection::All,
+            Selection::Uniform,
+            Selection::Power,
+            Selection::Weighted,
+            Selection::LightBvh,
+        ][i.selection as usize % 6],
         vpl_source: if i.rsm { VplSource::Rsm } else { VplSource::Buffer },
         output_format: if i.rgba32 { OutputFormat::Rgba32Float } else { OutputFormat::Rgba16Float },
         shadows: i.shadows,
-        surface: [SurfaceSource::Position, SurfaceSource::Depth, SurfaceSource::R32Depth][i.surface as usize % 3],
-        direct_output: [DirectOutput::Irradiance, DirectOutput::Radiance, DirectOutput::Split, DirectOutput::BevyRadiance][i.direct_output as usize % 4],
+        surface: [SurfaceSource::Position, SurfaceSource::Depth, SurfaceSource::R32Depth]
+            [i.surface as usize % 3],
+        direct_output: [
+            DirectOutput::Irradiance,
+            DirectOutput::Radiance,
+            DirectOutput::Split,
+            DirectOutput::BevyRadiance,
+        ][i.direct_output as usize % 4],
         glossy: i.glossy,
         motion_vectors: i.motion_vectors,
     };

@@ -28,7 +28,11 @@ fuzz_target!(|input: Input| {
     }
     let mut lights = Vec::new();
     for &(p, i, xi) in input.lights.iter().take(64) {
-        let (Ok(l), Ok(xi)) = (PointLight::new(Vec3::from(p.map(f)), Vec3::from(i.map(f))), Xi::new(f(xi))) else { continue };
+        let (Ok(l), Ok(xi)) =
+            (PointLight::new(Vec3::from(p.map(f)), Vec3::from(i.map(f))), Xi::new(f(xi)))
+        else {
+            continue;
+        };
         let l = Light::Point(l);
         let rt2 = params.threshold_range2(l.peak());
         let r2 = random_range2(rt2, xi.get());
@@ -39,7 +43,10 @@ fuzz_target!(|input: Input| {
         assert!((0.0..=1.0).contains(&p), "p {p}");
         if slc_keep(r2, d2) {
             let w = slc_weight(rt2, d2);
-            assert!(w.is_finite() && (1.0..=16_777_216.0).contains(&w), "w {w} (rt2 {rt2} d2 {d2})");
+            assert!(
+                w.is_finite() && (1.0..=16_777_216.0).contains(&w),
+                "w {w} (rt2 {rt2} d2 {d2})"
+            );
         }
         lights.push((Seen { d2, rt2, r2 }, contribution));
     }

@@ -31,13 +31,16 @@ fn main() {
         _ => Mode::Slc,
     };
     let mut window = Window { title: "slc-bevy many_lights".into(), ..default() };
-    if let Some((w, h)) =
-        std::env::var("SLC_BEVY_SIZE").ok().and_then(|s| s.split_once('x').and_then(|(w, h)| Some((w.parse::<u32>().ok()?, h.parse::<u32>().ok()?))))
-    {
+    if let Some((w, h)) = std::env::var("SLC_BEVY_SIZE").ok().and_then(|s| {
+        s.split_once('x').and_then(|(w, h)| Some((w.parse::<u32>().ok()?, h.parse::<u32>().ok()?)))
+    }) {
         window.resolution = (w, h).into();
     }
     App::new()
-        .add_plugins((DefaultPlugins.set(WindowPlugin { primary_window: Some(window), ..default() }), SlcPlugin))
+        .add_plugins((
+            DefaultPlugins.set(WindowPlugin { primary_window: Some(window), ..default() }),
+            SlcPlugin,
+        ))
         .insert_resource(DefaultOpaqueRendererMethod::deferred())
         .insert_resource(GlobalAmbientLight { brightness: 0.0, ..default() })
         .insert_resource(ClearColor(Color::srgb(0.01, 0.01, 0.02)))
@@ -70,10 +73,22 @@ struct Orbit {
     phase: f32,
 }
 
-fn setup(mut commands: Commands, settings: Res<Settings>, mut meshes: ResMut<Assets<Mesh>>, mut materials: ResMut<Assets<StandardMaterial>>) {
+fn setup(
+    mut commands: Commands,
+    settings: Res<Settings>,
+    mut meshes: ResMut<Assets<Mesh>>,
+    mut materials: ResMut<Assets<StandardMaterial>>,
+) {
     let mut rng = rand::rngs::StdRng::seed_from_u64(1);
-    let floor = materials.add(StandardMaterial { base_color: Color::srgb(0.5, 0.5, 0.5), perceptual_roughness: 0.7, ..default() });
-    commands.spawn((Mesh3d(meshes.add(Plane3d::default().mesh().size(240.0, 240.0))), MeshMaterial3d(floor)));
+    let floor = materials.add(StandardMaterial {
+        base_color: Color::srgb(0.5, 0.5, 0.5),
+        perceptual_roughness: 0.7,
+        ..default()
+    });
+    commands.spawn((
+        Mesh3d(meshes.add(Plane3d::default().mesh().size(240.0, 240.0))),
+        MeshMaterial3d(floor),
+    ));
     let pillar = meshes.add(Cuboid::new(1.0, 1.0, 1.0));
     for i in -6..=6 {
         for j in -6..=6 {
@@ -87,14 +102,24 @@ fn setup(mut commands: Commands, settings: Res<Settings>, mut meshes: ResMut<Ass
             commands.spawn((
                 Mesh3d(pillar.clone()),
                 MeshMaterial3d(m),
-                Transform::from_xyz(i as f32 * 16.0, h / 2.0, j as f32 * 16.0).with_scale(Vec3::new(4.0, h, 4.0)),
+                Transform::from_xyz(i as f32 * 16.0, h / 2.0, j as f32 * 16.0)
+                    .with_scale(Vec3::new(4.0, h, 4.0)),
             ));
         }
     }
     for i in 0..settings.lights {
-        let centre = Vec3::new(rng.random_range(-110.0..110.0), rng.random_range(0.5..12.0), rng.random_range(-110.0..110.0));
+        let centre = Vec3::new(
+            rng.random_range(-110.0..110.0),
+            rng.random_range(0.5..12.0),
+            rng.random_range(-110.0..110.0),
+        );
         let color = Color::hsl(rng.random_range(0.0..360.0), 0.9, 0.6);
-        let orbit = Orbit { centre, radius: rng.random_range(1.0..8.0), speed: rng.random_range(-1.0..1.0), phase: rng.random_range(0.0..6.3) };
+        let orbit = Orbit {
+            centre,
+            radius: rng.random_range(1.0..8.0),
+            speed: rng.random_range(-1.0..1.0),
+            phase: rng.random_range(0.0..6.3),
+        };
         if i % 10 == 0 {
             // Every tenth a spot light, looking down.
             let spot = SpotLight {
@@ -105,9 +130,18 @@ fn setup(mut commands: Commands, settings: Res<Settings>, mut meshes: ResMut<Ass
                 shadow_maps_enabled: false,
                 ..default()
             };
-            commands.spawn((spot, Transform::from_translation(centre).looking_to(Vec3::NEG_Y, Vec3::X), orbit));
+            commands.spawn((
+                spot,
+                Transform::from_translation(centre).looking_to(Vec3::NEG_Y, Vec3::X),
+                orbit,
+            ));
         } else {
-            let point = PointLight { color, intensity: rng.random_range(2e4..2e5), shadow_maps_enabled: false, ..default() };
+            let point = PointLight {
+                color,
+                intensity: rng.random_range(2e4..2e5),
+                shadow_maps_enabled: false,
+                ..default()
+            };
             commands.spawn((point, Transform::from_translation(centre), orbit));
         }
     }
@@ -122,8 +156,16 @@ fn setup(mut commands: Commands, settings: Res<Settings>, mut meshes: ResMut<Ass
 /// Moves the lights along their circles: by the clock, or in scripted
 /// runs (`SLC_BEVY_FRAMES`) by 1/60 s per frame, as a 60 Hz display would
 /// (a software renderer's seconds per frame would jump the lights).
-fn move_lights(time: Res<Time>, frames: Res<bevy::diagnostic::FrameCount>, mut lights: Query<(&Orbit, &mut Transform)>) {
-    let t = if std::env::var_os("SLC_BEVY_FRAMES").is_some() { frames.0 as f32 / 60.0 } else { time.elapsed_secs() };
+fn move_lights(
+    time: Res<Time>,
+    frames: Res<bevy::diagnostic::FrameCount>,
+    mut lights: Query<(&Orbit, &mut Transform)>,
+) {
+    let t = if std::env::var_os("SLC_BEVY_FRAMES").is_some() {
+        frames.0 as f32 / 60.0
+    } else {
+        time.elapsed_secs()
+    };
     for (o, mut tr) in &mut lights {
         let a = o.phase + o.speed * t;
         tr.translation = o.centre + Vec3::new(a.cos(), 0.0, a.sin()) * o.radius;
@@ -146,7 +188,8 @@ fn keys(
         };
     }
     if input.just_pressed(KeyCode::Space) || settings.is_added() {
-        let range = if settings.mode == Mode::BevyUnbounded { 1e4 } else { PointLight::default().range };
+        let range =
+            if settings.mode == Mode::BevyUnbounded { 1e4 } else { PointLight::default().range };
         let mut lights: Vec<Entity> = Vec::new();
         for (e, mut light) in &mut points {
             light.range = range;
@@ -174,9 +217,15 @@ fn keys(
     }
 }
 
-fn title(time: Res<Time>, mut settings: ResMut<Settings>, cameras: Query<&SlcCamera>, mut windows: Query<&mut Window>) {
+fn title(
+    time: Res<Time>,
+    mut settings: ResMut<Settings>,
+    cameras: Query<&SlcCamera>,
+    mut windows: Query<&mut Window>,
+) {
     let ms = time.delta_secs() * 1000.0;
-    settings.frame_ms = if settings.frame_ms == 0.0 { ms } else { 0.95 * settings.frame_ms + 0.05 * ms };
+    settings.frame_ms =
+        if settings.frame_ms == 0.0 { ms } else { 0.95 * settings.frame_ms + 0.05 * ms };
     let eps = cameras.iter().next().map_or(0.0, |c| c.error_bound);
     for mut w in &mut windows {
         w.title = format!(
@@ -197,7 +246,9 @@ fn scripted_exit(
     status: Res<SlcStatus>,
     cameras: Query<Entity, With<SlcCamera>>,
 ) {
-    let Some(n) = std::env::var("SLC_BEVY_FRAMES").ok().and_then(|s| s.parse::<u32>().ok()) else { return };
+    let Some(n) = std::env::var("SLC_BEVY_FRAMES").ok().and_then(|s| s.parse::<u32>().ok()) else {
+        return;
+    };
     *frames += 1;
     if *frames == n && settings.mode == Mode::Slc {
         for camera in &cameras {
@@ -214,18 +265,22 @@ fn scripted_exit(
     if *frames == n {
         match std::env::var("SLC_BEVY_SCREENSHOT") {
             Ok(path) => {
-                commands.spawn(Screenshot::primary_window()).observe(move |ev: On<ScreenshotCaptured>, mut exit: MessageWriter<AppExit>| {
-                    match ev.image.clone().try_into_dynamic() {
-                        Ok(img) => {
-                            let rgb = img.to_rgb8();
-                            if let Err(e) = write_png(&path, rgb.width(), rgb.height(), rgb.as_raw()) {
-                                eprintln!("could not write {path}: {e}");
+                commands.spawn(Screenshot::primary_window()).observe(
+                    move |ev: On<ScreenshotCaptured>, mut exit: MessageWriter<AppExit>| {
+                        match ev.image.clone().try_into_dynamic() {
+                            Ok(img) => {
+                                let rgb = img.to_rgb8();
+                                if let Err(e) =
+                                    write_png(&path, rgb.width(), rgb.height(), rgb.as_raw())
+                                {
+                                    eprintln!("could not write {path}: {e}");
+                                }
                             }
+                            Err(e) => eprintln!("could not convert the screenshot: {e}"),
                         }
-                        Err(e) => eprintln!("could not convert the screenshot: {e}"),
-                    }
-                    exit.write(AppExit::Success);
-                });
+                        exit.write(AppExit::Success);
+                    },
+                );
             }
             Err(_) => {
                 exit.write(AppExit::Success);
@@ -237,8 +292,14 @@ fn scripted_exit(
     }
 }
 
-fn write_png(path: &str, width: u32, height: u32, rgb: &[u8]) -> Result<(), Box<dyn std::error::Error>> {
-    let mut enc = png::Encoder::new(std::io::BufWriter::new(std::fs::File::create(path)?), width, height);
+fn write_png(
+    path: &str,
+    width: u32,
+    height: u32,
+    rgb: &[u8],
+) -> Result<(), Box<dyn std::error::Error>> {
+    let mut enc =
+        png::Encoder::new(std::io::BufWriter::new(std::fs::File::create(path)?), width, height);
     enc.set_color(png::ColorType::Rgb);
     enc.set_depth(png::BitDepth::Eight);
     enc.write_header()?.write_image_data(rgb)?;

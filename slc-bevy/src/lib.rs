@@ -79,14 +79,17 @@ use bevy::camera::visibility::RenderLayers;
 use bevy::core_pipeline::Core3d;
 use bevy::core_pipeline::FullscreenShader;
 use bevy::core_pipeline::core_3d::{main_opaque_pass_3d, main_transparent_pass_3d};
-use bevy::core_pipeline::prepass::{DeferredPrepass, DepthPrepass, MotionVectorPrepass, ViewPrepassTextures};
+use bevy::core_pipeline::prepass::{
+    DeferredPrepass, DepthPrepass, MotionVectorPrepass, ViewPrepassTextures,
+};
 use bevy::prelude::*;
 use bevy::render::camera::ExtractedCamera;
 use bevy::render::extract_component::{ExtractComponent, ExtractComponentPlugin};
 use bevy::render::render_resource::binding_types::{texture_2d, texture_storage_2d};
 use bevy::render::render_resource::{
-    BindGroupLayoutDescriptor, BindGroupLayoutEntries, BlendComponent, BlendFactor, BlendOperation, BlendState, CachedComputePipelineId,
-    CachedPipelineState, CachedRenderPipelineId, ColorTargetState, ColorWrites, ComputePipelineDescriptor, FragmentState, PipelineCache,
+    BindGroupLayoutDescriptor, BindGroupLayoutEntries, BlendComponent, BlendFactor, BlendOperation,
+    BlendState, CachedComputePipelineId, CachedPipelineState, CachedRenderPipelineId,
+    ColorTargetState, ColorWrites, ComputePipelineDescriptor, FragmentState, PipelineCache,
     RenderPipelineDescriptor, ShaderStages, StorageTextureAccess, TextureSampleType,
 };
 use bevy::render::renderer::{RenderContext, RenderDevice, RenderQueue, ViewQuery};
@@ -94,12 +97,12 @@ use bevy::render::sync_world::MainEntity;
 use bevy::render::view::{ExtractedView, Msaa, ViewTarget};
 use bevy::render::{Extract, ExtractSchedule, Render, RenderApp, RenderStartup, RenderSystems};
 use slc_wgpu::passes::{
-    DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, MaterialInputs, TemporalInputs, TemporalPass,
-    TemporalPassDesc,
+    DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings,
+    MaterialInputs, TemporalInputs, TemporalPass, TemporalPassDesc,
 };
 use slc_wgpu::{
-    Culling, GBuffer, GpuContext, Light, LightSet, PointLight as SlcPoint, RangeParams, SpotLight as SlcSpot, Surface, SurfaceDesc, TemporalSettings,
-    TemporalView,
+    Culling, GBuffer, GpuContext, Light, LightSet, PointLight as SlcPoint, RangeParams,
+    SpotLight as SlcSpot, Surface, SurfaceDesc, TemporalSettings, TemporalView,
 };
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
@@ -141,7 +144,14 @@ pub struct SlcCamera {
 impl Default for SlcCamera {
     /// On, ε = 0.01, 8 picks, seed 1, accumulated over up to 32 frames.
     fn default() -> Self {
-        SlcCamera { enabled: true, error_bound: 0.01, picks: 8, seed: 1, accumulate: true, max_history: 32.0 }
+        SlcCamera {
+            enabled: true,
+            error_bound: 0.01,
+            picks: 8,
+            seed: 1,
+            accumulate: true,
+            max_history: 32.0,
+        }
     }
 }
 
@@ -191,7 +201,10 @@ impl Plugin for SlcPlugin {
             .add_systems(RenderStartup, init_gpu)
             .add_systems(ExtractSchedule, extract_lights)
             .add_systems(Render, prepare_views.in_set(RenderSystems::PrepareResources))
-            .add_systems(Core3d, shade_view.after(main_opaque_pass_3d).before(main_transparent_pass_3d));
+            .add_systems(
+                Core3d,
+                shade_view.after(main_opaque_pass_3d).before(main_transparent_pass_3d),
+            );
     }
 }
 
@@ -234,7 +247,10 @@ fn extract_lights(
 ) {
     out.0.clear();
     for (light, transform) in &points {
-        out.0.push(BevyLight::Point { position: to_vec3(transform.translation()), candela: candela(light.color, light.intensity) });
+        out.0.push(BevyLight::Point {
+            position: to_vec3(transform.translation()),
+            candela: candela(light.color, light.intensity),
+        });
     }
     for (light, transform) in &spots {
         let outer = light.outer_angle.min(std::f32::consts::FRAC_PI_2 - 1e-4);
@@ -283,10 +299,16 @@ fn add_shaders(app: &mut App) -> Shaders {
     let mut shaders = app.world_mut().resource_mut::<Assets<Shader>>();
     let slc = slc_shared_shaders::wesl::modules()
         .into_iter()
-        .map(|m| shaders.add(Shader::from_wesl(m.source, format!("embedded://slc/{}.wesl", m.name))))
+        .map(|m| {
+            shaders.add(Shader::from_wesl(m.source, format!("embedded://slc/{}.wesl", m.name)))
+        })
         .collect();
-    let unpack = shaders.add(Shader::from_wesl(include_str!("unpack.wesl"), "embedded://slc_bevy/unpack.wesl"));
-    let composite = shaders.add(Shader::from_wesl(include_str!("composite.wesl"), "embedded://slc_bevy/composite.wesl"));
+    let unpack = shaders
+        .add(Shader::from_wesl(include_str!("unpack.wesl"), "embedded://slc_bevy/unpack.wesl"));
+    let composite = shaders.add(Shader::from_wesl(
+        include_str!("composite.wesl"),
+        "embedded://slc_bevy/composite.wesl",
+    ));
     Shaders { unpack, composite, _slc: slc }
 }
 
@@ -303,7 +325,10 @@ fn init_gpu(
     let storage = || texture_storage_2d(GBUFFER_FORMAT, StorageTextureAccess::WriteOnly);
     let unpack_layout = BindGroupLayoutDescriptor::new(
         "slc-bevy unpack",
-        &BindGroupLayoutEntries::sequential(ShaderStages::COMPUTE, (texture_2d(TextureSampleType::Uint), storage(), storage(), storage())),
+        &BindGroupLayoutEntries::sequential(
+            ShaderStages::COMPUTE,
+            (texture_2d(TextureSampleType::Uint), storage(), storage(), storage()),
+        ),
     );
     let unpack = cache.queue_compute_pipeline(ComputePipelineDescriptor {
         label: Some("slc-bevy unpack".into()),
@@ -314,10 +339,21 @@ fn init_gpu(
     });
     let composite_layout = BindGroupLayoutDescriptor::new(
         "slc-bevy composite",
-        &BindGroupLayoutEntries::single(ShaderStages::FRAGMENT, texture_2d(TextureSampleType::Float { filterable: false })),
+        &BindGroupLayoutEntries::single(
+            ShaderStages::FRAGMENT,
+            texture_2d(TextureSampleType::Float { filterable: false }),
+        ),
     );
-    let add = BlendComponent { src_factor: BlendFactor::One, dst_factor: BlendFactor::One, operation: BlendOperation::Add };
-    let keep = BlendComponent { src_factor: BlendFactor::Zero, dst_factor: BlendFactor::One, operation: BlendOperation::Add };
+    let add = BlendComponent {
+        src_factor: BlendFactor::One,
+        dst_factor: BlendFactor::One,
+        operation: BlendOperation::Add,
+    };
+    let keep = BlendComponent {
+        src_factor: BlendFactor::Zero,
+        dst_factor: BlendFactor::One,
+        operation: BlendOperation::Add,
+    };
     let composite = cache.queue_render_pipeline(RenderPipelineDescriptor {
         label: Some("slc-bevy composite".into()),
         layout: vec![composite_layout.clone()],
@@ -334,7 +370,13 @@ fn init_gpu(
         }),
         ..default()
     });
-    commands.insert_resource(Gpu { ctx: GpuContext::from_device(device, queue), unpack_layout, unpack, composite_layout, composite });
+    commands.insert_resource(Gpu {
+        ctx: GpuContext::from_device(device, queue),
+        unpack_layout,
+        unpack,
+        composite_layout,
+        composite,
+    });
 }
 
 /// One camera's slc state.
@@ -370,7 +412,12 @@ struct View {
 #[derive(Resource, Default)]
 struct Views(HashMap<Entity, View>);
 
-fn texture(device: &wgpu::Device, (w, h): (u32, u32), label: &str, usage: wgpu::TextureUsages) -> wgpu::TextureView {
+fn texture(
+    device: &wgpu::Device,
+    (w, h): (u32, u32),
+    label: &str,
+    usage: wgpu::TextureUsages,
+) -> wgpu::TextureView {
     device
         .create_texture(&wgpu::TextureDescriptor {
             label: Some(label),
@@ -390,13 +437,15 @@ fn slc_lights(lights: &[BevyLight], exposure: f32) -> Result<Vec<Light>, String>
     lights
         .iter()
         .map(|l| match *l {
-            BevyLight::Point { position, candela } => {
-                SlcPoint::new(position, candela * exposure).map(Light::Point).map_err(|e| format!("point light at {position}: {e}"))
-            }
+            BevyLight::Point { position, candela } => SlcPoint::new(position, candela * exposure)
+                .map(Light::Point)
+                .map_err(|e| format!("point light at {position}: {e}")),
             // Bevy's spot fall-off is the quadratic one.
-            BevyLight::Spot { position, axis, candela, inner, outer } => SlcSpot::new(position, axis, candela * exposure, inner, outer)
-                .map(|s| Light::Spot(s.with_quadratic_falloff()))
-                .map_err(|e| format!("spot light at {position}: {e}")),
+            BevyLight::Spot { position, axis, candela, inner, outer } => {
+                SlcSpot::new(position, axis, candela * exposure, inner, outer)
+                    .map(|s| Light::Spot(s.with_quadratic_falloff()))
+                    .map_err(|e| format!("spot light at {position}: {e}"))
+            }
         })
         .collect()
 }
@@ -430,7 +479,10 @@ fn new_view(
         d.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("slc-bevy composite"),
             layout: &cache.get_bind_group_layout(&gpu.composite_layout),
-            entries: &[wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(shown) }],
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: wgpu::BindingResource::TextureView(shown),
+            }],
         })
     };
     Ok(View {
@@ -458,7 +510,13 @@ fn new_view(
 
 /// The light types the pass compiles: Bevy's point and spot lights.
 fn slc_shared_lights() -> slc_shared_shaders::LightTypes {
-    slc_shared_shaders::LightTypes { point: true, spot: true, ies: false, triangle: false, vpl: false }
+    slc_shared_shaders::LightTypes {
+        point: true,
+        spot: true,
+        ies: false,
+        triangle: false,
+        vpl: false,
+    }
 }
 
 fn to_glam(m: Mat4) -> glam::Mat4 {
@@ -492,16 +550,22 @@ fn prepare_views(
     views.0.retain(|e, _| live.contains(e));
     for (entity, main, settings, view, camera, msaa, motion) in &cameras {
         let main = main.id();
-        let skip = |views: &mut Views, why: String, report: &mut HashMap<Entity, Result<u64, String>>| {
-            views.0.remove(&entity);
-            report.insert(main, Err(why));
-        };
+        let skip =
+            |views: &mut Views, why: String, report: &mut HashMap<Entity, Result<u64, String>>| {
+                views.0.remove(&entity);
+                report.insert(main, Err(why));
+            };
         if !settings.enabled {
             views.0.remove(&entity);
             continue;
         }
         if msaa.is_some_and(|m| *m != Msaa::Off) {
-            skip(&mut views, "slc needs Msaa::Off (a multisampled target is re-resolved over what slc adds)".into(), &mut report);
+            skip(
+                &mut views,
+                "slc needs Msaa::Off (a multisampled target is re-resolved over what slc adds)"
+                    .into(),
+                &mut report,
+            );
             continue;
         }
         let Some(size) = camera.physical_viewport_size.map(|s| (s.x, s.y)) else { continue };
@@ -528,7 +592,9 @@ fn prepare_views(
             report.insert(main, Ok(0));
             continue;
         }
-        let stale = views.0.get(&entity).is_none_or(|v| v.size != size || v.settings.picks != settings.picks || v.motion != motion);
+        let stale = views.0.get(&entity).is_none_or(|v| {
+            v.size != size || v.settings.picks != settings.picks || v.motion != motion
+        });
         if stale {
             match new_view(&gpu, &cache, size, &lights, settings, main, motion) {
                 Ok(v) => {
@@ -544,7 +610,9 @@ fn prepare_views(
         let updated = if v.lights == lights.len() {
             v.pass.update_lights(&lights).map_err(|e| e.to_string())
         } else {
-            LightSet::new(lights.clone()).map_err(|e| e.to_string()).and_then(|set| v.pass.set_lights(&set).map_err(|e| e.to_string()))
+            LightSet::new(lights.clone())
+                .map_err(|e| e.to_string())
+                .and_then(|set| v.pass.set_lights(&set).map_err(|e| e.to_string()))
         };
         if let Err(e) = updated {
             skip(&mut views, e, &mut report);
@@ -581,13 +649,18 @@ fn shade_view(
     };
     // The plugin's kernels compile in Bevy's pipeline cache (in the
     // background unless the app asks for synchronous compilation).
-    for state in [cache.get_compute_pipeline_state(gpu.unpack), cache.get_render_pipeline_state(gpu.composite)] {
+    for state in [
+        cache.get_compute_pipeline_state(gpu.unpack),
+        cache.get_render_pipeline_state(gpu.composite),
+    ] {
         if let CachedPipelineState::Err(e) = state {
             report(Err(format!("slc-bevy's shaders: {e}")));
             return;
         }
     }
-    let (Some(unpack), Some(composite)) = (cache.get_compute_pipeline(gpu.unpack), cache.get_render_pipeline(gpu.composite)) else {
+    let (Some(unpack), Some(composite)) =
+        (cache.get_compute_pipeline(gpu.unpack), cache.get_render_pipeline(gpu.composite))
+    else {
         return;
     };
     let (Some(depth), Some(gbuffer)) = (prepass.depth_only_view(), prepass.deferred_view()) else {
@@ -606,10 +679,22 @@ fn shade_view(
             label: Some("slc-bevy unpack"),
             layout: &cache.get_bind_group_layout(&gpu.unpack_layout),
             entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(gbuffer) },
-                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&v.normal) },
-                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&v.base) },
-                wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::TextureView(&v.material) },
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: wgpu::BindingResource::TextureView(gbuffer),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: wgpu::BindingResource::TextureView(&v.normal),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: wgpu::BindingResource::TextureView(&v.base),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 3,
+                    resource: wgpu::BindingResource::TextureView(&v.material),
+                },
             ],
         });
         v.unpack_group = Some((gbuffer.clone(), group));
@@ -618,12 +703,19 @@ fn shade_view(
     let composite_group = &v.composite_groups[usize::from(v.settings.accumulate)];
     let encoder = ctx.command_encoder();
     {
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc-bevy unpack"), timestamp_writes: None });
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("slc-bevy unpack"),
+            timestamp_writes: None,
+        });
         pass.set_pipeline(unpack);
         pass.set_bind_group(0, unpack_group, &[]);
         pass.dispatch_workgroups(v.size.0.div_ceil(8), v.size.1.div_ceil(8), 1);
     }
-    let gbuf = GBuffer { surface: Surface::Depth { depth, inv_view_proj: v.inv_view_proj }, normal: &v.normal, eye: v.eye };
+    let gbuf = GBuffer {
+        surface: Surface::Depth { depth, inv_view_proj: v.inv_view_proj },
+        normal: &v.normal,
+        eye: v.eye,
+    };
     let mut inputs = DirectInputs::new(gbuf, &v.output);
     inputs.material = Some(MaterialInputs { base_color: &v.base, metallic_roughness: &v.material });
     let settings = DirectSettings { culling: v.culling, seed: v.settings.seed, frame: v.frame };

@@ -36,7 +36,11 @@ use std::sync::{Arc, Mutex};
 /// The image size: 96×64, times `SLC_BEVY_HEADLESS_SCALE` (an integer, 1
 /// by default; the README's images are made at 5).
 fn size() -> (u32, u32) {
-    let k = std::env::var("SLC_BEVY_HEADLESS_SCALE").ok().and_then(|s| s.parse::<u32>().ok()).unwrap_or(1).clamp(1, 20);
+    let k = std::env::var("SLC_BEVY_HEADLESS_SCALE")
+        .ok()
+        .and_then(|s| s.parse::<u32>().ok())
+        .unwrap_or(1)
+        .clamp(1, 20);
     (96 * k, 64 * k)
 }
 const BLOCK: u32 = 8;
@@ -56,14 +60,18 @@ fn main() {
         return;
     }
     if !filter.is_empty() && !filter.iter().any(|f| NAME.contains(f.as_str())) {
-        println!("\nrunning 0 tests\n\ntest result: ok. 0 passed; 0 failed; 0 ignored; 0 measured; 1 filtered out\n");
+        println!(
+            "\nrunning 0 tests\n\ntest result: ok. 0 passed; 0 failed; 0 ignored; 0 measured; 1 filtered out\n"
+        );
         return;
     }
     let required = std::env::var("SLC_REQUIRE_GPU").is_ok_and(|v| v == "1");
     println!("\nrunning 1 test");
     if !adapter_available() {
         if required {
-            println!("test {NAME} ... FAILED\nSLC_REQUIRE_GPU=1 but no GPU adapter was found\n\ntest result: FAILED. 0 passed; 1 failed\n");
+            println!(
+                "test {NAME} ... FAILED\nSLC_REQUIRE_GPU=1 but no GPU adapter was found\n\ntest result: FAILED. 0 passed; 1 failed\n"
+            );
             std::process::exit(101);
         }
         println!("SKIP {NAME}: no GPU adapter (SLC_REQUIRE_GPU=1 makes this a failure)");
@@ -73,14 +81,19 @@ fn main() {
     let (send, receive) = std::sync::mpsc::channel();
     std::thread::spawn(move || {
         let r = std::panic::catch_unwind(run).unwrap_or_else(|p| {
-            Err(p.downcast_ref::<String>().cloned().or_else(|| p.downcast_ref::<&str>().map(|s| s.to_string())).unwrap_or_default())
+            Err(p
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| p.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_default())
         });
         let _ = send.send(r);
         loop {
             std::thread::park();
         }
     });
-    let result = receive.recv().unwrap_or_else(|_| Err("the test thread ended without a result".into()));
+    let result =
+        receive.recv().unwrap_or_else(|_| Err("the test thread ended without a result".into()));
     use std::io::Write;
     match result {
         Ok(()) => {
@@ -97,7 +110,8 @@ fn main() {
 }
 
 fn adapter_available() -> bool {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+    let instance =
+        wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
     !pollster::block_on(instance.enumerate_adapters(wgpu::Backends::all())).is_empty()
 }
 
@@ -122,7 +136,11 @@ fn build_app() -> App {
     let mut app = App::new();
     app.add_plugins(
         DefaultPlugins
-            .set(WindowPlugin { primary_window: None, exit_condition: ExitCondition::DontExit, ..default() })
+            .set(WindowPlugin {
+                primary_window: None,
+                exit_condition: ExitCondition::DontExit,
+                ..default()
+            })
             .set(RenderPlugin { synchronous_pipeline_compilation: true, ..default() })
             .disable::<WinitPlugin>(),
     )
@@ -149,30 +167,72 @@ fn scene(
     mut materials: ResMut<Assets<StandardMaterial>>,
     mut images: ResMut<Assets<Image>>,
 ) {
-    let floor = materials.add(StandardMaterial { base_color: Color::srgb(0.7, 0.7, 0.7), perceptual_roughness: 0.9, ..default() });
-    commands.spawn((Mesh3d(meshes.add(Plane3d::default().mesh().size(60.0, 60.0))), MeshMaterial3d(floor)));
+    let floor = materials.add(StandardMaterial {
+        base_color: Color::srgb(0.7, 0.7, 0.7),
+        perceptual_roughness: 0.9,
+        ..default()
+    });
+    commands.spawn((
+        Mesh3d(meshes.add(Plane3d::default().mesh().size(60.0, 60.0))),
+        MeshMaterial3d(floor),
+    ));
     let shapes = [
-        (Vec3::new(-8.0, 3.0, -4.0), Vec3::new(4.0, 6.0, 4.0), Color::srgb(0.9, 0.6, 0.2), 1.0, 0.35),
+        (
+            Vec3::new(-8.0, 3.0, -4.0),
+            Vec3::new(4.0, 6.0, 4.0),
+            Color::srgb(0.9, 0.6, 0.2),
+            1.0,
+            0.35,
+        ),
         (Vec3::new(7.0, 2.0, -8.0), Vec3::new(6.0, 4.0, 3.0), Color::srgb(0.2, 0.4, 0.8), 0.0, 0.5),
         (Vec3::new(2.0, 1.5, 6.0), Vec3::new(3.0, 3.0, 3.0), Color::srgb(0.8, 0.8, 0.8), 0.0, 0.2),
     ];
     for (at, size, color, metallic, roughness) in shapes {
-        let m = materials.add(StandardMaterial { base_color: color, metallic, perceptual_roughness: roughness, ..default() });
-        commands.spawn((Mesh3d(meshes.add(Cuboid::from_size(size))), MeshMaterial3d(m), Transform::from_translation(at)));
+        let m = materials.add(StandardMaterial {
+            base_color: color,
+            metallic,
+            perceptual_roughness: roughness,
+            ..default()
+        });
+        commands.spawn((
+            Mesh3d(meshes.add(Cuboid::from_size(size))),
+            MeshMaterial3d(m),
+            Transform::from_translation(at),
+        ));
     }
-    let ball = materials.add(StandardMaterial { base_color: Color::srgb(0.9, 0.2, 0.2), perceptual_roughness: 0.4, ..default() });
-    commands.spawn((Mesh3d(meshes.add(Sphere::new(2.0).mesh().uv(32, 16))), MeshMaterial3d(ball), Transform::from_xyz(-2.0, 2.0, -12.0)));
+    let ball = materials.add(StandardMaterial {
+        base_color: Color::srgb(0.9, 0.2, 0.2),
+        perceptual_roughness: 0.4,
+        ..default()
+    });
+    commands.spawn((
+        Mesh3d(meshes.add(Sphere::new(2.0).mesh().uv(32, 16))),
+        MeshMaterial3d(ball),
+        Transform::from_xyz(-2.0, 2.0, -12.0),
+    ));
 
     let mut rng = rand::rngs::StdRng::seed_from_u64(7);
     for _ in 0..LIGHTS {
-        let p = Vec3::new(rng.random_range(-30.0..30.0), rng.random_range(2.0..22.0), rng.random_range(-30.0..30.0));
+        let p = Vec3::new(
+            rng.random_range(-30.0..30.0),
+            rng.random_range(2.0..22.0),
+            rng.random_range(-30.0..30.0),
+        );
         let color = Color::hsl(rng.random_range(0.0..360.0), 0.7, 0.6);
         let intensity = rng.random_range(2e5..8e5);
-        commands.spawn((PointLight { color, intensity, shadow_maps_enabled: false, ..default() }, Transform::from_translation(p), SceneLight));
+        commands.spawn((
+            PointLight { color, intensity, shadow_maps_enabled: false, ..default() },
+            Transform::from_translation(p),
+            SceneLight,
+        ));
     }
     // Spot lights, aimed at points on the floor, some with a hard edge.
     for i in 0..SPOTS {
-        let p = Vec3::new(rng.random_range(-25.0..25.0), rng.random_range(4.0..20.0), rng.random_range(-25.0..25.0));
+        let p = Vec3::new(
+            rng.random_range(-25.0..25.0),
+            rng.random_range(4.0..20.0),
+            rng.random_range(-25.0..25.0),
+        );
         let target = Vec3::new(rng.random_range(-20.0..20.0), 0.0, rng.random_range(-20.0..20.0));
         let outer = rng.random_range(0.2..0.8);
         let inner = if i % 4 == 0 { outer } else { rng.random_range(0.0..outer) };
@@ -185,7 +245,11 @@ fn scene(
             shadow_maps_enabled: false,
             ..default()
         };
-        commands.spawn((spot, Transform::from_translation(p).looking_at(target, Vec3::Y), SceneLight));
+        commands.spawn((
+            spot,
+            Transform::from_translation(p).looking_at(target, Vec3::Y),
+            SceneLight,
+        ));
     }
 
     let (w, h) = size();
@@ -208,7 +272,8 @@ fn scene(
 /// Switches every scene light to `mode`.
 fn set_mode(app: &mut App, mode: Mode) {
     let world = app.world_mut();
-    let lights: Vec<Entity> = world.query_filtered::<Entity, With<SceneLight>>().iter(world).collect();
+    let lights: Vec<Entity> =
+        world.query_filtered::<Entity, With<SceneLight>>().iter(world).collect();
     let range = if mode == Mode::Unbounded { 1e4 } else { PointLight::default().range };
     for e in lights {
         let mut entity = world.entity_mut(e);
@@ -240,14 +305,16 @@ fn capture(app: &mut App, warmup: usize, frames: usize) -> Vec<Vec<[f32; 3]>> {
             break;
         }
         let out = shots.clone();
-        app.world_mut().spawn(Screenshot::image(image.clone())).observe(move |ev: On<ScreenshotCaptured>| {
-            let img = &ev.image;
-            let px = (0..h).flat_map(|y| (0..w).map(move |x| (x, y))).map(|(x, y)| {
-                let c = img.get_color_at(x, y).expect("readable pixel").to_linear();
-                [c.red, c.green, c.blue]
-            });
-            out.lock().unwrap().push(px.collect());
-        });
+        app.world_mut().spawn(Screenshot::image(image.clone())).observe(
+            move |ev: On<ScreenshotCaptured>| {
+                let img = &ev.image;
+                let px = (0..h).flat_map(|y| (0..w).map(move |x| (x, y))).map(|(x, y)| {
+                    let c = img.get_color_at(x, y).expect("readable pixel").to_linear();
+                    [c.red, c.green, c.blue]
+                });
+                out.lock().unwrap().push(px.collect());
+            },
+        );
         app.update();
     }
     let shots = std::mem::take(&mut *shots.lock().unwrap());
@@ -257,13 +324,18 @@ fn capture(app: &mut App, warmup: usize, frames: usize) -> Vec<Vec<[f32; 3]>> {
 
 fn mean_image(frames: &[Vec<[f32; 3]>]) -> Vec<[f32; 3]> {
     let n = frames.len() as f32;
-    (0..frames[0].len()).map(|i| std::array::from_fn(|c| frames.iter().map(|f| f[i][c]).sum::<f32>() / n)).collect()
+    (0..frames[0].len())
+        .map(|i| std::array::from_fn(|c| frames.iter().map(|f| f[i][c]).sum::<f32>() / n))
+        .collect()
 }
 
 /// `z` with `P(Z > z) = tail` for a standard normal `Z` (`tail` small):
 /// Newton's method on `ln Q(z)` with Mills' ratio `Q(z) ≈ φ(z)/z·(1 − 1/z²)`.
 fn gaussian_quantile(tail: f64) -> f64 {
-    let ln_q = |z: f64| -0.5 * z * z - (2.0 * std::f64::consts::PI).sqrt().ln() - z.ln() + (1.0 - 1.0 / (z * z)).ln();
+    let ln_q = |z: f64| {
+        -0.5 * z * z - (2.0 * std::f64::consts::PI).sqrt().ln() - z.ln()
+            + (1.0 - 1.0 / (z * z)).ln()
+    };
     let mut z = 4.0;
     for _ in 0..50 {
         // d ln Q / dz ≈ −z − 1/z + 2/(z³ − z).
@@ -275,7 +347,9 @@ fn gaussian_quantile(tail: f64) -> f64 {
 
 /// RMSE of the luminance of `a` against `b`.
 fn rmse(a: &[[f32; 3]], b: &[[f32; 3]]) -> f64 {
-    (a.iter().zip(b).map(|(x, y)| (luminance(*x) - luminance(*y)).powi(2)).sum::<f64>() / a.len() as f64).sqrt()
+    (a.iter().zip(b).map(|(x, y)| (luminance(*x) - luminance(*y)).powi(2)).sum::<f64>()
+        / a.len() as f64)
+        .sqrt()
 }
 
 /// Rec. 709 luminance (slc-core's, the temporal pass's).
@@ -320,12 +394,14 @@ fn run() -> Result<(), String> {
     // Phase 2: every light moved, every third despawned (slc rebuilds its
     // light hierarchy; Bevy re-clusters).
     let world = app.world_mut();
-    let lights: Vec<Entity> = world.query_filtered::<Entity, With<SceneLight>>().iter(world).collect();
+    let lights: Vec<Entity> =
+        world.query_filtered::<Entity, With<SceneLight>>().iter(world).collect();
     for (i, e) in lights.into_iter().enumerate() {
         if i % 3 == 0 {
             world.despawn(e);
         } else {
-            world.get_mut::<Transform>(e).expect("light transform").translation += Vec3::new(3.0, -1.0, -2.0);
+            world.get_mut::<Transform>(e).expect("light transform").translation +=
+                Vec3::new(3.0, -1.0, -2.0);
         }
     }
     let report = compare(&mut app, FRAMES, "-moved")?;
@@ -347,7 +423,9 @@ fn run() -> Result<(), String> {
         100.0 * (mean(&accumulated) / mean(&truth) - 1.0)
     );
     if e40 > e1 / 3.0 {
-        return Err(format!("accumulating 40 frames should cut the error at least 3x: {e1:.5} -> {e40:.5}"));
+        return Err(format!(
+            "accumulating 40 frames should cut the error at least 3x: {e1:.5} -> {e40:.5}"
+        ));
     }
     // Unbiased too: the 64-frame means above sit within 0.5% (4σ) of (a),
     // so a 32-frame history's mean within 1%; 2% catches the +6.9% that a
@@ -369,7 +447,8 @@ fn run() -> Result<(), String> {
 fn slc_functions_in_a_bevy_shader(app: &mut App) -> Result<(), String> {
     use bevy::render::render_resource::binding_types::storage_buffer_sized;
     use bevy::render::render_resource::{
-        BindGroupLayoutDescriptor, BindGroupLayoutEntries, CachedPipelineState, ComputePipelineDescriptor, PipelineCache, ShaderStages,
+        BindGroupLayoutDescriptor, BindGroupLayoutEntries, CachedPipelineState,
+        ComputePipelineDescriptor, PipelineCache, ShaderStages,
     };
     use bevy::render::renderer::{RenderDevice, RenderQueue};
     const N: u32 = 256;
@@ -385,20 +464,32 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     out[2u * i + 1u] = slc_weight(2.0, f32(i) * 0.1);
 }
 ";
-    let shader = app.world_mut().resource_mut::<Assets<Shader>>().add(Shader::from_wesl(source, "embedded://slc_bevy_test/probe.wesl"));
-    let layout = BindGroupLayoutDescriptor::new("probe", &BindGroupLayoutEntries::single(ShaderStages::COMPUTE, storage_buffer_sized(false, None)));
-    let id = app.sub_app(bevy::render::RenderApp).world().resource::<PipelineCache>().queue_compute_pipeline(ComputePipelineDescriptor {
-        layout: vec![layout.clone()],
-        shader,
-        entry_point: Some("main".into()),
-        ..default()
-    });
+    let shader = app
+        .world_mut()
+        .resource_mut::<Assets<Shader>>()
+        .add(Shader::from_wesl(source, "embedded://slc_bevy_test/probe.wesl"));
+    let layout = BindGroupLayoutDescriptor::new(
+        "probe",
+        &BindGroupLayoutEntries::single(ShaderStages::COMPUTE, storage_buffer_sized(false, None)),
+    );
+    let id = app
+        .sub_app(bevy::render::RenderApp)
+        .world()
+        .resource::<PipelineCache>()
+        .queue_compute_pipeline(ComputePipelineDescriptor {
+            layout: vec![layout.clone()],
+            shader,
+            entry_point: Some("main".into()),
+            ..default()
+        });
     for _ in 0..20 {
         app.update();
         let world = app.sub_app(bevy::render::RenderApp).world();
         match world.resource::<PipelineCache>().get_compute_pipeline_state(id) {
             CachedPipelineState::Ok(_) => break,
-            CachedPipelineState::Err(e) => return Err(format!("a Bevy shader importing slc's WESL package: {e}")),
+            CachedPipelineState::Err(e) => {
+                return Err(format!("a Bevy shader importing slc's WESL package: {e}"));
+            }
             _ => {}
         }
     }
@@ -436,10 +527,18 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     queue.submit([enc.finish()]);
     read.slice(..).map_async(wgpu::MapMode::Read, |_| {});
     device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| e.to_string())?;
-    let got: Vec<f32> =
-        read.slice(..).get_mapped_range().map_err(|e| e.to_string())?.chunks_exact(4).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]])).collect();
+    let got: Vec<f32> = read
+        .slice(..)
+        .get_mapped_range()
+        .map_err(|e| e.to_string())?
+        .chunks_exact(4)
+        .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+        .collect();
     for i in 0..N {
-        let want = [slc_core::range::random_range2(2.0, slc_core::xi::xi_for(7, 3, i)), slc_core::range::slc_weight(2.0, i as f32 * 0.1)];
+        let want = [
+            slc_core::range::random_range2(2.0, slc_core::xi::xi_for(7, 3, i)),
+            slc_core::range::slc_weight(2.0, i as f32 * 0.1),
+        ];
         for (k, w) in want.into_iter().enumerate() {
             let g = got[(2 * i) as usize + k];
             if (g - w).abs() > 1e-5 * w.abs().max(1.0) {
@@ -447,7 +546,9 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
             }
         }
     }
-    println!("a Bevy WESL shader importing slc::xi and slc::range: {N} lights' ranges and weights equal slc-core's");
+    println!(
+        "a Bevy WESL shader importing slc::xi and slc::range: {N} lights' ranges and weights equal slc-core's"
+    );
     Ok(())
 }
 
@@ -495,7 +596,8 @@ fn compare(app: &mut App, frames: usize, suffix: &str) -> Result<String, String>
     let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
     let frame_means: Vec<f64> = per_frame.iter().map(|f| mean(f)).collect();
     let (ma, mb, mc) = (mean(&a), mean(&b), mean(&blocks(&default)));
-    let se_mean = (frame_means.iter().map(|m| (m - mb).powi(2)).sum::<f64>() / (n - 1.0) / n).sqrt();
+    let se_mean =
+        (frame_means.iter().map(|m| (m - mb).powi(2)).sum::<f64>() / (n - 1.0) / n).sqrt();
     let report = format!(
         "{w}x{h}, image mean luminance: Bevy unbounded {ma:.5}, slc (mean of {frames} frames) {mb:.5} ({:+.2}% ± {:.2}% at 4σ), Bevy default range {mc:.5} ({:+.1}%); worst of {} {BLOCK}x{BLOCK} blocks at {:.2} of its bound ({z:.2}σ + 0.5%)",
         100.0 * (mb / ma - 1.0),
@@ -506,13 +608,18 @@ fn compare(app: &mut App, frames: usize, suffix: &str) -> Result<String, String>
     );
     if worst.0 > 1.0 {
         let i = worst.1;
-        return Err(format!("{report}\nblock {i}: slc {:.5} vs Bevy unbounded {:.5} beyond its bound ({:.2}x)", b[i], a[i], worst.0));
+        return Err(format!(
+            "{report}\nblock {i}: slc {:.5} vs Bevy unbounded {:.5} beyond its bound ({:.2}x)",
+            b[i], a[i], worst.0
+        ));
     }
     if (mb - ma).abs() > 4.0 * se_mean + 0.005 * ma {
         return Err(format!("{report}\nimage mean: slc {mb:.5} vs Bevy unbounded {ma:.5}"));
     }
     if mc > 0.9 * ma {
-        return Err(format!("{report}\nthe scene should show Bevy's range bias: default {mc:.5} vs unbounded {ma:.5}"));
+        return Err(format!(
+            "{report}\nthe scene should show Bevy's range bias: default {mc:.5} vs unbounded {ma:.5}"
+        ));
     }
     Ok(report)
 }

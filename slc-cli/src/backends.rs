@@ -28,7 +28,12 @@ pub fn gpu_context(backend: Backend) -> anyhow::Result<Option<GpuContext>> {
 
 /// The path tracer of `pts` at `width × height`: the GPU's when `gpu`
 /// holds a context, else the CPU's.
-pub fn path_tracer(gpu: Option<&GpuContext>, pts: &PtScene, width: u32, height: u32) -> anyhow::Result<Box<dyn DynPathTracer>> {
+pub fn path_tracer(
+    gpu: Option<&GpuContext>,
+    pts: &PtScene,
+    width: u32,
+    height: u32,
+) -> anyhow::Result<Box<dyn DynPathTracer>> {
     match gpu {
         Some(g) => Ok(Box::new(slc_wgpu::pt::GpuPt::new(g, pts, width, height)?)),
         None => Ok(Box::new(CpuPathTracer::new(pts))),

@@ -94,7 +94,11 @@ fn vpl_configs(a: &BenchArgs, exposure: f32) -> Vec<(Option<f32>, VplSettings)> 
         .map(|(method, param)| {
             let settings = VplSettings {
                 method,
-                error_bound: if method == VplMethod::Slc { param.unwrap_or(0.0) } else { d.error_bound },
+                error_bound: if method == VplMethod::Slc {
+                    param.unwrap_or(0.0)
+                } else {
+                    d.error_bound
+                },
                 range: if method == VplMethod::Clamp { param.unwrap_or(0.0) } else { d.range },
                 exposure,
                 seed: a.seed,
@@ -109,17 +113,24 @@ fn vpl_configs(a: &BenchArgs, exposure: f32) -> Vec<(Option<f32>, VplSettings)> 
 
 /// `--simd`'s value: a [`slc_cpu::simd::SimdPath`] by its name.
 fn simd_path(name: &str) -> Result<slc_cpu::simd::SimdPath, String> {
-    slc_cpu::simd::SimdPath::from_name(name).ok_or_else(|| format!("{name}: one of avx512, avx2, baseline"))
+    slc_cpu::simd::SimdPath::from_name(name)
+        .ok_or_else(|| format!("{name}: one of avx512, avx2, baseline"))
 }
 
 pub fn progress(len: usize) -> anyhow::Result<ProgressBar> {
     let bar = ProgressBar::new(len as u64 + 1);
-    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} {msg} ({elapsed})")?);
+    bar.set_style(ProgressStyle::with_template(
+        "{spinner} [{bar:30}] {pos}/{len} {msg} ({elapsed})",
+    )?);
     Ok(bar)
 }
 
 /// The run with the smallest `key` of `repeat` calls of `render`.
-fn fastest<T>(repeat: u32, mut render: impl FnMut() -> anyhow::Result<T>, key: impl Fn(&T) -> f64) -> anyhow::Result<T> {
+fn fastest<T>(
+    repeat: u32,
+    mut render: impl FnMut() -> anyhow::Result<T>,
+    key: impl Fn(&T) -> f64,
+) -> anyhow::Result<T> {
     let mut best: Option<T> = None;
     for _ in 0..repeat {
         let f = render()?;
@@ -164,14 +175,24 @@ impl Spread {
     fn of(x: &[f64]) -> Spread {
         let n = x.len().max(1) as f64;
         let mean = x.iter().sum::<f64>() / n;
-        let var = if x.len() > 1 { x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0) } else { 0.0 };
+        let var = if x.len() > 1 {
+            x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)
+        } else {
+            0.0
+        };
         Spread { mean, sd: var.sqrt() }
     }
 }
 
 /// One configuration's row of a VPL report (loop evaluations per second are
 /// 0 where the backend does not count evaluations).
-fn vpl_run(settings: &VplSettings, param: Option<f32>, st: &slc_scene::vpl::VplStats, rmse: Spread, stages: Vec<StageMs>) -> Run {
+fn vpl_run(
+    settings: &VplSettings,
+    param: Option<f32>,
+    st: &slc_scene::vpl::VplStats,
+    rmse: Spread,
+    stages: Vec<StageMs>,
+) -> Run {
     Run {
         method: settings.method.name().to_string(),
         param,
@@ -190,7 +211,11 @@ fn vpl_run(settings: &VplSettings, param: Option<f32>, st: &slc_scene::vpl::VplS
 
 /// Fills each run's speed-ups over the unculled (`none`) run, if there is one.
 fn speedups(runs: &mut [Run]) {
-    let Some((shading, frame)) = runs.iter().find(|r| r.method == "none").map(|r| (r.shading_ms, r.total_ms)) else { return };
+    let Some((shading, frame)) =
+        runs.iter().find(|r| r.method == "none").map(|r| (r.shading_ms, r.total_ms))
+    else {
+        return;
+    };
     for r in runs {
         r.shading_speedup = Some(shading / r.shading_ms.max(1e-12));
         r.frame_speedup = Some(frame / r.total_ms.max(1e-12));
@@ -203,12 +228,20 @@ fn run_label(s: &VplSettings, param: Option<f32>) -> String {
 
 pub fn run(a: BenchArgs) -> anyhow::Result<()> {
     if a.repeat == 0 || a.reference_spp == 0 {
-        return Err(anyhow!("--repeat {} and --reference-spp {} must be at least 1", a.repeat, a.reference_spp));
+        return Err(anyhow!(
+            "--repeat {} and --reference-spp {} must be at least 1",
+            a.repeat,
+            a.reference_spp
+        ));
     }
     if let Some(want) = a.simd
         && slc_cpu::simd::SimdPath::prefer(want) != want
     {
-        return Err(anyhow!("--simd {}: this CPU cannot run it (it has {})", want.name(), slc_cpu::simd::SimdPath::best().name()));
+        return Err(anyhow!(
+            "--simd {}: this CPU cannot run it (it has {})",
+            want.name(),
+            slc_cpu::simd::SimdPath::best().name()
+        ));
     }
     if a.flicker {
         if a.scene.app == App::Pt {
@@ -250,21 +283,40 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
             f.stats = f.stats.with_input_times(&inputs);
             Ok(f)
         };
-        let (f, rmse) = fastest_frames(a.repeat, timed, |f: &VplFrame| f.stats.total_ms, |f: &VplFrame| f.image.rmse(&reference))?;
+        let (f, rmse) = fastest_frames(
+            a.repeat,
+            timed,
+            |f: &VplFrame| f.stats.total_ms,
+            |f: &VplFrame| f.image.rmse(&reference),
+        )?;
         let st = &f.stats;
-        let stages =
-            [("G-buffer", st.gbuffer_ms), ("RSM", st.rsm_ms), ("direct", st.direct_ms), ("shading", st.shading_ms), ("denoise", st.denoise_ms)]
-                .map(|(name, ms)| StageMs { name: name.into(), ms })
-                .to_vec();
+        let stages = [
+            ("G-buffer", st.gbuffer_ms),
+            ("RSM", st.rsm_ms),
+            ("direct", st.direct_ms),
+            ("shading", st.shading_ms),
+            ("denoise", st.denoise_ms),
+        ]
+        .map(|(name, ms)| StageMs { name: name.into(), ms })
+        .to_vec();
         runs.push(vpl_run(&settings, param, st, rmse, stages));
         bar.inc(1);
     }
     // The unculled loop's own speed: `none` without the near field, whose
     // evaluations are the far field's light loop alone.
     bar.set_message("unculled loop without the near field (evaluations per second)");
-    let loop_only =
-        VplSettings { method: VplMethod::None, near_radius: Some(0.0), exposure: loaded.exposure, seed: a.seed, ..VplSettings::default() };
-    let f = fastest(a.repeat, || ctx.render(&loop_only).map_err(anyhow::Error::from), |f: &VplFrame| f.stats.shading_ms)?;
+    let loop_only = VplSettings {
+        method: VplMethod::None,
+        near_radius: Some(0.0),
+        exposure: loaded.exposure,
+        seed: a.seed,
+        ..VplSettings::default()
+    };
+    let f = fastest(
+        a.repeat,
+        || ctx.render(&loop_only).map_err(anyhow::Error::from),
+        |f: &VplFrame| f.stats.shading_ms,
+    )?;
     let loop_speed = f.stats.evaluations as f64 / (f.stats.shading_ms * 1e-3).max(1e-12);
     bar.finish_and_clear();
     speedups(&mut runs);
@@ -297,7 +349,8 @@ fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
     let configs = vpl_configs(&a, r.exposure);
     let bar = progress(configs.len())?;
     bar.set_message("reference (all VPLs at every pixel, on the GPU)");
-    let warm = VplSettings { method: VplMethod::None, exposure: r.exposure, ..VplSettings::default() };
+    let warm =
+        VplSettings { method: VplMethod::None, exposure: r.exposure, ..VplSettings::default() };
     // The CLI's settings into the frame's own (its indirect pass's).
     let min_distance = frame.min_distance();
     let pass_settings = |s: &VplSettings| slc_wgpu::frame::indirect_settings(s, min_distance);
@@ -315,12 +368,17 @@ fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
         frame.render(&pass_settings(&settings)?)?;
         let (f, rmse) = fastest_frames(
             a.repeat,
-            |k| frame.render(&pass_settings(&VplSettings { frame: settings.frame + k, ..settings })?).map_err(anyhow::Error::from),
+            |k| {
+                frame
+                    .render(&pass_settings(&VplSettings { frame: settings.frame + k, ..settings })?)
+                    .map_err(anyhow::Error::from)
+            },
             |f: &slc_wgpu::frame::FrameRender| f.stats.shading_ms,
             |f: &slc_wgpu::frame::FrameRender| f.image.rmse(&reference),
         )?;
         timing = f.timing;
-        let stages = f.stages.iter().map(|s| StageMs { name: s.name.to_string(), ms: s.ms }).collect();
+        let stages =
+            f.stages.iter().map(|s| StageMs { name: s.name.to_string(), ms: s.ms }).collect();
         runs.push(vpl_run(&settings, param, &f.stats, rmse, stages));
         bar.inc(1);
     }
@@ -344,7 +402,8 @@ fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
         runs,
     };
     for run in &report.runs {
-        let stages: Vec<String> = run.stages.iter().map(|s| format!("{} {:.3}", s.name, s.ms)).collect();
+        let stages: Vec<String> =
+            run.stages.iter().map(|s| format!("{} {:.3}", s.name, s.ms)).collect();
         println!(
             "{:>6} {:>8}: RMSE {:.5}, frame {:.3} ms ({})",
             run.method,
@@ -380,7 +439,17 @@ fn write_report(a: &BenchArgs, report: &Report) -> anyhow::Result<()> {
     );
     println!(
         "{:<8} {:>8} {:>11} {:>10} {:>9} {:>9} {:>9} {:>9} {:>10} {:>8} {:>8}",
-        "method", "param", "shading ms", "total ms", "rmse", "rmse sd", "lights/px", "kept/px", "evals/s", "shade x", "frame x"
+        "method",
+        "param",
+        "shading ms",
+        "total ms",
+        "rmse",
+        "rmse sd",
+        "lights/px",
+        "kept/px",
+        "evals/s",
+        "shade x",
+        "frame x"
     );
     let speedup = |x: Option<f64>| x.map_or("-".into(), |x| format!("{x:.2}"));
     for r in &report.runs {
@@ -404,11 +473,21 @@ fn write_report(a: &BenchArgs, report: &Report) -> anyhow::Result<()> {
     if report.backend == "cpu" {
         println!(
             "stages (ms): {}",
-            report.runs.first().map_or(String::new(), |r| r.stages.iter().map(|s| s.name.as_str()).collect::<Vec<_>>().join(", "))
+            report.runs.first().map_or(String::new(), |r| r
+                .stages
+                .iter()
+                .map(|s| s.name.as_str())
+                .collect::<Vec<_>>()
+                .join(", "))
         );
         for r in &report.runs {
             let ms: Vec<String> = r.stages.iter().map(|s| format!("{:.1}", s.ms)).collect();
-            println!("  {:<8} {:>8}: {}", r.method, r.param.map_or("-".into(), |p| p.to_string()), ms.join(", "));
+            println!(
+                "  {:<8} {:>8}: {}",
+                r.method,
+                r.param.map_or("-".into(), |p| p.to_string()),
+                ms.join(", ")
+            );
         }
     }
     if let Some(speed) = report.unculled_loop_evaluations_per_second {
@@ -452,21 +531,37 @@ pub fn pt_equal_time(
     lights: &[slc_core::light::Light],
     f: &slc_scene::scene_file::RenderSettings,
 ) -> anyhow::Result<PtReport> {
-    let (w, h) = (a.scene.width.or(f.width).unwrap_or(128), a.scene.height.or(f.height).unwrap_or(128));
+    let (w, h) =
+        (a.scene.width.or(f.width).unwrap_or(128), a.scene.height.or(f.height).unwrap_or(128));
     let pts = PtScene::new(scene, lights)?;
     let (eps, eps_note) = crate::methods::pt_error_bound(a.error_bound, f.error_bound, &pts, 1.0);
     // A reference that culls nothing does not depend on ε: keyed without
     // it, its cache serves every --error-bound.
     let ref_eps = if a.reference_method.culls() { eps } else { PtSettings::default().error_bound };
-    let ref_settings = PtSettings { method: a.reference_method, error_bound: ref_eps, seed: 0x5EED, ..PtSettings::default() };
+    let ref_settings = PtSettings {
+        method: a.reference_method,
+        error_bound: ref_eps,
+        seed: 0x5EED,
+        ..PtSettings::default()
+    };
     let bar = ProgressBar::new(a.reference_spp as u64);
-    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} spp, {msg} (ETA {eta})")?);
+    bar.set_style(ProgressStyle::with_template(
+        "{spinner} [{bar:30}] {pos}/{len} spp, {msg} (ETA {eta})",
+    )?);
     bar.set_message(format!("reference: {}", a.reference_method.name()));
     let mut progress = |done: u32, total: u32| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
     };
-    let r = pt_reference(&mut CpuPathTracer::new(&pts), w, h, &ref_settings, a.reference_spp, Some(&a.cache_dir), &mut progress)?;
+    let r = pt_reference(
+        &mut CpuPathTracer::new(&pts),
+        w,
+        h,
+        &ref_settings,
+        a.reference_spp,
+        Some(&a.cache_dir),
+        &mut progress,
+    )?;
     let (reference, cached) = (r.image, r.cached);
     // The reference stays on the CPU; the methods run on the chosen backend.
     let ctx = gpu_context(a.scene.backend)?;
@@ -481,7 +576,13 @@ pub fn pt_equal_time(
     bar.set_position(0);
     bar.reset_eta();
     for (k, method) in methods.into_iter().enumerate() {
-        bar.set_message(format!("{} ({} of {}), {} s each", method.name(), k + 1, bar.length().unwrap_or(0) / tenths.max(1), a.seconds));
+        bar.set_message(format!(
+            "{} ({} of {}), {} s each",
+            method.name(),
+            k + 1,
+            bar.length().unwrap_or(0) / tenths.max(1),
+            a.seconds
+        ));
         let s = PtSettings { method, error_bound: eps, seed: a.seed, ..PtSettings::default() };
         let mut acc = PtRender::new(w, h);
         let mut series = Vec::new();
@@ -506,7 +607,11 @@ pub fn pt_equal_time(
         app: "pt".into(),
         backend: match &ctx {
             None => "cpu".into(),
-            Some(c) => format!("gpu: {} ({})", c.describe(), if c.timestamps { "GPU timestamps" } else { "wall clock" }),
+            Some(c) => format!(
+                "gpu: {} ({})",
+                c.describe(),
+                if c.timestamps { "GPU timestamps" } else { "wall clock" }
+            ),
         },
         scene: scene.name.clone(),
         width: w,
@@ -525,7 +630,8 @@ pub fn pt_equal_time(
 /// reference limits what it can tell.
 fn print_pt_report(a: &BenchArgs, report: &PtReport) {
     let (w, h) = (report.width, report.height);
-    let uniform = report.runs.iter().find(|r| r.method == "uniform").map_or(f64::NAN, |r| r.rmse_net);
+    let uniform =
+        report.runs.iter().find(|r| r.method == "uniform").map_or(f64::NAN, |r| r.rmse_net);
     println!("backend {}", report.backend);
     if let Some(eps) = report.runs.iter().find_map(|r| r.param) {
         println!("eps     {eps:.4} ({})", report.error_bound_note);
@@ -542,7 +648,10 @@ fn print_pt_report(a: &BenchArgs, report: &PtReport) {
         if report.reference_from_cache { "from cache" } else { "rendered" },
         report.reference_noise
     );
-    println!("{:<14} {:>8} {:>10} {:>6} {:>10} {:>10} {:>16}", "method", "param", "time ms", "spp", "rmse", "rmse net", "uniform/method");
+    println!(
+        "{:<14} {:>8} {:>10} {:>6} {:>10} {:>10} {:>16}",
+        "method", "param", "time ms", "spp", "rmse", "rmse net", "uniform/method"
+    );
     for r in &report.runs {
         println!(
             "{:<14} {:>8} {:>10.0} {:>6} {:>10.5} {:>10.5} {:>16.2}",
@@ -555,10 +664,16 @@ fn print_pt_report(a: &BenchArgs, report: &PtReport) {
             uniform / r.rmse_net
         );
     }
-    println!("(rmse net: the reference's own noise taken out, √(rmse² − {:.5}²); the ratio uses it)", report.reference_noise);
+    println!(
+        "(rmse net: the reference's own noise taken out, √(rmse² − {:.5}²); the ratio uses it)",
+        report.reference_noise
+    );
     let most = report.runs.iter().map(|r| r.spp).max().unwrap_or(0);
     if (a.reference_spp as u64) < 16 * most as u64 {
-        println!("warning: the reference has {} spp, less than 16 × the {most} spp of the fastest method: raise --reference-spp", a.reference_spp);
+        println!(
+            "warning: the reference has {} spp, less than 16 × the {most} spp of the fastest method: raise --reference-spp",
+            a.reference_spp
+        );
     }
     for r in report.runs.iter().filter(|r| report.reference_noise > r.rmse_net / 3.0) {
         println!(
@@ -592,7 +707,8 @@ mod tests {
     /// points for 2,000 passes.
     #[test]
     fn series_are_thinned_on_a_log_scale() {
-        let series: Vec<(f64, u32, f64)> = (1..=2000).map(|p| (p as f64, p, 1.0 / p as f64)).collect();
+        let series: Vec<(f64, u32, f64)> =
+            (1..=2000).map(|p| (p as f64, p, 1.0 / p as f64)).collect();
         let thin = thin_series(&series);
         assert_eq!(&thin[..64], &series[..64]);
         assert_eq!(thin.last(), series.last());

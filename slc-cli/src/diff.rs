@@ -50,12 +50,23 @@ pub fn stats(a: &Image, b: &Image) -> DiffStats {
         }
     }
     let n = n.max(1) as f64;
-    DiffStats { rmse: (se / n).sqrt(), rel_rmse: (rel / n).sqrt(), max_abs, nonfinite: (bad_a, bad_b) }
+    DiffStats {
+        rmse: (se / n).sqrt(),
+        rel_rmse: (rel / n).sqrt(),
+        max_abs,
+        nonfinite: (bad_a, bad_b),
+    }
 }
 
 /// A perceptually ordered colour ramp (dark blue → teal → yellow), `t ∈ [0, 1]`.
 fn ramp(t: f32) -> [u8; 3] {
-    const STOPS: [[f32; 3]; 5] = [[0.05, 0.03, 0.25], [0.23, 0.32, 0.55], [0.13, 0.57, 0.55], [0.37, 0.79, 0.38], [0.99, 0.91, 0.14]];
+    const STOPS: [[f32; 3]; 5] = [
+        [0.05, 0.03, 0.25],
+        [0.23, 0.32, 0.55],
+        [0.13, 0.57, 0.55],
+        [0.37, 0.79, 0.38],
+        [0.99, 0.91, 0.14],
+    ];
     let t = if t.is_finite() { t.clamp(0.0, 1.0) } else { 1.0 } * 4.0;
     let i = (t as usize).min(3);
     let f = t - i as f32;
@@ -75,7 +86,13 @@ pub fn run(a: DiffArgs) -> anyhow::Result<()> {
     };
     let (ia, ib) = (read(&a.a)?, read(&a.b)?);
     if (ia.width, ia.height) != (ib.width, ib.height) {
-        return Err(anyhow!("image sizes differ: {}x{} vs {}x{}", ia.width, ia.height, ib.width, ib.height));
+        return Err(anyhow!(
+            "image sizes differ: {}x{} vs {}x{}",
+            ia.width,
+            ia.height,
+            ib.width,
+            ib.height
+        ));
     }
     let s = stats(&ia, &ib);
     println!("{} vs {} ({}x{})", a.a.display(), a.b.display(), ia.width, ia.height);
@@ -84,14 +101,20 @@ pub fn run(a: DiffArgs) -> anyhow::Result<()> {
     println!("  max |a - b|     {:.6}", s.max_abs);
     println!("  NaN/inf values  {} in A, {} in B", s.nonfinite.0, s.nonfinite.1);
     if let Some(out) = &a.heatmap {
-        let d: Vec<f32> = ia.data.iter().zip(&ib.data).map(|(x, y)| (*x - *y).abs().element_sum() / 3.0).collect();
+        let d: Vec<f32> = ia
+            .data
+            .iter()
+            .zip(&ib.data)
+            .map(|(x, y)| (*x - *y).abs().element_sum() / 3.0)
+            .collect();
         let max = d.iter().cloned().filter(|v| v.is_finite()).fold(0.0f32, f32::max).max(1e-12);
         let bytes: Vec<u8> = d.iter().flat_map(|&v| ramp(v / max)).collect();
         write_rgb8_png(out, ia.width, ia.height, &bytes)?;
         println!("  heat map        {} (yellow = {:.6})", out.display(), max);
     }
     if let Some(limit) = a.max_rmse
-        && (s.rmse.partial_cmp(&limit) != Some(std::cmp::Ordering::Less) && s.rmse != limit || s.nonfinite != (0, 0))
+        && (s.rmse.partial_cmp(&limit) != Some(std::cmp::Ordering::Less) && s.rmse != limit
+            || s.nonfinite != (0, 0))
     {
         println!("  FAIL: RMSE {:.6} over --max-rmse {limit} (or non-finite values)", s.rmse);
         std::process::exit(1);

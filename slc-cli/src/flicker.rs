@@ -59,7 +59,11 @@ impl Sequence {
         }
         let angle = 20f32.to_radians() * (std::f32::consts::TAU * f as f32 / n as f32).sin();
         let rot = Quat::from_axis_angle(Vec3::Y, angle);
-        Camera { position: base.target + rot * (base.position - base.target), up: rot * base.up, ..*base }
+        Camera {
+            position: base.target + rot * (base.position - base.target),
+            up: rot * base.up,
+            ..*base
+        }
     }
 
     /// Where the light is along its path in frame `f` of `n`: 0 before the
@@ -80,11 +84,20 @@ impl Sequence {
         match *base {
             PrimaryLight::Spot { position, direction, intensity, inner, outer } => {
                 let side = direction.any_orthonormal_vector();
-                PrimaryLight::Spot { position: position + side * (0.2 * diagonal * t), direction, intensity, inner, outer }
+                PrimaryLight::Spot {
+                    position: position + side * (0.2 * diagonal * t),
+                    direction,
+                    intensity,
+                    inner,
+                    outer,
+                }
             }
             PrimaryLight::Directional { direction, irradiance } => {
                 let axis = direction.any_orthonormal_vector();
-                PrimaryLight::Directional { direction: Quat::from_axis_angle(axis, 20f32.to_radians() * t) * direction, irradiance }
+                PrimaryLight::Directional {
+                    direction: Quat::from_axis_angle(axis, 20f32.to_radians() * t) * direction,
+                    irradiance,
+                }
             }
         }
     }
@@ -161,7 +174,12 @@ trait Frames {
     /// Milliseconds of one accumulation of a frame's irradiance at the
     /// scene's own pose (fastest of `repeat`), where the backend's clock
     /// means something (the CPU's).
-    fn accumulation_ms(&mut self, camera: &Camera, light: &PrimaryLight, repeat: u32) -> anyhow::Result<Option<f64>>;
+    fn accumulation_ms(
+        &mut self,
+        camera: &Camera,
+        light: &PrimaryLight,
+        repeat: u32,
+    ) -> anyhow::Result<Option<f64>>;
 }
 
 /// The CPU's: one context, histories per accumulated method.
@@ -202,7 +220,12 @@ impl Frames for CpuFrames {
         self.independent.reset();
     }
 
-    fn accumulation_ms(&mut self, camera: &Camera, light: &PrimaryLight, repeat: u32) -> anyhow::Result<Option<f64>> {
+    fn accumulation_ms(
+        &mut self,
+        camera: &Camera,
+        light: &PrimaryLight,
+        repeat: u32,
+    ) -> anyhow::Result<Option<f64>> {
         self.pose(camera, light)?;
         let s = VplSettings { method: VplMethod::Slc, ..VplSettings::default() };
         let e = self.ctx.shade(&s)?.irradiance;
@@ -248,16 +271,22 @@ impl Frames for GpuFrames {
         let s = VplSettings { method: VplMethod::None, ..VplSettings::default() };
         self.plain.render(&slc_wgpu::frame::indirect_settings(&s, self.plain.min_distance())?)?;
         let inputs = self.plain.read_inputs()?;
-        let shaded = slc_wgpu::vpl::GpuVpl::new(&self.gpu, &inputs)?.shade(&VplSettings { method: VplMethod::Reference, ..s })?;
+        let shaded = slc_wgpu::vpl::GpuVpl::new(&self.gpu, &inputs)?
+            .shade(&VplSettings { method: VplMethod::Reference, ..s })?;
         Ok(self.plain.compose_with(&inputs, &shaded.irradiance, &shaded.specular)?)
     }
 
     fn methods(&mut self, slc: &VplSettings, fresh: &VplSettings) -> anyhow::Result<Vec<Image>> {
-        let on = |f: &slc_wgpu::frame::GpuVplFrame, s: &VplSettings| slc_wgpu::frame::indirect_settings(s, f.min_distance());
+        let on = |f: &slc_wgpu::frame::GpuVplFrame, s: &VplSettings| {
+            slc_wgpu::frame::indirect_settings(s, f.min_distance())
+        };
         let spatial = self.plain.render(&on(&self.plain, slc)?)?.image;
         let temporal = self.accumulated.render(&on(&self.accumulated, slc)?)?.image;
         let indep = self.independent.render(&on(&self.independent, fresh)?)?.image;
-        let unculled = self.plain.render(&on(&self.plain, &VplSettings { method: VplMethod::None, ..*slc })?)?.image;
+        let unculled = self
+            .plain
+            .render(&on(&self.plain, &VplSettings { method: VplMethod::None, ..*slc })?)?
+            .image;
         Ok(vec![spatial, temporal, indep, unculled])
     }
 
@@ -266,7 +295,12 @@ impl Frames for GpuFrames {
         self.independent.reset_temporal();
     }
 
-    fn accumulation_ms(&mut self, _: &Camera, _: &PrimaryLight, _: u32) -> anyhow::Result<Option<f64>> {
+    fn accumulation_ms(
+        &mut self,
+        _: &Camera,
+        _: &PrimaryLight,
+        _: u32,
+    ) -> anyhow::Result<Option<f64>> {
         Ok(None)
     }
 }
@@ -287,9 +321,16 @@ pub fn run(a: &BenchArgs, frames: u32) -> anyhow::Result<()> {
     args.height = args.height.or(Some(side));
     args.vpls = args.vpls.or(Some(vpls));
     let r = args.resolve()?;
-    let (base_camera, base_primary, diagonal) = (r.scene.camera, r.scene.primary, r.scene.diagonal());
+    let (base_camera, base_primary, diagonal) =
+        (r.scene.camera, r.scene.primary, r.scene.diagonal());
     let error_bound = VplSettings::default().error_bound;
-    let slc = VplSettings { method: VplMethod::Slc, error_bound, exposure: r.exposure, seed: a.seed, ..VplSettings::default() };
+    let slc = VplSettings {
+        method: VplMethod::Slc,
+        error_bound,
+        exposure: r.exposure,
+        seed: a.seed,
+        ..VplSettings::default()
+    };
     let ts = TemporalSettings::default();
     let (mut runner, backend): (Box<dyn Frames>, String) = if gpu {
         let g = crate::backends::gpu_context(Backend::Gpu)?.context("no GPU context")?;
@@ -302,8 +343,15 @@ pub fn run(a: &BenchArgs, frames: u32) -> anyhow::Result<()> {
         let backend = format!("gpu: {}", g.describe());
         (Box::new(GpuFrames { gpu: g, plain, accumulated, independent, pose: None }), backend)
     } else {
-        let ctx = slc_cpu::vpl::VplContext::new(&r.scene, r.width, r.height, r.rsm_size, args.min_distance)?;
-        let (history, independent) = (FrameHistory::new(r.width, r.height)?, FrameHistory::new(r.width, r.height)?);
+        let ctx = slc_cpu::vpl::VplContext::new(
+            &r.scene,
+            r.width,
+            r.height,
+            r.rsm_size,
+            args.min_distance,
+        )?;
+        let (history, independent) =
+            (FrameHistory::new(r.width, r.height)?, FrameHistory::new(r.width, r.height)?);
         let backend = format!("cpu ({} loops)", slc_cpu::simd::SimdPath::best().name());
         (Box::new(CpuFrames { ctx, history, independent, ts }), backend)
     };
@@ -312,15 +360,25 @@ pub fn run(a: &BenchArgs, frames: u32) -> anyhow::Result<()> {
     for seq in Sequence::ALL {
         runner.reset();
         let names = [SPATIAL, TEMPORAL, INDEPENDENT, UNCULLED];
-        let mut curves: Vec<Curve> = names.iter().map(|m| Curve { method: m.to_string(), rmse: Vec::new(), temporal_rmse: Vec::new() }).collect();
+        let mut curves: Vec<Curve> = names
+            .iter()
+            .map(|m| Curve { method: m.to_string(), rmse: Vec::new(), temporal_rmse: Vec::new() })
+            .collect();
         let mut previous: Option<(Image, Vec<Image>)> = None;
         let mut reference_temporal = Vec::new();
         for f in 0..frames {
             bar.set_message(format!("{} frame {f}", seq.name()));
-            runner.pose(&seq.camera(&base_camera, f, frames), &seq.primary(&base_primary, diagonal, f, frames))?;
+            runner.pose(
+                &seq.camera(&base_camera, f, frames),
+                &seq.primary(&base_primary, diagonal, f, frames),
+            )?;
             let reference = runner.reference()?;
             let this = VplSettings { frame: f, ..slc };
-            let fresh = VplSettings { seed: a.seed.wrapping_add(f.wrapping_mul(0x9e37_79b9)), frame: 0, ..slc };
+            let fresh = VplSettings {
+                seed: a.seed.wrapping_add(f.wrapping_mul(0x9e37_79b9)),
+                frame: 0,
+                ..slc
+            };
             let images = runner.methods(&this, &fresh)?;
             for (c, img) in curves.iter_mut().zip(&images) {
                 c.rmse.push(img.rmse(&reference));
@@ -334,7 +392,11 @@ pub fn run(a: &BenchArgs, frames: u32) -> anyhow::Result<()> {
             previous = Some((reference, images));
             bar.inc(1);
         }
-        sequences.push(SequenceReport { sequence: seq, reference_temporal_rmse: reference_temporal, curves });
+        sequences.push(SequenceReport {
+            sequence: seq,
+            reference_temporal_rmse: reference_temporal,
+            curves,
+        });
     }
     bar.finish_and_clear();
     // The temporal stage's own cost at this size, on the CPU.
@@ -353,7 +415,8 @@ pub fn run(a: &BenchArgs, frames: u32) -> anyhow::Result<()> {
     };
     print_report(&report);
     if let Some(path) = &a.json {
-        std::fs::write(path, serde_json::to_string_pretty(&report)?).with_context(|| format!("cannot write {}", path.display()))?;
+        std::fs::write(path, serde_json::to_string_pretty(&report)?)
+            .with_context(|| format!("cannot write {}", path.display()))?;
     }
     if let Some(plot) = &a.plot {
         crate::plot::flicker(&report, plot)?;
@@ -371,17 +434,30 @@ fn mean(v: &[f64]) -> f64 {
 
 /// The summary the targets are stated in, then every curve's mean.
 fn print_report(r: &FlickerReport) {
-    let cost =
-        r.temporal_ms.map_or("lavapipe and other software adapters check correctness, not speed".into(), |ms| format!("temporal stage {ms:.2} ms"));
+    let cost = r
+        .temporal_ms
+        .map_or("lavapipe and other software adapters check correctness, not speed".into(), |ms| {
+            format!("temporal stage {ms:.2} ms")
+        });
     println!(
         "{} {}x{}, {} VPLs, {} frames per sequence, slc eps = {}, history <= {} frames, {}; {cost}",
         r.scene, r.width, r.height, r.vpls, r.frames, r.error_bound, r.max_history, r.backend
     );
-    println!("{:<8} {:<32} {:>12} {:>12} {:>12}", "sequence", "method", "mean rmse", "last rmse", "temporal rmse");
+    println!(
+        "{:<8} {:<32} {:>12} {:>12} {:>12}",
+        "sequence", "method", "mean rmse", "last rmse", "temporal rmse"
+    );
     for s in &r.sequences {
         for c in &s.curves {
             let last = c.rmse.last().copied().unwrap_or(0.0);
-            println!("{:<8} {:<32} {:>12.6} {:>12.6} {:>12.6}", s.sequence.name(), c.method, mean(&c.rmse), last, mean(&c.temporal_rmse));
+            println!(
+                "{:<8} {:<32} {:>12.6} {:>12.6} {:>12.6}",
+                s.sequence.name(),
+                c.method,
+                mean(&c.rmse),
+                last,
+                mean(&c.temporal_rmse)
+            );
         }
     }
     for s in &r.sequences {
@@ -399,13 +475,20 @@ fn print_report(r: &FlickerReport) {
                 );
             }
             Sequence::Light | Sequence::Orbit => {
-                let worst = te.rmse.iter().zip(&sp.rmse).map(|(t, s)| t / s.max(1e-30)).fold(0.0, f64::max);
-                let mut line = format!("{}: accumulated error at most {worst:.2}x the spatial-only frame's (target <= 1.2)", s.sequence.name());
+                let worst =
+                    te.rmse.iter().zip(&sp.rmse).map(|(t, s)| t / s.max(1e-30)).fold(0.0, f64::max);
+                let mut line = format!(
+                    "{}: accumulated error at most {worst:.2}x the spatial-only frame's (target <= 1.2)",
+                    s.sequence.name()
+                );
                 if s.sequence == Sequence::Light {
                     let stop = (2 * r.frames / 3) as usize;
-                    let back = (stop..te.rmse.len()).find(|&f| te.rmse[f] <= sp.rmse[f]).map(|f| f - stop);
+                    let back =
+                        (stop..te.rmse.len()).find(|&f| te.rmse[f] <= sp.rmse[f]).map(|f| f - stop);
                     line += &match back {
-                        Some(k) => format!("; below it again {k} frames after the light stops (target <= 8)"),
+                        Some(k) => format!(
+                            "; below it again {k} frames after the light stops (target <= 8)"
+                        ),
                         None => "; not below it again before the sequence ends".into(),
                     };
                 }

@@ -34,7 +34,11 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 #[derive(Parser)]
-#[command(name = "slc", version, about = "Stochastic light culling (Tokuyoshi & Harada 2016): render, bench, inspect")]
+#[command(
+    name = "slc",
+    version,
+    about = "Stochastic light culling (Tokuyoshi & Harada 2016): render, bench, inspect"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
@@ -140,7 +144,10 @@ struct RenderArgs {
 /// slc-wgpu can set the same variable.
 fn quiet_headless_vulkan() {
     let unset = |k: &str| std::env::var_os(k).is_none();
-    if ["XDG_RUNTIME_DIR", "WAYLAND_DISPLAY", "DISPLAY", "MESA_VK_DEVICE_SELECT", "NODEVICE_SELECT"].iter().all(|k| unset(k)) {
+    if ["XDG_RUNTIME_DIR", "WAYLAND_DISPLAY", "DISPLAY", "MESA_VK_DEVICE_SELECT", "NODEVICE_SELECT"]
+        .iter()
+        .all(|k| unset(k))
+    {
         // SAFETY: called first thing in `main`, before any thread exists,
         // so nothing reads the environment concurrently.
         #[allow(unsafe_code)]
@@ -163,17 +170,22 @@ fn main() -> ExitCode {
         Some(Command::Diff(a)) => diff::run(a),
         Some(Command::Plot { json, out }) => replot(&json, &out),
         Some(Command::Shaders { out, lights, reservoir_k }) => shaders(&out, &lights, reservoir_k),
-        Some(Command::Suite { out, counts, ies }) => suite::write(&out, &counts, &ies).map(|paths| {
-            println!("slc suite: wrote {} scene files to {}", paths.len(), out.display());
-        }),
+        Some(Command::Suite { out, counts, ies }) => {
+            suite::write(&out, &counts, &ies).map(|paths| {
+                println!("slc suite: wrote {} scene files to {}", paths.len(), out.display());
+            })
+        }
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             // Library errors name no flags; the CLI says which one helps.
-            let gpu_limit = e
-                .chain()
-                .any(|c| matches!(c.downcast_ref::<slc_wgpu::GpuError>(), Some(slc_wgpu::GpuError::NoAdapter(_) | slc_wgpu::GpuError::Limit { .. })));
+            let gpu_limit = e.chain().any(|c| {
+                matches!(
+                    c.downcast_ref::<slc_wgpu::GpuError>(),
+                    Some(slc_wgpu::GpuError::NoAdapter(_) | slc_wgpu::GpuError::Limit { .. })
+                )
+            });
             let hint = if gpu_limit { " (--backend cpu renders on the CPU)" } else { "" };
             eprintln!("error: {e:#}{hint}");
             ExitCode::FAILURE
@@ -215,15 +227,23 @@ fn render(a: RenderArgs) -> anyhow::Result<()> {
     spinner.set_message("writing images");
     let written = write_outputs(&frame.image, &a.out, loaded.exposure)?;
     let st = frame.stats;
-    let versus_none = if settings.method != VplMethod::None && settings.method != VplMethod::Reference {
-        spinner.set_message("unculled interleaved image for the RMSE");
-        let none = ctx.render(&VplSettings { method: VplMethod::None, ..settings })?;
-        Some((frame.image.rmse(&none.image), none.stats.shading_ms))
-    } else {
-        None
-    };
+    let versus_none =
+        if settings.method != VplMethod::None && settings.method != VplMethod::Reference {
+            spinner.set_message("unculled interleaved image for the RMSE");
+            let none = ctx.render(&VplSettings { method: VplMethod::None, ..settings })?;
+            Some((frame.image.rmse(&none.image), none.stats.shading_ms))
+        } else {
+            None
+        };
     spinner.finish_and_clear();
-    println!("slc render: {} {}x{}, {} VPLs, method {}", ctx.scene().name, loaded.width, loaded.height, st.vpls, settings.method.name());
+    println!(
+        "slc render: {} {}x{}, {} VPLs, method {}",
+        ctx.scene().name,
+        loaded.width,
+        loaded.height,
+        st.vpls,
+        settings.method.name()
+    );
     println!(
         "  time        {:.1} ms total, {:.1} ms shading (G-buffer {:.1}, RSM {:.1}, direct {:.1}, denoise {:.1})",
         st.total_ms, st.shading_ms, st.gbuffer_ms, st.rsm_ms, st.direct_ms, st.denoise_ms
@@ -235,7 +255,12 @@ fn render(a: RenderArgs) -> anyhow::Result<()> {
             speed_vs_none(none_ms, st.shading_ms)
         );
     }
-    println!("  wrote       {} and {} ({:.1} s)", written.0.display(), written.1.display(), t0.elapsed().as_secs_f64());
+    println!(
+        "  wrote       {} and {} ({:.1} s)",
+        written.0.display(),
+        written.1.display(),
+        t0.elapsed().as_secs_f64()
+    );
     Ok(())
 }
 
@@ -246,7 +271,9 @@ fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
     let r = a.scene.resolve()?;
     let settings = vpl_settings(&a.method_flags(), &r.file, r.exposure)?;
     if settings.method == VplMethod::Reference {
-        return Err(anyhow!("--method reference (every VPL at every pixel) runs on the CPU; use --backend cpu"));
+        return Err(anyhow!(
+            "--method reference (every VPL at every pixel) runs on the CPU; use --backend cpu"
+        ));
     }
     let gpu = gpu_context(Backend::Gpu)?.context("no GPU context")?;
     let mut frame = a.scene.gpu_frame(&gpu, &r)?;
@@ -258,19 +285,33 @@ fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
     let written = write_outputs(&out.image, &a.out, r.exposure)?;
     let versus_none = if settings.method != VplMethod::None {
         spinner.set_message("unculled interleaved frame for the RMSE");
-        let none = frame.render(&slc_wgpu::passes::IndirectSettings { culling: slc_wgpu::Culling::None, ..st })?;
+        let none = frame.render(&slc_wgpu::passes::IndirectSettings {
+            culling: slc_wgpu::Culling::None,
+            ..st
+        })?;
         Some((out.image.rmse(&none.image), none.stats.shading_ms))
     } else {
         None
     };
     spinner.finish_and_clear();
     let st = out.stats;
-    println!("slc render: {} {}x{}, {} VPLs, method {}, whole frame on the GPU", r.scene.name, r.width, r.height, st.vpls, settings.method.name());
+    println!(
+        "slc render: {} {}x{}, {} VPLs, method {}, whole frame on the GPU",
+        r.scene.name,
+        r.width,
+        r.height,
+        st.vpls,
+        settings.method.name()
+    );
     println!("  GPU         {}", gpu.describe());
     println!("  timing      {}", timing_note(out.timing));
-    let stages: Vec<String> = out.stages.iter().map(|s| format!("{} {:.3}", s.name, s.ms)).collect();
+    let stages: Vec<String> =
+        out.stages.iter().map(|s| format!("{} {:.3}", s.name, s.ms)).collect();
     println!("  stages (ms) {}", stages.join(", "));
-    println!("  time        {:.3} ms frame, {:.3} ms shading (light update + shading)", st.total_ms, st.shading_ms);
+    println!(
+        "  time        {:.3} ms frame, {:.3} ms shading (light update + shading)",
+        st.total_ms, st.shading_ms
+    );
     println!("  lights/px   {:.1} kept", st.kept_per_pixel);
     if let Some((rmse, none_ms)) = versus_none {
         println!(
@@ -278,7 +319,12 @@ fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
             speed_vs_none(none_ms, st.shading_ms)
         );
     }
-    println!("  wrote       {} and {} ({:.1} s)", written.0.display(), written.1.display(), t0.elapsed().as_secs_f64());
+    println!(
+        "  wrote       {} and {} ({:.1} s)",
+        written.0.display(),
+        written.1.display(),
+        t0.elapsed().as_secs_f64()
+    );
     Ok(())
 }
 
@@ -286,14 +332,19 @@ fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
 /// slower" or, where culling costs more than it saves, "1.3x faster".
 fn speed_vs_none(none_ms: f64, method_ms: f64) -> String {
     let r = none_ms / method_ms.max(1e-9);
-    if r >= 1.0 { format!("{r:.1}x slower") } else { format!("{:.1}x faster: culling costs more than it saves here", 1.0 / r) }
+    if r >= 1.0 {
+        format!("{r:.1}x slower")
+    } else {
+        format!("{:.1}x faster: culling costs more than it saves here", 1.0 / r)
+    }
 }
 
 /// `slc render --app pt`: progressive path tracing on the chosen backend.
 fn render_pt(a: RenderArgs) -> anyhow::Result<()> {
     let t0 = Instant::now();
     let (scene, lights, f) = a.scene.scene()?;
-    let (w, h) = (a.scene.width.or(f.width).unwrap_or(512), a.scene.height.or(f.height).unwrap_or(512));
+    let (w, h) =
+        (a.scene.width.or(f.width).unwrap_or(512), a.scene.height.or(f.height).unwrap_or(512));
     if !(1..=16384).contains(&w) || !(1..=16384).contains(&h) {
         return Err(RenderError::Size(w, h).into());
     }
@@ -340,17 +391,35 @@ fn render_pt(a: RenderArgs) -> anyhow::Result<()> {
     let image = acc.image();
     let exposure = settings.exposure;
     let written = write_outputs(&image, &a.out, exposure)?;
-    println!("slc render: {} {}x{}, path tracing, {} lights, method {}", scene.name, w, h, pts.light_count(), settings.method.name());
+    println!(
+        "slc render: {} {}x{}, path tracing, {} lights, method {}",
+        scene.name,
+        w,
+        h,
+        pts.light_count(),
+        settings.method.name()
+    );
     println!("  lights      {}", PT_LIGHTS_NOTE);
     if settings.method.culls() {
         println!("  error bound ε = {:.4} ({eps_note})", settings.error_bound);
     }
     if let Some(c) = &ctx {
-        let timing = if c.timestamps { "GPU timestamps" } else { "wall clock, no timestamp queries" };
+        let timing =
+            if c.timestamps { "GPU timestamps" } else { "wall clock, no timestamp queries" };
         println!("  backend     GPU {} ({timing})", c.describe());
     }
-    println!("  time        {:.1} ms for {} samples per pixel ({:.2} spp/s)", acc.time_ms, acc.passes, acc.passes as f64 / (acc.time_ms * 1e-3));
-    println!("  wrote       {} and {} ({:.1} s)", written.0.display(), written.1.display(), t0.elapsed().as_secs_f64());
+    println!(
+        "  time        {:.1} ms for {} samples per pixel ({:.2} spp/s)",
+        acc.time_ms,
+        acc.passes,
+        acc.passes as f64 / (acc.time_ms * 1e-3)
+    );
+    println!(
+        "  wrote       {} and {} ({:.1} s)",
+        written.0.display(),
+        written.1.display(),
+        t0.elapsed().as_secs_f64()
+    );
     Ok(())
 }
 
@@ -396,22 +465,41 @@ pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> anyhow::Result<(
 /// `vpl_near_glossy`, `irradiance_export_glossy`, `frame_compose_glossy`),
 /// and the temporal pass (`temporal`, `temporal_motion`).
 fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
-    use slc_shared_shaders::{CullMethod, Features, Kernel, LightTypes, OutputFormat, Selection, SurfaceSource, generate_module, translate};
+    use slc_shared_shaders::{
+        CullMethod, Features, Kernel, LightTypes, OutputFormat, Selection, SurfaceSource,
+        generate_module, translate,
+    };
     let lights = LightTypes::parse(lights)?;
     std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
     let base = Features { lights, reservoir_k, ..Features::default() };
     let vpl = LightTypes { vpl: true, ..LightTypes::default() };
-    let mut jobs: Vec<(String, Kernel, Features)> =
-        [Kernel::LightUpdate, Kernel::BshRefit, Kernel::BshReservoir, Kernel::PtConnect, Kernel::PtExtend]
-            .into_iter()
-            .map(|k| (k.name().to_string(), k, base))
-            .collect();
-    let direct = Features { selection: Selection::Weighted, surface: SurfaceSource::R32Depth, shadows: false, ..base };
+    let mut jobs: Vec<(String, Kernel, Features)> = [
+        Kernel::LightUpdate,
+        Kernel::BshRefit,
+        Kernel::BshReservoir,
+        Kernel::PtConnect,
+        Kernel::PtExtend,
+    ]
+    .into_iter()
+    .map(|k| (k.name().to_string(), k, base))
+    .collect();
+    let direct = Features {
+        selection: Selection::Weighted,
+        surface: SurfaceSource::R32Depth,
+        shadows: false,
+        ..base
+    };
     for k in [Kernel::LightRanges, Kernel::DirectLight] {
         jobs.push((k.name().to_string(), k, direct));
     }
-    for (m, name) in [(CullMethod::Slc, "slc"), (CullMethod::Clamp, "clamp"), (CullMethod::None, "none")] {
-        jobs.push((format!("vpl_tiled_{name}"), Kernel::VplTiled, Features { lights: vpl, method: m, ..base }));
+    for (m, name) in
+        [(CullMethod::Slc, "slc"), (CullMethod::Clamp, "clamp"), (CullMethod::None, "none")]
+    {
+        jobs.push((
+            format!("vpl_tiled_{name}"),
+            Kernel::VplTiled,
+            Features { lights: vpl, method: m, ..base },
+        ));
     }
     for k in [
         Kernel::VplDenoise,
@@ -427,8 +515,14 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
     // The glossy variants (Features::glossy): the glTF BRDF at glossy
     // receivers, the specular correction beside the irradiance.
     let glossy = Features { lights: vpl, glossy: true, ..base };
-    for (m, name) in [(CullMethod::Slc, "slc"), (CullMethod::Clamp, "clamp"), (CullMethod::None, "none")] {
-        jobs.push((format!("vpl_tiled_{name}_glossy"), Kernel::VplTiled, Features { method: m, ..glossy }));
+    for (m, name) in
+        [(CullMethod::Slc, "slc"), (CullMethod::Clamp, "clamp"), (CullMethod::None, "none")]
+    {
+        jobs.push((
+            format!("vpl_tiled_{name}_glossy"),
+            Kernel::VplTiled,
+            Features { method: m, ..glossy },
+        ));
     }
     for k in [Kernel::VplNear, Kernel::IrradianceExport, Kernel::FrameCompose] {
         jobs.push((format!("{}_glossy", k.name()), k, glossy));
@@ -437,7 +531,11 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
     // the frame's kernels) and by the engine's motion vectors.
     let temporal = Features { lights: vpl, output_format: OutputFormat::Rgba32Float, ..base };
     jobs.push(("temporal".into(), Kernel::Temporal, temporal));
-    jobs.push(("temporal_motion".into(), Kernel::Temporal, Features { motion_vectors: true, ..temporal }));
+    jobs.push((
+        "temporal_motion".into(),
+        Kernel::Temporal,
+        Features { motion_vectors: true, ..temporal },
+    ));
     let write = |name: &str, ext: &str, bytes: &[u8]| {
         let p = out.join(format!("{name}.{ext}"));
         std::fs::write(&p, bytes).with_context(|| format!("cannot write {}", p.display()))
@@ -465,37 +563,61 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
     for m in &modules {
         let p = dir.join(format!("{}.wgsl", m.name));
-        std::fs::write(&p, m.composable()).with_context(|| format!("cannot write {}", p.display()))?;
+        std::fs::write(&p, m.composable())
+            .with_context(|| format!("cannot write {}", p.display()))?;
     }
     // The same as a WESL package (`import slc::range::{...};`).
     let wesl = slc_shared_shaders::wesl::modules();
     let wesl_dir = out.join("wesl").join("slc");
-    std::fs::create_dir_all(&wesl_dir).with_context(|| format!("cannot create {}", wesl_dir.display()))?;
+    std::fs::create_dir_all(&wesl_dir)
+        .with_context(|| format!("cannot create {}", wesl_dir.display()))?;
     for m in &wesl {
         let p = wesl_dir.join(format!("{}.wesl", m.name));
         std::fs::write(&p, &m.source).with_context(|| format!("cannot write {}", p.display()))?;
     }
-    println!("wrote {} kernels to {} (lights: {})", jobs.len(), out.display(), lights.names().join(", "));
-    println!("wrote {} naga_oil modules to {} (#import slc::<module>::<item>)", modules.len(), dir.display());
-    println!("wrote {} WESL modules to {} (import slc::<module>::{{<items>}};)", wesl.len(), wesl_dir.display());
+    println!(
+        "wrote {} kernels to {} (lights: {})",
+        jobs.len(),
+        out.display(),
+        lights.names().join(", ")
+    );
+    println!(
+        "wrote {} naga_oil modules to {} (#import slc::<module>::<item>)",
+        modules.len(),
+        dir.display()
+    );
+    println!(
+        "wrote {} WESL modules to {} (import slc::<module>::{{<items>}};)",
+        wesl.len(),
+        wesl_dir.display()
+    );
     Ok(())
 }
 
 /// Plots a bench report again: a VPL report as speed against error, a
 /// path-tracing one as RMSE over time (told apart by its `app`).
 fn replot(json: &Path, out: &Path) -> anyhow::Result<()> {
-    let text = std::fs::read_to_string(json).with_context(|| format!("cannot read {}", json.display()))?;
-    let value: serde_json::Value = serde_json::from_str(&text).with_context(|| format!("{}", json.display()))?;
+    let text =
+        std::fs::read_to_string(json).with_context(|| format!("cannot read {}", json.display()))?;
+    let value: serde_json::Value =
+        serde_json::from_str(&text).with_context(|| format!("{}", json.display()))?;
     match value.get("app").and_then(|a| a.as_str()) {
         Some("pt") => {
-            let report: report::PtReport = serde_json::from_value(value).with_context(|| format!("{} (a path-tracing report)", json.display()))?;
+            let report: report::PtReport = serde_json::from_value(value)
+                .with_context(|| format!("{} (a path-tracing report)", json.display()))?;
             plot::rmse_over_time(&report, out)?;
         }
         Some("vpl") => {
-            let report: report::Report = serde_json::from_value(value).with_context(|| format!("{} (a VPL report)", json.display()))?;
+            let report: report::Report = serde_json::from_value(value)
+                .with_context(|| format!("{} (a VPL report)", json.display()))?;
             plot::speed_vs_error(&report, out)?;
         }
-        other => return Err(anyhow!("{}: not a slc bench report (its \"app\" is {other:?}, expected \"vpl\" or \"pt\")", json.display())),
+        other => {
+            return Err(anyhow!(
+                "{}: not a slc bench report (its \"app\" is {other:?}, expected \"vpl\" or \"pt\")",
+                json.display()
+            ));
+        }
     }
     println!("wrote {}", out.display());
     Ok(())
@@ -503,7 +625,8 @@ fn replot(json: &Path, out: &Path) -> anyhow::Result<()> {
 
 fn ies(path: &Path, plot_path: Option<&Path>) -> anyhow::Result<()> {
     let bytes = std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
-    let p = slc_core::ies::IesProfile::parse_bytes(&bytes).with_context(|| format!("{}", path.display()))?;
+    let p = slc_core::ies::IesProfile::parse_bytes(&bytes)
+        .with_context(|| format!("{}", path.display()))?;
     println!("{}", path.display());
     println!("  format              {:?}", p.format);
     println!("  photometric type    {:?}", p.photometric_type);
@@ -511,19 +634,34 @@ fn ies(path: &Path, plot_path: Option<&Path>) -> anyhow::Result<()> {
         "  tilt                {}",
         match &p.tilt {
             slc_core::ies::Tilt::None => "NONE".to_string(),
-            slc_core::ies::Tilt::Include { angles, .. } => format!("INCLUDE ({} angles, not applied)", angles.len()),
+            slc_core::ies::Tilt::Include { angles, .. } =>
+                format!("INCLUDE ({} angles, not applied)", angles.len()),
             slc_core::ies::Tilt::File(f) => format!("file {f} (not applied)"),
         }
     );
     println!("  lamps               {}", p.lamps);
     println!(
         "  lumens per lamp     {}",
-        if p.lumens_per_lamp < 0.0 { "-1 (absolute photometry)".to_string() } else { p.lumens_per_lamp.to_string() }
+        if p.lumens_per_lamp < 0.0 {
+            "-1 (absolute photometry)".to_string()
+        } else {
+            p.lumens_per_lamp.to_string()
+        }
     );
     println!("  candela multiplier  {}", p.multiplier);
     println!("  ballast factor      {}", p.ballast_factor);
-    println!("  vertical angles     {} from {} to {}", p.vertical.len(), p.vertical[0], p.vertical[p.vertical.len() - 1]);
-    println!("  horizontal angles   {} from {} to {}", p.horizontal.len(), p.horizontal[0], p.horizontal[p.horizontal.len() - 1]);
+    println!(
+        "  vertical angles     {} from {} to {}",
+        p.vertical.len(),
+        p.vertical[0],
+        p.vertical[p.vertical.len() - 1]
+    );
+    println!(
+        "  horizontal angles   {} from {} to {}",
+        p.horizontal.len(),
+        p.horizontal[0],
+        p.horizontal[p.horizontal.len() - 1]
+    );
     println!("  peak candela        {:.1} cd", p.max_candela());
     println!("  total flux          {:.1} lm (integrated from the table)", p.total_flux());
     if let Some(out) = plot_path {

@@ -37,13 +37,21 @@ pub struct MethodFlags<'a> {
 }
 
 /// The VPL settings of a run: flags, else the scene file's, else the defaults.
-pub fn vpl_settings(m: &MethodFlags, f: &slc_scene::scene_file::RenderSettings, exposure: f32) -> anyhow::Result<VplSettings> {
+pub fn vpl_settings(
+    m: &MethodFlags,
+    f: &slc_scene::scene_file::RenderSettings,
+    exposure: f32,
+) -> anyhow::Result<VplSettings> {
     let d = VplSettings::default();
     Ok(VplSettings {
         method: vpl_method(m.method.or(f.method.as_deref()).unwrap_or("slc"))?,
         error_bound: match m.error_bound {
             Some(BoundArg::Value(e)) => e,
-            Some(BoundArg::Auto) => return Err(anyhow!("--error-bound auto applies to path tracing (--app pt); give the VPL application a number")),
+            Some(BoundArg::Auto) => {
+                return Err(anyhow!(
+                    "--error-bound auto applies to path tracing (--app pt); give the VPL application a number"
+                ));
+            }
             None => f.error_bound.unwrap_or(d.error_bound),
         },
         range: m.range.or(f.range).unwrap_or(d.range),
@@ -78,13 +86,23 @@ pub fn bound_arg(s: &str) -> anyhow::Result<BoundArg> {
 /// The path tracer's ε and how it was set: the flag's number, else the
 /// scene file's, else (or with `auto`) the automatic bound of `pts`
 /// (PtSettings' fixed default where the scene has no lights or surfaces).
-pub fn pt_error_bound(flag: Option<BoundArg>, file: Option<f32>, pts: &PtScene, exposure: f32) -> (f32, String) {
+pub fn pt_error_bound(
+    flag: Option<BoundArg>,
+    file: Option<f32>,
+    pts: &PtScene,
+    exposure: f32,
+) -> (f32, String) {
     match (flag, file) {
         (Some(BoundArg::Value(e)), _) => (e, "given".into()),
         (None, Some(e)) => (e, "the scene file's".into()),
         _ => match auto_error_bound(pts, exposure, TARGET_CANDIDATES) {
-            Some(e) => (e, format!("automatic: {TARGET_CANDIDATES} expected candidates per surface point")),
-            None => (PtSettings::default().error_bound, "the fixed default: no lights or surfaces to set it from".into()),
+            Some(e) => {
+                (e, format!("automatic: {TARGET_CANDIDATES} expected candidates per surface point"))
+            }
+            None => (
+                PtSettings::default().error_bound,
+                "the fixed default: no lights or surfaces to set it from".into(),
+            ),
         },
     }
 }

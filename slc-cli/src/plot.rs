@@ -15,7 +15,11 @@ fn register_font() {
     ONCE.call_once(|| {
         // Registration fails only for unparsable font data, which a bundled
         // font is not; the SVG backend never needs it.
-        let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, epaint_default_fonts::UBUNTU_LIGHT);
+        let _ = plotters::style::register_font(
+            "sans-serif",
+            FontStyle::Normal,
+            epaint_default_fonts::UBUNTU_LIGHT,
+        );
     });
 }
 
@@ -91,32 +95,49 @@ pub fn pareto_front(pts: &[(f64, f64)]) -> Vec<(f64, f64)> {
 /// RMSE (log) against shading time (log), one point per run, each method's
 /// Pareto front joined by a line.
 pub fn speed_vs_error(report: &Report, path: &Path) -> anyhow::Result<()> {
-    with_backend(path, (960, 640), |a| speed_vs_error_on(report, a), |a| speed_vs_error_on(report, a))
+    with_backend(
+        path,
+        (960, 640),
+        |a| speed_vs_error_on(report, a),
+        |a| speed_vs_error_on(report, a),
+    )
 }
 
-fn speed_vs_error_on<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB, Shift>) -> anyhow::Result<()> {
+fn speed_vs_error_on<DB: DrawingBackend>(
+    report: &Report,
+    root: &DrawingArea<DB, Shift>,
+) -> anyhow::Result<()> {
     let err = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("{e}");
     root.fill(&WHITE).map_err(err)?;
     let runs: Vec<_> = report.runs.iter().filter(|r| r.rmse > 0.0 && r.shading_ms > 0.0).collect();
     if runs.is_empty() {
         return Err(anyhow!("no run with positive RMSE and time to plot"));
     }
-    let (tmin, tmax) = runs.iter().fold((f64::MAX, 0.0f64), |(a, b), r| (a.min(r.shading_ms), b.max(r.shading_ms)));
+    let (tmin, tmax) = runs
+        .iter()
+        .fold((f64::MAX, 0.0f64), |(a, b), r| (a.min(r.shading_ms), b.max(r.shading_ms)));
     // One frame's spread about the mean RMSE (`rmse_sd`, where the run
     // rendered several frames) as an error bar, cut where it would reach 0.
     let spread = |r: &crate::report::Run| {
         let sd = r.rmse_sd.unwrap_or(0.0);
         ((r.rmse - sd).max(r.rmse * 0.1), r.rmse + sd)
     };
-    let (emin, emax) = runs.iter().fold((f64::MAX, 0.0f64), |(a, b), r| (a.min(spread(r).0), b.max(spread(r).1)));
-    let title = format!("Speed vs error: {} {}x{}, {} lights, {} backend", report.scene, report.width, report.height, report.lights, report.backend);
+    let (emin, emax) =
+        runs.iter().fold((f64::MAX, 0.0f64), |(a, b), r| (a.min(spread(r).0), b.max(spread(r).1)));
+    let title = format!(
+        "Speed vs error: {} {}x{}, {} lights, {} backend",
+        report.scene, report.width, report.height, report.lights, report.backend
+    );
     let mut chart = ChartBuilder::on(root)
         .caption(title, ("sans-serif", 24))
         .margin(16)
         .x_label_area_size(48)
         .y_label_area_size(72)
         // log10 of both on linear axes: evenly spaced, always-labelled ticks.
-        .build_cartesian_2d((tmin / 1.4).log10()..(tmax * 1.4).log10(), (emin / 1.4).log10()..(emax * 1.4).log10())
+        .build_cartesian_2d(
+            (tmin / 1.4).log10()..(tmax * 1.4).log10(),
+            (emin / 1.4).log10()..(emax * 1.4).log10(),
+        )
         .map_err(err)?;
     chart
         .configure_mesh()
@@ -139,19 +160,36 @@ fn speed_vs_error_on<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB,
     methods.dedup();
     for m in methods {
         let color = method_color(m);
-        let pts: Vec<(f64, f64)> = runs.iter().filter(|r| r.method == m).map(|r| (r.shading_ms.log10(), r.rmse.log10())).collect();
+        let pts: Vec<(f64, f64)> = runs
+            .iter()
+            .filter(|r| r.method == m)
+            .map(|r| (r.shading_ms.log10(), r.rmse.log10()))
+            .collect();
         let front = pareto_front(&pts);
         chart
             .draw_series(LineSeries::new(front, color.stroke_width(2)))
             .map_err(err)?
             .label(m.to_string())
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3))
+            });
         chart.draw_series(pts.iter().map(|&p| Circle::new(p, 5, color.filled()))).map_err(err)?;
         chart
-            .draw_series(runs.iter().filter(|r| r.method == m && r.rmse_sd.is_some_and(|sd| sd > 0.0)).map(|r| {
-                let (lo, hi) = spread(r);
-                ErrorBar::new_vertical(r.shading_ms.log10(), lo.log10(), r.rmse.log10(), hi.log10(), color.stroke_width(1), 8)
-            }))
+            .draw_series(
+                runs.iter().filter(|r| r.method == m && r.rmse_sd.is_some_and(|sd| sd > 0.0)).map(
+                    |r| {
+                        let (lo, hi) = spread(r);
+                        ErrorBar::new_vertical(
+                            r.shading_ms.log10(),
+                            lo.log10(),
+                            r.rmse.log10(),
+                            hi.log10(),
+                            color.stroke_width(1),
+                            8,
+                        )
+                    },
+                ),
+            )
             .map_err(err)?;
         chart
             .draw_series(runs.iter().filter(|r| r.method == m && r.param.is_some()).map(|r| {
@@ -169,25 +207,44 @@ fn speed_vs_error_on<DB: DrawingBackend>(report: &Report, root: &DrawingArea<DB,
 
 /// Path tracing: RMSE (log) against time (log) per method.
 pub fn rmse_over_time(report: &PtReport, path: &Path) -> anyhow::Result<()> {
-    with_backend(path, (960, 640), |a| rmse_over_time_on(report, a), |a| rmse_over_time_on(report, a))
+    with_backend(
+        path,
+        (960, 640),
+        |a| rmse_over_time_on(report, a),
+        |a| rmse_over_time_on(report, a),
+    )
 }
 
-fn rmse_over_time_on<DB: DrawingBackend>(report: &PtReport, root: &DrawingArea<DB, Shift>) -> anyhow::Result<()> {
+fn rmse_over_time_on<DB: DrawingBackend>(
+    report: &PtReport,
+    root: &DrawingArea<DB, Shift>,
+) -> anyhow::Result<()> {
     let err = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("{e}");
     root.fill(&WHITE).map_err(err)?;
-    let pts: Vec<(f64, f64)> = report.runs.iter().flat_map(|r| r.series.iter().map(|s| (s.0, s.2))).filter(|p| p.0 > 0.0 && p.1 > 0.0).collect();
+    let pts: Vec<(f64, f64)> = report
+        .runs
+        .iter()
+        .flat_map(|r| r.series.iter().map(|s| (s.0, s.2)))
+        .filter(|p| p.0 > 0.0 && p.1 > 0.0)
+        .collect();
     if pts.is_empty() {
         return Err(anyhow!("no samples to plot"));
     }
     let (tmin, tmax) = pts.iter().fold((f64::MAX, 0.0f64), |(a, b), p| (a.min(p.0), b.max(p.0)));
     let (emin, emax) = pts.iter().fold((f64::MAX, 0.0f64), |(a, b), p| (a.min(p.1), b.max(p.1)));
-    let title = format!("RMSE vs time: {} {}x{}, {} lights, {} backend", report.scene, report.width, report.height, report.lights, report.backend);
+    let title = format!(
+        "RMSE vs time: {} {}x{}, {} lights, {} backend",
+        report.scene, report.width, report.height, report.lights, report.backend
+    );
     let mut chart = ChartBuilder::on(root)
         .caption(title, ("sans-serif", 24))
         .margin(16)
         .x_label_area_size(48)
         .y_label_area_size(72)
-        .build_cartesian_2d((tmin / 1.2).log10()..(tmax * 1.2).log10(), (emin / 1.2).log10()..(emax * 1.2).log10())
+        .build_cartesian_2d(
+            (tmin / 1.2).log10()..(tmax * 1.2).log10(),
+            (emin / 1.2).log10()..(emax * 1.2).log10(),
+        )
         .map_err(err)?;
     chart
         .configure_mesh()
@@ -203,12 +260,19 @@ fn rmse_over_time_on<DB: DrawingBackend>(report: &PtReport, root: &DrawingArea<D
         .map_err(err)?;
     for r in &report.runs {
         let color = method_color(&r.method);
-        let line: Vec<(f64, f64)> = r.series.iter().filter(|s| s.0 > 0.0 && s.2 > 0.0).map(|s| (s.0.log10(), s.2.log10())).collect();
+        let line: Vec<(f64, f64)> = r
+            .series
+            .iter()
+            .filter(|s| s.0 > 0.0 && s.2 > 0.0)
+            .map(|s| (s.0.log10(), s.2.log10()))
+            .collect();
         chart
             .draw_series(LineSeries::new(line, color.stroke_width(2)))
             .map_err(err)?
             .label(r.method.clone())
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3))
+            });
     }
     legend(&mut chart, 18).map_err(err)?;
     Ok(())
@@ -217,10 +281,18 @@ fn rmse_over_time_on<DB: DrawingBackend>(report: &PtReport, root: &DrawingArea<D
 /// A suite's net RMSE per method over uniform sampling's, one column per
 /// scene (log scale; below 1 beats uniform sampling at equal time).
 pub fn suite_vs_uniform(rows: &[crate::suite_bench::SuiteRow], path: &Path) -> anyhow::Result<()> {
-    with_backend(path, (1280, 720), |a| suite_vs_uniform_on(rows, a), |a| suite_vs_uniform_on(rows, a))
+    with_backend(
+        path,
+        (1280, 720),
+        |a| suite_vs_uniform_on(rows, a),
+        |a| suite_vs_uniform_on(rows, a),
+    )
 }
 
-fn suite_vs_uniform_on<DB: DrawingBackend>(rows: &[crate::suite_bench::SuiteRow], root: &DrawingArea<DB, Shift>) -> anyhow::Result<()> {
+fn suite_vs_uniform_on<DB: DrawingBackend>(
+    rows: &[crate::suite_bench::SuiteRow],
+    root: &DrawingArea<DB, Shift>,
+) -> anyhow::Result<()> {
     let err = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("{e}");
     root.fill(&WHITE).map_err(err)?;
     let mut scenes: Vec<&str> = Vec::new();
@@ -241,7 +313,10 @@ fn suite_vs_uniform_on<DB: DrawingBackend>(rows: &[crate::suite_bench::SuiteRow]
     let n = scenes.len();
     // Scenes as rows (their names read across), the ratio along x.
     let mut chart = ChartBuilder::on(root)
-        .caption("Net RMSE over uniform sampling's at equal time, per suite scene", ("sans-serif", 24))
+        .caption(
+            "Net RMSE over uniform sampling's at equal time, per suite scene",
+            ("sans-serif", 24),
+        )
         .margin(16)
         .x_label_area_size(48)
         .y_label_area_size(220)
@@ -256,13 +331,22 @@ fn suite_vs_uniform_on<DB: DrawingBackend>(rows: &[crate::suite_bench::SuiteRow]
         .y_labels(n.max(1))
         .y_label_formatter(&|v| {
             let i = v.round();
-            if (v - i).abs() < 1e-6 && i >= 0.0 { names.get(i as usize).cloned().unwrap_or_default() } else { String::new() }
+            if (v - i).abs() < 1e-6 && i >= 0.0 {
+                names.get(i as usize).cloned().unwrap_or_default()
+            } else {
+                String::new()
+            }
         })
         .x_labels(10)
         .x_label_formatter(&|v| format!("{:.2}", 10f64.powf(*v)))
         .draw()
         .map_err(err)?;
-    chart.draw_series(LineSeries::new(vec![(0.0, -0.5), (0.0, n as f64 - 0.5)], BLACK.stroke_width(1))).map_err(err)?;
+    chart
+        .draw_series(LineSeries::new(
+            vec![(0.0, -0.5), (0.0, n as f64 - 0.5)],
+            BLACK.stroke_width(1),
+        ))
+        .map_err(err)?;
     for (k, m) in methods.iter().enumerate() {
         let color = method_color(m);
         // Each method a little off the row, so equal values stay visible.
@@ -270,7 +354,12 @@ fn suite_vs_uniform_on<DB: DrawingBackend>(rows: &[crate::suite_bench::SuiteRow]
         let pts: Vec<(f64, f64)> = rows
             .iter()
             .filter(|r| r.method == *m && r.rmse_vs_uniform.is_finite() && r.rmse_vs_uniform > 0.0)
-            .filter_map(|r| scenes.iter().position(|s| *s == r.scene).map(|i| (r.rmse_vs_uniform.log10(), i as f64 + dy)))
+            .filter_map(|r| {
+                scenes
+                    .iter()
+                    .position(|s| *s == r.scene)
+                    .map(|i| (r.rmse_vs_uniform.log10(), i as f64 + dy))
+            })
             .collect();
         chart
             .draw_series(pts.into_iter().map(|p| Circle::new(p, 5, color.filled())))
@@ -288,11 +377,19 @@ pub fn ies_polar(p: &slc_core::ies::IesProfile, title: &str, path: &Path) -> any
     with_backend(path, (720, 760), |a| ies_polar_on(p, title, a), |a| ies_polar_on(p, title, a))
 }
 
-fn ies_polar_on<DB: DrawingBackend>(p: &slc_core::ies::IesProfile, title: &str, root: &DrawingArea<DB, Shift>) -> anyhow::Result<()> {
+fn ies_polar_on<DB: DrawingBackend>(
+    p: &slc_core::ies::IesProfile,
+    title: &str,
+    root: &DrawingArea<DB, Shift>,
+) -> anyhow::Result<()> {
     let err = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("{e}");
     root.fill(&WHITE).map_err(err)?;
     let peak = (p.max_candela() as f64).max(1e-9);
-    let mut chart = ChartBuilder::on(root).caption(title, ("sans-serif", 22)).margin(20).build_cartesian_2d(-1.15..1.15, -1.15..1.15).map_err(err)?;
+    let mut chart = ChartBuilder::on(root)
+        .caption(title, ("sans-serif", 22))
+        .margin(20)
+        .build_cartesian_2d(-1.15..1.15, -1.15..1.15)
+        .map_err(err)?;
     // Rings at 25%, 50%, 75%, 100% of the peak, and 30° spokes.
     for k in 1..=4 {
         let r = k as f64 / 4.0;
@@ -303,11 +400,22 @@ fn ies_polar_on<DB: DrawingBackend>(p: &slc_core::ies::IesProfile, title: &str, 
             })
             .collect();
         chart.draw_series(LineSeries::new(ring, RGBColor(200, 200, 200))).map_err(err)?;
-        chart.draw_series(std::iter::once(Text::new(format!("{:.0} cd", peak * r), (0.02, -r + 0.02), ("sans-serif", 14)))).map_err(err)?;
+        chart
+            .draw_series(std::iter::once(Text::new(
+                format!("{:.0} cd", peak * r),
+                (0.02, -r + 0.02),
+                ("sans-serif", 14),
+            )))
+            .map_err(err)?;
     }
     for k in 0..12 {
         let a = k as f64 * std::f64::consts::PI / 6.0;
-        chart.draw_series(LineSeries::new([(0.0, 0.0), (a.sin(), -a.cos())], RGBColor(225, 225, 225))).map_err(err)?;
+        chart
+            .draw_series(LineSeries::new(
+                [(0.0, 0.0), (a.sin(), -a.cos())],
+                RGBColor(225, 225, 225),
+            ))
+            .map_err(err)?;
     }
     let curve = |c_right: f32, c_left: f32| -> Vec<(f64, f64)> {
         // Right half: plane c_right, γ from 0 (down) to 180 (up); left half: c_left back down.
@@ -348,13 +456,24 @@ pub fn flicker(report: &crate::flicker::FlickerReport, path: &Path) -> anyhow::R
     with_backend(path, (1440, 800), |a| flicker_on(report, a), |a| flicker_on(report, a))
 }
 
-fn flicker_on<DB: DrawingBackend>(report: &crate::flicker::FlickerReport, root: &DrawingArea<DB, Shift>) -> anyhow::Result<()> {
+fn flicker_on<DB: DrawingBackend>(
+    report: &crate::flicker::FlickerReport,
+    root: &DrawingArea<DB, Shift>,
+) -> anyhow::Result<()> {
     let err = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("{e}");
     root.fill(&WHITE).map_err(err)?;
-    let title = format!("Flicker: {} {}x{}, {} VPLs, eps {}", report.scene, report.width, report.height, report.vpls, report.error_bound);
+    let title = format!(
+        "Flicker: {} {}x{}, {} VPLs, eps {}",
+        report.scene, report.width, report.height, report.vpls, report.error_bound
+    );
     let root = root.titled(&title, ("sans-serif", 24)).map_err(err)?;
     let panels = root.split_evenly((2, report.sequences.len().max(1)));
-    let colors = [RGBColor(31, 119, 180), RGBColor(44, 160, 44), RGBColor(255, 127, 14), RGBColor(40, 40, 40)];
+    let colors = [
+        RGBColor(31, 119, 180),
+        RGBColor(44, 160, 44),
+        RGBColor(255, 127, 14),
+        RGBColor(40, 40, 40),
+    ];
     for (row, what) in ["RMSE vs frame's reference", "RMSE vs previous frame"].iter().enumerate() {
         for (col, s) in report.sequences.iter().enumerate() {
             let series: Vec<Vec<(f64, f64)>> = s
@@ -362,7 +481,11 @@ fn flicker_on<DB: DrawingBackend>(report: &crate::flicker::FlickerReport, root: 
                 .iter()
                 .map(|c| {
                     let (v, first) = if row == 0 { (&c.rmse, 0) } else { (&c.temporal_rmse, 1) };
-                    v.iter().enumerate().filter(|(_, e)| **e > 0.0).map(|(f, &e)| ((f + first) as f64, e.log10())).collect()
+                    v.iter()
+                        .enumerate()
+                        .filter(|(_, e)| **e > 0.0)
+                        .map(|(f, &e)| ((f + first) as f64, e.log10()))
+                        .collect()
                 })
                 .collect();
             let all: Vec<f64> = series.iter().flatten().map(|p| p.1).collect();
@@ -371,7 +494,10 @@ fn flicker_on<DB: DrawingBackend>(report: &crate::flicker::FlickerReport, root: 
             }
             let (lo, hi) = all.iter().fold((f64::MAX, f64::MIN), |(a, b), &y| (a.min(y), b.max(y)));
             let mut chart = ChartBuilder::on(&panels[row * report.sequences.len() + col])
-                .caption(format!("{}: {what}", format!("{:?}", s.sequence).to_lowercase()), ("sans-serif", 17))
+                .caption(
+                    format!("{}: {what}", format!("{:?}", s.sequence).to_lowercase()),
+                    ("sans-serif", 17),
+                )
                 .margin(10)
                 .x_label_area_size(36)
                 .y_label_area_size(64)
@@ -390,7 +516,9 @@ fn flicker_on<DB: DrawingBackend>(report: &crate::flicker::FlickerReport, root: 
                     .draw_series(LineSeries::new(pts, color.stroke_width(2)))
                     .map_err(err)?
                     .label(c.method.clone())
-                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3))
+                    });
             }
             if row == 0 && col == 0 {
                 legend(&mut chart, 13).map_err(err)?;

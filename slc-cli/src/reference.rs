@@ -48,15 +48,20 @@ pub fn vpl_reference_key(ctx: &VplContext) -> u64 {
 /// The VPL reference image of `ctx`: read from `cache_dir` when present,
 /// else rendered and stored there (`cache_dir = None` disables caching).
 /// Returns the image and whether it came from the cache.
-pub fn vpl_reference(ctx: &VplContext, cache_dir: Option<&Path>) -> Result<(Image, bool), RenderError> {
-    let path = cache_dir.map(|d| d.join(format!("vpl-reference-{:016x}.bin", vpl_reference_key(ctx))));
+pub fn vpl_reference(
+    ctx: &VplContext,
+    cache_dir: Option<&Path>,
+) -> Result<(Image, bool), RenderError> {
+    let path =
+        cache_dir.map(|d| d.join(format!("vpl-reference-{:016x}.bin", vpl_reference_key(ctx))));
     if let Some(p) = &path
         && let Some(img) = read_raw(p)
         && (img.width, img.height) == (ctx.gbuffer().width, ctx.gbuffer().height)
     {
         return Ok((img, true));
     }
-    let frame = ctx.render(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() })?;
+    let frame =
+        ctx.render(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() })?;
     if let Some(p) = &path {
         write_raw(p, &frame.image).map_err(|e| RenderError::Setting(e.to_string()))?;
     }
@@ -98,8 +103,26 @@ pub fn pt_reference(
     }
     h = fnv(bytemuck::cast_slice(&s.material_of), h);
     h = normals_hash(&s.normals, h);
-    h = fnv(format!("{:?}{:?}{:?}{:?}{}x{}x{}", s.materials, s.camera, pts.scene().lights_debug(), settings, width, height, spp).as_bytes(), h);
-    let paths = cache_dir.map(|d| (d.join(format!("pt-reference-{h:016x}-a.bin")), d.join(format!("pt-reference-{h:016x}-b.bin"))));
+    h = fnv(
+        format!(
+            "{:?}{:?}{:?}{:?}{}x{}x{}",
+            s.materials,
+            s.camera,
+            pts.scene().lights_debug(),
+            settings,
+            width,
+            height,
+            spp
+        )
+        .as_bytes(),
+        h,
+    );
+    let paths = cache_dir.map(|d| {
+        (
+            d.join(format!("pt-reference-{h:016x}-a.bin")),
+            d.join(format!("pt-reference-{h:016x}-b.bin")),
+        )
+    });
     let cached = paths.as_ref().and_then(|(a, b)| Some((read_raw(a)?, read_raw(b)?)));
     let (a, b, from_cache) = match cached {
         Some((a, b)) if (a.width, a.height) == (width, height) => {
@@ -129,7 +152,11 @@ pub fn pt_reference(
         }
     };
     let noise = a.rmse(&b) / 2.0;
-    let image = Image { width, height, data: a.data.iter().zip(&b.data).map(|(x, y)| (*x + *y) * 0.5).collect() };
+    let image = Image {
+        width,
+        height,
+        data: a.data.iter().zip(&b.data).map(|(x, y)| (*x + *y) * 0.5).collect(),
+    };
     Ok(PtReference { image, noise, cached: from_cache })
 }
 

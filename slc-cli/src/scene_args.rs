@@ -140,7 +140,11 @@ impl SceneArgs {
     }
 
     /// The whole-GPU VPL frame of the resolved scene.
-    pub fn gpu_frame(&self, gpu: &slc_wgpu::GpuContext, r: &Resolved) -> anyhow::Result<slc_wgpu::frame::GpuVplFrame> {
+    pub fn gpu_frame(
+        &self,
+        gpu: &slc_wgpu::GpuContext,
+        r: &Resolved,
+    ) -> anyhow::Result<slc_wgpu::frame::GpuVplFrame> {
         let desc = slc_wgpu::frame::FrameDesc {
             width: r.width,
             height: r.height,

@@ -40,7 +40,10 @@ struct Family {
 }
 
 fn box_only(glossy: bool) -> String {
-    format!("[[geometry]]\nbuiltin = \"{}\"\nemission_scale = 0.0\n", if glossy { "cornell-glossy" } else { "cornell" })
+    format!(
+        "[[geometry]]\nbuiltin = \"{}\"\nemission_scale = 0.0\n",
+        if glossy { "cornell-glossy" } else { "cornell" }
+    )
 }
 
 fn triangles(n: u32, face: &str, offset: f64, glossy: bool) -> String {
@@ -56,7 +59,12 @@ fn triangles(n: u32, face: &str, offset: f64, glossy: bool) -> String {
 
 fn cloud(n: u32, keys: &str) -> String {
     let i = PUNCTUAL_TOTAL / n as f64;
-    format!("{}\n[[light_cloud]]\ncount = {n}\nintensity = [{i:.9}, {:.9}, {:.9}]\nseed = 1\n{keys}\n", box_only(false), 0.9 * i, 0.8 * i)
+    format!(
+        "{}\n[[light_cloud]]\ncount = {n}\nintensity = [{i:.9}, {:.9}, {:.9}]\nseed = 1\n{keys}\n",
+        box_only(false),
+        0.9 * i,
+        0.8 * i
+    )
 }
 
 const FAMILIES: &[Family] = &[
@@ -75,7 +83,11 @@ const FAMILIES: &[Family] = &[
         about: "small triangle lights 5 cm off every surface, each facing any way",
         body: |n, _| triangles(n, "random", 0.05, false),
     },
-    Family { name: "points-volume", about: "equal point lights spread through the room", body: |n, _| cloud(n, "placement = \"volume\"") },
+    Family {
+        name: "points-volume",
+        about: "equal point lights spread through the room",
+        body: |n, _| cloud(n, "placement = \"volume\""),
+    },
     Family {
         name: "points-clusters",
         about: "equal point lights in four tight fixtures",
@@ -106,7 +118,9 @@ const FAMILIES: &[Family] = &[
     Family {
         name: "spots-at-camera",
         about: "30° spot lights through the room, each aimed at the camera outside it: most power leaves the room, only cone-aware importance tells which light reaches a point",
-        body: |n, _| cloud(n, "placement = \"volume\"\ntypes = [\"spot\"]\naim = \"camera\"\nouter = 30.0"),
+        body: |n, _| {
+            cloud(n, "placement = \"volume\"\ntypes = [\"spot\"]\naim = \"camera\"\nouter = 30.0")
+        },
     },
     Family {
         name: "glossy-facing",
@@ -121,7 +135,10 @@ pub fn scene_files(counts: &[u32], ies: &str) -> Vec<(String, String)> {
     let mut out = Vec::new();
     for f in FAMILIES {
         for &n in counts {
-            let head = format!("# Scene suite ({}): {}; {n} lights.\n# Written by `slc suite`; do not edit by hand.\n\n", f.name, f.about);
+            let head = format!(
+                "# Scene suite ({}): {}; {n} lights.\n# Written by `slc suite`; do not edit by hand.\n\n",
+                f.name, f.about
+            );
             out.push((format!("{}-{n}.toml", f.name), head + &(f.body)(n, ies)));
         }
     }
@@ -134,11 +151,13 @@ pub fn write(dir: &Path, counts: &[u32], ies: &str) -> anyhow::Result<Vec<PathBu
     if counts.is_empty() || counts.contains(&0) {
         anyhow::bail!("--counts must list light counts of at least 1");
     }
-    std::fs::create_dir_all(dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
     let mut paths = Vec::new();
     for (name, text) in scene_files(counts, ies) {
         let p = dir.join(name);
-        std::fs::write(&p, text).map_err(|e| anyhow::anyhow!("cannot write {}: {e}", p.display()))?;
+        std::fs::write(&p, text)
+            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", p.display()))?;
         paths.push(p);
     }
     Ok(paths)
@@ -155,10 +174,20 @@ mod tests {
         let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/suite");
         for (name, text) in scene_files(&DEFAULT_COUNTS, DEFAULT_IES) {
             let have = std::fs::read_to_string(dir.join(&name)).unwrap_or_default();
-            assert!(have == text, "scenes/suite/{name} is stale: run `cargo run --release -p slc-cli -- suite --out scenes/suite`");
+            assert!(
+                have == text,
+                "scenes/suite/{name} is stale: run `cargo run --release -p slc-cli -- suite --out scenes/suite`"
+            );
         }
-        let listed = std::fs::read_dir(&dir).unwrap().filter(|e| e.as_ref().is_ok_and(|e| e.path().extension().is_some_and(|x| x == "toml"))).count();
-        assert_eq!(listed, FAMILIES.len() * DEFAULT_COUNTS.len(), "scenes/suite holds files no family writes");
+        let listed = std::fs::read_dir(&dir)
+            .unwrap()
+            .filter(|e| e.as_ref().is_ok_and(|e| e.path().extension().is_some_and(|x| x == "toml")))
+            .count();
+        assert_eq!(
+            listed,
+            FAMILIES.len() * DEFAULT_COUNTS.len(),
+            "scenes/suite holds files no family writes"
+        );
     }
 
     /// Every family loads at a small count with that many lights (punctual
@@ -174,9 +203,16 @@ mod tests {
                 .triangles
                 .iter()
                 .enumerate()
-                .filter(|(t, _)| f.scene.materials[f.scene.material_of[*t] as usize].emission != glam::Vec3::ZERO)
+                .filter(|(t, _)| {
+                    f.scene.materials[f.scene.material_of[*t] as usize].emission != glam::Vec3::ZERO
+                })
                 .count();
-            assert_eq!(f.lights.len() + emissive, 64, "{name}: {} lights, {emissive} emissive triangles", f.lights.len());
+            assert_eq!(
+                f.lights.len() + emissive,
+                64,
+                "{name}: {} lights, {emissive} emissive triangles",
+                f.lights.len()
+            );
         }
     }
 }

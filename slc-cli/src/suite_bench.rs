@@ -50,13 +50,21 @@ struct SuiteReport {
 /// The scene files of `dir`, sorted by name.
 fn scene_files(dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
     let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
-        .with_context(|| format!("--suite {}: cannot read the folder (write it with `slc suite --out {0}`)", dir.display()))?
+        .with_context(|| {
+            format!(
+                "--suite {}: cannot read the folder (write it with `slc suite --out {0}`)",
+                dir.display()
+            )
+        })?
         .filter_map(|e| e.ok().map(|e| e.path()))
         .filter(|p| p.extension().is_some_and(|x| x == "toml"))
         .collect();
     files.sort();
     if files.is_empty() {
-        return Err(anyhow!("--suite {}: no .toml scene files there (write them with `slc suite --out {0}`)", dir.display()));
+        return Err(anyhow!(
+            "--suite {}: no .toml scene files there (write them with `slc suite --out {0}`)",
+            dir.display()
+        ));
     }
     Ok(files)
 }
@@ -64,7 +72,8 @@ fn scene_files(dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
 /// The summary rows of one scene's report.
 pub fn rows(scene: &str, r: &PtReport) -> Vec<SuiteRow> {
     let uniform = r.runs.iter().find(|x| x.method == "uniform");
-    let (u_rmse, u_tps) = uniform.map_or((f64::NAN, f64::NAN), |u| (u.rmse_net, u.time_ms / u.spp.max(1) as f64));
+    let (u_rmse, u_tps) =
+        uniform.map_or((f64::NAN, f64::NAN), |u| (u.rmse_net, u.time_ms / u.spp.max(1) as f64));
     r.runs
         .iter()
         .map(|x| SuiteRow {
@@ -92,7 +101,9 @@ pub fn run(a: &BenchArgs, dir: &Path) -> anyhow::Result<()> {
     let mut scenes = Vec::new();
     let mut all_rows = Vec::new();
     for (i, file) in files.iter().enumerate() {
-        let name = file.file_stem().map_or_else(|| file.display().to_string(), |s| s.to_string_lossy().into_owned());
+        let name = file
+            .file_stem()
+            .map_or_else(|| file.display().to_string(), |s| s.to_string_lossy().into_owned());
         eprintln!("suite: scene {} of {}: {name}", i + 1, files.len());
         let f = SceneFile::load(file).with_context(|| format!("suite scene {}", file.display()))?;
         let mut report = pt_equal_time(a, &f.scene, &f.lights, &f.render)?;
@@ -100,12 +111,19 @@ pub fn run(a: &BenchArgs, dir: &Path) -> anyhow::Result<()> {
         all_rows.extend(rows(&name, &report));
         scenes.push(report);
     }
-    let report = SuiteReport { folder: dir.display().to_string(), seconds_per_method: a.seconds, scenes, rows: all_rows };
+    let report = SuiteReport {
+        folder: dir.display().to_string(),
+        seconds_per_method: a.seconds,
+        scenes,
+        rows: all_rows,
+    };
     if let Some(path) = &a.json {
-        std::fs::write(path, serde_json::to_string_pretty(&report)?).with_context(|| format!("cannot write {}", path.display()))?;
+        std::fs::write(path, serde_json::to_string_pretty(&report)?)
+            .with_context(|| format!("cannot write {}", path.display()))?;
     }
     if let Some(path) = &a.csv {
-        let mut w = csv::Writer::from_path(path).with_context(|| format!("cannot write {}", path.display()))?;
+        let mut w = csv::Writer::from_path(path)
+            .with_context(|| format!("cannot write {}", path.display()))?;
         for r in &report.rows {
             w.serialize(r)?;
         }
@@ -119,8 +137,16 @@ pub fn run(a: &BenchArgs, dir: &Path) -> anyhow::Result<()> {
 }
 
 fn print_summary(report: &SuiteReport) {
-    let methods: Vec<String> = report.scenes.first().map_or(Vec::new(), |s| s.runs.iter().map(|r| r.method.clone()).collect());
-    println!("suite {}: {} scenes, {} s per method; net RMSE over uniform's (spp)", report.folder, report.scenes.len(), report.seconds_per_method);
+    let methods: Vec<String> = report
+        .scenes
+        .first()
+        .map_or(Vec::new(), |s| s.runs.iter().map(|r| r.method.clone()).collect());
+    println!(
+        "suite {}: {} scenes, {} s per method; net RMSE over uniform's (spp)",
+        report.folder,
+        report.scenes.len(),
+        report.seconds_per_method
+    );
     print!("{:<24} {:>7}", "scene", "lights");
     for m in &methods {
         print!(" {:>16}", m);
@@ -131,11 +157,17 @@ fn print_summary(report: &SuiteReport) {
         print!("{:<24} {:>7}", s.scene, s.lights);
         for m in &methods {
             let r = report.rows.iter().find(|r| r.scene == s.scene && &r.method == m);
-            let ratio = r.filter(|r| r.rmse_vs_uniform.is_finite()).map_or("-".into(), |r| format!("{:.2}", r.rmse_vs_uniform));
+            let ratio = r
+                .filter(|r| r.rmse_vs_uniform.is_finite())
+                .map_or("-".into(), |r| format!("{:.2}", r.rmse_vs_uniform));
             print!(" {:>16}", format!("{ratio} ({})", r.map_or(0, |r| r.spp)));
         }
         let ratio = weighted_over_best_peer(&report.rows, &s.scene);
-        let tps = report.rows.iter().find(|r| r.scene == s.scene && r.method == "slc-weighted").map_or(f64::NAN, |r| r.time_per_sample_vs_uniform);
+        let tps = report
+            .rows
+            .iter()
+            .find(|r| r.scene == s.scene && r.method == "slc-weighted")
+            .map_or(f64::NAN, |r| r.time_per_sample_vs_uniform);
         ratios.push(ratio);
         let num = |v: f64| if v.is_finite() { format!("{v:.2}") } else { "-".into() };
         println!(" {:>10} {:>10}", num(ratio), num(tps));
@@ -151,7 +183,9 @@ fn print_summary(report: &SuiteReport) {
     let mut sorted: Vec<f64> = ratios.iter().copied().filter(|r| r.is_finite()).collect();
     sorted.sort_by(f64::total_cmp);
     if sorted.is_empty() {
-        println!("slc-weighted / best peer (uniform, power, lightbvh): not measurable in any scene (raise --reference-spp)");
+        println!(
+            "slc-weighted / best peer (uniform, power, lightbvh): not measurable in any scene (raise --reference-spp)"
+        );
     } else {
         let median = sorted[sorted.len() / 2];
         let wins = sorted.iter().filter(|&&r| r <= 1.0).count();
@@ -160,5 +194,7 @@ fn print_summary(report: &SuiteReport) {
             sorted.len()
         );
     }
-    println!("(w/best: slc-weighted's net RMSE over the best peer's; w t/spp: its time per sample over uniform's)");
+    println!(
+        "(w/best: slc-weighted's net RMSE over the best peer's; w t/spp: its time per sample over uniform's)"
+    );
 }

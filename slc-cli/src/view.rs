@@ -90,7 +90,9 @@ pub fn run(a: ViewArgs) -> anyhow::Result<()> {
     };
     let settings = crate::methods::vpl_settings(&flags, &r.file, r.exposure)?;
     if settings.method == VplMethod::Reference {
-        return Err(anyhow!("--method reference (every VPL at every pixel) is not a real-time method; use slc, clamp or none"));
+        return Err(anyhow!(
+            "--method reference (every VPL at every pixel) is not a real-time method; use slc, clamp or none"
+        ));
     }
     let opts = slc_view::ViewOptions {
         scene: r.scene,

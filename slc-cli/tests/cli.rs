@@ -13,7 +13,12 @@ fn slc(dir: &Path, args: &[&str]) -> Output {
 fn ok(dir: &Path, args: &[&str]) -> String {
     let out = slc(dir, args);
     let text = String::from_utf8_lossy(&out.stdout).into_owned();
-    assert!(out.status.success(), "slc {args:?} failed:\n{}\n{}", text, String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "slc {args:?} failed:\n{}\n{}",
+        text,
+        String::from_utf8_lossy(&out.stderr)
+    );
     text
 }
 
@@ -38,7 +43,12 @@ fn main_job_with_no_arguments() {
 fn render_commands() {
     let d = tempdir("render");
     let small = ["--width", "64", "--height", "48", "--vpls", "4096"];
-    for (method, extra) in [("slc", vec!["--error-bound", "0.008"]), ("clamp", vec!["--range", "0.1"]), ("none", vec![]), ("reference", vec![])] {
+    for (method, extra) in [
+        ("slc", vec!["--error-bound", "0.008"]),
+        ("clamp", vec!["--range", "0.1"]),
+        ("none", vec![]),
+        ("reference", vec![]),
+    ] {
         let out = format!("{method}.exr");
         let mut args = vec!["render", "--method", method, "--out", &out];
         args.extend(small);
@@ -87,12 +97,15 @@ fn bench_and_plot_commands() {
     );
     assert!(text.contains("slc") && text.contains("clamp") && text.contains("none"));
     assert!(text.contains("unculled loop:") && text.contains("light evaluations/s"), "{text}");
-    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("b.json")).unwrap()).unwrap();
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("b.json")).unwrap()).unwrap();
     for key in ["app", "backend", "scene", "width", "height", "lights", "runs"] {
         assert!(json.get(key).is_some(), "JSON lacks {key}");
     }
     // The unculled loop's speed, without the near field: positive and finite.
-    let speed = json["unculled_loop_evaluations_per_second"].as_f64().expect("JSON lacks the unculled loop's speed");
+    let speed = json["unculled_loop_evaluations_per_second"]
+        .as_f64()
+        .expect("JSON lacks the unculled loop's speed");
     assert!(speed.is_finite() && speed > 0.0, "{speed}");
     let runs = json["runs"].as_array().unwrap();
     assert_eq!(runs.len(), 5);
@@ -106,15 +119,40 @@ fn bench_and_plot_commands() {
         let sd = r["rmse_sd"].as_f64().expect("run lacks rmse_sd");
         assert!(sd.is_finite() && sd >= 0.0, "{r}");
     }
-    assert!(runs.iter().any(|r| r["method"] == "slc" && r["rmse_sd"].as_f64().unwrap() > 0.0), "SLC's frames differ");
+    assert!(
+        runs.iter().any(|r| r["method"] == "slc" && r["rmse_sd"].as_f64().unwrap() > 0.0),
+        "SLC's frames differ"
+    );
     assert_eq!(std::fs::read_to_string(d.join("b.csv")).unwrap().lines().count(), 6);
     let svg = std::fs::read_to_string(d.join("b.svg")).unwrap();
     assert!(svg.contains("<svg") && svg.contains("shading time") && svg.contains("RMSE"));
     // The second run reads the reference from the cache.
     // Without --json: the table only (JSON is optional).
     // --simd runs the loops on a lower instruction set (every CPU has the baseline).
-    let text = ok(&d, &["bench", "--width", "32", "--height", "32", "--vpls", "1024", "--repeat", "1", "--cache-dir", "cache", "--simd", "baseline"]);
-    assert!(text.contains("from cache") && text.contains("shading ms") && text.contains("baseline loops"), "{text}");
+    let text = ok(
+        &d,
+        &[
+            "bench",
+            "--width",
+            "32",
+            "--height",
+            "32",
+            "--vpls",
+            "1024",
+            "--repeat",
+            "1",
+            "--cache-dir",
+            "cache",
+            "--simd",
+            "baseline",
+        ],
+    );
+    assert!(
+        text.contains("from cache")
+            && text.contains("shading ms")
+            && text.contains("baseline loops"),
+        "{text}"
+    );
     ok(&d, &["plot", "b.json", "--out", "p.png"]);
     assert!(std::fs::metadata(d.join("p.png")).unwrap().len() > 1000);
     std::fs::remove_dir_all(&d).ok();
@@ -123,10 +161,17 @@ fn bench_and_plot_commands() {
 /// README: `slc ies FILE` (and `--plot`) on every shared IES file.
 fn ies_command() {
     let d = tempdir("ies");
-    for name in ["indoor-60w-120deg.ies", "outdoor-roadway-60w.ies", "absolute-led.ies", "floodlight-12w-54deg.ies", "tilt-include-synthetic.ies"] {
+    for name in [
+        "indoor-60w-120deg.ies",
+        "outdoor-roadway-60w.ies",
+        "absolute-led.ies",
+        "floodlight-12w-54deg.ies",
+        "tilt-include-synthetic.ies",
+    ] {
         let p = shared(&format!("ies/{name}"));
         let text = ok(&d, &["ies", &p.to_string_lossy(), "--plot", "polar.png"]);
-        for key in ["format", "photometric type", "peak candela", "total flux", "horizontal angles"] {
+        for key in ["format", "photometric type", "peak candela", "total flux", "horizontal angles"]
+        {
             assert!(text.contains(key), "{name}: no {key}");
         }
         assert!(std::fs::metadata(d.join("polar.png")).unwrap().len() > 1000);
@@ -161,10 +206,12 @@ fn diff_command() {
 /// extension that is neither is refused before rendering.
 fn out_paths() {
     let d = tempdir("out");
-    let text = ok(&d, &["render", "--width", "16", "--height", "16", "--vpls", "64", "--out", "x.png"]);
+    let text =
+        ok(&d, &["render", "--width", "16", "--height", "16", "--vpls", "64", "--out", "x.png"]);
     assert!(d.join("x.png").exists() && d.join("x.exr").exists());
     assert!(text.contains("x.exr and x.png"), "{text}");
-    let out = slc(&d, &["render", "--width", "16", "--height", "16", "--vpls", "64", "--out", "x.jpg"]);
+    let out =
+        slc(&d, &["render", "--width", "16", "--height", "16", "--vpls", "64", "--out", "x.jpg"]);
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(!out.status.success() && err.contains(".exr"), "{err}");
     std::fs::remove_dir_all(&d).ok();
@@ -206,7 +253,11 @@ fn no_adapter_error_names_the_flag() {
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
     let last = err.trim().lines().last().unwrap_or("");
-    assert!(last.starts_with("error: no GPU adapter found") && last.ends_with("(--backend cpu renders on the CPU)"), "{err}");
+    assert!(
+        last.starts_with("error: no GPU adapter found")
+            && last.ends_with("(--backend cpu renders on the CPU)"),
+        "{err}"
+    );
     std::fs::remove_dir_all(&d).ok();
 }
 
@@ -216,7 +267,19 @@ fn no_adapter_error_names_the_flag() {
 fn gpu_start_up_is_quiet() {
     let d = tempdir("quiet");
     let out = Command::new(env!("CARGO_BIN_EXE_slc"))
-        .args(["render", "--backend", "gpu", "--width", "16", "--height", "16", "--vpls", "256", "--out", "q.exr"])
+        .args([
+            "render",
+            "--backend",
+            "gpu",
+            "--width",
+            "16",
+            "--height",
+            "16",
+            "--vpls",
+            "256",
+            "--out",
+            "q.exr",
+        ])
         .env_remove("XDG_RUNTIME_DIR")
         .env_remove("WAYLAND_DISPLAY")
         .env_remove("DISPLAY")
@@ -244,7 +307,22 @@ fn example_scene_files_render() {
             if String::from_utf8_lossy(&text).contains("shared/data") {
                 shared("ies");
             }
-            let out = ok(&d, &["render", "--scene", &p.to_string_lossy(), "--width", "32", "--height", "32", "--vpls", "1024", "--out", "s.exr"]);
+            let out = ok(
+                &d,
+                &[
+                    "render",
+                    "--scene",
+                    &p.to_string_lossy(),
+                    "--width",
+                    "32",
+                    "--height",
+                    "32",
+                    "--vpls",
+                    "1024",
+                    "--out",
+                    "s.exr",
+                ],
+            );
             assert!(out.contains("32x32"), "{}: {out}", p.display());
             n += 1;
         }
@@ -261,12 +339,41 @@ fn gltf_and_glossy_scenes_render() {
     let d = tempdir("gltf");
     let glb = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes/glossy-spheres.glb");
     let glb = glb.to_string_lossy();
-    let out = ok(&d, &["render", "--app", "pt", "--scene", &glb, "--width", "24", "--height", "24", "--spp", "4", "--out", "g.exr"]);
+    let out = ok(
+        &d,
+        &[
+            "render", "--app", "pt", "--scene", &glb, "--width", "24", "--height", "24", "--spp",
+            "4", "--out", "g.exr",
+        ],
+    );
     assert!(out.contains("24x24") && out.contains("4 lights"), "{out}");
     let img = slc_scene::image::Image::read_exr(&d.join("g.exr")).unwrap();
     assert!(img.is_finite() && img.mean() > 0.0);
-    ok(&d, &["render", "--scene", &glb, "--width", "24", "--height", "24", "--vpls", "1024", "--out", "v.exr"]);
-    ok(&d, &["render", "--app", "pt", "--scene", "cornell-glossy", "--width", "16", "--height", "16", "--spp", "2", "--out", "c.exr"]);
+    ok(
+        &d,
+        &[
+            "render", "--scene", &glb, "--width", "24", "--height", "24", "--vpls", "1024",
+            "--out", "v.exr",
+        ],
+    );
+    ok(
+        &d,
+        &[
+            "render",
+            "--app",
+            "pt",
+            "--scene",
+            "cornell-glossy",
+            "--width",
+            "16",
+            "--height",
+            "16",
+            "--spp",
+            "2",
+            "--out",
+            "c.exr",
+        ],
+    );
     std::fs::remove_dir_all(&d).ok();
 }
 
@@ -278,17 +385,50 @@ fn shaders_command_exports_every_kernel() {
     assert!(text.contains("25 kernels"), "{text}");
     for entry in ["vs_main", "fs_gbuffer", "fs_rsm", "fs_shadow"] {
         let p = d.join("k").join(format!("scene_raster.{entry}.glsl"));
-        assert!(std::fs::metadata(&p).map(|m| m.len() > 100).unwrap_or(false), "{} missing or empty", p.display());
+        assert!(
+            std::fs::metadata(&p).map(|m| m.len() > 100).unwrap_or(false),
+            "{} missing or empty",
+            p.display()
+        );
     }
-    let names = ["light_update", "bsh_refit", "bsh_reservoir", "pt_connect", "pt_extend", "light_ranges", "direct_light"];
+    let names = [
+        "light_update",
+        "bsh_refit",
+        "bsh_reservoir",
+        "pt_connect",
+        "pt_extend",
+        "light_ranges",
+        "direct_light",
+    ];
     let names = names.into_iter().chain(["vpl_tiled_slc", "vpl_tiled_clamp", "vpl_tiled_none"]);
-    let frame = ["vpl_denoise", "vpl_near", "vpl_pack", "irradiance_export", "primary_direct", "frame_compose"];
-    let glossy = ["vpl_tiled_slc_glossy", "vpl_tiled_clamp_glossy", "vpl_tiled_none_glossy", "vpl_near_glossy", "irradiance_export_glossy"];
-    let frame = frame.into_iter().chain(glossy).chain(["frame_compose_glossy", "temporal", "temporal_motion"]);
+    let frame = [
+        "vpl_denoise",
+        "vpl_near",
+        "vpl_pack",
+        "irradiance_export",
+        "primary_direct",
+        "frame_compose",
+    ];
+    let glossy = [
+        "vpl_tiled_slc_glossy",
+        "vpl_tiled_clamp_glossy",
+        "vpl_tiled_none_glossy",
+        "vpl_near_glossy",
+        "irradiance_export_glossy",
+    ];
+    let frame = frame.into_iter().chain(glossy).chain([
+        "frame_compose_glossy",
+        "temporal",
+        "temporal_motion",
+    ]);
     for name in names.into_iter().chain(frame) {
         for ext in ["wgsl", "spv", "glsl", "hlsl", "metal"] {
             let p = d.join("k").join(format!("{name}.{ext}"));
-            assert!(std::fs::metadata(&p).map(|m| m.len() > 100).unwrap_or(false), "{} missing or empty", p.display());
+            assert!(
+                std::fs::metadata(&p).map(|m| m.len() > 100).unwrap_or(false),
+                "{} missing or empty",
+                p.display()
+            );
         }
     }
     // slc-core's modules (brdf included), as naga_oil and as WESL modules.
@@ -296,12 +436,20 @@ fn shaders_command_exports_every_kernel() {
     let wesl = std::fs::read_to_string(d.join("k/wesl/slc/range.wesl")).unwrap();
     assert!(wesl.contains("public fn slc_keep("), "{wesl}");
     let range = std::fs::read_to_string(d.join("k/slc/range.wgsl")).unwrap();
-    assert!(range.starts_with("#define_import_path slc::range") && range.contains("fn slc_keep("), "{range}");
+    assert!(
+        range.starts_with("#define_import_path slc::range") && range.contains("fn slc_keep("),
+        "{range}"
+    );
     let pt = std::fs::read_to_string(d.join("k/pt_connect.wgsl")).unwrap();
     assert!(pt.contains("LIGHT_TRIANGLE:") && !pt.contains("case LIGHT_SPOT:"));
     // The direct pass's kernel for the asked lights, reading depth (R32Float).
     let direct = std::fs::read_to_string(d.join("k/direct_light.wgsl")).unwrap();
-    assert!(direct.contains("LIGHT_TRIANGLE:") && !direct.contains("case LIGHT_SPOT:") && direct.contains("depth_tex: texture_2d<f32>"), "{direct}");
+    assert!(
+        direct.contains("LIGHT_TRIANGLE:")
+            && !direct.contains("case LIGHT_SPOT:")
+            && direct.contains("depth_tex: texture_2d<f32>"),
+        "{direct}"
+    );
     let out = slc(&d, &["shaders", "--out", "k2", "--lights", "laser"]);
     assert!(!out.status.success());
     std::fs::remove_dir_all(&d).ok();
@@ -319,18 +467,75 @@ fn gpu_backend_renders_like_cpu() {
     args.extend(small);
     let stdout = ok(&d, &args);
     assert!(stdout.contains("GPU ") && stdout.contains("whole frame on the GPU"), "{stdout}");
-    for stage in ["G-buffer", "RSM", "shadow map", "VPL generation", "light update", "shading", "direct", "composition"] {
+    for stage in [
+        "G-buffer",
+        "RSM",
+        "shadow map",
+        "VPL generation",
+        "light update",
+        "shading",
+        "direct",
+        "composition",
+    ] {
         assert!(stdout.contains(stage), "no {stage} time in:\n{stdout}");
     }
     let mut args = vec!["render", "--backend", "cpu", "--out", "c.exr"];
     args.extend(small);
     ok(&d, &args);
     ok(&d, &["diff", "c.exr", "g.exr", "--max-rmse", "0.02"]);
-    let out = slc(&d, &["render", "--backend", "gpu", "--method", "reference", "--width", "8", "--height", "8", "--vpls", "64", "--out", "r.exr"]);
-    assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("--backend cpu"));
-    let bench = ["bench", "--backend", "gpu", "--width", "16", "--height", "16", "--vpls", "1024", "--repeat", "1"];
-    ok(&d, &[&bench[..], &["--error-bounds", "0.008", "--ranges", "0.1", "--shadow-size", "256", "--json", "b.json"]].concat());
-    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("b.json")).unwrap()).unwrap();
+    let out = slc(
+        &d,
+        &[
+            "render",
+            "--backend",
+            "gpu",
+            "--method",
+            "reference",
+            "--width",
+            "8",
+            "--height",
+            "8",
+            "--vpls",
+            "64",
+            "--out",
+            "r.exr",
+        ],
+    );
+    assert!(
+        !out.status.success() && String::from_utf8_lossy(&out.stderr).contains("--backend cpu")
+    );
+    let bench = [
+        "bench",
+        "--backend",
+        "gpu",
+        "--width",
+        "16",
+        "--height",
+        "16",
+        "--vpls",
+        "1024",
+        "--repeat",
+        "1",
+    ];
+    ok(
+        &d,
+        &[
+            &bench[..],
+            &[
+                "--error-bounds",
+                "0.008",
+                "--ranges",
+                "0.1",
+                "--shadow-size",
+                "256",
+                "--json",
+                "b.json",
+            ],
+        ]
+        .concat(),
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("b.json")).unwrap()).unwrap();
     assert!(json["backend"].as_str().unwrap().starts_with("gpu: "));
     let runs = json["runs"].as_array().unwrap();
     assert_eq!(runs.len(), 3);
@@ -348,8 +553,22 @@ fn gpu_backend_renders_like_cpu() {
 /// CPU's, so the bound fails it). Declared `Gpu`.
 fn gpu_glossy_render_is_glossy() {
     let d = tempdir("gpuglossy");
-    let small = ["--scene", "cornell-glossy", "--width", "48", "--height", "32", "--vpls", "4096", "--no-denoise"];
-    ok(&d, &[&["render", "--backend", "gpu", "--out", "g.exr", "--shadow-size", "512"][..], &small].concat());
+    let small = [
+        "--scene",
+        "cornell-glossy",
+        "--width",
+        "48",
+        "--height",
+        "32",
+        "--vpls",
+        "4096",
+        "--no-denoise",
+    ];
+    ok(
+        &d,
+        &[&["render", "--backend", "gpu", "--out", "g.exr", "--shadow-size", "512"][..], &small]
+            .concat(),
+    );
     ok(&d, &[&["render", "--backend", "cpu", "--out", "c.exr"][..], &small].concat());
     ok(&d, &["diff", "c.exr", "g.exr", "--max-rmse", "0.01"]);
     std::fs::remove_dir_all(&d).ok();
@@ -359,17 +578,71 @@ fn gpu_glossy_render_is_glossy() {
 /// --backend gpu`. Declared `Gpu` (see the harness at the end).
 fn gpu_path_tracer_renders_and_benches() {
     let d = tempdir("gpupt");
-    let text = ok(&d, &["render", "--app", "pt", "--backend", "gpu", "--width", "16", "--height", "16", "--spp", "4", "--out", "g.exr"]);
+    let text = ok(
+        &d,
+        &[
+            "render",
+            "--app",
+            "pt",
+            "--backend",
+            "gpu",
+            "--width",
+            "16",
+            "--height",
+            "16",
+            "--spp",
+            "4",
+            "--out",
+            "g.exr",
+        ],
+    );
     // The default method is slc on both backends, as --help says.
-    assert!(text.contains("method slc\n") && text.contains("4 samples per pixel") && text.contains("GPU "), "{text}");
+    assert!(
+        text.contains("method slc\n")
+            && text.contains("4 samples per pixel")
+            && text.contains("GPU "),
+        "{text}"
+    );
     assert!(d.join("g.exr").exists() && d.join("g.png").exists());
-    let args = ["bench", "--app", "pt", "--backend", "gpu", "--width", "16", "--height", "16", "--seconds", "0.2", "--reference-spp", "8"];
+    let args = [
+        "bench",
+        "--app",
+        "pt",
+        "--backend",
+        "gpu",
+        "--width",
+        "16",
+        "--height",
+        "16",
+        "--seconds",
+        "0.2",
+        "--reference-spp",
+        "8",
+    ];
     let text = ok(&d, &[&args[..], &["--json", "g.json", "--cache-dir", "cache"]].concat());
     assert!(text.contains("slc-reservoir") && text.contains("slc-weighted"), "{text}");
-    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("g.json")).unwrap()).unwrap();
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("g.json")).unwrap()).unwrap();
     assert!(json["backend"].as_str().unwrap().starts_with("gpu: "));
     assert_eq!(json["runs"].as_array().unwrap().len(), 6);
-    let text = ok(&d, &["render", "--app", "pt", "--backend", "gpu", "--method", "lightbvh", "--width", "8", "--height", "8", "--out", "p.exr"]);
+    let text = ok(
+        &d,
+        &[
+            "render",
+            "--app",
+            "pt",
+            "--backend",
+            "gpu",
+            "--method",
+            "lightbvh",
+            "--width",
+            "8",
+            "--height",
+            "8",
+            "--out",
+            "p.exr",
+        ],
+    );
     assert!(text.contains("method lightbvh") && d.join("p.exr").exists(), "{text}");
     std::fs::remove_dir_all(&d).ok();
 }
@@ -379,20 +652,62 @@ fn path_tracer_renders() {
     let d = tempdir("pt");
     for m in ["slc", "slc-reservoir", "slc-weighted", "uniform", "power", "lightbvh"] {
         let out = format!("pt-{m}.exr");
-        let text = ok(&d, &["render", "--app", "pt", "--method", m, "--width", "24", "--height", "24", "--spp", "2", "--out", &out]);
-        assert!(text.contains("path tracing") && text.contains("2 samples per pixel") && text.contains("[primary]"), "{text}");
+        let text = ok(
+            &d,
+            &[
+                "render", "--app", "pt", "--method", m, "--width", "24", "--height", "24", "--spp",
+                "2", "--out", &out,
+            ],
+        );
+        assert!(
+            text.contains("path tracing")
+                && text.contains("2 samples per pixel")
+                && text.contains("[primary]"),
+            "{text}"
+        );
         assert!(d.join(&out).exists());
         // The SLC methods say how their ε was set: from the scene by default.
         let culls = m.starts_with("slc");
-        assert_eq!(text.contains("error bound ε") && text.contains("(automatic: 1.5 expected candidates per surface point)"), culls, "{text}");
+        assert_eq!(
+            text.contains("error bound ε")
+                && text.contains("(automatic: 1.5 expected candidates per surface point)"),
+            culls,
+            "{text}"
+        );
     }
-    let text = ok(&d, &["render", "--app", "pt", "--method", "slc-weighted", "--error-bound", "0.5", "--width", "8", "--height", "8", "--spp", "1"]);
+    let text = ok(
+        &d,
+        &[
+            "render",
+            "--app",
+            "pt",
+            "--method",
+            "slc-weighted",
+            "--error-bound",
+            "0.5",
+            "--width",
+            "8",
+            "--height",
+            "8",
+            "--spp",
+            "1",
+        ],
+    );
     assert!(text.contains("error bound ε = 0.5000 (given)"), "{text}");
     // `auto` is the path tracer's: the VPL application refuses it in one line.
-    let out = slc(&d, &["render", "--error-bound", "auto", "--width", "8", "--height", "8", "--vpls", "64"]);
-    assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("applies to path tracing"));
-    let out = slc(&d, &["render", "--app", "pt", "--method", "clamp", "--width", "8", "--height", "8"]);
-    assert!(!out.status.success() && String::from_utf8_lossy(&out.stderr).contains("slc-reservoir"));
+    let out = slc(
+        &d,
+        &["render", "--error-bound", "auto", "--width", "8", "--height", "8", "--vpls", "64"],
+    );
+    assert!(
+        !out.status.success()
+            && String::from_utf8_lossy(&out.stderr).contains("applies to path tracing")
+    );
+    let out =
+        slc(&d, &["render", "--app", "pt", "--method", "clamp", "--width", "8", "--height", "8"]);
+    assert!(
+        !out.status.success() && String::from_utf8_lossy(&out.stderr).contains("slc-reservoir")
+    );
     std::fs::remove_dir_all(&d).ok();
 }
 
@@ -402,7 +717,8 @@ fn path_tracer_renders() {
 fn suite_commands() {
     let d = tempdir("suite");
     let ies = shared("ies/indoor-60w-120deg.ies");
-    let text = ok(&d, &["suite", "--out", "s", "--counts", "16,32", "--ies", ies.to_str().unwrap()]);
+    let text =
+        ok(&d, &["suite", "--out", "s", "--counts", "16,32", "--ies", ies.to_str().unwrap()]);
     assert!(text.contains("wrote 20 scene files"), "{text}");
     assert_eq!(std::fs::read_dir(d.join("s")).unwrap().count(), 20);
     // Two families at one small count keep the run short.
@@ -411,10 +727,37 @@ fn suite_commands() {
     for f in ["dominant-16.toml", "mixed-types-16.toml"] {
         std::fs::copy(d.join("s").join(f), two.join(f)).unwrap();
     }
-    let args = ["bench", "--app", "pt", "--suite", "two", "--width", "8", "--height", "8", "--seconds", "0.05", "--reference-spp", "16"];
-    let text = ok(&d, &[&args[..], &["--json", "s.json", "--csv", "s.csv", "--plot", "s.svg", "--cache-dir", "cache"]].concat());
-    assert!(text.contains("dominant-16") && text.contains("mixed-types-16") && text.contains("slc-weighted / best peer"), "{text}");
-    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("s.json")).unwrap()).unwrap();
+    let args = [
+        "bench",
+        "--app",
+        "pt",
+        "--suite",
+        "two",
+        "--width",
+        "8",
+        "--height",
+        "8",
+        "--seconds",
+        "0.05",
+        "--reference-spp",
+        "16",
+    ];
+    let text = ok(
+        &d,
+        &[
+            &args[..],
+            &["--json", "s.json", "--csv", "s.csv", "--plot", "s.svg", "--cache-dir", "cache"],
+        ]
+        .concat(),
+    );
+    assert!(
+        text.contains("dominant-16")
+            && text.contains("mixed-types-16")
+            && text.contains("slc-weighted / best peer"),
+        "{text}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("s.json")).unwrap()).unwrap();
     assert_eq!(json["scenes"].as_array().unwrap().len(), 2);
     let rows = json["rows"].as_array().unwrap();
     assert_eq!(rows.len(), 12);
@@ -426,8 +769,11 @@ fn suite_commands() {
     assert!(std::fs::read_to_string(d.join("s.svg")).unwrap().contains("suite scene"));
     // A folder without scene files is a one-line error that says how to make one.
     std::fs::create_dir_all(d.join("empty")).unwrap();
-    let out =
-        std::process::Command::new(env!("CARGO_BIN_EXE_slc")).current_dir(&d).args(["bench", "--app", "pt", "--suite", "empty"]).output().unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_slc"))
+        .current_dir(&d)
+        .args(["bench", "--app", "pt", "--suite", "empty"])
+        .output()
+        .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(!out.status.success() && err.contains("slc suite --out"), "{err}");
     std::fs::remove_dir_all(&d).ok();
@@ -463,8 +809,12 @@ fn path_tracer_bench() {
     );
     assert!(text.contains("uniform/method") && text.contains("rmse net"), "{text}");
     // An 8-spp reference is far too noisy for these runs: the output says so.
-    assert!(text.contains("warning: the reference has 8 spp") && text.contains("exceeds a third of"), "{text}");
-    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.join("p.json")).unwrap()).unwrap();
+    assert!(
+        text.contains("warning: the reference has 8 spp") && text.contains("exceeds a third of"),
+        "{text}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("p.json")).unwrap()).unwrap();
     let runs = json["runs"].as_array().unwrap();
     assert_eq!(runs.len(), 6);
     let noise = json["reference_noise"].as_f64().unwrap();
@@ -475,11 +825,17 @@ fn path_tracer_bench() {
         assert!(!r["series"].as_array().unwrap().is_empty());
         // The net RMSE is the measured one with the reference's noise taken out.
         let (rmse, net) = (r["rmse"].as_f64().unwrap(), r["rmse_net"].as_f64().unwrap());
-        assert!((net * net - (rmse * rmse - noise * noise).max(0.0)).abs() <= 1e-9 + 1e-6 * rmse * rmse, "{rmse} {net} {noise}");
+        assert!(
+            (net * net - (rmse * rmse - noise * noise).max(0.0)).abs() <= 1e-9 + 1e-6 * rmse * rmse,
+            "{rmse} {net} {noise}"
+        );
     }
     assert!(json["reference_noise"].as_f64().unwrap() >= 0.0);
     assert!(std::fs::read_to_string(d.join("p.svg")).unwrap().contains("RMSE"));
-    assert!(text.contains("[primary]"), "the output says what the path tracer's lights are:\n{text}");
+    assert!(
+        text.contains("[primary]"),
+        "the output says what the path tracer's lights are:\n{text}"
+    );
     // `slc plot` re-plots a path-tracing report too (RMSE over time).
     ok(&d, &["plot", "p.json", "--out", "q.svg"]);
     assert!(std::fs::read_to_string(d.join("q.svg")).unwrap().contains("RMSE"));
@@ -498,7 +854,13 @@ fn unmodelled_mtl_features_are_warned_about_once() {
     .unwrap();
     let obj = "mtllib ball.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nusemtl glossy\nf 1//1 2//1 3//1\nusemtl matte\nf 1//1 3//1 4//1\n";
     std::fs::write(d.join("ball.obj"), obj).unwrap();
-    let out = slc(&d, &["render", "--scene", "ball.obj", "--width", "16", "--height", "16", "--vpls", "64", "--out", "ball.exr"]);
+    let out = slc(
+        &d,
+        &[
+            "render", "--scene", "ball.obj", "--width", "16", "--height", "16", "--vpls", "64",
+            "--out", "ball.exr",
+        ],
+    );
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{err}");
     let warnings: Vec<&str> = err.lines().filter(|l| l.starts_with("warning:")).collect();
@@ -509,7 +871,9 @@ fn unmodelled_mtl_features_are_warned_about_once() {
 // GPU tests show as ignored without an adapter, and fail under SLC_REQUIRE_GPU=1.
 /// An 8-bit RGB PNG's size and bytes.
 fn read_png(path: &Path) -> (u32, u32, Vec<u8>) {
-    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).expect("the PNG exists")));
+    let decoder = png::Decoder::new(std::io::BufReader::new(
+        std::fs::File::open(path).expect("the PNG exists"),
+    ));
     let mut reader = decoder.read_info().expect("a PNG");
     let mut bytes = vec![0; reader.output_buffer_size().expect("a size")];
     let info = reader.next_frame(&mut bytes).expect("a frame");
@@ -537,7 +901,11 @@ fn view_renders_frames_and_saves_a_screenshot() {
         .output()
         .expect("run slc view");
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(out.status.success(), "slc view failed:\n{text}\n{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "slc view failed:\n{text}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert!(text.contains("30 frames on"), "{text}");
     let (w, h, view) = read_png(&d.join("view.png"));
     assert_eq!((w, h), (96, 72));
@@ -560,10 +928,19 @@ fn view_renders_frames_and_saves_a_screenshot() {
             .current_dir(&d)
             .output()
             .expect("run slc view");
-        assert!(out.status.success(), "slc view --orbit {extra:?} failed:\n{}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "slc view --orbit {extra:?} failed:\n{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         means.push(mean(&read_png(&d.join("orbit.png")).2));
     }
-    assert!((means[0] - means[1]).abs() <= 0.02 * means[1], "orbiting: accumulated mean {:.1} vs plain {:.1}", means[0], means[1]);
+    assert!(
+        (means[0] - means[1]).abs() <= 0.02 * means[1],
+        "orbiting: accumulated mean {:.1} vs plain {:.1}",
+        means[0],
+        means[1]
+    );
     // No adapter for the window: one line naming the ones there are.
     let out = slc_tests::windowed(Path::new(env!("CARGO_BIN_EXE_slc")))
         .args(["view", "--frames", "1"])
@@ -572,8 +949,15 @@ fn view_renders_frames_and_saves_a_screenshot() {
         .output()
         .expect("run slc view");
     let err = String::from_utf8_lossy(&out.stderr);
-    let lines: Vec<&str> = err.lines().filter(|l| l.starts_with("error:") && !l.contains("XDG_RUNTIME_DIR")).collect();
-    assert!(!out.status.success() && lines.len() == 1 && lines[0].contains("no GPU adapter") && lines[0].contains("no-such-adapter"), "{err}");
+    let lines: Vec<&str> =
+        err.lines().filter(|l| l.starts_with("error:") && !l.contains("XDG_RUNTIME_DIR")).collect();
+    assert!(
+        !out.status.success()
+            && lines.len() == 1
+            && lines[0].contains("no GPU adapter")
+            && lines[0].contains("no-such-adapter"),
+        "{err}"
+    );
     std::fs::remove_dir_all(&d).ok();
 }
 
@@ -590,14 +974,24 @@ fn view_without_a_display_is_a_clear_error() {
         .output()
         .expect("run slc view");
     let err = String::from_utf8_lossy(&out.stderr);
-    let line = err.lines().filter(|l| l.starts_with("error:") && !l.contains("XDG_RUNTIME_DIR")).collect::<Vec<_>>();
+    let line = err
+        .lines()
+        .filter(|l| l.starts_with("error:") && !l.contains("XDG_RUNTIME_DIR"))
+        .collect::<Vec<_>>();
     assert!(!out.status.success() && line.len() == 1, "{err}");
     assert!(line[0].contains("no display") && line[0].contains("xvfb-run"), "{err}");
-    for args in [&["view", "--screenshot", "x.png"][..], &["view", "--frames", "0"], &["view", "--method", "reference"], &["view", "--vpls", "1000"]]
-    {
+    for args in [
+        &["view", "--screenshot", "x.png"][..],
+        &["view", "--frames", "0"],
+        &["view", "--method", "reference"],
+        &["view", "--vpls", "1000"],
+    ] {
         let out = slc(&d, args);
         let err = String::from_utf8_lossy(&out.stderr);
-        assert!(!out.status.success() && err.lines().filter(|l| l.starts_with("error:")).count() == 1, "{args:?}: {err}");
+        assert!(
+            !out.status.success() && err.lines().filter(|l| l.starts_with("error:")).count() == 1,
+            "{args:?}: {err}"
+        );
     }
     std::fs::remove_dir_all(&d).ok();
 }

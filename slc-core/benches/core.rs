@@ -58,9 +58,13 @@ fn bsh(c: &mut Criterion) {
     for n in [1_000usize, 65_536, 1 << 20] {
         let (bounds, r2, queries) = scene(n);
         g.throughput(Throughput::Elements(n as u64));
-        g.bench_with_input(BenchmarkId::new("build", n), &bounds, |b, bounds| b.iter(|| Bsh::build(bounds).unwrap()));
+        g.bench_with_input(BenchmarkId::new("build", n), &bounds, |b, bounds| {
+            b.iter(|| Bsh::build(bounds).unwrap())
+        });
         let mut t = Bsh::build(&bounds).unwrap();
-        g.bench_with_input(BenchmarkId::new("refit", n), &r2, |b, r2| b.iter(|| t.refit(r2).unwrap()));
+        g.bench_with_input(BenchmarkId::new("refit", n), &r2, |b, r2| {
+            b.iter(|| t.refit(r2).unwrap())
+        });
         t.refit(&r2).unwrap();
         let mut hits = 0u64;
         for &x in &queries {

@@ -430,7 +430,11 @@ mod tests {
             let w = theta.sin() * PI * s / m as f64 * (2.0 * PI / (4 * m) as f64);
             for j in 0..4 * m {
                 let phi = 2.0 * PI * (j as f64 + 0.5) / (4 * m) as f64;
-                let d = Vec3::new((theta.sin() * phi.cos()) as f32, (theta.sin() * phi.sin()) as f32, theta.cos() as f32);
+                let d = Vec3::new(
+                    (theta.sin() * phi.cos()) as f32,
+                    (theta.sin() * phi.sin()) as f32,
+                    theta.cos() as f32,
+                );
                 sum += f(d) * w;
             }
         }
@@ -443,7 +447,12 @@ mod tests {
         let mut sum = 0.0;
         for i in 0..k {
             for j in 0..k {
-                let l = ggx_vndf_sample(v, alpha, (i as f32 + 0.5) / k as f32, (j as f32 + 0.5) / k as f32);
+                let l = ggx_vndf_sample(
+                    v,
+                    alpha,
+                    (i as f32 + 0.5) / k as f32,
+                    (j as f32 + 0.5) / k as f32,
+                );
                 if l.z > 0.0 {
                     let f = brdf_eval(base, metallic, Vec3::ZERO, 0.0, alpha, Vec3::Z, v, l);
                     sum += (f.x * l.z / ggx_vndf_pdf(v, l, alpha)) as f64;
@@ -474,15 +483,21 @@ mod tests {
             for c in 0..3 {
                 let b = base[c] as f64;
                 let f0 = 0.16 * (refl as f64).powi(2) * (1.0 - m as f64) + b * m as f64;
-                let want = (1.0 - m as f64) * b / pi + f0 * (1.0 + f0 * (1.0 / 0.45245 - 1.0)) / pi * 0.25;
-                assert!((f[c] as f64 - want).abs() < 1e-5 * want.max(1e-3), "m {m} refl {refl}: {} vs {want}", f[c]);
+                let want =
+                    (1.0 - m as f64) * b / pi + f0 * (1.0 + f0 * (1.0 / 0.45245 - 1.0)) / pi * 0.25;
+                assert!(
+                    (f[c] as f64 - want).abs() < 1e-5 * want.max(1e-3),
+                    "m {m} refl {refl}: {} vs {want}",
+                    f[c]
+                );
             }
         }
         // Perceptual roughness below Bevy's clamp 0.089 renders at 0.089
         // (only the compensation sees the unclamped value, as in Bevy).
         let l = Vec3::new(0.3, 0.0, 1.0).normalize();
         let v = Vec3::new(-0.3, 0.0, 1.0).normalize();
-        let (f, g) = (bevy_brdf(base, 0.0, 0.0, 0.5, n, v, l), bevy_brdf(base, 0.0, 0.089, 0.5, n, v, l));
+        let (f, g) =
+            (bevy_brdf(base, 0.0, 0.0, 0.5, n, v, l), bevy_brdf(base, 0.0, 0.089, 0.5, n, v, l));
         assert!((f - g).abs().max_element() < 1e-2 * g.max_element(), "{f} vs {g}");
     }
 
@@ -491,13 +506,21 @@ mod tests {
     #[test]
     fn bevy_brdf_edge_cases_are_finite() {
         let n = Vec3::Z;
-        let dirs = [Vec3::Z, Vec3::new(1.0, 0.0, 1e-6).normalize(), Vec3::new(0.0, 1.0, -0.5).normalize(), Vec3::new(-1.0, 0.0, 0.0)];
+        let dirs = [
+            Vec3::Z,
+            Vec3::new(1.0, 0.0, 1e-6).normalize(),
+            Vec3::new(0.0, 1.0, -0.5).normalize(),
+            Vec3::new(-1.0, 0.0, 0.0),
+        ];
         for r in [0.0, 0.089, 0.5, 1.0] {
             for m in [0.0, 1.0] {
                 for &v in &dirs {
                     for &l in &dirs {
                         let f = bevy_brdf(Vec3::ONE, m, r, 0.5, n, v, l);
-                        assert!(f.is_finite() && f.min_element() >= 0.0, "r {r} m {m} v {v} l {l}: {f}");
+                        assert!(
+                            f.is_finite() && f.min_element() >= 0.0,
+                            "r {r} m {m} v {v} l {l}: {f}"
+                        );
                         if l.z <= 0.0 {
                             assert_eq!(f, Vec3::ZERO);
                         }
@@ -511,7 +534,11 @@ mod tests {
     fn lambertian_is_exactly_base_over_pi() {
         let b = Vec3::new(0.725, 0.71, 0.68);
         let n = Vec3::Z;
-        for (v, l) in [(view(0.9), Vec3::new(0.0, 0.6, 0.8)), (view(0.05), view(0.3)), (-view(0.3), view(0.5))] {
+        for (v, l) in [
+            (view(0.9), Vec3::new(0.0, 0.6, 0.8)),
+            (view(0.05), view(0.3)),
+            (-view(0.3), view(0.5)),
+        ] {
             assert_eq!(brdf_eval(b, 0.0, Vec3::ZERO, 0.0, 0.3, n, v, l), b * INV_PI);
             assert_eq!(bsdf_pdf(n, v, l, 0.3, 0.0), cosine_pdf(l.z));
         }
@@ -537,12 +564,20 @@ mod tests {
                 let mut below = 0;
                 for i in 0..k {
                     for j in 0..k {
-                        let d = ggx_vndf_sample(wi, alpha, (i as f32 + 0.5) / k as f32, (j as f32 + 0.5) / k as f32);
+                        let d = ggx_vndf_sample(
+                            wi,
+                            alpha,
+                            (i as f32 + 0.5) / k as f32,
+                            (j as f32 + 0.5) / k as f32,
+                        );
                         below += (d.z <= 0.0) as u32;
                     }
                 }
                 let lost = below as f64 / (k * k) as f64;
-                assert!((total + lost - 1.0).abs() < 0.01, "α {alpha}, cos {cos_v}: ∫pdf {total:.4} + lost {lost:.4}");
+                assert!(
+                    (total + lost - 1.0).abs() < 0.01,
+                    "α {alpha}, cos {cos_v}: ∫pdf {total:.4} + lost {lost:.4}"
+                );
                 if cos_v == 1.0 {
                     assert_eq!(below, 0, "α {alpha}: samples below the horizon at normal view");
                 }
@@ -594,8 +629,12 @@ mod tests {
                         let z = (it as f64 + (a as f64 + 0.5) / s as f64) / nt as f64;
                         let r = (1.0 - z * z).sqrt();
                         for b in 0..s {
-                            let phi = 2.0 * core::f64::consts::PI * (ip as f64 + (b as f64 + 0.5) / s as f64) / np as f64;
-                            let wo = Vec3::new((r * phi.cos()) as f32, (r * phi.sin()) as f32, z as f32);
+                            let phi = 2.0
+                                * core::f64::consts::PI
+                                * (ip as f64 + (b as f64 + 0.5) / s as f64)
+                                / np as f64;
+                            let wo =
+                                Vec3::new((r * phi.cos()) as f32, (r * phi.sin()) as f32, z as f32);
                             acc += ggx_vndf_pdf(wi, wo, alpha) as f64;
                         }
                     }
@@ -622,7 +661,10 @@ mod tests {
             let k = (dof - 1) as f64;
             // Wilson–Hilferty: χ²_q ≈ k (1 − 2/(9k) + z_q √(2/(9k)))³, z = 4.753 for 1 − 10⁻⁶.
             let limit = k * (1.0 - 2.0 / (9.0 * k) + 4.753 * (2.0 / (9.0 * k)).sqrt()).powi(3);
-            assert!(chi2 < limit, "α {alpha}, cos {cos_v}: χ² {chi2:.1} over {dof} cells, limit {limit:.1}");
+            assert!(
+                chi2 < limit,
+                "α {alpha}, cos {cos_v}: χ² {chi2:.1} over {dof} cells, limit {limit:.1}"
+            );
         }
     }
 
@@ -630,13 +672,23 @@ mod tests {
     #[test]
     fn reciprocity() {
         let b = Vec3::new(0.9, 0.5, 0.2);
-        for (m, f0, f90) in [(0.0, Vec3::splat(0.04), 1.0), (1.0, Vec3::ZERO, 0.0), (0.4, Vec3::new(0.02, 0.05, 0.08), 0.7)] {
+        for (m, f0, f90) in [
+            (0.0, Vec3::splat(0.04), 1.0),
+            (1.0, Vec3::ZERO, 0.0),
+            (0.4, Vec3::new(0.02, 0.05, 0.08), 0.7),
+        ] {
             for alpha in [0.01, 0.2, 0.8] {
-                for (v, l) in [(view(0.9), Vec3::new(0.1, 0.6, 0.79).normalize()), (view(0.2), view(0.7)), (Vec3::new(-0.5, 0.5, 0.707), view(0.99))]
-                {
+                for (v, l) in [
+                    (view(0.9), Vec3::new(0.1, 0.6, 0.79).normalize()),
+                    (view(0.2), view(0.7)),
+                    (Vec3::new(-0.5, 0.5, 0.707), view(0.99)),
+                ] {
                     let a = brdf_eval(b, m, f0, f90, alpha, Vec3::Z, v, l);
                     let c = brdf_eval(b, m, f0, f90, alpha, Vec3::Z, l, v);
-                    assert!((a - c).abs().max_element() <= 1e-5 * a.max_element().max(1.0), "{a} vs {c}");
+                    assert!(
+                        (a - c).abs().max_element() <= 1e-5 * a.max_element().max(1.0),
+                        "{a} vs {c}"
+                    );
                 }
             }
         }
@@ -651,7 +703,8 @@ mod tests {
     /// oblique views is stated too.
     #[test]
     fn white_furnace() {
-        let expect_normal = [(0.001f32, 1.000f64), (0.1, 0.9883), (0.3, 0.8774), (0.5, 0.6878), (1.0, 0.3069)];
+        let expect_normal =
+            [(0.001f32, 1.000f64), (0.1, 0.9883), (0.3, 0.8774), (0.5, 0.6878), (1.0, 0.3069)];
         for (alpha, e) in expect_normal {
             let normal = albedo_by_sampling(Vec3::ONE, 1.0, alpha, Vec3::Z, 256);
             assert!((normal - e).abs() < 0.005, "α {alpha}: {normal:.4} (expected {e})");
@@ -659,8 +712,15 @@ mod tests {
                 let energy = albedo_by_sampling(Vec3::ONE, 1.0, alpha, view(cos_v), 256);
                 assert!(energy <= 1.0 + 1e-3, "α {alpha}, cos {cos_v}: {energy}");
                 if alpha >= 0.1 {
-                    let quad = hemisphere(600, |l| (brdf_eval(Vec3::ONE, 1.0, Vec3::ZERO, 0.0, alpha, Vec3::Z, view(cos_v), l).x * l.z) as f64);
-                    assert!((quad - energy).abs() < 5e-3, "α {alpha}, cos {cos_v}: quadrature {quad:.4}, sampled {energy:.4}");
+                    let quad = hemisphere(600, |l| {
+                        (brdf_eval(Vec3::ONE, 1.0, Vec3::ZERO, 0.0, alpha, Vec3::Z, view(cos_v), l)
+                            .x
+                            * l.z) as f64
+                    });
+                    assert!(
+                        (quad - energy).abs() < 5e-3,
+                        "α {alpha}, cos {cos_v}: quadrature {quad:.4}, sampled {energy:.4}"
+                    );
                 }
             }
         }
@@ -668,11 +728,23 @@ mod tests {
         // views: glTF weights the diffuse lobe by `1 − F(v·h)` (about 0.95
         // on average) while the specular lobe grows toward grazing. Measured
         // (NumPy quadrature of the same formula agrees to 1e-4):
-        for (alpha, cos_v, e) in
-            [(0.1f32, 1.0f32, 0.9995f64), (0.1, 0.5, 1.0249), (0.1, 0.2, 1.1854), (0.3, 1.0, 0.9950), (0.3, 0.5, 1.0064), (0.3, 0.2, 1.0556)]
-        {
-            let diel = hemisphere(800, |l| (brdf_eval(Vec3::ONE, 0.0, Vec3::splat(0.04), 1.0, alpha, Vec3::Z, view(cos_v), l).x * l.z) as f64);
-            assert!((diel - e).abs() < 2e-3, "dielectric α {alpha}, cos {cos_v}: {diel:.4}, expected {e}");
+        for (alpha, cos_v, e) in [
+            (0.1f32, 1.0f32, 0.9995f64),
+            (0.1, 0.5, 1.0249),
+            (0.1, 0.2, 1.1854),
+            (0.3, 1.0, 0.9950),
+            (0.3, 0.5, 1.0064),
+            (0.3, 0.2, 1.0556),
+        ] {
+            let diel = hemisphere(800, |l| {
+                (brdf_eval(Vec3::ONE, 0.0, Vec3::splat(0.04), 1.0, alpha, Vec3::Z, view(cos_v), l)
+                    .x
+                    * l.z) as f64
+            });
+            assert!(
+                (diel - e).abs() < 2e-3,
+                "dielectric α {alpha}, cos {cos_v}: {diel:.4}, expected {e}"
+            );
         }
     }
 
@@ -682,18 +754,42 @@ mod tests {
     #[test]
     fn edge_cases_are_finite() {
         let b = Vec3::new(0.5, 0.5, 0.5);
-        let dirs = [Vec3::Z, view(1e-4), view(0.0), -Vec3::Z, view(-0.3), Vec3::new(0.0, 1.0, 1e-7).normalize()];
+        let dirs = [
+            Vec3::Z,
+            view(1e-4),
+            view(0.0),
+            -Vec3::Z,
+            view(-0.3),
+            Vec3::new(0.0, 1.0, 1e-7).normalize(),
+        ];
         let below_one = 1.0 - f32::EPSILON / 2.0;
         for rough in [0.0f32, 1e-6, 0.01, 0.5, 1.0] {
             let alpha = ggx_alpha(rough);
             for &v in &dirs {
                 for &l in &dirs {
                     let f = brdf_eval(b, 0.5, Vec3::splat(0.04), 1.0, alpha, Vec3::Z, v, l);
-                    assert!(f.is_finite() && f.min_element() >= 0.0, "r {rough}: f({v}, {l}) = {f}");
-                    let p = bsdf_pdf(Vec3::Z, v, l, alpha, specular_probability(receiver_lobe(b, 0.5, Vec3::splat(0.04), 1.0, alpha, v.z)));
+                    assert!(
+                        f.is_finite() && f.min_element() >= 0.0,
+                        "r {rough}: f({v}, {l}) = {f}"
+                    );
+                    let p = bsdf_pdf(
+                        Vec3::Z,
+                        v,
+                        l,
+                        alpha,
+                        specular_probability(receiver_lobe(
+                            b,
+                            0.5,
+                            Vec3::splat(0.04),
+                            1.0,
+                            alpha,
+                            v.z,
+                        )),
+                    );
                     assert!(p.is_finite() && p >= 0.0, "r {rough}: pdf({v}, {l}) = {p}");
                 }
-                for (u1, u2) in [(0.0, 0.0), (below_one, below_one), (0.5, below_one), (0.05, 0.0)] {
+                for (u1, u2) in [(0.0, 0.0), (below_one, below_one), (0.5, below_one), (0.05, 0.0)]
+                {
                     let d = bsdf_sample(Vec3::Z, v, alpha, 0.5, u1, u2);
                     assert!(d.is_finite(), "r {rough}: sample from {v} at ({u1}, {u2}) = {d}");
                 }
@@ -717,12 +813,23 @@ mod tests {
                 assert_eq!(p_s, 1.0);
                 for i in 0..50 {
                     for j in 0..50 {
-                        let l = bsdf_sample(n, v, alpha, p_s, (i as f32 + 0.5) / 50.0, (j as f32 + 0.5) / 50.0);
+                        let l = bsdf_sample(
+                            n,
+                            v,
+                            alpha,
+                            p_s,
+                            (i as f32 + 0.5) / 50.0,
+                            (j as f32 + 0.5) / 50.0,
+                        );
                         if l.z <= 0.0 {
                             continue;
                         }
-                        let w = brdf_eval(b, 1.0, Vec3::ZERO, 0.0, alpha, n, v, l) * l.z / bsdf_pdf(n, v, l, alpha, p_s);
-                        assert!(w.is_finite() && w.max_element() <= 1.0 + 1e-3, "α {alpha}, cos {cos_v}: weight {w}");
+                        let w = brdf_eval(b, 1.0, Vec3::ZERO, 0.0, alpha, n, v, l) * l.z
+                            / bsdf_pdf(n, v, l, alpha, p_s);
+                        assert!(
+                            w.is_finite() && w.max_element() <= 1.0 + 1e-3,
+                            "α {alpha}, cos {cos_v}: weight {w}"
+                        );
                     }
                 }
             }
@@ -771,10 +878,16 @@ mod tests {
                 worst = worst.max((m2 - m1 * m1).max(0.0).sqrt());
             }
             let bound = core::f64::consts::PI * p as f64 * 0.01;
-            assert!((worst - bound).abs() <= 0.01 * bound, "P = {p}: max σ {worst:.5} vs π·P·ε {bound:.5}");
+            assert!(
+                (worst - bound).abs() <= 0.01 * bound,
+                "P = {p}: max σ {worst:.5} vs π·P·ε {bound:.5}"
+            );
             if metallic == 1.0 {
                 let peak = 1.0 / (4.0 * alpha as f64 * alpha as f64);
-                assert!((core::f64::consts::PI * p as f64 - peak).abs() <= 1e-3 * peak, "π·P = F/(4α²)");
+                assert!(
+                    (core::f64::consts::PI * p as f64 - peak).abs() <= 1e-3 * peak,
+                    "π·P = F/(4α²)"
+                );
             }
         }
     }

@@ -104,7 +104,9 @@ pub fn bsh_count(nodes: BshNodes) -> u32 {
 /// part of [`crate::wgsl::library`]: they read a BSH buffer, which only the
 /// kernels that bind one declare (their WGSL is [`walk::WGSL`]).
 pub mod walk {
-    use super::{BSH_NONE, BshNode, BshNodes, bsh_count, bsh_node, bsh_range_bound, bsh_scaled_radius};
+    use super::{
+        BSH_NONE, BshNode, BshNodes, bsh_count, bsh_node, bsh_range_bound, bsh_scaled_radius,
+    };
     use crate::importance::{cone_cos_of, range_scale_at, range_scale_toward};
     use crate::sphere::{sphere_contains_point, sphere_pad, sphere_union};
     use crate::wgsl::*;
@@ -275,7 +277,11 @@ impl Bsh {
                 return Err(BshError::BadExtent(i, b.extent));
             }
         }
-        let mut bsh = Bsh { nodes: Vec::with_capacity(2 * bounds.len()), bounds: bounds.to_vec(), leaves: Vec::new() };
+        let mut bsh = Bsh {
+            nodes: Vec::with_capacity(2 * bounds.len()),
+            bounds: bounds.to_vec(),
+            leaves: Vec::new(),
+        };
         if !bounds.is_empty() {
             let mut idx: Vec<u32> = (0..bounds.len() as u32).collect();
             bsh.emit(&mut idx, BSH_NONE);
@@ -294,10 +300,24 @@ impl Bsh {
         let me = self.nodes.len() as u32;
         if idx.len() == 1 {
             let c = self.bounds[idx[0] as usize].center;
-            self.nodes.push(BshNode { center: c, radius: 0.0, child: BSH_NONE, next, light: idx[0], extent: self.bounds[idx[0] as usize].extent });
+            self.nodes.push(BshNode {
+                center: c,
+                radius: 0.0,
+                child: BSH_NONE,
+                next,
+                light: idx[0],
+                extent: self.bounds[idx[0] as usize].extent,
+            });
             return;
         }
-        self.nodes.push(BshNode { center: Vec3::ZERO, radius: 0.0, child: me + 1, next, light: BSH_NONE, extent: 0.0 });
+        self.nodes.push(BshNode {
+            center: Vec3::ZERO,
+            radius: 0.0,
+            child: me + 1,
+            next,
+            light: BSH_NONE,
+            extent: 0.0,
+        });
         let b = idx.iter().fold(Aabb::EMPTY, |b, &i| b.grow(self.bounds[i as usize].center));
         let ext = b.max - b.min;
         let axis = if ext.x >= ext.y && ext.x >= ext.z {
@@ -309,7 +329,9 @@ impl Bsh {
         };
         let mid = idx.len() / 2;
         let bounds = &self.bounds;
-        idx.select_nth_unstable_by(mid, |&a, &b| bounds[a as usize].center[axis].total_cmp(&bounds[b as usize].center[axis]));
+        idx.select_nth_unstable_by(mid, |&a, &b| {
+            bounds[a as usize].center[axis].total_cmp(&bounds[b as usize].center[axis])
+        });
         let (left, right) = idx.split_at_mut(mid);
         // The right child's index is known only after the left subtree:
         // a subtree over m lights has 2m − 1 nodes.
@@ -372,7 +394,9 @@ impl Bsh {
 
     /// The current range sphere of light `i` (as its leaf holds it).
     pub fn light_sphere(&self, i: usize) -> Option<Sphere> {
-        self.leaves.get(i).map(|&k| Sphere::new(self.nodes[k as usize].center, self.nodes[k as usize].radius))
+        self.leaves
+            .get(i)
+            .map(|&k| Sphere::new(self.nodes[k as usize].center, self.nodes[k as usize].radius))
     }
 
     /// The talk's stackless traversal: calls `visit(light)` for every leaf
@@ -423,7 +447,10 @@ impl Bsh {
         if !s.is_valid() {
             return;
         }
-        self.traverse(|c, r| crate::sphere::sphere_overlaps_sphere(c, r, s.center, s.radius), visit);
+        self.traverse(
+            |c, r| crate::sphere::sphere_overlaps_sphere(c, r, s.center, s.radius),
+            visit,
+        );
     }
 
     /// Lights whose range sphere overlaps box `b` (none when `b` has NaN).
@@ -469,7 +496,14 @@ fn inner_refitted(mut n: BshNode, left: BshNode, right: BshNode) -> BshNode {
 /// Refits the subtree that is all of `nodes`, its root `nodes[0]` at index
 /// `base` of the whole array (links are absolute): subtrees above `grain`
 /// nodes split in two through `join`, smaller ones in reverse pre-order.
-fn refit_subtree(nodes: &mut [BshNode], base: u32, bounds: &[LightBound], r2: &[f32], grain: usize, join: &Join) {
+fn refit_subtree(
+    nodes: &mut [BshNode],
+    base: u32,
+    bounds: &[LightBound],
+    r2: &[f32],
+    grain: usize,
+    join: &Join,
+) {
     // A leaf is a subtree of one node (`grain ≥ 1`).
     if nodes.len() <= grain {
         for k in (0..nodes.len()).rev() {
@@ -534,7 +568,9 @@ mod tests {
         use rand_core::{RngCore, SeedableRng};
         let mut rng = rand_pcg::Pcg32::seed_from_u64(5);
         let mut u = move || rng.next_u32() as f32 / 4294967296.0;
-        let b: Vec<_> = (0..300).map(|_| LightBound { center: Vec3::new(u(), u(), u()) * 10.0, extent: u() * 0.1 }).collect();
+        let b: Vec<_> = (0..300)
+            .map(|_| LightBound { center: Vec3::new(u(), u(), u()) * 10.0, extent: u() * 0.1 })
+            .collect();
         let r2: Vec<f32> = (0..300).map(|_| 0.01 / (1.0 - u()).max(1e-6)).collect();
         let mut serial = Bsh::build(&b).unwrap();
         serial.refit(&r2).unwrap();
@@ -572,7 +608,10 @@ mod tests {
     #[test]
     fn rejects_bad_input() {
         assert_eq!(Bsh::build(&[pt(f32::NAN, 0.0, 0.0)]), Err(BshError::NonFiniteCenter(0)));
-        assert_eq!(Bsh::build(&[pt(0.0, 0.0, 0.0), pt(f32::INFINITY, 0.0, 0.0)]), Err(BshError::NonFiniteCenter(1)));
+        assert_eq!(
+            Bsh::build(&[pt(0.0, 0.0, 0.0), pt(f32::INFINITY, 0.0, 0.0)]),
+            Err(BshError::NonFiniteCenter(1))
+        );
         // Queries with NaN or a negative radius match nothing (regression:
         // fuzz/bsh_vs_brute found a negative query radius answered
         // inconsistently by leaves and their parents).
@@ -615,19 +654,27 @@ mod tests {
             let scale = 10f32.powf(38.0 - 83.0 * u());
             let n = 2 + (u() * 6.0) as usize;
             let b: Vec<LightBound> = (0..n)
-                .map(|_| LightBound { center: (Vec3::new(u(), u(), u()) - 0.5) * scale, extent: if u() < 0.5 { 0.0 } else { u() * scale } })
+                .map(|_| LightBound {
+                    center: (Vec3::new(u(), u(), u()) - 0.5) * scale,
+                    extent: if u() < 0.5 { 0.0 } else { u() * scale },
+                })
                 .collect();
             let r2: Vec<f32> = (0..n).map(|_| (u() * scale).powi(2)).collect();
             let mut t = Bsh::build(&b).unwrap();
             t.refit(&r2).unwrap();
             let spheres: Vec<Sphere> = b.iter().zip(&r2).map(|(b, &r)| b.range_sphere(r)).collect();
-            let brute = |test: &dyn Fn(&Sphere) -> bool| -> Vec<u32> { (0..n as u32).filter(|&i| test(&spheres[i as usize])).collect() };
+            let brute = |test: &dyn Fn(&Sphere) -> bool| -> Vec<u32> {
+                (0..n as u32).filter(|&i| test(&spheres[i as usize])).collect()
+            };
             let x = (Vec3::new(u(), u(), u()) - 0.5) * scale;
             let q = Sphere::new(x, u() * scale);
             let bx = Aabb { min: x, max: x + Vec3::new(u(), u(), u()) * scale * 0.1 };
-            mismatches += (sorted(|f| t.for_each_containing(x, f)) != brute(&|s| s.contains(x))) as u32;
-            mismatches += (sorted(|f| t.for_each_overlapping_sphere(q, f)) != brute(&|s| s.overlaps_sphere(&q))) as u32;
-            mismatches += (sorted(|f| t.for_each_overlapping_aabb(bx, f)) != brute(&|s| s.overlaps_aabb(&bx))) as u32;
+            mismatches +=
+                (sorted(|f| t.for_each_containing(x, f)) != brute(&|s| s.contains(x))) as u32;
+            mismatches += (sorted(|f| t.for_each_overlapping_sphere(q, f))
+                != brute(&|s| s.overlaps_sphere(&q))) as u32;
+            mismatches += (sorted(|f| t.for_each_overlapping_aabb(bx, f))
+                != brute(&|s| s.overlaps_aabb(&bx))) as u32;
         }
         assert_eq!(mismatches, 0);
     }
@@ -649,7 +696,14 @@ mod tests {
             let nrm = (Vec3::new(u(), u(), u()) - 0.5).normalize();
             let view = (Vec3::new(u(), u(), u()) - 0.5 + nrm).normalize();
             let alpha = (0.05 + 0.95 * u() * u()).powi(2);
-            let lobe = receiver_lobe(Vec3::splat(0.8), if u() < 0.5 { 1.0 } else { 0.0 }, Vec3::splat(0.04), 1.0, alpha, nrm.dot(view));
+            let lobe = receiver_lobe(
+                Vec3::splat(0.8),
+                if u() < 0.5 { 1.0 } else { 0.0 },
+                Vec3::splat(0.04),
+                1.0,
+                alpha,
+                nrm.dot(view),
+            );
             let (r, rl) = (mirror_dir(nrm, view), range_lobe(lobe));
             if rl.w <= 1.0 {
                 continue;
@@ -694,8 +748,12 @@ mod tests {
         let (mut mismatches, mut found, mut below_peak, mut at_peak) = (0, 0, 0, 0);
         for _ in 0..2_000 {
             let n = 2 + (u() * 60.0) as usize;
-            let b: Vec<LightBound> =
-                (0..n).map(|_| LightBound { center: Vec3::new(u(), u(), u()) - 0.5, extent: if u() < 0.5 { 0.0 } else { 0.02 * u() } }).collect();
+            let b: Vec<LightBound> = (0..n)
+                .map(|_| LightBound {
+                    center: Vec3::new(u(), u(), u()) - 0.5,
+                    extent: if u() < 0.5 { 0.0 } else { 0.02 * u() },
+                })
+                .collect();
             let r2: Vec<f32> = (0..n).map(|_| (0.05 / (1.0 - u()).sqrt()).powi(2)).collect();
             let mut t = Bsh::build(&b).unwrap();
             t.refit(&r2).unwrap();
@@ -703,11 +761,22 @@ mod tests {
             let nrm = (Vec3::new(u(), u(), u()) - 0.5).normalize();
             let v = (Vec3::new(u(), u(), u()) - 0.5 + nrm).normalize();
             let alpha = (0.05 + 0.95 * u()).powi(2);
-            let lobe = receiver_lobe(Vec3::splat(0.8), if u() < 0.5 { 1.0 } else { 0.0 }, Vec3::splat(0.04), 1.0, alpha, nrm.dot(v));
+            let lobe = receiver_lobe(
+                Vec3::splat(0.8),
+                if u() < 0.5 { 1.0 } else { 0.0 },
+                Vec3::splat(0.04),
+                1.0,
+                alpha,
+                nrm.dot(v),
+            );
             let r = crate::brdf::mirror_dir(nrm, v);
             let rl = range_lobe(lobe);
             let peak = range_scale(lobe);
-            let leaves: Vec<BshNode> = (0..n).map(|i| *t.nodes().iter().find(|l| l.child == BSH_NONE && l.light == i as u32).unwrap()).collect();
+            let leaves: Vec<BshNode> = (0..n)
+                .map(|i| {
+                    *t.nodes().iter().find(|l| l.child == BSH_NONE && l.light == i as u32).unwrap()
+                })
+                .collect();
             let mut brute = Vec::new();
             for i in 0..n {
                 let s = range_scale_toward(rl, b[i].center, b[i].extent, x, r);
@@ -717,7 +786,8 @@ mod tests {
                     at_peak += 1;
                 }
                 // The leaf's test is the scaled sphere's, up to rounding.
-                let (d, radius) = ((x - b[i].center).length(), b[i].extent + s.sqrt() * r2[i].sqrt());
+                let (d, radius) =
+                    ((x - b[i].center).length(), b[i].extent + s.sqrt() * r2[i].sqrt());
                 let reaches = walk::bsh_reaches(leaves[i], x, r, rl);
                 if (d - radius).abs() > 1e-5 * radius {
                     mismatches += (reaches != (d <= radius)) as u32;
@@ -732,6 +802,9 @@ mod tests {
             found += got.len();
         }
         assert_eq!(mismatches, 0);
-        assert!(found > 500 && below_peak > 1_000 && at_peak > 100, "{found} found, {below_peak} below the peak, {at_peak} at it");
+        assert!(
+            found > 500 && below_peak > 1_000 && at_peak > 100,
+            "{found} found, {below_peak} below the peak, {at_peak} at it"
+        );
     }
 }

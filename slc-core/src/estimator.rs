@@ -61,7 +61,11 @@ impl CompensatedSum {
 
 /// SLC estimate: evaluates `contribution` only for lights that survive the
 /// roulette and weights them by `1/p`.
-pub fn slc_sum<L>(lights: impl IntoIterator<Item = L>, seen: impl Fn(&L) -> Seen, contribution: impl Fn(&L) -> Vec3) -> Estimate {
+pub fn slc_sum<L>(
+    lights: impl IntoIterator<Item = L>,
+    seen: impl Fn(&L) -> Seen,
+    contribution: impl Fn(&L) -> Vec3,
+) -> Estimate {
     let mut sum = CompensatedSum::default();
     let mut evaluated = 0;
     for l in lights {
@@ -76,7 +80,11 @@ pub fn slc_sum<L>(lights: impl IntoIterator<Item = L>, seen: impl Fn(&L) -> Seen
 
 /// Clamped-range estimate: lights with `d² < range²` count at full weight,
 /// the rest are dropped. `d2_range2` gives `(d², range²)` per light.
-pub fn clamped_sum<L>(lights: impl IntoIterator<Item = L>, d2_range2: impl Fn(&L) -> (f32, f32), contribution: impl Fn(&L) -> Vec3) -> Estimate {
+pub fn clamped_sum<L>(
+    lights: impl IntoIterator<Item = L>,
+    d2_range2: impl Fn(&L) -> (f32, f32),
+    contribution: impl Fn(&L) -> Vec3,
+) -> Estimate {
     let mut sum = CompensatedSum::default();
     let mut evaluated = 0;
     for l in lights {
@@ -90,7 +98,10 @@ pub fn clamped_sum<L>(lights: impl IntoIterator<Item = L>, d2_range2: impl Fn(&L
 }
 
 /// The unculled sum `Σᵢ fᵢ` (the ground truth SLC is unbiased for).
-pub fn unculled_sum<L>(lights: impl IntoIterator<Item = L>, contribution: impl Fn(&L) -> Vec3) -> Estimate {
+pub fn unculled_sum<L>(
+    lights: impl IntoIterator<Item = L>,
+    contribution: impl Fn(&L) -> Vec3,
+) -> Estimate {
     let mut sum = CompensatedSum::default();
     let mut evaluated = 0;
     for l in lights {

@@ -154,7 +154,12 @@ mod tests {
         let (x, spot) = (Vec3::new(1.0, 0.0, 0.0), Vec3::new(1.0, 2.0, 0.0));
         let axis = Vec3::new(0.0, -1.0, 0.0);
         assert!((primary_light_dir(x, spot, axis, true) - Vec3::Y).length() < 1e-6);
-        assert!((primary_light_dir(x, Vec3::new(3.0, 0.0, 4.0), Vec3::ZERO, true) - Vec3::new(0.4, 0.0, 0.8).normalize()).length() < 1e-6);
+        assert!(
+            (primary_light_dir(x, Vec3::new(3.0, 0.0, 4.0), Vec3::ZERO, true)
+                - Vec3::new(0.4, 0.0, 0.8).normalize())
+            .length()
+                < 1e-6
+        );
         assert_eq!(primary_light_dir(x, Vec3::ZERO, axis, false), Vec3::Y);
         assert_eq!(primary_light_dir(spot, spot, axis, true), Vec3::Y);
     }
@@ -165,9 +170,11 @@ mod tests {
     fn glossy_composition() {
         let (base, e) = (Vec3::new(0.8, 0.6, 0.4), Vec3::splat(2.0));
         let f = Vec3::new(0.5, 0.25, 0.125);
-        let metal = glossy_radiance(base, Vec3::ZERO, 1.0, f, e, Vec3::splat(3.0), Vec3::splat(0.01));
+        let metal =
+            glossy_radiance(base, Vec3::ZERO, 1.0, f, e, Vec3::splat(3.0), Vec3::splat(0.01));
         assert!((metal - (f * e + Vec3::splat(0.01))).length() < 1e-6);
-        let dielectric = glossy_radiance(base, Vec3::splat(0.1), 0.0, f, e, Vec3::splat(3.0), Vec3::ZERO);
+        let dielectric =
+            glossy_radiance(base, Vec3::splat(0.1), 0.0, f, e, Vec3::splat(3.0), Vec3::ZERO);
         assert!((dielectric - (Vec3::splat(0.1) + f * e + base * INV_PI * 3.0)).length() < 1e-6);
     }
 
@@ -208,7 +215,11 @@ mod tests {
         assert!((e - Vec3::ONE).abs().max_element() < 1e-6);
         assert_eq!(point_irradiance(Vec3::ONE, n, Vec3::new(0.0, -1.0, 0.0)), Vec3::ZERO);
         assert!(point_irradiance(Vec3::ONE, n, Vec3::ZERO).is_finite());
-        let d = directional_irradiance(Vec3::splat(2.0), n, Vec3::new(0.0, 0.5f32.sqrt(), 0.5f32.sqrt()));
+        let d = directional_irradiance(
+            Vec3::splat(2.0),
+            n,
+            Vec3::new(0.0, 0.5f32.sqrt(), 0.5f32.sqrt()),
+        );
         assert!((d.x - 2.0 * 0.5f32.sqrt()).abs() < 1e-6);
         assert_eq!(directional_irradiance(Vec3::ONE, n, -Vec3::Y), Vec3::ZERO);
     }

@@ -286,7 +286,14 @@ impl LightCone {
     pub fn of_light(l: &Light, power: Vec3) -> LightCone {
         let b = l.bound();
         let phi = power.max_element();
-        let cone = |axis: Vec3, cos_o: f32, cos_e: f32| LightCone { center: b.center, radius: b.extent, phi, axis, cos_o, cos_e };
+        let cone = |axis: Vec3, cos_o: f32, cos_e: f32| LightCone {
+            center: b.center,
+            radius: b.extent,
+            phi,
+            axis,
+            cos_o,
+            cos_e,
+        };
         match l {
             Light::Triangle(t) => cone(t.normal(), 1.0, 0.0),
             Light::Vpl(v) => cone(v.normal(), 1.0, 0.0),
@@ -297,7 +304,8 @@ impl LightCone {
                 // 0.999 (θ_e ≥ 2.6°): a hard-edged spot (θ_e = 0) rounds
                 // to 1 and would get importance 0 inside its beam, where
                 // cos θ' = 1 ≤ cos θ_e (pbrt-v4 allows the same slop).
-                let cos_e = (co * ci + safe_sqrt(1.0 - co * co) * safe_sqrt(1.0 - ci * ci)).min(0.999);
+                let cos_e =
+                    (co * ci + safe_sqrt(1.0 - co * co) * safe_sqrt(1.0 - ci * ci)).min(0.999);
                 cone(s.direction(), ci, cos_e)
             }
             Light::Point(_) | Light::Ies(_) => cone(Vec3::Z, -1.0, 0.0),
@@ -306,13 +314,34 @@ impl LightCone {
 
     /// [`light_importance`] of this light at `p` with receiver normal `n`.
     pub fn importance(&self, p: Vec3, n: Vec3) -> f32 {
-        light_importance(self.center, self.radius, self.phi, self.axis, self.cos_o, self.cos_e, p, n)
+        light_importance(
+            self.center,
+            self.radius,
+            self.phi,
+            self.axis,
+            self.cos_o,
+            self.cos_e,
+            p,
+            n,
+        )
     }
 
     /// `slc-weighted`'s [`cone_weight`] of this light for the receiver `rc`
     /// and threshold range² `rt2`.
     pub fn weight(&self, rc: &Receiver, rt2: f32) -> f32 {
-        cone_weight(self.center, self.radius, self.phi, self.axis, self.cos_o, self.cos_e, rt2, rc.p, rc.n, rc.r, rc.lobe)
+        cone_weight(
+            self.center,
+            self.radius,
+            self.phi,
+            self.axis,
+            self.cos_o,
+            self.cos_e,
+            rt2,
+            rc.p,
+            rc.n,
+            rc.r,
+            rc.lobe,
+        )
     }
 }
 
@@ -358,7 +387,18 @@ impl Receiver {
 
     /// [`receiver_importance`] of the light bounded by `cone`.
     pub fn importance(&self, cone: &LightCone) -> f32 {
-        receiver_importance(cone.center, cone.radius, cone.phi, cone.axis, cone.cos_o, cone.cos_e, self.p, self.n, self.r, self.lobe)
+        receiver_importance(
+            cone.center,
+            cone.radius,
+            cone.phi,
+            cone.axis,
+            cone.cos_o,
+            cone.cos_e,
+            self.p,
+            self.n,
+            self.r,
+            self.lobe,
+        )
     }
 }
 
@@ -369,7 +409,9 @@ mod tests {
 
     #[test]
     fn importance_is_zero_only_where_nothing_can_arrive() {
-        let t = Light::Triangle(TriangleLight::new(Vec3::ZERO, Vec3::X * 0.1, Vec3::Z * 0.1, Vec3::ONE).unwrap());
+        let t = Light::Triangle(
+            TriangleLight::new(Vec3::ZERO, Vec3::X * 0.1, Vec3::Z * 0.1, Vec3::ONE).unwrap(),
+        );
         let c = LightCone::of_light(&t, t.power());
         let up = if c.axis.y > 0.0 { 1.0 } else { -1.0 };
         // In front of the emitter, facing it: positive; nearer is larger.
@@ -407,7 +449,11 @@ mod tests {
             let axis = Vec3::new(r() - 0.5, r() - 0.5, r() - 0.5).normalize_or(Vec3::Y);
             let (cos_o, cos_e) = (2.0 * r() - 1.0, if k % 3 == 0 { 0.0 } else { r() });
             let p = if k % 7 == 0 { center } else { Vec3::new(r(), r(), r()) * 2.0 };
-            let n = if k % 11 == 0 { Vec3::ZERO } else { Vec3::new(r() - 0.5, r() - 0.5, r() - 0.5).normalize_or(Vec3::X) };
+            let n = if k % 11 == 0 {
+                Vec3::ZERO
+            } else {
+                Vec3::new(r() - 0.5, r() - 0.5, r() - 0.5).normalize_or(Vec3::X)
+            };
             let phi = 0.1 + r();
             let mut want = emitter_importance(center, radius, phi, axis, cos_o, cos_e, p);
             if n != Vec3::ZERO {
@@ -431,7 +477,9 @@ mod tests {
         use crate::light::SpotLight;
         for a in [0.01f32, 0.2, 0.5, 0.8, 1.0, 1.3] {
             for (inner, outer) in [(a, a), (a, a + 1e-6), (a * 0.999, a)] {
-                let s = Light::Spot(SpotLight::new(Vec3::ZERO, Vec3::NEG_Y, Vec3::ONE, inner, outer).unwrap());
+                let s = Light::Spot(
+                    SpotLight::new(Vec3::ZERO, Vec3::NEG_Y, Vec3::ONE, inner, outer).unwrap(),
+                );
                 let c = LightCone::of_light(&s, s.power());
                 let p = Vec3::new(0.0, -2.0, 0.0);
                 assert!(s.contribution_at(p).0.max_element() > 0.0);

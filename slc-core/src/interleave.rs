@@ -224,7 +224,8 @@ mod tests {
                 }
             }
         }
-        let first: alloc::collections::BTreeSet<u32> = (0..32).map(|seed| interleave_shift(seed, 0, 8)).collect();
+        let first: alloc::collections::BTreeSet<u32> =
+            (0..32).map(|seed| interleave_shift(seed, 0, 8)).collect();
         assert!(first.len() > 10, "frame 0's shift must depend on the seed: {first:?}");
         assert_eq!(interleave_shift(3, 5, 1), 0);
         assert_eq!(shifted_subset(60, 7, 8), 3);

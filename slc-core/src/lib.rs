@@ -113,7 +113,9 @@ pub enum LightError {
         field: &'static str,
     },
     /// Spot cone half-angles outside `0 ≤ inner ≤ outer ≤ π`.
-    #[error("spot cone angles must satisfy 0 <= inner <= outer <= pi, got inner {inner}, outer {outer}")]
+    #[error(
+        "spot cone angles must satisfy 0 <= inner <= outer <= pi, got inner {inner}, outer {outer}"
+    )]
     ConeAngles {
         /// Inner half-angle (radians).
         inner: f32,
@@ -125,7 +127,9 @@ pub enum LightError {
     DegenerateTriangle,
     /// A peak intensity above [`light::MAX_INTENSITY`]: the light's terms
     /// could overflow `f32` in a pixel.
-    #[error("light {field} gives a peak intensity of {peak:e}, above the largest slc shades without overflow ({max:e})")]
+    #[error(
+        "light {field} gives a peak intensity of {peak:e}, above the largest slc shades without overflow ({max:e})"
+    )]
     TooBright {
         /// The field (or product of fields) that sets the peak.
         field: &'static str,
@@ -209,7 +213,9 @@ pub enum IesErrorKind {
         field: &'static str,
     },
     /// A type C horizontal range that matches no LM-63 symmetry.
-    #[error("type C horizontal angles {first}..{last} match no LM-63 symmetry (0, 0-90, 0-180, 90-270, 0-360)")]
+    #[error(
+        "type C horizontal angles {first}..{last} match no LM-63 symmetry (0, 0-90, 0-180, 90-270, 0-360)"
+    )]
     HorizontalRange {
         /// First angle.
         first: f32,

@@ -206,7 +206,11 @@ impl PointLight {
     /// [`MAX_INTENSITY`]).
     pub fn new(position: Vec3, intensity: Vec3) -> Result<Self, LightError> {
         let intensity = check_rgb("intensity", intensity)?;
-        check_peak("intensity", intensity, Self { position: check_point("position", position)?, intensity })
+        check_peak(
+            "intensity",
+            intensity,
+            Self { position: check_point("position", position)?, intensity },
+        )
     }
     /// Position.
     pub fn position(&self) -> Vec3 {
@@ -227,7 +231,11 @@ impl Vpl {
     /// ≥ 0, its peak `Φ/π` at most [`MAX_INTENSITY`]).
     pub fn new(position: Vec3, normal: Vec3, flux: Vec3) -> Result<Self, LightError> {
         let flux = check_rgb("flux", flux)?;
-        let vpl = Self { position: check_point("position", position)?, normal: check_dir("normal", normal)?, flux };
+        let vpl = Self {
+            position: check_point("position", position)?,
+            normal: check_dir("normal", normal)?,
+            flux,
+        };
         check_peak("flux", flux * INV_PI, vpl)
     }
     /// Position.
@@ -261,8 +269,19 @@ impl SpotLight {
     /// Position, axis direction (normalised here), RGB peak intensity `I₀`,
     /// and the half-angles in radians of the full-intensity cone `inner` and
     /// of the cut-off cone `outer`, with `0 ≤ inner ≤ outer ≤ π`.
-    pub fn new(position: Vec3, direction: Vec3, intensity: Vec3, inner: f32, outer: f32) -> Result<Self, LightError> {
-        if !(inner.is_finite() && outer.is_finite() && 0.0 <= inner && inner <= outer && outer <= core::f32::consts::PI) {
+    pub fn new(
+        position: Vec3,
+        direction: Vec3,
+        intensity: Vec3,
+        inner: f32,
+        outer: f32,
+    ) -> Result<Self, LightError> {
+        if !(inner.is_finite()
+            && outer.is_finite()
+            && 0.0 <= inner
+            && inner <= outer
+            && outer <= core::f32::consts::PI)
+        {
             return Err(LightError::ConeAngles { inner, outer });
         }
         let intensity = check_rgb("intensity", intensity)?;
@@ -317,7 +336,13 @@ pub struct IesLight {
 impl IesLight {
     /// Position, nadir and reference directions, an RGB `tint` that scales
     /// the candela values (colour and units), and a parsed profile (type C).
-    pub fn new(position: Vec3, nadir: Vec3, reference: Vec3, tint: Vec3, profile: Arc<IesProfile>) -> Result<Self, LightError> {
+    pub fn new(
+        position: Vec3,
+        nadir: Vec3,
+        reference: Vec3,
+        tint: Vec3,
+        profile: Arc<IesProfile>,
+    ) -> Result<Self, LightError> {
         let nadir = check_dir("nadir", nadir)?;
         let reference = check_dir("reference", reference - nadir * nadir.dot(reference))
             .map_err(|_| LightError::ZeroDirection { field: "reference (parallel to nadir)" })?;
@@ -326,7 +351,11 @@ impl IesLight {
         }
         let tint = check_rgb("tint", tint)?;
         let peak = tint * profile.max_candela();
-        check_peak("tint × candela", peak, Self { position: check_point("position", position)?, nadir, reference, tint, profile })
+        check_peak(
+            "tint × candela",
+            peak,
+            Self { position: check_point("position", position)?, nadir, reference, tint, profile },
+        )
     }
     /// Position.
     pub fn position(&self) -> Vec3 {
@@ -384,7 +413,13 @@ impl TriangleLight {
             return Err(LightError::DegenerateTriangle);
         }
         let s = Sphere::of_triangle(a, b, c);
-        let light = Self { v: [a, b, c], radiance, normal: n / len, area, bound: LightBound { center: s.center, extent: s.radius } };
+        let light = Self {
+            v: [a, b, c],
+            radiance,
+            normal: n / len,
+            area,
+            bound: LightBound { center: s.center, extent: s.radius },
+        };
         check_peak("radiance × area", radiance * area, light)
     }
     /// Vertices.
@@ -512,7 +547,10 @@ impl Light {
         match self {
             Light::Point(l) => l.intensity,
             Light::Vpl(l) => l.flux * vpl_lobe(l.normal, w),
-            Light::Spot(l) => l.intensity * spot_falloff(dot(l.direction, w), l.cos_outer, l.cos_inner, l.falloff_shape()),
+            Light::Spot(l) => {
+                l.intensity
+                    * spot_falloff(dot(l.direction, w), l.cos_outer, l.cos_inner, l.falloff_shape())
+            }
             Light::Ies(l) => l.tint * l.candela(w),
             Light::Triangle(l) => l.radiance * triangle_lobe(l.normal, l.area, w),
         }
@@ -584,7 +622,9 @@ mod tests {
         let smooth = SpotLight::new(Vec3::ZERO, -Vec3::Y, Vec3::ONE, inner, outer).unwrap();
         for (s, quadratic) in [(smooth, false), (smooth.with_quadratic_falloff(), true)] {
             let l = Light::Spot(s);
-            let at = |a: f64| l.intensity(Vec3::new(libm::sin(a) as f32, -libm::cos(a) as f32, 0.0)).x as f64;
+            let at = |a: f64| {
+                l.intensity(Vec3::new(libm::sin(a) as f32, -libm::cos(a) as f32, 0.0)).x as f64
+            };
             if quadratic {
                 let scale = 1.0 / (ci - co);
                 for a in [0.1, 0.25, 0.4, 0.55, 0.69, 0.8] {
@@ -596,17 +636,23 @@ mod tests {
             let integral: f64 = (0..m)
                 .map(|i| {
                     let a = core::f64::consts::PI * (i as f64 + 0.5) / m as f64;
-                    at(a) * 2.0 * core::f64::consts::PI * libm::sin(a) * core::f64::consts::PI / m as f64
+                    at(a) * 2.0 * core::f64::consts::PI * libm::sin(a) * core::f64::consts::PI
+                        / m as f64
                 })
                 .sum();
             let p = l.power().x as f64;
-            assert!((p - integral).abs() < 1e-4 * p, "quadratic {quadratic}: power {p} vs integral {integral}");
+            assert!(
+                (p - integral).abs() < 1e-4 * p,
+                "quadratic {quadratic}: power {p} vs integral {integral}"
+            );
         }
     }
 
     #[test]
     fn triangle_peak_bound_and_lobe() {
-        let t = TriangleLight::new(Vec3::ZERO, Vec3::X * 2.0, Vec3::Y * 2.0, Vec3::new(1.0, 2.0, 3.0)).unwrap();
+        let t =
+            TriangleLight::new(Vec3::ZERO, Vec3::X * 2.0, Vec3::Y * 2.0, Vec3::new(1.0, 2.0, 3.0))
+                .unwrap();
         assert_eq!(t.area(), 2.0);
         assert_eq!(t.normal(), Vec3::Z);
         let l = Light::Triangle(t);
@@ -635,8 +681,14 @@ mod tests {
     #[test]
     fn degenerate_triangles_are_errors() {
         let e = Vec3::ONE;
-        assert_eq!(TriangleLight::new(Vec3::ZERO, Vec3::ZERO, Vec3::X, e), Err(LightError::DegenerateTriangle));
-        assert_eq!(TriangleLight::new(Vec3::ZERO, Vec3::X, Vec3::X * 2.0, e), Err(LightError::DegenerateTriangle));
+        assert_eq!(
+            TriangleLight::new(Vec3::ZERO, Vec3::ZERO, Vec3::X, e),
+            Err(LightError::DegenerateTriangle)
+        );
+        assert_eq!(
+            TriangleLight::new(Vec3::ZERO, Vec3::X, Vec3::X * 2.0, e),
+            Err(LightError::DegenerateTriangle)
+        );
         assert!(TriangleLight::new(Vec3::ZERO, Vec3::X, Vec3::Y, -e).is_err());
         assert!(TriangleLight::new(Vec3::NAN, Vec3::X, Vec3::Y, e).is_err());
     }
@@ -653,7 +705,10 @@ mod tests {
             assert_eq!(PointLight::new(Vec3::ZERO, Vec3::new(0.0, bright, 0.0)), Err(e));
             assert!(SpotLight::new(Vec3::ZERO, Vec3::Y, Vec3::splat(bright), 0.1, 0.2).is_err());
             assert!(Vpl::new(Vec3::ZERO, Vec3::Y, Vec3::splat(bright * 4.0)).is_err());
-            assert!(TriangleLight::new(Vec3::ZERO, Vec3::X * 2.0, Vec3::Y * 2.0, Vec3::splat(bright)).is_err());
+            assert!(
+                TriangleLight::new(Vec3::ZERO, Vec3::X * 2.0, Vec3::Y * 2.0, Vec3::splat(bright))
+                    .is_err()
+            );
         }
         // A VPL's peak is Φ/π: its flux may reach π × the limit.
         assert!(Vpl::new(Vec3::ZERO, Vec3::Y, Vec3::splat(MAX_INTENSITY * 3.0)).is_ok());

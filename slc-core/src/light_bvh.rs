@@ -128,7 +128,10 @@ pub const WALK_WGSL_PRELUDE: &str = "fn bvh_pick_none() -> BvhPick { return BvhP
 /// [`crate::wgsl::library`]: they read a light-BVH buffer, which only the
 /// path tracer's kernels bind (their WGSL is [`walk::WGSL`]).
 pub mod walk {
-    use super::{BvhNodes, GpuLightBvhNode, LIGHT_BVH_LEAF, bvh_first_prob, bvh_pick_none, bvh_remap_u, light_bvh_count, light_bvh_node};
+    use super::{
+        BvhNodes, GpuLightBvhNode, LIGHT_BVH_LEAF, bvh_first_prob, bvh_pick_none, bvh_remap_u,
+        light_bvh_count, light_bvh_node,
+    };
     use crate::importance::receiver_importance;
     use crate::wgsl::*;
 

@@ -116,17 +116,30 @@ mod tests {
     /// stratified mean of cos θ is E[cos θ] = ∫cos²θ/π dω = 2/3.
     #[test]
     fn cosine_direction_is_cosine_distributed() {
-        for n in [vec3f(0.0, 0.0, 1.0), vec3f(0.0, 0.0, -1.0), normalize(vec3f(1.0, -2.0, 0.5)), vec3f(1.0, 0.0, 0.0)] {
+        for n in [
+            vec3f(0.0, 0.0, 1.0),
+            vec3f(0.0, 0.0, -1.0),
+            normalize(vec3f(1.0, -2.0, 0.5)),
+            vec3f(1.0, 0.0, 0.0),
+        ] {
             let m = 200;
             let mut sum = 0.0f64;
             for i in 0..m {
                 for j in 0..m {
-                    let d = cosine_direction(n, (i as f32 + 0.5) / m as f32, (j as f32 + 0.5) / m as f32);
+                    let d = cosine_direction(
+                        n,
+                        (i as f32 + 0.5) / m as f32,
+                        (j as f32 + 0.5) / m as f32,
+                    );
                     assert!((dot(d, d) - 1.0).abs() < 1e-5 && dot(d, n) >= 0.0);
                     sum += dot(d, n) as f64;
                 }
             }
-            assert!((sum / (m * m) as f64 - 2.0 / 3.0).abs() < 1e-4, "{n}: {}", sum / (m * m) as f64);
+            assert!(
+                (sum / (m * m) as f64 - 2.0 / 3.0).abs() < 1e-4,
+                "{n}: {}",
+                sum / (m * m) as f64
+            );
         }
     }
 }

@@ -198,7 +198,11 @@ impl RangeParams {
     /// light's constructor: finite, non-negative). May be `+∞` for huge
     /// intensities, meaning "never culled".
     pub fn threshold_range2(&self, peak: Vec3) -> f32 {
-        threshold_range2(intensity_measure(peak, self.measure.mode()), self.exposure, self.error_bound)
+        threshold_range2(
+            intensity_measure(peak, self.measure.mode()),
+            self.exposure,
+            self.error_bound,
+        )
     }
 }
 
@@ -247,7 +251,9 @@ mod tests {
         let p = RangeParams::new(0.5, 2.0).unwrap();
         let rt2 = p.threshold_range2(Vec3::new(1.0, 3.0, 2.0));
         assert!((rt2 - 6.0 / core::f32::consts::PI).abs() < 1e-6);
-        let avg = p.with_measure(IntensityMeasure::ChannelAverage).threshold_range2(Vec3::new(1.0, 3.0, 2.0));
+        let avg = p
+            .with_measure(IntensityMeasure::ChannelAverage)
+            .threshold_range2(Vec3::new(1.0, 3.0, 2.0));
         assert!((avg - 4.0 / core::f32::consts::PI).abs() < 1e-6);
     }
 

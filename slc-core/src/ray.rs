@@ -169,7 +169,10 @@ mod tests {
         assert!((s - (Vec3::Z + n1).normalize()).length() < 1e-6);
         // Turned to the facing side; opposite normals that cancel give `facing`.
         assert!(shading_normal(-Vec3::Z, -Vec3::Z, -Vec3::Z, w, Vec3::Z).z > 0.99);
-        assert_eq!(shading_normal(Vec3::Z, -Vec3::Z, Vec3::Z, Vec3::new(0.5, 0.5, 0.0), Vec3::Y), Vec3::Y);
+        assert_eq!(
+            shading_normal(Vec3::Z, -Vec3::Z, Vec3::Z, Vec3::new(0.5, 0.5, 0.0), Vec3::Y),
+            Vec3::Y
+        );
         assert_eq!(shading_normal(Vec3::NAN, Vec3::Z, Vec3::Z, w, Vec3::Y), Vec3::Y);
         assert_eq!(triangle_normal(a, b, c), Vec3::Z);
         assert_eq!(triangle_normal(a, b, b), Vec3::ZERO);

@@ -206,7 +206,10 @@ impl<const K: usize> WeightedReservoir<K> {
     /// Each slot's item and its weight `W/(K·wᵢ)`; empty before any push.
     pub fn picks(&self) -> impl Iterator<Item = (u32, f32)> + '_ {
         let w = self.w_sum;
-        self.slots.iter().filter(move |_| w > 0.0).map(move |&(i, wi)| (i, weighted_pick_weight(w, wi, K as u32)))
+        self.slots
+            .iter()
+            .filter(move |_| w > 0.0)
+            .map(move |&(i, wi)| (i, weighted_pick_weight(w, wi, K as u32)))
     }
 }
 
@@ -227,7 +230,13 @@ mod tests {
     #[test]
     fn uniform_index_matches_u128_reference() {
         let ns = [1u32, 2, 3, 1000, 1 << 24, u32::MAX - 1, u32::MAX];
-        let bits = [(0u32, 0u32), (u32::MAX, u32::MAX), (0x8000_0000, 0), (0x1234_5678, 0x9abc_def0), (u32::MAX, 0)];
+        let bits = [
+            (0u32, 0u32),
+            (u32::MAX, u32::MAX),
+            (0x8000_0000, 0),
+            (0x1234_5678, 0x9abc_def0),
+            (u32::MAX, 0),
+        ];
         for &n in &ns {
             for &(hi, lo) in &bits {
                 let r = ((((hi as u128) << 32 | lo as u128) * n as u128) >> 64) as u32;

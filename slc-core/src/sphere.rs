@@ -113,7 +113,8 @@ pub struct Aabb {
 
 impl Aabb {
     /// The empty box (union identity).
-    pub const EMPTY: Aabb = Aabb { min: Vec3::splat(f32::INFINITY), max: Vec3::splat(f32::NEG_INFINITY) };
+    pub const EMPTY: Aabb =
+        Aabb { min: Vec3::splat(f32::INFINITY), max: Vec3::splat(f32::NEG_INFINITY) };
 
     /// Grows the box to hold `p`.
     pub fn grow(self, p: Vec3) -> Aabb {
@@ -145,12 +146,17 @@ impl Sphere {
 
     /// [`sphere_overlaps_sphere`] (false if either sphere is invalid).
     pub fn overlaps_sphere(&self, o: &Sphere) -> bool {
-        self.is_valid() && o.is_valid() && sphere_overlaps_sphere(self.center, self.radius, o.center, o.radius)
+        self.is_valid()
+            && o.is_valid()
+            && sphere_overlaps_sphere(self.center, self.radius, o.center, o.radius)
     }
 
     /// [`sphere_overlaps_aabb`]; a box with a NaN corner overlaps nothing.
     pub fn overlaps_aabb(&self, b: &Aabb) -> bool {
-        self.is_valid() && !b.min.is_nan() && !b.max.is_nan() && sphere_overlaps_aabb(self.center, self.radius, b.min, b.max)
+        self.is_valid()
+            && !b.min.is_nan()
+            && !b.max.is_nan()
+            && sphere_overlaps_aabb(self.center, self.radius, b.min, b.max)
     }
 
     /// Radius that makes `center` contain every point of `pts` in f32: the
@@ -278,7 +284,9 @@ fn sphere4(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> Sphere {
     for skip in 0..4 {
         let t: Vec<Vec3> = (0..4).filter(|&i| i != skip).map(|i| pts[i]).collect();
         let s = sphere3(t[0], t[1], t[2]);
-        if (pts[skip] - s.center).length() <= s.radius * (1.0 + PAD) && best.is_none_or(|b| s.radius < b.radius) {
+        if (pts[skip] - s.center).length() <= s.radius * (1.0 + PAD)
+            && best.is_none_or(|b| s.radius < b.radius)
+        {
             best = Some(s);
         }
     }
@@ -294,7 +302,8 @@ mod tests {
 
     #[test]
     fn triangle_acute_is_circumsphere() {
-        let (a, b, c) = (Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0), Vec3::new(0.0, 0.0, 1.0));
+        let (a, b, c) =
+            (Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0), Vec3::new(0.0, 0.0, 1.0));
         let s = Sphere::of_triangle(a, b, c);
         let third = Vec3::splat(1.0 / 3.0);
         assert!((s.center - third).length() < 1e-6);
@@ -366,7 +375,12 @@ mod tests {
     #[test]
     fn point_set_sphere_is_minimal_on_known_sets() {
         // Regular tetrahedron's vertices: circumsphere radius sqrt(3).
-        let t = [Vec3::new(1., 1., 1.), Vec3::new(1., -1., -1.), Vec3::new(-1., 1., -1.), Vec3::new(-1., -1., 1.)];
+        let t = [
+            Vec3::new(1., 1., 1.),
+            Vec3::new(1., -1., -1.),
+            Vec3::new(-1., 1., -1.),
+            Vec3::new(-1., -1., 1.),
+        ];
         let s = Sphere::of_points(&t);
         assert!(s.center.length() < 1e-5 && (s.radius - 3f32.sqrt()).abs() < 1e-4);
         // Cube corners plus interior points.

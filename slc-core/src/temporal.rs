@@ -284,7 +284,8 @@ mod tests {
     fn reprojection_inverts_the_pixel_rays() {
         use glam::camera::rh::{proj, view::look_to_mat4};
         let (w, h) = (64.0, 48.0);
-        let vp = proj::directx::perspective(1.0, w / h, 0.1, 50.0) * look_to_mat4(Vec3::new(1.0, 2.0, 3.0), Vec3::new(0.2, -0.3, -1.0), Vec3::Y);
+        let vp = proj::directx::perspective(1.0, w / h, 0.1, 50.0)
+            * look_to_mat4(Vec3::new(1.0, 2.0, 3.0), Vec3::new(0.2, -0.3, -1.0), Vec3::Y);
         let inv = vp.inverse();
         // The centre of pixel (10, 37) at NDC depth 0.9, unprojected.
         let (px, py) = (10.0f32, 37.0f32);
@@ -322,8 +323,14 @@ mod tests {
     fn history_matching() {
         let n = Vec3::Y;
         // The floor y = 0 seen from 2 m.
-        assert!(history_matches(n, n, Vec3::new(5.0, 0.01, 1.0), 0.0, 2.0), "on the plane anywhere");
-        assert!(!history_matches(n, n, Vec3::new(0.0, 0.05, 0.0), 0.0, 2.0), "5 cm above it at 2 m is another surface");
+        assert!(
+            history_matches(n, n, Vec3::new(5.0, 0.01, 1.0), 0.0, 2.0),
+            "on the plane anywhere"
+        );
+        assert!(
+            !history_matches(n, n, Vec3::new(0.0, 0.05, 0.0), 0.0, 2.0),
+            "5 cm above it at 2 m is another surface"
+        );
         assert!(!history_matches(n, Vec3::X, Vec3::ZERO, 0.0, 2.0), "a crease");
     }
 
@@ -359,7 +366,10 @@ mod tests {
         }
         // 32-frame moving average: relative spread about 1/√16.
         assert!((h.1 * 12.0 - 1.0).abs() < 0.6, "{}", h.1 * 12.0);
-        assert_eq!(temporal_moments(Vec3::ONE, 0.0, 0.0, 0.0, 1.0, 2.0), glam::Vec4::new(1.0, 0.0, 2.0, 0.0));
+        assert_eq!(
+            temporal_moments(Vec3::ONE, 0.0, 0.0, 0.0, 1.0, 2.0),
+            glam::Vec4::new(1.0, 0.0, 2.0, 0.0)
+        );
     }
 
     #[test]
@@ -396,9 +406,19 @@ mod tests {
         // enters the mean with weight 1/n; when last frame was high too,
         // the history is dropped.
         let h = Vec3::splat(1.0).extend(31.0);
-        assert_eq!(temporal_color(Vec3::splat(21.0), h, 1.0, 1.0, 32.0), Vec4::new(1.625, 1.625, 1.625, 32.0));
-        assert_eq!(temporal_color(Vec3::splat(21.0), h, 1.0, 21.0, 32.0), Vec4::new(21.0, 21.0, 21.0, 1.0));
-        assert_eq!(persistent_change(21.0, -19.0, 1.0, 1.0, 31.0), 0.0, "deviations to opposite sides are noise");
+        assert_eq!(
+            temporal_color(Vec3::splat(21.0), h, 1.0, 1.0, 32.0),
+            Vec4::new(1.625, 1.625, 1.625, 32.0)
+        );
+        assert_eq!(
+            temporal_color(Vec3::splat(21.0), h, 1.0, 21.0, 32.0),
+            Vec4::new(21.0, 21.0, 21.0, 1.0)
+        );
+        assert_eq!(
+            persistent_change(21.0, -19.0, 1.0, 1.0, 31.0),
+            0.0,
+            "deviations to opposite sides are noise"
+        );
         // A tap without history or of another surface weighs nothing.
         let (n, p) = (Vec3::Z, Vec3::Z);
         assert_eq!(history_tap_weight(0.25, n, n, p, 1.0, 1.0, 0.0), 0.0);

@@ -166,10 +166,17 @@ mod tests {
                 cells[(xa * 8.0) as usize * 8 + (xb * 8.0) as usize] += 1;
             }
             let mean = below as f64 / frames as f64;
-            assert!((mean - 0.5).abs() < 5.0 * sd, "lights {a}, {b}: P(xi_a < xi_b) over frames = {mean}");
-            let (expect, cell_sd) = (frames as f64 / 64.0, (frames as f64 / 64.0 * (63.0 / 64.0)).sqrt());
+            assert!(
+                (mean - 0.5).abs() < 5.0 * sd,
+                "lights {a}, {b}: P(xi_a < xi_b) over frames = {mean}"
+            );
+            let (expect, cell_sd) =
+                (frames as f64 / 64.0, (frames as f64 / 64.0 * (63.0 / 64.0)).sqrt());
             for (i, &c) in cells.iter().enumerate() {
-                assert!((c as f64 - expect).abs() < 5.0 * cell_sd, "lights {a}, {b}: cell {i} holds {c}");
+                assert!(
+                    (c as f64 - expect).abs() < 5.0 * cell_sd,
+                    "lights {a}, {b}: cell {i} holds {c}"
+                );
             }
         }
     }
@@ -213,7 +220,8 @@ mod tests {
         // Reference values computed with u64 arithmetic reduced mod 2^32.
         fn reference(x: u32) -> u32 {
             let state = ((x as u64 * 747796405 + 2891336453) & 0xffff_ffff) as u32;
-            let word = ((((state >> ((state >> 28) + 4)) ^ state) as u64 * 277803737) & 0xffff_ffff) as u32;
+            let word = ((((state >> ((state >> 28) + 4)) ^ state) as u64 * 277803737) & 0xffff_ffff)
+                as u32;
             (word >> 22) ^ word
         }
         for x in [0u32, 1, 2, 12345, 0xdead_beef, u32::MAX] {

@@ -9,7 +9,9 @@ mod common;
 
 use slc_core::glam::Vec3;
 use slc_core::light::{Light, PointLight, inverse_square};
-use slc_core::range::{RangeParams, Xi, random_range2, rr_probability, slc_keep, slc_weight, threshold_range2};
+use slc_core::range::{
+    RangeParams, Xi, random_range2, rr_probability, slc_keep, slc_weight, threshold_range2,
+};
 
 const TWO_PI: f64 = std::f64::consts::TAU;
 
@@ -48,7 +50,10 @@ fn distance_below_min_positive() {
         for rt2 in [f32::from_bits(1), 1e-40, 1e-3, 1.0] {
             let p = rr_probability(rt2, d2);
             let p64 = (rt2 as f64 / d2 as f64).min(1.0);
-            assert!(p == 1.0 || (p as f64 - p64).abs() <= 1e-6 * p64 + 1e-45, "rt2 {rt2} d2 {d2}: {p} vs {p64}");
+            assert!(
+                p == 1.0 || (p as f64 - p64).abs() <= 1e-6 * p64 + 1e-45,
+                "rt2 {rt2} d2 {d2}: {p} vs {p64}"
+            );
             let w = slc_weight(rt2, d2);
             assert!(w.is_finite() && w >= 1.0);
         }
@@ -82,7 +87,8 @@ fn far_from_origin_precision_is_as_documented() {
     assert_eq!(ulp, 2f32.powi(-7));
     let params = RangeParams::new(0.01, 1.0).unwrap();
     for k in 0..50 {
-        let off = Vec3::splat(1e5) + Vec3::new(0.137 * k as f32, -0.071 * k as f32, 0.013 * k as f32);
+        let off =
+            Vec3::splat(1e5) + Vec3::new(0.137 * k as f32, -0.071 * k as f32, 0.013 * k as f32);
         let light = Light::Point(PointLight::new(off, Vec3::splat(2.0)).unwrap());
         let x = off + Vec3::new(0.9, 0.3 - 0.01 * k as f32, 0.5);
         let (_, d2) = light.contribution_at(x);

@@ -7,8 +7,13 @@ mod common;
 use slc_core::IesErrorKind;
 use slc_core::ies::{IesFormat, IesProfile, PhotometricType, Tilt};
 
-const FILES: [&str; 5] =
-    ["absolute-led.ies", "floodlight-12w-54deg.ies", "indoor-60w-120deg.ies", "outdoor-roadway-60w.ies", "tilt-include-synthetic.ies"];
+const FILES: [&str; 5] = [
+    "absolute-led.ies",
+    "floodlight-12w-54deg.ies",
+    "indoor-60w-120deg.ies",
+    "outdoor-roadway-60w.ies",
+    "tilt-include-synthetic.ies",
+];
 
 fn load(name: &str) -> (Vec<u8>, IesProfile) {
     let path = common::shared_data(&format!("ies/{name}"));
@@ -26,7 +31,10 @@ fn every_shared_file_parses_and_evaluates_finite() {
         for g in 0..=180 {
             for c in (-360..=720).step_by(7) {
                 let v = p.candela_at(g as f32, c as f32);
-                assert!(v.is_finite() && v >= 0.0 && v <= p.max_candela() * 1.000_001, "{name} γ{g} C{c}: {v}");
+                assert!(
+                    v.is_finite() && v >= 0.0 && v <= p.max_candela() * 1.000_001,
+                    "{name} γ{g} C{c}: {v}"
+                );
             }
         }
         let flux = p.total_flux();
@@ -48,7 +56,14 @@ fn header_facts() {
     assert_eq!(abs.candela_at(91.0, 0.0), 0.0, "outside the 0–90° vertical range");
 
     let (_, tilt) = load("tilt-include-synthetic.ies");
-    assert_eq!(tilt.tilt, Tilt::Include { geometry: 1, angles: vec![0.0, 45.0, 90.0, 180.0], factors: vec![1.0, 0.9, 0.8, 1.0] });
+    assert_eq!(
+        tilt.tilt,
+        Tilt::Include {
+            geometry: 1,
+            angles: vec![0.0, 45.0, 90.0, 180.0],
+            factors: vec![1.0, 0.9, 0.8, 1.0]
+        }
+    );
     assert_eq!(tilt.horizontal, [0.0]);
     assert_approx_eq!(tilt.candela_at(33.75, 77.0), 800.0, 1e-3);
 
@@ -80,7 +95,11 @@ fn truncated_real_files_give_errors_not_panics() {
 
 /// Builds a type C file with the given angles and a candela function.
 fn synth(v: &[f32], h: &[f32], cd: impl Fn(f32, f32) -> f32) -> String {
-    let mut s = format!("IESNA:LM-63-2002\n[TEST] synth\nTILT=NONE\n1 1000 1 {} {} 1 2 0 0 0\n1 1 10\n", v.len(), h.len());
+    let mut s = format!(
+        "IESNA:LM-63-2002\n[TEST] synth\nTILT=NONE\n1 1000 1 {} {} 1 2 0 0 0\n1 1 10\n",
+        v.len(),
+        h.len()
+    );
     for a in v {
         s += &format!("{a} ");
     }
@@ -163,11 +182,21 @@ fn hostile_input() {
     let cases: [(&str, Expect); 7] = [
         ("", |k| *k == IesErrorKind::MissingTilt),
         ("IESNA:LM-63-2002\n[TEST] x\n", |k| *k == IesErrorKind::MissingTilt),
-        ("IESNA:LM-63-2002\nTILT=NONE\n1 1000 1 2", |k| matches!(k, IesErrorKind::UnexpectedEnd { .. })),
-        ("TILT=NONE\n1 1000 1 nan 1 1 2 0 0 0\n1 1 1\n0\n0\n1\n", |k| matches!(k, IesErrorKind::BadNumber { .. })),
-        ("TILT=NONE\n1 1000 1 99999999 99999999 1 2 0 0 0\n1 1 1\n", |k| matches!(k, IesErrorKind::OutOfRange { .. })),
-        ("TILT=NONE\n1 1000 1 2000 2000 1 2 0 0 0\n1 1 1\n0\n", |k| matches!(k, IesErrorKind::UnexpectedEnd { .. })),
-        ("TILT=NONE\n1 1000 1 1 1 1 2 0 0 0\n1 1 1\n0\n0\n-5\n", |k| matches!(k, IesErrorKind::OutOfRange { .. })),
+        ("IESNA:LM-63-2002\nTILT=NONE\n1 1000 1 2", |k| {
+            matches!(k, IesErrorKind::UnexpectedEnd { .. })
+        }),
+        ("TILT=NONE\n1 1000 1 nan 1 1 2 0 0 0\n1 1 1\n0\n0\n1\n", |k| {
+            matches!(k, IesErrorKind::BadNumber { .. })
+        }),
+        ("TILT=NONE\n1 1000 1 99999999 99999999 1 2 0 0 0\n1 1 1\n", |k| {
+            matches!(k, IesErrorKind::OutOfRange { .. })
+        }),
+        ("TILT=NONE\n1 1000 1 2000 2000 1 2 0 0 0\n1 1 1\n0\n", |k| {
+            matches!(k, IesErrorKind::UnexpectedEnd { .. })
+        }),
+        ("TILT=NONE\n1 1000 1 1 1 1 2 0 0 0\n1 1 1\n0\n0\n-5\n", |k| {
+            matches!(k, IesErrorKind::OutOfRange { .. })
+        }),
     ];
     for (text, ok) in cases {
         let e = IesProfile::parse(text).unwrap_err();
@@ -175,15 +204,31 @@ fn hostile_input() {
     }
     // Regression (fuzz/ies_parse): a finite ballast factor of 3e36 times
     // 1000 cd overflowed the table to infinity.
-    let e = IesProfile::parse("TILT=NONE\n1 1000 1 1 1 1 2 0 0 0\n3e36 1 10\n0\n0\n1000\n").unwrap_err();
-    assert!(matches!(e.kind, IesErrorKind::OutOfRange { field: "candela values times multipliers", .. }), "{e}");
+    let e = IesProfile::parse("TILT=NONE\n1 1000 1 1 1 1 2 0 0 0\n3e36 1 10\n0\n0\n1000\n")
+        .unwrap_err();
+    assert!(
+        matches!(
+            e.kind,
+            IesErrorKind::OutOfRange { field: "candela values times multipliers", .. }
+        ),
+        "{e}"
+    );
     // Regression (fuzz/ies_parse): ballast factors 3e31 × 3e36 overflow the
     // scale itself, and a zero candela value times it was NaN, which the
     // peak (a max) skipped.
-    let e = IesProfile::parse("TILT=NONE\n1 1000 1 1 1 1 2 0 0 0\n3e31 3e36 10\n0\n0\n0\n").unwrap_err();
-    assert!(matches!(e.kind, IesErrorKind::OutOfRange { field: "candela multiplier times ballast factors", .. }), "{e}");
+    let e = IesProfile::parse("TILT=NONE\n1 1000 1 1 1 1 2 0 0 0\n3e31 3e36 10\n0\n0\n0\n")
+        .unwrap_err();
+    assert!(
+        matches!(
+            e.kind,
+            IesErrorKind::OutOfRange { field: "candela multiplier times ballast factors", .. }
+        ),
+        "{e}"
+    );
     // 1986 format (no header line) is accepted.
-    let p = IesProfile::parse("some free text\nTILT=NONE\n1 1000 1 1 1 1 2 0 0 0\n1 1 1\n0\n0\n5\n").unwrap();
+    let p =
+        IesProfile::parse("some free text\nTILT=NONE\n1 1000 1 1 1 1 2 0 0 0\n1 1 1\n0\n0\n5\n")
+            .unwrap();
     assert_eq!(p.format, IesFormat::Lm63_1986);
     assert_eq!(p.candela_at(0.0, 0.0), 5.0);
 }

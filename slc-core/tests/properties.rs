@@ -18,8 +18,14 @@ use slc_core::sphere::{Aabb, Sphere};
 /// Fixed case count and seed, so CI runs the same cases every time;
 /// `SLC_PROPTEST_SEED=<u64>` explores other seeds locally.
 fn cfg(cases: u32) -> ProptestConfig {
-    let seed = std::env::var("SLC_PROPTEST_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(0x51C_2016);
-    ProptestConfig { cases, failure_persistence: None, rng_seed: proptest::test_runner::RngSeed::Fixed(seed), ..ProptestConfig::default() }
+    let seed =
+        std::env::var("SLC_PROPTEST_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(0x51C_2016);
+    ProptestConfig {
+        cases,
+        failure_persistence: None,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(seed),
+        ..ProptestConfig::default()
+    }
 }
 
 /// Strata for the ξ quadrature.
@@ -50,12 +56,18 @@ fn light_strategy() -> impl Strategy<Value = Light> {
     let pos = prop::array::uniform3(-10.0f32..10.0);
     let log_i = -6.0f32..6.0;
     let rgb = prop::array::uniform3(0.0f32..1.0);
-    (pos, log_i, rgb, any::<bool>(), prop::array::uniform3(-1.0f32..1.0)).prop_map(|(p, li, c, vpl, n)| {
-        let i = Vec3::from(c) * 10f32.powf(li);
-        let p = Vec3::from(p);
-        let n = Vec3::from(n);
-        if vpl && n.length() > 0.1 { Light::Vpl(Vpl::new(p, n, i).unwrap()) } else { Light::Point(PointLight::new(p, i).unwrap()) }
-    })
+    (pos, log_i, rgb, any::<bool>(), prop::array::uniform3(-1.0f32..1.0)).prop_map(
+        |(p, li, c, vpl, n)| {
+            let i = Vec3::from(c) * 10f32.powf(li);
+            let p = Vec3::from(p);
+            let n = Vec3::from(n);
+            if vpl && n.length() > 0.1 {
+                Light::Vpl(Vpl::new(p, n, i).unwrap())
+            } else {
+                Light::Point(PointLight::new(p, i).unwrap())
+            }
+        },
+    )
 }
 
 proptest! {
@@ -105,12 +117,21 @@ proptest! {
 fn clamped_ranges_darken() {
     // 1000 VPLs on a line; clamping each at its threshold range loses every
     // light beyond it, so the clamped sum is strictly below the true sum.
-    let lights: Vec<Light> =
-        (0..1000).map(|i| Light::Point(PointLight::new(Vec3::new(i as f32 * 0.1, 0.0, 0.0), Vec3::splat(0.01)).unwrap())).collect();
+    let lights: Vec<Light> = (0..1000)
+        .map(|i| {
+            Light::Point(
+                PointLight::new(Vec3::new(i as f32 * 0.1, 0.0, 0.0), Vec3::splat(0.01)).unwrap(),
+            )
+        })
+        .collect();
     let params = RangeParams::new(0.01, 1.0).unwrap();
     let x = Vec3::new(0.0, 1.0, 0.0);
     let truth = unculled_sum(lights.iter(), |l| l.contribution_at(x).0).value;
-    let clamp = clamped_sum(lights.iter(), |l| (l.contribution_at(x).1, params.threshold_range2(l.peak())), |l| l.contribution_at(x).0);
+    let clamp = clamped_sum(
+        lights.iter(),
+        |l| (l.contribution_at(x).1, params.threshold_range2(l.peak())),
+        |l| l.contribution_at(x).0,
+    );
     assert!(clamp.value.x < 0.95 * truth.x, "clamped {} vs {}", clamp.value.x, truth.x);
     assert!(clamp.evaluated < 1000);
 }
@@ -125,18 +146,39 @@ fn bounds_strategy() -> impl Strategy<Value = (Vec<LightBound>, Vec<f32>)> {
     prop_oneof![
         // General sets, radii from tiny to huge, a few infinite.
         prop::collection::vec(one, 0..300).prop_map(|v| {
-            let b = v.iter().map(|&(c, e, _, k)| LightBound { center: Vec3::from(c), extent: if k < 5 { 0.0 } else { e } }).collect();
-            let r2 = v.iter().map(|&(_, _, lr, k)| if k == 0 { f32::INFINITY } else { 10f32.powf(lr * 2.0) }).collect();
+            let b = v
+                .iter()
+                .map(|&(c, e, _, k)| LightBound {
+                    center: Vec3::from(c),
+                    extent: if k < 5 { 0.0 } else { e },
+                })
+                .collect();
+            let r2 = v
+                .iter()
+                .map(|&(_, _, lr, k)| if k == 0 { f32::INFINITY } else { 10f32.powf(lr * 2.0) })
+                .collect();
             (b, r2)
         }),
         // All lights at one point.
-        (1usize..100, prop::array::uniform3(-5.0f32..5.0))
-            .prop_map(|(n, c)| { (vec![LightBound { center: Vec3::from(c), extent: 0.0 }; n], (0..n).map(|i| i as f32 * 0.01).collect()) }),
-        // Far from the origin (1e5), small ranges.
-        prop::collection::vec((prop::array::uniform3(-1.0f32..1.0), 0.0f32..0.5), 1..100).prop_map(|v| {
-            let b = v.iter().map(|&(c, _)| LightBound { center: Vec3::splat(1e5) + Vec3::from(c), extent: 0.0 }).collect();
-            (b, v.iter().map(|&(_, r)| r * r).collect())
+        (1usize..100, prop::array::uniform3(-5.0f32..5.0)).prop_map(|(n, c)| {
+            (
+                vec![LightBound { center: Vec3::from(c), extent: 0.0 }; n],
+                (0..n).map(|i| i as f32 * 0.01).collect(),
+            )
         }),
+        // Far from the origin (1e5), small ranges.
+        prop::collection::vec((prop::array::uniform3(-1.0f32..1.0), 0.0f32..0.5), 1..100).prop_map(
+            |v| {
+                let b = v
+                    .iter()
+                    .map(|&(c, _)| LightBound {
+                        center: Vec3::splat(1e5) + Vec3::from(c),
+                        extent: 0.0,
+                    })
+                    .collect();
+                (b, v.iter().map(|&(_, r)| r * r).collect())
+            }
+        ),
     ]
 }
 
@@ -255,16 +297,29 @@ fn circle3(a: glam::DVec3, b: glam::DVec3, c: glam::DVec3) -> Option<(glam::DVec
     if n.length_squared() < 1e-18 {
         return None;
     }
-    let center = a + (n.cross(u) * v.length_squared() + v.cross(n) * u.length_squared()) / (2.0 * n.length_squared());
+    let center = a
+        + (n.cross(u) * v.length_squared() + v.cross(n) * u.length_squared())
+            / (2.0 * n.length_squared());
     Some((center, (a - center).length()))
 }
 
-fn sphere4(a: glam::DVec3, b: glam::DVec3, c: glam::DVec3, d: glam::DVec3) -> Option<(glam::DVec3, f64)> {
+fn sphere4(
+    a: glam::DVec3,
+    b: glam::DVec3,
+    c: glam::DVec3,
+    d: glam::DVec3,
+) -> Option<(glam::DVec3, f64)> {
     let m = glam::DMat3::from_cols(b - a, c - a, d - a).transpose();
     if m.determinant().abs() < 1e-12 {
         return None;
     }
-    let x = m.inverse() * glam::DVec3::new((b - a).length_squared(), (c - a).length_squared(), (d - a).length_squared()) * 0.5;
+    let x = m.inverse()
+        * glam::DVec3::new(
+            (b - a).length_squared(),
+            (c - a).length_squared(),
+            (d - a).length_squared(),
+        )
+        * 0.5;
     Some((a + x, x.length()))
 }
 
@@ -344,7 +399,11 @@ fn weighted_reservoir_probabilities() {
         // Unbiasedness of the weights: E[Σ picks weight] per trial = number of items.
         let mean_weight = weight_mean[i] / trials as f64;
         assert!(
-            (mean_weight - 1.0).abs() < 5.0 * (total as f64 / w[i] as f64 / 4.0) * (p * (1.0 - p) * 4.0 / trials as f64).sqrt() * 2.0,
+            (mean_weight - 1.0).abs()
+                < 5.0
+                    * (total as f64 / w[i] as f64 / 4.0)
+                    * (p * (1.0 - p) * 4.0 / trials as f64).sqrt()
+                    * 2.0,
             "item {i}: mean weight {mean_weight}"
         );
     }
@@ -355,12 +414,17 @@ fn big_sums_against_f64() {
     // 65,536 and 1M lights: the compensated f32 estimator sum agrees with an
     // f64 sum to a few f32 ulps of the total.
     for n in [65_536usize, 1 << 20] {
-        let terms: Vec<Vec3> = (0..n).map(|i| Vec3::splat(1.0 + (i % 977) as f32 * 1e-3) * (1.0 / (1.0 + i as f32))).collect();
+        let terms: Vec<Vec3> = (0..n)
+            .map(|i| Vec3::splat(1.0 + (i % 977) as f32 * 1e-3) * (1.0 / (1.0 + i as f32)))
+            .collect();
         let est = unculled_sum(terms.iter(), |t| **t).value;
         let exact: f64 = terms.iter().map(|t| t.x as f64).sum();
         let rel = ((est.x as f64 - exact) / exact).abs();
         assert!(rel < 4.0 * f32::EPSILON as f64, "n {n}: rel err {rel}");
         let naive: f32 = terms.iter().map(|t| t.x).sum();
-        assert!(rel <= ((naive as f64 - exact) / exact).abs(), "compensation must not be worse than naive");
+        assert!(
+            rel <= ((naive as f64 - exact) / exact).abs(),
+            "compensation must not be worse than naive"
+        );
     }
 }

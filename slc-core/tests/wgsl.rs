@@ -99,8 +99,11 @@ fn bsh_node_layout_matches_wgsl() {
     let (module, _) = parse_and_validate(&src);
     let mut layouter = naga::proc::Layouter::default();
     layouter.update(module.to_ctx()).unwrap();
-    let (handle, ty) = module.types.iter().find(|(_, t)| t.name.as_deref() == Some("BshNode")).unwrap();
-    let naga::TypeInner::Struct { members, span } = &ty.inner else { panic!("BshNode is not a struct") };
+    let (handle, ty) =
+        module.types.iter().find(|(_, t)| t.name.as_deref() == Some("BshNode")).unwrap();
+    let naga::TypeInner::Struct { members, span } = &ty.inner else {
+        panic!("BshNode is not a struct")
+    };
     assert_eq!(*span as usize, std::mem::size_of::<slc_core::bsh::BshNode>());
     assert_eq!(layouter[handle].size as usize, std::mem::size_of::<slc_core::bsh::BshNode>());
     let rust = [

@@ -13,8 +13,12 @@ use std::hint::black_box;
 
 fn denoise(c: &mut Criterion) {
     let ctx = VplContext::new(&Scene::cornell_box(), 512, 512, 64, None).expect("context");
-    let shaded = ctx.shade(&VplSettings { method: VplMethod::None, denoise: false, ..VplSettings::default() }).expect("shade");
-    c.bench_function("denoise 512x512 (8x8 window)", |b| b.iter(|| black_box(cross_bilateral(&shaded.irradiance, ctx.gbuffer(), PERIOD))));
+    let shaded = ctx
+        .shade(&VplSettings { method: VplMethod::None, denoise: false, ..VplSettings::default() })
+        .expect("shade");
+    c.bench_function("denoise 512x512 (8x8 window)", |b| {
+        b.iter(|| black_box(cross_bilateral(&shaded.irradiance, ctx.gbuffer(), PERIOD)))
+    });
 }
 
 criterion_group!(benches, denoise);

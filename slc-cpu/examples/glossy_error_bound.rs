@@ -38,13 +38,24 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     // Per-pass grey values per pixel for one error bound.
     let per_pass = |pts: &PtScene, eps: f32| -> Result<Vec<Vec<f64>>, Box<dyn std::error::Error>> {
         let mut tracer = CpuPathTracer::new(pts);
-        let s = PtSettings { method: PtMethod::Slc, error_bound: eps, max_depth: 1, seed: 5, ..PtSettings::default() };
+        let s = PtSettings {
+            method: PtMethod::Slc,
+            error_bound: eps,
+            max_depth: 1,
+            seed: 5,
+            ..PtSettings::default()
+        };
         let mut acc = PtRender::new(size, size);
         let mut prev = vec![0.0f64; (size * size) as usize];
         let mut out = Vec::new();
         for _ in 0..passes {
             tracer.render(&mut acc, &s, 1)?;
-            let total: Vec<f64> = acc.image().data.iter().map(|v| (v.x + v.y + v.z) as f64 / 3.0 * acc.passes as f64).collect();
+            let total: Vec<f64> = acc
+                .image()
+                .data
+                .iter()
+                .map(|v| (v.x + v.y + v.z) as f64 / 3.0 * acc.passes as f64)
+                .collect();
             out.push(total.iter().zip(&prev).map(|(t, p)| t - p).collect());
             prev = total;
         }
@@ -62,8 +73,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     // The material each pixel's centre ray sees.
     let geo = Geometry::new(&scene.triangles);
     let (f, r, u) = scene.camera.scaled_basis(size, size);
-    let names =
-        ["walls (Lambertian)", "floor (dielectric, r 0.3)", "tall block (metal, r 0.15)", "short block (gold, r 0.4)", "ball (plastic, r 0.2)"];
+    let names = [
+        "walls (Lambertian)",
+        "floor (dielectric, r 0.3)",
+        "tall block (metal, r 0.15)",
+        "short block (gold, r 0.4)",
+        "ball (plastic, r 0.2)",
+    ];
     let group = |m: u32| match m {
         0..=3 => 0,
         4 => 1,
@@ -75,7 +91,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for i in 0..(size * size) as usize {
         let (x, y) = ((i as u32 % size) as f32 + 0.5, (i as u32 / size) as f32 + 0.5);
         let dir = slc_core::path::camera_dir(f, r, u, x, y, size as f32, size as f32);
-        let Some(hit) = geo.intersect(scene.camera.position, dir, ray_t_min(scene.diagonal()), f32::INFINITY) else { continue };
+        let Some(hit) =
+            geo.intersect(scene.camera.position, dir, ray_t_min(scene.diagonal()), f32::INFINITY)
+        else {
+            continue;
+        };
         let m = scene.material_of[hit.triangle as usize];
         if scene.materials[m as usize].emission.max_element() > 0.0 {
             continue;
@@ -88,7 +108,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         g.2 += 1;
         g.3 += (w_slc - w_all).max(0.0);
     }
-    println!("glossy Cornell box, 512 lights, direct light, {size}x{size}, {passes} passes, slc ε = {eps} against nothing culled");
+    println!(
+        "glossy Cornell box, 512 lights, direct light, {size}x{size}, {passes} passes, slc ε = {eps} against nothing culled"
+    );
     println!(
         "{:<28} {:>7} {:>10} {:>12} {:>10} {:>12} {:>14}",
         "seen material", "pixels", "radiance", "added σ", "σ/radiance", "σ / walls'", "σ / white's"
@@ -99,7 +121,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             continue;
         }
         let (mean, sd) = (m / n as f64, (v / n as f64).sqrt());
-        println!("{name:<28} {n:>7} {mean:>10.4} {sd:>12.5} {:>10.3} {:>12.2} {:>14.2}", sd / mean, sd / walls, sd / (w / n as f64).sqrt());
+        println!(
+            "{name:<28} {n:>7} {mean:>10.4} {sd:>12.5} {:>10.3} {:>12.2} {:>14.2}",
+            sd / mean,
+            sd / walls,
+            sd / (w / n as f64).sqrt()
+        );
     }
     Ok(())
 }

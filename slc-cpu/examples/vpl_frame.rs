@@ -19,16 +19,25 @@ fn main() {
     let size: u32 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(512);
     let frames: u32 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(5);
     let inputs = args.get(4).is_some_and(|a| a == "inputs");
-    let mut ctx = VplContext::new(&Scene::cornell_box(), size, size, 256, None).expect("valid scene");
+    let mut ctx =
+        VplContext::new(&Scene::cornell_box(), size, size, 256, None).expect("valid scene");
     for frame in 0..frames {
         let t = inputs.then(|| ctx.time_inputs());
-        let f = ctx.render(&VplSettings { method, frame, ..Default::default() }).expect("valid settings");
+        let f = ctx
+            .render(&VplSettings { method, frame, ..Default::default() })
+            .expect("valid settings");
         if let Some(t) = t {
-            print!("G-buffer {:.2} ms, RSM {:.2} ms, direct {:.2} ms, ", t.gbuffer_ms, t.rsm_ms, t.direct_ms);
+            print!(
+                "G-buffer {:.2} ms, RSM {:.2} ms, direct {:.2} ms, ",
+                t.gbuffer_ms, t.rsm_ms, t.direct_ms
+            );
         }
         println!(
             "frame {frame}: shading {:.2} ms, denoise {:.2} ms, {:.1} lights/px, {:.1} kept/px",
-            f.stats.shading_ms, f.stats.denoise_ms, f.stats.lights_per_pixel, f.stats.kept_per_pixel
+            f.stats.shading_ms,
+            f.stats.denoise_ms,
+            f.stats.lights_per_pixel,
+            f.stats.kept_per_pixel
         );
     }
 }

@@ -22,11 +22,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         _ => VplMethod::Slc,
     };
     let ctx = VplContext::new(&Scene::cornell_box_glossy(), size, size, rsm, None)?;
-    let reference = ctx.render(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() })?.image;
+    let reference =
+        ctx.render(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() })?.image;
     let settings = VplSettings { method, ..VplSettings::default() };
     let shaded = ctx.shade(&settings)?;
     let lambert = Shaded { specular: Vec::new(), specular_near: Vec::new(), ..shaded.clone() };
-    let (brdf, lambert) = (ctx.finish(shaded, &settings).image, ctx.finish(lambert, &settings).image);
+    let (brdf, lambert) =
+        (ctx.finish(shaded, &settings).image, ctx.finish(lambert, &settings).image);
     let gb = ctx.gbuffer();
     // The box's materials, told apart by their lobes (cornell_box_glossy).
     let class = |i: usize| match gb.specular_at(i) {
@@ -36,17 +38,35 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         Some(s) if s.roughness > 0.25 => "floor (dielectric, roughness 0.3)",
         Some(_) => "ball (plastic, roughness 0.2)",
     };
-    println!("{size}x{size}, {} VPLs, {}: per seen material, mean (rel. to reference) and RMSE", rsm * rsm, method.name());
-    println!("| seen material | reference mean | BRDF: mean | BRDF: RMSE | as before: mean | as before: RMSE |");
+    println!(
+        "{size}x{size}, {} VPLs, {}: per seen material, mean (rel. to reference) and RMSE",
+        rsm * rsm,
+        method.name()
+    );
+    println!(
+        "| seen material | reference mean | BRDF: mean | BRDF: RMSE | as before: mean | as before: RMSE |"
+    );
     println!("|---|---:|---:|---:|---:|---:|");
-    let names: Vec<&str> =
-        (0..gb.position.len()).filter(|&i| gb.valid(i)).map(class).collect::<std::collections::BTreeSet<_>>().into_iter().collect();
+    let names: Vec<&str> = (0..gb.position.len())
+        .filter(|&i| gb.valid(i))
+        .map(class)
+        .collect::<std::collections::BTreeSet<_>>()
+        .into_iter()
+        .collect();
     for name in names {
-        let px: Vec<usize> = (0..gb.position.len()).filter(|&i| gb.valid(i) && class(i) == name).collect();
+        let px: Vec<usize> =
+            (0..gb.position.len()).filter(|&i| gb.valid(i) && class(i) == name).collect();
         let n = px.len() as f64;
-        let mean = |img: &[glam::Vec3]| px.iter().map(|&i| img[i].as_dvec3()).sum::<DVec3>().element_sum() / (3.0 * n);
-        let rmse =
-            |img: &[glam::Vec3]| (px.iter().map(|&i| (img[i] - reference.data[i]).as_dvec3().length_squared()).sum::<f64>() / (3.0 * n)).sqrt();
+        let mean = |img: &[glam::Vec3]| {
+            px.iter().map(|&i| img[i].as_dvec3()).sum::<DVec3>().element_sum() / (3.0 * n)
+        };
+        let rmse = |img: &[glam::Vec3]| {
+            (px.iter()
+                .map(|&i| (img[i] - reference.data[i]).as_dvec3().length_squared())
+                .sum::<f64>()
+                / (3.0 * n))
+                .sqrt()
+        };
         let r = mean(&reference.data);
         println!(
             "| {name} | {r:.4} | {:+.1}% | {:.4} | {:+.1}% | {:.4} |",

@@ -28,14 +28,26 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let mut m = Vec::new();
             for seed in 0..seeds {
                 let mut tracer = CpuPathTracer::new(&pts);
-                let s = PtSettings { method, error_bound: eps, max_depth: depth, seed: 11 + seed, ..PtSettings::default() };
+                let s = PtSettings {
+                    method,
+                    error_bound: eps,
+                    max_depth: depth,
+                    seed: 11 + seed,
+                    ..PtSettings::default()
+                };
                 let mut acc = PtRender::new(size, size);
                 tracer.render(&mut acc, &s, passes)?;
                 let img = acc.image();
-                m.push(img.data.iter().map(|v| (v.x + v.y + v.z) as f64 / 3.0).sum::<f64>() / img.data.len() as f64);
+                m.push(
+                    img.data.iter().map(|v| (v.x + v.y + v.z) as f64 / 3.0).sum::<f64>()
+                        / img.data.len() as f64,
+                );
             }
             let mean = m.iter().sum::<f64>() / m.len() as f64;
-            let se = (m.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (m.len() as f64 - 1.0) / m.len() as f64).sqrt();
+            let se = (m.iter().map(|x| (x - mean).powi(2)).sum::<f64>()
+                / (m.len() as f64 - 1.0)
+                / m.len() as f64)
+                .sqrt();
             means.push((mean, se));
         }
         let (u, w, r) = (means[0], means[1], means[2]);

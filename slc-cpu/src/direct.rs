@@ -37,17 +37,40 @@ impl DirectLights {
     /// Shades `points` with unit `normals` for frame `frame` of `seed`:
     /// ranges from `xi_for(seed, frame, light)`, the BSH refitted to them,
     /// then [`Direct`] per point (zero for a point with a NaN coordinate).
-    pub fn shade(&mut self, points: &[Vec3], normals: &[Vec3], params: &RangeParams, seed: u32, frame: u32) -> Result<Vec<Direct>, RenderError> {
+    pub fn shade(
+        &mut self,
+        points: &[Vec3],
+        normals: &[Vec3],
+        params: &RangeParams,
+        seed: u32,
+        frame: u32,
+    ) -> Result<Vec<Direct>, RenderError> {
         if points.len() != normals.len() {
-            return Err(RenderError::Setting(format!("{} points but {} normals", points.len(), normals.len())));
+            return Err(RenderError::Setting(format!(
+                "{} points but {} normals",
+                points.len(),
+                normals.len()
+            )));
         }
         let rt2: Vec<f32> = self.lights.iter().map(|l| params.threshold_range2(l.peak())).collect();
-        let r2: Vec<f32> = rt2.iter().enumerate().map(|(i, &t)| random_range2(t, xi_for(seed, frame, i as u32))).collect();
+        let r2: Vec<f32> = rt2
+            .iter()
+            .enumerate()
+            .map(|(i, &t)| random_range2(t, xi_for(seed, frame, i as u32)))
+            .collect();
         self.bsh.refit(&r2).map_err(|e| RenderError::Setting(e.to_string()))?;
         let this = &*self;
         Ok((0..points.len())
             .into_par_iter()
-            .map(|i| this.shade_point(points[i], normals[i], &rt2, &r2, point_stream(seed, i as u32, frame)))
+            .map(|i| {
+                this.shade_point(
+                    points[i],
+                    normals[i],
+                    &rt2,
+                    &r2,
+                    point_stream(seed, i as u32, frame),
+                )
+            })
             .collect())
     }
 

@@ -20,7 +20,12 @@ use slc_scene::vpl::{GBuffer, Specular};
 /// face the camera; the second vector holds each pixel's geometric normal on
 /// the same side (for ray offsets). Its specular lobes are filled only when
 /// some material of the scene has one.
-pub fn render_gbuffer(scene: &Scene, geo: &Geometry, width: u32, height: u32) -> (GBuffer, Vec<Vec3>) {
+pub fn render_gbuffer(
+    scene: &Scene,
+    geo: &Geometry,
+    width: u32,
+    height: u32,
+) -> (GBuffer, Vec<Vec3>) {
     let mut gb = GBuffer { width, height, ..GBuffer::default() };
     let mut geometric = Vec::new();
     render_gbuffer_into(scene, geo, &mut gb, &mut geometric);
@@ -31,17 +36,26 @@ pub fn render_gbuffer(scene: &Scene, geo: &Geometry, width: u32, height: u32) ->
 /// their memory when they already hold that many pixels (a frame loop's
 /// case: no fresh pages for the kernel to fault in), else into new
 /// buffers.
-pub fn render_gbuffer_into(scene: &Scene, geo: &Geometry, gb: &mut GBuffer, geometric: &mut Vec<Vec3>) {
+pub fn render_gbuffer_into(
+    scene: &Scene,
+    geo: &Geometry,
+    gb: &mut GBuffer,
+    geometric: &mut Vec<Vec3>,
+) {
     let (w, h) = (gb.width as usize, gb.height as usize);
     let cam = &scene.camera;
     gb.eye = cam.position;
-    let view = Pinhole { eye: cam.position, basis: cam.scaled_basis(gb.width, gb.height), size: (w, h) };
+    let view =
+        Pinhole { eye: cam.position, basis: cam.scaled_basis(gb.width, gb.height), size: (w, h) };
     let hits = closest_hits(&view, geo, &scene.triangles);
     type Texel = ((Vec3, Vec3), ((Vec3, Vec3), (f32, Vec3)));
     let texel = |x: usize, y: usize| -> Texel {
         let (t, tri) = hits.at(x, y);
         if tri == u32::MAX {
-            return ((Vec3::ZERO, Vec3::ZERO), ((Vec3::ZERO, Vec3::ZERO), (f32::INFINITY, Vec3::ZERO)));
+            return (
+                (Vec3::ZERO, Vec3::ZERO),
+                ((Vec3::ZERO, Vec3::ZERO), (f32::INFINITY, Vec3::ZERO)),
+            );
         }
         let dir = view.dir(x, y);
         let p = cam.position + dir * t;
@@ -50,7 +64,16 @@ pub fn render_gbuffer_into(scene: &Scene, geo: &Geometry, gb: &mut GBuffer, geom
         ((p, scene.shading_normal(tri as usize, p, gn)), ((m.albedo, m.emission), (t, gn)))
     };
     let n = w * h;
-    let sized = [gb.position.len(), gb.normal.len(), gb.albedo.len(), gb.emission.len(), gb.depth.len(), geometric.len()].iter().all(|&l| l == n);
+    let sized = [
+        gb.position.len(),
+        gb.normal.len(),
+        gb.albedo.len(),
+        gb.emission.len(),
+        gb.depth.len(),
+        geometric.len(),
+    ]
+    .iter()
+    .all(|&l| l == n);
     if sized && w > 0 {
         // Row by row: a pixel's coordinates without a division.
         (
@@ -72,8 +95,10 @@ pub fn render_gbuffer_into(scene: &Scene, geo: &Geometry, gb: &mut GBuffer, geom
         // One parallel pass writes every buffer straight into fresh memory
         // (a zero-filled buffer first would cost as much as the pass).
         type Buffers = ((Vec<Vec3>, Vec<Vec3>), ((Vec<Vec3>, Vec<Vec3>), (Vec<f32>, Vec<Vec3>)));
-        let ((position, normal), ((albedo, emission), (depth, geo_n))): Buffers = (0..n).into_par_iter().map(|i| texel(i % w, i / w)).unzip();
-        (gb.position, gb.normal, gb.albedo, gb.emission, gb.depth, *geometric) = (position, normal, albedo, emission, depth, geo_n);
+        let ((position, normal), ((albedo, emission), (depth, geo_n))): Buffers =
+            (0..n).into_par_iter().map(|i| texel(i % w, i / w)).unzip();
+        (gb.position, gb.normal, gb.albedo, gb.emission, gb.depth, *geometric) =
+            (position, normal, albedo, emission, depth, geo_n);
     }
     // Each pixel's specular lobe, only where the scene has one (a
     // Lambertian scene's G-buffer holds none).
@@ -118,8 +143,16 @@ mod tests {
                 match geo.intersect(camera.position, dir, 0.0, f32::INFINITY) {
                     Some(hit) => {
                         hits += 1;
-                        assert!(gb.valid(i) && (gb.depth[i] - hit.t).abs() <= 1e-6 * hit.t, "pixel {i}: depth {} vs {}", gb.depth[i], hit.t);
-                        assert!(geometric[i].dot(face_against(geo.normal(hit.triangle), dir)) > 0.999, "pixel {i}: geometric normal");
+                        assert!(
+                            gb.valid(i) && (gb.depth[i] - hit.t).abs() <= 1e-6 * hit.t,
+                            "pixel {i}: depth {} vs {}",
+                            gb.depth[i],
+                            hit.t
+                        );
+                        assert!(
+                            geometric[i].dot(face_against(geo.normal(hit.triangle), dir)) > 0.999,
+                            "pixel {i}: geometric normal"
+                        );
                     }
                     None => assert!(!gb.valid(i), "pixel {i}: hit where the ray caster misses"),
                 }

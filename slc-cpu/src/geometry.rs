@@ -29,9 +29,14 @@ pub struct Geometry {
 impl Geometry {
     /// Builds the BVH over `triangles`.
     pub fn new(triangles: &[[Vec3; 3]]) -> Self {
-        let tris: Vec<Triangle> = triangles.iter().map(|t| Triangle { v0: t[0].into(), v1: t[1].into(), v2: t[2].into() }).collect();
-        let normals = triangles.iter().map(|t| slc_core::ray::triangle_normal(t[0], t[1], t[2])).collect();
-        let bvh = build_cwbvh_from_tris(&tris, BvhBuildParams::medium_build(), &mut Duration::default());
+        let tris: Vec<Triangle> = triangles
+            .iter()
+            .map(|t| Triangle { v0: t[0].into(), v1: t[1].into(), v2: t[2].into() })
+            .collect();
+        let normals =
+            triangles.iter().map(|t| slc_core::ray::triangle_normal(t[0], t[1], t[2])).collect();
+        let bvh =
+            build_cwbvh_from_tris(&tris, BvhBuildParams::medium_build(), &mut Duration::default());
         Geometry { tris, normals, bvh }
     }
 

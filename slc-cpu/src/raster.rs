@@ -83,7 +83,8 @@ impl View for Pinhole {
         let q = p - self.eye;
         let depth = q.dot(f);
         // q = depth·(f + sx·r + sy·u): the image point of camera_dir's inverse.
-        let (sx, sy) = (q.dot(r) / (r.length_squared() * depth), q.dot(u) / (u.length_squared() * depth));
+        let (sx, sy) =
+            (q.dot(r) / (r.length_squared() * depth), q.dot(u) / (u.length_squared() * depth));
         (depth, (sx + 1.0) * 0.5 * w - 0.5, (1.0 - sy) * 0.5 * h - 0.5)
     }
 
@@ -123,11 +124,19 @@ impl View for MapView {
         let (depth, a, b) = match self.map {
             LightMap::Perspective { origin, axis, right, up, tan } => {
                 let rel = p - origin;
-                (rel.dot(axis), light_map_coord_at(rel, right, axis, tan, true), light_map_coord_at(rel, up, axis, tan, true))
+                (
+                    rel.dot(axis),
+                    light_map_coord_at(rel, right, axis, tan, true),
+                    light_map_coord_at(rel, up, axis, tan, true),
+                )
             }
             LightMap::Orthographic { origin, axis, right, up, half } => {
                 let rel = p - origin;
-                (1.0, light_map_coord_at(rel, right, axis, half, false), light_map_coord_at(rel, up, axis, half, false))
+                (
+                    1.0,
+                    light_map_coord_at(rel, right, axis, half, false),
+                    light_map_coord_at(rel, up, axis, half, false),
+                )
             }
         };
         // The inverse of light_map_coord: texel t's centre at t.
@@ -200,8 +209,14 @@ fn pixel_box(view: &impl View, t: &[Vec3; 3], near: f32) -> Option<PixelBox> {
         hi = (hi.0.max(px), hi.1.max(py));
     }
     let (x0, y0) = ((lo.0.floor() - 1.0).max(0.0), (lo.1.floor() - 1.0).max(0.0));
-    let (x1, y1) = ((hi.0.ceil() + 1.0).min(w as f32 - 1.0), (hi.1.ceil() + 1.0).min(h as f32 - 1.0));
-    (x0 <= x1 && y0 <= y1).then_some(PixelBox { x0: x0 as usize, x1: x1 as usize, y0: y0 as usize, y1: y1 as usize })
+    let (x1, y1) =
+        ((hi.0.ceil() + 1.0).min(w as f32 - 1.0), (hi.1.ceil() + 1.0).min(h as f32 - 1.0));
+    (x0 <= x1 && y0 <= y1).then_some(PixelBox {
+        x0: x0 as usize,
+        x1: x1 as usize,
+        y0: y0 as usize,
+        y1: y1 as usize,
+    })
 }
 
 /// Triangles binned to the `tile × tile` pixel tiles of a view, in scene
@@ -217,7 +232,8 @@ impl Bins {
     /// Bins the triangles that can be hit at depth `near` or more.
     fn new(view: &impl View, triangles: &[[Vec3; 3]], tile: usize, near: f32) -> Bins {
         let (w, h) = view.size();
-        let boxes: Vec<Option<PixelBox>> = triangles.iter().map(|t| pixel_box(view, t, near)).collect();
+        let boxes: Vec<Option<PixelBox>> =
+            triangles.iter().map(|t| pixel_box(view, t, near)).collect();
         let (tw, th) = (w.div_ceil(tile), h.div_ceil(tile));
         let mut bins: Vec<Vec<u32>> = vec![Vec::new(); tw * th];
         for (i, b) in boxes.iter().enumerate() {
@@ -401,14 +417,22 @@ impl<'g, V: View> Occluders<'g, V> {
         // negative coordinates are outside.
         let (x, y) = (px + 0.5, py + 0.5);
         let near = self.view.near();
-        if !(depth >= near && end >= near && depth > 0.0 && x >= 0.0 && y >= 0.0 && x < w as f32 && y < h as f32) {
+        if !(depth >= near
+            && end >= near
+            && depth > 0.0
+            && x >= 0.0
+            && y >= 0.0
+            && x < w as f32
+            && y < h as f32)
+        {
             return self.geo.occluded(a, b);
         }
         let bin = &self.bins.bins[y as usize * self.bins.tiles.0 + x as usize];
         bin.iter().any(|&tri| {
             let (n, d) = self.planes[tri as usize];
             let (sa, sb) = (n.dot(a) - d, n.dot(b) - d);
-            let apart = (sa > self.margin && sb > self.margin) || (sa < -self.margin && sb < -self.margin);
+            let apart =
+                (sa > self.margin && sb > self.margin) || (sa < -self.margin && sb < -self.margin);
             !apart && self.geo.blocks(tri, &ray)
         })
     }
@@ -434,10 +458,21 @@ mod tests {
             PrimaryLight::Spot { position, .. } => position,
             PrimaryLight::Directional { .. } => unreachable!("the Cornell box has a spot light"),
         };
-        let dir_light = PrimaryLight::Directional { direction: Vec3::new(0.3, -1.0, 0.2), irradiance: Vec3::ONE };
+        let dir_light = PrimaryLight::Directional {
+            direction: Vec3::new(0.3, -1.0, 0.2),
+            irradiance: Vec3::ONE,
+        };
         let t_min = surface_offset(diag);
-        let spot = Occluders::new(MapView { map: scene.primary.light_map((lo, hi)), size: 64, t_min }, &geo, &scene.triangles);
-        let sun = Occluders::new(MapView { map: dir_light.light_map((lo, hi)), size: 64, t_min }, &geo, &scene.triangles);
+        let spot = Occluders::new(
+            MapView { map: scene.primary.light_map((lo, hi)), size: 64, t_min },
+            &geo,
+            &scene.triangles,
+        );
+        let sun = Occluders::new(
+            MapView { map: dir_light.light_map((lo, hi)), size: 64, t_min },
+            &geo,
+            &scene.triangles,
+        );
         let wi = Vec3::new(-0.3, 1.0, -0.2).normalize();
         // Points on the surfaces the camera sees, offset off them.
         let cam = scene.camera;
@@ -446,17 +481,25 @@ mod tests {
         for y in 0..h {
             for x in 0..w {
                 let dir = cam.ray_dir(x as f32, y as f32, w, h);
-                let Some(hit) = geo.intersect(cam.position, dir, 0.0, f32::INFINITY) else { continue };
+                let Some(hit) = geo.intersect(cam.position, dir, 0.0, f32::INFINITY) else {
+                    continue;
+                };
                 let gn = slc_core::ray::face_against(geo.normal(hit.triangle), dir);
                 let from = cam.position + dir * hit.t + gn * surface_offset(diag);
-                for (occ, to) in [(spot.occluded(from, spot_pos), spot_pos), (sun.occluded(from, from + wi * 2.0 * diag), from + wi * 2.0 * diag)] {
+                for (occ, to) in [
+                    (spot.occluded(from, spot_pos), spot_pos),
+                    (sun.occluded(from, from + wi * 2.0 * diag), from + wi * 2.0 * diag),
+                ] {
                     assert_eq!(occ, geo.occluded(from, to), "pixel ({x}, {y}) toward {to}");
                     blocked += occ as usize;
                     total += 1;
                 }
             }
         }
-        assert!(blocked > total / 20 && blocked < total, "{blocked} of {total} segments blocked: the test sees shadows and light");
+        assert!(
+            blocked > total / 20 && blocked < total,
+            "{blocked} of {total} segments blocked: the test sees shadows and light"
+        );
     }
 
     /// A pinhole view projects a pixel's ray back onto that pixel, and a
@@ -470,14 +513,28 @@ mod tests {
                 let p = Vec3::from(r.origin + r.direction * 2.5);
                 let (depth, px, py) = view.project(p);
                 assert_eq!(view.depth(p), depth, "depth is project's");
-                assert!(depth > 0.0 && (px - x as f32).abs() < 1e-3 && (py - y as f32).abs() < 1e-3, "({x}, {y}) → ({px}, {py})");
+                assert!(
+                    depth > 0.0 && (px - x as f32).abs() < 1e-3 && (py - y as f32).abs() < 1e-3,
+                    "({x}, {y}) → ({px}, {py})"
+                );
             }
         }
         let scene = Scene::cornell_box();
         let cam: Camera = scene.camera;
-        projects_its_rays(&Pinhole { eye: cam.position, basis: cam.scaled_basis(40, 30), size: (40, 30) });
-        projects_its_rays(&MapView { map: scene.primary.light_map(scene.bounds()), size: 32, t_min: 0.0 });
-        let sun = PrimaryLight::Directional { direction: Vec3::new(0.3, -1.0, 0.2), irradiance: Vec3::ONE };
+        projects_its_rays(&Pinhole {
+            eye: cam.position,
+            basis: cam.scaled_basis(40, 30),
+            size: (40, 30),
+        });
+        projects_its_rays(&MapView {
+            map: scene.primary.light_map(scene.bounds()),
+            size: 32,
+            t_min: 0.0,
+        });
+        let sun = PrimaryLight::Directional {
+            direction: Vec3::new(0.3, -1.0, 0.2),
+            irradiance: Vec3::ONE,
+        };
         projects_its_rays(&MapView { map: sun.light_map(scene.bounds()), size: 32, t_min: 0.0 });
     }
 }

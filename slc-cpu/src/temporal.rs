@@ -25,7 +25,8 @@
 use glam::{Vec2, Vec3, Vec4};
 use rayon::prelude::*;
 use slc_core::temporal::{
-    history_mean, history_tap, history_tap_weight, history_tap_weight_motion, reproject, reproject_motion, temporal_color, temporal_moments,
+    history_mean, history_tap, history_tap_weight, history_tap_weight_motion, reproject,
+    reproject_motion, temporal_color, temporal_moments,
 };
 use slc_scene::RenderError;
 use slc_scene::temporal::{TemporalSettings, TemporalView};
@@ -60,10 +61,18 @@ impl Temporal {
     /// An empty history for `width × height` images (each in `1..=16384`).
     pub fn new(width: u32, height: u32) -> Result<Temporal, RenderError> {
         if !(1..=16384).contains(&width) || !(1..=16384).contains(&height) {
-            return Err(RenderError::Setting(format!("temporal history of {width}x{height}: each side must be in 1..=16384")));
+            return Err(RenderError::Setting(format!(
+                "temporal history of {width}x{height}: each side must be in 1..=16384"
+            )));
         }
         let n = (width * height) as usize;
-        Ok(Temporal { width, height, history: vec![Texel::default(); n], spare: vec![Texel::default(); n], previous: None })
+        Ok(Temporal {
+            width,
+            height,
+            history: vec![Texel::default(); n],
+            spare: vec![Texel::default(); n],
+            previous: None,
+        })
     }
 
     /// Forgets the history (a cut: the next frame starts afresh).
@@ -83,7 +92,13 @@ impl Temporal {
     /// accumulated signal (the signal itself where the G-buffer has no
     /// surface or the history nothing to reuse). The history becomes this
     /// frame's.
-    pub fn accumulate(&mut self, signal: &[Vec3], gb: &GBuffer, view: &TemporalView, settings: &TemporalSettings) -> Result<Vec<Vec3>, RenderError> {
+    pub fn accumulate(
+        &mut self,
+        signal: &[Vec3],
+        gb: &GBuffer,
+        view: &TemporalView,
+        settings: &TemporalSettings,
+    ) -> Result<Vec<Vec3>, RenderError> {
         self.accumulate_with(signal, gb, view, None, settings)
     }
 
@@ -114,16 +129,29 @@ impl Temporal {
         settings.validate()?;
         view.validate()?;
         let n = (self.width * self.height) as usize;
-        if gb.width != self.width || gb.height != self.height || gb.position.len() != n || gb.normal.len() != n {
-            return Err(RenderError::Setting(format!("a {}x{} G-buffer for a {}x{} temporal history", gb.width, gb.height, self.width, self.height)));
+        if gb.width != self.width
+            || gb.height != self.height
+            || gb.position.len() != n
+            || gb.normal.len() != n
+        {
+            return Err(RenderError::Setting(format!(
+                "a {}x{} G-buffer for a {}x{} temporal history",
+                gb.width, gb.height, self.width, self.height
+            )));
         }
         if signal.len() != n {
-            return Err(RenderError::Setting(format!("{} signal values for {n} pixels", signal.len())));
+            return Err(RenderError::Setting(format!(
+                "{} signal values for {n} pixels",
+                signal.len()
+            )));
         }
         if let Some(m) = motion
             && (m.len() != n || !m.iter().all(|v| v.is_finite()))
         {
-            return Err(RenderError::Setting(format!("{} motion vectors for {n} pixels (each finite)", m.len())));
+            return Err(RenderError::Setting(format!(
+                "{} motion vectors for {n} pixels (each finite)",
+                m.len()
+            )));
         }
         // The next history goes into the spare buffer (no allocation per
         // frame), then the two swap.
@@ -141,8 +169,21 @@ impl Temporal {
                     (Some(prev), None) => this.reprojected(p, nrm, &prev),
                     (Some(_), Some(m)) => this.moved(i, p, nrm, m[i], view.eye),
                 };
-                let value = temporal_color(signal[i], h.value, h.moments.y, h.moments.x, settings.max_history);
-                let moments = temporal_moments(signal[i], h.moments.x, h.moments.y, h.value.w, value.w, (p - view.eye).length());
+                let value = temporal_color(
+                    signal[i],
+                    h.value,
+                    h.moments.y,
+                    h.moments.x,
+                    settings.max_history,
+                );
+                let moments = temporal_moments(
+                    signal[i],
+                    h.moments.x,
+                    h.moments.y,
+                    h.value.w,
+                    value.w,
+                    (p - view.eye).length(),
+                );
                 Texel { value, moments, surface: nrm.extend(nrm.dot(p)) }
             };
             *o = t.value.truncate();
@@ -157,18 +198,37 @@ impl Temporal {
     /// (renormalised); length 0 where none is.
     fn reprojected(&self, p: Vec3, n: Vec3, previous: &TemporalView) -> Texel {
         let m = previous.view_projection;
-        let q = reproject(m.x_axis, m.y_axis, m.z_axis, m.w_axis, p, self.width as f32, self.height as f32);
+        let q = reproject(
+            m.x_axis,
+            m.y_axis,
+            m.z_axis,
+            m.w_axis,
+            p,
+            self.width as f32,
+            self.height as f32,
+        );
         let d = (p - previous.eye).length();
-        self.gathered(q, |w, t| history_tap_weight(w, n, t.surface.truncate(), p, t.surface.w, d, t.value.w))
+        self.gathered(q, |w, t| {
+            history_tap_weight(w, n, t.surface.truncate(), p, t.surface.w, d, t.value.w)
+        })
     }
 
     /// The history of pixel `i` (point `p`, normal `n`, seen from `eye`)
     /// where its motion vector `m` says it was.
     fn moved(&self, i: usize, p: Vec3, n: Vec3, m: Vec2, eye: Vec3) -> Texel {
         let (w, h) = (self.width as f32, self.height as f32);
-        let q = reproject_motion((i % self.width as usize) as f32, (i / self.width as usize) as f32, m.x, m.y, w, h);
+        let q = reproject_motion(
+            (i % self.width as usize) as f32,
+            (i / self.width as usize) as f32,
+            m.x,
+            m.y,
+            w,
+            h,
+        );
         let d = (p - eye).length();
-        self.gathered(q, |w, t| history_tap_weight_motion(w, n, t.surface.truncate(), d, t.moments.z, t.value.w))
+        self.gathered(q, |w, t| {
+            history_tap_weight_motion(w, n, t.surface.truncate(), d, t.moments.z, t.value.w)
+        })
     }
 
     /// The history at previous-frame pixel coordinates `q`: its four taps
@@ -186,7 +246,11 @@ impl Temporal {
                 weight_sum += w;
             }
         }
-        Texel { value: history_mean(value, weight_sum), moments: history_mean(moments, weight_sum), surface: Vec4::ZERO }
+        Texel {
+            value: history_mean(value, weight_sum),
+            moments: history_mean(moments, weight_sum),
+            surface: Vec4::ZERO,
+        }
     }
 }
 
@@ -203,7 +267,11 @@ mod tests {
 
     /// Uniform noise on `[0, 1)` per pixel and frame, fixed seed.
     fn noise(n: usize, frame: u32) -> Vec<Vec3> {
-        (0..n as u32).map(|i| Vec3::splat(xi_from_bits(pcg_hash(pcg_hash(i) ^ frame.wrapping_mul(0x9e37_79b9))))).collect()
+        (0..n as u32)
+            .map(|i| {
+                Vec3::splat(xi_from_bits(pcg_hash(pcg_hash(i) ^ frame.wrapping_mul(0x9e37_79b9))))
+            })
+            .collect()
     }
 
     /// A static view accumulates the plain mean of the frames: after 32
@@ -217,16 +285,22 @@ mod tests {
         let mut t = Temporal::new(64, 64).unwrap();
         let mut out = Vec::new();
         for f in 0..32 {
-            out = t.accumulate(&noise(64 * 64, f), gb, &view, &TemporalSettings::default()).unwrap();
+            out =
+                t.accumulate(&noise(64 * 64, f), gb, &view, &TemporalSettings::default()).unwrap();
         }
-        let lit: Vec<f64> = (0..out.len()).filter(|&i| gb.valid(i)).map(|i| out[i].x as f64).collect();
+        let lit: Vec<f64> =
+            (0..out.len()).filter(|&i| gb.valid(i)).map(|i| out[i].x as f64).collect();
         let m = lit.iter().sum::<f64>() / lit.len() as f64;
         let var = lit.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (lit.len() - 1) as f64;
         let expected = 1.0 / (12.0 * 32.0);
         // The sample variance of n values has relative sd √(2/n) (≈ 2.5%
         // here): 5σ.
         let tol = 5.0 * (2.0 / lit.len() as f64).sqrt();
-        assert!((var / expected - 1.0).abs() < tol, "variance {var} vs {expected} ({} pixels)", lit.len());
+        assert!(
+            (var / expected - 1.0).abs() < tol,
+            "variance {var} vs {expected} ({} pixels)",
+            lit.len()
+        );
         assert!((m - 0.5).abs() < 5.0 * (expected / lit.len() as f64).sqrt());
         let lens = t.history_lengths();
         assert!((0..lens.len()).all(|i| gb.valid(i) || lens[i] == 0.0));
@@ -234,7 +308,11 @@ mod tests {
         // so a 4σ alarm is rare but not impossible: 53 of 3,844 pixels
         // (1.4%) lost part of their history here.
         let short = (0..lens.len()).filter(|&i| gb.valid(i) && lens[i] < 32.0).count();
-        assert!(short * 50 < lit.len(), "{short} of {} pixels lost history in a static scene", lit.len());
+        assert!(
+            short * 50 < lit.len(),
+            "{short} of {} pixels lost history in a static scene",
+            lit.len()
+        );
     }
 
     /// When the camera moves, a pixel whose surface the previous frame saw
@@ -249,16 +327,22 @@ mod tests {
         let base = ctx.scene().camera;
         let before = ctx.inputs().gbuffer.clone();
         for f in 0..6 {
-            t.accumulate(&noise(64 * 64, f), &before, &TemporalView::of_camera(&base, 64, 64), &ts).unwrap();
+            t.accumulate(&noise(64 * 64, f), &before, &TemporalView::of_camera(&base, 64, 64), &ts)
+                .unwrap();
         }
         // Sideways by a twentieth of the scene: the blocks uncover the wall
         // behind them, and the box's edge moves in the image.
         let step = Vec3::X * (0.1 * ctx.scene().diagonal());
-        let moved = slc_scene::scene::Camera { position: base.position + step, target: base.target + step, ..base };
+        let moved = slc_scene::scene::Camera {
+            position: base.position + step,
+            target: base.target + step,
+            ..base
+        };
         ctx.set_camera(moved).unwrap();
         let gb = ctx.inputs().gbuffer.clone();
         let signal = noise(64 * 64, 99);
-        let out = t.accumulate(&signal, &gb, &TemporalView::of_camera(&moved, 64, 64), &ts).unwrap();
+        let out =
+            t.accumulate(&signal, &gb, &TemporalView::of_camera(&moved, 64, 64), &ts).unwrap();
         let lens = t.history_lengths();
         let prev = TemporalView::of_camera(&base, 64, 64).view_projection;
         let (mut kept, mut fresh) = (0, 0);
@@ -271,13 +355,19 @@ mod tests {
                 let inside = (0.0..64.0).contains(&x) && (0.0..64.0).contains(&y);
                 let j = if inside { y as usize * 64 + x as usize } else { 0 };
                 let nj = before.normal[j];
-                inside && before.valid(j) && slc_core::temporal::history_matches(n, nj, p, nj.dot(before.position[j]), d)
+                inside
+                    && before.valid(j)
+                    && slc_core::temporal::history_matches(n, nj, p, nj.dot(before.position[j]), d)
             });
             if taps.iter().all(|&m| m) {
                 assert!(lens[i] > 1.0, "pixel {i}: every tap saw its surface");
                 kept += 1;
             } else if taps.iter().all(|&m| !m) {
-                assert_eq!((lens[i], out[i]), (1.0, signal[i]), "pixel {i}: no tap saw its surface");
+                assert_eq!(
+                    (lens[i], out[i]),
+                    (1.0, signal[i]),
+                    "pixel {i}: no tap saw its surface"
+                );
                 fresh += 1;
             }
         }
@@ -295,7 +385,8 @@ mod tests {
         let mut t = Temporal::new(64, 64).unwrap();
         let ts = TemporalSettings::default();
         for f in 0..10 {
-            let s: Vec<Vec3> = noise(64 * 64, f).iter().map(|v| Vec3::splat(1.0) + *v * 0.01).collect();
+            let s: Vec<Vec3> =
+                noise(64 * 64, f).iter().map(|v| Vec3::splat(1.0) + *v * 0.01).collect();
             t.accumulate(&s, gb, &view, &ts).unwrap();
         }
         // A jump far beyond the noise: its first frame could be a lone
@@ -303,7 +394,10 @@ mod tests {
         // frame makes it a change, and the history restarts from it.
         let jump = vec![Vec3::splat(2.0); 64 * 64];
         t.accumulate(&jump, gb, &view, &ts).unwrap();
-        assert!((0..jump.len()).filter(|&i| gb.valid(i)).all(|i| t.history_lengths()[i] == 11.0), "a lone outlier keeps the history");
+        assert!(
+            (0..jump.len()).filter(|&i| gb.valid(i)).all(|i| t.history_lengths()[i] == 11.0),
+            "a lone outlier keeps the history"
+        );
         let out = t.accumulate(&jump, gb, &view, &ts).unwrap();
         for i in (0..out.len()).filter(|&i| gb.valid(i)) {
             assert_eq!(t.history_lengths()[i], 1.0);
@@ -313,7 +407,10 @@ mod tests {
             t.accumulate(&jump, gb, &view, &ts).unwrap();
         }
         t.accumulate(&jump, gb, &view, &ts.after_change()).unwrap();
-        assert!(t.history_lengths().iter().all(|&n| n <= 1.0), "a reported change drops the history");
+        assert!(
+            t.history_lengths().iter().all(|&n| n <= 1.0),
+            "a reported change drops the history"
+        );
         t.reset();
         assert!(t.history_lengths().iter().all(|&n| n == 0.0));
     }
@@ -327,7 +424,8 @@ mod tests {
         let mut ctx = context();
         let base = ctx.scene().camera;
         let ts = TemporalSettings::default();
-        let (mut by_matrix, mut by_motion) = (Temporal::new(64, 64).unwrap(), Temporal::new(64, 64).unwrap());
+        let (mut by_matrix, mut by_motion) =
+            (Temporal::new(64, 64).unwrap(), Temporal::new(64, 64).unwrap());
         let gb = ctx.inputs().gbuffer.clone();
         let view = TemporalView::of_camera(&base, 64, 64);
         let still = vec![Vec2::ZERO; 64 * 64];
@@ -336,28 +434,51 @@ mod tests {
             by_motion.accumulate_with_motion(&noise(64 * 64, f), &gb, &view, &still, &ts).unwrap();
         }
         let step = Vec3::X * (0.03 * ctx.scene().diagonal());
-        let moved = slc_scene::scene::Camera { position: base.position + step, target: base.target + step, ..base };
+        let moved = slc_scene::scene::Camera {
+            position: base.position + step,
+            target: base.target + step,
+            ..base
+        };
         ctx.set_camera(moved).unwrap();
         let gb = ctx.inputs().gbuffer.clone();
         let m = view.view_projection;
         let motion: Vec<Vec2> = (0..64 * 64)
             .map(|i| {
-                let q = reproject(m.x_axis, m.y_axis, m.z_axis, m.w_axis, gb.position[i], 64.0, 64.0);
-                if gb.valid(i) { Vec2::new(((i % 64) as f32 - q.x) / 64.0, ((i / 64) as f32 - q.y) / 64.0) } else { Vec2::ZERO }
+                let q =
+                    reproject(m.x_axis, m.y_axis, m.z_axis, m.w_axis, gb.position[i], 64.0, 64.0);
+                if gb.valid(i) {
+                    Vec2::new(((i % 64) as f32 - q.x) / 64.0, ((i / 64) as f32 - q.y) / 64.0)
+                } else {
+                    Vec2::ZERO
+                }
             })
             .collect();
         let view = TemporalView::of_camera(&moved, 64, 64);
         let a = by_matrix.accumulate(&noise(64 * 64, 9), &gb, &view, &ts).unwrap();
-        let b = by_motion.accumulate_with_motion(&noise(64 * 64, 9), &gb, &view, &motion, &ts).unwrap();
+        let b =
+            by_motion.accumulate_with_motion(&noise(64 * 64, 9), &gb, &view, &motion, &ts).unwrap();
         let lit: Vec<usize> = (0..a.len()).filter(|&i| gb.valid(i)).collect();
-        let same = lit.iter().filter(|&&i| (a[i] - b[i]).abs().max_element() <= 1e-4 * a[i].max_element()).count();
+        let same = lit
+            .iter()
+            .filter(|&&i| (a[i] - b[i]).abs().max_element() <= 1e-4 * a[i].max_element())
+            .count();
         assert!(same * 50 >= lit.len() * 49, "{same} of {} pixels agree", lit.len());
         let kept = by_motion.history_lengths().iter().filter(|&&n| n > 1.0).count();
-        assert!(kept * 10 > lit.len() * 8, "motion vectors keep the history ({kept} of {})", lit.len());
-        assert!(by_motion.accumulate_with_motion(&noise(64 * 64, 10), &gb, &view, &motion[1..], &ts).is_err());
+        assert!(
+            kept * 10 > lit.len() * 8,
+            "motion vectors keep the history ({kept} of {})",
+            lit.len()
+        );
+        assert!(
+            by_motion
+                .accumulate_with_motion(&noise(64 * 64, 10), &gb, &view, &motion[1..], &ts)
+                .is_err()
+        );
         let mut bad = motion.clone();
         bad[7] = Vec2::NAN;
-        assert!(by_motion.accumulate_with_motion(&noise(64 * 64, 10), &gb, &view, &bad, &ts).is_err());
+        assert!(
+            by_motion.accumulate_with_motion(&noise(64 * 64, 10), &gb, &view, &bad, &ts).is_err()
+        );
     }
 
     #[test]
@@ -368,10 +489,29 @@ mod tests {
         let ts = TemporalSettings::default();
         assert!(Temporal::new(0, 4).is_err());
         let mut t = Temporal::new(32, 32).unwrap();
-        assert!(t.accumulate(&vec![Vec3::ZERO; 32 * 32], gb, &view, &ts).is_err(), "G-buffer of another size");
+        assert!(
+            t.accumulate(&vec![Vec3::ZERO; 32 * 32], gb, &view, &ts).is_err(),
+            "G-buffer of another size"
+        );
         let mut t = Temporal::new(64, 64).unwrap();
         assert!(t.accumulate(&[Vec3::ZERO; 3], gb, &view, &ts).is_err(), "signal of another size");
-        assert!(t.accumulate(&vec![Vec3::ZERO; 64 * 64], gb, &TemporalView { eye: Vec3::NAN, ..view }, &ts).is_err());
-        assert!(t.accumulate(&vec![Vec3::ZERO; 64 * 64], gb, &view, &TemporalSettings { max_history: 0.0 }).is_err());
+        assert!(
+            t.accumulate(
+                &vec![Vec3::ZERO; 64 * 64],
+                gb,
+                &TemporalView { eye: Vec3::NAN, ..view },
+                &ts
+            )
+            .is_err()
+        );
+        assert!(
+            t.accumulate(
+                &vec![Vec3::ZERO; 64 * 64],
+                gb,
+                &view,
+                &TemporalSettings { max_history: 0.0 }
+            )
+            .is_err()
+        );
     }
 }

@@ -10,7 +10,11 @@ use slc_scene::scene::Scene;
 /// triangle lights), so SLC has many lights to cull; diffuse, or with the
 /// glossy floor, blocks and ball of [`Scene::cornell_box_glossy`].
 fn many_light_box(glossy: bool) -> Scene {
-    if glossy { Scene::cornell_box_glossy().split_light(8) } else { Scene::cornell_box_split_light(8) }
+    if glossy {
+        Scene::cornell_box_glossy().split_light(8)
+    } else {
+        Scene::cornell_box_split_light(8)
+    }
 }
 
 /// Per-pass images of a method, RGB interleaved (`3·pixel + channel`).
@@ -26,7 +30,13 @@ fn pass_images(glossy: bool, method: PtMethod, seed: u32, passes: u32) -> Vec<Ve
     (0..passes)
         .map(|_| {
             pts.render(&mut acc, &s, 1).unwrap();
-            let total: Vec<f64> = acc.image().data.iter().flat_map(|v| v.to_array()).map(|c| c as f64 * acc.passes as f64).collect();
+            let total: Vec<f64> = acc
+                .image()
+                .data
+                .iter()
+                .flat_map(|v| v.to_array())
+                .map(|c| c as f64 * acc.passes as f64)
+                .collect();
             let pass = total.iter().zip(&prev).map(|(t, p)| t - p).collect();
             prev = total;
             pass
@@ -66,17 +76,30 @@ fn methods_match_uniform_in_expectation_on_glossy_surfaces() {
 fn match_uniform_in_expectation(glossy: bool) {
     // Different seeds: the images must be independent for the bounds.
     let uniform = pass_images(glossy, PtMethod::Uniform, 101, 400);
-    let channel = |c: usize| move |v: &[f64]| v.iter().skip(c).step_by(3).sum::<f64>() / (v.len() / 3) as f64;
+    let channel =
+        |c: usize| move |v: &[f64]| v.iter().skip(c).step_by(3).sum::<f64>() / (v.len() / 3) as f64;
     let px = uniform[0].len() / 3;
-    let pixel = |p: &[Vec<f64>], i: usize| mean_var(p, |v| v[3 * i..3 * i + 3].iter().sum::<f64>() / 3.0);
-    for method in [PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::SlcWeighted, PtMethod::Power, PtMethod::LightBvh] {
+    let pixel =
+        |p: &[Vec<f64>], i: usize| mean_var(p, |v| v[3 * i..3 * i + 3].iter().sum::<f64>() / 3.0);
+    for method in [
+        PtMethod::Slc,
+        PtMethod::SlcReservoir,
+        PtMethod::SlcWeighted,
+        PtMethod::Power,
+        PtMethod::LightBvh,
+    ] {
         let images = pass_images(glossy, method, 1, 400);
         for c in 0..3 {
-            let ((m, vm), (mu, vu)) = (mean_var(&images, channel(c)), mean_var(&uniform, channel(c)));
+            let ((m, vm), (mu, vu)) =
+                (mean_var(&images, channel(c)), mean_var(&uniform, channel(c)));
             assert!(mu > 0.0);
             let bound = 5.0 * (vu + vm).sqrt();
             eprintln!("{} channel {c}: {m:.5} vs uniform {mu:.5}, 5σ = {bound:.5}", method.name());
-            assert!((m - mu).abs() <= bound, "{} channel {c}: mean {m} vs uniform {mu} (5σ = {bound})", method.name());
+            assert!(
+                (m - mu).abs() <= bound,
+                "{} channel {c}: mean {m} vs uniform {mu} (5σ = {bound})",
+                method.name()
+            );
         }
         let (mut se, mut predicted) = (0.0, 0.0);
         for i in 0..px {
@@ -85,8 +108,15 @@ fn match_uniform_in_expectation(glossy: bool) {
             predicted += va + vb;
         }
         let (rmse, predicted) = ((se / px as f64).sqrt(), (predicted / px as f64).sqrt());
-        eprintln!("{}: per-pixel RMSE against uniform {rmse:.5}, predicted {predicted:.5}", method.name());
-        assert!(rmse <= 1.5 * predicted, "{}: per-pixel RMSE {rmse} > 1.5 × {predicted}", method.name());
+        eprintln!(
+            "{}: per-pixel RMSE against uniform {rmse:.5}, predicted {predicted:.5}",
+            method.name()
+        );
+        assert!(
+            rmse <= 1.5 * predicted,
+            "{}: per-pixel RMSE {rmse} > 1.5 × {predicted}",
+            method.name()
+        );
     }
 }
 

@@ -18,8 +18,10 @@ use std::path::Path;
 
 #[test]
 fn raster_equals_ray_casting_on_the_bunny() {
-    let file =
-        SceneFile::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/bunny-in-cornell.toml")).expect("the bunny scene (../shared/data)");
+    let file = SceneFile::load(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/bunny-in-cornell.toml"),
+    )
+    .expect("the bunny scene (../shared/data)");
     let scene = file.scene;
     assert!(scene.triangles.len() > 4968, "the bunny is in the scene");
     let geo = Geometry::new(&scene.triangles);
@@ -33,10 +35,16 @@ fn raster_equals_ray_casting_on_the_bunny() {
         let dir = cam.ray_dir((i % w as usize) as f32, (i / w as usize) as f32, w, h);
         match geo.intersect(cam.position, dir, 0.0, f32::INFINITY) {
             Some(hit) => {
-                assert!(gb.valid(i) && (gb.depth[i] - hit.t).abs() <= 1e-6 * hit.t, "pixel {i}: depth {} vs {}", gb.depth[i], hit.t);
+                assert!(
+                    gb.valid(i) && (gb.depth[i] - hit.t).abs() <= 1e-6 * hit.t,
+                    "pixel {i}: depth {} vs {}",
+                    gb.depth[i],
+                    hit.t
+                );
                 // Where a ray meets an edge two triangles share, either is
                 // the closest hit (same distance, another normal).
-                ties += (geometric[i].dot(face_against(geo.normal(hit.triangle), dir)) < 0.999) as usize;
+                ties += (geometric[i].dot(face_against(geo.normal(hit.triangle), dir)) < 0.999)
+                    as usize;
                 froms.push(gb.position[i] + geometric[i] * surface_offset(diag));
             }
             None => assert!(!gb.valid(i), "pixel {i}: a hit where the ray caster misses"),
@@ -52,14 +60,26 @@ fn raster_equals_ray_casting_on_the_bunny() {
         match geo.intersect(origin, dir, surface_offset(diag), f32::INFINITY) {
             Some(hit) => {
                 let p = origin + dir * hit.t;
-                assert!((vpls.position[t] - p).length() <= 1e-5 * hit.t, "texel {t}: {} vs {p}", vpls.position[t]);
+                assert!(
+                    (vpls.position[t] - p).length() <= 1e-5 * hit.t,
+                    "texel {t}: {} vs {p}",
+                    vpls.position[t]
+                );
             }
-            None => assert_eq!(vpls.flux[t], Vec3::ZERO, "texel {t}: flux where the ray caster misses"),
+            None => {
+                assert_eq!(vpls.flux[t], Vec3::ZERO, "texel {t}: flux where the ray caster misses")
+            }
         }
     }
     // Shadow segments from every surface point toward the spot.
-    let PrimaryLight::Spot { position, .. } = scene.primary else { panic!("the scene has a spot light") };
-    let occluders = Occluders::new(MapView { map, size: 64, t_min: surface_offset(diag) }, &geo, &scene.triangles);
+    let PrimaryLight::Spot { position, .. } = scene.primary else {
+        panic!("the scene has a spot light")
+    };
+    let occluders = Occluders::new(
+        MapView { map, size: 64, t_min: surface_offset(diag) },
+        &geo,
+        &scene.triangles,
+    );
     let blocked = froms.iter().filter(|&&a| {
         let o = occluders.occluded(a, position);
         assert_eq!(o, geo.occluded(a, position), "segment from {a}");

@@ -35,7 +35,8 @@ fn slc_expectation_equals_unculled_per_pixel() {
     for i in 0..mean.len() {
         let truth = none.data[i].as_dvec3();
         let bound = all_kept.data[i].as_dvec3() * (2.0 / M as f64) + truth.abs() * 1e-5 + 1e-9;
-        culled_somewhere |= (all_kept.data[i].as_dvec3() - truth).max_element() > 1e-3 * truth.max_element();
+        culled_somewhere |=
+            (all_kept.data[i].as_dvec3() - truth).max_element() > 1e-3 * truth.max_element();
         for c in 0..3 {
             assert!(
                 (mean[i][c] - truth[c]).abs() <= bound[c],
@@ -75,7 +76,11 @@ fn slc_mean_over_seeds_converges_to_unculled() {
         let var = means.iter().map(|x| (x[c] - m).powi(2)).sum::<f64>() / (S as f64 - 1.0);
         assert!(var > 0.0, "channel {c}: frames do not vary: culling not exercised");
         let bound = 5.0 * (var / S as f64).sqrt();
-        assert!((m - truth[c]).abs() <= bound, "channel {c}: mean over seeds {m} vs unculled {} (5σ bound {bound})", truth[c]);
+        assert!(
+            (m - truth[c]).abs() <= bound,
+            "channel {c}: mean over seeds {m} vs unculled {} (5σ bound {bound})",
+            truth[c]
+        );
     }
 }
 
@@ -86,12 +91,21 @@ fn slc_mean_over_seeds_converges_to_unculled() {
 fn clamped_ranges_darken() {
     let ctx = VplContext::new(&Scene::cornell_box(), 48, 48, 32, None).unwrap();
     let none = ctx.render(&settings(VplMethod::None, 0)).unwrap().image;
-    let clamp = ctx.render(&VplSettings { range: 0.1, ..settings(VplMethod::Clamp, 0) }).unwrap().image;
-    let direct_only = ctx.render(&VplSettings { range: 1e-6, ..settings(VplMethod::Clamp, 0) }).unwrap().image;
-    let indirect = |img: &slc_scene::image::Image, c: usize| img.channel_means()[c] - direct_only.channel_means()[c];
+    let clamp =
+        ctx.render(&VplSettings { range: 0.1, ..settings(VplMethod::Clamp, 0) }).unwrap().image;
+    let direct_only =
+        ctx.render(&VplSettings { range: 1e-6, ..settings(VplMethod::Clamp, 0) }).unwrap().image;
+    let indirect = |img: &slc_scene::image::Image, c: usize| {
+        img.channel_means()[c] - direct_only.channel_means()[c]
+    };
     for c in 0..3 {
         assert!(indirect(&none, c) > 0.0);
-        assert!(indirect(&clamp, c) < 0.8 * indirect(&none, c), "channel {c}: clamp {} vs none {}", indirect(&clamp, c), indirect(&none, c));
+        assert!(
+            indirect(&clamp, c) < 0.8 * indirect(&none, c),
+            "channel {c}: clamp {} vs none {}",
+            indirect(&clamp, c),
+            indirect(&none, c)
+        );
     }
     // Pixel-wise: clamp never exceeds none (it only removes terms).
     for (c, n) in clamp.data.iter().zip(&none.data) {
@@ -126,26 +140,44 @@ fn interleaved_image_is_the_interleaved_estimator_of_the_reference() {
     let (gb, v, min_d2) = (ctx.gbuffer(), ctx.vpls(), ctx.min_d2());
     let p = slc_scene::vpl::PERIOD;
     // Interleaving alone: no near-field split (R_n = 0).
-    let none = ctx.shade(&VplSettings { near_radius: Some(0.0), ..settings(VplMethod::None, 0) }).unwrap().irradiance;
-    let reference = ctx.shade(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() }).unwrap().irradiance;
+    let none = ctx
+        .shade(&VplSettings { near_radius: Some(0.0), ..settings(VplMethod::None, 0) })
+        .unwrap()
+        .irradiance;
+    let reference = ctx
+        .shade(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() })
+        .unwrap()
+        .irradiance;
     let st = settings(VplMethod::None, 0);
     let shift = interleave_shift(st.seed, st.frame, p);
-    let subset_of_vpl: Vec<u32> = (0..v.len() as u32).map(|t| interleave_subset(t % size, t / size, p)).collect();
-    let f = |x: usize, j: usize| v.flux[j].as_dvec3() * vpl_transfer(v.normal[j], gb.normal[x], gb.position[x] - v.position[j], min_d2) as f64;
+    let subset_of_vpl: Vec<u32> =
+        (0..v.len() as u32).map(|t| interleave_subset(t % size, t / size, p)).collect();
+    let f = |x: usize, j: usize| {
+        v.flux[j].as_dvec3()
+            * vpl_transfer(v.normal[j], gb.normal[x], gb.position[x] - v.position[j], min_d2) as f64
+    };
     // 1. Per pixel.
     let mut worst = 0.0f64;
     for x in (0..gb.position.len()).filter(|&x| gb.valid(x)) {
         let s = shifted_subset(interleave_subset(x as u32 % w, x as u32 / w, p), shift, p);
-        let want = (0..v.len()).filter(|&j| subset_of_vpl[j] == s).map(|j| f(x, j)).sum::<glam::DVec3>() * (p * p) as f64;
+        let want =
+            (0..v.len()).filter(|&j| subset_of_vpl[j] == s).map(|j| f(x, j)).sum::<glam::DVec3>()
+                * (p * p) as f64;
         let got = none[x].as_dvec3();
-        worst = worst.max(((got - want).abs() / want.abs().max(glam::DVec3::splat(1e-12))).max_element());
+        worst = worst
+            .max(((got - want).abs() / want.abs().max(glam::DVec3::splat(1e-12))).max_element());
     }
-    assert!(worst <= 1e-5, "interleaved irradiance differs from P²·Σ over the pixel's subset by {worst:.2e}");
+    assert!(
+        worst <= 1e-5,
+        "interleaved irradiance differs from P²·Σ over the pixel's subset by {worst:.2e}"
+    );
     // 2. Block sums against the reference, with the derived bound.
-    let (mut sum_int, mut sum_ref, mut variance, mut blocks) = (glam::DVec3::ZERO, glam::DVec3::ZERO, glam::DVec3::ZERO, 0);
+    let (mut sum_int, mut sum_ref, mut variance, mut blocks) =
+        (glam::DVec3::ZERO, glam::DVec3::ZERO, glam::DVec3::ZERO, 0);
     for by in (0..h / p).map(|b| b * p) {
         for bx in (0..w / p).map(|b| b * p) {
-            let pixels: Vec<usize> = (0..p * p).map(|k| ((by + k / p) * w + bx + k % p) as usize).collect();
+            let pixels: Vec<usize> =
+                (0..p * p).map(|k| ((by + k / p) * w + bx + k % p) as usize).collect();
             if !pixels.iter().all(|&x| gb.valid(x)) {
                 continue;
             }
@@ -157,15 +189,23 @@ fn interleaved_image_is_the_interleaved_estimator_of_the_reference() {
             for j in 0..v.len() {
                 let c: Vec<glam::DVec3> = pixels.iter().map(|&x| f(x, j)).collect();
                 let mean = c.iter().sum::<glam::DVec3>() / c.len() as f64;
-                variance += c.iter().map(|&y| (y - mean) * (y - mean)).sum::<glam::DVec3>() / c.len() as f64;
+                variance += c.iter().map(|&y| (y - mean) * (y - mean)).sum::<glam::DVec3>()
+                    / c.len() as f64;
             }
         }
     }
     let (diff, sd) = ((sum_int - sum_ref).abs(), variance.powf(0.5));
-    eprintln!("{blocks} blocks: interleaved {sum_int}, reference {sum_ref}, |difference| {diff}, standard deviation {sd}");
+    eprintln!(
+        "{blocks} blocks: interleaved {sum_int}, reference {sum_ref}, |difference| {diff}, standard deviation {sd}"
+    );
     assert!(blocks > 20);
     for c in 0..3 {
-        assert!(diff[c] <= 4.0 * sd[c], "channel {c}: block sums differ by {} > 4 sd = {}", diff[c], 4.0 * sd[c]);
+        assert!(
+            diff[c] <= 4.0 * sd[c],
+            "channel {c}: block sums differ by {} > 4 sd = {}",
+            diff[c],
+            4.0 * sd[c]
+        );
     }
 }
 
@@ -175,7 +215,11 @@ fn shared_cornell_obj_loads_and_renders() {
     let scene = Scene::load_obj(&path).unwrap();
     // 5 walls + 2 boxes + light, quads split in two.
     assert_eq!(scene.triangles.len(), 36);
-    let emissive = scene.material_of.iter().filter(|&&m| scene.materials[m as usize].emission.max_element() > 0.0).count();
+    let emissive = scene
+        .material_of
+        .iter()
+        .filter(|&&m| scene.materials[m as usize].emission.max_element() > 0.0)
+        .count();
     assert_eq!(emissive, 2, "the light quad's Ke must be read");
     let ctx = VplContext::new(&scene, 48, 48, 32, None).unwrap();
     let f = ctx.render(&VplSettings::default()).unwrap();
@@ -194,11 +238,20 @@ fn bad_obj_and_mtl_input_are_typed_errors() {
     };
     assert!(matches!(Scene::load_obj(&dir.join("missing.obj")), Err(SceneError::Io(..))));
     assert!(matches!(Scene::load_obj(&write("empty.obj", "# nothing\n")), Err(SceneError::Empty)));
-    assert!(matches!(Scene::load_obj(&write("nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")), Err(SceneError::NonFiniteVertex(0))));
-    assert!(matches!(Scene::load_obj(&write("idx.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n")), Err(SceneError::Obj(..))));
+    assert!(matches!(
+        Scene::load_obj(&write("nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")),
+        Err(SceneError::NonFiniteVertex(0))
+    ));
+    assert!(matches!(
+        Scene::load_obj(&write("idx.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n")),
+        Err(SceneError::Obj(..))
+    ));
     write("neg.mtl", "newmtl m\nKd 0.5 0.5 0.5\nKe -1 0 0\n");
     assert!(matches!(
-        Scene::load_obj(&write("neg.obj", "mtllib neg.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n")),
+        Scene::load_obj(&write(
+            "neg.obj",
+            "mtllib neg.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n"
+        )),
         Err(SceneError::Invalid(_))
     ));
     for e in [SceneError::Empty, SceneError::NonFiniteVertex(3)] {
@@ -216,7 +269,14 @@ fn bad_settings_are_typed_errors() {
     let ctx = VplContext::new(&scene, 16, 16, 16, None).unwrap();
     for bad in [0.0, -1.0, f32::NAN, f32::INFINITY] {
         assert!(ctx.render(&VplSettings { error_bound: bad, ..VplSettings::default() }).is_err());
-        assert!(ctx.render(&VplSettings { method: VplMethod::Clamp, range: bad, ..VplSettings::default() }).is_err());
+        assert!(
+            ctx.render(&VplSettings {
+                method: VplMethod::Clamp,
+                range: bad,
+                ..VplSettings::default()
+            })
+            .is_err()
+        );
     }
     assert!(ctx.render(&VplSettings { tile: 0, ..VplSettings::default() }).is_err());
 }
@@ -242,7 +302,11 @@ fn moved_light_renders_as_a_new_context() {
     let mut ctx = VplContext::new(&scene, 48, 40, 32, None).unwrap();
     let s = settings(VplMethod::Slc, 3);
     let before = ctx.render(&s).unwrap().image;
-    let slc_scene::scene::PrimaryLight::Spot { position, direction, intensity, inner, outer } = scene.primary else { unreachable!("a spot") };
+    let slc_scene::scene::PrimaryLight::Spot { position, direction, intensity, inner, outer } =
+        scene.primary
+    else {
+        unreachable!("a spot")
+    };
     scene.primary = slc_scene::scene::PrimaryLight::Spot {
         position: position + Vec3::new(0.1, -0.05, 0.08),
         direction: direction + Vec3::new(0.2, 0.0, 0.1),
@@ -254,12 +318,29 @@ fn moved_light_renders_as_a_new_context() {
     assert!(t.rsm_ms > 0.0 && t.direct_ms > 0.0 && t.gbuffer_ms == 0.0);
     let moved = ctx.render(&s).unwrap().image;
     let fresh = VplContext::new(&scene, 48, 40, 32, None).unwrap();
-    assert_eq!(moved.data, fresh.render(&s).unwrap().image.data, "the moved light renders as a new context");
+    assert_eq!(
+        moved.data,
+        fresh.render(&s).unwrap().image.data,
+        "the moved light renders as a new context"
+    );
     assert_eq!(ctx.vpls().flux, fresh.vpls().flux);
-    assert!(moved.data.iter().zip(&before.data).filter(|(a, b)| a != b).count() > moved.data.len() / 10, "the light moved");
+    assert!(
+        moved.data.iter().zip(&before.data).filter(|(a, b)| a != b).count() > moved.data.len() / 10,
+        "the light moved"
+    );
     ctx.time_inputs();
-    assert_eq!(ctx.render(&s).unwrap().image.data, moved.data, "inputs rendered again in place are the same");
-    let bad = slc_scene::scene::PrimaryLight::Spot { position, direction: Vec3::ZERO, intensity, inner, outer };
+    assert_eq!(
+        ctx.render(&s).unwrap().image.data,
+        moved.data,
+        "inputs rendered again in place are the same"
+    );
+    let bad = slc_scene::scene::PrimaryLight::Spot {
+        position,
+        direction: Vec3::ZERO,
+        intensity,
+        inner,
+        outer,
+    };
     assert!(ctx.set_primary(bad).is_err());
     assert_eq!(ctx.render(&s).unwrap().image.data, moved.data, "a refused light changes nothing");
 }
@@ -287,7 +368,8 @@ fn near_field_removes_the_blotches_at_the_tall_blocks_base() {
     let (gb, v) = (ctx.gbuffer(), ctx.vpls());
     // The tall block's footprint on the floor (x, z in metres), in order:
     // `Scene::cornell_box`'s tall block (Cornell's data, mm → m).
-    let foot = [(0.423, 0.247), (0.472, 0.406), (0.314, 0.456), (0.265, 0.296)].map(|(x, z)| glam::Vec2::new(x, z));
+    let foot = [(0.423, 0.247), (0.472, 0.406), (0.314, 0.456), (0.265, 0.296)]
+        .map(|(x, z)| glam::Vec2::new(x, z));
     let to_edge = |p: glam::Vec2| {
         (0..4)
             .map(|k| {
@@ -298,31 +380,50 @@ fn near_field_removes_the_blotches_at_the_tall_blocks_base() {
             .fold(f32::INFINITY, f32::min)
     };
     let crease: Vec<usize> = (0..gb.position.len())
-        .filter(|&i| gb.valid(i) && gb.position[i].y < 0.03 && to_edge(glam::Vec2::new(gb.position[i].x, gb.position[i].z)) < 0.03)
+        .filter(|&i| {
+            gb.valid(i)
+                && gb.position[i].y < 0.03
+                && to_edge(glam::Vec2::new(gb.position[i].x, gb.position[i].z)) < 0.03
+        })
         .collect();
     assert!(crease.len() > 500, "{} crease pixels: the camera sees the block's base", crease.len());
     let mut all = LightList::default();
     for i in 0..v.len() {
         all.push(v.position[i], v.normal[i], v.flux[i], f32::INFINITY, f32::INFINITY);
     }
-    let reference: Vec<Vec3> = crease.iter().map(|&i| shade(&all, gb.position[i], gb.normal[i], ctx.min_d2(), 0.0, Cull::None).0).collect();
+    let reference: Vec<Vec3> = crease
+        .iter()
+        .map(|&i| shade(&all, gb.position[i], gb.normal[i], ctx.min_d2(), 0.0, Cull::None).0)
+        .collect();
     let mut denoiser = Denoiser::new(gb);
     let mut largest_error = |near_radius: Option<f32>| {
         let frames = 8;
         let sum: f32 = (0..frames)
             .map(|frame| {
-                let shaded = ctx.shade(&VplSettings { near_radius, frame, ..VplSettings::default() }).unwrap();
+                let shaded = ctx
+                    .shade(&VplSettings { near_radius, frame, ..VplSettings::default() })
+                    .unwrap();
                 let e = denoiser.filter_far(&shaded.irradiance, &shaded.near, gb, PERIOD);
                 let radiance = |i: usize, e: Vec3| diffuse_radiance(gb.albedo[i], Vec3::ZERO, e);
-                crease.iter().zip(&reference).map(|(&i, &r)| (radiance(i, e[i]) - radiance(i, r)).abs().max_element()).fold(0.0f32, f32::max)
+                crease
+                    .iter()
+                    .zip(&reference)
+                    .map(|(&i, &r)| (radiance(i, e[i]) - radiance(i, r)).abs().max_element())
+                    .fold(0.0f32, f32::max)
             })
             .sum();
         sum / frames as f32
     };
     let (with, without) = (largest_error(None), largest_error(Some(0.0)));
-    eprintln!("{} crease pixels: largest radiance error over 8 frames {with:.4} with the near field, {without:.4} without", crease.len());
+    eprintln!(
+        "{} crease pixels: largest radiance error over 8 frames {with:.4} with the near field, {without:.4} without",
+        crease.len()
+    );
     assert!(with < 0.036, "the near field leaves an error of {with} at the block's base");
-    assert!(without > 2.0 * with, "without the near field the blotches should show: {without} vs {with}");
+    assert!(
+        without > 2.0 * with,
+        "without the near field the blotches should show: {without} vs {with}"
+    );
 }
 
 /// Interleaving is unbiased over frames: each frame shifts the
@@ -340,17 +441,33 @@ fn interleaving_averages_to_the_reference_over_frames() {
     use slc_scene::vpl::PERIOD;
     let ctx = VplContext::new(&Scene::cornell_box(), 64, 48, 32, None).unwrap();
     let gb = ctx.gbuffer();
-    let reference = ctx.shade(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() }).unwrap().irradiance;
+    let reference = ctx
+        .shade(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() })
+        .unwrap()
+        .irradiance;
     let frames = PERIOD * PERIOD;
     let near_field = ctx.shade(&settings(VplMethod::None, 0)).unwrap().near;
-    assert!(near_field.iter().any(|n| n.max_element() > 0.0), "the default split must have a near field");
+    assert!(
+        near_field.iter().any(|n| n.max_element() > 0.0),
+        "the default split must have a near field"
+    );
     let mut denoiser = Denoiser::new(gb);
     let filtered_reference = denoiser.filter_far(&reference, &near_field, gb, PERIOD);
-    for (what, near_radius, denoise) in [("interleaving", Some(0.0), false), ("with the near field", None, false), ("denoised", None, true)] {
+    for (what, near_radius, denoise) in [
+        ("interleaving", Some(0.0), false),
+        ("with the near field", None, false),
+        ("denoised", None, true),
+    ] {
         let mut mean = vec![glam::DVec3::ZERO; reference.len()];
         for frame in 0..frames {
-            let shaded = ctx.shade(&VplSettings { near_radius, ..settings(VplMethod::None, frame) }).unwrap();
-            let e = if denoise { denoiser.filter_far(&shaded.irradiance, &shaded.near, gb, PERIOD) } else { shaded.irradiance };
+            let shaded = ctx
+                .shade(&VplSettings { near_radius, ..settings(VplMethod::None, frame) })
+                .unwrap();
+            let e = if denoise {
+                denoiser.filter_far(&shaded.irradiance, &shaded.near, gb, PERIOD)
+            } else {
+                shaded.irradiance
+            };
             for (m, v) in mean.iter_mut().zip(&e) {
                 *m += v.as_dvec3() / frames as f64;
             }
@@ -359,9 +476,15 @@ fn interleaving_averages_to_the_reference_over_frames() {
         let mut worst = 0.0f64;
         for i in (0..mean.len()).filter(|&i| gb.valid(i)) {
             let w = want[i].as_dvec3();
-            worst = worst.max(((mean[i] - w).abs() / w.abs().max(glam::DVec3::splat(1e-9))).max_element());
+            worst = worst
+                .max(((mean[i] - w).abs() / w.abs().max(glam::DVec3::splat(1e-9))).max_element());
         }
-        eprintln!("{what}: mean over {frames} frames against its expectation, worst relative {worst:.2e}");
-        assert!(worst <= 1e-5, "{what}: mean over {frames} frames differs from its expectation by {worst:.2e}");
+        eprintln!(
+            "{what}: mean over {frames} frames against its expectation, worst relative {worst:.2e}"
+        );
+        assert!(
+            worst <= 1e-5,
+            "{what}: mean over {frames} frames differs from its expectation by {worst:.2e}"
+        );
     }
 }

@@ -10,7 +10,10 @@ use slc_scene::pt::PtScene;
 use slc_scene::scene_file::SceneFile;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    println!("{:<48} {:>7} {:>10} {:>12} {:>10}", "scene", "lights", "C(eps=1)", "auto eps", "C(auto)");
+    println!(
+        "{:<48} {:>7} {:>10} {:>12} {:>10}",
+        "scene", "lights", "C(eps=1)", "auto eps", "C(auto)"
+    );
     for path in std::env::args().skip(1) {
         let f = SceneFile::load(std::path::Path::new(&path))?;
         let pts = PtScene::new(&f.scene, &f.lights)?;
@@ -19,7 +22,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             continue;
         };
         let eps = auto_error_bound(&pts, 1.0, TARGET_CANDIDATES).ok_or("no automatic bound")?;
-        println!("{path:<48} {:>7} {:>10.2} {:>12.4e} {:>10.2}", model.lights(), model.mean_candidates(1.0), eps, model.mean_candidates(eps));
+        println!(
+            "{path:<48} {:>7} {:>10.2} {:>12.4e} {:>10.2}",
+            model.lights(),
+            model.mean_candidates(1.0),
+            eps,
+            model.mean_candidates(eps)
+        );
     }
     Ok(())
 }

@@ -14,13 +14,19 @@ impl AliasTable {
     /// all-zero set is sampled uniformly.
     pub fn new(weights: &[f64]) -> AliasTable {
         let n = weights.len();
-        let w: Vec<f64> = weights.iter().map(|&x| if x.is_finite() && x > 0.0 { x } else { 0.0 }).collect();
+        let w: Vec<f64> =
+            weights.iter().map(|&x| if x.is_finite() && x > 0.0 { x } else { 0.0 }).collect();
         let total: f64 = w.iter().sum();
-        let pdf: Vec<f64> = if total > 0.0 { w.iter().map(|x| x / total).collect() } else { vec![1.0 / n.max(1) as f64; n] };
+        let pdf: Vec<f64> = if total > 0.0 {
+            w.iter().map(|x| x / total).collect()
+        } else {
+            vec![1.0 / n.max(1) as f64; n]
+        };
         let mut prob = vec![0.0; n];
         let mut alias = vec![0; n];
         let mut scaled: Vec<f64> = pdf.iter().map(|p| p * n as f64).collect();
-        let (mut small, mut large): (Vec<usize>, Vec<usize>) = (0..n).partition(|&i| scaled[i] < 1.0);
+        let (mut small, mut large): (Vec<usize>, Vec<usize>) =
+            (0..n).partition(|&i| scaled[i] < 1.0);
         while !small.is_empty() && !large.is_empty() {
             let (s, l) = (small.pop().expect("non-empty"), *large.last().expect("non-empty"));
             prob[s] = scaled[s];
@@ -43,7 +49,12 @@ impl AliasTable {
     /// probability.
     pub fn sample(&self, u1: f32, u2: f32) -> usize {
         let i = slc_core::reservoir::uniform_light(u1, self.prob.len() as u32);
-        slc_core::reservoir::alias_choice(i, self.alias[i as usize] as u32, self.prob[i as usize] as f32, u2) as usize
+        slc_core::reservoir::alias_choice(
+            i,
+            self.alias[i as usize] as u32,
+            self.prob[i as usize] as f32,
+            u2,
+        ) as usize
     }
 
     /// Probability of index `i`.

@@ -52,7 +52,12 @@ pub trait PathTracer {
     /// Renders `passes` more passes of one sample per pixel into `acc`.
     /// Pass numbers continue from `acc.passes`, so a render split over calls
     /// equals one call.
-    fn render(&mut self, acc: &mut PtRender, settings: &PtSettings, passes: u32) -> Result<Timing, Self::Error>;
+    fn render(
+        &mut self,
+        acc: &mut PtRender,
+        settings: &PtSettings,
+        passes: u32,
+    ) -> Result<Timing, Self::Error>;
 }
 
 /// A backend error with its type erased (see [`DynIndirectShader`]).
@@ -83,14 +88,24 @@ pub trait DynPathTracer {
     /// [`PathTracer::describe`].
     fn describe(&self) -> String;
     /// [`PathTracer::render`].
-    fn render(&mut self, acc: &mut PtRender, settings: &PtSettings, passes: u32) -> Result<Timing, BoxError>;
+    fn render(
+        &mut self,
+        acc: &mut PtRender,
+        settings: &PtSettings,
+        passes: u32,
+    ) -> Result<Timing, BoxError>;
 }
 
 impl<T: PathTracer> DynPathTracer for T {
     fn describe(&self) -> String {
         PathTracer::describe(self)
     }
-    fn render(&mut self, acc: &mut PtRender, settings: &PtSettings, passes: u32) -> Result<Timing, BoxError> {
+    fn render(
+        &mut self,
+        acc: &mut PtRender,
+        settings: &PtSettings,
+        passes: u32,
+    ) -> Result<Timing, BoxError> {
         PathTracer::render(self, acc, settings, passes).map_err(Into::into)
     }
 }

@@ -95,7 +95,11 @@ impl CandidateModel {
     pub fn mean_candidates(&self, eps: f32) -> f64 {
         let inv = 1.0 / eps;
         // f32 sums per point (at most a few thousand terms ≤ 1), f64 across.
-        self.b.chunks(self.lights).map(|row| row.iter().map(|&b| (b * inv).min(1.0)).sum::<f32>() as f64).sum::<f64>() / self.points as f64
+        self.b
+            .chunks(self.lights)
+            .map(|row| row.iter().map(|&b| (b * inv).min(1.0)).sum::<f32>() as f64)
+            .sum::<f64>()
+            / self.points as f64
     }
 }
 
@@ -139,7 +143,13 @@ mod tests {
         (0..n)
             .map(|i| {
                 let (x, z) = ((i % 32) as f32 / 32.0, (i / 32) as f32 / 32.0);
-                Light::Point(PointLight::new(Vec3::new(0.02 + 0.5 * x, 0.3, 0.02 + 0.5 * z), Vec3::splat(intensity)).unwrap())
+                Light::Point(
+                    PointLight::new(
+                        Vec3::new(0.02 + 0.5 * x, 0.3, 0.02 + 0.5 * z),
+                        Vec3::splat(intensity),
+                    )
+                    .unwrap(),
+                )
             })
             .collect()
     }

@@ -61,7 +61,8 @@ impl GltfScene {
     /// Reads a `.gltf` (buffers beside it, or embedded as data URIs) or
     /// `.glb` file.
     pub fn load(path: &Path) -> Result<GltfScene, SceneError> {
-        let bytes = std::fs::read(path).map_err(|e| SceneError::Io(path.display().to_string(), e.to_string()))?;
+        let bytes = std::fs::read(path)
+            .map_err(|e| SceneError::Io(path.display().to_string(), e.to_string()))?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         Self::parse(&bytes, &path.display().to_string(), |p| std::fs::read(dir.join(p)).ok())
     }
@@ -69,11 +70,18 @@ impl GltfScene {
     /// Parses glTF JSON or GLB bytes; `resolve(path)` returns the bytes of
     /// an external buffer the file names (relative to it), or `None`.
     /// `name` labels errors and the scene.
-    pub fn parse(bytes: &[u8], name: &str, resolve: impl Fn(&Path) -> Option<Vec<u8>>) -> Result<GltfScene, SceneError> {
+    pub fn parse(
+        bytes: &[u8],
+        name: &str,
+        resolve: impl Fn(&Path) -> Option<Vec<u8>>,
+    ) -> Result<GltfScene, SceneError> {
         let err = |what: String| SceneError::Gltf(name.to_string(), what);
-        let gltf::Gltf { document, blob } = gltf::Gltf::from_slice(bytes).map_err(|e| err(e.to_string()))?;
+        let gltf::Gltf { document, blob } =
+            gltf::Gltf::from_slice(bytes).map_err(|e| err(e.to_string()))?;
         let buffers = load_buffers(&document, blob, &resolve).map_err(err)?;
-        let file = Path::new(name).file_name().map_or_else(|| name.to_string(), |f| f.to_string_lossy().into_owned());
+        let file = Path::new(name)
+            .file_name()
+            .map_or_else(|| name.to_string(), |f| f.to_string_lossy().into_owned());
         let mut b = Builder {
             buffers,
             triangles: Vec::new(),
@@ -89,7 +97,8 @@ impl GltfScene {
         let mut materials = Vec::new();
         for (i, m) in document.materials().enumerate() {
             let label = m.name().map_or_else(|| format!("#{i}"), str::to_string);
-            let (mat, features) = material(&m).map_err(|e| err(format!("material '{label}': {e}")))?;
+            let (mat, features) =
+                material(&m).map_err(|e| err(format!("material '{label}': {e}")))?;
             materials.push(mat);
             if !features.is_empty() {
                 unsupported.push(Unsupported { source: file.clone(), material: label, features });
@@ -97,7 +106,10 @@ impl GltfScene {
         }
         let default_material = materials.len() as u32;
         materials.push(Material::gltf(Vec3::ONE, 1.0, 1.0));
-        let scene = document.default_scene().or_else(|| document.scenes().next()).ok_or_else(|| err("the file has no scene".into()))?;
+        let scene = document
+            .default_scene()
+            .or_else(|| document.scenes().next())
+            .ok_or_else(|| err("the file has no scene".into()))?;
         for node in scene.nodes() {
             b.node(&node, Mat4::IDENTITY, 0, default_material).map_err(err)?;
         }
@@ -110,7 +122,9 @@ impl GltfScene {
             });
         }
         let mut out = Scene {
-            name: Path::new(name).file_stem().map_or("gltf".into(), |s| s.to_string_lossy().into_owned()),
+            name: Path::new(name)
+                .file_stem()
+                .map_or("gltf".into(), |s| s.to_string_lossy().into_owned()),
             triangles: b.triangles,
             normals: Vec::new(),
             material_of: b.material_of,
@@ -127,10 +141,18 @@ impl GltfScene {
         out.normals = if b.normals.iter().all(Option::is_none) {
             Vec::new()
         } else {
-            b.normals.iter().enumerate().map(|(i, ns)| ns.unwrap_or([out.geometric_normal(i); 3])).collect()
+            b.normals
+                .iter()
+                .enumerate()
+                .map(|(i, ns)| ns.unwrap_or([out.geometric_normal(i); 3]))
+                .collect()
         };
         if !b.prim_features.is_empty() {
-            out.unsupported.push(Unsupported { source: file.clone(), material: "primitives".into(), features: b.prim_features });
+            out.unsupported.push(Unsupported {
+                source: file.clone(),
+                material: "primitives".into(),
+                features: b.prim_features,
+            });
         }
         out.frame_default_view();
         if let Some(c) = b.camera {
@@ -146,27 +168,41 @@ impl GltfScene {
 
 /// The bytes of every buffer: the GLB's binary chunk, a base64 data URI,
 /// or an external file; each at least as long as it declares.
-fn load_buffers(doc: &gltf::Document, mut blob: Option<Vec<u8>>, resolve: &impl Fn(&Path) -> Option<Vec<u8>>) -> Result<Vec<Vec<u8>>, String> {
+fn load_buffers(
+    doc: &gltf::Document,
+    mut blob: Option<Vec<u8>>,
+    resolve: &impl Fn(&Path) -> Option<Vec<u8>>,
+) -> Result<Vec<Vec<u8>>, String> {
     use base64::Engine;
     let mut out = Vec::new();
     for buffer in doc.buffers() {
         let data = match buffer.source() {
-            gltf::buffer::Source::Bin => {
-                blob.take().ok_or_else(|| format!("buffer {} names the GLB's binary chunk, which is missing", buffer.index()))?
-            }
+            gltf::buffer::Source::Bin => blob.take().ok_or_else(|| {
+                format!("buffer {} names the GLB's binary chunk, which is missing", buffer.index())
+            })?,
             gltf::buffer::Source::Uri(uri) => {
                 if let Some(rest) = uri.strip_prefix("data:") {
-                    let (_, payload) =
-                        rest.split_once(";base64,").ok_or_else(|| format!("buffer {}: only base64 data URIs are read", buffer.index()))?;
-                    base64::engine::general_purpose::STANDARD.decode(payload).map_err(|e| format!("buffer {}: bad base64 ({e})", buffer.index()))?
+                    let (_, payload) = rest.split_once(";base64,").ok_or_else(|| {
+                        format!("buffer {}: only base64 data URIs are read", buffer.index())
+                    })?;
+                    base64::engine::general_purpose::STANDARD
+                        .decode(payload)
+                        .map_err(|e| format!("buffer {}: bad base64 ({e})", buffer.index()))?
                 } else {
-                    let path = urlencoding::decode(uri).map_err(|e| format!("buffer {}: bad URI '{uri}' ({e})", buffer.index()))?;
-                    resolve(Path::new(path.as_ref())).ok_or_else(|| format!("buffer {}: cannot read '{path}'", buffer.index()))?
+                    let path = urlencoding::decode(uri)
+                        .map_err(|e| format!("buffer {}: bad URI '{uri}' ({e})", buffer.index()))?;
+                    resolve(Path::new(path.as_ref()))
+                        .ok_or_else(|| format!("buffer {}: cannot read '{path}'", buffer.index()))?
                 }
             }
         };
         if data.len() < buffer.length() {
-            return Err(format!("buffer {} holds {} bytes, fewer than the {} it declares", buffer.index(), data.len(), buffer.length()));
+            return Err(format!(
+                "buffer {} holds {} bytes, fewer than the {} it declares",
+                buffer.index(),
+                data.len(),
+                buffer.length()
+            ));
         }
         out.push(data);
     }
@@ -176,10 +212,20 @@ fn load_buffers(doc: &gltf::Document, mut blob: Option<Vec<u8>>, resolve: &impl 
 /// Checks that `acc` is a dense accessor of `dims` and one of `types` whose
 /// elements all lie inside its buffer view and buffer, so that the `gltf`
 /// crate's reader (which asserts these in debug builds) can read it.
-fn check_accessor(acc: &gltf::Accessor, what: &str, dims: Dimensions, types: &[DataType], buffers: &[Vec<u8>]) -> Result<(), String> {
+fn check_accessor(
+    acc: &gltf::Accessor,
+    what: &str,
+    dims: Dimensions,
+    types: &[DataType],
+    buffers: &[Vec<u8>],
+) -> Result<(), String> {
     let bad = |why: String| Err(format!("{what} accessor {}: {why}", acc.index()));
     if acc.dimensions() != dims || !types.contains(&acc.data_type()) {
-        return bad(format!("{:?} of {:?} where {dims:?} of {types:?} is needed", acc.dimensions(), acc.data_type()));
+        return bad(format!(
+            "{:?} of {:?} where {dims:?} of {types:?} is needed",
+            acc.dimensions(),
+            acc.data_type()
+        ));
     }
     if acc.sparse().is_some() {
         return bad("sparse accessors are not read".into());
@@ -193,10 +239,15 @@ fn check_accessor(acc: &gltf::Accessor, what: &str, dims: Dimensions, types: &[D
     if acc.count() == 0 || stride < size {
         return bad(format!("count {} and stride {stride} (element {size} bytes)", acc.count()));
     }
-    let end = (acc.count() - 1).checked_mul(stride).and_then(|x| x.checked_add(acc.offset())).and_then(|x| x.checked_add(size));
+    let end = (acc.count() - 1)
+        .checked_mul(stride)
+        .and_then(|x| x.checked_add(acc.offset()))
+        .and_then(|x| x.checked_add(size));
     let view_end = view.offset().checked_add(view.length());
     match (end, view_end) {
-        (Some(e), Some(ve)) if e <= view.length() && ve <= buffers[view.buffer().index()].len() => Ok(()),
+        (Some(e), Some(ve)) if e <= view.length() && ve <= buffers[view.buffer().index()].len() => {
+            Ok(())
+        }
         _ => bad("reads past its buffer view or buffer".into()),
     }
 }
@@ -218,9 +269,18 @@ struct Builder {
 }
 
 impl Builder {
-    fn node(&mut self, node: &gltf::Node, parent: Mat4, depth: usize, default_material: u32) -> Result<(), String> {
+    fn node(
+        &mut self,
+        node: &gltf::Node,
+        parent: Mat4,
+        depth: usize,
+        default_material: u32,
+    ) -> Result<(), String> {
         if depth >= MAX_NODE_DEPTH {
-            return Err(format!("node {} is deeper than {MAX_NODE_DEPTH} levels (a cycle?)", node.index()));
+            return Err(format!(
+                "node {} is deeper than {MAX_NODE_DEPTH} levels (a cycle?)",
+                node.index()
+            ));
         }
         let local = Mat4::from_cols_array_2d(&node.transform().matrix());
         let world = parent * local;
@@ -229,7 +289,9 @@ impl Builder {
         }
         if let Some(mesh) = node.mesh() {
             for prim in mesh.primitives() {
-                self.primitive(&prim, world, default_material).map_err(|e| format!("mesh {} primitive {}: {e}", mesh.index(), prim.index()))?;
+                self.primitive(&prim, world, default_material).map_err(|e| {
+                    format!("mesh {} primitive {}: {e}", mesh.index(), prim.index())
+                })?;
             }
         }
         let origin = world.transform_point3(Vec3::ZERO);
@@ -241,7 +303,11 @@ impl Builder {
             let up = world.transform_vector3(Vec3::Y).normalize_or_zero();
             let vfov_deg = p.yfov().to_degrees();
             if !(vfov_deg > 0.0 && vfov_deg < 180.0) || axis == Vec3::ZERO || up == Vec3::ZERO {
-                return Err(format!("camera {}: yfov {} rad or its node's axes are unusable", cam.index(), p.yfov()));
+                return Err(format!(
+                    "camera {}: yfov {} rad or its node's axes are unusable",
+                    cam.index(),
+                    p.yfov()
+                ));
             }
             self.camera = Some(Camera { position: origin, target: origin + axis, up, vfov_deg });
         }
@@ -254,7 +320,12 @@ impl Builder {
         Ok(())
     }
 
-    fn light(&mut self, light: &gltf::khr_lights_punctual::Light, origin: Vec3, axis: Vec3) -> Result<(), String> {
+    fn light(
+        &mut self,
+        light: &gltf::khr_lights_punctual::Light,
+        origin: Vec3,
+        axis: Vec3,
+    ) -> Result<(), String> {
         let what = format!("light {}", light.index());
         let intensity = Vec3::from(light.color()) * light.intensity();
         if !(intensity.is_finite() && intensity.min_element() >= 0.0) {
@@ -266,24 +337,36 @@ impl Builder {
                 self.lights.push((Some(Light::Point(l)), "point"));
             }
             Kind::Spot { inner_cone_angle, outer_cone_angle } => {
-                let s = SpotLight::new(origin, axis, intensity, inner_cone_angle, outer_cone_angle).map_err(|e| format!("{what}: {e}"))?;
+                let s = SpotLight::new(origin, axis, intensity, inner_cone_angle, outer_cone_angle)
+                    .map_err(|e| format!("{what}: {e}"))?;
                 self.lights.push((Some(Light::Spot(s)), "spot"));
                 if self.spot.is_none() && outer_cone_angle < 85f32.to_radians() {
-                    self.spot =
-                        Some(PrimaryLight::Spot { position: origin, direction: axis, intensity, inner: inner_cone_angle, outer: outer_cone_angle });
+                    self.spot = Some(PrimaryLight::Spot {
+                        position: origin,
+                        direction: axis,
+                        intensity,
+                        inner: inner_cone_angle,
+                        outer: outer_cone_angle,
+                    });
                 }
             }
             Kind::Directional => {
                 self.lights.push((None, "directional"));
                 if self.sun.is_none() && axis != Vec3::ZERO {
-                    self.sun = Some(PrimaryLight::Directional { direction: axis, irradiance: intensity });
+                    self.sun =
+                        Some(PrimaryLight::Directional { direction: axis, irradiance: intensity });
                 }
             }
         }
         Ok(())
     }
 
-    fn primitive(&mut self, prim: &gltf::Primitive, world: Mat4, default_material: u32) -> Result<(), String> {
+    fn primitive(
+        &mut self,
+        prim: &gltf::Primitive,
+        world: Mat4,
+        default_material: u32,
+    ) -> Result<(), String> {
         let mode = prim.mode();
         if !matches!(mode, Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan) {
             return Ok(()); // Points and lines have no area.
@@ -298,13 +381,19 @@ impl Builder {
                 self.prim_features.push(name);
             }
         }
-        if prim.morph_targets().len() > 0 && !self.prim_features.iter().any(|f| f == "morph targets") {
+        if prim.morph_targets().len() > 0
+            && !self.prim_features.iter().any(|f| f == "morph targets")
+        {
             self.prim_features.push("morph targets".into());
         }
         let pos = prim.get(&gltf::Semantic::Positions).ok_or("no POSITION")?;
         check_accessor(&pos, "POSITION", Dimensions::Vec3, &[DataType::F32], &self.buffers)?;
         let reader = prim.reader(|b| self.buffers.get(b.index()).map(Vec::as_slice));
-        let positions: Vec<Vec3> = reader.read_positions().ok_or("POSITION cannot be read")?.map(|p| world.transform_point3(Vec3::from(p))).collect();
+        let positions: Vec<Vec3> = reader
+            .read_positions()
+            .ok_or("POSITION cannot be read")?
+            .map(|p| world.transform_point3(Vec3::from(p)))
+            .collect();
         let normals: Option<Vec<Vec3>> = match prim.get(&gltf::Semantic::Normals) {
             Some(acc) => {
                 check_accessor(&acc, "NORMAL", Dimensions::Vec3, &[DataType::F32], &self.buffers)?;
@@ -312,13 +401,25 @@ impl Builder {
                     return Err(format!("{} normals for {} positions", acc.count(), pos.count()));
                 }
                 let m = Mat3::from_mat4(world).inverse().transpose();
-                Some(reader.read_normals().ok_or("NORMAL cannot be read")?.map(|n| (m * Vec3::from(n)).normalize_or_zero()).collect())
+                Some(
+                    reader
+                        .read_normals()
+                        .ok_or("NORMAL cannot be read")?
+                        .map(|n| (m * Vec3::from(n)).normalize_or_zero())
+                        .collect(),
+                )
             }
             None => None,
         };
         let indices: Vec<u32> = match prim.indices() {
             Some(acc) => {
-                check_accessor(&acc, "index", Dimensions::Scalar, &[DataType::U8, DataType::U16, DataType::U32], &self.buffers)?;
+                check_accessor(
+                    &acc,
+                    "index",
+                    Dimensions::Scalar,
+                    &[DataType::U8, DataType::U16, DataType::U32],
+                    &self.buffers,
+                )?;
                 reader.read_indices().ok_or("indices cannot be read")?.into_u32().collect()
             }
             None => (0..positions.len() as u32).collect(),
@@ -329,9 +430,11 @@ impl Builder {
         let corners: Vec<[u32; 3]> = match mode {
             Mode::Triangles => indices.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect(),
             // Strips alternate their winding so every triangle faces the same way.
-            Mode::TriangleStrip => {
-                indices.windows(3).enumerate().map(|(k, w)| if k % 2 == 0 { [w[0], w[1], w[2]] } else { [w[1], w[0], w[2]] }).collect()
-            }
+            Mode::TriangleStrip => indices
+                .windows(3)
+                .enumerate()
+                .map(|(k, w)| if k % 2 == 0 { [w[0], w[1], w[2]] } else { [w[1], w[0], w[2]] })
+                .collect(),
             _ => indices.windows(2).skip(1).map(|w| [indices[0], w[0], w[1]]).collect(),
         };
         let material = prim.material().index().map_or(default_material, |i| i as u32);
@@ -373,14 +476,27 @@ fn material(m: &gltf::Material) -> Result<(Material, Vec<String>), String> {
     let mut f90 = 1.0;
     if let Some(s) = m.specular() {
         let (factor, colour) = (s.specular_factor(), Vec3::from(s.specular_color_factor()));
-        if !(factor.is_finite() && (0.0..=1.0).contains(&factor) && colour.is_finite() && colour.min_element() >= 0.0) {
-            return Err(format!("KHR_materials_specular factor {factor} must be in [0, 1] and colour {colour} finite and >= 0"));
+        if !(factor.is_finite()
+            && (0.0..=1.0).contains(&factor)
+            && colour.is_finite()
+            && colour.min_element() >= 0.0)
+        {
+            return Err(format!(
+                "KHR_materials_specular factor {factor} must be in [0, 1] and colour {colour} finite and >= 0"
+            ));
         }
         f0 = (f0 * colour).min(Vec3::ONE) * factor;
         f90 = factor;
     }
     let emission = Vec3::from(m.emissive_factor()) * m.emissive_strength().unwrap_or(1.0);
-    let mat = Material { albedo: base, emission, metallic: pbr.metallic_factor(), roughness: pbr.roughness_factor(), f0, f90 };
+    let mat = Material {
+        albedo: base,
+        emission,
+        metallic: pbr.metallic_factor(),
+        roughness: pbr.roughness_factor(),
+        f0,
+        f90,
+    };
     mat.validate(m.index().unwrap_or(0)).map_err(|e| e.to_string())?;
     let mut features = Vec::new();
     let mut flag = |on: bool, what: &str| {
@@ -396,7 +512,12 @@ fn material(m: &gltf::Material) -> Result<(Material, Vec<String>), String> {
     flag(m.alpha_mode() != gltf::material::AlphaMode::Opaque, "alphaMode");
     flag(m.transmission().is_some(), "KHR_materials_transmission");
     flag(m.volume().is_some(), "KHR_materials_volume");
-    flag(m.specular().is_some_and(|s| s.specular_texture().is_some() || s.specular_color_texture().is_some()), "specular textures");
+    flag(
+        m.specular().is_some_and(|s| {
+            s.specular_texture().is_some() || s.specular_color_texture().is_some()
+        }),
+        "specular textures",
+    );
     if let Some(ext) = m.extensions() {
         for k in ext.keys() {
             if !matches!(
@@ -438,7 +559,9 @@ mod tests {
             while !self.bin.len().is_multiple_of(4) {
                 self.bin.push(0);
             }
-            self.views.push(json!({ "buffer": 0, "byteOffset": self.bin.len(), "byteLength": bytes.len() }));
+            self.views.push(
+                json!({ "buffer": 0, "byteOffset": self.bin.len(), "byteLength": bytes.len() }),
+            );
             self.bin.extend_from_slice(bytes);
             self.accessors.push(json!({ "bufferView": self.views.len() - 1, "count": count, "type": ty, "componentType": component }));
             self.accessors.len() - 1
@@ -447,8 +570,9 @@ mod tests {
         fn vec3s(&mut self, v: &[[f32; 3]]) -> usize {
             let bytes: Vec<u8> = v.iter().flatten().flat_map(|x| x.to_le_bytes()).collect();
             let a = self.accessor(&bytes, v.len(), "VEC3", 5126);
-            let (lo, hi) =
-                v.iter().fold(([f32::MAX; 3], [f32::MIN; 3]), |(lo, hi), p| ([0, 1, 2].map(|k| lo[k].min(p[k])), [0, 1, 2].map(|k| hi[k].max(p[k]))));
+            let (lo, hi) = v.iter().fold(([f32::MAX; 3], [f32::MIN; 3]), |(lo, hi), p| {
+                ([0, 1, 2].map(|k| lo[k].min(p[k])), [0, 1, 2].map(|k| hi[k].max(p[k])))
+            });
             self.accessors[a]["min"] = json!(lo);
             self.accessors[a]["max"] = json!(hi);
             a
@@ -460,7 +584,10 @@ mod tests {
         /// The whole document as glTF JSON with the buffer as a data URI;
         /// `rest` holds meshes, materials, nodes, scenes, ...
         fn json(&self, mut rest: Value) -> Vec<u8> {
-            let uri = format!("data:application/octet-stream;base64,{}", base64::engine::general_purpose::STANDARD.encode(&self.bin));
+            let uri = format!(
+                "data:application/octet-stream;base64,{}",
+                base64::engine::general_purpose::STANDARD.encode(&self.bin)
+            );
             let o = rest.as_object_mut().unwrap();
             o.insert("asset".into(), json!({ "version": "2.0" }));
             o.insert("buffers".into(), json!([{ "byteLength": self.bin.len(), "uri": uri }]));
@@ -503,7 +630,8 @@ mod tests {
     /// and a directional light.
     fn room() -> (Doc, Value) {
         let mut d = Doc::new();
-        let quad = d.vec3s(&[[-1.0, 0.0, -1.0], [1.0, 0.0, -1.0], [1.0, 0.0, 1.0], [-1.0, 0.0, 1.0]]);
+        let quad =
+            d.vec3s(&[[-1.0, 0.0, -1.0], [1.0, 0.0, -1.0], [1.0, 0.0, 1.0], [-1.0, 0.0, 1.0]]);
         let up = d.vec3s(&[[0.0, 1.0, 0.0]; 4]);
         let idx = d.u16s(&[0, 2, 1, 0, 3, 2]);
         let tri = d.vec3s(&[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]);
@@ -553,30 +681,48 @@ mod tests {
             assert_eq!(s.triangles.len(), 3);
             // The quad's winding (0, 2, 1) faces +y; the emitter is scaled by ½ and raised by 2.
             assert!(s.geometric_normal(0).abs_diff_eq(Vec3::Y, 1e-6));
-            assert_eq!(s.triangles[2], [Vec3::new(0.0, 2.0, 0.0), Vec3::new(0.5, 2.0, 0.0), Vec3::new(0.0, 2.0, 0.5)]);
+            assert_eq!(
+                s.triangles[2],
+                [Vec3::new(0.0, 2.0, 0.0), Vec3::new(0.5, 2.0, 0.0), Vec3::new(0.0, 2.0, 0.5)]
+            );
             // Vertex normals where given, geometric ones for the emitter.
             assert_eq!(s.normals[0], [Vec3::Y; 3]);
             assert_eq!(s.normals[2], [s.geometric_normal(2); 3]);
             let gold = s.materials[s.material_of[0] as usize];
-            assert_eq!((gold.albedo, gold.metallic, gold.roughness, gold.f90), (Vec3::new(1.0, 0.8, 0.3), 1.0, 0.3, 1.0));
+            assert_eq!(
+                (gold.albedo, gold.metallic, gold.roughness, gold.f90),
+                (Vec3::new(1.0, 0.8, 0.3), 1.0, 0.3, 1.0)
+            );
             assert!((gold.f0.x - (0.8f32 / 2.8).powi(2)).abs() < 1e-6);
             let lamp = s.materials[s.material_of[2] as usize];
             assert_eq!(lamp.emission, Vec3::new(4.0, 2.0, 1.0));
             assert_eq!((lamp.metallic, lamp.roughness, lamp.albedo), (0.0, 1.0, Vec3::ONE));
             assert_eq!(s.camera.position, Vec3::new(0.0, 1.0, 5.0));
-            assert!((s.camera.target - Vec3::new(0.0, 1.0, 4.0)).length() < 1e-6 && (s.camera.vfov_deg - 0.7f32.to_degrees()).abs() < 1e-4);
+            assert!(
+                (s.camera.target - Vec3::new(0.0, 1.0, 4.0)).length() < 1e-6
+                    && (s.camera.vfov_deg - 0.7f32.to_degrees()).abs() < 1e-4
+            );
             // The point light at the group's origin, the spot turned to look down.
             assert_eq!(g.lights.len(), 2);
             let Light::Point(p) = &g.lights[0] else { panic!("{:?}", g.lights[0]) };
-            assert_eq!((p.position(), g.lights[0].peak()), (Vec3::new(0.0, 3.0, 0.0), Vec3::new(10.0, 5.0, 5.0)));
+            assert_eq!(
+                (p.position(), g.lights[0].peak()),
+                (Vec3::new(0.0, 3.0, 0.0), Vec3::new(10.0, 5.0, 5.0))
+            );
             let Light::Spot(sp) = &g.lights[1] else { panic!("{:?}", g.lights[1]) };
             assert!(sp.direction().abs_diff_eq(-Vec3::Y, 1e-6), "{}", sp.direction());
             match s.primary {
-                PrimaryLight::Spot { position, outer, .. } => assert!(position == Vec3::new(0.0, 3.0, 0.0) && outer == 0.6),
+                PrimaryLight::Spot { position, outer, .. } => {
+                    assert!(position == Vec3::new(0.0, 3.0, 0.0) && outer == 0.6)
+                }
                 other => panic!("{other:?}"),
             }
             // The directional light is reported, not dropped silently.
-            assert!(s.unsupported.iter().any(|u| u.features.iter().any(|f| f.contains("directional"))), "{:?}", s.unsupported);
+            assert!(
+                s.unsupported.iter().any(|u| u.features.iter().any(|f| f.contains("directional"))),
+                "{:?}",
+                s.unsupported
+            );
         }
     }
 
@@ -589,7 +735,8 @@ mod tests {
         rest["textures"] = json!([{ "source": 0 }]);
         rest["images"] = json!([{ "uri": "wood.png" }]);
         let s = parse(&d.json(rest)).unwrap().scene;
-        let by = |m: &str| s.unsupported.iter().find(|u| u.material == m).map(|u| u.features.clone());
+        let by =
+            |m: &str| s.unsupported.iter().find(|u| u.material == m).map(|u| u.features.clone());
         assert_eq!(by("gold"), Some(vec!["baseColorTexture".to_string()]));
         assert_eq!(by("primitives"), Some(vec!["COLOR_0".to_string()]));
     }

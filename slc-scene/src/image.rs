@@ -25,22 +25,35 @@ impl Image {
 
     /// Root-mean-square error over all pixels and channels.
     pub fn rmse(&self, reference: &Image) -> f64 {
-        assert_eq!((self.width, self.height), (reference.width, reference.height), "image sizes differ");
+        assert_eq!(
+            (self.width, self.height),
+            (reference.width, reference.height),
+            "image sizes differ"
+        );
         let n = self.data.len() as f64 * 3.0;
-        let sum: f64 = self.data.iter().zip(&reference.data).map(|(a, b)| (*a - *b).as_dvec3().length_squared()).sum();
+        let sum: f64 = self
+            .data
+            .iter()
+            .zip(&reference.data)
+            .map(|(a, b)| (*a - *b).as_dvec3().length_squared())
+            .sum();
         (sum / n).sqrt()
     }
 
     /// Mean over pixels and channels.
     pub fn mean(&self) -> f64 {
-        self.data.iter().map(|p| (p.x + p.y + p.z) as f64).sum::<f64>() / (3.0 * self.data.len() as f64)
+        self.data.iter().map(|p| (p.x + p.y + p.z) as f64).sum::<f64>()
+            / (3.0 * self.data.len() as f64)
     }
 
     /// Mean of each channel (`[r, g, b]`) over all pixels: what a test
     /// compares, so an error in one channel is not diluted by the others.
     pub fn channel_means(&self) -> [f64; 3] {
         let n = self.data.len().max(1) as f64;
-        let s = self.data.iter().fold([0.0f64; 3], |a, p| [a[0] + p.x as f64, a[1] + p.y as f64, a[2] + p.z as f64]);
+        let s = self
+            .data
+            .iter()
+            .fold([0.0f64; 3], |a, p| [a[0] + p.x as f64, a[1] + p.y as f64, a[2] + p.z as f64]);
         s.map(|c| c / n)
     }
 
@@ -66,7 +79,9 @@ impl Image {
         let img = exr::prelude::read_first_rgba_layer_from_file(
             path,
             |res, _| Image::new(res.width() as u32, res.height() as u32),
-            |img: &mut Image, pos: exr::prelude::Vec2<usize>, (r, g, b, _a): (f32, f32, f32, f32)| {
+            |img: &mut Image,
+             pos: exr::prelude::Vec2<usize>,
+             (r, g, b, _a): (f32, f32, f32, f32)| {
                 let w = img.width as usize;
                 img.data[pos.y() * w + pos.x()] = Vec3::new(r, g, b);
             },
@@ -86,7 +101,12 @@ impl Image {
 
 #[cfg(feature = "io")]
 /// Writes 8-bit RGB bytes (`width × height × 3`, row-major) as a PNG.
-pub fn write_rgb8_png(path: &Path, width: u32, height: u32, bytes: &[u8]) -> Result<(), OutputError> {
+pub fn write_rgb8_png(
+    path: &Path,
+    width: u32,
+    height: u32,
+    bytes: &[u8],
+) -> Result<(), OutputError> {
     let err = |e: String| OutputError(path.display().to_string(), e);
     let file = std::fs::File::create(path).map_err(|e| err(e.to_string()))?;
     let mut enc = png::Encoder::new(std::io::BufWriter::new(file), width, height);

@@ -88,7 +88,9 @@ pub enum RenderError {
     #[error("image size {0}x{1} must be within 1..=16384 on each side")]
     Size(u32, u32),
     /// VPL count that is not the square of a multiple of 8.
-    #[error("{0} VPLs: the count must be s*s for s a multiple of 8 up to 4096 (e.g. 4096, 16384, 65536, 262144)")]
+    #[error(
+        "{0} VPLs: the count must be s*s for s a multiple of 8 up to 4096 (e.g. 4096, 16384, 65536, 262144)"
+    )]
     VplCount(u64),
     /// Another bad setting.
     #[error("invalid setting: {0}")]
@@ -102,5 +104,9 @@ pub struct OutputError(pub String, pub String);
 
 /// Checks an image size: `1..=16384` on each side.
 pub fn check_size(width: u32, height: u32) -> Result<(), RenderError> {
-    if (1..=16384).contains(&width) && (1..=16384).contains(&height) { Ok(()) } else { Err(RenderError::Size(width, height)) }
+    if (1..=16384).contains(&width) && (1..=16384).contains(&height) {
+        Ok(())
+    } else {
+        Err(RenderError::Size(width, height))
+    }
 }

@@ -96,7 +96,14 @@ impl LightBounds {
             return *self;
         }
         let (w, cos_o) = cone_union(self.w, self.cos_o, o.w, o.cos_o);
-        LightBounds { min: self.min.min(o.min), max: self.max.max(o.max), phi: self.phi + o.phi, w, cos_o, cos_e: self.cos_e.min(o.cos_e) }
+        LightBounds {
+            min: self.min.min(o.min),
+            max: self.max.max(o.max),
+            phi: self.phi + o.phi,
+            w,
+            cos_o,
+            cos_e: self.cos_e.min(o.cos_e),
+        }
     }
 
     /// pbrt-v4's `EvaluateCost`: `φ · M_Ω · K_r · area`, with the
@@ -107,8 +114,10 @@ impl LightBounds {
         let theta_e = self.cos_e.clamp(-1.0, 1.0).acos();
         let theta_w = (theta_o + theta_e).min(PI);
         let sin_o = safe_sqrt(1.0 - self.cos_o * self.cos_o);
-        let m_omega =
-            2.0 * PI * (1.0 - self.cos_o) + PI / 2.0 * (2.0 * theta_w * sin_o - (theta_o - 2.0 * theta_w).cos() - 2.0 * theta_o * sin_o + self.cos_o);
+        let m_omega = 2.0 * PI * (1.0 - self.cos_o)
+            + PI / 2.0
+                * (2.0 * theta_w * sin_o - (theta_o - 2.0 * theta_w).cos() - 2.0 * theta_o * sin_o
+                    + self.cos_o);
         let kr = parent_diag.max_element() / parent_diag[dim].max(f32::MIN_POSITIVE);
         let d = self.max - self.min;
         let area = 2.0 * (d.x * d.y + d.y * d.z + d.z * d.x);
@@ -122,7 +131,9 @@ impl LightBounds {
 /// sphere) instead of its emitted power.
 pub fn bvh_cone(l: &Light, c: &LightCone) -> LightCone {
     match l {
-        Light::Spot(s) => LightCone { phi: 4.0 * PI * l.intensity(s.direction()).max_element(), ..*c },
+        Light::Spot(s) => {
+            LightCone { phi: 4.0 * PI * l.intensity(s.direction()).max_element(), ..*c }
+        }
         _ => *c,
     }
 }
@@ -168,8 +179,13 @@ impl LightBvh {
     /// are never sampled and their pmf is 0); with none left the tree is
     /// empty.
     pub fn new(lights: &[Light], cones: &[LightCone]) -> LightBvh {
-        let mut items: Vec<(u32, LightBounds)> =
-            lights.iter().zip(cones).enumerate().map(|(i, (l, c))| (i as u32, LightBounds::of_light(l, c))).filter(|(_, b)| b.phi > 0.0).collect();
+        let mut items: Vec<(u32, LightBounds)> = lights
+            .iter()
+            .zip(cones)
+            .enumerate()
+            .map(|(i, (l, c))| (i as u32, LightBounds::of_light(l, c)))
+            .filter(|(_, b)| b.phi > 0.0)
+            .collect();
         let mut nodes: Vec<GpuLightBvhNode> = Vec::with_capacity(2 * items.len());
         let mut leaf_of_light = vec![LIGHT_BVH_LEAF; lights.len()];
         // (start, end, parent node, whether this is the parent's second child)
@@ -187,7 +203,11 @@ impl LightBvh {
             if set.len() == 1 {
                 let light = set[0].0;
                 leaf_of_light[light as usize] = me;
-                nodes.push(GpuLightBvhNode::new(&bvh_cone(&lights[light as usize], &cones[light as usize]), LIGHT_BVH_LEAF, light));
+                nodes.push(GpuLightBvhNode::new(
+                    &bvh_cone(&lights[light as usize], &cones[light as usize]),
+                    LIGHT_BVH_LEAF,
+                    light,
+                ));
                 continue;
             }
             let mid = start + split(set, &bounds);
@@ -220,14 +240,18 @@ impl LightBvh {
     /// Probability that [`LightBvh::sample`] for `rc` picks `light`
     /// ([`light_bvh_pmf`]).
     pub fn pmf(&self, rc: &Receiver, light: usize) -> f32 {
-        self.leaf_of_light.get(light).map_or(0.0, |&leaf| light_bvh_pmf(&self.nodes, leaf, rc.p, rc.n, rc.r, rc.lobe))
+        self.leaf_of_light
+            .get(light)
+            .map_or(0.0, |&leaf| light_bvh_pmf(&self.nodes, leaf, rc.p, rc.n, rc.r, rc.lobe))
     }
 }
 
 /// Reorders `set` and returns the split index (in `1..len`): the cheapest
 /// bucket boundary over the three axes, or the middle when no axis splits.
 fn split(set: &mut [(u32, LightBounds)], bounds: &LightBounds) -> usize {
-    let (cmin, cmax) = set.iter().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), (_, b)| (lo.min(b.centroid()), hi.max(b.centroid())));
+    let (cmin, cmax) = set.iter().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), (_, b)| {
+        (lo.min(b.centroid()), hi.max(b.centroid()))
+    });
     let diag = bounds.max - bounds.min;
     let bucket = |c: Vec3, dim: usize| -> usize {
         let t = (c[dim] - cmin[dim]) / (cmax[dim] - cmin[dim]);
@@ -243,7 +267,11 @@ fn split(set: &mut [(u32, LightBounds)], bounds: &LightBounds) -> usize {
             let k = bucket(lb.centroid(), dim);
             b[k] = Some(b[k].map_or(*lb, |x| x.union(lb)));
         }
-        let join = |r: &[Option<LightBounds>]| r.iter().flatten().fold(None, |acc: Option<LightBounds>, x| Some(acc.map_or(*x, |a| a.union(x))));
+        let join = |r: &[Option<LightBounds>]| {
+            r.iter()
+                .flatten()
+                .fold(None, |acc: Option<LightBounds>, x| Some(acc.map_or(*x, |a| a.union(x))))
+        };
         for i in 0..BUCKETS - 1 {
             let (Some(lo), Some(hi)) = (join(&b[..=i]), join(&b[i + 1..])) else { continue };
             let cost = lo.cost(diag, dim) + hi.cost(diag, dim);
@@ -282,13 +310,22 @@ mod tests {
         };
         for _ in 0..200 {
             let a = Vec3::new(r(), r(), r()) * 4.0;
-            let t = TriangleLight::new(a, a + Vec3::new(r(), r(), 0.1) * 0.3, a + Vec3::new(0.1, r(), r()) * 0.3, Vec3::splat(1.0 + 5.0 * r()));
+            let t = TriangleLight::new(
+                a,
+                a + Vec3::new(r(), r(), 0.1) * 0.3,
+                a + Vec3::new(0.1, r(), r()) * 0.3,
+                Vec3::splat(1.0 + 5.0 * r()),
+            );
             v.push(Light::Triangle(t.unwrap()));
         }
         for _ in 0..20 {
-            v.push(Light::Point(PointLight::new(Vec3::new(r(), r(), r()) * 4.0, Vec3::splat(r())).unwrap()));
+            v.push(Light::Point(
+                PointLight::new(Vec3::new(r(), r(), r()) * 4.0, Vec3::splat(r())).unwrap(),
+            ));
         }
-        v.push(Light::Spot(SpotLight::new(Vec3::splat(2.0), Vec3::NEG_Y, Vec3::ONE, 0.3, 0.6).unwrap()));
+        v.push(Light::Spot(
+            SpotLight::new(Vec3::splat(2.0), Vec3::NEG_Y, Vec3::ONE, 0.3, 0.6).unwrap(),
+        ));
         v
     }
 
@@ -325,7 +362,11 @@ mod tests {
                     failed += 1;
                     continue;
                 };
-                assert!((pmf - pmfs[l]).abs() <= 1e-5 * pmfs[l].max(1e-3), "sample pmf {pmf} vs pmf() {}", pmfs[l]);
+                assert!(
+                    (pmf - pmfs[l]).abs() <= 1e-5 * pmfs[l].max(1e-3),
+                    "sample pmf {pmf} vs pmf() {}",
+                    pmfs[l]
+                );
                 count[l] += 1;
             }
             let tol = 2.0 * 64.0 / m as f32 + 1e-4;
@@ -334,12 +375,17 @@ mod tests {
                 assert!((f - pmfs[l]).abs() < tol, "light {l}: {f} vs {}", pmfs[l]);
                 let (c, d2) = ls[l].contribution_at(p);
                 let w = (ls[l].bound().center - p).normalize();
-                let reaches = c.max_element() > 0.0 && d2 > 0.0 && (n == Vec3::ZERO || n.dot(w) > 0.0);
+                let reaches =
+                    c.max_element() > 0.0 && d2 > 0.0 && (n == Vec3::ZERO || n.dot(w) > 0.0);
                 if reaches {
                     assert!(pmfs[l] > 0.0, "light {l} reaches {p} but has pmf 0");
                 }
             }
-            assert!((failed as f64 / m as f64 - (1.0 - total)).abs() < 1e-3, "failed {failed} vs 1 − Σ = {}", 1.0 - total);
+            assert!(
+                (failed as f64 / m as f64 - (1.0 - total)).abs() < 1e-3,
+                "failed {failed} vs 1 − Σ = {}",
+                1.0 - total
+            );
         }
     }
 
@@ -348,12 +394,21 @@ mod tests {
         let t = |z: f32, up: bool| {
             let (b, c) = if up { (Vec3::X, Vec3::Y) } else { (Vec3::Y, Vec3::X) };
             let l = Light::Triangle(
-                TriangleLight::new(Vec3::new(0.0, 0.0, z), Vec3::new(0.0, 0.0, z) + b * 0.1, Vec3::new(0.0, 0.0, z) + c * 0.1, Vec3::ONE).unwrap(),
+                TriangleLight::new(
+                    Vec3::new(0.0, 0.0, z),
+                    Vec3::new(0.0, 0.0, z) + b * 0.1,
+                    Vec3::new(0.0, 0.0, z) + c * 0.1,
+                    Vec3::ONE,
+                )
+                .unwrap(),
             );
             LightBounds::of_light(&l, &LightCone::of_light(&l, l.power()))
         };
         let p = Vec3::new(0.05, 0.05, 5.0);
-        assert!(t(1.0, true).cone().importance(p, Vec3::NEG_Z) < t(4.0, true).cone().importance(p, Vec3::NEG_Z));
+        assert!(
+            t(1.0, true).cone().importance(p, Vec3::NEG_Z)
+                < t(4.0, true).cone().importance(p, Vec3::NEG_Z)
+        );
         // Facing away (normal −z, p above): zero importance.
         assert_eq!(t(1.0, false).cone().importance(p, Vec3::NEG_Z), 0.0);
     }
@@ -366,7 +421,9 @@ mod tests {
     #[test]
     fn spot_weighs_as_a_point_light_of_its_peak_intensity_in_its_beam() {
         let ls = vec![
-            Light::Spot(SpotLight::new(Vec3::new(0.0, 2.0, 0.0), Vec3::NEG_Y, Vec3::ONE, 0.2, 0.3).unwrap()),
+            Light::Spot(
+                SpotLight::new(Vec3::new(0.0, 2.0, 0.0), Vec3::NEG_Y, Vec3::ONE, 0.2, 0.3).unwrap(),
+            ),
             Light::Point(PointLight::new(Vec3::new(0.0, -2.0, 0.0), Vec3::ONE).unwrap()),
         ];
         let bvh = LightBvh::new(&ls, &cones(&ls));
@@ -386,10 +443,15 @@ mod tests {
     #[test]
     fn degenerate_sets_build_balanced_trees() {
         // 4,096 coincident point lights: no axis splits, so halves.
-        let ls: Vec<Light> = (0..4096).map(|_| Light::Point(PointLight::new(Vec3::ONE, Vec3::ONE).unwrap())).collect();
+        let ls: Vec<Light> = (0..4096)
+            .map(|_| Light::Point(PointLight::new(Vec3::ONE, Vec3::ONE).unwrap()))
+            .collect();
         let bvh = LightBvh::new(&ls, &cones(&ls));
-        let total: f32 = (0..ls.len()).map(|l| bvh.pmf(&Receiver::lambertian(Vec3::ZERO, Vec3::ZERO), l)).sum();
+        let total: f32 =
+            (0..ls.len()).map(|l| bvh.pmf(&Receiver::lambertian(Vec3::ZERO, Vec3::ZERO), l)).sum();
         assert!((total - 1.0).abs() < 1e-3);
-        assert!((bvh.pmf(&Receiver::lambertian(Vec3::ZERO, Vec3::ZERO), 7) - 1.0 / 4096.0).abs() < 1e-7);
+        assert!(
+            (bvh.pmf(&Receiver::lambertian(Vec3::ZERO, Vec3::ZERO), 7) - 1.0 / 4096.0).abs() < 1e-7
+        );
     }
 }

@@ -154,9 +154,14 @@ impl LightCloudDef {
             (Some(file), true) => {
                 let p = dir.join(file);
                 let bytes = std::fs::read(&p).map_err(|e| format!("ies: {}: {e}", p.display()))?;
-                Some(Arc::new(IesProfile::parse_bytes(&bytes).map_err(|e| format!("ies: {}: {e}", p.display()))?))
+                Some(Arc::new(
+                    IesProfile::parse_bytes(&bytes)
+                        .map_err(|e| format!("ies: {}: {e}", p.display()))?,
+                ))
             }
-            (None, true) => return Err("types holds \"ies\": give the profile as `ies = \"file.ies\"`".into()),
+            (None, true) => {
+                return Err("types holds \"ies\": give the profile as `ies = \"file.ies\"`".into());
+            }
             (Some(_), false) => return Err("`ies` is given but types holds no \"ies\"".into()),
             (None, false) => None,
         };
@@ -164,10 +169,13 @@ impl LightCloudDef {
         if !(peak.is_finite() && peak > 0.0) {
             return Err(format!("ies: the profile's peak candela {peak} must be finite and > 0"));
         }
-        let surfaces = if self.placement == Placement::Surface { Some(Surfaces::new(scene)?) } else { None };
+        let surfaces =
+            if self.placement == Placement::Surface { Some(Surfaces::new(scene)?) } else { None };
         let (lo, hi) = scene.bounds();
         if !(lo.is_finite() && hi.is_finite()) {
-            return Err("the scene has no geometry to place the lights in (list [[geometry]] first)".into());
+            return Err(
+                "the scene has no geometry to place the lights in (list [[geometry]] first)".into(),
+            );
         }
         let inset = (hi - lo) * self.margin;
         let (lo, hi) = (lo + inset, hi - inset);
@@ -190,7 +198,8 @@ impl LightCloudDef {
                     (p + n * self.offset, n)
                 }
                 (Placement::Clusters, _) => {
-                    let c = centres[((s.uniform() * self.clusters as f32) as usize).min(centres.len() - 1)];
+                    let c = centres
+                        [((s.uniform() * self.clusters as f32) as usize).min(centres.len() - 1)];
                     let offset = Vec3::new(s.normal(), s.normal(), s.normal()) * sigma_cluster;
                     ((c + offset).clamp(lo, hi), Vec3::Y)
                 }
@@ -216,11 +225,17 @@ impl LightCloudDef {
             let err = |e: slc_core::LightError| format!("light {i}: {e}");
             lights.push(match kind {
                 Kind::Point => Light::Point(PointLight::new(position, intensity).map_err(err)?),
-                Kind::Spot => Light::Spot(SpotLight::new(position, aim, intensity, 0.0, self.outer.to_radians()).map_err(err)?),
+                Kind::Spot => Light::Spot(
+                    SpotLight::new(position, aim, intensity, 0.0, self.outer.to_radians())
+                        .map_err(err)?,
+                ),
                 Kind::Ies => {
                     let profile = profile.clone().ok_or("types holds \"ies\" without a profile")?;
                     let reference = aim.any_orthonormal_vector();
-                    Light::Ies(IesLight::new(position, aim, reference, intensity / peak, profile).map_err(err)?)
+                    Light::Ies(
+                        IesLight::new(position, aim, reference, intensity / peak, profile)
+                            .map_err(err)?,
+                    )
                 }
             });
         }
@@ -269,7 +284,10 @@ impl LightCloudDef {
             return Err(format!("clusters {} must be in 1..={MAX_CLOUD}", self.clusters));
         }
         if matches!(self.aim, Aim::Away | Aim::Toward) && self.placement != Placement::Surface {
-            return Err("aim \"away\" and \"toward\" need placement = \"surface\" (a surface to face)".into());
+            return Err(
+                "aim \"away\" and \"toward\" need placement = \"surface\" (a surface to face)"
+                    .into(),
+            );
         }
         Ok(())
     }
@@ -283,8 +301,11 @@ mod tests {
     use std::path::Path;
 
     fn cloud(keys: &str) -> Result<SceneFile, String> {
-        let text = format!("[[geometry]]\nbuiltin = \"cornell\"\nemission_scale = 0.0\n[[light_cloud]]\n{keys}\n");
-        SceneFile::parse(&text, Path::new(env!("CARGO_MANIFEST_DIR")), "t.toml").map_err(|e| e.to_string())
+        let text = format!(
+            "[[geometry]]\nbuiltin = \"cornell\"\nemission_scale = 0.0\n[[light_cloud]]\n{keys}\n"
+        );
+        SceneFile::parse(&text, Path::new(env!("CARGO_MANIFEST_DIR")), "t.toml")
+            .map_err(|e| e.to_string())
     }
 
     fn intensity(l: &Light) -> f32 {
@@ -297,18 +318,24 @@ mod tests {
     /// places the same lights, another seed others.
     #[test]
     fn volume_lights_are_inside_and_deterministic() {
-        let f = cloud("count = 3000\nplacement = \"volume\"\nintensity = [1, 1, 1]\nseed = 7").unwrap();
+        let f =
+            cloud("count = 3000\nplacement = \"volume\"\nintensity = [1, 1, 1]\nseed = 7").unwrap();
         assert_eq!(f.lights.len(), 3000);
         let (lo, hi) = f.scene.bounds();
         let inset = (hi - lo) * 0.05;
         for l in &f.lights {
             let Light::Point(p) = l else { panic!("a point light expected") };
             let q = p.position();
-            assert!(q.cmpge(lo + inset - 1e-5).all() && q.cmple(hi - inset + 1e-5).all(), "{q} outside");
+            assert!(
+                q.cmpge(lo + inset - 1e-5).all() && q.cmple(hi - inset + 1e-5).all(),
+                "{q} outside"
+            );
         }
-        let again = cloud("count = 3000\nplacement = \"volume\"\nintensity = [1, 1, 1]\nseed = 7").unwrap();
+        let again =
+            cloud("count = 3000\nplacement = \"volume\"\nintensity = [1, 1, 1]\nseed = 7").unwrap();
         assert_eq!(format!("{:?}", f.lights), format!("{:?}", again.lights));
-        let other = cloud("count = 3000\nplacement = \"volume\"\nintensity = [1, 1, 1]\nseed = 8").unwrap();
+        let other =
+            cloud("count = 3000\nplacement = \"volume\"\nintensity = [1, 1, 1]\nseed = 8").unwrap();
         assert_ne!(format!("{:?}", f.lights), format!("{:?}", other.lights));
     }
 
@@ -341,12 +368,18 @@ mod tests {
             // Straight along the spot's axis the surface is 5 cm away.
             let hit = f.scene.triangles.iter().any(|t| {
                 let n = (t[1] - t[0]).cross(t[2] - t[0]).normalize_or_zero();
-                (s.position() - t[0]).dot(n).abs() > 0.049 && (s.position() - t[0]).dot(n).abs() < 0.051 && n.dot(s.direction()).abs() > 0.999
+                (s.position() - t[0]).dot(n).abs() > 0.049
+                    && (s.position() - t[0]).dot(n).abs() < 0.051
+                    && n.dot(s.direction()).abs() > 0.999
             });
             assert!(hit, "spot at {} aims at no surface 5 cm away", s.position());
         }
         let f = cloud("count = 2000\nplacement = \"clusters\"\nclusters = 3\nspread = 0.01\nintensity = [1, 1, 1]").unwrap();
-        let positions: Vec<Vec3> = f.lights.iter().map(|l| if let Light::Point(p) = l { p.position() } else { panic!() }).collect();
+        let positions: Vec<Vec3> = f
+            .lights
+            .iter()
+            .map(|l| if let Light::Point(p) = l { p.position() } else { panic!() })
+            .collect();
         // Three tight fixtures: every light is within 5σ of one of three
         // lights' positions (the first light of each cluster seen).
         let diag = f.scene.diagonal() * 0.9;
@@ -375,9 +408,15 @@ mod tests {
         for (keys, word) in [
             ("count = 0\nplacement = \"volume\"\nintensity = [1, 1, 1]", "count"),
             ("count = 5\nplacement = \"volume\"\nintensity = [-1, 1, 1]", "intensity"),
-            ("count = 5\nplacement = \"volume\"\nintensity = [1, 1, 1]\ntypes = [\"laser\"]", "laser"),
+            (
+                "count = 5\nplacement = \"volume\"\nintensity = [1, 1, 1]\ntypes = [\"laser\"]",
+                "laser",
+            ),
             ("count = 5\nplacement = \"volume\"\nintensity = [1, 1, 1]\ntypes = [\"ies\"]", "ies"),
-            ("count = 5\nplacement = \"volume\"\nintensity = [1, 1, 1]\naim = \"toward\"", "placement"),
+            (
+                "count = 5\nplacement = \"volume\"\nintensity = [1, 1, 1]\naim = \"toward\"",
+                "placement",
+            ),
             ("count = 5\nplacement = \"volume\"\nintensity = [1, 1, 1]\nsigma = nan", "sigma"),
             ("count = 5\nplacement = \"volume\"\nintensity = [1, 1, 1]\nouter = 200", "outer"),
             ("count = 5\nplacement = \"moon\"\nintensity = [1, 1, 1]", "moon"),

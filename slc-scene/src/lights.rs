@@ -46,7 +46,8 @@ impl LightSet {
         let bounds: Vec<LightBound> = lights.iter().map(Light::bound).collect();
         let bsh = Bsh::build(&bounds).map_err(|e| RenderError::Setting(e.to_string()))?;
         let power = emitted_powers(&lights);
-        let alias = AliasTable::new(&power.iter().map(|p| p.max_element() as f64).collect::<Vec<f64>>());
+        let alias =
+            AliasTable::new(&power.iter().map(|p| p.max_element() as f64).collect::<Vec<f64>>());
         let cones = lights.iter().zip(&power).map(|(l, &p)| LightCone::of_light(l, p)).collect();
         Ok(LightSet { lights, bounds, bsh, power, alias, cones })
     }
@@ -98,7 +99,10 @@ impl LightSet {
     /// The alias table per light as the GPU reads it:
     /// `(keep probability, alias index as f32 bits, pmf, 0)`.
     pub fn power_table(&self) -> Vec<[f32; 4]> {
-        self.alias.entries().map(|(p, a, pdf)| [p as f32, f32::from_bits(a as u32), pdf as f32, 0.0]).collect()
+        self.alias
+            .entries()
+            .map(|(p, a, pdf)| [p as f32, f32::from_bits(a as u32), pdf as f32, 0.0])
+            .collect()
     }
 }
 
@@ -111,7 +115,8 @@ pub fn emissive_triangles(scene: &Scene) -> Result<(Vec<Light>, Vec<u32>), Rende
     for (i, t) in scene.triangles.iter().enumerate() {
         let e = scene.materials[scene.material_of[i] as usize].emission;
         if e.max_element() > 0.0 {
-            let l = TriangleLight::new(t[0], t[1], t[2], e).map_err(|err| RenderError::Setting(format!("emissive triangle {i}: {err}")))?;
+            let l = TriangleLight::new(t[0], t[1], t[2], e)
+                .map_err(|err| RenderError::Setting(format!("emissive triangle {i}: {err}")))?;
             light_of_triangle[i] = lights.len() as u32;
             lights.push(Light::Triangle(l));
         }
@@ -149,8 +154,12 @@ mod tests {
         let lights = vec![
             Light::Point(PointLight::new(Vec3::ZERO, Vec3::new(1.0, 2.0, 3.0)).unwrap()),
             Light::Spot(SpotLight::new(Vec3::ZERO, -Vec3::Y, Vec3::splat(2.0), 0.3, 0.7).unwrap()),
-            Light::Ies(IesLight::new(Vec3::ZERO, -Vec3::Y, Vec3::X, Vec3::splat(0.01), profile).unwrap()),
-            Light::Triangle(TriangleLight::new(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::splat(3.0)).unwrap()),
+            Light::Ies(
+                IesLight::new(Vec3::ZERO, -Vec3::Y, Vec3::X, Vec3::splat(0.01), profile).unwrap(),
+            ),
+            Light::Triangle(
+                TriangleLight::new(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::splat(3.0)).unwrap(),
+            ),
             Light::Vpl(Vpl::new(Vec3::ZERO, Vec3::Z, Vec3::splat(5.0)).unwrap()),
         ];
         let set = LightSet::new(lights.clone()).unwrap();
@@ -158,9 +167,15 @@ mod tests {
         for (i, l) in lights.iter().enumerate() {
             let exact = set.power()[i];
             let numeric = integrate(l, 400_000);
-            assert!((exact - numeric).abs().max_element() < 2e-3 * exact.max_element(), "light {i}: power {exact} vs ∫I = {numeric}");
+            assert!(
+                (exact - numeric).abs().max_element() < 2e-3 * exact.max_element(),
+                "light {i}: power {exact} vs ∫I = {numeric}"
+            );
             assert_eq!(exact, l.power());
-            assert!((set.alias().pdf(i) as f32 - exact.max_element() / total).abs() < 1e-6, "light {i} pmf");
+            assert!(
+                (set.alias().pdf(i) as f32 - exact.max_element() / total).abs() < 1e-6,
+                "light {i} pmf"
+            );
         }
     }
 }

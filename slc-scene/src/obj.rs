@@ -44,7 +44,11 @@ fn unsupported_features(m: &tobj::Material) -> Vec<String> {
             out.push(key.to_string());
         }
     }
-    let mut unknown: Vec<&String> = m.unknown_param.keys().filter(|k| !matches!(k.as_str(), "Tf" | "Ke" | "Pr" | "Pm")).collect();
+    let mut unknown: Vec<&String> = m
+        .unknown_param
+        .keys()
+        .filter(|k| !matches!(k.as_str(), "Tf" | "Ke" | "Pr" | "Pm"))
+        .collect();
     unknown.sort();
     out.extend(unknown.into_iter().cloned());
     out
@@ -71,7 +75,10 @@ pub fn mtl_material(m: &tobj::Material, name: &str) -> Result<Material, SceneErr
             None => Ok(None),
             Some(v) => match v.trim().parse::<f32>() {
                 Ok(x) if (0.0..=1.0).contains(&x) => Ok(Some(x)),
-                _ => Err(SceneError::Obj(name.to_string(), format!("material '{}': {key} '{v}' must be a number in [0, 1]", m.name))),
+                _ => Err(SceneError::Obj(
+                    name.to_string(),
+                    format!("material '{}': {key} '{v}' must be a number in [0, 1]", m.name),
+                )),
             },
         }
     };
@@ -80,14 +87,22 @@ pub fn mtl_material(m: &tobj::Material, name: &str) -> Result<Material, SceneErr
     let mut mat = if pr.is_some() || pm.is_some() {
         let f0 = match m.optical_density {
             Some(ni) if ni.is_finite() && ni >= 1.0 => ((ni - 1.0) / (ni + 1.0)).powi(2),
-            Some(ni) => return Err(SceneError::Obj(name.to_string(), format!("material '{}': Ni {ni} must be finite and >= 1", m.name))),
+            Some(ni) => {
+                return Err(SceneError::Obj(
+                    name.to_string(),
+                    format!("material '{}': Ni {ni} must be finite and >= 1", m.name),
+                ));
+            }
             None => 0.04,
         };
         Material { f0: Vec3::splat(f0), ..Material::gltf(kd, pm.unwrap_or(0.0), pr.unwrap_or(1.0)) }
     } else if ks.max_element() > 0.0 {
         let ns = m.shininess.unwrap_or(0.0);
         if !ns.is_finite() {
-            return Err(SceneError::Obj(name.to_string(), format!("material '{}': Ns {ns} must be finite", m.name)));
+            return Err(SceneError::Obj(
+                name.to_string(),
+                format!("material '{}': Ns {ns} must be finite", m.name),
+            ));
         }
         let alpha = (2.0 / (ns.max(0.0) + 2.0)).sqrt();
         Material { f0: ks, f90: ks.max_element(), ..Material::gltf(kd, 0.0, alpha.sqrt()) }
@@ -107,13 +122,18 @@ impl Scene {
     /// centroid along their mean normal (or, with no emitter, above the
     /// scene pointing down).
     pub fn load_obj(path: &Path) -> Result<Scene, SceneError> {
-        let text = std::fs::read(path).map_err(|e| SceneError::Io(path.display().to_string(), e.to_string()))?;
+        let text = std::fs::read(path)
+            .map_err(|e| SceneError::Io(path.display().to_string(), e.to_string()))?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         let name = path.display().to_string();
         Self::parse_obj(&text, &name, |p| {
             let direct = dir.join(p);
             let fallback = p.file_name().map(|f| dir.join(f));
-            let chosen = if direct.exists() { direct } else { fallback.filter(|f| f.exists()).unwrap_or(direct) };
+            let chosen = if direct.exists() {
+                direct
+            } else {
+                fallback.filter(|f| f.exists()).unwrap_or(direct)
+            };
             std::fs::read(&chosen).ok()
         })
     }
@@ -126,10 +146,19 @@ impl Scene {
     /// normals (normalised); a `vn` index out of range is an error; a
     /// zero-length or non-finite `vn`, or a face without normals in a mesh
     /// that has some, falls back to the face's geometric normal.
-    pub fn parse_obj(obj: &[u8], name: &str, mtl: impl Fn(&Path) -> Option<Vec<u8>>) -> Result<Scene, SceneError> {
+    pub fn parse_obj(
+        obj: &[u8],
+        name: &str,
+        mtl: impl Fn(&Path) -> Option<Vec<u8>>,
+    ) -> Result<Scene, SceneError> {
         let path = Path::new(name);
         let err = |what: String| SceneError::Obj(path.display().to_string(), what);
-        let opts = tobj::LoadOptions { triangulate: true, single_index: false, ignore_points: true, ignore_lines: true };
+        let opts = tobj::LoadOptions {
+            triangulate: true,
+            single_index: false,
+            ignore_points: true,
+            ignore_lines: true,
+        };
         let (models, mats) = tobj::load_obj_buf(&mut &obj[..], &opts, |p| match mtl(p) {
             Some(b) if short_colour_line(&b) => Err(tobj::LoadError::MaterialParseError),
             Some(b) => tobj::load_mtl_buf(&mut b.as_slice()),
@@ -137,15 +166,21 @@ impl Scene {
         })
         .map_err(|e| err(e.to_string()))?;
         let mats = mats.map_err(|e| err(format!("material library: {e}")))?;
-        let file = path.file_name().map_or_else(|| name.to_string(), |f| f.to_string_lossy().into_owned());
+        let file =
+            path.file_name().map_or_else(|| name.to_string(), |f| f.to_string_lossy().into_owned());
         let unsupported = mats
             .iter()
             .filter_map(|m| {
                 let features = unsupported_features(m);
-                (!features.is_empty()).then(|| Unsupported { source: file.clone(), material: m.name.clone(), features })
+                (!features.is_empty()).then(|| Unsupported {
+                    source: file.clone(),
+                    material: m.name.clone(),
+                    features,
+                })
             })
             .collect();
-        let mut materials: Vec<Material> = mats.iter().map(|m| mtl_material(m, name)).collect::<Result<_, _>>()?;
+        let mut materials: Vec<Material> =
+            mats.iter().map(|m| mtl_material(m, name)).collect::<Result<_, _>>()?;
         let default_mat = materials.len() as u32;
         materials.push(Material::lambertian(Vec3::splat(0.8), Vec3::ZERO));
         let mut triangles = Vec::new();
@@ -175,7 +210,9 @@ impl Scene {
                                 .normals
                                 .get(i..i + 3)
                                 .map(|p| Vec3::new(p[0], p[1], p[2]))
-                                .ok_or_else(|| err(format!("normal index {} out of range", i / 3)))?;
+                                .ok_or_else(|| {
+                                    err(format!("normal index {} out of range", i / 3))
+                                })?;
                             let unit = raw.normalize_or_zero();
                             if unit != Vec3::ZERO {
                                 *n = unit;
@@ -223,7 +260,11 @@ mod tests {
 
     #[test]
     fn vertex_normals_are_read_and_normalised() {
-        let s = parse(&format!("{QUAD}vn 0 0 2\nvn 0.6 0 0.8\nf 1//1 2//2 3//1\nf 1//1 3//1 4//2\n"), None).unwrap();
+        let s = parse(
+            &format!("{QUAD}vn 0 0 2\nvn 0.6 0 0.8\nf 1//1 2//2 3//1\nf 1//1 3//1 4//2\n"),
+            None,
+        )
+        .unwrap();
         assert_eq!(s.normals.len(), 2);
         assert_eq!(s.normals[0][0], Vec3::Z);
         assert!((s.normals[0][1] - Vec3::new(0.6, 0.0, 0.8)).length() < 1e-6);
@@ -247,7 +288,9 @@ mod tests {
         let mtl = "newmtl glossy\nKd 0.5 0.5 0.5\nKs 0.4 0.4 0.4\nNs 80\nnewmtl matte\nKd 0.5 0.5 0.5\nKs 0 0 0\nNs 10\nKa 1 1 1\nillum 2\nnewmtl tex\nKd 1 1 1\nmap_Kd wood.png\nd 0.5\nPs 0.3\n";
         let obj = format!("mtllib t.mtl\n{QUAD}usemtl glossy\nf 1 2 3\nusemtl matte\nf 1 3 4\n");
         let s = parse(&obj, Some(mtl)).unwrap();
-        let by = |name: &str| s.unsupported.iter().find(|u| u.material == name).map(|u| u.features.clone());
+        let by = |name: &str| {
+            s.unsupported.iter().find(|u| u.material == name).map(|u| u.features.clone())
+        };
         assert_eq!(by("glossy"), None);
         assert_eq!(by("matte"), None);
         assert_eq!(by("tex"), Some(vec!["d".to_string(), "map_Kd".to_string(), "Ps".to_string()]));
@@ -262,22 +305,36 @@ mod tests {
                    newmtl pbr\nKd 0.9 0.6 0.3\nPr 0.25\nPm 1\nKs 0.5 0.5 0.5\n\
                    newmtl ior\nKd 0.5 0.5 0.5\nPr 0.5\nNi 2.0\n\
                    newmtl matte\nKd 0.5 0.5 0.5\nKe 1 2 3\n";
-        let obj = format!("mtllib t.mtl\n{QUAD}usemtl phong\nf 1 2 3\nusemtl pbr\nf 1 3 4\nusemtl ior\nf 1 2 4\nusemtl matte\nf 2 3 4\n");
+        let obj = format!(
+            "mtllib t.mtl\n{QUAD}usemtl phong\nf 1 2 3\nusemtl pbr\nf 1 3 4\nusemtl ior\nf 1 2 4\nusemtl matte\nf 2 3 4\n"
+        );
         let s = parse(&obj, Some(mtl)).unwrap();
         let [phong, pbr, ior, matte] = [0, 1, 2, 3].map(|i| s.materials[i]);
         // α = √(2/62) for Ns 60; roughness = √α.
         assert!((phong.alpha() - (2.0f32 / 62.0).sqrt()).abs() < 1e-6, "{}", phong.alpha());
-        assert_eq!((phong.f0, phong.f90, phong.metallic, phong.albedo), (Vec3::splat(0.9), 0.9, 0.0, Vec3::new(0.2, 0.3, 0.4)));
+        assert_eq!(
+            (phong.f0, phong.f90, phong.metallic, phong.albedo),
+            (Vec3::splat(0.9), 0.9, 0.0, Vec3::new(0.2, 0.3, 0.4))
+        );
         assert!(phong.has_specular());
-        assert_eq!((pbr.metallic, pbr.roughness, pbr.f0, pbr.f90), (1.0, 0.25, Vec3::splat(0.04), 1.0));
+        assert_eq!(
+            (pbr.metallic, pbr.roughness, pbr.f0, pbr.f90),
+            (1.0, 0.25, Vec3::splat(0.04), 1.0)
+        );
         assert!((ior.f0.x - 1.0 / 9.0).abs() < 1e-6 && ior.metallic == 0.0);
         assert_eq!(matte, Material::lambertian(Vec3::splat(0.5), Vec3::new(1.0, 2.0, 3.0)));
         assert!(!matte.has_specular());
         // Out-of-range PBR keys are errors naming the key.
         for bad in ["Pr 1.5", "Pm -0.1", "Pr nan", "Pm x"] {
-            let e = parse(&format!("mtllib t.mtl\n{QUAD}usemtl m\nf 1 2 3\n"), Some(&format!("newmtl m\nKd 1 1 1\n{bad}\n")));
+            let e = parse(
+                &format!("mtllib t.mtl\n{QUAD}usemtl m\nf 1 2 3\n"),
+                Some(&format!("newmtl m\nKd 1 1 1\n{bad}\n")),
+            );
             let key = &bad[..2];
-            assert!(matches!(&e, Err(SceneError::Obj(_, what)) if what.contains(key)), "{bad}: {e:?}");
+            assert!(
+                matches!(&e, Err(SceneError::Obj(_, what)) if what.contains(key)),
+                "{bad}: {e:?}"
+            );
         }
     }
 }

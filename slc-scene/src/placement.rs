@@ -51,8 +51,9 @@ pub struct Surfaces<'a> {
 impl<'a> Surfaces<'a> {
     /// The non-emissive surfaces of `scene`; an error when they have no area.
     pub fn new(scene: &'a Scene) -> Result<Self, String> {
-        let triangles: Vec<usize> =
-            (0..scene.triangles.len()).filter(|&t| scene.materials[scene.material_of[t] as usize].emission == Vec3::ZERO).collect();
+        let triangles: Vec<usize> = (0..scene.triangles.len())
+            .filter(|&t| scene.materials[scene.material_of[t] as usize].emission == Vec3::ZERO)
+            .collect();
         let area = |t: &[Vec3; 3]| 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).length();
         let mut cdf = Vec::with_capacity(triangles.len());
         let mut total = 0.0f64;

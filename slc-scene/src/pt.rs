@@ -55,8 +55,14 @@ impl PtMethod {
     }
 
     /// Every method, in report order.
-    pub const ALL: [PtMethod; 6] =
-        [PtMethod::Slc, PtMethod::SlcReservoir, PtMethod::SlcWeighted, PtMethod::Uniform, PtMethod::Power, PtMethod::LightBvh];
+    pub const ALL: [PtMethod; 6] = [
+        PtMethod::Slc,
+        PtMethod::SlcReservoir,
+        PtMethod::SlcWeighted,
+        PtMethod::Uniform,
+        PtMethod::Power,
+        PtMethod::LightBvh,
+    ];
 
     /// The method's position in [`PtMethod::ALL`] (its declaration order).
     pub fn index(self) -> usize {
@@ -129,7 +135,9 @@ impl PtScene {
         let (mut lights, light_of_triangle) = emissive_triangles(scene)?;
         lights.extend(extra.iter().cloned());
         if lights.is_empty() {
-            return Err(RenderError::Setting("the scene has no light (no emissive triangle, no point/spot/IES light)".into()));
+            return Err(RenderError::Setting(
+                "the scene has no light (no emissive triangle, no point/spot/IES light)".into(),
+            ));
         }
         let lights = LightSet::new(lights)?;
         let light_bvh = LightBvh::new(lights.lights(), lights.cones());
@@ -187,7 +195,13 @@ pub struct PtRender {
 impl PtRender {
     /// An empty accumulation.
     pub fn new(width: u32, height: u32) -> Self {
-        PtRender { sum: vec![Vec3::ZERO; width as usize * height as usize], passes: 0, time_ms: 0.0, width, height }
+        PtRender {
+            sum: vec![Vec3::ZERO; width as usize * height as usize],
+            passes: 0,
+            time_ms: 0.0,
+            width,
+            height,
+        }
     }
 
     /// Adds `passes` passes rendered elsewhere (e.g. on the GPU): their
@@ -208,7 +222,11 @@ impl PtRender {
     /// The mean image so far.
     pub fn image(&self) -> Image {
         let n = self.passes.max(1) as f32;
-        Image { width: self.width, height: self.height, data: self.sum.iter().map(|s| *s / n).collect() }
+        Image {
+            width: self.width,
+            height: self.height,
+            data: self.sum.iter().map(|s| *s / n).collect(),
+        }
     }
 }
 

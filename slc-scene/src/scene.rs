@@ -49,7 +49,14 @@ impl Material {
     /// `albedo`, `metallic`, perceptual `roughness`, a dielectric of IOR
     /// 1.5 (`f0 = 0.04`, `f90 = 1`), no emission.
     pub fn gltf(albedo: Vec3, metallic: f32, roughness: f32) -> Material {
-        Material { albedo, emission: Vec3::ZERO, metallic, roughness, f0: Vec3::splat(0.04), f90: 1.0 }
+        Material {
+            albedo,
+            emission: Vec3::ZERO,
+            metallic,
+            roughness,
+            f0: Vec3::splat(0.04),
+            f90: 1.0,
+        }
     }
 
     /// GGX `α` ([`slc_core::brdf::ggx_alpha`] of the roughness).
@@ -65,12 +72,28 @@ impl Material {
     /// The BRDF `f(v, l)` at unit shading normal `n`
     /// ([`slc_core::brdf::brdf_eval`]).
     pub fn eval(&self, n: Vec3, v: Vec3, l: Vec3) -> Vec3 {
-        slc_core::brdf::brdf_eval(self.albedo, self.metallic, self.f0, self.f90, self.alpha(), n, v, l)
+        slc_core::brdf::brdf_eval(
+            self.albedo,
+            self.metallic,
+            self.f0,
+            self.f90,
+            self.alpha(),
+            n,
+            v,
+            l,
+        )
     }
 
     /// The lobes seen at `n·v` ([`slc_core::brdf::receiver_lobe`]).
     pub fn lobe(&self, n_v: f32) -> glam::Vec4 {
-        slc_core::brdf::receiver_lobe(self.albedo, self.metallic, self.f0, self.f90, self.alpha(), n_v)
+        slc_core::brdf::receiver_lobe(
+            self.albedo,
+            self.metallic,
+            self.f0,
+            self.f90,
+            self.alpha(),
+            n_v,
+        )
     }
 
     /// The receiver at `p` with unit shading normal `n` seen from the unit
@@ -97,7 +120,10 @@ impl Material {
             return bad(format!("roughness {} outside [0, 1]", self.roughness));
         }
         if !unit(self.f0) || !unit1(self.f90) {
-            return bad(format!("dielectric Fresnel f0 {:?}, f90 {} outside [0, 1]", self.f0, self.f90));
+            return bad(format!(
+                "dielectric Fresnel f0 {:?}, f90 {} outside [0, 1]",
+                self.f0, self.f90
+            ));
         }
         Ok(())
     }
@@ -145,11 +171,20 @@ impl Camera {
     /// `(0°, 180°)`.
     pub fn validate(&self) -> Result<(), SceneError> {
         let fwd = self.target - self.position;
-        if !(self.position.is_finite() && self.target.is_finite() && fwd.length() > 0.0 && fwd.cross(self.up).length() > 0.0) {
-            return Err(SceneError::Invalid("camera: position, target and up must be finite, distinct and not parallel".into()));
+        if !(self.position.is_finite()
+            && self.target.is_finite()
+            && fwd.length() > 0.0
+            && fwd.cross(self.up).length() > 0.0)
+        {
+            return Err(SceneError::Invalid(
+                "camera: position, target and up must be finite, distinct and not parallel".into(),
+            ));
         }
         if !(self.vfov_deg > 0.0 && self.vfov_deg < 180.0) {
-            return Err(SceneError::Invalid(format!("camera: vertical fov {} must be in (0, 180)", self.vfov_deg)));
+            return Err(SceneError::Invalid(format!(
+                "camera: vertical fov {} must be in (0, 180)",
+                self.vfov_deg
+            )));
         }
         Ok(())
     }
@@ -161,7 +196,8 @@ impl Camera {
     pub fn view_projection(&self, w: u32, h: u32, near: f32, far: f32) -> glam::Mat4 {
         use glam::camera::rh::{proj, view::look_to_mat4};
         let (_, up, forward) = self.basis();
-        proj::directx::perspective(self.vfov_deg.to_radians(), w as f32 / h as f32, near, far) * look_to_mat4(self.position, forward, up)
+        proj::directx::perspective(self.vfov_deg.to_radians(), w as f32 / h as f32, near, far)
+            * look_to_mat4(self.position, forward, up)
     }
 }
 
@@ -195,7 +231,9 @@ impl PrimaryLight {
     /// The slc-core spot light this primary light is (for spots).
     pub fn spot(&self) -> Option<SpotLight> {
         match *self {
-            PrimaryLight::Spot { position, direction, intensity, inner, outer } => SpotLight::new(position, direction, intensity, inner, outer).ok(),
+            PrimaryLight::Spot { position, direction, intensity, inner, outer } => {
+                SpotLight::new(position, direction, intensity, inner, outer).ok()
+            }
             PrimaryLight::Directional { .. } => None,
         }
     }
@@ -206,8 +244,12 @@ impl PrimaryLight {
     pub fn direction_from(&self, x: Vec3) -> Vec3 {
         use slc_core::frame::primary_light_dir;
         match *self {
-            PrimaryLight::Spot { position, direction, .. } => primary_light_dir(x, position, direction, true),
-            PrimaryLight::Directional { direction, .. } => primary_light_dir(x, Vec3::ZERO, direction.normalize(), false),
+            PrimaryLight::Spot { position, direction, .. } => {
+                primary_light_dir(x, position, direction, true)
+            }
+            PrimaryLight::Directional { direction, .. } => {
+                primary_light_dir(x, Vec3::ZERO, direction.normalize(), false)
+            }
         }
     }
 
@@ -217,13 +259,20 @@ impl PrimaryLight {
     pub fn validate(&self) -> Result<(), SceneError> {
         match *self {
             PrimaryLight::Spot { outer, .. } => {
-                self.spot().ok_or_else(|| SceneError::Invalid("primary spot light is invalid".into()))?;
+                self.spot()
+                    .ok_or_else(|| SceneError::Invalid("primary spot light is invalid".into()))?;
                 if outer >= 85f32.to_radians() {
-                    return Err(SceneError::Invalid("primary spot outer angle must be below 85 degrees".into()));
+                    return Err(SceneError::Invalid(
+                        "primary spot outer angle must be below 85 degrees".into(),
+                    ));
                 }
             }
             PrimaryLight::Directional { direction, irradiance } => {
-                if !(direction.is_finite() && direction.length() > 0.0 && irradiance.is_finite() && irradiance.min_element() >= 0.0) {
+                if !(direction.is_finite()
+                    && direction.length() > 0.0
+                    && irradiance.is_finite()
+                    && irradiance.min_element() >= 0.0)
+                {
                     return Err(SceneError::Invalid("primary directional light is invalid".into()));
                 }
             }
@@ -243,7 +292,13 @@ impl PrimaryLight {
                 let axis = direction.normalize();
                 let (right, up) = LightMap::basis(axis);
                 let half = 0.5 * (hi - lo).length();
-                LightMap::Orthographic { origin: (lo + hi) * 0.5 - axis * (2.0 * half), axis, right, up, half }
+                LightMap::Orthographic {
+                    origin: (lo + hi) * 0.5 - axis * (2.0 * half),
+                    axis,
+                    right,
+                    up,
+                    half,
+                }
             }
         }
     }
@@ -304,11 +359,17 @@ impl LightMap {
             LightMap::Perspective { origin, axis, right, up, tan } => {
                 let d = axis + right * (a * tan) + up * (b * tan);
                 let dir = d.normalize();
-                (origin, dir, rsm_texel_solid_angle((2.0 * tan / size as f32).powi(2), dir.dot(axis)))
+                (
+                    origin,
+                    dir,
+                    rsm_texel_solid_angle((2.0 * tan / size as f32).powi(2), dir.dot(axis)),
+                )
             }
-            LightMap::Orthographic { origin, axis, right, up, half } => {
-                (origin + right * (a * half) + up * (b * half), axis, (2.0 * half / size as f32).powi(2))
-            }
+            LightMap::Orthographic { origin, axis, right, up, half } => (
+                origin + right * (a * half) + up * (b * half),
+                axis,
+                (2.0 * half / size as f32).powi(2),
+            ),
         }
     }
 }
@@ -376,11 +437,17 @@ impl Scene {
             return Err(SceneError::Invalid("one material index per triangle".into()));
         }
         if !self.normals.is_empty() && self.normals.len() != self.triangles.len() {
-            return Err(SceneError::Invalid(format!("{} normal triples for {} triangles", self.normals.len(), self.triangles.len())));
+            return Err(SceneError::Invalid(format!(
+                "{} normal triples for {} triangles",
+                self.normals.len(),
+                self.triangles.len()
+            )));
         }
         for (i, ns) in self.normals.iter().enumerate() {
             if !ns.iter().all(|n| n.is_finite() && (n.length() - 1.0).abs() < 1e-3) {
-                return Err(SceneError::Invalid(format!("triangle {i}: vertex normals {ns:?} must be finite unit vectors")));
+                return Err(SceneError::Invalid(format!(
+                    "triangle {i}: vertex normals {ns:?} must be finite unit vectors"
+                )));
             }
         }
         for (i, t) in self.triangles.iter().enumerate() {
@@ -388,7 +455,11 @@ impl Scene {
                 return Err(SceneError::NonFiniteVertex(i));
             }
             if self.material_of[i] as usize >= self.materials.len() {
-                return Err(SceneError::Invalid(format!("triangle {i} names material {} of {}", self.material_of[i], self.materials.len())));
+                return Err(SceneError::Invalid(format!(
+                    "triangle {i} names material {} of {}",
+                    self.material_of[i],
+                    self.materials.len()
+                )));
             }
         }
         for (i, m) in self.materials.iter().enumerate() {
@@ -428,7 +499,13 @@ impl Scene {
         match self.normals.get(i) {
             Some([n0, n1, n2]) => {
                 let [a, b, c] = self.triangles[i];
-                slc_core::ray::shading_normal(*n0, *n1, *n2, slc_core::ray::barycentric(p, a, b, c), facing)
+                slc_core::ray::shading_normal(
+                    *n0,
+                    *n1,
+                    *n2,
+                    slc_core::ray::barycentric(p, a, b, c),
+                    facing,
+                )
             }
             None => facing,
         }
@@ -453,7 +530,10 @@ impl Scene {
 
     /// Axis-aligned bounds of all vertices.
     pub fn bounds(&self) -> (Vec3, Vec3) {
-        self.triangles.iter().flatten().fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), &v| (lo.min(v), hi.max(v)))
+        self.triangles
+            .iter()
+            .flatten()
+            .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), &v| (lo.min(v), hi.max(v)))
     }
 
     /// Length of the bounds' diagonal.
@@ -470,9 +550,15 @@ impl Scene {
         let ext = hi - lo;
         let vfov: f32 = 39.3;
         let dist = 0.5 * ext.y.max(ext.x) / (vfov.to_radians() * 0.5).tan();
-        self.camera = Camera { position: Vec3::new(c.x, c.y, hi.z + dist * 1.02), target: c, up: Vec3::Y, vfov_deg: vfov };
+        self.camera = Camera {
+            position: Vec3::new(c.x, c.y, hi.z + dist * 1.02),
+            target: c,
+            up: Vec3::Y,
+            vfov_deg: vfov,
+        };
         // Emitters: area-weighted centroid, mean normal, I₀ = Σ L·A.
-        let (mut area_sum, mut centroid, mut normal, mut power) = (0.0f32, Vec3::ZERO, Vec3::ZERO, Vec3::ZERO);
+        let (mut area_sum, mut centroid, mut normal, mut power) =
+            (0.0f32, Vec3::ZERO, Vec3::ZERO, Vec3::ZERO);
         for (t, &m) in self.triangles.iter().zip(&self.material_of) {
             let e = self.materials[m as usize].emission;
             if e.max_element() > 0.0 {

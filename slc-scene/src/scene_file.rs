@@ -188,7 +188,8 @@ impl MaterialDef {
             emission: v3(self.emission),
             ..Material::gltf(v3(self.base_color), self.metallic, self.roughness)
         };
-        m.validate(0).map_err(|e| e.to_string().replace("invalid scene: material 0: ", "material: "))?;
+        m.validate(0)
+            .map_err(|e| e.to_string().replace("invalid scene: material 0: ", "material: "))?;
         Ok(m)
     }
 }
@@ -263,7 +264,11 @@ fn scatter_lights(scene: &Scene, d: &ScatterDef) -> Result<Vec<[Vec3; 3]>, Strin
         };
         // Counter-clockwise about the axis, so the triangle's normal is the
         // axis (or clockwise: −n, facing the surface).
-        out.push(if d.face == Face::Surface { [corner(0.0), corner(2.0), corner(1.0)] } else { [corner(0.0), corner(1.0), corner(2.0)] });
+        out.push(if d.face == Face::Surface {
+            [corner(0.0), corner(2.0), corner(1.0)]
+        } else {
+            [corner(0.0), corner(1.0), corner(2.0)]
+        });
     }
     Ok(out)
 }
@@ -355,16 +360,20 @@ fn v3(a: [f32; 3]) -> Vec3 {
 impl SceneFile {
     /// Reads and validates a scene file.
     pub fn load(path: &Path) -> Result<SceneFile, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io(path.display().to_string(), e.to_string()))?;
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| SceneError::Io(path.display().to_string(), e.to_string()))?;
         Self::parse(&text, path.parent().unwrap_or(Path::new(".")), &path.display().to_string())
     }
 
     /// Parses scene-file text; relative paths resolve against `dir`.
     pub fn parse(text: &str, dir: &Path, name: &str) -> Result<SceneFile, SceneError> {
-        let f: File = toml::from_str(text).map_err(|e| SceneError::File(name.to_string(), e.to_string()))?;
+        let f: File =
+            toml::from_str(text).map_err(|e| SceneError::File(name.to_string(), e.to_string()))?;
         let bad = |what: String| SceneError::File(name.to_string(), what);
         let mut scene = Scene {
-            name: Path::new(name).file_stem().map_or("scene".into(), |s| s.to_string_lossy().into_owned()),
+            name: Path::new(name)
+                .file_stem()
+                .map_or("scene".into(), |s| s.to_string_lossy().into_owned()),
             triangles: Vec::new(),
             normals: Vec::new(),
             material_of: Vec::new(),
@@ -373,31 +382,46 @@ impl SceneFile {
             primary: Scene::cornell_box().primary,
             unsupported: Vec::new(),
         };
-        let append = |scene: &mut Scene, other: Scene, scale: f32, translate: [f32; 3]| scene.append(other, scale, v3(translate));
+        let append = |scene: &mut Scene, other: Scene, scale: f32, translate: [f32; 3]| {
+            scene.append(other, scale, v3(translate))
+        };
         // glTF punctual lights, with the index of the geometry that placed them.
         let mut gltf_lights: Vec<(Light, usize)> = Vec::new();
         if f.geometry.is_empty() && f.emissive_mesh.is_empty() {
-            return Err(bad("the scene needs at least one [[geometry]] or [[emissive_mesh]]".into()));
+            return Err(bad(
+                "the scene needs at least one [[geometry]] or [[emissive_mesh]]".into()
+            ));
         }
         for (i, g) in f.geometry.iter().enumerate() {
             if !(g.scale.is_finite() && g.scale > 0.0) {
                 return Err(bad(format!("geometry {i}: scale {} must be finite and > 0", g.scale)));
             }
             if !(g.emission_scale.is_finite() && g.emission_scale >= 0.0) {
-                return Err(bad(format!("geometry {i}: emission_scale {} must be finite and >= 0", g.emission_scale)));
+                return Err(bad(format!(
+                    "geometry {i}: emission_scale {} must be finite and >= 0",
+                    g.emission_scale
+                )));
             }
             let mut part = match (&g.builtin, &g.obj, &g.gltf) {
                 (Some(b), None, None) if b == "cornell" => Scene::cornell_box(),
                 (Some(b), None, None) if b == "cornell-glossy" => Scene::cornell_box_glossy(),
                 (Some(b), None, None) if b == "sphere" => crate::shapes::sphere(4),
-                (Some(b), None, None) => return Err(bad(format!("geometry {i}: unknown builtin '{b}' (known: cornell, cornell-glossy, sphere)"))),
+                (Some(b), None, None) => {
+                    return Err(bad(format!(
+                        "geometry {i}: unknown builtin '{b}' (known: cornell, cornell-glossy, sphere)"
+                    )));
+                }
                 (None, Some(p), None) => Scene::load_obj(&dir.join(p))?,
                 (None, None, Some(p)) => {
                     let g = GltfScene::load(&dir.join(p))?;
                     gltf_lights.extend(g.lights.iter().map(|l| (l.clone(), i)));
                     g.scene
                 }
-                _ => return Err(bad(format!("geometry {i}: give exactly one of `builtin`, `obj` or `gltf`"))),
+                _ => {
+                    return Err(bad(format!(
+                        "geometry {i}: give exactly one of `builtin`, `obj` or `gltf`"
+                    )));
+                }
             };
             if let Some(m) = &g.material {
                 let m = m.material().map_err(|e| bad(format!("geometry {i}: {e}")))?;
@@ -411,7 +435,10 @@ impl SceneFile {
         }
         for (i, e) in f.emissive_mesh.iter().enumerate() {
             if e.subdivide > 4 {
-                return Err(bad(format!("emissive_mesh {i}: subdivide {} is above 4 (256 triangles per input triangle)", e.subdivide)));
+                return Err(bad(format!(
+                    "emissive_mesh {i}: subdivide {} is above 4 (256 triangles per input triangle)",
+                    e.subdivide
+                )));
             }
             let emission = v3(e.emission);
             if !(emission.is_finite() && emission.min_element() >= 0.0) {
@@ -429,15 +456,22 @@ impl SceneFile {
         for (i, d) in f.scatter_lights.iter().enumerate() {
             let emission = v3(d.emission);
             if !(1..=MAX_SCATTER).contains(&d.count) {
-                return Err(bad(format!("scatter_lights {i}: count {} must be in 1..={MAX_SCATTER}", d.count)));
+                return Err(bad(format!(
+                    "scatter_lights {i}: count {} must be in 1..={MAX_SCATTER}",
+                    d.count
+                )));
             }
             if !(d.size.is_finite() && d.size > 0.0 && d.offset.is_finite() && d.offset >= 0.0) {
-                return Err(bad(format!("scatter_lights {i}: size {} must be finite and > 0, offset {} finite and >= 0", d.size, d.offset)));
+                return Err(bad(format!(
+                    "scatter_lights {i}: size {} must be finite and > 0, offset {} finite and >= 0",
+                    d.size, d.offset
+                )));
             }
             if !(emission.is_finite() && emission.min_element() >= 0.0) {
                 return Err(bad(format!("scatter_lights {i}: emission must be finite and >= 0")));
             }
-            let triangles = scatter_lights(&scene, d).map_err(|e| bad(format!("scatter_lights {i}: {e}")))?;
+            let triangles =
+                scatter_lights(&scene, d).map_err(|e| bad(format!("scatter_lights {i}: {e}")))?;
             let lights = Scene {
                 name: String::new(),
                 material_of: vec![0; triangles.len()],
@@ -451,8 +485,17 @@ impl SceneFile {
             append(&mut scene, lights, 1.0, [0.0; 3]);
         }
         if let Some(c) = f.camera {
-            scene.camera = Camera { position: v3(c.position), target: v3(c.look_at), up: v3(c.up), vfov_deg: c.fov };
-        } else if !f.geometry.iter().any(|g| matches!(g.builtin.as_deref(), Some("cornell" | "cornell-glossy"))) {
+            scene.camera = Camera {
+                position: v3(c.position),
+                target: v3(c.look_at),
+                up: v3(c.up),
+                vfov_deg: c.fov,
+            };
+        } else if !f
+            .geometry
+            .iter()
+            .any(|g| matches!(g.builtin.as_deref(), Some("cornell" | "cornell-glossy")))
+        {
             // No camera: frame the bounds (built-in geometry keeps its own,
             // the published Cornell camera set above).
             let primary = scene.primary;
@@ -462,10 +505,12 @@ impl SceneFile {
         match &f.primary {
             Some(l) if l.kind == "spot" => {
                 let w = "[primary]";
-                l.unused(w, &["position", "direction", "intensity", "inner", "outer"]).map_err(bad)?;
+                l.unused(w, &["position", "direction", "intensity", "inner", "outer"])
+                    .map_err(bad)?;
                 scene.primary = PrimaryLight::Spot {
                     position: v3(l.need(w, "position", &l.position).map_err(bad)?),
-                    direction: v3(l.need(w, "direction", &l.direction).map_err(bad)?).normalize_or_zero(),
+                    direction: v3(l.need(w, "direction", &l.direction).map_err(bad)?)
+                        .normalize_or_zero(),
                     intensity: v3(l.need(w, "intensity", &l.intensity).map_err(bad)?),
                     inner: l.inner.unwrap_or(0.0).to_radians(),
                     outer: l.need(w, "outer", &l.outer).map_err(bad)?.to_radians(),
@@ -479,8 +524,16 @@ impl SceneFile {
                     irradiance: v3(l.need(w, "irradiance", &l.irradiance).map_err(bad)?),
                 }
             }
-            Some(l) => return Err(bad(format!("[primary]: type \"{}\" is not \"spot\" or \"directional\"", l.kind))),
-            None if f.geometry.iter().any(|g| matches!(g.builtin.as_deref(), Some("cornell" | "cornell-glossy"))) => {}
+            Some(l) => {
+                return Err(bad(format!(
+                    "[primary]: type \"{}\" is not \"spot\" or \"directional\"",
+                    l.kind
+                )));
+            }
+            None if f
+                .geometry
+                .iter()
+                .any(|g| matches!(g.builtin.as_deref(), Some("cornell" | "cornell-glossy"))) => {}
             None => {
                 let camera = scene.camera;
                 scene.frame_default_view();
@@ -491,7 +544,10 @@ impl SceneFile {
         // glTF lights move and scale with their geometry.
         let mut lights = Vec::new();
         for (l, i) in gltf_lights {
-            lights.push(l.placed(f.geometry[i].scale, v3(f.geometry[i].translate)).map_err(|e| bad(format!("geometry {i}: light {e}")))?);
+            lights.push(
+                l.placed(f.geometry[i].scale, v3(f.geometry[i].translate))
+                    .map_err(|e| bad(format!("geometry {i}: light {e}")))?,
+            );
         }
         for (i, l) in f.light.iter().enumerate() {
             let w = format!("[[light]] {i}");
@@ -500,10 +556,17 @@ impl SceneFile {
             lights.push(match l.kind.as_str() {
                 "point" => {
                     l.unused(&w, &["position", "intensity"]).map_err(bad)?;
-                    Light::Point(PointLight::new(need3("position", &l.position)?, need3("intensity", &l.intensity)?).map_err(err)?)
+                    Light::Point(
+                        PointLight::new(
+                            need3("position", &l.position)?,
+                            need3("intensity", &l.intensity)?,
+                        )
+                        .map_err(err)?,
+                    )
                 }
                 "spot" => {
-                    l.unused(&w, &["position", "direction", "intensity", "inner", "outer"]).map_err(bad)?;
+                    l.unused(&w, &["position", "direction", "intensity", "inner", "outer"])
+                        .map_err(bad)?;
                     let outer = l.need(&w, "outer", &l.outer).map_err(bad)?;
                     Light::Spot(
                         SpotLight::new(
@@ -517,10 +580,13 @@ impl SceneFile {
                     )
                 }
                 "ies" => {
-                    l.unused(&w, &["position", "file", "nadir", "reference", "tint"]).map_err(bad)?;
+                    l.unused(&w, &["position", "file", "nadir", "reference", "tint"])
+                        .map_err(bad)?;
                     let p = dir.join(l.need(&w, "file", &l.file).map_err(bad)?);
-                    let bytes = std::fs::read(&p).map_err(|e| SceneError::Io(p.display().to_string(), e.to_string()))?;
-                    let profile = IesProfile::parse_bytes(&bytes).map_err(|e| bad(format!("{w}: {}: {e}", p.display())))?;
+                    let bytes = std::fs::read(&p)
+                        .map_err(|e| SceneError::Io(p.display().to_string(), e.to_string()))?;
+                    let profile = IesProfile::parse_bytes(&bytes)
+                        .map_err(|e| bad(format!("{w}: {}: {e}", p.display())))?;
                     Light::Ies(
                         IesLight::new(
                             need3("position", &l.position)?,
@@ -532,7 +598,11 @@ impl SceneFile {
                         .map_err(err)?,
                     )
                 }
-                other => return Err(bad(format!("{w}: type \"{other}\" is not \"point\", \"spot\" or \"ies\""))),
+                other => {
+                    return Err(bad(format!(
+                        "{w}: type \"{other}\" is not \"point\", \"spot\" or \"ies\""
+                    )));
+                }
             });
         }
         for (i, c) in f.light_cloud.iter().enumerate() {
@@ -551,7 +621,8 @@ mod tests {
         let text = "[[geometry]]\nbuiltin = \"cornell\"\n\n[render]\nwidht = 3\n";
         let e = SceneFile::parse(text, Path::new("."), "t.toml").err().unwrap().to_string();
         assert!(e.contains("widht") && e.contains("line 5"), "{e}");
-        let text = "[[geometry]]\nbuiltin = \"cornell\"\n[primary]\ntype = \"spot\"\nposition = [0, 1]\n";
+        let text =
+            "[[geometry]]\nbuiltin = \"cornell\"\n[primary]\ntype = \"spot\"\nposition = [0, 1]\n";
         let e = SceneFile::parse(text, Path::new("."), "t.toml").err().unwrap().to_string();
         assert!(e.contains("line 5") && e.contains("position"), "{e}");
         let text = "[[geometry]]\nbuiltin = \"cornell\"\n[primary]\ntype = \"spot\"\nposition = [0, 1, 0]\n";
@@ -573,7 +644,10 @@ mod tests {
             "[[geometry]]\nbuiltin = \"cornell\"\n[[light]]\ntype = \"laser\"\nposition = [0, 0, 0]\n",
             "[[geometry]]\nbuiltin = \"cornell\"\n[camera]\nposition = [0, 0, 0]\nlook_at = [0, 0, 0]\n",
         ] {
-            assert!(SceneFile::parse(text, Path::new("."), "t.toml").is_err(), "{text:?} was accepted");
+            assert!(
+                SceneFile::parse(text, Path::new("."), "t.toml").is_err(),
+                "{text:?} was accepted"
+            );
         }
     }
 
@@ -607,24 +681,39 @@ mod tests {
             assert!(on, "light at {foot} is not in front of a surface, facing its way");
             assert!(((t[1] - t[0]).length() - 0.01).abs() < 1e-5);
         }
-        assert_eq!(SceneFile::parse(text, Path::new("."), "t.toml").unwrap().scene.triangles, f.scene.triangles);
-        let facing = SceneFile::parse(&format!("{text}face = \"surface\"\n"), Path::new("."), "t.toml").unwrap();
-        for (a, b) in facing.scene.triangles.iter().zip(&f.scene.triangles).skip(base.triangles.len()) {
+        assert_eq!(
+            SceneFile::parse(text, Path::new("."), "t.toml").unwrap().scene.triangles,
+            f.scene.triangles
+        );
+        let facing =
+            SceneFile::parse(&format!("{text}face = \"surface\"\n"), Path::new("."), "t.toml")
+                .unwrap();
+        for (a, b) in
+            facing.scene.triangles.iter().zip(&f.scene.triangles).skip(base.triangles.len())
+        {
             let n = |t: &[Vec3; 3]| (t[1] - t[0]).cross(t[2] - t[0]).normalize();
             assert!(n(a).dot(n(b)) < -0.9999, "face = \"surface\" flips the light");
         }
-        assert!(SceneFile::parse(&format!("{text}face = \"up\"\n"), Path::new("."), "t.toml").is_err());
+        assert!(
+            SceneFile::parse(&format!("{text}face = \"up\"\n"), Path::new("."), "t.toml").is_err()
+        );
         for bad in ["count = 0", "size = -1.0", "offset = -0.1", "emission = [1, -1, 1]"] {
             let key = bad.split(' ').next().unwrap();
-            let t =
-                text.lines().map(|l| if l.starts_with(&format!("{key} ")) { bad.to_string() } else { l.to_string() }).collect::<Vec<_>>().join("\n");
+            let t = text
+                .lines()
+                .map(|l| {
+                    if l.starts_with(&format!("{key} ")) { bad.to_string() } else { l.to_string() }
+                })
+                .collect::<Vec<_>>()
+                .join("\n");
             assert!(SceneFile::parse(&t, Path::new("."), "t.toml").is_err(), "{bad}");
         }
     }
 
     #[test]
     fn builtin_geometry_keeps_its_camera() {
-        let f = SceneFile::parse("[[geometry]]\nbuiltin = \"cornell\"\n", Path::new("."), "t.toml").unwrap();
+        let f = SceneFile::parse("[[geometry]]\nbuiltin = \"cornell\"\n", Path::new("."), "t.toml")
+            .unwrap();
         assert_eq!(f.scene.camera, Scene::cornell_box().camera);
     }
 

@@ -49,7 +49,8 @@ pub fn sphere(levels: u32) -> Scene {
         [9, 8, 1],
     ];
     let base: Vec<[Vec3; 3]> = faces.iter().map(|f| f.map(|i| v[i].normalize())).collect();
-    let triangles: Vec<[Vec3; 3]> = subdivide(&base, levels).into_iter().map(|t| t.map(Vec3::normalize)).collect();
+    let triangles: Vec<[Vec3; 3]> =
+        subdivide(&base, levels).into_iter().map(|t| t.map(Vec3::normalize)).collect();
     let normals = triangles.clone();
     Scene {
         name: "sphere".into(),
@@ -57,7 +58,12 @@ pub fn sphere(levels: u32) -> Scene {
         triangles,
         normals,
         materials: vec![Material::lambertian(Vec3::splat(0.8), Vec3::ZERO)],
-        camera: Camera { position: Vec3::new(0.0, 0.0, 4.0), target: Vec3::ZERO, up: Vec3::Y, vfov_deg: 40.0 },
+        camera: Camera {
+            position: Vec3::new(0.0, 0.0, 4.0),
+            target: Vec3::ZERO,
+            up: Vec3::Y,
+            vfov_deg: 40.0,
+        },
         primary: PrimaryLight::Directional { direction: -Vec3::Y, irradiance: Vec3::ONE },
         unsupported: Vec::new(),
     }
@@ -74,7 +80,11 @@ pub fn subdivide_normals(normals: &[[Vec3; 3]], levels: u32) -> Vec<[Vec3; 3]> {
     split_midpoints(normals, levels, |a, b| (a + b).try_normalize().unwrap_or(a))
 }
 
-fn split_midpoints(tris: &[[Vec3; 3]], levels: u32, mid: impl Fn(Vec3, Vec3) -> Vec3) -> Vec<[Vec3; 3]> {
+fn split_midpoints(
+    tris: &[[Vec3; 3]],
+    levels: u32,
+    mid: impl Fn(Vec3, Vec3) -> Vec3,
+) -> Vec<[Vec3; 3]> {
     let mut cur = tris.to_vec();
     for _ in 0..levels {
         let mut next = Vec::with_capacity(cur.len() * 4);
@@ -102,6 +112,9 @@ mod tests {
             area += 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).length();
         }
         // The inscribed polyhedron's area approaches 4π from below.
-        assert!(area < 4.0 * std::f32::consts::PI && area > 0.99 * 4.0 * std::f32::consts::PI, "{area}");
+        assert!(
+            area < 4.0 * std::f32::consts::PI && area > 0.99 * 4.0 * std::f32::consts::PI,
+            "{area}"
+        );
     }
 }

@@ -22,7 +22,10 @@ impl TemporalView {
     /// the depth range does not change the reprojected pixel, so a fixed
     /// one serves every scene).
     pub fn of_camera(camera: &Camera, w: u32, h: u32) -> TemporalView {
-        TemporalView { view_projection: camera.view_projection(w, h, 1e-3, 1e3), eye: camera.position }
+        TemporalView {
+            view_projection: camera.view_projection(w, h, 1e-3, 1e3),
+            eye: camera.position,
+        }
     }
 
     /// Checks that every entry is finite.
@@ -30,7 +33,9 @@ impl TemporalView {
         if self.view_projection.is_finite() && self.eye.is_finite() {
             Ok(())
         } else {
-            Err(RenderError::Setting("temporal view: the view-projection and the eye must be finite".into()))
+            Err(RenderError::Setting(
+                "temporal view: the view-projection and the eye must be finite".into(),
+            ))
         }
     }
 }
@@ -54,7 +59,9 @@ impl TemporalSettings {
     /// was added or removed): the history capped at
     /// [`slc_core::temporal::TEMPORAL_CHANGED_HISTORY`] (1: dropped).
     pub fn after_change(self) -> TemporalSettings {
-        TemporalSettings { max_history: self.max_history.min(slc_core::temporal::TEMPORAL_CHANGED_HISTORY) }
+        TemporalSettings {
+            max_history: self.max_history.min(slc_core::temporal::TEMPORAL_CHANGED_HISTORY),
+        }
     }
 
     /// Checks `max_history` (finite, `≥ 1`).
@@ -62,7 +69,10 @@ impl TemporalSettings {
         if self.max_history.is_finite() && self.max_history >= 1.0 {
             Ok(())
         } else {
-            Err(RenderError::Setting(format!("temporal max history {} must be finite and >= 1", self.max_history)))
+            Err(RenderError::Setting(format!(
+                "temporal max history {} must be finite and >= 1",
+                self.max_history
+            )))
         }
     }
 }
@@ -83,7 +93,10 @@ mod tests {
         for (x, y) in [(0u32, 0u32), (95, 63), (40, 17), (3, 60)] {
             let p = cam.position + cam.ray_dir(x as f32, y as f32, w, h) * 2.7;
             let q = reproject(m.x_axis, m.y_axis, m.z_axis, m.w_axis, p, w as f32, h as f32);
-            assert!((q.x - x as f32).abs() < 1e-3 && (q.y - y as f32).abs() < 1e-3, "({x}, {y}) → {q}");
+            assert!(
+                (q.x - x as f32).abs() < 1e-3 && (q.y - y as f32).abs() < 1e-3,
+                "({x}, {y}) → {q}"
+            );
         }
         assert!(v.validate().is_ok());
         assert!(TemporalView { eye: Vec3::NAN, ..v }.validate().is_err());

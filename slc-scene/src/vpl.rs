@@ -100,9 +100,13 @@ impl VplSettings {
     /// Checks the settings every backend shares and returns the error-bound
     /// parameters.
     pub fn validate(&self) -> Result<RangeParams, RenderError> {
-        let params = RangeParams::new(self.error_bound, self.exposure).map_err(|e| RenderError::Setting(e.to_string()))?;
+        let params = RangeParams::new(self.error_bound, self.exposure)
+            .map_err(|e| RenderError::Setting(e.to_string()))?;
         if self.method == VplMethod::Clamp && !(self.range.is_finite() && self.range > 0.0) {
-            return Err(RenderError::Setting(format!("clamp range {} must be finite and > 0", self.range)));
+            return Err(RenderError::Setting(format!(
+                "clamp range {} must be finite and > 0",
+                self.range
+            )));
         }
         if let Some(x) = self.fixed_xi {
             slc_core::range::Xi::new(x).map_err(|e| RenderError::Setting(e.to_string()))?;
@@ -133,7 +137,13 @@ pub const PERIOD: u32 = 8;
 /// multiple of [`PERIOD`] up to 4096, `rsm_size²` VPLs), and the clamp
 /// distance of the VPL fall-off, which it returns (`None`: 1% of the
 /// scene's diagonal; finite and ≥ 0).
-pub fn check_frame(scene: &crate::scene::Scene, width: u32, height: u32, rsm_size: u32, min_distance: Option<f32>) -> Result<f32, RenderError> {
+pub fn check_frame(
+    scene: &crate::scene::Scene,
+    width: u32,
+    height: u32,
+    rsm_size: u32,
+    min_distance: Option<f32>,
+) -> Result<f32, RenderError> {
     scene.validate()?;
     crate::check_size(width, height)?;
     if rsm_size == 0 || !rsm_size.is_multiple_of(PERIOD) || rsm_size > 4096 {
@@ -141,7 +151,9 @@ pub fn check_frame(scene: &crate::scene::Scene, width: u32, height: u32, rsm_siz
     }
     let min_distance = min_distance.unwrap_or(0.01 * scene.diagonal());
     if !(min_distance.is_finite() && min_distance >= 0.0) {
-        return Err(RenderError::Setting(format!("min distance {min_distance} must be finite and >= 0")));
+        return Err(RenderError::Setting(format!(
+            "min distance {min_distance} must be finite and >= 0"
+        )));
     }
     Ok(min_distance)
 }
@@ -175,7 +187,8 @@ impl VplStats {
     /// These statistics with the G-buffer, RSM and direct-light times of
     /// `inputs` (a warm re-run of those stages) and the total summed again.
     pub fn with_input_times(mut self, inputs: &VplStats) -> VplStats {
-        (self.gbuffer_ms, self.rsm_ms, self.direct_ms) = (inputs.gbuffer_ms, inputs.rsm_ms, inputs.direct_ms);
+        (self.gbuffer_ms, self.rsm_ms, self.direct_ms) =
+            (inputs.gbuffer_ms, inputs.rsm_ms, inputs.direct_ms);
         self.total_ms = self.stage_sum();
         self
     }
@@ -321,7 +334,14 @@ impl GBuffer {
     /// c_diff/π·E_indirect + S` ([`slc_core::frame::glossy_radiance`], `f`
     /// the whole BRDF seen from the eye, `l` toward the light:
     /// [`crate::scene::PrimaryLight::direction_from`]).
-    pub fn radiance(&self, i: usize, primary: &crate::scene::PrimaryLight, direct: Vec3, indirect: Vec3, specular: Option<Vec3>) -> Vec3 {
+    pub fn radiance(
+        &self,
+        i: usize,
+        primary: &crate::scene::PrimaryLight,
+        direct: Vec3,
+        indirect: Vec3,
+        specular: Option<Vec3>,
+    ) -> Vec3 {
         use slc_core::brdf::{brdf_eval, ggx_alpha};
         use slc_core::frame::{diffuse_radiance, glossy_radiance};
         if !self.valid(i) {
@@ -332,7 +352,16 @@ impl GBuffer {
             (Some(s), Some(spec)) => {
                 let (x, n) = (self.position[i], self.normal[i]);
                 let v = (self.eye - x).normalize_or_zero();
-                let f = brdf_eval(base, s.metallic, s.f0, s.f90, ggx_alpha(s.roughness), n, v, primary.direction_from(x));
+                let f = brdf_eval(
+                    base,
+                    s.metallic,
+                    s.f0,
+                    s.f90,
+                    ggx_alpha(s.roughness),
+                    n,
+                    v,
+                    primary.direction_from(x),
+                );
                 glossy_radiance(base, emission, s.metallic, f, direct, indirect, spec)
             }
             _ => diffuse_radiance(base, emission, direct + indirect),
@@ -365,7 +394,8 @@ impl Vpls {
         let mut order = vec![0; self.len()];
         for ty in 0..size {
             for tx in 0..size {
-                order[slc_core::interleave::near_block_index(tx, ty, size) as usize] = (ty * size + tx) as usize;
+                order[slc_core::interleave::near_block_index(tx, ty, size) as usize] =
+                    (ty * size + tx) as usize;
             }
         }
         order
@@ -377,12 +407,10 @@ impl Vpls {
         self.near_order()
             .chunks(slc_core::interleave::NEAR_BLOCK as usize)
             .map(|block| {
-                block
-                    .iter()
-                    .filter(|&&i| self.flux[i] != Vec3::ZERO)
-                    .fold((Vec3::splat(slc_core::ray::F32_MAX), Vec3::splat(-slc_core::ray::F32_MAX)), |(lo, hi), &i| {
-                        (lo.min(self.position[i]), hi.max(self.position[i]))
-                    })
+                block.iter().filter(|&&i| self.flux[i] != Vec3::ZERO).fold(
+                    (Vec3::splat(slc_core::ray::F32_MAX), Vec3::splat(-slc_core::ray::F32_MAX)),
+                    |(lo, hi), &i| (lo.min(self.position[i]), hi.max(self.position[i])),
+                )
             })
             .collect()
     }
@@ -421,7 +449,8 @@ impl VplInputs {
         let mut order = vec![0; self.vpls.len()];
         for ty in 0..size {
             for tx in 0..size {
-                order[slc_core::interleave::interleave_slot(tx, ty, size, PERIOD) as usize] = (ty * size + tx) as usize;
+                order[slc_core::interleave::interleave_slot(tx, ty, size, PERIOD) as usize] =
+                    (ty * size + tx) as usize;
             }
         }
         order

@@ -29,7 +29,10 @@ fn light_bvh_quality() {
         let recv: Vec<(Vec3, Vec3)> = (0..64)
             .flat_map(|k| {
                 let (a, b) = ((k % 8) as f32 / 8.0 + 0.06, (k / 8) as f32 / 8.0 + 0.06);
-                [(Vec3::new(a * 0.55, 0.0, b * 0.55), Vec3::Y), (Vec3::new(a * 0.55, b * 0.54, 0.559), Vec3::NEG_Z)]
+                [
+                    (Vec3::new(a * 0.55, 0.0, b * 0.55), Vec3::Y),
+                    (Vec3::new(a * 0.55, b * 0.54, 0.559), Vec3::NEG_Z),
+                ]
             })
             .collect();
         for (p, n) in recv {
@@ -47,14 +50,24 @@ fn light_bvh_quality() {
                 continue;
             }
             npts += 1;
-            let imp: Vec<f64> = ls.iter().zip(set.cones()).map(|(l, k)| rc.importance(&bvh_cone(l, k)) as f64).collect();
+            let imp: Vec<f64> = ls
+                .iter()
+                .zip(set.cones())
+                .map(|(l, k)| rc.importance(&bvh_cone(l, k)) as f64)
+                .collect();
             let isum: f64 = imp.iter().sum();
             let mut m = [0.0f64; 5];
             for i in 0..n_l {
                 if c[i] <= 0.0 {
                     continue;
                 }
-                let ps = [bvh.pmf(&rc, i) as f64, imp[i] / isum, set.alias().pdf(i), 1.0 / n_l as f64, c[i] / tot];
+                let ps = [
+                    bvh.pmf(&rc, i) as f64,
+                    imp[i] / isum,
+                    set.alias().pdf(i),
+                    1.0 / n_l as f64,
+                    c[i] / tot,
+                ];
                 for j in 0..5 {
                     m[j] += if ps[j] > 0.0 { c[i] * c[i] / ps[j] } else { f64::INFINITY };
                 }

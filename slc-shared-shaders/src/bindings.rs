@@ -58,30 +58,69 @@ pub struct Binding {
     pub writer: &'static str,
 }
 
-const fn b(group: u32, binding: u32, name: &'static str, resource: Resource, content: &'static str, writer: &'static str) -> Binding {
+const fn b(
+    group: u32,
+    binding: u32,
+    name: &'static str,
+    resource: Resource,
+    content: &'static str,
+    writer: &'static str,
+) -> Binding {
     Binding { group, binding, name, resource, bound: true, content, writer }
 }
 
-const fn uniform(binding: u32, name: &'static str, ty: &'static str, dynamic: bool, content: &'static str) -> Binding {
+const fn uniform(
+    binding: u32,
+    name: &'static str,
+    ty: &'static str,
+    dynamic: bool,
+    content: &'static str,
+) -> Binding {
     b(0, binding, name, Resource::Uniform { ty, dynamic }, content, "host")
 }
 
-const fn read(binding: u32, name: &'static str, ty: &'static str, content: &'static str, writer: &'static str) -> Binding {
+const fn read(
+    binding: u32,
+    name: &'static str,
+    ty: &'static str,
+    content: &'static str,
+    writer: &'static str,
+) -> Binding {
     b(0, binding, name, Resource::Read(ty), content, writer)
 }
 
-const fn write(binding: u32, name: &'static str, ty: &'static str, content: &'static str) -> Binding {
+const fn write(
+    binding: u32,
+    name: &'static str,
+    ty: &'static str,
+    content: &'static str,
+) -> Binding {
     b(0, binding, name, Resource::ReadWrite(ty), content, "this kernel")
 }
 
-const fn texture(binding: u32, name: &'static str, content: &'static str, writer: &'static str) -> Binding {
+const fn texture(
+    binding: u32,
+    name: &'static str,
+    content: &'static str,
+    writer: &'static str,
+) -> Binding {
     b(0, binding, name, Resource::Texture, content, writer)
 }
 
 /// The IES table at group 1, binding 0: bound where IES lights are compiled
 /// in, else only declared.
 fn ies_table(bound: bool) -> Binding {
-    Binding { bound, ..b(1, 0, "slc_table", Resource::Read("array<f32>"), "IES profiles, concatenated (a light's `ies_base` is its offset)", "host") }
+    Binding {
+        bound,
+        ..b(
+            1,
+            0,
+            "slc_table",
+            Resource::Read("array<f32>"),
+            "IES profiles, concatenated (a light's `ies_base` is its offset)",
+            "host",
+        )
+    }
 }
 
 /// The G-buffer surface an engine pass reads for `surface`: a depth
@@ -89,11 +128,26 @@ fn ies_table(bound: bool) -> Binding {
 /// positions.
 fn surface(binding: u32, surface: SurfaceSource) -> Binding {
     match surface {
-        SurfaceSource::Position => texture(binding, "position_tex", "world position; `w > 0` where a surface is", "engine (G-buffer)"),
-        SurfaceSource::Depth => {
-            b(0, binding, "depth_tex", Resource::DepthTexture, "`Depth32Float` depth; exactly 0 or 1 where no surface is", "engine (depth pre-pass)")
-        }
-        SurfaceSource::R32Depth => texture(binding, "depth_tex", "`R32Float` depth (x); exactly 0 or 1 where no surface is", "engine (G-buffer)"),
+        SurfaceSource::Position => texture(
+            binding,
+            "position_tex",
+            "world position; `w > 0` where a surface is",
+            "engine (G-buffer)",
+        ),
+        SurfaceSource::Depth => b(
+            0,
+            binding,
+            "depth_tex",
+            Resource::DepthTexture,
+            "`Depth32Float` depth; exactly 0 or 1 where no surface is",
+            "engine (depth pre-pass)",
+        ),
+        SurfaceSource::R32Depth => texture(
+            binding,
+            "depth_tex",
+            "`R32Float` depth (x); exactly 0 or 1 where no surface is",
+            "engine (G-buffer)",
+        ),
     }
 }
 
@@ -107,7 +161,11 @@ const fn view_uniform(binding: u32) -> Binding {
 /// from binding `first` on: the view, the surface (depth or positions) and
 /// the normals.
 fn gbuffer_in(first: u32, source: SurfaceSource) -> [Binding; 3] {
-    [view_uniform(first), surface(first + 1, source), texture(first + 2, "normal_tex", "world normal (xyz)", "engine (G-buffer)")]
+    [
+        view_uniform(first),
+        surface(first + 1, source),
+        texture(first + 2, "normal_tex", "world normal (xyz)", "engine (G-buffer)"),
+    ]
 }
 
 /// The glossy VPL kernels' material table ([`Features::glossy`]).
@@ -125,7 +183,9 @@ const fn materials(binding: u32) -> Binding {
 pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
     let ies = f.lights.ies;
     let vec4 = "array<vec4f>";
-    let out = |binding, content| b(0, binding, "out_tex", Resource::StorageTexture(f.output_format), content, "this kernel");
+    let out = |binding, content| {
+        b(0, binding, "out_tex", Resource::StorageTexture(f.output_format), content, "this kernel")
+    };
     let mut v = match kernel {
         Kernel::LightUpdate => vec![
             uniform(0, "params", "FrameParams", true, "light count, seed, frame"),
@@ -391,8 +451,22 @@ pub fn bindings(kernel: Kernel, f: &Features) -> Vec<Binding> {
 fn pt_tables(ies: bool) -> [Binding; 4] {
     [
         Binding { bound: true, ..ies_table(ies) },
-        b(1, 1, "power_table", Resource::Read("array<vec4f>"), "alias table `(keep, alias bits, pmf, 0)` per light", "host"),
-        b(1, 2, "light_cones", Resource::Read("array<GpuLightCone>"), "importance cone and light-BVH leaf per light", "host"),
+        b(
+            1,
+            1,
+            "power_table",
+            Resource::Read("array<vec4f>"),
+            "alias table `(keep, alias bits, pmf, 0)` per light",
+            "host",
+        ),
+        b(
+            1,
+            2,
+            "light_cones",
+            Resource::Read("array<GpuLightCone>"),
+            "importance cone and light-BVH leaf per light",
+            "host",
+        ),
         b(1, 3, "light_bvh", Resource::Read("array<GpuLightBvhNode>"), "the light BVH", "host"),
     ]
 }
@@ -407,7 +481,9 @@ pub fn declarations(bindings: &[Binding]) -> String {
             Resource::ReadWrite(ty) => format!("var<storage, read_write> {}: {ty}", b.name),
             Resource::Texture => format!("var {}: texture_2d<f32>", b.name),
             Resource::DepthTexture => format!("var {}: texture_depth_2d", b.name),
-            Resource::StorageTexture(f) => format!("var {}: texture_storage_2d<{}, write>", b.name, f.wgsl()),
+            Resource::StorageTexture(f) => {
+                format!("var {}: texture_storage_2d<{}, write>", b.name, f.wgsl())
+            }
         };
         s.push_str(&format!("@group({}) @binding({}) {ty};\n", b.group, b.binding));
     }
@@ -417,7 +493,8 @@ pub fn declarations(bindings: &[Binding]) -> String {
 /// The bindings as a Markdown table (`group.binding | type | content |
 /// written by`); bindings a kernel only declares are marked so.
 pub fn markdown(bindings: &[Binding]) -> String {
-    let mut s = String::from("| group.binding | type | content | written by |\n|---|---|---|---|\n");
+    let mut s =
+        String::from("| group.binding | type | content | written by |\n|---|---|---|---|\n");
     for b in bindings {
         let ty = match b.resource {
             Resource::Uniform { ty, dynamic: true } => format!("`uniform {ty}` (dynamic offset)"),
@@ -426,9 +503,15 @@ pub fn markdown(bindings: &[Binding]) -> String {
             Resource::ReadWrite(ty) => format!("`storage<read_write> {}: {ty}`", b.name),
             Resource::Texture => format!("`{}: texture_2d<f32>`", b.name),
             Resource::DepthTexture => format!("`{}: texture_depth_2d`", b.name),
-            Resource::StorageTexture(f) => format!("`{}: texture_storage_2d<{}, write>`", b.name, f.wgsl()),
+            Resource::StorageTexture(f) => {
+                format!("`{}: texture_storage_2d<{}, write>`", b.name, f.wgsl())
+            }
         };
-        let content = if b.bound { b.content.to_string() } else { format!("{} (declared, not read: not bound)", b.content) };
+        let content = if b.bound {
+            b.content.to_string()
+        } else {
+            format!("{} (declared, not read: not bound)", b.content)
+        };
         s.push_str(&format!("| {}.{} | {ty} | {content} | {} |\n", b.group, b.binding, b.writer));
     }
     s
@@ -477,7 +560,11 @@ pub fn counts(bindings: &[Binding]) -> BindingCounts {
 /// the others with [`Features::default`].
 pub fn docs() -> String {
     use crate::LightTypes;
-    let vpl = Features { lights: LightTypes { vpl: true, ..LightTypes::default() }, glossy: true, ..Features::default() };
+    let vpl = Features {
+        lights: LightTypes { vpl: true, ..LightTypes::default() },
+        glossy: true,
+        ..Features::default()
+    };
     let direct = Features {
         selection: Selection::Weighted,
         surface: SurfaceSource::Depth,

@@ -66,20 +66,30 @@ mod tests {
     fn unprojection_inverts_the_projection() {
         use slc_core::glam::camera::rh::{proj, view::look_to_mat4};
         let (w, h) = (64.0, 48.0);
-        let vp = proj::directx::perspective(1.0, w / h, 0.1, 50.0) * look_to_mat4(Vec3::new(1.0, 2.0, 3.0), Vec3::new(0.2, -0.3, -1.0), Vec3::Y);
+        let vp = proj::directx::perspective(1.0, w / h, 0.1, 50.0)
+            * look_to_mat4(Vec3::new(1.0, 2.0, 3.0), Vec3::new(0.2, -0.3, -1.0), Vec3::Y);
         let inv = vp.inverse();
         let p = Vec3::new(0.7, 1.2, -1.5);
         let clip = vp * p.extend(1.0);
         let ndc = clip.truncate() / clip.w;
         let (px, py) = ((ndc.x + 1.0) * 0.5 * w - 0.5, (1.0 - ndc.y) * 0.5 * h - 0.5);
-        let q = unproject_pixel(inv.x_axis, inv.y_axis, inv.z_axis, inv.w_axis, px, py, w, h, ndc.z);
+        let q =
+            unproject_pixel(inv.x_axis, inv.y_axis, inv.z_axis, inv.w_axis, px, py, w, h, ndc.z);
         assert!((q.truncate() - p).length() < 1e-4 && q.w == 1.0, "{q} vs {p}");
         // Either convention's clear value is background.
         for clear in [0.0, 1.0] {
-            assert_eq!(unproject_pixel(inv.x_axis, inv.y_axis, inv.z_axis, inv.w_axis, px, py, w, h, clear), Vec4::ZERO);
+            assert_eq!(
+                unproject_pixel(
+                    inv.x_axis, inv.y_axis, inv.z_axis, inv.w_axis, px, py, w, h, clear
+                ),
+                Vec4::ZERO
+            );
         }
         let zero = Mat4::ZERO;
-        assert_eq!(unproject_pixel(zero.x_axis, zero.y_axis, zero.z_axis, zero.w_axis, px, py, w, h, 0.5), Vec4::ZERO);
+        assert_eq!(
+            unproject_pixel(zero.x_axis, zero.y_axis, zero.z_axis, zero.w_axis, px, py, w, h, 0.5),
+            Vec4::ZERO
+        );
     }
 
     /// The unprojection is at pixel centres, as a rasterizer samples: the
@@ -91,12 +101,16 @@ mod tests {
     fn unprojection_is_at_pixel_centres() {
         use slc_core::glam::camera::rh::{proj, view::look_to_mat4};
         let (w, h) = (32.0, 24.0);
-        let vp = proj::directx::perspective(0.9, w / h, 0.1, 20.0) * look_to_mat4(Vec3::ZERO, -Vec3::Z, Vec3::Y);
+        let vp = proj::directx::perspective(0.9, w / h, 0.1, 20.0)
+            * look_to_mat4(Vec3::ZERO, -Vec3::Z, Vec3::Y);
         let inv = vp.inverse();
         // The plane n·p = d, tilted against the view direction.
         let (n, d) = (Vec3::new(0.3, 0.5, 1.0).normalize(), -3.0);
         let hit = |ndc_x: f32, ndc_y: f32| {
-            let (a, b) = (inv.project_point3(Vec3::new(ndc_x, ndc_y, 0.0)), inv.project_point3(Vec3::new(ndc_x, ndc_y, 1.0)));
+            let (a, b) = (
+                inv.project_point3(Vec3::new(ndc_x, ndc_y, 0.0)),
+                inv.project_point3(Vec3::new(ndc_x, ndc_y, 1.0)),
+            );
             a + (b - a) * ((d - n.dot(a)) / n.dot(b - a))
         };
         let (mut centre, mut corner) = (0.0f32, f32::INFINITY);
@@ -104,7 +118,10 @@ mod tests {
             let ndc = |x: f32, y: f32| (2.0 * x / w - 1.0, 1.0 - 2.0 * y / h);
             let (cx, cy) = ndc(px + 0.5, py + 0.5);
             let depth = vp.project_point3(hit(cx, cy)).z;
-            let p = unproject_pixel(inv.x_axis, inv.y_axis, inv.z_axis, inv.w_axis, px, py, w, h, depth).truncate();
+            let p = unproject_pixel(
+                inv.x_axis, inv.y_axis, inv.z_axis, inv.w_axis, px, py, w, h, depth,
+            )
+            .truncate();
             centre = centre.max((n.dot(p) - d).abs());
             // The corner's ray at the centre's depth.
             let (kx, ky) = ndc(px, py);
@@ -112,14 +129,20 @@ mod tests {
             corner = corner.min((n.dot(q) - d).abs());
         }
         assert!(centre < 1e-4, "centre unprojection off the plane by {centre}");
-        assert!(corner > 1e-3, "a corner unprojection lands on the plane ({corner}): the test cannot tell the conventions apart");
+        assert!(
+            corner > 1e-3,
+            "a corner unprojection lands on the plane ({corner}): the test cannot tell the conventions apart"
+        );
     }
 
     #[test]
     fn record_ranges_follow_the_culling() {
         let peak = Vec3::new(1.0, 2.0, 0.5);
         let rt2 = record_rt2(peak, 1, 0, 1.0, 0.01, f32::INFINITY);
-        assert_eq!(rt2, slc_core::range::RangeParams::new(0.01, 1.0).unwrap().threshold_range2(peak));
+        assert_eq!(
+            rt2,
+            slc_core::range::RangeParams::new(0.01, 1.0).unwrap().threshold_range2(peak)
+        );
         assert_eq!(record_r2(rt2, 1, 0.0, 0.5), 2.0 * rt2);
         assert_eq!(record_rt2(peak, 0, 0, 1.0, 0.01, f32::INFINITY), f32::INFINITY);
         assert_eq!(record_r2(f32::INFINITY, 0, 0.25, 0.5), 0.25);

@@ -489,13 +489,30 @@ impl GpuMaterial {
     /// A glTF metallic-roughness material as the kernels read it: base
     /// colour, emission, metallic, perceptual roughness (stored as GGX `α`,
     /// `slc_core::brdf::ggx_alpha`), and the dielectric's `F0`/`F90`.
-    pub fn new(albedo: vec3f, emission: vec3f, metallic: f32, roughness: f32, f0: vec3f, f90: f32) -> GpuMaterial {
-        GpuMaterial { albedo, metallic, emission, alpha: slc_core::brdf::ggx_alpha(roughness), f0, f90 }
+    pub fn new(
+        albedo: vec3f,
+        emission: vec3f,
+        metallic: f32,
+        roughness: f32,
+        f0: vec3f,
+        f90: f32,
+    ) -> GpuMaterial {
+        GpuMaterial {
+            albedo,
+            metallic,
+            emission,
+            alpha: slc_core::brdf::ggx_alpha(roughness),
+            f0,
+            f90,
+        }
     }
 }
 
 /// leaf in the light BVH (`bvh_leaf[i]`; missing entries: none).
-pub fn pack_cones(cones: &[slc_core::importance::LightCone], bvh_leaf: &[u32]) -> Vec<GpuLightCone> {
+pub fn pack_cones(
+    cones: &[slc_core::importance::LightCone],
+    bvh_leaf: &[u32],
+) -> Vec<GpuLightCone> {
     cones
         .iter()
         .enumerate()
@@ -517,7 +534,11 @@ pub fn pack_cones(cones: &[slc_core::importance::LightCone], bvh_leaf: &[u32]) -
 pub fn pack_light_bvh(nodes: &[GpuLightBvhNode]) -> Vec<GpuLightBvhNode> {
     use slc_core::light_bvh::LIGHT_BVH_LEAF;
     if nodes.is_empty() {
-        return vec![GpuLightBvhNode { second: LIGHT_BVH_LEAF, light: 0, ..GpuLightBvhNode::default() }];
+        return vec![GpuLightBvhNode {
+            second: LIGHT_BVH_LEAF,
+            light: 0,
+            ..GpuLightBvhNode::default()
+        }];
     }
     nodes.to_vec()
 }
@@ -526,7 +547,16 @@ impl GpuLight {
     /// A VPL at `position` with unit `normal` and `flux` (the layout
     /// `vpl_pack` writes on the GPU): the one place the host encodes it.
     pub fn vpl(position: vec3f, normal: vec3f, flux: vec3f) -> GpuLight {
-        GpuLight { p0: position, kind: LIGHT_VPL, p1: normal, a: 0.0, p2: vec3f(0.0, 0.0, 0.0), b: 0.0, intensity: flux, ies_base: 0 }
+        GpuLight {
+            p0: position,
+            kind: LIGHT_VPL,
+            p1: normal,
+            a: 0.0,
+            p2: vec3f(0.0, 0.0, 0.0),
+            b: 0.0,
+            intensity: flux,
+            ies_base: 0,
+        }
     }
 }
 
@@ -568,11 +598,13 @@ pub fn pack_lights(lights: &[Light]) -> (Vec<GpuLight>, Vec<f32>) {
                         b
                     }
                 };
-                (g.kind, g.p0, g.p1, g.p2, g.intensity, g.ies_base) = (LIGHT_IES, i.position(), i.nadir(), i.reference(), i.tint(), base);
+                (g.kind, g.p0, g.p1, g.p2, g.intensity, g.ies_base) =
+                    (LIGHT_IES, i.position(), i.nadir(), i.reference(), i.tint(), base);
             }
             Light::Triangle(t) => {
                 let [a, b, c] = t.vertices();
-                (g.kind, g.p0, g.p1, g.p2, g.a, g.intensity) = (LIGHT_TRIANGLE, a, b, c, t.area(), t.radiance());
+                (g.kind, g.p0, g.p1, g.p2, g.a, g.intensity) =
+                    (LIGHT_TRIANGLE, a, b, c, t.area(), t.radiance());
             }
         }
         out.push(g);

@@ -108,7 +108,8 @@ impl LightTypes {
     pub const NAMES: [&'static str; 5] = ["point", "spot", "ies", "triangle", "vpl"];
 
     /// Every light type.
-    pub const ALL: LightTypes = LightTypes { point: true, spot: true, ies: true, triangle: true, vpl: true };
+    pub const ALL: LightTypes =
+        LightTypes { point: true, spot: true, ies: true, triangle: true, vpl: true };
 
     /// Parses a comma-separated list such as `point,spot,ies`.
     pub fn parse(list: &str) -> Result<LightTypes, ShaderError> {
@@ -121,7 +122,9 @@ impl LightTypes {
                 "triangle" => s.triangle = true,
                 "vpl" => s.vpl = true,
                 other => {
-                    return Err(ShaderError::Unsupported(format!("unknown light type '{other}' (known: point, spot, ies, triangle, vpl)")));
+                    return Err(ShaderError::Unsupported(format!(
+                        "unknown light type '{other}' (known: point, spot, ies, triangle, vpl)"
+                    )));
                 }
             }
         }
@@ -130,7 +133,13 @@ impl LightTypes {
 
     /// The set with bit `i` of `bits` standing for `NAMES[i]`.
     pub fn from_bits(bits: u32) -> LightTypes {
-        LightTypes { point: bits & 1 != 0, spot: bits & 2 != 0, ies: bits & 4 != 0, triangle: bits & 8 != 0, vpl: bits & 16 != 0 }
+        LightTypes {
+            point: bits & 1 != 0,
+            spot: bits & 2 != 0,
+            ies: bits & 4 != 0,
+            triangle: bits & 8 != 0,
+            vpl: bits & 16 != 0,
+        }
     }
 
     fn flags(&self) -> [bool; 5] {
@@ -504,14 +513,27 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
         return bad(format!("workgroup size {} must be in 1..=256", f.workgroup_size));
     }
     match kernel {
-        Kernel::VplDenoise | Kernel::VplPack | Kernel::IrradianceExport | Kernel::PrimaryDirect | Kernel::FrameCompose | Kernel::Temporal
+        Kernel::VplDenoise
+        | Kernel::VplPack
+        | Kernel::IrradianceExport
+        | Kernel::PrimaryDirect
+        | Kernel::FrameCompose
+        | Kernel::Temporal
             if !(1..=16).contains(&f.tile_size) || !(1..=16).contains(&f.interleave) =>
         {
-            return bad(format!("{}: tile {} and period {} must be in 1..=16", kernel.name(), f.tile_size, f.interleave));
+            return bad(format!(
+                "{}: tile {} and period {} must be in 1..=16",
+                kernel.name(),
+                f.tile_size,
+                f.interleave
+            ));
         }
         Kernel::VplTiled => {
             if f.lights != (LightTypes { vpl: true, ..LightTypes::default() }) {
-                return bad(format!("vpl_tiled shades VPLs only; the scene asks for [{}]", f.lights.names().join(", ")));
+                return bad(format!(
+                    "vpl_tiled shades VPLs only; the scene asks for [{}]",
+                    f.lights.names().join(", ")
+                ));
             }
             if !(1..=16).contains(&f.tile_size) || !f.tile_size.is_power_of_two() {
                 return bad(format!("tile size {} must be a power of two in 1..=16", f.tile_size));
@@ -529,12 +551,21 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
         }
         Kernel::VplNear => {
             if f.lights != (LightTypes { vpl: true, ..LightTypes::default() }) {
-                return bad(format!("vpl_near shades VPLs only; the scene asks for [{}]", f.lights.names().join(", ")));
+                return bad(format!(
+                    "vpl_near shades VPLs only; the scene asks for [{}]",
+                    f.lights.names().join(", ")
+                ));
             }
             // Workgroup memory: two vec3f and a block slot per thread, the
             // light list of one block, two counters; at most 256 threads.
-            if !(1..=16).contains(&f.tile_size) || !f.tile_size.is_power_of_two() || !(1..=16).contains(&f.interleave) {
-                return bad(format!("vpl_near: tile {} must be a power of two in 1..=16, period {} in 1..=16", f.tile_size, f.interleave));
+            if !(1..=16).contains(&f.tile_size)
+                || !f.tile_size.is_power_of_two()
+                || !(1..=16).contains(&f.interleave)
+            {
+                return bad(format!(
+                    "vpl_near: tile {} must be a power of two in 1..=16, period {} in 1..=16",
+                    f.tile_size, f.interleave
+                ));
             }
         }
         Kernel::DirectLight => {
@@ -542,7 +573,10 @@ pub fn check(kernel: Kernel, f: &Features) -> Result<(), ShaderError> {
                 return bad("direct_light needs at least one light type".into());
             }
             if !matches!(f.selection, Selection::Reservoir | Selection::Weighted | Selection::All) {
-                return bad(format!("direct_light picks lights by reservoir, weighted or all, not {:?}", f.selection));
+                return bad(format!(
+                    "direct_light picks lights by reservoir, weighted or all, not {:?}",
+                    f.selection
+                ));
             }
             if !(1..=16).contains(&f.tile_size) {
                 return bad(format!("direct_light: tile {} must be in 1..=16", f.tile_size));
@@ -577,7 +611,8 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
     env.set_lstrip_blocks(true);
     env.set_keep_trailing_newline(true);
     for (name, src) in TEMPLATES {
-        env.add_template(name, src).map_err(|e| ShaderError::Template { kernel: kernel.name(), message: e.to_string() })?;
+        env.add_template(name, src)
+            .map_err(|e| ShaderError::Template { kernel: kernel.name(), message: e.to_string() })?;
     }
     // The frame kernels light the scene with the primary light (a spot, or
     // a directional light, which needs no light type).
@@ -647,7 +682,10 @@ impl Generated {
         naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
         let info = Validator::new(ValidationFlags::all(), Capabilities::default())
             .validate(&module)
-            .map_err(|e| ShaderError::Naga { kernel: self.kernel.name(), message: format!("after compaction: {e}") })?;
+            .map_err(|e| ShaderError::Naga {
+                kernel: self.kernel.name(),
+                message: format!("after compaction: {e}"),
+            })?;
         Ok(Generated { kernel: self.kernel, source: self.source.clone(), module, info })
     }
 }
@@ -658,8 +696,12 @@ pub fn generate(kernel: Kernel, features: &Features) -> Result<String, ShaderErr
 }
 
 /// Parses and validates WGSL with naga (WebGPU's baseline capabilities).
-pub fn validate(kernel: &'static str, source: &str) -> Result<(naga::Module, ModuleInfo), ShaderError> {
-    let module = naga::front::wgsl::parse_str(source).map_err(|e| ShaderError::Naga { kernel, message: e.emit_to_string(source) })?;
+pub fn validate(
+    kernel: &'static str,
+    source: &str,
+) -> Result<(naga::Module, ModuleInfo), ShaderError> {
+    let module = naga::front::wgsl::parse_str(source)
+        .map_err(|e| ShaderError::Naga { kernel, message: e.emit_to_string(source) })?;
     let info = Validator::new(ValidationFlags::all(), Capabilities::default())
         .validate(&module)
         .map_err(|e| ShaderError::Naga { kernel, message: e.emit_to_string(source) })?;
@@ -685,7 +727,13 @@ pub struct Translations {
 /// Translates a generated kernel to SPIR-V, GLSL, HLSL and MSL.
 pub fn translate(g: &Generated) -> Result<Translations, ShaderError> {
     let kernel = g.kernel.name();
-    let err = |backend: &'static str| move |e: &dyn std::fmt::Display| ShaderError::Translate { kernel, backend, message: e.to_string() };
+    let err = |backend: &'static str| {
+        move |e: &dyn std::fmt::Display| ShaderError::Translate {
+            kernel,
+            backend,
+            message: e.to_string(),
+        }
+    };
     // naga's default adds debug names only in debug builds: fix the flags
     // (names included) so the SPIR-V does not depend on the build profile.
     let spv_flags = naga::back::spv::WriterFlags::ADJUST_COORDINATE_SPACE
@@ -693,25 +741,46 @@ pub fn translate(g: &Generated) -> Result<Translations, ShaderError> {
         | naga::back::spv::WriterFlags::CLAMP_FRAG_DEPTH
         | naga::back::spv::WriterFlags::DEBUG;
     let spv_opts = naga::back::spv::Options { flags: spv_flags, ..Default::default() };
-    let spv = naga::back::spv::write_vec(&g.module, &g.info, &spv_opts, None).map_err(|e| err("spv")(&e))?;
+    let spv = naga::back::spv::write_vec(&g.module, &g.info, &spv_opts, None)
+        .map_err(|e| err("spv")(&e))?;
     let mut glsl_entries = Vec::new();
     for &(entry, stage) in g.kernel.entry_points() {
         let mut out = String::new();
-        let glsl_opts = naga::back::glsl::Options { version: naga::back::glsl::Version::Desktop(430), ..Default::default() };
-        let glsl_pipe = naga::back::glsl::PipelineOptions { shader_stage: stage, entry_point: entry.into(), multiview: None };
-        naga::back::glsl::Writer::new(&mut out, &g.module, &g.info, &glsl_opts, &glsl_pipe, naga::proc::BoundsCheckPolicies::default())
-            .and_then(|mut w| w.write())
-            .map_err(|e| err("glsl")(&e))?;
+        let glsl_opts = naga::back::glsl::Options {
+            version: naga::back::glsl::Version::Desktop(430),
+            ..Default::default()
+        };
+        let glsl_pipe = naga::back::glsl::PipelineOptions {
+            shader_stage: stage,
+            entry_point: entry.into(),
+            multiview: None,
+        };
+        naga::back::glsl::Writer::new(
+            &mut out,
+            &g.module,
+            &g.info,
+            &glsl_opts,
+            &glsl_pipe,
+            naga::proc::BoundsCheckPolicies::default(),
+        )
+        .and_then(|mut w| w.write())
+        .map_err(|e| err("glsl")(&e))?;
         glsl_entries.push((entry.to_string(), out));
     }
     let glsl = glsl_entries[0].1.clone();
     let mut hlsl = String::new();
     let hlsl_opts = naga::back::hlsl::Options::default();
     let hlsl_pipe = naga::back::hlsl::PipelineOptions::default();
-    naga::back::hlsl::Writer::new(&mut hlsl, &hlsl_opts, &hlsl_pipe).write(&g.module, &g.info, None).map_err(|e| err("hlsl")(&e))?;
-    let (msl, _) =
-        naga::back::msl::write_string(&g.module, &g.info, &naga::back::msl::Options::default(), &naga::back::msl::PipelineOptions::default())
-            .map_err(|e| err("msl")(&e))?;
+    naga::back::hlsl::Writer::new(&mut hlsl, &hlsl_opts, &hlsl_pipe)
+        .write(&g.module, &g.info, None)
+        .map_err(|e| err("hlsl")(&e))?;
+    let (msl, _) = naga::back::msl::write_string(
+        &g.module,
+        &g.info,
+        &naga::back::msl::Options::default(),
+        &naga::back::msl::PipelineOptions::default(),
+    )
+    .map_err(|e| err("msl")(&e))?;
     Ok(Translations { spv, glsl, glsl_entries, hlsl, msl })
 }
 
@@ -721,8 +790,17 @@ pub fn translate(g: &Generated) -> Result<Translations, ShaderError> {
 pub fn all_kernels(features: &Features) -> Result<Vec<Generated>, ShaderError> {
     Kernel::ALL
         .iter()
-        .filter(|&&k| !k.is_vpl_frame() || features.lights == LightTypes { vpl: true, ..LightTypes::default() })
-        .filter(|&&k| k != Kernel::DirectLight || matches!(features.selection, Selection::Reservoir | Selection::Weighted | Selection::All))
+        .filter(|&&k| {
+            !k.is_vpl_frame()
+                || features.lights == LightTypes { vpl: true, ..LightTypes::default() }
+        })
+        .filter(|&&k| {
+            k != Kernel::DirectLight
+                || matches!(
+                    features.selection,
+                    Selection::Reservoir | Selection::Weighted | Selection::All
+                )
+        })
         .map(|&k| generate_module(k, features))
         .collect()
 }

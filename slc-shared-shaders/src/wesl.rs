@@ -85,9 +85,16 @@ mod tests {
     fn modules_are_plain_wesl() {
         let m = super::modules();
         let ies = m.iter().find(|m| m.name == "ies").unwrap();
-        assert!(ies.source.contains("@group(1) @binding(0) var<storage, read> slc_table: array<f32>;"), "{}", ies.source);
+        assert!(
+            ies.source.contains("@group(1) @binding(0) var<storage, read> slc_table: array<f32>;"),
+            "{}",
+            ies.source
+        );
         assert!(m.iter().all(|m| !m.source.contains('#')), "no naga_oil directives");
-        assert!(m.iter().filter(|m| m.source.contains("\nimport super::")).count() > 5, "the modules import each other");
+        assert!(
+            m.iter().filter(|m| m.source.contains("\nimport super::")).count() > 5,
+            "the modules import each other"
+        );
         assert!(range_has_public(&m), "items are public");
     }
 }

@@ -11,10 +11,17 @@ use slc_shared_shaders::*;
 fn feature_sets() -> Vec<Features> {
     let vpl = LightTypes { vpl: true, ..LightTypes::default() };
     let mut v = Vec::new();
-    for lights in [LightTypes::ALL, vpl, LightTypes::parse("point,ies").unwrap(), LightTypes::parse("triangle").unwrap()] {
-        for (selection, surface) in
-            [(Selection::Reservoir, SurfaceSource::Position), (Selection::Weighted, SurfaceSource::Depth), (Selection::All, SurfaceSource::R32Depth)]
-        {
+    for lights in [
+        LightTypes::ALL,
+        vpl,
+        LightTypes::parse("point,ies").unwrap(),
+        LightTypes::parse("triangle").unwrap(),
+    ] {
+        for (selection, surface) in [
+            (Selection::Reservoir, SurfaceSource::Position),
+            (Selection::Weighted, SurfaceSource::Depth),
+            (Selection::All, SurfaceSource::R32Depth),
+        ] {
             for (shadows, vpl_source, direct_output) in [
                 (true, VplSource::Rsm, DirectOutput::Irradiance),
                 (false, VplSource::Buffer, DirectOutput::Split),
@@ -22,7 +29,16 @@ fn feature_sets() -> Vec<Features> {
             ] {
                 // The glossy VPL kernels with the split direct output.
                 let glossy = direct_output == DirectOutput::Split;
-                v.push(Features { lights, selection, surface, shadows, vpl_source, direct_output, glossy, ..Features::default() });
+                v.push(Features {
+                    lights,
+                    selection,
+                    surface,
+                    shadows,
+                    vpl_source,
+                    direct_output,
+                    glossy,
+                    ..Features::default()
+                });
             }
         }
     }
@@ -34,16 +50,27 @@ fn tables_match_the_modules() {
     let mut checked = 0;
     for f in feature_sets() {
         for &kernel in &Kernel::ALL {
-            if kernel.is_vpl_frame() && f.lights != (LightTypes { vpl: true, ..LightTypes::default() }) {
+            if kernel.is_vpl_frame()
+                && f.lights != (LightTypes { vpl: true, ..LightTypes::default() })
+            {
                 continue;
             }
-            let g = generate_module(kernel, &f).unwrap_or_else(|e| panic!("{} {f:?}: {e}", kernel.name()));
+            let g = generate_module(kernel, &f)
+                .unwrap_or_else(|e| panic!("{} {f:?}: {e}", kernel.name()));
             let mut table = bindings(kernel, &f);
             table.sort_by_key(|b| (b.group, b.binding));
             // naga orders globals by use, not by declaration: compare by slot.
-            let mut globals: Vec<_> = g.module.global_variables.iter().filter(|(_, v)| v.binding.is_some()).collect();
+            let mut globals: Vec<_> =
+                g.module.global_variables.iter().filter(|(_, v)| v.binding.is_some()).collect();
             globals.sort_by_key(|(_, v)| v.binding.as_ref().map(|b| (b.group, b.binding)));
-            assert_eq!(globals.len(), table.len(), "{}: {} globals, {} table entries", kernel.name(), globals.len(), table.len());
+            assert_eq!(
+                globals.len(),
+                table.len(),
+                "{}: {} globals, {} table entries",
+                kernel.name(),
+                globals.len(),
+                table.len()
+            );
             for ((handle, var), b) in globals.into_iter().zip(&table) {
                 let rb = var.binding.as_ref().unwrap();
                 let what = format!("{} {}", kernel.name(), b.name);
@@ -51,22 +78,48 @@ fn tables_match_the_modules() {
                 assert_eq!(var.name.as_deref(), Some(b.name), "{what}");
                 let inner = &g.module.types[var.ty].inner;
                 match b.resource {
-                    Resource::Uniform { .. } => assert_eq!(var.space, AddressSpace::Uniform, "{what}"),
+                    Resource::Uniform { .. } => {
+                        assert_eq!(var.space, AddressSpace::Uniform, "{what}")
+                    }
                     Resource::Read(_) => {
-                        assert_eq!(var.space, AddressSpace::Storage { access: StorageAccess::LOAD }, "{what}")
+                        assert_eq!(
+                            var.space,
+                            AddressSpace::Storage { access: StorageAccess::LOAD },
+                            "{what}"
+                        )
                     }
                     Resource::ReadWrite(_) => {
-                        assert_eq!(var.space, AddressSpace::Storage { access: StorageAccess::LOAD | StorageAccess::STORE }, "{what}")
+                        assert_eq!(
+                            var.space,
+                            AddressSpace::Storage {
+                                access: StorageAccess::LOAD | StorageAccess::STORE
+                            },
+                            "{what}"
+                        )
                     }
                     Resource::Texture => {
-                        assert!(matches!(inner, TypeInner::Image { class: ImageClass::Sampled { .. }, .. }), "{what}: {inner:?}")
+                        assert!(
+                            matches!(
+                                inner,
+                                TypeInner::Image { class: ImageClass::Sampled { .. }, .. }
+                            ),
+                            "{what}: {inner:?}"
+                        )
                     }
-                    Resource::DepthTexture => assert!(matches!(inner, TypeInner::Image { class: ImageClass::Depth { .. }, .. }), "{what}"),
-                    Resource::StorageTexture(_) => assert!(matches!(inner, TypeInner::Image { class: ImageClass::Storage { .. }, .. }), "{what}"),
+                    Resource::DepthTexture => assert!(
+                        matches!(inner, TypeInner::Image { class: ImageClass::Depth { .. }, .. }),
+                        "{what}"
+                    ),
+                    Resource::StorageTexture(_) => assert!(
+                        matches!(inner, TypeInner::Image { class: ImageClass::Storage { .. }, .. }),
+                        "{what}"
+                    ),
                 }
                 // A bound entry is used by an entry point; an unbound one by none.
                 let used = g.info.get_entry_point(0)[handle] != naga::valid::GlobalUse::empty()
-                    || (0..g.module.entry_points.len()).any(|e| g.info.get_entry_point(e)[handle] != naga::valid::GlobalUse::empty());
+                    || (0..g.module.entry_points.len()).any(|e| {
+                        g.info.get_entry_point(e)[handle] != naga::valid::GlobalUse::empty()
+                    });
                 if !b.bound {
                     assert!(!used, "{what}: marked unbound but used");
                 }
@@ -80,7 +133,11 @@ fn tables_match_the_modules() {
 /// The declarations the templates receive are the table's, line for line.
 #[test]
 fn declarations_are_the_tables() {
-    let f = Features { selection: Selection::Weighted, surface: SurfaceSource::Depth, ..Features::default() };
+    let f = Features {
+        selection: Selection::Weighted,
+        surface: SurfaceSource::Depth,
+        ..Features::default()
+    };
     let decl = bindings::declarations(&bindings(Kernel::DirectLight, &f));
     let src = generate(Kernel::DirectLight, &f).unwrap();
     for line in decl.lines() {
@@ -99,5 +156,8 @@ fn binding_docs_are_current() {
         std::fs::write(&path, &want).unwrap();
     }
     let have = std::fs::read_to_string(&path).unwrap_or_default();
-    assert!(have == want, "docs/bindings.md is stale: run SLC_BLESS=1 cargo test -p slc-shared-shaders --test bindings");
+    assert!(
+        have == want,
+        "docs/bindings.md is stale: run SLC_BLESS=1 cargo test -p slc-shared-shaders --test bindings"
+    );
 }

@@ -25,36 +25,127 @@ fn rust_twins_match_naga_layout() {
         fields!(GpuLight, p0, kind, p1, a, p2, b, intensity, ies_base),
         fields!(GpuGeoNode, bmin, first, bmax, count),
         fields!(GpuTriangle, v0, material, v1, light, v2, pad),
-        fields!(GpuPathState, origin, alive, dir, rng, beta, pdf_bsdf, prev, pad, prev_normal, pad2, prev_r, pad3, prev_lobe),
-        fields!(PtParams, cam_pos, width, cam_right, height, cam_up, depth, cam_forward, seed, pass_index, max_depth, eps, t_min),
+        fields!(
+            GpuPathState,
+            origin,
+            alive,
+            dir,
+            rng,
+            beta,
+            pdf_bsdf,
+            prev,
+            pad,
+            prev_normal,
+            pad2,
+            prev_r,
+            pad3,
+            prev_lobe
+        ),
+        fields!(
+            PtParams,
+            cam_pos,
+            width,
+            cam_right,
+            height,
+            cam_up,
+            depth,
+            cam_forward,
+            seed,
+            pass_index,
+            max_depth,
+            eps,
+            t_min
+        ),
         fields!(GpuLightCone, center, radius, axis, cos_o, phi, cos_e, bvh_leaf, pad),
         fields!(GpuLightBvhNode, center, radius, axis, cos_o, phi, cos_e, second, light),
-        fields!(GpuPathVertex, position, alive, normal, material, weight, pad1, gnormal, pad2, wo, pad3),
+        fields!(
+            GpuPathVertex,
+            position,
+            alive,
+            normal,
+            material,
+            weight,
+            pad1,
+            gnormal,
+            pad2,
+            wo,
+            pad3
+        ),
         fields!(FrameParams, light_count, seed, frame, pad),
         fields!(RefitParams, first, count, pad0, pad1),
-        fields!(VplParams, width, height, lights_per_subset, min_d2, near_r2, near_blocks, subset_shift, pad1),
+        fields!(
+            VplParams,
+            width,
+            height,
+            lights_per_subset,
+            min_d2,
+            near_r2,
+            near_blocks,
+            subset_shift,
+            pad1
+        ),
         fields!(GpuNearBox, lo, pad0, hi, pad1),
         fields!(ShadeParams, point_count, seed, frame, eps),
         fields!(GpuVplRecord, position, pad0, normal, pad1, flux, pad2),
-        fields!(PackParams, count, size, per_subset, mode, exposure, error_bound, scale, slc, fixed_r2, pad0, pad1, pad2),
+        fields!(
+            PackParams,
+            count,
+            size,
+            per_subset,
+            mode,
+            exposure,
+            error_bound,
+            scale,
+            slc,
+            fixed_r2,
+            pad0,
+            pad1,
+            pad2
+        ),
         fields!(ImageParams, eye, width, height, pad0, pad1, pad2),
         fields!(ViewParams, c0, c1, c2, c3, eye, width, height, pad0, seed, frame, f0_d, f90_d),
-        fields!(CullParams, light_count, seed, frame, slc, mode, exposure, error_bound, fixed_r2, unculled, pad0, pad1, pad2),
+        fields!(
+            CullParams,
+            light_count,
+            seed,
+            frame,
+            slc,
+            mode,
+            exposure,
+            error_bound,
+            fixed_r2,
+            unculled,
+            pad0,
+            pad1,
+            pad2
+        ),
         fields!(GpuVertex, position, material, normal, pad0, geo_normal, pad1),
         fields!(GpuMaterial, albedo, metallic, emission, alpha, f0, f90),
-        fields!(MapParams, c0, c1, c2, c3, light, origin, mode, axis, size, right, extent, up, texel),
+        fields!(
+            MapParams, c0, c1, c2, c3, light, origin, mode, axis, size, right, extent, up, texel
+        ),
         fields!(slc_core::bsh::BshNode, center, radius, child, next, light, extent),
     ];
     for (name, size, offsets) in structs {
         let name = name.rsplit("::").next().unwrap().trim();
-        let (handle, ty) = module.types.iter().find(|(_, t)| t.name.as_deref() == Some(name)).unwrap_or_else(|| panic!("{name} not in WGSL"));
-        let naga::TypeInner::Struct { members, span } = &ty.inner else { panic!("{name} is not a struct") };
+        let (handle, ty) = module
+            .types
+            .iter()
+            .find(|(_, t)| t.name.as_deref() == Some(name))
+            .unwrap_or_else(|| panic!("{name} not in WGSL"));
+        let naga::TypeInner::Struct { members, span } = &ty.inner else {
+            panic!("{name} is not a struct")
+        };
         assert_eq!(*span as usize, size, "{name}: WGSL size {span} vs Rust {size}");
         assert_eq!(layouter[handle].size as usize, size, "{name} size");
         assert_eq!(members.len(), offsets.len(), "{name} field count");
         for (m, (field, off)) in members.iter().zip(offsets) {
             assert_eq!(m.name.as_deref(), Some(field), "{name} field order");
-            assert_eq!(m.offset as usize, off, "{name}.{field}: WGSL offset {} vs Rust {off}", m.offset);
+            assert_eq!(
+                m.offset as usize, off,
+                "{name}.{field}: WGSL offset {} vs Rust {off}",
+                m.offset
+            );
         }
         // Uniform buffers need 16-byte multiples.
         assert_eq!(size % 16, 0, "{name} size {size}");
@@ -67,7 +158,9 @@ fn rust_twins_match_naga_layout() {
 /// few list capacities.
 #[test]
 fn vpl_tiled_workgroup_bytes_match_naga() {
-    use slc_shared_shaders::{CullMethod, Features, Kernel, LightTypes, generate_module, vpl_tiled_workgroup_bytes};
+    use slc_shared_shaders::{
+        CullMethod, Features, Kernel, LightTypes, generate_module, vpl_tiled_workgroup_bytes,
+    };
     for tile in [1u32, 2, 4, 8, 16] {
         for list in [1u32, 100, 1024] {
             let f = Features {
@@ -90,7 +183,11 @@ fn vpl_tiled_workgroup_bytes_match_naga() {
                 .filter(|(_, v)| v.space == naga::AddressSpace::WorkGroup)
                 .map(|(_, v)| layouter[v.ty].size as u64)
                 .sum();
-            assert_eq!(vpl_tiled_workgroup_bytes(tile, list), naga_bytes, "tile {tile}, list {list}");
+            assert_eq!(
+                vpl_tiled_workgroup_bytes(tile, list),
+                naga_bytes,
+                "tile {tile}, list {list}"
+            );
         }
     }
 }

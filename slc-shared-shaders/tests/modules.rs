@@ -1,7 +1,9 @@
 //! slc-core's shared WGSL as composable modules (`slc_core::wgsl::modules`),
 //! imported by a user shader through naga_oil, the composer Bevy uses.
 
-use naga_oil::compose::{ComposableModuleDescriptor, Composer, NagaModuleDescriptor, ShaderDefValue, ShaderLanguage};
+use naga_oil::compose::{
+    ComposableModuleDescriptor, Composer, NagaModuleDescriptor, ShaderDefValue, ShaderLanguage,
+};
 use std::collections::HashMap;
 
 /// A composer holding every slc module (`slc::prelude`, `slc::xi`, …).
@@ -28,13 +30,22 @@ fn composer() -> Composer {
 
 /// Composes `src` and validates it with naga.
 fn compose(c: &mut Composer, src: &str, defs: &[(&str, u32)]) -> naga::Module {
-    let shader_defs: HashMap<String, ShaderDefValue> = defs.iter().map(|&(k, v)| (k.to_string(), ShaderDefValue::UInt(v))).collect();
+    let shader_defs: HashMap<String, ShaderDefValue> =
+        defs.iter().map(|&(k, v)| (k.to_string(), ShaderDefValue::UInt(v))).collect();
     let module = c
-        .make_naga_module(NagaModuleDescriptor { source: src, file_path: "user.wgsl", shader_defs, ..Default::default() })
+        .make_naga_module(NagaModuleDescriptor {
+            source: src,
+            file_path: "user.wgsl",
+            shader_defs,
+            ..Default::default()
+        })
         .unwrap_or_else(|e| panic!("{}", e.emit_to_string(c)));
-    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::empty())
-        .validate(&module)
-        .unwrap_or_else(|e| panic!("composed shader does not validate: {e:?}"));
+    naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::empty(),
+    )
+    .validate(&module)
+    .unwrap_or_else(|e| panic!("composed shader does not validate: {e:?}"));
     module
 }
 
@@ -47,8 +58,16 @@ fn modules_partition_the_library() {
     for m in &modules {
         for (dep, items) in &m.imports {
             let d = modules.iter().position(|x| x.name == *dep).unwrap();
-            assert!(d < modules.iter().position(|x| x.name == m.name).unwrap(), "{} imports the later {dep}", m.name);
-            assert!(items.iter().all(|i| modules[d].items.contains(i)), "{} imports {items:?} from {dep}", m.name);
+            assert!(
+                d < modules.iter().position(|x| x.name == m.name).unwrap(),
+                "{} imports the later {dep}",
+                m.name
+            );
+            assert!(
+                items.iter().all(|i| modules[d].items.contains(i)),
+                "{} imports {items:?} from {dep}",
+                m.name
+            );
         }
         for i in &m.items {
             assert!(!seen.contains(i), "{i} defined twice");
@@ -89,7 +108,11 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
 "#;
     let m = compose(&mut c, src, &[]);
     let globals: Vec<_> = m.global_variables.iter().filter_map(|(_, g)| g.binding).collect();
-    assert_eq!(globals, [naga::ResourceBinding { group: 0, binding: 0 }], "only the shader's own buffer is bound");
+    assert_eq!(
+        globals,
+        [naga::ResourceBinding { group: 0, binding: 0 }],
+        "only the shader's own buffer is bound"
+    );
 }
 
 /// Importing the IES lookup brings in its table, at the group and binding
@@ -107,10 +130,20 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
     out[id.x] = ies_candela_dir(0u, 0u, 1.0, 0.0, 0.0);
 }
 "#;
-    for (defs, want) in [(&[][..], (1, 0)), (&[("SLC_TABLE_GROUP", 2), ("SLC_TABLE_BINDING", 5)][..], (2, 5))] {
+    for (defs, want) in
+        [(&[][..], (1, 0)), (&[("SLC_TABLE_GROUP", 2), ("SLC_TABLE_BINDING", 5)][..], (2, 5))]
+    {
         let mut c = composer();
         let m = compose(&mut c, src, defs);
-        let table = m.global_variables.iter().find(|(_, g)| g.binding.as_ref().is_some_and(|b| b.group != 0)).map(|(_, g)| g.binding.unwrap());
-        assert_eq!(table, Some(naga::ResourceBinding { group: want.0, binding: want.1 }), "defs {defs:?}");
+        let table = m
+            .global_variables
+            .iter()
+            .find(|(_, g)| g.binding.as_ref().is_some_and(|b| b.group != 0))
+            .map(|(_, g)| g.binding.unwrap());
+        assert_eq!(
+            table,
+            Some(naga::ResourceBinding { group: want.0, binding: want.1 }),
+            "defs {defs:?}"
+        );
     }
 }

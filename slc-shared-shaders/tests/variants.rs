@@ -30,8 +30,15 @@ fn every_bsh_variant_validates() {
                     (Kernel::PtExtend, Selection::Power),
                     (Kernel::PtExtend, Selection::LightBvh),
                 ] {
-                    let f = Features { lights, reservoir_k: k, heuristic, selection, ..Features::default() };
-                    let g = generate_module(kernel, &f).unwrap_or_else(|e| panic!("{:?} {f:?}: {e}", kernel));
+                    let f = Features {
+                        lights,
+                        reservoir_k: k,
+                        heuristic,
+                        selection,
+                        ..Features::default()
+                    };
+                    let g = generate_module(kernel, &f)
+                        .unwrap_or_else(|e| panic!("{:?} {f:?}: {e}", kernel));
                     // Only the scene's light types are compiled in.
                     for (name, case) in [
                         ("point", "LIGHT_POINT:"),
@@ -41,7 +48,12 @@ fn every_bsh_variant_validates() {
                         ("vpl", "LIGHT_VPL:"),
                     ] {
                         let wanted = lights.names().contains(&name);
-                        assert_eq!(g.source.contains(&format!("case {case}")), wanted, "{name} in {:?} {f:?}", kernel);
+                        assert_eq!(
+                            g.source.contains(&format!("case {case}")),
+                            wanted,
+                            "{name} in {:?} {f:?}",
+                            kernel
+                        );
                     }
                     n += 1;
                 }
@@ -50,7 +62,8 @@ fn every_bsh_variant_validates() {
     }
     for wg in [1, 32, 64, 256] {
         for kernel in [Kernel::LightUpdate, Kernel::BshRefit] {
-            generate_module(kernel, &Features { workgroup_size: wg, ..Features::default() }).unwrap();
+            generate_module(kernel, &Features { workgroup_size: wg, ..Features::default() })
+                .unwrap();
             n += 1;
         }
     }
@@ -63,11 +76,21 @@ fn every_vpl_variant_validates() {
         for period in [1, 4, 8, 16] {
             for method in [CullMethod::Slc, CullMethod::Clamp, CullMethod::None] {
                 for max_tile_lights in [64, 1024, 2048] {
-                    let f = Features { lights: vpl_only(), tile_size: tile, interleave: period, method, max_tile_lights, ..Features::default() };
+                    let f = Features {
+                        lights: vpl_only(),
+                        tile_size: tile,
+                        interleave: period,
+                        method,
+                        max_tile_lights,
+                        ..Features::default()
+                    };
                     let r = generate_module(Kernel::VplTiled, &f);
                     let bytes = 32 * tile * tile + 4 * max_tile_lights + 4;
                     if bytes > 16384 {
-                        assert!(matches!(r, Err(ShaderError::Unsupported(_))), "{f:?} should not fit workgroup memory");
+                        assert!(
+                            matches!(r, Err(ShaderError::Unsupported(_))),
+                            "{f:?} should not fit workgroup memory"
+                        );
                     } else {
                         r.unwrap_or_else(|e| panic!("{f:?}: {e}"));
                     }
@@ -79,13 +102,22 @@ fn every_vpl_variant_validates() {
 
 #[test]
 fn every_kernel_translates_to_every_backend() {
-    let sets = [LightTypes::ALL, LightTypes::parse("triangle").unwrap(), LightTypes::parse("point,ies").unwrap(), vpl_only()];
+    let sets = [
+        LightTypes::ALL,
+        LightTypes::parse("triangle").unwrap(),
+        LightTypes::parse("point,ies").unwrap(),
+        vpl_only(),
+    ];
     for lights in sets {
         for g in all_kernels(&Features { lights, ..Features::default() }).unwrap() {
             let t = translate(&g).unwrap_or_else(|e| panic!("{e}"));
             assert!(t.spv.len() > 100 && t.spv[0] == 0x0723_0203, "SPIR-V magic");
             assert_eq!(t.glsl_entries.len(), g.kernel.entry_points().len());
-            assert!(t.glsl_entries.iter().all(|(_, src)| src.contains("void main()")), "{}", g.kernel.name());
+            assert!(
+                t.glsl_entries.iter().all(|(_, src)| src.contains("void main()")),
+                "{}",
+                g.kernel.name()
+            );
             if g.kernel == Kernel::SceneRaster {
                 assert!(t.msl.contains("vertex ") && t.msl.contains("fragment "), "{}", t.msl);
                 assert!(t.hlsl.contains("vs_main") && t.hlsl.contains("fs_rsm"));
@@ -96,20 +128,41 @@ fn every_kernel_translates_to_every_backend() {
         }
     }
     for method in [CullMethod::Slc, CullMethod::Clamp, CullMethod::None] {
-        let g = generate_module(Kernel::VplTiled, &Features { lights: vpl_only(), method, ..Features::default() }).unwrap();
+        let g = generate_module(
+            Kernel::VplTiled,
+            &Features { lights: vpl_only(), method, ..Features::default() },
+        )
+        .unwrap();
         translate(&g).unwrap_or_else(|e| panic!("{e}"));
     }
 }
 
 #[test]
 fn unsupported_combinations_are_typed_errors() {
-    let unsupported = |k: Kernel, f: Features| assert!(matches!(generate(k, &f), Err(ShaderError::Unsupported(_))), "{k:?} {f:?}");
+    let unsupported = |k: Kernel, f: Features| {
+        assert!(matches!(generate(k, &f), Err(ShaderError::Unsupported(_))), "{k:?} {f:?}")
+    };
     unsupported(Kernel::VplTiled, Features::default());
-    unsupported(Kernel::VplTiled, Features { lights: LightTypes::parse("vpl,point").unwrap(), ..Features::default() });
-    unsupported(Kernel::VplTiled, Features { lights: vpl_only(), tile_size: 3, ..Features::default() });
-    unsupported(Kernel::VplTiled, Features { lights: vpl_only(), tile_size: 32, ..Features::default() });
-    unsupported(Kernel::VplTiled, Features { lights: vpl_only(), interleave: 0, ..Features::default() });
-    unsupported(Kernel::BshReservoir, Features { lights: LightTypes::default(), ..Features::default() });
+    unsupported(
+        Kernel::VplTiled,
+        Features { lights: LightTypes::parse("vpl,point").unwrap(), ..Features::default() },
+    );
+    unsupported(
+        Kernel::VplTiled,
+        Features { lights: vpl_only(), tile_size: 3, ..Features::default() },
+    );
+    unsupported(
+        Kernel::VplTiled,
+        Features { lights: vpl_only(), tile_size: 32, ..Features::default() },
+    );
+    unsupported(
+        Kernel::VplTiled,
+        Features { lights: vpl_only(), interleave: 0, ..Features::default() },
+    );
+    unsupported(
+        Kernel::BshReservoir,
+        Features { lights: LightTypes::default(), ..Features::default() },
+    );
     unsupported(Kernel::PtConnect, Features { reservoir_k: 0, ..Features::default() });
     unsupported(Kernel::LightUpdate, Features { workgroup_size: 512, ..Features::default() });
     assert!(matches!(LightTypes::parse("point,laser"), Err(ShaderError::Unsupported(_))));
@@ -129,13 +182,24 @@ fn every_direct_light_variant_validates() {
     let mut n = 0;
     for bits in 1..32 {
         for selection in [Selection::Reservoir, Selection::Weighted, Selection::All] {
-            for surface in [SurfaceSource::Position, SurfaceSource::Depth, SurfaceSource::R32Depth] {
-                for (k, direct_output) in
-                    [(1, DirectOutput::Irradiance), (8, DirectOutput::Radiance), (8, DirectOutput::Split), (8, DirectOutput::BevyRadiance)]
-                {
-                    let f =
-                        Features { lights: LightTypes::from_bits(bits), selection, surface, reservoir_k: k, direct_output, ..Features::default() };
-                    generate_module(Kernel::DirectLight, &f).unwrap_or_else(|e| panic!("{f:?}: {e}"));
+            for surface in [SurfaceSource::Position, SurfaceSource::Depth, SurfaceSource::R32Depth]
+            {
+                for (k, direct_output) in [
+                    (1, DirectOutput::Irradiance),
+                    (8, DirectOutput::Radiance),
+                    (8, DirectOutput::Split),
+                    (8, DirectOutput::BevyRadiance),
+                ] {
+                    let f = Features {
+                        lights: LightTypes::from_bits(bits),
+                        selection,
+                        surface,
+                        reservoir_k: k,
+                        direct_output,
+                        ..Features::default()
+                    };
+                    generate_module(Kernel::DirectLight, &f)
+                        .unwrap_or_else(|e| panic!("{f:?}: {e}"));
                     n += 1;
                 }
             }

@@ -84,10 +84,15 @@ fn templates_spell_no_constants_of_their_own() {
             }
         }
     }
-    assert!(found.is_empty(), "constants typed in templates (move them to slc-core's shared code):\n{}", found.join("\n"));
+    assert!(
+        found.is_empty(),
+        "constants typed in templates (move them to slc-core's shared code):\n{}",
+        found.join("\n")
+    );
     // The lexer itself: it finds what it must.
     let probe = "let a = 0.5 * x; let b = vec3f(1e-4); let c = h ^ 0x9E3779B9u; let d = 2654435769u; let e = arr[3u] + 1.0; // 7.0";
-    let lits: Vec<String> = numeric_literals(&strip(probe)).into_iter().filter(|l| !allowed(l)).collect();
+    let lits: Vec<String> =
+        numeric_literals(&strip(probe)).into_iter().filter(|l| !allowed(l)).collect();
     assert_eq!(lits, ["0.5", "1e-4", "0x9E3779B9u", "2654435769u"]);
 }
 
@@ -130,11 +135,14 @@ fn numeric_literals(src: &str) -> Vec<String> {
             while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
                 i += 1;
             }
-        } else if c.is_ascii_digit() || (c == b'.' && b.get(i + 1).is_some_and(u8::is_ascii_digit)) {
+        } else if c.is_ascii_digit() || (c == b'.' && b.get(i + 1).is_some_and(u8::is_ascii_digit))
+        {
             let start = i;
             while i < b.len() {
                 let d = b[i];
-                let exp_sign = (d == b'-' || d == b'+') && matches!(b[i - 1], b'e' | b'E') && !src[start..i].starts_with("0x");
+                let exp_sign = (d == b'-' || d == b'+')
+                    && matches!(b[i - 1], b'e' | b'E')
+                    && !src[start..i].starts_with("0x");
                 if d.is_ascii_alphanumeric() || d == b'.' || d == b'_' || exp_sign {
                     i += 1;
                 } else {

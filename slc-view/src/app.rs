@@ -59,14 +59,18 @@ impl ApplicationHandler for App {
         match event {
             WindowEvent::CloseRequested => event_loop.exit(),
             WindowEvent::Resized(size) => s.resize(size),
-            WindowEvent::KeyboardInput { event, .. } if !consumed && event.state == ElementState::Pressed => {
+            WindowEvent::KeyboardInput { event, .. }
+                if !consumed && event.state == ElementState::Pressed =>
+            {
                 if event.logical_key == Key::Named(NamedKey::Escape) {
                     event_loop.exit();
                 } else {
                     s.controls.key(&event.logical_key);
                 }
             }
-            WindowEvent::MouseInput { state, button: MouseButton::Left, .. } => s.dragging = state == ElementState::Pressed && !consumed,
+            WindowEvent::MouseInput { state, button: MouseButton::Left, .. } => {
+                s.dragging = state == ElementState::Pressed && !consumed
+            }
             WindowEvent::CursorMoved { position, .. } => {
                 let p = (position.x as f32, position.y as f32);
                 if let (true, Some(last)) = (s.dragging, s.cursor) {
@@ -126,10 +130,19 @@ struct State {
 
 impl State {
     fn new(event_loop: &ActiveEventLoop, opts: &ViewOptions) -> Result<State, ViewError> {
-        let attributes = Window::default_attributes().with_title("slc view").with_inner_size(PhysicalSize::new(opts.width, opts.height));
-        let window = Arc::new(event_loop.create_window(attributes).map_err(|e| ViewError::Window(e.to_string()))?);
-        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_with_display_handle_from_env(Box::new(event_loop.owned_display_handle())));
-        let surface = instance.create_surface(window.clone()).map_err(|e| ViewError::Window(format!("no surface for the window: {e}")))?;
+        let attributes = Window::default_attributes()
+            .with_title("slc view")
+            .with_inner_size(PhysicalSize::new(opts.width, opts.height));
+        let window = Arc::new(
+            event_loop.create_window(attributes).map_err(|e| ViewError::Window(e.to_string()))?,
+        );
+        let instance =
+            wgpu::Instance::new(wgpu::InstanceDescriptor::new_with_display_handle_from_env(
+                Box::new(event_loop.owned_display_handle()),
+            ));
+        let surface = instance
+            .create_surface(window.clone())
+            .map_err(|e| ViewError::Window(format!("no surface for the window: {e}")))?;
         let adapter = slc_wgpu::pick_adapter(&instance, Some(&surface)).map_err(|e| match e {
             slc_wgpu::GpuError::NoAdapter(why) => ViewError::NoAdapter(why),
             e => e.into(),
@@ -144,7 +157,12 @@ impl State {
             .into_iter()
             .find(|f| caps.formats.contains(f))
             .or(caps.formats.first().copied())
-            .ok_or_else(|| ViewError::NoAdapter(format!("{} cannot present to this window", adapter.get_info().name)))?;
+            .ok_or_else(|| {
+                ViewError::NoAdapter(format!(
+                    "{} cannot present to this window",
+                    adapter.get_info().name
+                ))
+            })?;
         let view_format = format.remove_srgb_suffix();
         let size = window.inner_size();
         let config = wgpu::SurfaceConfiguration {
@@ -153,7 +171,11 @@ impl State {
             color_space: wgpu::SurfaceColorSpace::Auto,
             width: size.width.max(1),
             height: size.height.max(1),
-            present_mode: if opts.frames.is_some() { wgpu::PresentMode::AutoNoVsync } else { wgpu::PresentMode::AutoVsync },
+            present_mode: if opts.frames.is_some() {
+                wgpu::PresentMode::AutoNoVsync
+            } else {
+                wgpu::PresentMode::AutoVsync
+            },
             desired_maximum_frame_latency: 2,
             alpha_mode: caps.alpha_modes.first().copied().unwrap_or(wgpu::CompositeAlphaMode::Auto),
             view_formats: if view_format == format { Vec::new() } else { vec![view_format] },
@@ -170,9 +192,26 @@ impl State {
         let mut present = Present::new(&gpu.device, view_format).map_err(ViewError::Setting)?;
         present.bind(&gpu.device, frame.output());
         let egui_ctx = egui::Context::default();
-        let egui_state = egui_winit::State::new(egui_ctx.clone(), egui::ViewportId::ROOT, &window, Some(window.scale_factor() as f32), None, None);
-        let egui_renderer = egui_wgpu::Renderer::new(&gpu.device, view_format, egui_wgpu::RendererOptions::default());
-        let mut controls = Controls::new(opts.settings, opts.scene.primary, opts.scene.camera, opts.scene.diagonal(), opts.rsm_size);
+        let egui_state = egui_winit::State::new(
+            egui_ctx.clone(),
+            egui::ViewportId::ROOT,
+            &window,
+            Some(window.scale_factor() as f32),
+            None,
+            None,
+        );
+        let egui_renderer = egui_wgpu::Renderer::new(
+            &gpu.device,
+            view_format,
+            egui_wgpu::RendererOptions::default(),
+        );
+        let mut controls = Controls::new(
+            opts.settings,
+            opts.scene.primary,
+            opts.scene.camera,
+            opts.scene.diagonal(),
+            opts.rsm_size,
+        );
         controls.animate = opts.animate;
         controls.temporal = opts.temporal;
         controls.orbit = opts.orbit;
@@ -216,21 +255,30 @@ impl State {
         let now = Instant::now();
         let dt = now.duration_since(self.last).as_secs_f32();
         self.last = now;
-        self.frame_seconds = if self.frame_seconds == 0.0 { dt } else { 0.9 * self.frame_seconds + 0.1 * dt };
+        self.frame_seconds =
+            if self.frame_seconds == 0.0 { dt } else { 0.9 * self.frame_seconds + 0.1 * dt };
         // With --frames the light moves by a fixed step per frame, so a
         // screenshot does not depend on the machine's speed.
         self.controls.tick(if opts.frames.is_some() { 1.0 / 60.0 } else { dt });
         // The frame follows the window's size (not with --frames, whose
         // screenshot has the asked size) and the VPL count.
-        let size = if opts.frames.is_some() { (self.desc.width, self.desc.height) } else { (self.config.width, self.config.height) };
-        if self.controls.rsm_edge != self.desc.rsm_size || size != (self.desc.width, self.desc.height) {
-            (self.desc.rsm_size, self.desc.width, self.desc.height) = (self.controls.rsm_edge, size.0, size.1);
+        let size = if opts.frames.is_some() {
+            (self.desc.width, self.desc.height)
+        } else {
+            (self.config.width, self.config.height)
+        };
+        if self.controls.rsm_edge != self.desc.rsm_size
+            || size != (self.desc.width, self.desc.height)
+        {
+            (self.desc.rsm_size, self.desc.width, self.desc.height) =
+                (self.controls.rsm_edge, size.0, size.1);
             self.frame = GpuVplFrame::new(&self.gpu, &opts.scene, &self.desc)?;
             self.present.bind(&self.gpu.device, self.frame.output());
             self.stage_times = None;
             self.shown = None;
         }
-        let (light, camera, temporal) = (self.controls.light(), self.controls.camera(), self.controls.temporal);
+        let (light, camera, temporal) =
+            (self.controls.light(), self.controls.camera(), self.controls.temporal);
         let shown = self.shown.unwrap_or((opts.scene.primary, opts.scene.camera, false));
         if self.shown.is_none() || shown.0 != light {
             self.frame.set_primary(&light)?;
@@ -250,15 +298,20 @@ impl State {
             // The last frame is read back and saved (with the exposure and
             // the display mapping the window uses).
             let out = self.frame.render(&st)?;
-            out.image.write_png(path, settings.exposure).map_err(|e| ViewError::Output(e.to_string()))?;
+            out.image
+                .write_png(path, settings.exposure)
+                .map_err(|e| ViewError::Output(e.to_string()))?;
             self.frame_index += 1;
             return Ok(true);
         }
         let gpu = self.gpu.clone();
-        let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc view frame") });
+        let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("slc view frame"),
+        });
         let timed = self.frame.record_timed(&mut encoder, &st)?;
         let surface_texture = match self.surface.get_current_texture() {
-            wgpu::CurrentSurfaceTexture::Success(t) | wgpu::CurrentSurfaceTexture::Suboptimal(t) => t,
+            wgpu::CurrentSurfaceTexture::Success(t)
+            | wgpu::CurrentSurfaceTexture::Suboptimal(t) => t,
             wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
                 // Resized or lost: configure again and draw the next frame.
                 self.surface.configure(&gpu.device, &self.config);
@@ -269,11 +322,23 @@ impl State {
                 gpu.queue.submit([encoder.finish()]);
                 return Ok(false);
             }
-            wgpu::CurrentSurfaceTexture::Validation => return Err(ViewError::Gpu("the surface's texture failed validation".into())),
+            wgpu::CurrentSurfaceTexture::Validation => {
+                return Err(ViewError::Gpu("the surface's texture failed validation".into()));
+            }
         };
-        let target = surface_texture.texture.create_view(&wgpu::TextureViewDescriptor { format: Some(self.view_format), ..Default::default() });
+        let target = surface_texture.texture.create_view(&wgpu::TextureViewDescriptor {
+            format: Some(self.view_format),
+            ..Default::default()
+        });
         let target_size = (self.config.width, self.config.height);
-        self.present.record(&gpu.queue, &mut encoder, &target, (self.desc.width, self.desc.height), target_size, settings.exposure);
+        self.present.record(
+            &gpu.queue,
+            &mut encoder,
+            &target,
+            (self.desc.width, self.desc.height),
+            target_size,
+            settings.exposure,
+        );
         self.overlay(&mut encoder, &target, target_size);
         gpu.queue.submit([encoder.finish()]);
         self.window.pre_present_notify();
@@ -287,16 +352,27 @@ impl State {
     }
 
     /// The egui panel: adapter, frame rate, per-stage GPU times, controls.
-    fn overlay(&mut self, encoder: &mut wgpu::CommandEncoder, target: &wgpu::TextureView, (w, h): (u32, u32)) {
+    fn overlay(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        (w, h): (u32, u32),
+    ) {
         let input = self.egui_state.take_egui_input(&self.window);
         let (c, fps) = (&mut self.controls, 1.0 / self.frame_seconds.max(1e-6));
-        let (adapter, times, frame_ms) = (self.gpu.describe(), &self.stage_times, 1e3 * self.frame_seconds);
+        let (adapter, times, frame_ms) =
+            (self.gpu.describe(), &self.stage_times, 1e3 * self.frame_seconds);
         let mut output = self.egui_ctx.run_pass(input, |ctx| {
-            egui::Window::new("slc").default_pos([8.0, 8.0]).show(ctx, |ui| panel(ui, c, &adapter, fps, frame_ms, times));
+            egui::Window::new("slc")
+                .default_pos([8.0, 8.0])
+                .show(ctx, |ui| panel(ui, c, &adapter, fps, frame_ms, times));
         });
         self.egui_state.handle_platform_output(&self.window, output.platform_output);
         let jobs = self.egui_ctx.tessellate(output.shapes, output.pixels_per_point);
-        let screen = egui_wgpu::ScreenDescriptor { size_in_pixels: [w, h], pixels_per_point: output.pixels_per_point };
+        let screen = egui_wgpu::ScreenDescriptor {
+            size_in_pixels: [w, h],
+            pixels_per_point: output.pixels_per_point,
+        };
         let (device, queue) = (&self.gpu.device, &self.gpu.queue);
         // Drained: epaint checks (in debug builds) that every delta is applied.
         for (id, deltas) in output.textures_delta.set.drain() {
@@ -328,7 +404,14 @@ impl State {
 }
 
 /// The overlay's contents.
-fn panel(ui: &mut egui::Ui, c: &mut Controls, adapter: &str, fps: f32, frame_ms: f32, times: &Option<Vec<StageTime>>) {
+fn panel(
+    ui: &mut egui::Ui,
+    c: &mut Controls,
+    adapter: &str,
+    fps: f32,
+    frame_ms: f32,
+    times: &Option<Vec<StageTime>>,
+) {
     ui.label(adapter);
     ui.label(format!("{fps:.1} frames/s ({frame_ms:.1} ms)"));
     match times {
@@ -356,16 +439,24 @@ fn panel(ui: &mut egui::Ui, c: &mut Controls, adapter: &str, fps: f32, frame_ms:
         ui.selectable_value(&mut s.method, VplMethod::None, "none [3]");
     });
     match s.method {
-        VplMethod::Clamp => ui.add(egui::Slider::new(&mut s.range, 0.005..=2.0).logarithmic(true).text("range R [+/-]")),
-        _ => ui.add(egui::Slider::new(&mut s.error_bound, 0.0002..=0.5).logarithmic(true).text("error bound ε [+/-]")),
+        VplMethod::Clamp => ui.add(
+            egui::Slider::new(&mut s.range, 0.005..=2.0).logarithmic(true).text("range R [+/-]"),
+        ),
+        _ => ui.add(
+            egui::Slider::new(&mut s.error_bound, 0.0002..=0.5)
+                .logarithmic(true)
+                .text("error bound ε [+/-]"),
+        ),
     };
     ui.checkbox(&mut s.denoise, "denoise [d]");
     ui.checkbox(&mut c.freeze, "freeze ξ [f]");
-    egui::ComboBox::from_label("VPLs [v]").selected_text(format!("{}", c.rsm_edge * c.rsm_edge)).show_ui(ui, |ui| {
-        for e in VPL_EDGES {
-            ui.selectable_value(&mut c.rsm_edge, e, format!("{}", e * e));
-        }
-    });
+    egui::ComboBox::from_label("VPLs [v]")
+        .selected_text(format!("{}", c.rsm_edge * c.rsm_edge))
+        .show_ui(ui, |ui| {
+            for e in VPL_EDGES {
+                ui.selectable_value(&mut c.rsm_edge, e, format!("{}", e * e));
+            }
+        });
     ui.checkbox(&mut c.temporal, "temporal accumulation [t]");
     ui.checkbox(&mut c.animate, "animate the light [space]");
     ui.checkbox(&mut c.orbit, "swing the camera [o]");

@@ -66,7 +66,13 @@ impl Controls {
     /// Controls at `settings`, the scene's primary light `base` and
     /// camera `camera`, a scene of diagonal `diag`, `rsm_edge²` VPLs;
     /// temporal accumulation on.
-    pub fn new(settings: VplSettings, base: PrimaryLight, camera: Camera, diag: f32, rsm_edge: u32) -> Controls {
+    pub fn new(
+        settings: VplSettings,
+        base: PrimaryLight,
+        camera: Camera,
+        diag: f32,
+        rsm_edge: u32,
+    ) -> Controls {
         Controls {
             settings,
             freeze: false,
@@ -94,7 +100,11 @@ impl Controls {
         let yaw = Quat::from_rotation_y(self.cam_yaw + SWING * self.swing_phase.sin());
         let back = yaw * (c.position - c.target);
         let right = back.cross(Vec3::Y);
-        let tilt = if right.length_squared() > 1e-12 { Quat::from_axis_angle(right.normalize(), self.cam_pitch) } else { Quat::IDENTITY };
+        let tilt = if right.length_squared() > 1e-12 {
+            Quat::from_axis_angle(right.normalize(), self.cam_pitch)
+        } else {
+            Quat::IDENTITY
+        };
         Camera { position: c.target + tilt * back, up: tilt * yaw * c.up, ..*c }
     }
 
@@ -107,25 +117,38 @@ impl Controls {
         let turn = |d: Vec3| {
             let d = Quat::from_rotation_y(self.yaw) * d;
             let right = d.cross(Vec3::Y);
-            if right.length_squared() > 1e-12 { Quat::from_axis_angle(right.normalize(), self.pitch) * d } else { d }
+            if right.length_squared() > 1e-12 {
+                Quat::from_axis_angle(right.normalize(), self.pitch) * d
+            } else {
+                d
+            }
         };
         match self.base {
             PrimaryLight::Spot { position, direction, intensity, inner, outer } => {
-                PrimaryLight::Spot { position: position + self.offset + circle, direction: turn(direction), intensity, inner, outer }
+                PrimaryLight::Spot {
+                    position: position + self.offset + circle,
+                    direction: turn(direction),
+                    intensity,
+                    inner,
+                    outer,
+                }
             }
-            PrimaryLight::Directional { direction, irradiance } => {
-                PrimaryLight::Directional { direction: Quat::from_rotation_y(self.phase) * turn(direction), irradiance }
-            }
+            PrimaryLight::Directional { direction, irradiance } => PrimaryLight::Directional {
+                direction: Quat::from_rotation_y(self.phase) * turn(direction),
+                irradiance,
+            },
         }
     }
 
     /// Advances the animation by `dt` seconds (when on).
     pub fn tick(&mut self, dt: f32) {
         if self.animate {
-            self.phase = (self.phase + dt * std::f32::consts::TAU / TURN_SECONDS) % std::f32::consts::TAU;
+            self.phase =
+                (self.phase + dt * std::f32::consts::TAU / TURN_SECONDS) % std::f32::consts::TAU;
         }
         if self.orbit {
-            self.swing_phase = (self.swing_phase + dt * std::f32::consts::TAU / SWING_SECONDS) % std::f32::consts::TAU;
+            self.swing_phase = (self.swing_phase + dt * std::f32::consts::TAU / SWING_SECONDS)
+                % std::f32::consts::TAU;
         }
     }
 
@@ -190,8 +213,13 @@ impl Controls {
     fn scale_parameter(&mut self, up: bool) {
         let s = &mut self.settings;
         match s.method {
-            VplMethod::Clamp => s.range = (if up { s.range * 1.25 } else { s.range / 1.25 }).clamp(1e-3, 1e3),
-            _ => s.error_bound = (if up { s.error_bound * 2.0 } else { s.error_bound * 0.5 }).clamp(1e-5, 10.0),
+            VplMethod::Clamp => {
+                s.range = (if up { s.range * 1.25 } else { s.range / 1.25 }).clamp(1e-3, 1e3)
+            }
+            _ => {
+                s.error_bound =
+                    (if up { s.error_bound * 2.0 } else { s.error_bound * 0.5 }).clamp(1e-5, 10.0)
+            }
         }
     }
 }
@@ -274,7 +302,10 @@ mod tests {
             c.tick(0.05);
             let m = c.camera();
             m.validate().expect("a valid camera");
-            assert!(((m.position - m.target).length() - (cam.position - cam.target).length()).abs() < 1e-3);
+            assert!(
+                ((m.position - m.target).length() - (cam.position - cam.target).length()).abs()
+                    < 1e-3
+            );
         }
         assert!((c.camera().position - cam.position).length() > 1e-3, "the camera moved");
         c.key(&Key::Character("r".into()));

@@ -106,7 +106,9 @@ pub struct ViewSummary {
 #[derive(Debug, thiserror::Error)]
 pub enum ViewError {
     /// No display to open a window on.
-    #[error("no display to open a window on ({0}); set DISPLAY or WAYLAND_DISPLAY, or run under xvfb-run")]
+    #[error(
+        "no display to open a window on ({0}); set DISPLAY or WAYLAND_DISPLAY, or run under xvfb-run"
+    )]
     NoDisplay(String),
     /// The window or its surface could not be made.
     #[error("cannot open the window: {0}")]
@@ -154,7 +156,8 @@ pub fn run(opts: ViewOptions) -> Result<ViewSummary, ViewError> {
     }
     opts.settings.validate().map_err(|e| ViewError::Setting(e.to_string()))?;
     opts.scene.validate().map_err(|e| ViewError::Setting(e.to_string()))?;
-    let event_loop = winit::event_loop::EventLoop::new().map_err(|e| ViewError::NoDisplay(os_message(&e.to_string())))?;
+    let event_loop = winit::event_loop::EventLoop::new()
+        .map_err(|e| ViewError::NoDisplay(os_message(&e.to_string())))?;
     event_loop.set_control_flow(winit::event_loop::ControlFlow::Poll);
     let mut app = app::App::new(opts);
     event_loop.run_app(&mut app).map_err(|e| ViewError::Window(e.to_string()))?;

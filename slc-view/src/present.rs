@@ -58,7 +58,8 @@ pub struct Present {
 impl Present {
     /// The pipeline for swap-chain views of `format` (non-sRGB).
     pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Result<Present, String> {
-        let frame_wgsl = slc_core::wgsl::modules_wgsl(&["frame"]).ok_or("slc-core has no `frame` WGSL module")?;
+        let frame_wgsl = slc_core::wgsl::modules_wgsl(&["frame"])
+            .ok_or("slc-core has no `frame` WGSL module")?;
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("slc view present"),
             source: wgpu::ShaderSource::Wgsl(format!("{frame_wgsl}\n{SHADER}").into()),
@@ -79,7 +80,11 @@ impl Present {
                 wgpu::BindGroupLayoutEntry {
                     binding: 1,
                     visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Buffer { ty: wgpu::BufferBindingType::Uniform, has_dynamic_offset: false, min_binding_size: None },
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Uniform,
+                        has_dynamic_offset: false,
+                        min_binding_size: None,
+                    },
                     count: None,
                 },
             ],
@@ -92,7 +97,12 @@ impl Present {
         let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some("slc view present"),
             layout: Some(&pipeline_layout),
-            vertex: wgpu::VertexState { module: &module, entry_point: Some("vs_main"), compilation_options: Default::default(), buffers: &[] },
+            vertex: wgpu::VertexState {
+                module: &module,
+                entry_point: Some("vs_main"),
+                compilation_options: Default::default(),
+                buffers: &[],
+            },
             fragment: Some(wgpu::FragmentState {
                 module: &module,
                 entry_point: Some("fs_main"),
@@ -107,7 +117,12 @@ impl Present {
         });
         let params = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("slc view present params"),
-            contents: bytemuck::bytes_of(&PresentParams { frame_size: [1, 1], target_size: [1, 1], exposure: 1.0, pad: [0.0; 3] }),
+            contents: bytemuck::bytes_of(&PresentParams {
+                frame_size: [1, 1],
+                target_size: [1, 1],
+                exposure: 1.0,
+                pad: [0.0; 3],
+            }),
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
         });
         Ok(Present { pipeline, layout, params, group: None })
@@ -120,7 +135,10 @@ impl Present {
             label: Some("slc view present"),
             layout: &self.layout,
             entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&view) },
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: wgpu::BindingResource::TextureView(&view),
+                },
                 wgpu::BindGroupEntry { binding: 1, resource: self.params.as_entire_binding() },
             ],
         }));
@@ -137,8 +155,12 @@ impl Present {
         target_size: (u32, u32),
         exposure: f32,
     ) {
-        let params =
-            PresentParams { frame_size: [frame.0, frame.1], target_size: [target_size.0.max(1), target_size.1.max(1)], exposure, pad: [0.0; 3] };
+        let params = PresentParams {
+            frame_size: [frame.0, frame.1],
+            target_size: [target_size.0.max(1), target_size.1.max(1)],
+            exposure,
+            pad: [0.0; 3],
+        };
         queue.write_buffer(&self.params, 0, bytemuck::bytes_of(&params));
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("slc view present"),
@@ -146,7 +168,10 @@ impl Present {
                 view: target,
                 depth_slice: None,
                 resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color::BLACK), store: wgpu::StoreOp::Store },
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                    store: wgpu::StoreOp::Store,
+                },
             })],
             depth_stencil_attachment: None,
             timestamp_writes: None,

@@ -23,8 +23,8 @@ use slc_scene::scene::{LightMap, PrimaryLight, Scene};
 use slc_scene::vpl::{VplMethod, VplSettings};
 use slc_wgpu::glam::Vec3;
 use slc_wgpu::passes::{
-    DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, IndirectInputs, IndirectPass, IndirectPassDesc, VplInput,
-    VplSourceDesc,
+    DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, IndirectInputs,
+    IndirectPass, IndirectPassDesc, VplInput, VplSourceDesc,
 };
 use slc_wgpu::{GBuffer, GpuContext, Light, LightSet, PointLight, RangeParams, Surface};
 use wgpu::util::DeviceExt;
@@ -90,7 +90,13 @@ pub const RSM: u32 = 128;
 /// Frames averaged for the written image (an engine's temporal accumulation).
 const FRAMES: u32 = 16;
 
-fn target(device: &wgpu::Device, label: &str, (w, h): (u32, u32), format: wgpu::TextureFormat, usage: wgpu::TextureUsages) -> wgpu::Texture {
+fn target(
+    device: &wgpu::Device,
+    label: &str,
+    (w, h): (u32, u32),
+    format: wgpu::TextureFormat,
+    usage: wgpu::TextureUsages,
+) -> wgpu::Texture {
     device.create_texture(&wgpu::TextureDescriptor {
         label: Some(label),
         size: wgpu::Extent3d { width: w, height: h, depth_or_array_layers: 1 },
@@ -118,7 +124,11 @@ fn read_rgba32(device: &wgpu::Device, queue: &wgpu::Queue, t: &wgpu::Texture) ->
         t.as_image_copy(),
         wgpu::TexelCopyBufferInfo {
             buffer: &staging,
-            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(w * 16), rows_per_image: None },
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(w * 16),
+                rows_per_image: None,
+            },
         },
         t.size(),
     );
@@ -146,8 +156,15 @@ pub fn small_lights_at(frame: u32) -> Vec<Light> {
     let t = frame as f32;
     (0..48)
         .map(|i| {
-            let p = Vec3::new(0.05 + 0.065 * (i % 8) as f32, 0.498, 0.06 + 0.085 * (i / 8) as f32 + 0.03 * (0.7 * t).sin());
-            Light::Point(PointLight::new(p, colours[i % 3] * (0.004 * (1.0 + 0.5 * (0.9 * t).sin()))).expect("valid light"))
+            let p = Vec3::new(
+                0.05 + 0.065 * (i % 8) as f32,
+                0.498,
+                0.06 + 0.085 * (i / 8) as f32 + 0.03 * (0.7 * t).sin(),
+            );
+            Light::Point(
+                PointLight::new(p, colours[i % 3] * (0.004 * (1.0 + 0.5 * (0.9 * t).sin())))
+                    .expect("valid light"),
+            )
         })
         .collect()
 }
@@ -160,11 +177,19 @@ pub fn small_lights() -> LightSet {
 /// Renders `frames` frames (a new ξ set each, as an engine's frames draw
 /// them, the small lights at [`small_lights_at`] the frame number) and
 /// averages them, as an engine's temporal accumulation would.
-pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: u32) -> Result<Frame, Box<dyn std::error::Error>> {
+pub fn render(
+    scene: &Scene,
+    settings: &VplSettings,
+    min_distance: f32,
+    frames: u32,
+) -> Result<Frame, Box<dyn std::error::Error>> {
     // The engine's device.
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
-    let adapter = pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None))?;
-    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))?;
+    let instance =
+        wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+    let adapter =
+        pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None))?;
+    let (device, queue) =
+        pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))?;
 
     // The engine's mesh: every triangle's corners with their normals.
     let mut vertices = Vec::with_capacity(scene.triangles.len() * 3);
@@ -174,7 +199,12 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
         for (k, p) in tri.iter().enumerate() {
             let n = if scene.normals.is_empty() { geo } else { scene.normals[i][k] };
             let albedo = scene.materials[m as usize].albedo;
-            vertices.push(Vertex { position: p.to_array(), normal: n.to_array(), albedo: albedo.to_array(), material: m as f32 });
+            vertices.push(Vertex {
+                position: p.to_array(),
+                normal: n.to_array(),
+                albedo: albedo.to_array(),
+                material: m as f32,
+            });
         }
     }
     let vbuf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -191,7 +221,8 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
     // Near and far planes around the box: a 32-bit depth then unprojects
     // to ~2⁻²⁴·d²/near, a few micrometres here.
     let camera_view_proj =
-        proj::directx::perspective(cam.vfov_deg.to_radians(), W as f32 / H as f32, 0.1, 10.0) * look_to_mat4(cam.position, cam_forward, cam_up);
+        proj::directx::perspective(cam.vfov_deg.to_radians(), W as f32 / H as f32, 0.1, 10.0)
+            * look_to_mat4(cam.position, cam_forward, cam_up);
     let camera = Uniforms {
         view_proj: camera_view_proj.to_cols_array_2d(),
         eye: cam.position.extend(1.0).to_array(),
@@ -221,15 +252,20 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
     // The engine's pipelines: G-buffer (depth, normal + material id) and
     // RSM (position, normal, flux), each with a depth buffer.
     let source = format!("{}\n{SHADER}", slc_core::wgsl::library());
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some("engine"), source: wgpu::ShaderSource::Wgsl(source.into()) });
-    let attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3, 3 => Float32];
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("engine"),
+        source: wgpu::ShaderSource::Wgsl(source.into()),
+    });
+    let attributes =
+        wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3, 3 => Float32];
     let layout = wgpu::VertexBufferLayout {
         array_stride: std::mem::size_of::<Vertex>() as u64,
         step_mode: wgpu::VertexStepMode::Vertex,
         attributes: &attributes,
     };
     let raster = |entry: &str, formats: &[wgpu::TextureFormat]| {
-        let targets: Vec<Option<wgpu::ColorTargetState>> = formats.iter().map(|&f| Some(f.into())).collect();
+        let targets: Vec<Option<wgpu::ColorTargetState>> =
+            formats.iter().map(|&f| Some(f.into())).collect();
         device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some(entry),
             layout: None,
@@ -263,7 +299,8 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
     let rsm_pipeline = raster("rsm", &[Rgba32Float, Rgba16Float, Rgba16Float]);
 
     let rt = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
-    let gb_normal = target(&device, "gb normal", (W, H), Rgba32Float, rt | wgpu::TextureUsages::COPY_SRC);
+    let gb_normal =
+        target(&device, "gb normal", (W, H), Rgba32Float, rt | wgpu::TextureUsages::COPY_SRC);
     // slc reads the depth buffer: TEXTURE_BINDING as well.
     let gb_depth = target(&device, "gb depth", (W, H), wgpu::TextureFormat::Depth32Float, rt);
     let rsm = [
@@ -271,21 +308,49 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
         target(&device, "rsm normal", (RSM, RSM), Rgba16Float, rt),
         target(&device, "rsm flux", (RSM, RSM), Rgba16Float, rt),
     ];
-    let rsm_depth = target(&device, "rsm depth", (RSM, RSM), wgpu::TextureFormat::Depth32Float, wgpu::TextureUsages::RENDER_ATTACHMENT);
-    let output = target(&device, "indirect", (W, H), Rgba32Float, wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
-    let direct_target = target(&device, "direct", (W, H), Rgba32Float, wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
+    let rsm_depth = target(
+        &device,
+        "rsm depth",
+        (RSM, RSM),
+        wgpu::TextureFormat::Depth32Float,
+        wgpu::TextureUsages::RENDER_ATTACHMENT,
+    );
+    let output = target(
+        &device,
+        "indirect",
+        (W, H),
+        Rgba32Float,
+        wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
+    );
+    let direct_target = target(
+        &device,
+        "direct",
+        (W, H),
+        Rgba32Float,
+        wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
+    );
     let view = |t: &wgpu::Texture| t.create_view(&Default::default());
-    let (gb_views, rsm_views) = ([view(&gb_depth), view(&gb_normal)], [view(&rsm[0]), view(&rsm[1]), view(&rsm[2])]);
+    let (gb_views, rsm_views) =
+        ([view(&gb_depth), view(&gb_normal)], [view(&rsm[0]), view(&rsm[1]), view(&rsm[2])]);
     let (output_view, direct_view) = (view(&output), view(&direct_target));
 
     // slc's passes, on the engine's device, reading its (standard-Z)
     // Depth32Float depth buffer: the descriptors' default surface.
     let gpu = GpuContext::from_device(device.clone(), queue.clone());
-    let mut pass =
-        IndirectPass::new(&gpu, &IndirectPassDesc { output_format: Rgba32Float, ..IndirectPassDesc::new(W, H, VplSourceDesc::Rsm { size: RSM }) })?;
+    let mut pass = IndirectPass::new(
+        &gpu,
+        &IndirectPassDesc {
+            output_format: Rgba32Float,
+            ..IndirectPassDesc::new(W, H, VplSourceDesc::Rsm { size: RSM })
+        },
+    )?;
     // The small lights with uniform picks: the CPU's twin (slc_cpu::direct)
     // draws the same numbers.
-    let direct_desc = DirectPassDesc { output_format: Rgba32Float, selection: DirectSelection::Uniform { k: 8 }, ..DirectPassDesc::new(W, H) };
+    let direct_desc = DirectPassDesc {
+        output_format: Rgba32Float,
+        selection: DirectSelection::Uniform { k: 8 },
+        ..DirectPassDesc::new(W, H)
+    };
     let mut direct_pass = DirectPass::new(&gpu, &small_lights(), &direct_desc)?;
 
     let draw = |encoder: &mut wgpu::CommandEncoder,
@@ -310,7 +375,10 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
                     view: v,
                     depth_slice: None,
                     resolve_target: None,
-                    ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT), store: wgpu::StoreOp::Store },
+                    ops: wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                        store: wgpu::StoreOp::Store,
+                    },
                 })
             })
             .collect();
@@ -319,7 +387,10 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
             color_attachments: &attachments,
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                 view: depth,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(1.0),
+                    store: wgpu::StoreOp::Store,
+                }),
                 stencil_ops: None,
             }),
             timestamp_writes: None,
@@ -340,18 +411,34 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
         // The small lights move: rewritten in place, the BSH refitted on the GPU.
         direct_pass.update_lights(&small_lights_at(settings.frame))?;
         // One frame: one encoder with the engine's raster passes and slc's passes.
-        let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
+        let mut encoder =
+            device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
         draw(&mut encoder, &gbuffer_pipeline, &camera, &gb_views[1..], &gb_views[0]);
         draw(&mut encoder, &rsm_pipeline, &light, &rsm_views, &rsm_depth);
-        let gbuffer = GBuffer { surface: Surface::Depth { depth: &gb_views[0], inv_view_proj }, normal: &gb_views[1], eye: cam.position };
+        let gbuffer = GBuffer {
+            surface: Surface::Depth { depth: &gb_views[0], inv_view_proj },
+            normal: &gb_views[1],
+            eye: cam.position,
+        };
         let inputs = IndirectInputs {
             gbuffer,
-            vpls: VplInput::Rsm { position: &rsm_views[0], normal: &rsm_views[1], flux: &rsm_views[2] },
+            vpls: VplInput::Rsm {
+                position: &rsm_views[0],
+                normal: &rsm_views[1],
+                flux: &rsm_views[2],
+            },
             output: &output_view,
             materials: None,
         };
-        pass.record(&mut encoder, &inputs, &slc_wgpu::frame::indirect_settings(&settings, min_distance)?)?;
-        let culling = slc_wgpu::Culling::Stochastic(RangeParams::new(settings.error_bound, settings.exposure)?);
+        pass.record(
+            &mut encoder,
+            &inputs,
+            &slc_wgpu::frame::indirect_settings(&settings, min_distance)?,
+        )?;
+        let culling = slc_wgpu::Culling::Stochastic(RangeParams::new(
+            settings.error_bound,
+            settings.exposure,
+        )?);
         direct_pass.record(
             &mut encoder,
             &DirectInputs::new(gbuffer, &direct_view),
@@ -359,7 +446,10 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
         )?;
         queue.submit([encoder.finish()]);
         // The engine's accumulation (here on the host, from the read-backs).
-        for (sum, new) in [(&mut irradiance, read_rgba32(&device, &queue, &output)), (&mut direct, read_rgba32(&device, &queue, &direct_target))] {
+        for (sum, new) in [
+            (&mut irradiance, read_rgba32(&device, &queue, &output)),
+            (&mut direct, read_rgba32(&device, &queue, &direct_target)),
+        ] {
             for (a, b) in sum.iter_mut().zip(new) {
                 for k in 0..4 {
                     a[k] += b[k] / frames as f32;
@@ -378,7 +468,11 @@ pub fn render(scene: &Scene, settings: &VplSettings, min_distance: f32, frames: 
         }
         let m = scene.materials[n[3] as usize];
         let (e, d) = (irradiance[i], direct[i]);
-        image.data[i] = slc_core::frame::diffuse_radiance(m.albedo, m.emission, Vec3::new(e[0] + d[0], e[1] + d[1], e[2] + d[2]));
+        image.data[i] = slc_core::frame::diffuse_radiance(
+            m.albedo,
+            m.emission,
+            Vec3::new(e[0] + d[0], e[1] + d[1], e[2] + d[2]),
+        );
     }
     Ok(Frame { image, irradiance, direct })
 }

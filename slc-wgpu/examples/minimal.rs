@@ -103,11 +103,16 @@ pub fn cpu() -> Vec<[f32; 4]> {
 /// Runs the shader on the default adapter: per point, irradiance (rgb) and
 /// the number of lights kept.
 pub fn gpu() -> Result<Vec<[f32; 4]>, Box<dyn std::error::Error>> {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
-    let adapter = pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None))?;
-    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))?;
-    let module =
-        device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some("minimal"), source: wgpu::ShaderSource::Wgsl(shader().into()) });
+    let instance =
+        wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+    let adapter =
+        pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None))?;
+    let (device, queue) =
+        pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))?;
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("minimal"),
+        source: wgpu::ShaderSource::Wgsl(shader().into()),
+    });
     let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
         label: Some("minimal"),
         layout: None,
@@ -117,7 +122,11 @@ pub fn gpu() -> Result<Vec<[f32; 4]>, Box<dyn std::error::Error>> {
         cache: None,
     });
     let init = |label: &str, contents: &[u8], usage: wgpu::BufferUsages| {
-        device.create_buffer_init(&wgpu::util::BufferInitDescriptor { label: Some(label), contents, usage })
+        device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some(label),
+            contents,
+            usage,
+        })
     };
     let lights = init("lights", bytemuck::cast_slice(&lights()), wgpu::BufferUsages::STORAGE);
     let points = init("points", bytemuck::cast_slice(&points()), wgpu::BufferUsages::STORAGE);

@@ -28,7 +28,8 @@ impl GpuContext {
     /// `WGPU_POWER_PREF` environment variables are honoured) and opens a
     /// device with the adapter's full limits.
     pub fn new() -> Result<GpuContext, GpuError> {
-        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+        let instance =
+            wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
         GpuContext::open(&pick_adapter(&instance, None)?)
     }
 
@@ -41,7 +42,8 @@ impl GpuContext {
         let info = adapter.get_info();
         let limits = adapter.limits();
         let timestamps = adapter.features().contains(wgpu::Features::TIMESTAMP_QUERY);
-        let required_features = if timestamps { wgpu::Features::TIMESTAMP_QUERY } else { wgpu::Features::empty() };
+        let required_features =
+            if timestamps { wgpu::Features::TIMESTAMP_QUERY } else { wgpu::Features::empty() };
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("slc"),
             required_features,
@@ -91,7 +93,8 @@ impl GpuContext {
     /// Errors the device reported since the last call (validation, out of
     /// memory, device lost), as one [`GpuError::Device`].
     pub fn take_errors(&self) -> Result<(), GpuError> {
-        let mut v = self.errors.lock().map_err(|_| GpuError::Device("error log poisoned".into()))?;
+        let mut v =
+            self.errors.lock().map_err(|_| GpuError::Device("error log poisoned".into()))?;
         if v.is_empty() {
             return Ok(());
         }
@@ -102,7 +105,9 @@ impl GpuContext {
 
     /// Waits for all submitted work.
     pub fn wait(&self) -> Result<(), GpuError> {
-        self.device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| GpuError::Device(e.to_string()))?;
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| GpuError::Device(e.to_string()))?;
         self.take_errors()
     }
 }
@@ -113,16 +118,27 @@ impl GpuContext {
 /// (`WGPU_BACKEND` is the instance's). wgpu's own
 /// `initialize_adapter_from_env` panics on a name nothing matches; this
 /// says which adapters there are instead.
-pub fn pick_adapter(instance: &wgpu::Instance, surface: Option<&wgpu::Surface<'_>>) -> Result<wgpu::Adapter, GpuError> {
+pub fn pick_adapter(
+    instance: &wgpu::Instance,
+    surface: Option<&wgpu::Surface<'_>>,
+) -> Result<wgpu::Adapter, GpuError> {
     let usable = |a: &wgpu::Adapter| surface.is_none_or(|s| a.is_surface_supported(s));
     if let Some(want) = std::env::var("WGPU_ADAPTER_NAME").ok().filter(|n| !n.is_empty()) {
         let adapters: Vec<wgpu::Adapter> =
-            pollster::block_on(instance.enumerate_adapters(wgpu::Backends::all())).into_iter().filter(usable).collect();
+            pollster::block_on(instance.enumerate_adapters(wgpu::Backends::all()))
+                .into_iter()
+                .filter(usable)
+                .collect();
         let names: Vec<String> = adapters.iter().map(|a| a.get_info().name).collect();
         return adapters
             .into_iter()
             .find(|a| a.get_info().name.to_lowercase().contains(&want.to_lowercase()))
-            .ok_or_else(|| GpuError::NoAdapter(format!("WGPU_ADAPTER_NAME={want} matches none of the adapters [{}]", names.join(", "))));
+            .ok_or_else(|| {
+                GpuError::NoAdapter(format!(
+                    "WGPU_ADAPTER_NAME={want} matches none of the adapters [{}]",
+                    names.join(", ")
+                ))
+            });
     }
     pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
         power_preference: wgpu::PowerPreference::from_env().unwrap_or_default(),

@@ -6,7 +6,10 @@
 //! output is read back. Unshadowed, the counterpart of the CPU backend's
 //! `slc_cpu::direct::DirectLights`, which draws the same random numbers.
 
-use crate::passes::{Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, GBuffer, Surface, SurfaceDesc};
+use crate::passes::{
+    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, GBuffer,
+    Surface, SurfaceDesc,
+};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
 use slc_core::range::RangeParams;
@@ -33,9 +36,20 @@ impl GpuDirect {
 
     /// Direct light at `points` (unit `normals`) for frame `frame` of
     /// `seed`, number for number as the CPU's `DirectLights::shade`.
-    pub fn shade(&mut self, points: &[Vec3], normals: &[Vec3], params: &RangeParams, seed: u32, frame: u32) -> Result<Vec<Direct>, GpuError> {
+    pub fn shade(
+        &mut self,
+        points: &[Vec3],
+        normals: &[Vec3],
+        params: &RangeParams,
+        seed: u32,
+        frame: u32,
+    ) -> Result<Vec<Direct>, GpuError> {
         if points.len() != normals.len() {
-            return Err(GpuError::Setting(format!("{} points but {} normals", points.len(), normals.len())));
+            return Err(GpuError::Setting(format!(
+                "{} points but {} normals",
+                points.len(),
+                normals.len()
+            )));
         }
         if points.is_empty() {
             return Ok(Vec::new());
@@ -43,7 +57,11 @@ impl GpuDirect {
         let gpu = self.gpu.clone();
         let n = points.len();
         let (w, h) = (ROW.min(n as u32), (n as u32).div_ceil(ROW));
-        gpu.require("max_texture_dimension_2d (point rows)", h as u64, gpu.limits.max_texture_dimension_2d as u64)?;
+        gpu.require(
+            "max_texture_dimension_2d (point rows)",
+            h as u64,
+            gpu.limits.max_texture_dimension_2d as u64,
+        )?;
         if self.pass.as_ref().is_none_or(|p| (p.desc().width, p.desc().height) != (w, h)) {
             let desc = DirectPassDesc {
                 surface: SurfaceDesc::Position,
@@ -54,7 +72,9 @@ impl GpuDirect {
             };
             self.pass = Some(DirectPass::new(&gpu, &self.lights, &desc)?);
         }
-        let Some(pass) = self.pass.as_mut() else { return Err(GpuError::Setting("no pass".into())) };
+        let Some(pass) = self.pass.as_mut() else {
+            return Err(GpuError::Setting("no pass".into()));
+        };
         // w = 1 marks a valid point; NaN coordinates are shaded as nothing, as on the CPU.
         let texels = (w * h) as usize;
         let mut p4 = vec![[0.0f32; 4]; texels];
@@ -64,16 +84,37 @@ impl GpuDirect {
             p4[i] = [p.x, p.y, p.z, if p.is_nan() { 0.0 } else { 1.0 }];
             n4[i] = normals[i].extend(0.0).to_array();
         }
-        let upload = |label: &str, data: &[[f32; 4]]| crate::frame::upload_rgba32(&gpu, label, (w, h), data);
+        let upload =
+            |label: &str, data: &[[f32; 4]]| crate::frame::upload_rgba32(&gpu, label, (w, h), data);
         let (position, normal) = (upload("slc points", &p4), upload("slc normals", &n4));
-        let output = crate::frame::rgba32_target(&gpu, "slc direct", (w, h), wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
-        let (pv, nv, ov) =
-            (position.create_view(&Default::default()), normal.create_view(&Default::default()), output.create_view(&Default::default()));
-        let inputs = DirectInputs::new(GBuffer { surface: Surface::Position(&pv), normal: &nv, eye: Vec3::ZERO }, &ov);
-        let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc direct") });
-        pass.record(&mut enc, &inputs, &DirectSettings { culling: Culling::Stochastic(*params), seed, frame })?;
+        let output = crate::frame::rgba32_target(
+            &gpu,
+            "slc direct",
+            (w, h),
+            wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
+        );
+        let (pv, nv, ov) = (
+            position.create_view(&Default::default()),
+            normal.create_view(&Default::default()),
+            output.create_view(&Default::default()),
+        );
+        let inputs = DirectInputs::new(
+            GBuffer { surface: Surface::Position(&pv), normal: &nv, eye: Vec3::ZERO },
+            &ov,
+        );
+        let mut enc = gpu
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc direct") });
+        pass.record(
+            &mut enc,
+            &inputs,
+            &DirectSettings { culling: Culling::Stochastic(*params), seed, frame },
+        )?;
         gpu.queue.submit([enc.finish()]);
         let data = crate::frame::read_texture(&gpu, &output)?;
-        Ok(data[..n].iter().map(|d| Direct { irradiance: Vec3::new(d[0], d[1], d[2]), in_range: d[3] as u32 }).collect())
+        Ok(data[..n]
+            .iter()
+            .map(|d| Direct { irradiance: Vec3::new(d[0], d[1], d[2]), in_range: d[3] as u32 })
+            .collect())
     }
 }

@@ -45,8 +45,9 @@
 use crate::kernel::{KernelLayout, Timer, Uploads, check_kernels, read_back, storage, zeroed};
 use crate::passes::indirect::{Dispatch, Recording};
 use crate::passes::{
-    Culling, GBuffer, IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, TemporalInputs,
-    TemporalPass, TemporalPassDesc, VplInput, VplSourceDesc,
+    Culling, GBuffer, IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc,
+    IndirectSettings, Surface, SurfaceDesc, TemporalInputs, TemporalPass, TemporalPassDesc,
+    VplInput, VplSourceDesc,
 };
 use crate::{GpuContext, GpuError};
 use glam::{Mat4, Vec3, Vec4};
@@ -56,7 +57,8 @@ use slc_scene::scene::{Camera, LightMap, Material, PrimaryLight, Scene};
 use slc_scene::temporal::{TemporalSettings, TemporalView};
 use slc_scene::vpl::{PERIOD, Specular, VplInputs, VplMethod, VplSettings, VplStats, Vpls};
 use slc_shared_shaders::layout::{
-    GpuLight, GpuMaterial, GpuVertex, ImageParams, LIGHT_SPOT, MAP_CAMERA, MAP_ORTHOGRAPHIC, MAP_PERSPECTIVE, MapParams,
+    GpuLight, GpuMaterial, GpuVertex, ImageParams, LIGHT_SPOT, MAP_CAMERA, MAP_ORTHOGRAPHIC,
+    MAP_PERSPECTIVE, MapParams,
 };
 use slc_shared_shaders::{Features, Kernel, LightTypes, OutputFormat, generate};
 use std::time::Instant;
@@ -181,18 +183,25 @@ impl StageTime {
 /// methods `slc`, `clamp` and `none` with per-frame ξ; the reference and a
 /// fixed ξ are refused here ([`crate::vpl::GpuVpl`] shades them), and the
 /// CPU's `tile` (its tile size) has no GPU counterpart.
-pub fn indirect_settings(settings: &VplSettings, min_distance: f32) -> Result<IndirectSettings, GpuError> {
+pub fn indirect_settings(
+    settings: &VplSettings,
+    min_distance: f32,
+) -> Result<IndirectSettings, GpuError> {
     let params = settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
     let culling = match settings.method {
         VplMethod::Slc => Culling::Stochastic(params),
         VplMethod::Clamp => Culling::Clamped { range: settings.range },
         VplMethod::None => Culling::None,
         VplMethod::Reference => {
-            return Err(GpuError::Setting("the GPU frame runs slc, clamp or none (the reference is GpuVpl's)".into()));
+            return Err(GpuError::Setting(
+                "the GPU frame runs slc, clamp or none (the reference is GpuVpl's)".into(),
+            ));
         }
     };
     if settings.fixed_xi.is_some() {
-        return Err(GpuError::Setting("the GPU frame draws ξ per frame (fixed ξ is GpuVpl's)".into()));
+        return Err(GpuError::Setting(
+            "the GPU frame draws ξ per frame (fixed ξ is GpuVpl's)".into(),
+        ));
     }
     Ok(IndirectSettings {
         culling,
@@ -227,7 +236,13 @@ struct Target {
     view: wgpu::TextureView,
 }
 
-fn target(gpu: &GpuContext, label: &str, (w, h): (u32, u32), format: wgpu::TextureFormat, usage: wgpu::TextureUsages) -> Target {
+fn target(
+    gpu: &GpuContext,
+    label: &str,
+    (w, h): (u32, u32),
+    format: wgpu::TextureFormat,
+    usage: wgpu::TextureUsages,
+) -> Target {
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
         label: Some(label),
         size: wgpu::Extent3d { width: w, height: h, depth_or_array_layers: 1 },
@@ -264,31 +279,69 @@ fn depth_range((lo, hi): (Vec3, Vec3), eye: Vec3) -> std::ops::Range<f32> {
 /// with bounds `bounds`: the light's map ([`PrimaryLight::light_map`]) in
 /// the Y-down convention (map row 0 toward −up, the CPU's texel order),
 /// `rsm_size` and `shadow_size` texels per edge.
-fn light_uniforms(primary: &PrimaryLight, bounds: (Vec3, Vec3), rsm_size: u32, shadow_size: u32) -> (MapParams, MapParams) {
+fn light_uniforms(
+    primary: &PrimaryLight,
+    bounds: (Vec3, Vec3),
+    rsm_size: u32,
+    shadow_size: u32,
+) -> (MapParams, MapParams) {
     use glam::camera::rh::{proj, view::look_to_mat4};
     let light = match *primary {
         PrimaryLight::Spot { position, direction, intensity, .. } => {
-            let (cos_outer, cos_inner) = primary.spot().map(|s| s.cone_cosines()).unwrap_or((0.0, 0.0));
-            GpuLight { p0: position, kind: LIGHT_SPOT, p1: direction.normalize(), a: cos_outer, p2: Vec3::ZERO, b: cos_inner, intensity, ies_base: 0 }
+            let (cos_outer, cos_inner) =
+                primary.spot().map(|s| s.cone_cosines()).unwrap_or((0.0, 0.0));
+            GpuLight {
+                p0: position,
+                kind: LIGHT_SPOT,
+                p1: direction.normalize(),
+                a: cos_outer,
+                p2: Vec3::ZERO,
+                b: cos_inner,
+                intensity,
+                ies_base: 0,
+            }
         }
-        PrimaryLight::Directional { irradiance, .. } => {
-            GpuLight { p0: Vec3::ZERO, kind: LIGHT_SPOT, p1: Vec3::ZERO, a: 0.0, p2: Vec3::ZERO, b: 0.0, intensity: irradiance, ies_base: 0 }
-        }
+        PrimaryLight::Directional { irradiance, .. } => GpuLight {
+            p0: Vec3::ZERO,
+            kind: LIGHT_SPOT,
+            p1: Vec3::ZERO,
+            a: 0.0,
+            p2: Vec3::ZERO,
+            b: 0.0,
+            intensity: irradiance,
+            ies_base: 0,
+        },
     };
     let (vp, origin, axis, right, up, extent, mode) = match primary.light_map(bounds) {
         LightMap::Perspective { origin, axis, right, up, tan } => {
             let r = depth_range(bounds, origin);
-            let vp = proj::vulkan::perspective(2.0 * tan.atan(), 1.0, r.start, r.end) * look_to_mat4(origin, axis, up);
+            let vp = proj::vulkan::perspective(2.0 * tan.atan(), 1.0, r.start, r.end)
+                * look_to_mat4(origin, axis, up);
             (vp, origin, axis, right, up, tan, MAP_PERSPECTIVE)
         }
         LightMap::Orthographic { origin, axis, right, up, half } => {
-            let vp = proj::vulkan::orthographic(-half, half, -half, half, 0.0, 4.0 * half) * look_to_mat4(origin, axis, up);
+            let vp = proj::vulkan::orthographic(-half, half, -half, half, 0.0, 4.0 * half)
+                * look_to_mat4(origin, axis, up);
             (vp, origin, axis, right, up, half, MAP_ORTHOGRAPHIC)
         }
     };
     let texel = (2.0 * extent / rsm_size as f32).powi(2);
     let [c0, c1, c2, c3] = columns(vp);
-    let rsm = MapParams { c0, c1, c2, c3, light, origin, mode, axis, size: rsm_size, right, extent, up, texel };
+    let rsm = MapParams {
+        c0,
+        c1,
+        c2,
+        c3,
+        light,
+        origin,
+        mode,
+        axis,
+        size: rsm_size,
+        right,
+        extent,
+        up,
+        texel,
+    };
     (rsm, MapParams { size: shadow_size, ..rsm })
 }
 
@@ -357,8 +410,14 @@ impl GpuVplFrame {
     /// device limit, uploads the triangles and materials, and builds the
     /// pipelines and targets.
     pub fn new(gpu: &GpuContext, scene: &Scene, desc: &FrameDesc) -> Result<Self, GpuError> {
-        let min_distance = slc_scene::vpl::check_frame(scene, desc.width, desc.height, desc.rsm_size, desc.min_distance)
-            .map_err(|e| GpuError::Setting(e.to_string()))?;
+        let min_distance = slc_scene::vpl::check_frame(
+            scene,
+            desc.width,
+            desc.height,
+            desc.rsm_size,
+            desc.min_distance,
+        )
+        .map_err(|e| GpuError::Setting(e.to_string()))?;
         let size = desc.rsm_size;
         let (w, h) = (desc.width, desc.height);
         let lim = &gpu.limits;
@@ -366,21 +425,43 @@ impl GpuVplFrame {
         if shadow == 0 {
             return Err(GpuError::Setting("shadow map size must be > 0".into()));
         }
-        gpu.require("max_texture_dimension_2d", w.max(h).max(size).max(shadow) as u64, lim.max_texture_dimension_2d as u64)?;
+        gpu.require(
+            "max_texture_dimension_2d",
+            w.max(h).max(size).max(shadow) as u64,
+            lim.max_texture_dimension_2d as u64,
+        )?;
         gpu.require("max_color_attachments", 3, lim.max_color_attachments as u64)?;
         // The RSM's targets: position and flux Rgba32Float, normal Rgba16Float.
-        gpu.require("max_color_attachment_bytes_per_sample (RSM)", 16 + 8 + 16, lim.max_color_attachment_bytes_per_sample as u64)?;
-        gpu.require("max_storage_buffers_per_shader_stage (fragment)", 1, lim.max_storage_buffers_per_shader_stage as u64)?;
-        let vertex_bytes = scene.triangles.len() as u64 * 3 * std::mem::size_of::<GpuVertex>() as u64;
+        gpu.require(
+            "max_color_attachment_bytes_per_sample (RSM)",
+            16 + 8 + 16,
+            lim.max_color_attachment_bytes_per_sample as u64,
+        )?;
+        gpu.require(
+            "max_storage_buffers_per_shader_stage (fragment)",
+            1,
+            lim.max_storage_buffers_per_shader_stage as u64,
+        )?;
+        let vertex_bytes =
+            scene.triangles.len() as u64 * 3 * std::mem::size_of::<GpuVertex>() as u64;
         gpu.require("max_buffer_size (vertices)", vertex_bytes, lim.max_buffer_size)?;
-        let features =
-            Features { lights: LightTypes { vpl: true, ..LightTypes::default() }, tile_size: TILE, interleave: PERIOD, ..Features::default() };
+        let features = Features {
+            lights: LightTypes { vpl: true, ..LightTypes::default() },
+            tile_size: TILE,
+            interleave: PERIOD,
+            ..Features::default()
+        };
         // Glossy materials: the indirect pass's and the composition's glossy kernels.
         let glossy = scene.materials.iter().any(Material::has_specular);
-        let compose_features = Features { output_format: OutputFormat::Rgba32Float, glossy, ..features };
+        let compose_features =
+            Features { output_format: OutputFormat::Rgba32Float, glossy, ..features };
         check_kernels(
             gpu,
-            &[(Kernel::SceneRaster, &features, 0), (Kernel::PrimaryDirect, &features, 0), (Kernel::FrameCompose, &compose_features, 0)],
+            &[
+                (Kernel::SceneRaster, &features, 0),
+                (Kernel::PrimaryDirect, &features, 0),
+                (Kernel::FrameCompose, &compose_features, 0),
+            ],
         )?;
         let indirect_desc = IndirectPassDesc {
             surface: SurfaceDesc::Position,
@@ -397,7 +478,14 @@ impl GpuVplFrame {
         for (i, tri) in scene.triangles.iter().enumerate() {
             let (geo, normals) = (scene.geometric_normal(i), scene.vertex_normals(i));
             for k in 0..3 {
-                verts.push(GpuVertex { position: tri[k], material: scene.material_of[i], normal: normals[k], pad0: 0, geo_normal: geo, pad1: 0 });
+                verts.push(GpuVertex {
+                    position: tri[k],
+                    material: scene.material_of[i],
+                    normal: normals[k],
+                    pad0: 0,
+                    geo_normal: geo,
+                    pad1: 0,
+                });
             }
         }
         let vertices = gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -406,7 +494,12 @@ impl GpuVplFrame {
             usage: wgpu::BufferUsages::VERTEX,
         });
         let mats: Vec<GpuMaterial> = scene.materials.iter().map(crate::pt::gpu_material).collect();
-        let materials = storage(gpu, "slc frame materials", bytemuck::cast_slice(&mats), wgpu::BufferUsages::empty());
+        let materials = storage(
+            gpu,
+            "slc frame materials",
+            bytemuck::cast_slice(&mats),
+            wgpu::BufferUsages::empty(),
+        );
 
         // The camera's and the light's raster parameters.
         let (lo, hi) = scene.bounds();
@@ -423,19 +516,45 @@ impl GpuVplFrame {
             })
         };
         let [c0, c1, c2, c3] = columns(camera_vp);
-        let camera_map = MapParams { c0, c1, c2, c3, origin: cam.position, mode: MAP_CAMERA, size: 0, ..light };
+        let camera_map =
+            MapParams { c0, c1, c2, c3, origin: cam.position, mode: MAP_CAMERA, size: 0, ..light };
         let camera_params = uniform("slc camera params", bytemuck::bytes_of(&camera_map));
         let light_params = uniform("slc light params", bytemuck::bytes_of(&light));
         let shadow_params = uniform("slc shadow params", bytemuck::bytes_of(&shadow_light));
-        let image_params =
-            uniform("slc frame image", bytemuck::bytes_of(&ImageParams { eye: cam.position, width: w, height: h, pad0: 0, pad1: 0, pad2: 0 }));
+        let image_params = uniform(
+            "slc frame image",
+            bytemuck::bytes_of(&ImageParams {
+                eye: cam.position,
+                width: w,
+                height: h,
+                pad0: 0,
+                pad1: 0,
+                pad2: 0,
+            }),
+        );
 
         // Raster pipelines.
-        let raster_layout = KernelLayout::with_visibility(gpu, Kernel::SceneRaster, &features, wgpu::ShaderStages::VERTEX_FRAGMENT)?;
+        let raster_layout = KernelLayout::with_visibility(
+            gpu,
+            Kernel::SceneRaster,
+            &features,
+            wgpu::ShaderStages::VERTEX_FRAGMENT,
+        )?;
         let raster_group = |params: &wgpu::Buffer| {
-            raster_layout.group(gpu, 0, &[("params", params.as_entire_binding()), ("materials", materials.as_entire_binding())])
+            raster_layout.group(
+                gpu,
+                0,
+                &[
+                    ("params", params.as_entire_binding()),
+                    ("materials", materials.as_entire_binding()),
+                ],
+            )
         };
-        let (camera_group, light_group, shadow_group) = (raster_group(&camera_params), raster_group(&light_params), raster_group(&shadow_params));
+        let (camera_group, light_group, shadow_group) = (
+            raster_group(&camera_params),
+            raster_group(&light_params),
+            raster_group(&shadow_params),
+        );
         let module = gpu.device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("scene_raster"),
             source: wgpu::ShaderSource::Wgsl(generate(Kernel::SceneRaster, &features)?.into()),
@@ -446,7 +565,11 @@ impl GpuVplFrame {
             immediate_size: 0,
         });
         // GpuVertex's offsets (its padding keeps the WGSL layout).
-        let attribute = |shader_location, format, offset| wgpu::VertexAttribute { format, offset, shader_location };
+        let attribute = |shader_location, format, offset| wgpu::VertexAttribute {
+            format,
+            offset,
+            shader_location,
+        };
         let attributes = [
             attribute(0, wgpu::VertexFormat::Float32x3, 0),
             attribute(1, wgpu::VertexFormat::Uint32, 12),
@@ -459,7 +582,8 @@ impl GpuVplFrame {
             attributes: &attributes,
         })];
         let raster = |entry: &str, formats: &[wgpu::TextureFormat]| {
-            let targets: Vec<Option<wgpu::ColorTargetState>> = formats.iter().map(|&f| Some(f.into())).collect();
+            let targets: Vec<Option<wgpu::ColorTargetState>> =
+                formats.iter().map(|&f| Some(f.into())).collect();
             gpu.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                 label: Some(entry),
                 layout: Some(&pipeline_layout),
@@ -496,7 +620,9 @@ impl GpuVplFrame {
         let shadow_pipeline = raster("fs_shadow", &[R32]);
 
         // Targets.
-        let rt = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
+        let rt = wgpu::TextureUsages::RENDER_ATTACHMENT
+            | wgpu::TextureUsages::TEXTURE_BINDING
+            | wgpu::TextureUsages::COPY_SRC;
         let gb = [
             target(gpu, "slc gb position", (w, h), F32, rt),
             target(gpu, "slc gb normal", (w, h), F32, rt),
@@ -506,19 +632,39 @@ impl GpuVplFrame {
             target(gpu, "slc rsm position", (size, size), F32, rt),
             target(gpu, "slc rsm normal", (size, size), F16, rt),
             target(gpu, "slc rsm flux", (size, size), F32, rt),
-            target(gpu, "slc rsm depth", (size, size), DEPTH, wgpu::TextureUsages::RENDER_ATTACHMENT),
+            target(
+                gpu,
+                "slc rsm depth",
+                (size, size),
+                DEPTH,
+                wgpu::TextureUsages::RENDER_ATTACHMENT,
+            ),
         ];
         let shadow_map = [
             target(gpu, "slc shadow map", (shadow, shadow), R32, rt),
-            target(gpu, "slc shadow depth", (shadow, shadow), DEPTH, wgpu::TextureUsages::RENDER_ATTACHMENT),
+            target(
+                gpu,
+                "slc shadow depth",
+                (shadow, shadow),
+                DEPTH,
+                wgpu::TextureUsages::RENDER_ATTACHMENT,
+            ),
         ];
-        let sampled_storage = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
+        let sampled_storage = wgpu::TextureUsages::STORAGE_BINDING
+            | wgpu::TextureUsages::TEXTURE_BINDING
+            | wgpu::TextureUsages::COPY_SRC;
         let irradiance = target(gpu, "slc frame irradiance", (w, h), F32, sampled_storage);
         let output = target(gpu, "slc frame output", (w, h), F32, sampled_storage);
-        let specular = glossy.then(|| target(gpu, "slc frame specular", (w, h), F32, sampled_storage));
+        let specular =
+            glossy.then(|| target(gpu, "slc frame specular", (w, h), F32, sampled_storage));
 
         // Direct light and composition: fixed resources, bound once.
-        let direct = zeroed(gpu, "slc frame direct", w as u64 * h as u64 * 16, wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC);
+        let direct = zeroed(
+            gpu,
+            "slc frame direct",
+            w as u64 * h as u64 * 16,
+            wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+        );
         let direct_layout = KernelLayout::new(gpu, Kernel::PrimaryDirect, &features)?;
         let direct_pipeline = direct_layout.pipeline(gpu, &features, None)?;
         let direct_group = direct_layout.group(
@@ -588,7 +734,11 @@ impl GpuVplFrame {
             // A software adapter's timestamps do not bracket the work its
             // worker threads do (lavapipe reports microseconds for
             // 10⁸-evaluation dispatches): time it by the clock instead.
-            timer: if gpu.adapter.device_type == wgpu::DeviceType::Cpu { None } else { Timer::new(gpu, TIMED_PASSES) },
+            timer: if gpu.adapter.device_type == wgpu::DeviceType::Cpu {
+                None
+            } else {
+                Timer::new(gpu, TIMED_PASSES)
+            },
             timed_stages: Vec::new(),
         };
         gpu.take_errors()?;
@@ -619,7 +769,8 @@ impl GpuVplFrame {
     /// the scene's is ([`PrimaryLight::validate`]).
     pub fn set_primary(&self, primary: &PrimaryLight) -> Result<(), GpuError> {
         primary.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
-        let (light, shadow) = light_uniforms(primary, self.bounds, self.desc.rsm_size, self.desc.shadow_size);
+        let (light, shadow) =
+            light_uniforms(primary, self.bounds, self.desc.rsm_size, self.desc.shadow_size);
         self.gpu.queue.write_buffer(&self.light_params, 0, bytemuck::bytes_of(&light));
         self.gpu.queue.write_buffer(&self.shadow_params, 0, bytemuck::bytes_of(&shadow));
         self.lighting_changed.set(true);
@@ -637,7 +788,8 @@ impl GpuVplFrame {
         let r = depth_range(self.bounds, camera.position);
         let [c0, c1, c2, c3] = columns(camera.view_projection(w, h, r.start, r.end));
         self.camera_map = MapParams { c0, c1, c2, c3, origin: camera.position, ..self.camera_map };
-        let image = ImageParams { eye: camera.position, width: w, height: h, pad0: 0, pad1: 0, pad2: 0 };
+        let image =
+            ImageParams { eye: camera.position, width: w, height: h, pad0: 0, pad1: 0, pad2: 0 };
         self.gpu.queue.write_buffer(&self.camera_params, 0, bytemuck::bytes_of(&self.camera_map));
         self.gpu.queue.write_buffer(&self.image_params, 0, bytemuck::bytes_of(&image));
         (self.camera, self.eye) = (*camera, camera.position);
@@ -670,13 +822,22 @@ impl GpuVplFrame {
         let gpu = &self.gpu;
         let (w, h) = (self.desc.width, self.desc.height);
         let desc = TemporalPassDesc { output_format: F32, ..TemporalPassDesc::new(w, h) };
-        let usage = wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
-        let irradiance = (TemporalPass::new(gpu, &desc)?, target(gpu, "slc frame accumulated irradiance", (w, h), F32, usage));
+        let usage = wgpu::TextureUsages::STORAGE_BINDING
+            | wgpu::TextureUsages::TEXTURE_BINDING
+            | wgpu::TextureUsages::COPY_SRC;
+        let irradiance = (
+            TemporalPass::new(gpu, &desc)?,
+            target(gpu, "slc frame accumulated irradiance", (w, h), F32, usage),
+        );
         let specular = match self.specular {
-            Some(_) => Some((TemporalPass::new(gpu, &desc)?, target(gpu, "slc frame accumulated specular", (w, h), F32, usage))),
+            Some(_) => Some((
+                TemporalPass::new(gpu, &desc)?,
+                target(gpu, "slc frame accumulated specular", (w, h), F32, usage),
+            )),
             None => None,
         };
-        let compose_group = self.compose_inputs().group(&irradiance.1, specular.as_ref().map(|s| &s.1));
+        let compose_group =
+            self.compose_inputs().group(&irradiance.1, specular.as_ref().map(|s| &s.1));
         self.lighting_changed.set(false);
         self.temporal = Some(FrameTemporal { settings, irradiance, specular, compose_group });
         Ok(())
@@ -723,7 +884,11 @@ impl GpuVplFrame {
     /// [`GpuVplFrame::use_timestamps`]); read them with
     /// [`GpuVplFrame::stage_times`] once the encoder's commands are
     /// submitted. Returns whether the stages are timed.
-    pub fn record_timed(&mut self, encoder: &mut wgpu::CommandEncoder, settings: &IndirectSettings) -> Result<bool, GpuError> {
+    pub fn record_timed(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        settings: &IndirectSettings,
+    ) -> Result<bool, GpuError> {
         let (uploads, steps) = self.steps(settings)?;
         uploads.record(&self.gpu, encoder);
         let mut timer = self.timer.take();
@@ -742,7 +907,12 @@ impl GpuVplFrame {
 
     /// Records `steps` with a timestamp pair around each, resolves the
     /// queries and remembers the stages for [`GpuVplFrame::stage_times`].
-    fn record_with_timestamps(&mut self, encoder: &mut wgpu::CommandEncoder, steps: &[Step], t: &mut Timer) {
+    fn record_with_timestamps(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        steps: &[Step],
+        t: &mut Timer,
+    ) {
         t.reset();
         for step in steps {
             self.record_step(encoder, step, Some(t));
@@ -756,32 +926,61 @@ impl GpuVplFrame {
     /// duration; `None` where the frame does not use timestamps or no frame
     /// was timed yet.
     pub fn stage_times(&self) -> Result<Option<Vec<StageTime>>, GpuError> {
-        let Some(t) = self.timer.as_ref().filter(|_| !self.timed_stages.is_empty()) else { return Ok(None) };
+        let Some(t) = self.timer.as_ref().filter(|_| !self.timed_stages.is_empty()) else {
+            return Ok(None);
+        };
         let ms = t.durations_ms(&self.gpu)?;
         if ms.len() != self.timed_stages.len() {
-            return Err(GpuError::Device(format!("{} timestamp pairs for {} stages", ms.len(), self.timed_stages.len())));
+            return Err(GpuError::Device(format!(
+                "{} timestamp pairs for {} stages",
+                ms.len(),
+                self.timed_stages.len()
+            )));
         }
-        Ok(Some(self.timed_stages.iter().zip(ms).map(|(&stage, ms)| StageTime::new(stage, ms)).collect()))
+        Ok(Some(
+            self.timed_stages
+                .iter()
+                .zip(ms)
+                .map(|(&stage, ms)| StageTime::new(stage, ms))
+                .collect(),
+        ))
     }
 
     /// The frame's uniforms (recorded first) and its steps for `st`, each
     /// recordable on its own.
     fn steps(&mut self, st: &IndirectSettings) -> Result<(Uploads, Vec<Step>), GpuError> {
         let inputs = IndirectInputs {
-            gbuffer: GBuffer { surface: Surface::Position(&self.gb[0].view), normal: &self.gb[1].view, eye: self.eye },
-            vpls: VplInput::Rsm { position: &self.rsm[0].view, normal: &self.rsm[1].view, flux: &self.rsm[2].view },
+            gbuffer: GBuffer {
+                surface: Surface::Position(&self.gb[0].view),
+                normal: &self.gb[1].view,
+                eye: self.eye,
+            },
+            vpls: VplInput::Rsm {
+                position: &self.rsm[0].view,
+                normal: &self.rsm[1].view,
+                flux: &self.rsm[2].view,
+            },
             output: &self.irradiance.view,
-            materials: self.specular.as_ref().map(|sp| IndirectMaterials { table: &self.material_table, specular: &sp.view }),
+            materials: self
+                .specular
+                .as_ref()
+                .map(|sp| IndirectMaterials { table: &self.material_table, specular: &sp.view }),
         };
-        let Recording { mut uploads, dispatches: indirect } = self.indirect.dispatches(&inputs, st)?;
+        let Recording { mut uploads, dispatches: indirect } =
+            self.indirect.dispatches(&inputs, st)?;
         self.recorded_min_distance = st.min_distance;
         let (gx, gy) = (self.desc.width.div_ceil(TILE), self.desc.height.div_ceil(TILE));
-        let mut steps = vec![Step::Raster(Stage::GBuffer), Step::Raster(Stage::Rsm), Step::Raster(Stage::ShadowMap)];
+        let mut steps = vec![
+            Step::Raster(Stage::GBuffer),
+            Step::Raster(Stage::Rsm),
+            Step::Raster(Stage::ShadowMap),
+        ];
         steps.extend(indirect.into_iter().map(Step::Compute));
         let mut compose = self.compose_group.clone();
         if let Some(t) = &mut self.temporal {
             let view = TemporalView::of_camera(&self.camera, self.desc.width, self.desc.height);
-            let ts = if self.lighting_changed.take() { t.settings.after_change() } else { t.settings };
+            let ts =
+                if self.lighting_changed.take() { t.settings.after_change() } else { t.settings };
             let (pass, out) = &mut t.irradiance;
             let signal = TemporalInputs::new(inputs.gbuffer, &self.irradiance.view, &out.view);
             let (up, d) = pass.dispatch(&signal, &view, &ts)?;
@@ -795,23 +994,52 @@ impl GpuVplFrame {
             }
             compose = t.compose_group.clone();
         }
-        steps.push(Step::Compute(Dispatch::new(Stage::Direct, &self.direct_pipeline, self.direct_group.clone(), None, [gx, gy, 1])));
-        steps.push(Step::Compute(Dispatch::new(Stage::Composition, &self.compose_pipeline, compose, None, [gx, gy, 1])));
+        steps.push(Step::Compute(Dispatch::new(
+            Stage::Direct,
+            &self.direct_pipeline,
+            self.direct_group.clone(),
+            None,
+            [gx, gy, 1],
+        )));
+        steps.push(Step::Compute(Dispatch::new(
+            Stage::Composition,
+            &self.compose_pipeline,
+            compose,
+            None,
+            [gx, gy, 1],
+        )));
         Ok((uploads, steps))
     }
 
-    fn record_step(&self, encoder: &mut wgpu::CommandEncoder, step: &Step, timer: Option<&mut Timer>) {
+    fn record_step(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        step: &Step,
+        timer: Option<&mut Timer>,
+    ) {
         match step {
             Step::Compute(d) => {
                 let timestamp_writes = timer.and_then(|t| t.next());
-                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(d.stage.name()), timestamp_writes });
+                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                    label: Some(d.stage.name()),
+                    timestamp_writes,
+                });
                 d.record(&mut pass);
             }
             Step::Raster(stage) => {
                 let (colors, depth, pipeline, group) = match stage {
-                    Stage::GBuffer => (&self.gb[..2], &self.gb[2], &self.gbuffer_pipeline, &self.camera_group),
-                    Stage::Rsm => (&self.rsm[..3], &self.rsm[3], &self.rsm_pipeline, &self.light_group),
-                    _ => (&self.shadow_map[..1], &self.shadow_map[1], &self.shadow_pipeline, &self.shadow_group),
+                    Stage::GBuffer => {
+                        (&self.gb[..2], &self.gb[2], &self.gbuffer_pipeline, &self.camera_group)
+                    }
+                    Stage::Rsm => {
+                        (&self.rsm[..3], &self.rsm[3], &self.rsm_pipeline, &self.light_group)
+                    }
+                    _ => (
+                        &self.shadow_map[..1],
+                        &self.shadow_map[1],
+                        &self.shadow_pipeline,
+                        &self.shadow_group,
+                    ),
                 };
                 let attachments: Vec<Option<wgpu::RenderPassColorAttachment>> = colors
                     .iter()
@@ -820,7 +1048,10 @@ impl GpuVplFrame {
                             view: &t.view,
                             depth_slice: None,
                             resolve_target: None,
-                            ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT), store: wgpu::StoreOp::Store },
+                            ops: wgpu::Operations {
+                                load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                                store: wgpu::StoreOp::Store,
+                            },
                         })
                     })
                     .collect();
@@ -830,7 +1061,10 @@ impl GpuVplFrame {
                     color_attachments: &attachments,
                     depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                         view: &depth.view,
-                        depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+                        depth_ops: Some(wgpu::Operations {
+                            load: wgpu::LoadOp::Clear(1.0),
+                            store: wgpu::StoreOp::Discard,
+                        }),
                         stencil_ops: None,
                     }),
                     timestamp_writes,
@@ -848,7 +1082,11 @@ impl GpuVplFrame {
     /// Records the whole frame into `encoder` (render and compute passes;
     /// nothing is submitted or read back) with the indirect pass's
     /// `settings` (every one of them honoured).
-    pub fn record(&mut self, encoder: &mut wgpu::CommandEncoder, settings: &IndirectSettings) -> Result<(), GpuError> {
+    pub fn record(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        settings: &IndirectSettings,
+    ) -> Result<(), GpuError> {
         let (uploads, steps) = self.steps(settings)?;
         uploads.record(&self.gpu, encoder);
         for step in &steps {
@@ -863,26 +1101,36 @@ impl GpuVplFrame {
     pub fn render(&mut self, settings: &IndirectSettings) -> Result<FrameRender, GpuError> {
         let (uploads, steps) = self.steps(settings)?;
         let gpu = self.gpu.clone();
-        let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc frame uniforms") });
+        let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("slc frame uniforms"),
+        });
         uploads.record(&gpu, &mut encoder);
         gpu.queue.submit([encoder.finish()]);
         let mut times = Vec::with_capacity(steps.len());
         let mut timer = self.timer.take();
         let timing = match timer.as_mut() {
             Some(t) => {
-                let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc frame") });
+                let mut encoder =
+                    gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                        label: Some("slc frame"),
+                    });
                 self.record_with_timestamps(&mut encoder, &steps, t);
                 gpu.queue.submit([encoder.finish()]);
                 gpu.wait()?;
                 let ms = t.durations_ms(&gpu)?;
-                times.extend(steps.iter().zip(ms).map(|(step, ms)| StageTime::new(step.stage(), ms)));
+                times.extend(
+                    steps.iter().zip(ms).map(|(step, ms)| StageTime::new(step.stage(), ms)),
+                );
                 Timing::GpuTimestamps
             }
             None => {
                 gpu.wait()?;
                 for step in &steps {
                     let t0 = Instant::now();
-                    let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(step.stage().name()) });
+                    let mut encoder =
+                        gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                            label: Some(step.stage().name()),
+                        });
                     self.record_step(&mut encoder, step, None);
                     gpu.queue.submit([encoder.finish()]);
                     gpu.wait()?;
@@ -896,20 +1144,37 @@ impl GpuVplFrame {
         let radiance = read_texture(&gpu, &self.output.texture)?;
         let irradiance = read_texture(&gpu, &self.irradiance.texture)?;
         let positions = read_texture(&gpu, &self.gb[0].texture)?;
-        let image = Image { width: w, height: h, data: radiance.iter().map(|p| Vec3::new(p[0], p[1], p[2])).collect() };
+        let image = Image {
+            width: w,
+            height: h,
+            data: radiance.iter().map(|p| Vec3::new(p[0], p[1], p[2])).collect(),
+        };
         let shaded = positions.iter().filter(|p| p[3] > 0.0).count().max(1) as f64;
-        let sum = |stages: &[Stage]| times.iter().filter(|t| stages.contains(&t.stage)).map(|t| t.ms).sum::<f64>();
+        let sum = |stages: &[Stage]| {
+            times.iter().filter(|t| stages.contains(&t.stage)).map(|t| t.ms).sum::<f64>()
+        };
         let stats = VplStats {
             gbuffer_ms: sum(&[Stage::GBuffer]),
             // The CPU's "direct" includes its shadow rays.
             direct_ms: sum(&[Stage::ShadowMap, Stage::Direct]),
             rsm_ms: sum(&[Stage::Rsm, Stage::VplGeneration]),
             shading_ms: sum(&[Stage::LightUpdate, Stage::Shading, Stage::NearField]),
-            denoise_ms: sum(&[Stage::Denoise, Stage::IrradianceExport, Stage::Temporal, Stage::Composition]),
+            denoise_ms: sum(&[
+                Stage::Denoise,
+                Stage::IrradianceExport,
+                Stage::Temporal,
+                Stage::Composition,
+            ]),
             total_ms: times.iter().map(|t| t.ms).sum(),
             vpls: (self.desc.rsm_size as usize).pow(2),
             lights_per_pixel: 0.0,
-            kept_per_pixel: irradiance.iter().zip(&positions).filter(|(_, p)| p[3] > 0.0).map(|(e, _)| e[3] as f64).sum::<f64>() / shaded,
+            kept_per_pixel: irradiance
+                .iter()
+                .zip(&positions)
+                .filter(|(_, p)| p[3] > 0.0)
+                .map(|(e, _)| e[3] as f64)
+                .sum::<f64>()
+                / shaded,
             evaluations: 0,
         };
         Ok(FrameRender { image, stages: times, timing, stats })
@@ -921,7 +1186,8 @@ impl GpuVplFrame {
     /// clamp distance. Depth is the distance from the eye.
     pub fn read_inputs(&self) -> Result<VplInputs, GpuError> {
         let gpu = &self.gpu;
-        let (position, normal) = (read_texture(gpu, &self.gb[0].texture)?, read_texture(gpu, &self.gb[1].texture)?);
+        let (position, normal) =
+            (read_texture(gpu, &self.gb[0].texture)?, read_texture(gpu, &self.gb[1].texture)?);
         let n = position.len();
         let mut gb = slc_scene::vpl::GBuffer {
             width: self.desc.width,
@@ -937,7 +1203,11 @@ impl GpuVplFrame {
         for i in 0..n {
             if position[i][3] > 0.0 {
                 let p = Vec3::new(position[i][0], position[i][1], position[i][2]);
-                let m = self.materials.get(normal[i][3] as usize).copied().unwrap_or(Material::lambertian(Vec3::ZERO, Vec3::ZERO));
+                let m = self
+                    .materials
+                    .get(normal[i][3] as usize)
+                    .copied()
+                    .unwrap_or(Material::lambertian(Vec3::ZERO, Vec3::ZERO));
                 gb.position[i] = p;
                 gb.normal[i] = Vec3::new(normal[i][0], normal[i][1], normal[i][2]);
                 gb.albedo[i] = m.albedo;
@@ -949,13 +1219,23 @@ impl GpuVplFrame {
         let [p, nn, f] = [0, 1, 2].map(|k| read_texture(gpu, &self.rsm[k].texture));
         let (p, nn, f) = (p?, nn?, f?);
         let v3 = |t: &[[f32; 4]]| t.iter().map(|x| Vec3::new(x[0], x[1], x[2])).collect::<Vec<_>>();
-        let vpls = Vpls { size: self.desc.rsm_size, position: v3(&p), normal: v3(&nn), flux: v3(&f) };
-        Ok(VplInputs { gbuffer: gb, vpls, min_d2: self.recorded_min_distance * self.recorded_min_distance })
+        let vpls =
+            Vpls { size: self.desc.rsm_size, position: v3(&p), normal: v3(&nn), flux: v3(&f) };
+        Ok(VplInputs {
+            gbuffer: gb,
+            vpls,
+            min_d2: self.recorded_min_distance * self.recorded_min_distance,
+        })
     }
 
     /// The primary light's direct irradiance of the last frame, per pixel.
     pub fn read_direct(&self) -> Result<Vec<Vec3>, GpuError> {
-        let staging = zeroed(&self.gpu, "slc direct readback", self.direct.size(), wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
+        let staging = zeroed(
+            &self.gpu,
+            "slc direct readback",
+            self.direct.size(),
+            wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        );
         let d: Vec<[f32; 4]> = read_back(&self.gpu, &self.direct, &staging)?;
         Ok(d.iter().map(|x| Vec3::new(x[0], x[1], x[2])).collect())
     }
@@ -968,10 +1248,18 @@ impl GpuVplFrame {
     /// at pixels with a specular lobe `L_e + f(v, l)·E_direct + c_diff/π·E
     /// + S` (as the frame composes them: [`GBuffer::radiance`](slc_scene::vpl::GBuffer::radiance);
     /// `specular` empty: every pixel Lambertian).
-    pub fn compose_with(&self, inputs: &VplInputs, indirect: &[Vec3], specular: &[Vec3]) -> Result<Image, GpuError> {
+    pub fn compose_with(
+        &self,
+        inputs: &VplInputs,
+        indirect: &[Vec3],
+        specular: &[Vec3],
+    ) -> Result<Image, GpuError> {
         let direct = self.read_direct()?;
         let gb = &inputs.gbuffer;
-        if indirect.len() != direct.len() || gb.position.len() != direct.len() || !(specular.is_empty() || specular.len() == direct.len()) {
+        if indirect.len() != direct.len()
+            || gb.position.len() != direct.len()
+            || !(specular.is_empty() || specular.len() == direct.len())
+        {
             return Err(GpuError::Setting(format!(
                 "{} irradiance and {} specular values for {} pixels",
                 indirect.len(),
@@ -980,7 +1268,9 @@ impl GpuVplFrame {
             )));
         }
         let primary = self.primary.get();
-        let data = (0..direct.len()).map(|i| gb.radiance(i, &primary, direct[i], indirect[i], specular.get(i).copied())).collect();
+        let data = (0..direct.len())
+            .map(|i| gb.radiance(i, &primary, direct[i], indirect[i], specular.get(i).copied()))
+            .collect();
         Ok(Image { width: gb.width, height: gb.height, data })
     }
 }
@@ -1055,7 +1345,8 @@ fn readback_rows(t: &wgpu::Texture) -> Result<(u32, u32), GpuError> {
         F16 => 8,
         f => return Err(GpuError::Setting(format!("cannot read back {f:?}"))),
     };
-    let row = (t.width() * texel).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+    let row = (t.width() * texel).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
+        * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
     Ok((texel, row))
 }
 
@@ -1063,7 +1354,12 @@ fn readback_rows(t: &wgpu::Texture) -> Result<(u32, u32), GpuError> {
 /// `Rgba16Float` texture; rows padded to the copy alignment).
 pub(crate) fn texture_staging(gpu: &GpuContext, t: &wgpu::Texture) -> wgpu::Buffer {
     let row = readback_rows(t).map_or(16 * t.width(), |(_, row)| row);
-    zeroed(gpu, "slc texture readback", row as u64 * t.height() as u64, wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST)
+    zeroed(
+        gpu,
+        "slc texture readback",
+        row as u64 * t.height() as u64,
+        wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+    )
 }
 
 /// Reads an `Rgba32Float` or `Rgba16Float` texture back as `[f32; 4]` per
@@ -1074,18 +1370,32 @@ pub(crate) fn read_texture(gpu: &GpuContext, t: &wgpu::Texture) -> Result<Vec<[f
 
 /// [`read_texture`] through `staging`, a [`texture_staging`] buffer of `t`
 /// (kept by a caller that reads back every frame).
-pub(crate) fn read_texture_via(gpu: &GpuContext, t: &wgpu::Texture, staging: &wgpu::Buffer) -> Result<Vec<[f32; 4]>, GpuError> {
+pub(crate) fn read_texture_via(
+    gpu: &GpuContext,
+    t: &wgpu::Texture,
+    staging: &wgpu::Buffer,
+) -> Result<Vec<[f32; 4]>, GpuError> {
     let (w, h) = (t.width(), t.height());
     let (texel, row) = readback_rows(t)?;
     if staging.size() < row as u64 * h as u64 {
-        return Err(GpuError::Setting(format!("a read-back buffer of {} bytes for {} rows of {row}", staging.size(), h)));
+        return Err(GpuError::Setting(format!(
+            "a read-back buffer of {} bytes for {} rows of {row}",
+            staging.size(),
+            h
+        )));
     }
-    let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc texture readback") });
+    let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+        label: Some("slc texture readback"),
+    });
     enc.copy_texture_to_buffer(
         t.as_image_copy(),
         wgpu::TexelCopyBufferInfo {
             buffer: staging,
-            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(row), rows_per_image: None },
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(row),
+                rows_per_image: None,
+            },
         },
         t.size(),
     );
@@ -1102,24 +1412,47 @@ pub(crate) fn read_texture_via(gpu: &GpuContext, t: &wgpu::Texture, staging: &wg
             out.extend(bytemuck::pod_collect_to_vec::<u8, [f32; 4]>(r));
         } else {
             let halves: Vec<u16> = bytemuck::pod_collect_to_vec(r);
-            out.extend(halves.chunks_exact(4).map(|c| [0, 1, 2, 3].map(|k| half::f16::from_bits(c[k]).to_f32())));
+            out.extend(
+                halves
+                    .chunks_exact(4)
+                    .map(|c| [0, 1, 2, 3].map(|k| half::f16::from_bits(c[k]).to_f32())),
+            );
         }
     }
     Ok(out)
 }
 
 /// An `Rgba32Float` texture of `size` with `usage`.
-pub(crate) fn rgba32_target(gpu: &GpuContext, label: &str, size: (u32, u32), usage: wgpu::TextureUsages) -> wgpu::Texture {
+pub(crate) fn rgba32_target(
+    gpu: &GpuContext,
+    label: &str,
+    size: (u32, u32),
+    usage: wgpu::TextureUsages,
+) -> wgpu::Texture {
     target(gpu, label, size, F32, usage).texture
 }
 
 /// An `Rgba32Float` texture (`TEXTURE_BINDING`) holding `texels`, row-major.
-pub(crate) fn upload_rgba32(gpu: &GpuContext, label: &str, size: (u32, u32), texels: &[[f32; 4]]) -> wgpu::Texture {
-    let t = rgba32_target(gpu, label, size, wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST);
+pub(crate) fn upload_rgba32(
+    gpu: &GpuContext,
+    label: &str,
+    size: (u32, u32),
+    texels: &[[f32; 4]],
+) -> wgpu::Texture {
+    let t = rgba32_target(
+        gpu,
+        label,
+        size,
+        wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+    );
     gpu.queue.write_texture(
         t.as_image_copy(),
         bytemuck::cast_slice(texels),
-        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size.0 * 16), rows_per_image: None },
+        wgpu::TexelCopyBufferLayout {
+            offset: 0,
+            bytes_per_row: Some(size.0 * 16),
+            rows_per_image: None,
+        },
         t.size(),
     );
     t

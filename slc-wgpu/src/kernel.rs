@@ -12,32 +12,70 @@ use wgpu::util::DeviceExt;
 /// bindings fit the device's per-stage limits (with `extra` storage
 /// buffers in a group the caller adds, the path tracer's tables), and that
 /// its workgroup fits.
-pub(crate) fn check_kernels(gpu: &GpuContext, kernels: &[(Kernel, &Features, u32)]) -> Result<(), GpuError> {
+pub(crate) fn check_kernels(
+    gpu: &GpuContext,
+    kernels: &[(Kernel, &Features, u32)],
+) -> Result<(), GpuError> {
     let lim = &gpu.limits;
     for &(kernel, f, extra) in kernels {
         let c = counts(&bindings(kernel, f));
         let n = |what: &str| format!("{what} ({})", kernel.name());
-        gpu.require(n("max_storage_buffers_per_shader_stage"), (c.storage_buffers + extra) as u64, lim.max_storage_buffers_per_shader_stage as u64)?;
-        gpu.require(n("max_uniform_buffers_per_shader_stage"), c.uniform_buffers as u64, lim.max_uniform_buffers_per_shader_stage as u64)?;
+        gpu.require(
+            n("max_storage_buffers_per_shader_stage"),
+            (c.storage_buffers + extra) as u64,
+            lim.max_storage_buffers_per_shader_stage as u64,
+        )?;
+        gpu.require(
+            n("max_uniform_buffers_per_shader_stage"),
+            c.uniform_buffers as u64,
+            lim.max_uniform_buffers_per_shader_stage as u64,
+        )?;
         gpu.require(
             n("max_dynamic_uniform_buffers_per_pipeline_layout"),
             c.dynamic_uniform_buffers as u64,
             lim.max_dynamic_uniform_buffers_per_pipeline_layout as u64,
         )?;
-        gpu.require(n("max_sampled_textures_per_shader_stage"), c.sampled_textures as u64, lim.max_sampled_textures_per_shader_stage as u64)?;
-        gpu.require(n("max_storage_textures_per_shader_stage"), c.storage_textures as u64, lim.max_storage_textures_per_shader_stage as u64)?;
-        gpu.require(n("max_bind_groups"), c.bind_groups.max(1 + (extra > 0) as u32) as u64, lim.max_bind_groups as u64)?;
+        gpu.require(
+            n("max_sampled_textures_per_shader_stage"),
+            c.sampled_textures as u64,
+            lim.max_sampled_textures_per_shader_stage as u64,
+        )?;
+        gpu.require(
+            n("max_storage_textures_per_shader_stage"),
+            c.storage_textures as u64,
+            lim.max_storage_textures_per_shader_stage as u64,
+        )?;
+        gpu.require(
+            n("max_bind_groups"),
+            c.bind_groups.max(1 + (extra > 0) as u32) as u64,
+            lim.max_bind_groups as u64,
+        )?;
         let wg = match kernel {
-            Kernel::LightUpdate | Kernel::LightRanges | Kernel::BshRefit | Kernel::BshReservoir | Kernel::PtConnect | Kernel::PtExtend => {
-                (f.workgroup_size, 1)
-            }
+            Kernel::LightUpdate
+            | Kernel::LightRanges
+            | Kernel::BshRefit
+            | Kernel::BshReservoir
+            | Kernel::PtConnect
+            | Kernel::PtExtend => (f.workgroup_size, 1),
             Kernel::VplPack => (slc_core::interleave::NEAR_BLOCK, 1),
             Kernel::SceneRaster => (1, 1),
             _ => (f.tile_size, f.tile_size),
         };
-        gpu.require(n("max_compute_workgroup_size_x"), wg.0 as u64, lim.max_compute_workgroup_size_x as u64)?;
-        gpu.require(n("max_compute_workgroup_size_y"), wg.1 as u64, lim.max_compute_workgroup_size_y as u64)?;
-        gpu.require(n("max_compute_invocations_per_workgroup"), (wg.0 * wg.1) as u64, lim.max_compute_invocations_per_workgroup as u64)?;
+        gpu.require(
+            n("max_compute_workgroup_size_x"),
+            wg.0 as u64,
+            lim.max_compute_workgroup_size_x as u64,
+        )?;
+        gpu.require(
+            n("max_compute_workgroup_size_y"),
+            wg.1 as u64,
+            lim.max_compute_workgroup_size_y as u64,
+        )?;
+        gpu.require(
+            n("max_compute_invocations_per_workgroup"),
+            (wg.0 * wg.1) as u64,
+            lim.max_compute_invocations_per_workgroup as u64,
+        )?;
     }
     Ok(())
 }
@@ -54,7 +92,11 @@ pub(crate) struct KernelLayout {
 impl KernelLayout {
     /// The layouts of `kernel` for `features`, visible to compute (checks
     /// the kernel's limits first).
-    pub(crate) fn new(gpu: &GpuContext, kernel: Kernel, features: &Features) -> Result<KernelLayout, GpuError> {
+    pub(crate) fn new(
+        gpu: &GpuContext,
+        kernel: Kernel,
+        features: &Features,
+    ) -> Result<KernelLayout, GpuError> {
         KernelLayout::with_visibility(gpu, kernel, features, wgpu::ShaderStages::COMPUTE)
     }
 
@@ -82,8 +124,12 @@ impl KernelLayout {
                             Resource::Texture => B::Texture,
                             Resource::DepthTexture => B::Depth,
                             Resource::StorageTexture(f) => B::Storage(match f {
-                                slc_shared_shaders::OutputFormat::Rgba16Float => wgpu::TextureFormat::Rgba16Float,
-                                slc_shared_shaders::OutputFormat::Rgba32Float => wgpu::TextureFormat::Rgba32Float,
+                                slc_shared_shaders::OutputFormat::Rgba16Float => {
+                                    wgpu::TextureFormat::Rgba16Float
+                                }
+                                slc_shared_shaders::OutputFormat::Rgba32Float => {
+                                    wgpu::TextureFormat::Rgba32Float
+                                }
                             }),
                         };
                         (b.binding, kind)
@@ -125,17 +171,30 @@ impl KernelLayout {
     /// When a name is not one of the group's bound entries or one is
     /// missing: a mismatch between slc-wgpu and the kernel's table (a bug,
     /// never input).
-    pub(crate) fn group(&self, gpu: &GpuContext, g: u32, res: &[(&str, wgpu::BindingResource)]) -> wgpu::BindGroup {
+    pub(crate) fn group(
+        &self,
+        gpu: &GpuContext,
+        g: u32,
+        res: &[(&str, wgpu::BindingResource)],
+    ) -> wgpu::BindGroup {
         let wanted: Vec<&Binding> = self.table.iter().filter(|b| b.bound && b.group == g).collect();
         let entries: Vec<wgpu::BindGroupEntry> = res
             .iter()
             .map(|(name, r)| {
-                let b =
-                    wanted.iter().find(|b| b.name == *name).unwrap_or_else(|| panic!("{} group {g} has no bound binding {name}", self.kernel.name()));
+                let b = wanted.iter().find(|b| b.name == *name).unwrap_or_else(|| {
+                    panic!("{} group {g} has no bound binding {name}", self.kernel.name())
+                });
                 wgpu::BindGroupEntry { binding: b.binding, resource: r.clone() }
             })
             .collect();
-        assert_eq!(entries.len(), wanted.len(), "{} group {g}: {} of {} bindings given", self.kernel.name(), entries.len(), wanted.len());
+        assert_eq!(
+            entries.len(),
+            wanted.len(),
+            "{} group {g}: {} of {} bindings given",
+            self.kernel.name(),
+            entries.len(),
+            wanted.len()
+        );
         gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some(self.kernel.name()),
             layout: &self.groups[g as usize],
@@ -146,7 +205,12 @@ impl KernelLayout {
 
 /// A storage buffer initialised with `bytes` (at least 4 bytes are
 /// allocated: a binding cannot be empty).
-pub(crate) fn storage(gpu: &GpuContext, label: &str, bytes: &[u8], extra: wgpu::BufferUsages) -> wgpu::Buffer {
+pub(crate) fn storage(
+    gpu: &GpuContext,
+    label: &str,
+    bytes: &[u8],
+    extra: wgpu::BufferUsages,
+) -> wgpu::Buffer {
     let zero = [0u8; 4];
     gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: Some(label),
@@ -156,15 +220,31 @@ pub(crate) fn storage(gpu: &GpuContext, label: &str, bytes: &[u8], extra: wgpu::
 }
 
 /// A zeroed buffer of `size` bytes (at least 4).
-pub(crate) fn zeroed(gpu: &GpuContext, label: &str, size: u64, usage: wgpu::BufferUsages) -> wgpu::Buffer {
-    gpu.device.create_buffer(&wgpu::BufferDescriptor { label: Some(label), size: size.max(4), usage, mapped_at_creation: false })
+pub(crate) fn zeroed(
+    gpu: &GpuContext,
+    label: &str,
+    size: u64,
+    usage: wgpu::BufferUsages,
+) -> wgpu::Buffer {
+    gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some(label),
+        size: size.max(4),
+        usage,
+        mapped_at_creation: false,
+    })
 }
 
 /// Bind-group layout of a kernel from its binding table: binding 0 a
 /// uniform (with a dynamic offset when `dynamic`), then `reads` read-only
 /// storage buffers, then `writes` read-write ones. Explicit, because an
 /// automatic layout drops the bindings a variant does not use.
-pub(crate) fn bind_layout(gpu: &GpuContext, label: &str, reads: u32, writes: u32, dynamic: bool) -> wgpu::BindGroupLayout {
+pub(crate) fn bind_layout(
+    gpu: &GpuContext,
+    label: &str,
+    reads: u32,
+    writes: u32,
+    dynamic: bool,
+) -> wgpu::BindGroupLayout {
     let mut kinds = vec![(0, if dynamic { B::DynamicUniform } else { B::Uniform })];
     kinds.extend((1..=reads).map(|b| (b, B::Read)));
     kinds.extend((reads + 1..=reads + writes).map(|b| (b, B::Write)));
@@ -196,11 +276,20 @@ pub(crate) fn layout(gpu: &GpuContext, label: &str, kinds: &[(u32, B)]) -> wgpu:
 }
 
 /// [`layout`] for the shader stages `visibility` (raster passes).
-pub(crate) fn layout_for(gpu: &GpuContext, label: &str, kinds: &[(u32, B)], visibility: wgpu::ShaderStages) -> wgpu::BindGroupLayout {
+pub(crate) fn layout_for(
+    gpu: &GpuContext,
+    label: &str,
+    kinds: &[(u32, B)],
+    visibility: wgpu::ShaderStages,
+) -> wgpu::BindGroupLayout {
     let entries: Vec<wgpu::BindGroupLayoutEntry> = kinds
         .iter()
         .map(|&(binding, kind)| {
-            let buffer = |ty, has_dynamic_offset| wgpu::BindingType::Buffer { ty, has_dynamic_offset, min_binding_size: None };
+            let buffer = |ty, has_dynamic_offset| wgpu::BindingType::Buffer {
+                ty,
+                has_dynamic_offset,
+                min_binding_size: None,
+            };
             let ty = match kind {
                 B::Uniform => buffer(wgpu::BufferBindingType::Uniform, false),
                 B::DynamicUniform => buffer(wgpu::BufferBindingType::Uniform, true),
@@ -225,15 +314,29 @@ pub(crate) fn layout_for(gpu: &GpuContext, label: &str, kinds: &[(u32, B)], visi
             wgpu::BindGroupLayoutEntry { binding, visibility, ty, count: None }
         })
         .collect();
-    gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some(label), entries: &entries })
+    gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some(label),
+        entries: &entries,
+    })
 }
 
 /// A compute pipeline for generated WGSL with the given bind-group layouts.
-pub(crate) fn pipeline(gpu: &GpuContext, label: &str, wgsl: String, layouts: &[&wgpu::BindGroupLayout]) -> wgpu::ComputePipeline {
-    let module = gpu.device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(label), source: wgpu::ShaderSource::Wgsl(wgsl.into()) });
+pub(crate) fn pipeline(
+    gpu: &GpuContext,
+    label: &str,
+    wgsl: String,
+    layouts: &[&wgpu::BindGroupLayout],
+) -> wgpu::ComputePipeline {
+    let module = gpu.device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some(label),
+        source: wgpu::ShaderSource::Wgsl(wgsl.into()),
+    });
     let layouts: Vec<Option<&wgpu::BindGroupLayout>> = layouts.iter().map(|l| Some(*l)).collect();
-    let pl =
-        gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor { label: Some(label), bind_group_layouts: &layouts, immediate_size: 0 });
+    let pl = gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: Some(label),
+        bind_group_layouts: &layouts,
+        immediate_size: 0,
+    });
     gpu.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
         label: Some(label),
         layout: Some(&pl),
@@ -258,13 +361,21 @@ pub(crate) fn bind_group(
         .enumerate()
         .map(|(i, b)| {
             let resource = match (i, uniform_size) {
-                (0, Some(size)) => wgpu::BindingResource::Buffer(wgpu::BufferBinding { buffer: b, offset: 0, size: wgpu::BufferSize::new(size) }),
+                (0, Some(size)) => wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                    buffer: b,
+                    offset: 0,
+                    size: wgpu::BufferSize::new(size),
+                }),
                 _ => b.as_entire_binding(),
             };
             wgpu::BindGroupEntry { binding: i as u32, resource }
         })
         .collect();
-    gpu.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(label), layout, entries: &entries })
+    gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some(label),
+        layout,
+        entries: &entries,
+    })
 }
 
 /// The whole of `b` as a binding.
@@ -285,7 +396,12 @@ impl UniformSlots {
         let size = std::mem::size_of::<T>() as u64;
         let align = gpu.limits.min_uniform_buffer_offset_alignment.max(1) as u64;
         let stride = size.div_ceil(align) * align;
-        let buffer = zeroed(gpu, label, stride * slots.max(1), wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST);
+        let buffer = zeroed(
+            gpu,
+            label,
+            stride * slots.max(1),
+            wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        );
         UniformSlots { buffer, stride, size }
     }
 
@@ -307,7 +423,11 @@ impl UniformSlots {
     /// The slots' buffer as a binding of one slot (bound with a dynamic
     /// offset).
     pub(crate) fn binding(&self) -> wgpu::BindingResource<'_> {
-        wgpu::BindingResource::Buffer(wgpu::BufferBinding { buffer: &self.buffer, offset: 0, size: wgpu::BufferSize::new(self.size) })
+        wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+            buffer: &self.buffer,
+            offset: 0,
+            size: wgpu::BufferSize::new(self.size),
+        })
     }
 }
 
@@ -340,8 +460,13 @@ impl Uploads {
         let at = self.bytes.len() as u64;
         let bytes = bytemuck::bytes_of(value);
         self.bytes.extend_from_slice(bytes);
-        self.bytes.resize(self.bytes.len().next_multiple_of(wgpu::COPY_BUFFER_ALIGNMENT as usize), 0);
-        self.copies.push((at, dst.clone(), (bytes.len() as u64).next_multiple_of(wgpu::COPY_BUFFER_ALIGNMENT)));
+        self.bytes
+            .resize(self.bytes.len().next_multiple_of(wgpu::COPY_BUFFER_ALIGNMENT as usize), 0);
+        self.copies.push((
+            at,
+            dst.clone(),
+            (bytes.len() as u64).next_multiple_of(wgpu::COPY_BUFFER_ALIGNMENT),
+        ));
     }
 
     /// Adds `other`'s values after these.
@@ -368,8 +493,14 @@ impl Uploads {
 }
 
 /// Reads a whole buffer back through a mappable staging buffer.
-pub(crate) fn read_back<T: bytemuck::Pod>(gpu: &GpuContext, src: &wgpu::Buffer, staging: &wgpu::Buffer) -> Result<Vec<T>, GpuError> {
-    let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("readback") });
+pub(crate) fn read_back<T: bytemuck::Pod>(
+    gpu: &GpuContext,
+    src: &wgpu::Buffer,
+    staging: &wgpu::Buffer,
+) -> Result<Vec<T>, GpuError> {
+    let mut enc = gpu
+        .device
+        .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("readback") });
     enc.copy_buffer_to_buffer(src, 0, staging, 0, staging.size());
     gpu.queue.submit([enc.finish()]);
     let slice = staging.slice(..);
@@ -400,11 +531,24 @@ impl Timer {
             return None;
         }
         let capacity = passes.clamp(1, 2048);
-        let queries =
-            gpu.device.create_query_set(&wgpu::QuerySetDescriptor { label: Some("slc timer"), ty: wgpu::QueryType::Timestamp, count: 2 * capacity });
+        let queries = gpu.device.create_query_set(&wgpu::QuerySetDescriptor {
+            label: Some("slc timer"),
+            ty: wgpu::QueryType::Timestamp,
+            count: 2 * capacity,
+        });
         let size = 16 * capacity as u64;
-        let resolve = zeroed(gpu, "timer resolve", size, wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC);
-        let staging = zeroed(gpu, "timer staging", size, wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
+        let resolve = zeroed(
+            gpu,
+            "timer resolve",
+            size,
+            wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
+        );
+        let staging = zeroed(
+            gpu,
+            "timer staging",
+            size,
+            wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        );
         Some(Timer { queries, resolve, staging, capacity, used: 0 })
     }
 
@@ -449,7 +593,11 @@ impl Timer {
     pub(crate) fn durations_ms(&self, gpu: &GpuContext) -> Result<Vec<f64>, crate::GpuError> {
         let ticks: Vec<u64> = read_back(gpu, &self.resolve, &self.staging)?;
         let period = gpu.queue.get_timestamp_period() as f64;
-        Ok(ticks.chunks(2).take(self.used as usize).map(|p| p[1].saturating_sub(p[0]) as f64 * period * 1e-6).collect())
+        Ok(ticks
+            .chunks(2)
+            .take(self.used as usize)
+            .map(|p| p[1].saturating_sub(p[0]) as f64 * period * 1e-6)
+            .collect())
     }
 
     /// Sum of the timed passes' GPU durations in ms.

@@ -89,7 +89,9 @@ use thiserror::Error;
 #[derive(Debug, Error)]
 pub enum GpuError {
     /// No adapter (no GPU and no software driver).
-    #[error("no GPU adapter found ({0}); install a Vulkan driver (e.g. mesa-vulkan-drivers) or use the CPU backend")]
+    #[error(
+        "no GPU adapter found ({0}); install a Vulkan driver (e.g. mesa-vulkan-drivers) or use the CPU backend"
+    )]
     NoAdapter(String),
     /// The device could not be opened, or reported an error.
     #[error("GPU device error: {0}")]

@@ -13,7 +13,9 @@ use slc_core::importance::LightCone;
 use slc_core::light::{Light, LightBound};
 use slc_core::range::RangeParams;
 use slc_scene::light_bvh::LightBvh;
-use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuLightCone, RefitParams, pack_cones, pack_light_bvh, pack_lights};
+use slc_shared_shaders::layout::{
+    FrameParams, GpuLight, GpuLightCone, RefitParams, pack_cones, pack_light_bvh, pack_lights,
+};
 use slc_shared_shaders::{Features, Kernel, LightTypes};
 
 /// Workgroup size of the 1-D kernels.
@@ -79,9 +81,17 @@ fn pack_peaks(lights: &[Light]) -> Vec<[f32; 4]> {
 pub(crate) fn check_light_limits(gpu: &GpuContext, n: u64, bvh_bytes: u64) -> Result<(), GpuError> {
     let lim = &gpu.limits;
     let binding = lim.max_storage_buffer_binding_size.min(lim.max_buffer_size);
-    gpu.require("max_storage_buffer_binding_size (lights)", n * std::mem::size_of::<GpuLight>() as u64, binding)?;
+    gpu.require(
+        "max_storage_buffer_binding_size (lights)",
+        n * std::mem::size_of::<GpuLight>() as u64,
+        binding,
+    )?;
     gpu.require("max_storage_buffer_binding_size (light BVH)", bvh_bytes, binding)?;
-    gpu.require("max_compute_workgroups_per_dimension (lights)", n.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)
+    gpu.require(
+        "max_compute_workgroups_per_dimension (lights)",
+        n.div_ceil(WG as u64),
+        lim.max_compute_workgroups_per_dimension as u64,
+    )
 }
 
 /// A light set's buffers and bind groups (rebuilt when the count changes).
@@ -151,7 +161,10 @@ impl GpuLightSet {
         let bvh = pack_light_bvh(light_bvh.map_or(&[], |b| b.nodes()));
         check_light_limits(gpu, lights.len() as u64, std::mem::size_of_val(bvh.as_slice()) as u64)?;
         let features = Features { workgroup_size: WG, ..Features::default() };
-        check_kernels(gpu, &[(Kernel::LightUpdate, &features, TABLES), (Kernel::BshRefit, &features, TABLES)])?;
+        check_kernels(
+            gpu,
+            &[(Kernel::LightUpdate, &features, TABLES), (Kernel::BshRefit, &features, TABLES)],
+        )?;
         let update_layout = KernelLayout::new(gpu, Kernel::LightUpdate, &features)?;
         let refit_layout = KernelLayout::new(gpu, Kernel::BshRefit, &features)?;
         // Group 1 of the path tracer: four read-only tables.
@@ -166,20 +179,45 @@ impl GpuLightSet {
                 },
                 count: None,
             };
-            gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: Some("scene tables"), entries: &[e(0), e(1), e(2), e(3)] })
+            gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: Some("scene tables"),
+                entries: &[e(0), e(1), e(2), e(3)],
+            })
         };
         let update = update_layout.pipeline(gpu, &features, Some(&table_layout))?;
         let refit = refit_layout.pipeline(gpu, &features, Some(&table_layout))?;
         let frame_params = UniformSlots::new::<FrameParams>(gpu, "frame params", 1);
-        let b =
-            LightBuffers::new(gpu, lights, bounds, bsh, power, cones, &bvh, light_bvh, &update_layout, &refit_layout, &table_layout, &frame_params)?;
+        let b = LightBuffers::new(
+            gpu,
+            lights,
+            bounds,
+            bsh,
+            power,
+            cones,
+            &bvh,
+            light_bvh,
+            &update_layout,
+            &refit_layout,
+            &table_layout,
+            &frame_params,
+        )?;
         gpu.take_errors()?;
-        Ok(GpuLightSet { b, frame_params, update: (update, update_layout), refit: (refit, refit_layout), table_layout })
+        Ok(GpuLightSet {
+            b,
+            frame_params,
+            update: (update, update_layout),
+            refit: (refit, refit_layout),
+            table_layout,
+        })
     }
 
     /// Replaces the set with `set` (any count; new buffers and bind groups,
     /// the BSH as `set` built it, the pipelines kept).
-    pub(crate) fn replace(&mut self, gpu: &GpuContext, set: &slc_scene::lights::LightSet) -> Result<(), GpuError> {
+    pub(crate) fn replace(
+        &mut self,
+        gpu: &GpuContext,
+        set: &slc_scene::lights::LightSet,
+    ) -> Result<(), GpuError> {
         let (update, refit) = (&self.update.1, &self.refit.1);
         self.b = LightBuffers::new(
             gpu,
@@ -209,12 +247,17 @@ impl GpuLightSet {
     pub(crate) fn update(&mut self, gpu: &GpuContext, lights: &[Light]) -> Result<bool, GpuError> {
         let b = &mut self.b;
         if lights.len() != b.n as usize {
-            return Err(GpuError::Setting(format!("update_lights: {} lights for a set of {} (a new count needs set_lights)", lights.len(), b.n)));
+            return Err(GpuError::Setting(format!(
+                "update_lights: {} lights for a set of {} (a new count needs set_lights)",
+                lights.len(),
+                b.n
+            )));
         }
         let (gpu_lights, table) = pack_lights(lights);
         let bounds: Vec<LightBound> = lights.iter().map(Light::bound).collect();
         let powers = slc_core::light::emitted_powers(lights);
-        let cones: Vec<LightCone> = lights.iter().zip(&powers).map(|(l, &p)| LightCone::of_light(l, p)).collect();
+        let cones: Vec<LightCone> =
+            lights.iter().zip(&powers).map(|(l, &p)| LightCone::of_light(l, p)).collect();
         let q = &gpu.queue;
         q.write_buffer(&b.lights, 0, bytemuck::cast_slice(&gpu_lights));
         q.write_buffer(&b.bounds, 0, bytemuck::cast_slice(&pack_bounds(&bounds)));
@@ -225,7 +268,8 @@ impl GpuLightSet {
         let replaced = table_bytes.len() as u64 != b.table_buf.size();
         if replaced {
             b.table_buf = storage(gpu, "slc_table", table_bytes, wgpu::BufferUsages::COPY_DST);
-            b.table = table_group(gpu, &self.table_layout, [&b.table_buf, &b.power, &b.cones, &b.bvh]);
+            b.table =
+                table_group(gpu, &self.table_layout, [&b.table_buf, &b.power, &b.cones, &b.bvh]);
         } else {
             q.write_buffer(&b.table_buf, 0, table_bytes);
         }
@@ -236,7 +280,12 @@ impl GpuLightSet {
     /// Threshold ranges `r_t²` for `params` (host, the core's function),
     /// or +∞ for every light (`None`: nothing culled, p = 1).
     pub(crate) fn set_threshold(&self, gpu: &GpuContext, params: Option<&RangeParams>) {
-        let rt2: Vec<f32> = self.b.peaks_host.iter().map(|&p| params.map_or(f32::INFINITY, |q| q.threshold_range2(p))).collect();
+        let rt2: Vec<f32> = self
+            .b
+            .peaks_host
+            .iter()
+            .map(|&p| params.map_or(f32::INFINITY, |q| q.threshold_range2(p)))
+            .collect();
         gpu.queue.write_buffer(&self.rt2, 0, bytemuck::cast_slice(&rt2));
     }
 
@@ -305,9 +354,17 @@ impl LightBuffers {
         let dst = wgpu::BufferUsages::COPY_DST;
         let s = |label: &str, bytes: &[u8]| storage(gpu, label, bytes, wgpu::BufferUsages::empty());
         let ids: Vec<u32> = (0..n as u32).collect();
-        let cones = if cones.is_empty() { vec![GpuLightCone::default()] } else { pack_cones(cones, light_bvh.map_or(&[], |b| b.leaf_of_light())) };
-        let refit_params = UniformSlots::new::<RefitParams>(gpu, "refit params", levels.len() as u64);
-        let values: Vec<RefitParams> = levels.iter().map(|&(first, count)| RefitParams { first, count, pad0: 0, pad1: 0 }).collect();
+        let cones = if cones.is_empty() {
+            vec![GpuLightCone::default()]
+        } else {
+            pack_cones(cones, light_bvh.map_or(&[], |b| b.leaf_of_light()))
+        };
+        let refit_params =
+            UniformSlots::new::<RefitParams>(gpu, "refit params", levels.len() as u64);
+        let values: Vec<RefitParams> = levels
+            .iter()
+            .map(|&(first, count)| RefitParams { first, count, pad0: 0, pad1: 0 })
+            .collect();
         refit_params.write(gpu, &values);
         let rt2 = zeroed(gpu, "rt2", n * 4, wgpu::BufferUsages::STORAGE | dst);
         let r2 = zeroed(gpu, "r2", n * 4, wgpu::BufferUsages::STORAGE);
@@ -316,15 +373,33 @@ impl LightBuffers {
         let bounds = storage(gpu, "light bounds", bytemuck::cast_slice(&pack_bounds(bounds)), dst);
         let bsh = s("bsh nodes", bytemuck::cast_slice(bsh.nodes()));
         let res = crate::kernel::whole;
-        let update_group = update.group(gpu, 0, &[("params", frame_params.binding()), ("ids", res(&ids)), ("rt2", res(&rt2)), ("r2", res(&r2))]);
+        let update_group = update.group(
+            gpu,
+            0,
+            &[
+                ("params", frame_params.binding()),
+                ("ids", res(&ids)),
+                ("rt2", res(&rt2)),
+                ("r2", res(&r2)),
+            ],
+        );
         let refit_group = refit.group(
             gpu,
             0,
-            &[("params", refit_params.binding()), ("order", res(&order)), ("bounds", res(&bounds)), ("r2", res(&r2)), ("bsh_nodes", res(&bsh))],
+            &[
+                ("params", refit_params.binding()),
+                ("order", res(&order)),
+                ("bounds", res(&bounds)),
+                ("r2", res(&r2)),
+                ("bsh_nodes", res(&bsh)),
+            ],
         );
         // The path tracer's tables (a binding cannot be empty: a zeroed
         // entry stands in for a missing one).
-        let power = s("power_table", bytemuck::cast_slice(if power.is_empty() { &[[0.0f32; 4]][..] } else { power }));
+        let power = s(
+            "power_table",
+            bytemuck::cast_slice(if power.is_empty() { &[[0.0f32; 4]][..] } else { power }),
+        );
         let bvh = s("light_bvh", bytemuck::cast_slice(bvh));
         let table_buf = storage(gpu, "slc_table", bytemuck::cast_slice(&table), dst);
         let cones = storage(gpu, "light_cones", bytemuck::cast_slice(&cones), dst);
@@ -355,8 +430,19 @@ impl LightBuffers {
 
 /// The path tracer's group 1 over a set's tables: the IES table, the power
 /// alias table, the importance cones and the light BVH.
-fn table_group(gpu: &GpuContext, layout: &wgpu::BindGroupLayout, bufs: [&wgpu::Buffer; 4]) -> wgpu::BindGroup {
-    let entries: Vec<wgpu::BindGroupEntry> =
-        bufs.iter().enumerate().map(|(i, b)| wgpu::BindGroupEntry { binding: i as u32, resource: b.as_entire_binding() }).collect();
-    gpu.device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some("scene tables"), layout, entries: &entries })
+fn table_group(
+    gpu: &GpuContext,
+    layout: &wgpu::BindGroupLayout,
+    bufs: [&wgpu::Buffer; 4],
+) -> wgpu::BindGroup {
+    let entries: Vec<wgpu::BindGroupEntry> = bufs
+        .iter()
+        .enumerate()
+        .map(|(i, b)| wgpu::BindGroupEntry { binding: i as u32, resource: b.as_entire_binding() })
+        .collect();
+    gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("scene tables"),
+        layout,
+        entries: &entries,
+    })
 }

@@ -19,7 +19,9 @@
 //! backends draw their per-path random numbers differently, so they agree in
 //! expectation (the tests crate checks it), not pixel by pixel.
 
-use crate::kernel::{Timer, UniformSlots, bind_group, bind_layout, pipeline, read_back, storage, zeroed};
+use crate::kernel::{
+    Timer, UniformSlots, bind_group, bind_layout, pipeline, read_back, storage, zeroed,
+};
 use crate::lights::{GpuLightSet, WG};
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
@@ -31,7 +33,10 @@ use slc_core::ray::{ray_t_min, surface_offset};
 use slc_scene::backend::{PathTracer, Timing};
 use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings, RESERVOIR_K, WEIGHTED_K};
 use slc_scene::scene::Material;
-use slc_shared_shaders::layout::{GpuGeoNode, GpuMaterial, GpuPathState, GpuPathVertex, GpuTriangle, NO_LIGHT, PtParams, ShadeParams};
+use slc_shared_shaders::layout::{
+    GpuGeoNode, GpuMaterial, GpuPathState, GpuPathVertex, GpuTriangle, NO_LIGHT, PtParams,
+    ShadeParams,
+};
 use slc_shared_shaders::{Features, Heuristic, Kernel, Selection, generate};
 use std::time::{Duration, Instant};
 
@@ -46,12 +51,21 @@ const MAX_DEPTH: u32 = 64;
 /// order; geometric ones where the scene has none); plus the tree depth.
 fn geometry(pts: &PtScene) -> (Vec<GpuGeoNode>, Vec<GpuTriangle>, Vec<[f32; 4]>, u64) {
     let scene = pts.scene();
-    let tris: Vec<Triangle> = scene.triangles.iter().map(|t| Triangle { v0: t[0].into(), v1: t[1].into(), v2: t[2].into() }).collect();
+    let tris: Vec<Triangle> = scene
+        .triangles
+        .iter()
+        .map(|t| Triangle { v0: t[0].into(), v1: t[1].into(), v2: t[2].into() })
+        .collect();
     let bvh = build_bvh2_from_tris(&tris, BvhBuildParams::medium_build(), &mut Duration::default());
     let nodes: Vec<GpuGeoNode> = bvh
         .nodes
         .iter()
-        .map(|n| GpuGeoNode { bmin: Vec3::from(n.aabb.min), first: n.first_index, bmax: Vec3::from(n.aabb.max), count: n.prim_count })
+        .map(|n| GpuGeoNode {
+            bmin: Vec3::from(n.aabb.min),
+            first: n.first_index,
+            bmax: Vec3::from(n.aabb.max),
+            count: n.prim_count,
+        })
         .collect();
     let lot = pts.light_of_triangle();
     let gpu_tris = bvh
@@ -70,7 +84,11 @@ fn geometry(pts: &PtScene) -> (Vec<GpuGeoNode>, Vec<GpuTriangle>, Vec<[f32; 4]>,
             }
         })
         .collect();
-    let normals = bvh.primitive_indices.iter().flat_map(|&i| scene.vertex_normals(i as usize).map(|n| [n.x, n.y, n.z, 0.0])).collect();
+    let normals = bvh
+        .primitive_indices
+        .iter()
+        .flat_map(|&i| scene.vertex_normals(i as usize).map(|n| [n.x, n.y, n.z, 0.0]))
+        .collect();
     let mut depth = 0u64;
     let mut stack = vec![(0usize, 1u64)];
     while let Some((i, d)) = stack.pop() {
@@ -130,35 +148,78 @@ impl GpuPt {
     /// binding-count, dispatch and traversal-depth limits are checked first.
     pub fn new(gpu: &GpuContext, pts: &PtScene, width: u32, height: u32) -> Result<Self, GpuError> {
         if !(1..=16384).contains(&width) || !(1..=16384).contains(&height) {
-            return Err(GpuError::Setting(format!("image size {width}x{height} must be within 1..=16384 on each side")));
+            return Err(GpuError::Setting(format!(
+                "image size {width}x{height} must be within 1..=16384 on each side"
+            )));
         }
         let pixels = width as u64 * height as u64;
         let (geo_nodes, geo_tris, geo_normals, geo_depth) = geometry(pts);
         let lim = &gpu.limits;
         let max_binding = lim.max_storage_buffer_binding_size;
-        gpu.require("max_storage_buffer_binding_size (geometry)", geo_tris.len() as u64 * 48, max_binding)?;
-        gpu.require("max_storage_buffer_binding_size (path states)", pixels * std::mem::size_of::<GpuPathState>() as u64, max_binding)?;
+        gpu.require(
+            "max_storage_buffer_binding_size (geometry)",
+            geo_tris.len() as u64 * 48,
+            max_binding,
+        )?;
+        gpu.require(
+            "max_storage_buffer_binding_size (path states)",
+            pixels * std::mem::size_of::<GpuPathState>() as u64,
+            max_binding,
+        )?;
         // pt_extend: 12 in group 0 (pt_connect: 10); the IES, power and
         // cone tables and the light BVH in group 1.
-        gpu.require("max_storage_buffers_per_shader_stage", 16, lim.max_storage_buffers_per_shader_stage as u64)?;
-        gpu.require("max_storage_buffer_binding_size (vertex normals)", geo_tris.len() as u64 * 48, max_binding)?;
-        gpu.require("max_compute_workgroups_per_dimension (pixels)", pixels.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
+        gpu.require(
+            "max_storage_buffers_per_shader_stage",
+            16,
+            lim.max_storage_buffers_per_shader_stage as u64,
+        )?;
+        gpu.require(
+            "max_storage_buffer_binding_size (vertex normals)",
+            geo_tris.len() as u64 * 48,
+            max_binding,
+        )?;
+        gpu.require(
+            "max_compute_workgroups_per_dimension (pixels)",
+            pixels.div_ceil(WG as u64),
+            lim.max_compute_workgroups_per_dimension as u64,
+        )?;
         gpu.require("geometry BVH depth (64-entry traversal stack)", geo_depth, MAX_GEO_DEPTH)?;
         let ls = pts.light_set();
-        let set = GpuLightSet::new(gpu, ls.lights(), ls.bounds(), ls.bsh(), &ls.power_table(), ls.cones(), Some(pts.light_bvh()))?;
-        let base = Features { lights: set.types, workgroup_size: WG, heuristic: Heuristic::Power, ..Features::default() };
+        let set = GpuLightSet::new(
+            gpu,
+            ls.lights(),
+            ls.bounds(),
+            ls.bsh(),
+            &ls.power_table(),
+            ls.cones(),
+            Some(pts.light_bvh()),
+        )?;
+        let base = Features {
+            lights: set.types,
+            workgroup_size: WG,
+            heuristic: Heuristic::Power,
+            ..Features::default()
+        };
         let s = |label: &str, bytes: &[u8]| storage(gpu, label, bytes, wgpu::BufferUsages::empty());
         let geo_nodes_buf = s("geo nodes", bytemuck::cast_slice(&geo_nodes));
         let geo_tris_buf = s("geo tris", bytemuck::cast_slice(&geo_tris));
         let geo_normals_buf = s("geo normals", bytemuck::cast_slice(&geo_normals));
         let materials: Vec<GpuMaterial> = pts.scene().materials.iter().map(gpu_material).collect();
         let materials_buf = s("materials", bytemuck::cast_slice(&materials));
-        let rw = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::COPY_SRC;
+        let rw = wgpu::BufferUsages::STORAGE
+            | wgpu::BufferUsages::COPY_DST
+            | wgpu::BufferUsages::COPY_SRC;
         let candidates = zeroed(gpu, "candidates", pixels * 4, rw);
         let paths = zeroed(gpu, "paths", pixels * std::mem::size_of::<GpuPathState>() as u64, rw);
-        let vertices = zeroed(gpu, "vertices", pixels * std::mem::size_of::<GpuPathVertex>() as u64, rw);
+        let vertices =
+            zeroed(gpu, "vertices", pixels * std::mem::size_of::<GpuPathVertex>() as u64, rw);
         let radiance = zeroed(gpu, "radiance", pixels * 16, rw);
-        let readback = zeroed(gpu, "radiance readback", pixels * 16, wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
+        let readback = zeroed(
+            gpu,
+            "radiance readback",
+            pixels * 16,
+            wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        );
         // One extend per depth and a last one that only adds the emission its
         // BSDF sample finds.
         let pt_params = UniformSlots::new::<PtParams>(gpu, "pt params", MAX_DEPTH as u64 + 1);
@@ -243,20 +304,37 @@ impl GpuPt {
     /// Time is GPU time from timestamps where the adapter has them, else
     /// wall time around the submitted passes; the second value says which
     /// (`true`: timestamps).
-    pub fn render(&mut self, acc: &mut PtRender, s: &PtSettings, passes: u32) -> Result<bool, GpuError> {
-        let (extend, connect) = (&self.extend.0[s.method.index()], &self.connect.0[s.method.index()]);
+    pub fn render(
+        &mut self,
+        acc: &mut PtRender,
+        s: &PtSettings,
+        passes: u32,
+    ) -> Result<bool, GpuError> {
+        let (extend, connect) =
+            (&self.extend.0[s.method.index()], &self.connect.0[s.method.index()]);
         if acc.size() != (self.width, self.height) {
-            return Err(GpuError::Setting(format!("accumulation is {:?}, the GPU scene was set up for {}x{}", acc.size(), self.width, self.height)));
+            return Err(GpuError::Setting(format!(
+                "accumulation is {:?}, the GPU scene was set up for {}x{}",
+                acc.size(),
+                self.width,
+                self.height
+            )));
         }
         if !(1..=MAX_DEPTH).contains(&s.max_depth) {
-            return Err(GpuError::Setting(format!("max depth {} must be in 1..={MAX_DEPTH}", s.max_depth)));
+            return Err(GpuError::Setting(format!(
+                "max depth {} must be in 1..={MAX_DEPTH}",
+                s.max_depth
+            )));
         }
-        let params = RangeParams::new(s.error_bound, s.exposure).map_err(|e| GpuError::Setting(e.to_string()))?;
+        let params = RangeParams::new(s.error_bound, s.exposure)
+            .map_err(|e| GpuError::Setting(e.to_string()))?;
         let gpu = &self.gpu;
         // The baselines cull nothing: r_t² = +∞ makes p = 1 and r² = +∞.
         self.set.set_threshold(gpu, s.method.culls().then_some(&params));
         let pixels = self.width * self.height;
-        let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("clear") });
+        let mut enc = gpu
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("clear") });
         enc.clear_buffer(&self.radiance, 0, None);
         gpu.queue.submit([enc.finish()]);
         let (pos, right, up, fwd) = self.camera;
@@ -292,10 +370,15 @@ impl GpuPt {
                 })
                 .collect();
             self.shade_params.write(gpu, &shade);
-            let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc pt pass") });
+            let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("slc pt pass"),
+            });
             {
                 let writes = timer.as_mut().and_then(|t| t.next());
-                let mut cp = enc.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc pt pass"), timestamp_writes: writes });
+                let mut cp = enc.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                    label: Some("slc pt pass"),
+                    timestamp_writes: writes,
+                });
                 // The baselines cull nothing: their ranges are +∞ in every
                 // pass (written once per call), and no BSH is walked.
                 if s.method.culls() {
@@ -345,7 +428,12 @@ impl PathTracer for GpuPt {
         self.gpu.describe()
     }
 
-    fn render(&mut self, acc: &mut PtRender, settings: &PtSettings, passes: u32) -> Result<Timing, GpuError> {
+    fn render(
+        &mut self,
+        acc: &mut PtRender,
+        settings: &PtSettings,
+        passes: u32,
+    ) -> Result<Timing, GpuError> {
         let timestamps = GpuPt::render(self, acc, settings, passes)?;
         Ok(if timestamps { Timing::GpuTimestamps } else { Timing::Wall })
     }

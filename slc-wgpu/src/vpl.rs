@@ -27,8 +27,8 @@
 use crate::kernel::Timer;
 use crate::kernel::storage;
 use crate::passes::{
-    Culling, GBuffer, IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, VplInput,
-    VplSourceDesc,
+    Culling, GBuffer, IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc,
+    IndirectSettings, Surface, SurfaceDesc, VplInput, VplSourceDesc,
 };
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
@@ -125,9 +125,14 @@ fn material_table(gb: &slc_scene::vpl::GBuffer) -> (Vec<GpuMaterial>, Vec<u32>) 
     let mut seen = std::collections::HashMap::new();
     let index = (0..gb.position.len())
         .map(|i| {
-            let s = if gb.valid(i) { gb.specular.get(i).copied().unwrap_or_default() } else { Specular::default() };
+            let s = if gb.valid(i) {
+                gb.specular.get(i).copied().unwrap_or_default()
+            } else {
+                Specular::default()
+            };
             let b = if gb.valid(i) { gb.albedo[i] } else { Vec3::ZERO };
-            let key = [b.x, b.y, b.z, s.metallic, s.roughness, s.f0.x, s.f0.y, s.f0.z, s.f90].map(f32::to_bits);
+            let key = [b.x, b.y, b.z, s.metallic, s.roughness, s.f0.x, s.f0.y, s.f0.z, s.f90]
+                .map(f32::to_bits);
             *seen.entry(key).or_insert_with(|| {
                 table.push(GpuMaterial::new(b, Vec3::ZERO, s.metallic, s.roughness, s.f0, s.f90));
                 table.len() as u32 - 1
@@ -148,13 +153,21 @@ impl GpuVpl {
 
     /// [`GpuVpl::new`] with a tile light list of `capacity` lights (at
     /// least 1): smaller lists take less workgroup memory and more chunks.
-    pub fn with_tile_list(gpu: &GpuContext, inputs: &VplInputs, capacity: u32) -> Result<Self, GpuError> {
+    pub fn with_tile_list(
+        gpu: &GpuContext,
+        inputs: &VplInputs,
+        capacity: u32,
+    ) -> Result<Self, GpuError> {
         let gb = &inputs.gbuffer;
         let v = &inputs.vpls;
         let (w, h) = (gb.width, gb.height);
         let n = (w as usize) * (h as usize);
         if [gb.position.len(), gb.normal.len(), gb.depth.len()].iter().any(|&l| l != n) {
-            return Err(GpuError::Setting(format!("G-buffer of {w}x{h} holds {} positions, {} normals", gb.position.len(), gb.normal.len())));
+            return Err(GpuError::Setting(format!(
+                "G-buffer of {w}x{h} holds {} positions, {} normals",
+                gb.position.len(),
+                gb.normal.len()
+            )));
         }
         let texels = v.size as usize * v.size as usize;
         if [v.position.len(), v.normal.len(), v.flux.len()].iter().any(|&l| l != texels) {
@@ -162,7 +175,10 @@ impl GpuVpl {
         }
         let min_distance = inputs.min_d2.sqrt();
         if !min_distance.is_finite() || !gb.eye.is_finite() {
-            return Err(GpuError::Setting(format!("clamp distance² {} and eye {} must be finite", inputs.min_d2, gb.eye)));
+            return Err(GpuError::Setting(format!(
+                "clamp distance² {} and eye {} must be finite",
+                inputs.min_d2, gb.eye
+            )));
         }
         let glossy = gb.has_specular();
         let desc = IndirectPassDesc {
@@ -174,30 +190,55 @@ impl GpuVpl {
         };
         // The pass checks the sizes and every limit before it creates anything.
         let pass = IndirectPass::new(gpu, &desc)?;
-        gpu.require("max_texture_dimension_2d (RSM)", v.size as u64, gpu.limits.max_texture_dimension_2d as u64)?;
+        gpu.require(
+            "max_texture_dimension_2d (RSM)",
+            v.size as u64,
+            gpu.limits.max_texture_dimension_2d as u64,
+        )?;
         let v4 = |v: Vec3, w: f32| [v.x, v.y, v.z, w];
         let upload = |label: &str, size: (u32, u32), texels: Vec<[f32; 4]>| {
             crate::frame::upload_rgba32(gpu, label, size, &texels).create_view(&Default::default())
         };
         let valid: Vec<bool> = (0..n).map(|i| gb.valid(i)).collect();
-        let position = upload("slc vpl gb position", (w, h), (0..n).map(|i| v4(gb.position[i], valid[i] as u32 as f32)).collect());
+        let position = upload(
+            "slc vpl gb position",
+            (w, h),
+            (0..n).map(|i| v4(gb.position[i], valid[i] as u32 as f32)).collect(),
+        );
         // A glossy G-buffer: each pixel's material index in the normal's w.
         let (table, index) = if glossy { material_table(gb) } else { (Vec::new(), vec![0; n]) };
-        let normal = upload("slc vpl gb normal", (w, h), gb.normal.iter().zip(&index).map(|(&x, &m)| v4(x, m as f32)).collect());
+        let normal = upload(
+            "slc vpl gb normal",
+            (w, h),
+            gb.normal.iter().zip(&index).map(|(&x, &m)| v4(x, m as f32)).collect(),
+        );
         let s = (v.size, v.size);
         let rsm = [
             upload("slc vpl rsm position", s, v.position.iter().map(|&x| v4(x, 1.0)).collect()),
             upload("slc vpl rsm normal", s, v.normal.iter().map(|&x| v4(x, 0.0)).collect()),
             upload("slc vpl rsm flux", s, v.flux.iter().map(|&x| v4(x, 0.0)).collect()),
         ];
-        let output =
-            crate::frame::rgba32_target(gpu, "slc vpl irradiance", (w, h), wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
+        let output = crate::frame::rgba32_target(
+            gpu,
+            "slc vpl irradiance",
+            (w, h),
+            wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
+        );
         let staging = crate::frame::texture_staging(gpu, &output);
         let glossy = glossy.then(|| {
-            let output =
-                crate::frame::rgba32_target(gpu, "slc vpl specular", (w, h), wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
+            let output = crate::frame::rgba32_target(
+                gpu,
+                "slc vpl specular",
+                (w, h),
+                wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
+            );
             GlossyTargets {
-                table: storage(gpu, "slc vpl materials", bytemuck::cast_slice(&table), wgpu::BufferUsages::empty()),
+                table: storage(
+                    gpu,
+                    "slc vpl materials",
+                    bytemuck::cast_slice(&table),
+                    wgpu::BufferUsages::empty(),
+                ),
                 view: output.create_view(&Default::default()),
                 staging: crate::frame::texture_staging(gpu, &output),
                 output,
@@ -219,7 +260,11 @@ impl GpuVpl {
             min_distance,
             valid,
             slot_flux: inputs.interleaved_order().iter().map(|&i| v.flux[i] * scale).collect(),
-            timer: if gpu.adapter.device_type == wgpu::DeviceType::Cpu { None } else { Timer::new(gpu, 3) },
+            timer: if gpu.adapter.device_type == wgpu::DeviceType::Cpu {
+                None
+            } else {
+                Timer::new(gpu, 3)
+            },
         };
         gpu.wait()?;
         Ok(g)
@@ -247,7 +292,10 @@ impl GpuVpl {
                 near_radius: Some(0.0),
             }
         } else {
-            crate::frame::indirect_settings(&VplSettings { fixed_xi: None, ..*settings }, self.min_distance)?
+            crate::frame::indirect_settings(
+                &VplSettings { fixed_xi: None, ..*settings },
+                self.min_distance,
+            )?
         };
         if reference && self.reference.is_none() {
             let desc = IndirectPassDesc { interleaved: false, ..*self.pass.desc() };
@@ -259,19 +307,37 @@ impl GpuVpl {
             _ => &mut self.pass,
         };
         let inputs = IndirectInputs {
-            gbuffer: GBuffer { surface: Surface::Position(&self.position), normal: &self.normal, eye: self.eye },
-            vpls: VplInput::Rsm { position: &self.rsm[0], normal: &self.rsm[1], flux: &self.rsm[2] },
+            gbuffer: GBuffer {
+                surface: Surface::Position(&self.position),
+                normal: &self.normal,
+                eye: self.eye,
+            },
+            vpls: VplInput::Rsm {
+                position: &self.rsm[0],
+                normal: &self.rsm[1],
+                flux: &self.rsm[2],
+            },
             output: &self.output_view,
-            materials: self.glossy.as_ref().map(|g| IndirectMaterials { table: &g.table, specular: &g.view }),
+            materials: self
+                .glossy
+                .as_ref()
+                .map(|g| IndirectMaterials { table: &g.table, specular: &g.view }),
         };
         let recording = pass.dispatches(&inputs, &st)?;
-        let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc vpl uniforms") });
+        let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("slc vpl uniforms"),
+        });
         recording.uploads.record(&gpu, &mut enc);
         gpu.queue.submit([enc.finish()]);
         let dispatches = recording.dispatches;
         // A fixed ξ: r² from the host (the core's functions, as the CPU's)
         // once vpl_pack has run, instead of light_update.
-        let host_r2: Option<Vec<f32>> = fixed.map(|x| self.slot_flux.iter().map(|&f| random_range2(vpl_threshold_range2(&params, f), x)).collect());
+        let host_r2: Option<Vec<f32>> = fixed.map(|x| {
+            self.slot_flux
+                .iter()
+                .map(|&f| random_range2(vpl_threshold_range2(&params, f), x))
+                .collect()
+        });
         let mut timer = self.timer.as_mut();
         if let Some(t) = timer.as_mut() {
             t.reset();
@@ -284,11 +350,19 @@ impl GpuVpl {
             if ds.peek().is_none() {
                 continue;
             }
-            let mut enc = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc vpl") });
+            let mut enc = gpu
+                .device
+                .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("slc vpl") });
             {
-                let timestamp_writes = if part.timed() { timer.as_mut().and_then(|t| t.next()) } else { None };
-                let mut cp = enc.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc vpl"), timestamp_writes });
-                for d in ds.filter(|d| !(host_r2.is_some() && d.stage == crate::frame::Stage::LightUpdate)) {
+                let timestamp_writes =
+                    if part.timed() { timer.as_mut().and_then(|t| t.next()) } else { None };
+                let mut cp = enc.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                    label: Some("slc vpl"),
+                    timestamp_writes,
+                });
+                for d in ds
+                    .filter(|d| !(host_r2.is_some() && d.stage == crate::frame::Stage::LightUpdate))
+                {
                     d.record(&mut cp);
                 }
             }
@@ -317,8 +391,10 @@ impl GpuVpl {
         }
         if let Some(t) = timer {
             let d = t.durations_ms(&gpu)?;
-            shading_ms = timed.iter().zip(&d).filter(|(p, _)| **p != Part::Denoise).map(|(_, ms)| ms).sum();
-            denoise_ms = timed.iter().zip(&d).find(|(p, _)| **p == Part::Denoise).map(|(_, &ms)| ms);
+            shading_ms =
+                timed.iter().zip(&d).filter(|(p, _)| **p != Part::Denoise).map(|(_, ms)| ms).sum();
+            denoise_ms =
+                timed.iter().zip(&d).find(|(p, _)| **p == Part::Denoise).map(|(_, &ms)| ms);
         }
         let data = crate::frame::read_texture_via(&gpu, &self.output, &self.staging)?;
         let mut irradiance = Vec::with_capacity(data.len());
@@ -337,7 +413,16 @@ impl GpuVpl {
                 .collect(),
             None => Vec::new(),
         };
-        Ok(Shaded { irradiance, near: Vec::new(), specular, specular_near: Vec::new(), kept, evaluations, shading_ms, denoised_ms: denoise_ms })
+        Ok(Shaded {
+            irradiance,
+            near: Vec::new(),
+            specular,
+            specular_near: Vec::new(),
+            kept,
+            evaluations,
+            shading_ms,
+            denoised_ms: denoise_ms,
+        })
     }
 }
 

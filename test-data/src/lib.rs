@@ -16,6 +16,10 @@ use std::path::PathBuf;
 /// downgrade of what a test covers.
 pub fn shared_data(rel: &str) -> PathBuf {
     let p = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data").join(rel);
-    assert!(p.exists(), "test data {} is missing: the tests need ../shared (the team data) beside the checkout", p.display());
+    assert!(
+        p.exists(),
+        "test data {} is missing: the tests need ../shared (the team data) beside the checkout",
+        p.display()
+    );
     p
 }

@@ -4,7 +4,13 @@
 use slc_wgpu::GpuContext;
 
 /// A single-sampled 2-D texture of `w × h`.
-pub fn texture(gpu: &GpuContext, label: &str, (w, h): (u32, u32), format: wgpu::TextureFormat, usage: wgpu::TextureUsages) -> wgpu::Texture {
+pub fn texture(
+    gpu: &GpuContext,
+    label: &str,
+    (w, h): (u32, u32),
+    format: wgpu::TextureFormat,
+    usage: wgpu::TextureUsages,
+) -> wgpu::Texture {
     gpu.device.create_texture(&wgpu::TextureDescriptor {
         label: Some(label),
         size: wgpu::Extent3d { width: w, height: h, depth_or_array_layers: 1 },
@@ -18,12 +24,27 @@ pub fn texture(gpu: &GpuContext, label: &str, (w, h): (u32, u32), format: wgpu::
 }
 
 /// A view of an `Rgba32Float` texture holding `texels` (row-major).
-pub fn upload(gpu: &GpuContext, label: &str, size: (u32, u32), texels: &[[f32; 4]]) -> wgpu::TextureView {
-    let t = texture(gpu, label, size, wgpu::TextureFormat::Rgba32Float, wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST);
+pub fn upload(
+    gpu: &GpuContext,
+    label: &str,
+    size: (u32, u32),
+    texels: &[[f32; 4]],
+) -> wgpu::TextureView {
+    let t = texture(
+        gpu,
+        label,
+        size,
+        wgpu::TextureFormat::Rgba32Float,
+        wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+    );
     gpu.queue.write_texture(
         t.as_image_copy(),
         bytemuck::cast_slice(texels),
-        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size.0 * 16), rows_per_image: None },
+        wgpu::TexelCopyBufferLayout {
+            offset: 0,
+            bytes_per_row: Some(size.0 * 16),
+            rows_per_image: None,
+        },
         wgpu::Extent3d { width: size.0, height: size.1, depth_or_array_layers: 1 },
     );
     t.create_view(&Default::default())
@@ -31,14 +52,28 @@ pub fn upload(gpu: &GpuContext, label: &str, size: (u32, u32), texels: &[[f32; 4
 
 /// An `Rgba32Float` storage texture with `COPY_SRC`, for a pass's output.
 pub fn output(gpu: &GpuContext, size: (u32, u32)) -> wgpu::Texture {
-    texture(gpu, "output", size, wgpu::TextureFormat::Rgba32Float, wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC)
+    texture(
+        gpu,
+        "output",
+        size,
+        wgpu::TextureFormat::Rgba32Float,
+        wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC,
+    )
 }
 
 /// Appends the copy of `Rgba32Float` texture `t` (width a multiple of 16
 /// texels) to `enc`, submits it and reads the texels back.
-pub fn submit_and_read(gpu: &GpuContext, mut enc: wgpu::CommandEncoder, t: &wgpu::Texture) -> Vec<[f32; 4]> {
+pub fn submit_and_read(
+    gpu: &GpuContext,
+    mut enc: wgpu::CommandEncoder,
+    t: &wgpu::Texture,
+) -> Vec<[f32; 4]> {
     let (w, h) = (t.width(), t.height());
-    assert_eq!((w * 16) % wgpu::COPY_BYTES_PER_ROW_ALIGNMENT, 0, "read-back rows must be 256-byte aligned");
+    assert_eq!(
+        (w * 16) % wgpu::COPY_BYTES_PER_ROW_ALIGNMENT,
+        0,
+        "read-back rows must be 256-byte aligned"
+    );
     let staging = gpu.device.create_buffer(&wgpu::BufferDescriptor {
         label: Some("staging"),
         size: (w * h * 16) as u64,
@@ -49,7 +84,11 @@ pub fn submit_and_read(gpu: &GpuContext, mut enc: wgpu::CommandEncoder, t: &wgpu
         t.as_image_copy(),
         wgpu::TexelCopyBufferInfo {
             buffer: &staging,
-            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(w * 16), rows_per_image: None },
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(w * 16),
+                rows_per_image: None,
+            },
         },
         t.size(),
     );
@@ -57,7 +96,8 @@ pub fn submit_and_read(gpu: &GpuContext, mut enc: wgpu::CommandEncoder, t: &wgpu
     let slice = staging.slice(..);
     slice.map_async(wgpu::MapMode::Read, |_| {});
     gpu.wait().expect("device");
-    let data: Vec<[f32; 4]> = bytemuck::cast_slice(&slice.get_mapped_range().expect("mapped")).to_vec();
+    let data: Vec<[f32; 4]> =
+        bytemuck::cast_slice(&slice.get_mapped_range().expect("mapped")).to_vec();
     data
 }
 

@@ -74,12 +74,16 @@ fn display_missing() -> Option<String> {
 
 /// `true` when `DISPLAY` or `WAYLAND_DISPLAY` names a display.
 fn display_set() -> bool {
-    ["DISPLAY", "WAYLAND_DISPLAY"].iter().any(|k| std::env::var_os(k).is_some_and(|v| !v.is_empty()))
+    ["DISPLAY", "WAYLAND_DISPLAY"]
+        .iter()
+        .any(|k| std::env::var_os(k).is_some_and(|v| !v.is_empty()))
 }
 
 /// `xvfb-run` on the `PATH`, if any.
 fn xvfb_run() -> Option<std::path::PathBuf> {
-    std::env::split_paths(&std::env::var_os("PATH")?).map(|d| d.join("xvfb-run")).find(|p| p.is_file())
+    std::env::split_paths(&std::env::var_os("PATH")?)
+        .map(|d| d.join("xvfb-run"))
+        .find(|p| p.is_file())
 }
 
 /// A command running `program` with a window: directly where a display is
@@ -119,7 +123,8 @@ pub fn run(tests: &[(&'static str, Needs, fn())]) -> std::process::ExitCode {
             eprintln!("{n} GPU test(s) ignored: {reason}");
         }
     }
-    let no_display = if tests.iter().any(|t| t.1 == Needs::Display) { display_missing() } else { None };
+    let no_display =
+        if tests.iter().any(|t| t.1 == Needs::Display) { display_missing() } else { None };
     let display_required = std::env::var("SLC_REQUIRE_DISPLAY").as_deref() == Ok("1");
     if let Some(reason) = &no_display {
         let n = tests.iter().filter(|t| t.1 == Needs::Display).count();
@@ -131,11 +136,15 @@ pub fn run(tests: &[(&'static str, Needs, fn())]) -> std::process::ExitCode {
         .map(|&(name, needs, test)| match (needs, &missing, &no_display) {
             (Needs::Gpu | Needs::Display, Some(reason), _) => {
                 let why = format!("needs a GPU adapter: {reason}");
-                libtest_mimic::Trial::test(name, move || Err(why.into())).with_kind("gpu").with_ignored_flag(!required)
+                libtest_mimic::Trial::test(name, move || Err(why.into()))
+                    .with_kind("gpu")
+                    .with_ignored_flag(!required)
             }
             (Needs::Display, None, Some(reason)) => {
                 let why = format!("needs a display: {reason}");
-                libtest_mimic::Trial::test(name, move || Err(why.into())).with_kind("window").with_ignored_flag(!display_required)
+                libtest_mimic::Trial::test(name, move || Err(why.into()))
+                    .with_kind("window")
+                    .with_ignored_flag(!display_required)
             }
             (Needs::Gpu, None, _) => libtest_mimic::Trial::test(name, move || {
                 test();

@@ -18,13 +18,20 @@ use std::path::Path;
 
 /// Runs `f`, asserting it returns an error (not a panic) whose message
 /// contains `needle`.
-fn rejects<T: std::fmt::Debug, E: std::fmt::Display>(what: &str, needle: &str, f: impl FnOnce() -> Result<T, E> + std::panic::UnwindSafe) {
+fn rejects<T: std::fmt::Debug, E: std::fmt::Display>(
+    what: &str,
+    needle: &str,
+    f: impl FnOnce() -> Result<T, E> + std::panic::UnwindSafe,
+) {
     match catch_unwind(f) {
         Err(_) => panic!("{what}: panicked instead of returning an error"),
         Ok(Ok(v)) => panic!("{what}: accepted ({v:?})"),
         Ok(Err(e)) => {
             let msg = e.to_string();
-            assert!(msg.to_lowercase().contains(&needle.to_lowercase()), "{what}: error '{msg}' does not name '{needle}'");
+            assert!(
+                msg.to_lowercase().contains(&needle.to_lowercase()),
+                "{what}: error '{msg}' does not name '{needle}'"
+            );
         }
     }
 }
@@ -40,21 +47,39 @@ fn core_constructors() {
         rejects("exposure", "exposure", move || RangeParams::new(0.1, b));
         rejects("alpha", "alpha", move || RangeParams::from_alpha(b));
         rejects("xi", "xi", move || Xi::new(b));
-        rejects("point intensity", "intensity", move || PointLight::new(Vec3::ZERO, Vec3::new(0.0, b, 0.0)));
+        rejects("point intensity", "intensity", move || {
+            PointLight::new(Vec3::ZERO, Vec3::new(0.0, b, 0.0))
+        });
         rejects("vpl flux", "flux", move || Vpl::new(Vec3::ZERO, Vec3::Y, Vec3::splat(b)));
-        rejects("spot angle", "cone", move || SpotLight::new(Vec3::ZERO, Vec3::Y, Vec3::ONE, 0.1, b));
-        rejects("triangle radiance", "radiance", move || TriangleLight::new(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::splat(b)));
-        rejects("bsh extent", "extent", move || Bsh::build(&[LightBound { center: Vec3::ZERO, extent: b }]));
+        rejects("spot angle", "cone", move || {
+            SpotLight::new(Vec3::ZERO, Vec3::Y, Vec3::ONE, 0.1, b)
+        });
+        rejects("triangle radiance", "radiance", move || {
+            TriangleLight::new(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::splat(b))
+        });
+        rejects("bsh extent", "extent", move || {
+            Bsh::build(&[LightBound { center: Vec3::ZERO, extent: b }])
+        });
     }
     for b in NONFINITE {
-        rejects("point position", "position", move || PointLight::new(Vec3::new(b, 0.0, 0.0), Vec3::ONE));
-        rejects("triangle vertex", "vertex", move || TriangleLight::new(Vec3::splat(b), Vec3::X, Vec3::Y, Vec3::ONE));
-        rejects("bsh centre", "centre", move || Bsh::build(&[LightBound { center: Vec3::new(0.0, b, 0.0), extent: 0.0 }]));
+        rejects("point position", "position", move || {
+            PointLight::new(Vec3::new(b, 0.0, 0.0), Vec3::ONE)
+        });
+        rejects("triangle vertex", "vertex", move || {
+            TriangleLight::new(Vec3::splat(b), Vec3::X, Vec3::Y, Vec3::ONE)
+        });
+        rejects("bsh centre", "centre", move || {
+            Bsh::build(&[LightBound { center: Vec3::new(0.0, b, 0.0), extent: 0.0 }])
+        });
     }
     rejects("xi = 1", "xi", || Xi::new(1.0));
     rejects("vpl normal", "normal", || Vpl::new(Vec3::ZERO, Vec3::ZERO, Vec3::ONE));
-    rejects("spot direction", "direction", || SpotLight::new(Vec3::ZERO, Vec3::ZERO, Vec3::ONE, 0.1, 0.2));
-    rejects("zero-area triangle", "zero area", || TriangleLight::new(Vec3::ZERO, Vec3::X, Vec3::X * 2.0, Vec3::ONE));
+    rejects("spot direction", "direction", || {
+        SpotLight::new(Vec3::ZERO, Vec3::ZERO, Vec3::ONE, 0.1, 0.2)
+    });
+    rejects("zero-area triangle", "zero area", || {
+        TriangleLight::new(Vec3::ZERO, Vec3::X, Vec3::X * 2.0, Vec3::ONE)
+    });
     rejects("bsh refit NaN", "range", || {
         let mut t = Bsh::build(&[LightBound { center: Vec3::ZERO, extent: 0.0 }]).unwrap();
         t.refit(&[f32::NAN]).map(|_| ())
@@ -89,25 +114,40 @@ fn scene_loaders() {
         (b"mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "material"),
     ];
     for (obj, needle) in bad_obj {
-        rejects(&format!("obj {:?}", String::from_utf8_lossy(obj)), needle, move || Scene::parse_obj(obj, "t.obj", |_| None));
+        rejects(&format!("obj {:?}", String::from_utf8_lossy(obj)), needle, move || {
+            Scene::parse_obj(obj, "t.obj", |_| None)
+        });
     }
     // Regression (fuzz/scene_loaders): tobj panics on a short colour line.
     for line in ["Kd", "Kd 0.5", "Ke 1 2", "Ka", "Ks 0 0"] {
         let mtl = format!("newmtl a\n{line}\n").into_bytes();
         rejects(&format!("mtl {line:?}"), "material", move || {
-            Scene::parse_obj(b"mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "t.obj", |_| Some(mtl.clone()))
+            Scene::parse_obj(
+                b"mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+                "t.obj",
+                |_| Some(mtl.clone()),
+            )
         });
     }
     rejects("albedo > 1", "albedo", || {
-        Scene::parse_obj(b"mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "t.obj", |_| Some(b"newmtl a\nKd 2 0 0\n".to_vec()))
+        Scene::parse_obj(
+            b"mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+            "t.obj",
+            |_| Some(b"newmtl a\nKd 2 0 0\n".to_vec()),
+        )
     });
     for (text, needle) in [
         ("[[geometry]]\nbuiltin = \"cornell\"\nbogus = 1\n", "bogus"),
         ("[[geometry]]\nobj = \"missing.obj\"\n", "missing.obj"),
         ("[[geometry]]\nbuiltin = \"cornell\"\n[render]\nwidth = -3\n", "line 4"),
-        ("[[geometry]]\nbuiltin = \"cornell\"\n[[light]]\ntype = \"ies\"\nposition = [0, 0, 0]\nfile = \"none.ies\"\n", "none.ies"),
+        (
+            "[[geometry]]\nbuiltin = \"cornell\"\n[[light]]\ntype = \"ies\"\nposition = [0, 0, 0]\nfile = \"none.ies\"\n",
+            "none.ies",
+        ),
     ] {
-        rejects(&format!("scene file {text:?}"), needle, move || SceneFile::parse(text, Path::new("/nonexistent"), "t.toml").map(|_| ()));
+        rejects(&format!("scene file {text:?}"), needle, move || {
+            SceneFile::parse(text, Path::new("/nonexistent"), "t.toml").map(|_| ())
+        });
     }
 }
 
@@ -115,12 +155,25 @@ fn renderer_settings() {
     let scene = Scene::cornell_box();
     rejects("width 0", "size", || VplContext::new(&scene, 0, 8, 32, None).map(|_| ()));
     rejects("vpl count", "vpls", || VplContext::new(&scene, 8, 8, 12, None).map(|_| ()));
-    rejects("min distance", "min distance", || VplContext::new(&scene, 8, 8, 32, Some(f32::NAN)).map(|_| ()));
+    rejects("min distance", "min distance", || {
+        VplContext::new(&scene, 8, 8, 32, Some(f32::NAN)).map(|_| ())
+    });
     let ctx = VplContext::new(&scene, 8, 8, 16, None).unwrap();
     for b in BAD {
-        rejects("render error bound", "error bound", || ctx.render(&VplSettings { error_bound: b, ..VplSettings::default() }).map(|_| ()));
-        rejects("render range", "range", || ctx.render(&VplSettings { method: VplMethod::Clamp, range: b, ..VplSettings::default() }).map(|_| ()));
-        rejects("render fixed xi", "xi", || ctx.render(&VplSettings { fixed_xi: Some(b), ..VplSettings::default() }).map(|_| ()));
+        rejects("render error bound", "error bound", || {
+            ctx.render(&VplSettings { error_bound: b, ..VplSettings::default() }).map(|_| ())
+        });
+        rejects("render range", "range", || {
+            ctx.render(&VplSettings {
+                method: VplMethod::Clamp,
+                range: b,
+                ..VplSettings::default()
+            })
+            .map(|_| ())
+        });
+        rejects("render fixed xi", "xi", || {
+            ctx.render(&VplSettings { fixed_xi: Some(b), ..VplSettings::default() }).map(|_| ())
+        });
     }
     rejects("shader lights", "laser", || slc_shared_shaders::LightTypes::parse("laser"));
     rejects("shader k", "reservoir", || {
@@ -140,13 +193,19 @@ fn path_tracer_and_direct_light_settings() {
     let params = RangeParams::new(0.1, 1.0).unwrap();
     let l2 = light.clone();
     rejects("points vs normals", "normals", move || {
-        LightSet::new(vec![l2]).and_then(|set| DirectLights::new(&set).shade(&[Vec3::ONE], &[], &params, 1, 0)).map(|_| ())
+        LightSet::new(vec![l2])
+            .and_then(|set| DirectLights::new(&set).shade(&[Vec3::ONE], &[], &params, 1, 0))
+            .map(|_| ())
     });
     let scene = Scene::cornell_box();
     for b in BAD {
         rejects("pt error bound", "error bound", || {
             let mut pts = CpuPathTracer::new(&PtScene::new(&scene, &[]).unwrap());
-            pts.render(&mut PtRender::new(4, 4), &PtSettings { error_bound: b, ..PtSettings::default() }, 1)
+            pts.render(
+                &mut PtRender::new(4, 4),
+                &PtSettings { error_bound: b, ..PtSettings::default() },
+                1,
+            )
         });
     }
     rejects("pt depth", "depth", || {
@@ -158,15 +217,28 @@ fn path_tracer_and_direct_light_settings() {
     });
     let Some(g) = slc_tests::gpu() else { return };
     let pts = PtScene::new(&scene, &[]).unwrap();
-    rejects("gpu pt size", "size", AssertUnwindSafe(|| slc_wgpu::pt::GpuPt::new(g, &pts, 0, 8).map(|_| ())));
+    rejects(
+        "gpu pt size",
+        "size",
+        AssertUnwindSafe(|| slc_wgpu::pt::GpuPt::new(g, &pts, 0, 8).map(|_| ())),
+    );
     let mut gpt = slc_wgpu::pt::GpuPt::new(g, &pts, 4, 4).unwrap();
     for b in BAD {
-        let s = PtSettings { method: PtMethod::SlcReservoir, error_bound: b, ..PtSettings::default() };
-        rejects("gpu pt error bound", "error bound", AssertUnwindSafe(|| gpt.render(&mut PtRender::new(4, 4), &s, 1)));
+        let s =
+            PtSettings { method: PtMethod::SlcReservoir, error_bound: b, ..PtSettings::default() };
+        rejects(
+            "gpu pt error bound",
+            "error bound",
+            AssertUnwindSafe(|| gpt.render(&mut PtRender::new(4, 4), &s, 1)),
+        );
     }
     let d = LightSet::new(vec![light]).unwrap();
     let mut gd = slc_wgpu::direct::GpuDirect::new(g, &d).unwrap();
-    rejects("gpu points vs normals", "normals", AssertUnwindSafe(|| gd.shade(&[Vec3::ONE, Vec3::ZERO], &[Vec3::Y], &params, 1, 0)));
+    rejects(
+        "gpu points vs normals",
+        "normals",
+        AssertUnwindSafe(|| gd.shade(&[Vec3::ONE, Vec3::ZERO], &[Vec3::Y], &params, 1, 0)),
+    );
 }
 
 /// An engine's misuses of the passes, as an outside program made them
@@ -180,8 +252,9 @@ mod engine_misuse {
     use slc_shared_shaders::layout::GpuVplRecord;
     use slc_tests::engine::{self, texture, upload};
     use slc_wgpu::passes::{
-        Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, GBuffer, IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings,
-        Surface, SurfaceDesc, VplInput, VplSourceDesc, vpl_buffer,
+        Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, GBuffer, IndirectInputs,
+        IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, VplInput,
+        VplSourceDesc, vpl_buffer,
     };
     use slc_wgpu::{GpuContext, GpuError, LightSet};
 
@@ -202,13 +275,29 @@ mod engine_misuse {
         let ctx = slc_cpu::vpl::VplContext::new(&Scene::cornell_box(), W, H, 8, None).unwrap();
         let (gb, vp) = (&ctx.inputs().gbuffer, &ctx.inputs().vpls);
         let v4 = |v: Vec3, w: f32| [v.x, v.y, v.z, w];
-        let pos: Vec<[f32; 4]> = (0..gb.position.len()).map(|i| v4(gb.position[i], gb.valid(i) as u32 as f32)).collect();
+        let pos: Vec<[f32; 4]> =
+            (0..gb.position.len()).map(|i| v4(gb.position[i], gb.valid(i) as u32 as f32)).collect();
         Inputs {
             position: upload(gpu, "p", (W, H), &pos),
-            normal: upload(gpu, "n", (W, H), &gb.normal.iter().map(|&n| v4(n, 0.0)).collect::<Vec<_>>()),
+            normal: upload(
+                gpu,
+                "n",
+                (W, H),
+                &gb.normal.iter().map(|&n| v4(n, 0.0)).collect::<Vec<_>>(),
+            ),
             rsm: [
-                upload(gpu, "rp", (8, 8), &vp.position.iter().map(|&p| v4(p, 1.0)).collect::<Vec<_>>()),
-                upload(gpu, "rn", (8, 8), &vp.normal.iter().map(|&n| v4(n, 0.0)).collect::<Vec<_>>()),
+                upload(
+                    gpu,
+                    "rp",
+                    (8, 8),
+                    &vp.position.iter().map(|&p| v4(p, 1.0)).collect::<Vec<_>>(),
+                ),
+                upload(
+                    gpu,
+                    "rn",
+                    (8, 8),
+                    &vp.normal.iter().map(|&n| v4(n, 0.0)).collect::<Vec<_>>(),
+                ),
                 upload(gpu, "rf", (8, 8), &vp.flux.iter().map(|&f| v4(f, 0.0)).collect::<Vec<_>>()),
             ],
             eye: gb.eye,
@@ -217,12 +306,27 @@ mod engine_misuse {
     }
 
     fn lights(n: usize) -> LightSet {
-        let light = |i: usize| Vec3::new(0.05 + 0.1 * (i % 5) as f32, 0.3 + 0.04 * (i / 5 % 5) as f32, 0.05 + 0.1 * (i / 25) as f32);
-        LightSet::new((0..n).map(|i| Light::Point(PointLight::new(light(i), Vec3::splat(0.01)).unwrap())).collect()).unwrap()
+        let light = |i: usize| {
+            Vec3::new(
+                0.05 + 0.1 * (i % 5) as f32,
+                0.3 + 0.04 * (i / 5 % 5) as f32,
+                0.05 + 0.1 * (i / 25) as f32,
+            )
+        };
+        LightSet::new(
+            (0..n)
+                .map(|i| Light::Point(PointLight::new(light(i), Vec3::splat(0.01)).unwrap()))
+                .collect(),
+        )
+        .unwrap()
     }
 
     fn f32_desc() -> DirectPassDesc {
-        DirectPassDesc { surface: SurfaceDesc::Position, output_format: wgpu::TextureFormat::Rgba32Float, ..DirectPassDesc::new(W, H) }
+        DirectPassDesc {
+            surface: SurfaceDesc::Position,
+            output_format: wgpu::TextureFormat::Rgba32Float,
+            ..DirectPassDesc::new(W, H)
+        }
     }
 
     /// 17 records of each pass in one submission (once more than the 16
@@ -233,11 +337,20 @@ mod engine_misuse {
         let Some(gpu) = slc_tests::gpu() else { return };
         let inp = inputs(gpu);
         let outs: Vec<wgpu::Texture> = (0..17).map(|_| engine::output(gpu, (W, H))).collect();
-        let views: Vec<wgpu::TextureView> = outs.iter().map(|t| t.create_view(&Default::default())).collect();
-        let gb = GBuffer { surface: Surface::Position(&inp.position), normal: &inp.normal, eye: inp.eye };
+        let views: Vec<wgpu::TextureView> =
+            outs.iter().map(|t| t.create_view(&Default::default())).collect();
+        let gb = GBuffer {
+            surface: Surface::Position(&inp.position),
+            normal: &inp.normal,
+            eye: inp.eye,
+        };
         let mut direct = DirectPass::new(gpu, &lights(125), &f32_desc()).unwrap();
         // Clamp ranges from 0.05 to 0.85: each record keeps other lights.
-        let direct_settings = |r: usize| DirectSettings { culling: Culling::Clamped { range: 0.05 * (r + 1) as f32 }, seed: 1, frame: r as u32 };
+        let direct_settings = |r: usize| DirectSettings {
+            culling: Culling::Clamped { range: 0.05 * (r + 1) as f32 },
+            seed: 1,
+            frame: r as u32,
+        };
         let idesc = IndirectPassDesc {
             surface: SurfaceDesc::Position,
             output_format: wgpu::TextureFormat::Rgba32Float,
@@ -251,13 +364,22 @@ mod engine_misuse {
             min_distance: 0.01,
             ..IndirectSettings::default()
         };
-        let read = |k: usize| engine::submit_and_read(gpu, gpu.device.create_command_encoder(&Default::default()), &outs[k]);
+        let read = |k: usize| {
+            engine::submit_and_read(
+                gpu,
+                gpu.device.create_command_encoder(&Default::default()),
+                &outs[k],
+            )
+        };
         for (name, record) in [("direct", 0), ("indirect", 1)] {
             let mut rec = |enc: &mut wgpu::CommandEncoder, r: usize| {
                 if record == 0 {
-                    direct.record(enc, &DirectInputs::new(gb, &views[r]), &direct_settings(r)).unwrap()
+                    direct
+                        .record(enc, &DirectInputs::new(gb, &views[r]), &direct_settings(r))
+                        .unwrap()
                 } else {
-                    let inputs = IndirectInputs { gbuffer: gb, vpls, output: &views[r], materials: None };
+                    let inputs =
+                        IndirectInputs { gbuffer: gb, vpls, output: &views[r], materials: None };
                     indirect.record(enc, &inputs, &indirect_settings(r)).unwrap()
                 }
             };
@@ -273,9 +395,15 @@ mod engine_misuse {
                 gpu.queue.submit([enc.finish()]);
                 let alone = read(r);
                 let differ = alone.iter().zip(&together[r]).filter(|(a, b)| a != b).count();
-                assert!(differ == 0, "{name} record {r} of 17 in one submission differs from itself alone at {differ} pixels");
+                assert!(
+                    differ == 0,
+                    "{name} record {r} of 17 in one submission differs from itself alone at {differ} pixels"
+                );
             }
-            assert!(together[0] != together[16], "{name}: records 0 and 16 must differ (their settings do)");
+            assert!(
+                together[0] != together[16],
+                "{name}: records 0 and 16 must differ (their settings do)"
+            );
         }
         gpu.take_errors().unwrap();
     }
@@ -290,7 +418,10 @@ mod engine_misuse {
         for bright in [f32::MAX, 1e30, MAX_INTENSITY * 1.01] {
             let e = PointLight::new(Vec3::ZERO, Vec3::splat(bright)).unwrap_err();
             assert!(e.to_string().contains("peak intensity"), "{e}");
-            assert!(SpotLight::new(Vec3::ZERO, -Vec3::Y, Vec3::new(1.0, bright, 1.0), 0.2, 0.4).is_err());
+            assert!(
+                SpotLight::new(Vec3::ZERO, -Vec3::Y, Vec3::new(1.0, bright, 1.0), 0.2, 0.4)
+                    .is_err()
+            );
         }
         let Some(gpu) = slc_tests::gpu() else { return };
         let inp = inputs(gpu);
@@ -315,7 +446,8 @@ mod engine_misuse {
             (nan, Vec3::ZERO, Vec3::ZERO),
             (Vec3::ZERO, nan, Vec3::ZERO),
         ];
-        let lit: Vec<usize> = (0..good.len()).filter(|&i| good[i].flux.min_element() > 0.0).collect();
+        let lit: Vec<usize> =
+            (0..good.len()).filter(|&i| good[i].flux.min_element() > 0.0).collect();
         assert!(lit.len() > 2 * cases.len(), "the RSM must have lit texels");
         for (k, (dp, dn, flux)) in cases.into_iter().enumerate() {
             let i = lit[2 * k];
@@ -324,23 +456,46 @@ mod engine_misuse {
             if flux != Vec3::ZERO {
                 r.flux = flux;
             }
-            skipped[i] = GpuVplRecord { position: Vec3::ZERO, normal: Vec3::ZERO, flux: Vec3::ZERO, ..skipped[i] };
+            skipped[i] = GpuVplRecord {
+                position: Vec3::ZERO,
+                normal: Vec3::ZERO,
+                flux: Vec3::ZERO,
+                ..skipped[i]
+            };
         }
         let out = engine::output(gpu, (W, H));
         let view = out.create_view(&Default::default());
-        let gb = GBuffer { surface: Surface::Position(&inp.position), normal: &inp.normal, eye: inp.eye };
+        let gb = GBuffer {
+            surface: Surface::Position(&inp.position),
+            normal: &inp.normal,
+            eye: inp.eye,
+        };
         let desc = IndirectPassDesc {
             surface: SurfaceDesc::Position,
             output_format: wgpu::TextureFormat::Rgba32Float,
             ..IndirectPassDesc::new(W, H, VplSourceDesc::Buffer { count: good.len() as u32 })
         };
         let mut pass = IndirectPass::new(gpu, &desc).unwrap();
-        for culling in [Culling::Stochastic(RangeParams::new(0.004, 1.0).unwrap()), Culling::Clamped { range: 0.3 }, Culling::None] {
+        for culling in [
+            Culling::Stochastic(RangeParams::new(0.004, 1.0).unwrap()),
+            Culling::Clamped { range: 0.3 },
+            Culling::None,
+        ] {
             let mut image = |records: &[GpuVplRecord]| {
                 let buf = vpl_buffer(gpu, records);
-                let inputs = IndirectInputs { gbuffer: gb, vpls: VplInput::Buffer(&buf), output: &view, materials: None };
+                let inputs = IndirectInputs {
+                    gbuffer: gb,
+                    vpls: VplInput::Buffer(&buf),
+                    output: &view,
+                    materials: None,
+                };
                 let mut enc = gpu.device.create_command_encoder(&Default::default());
-                pass.record(&mut enc, &inputs, &IndirectSettings { culling, min_distance: 0.0, ..IndirectSettings::default() }).unwrap();
+                pass.record(
+                    &mut enc,
+                    &inputs,
+                    &IndirectSettings { culling, min_distance: 0.0, ..IndirectSettings::default() },
+                )
+                .unwrap();
                 engine::submit_and_read(gpu, enc, &out)
             };
             let (got, want) = (image(&bad), image(&skipped));
@@ -357,16 +512,29 @@ mod engine_misuse {
         use slc_core::glam::camera::rh::{proj, view::look_to_mat4};
         let eye = Vec3::new(0.28, 0.27, 0.8);
         let (near, far) = if reversed { (10.0, 0.1) } else { (0.1, 10.0) };
-        (proj::directx::perspective(0.8, 1.0, near, far) * look_to_mat4(eye, -Vec3::Z, Vec3::Y), eye)
+        (
+            proj::directx::perspective(0.8, 1.0, near, far) * look_to_mat4(eye, -Vec3::Z, Vec3::Y),
+            eye,
+        )
     }
 
     /// An `R32Float` depth texture holding `depth`.
     fn depth_texture(gpu: &GpuContext, depth: &[f32]) -> wgpu::TextureView {
-        let t = texture(gpu, "depth", (W, H), wgpu::TextureFormat::R32Float, wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST);
+        let t = texture(
+            gpu,
+            "depth",
+            (W, H),
+            wgpu::TextureFormat::R32Float,
+            wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        );
         gpu.queue.write_texture(
             t.as_image_copy(),
             bytemuck::cast_slice(depth),
-            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(W * 4), rows_per_image: None },
+            wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(W * 4),
+                rows_per_image: None,
+            },
             t.size(),
         );
         t.create_view(&Default::default())
@@ -384,7 +552,10 @@ mod engine_misuse {
         let Some(gpu) = slc_tests::gpu() else { return };
         let out = engine::output(gpu, (W, H));
         let view = out.create_view(&Default::default());
-        let desc = DirectPassDesc { surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::R32Float }, ..f32_desc() };
+        let desc = DirectPassDesc {
+            surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::R32Float },
+            ..f32_desc()
+        };
         let up = upload(gpu, "up", (W, H), &vec![[0.0, 1.0, 0.0, 0.0]; (W * H) as usize]);
         let mut pass = DirectPass::new(gpu, &lights(125), &desc).unwrap();
         let settings = DirectSettings { culling: Culling::None, seed: 1, frame: 0 };
@@ -398,20 +569,32 @@ mod engine_misuse {
                     if y < FLOOR {
                         return if reversed { 0.0 } else { 1.0 };
                     }
-                    let ndc = slc_core::glam::Vec2::new(2.0 * (x as f32 + 0.5) / W as f32 - 1.0, 1.0 - 2.0 * (y as f32 + 0.5) / H as f32);
+                    let ndc = slc_core::glam::Vec2::new(
+                        2.0 * (x as f32 + 0.5) / W as f32 - 1.0,
+                        1.0 - 2.0 * (y as f32 + 0.5) / H as f32,
+                    );
                     let inv = vp.inverse();
-                    let (a, b) = (inv.project_point3(ndc.extend(0.0)), inv.project_point3(ndc.extend(1.0)));
+                    let (a, b) =
+                        (inv.project_point3(ndc.extend(0.0)), inv.project_point3(ndc.extend(1.0)));
                     let t = -a.y / (b.y - a.y);
                     let hit = a + (b - a) * t;
                     let d = vp.project_point3(hit).z;
-                    assert!(d > 0.0 && d < 1.0, "the floor at pixel {i} must be within the depth range: {d}");
+                    assert!(
+                        d > 0.0 && d < 1.0,
+                        "the floor at pixel {i} must be within the depth range: {d}"
+                    );
                     d
                 })
                 .collect();
             let tex = depth_texture(gpu, &depth);
-            let gbuffer = |inv_view_proj, eye| GBuffer { surface: Surface::Depth { depth: &tex, inv_view_proj }, normal: &up, eye };
+            let gbuffer = |inv_view_proj, eye| GBuffer {
+                surface: Surface::Depth { depth: &tex, inv_view_proj },
+                normal: &up,
+                eye,
+            };
             let mut enc = gpu.device.create_command_encoder(&Default::default());
-            pass.record(&mut enc, &DirectInputs::new(gbuffer(vp.inverse(), eye), &view), &settings).unwrap();
+            pass.record(&mut enc, &DirectInputs::new(gbuffer(vp.inverse(), eye), &view), &settings)
+                .unwrap();
             let got = engine::submit_and_read(gpu, enc, &out);
             for (i, p) in got.iter().enumerate() {
                 let background = (i as u32 / W) < FLOOR;
@@ -421,14 +604,31 @@ mod engine_misuse {
                 assert!(background == (*p == [0.0; 4]), "reversed {reversed}, pixel {i}: {p:?}");
             }
             let mut enc = gpu.device.create_command_encoder(&Default::default());
-            let e = pass.record(&mut enc, &DirectInputs::new(gbuffer(vp, eye), &view), &settings).unwrap_err();
-            assert!(matches!(&e, GpuError::Setting(m) if m.contains("inv_view_proj")), "forward matrix: {e}");
-            let e = pass.record(&mut enc, &DirectInputs::new(gbuffer(vp.inverse(), eye + Vec3::X), &view), &settings).unwrap_err();
+            let e = pass
+                .record(&mut enc, &DirectInputs::new(gbuffer(vp, eye), &view), &settings)
+                .unwrap_err();
+            assert!(
+                matches!(&e, GpuError::Setting(m) if m.contains("inv_view_proj")),
+                "forward matrix: {e}"
+            );
+            let e = pass
+                .record(
+                    &mut enc,
+                    &DirectInputs::new(gbuffer(vp.inverse(), eye + Vec3::X), &view),
+                    &settings,
+                )
+                .unwrap_err();
             assert!(matches!(&e, GpuError::Setting(m) if m.contains("eye")), "wrong eye: {e}");
         }
-        let ortho = slc_core::glam::camera::rh::proj::directx::orthographic(-1.0, 1.0, -1.0, 1.0, 0.1, 10.0);
+        let ortho = slc_core::glam::camera::rh::proj::directx::orthographic(
+            -1.0, 1.0, -1.0, 1.0, 0.1, 10.0,
+        );
         let tex = depth_texture(gpu, &vec![0.5; (W * H) as usize]);
-        let g = GBuffer { surface: Surface::Depth { depth: &tex, inv_view_proj: ortho.inverse() }, normal: &up, eye: Vec3::new(5.0, 5.0, 5.0) };
+        let g = GBuffer {
+            surface: Surface::Depth { depth: &tex, inv_view_proj: ortho.inverse() },
+            normal: &up,
+            eye: Vec3::new(5.0, 5.0, 5.0),
+        };
         let mut enc = gpu.device.create_command_encoder(&Default::default());
         pass.record(&mut enc, &DirectInputs::new(g, &view), &settings).unwrap();
         gpu.queue.submit([enc.finish()]);

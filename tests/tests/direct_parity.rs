@@ -36,7 +36,15 @@ use std::sync::{Arc, OnceLock};
 
 fn ies() -> Arc<IesProfile> {
     static P: OnceLock<Arc<IesProfile>> = OnceLock::new();
-    P.get_or_init(|| Arc::new(IesProfile::parse_bytes(&std::fs::read(shared_data("ies/floodlight-12w-54deg.ies")).unwrap()).unwrap())).clone()
+    P.get_or_init(|| {
+        Arc::new(
+            IesProfile::parse_bytes(
+                &std::fs::read(shared_data("ies/floodlight-12w-54deg.ies")).unwrap(),
+            )
+            .unwrap(),
+        )
+    })
+    .clone()
 }
 
 /// A small deterministic generator for the scene's details.
@@ -67,7 +75,13 @@ struct Outcome {
     worst_rel: f64,
 }
 
-fn compare(seed: u32, n_lights: usize, log_intensity: (f32, f32), eps: f32, frame: u32) -> Option<Outcome> {
+fn compare(
+    seed: u32,
+    n_lights: usize,
+    log_intensity: (f32, f32),
+    eps: f32,
+    frame: u32,
+) -> Option<Outcome> {
     let g = gpu()?;
     let mut r = Gen(seed);
     let mut lights = Vec::new();
@@ -76,8 +90,12 @@ fn compare(seed: u32, n_lights: usize, log_intensity: (f32, f32), eps: f32, fram
         let p = r.v();
         let l = match (r.u() * 4.0) as u32 {
             0 => Light::Point(PointLight::new(p, Vec3::new(i, 0.5 * i, 0.25 * i)).unwrap()),
-            1 => Light::Spot(SpotLight::new(p, r.dir(), Vec3::splat(i), 0.3 * r.u(), 0.4 + r.u()).unwrap()),
-            2 => Light::Ies(IesLight::new(p, r.dir(), r.dir(), Vec3::splat(i * 1e-3), ies()).unwrap()),
+            1 => Light::Spot(
+                SpotLight::new(p, r.dir(), Vec3::splat(i), 0.3 * r.u(), 0.4 + r.u()).unwrap(),
+            ),
+            2 => Light::Ies(
+                IesLight::new(p, r.dir(), r.dir(), Vec3::splat(i * 1e-3), ies()).unwrap(),
+            ),
             _ => {
                 let s = 0.05 + 0.2 * r.u();
                 match TriangleLight::new(p, p + r.v() * s, p + r.v() * s, Vec3::splat(i)) {
@@ -110,14 +128,23 @@ fn compare(seed: u32, n_lights: usize, log_intensity: (f32, f32), eps: f32, fram
     }
     let a = cpu.shade(&points, &normals, &params, seed, frame).unwrap();
     let b = gpu_lights.shade(&points, &normals, &params, seed, frame).unwrap();
-    let mut o = Outcome { points: points.len(), count_differs: 0, value_differs: 0, worst_rel: 0.0 };
+    let mut o =
+        Outcome { points: points.len(), count_differs: 0, value_differs: 0, worst_rel: 0.0 };
     for (p, q) in a.iter().zip(&b) {
-        assert!(q.irradiance.is_finite() || !p.irradiance.is_finite(), "GPU non-finite where the CPU is finite: {p:?} vs {q:?}");
+        assert!(
+            q.irradiance.is_finite() || !p.irradiance.is_finite(),
+            "GPU non-finite where the CPU is finite: {p:?} vs {q:?}"
+        );
         if p == q {
             continue;
         }
         if p.in_range != q.in_range {
-            assert!(p.in_range.abs_diff(q.in_range) <= 2, "in-range {} on the CPU vs {} on the GPU", p.in_range, q.in_range);
+            assert!(
+                p.in_range.abs_diff(q.in_range) <= 2,
+                "in-range {} on the CPU vs {} on the GPU",
+                p.in_range,
+                q.in_range
+            );
             o.count_differs += 1;
             continue;
         }
@@ -138,8 +165,16 @@ fn check(o: &Outcome, what: &str) {
         o.points, o.count_differs, o.value_differs, o.worst_rel
     );
     let limit = o.points / 50;
-    assert!(o.count_differs <= limit, "{what}: {} in-range mismatches (limit {limit})", o.count_differs);
-    assert!(o.value_differs <= limit, "{what}: {} irradiance mismatches (limit {limit})", o.value_differs);
+    assert!(
+        o.count_differs <= limit,
+        "{what}: {} in-range mismatches (limit {limit})",
+        o.count_differs
+    );
+    assert!(
+        o.value_differs <= limit,
+        "{what}: {} irradiance mismatches (limit {limit})",
+        o.value_differs
+    );
 }
 
 proptest! {

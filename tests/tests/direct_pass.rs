@@ -19,7 +19,10 @@ use slc_scene::lights::LightSet;
 use slc_scene::scene::Scene;
 use slc_tests::engine::{self, texture, upload};
 use slc_tests::gpu;
-use slc_wgpu::passes::{Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, GBuffer, Surface, SurfaceDesc};
+use slc_wgpu::passes::{
+    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, GBuffer,
+    Surface, SurfaceDesc,
+};
 use slc_wgpu::{GpuContext, GpuError};
 
 const W: u32 = 64;
@@ -39,8 +42,25 @@ fn lights() -> LightSet {
         let i_rgb = Vec3::new(rnd(), rnd(), rnd()) * 0.02;
         v.push(match i % 3 {
             0 => Light::Point(PointLight::new(p, i_rgb).unwrap()),
-            1 => Light::Spot(SpotLight::new(p, Vec3::new(rnd() - 0.5, -1.0, rnd() - 0.5).normalize(), i_rgb, 0.3, 0.9).unwrap()),
-            _ => Light::Triangle(TriangleLight::new(p, p + Vec3::new(0.02, 0.0, 0.0), p + Vec3::new(0.0, 0.0, 0.02), i_rgb * 50.0).unwrap()),
+            1 => Light::Spot(
+                SpotLight::new(
+                    p,
+                    Vec3::new(rnd() - 0.5, -1.0, rnd() - 0.5).normalize(),
+                    i_rgb,
+                    0.3,
+                    0.9,
+                )
+                .unwrap(),
+            ),
+            _ => Light::Triangle(
+                TriangleLight::new(
+                    p,
+                    p + Vec3::new(0.02, 0.0, 0.0),
+                    p + Vec3::new(0.0, 0.0, 0.02),
+                    i_rgb * 50.0,
+                )
+                .unwrap(),
+            ),
         });
     }
     LightSet::new(v).unwrap()
@@ -58,19 +78,28 @@ struct Gb {
 fn gbuffer(gpu: &GpuContext) -> Gb {
     let ctx = VplContext::new(&Scene::cornell_box(), W, H, 8, None).unwrap();
     let gb = ctx.gbuffer();
-    let pos: Vec<[f32; 4]> = (0..gb.position.len()).map(|i| gb.position[i].extend(if gb.valid(i) { 1.0 } else { 0.0 }).to_array()).collect();
+    let pos: Vec<[f32; 4]> = (0..gb.position.len())
+        .map(|i| gb.position[i].extend(if gb.valid(i) { 1.0 } else { 0.0 }).to_array())
+        .collect();
     let nrm: Vec<[f32; 4]> = gb.normal.iter().map(|n| n.extend(0.0).to_array()).collect();
     Gb {
         position: upload(gpu, "gb position", (W, H), &pos),
         normal: upload(gpu, "gb normal", (W, H), &nrm),
-        points: (0..gb.position.len()).map(|i| if gb.valid(i) { gb.position[i] } else { Vec3::NAN }).collect(),
+        points: (0..gb.position.len())
+            .map(|i| if gb.valid(i) { gb.position[i] } else { Vec3::NAN })
+            .collect(),
         normals: gb.normal.clone(),
         valid: (0..gb.position.len()).map(|i| gb.valid(i)).collect(),
     }
 }
 
 fn position_desc(selection: DirectSelection) -> DirectPassDesc {
-    DirectPassDesc { surface: SurfaceDesc::Position, output_format: wgpu::TextureFormat::Rgba32Float, selection, ..DirectPassDesc::new(W, H) }
+    DirectPassDesc {
+        surface: SurfaceDesc::Position,
+        output_format: wgpu::TextureFormat::Rgba32Float,
+        selection,
+        ..DirectPassDesc::new(W, H)
+    }
 }
 
 /// Uniform picks, number for number as the CPU's reservoir; every light in
@@ -81,13 +110,22 @@ fn pass_matches_the_cpu_twin() {
     let set = lights();
     let out = engine::output(gpu, (W, H));
     let out_view = out.create_view(&Default::default());
-    let mut pass = DirectPass::new(gpu, &set, &position_desc(DirectSelection::Uniform { k: 8 })).unwrap();
+    let mut pass =
+        DirectPass::new(gpu, &set, &position_desc(DirectSelection::Uniform { k: 8 })).unwrap();
     let mut cpu = DirectLights::new(&set);
-    let inputs = DirectInputs::new(GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye: Vec3::ZERO }, &out_view);
+    let inputs = DirectInputs::new(
+        GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye: Vec3::ZERO },
+        &out_view,
+    );
     for (eps, frame) in [(0.002, 0), (0.02, 5)] {
         let params = RangeParams::new(eps, 1.0).unwrap();
         let mut enc = gpu.device.create_command_encoder(&Default::default());
-        pass.record(&mut enc, &inputs, &DirectSettings { culling: Culling::Stochastic(params), seed: 9, frame }).unwrap();
+        pass.record(
+            &mut enc,
+            &inputs,
+            &DirectSettings { culling: Culling::Stochastic(params), seed: 9, frame },
+        )
+        .unwrap();
         let got = engine::submit_and_read(gpu, enc, &out);
         let want = cpu.shade(&g.points, &g.normals, &params, 9, frame).unwrap();
         let (mut shaded, mut differs, mut worst) = (0, 0, 0.0f64);
@@ -103,16 +141,24 @@ fn pass_matches_the_cpu_twin() {
                 continue;
             }
             let (a, b) = (Vec3::new(p[0], p[1], p[2]).as_dvec3(), want[i].irradiance.as_dvec3());
-            worst = worst.max(((a - b).abs().max_element() - 1e-12).max(0.0) / b.abs().max_element().max(1e-30));
+            worst = worst.max(
+                ((a - b).abs().max_element() - 1e-12).max(0.0) / b.abs().max_element().max(1e-30),
+            );
         }
-        eprintln!("eps {eps}: {differs} of {shaded} pixels with another in-range count, worst {worst:.2e} elsewhere");
+        eprintln!(
+            "eps {eps}: {differs} of {shaded} pixels with another in-range count, worst {worst:.2e} elsewhere"
+        );
         assert!(shaded > 1000);
-        assert!(differs * 200 <= shaded, "{differs} of {shaded} pixels differ in their in-range counts");
+        assert!(
+            differs * 200 <= shaded,
+            "{differs} of {shaded} pixels differ in their in-range counts"
+        );
         assert!(worst <= 1e-5, "irradiance differs by {worst:.3e}");
     }
     let mut all = DirectPass::new(gpu, &set, &position_desc(DirectSelection::All)).unwrap();
     let mut enc = gpu.device.create_command_encoder(&Default::default());
-    all.record(&mut enc, &inputs, &DirectSettings { culling: Culling::None, seed: 1, frame: 0 }).unwrap();
+    all.record(&mut enc, &inputs, &DirectSettings { culling: Culling::None, seed: 1, frame: 0 })
+        .unwrap();
     let got = engine::submit_and_read(gpu, enc, &out);
     for i in (0..got.len()).filter(|&i| g.valid[i]) {
         assert_eq!(got[i][3] as usize, set.len(), "unculled: every light is in range at pixel {i}");
@@ -127,18 +173,33 @@ fn records_share_a_submission() {
     let Some(gpu) = gpu() else { return };
     let g = gbuffer(gpu);
     let set = lights();
-    let mut pass = DirectPass::new(gpu, &set, &position_desc(DirectSelection::Weighted { k: 4 })).unwrap();
+    let mut pass =
+        DirectPass::new(gpu, &set, &position_desc(DirectSelection::Weighted { k: 4 })).unwrap();
     let outs = [engine::output(gpu, (W, H)), engine::output(gpu, (W, H))];
-    let views: Vec<wgpu::TextureView> = outs.iter().map(|t| t.create_view(&Default::default())).collect();
-    let gb = GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye: Vec3::ZERO };
-    let settings = |frame, eps| DirectSettings { culling: Culling::Stochastic(RangeParams::new(eps, 1.0).unwrap()), seed: 3, frame };
+    let views: Vec<wgpu::TextureView> =
+        outs.iter().map(|t| t.create_view(&Default::default())).collect();
+    let gb =
+        GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye: Vec3::ZERO };
+    let settings = |frame, eps| DirectSettings {
+        culling: Culling::Stochastic(RangeParams::new(eps, 1.0).unwrap()),
+        seed: 3,
+        frame,
+    };
     let mut enc = gpu.device.create_command_encoder(&Default::default());
     pass.record(&mut enc, &DirectInputs::new(gb, &views[0]), &settings(0, 0.01)).unwrap();
     pass.record(&mut enc, &DirectInputs::new(gb, &views[1]), &settings(1, 0.002)).unwrap();
     gpu.queue.submit([enc.finish()]);
     let together = [
-        engine::submit_and_read(gpu, gpu.device.create_command_encoder(&Default::default()), &outs[0]),
-        engine::submit_and_read(gpu, gpu.device.create_command_encoder(&Default::default()), &outs[1]),
+        engine::submit_and_read(
+            gpu,
+            gpu.device.create_command_encoder(&Default::default()),
+            &outs[0],
+        ),
+        engine::submit_and_read(
+            gpu,
+            gpu.device.create_command_encoder(&Default::default()),
+            &outs[1],
+        ),
     ];
     for (k, (frame, eps)) in [(0, 0.01), (1, 0.002)].into_iter().enumerate() {
         let mut enc = gpu.device.create_command_encoder(&Default::default());
@@ -158,18 +219,31 @@ fn records_share_a_submission() {
 fn moved_lights_shade_as_a_new_pass() {
     let Some(gpu) = gpu() else { return };
     let g = gbuffer(gpu);
-    let set = LightSet::new(lights().lights().iter().filter(|l| !matches!(l, Light::Triangle(_))).cloned().collect()).unwrap();
+    let set = LightSet::new(
+        lights().lights().iter().filter(|l| !matches!(l, Light::Triangle(_))).cloned().collect(),
+    )
+    .unwrap();
     let desc = position_desc(DirectSelection::All);
     let mut pass = DirectPass::new(gpu, &set, &desc).unwrap();
     let out = engine::output(gpu, (W, H));
     let out_view = out.create_view(&Default::default());
-    let inputs = DirectInputs::new(GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye: Vec3::ZERO }, &out_view);
-    let settings = DirectSettings { culling: Culling::Stochastic(RangeParams::new(0.004, 1.0).unwrap()), seed: 2, frame: 1 };
+    let inputs = DirectInputs::new(
+        GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye: Vec3::ZERO },
+        &out_view,
+    );
+    let settings = DirectSettings {
+        culling: Culling::Stochastic(RangeParams::new(0.004, 1.0).unwrap()),
+        seed: 2,
+        frame: 1,
+    };
     let moved: Vec<Light> = set
         .lights()
         .iter()
         .map(|l| match l {
-            Light::Point(p) => Light::Point(PointLight::new(p.position() + Vec3::new(0.05, -0.02, 0.03), l.peak() * 1.5).unwrap()),
+            Light::Point(p) => Light::Point(
+                PointLight::new(p.position() + Vec3::new(0.05, -0.02, 0.03), l.peak() * 1.5)
+                    .unwrap(),
+            ),
             other => other.clone(),
         })
         .collect();
@@ -181,10 +255,17 @@ fn moved_lights_shade_as_a_new_pass() {
     let before = run(&mut pass);
     pass.update_lights(&moved).unwrap();
     let after = run(&mut pass);
-    let fresh = run(&mut DirectPass::new(gpu, &LightSet::new(moved.clone()).unwrap(), &desc).unwrap());
+    let fresh =
+        run(&mut DirectPass::new(gpu, &LightSet::new(moved.clone()).unwrap(), &desc).unwrap());
     let close = |a: &[[f32; 4]], b: &[[f32; 4]]| {
-        let bad: Vec<_> =
-            a.iter().zip(b).filter(|(p, q)| !(p[3] == q[3] && (0..3).all(|c| (p[c] - q[c]).abs() <= 1e-5 * q[c].abs().max(1e-6)))).collect();
+        let bad: Vec<_> = a
+            .iter()
+            .zip(b)
+            .filter(|(p, q)| {
+                !(p[3] == q[3]
+                    && (0..3).all(|c| (p[c] - q[c]).abs() <= 1e-5 * q[c].abs().max(1e-6)))
+            })
+            .collect();
         if let Some(first) = bad.first() {
             eprintln!("{} pixels differ, e.g. {:?}", bad.len(), first);
         }
@@ -200,7 +281,10 @@ fn moved_lights_shade_as_a_new_pass() {
     let mut bad = moved[..100].to_vec();
     bad[0] = vpl;
     assert!(matches!(pass.update_lights(&bad), Err(GpuError::Setting(_))));
-    assert!(matches!(pass.update_lights(&moved), Err(GpuError::Setting(_))), "a new count needs set_lights");
+    assert!(
+        matches!(pass.update_lights(&moved), Err(GpuError::Setting(_))),
+        "a new count needs set_lights"
+    );
     gpu.take_errors().unwrap();
 }
 
@@ -214,7 +298,8 @@ fn depth_input_matches_positions() {
     let cam = &scene.camera;
     let (_, up, forward) = cam.basis();
     use glam::camera::rh::{proj, view::look_to_mat4};
-    let vp = proj::directx::perspective(cam.vfov_deg.to_radians(), W as f32 / H as f32, 0.1, 10.0) * look_to_mat4(cam.position, forward, up);
+    let vp = proj::directx::perspective(cam.vfov_deg.to_radians(), W as f32 / H as f32, 0.1, 10.0)
+        * look_to_mat4(cam.position, forward, up);
     let inv = vp.inverse();
     let g = gbuffer(gpu);
     // Each valid pixel's position re-made from its depth; the depth of the
@@ -241,7 +326,13 @@ fn depth_input_matches_positions() {
         );
         points[i] = p.to_array();
     }
-    let r32 = texture(gpu, "depth", (W, H), wgpu::TextureFormat::R32Float, wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST);
+    let r32 = texture(
+        gpu,
+        "depth",
+        (W, H),
+        wgpu::TextureFormat::R32Float,
+        wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+    );
     let d1: Vec<f32> = depth.iter().map(|d| d[0]).collect();
     gpu.queue.write_texture(
         r32.as_image_copy(),
@@ -254,16 +345,27 @@ fn depth_input_matches_positions() {
     let set = lights();
     let out = engine::output(gpu, (W, H));
     let out_view = out.create_view(&Default::default());
-    let settings = DirectSettings { culling: Culling::Stochastic(RangeParams::new(0.004, 1.0).unwrap()), seed: 4, frame: 2 };
+    let settings = DirectSettings {
+        culling: Culling::Stochastic(RangeParams::new(0.004, 1.0).unwrap()),
+        seed: 4,
+        frame: 2,
+    };
     let mut by_depth = DirectPass::new(
         gpu,
         &set,
-        &DirectPassDesc { surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::R32Float }, ..position_desc(DirectSelection::All) },
+        &DirectPassDesc {
+            surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::R32Float },
+            ..position_desc(DirectSelection::All)
+        },
     )
     .unwrap();
     let mut by_position = DirectPass::new(gpu, &set, &position_desc(DirectSelection::All)).unwrap();
     let mut enc = gpu.device.create_command_encoder(&Default::default());
-    let gb = GBuffer { surface: Surface::Depth { depth: &r32_view, inv_view_proj: inv }, normal: &g.normal, eye: cam.position };
+    let gb = GBuffer {
+        surface: Surface::Depth { depth: &r32_view, inv_view_proj: inv },
+        normal: &g.normal,
+        eye: cam.position,
+    };
     by_depth.record(&mut enc, &DirectInputs::new(gb, &out_view), &settings).unwrap();
     let a = engine::submit_and_read(gpu, enc, &out);
     let mut enc = gpu.device.create_command_encoder(&Default::default());
@@ -272,14 +374,22 @@ fn depth_input_matches_positions() {
     let b = engine::submit_and_read(gpu, enc, &out);
     let (mut valid, mut far) = (0, 0);
     for i in 0..a.len() {
-        assert_eq!(a[i][3] == 0.0 && a[i][0] == 0.0, b[i][3] == 0.0 && b[i][0] == 0.0, "pixel {i}: surface masks differ");
+        assert_eq!(
+            a[i][3] == 0.0 && a[i][0] == 0.0,
+            b[i][3] == 0.0 && b[i][0] == 0.0,
+            "pixel {i}: surface masks differ"
+        );
         if g.valid[i] {
             valid += 1;
-            let rel = (0..3).map(|c| (a[i][c] - b[i][c]).abs() / b[i][c].abs().max(1e-6)).fold(0.0f32, f32::max);
+            let rel = (0..3)
+                .map(|c| (a[i][c] - b[i][c]).abs() / b[i][c].abs().max(1e-6))
+                .fold(0.0f32, f32::max);
             far += (rel > 1e-3 || a[i][3] != b[i][3]) as usize;
         }
     }
-    eprintln!("depth vs positions: {far} of {valid} pixels differ by more than 1e-3 or in their count");
+    eprintln!(
+        "depth vs positions: {far} of {valid} pixels differ by more than 1e-3 or in their count"
+    );
     assert!(far * 100 <= valid, "{far} of {valid}");
     let _ = Mat4::IDENTITY;
 }
@@ -290,11 +400,22 @@ fn wrong_inputs_are_typed_errors() {
     let desc = DirectPassDesc { surface: SurfaceDesc::Position, ..DirectPassDesc::new(W, H) };
     let mut pass = DirectPass::new(gpu, &set, &desc).unwrap();
     let tex = wgpu::TextureUsages::TEXTURE_BINDING;
-    let good = texture(gpu, "gb", (W, H), wgpu::TextureFormat::Rgba32Float, tex).create_view(&Default::default());
-    let small = texture(gpu, "small", (W / 2, H), wgpu::TextureFormat::Rgba32Float, tex).create_view(&Default::default());
-    let unorm = texture(gpu, "unorm", (W, H), wgpu::TextureFormat::Rgba8Unorm, tex).create_view(&Default::default());
-    let out16 = texture(gpu, "out", (W, H), wgpu::TextureFormat::Rgba16Float, wgpu::TextureUsages::STORAGE_BINDING).create_view(&Default::default());
-    let not_storage = texture(gpu, "out", (W, H), wgpu::TextureFormat::Rgba16Float, tex).create_view(&Default::default());
+    let good = texture(gpu, "gb", (W, H), wgpu::TextureFormat::Rgba32Float, tex)
+        .create_view(&Default::default());
+    let small = texture(gpu, "small", (W / 2, H), wgpu::TextureFormat::Rgba32Float, tex)
+        .create_view(&Default::default());
+    let unorm = texture(gpu, "unorm", (W, H), wgpu::TextureFormat::Rgba8Unorm, tex)
+        .create_view(&Default::default());
+    let out16 = texture(
+        gpu,
+        "out",
+        (W, H),
+        wgpu::TextureFormat::Rgba16Float,
+        wgpu::TextureUsages::STORAGE_BINDING,
+    )
+    .create_view(&Default::default());
+    let not_storage = texture(gpu, "out", (W, H), wgpu::TextureFormat::Rgba16Float, tex)
+        .create_view(&Default::default());
     let settings = DirectSettings { culling: Culling::None, seed: 1, frame: 0 };
     let mut bad = |surface, normal, output, what: &str| {
         let mut enc = gpu.device.create_command_encoder(&Default::default());
@@ -307,20 +428,47 @@ fn wrong_inputs_are_typed_errors() {
     bad(Surface::Position(&good), &unorm, &out16, "unorm normal");
     bad(Surface::Position(&good), &good, &not_storage, "output without STORAGE_BINDING");
     bad(Surface::Position(&good), &good, &good, "output of another format");
-    bad(Surface::Depth { depth: &good, inv_view_proj: Mat4::IDENTITY }, &good, &out16, "depth for a position pass");
+    bad(
+        Surface::Depth { depth: &good, inv_view_proj: Mat4::IDENTITY },
+        &good,
+        &out16,
+        "depth for a position pass",
+    );
     let mut enc = gpu.device.create_command_encoder(&Default::default());
-    let ok = DirectInputs::new(GBuffer { surface: Surface::Position(&good), normal: &good, eye: Vec3::ZERO }, &out16);
+    let ok = DirectInputs::new(
+        GBuffer { surface: Surface::Position(&good), normal: &good, eye: Vec3::ZERO },
+        &out16,
+    );
     pass.record(&mut enc, &ok, &settings).unwrap();
     let clamp = DirectSettings { culling: Culling::Clamped { range: f32::NAN }, ..settings };
     assert!(matches!(pass.record(&mut enc, &ok, &clamp), Err(GpuError::Setting(_))));
     assert!(DirectPass::new(gpu, &set, &DirectPassDesc { width: 0, ..desc }).is_err());
-    assert!(DirectPass::new(gpu, &set, &DirectPassDesc { selection: DirectSelection::Weighted { k: 0 }, ..desc }).is_err());
-    let e = DirectPass::new(gpu, &set, &DirectPassDesc { output_format: wgpu::TextureFormat::Rgba8Unorm, ..desc }).err().unwrap();
+    assert!(
+        DirectPass::new(
+            gpu,
+            &set,
+            &DirectPassDesc { selection: DirectSelection::Weighted { k: 0 }, ..desc }
+        )
+        .is_err()
+    );
+    let e = DirectPass::new(
+        gpu,
+        &set,
+        &DirectPassDesc { output_format: wgpu::TextureFormat::Rgba8Unorm, ..desc },
+    )
+    .err()
+    .unwrap();
     assert!(matches!(e, GpuError::Binding { .. }), "{e}");
     let depth16 = SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth16Unorm };
-    assert!(matches!(DirectPass::new(gpu, &set, &DirectPassDesc { surface: depth16, ..desc }), Err(GpuError::Binding { .. })));
+    assert!(matches!(
+        DirectPass::new(gpu, &set, &DirectPassDesc { surface: depth16, ..desc }),
+        Err(GpuError::Binding { .. })
+    ));
     let points_only = slc_shared_shaders::LightTypes { point: true, ..Default::default() };
-    assert!(matches!(DirectPass::new(gpu, &set, &DirectPassDesc { light_types: points_only, ..desc }), Err(GpuError::Setting(_))));
+    assert!(matches!(
+        DirectPass::new(gpu, &set, &DirectPassDesc { light_types: points_only, ..desc }),
+        Err(GpuError::Setting(_))
+    ));
     gpu.take_errors().unwrap();
 }
 
@@ -337,25 +485,54 @@ fn material_outputs_match_the_brdf() {
     use slc_wgpu::passes::{Dielectric, DirectOutputs, MaterialInputs};
     let Some(gpu) = gpu() else { return };
     let g = gbuffer(gpu);
-    let set = LightSet::new(lights().lights().iter().filter(|l| !matches!(l, Light::Triangle(_))).cloned().collect()).unwrap();
+    let set = LightSet::new(
+        lights().lights().iter().filter(|l| !matches!(l, Light::Triangle(_))).cloned().collect(),
+    )
+    .unwrap();
     let n = (W * H) as usize;
-    let base: Vec<[f32; 4]> = (0..n).map(|i| [0.2 + 0.6 * (i % 7) as f32 / 6.0, 0.5, 0.9 - 0.7 * (i % 5) as f32 / 4.0, 1.0]).collect();
-    let mr: Vec<[f32; 4]> = (0..n).map(|i| [0.0, 0.05 + 0.9 * (i % 4) as f32 / 3.0, (i % 3) as f32 / 2.0, 0.25 * (i % 5) as f32]).collect();
-    let (bc, mrv) = (upload(gpu, "base colour", (W, H), &base), upload(gpu, "metal rough", (W, H), &mr));
+    let base: Vec<[f32; 4]> = (0..n)
+        .map(|i| [0.2 + 0.6 * (i % 7) as f32 / 6.0, 0.5, 0.9 - 0.7 * (i % 5) as f32 / 4.0, 1.0])
+        .collect();
+    let mr: Vec<[f32; 4]> = (0..n)
+        .map(|i| {
+            [0.0, 0.05 + 0.9 * (i % 4) as f32 / 3.0, (i % 3) as f32 / 2.0, 0.25 * (i % 5) as f32]
+        })
+        .collect();
+    let (bc, mrv) =
+        (upload(gpu, "base colour", (W, H), &base), upload(gpu, "metal rough", (W, H), &mr));
     let eye = Scene::cornell_box().camera.position;
     let dielectric = Dielectric::default();
     let outs = [engine::output(gpu, (W, H)), engine::output(gpu, (W, H))];
-    let views: Vec<wgpu::TextureView> = outs.iter().map(|t| t.create_view(&Default::default())).collect();
+    let views: Vec<wgpu::TextureView> =
+        outs.iter().map(|t| t.create_view(&Default::default())).collect();
     let settings = DirectSettings { culling: Culling::None, seed: 1, frame: 0 };
     let gb = GBuffer { surface: Surface::Position(&g.position), normal: &g.normal, eye };
     let material = Some(MaterialInputs { base_color: &bc, metallic_roughness: &mrv });
     let run = |outputs, specular: Option<&wgpu::TextureView>| {
-        let mut pass = DirectPass::new(gpu, &set, &DirectPassDesc { outputs, ..position_desc(DirectSelection::All) }).unwrap();
+        let mut pass = DirectPass::new(
+            gpu,
+            &set,
+            &DirectPassDesc { outputs, ..position_desc(DirectSelection::All) },
+        )
+        .unwrap();
         let mut enc = gpu.device.create_command_encoder(&Default::default());
-        pass.record(&mut enc, &DirectInputs { material, specular, ..DirectInputs::new(gb, &views[0]) }, &settings).unwrap();
+        pass.record(
+            &mut enc,
+            &DirectInputs { material, specular, ..DirectInputs::new(gb, &views[0]) },
+            &settings,
+        )
+        .unwrap();
         gpu.queue.submit([enc.finish()]);
-        let a = engine::submit_and_read(gpu, gpu.device.create_command_encoder(&Default::default()), &outs[0]);
-        let b = engine::submit_and_read(gpu, gpu.device.create_command_encoder(&Default::default()), &outs[1]);
+        let a = engine::submit_and_read(
+            gpu,
+            gpu.device.create_command_encoder(&Default::default()),
+            &outs[0],
+        );
+        let b = engine::submit_and_read(
+            gpu,
+            gpu.device.create_command_encoder(&Default::default()),
+            &outs[1],
+        );
         (a, b)
     };
     let (radiance, _) = run(DirectOutputs::Radiance(dielectric), None);
@@ -364,9 +541,11 @@ fn material_outputs_match_the_brdf() {
     let (mut worst, mut shaded) = (0.0f64, 0);
     for i in (0..n).filter(|&i| g.valid[i]) {
         let (x, nn) = (g.points[i], g.normals[i]);
-        let (b, m, alpha) = (Vec3::new(base[i][0], base[i][1], base[i][2]), mr[i][2], ggx_alpha(mr[i][1]));
+        let (b, m, alpha) =
+            (Vec3::new(base[i][0], base[i][1], base[i][2]), mr[i][2], ggx_alpha(mr[i][1]));
         let v = (eye - x).normalize();
-        let (mut l_out, mut e, mut spec, mut l_bevy) = (glam::DVec3::ZERO, glam::DVec3::ZERO, glam::DVec3::ZERO, glam::DVec3::ZERO);
+        let (mut l_out, mut e, mut spec, mut l_bevy) =
+            (glam::DVec3::ZERO, glam::DVec3::ZERO, glam::DVec3::ZERO, glam::DVec3::ZERO);
         for light in set.lights() {
             let y = light.bound().center;
             let cos = connection_cosine(x, y, nn, nn, f32::INFINITY);
@@ -378,27 +557,47 @@ fn material_outputs_match_the_brdf() {
             let c = light.intensity(w / d2.sqrt()) * connection_factor(cos, d2, f32::INFINITY, 1.0);
             let l = (y - x).normalize();
             e += c.as_dvec3();
-            l_out += (brdf_eval(b, m, dielectric.f0, dielectric.f90, alpha, nn, v, l) * c).as_dvec3();
-            spec += (specular_brdf(b, m, dielectric.f0, dielectric.f90, alpha, nn, v, l) * c).as_dvec3();
+            l_out +=
+                (brdf_eval(b, m, dielectric.f0, dielectric.f90, alpha, nn, v, l) * c).as_dvec3();
+            spec += (specular_brdf(b, m, dielectric.f0, dielectric.f90, alpha, nn, v, l) * c)
+                .as_dvec3();
             l_bevy += (bevy_brdf(b, m, mr[i][1], mr[i][3], nn, v, l) * c).as_dvec3();
         }
         let rel = |got: &[f32; 4], want: glam::DVec3| {
             let g = glam::DVec3::new(got[0] as f64, got[1] as f64, got[2] as f64);
             ((g - want).abs().max_element() - 1e-9).max(0.0) / want.abs().max_element().max(1e-12)
         };
-        worst = worst.max(rel(&radiance[i], l_out)).max(rel(&irradiance[i], e)).max(rel(&specular[i], spec)).max(rel(&bevy[i], l_bevy));
+        worst = worst
+            .max(rel(&radiance[i], l_out))
+            .max(rel(&irradiance[i], e))
+            .max(rel(&specular[i], spec))
+            .max(rel(&bevy[i], l_bevy));
         shaded += 1;
     }
     eprintln!("material outputs: {shaded} pixels, worst relative difference {worst:.2e}");
     assert!(shaded > 1000);
     assert!(worst <= 1e-4, "{worst:.3e}");
     // Missing material or specular target: typed errors.
-    let mut pass =
-        DirectPass::new(gpu, &set, &DirectPassDesc { outputs: DirectOutputs::Split(dielectric), ..position_desc(DirectSelection::All) }).unwrap();
+    let mut pass = DirectPass::new(
+        gpu,
+        &set,
+        &DirectPassDesc {
+            outputs: DirectOutputs::Split(dielectric),
+            ..position_desc(DirectSelection::All)
+        },
+    )
+    .unwrap();
     let mut enc = gpu.device.create_command_encoder(&Default::default());
-    assert!(matches!(pass.record(&mut enc, &DirectInputs::new(gb, &views[0]), &settings), Err(GpuError::Binding { .. })));
     assert!(matches!(
-        pass.record(&mut enc, &DirectInputs { material, ..DirectInputs::new(gb, &views[0]) }, &settings),
+        pass.record(&mut enc, &DirectInputs::new(gb, &views[0]), &settings),
+        Err(GpuError::Binding { .. })
+    ));
+    assert!(matches!(
+        pass.record(
+            &mut enc,
+            &DirectInputs { material, ..DirectInputs::new(gb, &views[0]) },
+            &settings
+        ),
         Err(GpuError::Binding { .. })
     ));
     gpu.take_errors().unwrap();

@@ -30,7 +30,8 @@ fn embed_matches_the_cpu_frame() {
     let ctx = VplContext::new(&scene, W, H, RSM, Some(0.05)).unwrap();
     let cpu = ctx.shade(&s).unwrap();
     let gb = ctx.gbuffer();
-    let (mut mask_differs, mut rel, mut sum_gpu, mut sum_cpu) = (0usize, Vec::new(), DVec3::ZERO, DVec3::ZERO);
+    let (mut mask_differs, mut rel, mut sum_gpu, mut sum_cpu) =
+        (0usize, Vec::new(), DVec3::ZERO, DVec3::ZERO);
     for i in 0..cpu.irradiance.len() {
         let g = &frame.irradiance[i];
         let gpu_valid = g[3] > 0.0 || (g[0], g[1], g[2]) != (0.0, 0.0, 0.0);
@@ -48,7 +49,10 @@ fn embed_matches_the_cpu_frame() {
     // The worst channel's image-mean difference.
     let mean_rel = ((sum_gpu - sum_cpu).abs() / sum_cpu).max_element();
     let share = mask_differs as f64 / cpu.irradiance.len() as f64;
-    eprintln!("embed vs CPU: mean {mean_rel:.2e} relative, median pixel {median:.2e}, {:.2}% of pixels see another surface", 100.0 * share);
+    eprintln!(
+        "embed vs CPU: mean {mean_rel:.2e} relative, median pixel {median:.2e}, {:.2}% of pixels see another surface",
+        100.0 * share
+    );
     assert!(mean_rel <= 0.01, "image mean differs by {mean_rel:.3e}");
     assert!(median <= 0.01, "median pixel differs by {median:.3e}");
     assert!(share <= 0.02, "{:.2}% of the pixels see another surface", 100.0 * share);
@@ -62,11 +66,20 @@ fn embed_matches_the_cpu_frame() {
     // 3 light the image ~20% less: a pass that kept them fails.
     let s = VplSettings { frame: 3, ..settings() };
     let frame = render(&scene, &s, 0.05, 1).unwrap();
-    let points: Vec<Vec3> = (0..gb.position.len()).map(|i| if gb.valid(i) { gb.position[i] } else { Vec3::NAN }).collect();
+    let points: Vec<Vec3> = (0..gb.position.len())
+        .map(|i| if gb.valid(i) { gb.position[i] } else { Vec3::NAN })
+        .collect();
     let params = RangeParams::new(s.error_bound, s.exposure).unwrap();
     let cpu_sum = |f: u32| -> DVec3 {
-        let mut lights = slc_cpu::direct::DirectLights::new(&slc_scene::lights::LightSet::new(small_lights_at(f)).unwrap());
-        lights.shade(&points, &gb.normal, &params, s.seed, s.frame).unwrap().iter().map(|d| d.irradiance.as_dvec3()).sum()
+        let mut lights = slc_cpu::direct::DirectLights::new(
+            &slc_scene::lights::LightSet::new(small_lights_at(f)).unwrap(),
+        );
+        lights
+            .shade(&points, &gb.normal, &params, s.seed, s.frame)
+            .unwrap()
+            .iter()
+            .map(|d| d.irradiance.as_dvec3())
+            .sum()
     };
     let (sum_cpu, unmoved) = (cpu_sum(s.frame), cpu_sum(0));
     let sum_gpu: DVec3 = frame.direct.iter().map(|d| Vec3::new(d[0], d[1], d[2]).as_dvec3()).sum();
@@ -76,7 +89,11 @@ fn embed_matches_the_cpu_frame() {
         "small lights' direct light at frame {}: GPU pass {sum_gpu:.4}, CPU {sum_cpu:.4}, worst channel {rel:.2e} relative (unmoved lights: {moved:.2e} off)",
         s.frame
     );
-    assert!(moved > 0.1, "the lights barely changed between frames 0 and {} ({moved:.3e}): the test cannot see update_lights", s.frame);
+    assert!(
+        moved > 0.1,
+        "the lights barely changed between frames 0 and {} ({moved:.3e}): the test cannot see update_lights",
+        s.frame
+    );
     assert!(frame.direct.iter().all(|d| d.iter().all(|v| v.is_finite() && *v >= 0.0)));
     assert!(rel <= 0.02, "direct light means differ by {rel:.3e}");
 }

@@ -27,8 +27,8 @@ use slc_core::light::{Light, PointLight};
 use slc_core::range::RangeParams;
 use slc_shared_shaders::engine::unproject_pixel;
 use slc_wgpu::passes::{
-    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, GBuffer, Surface, SurfaceDesc, TemporalInputs, TemporalPass,
-    TemporalPassDesc,
+    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, GBuffer,
+    Surface, SurfaceDesc, TemporalInputs, TemporalPass, TemporalPassDesc,
 };
 use slc_wgpu::{GpuContext, LightSet};
 use slc_wgpu::{TemporalSettings, TemporalView};
@@ -44,10 +44,16 @@ const EPS: f32 = 0.02;
 
 /// The engine's device: default limits, no features.
 fn engine_device() -> (wgpu::Device, wgpu::Queue) {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
-    let adapter = pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None)).expect("an adapter");
-    pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor { required_limits: wgpu::Limits::default(), ..Default::default() }))
-        .expect("a device with default limits")
+    let instance =
+        wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+    let adapter =
+        pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None))
+            .expect("an adapter");
+    pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+        required_limits: wgpu::Limits::default(),
+        ..Default::default()
+    }))
+    .expect("a device with default limits")
 }
 
 /// The floor (10 m, y = 0) and four boxes, as triangles with flat normals.
@@ -59,8 +65,15 @@ fn scene() -> Vec<[f32; 6]> {
             v.push([p.x, p.y, p.z, n.x, n.y, n.z]);
         }
     };
-    quad(Vec3::new(-5.0, 0.0, -5.0), Vec3::new(-5.0, 0.0, 5.0), Vec3::new(5.0, 0.0, 5.0), Vec3::new(5.0, 0.0, -5.0));
-    for (cx, cz, s, h) in [(-2.0, -1.0, 0.6, 1.0), (1.5, -2.0, 0.8, 0.5), (0.5, 1.0, 0.4, 1.5), (-1.0, 2.5, 0.7, 0.8)] {
+    quad(
+        Vec3::new(-5.0, 0.0, -5.0),
+        Vec3::new(-5.0, 0.0, 5.0),
+        Vec3::new(5.0, 0.0, 5.0),
+        Vec3::new(5.0, 0.0, -5.0),
+    );
+    for (cx, cz, s, h) in
+        [(-2.0, -1.0, 0.6, 1.0), (1.5, -2.0, 0.8, 0.5), (0.5, 1.0, 0.4, 1.5), (-1.0, 2.5, 0.7, 0.8)]
+    {
         let (x0, x1, z0, z1) = (cx - s, cx + s, cz - s, cz + s);
         let p = |x, y, z| Vec3::new(x, y, z);
         quad(p(x0, h, z0), p(x0, h, z1), p(x1, h, z1), p(x1, h, z0));
@@ -76,7 +89,11 @@ fn scene() -> Vec<[f32; 6]> {
 fn camera() -> (Mat4, Vec3) {
     use glam::camera::rh::{proj, view::look_at_mat4};
     let eye = Vec3::new(0.0, 4.0, 8.0);
-    (proj::directx::perspective(0.9, W as f32 / H as f32, 0.1, 30.0) * look_at_mat4(eye, Vec3::new(0.0, 0.0, 0.0), Vec3::Y), eye)
+    (
+        proj::directx::perspective(0.9, W as f32 / H as f32, 0.1, 30.0)
+            * look_at_mat4(eye, Vec3::new(0.0, 0.0, 0.0), Vec3::Y),
+        eye,
+    )
 }
 
 /// 3,000 point lights 0.2–1.2 m over the floor, intensities spread over
@@ -88,7 +105,8 @@ fn lights(layout: usize) -> Vec<Light> {
             let t = layout as f32 * 0.4;
             let base = Vec3::new(h(0) * 9.6 - 4.8, 0.2 + h(1), h(2) * 9.6 - 4.8);
             let p = base + Vec3::new((t + h(3) * 6.0).cos(), 0.0, (t + h(3) * 6.0).sin()) * 0.15;
-            let intensity = Vec3::new(0.5 + h(4), 0.5 + h(5), 0.5 + h(6)) * 0.004 * 10f32.powf(2.0 * h(7));
+            let intensity =
+                Vec3::new(0.5 + h(4), 0.5 + h(5), 0.5 + h(6)) * 0.004 * 10f32.powf(2.0 * h(7));
             Light::Point(PointLight::new(p, intensity).expect("valid"))
         })
         .collect()
@@ -96,14 +114,21 @@ fn lights(layout: usize) -> Vec<Light> {
 
 /// Rasterizes depth and normals with the engine's own pipeline; returns the
 /// textures and their contents read back (depth, normal per pixel).
-fn gbuffer(device: &wgpu::Device, queue: &wgpu::Queue, vp: Mat4) -> (wgpu::Texture, wgpu::Texture, Vec<f32>, Vec<Vec3>) {
+fn gbuffer(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    vp: Mat4,
+) -> (wgpu::Texture, wgpu::Texture, Vec<f32>, Vec<Vec3>) {
     const SHADER: &str = r#"
 @group(0) @binding(0) var<uniform> vp: mat4x4f;
 struct V { @builtin(position) clip: vec4f, @location(0) n: vec3f }
 @vertex fn vs(@location(0) p: vec3f, @location(1) n: vec3f) -> V { return V(vp * vec4f(p, 1.0), n); }
 @fragment fn fs(v: V) -> @location(0) vec4f { return vec4f(normalize(v.n), 0.0); }
 "#;
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor { label: None, source: wgpu::ShaderSource::Wgsl(SHADER.into()) });
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: None,
+        source: wgpu::ShaderSource::Wgsl(SHADER.into()),
+    });
     let verts = scene();
     let vbuf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: None,
@@ -123,7 +148,11 @@ struct V { @builtin(position) clip: vec4f, @location(0) n: vec3f }
             module: &module,
             entry_point: Some("vs"),
             compilation_options: Default::default(),
-            buffers: &[Some(wgpu::VertexBufferLayout { array_stride: 24, step_mode: wgpu::VertexStepMode::Vertex, attributes: &attrs })],
+            buffers: &[Some(wgpu::VertexBufferLayout {
+                array_stride: 24,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &attrs,
+            })],
         },
         fragment: Some(wgpu::FragmentState {
             module: &module,
@@ -155,8 +184,13 @@ struct V { @builtin(position) clip: vec4f, @location(0) n: vec3f }
             view_formats: &[],
         })
     };
-    let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
-    let (depth, normal) = (tex(wgpu::TextureFormat::Depth32Float, usage), tex(wgpu::TextureFormat::Rgba16Float, usage));
+    let usage = wgpu::TextureUsages::RENDER_ATTACHMENT
+        | wgpu::TextureUsages::TEXTURE_BINDING
+        | wgpu::TextureUsages::COPY_SRC;
+    let (depth, normal) = (
+        tex(wgpu::TextureFormat::Depth32Float, usage),
+        tex(wgpu::TextureFormat::Rgba16Float, usage),
+    );
     let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: None,
         layout: &pipeline.get_bind_group_layout(0),
@@ -164,18 +198,25 @@ struct V { @builtin(position) clip: vec4f, @location(0) n: vec3f }
     });
     let mut enc = device.create_command_encoder(&Default::default());
     {
-        let (nv, dv) = (normal.create_view(&Default::default()), depth.create_view(&Default::default()));
+        let (nv, dv) =
+            (normal.create_view(&Default::default()), depth.create_view(&Default::default()));
         let mut rp = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: None,
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
                 view: &nv,
                 depth_slice: None,
                 resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT), store: wgpu::StoreOp::Store },
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                    store: wgpu::StoreOp::Store,
+                },
             })],
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                 view: &dv,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(1.0),
+                    store: wgpu::StoreOp::Store,
+                }),
                 stencil_ops: None,
             }),
             timestamp_writes: None,
@@ -190,7 +231,8 @@ struct V { @builtin(position) clip: vec4f, @location(0) n: vec3f }
     queue.submit([enc.finish()]);
     let depths: Vec<f32> = read(device, queue, &depth, 4, wgpu::TextureAspect::DepthOnly);
     let halves: Vec<u16> = read(device, queue, &normal, 8, wgpu::TextureAspect::All);
-    let normals = halves.chunks_exact(4).map(|c| Vec3::new(f16(c[0]), f16(c[1]), f16(c[2]))).collect();
+    let normals =
+        halves.chunks_exact(4).map(|c| Vec3::new(f16(c[0]), f16(c[1]), f16(c[2]))).collect();
     (depth, normal, depths, normals)
 }
 
@@ -199,7 +241,13 @@ fn f16(bits: u16) -> f32 {
 }
 
 /// Reads a `W × H` texture back (rows padded to 256 bytes).
-fn read<T: bytemuck::Pod>(device: &wgpu::Device, queue: &wgpu::Queue, t: &wgpu::Texture, texel: u32, aspect: wgpu::TextureAspect) -> Vec<T> {
+fn read<T: bytemuck::Pod>(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    t: &wgpu::Texture,
+    texel: u32,
+    aspect: wgpu::TextureAspect,
+) -> Vec<T> {
     let row = (W * texel).div_ceil(256) * 256;
     let staging = device.create_buffer(&wgpu::BufferDescriptor {
         label: None,
@@ -212,7 +260,11 @@ fn read<T: bytemuck::Pod>(device: &wgpu::Device, queue: &wgpu::Queue, t: &wgpu::
         wgpu::TexelCopyTextureInfo { aspect, ..t.as_image_copy() },
         wgpu::TexelCopyBufferInfo {
             buffer: &staging,
-            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(row), rows_per_image: None },
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(row),
+                rows_per_image: None,
+            },
         },
         t.size(),
     );
@@ -220,7 +272,13 @@ fn read<T: bytemuck::Pod>(device: &wgpu::Device, queue: &wgpu::Queue, t: &wgpu::
     staging.slice(..).map_async(wgpu::MapMode::Read, |_| {});
     device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
     let bytes = staging.slice(..).get_mapped_range().expect("mapped").to_vec();
-    (0..H as usize).flat_map(|y| bytemuck::pod_collect_to_vec::<u8, T>(&bytes[y * row as usize..y * row as usize + (W * texel) as usize])).collect()
+    (0..H as usize)
+        .flat_map(|y| {
+            bytemuck::pod_collect_to_vec::<u8, T>(
+                &bytes[y * row as usize..y * row as usize + (W * texel) as usize],
+            )
+        })
+        .collect()
 }
 
 /// Brute force at every pixel: every light, no culling, in f64.
@@ -236,7 +294,8 @@ fn brute_force(points: &[Option<(Vec3, Vec3)>], lights: &[Light]) -> Vec<DVec3> 
                 let d2 = v.dot(v);
                 let cos = -n.dot(v / d2.sqrt());
                 if cos > 0.0 && d2 > 0.0 {
-                    e += l.intensity(v / d2.sqrt()).as_dvec3() * (cos * slc_core::light::inverse_square(d2)) as f64;
+                    e += l.intensity(v / d2.sqrt()).as_dvec3()
+                        * (cos * slc_core::light::inverse_square(d2)) as f64;
                 }
             }
             e
@@ -266,7 +325,8 @@ fn engine_program_matches_brute_force() {
                 depths[i],
             );
             let n = normals[i];
-            (p.w > 0.0 && n.length_squared() > 0.0).then(|| (p.truncate(), n / n.length_squared().sqrt()))
+            (p.w > 0.0 && n.length_squared() > 0.0)
+                .then(|| (p.truncate(), n / n.length_squared().sqrt()))
         })
         .collect();
     let shaded = points.iter().filter(|p| p.is_some()).count();
@@ -275,7 +335,10 @@ fn engine_program_matches_brute_force() {
     let truth: Vec<Vec<DVec3>> = layouts.iter().map(|l| brute_force(&points, l)).collect();
 
     let (dv, nv) = (
-        depth.create_view(&wgpu::TextureViewDescriptor { aspect: wgpu::TextureAspect::DepthOnly, ..Default::default() }),
+        depth.create_view(&wgpu::TextureViewDescriptor {
+            aspect: wgpu::TextureAspect::DepthOnly,
+            ..Default::default()
+        }),
         normal.create_view(&Default::default()),
     );
     let output = device.create_texture(&wgpu::TextureDescriptor {
@@ -286,13 +349,22 @@ fn engine_program_matches_brute_force() {
         dimension: wgpu::TextureDimension::D2,
         format: wgpu::TextureFormat::Rgba32Float,
         // TEXTURE_BINDING: the temporal pass reads it.
-        usage: wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC | wgpu::TextureUsages::TEXTURE_BINDING,
+        usage: wgpu::TextureUsages::STORAGE_BINDING
+            | wgpu::TextureUsages::COPY_SRC
+            | wgpu::TextureUsages::TEXTURE_BINDING,
         view_formats: &[],
     });
     let ov = output.create_view(&Default::default());
-    let inputs = DirectInputs::new(GBuffer { surface: Surface::Depth { depth: &dv, inv_view_proj: inv }, normal: &nv, eye }, &ov);
+    let inputs = DirectInputs::new(
+        GBuffer { surface: Surface::Depth { depth: &dv, inv_view_proj: inv }, normal: &nv, eye },
+        &ov,
+    );
     let culling = Culling::Stochastic(RangeParams::new(EPS, 1.0).unwrap());
-    let desc = |selection| DirectPassDesc { output_format: wgpu::TextureFormat::Rgba32Float, selection, ..DirectPassDesc::new(W, H) };
+    let desc = |selection| DirectPassDesc {
+        output_format: wgpu::TextureFormat::Rgba32Float,
+        selection,
+        ..DirectPassDesc::new(W, H)
+    };
     let set = LightSet::new(layouts[0].clone()).unwrap();
     let frame_of = |pass: &mut DirectPass, f: u32| -> Vec<[f32; 4]> {
         pass.update_lights(&layouts[f as usize % LAYOUTS]).unwrap();
@@ -314,15 +386,21 @@ fn engine_program_matches_brute_force() {
         }
         sum / n as f64
     };
-    let mut weighted = DirectPass::new(&gpu, &set, &desc(DirectSelection::Weighted { k: 8 })).unwrap();
-    let mut uniform = DirectPass::new(&gpu, &set, &desc(DirectSelection::Uniform { k: 8 })).unwrap();
+    let mut weighted =
+        DirectPass::new(&gpu, &set, &desc(DirectSelection::Weighted { k: 8 })).unwrap();
+    let mut uniform =
+        DirectPass::new(&gpu, &set, &desc(DirectSelection::Uniform { k: 8 })).unwrap();
     let (ew, eu) = (rel_error(&frame_of(&mut weighted, 0)), rel_error(&frame_of(&mut uniform, 0)));
-    let in_range = frame_of(&mut uniform, 0).iter().map(|p| p[3] as f64).sum::<f64>() / shaded as f64;
+    let in_range =
+        frame_of(&mut uniform, 0).iter().map(|p| p[3] as f64).sum::<f64>() / shaded as f64;
     eprintln!(
         "one frame, k = 8, eps = {EPS}: mean relative error weighted {ew:.4}, uniform {eu:.4} (ratio {:.3}); {in_range:.1} lights in range per pixel",
         ew / eu
     );
-    assert!(ew <= 0.5 * eu, "weighted picks' error {ew:.4} is not at most half of uniform's {eu:.4}");
+    assert!(
+        ew <= 0.5 * eu,
+        "weighted picks' error {ew:.4} is not at most half of uniform's {eu:.4}"
+    );
 
     // The same weighted frames accumulated by the temporal pass (the
     // lights still, the depth buffer read in place): after 32 frames the
@@ -341,22 +419,40 @@ fn engine_program_matches_brute_force() {
     });
     let av = acc.create_view(&Default::default());
     let surface = SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float };
-    let mut temporal =
-        TemporalPass::new(&gpu, &TemporalPassDesc { surface, output_format: wgpu::TextureFormat::Rgba32Float, ..TemporalPassDesc::new(W, H) })
-            .unwrap();
+    let mut temporal = TemporalPass::new(
+        &gpu,
+        &TemporalPassDesc {
+            surface,
+            output_format: wgpu::TextureFormat::Rgba32Float,
+            ..TemporalPassDesc::new(W, H)
+        },
+    )
+    .unwrap();
     let view = TemporalView { view_projection: vp, eye };
     weighted.update_lights(&layouts[0]).unwrap();
     for f in 0..32 {
         let mut enc = device.create_command_encoder(&Default::default());
-        weighted.record(&mut enc, &inputs, &DirectSettings { culling, seed: 11, frame: f }).unwrap();
-        temporal.record(&mut enc, &TemporalInputs::new(inputs.gbuffer, &ov, &av), &view, &TemporalSettings::default()).unwrap();
+        weighted
+            .record(&mut enc, &inputs, &DirectSettings { culling, seed: 11, frame: f })
+            .unwrap();
+        temporal
+            .record(
+                &mut enc,
+                &TemporalInputs::new(inputs.gbuffer, &ov, &av),
+                &view,
+                &TemporalSettings::default(),
+            )
+            .unwrap();
         queue.submit([enc.finish()]);
     }
     let accumulated = read::<[f32; 4]>(&device, &queue, &acc, 16, wgpu::TextureAspect::All);
     let e32 = rel_error(&accumulated);
     // A 4σ alarm on heavy-tailed picks drops a little history now and then
     // (observed: mean length 31.94 of 32, 28 of 5,916 pixels below 28).
-    let lens: Vec<f32> = (0..accumulated.len()).filter(|&i| points[i].is_some()).map(|i| accumulated[i][3]).collect();
+    let lens: Vec<f32> = (0..accumulated.len())
+        .filter(|&i| points[i].is_some())
+        .map(|i| accumulated[i][3])
+        .collect();
     let mean_len = lens.iter().sum::<f32>() / lens.len() as f32;
     let short = lens.iter().filter(|&&l| l < 28.0).count();
     eprintln!(
@@ -364,7 +460,10 @@ fn engine_program_matches_brute_force() {
         e32 / ew
     );
     assert!(e32 <= 0.3 * ew, "accumulated error {e32:.4} against one frame's {ew:.4}");
-    assert!(mean_len >= 31.5 && short * 100 <= shaded, "false change alarms: mean history {mean_len:.2}, {short} of {shaded} pixels below 28 frames");
+    assert!(
+        mean_len >= 31.5 && short * 100 <= shaded,
+        "false change alarms: mean history {mean_len:.2}, {short} of {shaded} pixels below 28 frames"
+    );
 
     // 256 frames, the lights moved every frame.
     let (bw, bh) = (W / BLOCK, H / BLOCK);
@@ -400,8 +499,14 @@ fn engine_program_matches_brute_force() {
         for l in 0..LAYOUTS {
             let m = s1[l][b] / per;
             mean += m / LAYOUTS as f64;
-            var += (s2[l][b] / per - m * m).max(0.0) * per / (per - 1.0) / per / (LAYOUTS * LAYOUTS) as f64;
-            let t: f64 = (0..points.len()).filter(|&i| block_of(i) == b && points[i].is_some()).map(|i| truth[l][i].element_sum()).sum();
+            var += (s2[l][b] / per - m * m).max(0.0) * per
+                / (per - 1.0)
+                / per
+                / (LAYOUTS * LAYOUTS) as f64;
+            let t: f64 = (0..points.len())
+                .filter(|&i| block_of(i) == b && points[i].is_some())
+                .map(|i| truth[l][i].element_sum())
+                .sum();
             want += t / count[b] as f64 / LAYOUTS as f64;
         }
         let z = (mean - want).abs() / var.sqrt().max(1e-12 * want.abs());

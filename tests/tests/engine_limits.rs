@@ -28,8 +28,9 @@ use slc_scene::vpl::{VplMethod, VplSettings};
 use slc_tests::engine::{self, upload};
 use slc_tests::gpu;
 use slc_wgpu::passes::{
-    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, GBuffer, IndirectInputs, IndirectPass, IndirectPassDesc, IndirectSettings,
-    Surface, SurfaceDesc, TemporalInputs, TemporalPass, TemporalPassDesc, VplInput, VplSourceDesc,
+    Culling, DirectInputs, DirectPass, DirectPassDesc, DirectSettings, GBuffer, IndirectInputs,
+    IndirectPass, IndirectPassDesc, IndirectSettings, Surface, SurfaceDesc, TemporalInputs,
+    TemporalPass, TemporalPassDesc, VplInput, VplSourceDesc,
 };
 use slc_wgpu::{GpuContext, GpuError, LightSet, RangeParams};
 use std::sync::Arc;
@@ -44,7 +45,11 @@ fn moved_lights(n: usize, r: u32) -> Vec<Light> {
     let t = r as f32 * 0.01;
     (0..n)
         .map(|i| {
-            let p = Vec3::new((i % 8) as f32 * 0.1 + 0.05 * t.sin(), 0.4, (i / 8) as f32 * 0.1 + 0.05 * t.cos());
+            let p = Vec3::new(
+                (i % 8) as f32 * 0.1 + 0.05 * t.sin(),
+                0.4,
+                (i / 8) as f32 * 0.1 + 0.05 * t.cos(),
+            );
             Light::Point(PointLight::new(p, Vec3::splat(0.01 * (1.5 + t.sin()))).unwrap())
         })
         .collect()
@@ -57,9 +62,16 @@ type Constructor<'a> = Box<dyn Fn() -> Result<(), GpuError> + 'a>;
 /// where there is one) with `limits`, and a count of the validation errors
 /// it raises.
 fn device_with(limits: wgpu::Limits) -> (wgpu::Device, wgpu::Queue, Arc<AtomicUsize>) {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
-    let adapter = pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None)).expect("an adapter");
-    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor { required_limits: limits, ..Default::default() }))
+    let instance =
+        wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+    let adapter =
+        pollster::block_on(wgpu::util::initialize_adapter_from_env_or_default(&instance, None))
+            .expect("an adapter");
+    let (device, queue) =
+        pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            required_limits: limits,
+            ..Default::default()
+        }))
         .expect("a device with the asked limits");
     let errors = Arc::new(AtomicUsize::new(0));
     let seen = errors.clone();
@@ -78,16 +90,40 @@ fn downlevel_constructors_are_typed_errors() {
     let cpu = slc_cpu::vpl::VplContext::new(&scene, 16, 16, 8, None).unwrap();
     let pts = slc_scene::pt::PtScene::new(&scene, &[]).unwrap();
     let constructors: Vec<(&str, Constructor)> = vec![
-        ("DirectPass", Box::new(|| DirectPass::new(&gpu, &set, &DirectPassDesc::new(64, 64)).map(|_| ()))),
-        ("IndirectPass (RSM)", Box::new(|| IndirectPass::new(&gpu, &IndirectPassDesc::new(64, 64, VplSourceDesc::Rsm { size: 16 })).map(|_| ()))),
+        (
+            "DirectPass",
+            Box::new(|| DirectPass::new(&gpu, &set, &DirectPassDesc::new(64, 64)).map(|_| ())),
+        ),
+        (
+            "IndirectPass (RSM)",
+            Box::new(|| {
+                IndirectPass::new(
+                    &gpu,
+                    &IndirectPassDesc::new(64, 64, VplSourceDesc::Rsm { size: 16 }),
+                )
+                .map(|_| ())
+            }),
+        ),
         (
             "IndirectPass (buffer)",
-            Box::new(|| IndirectPass::new(&gpu, &IndirectPassDesc::new(64, 64, VplSourceDesc::Buffer { count: 256 })).map(|_| ())),
+            Box::new(|| {
+                IndirectPass::new(
+                    &gpu,
+                    &IndirectPassDesc::new(64, 64, VplSourceDesc::Buffer { count: 256 }),
+                )
+                .map(|_| ())
+            }),
         ),
         (
             "GpuVplFrame",
             Box::new(|| {
-                let desc = slc_wgpu::frame::FrameDesc { width: 32, height: 32, rsm_size: 16, shadow_size: 64, min_distance: None };
+                let desc = slc_wgpu::frame::FrameDesc {
+                    width: 32,
+                    height: 32,
+                    rsm_size: 16,
+                    shadow_size: 64,
+                    min_distance: None,
+                };
                 slc_wgpu::frame::GpuVplFrame::new(&gpu, &scene, &desc).map(|_| ())
             }),
         ),
@@ -95,7 +131,10 @@ fn downlevel_constructors_are_typed_errors() {
         (
             "IndirectPass (RSM, glossy)",
             Box::new(|| {
-                let desc = IndirectPassDesc { glossy: true, ..IndirectPassDesc::new(64, 64, VplSourceDesc::Rsm { size: 16 }) };
+                let desc = IndirectPassDesc {
+                    glossy: true,
+                    ..IndirectPassDesc::new(64, 64, VplSourceDesc::Rsm { size: 16 })
+                };
                 IndirectPass::new(&gpu, &desc).map(|_| ())
             }),
         ),
@@ -103,7 +142,8 @@ fn downlevel_constructors_are_typed_errors() {
             "GpuDirect",
             Box::new(|| {
                 let mut d = slc_wgpu::direct::GpuDirect::new(&gpu, &set)?;
-                d.shade(&[Vec3::ZERO], &[Vec3::Y], &RangeParams::new(0.01, 1.0).unwrap(), 1, 0).map(|_| ())
+                d.shade(&[Vec3::ZERO], &[Vec3::Y], &RangeParams::new(0.01, 1.0).unwrap(), 1, 0)
+                    .map(|_| ())
             }),
         ),
         ("GpuPt", Box::new(|| slc_wgpu::pt::GpuPt::new(&gpu, &pts, 16, 16).map(|_| ()))),
@@ -115,9 +155,12 @@ fn downlevel_constructors_are_typed_errors() {
         device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
         let raised = errors.load(Ordering::SeqCst) - before;
         match r {
-            Err(GpuError::Limit { name: limit, need, have }) if raised == 0 => eprintln!("{name}: typed error, needs {limit} >= {need}, has {have}"),
+            Err(GpuError::Limit { name: limit, need, have }) if raised == 0 => {
+                eprintln!("{name}: typed error, needs {limit} >= {need}, has {have}")
+            }
             Err(e) => failures.push(format!("{name}: {e} after {raised} validation errors")),
-            Ok(()) => failures.push(format!("{name}: built on a downlevel device ({raised} validation errors)")),
+            Ok(()) => failures
+                .push(format!("{name}: built on a downlevel device ({raised} validation errors)")),
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
@@ -130,8 +173,16 @@ fn ten_thousand_records_allocate_nothing() {
     let inputs = ctx.inputs();
     let gb = &inputs.gbuffer;
     let v4 = |v: Vec3, w: f32| [v.x, v.y, v.z, w];
-    let position = upload(gpu, "p", (w, h), &(0..gb.position.len()).map(|i| v4(gb.position[i], gb.valid(i) as u32 as f32)).collect::<Vec<_>>());
-    let normal = upload(gpu, "n", (w, h), &gb.normal.iter().map(|&n| v4(n, 0.0)).collect::<Vec<_>>());
+    let position = upload(
+        gpu,
+        "p",
+        (w, h),
+        &(0..gb.position.len())
+            .map(|i| v4(gb.position[i], gb.valid(i) as u32 as f32))
+            .collect::<Vec<_>>(),
+    );
+    let normal =
+        upload(gpu, "n", (w, h), &gb.normal.iter().map(|&n| v4(n, 0.0)).collect::<Vec<_>>());
     let vp = &inputs.vpls;
     let rsm = [
         upload(gpu, "rp", (8, 8), &vp.position.iter().map(|&p| v4(p, 1.0)).collect::<Vec<_>>()),
@@ -139,20 +190,33 @@ fn ten_thousand_records_allocate_nothing() {
         upload(gpu, "rf", (8, 8), &vp.flux.iter().map(|&f| v4(f, 0.0)).collect::<Vec<_>>()),
     ];
     let outs = [engine::output(gpu, (w, h)), engine::output(gpu, (w, h))];
-    let views: Vec<wgpu::TextureView> = outs.iter().map(|t| t.create_view(&Default::default())).collect();
+    let views: Vec<wgpu::TextureView> =
+        outs.iter().map(|t| t.create_view(&Default::default())).collect();
     let f32out = wgpu::TextureFormat::Rgba32Float;
     let mut direct = DirectPass::new(
         gpu,
         &point_lights(64),
-        &DirectPassDesc { surface: SurfaceDesc::Position, output_format: f32out, ..DirectPassDesc::new(w, h) },
+        &DirectPassDesc {
+            surface: SurfaceDesc::Position,
+            output_format: f32out,
+            ..DirectPassDesc::new(w, h)
+        },
     )
     .unwrap();
     let mut indirect = IndirectPass::new(
         gpu,
-        &IndirectPassDesc { surface: SurfaceDesc::Position, output_format: f32out, ..IndirectPassDesc::new(w, h, VplSourceDesc::Rsm { size: 8 }) },
+        &IndirectPassDesc {
+            surface: SurfaceDesc::Position,
+            output_format: f32out,
+            ..IndirectPassDesc::new(w, h, VplSourceDesc::Rsm { size: 8 })
+        },
     )
     .unwrap();
-    let gbuffer = GBuffer { surface: Surface::Position(&position), normal: &normal, eye: Scene::cornell_box().camera.position };
+    let gbuffer = GBuffer {
+        surface: Surface::Position(&position),
+        normal: &normal,
+        eye: Scene::cornell_box().camera.position,
+    };
     let culling = Culling::Stochastic(RangeParams::new(0.01, 1.0).unwrap());
     let mut run = |from: u32, to: u32| {
         for batch in (from..to).step_by(10) {
@@ -161,11 +225,28 @@ fn ten_thousand_records_allocate_nothing() {
                 let output = &views[(r / 2 % 2) as usize];
                 if r % 2 == 0 {
                     direct.update_lights(&moved_lights(64, r)).unwrap();
-                    direct.record(&mut enc, &DirectInputs::new(gbuffer, output), &DirectSettings { culling, seed: 1, frame: r }).unwrap();
+                    direct
+                        .record(
+                            &mut enc,
+                            &DirectInputs::new(gbuffer, output),
+                            &DirectSettings { culling, seed: 1, frame: r },
+                        )
+                        .unwrap();
                 } else {
                     let vpls = VplInput::Rsm { position: &rsm[0], normal: &rsm[1], flux: &rsm[2] };
-                    let st = IndirectSettings { culling, frame: r, min_distance: 0.01, ..IndirectSettings::default() };
-                    indirect.record(&mut enc, &IndirectInputs { gbuffer, vpls, output, materials: None }, &st).unwrap();
+                    let st = IndirectSettings {
+                        culling,
+                        frame: r,
+                        min_distance: 0.01,
+                        ..IndirectSettings::default()
+                    };
+                    indirect
+                        .record(
+                            &mut enc,
+                            &IndirectInputs { gbuffer, vpls, output, materials: None },
+                            &st,
+                        )
+                        .unwrap();
                 }
             }
             gpu.queue.submit([enc.finish()]);
@@ -192,7 +273,10 @@ fn ten_thousand_records_allocate_nothing() {
     };
     run(0, 100);
     let before = counters();
-    assert!(before[0].1 > 0 && before[3].1 > 0, "wgpu's counters read zero: build wgpu with its `counters` feature ({before:?})");
+    assert!(
+        before[0].1 > 0 && before[3].1 > 0,
+        "wgpu's counters read zero: build wgpu with its `counters` feature ({before:?})"
+    );
     run(100, 10_000);
     let after = counters();
     eprintln!("counters after 100 records: {before:?}\ncounters after 10,000 records: {after:?}");
@@ -222,14 +306,25 @@ fn gpu_vpl_shades_allocate_nothing(gpu: &GpuContext, scene: &Scene) {
     let mut shade_all = |frame: u32| {
         for s in &kinds {
             let out = gv.shade(&VplSettings { frame, ..*s }).unwrap();
-            assert!(out.irradiance.iter().any(|e| e.max_element() > 0.0), "{:?}: a black image", s.method);
+            assert!(
+                out.irradiance.iter().any(|e| e.max_element() > 0.0),
+                "{:?}: a black image",
+                s.method
+            );
         }
         gpu.wait().unwrap();
     };
     shade_all(0);
     let counters = || {
         let c = gpu.device.get_internal_counters().hal;
-        [c.buffers.read(), c.textures.read(), c.texture_views.read(), c.bind_groups.read(), c.compute_pipelines.read(), c.buffer_memory.read()]
+        [
+            c.buffers.read(),
+            c.textures.read(),
+            c.texture_views.read(),
+            c.bind_groups.read(),
+            c.compute_pipelines.read(),
+            c.buffer_memory.read(),
+        ]
     };
     let before = counters();
     for frame in 1..=50 {
@@ -261,9 +356,16 @@ fn glossy_pass_fits_webgpu_default_limits() {
     assert!(shaded.specular.iter().any(|s| s.abs().max_element() > 0.0), "no specular correction");
     // The frame's RSM writes 40 bytes per sample (WebGPU's default: 32): a
     // typed error, before any pipeline (it was a validation error).
-    let desc = slc_wgpu::frame::FrameDesc { width: 16, height: 16, rsm_size: 8, shadow_size: 64, min_distance: None };
+    let desc = slc_wgpu::frame::FrameDesc {
+        width: 16,
+        height: 16,
+        rsm_size: 8,
+        shadow_size: 64,
+        min_distance: None,
+    };
     match slc_wgpu::frame::GpuVplFrame::new(&gpu, &scene, &desc) {
-        Err(GpuError::Limit { name, need: 40, have: 32 }) if name.starts_with("max_color_attachment_bytes_per_sample") => {}
+        Err(GpuError::Limit { name, need: 40, have: 32 })
+            if name.starts_with("max_color_attachment_bytes_per_sample") => {}
         Err(e) => panic!("GpuVplFrame: {e}"),
         Ok(_) => panic!("GpuVplFrame built with 32 bytes per sample"),
     }
@@ -271,19 +373,37 @@ fn glossy_pass_fits_webgpu_default_limits() {
     // builds and records on the glossy G-buffer's irradiance.
     let gb = &ctx.inputs().gbuffer;
     let texels = |v: &dyn Fn(usize) -> [f32; 4]| (0..gb.position.len()).map(v).collect::<Vec<_>>();
-    let position =
-        upload(&gpu, "position", (16, 16), &texels(&|i| [gb.position[i].x, gb.position[i].y, gb.position[i].z, gb.valid(i) as u32 as f32]));
-    let normal = upload(&gpu, "normal", (16, 16), &texels(&|i| gb.normal[i].extend(0.0).to_array()));
-    let signal = upload(&gpu, "signal", (16, 16), &texels(&|i| shaded.irradiance[i].extend(0.0).to_array()));
+    let position = upload(
+        &gpu,
+        "position",
+        (16, 16),
+        &texels(&|i| {
+            [gb.position[i].x, gb.position[i].y, gb.position[i].z, gb.valid(i) as u32 as f32]
+        }),
+    );
+    let normal =
+        upload(&gpu, "normal", (16, 16), &texels(&|i| gb.normal[i].extend(0.0).to_array()));
+    let signal =
+        upload(&gpu, "signal", (16, 16), &texels(&|i| shaded.irradiance[i].extend(0.0).to_array()));
     let out = engine::output(&gpu, (16, 16));
     let out_view = out.create_view(&Default::default());
-    let desc = TemporalPassDesc { output_format: wgpu::TextureFormat::Rgba32Float, ..TemporalPassDesc::new(16, 16) };
+    let desc = TemporalPassDesc {
+        output_format: wgpu::TextureFormat::Rgba32Float,
+        ..TemporalPassDesc::new(16, 16)
+    };
     let mut temporal = TemporalPass::new(&gpu, &desc).unwrap();
     let gbuffer = GBuffer { surface: Surface::Position(&position), normal: &normal, eye: gb.eye };
     let view = slc_wgpu::TemporalView::of_camera(&scene.camera, 16, 16);
     let mut enc = device.create_command_encoder(&Default::default());
     for _ in 0..2 {
-        temporal.record(&mut enc, &TemporalInputs::new(gbuffer, &signal, &out_view), &view, &Default::default()).unwrap();
+        temporal
+            .record(
+                &mut enc,
+                &TemporalInputs::new(gbuffer, &signal, &out_view),
+                &view,
+                &Default::default(),
+            )
+            .unwrap();
     }
     gpu.queue.submit([enc.finish()]);
     device.poll(wgpu::PollType::wait_indefinitely()).unwrap();

@@ -40,26 +40,44 @@ fn on(frame: &GpuVplFrame, s: &VplSettings) -> IndirectSettings {
 /// see a surface in: (largest channel's relative image-mean difference,
 /// median pixel difference, share of
 /// pixels whose masks differ, share of pixels differing by > 10%).
-fn compare(gpu: &[Vec3], cpu: &[Vec3], cpu_valid: &dyn Fn(usize) -> bool, gpu_valid: &dyn Fn(usize) -> bool) -> (f64, f64, f64, f64) {
-    let (mut masks, mut rel, mut sum_g, mut sum_c) = (0usize, Vec::new(), glam::DVec3::ZERO, glam::DVec3::ZERO);
+fn compare(
+    gpu: &[Vec3],
+    cpu: &[Vec3],
+    cpu_valid: &dyn Fn(usize) -> bool,
+    gpu_valid: &dyn Fn(usize) -> bool,
+) -> (f64, f64, f64, f64) {
+    let (mut masks, mut rel, mut sum_g, mut sum_c) =
+        (0usize, Vec::new(), glam::DVec3::ZERO, glam::DVec3::ZERO);
     for i in 0..cpu.len() {
         sum_g += gpu[i].as_dvec3();
         sum_c += cpu[i].as_dvec3();
         if cpu_valid(i) != gpu_valid(i) {
             masks += 1;
         } else if cpu_valid(i) {
-            rel.push(((gpu[i] - cpu[i]).abs().element_sum() / cpu[i].element_sum().max(1e-6)) as f64);
+            rel.push(
+                ((gpu[i] - cpu[i]).abs().element_sum() / cpu[i].element_sum().max(1e-6)) as f64,
+            );
         }
     }
     rel.sort_by(f64::total_cmp);
     let far = rel.iter().filter(|&&r| r > 0.1).count() as f64 / rel.len().max(1) as f64;
     // The image means' difference: the worst channel's, relative.
-    (((sum_g - sum_c).abs() / sum_c).max_element(), rel[rel.len() / 2], masks as f64 / cpu.len() as f64, far)
+    (
+        ((sum_g - sum_c).abs() / sum_c).max_element(),
+        rel[rel.len() / 2],
+        masks as f64 / cpu.len() as f64,
+        far,
+    )
 }
 
 fn check_frame(scene: &Scene, what: &str) {
     let Some(gpu) = gpu() else { return };
-    let mut frame = GpuVplFrame::new(gpu, scene, &FrameDesc { width: W, height: H, rsm_size: RSM, shadow_size: 1024, min_distance: None }).unwrap();
+    let mut frame = GpuVplFrame::new(
+        gpu,
+        scene,
+        &FrameDesc { width: W, height: H, rsm_size: RSM, shadow_size: 1024, min_distance: None },
+    )
+    .unwrap();
     let ctx = VplContext::new(scene, W, H, RSM, None).unwrap();
     for (method, denoise) in [(VplMethod::None, false), (VplMethod::Slc, true)] {
         let s = settings(method, denoise);
@@ -67,7 +85,10 @@ fn check_frame(scene: &Scene, what: &str) {
         assert!(out.image.is_finite(), "{what}: non-finite pixels");
         let cpu = ctx.render(&s).unwrap();
         let inputs = frame.read_inputs().unwrap();
-        let (mean, median, masks, far) = compare(&out.image.data, &cpu.image.data, &|i| ctx.gbuffer().valid(i), &|i| inputs.gbuffer.valid(i));
+        let (mean, median, masks, far) =
+            compare(&out.image.data, &cpu.image.data, &|i| ctx.gbuffer().valid(i), &|i| {
+                inputs.gbuffer.valid(i)
+            });
         eprintln!(
             "{what} {}: mean {mean:.2e}, median pixel {median:.2e}, {:.2}% masks differ, {:.2}% pixels > 10% off",
             method.name(),
@@ -81,7 +102,12 @@ fn check_frame(scene: &Scene, what: &str) {
         assert!(mean <= mean_bound, "{what} {}: image mean differs by {mean:.3e}", method.name());
         assert!(median <= 0.01, "{what} {}: median pixel differs by {median:.3e}", method.name());
         assert!(masks <= 0.02, "{what}: {:.2}% of the pixels see another surface", 100.0 * masks);
-        assert!(far <= 0.03, "{what} {}: {:.2}% of the pixels differ by more than 10%", method.name(), 100.0 * far);
+        assert!(
+            far <= 0.03,
+            "{what} {}: {:.2}% of the pixels differ by more than 10%",
+            method.name(),
+            100.0 * far
+        );
     }
 }
 
@@ -108,7 +134,8 @@ fn glossy_frame_differs_from_matte_on_glossy_pixels() {
     for m in &mut matte.materials {
         *m = slc_scene::scene::Material::lambertian(m.albedo, m.emission);
     }
-    let desc = FrameDesc { width: W, height: H, rsm_size: RSM, shadow_size: 1024, min_distance: None };
+    let desc =
+        FrameDesc { width: W, height: H, rsm_size: RSM, shadow_size: 1024, min_distance: None };
     let s = settings(VplMethod::Slc, true);
     let render = |scene: &Scene| {
         let mut frame = GpuVplFrame::new(gpu, scene, &desc).unwrap();
@@ -118,7 +145,9 @@ fn glossy_frame_differs_from_matte_on_glossy_pixels() {
     let (a, inputs) = render(&glossy);
     let (b, _) = render(&matte);
     let gb = &inputs.gbuffer;
-    let rel = |i: usize| ((a.data[i] - b.data[i]).abs().element_sum() / b.data[i].element_sum().max(1e-6)) as f64;
+    let rel = |i: usize| {
+        ((a.data[i] - b.data[i]).abs().element_sum() / b.data[i].element_sum().max(1e-6)) as f64
+    };
     let (mut lambert_worst, mut glossy_sum, mut glossy_n) = (0.0f64, 0.0, 0);
     for i in (0..a.data.len()).filter(|&i| gb.valid(i)) {
         if gb.specular_at(i).is_some() {
@@ -133,13 +162,19 @@ fn glossy_frame_differs_from_matte_on_glossy_pixels() {
         "glossy vs matte GPU frame: {glossy_n} glossy pixels differ by {glossy_mean:.3} on average; Lambertian pixels at most {lambert_worst:.2e}"
     );
     assert!(glossy_n * 10 >= a.data.len(), "{glossy_n} glossy pixels");
-    assert!(glossy_mean > 0.1, "the glossy pixels look matte: mean relative difference {glossy_mean}");
+    assert!(
+        glossy_mean > 0.1,
+        "the glossy pixels look matte: mean relative difference {glossy_mean}"
+    );
     assert!(lambert_worst <= 1e-6, "Lambertian pixels changed: {lambert_worst}");
 }
 
 fn directional_frame_matches_the_cpu_frame() {
     let mut scene = Scene::cornell_box();
-    scene.primary = PrimaryLight::Directional { direction: Vec3::new(0.3, -1.0, -0.4).normalize(), irradiance: Vec3::splat(2.0) };
+    scene.primary = PrimaryLight::Directional {
+        direction: Vec3::new(0.3, -1.0, -0.4).normalize(),
+        irradiance: Vec3::splat(2.0),
+    };
     check_frame(&scene, "cornell directional");
 }
 
@@ -148,7 +183,10 @@ fn directional_frame_matches_the_cpu_frame() {
 /// map), on the GPU as on the CPU.
 fn glossy_directional_frame_matches_the_cpu_frame() {
     let mut scene = Scene::cornell_box_glossy();
-    scene.primary = PrimaryLight::Directional { direction: Vec3::new(0.3, -1.0, -0.4).normalize(), irradiance: Vec3::splat(2.0) };
+    scene.primary = PrimaryLight::Directional {
+        direction: Vec3::new(0.3, -1.0, -0.4).normalize(),
+        irradiance: Vec3::splat(2.0),
+    };
     check_frame(&scene, "cornell glossy directional");
 }
 
@@ -164,7 +202,12 @@ fn glossy_directional_frame_matches_the_cpu_frame() {
 fn gpu_vpls_match_cpu_vpls() {
     let Some(gpu) = gpu() else { return };
     let scene = Scene::cornell_box();
-    let mut frame = GpuVplFrame::new(gpu, &scene, &FrameDesc { width: W, height: H, rsm_size: 256, shadow_size: 256, min_distance: None }).unwrap();
+    let mut frame = GpuVplFrame::new(
+        gpu,
+        &scene,
+        &FrameDesc { width: W, height: H, rsm_size: 256, shadow_size: 256, min_distance: None },
+    )
+    .unwrap();
     frame.render(&on(&frame, &settings(VplMethod::Slc, false))).unwrap();
     let g = frame.read_inputs().unwrap().vpls;
     let ctx = VplContext::new(&scene, W, H, 256, None).unwrap();
@@ -186,7 +229,10 @@ fn gpu_vpls_match_cpu_vpls() {
             let df = ((g.flux[t] - c.flux[t]).abs() - c.flux[t] * 1e-3).max_element();
             if dp > 1e-3 || df > 0.0 {
                 off += 1;
-                eprintln!("texel {t}: CPU {} {}, GPU {} {}", c.position[t], c.flux[t], g.position[t], g.flux[t]);
+                eprintln!(
+                    "texel {t}: CPU {} {}, GPU {} {}",
+                    c.position[t], c.flux[t], g.position[t], g.flux[t]
+                );
             }
         }
     }
@@ -198,9 +244,12 @@ fn gpu_vpls_match_cpu_vpls() {
 /// them.
 fn every_stage_is_timed() {
     let Some(gpu) = gpu() else { return };
-    let mut frame =
-        GpuVplFrame::new(gpu, &Scene::cornell_box(), &FrameDesc { width: 64, height: 64, rsm_size: 16, shadow_size: 64, min_distance: None })
-            .unwrap();
+    let mut frame = GpuVplFrame::new(
+        gpu,
+        &Scene::cornell_box(),
+        &FrameDesc { width: 64, height: 64, rsm_size: 16, shadow_size: 64, min_distance: None },
+    )
+    .unwrap();
     let out = frame.render(&on(&frame, &settings(VplMethod::Slc, true))).unwrap();
     let names: Vec<&str> = out.stages.iter().map(|s| s.name).collect();
     assert_eq!(
@@ -229,8 +278,11 @@ fn every_stage_is_timed() {
 
 /// A 64×48 frame of the Cornell box for the moving tests: its descriptor,
 /// scene, frame, SLC settings and first image.
-fn small_box(gpu: &slc_wgpu::GpuContext) -> (FrameDesc, Scene, GpuVplFrame, IndirectSettings, slc_scene::image::Image) {
-    let desc = FrameDesc { width: 64, height: 48, rsm_size: 16, shadow_size: 128, min_distance: None };
+fn small_box(
+    gpu: &slc_wgpu::GpuContext,
+) -> (FrameDesc, Scene, GpuVplFrame, IndirectSettings, slc_scene::image::Image) {
+    let desc =
+        FrameDesc { width: 64, height: 48, rsm_size: 16, shadow_size: 128, min_distance: None };
     let scene = Scene::cornell_box();
     let mut frame = GpuVplFrame::new(gpu, &scene, &desc).unwrap();
     let s = on(&frame, &settings(VplMethod::Slc, true));
@@ -247,7 +299,9 @@ fn small_box(gpu: &slc_wgpu::GpuContext) -> (FrameDesc, Scene, GpuVplFrame, Indi
 fn moved_light_renders_as_a_new_frame() {
     let Some(gpu) = gpu() else { return };
     let (desc, mut scene, mut frame, s, before) = small_box(gpu);
-    let PrimaryLight::Spot { position, direction, intensity, inner, outer } = scene.primary else { unreachable!("a spot") };
+    let PrimaryLight::Spot { position, direction, intensity, inner, outer } = scene.primary else {
+        unreachable!("a spot")
+    };
     scene.primary = PrimaryLight::Spot {
         position: position + Vec3::new(0.15, -0.05, 0.1),
         direction: direction + Vec3::new(0.2, 0.0, 0.0),
@@ -259,7 +313,12 @@ fn moved_light_renders_as_a_new_frame() {
     let moved = frame.render(&s).unwrap().image;
     let fresh = GpuVplFrame::new(gpu, &scene, &desc).unwrap().render(&s).unwrap().image;
     assert_eq!(moved.data, fresh.data, "the moved light renders as a frame built with it");
-    let changed = moved.data.iter().zip(&before.data).filter(|(a, b)| (**a - **b).abs().max_element() > 1e-3).count();
+    let changed = moved
+        .data
+        .iter()
+        .zip(&before.data)
+        .filter(|(a, b)| (**a - **b).abs().max_element() > 1e-3)
+        .count();
     assert!(changed > moved.data.len() / 10, "only {changed} pixels changed");
     let bad = PrimaryLight::Spot { position, direction: Vec3::ZERO, intensity, inner, outer };
     assert!(frame.set_primary(&bad).is_err());
@@ -271,7 +330,10 @@ fn moved_light_renders_as_a_new_frame() {
     let software = gpu.adapter.device_type == wgpu::DeviceType::Cpu;
     assert_eq!(timed, gpu.timestamps && !software);
     match frame.stage_times().unwrap() {
-        Some(times) => assert!(times.len() == 11 && times.iter().all(|t| t.ms.is_finite() && t.ms >= 0.0), "{times:?}"),
+        Some(times) => assert!(
+            times.len() == 11 && times.iter().all(|t| t.ms.is_finite() && t.ms >= 0.0),
+            "{times:?}"
+        ),
         None => assert!(!timed),
     }
 }
@@ -283,7 +345,11 @@ fn moved_camera_renders_as_a_new_frame() {
     let Some(gpu) = gpu() else { return };
     let (desc, mut scene, mut frame, s, before) = small_box(gpu);
     let step = Vec3::X * (0.08 * scene.diagonal());
-    scene.camera = Camera { position: scene.camera.position + step, target: scene.camera.target + step * 0.5, ..scene.camera };
+    scene.camera = Camera {
+        position: scene.camera.position + step,
+        target: scene.camera.target + step * 0.5,
+        ..scene.camera
+    };
     frame.set_camera(&scene.camera).unwrap();
     let moved = frame.render(&s).unwrap().image;
     let fresh = GpuVplFrame::new(gpu, &scene, &desc).unwrap().render(&s).unwrap().image;
@@ -304,7 +370,8 @@ fn moved_camera_renders_as_a_new_frame() {
 /// a moved light (a reported change) drops the history.
 fn temporal_frame_is_the_mean_of_its_frames() {
     let Some(gpu) = gpu() else { return };
-    let desc = FrameDesc { width: 64, height: 48, rsm_size: 16, shadow_size: 128, min_distance: None };
+    let desc =
+        FrameDesc { width: 64, height: 48, rsm_size: 16, shadow_size: 128, min_distance: None };
     let scene = Scene::cornell_box_glossy();
     let mut frame = GpuVplFrame::new(gpu, &scene, &desc).unwrap();
     let n = 6;
@@ -327,22 +394,48 @@ fn temporal_frame_is_the_mean_of_its_frames() {
     // weight of that order: at a strong gradient (a shadow edge) that is
     // above 1e-4 relative: 2% of the pixels may (observed: 40 of 3,072),
     // none by more than 1% (observed: 1.1e-3).
-    let rel: Vec<f32> = last.data.iter().zip(&mean).map(|(a, m)| (*a - *m).abs().max_element() / (m.max_element() + 1e-6)).collect();
+    let rel: Vec<f32> = last
+        .data
+        .iter()
+        .zip(&mean)
+        .map(|(a, m)| (*a - *m).abs().max_element() / (m.max_element() + 1e-6))
+        .collect();
     let off = rel.iter().filter(|&&r| r > 1e-4).count();
     let worst = rel.iter().copied().fold(0.0, f32::max);
-    eprintln!("accumulated frame vs the mean of its frames: {off} pixels beyond 1e-4, worst {worst:.2e}");
-    assert!(off * 50 <= rel.len() && worst < 1e-2, "{off} pixels of the accumulated frame differ from the mean of the frames (worst {worst})");
-    let flicker = |v: &[slc_scene::image::Image]| v.windows(2).map(|w| w[1].rmse(&w[0])).sum::<f64>() / (v.len() - 1) as f64;
+    eprintln!(
+        "accumulated frame vs the mean of its frames: {off} pixels beyond 1e-4, worst {worst:.2e}"
+    );
+    assert!(
+        off * 50 <= rel.len() && worst < 1e-2,
+        "{off} pixels of the accumulated frame differ from the mean of the frames (worst {worst})"
+    );
+    let flicker = |v: &[slc_scene::image::Image]| {
+        v.windows(2).map(|w| w[1].rmse(&w[0])).sum::<f64>() / (v.len() - 1) as f64
+    };
     let (without, with) = (flicker(&single), flicker(&acc));
-    eprintln!("consecutive-frame RMSE over {n} frames: {without:.3e} without accumulation, {with:.3e} with");
+    eprintln!(
+        "consecutive-frame RMSE over {n} frames: {without:.3e} without accumulation, {with:.3e} with"
+    );
     assert!(with * 2.0 < without, "accumulation must steady the image");
     frame.set_primary(&scene.primary).unwrap();
     let changed = frame.render(&IndirectSettings { frame: n, ..base }).unwrap().image;
     frame.set_temporal(None).unwrap();
-    assert_eq!(frame.render(&IndirectSettings { frame: 0, ..base }).unwrap().image.data, single[0].data, "off again: the plain frame");
+    assert_eq!(
+        frame.render(&IndirectSettings { frame: 0, ..base }).unwrap().image.data,
+        single[0].data,
+        "off again: the plain frame"
+    );
     let plain = frame.render(&IndirectSettings { frame: n, ..base }).unwrap().image;
-    let worst = changed.data.iter().zip(&plain.data).map(|(a, b)| (*a - *b).abs().max_element() / (b.max_element() + 1e-6)).fold(0.0, f32::max);
-    assert!(worst < 1e-5, "after a reported change the frame is the plain frame (worst {worst:.1e})");
+    let worst = changed
+        .data
+        .iter()
+        .zip(&plain.data)
+        .map(|(a, b)| (*a - *b).abs().max_element() / (b.max_element() + 1e-6))
+        .fold(0.0, f32::max);
+    assert!(
+        worst < 1e-5,
+        "after a reported change the frame is the plain frame (worst {worst:.1e})"
+    );
     assert!(frame.set_temporal(Some(TemporalSettings { max_history: f32::NAN })).is_err());
 }
 
@@ -354,18 +447,54 @@ fn bad_frames_are_errors() {
         FrameDesc { width: 0, height: 8, rsm_size: 16, shadow_size: 64, min_distance: None },
         FrameDesc { width: 8, height: 8, rsm_size: 12, shadow_size: 64, min_distance: None },
         FrameDesc { width: 8, height: 8, rsm_size: 16, shadow_size: 0, min_distance: None },
-        FrameDesc { width: 8, height: 8, rsm_size: 16, shadow_size: 64, min_distance: Some(f32::NAN) },
+        FrameDesc {
+            width: 8,
+            height: 8,
+            rsm_size: 16,
+            shadow_size: 64,
+            min_distance: Some(f32::NAN),
+        },
     ] {
         assert!(GpuVplFrame::new(gpu, &scene, &desc).is_err(), "{desc:?}");
     }
-    let mut frame = GpuVplFrame::new(gpu, &scene, &FrameDesc { width: 16, height: 16, rsm_size: 16, shadow_size: 64, min_distance: None }).unwrap();
+    let mut frame = GpuVplFrame::new(
+        gpu,
+        &scene,
+        &FrameDesc { width: 16, height: 16, rsm_size: 16, shadow_size: 64, min_distance: None },
+    )
+    .unwrap();
     // The CPU frame's settings the frame has no counterpart for are
     // refused when converted; the pass's own are checked at the record.
-    assert!(indirect_settings(&settings(VplMethod::Reference, false), frame.min_distance()).is_err());
-    assert!(indirect_settings(&VplSettings { fixed_xi: Some(0.5), ..VplSettings::default() }, frame.min_distance()).is_err());
-    assert!(indirect_settings(&VplSettings { error_bound: -1.0, ..VplSettings::default() }, frame.min_distance()).is_err());
-    assert!(frame.render(&IndirectSettings { min_distance: f32::NAN, ..IndirectSettings::default() }).is_err());
-    assert!(frame.render(&IndirectSettings { culling: slc_wgpu::Culling::Clamped { range: -1.0 }, ..IndirectSettings::default() }).is_err());
+    assert!(
+        indirect_settings(&settings(VplMethod::Reference, false), frame.min_distance()).is_err()
+    );
+    assert!(
+        indirect_settings(
+            &VplSettings { fixed_xi: Some(0.5), ..VplSettings::default() },
+            frame.min_distance()
+        )
+        .is_err()
+    );
+    assert!(
+        indirect_settings(
+            &VplSettings { error_bound: -1.0, ..VplSettings::default() },
+            frame.min_distance()
+        )
+        .is_err()
+    );
+    assert!(
+        frame
+            .render(&IndirectSettings { min_distance: f32::NAN, ..IndirectSettings::default() })
+            .is_err()
+    );
+    assert!(
+        frame
+            .render(&IndirectSettings {
+                culling: slc_wgpu::Culling::Clamped { range: -1.0 },
+                ..IndirectSettings::default()
+            })
+            .is_err()
+    );
     assert!(frame.render(&IndirectSettings::default()).is_ok());
 }
 
@@ -378,19 +507,33 @@ fn bad_frames_are_errors() {
 fn timestamp_path_times_every_stage() {
     let Some(gpu) = gpu() else { return };
     if !gpu.timestamps {
-        panic!("the test adapter ({}) has no TIMESTAMP_QUERY: the timestamp path cannot be tested", gpu.describe());
+        panic!(
+            "the test adapter ({}) has no TIMESTAMP_QUERY: the timestamp path cannot be tested",
+            gpu.describe()
+        );
     }
-    let mut frame =
-        GpuVplFrame::new(gpu, &Scene::cornell_box(), &FrameDesc { width: 32, height: 32, rsm_size: 16, shadow_size: 64, min_distance: None })
-            .unwrap();
+    let mut frame = GpuVplFrame::new(
+        gpu,
+        &Scene::cornell_box(),
+        &FrameDesc { width: 32, height: 32, rsm_size: 16, shadow_size: 64, min_distance: None },
+    )
+    .unwrap();
     assert!(frame.use_timestamps(true));
     let s = on(&frame, &settings(VplMethod::Slc, true));
     let out = frame.render(&s).unwrap();
     assert_eq!(out.timing, Timing::GpuTimestamps);
     // Every stage but the temporal accumulation (off unless asked for).
     let all: Vec<Stage> = Stage::ALL.iter().copied().filter(|&st| st != Stage::Temporal).collect();
-    assert_eq!(out.stages.iter().map(|t| t.stage).collect::<Vec<_>>(), all, "every stage, in order");
-    assert!(out.stages.iter().all(|t| t.ms.is_finite() && t.ms >= 0.0 && t.name == t.stage.name()), "{:?}", out.stages);
+    assert_eq!(
+        out.stages.iter().map(|t| t.stage).collect::<Vec<_>>(),
+        all,
+        "every stage, in order"
+    );
+    assert!(
+        out.stages.iter().all(|t| t.ms.is_finite() && t.ms >= 0.0 && t.name == t.stage.name()),
+        "{:?}",
+        out.stages
+    );
     let mut enc = gpu.device.create_command_encoder(&Default::default());
     assert!(frame.record_timed(&mut enc, &s).unwrap());
     gpu.queue.submit([enc.finish()]);
@@ -399,22 +542,32 @@ fn timestamp_path_times_every_stage() {
     // Without denoise and near field: fewer stages, still in step.
     let s = IndirectSettings { denoise: false, near_radius: Some(0.0), ..s };
     let out = frame.render(&s).unwrap();
-    let want: Vec<Stage> = all.iter().copied().filter(|st| !matches!(st, Stage::Denoise | Stage::NearField)).collect();
+    let want: Vec<Stage> =
+        all.iter().copied().filter(|st| !matches!(st, Stage::Denoise | Stage::NearField)).collect();
     assert_eq!(out.stages.iter().map(|t| t.stage).collect::<Vec<_>>(), want);
     assert!(!frame.use_timestamps(false));
     assert_eq!(frame.stage_times().unwrap(), None);
     // The glossy frame with temporal accumulation denoises and accumulates
     // twice (irradiance, then the specular correction): every stage of
     // Stage::ALL, the denoise and the accumulation twice, each timed.
-    let desc = FrameDesc { width: 32, height: 32, rsm_size: 16, shadow_size: 64, min_distance: None };
+    let desc =
+        FrameDesc { width: 32, height: 32, rsm_size: 16, shadow_size: 64, min_distance: None };
     let mut frame = GpuVplFrame::new(gpu, &Scene::cornell_box_glossy(), &desc).unwrap();
     assert!(frame.use_timestamps(true));
     frame.set_temporal(Some(TemporalSettings::default())).unwrap();
     let s = on(&frame, &settings(VplMethod::Slc, true));
     let out = frame.render(&s).unwrap();
-    let want: Vec<Stage> =
-        Stage::ALL.iter().flat_map(|&st| if matches!(st, Stage::Denoise | Stage::Temporal) { vec![st, st] } else { vec![st] }).collect();
-    assert_eq!(out.stages.iter().map(|t| t.stage).collect::<Vec<_>>(), want, "every stage, the denoise and the accumulation twice");
+    let want: Vec<Stage> = Stage::ALL
+        .iter()
+        .flat_map(|&st| {
+            if matches!(st, Stage::Denoise | Stage::Temporal) { vec![st, st] } else { vec![st] }
+        })
+        .collect();
+    assert_eq!(
+        out.stages.iter().map(|t| t.stage).collect::<Vec<_>>(),
+        want,
+        "every stage, the denoise and the accumulation twice"
+    );
     let mut enc = gpu.device.create_command_encoder(&Default::default());
     assert!(frame.record_timed(&mut enc, &s).unwrap());
     gpu.queue.submit([enc.finish()]);

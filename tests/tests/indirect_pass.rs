@@ -23,8 +23,8 @@ use slc_tests::gpu;
 use slc_wgpu::GpuContext;
 use slc_wgpu::GpuError;
 use slc_wgpu::passes::{
-    GBuffer, GpuMaterial, GpuVplRecord, IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, Surface, SurfaceDesc, VplInput,
-    VplSourceDesc, vpl_buffer,
+    GBuffer, GpuMaterial, GpuVplRecord, IndirectInputs, IndirectMaterials, IndirectPass,
+    IndirectPassDesc, Surface, SurfaceDesc, VplInput, VplSourceDesc, vpl_buffer,
 };
 use slc_wgpu::vpl::GpuVpl;
 
@@ -61,19 +61,40 @@ impl Engine {
 
 /// A position-input pass for `vpls`.
 fn desc(vpls: VplSourceDesc) -> IndirectPassDesc {
-    IndirectPassDesc { surface: SurfaceDesc::Position, output_format: wgpu::TextureFormat::Rgba32Float, ..IndirectPassDesc::new(W, H, vpls) }
+    IndirectPassDesc {
+        surface: SurfaceDesc::Position,
+        output_format: wgpu::TextureFormat::Rgba32Float,
+        ..IndirectPassDesc::new(W, H, vpls)
+    }
 }
 
 fn engine(gpu: &GpuContext, ctx: &VplContext) -> Engine {
     let inputs = ctx.inputs();
     let gb = &inputs.gbuffer;
-    let pos: Vec<[f32; 4]> = (0..gb.position.len()).map(|i| v4(gb.position[i], if gb.valid(i) { 1.0 } else { 0.0 })).collect();
+    let pos: Vec<[f32; 4]> = (0..gb.position.len())
+        .map(|i| v4(gb.position[i], if gb.valid(i) { 1.0 } else { 0.0 }))
+        .collect();
     let nrm: Vec<[f32; 4]> = gb.normal.iter().map(|&n| v4(n, 0.0)).collect();
     let v = &inputs.vpls;
     let rsm = [
-        upload(gpu, "rsm position", (RSM, RSM), &v.position.iter().map(|&p| v4(p, 1.0)).collect::<Vec<_>>()),
-        upload(gpu, "rsm normal", (RSM, RSM), &v.normal.iter().map(|&n| v4(n, 0.0)).collect::<Vec<_>>()),
-        upload(gpu, "rsm flux", (RSM, RSM), &v.flux.iter().map(|&f| v4(f, 0.0)).collect::<Vec<_>>()),
+        upload(
+            gpu,
+            "rsm position",
+            (RSM, RSM),
+            &v.position.iter().map(|&p| v4(p, 1.0)).collect::<Vec<_>>(),
+        ),
+        upload(
+            gpu,
+            "rsm normal",
+            (RSM, RSM),
+            &v.normal.iter().map(|&n| v4(n, 0.0)).collect::<Vec<_>>(),
+        ),
+        upload(
+            gpu,
+            "rsm flux",
+            (RSM, RSM),
+            &v.flux.iter().map(|&f| v4(f, 0.0)).collect::<Vec<_>>(),
+        ),
     ];
     // Records ordered so that the buffer's subsets are the RSM's: record j
     // lands in slot (j mod P²)·per + j / P², texel t in interleave_slot(t).
@@ -83,7 +104,12 @@ fn engine(gpu: &GpuContext, ctx: &VplContext) -> Engine {
     for t in 0..v.len() {
         let slot = interleave_slot(t as u32 % RSM, t as u32 / RSM, RSM, PERIOD) as usize;
         let j = (slot % per) * subsets + slot / per;
-        records[j] = GpuVplRecord { position: v.position[t], normal: v.normal[t], flux: v.flux[t], ..GpuVplRecord::default() };
+        records[j] = GpuVplRecord {
+            position: v.position[t],
+            normal: v.normal[t],
+            flux: v.flux[t],
+            ..GpuVplRecord::default()
+        };
     }
     let output = engine::output(gpu, (W, H));
     Engine {
@@ -100,8 +126,15 @@ fn engine(gpu: &GpuContext, ctx: &VplContext) -> Engine {
 
 /// Records the pass into an encoder of ours, submits it and reads the
 /// output texture back.
-fn run(gpu: &GpuContext, pass: &mut IndirectPass, e: &Engine, vpls: VplInput, settings: &VplSettings) -> Vec<[f32; 4]> {
-    let inputs = IndirectInputs { gbuffer: e.gbuffer(), vpls, output: &e.output_view, materials: None };
+fn run(
+    gpu: &GpuContext,
+    pass: &mut IndirectPass,
+    e: &Engine,
+    vpls: VplInput,
+    settings: &VplSettings,
+) -> Vec<[f32; 4]> {
+    let inputs =
+        IndirectInputs { gbuffer: e.gbuffer(), vpls, output: &e.output_view, materials: None };
     let st = slc_wgpu::frame::indirect_settings(settings, e.min_distance).unwrap();
     let mut enc = gpu.device.create_command_encoder(&Default::default());
     pass.record(&mut enc, &inputs, &st).unwrap();
@@ -109,7 +142,15 @@ fn run(gpu: &GpuContext, pass: &mut IndirectPass, e: &Engine, vpls: VplInput, se
 }
 
 fn settings(method: VplMethod, denoise: bool) -> VplSettings {
-    VplSettings { method, denoise, error_bound: 0.004, range: 0.08, seed: 7, frame: 3, ..VplSettings::default() }
+    VplSettings {
+        method,
+        denoise,
+        error_bound: 0.004,
+        range: 0.08,
+        seed: 7,
+        frame: 3,
+        ..VplSettings::default()
+    }
 }
 
 /// Pixels whose kept count differs, and the worst relative irradiance
@@ -148,13 +189,19 @@ fn pass_matches_gpu_vpl_for_every_method() {
     // The split moves light between the fields: the kept counts (w) change.
     let mut without_split = Vec::new();
     for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
-        for (denoise, near_radius) in [false, true].into_iter().flat_map(|d| [(d, Some(0.0)), (d, None)]) {
+        for (denoise, near_radius) in
+            [false, true].into_iter().flat_map(|d| [(d, Some(0.0)), (d, None)])
+        {
             let s = VplSettings { near_radius, ..settings(method, denoise) };
             let got = run(gpu, &mut pass, &e, rsm, &s);
             if near_radius == Some(0.0) {
                 without_split = got.clone();
             } else {
-                assert!(got.iter().zip(&without_split).any(|(a, b)| a[3] != b[3]), "{}: the near field changed nothing", method.name());
+                assert!(
+                    got.iter().zip(&without_split).any(|(a, b)| a[3] != b[3]),
+                    "{}: the near field changed nothing",
+                    method.name()
+                );
             }
             let want = reference.shade(&s).unwrap();
             let (pixels, differs, worst) = compare(&got, &want, &ctx);
@@ -166,7 +213,11 @@ fn pass_matches_gpu_vpl_for_every_method() {
             if method != VplMethod::Slc {
                 assert_eq!(differs, 0, "{}: no ξ, so every decision must agree", method.name());
             }
-            assert!(differs as f64 <= 0.005 * pixels as f64, "{}: {differs} of {pixels} pixels keep different lights", method.name());
+            assert!(
+                differs as f64 <= 0.005 * pixels as f64,
+                "{}: {differs} of {pixels} pixels keep different lights",
+                method.name()
+            );
             // The denoise's weights (n·n')¹⁶ and (1 − δ²)² amplify the last
             // bits of the renormalised normals and of |p − eye| against the
             // ray distance (observed 1.7e-4); a differing decision spreads
@@ -176,7 +227,11 @@ fn pass_matches_gpu_vpl_for_every_method() {
                 (true, false) => 1e-3,
                 (true, true) => 1e-2,
             };
-            assert!(worst <= bound, "{} denoise={denoise}: worst relative difference {worst:.2e} > {bound}", method.name());
+            assert!(
+                worst <= bound,
+                "{} denoise={denoise}: worst relative difference {worst:.2e} > {bound}",
+                method.name()
+            );
         }
     }
     gpu.take_errors().unwrap();
@@ -189,7 +244,8 @@ fn vpl_buffer_source_gives_the_rsm_image() {
     let ctx = cpu_ctx();
     let e = engine(gpu, &ctx);
     let mut from_rsm = IndirectPass::new(gpu, &desc(VplSourceDesc::Rsm { size: RSM })).unwrap();
-    let mut from_buffer = IndirectPass::new(gpu, &desc(VplSourceDesc::Buffer { count: RSM * RSM })).unwrap();
+    let mut from_buffer =
+        IndirectPass::new(gpu, &desc(VplSourceDesc::Buffer { count: RSM * RSM })).unwrap();
     let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
     for method in [VplMethod::Clamp, VplMethod::None] {
         let s = settings(method, true);
@@ -210,27 +266,46 @@ fn wrong_inputs_are_typed_errors() {
     let desc = desc(VplSourceDesc::Rsm { size: RSM });
     let mut pass = IndirectPass::new(gpu, &desc).unwrap();
     let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
-    let tex = |size, format, usage| texture(gpu, "bad", size, format, usage).create_view(&Default::default());
+    let tex = |size, format, usage| {
+        texture(gpu, "bad", size, format, usage).create_view(&Default::default())
+    };
     let sampled = wgpu::TextureUsages::TEXTURE_BINDING;
     let bad_format = tex((W, H), wgpu::TextureFormat::Rgba8Unorm, sampled);
     let bad_size = tex((W / 2, H), fmt, sampled);
     let bad_usage = tex((W, H), fmt, wgpu::TextureUsages::COPY_DST);
     let small_rsm = tex((RSM / 2, RSM / 2), fmt, sampled);
     let out16 = tex((W, H), wgpu::TextureFormat::Rgba16Float, wgpu::TextureUsages::STORAGE_BINDING);
-    let ok = IndirectInputs { gbuffer: e.gbuffer(), vpls: rsm, output: &e.output_view, materials: None };
+    let ok =
+        IndirectInputs { gbuffer: e.gbuffer(), vpls: rsm, output: &e.output_view, materials: None };
     assert!(pass.check(&ok).is_ok());
     let with = |surface, normal| GBuffer { surface, normal, eye: e.eye };
     let cases: [(&str, IndirectInputs); 6] = [
-        ("G-buffer position", IndirectInputs { gbuffer: with(Surface::Position(&bad_format), &e.normal), ..ok }),
-        ("G-buffer normal", IndirectInputs { gbuffer: with(Surface::Position(&e.position), &bad_size), ..ok }),
-        ("G-buffer position", IndirectInputs { gbuffer: with(Surface::Position(&bad_usage), &e.normal), ..ok }),
+        (
+            "G-buffer position",
+            IndirectInputs { gbuffer: with(Surface::Position(&bad_format), &e.normal), ..ok },
+        ),
+        (
+            "G-buffer normal",
+            IndirectInputs { gbuffer: with(Surface::Position(&e.position), &bad_size), ..ok },
+        ),
+        (
+            "G-buffer position",
+            IndirectInputs { gbuffer: with(Surface::Position(&bad_usage), &e.normal), ..ok },
+        ),
         ("output", IndirectInputs { output: &out16, ..ok }),
-        ("RSM flux", IndirectInputs { vpls: VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &small_rsm }, ..ok }),
+        (
+            "RSM flux",
+            IndirectInputs {
+                vpls: VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &small_rsm },
+                ..ok
+            },
+        ),
         ("VPLs", IndirectInputs { vpls: VplInput::Buffer(&e.records), ..ok }),
     ];
     for (name, inputs) in cases {
         let mut enc = gpu.device.create_command_encoder(&Default::default());
-        let st = slc_wgpu::frame::indirect_settings(&settings(VplMethod::Slc, false), 0.01).unwrap();
+        let st =
+            slc_wgpu::frame::indirect_settings(&settings(VplMethod::Slc, false), 0.01).unwrap();
         match pass.record(&mut enc, &inputs, &st) {
             Err(GpuError::Binding { name: n, .. }) => assert_eq!(n, name),
             other => panic!("{name}: expected a binding error, got {:?}", other.err()),
@@ -247,21 +322,40 @@ fn wrong_inputs_are_typed_errors() {
         assert!(matches!(IndirectPass::new(gpu, &d), Err(GpuError::Setting(_))), "{d:?}");
     }
     assert!(matches!(
-        IndirectPass::new(gpu, &IndirectPassDesc { output_format: wgpu::TextureFormat::Rgba8Unorm, ..desc }),
+        IndirectPass::new(
+            gpu,
+            &IndirectPassDesc { output_format: wgpu::TextureFormat::Rgba8Unorm, ..desc }
+        ),
         Err(GpuError::Binding { name: "output_format", .. })
     ));
-    assert!(slc_wgpu::frame::indirect_settings(&VplSettings { error_bound: -1.0, ..settings(VplMethod::Slc, false) }, 0.01).is_err());
+    assert!(
+        slc_wgpu::frame::indirect_settings(
+            &VplSettings { error_bound: -1.0, ..settings(VplMethod::Slc, false) },
+            0.01
+        )
+        .is_err()
+    );
     let mut enc = gpu.device.create_command_encoder(&Default::default());
-    let st = slc_wgpu::passes::IndirectSettings { min_distance: f32::NAN, ..slc_wgpu::passes::IndirectSettings::default() };
+    let st = slc_wgpu::passes::IndirectSettings {
+        min_distance: f32::NAN,
+        ..slc_wgpu::passes::IndirectSettings::default()
+    };
     assert!(matches!(pass.record(&mut enc, &ok, &st), Err(GpuError::Setting(_))));
     // The material input: required by a glossy pass, refused by a
     // Lambertian one, its table and specular target checked.
     let out_usage = wgpu::TextureUsages::STORAGE_BINDING;
     let specular = tex((W, H), fmt, out_usage);
     let specular16 = tex((W, H), wgpu::TextureFormat::Rgba16Float, out_usage);
-    let table = slc_tests::engine::materials(gpu, &[GpuMaterial::new(Vec3::ONE, Vec3::ZERO, 1.0, 0.2, Vec3::ZERO, 0.0)]);
-    let uniform =
-        gpu.device.create_buffer(&wgpu::BufferDescriptor { label: None, size: 48, usage: wgpu::BufferUsages::UNIFORM, mapped_at_creation: false });
+    let table = slc_tests::engine::materials(
+        gpu,
+        &[GpuMaterial::new(Vec3::ONE, Vec3::ZERO, 1.0, 0.2, Vec3::ZERO, 0.0)],
+    );
+    let uniform = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: 48,
+        usage: wgpu::BufferUsages::UNIFORM,
+        mapped_at_creation: false,
+    });
     let mats = |table, specular| Some(IndirectMaterials { table, specular });
     let mut glossy = IndirectPass::new(gpu, &IndirectPassDesc { glossy: true, ..desc }).unwrap();
     let st = slc_wgpu::frame::indirect_settings(&settings(VplMethod::Slc, false), 0.01).unwrap();
@@ -300,18 +394,30 @@ fn glossy_pass_matches_gpu_vpl() {
     for i in 0..gb.position.len() {
         let s = gb.specular_at(i).unwrap_or_default();
         let m = GpuMaterial::new(gb.albedo[i], Vec3::ZERO, s.metallic, s.roughness, s.f0, s.f90);
-        let k = table.iter().position(|t| bytemuck::bytes_of(t) == bytemuck::bytes_of(&m)).unwrap_or_else(|| {
-            table.push(m);
-            table.len() - 1
-        });
+        let k = table
+            .iter()
+            .position(|t| bytemuck::bytes_of(t) == bytemuck::bytes_of(&m))
+            .unwrap_or_else(|| {
+                table.push(m);
+                table.len() - 1
+            });
         index.push(k as f32);
     }
-    e.normal = upload(gpu, "gb normal", (W, H), &gb.normal.iter().zip(&index).map(|(&n, &k)| v4(n, k)).collect::<Vec<_>>());
+    e.normal = upload(
+        gpu,
+        "gb normal",
+        (W, H),
+        &gb.normal.iter().zip(&index).map(|(&n, &k)| v4(n, k)).collect::<Vec<_>>(),
+    );
     let table = engine::materials(gpu, &table);
     let specular = engine::output(gpu, (W, H));
     let specular_view = specular.create_view(&Default::default());
     let mut reference = GpuVpl::new(gpu, ctx.inputs()).unwrap();
-    let mut pass = IndirectPass::new(gpu, &IndirectPassDesc { glossy: true, ..desc(VplSourceDesc::Rsm { size: RSM }) }).unwrap();
+    let mut pass = IndirectPass::new(
+        gpu,
+        &IndirectPassDesc { glossy: true, ..desc(VplSourceDesc::Rsm { size: RSM }) },
+    )
+    .unwrap();
     let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
     for method in [VplMethod::Slc, VplMethod::None] {
         for denoise in [false, true] {
@@ -323,9 +429,18 @@ fn glossy_pass_matches_gpu_vpl() {
                 materials: Some(IndirectMaterials { table: &table, specular: &specular_view }),
             };
             let mut enc = gpu.device.create_command_encoder(&Default::default());
-            pass.record(&mut enc, &inputs, &slc_wgpu::frame::indirect_settings(&s, e.min_distance).unwrap()).unwrap();
+            pass.record(
+                &mut enc,
+                &inputs,
+                &slc_wgpu::frame::indirect_settings(&s, e.min_distance).unwrap(),
+            )
+            .unwrap();
             let got = engine::submit_and_read(gpu, enc, &e.output);
-            let got_s = engine::submit_and_read(gpu, gpu.device.create_command_encoder(&Default::default()), &specular);
+            let got_s = engine::submit_and_read(
+                gpu,
+                gpu.device.create_command_encoder(&Default::default()),
+                &specular,
+            );
             let want = reference.shade(&s).unwrap();
             let (pixels, differs, worst) = compare(&got, &want, &ctx);
             let mut worst_s = 0.0f64;
@@ -336,23 +451,39 @@ fn glossy_pass_matches_gpu_vpl() {
                     continue;
                 }
                 let b = want.specular[i].as_dvec3();
-                let c_diff = gb.specular_at(i).map_or(glam::DVec3::ZERO, |l| l.diffuse_albedo(gb.albedo[i]).as_dvec3());
-                let scale = b.abs() + c_diff * (2.0 / std::f64::consts::PI) * want.irradiance[i].as_dvec3();
-                let d = ((a - b).abs() - glam::DVec3::splat(1e-9)).max(glam::DVec3::ZERO) / scale.max(glam::DVec3::splat(1e-30));
+                let c_diff = gb
+                    .specular_at(i)
+                    .map_or(glam::DVec3::ZERO, |l| l.diffuse_albedo(gb.albedo[i]).as_dvec3());
+                let scale =
+                    b.abs() + c_diff * (2.0 / std::f64::consts::PI) * want.irradiance[i].as_dvec3();
+                let d = ((a - b).abs() - glam::DVec3::splat(1e-9)).max(glam::DVec3::ZERO)
+                    / scale.max(glam::DVec3::splat(1e-30));
                 worst_s = worst_s.max(d.max_element());
             }
             eprintln!(
                 "glossy {} denoise={denoise}: {pixels} pixels, {differs} keep decisions differ, worst relative irradiance {worst:.2e}, specular {worst_s:.2e}",
                 method.name()
             );
-            assert!(got_s.iter().any(|p| p[0].abs() > 0.0), "{}: S is zero everywhere", method.name());
+            assert!(
+                got_s.iter().any(|p| p[0].abs() > 0.0),
+                "{}: S is zero everywhere",
+                method.name()
+            );
             let bound = match (denoise, differs > 0) {
                 (false, _) => 1e-4,
                 (true, false) => 1e-3,
                 (true, true) => 1e-2,
             };
-            assert!(differs as f64 <= 0.005 * pixels as f64, "{}: {differs} of {pixels} pixels keep different lights", method.name());
-            assert!(worst <= bound && worst_s <= bound, "glossy {} denoise={denoise}: {worst:.2e}, {worst_s:.2e} > {bound}", method.name());
+            assert!(
+                differs as f64 <= 0.005 * pixels as f64,
+                "{}: {differs} of {pixels} pixels keep different lights",
+                method.name()
+            );
+            assert!(
+                worst <= bound && worst_s <= bound,
+                "glossy {} denoise={denoise}: {worst:.2e}, {worst_s:.2e} > {bound}",
+                method.name()
+            );
         }
     }
     gpu.take_errors().unwrap();
@@ -374,8 +505,13 @@ struct Out { @builtin(frag_depth) depth: f32 }
     return Out(textureLoad(depth_in, vec2i(p.xy), 0).x);
 }
 "#;
-    let src =
-        texture(gpu, "depth values", (W, H), wgpu::TextureFormat::R32Float, wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST);
+    let src = texture(
+        gpu,
+        "depth values",
+        (W, H),
+        wgpu::TextureFormat::R32Float,
+        wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+    );
     gpu.queue.write_texture(
         src.as_image_copy(),
         bytemuck::cast_slice(depth),
@@ -385,8 +521,10 @@ struct Out { @builtin(frag_depth) depth: f32 }
     let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
     let dst = texture(gpu, "depth buffer", (W, H), wgpu::TextureFormat::Depth32Float, usage);
     let d = &gpu.device;
-    let module =
-        d.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some("depth writer"), source: wgpu::ShaderSource::Wgsl(SHADER.into()) });
+    let module = d.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("depth writer"),
+        source: wgpu::ShaderSource::Wgsl(SHADER.into()),
+    });
     let layout = d.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: None,
         entries: &[wgpu::BindGroupLayoutEntry {
@@ -404,15 +542,31 @@ struct Out { @builtin(frag_depth) depth: f32 }
     let group = d.create_bind_group(&wgpu::BindGroupDescriptor {
         label: None,
         layout: &layout,
-        entries: &[wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&src_view) }],
+        entries: &[wgpu::BindGroupEntry {
+            binding: 0,
+            resource: wgpu::BindingResource::TextureView(&src_view),
+        }],
     });
-    let pipeline_layout =
-        d.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor { label: None, bind_group_layouts: &[Some(&layout)], immediate_size: 0 });
+    let pipeline_layout = d.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: None,
+        bind_group_layouts: &[Some(&layout)],
+        immediate_size: 0,
+    });
     let pipeline = d.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some("depth writer"),
         layout: Some(&pipeline_layout),
-        vertex: wgpu::VertexState { module: &module, entry_point: Some("vs"), compilation_options: Default::default(), buffers: &[] },
-        fragment: Some(wgpu::FragmentState { module: &module, entry_point: Some("fs"), compilation_options: Default::default(), targets: &[] }),
+        vertex: wgpu::VertexState {
+            module: &module,
+            entry_point: Some("vs"),
+            compilation_options: Default::default(),
+            buffers: &[],
+        },
+        fragment: Some(wgpu::FragmentState {
+            module: &module,
+            entry_point: Some("fs"),
+            compilation_options: Default::default(),
+            targets: &[],
+        }),
         primitive: wgpu::PrimitiveState::default(),
         depth_stencil: Some(wgpu::DepthStencilState {
             format: wgpu::TextureFormat::Depth32Float,
@@ -433,7 +587,10 @@ struct Out { @builtin(frag_depth) depth: f32 }
             color_attachments: &[],
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                 view: &view,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(0.5), store: wgpu::StoreOp::Store }),
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(0.5),
+                    store: wgpu::StoreOp::Store,
+                }),
                 stencil_ops: None,
             }),
             timestamp_writes: None,
@@ -467,9 +624,13 @@ fn depth_input_matches_positions() {
     let view = look_to_mat4(cam.position, forward, up);
     let (fov, aspect) = (cam.vfov_deg.to_radians(), W as f32 / H as f32);
     // Reversed Z: near and far swapped, so near maps to 1 and far to 0.
-    let (vp, vp_reversed) = (proj::directx::perspective(fov, aspect, 0.1, 10.0) * view, proj::directx::perspective(fov, aspect, 10.0, 0.1) * view);
+    let (vp, vp_reversed) = (
+        proj::directx::perspective(fov, aspect, 0.1, 10.0) * view,
+        proj::directx::perspective(fov, aspect, 10.0, 0.1) * view,
+    );
     let n = (W * H) as usize;
-    let (mut forward_depth, mut reversed_depth, mut points) = (vec![1.0f32; n], vec![0.0f32; n], vec![[0.0f32; 4]; n]);
+    let (mut forward_depth, mut reversed_depth, mut points) =
+        (vec![1.0f32; n], vec![0.0f32; n], vec![[0.0f32; 4]; n]);
     let inv = vp.inverse();
     for i in 0..n {
         if !gb.valid(i) {
@@ -480,16 +641,30 @@ fn depth_input_matches_positions() {
         forward_depth[i] = c.z / c.w;
         reversed_depth[i] = r.z / r.w;
         let (x, y) = ((i as u32 % W) as f32, (i as u32 / W) as f32);
-        let q =
-            slc_shared_shaders::engine::unproject_pixel(inv.x_axis, inv.y_axis, inv.z_axis, inv.w_axis, x, y, W as f32, H as f32, forward_depth[i]);
+        let q = slc_shared_shaders::engine::unproject_pixel(
+            inv.x_axis,
+            inv.y_axis,
+            inv.z_axis,
+            inv.w_axis,
+            x,
+            y,
+            W as f32,
+            H as f32,
+            forward_depth[i],
+        );
         points[i] = q.to_array();
     }
     // Surfaces 1-2 m away: near 1 in standard depth, near 0 reversed.
-    assert!((0..n).all(|i| !gb.valid(i) || (forward_depth[i] > 0.5 && reversed_depth[i] < 0.5)), "reversed Z must map near to 1");
+    assert!(
+        (0..n).all(|i| !gb.valid(i) || (forward_depth[i] > 0.5 && reversed_depth[i] < 0.5)),
+        "reversed Z must map near to 1"
+    );
     let positions = upload(gpu, "unprojected", (W, H), &points);
-    let (forward_view, reversed_view) = (depth32(gpu, &forward_depth), depth32(gpu, &reversed_depth));
+    let (forward_view, reversed_view) =
+        (depth32(gpu, &forward_depth), depth32(gpu, &reversed_depth));
     let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
-    let st = slc_wgpu::frame::indirect_settings(&settings(VplMethod::Slc, true), e.min_distance).unwrap();
+    let st = slc_wgpu::frame::indirect_settings(&settings(VplMethod::Slc, true), e.min_distance)
+        .unwrap();
     let image = |surface: SurfaceDesc, gbuffer: Surface| {
         let d = IndirectPassDesc { surface, ..desc(VplSourceDesc::Rsm { size: RSM }) };
         let mut pass = IndirectPass::new(gpu, &d).unwrap();
@@ -507,20 +682,31 @@ fn depth_input_matches_positions() {
     let depth = SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float };
     let by_positions = image(SurfaceDesc::Position, Surface::Position(&positions));
     let by_depth = image(depth, Surface::Depth { depth: &forward_view, inv_view_proj: inv });
-    let by_reversed = image(depth, Surface::Depth { depth: &reversed_view, inv_view_proj: vp_reversed.inverse() });
+    let by_reversed = image(
+        depth,
+        Surface::Depth { depth: &reversed_view, inv_view_proj: vp_reversed.inverse() },
+    );
     for (what, got) in [("standard depth", &by_depth), ("reversed Z", &by_reversed)] {
         let (mut valid, mut far, mut worst) = (0, 0, 0.0f32);
         for i in 0..n {
             let (a, b) = (got[i], by_positions[i]);
-            assert_eq!(a == [0.0; 4], b == [0.0; 4], "{what}, pixel {i}: surface masks differ ({a:?} vs {b:?})");
+            assert_eq!(
+                a == [0.0; 4],
+                b == [0.0; 4],
+                "{what}, pixel {i}: surface masks differ ({a:?} vs {b:?})"
+            );
             if gb.valid(i) {
                 valid += 1;
-                let rel = (0..3).map(|c| (a[c] - b[c]).abs() / b[c].abs().max(1e-6)).fold(0.0f32, f32::max);
+                let rel = (0..3)
+                    .map(|c| (a[c] - b[c]).abs() / b[c].abs().max(1e-6))
+                    .fold(0.0f32, f32::max);
                 worst = worst.max(rel);
                 far += (rel > 1e-3 || a[3] != b[3]) as usize;
             }
         }
-        eprintln!("{what} vs positions: {far} of {valid} pixels differ by more than 1e-3 or in their count; worst relative {worst:.2e}");
+        eprintln!(
+            "{what} vs positions: {far} of {valid} pixels differ by more than 1e-3 or in their count; worst relative {worst:.2e}"
+        );
         assert!(valid > n / 2);
         assert!(far * 100 <= valid, "{what}: {far} of {valid} pixels differ");
     }
@@ -537,8 +723,13 @@ fn interleaving_averages_to_the_reference_over_frames() {
     let ctx = cpu_ctx();
     let e = engine(gpu, &ctx);
     let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
-    let mut reference_pass = IndirectPass::new(gpu, &IndirectPassDesc { interleaved: false, ..desc(VplSourceDesc::Rsm { size: RSM }) }).unwrap();
-    let inputs = IndirectInputs { gbuffer: e.gbuffer(), vpls: rsm, output: &e.output_view, materials: None };
+    let mut reference_pass = IndirectPass::new(
+        gpu,
+        &IndirectPassDesc { interleaved: false, ..desc(VplSourceDesc::Rsm { size: RSM }) },
+    )
+    .unwrap();
+    let inputs =
+        IndirectInputs { gbuffer: e.gbuffer(), vpls: rsm, output: &e.output_view, materials: None };
     let unculled = slc_wgpu::passes::IndirectSettings {
         culling: slc_wgpu::Culling::None,
         denoise: false,
@@ -554,7 +745,13 @@ fn interleaving_averages_to_the_reference_over_frames() {
     let mut mean = vec![[0.0f64; 3]; reference.len()];
     let mut first = Vec::new();
     for frame in 0..frames {
-        let img = run(gpu, &mut pass, &e, rsm, &VplSettings { frame, ..settings(VplMethod::None, false) });
+        let img = run(
+            gpu,
+            &mut pass,
+            &e,
+            rsm,
+            &VplSettings { frame, ..settings(VplMethod::None, false) },
+        );
         for (m, p) in mean.iter_mut().zip(&img) {
             for c in 0..3 {
                 m[c] += p[c] as f64 / frames as f64;
@@ -568,13 +765,29 @@ fn interleaving_averages_to_the_reference_over_frames() {
     let worst = |img: &dyn Fn(usize) -> [f64; 3]| {
         (0..reference.len())
             .filter(|&i| gb.valid(i))
-            .map(|i| (0..3).map(|c| (img(i)[c] - reference[i][c] as f64).abs() / (reference[i][c] as f64).abs().max(1e-9)).fold(0.0, f64::max))
+            .map(|i| {
+                (0..3)
+                    .map(|c| {
+                        (img(i)[c] - reference[i][c] as f64).abs()
+                            / (reference[i][c] as f64).abs().max(1e-9)
+                    })
+                    .fold(0.0, f64::max)
+            })
             .fold(0.0, f64::max)
     };
-    let (of_mean, of_first) = (worst(&|i| mean[i]), worst(&|i| [0, 1, 2].map(|c| first[i][c] as f64)));
-    eprintln!("mean of {frames} frames against the reference: worst relative {of_mean:.2e}; frame 0 alone {of_first:.2e}");
-    assert!(of_mean <= 1e-4, "the mean over {frames} frames differs from the reference by {of_mean:.2e}");
-    assert!(of_first > 1e-2, "frame 0 alone must differ (it shades one subset per pixel): {of_first:.2e}");
+    let (of_mean, of_first) =
+        (worst(&|i| mean[i]), worst(&|i| [0, 1, 2].map(|c| first[i][c] as f64)));
+    eprintln!(
+        "mean of {frames} frames against the reference: worst relative {of_mean:.2e}; frame 0 alone {of_first:.2e}"
+    );
+    assert!(
+        of_mean <= 1e-4,
+        "the mean over {frames} frames differs from the reference by {of_mean:.2e}"
+    );
+    assert!(
+        of_first > 1e-2,
+        "frame 0 alone must differ (it shades one subset per pixel): {of_first:.2e}"
+    );
     gpu.take_errors().unwrap();
 }
 

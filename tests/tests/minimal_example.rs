@@ -19,8 +19,13 @@ fn minimal_example_matches_the_cpu() {
     let c = minimal::cpu();
     let (worst, counts) = minimal::compare(&g, &c);
     let kept = c.iter().map(|p| p[3]).sum::<f32>() / c.len() as f32;
-    eprintln!("minimal example: {kept:.1} lights kept per point, worst relative difference {worst:.2e}, {counts} kept counts differ");
-    assert!(kept > 5.0 && kept < minimal::LIGHTS as f32 * 0.9, "the roulette must keep some lights and cull others: {kept}");
+    eprintln!(
+        "minimal example: {kept:.1} lights kept per point, worst relative difference {worst:.2e}, {counts} kept counts differ"
+    );
+    assert!(
+        kept > 5.0 && kept < minimal::LIGHTS as f32 * 0.9,
+        "the roulette must keep some lights and cull others: {kept}"
+    );
     assert!(counts <= 4, "{counts} points keep other lights than the CPU");
     assert!(worst <= 1e-4, "irradiance differs by {worst:.2e}");
 }

@@ -37,13 +37,41 @@ const H: u32 = 16;
 /// Diffuse, or with [`Scene::cornell_box_glossy`]'s GGX floor, blocks and
 /// ball.
 fn scene(extra_intensity: f32, glossy: bool) -> (Scene, Vec<Light>) {
-    let s = if glossy { Scene::cornell_box_glossy().split_light(4) } else { Scene::cornell_box_split_light(4) };
+    let s = if glossy {
+        Scene::cornell_box_glossy().split_light(4)
+    } else {
+        Scene::cornell_box_split_light(4)
+    };
     let mut lights = vec![
-        Light::Point(PointLight::new(Vec3::new(0.15, 0.45, 0.2), Vec3::splat(0.01 * extra_intensity)).unwrap()),
-        Light::Spot(SpotLight::new(Vec3::new(0.4, 0.5, 0.4), Vec3::NEG_Y, Vec3::new(0.05, 0.03, 0.01) * extra_intensity, 0.3, 0.6).unwrap()),
+        Light::Point(
+            PointLight::new(Vec3::new(0.15, 0.45, 0.2), Vec3::splat(0.01 * extra_intensity))
+                .unwrap(),
+        ),
+        Light::Spot(
+            SpotLight::new(
+                Vec3::new(0.4, 0.5, 0.4),
+                Vec3::NEG_Y,
+                Vec3::new(0.05, 0.03, 0.01) * extra_intensity,
+                0.3,
+                0.6,
+            )
+            .unwrap(),
+        ),
     ];
-    let profile = Arc::new(IesProfile::parse_bytes(&std::fs::read(shared_data("ies/indoor-60w-120deg.ies")).unwrap()).unwrap());
-    lights.push(Light::Ies(IesLight::new(Vec3::new(0.3, 0.54, 0.15), Vec3::NEG_Y, Vec3::X, Vec3::splat(1e-4 * extra_intensity), profile).unwrap()));
+    let profile = Arc::new(
+        IesProfile::parse_bytes(&std::fs::read(shared_data("ies/indoor-60w-120deg.ies")).unwrap())
+            .unwrap(),
+    );
+    lights.push(Light::Ies(
+        IesLight::new(
+            Vec3::new(0.3, 0.54, 0.15),
+            Vec3::NEG_Y,
+            Vec3::X,
+            Vec3::splat(1e-4 * extra_intensity),
+            profile,
+        )
+        .unwrap(),
+    ));
     (s, lights)
 }
 
@@ -57,8 +85,16 @@ fn passes(mut one: impl FnMut(&mut PtRender), n: u32, (w, h): (u32, u32)) -> Vec
         .map(|_| {
             one(&mut acc);
             let img = acc.image();
-            assert!(img.data.iter().all(|v| v.is_finite() && v.min_element() >= 0.0), "a pixel is NaN, infinite or negative");
-            let total: Vec<f64> = img.data.iter().flat_map(|v| v.to_array()).map(|c| c as f64 * acc.passes as f64).collect();
+            assert!(
+                img.data.iter().all(|v| v.is_finite() && v.min_element() >= 0.0),
+                "a pixel is NaN, infinite or negative"
+            );
+            let total: Vec<f64> = img
+                .data
+                .iter()
+                .flat_map(|v| v.to_array())
+                .map(|c| c as f64 * acc.passes as f64)
+                .collect();
             let pass: Vec<f64> = total.iter().zip(&prev).map(|(t, p)| t - p).collect();
             prev = total;
             pass
@@ -80,10 +116,13 @@ fn stats(p: &[Vec<f64>]) -> Stats {
     let px = p[0].len() / 3;
     let grey = |x: &[f64], i: usize| (x[3 * i] + x[3 * i + 1] + x[3 * i + 2]) / 3.0;
     let mean: Vec<f64> = (0..px).map(|i| p.iter().map(|x| grey(x, i)).sum::<f64>() / n).collect();
-    let var_of_mean = (0..px).map(|i| p.iter().map(|x| (grey(x, i) - mean[i]).powi(2)).sum::<f64>() / (n - 1.0) / n).collect();
+    let var_of_mean = (0..px)
+        .map(|i| p.iter().map(|x| (grey(x, i) - mean[i]).powi(2)).sum::<f64>() / (n - 1.0) / n)
+        .collect();
     let (mut image_mean, mut image_sigma) = ([0.0; 3], [0.0; 3]);
     for c in 0..3 {
-        let means: Vec<f64> = p.iter().map(|x| x.iter().skip(c).step_by(3).sum::<f64>() / px as f64).collect();
+        let means: Vec<f64> =
+            p.iter().map(|x| x.iter().skip(c).step_by(3).sum::<f64>() / px as f64).collect();
         image_mean[c] = means.iter().sum::<f64>() / n;
         let var = means.iter().map(|m| (m - image_mean[c]).powi(2)).sum::<f64>() / (n - 1.0);
         image_sigma[c] = (var / n).sqrt();
@@ -96,8 +135,14 @@ fn assert_means_agree(what: &str, a: &Stats, b: &Stats) {
     for c in 0..3 {
         let (ma, mb) = (a.image_mean[c], b.image_mean[c]);
         let bound = 5.0 * (a.image_sigma[c].powi(2) + b.image_sigma[c].powi(2)).sqrt();
-        eprintln!("{what} channel {c}: image means {ma:.5} vs {mb:.5}, |Δ| = {:.5}, 5σ = {bound:.5}", (ma - mb).abs());
-        assert!((ma - mb).abs() <= bound, "{what} channel {c}: image means {ma} vs {mb} (5σ = {bound})");
+        eprintln!(
+            "{what} channel {c}: image means {ma:.5} vs {mb:.5}, |Δ| = {:.5}, 5σ = {bound:.5}",
+            (ma - mb).abs()
+        );
+        assert!(
+            (ma - mb).abs() <= bound,
+            "{what} channel {c}: image means {ma} vs {mb} (5σ = {bound})"
+        );
     }
 }
 
@@ -107,13 +152,25 @@ fn all_finite(p: &[Vec<f64>]) -> bool {
 
 /// Per-pass statistics of `method` on the GPU and on the CPU (same seed),
 /// and of the CPU's unculled `uniform` estimator (its own seed).
-fn run(method: PtMethod, eps: f32, intensity: f32, glossy: bool, n: u32) -> Option<(Stats, Stats, Stats)> {
+fn run(
+    method: PtMethod,
+    eps: f32,
+    intensity: f32,
+    glossy: bool,
+    n: u32,
+) -> Option<(Stats, Stats, Stats)> {
     let (s, lights) = scene(intensity, glossy);
     run_on(&PtScene::new(&s, &lights).unwrap(), method, eps, n, (W, H))
 }
 
 /// [`run`] on a prepared scene at `size` pixels.
-fn run_on(scene: &PtScene, method: PtMethod, eps: f32, n: u32, size: (u32, u32)) -> Option<(Stats, Stats, Stats)> {
+fn run_on(
+    scene: &PtScene,
+    method: PtMethod,
+    eps: f32,
+    n: u32,
+    size: (u32, u32),
+) -> Option<(Stats, Stats, Stats)> {
     let g = gpu()?;
     let mut gpt = GpuPt::new(g, scene, size.0, size.1).unwrap();
     let mut pts = CpuPathTracer::new(scene);
@@ -122,7 +179,11 @@ fn run_on(scene: &PtScene, method: PtMethod, eps: f32, n: u32, size: (u32, u32))
     let cp = passes(|acc| pts.render(acc, &set, 1).unwrap(), n, size);
     let uniform = PtSettings { method: PtMethod::Uniform, seed: 77, ..set };
     let up = passes(|acc| pts.render(acc, &uniform, 1).unwrap(), n, size);
-    assert!(all_finite(&gp) && all_finite(&cp), "{} at ε = {eps}: a pass is NaN or infinite", method.name());
+    assert!(
+        all_finite(&gp) && all_finite(&cp),
+        "{} at ε = {eps}: a pass is NaN or infinite",
+        method.name()
+    );
     Some((stats(&gp), stats(&cp), stats(&up)))
 }
 
@@ -148,10 +209,18 @@ fn matches_cpu_and_unculled(glossy: bool) {
         assert_means_agree(&format!("GPU vs CPU {name}"), &g, &c);
         assert_means_agree(&format!("GPU {name} vs CPU uniform (unculled)"), &g, &u);
         let px = g.mean.len() as f64;
-        let rmse = (g.mean.iter().zip(&c.mean).map(|(a, b)| (a - b).powi(2)).sum::<f64>() / px).sqrt();
-        let predicted = (g.var_of_mean.iter().zip(&c.var_of_mean).map(|(a, b)| a + b).sum::<f64>() / px).sqrt();
-        eprintln!("{name}: RMSE(CPU, GPU) = {rmse:.5}, predicted by the variances {predicted:.5}, ratio {:.3}", rmse / predicted);
-        assert!(rmse <= 1.5 * predicted, "{name}: RMSE(CPU, GPU) = {rmse} exceeds 1.5 × {predicted}");
+        let rmse =
+            (g.mean.iter().zip(&c.mean).map(|(a, b)| (a - b).powi(2)).sum::<f64>() / px).sqrt();
+        let predicted =
+            (g.var_of_mean.iter().zip(&c.var_of_mean).map(|(a, b)| a + b).sum::<f64>() / px).sqrt();
+        eprintln!(
+            "{name}: RMSE(CPU, GPU) = {rmse:.5}, predicted by the variances {predicted:.5}, ratio {:.3}",
+            rmse / predicted
+        );
+        assert!(
+            rmse <= 1.5 * predicted,
+            "{name}: RMSE(CPU, GPU) = {rmse} exceeds 1.5 × {predicted}"
+        );
     }
 }
 
@@ -166,14 +235,22 @@ fn gpu_path_tracer_matches_cpu_on_the_scene_suite() {
         return;
     }
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/suite");
-    let mut files: Vec<_> =
-        std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).filter(|p| p.to_string_lossy().ends_with("-2048.toml")).collect();
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.to_string_lossy().ends_with("-2048.toml"))
+        .collect();
     files.sort();
     assert!(files.len() >= 8, "the suite has {} families", files.len());
     for file in files {
         let f = slc_scene::scene_file::SceneFile::load(&file).unwrap();
         let scene = PtScene::new(&f.scene, &f.lights).unwrap();
-        let eps = slc_scene::error_bound::auto_error_bound(&scene, 1.0, slc_scene::error_bound::TARGET_CANDIDATES).unwrap();
+        let eps = slc_scene::error_bound::auto_error_bound(
+            &scene,
+            1.0,
+            slc_scene::error_bound::TARGET_CANDIDATES,
+        )
+        .unwrap();
         let name = file.file_stem().unwrap().to_string_lossy().into_owned();
         for method in PtMethod::ALL {
             let Some((g, c, u)) = run_on(&scene, method, eps, 48, (6, 6)) else { return };
@@ -188,7 +265,9 @@ fn gpu_path_tracer_matches_cpu_on_the_scene_suite() {
 /// subnormal intensities: finite, non-negative, and the same mean as the CPU.
 fn gpu_path_tracer_hard_cases() {
     for (eps, intensity) in [(1e-30f32, 1.0f32), (1e30, 1.0), (0.05, 1e17), (0.05, 1e-40)] {
-        let Some((g, c, _)) = run(PtMethod::SlcReservoir, eps, intensity, false, 40) else { return };
+        let Some((g, c, _)) = run(PtMethod::SlcReservoir, eps, intensity, false, 40) else {
+            return;
+        };
         assert!(g.image_mean.iter().all(|m| m.is_finite()));
         assert_means_agree(&format!("ε = {eps:e}, intensity ×{intensity:e}"), &g, &c);
     }
@@ -217,7 +296,11 @@ fn gpu_baselines_after_an_slc_method_are_unchanged() {
         let mut used = GpuPt::new(g, &pts, W, H).unwrap();
         let slc = PtSettings { method: PtMethod::SlcWeighted, ..set };
         used.render(&mut PtRender::new(W, H), &slc, 2).unwrap();
-        assert!(render(&mut used) == fresh, "{}: the image depends on the method rendered before", method.name());
+        assert!(
+            render(&mut used) == fresh,
+            "{}: the image depends on the method rendered before",
+            method.name()
+        );
     }
 }
 
@@ -231,7 +314,10 @@ fn gpu_path_tracer_rejects_bad_settings() {
     let ok = PtSettings { method: PtMethod::SlcReservoir, ..PtSettings::default() };
     assert!(gpt.render(&mut PtRender::new(W + 1, H), &ok, 1).is_err());
     assert!(gpt.render(&mut PtRender::new(W, H), &PtSettings { max_depth: 0, ..ok }, 1).is_err());
-    assert!(gpt.render(&mut PtRender::new(W, H), &PtSettings { error_bound: f32::NAN, ..ok }, 1).is_err());
+    assert!(
+        gpt.render(&mut PtRender::new(W, H), &PtSettings { error_bound: f32::NAN, ..ok }, 1)
+            .is_err()
+    );
 }
 
 slc_tests::harness!(

@@ -22,7 +22,10 @@ const INTENSITY: f32 = 10.0;
 fn sphere(smooth: bool) -> Scene {
     let (stacks, slices) = (12, 24);
     let p = |i: u32, j: u32| {
-        let (t, f) = (std::f32::consts::PI * i as f32 / stacks as f32, std::f32::consts::TAU * j as f32 / slices as f32);
+        let (t, f) = (
+            std::f32::consts::PI * i as f32 / stacks as f32,
+            std::f32::consts::TAU * j as f32 / slices as f32,
+        );
         Vec3::new(t.sin() * f.cos(), t.cos(), t.sin() * f.sin())
     };
     let mut triangles = Vec::new();
@@ -37,15 +40,30 @@ fn sphere(smooth: bool) -> Scene {
             }
         }
     }
-    let normals = if smooth { triangles.iter().map(|t| t.map(|v: Vec3| v.normalize())).collect() } else { Vec::new() };
+    let normals = if smooth {
+        triangles.iter().map(|t| t.map(|v: Vec3| v.normalize())).collect()
+    } else {
+        Vec::new()
+    };
     Scene {
         name: "sphere".into(),
         material_of: vec![0; triangles.len()],
         triangles,
         normals,
         materials: vec![Material::lambertian(Vec3::splat(RHO), Vec3::ZERO)],
-        camera: Camera { position: Vec3::new(0.0, 0.0, 4.0), target: Vec3::ZERO, up: Vec3::Y, vfov_deg: 35.0 },
-        primary: PrimaryLight::Spot { position: LIGHT, direction: -LIGHT.normalize(), intensity: Vec3::ONE, inner: 0.0, outer: 1.0 },
+        camera: Camera {
+            position: Vec3::new(0.0, 0.0, 4.0),
+            target: Vec3::ZERO,
+            up: Vec3::Y,
+            vfov_deg: 35.0,
+        },
+        primary: PrimaryLight::Spot {
+            position: LIGHT,
+            direction: -LIGHT.normalize(),
+            intensity: Vec3::ONE,
+            inner: 0.0,
+            outer: 1.0,
+        },
         unsupported: Vec::new(),
     }
 }
@@ -108,7 +126,10 @@ fn render(tracer: &mut impl PathTracer) -> Vec<Vec3> {
 fn check(what: &str, smooth: f64, faceted: f64) {
     eprintln!("{what}: mean relative error smooth {smooth:.4}, faceted {faceted:.4}");
     assert!(smooth < 0.03, "{what}: smooth sphere off the analytic shading by {smooth}");
-    assert!(faceted > 2.0 * smooth && faceted > 0.03, "{what}: faceted {faceted} is not clearly worse than smooth {smooth}");
+    assert!(
+        faceted > 2.0 * smooth && faceted > 0.03,
+        "{what}: faceted {faceted} is not clearly worse than smooth {smooth}"
+    );
 }
 
 fn cpu_path_tracer_shades_vertex_normals_smoothly() {
@@ -124,7 +145,9 @@ fn gpu_path_tracer_shades_vertex_normals_smoothly() {
     let Some(g) = slc_tests::gpu() else { return };
     let e = |smooth: bool| {
         let s = sphere(smooth);
-        let img = render(&mut slc_wgpu::pt::GpuPt::new(g, &PtScene::new(&s, &light()).unwrap(), W, W).unwrap());
+        let img = render(
+            &mut slc_wgpu::pt::GpuPt::new(g, &PtScene::new(&s, &light()).unwrap(), W, W).unwrap(),
+        );
         error(&s, &img)
     };
     check("gpu", e(true), e(false));
@@ -143,14 +166,23 @@ fn vpl_gbuffer_carries_smooth_normals() {
             for x in 0..W {
                 let i = (y * W + x) as usize;
                 if analytic(&s, x, y).is_some() && gb.valid(i) {
-                    worst = worst.max(gb.normal[i].dot(gb.position[i].normalize()).clamp(-1.0, 1.0).acos().to_degrees());
+                    worst = worst.max(
+                        gb.normal[i]
+                            .dot(gb.position[i].normalize())
+                            .clamp(-1.0, 1.0)
+                            .acos()
+                            .to_degrees(),
+                    );
                 }
             }
         }
         worst
     };
     let (smooth, faceted) = (worst(true), worst(false));
-    assert!(smooth < 1.5 && faceted > 4.0, "worst normal error: smooth {smooth}°, faceted {faceted}°");
+    assert!(
+        smooth < 1.5 && faceted > 4.0,
+        "worst normal error: smooth {smooth}°, faceted {faceted}°"
+    );
 }
 
 slc_tests::harness!(

@@ -18,7 +18,9 @@ use slc_scene::vpl::GBuffer as CpuGBuffer;
 use slc_tests::engine::{output, submit_and_read, upload};
 use slc_tests::gpu;
 use slc_wgpu::GpuError;
-use slc_wgpu::passes::{GBuffer, Surface, SurfaceDesc, TemporalInputs, TemporalPass, TemporalPassDesc};
+use slc_wgpu::passes::{
+    GBuffer, Surface, SurfaceDesc, TemporalInputs, TemporalPass, TemporalPassDesc,
+};
 
 const W: u32 = 64;
 const H: u32 = 48;
@@ -32,18 +34,24 @@ fn signal(f: u32, scale: f32) -> Vec<Vec3> {
     (0..W * H)
         .map(|i| {
             let h = pcg_hash(pcg_hash(i) ^ f.wrapping_mul(0x9e37_79b9));
-            let c = [h, pcg_hash(h), pcg_hash(pcg_hash(h))].map(|b| (0.5 + xi_from_bits(b)) * scale);
+            let c =
+                [h, pcg_hash(h), pcg_hash(pcg_hash(h))].map(|b| (0.5 + xi_from_bits(b)) * scale);
             Vec3::from(c)
         })
         .collect()
 }
 
 fn desc() -> TemporalPassDesc {
-    TemporalPassDesc { output_format: wgpu::TextureFormat::Rgba32Float, ..TemporalPassDesc::new(W, H) }
+    TemporalPassDesc {
+        output_format: wgpu::TextureFormat::Rgba32Float,
+        ..TemporalPassDesc::new(W, H)
+    }
 }
 
 fn textures(gpu: &slc_wgpu::GpuContext, gb: &CpuGBuffer) -> (wgpu::TextureView, wgpu::TextureView) {
-    let pos: Vec<[f32; 4]> = (0..gb.position.len()).map(|i| v4(gb.position[i], if gb.valid(i) { 1.0 } else { 0.0 })).collect();
+    let pos: Vec<[f32; 4]> = (0..gb.position.len())
+        .map(|i| v4(gb.position[i], if gb.valid(i) { 1.0 } else { 0.0 }))
+        .collect();
     let nrm: Vec<[f32; 4]> = gb.normal.iter().map(|&n| v4(n, 0.0)).collect();
     (upload(gpu, "position", (W, H), &pos), upload(gpu, "normal", (W, H), &nrm))
 }
@@ -78,14 +86,20 @@ fn gpu_matches_cpu() {
         let want_len = cpu.history_lengths();
         let (position, normal) = textures(gpu, &gb);
         let sig = upload(gpu, "signal", (W, H), &s.iter().map(|&c| v4(c, 0.0)).collect::<Vec<_>>());
-        let gbuffer = GBuffer { surface: Surface::Position(&position), normal: &normal, eye: camera.position };
+        let gbuffer = GBuffer {
+            surface: Surface::Position(&position),
+            normal: &normal,
+            eye: camera.position,
+        };
         let mut enc = gpu.device.create_command_encoder(&Default::default());
-        pass.record(&mut enc, &TemporalInputs::new(gbuffer, &sig, &out_view), &view, &settings).unwrap();
+        pass.record(&mut enc, &TemporalInputs::new(gbuffer, &sig, &out_view), &view, &settings)
+            .unwrap();
         let got = submit_and_read(gpu, enc, &out);
         let (mut off, mut lit) = (0, 0);
         for i in 0..got.len() {
             let g = got[i];
-            let value_ok = (0..3).all(|c| (g[c] - want[i][c]).abs() <= 1e-4 * want[i][c].abs() + 1e-6);
+            let value_ok =
+                (0..3).all(|c| (g[c] - want[i][c]).abs() <= 1e-4 * want[i][c].abs() + 1e-6);
             if gb.valid(i) {
                 lit += 1;
                 off += (!value_ok || (g[3] - want_len[i]).abs() > 1e-3) as usize;
@@ -95,22 +109,30 @@ fn gpu_matches_cpu() {
         }
         assert!(off * 200 <= lit, "frame {f}: {off} of {lit} pixels differ from the CPU's");
         if f == 10 {
-            fresh_after_move = got.iter().enumerate().filter(|(i, g)| gb.valid(*i) && g[3] == 1.0).count();
+            fresh_after_move =
+                got.iter().enumerate().filter(|(i, g)| gb.valid(*i) && g[3] == 1.0).count();
         }
         // The jump's second frame (its first frame alone could be an
         // outlier: a change must persist): the history restarted there.
         if f == 14 {
-            reset_by_jump = got.iter().enumerate().filter(|(i, g)| gb.valid(*i) && g[3] == 1.0).count() * 100 / lit;
+            reset_by_jump =
+                got.iter().enumerate().filter(|(i, g)| gb.valid(*i) && g[3] == 1.0).count() * 100
+                    / lit;
         }
         if changed {
             assert!(got.iter().all(|g| g[3] <= 1.0), "a reported change drops the history");
         }
     }
-    eprintln!("camera move: {fresh_after_move} pixels start afresh; signal ×8: {reset_by_jump}% of the pixels reset");
+    eprintln!(
+        "camera move: {fresh_after_move} pixels start afresh; signal ×8: {reset_by_jump}% of the pixels reset"
+    );
     assert!(fresh_after_move > 8, "the move uncovers surfaces");
     // Everywhere but where the move left fewer than TEMPORAL_MIN_MOMENTS
     // frames to judge by (observed: 98% reset).
-    assert!(reset_by_jump >= 95, "an eightfold jump is a change wherever the history is long enough to judge");
+    assert!(
+        reset_by_jump >= 95,
+        "an eightfold jump is a change wherever the history is long enough to judge"
+    );
     gpu.take_errors().unwrap();
 }
 
@@ -123,13 +145,15 @@ fn motion_vectors_match_the_cpu() {
     let base = ctx.scene().camera;
     let step = Vec3::X * (0.03 * ctx.scene().diagonal());
     let moved = Camera { position: base.position + step, target: base.target + step, ..base };
-    let mut pass = TemporalPass::new(gpu, &TemporalPassDesc { motion_vectors: true, ..desc() }).unwrap();
+    let mut pass =
+        TemporalPass::new(gpu, &TemporalPassDesc { motion_vectors: true, ..desc() }).unwrap();
     let mut cpu = Temporal::new(W, H).unwrap();
     let out = output(gpu, (W, H));
     let out_view = out.create_view(&Default::default());
     let ts = TemporalSettings::default();
     for f in 0..8u32 {
-        let (camera, previous) = if f < 6 { (base, base) } else { (moved, if f == 6 { base } else { moved }) };
+        let (camera, previous) =
+            if f < 6 { (base, base) } else { (moved, if f == 6 { base } else { moved }) };
         if ctx.scene().camera != camera {
             ctx.set_camera(camera).unwrap();
         }
@@ -137,9 +161,21 @@ fn motion_vectors_match_the_cpu() {
         let m = TemporalView::of_camera(&previous, W, H).view_projection;
         let motion: Vec<glam::Vec2> = (0..(W * H) as usize)
             .map(|i| {
-                let q = slc_core::temporal::reproject(m.x_axis, m.y_axis, m.z_axis, m.w_axis, gb.position[i], W as f32, H as f32);
+                let q = slc_core::temporal::reproject(
+                    m.x_axis,
+                    m.y_axis,
+                    m.z_axis,
+                    m.w_axis,
+                    gb.position[i],
+                    W as f32,
+                    H as f32,
+                );
                 let here = glam::Vec2::new((i as u32 % W) as f32, (i as u32 / W) as f32);
-                if gb.valid(i) { (here - glam::Vec2::new(q.x, q.y)) / glam::Vec2::new(W as f32, H as f32) } else { glam::Vec2::ZERO }
+                if gb.valid(i) {
+                    (here - glam::Vec2::new(q.x, q.y)) / glam::Vec2::new(W as f32, H as f32)
+                } else {
+                    glam::Vec2::ZERO
+                }
             })
             .collect();
         let view = TemporalView::of_camera(&camera, W, H);
@@ -148,21 +184,40 @@ fn motion_vectors_match_the_cpu() {
         let want_len = cpu.history_lengths();
         let (position, normal) = textures(gpu, &gb);
         let sig = upload(gpu, "signal", (W, H), &s.iter().map(|&c| v4(c, 0.0)).collect::<Vec<_>>());
-        let mv = upload(gpu, "motion", (W, H), &motion.iter().map(|m| [m.x, m.y, 0.0, 0.0]).collect::<Vec<_>>());
-        let gbuffer = GBuffer { surface: Surface::Position(&position), normal: &normal, eye: camera.position };
+        let mv = upload(
+            gpu,
+            "motion",
+            (W, H),
+            &motion.iter().map(|m| [m.x, m.y, 0.0, 0.0]).collect::<Vec<_>>(),
+        );
+        let gbuffer = GBuffer {
+            surface: Surface::Position(&position),
+            normal: &normal,
+            eye: camera.position,
+        };
         let mut enc = gpu.device.create_command_encoder(&Default::default());
-        pass.record(&mut enc, &TemporalInputs { motion: Some(&mv), ..TemporalInputs::new(gbuffer, &sig, &out_view) }, &view, &ts).unwrap();
+        pass.record(
+            &mut enc,
+            &TemporalInputs { motion: Some(&mv), ..TemporalInputs::new(gbuffer, &sig, &out_view) },
+            &view,
+            &ts,
+        )
+        .unwrap();
         let got = submit_and_read(gpu, enc, &out);
         let (mut off, mut lit, mut kept) = (0, 0, 0);
         for i in (0..got.len()).filter(|&i| gb.valid(i)) {
             lit += 1;
             kept += (got[i][3] > 1.0) as usize;
-            let value_ok = (0..3).all(|c| (got[i][c] - want[i][c]).abs() <= 1e-4 * want[i][c].abs() + 1e-6);
+            let value_ok =
+                (0..3).all(|c| (got[i][c] - want[i][c]).abs() <= 1e-4 * want[i][c].abs() + 1e-6);
             off += (!value_ok || (got[i][3] - want_len[i]).abs() > 1e-3) as usize;
         }
         assert!(off * 200 <= lit, "frame {f}: {off} of {lit} pixels differ from the CPU's");
         if f == 6 {
-            assert!(kept * 10 > lit * 8, "the move keeps most history by the motion vectors ({kept} of {lit})");
+            assert!(
+                kept * 10 > lit * 8,
+                "the move keeps most history by the motion vectors ({kept} of {lit})"
+            );
         }
     }
     gpu.take_errors().unwrap();
@@ -183,18 +238,40 @@ fn wrong_inputs_are_typed_errors() {
     let mut enc = gpu.device.create_command_encoder(&Default::default());
     let ok = TemporalInputs::new(gbuffer, &sig, &out_view);
     let ts = TemporalSettings::default();
-    assert!(matches!(pass.record(&mut enc, &TemporalInputs { signal: &small, ..ok }, &view, &ts), Err(GpuError::Binding { .. })));
-    assert!(matches!(pass.record(&mut enc, &TemporalInputs { output: &sig, ..ok }, &view, &ts), Err(GpuError::Binding { .. })));
+    assert!(matches!(
+        pass.record(&mut enc, &TemporalInputs { signal: &small, ..ok }, &view, &ts),
+        Err(GpuError::Binding { .. })
+    ));
+    assert!(matches!(
+        pass.record(&mut enc, &TemporalInputs { output: &sig, ..ok }, &view, &ts),
+        Err(GpuError::Binding { .. })
+    ));
     let nan = TemporalView { eye: Vec3::NAN, ..view };
     assert!(matches!(pass.record(&mut enc, &ok, &nan, &ts), Err(GpuError::Setting(_))));
-    assert!(matches!(pass.record(&mut enc, &ok, &view, &TemporalSettings { max_history: 0.0 }), Err(GpuError::Setting(_))));
-    let depth = TemporalPassDesc { surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float }, ..desc() };
+    assert!(matches!(
+        pass.record(&mut enc, &ok, &view, &TemporalSettings { max_history: 0.0 }),
+        Err(GpuError::Setting(_))
+    ));
+    let depth = TemporalPassDesc {
+        surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float },
+        ..desc()
+    };
     let mut depth_pass = TemporalPass::new(gpu, &depth).unwrap();
-    assert!(matches!(depth_pass.record(&mut enc, &ok, &view, &ts), Err(GpuError::Binding { .. })), "positions for a depth pass");
-    assert!(matches!(TemporalPass::new(gpu, &TemporalPassDesc::new(0, 4)), Err(GpuError::Setting(_))));
+    assert!(
+        matches!(depth_pass.record(&mut enc, &ok, &view, &ts), Err(GpuError::Binding { .. })),
+        "positions for a depth pass"
+    );
+    assert!(matches!(
+        TemporalPass::new(gpu, &TemporalPassDesc::new(0, 4)),
+        Err(GpuError::Setting(_))
+    ));
     // Motion vectors given to a pass built without them, and missing for one built with them.
-    assert!(matches!(pass.record(&mut enc, &TemporalInputs { motion: Some(&sig), ..ok }, &view, &ts), Err(GpuError::Binding { .. })));
-    let mut moving = TemporalPass::new(gpu, &TemporalPassDesc { motion_vectors: true, ..desc() }).unwrap();
+    assert!(matches!(
+        pass.record(&mut enc, &TemporalInputs { motion: Some(&sig), ..ok }, &view, &ts),
+        Err(GpuError::Binding { .. })
+    ));
+    let mut moving =
+        TemporalPass::new(gpu, &TemporalPassDesc { motion_vectors: true, ..desc() }).unwrap();
     assert!(matches!(moving.record(&mut enc, &ok, &view, &ts), Err(GpuError::Binding { .. })));
     pass.record(&mut enc, &ok, &view, &ts).unwrap();
     gpu.queue.submit([enc.finish()]);

@@ -40,11 +40,21 @@ fn cpu_ctx() -> &'static VplContext {
 fn gpu_vpl() -> Option<MutexGuard<'static, GpuVpl>> {
     static G: OnceLock<Mutex<GpuVpl>> = OnceLock::new();
     let g = gpu()?;
-    Some(G.get_or_init(|| Mutex::new(GpuVpl::new(g, cpu_ctx().inputs()).unwrap())).lock().unwrap_or_else(|e| e.into_inner()))
+    Some(
+        G.get_or_init(|| Mutex::new(GpuVpl::new(g, cpu_ctx().inputs()).unwrap()))
+            .lock()
+            .unwrap_or_else(|e| e.into_inner()),
+    )
 }
 
 fn settings(method: VplMethod) -> VplSettings {
-    VplSettings { method, denoise: false, error_bound: 0.004, range: 0.08, ..VplSettings::default() }
+    VplSettings {
+        method,
+        denoise: false,
+        error_bound: 0.004,
+        range: 0.08,
+        ..VplSettings::default()
+    }
 }
 
 struct Compared {
@@ -60,15 +70,25 @@ struct Compared {
 
 fn compare(cpu: &Shaded, gpu: &Shaded, ctx: &VplContext) -> Compared {
     let gb = ctx.gbuffer();
-    let mut c = Compared { pixels: 0, kept_differs: 0, worst_rel: 0.0, glossy: 0, worst_specular: 0.0 };
-    assert_eq!(cpu.specular.len(), gpu.specular.len(), "both backends return a specular correction, or neither");
+    let mut c =
+        Compared { pixels: 0, kept_differs: 0, worst_rel: 0.0, glossy: 0, worst_specular: 0.0 };
+    assert_eq!(
+        cpu.specular.len(),
+        gpu.specular.len(),
+        "both backends return a specular correction, or neither"
+    );
     for i in 0..cpu.irradiance.len() {
         if !gb.valid(i) {
             continue;
         }
         c.pixels += 1;
         let dk = cpu.kept[i].abs_diff(gpu.kept[i]);
-        assert!(dk <= 1, "pixel {i}: kept {} on the CPU vs {} on the GPU", cpu.kept[i], gpu.kept[i]);
+        assert!(
+            dk <= 1,
+            "pixel {i}: kept {} on the CPU vs {} on the GPU",
+            cpu.kept[i],
+            gpu.kept[i]
+        );
         if dk > 0 {
             c.kept_differs += 1;
             continue;
@@ -82,10 +102,16 @@ fn compare(cpu: &Shaded, gpu: &Shaded, ctx: &VplContext) -> Compared {
         let (sa, sb) = (cpu.specular[i].as_dvec3(), gpu.specular[i].as_dvec3());
         match gb.specular_at(i) {
             // No lobe: no correction on either backend.
-            None => assert!(sa == glam::DVec3::ZERO && sb == glam::DVec3::ZERO, "pixel {i}: S {sa} (CPU), {sb} (GPU) without a lobe"),
+            None => assert!(
+                sa == glam::DVec3::ZERO && sb == glam::DVec3::ZERO,
+                "pixel {i}: S {sa} (CPU), {sb} (GPU) without a lobe"
+            ),
             Some(lobe) => {
-                let scale = sa.abs() + (lobe.diffuse_albedo(gb.albedo[i]).as_dvec3() * (2.0 / std::f64::consts::PI)) * a;
-                let worst = ((sa - sb).abs() - glam::DVec3::splat(1e-9)).max(glam::DVec3::ZERO) / scale.max(glam::DVec3::splat(1e-30));
+                let scale = sa.abs()
+                    + (lobe.diffuse_albedo(gb.albedo[i]).as_dvec3() * (2.0 / std::f64::consts::PI))
+                        * a;
+                let worst = ((sa - sb).abs() - glam::DVec3::splat(1e-9)).max(glam::DVec3::ZERO)
+                    / scale.max(glam::DVec3::splat(1e-30));
                 c.worst_specular = c.worst_specular.max(worst.max_element());
                 c.glossy += 1;
             }
@@ -108,8 +134,19 @@ fn shading_matches_cpu_for_every_method() {
             c.kept_differs,
             c.worst_rel
         );
-        assert!(c.kept_differs * 200 <= c.pixels, "{}: {} of {} pixels differ in keep decisions", method.name(), c.kept_differs, c.pixels);
-        assert!(c.worst_rel <= 1e-4, "{}: relative irradiance difference {}", method.name(), c.worst_rel);
+        assert!(
+            c.kept_differs * 200 <= c.pixels,
+            "{}: {} of {} pixels differ in keep decisions",
+            method.name(),
+            c.kept_differs,
+            c.pixels
+        );
+        assert!(
+            c.worst_rel <= 1e-4,
+            "{}: relative irradiance difference {}",
+            method.name(),
+            c.worst_rel
+        );
         assert!(a.kept.iter().sum::<u32>() > 0);
     }
 }
@@ -145,7 +182,11 @@ fn images_match_end_to_end() {
         let b = ctx.finish(gv.shade(&s).unwrap(), &s).image;
         assert!(gv.shade(&s).unwrap().denoised_ms.is_some(), "the GPU denoised");
         let rmse = a.rmse(&b);
-        eprintln!("{}: end-to-end RMSE(CPU, GPU) = {rmse:.3e}, mean {:.3e}", method.name(), a.mean());
+        eprintln!(
+            "{}: end-to-end RMSE(CPU, GPU) = {rmse:.3e}, mean {:.3e}",
+            method.name(),
+            a.mean()
+        );
         assert!(b.is_finite());
         assert!(rmse <= 1e-3 * a.mean(), "{}: RMSE {rmse} vs mean {}", method.name(), a.mean());
     }
@@ -171,7 +212,13 @@ fn gpu_expectation_equals_unculled() {
         let truth = none.irradiance[i].as_dvec3();
         let bound = all.irradiance[i].as_dvec3() * (2.0 / M as f64) + truth.abs() * 1e-4 + 1e-9;
         for c in 0..3 {
-            assert!((mean[i][c] - truth[c]).abs() <= bound[c], "pixel {i}: E[gpu slc] {} vs unculled {} (bound {})", mean[i][c], truth[c], bound[c]);
+            assert!(
+                (mean[i][c] - truth[c]).abs() <= bound[c],
+                "pixel {i}: E[gpu slc] {} vs unculled {} (bound {})",
+                mean[i][c],
+                truth[c],
+                bound[c]
+            );
         }
     }
 }
@@ -187,8 +234,20 @@ fn chunked_tile_lists_match_cpu() {
     for method in [VplMethod::Slc, VplMethod::Clamp] {
         let s = settings(method);
         let c = compare(&ctx.shade(&s).unwrap(), &gv.shade(&s).unwrap(), &ctx);
-        eprintln!("{} chunked: {} pixels, kept differs at {}, worst relative {:.2e}", method.name(), c.pixels, c.kept_differs, c.worst_rel);
-        assert!(c.kept_differs * 200 <= c.pixels && c.worst_rel <= 1e-4, "{}: {} differing, worst {}", method.name(), c.kept_differs, c.worst_rel);
+        eprintln!(
+            "{} chunked: {} pixels, kept differs at {}, worst relative {:.2e}",
+            method.name(),
+            c.pixels,
+            c.kept_differs,
+            c.worst_rel
+        );
+        assert!(
+            c.kept_differs * 200 <= c.pixels && c.worst_rel <= 1e-4,
+            "{}: {} differing, worst {}",
+            method.name(),
+            c.kept_differs,
+            c.worst_rel
+        );
     }
     // 262,144 VPLs: 4,096 per subset, two chunks of the default list (the
     // whole subset once exceeded the 16 KiB of workgroup memory).
@@ -198,7 +257,10 @@ fn chunked_tile_lists_match_cpu() {
     let mut gv = GpuVpl::new(g, ctx.inputs()).unwrap();
     let s = VplSettings { near_radius: Some(0.0), ..settings(VplMethod::Slc) };
     let c = compare(&ctx.shade(&s).unwrap(), &gv.shade(&s).unwrap(), &ctx);
-    eprintln!("262,144 VPLs: {} pixels, kept differs at {}, worst relative {:.2e}", c.pixels, c.kept_differs, c.worst_rel);
+    eprintln!(
+        "262,144 VPLs: {} pixels, kept differs at {}, worst relative {:.2e}",
+        c.pixels, c.kept_differs, c.worst_rel
+    );
     assert!(c.kept_differs * 200 <= c.pixels.max(200) && c.worst_rel <= 1e-4);
 }
 
@@ -210,12 +272,25 @@ fn hard_cases_agree() {
     let Some(mut gv) = gpu_vpl() else { return };
     let ctx = cpu_ctx();
     let xi_max = slc_core::range::Xi::MAX.get();
-    for (eps, xi) in [(1e-30f32, None), (1e30, None), (1e30, Some(xi_max)), (0.004, Some(0.0)), (0.004, Some(xi_max)), (f32::MAX, Some(xi_max))] {
+    for (eps, xi) in [
+        (1e-30f32, None),
+        (1e30, None),
+        (1e30, Some(xi_max)),
+        (0.004, Some(0.0)),
+        (0.004, Some(xi_max)),
+        (f32::MAX, Some(xi_max)),
+    ] {
         let s = VplSettings { error_bound: eps, fixed_xi: xi, ..settings(VplMethod::Slc) };
         let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(&s).unwrap());
-        assert!(b.irradiance.iter().all(|e| e.is_finite()), "eps {eps} xi {xi:?}: non-finite GPU pixel");
+        assert!(
+            b.irradiance.iter().all(|e| e.is_finite()),
+            "eps {eps} xi {xi:?}: non-finite GPU pixel"
+        );
         let c = compare(&a, &b, ctx);
-        eprintln!("eps {eps:e}, xi {xi:?}: {} of {} pixels differ in keep decisions, worst rel {:.1e}", c.kept_differs, c.pixels, c.worst_rel);
+        eprintln!(
+            "eps {eps:e}, xi {xi:?}: {} of {} pixels differ in keep decisions, worst rel {:.1e}",
+            c.kept_differs, c.pixels, c.worst_rel
+        );
         assert!(c.kept_differs * 200 <= c.pixels && c.worst_rel <= 1e-4, "eps {eps} xi {xi:?}");
     }
 }
@@ -276,7 +351,11 @@ fn glossy_shading_matches_cpu() {
         for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None, VplMethod::Reference] {
             let s = VplSettings { near_radius, ..settings(method) };
             let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(&s).unwrap());
-            assert!(!b.specular.is_empty() && b.specular.iter().all(|s| s.is_finite()), "{}: the GPU's S", method.name());
+            assert!(
+                !b.specular.is_empty() && b.specular.iter().all(|s| s.is_finite()),
+                "{}: the GPU's S",
+                method.name()
+            );
             let c = compare(&a, &b, &ctx);
             let near = if near_radius == Some(0.0) { "no near field" } else { "near field" };
             eprintln!(
@@ -288,7 +367,13 @@ fn glossy_shading_matches_cpu() {
                 c.worst_specular,
                 c.glossy
             );
-            assert!(c.glossy * 5 >= c.pixels, "{}: only {} of {} pixels glossy", method.name(), c.glossy, c.pixels);
+            assert!(
+                c.glossy * 5 >= c.pixels,
+                "{}: only {} of {} pixels glossy",
+                method.name(),
+                c.glossy,
+                c.pixels
+            );
             assert!(
                 c.kept_differs * 200 <= c.pixels && c.worst_rel <= 1e-4,
                 "{}: {} differing, worst {}",
@@ -296,7 +381,12 @@ fn glossy_shading_matches_cpu() {
                 c.kept_differs,
                 c.worst_rel
             );
-            assert!(c.worst_specular <= 1e-4, "glossy {} ({near}): specular difference {:.3e}", method.name(), c.worst_specular);
+            assert!(
+                c.worst_specular <= 1e-4,
+                "glossy {} ({near}): specular difference {:.3e}",
+                method.name(),
+                c.worst_specular
+            );
         }
     }
 }
@@ -314,9 +404,15 @@ fn glossy_images_match_end_to_end() {
         let s = VplSettings { denoise: true, ..settings(method) };
         let a = ctx.render(&s).unwrap().image;
         let b = ctx.finish(gv.shade(&s).unwrap(), &s).image;
-        let glossy: Vec<usize> = (0..a.data.len()).filter(|&i| gb.specular_at(i).is_some()).collect();
-        let mean = glossy.iter().map(|&i| a.data[i].as_dvec3().element_sum() / 3.0).sum::<f64>() / glossy.len() as f64;
-        let mse = glossy.iter().map(|&i| (a.data[i] - b.data[i]).as_dvec3().length_squared() / 3.0).sum::<f64>() / glossy.len() as f64;
+        let glossy: Vec<usize> =
+            (0..a.data.len()).filter(|&i| gb.specular_at(i).is_some()).collect();
+        let mean = glossy.iter().map(|&i| a.data[i].as_dvec3().element_sum() / 3.0).sum::<f64>()
+            / glossy.len() as f64;
+        let mse = glossy
+            .iter()
+            .map(|&i| (a.data[i] - b.data[i]).as_dvec3().length_squared() / 3.0)
+            .sum::<f64>()
+            / glossy.len() as f64;
         let (rmse, glossy_rmse) = (a.rmse(&b), mse.sqrt());
         eprintln!(
             "glossy {}: end-to-end RMSE(CPU, GPU) = {rmse:.3e} (mean {:.3e}); glossy pixels {glossy_rmse:.3e} (mean {mean:.3e})",
@@ -325,7 +421,11 @@ fn glossy_images_match_end_to_end() {
         );
         assert!(b.is_finite());
         assert!(rmse <= 1e-3 * a.mean(), "{}: RMSE {rmse} vs mean {}", method.name(), a.mean());
-        assert!(glossy_rmse <= 1e-3 * mean, "{}: glossy RMSE {glossy_rmse} vs mean {mean}", method.name());
+        assert!(
+            glossy_rmse <= 1e-3 * mean,
+            "{}: glossy RMSE {glossy_rmse} vs mean {mean}",
+            method.name()
+        );
     }
 }
 

@@ -51,7 +51,10 @@ const LIGHTS: usize = 256;
 fn compile() -> String {
     let mut r = wesl::resolver::VirtualResolver::new();
     for m in slc_shared_shaders::wesl::modules() {
-        r.add_module(ModulePath::new(PathOrigin::Package("slc".into()), vec![m.name.into()]), m.source.into());
+        r.add_module(
+            ModulePath::new(PathOrigin::Package("slc".into()), vec![m.name.into()]),
+            m.source.into(),
+        );
     }
     let main = ModulePath::new(PathOrigin::Absolute, vec!["main".into()]);
     r.add_module(main.clone(), USER.into());
@@ -71,9 +74,13 @@ fn wesl_shader_runs_like_the_rust_functions() {
             [h(3 * j + 1), 1.0, h(3 * j + 2), params.threshold_range2(i), i.x, i.y, i.z, 0.0]
         })
         .collect();
-    let points: Vec<[f32; 4]> = (0..POINTS).map(|i| [(i % 64) as f32 / 63.0, 0.0, (i / 64) as f32 / 63.0, 1.0]).collect();
+    let points: Vec<[f32; 4]> =
+        (0..POINTS).map(|i| [(i % 64) as f32 / 63.0, 0.0, (i / 64) as f32 / 63.0, 1.0]).collect();
     let d = &gpu.device;
-    let module = d.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some("user wesl"), source: wgpu::ShaderSource::Wgsl(wgsl.into()) });
+    let module = d.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("user wesl"),
+        source: wgpu::ShaderSource::Wgsl(wgsl.into()),
+    });
     let pipeline = d.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
         label: None,
         layout: None,
@@ -82,10 +89,17 @@ fn wesl_shader_runs_like_the_rust_functions() {
         compilation_options: Default::default(),
         cache: None,
     });
-    let buf = |data: &[u8], usage| d.create_buffer_init(&wgpu::util::BufferInitDescriptor { label: None, contents: data, usage });
+    let buf = |data: &[u8], usage| {
+        d.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: None,
+            contents: data,
+            usage,
+        })
+    };
     let lb = buf(bytemuck::cast_slice(&lights), wgpu::BufferUsages::STORAGE);
     let pb = buf(bytemuck::cast_slice(&points), wgpu::BufferUsages::STORAGE);
-    let ob = buf(&vec![0u8; POINTS * 16], wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC);
+    let ob =
+        buf(&vec![0u8; POINTS * 16], wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC);
     let staging = d.create_buffer(&wgpu::BufferDescriptor {
         label: None,
         size: (POINTS * 16) as u64,
@@ -112,7 +126,8 @@ fn wesl_shader_runs_like_the_rust_functions() {
     gpu.queue.submit([enc.finish()]);
     staging.slice(..).map_async(wgpu::MapMode::Read, |_| {});
     gpu.wait().unwrap();
-    let got: Vec<[f32; 4]> = bytemuck::cast_slice(&staging.slice(..).get_mapped_range().unwrap()).to_vec();
+    let got: Vec<[f32; 4]> =
+        bytemuck::cast_slice(&staging.slice(..).get_mapped_range().unwrap()).to_vec();
     let (mut counts, mut worst) = (0, 0.0f32);
     for (p, g) in points.iter().zip(&got) {
         let x = glam::Vec3::new(p[0], p[1], p[2]);
@@ -129,10 +144,15 @@ fn wesl_shader_runs_like_the_rust_functions() {
             counts += 1;
             continue;
         }
-        worst = worst.max(((glam::Vec3::new(g[0], g[1], g[2]) - e).abs() / e.abs().max(glam::Vec3::splat(1e-20))).max_element());
+        worst = worst.max(
+            ((glam::Vec3::new(g[0], g[1], g[2]) - e).abs() / e.abs().max(glam::Vec3::splat(1e-20)))
+                .max_element(),
+        );
     }
     let kept = got.iter().map(|g| g[3]).sum::<f32>() / POINTS as f32;
-    eprintln!("WESL shader: {kept:.1} lights kept per point, {counts} kept counts differ, worst relative difference {worst:.2e}");
+    eprintln!(
+        "WESL shader: {kept:.1} lights kept per point, {counts} kept counts differ, worst relative difference {worst:.2e}"
+    );
     assert!(kept > 5.0 && kept < LIGHTS as f32 * 0.9, "{kept}");
     assert!(counts <= 4, "{counts} points keep other lights than the CPU");
     assert!(worst <= 1e-4, "{worst:.2e}");
@@ -143,7 +163,10 @@ fn wesl_shader_runs_like_the_rust_functions() {
 fn wesl_ies_module_declares_the_table() {
     let mut r = wesl::resolver::VirtualResolver::new();
     for m in slc_shared_shaders::wesl::modules() {
-        r.add_module(ModulePath::new(PathOrigin::Package("slc".into()), vec![m.name.into()]), m.source.into());
+        r.add_module(
+            ModulePath::new(PathOrigin::Package("slc".into()), vec![m.name.into()]),
+            m.source.into(),
+        );
     }
     let main = ModulePath::new(PathOrigin::Absolute, vec!["main".into()]);
     r.add_module(

@@ -28,7 +28,10 @@
 pub mod lookup;
 mod parse;
 
-pub use lookup::{atan_portable, atan2_portable, ies_candela, ies_candela_dir, ies_fold_c, ies_lerp_t, ies_light_candela, ies_segment};
+pub use lookup::{
+    atan_portable, atan2_portable, ies_candela, ies_candela_dir, ies_fold_c, ies_lerp_t,
+    ies_light_candela, ies_segment,
+};
 
 use alloc::string::String;
 use alloc::vec::Vec;
@@ -152,7 +155,8 @@ impl IesProfile {
     pub fn total_flux(&self) -> f64 {
         const N_G: usize = 360;
         const N_C: usize = 720;
-        let (dg, dc) = (core::f64::consts::PI / N_G as f64, 2.0 * core::f64::consts::PI / N_C as f64);
+        let (dg, dc) =
+            (core::f64::consts::PI / N_G as f64, 2.0 * core::f64::consts::PI / N_C as f64);
         let mut sum = 0.0f64;
         for i in 0..N_G {
             let g = (i as f64 + 0.5) * dg;

@@ -20,7 +20,9 @@ impl<'a> Tokens<'a> {
                 self.pos += 1;
                 Ok(t)
             }
-            None => Err(IesError { line: self.last_line, kind: K::UnexpectedEnd { expected: field } }),
+            None => {
+                Err(IesError { line: self.last_line, kind: K::UnexpectedEnd { expected: field } })
+            }
         }
     }
     fn remaining(&self) -> usize {
@@ -49,13 +51,21 @@ impl<'a> Tokens<'a> {
     }
     fn list(&mut self, field: &'static str, n: usize) -> Result<Vec<(f32, usize)>, IesError> {
         if n > self.remaining() {
-            return Err(IesError { line: self.last_line, kind: K::UnexpectedEnd { expected: field } });
+            return Err(IesError {
+                line: self.last_line,
+                kind: K::UnexpectedEnd { expected: field },
+            });
         }
         (0..n).map(|_| self.num(field)).collect()
     }
 }
 
-fn increasing(field: &'static str, v: &[(f32, usize)], lo: f32, hi: f32) -> Result<Vec<f32>, IesError> {
+fn increasing(
+    field: &'static str,
+    v: &[(f32, usize)],
+    lo: f32,
+    hi: f32,
+) -> Result<Vec<f32>, IesError> {
     for (i, &(a, line)) in v.iter().enumerate() {
         if a < lo || a > hi {
             return Err(IesError { line, kind: K::OutOfRange { field, value: a } });
@@ -110,7 +120,11 @@ impl IesProfile {
         let mut last_line = tilt_line;
         for (n, l) in lines {
             last_line = n;
-            toks.extend(l.split(|c: char| c.is_whitespace() || c == ',').filter(|t| !t.is_empty()).map(|t| (t, n)));
+            toks.extend(
+                l.split(|c: char| c.is_whitespace() || c == ',')
+                    .filter(|t| !t.is_empty())
+                    .map(|t| (t, n)),
+            );
         }
         let mut t = Tokens { toks, pos: 0, last_line };
 
@@ -130,7 +144,10 @@ impl IesProfile {
         let lamps = t.int("number of lamps", 0, u32::MAX / 2)?;
         let (lumens_per_lamp, lumens_line) = t.num("lumens per lamp")?;
         if lumens_per_lamp < 0.0 && lumens_per_lamp != -1.0 {
-            return Err(IesError { line: lumens_line, kind: K::OutOfRange { field: "lumens per lamp", value: lumens_per_lamp } });
+            return Err(IesError {
+                line: lumens_line,
+                kind: K::OutOfRange { field: "lumens per lamp", value: lumens_per_lamp },
+            });
         }
         let multiplier = t.nonneg("candela multiplier")?;
         let nv = t.int("number of vertical angles", 1, MAX_ANGLES as u32)? as usize;
@@ -149,14 +166,18 @@ impl IesProfile {
         if nv * nh > MAX_VALUES {
             return Err(IesError { line: ptype_line, kind: K::TooLarge { values: nv * nh } });
         }
-        let (vlo, hlo) = if photometric_type == PhotometricType::C { (0.0, 0.0) } else { (-90.0, -180.0) };
+        let (vlo, hlo) =
+            if photometric_type == PhotometricType::C { (0.0, 0.0) } else { (-90.0, -180.0) };
         let vertical = increasing("vertical angles", &t.list("vertical angles", nv)?, vlo, 180.0)?;
         let hraw = t.list("horizontal angles", nh)?;
         let horizontal = increasing("horizontal angles", &hraw, hlo, 360.0)?;
         let craw = t.list("candela values", nv * nh)?;
         for &(c, line) in &craw {
             if c < 0.0 {
-                return Err(IesError { line, kind: K::OutOfRange { field: "candela value", value: c } });
+                return Err(IesError {
+                    line,
+                    kind: K::OutOfRange { field: "candela value", value: c },
+                });
             }
         }
         let candela: Vec<f32> = craw.iter().map(|c| c.0).collect();
@@ -169,7 +190,9 @@ impl IesProfile {
             }
         }
 
-        let scale = multiplier * ballast_factor * if format == IesFormat::Lm63_2002 { 1.0 } else { ballast_lamp_factor };
+        let scale = multiplier
+            * ballast_factor
+            * if format == IesFormat::Lm63_2002 { 1.0 } else { ballast_lamp_factor };
         let mut p = IesProfile {
             format,
             keywords,
@@ -194,11 +217,23 @@ impl IesProfile {
         // finite candela values times a finite scale can overflow too (both
         // found by fuzz/ies_parse).
         if !scale.is_finite() {
-            return Err(IesError { line: ptype_line, kind: K::OutOfRange { field: "candela multiplier times ballast factors", value: scale } });
+            return Err(IesError {
+                line: ptype_line,
+                kind: K::OutOfRange {
+                    field: "candela multiplier times ballast factors",
+                    value: scale,
+                },
+            });
         }
         p.build_table(scale);
         if !p.max_candela.is_finite() {
-            return Err(IesError { line: ptype_line, kind: K::OutOfRange { field: "candela values times multipliers", value: p.max_candela } });
+            return Err(IesError {
+                line: ptype_line,
+                kind: K::OutOfRange {
+                    field: "candela values times multipliers",
+                    value: p.max_candela,
+                },
+            });
         }
         Ok(p)
     }

@@ -131,15 +131,20 @@ pub fn modules() -> Vec<WgslModule> {
         let imports = out
             .iter()
             .filter_map(|m| {
-                let used: Vec<String> = m.items.iter().filter(|i| words.iter().any(|w| w == *i)).cloned().collect();
+                let used: Vec<String> =
+                    m.items.iter().filter(|i| words.iter().any(|w| w == *i)).cloned().collect();
                 (!used.is_empty()).then_some((m.name, used))
             })
             .collect();
         let items = wgsl
             .lines()
             .filter_map(|l| {
-                let rest = ["fn ", "const ", "struct ", "alias "].iter().find_map(|k| l.strip_prefix(k))?;
-                let end = rest.find(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).unwrap_or(rest.len());
+                let rest = ["fn ", "const ", "struct ", "alias "]
+                    .iter()
+                    .find_map(|k| l.strip_prefix(k))?;
+                let end = rest
+                    .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                    .unwrap_or(rest.len());
                 Some(String::from(&rest[..end]))
             })
             .collect();
@@ -151,7 +156,9 @@ pub fn modules() -> Vec<WgslModule> {
         if name == "ies" {
             // naga_oil keeps no type aliases (naga's writer substitutes them):
             // the table handle is spelled `u32` in the module.
-            wgsl.push_str(&IES_TABLE.replace("alias Table = u32;\n", "").replace(": Table", ": u32"));
+            wgsl.push_str(
+                &IES_TABLE.replace("alias Table = u32;\n", "").replace(": Table", ": u32"),
+            );
             wgsl.push_str(&translate(part).replace(": Table", ": u32"));
         } else {
             wgsl.push_str(&translate(part));
@@ -176,7 +183,9 @@ pub fn modules_wgsl(names: &[&str]) -> Option<String> {
     while let Some(i) = stack.pop() {
         if !need[i] {
             need[i] = true;
-            stack.extend(all[i].imports.iter().filter_map(|(d, _)| all.iter().position(|m| m.name == *d)));
+            stack.extend(
+                all[i].imports.iter().filter_map(|(d, _)| all.iter().position(|m| m.name == *d)),
+            );
         }
     }
     let mut out = String::new();
@@ -263,7 +272,8 @@ fn tighten_calls(s: &str) -> String {
     let b = s.as_bytes();
     for (i, ch) in s.char_indices() {
         if ch == ' ' && b.get(i + 1) == Some(&b'(') {
-            let word_start = out.rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).map_or(0, |p| p + 1);
+            let word_start =
+                out.rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).map_or(0, |p| p + 1);
             let word = &out[word_start..];
             let ident = word.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_');
             if ident && !matches!(word, "return" | "if" | "while" | "else") {

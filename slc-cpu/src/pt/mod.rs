@@ -45,7 +45,9 @@ use slc_core::importance::Receiver;
 use slc_core::importance::weighted_select_pdf;
 use slc_core::light::{Light, connection_cosine, connection_factor};
 use slc_core::mis::{light_strategy_pdf, mis_power};
-use slc_core::path::{camera_dir, continues_path, jittered_pixel, path_survival, plays_roulette, sees_emission};
+use slc_core::path::{
+    camera_dir, continues_path, jittered_pixel, path_survival, plays_roulette, sees_emission,
+};
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::ray::{face_against, ray_t_min, surface_offset};
 use slc_core::reservoir::{Reservoir, WeightedReservoir, reservoir_select_pdf, uniform_light};
@@ -133,7 +135,13 @@ impl CpuPathTracer {
     /// from the last pass), and the BSH refitted to them in O(n), its
     /// subtrees in parallel ([`Bsh::refit_split`]). Empty for the
     /// baselines.
-    fn pass_state(&mut self, method: PtMethod, params: &RangeParams, seed: u32, pass: u32) -> Result<Pass, RenderError> {
+    fn pass_state(
+        &mut self,
+        method: PtMethod,
+        params: &RangeParams,
+        seed: u32,
+        pass: u32,
+    ) -> Result<Pass, RenderError> {
         if !method.culls() {
             return Ok(Pass::default());
         }
@@ -142,17 +150,32 @@ impl CpuPathTracer {
             self.rt2 = Some((*params, rt2));
         }
         let rt2 = self.rt2.as_ref().map(|(_, rt2)| Arc::clone(rt2)).unwrap_or_default();
-        let r2: Vec<f32> = rt2.par_iter().enumerate().map(|(i, &t)| random_range2(t, xi_for(seed, pass, i as u32))).collect();
-        self.bsh.refit_split(&r2, REFIT_GRAIN, &|a, b| _ = rayon::join(a, b)).map_err(|e| RenderError::Setting(e.to_string()))?;
+        let r2: Vec<f32> = rt2
+            .par_iter()
+            .enumerate()
+            .map(|(i, &t)| random_range2(t, xi_for(seed, pass, i as u32)))
+            .collect();
+        self.bsh
+            .refit_split(&r2, REFIT_GRAIN, &|a, b| _ = rayon::join(a, b))
+            .map_err(|e| RenderError::Setting(e.to_string()))?;
         Ok(Pass { rt2, r2 })
     }
 
     /// Renders `passes` more passes of one sample per pixel into `acc`
     /// (also [`PathTracer::render`]).
-    pub fn render(&mut self, acc: &mut PtRender, s: &PtSettings, passes: u32) -> Result<(), RenderError> {
-        let params = RangeParams::new(s.error_bound, s.exposure).map_err(|e| RenderError::Setting(e.to_string()))?;
+    pub fn render(
+        &mut self,
+        acc: &mut PtRender,
+        s: &PtSettings,
+        passes: u32,
+    ) -> Result<(), RenderError> {
+        let params = RangeParams::new(s.error_bound, s.exposure)
+            .map_err(|e| RenderError::Setting(e.to_string()))?;
         if !(1..=64).contains(&s.max_depth) {
-            return Err(RenderError::Setting(format!("max depth {} must be in 1..=64", s.max_depth)));
+            return Err(RenderError::Setting(format!(
+                "max depth {} must be in 1..=64",
+                s.max_depth
+            )));
         }
         let (w, h) = acc.size();
         for _ in 0..passes {
@@ -189,7 +212,17 @@ impl CpuPathTracer {
     /// pbrt-v4's `SampleLd` takes `sampledLight->p`, instead of walking the
     /// tree a second time.
     #[allow(clippy::too_many_arguments)]
-    fn light_pdf(&self, s: &PtSettings, st: &Pass, l: usize, rc: &Receiver, y: Vec3, nee: NeeState, in_nee: bool, picked: Option<f32>) -> f32 {
+    fn light_pdf(
+        &self,
+        s: &PtSettings,
+        st: &Pass,
+        l: usize,
+        rc: &Receiver,
+        y: Vec3,
+        nee: NeeState,
+        in_nee: bool,
+        picked: Option<f32>,
+    ) -> f32 {
         let Light::Triangle(t) = &self.lights()[l] else { return 0.0 };
         let x = rc.p;
         // The receiver's range scale s toward this light (1 for a Lambertian one).
@@ -202,14 +235,18 @@ impl CpuPathTracer {
         // (selection probability, r_t² of the RR test; +∞ for the baselines)
         let (select, rt2) = match s.method {
             PtMethod::Slc => (1.0, rs * st.rt2[l]),
-            PtMethod::SlcReservoir => (reservoir_select_pdf(nee.seen, in_range(), RESERVOIR_K as u32), rs * st.rt2[l]),
+            PtMethod::SlcReservoir => {
+                (reservoir_select_pdf(nee.seen, in_range(), RESERVOIR_K as u32), rs * st.rt2[l])
+            }
             PtMethod::SlcWeighted => {
                 let w = self.pts.light_set().cones()[l].weight(rc, rs * st.rt2[l]);
                 (weighted_select_pdf(w, nee.w_sum, in_range(), WEIGHTED_K as u32), rs * st.rt2[l])
             }
             PtMethod::Uniform => (1.0 / self.lights().len() as f32, f32::INFINITY),
             PtMethod::Power => (self.pts.light_set().alias().pdf(l) as f32, f32::INFINITY),
-            PtMethod::LightBvh => (picked.unwrap_or_else(|| self.pts.light_bvh().pmf(rc, l)), f32::INFINITY),
+            PtMethod::LightBvh => {
+                (picked.unwrap_or_else(|| self.pts.light_bvh().pmf(rc, l)), f32::INFINITY)
+            }
         };
         light_strategy_pdf(select, rt2, d2, t.area(), cos_y)
     }
@@ -220,7 +257,17 @@ impl CpuPathTracer {
     /// and, when `rr`, by the RR weight `1/p`, with the MIS weight against
     /// BSDF sampling for area lights.
     #[allow(clippy::too_many_arguments)]
-    fn connect(&self, s: &PtSettings, st: &Pass, l: usize, vx: &Vertex, rng: &mut Pcg32, nee: NeeState, rr: bool, extra: f32) -> Option<Vec3> {
+    fn connect(
+        &self,
+        s: &PtSettings,
+        st: &Pass,
+        l: usize,
+        vx: &Vertex,
+        rng: &mut Pcg32,
+        nee: NeeState,
+        rr: bool,
+        extra: f32,
+    ) -> Option<Vec3> {
         let (x, n, ng) = (vx.rc.p, vx.rc.n, vx.ng);
         let light = &self.lights()[l];
         let (u1, u2) = (xi_from_bits(rng.next_u32()), xi_from_bits(rng.next_u32()));
@@ -229,7 +276,8 @@ impl CpuPathTracer {
             _ => light.bound().center,
         };
         // The receiver's range scale toward this light (SLC's methods only).
-        let rs = if rr { vx.rc.range_scale_to(vx.rl, &self.pts.light_set().cones()[l]) } else { 1.0 };
+        let rs =
+            if rr { vx.rc.range_scale_to(vx.rl, &self.pts.light_set().cones()[l]) } else { 1.0 };
         // The baselines cull nothing: r² = +∞ keeps every light.
         let cos_x = connection_cosine(x, y, n, ng, if rr { rs * st.r2[l] } else { f32::INFINITY });
         if cos_x <= 0.0 {
@@ -251,7 +299,10 @@ impl CpuPathTracer {
         let to_light = -wdir;
         let mis = match light {
             // The one-light methods (no RR) pass `extra = 1/pmf` of their pick.
-            Light::Triangle(_) => mis_power(self.light_pdf(s, st, l, &vx.rc, y, nee, true, (!rr).then(|| 1.0 / extra)), vx.bsdf_pdf(to_light)),
+            Light::Triangle(_) => mis_power(
+                self.light_pdf(s, st, l, &vx.rc, y, nee, true, (!rr).then(|| 1.0 / extra)),
+                vx.bsdf_pdf(to_light),
+            ),
             _ => 1.0,
         };
         Some(vx.mat.eval(n, vx.wo, to_light) * i * connection_factor(cos_x, d2, rt2, extra * mis))
@@ -276,7 +327,9 @@ impl CpuPathTracer {
             }
             PtMethod::SlcReservoir => {
                 let mut res = Reservoir::<RESERVOIR_K>::new();
-                self.bsh.for_each_reaching(x, vx.rc.r, vx.rl, |l| res.push(l, rng.next_u32(), rng.next_u32()));
+                self.bsh.for_each_reaching(x, vx.rc.r, vx.rl, |l| {
+                    res.push(l, rng.next_u32(), rng.next_u32())
+                });
                 let (nee, w) = (NeeState { seen: res.seen(), w_sum: 0.0 }, res.weight());
                 for &l in res.picks() {
                     if let Some(c) = self.connect(s, st, l as usize, vx, rng, nee, true, w) {
@@ -310,7 +363,8 @@ impl CpuPathTracer {
                     _ => self.pts.light_bvh().sample(&vx.rc, u),
                 };
                 if let Some((l, select)) = picked.filter(|&(_, p)| p > 0.0)
-                    && let Some(c) = self.connect(s, st, l, vx, rng, NeeState::default(), false, 1.0 / select)
+                    && let Some(c) =
+                        self.connect(s, st, l, vx, rng, NeeState::default(), false, 1.0 / select)
                 {
                     sum += c;
                 }
@@ -324,7 +378,12 @@ impl CpuPathTracer {
     /// candidate offered to [`WEIGHTED_K`] one-slot weighted reservoirs
     /// with its weight ([`slc_core::importance::LightCone::weight`]); also
     /// the number of candidates.
-    fn weighted_picks(&self, st: &Pass, rc: &Receiver, rng: &mut Pcg32) -> (WeightedReservoir<WEIGHTED_K>, u32) {
+    fn weighted_picks(
+        &self,
+        st: &Pass,
+        rc: &Receiver,
+        rng: &mut Pcg32,
+    ) -> (WeightedReservoir<WEIGHTED_K>, u32) {
         let mut res = WeightedReservoir::<WEIGHTED_K>::new();
         let cones = self.pts.light_set().cones();
         let mut seen = 0;
@@ -343,7 +402,16 @@ impl CpuPathTracer {
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn trace(&self, px: u32, py: u32, w: u32, h: u32, s: &PtSettings, st: &Pass, rng: &mut Pcg32) -> Vec3 {
+    fn trace(
+        &self,
+        px: u32,
+        py: u32,
+        w: u32,
+        h: u32,
+        s: &PtSettings,
+        st: &Pass,
+        rng: &mut Pcg32,
+    ) -> Vec3 {
         let scene = self.pts.scene();
         let cam = &scene.camera;
         let sx = jittered_pixel(px, xi_from_bits(rng.next_u32()));
@@ -360,7 +428,9 @@ impl CpuPathTracer {
         // `max_depth` vertices with next-event estimation, then the emission
         // the last one's BSDF sample finds (MIS's other share of it).
         for depth in 0..=s.max_depth {
-            let Some(hit) = self.geo.intersect(org, dir, ray_t_min(diag), f32::INFINITY) else { break };
+            let Some(hit) = self.geo.intersect(org, dir, ray_t_min(diag), f32::INFINITY) else {
+                break;
+            };
             let x = org + dir * hit.t;
             let tri = hit.triangle as usize;
             let geo_n = self.geo.normal(hit.triangle);
@@ -398,7 +468,11 @@ impl CpuPathTracer {
                 break;
             }
             // f·cos/pdf; for a Lambertian surface exactly its albedo.
-            beta *= if mat.has_specular() { mat.eval(n, vx.wo, nd) * (nd.dot(n) / pdf) } else { mat.albedo };
+            beta *= if mat.has_specular() {
+                mat.eval(n, vx.wo, nd) * (nd.dot(n) / pdf)
+            } else {
+                mat.albedo
+            };
             prev = Some((vx.rc, nee, pdf));
             org = x + ng * surface_offset(diag);
             dir = nd;
@@ -435,7 +509,15 @@ struct Vertex {
 impl Vertex {
     fn new(mat: Material, x: Vec3, n: Vec3, ng: Vec3, wo: Vec3) -> Vertex {
         let rc = mat.receiver(x, n, wo);
-        Vertex { rc, ng, mat, wo, alpha: mat.alpha(), p_spec: specular_probability(rc.lobe), rl: rc.range_lobe() }
+        Vertex {
+            rc,
+            ng,
+            mat,
+            wo,
+            alpha: mat.alpha(),
+            p_spec: specular_probability(rc.lobe),
+            rl: rc.range_lobe(),
+        }
     }
 
     /// The BSDF sampling pdf of the unit direction `l` ([`bsdf_pdf`]).
@@ -451,7 +533,12 @@ impl PathTracer for CpuPathTracer {
         format!("cpu ({} threads)", rayon::current_num_threads())
     }
 
-    fn render(&mut self, acc: &mut PtRender, settings: &PtSettings, passes: u32) -> Result<Timing, RenderError> {
+    fn render(
+        &mut self,
+        acc: &mut PtRender,
+        settings: &PtSettings,
+        passes: u32,
+    ) -> Result<Timing, RenderError> {
         CpuPathTracer::render(self, acc, settings, passes)?;
         Ok(Timing::Wall)
     }
@@ -475,15 +562,19 @@ mod tests {
     /// other candidates. For a Lambertian and a glossy receiver.
     #[test]
     fn mis_weights_sum_to_one() {
-        let mut pts = CpuPathTracer::new(&PtScene::new(&Scene::cornell_box_split_light(4), &[]).unwrap());
+        let mut pts =
+            CpuPathTracer::new(&PtScene::new(&Scene::cornell_box_split_light(4), &[]).unwrap());
         let (x, n) = (Vec3::new(0.3, 0.0, 0.3), Vec3::Y);
         let params = RangeParams::new(0.005, 1.0).unwrap();
         let st = pts.pass_state(PtMethod::SlcWeighted, &params, 7, 0).unwrap();
         let wo = Vec3::new(0.3, 0.8, -0.2).normalize();
         let (mut inside, mut outside) = (0, 0);
-        for (mat, method) in [Material::lambertian(Vec3::splat(0.5), Vec3::ZERO), Material::gltf(Vec3::splat(0.9), 1.0, 0.4)]
-            .into_iter()
-            .flat_map(|m| PtMethod::ALL.map(|method| (m, method)))
+        for (mat, method) in [
+            Material::lambertian(Vec3::splat(0.5), Vec3::ZERO),
+            Material::gltf(Vec3::splat(0.9), 1.0, 0.4),
+        ]
+        .into_iter()
+        .flat_map(|m| PtMethod::ALL.map(|method| (m, method)))
         {
             let vx = Vertex::new(mat, x, n, n, wo);
             let rc = vx.rc;
@@ -509,10 +600,19 @@ mod tests {
                         outside += 1;
                         if method == PtMethod::SlcWeighted {
                             let w = pts.pts.light_set().cones()[l].weight(&rc, rs * st.rt2[l]);
-                            let select = weighted_select_pdf(w, nee.w_sum + w, true, WEIGHTED_K as u32);
-                            let expect =
-                                light_strategy_pdf(select, rs * st.rt2[l], (x - y).length_squared(), t.area(), t.normal().dot((x - y).normalize()));
-                            assert!((p_light_hit - expect).abs() <= 1e-5 * expect, "{p_light_hit} vs {expect}");
+                            let select =
+                                weighted_select_pdf(w, nee.w_sum + w, true, WEIGHTED_K as u32);
+                            let expect = light_strategy_pdf(
+                                select,
+                                rs * st.rt2[l],
+                                (x - y).length_squared(),
+                                t.area(),
+                                t.normal().dot((x - y).normalize()),
+                            );
+                            assert!(
+                                (p_light_hit - expect).abs() <= 1e-5 * expect,
+                                "{p_light_hit} vs {expect}"
+                            );
                         }
                         continue;
                     }
@@ -525,18 +625,38 @@ mod tests {
                         PtMethod::LightBvh => Some(pts.pts.light_bvh().pmf(&rc, l)),
                         _ => None,
                     };
-                    let p_light_nee = pts.light_pdf(&s, &st, l, &rc, y, nee, true, picked.map(|p| 1.0 / (1.0 / p)));
-                    assert!((p_light_nee - p_light_hit).abs() <= 1e-6 * p_light_hit, "{}: {p_light_nee} vs {p_light_hit}", method.name());
+                    let p_light_nee = pts.light_pdf(
+                        &s,
+                        &st,
+                        l,
+                        &rc,
+                        y,
+                        nee,
+                        true,
+                        picked.map(|p| 1.0 / (1.0 / p)),
+                    );
+                    assert!(
+                        (p_light_nee - p_light_hit).abs() <= 1e-6 * p_light_hit,
+                        "{}: {p_light_nee} vs {p_light_hit}",
+                        method.name()
+                    );
                     let p_bsdf = vx.bsdf_pdf((y - x).normalize());
                     assert!(p_bsdf > 0.0);
                     let w_light = mis_power(p_light_nee, p_bsdf);
                     let w_bsdf = mis_power(p_bsdf, p_light_hit);
-                    assert!((w_light + w_bsdf - 1.0).abs() < 1e-6, "{}: {w_light} + {w_bsdf}", method.name());
+                    assert!(
+                        (w_light + w_bsdf - 1.0).abs() < 1e-6,
+                        "{}: {w_light} + {w_bsdf}",
+                        method.name()
+                    );
                     inside += 1;
                 }
             }
         }
-        assert!(inside >= 4 * PtMethod::ALL.len() * 3 && outside >= 4 * PtMethod::ALL.len() * 3, "{inside} in range, {outside} outside");
+        assert!(
+            inside >= 4 * PtMethod::ALL.len() * 3 && outside >= 4 * PtMethod::ALL.len() * 3,
+            "{inside} in range, {outside} outside"
+        );
     }
 
     /// `slc-weighted` against brute-force enumeration of the candidates:
@@ -548,8 +668,11 @@ mod tests {
     #[test]
     fn weighted_picks_match_brute_force_enumeration() {
         let pts = {
-            let mut p = CpuPathTracer::new(&PtScene::new(&Scene::cornell_box_split_light(8), &[]).unwrap());
-            let st = p.pass_state(PtMethod::SlcWeighted, &RangeParams::new(0.016, 1.0).unwrap(), 3, 0).unwrap();
+            let mut p =
+                CpuPathTracer::new(&PtScene::new(&Scene::cornell_box_split_light(8), &[]).unwrap());
+            let st = p
+                .pass_state(PtMethod::SlcWeighted, &RangeParams::new(0.016, 1.0).unwrap(), 3, 0)
+                .unwrap();
             (p, st)
         };
         let (pts, st) = (&pts.0, &pts.1);
@@ -557,18 +680,31 @@ mod tests {
         // The view mirrors a point near the light's edge: its lobe covers
         // part of the split light.
         let cones = pts.pts.light_set().cones();
-        let aim = cones.iter().map(|c| c.center).sum::<Vec3>() / cones.len() as f32 + Vec3::new(0.12, 0.0, 0.0);
+        let aim = cones.iter().map(|c| c.center).sum::<Vec3>() / cones.len() as f32
+            + Vec3::new(0.12, 0.0, 0.0);
         let to = (aim - x).normalize();
-        let rc = Material::gltf(Vec3::splat(0.9), 1.0, 0.45).receiver(x, n, n * (2.0 * n.dot(to)) - to);
+        let rc =
+            Material::gltf(Vec3::splat(0.9), 1.0, 0.45).receiver(x, n, n * (2.0 * n.dot(to)) - to);
         let (rs, rl) = (rc.range_scale(), rc.range_lobe());
         assert!(rc.lobe.y > 0.0 && rs > 1.0, "a glossy receiver scales its ranges: {rs}");
         // Each light's own scale toward it, and its leaf's sphere so scaled
         // (the walk's inner nodes are not consulted).
         let scale: Vec<f32> = cones.iter().map(|c| rc.range_scale_to(rl, c)).collect();
-        assert!(scale.iter().any(|&s| s < 0.5 * rs) && scale.iter().any(|&s| s > 0.8 * rs), "scales toward the lights {scale:?}, peak {rs}");
-        let holds = |l: usize| sphere_contains_point(pts.bsh.leaf(l).center, bsh_scaled_radius(pts.bsh.leaf(l), scale[l].sqrt()), x);
-        let brute: Vec<(usize, f64)> =
-            (0..pts.light_count()).filter(|&l| holds(l)).map(|l| (l, cones[l].weight(&rc, scale[l] * st.rt2[l]) as f64)).collect();
+        assert!(
+            scale.iter().any(|&s| s < 0.5 * rs) && scale.iter().any(|&s| s > 0.8 * rs),
+            "scales toward the lights {scale:?}, peak {rs}"
+        );
+        let holds = |l: usize| {
+            sphere_contains_point(
+                pts.bsh.leaf(l).center,
+                bsh_scaled_radius(pts.bsh.leaf(l), scale[l].sqrt()),
+                x,
+            )
+        };
+        let brute: Vec<(usize, f64)> = (0..pts.light_count())
+            .filter(|&l| holds(l))
+            .map(|l| (l, cones[l].weight(&rc, scale[l] * st.rt2[l]) as f64))
+            .collect();
         let w_brute: f64 = brute.iter().map(|&(_, w)| w).sum();
         assert!(brute.len() >= 10 && brute.len() < pts.light_count(), "{} candidates", brute.len());
         let mut rng = Pcg32::new(11, 5);
@@ -577,7 +713,11 @@ mod tests {
         for _ in 0..trials {
             let (res, seen) = pts.weighted_picks(st, &rc, &mut rng);
             assert_eq!(seen as usize, brute.len());
-            assert!((res.total_weight() as f64 - w_brute).abs() <= 1e-5 * w_brute, "W {} vs {w_brute}", res.total_weight());
+            assert!(
+                (res.total_weight() as f64 - w_brute).abs() <= 1e-5 * w_brute,
+                "W {} vs {w_brute}",
+                res.total_weight()
+            );
             for (l, _) in res.picks() {
                 count[l as usize] += 1;
             }
@@ -586,8 +726,16 @@ mod tests {
         for &(l, w) in &brute {
             let p = w / w_brute;
             let (expect, sd) = (slots * p, (slots * p * (1.0 - p)).sqrt());
-            assert!((count[l] as f64 - expect).abs() <= 5.0 * sd + 1.0, "light {l}: {} picks, expected {expect:.0} ± {sd:.0}", count[l]);
+            assert!(
+                (count[l] as f64 - expect).abs() <= 5.0 * sd + 1.0,
+                "light {l}: {} picks, expected {expect:.0} ± {sd:.0}",
+                count[l]
+            );
         }
-        assert_eq!(count.iter().sum::<u32>() as f64, slots, "a light outside the candidates was picked");
+        assert_eq!(
+            count.iter().sum::<u32>() as f64,
+            slots,
+            "a light outside the candidates was picked"
+        );
     }
 }

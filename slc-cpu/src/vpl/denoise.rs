@@ -24,7 +24,8 @@ use crate::simd::SimdPath;
 use glam::Vec3;
 use rayon::prelude::*;
 use slc_core::denoise::{
-    COVER_WEIGHT, DEPTH_NONE, bilateral_weight, filtered_irradiance, inv_sigma_z, misses_subset, wide_window, window_end, window_start,
+    COVER_WEIGHT, DEPTH_NONE, bilateral_weight, filtered_irradiance, inv_sigma_z, misses_subset,
+    wide_window, window_end, window_start,
 };
 use slc_scene::vpl::GBuffer;
 
@@ -84,7 +85,9 @@ impl Denoiser {
         }
         // DEPTH_NONE stands for "no surface": every δ to it is huge, weight 0.
         p.z.resize(gb.depth.len(), 0.0);
-        p.z.par_iter_mut().zip(&gb.depth).for_each(|(o, &d)| *o = if d.is_finite() { d } else { DEPTH_NONE });
+        p.z.par_iter_mut()
+            .zip(&gb.depth)
+            .for_each(|(o, &d)| *o = if d.is_finite() { d } else { DEPTH_NONE });
         p.inv.resize(gb.depth.len(), 0.0);
         p.inv.par_iter_mut().zip(&p.z).for_each(|(o, &z)| *o = inv_sigma_z(z));
     }
@@ -94,13 +97,26 @@ impl Denoiser {
     /// empty), with a `period × period` window on the CPU's best
     /// [`SimdPath`]. `gb` is the G-buffer of the last
     /// [`Denoiser::set_gbuffer`] (one of another size is split first).
-    pub fn filter_far(&mut self, e: &[Vec3], near: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
+    pub fn filter_far(
+        &mut self,
+        e: &[Vec3],
+        near: &[Vec3],
+        gb: &GBuffer,
+        period: u32,
+    ) -> Vec<Vec3> {
         self.filter_on(SimdPath::best(), e, near, gb, period)
     }
 
     /// [`Denoiser::filter_far`] on a chosen [`SimdPath`] (the baseline where
     /// the CPU lacks it).
-    pub fn filter_on(&mut self, path: SimdPath, e: &[Vec3], near: &[Vec3], gb: &GBuffer, period: u32) -> Vec<Vec3> {
+    pub fn filter_on(
+        &mut self,
+        path: SimdPath,
+        e: &[Vec3],
+        near: &[Vec3],
+        gb: &GBuffer,
+        period: u32,
+    ) -> Vec<Vec3> {
         let mut out = e.to_vec();
         self.filter_in_place_on(path, &mut out, near, gb, period);
         out
@@ -108,13 +124,26 @@ impl Denoiser {
 
     /// [`Denoiser::filter_far`] written over `e` (one value per pixel of
     /// `gb`): a frame's irradiance needs no second buffer.
-    pub fn filter_far_in_place(&mut self, e: &mut [Vec3], near: &[Vec3], gb: &GBuffer, period: u32) {
+    pub fn filter_far_in_place(
+        &mut self,
+        e: &mut [Vec3],
+        near: &[Vec3],
+        gb: &GBuffer,
+        period: u32,
+    ) {
         self.filter_in_place_on(SimdPath::best(), e, near, gb, period);
     }
 
     /// The filter on `path`: the signal is copied into the planes first,
     /// then every pixel of `e` is written from them.
-    fn filter_in_place_on(&mut self, path: SimdPath, e: &mut [Vec3], near: &[Vec3], gb: &GBuffer, period: u32) {
+    fn filter_in_place_on(
+        &mut self,
+        path: SimdPath,
+        e: &mut [Vec3],
+        near: &[Vec3],
+        gb: &GBuffer,
+        period: u32,
+    ) {
         self.load(e, near, gb, period);
         let planes = &self.planes;
         let w = planes.w.max(1);
@@ -214,18 +243,29 @@ impl pulp::WithSimd for FilterRow<'_> {
 fn filter_block(p: &Planes, gb: &GBuffer, y: usize, x: usize, out: &mut [Vec3]) {
     let (w, size) = (p.w, p.period);
     let half = (size / 2) as usize;
-    let lanes = |v: &[f32], a: usize| -> [f32; BLOCK] { v[a..a + BLOCK].try_into().expect("BLOCK") };
+    let lanes =
+        |v: &[f32], a: usize| -> [f32; BLOCK] { v[a..a + BLOCK].try_into().expect("BLOCK") };
     let c = y * w + x;
-    let (cx, cy, cz, czz, cinv) = (lanes(&p.nx, c), lanes(&p.ny, c), lanes(&p.nz, c), lanes(&p.z, c), lanes(&p.inv, c));
-    let (mut sr, mut sg, mut sb, mut sw, mut cover) = ([0.0f32; BLOCK], [0.0f32; BLOCK], [0.0f32; BLOCK], [0.0f32; BLOCK], [0u32; BLOCK]);
-    let (y0, y1) = (window_start(y as u32, size) as usize, window_end(y as u32, size, p.h as u32) as usize);
+    let (cx, cy, cz, czz, cinv) =
+        (lanes(&p.nx, c), lanes(&p.ny, c), lanes(&p.nz, c), lanes(&p.z, c), lanes(&p.inv, c));
+    let (mut sr, mut sg, mut sb, mut sw, mut cover) =
+        ([0.0f32; BLOCK], [0.0f32; BLOCK], [0.0f32; BLOCK], [0.0f32; BLOCK], [0u32; BLOCK]);
+    let (y0, y1) =
+        (window_start(y as u32, size) as usize, window_end(y as u32, size, p.h as u32) as usize);
     for yy in y0..y1 {
         for dx in 0..size as usize {
             let a = yy * w + x - half + dx;
-            let (njx, njy, njz, zj) = (lanes(&p.nx, a), lanes(&p.ny, a), lanes(&p.nz, a), lanes(&p.z, a));
+            let (njx, njy, njz, zj) =
+                (lanes(&p.nx, a), lanes(&p.ny, a), lanes(&p.nz, a), lanes(&p.z, a));
             let (rr, gg, bb) = (lanes(&p.er, a), lanes(&p.eg, a), lanes(&p.eb, a));
             for l in 0..BLOCK {
-                let wgt = bilateral_weight(Vec3::new(cx[l], cy[l], cz[l]), Vec3::new(njx[l], njy[l], njz[l]), czz[l], zj[l], cinv[l]);
+                let wgt = bilateral_weight(
+                    Vec3::new(cx[l], cy[l], cz[l]),
+                    Vec3::new(njx[l], njy[l], njz[l]),
+                    czz[l],
+                    zj[l],
+                    cinv[l],
+                );
                 sr[l] += rr[l] * wgt;
                 sg[l] += gg[l] * wgt;
                 sb[l] += bb[l] * wgt;
@@ -268,7 +308,11 @@ fn filter_pixel(p: &Planes, x: usize, y: usize) -> Vec3 {
 #[inline(always)]
 fn window_sum(p: &Planes, x: usize, y: usize, size: u32) -> (Vec3, f32, u32) {
     // The widened window's rows fill one AVX-512 register of neighbours.
-    if size as usize >= WIDE_LANES { window_sum_in::<WIDE_LANES>(p, x, y, size) } else { window_sum_in::<LANES>(p, x, y, size) }
+    if size as usize >= WIDE_LANES {
+        window_sum_in::<WIDE_LANES>(p, x, y, size)
+    } else {
+        window_sum_in::<LANES>(p, x, y, size)
+    }
 }
 
 /// [`window_sum`] in chunks of `L` neighbours.
@@ -278,9 +322,12 @@ fn window_sum_in<const L: usize>(p: &Planes, x: usize, y: usize, size: u32) -> (
     let i = y * w + x;
     let n = Vec3::new(p.nx[i], p.ny[i], p.nz[i]);
     let (zi, inv) = (p.z[i], p.inv[i]);
-    let (x0, x1) = (window_start(x as u32, size) as usize, window_end(x as u32, size, w as u32) as usize);
-    let (y0, y1) = (window_start(y as u32, size) as usize, window_end(y as u32, size, h as u32) as usize);
-    let (mut lr, mut lg, mut lb, mut lw, mut lc) = ([0.0f32; L], [0.0f32; L], [0.0f32; L], [0.0f32; L], [0u32; L]);
+    let (x0, x1) =
+        (window_start(x as u32, size) as usize, window_end(x as u32, size, w as u32) as usize);
+    let (y0, y1) =
+        (window_start(y as u32, size) as usize, window_end(y as u32, size, h as u32) as usize);
+    let (mut lr, mut lg, mut lb, mut lw, mut lc) =
+        ([0.0f32; L], [0.0f32; L], [0.0f32; L], [0.0f32; L], [0u32; L]);
     let (mut sr, mut sg, mut sb, mut sw) = (0.0f32, 0.0f32, 0.0f32, 0.0f32);
     let mut covered = 0u32;
     for yy in y0..y1 {
@@ -334,13 +381,28 @@ mod tests {
     fn every_simd_path_matches_the_per_pixel_filter() {
         // 72 × 40: interior blocks, border pixels and a partial block per row.
         let ctx = VplContext::new(&Scene::cornell_box(), 72, 40, 64, None).unwrap();
-        let shaded = ctx.shade(&VplSettings { method: VplMethod::None, near_radius: Some(0.0), ..VplSettings::default() }).unwrap();
+        let shaded = ctx
+            .shade(&VplSettings {
+                method: VplMethod::None,
+                near_radius: Some(0.0),
+                ..VplSettings::default()
+            })
+            .unwrap();
         let gb = ctx.gbuffer();
         let e = &shaded.irradiance;
         let planes = Planes::new(e, gb, PERIOD);
-        let expected: Vec<Vec3> = (0..e.len()).map(|i| if gb.valid(i) { filter_pixel(&planes, i % 72, i / 72) } else { Vec3::ZERO }).collect();
-        let widened = (0..e.len()).filter(|&i| gb.valid(i) && misses_subset(window_sum(&planes, i % 72, i / 72, PERIOD).2, PERIOD)).count();
-        assert!(widened > 0 && widened < e.len() / 2, "both window sizes occur ({widened} widened)");
+        let expected: Vec<Vec3> = (0..e.len())
+            .map(|i| if gb.valid(i) { filter_pixel(&planes, i % 72, i / 72) } else { Vec3::ZERO })
+            .collect();
+        let widened = (0..e.len())
+            .filter(|&i| {
+                gb.valid(i) && misses_subset(window_sum(&planes, i % 72, i / 72, PERIOD).2, PERIOD)
+            })
+            .count();
+        assert!(
+            widened > 0 && widened < e.len() / 2,
+            "both window sizes occur ({widened} widened)"
+        );
         for path in SimdPath::ALL {
             if !path.is_available() {
                 eprintln!("SKIP {path}: this CPU lacks it");
@@ -349,7 +411,8 @@ mod tests {
             let got = cross_bilateral_on(path, e, gb, PERIOD);
             for i in 0..e.len() {
                 assert!(
-                    (got[i] - expected[i]).abs().max_element() <= 1e-5 * expected[i].max_element().max(1e-6),
+                    (got[i] - expected[i]).abs().max_element()
+                        <= 1e-5 * expected[i].max_element().max(1e-6),
                     "{path}, pixel {i}: {} vs {}",
                     got[i],
                     expected[i]

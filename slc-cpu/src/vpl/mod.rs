@@ -34,7 +34,9 @@ use glam::Vec3;
 use rayon::prelude::*;
 use shade::{Cull, Glossy, LightList};
 use slc_core::frame::{directional_irradiance, point_irradiance};
-use slc_core::interleave::{interleave_flux_scale, interleave_shift, shifted_subset, vpl_near_range2};
+use slc_core::interleave::{
+    interleave_flux_scale, interleave_shift, shifted_subset, vpl_near_range2,
+};
 use slc_core::light::{Light, vpl_threshold_range2};
 use slc_core::range::{RangeParams, random_range2};
 use slc_core::ray::surface_offset;
@@ -44,7 +46,9 @@ use slc_scene::backend::IndirectShader;
 use slc_scene::image::Image;
 use slc_scene::scene::{Camera, PrimaryLight, Scene};
 use slc_scene::temporal::{TemporalSettings, TemporalView};
-use slc_scene::vpl::{GBuffer, PERIOD, Shaded, VplFrame, VplInputs, VplMethod, VplSettings, VplStats, Vpls};
+use slc_scene::vpl::{
+    GBuffer, PERIOD, Shaded, VplFrame, VplInputs, VplMethod, VplSettings, VplStats, Vpls,
+};
 use std::sync::{Mutex, PoisonError};
 use std::time::Instant;
 use tiling::{NO_RECEIVER, PartTiles, Tiling};
@@ -65,7 +69,11 @@ pub struct FrameHistory {
 impl FrameHistory {
     /// Empty histories for a `width × height` frame.
     pub fn new(width: u32, height: u32) -> Result<FrameHistory, RenderError> {
-        Ok(FrameHistory { irradiance: Temporal::new(width, height)?, specular: Temporal::new(width, height)?, lit_by: None })
+        Ok(FrameHistory {
+            irradiance: Temporal::new(width, height)?,
+            specular: Temporal::new(width, height)?,
+            lit_by: None,
+        })
     }
 
     /// Forgets both histories.
@@ -197,14 +205,42 @@ impl VplContext {
     /// be a positive multiple of 8 (`rsm_size²` VPLs); `width`, `height` in
     /// `1..=16384`. `min_distance` is the clamp distance of the VPL fall-off
     /// (`None`: 1% of the scene's diagonal).
-    pub fn new(scene: &Scene, width: u32, height: u32, rsm_size: u32, min_distance: Option<f32>) -> Result<Self, RenderError> {
-        let min_distance = slc_scene::vpl::check_frame(scene, width, height, rsm_size, min_distance)?;
+    pub fn new(
+        scene: &Scene,
+        width: u32,
+        height: u32,
+        rsm_size: u32,
+        min_distance: Option<f32>,
+    ) -> Result<Self, RenderError> {
+        let min_distance =
+            slc_scene::vpl::check_frame(scene, width, height, rsm_size, min_distance)?;
         let geo = Geometry::new(&scene.triangles);
-        let (gbuffer, vpls) = (GBuffer { width, height, ..GBuffer::default() }, Vpls { size: rsm_size, ..Vpls::default() });
+        let (gbuffer, vpls) = (
+            GBuffer { width, height, ..GBuffer::default() },
+            Vpls { size: rsm_size, ..Vpls::default() },
+        );
         let mut inputs = VplInputs { gbuffer, vpls, min_d2: min_distance * min_distance };
-        let (mut geometric, mut direct, mut from_gbuffer) = (Vec::new(), Vec::new(), FromGBuffer::default());
-        let base = frame_inputs(scene, &geo, true, &mut inputs, &mut geometric, &mut direct, &mut from_gbuffer);
-        Ok(VplContext { scene: scene.clone(), geo, inputs, geometric, direct, from_gbuffer, reuse: Mutex::default(), base })
+        let (mut geometric, mut direct, mut from_gbuffer) =
+            (Vec::new(), Vec::new(), FromGBuffer::default());
+        let base = frame_inputs(
+            scene,
+            &geo,
+            true,
+            &mut inputs,
+            &mut geometric,
+            &mut direct,
+            &mut from_gbuffer,
+        );
+        Ok(VplContext {
+            scene: scene.clone(),
+            geo,
+            inputs,
+            geometric,
+            direct,
+            from_gbuffer,
+            reuse: Mutex::default(),
+            base,
+        })
     }
 
     /// Renders the G-buffer, the RSM and the direct light again into the
@@ -214,7 +250,15 @@ impl VplContext {
     /// start-up, first touches of memory). The same scene gives the same
     /// buffers.
     pub fn time_inputs(&mut self) -> VplStats {
-        frame_inputs(&self.scene, &self.geo, true, &mut self.inputs, &mut self.geometric, &mut self.direct, &mut self.from_gbuffer)
+        frame_inputs(
+            &self.scene,
+            &self.geo,
+            true,
+            &mut self.inputs,
+            &mut self.geometric,
+            &mut self.direct,
+            &mut self.from_gbuffer,
+        )
     }
 
     /// Moves or changes the primary light (the CPU twin of the GPU frame's
@@ -225,7 +269,15 @@ impl VplContext {
     pub fn set_primary(&mut self, primary: PrimaryLight) -> Result<VplStats, RenderError> {
         primary.validate().map_err(|e| RenderError::Setting(e.to_string()))?;
         self.scene.primary = primary;
-        let t = frame_inputs(&self.scene, &self.geo, false, &mut self.inputs, &mut self.geometric, &mut self.direct, &mut self.from_gbuffer);
+        let t = frame_inputs(
+            &self.scene,
+            &self.geo,
+            false,
+            &mut self.inputs,
+            &mut self.geometric,
+            &mut self.direct,
+            &mut self.from_gbuffer,
+        );
         (self.base.rsm_ms, self.base.direct_ms) = (t.rsm_ms, t.direct_ms);
         Ok(t)
     }
@@ -293,7 +345,8 @@ impl VplContext {
     /// ([`GBuffer::radiance`]).
     pub fn finish(&self, shaded: Shaded, settings: &VplSettings) -> VplFrame {
         // Without a history nothing in the frame can fail.
-        self.finish_with(shaded, settings, None).unwrap_or_else(|_| unreachable!("a frame without history has no failure"))
+        self.finish_with(shaded, settings, None)
+            .unwrap_or_else(|_| unreachable!("a frame without history has no failure"))
     }
 
     /// Renders one frame with temporal accumulation: [`VplContext::shade`],
@@ -331,8 +384,17 @@ impl VplContext {
     pub fn set_camera(&mut self, camera: Camera) -> Result<VplStats, RenderError> {
         camera.validate().map_err(|e| RenderError::Setting(e.to_string()))?;
         self.scene.camera = camera;
-        let t = frame_inputs(&self.scene, &self.geo, true, &mut self.inputs, &mut self.geometric, &mut self.direct, &mut self.from_gbuffer);
-        (self.base.gbuffer_ms, self.base.rsm_ms, self.base.direct_ms) = (t.gbuffer_ms, t.rsm_ms, t.direct_ms);
+        let t = frame_inputs(
+            &self.scene,
+            &self.geo,
+            true,
+            &mut self.inputs,
+            &mut self.geometric,
+            &mut self.direct,
+            &mut self.from_gbuffer,
+        );
+        (self.base.gbuffer_ms, self.base.rsm_ms, self.base.direct_ms) =
+            (t.gbuffer_ms, t.rsm_ms, t.direct_ms);
         Ok(t)
     }
 
@@ -347,21 +409,33 @@ impl VplContext {
         let mut stats = self.base;
         stats.shading_ms = shaded.shading_ms;
         let gb = &self.inputs.gbuffer;
-        let shaded_px = (0..gb.position.len()).into_par_iter().filter(|&i| gb.valid(i)).count().max(1) as f64;
+        let shaded_px =
+            (0..gb.position.len()).into_par_iter().filter(|&i| gb.valid(i)).count().max(1) as f64;
         stats.evaluations = shaded.evaluations;
         stats.lights_per_pixel = shaded.evaluations as f64 / shaded_px;
-        stats.kept_per_pixel = shaded.kept.par_iter().map(|&k| k as u64).sum::<u64>() as f64 / shaded_px;
+        stats.kept_per_pixel =
+            shaded.kept.par_iter().map(|&k| k as u64).sum::<u64>() as f64 / shaded_px;
         let t = Instant::now();
-        let denoise = settings.denoise && settings.method != VplMethod::Reference && shaded.denoised_ms.is_none();
+        let denoise = settings.denoise
+            && settings.method != VplMethod::Reference
+            && shaded.denoised_ms.is_none();
         let filter = |mut e: Vec<Vec3>, near: &[Vec3]| -> Vec<Vec3> {
             if denoise {
                 // The near field is exact: only the interleaved far field is filtered.
-                self.from_gbuffer.denoiser.lock().unwrap_or_else(PoisonError::into_inner).filter_far_in_place(&mut e, near, gb, PERIOD);
+                self.from_gbuffer
+                    .denoiser
+                    .lock()
+                    .unwrap_or_else(PoisonError::into_inner)
+                    .filter_far_in_place(&mut e, near, gb, PERIOD);
             }
             e
         };
         let mut filtered = filter(shaded.irradiance, &shaded.near);
-        let mut specular = if shaded.specular.is_empty() { Vec::new() } else { filter(shaded.specular, &shaded.specular_near) };
+        let mut specular = if shaded.specular.is_empty() {
+            Vec::new()
+        } else {
+            filter(shaded.specular, &shaded.specular_near)
+        };
         if let Some((history, ts)) = temporal {
             let view = TemporalView::of_camera(&self.scene.camera, gb.width, gb.height);
             let changed = history.lit_by.is_some_and(|p| p != self.scene.primary);
@@ -377,8 +451,12 @@ impl VplContext {
             }
         }
         let primary = self.scene.primary;
-        let data =
-            (0..filtered.len()).into_par_iter().map(|i| gb.radiance(i, &primary, self.direct[i], filtered[i], specular.get(i).copied())).collect();
+        let data = (0..filtered.len())
+            .into_par_iter()
+            .map(|i| {
+                gb.radiance(i, &primary, self.direct[i], filtered[i], specular.get(i).copied())
+            })
+            .collect();
         // The pixel buffers serve the next frame's shading.
         self.keep_reused(Reused {
             vec3: vec![filtered, shaded.near, specular, shaded.specular_near],
@@ -398,15 +476,27 @@ impl VplContext {
             list.push(v.position[i], v.normal[i], v.flux[i], f32::INFINITY, f32::INFINITY);
         }
         let gb = &self.inputs.gbuffer;
-        let out: Vec<(Vec3, u32)> =
-            (0..gb.position.len())
-                .into_par_iter()
-                .map(|i| {
-                    if gb.valid(i) { shade::shade(&list, gb.position[i], gb.normal[i], self.inputs.min_d2, 0.0, Cull::None) } else { (Vec3::ZERO, 0) }
-                })
-                .collect();
+        let out: Vec<(Vec3, u32)> = (0..gb.position.len())
+            .into_par_iter()
+            .map(|i| {
+                if gb.valid(i) {
+                    shade::shade(
+                        &list,
+                        gb.position[i],
+                        gb.normal[i],
+                        self.inputs.min_d2,
+                        0.0,
+                        Cull::None,
+                    )
+                } else {
+                    (Vec3::ZERO, 0)
+                }
+            })
+            .collect();
         let shaded = (0..out.len()).filter(|&i| gb.valid(i)).count() as u64;
-        let specular = self.specular_at_every_glossy_pixel(|g| shade::shade_specular(&list, g, self.inputs.min_d2, 0.0, Cull::None));
+        let specular = self.specular_at_every_glossy_pixel(|g| {
+            shade::shade_specular(&list, g, self.inputs.min_d2, 0.0, Cull::None)
+        });
         Fields {
             irradiance: out.iter().map(|o| o.0).collect(),
             near: Vec::new(),
@@ -424,7 +514,10 @@ impl VplContext {
         if !gb.has_specular() {
             return Vec::new();
         }
-        (0..gb.position.len()).into_par_iter().map(|i| Glossy::at(gb, i).map_or(Vec3::ZERO, |g| shade(&g))).collect()
+        (0..gb.position.len())
+            .into_par_iter()
+            .map(|i| Glossy::at(gb, i).map_or(Vec3::ZERO, |g| shade(&g)))
+            .collect()
     }
 
     /// Interleaved sampling with tiled culling per sub-image: the far field
@@ -433,7 +526,12 @@ impl VplContext {
     /// specular lobe, the kept counts and evaluations of both. The tiles are
     /// the context's [`Tiling::interleaved`] (built with the G-buffer) for
     /// the default tile size, built here for another.
-    fn shade_interleaved(&self, method: VplMethod, params: &RangeParams, s: &VplSettings) -> Fields {
+    fn shade_interleaved(
+        &self,
+        method: VplMethod,
+        params: &RangeParams,
+        s: &VplSettings,
+    ) -> Fields {
         let gb = &self.inputs.gbuffer;
         let p = PERIOD as usize;
         let cull = match method {
@@ -454,14 +552,29 @@ impl VplContext {
         let mut reused = self.take_reused();
         let ranges = self.ranges(cull, params, s);
         let shift = interleave_shift(s.seed, s.frame, PERIOD);
-        let (mut far, mut near_lights) = (std::mem::take(&mut reused.far), std::mem::take(&mut reused.near_lights));
+        let (mut far, mut near_lights) =
+            (std::mem::take(&mut reused.far), std::mem::take(&mut reused.near_lights));
         // The near field's light list is built (one thread) while the far
         // field is shaded (the other, and both once it is built).
         rayon::join(
             || {
                 far.shade_parts(tiling, |class, part, out, spec, scratch| {
-                    self.subset_lights_into(&mut scratch.all, shifted_subset(class as u32, shift, PERIOD) as usize, &ranges);
-                    shade_part(part, &scratch.all, cull != Cull::None, cull, min_d2, near_r2, out, spec, &mut scratch.lists)
+                    self.subset_lights_into(
+                        &mut scratch.all,
+                        shifted_subset(class as u32, shift, PERIOD) as usize,
+                        &ranges,
+                    );
+                    shade_part(
+                        part,
+                        &scratch.all,
+                        cull != Cull::None,
+                        cull,
+                        min_d2,
+                        near_r2,
+                        out,
+                        spec,
+                        &mut scratch.lists,
+                    )
                 })
             },
             || self.near_lights_into(&mut near_lights, &ranges, near_r2, cull),
@@ -471,13 +584,17 @@ impl VplContext {
         // Each pixel adds its far field to its near field, in parallel, in
         // one pass that also writes the near field alone.
         let nt = &self.from_gbuffer.near;
-        let (mut irradiance, mut kept, mut near_field) = (reused.vec3(), reused.counts(), reused.vec3());
+        let (mut irradiance, mut kept, mut near_field) =
+            (reused.vec3(), reused.counts(), reused.vec3());
         let sum = |i: usize| {
             let ((f, kf), (n, kn)) = (far.at(tiling, i), near.at(nt, i));
             ((f + n, kf + kn), n)
         };
         if near.out.is_empty() {
-            (0..w * h).into_par_iter().map(|i| sum(i).0).unzip_into_vecs(&mut irradiance, &mut kept);
+            (0..w * h)
+                .into_par_iter()
+                .map(|i| sum(i).0)
+                .unzip_into_vecs(&mut irradiance, &mut kept);
         } else {
             let mut all = ((irradiance, kept), near_field);
             all.par_extend((0..w * h).into_par_iter().map(sum));
@@ -491,7 +608,8 @@ impl VplContext {
             }
             out
         };
-        let specular = pixels(!far.spec.is_empty(), &|i| far.specular_at(tiling, i) + near.specular_at(nt, i));
+        let specular =
+            pixels(!far.spec.is_empty(), &|i| far.specular_at(tiling, i) + near.specular_at(nt, i));
         let specular_near = pixels(!near.spec.is_empty(), &|i| near.specular_at(nt, i));
         let evaluations = near.evals + far.evals;
         (reused.far, reused.near, reused.near_lights) = (far, near, near_lights);
@@ -505,7 +623,10 @@ impl VplContext {
     fn ranges(&self, cull: Cull, params: &RangeParams, s: &VplSettings) -> Vec<(f32, f32)> {
         let v = &self.inputs.vpls;
         let scale = interleave_flux_scale(PERIOD);
-        (0..v.len()).into_par_iter().map(|i| light_ranges(cull, params, s, i, v.flux[i] * scale)).collect()
+        (0..v.len())
+            .into_par_iter()
+            .map(|i| light_ranges(cull, params, s, i, v.flux[i] * scale))
+            .collect()
     }
 
     /// The far field's lights of VPL subset `sub` (`sy·P + sx`) into `all`
@@ -522,7 +643,9 @@ impl VplContext {
         all.clear();
         for by in (0..m).step_by(4) {
             for bx in (0..m).step_by(4) {
-                for (u, w) in (0..16).map(|k| (bx + k % 4, by + k / 4)).filter(|&(u, w)| u < m && w < m) {
+                for (u, w) in
+                    (0..16).map(|k| (bx + k % 4, by + k / 4)).filter(|&(u, w)| u < m && w < m)
+                {
                     let i = (sy + w * p) * size + sx + u * p;
                     let (rt2, r2) = ranges[i];
                     all.push(v.position[i], v.normal[i], v.flux[i] * scale, rt2, r2);
@@ -539,7 +662,13 @@ impl VplContext {
     /// field's ξ, [`slc_core::interleave::vpl_near_range2`]; clamp at its
     /// range; none not at all) and their chunk boxes. Empty when
     /// `near_r2 = 0`.
-    fn near_lights_into(&self, all: &mut LightList, ranges: &[(f32, f32)], near_r2: f32, cull: Cull) {
+    fn near_lights_into(
+        &self,
+        all: &mut LightList,
+        ranges: &[(f32, f32)],
+        near_r2: f32,
+        cull: Cull,
+    ) {
         all.clear();
         if near_r2 <= 0.0 {
             return;
@@ -549,7 +678,11 @@ impl VplContext {
             if v.flux[i] != Vec3::ZERO {
                 // The interleaved light's ranges, then the VPL's own.
                 let (rt2, r2) = ranges[i];
-                let (rt2, r2) = if cull == Cull::Slc { (vpl_near_range2(rt2, PERIOD), vpl_near_range2(r2, PERIOD)) } else { (rt2, r2) };
+                let (rt2, r2) = if cull == Cull::Slc {
+                    (vpl_near_range2(rt2, PERIOD), vpl_near_range2(r2, PERIOD))
+                } else {
+                    (rt2, r2)
+                };
                 all.push_near(v.position[i], v.normal[i], v.flux[i], rt2, r2, near_r2);
             }
         }
@@ -568,14 +701,23 @@ impl VplContext {
     /// the lights, tiles cull their region's list, each light's sphere of
     /// radius `min(r, R_n)` ([`slc_core::interleave::vpl_near_cull_range2`])
     /// against the box of the G-buffer positions.
-    fn shade_near_in(&self, r: &mut PerReceiver, tiling: &Tiling, all: &LightList, near_r2: f32, cull: Cull) {
+    fn shade_near_in(
+        &self,
+        r: &mut PerReceiver,
+        tiling: &Tiling,
+        all: &LightList,
+        near_r2: f32,
+        cull: Cull,
+    ) {
         if near_r2 <= 0.0 {
             r.clear();
             return;
         }
         let near_cull = if cull == Cull::Slc { Cull::NearSlc } else { Cull::Near };
         let min_d2 = self.inputs.min_d2;
-        r.shade_parts(tiling, |_, part, out, spec, scratch| shade_part(part, all, true, near_cull, min_d2, near_r2, out, spec, &mut scratch.lists));
+        r.shade_parts(tiling, |_, part, out, spec, scratch| {
+            shade_part(part, all, true, near_cull, min_d2, near_r2, out, spec, &mut scratch.lists)
+        });
     }
 }
 
@@ -668,7 +810,9 @@ impl PerReceiver {
     fn shade_parts(
         &mut self,
         tiling: &Tiling,
-        shade: impl Fn(usize, &PartTiles, &mut [(Vec3, u32)], &mut [Vec3], &mut Scratch) -> u64 + Sync + Send,
+        shade: impl Fn(usize, &PartTiles, &mut [(Vec3, u32)], &mut [Vec3], &mut Scratch) -> u64
+        + Sync
+        + Send,
     ) {
         // Every receiver's `out` is written below: its old values need no
         // clearing (only a new size is filled).
@@ -684,7 +828,9 @@ impl PerReceiver {
             .zip(tiling.split(&mut self.out))
             .zip(tiling.split_glossy(&mut self.spec))
             .enumerate()
-            .map_init(Scratch::default, |scratch, (k, ((part, out), spec))| shade(k, part, out, spec, scratch))
+            .map_init(Scratch::default, |scratch, (k, ((part, out), spec))| {
+                shade(k, part, out, spec, scratch)
+            })
             .sum();
     }
 
@@ -716,11 +862,20 @@ impl PerReceiver {
 /// already × `P²`) under `cull`: SLC's from the error bound and the VPL's ξ
 /// (`xi_for(seed, frame, i)`, or `fixed_xi`), the clamp range `(0, R²)`,
 /// or `(∞, ∞)` unculled.
-fn light_ranges(cull: Cull, params: &RangeParams, s: &VplSettings, i: usize, flux: Vec3) -> (f32, f32) {
+fn light_ranges(
+    cull: Cull,
+    params: &RangeParams,
+    s: &VplSettings,
+    i: usize,
+    flux: Vec3,
+) -> (f32, f32) {
     match cull {
         Cull::Slc => {
             let rt2 = vpl_threshold_range2(params, flux);
-            (rt2, random_range2(rt2, s.fixed_xi.unwrap_or_else(|| xi_for(s.seed, s.frame, i as u32))))
+            (
+                rt2,
+                random_range2(rt2, s.fixed_xi.unwrap_or_else(|| xi_for(s.seed, s.frame, i as u32))),
+            )
         }
         Cull::Clamp => (0.0, s.range * s.range),
         _ => (f32::INFINITY, f32::INFINITY),
@@ -792,7 +947,11 @@ const SHADOW_GRID: usize = 64;
 fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer, geo_n: &[Vec3], out: &mut Vec<Vec3>) {
     let diag = scene.diagonal();
     let spot = scene.primary.spot().map(Light::Spot);
-    let map = MapView { map: scene.primary.light_map(scene.bounds()), size: SHADOW_GRID, t_min: surface_offset(diag) };
+    let map = MapView {
+        map: scene.primary.light_map(scene.bounds()),
+        size: SHADOW_GRID,
+        t_min: surface_offset(diag),
+    };
     let occluders = Occluders::new(map, geo, &scene.triangles);
     let pixel = |i: usize| -> Vec3 {
         if !gb.valid(i) {
@@ -804,7 +963,9 @@ fn direct_light(scene: &Scene, geo: &Geometry, gb: &GBuffer, geo_n: &[Vec3], out
             PrimaryLight::Spot { position, .. } => {
                 let v = position - x;
                 // A spot light's parameters are checked when the scene is.
-                let Some(spot) = spot.as_ref().filter(|_| n.dot(v) > 0.0) else { return Vec3::ZERO };
+                let Some(spot) = spot.as_ref().filter(|_| n.dot(v) > 0.0) else {
+                    return Vec3::ZERO;
+                };
                 let e = point_irradiance(spot.intensity(-v.normalize()), n, v);
                 if e == Vec3::ZERO || occluders.occluded(from, position) { Vec3::ZERO } else { e }
             }
@@ -847,7 +1008,14 @@ mod tests {
     use slc_core::light::INV_PI;
 
     /// The near field at `tiling`'s receivers, as a frame shades it.
-    fn near_field(ctx: &VplContext, tiling: &Tiling, near_r2: f32, cull: Cull, params: &RangeParams, s: &VplSettings) -> PerReceiver {
+    fn near_field(
+        ctx: &VplContext,
+        tiling: &Tiling,
+        near_r2: f32,
+        cull: Cull,
+        params: &RangeParams,
+        s: &VplSettings,
+    ) -> PerReceiver {
         let mut r = PerReceiver::default();
         let mut all = LightList::default();
         ctx.near_lights_into(&mut all, &ctx.ranges(cull, params, s), near_r2, cull);
@@ -865,29 +1033,60 @@ mod tests {
         let near_r2 = 9.0 * ctx.min_d2();
         let v = ctx.vpls();
         let gb = ctx.gbuffer();
-        for (cull, near_cull) in [(Cull::Slc, Cull::NearSlc), (Cull::Clamp, Cull::Near), (Cull::None, Cull::Near)] {
+        for (cull, near_cull) in
+            [(Cull::Slc, Cull::NearSlc), (Cull::Clamp, Cull::Near), (Cull::None, Cull::Near)]
+        {
             let s = VplSettings { range: 0.02, error_bound: 0.002, ..VplSettings::default() };
             let params = s.validate().unwrap();
             let mut all = LightList::default();
             for i in (0..v.len()).filter(|&i| v.flux[i] != Vec3::ZERO) {
-                let (rt2, r2) = light_ranges(cull, &params, &s, i, v.flux[i] * interleave_flux_scale(PERIOD));
-                let (rt2, r2) = if cull == Cull::Slc { (vpl_near_range2(rt2, PERIOD), vpl_near_range2(r2, PERIOD)) } else { (rt2, r2) };
+                let (rt2, r2) =
+                    light_ranges(cull, &params, &s, i, v.flux[i] * interleave_flux_scale(PERIOD));
+                let (rt2, r2) = if cull == Cull::Slc {
+                    (vpl_near_range2(rt2, PERIOD), vpl_near_range2(r2, PERIOD))
+                } else {
+                    (rt2, r2)
+                };
                 all.push(v.position[i], v.normal[i], v.flux[i], rt2, r2);
             }
-            let brute: Vec<(Vec3, u32)> =
-                (0..gb.position.len())
-                    .map(|i| {
-                        if gb.valid(i) { shade::shade(&all, gb.position[i], gb.normal[i], ctx.min_d2(), near_r2, near_cull) } else { (Vec3::ZERO, 0) }
-                    })
-                    .collect();
-            assert!(brute.iter().map(|b| b.1).sum::<u32>() > 1000, "{cull:?}: the near field holds lights");
+            let brute: Vec<(Vec3, u32)> = (0..gb.position.len())
+                .map(|i| {
+                    if gb.valid(i) {
+                        shade::shade(
+                            &all,
+                            gb.position[i],
+                            gb.normal[i],
+                            ctx.min_d2(),
+                            near_r2,
+                            near_cull,
+                        )
+                    } else {
+                        (Vec3::ZERO, 0)
+                    }
+                })
+                .collect();
+            assert!(
+                brute.iter().map(|b| b.1).sum::<u32>() > 1000,
+                "{cull:?}: the near field holds lights"
+            );
             for (region, tile) in [(64, 8), (32, 8), (32, 4), (16, 16), (7, 3)] {
-                let (e, kept) =
-                    near_field(&ctx, &Tiling::regions(gb, region, tile), near_r2, cull, &params, &s).per_pixel(&Tiling::regions(gb, region, tile));
+                let (e, kept) = near_field(
+                    &ctx,
+                    &Tiling::regions(gb, region, tile),
+                    near_r2,
+                    cull,
+                    &params,
+                    &s,
+                )
+                .per_pixel(&Tiling::regions(gb, region, tile));
                 for i in 0..brute.len() {
-                    assert_eq!(kept[i], brute[i].1, "{cull:?}: pixel {i}, region {region}, tile {tile}");
+                    assert_eq!(
+                        kept[i], brute[i].1,
+                        "{cull:?}: pixel {i}, region {region}, tile {tile}"
+                    );
                     assert!(
-                        (e[i] - brute[i].0).abs().max_element() <= 1e-5 * brute[i].0.max_element().max(1e-3),
+                        (e[i] - brute[i].0).abs().max_element()
+                            <= 1e-5 * brute[i].0.max_element().max(1e-3),
                         "{cull:?}: pixel {i}: {} vs {}",
                         e[i],
                         brute[i].0
@@ -920,17 +1119,22 @@ mod tests {
         let size = v.size as usize;
         let scale = interleave_flux_scale(PERIOD) as f64;
         let default_near = VplSettings::default().near_r2(min_d2);
-        for (method, near_radius, near_r2) in
-            [(VplMethod::Reference, None, 0.0), (VplMethod::None, Some(0.0), 0.0), (VplMethod::None, None, default_near)]
-        {
-            let settings = VplSettings { method, denoise: false, near_radius, ..VplSettings::default() };
-            let shift = slc_core::interleave::interleave_shift(settings.seed, settings.frame, PERIOD);
+        for (method, near_radius, near_r2) in [
+            (VplMethod::Reference, None, 0.0),
+            (VplMethod::None, Some(0.0), 0.0),
+            (VplMethod::None, None, default_near),
+        ] {
+            let settings =
+                VplSettings { method, denoise: false, near_radius, ..VplSettings::default() };
+            let shift =
+                slc_core::interleave::interleave_shift(settings.seed, settings.frame, PERIOD);
             let image = ctx.render(&settings).unwrap().image;
             let (mut glossy, mut differs, mut direct_differs) = (0, 0, 0);
             for i in 0..(w * h) as usize {
                 let (px, py) = (i % w as usize, i / w as usize);
                 let dir = scene.camera.ray_dir(px as f32, py as f32, w, h);
-                let Some(hit) = ctx.geo.intersect(scene.camera.position, dir, 0.0, f32::INFINITY) else {
+                let Some(hit) = ctx.geo.intersect(scene.camera.position, dir, 0.0, f32::INFINITY)
+                else {
                     assert_eq!(image.data[i], Vec3::ZERO, "pixel {i}: background");
                     continue;
                 };
@@ -940,7 +1144,8 @@ mod tests {
                 let (mut sum, mut lambert) = (glam::DVec3::ZERO, glam::DVec3::ZERO);
                 for k in 0..v.len() {
                     let class = interleave_subset(px as u32, py as u32, PERIOD);
-                    let in_subset = interleave_subset((k % size) as u32, (k / size) as u32, PERIOD) == shifted_subset(class, shift, PERIOD);
+                    let in_subset = interleave_subset((k % size) as u32, (k / size) as u32, PERIOD)
+                        == shifted_subset(class, shift, PERIOD);
                     let d = x - v.position[k];
                     let near = vpl_near_weight(d.length_squared(), near_r2) as f64;
                     let share = match method {
@@ -956,7 +1161,11 @@ mod tests {
                     lambert += v.flux[k].as_dvec3() * (m.albedo * INV_PI).as_dvec3() * t;
                 }
                 // The primary light's direct term: the whole BRDF toward it.
-                let f_direct = if m.has_specular() { m.eval(n, view, scene.primary.direction_from(x)) } else { m.albedo * INV_PI };
+                let f_direct = if m.has_specular() {
+                    m.eval(n, view, scene.primary.direction_from(x))
+                } else {
+                    m.albedo * INV_PI
+                };
                 let base = (gb.emission[i] + f_direct * ctx.direct[i]).as_dvec3();
                 let lambert_direct = (m.albedo * INV_PI * ctx.direct[i]).as_dvec3();
                 let expect = base + sum;
@@ -968,14 +1177,22 @@ mod tests {
                 );
                 if m.has_specular() {
                     glossy += 1;
-                    differs += ((sum - lambert).abs().max_element() > 0.1 * sum.max_element()) as u32;
+                    differs +=
+                        ((sum - lambert).abs().max_element() > 0.1 * sum.max_element()) as u32;
                     let direct = base - gb.emission[i].as_dvec3();
-                    direct_differs += ((direct - lambert_direct).abs().max_element() > 0.1 * direct.max_element()) as u32;
+                    direct_differs += ((direct - lambert_direct).abs().max_element()
+                        > 0.1 * direct.max_element()) as u32;
                 }
             }
-            assert!(glossy > 100 && differs > glossy / 4, "{method:?}: {glossy} glossy pixels, {differs} unlike Lambertian");
+            assert!(
+                glossy > 100 && differs > glossy / 4,
+                "{method:?}: {glossy} glossy pixels, {differs} unlike Lambertian"
+            );
             // The metal sphere has no diffuse lobe: its direct light is not `albedo/π · E`.
-            assert!(direct_differs > glossy / 4, "{method:?}: {glossy} glossy pixels, {direct_differs} with a direct term unlike Lambertian");
+            assert!(
+                direct_differs > glossy / 4,
+                "{method:?}: {glossy} glossy pixels, {direct_differs} with a direct term unlike Lambertian"
+            );
         }
     }
 
@@ -997,7 +1214,10 @@ mod tests {
             let s = VplSettings { method, ..VplSettings::default() };
             let (a, b) = (ctx.shade(&s).unwrap(), lambert.shade(&s).unwrap());
             assert!(b.specular.is_empty() && !a.specular.is_empty());
-            assert!(a.irradiance == b.irradiance && a.near == b.near && a.kept == b.kept, "{method:?}");
+            assert!(
+                a.irradiance == b.irradiance && a.near == b.near && a.kept == b.kept,
+                "{method:?}"
+            );
             let (ia, ib) = (ctx.finish(a, &s).image, lambert.finish(b, &s).image);
             let mut changed = 0;
             for i in 0..ia.data.len() {
@@ -1027,8 +1247,12 @@ mod tests {
             VplSettings { method: VplMethod::Clamp, denoise: false, ..VplSettings::default() },
             VplSettings { frame: 5, ..VplSettings::default() },
         ];
-        let fresh: Vec<Vec<Vec3>> =
-            settings.iter().map(|s| VplContext::new(&scene, 40, 32, 64, None).unwrap().render(s).unwrap().image.data).collect();
+        let fresh: Vec<Vec<Vec3>> = settings
+            .iter()
+            .map(|s| {
+                VplContext::new(&scene, 40, 32, 64, None).unwrap().render(s).unwrap().image.data
+            })
+            .collect();
         for round in 0..2 {
             let _unfinished = ctx.shade(&settings[1]).unwrap();
             for (s, expected) in settings.iter().zip(&fresh) {

@@ -28,7 +28,11 @@ pub fn reflective_shadow_map_into(scene: &Scene, geo: &Geometry, vpls: &mut Vpls
     let size = vpls.size;
     let n = size as usize * size as usize;
     let map = scene.primary.light_map(scene.bounds());
-    let hits = closest_hits(&MapView { map, size: size as usize, t_min: surface_offset(scene.diagonal()) }, geo, &scene.triangles);
+    let hits = closest_hits(
+        &MapView { map, size: size as usize, t_min: surface_offset(scene.diagonal()) },
+        geo,
+        &scene.triangles,
+    );
     let spot = scene.primary.spot().map(Light::Spot);
     let texel = |i: usize| -> (Vec3, (Vec3, Vec3)) {
         let (tx, ty) = (i % size as usize, i / size as usize);
@@ -39,7 +43,9 @@ pub fn reflective_shadow_map_into(scene: &Scene, geo: &Geometry, vpls: &mut Vpls
         }
         let incident = match scene.primary {
             // A spot light's parameters are checked when the scene is.
-            PrimaryLight::Spot { .. } => spot.as_ref().map_or(Vec3::ZERO, |s| s.intensity(dir)) * gathered,
+            PrimaryLight::Spot { .. } => {
+                spot.as_ref().map_or(Vec3::ZERO, |s| s.intensity(dir)) * gathered
+            }
             PrimaryLight::Directional { irradiance, .. } => irradiance * gathered,
         };
         // The VPL: the hit point, its normal toward the light, the
@@ -50,7 +56,10 @@ pub fn reflective_shadow_map_into(scene: &Scene, geo: &Geometry, vpls: &mut Vpls
         (p, (scene.shading_normal(tri as usize, p, gn), incident * albedo))
     };
     if [vpls.position.len(), vpls.normal.len(), vpls.flux.len()].iter().all(|&l| l == n) {
-        (&mut vpls.position, &mut vpls.normal, &mut vpls.flux).into_par_iter().enumerate().for_each(|(i, (p, nrm, f))| (*p, (*nrm, *f)) = texel(i));
+        (&mut vpls.position, &mut vpls.normal, &mut vpls.flux)
+            .into_par_iter()
+            .enumerate()
+            .for_each(|(i, (p, nrm, f))| (*p, (*nrm, *f)) = texel(i));
     } else {
         (vpls.position, (vpls.normal, vpls.flux)) = (0..n).into_par_iter().map(texel).unzip();
     }
@@ -66,7 +75,10 @@ mod tests {
     fn rasterized_rsm_equals_ray_casting() {
         let mut scene = Scene::cornell_box();
         let geo = Geometry::new(&scene.triangles);
-        let sun = PrimaryLight::Directional { direction: Vec3::new(0.3, -1.0, 0.2), irradiance: Vec3::splat(2.0) };
+        let sun = PrimaryLight::Directional {
+            direction: Vec3::new(0.3, -1.0, 0.2),
+            irradiance: Vec3::splat(2.0),
+        };
         for primary in [scene.primary, sun] {
             scene.primary = primary;
             let size = 40;
@@ -78,10 +90,18 @@ mod tests {
                 match geo.intersect(origin, dir, surface_offset(scene.diagonal()), f32::INFINITY) {
                     Some(hit) => {
                         let p = origin + dir * hit.t;
-                        assert!((vpls.position[i] - p).length() <= 1e-5 * hit.t, "texel {i}: {} vs {p}", vpls.position[i]);
+                        assert!(
+                            (vpls.position[i] - p).length() <= 1e-5 * hit.t,
+                            "texel {i}: {} vs {p}",
+                            vpls.position[i]
+                        );
                         lit += (vpls.flux[i] != Vec3::ZERO) as usize;
                     }
-                    None => assert_eq!(vpls.flux[i], Vec3::ZERO, "texel {i}: flux where the ray caster misses"),
+                    None => assert_eq!(
+                        vpls.flux[i],
+                        Vec3::ZERO,
+                        "texel {i}: flux where the ray caster misses"
+                    ),
                 }
             }
             assert!(lit > (size * size) as usize / 4, "{primary:?}: {lit} texels lit");

@@ -15,7 +15,10 @@
 
 use glam::Vec3;
 use slc_core::brdf::{ggx_alpha, specular_correction};
-use slc_core::interleave::{vpl_far_fixed_share, vpl_far_slc_share, vpl_far_weight, vpl_near_cull_range2, vpl_near_fixed_share, vpl_near_slc_share};
+use slc_core::interleave::{
+    vpl_far_fixed_share, vpl_far_slc_share, vpl_far_weight, vpl_near_cull_range2,
+    vpl_near_fixed_share, vpl_near_slc_share,
+};
 use slc_core::light::vpl_transfer;
 use slc_core::range::cull_radius;
 use slc_core::sphere::sphere_overlaps_aabb;
@@ -151,7 +154,8 @@ impl LightList {
     /// lights' spheres). Needs [`LightList::build_chunks`]. `hits` is
     /// scratch memory for the indices.
     pub fn cull_chunked_into(&self, lo: Vec3, hi: Vec3, hits: &mut Vec<u32>, out: &mut LightList) {
-        let k = SimdPath::best().run(CullOp { list: self, lo, hi, chunked: true, hits: &mut *hits });
+        let k =
+            SimdPath::best().run(CullOp { list: self, lo, hi, chunked: true, hits: &mut *hits });
         self.gather_into(&hits[..k], out);
     }
 
@@ -161,7 +165,8 @@ impl LightList {
     /// CPU's best [`SimdPath`] over all lights, then each array is gathered
     /// in one pass. `hits` is scratch memory for the indices.
     pub fn cull_into(&self, lo: Vec3, hi: Vec3, hits: &mut Vec<u32>, out: &mut LightList) {
-        let k = SimdPath::best().run(CullOp { list: self, lo, hi, chunked: false, hits: &mut *hits });
+        let k =
+            SimdPath::best().run(CullOp { list: self, lo, hi, chunked: false, hits: &mut *hits });
         self.gather_into(&hits[..k], out);
     }
 
@@ -300,12 +305,27 @@ const LANES: usize = 8;
 /// `near_r2 > 0` each light's transfer is split by its near share `w`
 /// ([`slc_core::interleave::vpl_near_weight`]): [`Cull::Near`] takes `w`,
 /// the others `1 − w`. Runs on the CPU's best [`SimdPath`].
-pub fn shade(list: &LightList, x: Vec3, n: Vec3, min_d2: f32, near_r2: f32, cull: Cull) -> (Vec3, u32) {
+pub fn shade(
+    list: &LightList,
+    x: Vec3,
+    n: Vec3,
+    min_d2: f32,
+    near_r2: f32,
+    cull: Cull,
+) -> (Vec3, u32) {
     shade_on(SimdPath::best(), list, x, n, min_d2, near_r2, cull)
 }
 
 /// [`shade`] on a chosen [`SimdPath`] (the baseline where the CPU lacks it).
-pub fn shade_on(path: SimdPath, list: &LightList, x: Vec3, n: Vec3, min_d2: f32, near_r2: f32, cull: Cull) -> (Vec3, u32) {
+pub fn shade_on(
+    path: SimdPath,
+    list: &LightList,
+    x: Vec3,
+    n: Vec3,
+    min_d2: f32,
+    near_r2: f32,
+    cull: Cull,
+) -> (Vec3, u32) {
     let mut out = Vec::with_capacity(1);
     shade_all_on(path, list, &[(x, n)], min_d2, near_r2, cull, &mut out);
     out[0]
@@ -314,13 +334,28 @@ pub fn shade_on(path: SimdPath, list: &LightList, x: Vec3, n: Vec3, min_d2: f32,
 /// [`shade`] at every receiver `(x, n)` of `receivers` (one tile's pixels),
 /// appending `(irradiance, kept)` to `out` in receiver order: one dispatch
 /// to the CPU's best [`SimdPath`] for the whole tile.
-pub fn shade_all(list: &LightList, receivers: &[(Vec3, Vec3)], min_d2: f32, near_r2: f32, cull: Cull, out: &mut Vec<(Vec3, u32)>) {
+pub fn shade_all(
+    list: &LightList,
+    receivers: &[(Vec3, Vec3)],
+    min_d2: f32,
+    near_r2: f32,
+    cull: Cull,
+    out: &mut Vec<(Vec3, u32)>,
+) {
     shade_all_on(SimdPath::best(), list, receivers, min_d2, near_r2, cull, out);
 }
 
 /// [`shade_all`] on a chosen [`SimdPath`].
 #[inline(never)]
-pub fn shade_all_on(path: SimdPath, list: &LightList, receivers: &[(Vec3, Vec3)], min_d2: f32, near_r2: f32, cull: Cull, out: &mut Vec<(Vec3, u32)>) {
+pub fn shade_all_on(
+    path: SimdPath,
+    list: &LightList,
+    receivers: &[(Vec3, Vec3)],
+    min_d2: f32,
+    near_r2: f32,
+    cull: Cull,
+    out: &mut Vec<(Vec3, u32)>,
+) {
     let at = At { list, receivers, min_d2, near_r2, out };
     match cull {
         Cull::Slc => path.run(ShadeOp::<SLC>(at)),
@@ -400,7 +435,16 @@ fn cull_share<const MODE: u8>(rt2: f32, r2: f32, d2: f32, near_r2: f32) -> f32 {
 /// keep test is a coin flip per light: branches mispredict).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn term<const MODE: u8>(p: Vec3, nl: Vec3, rt2: f32, r2: f32, x: Vec3, n: Vec3, min_d2: f32, near_r2: f32) -> (f32, f32) {
+fn term<const MODE: u8>(
+    p: Vec3,
+    nl: Vec3,
+    rt2: f32,
+    r2: f32,
+    x: Vec3,
+    n: Vec3,
+    min_d2: f32,
+    near_r2: f32,
+) -> (f32, f32) {
     let v = x - p;
     let d2 = v.x * v.x + v.y * v.y + v.z * v.z;
     let share = cull_share::<MODE>(rt2, r2, d2, near_r2);
@@ -431,9 +475,12 @@ fn lane_sums<const MODE: u8, const L: usize, const R: usize>(
     let mut acc = [([0.0f32; L], [0.0f32; L], [0.0f32; L], [0.0f32; L]); R];
     let mut base = start;
     while base < end {
-        let (px, py, pz) = (lanes::<L>(&list.px, base), lanes::<L>(&list.py, base), lanes::<L>(&list.pz, base));
-        let (nx, ny, nz) = (lanes::<L>(&list.nx, base), lanes::<L>(&list.ny, base), lanes::<L>(&list.nz, base));
-        let (fr, fg, fb) = (lanes::<L>(&list.fr, base), lanes::<L>(&list.fg, base), lanes::<L>(&list.fb, base));
+        let (px, py, pz) =
+            (lanes::<L>(&list.px, base), lanes::<L>(&list.py, base), lanes::<L>(&list.pz, base));
+        let (nx, ny, nz) =
+            (lanes::<L>(&list.nx, base), lanes::<L>(&list.ny, base), lanes::<L>(&list.nz, base));
+        let (fr, fg, fb) =
+            (lanes::<L>(&list.fr, base), lanes::<L>(&list.fg, base), lanes::<L>(&list.fb, base));
         let (rt2, r2) = (lanes::<L>(&list.rt2, base), lanes::<L>(&list.r2, base));
         for l in 0..L {
             let (p, nl) = (Vec3::new(px[l], py[l], pz[l]), Vec3::new(nx[l], ny[l], nz[l]));
@@ -454,7 +501,12 @@ fn lane_sums<const MODE: u8, const L: usize, const R: usize>(
 /// The light loop at `R` receivers at once: chunks of [`LANES`] lanes (the
 /// lists' padding), then single lights (unpadded lists).
 #[inline(always)]
-fn shade_impl<const MODE: u8, const R: usize>(list: &LightList, at: [(Vec3, Vec3); R], min_d2: f32, near_r2: f32) -> [(Vec3, u32); R] {
+fn shade_impl<const MODE: u8, const R: usize>(
+    list: &LightList,
+    at: [(Vec3, Vec3); R],
+    min_d2: f32,
+    near_r2: f32,
+) -> [(Vec3, u32); R] {
     let len = list.len();
     let full = len / LANES * LANES;
     let chunks = lane_sums::<MODE, LANES, R>(list, 0, full, at, min_d2, near_r2);
@@ -507,7 +559,16 @@ impl Glossy {
     /// ([`slc_core::brdf::specular_correction`]).
     #[inline(always)]
     pub fn correction(&self, l: Vec3) -> Vec3 {
-        specular_correction(self.base, self.metallic, self.f0, self.f90, self.alpha, self.n, self.v, l)
+        specular_correction(
+            self.base,
+            self.metallic,
+            self.f0,
+            self.f90,
+            self.alpha,
+            self.n,
+            self.v,
+            l,
+        )
     }
 }
 
@@ -532,7 +593,16 @@ fn specular_impl<const MODE: u8>(list: &LightList, g: &Glossy, min_d2: f32, near
         let p = Vec3::new(list.px[j], list.py[j], list.pz[j]);
         // The irradiance loop's own term: the same keep test, share and
         // transfer; skipped where it is 0 (culled, or facing away).
-        let (wt, _) = term::<MODE>(p, Vec3::new(list.nx[j], list.ny[j], list.nz[j]), list.rt2[j], list.r2[j], g.x, g.n, min_d2, near_r2);
+        let (wt, _) = term::<MODE>(
+            p,
+            Vec3::new(list.nx[j], list.ny[j], list.nz[j]),
+            list.rt2[j],
+            list.r2[j],
+            g.x,
+            g.n,
+            min_d2,
+            near_r2,
+        );
         if wt <= 0.0 {
             continue;
         }
@@ -576,13 +646,27 @@ mod tests {
                         // Above the lights, facing down at them.
                         let x = Vec3::new(u(), u(), 1.05 + 0.01 * i as f32);
                         let (e, k) = shade_on(path, &list, x, Vec3::NEG_Z, 1e-4, near_r2, cull);
-                        let (e0, k0) = shade_on(SimdPath::Baseline, &list, x, Vec3::NEG_Z, 1e-4, near_r2, cull);
+                        let (e0, k0) = shade_on(
+                            SimdPath::Baseline,
+                            &list,
+                            x,
+                            Vec3::NEG_Z,
+                            1e-4,
+                            near_r2,
+                            cull,
+                        );
                         assert_eq!(k, k0, "{path} {cull:?}: kept");
                         kept += k;
-                        assert!((e - e0).abs().max_element() <= 1e-5 * e0.max_element().max(1e-6), "{path} {cull:?}: {e} vs {e0}");
+                        assert!(
+                            (e - e0).abs().max_element() <= 1e-5 * e0.max_element().max(1e-6),
+                            "{path} {cull:?}: {e} vs {e0}"
+                        );
                     }
                     // Without a split the near field holds nothing.
-                    assert!(kept > 0 || (cull == Cull::Near && near_r2 == 0.0), "{path} {cull:?} R_n² {near_r2}: nothing kept");
+                    assert!(
+                        kept > 0 || (cull == Cull::Near && near_r2 == 0.0),
+                        "{path} {cull:?} R_n² {near_r2}: nothing kept"
+                    );
                 }
             }
         }

@@ -79,7 +79,13 @@ impl Tiling {
     }
 
     /// [`Tiling::interleaved`] in place, reusing this tiling's memory.
-    pub fn interleaved_into(&mut self, gb: &GBuffer, period: usize, tile: usize, super_tiles: usize) {
+    pub fn interleaved_into(
+        &mut self,
+        gb: &GBuffer,
+        period: usize,
+        tile: usize,
+        super_tiles: usize,
+    ) {
         let (w, h) = (gb.width as usize, gb.height as usize);
         let big = tile * super_tiles;
         self.fill_parts(gb, period * period, |sub, t| {
@@ -90,7 +96,8 @@ impl Tiling {
                     t.begin_group();
                     for ty in (by..(by + big).min(sh)).step_by(tile) {
                         for tx in (bx..(bx + big).min(sw)).step_by(tile) {
-                            let rows = (ty..(ty + tile).min(sh)).map(|j| (sy + j * period) * w + sx);
+                            let rows =
+                                (ty..(ty + tile).min(sh)).map(|j| (sy + j * period) * w + sx);
                             t.push_tile(gb, rows, tx..(tx + tile).min(sw), period);
                         }
                     }
@@ -119,7 +126,12 @@ impl Tiling {
             t.begin_group();
             for ty in (y0..y1).step_by(tile) {
                 for tx in (x0..x1).step_by(tile) {
-                    t.push_tile(gb, (ty..(ty + tile).min(y1)).map(|y| y * w), tx..(tx + tile).min(x1), 1);
+                    t.push_tile(
+                        gb,
+                        (ty..(ty + tile).min(y1)).map(|y| y * w),
+                        tx..(tx + tile).min(x1),
+                        1,
+                    );
                 }
             }
             t.end_group();
@@ -129,7 +141,12 @@ impl Tiling {
     /// Refills this tiling with `parts` parts, part `k` by `fill(k, part)`
     /// (in parallel, each part's memory reused), then numbers the
     /// receivers in part order.
-    fn fill_parts(&mut self, gb: &GBuffer, parts: usize, fill: impl Fn(usize, &mut PartTiles) + Sync) {
+    fn fill_parts(
+        &mut self,
+        gb: &GBuffer,
+        parts: usize,
+        fill: impl Fn(usize, &mut PartTiles) + Sync,
+    ) {
         self.parts.resize_with(parts, PartTiles::default);
         self.parts.par_iter_mut().enumerate().for_each(|(k, t)| {
             t.clear();
@@ -179,7 +196,11 @@ impl Tiling {
     /// [`Tiling::split`], or empty slices when `out` is empty (no glossy
     /// pixel).
     pub fn split_glossy<'a, T>(&self, out: &'a mut [T]) -> Vec<&'a mut [T]> {
-        if out.is_empty() { self.parts.iter().map(|_| <&mut [T]>::default()).collect() } else { self.split(out) }
+        if out.is_empty() {
+            self.parts.iter().map(|_| <&mut [T]>::default()).collect()
+        } else {
+            self.split(out)
+        }
     }
 
     /// Number of receivers.
@@ -219,7 +240,13 @@ impl PartTiles {
 
     /// Appends a tile of the pixels `row + i·step` (each `row` start of
     /// `rows`, each `i` of `cols`) that see a surface (none: no tile).
-    fn push_tile(&mut self, gb: &GBuffer, rows: impl Iterator<Item = usize>, cols: Range<usize>, step: usize) {
+    fn push_tile(
+        &mut self,
+        gb: &GBuffer,
+        rows: impl Iterator<Item = usize>,
+        cols: Range<usize>,
+        step: usize,
+    ) {
         let (r0, s0) = (self.pixel.len(), self.glossy.len());
         let (mut lo, mut hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
         let glossy = !gb.specular.is_empty();
@@ -240,7 +267,12 @@ impl PartTiles {
         if self.pixel.len() == r0 {
             return;
         }
-        self.tiles.push(Tile { lo, hi, receivers: r0..self.pixel.len(), glossy: s0..self.glossy.len() });
+        self.tiles.push(Tile {
+            lo,
+            hi,
+            receivers: r0..self.pixel.len(),
+            glossy: s0..self.glossy.len(),
+        });
         let g = self.groups.last_mut().expect("begin_group first");
         (g.lo, g.hi) = (g.lo.min(lo), g.hi.max(hi));
     }
@@ -258,7 +290,12 @@ mod tests {
     fn tilings_cover_every_surface_pixel_once_with_boxes_that_hold_them() {
         let ctx = VplContext::new(&Scene::cornell_box_glossy(), 37, 29, 64, None).unwrap();
         let gb = ctx.gbuffer();
-        for t in [Tiling::interleaved(gb, 8, 4, 2), Tiling::interleaved(gb, 8, 3, 1), Tiling::regions(gb, 32, 8), Tiling::regions(gb, 7, 3)] {
+        for t in [
+            Tiling::interleaved(gb, 8, 4, 2),
+            Tiling::interleaved(gb, 8, 3, 1),
+            Tiling::regions(gb, 32, 8),
+            Tiling::regions(gb, 7, 3),
+        ] {
             let valid = (0..gb.position.len()).filter(|&i| gb.valid(i)).count();
             assert_eq!(t.len(), valid);
             for (p, &o) in t.parts.iter().zip(&t.offsets) {
@@ -268,7 +305,12 @@ mod tests {
                         assert_eq!(tile.receivers.start, next);
                         next = tile.receivers.end;
                         for &(x, _) in &p.points[tile.receivers.clone()] {
-                            assert!(tile.lo.cmple(x).all() && x.cmple(tile.hi).all() && g.lo.cmple(x).all() && x.cmple(g.hi).all());
+                            assert!(
+                                tile.lo.cmple(x).all()
+                                    && x.cmple(tile.hi).all()
+                                    && g.lo.cmple(x).all()
+                                    && x.cmple(g.hi).all()
+                            );
                         }
                         for &(k, _) in &p.glossy[tile.glossy.clone()] {
                             assert!(tile.receivers.contains(&k));
@@ -284,7 +326,10 @@ mod tests {
                 assert_eq!(t.receiver(i) != NO_RECEIVER, gb.valid(i), "pixel {i}");
             }
             let glossy = (0..gb.position.len()).filter(|&i| gb.specular_at(i).is_some()).count();
-            assert!(glossy > 0 && t.parts.iter().map(|p| p.glossy.len()).sum::<usize>() == glossy, "every glossy pixel has its lobe");
+            assert!(
+                glossy > 0 && t.parts.iter().map(|p| p.glossy.len()).sum::<usize>() == glossy,
+                "every glossy pixel has its lobe"
+            );
         }
     }
 }

@@ -165,8 +165,12 @@ pub struct MaterialInputs<'a> {
 }
 
 /// The formats the material textures are read in.
-const MATERIAL_FORMATS: [wgpu::TextureFormat; 4] =
-    [wgpu::TextureFormat::Rgba8Unorm, wgpu::TextureFormat::Rgba8UnormSrgb, wgpu::TextureFormat::Rgba16Float, wgpu::TextureFormat::Rgba32Float];
+const MATERIAL_FORMATS: [wgpu::TextureFormat; 4] = [
+    wgpu::TextureFormat::Rgba8Unorm,
+    wgpu::TextureFormat::Rgba8UnormSrgb,
+    wgpu::TextureFormat::Rgba16Float,
+    wgpu::TextureFormat::Rgba32Float,
+];
 
 /// What a [`DirectPass`] is built for.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -201,7 +205,13 @@ impl DirectPassDesc {
             surface: SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float },
             output_format: wgpu::TextureFormat::Rgba16Float,
             selection: DirectSelection::Weighted { k: 8 },
-            light_types: slc_shared_shaders::LightTypes { point: true, spot: true, ies: true, triangle: true, vpl: false },
+            light_types: slc_shared_shaders::LightTypes {
+                point: true,
+                spot: true,
+                ies: true,
+                triangle: true,
+                vpl: false,
+            },
             outputs: DirectOutputs::Irradiance,
         }
     }
@@ -258,7 +268,11 @@ impl DirectPass {
     /// Uploads the lights and their BSH and builds the pipelines for
     /// `desc`; checks the sizes, the light types and every device limit
     /// first, before anything is created on the device.
-    pub fn new(gpu: &GpuContext, lights: &LightSet, desc: &DirectPassDesc) -> Result<Self, GpuError> {
+    pub fn new(
+        gpu: &GpuContext,
+        lights: &LightSet,
+        desc: &DirectPassDesc,
+    ) -> Result<Self, GpuError> {
         let (w, h) = (desc.width, desc.height);
         check_size(gpu, "direct pass", (w, h), TILE)?;
         let output = output_format(desc.output_format)?;
@@ -271,7 +285,9 @@ impl DirectPass {
         if !(1..=64).contains(&k) {
             return Err(GpuError::Setting(format!("direct pass: k = {k} picks must be in 1..=64")));
         }
-        if desc.light_types.is_empty() || !types_within(light_set(lights.lights()), desc.light_types) {
+        if desc.light_types.is_empty()
+            || !types_within(light_set(lights.lights()), desc.light_types)
+        {
             return Err(GpuError::Setting(format!(
                 "direct pass: the lights are [{}], the pass compiles [{}]",
                 light_set(lights.lights()).names().join(", "),
@@ -282,10 +298,21 @@ impl DirectPass {
             DirectOutputs::Irradiance => DirectOutput::Irradiance,
             DirectOutputs::BevyRadiance => DirectOutput::BevyRadiance,
             DirectOutputs::Radiance(d) | DirectOutputs::Split(d) => {
-                if !(d.f0.is_finite() && d.f0.min_element() >= 0.0 && d.f90.is_finite() && d.f90 >= 0.0) {
-                    return Err(GpuError::Setting(format!("direct pass: dielectric F0 {} and F90 {} must be finite and non-negative", d.f0, d.f90)));
+                if !(d.f0.is_finite()
+                    && d.f0.min_element() >= 0.0
+                    && d.f90.is_finite()
+                    && d.f90 >= 0.0)
+                {
+                    return Err(GpuError::Setting(format!(
+                        "direct pass: dielectric F0 {} and F90 {} must be finite and non-negative",
+                        d.f0, d.f90
+                    )));
                 }
-                if matches!(desc.outputs, DirectOutputs::Radiance(_)) { DirectOutput::Radiance } else { DirectOutput::Split }
+                if matches!(desc.outputs, DirectOutputs::Radiance(_)) {
+                    DirectOutput::Radiance
+                } else {
+                    DirectOutput::Split
+                }
             }
         };
         let features = Features {
@@ -310,15 +337,35 @@ impl DirectPass {
                 (Kernel::BshRefit, &features, TABLES),
             ],
         )?;
-        let set = GpuLightSet::new(gpu, lights.lights(), lights.bounds(), lights.bsh(), &[], lights.cones(), None)?;
+        let set = GpuLightSet::new(
+            gpu,
+            lights.lights(),
+            lights.bounds(),
+            lights.bsh(),
+            &[],
+            lights.cones(),
+            None,
+        )?;
         let ranges_layout = KernelLayout::new(gpu, Kernel::LightRanges, &features)?;
         let shade_layout = KernelLayout::new(gpu, Kernel::DirectLight, &features)?;
         let ranges = (ranges_layout.pipeline(gpu, &features, None)?, ranges_layout);
         let shade = (shade_layout.pipeline(gpu, &features, None)?, shade_layout);
         let cull = UniformSlots::new::<CullParams>(gpu, "slc direct cull", 1);
         let view = UniformSlots::new::<ViewParams>(gpu, "slc direct view", 1);
-        let (ranges_group, lights_group) = groups(gpu, &set, &ranges.1, &shade.1, &cull, binds_cones(desc), desc.light_types.ies);
-        let s = DirectPass { gpu: gpu.clone(), desc: *desc, set, ranges, ranges_group, shade, lights_group, cull, view, cache: ViewCache::new() };
+        let (ranges_group, lights_group) =
+            groups(gpu, &set, &ranges.1, &shade.1, &cull, binds_cones(desc), desc.light_types.ies);
+        let s = DirectPass {
+            gpu: gpu.clone(),
+            desc: *desc,
+            set,
+            ranges,
+            ranges_group,
+            shade,
+            lights_group,
+            cull,
+            view,
+            cache: ViewCache::new(),
+        };
         gpu.take_errors()?;
         Ok(s)
     }
@@ -375,8 +422,15 @@ impl DirectPass {
     }
 
     fn remake_groups(&mut self) {
-        (self.ranges_group, self.lights_group) =
-            groups(&self.gpu, &self.set, &self.ranges.1, &self.shade.1, &self.cull, binds_cones(&self.desc), self.desc.light_types.ies);
+        (self.ranges_group, self.lights_group) = groups(
+            &self.gpu,
+            &self.set,
+            &self.ranges.1,
+            &self.shade.1,
+            &self.cull,
+            binds_cones(&self.desc),
+            self.desc.light_types.ies,
+        );
     }
 
     /// Checks `inputs` against the descriptor (formats, sizes, usages).
@@ -384,12 +438,21 @@ impl DirectPass {
         self.check_inputs(inputs, 0, 0).map(|_| ())
     }
 
-    fn check_inputs(&self, inputs: &DirectInputs, seed: u32, frame: u32) -> Result<ViewParams, GpuError> {
+    fn check_inputs(
+        &self,
+        inputs: &DirectInputs,
+        seed: u32,
+        frame: u32,
+    ) -> Result<ViewParams, GpuError> {
         let size = (self.desc.width, self.desc.height);
         let mut view = inputs.gbuffer.check(self.desc.surface, size, seed, frame)?;
         let storage = wgpu::TextureUsages::STORAGE_BINDING;
         check_view("output", inputs.output, size, &[self.desc.output_format], storage)?;
-        let missing = |name, what: &str| GpuError::Binding { name, expected: what.into(), found: "none".into() };
+        let missing = |name, what: &str| GpuError::Binding {
+            name,
+            expected: what.into(),
+            found: "none".into(),
+        };
         let (material, split) = match self.desc.outputs {
             DirectOutputs::Irradiance => (None, false),
             DirectOutputs::BevyRadiance => (Some(Dielectric::default()), false),
@@ -397,14 +460,24 @@ impl DirectPass {
             DirectOutputs::Split(d) => (Some(d), true),
         };
         if let Some(d) = material {
-            let m = inputs.material.ok_or_else(|| missing("material", "the G-buffer's base colour and metallic-roughness"))?;
+            let m = inputs.material.ok_or_else(|| {
+                missing("material", "the G-buffer's base colour and metallic-roughness")
+            })?;
             let tex = wgpu::TextureUsages::TEXTURE_BINDING;
             check_view("material base colour", m.base_color, size, &MATERIAL_FORMATS, tex)?;
-            check_view("material metallic-roughness", m.metallic_roughness, size, &MATERIAL_FORMATS, tex)?;
+            check_view(
+                "material metallic-roughness",
+                m.metallic_roughness,
+                size,
+                &MATERIAL_FORMATS,
+                tex,
+            )?;
             (view.f0_d, view.f90_d) = (d.f0, d.f90);
         }
         if split {
-            let s = inputs.specular.ok_or_else(|| missing("specular", "a target for the specular radiance"))?;
+            let s = inputs
+                .specular
+                .ok_or_else(|| missing("specular", "a target for the specular radiance"))?;
             check_view("specular", s, size, &[self.desc.output_format], storage)?;
         }
         Ok(view)
@@ -416,7 +489,12 @@ impl DirectPass {
     /// submission, each with its own settings: the record's uniforms go
     /// into place in command order ([`passes`](super) docs). Creates no
     /// bind group when the views are those of a recent record.
-    pub fn record(&mut self, encoder: &mut wgpu::CommandEncoder, inputs: &DirectInputs, settings: &DirectSettings) -> Result<(), GpuError> {
+    pub fn record(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        inputs: &DirectInputs,
+        settings: &DirectSettings,
+    ) -> Result<(), GpuError> {
         let view = self.check_inputs(inputs, settings.seed, settings.frame)?;
         let (slc, fixed_r2) = settings.culling.kernel_form()?;
         let (mode, exposure, error_bound) = match settings.culling {
@@ -443,12 +521,19 @@ impl DirectPass {
         uploads.record(&self.gpu, encoder);
         let g = inputs.gbuffer;
         let tex = wgpu::BindingResource::TextureView;
-        let mut views =
-            vec![("view", None), (g.surface_name(), Some(g.surface_view())), ("normal_tex", Some(g.normal)), ("out_tex", Some(inputs.output))];
+        let mut views = vec![
+            ("view", None),
+            (g.surface_name(), Some(g.surface_view())),
+            ("normal_tex", Some(g.normal)),
+            ("out_tex", Some(inputs.output)),
+        ];
         if self.desc.outputs != DirectOutputs::Irradiance
             && let Some(m) = inputs.material
         {
-            views.extend([("base_color_tex", Some(m.base_color)), ("metal_rough_tex", Some(m.metallic_roughness))]);
+            views.extend([
+                ("base_color_tex", Some(m.base_color)),
+                ("metal_rough_tex", Some(m.metallic_roughness)),
+            ]);
         }
         if matches!(self.desc.outputs, DirectOutputs::Split(_))
             && let Some(s) = inputs.specular
@@ -458,12 +543,17 @@ impl DirectPass {
         let key: Vec<wgpu::TextureView> = views.iter().filter_map(|(_, v)| v.cloned()).collect();
         let (gpu, shade, view_slots) = (&self.gpu, &self.shade.1, &self.view);
         let group0 = self.cache.get(key, || {
-            let res: Vec<(&str, wgpu::BindingResource)> =
-                views.iter().map(|&(name, v)| (name, v.map_or_else(|| view_slots.binding(), tex))).collect();
+            let res: Vec<(&str, wgpu::BindingResource)> = views
+                .iter()
+                .map(|&(name, v)| (name, v.map_or_else(|| view_slots.binding(), tex)))
+                .collect();
             shade.group(gpu, 0, &res)
         });
         let (w, h) = (self.desc.width, self.desc.height);
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc direct"), timestamp_writes: None });
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("slc direct"),
+            timestamp_writes: None,
+        });
         pass.set_pipeline(&self.ranges.0);
         pass.set_bind_group(0, &self.ranges_group, &[0]);
         pass.dispatch_workgroups(self.set.n.div_ceil(WG), 1, 1);
@@ -480,7 +570,8 @@ impl DirectPass {
 /// the lights by them, and a material's lobe scales each light's range by
 /// its bounding sphere.
 fn binds_cones(desc: &DirectPassDesc) -> bool {
-    matches!(desc.selection, DirectSelection::Weighted { .. }) || desc.outputs != DirectOutputs::Irradiance
+    matches!(desc.selection, DirectSelection::Weighted { .. })
+        || desc.outputs != DirectOutputs::Irradiance
 }
 
 /// `light_ranges`' group 0 and `direct_light`'s group 1 over `set`.
@@ -494,8 +585,22 @@ fn groups(
     ies: bool,
 ) -> (wgpu::BindGroup, wgpu::BindGroup) {
     let res = crate::kernel::whole;
-    let ranges_group = ranges.group(gpu, 0, &[("params", cull.binding()), ("peaks", res(&set.peaks)), ("rt2", res(&set.rt2)), ("r2", res(&set.r2))]);
-    let mut lights = vec![("lights", res(&set.lights)), ("rt2", res(&set.rt2)), ("r2", res(&set.r2)), ("bsh_nodes", res(&set.bsh))];
+    let ranges_group = ranges.group(
+        gpu,
+        0,
+        &[
+            ("params", cull.binding()),
+            ("peaks", res(&set.peaks)),
+            ("rt2", res(&set.rt2)),
+            ("r2", res(&set.r2)),
+        ],
+    );
+    let mut lights = vec![
+        ("lights", res(&set.lights)),
+        ("rt2", res(&set.rt2)),
+        ("r2", res(&set.r2)),
+        ("bsh_nodes", res(&set.bsh)),
+    ];
     if cones {
         lights.push(("light_cones", res(&set.cones)));
     }

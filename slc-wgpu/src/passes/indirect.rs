@@ -103,13 +103,18 @@
 //! # Ok(()) }
 //! ```
 
-use super::{Culling, FLOAT_INPUTS, GBuffer, SurfaceDesc, ViewCache, check_optional, check_size, check_view, output_format};
+use super::{
+    Culling, FLOAT_INPUTS, GBuffer, SurfaceDesc, ViewCache, check_optional, check_size, check_view,
+    output_format,
+};
 use crate::frame::Stage;
 use crate::kernel::{KernelLayout, UniformSlots, Uploads, check_kernels, storage, zeroed};
 use crate::{GpuContext, GpuError};
 use slc_core::interleave::{NEAR_BLOCK, interleave_shift};
 use slc_scene::vpl::{NEAR_FACTOR, PERIOD};
-use slc_shared_shaders::layout::{FrameParams, GpuLight, GpuMaterial, GpuNearBox, GpuVplRecord, PackParams, ViewParams, VplParams};
+use slc_shared_shaders::layout::{
+    FrameParams, GpuLight, GpuMaterial, GpuNearBox, GpuVplRecord, PackParams, ViewParams, VplParams,
+};
 use slc_shared_shaders::{CullMethod, Features, Kernel, LightTypes, VplSource};
 
 /// Tile edge of the 2-D kernels, in pixels.
@@ -262,7 +267,9 @@ impl Default for IndirectSettings {
     /// denoised; 5 cm clamp distance, the default near field.
     fn default() -> Self {
         IndirectSettings {
-            culling: Culling::Stochastic(slc_core::range::RangeParams::new(0.004, 1.0).expect("valid defaults")),
+            culling: Culling::Stochastic(
+                slc_core::range::RangeParams::new(0.004, 1.0).expect("valid defaults"),
+            ),
             seed: 1,
             frame: 0,
             denoise: true,
@@ -294,7 +301,10 @@ impl Recording {
     /// dispatch.
     pub(crate) fn record(&self, gpu: &GpuContext, encoder: &mut wgpu::CommandEncoder, label: &str) {
         self.uploads.record(gpu, encoder);
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(label), timestamp_writes: None });
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some(label),
+            timestamp_writes: None,
+        });
         for d in &self.dispatches {
             d.record(&mut pass);
         }
@@ -321,13 +331,25 @@ impl Dispatch {
 
     /// A dispatch of `pipeline` with `group` at uniform offset `offset`
     /// over `groups` workgroups.
-    pub(crate) fn new(stage: Stage, pipeline: &wgpu::ComputePipeline, group: wgpu::BindGroup, offset: Option<u32>, groups: [u32; 3]) -> Self {
+    pub(crate) fn new(
+        stage: Stage,
+        pipeline: &wgpu::ComputePipeline,
+        group: wgpu::BindGroup,
+        offset: Option<u32>,
+        groups: [u32; 3],
+    ) -> Self {
         Dispatch::with_offsets(stage, pipeline, group, offset.into_iter().collect(), groups)
     }
 
     /// [`Dispatch::new`] with a dynamic offset per dynamic uniform of the
     /// group, in binding order.
-    fn with_offsets(stage: Stage, pipeline: &wgpu::ComputePipeline, group: wgpu::BindGroup, offsets: Vec<u32>, groups: [u32; 3]) -> Self {
+    fn with_offsets(
+        stage: Stage,
+        pipeline: &wgpu::ComputePipeline,
+        group: wgpu::BindGroup,
+        offsets: Vec<u32>,
+        groups: [u32; 3],
+    ) -> Self {
         Dispatch { stage, pipeline: pipeline.clone(), group, offsets, groups }
     }
 }
@@ -380,10 +402,17 @@ pub struct IndirectPass {
     vpl_params: UniformSlots,
     update_group: wgpu::BindGroup,
     /// Keyed by the surface and normal views and the material table.
-    gbuffer_cache: ViewCache<(wgpu::TextureView, wgpu::TextureView, Option<wgpu::Buffer>), GbufferGroups>,
+    gbuffer_cache:
+        ViewCache<(wgpu::TextureView, wgpu::TextureView, Option<wgpu::Buffer>), GbufferGroups>,
     pack_cache: ViewCache<PackKey>,
     /// Keyed by the surface, normal, output and specular views and the denoise.
-    export_cache: ViewCache<(wgpu::TextureView, wgpu::TextureView, wgpu::TextureView, Option<wgpu::TextureView>, bool)>,
+    export_cache: ViewCache<(
+        wgpu::TextureView,
+        wgpu::TextureView,
+        wgpu::TextureView,
+        Option<wgpu::TextureView>,
+        bool,
+    )>,
     irradiance: wgpu::Buffer,
     filtered: wgpu::Buffer,
     /// The specular correction, raw and denoised (glossy pass).
@@ -410,14 +439,20 @@ impl IndirectPass {
         let subsets = PERIOD * PERIOD;
         let period = desc.period();
         if desc.tile_list == 0 {
-            return Err(GpuError::Setting("indirect pass: the tile light list must hold at least 1 light".into()));
+            return Err(GpuError::Setting(
+                "indirect pass: the tile light list must hold at least 1 light".into(),
+            ));
         }
         let (count, vpl_source) = match desc.vpls {
             VplSourceDesc::Rsm { size } if size == 0 || size % PERIOD != 0 => {
-                return Err(GpuError::Setting(format!("indirect pass: RSM size {size} must be a positive multiple of {PERIOD}")));
+                return Err(GpuError::Setting(format!(
+                    "indirect pass: RSM size {size} must be a positive multiple of {PERIOD}"
+                )));
             }
             VplSourceDesc::Buffer { count } if count == 0 || count % subsets != 0 => {
-                return Err(GpuError::Setting(format!("indirect pass: VPL count {count} must be a positive multiple of {subsets}")));
+                return Err(GpuError::Setting(format!(
+                    "indirect pass: VPL count {count} must be a positive multiple of {subsets}"
+                )));
             }
             VplSourceDesc::Rsm { .. } => (desc.vpls.count(), VplSource::Rsm),
             VplSourceDesc::Buffer { .. } => (desc.vpls.count(), VplSource::Buffer),
@@ -426,13 +461,29 @@ impl IndirectPass {
         let surface = desc.surface.source()?;
         let lim = &gpu.limits;
         let max_binding = lim.max_storage_buffer_binding_size.min(lim.max_buffer_size);
-        gpu.require("max_storage_buffer_binding_size (irradiance)", w as u64 * h as u64 * 16, max_binding)?;
-        gpu.require("max_storage_buffer_binding_size (lights)", count * std::mem::size_of::<GpuLight>() as u64, max_binding)?;
-        gpu.require("max_compute_workgroups_per_dimension (VPLs)", count.div_ceil(WG as u64), lim.max_compute_workgroups_per_dimension as u64)?;
+        gpu.require(
+            "max_storage_buffer_binding_size (irradiance)",
+            w as u64 * h as u64 * 16,
+            max_binding,
+        )?;
+        gpu.require(
+            "max_storage_buffer_binding_size (lights)",
+            count * std::mem::size_of::<GpuLight>() as u64,
+            max_binding,
+        )?;
+        gpu.require(
+            "max_compute_workgroups_per_dimension (VPLs)",
+            count.div_ceil(WG as u64),
+            lim.max_compute_workgroups_per_dimension as u64,
+        )?;
         let per_subset = (count / (period * period) as u64) as u32;
         let list = per_subset.clamp(1, desc.tile_list);
         let wg_bytes = slc_shared_shaders::vpl_tiled_workgroup_bytes(TILE, list);
-        gpu.require("max_compute_workgroup_storage_size (tile light list)", wg_bytes, lim.max_compute_workgroup_storage_size as u64)?;
+        gpu.require(
+            "max_compute_workgroup_storage_size (tile light list)",
+            wg_bytes,
+            lim.max_compute_workgroup_storage_size as u64,
+        )?;
 
         let vpl = LightTypes { vpl: true, ..LightTypes::default() };
         let base = Features {
@@ -447,7 +498,14 @@ impl IndirectPass {
             glossy: desc.glossy,
             ..Features::default()
         };
-        let kernels = [Kernel::VplPack, Kernel::LightUpdate, Kernel::VplTiled, Kernel::VplDenoise, Kernel::VplNear, Kernel::IrradianceExport];
+        let kernels = [
+            Kernel::VplPack,
+            Kernel::LightUpdate,
+            Kernel::VplTiled,
+            Kernel::VplDenoise,
+            Kernel::VplNear,
+            Kernel::IrradianceExport,
+        ];
         check_kernels(gpu, &kernels.map(|k| (k, &base, 0)))?;
         let mut tiled = Vec::new();
         let tiled_layout = KernelLayout::new(gpu, Kernel::VplTiled, &base)?;
@@ -465,20 +523,39 @@ impl IndirectPass {
         let vpl_params = UniformSlots::new::<VplParams>(gpu, "slc vpl params", 1);
         let irradiance = zeroed(gpu, "slc irradiance", pixels, rw);
         let filtered = zeroed(gpu, "slc filtered", pixels, rw);
-        let specular = desc.glossy.then(|| [zeroed(gpu, "slc specular", pixels, rw), zeroed(gpu, "slc specular filtered", pixels, rw)]);
+        let specular = desc.glossy.then(|| {
+            [
+                zeroed(gpu, "slc specular", pixels, rw),
+                zeroed(gpu, "slc specular filtered", pixels, rw),
+            ]
+        });
         let lights = zeroed(gpu, "slc lights", count * std::mem::size_of::<GpuLight>() as u64, rw);
         let ids = zeroed(gpu, "slc ids", count * 4, rw);
         let rt2 = zeroed(gpu, "slc rt2", count * 4, rw);
         // COPY_DST: GpuVpl's fixed ξ writes r² from the host.
         let r2 = zeroed(gpu, "slc r2", count * 4, rw | wgpu::BufferUsages::COPY_DST);
         let near_slots = zeroed(gpu, "slc near_slots", count * 4, rw);
-        let near_boxes = zeroed(gpu, "slc near_boxes", count / NEAR_BLOCK as u64 * std::mem::size_of::<GpuNearBox>() as u64, rw);
+        let near_boxes = zeroed(
+            gpu,
+            "slc near_boxes",
+            count / NEAR_BLOCK as u64 * std::mem::size_of::<GpuNearBox>() as u64,
+            rw,
+        );
         let pack = Pipe::new(gpu, Kernel::VplPack, &base)?;
         let update = Pipe::new(gpu, Kernel::LightUpdate, &base)?;
         let denoise = Pipe::new(gpu, Kernel::VplDenoise, &base)?;
         let export = Pipe::new(gpu, Kernel::IrradianceExport, &base)?;
         let b = crate::kernel::whole;
-        let update_group = update.layout.group(gpu, 0, &[("params", frame_params.binding()), ("ids", b(&ids)), ("rt2", b(&rt2)), ("r2", b(&r2))]);
+        let update_group = update.layout.group(
+            gpu,
+            0,
+            &[
+                ("params", frame_params.binding()),
+                ("ids", b(&ids)),
+                ("rt2", b(&rt2)),
+                ("r2", b(&r2)),
+            ],
+        );
         let s = IndirectPass {
             gpu: gpu.clone(),
             desc: *desc,
@@ -527,11 +604,22 @@ impl IndirectPass {
         self.check_inputs(inputs, 0, 0).map(|_| ())
     }
 
-    fn check_inputs(&self, inputs: &IndirectInputs, seed: u32, frame: u32) -> Result<ViewParams, GpuError> {
+    fn check_inputs(
+        &self,
+        inputs: &IndirectInputs,
+        seed: u32,
+        frame: u32,
+    ) -> Result<ViewParams, GpuError> {
         let size = (self.desc.width, self.desc.height);
         let tex = wgpu::TextureUsages::TEXTURE_BINDING;
         let view = inputs.gbuffer.check(self.desc.surface, size, seed, frame)?;
-        check_view("output", inputs.output, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)?;
+        check_view(
+            "output",
+            inputs.output,
+            size,
+            &[self.desc.output_format],
+            wgpu::TextureUsages::STORAGE_BINDING,
+        )?;
         check_optional(
             "materials",
             inputs.materials.is_some(),
@@ -540,12 +628,20 @@ impl IndirectPass {
             "IndirectPassDesc::glossy",
         )?;
         if let Some(m) = inputs.materials {
-            check_view("specular output", m.specular, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)?;
+            check_view(
+                "specular output",
+                m.specular,
+                size,
+                &[self.desc.output_format],
+                wgpu::TextureUsages::STORAGE_BINDING,
+            )?;
             let entry = std::mem::size_of::<GpuMaterial>() as u64;
             if m.table.size() < entry || !m.table.usage().contains(wgpu::BufferUsages::STORAGE) {
                 return Err(GpuError::Binding {
                     name: "material table",
-                    expected: format!("at least {entry} bytes (one GpuMaterial) with STORAGE usage"),
+                    expected: format!(
+                        "at least {entry} bytes (one GpuMaterial) with STORAGE usage"
+                    ),
                     found: format!("{} bytes, {:?}", m.table.size(), m.table.usage()),
                 });
             }
@@ -561,7 +657,9 @@ impl IndirectPass {
                 if b.size() < need || !b.usage().contains(wgpu::BufferUsages::STORAGE) {
                     return Err(GpuError::Binding {
                         name: "VPL buffer",
-                        expected: format!("at least {need} bytes ({count} GpuVplRecords) with STORAGE usage"),
+                        expected: format!(
+                            "at least {need} bytes ({count} GpuVplRecords) with STORAGE usage"
+                        ),
                         found: format!("{} bytes, {:?}", b.size(), b.usage()),
                     });
                 }
@@ -589,23 +687,37 @@ impl IndirectPass {
     /// nothing when they are wrong. Any number of records may share a
     /// submission, each with its own settings ([`passes`](super) docs).
     /// Creates no bind group when the views are those of a recent record.
-    pub fn record(&mut self, encoder: &mut wgpu::CommandEncoder, inputs: &IndirectInputs, settings: &IndirectSettings) -> Result<(), GpuError> {
+    pub fn record(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        inputs: &IndirectInputs,
+        settings: &IndirectSettings,
+    ) -> Result<(), GpuError> {
         self.dispatches(inputs, settings)?.record(&self.gpu, encoder, "slc indirect");
         Ok(())
     }
 
     /// The record's uniforms and dispatches in order (only those its
     /// settings run); checks the inputs and settings first.
-    pub(crate) fn dispatches(&mut self, inputs: &IndirectInputs, st: &IndirectSettings) -> Result<Recording, GpuError> {
+    pub(crate) fn dispatches(
+        &mut self,
+        inputs: &IndirectInputs,
+        st: &IndirectSettings,
+    ) -> Result<Recording, GpuError> {
         let view = self.check_inputs(inputs, st.seed, st.frame)?;
         let (slc, fixed_r2) = st.culling.kernel_form()?;
         if !(st.min_distance.is_finite() && st.min_distance >= 0.0) {
-            return Err(GpuError::Setting(format!("indirect pass: min distance {} must be finite and non-negative", st.min_distance)));
+            return Err(GpuError::Setting(format!(
+                "indirect pass: min distance {} must be finite and non-negative",
+                st.min_distance
+            )));
         }
         if let Some(r) = st.near_radius
             && !(r.is_finite() && r >= 0.0)
         {
-            return Err(GpuError::Setting(format!("indirect pass: near radius {r} must be finite and non-negative")));
+            return Err(GpuError::Setting(format!(
+                "indirect pass: near radius {r} must be finite and non-negative"
+            )));
         }
         let (w, h) = (self.desc.width, self.desc.height);
         let (rsm_size, count) = match self.desc.vpls {
@@ -640,7 +752,10 @@ impl IndirectPass {
                 pad2: 0,
             },
         );
-        uploads.push(&self.frame_params, &FrameParams { light_count: count, seed: st.seed, frame: st.frame, pad: 0 });
+        uploads.push(
+            &self.frame_params,
+            &FrameParams { light_count: count, seed: st.seed, frame: st.frame, pad: 0 },
+        );
         uploads.push(
             &self.vpl_params,
             &VplParams {
@@ -657,67 +772,92 @@ impl IndirectPass {
         let tex = wgpu::BindingResource::TextureView;
         let b = crate::kernel::whole;
         let g = inputs.gbuffer;
-        let (view_slots, vpl_slots, irradiance, filtered) = (&self.view, &self.vpl_params, &self.irradiance, &self.filtered);
-        let (tiled_layout, denoise_layout, near_layout, outs) = (&self.tiled_layout, &self.denoise.layout, &self.near_layout, &self.pack_outputs);
+        let (view_slots, vpl_slots, irradiance, filtered) =
+            (&self.view, &self.vpl_params, &self.irradiance, &self.filtered);
+        let (tiled_layout, denoise_layout, near_layout, outs) =
+            (&self.tiled_layout, &self.denoise.layout, &self.near_layout, &self.pack_outputs);
         let [lights, _, rt2, r2, near_slots, near_boxes] = outs;
         let specular = self.specular.as_ref();
         let table = inputs.materials.map(|m| m.table);
         // The kernels that read the G-buffer in place: bound to the
         // engine's views (and material table), cached by them.
-        let groups = self.gbuffer_cache.get((g.surface_view().clone(), g.normal.clone(), table.cloned()), || {
-            /// The G-buffer readers' common bindings, then `rest`.
-            fn with<'b>(
-                base: &[(&'static str, wgpu::BindingResource<'b>)],
-                rest: &[(&'static str, &'b wgpu::Buffer)],
-            ) -> Vec<(&'static str, wgpu::BindingResource<'b>)> {
-                base.iter().cloned().chain(rest.iter().map(|&(name, buf)| (name, buf.as_entire_binding()))).collect()
-            }
-            let base = [
-                ("params", vpl_slots.binding()),
-                ("view", view_slots.binding()),
-                (g.surface_name(), tex(g.surface_view())),
-                ("normal_tex", tex(g.normal)),
-            ];
-            // The glossy kernels' material table and specular target.
-            let glossy = |k: usize| match (table, specular) {
-                (Some(t), Some(sp)) => vec![("materials", t), ("specular", &sp[k])],
-                _ => Vec::new(),
-            };
-            let near = |target: &wgpu::Buffer, k: usize| {
-                let mut rest = vec![
-                    ("lights", lights),
-                    ("near_slots", near_slots),
-                    ("near_boxes", near_boxes),
-                    ("rt2", rt2),
-                    ("r2", r2),
-                    ("irradiance", target),
+        let groups = self.gbuffer_cache.get(
+            (g.surface_view().clone(), g.normal.clone(), table.cloned()),
+            || {
+                /// The G-buffer readers' common bindings, then `rest`.
+                fn with<'b>(
+                    base: &[(&'static str, wgpu::BindingResource<'b>)],
+                    rest: &[(&'static str, &'b wgpu::Buffer)],
+                ) -> Vec<(&'static str, wgpu::BindingResource<'b>)> {
+                    base.iter()
+                        .cloned()
+                        .chain(rest.iter().map(|&(name, buf)| (name, buf.as_entire_binding())))
+                        .collect()
+                }
+                let base = [
+                    ("params", vpl_slots.binding()),
+                    ("view", view_slots.binding()),
+                    (g.surface_name(), tex(g.surface_view())),
+                    ("normal_tex", tex(g.normal)),
                 ];
-                rest.extend(glossy(k));
-                near_layout.group(gpu, 0, &with(&base, &rest))
-            };
-            let mut tiled = vec![("lights", lights), ("rt2", rt2), ("r2", r2), ("irradiance", irradiance)];
-            tiled.extend(glossy(0));
-            GbufferGroups {
-                tiled: tiled_layout.group(gpu, 0, &with(&base, &tiled)),
-                denoise: denoise_layout.group(gpu, 0, &with(&base, &[("irradiance", irradiance), ("filtered", filtered)])),
-                denoise_specular: specular.map(|sp| denoise_layout.group(gpu, 0, &with(&base, &[("irradiance", &sp[0]), ("filtered", &sp[1])]))),
-                near: [near(irradiance, 0), near(filtered, 1)],
-            }
-        });
+                // The glossy kernels' material table and specular target.
+                let glossy = |k: usize| match (table, specular) {
+                    (Some(t), Some(sp)) => vec![("materials", t), ("specular", &sp[k])],
+                    _ => Vec::new(),
+                };
+                let near = |target: &wgpu::Buffer, k: usize| {
+                    let mut rest = vec![
+                        ("lights", lights),
+                        ("near_slots", near_slots),
+                        ("near_boxes", near_boxes),
+                        ("rt2", rt2),
+                        ("r2", r2),
+                        ("irradiance", target),
+                    ];
+                    rest.extend(glossy(k));
+                    near_layout.group(gpu, 0, &with(&base, &rest))
+                };
+                let mut tiled =
+                    vec![("lights", lights), ("rt2", rt2), ("r2", r2), ("irradiance", irradiance)];
+                tiled.extend(glossy(0));
+                GbufferGroups {
+                    tiled: tiled_layout.group(gpu, 0, &with(&base, &tiled)),
+                    denoise: denoise_layout.group(
+                        gpu,
+                        0,
+                        &with(&base, &[("irradiance", irradiance), ("filtered", filtered)]),
+                    ),
+                    denoise_specular: specular.map(|sp| {
+                        denoise_layout.group(
+                            gpu,
+                            0,
+                            &with(&base, &[("irradiance", &sp[0]), ("filtered", &sp[1])]),
+                        )
+                    }),
+                    near: [near(irradiance, 0), near(filtered, 1)],
+                }
+            },
+        );
         let (pack, pack_slots) = (&self.pack.layout, &self.pack_params);
         let key = match inputs.vpls {
-            VplInput::Rsm { position, normal, flux } => PackKey::Rsm(Box::new([position.clone(), normal.clone(), flux.clone()])),
+            VplInput::Rsm { position, normal, flux } => {
+                PackKey::Rsm(Box::new([position.clone(), normal.clone(), flux.clone()]))
+            }
             VplInput::Buffer(buf) => PackKey::Buffer(buf.clone()),
         };
         let pack_group = self.pack_cache.get(key, || {
             let mut res = vec![("params", pack_slots.binding())];
             match inputs.vpls {
-                VplInput::Rsm { position, normal, flux } => {
-                    res.extend([("rsm_position", tex(position)), ("rsm_normal", tex(normal)), ("rsm_flux", tex(flux))])
-                }
+                VplInput::Rsm { position, normal, flux } => res.extend([
+                    ("rsm_position", tex(position)),
+                    ("rsm_normal", tex(normal)),
+                    ("rsm_flux", tex(flux)),
+                ]),
                 VplInput::Buffer(buf) => res.push(("records", b(buf))),
             }
-            for (name, buf) in ["lights", "ids", "rt2", "r2", "near_slots", "near_boxes"].into_iter().zip(outs) {
+            for (name, buf) in
+                ["lights", "ids", "rt2", "r2", "near_slots", "near_boxes"].into_iter().zip(outs)
+            {
                 res.push((name, b(buf)));
             }
             pack.group(gpu, 0, &res)
@@ -725,7 +865,13 @@ impl IndirectPass {
         let result = if st.denoise { &self.filtered } else { &self.irradiance };
         let export = &self.export.layout;
         let specular_view = inputs.materials.map(|m| m.specular);
-        let key = (g.surface_view().clone(), g.normal.clone(), inputs.output.clone(), specular_view.cloned(), st.denoise);
+        let key = (
+            g.surface_view().clone(),
+            g.normal.clone(),
+            inputs.output.clone(),
+            specular_view.cloned(),
+            st.denoise,
+        );
         let export_group = self.export_cache.get(key, || {
             let mut res = vec![
                 ("view", view_slots.binding()),
@@ -735,7 +881,10 @@ impl IndirectPass {
                 ("out_tex", tex(inputs.output)),
             ];
             if let (Some(sp), Some(view)) = (specular, specular_view) {
-                res.extend([("specular", b(&sp[st.denoise as usize])), ("specular_tex", tex(view))]);
+                res.extend([
+                    ("specular", b(&sp[st.denoise as usize])),
+                    ("specular_tex", tex(view)),
+                ]);
             }
             export.group(gpu, 0, &res)
         });
@@ -744,8 +893,18 @@ impl IndirectPass {
             Culling::Clamped { .. } => CullMethod::Clamp,
             Culling::None => CullMethod::None,
         };
-        let tiled = &self.tiled.iter().find(|(m, _)| *m == method).ok_or(GpuError::Setting("unknown method".into()))?.1;
-        let near = &self.near.iter().find(|(m, _)| *m == method).ok_or(GpuError::Setting("unknown method".into()))?.1;
+        let tiled = &self
+            .tiled
+            .iter()
+            .find(|(m, _)| *m == method)
+            .ok_or(GpuError::Setting("unknown method".into()))?
+            .1;
+        let near = &self
+            .near
+            .iter()
+            .find(|(m, _)| *m == method)
+            .ok_or(GpuError::Setting("unknown method".into()))?
+            .1;
         let (gx, gy) = (w.div_ceil(TILE), h.div_ceil(TILE));
         let p = self.desc.period();
         let (sub_w, sub_h) = (w.div_ceil(p), h.div_ceil(p));
@@ -755,13 +914,37 @@ impl IndirectPass {
         // params (VplParams), view (ViewParams).
         let both = || vec![0, 0];
         let d2 = Dispatch::with_offsets;
-        let mut out = vec![d(Stage::VplGeneration, &self.pack.pipeline, pack_group, off(&self.pack_params), [near_blocks, 1, 1])];
+        let mut out = vec![d(
+            Stage::VplGeneration,
+            &self.pack.pipeline,
+            pack_group,
+            off(&self.pack_params),
+            [near_blocks, 1, 1],
+        )];
         if slc {
-            out.push(d(Stage::LightUpdate, &self.update.pipeline, self.update_group.clone(), off(&self.frame_params), [count.div_ceil(WG), 1, 1]));
+            out.push(d(
+                Stage::LightUpdate,
+                &self.update.pipeline,
+                self.update_group.clone(),
+                off(&self.frame_params),
+                [count.div_ceil(WG), 1, 1],
+            ));
         }
-        out.push(d2(Stage::Shading, tiled, groups.tiled, both(), [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), p * p]));
+        out.push(d2(
+            Stage::Shading,
+            tiled,
+            groups.tiled,
+            both(),
+            [sub_w.div_ceil(TILE), sub_h.div_ceil(TILE), p * p],
+        ));
         if st.denoise {
-            out.push(d2(Stage::Denoise, &self.denoise.pipeline, groups.denoise, both(), [gx, gy, 1]));
+            out.push(d2(
+                Stage::Denoise,
+                &self.denoise.pipeline,
+                groups.denoise,
+                both(),
+                [gx, gy, 1],
+            ));
             if let Some(group) = groups.denoise_specular {
                 // The same filter on the specular correction.
                 out.push(d2(Stage::Denoise, &self.denoise.pipeline, group, both(), [gx, gy, 1]));
@@ -769,9 +952,21 @@ impl IndirectPass {
         }
         if near_r2 > 0.0 {
             let [raw, denoised] = groups.near;
-            out.push(d2(Stage::NearField, near, if st.denoise { denoised } else { raw }, both(), [gx, gy, 1]));
+            out.push(d2(
+                Stage::NearField,
+                near,
+                if st.denoise { denoised } else { raw },
+                both(),
+                [gx, gy, 1],
+            ));
         }
-        out.push(d(Stage::IrradianceExport, &self.export.pipeline, export_group, off(&self.view), [gx, gy, 1]));
+        out.push(d(
+            Stage::IrradianceExport,
+            &self.export.pipeline,
+            export_group,
+            off(&self.view),
+            [gx, gy, 1],
+        ));
         Ok(Recording { uploads, dispatches: out })
     }
 }

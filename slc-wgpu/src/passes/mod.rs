@@ -73,8 +73,14 @@ pub mod direct;
 pub mod indirect;
 pub mod temporal;
 
-pub use direct::{Dielectric, DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, MaterialInputs};
-pub use indirect::{IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, VplInput, VplSourceDesc, vpl_buffer};
+pub use direct::{
+    Dielectric, DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection,
+    DirectSettings, MaterialInputs,
+};
+pub use indirect::{
+    IndirectInputs, IndirectMaterials, IndirectPass, IndirectPassDesc, IndirectSettings, VplInput,
+    VplSourceDesc, vpl_buffer,
+};
 pub use slc_shared_shaders::layout::{GpuMaterial, GpuVplRecord};
 pub use temporal::{TemporalInputs, TemporalPass, TemporalPassDesc};
 
@@ -87,7 +93,8 @@ use slc_shared_shaders::SurfaceSource;
 use slc_shared_shaders::layout::ViewParams;
 
 /// The float formats the passes read G-buffer and RSM textures in.
-pub(crate) const FLOAT_INPUTS: [wgpu::TextureFormat; 2] = [wgpu::TextureFormat::Rgba32Float, wgpu::TextureFormat::Rgba16Float];
+pub(crate) const FLOAT_INPUTS: [wgpu::TextureFormat; 2] =
+    [wgpu::TextureFormat::Rgba32Float, wgpu::TextureFormat::Rgba16Float];
 
 /// How a pass culls lights, per record (both passes honour every mode).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -121,8 +128,12 @@ impl Culling {
     pub(crate) fn kernel_form(&self) -> Result<(bool, f32), GpuError> {
         match *self {
             Culling::Stochastic(_) => Ok((true, 0.0)),
-            Culling::Clamped { range } if range.is_finite() && range > 0.0 => Ok((false, range * range)),
-            Culling::Clamped { range } => Err(GpuError::Setting(format!("clamp range {range} must be positive and finite"))),
+            Culling::Clamped { range } if range.is_finite() && range > 0.0 => {
+                Ok((false, range * range))
+            }
+            Culling::Clamped { range } => {
+                Err(GpuError::Setting(format!("clamp range {range} must be positive and finite")))
+            }
             Culling::None => Ok((false, f32::INFINITY)),
         }
     }
@@ -150,11 +161,17 @@ impl SurfaceDesc {
     pub(crate) fn source(self) -> Result<SurfaceSource, GpuError> {
         match self {
             SurfaceDesc::Position => Ok(SurfaceSource::Position),
-            SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float, .. } => Ok(SurfaceSource::Depth),
-            SurfaceDesc::Depth { format: wgpu::TextureFormat::R32Float, .. } => Ok(SurfaceSource::R32Depth),
-            SurfaceDesc::Depth { format, .. } => {
-                Err(GpuError::Binding { name: "surface format", expected: "Depth32Float or R32Float".into(), found: format!("{format:?}") })
+            SurfaceDesc::Depth { format: wgpu::TextureFormat::Depth32Float, .. } => {
+                Ok(SurfaceSource::Depth)
             }
+            SurfaceDesc::Depth { format: wgpu::TextureFormat::R32Float, .. } => {
+                Ok(SurfaceSource::R32Depth)
+            }
+            SurfaceDesc::Depth { format, .. } => Err(GpuError::Binding {
+                name: "surface format",
+                expected: "Depth32Float or R32Float".into(),
+                found: format!("{format:?}"),
+            }),
         }
     }
 }
@@ -193,7 +210,13 @@ pub struct GBuffer<'a> {
 impl GBuffer<'_> {
     /// Checks the G-buffer against the pass's `surface` and size, and makes
     /// the record's [`ViewParams`] (`seed`, `frame`: its random streams).
-    pub(crate) fn check(&self, surface: SurfaceDesc, size: (u32, u32), seed: u32, frame: u32) -> Result<ViewParams, GpuError> {
+    pub(crate) fn check(
+        &self,
+        surface: SurfaceDesc,
+        size: (u32, u32),
+        seed: u32,
+        frame: u32,
+    ) -> Result<ViewParams, GpuError> {
         let tex = wgpu::TextureUsages::TEXTURE_BINDING;
         check_view("G-buffer normal", self.normal, size, &FLOAT_INPUTS, tex)?;
         if !self.eye.is_finite() {
@@ -265,7 +288,8 @@ impl GBuffer<'_> {
 /// view-projection passed in its place fails (its inverse is perspective,
 /// and its third column is no eye).
 pub(crate) fn check_inverse_view_projection(m: Mat4, eye: Vec3) -> Result<(), GpuError> {
-    let bad = |why: String| Err(GpuError::Setting(format!("Surface::Depth's inv_view_proj: {why}")));
+    let bad =
+        |why: String| Err(GpuError::Setting(format!("Surface::Depth's inv_view_proj: {why}")));
     if !m.is_finite() {
         return bad("must be finite".into());
     }
@@ -293,11 +317,25 @@ pub(crate) fn check_inverse_view_projection(m: Mat4, eye: Vec3) -> Result<(), Gp
 /// `built` must agree, else a [`GpuError::Binding`] named `name` that says
 /// what the pass expects (`what`: the input; `flag`: the descriptor field
 /// that builds the pass for it).
-pub(crate) fn check_optional(name: &'static str, given: bool, built: bool, what: &str, flag: &str) -> Result<(), GpuError> {
+pub(crate) fn check_optional(
+    name: &'static str,
+    given: bool,
+    built: bool,
+    what: &str,
+    flag: &str,
+) -> Result<(), GpuError> {
     match (given, built) {
         (true, true) | (false, false) => Ok(()),
-        (false, true) => Err(GpuError::Binding { name, expected: format!("{what} (the pass was built for it: {flag})"), found: "none".into() }),
-        (true, false) => Err(GpuError::Binding { name, expected: format!("none (the pass was built without: {flag})"), found: what.into() }),
+        (false, true) => Err(GpuError::Binding {
+            name,
+            expected: format!("{what} (the pass was built for it: {flag})"),
+            found: "none".into(),
+        }),
+        (true, false) => Err(GpuError::Binding {
+            name,
+            expected: format!("none (the pass was built without: {flag})"),
+            found: what.into(),
+        }),
     }
 }
 
@@ -313,12 +351,30 @@ pub(crate) fn check_view(
     let t = view.texture();
     let bad = |expected: String, found: String| Err(GpuError::Binding { name, expected, found });
     if !formats.contains(&t.format()) {
-        return bad(format!("format {}", formats.iter().map(|f| format!("{f:?}")).collect::<Vec<_>>().join(" or ")), format!("{:?}", t.format()));
+        return bad(
+            format!(
+                "format {}",
+                formats.iter().map(|f| format!("{f:?}")).collect::<Vec<_>>().join(" or ")
+            ),
+            format!("{:?}", t.format()),
+        );
     }
-    if t.dimension() != wgpu::TextureDimension::D2 || t.width() != w || t.height() != h || t.depth_or_array_layers() != 1 || t.sample_count() != 1 {
+    if t.dimension() != wgpu::TextureDimension::D2
+        || t.width() != w
+        || t.height() != h
+        || t.depth_or_array_layers() != 1
+        || t.sample_count() != 1
+    {
         return bad(
             format!("a single-sampled 2-D texture of {w}×{h}"),
-            format!("{:?} {}×{}×{}, {} samples", t.dimension(), t.width(), t.height(), t.depth_or_array_layers(), t.sample_count()),
+            format!(
+                "{:?} {}×{}×{}, {} samples",
+                t.dimension(),
+                t.width(),
+                t.height(),
+                t.depth_or_array_layers(),
+                t.sample_count()
+            ),
         );
     }
     if !t.usage().contains(usage) {
@@ -329,16 +385,27 @@ pub(crate) fn check_view(
 
 /// The kernels' output format for a pass's `output_format`:
 /// `Rgba16Float` or `Rgba32Float`, else a [`GpuError::Binding`].
-pub(crate) fn output_format(f: wgpu::TextureFormat) -> Result<slc_shared_shaders::OutputFormat, GpuError> {
+pub(crate) fn output_format(
+    f: wgpu::TextureFormat,
+) -> Result<slc_shared_shaders::OutputFormat, GpuError> {
     match f {
         wgpu::TextureFormat::Rgba16Float => Ok(slc_shared_shaders::OutputFormat::Rgba16Float),
         wgpu::TextureFormat::Rgba32Float => Ok(slc_shared_shaders::OutputFormat::Rgba32Float),
-        f => Err(GpuError::Binding { name: "output_format", expected: "Rgba16Float or Rgba32Float".into(), found: format!("{f:?}") }),
+        f => Err(GpuError::Binding {
+            name: "output_format",
+            expected: "Rgba16Float or Rgba32Float".into(),
+            found: format!("{f:?}"),
+        }),
     }
 }
 
 /// Checks an image size against the 2-D dispatch limits.
-pub(crate) fn check_size(gpu: &crate::GpuContext, what: &str, (w, h): (u32, u32), tile: u32) -> Result<(), GpuError> {
+pub(crate) fn check_size(
+    gpu: &crate::GpuContext,
+    what: &str,
+    (w, h): (u32, u32),
+    tile: u32,
+) -> Result<(), GpuError> {
     if w == 0 || h == 0 {
         return Err(GpuError::Setting(format!("{what}: image size {w}×{h} must be non-zero")));
     }

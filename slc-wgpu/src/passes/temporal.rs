@@ -29,7 +29,10 @@
 //! # Ok(()) }
 //! ```
 
-use super::{FLOAT_INPUTS, GBuffer, SurfaceDesc, ViewCache, check_optional, check_size, check_view, output_format};
+use super::{
+    FLOAT_INPUTS, GBuffer, SurfaceDesc, ViewCache, check_optional, check_size, check_view,
+    output_format,
+};
 use crate::frame::Stage;
 use crate::kernel::{KernelLayout, UniformSlots, Uploads, check_kernels, zeroed};
 use crate::passes::indirect::Dispatch;
@@ -62,7 +65,13 @@ pub struct TemporalPassDesc {
 impl TemporalPassDesc {
     /// A pass for `width × height` reading world positions, writing `Rgba16Float`.
     pub fn new(width: u32, height: u32) -> TemporalPassDesc {
-        TemporalPassDesc { width, height, surface: SurfaceDesc::Position, output_format: wgpu::TextureFormat::Rgba16Float, motion_vectors: false }
+        TemporalPassDesc {
+            width,
+            height,
+            surface: SurfaceDesc::Position,
+            output_format: wgpu::TextureFormat::Rgba16Float,
+            motion_vectors: false,
+        }
     }
 }
 
@@ -87,7 +96,11 @@ pub struct TemporalInputs<'a> {
 
 impl<'a> TemporalInputs<'a> {
     /// Inputs without motion vectors.
-    pub fn new(gbuffer: GBuffer<'a>, signal: &'a wgpu::TextureView, output: &'a wgpu::TextureView) -> TemporalInputs<'a> {
+    pub fn new(
+        gbuffer: GBuffer<'a>,
+        signal: &'a wgpu::TextureView,
+        output: &'a wgpu::TextureView,
+    ) -> TemporalInputs<'a> {
         TemporalInputs { gbuffer, signal, output, motion: None }
     }
 }
@@ -115,11 +128,22 @@ impl History {
     }
 }
 
-type GroupKey = (wgpu::TextureView, wgpu::TextureView, wgpu::TextureView, wgpu::TextureView, Option<wgpu::TextureView>, usize);
+type GroupKey = (
+    wgpu::TextureView,
+    wgpu::TextureView,
+    wgpu::TextureView,
+    wgpu::TextureView,
+    Option<wgpu::TextureView>,
+    usize,
+);
 
 /// The formats motion vectors are read in (xy).
-const MOTION_FORMATS: [wgpu::TextureFormat; 4] =
-    [wgpu::TextureFormat::Rg16Float, wgpu::TextureFormat::Rg32Float, wgpu::TextureFormat::Rgba16Float, wgpu::TextureFormat::Rgba32Float];
+const MOTION_FORMATS: [wgpu::TextureFormat; 4] = [
+    wgpu::TextureFormat::Rg16Float,
+    wgpu::TextureFormat::Rg32Float,
+    wgpu::TextureFormat::Rgba16Float,
+    wgpu::TextureFormat::Rgba32Float,
+];
 
 /// Temporal accumulation on an engine's G-buffer (see the module docs).
 pub struct TemporalPass {
@@ -150,7 +174,11 @@ impl TemporalPass {
             motion_vectors: desc.motion_vectors,
             ..Features::default()
         };
-        gpu.require("max_storage_textures_per_shader_stage", 4, gpu.limits.max_storage_textures_per_shader_stage as u64)?;
+        gpu.require(
+            "max_storage_textures_per_shader_stage",
+            4,
+            gpu.limits.max_storage_textures_per_shader_stage as u64,
+        )?;
         check_kernels(gpu, &[(Kernel::Temporal, &features, 0)])?;
         let layout = KernelLayout::new(gpu, Kernel::Temporal, &features)?;
         let pipeline = layout.pipeline(gpu, &features, None)?;
@@ -201,7 +229,10 @@ impl TemporalPass {
     ) -> Result<(), GpuError> {
         let (uploads, d) = self.dispatch(inputs, view, settings)?;
         uploads.record(&self.gpu, encoder);
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("slc temporal"), timestamp_writes: None });
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("slc temporal"),
+            timestamp_writes: None,
+        });
         d.record(&mut pass);
         Ok(())
     }
@@ -218,8 +249,20 @@ impl TemporalPass {
         view.validate().map_err(setting)?;
         let size = (self.desc.width, self.desc.height);
         let view_params = inputs.gbuffer.check(self.desc.surface, size, 0, 0)?;
-        check_view("temporal signal", inputs.signal, size, &FLOAT_INPUTS, wgpu::TextureUsages::TEXTURE_BINDING)?;
-        check_view("temporal output", inputs.output, size, &[self.desc.output_format], wgpu::TextureUsages::STORAGE_BINDING)?;
+        check_view(
+            "temporal signal",
+            inputs.signal,
+            size,
+            &FLOAT_INPUTS,
+            wgpu::TextureUsages::TEXTURE_BINDING,
+        )?;
+        check_view(
+            "temporal output",
+            inputs.output,
+            size,
+            &[self.desc.output_format],
+            wgpu::TextureUsages::STORAGE_BINDING,
+        )?;
         check_optional(
             "motion vectors",
             inputs.motion.is_some(),
@@ -228,12 +271,20 @@ impl TemporalPass {
             "TemporalPassDesc::motion_vectors",
         )?;
         if let Some(m) = inputs.motion {
-            check_view("motion vectors", m, size, &MOTION_FORMATS, wgpu::TextureUsages::TEXTURE_BINDING)?;
+            check_view(
+                "motion vectors",
+                m,
+                size,
+                &MOTION_FORMATS,
+                wgpu::TextureUsages::TEXTURE_BINDING,
+            )?;
         }
         let gpu = &self.gpu;
         let mut uploads = Uploads::default();
         uploads.push(&self.view, &view_params);
-        let (m, prev_eye) = self.previous.map_or((glam::Mat4::ZERO, glam::Vec3::ZERO), |p| (p.view_projection, p.eye));
+        let (m, prev_eye) = self
+            .previous
+            .map_or((glam::Mat4::ZERO, glam::Vec3::ZERO), |p| (p.view_projection, p.eye));
         let params = TemporalParams {
             c0: m.x_axis,
             c1: m.y_axis,
@@ -249,8 +300,16 @@ impl TemporalPass {
         uploads.push_to(&self.params, &params);
         let (read, write) = (self.current, 1 - self.current);
         let g = &inputs.gbuffer;
-        let key = (g.surface_view().clone(), g.normal.clone(), inputs.signal.clone(), inputs.output.clone(), inputs.motion.cloned(), read);
-        let (layout, history, slots, params_buf) = (&self.layout, &self.history, &self.view, &self.params);
+        let key = (
+            g.surface_view().clone(),
+            g.normal.clone(),
+            inputs.signal.clone(),
+            inputs.output.clone(),
+            inputs.motion.cloned(),
+            read,
+        );
+        let (layout, history, slots, params_buf) =
+            (&self.layout, &self.history, &self.view, &self.params);
         let group = self.cache.get(key, || {
             let tex = wgpu::BindingResource::TextureView;
             let (r, w) = (&history[read].views, &history[write].views);
