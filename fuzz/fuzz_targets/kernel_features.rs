@@ -7,7 +7,7 @@
 use arbitrary::Arbitrary;
 use libfuzzer_sys::fuzz_target;
 use slc_shared_shaders::{
-    CullMethod, DirectOutput, Features, Heuristic, Kernel, LightTypes, OutputFormat, Selection,
+    CullKind, DirectOutput, Features, Heuristic, Kernel, LightTypes, OutputFormat, Selection,
     ShaderError, SurfaceSource, VplSource, generate,
 };
 
@@ -41,7 +41,7 @@ fuzz_target!(|i: Input| {
         tile_size: i.tile_size as u32,
         interleave: i.interleave as u32,
         max_tile_lights: i.max_tile_lights as u32,
-        method: [CullMethod::Slc, CullMethod::Clamp, CullMethod::None][i.method as usize % 3],
+        method: CullKind::ALL[i.method as usize % 3],
         heuristic: if i.heuristic { Heuristic::Balance } else { Heuristic::Power },
         selection: [
             Selection::Reservoir,

@@ -21,7 +21,7 @@ use bevy::pbr::DefaultOpaqueRendererMethod;
 use bevy::prelude::*;
 use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured};
 use rand::{Rng, SeedableRng};
-use slc_bevy::{SlcCamera, SlcLight, SlcPlugin, SlcStatus};
+use slc_bevy::{Culling, SlcCamera, SlcLight, SlcPlugin, SlcStatus};
 
 fn main() {
     let lights = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(4000usize);
@@ -208,11 +208,17 @@ fn keys(
         }
     }
     for mut camera in &mut cameras {
-        if input.just_pressed(KeyCode::ArrowUp) {
-            camera.error_bound *= 2.0;
+        // ×2 or ÷2 on ε (a stochastic culling only; the others keep theirs).
+        let scale = |c: Culling, k: f32| c.with_error_bound(c.error_bound().unwrap_or(1.0) * k);
+        if input.just_pressed(KeyCode::ArrowUp)
+            && let Ok(c) = scale(camera.culling, 2.0)
+        {
+            camera.culling = c;
         }
-        if input.just_pressed(KeyCode::ArrowDown) {
-            camera.error_bound *= 0.5;
+        if input.just_pressed(KeyCode::ArrowDown)
+            && let Ok(c) = scale(camera.culling, 0.5)
+        {
+            camera.culling = c;
         }
     }
 }
@@ -226,7 +232,7 @@ fn title(
     let ms = time.delta_secs() * 1000.0;
     settings.frame_ms =
         if settings.frame_ms == 0.0 { ms } else { 0.95 * settings.frame_ms + 0.05 * ms };
-    let eps = cameras.iter().next().map_or(0.0, |c| c.error_bound);
+    let eps = cameras.iter().next().and_then(|c| c.culling.error_bound()).unwrap_or(0.0);
     for mut w in &mut windows {
         w.title = format!(
             "slc-bevy many_lights: {:?}, {} lights, ε {eps}, {:.1} ms/frame (Space: mode, Up/Down: ε)",

@@ -96,13 +96,15 @@ use bevy::render::renderer::{RenderContext, RenderDevice, RenderQueue, ViewQuery
 use bevy::render::sync_world::MainEntity;
 use bevy::render::view::{ExtractedView, Msaa, ViewTarget};
 use bevy::render::{Extract, ExtractSchedule, Render, RenderApp, RenderStartup, RenderSystems};
+/// How an [`SlcCamera`]'s lights are culled (slc's one culling vocabulary).
+pub use slc_wgpu::Culling;
 use slc_wgpu::passes::{
     DirectInputs, DirectOutputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings,
     MaterialInputs, TemporalInputs, TemporalPass, TemporalPassDesc,
 };
 use slc_wgpu::{
-    Culling, GBuffer, GpuContext, Light, LightSet, PointLight as SlcPoint, RangeParams,
-    SpotLight as SlcSpot, Surface, SurfaceDesc, TemporalSettings, TemporalView,
+    GBuffer, GpuContext, Light, LightSet, PointLight as SlcPoint, SpotLight as SlcSpot, Surface,
+    SurfaceDesc, TemporalSettings, TemporalView,
 };
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
@@ -118,11 +120,15 @@ pub struct SlcPlugin;
 pub struct SlcCamera {
     /// Shade slc's lights (off: they add nothing, Bevy's own lights stay).
     pub enabled: bool,
-    /// SLC's error bound ε, in the camera's exposed radiance: how much one
-    /// light's random range may add to a Lambertian pixel's standard
-    /// deviation (JCGT 2016, eq. 7). Smaller: larger ranges, more lights
-    /// per pixel, less noise.
-    pub error_bound: f32,
+    /// How the lights are culled: stochastic culling by default, its error
+    /// bound ε in the camera's exposed radiance (how much one light's random
+    /// range may add to a Lambertian pixel's standard deviation, JCGT 2016,
+    /// eq. 7; smaller: larger ranges, more lights per pixel, less noise).
+    /// Keep the culling's own exposure at 1: the camera's exposure is
+    /// applied to the lights. [`Culling::Clamped`] and [`Culling::None`]
+    /// are the baselines; [`Culling::Reference`] is not a real-time setting
+    /// (the camera is skipped with the reason).
+    pub culling: Culling,
     /// Importance-weighted picks per pixel among the lights in range
     /// (`1..=64`).
     pub picks: u32,
@@ -146,7 +152,7 @@ impl Default for SlcCamera {
     fn default() -> Self {
         SlcCamera {
             enabled: true,
-            error_bound: 0.01,
+            culling: Culling::stochastic(0.01, 1.0).expect("a valid default"),
             picks: 8,
             seed: 1,
             accumulate: true,
@@ -403,8 +409,6 @@ struct View {
     inv_view_proj: glam::Mat4,
     eye: glam::Vec3,
     settings: SlcCamera,
-    /// SLC's ranges for [`SlcCamera::error_bound`] (checked in prepare).
-    culling: Culling,
     main: Entity,
 }
 
@@ -503,7 +507,6 @@ fn new_view(
         inv_view_proj: glam::Mat4::IDENTITY,
         eye: glam::Vec3::ZERO,
         settings: *settings,
-        culling: Culling::None,
         main,
     })
 }
@@ -572,13 +575,11 @@ fn prepare_views(
         if size.0 == 0 || size.1 == 0 {
             continue;
         }
-        let culling = match RangeParams::new(settings.error_bound, 1.0) {
-            Ok(p) => Culling::Stochastic(p),
-            Err(e) => {
-                skip(&mut views, format!("error bound {}: {e}", settings.error_bound), &mut report);
-                continue;
-            }
-        };
+        if settings.culling == Culling::Reference {
+            let why = "Culling::Reference is the VPL frame's ground truth, not a real-time setting";
+            skip(&mut views, why.into(), &mut report);
+            continue;
+        }
         let exposure = camera.exposure;
         let lights = match slc_lights(&lights.0, exposure) {
             Ok(l) => l,
@@ -624,7 +625,6 @@ fn prepare_views(
             v.temporal.reset();
         }
         v.settings = *settings;
-        v.culling = culling;
         let world_from_view = to_glam(view.world_from_view.to_matrix());
         v.inv_view_proj = world_from_view * to_glam(view.clip_from_view).inverse();
         v.eye = world_from_view.w_axis.truncate();
@@ -718,7 +718,8 @@ fn shade_view(
     };
     let mut inputs = DirectInputs::new(gbuf, &v.output);
     inputs.material = Some(MaterialInputs { base_color: &v.base, metallic_roughness: &v.material });
-    let settings = DirectSettings { culling: v.culling, seed: v.settings.seed, frame: v.frame };
+    let settings =
+        DirectSettings { culling: v.settings.culling, seed: v.settings.seed, frame: v.frame };
     if let Err(e) = v.pass.record(encoder, &inputs, &settings) {
         report(Err(e.to_string()));
         return;

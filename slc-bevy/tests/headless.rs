@@ -30,7 +30,7 @@ use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured};
 use bevy::window::ExitCondition;
 use bevy::winit::WinitPlugin;
 use rand::{Rng, SeedableRng};
-use slc_bevy::{SlcCamera, SlcLight, SlcPlugin, SlcStatus};
+use slc_bevy::{Culling, SlcCamera, SlcLight, SlcPlugin, SlcStatus};
 use std::sync::{Arc, Mutex};
 
 /// The image size: 96×64, times `SLC_BEVY_HEADLESS_SCALE` (an integer, 1
@@ -258,7 +258,11 @@ fn scene(
         .spawn((
             Camera3d::default(),
             // Each frame a fresh estimate: the test averages them itself.
-            SlcCamera { error_bound: 0.005, accumulate: false, ..default() },
+            SlcCamera {
+                culling: Culling::stochastic(0.005, 1.0).unwrap(),
+                accumulate: false,
+                ..default()
+            },
             // The accumulation (phase 3) reprojects by Bevy's motion vectors.
             MotionVectorPrepass,
             Tonemapping::None,

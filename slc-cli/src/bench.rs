@@ -11,7 +11,7 @@ use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use slc_cpu::pt::CpuPathTracer;
 use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings};
-use slc_scene::vpl::{VplFrame, VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, VplFrame, VplSettings};
 use std::path::PathBuf;
 
 #[derive(Args)]
@@ -83,24 +83,21 @@ pub struct BenchArgs {
 }
 
 /// The configurations of a VPL bench: `none`, then `slc` per error bound,
-/// then `clamp` per range, with their settings.
-fn vpl_configs(a: &BenchArgs, exposure: f32) -> Vec<(Option<f32>, VplSettings)> {
-    let mut configs: Vec<(VplMethod, Option<f32>)> = vec![(VplMethod::None, None)];
-    configs.extend(a.error_bounds.iter().map(|&e| (VplMethod::Slc, Some(e))));
-    configs.extend(a.ranges.iter().map(|&r| (VplMethod::Clamp, Some(r))));
+/// then `clamp` per range, with their settings and parameter (ε or `R`).
+fn vpl_configs(a: &BenchArgs, exposure: f32) -> anyhow::Result<Vec<(Option<f32>, VplSettings)>> {
+    let mut cullings = vec![(None, Culling::None)];
+    for &e in &a.error_bounds {
+        cullings.push((Some(e), Culling::stochastic(e, exposure)?));
+    }
+    for &r in &a.ranges {
+        cullings.push((Some(r), Culling::clamped(r)?));
+    }
     let d = VplSettings::default();
-    configs
+    Ok(cullings
         .into_iter()
-        .map(|(method, param)| {
+        .map(|(param, culling)| {
             let settings = VplSettings {
-                method,
-                error_bound: if method == VplMethod::Slc {
-                    param.unwrap_or(0.0)
-                } else {
-                    d.error_bound
-                },
-                range: if method == VplMethod::Clamp { param.unwrap_or(0.0) } else { d.range },
-                exposure,
+                culling,
                 seed: a.seed,
                 tile: a.scene.tile,
                 near_radius: a.scene.near_radius,
@@ -108,7 +105,7 @@ fn vpl_configs(a: &BenchArgs, exposure: f32) -> Vec<(Option<f32>, VplSettings)> 
             };
             (param, settings)
         })
-        .collect()
+        .collect())
 }
 
 /// `--simd`'s value: a [`slc_cpu::simd::SimdPath`] by its name.
@@ -194,7 +191,7 @@ fn vpl_run(
     stages: Vec<StageMs>,
 ) -> Run {
     Run {
-        method: settings.method.name().to_string(),
+        method: settings.culling.name().to_string(),
         param,
         shading_ms: st.shading_ms,
         total_ms: st.total_ms,
@@ -223,7 +220,7 @@ fn speedups(runs: &mut [Run]) {
 }
 
 fn run_label(s: &VplSettings, param: Option<f32>) -> String {
-    format!("{} {}", s.method.name(), param.map_or(String::new(), |p| p.to_string()))
+    format!("{} {}", s.culling.name(), param.map_or(String::new(), |p| p.to_string()))
 }
 
 pub fn run(a: BenchArgs) -> anyhow::Result<()> {
@@ -256,7 +253,7 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
         return run_vpl_gpu(a);
     }
     let mut loaded = a.scene.load()?;
-    let configs = vpl_configs(&a, loaded.exposure);
+    let configs = vpl_configs(&a, loaded.exposure)?;
     let ctx = &mut loaded.ctx;
     let bar = progress(configs.len() + 1)?;
     bar.set_message("reference (all VPLs at every pixel; cached for the next run)");
@@ -306,9 +303,8 @@ pub fn run(a: BenchArgs) -> anyhow::Result<()> {
     // evaluations are the far field's light loop alone.
     bar.set_message("unculled loop without the near field (evaluations per second)");
     let loop_only = VplSettings {
-        method: VplMethod::None,
+        culling: Culling::None,
         near_radius: Some(0.0),
-        exposure: loaded.exposure,
         seed: a.seed,
         ..VplSettings::default()
     };
@@ -346,18 +342,17 @@ fn run_vpl_gpu(a: BenchArgs) -> anyhow::Result<()> {
     let r = a.scene.resolve()?;
     let gpu = gpu_context(Backend::Gpu)?.context("no GPU context")?;
     let mut frame = a.scene.gpu_frame(&gpu, &r)?;
-    let configs = vpl_configs(&a, r.exposure);
+    let configs = vpl_configs(&a, r.exposure)?;
     let bar = progress(configs.len())?;
     bar.set_message("reference (all VPLs at every pixel, on the GPU)");
-    let warm =
-        VplSettings { method: VplMethod::None, exposure: r.exposure, ..VplSettings::default() };
+    let warm = VplSettings { culling: Culling::None, ..VplSettings::default() };
     // The CLI's settings into the frame's own (its indirect pass's).
     let min_distance = frame.min_distance();
     let pass_settings = |s: &VplSettings| slc_wgpu::frame::indirect_settings(s, min_distance);
     frame.render(&pass_settings(&warm)?)?;
     let inputs = frame.read_inputs()?;
     let mut all = slc_wgpu::vpl::GpuVpl::new(&gpu, &inputs)?;
-    let shaded = all.shade(&VplSettings { method: VplMethod::Reference, ..warm })?;
+    let shaded = all.shade(&VplSettings { culling: Culling::Reference, ..warm })?;
     let reference = frame.compose_with(&inputs, &shaded.irradiance, &shaded.specular)?;
     bar.inc(1);
     let mut runs = Vec::new();

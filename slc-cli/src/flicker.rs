@@ -26,7 +26,7 @@ use slc_cpu::vpl::FrameHistory;
 use slc_scene::image::Image;
 use slc_scene::scene::{Camera, PrimaryLight};
 use slc_scene::temporal::{TemporalSettings, TemporalView};
-use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, VplSettings};
 use std::time::Instant;
 
 /// A scripted sequence.
@@ -202,7 +202,7 @@ impl Frames for CpuFrames {
     }
 
     fn reference(&mut self) -> anyhow::Result<Image> {
-        let s = VplSettings { method: VplMethod::Reference, ..VplSettings::default() };
+        let s = VplSettings { culling: Culling::Reference, ..VplSettings::default() };
         Ok(self.ctx.render(&s)?.image)
     }
 
@@ -211,7 +211,7 @@ impl Frames for CpuFrames {
         let spatial = self.ctx.finish(shaded.clone(), slc);
         let temporal = self.ctx.finish_accumulated(shaded, slc, &mut self.history, &self.ts)?;
         let indep = self.ctx.render_accumulated(fresh, &mut self.independent, &self.ts)?;
-        let unculled = self.ctx.render(&VplSettings { method: VplMethod::None, ..*slc })?;
+        let unculled = self.ctx.render(&VplSettings { culling: Culling::None, ..*slc })?;
         Ok(vec![spatial.image, temporal.image, indep.image, unculled.image])
     }
 
@@ -227,7 +227,7 @@ impl Frames for CpuFrames {
         repeat: u32,
     ) -> anyhow::Result<Option<f64>> {
         self.pose(camera, light)?;
-        let s = VplSettings { method: VplMethod::Slc, ..VplSettings::default() };
+        let s = VplSettings::default();
         let e = self.ctx.shade(&s)?.irradiance;
         let gb = &self.ctx.inputs().gbuffer;
         let view = TemporalView::of_camera(camera, gb.width, gb.height);
@@ -268,11 +268,11 @@ impl Frames for GpuFrames {
     }
 
     fn reference(&mut self) -> anyhow::Result<Image> {
-        let s = VplSettings { method: VplMethod::None, ..VplSettings::default() };
+        let s = VplSettings { culling: Culling::None, ..VplSettings::default() };
         self.plain.render(&slc_wgpu::frame::indirect_settings(&s, self.plain.min_distance())?)?;
         let inputs = self.plain.read_inputs()?;
         let shaded = slc_wgpu::vpl::GpuVpl::new(&self.gpu, &inputs)?
-            .shade(&VplSettings { method: VplMethod::Reference, ..s })?;
+            .shade(&VplSettings { culling: Culling::Reference, ..s })?;
         Ok(self.plain.compose_with(&inputs, &shaded.irradiance, &shaded.specular)?)
     }
 
@@ -285,7 +285,7 @@ impl Frames for GpuFrames {
         let indep = self.independent.render(&on(&self.independent, fresh)?)?.image;
         let unculled = self
             .plain
-            .render(&on(&self.plain, &VplSettings { method: VplMethod::None, ..*slc })?)?
+            .render(&on(&self.plain, &VplSettings { culling: Culling::None, ..*slc })?)?
             .image;
         Ok(vec![spatial, temporal, indep, unculled])
     }
@@ -323,14 +323,8 @@ pub fn run(a: &BenchArgs, frames: u32) -> anyhow::Result<()> {
     let r = args.resolve()?;
     let (base_camera, base_primary, diagonal) =
         (r.scene.camera, r.scene.primary, r.scene.diagonal());
-    let error_bound = VplSettings::default().error_bound;
-    let slc = VplSettings {
-        method: VplMethod::Slc,
-        error_bound,
-        exposure: r.exposure,
-        seed: a.seed,
-        ..VplSettings::default()
-    };
+    let culling = Culling::stochastic(slc_scene::culling::DEFAULT_ERROR_BOUND, r.exposure)?;
+    let slc = VplSettings { culling, seed: a.seed, ..VplSettings::default() };
     let ts = TemporalSettings::default();
     let (mut runner, backend): (Box<dyn Frames>, String) = if gpu {
         let g = crate::backends::gpu_context(Backend::Gpu)?.context("no GPU context")?;
@@ -408,7 +402,7 @@ pub fn run(a: &BenchArgs, frames: u32) -> anyhow::Result<()> {
         height: r.height,
         vpls: (r.rsm_size as usize).pow(2),
         frames,
-        error_bound,
+        error_bound: slc_scene::culling::DEFAULT_ERROR_BOUND,
         max_history: ts.max_history,
         temporal_ms,
         sequences,

@@ -28,7 +28,7 @@ use scene_args::{App, SceneArgs};
 use slc_scene::RenderError;
 use slc_scene::image::Image;
 use slc_scene::pt::{PtRender, PtScene, PtSettings};
-use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, VplSettings};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
@@ -222,19 +222,19 @@ fn render(a: RenderArgs) -> anyhow::Result<()> {
     let loaded = a.scene.load()?;
     let (ctx, f) = (&loaded.ctx, &loaded.file);
     let settings = vpl_settings(&a.method_flags(), f, loaded.exposure)?;
-    spinner.set_message(format!("shading ({}, cpu)", settings.method.name()));
+    spinner.set_message(format!("shading ({}, cpu)", settings.culling.name()));
     let frame = ctx.render(&settings)?;
     spinner.set_message("writing images");
     let written = write_outputs(&frame.image, &a.out, loaded.exposure)?;
     let st = frame.stats;
-    let versus_none =
-        if settings.method != VplMethod::None && settings.method != VplMethod::Reference {
-            spinner.set_message("unculled interleaved image for the RMSE");
-            let none = ctx.render(&VplSettings { method: VplMethod::None, ..settings })?;
-            Some((frame.image.rmse(&none.image), none.stats.shading_ms))
-        } else {
-            None
-        };
+    let versus_none = if settings.culling != Culling::None && settings.culling != Culling::Reference
+    {
+        spinner.set_message("unculled interleaved image for the RMSE");
+        let none = ctx.render(&VplSettings { culling: Culling::None, ..settings })?;
+        Some((frame.image.rmse(&none.image), none.stats.shading_ms))
+    } else {
+        None
+    };
     spinner.finish_and_clear();
     println!(
         "slc render: {} {}x{}, {} VPLs, method {}",
@@ -242,7 +242,7 @@ fn render(a: RenderArgs) -> anyhow::Result<()> {
         loaded.width,
         loaded.height,
         st.vpls,
-        settings.method.name()
+        settings.culling.name()
     );
     println!(
         "  time        {:.1} ms total, {:.1} ms shading (G-buffer {:.1}, RSM {:.1}, direct {:.1}, denoise {:.1})",
@@ -270,20 +270,20 @@ fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
     let spinner = spinner("scene and GPU pipelines");
     let r = a.scene.resolve()?;
     let settings = vpl_settings(&a.method_flags(), &r.file, r.exposure)?;
-    if settings.method == VplMethod::Reference {
+    if settings.culling == Culling::Reference {
         return Err(anyhow!(
             "--method reference (every VPL at every pixel) runs on the CPU; use --backend cpu"
         ));
     }
     let gpu = gpu_context(Backend::Gpu)?.context("no GPU context")?;
     let mut frame = a.scene.gpu_frame(&gpu, &r)?;
-    spinner.set_message(format!("frame on the GPU ({})", settings.method.name()));
+    spinner.set_message(format!("frame on the GPU ({})", settings.culling.name()));
     let st = slc_wgpu::frame::indirect_settings(&settings, frame.min_distance())?;
     // The first frame pays for the driver's pipeline compilation: measure the second.
     frame.render(&st)?;
     let out = frame.render(&st)?;
     let written = write_outputs(&out.image, &a.out, r.exposure)?;
-    let versus_none = if settings.method != VplMethod::None {
+    let versus_none = if settings.culling != Culling::None {
         spinner.set_message("unculled interleaved frame for the RMSE");
         let none = frame.render(&slc_wgpu::passes::IndirectSettings {
             culling: slc_wgpu::Culling::None,
@@ -301,7 +301,7 @@ fn render_vpl_gpu(a: RenderArgs) -> anyhow::Result<()> {
         r.width,
         r.height,
         st.vpls,
-        settings.method.name()
+        settings.culling.name()
     );
     println!("  GPU         {}", gpu.describe());
     println!("  timing      {}", timing_note(out.timing));
@@ -466,7 +466,7 @@ pub fn write_outputs(img: &Image, out: &Path, exposure: f32) -> anyhow::Result<(
 /// and the temporal pass (`temporal`, `temporal_motion`).
 fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
     use slc_shared_shaders::{
-        CullMethod, Features, Kernel, LightTypes, OutputFormat, Selection, SurfaceSource,
+        CullKind, Features, Kernel, LightTypes, OutputFormat, Selection, SurfaceSource,
         generate_module, translate,
     };
     let lights = LightTypes::parse(lights)?;
@@ -492,11 +492,9 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
     for k in [Kernel::LightRanges, Kernel::DirectLight] {
         jobs.push((k.name().to_string(), k, direct));
     }
-    for (m, name) in
-        [(CullMethod::Slc, "slc"), (CullMethod::Clamp, "clamp"), (CullMethod::None, "none")]
-    {
+    for m in CullKind::ALL {
         jobs.push((
-            format!("vpl_tiled_{name}"),
+            format!("vpl_tiled_{}", m.name()),
             Kernel::VplTiled,
             Features { lights: vpl, method: m, ..base },
         ));
@@ -515,11 +513,9 @@ fn shaders(out: &Path, lights: &str, reservoir_k: u32) -> anyhow::Result<()> {
     // The glossy variants (Features::glossy): the glTF BRDF at glossy
     // receivers, the specular correction beside the irradiance.
     let glossy = Features { lights: vpl, glossy: true, ..base };
-    for (m, name) in
-        [(CullMethod::Slc, "slc"), (CullMethod::Clamp, "clamp"), (CullMethod::None, "none")]
-    {
+    for m in CullKind::ALL {
         jobs.push((
-            format!("vpl_tiled_{name}_glossy"),
+            format!("vpl_tiled_{}_glossy", m.name()),
             Kernel::VplTiled,
             Features { method: m, ..glossy },
         ));

@@ -2,20 +2,10 @@
 //! the VPL settings built from flags, the scene file and the defaults.
 
 use anyhow::anyhow;
+use slc_scene::culling::{DEFAULT_CLAMP_RANGE, DEFAULT_ERROR_BOUND};
 use slc_scene::error_bound::{TARGET_CANDIDATES, auto_error_bound};
 use slc_scene::pt::{PtMethod, PtScene, PtSettings};
-use slc_scene::vpl::{VplMethod, VplSettings};
-
-/// A VPL method name.
-pub fn vpl_method(name: &str) -> anyhow::Result<VplMethod> {
-    match name {
-        "slc" => Ok(VplMethod::Slc),
-        "clamp" => Ok(VplMethod::Clamp),
-        "none" => Ok(VplMethod::None),
-        "reference" => Ok(VplMethod::Reference),
-        m => Err(anyhow!("method '{m}' is not one of slc, clamp, none, reference (--app vpl)")),
-    }
-}
+use slc_scene::vpl::{Culling, VplSettings};
 
 /// A path-tracing method name.
 pub fn pt_method(name: &str) -> anyhow::Result<PtMethod> {
@@ -43,19 +33,20 @@ pub fn vpl_settings(
     exposure: f32,
 ) -> anyhow::Result<VplSettings> {
     let d = VplSettings::default();
+    let error_bound = match m.error_bound {
+        Some(BoundArg::Value(e)) => e,
+        Some(BoundArg::Auto) => {
+            return Err(anyhow!(
+                "--error-bound auto applies to path tracing (--app pt); give the VPL application a number"
+            ));
+        }
+        None => f.error_bound.unwrap_or(DEFAULT_ERROR_BOUND),
+    };
+    let name = m.method.or(f.method.as_deref()).unwrap_or("slc");
+    let range = m.range.or(f.range).unwrap_or(DEFAULT_CLAMP_RANGE);
     Ok(VplSettings {
-        method: vpl_method(m.method.or(f.method.as_deref()).unwrap_or("slc"))?,
-        error_bound: match m.error_bound {
-            Some(BoundArg::Value(e)) => e,
-            Some(BoundArg::Auto) => {
-                return Err(anyhow!(
-                    "--error-bound auto applies to path tracing (--app pt); give the VPL application a number"
-                ));
-            }
-            None => f.error_bound.unwrap_or(d.error_bound),
-        },
-        range: m.range.or(f.range).unwrap_or(d.range),
-        exposure,
+        culling: Culling::named(name, error_bound, exposure, range)
+            .map_err(|e| anyhow!("{e} (--app vpl)"))?,
         seed: m.seed.or(f.seed).unwrap_or(d.seed),
         denoise: !m.no_denoise,
         tile: m.tile,

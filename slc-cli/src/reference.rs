@@ -7,7 +7,7 @@ use slc_cpu::pt::CpuPathTracer;
 use slc_cpu::vpl::VplContext;
 use slc_scene::image::Image;
 use slc_scene::pt::{PtRender, PtSettings};
-use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, VplSettings};
 use slc_scene::{OutputError, RenderError};
 use std::path::{Path, PathBuf};
 
@@ -61,7 +61,7 @@ pub fn vpl_reference(
         return Ok((img, true));
     }
     let frame =
-        ctx.render(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() })?;
+        ctx.render(&VplSettings { culling: Culling::Reference, ..VplSettings::default() })?;
     if let Some(p) = &path {
         write_raw(p, &frame.image).map_err(|e| RenderError::Setting(e.to_string()))?;
     }

@@ -4,7 +4,7 @@ use crate::backends::Backend;
 use crate::scene_args::{App, SceneArgs};
 use anyhow::anyhow;
 use clap::Args;
-use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, VplSettings};
 use std::path::PathBuf;
 
 /// Options of `slc view`.
@@ -89,7 +89,7 @@ pub fn run(a: ViewArgs) -> anyhow::Result<()> {
         near_radius: a.near_radius,
     };
     let settings = crate::methods::vpl_settings(&flags, &r.file, r.exposure)?;
-    if settings.method == VplMethod::Reference {
+    if settings.culling == Culling::Reference {
         return Err(anyhow!(
             "--method reference (every VPL at every pixel) is not a real-time method; use slc, clamp or none"
         ));
@@ -102,6 +102,7 @@ pub fn run(a: ViewArgs) -> anyhow::Result<()> {
         shadow_size: a.shadow_size,
         min_distance: a.min_distance,
         settings,
+        exposure: r.exposure,
         animate: a.animate,
         temporal: !a.no_temporal,
         orbit: a.orbit,

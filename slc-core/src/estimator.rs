@@ -3,7 +3,7 @@
 //! Generic over the light's contribution so both backends and the tests
 //! share them.
 //!
-//! SLC (DESIGN.md §1; talk code `SlcImpl`):
+//! SLC (docs/architecture.md §1.1; talk code `SlcImpl`):
 //! `L̂ = Σᵢ [d²ᵢ < r²ᵢ] · fᵢ / p(dᵢ)`, `r²ᵢ = r_t,ᵢ²/(1 − ξᵢ)`,
 //! `p = min(r_t²/d², 1)`; `E_ξ[L̂] = Σᵢ fᵢ`.
 //! Clamped: `Σᵢ [d²ᵢ < R²ᵢ] · fᵢ` (no reweighting; biased low).

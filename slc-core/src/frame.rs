@@ -3,7 +3,7 @@
 //! texel of the light's map looks, the solid angle it covers (the flux of
 //! its VPL), the primary light's direct term with its shadow-map test, and
 //! the composition `L = L_e + ρ/π · E` (Dachsbacher & Stamminger,
-//! "Reflective Shadow Maps", I3D 2005; DESIGN.md §4).
+//! "Reflective Shadow Maps", I3D 2005; docs/architecture.md §2.1).
 
 use crate::brdf::diffuse_albedo;
 use crate::light::{INV_PI, MIN_D2, inverse_square};

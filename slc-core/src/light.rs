@@ -1,4 +1,4 @@
-//! Light types and their bounds (DESIGN.md §1 "Light types"; talk: "Variety
+//! Light types and their bounds (docs/architecture.md §1.3; talk: "Variety
 //! of light types", "Area light bound").
 //!
 //! Every light gives its RGB peak radiant intensity `I_max` (what sets its
@@ -86,7 +86,7 @@ crate::shared! {
     }
 
     /// VPL cosine lobe per unit flux: `I(w)/Φ = max(n·w, 0)/π`, so
-    /// `I_max = Φ/π` (Keller 1997; DESIGN.md §1).
+    /// `I_max = Φ/π` (Keller 1997; docs/architecture.md §1.3).
     pub fn vpl_lobe(n: vec3f, w: vec3f) -> f32 {
         return max(dot(n, w), 0.0) * INV_PI;
     }

@@ -1,6 +1,6 @@
 //! Russian-roulette light ranges: the heart of stochastic light culling.
 //!
-//! Notation (DESIGN.md §1, talk slides "Russian roulette", "Random influence
+//! Notation (docs/architecture.md §1.1, talk slides "Russian roulette", "Random influence
 //! range", "Error bound-based light range"): `d2` squared distance from the
 //! light to the shading point, `rt2` the squared *threshold* range, `r2` the
 //! squared *random* range, `xi` the light's random number in `[0, 1)`.
@@ -142,6 +142,37 @@ impl IntensityMeasure {
         match self {
             Self::MaxChannel => 0,
             Self::ChannelAverage => 1,
+        }
+    }
+}
+
+/// Which keep test and weight a light takes, without their parameters:
+/// the family a culling setting belongs to (slc-scene's `Culling` carries
+/// the parameters). A kernel is specialised per kind, and the CPU's
+/// shading loop is monomorphised per kind.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CullKind {
+    /// Stochastic light culling: kept iff `d² < r²` ([`slc_keep`]),
+    /// weighted `1/p` ([`slc_weight`]).
+    Stochastic,
+    /// A clamped range `R`: kept iff `d² < R²` ([`clamp_keep`]), weight 1
+    /// (biased: the baseline engines ship).
+    Clamped,
+    /// Every light, weight 1.
+    None,
+}
+
+impl CullKind {
+    /// Every kind, in the order kernels and reports list them.
+    pub const ALL: [CullKind; 3] = [CullKind::Stochastic, CullKind::Clamped, CullKind::None];
+
+    /// The kind's name on the command line, in reports and in kernel
+    /// variants: `slc`, `clamp`, `none`.
+    pub fn name(self) -> &'static str {
+        match self {
+            CullKind::Stochastic => "slc",
+            CullKind::Clamped => "clamp",
+            CullKind::None => "none",
         }
     }
 }

@@ -1,5 +1,5 @@
 //! Reservoir sampling of in-range lights (talk: "Reservoir sampling
-//! \[Vitter85\]"; DESIGN.md §1). The GPU cannot store every light a traversal
+//! \[Vitter85\]"; docs/architecture.md §1.5). The GPU cannot store every light a traversal
 //! finds, so it streams them through `k` slots.
 //!
 //! - [`Reservoir`]: Vitter's Algorithm R. After `n` candidates every one is

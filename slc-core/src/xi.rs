@@ -67,6 +67,18 @@ crate::shared! {
         return xi_from_bits(add_wrap_u32(o, laine_karras(reverse_bits(frame), s) ^ laine_karras(0, s)));
     }
 
+    /// The ξ a light takes in a frame: [`xi_for`]`(seed, frame, light)`,
+    /// or `fixed` for every light where `fixed ≥ 0` (a fixed ξ in `[0, 1)`:
+    /// not an estimator on its own, but averaging frames over a grid of
+    /// fixed ξ is quadrature of the expectation over ξ, how the tests prove
+    /// a pipeline unbiased; a negative `fixed` means none).
+    pub fn frame_xi(seed: u32, frame: u32, light: u32, fixed: f32) -> f32 {
+        if fixed >= 0.0 {
+            return fixed;
+        }
+        return xi_for(seed, frame, light);
+    }
+
     /// `⌊2³²/φ⌋`, the golden-ratio increment: xored into a point's stream it
     /// starts the independent stream that samples its picks, added to a pass
     /// index the one of its camera rays.

@@ -16,7 +16,7 @@ use glam::Vec3;
 use slc_cpu::vpl::VplContext;
 use slc_cpu::vpl::denoise::Denoiser;
 use slc_scene::scene::Scene;
-use slc_scene::vpl::{GBuffer, PERIOD, VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, GBuffer, PERIOD, VplSettings};
 
 /// Mean irradiance (channel average) over the shaded pixels, and the
 /// albedo-weighted mean.
@@ -41,7 +41,7 @@ fn main() {
     let gb = ctx.gbuffer();
     let base = VplSettings::default();
     let reference = ctx
-        .shade(&VplSettings { method: VplMethod::Reference, ..base })
+        .shade(&VplSettings { culling: Culling::Reference, ..base })
         .expect("reference")
         .irradiance;
     let (ref_plain, ref_albedo) = means(&reference, gb);
@@ -66,8 +66,7 @@ fn main() {
     );
     // What the frame's expectation is with the near field: the filter of
     // the true far field, the (exact) near field added back.
-    let near =
-        ctx.shade(&VplSettings { method: VplMethod::None, ..base }).expect("near field").near;
+    let near = ctx.shade(&VplSettings { culling: Culling::None, ..base }).expect("near field").near;
     let (fp, fa) = means(&denoiser.filter_far(&reference, &near, gb, PERIOD), gb);
     println!(
         "{:<10} {:<28} {:>+9.3}% {:>+9.3}%",
@@ -76,7 +75,7 @@ fn main() {
         100.0 * (fp / ref_plain - 1.0),
         100.0 * (fa / ref_albedo - 1.0)
     );
-    for method in [VplMethod::None, VplMethod::Slc] {
+    for culling in [Culling::None, base.culling] {
         let n = frames;
         for (stages, near_radius, denoise) in [
             ("interleave", Some(0.0), false),
@@ -86,7 +85,7 @@ fn main() {
             let mut offsets = Vec::new();
             let mut albedo_offsets = Vec::new();
             for frame in 0..n {
-                let st = VplSettings { method, frame, near_radius, denoise, ..base };
+                let st = VplSettings { culling, frame, near_radius, denoise, ..base };
                 let shaded = ctx.shade(&st).expect("shade");
                 let e = if denoise {
                     denoiser.filter_far(&shaded.irradiance, &shaded.near, gb, PERIOD)
@@ -104,7 +103,7 @@ fn main() {
             let sem = sd / (n as f64).sqrt();
             println!(
                 "{:<10} {:<28} {:>+9.3}% {:>+9.3}% {:>11.3}% {:>9.3}%",
-                method.name(),
+                culling.name(),
                 stages,
                 100.0 * m,
                 100.0 * ma,

@@ -5,17 +5,15 @@
 //! light moves).
 
 use slc_cpu::vpl::VplContext;
+use slc_scene::culling::{DEFAULT_CLAMP_RANGE, DEFAULT_ERROR_BOUND};
 use slc_scene::scene::Scene;
-use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, VplSettings};
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let method = match args.get(1).map(String::as_str) {
-        Some("none") => VplMethod::None,
-        Some("clamp") => VplMethod::Clamp,
-        Some("reference") => VplMethod::Reference,
-        _ => VplMethod::Slc,
-    };
+    let name = args.get(1).map_or("slc", String::as_str);
+    let culling = Culling::named(name, DEFAULT_ERROR_BOUND, 1.0, DEFAULT_CLAMP_RANGE)
+        .expect("a culling: slc, clamp, none or reference");
     let size: u32 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(512);
     let frames: u32 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(5);
     let inputs = args.get(4).is_some_and(|a| a == "inputs");
@@ -24,7 +22,7 @@ fn main() {
     for frame in 0..frames {
         let t = inputs.then(|| ctx.time_inputs());
         let f = ctx
-            .render(&VplSettings { method, frame, ..Default::default() })
+            .render(&VplSettings { culling, frame, ..Default::default() })
             .expect("valid settings");
         if let Some(t) = t {
             print!(

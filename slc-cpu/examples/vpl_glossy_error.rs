@@ -9,22 +9,20 @@
 
 use glam::DVec3;
 use slc_cpu::vpl::VplContext;
+use slc_scene::culling::{DEFAULT_CLAMP_RANGE, DEFAULT_ERROR_BOUND};
 use slc_scene::scene::Scene;
-use slc_scene::vpl::{Shaded, VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, Shaded, VplSettings};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
     let size: u32 = args.get(1).map_or(Ok(128), |s| s.parse())?;
     let rsm: u32 = args.get(2).map_or(Ok(256), |s| s.parse())?;
-    let method = match args.get(3).map_or("slc", String::as_str) {
-        "clamp" => VplMethod::Clamp,
-        "none" => VplMethod::None,
-        _ => VplMethod::Slc,
-    };
+    let name = args.get(3).map_or("slc", String::as_str);
+    let culling = Culling::named(name, DEFAULT_ERROR_BOUND, 1.0, DEFAULT_CLAMP_RANGE)?;
     let ctx = VplContext::new(&Scene::cornell_box_glossy(), size, size, rsm, None)?;
     let reference =
-        ctx.render(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() })?.image;
-    let settings = VplSettings { method, ..VplSettings::default() };
+        ctx.render(&VplSettings { culling: Culling::Reference, ..VplSettings::default() })?.image;
+    let settings = VplSettings { culling, ..VplSettings::default() };
     let shaded = ctx.shade(&settings)?;
     let lambert = Shaded { specular: Vec::new(), specular_near: Vec::new(), ..shaded.clone() };
     let (brdf, lambert) =
@@ -41,7 +39,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!(
         "{size}x{size}, {} VPLs, {}: per seen material, mean (rel. to reference) and RMSE",
         rsm * rsm,
-        method.name()
+        culling.name()
     );
     println!(
         "| seen material | reference mean | BRDF: mean | BRDF: RMSE | as before: mean | as before: RMSE |"

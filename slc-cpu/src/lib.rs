@@ -24,10 +24,11 @@
 //! ```
 //! use slc_cpu::vpl::VplContext;
 //! use slc_scene::scene::Scene;
-//! use slc_scene::vpl::{VplMethod, VplSettings};
+//! use slc_scene::vpl::{Culling, VplSettings};
 //!
 //! let ctx = VplContext::new(&Scene::cornell_box(), 64, 64, 32, None).unwrap();
-//! let frame = ctx.render(&VplSettings { method: VplMethod::Slc, ..Default::default() }).unwrap();
+//! let culling = Culling::stochastic(0.004, 1.0).unwrap();
+//! let frame = ctx.render(&VplSettings { culling, ..Default::default() }).unwrap();
 //! assert!(frame.image.is_finite() && frame.image.mean() > 0.0);
 //! ```
 #![deny(missing_docs)]

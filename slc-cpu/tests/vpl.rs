@@ -4,10 +4,15 @@ use glam::Vec3;
 use slc_cpu::vpl::VplContext;
 use slc_scene::SceneError;
 use slc_scene::scene::Scene;
-use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, VplSettings};
 
-fn settings(method: VplMethod, frame: u32) -> VplSettings {
-    VplSettings { method, frame, denoise: false, error_bound: 0.01, ..VplSettings::default() }
+fn settings(culling: Culling, frame: u32) -> VplSettings {
+    VplSettings { culling, frame, denoise: false, ..VplSettings::default() }
+}
+
+/// Stochastic culling at ε = 0.01.
+fn slc() -> Culling {
+    Culling::stochastic(0.01, 1.0).unwrap()
 }
 
 /// E_ξ[SLC image] = unculled image, per pixel, through the real pipeline
@@ -20,8 +25,8 @@ fn settings(method: VplMethod, frame: u32) -> VplSettings {
 #[test]
 fn slc_expectation_equals_unculled_per_pixel() {
     let ctx = VplContext::new(&Scene::cornell_box(), 32, 32, 32, None).unwrap();
-    let fixed = |x: f32| VplSettings { fixed_xi: Some(x), ..settings(VplMethod::Slc, 0) };
-    let none = ctx.render(&settings(VplMethod::None, 0)).unwrap().image;
+    let fixed = |x: f32| VplSettings { fixed_xi: Some(x), ..settings(slc(), 0) };
+    let none = ctx.render(&settings(Culling::None, 0)).unwrap().image;
     let all_kept = ctx.render(&fixed(slc_core::range::Xi::MAX.get())).unwrap().image;
     const M: usize = 512;
     let mut mean = vec![glam::DVec3::ZERO; none.data.len()];
@@ -60,13 +65,13 @@ fn slc_mean_over_seeds_converges_to_unculled() {
     // The unculled frame's expectation over the interleaving's shifts:
     // frames 0..64 take each shift once; 256 SLC frames take each 4 times.
     let truth = (0..64).fold([0.0f64; 3], |acc, f| {
-        let m = ctx.render(&settings(VplMethod::None, f)).unwrap().image.channel_means();
+        let m = ctx.render(&settings(Culling::None, f)).unwrap().image.channel_means();
         [0, 1, 2].map(|c| acc[c] + m[c] / 64.0)
     });
     const S: u32 = 256;
     let means: Vec<[f64; 3]> = (0..S)
         .map(|f| {
-            let img = ctx.render(&settings(VplMethod::Slc, f)).unwrap().image;
+            let img = ctx.render(&settings(slc(), f)).unwrap().image;
             assert!(img.is_finite());
             img.channel_means()
         })
@@ -90,11 +95,9 @@ fn slc_mean_over_seeds_converges_to_unculled() {
 #[test]
 fn clamped_ranges_darken() {
     let ctx = VplContext::new(&Scene::cornell_box(), 48, 48, 32, None).unwrap();
-    let none = ctx.render(&settings(VplMethod::None, 0)).unwrap().image;
-    let clamp =
-        ctx.render(&VplSettings { range: 0.1, ..settings(VplMethod::Clamp, 0) }).unwrap().image;
-    let direct_only =
-        ctx.render(&VplSettings { range: 1e-6, ..settings(VplMethod::Clamp, 0) }).unwrap().image;
+    let none = ctx.render(&settings(Culling::None, 0)).unwrap().image;
+    let clamp = ctx.render(&settings(Culling::clamped(0.1).unwrap(), 0)).unwrap().image;
+    let direct_only = ctx.render(&settings(Culling::clamped(1e-6).unwrap(), 0)).unwrap().image;
     let indirect = |img: &slc_scene::image::Image, c: usize| {
         img.channel_means()[c] - direct_only.channel_means()[c]
     };
@@ -141,14 +144,14 @@ fn interleaved_image_is_the_interleaved_estimator_of_the_reference() {
     let p = slc_scene::vpl::PERIOD;
     // Interleaving alone: no near-field split (R_n = 0).
     let none = ctx
-        .shade(&VplSettings { near_radius: Some(0.0), ..settings(VplMethod::None, 0) })
+        .shade(&VplSettings { near_radius: Some(0.0), ..settings(Culling::None, 0) })
         .unwrap()
         .irradiance;
     let reference = ctx
-        .shade(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() })
+        .shade(&VplSettings { culling: Culling::Reference, ..VplSettings::default() })
         .unwrap()
         .irradiance;
-    let st = settings(VplMethod::None, 0);
+    let st = settings(Culling::None, 0);
     let shift = interleave_shift(st.seed, st.frame, p);
     let subset_of_vpl: Vec<u32> =
         (0..v.len() as u32).map(|t| interleave_subset(t % size, t / size, p)).collect();
@@ -268,15 +271,9 @@ fn bad_settings_are_typed_errors() {
     assert!(VplContext::new(&scene, 10, 10, 32, Some(f32::NAN)).is_err());
     let ctx = VplContext::new(&scene, 16, 16, 16, None).unwrap();
     for bad in [0.0, -1.0, f32::NAN, f32::INFINITY] {
-        assert!(ctx.render(&VplSettings { error_bound: bad, ..VplSettings::default() }).is_err());
-        assert!(
-            ctx.render(&VplSettings {
-                method: VplMethod::Clamp,
-                range: bad,
-                ..VplSettings::default()
-            })
-            .is_err()
-        );
+        // A culling with a bad parameter cannot be made.
+        assert!(Culling::stochastic(bad, 1.0).is_err());
+        assert!(Culling::clamped(bad).is_err());
     }
     assert!(ctx.render(&VplSettings { tile: 0, ..VplSettings::default() }).is_err());
 }
@@ -300,7 +297,7 @@ fn renders_are_deterministic_per_seed() {
 fn moved_light_renders_as_a_new_context() {
     let mut scene = Scene::cornell_box();
     let mut ctx = VplContext::new(&scene, 48, 40, 32, None).unwrap();
-    let s = settings(VplMethod::Slc, 3);
+    let s = settings(slc(), 3);
     let before = ctx.render(&s).unwrap().image;
     let slc_scene::scene::PrimaryLight::Spot { position, direction, intensity, inner, outer } =
         scene.primary
@@ -393,7 +390,17 @@ fn near_field_removes_the_blotches_at_the_tall_blocks_base() {
     }
     let reference: Vec<Vec3> = crease
         .iter()
-        .map(|&i| shade(&all, gb.position[i], gb.normal[i], ctx.min_d2(), 0.0, Cull::None).0)
+        .map(|&i| {
+            shade(
+                &all,
+                gb.position[i],
+                gb.normal[i],
+                ctx.min_d2(),
+                0.0,
+                Cull::far(slc_core::range::CullKind::None),
+            )
+            .0
+        })
         .collect();
     let mut denoiser = Denoiser::new(gb);
     let mut largest_error = |near_radius: Option<f32>| {
@@ -442,11 +449,11 @@ fn interleaving_averages_to_the_reference_over_frames() {
     let ctx = VplContext::new(&Scene::cornell_box(), 64, 48, 32, None).unwrap();
     let gb = ctx.gbuffer();
     let reference = ctx
-        .shade(&VplSettings { method: VplMethod::Reference, ..VplSettings::default() })
+        .shade(&VplSettings { culling: Culling::Reference, ..VplSettings::default() })
         .unwrap()
         .irradiance;
     let frames = PERIOD * PERIOD;
-    let near_field = ctx.shade(&settings(VplMethod::None, 0)).unwrap().near;
+    let near_field = ctx.shade(&settings(Culling::None, 0)).unwrap().near;
     assert!(
         near_field.iter().any(|n| n.max_element() > 0.0),
         "the default split must have a near field"
@@ -460,9 +467,8 @@ fn interleaving_averages_to_the_reference_over_frames() {
     ] {
         let mut mean = vec![glam::DVec3::ZERO; reference.len()];
         for frame in 0..frames {
-            let shaded = ctx
-                .shade(&VplSettings { near_radius, ..settings(VplMethod::None, frame) })
-                .unwrap();
+            let shaded =
+                ctx.shade(&VplSettings { near_radius, ..settings(Culling::None, frame) }).unwrap();
             let e = if denoise {
                 denoiser.filter_far(&shaded.irradiance, &shaded.near, gb, PERIOD)
             } else {

@@ -12,6 +12,7 @@
 //! | [`light_bvh`] | the light BVH of the `lightbvh` baseline (built here, sampled by slc-core on both backends) |
 //! | [`alias`] | Walker's alias table (the `power` baseline) |
 //! | [`image`] | linear HDR images, RMSE; EXR/PNG I/O (feature `io`) |
+//! | [`culling`] | how lights are culled ([`culling::Culling`], its parameters inside each variant), the one vocabulary of the CPU frame, the GPU passes, the CLI and slc-bevy |
 //! | [`vpl`] | application A's settings, G-buffer, VPLs, shaded irradiance and frame |
 //! | [`pt`] | application B's settings, method enum, prepared scene and accumulation |
 //! | [`temporal`] | each frame's camera and the settings of the temporal stage |
@@ -31,6 +32,7 @@
 pub mod alias;
 pub mod backend;
 pub mod cornell;
+pub mod culling;
 pub mod error_bound;
 #[cfg(feature = "io")]
 pub mod gltf;

@@ -1,51 +1,22 @@
 //! Application A's backend-neutral half (the paper's real-time VPL
-//! indirect illumination): methods and settings, the G-buffer and VPLs a
+//! indirect illumination): settings, the G-buffer and VPLs a
 //! frame is shaded from, the 8×8 interleaving, and what a backend returns.
 
 use crate::RenderError;
+pub use crate::culling::Culling;
 use crate::image::Image;
 use glam::Vec3;
-use slc_core::range::RangeParams;
-
-/// How the indirect light is computed.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum VplMethod {
-    /// Stochastic light culling (error bound ε).
-    Slc,
-    /// Clamped ranges (range R), no reweighting.
-    Clamp,
-    /// Interleaved, unculled.
-    None,
-    /// Every VPL at every pixel: the ground truth.
-    Reference,
-}
-
-impl VplMethod {
-    /// Lower-case name used on the command line and in reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            VplMethod::Slc => "slc",
-            VplMethod::Clamp => "clamp",
-            VplMethod::None => "none",
-            VplMethod::Reference => "reference",
-        }
-    }
-}
 
 /// Per-run settings (the scene-dependent part lives in the [`VplInputs`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct VplSettings {
-    /// Method.
-    pub method: VplMethod,
-    /// SLC error bound ε (radiance units).
-    pub error_bound: f32,
-    /// Clamp range R (scene units).
-    pub range: f32,
-    /// Exposure E used by the error bound.
-    pub exposure: f32,
+    /// How the VPLs are culled, with its parameters ([`Culling::Reference`]:
+    /// every VPL at every pixel, the ground truth).
+    pub culling: Culling,
     /// Seed of the per-VPL ξ.
     pub seed: u32,
-    /// Frame number (a new ξ set per frame).
+    /// Frame number (a new ξ set and a new shift of the interleaving's
+    /// subset map per frame).
     pub frame: u32,
     /// Tile size in sub-image pixels.
     pub tile: u32,
@@ -75,17 +46,12 @@ pub struct VplSettings {
 pub const NEAR_FACTOR: f32 = 3.0;
 
 impl Default for VplSettings {
+    /// Stochastic culling at the default error bound
+    /// ([`Culling::default`]), seed 1, frame 0, 4×4 tiles, denoised, the
+    /// default near field.
     fn default() -> Self {
         VplSettings {
-            method: VplMethod::Slc,
-            // The mean RMSE of a frame against every VPL at every pixel falls
-            // from 0.00102 (ε = 0.008; one frame's standard deviation
-            // 0.00018: occasional far VPLs with large 1/p) to 0.00079
-            // (±0.00004) for about 2 ms more shading at 512² (`slc bench
-            // --repeat 16`, 16 frames each; README "Speed against error").
-            error_bound: 0.004,
-            range: 0.1,
-            exposure: 1.0,
+            culling: Culling::default(),
             seed: 1,
             frame: 0,
             tile: 4,
@@ -97,17 +63,9 @@ impl Default for VplSettings {
 }
 
 impl VplSettings {
-    /// Checks the settings every backend shares and returns the error-bound
-    /// parameters.
-    pub fn validate(&self) -> Result<RangeParams, RenderError> {
-        let params = RangeParams::new(self.error_bound, self.exposure)
-            .map_err(|e| RenderError::Setting(e.to_string()))?;
-        if self.method == VplMethod::Clamp && !(self.range.is_finite() && self.range > 0.0) {
-            return Err(RenderError::Setting(format!(
-                "clamp range {} must be finite and > 0",
-                self.range
-            )));
-        }
+    /// Checks the settings every backend shares (the culling checked its
+    /// own parameters when it was made).
+    pub fn validate(&self) -> Result<(), RenderError> {
         if let Some(x) = self.fixed_xi {
             slc_core::range::Xi::new(x).map_err(|e| RenderError::Setting(e.to_string()))?;
         }
@@ -119,7 +77,7 @@ impl VplSettings {
         {
             return Err(RenderError::Setting(format!("near radius {r} must be finite and >= 0")));
         }
-        Ok(params)
+        Ok(())
     }
 
     /// `R_n²` of the near-field split ([`VplSettings::near_radius`]) for a

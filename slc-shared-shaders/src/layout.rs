@@ -195,8 +195,9 @@ slc_core::shared! {
         pub seed: u32,
         /// Frame or pass number.
         pub frame: u32,
-        /// Padding.
-        pub pad: u32,
+        /// A ξ every light takes instead of its own (`≥ 0`), or a negative
+        /// value: none ([`slc_core::xi::frame_xi`]).
+        pub fixed_xi: f32,
     }
 
     /// Uniforms of one `bsh_refit` level dispatch.

@@ -277,16 +277,8 @@ impl Kernel {
     }
 }
 
-/// Culling method of `vpl_tiled`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum CullMethod {
-    /// Stochastic light culling.
-    Slc,
-    /// Clamped ranges (biased baseline).
-    Clamp,
-    /// No culling.
-    None,
-}
+/// The culling kind of `vpl_tiled` and `vpl_near` (slc-core's).
+pub use slc_core::range::CullKind;
 
 /// MIS heuristic of `pt_connect`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -397,8 +389,8 @@ pub struct Features {
     pub interleave: u32,
     /// Capacity of a tile's light list (at least the lights per subset).
     pub max_tile_lights: u32,
-    /// Culling method of `vpl_tiled`.
-    pub method: CullMethod,
+    /// Culling kind of `vpl_tiled` and `vpl_near`.
+    pub method: CullKind,
     /// MIS heuristic of `pt_connect`.
     pub heuristic: Heuristic,
     /// Light selection of `pt_connect` and `pt_extend`.
@@ -444,7 +436,7 @@ impl Default for Features {
             tile_size: 8,
             interleave: 8,
             max_tile_lights: 1024,
-            method: CullMethod::Slc,
+            method: CullKind::Stochastic,
             heuristic: Heuristic::Power,
             selection: Selection::Reservoir,
             vpl_source: VplSource::Rsm,
@@ -621,11 +613,7 @@ pub fn generate_module(kernel: Kernel, features: &Features) -> Result<Generated,
     } else {
         features.lights
     };
-    let method = match features.method {
-        CullMethod::Slc => "slc",
-        CullMethod::Clamp => "clamp",
-        CullMethod::None => "none",
-    };
+    let method = features.method.name();
     let heuristic = match features.heuristic {
         Heuristic::Balance => "balance",
         Heuristic::Power => "power",

@@ -71,7 +71,7 @@ fn rust_twins_match_naga_layout() {
             wo,
             pad3
         ),
-        fields!(FrameParams, light_count, seed, frame, pad),
+        fields!(FrameParams, light_count, seed, frame, fixed_xi),
         fields!(RefitParams, first, count, pad0, pad1),
         fields!(
             VplParams,
@@ -159,7 +159,7 @@ fn rust_twins_match_naga_layout() {
 #[test]
 fn vpl_tiled_workgroup_bytes_match_naga() {
     use slc_shared_shaders::{
-        CullMethod, Features, Kernel, LightTypes, generate_module, vpl_tiled_workgroup_bytes,
+        CullKind, Features, Kernel, LightTypes, generate_module, vpl_tiled_workgroup_bytes,
     };
     for tile in [1u32, 2, 4, 8, 16] {
         for list in [1u32, 100, 1024] {
@@ -167,7 +167,7 @@ fn vpl_tiled_workgroup_bytes_match_naga() {
                 lights: LightTypes { vpl: true, ..LightTypes::default() },
                 tile_size: tile,
                 max_tile_lights: list,
-                method: CullMethod::Slc,
+                method: CullKind::Stochastic,
                 ..Features::default()
             };
             if vpl_tiled_workgroup_bytes(tile, list) > 16384 {

@@ -26,14 +26,14 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
         (
             "vpl_tiled-clamp-tile8-p8",
             Kernel::VplTiled,
-            Features { lights: vpl, method: CullMethod::Clamp, ..Features::default() },
+            Features { lights: vpl, method: CullKind::Clamped, ..Features::default() },
         ),
         ("vpl_denoise-tile8", Kernel::VplDenoise, Features { lights: vpl, ..Features::default() }),
         ("vpl_near-slc-tile8-p8", Kernel::VplNear, Features { lights: vpl, ..Features::default() }),
         (
             "vpl_near-clamp-tile8-p8",
             Kernel::VplNear,
-            Features { lights: vpl, method: CullMethod::Clamp, ..Features::default() },
+            Features { lights: vpl, method: CullKind::Clamped, ..Features::default() },
         ),
         (
             "vpl_tiled-slc-tile8-p8-glossy",
@@ -45,7 +45,7 @@ fn variants() -> Vec<(&'static str, Kernel, Features)> {
             Kernel::VplTiled,
             Features {
                 lights: vpl,
-                method: CullMethod::None,
+                method: CullKind::None,
                 interleave: 1,
                 glossy: true,
                 ..Features::default()

@@ -74,7 +74,7 @@ fn every_bsh_variant_validates() {
 fn every_vpl_variant_validates() {
     for tile in [1, 2, 4, 8, 16] {
         for period in [1, 4, 8, 16] {
-            for method in [CullMethod::Slc, CullMethod::Clamp, CullMethod::None] {
+            for method in CullKind::ALL {
                 for max_tile_lights in [64, 1024, 2048] {
                     let f = Features {
                         lights: vpl_only(),
@@ -127,7 +127,7 @@ fn every_kernel_translates_to_every_backend() {
             }
         }
     }
-    for method in [CullMethod::Slc, CullMethod::Clamp, CullMethod::None] {
+    for method in CullKind::ALL {
         let g = generate_module(
             Kernel::VplTiled,
             &Features { lights: vpl_only(), method, ..Features::default() },

@@ -6,9 +6,9 @@
 use crate::controls::{Controls, VPL_EDGES};
 use crate::present::Present;
 use crate::{ViewError, ViewOptions, ViewSummary};
+use slc_core::range::CullKind;
 use slc_scene::scene::{Camera, PrimaryLight};
 use slc_scene::temporal::TemporalSettings;
-use slc_scene::vpl::VplMethod;
 use slc_wgpu::GpuContext;
 use slc_wgpu::frame::{FrameDesc, GpuVplFrame, StageTime};
 use std::sync::Arc;
@@ -207,6 +207,7 @@ impl State {
         );
         let mut controls = Controls::new(
             opts.settings,
+            opts.exposure,
             opts.scene.primary,
             opts.scene.camera,
             opts.scene.diagonal(),
@@ -299,7 +300,7 @@ impl State {
             // the display mapping the window uses).
             let out = self.frame.render(&st)?;
             out.image
-                .write_png(path, settings.exposure)
+                .write_png(path, self.controls.exposure)
                 .map_err(|e| ViewError::Output(e.to_string()))?;
             self.frame_index += 1;
             return Ok(true);
@@ -337,7 +338,7 @@ impl State {
             &target,
             (self.desc.width, self.desc.height),
             target_size,
-            settings.exposure,
+            self.controls.exposure,
         );
         self.overlay(&mut encoder, &target, target_size);
         gpu.queue.submit([encoder.finish()]);
@@ -432,23 +433,22 @@ fn panel(
         }
     }
     ui.separator();
-    let s = &mut c.settings;
     ui.horizontal(|ui| {
-        ui.selectable_value(&mut s.method, VplMethod::Slc, "slc [1]");
-        ui.selectable_value(&mut s.method, VplMethod::Clamp, "clamp [2]");
-        ui.selectable_value(&mut s.method, VplMethod::None, "none [3]");
+        ui.selectable_value(&mut c.kind, CullKind::Stochastic, "slc [1]");
+        ui.selectable_value(&mut c.kind, CullKind::Clamped, "clamp [2]");
+        ui.selectable_value(&mut c.kind, CullKind::None, "none [3]");
     });
-    match s.method {
-        VplMethod::Clamp => ui.add(
-            egui::Slider::new(&mut s.range, 0.005..=2.0).logarithmic(true).text("range R [+/-]"),
+    match c.kind {
+        CullKind::Clamped => ui.add(
+            egui::Slider::new(&mut c.range, 0.005..=2.0).logarithmic(true).text("range R [+/-]"),
         ),
         _ => ui.add(
-            egui::Slider::new(&mut s.error_bound, 0.0002..=0.5)
+            egui::Slider::new(&mut c.error_bound, 0.0002..=0.5)
                 .logarithmic(true)
                 .text("error bound ε [+/-]"),
         ),
     };
-    ui.checkbox(&mut s.denoise, "denoise [d]");
+    ui.checkbox(&mut c.settings.denoise, "denoise [d]");
     ui.checkbox(&mut c.freeze, "freeze ξ [f]");
     egui::ComboBox::from_label("VPLs [v]")
         .selected_text(format!("{}", c.rsm_edge * c.rsm_edge))

@@ -5,8 +5,10 @@
 //! swinging).
 
 use glam::{Quat, Vec3};
+use slc_core::range::CullKind;
+use slc_scene::culling::{DEFAULT_CLAMP_RANGE, DEFAULT_ERROR_BOUND};
 use slc_scene::scene::{Camera, PrimaryLight};
-use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, VplSettings};
 use winit::keyboard::{Key, NamedKey};
 
 /// RSM edges the VPL count cycles through (`edge²` VPLs).
@@ -27,8 +29,18 @@ const ORBIT_STEP: f32 = 0.05;
 /// The viewer's settings and the light's pose.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Controls {
-    /// Method, parameters, denoise and near field of the frame.
+    /// Seed, denoise and near field of the frame (its culling is
+    /// [`Controls::kind`] with the knobs below: [`Controls::culling`]).
     pub settings: VplSettings,
+    /// The culling the keys and the overlay choose (`1` `2` `3`).
+    pub kind: CullKind,
+    /// The error bound ε of stochastic culling (kept while another kind is
+    /// shown).
+    pub error_bound: f32,
+    /// The clamp range `R` (kept while another kind is shown).
+    pub range: f32,
+    /// The exposure of the error bound and of the display.
+    pub exposure: f32,
     /// Keep ξ of frame 0 on every frame (no temporal change of SLC's noise).
     pub freeze: bool,
     /// Move the light on a horizontal circle.
@@ -63,17 +75,27 @@ pub struct Controls {
 }
 
 impl Controls {
-    /// Controls at `settings`, the scene's primary light `base` and
-    /// camera `camera`, a scene of diagonal `diag`, `rsm_edge²` VPLs;
-    /// temporal accumulation on.
+    /// Controls at `settings` (its culling sets the kind and its knob; the
+    /// other knob starts at its default), exposure `exposure`, the scene's
+    /// primary light `base` and camera `camera`, a scene of diagonal
+    /// `diag`, `rsm_edge²` VPLs; temporal accumulation on.
     pub fn new(
         settings: VplSettings,
+        exposure: f32,
         base: PrimaryLight,
         camera: Camera,
         diag: f32,
         rsm_edge: u32,
     ) -> Controls {
+        let range = match settings.culling {
+            Culling::Clamped(r) => r.get(),
+            _ => DEFAULT_CLAMP_RANGE,
+        };
         Controls {
+            kind: settings.culling.kind(),
+            error_bound: settings.culling.error_bound().unwrap_or(DEFAULT_ERROR_BOUND),
+            range,
+            exposure,
             settings,
             freeze: false,
             animate: false,
@@ -152,9 +174,26 @@ impl Controls {
         }
     }
 
+    /// The culling the controls show: [`Controls::kind`] with its knob.
+    /// The knobs stay within bounds that make a valid culling; an exposure
+    /// that does not falls back to 1.
+    pub fn culling(&self) -> Culling {
+        match self.kind {
+            CullKind::Stochastic => Culling::stochastic(self.error_bound, self.exposure)
+                .or_else(|_| Culling::stochastic(self.error_bound, 1.0))
+                .unwrap_or_default(),
+            CullKind::Clamped => Culling::clamped(self.range).unwrap_or(Culling::None),
+            CullKind::None => Culling::None,
+        }
+    }
+
     /// The frame's settings for frame number `frame` (0 while ξ is frozen).
     pub fn frame_settings(&self, frame: u32) -> VplSettings {
-        VplSettings { frame: if self.freeze { 0 } else { frame }, ..self.settings }
+        VplSettings {
+            culling: self.culling(),
+            frame: if self.freeze { 0 } else { frame },
+            ..self.settings
+        }
     }
 
     /// Applies a key; `true` when it changed something. Keys: `1` `2` `3`
@@ -168,9 +207,9 @@ impl Controls {
         let s = &mut self.settings;
         match key {
             Key::Character(c) => match c.as_str() {
-                "1" => s.method = VplMethod::Slc,
-                "2" => s.method = VplMethod::Clamp,
-                "3" => s.method = VplMethod::None,
+                "1" => self.kind = CullKind::Stochastic,
+                "2" => self.kind = CullKind::Clamped,
+                "3" => self.kind = CullKind::None,
                 "+" | "=" => self.scale_parameter(true),
                 "-" => self.scale_parameter(false),
                 "d" | "D" => s.denoise = !s.denoise,
@@ -211,14 +250,14 @@ impl Controls {
     /// Doubles or halves the error bound (slc), or scales the clamp range
     /// by 1.25 (clamp); clamped to sane bounds.
     fn scale_parameter(&mut self, up: bool) {
-        let s = &mut self.settings;
-        match s.method {
-            VplMethod::Clamp => {
-                s.range = (if up { s.range * 1.25 } else { s.range / 1.25 }).clamp(1e-3, 1e3)
+        match self.kind {
+            CullKind::Clamped => {
+                let r = self.range;
+                self.range = (if up { r * 1.25 } else { r / 1.25 }).clamp(1e-3, 1e3)
             }
             _ => {
-                s.error_bound =
-                    (if up { s.error_bound * 2.0 } else { s.error_bound * 0.5 }).clamp(1e-5, 10.0)
+                let e = self.error_bound;
+                self.error_bound = (if up { e * 2.0 } else { e * 0.5 }).clamp(1e-5, 10.0)
             }
         }
     }
@@ -237,21 +276,30 @@ mod tests {
 
     fn controls() -> Controls {
         let scene = Scene::cornell_box();
-        Controls::new(VplSettings::default(), scene.primary, scene.camera, scene.diagonal(), 256)
+        Controls::new(
+            VplSettings::default(),
+            1.0,
+            scene.primary,
+            scene.camera,
+            scene.diagonal(),
+            256,
+        )
     }
 
     /// Keys change what they say, and unknown keys nothing.
     #[test]
     fn keys_change_the_settings() {
         let mut c = controls();
-        let eps = c.settings.error_bound;
+        let eps = c.frame_settings(0).culling.error_bound().unwrap();
         assert!(c.key(&Key::Character("+".into())));
-        assert_eq!(c.settings.error_bound, 2.0 * eps);
+        assert_eq!(c.frame_settings(0).culling.error_bound(), Some(2.0 * eps));
         assert!(c.key(&Key::Character("2".into())));
-        assert_eq!(c.settings.method, VplMethod::Clamp);
-        let r = c.settings.range;
+        let Culling::Clamped(r) = c.frame_settings(0).culling else { panic!("clamped") };
         c.key(&Key::Character("-".into()));
-        assert!((c.settings.range - r / 1.25).abs() < 1e-6);
+        let Culling::Clamped(r2) = c.frame_settings(0).culling else { panic!("clamped") };
+        assert!((r2.get() - r.get() / 1.25).abs() < 1e-6);
+        c.key(&Key::Character("1".into()));
+        assert_eq!(c.frame_settings(0).culling.error_bound(), Some(2.0 * eps), "ε kept");
         c.key(&Key::Character("d".into()));
         assert!(!c.settings.denoise);
         c.key(&Key::Character("f".into()));

@@ -53,9 +53,12 @@ pub struct ViewOptions {
     pub shadow_size: u32,
     /// Clamp distance of the VPL fall-off (`None`: 1% of the diagonal).
     pub min_distance: Option<f32>,
-    /// The first frame's settings (method, ε, range, denoise, exposure,
-    /// near field); `frame` is the viewer's.
+    /// The first frame's settings (culling, denoise, near field); `frame`
+    /// is the viewer's.
     pub settings: VplSettings,
+    /// The exposure of the display (and of stochastic culling's error bound
+    /// when the viewer switches to it).
+    pub exposure: f32,
     /// Start with the light animated.
     pub animate: bool,
     /// Accumulate the indirect light over frames (the key `t` toggles it).
@@ -82,6 +85,7 @@ impl ViewOptions {
             shadow_size: 2048,
             min_distance: None,
             settings: VplSettings::default(),
+            exposure: 1.0,
             animate: false,
             temporal: true,
             orbit: false,

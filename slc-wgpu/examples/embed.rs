@@ -20,13 +20,13 @@
 
 use slc_scene::image::Image;
 use slc_scene::scene::{LightMap, PrimaryLight, Scene};
-use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, VplSettings};
 use slc_wgpu::glam::Vec3;
 use slc_wgpu::passes::{
     DirectInputs, DirectPass, DirectPassDesc, DirectSelection, DirectSettings, IndirectInputs,
     IndirectPass, IndirectPassDesc, VplInput, VplSourceDesc,
 };
-use slc_wgpu::{GBuffer, GpuContext, Light, LightSet, PointLight, RangeParams, Surface};
+use slc_wgpu::{GBuffer, GpuContext, Light, LightSet, PointLight, Surface};
 use wgpu::util::DeviceExt;
 
 /// One vertex of the engine's mesh.
@@ -435,10 +435,7 @@ pub fn render(
             &inputs,
             &slc_wgpu::frame::indirect_settings(&settings, min_distance)?,
         )?;
-        let culling = slc_wgpu::Culling::Stochastic(RangeParams::new(
-            settings.error_bound,
-            settings.exposure,
-        )?);
+        let culling = settings.culling;
         direct_pass.record(
             &mut encoder,
             &DirectInputs::new(gbuffer, &direct_view),
@@ -478,7 +475,10 @@ pub fn render(
 }
 
 pub fn settings() -> VplSettings {
-    VplSettings { method: VplMethod::Slc, error_bound: 0.008, ..VplSettings::default() }
+    VplSettings {
+        culling: Culling::stochastic(0.008, 1.0).expect("valid"),
+        ..VplSettings::default()
+    }
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

@@ -55,7 +55,7 @@ use slc_scene::backend::Timing;
 use slc_scene::image::Image;
 use slc_scene::scene::{Camera, LightMap, Material, PrimaryLight, Scene};
 use slc_scene::temporal::{TemporalSettings, TemporalView};
-use slc_scene::vpl::{PERIOD, Specular, VplInputs, VplMethod, VplSettings, VplStats, Vpls};
+use slc_scene::vpl::{PERIOD, Specular, VplInputs, VplSettings, VplStats, Vpls};
 use slc_shared_shaders::layout::{
     GpuLight, GpuMaterial, GpuVertex, ImageParams, LIGHT_SPOT, MAP_CAMERA, MAP_ORTHOGRAPHIC,
     MAP_PERSPECTIVE, MapParams,
@@ -180,33 +180,24 @@ impl StageTime {
 
 /// The indirect pass's settings for the CPU frame's VPL settings at clamp
 /// distance `min_distance` ([`GpuVplFrame::min_distance`] for a frame):
-/// methods `slc`, `clamp` and `none` with per-frame ξ; the reference and a
-/// fixed ξ are refused here ([`crate::vpl::GpuVpl`] shades them), and the
+/// the same culling, seed, frame, fixed ξ, denoise and near field; the
+/// reference is refused here ([`crate::vpl::GpuVpl`] shades it), and the
 /// CPU's `tile` (its tile size) has no GPU counterpart.
 pub fn indirect_settings(
     settings: &VplSettings,
     min_distance: f32,
 ) -> Result<IndirectSettings, GpuError> {
-    let params = settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
-    let culling = match settings.method {
-        VplMethod::Slc => Culling::Stochastic(params),
-        VplMethod::Clamp => Culling::Clamped { range: settings.range },
-        VplMethod::None => Culling::None,
-        VplMethod::Reference => {
-            return Err(GpuError::Setting(
-                "the GPU frame runs slc, clamp or none (the reference is GpuVpl's)".into(),
-            ));
-        }
-    };
-    if settings.fixed_xi.is_some() {
+    settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
+    if settings.culling == Culling::Reference {
         return Err(GpuError::Setting(
-            "the GPU frame draws ξ per frame (fixed ξ is GpuVpl's)".into(),
+            "the GPU frame runs slc, clamp or none (the reference is GpuVpl's)".into(),
         ));
     }
     Ok(IndirectSettings {
-        culling,
+        culling: settings.culling,
         seed: settings.seed,
         frame: settings.frame,
+        fixed_xi: settings.fixed_xi,
         denoise: settings.denoise,
         min_distance,
         near_radius: settings.near_radius,

@@ -292,7 +292,8 @@ impl GpuLightSet {
     /// Seed and frame (pass) of the next [`GpuLightSet::encode`]d update
     /// (staged until the next submit).
     pub(crate) fn set_frame(&self, gpu: &GpuContext, seed: u32, frame: u32) {
-        self.frame_params.write(gpu, &[FrameParams { light_count: self.b.n, seed, frame, pad: 0 }]);
+        self.frame_params
+            .write(gpu, &[FrameParams { light_count: self.b.n, seed, frame, fixed_xi: -1.0 }]);
     }
 
     /// Records the range update and the BSH refit into `cp` (and binds the

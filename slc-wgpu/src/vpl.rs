@@ -3,18 +3,16 @@
 //! casts them), a thin caller of the engine's [`IndirectPass`], as
 //! [`crate::direct::GpuDirect`] is of the direct pass: the G-buffer and the
 //! VPLs are uploaded once as a position G-buffer and an RSM, each shade
-//! records the pass (one of its uniform slots, its cached bind groups),
+//! records the pass (its uniforms, its cached bind groups),
 //! submits it and reads its output back. [`GpuVpl`] is an
 //! [`IndirectShader`]; the frame's composition is the caller's.
 //!
-//! The CPU's settings the pass has no counterpart for are honoured here:
-//! [`VplMethod::Reference`] records a second pass built without
+//! [`Culling::Reference`] records a second pass built without
 //! interleaving ([`IndirectPassDesc::interleaved`]`: false`, unculled,
 //! neither denoised nor split into near and far fields; built at the first
-//! reference shade), and a fixed ξ ([`VplSettings::fixed_xi`], SLC) writes
-//! `r² = r_t²/(1 − ξ)` from the host between the pass's `vpl_pack` and its
-//! shading instead of running `light_update`. The CPU's `tile` (its tile
-//! size) has no GPU counterpart: the kernels' tiles are [`TILE`] pixels.
+//! reference shade); a fixed ξ ([`VplSettings::fixed_xi`]) is the pass's
+//! own. The CPU's `tile` (its tile size) has no GPU counterpart: the
+//! kernels' tiles are [`TILE`] pixels.
 //!
 //! A G-buffer with specular lobes ([`slc_scene::vpl::GBuffer::has_specular`])
 //! builds the pass glossy ([`IndirectPassDesc::glossy`]): the pixels' glTF
@@ -32,10 +30,8 @@ use crate::passes::{
 };
 use crate::{GpuContext, GpuError};
 use glam::Vec3;
-use slc_core::light::vpl_threshold_range2;
-use slc_core::range::random_range2;
 use slc_scene::backend::IndirectShader;
-use slc_scene::vpl::{Shaded, Specular, VplInputs, VplMethod, VplSettings};
+use slc_scene::vpl::{Shaded, Specular, VplInputs, VplSettings};
 use slc_shared_shaders::layout::GpuMaterial;
 use std::time::Instant;
 
@@ -101,8 +97,6 @@ pub struct GpuVpl {
     min_distance: f32,
     /// Pixels that see a surface.
     valid: Vec<bool>,
-    /// The interleaved pass's flux per slot (× P²), for a fixed ξ's `r_t²`.
-    slot_flux: Vec<Vec3>,
     /// Timestamps around the timed parts; `None` where the adapter has none
     /// or is a software one, whose timestamps do not bracket the work.
     timer: Option<Timer>,
@@ -244,7 +238,6 @@ impl GpuVpl {
                 output,
             }
         });
-        let scale = slc_core::interleave::interleave_flux_scale(slc_scene::vpl::PERIOD);
         let g = GpuVpl {
             gpu: gpu.clone(),
             pass,
@@ -259,7 +252,6 @@ impl GpuVpl {
             eye: gb.eye,
             min_distance,
             valid,
-            slot_flux: inputs.interleaved_order().iter().map(|&i| v.flux[i] * scale).collect(),
             timer: if gpu.adapter.device_type == wgpu::DeviceType::Cpu {
                 None
             } else {
@@ -276,26 +268,20 @@ impl GpuVpl {
     /// `denoised_ms` are GPU time from timestamps where the adapter has
     /// usable ones, else the wall time of each part submitted alone.
     pub fn shade(&mut self, settings: &VplSettings) -> Result<Shaded, GpuError> {
-        let params = settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
-        let reference = settings.method == VplMethod::Reference;
-        let fixed = match (settings.method, settings.fixed_xi) {
-            (VplMethod::Slc, Some(x)) => Some(x),
-            _ => None,
-        };
+        let reference = settings.culling == Culling::Reference;
         let st = if reference {
+            settings.validate().map_err(|e| GpuError::Setting(e.to_string()))?;
             IndirectSettings {
                 culling: Culling::None,
                 seed: settings.seed,
                 frame: settings.frame,
+                fixed_xi: None,
                 denoise: false,
                 min_distance: self.min_distance,
                 near_radius: Some(0.0),
             }
         } else {
-            crate::frame::indirect_settings(
-                &VplSettings { fixed_xi: None, ..*settings },
-                self.min_distance,
-            )?
+            crate::frame::indirect_settings(settings, self.min_distance)?
         };
         if reference && self.reference.is_none() {
             let desc = IndirectPassDesc { interleaved: false, ..*self.pass.desc() };
@@ -330,14 +316,6 @@ impl GpuVpl {
         recording.uploads.record(&gpu, &mut enc);
         gpu.queue.submit([enc.finish()]);
         let dispatches = recording.dispatches;
-        // A fixed ξ: r² from the host (the core's functions, as the CPU's)
-        // once vpl_pack has run, instead of light_update.
-        let host_r2: Option<Vec<f32>> = fixed.map(|x| {
-            self.slot_flux
-                .iter()
-                .map(|&f| random_range2(vpl_threshold_range2(&params, f), x))
-                .collect()
-        });
         let mut timer = self.timer.as_mut();
         if let Some(t) = timer.as_mut() {
             t.reset();
@@ -360,9 +338,7 @@ impl GpuVpl {
                     label: Some("slc vpl"),
                     timestamp_writes,
                 });
-                for d in ds
-                    .filter(|d| !(host_r2.is_some() && d.stage == crate::frame::Stage::LightUpdate))
-                {
+                for d in ds {
                     d.record(&mut cp);
                 }
             }
@@ -375,11 +351,6 @@ impl GpuVpl {
             gpu.queue.submit([enc.finish()]);
             gpu.wait()?;
             let ms = t0.elapsed().as_secs_f64() * 1e3;
-            if part == Part::Setup
-                && let Some(r2) = &host_r2
-            {
-                gpu.queue.write_buffer(pass.ranges(), 0, bytemuck::cast_slice(r2));
-            }
             match part {
                 Part::Shading | Part::Near => shading_ms += ms,
                 Part::Denoise => denoise_ms = Some(ms),

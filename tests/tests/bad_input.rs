@@ -12,7 +12,7 @@ use slc_core::range::{RangeParams, Xi};
 use slc_cpu::vpl::VplContext;
 use slc_scene::scene::Scene;
 use slc_scene::scene_file::SceneFile;
-use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, VplSettings};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::Path;
 
@@ -160,17 +160,9 @@ fn renderer_settings() {
     });
     let ctx = VplContext::new(&scene, 8, 8, 16, None).unwrap();
     for b in BAD {
-        rejects("render error bound", "error bound", || {
-            ctx.render(&VplSettings { error_bound: b, ..VplSettings::default() }).map(|_| ())
-        });
-        rejects("render range", "range", || {
-            ctx.render(&VplSettings {
-                method: VplMethod::Clamp,
-                range: b,
-                ..VplSettings::default()
-            })
-            .map(|_| ())
-        });
+        rejects("culling error bound", "error bound", move || Culling::stochastic(b, 1.0));
+        rejects("culling exposure", "exposure", move || Culling::stochastic(0.01, b));
+        rejects("culling range", "range", move || Culling::clamped(b));
         rejects("render fixed xi", "xi", || {
             ctx.render(&VplSettings { fixed_xi: Some(b), ..VplSettings::default() }).map(|_| ())
         });
@@ -347,7 +339,7 @@ mod engine_misuse {
         let mut direct = DirectPass::new(gpu, &lights(125), &f32_desc()).unwrap();
         // Clamp ranges from 0.05 to 0.85: each record keeps other lights.
         let direct_settings = |r: usize| DirectSettings {
-            culling: Culling::Clamped { range: 0.05 * (r + 1) as f32 },
+            culling: Culling::clamped(0.05 * (r + 1) as f32).unwrap(),
             seed: 1,
             frame: r as u32,
         };
@@ -478,7 +470,7 @@ mod engine_misuse {
         let mut pass = IndirectPass::new(gpu, &desc).unwrap();
         for culling in [
             Culling::Stochastic(RangeParams::new(0.004, 1.0).unwrap()),
-            Culling::Clamped { range: 0.3 },
+            Culling::clamped(0.3).unwrap(),
             Culling::None,
         ] {
             let mut image = |records: &[GpuVplRecord]| {

@@ -10,10 +10,9 @@ mod embed;
 
 use embed::{H, RSM, W, render, settings, small_lights_at};
 use glam::{DVec3, Vec3};
-use slc_core::range::RangeParams;
 use slc_cpu::vpl::VplContext;
 use slc_scene::scene::Scene;
-use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, VplSettings};
 
 slc_tests::harness!(Gpu: embed_matches_the_cpu_frame);
 
@@ -25,7 +24,7 @@ slc_tests::harness!(Gpu: embed_matches_the_cpu_frame);
 /// at most 2% of the pixels with a different surface (valid mask).
 fn embed_matches_the_cpu_frame() {
     let scene = Scene::cornell_box();
-    let s = VplSettings { method: VplMethod::None, denoise: false, ..settings() };
+    let s = VplSettings { culling: Culling::None, denoise: false, ..settings() };
     let frame = render(&scene, &s, 0.05, 1).expect("the embed example renders");
     let ctx = VplContext::new(&scene, W, H, RSM, Some(0.05)).unwrap();
     let cpu = ctx.shade(&s).unwrap();
@@ -69,7 +68,7 @@ fn embed_matches_the_cpu_frame() {
     let points: Vec<Vec3> = (0..gb.position.len())
         .map(|i| if gb.valid(i) { gb.position[i] } else { Vec3::NAN })
         .collect();
-    let params = RangeParams::new(s.error_bound, s.exposure).unwrap();
+    let params = s.culling.range_params().expect("the example's culling is stochastic");
     let cpu_sum = |f: u32| -> DVec3 {
         let mut lights = slc_cpu::direct::DirectLights::new(
             &slc_scene::lights::LightSet::new(small_lights_at(f)).unwrap(),

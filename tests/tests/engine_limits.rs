@@ -24,7 +24,7 @@
 use glam::Vec3;
 use slc_core::light::{Light, PointLight};
 use slc_scene::scene::Scene;
-use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_scene::vpl::VplSettings;
 use slc_tests::engine::{self, upload};
 use slc_tests::gpu;
 use slc_wgpu::passes::{
@@ -295,13 +295,14 @@ fn ten_thousand_records_allocate_nothing() {
 fn gpu_vpl_shades_allocate_nothing(gpu: &GpuContext, scene: &Scene) {
     let ctx = slc_cpu::vpl::VplContext::new(scene, 16, 16, 8, None).unwrap();
     let mut gv = slc_wgpu::vpl::GpuVpl::new(gpu, ctx.inputs()).unwrap();
-    let base = VplSettings { error_bound: 0.01, ..VplSettings::default() };
+    let base =
+        VplSettings { culling: Culling::stochastic(0.01, 1.0).unwrap(), ..VplSettings::default() };
     let kinds = [
-        VplSettings { method: VplMethod::Slc, ..base },
-        VplSettings { method: VplMethod::Slc, denoise: false, fixed_xi: Some(0.5), ..base },
-        VplSettings { method: VplMethod::Clamp, range: 0.1, ..base },
-        VplSettings { method: VplMethod::None, near_radius: Some(0.0), ..base },
-        VplSettings { method: VplMethod::Reference, ..base },
+        base,
+        VplSettings { denoise: false, fixed_xi: Some(0.5), ..base },
+        VplSettings { culling: Culling::clamped(0.1).unwrap(), ..base },
+        VplSettings { culling: Culling::None, near_radius: Some(0.0), ..base },
+        VplSettings { culling: Culling::Reference, ..base },
     ];
     let mut shade_all = |frame: u32| {
         for s in &kinds {
@@ -309,7 +310,7 @@ fn gpu_vpl_shades_allocate_nothing(gpu: &GpuContext, scene: &Scene) {
             assert!(
                 out.irradiance.iter().any(|e| e.max_element() > 0.0),
                 "{:?}: a black image",
-                s.method
+                s.culling
             );
         }
         gpu.wait().unwrap();
@@ -352,7 +353,8 @@ fn glossy_pass_fits_webgpu_default_limits() {
     let scene = Scene::cornell_box_glossy();
     let ctx = slc_cpu::vpl::VplContext::new(&scene, 16, 16, 8, None).unwrap();
     let mut gv = slc_wgpu::vpl::GpuVpl::new(&gpu, ctx.inputs()).unwrap();
-    let shaded = gv.shade(&VplSettings { error_bound: 0.01, ..VplSettings::default() }).unwrap();
+    let culling = Culling::stochastic(0.01, 1.0).unwrap();
+    let shaded = gv.shade(&VplSettings { culling, ..VplSettings::default() }).unwrap();
     assert!(shaded.specular.iter().any(|s| s.abs().max_element() > 0.0), "no specular correction");
     // The frame's RSM writes 40 bytes per sample (WebGPU's default: 32): a
     // typed error, before any pipeline (it was a validation error).

@@ -17,7 +17,7 @@ use slc_cpu::vpl::VplContext;
 use slc_scene::backend::Timing;
 use slc_scene::scene::{Camera, PrimaryLight, Scene};
 use slc_scene::temporal::TemporalSettings;
-use slc_scene::vpl::{VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, VplSettings};
 use slc_tests::gpu;
 use slc_wgpu::frame::{FrameDesc, GpuVplFrame, Stage, indirect_settings};
 use slc_wgpu::passes::IndirectSettings;
@@ -26,8 +26,13 @@ const W: u32 = 128;
 const H: u32 = 96;
 const RSM: u32 = 32;
 
-fn settings(method: VplMethod, denoise: bool) -> VplSettings {
-    VplSettings { method, denoise, error_bound: 0.008, ..VplSettings::default() }
+fn settings(culling: Culling, denoise: bool) -> VplSettings {
+    VplSettings { culling, denoise, ..VplSettings::default() }
+}
+
+/// The culling named `name` at this file's ε (0.008) and clamp range (0.1).
+fn culling(name: &str) -> Culling {
+    Culling::named(name, 0.008, 1.0, 0.1).unwrap()
 }
 
 /// The frame's own settings for the CPU frame's `s`, at the frame's clamp
@@ -79,7 +84,7 @@ fn check_frame(scene: &Scene, what: &str) {
     )
     .unwrap();
     let ctx = VplContext::new(scene, W, H, RSM, None).unwrap();
-    for (method, denoise) in [(VplMethod::None, false), (VplMethod::Slc, true)] {
+    for (method, denoise) in [(Culling::None, false), (culling("slc"), true)] {
         let s = settings(method, denoise);
         let out = frame.render(&on(&frame, &s)).unwrap();
         assert!(out.image.is_finite(), "{what}: non-finite pixels");
@@ -98,7 +103,7 @@ fn check_frame(scene: &Scene, what: &str) {
         // SLC draws ξ per VPL: the same ξ on both backends, but a VPL's
         // range differs where its flux does (half floats), so its image
         // noise differs; allow the mean 2%.
-        let mean_bound = if method == VplMethod::Slc { 0.02 } else { 0.01 };
+        let mean_bound = if method == culling("slc") { 0.02 } else { 0.01 };
         assert!(mean <= mean_bound, "{what} {}: image mean differs by {mean:.3e}", method.name());
         assert!(median <= 0.01, "{what} {}: median pixel differs by {median:.3e}", method.name());
         assert!(masks <= 0.02, "{what}: {:.2}% of the pixels see another surface", 100.0 * masks);
@@ -136,7 +141,7 @@ fn glossy_frame_differs_from_matte_on_glossy_pixels() {
     }
     let desc =
         FrameDesc { width: W, height: H, rsm_size: RSM, shadow_size: 1024, min_distance: None };
-    let s = settings(VplMethod::Slc, true);
+    let s = settings(culling("slc"), true);
     let render = |scene: &Scene| {
         let mut frame = GpuVplFrame::new(gpu, scene, &desc).unwrap();
         let image = frame.render(&on(&frame, &s)).unwrap().image;
@@ -208,7 +213,7 @@ fn gpu_vpls_match_cpu_vpls() {
         &FrameDesc { width: W, height: H, rsm_size: 256, shadow_size: 256, min_distance: None },
     )
     .unwrap();
-    frame.render(&on(&frame, &settings(VplMethod::Slc, false))).unwrap();
+    frame.render(&on(&frame, &settings(culling("slc"), false))).unwrap();
     let g = frame.read_inputs().unwrap().vpls;
     let ctx = VplContext::new(&scene, W, H, 256, None).unwrap();
     let c = ctx.vpls();
@@ -250,7 +255,7 @@ fn every_stage_is_timed() {
         &FrameDesc { width: 64, height: 64, rsm_size: 16, shadow_size: 64, min_distance: None },
     )
     .unwrap();
-    let out = frame.render(&on(&frame, &settings(VplMethod::Slc, true))).unwrap();
+    let out = frame.render(&on(&frame, &settings(culling("slc"), true))).unwrap();
     let names: Vec<&str> = out.stages.iter().map(|s| s.name).collect();
     assert_eq!(
         names,
@@ -272,7 +277,7 @@ fn every_stage_is_timed() {
     let software = gpu.adapter.device_type == wgpu::DeviceType::Cpu;
     assert_eq!(out.timing == Timing::GpuTimestamps, gpu.timestamps && !software);
     assert!(out.stats.total_ms > 0.0 && out.stats.kept_per_pixel > 0.0);
-    let none = frame.render(&on(&frame, &settings(VplMethod::None, false))).unwrap();
+    let none = frame.render(&on(&frame, &settings(Culling::None, false))).unwrap();
     assert!(!none.stages.iter().any(|s| s.name == "light update" || s.name == "denoise"));
 }
 
@@ -285,7 +290,7 @@ fn small_box(
         FrameDesc { width: 64, height: 48, rsm_size: 16, shadow_size: 128, min_distance: None };
     let scene = Scene::cornell_box();
     let mut frame = GpuVplFrame::new(gpu, &scene, &desc).unwrap();
-    let s = on(&frame, &settings(VplMethod::Slc, true));
+    let s = on(&frame, &settings(culling("slc"), true));
     let before = frame.render(&s).unwrap().image;
     (desc, scene, frame, s, before)
 }
@@ -375,7 +380,7 @@ fn temporal_frame_is_the_mean_of_its_frames() {
     let scene = Scene::cornell_box_glossy();
     let mut frame = GpuVplFrame::new(gpu, &scene, &desc).unwrap();
     let n = 6;
-    let base = on(&frame, &settings(VplMethod::Slc, true));
+    let base = on(&frame, &settings(culling("slc"), true));
     let mut mean = vec![Vec3::ZERO; (desc.width * desc.height) as usize];
     let mut single = Vec::new();
     for f in 0..n {
@@ -464,20 +469,12 @@ fn bad_frames_are_errors() {
     )
     .unwrap();
     // The CPU frame's settings the frame has no counterpart for are
-    // refused when converted; the pass's own are checked at the record.
-    assert!(
-        indirect_settings(&settings(VplMethod::Reference, false), frame.min_distance()).is_err()
-    );
-    assert!(
-        indirect_settings(
-            &VplSettings { fixed_xi: Some(0.5), ..VplSettings::default() },
-            frame.min_distance()
-        )
-        .is_err()
-    );
+    // refused when converted (the reference); the pass's own are checked
+    // at the record; a bad culling cannot be made at all.
+    assert!(indirect_settings(&settings(Culling::Reference, false), frame.min_distance()).is_err());
     assert!(
         indirect_settings(
-            &VplSettings { error_bound: -1.0, ..VplSettings::default() },
+            &VplSettings { fixed_xi: Some(1.0), ..VplSettings::default() },
             frame.min_distance()
         )
         .is_err()
@@ -490,11 +487,12 @@ fn bad_frames_are_errors() {
     assert!(
         frame
             .render(&IndirectSettings {
-                culling: slc_wgpu::Culling::Clamped { range: -1.0 },
+                culling: Culling::Reference,
                 ..IndirectSettings::default()
             })
             .is_err()
     );
+    assert!(Culling::clamped(-1.0).is_err() && Culling::stochastic(-1.0, 1.0).is_err());
     assert!(frame.render(&IndirectSettings::default()).is_ok());
 }
 
@@ -519,7 +517,7 @@ fn timestamp_path_times_every_stage() {
     )
     .unwrap();
     assert!(frame.use_timestamps(true));
-    let s = on(&frame, &settings(VplMethod::Slc, true));
+    let s = on(&frame, &settings(culling("slc"), true));
     let out = frame.render(&s).unwrap();
     assert_eq!(out.timing, Timing::GpuTimestamps);
     // Every stage but the temporal accumulation (off unless asked for).
@@ -555,7 +553,7 @@ fn timestamp_path_times_every_stage() {
     let mut frame = GpuVplFrame::new(gpu, &Scene::cornell_box_glossy(), &desc).unwrap();
     assert!(frame.use_timestamps(true));
     frame.set_temporal(Some(TemporalSettings::default())).unwrap();
-    let s = on(&frame, &settings(VplMethod::Slc, true));
+    let s = on(&frame, &settings(culling("slc"), true));
     let out = frame.render(&s).unwrap();
     let want: Vec<Stage> = Stage::ALL
         .iter()

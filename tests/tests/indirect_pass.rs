@@ -17,7 +17,7 @@ use glam::Vec3;
 use slc_core::interleave::interleave_slot;
 use slc_cpu::vpl::VplContext;
 use slc_scene::scene::Scene;
-use slc_scene::vpl::{PERIOD, Shaded, VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, PERIOD, Shaded, VplSettings};
 use slc_tests::engine::{self, texture, upload};
 use slc_tests::gpu;
 use slc_wgpu::GpuContext;
@@ -141,16 +141,13 @@ fn run(
     engine::submit_and_read(gpu, enc, &e.output)
 }
 
-fn settings(method: VplMethod, denoise: bool) -> VplSettings {
-    VplSettings {
-        method,
-        denoise,
-        error_bound: 0.004,
-        range: 0.08,
-        seed: 7,
-        frame: 3,
-        ..VplSettings::default()
-    }
+fn settings(culling: Culling, denoise: bool) -> VplSettings {
+    VplSettings { culling, denoise, seed: 7, frame: 3, ..VplSettings::default() }
+}
+
+/// The culling named `name` at this file's ε (0.004) and clamp range (0.08).
+fn culling(name: &str) -> Culling {
+    Culling::named(name, 0.004, 1.0, 0.08).unwrap()
 }
 
 /// Pixels whose kept count differs, and the worst relative irradiance
@@ -188,7 +185,7 @@ fn pass_matches_gpu_vpl_for_every_method() {
     // (NEAR_FACTOR clamp distances).
     // The split moves light between the fields: the kept counts (w) change.
     let mut without_split = Vec::new();
-    for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
+    for method in [culling("slc"), culling("clamp"), Culling::None] {
         for (denoise, near_radius) in
             [false, true].into_iter().flat_map(|d| [(d, Some(0.0)), (d, None)])
         {
@@ -210,7 +207,7 @@ fn pass_matches_gpu_vpl_for_every_method() {
                 method.name()
             );
             assert!(pixels > (W * H / 2) as usize);
-            if method != VplMethod::Slc {
+            if method != culling("slc") {
                 assert_eq!(differs, 0, "{}: no ξ, so every decision must agree", method.name());
             }
             assert!(
@@ -247,7 +244,7 @@ fn vpl_buffer_source_gives_the_rsm_image() {
     let mut from_buffer =
         IndirectPass::new(gpu, &desc(VplSourceDesc::Buffer { count: RSM * RSM })).unwrap();
     let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
-    for method in [VplMethod::Clamp, VplMethod::None] {
+    for method in [culling("clamp"), Culling::None] {
         let s = settings(method, true);
         let a = run(gpu, &mut from_rsm, &e, rsm, &s);
         let b = run(gpu, &mut from_buffer, &e, VplInput::Buffer(&e.records), &s);
@@ -305,7 +302,7 @@ fn wrong_inputs_are_typed_errors() {
     for (name, inputs) in cases {
         let mut enc = gpu.device.create_command_encoder(&Default::default());
         let st =
-            slc_wgpu::frame::indirect_settings(&settings(VplMethod::Slc, false), 0.01).unwrap();
+            slc_wgpu::frame::indirect_settings(&settings(culling("slc"), false), 0.01).unwrap();
         match pass.record(&mut enc, &inputs, &st) {
             Err(GpuError::Binding { name: n, .. }) => assert_eq!(n, name),
             other => panic!("{name}: expected a binding error, got {:?}", other.err()),
@@ -330,7 +327,7 @@ fn wrong_inputs_are_typed_errors() {
     ));
     assert!(
         slc_wgpu::frame::indirect_settings(
-            &VplSettings { error_bound: -1.0, ..settings(VplMethod::Slc, false) },
+            &VplSettings { near_radius: Some(-1.0), ..settings(culling("slc"), false) },
             0.01
         )
         .is_err()
@@ -358,7 +355,7 @@ fn wrong_inputs_are_typed_errors() {
     });
     let mats = |table, specular| Some(IndirectMaterials { table, specular });
     let mut glossy = IndirectPass::new(gpu, &IndirectPassDesc { glossy: true, ..desc }).unwrap();
-    let st = slc_wgpu::frame::indirect_settings(&settings(VplMethod::Slc, false), 0.01).unwrap();
+    let st = slc_wgpu::frame::indirect_settings(&settings(culling("slc"), false), 0.01).unwrap();
     assert!(glossy.check(&IndirectInputs { materials: mats(&table, &specular), ..ok }).is_ok());
     for (on_glossy, inputs, name) in [
         (false, IndirectInputs { materials: mats(&table, &specular), ..ok }, "materials"),
@@ -419,7 +416,7 @@ fn glossy_pass_matches_gpu_vpl() {
     )
     .unwrap();
     let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
-    for method in [VplMethod::Slc, VplMethod::None] {
+    for method in [culling("slc"), Culling::None] {
         for denoise in [false, true] {
             let s = settings(method, denoise);
             let inputs = IndirectInputs {
@@ -663,7 +660,7 @@ fn depth_input_matches_positions() {
     let (forward_view, reversed_view) =
         (depth32(gpu, &forward_depth), depth32(gpu, &reversed_depth));
     let rsm = VplInput::Rsm { position: &e.rsm[0], normal: &e.rsm[1], flux: &e.rsm[2] };
-    let st = slc_wgpu::frame::indirect_settings(&settings(VplMethod::Slc, true), e.min_distance)
+    let st = slc_wgpu::frame::indirect_settings(&settings(culling("slc"), true), e.min_distance)
         .unwrap();
     let image = |surface: SurfaceDesc, gbuffer: Surface| {
         let d = IndirectPassDesc { surface, ..desc(VplSourceDesc::Rsm { size: RSM }) };
@@ -745,13 +742,8 @@ fn interleaving_averages_to_the_reference_over_frames() {
     let mut mean = vec![[0.0f64; 3]; reference.len()];
     let mut first = Vec::new();
     for frame in 0..frames {
-        let img = run(
-            gpu,
-            &mut pass,
-            &e,
-            rsm,
-            &VplSettings { frame, ..settings(VplMethod::None, false) },
-        );
+        let img =
+            run(gpu, &mut pass, &e, rsm, &VplSettings { frame, ..settings(Culling::None, false) });
         for (m, p) in mean.iter_mut().zip(&img) {
             for c in 0..3 {
                 m[c] += p[c] as f64 / frames as f64;

@@ -25,7 +25,7 @@ use glam::Vec3;
 use proptest::prelude::*;
 use slc_cpu::vpl::VplContext;
 use slc_scene::scene::Scene;
-use slc_scene::vpl::{NEAR_FACTOR, Shaded, VplMethod, VplSettings};
+use slc_scene::vpl::{Culling, NEAR_FACTOR, Shaded, VplSettings};
 use slc_tests::gpu;
 use slc_wgpu::vpl::GpuVpl;
 use std::sync::{Mutex, MutexGuard, OnceLock};
@@ -47,14 +47,13 @@ fn gpu_vpl() -> Option<MutexGuard<'static, GpuVpl>> {
     )
 }
 
-fn settings(method: VplMethod) -> VplSettings {
-    VplSettings {
-        method,
-        denoise: false,
-        error_bound: 0.004,
-        range: 0.08,
-        ..VplSettings::default()
-    }
+fn settings(culling: Culling) -> VplSettings {
+    VplSettings { culling, denoise: false, ..VplSettings::default() }
+}
+
+/// The culling named `name` at this file's ε (0.004) and clamp range (0.08).
+fn culling(name: &str) -> Culling {
+    Culling::named(name, 0.004, 1.0, 0.08).unwrap()
 }
 
 struct Compared {
@@ -123,7 +122,7 @@ fn compare(cpu: &Shaded, gpu: &Shaded, ctx: &VplContext) -> Compared {
 fn shading_matches_cpu_for_every_method() {
     let Some(mut gv) = gpu_vpl() else { return };
     let ctx = cpu_ctx();
-    for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None, VplMethod::Reference] {
+    for method in [culling("slc"), culling("clamp"), Culling::None, Culling::Reference] {
         let s = settings(method);
         let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(&s).unwrap());
         let c = compare(&a, &b, ctx);
@@ -160,10 +159,8 @@ proptest! {
     fn random_settings_agree(seed in any::<u32>(), frame in 0u32..1000, log_eps in -4.0f32..-1.0, range in 0.01f32..0.5, clamp in any::<bool>()) {
         let Some(mut gv) = gpu_vpl() else { return Ok(()) };
         let ctx = cpu_ctx();
-        let s = VplSettings {
-            method: if clamp { VplMethod::Clamp } else { VplMethod::Slc },
-            seed, frame, error_bound: 10f32.powf(log_eps), range, denoise: false, ..VplSettings::default()
-        };
+        let culling = if clamp { Culling::clamped(range).unwrap() } else { Culling::stochastic(10f32.powf(log_eps), 1.0).unwrap() };
+        let s = VplSettings { culling, seed, frame, denoise: false, ..VplSettings::default() };
         let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(&s).unwrap());
         let c = compare(&a, &b, ctx);
         prop_assert!(c.kept_differs * 200 <= c.pixels, "{} of {} pixels differ", c.kept_differs, c.pixels);
@@ -176,7 +173,7 @@ proptest! {
 fn images_match_end_to_end() {
     let Some(mut gv) = gpu_vpl() else { return };
     let ctx = cpu_ctx();
-    for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
+    for method in [culling("slc"), culling("clamp"), Culling::None] {
         let s = VplSettings { denoise: true, ..settings(method) };
         let a = ctx.render(&s).unwrap().image;
         let b = ctx.finish(gv.shade(&s).unwrap(), &s).image;
@@ -197,8 +194,8 @@ fn images_match_end_to_end() {
 /// all-kept frame).
 fn gpu_expectation_equals_unculled() {
     let Some(mut gv) = gpu_vpl() else { return };
-    let none = gv.shade(&settings(VplMethod::None)).unwrap();
-    let fixed = |x: f32| VplSettings { fixed_xi: Some(x), ..settings(VplMethod::Slc) };
+    let none = gv.shade(&settings(Culling::None)).unwrap();
+    let fixed = |x: f32| VplSettings { fixed_xi: Some(x), ..settings(culling("slc")) };
     let all = gv.shade(&fixed(slc_core::range::Xi::MAX.get())).unwrap();
     const M: usize = 128;
     let mut mean = vec![Vec3::ZERO.as_dvec3(); none.irradiance.len()];
@@ -231,7 +228,7 @@ fn chunked_tile_lists_match_cpu() {
     let Some(g) = gpu() else { return };
     let ctx = VplContext::new(&Scene::cornell_box(), 48, 32, 64, None).unwrap();
     let mut gv = GpuVpl::with_tile_list(g, ctx.inputs(), 16).unwrap();
-    for method in [VplMethod::Slc, VplMethod::Clamp] {
+    for method in [culling("slc"), culling("clamp")] {
         let s = settings(method);
         let c = compare(&ctx.shade(&s).unwrap(), &gv.shade(&s).unwrap(), &ctx);
         eprintln!(
@@ -255,7 +252,7 @@ fn chunked_tile_lists_match_cpu() {
     // near VPLs per tile, past lavapipe's loop limit (near_field_matches_cpu).
     let ctx = VplContext::new(&Scene::cornell_box(), 16, 16, 512, None).unwrap();
     let mut gv = GpuVpl::new(g, ctx.inputs()).unwrap();
-    let s = VplSettings { near_radius: Some(0.0), ..settings(VplMethod::Slc) };
+    let s = VplSettings { near_radius: Some(0.0), ..settings(culling("slc")) };
     let c = compare(&ctx.shade(&s).unwrap(), &gv.shade(&s).unwrap(), &ctx);
     eprintln!(
         "262,144 VPLs: {} pixels, kept differs at {}, worst relative {:.2e}",
@@ -280,7 +277,8 @@ fn hard_cases_agree() {
         (0.004, Some(xi_max)),
         (f32::MAX, Some(xi_max)),
     ] {
-        let s = VplSettings { error_bound: eps, fixed_xi: xi, ..settings(VplMethod::Slc) };
+        let culling = Culling::stochastic(eps, 1.0).unwrap();
+        let s = VplSettings { culling, fixed_xi: xi, ..settings(culling) };
         let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(&s).unwrap());
         assert!(
             b.irradiance.iter().all(|e| e.is_finite()),
@@ -313,7 +311,7 @@ fn near_field_matches_cpu() {
         let ctx = VplContext::new(&Scene::cornell_box(), w, h, rsm, None).unwrap();
         let mut gv = GpuVpl::new(g, ctx.inputs()).unwrap();
         let near_radius = Some(NEAR_FACTOR * ctx.min_d2().sqrt());
-        for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
+        for method in [culling("slc"), culling("clamp"), Culling::None] {
             let s = VplSettings { near_radius, ..settings(method) };
             let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(&s).unwrap());
             let c = compare(&a, &b, &ctx);
@@ -348,7 +346,7 @@ fn glossy_shading_matches_cpu() {
     assert!(ctx.gbuffer().has_specular());
     let mut gv = GpuVpl::new(g, ctx.inputs()).unwrap();
     for near_radius in [Some(0.0), None] {
-        for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None, VplMethod::Reference] {
+        for method in [culling("slc"), culling("clamp"), Culling::None, Culling::Reference] {
             let s = VplSettings { near_radius, ..settings(method) };
             let (a, b) = (ctx.shade(&s).unwrap(), gv.shade(&s).unwrap());
             assert!(
@@ -400,7 +398,7 @@ fn glossy_images_match_end_to_end() {
     let ctx = VplContext::new(&Scene::cornell_box_glossy(), 64, 48, 64, None).unwrap();
     let mut gv = GpuVpl::new(g, ctx.inputs()).unwrap();
     let gb = ctx.gbuffer();
-    for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None] {
+    for method in [culling("slc"), culling("clamp"), Culling::None] {
         let s = VplSettings { denoise: true, ..settings(method) };
         let a = ctx.render(&s).unwrap().image;
         let b = ctx.finish(gv.shade(&s).unwrap(), &s).image;

@@ -2,7 +2,7 @@
 //!
 //! The functions the GPU needs (range math, light intensities, the IES
 //! lookup, sphere tests, the reservoir update) are written in the common
-//! subset of Rust and WGSL (DESIGN.md §3) inside [`shared!`](crate::shared) blocks. The macro
+//! subset of Rust and WGSL (docs/architecture.md §4) inside [`shared!`](crate::shared) blocks. The macro
 //! emits each item as ordinary Rust and also `stringify!`s the same tokens into
 //! the module's `WGSL` constant. [`library`] assembles every module's text,
 //! maps the few spellings that differ (`let mut` → `var`), and lays it out one

@@ -371,7 +371,7 @@ mod tests {
     use super::*;
     use crate::vpl::VplContext;
     use slc_scene::scene::Scene;
-    use slc_scene::vpl::{PERIOD, VplMethod, VplSettings};
+    use slc_scene::vpl::{Culling, PERIOD, VplSettings};
 
     /// On the Cornell box's interleaved (blocky) irradiance, every
     /// instruction set the CPU has gives the per-pixel filter's result (the
@@ -383,7 +383,7 @@ mod tests {
         let ctx = VplContext::new(&Scene::cornell_box(), 72, 40, 64, None).unwrap();
         let shaded = ctx
             .shade(&VplSettings {
-                method: VplMethod::None,
+                culling: Culling::None,
                 near_radius: Some(0.0),
                 ..VplSettings::default()
             })

@@ -2,9 +2,10 @@
 //!
 //! Pipeline (every step a function with a typed input and output):
 //! [`render_gbuffer_into`] → [`rsm::reflective_shadow_map_into`] (`size²` VPLs) →
-//! 8×8 interleaved sampling (pixel `(x, y)` uses VPL subset
-//! `(y mod 8)·8 + x mod 8`; subset of RSM texel `(tx, ty)` likewise, each
-//! subset's flux scaled by 64) → tiled shading of each sub-image with the
+//! 8×8 interleaved sampling (pixels of class `(y mod 8)·8 + x mod 8` shade
+//! VPL subset `shifted_subset(class, interleave_shift(seed, frame))`; the
+//! subset of RSM texel `(tx, ty)` is its class, each subset's flux scaled
+//! by 64; [`slc_core::interleave`]) → tiled shading of each sub-image with the
 //! subset's VPL spheres culled per tile ([`shade`]) →
 //! [`denoise::cross_bilateral`] → albedo × (indirect + direct) + emission.
 //! What the shading and the denoise need from the G-buffer alone (the
@@ -12,13 +13,10 @@
 //! is built once with the G-buffer and counted in its time.
 //!
 //! The settings, G-buffer, VPL and frame types are slc-scene's
-//! ([`slc_scene::vpl`]); [`VplContext`] is the CPU's
-//! [`IndirectShader`].
-//!
-//! Methods: [`VplMethod::Slc`] (stochastic ranges from error bound ε),
-//! [`VplMethod::Clamp`] (fixed range R, no reweighting: biased),
-//! [`VplMethod::None`] (interleaved, unculled) and [`VplMethod::Reference`]
-//! (every VPL at every pixel, no interleaving, no denoise).
+//! ([`slc_scene::vpl`]). The culling is the settings'
+//! [`Culling`]: stochastic ranges from error bound ε, a clamped range `R`
+//! (no reweighting: biased), none (interleaved, unculled), or the
+//! reference (every VPL at every pixel, no interleaving, no denoise).
 
 pub mod denoise;
 pub mod rsm;
@@ -38,16 +36,16 @@ use slc_core::interleave::{
     interleave_flux_scale, interleave_shift, shifted_subset, vpl_near_range2,
 };
 use slc_core::light::{Light, vpl_threshold_range2};
-use slc_core::range::{RangeParams, random_range2};
+use slc_core::range::{CullKind, random_range2};
 use slc_core::ray::surface_offset;
-use slc_core::xi::xi_for;
+use slc_core::xi::frame_xi;
 use slc_scene::RenderError;
 use slc_scene::backend::IndirectShader;
 use slc_scene::image::Image;
 use slc_scene::scene::{Camera, PrimaryLight, Scene};
 use slc_scene::temporal::{TemporalSettings, TemporalView};
 use slc_scene::vpl::{
-    GBuffer, PERIOD, Shaded, VplFrame, VplInputs, VplMethod, VplSettings, VplStats, Vpls,
+    Culling, GBuffer, PERIOD, Shaded, VplFrame, VplInputs, VplSettings, VplStats, Vpls,
 };
 use std::sync::{Mutex, PoisonError};
 use std::time::Instant;
@@ -317,11 +315,11 @@ impl VplContext {
     /// Indirect irradiance at every pixel (before denoise and albedo), on the
     /// CPU.
     pub fn shade(&self, settings: &VplSettings) -> Result<Shaded, RenderError> {
-        let params = settings.validate()?;
+        settings.validate()?;
         let t = Instant::now();
-        let f = match settings.method {
-            VplMethod::Reference => self.shade_reference(),
-            m => self.shade_interleaved(m, &params, settings),
+        let f = match settings.culling {
+            Culling::Reference => self.shade_reference(),
+            _ => self.shade_interleaved(settings),
         };
         Ok(Shaded {
             irradiance: f.irradiance,
@@ -417,7 +415,7 @@ impl VplContext {
             shaded.kept.par_iter().map(|&k| k as u64).sum::<u64>() as f64 / shaded_px;
         let t = Instant::now();
         let denoise = settings.denoise
-            && settings.method != VplMethod::Reference
+            && settings.culling != Culling::Reference
             && shaded.denoised_ms.is_none();
         let filter = |mut e: Vec<Vec3>, near: &[Vec3]| -> Vec<Vec3> {
             if denoise {
@@ -486,7 +484,7 @@ impl VplContext {
                         gb.normal[i],
                         self.inputs.min_d2,
                         0.0,
-                        Cull::None,
+                        Cull::far(CullKind::None),
                     )
                 } else {
                     (Vec3::ZERO, 0)
@@ -495,7 +493,7 @@ impl VplContext {
             .collect();
         let shaded = (0..out.len()).filter(|&i| gb.valid(i)).count() as u64;
         let specular = self.specular_at_every_glossy_pixel(|g| {
-            shade::shade_specular(&list, g, self.inputs.min_d2, 0.0, Cull::None)
+            shade::shade_specular(&list, g, self.inputs.min_d2, 0.0, Cull::far(CullKind::None))
         });
         Fields {
             irradiance: out.iter().map(|o| o.0).collect(),
@@ -526,19 +524,10 @@ impl VplContext {
     /// specular lobe, the kept counts and evaluations of both. The tiles are
     /// the context's [`Tiling::interleaved`] (built with the G-buffer) for
     /// the default tile size, built here for another.
-    fn shade_interleaved(
-        &self,
-        method: VplMethod,
-        params: &RangeParams,
-        s: &VplSettings,
-    ) -> Fields {
+    fn shade_interleaved(&self, s: &VplSettings) -> Fields {
         let gb = &self.inputs.gbuffer;
         let p = PERIOD as usize;
-        let cull = match method {
-            VplMethod::Slc => Cull::Slc,
-            VplMethod::Clamp => Cull::Clamp,
-            _ => Cull::None,
-        };
+        let cull = Cull::far(s.culling.kind());
         let (w, h) = (gb.width as usize, gb.height as usize);
         let near_r2 = s.near_r2(self.inputs.min_d2);
         let owned;
@@ -550,7 +539,7 @@ impl VplContext {
         };
         let min_d2 = self.inputs.min_d2;
         let mut reused = self.take_reused();
-        let ranges = self.ranges(cull, params, s);
+        let ranges = self.ranges(s);
         let shift = interleave_shift(s.seed, s.frame, PERIOD);
         let (mut far, mut near_lights) =
             (std::mem::take(&mut reused.far), std::mem::take(&mut reused.near_lights));
@@ -567,7 +556,7 @@ impl VplContext {
                     shade_part(
                         part,
                         &scratch.all,
-                        cull != Cull::None,
+                        cull.kind != CullKind::None,
                         cull,
                         min_d2,
                         near_r2,
@@ -617,16 +606,13 @@ impl VplContext {
         Fields { irradiance, near: near_field, specular, specular_near, kept, evaluations }
     }
 
-    /// Each VPL's interleaved ranges `(r_t², r²)` under `cull`
-    /// ([`light_ranges`], flux × `P²`), computed once per frame for the far
-    /// and the near field.
-    fn ranges(&self, cull: Cull, params: &RangeParams, s: &VplSettings) -> Vec<(f32, f32)> {
+    /// Each VPL's interleaved ranges `(r_t², r²)` under the frame's
+    /// culling ([`light_ranges`], flux × `P²`), computed once per frame for
+    /// the far and the near field.
+    fn ranges(&self, s: &VplSettings) -> Vec<(f32, f32)> {
         let v = &self.inputs.vpls;
         let scale = interleave_flux_scale(PERIOD);
-        (0..v.len())
-            .into_par_iter()
-            .map(|i| light_ranges(cull, params, s, i, v.flux[i] * scale))
-            .collect()
+        (0..v.len()).into_par_iter().map(|i| light_ranges(s, i, v.flux[i] * scale)).collect()
     }
 
     /// The far field's lights of VPL subset `sub` (`sy·P + sx`) into `all`
@@ -678,7 +664,7 @@ impl VplContext {
             if v.flux[i] != Vec3::ZERO {
                 // The interleaved light's ranges, then the VPL's own.
                 let (rt2, r2) = ranges[i];
-                let (rt2, r2) = if cull == Cull::Slc {
+                let (rt2, r2) = if cull.kind == CullKind::Stochastic {
                     (vpl_near_range2(rt2, PERIOD), vpl_near_range2(r2, PERIOD))
                 } else {
                     (rt2, r2)
@@ -713,7 +699,7 @@ impl VplContext {
             r.clear();
             return;
         }
-        let near_cull = if cull == Cull::Slc { Cull::NearSlc } else { Cull::Near };
+        let near_cull = Cull::near(cull.kind);
         let min_d2 = self.inputs.min_d2;
         r.shade_parts(tiling, |_, part, out, spec, scratch| {
             shade_part(part, all, true, near_cull, min_d2, near_r2, out, spec, &mut scratch.lists)
@@ -859,26 +845,18 @@ impl PerReceiver {
 }
 
 /// The ranges `(r_t², r²)` of VPL `i`'s interleaved light (flux `flux`,
-/// already × `P²`) under `cull`: SLC's from the error bound and the VPL's ξ
-/// (`xi_for(seed, frame, i)`, or `fixed_xi`), the clamp range `(0, R²)`,
-/// or `(∞, ∞)` unculled.
-fn light_ranges(
-    cull: Cull,
-    params: &RangeParams,
-    s: &VplSettings,
-    i: usize,
-    flux: Vec3,
-) -> (f32, f32) {
-    match cull {
-        Cull::Slc => {
-            let rt2 = vpl_threshold_range2(params, flux);
-            (
-                rt2,
-                random_range2(rt2, s.fixed_xi.unwrap_or_else(|| xi_for(s.seed, s.frame, i as u32))),
-            )
+/// already × `P²`) under `s.culling`: stochastic ranges from the error
+/// bound and the VPL's ξ (`xi_for(seed, frame, i)`, or `fixed_xi`), the
+/// clamp range `(0, R²)`, or `(∞, ∞)` unculled.
+fn light_ranges(s: &VplSettings, i: usize, flux: Vec3) -> (f32, f32) {
+    match s.culling {
+        Culling::Stochastic(params) => {
+            let rt2 = vpl_threshold_range2(&params, flux);
+            let xi = frame_xi(s.seed, s.frame, i as u32, s.fixed_xi.unwrap_or(-1.0));
+            (rt2, random_range2(rt2, xi))
         }
-        Cull::Clamp => (0.0, s.range * s.range),
-        _ => (f32::INFINITY, f32::INFINITY),
+        Culling::Clamped(r) => (0.0, r.get() * r.get()),
+        Culling::None | Culling::Reference => (f32::INFINITY, f32::INFINITY),
     }
 }
 
@@ -1008,17 +986,11 @@ mod tests {
     use slc_core::light::INV_PI;
 
     /// The near field at `tiling`'s receivers, as a frame shades it.
-    fn near_field(
-        ctx: &VplContext,
-        tiling: &Tiling,
-        near_r2: f32,
-        cull: Cull,
-        params: &RangeParams,
-        s: &VplSettings,
-    ) -> PerReceiver {
+    fn near_field(ctx: &VplContext, tiling: &Tiling, near_r2: f32, s: &VplSettings) -> PerReceiver {
+        let cull = Cull::far(s.culling.kind());
         let mut r = PerReceiver::default();
         let mut all = LightList::default();
-        ctx.near_lights_into(&mut all, &ctx.ranges(cull, params, s), near_r2, cull);
+        ctx.near_lights_into(&mut all, &ctx.ranges(s), near_r2, cull);
         ctx.shade_near_in(&mut r, tiling, &all, near_r2, cull);
         r
     }
@@ -1033,16 +1005,17 @@ mod tests {
         let near_r2 = 9.0 * ctx.min_d2();
         let v = ctx.vpls();
         let gb = ctx.gbuffer();
-        for (cull, near_cull) in
-            [(Cull::Slc, Cull::NearSlc), (Cull::Clamp, Cull::Near), (Cull::None, Cull::Near)]
-        {
-            let s = VplSettings { range: 0.02, error_bound: 0.002, ..VplSettings::default() };
-            let params = s.validate().unwrap();
+        for culling in [
+            Culling::stochastic(0.002, 1.0).unwrap(),
+            Culling::clamped(0.02).unwrap(),
+            Culling::None,
+        ] {
+            let (cull, near_cull) = (Cull::far(culling.kind()), Cull::near(culling.kind()));
+            let s = VplSettings { culling, ..VplSettings::default() };
             let mut all = LightList::default();
             for i in (0..v.len()).filter(|&i| v.flux[i] != Vec3::ZERO) {
-                let (rt2, r2) =
-                    light_ranges(cull, &params, &s, i, v.flux[i] * interleave_flux_scale(PERIOD));
-                let (rt2, r2) = if cull == Cull::Slc {
+                let (rt2, r2) = light_ranges(&s, i, v.flux[i] * interleave_flux_scale(PERIOD));
+                let (rt2, r2) = if cull.kind == CullKind::Stochastic {
                     (vpl_near_range2(rt2, PERIOD), vpl_near_range2(r2, PERIOD))
                 } else {
                     (rt2, r2)
@@ -1070,15 +1043,8 @@ mod tests {
                 "{cull:?}: the near field holds lights"
             );
             for (region, tile) in [(64, 8), (32, 8), (32, 4), (16, 16), (7, 3)] {
-                let (e, kept) = near_field(
-                    &ctx,
-                    &Tiling::regions(gb, region, tile),
-                    near_r2,
-                    cull,
-                    &params,
-                    &s,
-                )
-                .per_pixel(&Tiling::regions(gb, region, tile));
+                let (e, kept) = near_field(&ctx, &Tiling::regions(gb, region, tile), near_r2, &s)
+                    .per_pixel(&Tiling::regions(gb, region, tile));
                 for i in 0..brute.len() {
                     assert_eq!(
                         kept[i], brute[i].1,
@@ -1119,13 +1085,13 @@ mod tests {
         let size = v.size as usize;
         let scale = interleave_flux_scale(PERIOD) as f64;
         let default_near = VplSettings::default().near_r2(min_d2);
-        for (method, near_radius, near_r2) in [
-            (VplMethod::Reference, None, 0.0),
-            (VplMethod::None, Some(0.0), 0.0),
-            (VplMethod::None, None, default_near),
+        for (culling, near_radius, near_r2) in [
+            (Culling::Reference, None, 0.0),
+            (Culling::None, Some(0.0), 0.0),
+            (Culling::None, None, default_near),
         ] {
             let settings =
-                VplSettings { method, denoise: false, near_radius, ..VplSettings::default() };
+                VplSettings { culling, denoise: false, near_radius, ..VplSettings::default() };
             let shift =
                 slc_core::interleave::interleave_shift(settings.seed, settings.frame, PERIOD);
             let image = ctx.render(&settings).unwrap().image;
@@ -1148,8 +1114,8 @@ mod tests {
                         == shifted_subset(class, shift, PERIOD);
                     let d = x - v.position[k];
                     let near = vpl_near_weight(d.length_squared(), near_r2) as f64;
-                    let share = match method {
-                        VplMethod::Reference => 1.0,
+                    let share = match culling {
+                        Culling::Reference => 1.0,
                         _ => near + (1.0 - near) * if in_subset { scale } else { 0.0 },
                     };
                     if share == 0.0 {
@@ -1172,7 +1138,7 @@ mod tests {
                 let got = image.data[i].as_dvec3();
                 assert!(
                     (got - expect).abs().max_element() <= 2e-5 * expect.max_element() + 1e-7,
-                    "{method:?}, R_n² {near_r2}: pixel {i} ({:?}): {got} vs {expect}",
+                    "{culling:?}, R_n² {near_r2}: pixel {i} ({:?}): {got} vs {expect}",
                     m
                 );
                 if m.has_specular() {
@@ -1186,12 +1152,12 @@ mod tests {
             }
             assert!(
                 glossy > 100 && differs > glossy / 4,
-                "{method:?}: {glossy} glossy pixels, {differs} unlike Lambertian"
+                "{culling:?}: {glossy} glossy pixels, {differs} unlike Lambertian"
             );
             // The metal sphere has no diffuse lobe: its direct light is not `albedo/π · E`.
             assert!(
                 direct_differs > glossy / 4,
-                "{method:?}: {glossy} glossy pixels, {direct_differs} with a direct term unlike Lambertian"
+                "{culling:?}: {glossy} glossy pixels, {direct_differs} with a direct term unlike Lambertian"
             );
         }
     }
@@ -1210,24 +1176,26 @@ mod tests {
         lambert.inputs.gbuffer.specular.clear();
         lambert.from_gbuffer.build(&lambert.inputs.gbuffer);
         let gb = ctx.gbuffer();
-        for method in [VplMethod::Slc, VplMethod::Clamp, VplMethod::None, VplMethod::Reference] {
-            let s = VplSettings { method, ..VplSettings::default() };
+        for culling in
+            [Culling::default(), Culling::clamped(0.1).unwrap(), Culling::None, Culling::Reference]
+        {
+            let s = VplSettings { culling, ..VplSettings::default() };
             let (a, b) = (ctx.shade(&s).unwrap(), lambert.shade(&s).unwrap());
             assert!(b.specular.is_empty() && !a.specular.is_empty());
             assert!(
                 a.irradiance == b.irradiance && a.near == b.near && a.kept == b.kept,
-                "{method:?}"
+                "{culling:?}"
             );
             let (ia, ib) = (ctx.finish(a, &s).image, lambert.finish(b, &s).image);
             let mut changed = 0;
             for i in 0..ia.data.len() {
                 if gb.specular_at(i).is_none() {
-                    assert_eq!(ia.data[i], ib.data[i], "{method:?}: Lambertian pixel {i}");
+                    assert_eq!(ia.data[i], ib.data[i], "{culling:?}: Lambertian pixel {i}");
                 } else {
                     changed += (ia.data[i] != ib.data[i]) as usize;
                 }
             }
-            assert!(changed > 20, "{method:?}: {changed} glossy pixels changed");
+            assert!(changed > 20, "{culling:?}: {changed} glossy pixels changed");
         }
     }
 
@@ -1242,9 +1210,13 @@ mod tests {
         let ctx = VplContext::new(&scene, 40, 32, 64, None).unwrap();
         let settings = [
             VplSettings::default(),
-            VplSettings { method: VplMethod::None, ..VplSettings::default() },
+            VplSettings { culling: Culling::None, ..VplSettings::default() },
             VplSettings { near_radius: Some(0.0), frame: 3, ..VplSettings::default() },
-            VplSettings { method: VplMethod::Clamp, denoise: false, ..VplSettings::default() },
+            VplSettings {
+                culling: Culling::clamped(0.1).unwrap(),
+                denoise: false,
+                ..VplSettings::default()
+            },
             VplSettings { frame: 5, ..VplSettings::default() },
         ];
         let fresh: Vec<Vec<Vec3>> = settings
@@ -1273,15 +1245,17 @@ mod tests {
     fn culled_near_field_expectation_equals_unculled() {
         let ctx = VplContext::new(&Scene::cornell_box(), 24, 24, 256, None).unwrap();
         let near_r2 = 16.0 * ctx.min_d2();
-        let s = VplSettings { error_bound: 0.02, ..VplSettings::default() };
-        let params = s.validate().unwrap();
-        let near = |cull, s: &VplSettings| {
-            let f = near_field(&ctx, &ctx.from_gbuffer.near, near_r2, cull, &params, s);
+        let s = VplSettings {
+            culling: Culling::stochastic(0.02, 1.0).unwrap(),
+            ..VplSettings::default()
+        };
+        let near = |s: &VplSettings| {
+            let f = near_field(&ctx, &ctx.from_gbuffer.near, near_r2, s);
             let (e, kept) = f.per_pixel(&ctx.from_gbuffer.near);
             (e, kept, f.evals)
         };
-        let (truth, truth_kept, truth_evals) = near(Cull::None, &s);
-        let fixed = |x: f32| near(Cull::Slc, &VplSettings { fixed_xi: Some(x), ..s });
+        let (truth, truth_kept, truth_evals) = near(&VplSettings { culling: Culling::None, ..s });
+        let fixed = |x: f32| near(&VplSettings { fixed_xi: Some(x), ..s });
         let all_kept = fixed(slc_core::range::Xi::MAX.get()).0;
         const M: usize = 256;
         let mut mean = vec![glam::DVec3::ZERO; truth.len()];

@@ -20,34 +20,54 @@ use slc_core::interleave::{
     vpl_near_fixed_share, vpl_near_slc_share,
 };
 use slc_core::light::vpl_transfer;
-use slc_core::range::cull_radius;
+use slc_core::range::{CullKind, cull_radius};
 use slc_core::sphere::sphere_overlaps_aabb;
 use slc_scene::vpl::GBuffer;
 
 pub use crate::simd::SimdPath;
 
-/// How a light list is evaluated.
+/// How a light list is evaluated: the culling kind of its ranges (the
+/// frame's [`slc_scene::culling::Culling`]), for the far field of the
+/// near-field split or for its near field.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Cull {
-    /// Stochastic light culling: keep iff `d² < r²`, weight `1/p`.
-    Slc,
-    /// Clamped range: keep iff `d² < R²`, no reweighting (biased).
-    Clamp,
-    /// Every light counts.
-    None,
-    /// The near field of the split under a fixed range (`r²` holds the
-    /// clamp method's `R²`, or `∞`): each light weighted by its near share
-    /// [`slc_core::interleave::vpl_near_weight`] (the other modes take the
-    /// rest, `1 − w`).
-    Near,
-    /// The near field culled by stochastic light culling at each VPL's own
-    /// flux (`rt2`, `r2` hold its own ranges,
-    /// [`slc_core::interleave::vpl_near_range2`]):
-    /// [`slc_core::interleave::vpl_near_slc_share`].
-    NearSlc,
+pub struct Cull {
+    /// The keep test and weight: stochastic (keep iff `d² < r²`, weight
+    /// `1/p`), clamped (keep iff `d² < R²`, no reweighting: biased), or
+    /// none (every light counts).
+    pub kind: CullKind,
+    /// The near field of the split: each light weighted by its near share
+    /// [`slc_core::interleave::vpl_near_weight`] (the far field takes the
+    /// rest, `1 − w`), under a fixed range (`r²` holds `R²`, or `∞`), or,
+    /// stochastic, at each VPL's own flux (`rt2`, `r2` hold its own
+    /// ranges, [`slc_core::interleave::vpl_near_range2`]:
+    /// [`slc_core::interleave::vpl_near_slc_share`]).
+    pub near: bool,
 }
 
-/// [`Cull`] as the loop's const parameter.
+impl Cull {
+    /// The far field (or an unsplit list) under `kind`.
+    pub const fn far(kind: CullKind) -> Cull {
+        Cull { kind, near: false }
+    }
+
+    /// The near field under `kind`.
+    pub const fn near(kind: CullKind) -> Cull {
+        Cull { kind, near: true }
+    }
+
+    /// The loop's const parameter (one monomorphised loop per value).
+    const fn mode(self) -> u8 {
+        match (self.near, self.kind) {
+            (false, CullKind::Stochastic) => SLC,
+            (false, CullKind::Clamped) => CLAMP,
+            (false, CullKind::None) => NONE,
+            (true, CullKind::Stochastic) => NEAR_SLC,
+            (true, _) => NEAR,
+        }
+    }
+}
+
+/// [`Cull::mode`]'s values.
 const SLC: u8 = 0;
 const CLAMP: u8 = 1;
 const NONE: u8 = 2;
@@ -55,8 +75,8 @@ const NEAR: u8 = 3;
 const NEAR_SLC: u8 = 4;
 
 /// A list of VPLs in SoA layout (one entry per light, same index in every
-/// array). `rt2`/`r2` hold `r_t²` and `r²` for [`Cull::Slc`] and `R²` in
-/// `r2` for [`Cull::Clamp`].
+/// array). `rt2`/`r2` hold `r_t²` and `r²` under stochastic culling and
+/// `R²` in `r2` under a clamped range.
 #[derive(Clone, Debug, Default)]
 pub struct LightList {
     pub(crate) px: Vec<f32>,
@@ -303,8 +323,8 @@ const LANES: usize = 8;
 /// Irradiance at `x` (unit normal `n`) from every light of `list` under
 /// `cull`, and the number of lights that passed the keep test. With
 /// `near_r2 > 0` each light's transfer is split by its near share `w`
-/// ([`slc_core::interleave::vpl_near_weight`]): [`Cull::Near`] takes `w`,
-/// the others `1 − w`. Runs on the CPU's best [`SimdPath`].
+/// ([`slc_core::interleave::vpl_near_weight`]): the near field
+/// ([`Cull::near`]) takes `w`, the far field `1 − w`. Runs on the CPU's best [`SimdPath`].
 pub fn shade(
     list: &LightList,
     x: Vec3,
@@ -357,12 +377,12 @@ pub fn shade_all_on(
     out: &mut Vec<(Vec3, u32)>,
 ) {
     let at = At { list, receivers, min_d2, near_r2, out };
-    match cull {
-        Cull::Slc => path.run(ShadeOp::<SLC>(at)),
-        Cull::Clamp => path.run(ShadeOp::<CLAMP>(at)),
-        Cull::None => path.run(ShadeOp::<NONE>(at)),
-        Cull::Near => path.run(ShadeOp::<NEAR>(at)),
-        Cull::NearSlc => path.run(ShadeOp::<NEAR_SLC>(at)),
+    match cull.mode() {
+        SLC => path.run(ShadeOp::<SLC>(at)),
+        CLAMP => path.run(ShadeOp::<CLAMP>(at)),
+        NONE => path.run(ShadeOp::<NONE>(at)),
+        NEAR => path.run(ShadeOp::<NEAR>(at)),
+        _ => path.run(ShadeOp::<NEAR_SLC>(at)),
     }
 }
 
@@ -412,7 +432,7 @@ fn transfer(p: Vec3, nl: Vec3, x: Vec3, n: Vec3, min_d2: f32) -> f32 {
 }
 
 /// What the loop multiplies a light's transfer by under culling mode
-/// `MODE` (a [`Cull`] as `u8`), from slc-core's shared functions: the keep
+/// `MODE` ([`Cull::mode`]), from slc-core's shared functions: the keep
 /// test, the `1/p` weight and the near or far share of the split; 0 where
 /// the light is culled (padding entries, `r² = 0`, always are).
 #[inline(always)]
@@ -578,12 +598,12 @@ impl Glossy {
 /// irradiance (the same lights kept), so `c_diff/π · E + S` is the BRDF's
 /// outgoing radiance. A scalar loop.
 pub fn shade_specular(list: &LightList, g: &Glossy, min_d2: f32, near_r2: f32, cull: Cull) -> Vec3 {
-    match cull {
-        Cull::Slc => specular_impl::<SLC>(list, g, min_d2, near_r2),
-        Cull::Clamp => specular_impl::<CLAMP>(list, g, min_d2, near_r2),
-        Cull::None => specular_impl::<NONE>(list, g, min_d2, near_r2),
-        Cull::Near => specular_impl::<NEAR>(list, g, min_d2, near_r2),
-        Cull::NearSlc => specular_impl::<NEAR_SLC>(list, g, min_d2, near_r2),
+    match cull.mode() {
+        SLC => specular_impl::<SLC>(list, g, min_d2, near_r2),
+        CLAMP => specular_impl::<CLAMP>(list, g, min_d2, near_r2),
+        NONE => specular_impl::<NONE>(list, g, min_d2, near_r2),
+        NEAR => specular_impl::<NEAR>(list, g, min_d2, near_r2),
+        _ => specular_impl::<NEAR_SLC>(list, g, min_d2, near_r2),
     }
 }
 
@@ -639,7 +659,12 @@ mod tests {
                 eprintln!("SKIP {path}: this CPU lacks it");
                 continue;
             }
-            for cull in [Cull::Slc, Cull::Clamp, Cull::None, Cull::Near] {
+            for cull in [
+                Cull::far(CullKind::Stochastic),
+                Cull::far(CullKind::Clamped),
+                Cull::far(CullKind::None),
+                Cull::near(CullKind::None),
+            ] {
                 for near_r2 in [0.0, 0.04] {
                     let mut kept = 0;
                     for i in 0..64 {
@@ -664,7 +689,7 @@ mod tests {
                     }
                     // Without a split the near field holds nothing.
                     assert!(
-                        kept > 0 || (cull == Cull::Near && near_r2 == 0.0),
+                        kept > 0 || (cull == Cull::near(CullKind::None) && near_r2 == 0.0),
                         "{path} {cull:?} R_n² {near_r2}: nothing kept"
                     );
                 }

@@ -1,6 +1,7 @@
 {% include "header.wgsl" %}
 // Per frame (or pass): the random squared range of every light from its own
-// ξ = xi_for(seed, frame, id), the same numbers the CPU draws.
+// ξ = xi_for(seed, frame, id), the same numbers the CPU draws (or from a
+// fixed ξ every light shares: frame_xi).
 
 {{ bindings }}
 
@@ -10,5 +11,5 @@ fn main(@builtin(global_invocation_id) gid: vec3u) {
     if i >= params.light_count {
         return;
     }
-    r2[i] = random_range2(rt2[i], xi_for(params.seed, params.frame, ids[i]));
+    r2[i] = random_range2(rt2[i], frame_xi(params.seed, params.frame, ids[i], params.fixed_xi));
 }

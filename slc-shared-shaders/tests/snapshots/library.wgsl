@@ -152,10 +152,18 @@ fn xi_for(seed_1: u32, frame: u32, light: u32) -> f32 {
     return _e14;
 }
 
-fn point_stream(seed_2: u32, point: u32, frame_1: u32) -> u32 {
-    let _e3 = pcg_hash(frame_1);
+fn frame_xi(seed_2: u32, frame_1: u32, light_1: u32, fixed: f32) -> f32 {
+    if (fixed >= 0f) {
+        return fixed;
+    }
+    let _e6 = xi_for(seed_2, frame_1, light_1);
+    return _e6;
+}
+
+fn point_stream(seed_3: u32, point: u32, frame_2: u32) -> u32 {
+    let _e3 = pcg_hash(frame_2);
     let _e5 = pcg_hash((point ^ _e3));
-    let _e7 = pcg_hash((seed_2 ^ _e5));
+    let _e7 = pcg_hash((seed_3 ^ _e5));
     return _e7;
 }
 
@@ -164,9 +172,9 @@ fn pick_stream(stream: u32) -> u32 {
     return _e3;
 }
 
-fn path_stream(seed_3: u32, pixel: u32, pass_index: u32) -> u32 {
+fn path_stream(seed_4: u32, pixel: u32, pass_index: u32) -> u32 {
     let _e4 = add_wrap_u32_(pass_index, PICK_STREAM);
-    let _e5 = point_stream(seed_3, pixel, _e4);
+    let _e5 = point_stream(seed_4, pixel, _e4);
     return _e5;
 }
 

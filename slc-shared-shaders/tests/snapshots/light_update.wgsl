@@ -2,7 +2,7 @@ struct FrameParams {
     light_count: u32,
     seed: u32,
     frame: u32,
-    pad: u32,
+    fixed_xi: f32,
 }
 
 const LIGHT_POINT: u32 = 0u;
@@ -137,6 +137,14 @@ fn xi_for(seed_1: u32, frame: u32, light: u32) -> f32 {
     return _e14;
 }
 
+fn frame_xi(seed_2: u32, frame_1: u32, light_1: u32, fixed: f32) -> f32 {
+    if (fixed >= 0f) {
+        return fixed;
+    }
+    let _e6 = xi_for(seed_2, frame_1, light_1);
+    return _e6;
+}
+
 fn random_range2_(rt2_: f32, xi: f32) -> f32 {
     return (rt2_ / (1f - xi));
 }
@@ -152,8 +160,9 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let _e13 = params.seed;
     let _e16 = params.frame;
     let _e19 = ids[i];
-    let _e20 = xi_for(_e13, _e16, _e19);
-    let _e21 = random_range2_(_e10, _e20);
-    r2_[i] = _e21;
+    let _e22 = params.fixed_xi;
+    let _e23 = frame_xi(_e13, _e16, _e19, _e22);
+    let _e24 = random_range2_(_e10, _e23);
+    r2_[i] = _e24;
     return;
 }

@@ -105,7 +105,7 @@
 
 use super::{
     Culling, FLOAT_INPUTS, GBuffer, SurfaceDesc, ViewCache, check_optional, check_size, check_view,
-    output_format,
+    kernel_form, output_format,
 };
 use crate::frame::Stage;
 use crate::kernel::{KernelLayout, UniformSlots, Uploads, check_kernels, storage, zeroed};
@@ -115,7 +115,7 @@ use slc_scene::vpl::{NEAR_FACTOR, PERIOD};
 use slc_shared_shaders::layout::{
     FrameParams, GpuLight, GpuMaterial, GpuNearBox, GpuVplRecord, PackParams, ViewParams, VplParams,
 };
-use slc_shared_shaders::{CullMethod, Features, Kernel, LightTypes, VplSource};
+use slc_shared_shaders::{CullKind, Features, Kernel, LightTypes, VplSource};
 
 /// Tile edge of the 2-D kernels, in pixels.
 const TILE: u32 = crate::vpl::TILE;
@@ -248,8 +248,15 @@ pub struct IndirectSettings {
     pub culling: Culling,
     /// Seed of the per-VPL ξ.
     pub seed: u32,
-    /// Frame number (a new ξ set per frame).
+    /// Frame number (a new ξ set and a new shift of the subset map per
+    /// frame).
     pub frame: u32,
+    /// Give every VPL this ξ (in `[0, 1)`) instead of its own
+    /// `xi_for(seed, frame, i)`: not an estimator on its own, but averaging
+    /// records over a grid of ξ is quadrature of the expectation over ξ
+    /// (how the tests prove the pass unbiased). `None` (the default) for
+    /// rendering.
+    pub fixed_xi: Option<f32>,
     /// Cross-bilateral filter over the interleaving window.
     pub denoise: bool,
     /// Clamp distance of the VPL fall-off `1/max(d², min_distance²)`
@@ -262,16 +269,15 @@ pub struct IndirectSettings {
 }
 
 impl Default for IndirectSettings {
-    /// Stochastic culling at ε = 0.004 (the CPU frame's default,
-    /// `VplSettings::default`), exposure 1; seed 1, frame 0;
-    /// denoised; 5 cm clamp distance, the default near field.
+    /// Stochastic culling at the default error bound
+    /// ([`Culling::default`]), exposure 1; seed 1, frame 0; denoised; 5 cm
+    /// clamp distance, the default near field.
     fn default() -> Self {
         IndirectSettings {
-            culling: Culling::Stochastic(
-                slc_core::range::RangeParams::new(0.004, 1.0).expect("valid defaults"),
-            ),
+            culling: Culling::default(),
             seed: 1,
             frame: 0,
+            fixed_xi: None,
             denoise: true,
             min_distance: 0.05,
             near_radius: None,
@@ -390,11 +396,11 @@ pub struct IndirectPass {
     pack: Pipe,
     update: Pipe,
     tiled_layout: KernelLayout,
-    tiled: Vec<(CullMethod, wgpu::ComputePipeline)>,
+    tiled: Vec<(CullKind, wgpu::ComputePipeline)>,
     denoise: Pipe,
     near_layout: KernelLayout,
     /// `vpl_near` per culling method (its ranges culled as the far field's).
-    near: Vec<(CullMethod, wgpu::ComputePipeline)>,
+    near: Vec<(CullKind, wgpu::ComputePipeline)>,
     export: Pipe,
     view: UniformSlots,
     pack_params: UniformSlots,
@@ -511,7 +517,7 @@ impl IndirectPass {
         let tiled_layout = KernelLayout::new(gpu, Kernel::VplTiled, &base)?;
         let near_layout = KernelLayout::new(gpu, Kernel::VplNear, &base)?;
         let mut near = Vec::new();
-        for m in [CullMethod::Slc, CullMethod::Clamp, CullMethod::None] {
+        for m in [CullKind::Stochastic, CullKind::Clamped, CullKind::None] {
             tiled.push((m, tiled_layout.pipeline(gpu, &Features { method: m, ..base }, None)?));
             near.push((m, near_layout.pipeline(gpu, &Features { method: m, ..base }, None)?));
         }
@@ -532,8 +538,7 @@ impl IndirectPass {
         let lights = zeroed(gpu, "slc lights", count * std::mem::size_of::<GpuLight>() as u64, rw);
         let ids = zeroed(gpu, "slc ids", count * 4, rw);
         let rt2 = zeroed(gpu, "slc rt2", count * 4, rw);
-        // COPY_DST: GpuVpl's fixed ξ writes r² from the host.
-        let r2 = zeroed(gpu, "slc r2", count * 4, rw | wgpu::BufferUsages::COPY_DST);
+        let r2 = zeroed(gpu, "slc r2", count * 4, rw);
         let near_slots = zeroed(gpu, "slc near_slots", count * 4, rw);
         let near_boxes = zeroed(
             gpu,
@@ -589,14 +594,6 @@ impl IndirectPass {
     /// The descriptor the pass was built for.
     pub fn desc(&self) -> &IndirectPassDesc {
         &self.desc
-    }
-
-    /// The random ranges `r²` the shading reads, slot by slot (subset
-    /// after subset, [`slc_core::interleave::interleave_slot`]): written by
-    /// `vpl_pack` and `light_update`, or from the host between them
-    /// ([`crate::vpl::GpuVpl`]'s fixed ξ).
-    pub(crate) fn ranges(&self) -> &wgpu::Buffer {
-        &self.pack_outputs[3]
     }
 
     /// Checks `inputs` against the descriptor (formats, sizes, usages).
@@ -705,7 +702,7 @@ impl IndirectPass {
         st: &IndirectSettings,
     ) -> Result<Recording, GpuError> {
         let view = self.check_inputs(inputs, st.seed, st.frame)?;
-        let (slc, fixed_r2) = st.culling.kernel_form()?;
+        let (slc, fixed_r2) = kernel_form(&st.culling)?;
         if !(st.min_distance.is_finite() && st.min_distance >= 0.0) {
             return Err(GpuError::Setting(format!(
                 "indirect pass: min distance {} must be finite and non-negative",
@@ -718,6 +715,10 @@ impl IndirectPass {
             return Err(GpuError::Setting(format!(
                 "indirect pass: near radius {r} must be finite and non-negative"
             )));
+        }
+        if let Some(x) = st.fixed_xi {
+            slc_core::range::Xi::new(x)
+                .map_err(|e| GpuError::Setting(format!("indirect pass: {e}")))?;
         }
         let (w, h) = (self.desc.width, self.desc.height);
         let (rsm_size, count) = match self.desc.vpls {
@@ -754,7 +755,12 @@ impl IndirectPass {
         );
         uploads.push(
             &self.frame_params,
-            &FrameParams { light_count: count, seed: st.seed, frame: st.frame, pad: 0 },
+            &FrameParams {
+                light_count: count,
+                seed: st.seed,
+                frame: st.frame,
+                fixed_xi: st.fixed_xi.unwrap_or(-1.0),
+            },
         );
         uploads.push(
             &self.vpl_params,
@@ -888,11 +894,7 @@ impl IndirectPass {
             }
             export.group(gpu, 0, &res)
         });
-        let method = match st.culling {
-            Culling::Stochastic(_) => CullMethod::Slc,
-            Culling::Clamped { .. } => CullMethod::Clamp,
-            Culling::None => CullMethod::None,
-        };
+        let method = st.culling.kind();
         let tiled = &self
             .tiled
             .iter()

@@ -88,7 +88,7 @@ pub use temporal::{TemporalInputs, TemporalPass, TemporalPassDesc};
 use crate::GpuContext;
 use crate::GpuError;
 use glam::{Mat4, Vec3};
-use slc_core::range::RangeParams;
+pub use slc_scene::culling::Culling;
 use slc_shared_shaders::SurfaceSource;
 use slc_shared_shaders::layout::ViewParams;
 
@@ -96,46 +96,20 @@ use slc_shared_shaders::layout::ViewParams;
 pub(crate) const FLOAT_INPUTS: [wgpu::TextureFormat; 2] =
     [wgpu::TextureFormat::Rgba32Float, wgpu::TextureFormat::Rgba16Float];
 
-/// How a pass culls lights, per record (both passes honour every mode).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Culling {
-    /// Stochastic light culling: each light's range `r² = r_t²/(1 − ξ)`
-    /// from the error bound ε and exposure `E` (`r_t² = E·I/(2π ε)`), a
-    /// kept light weighted `1/p`. Unbiased; its noise (per light at most ε
-    /// in standard deviation, Lambertian receiver) changes with `frame`.
-    Stochastic(RangeParams),
-    /// The biased baseline engines ship: lights beyond `range` are dropped,
-    /// none reweighted (darkens).
-    Clamped {
-        /// The range R (scene units, positive and finite).
-        range: f32,
-    },
-    /// Every light everywhere (`r² = ∞`): no culling. The expensive exact
-    /// sum for the indirect pass. For the direct pass every light is a
-    /// candidate at every pixel: with weighted picks
-    /// ([`DirectSelection::Weighted`]),
-    /// the picks follow each light's importance, so one frame is about as
-    /// noisy as with stochastic culling (measured by an outside engine
-    /// program at 3,000 point lights, k = 8: relative RMSE 0.053 both) at
-    /// about 2.6× the cost (every light's importance at every pixel); with
-    /// uniform picks it is far noisier. Its use is as a baseline.
-    None,
-}
-
-impl Culling {
-    /// `(slc, r_t² when not SLC, r² when not SLC)` as the kernels take them,
-    /// after checking a clamp range.
-    pub(crate) fn kernel_form(&self) -> Result<(bool, f32), GpuError> {
-        match *self {
-            Culling::Stochastic(_) => Ok((true, 0.0)),
-            Culling::Clamped { range } if range.is_finite() && range > 0.0 => {
-                Ok((false, range * range))
-            }
-            Culling::Clamped { range } => {
-                Err(GpuError::Setting(format!("clamp range {range} must be positive and finite")))
-            }
-            Culling::None => Ok((false, f32::INFINITY)),
-        }
+/// A record's culling as the kernels take it: `(stochastic, r² of every
+/// light when not)`. [`Culling::Reference`] is the VPL frame's, not a
+/// pass's: a typed error (the indirect pass's reference is a pass built
+/// with `interleaved: false`, recorded under [`Culling::None`]).
+pub(crate) fn kernel_form(culling: &Culling) -> Result<(bool, f32), GpuError> {
+    match culling.fixed_range2() {
+        _ if *culling == Culling::Reference => Err(GpuError::Setting(
+            "the passes cull stochastically, clamped or not at all: Culling::Reference is the \
+             VPL frame's (a pass's reference is built with interleaved: false, recorded under \
+             Culling::None)"
+                .into(),
+        )),
+        None => Ok((true, 0.0)),
+        Some(r2) => Ok((false, r2)),
     }
 }
 

@@ -7,7 +7,7 @@ struct FrameParams {
     uint light_count;
     uint seed;
     uint frame;
-    uint pad;
+    float fixed_xi;
 };
 const uint LIGHT_POINT = 0u;
 const uint LIGHT_SPOT = 1u;
@@ -139,6 +139,14 @@ float xi_for(uint seed_1, uint frame, uint light) {
     return _e14;
 }
 
+float frame_xi(uint seed_2, uint frame_1, uint light_1, float fixed_) {
+    if ((fixed_ >= 0.0)) {
+        return fixed_;
+    }
+    float _e6 = xi_for(seed_2, frame_1, light_1);
+    return _e6;
+}
+
 float random_range2_(float rt2_, float xi) {
     return (rt2_ / (1.0 - xi));
 }
@@ -154,9 +162,10 @@ void main() {
     uint _e13 = _group_0_binding_0_cs.seed;
     uint _e16 = _group_0_binding_0_cs.frame;
     uint _e19 = _group_0_binding_1_cs[i];
-    float _e20 = xi_for(_e13, _e16, _e19);
-    float _e21 = random_range2_(_e10, _e20);
-    _group_0_binding_3_cs[i] = _e21;
+    float _e22 = _group_0_binding_0_cs.fixed_xi;
+    float _e23 = frame_xi(_e13, _e16, _e19, _e22);
+    float _e24 = random_range2_(_e10, _e23);
+    _group_0_binding_3_cs[i] = _e24;
     return;
 }
 

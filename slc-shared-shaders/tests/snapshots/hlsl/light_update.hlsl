@@ -2,7 +2,7 @@ struct FrameParams {
     uint light_count;
     uint seed;
     uint frame;
-    uint pad;
+    float fixed_xi;
 };
 
 static const uint LIGHT_POINT = 0u;
@@ -141,6 +141,15 @@ float xi_for(uint seed_1, uint frame, uint light)
     return _e14;
 }
 
+float frame_xi(uint seed_2, uint frame_1, uint light_1, float fixed)
+{
+    if ((fixed >= 0.0)) {
+        return fixed;
+    }
+    const float _e6 = xi_for(seed_2, frame_1, light_1);
+    return _e6;
+}
+
 float random_range2_(float rt2_, float xi)
 {
     return (rt2_ / (1.0 - xi));
@@ -158,8 +167,9 @@ void main(uint3 gid : SV_DispatchThreadID)
     uint _e13 = params.seed;
     uint _e16 = params.frame;
     uint _e19 = asuint(ids.Load(i*4));
-    const float _e20 = xi_for(_e13, _e16, _e19);
-    const float _e21 = random_range2_(_e10, _e20);
-    r2_.Store(i*4, asuint(_e21));
+    float _e22 = params.fixed_xi;
+    const float _e23 = frame_xi(_e13, _e16, _e19, _e22);
+    const float _e24 = random_range2_(_e10, _e23);
+    r2_.Store(i*4, asuint(_e24));
     return;
 }

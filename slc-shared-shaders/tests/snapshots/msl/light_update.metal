@@ -14,7 +14,7 @@ struct FrameParams {
     uint light_count;
     uint seed;
     uint frame;
-    uint pad;
+    float fixed_xi;
 };
 typedef float type_2[1];
 typedef uint type_3[1];
@@ -160,6 +160,19 @@ float xi_for(
     return _e14;
 }
 
+float frame_xi(
+    uint seed_2,
+    uint frame_1,
+    uint light_1,
+    float fixed
+) {
+    if (fixed >= 0.0) {
+        return fixed;
+    }
+    float _e6 = xi_for(seed_2, frame_1, light_1);
+    return _e6;
+}
+
 float random_range2_(
     float rt2_,
     float xi
@@ -186,8 +199,9 @@ kernel void main_(
     uint _e13 = params.seed;
     uint _e16 = params.frame;
     uint _e19 = ids[i];
-    float _e20 = xi_for(_e13, _e16, _e19);
-    float _e21 = random_range2_(_e10, _e20);
-    r2_[i] = _e21;
+    float _e22 = params.fixed_xi;
+    float _e23 = frame_xi(_e13, _e16, _e19, _e22);
+    float _e24 = random_range2_(_e10, _e23);
+    r2_[i] = _e24;
     return;
 }
