@@ -9,7 +9,6 @@ use anyhow::{Context, anyhow};
 mod backends;
 mod bench;
 mod diff;
-mod flicker;
 mod methods;
 mod notes;
 mod plot;
@@ -17,7 +16,6 @@ mod reference;
 mod report;
 mod scene_args;
 mod suite;
-mod suite_bench;
 mod view;
 
 use backends::{Backend, GPU_BATCH, gpu_context, path_tracer};

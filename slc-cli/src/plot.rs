@@ -280,7 +280,7 @@ fn rmse_over_time_on<DB: DrawingBackend>(
 
 /// A suite's net RMSE per method over uniform sampling's, one column per
 /// scene (log scale; below 1 beats uniform sampling at equal time).
-pub fn suite_vs_uniform(rows: &[crate::suite_bench::SuiteRow], path: &Path) -> anyhow::Result<()> {
+pub fn suite_vs_uniform(rows: &[crate::report::SuiteRow], path: &Path) -> anyhow::Result<()> {
     with_backend(
         path,
         (1280, 720),
@@ -290,7 +290,7 @@ pub fn suite_vs_uniform(rows: &[crate::suite_bench::SuiteRow], path: &Path) -> a
 }
 
 fn suite_vs_uniform_on<DB: DrawingBackend>(
-    rows: &[crate::suite_bench::SuiteRow],
+    rows: &[crate::report::SuiteRow],
     root: &DrawingArea<DB, Shift>,
 ) -> anyhow::Result<()> {
     let err = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("{e}");
@@ -452,12 +452,12 @@ fn ies_polar_on<DB: DrawingBackend>(
 /// `slc bench --flicker`: per sequence (columns), each method's RMSE
 /// against the frame's reference (top) and against its previous frame
 /// (bottom) over the frames, log scale.
-pub fn flicker(report: &crate::flicker::FlickerReport, path: &Path) -> anyhow::Result<()> {
+pub fn flicker(report: &crate::report::FlickerReport, path: &Path) -> anyhow::Result<()> {
     with_backend(path, (1440, 800), |a| flicker_on(report, a), |a| flicker_on(report, a))
 }
 
 fn flicker_on<DB: DrawingBackend>(
-    report: &crate::flicker::FlickerReport,
+    report: &crate::report::FlickerReport,
     root: &DrawingArea<DB, Shift>,
 ) -> anyhow::Result<()> {
     let err = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("{e}");
@@ -494,10 +494,7 @@ fn flicker_on<DB: DrawingBackend>(
             }
             let (lo, hi) = all.iter().fold((f64::MAX, f64::MIN), |(a, b), &y| (a.min(y), b.max(y)));
             let mut chart = ChartBuilder::on(&panels[row * report.sequences.len() + col])
-                .caption(
-                    format!("{}: {what}", format!("{:?}", s.sequence).to_lowercase()),
-                    ("sans-serif", 17),
-                )
+                .caption(format!("{}: {what}", s.sequence), ("sans-serif", 17))
                 .margin(10)
                 .x_label_area_size(36)
                 .y_label_area_size(64)

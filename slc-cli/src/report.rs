@@ -205,3 +205,71 @@ pub fn write_pt_csv(report: &PtReport, path: &Path) -> anyhow::Result<()> {
         }),
     )
 }
+
+/// One method's curve over one sequence.
+#[derive(Serialize, Clone, Debug)]
+pub struct Curve {
+    /// The method's name.
+    pub method: String,
+    /// RMSE against each frame's reference.
+    pub rmse: Vec<f64>,
+    /// RMSE against the method's previous frame (none for frame 0).
+    pub temporal_rmse: Vec<f64>,
+}
+
+/// One sequence's curves.
+#[derive(Serialize, Clone, Debug)]
+pub struct SequenceReport {
+    /// The sequence: `static`, `orbit` or `light`.
+    pub sequence: String,
+    /// The reference's own change between frames (what moving content
+    /// contributes to every method's temporal RMSE).
+    pub reference_temporal_rmse: Vec<f64>,
+    /// Each method's curves.
+    pub curves: Vec<Curve>,
+}
+
+/// The whole flicker report.
+#[derive(Serialize, Clone, Debug)]
+pub struct FlickerReport {
+    /// `cpu (SIMD path)` or `gpu: adapter`.
+    pub backend: String,
+    /// Scene name.
+    pub scene: String,
+    /// Image size.
+    pub width: u32,
+    /// Image height.
+    pub height: u32,
+    /// VPL count.
+    pub vpls: usize,
+    /// Frames per sequence.
+    pub frames: u32,
+    /// The SLC error bound ε.
+    pub error_bound: f32,
+    /// The temporal stage's longest history.
+    pub max_history: f32,
+    /// Milliseconds of one temporal accumulation of the irradiance at this
+    /// size on the CPU (fastest of the bench's repeats; none on the GPU).
+    pub temporal_ms: Option<f64>,
+    /// Every sequence.
+    pub sequences: Vec<SequenceReport>,
+}
+
+/// One method on one suite scene, as the summary reads it.
+#[derive(Serialize, Clone, Debug)]
+pub struct SuiteRow {
+    /// Scene file stem.
+    pub scene: String,
+    /// Method.
+    pub method: String,
+    /// Samples per pixel reached in the time.
+    pub spp: u32,
+    /// Net RMSE (the reference's noise taken out).
+    pub rmse_net: f64,
+    /// `rmse_net · √spp`: noise per sample.
+    pub noise_per_sample: f64,
+    /// Time per sample over uniform sampling's on the same scene.
+    pub time_per_sample_vs_uniform: f64,
+    /// Net RMSE over uniform sampling's on the same scene.
+    pub rmse_vs_uniform: f64,
+}

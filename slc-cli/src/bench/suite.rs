@@ -9,8 +9,9 @@
 //! peer's (uniform, power, lightbvh): the target is ≤ 1 in every
 //! scene and ≤ 0.8 in the median one.
 
-use crate::bench::{BenchArgs, pt_equal_time};
-use crate::report::PtReport;
+use super::args::BenchArgs;
+use super::pt::pt_equal_time;
+use crate::report::{PtReport, SuiteRow};
 use anyhow::{Context, anyhow};
 use serde::Serialize;
 use slc_scene::scene_file::SceneFile;
@@ -18,25 +19,6 @@ use std::path::{Path, PathBuf};
 
 /// The methods slc-weighted is judged against.
 const PEERS: [&str; 3] = ["uniform", "power", "lightbvh"];
-
-/// One method on one suite scene, as the summary reads it.
-#[derive(Serialize, Clone, Debug)]
-pub struct SuiteRow {
-    /// Scene file stem.
-    pub scene: String,
-    /// Method.
-    pub method: String,
-    /// Samples per pixel reached in the time.
-    pub spp: u32,
-    /// Net RMSE (the reference's noise taken out).
-    pub rmse_net: f64,
-    /// `rmse_net · √spp`: noise per sample.
-    pub noise_per_sample: f64,
-    /// Time per sample over uniform sampling's on the same scene.
-    pub time_per_sample_vs_uniform: f64,
-    /// Net RMSE over uniform sampling's on the same scene.
-    pub rmse_vs_uniform: f64,
-}
 
 /// The whole suite run: every scene's equal-time report and the summary rows.
 #[derive(Serialize)]

@@ -16,11 +16,11 @@
 //! not of speed (default 128×128, 4,096 VPLs: the reference's loop stays
 //! under lavapipe's 65,535 iterations).
 
+use super::args::{BenchArgs, progress};
 use crate::backends::Backend;
-use crate::bench::BenchArgs;
+use crate::report::{Curve, FlickerReport, SequenceReport};
 use anyhow::{Context, anyhow};
 use glam::{Quat, Vec3};
-use serde::Serialize;
 use slc_cpu::temporal::Temporal;
 use slc_cpu::vpl::FrameHistory;
 use slc_scene::image::Image;
@@ -30,8 +30,7 @@ use slc_scene::vpl::{Culling, VplSettings};
 use std::time::Instant;
 
 /// A scripted sequence.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Sequence {
     /// Nothing moves.
     Static,
@@ -101,55 +100,6 @@ impl Sequence {
             }
         }
     }
-}
-
-/// One method's curve over one sequence.
-#[derive(Serialize, Clone, Debug)]
-pub struct Curve {
-    /// The method's name.
-    pub method: String,
-    /// RMSE against each frame's reference.
-    pub rmse: Vec<f64>,
-    /// RMSE against the method's previous frame (none for frame 0).
-    pub temporal_rmse: Vec<f64>,
-}
-
-/// One sequence's curves.
-#[derive(Serialize, Clone, Debug)]
-pub struct SequenceReport {
-    /// The sequence.
-    pub sequence: Sequence,
-    /// The reference's own change between frames (what moving content
-    /// contributes to every method's temporal RMSE).
-    pub reference_temporal_rmse: Vec<f64>,
-    /// Each method's curves.
-    pub curves: Vec<Curve>,
-}
-
-/// The whole flicker report.
-#[derive(Serialize, Clone, Debug)]
-pub struct FlickerReport {
-    /// `cpu (SIMD path)` or `gpu: adapter`.
-    pub backend: String,
-    /// Scene name.
-    pub scene: String,
-    /// Image size.
-    pub width: u32,
-    /// Image height.
-    pub height: u32,
-    /// VPL count.
-    pub vpls: usize,
-    /// Frames per sequence.
-    pub frames: u32,
-    /// The SLC error bound ε.
-    pub error_bound: f32,
-    /// The temporal stage's longest history.
-    pub max_history: f32,
-    /// Milliseconds of one temporal accumulation of the irradiance at this
-    /// size on the CPU (fastest of the bench's repeats; none on the GPU).
-    pub temporal_ms: Option<f64>,
-    /// Every sequence.
-    pub sequences: Vec<SequenceReport>,
 }
 
 const SPATIAL: &str = "slc, spatial filter";
@@ -349,7 +299,7 @@ pub fn run(a: &BenchArgs, frames: u32) -> anyhow::Result<()> {
         let backend = format!("cpu ({} loops)", slc_cpu::simd::SimdPath::best().name());
         (Box::new(CpuFrames { ctx, history, independent, ts }), backend)
     };
-    let bar = crate::bench::progress(Sequence::ALL.len() * frames as usize)?;
+    let bar = progress(Sequence::ALL.len() * frames as usize)?;
     let mut sequences = Vec::new();
     for seq in Sequence::ALL {
         runner.reset();
@@ -387,7 +337,7 @@ pub fn run(a: &BenchArgs, frames: u32) -> anyhow::Result<()> {
             bar.inc(1);
         }
         sequences.push(SequenceReport {
-            sequence: seq,
+            sequence: seq.name().to_string(),
             reference_temporal_rmse: reference_temporal,
             curves,
         });
@@ -446,7 +396,7 @@ fn print_report(r: &FlickerReport) {
             let last = c.rmse.last().copied().unwrap_or(0.0);
             println!(
                 "{:<8} {:<32} {:>12.6} {:>12.6} {:>12.6}",
-                s.sequence.name(),
+                s.sequence,
                 c.method,
                 mean(&c.rmse),
                 last,
@@ -456,8 +406,8 @@ fn print_report(r: &FlickerReport) {
     }
     for s in &r.sequences {
         let (sp, te, un) = (curve(s, SPATIAL), curve(s, TEMPORAL), curve(s, UNCULLED));
-        match s.sequence {
-            Sequence::Static => {
+        match s.sequence.as_str() {
+            "static" => {
                 let k = (r.frames as usize).min(32) - 1;
                 println!(
                     "static: temporal RMSE {:.2}x lower with accumulation (target >= 5); error at frame {} {:.6} against the unculled frame's {:.6} (target <=), {:.6} with independent xi",
@@ -468,14 +418,14 @@ fn print_report(r: &FlickerReport) {
                     curve(s, INDEPENDENT).rmse[k]
                 );
             }
-            Sequence::Light | Sequence::Orbit => {
+            _ => {
                 let worst =
                     te.rmse.iter().zip(&sp.rmse).map(|(t, s)| t / s.max(1e-30)).fold(0.0, f64::max);
                 let mut line = format!(
                     "{}: accumulated error at most {worst:.2}x the spatial-only frame's (target <= 1.2)",
-                    s.sequence.name()
+                    s.sequence
                 );
-                if s.sequence == Sequence::Light {
+                if s.sequence == Sequence::Light.name() {
                     let stop = (2 * r.frames / 3) as usize;
                     let back =
                         (stop..te.rmse.len()).find(|&f| te.rmse[f] <= sp.rmse[f]).map(|f| f - stop);

@@ -1,0 +1,63 @@
+//! `slc bench`: speed against error. Runs `none`, `slc` over a sweep of
+//! error bounds and `clamp` over a sweep of ranges, measures RMSE of each
+//! against the (cached) reference, and writes JSON (and optionally CSV).
+//!
+//! | module | holds |
+//! |---|---|
+//! | `args` | the command's flags and its progress bar |
+//! | `measure` | fastest-of-N timing and one frame's RMSE spread |
+//! | `vpl` | the VPL frame's bench, CPU and GPU |
+//! | `pt` | path tracing at equal time |
+//! | `suite` | the scene suite (`--suite DIR`) |
+//! | `flicker` | temporal stability (`--flicker`) |
+
+mod args;
+mod flicker;
+mod measure;
+mod pt;
+mod suite;
+mod vpl;
+
+use crate::backends::Backend;
+use crate::scene_args::App;
+use anyhow::anyhow;
+pub use args::BenchArgs;
+
+/// Runs `slc bench` with `a`: checks the flags, then the study they ask for.
+pub fn run(a: BenchArgs) -> anyhow::Result<()> {
+    if a.repeat == 0 || a.reference_spp == 0 {
+        return Err(anyhow!(
+            "--repeat {} and --reference-spp {} must be at least 1",
+            a.repeat,
+            a.reference_spp
+        ));
+    }
+    if let Some(want) = a.simd
+        && slc_cpu::simd::SimdPath::prefer(want) != want
+    {
+        return Err(anyhow!(
+            "--simd {}: this CPU cannot run it (it has {})",
+            want.name(),
+            slc_cpu::simd::SimdPath::best().name()
+        ));
+    }
+    if a.flicker {
+        if a.scene.app == App::Pt {
+            return Err(anyhow!("--flicker measures the VPL frame (--app vpl)"));
+        }
+        return flicker::run(&a, a.frames);
+    }
+    if a.scene.app == App::Pt {
+        if !(a.seconds > 0.0 && a.seconds.is_finite()) {
+            return Err(anyhow!("--seconds {} must be finite and > 0", a.seconds));
+        }
+        return match &a.suite {
+            Some(dir) => suite::run(&a, dir),
+            None => pt::run(a),
+        };
+    }
+    if a.scene.backend == Backend::Gpu {
+        return vpl::run_gpu(a);
+    }
+    vpl::run_cpu(a)
+}

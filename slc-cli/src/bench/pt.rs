@@ -1,0 +1,203 @@
+//! Path tracing at equal time: every method for the same wall-clock time,
+//! RMSE against a reference.
+
+use super::args::BenchArgs;
+use crate::backends::{GPU_BATCH, gpu_context, path_tracer};
+use crate::reference::pt_reference;
+use crate::report::{PtReport, PtRun, write_pt_csv};
+use anyhow::{Context, anyhow};
+use indicatif::{ProgressBar, ProgressStyle};
+use slc_cpu::pt::CpuPathTracer;
+use slc_scene::pt::{PtMethod, PtRender, PtScene, PtSettings};
+
+pub(super) fn run(a: BenchArgs) -> anyhow::Result<()> {
+    let (scene, lights, f) = a.scene.scene()?;
+    let report = pt_equal_time(&a, &scene, &lights, &f)?;
+    let json = serde_json::to_string_pretty(&report)?;
+    if let Some(path) = &a.json {
+        std::fs::write(path, json).with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    if let Some(csv) = &a.csv {
+        write_pt_csv(&report, csv)?;
+    }
+    if let Some(plot) = &a.plot {
+        crate::plot::rmse_over_time(&report, plot)?;
+    }
+    print_pt_report(&a, &report);
+    Ok(())
+}
+
+/// Every method on one scene for `--seconds` each on the chosen backend,
+/// RMSE against a (cached) CPU reference of `--reference-spp`.
+pub(super) fn pt_equal_time(
+    a: &BenchArgs,
+    scene: &slc_scene::scene::Scene,
+    lights: &[slc_core::light::Light],
+    f: &slc_scene::scene_file::RenderSettings,
+) -> anyhow::Result<PtReport> {
+    let (w, h) =
+        (a.scene.width.or(f.width).unwrap_or(128), a.scene.height.or(f.height).unwrap_or(128));
+    let pts = PtScene::new(scene, lights)?;
+    let (eps, eps_note) = crate::methods::pt_error_bound(a.error_bound, f.error_bound, &pts, 1.0);
+    // A reference that culls nothing does not depend on ε: keyed without
+    // it, its cache serves every --error-bound.
+    let ref_eps = if a.reference_method.culls() { eps } else { PtSettings::default().error_bound };
+    let ref_settings = PtSettings {
+        method: a.reference_method,
+        error_bound: ref_eps,
+        seed: 0x5EED,
+        ..PtSettings::default()
+    };
+    let bar = ProgressBar::new(a.reference_spp as u64);
+    bar.set_style(ProgressStyle::with_template(
+        "{spinner} [{bar:30}] {pos}/{len} spp, {msg} (ETA {eta})",
+    )?);
+    bar.set_message(format!("reference: {}", a.reference_method.name()));
+    let mut progress = |done: u32, total: u32| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    };
+    let r = pt_reference(
+        &mut CpuPathTracer::new(&pts),
+        w,
+        h,
+        &ref_settings,
+        a.reference_spp,
+        Some(&a.cache_dir),
+        &mut progress,
+    )?;
+    let (reference, cached) = (r.image, r.cached);
+    // The reference stays on the CPU; the methods run on the chosen backend.
+    let ctx = gpu_context(a.scene.backend)?;
+    let mut tracer = path_tracer(ctx.as_ref(), &pts, w, h)?;
+    let batch = if ctx.is_some() { GPU_BATCH } else { 1 };
+    let methods = PtMethod::ALL;
+    let mut runs = Vec::new();
+    // Methods: the bar counts tenths of a second of rendering, all methods together.
+    let tenths = (a.seconds * 10.0).ceil() as u64;
+    bar.set_style(ProgressStyle::with_template("{spinner} [{bar:30}] {msg} (ETA {eta})")?);
+    bar.set_length(tenths * methods.len() as u64);
+    bar.set_position(0);
+    bar.reset_eta();
+    for (k, method) in methods.into_iter().enumerate() {
+        bar.set_message(format!(
+            "{} ({} of {}), {} s each",
+            method.name(),
+            k + 1,
+            bar.length().unwrap_or(0) / tenths.max(1),
+            a.seconds
+        ));
+        let s = PtSettings { method, error_bound: eps, seed: a.seed, ..PtSettings::default() };
+        let mut acc = PtRender::new(w, h);
+        let mut series = Vec::new();
+        while acc.time_ms < a.seconds * 1e3 {
+            tracer.render(&mut acc, &s, batch).map_err(|e| anyhow!(e))?;
+            series.push((acc.time_ms, acc.passes, acc.image().rmse(&reference)));
+            bar.set_position(k as u64 * tenths + ((acc.time_ms / 100.0) as u64).min(tenths));
+        }
+        let last = *series.last().expect("at least one pass");
+        runs.push(PtRun {
+            method: method.name().into(),
+            param: method.culls().then_some(eps),
+            time_ms: last.0,
+            spp: last.1,
+            rmse: last.2,
+            rmse_net: (last.2 * last.2 - r.noise * r.noise).max(0.0).sqrt(),
+            series: thin_series(&series),
+        });
+    }
+    bar.finish_and_clear();
+    let report = PtReport {
+        app: "pt".into(),
+        backend: match &ctx {
+            None => "cpu".into(),
+            Some(c) => format!(
+                "gpu: {} ({})",
+                c.describe(),
+                if c.timestamps { "GPU timestamps" } else { "wall clock" }
+            ),
+        },
+        scene: scene.name.clone(),
+        width: w,
+        height: h,
+        lights: pts.light_count(),
+        reference: format!("{}, {} spp", a.reference_method.name(), a.reference_spp),
+        reference_noise: r.noise,
+        reference_from_cache: cached,
+        error_bound_note: eps_note,
+        runs,
+    };
+    Ok(report)
+}
+
+/// Prints one equal-time report as a table, with warnings where the
+/// reference limits what it can tell.
+fn print_pt_report(a: &BenchArgs, report: &PtReport) {
+    let (w, h) = (report.width, report.height);
+    let uniform =
+        report.runs.iter().find(|r| r.method == "uniform").map_or(f64::NAN, |r| r.rmse_net);
+    println!("backend {}", report.backend);
+    if let Some(eps) = report.runs.iter().find_map(|r| r.param) {
+        println!("eps     {eps:.4} ({})", report.error_bound_note);
+    }
+    println!("lights  {}", crate::notes::PT_LIGHTS_NOTE);
+    println!(
+        "{} {}x{}, {} lights, {:.1} s per method (reference {} {}, its own RMSE about {:.5})",
+        report.scene,
+        w,
+        h,
+        report.lights,
+        a.seconds,
+        report.reference,
+        if report.reference_from_cache { "from cache" } else { "rendered" },
+        report.reference_noise
+    );
+    println!(
+        "{:<14} {:>8} {:>10} {:>6} {:>10} {:>10} {:>16}",
+        "method", "param", "time ms", "spp", "rmse", "rmse net", "uniform/method"
+    );
+    for r in &report.runs {
+        println!(
+            "{:<14} {:>8} {:>10.0} {:>6} {:>10.5} {:>10.5} {:>16.2}",
+            r.method,
+            r.param.map_or("-".into(), |p| p.to_string()),
+            r.time_ms,
+            r.spp,
+            r.rmse,
+            r.rmse_net,
+            uniform / r.rmse_net
+        );
+    }
+    println!(
+        "(rmse net: the reference's own noise taken out, √(rmse² − {:.5}²); the ratio uses it)",
+        report.reference_noise
+    );
+    let most = report.runs.iter().map(|r| r.spp).max().unwrap_or(0);
+    if (a.reference_spp as u64) < 16 * most as u64 {
+        println!(
+            "warning: the reference has {} spp, less than 16 × the {most} spp of the fastest method: raise --reference-spp",
+            a.reference_spp
+        );
+    }
+    for r in report.runs.iter().filter(|r| report.reference_noise > r.rmse_net / 3.0) {
+        println!(
+            "warning: the reference's own noise {:.5} exceeds a third of {}'s net RMSE {:.5}: its ratio is uncertain; raise --reference-spp",
+            report.reference_noise, r.method, r.rmse_net
+        );
+    }
+}
+
+/// A run's `(time ms, passes, RMSE)` series as the JSON keeps it: every
+/// point up to 64 passes, then one per 5% more passes, and the last (a
+/// 2,000-pass run keeps about 140 points; the plots are log-scaled).
+fn thin_series(series: &[(f64, u32, f64)]) -> Vec<(f64, u32, f64)> {
+    let mut out = Vec::new();
+    let mut next = 0u32;
+    for (k, &p) in series.iter().enumerate() {
+        if p.1 <= 64 || p.1 >= next || k + 1 == series.len() {
+            out.push(p);
+            next = (p.1 as f64 * 1.05).ceil() as u32;
+        }
+    }
+    out
+}
